@@ -1,0 +1,78 @@
+/* harness convert: any readable format -> .bin or CSV, sample by sample. */
+#include <string.h>
+
+#include "hx_cli.h"
+#include "hx_commands.h"
+
+static const hx_opt_t k_opts[] = {
+    HX_INPUT_OPTS,
+    { "--to", "FORMAT", "output format: bin or csv (default: from OUT's extension, .bin -> bin)", 0 },
+    { NULL, NULL, NULL, 0 }
+};
+
+static const hx_spec_t k_spec = {
+    "convert", "IN OUT [options]",
+    "Convert a log between the footnav .bin format, the CSV interchange format\n"
+    "(t,ax,ay,az,gx,gy,gz[,temp] in s, m/s^2, rad/s, degC) and every importable\n"
+    "format; OUT '-' writes CSV to standard output. On bad input, every sample\n"
+    "before the error is written, the output is closed validly and the exit\n"
+    "status is 1.",
+    2, 2, k_opts
+};
+
+int hx_cmd_convert(int argc, char **argv)
+{
+    hx_args_t a;
+    hx_reader_t *r;
+    hx_writer_t *w;
+    hx_format_t to = HX_FMT_AUTO;
+    fnav_sample_t s;
+    fnav_status_t st;
+    char err[320];
+    const char *to_name;
+    int rc = hx_args_parse(&k_spec, argc, argv, &a);
+    int exit_code = HX_EXIT_OK;
+    hx_meta_t meta;
+    if (rc != 0) {
+        return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
+    }
+    to_name = hx_arg(&a, "--to");
+    if (to_name != NULL) {
+        to = hx_format_from_name(to_name);
+        if (to != HX_FMT_BIN && to != HX_FMT_CSV) {
+            hx_error("convert", "--to must be bin or csv, not '%s'", to_name);
+            return HX_EXIT_USAGE;
+        }
+    } else if (strcmp(a.pos[1], "-") == 0) {
+        to = HX_FMT_CSV;
+    }
+    r = hx_open_input("convert", &a, a.pos[0]);
+    if (r == NULL) {
+        return HX_EXIT_DATA;
+    }
+    meta = *hx_reader_meta(r);
+    w = hx_writer_open(a.pos[1], to, &meta, 0, err, sizeof err);
+    if (w == NULL) {
+        hx_error("convert", "%s", err);
+        hx_reader_close(r);
+        return HX_EXIT_IO;
+    }
+    while ((st = hx_reader_next(r, &s)) == FNAV_OK) {
+        if (hx_writer_write(w, &s) != FNAV_OK) {
+            hx_error("convert", "%s: write failed", a.pos[1]);
+            exit_code = HX_EXIT_IO;
+            break;
+        }
+    }
+    if (st != FNAV_END && exit_code == HX_EXIT_OK) {
+        hx_error("convert", "%s (the %ld samples before it were written)", hx_reader_error(r),
+                 hx_reader_stats(r)->records);
+        exit_code = HX_EXIT_DATA;
+    }
+    if (hx_writer_close(w, err, sizeof err) != FNAV_OK) {
+        hx_error("convert", "%s", err);
+        exit_code = HX_EXIT_IO;
+    }
+    hx_reader_close(r);
+    return exit_code;
+}

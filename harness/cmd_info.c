@@ -1,0 +1,277 @@
+/* harness info: what a log contains and how healthy its timing is. */
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hx_cli.h"
+#include "hx_commands.h"
+
+static const hx_opt_t k_opts[] = {
+    HX_INPUT_OPTS,
+    { "--json", "FILE", "also write the figures as JSON", 0 },
+    { NULL, NULL, NULL, 0 }
+};
+
+static const hx_spec_t k_spec = {
+    "info", "LOG [options]",
+    "Print the format, sensor, sample rate, duration, timing health (median\n"
+    "interval, gaps > 1.5 intervals, duplicated time stamps, counter drops),\n"
+    "saturation (flat-topped channel extremes), the peak rates and forces, and\n"
+    "the gravity vector in the stillest second (its axis and magnitude).",
+    1, 1, k_opts
+};
+
+static int cmp_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+typedef struct {
+    double rate_hz, dt_med_s, dt_min_s, dt_max_s, duration_s;
+    long gaps, dups, drops, backwards;
+    double max_gap_s;
+    long sat[6];
+    double peak[6];
+    double g_vec[3], g_mag, still_t_s, gyro_rest[3];
+    int g_axis;
+} info_t;
+
+/* Clipping at full scale leaves flat tops at the channel's extreme value,
+ * again at every impact; a natural maximum is one event. A channel counts as
+ * saturated when at least two separate runs of two or more samples (with
+ * distinct time stamps) sit exactly at its maximum or minimum; the number of
+ * samples at that extreme is returned. */
+static long saturation(const hx_log_t *log, int ch, double *peak)
+{
+    size_t i;
+    double mx = -INFINITY, mn = INFINITY;
+    long count = 0, runs = 0, run = 0;
+    for (i = 0; i < log->n; i++) {
+        double v = ch < 3 ? log->acc[i][ch] : log->gyr[i][ch - 3];
+        mx = v > mx ? v : mx;
+        mn = v < mn ? v : mn;
+    }
+    *peak = fabs(mx) > fabs(mn) ? fabs(mx) : fabs(mn);
+    for (i = 0; i < log->n; i++) {
+        double v = ch < 3 ? log->acc[i][ch] : log->gyr[i][ch - 3];
+        if (i > 0 && log->t_ns[i] == log->t_ns[i - 1]) {
+            continue; /* an exact duplicate row is not a plateau */
+        }
+        if (v == mx || v == mn) {
+            count++;
+            run++;
+            if (run == 2) {
+                runs++;
+            }
+        } else {
+            run = 0;
+        }
+    }
+    return runs >= 2 ? count : 0;
+}
+
+static void analyse(const hx_log_t *log, info_t *in)
+{
+    size_t i, n = log->n, nd = 0;
+    int64_t *dt = NULL;
+    int c;
+    memset(in, 0, sizeof *in);
+    in->rate_hz = log->meta.rate_hz;
+    if (n >= 2) {
+        dt = (int64_t *)malloc((n - 1) * sizeof *dt);
+    }
+    if (dt != NULL) {
+        for (i = 1; i < n; i++) {
+            int64_t d = log->t_ns[i] - log->t_ns[i - 1];
+            dt[nd++] = d;
+        }
+        qsort(dt, nd, sizeof *dt, cmp_i64);
+        in->dt_med_s = 1e-9 * (double)dt[nd / 2];
+        in->dt_min_s = 1e-9 * (double)dt[0];
+        in->dt_max_s = 1e-9 * (double)dt[nd - 1];
+        free(dt);
+        for (i = 1; i < n; i++) {
+            double d = 1e-9 * (double)(log->t_ns[i] - log->t_ns[i - 1]);
+            if (d == 0.0) {
+                in->dups++;
+            } else if (d > 1.5 * in->dt_med_s) {
+                in->gaps++;
+                in->max_gap_s = d > in->max_gap_s ? d : in->max_gap_s;
+            }
+            if (log->meta.has_seq) {
+                uint32_t ds = log->seq[i] - log->seq[i - 1];
+                if (ds > 1u && ds < 0x80000000u) {
+                    in->drops += (long)(ds - 1u);
+                }
+            }
+        }
+        if (in->rate_hz <= 0.0 && in->dt_med_s > 0.0) {
+            in->rate_hz = 1.0 / in->dt_med_s;
+        }
+    }
+    in->duration_s = n > 0 ? 1e-9 * (double)(log->t_ns[n - 1] - log->t_ns[0]) : 0.0;
+    for (c = 0; c < 6; c++) {
+        in->sat[c] = saturation(log, c, &in->peak[c]);
+    }
+    /* stillest window of about one second: least gyro energy + accel variance */
+    {
+        size_t w = (size_t)(in->rate_hz > 0.0 ? in->rate_hz : 100.0);
+        size_t best = 0, start;
+        double best_cost = INFINITY;
+        if (w < 2) {
+            w = 2;
+        }
+        if (w > n) {
+            w = n;
+        }
+        for (start = 0; start + w <= n && w > 0; start += w / 2 > 0 ? w / 2 : 1) {
+            double sa[3] = { 0, 0, 0 }, sa2 = 0.0, sg = 0.0, cost;
+            size_t k;
+            for (k = start; k < start + w; k++) {
+                for (c = 0; c < 3; c++) {
+                    sa[c] += log->acc[k][c];
+                    sa2 += log->acc[k][c] * log->acc[k][c];
+                    sg += log->gyr[k][c] * log->gyr[k][c];
+                }
+            }
+            cost = sg / (double)w + (sa2 - (sa[0] * sa[0] + sa[1] * sa[1] + sa[2] * sa[2]) / (double)w) / (double)w;
+            if (cost < best_cost) {
+                best_cost = cost;
+                best = start;
+            }
+        }
+        if (w > 0) {
+            size_t k;
+            for (k = best; k < best + w; k++) {
+                for (c = 0; c < 3; c++) {
+                    in->g_vec[c] += log->acc[k][c] / (double)w;
+                    in->gyro_rest[c] += log->gyr[k][c] / (double)w;
+                }
+            }
+            in->g_mag = sqrt(in->g_vec[0] * in->g_vec[0] + in->g_vec[1] * in->g_vec[1] + in->g_vec[2] * in->g_vec[2]);
+            in->g_axis = 0;
+            for (c = 1; c < 3; c++) {
+                if (fabs(in->g_vec[c]) > fabs(in->g_vec[in->g_axis])) {
+                    in->g_axis = c;
+                }
+            }
+            in->still_t_s = 1e-9 * (double)(log->t_ns[best] - log->t_ns[0]);
+        }
+    }
+}
+
+static int write_json(const char *path, const hx_log_t *log, const info_t *in)
+{
+    cJSON *j = cJSON_CreateObject();
+    cJSON *arr;
+    char *txt;
+    FILE *f;
+    int c;
+    static const char *const ch[6] = { "ax", "ay", "az", "gx", "gy", "gz" };
+    cJSON_AddStringToObject(j, "format", hx_format_name(log->meta.format));
+    cJSON_AddStringToObject(j, "sensor", log->meta.sensor);
+    cJSON_AddNumberToObject(j, "samples", (double)log->n);
+    cJSON_AddNumberToObject(j, "rate_hz", in->rate_hz);
+    cJSON_AddBoolToObject(j, "rate_nominal", log->meta.rate_nominal);
+    cJSON_AddNumberToObject(j, "duration_s", in->duration_s);
+    cJSON_AddNumberToObject(j, "dt_median_s", in->dt_med_s);
+    cJSON_AddNumberToObject(j, "dt_min_s", in->dt_min_s);
+    cJSON_AddNumberToObject(j, "dt_max_s", in->dt_max_s);
+    cJSON_AddNumberToObject(j, "gaps", (double)in->gaps);
+    cJSON_AddNumberToObject(j, "max_gap_s", in->max_gap_s);
+    cJSON_AddNumberToObject(j, "duplicates", (double)in->dups);
+    cJSON_AddNumberToObject(j, "counter_drops", (double)in->drops);
+    arr = cJSON_AddObjectToObject(j, "saturated_samples");
+    for (c = 0; c < 6; c++) {
+        cJSON_AddNumberToObject(arr, ch[c], (double)in->sat[c]);
+    }
+    arr = cJSON_AddObjectToObject(j, "peak_abs");
+    for (c = 0; c < 6; c++) {
+        cJSON_AddNumberToObject(arr, ch[c], in->peak[c]);
+    }
+    cJSON_AddItemToObject(j, "gravity_at_rest_mps2", cJSON_CreateDoubleArray(in->g_vec, 3));
+    cJSON_AddNumberToObject(j, "gravity_magnitude_mps2", in->g_mag);
+    {
+        char axis[3] = { in->g_vec[in->g_axis] >= 0.0 ? '+' : '-', (char)('x' + in->g_axis), '\0' };
+        cJSON_AddStringToObject(j, "gravity_axis", axis);
+    }
+    cJSON_AddItemToObject(j, "gyro_at_rest_rps", cJSON_CreateDoubleArray(in->gyro_rest, 3));
+    cJSON_AddNumberToObject(j, "still_window_start_s", in->still_t_s);
+    cJSON_AddBoolToObject(j, "complete", log->status == FNAV_END);
+    if (log->status != FNAV_END) {
+        cJSON_AddStringToObject(j, "error", log->error);
+    }
+    txt = cJSON_Print(j);
+    cJSON_Delete(j);
+    f = fopen(path, "w");
+    if (f == NULL || txt == NULL) {
+        free(txt);
+        if (f) {
+            fclose(f);
+        }
+        return -1;
+    }
+    fprintf(f, "%s\n", txt);
+    free(txt);
+    return fclose(f);
+}
+
+int hx_cmd_info(int argc, char **argv)
+{
+    hx_args_t a;
+    hx_log_t log;
+    info_t in;
+    int rc = hx_args_parse(&k_spec, argc, argv, &a);
+    int c, exit_code = HX_EXIT_OK;
+    static const char *const ch[6] = { "ax", "ay", "az", "gx", "gy", "gz" };
+    if (rc != 0) {
+        return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
+    }
+    rc = hx_load_input("info", &a, a.pos[0], &log);
+    if (rc < 0) {
+        return HX_EXIT_DATA;
+    }
+    analyse(&log, &in);
+    printf("file        %s\n", a.pos[0]);
+    printf("format      %s\n", hx_format_name(log.meta.format));
+    printf("sensor      %s\n", log.meta.sensor);
+    if (log.meta.axes[0]) {
+        printf("axes        %s\n", log.meta.axes);
+    }
+    printf("samples     %zu%s\n", log.n, log.meta.has_temp ? " (with temperature)" : "");
+    printf("rate        %.3f Hz (%s)\n", in.rate_hz, log.meta.rate_nominal ? "nominal" : "from median interval");
+    printf("duration    %.3f s\n", in.duration_s);
+    printf("interval    median %.3f ms, min %.3f ms, max %.3f ms\n", 1e3 * in.dt_med_s, 1e3 * in.dt_min_s,
+           1e3 * in.dt_max_s);
+    printf("gaps        %ld (> 1.5 intervals; longest %.1f ms)\n", in.gaps, 1e3 * in.max_gap_s);
+    printf("duplicates  %ld (time stamp repeated, dt = 0)\n", in.dups);
+    if (log.meta.has_seq) {
+        printf("drops       %ld (missing sensor counter values)\n", in.drops);
+    }
+    printf("saturation ");
+    for (c = 0; c < 6; c++) {
+        printf(" %s %ld", ch[c], in.sat[c]);
+    }
+    printf("\npeak        |a| %.2f %.2f %.2f g, |w| %.1f %.1f %.1f deg/s\n", in.peak[0] / 9.80665,
+           in.peak[1] / 9.80665, in.peak[2] / 9.80665, in.peak[3] * 57.29577951308232, in.peak[4] * 57.29577951308232,
+           in.peak[5] * 57.29577951308232);
+    printf("at rest     gravity along %c%c, |f| = %.4f m/s^2 (%.4f g), f = (%.4f, %.4f, %.4f) m/s^2 at t = %.1f s\n",
+           in.g_vec[in.g_axis] >= 0.0 ? '+' : '-', 'x' + in.g_axis, in.g_mag, in.g_mag / 9.80665, in.g_vec[0],
+           in.g_vec[1], in.g_vec[2], in.still_t_s);
+    printf("            gyro (%.5f, %.5f, %.5f) rad/s\n", in.gyro_rest[0], in.gyro_rest[1], in.gyro_rest[2]);
+    if (log.status != FNAV_END) {
+        printf("incomplete  %s\n", log.error);
+        exit_code = HX_EXIT_DATA;
+    }
+    if (hx_arg(&a, "--json") != NULL && write_json(hx_arg(&a, "--json"), &log, &in) != 0) {
+        hx_error("info", "%s: cannot write", hx_arg(&a, "--json"));
+        exit_code = HX_EXIT_IO;
+    }
+    if (log.status != FNAV_END) {
+        hx_error("info", "%s", log.error);
+    }
+    hx_log_free(&log);
+    return exit_code;
+}

@@ -1,0 +1,14 @@
+/* harness psd: placeholder until the sensor analysis issue (#4) lands. */
+#include <stdio.h>
+#include <string.h>
+
+#include "hx_cli.h"
+#include "hx_commands.h"
+
+int hx_cmd_psd(int argc, char **argv)
+{
+    (void)argc;
+    (void)argv;
+    fprintf(stderr, "harness psd: not available yet (planned in issue #4, sensor analysis)\n");
+    return HX_EXIT_UNAVAIL;
+}

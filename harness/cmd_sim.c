@@ -1,0 +1,14 @@
+/* harness sim: placeholder until the simulator issue (#5) lands. */
+#include <stdio.h>
+#include <string.h>
+
+#include "hx_cli.h"
+#include "hx_commands.h"
+
+int hx_cmd_sim(int argc, char **argv)
+{
+    (void)argc;
+    (void)argv;
+    fprintf(stderr, "harness sim: not available yet (planned in issue #5, simulator)\n");
+    return HX_EXIT_UNAVAIL;
+}

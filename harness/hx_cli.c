@@ -1,0 +1,371 @@
+/* Shared command-line plumbing of ./harness (see hx_cli.h). */
+#include "hx_cli.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+static int opt_index(const hx_spec_t *spec, const char *name, size_t len)
+{
+    int i;
+    for (i = 0; spec->opts != NULL && spec->opts[i].name != NULL; i++) {
+        if (strlen(spec->opts[i].name) == len && strncmp(spec->opts[i].name, name, len) == 0) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+void hx_usage(const hx_spec_t *spec, FILE *f)
+{
+    int i;
+    fprintf(f, "usage: harness %s %s\n", spec->name, spec->usage);
+    if (spec->summary != NULL) {
+        fprintf(f, "\n%s\n", spec->summary);
+    }
+    fprintf(f, "\noptions:\n");
+    for (i = 0; spec->opts != NULL && spec->opts[i].name != NULL; i++) {
+        char left[64];
+        snprintf(left, sizeof left, "%s%s%s", spec->opts[i].name, spec->opts[i].metavar ? " " : "",
+                 spec->opts[i].metavar ? spec->opts[i].metavar : "");
+        fprintf(f, "  %-22s %s%s\n", left, spec->opts[i].help, spec->opts[i].repeat ? " (repeatable)" : "");
+    }
+    fprintf(f, "  %-22s %s\n", "--help", "show this help");
+}
+
+int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
+{
+    int i;
+    int only_pos = 0;
+    memset(a, 0, sizeof *a);
+    a->spec = spec;
+    for (i = 0; i < argc; i++) {
+        const char *s = argv[i];
+        if (!only_pos && strcmp(s, "--") == 0) {
+            only_pos = 1;
+            continue;
+        }
+        if (!only_pos && (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0)) {
+            hx_usage(spec, stdout);
+            return 1;
+        }
+        if (!only_pos && s[0] == '-' && s[1] == '-') {
+            const char *eq = strchr(s, '=');
+            size_t len = eq ? (size_t)(eq - s) : strlen(s);
+            int k = opt_index(spec, s, len);
+            const char *v = NULL;
+            if (k < 0) {
+                fprintf(stderr, "harness %s: unknown option '%.*s'\n", spec->name, (int)len, s);
+                hx_usage(spec, stderr);
+                return -1;
+            }
+            if (spec->opts[k].metavar != NULL) {
+                if (eq != NULL) {
+                    v = eq + 1;
+                } else if (i + 1 < argc) {
+                    v = argv[++i];
+                } else {
+                    fprintf(stderr, "harness %s: option %s needs a value (%s)\n", spec->name, spec->opts[k].name,
+                            spec->opts[k].metavar);
+                    return -1;
+                }
+            } else if (eq != NULL) {
+                fprintf(stderr, "harness %s: option %s takes no value\n", spec->name, spec->opts[k].name);
+                return -1;
+            }
+            if (a->count[k] > 0 && !spec->opts[k].repeat) {
+                a->count[k] = 0; /* last one wins */
+            }
+            if (a->count[k] >= HX_MAX_REPEAT) {
+                fprintf(stderr, "harness %s: option %s given too often\n", spec->name, spec->opts[k].name);
+                return -1;
+            }
+            a->val[k][a->count[k]++] = v ? v : "";
+            continue;
+        }
+        if (s[0] == '-' && s[1] != '\0' && !only_pos && !(s[1] >= '0' && s[1] <= '9')) {
+            fprintf(stderr, "harness %s: unknown option '%s'\n", spec->name, s);
+            hx_usage(spec, stderr);
+            return -1;
+        }
+        if (a->npos >= spec->max_pos || a->npos >= HX_MAX_POS) {
+            fprintf(stderr, "harness %s: unexpected argument '%s'\n", spec->name, s);
+            hx_usage(spec, stderr);
+            return -1;
+        }
+        a->pos[a->npos++] = s;
+    }
+    if (a->npos < spec->min_pos) {
+        fprintf(stderr, "harness %s: missing argument\n", spec->name);
+        hx_usage(spec, stderr);
+        return -1;
+    }
+    return 0;
+}
+
+static int find(const hx_args_t *a, const char *name)
+{
+    int k = opt_index(a->spec, name, strlen(name));
+    if (k < 0) {
+        fprintf(stderr, "harness: internal: option %s not declared by %s\n", name, a->spec->name);
+        abort();
+    }
+    return k;
+}
+
+const char *hx_arg(const hx_args_t *a, const char *name)
+{
+    int k = find(a, name);
+    return a->count[k] > 0 ? a->val[k][a->count[k] - 1] : NULL;
+}
+
+int hx_arg_count(const hx_args_t *a, const char *name)
+{
+    return a->count[find(a, name)];
+}
+
+const char *hx_arg_at(const hx_args_t *a, const char *name, int i)
+{
+    int k = find(a, name);
+    return (i >= 0 && i < a->count[k]) ? a->val[k][i] : NULL;
+}
+
+int hx_flag(const hx_args_t *a, const char *name)
+{
+    return a->count[find(a, name)] > 0;
+}
+
+int hx_arg_double(const hx_args_t *a, const char *name, double lo, double hi, double *out)
+{
+    const char *s = hx_arg(a, name);
+    char *end;
+    double v;
+    if (s == NULL) {
+        return 0;
+    }
+    errno = 0;
+    v = strtod(s, &end);
+    if (end == s || *end != '\0' || v != v || v < lo || v > hi) {
+        fprintf(stderr, "harness %s: %s '%s' is not a number in [%g, %g]\n", a->spec->name, name, s, lo, hi);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+int hx_arg_long(const hx_args_t *a, const char *name, long lo, long hi, long *out)
+{
+    const char *s = hx_arg(a, name);
+    char *end;
+    long v;
+    if (s == NULL) {
+        return 0;
+    }
+    errno = 0;
+    v = strtol(s, &end, 10);
+    if (end == s || *end != '\0' || errno != 0 || v < lo || v > hi) {
+        fprintf(stderr, "harness %s: %s '%s' is not an integer in [%ld, %ld]\n", a->spec->name, name, s, lo, hi);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+void hx_error(const char *cmd, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "harness %s: error: ", cmd);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+void hx_warn(const char *cmd, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "harness %s: warning: ", cmd);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+static int input_options(const char *cmd, const hx_args_t *a, hx_format_t *fmt, double *rate)
+{
+    const char *from = hx_arg(a, "--from");
+    *fmt = HX_FMT_AUTO;
+    *rate = 0.0;
+    if (from != NULL) {
+        *fmt = hx_format_from_name(from);
+        if (*fmt == HX_FMT_COUNT || *fmt == HX_FMT_AUTO) {
+            hx_error(cmd, "unknown input format '%s' (known: %s)", from, hx_format_list());
+            return -1;
+        }
+    }
+    if (hx_arg_double(a, "--input-rate", 1e-3, 1e6, rate) != 0) {
+        return -1;
+    }
+    return 0;
+}
+
+static void print_warnings(const char *cmd, const char *w)
+{
+    char buf[512];
+    char *line, *save = NULL;
+    if (w == NULL || *w == '\0') {
+        return;
+    }
+    snprintf(buf, sizeof buf, "%s", w);
+    for (line = strtok_r(buf, "\n", &save); line != NULL; line = strtok_r(NULL, "\n", &save)) {
+        hx_warn(cmd, "%s", line);
+    }
+}
+
+hx_reader_t *hx_open_input(const char *cmd, const hx_args_t *a, const char *path)
+{
+    hx_format_t fmt;
+    double rate;
+    char err[320];
+    hx_reader_t *r;
+    if (input_options(cmd, a, &fmt, &rate) != 0) {
+        return NULL;
+    }
+    r = hx_reader_open(path, fmt, rate, err, sizeof err);
+    if (r == NULL) {
+        hx_error(cmd, "%s", err);
+        return NULL;
+    }
+    print_warnings(cmd, hx_reader_warnings(r));
+    return r;
+}
+
+int hx_load_input(const char *cmd, const hx_args_t *a, const char *path, hx_log_t *log)
+{
+    hx_format_t fmt;
+    double rate;
+    char err[320];
+    int rc;
+    if (input_options(cmd, a, &fmt, &rate) != 0) {
+        return -1;
+    }
+    rc = hx_log_load(log, path, fmt, rate, err, sizeof err);
+    if (rc < 0) {
+        hx_error(cmd, "%s", err);
+        return -1;
+    }
+    print_warnings(cmd, log->warnings);
+    if (rc > 0) {
+        hx_warn(cmd, "%s (using the %zu samples before it)", log->error, log->n);
+    }
+    return rc;
+}
+
+/* ------------------------------------------------------------ progress */
+
+double hx_now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void hx_progress_start(hx_progress_t *p, const char *label, double total)
+{
+    memset(p, 0, sizeof *p);
+    p->label = label;
+    p->total = total > 0.0 ? total : 1.0;
+    p->t_start = hx_now_s();
+    p->t_last = p->t_start;
+    p->tty = isatty(fileno(stderr));
+    p->last_decile = 0;
+}
+
+void hx_progress_update(hx_progress_t *p, double done)
+{
+    double now, frac;
+    int decile;
+    now = hx_now_s();
+    if (now - p->t_start < 1.0) {
+        return;
+    }
+    frac = done / p->total;
+    if (frac > 1.0) {
+        frac = 1.0;
+    }
+    if (p->tty) {
+        if (now - p->t_last < 0.2 && p->shown) {
+            return;
+        }
+        fprintf(stderr, "\r%s: %3.0f %% (%.1f s)", p->label, 100.0 * frac, now - p->t_start);
+        fflush(stderr);
+    } else {
+        decile = (int)(frac * 10.0);
+        if (decile <= p->last_decile && p->shown) {
+            return;
+        }
+        p->last_decile = decile;
+        fprintf(stderr, "%s: %3.0f %% (%.1f s)\n", p->label, 100.0 * frac, now - p->t_start);
+    }
+    p->shown = 1;
+    p->t_last = now;
+}
+
+void hx_progress_end(hx_progress_t *p)
+{
+    if (p->shown) {
+        fprintf(stderr, "%s%s: done in %.1f s\n", p->tty ? "\r" : "", p->label, hx_now_s() - p->t_start);
+    }
+}
+
+/* ------------------------------------------------------------ plots */
+
+int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h)
+{
+    memset(p, 0, sizeof *p);
+    if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
+        hx_error(cmd, "cannot draw %s: gnuplot is not installed (apt-get install gnuplot-nox)", png_path);
+        return -1;
+    }
+    p->gp = popen("gnuplot", "w");
+    if (p->gp == NULL) {
+        hx_error(cmd, "cannot start gnuplot (%s)", strerror(errno));
+        return -1;
+    }
+    snprintf(p->path, sizeof p->path, "%s", png_path);
+    fprintf(p->gp, "set terminal pngcairo size %d,%d noenhanced font 'sans,10'\n", w, h);
+    fprintf(p->gp, "set output '%s'\n", png_path);
+    fprintf(p->gp, "set grid\n");
+    return 0;
+}
+
+int hx_plot_close(hx_plot_t *p, const char *cmd)
+{
+    int rc;
+    if (p->gp == NULL) {
+        return -1;
+    }
+    fprintf(p->gp, "unset output\n");
+    rc = pclose(p->gp);
+    p->gp = NULL;
+    if (rc != 0 || access(p->path, F_OK) != 0) {
+        hx_error(cmd, "gnuplot failed to write %s", p->path);
+        return -1;
+    }
+    return 0;
+}
+
+const char *hx_fmt_g(char *buf, size_t size, double v)
+{
+    if (isfinite(v)) {
+        snprintf(buf, size, "%.6g", v);
+    } else {
+        snprintf(buf, size, "null");
+    }
+    return buf;
+}

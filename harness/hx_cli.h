@@ -1,0 +1,135 @@
+/**
+ * @file hx_cli.h
+ * @brief Shared command-line plumbing of ./harness: option parsing, exit
+ *        codes, messages, progress indicator, input opening, plotting.
+ */
+#ifndef HX_CLI_H
+#define HX_CLI_H
+
+#include <stdio.h>
+#include "hx_log.h"
+
+/** Exit codes of every harness command (docs/harness.md). */
+enum {
+    HX_EXIT_OK = 0,      /**< success */
+    HX_EXIT_DATA = 1,    /**< bad or incomplete input data; outputs valid up to the error */
+    HX_EXIT_USAGE = 2,   /**< bad command line */
+    HX_EXIT_IO = 3,      /**< cannot write an output, or a tool is missing */
+    HX_EXIT_UNAVAIL = 4  /**< command not available in this build */
+};
+
+#define HX_MAX_REPEAT 32
+#define HX_MAX_POS 8
+
+/** One option of a command. */
+typedef struct {
+    const char *name;     /**< "--out" */
+    const char *metavar;  /**< "FILE"; NULL for a flag */
+    const char *help;     /**< one line */
+    int repeat;           /**< may be given several times */
+} hx_opt_t;
+
+/** A command's command-line specification. */
+typedef struct {
+    const char *name;        /**< "replay" */
+    const char *usage;       /**< "LOG [options]" */
+    const char *summary;     /**< one paragraph */
+    int min_pos, max_pos;    /**< positional arguments */
+    const hx_opt_t *opts;    /**< options, terminated by {NULL} */
+} hx_spec_t;
+
+/** Parsed arguments. */
+typedef struct {
+    const hx_spec_t *spec;
+    const char *pos[HX_MAX_POS];
+    int npos;
+    int count[64];                         /**< per option: times given */
+    const char *val[64][HX_MAX_REPEAT];    /**< per option: values */
+} hx_args_t;
+
+/** Parse; returns 0 ok, 1 when --help was printed (exit 0), -1 on a usage
+ *  error (message and usage printed on stderr; exit HX_EXIT_USAGE). */
+int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a);
+
+/** Value of an option (last given) or NULL. */
+const char *hx_arg(const hx_args_t *a, const char *name);
+/** Number of times an option was given. */
+int hx_arg_count(const hx_args_t *a, const char *name);
+/** The i-th value of a repeatable option. */
+const char *hx_arg_at(const hx_args_t *a, const char *name, int i);
+/** Flag given? */
+int hx_flag(const hx_args_t *a, const char *name);
+/** Numeric option: 0 ok (default kept when absent), -1 on a bad number
+ *  (message printed). Range checked against [lo, hi]. */
+int hx_arg_double(const hx_args_t *a, const char *name, double lo, double hi, double *out);
+int hx_arg_long(const hx_args_t *a, const char *name, long lo, long hi, long *out);
+
+/** Print the usage of a command to a stream. */
+void hx_usage(const hx_spec_t *spec, FILE *f);
+
+/** "harness CMD: error: ..." on stderr. */
+void hx_error(const char *cmd, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+/** "harness CMD: warning: ..." on stderr. */
+void hx_warn(const char *cmd, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/** Options every command that reads a log understands. */
+#define HX_INPUT_OPTS                                                                         \
+    { "--from", "NAME", "input format (default: detected): bin, csv, gx2, openshoe820, "     \
+                        "ngimu, pyshoe, ipol, adis, square2", 0 },                            \
+    { "--input-rate", "HZ", "sample rate of an input without time stamps", 0 }
+
+/** Open the input of a command using --from and --input-rate. Prints the
+ *  error and returns NULL on failure; prints reader warnings. */
+hx_reader_t *hx_open_input(const char *cmd, const hx_args_t *a, const char *path);
+/** Load a whole input using --from and --input-rate. Returns 0 complete,
+ *  1 partial (error printed as a warning now; caller exits HX_EXIT_DATA
+ *  after writing its outputs), -1 nothing read (error printed). */
+int hx_load_input(const char *cmd, const hx_args_t *a, const char *path, hx_log_t *log);
+
+/* ------------------------------------------------------------ progress */
+
+/** Progress on stderr for long work: redrawn in place on a terminal (at most
+ *  5 times a second), a line every 10 % otherwise; silent for work that
+ *  ends within 1 s. */
+typedef struct {
+    const char *label;
+    double total;
+    double t_start;
+    double t_last;
+    int last_decile;
+    int shown;
+    int tty;
+} hx_progress_t;
+
+void hx_progress_start(hx_progress_t *p, const char *label, double total);
+void hx_progress_update(hx_progress_t *p, double done);
+void hx_progress_end(hx_progress_t *p);
+/** Seconds since an arbitrary origin (monotonic). */
+double hx_now_s(void);
+
+/* ------------------------------------------------------------ plots */
+
+/** A gnuplot session writing one PNG. */
+typedef struct {
+    FILE *gp;
+    char path[512];
+} hx_plot_t;
+
+/** Start gnuplot for a PNG of w x h pixels. Returns 0, or -1 with a
+ *  message printed when gnuplot is not installed. */
+int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h);
+/** Finish; returns 0 when the PNG was written. */
+int hx_plot_close(hx_plot_t *p, const char *cmd);
+
+/** Format a double for JSON/text (finite or "null"). */
+const char *hx_fmt_g(char *buf, size_t size, double v);
+
+#endif /* HX_CLI_H */

@@ -1,0 +1,1276 @@
+/* Harness log I/O: .bin, CSV interchange and importers (see hx_log.h and
+ * docs/log-format.md). */
+#include "hx_log.h"
+#include "hx_bin.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <zlib.h>
+
+#define HX_LINE_MAX 4096
+#define HX_MAX_COLS 64
+#define HX_BUF_SIZE 65536
+
+static const char *const k_format_names[HX_FMT_COUNT] = {
+    "auto", "bin", "csv", "gx2", "openshoe820", "ngimu", "pyshoe", "ipol", "adis", "square2"
+};
+
+const char *hx_format_name(hx_format_t fmt)
+{
+    return ((int)fmt >= 0 && fmt < HX_FMT_COUNT) ? k_format_names[fmt] : "?";
+}
+
+hx_format_t hx_format_from_name(const char *name)
+{
+    int i;
+    for (i = 0; i < HX_FMT_COUNT; i++) {
+        if (strcmp(name, k_format_names[i]) == 0) {
+            return (hx_format_t)i;
+        }
+    }
+    return HX_FMT_COUNT;
+}
+
+const char *hx_format_list(void)
+{
+    return "bin, csv, gx2, openshoe820, ngimu, pyshoe, ipol, adis, square2";
+}
+
+/* How a text format gives time. */
+typedef enum {
+    TIME_COLUMN_S,   /* a column in seconds */
+    TIME_INDEX,      /* uniform: line index / rate */
+    TIME_COUNTER,    /* a packet counter column / rate, also the seq */
+    TIME_GX2         /* GX2 sensor timer (19.6608 MHz), see gx2_time() */
+} time_mode_t;
+
+struct hx_reader {
+    gzFile gz;
+    char path[512];
+    hx_meta_t meta;
+    hx_read_stats_t stats;
+    char err[320];
+    char warn[512];
+    fnav_status_t deferred;     /* error to return at the end (bin) */
+    int finished;
+
+    /* text */
+    char line[HX_LINE_MAX];
+    char delim;                 /* ',' '\t' or ' ' (any whitespace) */
+    int col_t, col_a[3], col_g[3], col_temp, col_aux;
+    int ncols_needed;
+    double acc_scale, gyr_scale;
+    time_mode_t time_mode;
+    double rate_hz;
+    long index;
+    int have_prev;
+    int64_t prev_t_ns;
+    double prev_counter;
+    /* GX2 timer state */
+    int64_t gx2_ticks;
+    long gx2_last_dt;
+    double gx2_prev_host;
+    long gx2_bridged;
+
+    /* bin */
+    unsigned char buf[HX_BUF_SIZE];
+    size_t pos, len;
+    long long offset;           /* file offset of buf[pos] */
+    int eof;
+    long record_slot;           /* index of the next record slot */
+};
+
+static void set_err(hx_reader_t *r, const char *fmt, ...)
+{
+    va_list ap;
+    if (r->err[0] != '\0') {
+        return; /* keep the first error */
+    }
+    va_start(ap, fmt);
+    vsnprintf(r->err, sizeof r->err, fmt, ap);
+    va_end(ap);
+}
+
+static void add_warn(hx_reader_t *r, const char *fmt, ...)
+{
+    va_list ap;
+    size_t used = strlen(r->warn);
+    if (used + 2 >= sizeof r->warn) {
+        return;
+    }
+    if (used > 0) {
+        r->warn[used++] = '\n';
+        r->warn[used] = '\0';
+    }
+    va_start(ap, fmt);
+    vsnprintf(r->warn + used, sizeof r->warn - used, fmt, ap);
+    va_end(ap);
+}
+
+static void copy_str(char *dst, size_t size, const char *src)
+{
+    size_t n = strlen(src);
+    if (n >= size) {
+        n = size - 1;
+    }
+    memcpy(dst, src, n);
+    dst[n] = '\0';
+}
+
+/* ------------------------------------------------------------ parsing */
+
+static char *trim(char *s)
+{
+    char *e;
+    while (*s == ' ' || *s == '\t' || *s == '"') {
+        s++;
+    }
+    e = s + strlen(s);
+    while (e > s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r' || e[-1] == '\n' || e[-1] == '"')) {
+        *--e = '\0';
+    }
+    return s;
+}
+
+/* Split line in place; returns the number of fields. */
+static int split(char *line, char delim, char **f, int max)
+{
+    int n = 0;
+    char *p = line;
+    if (delim == ' ') {
+        while (*p != '\0' && n < max) {
+            while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n') {
+                p++;
+            }
+            if (*p == '\0') {
+                break;
+            }
+            f[n++] = p;
+            while (*p != '\0' && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\n') {
+                p++;
+            }
+            if (*p != '\0') {
+                *p++ = '\0';
+            }
+        }
+        return n;
+    }
+    f[n++] = p;
+    while (*p != '\0') {
+        if (*p == delim) {
+            *p = '\0';
+            if (n < max) {
+                f[n++] = p + 1;
+            }
+        }
+        p++;
+    }
+    {
+        int i;
+        for (i = 0; i < n; i++) {
+            f[i] = trim(f[i]);
+        }
+    }
+    return n;
+}
+
+/* Strict number: the whole field must be a finite decimal number. */
+static int parse_num(const char *s, double *out)
+{
+    char *end;
+    double v;
+    if (*s == '\0') {
+        return -1;
+    }
+    errno = 0;
+    v = strtod(s, &end);
+    if (end == s || *end != '\0') {
+        return -1;
+    }
+    if (v != v || v > 1.0e300 || v < -1.0e300) {
+        return -2;
+    }
+    *out = v;
+    return 0;
+}
+
+/* Seconds as text to integer ns, exactly for plain decimals. */
+static int parse_time_ns(const char *s, int64_t *out)
+{
+    const char *p = s;
+    int neg = 0, digits = 0, frac = 0;
+    int64_t ip = 0, fp = 0;
+    if (*p == '+' || *p == '-') {
+        neg = (*p == '-');
+        p++;
+    }
+    while (isdigit((unsigned char)*p)) {
+        if (ip > 9000000000LL) {
+            return -1;
+        }
+        ip = ip * 10 + (*p - '0');
+        p++;
+        digits++;
+    }
+    if (*p == '.') {
+        p++;
+        while (isdigit((unsigned char)*p)) {
+            if (frac < 9) {
+                fp = fp * 10 + (*p - '0');
+                frac++;
+            }
+            p++;
+            digits++;
+        }
+    }
+    if (*p != '\0' || digits == 0) {
+        double v;
+        int rc = parse_num(s, &v);
+        if (rc != 0) {
+            return rc;
+        }
+        if (v > 9.0e9 || v < -9.0e9) {
+            return -1;
+        }
+        *out = (int64_t)(v * 1.0e9 + (v >= 0.0 ? 0.5 : -0.5));
+        return 0;
+    }
+    while (frac < 9) {
+        fp *= 10;
+        frac++;
+    }
+    *out = (ip * 1000000000LL + fp) * (neg ? -1 : 1);
+    return 0;
+}
+
+static int lower_eq(const char *a, const char *b)
+{
+    while (*a != '\0' && *b != '\0') {
+        if (tolower((unsigned char)*a) != tolower((unsigned char)*b)) {
+            return 0;
+        }
+        a++;
+        b++;
+    }
+    return *a == *b;
+}
+
+/* Read one line; 1 ok, 0 EOF, -1 error (err set). */
+static int read_line(hx_reader_t *r)
+{
+    size_t n;
+    if (gzgets(r->gz, r->line, (int)sizeof r->line) == NULL) {
+        int e;
+        (void)gzerror(r->gz, &e);
+        if (e != Z_OK && e != Z_STREAM_END) {
+            set_err(r, "%s:%ld: read error (%s)", r->path, r->stats.lines + 1, gzerror(r->gz, &e));
+            return -1;
+        }
+        return 0;
+    }
+    r->stats.lines++;
+    n = strlen(r->line);
+    if (n == sizeof r->line - 1 && r->line[n - 1] != '\n' && !gzeof(r->gz)) {
+        set_err(r, "%s:%ld: line longer than %d characters", r->path, r->stats.lines, HX_LINE_MAX - 1);
+        return -1;
+    }
+    return 1;
+}
+
+static int blank(const char *s)
+{
+    while (*s != '\0') {
+        if (!isspace((unsigned char)*s)) {
+            return 0;
+        }
+        s++;
+    }
+    return 1;
+}
+
+/* ------------------------------------------------------------ detection */
+
+static hx_format_t detect(const unsigned char *b, size_t n)
+{
+    char text[600];
+    size_t m = n < sizeof text - 1 ? n : sizeof text - 1;
+    if (n >= 4 && memcmp(b, HX_BIN_MAGIC, 4) == 0) {
+        return HX_FMT_BIN;
+    }
+    memcpy(text, b, m);
+    text[m] = '\0';
+    if (strstr(text, "Inertial data") != NULL || strstr(text, "a_x [g]") != NULL) {
+        return HX_FMT_GX2;
+    }
+    if (strncmp(text, "Time (s),Gyroscope X (deg/s)", 28) == 0) {
+        return HX_FMT_NGIMU;
+    }
+    if (strncmp(text, "t_s,ax_mps2", 11) == 0) {
+        return HX_FMT_PYSHOE;
+    }
+    if (strncmp(text, "Acquisition frequency", 21) == 0) {
+        return HX_FMT_IPOL;
+    }
+    if (strncmp(text, "gyro_x_dps,gyro_y_dps", 21) == 0) {
+        return HX_FMT_ADIS;
+    }
+    if (strncmp(text, "sample,f_x_mps2", 15) == 0) {
+        return HX_FMT_SQUARE2;
+    }
+    if (strncmp(text, "t,", 2) == 0 || strncmp(text, "t ,", 3) == 0) {
+        return HX_FMT_CSV;
+    }
+    {
+        /* headerless: six comma-separated numbers -> OpenShoe 820 Hz */
+        char *nl = strchr(text, '\n');
+        int commas = 0;
+        const char *p;
+        if (nl != NULL) {
+            *nl = '\0';
+        }
+        for (p = text; *p != '\0'; p++) {
+            if (*p == ',') {
+                commas++;
+            } else if (!(isdigit((unsigned char)*p) || *p == '.' || *p == '-' || *p == '+' ||
+                         *p == 'e' || *p == 'E' || *p == '\r' || *p == ' ')) {
+                return HX_FMT_CSV; /* has a header of some kind */
+            }
+        }
+        if (commas == 5) {
+            return HX_FMT_OS820;
+        }
+    }
+    return HX_FMT_CSV;
+}
+
+/* ------------------------------------------------------------ text setup */
+
+static int find_col(char **f, int n, const char *name)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        if (lower_eq(f[i], name)) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+static int setup_header(hx_reader_t *r, const char *const names[8], int time_required)
+{
+    char *f[HX_MAX_COLS];
+    int n, i, rc;
+    static const char *const what[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
+    do {
+        rc = read_line(r);
+        if (rc <= 0) {
+            if (rc == 0) {
+                set_err(r, "%s: empty file (no header line)", r->path);
+            }
+            return -1;
+        }
+    } while (blank(r->line));
+    n = split(r->line, r->delim, f, HX_MAX_COLS);
+    r->ncols_needed = 0;
+    for (i = 0; i < 8; i++) {
+        int c = (names[i] != NULL) ? find_col(f, n, names[i]) : -1;
+        if (c < 0 && names[i] != NULL && (i < 7) && (i > 0 || time_required)) {
+            set_err(r, "%s:%ld: header has no column '%s' (%s); expected header %s", r->path,
+                    r->stats.lines, names[i], what[i],
+                    r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "of the format");
+            return -1;
+        }
+        if (i == 0) {
+            r->col_t = c;
+        } else if (i <= 3) {
+            r->col_a[i - 1] = c;
+        } else if (i <= 6) {
+            r->col_g[i - 4] = c;
+        } else {
+            r->col_temp = c;
+        }
+        if (c + 1 > r->ncols_needed) {
+            r->ncols_needed = c + 1;
+        }
+    }
+    return 0;
+}
+
+static void set_cols(hx_reader_t *r, int t, int a0, int g0)
+{
+    int i;
+    r->col_t = t;
+    for (i = 0; i < 3; i++) {
+        r->col_a[i] = a0 + i;
+        r->col_g[i] = g0 + i;
+    }
+    r->col_temp = -1;
+    r->ncols_needed = (a0 > g0 ? a0 : g0) + 3;
+    if (t + 1 > r->ncols_needed) {
+        r->ncols_needed = t + 1;
+    }
+}
+
+static int setup_text(hx_reader_t *r, double rate_hz)
+{
+    hx_meta_t *m = &r->meta;
+    r->acc_scale = 1.0;
+    r->gyr_scale = 1.0;
+    r->col_temp = -1;
+    r->col_aux = -1;
+    r->delim = ',';
+    switch (m->format) {
+    case HX_FMT_CSV: {
+        static const char *const names[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
+        r->time_mode = TIME_COLUMN_S;
+        if (setup_header(r, names, 1) != 0) {
+            return -1;
+        }
+        m->has_temp = r->col_temp >= 0;
+        copy_str(m->sensor, sizeof m->sensor, "unknown");
+        break;
+    }
+    case HX_FMT_NGIMU: {
+        static const char *const names[8] = { "Time (s)", "Accelerometer X (g)", "Accelerometer Y (g)",
+                                              "Accelerometer Z (g)", "Gyroscope X (deg/s)",
+                                              "Gyroscope Y (deg/s)", "Gyroscope Z (deg/s)", NULL };
+        r->time_mode = TIME_COLUMN_S;
+        r->acc_scale = 9.80665;
+        r->gyr_scale = 3.14159265358979323846 / 180.0;
+        if (setup_header(r, names, 1) != 0) {
+            return -1;
+        }
+        copy_str(m->sensor, sizeof m->sensor, "x-io NGIMU");
+        copy_str(m->axes, sizeof m->axes, "sensor axes; tilted at rest, +z mostly up");
+        break;
+    }
+    case HX_FMT_PYSHOE: {
+        static const char *const names[8] = { "t_s", "ax_mps2", "ay_mps2", "az_mps2",
+                                              "gx_radps", "gy_radps", "gz_radps", NULL };
+        r->time_mode = TIME_COLUMN_S;
+        if (setup_header(r, names, 1) != 0) {
+            return -1;
+        }
+        copy_str(m->sensor, sizeof m->sensor, "MicroStrain 3DM-GX3/GX5");
+        copy_str(m->axes, sizeof m->axes, "sensor axes; z down at rest");
+        break;
+    }
+    case HX_FMT_ADIS: {
+        static const char *const names[8] = { NULL, "acc_x_g", "acc_y_g", "acc_z_g",
+                                              "gyro_x_dps", "gyro_y_dps", "gyro_z_dps", NULL };
+        r->time_mode = TIME_INDEX;
+        r->rate_hz = rate_hz > 0.0 ? rate_hz : 100.0;
+        r->acc_scale = 9.80665;
+        r->gyr_scale = 3.14159265358979323846 / 180.0;
+        if (setup_header(r, names, 0) != 0) {
+            return -1;
+        }
+        copy_str(m->sensor, sizeof m->sensor, "ADIS16405");
+        copy_str(m->axes, sizeof m->axes, "sensor axes; z down at rest");
+        break;
+    }
+    case HX_FMT_SQUARE2: {
+        static const char *const names[8] = { "sample", "f_x_mps2", "f_y_mps2", "f_z_mps2",
+                                              "w_x_radps", "w_y_radps", "w_z_radps", NULL };
+        r->time_mode = TIME_COUNTER;
+        r->rate_hz = rate_hz > 0.0 ? rate_hz : 100.0;
+        if (setup_header(r, names, 1) != 0) {
+            return -1;
+        }
+        m->has_seq = 1;
+        copy_str(m->sensor, sizeof m->sensor, "ZUPT-aided-INS square2");
+        copy_str(m->axes, sizeof m->axes, "sensor axes; z down at rest");
+        break;
+    }
+    case HX_FMT_IPOL: {
+        static const char *const names[8] = { "PacketCounter", "Acc_X", "Acc_Y", "Acc_Z",
+                                              "Gyr_X", "Gyr_Y", "Gyr_Z", NULL };
+        double fs = 0.0;
+        if (read_line(r) <= 0) {
+            set_err(r, "%s: empty file", r->path);
+            return -1;
+        }
+        if (sscanf(r->line, "Acquisition frequency: %lf", &fs) != 1 || !(fs > 0.0 && fs < 1.0e6)) {
+            set_err(r, "%s:1: expected 'Acquisition frequency: N Hz'", r->path);
+            return -1;
+        }
+        r->time_mode = TIME_COUNTER;
+        r->rate_hz = rate_hz > 0.0 ? rate_hz : fs;
+        r->delim = '\t';
+        if (setup_header(r, names, 1) != 0) {
+            return -1;
+        }
+        m->has_seq = 1;
+        copy_str(m->sensor, sizeof m->sensor, "Xsens MTw Awinda");
+        copy_str(m->axes, sizeof m->axes, "sensor axes; tilted at rest, +z mostly up");
+        break;
+    }
+    case HX_FMT_OS820:
+        r->time_mode = TIME_INDEX;
+        r->rate_hz = rate_hz > 0.0 ? rate_hz : 820.0;
+        set_cols(r, -1, 0, 3);
+        copy_str(m->sensor, sizeof m->sensor, "OpenShoe (820 Hz)");
+        copy_str(m->axes, sizeof m->axes, "sensor axes; z up at rest");
+        if (!(rate_hz > 0.0)) {
+            add_warn(r, "%s: no time stamps; assuming the OpenShoe C data set rate of 820 Hz (give --input-rate)",
+                     r->path);
+        }
+        break;
+    case HX_FMT_GX2: {
+        int rc;
+        r->time_mode = TIME_GX2;
+        r->delim = ' ';
+        r->acc_scale = 9.80665;
+        do {
+            rc = read_line(r);
+            if (rc <= 0) {
+                if (rc == 0) {
+                    set_err(r, "%s: no 'Header:' line found", r->path);
+                }
+                return -1;
+            }
+        } while (strncmp(trim(r->line), "Header:", 7) != 0);
+        set_cols(r, 10, 1, 4);
+        r->col_aux = 9; /* Nr */
+        r->ncols_needed = 12;
+        m->has_seq = 1;
+        copy_str(m->sensor, sizeof m->sensor, "MicroStrain 3DM-GX2");
+        copy_str(m->axes, sizeof m->axes, "sensor axes; z up at rest");
+        break;
+    }
+    default:
+        set_err(r, "%s: internal: not a text format", r->path);
+        return -1;
+    }
+    if (r->time_mode != TIME_COLUMN_S && r->time_mode != TIME_GX2) {
+        m->rate_hz = r->rate_hz;
+        m->rate_nominal = 1;
+    }
+    return 0;
+}
+
+/* GX2: the sensor's timer counts at 19.6608 MHz but the logger restarts it
+ * about once a second; inside a run the tick difference is the true period.
+ * A difference that is not positive or differs from the last good one by
+ * more than half bridges with the last good period (docs/log-format.md). */
+#define GX2_TICK_HZ 19660800L
+static int64_t gx2_time(hx_reader_t *r, double counter, double host_s)
+{
+    if (!r->have_prev) {
+        r->gx2_ticks = 0;
+    } else {
+        double d = counter - r->prev_counter;
+        long dl = (long)d;
+        if (d > 0.0 && d < GX2_TICK_HZ / 10 &&
+            (r->gx2_last_dt == 0 || labs(dl - r->gx2_last_dt) < r->gx2_last_dt / 2)) {
+            r->gx2_last_dt = dl;
+            r->gx2_ticks += dl;
+        } else if (r->gx2_last_dt > 0) {
+            r->gx2_ticks += r->gx2_last_dt;
+            r->gx2_bridged++;
+        } else {
+            double dh = host_s - r->gx2_prev_host;
+            if (!(dh > 0.0 && dh < 0.1)) {
+                dh = 1.0 / 250.0;
+            }
+            r->gx2_ticks += (int64_t)(dh * (double)GX2_TICK_HZ + 0.5);
+            r->gx2_bridged++;
+        }
+    }
+    r->prev_counter = counter;
+    r->gx2_prev_host = host_s;
+    return (r->gx2_ticks * 1000000000LL) / GX2_TICK_HZ;
+}
+
+static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
+{
+    char *f[HX_MAX_COLS];
+    int n, i, rc;
+    double v[6], tv = 0.0, aux = 0.0;
+    int64_t t_ns = 0;
+    for (;;) {
+        rc = read_line(r);
+        if (rc < 0) {
+            return FNAV_E_IO;
+        }
+        if (rc == 0) {
+            return FNAV_END;
+        }
+        if (!blank(r->line)) {
+            break;
+        }
+    }
+    n = split(r->line, r->delim, f, HX_MAX_COLS);
+    if (r->meta.format == HX_FMT_GX2) {
+        if (n == 0 || strncmp(f[0], "0x", 2) != 0) {
+            set_err(r, "%s:%ld: not a GX2 data line", r->path, r->stats.lines);
+            return FNAV_E_FORMAT;
+        }
+    }
+    if (n < r->ncols_needed) {
+        set_err(r, "%s:%ld: %d column%s, expected at least %d", r->path, r->stats.lines, n,
+                n == 1 ? "" : "s", r->ncols_needed);
+        return FNAV_E_FORMAT;
+    }
+    for (i = 0; i < 3; i++) {
+        int c;
+        for (c = 0; c < 2; c++) {
+            int col = c == 0 ? r->col_a[i] : r->col_g[i];
+            int prc = parse_num(f[col], &v[c * 3 + i]);
+            if (prc != 0) {
+                set_err(r, "%s:%ld: column %d ('%.20s') is %s", r->path, r->stats.lines, col + 1, f[col],
+                        prc == -2 ? "NaN or Inf" : "not a number");
+                return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
+            }
+        }
+    }
+    if (r->col_temp >= 0) {
+        double tc;
+        int prc = parse_num(f[r->col_temp], &tc);
+        if (prc != 0) {
+            set_err(r, "%s:%ld: temperature ('%.20s') is %s", r->path, r->stats.lines, f[r->col_temp],
+                    prc == -2 ? "NaN or Inf" : "not a number");
+            return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
+        }
+        s->temp_c = (fnav_real_t)tc;
+        s->flags |= FNAV_SAMPLE_HAS_TEMP;
+    }
+    switch (r->time_mode) {
+    case TIME_COLUMN_S: {
+        int prc = parse_time_ns(f[r->col_t], &t_ns);
+        if (prc != 0) {
+            set_err(r, "%s:%ld: time ('%.20s') is %s", r->path, r->stats.lines, f[r->col_t],
+                    prc == -2 ? "NaN or Inf" : "not a number");
+            return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
+        }
+        s->seq = (uint32_t)r->index;
+        break;
+    }
+    case TIME_INDEX:
+        t_ns = (int64_t)((double)r->index * 1.0e9 / r->rate_hz + 0.5);
+        s->seq = (uint32_t)r->index;
+        break;
+    case TIME_COUNTER:
+        if (parse_num(f[r->col_t], &tv) != 0 || tv < 0.0 || tv > 4.0e9) {
+            set_err(r, "%s:%ld: counter ('%.20s') is not a non-negative number", r->path, r->stats.lines,
+                    f[r->col_t]);
+            return FNAV_E_FORMAT;
+        }
+        t_ns = (int64_t)(tv * 1.0e9 / r->rate_hz + 0.5);
+        s->seq = (uint32_t)tv;
+        s->flags |= FNAV_SAMPLE_HAS_SEQ;
+        break;
+    case TIME_GX2: {
+        double host = 0.0;
+        if (parse_num(f[7], &tv) != 0 || parse_num(f[r->col_aux], &aux) != 0 ||
+            parse_num(f[r->col_t], &host) != 0) {
+            set_err(r, "%s:%ld: counter, Nr or time stamp is not a number", r->path, r->stats.lines);
+            return FNAV_E_FORMAT;
+        }
+        t_ns = gx2_time(r, tv, host);
+        s->seq = (uint32_t)aux;
+        s->flags |= FNAV_SAMPLE_HAS_SEQ;
+        break;
+    }
+    }
+    if (r->have_prev && t_ns < r->prev_t_ns) {
+        set_err(r, "%s:%ld: time goes backwards (%.9f s after %.9f s)", r->path, r->stats.lines,
+                (double)t_ns * 1e-9, (double)r->prev_t_ns * 1e-9);
+        return FNAV_E_TIME;
+    }
+    r->have_prev = 1;
+    r->prev_t_ns = t_ns;
+    s->t_ns = t_ns;
+    for (i = 0; i < 3; i++) {
+        s->accel_mps2[i] = (fnav_real_t)(v[i] * r->acc_scale);
+        s->gyro_rps[i] = (fnav_real_t)(v[3 + i] * r->gyr_scale);
+    }
+    r->index++;
+    return FNAV_OK;
+}
+
+/* ------------------------------------------------------------ bin */
+
+static int bin_fill(hx_reader_t *r, size_t need)
+{
+    while (r->len - r->pos < need && !r->eof) {
+        int got;
+        if (r->pos > 0) {
+            memmove(r->buf, r->buf + r->pos, r->len - r->pos);
+            r->len -= r->pos;
+            r->pos = 0;
+        }
+        got = gzread(r->gz, r->buf + r->len, (unsigned)(sizeof r->buf - r->len));
+        if (got < 0) {
+            int e;
+            set_err(r, "%s: read error (%s)", r->path, gzerror(r->gz, &e));
+            return -1;
+        }
+        if (got == 0) {
+            r->eof = 1;
+        }
+        r->len += (size_t)got;
+    }
+    return (r->len - r->pos >= need) ? 1 : 0;
+}
+
+static int setup_bin(hx_reader_t *r)
+{
+    hx_bin_header_t h;
+    char msg[160];
+    int rc = bin_fill(r, HX_BIN_HEADER_SIZE);
+    if (rc < 0) {
+        return -1;
+    }
+    if (rc == 0) {
+        set_err(r, "%s: too short for a footnav log header (%zu of %d bytes)", r->path, r->len - r->pos,
+                HX_BIN_HEADER_SIZE);
+        return -1;
+    }
+    if (hx_bin_header_decode(r->buf + r->pos, r->len - r->pos, &h, msg, sizeof msg) != 0) {
+        set_err(r, "%s: header: %s", r->path, msg);
+        return -1;
+    }
+    r->pos += HX_BIN_HEADER_SIZE;
+    r->offset = HX_BIN_HEADER_SIZE;
+    r->meta.rate_hz = h.rate_hz;
+    r->meta.rate_nominal = (h.flags & HX_BIN_FLAG_RATE_NOMINAL) != 0;
+    r->meta.has_temp = (h.flags & HX_BIN_FLAG_TEMP) != 0;
+    r->meta.has_seq = (h.flags & HX_BIN_FLAG_SEQ) != 0;
+    copy_str(r->meta.sensor, sizeof r->meta.sensor, h.sensor);
+    copy_str(r->meta.source, sizeof r->meta.source, h.source);
+    copy_str(r->meta.axes, sizeof r->meta.axes, h.axes);
+    return 0;
+}
+
+static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
+{
+    for (;;) {
+        hx_bin_record_t rec;
+        int rc = bin_fill(r, HX_BIN_RECORD_SIZE);
+        int dec;
+        if (rc < 0) {
+            return FNAV_E_IO;
+        }
+        if (rc == 0) {
+            size_t left = r->len - r->pos;
+            if (left > 0) {
+                set_err(r, "%s: truncated: record #%ld at byte %lld has %zu of %d bytes (%ld complete records read)",
+                        r->path, r->record_slot, r->offset, left, HX_BIN_RECORD_SIZE, r->stats.records);
+                r->pos = r->len;
+                return FNAV_E_TRUNCATED;
+            }
+            if (!r->stats.clean_end) {
+                set_err(r, "%s: truncated: no end record after %ld records (recording was not closed)",
+                        r->path, r->stats.records);
+                return FNAV_E_TRUNCATED;
+            }
+            if (r->deferred != FNAV_OK) {
+                return r->deferred;
+            }
+            return FNAV_END;
+        }
+        dec = hx_bin_record_decode(r->buf + r->pos, &rec);
+        if (dec == 0 && rec.type == HX_BIN_REC_SAMPLE) {
+            if (r->stats.clean_end) {
+                set_err(r, "%s: record #%ld at byte %lld: data after the end record", r->path, r->record_slot,
+                        r->offset);
+                r->deferred = FNAV_E_FORMAT;
+                r->stats.clean_end = 0;
+            }
+            if (r->have_prev && rec.t_ns < r->prev_t_ns) {
+                set_err(r, "%s: record #%ld: time goes backwards (%.9f s after %.9f s)", r->path,
+                        r->record_slot, (double)rec.t_ns * 1e-9, (double)r->prev_t_ns * 1e-9);
+                return FNAV_E_TIME;
+            }
+            {
+                int k, finite = 1;
+                for (k = 0; k < 3; k++) {
+                    finite &= isfinite(rec.acc[k]) && isfinite(rec.gyr[k]);
+                }
+                if (!finite) {
+                    set_err(r, "%s: record #%ld at byte %lld: NaN or Inf in a sample", r->path, r->record_slot,
+                            r->offset);
+                    return FNAV_E_NANINF;
+                }
+            }
+            r->pos += HX_BIN_RECORD_SIZE;
+            r->offset += HX_BIN_RECORD_SIZE;
+            r->record_slot++;
+            r->have_prev = 1;
+            r->prev_t_ns = rec.t_ns;
+            s->t_ns = rec.t_ns;
+            s->seq = rec.seq;
+            s->flags = (r->meta.has_seq ? FNAV_SAMPLE_HAS_SEQ : 0u) |
+                       ((rec.flags & HX_BIN_REC_TEMP) ? FNAV_SAMPLE_HAS_TEMP : 0u);
+            s->accel_mps2[0] = (fnav_real_t)rec.acc[0];
+            s->accel_mps2[1] = (fnav_real_t)rec.acc[1];
+            s->accel_mps2[2] = (fnav_real_t)rec.acc[2];
+            s->gyro_rps[0] = (fnav_real_t)rec.gyr[0];
+            s->gyro_rps[1] = (fnav_real_t)rec.gyr[1];
+            s->gyro_rps[2] = (fnav_real_t)rec.gyr[2];
+            s->temp_c = (fnav_real_t)rec.temp;
+            return FNAV_OK;
+        }
+        if (dec == 0 && rec.type == HX_BIN_REC_END) {
+            r->pos += HX_BIN_RECORD_SIZE;
+            r->offset += HX_BIN_RECORD_SIZE;
+            r->record_slot++;
+            if ((long)rec.seq != r->stats.records) {
+                set_err(r, "%s: end record counts %lu records but %ld were read", r->path,
+                        (unsigned long)rec.seq, r->stats.records);
+                if (r->deferred == FNAV_OK) {
+                    r->deferred = FNAV_E_CRC;
+                }
+            }
+            r->stats.clean_end = 1;
+            continue;
+        }
+        /* Bad record: remember, then resynchronise on the next valid record. */
+        {
+            char what[64];
+            long long at = r->offset;
+            snprintf(what, sizeof what, "%s", dec == -1 ? "unknown record type" : "checksum mismatch");
+            if (r->err[0] == '\0') {
+                set_err(r, "%s: record #%ld at byte %lld: %s (corrupted); skipped", r->path, r->record_slot, at,
+                        what);
+            }
+            if (r->deferred == FNAV_OK) {
+                r->deferred = FNAV_E_CRC;
+            }
+            r->stats.bad_records++;
+            /* Prefer the next slot (a corrupted record in place); else scan. */
+            if (bin_fill(r, 2 * HX_BIN_RECORD_SIZE) > 0 &&
+                hx_bin_record_decode(r->buf + r->pos + HX_BIN_RECORD_SIZE, &rec) == 0) {
+                r->pos += HX_BIN_RECORD_SIZE;
+                r->offset += HX_BIN_RECORD_SIZE;
+                r->record_slot++;
+                continue;
+            }
+            for (;;) {
+                int frc = bin_fill(r, HX_BIN_RECORD_SIZE + 1);
+                if (frc <= 0) {
+                    /* nothing valid until the end: drop the rest */
+                    r->stats.skipped_bytes += (long)(r->len - r->pos);
+                    r->offset += (long long)(r->len - r->pos);
+                    r->pos = r->len;
+                    r->eof = 1;
+                    r->stats.clean_end = 1; /* error already deferred */
+                    break;
+                }
+                r->pos++;
+                r->offset++;
+                r->stats.skipped_bytes++;
+                if (hx_bin_record_decode(r->buf + r->pos, &rec) == 0) {
+                    break;
+                }
+            }
+            r->record_slot++;
+        }
+    }
+}
+
+/* ------------------------------------------------------------ public */
+
+static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, char *err, size_t err_size)
+{
+    hx_reader_t *r;
+    unsigned char head[600];
+    int got;
+    if (rate_hz < 0.0 || rate_hz > 1.0e6 || rate_hz != rate_hz) {
+        snprintf(err, err_size, "%s: sample rate %g Hz is not in (0, 1e6]", path, rate_hz);
+        return NULL;
+    }
+    r = (hx_reader_t *)calloc(1, sizeof *r);
+    if (r == NULL) {
+        snprintf(err, err_size, "%s: out of memory", path);
+        return NULL;
+    }
+    copy_str(r->path, sizeof r->path, path);
+    r->gz = gzopen(path, "rb");
+    if (r->gz == NULL) {
+        snprintf(err, err_size, "%s: cannot open (%s)", path, errno ? strerror(errno) : "gzopen failed");
+        free(r);
+        return NULL;
+    }
+    (void)gzbuffer(r->gz, 1 << 16);
+    got = gzread(r->gz, head, sizeof head);
+    if (got < 0) {
+        int e;
+        snprintf(err, err_size, "%s: read error (%s)", path, gzerror(r->gz, &e));
+        gzclose(r->gz);
+        free(r);
+        return NULL;
+    }
+    if (got == 0) {
+        snprintf(err, err_size, "%s: empty file", path);
+        gzclose(r->gz);
+        free(r);
+        return NULL;
+    }
+    if (fmt == HX_FMT_AUTO) {
+        fmt = detect(head, (size_t)got);
+    }
+    if (gzrewind(r->gz) != 0) {
+        snprintf(err, err_size, "%s: cannot rewind", path);
+        gzclose(r->gz);
+        free(r);
+        return NULL;
+    }
+    r->meta.format = fmt;
+    copy_str(r->meta.source, sizeof r->meta.source, path);
+    if (((fmt == HX_FMT_BIN) ? setup_bin(r) : setup_text(r, rate_hz)) != 0) {
+        snprintf(err, err_size, "%s", r->err);
+        gzclose(r->gz);
+        free(r);
+        return NULL;
+    }
+    if (fmt == HX_FMT_BIN && rate_hz > 0.0) {
+        r->meta.rate_hz = rate_hz;
+    }
+    return r;
+}
+
+static int cmp_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, char *err, size_t err_size)
+{
+    hx_reader_t *r = open_raw(path, fmt, rate_hz, err, err_size);
+    if (r == NULL) {
+        return NULL;
+    }
+    if (r->meta.rate_hz <= 0.0) {
+        /* time-stamped text without a nominal rate: estimate from the median
+         * interval of the first samples (a separate pass over the start) */
+        char e2[64];
+        hx_reader_t *p = open_raw(path, r->meta.format, rate_hz, e2, sizeof e2);
+        if (p != NULL) {
+            enum { N = 4096 };
+            static int64_t dts[N];
+            int n = 0;
+            fnav_sample_t s, prev;
+            int have = 0;
+            memset(&s, 0, sizeof s);
+            memset(&prev, 0, sizeof prev);
+            while (n < N && next_text(p, &s) == FNAV_OK) {
+                if (have && s.t_ns > prev.t_ns) {
+                    dts[n++] = s.t_ns - prev.t_ns;
+                }
+                prev = s;
+                have = 1;
+            }
+            if (n > 0) {
+                qsort(dts, (size_t)n, sizeof dts[0], cmp_i64);
+                r->meta.rate_hz = 1.0e9 / (double)dts[n / 2];
+                r->meta.rate_nominal = 0;
+            }
+            hx_reader_close(p);
+        }
+    }
+    return r;
+}
+
+fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
+{
+    fnav_status_t st;
+    if (r == NULL || s == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (r->finished) {
+        return r->deferred != FNAV_OK ? r->deferred : FNAV_END;
+    }
+    memset(s, 0, sizeof *s);
+    s->temp_c = (fnav_real_t)NAN;
+    st = (r->meta.format == HX_FMT_BIN) ? next_bin(r, s) : next_text(r, s);
+    if (st == FNAV_OK) {
+        r->stats.records++;
+        return FNAV_OK;
+    }
+    r->finished = 1;
+    if (st == FNAV_END && r->meta.format == HX_FMT_GX2 && r->gx2_bridged > 0) {
+        add_warn(r, "%s: sensor timer restarted %ld times; bridged with the last measured period", r->path,
+                 r->gx2_bridged);
+    }
+    if (st == FNAV_END && r->stats.records == 0) {
+        set_err(r, "%s: no samples", r->path);
+        st = FNAV_E_FORMAT;
+    }
+    r->deferred = st == FNAV_END ? FNAV_OK : st;
+    return st;
+}
+
+const char *hx_reader_error(const hx_reader_t *r)
+{
+    return r->err;
+}
+
+const char *hx_reader_warnings(const hx_reader_t *r)
+{
+    return r->warn;
+}
+
+const hx_meta_t *hx_reader_meta(const hx_reader_t *r)
+{
+    return &r->meta;
+}
+
+const hx_read_stats_t *hx_reader_stats(const hx_reader_t *r)
+{
+    return &r->stats;
+}
+
+void hx_reader_close(hx_reader_t *r)
+{
+    if (r != NULL) {
+        gzclose(r->gz);
+        free(r);
+    }
+}
+
+/* ------------------------------------------------------------ writer */
+
+struct hx_writer {
+    FILE *f;
+    char path[512];
+    hx_format_t fmt;
+    int sync_each;
+    int has_temp;
+    uint32_t count;
+    int64_t last_t_ns;
+    int failed;
+};
+
+static int ends_with(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), m = strlen(suffix);
+    return n >= m && strcmp(s + n - m, suffix) == 0;
+}
+
+hx_writer_t *hx_writer_open(const char *path, hx_format_t fmt, const hx_meta_t *meta, int sync_each, char *err,
+                            size_t err_size)
+{
+    hx_writer_t *w;
+    if (fmt == HX_FMT_AUTO) {
+        fmt = ends_with(path, ".bin") ? HX_FMT_BIN : HX_FMT_CSV;
+    }
+    if (fmt != HX_FMT_BIN && fmt != HX_FMT_CSV) {
+        snprintf(err, err_size, "%s: can only write bin or csv, not %s", path, hx_format_name(fmt));
+        return NULL;
+    }
+    w = (hx_writer_t *)calloc(1, sizeof *w);
+    if (w == NULL) {
+        snprintf(err, err_size, "%s: out of memory", path);
+        return NULL;
+    }
+    w->f = (strcmp(path, "-") == 0) ? stdout : fopen(path, "wb");
+    if (w->f == NULL) {
+        snprintf(err, err_size, "%s: cannot create (%s)", path, strerror(errno));
+        free(w);
+        return NULL;
+    }
+    copy_str(w->path, sizeof w->path, path);
+    w->fmt = fmt;
+    w->sync_each = sync_each;
+    w->has_temp = meta != NULL && meta->has_temp;
+    if (fmt == HX_FMT_BIN) {
+        unsigned char hb[HX_BIN_HEADER_SIZE];
+        hx_bin_header_t h;
+        memset(&h, 0, sizeof h);
+        h.rate_hz = (meta != NULL) ? meta->rate_hz : 0.0;
+        h.flags = 0;
+        if (meta != NULL) {
+            h.flags |= meta->rate_nominal ? HX_BIN_FLAG_RATE_NOMINAL : 0u;
+            h.flags |= meta->has_temp ? HX_BIN_FLAG_TEMP : 0u;
+            h.flags |= meta->has_seq ? HX_BIN_FLAG_SEQ : 0u;
+            copy_str(h.sensor, sizeof h.sensor, meta->sensor);
+            copy_str(h.source, sizeof h.source, meta->source);
+            copy_str(h.axes, sizeof h.axes, meta->axes);
+        }
+        hx_bin_header_encode(&h, hb);
+        if (fwrite(hb, 1, sizeof hb, w->f) != sizeof hb) {
+            snprintf(err, err_size, "%s: write failed (%s)", path, strerror(errno));
+            if (w->f != stdout) {
+                fclose(w->f);
+            }
+            free(w);
+            return NULL;
+        }
+    } else {
+        fprintf(w->f, "t,ax,ay,az,gx,gy,gz%s\n", w->has_temp ? ",temp" : "");
+    }
+    if (sync_each) {
+        fflush(w->f);
+    }
+    return w;
+}
+
+/* float32 printed with 9 significant digits reads back bit-exactly. */
+static void put_f32(FILE *f, float v)
+{
+    fprintf(f, ",%.9g", (double)v);
+}
+
+fnav_status_t hx_writer_write(hx_writer_t *w, const fnav_sample_t *s)
+{
+    if (w == NULL || s == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (w->fmt == HX_FMT_BIN) {
+        unsigned char rb[HX_BIN_RECORD_SIZE];
+        hx_bin_record_t rec;
+        int i;
+        rec.type = HX_BIN_REC_SAMPLE;
+        rec.flags = (s->flags & FNAV_SAMPLE_HAS_TEMP) ? HX_BIN_REC_TEMP : 0u;
+        rec.seq = s->seq;
+        rec.t_ns = s->t_ns;
+        for (i = 0; i < 3; i++) {
+            rec.acc[i] = (float)s->accel_mps2[i];
+            rec.gyr[i] = (float)s->gyro_rps[i];
+        }
+        rec.temp = (s->flags & FNAV_SAMPLE_HAS_TEMP) ? (float)s->temp_c : 0.0f;
+        hx_bin_record_encode(&rec, rb);
+        if (fwrite(rb, 1, sizeof rb, w->f) != sizeof rb) {
+            w->failed = 1;
+            return FNAV_E_IO;
+        }
+    } else {
+        int64_t t = s->t_ns;
+        int64_t a = t < 0 ? -t : t;
+        fprintf(w->f, "%s%lld.%09lld", t < 0 ? "-" : "", (long long)(a / 1000000000LL),
+                (long long)(a % 1000000000LL));
+        put_f32(w->f, (float)s->accel_mps2[0]);
+        put_f32(w->f, (float)s->accel_mps2[1]);
+        put_f32(w->f, (float)s->accel_mps2[2]);
+        put_f32(w->f, (float)s->gyro_rps[0]);
+        put_f32(w->f, (float)s->gyro_rps[1]);
+        put_f32(w->f, (float)s->gyro_rps[2]);
+        if (w->has_temp) {
+            put_f32(w->f, (s->flags & FNAV_SAMPLE_HAS_TEMP) ? (float)s->temp_c : 0.0f);
+        }
+        if (fputc('\n', w->f) == EOF) {
+            w->failed = 1;
+            return FNAV_E_IO;
+        }
+    }
+    w->count++;
+    w->last_t_ns = s->t_ns;
+    if (w->sync_each && fflush(w->f) != 0) {
+        w->failed = 1;
+        return FNAV_E_IO;
+    }
+    return FNAV_OK;
+}
+
+fnav_status_t hx_writer_close(hx_writer_t *w, char *err, size_t err_size)
+{
+    fnav_status_t st = FNAV_OK;
+    if (w == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (w->fmt == HX_FMT_BIN) {
+        unsigned char rb[HX_BIN_RECORD_SIZE];
+        hx_bin_record_t rec;
+        memset(&rec, 0, sizeof rec);
+        rec.type = HX_BIN_REC_END;
+        rec.seq = w->count;
+        rec.t_ns = w->last_t_ns;
+        hx_bin_record_encode(&rec, rb);
+        if (fwrite(rb, 1, sizeof rb, w->f) != sizeof rb) {
+            w->failed = 1;
+        }
+    }
+    if (fflush(w->f) != 0) {
+        w->failed = 1;
+    }
+    if (w->f != stdout && fclose(w->f) != 0) {
+        w->failed = 1;
+    }
+    if (w->failed) {
+        snprintf(err, err_size, "%s: write failed (%s)", w->path, strerror(errno));
+        st = FNAV_E_IO;
+    }
+    free(w);
+    return st;
+}
+
+/* ------------------------------------------------------------ whole log */
+
+int hx_log_load(hx_log_t *log, const char *path, hx_format_t fmt, double rate_hz, char *err, size_t err_size)
+{
+    hx_reader_t *r;
+    size_t cap = 0;
+    fnav_sample_t s;
+    fnav_status_t st;
+    memset(log, 0, sizeof *log);
+    r = hx_reader_open(path, fmt, rate_hz, err, err_size);
+    if (r == NULL) {
+        return -1;
+    }
+    log->meta = *hx_reader_meta(r);
+    while ((st = hx_reader_next(r, &s)) == FNAV_OK) {
+        if (log->n == cap) {
+            size_t nc = cap ? 2 * cap : 65536;
+            int64_t *t = (int64_t *)realloc(log->t_ns, nc * sizeof *t);
+            uint32_t *q = (uint32_t *)realloc(log->seq, nc * sizeof *q);
+            double(*a)[3] = (double(*)[3])realloc(log->acc, nc * sizeof *a);
+            double(*g)[3] = (double(*)[3])realloc(log->gyr, nc * sizeof *g);
+            double *tc = (double *)realloc(log->temp, nc * sizeof *tc);
+            if (t) log->t_ns = t;
+            if (q) log->seq = q;
+            if (a) log->acc = a;
+            if (g) log->gyr = g;
+            if (tc) log->temp = tc;
+            if (!t || !q || !a || !g || !tc) {
+                snprintf(log->error, sizeof log->error, "%s: out of memory after %zu samples", path, log->n);
+                st = FNAV_E_SIZE;
+                break;
+            }
+            cap = nc;
+        }
+        log->t_ns[log->n] = s.t_ns;
+        log->seq[log->n] = s.seq;
+        log->acc[log->n][0] = (double)s.accel_mps2[0];
+        log->acc[log->n][1] = (double)s.accel_mps2[1];
+        log->acc[log->n][2] = (double)s.accel_mps2[2];
+        log->gyr[log->n][0] = (double)s.gyro_rps[0];
+        log->gyr[log->n][1] = (double)s.gyro_rps[1];
+        log->gyr[log->n][2] = (double)s.gyro_rps[2];
+        log->temp[log->n] = (s.flags & FNAV_SAMPLE_HAS_TEMP) ? (double)s.temp_c : (double)NAN;
+        log->n++;
+    }
+    log->status = st;
+    log->stats = *hx_reader_stats(r);
+    if (st != FNAV_END && log->error[0] == '\0') {
+        snprintf(log->error, sizeof log->error, "%s", hx_reader_error(r));
+    }
+    snprintf(log->warnings, sizeof log->warnings, "%s", hx_reader_warnings(r));
+    hx_reader_close(r);
+    if (st != FNAV_END && log->n == 0) {
+        snprintf(err, err_size, "%s", log->error);
+        hx_log_free(log);
+        return -1;
+    }
+    return st == FNAV_END ? 0 : 1;
+}
+
+void hx_log_free(hx_log_t *log)
+{
+    free(log->t_ns);
+    free(log->seq);
+    free(log->acc);
+    free(log->gyr);
+    free(log->temp);
+    log->t_ns = NULL;
+    log->seq = NULL;
+    log->acc = NULL;
+    log->gyr = NULL;
+    log->temp = NULL;
+    log->n = 0;
+}

@@ -1,0 +1,134 @@
+/**
+ * @file hx_log.h
+ * @brief Harness log I/O: the footnav .bin log (docs/log-format.md), the CSV
+ *        interchange format and importers for every format in ../shared/data.
+ *
+ * Linux only (not part of the firmware core). Readers are incremental: open,
+ * then pull one sample at a time, so that a replay feeds the core sample by
+ * sample exactly as firmware would. Text inputs may be gzip-compressed.
+ *
+ * Error policy: a reader delivers every good sample it can. Corrupted .bin
+ * records are skipped and counted; the first problem is remembered and
+ * returned (instead of FNAV_END) once the input is exhausted, so a caller
+ * processes everything before it reports the error and exits non-zero.
+ * A malformed text line stops a text reader at that line.
+ */
+#ifndef HX_LOG_H
+#define HX_LOG_H
+
+#include <stdio.h>
+#include "footnav/fnav_types.h"
+
+/** Input formats. */
+typedef enum {
+    HX_FMT_AUTO = 0,   /**< detect from content */
+    HX_FMT_BIN,        /**< footnav .bin log */
+    HX_FMT_CSV,        /**< t,ax,ay,az,gx,gy,gz[,temp] (s, m/s^2, rad/s, degC) */
+    HX_FMT_GX2,        /**< OpenShoe MicroStrain 3DM-GX2 text */
+    HX_FMT_OS820,      /**< OpenShoe C 820 Hz CSV without header */
+    HX_FMT_NGIMU,      /**< x-io NGIMU CSV (deg/s, g) */
+    HX_FMT_PYSHOE,     /**< PyShoe / LLIO CSV (t_s, m/s^2, rad/s) */
+    HX_FMT_IPOL,       /**< IPOL Xsens MTw text (packet counter, 100 Hz) */
+    HX_FMT_ADIS,       /**< ADIS16405 static CSV (deg/s, g, no time) */
+    HX_FMT_SQUARE2,    /**< ZUPT-aided-INS square2 CSV (sample index, 100 Hz) */
+    HX_FMT_COUNT
+} hx_format_t;
+
+/** What is known about a log besides its samples. */
+typedef struct {
+    hx_format_t format;     /**< format actually read */
+    double rate_hz;         /**< nominal sample rate, Hz (0 if unknown) */
+    int rate_nominal;       /**< 1: rate from the source; 0: estimated from time stamps */
+    int has_temp;           /**< samples carry temperature */
+    int has_seq;            /**< samples carry a sensor record counter */
+    char sensor[32];        /**< sensor name, e.g. "x-io NGIMU" */
+    char source[60];        /**< where the data came from (file or description) */
+    char axes[48];          /**< axis note, e.g. "z up at rest" */
+} hx_meta_t;
+
+/** Counters kept while reading. */
+typedef struct {
+    long records;           /**< samples delivered */
+    long bad_records;       /**< .bin records skipped (CRC, type, resync) */
+    long skipped_bytes;     /**< .bin bytes skipped while resynchronising */
+    long lines;             /**< text lines consumed */
+    int clean_end;          /**< .bin: END record seen with matching count */
+} hx_read_stats_t;
+
+typedef struct hx_reader hx_reader_t;
+
+/** Name of a format ("bin", "csv", "gx2", ...). */
+const char *hx_format_name(hx_format_t fmt);
+/** Format from its name; HX_FMT_COUNT if unknown. */
+hx_format_t hx_format_from_name(const char *name);
+/** Comma-separated list of the format names (for --help). */
+const char *hx_format_list(void);
+
+/**
+ * Open a log for reading.
+ * @param path       file to read (text formats may be .gz)
+ * @param fmt        format or HX_FMT_AUTO to detect it
+ * @param rate_hz    sample rate to use for formats without time stamps
+ *                   (0: the format's documented default)
+ * @param err        receives a one-line message on failure
+ * @return reader, or NULL on failure with err filled
+ */
+hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz,
+                            char *err, size_t err_size);
+
+/** Next sample. FNAV_OK with *s, FNAV_END at a clean end, negative status
+ *  on an error (message from hx_reader_error()). */
+fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s);
+
+/** One-line description of the last error: "FILE:LINE: text" or
+ *  "FILE: record N: text". Empty string when there was none. */
+const char *hx_reader_error(const hx_reader_t *r);
+
+/** Warnings collected so far (e.g. "assuming 820 Hz"), newline-separated. */
+const char *hx_reader_warnings(const hx_reader_t *r);
+
+const hx_meta_t *hx_reader_meta(const hx_reader_t *r);
+const hx_read_stats_t *hx_reader_stats(const hx_reader_t *r);
+void hx_reader_close(hx_reader_t *r);
+
+/* ------------------------------------------------------------------ */
+
+typedef struct hx_writer hx_writer_t;
+
+/**
+ * Open a log for writing; the format is HX_FMT_BIN or HX_FMT_CSV (AUTO:
+ * from the extension, ".bin" -> BIN, anything else CSV).
+ * @param sync_each  1: every record reaches the OS before the call returns,
+ *                   so a killed process leaves every written record intact
+ */
+hx_writer_t *hx_writer_open(const char *path, hx_format_t fmt, const hx_meta_t *meta,
+                            int sync_each, char *err, size_t err_size);
+fnav_status_t hx_writer_write(hx_writer_t *w, const fnav_sample_t *s);
+/** Finish the file (.bin: END record) and close it. */
+fnav_status_t hx_writer_close(hx_writer_t *w, char *err, size_t err_size);
+
+/* ------------------------------------------------------------------ */
+
+/** A whole log in memory (for analyses that need random access). */
+typedef struct {
+    hx_meta_t meta;
+    hx_read_stats_t stats;
+    size_t n;               /**< number of samples */
+    int64_t *t_ns;
+    uint32_t *seq;
+    double (*acc)[3];       /**< m/s^2 (float32 values held exactly) */
+    double (*gyr)[3];       /**< rad/s */
+    double *temp;           /**< degC, NaN when unknown */
+    fnav_status_t status;   /**< FNAV_END when read completely, else the error */
+    char error[320];        /**< the error, if any */
+    char warnings[512];
+} hx_log_t;
+
+/** Read a whole log. Returns 0 when every sample was read, 1 when an
+ *  error stopped reading after some samples (log->n of them are valid and
+ *  log->error says why), -1 when nothing could be read (err filled). */
+int hx_log_load(hx_log_t *log, const char *path, hx_format_t fmt, double rate_hz,
+                char *err, size_t err_size);
+void hx_log_free(hx_log_t *log);
+
+#endif /* HX_LOG_H */

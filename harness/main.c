@@ -1,0 +1,57 @@
+/* ./harness: the Linux reference tool of footnav. */
+#include <stdio.h>
+#include <string.h>
+
+#include "hx_cli.h"
+#include "hx_commands.h"
+
+typedef struct {
+    const char *name;
+    int (*fn)(int argc, char **argv);
+    const char *summary;
+} command_t;
+
+static const command_t k_commands[] = {
+    { "info", hx_cmd_info, "rate, duration, gaps, duplicates, saturation, gravity at rest of a log" },
+    { "convert", hx_cmd_convert, "convert between .bin, CSV and every importable format" },
+    { "replay", hx_cmd_replay, "run a log through the navigation filter: trajectory, summary, plot" },
+    { "eval", hx_cmd_eval, "run every data set with ground truth and write docs/results.md" },
+    { "allan", hx_cmd_allan, "streaming Allan deviation and AR(1) bias-model identification" },
+    { "psd", hx_cmd_psd, "streaming Welch PSD and the lowest usable sampling frequency" },
+    { "sim", hx_cmd_sim, "simulate foot motion and sensor errors into a log with truth" },
+    { "montecarlo", hx_cmd_montecarlo, "run many simulated walks through the filter: error growth, NEES" },
+    { "simgap", hx_cmd_simgap, "locate and explain the gap between a real log and its simulated twin" },
+    { "simgap-validate", hx_cmd_simgap_validate, "validate simgap on cases with withheld effects" },
+    { "live", hx_cmd_live, "navigate live from a serial port, recording to .bin" },
+    { "stream", hx_cmd_stream, "play a log out over a serial port in the wire protocol" },
+};
+
+static void usage(FILE *f)
+{
+    size_t i;
+    fprintf(f, "usage: harness COMMAND [ARGS...]   (harness COMMAND --help for details)\n\ncommands:\n");
+    for (i = 0; i < sizeof k_commands / sizeof k_commands[0]; i++) {
+        fprintf(f, "  %-16s %s\n", k_commands[i].name, k_commands[i].summary);
+    }
+}
+
+int main(int argc, char **argv)
+{
+    size_t i;
+    if (argc < 2) {
+        usage(stderr);
+        return HX_EXIT_USAGE;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
+        usage(stdout);
+        return HX_EXIT_OK;
+    }
+    for (i = 0; i < sizeof k_commands / sizeof k_commands[0]; i++) {
+        if (strcmp(argv[1], k_commands[i].name) == 0) {
+            return k_commands[i].fn(argc - 2, argv + 2);
+        }
+    }
+    fprintf(stderr, "harness: unknown command '%s'\n", argv[1]);
+    usage(stderr);
+    return HX_EXIT_USAGE;
+}

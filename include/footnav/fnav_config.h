@@ -1,0 +1,49 @@
+/**
+ * @file fnav_config.h
+ * @brief Every compile-time option of footnav, with its default.
+ *
+ * Replace this whole file with your own by compiling with
+ * `-DFNAV_CONFIG_FILE='"my_config.h"'` (Mbed TLS style), or override single
+ * options with `-DOPTION=value`. Incoherent option sets are rejected by
+ * fnav_config_check.h with an `#error`.
+ */
+#ifndef FNAV_CONFIG_H
+#define FNAV_CONFIG_H
+
+#if defined(FNAV_CONFIG_FILE)
+#include FNAV_CONFIG_FILE
+#endif
+
+/** 1: fnav_real_t is double; 0 (default): float. The one switch between
+ *  the float32 firmware build and the double reference build. */
+#ifndef FNAV_USE_DOUBLE
+#define FNAV_USE_DOUBLE 0
+#endif
+
+/** 1 (default): FNAV_ASSERT checks programmer errors and calls
+ *  fnav_port_assert_failed(); 0 compiles every assertion out. */
+#ifndef FNAV_ENABLE_ASSERT
+#define FNAV_ENABLE_ASSERT 1
+#endif
+
+/** Largest stance-detector window in samples (SHOE/GLRT). 64 samples are
+ *  about 80 ms at 820 Hz; the window adapts to the rate below this cap. */
+#ifndef FNAV_STANCE_MAX_WINDOW
+#define FNAV_STANCE_MAX_WINDOW 64
+#endif
+
+/** Number of octave levels kept by the streaming Allan estimator
+ *  (tau = 2^0 .. 2^(N-1) samples). 24 levels cover 2^23 samples, more than
+ *  10 % of a 12-hour log at 200 Hz (864,000 samples). */
+#ifndef FNAV_ALLAN_MAX_LEVELS
+#define FNAV_ALLAN_MAX_LEVELS 24
+#endif
+
+/** Largest Welch segment (FFT) length; a power of two. */
+#ifndef FNAV_WELCH_MAX_NFFT
+#define FNAV_WELCH_MAX_NFFT 256
+#endif
+
+#include "fnav_config_check.h"
+
+#endif /* FNAV_CONFIG_H */

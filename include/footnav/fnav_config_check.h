@@ -1,0 +1,30 @@
+/**
+ * @file fnav_config_check.h
+ * @brief Rejects incoherent option sets at compile time (included by
+ *        fnav_config.h; do not include directly).
+ */
+#ifndef FNAV_CONFIG_CHECK_H
+#define FNAV_CONFIG_CHECK_H
+
+#if (FNAV_USE_DOUBLE != 0) && (FNAV_USE_DOUBLE != 1)
+#error "FNAV_USE_DOUBLE must be 0 or 1"
+#endif
+
+#if (FNAV_ENABLE_ASSERT != 0) && (FNAV_ENABLE_ASSERT != 1)
+#error "FNAV_ENABLE_ASSERT must be 0 or 1"
+#endif
+
+#if (FNAV_STANCE_MAX_WINDOW < 3) || (FNAV_STANCE_MAX_WINDOW > 1024)
+#error "FNAV_STANCE_MAX_WINDOW must be in 3..1024"
+#endif
+
+#if (FNAV_ALLAN_MAX_LEVELS < 2) || (FNAV_ALLAN_MAX_LEVELS > 31)
+#error "FNAV_ALLAN_MAX_LEVELS must be in 2..31"
+#endif
+
+#if (FNAV_WELCH_MAX_NFFT < 8) || (FNAV_WELCH_MAX_NFFT > 65536) || \
+    ((FNAV_WELCH_MAX_NFFT & (FNAV_WELCH_MAX_NFFT - 1)) != 0)
+#error "FNAV_WELCH_MAX_NFFT must be a power of two in 8..65536"
+#endif
+
+#endif /* FNAV_CONFIG_CHECK_H */

@@ -1,0 +1,321 @@
+/**
+ * @file fnav_math.h
+ * @brief Small value types (3-vector, 3x3 matrix, quaternion) with
+ *        static inline helpers that take and return values, so that
+ *        formulas read like the textbook (x-io Fusion style).
+ *
+ * Conventions (docs/frames.md):
+ * - Quaternion q = [w, x, y, z], Hamilton product, unit norm, q_nb rotates
+ *   body-frame vectors into the navigation frame: v_n = q_nb * v_b * q_nb^-1.
+ * - C_nb is the matching direction cosine matrix, v_n = C_nb v_b.
+ * - Euler angles are ZYX (yaw psi, pitch theta, roll phi):
+ *   C_nb = Rz(psi) Ry(theta) Rx(phi)  (Titterton & Weston, eq. 3.47).
+ */
+#ifndef FNAV_MATH_H
+#define FNAV_MATH_H
+
+#include "fnav_types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** 3-vector: element array or named axes. */
+typedef union {
+    fnav_real_t v[3];
+    struct {
+        fnav_real_t x, y, z;
+    } axis;
+} fnav_vec3_t;
+
+/** 3x3 matrix, row major: m[row][col]. */
+typedef struct {
+    fnav_real_t m[3][3];
+} fnav_mat3_t;
+
+/** Quaternion [w, x, y, z]. */
+typedef union {
+    fnav_real_t q[4];
+    struct {
+        fnav_real_t w, x, y, z;
+    } e;
+} fnav_quat_t;
+
+/* ---------------------------------------------------------------- vec3 */
+
+static inline fnav_vec3_t fnav_vec3(fnav_real_t x, fnav_real_t y, fnav_real_t z)
+{
+    fnav_vec3_t r;
+    r.v[0] = x;
+    r.v[1] = y;
+    r.v[2] = z;
+    return r;
+}
+
+static inline fnav_vec3_t fnav_vec3_from(const fnav_real_t a[3])
+{
+    return fnav_vec3(a[0], a[1], a[2]);
+}
+
+static inline fnav_vec3_t fnav_vec3_zero(void)
+{
+    return fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0));
+}
+
+static inline fnav_vec3_t fnav_vec3_add(fnav_vec3_t a, fnav_vec3_t b)
+{
+    return fnav_vec3(a.v[0] + b.v[0], a.v[1] + b.v[1], a.v[2] + b.v[2]);
+}
+
+static inline fnav_vec3_t fnav_vec3_sub(fnav_vec3_t a, fnav_vec3_t b)
+{
+    return fnav_vec3(a.v[0] - b.v[0], a.v[1] - b.v[1], a.v[2] - b.v[2]);
+}
+
+static inline fnav_vec3_t fnav_vec3_scale(fnav_vec3_t a, fnav_real_t s)
+{
+    return fnav_vec3(a.v[0] * s, a.v[1] * s, a.v[2] * s);
+}
+
+static inline fnav_real_t fnav_vec3_dot(fnav_vec3_t a, fnav_vec3_t b)
+{
+    return a.v[0] * b.v[0] + a.v[1] * b.v[1] + a.v[2] * b.v[2];
+}
+
+static inline fnav_vec3_t fnav_vec3_cross(fnav_vec3_t a, fnav_vec3_t b)
+{
+    return fnav_vec3(a.v[1] * b.v[2] - a.v[2] * b.v[1],
+                     a.v[2] * b.v[0] - a.v[0] * b.v[2],
+                     a.v[0] * b.v[1] - a.v[1] * b.v[0]);
+}
+
+static inline fnav_real_t fnav_vec3_norm(fnav_vec3_t a)
+{
+    return fnav_sqrt(fnav_vec3_dot(a, a));
+}
+
+/** Unit vector along a; the zero vector is returned unchanged. */
+static inline fnav_vec3_t fnav_vec3_normalize(fnav_vec3_t a)
+{
+    fnav_real_t n = fnav_vec3_norm(a);
+    return (n > FNAV_R(0.0)) ? fnav_vec3_scale(a, FNAV_R(1.0) / n) : a;
+}
+
+static inline int fnav_vec3_isfinite(fnav_vec3_t a)
+{
+    return fnav_isfinite(a.v[0]) && fnav_isfinite(a.v[1]) && fnav_isfinite(a.v[2]);
+}
+
+/* ---------------------------------------------------------------- mat3 */
+
+static inline fnav_mat3_t fnav_mat3_identity(void)
+{
+    fnav_mat3_t r;
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            r.m[i][j] = (i == j) ? FNAV_R(1.0) : FNAV_R(0.0);
+        }
+    }
+    return r;
+}
+
+static inline fnav_vec3_t fnav_mat3_mul_vec3(fnav_mat3_t a, fnav_vec3_t x)
+{
+    return fnav_vec3(a.m[0][0] * x.v[0] + a.m[0][1] * x.v[1] + a.m[0][2] * x.v[2],
+                     a.m[1][0] * x.v[0] + a.m[1][1] * x.v[1] + a.m[1][2] * x.v[2],
+                     a.m[2][0] * x.v[0] + a.m[2][1] * x.v[1] + a.m[2][2] * x.v[2]);
+}
+
+static inline fnav_mat3_t fnav_mat3_transpose(fnav_mat3_t a)
+{
+    fnav_mat3_t r;
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            r.m[i][j] = a.m[j][i];
+        }
+    }
+    return r;
+}
+
+static inline fnav_mat3_t fnav_mat3_mul(fnav_mat3_t a, fnav_mat3_t b)
+{
+    fnav_mat3_t r;
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            r.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
+        }
+    }
+    return r;
+}
+
+/** Skew-symmetric matrix [a x], so that [a x] b = a x b. */
+static inline fnav_mat3_t fnav_mat3_skew(fnav_vec3_t a)
+{
+    fnav_mat3_t r;
+    r.m[0][0] = FNAV_R(0.0);
+    r.m[0][1] = -a.v[2];
+    r.m[0][2] = a.v[1];
+    r.m[1][0] = a.v[2];
+    r.m[1][1] = FNAV_R(0.0);
+    r.m[1][2] = -a.v[0];
+    r.m[2][0] = -a.v[1];
+    r.m[2][1] = a.v[0];
+    r.m[2][2] = FNAV_R(0.0);
+    return r;
+}
+
+/* ---------------------------------------------------------------- quat */
+
+static inline fnav_quat_t fnav_quat(fnav_real_t w, fnav_real_t x, fnav_real_t y, fnav_real_t z)
+{
+    fnav_quat_t r;
+    r.q[0] = w;
+    r.q[1] = x;
+    r.q[2] = y;
+    r.q[3] = z;
+    return r;
+}
+
+static inline fnav_quat_t fnav_quat_identity(void)
+{
+    return fnav_quat(FNAV_R(1.0), FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0));
+}
+
+/** Hamilton product a * b. */
+static inline fnav_quat_t fnav_quat_mul(fnav_quat_t a, fnav_quat_t b)
+{
+    return fnav_quat(a.q[0] * b.q[0] - a.q[1] * b.q[1] - a.q[2] * b.q[2] - a.q[3] * b.q[3],
+                     a.q[0] * b.q[1] + a.q[1] * b.q[0] + a.q[2] * b.q[3] - a.q[3] * b.q[2],
+                     a.q[0] * b.q[2] - a.q[1] * b.q[3] + a.q[2] * b.q[0] + a.q[3] * b.q[1],
+                     a.q[0] * b.q[3] + a.q[1] * b.q[2] - a.q[2] * b.q[1] + a.q[3] * b.q[0]);
+}
+
+static inline fnav_quat_t fnav_quat_conj(fnav_quat_t a)
+{
+    return fnav_quat(a.q[0], -a.q[1], -a.q[2], -a.q[3]);
+}
+
+/** Unit quaternion along a, with the scalar part made non-negative;
+ *  a zero quaternion becomes the identity. */
+static inline fnav_quat_t fnav_quat_normalize(fnav_quat_t a)
+{
+    fnav_real_t n = fnav_sqrt(a.q[0] * a.q[0] + a.q[1] * a.q[1] + a.q[2] * a.q[2] + a.q[3] * a.q[3]);
+    fnav_real_t s;
+    if (!(n > FNAV_R(0.0))) {
+        return fnav_quat_identity();
+    }
+    s = (a.q[0] < FNAV_R(0.0)) ? -FNAV_R(1.0) / n : FNAV_R(1.0) / n;
+    return fnav_quat(a.q[0] * s, a.q[1] * s, a.q[2] * s, a.q[3] * s);
+}
+
+/** Exact quaternion of the rotation vector phi (axis * angle, rad):
+ *  q = [cos(|phi|/2), sin(|phi|/2) phi/|phi|] (Titterton & Weston eq. 11.33);
+ *  a Taylor series below 1e-4 rad keeps float32 accurate. */
+static inline fnav_quat_t fnav_quat_from_rotvec(fnav_vec3_t phi)
+{
+    fnav_real_t a2 = fnav_vec3_dot(phi, phi);
+    fnav_real_t a = fnav_sqrt(a2);
+    fnav_real_t c, s;
+    if (a < FNAV_R(1.0e-4)) {
+        c = FNAV_R(1.0) - a2 / FNAV_R(8.0);
+        s = FNAV_R(0.5) - a2 / FNAV_R(48.0);
+    } else {
+        c = fnav_cos(FNAV_R(0.5) * a);
+        s = fnav_sin(FNAV_R(0.5) * a) / a;
+    }
+    return fnav_quat(c, s * phi.v[0], s * phi.v[1], s * phi.v[2]);
+}
+
+/** Rotation vector of a unit quaternion (inverse of fnav_quat_from_rotvec),
+ *  angle in [0, pi]. */
+static inline fnav_vec3_t fnav_quat_to_rotvec(fnav_quat_t q)
+{
+    fnav_real_t w = q.q[0];
+    fnav_real_t sn, a, k;
+    fnav_vec3_t u = fnav_vec3(q.q[1], q.q[2], q.q[3]);
+    if (w < FNAV_R(0.0)) {
+        w = -w;
+        u = fnav_vec3_scale(u, -FNAV_R(1.0));
+    }
+    sn = fnav_vec3_norm(u);
+    if (sn < FNAV_R(1.0e-6)) {
+        k = FNAV_R(2.0) / ((w > FNAV_R(0.0)) ? w : FNAV_R(1.0));
+    } else {
+        a = FNAV_R(2.0) * fnav_atan2(sn, w);
+        k = a / sn;
+    }
+    return fnav_vec3_scale(u, k);
+}
+
+/** Rotate v by q: q * [0 v] * q^-1. */
+static inline fnav_vec3_t fnav_quat_rotate(fnav_quat_t q, fnav_vec3_t v)
+{
+    /* v' = v + 2 w (u x v) + 2 u x (u x v), u = vector part */
+    fnav_vec3_t u = fnav_vec3(q.q[1], q.q[2], q.q[3]);
+    fnav_vec3_t t = fnav_vec3_scale(fnav_vec3_cross(u, v), FNAV_R(2.0));
+    return fnav_vec3_add(fnav_vec3_add(v, fnav_vec3_scale(t, q.q[0])), fnav_vec3_cross(u, t));
+}
+
+/** DCM C_nb of the unit quaternion q_nb (Titterton & Weston eq. 3.63). */
+static inline fnav_mat3_t fnav_quat_to_dcm(fnav_quat_t q)
+{
+    fnav_mat3_t c;
+    fnav_real_t w = q.q[0], x = q.q[1], y = q.q[2], z = q.q[3];
+    c.m[0][0] = w * w + x * x - y * y - z * z;
+    c.m[0][1] = FNAV_R(2.0) * (x * y - w * z);
+    c.m[0][2] = FNAV_R(2.0) * (x * z + w * y);
+    c.m[1][0] = FNAV_R(2.0) * (x * y + w * z);
+    c.m[1][1] = w * w - x * x + y * y - z * z;
+    c.m[1][2] = FNAV_R(2.0) * (y * z - w * x);
+    c.m[2][0] = FNAV_R(2.0) * (x * z - w * y);
+    c.m[2][1] = FNAV_R(2.0) * (y * z + w * x);
+    c.m[2][2] = w * w - x * x - y * y + z * z;
+    return c;
+}
+
+/** Quaternion q_nb of ZYX Euler angles (rad): roll phi, pitch theta, yaw psi. */
+static inline fnav_quat_t fnav_quat_from_euler(fnav_real_t roll, fnav_real_t pitch, fnav_real_t yaw)
+{
+    fnav_real_t cr = fnav_cos(FNAV_R(0.5) * roll), sr = fnav_sin(FNAV_R(0.5) * roll);
+    fnav_real_t cp = fnav_cos(FNAV_R(0.5) * pitch), sp = fnav_sin(FNAV_R(0.5) * pitch);
+    fnav_real_t cy = fnav_cos(FNAV_R(0.5) * yaw), sy = fnav_sin(FNAV_R(0.5) * yaw);
+    return fnav_quat(cr * cp * cy + sr * sp * sy,
+                     sr * cp * cy - cr * sp * sy,
+                     cr * sp * cy + sr * cp * sy,
+                     cr * cp * sy - sr * sp * cy);
+}
+
+/** ZYX Euler angles (rad) of q_nb: out = (roll, pitch, yaw), pitch clamped
+ *  to [-pi/2, pi/2] before asin so that rounding never yields NaN. */
+static inline fnav_vec3_t fnav_quat_to_euler(fnav_quat_t q)
+{
+    fnav_real_t w = q.q[0], x = q.q[1], y = q.q[2], z = q.q[3];
+    fnav_real_t sp = fnav_clamp(FNAV_R(2.0) * (w * y - x * z), -FNAV_R(1.0), FNAV_R(1.0));
+    return fnav_vec3(fnav_atan2(FNAV_R(2.0) * (w * x + y * z), FNAV_R(1.0) - FNAV_R(2.0) * (x * x + y * y)),
+                     fnav_asin(sp),
+                     fnav_atan2(FNAV_R(2.0) * (w * z + x * y), FNAV_R(1.0) - FNAV_R(2.0) * (y * y + z * z)));
+}
+
+/** Wrap an angle to (-pi, pi]; bounded work for any finite input. */
+static inline fnav_real_t fnav_wrap_pi(fnav_real_t a)
+{
+    const fnav_real_t two_pi = FNAV_R(2.0) * FNAV_PI;
+    if (a > FNAV_PI || a <= -FNAV_PI) {
+        a -= two_pi * fnav_floor((a + FNAV_PI) / two_pi);
+        if (a <= -FNAV_PI) {
+            a += two_pi;
+        } else if (a > FNAV_PI) {
+            a -= two_pi;
+        }
+    }
+    return a;
+}
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FNAV_MATH_H */

@@ -1,0 +1,150 @@
+/**
+ * @file fnav_types.h
+ * @brief Scalar type, literals, math mapping, the one status enum and the
+ *        IMU sample shared by every footnav module.
+ */
+#ifndef FNAV_TYPES_H
+#define FNAV_TYPES_H
+
+#include <stdint.h>
+#include <stddef.h>
+#include <math.h>
+#include <float.h>
+
+#include "fnav_config.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ------------------------------------------------------------------------ */
+/* Scalar type                                                               */
+/* ------------------------------------------------------------------------ */
+
+#if FNAV_USE_DOUBLE
+/** Real scalar of the core: double in the reference build. */
+typedef double fnav_real_t;
+/** Literal of type fnav_real_t: always write a decimal point, FNAV_R(1.0). */
+#define FNAV_R(x) (x)
+#define FNAV_REAL_EPSILON DBL_EPSILON
+#define FNAV_REAL_MAX DBL_MAX
+#else
+/** Real scalar of the core: float (the firmware default). */
+typedef float fnav_real_t;
+/** Literal of type fnav_real_t: always write a decimal point, FNAV_R(1.0). */
+#define FNAV_R(x) (x##f)
+#define FNAV_REAL_EPSILON FLT_EPSILON
+#define FNAV_REAL_MAX FLT_MAX
+#endif
+
+#define FNAV_PI FNAV_R(3.14159265358979323846)
+/** Degrees to radians. */
+#define FNAV_DEG2RAD (FNAV_PI / FNAV_R(180.0))
+/** Standard gravity, m/s^2 (CGPM 1901), used to convert g to m/s^2. */
+#define FNAV_G0_MPS2 FNAV_R(9.80665)
+
+/* Math functions, mapped once (STYLE 5). static inline so that no argument
+ * is evaluated twice. */
+#if FNAV_USE_DOUBLE
+static inline fnav_real_t fnav_sqrt(fnav_real_t x) { return sqrt(x); }
+static inline fnav_real_t fnav_fabs(fnav_real_t x) { return fabs(x); }
+static inline fnav_real_t fnav_sin(fnav_real_t x) { return sin(x); }
+static inline fnav_real_t fnav_cos(fnav_real_t x) { return cos(x); }
+static inline fnav_real_t fnav_tan(fnav_real_t x) { return tan(x); }
+static inline fnav_real_t fnav_asin(fnav_real_t x) { return asin(x); }
+static inline fnav_real_t fnav_acos(fnav_real_t x) { return acos(x); }
+static inline fnav_real_t fnav_atan2(fnav_real_t y, fnav_real_t x) { return atan2(y, x); }
+static inline fnav_real_t fnav_exp(fnav_real_t x) { return exp(x); }
+static inline fnav_real_t fnav_log(fnav_real_t x) { return log(x); }
+static inline fnav_real_t fnav_log10(fnav_real_t x) { return log10(x); }
+static inline fnav_real_t fnav_pow(fnav_real_t x, fnav_real_t y) { return pow(x, y); }
+static inline fnav_real_t fnav_floor(fnav_real_t x) { return floor(x); }
+static inline fnav_real_t fnav_ceil(fnav_real_t x) { return ceil(x); }
+#else
+static inline fnav_real_t fnav_sqrt(fnav_real_t x) { return sqrtf(x); }
+static inline fnav_real_t fnav_fabs(fnav_real_t x) { return fabsf(x); }
+static inline fnav_real_t fnav_sin(fnav_real_t x) { return sinf(x); }
+static inline fnav_real_t fnav_cos(fnav_real_t x) { return cosf(x); }
+static inline fnav_real_t fnav_tan(fnav_real_t x) { return tanf(x); }
+static inline fnav_real_t fnav_asin(fnav_real_t x) { return asinf(x); }
+static inline fnav_real_t fnav_acos(fnav_real_t x) { return acosf(x); }
+static inline fnav_real_t fnav_atan2(fnav_real_t y, fnav_real_t x) { return atan2f(y, x); }
+static inline fnav_real_t fnav_exp(fnav_real_t x) { return expf(x); }
+static inline fnav_real_t fnav_log(fnav_real_t x) { return logf(x); }
+static inline fnav_real_t fnav_log10(fnav_real_t x) { return log10f(x); }
+static inline fnav_real_t fnav_pow(fnav_real_t x, fnav_real_t y) { return powf(x, y); }
+static inline fnav_real_t fnav_floor(fnav_real_t x) { return floorf(x); }
+static inline fnav_real_t fnav_ceil(fnav_real_t x) { return ceilf(x); }
+#endif
+
+/** Non-zero when x is neither NaN nor infinite. */
+static inline int fnav_isfinite(fnav_real_t x)
+{
+    return (x == x) && (x <= FNAV_REAL_MAX) && (x >= -FNAV_REAL_MAX);
+}
+
+/** Clamp x to [lo, hi] (x is evaluated once). */
+static inline fnav_real_t fnav_clamp(fnav_real_t x, fnav_real_t lo, fnav_real_t hi)
+{
+    return (x < lo) ? lo : ((x > hi) ? hi : x);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Status                                                                    */
+/* ------------------------------------------------------------------------ */
+
+/** The one status enum of footnav: 0 is success, negative is failure,
+ *  positive values are non-failure conditions a caller may act on. */
+typedef enum {
+    FNAV_OK = 0,             /**< success */
+    FNAV_END = 1,            /**< a source has no more samples */
+    FNAV_AGAIN = 2,          /**< nothing available yet (non-blocking source) */
+    FNAV_E_ARG = -1,         /**< invalid argument (NULL, out of domain) */
+    FNAV_E_CONFIG = -2,      /**< configuration rejected by an _init */
+    FNAV_E_NANINF = -3,      /**< NaN or Inf in an input; input ignored */
+    FNAV_E_RANGE = -4,       /**< value outside its physical range */
+    FNAV_E_DECOMP = -5,      /**< matrix factorisation failed (not positive definite) */
+    FNAV_E_STATE = -6,       /**< call not valid in the object's current state */
+    FNAV_E_TIME = -7,        /**< timestamp went backwards or jumped too far */
+    FNAV_E_SIZE = -8,        /**< buffer too small or size mismatch */
+    FNAV_E_IO = -9,          /**< port I/O failed */
+    FNAV_E_FORMAT = -10,     /**< malformed input format */
+    FNAV_E_CRC = -11,        /**< integrity check failed */
+    FNAV_E_TRUNCATED = -12,  /**< input ends inside a record */
+    FNAV_E_UNSUPPORTED = -13,/**< feature or version not supported */
+    FNAV_E_DIVERGED = -14    /**< estimator diverged; reset required */
+} fnav_status_t;
+
+#if defined(__GNUC__) || defined(__clang__)
+#define FNAV_WARN_UNUSED __attribute__((warn_unused_result))
+#else
+#define FNAV_WARN_UNUSED
+#endif
+
+/** Short constant English text of a status (never NULL). */
+const char *fnav_status_str(fnav_status_t status);
+
+/* ------------------------------------------------------------------------ */
+/* IMU sample                                                                */
+/* ------------------------------------------------------------------------ */
+
+/** fnav_sample_t.flags: temp_c holds a measured temperature. */
+#define FNAV_SAMPLE_HAS_TEMP 0x1u
+/** fnav_sample_t.flags: seq is a counter from the sensor (drops visible). */
+#define FNAV_SAMPLE_HAS_SEQ 0x2u
+
+/** One IMU sample in the sensor (body) frame b, SI units. */
+typedef struct {
+    int64_t t_ns;                 /**< sample time, ns, monotonic non-decreasing */
+    uint32_t seq;                 /**< record counter of the source (wraps at 2^32) */
+    uint32_t flags;               /**< FNAV_SAMPLE_* bits */
+    fnav_real_t accel_mps2[3];    /**< specific force f_b, m/s^2 */
+    fnav_real_t gyro_rps[3];      /**< angular rate w_ib_b, rad/s */
+    fnav_real_t temp_c;           /**< temperature, deg C (valid with HAS_TEMP) */
+} fnav_sample_t;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FNAV_TYPES_H */

@@ -1,0 +1,21 @@
+/**
+ * @file footnav.h
+ * @brief Umbrella header of footnav, the foot-mounted IMU navigation library.
+ */
+#ifndef FOOTNAV_H
+#define FOOTNAV_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#include "fnav_config.h"
+#include "fnav_types.h"
+#include "fnav_math.h"
+#include "fnav_port.h"
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FOOTNAV_H */
