@@ -13,6 +13,7 @@ extern "C" {
 #include "fnav_types.h"
 #include "fnav_math.h"
 #include "fnav_port.h"
+#include "fnav_profile.h"
 
 #ifdef __cplusplus
 }

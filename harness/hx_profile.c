@@ -1,0 +1,187 @@
+/* Sensor profile files (docs/profile-format.md). */
+#include "hx_profile.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PROFILE_MAGIC "footnav-profile 1"
+
+typedef struct {
+    const char *key;
+    size_t offset; /* of a fnav_real_t[3] in fnav_profile_t */
+} key3_t;
+
+static const key3_t k_keys[6] = {
+    { "accel_noise_mps2_rthz", offsetof(fnav_profile_t, accel_noise_mps2_rthz) },
+    { "accel_tau_s", offsetof(fnav_profile_t, accel_tau_s) },
+    { "accel_bias_sigma_mps2", offsetof(fnav_profile_t, accel_bias_sigma_mps2) },
+    { "gyro_noise_rps_rthz", offsetof(fnav_profile_t, gyro_noise_rps_rthz) },
+    { "gyro_tau_s", offsetof(fnav_profile_t, gyro_tau_s) },
+    { "gyro_bias_sigma_rps", offsetof(fnav_profile_t, gyro_bias_sigma_rps) },
+};
+
+static char *trim(char *s)
+{
+    char *e;
+    while (*s == ' ' || *s == '\t') {
+        s++;
+    }
+    e = s + strlen(s);
+    while (e > s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r' || e[-1] == '\n')) {
+        *--e = '\0';
+    }
+    return s;
+}
+
+int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_size)
+{
+    FILE *f = fopen(path, "r");
+    char line[512];
+    int lineno = 0, have_magic = 0, have_rate = 0, have[6] = { 0, 0, 0, 0, 0, 0 };
+    int i;
+    if (f == NULL) {
+        snprintf(err, err_size, "%s: cannot open profile (%s)", path, strerror(errno));
+        return -1;
+    }
+    memset(p, 0, sizeof *p);
+    while (fgets(line, sizeof line, f) != NULL) {
+        char *eq, *key, *val;
+        lineno++;
+        if (strchr(line, '\n') == NULL && !feof(f)) {
+            snprintf(err, err_size, "%s:%d: line too long", path, lineno);
+            fclose(f);
+            return -1;
+        }
+        key = trim(line);
+        if (*key == '\0' || *key == '#') {
+            continue;
+        }
+        eq = strchr(key, '=');
+        if (eq == NULL) {
+            snprintf(err, err_size, "%s:%d: expected 'key = value'", path, lineno);
+            fclose(f);
+            return -1;
+        }
+        *eq = '\0';
+        key = trim(key);
+        val = trim(eq + 1);
+        if (strcmp(key, "format") == 0) {
+            if (strcmp(val, PROFILE_MAGIC) != 0) {
+                snprintf(err, err_size, "%s:%d: format '%s' not supported (expected '%s')", path, lineno, val,
+                         PROFILE_MAGIC);
+                fclose(f);
+                return -1;
+            }
+            have_magic = 1;
+        } else if (strcmp(key, "name") == 0) {
+            snprintf(p->name, sizeof p->name, "%s", val);
+        } else if (strcmp(key, "rate_hz") == 0) {
+            char *end;
+            double v = strtod(val, &end);
+            if (end == val || *trim(end) != '\0' || !(v > 0.0 && v <= 1e6)) {
+                snprintf(err, err_size, "%s:%d: rate_hz '%s' is not a rate in (0, 1e6]", path, lineno, val);
+                fclose(f);
+                return -1;
+            }
+            p->rate_hz = (fnav_real_t)v;
+            have_rate = 1;
+        } else {
+            for (i = 0; i < 6; i++) {
+                if (strcmp(key, k_keys[i].key) == 0) {
+                    fnav_real_t *dst = (fnav_real_t *)((char *)p + k_keys[i].offset);
+                    char *s = val, *end;
+                    int k;
+                    if (have[i]) {
+                        snprintf(err, err_size, "%s:%d: %s given twice", path, lineno, key);
+                        fclose(f);
+                        return -1;
+                    }
+                    for (k = 0; k < 3; k++) {
+                        double v = strtod(s, &end);
+                        if (end == s || !isfinite(v) || !(v > 0.0)) {
+                            snprintf(err, err_size, "%s:%d: %s needs three positive numbers (x y z)", path, lineno,
+                                     key);
+                            fclose(f);
+                            return -1;
+                        }
+                        dst[k] = (fnav_real_t)v;
+                        s = end;
+                    }
+                    if (*trim(s) != '\0') {
+                        snprintf(err, err_size, "%s:%d: %s: unexpected text after three values", path, lineno, key);
+                        fclose(f);
+                        return -1;
+                    }
+                    have[i] = 1;
+                    break;
+                }
+            }
+            /* unknown keys are ignored on purpose */
+        }
+    }
+    fclose(f);
+    if (!have_magic) {
+        snprintf(err, err_size, "%s: not a footnav profile (no 'format = %s' line)", path, PROFILE_MAGIC);
+        return -1;
+    }
+    if (!have_rate) {
+        snprintf(err, err_size, "%s: rate_hz missing", path);
+        return -1;
+    }
+    for (i = 0; i < 6; i++) {
+        if (!have[i]) {
+            snprintf(err, err_size, "%s: %s missing", path, k_keys[i].key);
+            return -1;
+        }
+    }
+    if (p->name[0] == '\0') {
+        snprintf(p->name, sizeof p->name, "file");
+    }
+    return 0;
+}
+
+int hx_profile_write(const char *path, const fnav_profile_t *p, const char *comment, char *err, size_t err_size)
+{
+    FILE *f = fopen(path, "w");
+    int i;
+    if (f == NULL) {
+        snprintf(err, err_size, "%s: cannot create (%s)", path, strerror(errno));
+        return -1;
+    }
+    fprintf(f, "# footnav sensor profile (docs/profile-format.md)\n");
+    if (comment != NULL) {
+        const char *c = comment;
+        while (*c != '\0') {
+            const char *nl = strchr(c, '\n');
+            size_t n = nl ? (size_t)(nl - c) : strlen(c);
+            fprintf(f, "# %.*s\n", (int)n, c);
+            c += n + (nl ? 1 : 0);
+        }
+    }
+    fprintf(f, "format = %s\nname = %s\nrate_hz = %.9g\n", PROFILE_MAGIC, p->name, (double)p->rate_hz);
+    for (i = 0; i < 6; i++) {
+        const fnav_real_t *v = (const fnav_real_t *)((const char *)p + k_keys[i].offset);
+        fprintf(f, "%s = %.9g %.9g %.9g\n", k_keys[i].key, (double)v[0], (double)v[1], (double)v[2]);
+    }
+    if (fclose(f) != 0) {
+        snprintf(err, err_size, "%s: write failed (%s)", path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size_t err_size)
+{
+    if (fnav_profile_by_name(p, name_or_path) == FNAV_OK) {
+        return 0;
+    }
+    if (strchr(name_or_path, '/') == NULL && strchr(name_or_path, '.') == NULL) {
+        snprintf(err, err_size, "unknown profile '%s' (built-in: navchip, mtx, shimmer; or a profile file)",
+                 name_or_path);
+        return -1;
+    }
+    return hx_profile_read(name_or_path, p, err, err_size);
+}

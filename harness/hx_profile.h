@@ -1,0 +1,23 @@
+/**
+ * @file hx_profile.h
+ * @brief Sensor profile files (docs/profile-format.md): written by
+ *        `harness allan --profile`, read by `--profile FILE` everywhere.
+ */
+#ifndef HX_PROFILE_H
+#define HX_PROFILE_H
+
+#include <stddef.h>
+#include "footnav/fnav_profile.h"
+
+/** Read a profile file. 0 on success; -1 with a one-line "FILE:LINE: ..."
+ *  message in err. Unknown keys are ignored (room for extra information). */
+int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_size);
+
+/** Write a profile file; @p comment (may be NULL) becomes '# ' lines at
+ *  the top. 0 on success, -1 with err filled. */
+int hx_profile_write(const char *path, const fnav_profile_t *p, const char *comment, char *err, size_t err_size);
+
+/** A built-in name ("navchip", "mtx", "shimmer") or a file path. */
+int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size_t err_size);
+
+#endif /* HX_PROFILE_H */

@@ -1,0 +1,128 @@
+/* Sensor error profiles and the paper's Tables IV-VI (see fnav_profile.h). */
+#include "footnav/fnav_profile.h"
+
+/* Paper Table IV, "Model parameters for the InterSense IMU NavChip at 200 Hz".
+ * (The text says Tables IV, V, VI hold Figs. 9, 8, 10, i.e. MTx first; the
+ * captions and the noise levels - NavChip gyro ~0.004 deg/s/sqrt(Hz), MTx
+ * ~0.03 - say Table IV is the NavChip. We follow the captions.) */
+static const fnav_profile_paper_row_t k_navchip[6] = {
+    { 7.4e-4, 2000.0, 1.3e-5 }, { 6.4e-4, 2000.0, 9.7e-6 }, { 5.0e-4, 2000.0, 7.3e-6 },
+    { 3.3e-3, 1000.0, 8.5e-5 }, { 3.7e-3, 1000.0, 6.4e-5 }, { 4.2e-3, 10000.0, 3.4e-5 },
+};
+
+/* Paper Table V, Xsens MTx at 200 Hz. */
+static const fnav_profile_paper_row_t k_mtx[6] = {
+    { 8.9e-4, 2600.0, 7.9e-6 }, { 8.4e-4, 2600.0, 8.1e-6 }, { 8.4e-4, 11000.0, 2.5e-6 },
+    { 2.6e-2, 42000.0, 1.8e-5 }, { 2.5e-2, 56000.0, 1.6e-5 }, { 2.9e-2, 144000.0, 8.4e-6 },
+};
+
+/* Paper Table VI, Shimmer at 200 Hz. */
+static const fnav_profile_paper_row_t k_shimmer[6] = {
+    { 6.0e-3, 14600.0, 8.7e-6 }, { 5.9e-3, 36000.0, 5.3e-6 }, { 6.5e-3, 9400.0, 1.4e-5 },
+    { 1.9e-2, 4200.0, 1.0e-4 }, { 1.7e-2, 800.0, 5.3e-4 }, { 1.9e-2, 2800.0, 2.2e-4 },
+};
+
+static const char *const k_names[FNAV_PROFILE_COUNT] = { "navchip", "mtx", "shimmer" };
+
+const fnav_profile_paper_row_t *fnav_profile_paper_table(fnav_profile_id_t id)
+{
+    switch (id) {
+    case FNAV_PROFILE_NAVCHIP: return k_navchip;
+    case FNAV_PROFILE_MTX: return k_mtx;
+    case FNAV_PROFILE_SHIMMER: return k_shimmer;
+    default: return NULL;
+    }
+}
+
+static int str_eq(const char *a, const char *b)
+{
+    while (*a != '\0' && *a == *b) {
+        a++;
+        b++;
+    }
+    return *a == *b;
+}
+
+static void copy_name(char *dst, const char *src)
+{
+    int i;
+    for (i = 0; i < FNAV_PROFILE_NAME_MAX - 1 && src[i] != '\0'; i++) {
+        dst[i] = src[i];
+    }
+    for (; i < FNAV_PROFILE_NAME_MAX; i++) {
+        dst[i] = '\0';
+    }
+}
+
+fnav_status_t fnav_profile_from_paper(fnav_profile_t *p, const char *name, double rate_hz,
+                                      const fnav_profile_paper_row_t rows[6])
+{
+    const double deg2rad = 3.14159265358979323846 / 180.0;
+    int i;
+    if (p == NULL || name == NULL || rows == NULL || !(rate_hz > 0.0)) {
+        return FNAV_E_ARG;
+    }
+    for (i = 0; i < 6; i++) {
+        if (!(rows[i].noise > 0.0) || !(rows[i].tau_samples > 0.0) || !(rows[i].sigma_bias > 0.0)) {
+            return FNAV_E_ARG;
+        }
+    }
+    copy_name(p->name, name);
+    p->rate_hz = (fnav_real_t)rate_hz;
+    for (i = 0; i < 3; i++) {
+        p->accel_noise_mps2_rthz[i] = (fnav_real_t)rows[i].noise;
+        p->accel_tau_s[i] = (fnav_real_t)(rows[i].tau_samples / rate_hz); /* eq. (5) inverted */
+        p->accel_bias_sigma_mps2[i] = (fnav_real_t)rows[i].sigma_bias;
+        p->gyro_noise_rps_rthz[i] = (fnav_real_t)(rows[3 + i].noise * deg2rad);
+        p->gyro_tau_s[i] = (fnav_real_t)(rows[3 + i].tau_samples / rate_hz);
+        p->gyro_bias_sigma_rps[i] = (fnav_real_t)(rows[3 + i].sigma_bias * deg2rad);
+    }
+    return FNAV_OK;
+}
+
+fnav_status_t fnav_profile_builtin(fnav_profile_t *p, fnav_profile_id_t id)
+{
+    const fnav_profile_paper_row_t *rows = fnav_profile_paper_table(id);
+    if (rows == NULL) {
+        return FNAV_E_ARG;
+    }
+    return fnav_profile_from_paper(p, k_names[id], 200.0, rows);
+}
+
+fnav_status_t fnav_profile_by_name(fnav_profile_t *p, const char *name)
+{
+    int i;
+    if (p == NULL || name == NULL) {
+        return FNAV_E_ARG;
+    }
+    for (i = 0; i < FNAV_PROFILE_COUNT; i++) {
+        if (str_eq(name, k_names[i])) {
+            return fnav_profile_builtin(p, (fnav_profile_id_t)i);
+        }
+    }
+    return FNAV_E_ARG;
+}
+
+static int positive_finite(fnav_real_t x)
+{
+    return fnav_isfinite(x) && x > FNAV_R(0.0);
+}
+
+fnav_status_t fnav_profile_validate(const fnav_profile_t *p)
+{
+    int i;
+    if (p == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!positive_finite(p->rate_hz)) {
+        return FNAV_E_CONFIG;
+    }
+    for (i = 0; i < 3; i++) {
+        if (!positive_finite(p->accel_noise_mps2_rthz[i]) || !positive_finite(p->accel_tau_s[i]) ||
+            !positive_finite(p->accel_bias_sigma_mps2[i]) || !positive_finite(p->gyro_noise_rps_rthz[i]) ||
+            !positive_finite(p->gyro_tau_s[i]) || !positive_finite(p->gyro_bias_sigma_rps[i])) {
+            return FNAV_E_CONFIG;
+        }
+    }
+    return FNAV_OK;
+}
