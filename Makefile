@@ -24,7 +24,7 @@ FNAV_DEFS ?=
 
 WARN     := -std=c99 -pedantic -Wall -Wextra -Wmissing-prototypes -Wdouble-promotion \
             -Wshadow -Wstrict-prototypes -Werror
-CPPFLAGS := -Iinclude -Iport/linux -Iharness $(FNAV_DEFS)
+CPPFLAGS := -Iinclude -Iport/linux -Iharness -Itests/support -Iport/cortex-m $(FNAV_DEFS)
 CFLAGS_CORE := $(WARN) $(OPT) $(SAN)
 # The harness, the Linux port and the tests may use POSIX.
 CFLAGS_HOST := $(WARN) $(OPT) $(SAN) -D_POSIX_C_SOURCE=200809L
@@ -35,7 +35,7 @@ CORE_SRC    := $(wildcard src/*.c)
 HX_SRC      := $(filter-out harness/main.c,$(wildcard harness/*.c)) $(wildcard port/linux/*.c)
 TEST_SRC    := $(wildcard tests/test_*.c)
 BENCH_SRC   := $(wildcard tests/bench_*.c)
-TESTHELP_SRC:= $(wildcard tests/support/*.c)
+TESTHELP_SRC:= $(wildcard tests/support/*.c) port/cortex-m/fnav_cm_ring.c
 
 CORE_OBJ    := $(CORE_SRC:%.c=$(BUILD)/obj/%.o)
 HX_OBJ      := $(HX_SRC:%.c=$(BUILD)/obj/%.o)

@@ -378,9 +378,13 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
     for (i = 0; i < 8; i++) {
         int c = (names[i] != NULL) ? find_col(f, n, names[i]) : -1;
         if (c < 0 && names[i] != NULL && (i < 7) && (i > 0 || time_required)) {
-            set_err(r, "%s:%ld: header has no column '%s' (%s); expected header %s", r->path,
-                    r->stats.lines, names[i], what[i],
-                    r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "of the format");
+            if (r->meta.format == HX_FMT_CSV) {
+                set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]", r->path,
+                        r->stats.lines, names[i]);
+            } else {
+                set_err(r, "%s:%ld: header has no column '%s' (the %s column of the %s format)", r->path,
+                        r->stats.lines, names[i], what[i], hx_format_name(r->meta.format));
+            }
             return -1;
         }
         if (i == 0) {
