@@ -67,6 +67,8 @@ struct hx_reader {
     double rate_hz;
     long index;
     int have_prev;
+    int last_line_open;         /* the last line read had no newline (EOF) */
+    long cut_lines;             /* incomplete last lines ignored */
     int64_t prev_t_ns;
     double prev_counter;
     /* GX2 timer state */
@@ -273,6 +275,7 @@ static int read_line(hx_reader_t *r)
     }
     r->stats.lines++;
     n = strlen(r->line);
+    r->last_line_open = (n == 0 || r->line[n - 1] != '\n');
     if (n == sizeof r->line - 1 && r->line[n - 1] != '\n' && !gzeof(r->gz)) {
         set_err(r, "%s:%ld: line longer than %d characters", r->path, r->stats.lines, HX_LINE_MAX - 1);
         return -1;
@@ -589,12 +592,11 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s)
     return (r->gx2_ticks * 1000000000LL) / GX2_TICK_HZ;
 }
 
+static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s);
+
 static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
 {
-    char *f[HX_MAX_COLS];
-    int n, i, rc;
-    double v[6], tv = 0.0, aux = 0.0;
-    int64_t t_ns = 0;
+    int rc;
     for (;;) {
         rc = read_line(r);
         if (rc < 0) {
@@ -607,6 +609,31 @@ static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
             break;
         }
     }
+    if (r->last_line_open && r->meta.format != HX_FMT_CSV && gzeof(r->gz)) {
+        /* The final line of a foreign recording has no newline: the file was
+         * cut off mid-write. Parse it on a copy; if it is incomplete, ignore
+         * it with a warning (docs/log-format.md) instead of failing. */
+        fnav_status_t st;
+        r->last_line_open = 0;
+        st = next_text_fields(r, s);
+        if (st != FNAV_OK) {
+            r->err[0] = '\0';
+            r->cut_lines++;
+            add_warn(r, "%s:%ld: last line is incomplete (recording cut off mid-write); ignored", r->path,
+                     r->stats.lines);
+            return FNAV_END;
+        }
+        return st;
+    }
+    return next_text_fields(r, s);
+}
+
+static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
+{
+    char *f[HX_MAX_COLS];
+    int n, i;
+    double v[6], tv = 0.0, aux = 0.0;
+    int64_t t_ns = 0;
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     if (r->meta.format == HX_FMT_GX2) {
         if (n == 0 || strncmp(f[0], "0x", 2) != 0) {
