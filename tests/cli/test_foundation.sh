@@ -53,8 +53,8 @@ expect_exit 0 "convert to stdout" "$H" convert vectors/walk.bin -
 if [ "$(wc -l <"$T/out")" -eq 16540 ]; then pass "stdout has header + 16539 rows"; else fail "stdout rows"; fi
 
 # --- every shared data set (skipped visibly when the data is absent)
-D=${FNAV_DATA_DIR:-../shared/data}
-if [ -d "$D" ]; then
+. tests/cli/datadir.sh
+if [ -n "$D" ]; then
     for f in "$D"/openshoe_gx2/Measurement*.txt "$D"/openshoe_c_820hz/OpenShoeDataSet.txt "$D"/xio_ngimu_gait/*.csv \
              "$D"/pyshoe_vicon_llio/vicon_3dmgx3/*_imu.csv "$D"/pyshoe_vicon_llio/own_3dmgx5_footprints/*_imu.csv \
              "$D"/ipol_gait_xsens/*_lf.txt "$D"/ipol_gait_xsens/*_rf.txt "$D"/openshoe_square2/square2_u.csv \
@@ -68,7 +68,7 @@ if [ -d "$D" ]; then
         if [ -n "$a" ] && [ "$a" = "$b" ]; then pass "info+convert $n ($a samples)"; else fail "$n: $a vs $b samples"; fi
     done
 else
-    echo "SKIP shared data sets (not found at $D; set FNAV_DATA_DIR)"
+    echo "SKIP shared data sets (not found; set FNAV_DATA_DIR)"
 fi
 
 # --- bad input: a clear error naming the file, exit 1, outputs kept
