@@ -1,0 +1,80 @@
+#!/usr/bin/env python3
+"""Compare the emulator benchmark's output with the same code built for the
+host (make firmware-bench).
+
+  bench_compare.py EMULATOR.txt HOST.txt [--pos-tol M]
+
+- the "stream:" line must be identical: same samples, frames, and the same
+  CRC-32 over every SAMPLE frame the firmware emitted (the wire encoding is
+  bit-identical on Cortex-M4F and x86-64);
+- the navigation outputs ("nav"/"nav-final" lines, float32 bit patterns of
+  position and attitude) are compared: the largest position difference must
+  stay within --pos-tol metres. The float operations are IEEE-754 binary32
+  on both machines, but the math libraries (newlib vs glibc sinf/cosf/atan2f)
+  may differ in the last bit, and the filter can amplify that.
+"""
+import argparse
+import struct
+import sys
+
+
+def f32(h):
+    return struct.unpack('<f', struct.pack('<I', int(h, 16)))[0]
+
+
+def load(path):
+    stream, nav = None, {}
+    for line in open(path):
+        w = line.split()
+        if not w:
+            continue
+        if w[0] == 'stream:':
+            stream = line.strip()
+        elif w[0] in ('nav', 'nav-final'):
+            nav[(w[0], int(w[1]))] = (int(w[2]), int(w[3]), [f32(x) for x in w[4:7]], [f32(x) for x in w[7:10]],
+                                       w[4:10])
+    return stream, nav
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument('emu')
+    ap.add_argument('host')
+    ap.add_argument('--pos-tol', type=float, default=1e-3)
+    a = ap.parse_args()
+    es, en = load(a.emu)
+    hs, hn = load(a.host)
+    ok = True
+    if es is None or hs is None:
+        print('compare: error: a "stream:" line is missing')
+        return 1
+    if es != hs:
+        print('compare: error: the frame streams differ\n  emulator: %s\n  host:     %s' % (es, hs))
+        ok = False
+    else:
+        print('compare: frame stream identical on the emulator and the host (%s)' % es.split('echo-crc')[1].split()[0])
+    if set(en) != set(hn):
+        print('compare: error: different navigation outputs (%d on the emulator, %d on the host)' % (len(en), len(hn)))
+        ok = False
+    elif en:
+        worst, same = 0.0, 0
+        for k in en:
+            e, h = en[k], hn[k]
+            if e[0] != h[0] or e[1] != h[1]:
+                print('compare: error: output %s: time or flags differ' % (k,))
+                ok = False
+            d = max(abs(x - y) for x, y in zip(e[2], h[2]))
+            worst = max(worst, d)
+            same += e[4] == h[4]
+        print('compare: %d navigation outputs compared, %d bit-identical, largest position difference %.3g m '
+              '(tolerance %.3g m)' % (len(en), same, worst, a.pos_tol))
+        if worst > a.pos_tol:
+            ok = False
+    else:
+        print('compare: no navigation outputs (the navigation filter is not built into the image)')
+    print('compare: %s' % ('ok' if ok else 'FAILED'))
+    return 0 if ok else 1
+
+
+if __name__ == '__main__':
+    sys.exit(main())
