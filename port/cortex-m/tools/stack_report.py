@@ -40,8 +40,12 @@ def parse_ci(paths):
             text = open(p).read()
         except OSError as e:
             sys.exit('stack_report: cannot read %s: %s' % (p, e))
+        title_to_name = {}
         for m in node_re.finditer(text):
-            name, label = m.group(1), m.group(2)
+            # a weak or static function's title may be "file:name"; the
+            # label's first line is the plain name
+            name, label = m.group(2).split('\\n', 1)[0], m.group(2)
+            title_to_name[m.group(1)] = name
             sm = re.search(r'\\n(\d+) bytes \(([a-z,]+)\)', label)
             if not sm:
                 continue  # external function: no size here
@@ -51,7 +55,7 @@ def parse_ci(paths):
             frames[name] = max(frames.get(name, 0), size)
         for m in edge_re.finditer(text):
             if m.group(2) == '__indirect_call':
-                indirect.add(m.group(1))
+                indirect.add(title_to_name.get(m.group(1), m.group(1)))
     return frames, dynamic, indirect
 
 
@@ -181,8 +185,9 @@ def main():
         path_of[name] = [name] + best_path
         return memo[name]
 
-    entries = ['Reset_Handler'] + sorted(n for n in funcs if n != 'Reset_Handler' and (n.endswith('_Handler') or n.endswith('_IRQHandler'))
-                                         or n == 'fnav_cm_default_handler'))
+    entries = ['Reset_Handler'] + sorted(
+        n for n in funcs
+        if n != 'Reset_Handler' and (n.endswith('_Handler') or n.endswith('_IRQHandler') or n == 'fnav_cm_default_handler'))
     entries = [e for e in entries if e in funcs]
     # weak aliases share an address: report each handler name once
     print('stack: worst case per entry point (bytes; su = -fstack-usage, asm = from the disassembly)')
