@@ -4,6 +4,7 @@
 #include "hx_bin.h"
 
 #include <ctype.h>
+#include <math.h>
 #include <errno.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -210,10 +211,10 @@ static int parse_time_ns(const char *s, int64_t *out)
         p++;
     }
     while (isdigit((unsigned char)*p)) {
-        if (ip > 9000000000LL) {
-            return -1;
-        }
         ip = ip * 10 + (*p - '0');
+        if (ip > 9000000000LL) {
+            return -1; /* beyond 9e9 s: int64 ns would overflow */
+        }
         p++;
         digits++;
     }
@@ -258,6 +259,16 @@ static int lower_eq(const char *a, const char *b)
         b++;
     }
     return *a == *b;
+}
+
+/* Seconds to ns with a range check (|t| < 9.2e9 s keeps int64 ns exact enough). */
+static int secs_to_ns(double t_s, int64_t *out)
+{
+    if (!(t_s > -9.0e9 && t_s < 9.0e9)) {
+        return -1;
+    }
+    *out = (int64_t)floor(t_s * 1.0e9 + 0.5);
+    return 0;
 }
 
 /* Read one line; 1 ok, 0 EOF, -1 error (err set). */
@@ -570,11 +581,10 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s)
         r->gx2_ticks = 0;
     } else {
         double d = counter - r->prev_counter;
-        long dl = (long)d;
         if (d > 0.0 && d < GX2_TICK_HZ / 10 &&
-            (r->gx2_last_dt == 0 || labs(dl - r->gx2_last_dt) < r->gx2_last_dt / 2)) {
-            r->gx2_last_dt = dl;
-            r->gx2_ticks += dl;
+            (r->gx2_last_dt == 0 || labs((long)d - r->gx2_last_dt) < r->gx2_last_dt / 2)) {
+            r->gx2_last_dt = (long)d;
+            r->gx2_ticks += (long)d;
         } else if (r->gx2_last_dt > 0) {
             r->gx2_ticks += r->gx2_last_dt;
             r->gx2_bridged++;
@@ -681,7 +691,11 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         break;
     }
     case TIME_INDEX:
-        t_ns = (int64_t)((double)r->index * 1.0e9 / r->rate_hz + 0.5);
+        if (secs_to_ns((double)r->index / r->rate_hz, &t_ns) != 0) {
+            set_err(r, "%s:%ld: time of sample %ld at %g Hz is out of range", r->path, r->stats.lines, r->index,
+                    r->rate_hz);
+            return FNAV_E_RANGE;
+        }
         s->seq = (uint32_t)r->index;
         break;
     case TIME_COUNTER:
@@ -690,7 +704,11 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
                     f[r->col_t]);
             return FNAV_E_FORMAT;
         }
-        t_ns = (int64_t)(tv * 1.0e9 / r->rate_hz + 0.5);
+        if (tv != floor(tv) || secs_to_ns(tv / r->rate_hz, &t_ns) != 0) {
+            set_err(r, "%s:%ld: counter ('%.20s') is not a whole number in range", r->path, r->stats.lines,
+                    f[r->col_t]);
+            return FNAV_E_FORMAT;
+        }
         s->seq = (uint32_t)tv;
         s->flags |= FNAV_SAMPLE_HAS_SEQ;
         break;
@@ -699,6 +717,10 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         if (parse_num(f[7], &tv) != 0 || parse_num(f[r->col_aux], &aux) != 0 ||
             parse_num(f[r->col_t], &host) != 0) {
             set_err(r, "%s:%ld: counter, Nr or time stamp is not a number", r->path, r->stats.lines);
+            return FNAV_E_FORMAT;
+        }
+        if (!(aux >= 0.0 && aux <= 4294967295.0 && aux == floor(aux)) || !(tv >= 0.0 && tv <= 4294967295.0)) {
+            set_err(r, "%s:%ld: Nr or counter is not a 32-bit count", r->path, r->stats.lines);
             return FNAV_E_FORMAT;
         }
         t_ns = gx2_time(r, tv, host);

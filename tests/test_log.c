@@ -408,6 +408,33 @@ static void test_cut_last_line(void **state)
     unlink(p);
 }
 
+/* Found by fuzzing: counters beyond 32 bits or time beyond int64 ns are
+ * format errors, never undefined conversions. */
+static void test_counter_ranges(void **state)
+{
+    char p[256];
+    readall_t r;
+    (void)state;
+    tmp_path(p, sizeof p, ".txt");
+    write_text(p, "Inertial data.\nHeader: a_x [g]:\n"
+                  "   0xcb   -0.1   +0.15   +0.99   +0.005   -0.012   +0.001     130516848    0x15fd       87782700000 "
+                  "1274434048.503018 1274434048.503018 1274434048.507018  250.0   -0.12   -0.01   -0.46\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.n, 0);
+    assert_int_equal(r.end, FNAV_E_FORMAT);
+    assert_non_null(strstr(r.err, "32-bit"));
+    write_text(p, "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps\n"
+                  "0,0.1,0.2,-9.8,0.01,0.02,0.03\n1.5,0.1,0.2,-9.8,0.01,0.02,0.03\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.n, 1);
+    assert_int_equal(r.end, FNAV_E_FORMAT);
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n99999999999.5,1,2,3,4,5,6\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.n, 0);
+    assert_int_not_equal(r.end, FNAV_END);
+    unlink(p);
+}
+
 static void test_bad_rate(void **state)
 {
     char err[320];
@@ -680,6 +707,7 @@ int main(void)
         cmocka_unit_test(test_csv_flexible),
         cmocka_unit_test(test_csv_gzip),
         cmocka_unit_test(test_cut_last_line),
+        cmocka_unit_test(test_counter_ranges),
         cmocka_unit_test(test_bad_rate),
         cmocka_unit_test(test_importers),
         cmocka_unit_test(test_importer_units),
