@@ -110,12 +110,11 @@ static int64_t u64_to_i64(uint64_t u)
 /* Copy a string into a NUL-padded field of n bytes, keeping a NUL at the end. */
 static void put_text(uint8_t *p, const char *s, size_t n)
 {
-    size_t i = 0;
     memset(p, 0, n);
     if (s != NULL) {
-        while (i + 1 < n && s[i] != '\0') {
+        size_t i;
+        for (i = 0; i + 1 < n && s[i] != '\0'; i++) {
             p[i] = (uint8_t)s[i];
-            i++;
         }
     }
 }
@@ -165,7 +164,7 @@ static uint8_t *payload_area(uint8_t *out, size_t out_size, size_t len)
 size_t fnav_wire_encode_sample(uint8_t *out, size_t out_size, uint16_t seq, const fnav_sample_t *s)
 {
     uint8_t *p = payload_area(out, out_size, FNAV_WIRE_SAMPLE_LEN);
-    int i;
+    size_t i;
     if (p == NULL || s == NULL) {
         return 0;
     }
@@ -183,7 +182,7 @@ size_t fnav_wire_encode_sample(uint8_t *out, size_t out_size, uint16_t seq, cons
 size_t fnav_wire_encode_nav(uint8_t *out, size_t out_size, uint16_t seq, const fnav_nav_frame_t *f)
 {
     uint8_t *p = payload_area(out, out_size, FNAV_WIRE_NAV_LEN);
-    int i;
+    size_t i;
     if (p == NULL || f == NULL) {
         return 0;
     }
@@ -380,7 +379,7 @@ fnav_status_t fnav_wire_parse_sample(const fnav_wire_frame_t *f, fnav_sample_t *
 {
     const uint8_t *p;
     float a[3], g[3], temp;
-    int i;
+    size_t i;
     if (f == NULL || s == NULL || f->type != FNAV_WIRE_SAMPLE || f->len != FNAV_WIRE_SAMPLE_LEN) {
         return FNAV_E_FORMAT;
     }
@@ -407,7 +406,7 @@ fnav_status_t fnav_wire_parse_sample(const fnav_wire_frame_t *f, fnav_sample_t *
 fnav_status_t fnav_wire_parse_nav(const fnav_wire_frame_t *f, fnav_wire_nav_t *nav)
 {
     const uint8_t *p;
-    int i;
+    size_t i;
     if (f == NULL || nav == NULL || f->type != FNAV_WIRE_NAV || f->len != FNAV_WIRE_NAV_LEN) {
         return FNAV_E_FORMAT;
     }

@@ -37,5 +37,15 @@ FNAV_CM_NOIPA fnav_status_t fnav_cm_est_welch(fnav_cm_est_t *e, const fnav_sampl
 
 unsigned fnav_cm_est_built(void)
 {
-    return (FNAV_CM_WITH_NAV ? 1u : 0u) | (FNAV_CM_WITH_ALLAN ? 2u : 0u) | (FNAV_CM_WITH_WELCH ? 4u : 0u);
+    unsigned built = 0u;
+#if FNAV_CM_WITH_NAV
+    built += 1u;
+#endif
+#if FNAV_CM_WITH_ALLAN
+    built += 2u;
+#endif
+#if FNAV_CM_WITH_WELCH
+    built += 4u;
+#endif
+    return built;
 }

@@ -83,13 +83,16 @@ __attribute__((naked, noreturn)) void Reset_Handler(void)
  * initialisation is needed: the images use no stdio and no heap. */
 __attribute__((noreturn, used)) void fnav_cm_reset_c(void)
 {
-    uint32_t *src = _sidata;
-    uint32_t *dst = _sdata;
-    while (dst < _edata) {
-        *dst++ = *src++;
+    /* word counts from the linker symbols' addresses (the regions are
+     * word-aligned by the linker script) */
+    uint32_t n_data = (uint32_t)(((uintptr_t)_edata - (uintptr_t)_sdata) / sizeof(uint32_t));
+    uint32_t n_bss = (uint32_t)(((uintptr_t)_ebss - (uintptr_t)_sbss) / sizeof(uint32_t));
+    uint32_t i;
+    for (i = 0; i < n_data; i++) {
+        _sdata[i] = _sidata[i];
     }
-    for (dst = _sbss; dst < _ebss;) {
-        *dst++ = 0u;
+    for (i = 0; i < n_bss; i++) {
+        _sbss[i] = 0u;
     }
     (void)main();
     for (;;) {
