@@ -36,7 +36,8 @@ CORE_SRC    := $(wildcard src/*.c)
 HX_SRC      := $(filter-out harness/main.c,$(wildcard harness/*.c)) $(wildcard port/linux/*.c)
 TEST_SRC    := $(wildcard tests/test_*.c)
 BENCH_SRC   := $(wildcard tests/bench_*.c)
-TESTHELP_SRC:= $(wildcard tests/support/*.c) port/cortex-m/fnav_cm_ring.c
+TESTHELP_SRC:= $(wildcard tests/support/*.c) port/cortex-m/fnav_cm_ring.c port/cortex-m/fnav_port_cortexm.c \
+               port/cortex-m/fnav_cm_est.c port/cortex-m/fnav_cm_app.c
 
 CORE_OBJ    := $(CORE_SRC:%.c=$(BUILD)/obj/%.o)
 HX_OBJ      := $(HX_SRC:%.c=$(BUILD)/obj/%.o)
