@@ -155,11 +155,22 @@ QEMU_FLAGS := -M mps2-an386 -display none -monitor none -serial none -chardev st
 FW_HOSTREF := $(BUILD)/fw/footnav-bench-host
 FW_SLICE_GEN := $(BUILD)/fw/fw_slice
 
-$(ARM_BUILD)/obj/%.o: %.c
+# Rebuild the images when the firmware options change (FW_DEFS, the slice).
+FW_STAMP  := $(ARM_BUILD)/fw-options.stamp
+FW_OPTIONS := $(FW_DEFS) | $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT)
+ifneq ($(filter firmware firmware-bench $(ARM_BUILD)/%,$(MAKECMDGOALS)),)
+$(shell mkdir -p $(ARM_BUILD) && (echo '$(FW_OPTIONS)' | cmp -s - $(FW_STAMP) || echo '$(FW_OPTIONS)' > $(FW_STAMP)))
+endif
+
+$(FW_STAMP):
+	@mkdir -p $(dir $@)
+	@echo '$(FW_OPTIONS)' > $@
+
+$(ARM_BUILD)/obj/%.o: %.c $(FW_STAMP)
 	@mkdir -p $(dir $@)
 	$(ARM_CC) $(ARM_CPPFLAGS) $(ARM_CFLAGS) -MMD -MP -c $< -o $@
 
-$(ARM_BUILD)/bench/%.o: %.c
+$(ARM_BUILD)/bench/%.o: %.c $(FW_STAMP)
 	@mkdir -p $(dir $@)
 	$(ARM_CC) $(ARM_CPPFLAGS) -DFNAV_CM_PROFILE=1 $(ARM_CFLAGS) -MMD -MP -c $< -o $@
 
@@ -179,7 +190,7 @@ $(FW_SLICE_GEN): port/cortex-m/tools/fw_slice.c $(HXLIB) $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS_HOST) -o $@ $< $(HXLIB) $(LIB) $(LDLIBS_HOST)
 
-$(FW_SLICE_C): $(FW_SLICE_GEN) $(FW_SLICE_LOG)
+$(FW_SLICE_C): $(FW_SLICE_GEN) $(FW_SLICE_LOG) $(FW_STAMP)
 	@mkdir -p $(dir $@)
 	$(FW_SLICE_GEN) $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT) $@
 
@@ -188,9 +199,9 @@ $(BENCH_ELF): $(BENCH_OBJ) $(ARM_LIB) port/cortex-m/ld/mps2-an386.ld port/cortex
 
 # The benchmark's code built for the host (float32 core), the reference the
 # emulator's output is compared with.
-$(FW_HOSTREF): $(patsubst %.c,%.c,$(BENCH_SRC)) $(FW_SLICE_C) $(LIB)
+$(FW_HOSTREF): $(BENCH_SRC) $(FW_SLICE_C) $(LIB) $(FW_STAMP)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(CFLAGS_CORE) -o $@ $(filter-out port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c,$(BENCH_SRC)) $(FW_SLICE_C) $(LIB) -lm
+	$(CC) $(CPPFLAGS) $(FW_DEFS) $(CFLAGS_CORE) -o $@ $(filter-out port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c,$(BENCH_SRC)) $(FW_SLICE_C) $(LIB) -lm
 
 firmware: $(ARM_LIB) $(FW_ELF)
 	@if $(ARM_NM) -u $(ARM_LIB) | grep -E -w '$(FORBIDDEN)'; then \
@@ -209,7 +220,7 @@ firmware-bench: $(BENCH_ELF) $(FW_HOSTREF)
 	  echo "firmware-bench: the image contains the symbols above"; exit 1; fi
 	@echo "firmware-bench: $(QEMU) $(QEMU_FLAGS) -kernel $(BENCH_ELF)"
 	@timeout 600 $(QEMU) $(QEMU_FLAGS) -kernel $(BENCH_ELF) >$(ARM_BUILD)/bench.txt; st=$$?; \
-	  cat $(ARM_BUILD)/bench.txt; \
+	  grep -v '^nav ' $(ARM_BUILD)/bench.txt; \
 	  if [ $$st -ne 0 ]; then echo "firmware-bench: the emulator run failed (status $$st)"; exit 1; fi
 	@$(FW_HOSTREF) >$(ARM_BUILD)/bench-host.txt || { cat $(ARM_BUILD)/bench-host.txt; \
 	  echo "firmware-bench: the host build of the benchmark failed"; exit 1; }

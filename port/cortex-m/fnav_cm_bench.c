@@ -24,8 +24,9 @@
 #include "fnav_cm_semihost.h"
 #include "fnav_cm_slice.h"
 
-/* Every K-th navigation output is printed (and the last one). */
-#define NAV_PRINT_EVERY 100u
+/* Every K-th navigation output is printed (and the last one); all of them,
+ * so that the comparison with the host covers every output. */
+#define NAV_PRINT_EVERY 1u
 /* Every BURST_EVERY-th sample, BURST samples are queued before the main
  * loop runs, so the ring holds several samples at once. */
 #define BURST_EVERY 64u
@@ -79,6 +80,7 @@ typedef struct {
     uint32_t echo_mismatch;     /* echoed samples that differ from the slice */
     uint32_t echo_next;         /* slice index of the next echoed sample */
     uint32_t nav_n;
+    uint32_t nav_crc;           /* CRC-32 over the NAV frame payloads */
     fnav_wire_nav_t nav_last;
 } sink_t;
 
@@ -136,6 +138,7 @@ static void drain_output(void)
             }
             g_sink.echo_mismatch += same ? 0u : 1u;
         } else if (f.type == FNAV_WIRE_NAV) {
+            g_sink.nav_crc = fnav_crc32(g_sink.nav_crc, f.payload, f.len);
             if (fnav_wire_parse_nav(&f, &g_sink.nav_last) == FNAV_OK) {
                 if (g_sink.nav_n % NAV_PRINT_EVERY == 0u) {
                     print_nav("nav", g_sink.nav_n, &g_sink.nav_last);
@@ -421,6 +424,12 @@ int main(void)
     fnav_cm_line_u64(&l, g_sink.echo_mismatch);
     fnav_cm_line_str(&l, " est-errors ");
     fnav_cm_line_u64(&l, g_app.est_errors);
+    fnav_cm_line_end(&l);
+    fnav_cm_line_str(&l, "navcrc: ");
+    fnav_cm_line_hex32(&l, g_sink.nav_crc);
+    fnav_cm_line_str(&l, " over ");
+    fnav_cm_line_u64(&l, g_sink.nav_n);
+    fnav_cm_line_str(&l, " NAV frames");
     fnav_cm_line_end(&l);
 
     if (processed != fnav_cm_slice_n || g_app.port_ctx.ring.overruns != 0u ||
