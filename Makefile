@@ -126,7 +126,9 @@ ARM_BUILD := build/arm
 ARM_ARCH  := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
 ARM_CFLAGS := $(ARM_ARCH) -Os -g -ffunction-sections -fdata-sections -fstack-usage -fcallgraph-info=su $(WARN)
 FW_DEFS   ?=
-ARM_CPPFLAGS := -Iinclude -Iport/cortex-m $(FW_DEFS)
+# The library options of the firmware (core and port must agree on sizes).
+FW_CONFIG := -DFNAV_CONFIG_FILE='"fnav_cm_fw_config.h"'
+ARM_CPPFLAGS := -Iinclude -Iport/cortex-m $(FW_CONFIG) $(FW_DEFS)
 ARM_LDFLAGS := $(ARM_ARCH) -nostartfiles --specs=nano.specs -Wl,--gc-sections -Lport/cortex-m/ld
 ARM_LDLIBS := -lm -lc -lgcc
 ARM_CORE_OBJ := $(CORE_SRC:%.c=$(ARM_BUILD)/obj/%.o)
@@ -199,9 +201,10 @@ $(BENCH_ELF): $(BENCH_OBJ) $(ARM_LIB) port/cortex-m/ld/mps2-an386.ld port/cortex
 
 # The benchmark's code built for the host (float32 core), the reference the
 # emulator's output is compared with.
-$(FW_HOSTREF): $(BENCH_SRC) $(FW_SLICE_C) $(LIB) $(FW_STAMP)
+$(FW_HOSTREF): $(BENCH_SRC) $(FW_SLICE_C) $(CORE_SRC) $(FW_STAMP) port/cortex-m/fnav_cm_fw_config.h
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(FW_DEFS) $(CFLAGS_CORE) -o $@ $(filter-out port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c,$(BENCH_SRC)) $(FW_SLICE_C) $(LIB) -lm
+	$(CC) -Iinclude -Iport/cortex-m $(FW_CONFIG) $(FW_DEFS) $(CFLAGS_CORE) -o $@ \
+	  $(filter-out port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c,$(BENCH_SRC)) $(FW_SLICE_C) $(CORE_SRC) -lm
 
 firmware: $(ARM_LIB) $(FW_ELF)
 	@if $(ARM_NM) -u $(ARM_LIB) | grep -E -w '$(FORBIDDEN)'; then \

@@ -18,11 +18,46 @@ fnav_status_t fnav_cm_est_init(fnav_cm_est_t *e, fnav_real_t rate_hz)
             return st;
         }
     }
-#else
+#endif
+#if FNAV_CM_WITH_ALLAN
+    {
+        unsigned ch;
+        for (ch = 0; ch < FNAV_CM_ALLAN_CHANNELS; ch++) {
+            st = fnav_allan_init(&e->allan[ch], NULL); /* default grid: 2 points per octave */
+            if (st != FNAV_OK) {
+                return st;
+            }
+        }
+    }
+#endif
+#if FNAV_CM_WITH_WELCH
+    {
+        fnav_welch_config_t wc = fnav_welch_config_default; /* the paper's Hamming 64, 50 % */
+        unsigned ch;
+        wc.rate_hz = rate_hz;
+        for (ch = 0; ch < FNAV_CM_WELCH_CHANNELS; ch++) {
+            st = fnav_welch_init(&e->welch[ch], &wc);
+            if (st != FNAV_OK) {
+                return st;
+            }
+        }
+    }
+#endif
+#if !FNAV_CM_WITH_NAV && !FNAV_CM_WITH_WELCH
     (void)rate_hz;
 #endif
     return st;
 }
+
+#if FNAV_CM_WITH_ALLAN || FNAV_CM_WITH_WELCH
+/* Channel k of a sample: 0..2 gyro x, y, z, 3..5 accel x, y, z
+ * (accel_first swaps the two triples). */
+static fnav_real_t channel(const fnav_sample_t *s, unsigned k, int accel_first)
+{
+    int gyro = (k < 3u) != (accel_first != 0);
+    return gyro ? s->gyro_rps[k % 3u] : s->accel_mps2[k % 3u];
+}
+#endif
 
 FNAV_CM_NOIPA fnav_status_t fnav_cm_est_nav(fnav_cm_est_t *e, const fnav_sample_t *s, fnav_nav_frame_t *out)
 {
@@ -39,7 +74,13 @@ FNAV_CM_NOIPA fnav_status_t fnav_cm_est_nav(fnav_cm_est_t *e, const fnav_sample_
 FNAV_CM_NOIPA fnav_status_t fnav_cm_est_allan(fnav_cm_est_t *e, const fnav_sample_t *s)
 {
 #if FNAV_CM_WITH_ALLAN
-#error "fnav_cm_est_allan: wired in when fnav_allan is on main"
+    fnav_status_t st = FNAV_OK;
+    unsigned ch;
+    for (ch = 0; ch < FNAV_CM_ALLAN_CHANNELS; ch++) {
+        fnav_status_t r = fnav_allan_push(&e->allan[ch], channel(s, ch, 0));
+        st = (r != FNAV_OK) ? r : st;
+    }
+    return st;
 #else
     (void)e;
     (void)s;
@@ -50,7 +91,13 @@ FNAV_CM_NOIPA fnav_status_t fnav_cm_est_allan(fnav_cm_est_t *e, const fnav_sampl
 FNAV_CM_NOIPA fnav_status_t fnav_cm_est_welch(fnav_cm_est_t *e, const fnav_sample_t *s)
 {
 #if FNAV_CM_WITH_WELCH
-#error "fnav_cm_est_welch: wired in when fnav_welch is on main"
+    fnav_status_t st = FNAV_OK;
+    unsigned ch;
+    for (ch = 0; ch < FNAV_CM_WELCH_CHANNELS; ch++) {
+        fnav_status_t r = fnav_welch_push(&e->welch[ch], channel(s, ch, 1));
+        st = (r != FNAV_OK) ? r : st;
+    }
+    return st;
 #else
     (void)e;
     (void)s;
