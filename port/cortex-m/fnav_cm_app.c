@@ -68,6 +68,7 @@ void fnav_cm_app_process(fnav_cm_app_t *app, const fnav_sample_t *s)
     FNAV_CM_PROF_BEGIN(FNAV_CM_PROF_NAV);
     st = fnav_cm_est_nav(&app->est, s, &app->frame);
     FNAV_CM_PROF_END(FNAV_CM_PROF_NAV);
+    FNAV_CM_PROF_NOTE(FNAV_CM_PROF_NAV, (st == FNAV_OK) ? app->frame.flags : FNAV_CM_PROF_TAG_NO_OUTPUT);
     if (st == FNAV_OK) {
         app->nav_outputs++;
         if (app->cfg.nav_every != 0u && app->nav_outputs % app->cfg.nav_every == 0u) {

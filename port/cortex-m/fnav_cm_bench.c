@@ -155,19 +155,35 @@ static void drain_output(void)
 #define NVIC_ISER0 (*(volatile uint32_t *)0xE000E100u)
 #define NVIC_ISPR0 (*(volatile uint32_t *)0xE000E200u)
 
-/* Extra ids beyond the main loop's: the interrupt and the calibration. */
+/* Extra ids beyond the main loop's: the interrupt, the navigation step
+ * split by what it did (from FNAV_CM_PROF_NOTE), the stance detector alone,
+ * and the calibration. */
 #define PROF_ISR ((fnav_cm_prof_id_t)FNAV_CM_PROF_COUNT)
-#define PROF_EMPTY ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 1))
-#define PROF_N (FNAV_CM_PROF_COUNT + 2)
+#define PROF_NAV_NOOUT ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 1))
+#define PROF_NAV_SWING ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 2))
+#define PROF_NAV_ZUPT ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 3))
+#define PROF_STANCE ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 4))
+#define PROF_EMPTY ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 5))
+#define PROF_N (FNAV_CM_PROF_COUNT + 6)
 
 typedef struct {
     uint32_t begin;
+    uint32_t last;
     uint32_t count;
     uint64_t sum;
     uint32_t min, max;
 } prof_t;
 
 static prof_t g_prof[PROF_N];
+
+static void prof_add(prof_t *p, uint32_t d)
+{
+    p->last = d;
+    p->sum += d;
+    p->min = (p->count == 0u || d < p->min) ? d : p->min;
+    p->max = (d > p->max) ? d : p->max;
+    p->count++;
+}
 
 /* SysTick counts down, 24 bits: a call shorter than 2^24 ticks is measured
  * exactly by the difference modulo 2^24. */
@@ -178,13 +194,62 @@ FNAV_CM_NOIPA void fnav_cm_prof_mark(fnav_cm_prof_id_t id, int begin)
     if (begin) {
         p->begin = now;
     } else {
-        uint32_t d = (p->begin - now) & 0xFFFFFFu;
-        p->sum += d;
-        p->min = (p->count == 0u || d < p->min) ? d : p->min;
-        p->max = (d > p->max) ? d : p->max;
-        p->count++;
+        prof_add(p, (p->begin - now) & 0xFFFFFFu);
     }
 }
+
+/* The navigation step's cost by what it did: no output yet, an output in
+ * swing, an output with a zero-velocity update. */
+FNAV_CM_NOIPA void fnav_cm_prof_note(fnav_cm_prof_id_t id, uint32_t tag)
+{
+    if (id == FNAV_CM_PROF_NAV) {
+        fnav_cm_prof_id_t k = (tag == FNAV_CM_PROF_TAG_NO_OUTPUT)
+                                  ? PROF_NAV_NOOUT
+                                  : ((tag & FNAV_FRAME_ZUPT) ? PROF_NAV_ZUPT : PROF_NAV_SWING);
+        prof_add(&g_prof[k], g_prof[id].last);
+    }
+}
+
+#if FNAV_CM_WITH_NAV
+/* The stance detector alone (default configuration), fed the same samples
+ * outside the main loop, to count one detector update on its own. */
+static fnav_stance_t g_stance;
+static uint32_t g_stance_next;
+
+static void stance_init(fnav_real_t rate_hz)
+{
+    fnav_stance_config_t sc = fnav_nav_config_default.stance;
+    sc.rate_hz = rate_hz;
+    if (fnav_stance_init(&g_stance, &sc) != FNAV_OK) {
+        fnav_cm_sh_puts("bench: error: fnav_stance_init failed\n");
+        fnav_cm_sh_exit(1);
+    }
+}
+
+static void stance_feed(uint32_t upto)
+{
+    while (g_stance_next < upto) {
+        const fnav_cm_slice_sample_t *x = &fnav_cm_slice[g_stance_next++];
+        fnav_sample_t s;
+        fnav_stance_out_t o;
+        int k;
+        s.t_ns = x->t_ns;
+        s.seq = x->seq;
+        s.flags = x->flags;
+        for (k = 0; k < 3; k++) {
+            s.accel_mps2[k] = (fnav_real_t)x->acc[k];
+            s.gyro_rps[k] = (fnav_real_t)x->gyr[k];
+        }
+        s.temp_c = FNAV_R(0.0);
+        fnav_cm_prof_mark(PROF_STANCE, 1);
+        if (fnav_stance_push(&g_stance, &s) == FNAV_OK) {
+            while (fnav_stance_pop(&g_stance, &o) == FNAV_OK) {
+            }
+        }
+        fnav_cm_prof_mark(PROF_STANCE, 0);
+    }
+}
+#endif
 
 /* 2n + 1 instructions: SUBS and BNE per iteration, then BX. */
 __attribute__((naked, noinline)) static void spin(uint32_t n)
@@ -258,13 +323,17 @@ void UsageFault_Handler(void)
 
 static const char *const k_prof_name[PROF_N] = {
     "ring pop (port read_sample)",
-    "navigation step (UKF)",
+    "navigation step (UKF), all",
     "Allan push (all channels)",
     "Welch push (all channels)",
     "NAV frame out (encode+copy)",
     "SAMPLE frame out",
     "main loop, per sample",
     "sample-ready interrupt",
+    "navigation step, no output yet",
+    "navigation step, swing",
+    "navigation step, stance with ZUPT",
+    "stance detector alone (push+pop)",
     "empty mark pair",
 };
 
@@ -287,6 +356,9 @@ static void print_costs(uint64_t overhead10)
         fnav_cm_line_str(&l, "cost ");
         fnav_cm_line_str(&l, k_prof_name[i]);
         fnav_cm_line_str(&l, ": ");
+        if (!(built & 1u) && (i >= (int)PROF_NAV_NOOUT && i <= (int)PROF_STANCE)) {
+            continue; /* nothing to split without the filter */
+        }
         if ((i == FNAV_CM_PROF_NAV && !(built & 1u)) || (i == FNAV_CM_PROF_ALLAN && !(built & 2u)) ||
             (i == FNAV_CM_PROF_WELCH && !(built & 4u))) {
             fnav_cm_line_str(&l, "not built (stand-in measured: ");
@@ -383,6 +455,9 @@ int main(void)
         fnav_cm_line_fix(&l, (int64_t)overhead10, 1u);
         fnav_cm_line_end(&l);
         irq_enable();
+#if FNAV_CM_WITH_NAV
+        stance_init(cfg.rate_hz);
+#endif
 #endif
 
         for (i = 0; i < fnav_cm_slice_n;) {
@@ -392,6 +467,9 @@ int main(void)
             }
             processed += fnav_cm_app_poll(&g_app);
             drain_output();
+#if defined(__arm__) && FNAV_CM_WITH_NAV
+            stance_feed(i);
+#endif
         }
 
 #if defined(__arm__)

@@ -8,6 +8,8 @@
 #ifndef FNAV_CM_PROF_H
 #define FNAV_CM_PROF_H
 
+#include <stdint.h>
+
 #include "fnav_cm_config.h"
 
 /** What a pair of marks encloses. */
@@ -25,11 +27,19 @@ typedef enum {
 #if FNAV_CM_PROFILE
 /** begin = 1 at the start of the enclosed code, 0 at its end. */
 void fnav_cm_prof_mark(fnav_cm_prof_id_t id, int begin);
+/** Classify the call measured last under id by what it did (e.g. the
+ *  navigation step's output flags), so the benchmark can split its cost. */
+void fnav_cm_prof_note(fnav_cm_prof_id_t id, uint32_t tag);
 #define FNAV_CM_PROF_BEGIN(id) fnav_cm_prof_mark((id), 1)
 #define FNAV_CM_PROF_END(id) fnav_cm_prof_mark((id), 0)
+#define FNAV_CM_PROF_NOTE(id, tag) fnav_cm_prof_note((id), (tag))
 #else
 #define FNAV_CM_PROF_BEGIN(id) ((void)0)
 #define FNAV_CM_PROF_END(id) ((void)0)
+#define FNAV_CM_PROF_NOTE(id, tag) ((void)0)
 #endif
+
+/** Tags of FNAV_CM_PROF_NAV notes. */
+#define FNAV_CM_PROF_TAG_NO_OUTPUT 0x10000u /**< no output (aligning, window filling, rejected) */
 
 #endif /* FNAV_CM_PROF_H */
