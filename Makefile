@@ -146,6 +146,7 @@ FW_SLICE_LOG   ?= vectors/walk.bin
 FW_SLICE_FIRST ?= 0
 FW_SLICE_COUNT ?= 4000
 FW_SLICE_C := $(ARM_BUILD)/gen/fnav_cm_slice_data.c
+FW_SLICE_BIN := $(ARM_BUILD)/gen/slice.bin
 BENCH_SRC := $(FW_COMMON) port/cortex-m/fnav_cm_bench.c port/cortex-m/fnav_cm_semihost.c
 BENCH_OBJ := $(patsubst %.c,$(ARM_BUILD)/bench/%.o,$(BENCH_SRC)) $(ARM_BUILD)/bench/gen/fnav_cm_slice_data.o
 BENCH_ELF := $(ARM_BUILD)/footnav-bench.elf
@@ -194,7 +195,7 @@ $(FW_SLICE_GEN): port/cortex-m/tools/fw_slice.c $(HXLIB) $(LIB)
 
 $(FW_SLICE_C): $(FW_SLICE_GEN) $(FW_SLICE_LOG) $(FW_STAMP)
 	@mkdir -p $(dir $@)
-	$(FW_SLICE_GEN) $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT) $@
+	$(FW_SLICE_GEN) $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT) $@ $(FW_SLICE_BIN)
 
 $(BENCH_ELF): $(BENCH_OBJ) $(ARM_LIB) port/cortex-m/ld/mps2-an386.ld port/cortex-m/ld/fnav_cm_sections.ld
 	$(ARM_CC) $(ARM_LDFLAGS) -Tmps2-an386.ld -Wl,-Map=$(ARM_BUILD)/footnav-bench.map -o $@ $(BENCH_OBJ) $(ARM_LIB) $(ARM_LDLIBS)
@@ -218,7 +219,7 @@ firmware: $(ARM_LIB) $(FW_ELF)
 	  --indirect port/cortex-m/tools/indirect_calls.txt --reserve-symbol _stack_size --nm $(ARM_NM) \
 	  $(patsubst %.o,%.ci,$(FW_OBJ) $(ARM_CORE_OBJ))
 
-firmware-bench: $(BENCH_ELF) $(FW_HOSTREF)
+firmware-bench: $(BENCH_ELF) $(FW_HOSTREF) $(HARNESS)
 	@if $(ARM_NM) $(BENCH_ELF) | grep -E -w 'malloc|_malloc_r|_sbrk|_sbrk_r|printf|_printf_r'; then \
 	  echo "firmware-bench: the image contains the symbols above"; exit 1; fi
 	@echo "firmware-bench: $(QEMU) $(QEMU_FLAGS) -kernel $(BENCH_ELF)"
@@ -227,7 +228,12 @@ firmware-bench: $(BENCH_ELF) $(FW_HOSTREF)
 	  if [ $$st -ne 0 ]; then echo "firmware-bench: the emulator run failed (status $$st)"; exit 1; fi
 	@$(FW_HOSTREF) >$(ARM_BUILD)/bench-host.txt || { cat $(ARM_BUILD)/bench-host.txt; \
 	  echo "firmware-bench: the host build of the benchmark failed"; exit 1; }
-	@$(PYTHON) port/cortex-m/tools/bench_compare.py $(ARM_BUILD)/bench.txt $(ARM_BUILD)/bench-host.txt
+	@rm -f $(ARM_BUILD)/bench-replay.csv; $(HARNESS) replay $(FW_SLICE_BIN) --out $(ARM_BUILD)/bench-replay.csv \
+	  >$(ARM_BUILD)/bench-replay.txt 2>&1; st=$$?; \
+	  if [ $$st -ne 0 ] && [ $$st -ne 4 ]; then cat $(ARM_BUILD)/bench-replay.txt; \
+	  echo "firmware-bench: harness replay of the slice failed (status $$st)"; exit 1; fi
+	@$(PYTHON) port/cortex-m/tools/bench_compare.py $(ARM_BUILD)/bench.txt $(ARM_BUILD)/bench-host.txt \
+	  --replay $(ARM_BUILD)/bench-replay.csv
 
 # ---------------------------------------------------------------- bench
 bench: $(HARNESS) $(BENCH_BINS)

@@ -123,6 +123,9 @@ static void test_config(void **state)
     cfg.rate_hz = (fnav_real_t)NAN;
     assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_E_CONFIG);
     cfg = fnav_cm_app_config_default;
+    cfg.nav_rate_hz = -FNAV_R(1.0);
+    assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_E_CONFIG);
+    cfg = fnav_cm_app_config_default;
     assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_OK);
     assert_int_equal(app.samples, 0);
 }

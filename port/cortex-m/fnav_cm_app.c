@@ -4,6 +4,7 @@
 
 const fnav_cm_app_config_t fnav_cm_app_config_default = {
     FNAV_R(400.0), /* rate_hz */
+    FNAV_R(0.0),   /* nav_rate_hz: estimated, as replay */
     4u,            /* nav_every: 100 Hz of NAV frames at 400 Hz */
     0u,            /* sample_every */
     400u,          /* status_every: about once a second */
@@ -16,12 +17,13 @@ fnav_status_t fnav_cm_app_init(fnav_cm_app_t *app, const fnav_cm_app_config_t *c
     if (app == NULL || cfg == NULL) {
         return FNAV_E_ARG;
     }
-    if (!(cfg->rate_hz > FNAV_R(0.0)) || !fnav_isfinite(cfg->rate_hz)) {
+    if (!(cfg->rate_hz > FNAV_R(0.0)) || !fnav_isfinite(cfg->rate_hz) || !(cfg->nav_rate_hz >= FNAV_R(0.0)) ||
+        !fnav_isfinite(cfg->nav_rate_hz)) {
         return FNAV_E_CONFIG;
     }
     app->cfg = *cfg;
     fnav_cm_port_init(&app->port, &app->port_ctx);
-    st = fnav_cm_est_init(&app->est, cfg->rate_hz);
+    st = fnav_cm_est_init(&app->est, cfg->rate_hz, cfg->nav_rate_hz);
     if (st != FNAV_OK) {
         return st;
     }

@@ -420,6 +420,9 @@ int main(void)
     fnav_cm_line_str(&l, ", estimators built mask ");
     fnav_cm_line_u64(&l, fnav_cm_est_built());
     fnav_cm_line_end(&l);
+    fnav_cm_line_str(&l, "slice-t0: ");
+    fnav_cm_line_i64(&l, fnav_cm_slice_n > 0u ? fnav_cm_slice[0].t_ns : 0);
+    fnav_cm_line_end(&l);
 
     cfg.rate_hz = (fnav_cm_slice_rate_hz > 0.0) ? (fnav_real_t)fnav_cm_slice_rate_hz : FNAV_R(400.0);
     cfg.nav_every = 1u;    /* every output, for the trajectory comparison */
@@ -456,7 +459,7 @@ int main(void)
         fnav_cm_line_end(&l);
         irq_enable();
 #if FNAV_CM_WITH_NAV
-        stance_init(cfg.rate_hz);
+        stance_init(cfg.nav_rate_hz);
 #endif
 #endif
 

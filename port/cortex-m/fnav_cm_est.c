@@ -3,7 +3,7 @@
  * answers FNAV_E_UNSUPPORTED. */
 #include "fnav_cm_est.h"
 
-fnav_status_t fnav_cm_est_init(fnav_cm_est_t *e, fnav_real_t rate_hz)
+fnav_status_t fnav_cm_est_init(fnav_cm_est_t *e, fnav_real_t rate_hz, fnav_real_t nav_rate_hz)
 {
     fnav_status_t st = FNAV_OK;
     e->samples = 0u;
@@ -12,7 +12,7 @@ fnav_status_t fnav_cm_est_init(fnav_cm_est_t *e, fnav_real_t rate_hz)
         fnav_nav_config_t cfg = fnav_nav_config_default;
         /* the detector's rate: the nominal rate, or 0 to estimate it from
          * the first intervals as `harness replay` does for a log */
-        cfg.stance.rate_hz = rate_hz;
+        cfg.stance.rate_hz = nav_rate_hz;
         st = fnav_nav_init(&e->nav, &cfg);
         if (st != FNAV_OK) {
             return st;
@@ -43,7 +43,10 @@ fnav_status_t fnav_cm_est_init(fnav_cm_est_t *e, fnav_real_t rate_hz)
         }
     }
 #endif
-#if !FNAV_CM_WITH_NAV && !FNAV_CM_WITH_WELCH
+#if !FNAV_CM_WITH_NAV
+    (void)nav_rate_hz;
+#endif
+#if !FNAV_CM_WITH_WELCH
     (void)rate_hz;
 #endif
     return st;

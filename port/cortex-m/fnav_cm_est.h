@@ -40,9 +40,11 @@ typedef struct {
     uint32_t samples;                              /**< samples seen */
 } fnav_cm_est_t;
 
-/** Initialise every built estimator for a nominal rate (Hz).
+/** Initialise every built estimator.
+ *  @param rate_hz      nominal sample rate, Hz (Welch frequency axis)
+ *  @param nav_rate_hz  rate for the stance detector, Hz; 0: estimated from the first intervals
  *  @return FNAV_OK or the first failing init's status. */
-FNAV_WARN_UNUSED fnav_status_t fnav_cm_est_init(fnav_cm_est_t *e, fnav_real_t rate_hz);
+FNAV_WARN_UNUSED fnav_status_t fnav_cm_est_init(fnav_cm_est_t *e, fnav_real_t rate_hz, fnav_real_t nav_rate_hz);
 
 /** One navigation step: strapdown prediction, stance detection and, in
  *  stance, the zero-velocity update. @return FNAV_OK with *out filled,

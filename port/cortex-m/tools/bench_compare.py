@@ -2,7 +2,7 @@
 """Compare the emulator benchmark's output with the same code built for the
 host (make firmware-bench).
 
-  bench_compare.py EMULATOR.txt HOST.txt [--pos-tol M]
+  bench_compare.py EMULATOR.txt HOST.txt [--replay REPLAY.csv] [--pos-tol M] [--att-tol RAD]
 
 - the "stream:" line must be identical: same samples, frames, and the same
   CRC-32 over every SAMPLE frame the firmware emitted (the wire encoding is
@@ -14,7 +14,13 @@ host (make firmware-bench).
   may differ in the last bit, and the filter can amplify that. Defaults:
   1 mm in position, 1e-5 rad in attitude. A CRC-32 over
   every NAV frame ("navcrc:") tells whether the whole output is bit-identical.
+- with --replay, every navigation output of the emulator is also matched by
+  its time with the row of `harness replay --out` on the same slice (the
+  host float32 result of the harness, written with 6 decimals) and compared
+  with the same tolerances. A missing file means replay is not available.
 """
+import csv
+import os
 import argparse
 import struct
 import sys
@@ -26,18 +32,51 @@ def f32(h):
 
 def load(path):
     stream, nav, navcrc = None, {}, None
+    t0 = None
     for line in open(path):
         w = line.split()
         if not w:
             continue
-        if w[0] == 'navcrc:':
+        if w[0] == 'slice-t0:':
+            t0 = int(w[1])
+        elif w[0] == 'navcrc:':
             navcrc = line.strip()
         elif w[0] == 'stream:':
             stream = line.strip()
         elif w[0] in ('nav', 'nav-final'):
             nav[(w[0], int(w[1]))] = (int(w[2]), int(w[3]), [f32(x) for x in w[4:7]], [f32(x) for x in w[7:10]],
                                        w[4:10])
-    return stream, nav, navcrc
+    return stream, nav, navcrc, t0
+
+
+def compare_replay(path, nav, t0, pos_tol, att_tol):
+    """Every emulator output against the replay row of the same time."""
+    if not os.path.exists(path):
+        print('compare: no `harness replay` output (replay not available in this build)')
+        return True
+    rows = {}
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            rows[r['t']] = r
+    if not nav:
+        print('compare: replay wrote %d rows; no navigation outputs from the emulator to compare' % len(rows))
+        return True
+    worst_p = worst_a = 0.0
+    missing = 0
+    for (tag, k), (t_ns, flags, pos, att, raw) in nav.items():
+        key = '%.6f' % ((t_ns - t0) * 1e-9)
+        r = rows.get(key)
+        if r is None:
+            missing += 1
+            continue
+        worst_p = max(worst_p, max(abs(pos[i] - float(r[c])) for i, c in enumerate(('x', 'y', 'z'))))
+        worst_a = max(worst_a, max(abs(att[i] - float(r[c])) for i, c in enumerate(('roll', 'pitch', 'yaw'))))
+    print('compare: against `harness replay` of the slice: %d outputs matched by time, %d without a row; largest '
+          'differences %.3g m and %.3g rad (the CSV has 6 decimals)' % (len(nav) - missing, missing, worst_p, worst_a))
+    ok = missing == 0 and worst_p <= pos_tol and worst_a <= att_tol
+    if not ok:
+        print('compare: error: the emulator disagrees with `harness replay`')
+    return ok
 
 
 def main():
@@ -46,9 +85,10 @@ def main():
     ap.add_argument('host')
     ap.add_argument('--pos-tol', type=float, default=1e-3)
     ap.add_argument('--att-tol', type=float, default=1e-5)
+    ap.add_argument('--replay')
     a = ap.parse_args()
-    es, en, ec = load(a.emu)
-    hs, hn, hc = load(a.host)
+    es, en, ec, et0 = load(a.emu)
+    hs, hn, hc, _ = load(a.host)
     ok = True
     if es is None or hs is None:
         print('compare: error: a "stream:" line is missing')
@@ -88,6 +128,8 @@ def main():
             ok = False
     else:
         print('compare: no navigation outputs (the navigation filter is not built into the image)')
+    if a.replay is not None and not compare_replay(a.replay, en, et0, a.pos_tol, a.att_tol):
+        ok = False
     print('compare: %s' % ('ok' if ok else 'FAILED'))
     return 0 if ok else 1
 

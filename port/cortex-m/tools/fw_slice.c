@@ -1,11 +1,12 @@
 /* Build-time generator: a piece of a log as C source for the emulator
  * benchmark image (fnav_cm_slice.h).
  *
- *   fw_slice LOG FIRST COUNT OUT.c
+ *   fw_slice LOG FIRST COUNT OUT.c [OUT.bin]
  *
  * Reads LOG with the harness readers (any format they import), skips FIRST
  * samples, writes COUNT samples (fewer if the log ends) with every float in
- * C99 hexadecimal notation, so the image holds exactly the log's values. */
+ * C99 hexadecimal notation, so the image holds exactly the log's values;
+ * OUT.bin receives the same samples as a .bin log (for `harness replay`). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,12 +17,13 @@ int main(int argc, char **argv)
 {
     char err[320];
     hx_reader_t *r;
+    hx_writer_t *w = NULL;
     FILE *out;
     fnav_sample_t s;
     long first, count, i = 0, n = 0;
     int k;
-    if (argc != 5) {
-        fprintf(stderr, "usage: fw_slice LOG FIRST COUNT OUT.c\n");
+    if (argc != 5 && argc != 6) {
+        fprintf(stderr, "usage: fw_slice LOG FIRST COUNT OUT.c [OUT.bin]\n");
         return 2;
     }
     first = strtol(argv[2], NULL, 10);
@@ -34,6 +36,14 @@ int main(int argc, char **argv)
     if (r == NULL) {
         fprintf(stderr, "fw_slice: %s\n", err);
         return 1;
+    }
+    if (argc == 6) {
+        w = hx_writer_open(argv[5], HX_FMT_BIN, hx_reader_meta(r), 0, err, sizeof err);
+        if (w == NULL) {
+            fprintf(stderr, "fw_slice: %s\n", err);
+            hx_reader_close(r);
+            return 3;
+        }
     }
     out = fopen(argv[4], "w");
     if (out == NULL) {
@@ -58,12 +68,20 @@ int main(int argc, char **argv)
             fprintf(out, " %af,", (double)(float)s.gyro_rps[k]);
         }
         fprintf(out, " } },\n");
+        if (w != NULL && hx_writer_write(w, &s) != FNAV_OK) {
+            fprintf(stderr, "fw_slice: cannot write %s\n", argv[5]);
+            return 3;
+        }
         n++;
     }
     fprintf(out, "};\n\nconst uint32_t fnav_cm_slice_n = %ldu;\n", n);
     fprintf(out, "const double fnav_cm_slice_rate_hz = %a;\n", hx_reader_meta(r)->rate_hz);
     fprintf(out, "const char fnav_cm_slice_source[] = \"%s samples %ld..%ld\";\n", argv[1], first, first + n - 1);
     hx_reader_close(r);
+    if (w != NULL && hx_writer_close(w, err, sizeof err) != FNAV_OK) {
+        fprintf(stderr, "fw_slice: %s\n", err);
+        return 3;
+    }
     if (n == 0) {
         fprintf(stderr, "fw_slice: no samples after %ld in %s\n", first, argv[1]);
         fclose(out);
