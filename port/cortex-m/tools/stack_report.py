@@ -32,7 +32,7 @@ FP_EXCEPTION_FRAME = 104
 
 
 def parse_ci(paths):
-    frames, dynamic, indirect = {}, set(), set()
+    frames, dynamic, indirect, edges = {}, set(), set(), set()
     node_re = re.compile(r'node: \{ title: "([^"]+)" label: "([^"]*)"')
     edge_re = re.compile(r'edge: \{ sourcename: "([^"]+)" targetname: "([^"]+)"')
     for p in paths:
@@ -54,9 +54,12 @@ def parse_ci(paths):
                 dynamic.add(name)
             frames[name] = max(frames.get(name, 0), size)
         for m in edge_re.finditer(text):
+            src = title_to_name.get(m.group(1), m.group(1))
             if m.group(2) == '__indirect_call':
-                indirect.add(title_to_name.get(m.group(1), m.group(1)))
-    return frames, dynamic, indirect
+                indirect.add(src)
+            else:
+                edges.add((src, title_to_name.get(m.group(2), m.group(2).split(':')[-1])))
+    return frames, dynamic, indirect, edges
 
 
 REGLIST = re.compile(r'\{([^}]*)\}')
@@ -106,7 +109,10 @@ def parse_objdump(tool, elf):
             cur['frame'] += int(re.search(r'#(\d+)', args).group(1))
         elif base in ('bl', 'b') or re.match(r'^b(eq|ne|cs|cc|mi|pl|vs|vc|hi|ls|ge|lt|gt|le)$', base):
             t = re.search(r'<([^>+]+)(\+0x[0-9a-f]+)?>', args)
-            if t and t.group(1) != cur_name and (base == 'bl' or t.group(2) is None):
+            # a BL to a function's entry is a call (to itself: recursion); a
+            # plain branch to another function's entry is a tail call; a
+            # branch inside the function is neither
+            if t and t.group(2) is None and (base == 'bl' or t.group(1) != cur_name):
                 cur['calls'].add(t.group(1))
         elif base == 'blx' and not args.startswith('<'):
             cur['indirect'] = True
@@ -145,7 +151,7 @@ def main():
     ap.add_argument('ci', nargs='*')
     a = ap.parse_args()
 
-    ci_frames, dynamic, ci_indirect = parse_ci(a.ci)
+    ci_frames, dynamic, ci_indirect, ci_edges = parse_ci(a.ci)
     funcs = parse_objdump(a.objdump, a.elf)
     table = parse_indirect(a.indirect)
     errors = []
@@ -164,6 +170,9 @@ def main():
                 for t in table[name]:
                     if t in funcs:
                         calls[name].add(t)
+    for src, dst in ci_edges:  # calls GCC saw (the disassembly has them too, unless inlined away)
+        if src in funcs and dst in funcs:
+            calls[src].add(dst)
     for name in dynamic:
         if name in funcs:
             errors.append('%s has an unbounded dynamic stack frame' % name)
