@@ -136,6 +136,8 @@ ARM_LIB   := $(ARM_BUILD)/libfootnav.a
 # Budget (issue 7): whole image with every estimator.
 FW_FLASH_BUDGET ?= 49152
 FW_RAM_BUDGET   ?= 24576
+# Stack reserved after .bss (must hold the worst case of the stack report).
+FW_STACK_SIZE   ?= 2048
 
 FW_COMMON := port/cortex-m/fnav_cm_ring.c port/cortex-m/fnav_port_cortexm.c port/cortex-m/fnav_cm_est.c \
              port/cortex-m/fnav_cm_app.c port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c
@@ -160,7 +162,7 @@ FW_SLICE_GEN := $(BUILD)/fw/fw_slice
 
 # Rebuild the images when the firmware options change (FW_DEFS, the slice).
 FW_STAMP  := $(ARM_BUILD)/fw-options.stamp
-FW_OPTIONS := $(FW_DEFS) | $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT)
+FW_OPTIONS := $(FW_DEFS) | $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT) | $(FW_STACK_SIZE)
 ifneq ($(filter firmware firmware-bench $(ARM_BUILD)/%,$(MAKECMDGOALS)),)
 $(shell mkdir -p $(ARM_BUILD) && (echo '$(FW_OPTIONS)' | cmp -s - $(FW_STAMP) || echo '$(FW_OPTIONS)' > $(FW_STAMP)))
 endif
@@ -186,8 +188,9 @@ $(ARM_LIB): $(ARM_CORE_OBJ)
 	rm -f $@
 	$(ARM_AR) rcs $@ $^
 
-$(FW_ELF): $(FW_OBJ) $(ARM_LIB) port/cortex-m/ld/cortex-m4f.ld port/cortex-m/ld/fnav_cm_sections.ld
-	$(ARM_CC) $(ARM_LDFLAGS) -Tcortex-m4f.ld -Wl,-Map=$(ARM_BUILD)/footnav-fw.map -o $@ $(FW_OBJ) $(ARM_LIB) $(ARM_LDLIBS)
+$(FW_ELF): $(FW_OBJ) $(ARM_LIB) port/cortex-m/ld/cortex-m4f.ld port/cortex-m/ld/fnav_cm_sections.ld $(FW_STAMP)
+	$(ARM_CC) $(ARM_LDFLAGS) -Tcortex-m4f.ld -Wl,--defsym=_stack_size=$(FW_STACK_SIZE) \
+	  -Wl,-Map=$(ARM_BUILD)/footnav-fw.map -o $@ $(FW_OBJ) $(ARM_LIB) $(ARM_LDLIBS)
 
 $(FW_SLICE_GEN): port/cortex-m/tools/fw_slice.c $(HXLIB) $(LIB)
 	@mkdir -p $(dir $@)
@@ -214,10 +217,11 @@ firmware: $(ARM_LIB) $(FW_ELF)
 	  echo "firmware: the image contains the symbols above (no heap, no stdio allowed)"; exit 1; fi
 	@echo "firmware: Cortex-M4F core library $(ARM_LIB) (text = flash, data+bss = RAM):"
 	@$(ARM_SIZE) -t $(ARM_LIB) | tail -n 1
-	@sh port/cortex-m/tools/fw_size.sh $(ARM_SIZE) $(FW_ELF) $(FW_FLASH_BUDGET) $(FW_RAM_BUDGET)
-	@$(PYTHON) port/cortex-m/tools/stack_report.py --elf $(FW_ELF) --objdump $(ARM_OBJDUMP) \
-	  --indirect port/cortex-m/tools/indirect_calls.txt --reserve-symbol _stack_size --nm $(ARM_NM) \
-	  $(patsubst %.o,%.ci,$(FW_OBJ) $(ARM_CORE_OBJ))
+	@sz=0; sk=0; sh port/cortex-m/tools/fw_size.sh $(ARM_SIZE) $(FW_ELF) $(FW_FLASH_BUDGET) $(FW_RAM_BUDGET) || sz=1; \
+	  $(PYTHON) port/cortex-m/tools/stack_report.py --elf $(FW_ELF) --objdump $(ARM_OBJDUMP) \
+	    --indirect port/cortex-m/tools/indirect_calls.txt --reserve-symbol _stack_size --nm $(ARM_NM) \
+	    $(patsubst %.o,%.ci,$(FW_OBJ) $(ARM_CORE_OBJ)) || sk=1; \
+	  if [ $$sz -ne 0 ] || [ $$sk -ne 0 ]; then echo "firmware: FAILED (budget or stack, see above)"; exit 1; fi
 
 firmware-bench: $(BENCH_ELF) $(FW_HOSTREF) $(HARNESS)
 	@if $(ARM_NM) $(BENCH_ELF) | grep -E -w 'malloc|_malloc_r|_sbrk|_sbrk_r|printf|_printf_r'; then \
