@@ -1,0 +1,533 @@
+/* Streaming fixed-memory Allan deviation (see fnav_allan.h, docs/allan.md). */
+#include "footnav/fnav_allan.h"
+#include "footnav/fnav_port.h"
+
+#include <string.h>
+
+#define RING0_MASK (FNAV_ALLAN_RING0 - 1u)
+
+const fnav_allan_config_t fnav_allan_config_default = { NULL, 0 };
+
+/* Kahan (compensated) summation: s - c carries the sum to about twice the
+ * working precision (Higham, "Accuracy and Stability of Numerical
+ * Algorithms", 2nd ed., sec. 4.3). */
+static inline void kahan_add(fnav_real_t *s, fnav_real_t *c, fnav_real_t v)
+{
+    const fnav_real_t y = v - *c;
+    const fnav_real_t t = *s + y;
+    *c = (t - *s) - y;
+    *s = t;
+}
+
+/* Level of a valid tau: 0 when it fits the full-rate ring, else the lowest
+ * cascade level j with tau / 2^j <= L (then tau / 2^j is in (L/2, L]).
+ * Returns -1 when tau cannot be represented. */
+static int tau_level(uint32_t tau)
+{
+    int j;
+    if (tau == 0u || (unsigned long)tau > FNAV_ALLAN_TAU_MAX) {
+        return -1;
+    }
+    if (tau <= FNAV_ALLAN_TAU_FULL_MAX) {
+        return 0;
+    }
+    for (j = FNAV_ALLAN_LEVEL_FIRST; j <= FNAV_ALLAN_LEVEL_LAST; j++) {
+        if ((tau >> j) <= FNAV_ALLAN_CASCADE_LAG) {
+            return ((tau & ((1u << j) - 1u)) == 0u) ? j : -1;
+        }
+    }
+    return -1;
+}
+
+int fnav_allan_tau_valid(uint32_t tau)
+{
+    return tau_level(tau) >= 0;
+}
+
+size_t fnav_allan_grid(uint32_t *tau, size_t max, uint32_t tau_max, unsigned per_octave)
+{
+    size_t n = 0;
+    unsigned p = per_octave <= 1u ? 1u : (per_octave == 2u ? 2u : 4u);
+    uint32_t k, i, last = 0;
+    if (tau == NULL) {
+        return 0;
+    }
+    if ((unsigned long)tau_max > FNAV_ALLAN_TAU_MAX) {
+        tau_max = (uint32_t)FNAV_ALLAN_TAU_MAX;
+    }
+    /* octave k holds 2^k (p + i) / p, i = 0..p-1; keep the integer ones */
+    for (k = 0; k < 32u && n < max; k++) {
+        uint64_t base = (uint64_t)1u << k;
+        for (i = 0; i < p && n < max; i++) {
+            uint64_t num = base * (uint64_t)(p + i);
+            uint32_t t;
+            if (num % p != 0u) {
+                continue;
+            }
+            if (num / p > (uint64_t)tau_max) {
+                return n;
+            }
+            t = (uint32_t)(num / p);
+            if (t > last && fnav_allan_tau_valid(t)) {
+                tau[n++] = t;
+                last = t;
+            }
+        }
+    }
+    return n;
+}
+
+fnav_status_t fnav_allan_init(fnav_allan_t *a, const fnav_allan_config_t *cfg)
+{
+    uint32_t grid[FNAV_ALLAN_MAX_POINTS]; /* default grid, 4 bytes per point */
+    const uint32_t *tau;
+    size_t n, i;
+    int l;
+    if (a == NULL) {
+        return FNAV_E_ARG;
+    }
+    memset(a, 0, sizeof *a);
+    if (cfg == NULL || cfg->tau == NULL) {
+        n = fnav_allan_grid(grid, FNAV_ALLAN_MAX_POINTS, (uint32_t)FNAV_ALLAN_TAU_MAX, 2u);
+        tau = grid;
+    } else {
+        tau = cfg->tau;
+        n = cfg->n_tau;
+    }
+    if (n == 0u || n > FNAV_ALLAN_MAX_POINTS) {
+        return FNAV_E_CONFIG;
+    }
+    for (i = 0; i < n; i++) {
+        int lev = tau_level(tau[i]);
+        if (lev < 0 || (i > 0 && tau[i] <= tau[i - 1])) {
+            memset(a, 0, sizeof *a);
+            return FNAV_E_CONFIG;
+        }
+        a->pt[i].level = (uint8_t)lev;
+        a->pt[i].lag = (uint16_t)(tau[i] >> lev);
+        a->pt[i].countdown = 1u; /* the first term (start index 0) is non-overlapping */
+        if (lev == 0) {
+            a->npt0 = (uint8_t)(i + 1u);
+        }
+    }
+    a->npt = (uint8_t)n;
+    /* x_0 = 0 is the first phase value of every level */
+    a->ring0[0] = FNAV_R(0.0);
+    a->w0 = 1u;
+    for (l = 0; l < FNAV_ALLAN_NLEVELS; l++) {
+        a->wc[l] = 1u;
+    }
+    return FNAV_OK;
+}
+
+/* Shift every phase value of a ring so that it is relative to the current
+ * phase: second differences are invariant to a constant, and small values
+ * keep the float ring precise however far the phase has drifted. */
+static void rebase(fnav_real_t *ring, uint32_t len, fnav_real_t *base, fnav_real_t ph)
+{
+    const fnav_real_t sh = *base - ph;
+    uint32_t i;
+    for (i = 0; i < len; i++) {
+        ring[i] += sh;
+    }
+    *base = ph;
+}
+
+/* Level l (= cascade level j) receives the phase x_n, n = k 2^j. */
+static void cascade_write(fnav_allan_t *a, int l, int j, uint32_t first, uint32_t end)
+{
+    fnav_real_t *ring = a->ringc[l];
+    const uint32_t w = a->wc[l];
+    const uint32_t k = a->n >> j; /* phase values at this level = k + 1 */
+    const fnav_real_t x = (a->ph - a->basec[l]) - a->pc;
+    uint32_t i;
+    ring[w] = x;
+    for (i = first; i < end; i++) {
+        fnav_allan_point_t *p = &a->pt[i];
+        const uint32_t m = p->lag;
+        uint32_t i1, i2;
+        fnav_real_t d, q;
+        if (k < 2u * m) {
+            break; /* lags ascend within a level */
+        }
+        i1 = (w >= m) ? w - m : w + FNAV_ALLAN_CASCADE_RING - m;
+        i2 = (w >= 2u * m) ? w - 2u * m : w + FNAV_ALLAN_CASCADE_RING - 2u * m;
+        d = (x + ring[i2]) - FNAV_R(2.0) * ring[i1];
+        q = d * d;
+        kahan_add(&p->so, &p->co, q);
+        if (--p->countdown == 0u) {
+            kahan_add(&p->sn, &p->cn, q);
+            p->countdown = (uint16_t)m;
+        }
+    }
+    if (w + 1u == FNAV_ALLAN_CASCADE_RING) {
+        a->wc[l] = 0u;
+        rebase(ring, FNAV_ALLAN_CASCADE_RING, &a->basec[l], a->ph);
+    } else {
+        a->wc[l] = (uint8_t)(w + 1u);
+    }
+}
+
+fnav_status_t fnav_allan_push(fnav_allan_t *a, fnav_real_t y)
+{
+    fnav_real_t d, t, x;
+    uint32_t w, n, i, nact;
+    FNAV_ASSERT(a != NULL);
+    if (!fnav_isfinite(y)) {
+        return FNAV_E_NANINF;
+    }
+    if (a->n == UINT32_MAX) {
+        return FNAV_E_RANGE;
+    }
+    if (a->n == 0u) {
+        a->y0 = y;
+    }
+    /* phase x_n = x_{n-1} + (y - y0), Kahan-compensated */
+    d = (y - a->y0) - a->pc;
+    t = a->ph + d;
+    a->pc = (t - a->ph) - d;
+    a->ph = t;
+    n = ++a->n;
+
+    x = (a->ph - a->base0) - a->pc;
+    w = a->w0;
+    a->ring0[w] = x;
+    nact = a->nact0;
+    while (nact < a->npt0 && 2u * (uint32_t)a->pt[nact].lag <= n) {
+        nact++;
+    }
+    a->nact0 = (uint8_t)nact;
+    {
+        const fnav_real_t *ring = a->ring0;
+        fnav_allan_point_t *pt = a->pt;
+        for (i = 0; i < nact; i++) {
+            const uint32_t m = pt[i].lag;
+            /* second difference x_n - 2 x_{n-m} + x_{n-2m} = m (ybar_2 - ybar_1) */
+            const fnav_real_t dd = (x + ring[(w - 2u * m) & RING0_MASK]) - FNAV_R(2.0) * ring[(w - m) & RING0_MASK];
+            const fnav_real_t q = dd * dd;
+            kahan_add(&pt[i].so, &pt[i].co, q);
+            if (--pt[i].countdown == 0u) {
+                kahan_add(&pt[i].sn, &pt[i].cn, q);
+                pt[i].countdown = (uint16_t)m;
+            }
+        }
+    }
+    w = (w + 1u) & RING0_MASK;
+    a->w0 = (uint16_t)w;
+    if (w == 0u) {
+        rebase(a->ring0, FNAV_ALLAN_RING0, &a->base0, a->ph);
+    }
+
+#if FNAV_ALLAN_NLEVELS > 0
+    if ((n & ((1u << FNAV_ALLAN_LEVEL_FIRST) - 1u)) == 0u) {
+        int l;
+        uint32_t first = a->npt0;
+        for (l = 0; l < FNAV_ALLAN_NLEVELS; l++) {
+            const int j = FNAV_ALLAN_LEVEL_FIRST + l;
+            uint32_t end = first;
+            if ((n & ((1u << j) - 1u)) != 0u) {
+                break;
+            }
+            while (end < a->npt && a->pt[end].level == (uint8_t)j) {
+                end++;
+            }
+            cascade_write(a, l, j, first, end);
+            first = end;
+        }
+    }
+#endif
+    return FNAV_OK;
+}
+
+size_t fnav_allan_count(const fnav_allan_t *a)
+{
+    return a != NULL ? a->npt : 0u;
+}
+
+uint32_t fnav_allan_samples(const fnav_allan_t *a)
+{
+    return a != NULL ? a->n : 0u;
+}
+
+fnav_status_t fnav_allan_get(const fnav_allan_t *a, size_t i, fnav_allan_result_t *out)
+{
+    const fnav_allan_point_t *p;
+    uint32_t k, m;
+    fnav_real_t tau;
+    if (a == NULL || out == NULL || i >= a->npt) {
+        return FNAV_E_ARG;
+    }
+    p = &a->pt[i];
+    m = p->lag;
+    k = a->n >> p->level; /* phase values at the level: k + 1 */
+    out->level = p->level;
+    out->stride = 1u << p->level;
+    out->lag = m;
+    out->tau = m << p->level;
+    out->n_phase = k + 1u;
+    out->terms = (k >= 2u * m) ? k + 1u - 2u * m : 0u;
+    out->terms_nonoverlap = (k >= 2u * m) ? k / m - 1u : 0u;
+    tau = (fnav_real_t)out->tau;
+    out->avar = out->terms > 0u ? (p->so - p->co) / (FNAV_R(2.0) * tau * tau * (fnav_real_t)out->terms)
+                                : (fnav_real_t)NAN;
+    out->avar_nonoverlap = out->terms_nonoverlap > 0u
+                               ? (p->sn - p->cn) / (FNAV_R(2.0) * tau * tau * (fnav_real_t)out->terms_nonoverlap)
+                               : (fnav_real_t)NAN;
+    return FNAV_OK;
+}
+
+/* ------------------------------------------------------------ noise type */
+
+fnav_allan_noise_t fnav_allan_noise_from_slope(fnav_real_t slope)
+{
+    if (!fnav_isfinite(slope)) {
+        return FNAV_ALLAN_NOISE_UNKNOWN;
+    }
+    if (slope < FNAV_R(-0.75)) {
+        return FNAV_ALLAN_NOISE_QUANT;
+    }
+    if (slope < FNAV_R(-0.25)) {
+        return FNAV_ALLAN_NOISE_WHITE;
+    }
+    if (slope < FNAV_R(0.25)) {
+        return FNAV_ALLAN_NOISE_FLICKER;
+    }
+    if (slope < FNAV_R(0.75)) {
+        return FNAV_ALLAN_NOISE_RRW;
+    }
+    return FNAV_ALLAN_NOISE_RAMP;
+}
+
+const char *fnav_allan_noise_name(fnav_allan_noise_t t)
+{
+    switch (t) {
+    case FNAV_ALLAN_NOISE_QUANT: return "quantisation";
+    case FNAV_ALLAN_NOISE_WHITE: return "white";
+    case FNAV_ALLAN_NOISE_FLICKER: return "flicker";
+    case FNAV_ALLAN_NOISE_RRW: return "rate-random-walk";
+    case FNAV_ALLAN_NOISE_RAMP: return "ramp";
+    case FNAV_ALLAN_NOISE_UNKNOWN: break;
+    }
+    return "unknown";
+}
+
+int fnav_allan_noise_alpha(fnav_allan_noise_t t)
+{
+    switch (t) {
+    case FNAV_ALLAN_NOISE_QUANT: return 2;
+    case FNAV_ALLAN_NOISE_FLICKER: return -1;
+    case FNAV_ALLAN_NOISE_RRW: return -2;
+    case FNAV_ALLAN_NOISE_RAMP: return -2;
+    case FNAV_ALLAN_NOISE_WHITE:
+    case FNAV_ALLAN_NOISE_UNKNOWN: break;
+    }
+    return 0;
+}
+
+static int usable(const fnav_allan_result_t *r)
+{
+    return r->terms > 0u && fnav_isfinite(r->avar) && r->avar > FNAV_R(0.0);
+}
+
+void fnav_allan_slopes(const fnav_allan_result_t *r, size_t n, fnav_real_t *slope)
+{
+    size_t i;
+    if (r == NULL || slope == NULL) {
+        return;
+    }
+    for (i = 0; i < n; i++) {
+        fnav_real_t sx = FNAV_R(0.0), sy = FNAV_R(0.0), sxx = FNAV_R(0.0), sxy = FNAV_R(0.0), cnt = FNAV_R(0.0);
+        size_t k, lo = i > 0 ? i - 1 : 0, hi = i + 1 < n ? i + 1 : i;
+        slope[i] = (fnav_real_t)NAN;
+        if (!usable(&r[i])) {
+            continue;
+        }
+        for (k = lo; k <= hi; k++) {
+            fnav_real_t lx, ly;
+            if (!usable(&r[k])) {
+                continue;
+            }
+            lx = fnav_log((fnav_real_t)r[k].tau);
+            ly = FNAV_R(0.5) * fnav_log(r[k].avar); /* log ADEV */
+            sx += lx;
+            sy += ly;
+            sxx += lx * lx;
+            sxy += lx * ly;
+            cnt += FNAV_R(1.0);
+        }
+        if (cnt >= FNAV_R(2.0)) {
+            const fnav_real_t den = cnt * sxx - sx * sx;
+            if (den > FNAV_R(0.0)) {
+                slope[i] = (cnt * sxy - sx * sy) / den;
+            }
+        }
+    }
+}
+
+/* ------------------------------------------------------------ EDF */
+/* Greenhall & Riley (PTTI 2003), eqs. (7)-(10) and tables 1-3, for the
+ * unmodified Allan variance (d = 2). F is the filter factor (m for the
+ * unmodified variance, INFINITY for its large-m limit), S the stride factor
+ * (m overlapping, 1 non-overlapping). */
+
+#define EDF_JMAX 100.0
+
+static double gh_sw(double t, int alpha)
+{
+    const double at = fabs(t);
+    switch (alpha) {
+    case 2: return -at;
+    case 1: return at > 0.0 ? t * t * log(at) : 0.0;
+    case 0: return at * at * at;
+    case -1: return at > 0.0 ? t * t * t * t * log(at) : 0.0;
+    case -2: return at * at * at * at * at;
+    case -3: return at > 0.0 ? t * t * t * t * t * t * log(at) : 0.0;
+    case -4: return at * at * at * at * at * at * at;
+    default: return 0.0;
+    }
+}
+
+static double gh_sx(double t, double F, int alpha)
+{
+    if (isinf(F)) {
+        return gh_sw(t, alpha + 2);
+    }
+    return F * F * (2.0 * gh_sw(t, alpha) - gh_sw(t - 1.0 / F, alpha) - gh_sw(t + 1.0 / F, alpha));
+}
+
+static double gh_sz(double t, double F, int alpha)
+{
+    /* d = 2: binomial weights 6, -4, -4, 1, 1 (eq. 9) */
+    return 6.0 * gh_sx(t, F, alpha) - 4.0 * gh_sx(t - 1.0, F, alpha) - 4.0 * gh_sx(t + 1.0, F, alpha) +
+           gh_sx(t - 2.0, F, alpha) + gh_sx(t + 2.0, F, alpha);
+}
+
+static double gh_basic_sum(double J, double M, double S, double F, int alpha)
+{
+    double s = gh_sz(0.0, F, alpha), sum;
+    double j;
+    sum = s * s;
+    s = gh_sz(J / S, F, alpha);
+    sum += (1.0 - J / M) * s * s;
+    for (j = 1.0; j < J; j += 1.0) {
+        s = gh_sz(j / S, F, alpha);
+        sum += 2.0 * (1.0 - j / M) * s * s;
+    }
+    return sum;
+}
+
+double fnav_allan_edf(int alpha, uint32_t m_u, uint32_t n_phase, int overlapping)
+{
+    /* Table 2 (d = 2 column), rows alpha = 2, 1, 0, -1, -2: (a0, a1) */
+    static const double t2[5][2] = {
+        { 35.0 / 18.0, 1.0 }, { 790.0, 410.0 }, { 2.0 / 3.0, 1.0 / 3.0 }, { 0.852, 0.375 }, { 1.079, 0.368 },
+    };
+    const double d = 2.0, m = (double)m_u, N = (double)n_phase;
+    const double F = m, S = overlapping ? m : 1.0;
+    const double L = m / F + m * d;
+    double M, J, r, inv;
+    if (alpha < -2 || alpha > 2 || m_u == 0u || N < L + 1.0) {
+        return -1.0;
+    }
+    M = 1.0 + floor(S * (N - L) / m);
+    J = M < (d + 1.0) * S ? M : (d + 1.0) * S;
+    r = M / S;
+    if (alpha <= 0 || alpha == 2) {
+        /* case 2 (alpha <= 0) and, through the basic sum, case 4 (alpha = 2) */
+        if (J <= EDF_JMAX) {
+            const double mp = (alpha == 2 || m * (d + 1.0) <= EDF_JMAX) ? m : (double)INFINITY;
+            const double z0 = gh_sz(0.0, mp, alpha);
+            inv = gh_basic_sum(J, M, S, mp, alpha) / (z0 * z0 * M);
+        } else if (r > d + 1.0 || alpha == 2) {
+            const double *a = t2[2 - alpha];
+            inv = (1.0 / r) * (a[0] - a[1] / r);
+            if (alpha == 2) {
+                inv = (1.0 / M) * (a[0] - a[1] / r); /* case 4, K > d */
+            }
+        } else {
+            const double mp = EDF_JMAX / r;
+            const double z0 = gh_sz(0.0, (double)INFINITY, alpha);
+            inv = gh_basic_sum(EDF_JMAX, EDF_JMAX, mp, (double)INFINITY, alpha) / (z0 * z0 * EDF_JMAX);
+        }
+    } else {
+        /* case 3, alpha = 1; table 3 (d = 2): b0 = 15.23, b1 = 12.0 */
+        const double b = 15.23 + 12.0 * log(m);
+        if (J <= EDF_JMAX) {
+            const double z0 = gh_sz(0.0, m, 1);
+            inv = gh_basic_sum(J, M, S, m, 1) / (z0 * z0 * M);
+        } else if (r > d + 1.0) {
+            inv = (1.0 / (b * b * r)) * (t2[1][0] - t2[1][1] / r);
+        } else {
+            const double mp = EDF_JMAX / r;
+            inv = gh_basic_sum(EDF_JMAX, EDF_JMAX, mp, mp, 1) / (b * b * EDF_JMAX);
+        }
+    }
+    return inv > 0.0 ? 1.0 / inv : -1.0;
+}
+
+/* ------------------------------------------------------------ paper id */
+
+fnav_status_t fnav_allan_identify_paper(const fnav_allan_result_t *r, size_t n, fnav_real_t rate_hz,
+                                        uint32_t tau_max, fnav_allan_paper_id_t *id)
+{
+    size_t i, imin = 0, nvalid = 0, lo = n, hi = n;
+    fnav_real_t best = FNAV_REAL_MAX, one_s;
+    if (r == NULL || id == NULL || !(rate_hz > FNAV_R(0.0)) || !fnav_isfinite(rate_hz)) {
+        return FNAV_E_ARG;
+    }
+    one_s = rate_hz; /* 1 s in samples */
+    for (i = 0; i < n; i++) {
+        if (!usable(&r[i])) {
+            continue;
+        }
+        nvalid++;
+        if ((fnav_real_t)r[i].tau <= one_s) {
+            lo = i;
+        }
+        if ((fnav_real_t)r[i].tau >= one_s && hi == n) {
+            hi = i;
+        }
+        if ((tau_max == 0u || r[i].tau <= tau_max) && r[i].avar < best) {
+            best = r[i].avar;
+            imin = i;
+        }
+    }
+    if (nvalid < 2u || lo == n || hi == n || best == FNAV_REAL_MAX) {
+        return FNAV_E_RANGE;
+    }
+    /* sigma_v: ADEV at 1 s, interpolated in log-log (section III.C.1) */
+    if (lo == hi) {
+        id->sigma_v = fnav_sqrt(r[lo].avar);
+    } else {
+        const fnav_real_t x0 = fnav_log((fnav_real_t)r[lo].tau), x1 = fnav_log((fnav_real_t)r[hi].tau);
+        const fnav_real_t y0 = FNAV_R(0.5) * fnav_log(r[lo].avar), y1 = FNAV_R(0.5) * fnav_log(r[hi].avar);
+        const fnav_real_t u = (fnav_log(one_s) - x0) / (x1 - x0);
+        id->sigma_v = fnav_exp(y0 + u * (y1 - y0));
+    }
+    /* BS and t_BS: the minimum, refined by a parabola in log-log through the
+     * minimum grid point and its neighbours when both are usable */
+    {
+        fnav_real_t lt = fnav_log((fnav_real_t)r[imin].tau), la = FNAV_R(0.5) * fnav_log(r[imin].avar);
+        if (imin > 0 && imin + 1 < n && usable(&r[imin - 1]) && usable(&r[imin + 1]) &&
+            (tau_max == 0u || r[imin + 1].tau <= tau_max)) {
+            const fnav_real_t x0 = fnav_log((fnav_real_t)r[imin - 1].tau), x2 = fnav_log((fnav_real_t)r[imin + 1].tau);
+            const fnav_real_t y0 = FNAV_R(0.5) * fnav_log(r[imin - 1].avar);
+            const fnav_real_t y2 = FNAV_R(0.5) * fnav_log(r[imin + 1].avar);
+            /* divided differences of the parabola through (x0,y0), (lt,la), (x2,y2) */
+            const fnav_real_t d1 = (la - y0) / (lt - x0), d2 = (y2 - la) / (x2 - lt);
+            const fnav_real_t c2 = (d2 - d1) / (x2 - x0);
+            if (c2 > FNAV_R(0.0)) {
+                fnav_real_t xv = FNAV_R(0.5) * (x0 + lt) - d1 / (FNAV_R(2.0) * c2);
+                xv = fnav_clamp(xv, x0, x2);
+                la = y0 + d1 * (xv - x0) + c2 * (xv - x0) * (xv - lt);
+                lt = xv;
+            }
+        }
+        id->bs = fnav_exp(la);
+        id->tau_samples = fnav_exp(lt); /* eq. (5): tau = t_BS f_s */
+        id->t_bs_s = id->tau_samples / rate_hz;
+        id->sigma_bias = id->bs / fnav_sqrt(id->tau_samples); /* eq. (6) */
+        id->i_min = (uint32_t)imin;
+    }
+    return FNAV_OK;
+}
