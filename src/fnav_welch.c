@@ -14,13 +14,14 @@ fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
 {
     const fnav_welch_config_t *c = cfg != NULL ? cfg : &fnav_welch_config_default;
     uint32_t i;
-    double s1 = 0.0, s2 = 0.0;
+    double s1 = 0.0, s2 = 0.0, w1r = 0.0, w1i = 0.0;
     if (w == NULL) {
         return FNAV_E_ARG;
     }
     if (c->nfft < 8u || c->nfft > FNAV_WELCH_MAX_NFFT || (c->nfft & (c->nfft - 1u)) != 0u ||
         c->overlap >= c->nfft || (unsigned)c->window > (unsigned)FNAV_WINDOW_RECT ||
-        (unsigned)c->detrend > (unsigned)FNAV_DETREND_LINEAR || (unsigned)c->scaling > (unsigned)FNAV_SCALING_SPECTRUM ||
+        (unsigned)c->detrend > (unsigned)FNAV_DETREND_GLOBAL ||
+        (c->detrend == FNAV_DETREND_GLOBAL && c->symmetric) || (unsigned)c->scaling > (unsigned)FNAV_SCALING_SPECTRUM ||
         !(c->rate_hz > FNAV_R(0.0)) || !fnav_isfinite(c->rate_hz) || !fnav_isfinite(c->offset)) {
         return FNAV_E_CONFIG;
     }
@@ -42,9 +43,14 @@ fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
         w->win[i] = (fnav_real_t)v;
         s1 += (double)w->win[i];
         s2 += (double)w->win[i] * (double)w->win[i];
+        /* W_1 = sum w_n e^(-2 pi i n / N) */
+        w1r += (double)w->win[i] * cos(6.283185307179586476925 * (double)i / (double)c->nfft);
+        w1i -= (double)w->win[i] * sin(6.283185307179586476925 * (double)i / (double)c->nfft);
     }
     w->s1 = (fnav_real_t)s1;
     w->s2 = (fnav_real_t)s2;
+    w->w1r = (fnav_real_t)w1r;
+    w->w1i = (fnav_real_t)w1i;
     return FNAV_OK;
 }
 
@@ -64,7 +70,7 @@ static void segment(fnav_welch_t *w)
     fnav_real_t *re = w->re, *im = w->im;
     fnav_real_t a = FNAV_R(0.0), b = FNAV_R(0.0);
     uint32_t i, p;
-    if (w->cfg.detrend != FNAV_DETREND_NONE) {
+    if (w->cfg.detrend == FNAV_DETREND_CONSTANT || w->cfg.detrend == FNAV_DETREND_LINEAR) {
         fnav_real_t sum = FNAV_R(0.0), sxy = FNAV_R(0.0);
         const fnav_real_t c = FNAV_R(0.5) * (fnav_real_t)(n - 1u);
         for (i = 0, p = w->pos; i < n; i++) {
@@ -93,6 +99,11 @@ static void segment(fnav_welch_t *w)
         im[i] = (v1 - (a + b * (i0 + FNAV_R(1.0)))) * w->win[2u * i + 1u];
     }
     fnav_fft_real_packed(&w->fft, re, im);
+    if (w->cfg.detrend == FNAV_DETREND_GLOBAL) {
+        w->x0 += re[0];
+        w->x1r += re[1];
+        w->x1i += im[1];
+    }
     for (i = 0; i <= h; i++) {
         kahan_add(&w->acc[i], &w->accc[i], re[i] * re[i] + im[i] * im[i]);
     }
@@ -105,7 +116,15 @@ fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x)
     if (!fnav_isfinite(x)) {
         return FNAV_E_NANINF;
     }
-    w->ring[w->pos] = x - w->cfg.offset;
+    if (w->cfg.detrend == FNAV_DETREND_GLOBAL) {
+        /* the first sample becomes a fixed shift (any constant cancels in
+         * the global-mean correction) so that the sums stay small */
+        if (w->nsamples == 0u) {
+            w->shift = x - w->cfg.offset;
+        }
+        kahan_add(&w->gs, &w->gc, (x - w->cfg.offset) - w->shift);
+    }
+    w->ring[w->pos] = (x - w->cfg.offset) - w->shift;
     w->pos = (w->pos + 1u == n) ? 0u : w->pos + 1u;
     if (w->nsamples != UINT32_MAX) {
         w->nsamples++;
@@ -149,6 +168,30 @@ static fnav_real_t bin_scale(const fnav_welch_t *w, uint32_t k)
     return (k == 0u || k == h) ? base : FNAV_R(2.0) * base;
 }
 
+/* Mean of the samples so far (after offset and shift), for GLOBAL. */
+static fnav_real_t global_mean(const fnav_welch_t *w)
+{
+    return w->nsamples > 0u ? (w->gs - w->gc) / (fnav_real_t)w->nsamples : FNAV_R(0.0);
+}
+
+/* Sum over segments of |X_k - mu W_k|^2 from the sums kept (k = 0, 1; the
+ * periodic window's DFT is zero beyond): sum |X_k|^2 - 2 mu Re(conj(W_k) sum X_k)
+ * + K mu^2 |W_k|^2. */
+static fnav_real_t global_fix(const fnav_welch_t *w, uint32_t k, fnav_real_t acc)
+{
+    const fnav_real_t mu = global_mean(w), K = (fnav_real_t)w->nseg;
+    fnav_real_t v;
+    if (k == 0u) {
+        v = acc - FNAV_R(2.0) * mu * w->s1 * w->x0 + K * mu * mu * w->s1 * w->s1;
+    } else if (k == 1u) {
+        v = acc - FNAV_R(2.0) * mu * (w->w1r * w->x1r + w->w1i * w->x1i) +
+            K * mu * mu * (w->w1r * w->w1r + w->w1i * w->w1i);
+    } else {
+        return acc;
+    }
+    return v > FNAV_R(0.0) ? v : FNAV_R(0.0);
+}
+
 fnav_status_t fnav_welch_get(const fnav_welch_t *w, fnav_real_t *out, size_t n_out)
 {
     uint32_t k, nb;
@@ -165,7 +208,11 @@ fnav_status_t fnav_welch_get(const fnav_welch_t *w, fnav_real_t *out, size_t n_o
     }
     inv = FNAV_R(1.0) / (fnav_real_t)w->nseg;
     for (k = 0; k < nb; k++) {
-        out[k] = (w->acc[k] - w->accc[k]) * inv * bin_scale(w, k);
+        fnav_real_t a = w->acc[k] - w->accc[k];
+        if (w->cfg.detrend == FNAV_DETREND_GLOBAL) {
+            a = global_fix(w, k, a);
+        }
+        out[k] = a * inv * bin_scale(w, k);
     }
     return FNAV_OK;
 }
@@ -184,7 +231,13 @@ fnav_status_t fnav_welch_last(const fnav_welch_t *w, fnav_real_t *out, size_t n_
         return FNAV_E_STATE;
     }
     for (k = 0; k < nb; k++) {
-        out[k] = (w->re[k] * w->re[k] + w->im[k] * w->im[k]) * bin_scale(w, k);
+        fnav_real_t r = w->re[k], i = w->im[k];
+        if (w->cfg.detrend == FNAV_DETREND_GLOBAL && k <= 1u) {
+            const fnav_real_t mu = global_mean(w);
+            r -= mu * (k == 0u ? w->s1 : w->w1r);
+            i -= mu * (k == 0u ? FNAV_R(0.0) : w->w1i);
+        }
+        out[k] = (r * r + i * i) * bin_scale(w, k);
     }
     return FNAV_OK;
 }

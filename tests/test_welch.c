@@ -71,6 +71,7 @@ static void config_of(const vcase_t *c, fnav_welch_config_t *cfg)
     cfg->symmetric = c->sym;
     cfg->detrend = strcmp(c->detrend, "none") == 0       ? FNAV_DETREND_NONE
                    : strcmp(c->detrend, "constant") == 0 ? FNAV_DETREND_CONSTANT
+                   : strcmp(c->detrend, "global") == 0   ? FNAV_DETREND_GLOBAL
                                                          : FNAV_DETREND_LINEAR;
     cfg->scaling = strcmp(c->scaling, "density") == 0 ? FNAV_SCALING_DENSITY : FNAV_SCALING_SPECTRUM;
     cfg->rate_hz = (fnav_real_t)c->fs;
@@ -193,8 +194,8 @@ static void test_against_scipy(void **state)
         }
     }
     fclose(f);
-    assert_int_equal(ncases, 9);
-    assert_int_equal(nbands, 5);
+    assert_int_equal(ncases, 12);
+    assert_int_equal(nbands, 6);
     fprintf(stderr, "[  INFO    ] %s build: worst per-bin error vs scipy %.2g relative to the bin, %.2g relative "
                     "to the largest bin\n",
             FNAV_USE_DOUBLE ? "double" : "float", worst, worst_peak);

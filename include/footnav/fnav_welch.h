@@ -41,7 +41,10 @@ typedef enum {
 typedef enum {
     FNAV_DETREND_NONE = 0,     /**< nothing (DC, e.g. gravity, stays in) */
     FNAV_DETREND_CONSTANT = 1, /**< the segment mean (scipy's default) */
-    FNAV_DETREND_LINEAR = 2    /**< the least-squares line through the segment */
+    FNAV_DETREND_LINEAR = 2,   /**< the least-squares line through the segment */
+    FNAV_DETREND_GLOBAL = 3    /**< the mean of the whole record, removed exactly at the end in one
+                                    pass (periodic windows only: their DFT is zero beyond bin 1, so
+                                    only bins 0 and 1 change; docs/psd.md) */
 } fnav_detrend_t;
 
 /** Scaling of the result. */
@@ -78,7 +81,11 @@ typedef struct {
     fnav_real_t acc[FNAV_WELCH_MAX_BINS];      /**< sum of |X_k|^2 over segments (Kahan) */
     fnav_real_t accc[FNAV_WELCH_MAX_BINS];     /**< Kahan compensation */
     fnav_real_t s2;                            /**< sum of w^2 */
-    fnav_real_t s1;                            /**< sum of w */
+    fnav_real_t s1;                            /**< sum of w (= W_0, the window's DFT at bin 0) */
+    fnav_real_t w1r, w1i;                      /**< W_1, the window's DFT at bin 1 */
+    fnav_real_t shift;                         /**< GLOBAL: first sample, removed to keep sums small */
+    fnav_real_t gs, gc;                        /**< GLOBAL: sum of samples (Kahan) */
+    fnav_real_t x0, x1r, x1i;                  /**< GLOBAL: sums of X_0, X_1 over segments */
     uint32_t pos;                              /**< ring index of the next sample */
     uint32_t fill;                             /**< samples in the ring (<= nfft) */
     uint32_t since;                            /**< samples since the last segment */
@@ -91,8 +98,8 @@ typedef struct {
  * @param w    estimator (caller-owned)
  * @param cfg  configuration, or NULL for fnav_welch_config_default
  * @return FNAV_OK; FNAV_E_ARG for NULL w; FNAV_E_CONFIG for a bad nfft,
- *         overlap >= nfft, unknown window/detrend/scaling, rate <= 0 or a
- *         non-finite offset.
+ *         overlap >= nfft, unknown window/detrend/scaling, rate <= 0, a
+ *         non-finite offset, or FNAV_DETREND_GLOBAL with a symmetric window.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg);
 
@@ -123,7 +130,8 @@ FNAV_WARN_UNUSED fnav_status_t fnav_welch_get(const fnav_welch_t *w, fnav_real_t
 
 /**
  * One-sided spectrum of the most recent segment alone (same scaling), for
- * spectrograms: call when fnav_welch_segments() has grown.
+ * spectrograms: call when fnav_welch_segments() has grown. With
+ * FNAV_DETREND_GLOBAL the mean of the samples so far is removed.
  * @return as fnav_welch_get().
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_last(const fnav_welch_t *w, fnav_real_t *out, size_t n_out);

@@ -8,7 +8,8 @@ Inputs (committed next to this script):
                           of ../shared/data/openshoe_c_820hz/OpenShoeDataSet.txt
                           (CC BY 4.0, see vectors/README.md)
 Expected: scipy.signal.welch with the same window, overlap, detrending and
-scaling, one-sided, for each case below; and the bandwidth holding a fraction
+scaling, one-sided, for each case below ("global": welch(x - x.mean(),
+detrend=False)); and the bandwidth holding a fraction
 of the total power by the rule of docs/psd.md (bin k holds P_k df over
 [(k-1/2) df, (k+1/2) df], linear interpolation where the cumulative power
 crosses the threshold), written here independently with numpy.
@@ -38,6 +39,9 @@ CASES = [
     ("os820_hamming64", "os820", 820.0, 64, 32, "hamming", 0, "constant", "density"),
     ("os820_hamming1024", "os820", 820.0, 1024, 512, "hamming", 0, "constant", "density"),
     ("os820_hamming256_nodetrend", "os820", 820.0, 256, 128, "hamming", 0, "none", "density"),
+    ("os820_hamming64_global", "os820", 820.0, 64, 32, "hamming", 0, "global", "density"),
+    ("synth_hann256_global", "synth", 100.0, 256, 100, "hann", 0, "global", "density"),
+    ("synth_rect64_global", "synth", 10.0, 64, 0, "boxcar", 0, "global", "spectrum"),
 ]
 # bandwidth checks: case, threshold, round_hz, exclude_dc
 BANDS = [
@@ -46,6 +50,7 @@ BANDS = [
     ("os820_hamming256_nodetrend", 0.95, 50.0, 0),
     ("os820_hamming256_nodetrend", 0.95, 50.0, 1),
     ("paper_hamming64", 0.90, 25.0, 0),
+    ("os820_hamming64_global", 0.95, 50.0, 0),
 ]
 
 
@@ -68,6 +73,10 @@ def window(name, n, sym):
 
 def welch(x, fs, n, nov, win, sym, detrend, scaling):
     w = window(win, n, sym)
+    if detrend == "global":
+        # the whole record's mean removed first (footnav's FNAV_DETREND_GLOBAL)
+        x = x - x.mean()
+        detrend = "none"
     f, p = sig.welch(x, fs=fs, window=w, nperseg=n, noverlap=nov, detrend=False if detrend == "none" else detrend,
                      scaling=scaling, return_onesided=True)
     return f, p
