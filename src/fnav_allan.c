@@ -105,15 +105,21 @@ fnav_status_t fnav_allan_init(fnav_allan_t *a, const fnav_allan_config_t *cfg)
         }
         a->pt[i].level = (uint8_t)lev;
         a->pt[i].lag = (uint16_t)(tau[i] >> lev);
-        a->pt[i].countdown = 1u; /* the first term (start index 0) is non-overlapping */
         if (lev == 0) {
             a->npt0 = (uint8_t)(i + 1u);
+            /* a block looks back BLOCK - 1 + 2 lag phase values: must stay in the ring */
+            a->pt[i].late = (uint8_t)(2u * tau[i] + FNAV_ALLAN_BLOCK > FNAV_ALLAN_RING0);
         }
     }
     a->npt = (uint8_t)n;
-    /* x_0 = 0 is the first phase value of every level */
-    a->ring0[0] = FNAV_R(0.0);
-    a->w0 = 1u;
+    a->nlate0 = a->npt0;
+    for (i = 0; i < a->npt0; i++) {
+        if (a->pt[i].late) {
+            a->nlate0 = (uint8_t)i;
+            break;
+        }
+    }
+    /* x_0 = 0 is the first phase value of every level (ring0 is zeroed) */
     for (l = 0; l < FNAV_ALLAN_NLEVELS; l++) {
         a->wc[l] = 1u;
     }
@@ -138,7 +144,7 @@ static void cascade_write(fnav_allan_t *a, int l, int j, uint32_t first, uint32_
 {
     fnav_real_t *ring = a->ringc[l];
     const uint32_t w = a->wc[l];
-    const uint32_t k = a->n >> j; /* phase values at this level = k + 1 */
+    const uint32_t k = a->n >> j; /* newest phase index at this level */
     const fnav_real_t x = (a->ph - a->basec[l]) - a->pc;
     uint32_t i;
     ring[w] = x;
@@ -155,9 +161,9 @@ static void cascade_write(fnav_allan_t *a, int l, int j, uint32_t first, uint32_
         d = (x + ring[i2]) - FNAV_R(2.0) * ring[i1];
         q = d * d;
         kahan_add(&p->so, &p->co, q);
-        if (--p->countdown == 0u) {
+        if (k % m == 0u) {
+            /* start index k - 2m is a multiple of m: a non-overlapping term */
             kahan_add(&p->sn, &p->cn, q);
-            p->countdown = (uint16_t)m;
         }
     }
     if (w + 1u == FNAV_ALLAN_CASCADE_RING) {
@@ -168,56 +174,118 @@ static void cascade_write(fnav_allan_t *a, int l, int j, uint32_t first, uint32_
     }
 }
 
-fnav_status_t fnav_allan_push(fnav_allan_t *a, fnav_real_t y)
+/* Second difference ending at full-rate phase index e (in the ring). */
+static inline fnav_real_t diff0(const fnav_allan_t *a, uint32_t e, uint32_t m)
 {
-    fnav_real_t d, t, x;
-    uint32_t w, n, i, nact;
-    FNAV_ASSERT(a != NULL);
-    if (!fnav_isfinite(y)) {
-        return FNAV_E_NANINF;
-    }
-    if (a->n == UINT32_MAX) {
-        return FNAV_E_RANGE;
-    }
-    if (a->n == 0u) {
-        a->y0 = y;
-    }
-    /* phase x_n = x_{n-1} + (y - y0), Kahan-compensated */
-    d = (y - a->y0) - a->pc;
-    t = a->ph + d;
-    a->pc = (t - a->ph) - d;
-    a->ph = t;
-    n = ++a->n;
+    return (a->ring0[e & RING0_MASK] + a->ring0[(e - 2u * m) & RING0_MASK]) -
+           FNAV_R(2.0) * a->ring0[(e - m) & RING0_MASK];
+}
 
-    x = (a->ph - a->base0) - a->pc;
-    w = a->w0;
-    a->ring0[w] = x;
-    nact = a->nact0;
-    while (nact < a->npt0 && 2u * (uint32_t)a->pt[nact].lag <= n) {
-        nact++;
+/* Sum of squared second differences of lag m ending at e = lo..hi with
+ * stride st (1: overlapping terms; m: non-overlapping ones, lo a multiple of
+ * m), e >= 2m, general ring indexing. */
+static fnav_real_t terms0(const fnav_allan_t *a, uint32_t m, uint32_t lo, uint32_t hi, uint32_t st)
+{
+    fnav_real_t s = FNAV_R(0.0);
+    uint32_t e;
+    if (lo < 2u * m) {
+        lo = 2u * m;
     }
-    a->nact0 = (uint8_t)nact;
-    {
-        const fnav_real_t *ring = a->ring0;
-        fnav_allan_point_t *pt = a->pt;
-        for (i = 0; i < nact; i++) {
-            const uint32_t m = pt[i].lag;
-            /* second difference x_n - 2 x_{n-m} + x_{n-2m} = m (ybar_2 - ybar_1) */
-            const fnav_real_t dd = (x + ring[(w - 2u * m) & RING0_MASK]) - FNAV_R(2.0) * ring[(w - m) & RING0_MASK];
-            const fnav_real_t q = dd * dd;
-            kahan_add(&pt[i].so, &pt[i].co, q);
-            if (--pt[i].countdown == 0u) {
-                kahan_add(&pt[i].sn, &pt[i].cn, q);
-                pt[i].countdown = (uint16_t)m;
+    for (e = lo; e <= hi; e += st) {
+        const fnav_real_t d = diff0(a, e, m);
+        s += d * d;
+    }
+    return s;
+}
+
+/* First multiple of m that is >= lo. */
+static inline uint32_t next_multiple(uint32_t lo, uint32_t m)
+{
+    return ((lo + m - 1u) / m) * m;
+}
+
+/* The rare work of a push lives out of line so that the common push stays
+ * a handful of instructions without register spills. */
+#if defined(__GNUC__)
+#define FNAV_NOINLINE __attribute__((noinline))
+#else
+#define FNAV_NOINLINE
+#endif
+
+/* A block of end indices e = n - BLOCK + 1 .. n has completed (n + 1 a
+ * multiple of BLOCK, so the block is aligned in the ring and, thanks to the
+ * repeated head of the ring, every lagged run of 32 reads is contiguous). */
+static void block0(fnav_allan_t *a, uint32_t n)
+{
+    const uint32_t e0 = n + 1u - FNAV_ALLAN_BLOCK;
+    const fnav_real_t *x0 = &a->ring0[e0 & RING0_MASK];
+    fnav_real_t q[FNAV_ALLAN_BLOCK];
+    uint32_t i;
+    for (i = 0; i < a->nlate0; i++) {
+        fnav_allan_point_t *p = &a->pt[i];
+        const uint32_t m = p->lag;
+        fnav_real_t so, sn = FNAV_R(0.0);
+        if (n < 2u * m) {
+            break; /* lags ascend: no later point has a term yet */
+        }
+        if (e0 >= 2u * m) {
+            const fnav_real_t *x1 = &a->ring0[(e0 - m) & RING0_MASK];
+            const fnav_real_t *x2 = &a->ring0[(e0 - 2u * m) & RING0_MASK];
+            fnav_real_t s0 = FNAV_R(0.0), s1 = FNAV_R(0.0), s2 = FNAV_R(0.0), s3 = FNAV_R(0.0);
+            uint32_t k;
+            for (k = 0; k < FNAV_ALLAN_BLOCK; k++) {
+                /* x_e - 2 x_{e-m} + x_{e-2m} = m (ybar_2 - ybar_1) */
+                const fnav_real_t d = (x0[k] + x2[k]) - FNAV_R(2.0) * x1[k];
+                q[k] = d * d;
             }
+            for (k = 0; k < FNAV_ALLAN_BLOCK; k += 4u) {
+                s0 += q[k];
+                s1 += q[k + 1u];
+                s2 += q[k + 2u];
+                s3 += q[k + 3u];
+            }
+            so = (s0 + s1) + (s2 + s3);
+            /* non-overlapping: end indices that are multiples of m */
+            if (m == 1u) {
+                sn = so;
+            } else {
+                for (k = next_multiple(e0, m) - e0; k < FNAV_ALLAN_BLOCK; k += m) {
+                    sn += q[k];
+                }
+            }
+        } else {
+            so = terms0(a, m, e0, n, 1u); /* the first terms of this point */
+            sn = terms0(a, m, next_multiple(e0, m), n, m);
+        }
+        kahan_add(&p->so, &p->co, so);
+        kahan_add(&p->sn, &p->cn, sn);
+    }
+}
+
+static FNAV_NOINLINE void push_rare(fnav_allan_t *a, uint32_t n, uint32_t w)
+{
+    uint32_t i;
+    /* level-0 points too long for blocks: every push */
+    for (i = a->nlate0; i < a->npt0; i++) {
+        fnav_allan_point_t *p = &a->pt[i];
+        const uint32_t m = p->lag;
+        fnav_real_t dd;
+        if (n < 2u * m) {
+            break;
+        }
+        dd = diff0(a, n, m);
+        kahan_add(&p->so, &p->co, dd * dd);
+        if (n % m == 0u) {
+            kahan_add(&p->sn, &p->cn, dd * dd);
         }
     }
-    w = (w + 1u) & RING0_MASK;
-    a->w0 = (uint16_t)w;
-    if (w == 0u) {
-        rebase(a->ring0, FNAV_ALLAN_RING0, &a->base0, a->ph);
+    if (((n + 1u) & (FNAV_ALLAN_BLOCK - 1u)) == 0u) {
+        block0(a, n);
     }
-
+    if (w == FNAV_ALLAN_RING0 - 1u) {
+        /* the ring is full of values relative to base0: re-base them all */
+        rebase(a->ring0, FNAV_ALLAN_RING0 + FNAV_ALLAN_BLOCK, &a->base0, a->ph);
+    }
 #if FNAV_ALLAN_NLEVELS > 0
     if ((n & ((1u << FNAV_ALLAN_LEVEL_FIRST) - 1u)) == 0u) {
         int l;
@@ -236,6 +304,40 @@ fnav_status_t fnav_allan_push(fnav_allan_t *a, fnav_real_t y)
         }
     }
 #endif
+}
+
+fnav_status_t fnav_allan_push(fnav_allan_t *a, fnav_real_t y)
+{
+    fnav_real_t d, t, x;
+    uint32_t w, n;
+    FNAV_ASSERT(a != NULL);
+    if (!(fnav_fabs(y) <= FNAV_REAL_MAX)) {
+        return FNAV_E_NANINF; /* NaN fails the comparison too */
+    }
+    n = a->n;
+    if (n == UINT32_MAX) {
+        return FNAV_E_RANGE;
+    }
+    if (n == 0u) {
+        a->y0 = y;
+    }
+    /* phase x_n = x_{n-1} + (y - y0), Kahan-compensated */
+    d = (y - a->y0) - a->pc;
+    t = a->ph + d;
+    a->pc = (t - a->ph) - d;
+    a->ph = t;
+    a->n = ++n;
+
+    x = (t - a->base0) - a->pc;
+    w = n & RING0_MASK;
+    a->ring0[w] = x;
+    if (w < FNAV_ALLAN_BLOCK) {
+        a->ring0[w + FNAV_ALLAN_RING0] = x; /* the repeated head */
+    }
+    if ((((n + 1u) & (FNAV_ALLAN_BLOCK - 1u)) == 0u) | ((n & ((1u << FNAV_ALLAN_LEVEL_FIRST) - 1u)) == 0u) |
+        (a->nlate0 < a->npt0)) {
+        push_rare(a, n, w);
+    }
     return FNAV_OK;
 }
 
@@ -253,7 +355,7 @@ fnav_status_t fnav_allan_get(const fnav_allan_t *a, size_t i, fnav_allan_result_
 {
     const fnav_allan_point_t *p;
     uint32_t k, m;
-    fnav_real_t tau;
+    fnav_real_t tau, so, sn;
     if (a == NULL || out == NULL || i >= a->npt) {
         return FNAV_E_ARG;
     }
@@ -268,10 +370,17 @@ fnav_status_t fnav_allan_get(const fnav_allan_t *a, size_t i, fnav_allan_result_
     out->terms = (k >= 2u * m) ? k + 1u - 2u * m : 0u;
     out->terms_nonoverlap = (k >= 2u * m) ? k / m - 1u : 0u;
     tau = (fnav_real_t)out->tau;
-    out->avar = out->terms > 0u ? (p->so - p->co) / (FNAV_R(2.0) * tau * tau * (fnav_real_t)out->terms)
-                                : (fnav_real_t)NAN;
+    so = p->so - p->co;
+    sn = p->sn - p->cn;
+    if (p->level == 0u && !p->late && a->n % FNAV_ALLAN_BLOCK != FNAV_ALLAN_BLOCK - 1u) {
+        /* the terms of the block in progress: end indices lo .. n */
+        const uint32_t lo = a->n - a->n % FNAV_ALLAN_BLOCK;
+        so += terms0(a, m, lo, a->n, 1u);
+        sn += terms0(a, m, next_multiple(lo, m), a->n, m);
+    }
+    out->avar = out->terms > 0u ? so / (FNAV_R(2.0) * tau * tau * (fnav_real_t)out->terms) : (fnav_real_t)NAN;
     out->avar_nonoverlap = out->terms_nonoverlap > 0u
-                               ? (p->sn - p->cn) / (FNAV_R(2.0) * tau * tau * (fnav_real_t)out->terms_nonoverlap)
+                               ? sn / (FNAV_R(2.0) * tau * tau * (fnav_real_t)out->terms_nonoverlap)
                                : (fnav_real_t)NAN;
     return FNAV_OK;
 }
