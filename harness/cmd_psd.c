@@ -271,7 +271,7 @@ static int plot_psd(const char *dir, const result_t *r, const char *src, const s
     fprintf(p.gp, "set logscale y\nset format y '%%.0e'\nset xlabel 'frequency [Hz]'\n");
     for (g = 0; g < 2; g++) {
         for (c = 3 * g; c < 3 * g + 3; c++) {
-            char nm[8];
+            char nm[16];
             snprintf(nm, sizeof nm, "d%d", c);
             block(p.gp, nm, r, c, 0);
         }
@@ -300,7 +300,7 @@ static int plot_ccdf(const char *dir, const result_t *r, const char *src, const 
     for (g = 0; g < 2; g++) {
         fprintf(p.gp, "unset arrow\n");
         for (c = 3 * g; c < 3 * g + 3; c++) {
-            char nm[8];
+            char nm[16];
             snprintf(nm, sizeof nm, "c%d", c);
             block(p.gp, nm, r, c, 1);
             if (r->ok[c]) {
