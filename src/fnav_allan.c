@@ -425,7 +425,7 @@ int fnav_allan_noise_alpha(fnav_allan_noise_t t)
     switch (t) {
     case FNAV_ALLAN_NOISE_QUANT: return 2;
     case FNAV_ALLAN_NOISE_FLICKER: return -1;
-    case FNAV_ALLAN_NOISE_RRW: return -2;
+    case FNAV_ALLAN_NOISE_RRW: /* fall through: a ramp is not a power law; use the nearest */
     case FNAV_ALLAN_NOISE_RAMP: return -2;
     case FNAV_ALLAN_NOISE_WHITE:
     case FNAV_ALLAN_NOISE_UNKNOWN: break;
@@ -514,13 +514,14 @@ static double gh_sz(double t, double F, int alpha)
 static double gh_basic_sum(double J, double M, double S, double F, int alpha)
 {
     double s = gh_sz(0.0, F, alpha), sum;
-    double j;
+    const long jn = (long)J; /* J is a whole number (<= EDF_JMAX) */
+    long j;
     sum = s * s;
     s = gh_sz(J / S, F, alpha);
     sum += (1.0 - J / M) * s * s;
-    for (j = 1.0; j < J; j += 1.0) {
-        s = gh_sz(j / S, F, alpha);
-        sum += 2.0 * (1.0 - j / M) * s * s;
+    for (j = 1; j < jn; j++) {
+        s = gh_sz((double)j / S, F, alpha);
+        sum += 2.0 * (1.0 - (double)j / M) * s * s;
     }
     return sum;
 }
@@ -532,8 +533,9 @@ double fnav_allan_edf(int alpha, uint32_t m_u, uint32_t n_phase, int overlapping
         { 35.0 / 18.0, 1.0 }, { 790.0, 410.0 }, { 2.0 / 3.0, 1.0 / 3.0 }, { 0.852, 0.375 }, { 1.079, 0.368 },
     };
     const double d = 2.0, m = (double)m_u, N = (double)n_phase;
-    const double F = m, S = overlapping ? m : 1.0;
-    const double L = m / F + m * d;
+    /* filter factor F = m (unmodified variance), stride factor S */
+    const double S = overlapping ? m : 1.0;
+    const double L = 1.0 + m * d; /* m / F + m d */
     double M, J, r, inv;
     if (alpha < -2 || alpha > 2 || m_u == 0u || N < L + 1.0) {
         return -1.0;
@@ -547,12 +549,12 @@ double fnav_allan_edf(int alpha, uint32_t m_u, uint32_t n_phase, int overlapping
             const double mp = (alpha == 2 || m * (d + 1.0) <= EDF_JMAX) ? m : (double)INFINITY;
             const double z0 = gh_sz(0.0, mp, alpha);
             inv = gh_basic_sum(J, M, S, mp, alpha) / (z0 * z0 * M);
-        } else if (r > d + 1.0 || alpha == 2) {
+        } else if (alpha == 2) {
+            const double *a = t2[0];
+            inv = (1.0 / M) * (a[0] - a[1] / r); /* case 4, K > d */
+        } else if (r > d + 1.0) {
             const double *a = t2[2 - alpha];
             inv = (1.0 / r) * (a[0] - a[1] / r);
-            if (alpha == 2) {
-                inv = (1.0 / M) * (a[0] - a[1] / r); /* case 4, K > d */
-            }
         } else {
             const double mp = EDF_JMAX / r;
             const double z0 = gh_sz(0.0, (double)INFINITY, alpha);

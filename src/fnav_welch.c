@@ -95,8 +95,8 @@ static void segment(fnav_welch_t *w)
         p = (p + 1u == n) ? 0u : p + 1u;
         v1 = x[p];
         p = (p + 1u == n) ? 0u : p + 1u;
-        re[i] = (v0 - (a + b * i0)) * w->win[2u * i];
-        im[i] = (v1 - (a + b * (i0 + FNAV_R(1.0)))) * w->win[2u * i + 1u];
+        re[i] = (v0 - (a + b * i0)) * w->win[(size_t)2u * i];
+        im[i] = (v1 - (a + b * (i0 + FNAV_R(1.0)))) * w->win[(size_t)2u * i + 1u];
     }
     fnav_fft_real_packed(&w->fft, re, im);
     if (w->cfg.detrend == FNAV_DETREND_GLOBAL) {
