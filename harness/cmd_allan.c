@@ -518,6 +518,19 @@ static void print_params(const run_t *R)
             printf(" n/a (fit failed)\n");
         }
     }
+    printf("\nOther readings of the paper's parameters (RMS log10 ADEV model/measured; model/measured at the minimum):\n"
+           "  drive:  sigma_bias taken as the std of the driving noise n_k (the Fig. 7 text), stationary std\n"
+           "          sigma_bias / sqrt(1 - c^2)\n"
+           "  sample: eq. (4) as above, but sigma_v drawn as the per-sample std (density sigma_v / sqrt(f_s))\n");
+    printf("%-6s | %12s %8s | %12s %8s\n", "chan", "drive rms", "@min", "sample rms", "@min");
+    for (i = 0; i < R->nch; i++) {
+        const chan_t *ch = &R->ch[i];
+        if (ch->id_ok && ch->id.paper_ok) {
+            printf("%-6s | %12.2f %8.3f | %12.2f %8.3f\n", ch->label, ch->id.paper_drive_quality.rms_log10,
+                   ch->id.paper_drive_quality.ratio_at_min, ch->id.paper_sample_quality.rms_log10,
+                   ch->id.paper_sample_quality.ratio_at_min);
+        }
+    }
 }
 
 static int write_csv(const run_t *R, const char *path)
@@ -624,6 +637,13 @@ static int write_json(const run_t *R, const char *path)
             json_num(p, "tau_samples", (double)ch->id.paper.tau_samples);
             json_num(p, "sigma_bias", (double)ch->id.paper.sigma_bias);
             json_quality(p, &ch->id.paper_quality);
+            {
+                cJSON *rd = cJSON_AddObjectToObject(p, "reading_drive");
+                json_model(rd, &ch->id.paper_drive_model, R->rate_hz);
+                json_quality(rd, &ch->id.paper_drive_quality);
+                rd = cJSON_AddObjectToObject(p, "reading_sample");
+                json_quality(rd, &ch->id.paper_sample_quality);
+            }
         }
         p = cJSON_AddObjectToObject(c, "corrected");
         if (ch->id_ok && ch->id.fit_ok) {
