@@ -701,9 +701,11 @@ static int write_json(const run_t *R, const char *path)
     return 0;
 }
 
-static void plot_block(FILE *gp, const char *name, const run_t *R, const chan_t *ch, int what)
+/* Writes a datablock; returns the number of points (log axes: positive only). */
+static int plot_block(FILE *gp, const char *name, const run_t *R, const chan_t *ch, int what)
 {
     size_t k;
+    int np = 0;
     fprintf(gp, "$%s << EOD\n", name);
     for (k = 0; k < ch->nres; k++) {
         const fnav_allan_result_t *r = &ch->res[k];
@@ -712,18 +714,24 @@ static void plot_block(FILE *gp, const char *name, const run_t *R, const chan_t 
             continue;
         }
         if (what == 0) {
-            if (isfinite(ch->lo[k])) {
+            if (isfinite(ch->lo[k]) && ch->lo[k] > 0.0 && (double)r->avar > 0.0) {
                 fprintf(gp, "%.6g %.6g %.6g %.6g\n", t, sqrt((double)r->avar), ch->lo[k], ch->hi[k]);
+                np++;
             }
-        } else if (what == 1 && ch->have_sim_paper && ch->sim_paper[k].terms > 0u) {
+        } else if (what == 1 && ch->have_sim_paper && ch->sim_paper[k].terms > 0u &&
+                   (double)ch->sim_paper[k].avar > 0.0) {
             fprintf(gp, "%.6g %.6g\n", t, sqrt((double)ch->sim_paper[k].avar));
-        } else if (what == 2 && ch->have_sim_fit && ch->sim_fit[k].terms > 0u) {
+            np++;
+        } else if (what == 2 && ch->have_sim_fit && ch->sim_fit[k].terms > 0u && (double)ch->sim_fit[k].avar > 0.0) {
             fprintf(gp, "%.6g %.6g\n", t, sqrt((double)ch->sim_fit[k].avar));
+            np++;
         } else if (what == 3 && ch->id_ok && ch->id.fit_ok) {
             fprintf(gp, "%.6g %.6g\n", t, sqrt(hx_noise_model_avar(&ch->id.fit, R->rate_hz, (double)r->tau)));
+            np++;
         }
     }
     fprintf(gp, "EOD\n");
+    return np;
 }
 
 static int write_plot(const run_t *R, const char *path)
@@ -738,23 +746,29 @@ static int write_plot(const run_t *R, const char *path)
     fprintf(p.gp, "set logscale xy\nset format y '%%.0e'\nset key bottom left font ',8'\nset xlabel 'tau [s]'\n");
     for (i = 0; i < R->nch; i++) {
         const chan_t *ch = &R->ch[i];
-        plot_block(p.gp, "m", R, ch, 0);
-        plot_block(p.gp, "sp", R, ch, 1);
-        plot_block(p.gp, "sf", R, ch, 2);
-        plot_block(p.gp, "af", R, ch, 3);
+        const int nm = plot_block(p.gp, "m", R, ch, 0);
+        const int nsp = plot_block(p.gp, "sp", R, ch, 1);
+        const int nsf = plot_block(p.gp, "sf", R, ch, 2);
+        const int naf = plot_block(p.gp, "af", R, ch, 3);
         fprintf(p.gp, "set title '%s'\nset ylabel 'ADEV [%s]'\n", ch->label, ch->unit);
+        if (nm == 0) {
+            /* nothing positive to draw on log axes: an empty panel that says so */
+            fprintf(p.gp, "set label 1 'not enough data' at graph 0.5,0.5 center\nset xrange [0.01:1]\n"
+                          "set yrange [0.01:1]\nplot 10 notitle\nunset label 1\nset autoscale\n");
+            continue;
+        }
         fprintf(p.gp, "plot $m using 1:2:3:4 with yerrorbars pt 7 ps 0.5 lc rgb '#c00000' title 'measured (OADEV, "
                       "%.3g CI)'",
                 R->conf);
-        if (ch->have_sim_paper) {
+        if (nsp > 0) {
             fprintf(p.gp, ", $sp using 1:2 with linespoints lw 1.5 pt 6 ps 0.5 lc rgb '#0050c0' title 'simulated, "
                           "paper id.'");
         }
-        if (ch->have_sim_fit) {
+        if (nsf > 0) {
             fprintf(p.gp, ", $sf using 1:2 with linespoints lw 1.5 pt 4 ps 0.5 lc rgb '#008000' title 'simulated, "
                           "corrected id.'");
         }
-        if (ch->id_ok && ch->id.fit_ok) {
+        if (naf > 0) {
             fprintf(p.gp, ", $af using 1:2 with lines dt 2 lc rgb '#404040' title 'corrected model (analytic)'");
         }
         fprintf(p.gp, "\n");
@@ -789,8 +803,9 @@ static int write_profile(const run_t *R, const char *path, const char *name)
         const double si = 1.0 / ch->scale; /* display -> SI */
         const int k = ch->src;
         if (!ch->id_ok || !ch->id.fit_ok) {
-            hx_error(CMD, "%s: no corrected identification for %s; profile not written", path, ch->name);
-            return -1;
+            hx_error(CMD, "%s: no corrected identification for %s (too little data?); profile not written", path,
+                     ch->name);
+            return -2;
         }
         if (k < 3) {
             p.accel_noise_mps2_rthz[k] = (fnav_real_t)(ch->id.fit.white * si);
@@ -812,7 +827,7 @@ static int write_profile(const run_t *R, const char *path, const char *name)
     }
     if (fnav_profile_validate(&p) != FNAV_OK) {
         hx_error(CMD, "%s: identified parameters not all positive and finite; profile not written", path);
-        return -1;
+        return -2;
     }
     snprintf(comment, sizeof comment,
              "identified by `harness allan` from %s (%lu samples at %g Hz)\n"
@@ -1052,8 +1067,9 @@ int hx_cmd_allan(int argc, char **argv)
         } else {
             base_name(path, name, sizeof name);
         }
-        if (write_profile(R, hx_arg(&a, "--profile"), name) != 0) {
-            exit_code = exit_code == HX_EXIT_OK ? HX_EXIT_IO : exit_code;
+        rc = write_profile(R, hx_arg(&a, "--profile"), name);
+        if (rc != 0 && exit_code == HX_EXIT_OK) {
+            exit_code = rc == -2 ? HX_EXIT_DATA : HX_EXIT_IO;
         }
     }
     free_run(R);

@@ -35,6 +35,11 @@ grep -q "bad.txt:3001: not a number" "$T/err" && ok "bad line reported with its 
 [ "$(grep -c '^series,' "$T/bad.csv")" -gt 10 ] && ok "table written before the error" || bad "table before error"
 expect 3 "unwritable output" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --quiet --out /nonexistent/dir/t.csv
 
+# a log too short for an identification: tables and plot still written, no profile, exit 1
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 10; i++) printf "%.2f,0.1,0.2,9.8,0.01,0.02,0.0%d\n", i / 100, i }' >"$T/tiny.csv"
+expect 1 "too short for a profile" "$H" allan "$T/tiny.csv" --quiet --profile "$T/tiny.profile" --plot "$T/tiny.png"
+[ -s "$T/tiny.png" ] && [ ! -e "$T/tiny.profile" ] && ok "plot without profile" || bad "tiny outputs"
+
 P=$(data allan_reference/phasedat/PHASE.DAT)
 if [ -n "$P" ]; then
     expect 0 "PHASE.DAT as phase" "$H" allan --series "$P" --phase --rate 1 --per-octave 1 --no-sim \
