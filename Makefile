@@ -10,6 +10,9 @@
 #   make deps       install the Debian packages (scripts/bootstrap.sh)
 #   make clean
 #
+# The core calls the port's fnav_port_assert_failed(), which lives in libhx.a
+# (port/linux): libhx.a is named again after libfootnav.a on link lines.
+#
 # Sources are discovered: src/*.c is the core, harness/*.c + port/linux/*.c the
 # Linux tool, tests/test_*.c the CMocka suites, tests/bench_*.c the benchmarks,
 # tests/cli/test_*.sh the command-line tests.
@@ -75,11 +78,11 @@ $(HXLIB): $(HX_OBJ)
 
 $(HARNESS): $(BUILD)/obj/harness/main.o $(HXLIB) $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(SAN) -o $@ $^ $(LDLIBS_HOST)
+	$(CC) $(SAN) -o $@ $^ $(HXLIB) $(LDLIBS_HOST)
 
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TESTHELP_OBJ) $(HXLIB) $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(SAN) -o $@ $^ $(LDLIBS_TEST)
+	$(CC) $(SAN) -o $@ $^ $(HXLIB) $(LDLIBS_TEST)
 
 # The core must not allocate, print or exit (checked on every build).
 nm-check: $(LIB)
