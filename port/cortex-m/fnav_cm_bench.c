@@ -146,6 +146,62 @@ static void drain_output(void)
     g_out_n = 0u;
 }
 
+/* The Allan and Welch results at the end, as float32 bit patterns, so that
+ * the comparison with the host covers them too. */
+static void print_estimates(void)
+{
+    fnav_cm_line_t l;
+    fnav_cm_line_start(&l);
+#if FNAV_CM_WITH_ALLAN
+    {
+        unsigned ch;
+        size_t i;
+        for (ch = 0; ch < FNAV_CM_ALLAN_CHANNELS; ch++) {
+            for (i = 0; i < fnav_allan_count(&g_app.est.allan[ch]); i++) {
+                fnav_allan_result_t r;
+                if (fnav_allan_get(&g_app.est.allan[ch], i, &r) != FNAV_OK || r.terms == 0u) {
+                    continue;
+                }
+                fnav_cm_line_str(&l, "allan ");
+                fnav_cm_line_u64(&l, ch);
+                fnav_cm_line_str(&l, " ");
+                fnav_cm_line_u64(&l, r.tau);
+                fnav_cm_line_str(&l, " ");
+                fnav_cm_line_u64(&l, r.terms);
+                fnav_cm_line_str(&l, " ");
+                fnav_cm_line_hex32(&l, f32_bits((float)r.avar));
+                fnav_cm_line_end(&l);
+            }
+        }
+    }
+#endif
+#if FNAV_CM_WITH_WELCH
+    {
+        static fnav_real_t psd[FNAV_WELCH_MAX_BINS];
+        unsigned ch;
+        uint32_t k;
+        for (ch = 0; ch < FNAV_CM_WELCH_CHANNELS; ch++) {
+            const fnav_welch_t *w = &g_app.est.welch[ch];
+            if (fnav_welch_get(w, psd, FNAV_WELCH_MAX_BINS) != FNAV_OK) {
+                continue;
+            }
+            for (k = 0; k < fnav_welch_bins(w); k++) {
+                fnav_cm_line_str(&l, "welch ");
+                fnav_cm_line_u64(&l, ch);
+                fnav_cm_line_str(&l, " ");
+                fnav_cm_line_u64(&l, k);
+                fnav_cm_line_str(&l, " ");
+                fnav_cm_line_u64(&l, fnav_welch_segments(w));
+                fnav_cm_line_str(&l, " ");
+                fnav_cm_line_hex32(&l, f32_bits((float)psd[k]));
+                fnav_cm_line_end(&l);
+            }
+        }
+    }
+#endif
+    (void)l;
+}
+
 /* ------------------------------------------------------------ profiling */
 
 #if defined(__arm__)
@@ -377,6 +433,14 @@ static void print_costs(uint64_t overhead10)
         fnav_cm_line_u64(&l, minus(ins10(p->min), overhead10) / 10u);
         fnav_cm_line_str(&l, " max ");
         fnav_cm_line_u64(&l, minus(ins10(p->max), overhead10) / 10u);
+        if ((i == FNAV_CM_PROF_ALLAN && (built & 2u)) || (i == FNAV_CM_PROF_WELCH && (built & 4u))) {
+            uint64_t ch = (i == FNAV_CM_PROF_ALLAN) ? FNAV_CM_ALLAN_CHANNELS : FNAV_CM_WELCH_CHANNELS;
+            fnav_cm_line_str(&l, "; per channel push: mean ");
+            fnav_cm_line_fix(&l, (int64_t)(mean10 / ch), 1u);
+            fnav_cm_line_str(&l, " (");
+            fnav_cm_line_u64(&l, ch);
+            fnav_cm_line_str(&l, " channels)");
+        }
         if ((i == FNAV_CM_PROF_NAV && !(built & 1u)) || (i == FNAV_CM_PROF_ALLAN && !(built & 2u)) ||
             (i == FNAV_CM_PROF_WELCH && !(built & 4u))) {
             fnav_cm_line_str(&l, ")");
@@ -483,6 +547,7 @@ int main(void)
     if (g_sink.nav_n > 0u) {
         print_nav("nav-final", g_sink.nav_n - 1u, &g_sink.nav_last);
     }
+    print_estimates();
     fnav_cm_line_str(&l, "stream: samples ");
     fnav_cm_line_u64(&l, processed);
     fnav_cm_line_str(&l, " overruns ");

@@ -15,16 +15,22 @@
 #define FNAV_CM_WITH_NAV 0
 #endif
 
-/** 1: the main loop pushes samples into streaming Allan estimators
- *  (fnav_allan.h). 0 until that module is part of the core. */
+/** 1 (default): the main loop pushes samples into streaming Allan
+ *  estimators (fnav_allan.h), one per channel. */
 #ifndef FNAV_CM_WITH_ALLAN
-#define FNAV_CM_WITH_ALLAN 0
+#define FNAV_CM_WITH_ALLAN 1
 #endif
 
-/** 1: the main loop pushes samples into streaming Welch estimators
- *  (fnav_welch.h). 0 until that module is part of the core. */
+/** 1 (default): the main loop pushes samples into streaming Welch
+ *  estimators (fnav_welch.h), one per channel. */
 #ifndef FNAV_CM_WITH_WELCH
-#define FNAV_CM_WITH_WELCH 0
+#define FNAV_CM_WITH_WELCH 1
+#endif
+
+/** Allan grid density: points per octave of tau (1, 2 or 4; at most
+ *  FNAV_ALLAN_MAX_POINTS points in all, fnav_allan_grid()). */
+#ifndef FNAV_CM_ALLAN_PER_OCTAVE
+#define FNAV_CM_ALLAN_PER_OCTAVE 1u
 #endif
 
 /** Channels fed to the Allan estimators: the first N of

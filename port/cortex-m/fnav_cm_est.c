@@ -21,9 +21,14 @@ fnav_status_t fnav_cm_est_init(fnav_cm_est_t *e, fnav_real_t rate_hz, fnav_real_
 #endif
 #if FNAV_CM_WITH_ALLAN
     {
+        uint32_t grid[FNAV_ALLAN_MAX_POINTS];
+        fnav_allan_config_t ac;
         unsigned ch;
+        /* octaves tau = 1, 2, 4, ... up to the largest the options allow */
+        ac.tau = grid;
+        ac.n_tau = fnav_allan_grid(grid, FNAV_ALLAN_MAX_POINTS, (uint32_t)FNAV_ALLAN_TAU_MAX, FNAV_CM_ALLAN_PER_OCTAVE);
         for (ch = 0; ch < FNAV_CM_ALLAN_CHANNELS; ch++) {
-            st = fnav_allan_init(&e->allan[ch], NULL); /* default grid: 2 points per octave */
+            st = fnav_allan_init(&e->allan[ch], &ac);
             if (st != FNAV_OK) {
                 return st;
             }

@@ -14,6 +14,10 @@ host (make firmware-bench).
   may differ in the last bit, and the filter can amplify that. Defaults:
   1 mm in position, 1e-5 rad in attitude. A CRC-32 over
   every NAV frame ("navcrc:") tells whether the whole output is bit-identical.
+- the Allan variances and Welch PSD bins at the end of the slice ("allan",
+  "welch" lines, float32 bit patterns) must agree within --est-rel-tol
+  (default 1e-4 relative; they are sums of many float terms, so a last-bit
+  difference in one input could move the last bits of the result).
 - with --replay, every navigation output of the emulator is also matched by
   its time with the row of `harness replay --out` on the same slice (the
   host float32 result of the harness, written with 6 decimals) and compared
@@ -28,6 +32,38 @@ import sys
 
 def f32(h):
     return struct.unpack('<f', struct.pack('<I', int(h, 16)))[0]
+
+
+def load_estimates(path):
+    """Allan variances and Welch PSD bins: key -> float32 value."""
+    est = {}
+    for line in open(path):
+        w = line.split()
+        if w and w[0] in ('allan', 'welch'):
+            est[(w[0], int(w[1]), int(w[2]), int(w[3]))] = f32(w[4])
+    return est
+
+
+def compare_estimates(emu, host, rel_tol):
+    if not emu and not host:
+        return True
+    if set(emu) != set(host):
+        print('compare: error: different Allan/Welch points on the emulator (%d) and the host (%d)'
+              % (len(emu), len(host)))
+        return False
+    worst, same, bad = 0.0, 0, 0
+    for k, e in emu.items():
+        h = host[k]
+        same += e == h
+        d = abs(e - h) / max(abs(h), 1e-30)
+        worst = max(worst, d)
+    for kind in ('allan', 'welch'):
+        n = sum(1 for k in emu if k[0] == kind)
+        if n:
+            print('compare: %s: %d values, %d bit-identical' % (kind, n, sum(1 for k in emu if k[0] == kind
+                                                                               and emu[k] == host[k])))
+    print('compare: Allan/Welch largest relative difference %.3g (tolerance %.3g)' % (worst, rel_tol))
+    return worst <= rel_tol
 
 
 def load(path):
@@ -86,6 +122,7 @@ def main():
     ap.add_argument('--pos-tol', type=float, default=1e-3)
     ap.add_argument('--att-tol', type=float, default=1e-5)
     ap.add_argument('--replay')
+    ap.add_argument('--est-rel-tol', type=float, default=1e-4)
     a = ap.parse_args()
     es, en, ec, et0 = load(a.emu)
     hs, hn, hc, _ = load(a.host)
@@ -129,6 +166,8 @@ def main():
     else:
         print('compare: no navigation outputs (the navigation filter is not built into the image)')
     if a.replay is not None and not compare_replay(a.replay, en, et0, a.pos_tol, a.att_tol):
+        ok = False
+    if not compare_estimates(load_estimates(a.emu), load_estimates(a.host), a.est_rel_tol):
         ok = False
     print('compare: %s' % ('ok' if ok else 'FAILED'))
     return 0 if ok else 1
