@@ -71,13 +71,15 @@ $(HXLIB): $(HX_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
+# The core calls the port's fnav_port_assert_failed (in libhx via
+# port/linux), so libhx is named again after the core library.
 $(HARNESS): $(BUILD)/obj/harness/main.o $(HXLIB) $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(SAN) -o $@ $^ $(LDLIBS_HOST)
+	$(CC) $(SAN) -o $@ $^ $(HXLIB) $(LDLIBS_HOST)
 
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TESTHELP_OBJ) $(HXLIB) $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(SAN) -o $@ $^ $(LDLIBS_TEST)
+	$(CC) $(SAN) -o $@ $^ $(HXLIB) $(LDLIBS_TEST)
 
 # The core must not allocate, print or exit (checked on every build).
 nm-check: $(LIB)
