@@ -1,0 +1,543 @@
+/* 15-state unscented Kalman filter (USQUE-style attitude error), ZUPT/ZARU
+ * updates in Joseph form, AR(1) biases (fnav_ukf.h). */
+#include "footnav/fnav_ukf.h"
+#include "footnav/fnav_port.h"
+
+#define N FNAV_UKF_N
+
+/* NavChip noise densities of paper Table IV, converted (tau in samples at
+ * 200 Hz -> s; deg -> rad). fnav_nav normally fills these from a profile. */
+const fnav_ukf_config_t fnav_ukf_config_default = {
+    { FNAV_R(3.3e-3) * FNAV_DEG2RAD, FNAV_R(3.7e-3) * FNAV_DEG2RAD, FNAV_R(4.2e-3) * FNAV_DEG2RAD },
+    { FNAV_R(7.4e-4), FNAV_R(6.4e-4), FNAV_R(5.0e-4) },
+    FNAV_BIAS_AR1,
+    { FNAV_R(5.0), FNAV_R(5.0), FNAV_R(50.0) },
+    { FNAV_R(10.0), FNAV_R(10.0), FNAV_R(10.0) },
+    { FNAV_R(8.5e-5) * FNAV_DEG2RAD, FNAV_R(6.4e-5) * FNAV_DEG2RAD, FNAV_R(3.4e-5) * FNAV_DEG2RAD },
+    { FNAV_R(1.3e-5), FNAV_R(9.7e-6), FNAV_R(7.3e-6) },
+    { FNAV_R(9.80665), 1 },
+    FNAV_R(1.0), FNAV_R(2.0), FNAV_R(0.0),
+    FNAV_R(0.01),
+    FNAV_R(0.01),
+    1
+};
+
+static int finite_nonneg(fnav_real_t x)
+{
+    return fnav_isfinite(x) && x >= FNAV_R(0.0);
+}
+
+static int finite_pos(fnav_real_t x)
+{
+    return fnav_isfinite(x) && x > FNAV_R(0.0);
+}
+
+fnav_quat_t fnav_ukf_grp_to_quat(fnav_vec3_t p)
+{
+    /* Crassidis & Markley 2003, eq. (33) with a = 1, f = 4 */
+    fnav_real_t s = fnav_vec3_dot(p, p);
+    fnav_real_t inv = FNAV_R(1.0) / (FNAV_R(16.0) + s);
+    fnav_real_t w = (FNAV_R(16.0) - s) * inv;
+    fnav_real_t k = FNAV_R(8.0) * inv;
+    return fnav_quat(w, k * p.v[0], k * p.v[1], k * p.v[2]);
+}
+
+fnav_vec3_t fnav_ukf_quat_to_grp(fnav_quat_t q)
+{
+    /* eq. (32) with a = 1, f = 4: p = 4 q_v / (1 + q_w), q_w >= 0 */
+    fnav_real_t k;
+    if (q.q[0] < FNAV_R(0.0)) {
+        q = fnav_quat(-q.q[0], -q.q[1], -q.q[2], -q.q[3]);
+    }
+    k = FNAV_R(4.0) / (FNAV_R(1.0) + q.q[0]);
+    return fnav_vec3(k * q.q[1], k * q.q[2], k * q.q[3]);
+}
+
+/* q' = dq(a) * q, renormalised with one Newton step. */
+static fnav_quat_t apply_att(fnav_quat_t q, fnav_vec3_t a)
+{
+    fnav_quat_t r = fnav_quat_mul(fnav_ukf_grp_to_quat(a), q);
+    fnav_real_t n2 = r.q[0] * r.q[0] + r.q[1] * r.q[1] + r.q[2] * r.q[2] + r.q[3] * r.q[3];
+    n2 = FNAV_R(0.5) * (FNAV_R(3.0) - n2);
+    return fnav_quat(r.q[0] * n2, r.q[1] * n2, r.q[2] * n2, r.q[3] * n2);
+}
+
+fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
+{
+    size_t b;
+    unsigned char *p = (unsigned char *)f;
+    int i, n;
+    fnav_real_t lambda;
+    if (f == NULL || cfg == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (cfg->bias_model != FNAV_BIAS_AR1 && cfg->bias_model != FNAV_BIAS_OFF) {
+        return FNAV_E_CONFIG;
+    }
+    for (i = 0; i < 3; i++) {
+        if (!finite_nonneg(cfg->gyro_noise_rps_rthz[i]) || !finite_nonneg(cfg->accel_noise_mps2_rthz[i])) {
+            return FNAV_E_CONFIG;
+        }
+        if (cfg->bias_model == FNAV_BIAS_AR1 &&
+            (!finite_pos(cfg->gyro_tau_s[i]) || !finite_pos(cfg->accel_tau_s[i]) ||
+             !finite_pos(cfg->gyro_bias_sigma_rps[i]) || !finite_pos(cfg->accel_bias_sigma_mps2[i]))) {
+            return FNAV_E_CONFIG;
+        }
+    }
+    n = cfg->bias_model == FNAV_BIAS_AR1 ? N : 9;
+    if (!finite_pos(cfg->alpha) || !fnav_isfinite(cfg->beta) || !fnav_isfinite(cfg->kappa) ||
+        !finite_pos(cfg->zupt_sigma_mps) || !finite_pos(cfg->zaru_sigma_rps) ||
+        !finite_pos(cfg->strapdown.gravity_mps2)) {
+        return FNAV_E_CONFIG;
+    }
+    lambda = cfg->alpha * cfg->alpha * ((fnav_real_t)n + cfg->kappa) - (fnav_real_t)n;
+    if (!((fnav_real_t)n + lambda > FNAV_R(0.0))) {
+        return FNAV_E_CONFIG;
+    }
+    for (b = 0; b < sizeof *f; b++) {
+        p[b] = 0;
+    }
+    f->cfg = *cfg;
+    f->n_act = n;
+    f->gamma = fnav_sqrt((fnav_real_t)n + lambda);
+    f->w0m = lambda / ((fnav_real_t)n + lambda);
+    f->w0c = f->w0m + FNAV_R(1.0) - cfg->alpha * cfg->alpha + cfg->beta;
+    f->wi = FNAV_R(0.5) / ((fnav_real_t)n + lambda);
+    f->q_nb = fnav_quat_identity();
+    return FNAV_OK;
+}
+
+fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps, fnav_vec3_t ba_mps2,
+                             const fnav_ukf_init_sd_t *sd)
+{
+    int i, j;
+    if (f == NULL || sd == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!fnav_vec3_isfinite(bg_rps) || !fnav_vec3_isfinite(ba_mps2) || !fnav_isfinite(q_nb.q[0]) ||
+        !fnav_isfinite(q_nb.q[1]) || !fnav_isfinite(q_nb.q[2]) || !fnav_isfinite(q_nb.q[3])) {
+        return FNAV_E_NANINF;
+    }
+    for (i = 0; i < 3; i++) {
+        if (!finite_pos(sd->att_rad[i]) || !finite_pos(sd->gyro_bias_rps[i]) || !finite_pos(sd->accel_bias_mps2[i])) {
+            return FNAV_E_ARG;
+        }
+    }
+    if (!finite_pos(sd->vel_mps) || !finite_pos(sd->pos_m)) {
+        return FNAV_E_ARG;
+    }
+    f->q_nb = fnav_quat_normalize(q_nb);
+    f->vel_mps = fnav_vec3_zero();
+    f->pos_m = fnav_vec3_zero();
+    f->bg_rps = bg_rps;
+    f->ba_mps2 = ba_mps2;
+    f->bg0_rps = bg_rps;
+    f->ba0_mps2 = ba_mps2;
+    f->hist.valid = 0;
+    for (i = 0; i < N; i++) {
+        for (j = 0; j < N; j++) {
+            f->P[i][j] = FNAV_R(0.0);
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        f->P[FNAV_UKF_V + i][FNAV_UKF_V + i] = sd->vel_mps * sd->vel_mps;
+        f->P[FNAV_UKF_P + i][FNAV_UKF_P + i] = sd->pos_m * sd->pos_m;
+        f->P[FNAV_UKF_A + i][FNAV_UKF_A + i] = sd->att_rad[i] * sd->att_rad[i];
+        if (f->n_act == N) {
+            f->P[FNAV_UKF_BG + i][FNAV_UKF_BG + i] = sd->gyro_bias_rps[i] * sd->gyro_bias_rps[i];
+            f->P[FNAV_UKF_BA + i][FNAV_UKF_BA + i] = sd->accel_bias_mps2[i] * sd->accel_bias_mps2[i];
+        }
+    }
+    f->started = 1;
+    return FNAV_OK;
+}
+
+/* Upper-triangular Cholesky factor, A = U U^T, over the leading n states;
+ * reads (only) the upper triangle of A. Column j of U is non-zero in rows 0..j.
+ * Returns 0, or -1 at the first pivot that is not clearly positive. */
+static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], int n)
+{
+    int i, j, k;
+    for (j = n - 1; j >= 0; j--) {
+        fnav_real_t d = A[j][j], inv;
+        for (k = j + 1; k < n; k++) {
+            d -= U[j][k] * U[j][k];
+        }
+        if (!(d > FNAV_REAL_EPSILON * A[j][j]) || !fnav_isfinite(d)) {
+            return -1;
+        }
+        d = fnav_sqrt(d);
+        U[j][j] = d;
+        inv = FNAV_R(1.0) / d;
+        for (i = 0; i < j; i++) {
+            fnav_real_t s = A[i][j];
+            for (k = j + 1; k < n; k++) {
+                s -= U[i][k] * U[j][k];
+            }
+            U[i][j] = s * inv;
+        }
+        for (i = j + 1; i < n; i++) {
+            U[i][j] = FNAV_R(0.0);
+        }
+    }
+    return 0;
+}
+
+/* Guarded factorisation: 0 ok, 1 ok after jitter, 2 after a reset. */
+static int factor(fnav_ukf_t *f)
+{
+    int n = f->n_act, i, j;
+    if (chol_upper(f->P, f->U, n) == 0) {
+        return 0;
+    }
+    for (i = 0; i < n; i++) {
+        for (j = i + 1; j < n; j++) {
+            fnav_real_t s = FNAV_R(0.5) * (f->P[i][j] + f->P[j][i]);
+            f->P[i][j] = s;
+            f->P[j][i] = s;
+        }
+        f->P[i][i] += FNAV_R(1.0e-6) * f->P[i][i];
+    }
+    if (chol_upper(f->P, f->U, n) == 0) {
+        f->health.chol_jitter++;
+        return 1;
+    }
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++) {
+            if (i != j) {
+                f->P[i][j] = FNAV_R(0.0);
+            }
+        }
+        if (!(f->P[i][i] > FNAV_R(1.0e-20)) || !fnav_isfinite(f->P[i][i])) {
+            f->P[i][i] = FNAV_R(1.0e-20);
+        }
+    }
+    f->health.chol_reset++;
+    if (chol_upper(f->P, f->U, n) != 0) {
+        /* a positive diagonal always factors; keep U consistent anyway */
+        for (i = 0; i < n; i++) {
+            for (j = 0; j < n; j++) {
+                f->U[i][j] = (i == j) ? fnav_sqrt(f->P[i][i]) : FNAV_R(0.0);
+            }
+        }
+    }
+    return 2;
+}
+
+static int state_finite(const fnav_strapdown_state_t *x)
+{
+    return fnav_vec3_isfinite(x->vel_mps) && fnav_vec3_isfinite(x->pos_m) && fnav_isfinite(x->q_nb.q[0]) &&
+           fnav_isfinite(x->q_nb.q[1]) && fnav_isfinite(x->q_nb.q[2]) && fnav_isfinite(x->q_nb.q[3]);
+}
+
+/* S (upper) += w d d^T over the leading nnz entries; m += w d. */
+static void accumulate(fnav_real_t S[N][N], fnav_real_t m[N], const fnav_real_t d[N], int nnz, fnav_real_t w)
+{
+    int a, b;
+    for (a = 0; a < nnz; a++) {
+        fnav_real_t wd = w * d[a];
+        m[a] += wd;
+        for (b = a; b < nnz; b++) {
+            S[a][b] += wd * d[b];
+        }
+    }
+}
+
+/* 3x3 block of C diag(s2) C^T dt added to the upper triangle of S at o. */
+static void add_rotated_noise(fnav_real_t S[N][N], int o, fnav_mat3_t C, const fnav_real_t dens[3], fnav_real_t dt)
+{
+    int i, j, k;
+    for (i = 0; i < 3; i++) {
+        for (j = i; j < 3; j++) {
+            fnav_real_t s = FNAV_R(0.0);
+            for (k = 0; k < 3; k++) {
+                s += C.m[i][k] * C.m[j][k] * dens[k] * dens[k];
+            }
+            S[o + i][o + j] += s * dt;
+        }
+    }
+}
+
+fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t accel_mps2, fnav_real_t dt_s)
+{
+    const fnav_ukf_config_t *c;
+    fnav_strapdown_incr_t inc;
+    fnav_strapdown_state_t x0, xi;
+    fnav_quat_t q0inv;
+    fnav_real_t m[N], d[N], dx[N], cb[6], qb[6];
+    fnav_real_t kmm;
+    int n, i, j, s, fr;
+    if (f == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!f->started) {
+        return FNAV_E_STATE;
+    }
+    if (!fnav_vec3_isfinite(gyro_rps) || !fnav_vec3_isfinite(accel_mps2) || !fnav_isfinite(dt_s)) {
+        f->health.nan_inputs++;
+        return FNAV_E_NANINF;
+    }
+    if (dt_s < FNAV_R(0.0)) {
+        return FNAV_E_TIME;
+    }
+    if (dt_s == FNAV_R(0.0)) {
+        return FNAV_OK;
+    }
+    c = &f->cfg;
+    n = f->n_act;
+    fr = factor(f);
+
+    fnav_strapdown_increments(&c->strapdown, &f->hist, fnav_vec3_sub(gyro_rps, f->bg_rps),
+                              fnav_vec3_sub(accel_mps2, f->ba_mps2), dt_s, &inc);
+    x0.q_nb = f->q_nb;
+    x0.vel_mps = f->vel_mps;
+    x0.pos_m = f->pos_m;
+    fnav_strapdown_propagate(&c->strapdown, &x0, &inc, fnav_vec3_zero(), fnav_vec3_zero());
+    q0inv = fnav_quat_conj(x0.q_nb);
+
+    /* AR(1) coefficients c = exp(-dt/tau) and driving variances
+     * sigma^2 (1 - exp(-2 dt/tau)) (paper eqs. (3), (4) with c = e^(-1/tau)
+     * for dt = one sample); the model off keeps the biases fixed. */
+    for (i = 0; i < 3; i++) {
+        if (c->bias_model == FNAV_BIAS_AR1) {
+            cb[i] = fnav_exp(-dt_s / c->gyro_tau_s[i]);
+            cb[3 + i] = fnav_exp(-dt_s / c->accel_tau_s[i]);
+            qb[i] = c->gyro_bias_sigma_rps[i] * c->gyro_bias_sigma_rps[i] * (FNAV_R(1.0) - cb[i] * cb[i]);
+            qb[3 + i] = c->accel_bias_sigma_mps2[i] * c->accel_bias_sigma_mps2[i] * (FNAV_R(1.0) - cb[3 + i] * cb[3 + i]);
+        } else {
+            cb[i] = cb[3 + i] = FNAV_R(1.0);
+            qb[i] = qb[3 + i] = FNAV_R(0.0);
+        }
+    }
+
+    for (i = 0; i < N; i++) {
+        m[i] = FNAV_R(0.0);
+        for (j = i; j < N; j++) {
+            f->S[i][j] = FNAV_R(0.0);
+        }
+    }
+    for (j = 0; j < n; j++) {
+        for (s = 0; s < 2; s++) {
+            fnav_real_t g = s == 0 ? f->gamma : -f->gamma;
+            for (i = 0; i < N; i++) {
+                dx[i] = (i <= j) ? g * f->U[i][j] : FNAV_R(0.0);
+            }
+            if (c->closed_form && j < FNAV_UKF_A) {
+                /* only velocity and position differ: exact linear propagation */
+                for (i = 0; i < 3; i++) {
+                    d[FNAV_UKF_V + i] = dx[FNAV_UKF_V + i];
+                    d[FNAV_UKF_P + i] = dx[FNAV_UKF_P + i] + dx[FNAV_UKF_V + i] * dt_s;
+                }
+                accumulate(f->S, m, d, 6, f->wi);
+                continue;
+            }
+            xi.q_nb = apply_att(f->q_nb, fnav_vec3_from(&dx[FNAV_UKF_A]));
+            xi.vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&dx[FNAV_UKF_V]));
+            xi.pos_m = fnav_vec3_add(f->pos_m, fnav_vec3_from(&dx[FNAV_UKF_P]));
+            fnav_strapdown_propagate(&c->strapdown, &xi, &inc, fnav_vec3_scale(fnav_vec3_from(&dx[FNAV_UKF_BG]), -dt_s),
+                                     fnav_vec3_scale(fnav_vec3_from(&dx[FNAV_UKF_BA]), -dt_s));
+            {
+                fnav_vec3_t dv = fnav_vec3_sub(xi.vel_mps, x0.vel_mps);
+                fnav_vec3_t dp = fnav_vec3_sub(xi.pos_m, x0.pos_m);
+                fnav_vec3_t da = fnav_ukf_quat_to_grp(fnav_quat_mul(xi.q_nb, q0inv));
+                for (i = 0; i < 3; i++) {
+                    d[FNAV_UKF_V + i] = dv.v[i];
+                    d[FNAV_UKF_P + i] = dp.v[i];
+                    d[FNAV_UKF_A + i] = da.v[i];
+                    d[FNAV_UKF_BG + i] = cb[i] * dx[FNAV_UKF_BG + i];
+                    d[FNAV_UKF_BA + i] = cb[3 + i] * dx[FNAV_UKF_BA + i];
+                }
+            }
+            accumulate(f->S, m, d, n, f->wi);
+        }
+    }
+    /* With the propagated centre as reference (D_0 = 0) and the mean
+     * m = sum_i W_i D_i, the scatter sum_i Wc_i (D_i - m)(D_i - m)^T equals
+     * S - 2 m m^T + (1 - W0m) m m^T + W0c m m^T = S + (beta - alpha^2) m m^T,
+     * S = sum_{i>0} W_i D_i D_i^T; with beta >= alpha^2 every term is PSD. */
+    kmm = c->beta - c->alpha * c->alpha;
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
+            f->S[i][j] += kmm * m[i] * m[j];
+        }
+    }
+    {
+        fnav_mat3_t C = fnav_quat_to_dcm(x0.q_nb);
+        add_rotated_noise(f->S, FNAV_UKF_V, C, c->accel_noise_mps2_rthz, dt_s);
+        add_rotated_noise(f->S, FNAV_UKF_A, C, c->gyro_noise_rps_rthz, dt_s);
+    }
+    if (n == N) {
+        for (i = 0; i < 3; i++) {
+            f->S[FNAV_UKF_BG + i][FNAV_UKF_BG + i] += qb[i];
+            f->S[FNAV_UKF_BA + i][FNAV_UKF_BA + i] += qb[3 + i];
+        }
+    }
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
+            if (!fnav_isfinite(f->S[i][j])) {
+                f->health.diverged++;
+                return FNAV_E_DIVERGED;
+            }
+        }
+    }
+    /* fold the mean into the nominal state */
+    x0.q_nb = apply_att(x0.q_nb, fnav_vec3_from(&m[FNAV_UKF_A]));
+    x0.vel_mps = fnav_vec3_add(x0.vel_mps, fnav_vec3_from(&m[FNAV_UKF_V]));
+    x0.pos_m = fnav_vec3_add(x0.pos_m, fnav_vec3_from(&m[FNAV_UKF_P]));
+    if (!state_finite(&x0)) {
+        f->health.diverged++;
+        return FNAV_E_DIVERGED;
+    }
+    f->q_nb = x0.q_nb;
+    f->vel_mps = x0.vel_mps;
+    f->pos_m = x0.pos_m;
+    for (i = 0; i < 3; i++) {
+        f->bg_rps.v[i] = f->bg0_rps.v[i] + cb[i] * (f->bg_rps.v[i] - f->bg0_rps.v[i]);
+        f->ba_mps2.v[i] = f->ba0_mps2.v[i] + cb[3 + i] * (f->ba_mps2.v[i] - f->ba0_mps2.v[i]);
+    }
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
+            f->P[i][j] = f->S[i][j];
+            f->P[j][i] = f->S[i][j];
+        }
+    }
+    fnav_strapdown_hist_push(&f->hist, &inc);
+    f->health.predicts++;
+    return fr == 2 ? FNAV_E_DECOMP : FNAV_OK;
+}
+
+/* Linear update of the three states o..o+2 with innovation y and variance r2
+ * per axis, Joseph form: P' = (I - K H) P (I - K H)^T + K R K^T. */
+static fnav_status_t update3(fnav_ukf_t *f, int o, fnav_vec3_t y, fnav_real_t r2)
+{
+    int n = f->n_act, i, j, k;
+    fnav_real_t s[3][3], si[3][3], det, K[N][3], dx[N];
+    fnav_real_t (*AP)[N] = f->S; /* scratch */
+    fnav_real_t (*Pn)[N] = f->U; /* scratch */
+    if (o + 3 > n) {
+        return FNAV_OK;
+    }
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            s[i][j] = f->P[o + i][o + j] + (i == j ? r2 : FNAV_R(0.0));
+        }
+    }
+    /* inverse of the symmetric 3x3 innovation covariance (adjugate) */
+    si[0][0] = s[1][1] * s[2][2] - s[1][2] * s[2][1];
+    si[0][1] = s[0][2] * s[2][1] - s[0][1] * s[2][2];
+    si[0][2] = s[0][1] * s[1][2] - s[0][2] * s[1][1];
+    si[1][1] = s[0][0] * s[2][2] - s[0][2] * s[2][0];
+    si[1][2] = s[0][2] * s[1][0] - s[0][0] * s[1][2];
+    si[2][2] = s[0][0] * s[1][1] - s[0][1] * s[1][0];
+    det = s[0][0] * si[0][0] + s[0][1] * si[0][1] + s[0][2] * si[0][2];
+    if (!(det > FNAV_R(0.0)) || !fnav_isfinite(det) || !(si[0][0] > FNAV_R(0.0)) || !(si[2][2] > FNAV_R(0.0))) {
+        f->health.update_reject++;
+        return FNAV_E_DECOMP;
+    }
+    det = FNAV_R(1.0) / det;
+    si[1][0] = si[0][1];
+    si[2][0] = si[0][2];
+    si[2][1] = si[1][2];
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            si[i][j] *= det;
+        }
+    }
+    for (i = 0; i < n; i++) {
+        for (k = 0; k < 3; k++) {
+            K[i][k] = f->P[i][o] * si[0][k] + f->P[i][o + 1] * si[1][k] + f->P[i][o + 2] * si[2][k];
+        }
+        dx[i] = K[i][0] * y.v[0] + K[i][1] * y.v[1] + K[i][2] * y.v[2];
+    }
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++) {
+            AP[i][j] = f->P[i][j] - K[i][0] * f->P[o][j] - K[i][1] * f->P[o + 1][j] - K[i][2] * f->P[o + 2][j];
+        }
+    }
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
+            fnav_real_t v = AP[i][j] - AP[i][o] * K[j][0] - AP[i][o + 1] * K[j][1] - AP[i][o + 2] * K[j][2] +
+                            r2 * (K[i][0] * K[j][0] + K[i][1] * K[j][1] + K[i][2] * K[j][2]);
+            if (!fnav_isfinite(v)) {
+                f->health.diverged++;
+                return FNAV_E_DIVERGED;
+            }
+            Pn[i][j] = v;
+        }
+        if (!fnav_isfinite(dx[i])) {
+            f->health.diverged++;
+            return FNAV_E_DIVERGED;
+        }
+    }
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
+            f->P[i][j] = Pn[i][j];
+            f->P[j][i] = Pn[i][j];
+        }
+    }
+    f->vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&dx[FNAV_UKF_V]));
+    f->pos_m = fnav_vec3_add(f->pos_m, fnav_vec3_from(&dx[FNAV_UKF_P]));
+    f->q_nb = apply_att(f->q_nb, fnav_vec3_from(&dx[FNAV_UKF_A]));
+    if (n == N) {
+        f->bg_rps = fnav_vec3_add(f->bg_rps, fnav_vec3_from(&dx[FNAV_UKF_BG]));
+        f->ba_mps2 = fnav_vec3_add(f->ba_mps2, fnav_vec3_from(&dx[FNAV_UKF_BA]));
+    }
+    return FNAV_OK;
+}
+
+fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f)
+{
+    fnav_status_t st;
+    if (f == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!f->started) {
+        return FNAV_E_STATE;
+    }
+    st = update3(f, FNAV_UKF_V, fnav_vec3_scale(f->vel_mps, -FNAV_R(1.0)),
+                 f->cfg.zupt_sigma_mps * f->cfg.zupt_sigma_mps);
+    if (st == FNAV_OK) {
+        f->health.zupts++;
+    }
+    return st;
+}
+
+fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
+{
+    fnav_status_t st;
+    if (f == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!f->started) {
+        return FNAV_E_STATE;
+    }
+    if (!fnav_vec3_isfinite(gyro_rps)) {
+        f->health.nan_inputs++;
+        return FNAV_E_NANINF;
+    }
+    if (f->n_act < N) {
+        return FNAV_OK;
+    }
+    st = update3(f, FNAV_UKF_BG, fnav_vec3_sub(gyro_rps, f->bg_rps), f->cfg.zaru_sigma_rps * f->cfg.zaru_sigma_rps);
+    if (st == FNAV_OK) {
+        f->health.zarus++;
+    }
+    return st;
+}
+
+fnav_vec3_t fnav_ukf_euler(const fnav_ukf_t *f)
+{
+    return fnav_quat_to_euler(f->q_nb);
+}
+
+void fnav_ukf_p_diag(const fnav_ukf_t *f, fnav_real_t out[FNAV_UKF_N])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        out[i] = f->P[FNAV_UKF_A + i][FNAV_UKF_A + i];
+        out[3 + i] = f->P[FNAV_UKF_V + i][FNAV_UKF_V + i];
+        out[6 + i] = f->P[FNAV_UKF_P + i][FNAV_UKF_P + i];
+        out[9 + i] = f->P[FNAV_UKF_BG + i][FNAV_UKF_BG + i];
+        out[12 + i] = f->P[FNAV_UKF_BA + i][FNAV_UKF_BA + i];
+    }
+}
