@@ -71,6 +71,9 @@ static const param_t k_params[] = {
     { "accel_motion_noise", P_REAL, 1.0, "extra accel process noise, m/s^2/sqrt(Hz)" },
     { "gyro_motion_noise_dps", P_REAL, 3.14159265358979323846 / 180.0, "extra gyro process noise, deg/s/sqrt(Hz)" },
     { "zupt_sigma", P_REAL, 1.0, "ZUPT noise, m/s" },
+    { "lever", P_INT, 1.0, "estimate the rolling-foot lever 0/1 (ZUPT of the pivot)" },
+    { "lever_sd", P_REAL, 1.0, "initial lever sd, m" },
+    { "lever_rw", P_REAL, 1.0, "lever random walk, m/sqrt(s)" },
     { "zaru", P_INT, 1.0, "zero-angular-rate updates 0/1" },
     { "zaru_sigma_dps", P_REAL, 3.14159265358979323846 / 180.0, "ZARU noise, deg/s" },
     { "tilt_sd_deg", P_REAL, 3.14159265358979323846 / 180.0, "initial roll/pitch sd, deg" },
@@ -102,6 +105,9 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     if (strcmp(key, "accel_motion_noise") == 0) return &c->accel_motion_noise_mps2_rthz;
     if (strcmp(key, "gyro_motion_noise_dps") == 0) return &c->gyro_motion_noise_rps_rthz;
     if (strcmp(key, "zupt_sigma") == 0) return &c->zupt_sigma_mps;
+    if (strcmp(key, "lever") == 0) return &c->lever;
+    if (strcmp(key, "lever_sd") == 0) return &c->lever_sd_m;
+    if (strcmp(key, "lever_rw") == 0) return &c->lever_rw_m_rts;
     if (strcmp(key, "zaru") == 0) return &c->zaru;
     if (strcmp(key, "zaru_sigma_dps") == 0) return &c->zaru_sigma_rps;
     if (strcmp(key, "tilt_sd_deg") == 0) return &c->tilt_sd_rad;

@@ -23,6 +23,9 @@ const fnav_nav_config_t fnav_nav_config_default = {
     FNAV_R(0.02),       /* accel_motion_noise_mps2_rthz */
     FNAV_R(0.02) * D2R, /* gyro_motion_noise_rps_rthz */
     FNAV_R(0.01),       /* zupt_sigma_mps */
+    1,                  /* lever */
+    FNAV_R(0.1),        /* lever_sd_m */
+    FNAV_R(0.002),      /* lever_rw_m_rts */
     0,                  /* zaru */
     FNAV_R(0.01),       /* zaru_sigma_rps */
     FNAV_R(0.5) * D2R,  /* tilt_sd_rad */
@@ -55,6 +58,9 @@ static void ukf_config_from(const fnav_nav_config_t *c, fnav_ukf_config_t *u)
     u->zupt_sigma_mps = c->zupt_sigma_mps;
     u->zaru_sigma_rps = c->zaru_sigma_rps;
     u->closed_form = c->closed_form;
+    u->lever = c->lever;
+    u->lever_sd_m = c->lever_sd_m;
+    u->lever_rw_m_rts = c->lever_rw_m_rts;
 }
 
 fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
@@ -197,12 +203,13 @@ static void fill_frame(fnav_nav_t *nav, const fnav_stance_out_t *o, uint32_t fla
             fr->euler_rad[i] = e.v[i];
             fr->gyro_bias_rps[i] = u->bg_rps.v[i];
             fr->accel_bias_mps2[i] = u->ba_mps2.v[i];
+            fr->lever_m[i] = u->lever_m.v[i];
         }
         fnav_ukf_p_diag(u, fr->p_diag);
     } else {
         for (i = 0; i < 3; i++) {
             fr->pos_m[i] = fr->vel_mps[i] = fr->euler_rad[i] = FNAV_R(0.0);
-            fr->gyro_bias_rps[i] = fr->accel_bias_mps2[i] = FNAV_R(0.0);
+            fr->gyro_bias_rps[i] = fr->accel_bias_mps2[i] = fr->lever_m[i] = FNAV_R(0.0);
         }
         for (i = 0; i < FNAV_UKF_N; i++) {
             fr->p_diag[i] = FNAV_R(0.0);
@@ -269,7 +276,7 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
         st = fnav_ukf_predict(&nav->ukf, fnav_vec3_from(s->gyro_rps), fnav_vec3_from(s->accel_mps2), dt_used);
         (void)st; /* problems are counted in the UKF's health */
         if (o->stance) {
-            if (fnav_ukf_zupt(&nav->ukf) == FNAV_OK) {
+            if (fnav_ukf_zupt(&nav->ukf, fnav_vec3_from(s->gyro_rps)) == FNAV_OK) {
                 flags |= FNAV_FRAME_ZUPT;
             }
             if (nav->cfg.zaru) {

@@ -3,7 +3,7 @@
 #include "footnav/fnav_ukf.h"
 #include "footnav/fnav_port.h"
 
-#define N FNAV_UKF_N
+#define N FNAV_UKF_NMAX
 
 /* NavChip noise densities of paper Table IV, converted (tau in samples at
  * 200 Hz -> s; deg -> rad). fnav_nav normally fills these from a profile. */
@@ -19,7 +19,10 @@ const fnav_ukf_config_t fnav_ukf_config_default = {
     FNAV_R(1.0), FNAV_R(2.0), FNAV_R(0.0),
     FNAV_R(0.01),
     FNAV_R(0.01),
-    1
+    1,
+    0,
+    FNAV_R(0.1),
+    FNAV_R(0.002)
 };
 
 static int finite_nonneg(fnav_real_t x)
@@ -84,12 +87,13 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
             return FNAV_E_CONFIG;
         }
     }
-    n = cfg->bias_model == FNAV_BIAS_AR1 ? N : 9;
     if (!finite_pos(cfg->alpha) || !fnav_isfinite(cfg->beta) || !fnav_isfinite(cfg->kappa) ||
         !finite_pos(cfg->zupt_sigma_mps) || !finite_pos(cfg->zaru_sigma_rps) ||
-        !finite_pos(cfg->strapdown.gravity_mps2)) {
+        !finite_pos(cfg->strapdown.gravity_mps2) || (cfg->lever != 0 && cfg->lever != 1) ||
+        (cfg->lever && (!finite_pos(cfg->lever_sd_m) || !finite_nonneg(cfg->lever_rw_m_rts)))) {
         return FNAV_E_CONFIG;
     }
+    n = 9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0);
     lambda = cfg->alpha * cfg->alpha * ((fnav_real_t)n + cfg->kappa) - (fnav_real_t)n;
     if (!((fnav_real_t)n + lambda > FNAV_R(0.0))) {
         return FNAV_E_CONFIG;
@@ -98,7 +102,15 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
         p[b] = 0;
     }
     f->cfg = *cfg;
-    f->n_act = n;
+    f->n_act = 0;
+    for (i = 0; i < N; i++) {
+        int on = (i >= FNAV_UKF_V && i < FNAV_UKF_BG) || (i < FNAV_UKF_V && cfg->lever) ||
+                 (i >= FNAV_UKF_BG && cfg->bias_model == FNAV_BIAS_AR1);
+        if (on) {
+            f->act[f->n_act++] = (unsigned char)i;
+        }
+    }
+    FNAV_ASSERT(f->n_act == n);
     f->gamma = fnav_sqrt((fnav_real_t)n + lambda);
     f->w0m = lambda / ((fnav_real_t)n + lambda);
     f->w0c = f->w0m + FNAV_R(1.0) - cfg->alpha * cfg->alpha + cfg->beta;
@@ -133,6 +145,7 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     f->ba_mps2 = ba_mps2;
     f->bg0_rps = bg_rps;
     f->ba0_mps2 = ba_mps2;
+    f->lever_m = fnav_vec3_zero();
     f->hist.valid = 0;
     for (i = 0; i < N; i++) {
         for (j = 0; j < N; j++) {
@@ -143,25 +156,36 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
         f->P[FNAV_UKF_V + i][FNAV_UKF_V + i] = sd->vel_mps * sd->vel_mps;
         f->P[FNAV_UKF_P + i][FNAV_UKF_P + i] = sd->pos_m * sd->pos_m;
         f->P[FNAV_UKF_A + i][FNAV_UKF_A + i] = sd->att_rad[i] * sd->att_rad[i];
-        if (f->n_act == N) {
+        if (f->cfg.bias_model == FNAV_BIAS_AR1) {
             f->P[FNAV_UKF_BG + i][FNAV_UKF_BG + i] = sd->gyro_bias_rps[i] * sd->gyro_bias_rps[i];
             f->P[FNAV_UKF_BA + i][FNAV_UKF_BA + i] = sd->accel_bias_mps2[i] * sd->accel_bias_mps2[i];
+        }
+        if (f->cfg.lever) {
+            f->P[FNAV_UKF_R + i][FNAV_UKF_R + i] = f->cfg.lever_sd_m * f->cfg.lever_sd_m;
         }
     }
     f->started = 1;
     return FNAV_OK;
 }
 
-/* Upper-triangular Cholesky factor, A = U U^T, over the leading n states;
- * reads (only) the upper triangle of A. Column j of U is non-zero in rows 0..j.
+/* Upper-triangular Cholesky factor, A = U U^T, over the active states
+ * act[0..n-1]; reads (only) the upper triangle of A; U is zero outside the
+ * active rows and columns. Column j of U is non-zero in rows 0..j only.
  * Returns 0, or -1 at the first pivot that is not clearly positive. */
-static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], int n)
+static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], const unsigned char *act, int n)
 {
-    int i, j, k;
-    for (j = n - 1; j >= 0; j--) {
-        fnav_real_t d = A[j][j], inv;
-        for (k = j + 1; k < n; k++) {
-            d -= U[j][k] * U[j][k];
+    int ii, jj, kk, i, j;
+    for (i = 0; i < N; i++) {
+        for (j = 0; j < N; j++) {
+            U[i][j] = FNAV_R(0.0);
+        }
+    }
+    for (jj = n - 1; jj >= 0; jj--) {
+        fnav_real_t d, inv;
+        j = act[jj];
+        d = A[j][j];
+        for (kk = jj + 1; kk < n; kk++) {
+            d -= U[j][act[kk]] * U[j][act[kk]];
         }
         if (!(d > FNAV_REAL_EPSILON * A[j][j]) || !fnav_isfinite(d)) {
             return -1;
@@ -169,15 +193,14 @@ static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], int n)
         d = fnav_sqrt(d);
         U[j][j] = d;
         inv = FNAV_R(1.0) / d;
-        for (i = 0; i < j; i++) {
-            fnav_real_t s = A[i][j];
-            for (k = j + 1; k < n; k++) {
-                s -= U[i][k] * U[j][k];
+        for (ii = 0; ii < jj; ii++) {
+            fnav_real_t sum;
+            i = act[ii];
+            sum = A[i][j];
+            for (kk = jj + 1; kk < n; kk++) {
+                sum -= U[i][act[kk]] * U[j][act[kk]];
             }
-            U[i][j] = s * inv;
-        }
-        for (i = j + 1; i < n; i++) {
-            U[i][j] = FNAV_R(0.0);
+            U[i][j] = sum * inv;
         }
     }
     return 0;
@@ -186,26 +209,30 @@ static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], int n)
 /* Guarded factorisation: 0 ok, 1 ok after jitter, 2 after a reset. */
 static int factor(fnav_ukf_t *f)
 {
-    int n = f->n_act, i, j;
-    if (chol_upper(f->P, f->U, n) == 0) {
+    int n = f->n_act, ii, jj;
+    if (chol_upper(f->P, f->U, f->act, n) == 0) {
         return 0;
     }
-    for (i = 0; i < n; i++) {
-        for (j = i + 1; j < n; j++) {
-            fnav_real_t s = FNAV_R(0.5) * (f->P[i][j] + f->P[j][i]);
-            f->P[i][j] = s;
-            f->P[j][i] = s;
+    for (ii = 0; ii < n; ii++) {
+        int i = f->act[ii];
+        for (jj = ii + 1; jj < n; jj++) {
+            int j = f->act[jj];
+            fnav_real_t sy = FNAV_R(0.5) * (f->P[i][j] + f->P[j][i]);
+            f->P[i][j] = sy;
+            f->P[j][i] = sy;
         }
         f->P[i][i] += FNAV_R(1.0e-6) * f->P[i][i];
     }
-    if (chol_upper(f->P, f->U, n) == 0) {
+    if (chol_upper(f->P, f->U, f->act, n) == 0) {
         f->health.chol_jitter++;
         return 1;
     }
-    for (i = 0; i < n; i++) {
-        for (j = 0; j < n; j++) {
-            if (i != j) {
-                f->P[i][j] = FNAV_R(0.0);
+    for (ii = 0; ii < n; ii++) {
+        int i = f->act[ii];
+        for (jj = 0; jj < N; jj++) {
+            if (jj != i) {
+                f->P[i][jj] = FNAV_R(0.0);
+                f->P[jj][i] = FNAV_R(0.0);
             }
         }
         if (!(f->P[i][i] > FNAV_R(1.0e-20)) || !fnav_isfinite(f->P[i][i])) {
@@ -213,12 +240,11 @@ static int factor(fnav_ukf_t *f)
         }
     }
     f->health.chol_reset++;
-    if (chol_upper(f->P, f->U, n) != 0) {
+    if (chol_upper(f->P, f->U, f->act, n) != 0) {
         /* a positive diagonal always factors; keep U consistent anyway */
-        for (i = 0; i < n; i++) {
-            for (j = 0; j < n; j++) {
-                f->U[i][j] = (i == j) ? fnav_sqrt(f->P[i][i]) : FNAV_R(0.0);
-            }
+        for (ii = 0; ii < n; ii++) {
+            int i = f->act[ii];
+            f->U[i][i] = fnav_sqrt(f->P[i][i]);
         }
     }
     return 2;
@@ -230,15 +256,17 @@ static int state_finite(const fnav_strapdown_state_t *x)
            fnav_isfinite(x->q_nb.q[1]) && fnav_isfinite(x->q_nb.q[2]) && fnav_isfinite(x->q_nb.q[3]);
 }
 
-/* S (upper) += w d d^T over the leading nnz entries; m += w d. */
-static void accumulate(fnav_real_t S[N][N], fnav_real_t m[N], const fnav_real_t d[N], int nnz, fnav_real_t w)
+/* S (upper) += w d d^T and m += w d over the active states act[0..nnz-1]. */
+static void accumulate(fnav_real_t S[N][N], fnav_real_t m[N], const fnav_real_t d[N], const unsigned char *act,
+                       int nnz, fnav_real_t w)
 {
-    int a, b;
-    for (a = 0; a < nnz; a++) {
+    int aa, bb;
+    for (aa = 0; aa < nnz; aa++) {
+        int a = act[aa];
         fnav_real_t wd = w * d[a];
         m[a] += wd;
-        for (b = a; b < nnz; b++) {
-            S[a][b] += wd * d[b];
+        for (bb = aa; bb < nnz; bb++) {
+            S[a][act[bb]] += wd * d[act[bb]];
         }
     }
 }
@@ -266,7 +294,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     fnav_quat_t q0inv;
     fnav_real_t m[N], d[N], dx[N], cb[6], qb[6];
     fnav_real_t kmm;
-    int n, i, j, s, fr;
+    int n, n_lin, i, j, ii, jj, s, fr;
     if (f == NULL) {
         return FNAV_E_ARG;
     }
@@ -312,23 +340,29 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
 
     for (i = 0; i < N; i++) {
         m[i] = FNAV_R(0.0);
+        d[i] = FNAV_R(0.0);
         for (j = i; j < N; j++) {
             f->S[i][j] = FNAV_R(0.0);
         }
     }
-    for (j = 0; j < n; j++) {
+    for (n_lin = 0; n_lin < n && f->act[n_lin] < FNAV_UKF_A; n_lin++) {
+    }
+    for (jj = 0; jj < n; jj++) {
+        j = f->act[jj];
         for (s = 0; s < 2; s++) {
             fnav_real_t g = s == 0 ? f->gamma : -f->gamma;
             for (i = 0; i < N; i++) {
                 dx[i] = (i <= j) ? g * f->U[i][j] : FNAV_R(0.0);
             }
             if (c->closed_form && j < FNAV_UKF_A) {
-                /* only velocity and position differ: exact linear propagation */
+                /* only lever, velocity and position differ: exact linear
+                 * propagation (the lever is constant) */
                 for (i = 0; i < 3; i++) {
+                    d[FNAV_UKF_R + i] = dx[FNAV_UKF_R + i];
                     d[FNAV_UKF_V + i] = dx[FNAV_UKF_V + i];
                     d[FNAV_UKF_P + i] = dx[FNAV_UKF_P + i] + dx[FNAV_UKF_V + i] * dt_s;
                 }
-                accumulate(f->S, m, d, 6, f->wi);
+                accumulate(f->S, m, d, f->act, n_lin, f->wi);
                 continue;
             }
             xi.q_nb = apply_att(f->q_nb, fnav_vec3_from(&dx[FNAV_UKF_A]));
@@ -341,6 +375,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
                 fnav_vec3_t dp = fnav_vec3_sub(xi.pos_m, x0.pos_m);
                 fnav_vec3_t da = fnav_ukf_quat_to_grp(fnav_quat_mul(xi.q_nb, q0inv));
                 for (i = 0; i < 3; i++) {
+                    d[FNAV_UKF_R + i] = dx[FNAV_UKF_R + i];
                     d[FNAV_UKF_V + i] = dv.v[i];
                     d[FNAV_UKF_P + i] = dp.v[i];
                     d[FNAV_UKF_A + i] = da.v[i];
@@ -348,7 +383,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
                     d[FNAV_UKF_BA + i] = cb[3 + i] * dx[FNAV_UKF_BA + i];
                 }
             }
-            accumulate(f->S, m, d, n, f->wi);
+            accumulate(f->S, m, d, f->act, n, f->wi);
         }
     }
     /* With the propagated centre as reference (D_0 = 0) and the mean
@@ -356,8 +391,10 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
      * S - 2 m m^T + (1 - W0m) m m^T + W0c m m^T = S + (beta - alpha^2) m m^T,
      * S = sum_{i>0} W_i D_i D_i^T; with beta >= alpha^2 every term is PSD. */
     kmm = c->beta - c->alpha * c->alpha;
-    for (i = 0; i < n; i++) {
-        for (j = i; j < n; j++) {
+    for (ii = 0; ii < n; ii++) {
+        i = f->act[ii];
+        for (jj = ii; jj < n; jj++) {
+            j = f->act[jj];
             f->S[i][j] += kmm * m[i] * m[j];
         }
     }
@@ -366,21 +403,26 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
         add_rotated_noise(f->S, FNAV_UKF_V, C, c->accel_noise_mps2_rthz, dt_s);
         add_rotated_noise(f->S, FNAV_UKF_A, C, c->gyro_noise_rps_rthz, dt_s);
     }
-    if (n == N) {
-        for (i = 0; i < 3; i++) {
+    for (i = 0; i < 3; i++) {
+        if (c->bias_model == FNAV_BIAS_AR1) {
             f->S[FNAV_UKF_BG + i][FNAV_UKF_BG + i] += qb[i];
             f->S[FNAV_UKF_BA + i][FNAV_UKF_BA + i] += qb[3 + i];
         }
+        if (c->lever) {
+            f->S[FNAV_UKF_R + i][FNAV_UKF_R + i] += c->lever_rw_m_rts * c->lever_rw_m_rts * dt_s;
+        }
     }
-    for (i = 0; i < n; i++) {
-        for (j = i; j < n; j++) {
-            if (!fnav_isfinite(f->S[i][j])) {
+    for (ii = 0; ii < n; ii++) {
+        i = f->act[ii];
+        for (jj = ii; jj < n; jj++) {
+            if (!fnav_isfinite(f->S[i][f->act[jj]])) {
                 f->health.diverged++;
                 return FNAV_E_DIVERGED;
             }
         }
     }
-    /* fold the mean into the nominal state */
+    /* fold the mean into the nominal state (the bias and lever means are zero
+     * by the symmetry of the sigma points) */
     x0.q_nb = apply_att(x0.q_nb, fnav_vec3_from(&m[FNAV_UKF_A]));
     x0.vel_mps = fnav_vec3_add(x0.vel_mps, fnav_vec3_from(&m[FNAV_UKF_V]));
     x0.pos_m = fnav_vec3_add(x0.pos_m, fnav_vec3_from(&m[FNAV_UKF_P]));
@@ -395,8 +437,10 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
         f->bg_rps.v[i] = f->bg0_rps.v[i] + cb[i] * (f->bg_rps.v[i] - f->bg0_rps.v[i]);
         f->ba_mps2.v[i] = f->ba0_mps2.v[i] + cb[3 + i] * (f->ba_mps2.v[i] - f->ba0_mps2.v[i]);
     }
-    for (i = 0; i < n; i++) {
-        for (j = i; j < n; j++) {
+    for (ii = 0; ii < n; ii++) {
+        i = f->act[ii];
+        for (jj = ii; jj < n; jj++) {
+            j = f->act[jj];
             f->P[i][j] = f->S[i][j];
             f->P[j][i] = f->S[i][j];
         }
@@ -406,22 +450,40 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     return fr == 2 ? FNAV_E_DECOMP : FNAV_OK;
 }
 
-/* Linear update of the three states o..o+2 with innovation y and variance r2
- * per axis, Joseph form: P' = (I - K H) P (I - K H)^T + K R K^T. */
-static fnav_status_t update3(fnav_ukf_t *f, int o, fnav_vec3_t y, fnav_real_t r2)
+/* Linear update with a 3-row measurement matrix H (non-zero only in the
+ * columns cols[0..nc-1]), innovation y and variance r2 per axis, in Joseph
+ * form: P' = (I - K H) P (I - K H)^T + K R K^T, with only the upper
+ * triangle computed and then mirrored. */
+static fnav_status_t update(fnav_ukf_t *f, fnav_real_t H[3][N], const int *cols, int nc, fnav_vec3_t y, fnav_real_t r2)
 {
-    int n = f->n_act, i, j, k;
-    fnav_real_t s[3][3], si[3][3], det, K[N][3], dx[N];
+    int n = f->n_act, ii, jj, i, j, k, c;
+    fnav_real_t s[3][3], si[3][3], det, K[N][3], PHt[N][3], APHt[N][3], dx[N];
     fnav_real_t (*AP)[N] = f->S; /* scratch */
     fnav_real_t (*Pn)[N] = f->U; /* scratch */
-    if (o + 3 > n) {
-        return FNAV_OK;
-    }
-    for (i = 0; i < 3; i++) {
-        for (j = 0; j < 3; j++) {
-            s[i][j] = f->P[o + i][o + j] + (i == j ? r2 : FNAV_R(0.0));
+    /* P H^T (n x 3) over the active rows */
+    for (ii = 0; ii < n; ii++) {
+        i = f->act[ii];
+        for (k = 0; k < 3; k++) {
+            fnav_real_t sum = FNAV_R(0.0);
+            for (c = 0; c < nc; c++) {
+                sum += f->P[i][cols[c]] * H[k][cols[c]];
+            }
+            PHt[i][k] = sum;
         }
     }
+    /* S = H P H^T + R */
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            fnav_real_t sum = (i == j) ? r2 : FNAV_R(0.0);
+            for (c = 0; c < nc; c++) {
+                sum += H[i][cols[c]] * PHt[cols[c]][j];
+            }
+            s[i][j] = sum;
+        }
+    }
+    s[0][1] = s[1][0] = FNAV_R(0.5) * (s[0][1] + s[1][0]);
+    s[0][2] = s[2][0] = FNAV_R(0.5) * (s[0][2] + s[2][0]);
+    s[1][2] = s[2][1] = FNAV_R(0.5) * (s[1][2] + s[2][1]);
     /* inverse of the symmetric 3x3 innovation covariance (adjugate) */
     si[0][0] = s[1][1] * s[2][2] - s[1][2] * s[2][1];
     si[0][1] = s[0][2] * s[2][1] - s[0][1] * s[2][2];
@@ -443,67 +505,82 @@ static fnav_status_t update3(fnav_ukf_t *f, int o, fnav_vec3_t y, fnav_real_t r2
             si[i][j] *= det;
         }
     }
-    for (i = 0; i < n; i++) {
+    for (ii = 0; ii < n; ii++) {
+        i = f->act[ii];
         for (k = 0; k < 3; k++) {
-            K[i][k] = f->P[i][o] * si[0][k] + f->P[i][o + 1] * si[1][k] + f->P[i][o + 2] * si[2][k];
+            K[i][k] = PHt[i][0] * si[0][k] + PHt[i][1] * si[1][k] + PHt[i][2] * si[2][k];
         }
         dx[i] = K[i][0] * y.v[0] + K[i][1] * y.v[1] + K[i][2] * y.v[2];
-    }
-    for (i = 0; i < n; i++) {
-        for (j = 0; j < n; j++) {
-            AP[i][j] = f->P[i][j] - K[i][0] * f->P[o][j] - K[i][1] * f->P[o + 1][j] - K[i][2] * f->P[o + 2][j];
+        if (!fnav_isfinite(dx[i])) {
+            f->health.diverged++;
+            return FNAV_E_DIVERGED;
         }
     }
-    for (i = 0; i < n; i++) {
-        for (j = i; j < n; j++) {
-            fnav_real_t v = AP[i][j] - AP[i][o] * K[j][0] - AP[i][o + 1] * K[j][1] - AP[i][o + 2] * K[j][2] +
-                            r2 * (K[i][0] * K[j][0] + K[i][1] * K[j][1] + K[i][2] * K[j][2]);
+    /* AP = (I - K H) P = P - K (H P) = P - K PHt^T (P symmetric) */
+    for (ii = 0; ii < n; ii++) {
+        i = f->act[ii];
+        for (jj = 0; jj < n; jj++) {
+            j = f->act[jj];
+            AP[i][j] = f->P[i][j] - K[i][0] * PHt[j][0] - K[i][1] * PHt[j][1] - K[i][2] * PHt[j][2];
+        }
+    }
+    /* (AP) H^T */
+    for (ii = 0; ii < n; ii++) {
+        i = f->act[ii];
+        for (k = 0; k < 3; k++) {
+            fnav_real_t sum = FNAV_R(0.0);
+            for (c = 0; c < nc; c++) {
+                sum += AP[i][cols[c]] * H[k][cols[c]];
+            }
+            APHt[i][k] = sum;
+        }
+    }
+    /* P' = AP - (AP H^T) K^T + r2 K K^T */
+    for (ii = 0; ii < n; ii++) {
+        i = f->act[ii];
+        for (jj = ii; jj < n; jj++) {
+            fnav_real_t v;
+            j = f->act[jj];
+            v = AP[i][j] - APHt[i][0] * K[j][0] - APHt[i][1] * K[j][1] - APHt[i][2] * K[j][2] +
+                r2 * (K[i][0] * K[j][0] + K[i][1] * K[j][1] + K[i][2] * K[j][2]);
             if (!fnav_isfinite(v)) {
                 f->health.diverged++;
                 return FNAV_E_DIVERGED;
             }
             Pn[i][j] = v;
         }
-        if (!fnav_isfinite(dx[i])) {
-            f->health.diverged++;
-            return FNAV_E_DIVERGED;
-        }
     }
-    for (i = 0; i < n; i++) {
-        for (j = i; j < n; j++) {
+    for (ii = 0; ii < n; ii++) {
+        i = f->act[ii];
+        for (jj = ii; jj < n; jj++) {
+            j = f->act[jj];
             f->P[i][j] = Pn[i][j];
             f->P[j][i] = Pn[i][j];
         }
     }
+    for (i = 0; i < N; i++) {
+        int on = 0;
+        for (ii = 0; ii < n; ii++) {
+            on |= f->act[ii] == i;
+        }
+        if (!on) {
+            dx[i] = FNAV_R(0.0);
+        }
+    }
+    f->lever_m = fnav_vec3_add(f->lever_m, fnav_vec3_from(&dx[FNAV_UKF_R]));
     f->vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&dx[FNAV_UKF_V]));
     f->pos_m = fnav_vec3_add(f->pos_m, fnav_vec3_from(&dx[FNAV_UKF_P]));
     f->q_nb = apply_att(f->q_nb, fnav_vec3_from(&dx[FNAV_UKF_A]));
-    if (n == N) {
-        f->bg_rps = fnav_vec3_add(f->bg_rps, fnav_vec3_from(&dx[FNAV_UKF_BG]));
-        f->ba_mps2 = fnav_vec3_add(f->ba_mps2, fnav_vec3_from(&dx[FNAV_UKF_BA]));
-    }
+    f->bg_rps = fnav_vec3_add(f->bg_rps, fnav_vec3_from(&dx[FNAV_UKF_BG]));
+    f->ba_mps2 = fnav_vec3_add(f->ba_mps2, fnav_vec3_from(&dx[FNAV_UKF_BA]));
     return FNAV_OK;
 }
 
-fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f)
+fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
 {
-    fnav_status_t st;
-    if (f == NULL) {
-        return FNAV_E_ARG;
-    }
-    if (!f->started) {
-        return FNAV_E_STATE;
-    }
-    st = update3(f, FNAV_UKF_V, fnav_vec3_scale(f->vel_mps, -FNAV_R(1.0)),
-                 f->cfg.zupt_sigma_mps * f->cfg.zupt_sigma_mps);
-    if (st == FNAV_OK) {
-        f->health.zupts++;
-    }
-    return st;
-}
-
-fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
-{
+    fnav_real_t H[3][N];
+    int cols[15], nc = 0, i, j;
+    fnav_vec3_t y;
     fnav_status_t st;
     if (f == NULL) {
         return FNAV_E_ARG;
@@ -515,10 +592,75 @@ fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
         f->health.nan_inputs++;
         return FNAV_E_NANINF;
     }
-    if (f->n_act < N) {
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < N; j++) {
+            H[i][j] = FNAV_R(0.0);
+        }
+        H[i][FNAV_UKF_V + i] = FNAV_R(1.0);
+        cols[nc++] = FNAV_UKF_V + i;
+    }
+    y = fnav_vec3_scale(f->vel_mps, -FNAV_R(1.0));
+    if (f->cfg.lever) {
+        /* h = v - C (w x r) = 0 with w = w_m - b_g; first-order error terms:
+         * dh/dr = -C [w x], dh/da = [u x] with u = C (w x r) (attitude error
+         * in n), dh/db_g = -C [r x] */
+        fnav_vec3_t w = fnav_vec3_sub(gyro_rps, f->bg_rps);
+        fnav_mat3_t C = fnav_quat_to_dcm(f->q_nb);
+        fnav_mat3_t Hr = fnav_mat3_mul(C, fnav_mat3_skew(w));
+        fnav_vec3_t u = fnav_mat3_mul_vec3(C, fnav_vec3_cross(w, f->lever_m));
+        fnav_mat3_t Ha = fnav_mat3_skew(u);
+        fnav_mat3_t Hb = fnav_mat3_mul(C, fnav_mat3_skew(f->lever_m));
+        y = fnav_vec3_sub(u, f->vel_mps);
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                H[i][FNAV_UKF_R + j] = -Hr.m[i][j];
+                H[i][FNAV_UKF_A + j] = Ha.m[i][j];
+                if (f->cfg.bias_model == FNAV_BIAS_AR1) {
+                    H[i][FNAV_UKF_BG + j] = -Hb.m[i][j];
+                }
+            }
+        }
+        for (j = 0; j < 3; j++) {
+            cols[nc++] = FNAV_UKF_R + j;
+            cols[nc++] = FNAV_UKF_A + j;
+            if (f->cfg.bias_model == FNAV_BIAS_AR1) {
+                cols[nc++] = FNAV_UKF_BG + j;
+            }
+        }
+    }
+    st = update(f, H, cols, nc, y, f->cfg.zupt_sigma_mps * f->cfg.zupt_sigma_mps);
+    if (st == FNAV_OK) {
+        f->health.zupts++;
+    }
+    return st;
+}
+
+fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
+{
+    fnav_real_t H[3][N];
+    int cols[3], i, j;
+    fnav_status_t st;
+    if (f == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!f->started) {
+        return FNAV_E_STATE;
+    }
+    if (!fnav_vec3_isfinite(gyro_rps)) {
+        f->health.nan_inputs++;
+        return FNAV_E_NANINF;
+    }
+    if (f->cfg.bias_model != FNAV_BIAS_AR1) {
         return FNAV_OK;
     }
-    st = update3(f, FNAV_UKF_BG, fnav_vec3_sub(gyro_rps, f->bg_rps), f->cfg.zaru_sigma_rps * f->cfg.zaru_sigma_rps);
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < N; j++) {
+            H[i][j] = FNAV_R(0.0);
+        }
+        H[i][FNAV_UKF_BG + i] = FNAV_R(1.0);
+        cols[i] = FNAV_UKF_BG + i;
+    }
+    st = update(f, H, cols, 3, fnav_vec3_sub(gyro_rps, f->bg_rps), f->cfg.zaru_sigma_rps * f->cfg.zaru_sigma_rps);
     if (st == FNAV_OK) {
         f->health.zarus++;
     }

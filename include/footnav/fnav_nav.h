@@ -73,6 +73,9 @@ typedef struct {
     fnav_real_t accel_motion_noise_mps2_rthz; /**< extra accel process noise in motion, m/s^2/sqrt(Hz) */
     fnav_real_t gyro_motion_noise_rps_rthz;   /**< extra gyro process noise, rad/s/sqrt(Hz) */
     fnav_real_t zupt_sigma_mps;        /**< ZUPT noise, m/s */
+    int lever;                         /**< 1: estimate the rolling-foot lever (fnav_ukf.h) */
+    fnav_real_t lever_sd_m;            /**< initial lever sd, m */
+    fnav_real_t lever_rw_m_rts;        /**< lever random walk, m/sqrt(s) */
     int zaru;                          /**< 1: zero-angular-rate updates in stance */
     fnav_real_t zaru_sigma_rps;        /**< ZARU noise, rad/s */
     fnav_real_t tilt_sd_rad;           /**< initial roll/pitch standard deviation, rad */
