@@ -65,6 +65,7 @@ static const param_t k_params[] = {
     { "adapt_max_ratio", P_REAL, 1.0, "adaptive threshold at most gamma times this" },
     { "gyro_thresh_dps", P_REAL, 3.14159265358979323846 / 180.0, "threshold detector: RMS rate limit, deg/s" },
     { "accel_thresh", P_REAL, 1.0, "threshold detector: RMS ||f|-g| limit, m/s^2" },
+    { "min_zupt_s", P_REAL, 1.0, "a stance shorter than this is ignored, s" },
     { "min_stance_s", P_REAL, 1.0, "segmentation: shortest stance, s" },
     { "min_swing_s", P_REAL, 1.0, "segmentation: shortest swing, s" },
     { "gravity", P_REAL, 1.0, "local gravity, m/s^2" },
@@ -102,6 +103,7 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     if (strcmp(key, "gyro_thresh_dps") == 0) return &c->stance.gyro_thresh_rps;
     if (strcmp(key, "accel_thresh") == 0) return &c->stance.accel_thresh_mps2;
     if (strcmp(key, "min_stance_s") == 0) return &c->stance.min_stance_s;
+    if (strcmp(key, "min_zupt_s") == 0) return &c->stance.min_zupt_s;
     if (strcmp(key, "min_swing_s") == 0) return &c->stance.min_swing_s;
     if (strcmp(key, "gravity") == 0) return &c->gravity_mps2;
     if (strcmp(key, "accel_motion_noise") == 0) return &c->accel_motion_noise_mps2_rthz;

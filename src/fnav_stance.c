@@ -23,6 +23,7 @@ const fnav_stance_config_t fnav_stance_config_default = {
     FNAV_R(0.25),       /* floor_rise_dps, decades/s */
     FNAV_R(0.4),        /* margin_dec, decades */
     FNAV_R(10.0),       /* adapt_max_ratio */
+    FNAV_R(0.02),       /* min_zupt_s, s */
     FNAV_R(0.02),       /* min_stance_s, s */
     FNAV_R(0.2),        /* min_swing_s, s */
     FNAV_R(0.3)         /* event_window_s, s */
@@ -49,6 +50,7 @@ fnav_status_t fnav_stance_init(fnav_stance_t *st, const fnav_stance_config_t *cf
         !(fnav_isfinite(c->margin_dec) && c->margin_dec >= FNAV_R(0.0)) ||
         !(fnav_isfinite(c->adapt_max_ratio) && c->adapt_max_ratio >= FNAV_R(1.0)) ||
         !(fnav_isfinite(c->min_stance_s) && c->min_stance_s >= FNAV_R(0.0)) ||
+        !(fnav_isfinite(c->min_zupt_s) && c->min_zupt_s >= FNAV_R(0.0)) ||
         !(fnav_isfinite(c->min_swing_s) && c->min_swing_s >= FNAV_R(0.0)) || !pos_finite(c->event_window_s)) {
         return FNAV_E_CONFIG;
     }
@@ -84,6 +86,13 @@ static void set_rate(fnav_stance_t *st, fnav_real_t rate_hz)
     st->n_ev = n < 1 ? 1 : (n > FNAV_STANCE_EVENT_BUF - 1 ? FNAV_STANCE_EVENT_BUF - 1 : n);
     n = round_pos(st->cfg.min_stance_s * rate_hz);
     st->n_min_stance = n < 1 ? 1 : n;
+    n = round_pos(st->cfg.min_zupt_s * rate_hz);
+    st->n_min_zupt = n < 1 ? 1 : n;
+    st->lag = st->n_min_zupt - 1;
+    if (st->half + st->lag + 2 > FNAV_STANCE_MAX_WINDOW) {
+        st->lag = FNAV_STANCE_MAX_WINDOW - 2 - st->half;
+        st->n_min_zupt = st->lag + 1;
+    }
     n = round_pos(st->cfg.min_swing_s * rate_hz);
     st->n_min_swing = n < 1 ? 1 : n;
 }
@@ -122,6 +131,7 @@ fnav_status_t fnav_stance_push(fnav_stance_t *st, const fnav_sample_t *sample)
         return FNAV_E_ARG;
     }
     if (st->finished || st->n_in - st->n_out >= FNAV_STANCE_MAX_WINDOW) {
+        /* the caller did not pop the due decisions */
         return FNAV_E_STATE;
     }
     st->ring[st->n_in % FNAV_STANCE_MAX_WINDOW] = *sample;
@@ -277,22 +287,14 @@ static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
     o->segment_stance = st->seg;
 }
 
-fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
+/* Raw decision for sample n_raw, whose window is complete: statistic,
+ * (adaptive) threshold, below-threshold flag, into the confirmation queue. */
+static void decide_raw(fnav_stance_t *st)
 {
-    long i, lo, hi;
-    fnav_real_t stat, gamma, g0, dt_s;
-    int adaptive;
-    if (st == NULL || out == NULL) {
-        return FNAV_E_ARG;
-    }
-    i = st->n_out;
-    if (i >= st->n_in) {
-        return st->finished ? FNAV_END : FNAV_AGAIN;
-    }
-    if (st->win == 0 || (!st->finished && i + st->half > st->n_in - 1)) {
-        return FNAV_AGAIN;
-    }
-    FNAV_ASSERT(i >= st->n_in - FNAV_STANCE_MAX_WINDOW);
+    long i = st->n_raw, lo, hi;
+    fnav_real_t stat, gamma, g0, dt_s = FNAV_R(0.0);
+    const fnav_sample_t *s = at(st, i);
+    int q = (int)(i % FNAV_STANCE_MAX_WINDOW);
     lo = i - st->half;
     hi = i + st->half;
     if (lo < 0) {
@@ -304,20 +306,17 @@ fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
     if (hi > st->n_in - 1) {
         hi = st->n_in - 1;
     }
-    out->sample = *at(st, i);
     stat = statistic(st, lo, hi);
     g0 = st->cfg.detector == FNAV_DETECTOR_SHOE ? st->cfg.gamma : FNAV_R(1.0);
     gamma = g0;
-    adaptive = st->cfg.adaptive;
-    dt_s = FNAV_R(0.0);
-    if (st->have_prev && out->sample.t_ns > st->prev_t_ns) {
-        dt_s = (fnav_real_t)(out->sample.t_ns - st->prev_t_ns) * FNAV_R(1.0e-9);
+    if (i > 0 && s->t_ns > at(st, i - 1)->t_ns) {
+        dt_s = (fnav_real_t)(s->t_ns - at(st, i - 1)->t_ns) * FNAV_R(1.0e-9);
     }
-    if (adaptive) {
-        /* floor of log10 T: follows new minima at once, else rises slowly */
+    if (st->cfg.adaptive) {
+        /* floor of log10 T: follows new minima at once, else rises slowly;
+         * it never sits below log10(gamma) - margin, so that after a long
+         * rest it catches up with a jogging stance in a few strides */
         fnav_real_t l = fnav_log10(stat > FNAV_R(1.0e-30) ? stat : FNAV_R(1.0e-30));
-        /* the floor never sits below log10(gamma) - margin, so that after a
-         * long rest it catches up with a jogging stance in a few strides */
         fnav_real_t fmin = fnav_log10(g0) - st->cfg.margin_dec;
         if (st->floor_valid) {
             fnav_real_t fl = st->floor_l + st->cfg.floor_rise_dps * dt_s;
@@ -332,14 +331,56 @@ fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
             st->floor_l = fmin;
         }
     }
-    st->prev_t_ns = out->sample.t_ns;
-    out->stat = stat;
-    out->gamma = gamma;
-    out->stance = stat < gamma;
+    st->dq_stat[q] = stat;
+    st->dq_gamma[q] = gamma;
+    st->dq_raw[q] = (unsigned char)(stat < gamma);
+    st->n_raw++;
+}
+
+fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
+{
+    long i, k, fwd;
+    int q;
+    if (st == NULL || out == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (st->win == 0) {
+        return (st->finished && st->n_in == 0) ? FNAV_END : FNAV_AGAIN;
+    }
+    /* raw decisions for every sample whose window is complete */
+    while (st->n_raw < st->n_in && (st->finished || st->n_raw + st->half <= st->n_in - 1)) {
+        decide_raw(st);
+    }
+    i = st->n_out;
+    if (i >= st->n_in) {
+        return st->finished ? FNAV_END : FNAV_AGAIN;
+    }
+    if (i >= st->n_raw || (!st->finished && i + st->lag >= st->n_raw)) {
+        return FNAV_AGAIN;
+    }
+    FNAV_ASSERT(i >= st->n_in - FNAV_STANCE_MAX_WINDOW);
+    q = (int)(i % FNAV_STANCE_MAX_WINDOW);
+    out->sample = *at(st, i);
+    out->stat = st->dq_stat[q];
+    out->gamma = st->dq_gamma[q];
+    out->raw_stance = st->dq_raw[q];
+    /* length of the raw stance run through i, looking ahead at most lag */
+    st->back = out->raw_stance ? st->back + 1 : 0;
+    fwd = 0;
+    if (out->raw_stance) {
+        for (k = i + 1; k < st->n_raw && k <= i + st->lag; k++) {
+            if (!st->dq_raw[k % FNAV_STANCE_MAX_WINDOW]) {
+                break;
+            }
+            fwd++;
+        }
+    }
+    out->stance = out->raw_stance && (st->back + fwd >= st->n_min_zupt || i == 0);
     out->events = 0;
     out->fo_t_ns = 0;
     out->fs_t_ns = 0;
     segment(st, out);
+    st->prev_t_ns = out->sample.t_ns;
     st->n_out++;
     return FNAV_OK;
 }

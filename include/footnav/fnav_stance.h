@@ -15,9 +15,12 @@
  *
  * and the foot is at rest when T_k < gamma. A centred window looks half a
  * window ahead, so the detector delays its decisions by h = (W - 1) / 2
- * samples: fnav_stance_push() stores each sample in a fixed ring inside the
- * object and fnav_stance_pop() returns it, with its decision, once its
- * window is complete (h samples later). Call pop until it says FNAV_AGAIN
+ * samples; a raw stance must also last at least min_zupt_s (a single-sample
+ * dip of T in mid-swing, when the foot's rotation reverses, must not zero a
+ * velocity of metres per second), which needs L = min_zupt_s * rate - 1 more
+ * samples of look-ahead. fnav_stance_push() stores each sample in a fixed
+ * ring inside the object and fnav_stance_pop() returns it, with its
+ * decision, h + L samples later. Call pop until it says FNAV_AGAIN
  * after every push; after the last sample call fnav_stance_finish() and pop
  * until FNAV_END.
  *
@@ -75,6 +78,7 @@ typedef struct {
     fnav_real_t floor_rise_dps; /**< floor rise, decades of T per second (default 0.25) */
     fnav_real_t margin_dec;     /**< threshold above the floor, decades (default 0.4) */
     fnav_real_t adapt_max_ratio; /**< adaptive threshold at most this times gamma (default 10) */
+    fnav_real_t min_zupt_s;     /**< a stance shorter than this is ignored, s (default 0.02) */
     fnav_real_t min_stance_s;   /**< segmentation: shortest stance, s (default 0.02) */
     fnav_real_t min_swing_s;    /**< segmentation: shortest swing, s (default 0.2) */
     fnav_real_t event_window_s; /**< gait-event search window, s (default 0.3) */
@@ -95,7 +99,9 @@ typedef struct {
     fnav_sample_t sample; /**< the sample this decision is for */
     fnav_real_t stat;     /**< test statistic T (SHOE) or normalised RMS (THRESHOLD) */
     fnav_real_t gamma;    /**< threshold used for this sample */
-    int stance;           /**< 1: foot at rest (apply a zero-velocity update) */
+    int raw_stance;       /**< 1: statistic below the threshold */
+    int stance;           /**< 1: foot at rest (apply a zero-velocity update): raw stance in a
+                               run of at least min_zupt_s */
     int segment_stance;   /**< segmented gait phase: 1 stance, 0 swing */
     uint32_t events;      /**< FNAV_STANCE_EV_* bits raised at this sample */
     int64_t fo_t_ns;      /**< foot-off time, ns (with EV_FOOT_OFF) */
@@ -108,7 +114,14 @@ typedef struct {
     fnav_stance_config_t cfg;
     fnav_sample_t ring[FNAV_STANCE_MAX_WINDOW]; /**< newest samples */
     long n_in;          /**< samples pushed */
+    long n_raw;         /**< raw decisions made */
     long n_out;         /**< decisions returned */
+    fnav_real_t dq_stat[FNAV_STANCE_MAX_WINDOW];  /**< raw decisions waiting for confirmation */
+    fnav_real_t dq_gamma[FNAV_STANCE_MAX_WINDOW];
+    unsigned char dq_raw[FNAV_STANCE_MAX_WINDOW];
+    int lag;            /**< confirmation look-ahead, samples (n_min_zupt - 1) */
+    int n_min_zupt;     /**< shortest stance run, samples */
+    long back;          /**< raw stance run length ending at the last output */
     int win;            /**< window W, samples (odd), 0 until the rate is known */
     int half;           /**< h = (W - 1) / 2 */
     fnav_real_t rate_hz; /**< rate in use, Hz */
