@@ -75,8 +75,6 @@ static const param_t k_params[] = {
     { "lever", P_INT, 1.0, "estimate the rolling-foot lever 0/1 (ZUPT of the pivot)" },
     { "lever_sd", P_REAL, 1.0, "initial lever sd, m" },
     { "lever_rw", P_REAL, 1.0, "lever random walk, m/sqrt(s)" },
-    { "zupt_skip_s", P_REAL, 1.0, "no ZUPT in the first seconds of a stance, s" },
-    { "rocker_hyst", P_REAL, 1.0, "forefoot rocker once |w| exceeds its stance minimum by this, rad/s" },
     { "zaru", P_INT, 1.0, "zero-angular-rate updates 0/1" },
     { "zaru_sigma_dps", P_REAL, 3.14159265358979323846 / 180.0, "ZARU noise, deg/s" },
     { "tilt_sd_deg", P_REAL, 3.14159265358979323846 / 180.0, "initial roll/pitch sd, deg" },
@@ -112,8 +110,6 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     if (strcmp(key, "lever") == 0) return &c->lever;
     if (strcmp(key, "lever_sd") == 0) return &c->lever_sd_m;
     if (strcmp(key, "lever_rw") == 0) return &c->lever_rw_m_rts;
-    if (strcmp(key, "rocker_hyst") == 0) return &c->rocker_hyst_rps;
-    if (strcmp(key, "zupt_skip_s") == 0) return &c->zupt_skip_s;
     if (strcmp(key, "zaru") == 0) return &c->zaru;
     if (strcmp(key, "zaru_sigma_dps") == 0) return &c->zaru_sigma_rps;
     if (strcmp(key, "tilt_sd_deg") == 0) return &c->tilt_sd_rad;

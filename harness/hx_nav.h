@@ -30,7 +30,7 @@ typedef struct {
 /** The options every navigation command accepts, for an hx_opt_t table. */
 #define HX_NAV_OPTS                                                                                   \
     { "--profile", "NAME|FILE", "sensor profile: navchip, mtx, shimmer or a profile file (default navchip)", 0 }, \
-    { "--bias-model", "MODEL", "ar1 (default) or off", 0 },                                           \
+    { "--bias-model", "MODEL", "ar1 or off (default, docs/navigation.md)", 0 },                                           \
     { "--detector", "KIND", "stance detector: shoe (default) or threshold", 0 },                      \
     { "--rate", "HZ", "resample the input to HZ first (anti-alias low-pass, docs/harness.md)", 0 },   \
     { "--param", "KEY=VALUE", "set a navigation parameter (list: --param help)", 1 }

@@ -14,7 +14,7 @@ const fnav_nav_config_t fnav_nav_config_default = {
       { FNAV_R(3.3e-3) * D2R, FNAV_R(3.7e-3) * D2R, FNAV_R(4.2e-3) * D2R },
       { FNAV_R(5.0), FNAV_R(5.0), FNAV_R(50.0) },
       { FNAV_R(8.5e-5) * D2R, FNAV_R(6.4e-5) * D2R, FNAV_R(3.4e-5) * D2R } },
-    FNAV_BIAS_AR1,
+    FNAV_BIAS_OFF, /* bias_model: see docs/navigation.md (evidence in docs/results.md) */
     { FNAV_DETECTOR_SHOE, FNAV_R(0.0), FNAV_R(0.025), FNAV_R(0.01), FNAV_R(0.1) * D2R, FNAV_R(1.0e5),
       FNAV_R(0.6), FNAV_R(0.6), FNAV_R(9.80665), 1, FNAV_R(0.25), FNAV_R(0.4), FNAV_R(10.0), FNAV_R(0.02), FNAV_R(0.02),
       FNAV_R(0.2), FNAV_R(0.3) },
@@ -26,8 +26,6 @@ const fnav_nav_config_t fnav_nav_config_default = {
     1,                  /* lever */
     FNAV_R(0.1),        /* lever_sd_m */
     FNAV_R(0.002),      /* lever_rw_m_rts */
-    FNAV_R(0.1),        /* rocker_hyst_rps */
-    FNAV_R(0.0),        /* zupt_skip_s */
     0,                  /* zaru */
     FNAV_R(0.01),       /* zaru_sigma_rps */
     FNAV_R(0.5) * D2R,  /* tilt_sd_rad */
@@ -83,8 +81,7 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
         !(cfg->yaw_sd_rad > FNAV_R(0.0)) || !(cfg->gyro_bias_sd_rps > FNAV_R(0.0)) ||
         !(cfg->accel_bias_sd_mps2 > FNAV_R(0.0)) || !(cfg->max_gap_s > FNAV_R(0.0)) ||
         !fnav_isfinite(cfg->tilt_sd_rad) || !fnav_isfinite(cfg->yaw_sd_rad) || !fnav_isfinite(cfg->gyro_bias_sd_rps) ||
-        !fnav_isfinite(cfg->accel_bias_sd_mps2) || !fnav_isfinite(cfg->max_gap_s) ||
-        !fnav_isfinite(cfg->rocker_hyst_rps) || cfg->rocker_hyst_rps < FNAV_R(0.0)) {
+        !fnav_isfinite(cfg->accel_bias_sd_mps2) || !fnav_isfinite(cfg->max_gap_s)) {
         return FNAV_E_CONFIG;
     }
     for (b = 0; b < sizeof *nav; b++) {
@@ -206,15 +203,13 @@ static void fill_frame(fnav_nav_t *nav, const fnav_stance_out_t *o, uint32_t fla
             fr->euler_rad[i] = e.v[i];
             fr->gyro_bias_rps[i] = u->bg_rps.v[i];
             fr->accel_bias_mps2[i] = u->ba_mps2.v[i];
-            fr->lever_heel_m[i] = u->lever_m[0].v[i];
-            fr->lever_toe_m[i] = u->lever_m[1].v[i];
+            fr->lever_m[i] = u->lever_m.v[i];
         }
         fnav_ukf_p_diag(u, fr->p_diag);
     } else {
         for (i = 0; i < 3; i++) {
             fr->pos_m[i] = fr->vel_mps[i] = fr->euler_rad[i] = FNAV_R(0.0);
-            fr->gyro_bias_rps[i] = fr->accel_bias_mps2[i] = FNAV_R(0.0);
-            fr->lever_heel_m[i] = fr->lever_toe_m[i] = FNAV_R(0.0);
+            fr->gyro_bias_rps[i] = fr->accel_bias_mps2[i] = fr->lever_m[i] = FNAV_R(0.0);
         }
         for (i = 0; i < FNAV_UKF_N; i++) {
             fr->p_diag[i] = FNAV_R(0.0);
@@ -281,22 +276,7 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
         st = fnav_ukf_predict(&nav->ukf, fnav_vec3_from(s->gyro_rps), fnav_vec3_from(s->accel_mps2), dt_used);
         (void)st; /* problems are counted in the UKF's health */
         if (o->stance) {
-            /* stance sub-phase: the heel rocker lasts while the rotation
-             * slows down after the strike; once |w| rises again above its
-             * minimum in this stance, the heel is lifting (forefoot rocker) */
-            fnav_real_t wn = fnav_vec3_norm(fnav_vec3_sub(fnav_vec3_from(s->gyro_rps), nav->ukf.bg_rps));
-            if (!nav->in_stance) {
-                nav->rocker = FNAV_ROCKER_HEEL;
-                nav->w_min_rps = wn;
-                nav->stance_t0_ns = s->t_ns;
-            } else if (wn < nav->w_min_rps) {
-                nav->w_min_rps = wn;
-            } else if (wn > nav->w_min_rps + nav->cfg.rocker_hyst_rps) {
-                nav->rocker = FNAV_ROCKER_TOE;
-            }
-            if ((fnav_real_t)(s->t_ns - nav->stance_t0_ns) * FNAV_R(1.0e-9) < nav->cfg.zupt_skip_s) {
-                /* settling after the strike */
-            } else if (fnav_ukf_zupt(&nav->ukf, fnav_vec3_from(s->gyro_rps), nav->rocker) == FNAV_OK) {
+            if (fnav_ukf_zupt(&nav->ukf, fnav_vec3_from(s->gyro_rps)) == FNAV_OK) {
                 flags |= FNAV_FRAME_ZUPT;
             }
             if (nav->cfg.zaru) {
@@ -305,7 +285,6 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
             }
         }
     }
-    nav->in_stance = o->stance && dt_used > FNAV_R(0.0) ? 1 : (o->stance ? nav->in_stance : 0);
     fill_frame(nav, o, flags, fr);
 }
 

@@ -93,7 +93,7 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
         (cfg->lever && (!finite_pos(cfg->lever_sd_m) || !finite_nonneg(cfg->lever_rw_m_rts)))) {
         return FNAV_E_CONFIG;
     }
-    n = 9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 6 : 0);
+    n = 9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0);
     lambda = cfg->alpha * cfg->alpha * ((fnav_real_t)n + cfg->kappa) - (fnav_real_t)n;
     if (!((fnav_real_t)n + lambda > FNAV_R(0.0))) {
         return FNAV_E_CONFIG;
@@ -145,7 +145,7 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     f->ba_mps2 = ba_mps2;
     f->bg0_rps = bg_rps;
     f->ba0_mps2 = ba_mps2;
-    f->lever_m[0] = f->lever_m[1] = fnav_vec3_zero();
+    f->lever_m = fnav_vec3_zero();
     f->hist.valid = 0;
     for (i = 0; i < N; i++) {
         for (j = 0; j < N; j++) {
@@ -161,8 +161,7 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
             f->P[FNAV_UKF_BA + i][FNAV_UKF_BA + i] = sd->accel_bias_mps2[i] * sd->accel_bias_mps2[i];
         }
         if (f->cfg.lever) {
-            f->P[FNAV_UKF_RH + i][FNAV_UKF_RH + i] = f->cfg.lever_sd_m * f->cfg.lever_sd_m;
-            f->P[FNAV_UKF_RT + i][FNAV_UKF_RT + i] = f->cfg.lever_sd_m * f->cfg.lever_sd_m;
+            f->P[FNAV_UKF_R + i][FNAV_UKF_R + i] = f->cfg.lever_sd_m * f->cfg.lever_sd_m;
         }
     }
     f->started = 1;
@@ -359,8 +358,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
                 /* only lever, velocity and position differ: exact linear
                  * propagation (the lever is constant) */
                 for (i = 0; i < 3; i++) {
-                    d[FNAV_UKF_RH + i] = dx[FNAV_UKF_RH + i];
-                    d[FNAV_UKF_RT + i] = dx[FNAV_UKF_RT + i];
+                    d[FNAV_UKF_R + i] = dx[FNAV_UKF_R + i];
                     d[FNAV_UKF_V + i] = dx[FNAV_UKF_V + i];
                     d[FNAV_UKF_P + i] = dx[FNAV_UKF_P + i] + dx[FNAV_UKF_V + i] * dt_s;
                 }
@@ -377,8 +375,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
                 fnav_vec3_t dp = fnav_vec3_sub(xi.pos_m, x0.pos_m);
                 fnav_vec3_t da = fnav_ukf_quat_to_grp(fnav_quat_mul(xi.q_nb, q0inv));
                 for (i = 0; i < 3; i++) {
-                    d[FNAV_UKF_RH + i] = dx[FNAV_UKF_RH + i];
-                    d[FNAV_UKF_RT + i] = dx[FNAV_UKF_RT + i];
+                    d[FNAV_UKF_R + i] = dx[FNAV_UKF_R + i];
                     d[FNAV_UKF_V + i] = dv.v[i];
                     d[FNAV_UKF_P + i] = dp.v[i];
                     d[FNAV_UKF_A + i] = da.v[i];
@@ -412,8 +409,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
             f->S[FNAV_UKF_BA + i][FNAV_UKF_BA + i] += qb[3 + i];
         }
         if (c->lever) {
-            f->S[FNAV_UKF_RH + i][FNAV_UKF_RH + i] += c->lever_rw_m_rts * c->lever_rw_m_rts * dt_s;
-            f->S[FNAV_UKF_RT + i][FNAV_UKF_RT + i] += c->lever_rw_m_rts * c->lever_rw_m_rts * dt_s;
+            f->S[FNAV_UKF_R + i][FNAV_UKF_R + i] += c->lever_rw_m_rts * c->lever_rw_m_rts * dt_s;
         }
     }
     for (ii = 0; ii < n; ii++) {
@@ -571,8 +567,7 @@ static fnav_status_t update(fnav_ukf_t *f, fnav_real_t H[3][N], const int *cols,
             dx[i] = FNAV_R(0.0);
         }
     }
-    f->lever_m[0] = fnav_vec3_add(f->lever_m[0], fnav_vec3_from(&dx[FNAV_UKF_RH]));
-    f->lever_m[1] = fnav_vec3_add(f->lever_m[1], fnav_vec3_from(&dx[FNAV_UKF_RT]));
+    f->lever_m = fnav_vec3_add(f->lever_m, fnav_vec3_from(&dx[FNAV_UKF_R]));
     f->vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&dx[FNAV_UKF_V]));
     f->pos_m = fnav_vec3_add(f->pos_m, fnav_vec3_from(&dx[FNAV_UKF_P]));
     f->q_nb = apply_att(f->q_nb, fnav_vec3_from(&dx[FNAV_UKF_A]));
@@ -581,10 +576,10 @@ static fnav_status_t update(fnav_ukf_t *f, fnav_real_t H[3][N], const int *cols,
     return FNAV_OK;
 }
 
-fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_rocker_t rocker)
+fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
 {
     fnav_real_t H[3][N];
-    int cols[12], nc = 0, i, j;
+    int cols[15], nc = 0, i, j;
     fnav_vec3_t y;
     fnav_status_t st;
     if (f == NULL) {
@@ -606,21 +601,19 @@ fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_rocker_t r
     }
     y = fnav_vec3_scale(f->vel_mps, -FNAV_R(1.0));
     if (f->cfg.lever) {
-        int o = rocker == FNAV_ROCKER_TOE ? FNAV_UKF_RT : FNAV_UKF_RH;
-        fnav_vec3_t r = f->lever_m[rocker == FNAV_ROCKER_TOE ? 1 : 0];
         /* h = v - C (w x r) = 0 with w = w_m - b_g; first-order error terms:
          * dh/dr = -C [w x], dh/da = [u x] with u = C (w x r) (attitude error
          * in n), dh/db_g = -C [r x] */
         fnav_vec3_t w = fnav_vec3_sub(gyro_rps, f->bg_rps);
         fnav_mat3_t C = fnav_quat_to_dcm(f->q_nb);
         fnav_mat3_t Hr = fnav_mat3_mul(C, fnav_mat3_skew(w));
-        fnav_vec3_t u = fnav_mat3_mul_vec3(C, fnav_vec3_cross(w, r));
+        fnav_vec3_t u = fnav_mat3_mul_vec3(C, fnav_vec3_cross(w, f->lever_m));
         fnav_mat3_t Ha = fnav_mat3_skew(u);
-        fnav_mat3_t Hb = fnav_mat3_mul(C, fnav_mat3_skew(r));
+        fnav_mat3_t Hb = fnav_mat3_mul(C, fnav_mat3_skew(f->lever_m));
         y = fnav_vec3_sub(u, f->vel_mps);
         for (i = 0; i < 3; i++) {
             for (j = 0; j < 3; j++) {
-                H[i][o + j] = -Hr.m[i][j];
+                H[i][FNAV_UKF_R + j] = -Hr.m[i][j];
                 H[i][FNAV_UKF_A + j] = Ha.m[i][j];
                 if (f->cfg.bias_model == FNAV_BIAS_AR1) {
                     H[i][FNAV_UKF_BG + j] = -Hb.m[i][j];
@@ -628,7 +621,7 @@ fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_rocker_t r
             }
         }
         for (j = 0; j < 3; j++) {
-            cols[nc++] = o + j;
+            cols[nc++] = FNAV_UKF_R + j;
             cols[nc++] = FNAV_UKF_A + j;
             if (f->cfg.bias_model == FNAV_BIAS_AR1) {
                 cols[nc++] = FNAV_UKF_BG + j;

@@ -76,8 +76,6 @@ typedef struct {
     int lever;                         /**< 1: estimate the rolling-foot lever (fnav_ukf.h) */
     fnav_real_t lever_sd_m;            /**< initial lever sd, m */
     fnav_real_t lever_rw_m_rts;        /**< lever random walk, m/sqrt(s) */
-    fnav_real_t rocker_hyst_rps;       /**< |w| above its stance minimum by this: forefoot rocker, rad/s */
-    fnav_real_t zupt_skip_s;           /**< no ZUPT in the first this-many seconds of a stance, s */
     int zaru;                          /**< 1: zero-angular-rate updates in stance */
     fnav_real_t zaru_sigma_rps;        /**< ZARU noise, rad/s */
     fnav_real_t tilt_sd_rad;           /**< initial roll/pitch standard deviation, rad */
@@ -88,7 +86,8 @@ typedef struct {
     int closed_form;                   /**< UKF closed-form linear sigma points (1) */
 } fnav_nav_config_t;
 
-/** Defaults: profile "navchip" (paper Table IV), AR(1), SHOE adaptive. */
+/** Defaults: profile "navchip" (paper Table IV), bias model off, lever on,
+ *  SHOE with the adaptive threshold (docs/navigation.md gives the reasons). */
 extern const fnav_nav_config_t fnav_nav_config_default;
 
 /** Counters (also summarised in fnav_nav_frame_t.health). */
@@ -122,10 +121,6 @@ typedef struct {
     uint32_t health;        /**< FNAV_HEALTH_* bits */
     fnav_nav_stats_t stats;
     fnav_nav_frame_t last;  /**< newest frame */
-    int in_stance;          /**< the previous decision was stance */
-    fnav_rocker_t rocker;   /**< stance sub-phase for the lever */
-    fnav_real_t w_min_rps;  /**< smallest |w| since the stance began, rad/s */
-    int64_t stance_t0_ns;   /**< time the current stance began */
 } fnav_nav_t;
 
 /** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (profile or any module's

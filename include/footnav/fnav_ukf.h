@@ -18,26 +18,24 @@
  * +-90 degrees of pitch. The covariance of the attitude error is what the
  * output reports as the attitude variances (rad^2, about the n axes).
  *
- * Levers (optional, docs/navigation.md). A foot does not stand still in
- * stance: it rolls over the heel after the strike and over the forefoot
- * before the toe-off, so the IMU moves with v = C_nb (w x r) about the
- * contact point, r the lever from that pivot to the IMU in the body frame.
- * A plain ZUPT (v = 0) removes that motion every stride and the error
- * accumulates, mostly vertically. With config.lever = 1 the filter carries
- * two levers, heel rocker r_h and forefoot rocker r_t, as six more states
- * (constant, with a small random walk), and the zero-velocity update
- * measures v - C_nb (w x r) = 0, the velocity of the pivot, with the lever of
- * the stance sub-phase the caller gives; with lever = 0 it is the paper's
- * 15-state filter with v = 0.
+ * Lever (optional, docs/navigation.md). A foot does not stand still in
+ * stance: it rolls over the heel and then over the forefoot, so the IMU
+ * moves with v = C_nb (w x r) about the contact point, r the lever from that
+ * pivot to the IMU in the body frame. A plain ZUPT (v = 0) removes that
+ * motion every stride and the error accumulates, mostly vertically. With
+ * config.lever = 1 the filter carries r as three more states (constant, with
+ * a small random walk) and the zero-velocity update measures
+ * v - C_nb (w x r) = 0, the velocity of the pivot; with lever = 0 it is the
+ * paper's 15-state filter with v = 0.
  *
- * State order of the covariance (internal, fnav_ukf_t.P), FNAV_UKF_NMAX = 21:
- *   0-2 heel lever, 3-5 forefoot lever, 6-8 velocity, 9-11 position,
- *   12-14 attitude error, 15-17 gyro bias, 18-20 accelerometer bias. States
- *   that are switched off (levers without config.lever, biases with the bias
- *   model off) keep zero rows and columns and take no part in the sigma points.
- * Levers, velocity and position come first so that, with an upper-triangular
+ * State order of the covariance (internal, fnav_ukf_t.P), FNAV_UKF_NMAX = 18:
+ *   0-2 lever, 3-5 velocity, 6-8 position, 9-11 attitude error, 12-14 gyro
+ *   bias, 15-17 accelerometer bias. States that are switched off (lever
+ *   without config.lever, biases with the bias model off) keep zero rows and
+ *   columns and take no part in the sigma points.
+ * Lever, velocity and position come first so that, with an upper-triangular
  * Cholesky factor (P = U U^T, column j non-zero in rows 0..j only), the
- * sigma-point pairs along columns 0-11 differ from the centre only in those
+ * sigma-point pairs along columns 0-8 differ from the centre only in those
  * states, which the strapdown propagates exactly linearly (r' = r,
  * v' = v + dv, p' = p + dp + dv dt): those points are propagated in closed
  * form, the others through the full strapdown. The result is the same as
@@ -65,24 +63,17 @@ extern "C" {
 #endif
 
 #define FNAV_UKF_N 15    /**< the paper's state dimension (output order) */
-#define FNAV_UKF_NMAX 21 /**< with the optional lever states */
+#define FNAV_UKF_NMAX 18 /**< with the optional lever states */
 
 /** Internal covariance indices (see file comment). */
 enum {
-    FNAV_UKF_RH = 0,  /**< heel-rocker lever */
-    FNAV_UKF_RT = 3,  /**< forefoot-rocker lever */
-    FNAV_UKF_V = 6,
-    FNAV_UKF_P = 9,
-    FNAV_UKF_A = 12,
-    FNAV_UKF_BG = 15,
-    FNAV_UKF_BA = 18
+    FNAV_UKF_R = 0,
+    FNAV_UKF_V = 3,
+    FNAV_UKF_P = 6,
+    FNAV_UKF_A = 9,
+    FNAV_UKF_BG = 12,
+    FNAV_UKF_BA = 15
 };
-
-/** Stance sub-phase for the lever of the zero-velocity update. */
-typedef enum {
-    FNAV_ROCKER_HEEL = 0, /**< early stance: the foot rolls over the heel */
-    FNAV_ROCKER_TOE = 1   /**< late stance: the heel rises, the foot rolls over the forefoot */
-} fnav_rocker_t;
 
 /** Bias model (paper IV.A/IV.B). */
 typedef enum {
@@ -104,7 +95,7 @@ typedef struct {
     fnav_real_t zupt_sigma_mps;           /**< ZUPT measurement noise, m/s (default 0.01) */
     fnav_real_t zaru_sigma_rps;           /**< ZARU measurement noise, rad/s (default 0.01) */
     int closed_form;                      /**< 1 (default): closed-form linear sigma points */
-    int lever;                            /**< 1: estimate the pivot-to-IMU levers (default 0) */
+    int lever;                            /**< 1: estimate the pivot-to-IMU lever (default 0) */
     fnav_real_t lever_sd_m;               /**< initial lever sd per axis, m (default 0.1) */
     fnav_real_t lever_rw_m_rts;           /**< lever random walk, m/sqrt(s) (default 0.002) */
 } fnav_ukf_config_t;
@@ -133,11 +124,11 @@ typedef struct {
     uint32_t update_reject; /**< updates skipped (innovation covariance not positive) */
 } fnav_ukf_health_t;
 
-/** The filter (caller-owned, fixed size: 3 matrices of 21 x 21). */
+/** The filter (caller-owned, fixed size: 3 matrices of 18 x 18). */
 typedef struct {
     fnav_ukf_config_t cfg;
     int started;               /**< fnav_ukf_start() was called */
-    int n_act;                 /**< active states (9, 15 or 21) */
+    int n_act;                 /**< active states (9, 12, 15 or 18) */
     unsigned char act[FNAV_UKF_NMAX]; /**< internal indices of the active states, ascending */
     fnav_real_t gamma;         /**< sigma-point scale sqrt(n + lambda) */
     fnav_real_t w0m, w0c, wi;  /**< weights */
@@ -149,7 +140,7 @@ typedef struct {
     fnav_vec3_t ba_mps2;       /**< accel bias, m/s^2 */
     fnav_vec3_t bg0_rps;       /**< alignment gyro bias (AR(1) mean), rad/s */
     fnav_vec3_t ba0_mps2;      /**< alignment accel bias (AR(1) mean), m/s^2 */
-    fnav_vec3_t lever_m[2];    /**< heel and forefoot pivot-to-IMU levers in b, m */
+    fnav_vec3_t lever_m;       /**< pivot-to-IMU lever in b, m (0 without config.lever) */
     fnav_strapdown_hist_t hist;/**< previous increments (coning, sculling) */
     fnav_real_t P[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< covariance (internal order) */
     fnav_real_t U[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< scratch: Cholesky factor */
@@ -192,16 +183,15 @@ FNAV_WARN_UNUSED fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_
 /**
  * Zero-velocity update with standard deviation zupt_sigma_mps per axis:
  * v = 0, or with config.lever v - C_nb (w x r) = 0 for the bias-corrected
- * rate w of this sample and the lever r of the given rocker. The measurement is linear in the error states (the
+ * rate w of this sample. The measurement is linear in the error states (the
  * lever term to first order), so the exact Kalman update is used: it is what
  * the unscented update reduces to for a linear measurement.
  * @param gyro_rps  raw angular rate of the sample (body), rad/s (used with the lever)
- * @param rocker    stance sub-phase: which lever (used with the lever)
  * @return FNAV_OK; FNAV_E_STATE before start; FNAV_E_NANINF on a non-finite
  *         rate; FNAV_E_DECOMP when the innovation covariance is not positive
  *         (update skipped, counted).
  */
-FNAV_WARN_UNUSED fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_rocker_t rocker);
+FNAV_WARN_UNUSED fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps);
 
 /**
  * Zero-angular-rate update: the raw gyro reading equals the gyro bias
