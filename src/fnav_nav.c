@@ -190,6 +190,11 @@ static void sync_health(fnav_nav_t *nav)
 static void fill_frame(fnav_nav_t *nav, const fnav_stance_out_t *o, uint32_t flags, fnav_nav_frame_t *fr)
 {
     int i;
+    size_t b;
+    unsigned char *p = (unsigned char *)fr;
+    for (b = 0; b < sizeof *fr; b++) {
+        p[b] = 0; /* padding too: frames are byte-for-byte reproducible */
+    }
     fr->t_ns = o->sample.t_ns;
     fr->seq = o->sample.seq;
     fr->flags = flags;
@@ -312,6 +317,11 @@ void fnav_nav_finish(fnav_nav_t *nav)
 {
     FNAV_ASSERT(nav != NULL);
     fnav_stance_finish(&nav->stance);
+    /* the input ended while the foot was still: align on that period, so
+     * that the frames still held back are navigated */
+    if (!nav->aligned && fnav_align_finish(&nav->align) == FNAV_OK) {
+        start_filter(nav);
+    }
 }
 
 fnav_status_t fnav_nav_step(fnav_nav_t *nav, const fnav_sample_t *sample, fnav_nav_frame_t *frame)
