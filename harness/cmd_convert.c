@@ -36,6 +36,9 @@ int hx_cmd_convert(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    if (hx_check_input_opts("convert", &a) != 0) {
+        return HX_EXIT_USAGE;
+    }
     to_name = hx_arg(&a, "--to");
     if (to_name != NULL) {
         to = hx_format_from_name(to_name);

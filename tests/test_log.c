@@ -375,6 +375,66 @@ static void test_csv_gzip(void **state)
     unlink(p);
 }
 
+/* A foreign recording whose last line was cut off mid-write keeps every
+ * complete line and warns; our own CSV treats the same as an error. */
+static void test_cut_last_line(void **state)
+{
+    char p[256], err[320];
+    hx_reader_t *r;
+    fnav_sample_t s;
+    int n = 0;
+    fnav_status_t st;
+    readall_t ra;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps,q0,q1,q2,q3\n"
+                  "0,0.1,0.2,-9.8,0.01,0.02,0.03,1,0,0,0\n"
+                  "1,0.1,0.2,-9.8,0.01,0.02,0.03,1,0,0,0\n"
+                  "2,0.1,0.2,-9.");
+    r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_non_null(r);
+    assert_int_equal(hx_reader_meta(r)->format, HX_FMT_SQUARE2);
+    while ((st = hx_reader_next(r, &s)) == FNAV_OK) {
+        n++;
+    }
+    assert_int_equal(st, FNAV_END);
+    assert_int_equal(n, 2);
+    assert_non_null(strstr(hx_reader_warnings(r), ":4: last line is incomplete"));
+    hx_reader_close(r);
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.01,1,2,3");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+    assert_int_equal(ra.n, 1);
+    assert_int_equal(ra.end, FNAV_E_FORMAT);
+    unlink(p);
+}
+
+/* Found by fuzzing: counters beyond 32 bits or time beyond int64 ns are
+ * format errors, never undefined conversions. */
+static void test_counter_ranges(void **state)
+{
+    char p[256];
+    readall_t r;
+    (void)state;
+    tmp_path(p, sizeof p, ".txt");
+    write_text(p, "Inertial data.\nHeader: a_x [g]:\n"
+                  "   0xcb   -0.1   +0.15   +0.99   +0.005   -0.012   +0.001     130516848    0x15fd       87782700000 "
+                  "1274434048.503018 1274434048.503018 1274434048.507018  250.0   -0.12   -0.01   -0.46\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.n, 0);
+    assert_int_equal(r.end, FNAV_E_FORMAT);
+    assert_non_null(strstr(r.err, "32-bit"));
+    write_text(p, "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps\n"
+                  "0,0.1,0.2,-9.8,0.01,0.02,0.03\n1.5,0.1,0.2,-9.8,0.01,0.02,0.03\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.n, 1);
+    assert_int_equal(r.end, FNAV_E_FORMAT);
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n99999999999.5,1,2,3,4,5,6\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.n, 0);
+    assert_int_not_equal(r.end, FNAV_END);
+    unlink(p);
+}
+
 static void test_bad_rate(void **state)
 {
     char err[320];
@@ -646,6 +706,8 @@ int main(void)
         cmocka_unit_test(test_csv_malformed),
         cmocka_unit_test(test_csv_flexible),
         cmocka_unit_test(test_csv_gzip),
+        cmocka_unit_test(test_cut_last_line),
+        cmocka_unit_test(test_counter_ranges),
         cmocka_unit_test(test_bad_rate),
         cmocka_unit_test(test_importers),
         cmocka_unit_test(test_importer_units),
