@@ -174,6 +174,7 @@ static int set_param(fnav_nav_config_t *c, const char *kv, char *err, size_t err
 
 int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, size_t err_size)
 {
+    static fnav_nav_t probe; /* validates the configuration as the core will */
     int i;
     *cfg = fnav_nav_config_default;
     if (o->profile != NULL && hx_profile_load(o->profile, &cfg->profile, err, err_size) != 0) {
@@ -192,6 +193,10 @@ int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, siz
     }
     if (o->rate_hz > 0.0) {
         cfg->stance.rate_hz = (fnav_real_t)o->rate_hz;
+    }
+    if (fnav_nav_init(&probe, cfg) != FNAV_OK) {
+        snprintf(err, err_size, "navigation configuration rejected by the core (a --param value out of range)");
+        return -1;
     }
     return 0;
 }
@@ -480,12 +485,6 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         if (r == NULL) {
             return -1;
         }
-        {
-            const char *w = hx_reader_warnings(r);
-            if (w != NULL && *w != '\0') {
-                hx_warn(cmd, "%s", w);
-            }
-        }
     }
     fnav_linux_port_init(&pc.linux_port, &pc.lctx, r, csv);
     pc.traj = traj;
@@ -520,6 +519,11 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         traj->aligned = nav.aligned;
     }
     if (r != NULL) {
+        /* warnings collected while reading (assumed rates, cut-off lines) */
+        const char *w = hx_reader_warnings(r);
+        if (w != NULL && *w != '\0') {
+            hx_warn(cmd, "%s", w);
+        }
         hx_reader_close(r);
     }
     hx_log_free(&res);
