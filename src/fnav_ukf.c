@@ -106,17 +106,41 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
     for (i = 0; i < N; i++) {
         int on = (i >= FNAV_UKF_V && i < FNAV_UKF_BG) || (i < FNAV_UKF_V && cfg->lever) ||
                  (i >= FNAV_UKF_BG && cfg->bias_model == FNAV_BIAS_AR1);
+        f->pos[i] = -1;
         if (on) {
+            f->pos[i] = (signed char)f->n_act;
             f->act[f->n_act++] = (unsigned char)i;
         }
     }
     FNAV_ASSERT(f->n_act == n);
+    /* active states come in triples; the linear ones (lever, velocity,
+     * position) are the leading packed states */
+    for (f->n_lin = 0; f->n_lin < n && f->act[f->n_lin] < FNAV_UKF_A; f->n_lin++) {
+    }
     f->gamma = fnav_sqrt((fnav_real_t)n + lambda);
     f->w0m = lambda / ((fnav_real_t)n + lambda);
     f->w0c = f->w0m + FNAV_R(1.0) - cfg->alpha * cfg->alpha + cfg->beta;
     f->wi = FNAV_R(0.5) / ((fnav_real_t)n + lambda);
     f->q_nb = fnav_quat_identity();
     return FNAV_OK;
+}
+
+/* Covariance element of internal states i, j (0 for an inactive state). */
+fnav_real_t fnav_ukf_cov(const fnav_ukf_t *f, int i, int j)
+{
+    FNAV_ASSERT(f != NULL && i >= 0 && i < N && j >= 0 && j < N);
+    if (f->pos[i] < 0 || f->pos[j] < 0) {
+        return FNAV_R(0.0);
+    }
+    return f->P[f->pos[i]][f->pos[j]];
+}
+
+/* Set a covariance element (and its mirror) of active internal states. */
+void fnav_ukf_set_cov(fnav_ukf_t *f, int i, int j, fnav_real_t v)
+{
+    FNAV_ASSERT(f != NULL && i >= 0 && i < N && j >= 0 && j < N && f->pos[i] >= 0 && f->pos[j] >= 0);
+    f->P[f->pos[i]][f->pos[j]] = v;
+    f->P[f->pos[j]][f->pos[i]] = v;
 }
 
 fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps, fnav_vec3_t ba_mps2,
@@ -153,39 +177,33 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
         }
     }
     for (i = 0; i < 3; i++) {
-        f->P[FNAV_UKF_V + i][FNAV_UKF_V + i] = sd->vel_mps * sd->vel_mps;
-        f->P[FNAV_UKF_P + i][FNAV_UKF_P + i] = sd->pos_m * sd->pos_m;
-        f->P[FNAV_UKF_A + i][FNAV_UKF_A + i] = sd->att_rad[i] * sd->att_rad[i];
+        fnav_ukf_set_cov(f, FNAV_UKF_V + i, FNAV_UKF_V + i, sd->vel_mps * sd->vel_mps);
+        fnav_ukf_set_cov(f, FNAV_UKF_P + i, FNAV_UKF_P + i, sd->pos_m * sd->pos_m);
+        fnav_ukf_set_cov(f, FNAV_UKF_A + i, FNAV_UKF_A + i, sd->att_rad[i] * sd->att_rad[i]);
         if (f->cfg.bias_model == FNAV_BIAS_AR1) {
-            f->P[FNAV_UKF_BG + i][FNAV_UKF_BG + i] = sd->gyro_bias_rps[i] * sd->gyro_bias_rps[i];
-            f->P[FNAV_UKF_BA + i][FNAV_UKF_BA + i] = sd->accel_bias_mps2[i] * sd->accel_bias_mps2[i];
+            fnav_ukf_set_cov(f, FNAV_UKF_BG + i, FNAV_UKF_BG + i, sd->gyro_bias_rps[i] * sd->gyro_bias_rps[i]);
+            fnav_ukf_set_cov(f, FNAV_UKF_BA + i, FNAV_UKF_BA + i, sd->accel_bias_mps2[i] * sd->accel_bias_mps2[i]);
         }
         if (f->cfg.lever) {
-            f->P[FNAV_UKF_R + i][FNAV_UKF_R + i] = f->cfg.lever_sd_m * f->cfg.lever_sd_m;
+            fnav_ukf_set_cov(f, FNAV_UKF_R + i, FNAV_UKF_R + i, f->cfg.lever_sd_m * f->cfg.lever_sd_m);
         }
     }
     f->started = 1;
     return FNAV_OK;
 }
 
-/* Upper-triangular Cholesky factor, A = U U^T, over the active states
- * act[0..n-1]; reads (only) the upper triangle of A; U is zero outside the
- * active rows and columns. Column j of U is non-zero in rows 0..j only.
- * Returns 0, or -1 at the first pivot that is not clearly positive. */
-static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], const unsigned char *act, int n)
+/* Upper-triangular Cholesky factor A = U U^T of the leading n x n block
+ * (packed states); reads only the upper triangle of A. Column j of U is
+ * non-zero in rows 0..j only. Returns 0, or -1 at the first pivot that is
+ * not clearly positive. */
+static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], int n)
 {
-    int ii, jj, kk, i, j;
-    for (i = 0; i < N; i++) {
-        for (j = 0; j < N; j++) {
-            U[i][j] = FNAV_R(0.0);
-        }
-    }
-    for (jj = n - 1; jj >= 0; jj--) {
-        fnav_real_t d, inv;
-        j = act[jj];
-        d = A[j][j];
-        for (kk = jj + 1; kk < n; kk++) {
-            d -= U[j][act[kk]] * U[j][act[kk]];
+    int i, j, k;
+    for (j = n - 1; j >= 0; j--) {
+        fnav_real_t d = A[j][j], inv;
+        const fnav_real_t *uj = U[j];
+        for (k = j + 1; k < n; k++) {
+            d -= uj[k] * uj[k];
         }
         if (!(d > FNAV_REAL_EPSILON * A[j][j]) || !fnav_isfinite(d)) {
             return -1;
@@ -193,14 +211,16 @@ static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], const unsigned c
         d = fnav_sqrt(d);
         U[j][j] = d;
         inv = FNAV_R(1.0) / d;
-        for (ii = 0; ii < jj; ii++) {
-            fnav_real_t sum;
-            i = act[ii];
-            sum = A[i][j];
-            for (kk = jj + 1; kk < n; kk++) {
-                sum -= U[i][act[kk]] * U[j][act[kk]];
+        for (i = 0; i < j; i++) {
+            fnav_real_t sum = A[i][j];
+            const fnav_real_t *ui = U[i];
+            for (k = j + 1; k < n; k++) {
+                sum -= ui[k] * uj[k];
             }
             U[i][j] = sum * inv;
+        }
+        for (i = j + 1; i < n; i++) {
+            U[i][j] = FNAV_R(0.0);
         }
     }
     return 0;
@@ -209,30 +229,26 @@ static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], const unsigned c
 /* Guarded factorisation: 0 ok, 1 ok after jitter, 2 after a reset. */
 static int factor(fnav_ukf_t *f)
 {
-    int n = f->n_act, ii, jj;
-    if (chol_upper(f->P, f->U, f->act, n) == 0) {
+    int n = f->n_act, i, j;
+    if (chol_upper(f->P, f->U, n) == 0) {
         return 0;
     }
-    for (ii = 0; ii < n; ii++) {
-        int i = f->act[ii];
-        for (jj = ii + 1; jj < n; jj++) {
-            int j = f->act[jj];
+    for (i = 0; i < n; i++) {
+        for (j = i + 1; j < n; j++) {
             fnav_real_t sy = FNAV_R(0.5) * (f->P[i][j] + f->P[j][i]);
             f->P[i][j] = sy;
             f->P[j][i] = sy;
         }
         f->P[i][i] += FNAV_R(1.0e-6) * f->P[i][i];
     }
-    if (chol_upper(f->P, f->U, f->act, n) == 0) {
+    if (chol_upper(f->P, f->U, n) == 0) {
         f->health.chol_jitter++;
         return 1;
     }
-    for (ii = 0; ii < n; ii++) {
-        int i = f->act[ii];
-        for (jj = 0; jj < N; jj++) {
-            if (jj != i) {
-                f->P[i][jj] = FNAV_R(0.0);
-                f->P[jj][i] = FNAV_R(0.0);
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++) {
+            if (i != j) {
+                f->P[i][j] = FNAV_R(0.0);
             }
         }
         if (!(f->P[i][i] > FNAV_R(1.0e-20)) || !fnav_isfinite(f->P[i][i])) {
@@ -240,11 +256,9 @@ static int factor(fnav_ukf_t *f)
         }
     }
     f->health.chol_reset++;
-    if (chol_upper(f->P, f->U, f->act, n) != 0) {
-        /* a positive diagonal always factors; keep U consistent anyway */
-        for (ii = 0; ii < n; ii++) {
-            int i = f->act[ii];
-            f->U[i][i] = fnav_sqrt(f->P[i][i]);
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++) {
+            f->U[i][j] = (i == j) ? fnav_sqrt(f->P[i][i]) : FNAV_R(0.0);
         }
     }
     return 2;
@@ -256,22 +270,21 @@ static int state_finite(const fnav_strapdown_state_t *x)
            fnav_isfinite(x->q_nb.q[1]) && fnav_isfinite(x->q_nb.q[2]) && fnav_isfinite(x->q_nb.q[3]);
 }
 
-/* S (upper) += w d d^T and m += w d over the active states act[0..nnz-1]. */
-static void accumulate(fnav_real_t S[N][N], fnav_real_t m[N], const fnav_real_t d[N], const unsigned char *act,
-                       int nnz, fnav_real_t w)
+/* S (upper) += w d d^T over the leading nnz packed states. */
+static void accumulate(fnav_real_t S[N][N], const fnav_real_t *d, int nnz, fnav_real_t w)
 {
-    int aa, bb;
-    for (aa = 0; aa < nnz; aa++) {
-        int a = act[aa];
+    int a, b;
+    for (a = 0; a < nnz; a++) {
         fnav_real_t wd = w * d[a];
-        m[a] += wd;
-        for (bb = aa; bb < nnz; bb++) {
-            S[a][act[bb]] += wd * d[act[bb]];
+        fnav_real_t *sa = S[a];
+        for (b = a; b < nnz; b++) {
+            sa[b] += wd * d[b];
         }
     }
 }
 
-/* 3x3 block of C diag(s2) C^T dt added to the upper triangle of S at o. */
+/* 3x3 block of C diag(dens^2) C^T dt added to the upper triangle of S at the
+ * packed offset o. */
 static void add_rotated_noise(fnav_real_t S[N][N], int o, fnav_mat3_t C, const fnav_real_t dens[3], fnav_real_t dt)
 {
     int i, j, k;
@@ -292,9 +305,9 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     fnav_strapdown_incr_t inc;
     fnav_strapdown_state_t x0, xi;
     fnav_quat_t q0inv;
-    fnav_real_t m[N], d[N], dx[N], cb[6], qb[6];
-    fnav_real_t kmm;
-    int n, n_lin, i, j, ii, jj, s, fr;
+    fnav_real_t m[N], d[N], dxp[N], dx[N], cb[6], qb[6];
+    fnav_real_t kmm, g;
+    int n, nl, i, j, jj, s, fr, ov, op;
     if (f == NULL) {
         return FNAV_E_ARG;
     }
@@ -313,6 +326,9 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     }
     c = &f->cfg;
     n = f->n_act;
+    nl = f->n_lin;
+    ov = f->pos[FNAV_UKF_V];
+    op = f->pos[FNAV_UKF_P];
     fr = factor(f);
 
     fnav_strapdown_increments(&c->strapdown, &f->hist, fnav_vec3_sub(gyro_rps, f->bg_rps),
@@ -338,32 +354,38 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
         }
     }
 
-    for (i = 0; i < N; i++) {
+    for (i = 0; i < n; i++) {
         m[i] = FNAV_R(0.0);
-        d[i] = FNAV_R(0.0);
-        for (j = i; j < N; j++) {
+        for (j = i; j < n; j++) {
             f->S[i][j] = FNAV_R(0.0);
         }
     }
-    for (n_lin = 0; n_lin < n && f->act[n_lin] < FNAV_UKF_A; n_lin++) {
-    }
     for (jj = 0; jj < n; jj++) {
-        j = f->act[jj];
-        for (s = 0; s < 2; s++) {
-            fnav_real_t g = s == 0 ? f->gamma : -f->gamma;
-            for (i = 0; i < N; i++) {
-                dx[i] = (i <= j) ? g * f->U[i][j] : FNAV_R(0.0);
+        if (c->closed_form && jj < nl) {
+            /* the pair +-gamma U_j differs from the centre only in lever,
+             * velocity and position, which propagate exactly linearly
+             * (r' = r, v' = v + dv, p' = p + dp + dv dt): D- = -D+, so the pair
+             * adds 2 W D D^T and nothing to the mean */
+            g = f->gamma;
+            for (i = 0; i <= jj; i++) {
+                d[i] = g * f->U[i][jj];
             }
-            if (c->closed_form && j < FNAV_UKF_A) {
-                /* only lever, velocity and position differ: exact linear
-                 * propagation (the lever is constant) */
-                for (i = 0; i < 3; i++) {
-                    d[FNAV_UKF_R + i] = dx[FNAV_UKF_R + i];
-                    d[FNAV_UKF_V + i] = dx[FNAV_UKF_V + i];
-                    d[FNAV_UKF_P + i] = dx[FNAV_UKF_P + i] + dx[FNAV_UKF_V + i] * dt_s;
-                }
-                accumulate(f->S, m, d, f->act, n_lin, f->wi);
-                continue;
+            for (; i < nl; i++) {
+                d[i] = FNAV_R(0.0);
+            }
+            for (i = 0; i < 3; i++) {
+                d[op + i] += d[ov + i] * dt_s;
+            }
+            accumulate(f->S, d, nl, FNAV_R(2.0) * f->wi);
+            continue;
+        }
+        for (s = 0; s < 2; s++) {
+            g = s == 0 ? f->gamma : -f->gamma;
+            for (i = 0; i < n; i++) {
+                dxp[i] = (i <= jj) ? g * f->U[i][jj] : FNAV_R(0.0);
+            }
+            for (i = 0; i < N; i++) {
+                dx[i] = f->pos[i] >= 0 ? dxp[f->pos[i]] : FNAV_R(0.0);
             }
             xi.q_nb = apply_att(f->q_nb, fnav_vec3_from(&dx[FNAV_UKF_A]));
             xi.vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&dx[FNAV_UKF_V]));
@@ -375,15 +397,18 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
                 fnav_vec3_t dp = fnav_vec3_sub(xi.pos_m, x0.pos_m);
                 fnav_vec3_t da = fnav_ukf_quat_to_grp(fnav_quat_mul(xi.q_nb, q0inv));
                 for (i = 0; i < 3; i++) {
-                    d[FNAV_UKF_R + i] = dx[FNAV_UKF_R + i];
-                    d[FNAV_UKF_V + i] = dv.v[i];
-                    d[FNAV_UKF_P + i] = dp.v[i];
-                    d[FNAV_UKF_A + i] = da.v[i];
-                    d[FNAV_UKF_BG + i] = cb[i] * dx[FNAV_UKF_BG + i];
-                    d[FNAV_UKF_BA + i] = cb[3 + i] * dx[FNAV_UKF_BA + i];
+                    dx[FNAV_UKF_V + i] = dv.v[i];
+                    dx[FNAV_UKF_P + i] = dp.v[i];
+                    dx[FNAV_UKF_A + i] = da.v[i];
+                    dx[FNAV_UKF_BG + i] *= cb[i];
+                    dx[FNAV_UKF_BA + i] *= cb[3 + i];
                 }
             }
-            accumulate(f->S, m, d, f->act, n, f->wi);
+            for (i = 0; i < n; i++) {
+                d[i] = dx[f->act[i]];
+                m[i] += f->wi * d[i];
+            }
+            accumulate(f->S, d, n, f->wi);
         }
     }
     /* With the propagated centre as reference (D_0 = 0) and the mean
@@ -391,31 +416,30 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
      * S - 2 m m^T + (1 - W0m) m m^T + W0c m m^T = S + (beta - alpha^2) m m^T,
      * S = sum_{i>0} W_i D_i D_i^T; with beta >= alpha^2 every term is PSD. */
     kmm = c->beta - c->alpha * c->alpha;
-    for (ii = 0; ii < n; ii++) {
-        i = f->act[ii];
-        for (jj = ii; jj < n; jj++) {
-            j = f->act[jj];
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
             f->S[i][j] += kmm * m[i] * m[j];
         }
     }
     {
         fnav_mat3_t C = fnav_quat_to_dcm(x0.q_nb);
-        add_rotated_noise(f->S, FNAV_UKF_V, C, c->accel_noise_mps2_rthz, dt_s);
-        add_rotated_noise(f->S, FNAV_UKF_A, C, c->gyro_noise_rps_rthz, dt_s);
+        add_rotated_noise(f->S, ov, C, c->accel_noise_mps2_rthz, dt_s);
+        add_rotated_noise(f->S, f->pos[FNAV_UKF_A], C, c->gyro_noise_rps_rthz, dt_s);
     }
     for (i = 0; i < 3; i++) {
         if (c->bias_model == FNAV_BIAS_AR1) {
-            f->S[FNAV_UKF_BG + i][FNAV_UKF_BG + i] += qb[i];
-            f->S[FNAV_UKF_BA + i][FNAV_UKF_BA + i] += qb[3 + i];
+            int ob = f->pos[FNAV_UKF_BG], oa = f->pos[FNAV_UKF_BA];
+            f->S[ob + i][ob + i] += qb[i];
+            f->S[oa + i][oa + i] += qb[3 + i];
         }
         if (c->lever) {
-            f->S[FNAV_UKF_R + i][FNAV_UKF_R + i] += c->lever_rw_m_rts * c->lever_rw_m_rts * dt_s;
+            int orr = f->pos[FNAV_UKF_R];
+            f->S[orr + i][orr + i] += c->lever_rw_m_rts * c->lever_rw_m_rts * dt_s;
         }
     }
-    for (ii = 0; ii < n; ii++) {
-        i = f->act[ii];
-        for (jj = ii; jj < n; jj++) {
-            if (!fnav_isfinite(f->S[i][f->act[jj]])) {
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
+            if (!fnav_isfinite(f->S[i][j])) {
                 f->health.diverged++;
                 return FNAV_E_DIVERGED;
             }
@@ -423,9 +447,9 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     }
     /* fold the mean into the nominal state (the bias and lever means are zero
      * by the symmetry of the sigma points) */
-    x0.q_nb = apply_att(x0.q_nb, fnav_vec3_from(&m[FNAV_UKF_A]));
-    x0.vel_mps = fnav_vec3_add(x0.vel_mps, fnav_vec3_from(&m[FNAV_UKF_V]));
-    x0.pos_m = fnav_vec3_add(x0.pos_m, fnav_vec3_from(&m[FNAV_UKF_P]));
+    x0.q_nb = apply_att(x0.q_nb, fnav_vec3_from(&m[f->pos[FNAV_UKF_A]]));
+    x0.vel_mps = fnav_vec3_add(x0.vel_mps, fnav_vec3_from(&m[ov]));
+    x0.pos_m = fnav_vec3_add(x0.pos_m, fnav_vec3_from(&m[op]));
     if (!state_finite(&x0)) {
         f->health.diverged++;
         return FNAV_E_DIVERGED;
@@ -437,10 +461,8 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
         f->bg_rps.v[i] = f->bg0_rps.v[i] + cb[i] * (f->bg_rps.v[i] - f->bg0_rps.v[i]);
         f->ba_mps2.v[i] = f->ba0_mps2.v[i] + cb[3 + i] * (f->ba_mps2.v[i] - f->ba0_mps2.v[i]);
     }
-    for (ii = 0; ii < n; ii++) {
-        i = f->act[ii];
-        for (jj = ii; jj < n; jj++) {
-            j = f->act[jj];
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
             f->P[i][j] = f->S[i][j];
             f->P[j][i] = f->S[i][j];
         }
@@ -450,19 +472,22 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     return fr == 2 ? FNAV_E_DECOMP : FNAV_OK;
 }
 
-/* Linear update with a 3-row measurement matrix H (non-zero only in the
- * columns cols[0..nc-1]), innovation y and variance r2 per axis, in Joseph
- * form: P' = (I - K H) P (I - K H)^T + K R K^T, with only the upper
- * triangle computed and then mirrored. */
-static fnav_status_t update(fnav_ukf_t *f, fnav_real_t H[3][N], const int *cols, int nc, fnav_vec3_t y, fnav_real_t r2)
+/* Linear update with a 3-row measurement matrix f->Hm over the packed states
+ * (non-zero only in the packed columns cols[0..nc-1]), innovation y and
+ * variance r2 per axis, in Joseph form: P' = (I - K H) P (I - K H)^T + K R K^T,
+ * with only the upper triangle computed and then mirrored. */
+static fnav_status_t update(fnav_ukf_t *f, const int *cols, int nc, fnav_vec3_t y, fnav_real_t r2)
 {
-    int n = f->n_act, ii, jj, i, j, k, c;
-    fnav_real_t s[3][3], si[3][3], det, K[N][3], PHt[N][3], APHt[N][3], dx[N];
-    fnav_real_t (*AP)[N] = f->S; /* scratch */
-    fnav_real_t (*Pn)[N] = f->U; /* scratch */
-    /* P H^T (n x 3) over the active rows */
-    for (ii = 0; ii < n; ii++) {
-        i = f->act[ii];
+    int n = f->n_act, i, j, k, c;
+    fnav_real_t s[3][3], si[3][3], det, dx[N], dxi[N];
+    fnav_real_t (*H)[N] = f->Hm;  /* scratch in the object: a small stack */
+    fnav_real_t (*K)[3] = f->K;
+    fnav_real_t (*PHt)[3] = f->PHt;
+    fnav_real_t (*APHt)[3] = f->APHt;
+    fnav_real_t (*AP)[N] = f->S;
+    fnav_real_t (*Pn)[N] = f->U;
+    /* P H^T (n x 3) */
+    for (i = 0; i < n; i++) {
         for (k = 0; k < 3; k++) {
             fnav_real_t sum = FNAV_R(0.0);
             for (c = 0; c < nc; c++) {
@@ -505,8 +530,7 @@ static fnav_status_t update(fnav_ukf_t *f, fnav_real_t H[3][N], const int *cols,
             si[i][j] *= det;
         }
     }
-    for (ii = 0; ii < n; ii++) {
-        i = f->act[ii];
+    for (i = 0; i < n; i++) {
         for (k = 0; k < 3; k++) {
             K[i][k] = PHt[i][0] * si[0][k] + PHt[i][1] * si[1][k] + PHt[i][2] * si[2][k];
         }
@@ -516,17 +540,16 @@ static fnav_status_t update(fnav_ukf_t *f, fnav_real_t H[3][N], const int *cols,
             return FNAV_E_DIVERGED;
         }
     }
-    /* AP = (I - K H) P = P - K (H P) = P - K PHt^T (P symmetric) */
-    for (ii = 0; ii < n; ii++) {
-        i = f->act[ii];
-        for (jj = 0; jj < n; jj++) {
-            j = f->act[jj];
-            AP[i][j] = f->P[i][j] - K[i][0] * PHt[j][0] - K[i][1] * PHt[j][1] - K[i][2] * PHt[j][2];
+    /* AP = (I - K H) P = P - K (P H^T)^T, needed in the columns of H and in
+     * the upper triangle */
+    for (i = 0; i < n; i++) {
+        const fnav_real_t *ki = K[i];
+        for (j = 0; j < n; j++) {
+            AP[i][j] = f->P[i][j] - ki[0] * PHt[j][0] - ki[1] * PHt[j][1] - ki[2] * PHt[j][2];
         }
     }
     /* (AP) H^T */
-    for (ii = 0; ii < n; ii++) {
-        i = f->act[ii];
+    for (i = 0; i < n; i++) {
         for (k = 0; k < 3; k++) {
             fnav_real_t sum = FNAV_R(0.0);
             for (c = 0; c < nc; c++) {
@@ -536,13 +559,10 @@ static fnav_status_t update(fnav_ukf_t *f, fnav_real_t H[3][N], const int *cols,
         }
     }
     /* P' = AP - (AP H^T) K^T + r2 K K^T */
-    for (ii = 0; ii < n; ii++) {
-        i = f->act[ii];
-        for (jj = ii; jj < n; jj++) {
-            fnav_real_t v;
-            j = f->act[jj];
-            v = AP[i][j] - APHt[i][0] * K[j][0] - APHt[i][1] * K[j][1] - APHt[i][2] * K[j][2] +
-                r2 * (K[i][0] * K[j][0] + K[i][1] * K[j][1] + K[i][2] * K[j][2]);
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
+            fnav_real_t v = AP[i][j] - APHt[i][0] * K[j][0] - APHt[i][1] * K[j][1] - APHt[i][2] * K[j][2] +
+                            r2 * (K[i][0] * K[j][0] + K[i][1] * K[j][1] + K[i][2] * K[j][2]);
             if (!fnav_isfinite(v)) {
                 f->health.diverged++;
                 return FNAV_E_DIVERGED;
@@ -550,36 +570,38 @@ static fnav_status_t update(fnav_ukf_t *f, fnav_real_t H[3][N], const int *cols,
             Pn[i][j] = v;
         }
     }
-    for (ii = 0; ii < n; ii++) {
-        i = f->act[ii];
-        for (jj = ii; jj < n; jj++) {
-            j = f->act[jj];
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
             f->P[i][j] = Pn[i][j];
             f->P[j][i] = Pn[i][j];
         }
     }
     for (i = 0; i < N; i++) {
-        int on = 0;
-        for (ii = 0; ii < n; ii++) {
-            on |= f->act[ii] == i;
-        }
-        if (!on) {
-            dx[i] = FNAV_R(0.0);
+        dxi[i] = f->pos[i] >= 0 ? dx[f->pos[i]] : FNAV_R(0.0);
+    }
+    f->lever_m = fnav_vec3_add(f->lever_m, fnav_vec3_from(&dxi[FNAV_UKF_R]));
+    f->vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&dxi[FNAV_UKF_V]));
+    f->pos_m = fnav_vec3_add(f->pos_m, fnav_vec3_from(&dxi[FNAV_UKF_P]));
+    f->q_nb = apply_att(f->q_nb, fnav_vec3_from(&dxi[FNAV_UKF_A]));
+    f->bg_rps = fnav_vec3_add(f->bg_rps, fnav_vec3_from(&dxi[FNAV_UKF_BG]));
+    f->ba_mps2 = fnav_vec3_add(f->ba_mps2, fnav_vec3_from(&dxi[FNAV_UKF_BA]));
+    return FNAV_OK;
+}
+
+/* Clear the measurement matrix over the packed states. */
+static void clear_h(fnav_ukf_t *f)
+{
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < f->n_act; j++) {
+            f->Hm[i][j] = FNAV_R(0.0);
         }
     }
-    f->lever_m = fnav_vec3_add(f->lever_m, fnav_vec3_from(&dx[FNAV_UKF_R]));
-    f->vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&dx[FNAV_UKF_V]));
-    f->pos_m = fnav_vec3_add(f->pos_m, fnav_vec3_from(&dx[FNAV_UKF_P]));
-    f->q_nb = apply_att(f->q_nb, fnav_vec3_from(&dx[FNAV_UKF_A]));
-    f->bg_rps = fnav_vec3_add(f->bg_rps, fnav_vec3_from(&dx[FNAV_UKF_BG]));
-    f->ba_mps2 = fnav_vec3_add(f->ba_mps2, fnav_vec3_from(&dx[FNAV_UKF_BA]));
-    return FNAV_OK;
 }
 
 fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
 {
-    fnav_real_t H[3][N];
-    int cols[15], nc = 0, i, j;
+    int cols[9], nc = 0, i, j;
     fnav_vec3_t y;
     fnav_status_t st;
     if (f == NULL) {
@@ -592,12 +614,10 @@ fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
         f->health.nan_inputs++;
         return FNAV_E_NANINF;
     }
+    clear_h(f);
     for (i = 0; i < 3; i++) {
-        for (j = 0; j < N; j++) {
-            H[i][j] = FNAV_R(0.0);
-        }
-        H[i][FNAV_UKF_V + i] = FNAV_R(1.0);
-        cols[nc++] = FNAV_UKF_V + i;
+        f->Hm[i][f->pos[FNAV_UKF_V] + i] = FNAV_R(1.0);
+        cols[nc++] = f->pos[FNAV_UKF_V] + i;
     }
     y = fnav_vec3_scale(f->vel_mps, -FNAV_R(1.0));
     if (f->cfg.lever) {
@@ -610,25 +630,26 @@ fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
         fnav_vec3_t u = fnav_mat3_mul_vec3(C, fnav_vec3_cross(w, f->lever_m));
         fnav_mat3_t Ha = fnav_mat3_skew(u);
         fnav_mat3_t Hb = fnav_mat3_mul(C, fnav_mat3_skew(f->lever_m));
+        int orr = f->pos[FNAV_UKF_R], oa = f->pos[FNAV_UKF_A], ob = f->pos[FNAV_UKF_BG];
         y = fnav_vec3_sub(u, f->vel_mps);
         for (i = 0; i < 3; i++) {
             for (j = 0; j < 3; j++) {
-                H[i][FNAV_UKF_R + j] = -Hr.m[i][j];
-                H[i][FNAV_UKF_A + j] = Ha.m[i][j];
-                if (f->cfg.bias_model == FNAV_BIAS_AR1) {
-                    H[i][FNAV_UKF_BG + j] = -Hb.m[i][j];
+                f->Hm[i][orr + j] = -Hr.m[i][j];
+                f->Hm[i][oa + j] = Ha.m[i][j];
+                if (ob >= 0) {
+                    f->Hm[i][ob + j] = -Hb.m[i][j];
                 }
             }
         }
         for (j = 0; j < 3; j++) {
-            cols[nc++] = FNAV_UKF_R + j;
-            cols[nc++] = FNAV_UKF_A + j;
-            if (f->cfg.bias_model == FNAV_BIAS_AR1) {
-                cols[nc++] = FNAV_UKF_BG + j;
+            cols[nc++] = orr + j;
+            cols[nc++] = oa + j;
+            if (ob >= 0) {
+                cols[nc++] = ob + j;
             }
         }
     }
-    st = update(f, H, cols, nc, y, f->cfg.zupt_sigma_mps * f->cfg.zupt_sigma_mps);
+    st = update(f, cols, nc, y, f->cfg.zupt_sigma_mps * f->cfg.zupt_sigma_mps);
     if (st == FNAV_OK) {
         f->health.zupts++;
     }
@@ -637,8 +658,7 @@ fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
 
 fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
 {
-    fnav_real_t H[3][N];
-    int cols[3], i, j;
+    int cols[3], i, ob;
     fnav_status_t st;
     if (f == NULL) {
         return FNAV_E_ARG;
@@ -653,14 +673,13 @@ fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
     if (f->cfg.bias_model != FNAV_BIAS_AR1) {
         return FNAV_OK;
     }
+    ob = f->pos[FNAV_UKF_BG];
+    clear_h(f);
     for (i = 0; i < 3; i++) {
-        for (j = 0; j < N; j++) {
-            H[i][j] = FNAV_R(0.0);
-        }
-        H[i][FNAV_UKF_BG + i] = FNAV_R(1.0);
-        cols[i] = FNAV_UKF_BG + i;
+        f->Hm[i][ob + i] = FNAV_R(1.0);
+        cols[i] = ob + i;
     }
-    st = update(f, H, cols, 3, fnav_vec3_sub(gyro_rps, f->bg_rps), f->cfg.zaru_sigma_rps * f->cfg.zaru_sigma_rps);
+    st = update(f, cols, 3, fnav_vec3_sub(gyro_rps, f->bg_rps), f->cfg.zaru_sigma_rps * f->cfg.zaru_sigma_rps);
     if (st == FNAV_OK) {
         f->health.zarus++;
     }
@@ -676,10 +695,10 @@ void fnav_ukf_p_diag(const fnav_ukf_t *f, fnav_real_t out[FNAV_UKF_N])
 {
     int i;
     for (i = 0; i < 3; i++) {
-        out[i] = f->P[FNAV_UKF_A + i][FNAV_UKF_A + i];
-        out[3 + i] = f->P[FNAV_UKF_V + i][FNAV_UKF_V + i];
-        out[6 + i] = f->P[FNAV_UKF_P + i][FNAV_UKF_P + i];
-        out[9 + i] = f->P[FNAV_UKF_BG + i][FNAV_UKF_BG + i];
-        out[12 + i] = f->P[FNAV_UKF_BA + i][FNAV_UKF_BA + i];
+        out[i] = fnav_ukf_cov(f, FNAV_UKF_A + i, FNAV_UKF_A + i);
+        out[3 + i] = fnav_ukf_cov(f, FNAV_UKF_V + i, FNAV_UKF_V + i);
+        out[6 + i] = fnav_ukf_cov(f, FNAV_UKF_P + i, FNAV_UKF_P + i);
+        out[9 + i] = fnav_ukf_cov(f, FNAV_UKF_BG + i, FNAV_UKF_BG + i);
+        out[12 + i] = fnav_ukf_cov(f, FNAV_UKF_BA + i, FNAV_UKF_BA + i);
     }
 }

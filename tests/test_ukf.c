@@ -132,9 +132,9 @@ static void test_closed_form_equivalence(void **state)
     }
     for (i = 0; i < NM; i++) {
         for (j = 0; j < NM; j++) {
-            double scale = sqrt(fabs((double)b.P[i][i] * (double)b.P[j][j])) + 1e-30;
+            double scale = sqrt(fabs((double)fnav_ukf_cov(&b, i, i) * (double)fnav_ukf_cov(&b, j, j))) + 1e-30;
             /* rounding of two different summation orders over 200 steps */
-            FNAV_ASSERT_CLOSE((double)a.P[i][j] / scale, (double)b.P[i][j] / scale, 2e3 * EPS, 0.0);
+            FNAV_ASSERT_CLOSE((double)fnav_ukf_cov(&a, i, j) / scale, (double)fnav_ukf_cov(&b, i, j) / scale, 2e3 * EPS, 0.0);
         }
     }
     for (i = 0; i < 3; i++) {
@@ -175,9 +175,9 @@ static void test_linear_covariance(void **state)
         pvv += qa * qa * dt;
     }
     for (i = 0; i < 3; i++) {
-        FNAV_ASSERT_CLOSE(f.P[FNAV_UKF_V + i][FNAV_UKF_V + i], pvv, 0.0, 1e3 * EPS);
-        FNAV_ASSERT_CLOSE(f.P[FNAV_UKF_P + i][FNAV_UKF_V + i], ppv, 0.0, 1e3 * EPS);
-        FNAV_ASSERT_CLOSE(f.P[FNAV_UKF_P + i][FNAV_UKF_P + i], ppp, 0.0, 1e3 * EPS);
+        FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_V + i, FNAV_UKF_V + i), pvv, 0.0, 1e3 * EPS);
+        FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_P + i, FNAV_UKF_V + i), ppv, 0.0, 1e3 * EPS);
+        FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_P + i, FNAV_UKF_P + i), ppp, 0.0, 1e3 * EPS);
     }
 }
 
@@ -203,7 +203,7 @@ static void test_zupt_update(void **state)
     }
     for (i = 0; i < n; i++) {
         for (j = 0; j < n; j++) {
-            P[i][j] = (double)f.P[i][j];
+            P[i][j] = (double)fnav_ukf_cov(&f, i, j);
         }
     }
     for (i = 0; i < 3; i++) {
@@ -247,7 +247,7 @@ static void test_zupt_update(void **state)
     for (i = 0; i < n; i++) {
         for (j = 0; j < n; j++) {
             double scale = sqrt(P[i][i] * P[j][j]) + 1e-30;
-            FNAV_ASSERT_CLOSE((double)f.P[i][j] / scale, Pn[i][j] / scale, 1e3 * EPS, 0.0);
+            FNAV_ASSERT_CLOSE((double)fnav_ukf_cov(&f, i, j) / scale, Pn[i][j] / scale, 1e3 * EPS, 0.0);
         }
     }
     /* state: v' = v - K_v v, p' = p - K_p v */
@@ -330,16 +330,16 @@ static void test_covariance_recovery(void **state)
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
     assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
     /* correlation > 1 between velocity x and position x: indefinite */
-    f.P[FNAV_UKF_V][FNAV_UKF_P] = f.P[FNAV_UKF_P][FNAV_UKF_V] =
-        FNAV_R(3.0) * fnav_sqrt(f.P[FNAV_UKF_V][FNAV_UKF_V] * f.P[FNAV_UKF_P][FNAV_UKF_P]);
+    fnav_ukf_set_cov(&f, FNAV_UKF_V, FNAV_UKF_P,
+                     FNAV_R(3.0) * fnav_sqrt(fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_V) * fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_P)));
     st = fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g), FNAV_R(0.01));
     assert_int_equal(st, FNAV_E_DECOMP);
     assert_int_equal(f.health.chol_reset, 1);
     /* the result factors in double (positive definite) and is symmetric */
     for (i = 0; i < NM; i++) {
         for (j = 0; j < NM; j++) {
-            A[i][j] = (double)f.P[i][j];
-            assert_true(f.P[i][j] == f.P[j][i]);
+            A[i][j] = (double)fnav_ukf_cov(&f, i, j);
+            assert_true(fnav_ukf_cov(&f, i, j) == fnav_ukf_cov(&f, j, i));
         }
     }
     for (j = 0; j < NM; j++) {
@@ -598,7 +598,7 @@ static void run_nees(nees_t *r)
                 }
                 for (a = 0; a < ne; a++) {
                     for (b2 = 0; b2 < ne; b2++) {
-                        Pm[a][b2] = (double)f.P[idx[a]][idx[b2]];
+                        Pm[a][b2] = (double)fnav_ukf_cov(&f, idx[a], idx[b2]);
                     }
                 }
                 /* e^T P^-1 e by Cholesky in double */

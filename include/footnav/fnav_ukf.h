@@ -129,7 +129,9 @@ typedef struct {
     fnav_ukf_config_t cfg;
     int started;               /**< fnav_ukf_start() was called */
     int n_act;                 /**< active states (9, 12, 15 or 18) */
+    int n_lin;                 /**< leading active states that propagate linearly (lever, v, p) */
     unsigned char act[FNAV_UKF_NMAX]; /**< internal indices of the active states, ascending */
+    signed char pos[FNAV_UKF_NMAX];   /**< packed index of each internal state, -1 if inactive */
     fnav_real_t gamma;         /**< sigma-point scale sqrt(n + lambda) */
     fnav_real_t w0m, w0c, wi;  /**< weights */
     /* nominal state */
@@ -142,9 +144,14 @@ typedef struct {
     fnav_vec3_t ba0_mps2;      /**< alignment accel bias (AR(1) mean), m/s^2 */
     fnav_vec3_t lever_m;       /**< pivot-to-IMU lever in b, m (0 without config.lever) */
     fnav_strapdown_hist_t hist;/**< previous increments (coning, sculling) */
-    fnav_real_t P[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< covariance (internal order) */
+    fnav_real_t P[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< covariance of the active states, packed in the
+                                                       order of act[] (use fnav_ukf_cov()) */
     fnav_real_t U[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< scratch: Cholesky factor */
     fnav_real_t S[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< scratch: new covariance */
+    fnav_real_t Hm[3][FNAV_UKF_NMAX];             /**< scratch: measurement matrix */
+    fnav_real_t K[FNAV_UKF_NMAX][3];              /**< scratch: gain */
+    fnav_real_t PHt[FNAV_UKF_NMAX][3];            /**< scratch: P H^T */
+    fnav_real_t APHt[FNAV_UKF_NMAX][3];           /**< scratch: (I - K H) P H^T */
     fnav_ukf_health_t health;
 } fnav_ukf_t;
 
@@ -200,6 +207,14 @@ FNAV_WARN_UNUSED fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps
  *         FNAV_OK without effect when the bias model is off.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps);
+
+/** Covariance element of the internal states i, j (FNAV_UKF_V + k etc.);
+ *  0 for a state that is switched off. */
+fnav_real_t fnav_ukf_cov(const fnav_ukf_t *f, int i, int j);
+
+/** Set a covariance element (and its mirror) of two active internal states
+ *  (for tests and for callers that seed correlations). */
+void fnav_ukf_set_cov(fnav_ukf_t *f, int i, int j, fnav_real_t v);
 
 /** Roll, pitch, yaw (ZYX) of the nominal attitude, rad. */
 fnav_vec3_t fnav_ukf_euler(const fnav_ukf_t *f);
