@@ -360,23 +360,34 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
             f->S[i][j] = FNAV_R(0.0);
         }
     }
+    if (c->closed_form && nl > 0) {
+        /* The pairs +-gamma U_j, j < nl, differ from the centre only in
+         * lever, velocity and position, which propagate exactly linearly
+         * (r' = r, v' = v + dv, p' = p + dp + dv dt, i.e. D = F dx): each pair
+         * adds 2 W gamma^2 (F U_j)(F U_j)^T = (F U_j)(F U_j)^T and nothing to
+         * the mean. F U_j is formed in place in the columns j < nl of U (the
+         * other sigma points use only the columns >= nl). */
+        fnav_real_t kl = FNAV_R(2.0) * f->wi * f->gamma * f->gamma;
+        int a, b, k;
+        for (jj = 0; jj < nl; jj++) {
+            for (i = 0; i < 3; i++) {
+                f->U[op + i][jj] += dt_s * f->U[ov + i][jj];
+            }
+        }
+        for (a = 0; a < nl; a++) {
+            int sa = (a >= op && a < op + 3) ? ov + (a - op) : a;
+            for (b = a; b < nl; b++) {
+                int sb = (b >= op && b < op + 3) ? ov + (b - op) : b;
+                fnav_real_t sum = FNAV_R(0.0);
+                for (k = sa > sb ? sa : sb; k < nl; k++) {
+                    sum += f->U[a][k] * f->U[b][k];
+                }
+                f->S[a][b] += kl * sum;
+            }
+        }
+    }
     for (jj = 0; jj < n; jj++) {
         if (c->closed_form && jj < nl) {
-            /* the pair +-gamma U_j differs from the centre only in lever,
-             * velocity and position, which propagate exactly linearly
-             * (r' = r, v' = v + dv, p' = p + dp + dv dt): D- = -D+, so the pair
-             * adds 2 W D D^T and nothing to the mean */
-            g = f->gamma;
-            for (i = 0; i <= jj; i++) {
-                d[i] = g * f->U[i][jj];
-            }
-            for (; i < nl; i++) {
-                d[i] = FNAV_R(0.0);
-            }
-            for (i = 0; i < 3; i++) {
-                d[op + i] += d[ov + i] * dt_s;
-            }
-            accumulate(f->S, d, nl, FNAV_R(2.0) * f->wi);
             continue;
         }
         for (s = 0; s < 2; s++) {
@@ -474,8 +485,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
 
 /* Linear update with a 3-row measurement matrix f->Hm over the packed states
  * (non-zero only in the packed columns cols[0..nc-1]), innovation y and
- * variance r2 per axis, in Joseph form: P' = (I - K H) P (I - K H)^T + K R K^T,
- * with only the upper triangle computed and then mirrored. */
+ * variance r2 per axis, in Joseph form (see below). */
 static fnav_status_t update(fnav_ukf_t *f, const int *cols, int nc, fnav_vec3_t y, fnav_real_t r2)
 {
     int n = f->n_act, i, j, k, c;
@@ -484,7 +494,6 @@ static fnav_status_t update(fnav_ukf_t *f, const int *cols, int nc, fnav_vec3_t 
     fnav_real_t (*K)[3] = f->K;
     fnav_real_t (*PHt)[3] = f->PHt;
     fnav_real_t (*APHt)[3] = f->APHt;
-    fnav_real_t (*AP)[N] = f->S;
     fnav_real_t (*Pn)[N] = f->U;
     /* P H^T (n x 3) */
     for (i = 0; i < n; i++) {
@@ -540,29 +549,22 @@ static fnav_status_t update(fnav_ukf_t *f, const int *cols, int nc, fnav_vec3_t 
             return FNAV_E_DIVERGED;
         }
     }
-    /* AP = (I - K H) P = P - K (P H^T)^T, needed in the columns of H and in
-     * the upper triangle */
-    for (i = 0; i < n; i++) {
-        const fnav_real_t *ki = K[i];
-        for (j = 0; j < n; j++) {
-            AP[i][j] = f->P[i][j] - ki[0] * PHt[j][0] - ki[1] * PHt[j][1] - ki[2] * PHt[j][2];
-        }
-    }
-    /* (AP) H^T */
+    /* Joseph form (I - K H) P (I - K H)^T + K R K^T, expanded:
+     * P - K (P H^T)^T - (P H^T) K^T + K S K^T with S = H P H^T + R. It holds
+     * for any gain K (not only the optimal one, unlike P - K H P), is
+     * symmetric term by term, and only its upper triangle is computed.
+     * SK = K S (n x 3) first; here APHt holds SK. */
     for (i = 0; i < n; i++) {
         for (k = 0; k < 3; k++) {
-            fnav_real_t sum = FNAV_R(0.0);
-            for (c = 0; c < nc; c++) {
-                sum += AP[i][cols[c]] * H[k][cols[c]];
-            }
-            APHt[i][k] = sum;
+            APHt[i][k] = K[i][0] * s[0][k] + K[i][1] * s[1][k] + K[i][2] * s[2][k];
         }
     }
-    /* P' = AP - (AP H^T) K^T + r2 K K^T */
     for (i = 0; i < n; i++) {
+        const fnav_real_t *ki = K[i], *pi = PHt[i];
         for (j = i; j < n; j++) {
-            fnav_real_t v = AP[i][j] - APHt[i][0] * K[j][0] - APHt[i][1] * K[j][1] - APHt[i][2] * K[j][2] +
-                            r2 * (K[i][0] * K[j][0] + K[i][1] * K[j][1] + K[i][2] * K[j][2]);
+            const fnav_real_t *kj = K[j], *pj = PHt[j], *sj = APHt[j];
+            fnav_real_t v = f->P[i][j] - (ki[0] * pj[0] + ki[1] * pj[1] + ki[2] * pj[2]) -
+                            (pi[0] * kj[0] + pi[1] * kj[1] + pi[2] * kj[2]) + (ki[0] * sj[0] + ki[1] * sj[1] + ki[2] * sj[2]);
             if (!fnav_isfinite(v)) {
                 f->health.diverged++;
                 return FNAV_E_DIVERGED;

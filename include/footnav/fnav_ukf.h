@@ -46,7 +46,8 @@
  * Numerics (float32): P is kept symmetric (only the upper triangle is
  * computed, then mirrored); the weights (alpha = 1, beta = 2, kappa = 0) make
  * every term of the predicted covariance positive semi-definite; updates use
- * the Joseph form. A Cholesky pivot that is not positive triggers the defined
+ * the Joseph form, expanded as P - K H P - P H^T K^T + K S K^T (valid for any
+ * gain, symmetric term by term). A Cholesky pivot that is not positive triggers the defined
  * recovery: add jitter (1e-6 of each variance) and retry; if that also fails,
  * reset P to its own diagonal (cross-covariances dropped), count it, and
  * return FNAV_E_DECOMP after completing the step with the reset covariance.
@@ -151,7 +152,7 @@ typedef struct {
     fnav_real_t Hm[3][FNAV_UKF_NMAX];             /**< scratch: measurement matrix */
     fnav_real_t K[FNAV_UKF_NMAX][3];              /**< scratch: gain */
     fnav_real_t PHt[FNAV_UKF_NMAX][3];            /**< scratch: P H^T */
-    fnav_real_t APHt[FNAV_UKF_NMAX][3];           /**< scratch: (I - K H) P H^T */
+    fnav_real_t APHt[FNAV_UKF_NMAX][3];           /**< scratch: K S */
     fnav_ukf_health_t health;
 } fnav_ukf_t;
 
