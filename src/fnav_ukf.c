@@ -305,7 +305,8 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     fnav_strapdown_incr_t inc;
     fnav_strapdown_state_t x0, xi;
     fnav_quat_t q0inv;
-    fnav_real_t m[N], d[N], dxp[N], dx[N], cb[6], qb[6];
+    fnav_real_t m[N], d[N], dxp[N], dx[N];
+    const fnav_real_t *cb, *qb;
     fnav_real_t kmm, g;
     int n, nl, i, j, jj, s, fr, ov, op;
     if (f == NULL) {
@@ -342,17 +343,24 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     /* AR(1) coefficients c = exp(-dt/tau) and driving variances
      * sigma^2 (1 - exp(-2 dt/tau)) (paper eqs. (3), (4) with c = e^(-1/tau)
      * for dt = one sample); the model off keeps the biases fixed. */
-    for (i = 0; i < 3; i++) {
-        if (c->bias_model == FNAV_BIAS_AR1) {
-            cb[i] = fnav_exp(-dt_s / c->gyro_tau_s[i]);
-            cb[3 + i] = fnav_exp(-dt_s / c->accel_tau_s[i]);
-            qb[i] = c->gyro_bias_sigma_rps[i] * c->gyro_bias_sigma_rps[i] * (FNAV_R(1.0) - cb[i] * cb[i]);
-            qb[3 + i] = c->accel_bias_sigma_mps2[i] * c->accel_bias_sigma_mps2[i] * (FNAV_R(1.0) - cb[3 + i] * cb[3 + i]);
-        } else {
-            cb[i] = cb[3 + i] = FNAV_R(1.0);
-            qb[i] = qb[3 + i] = FNAV_R(0.0);
+    if (dt_s != f->ar1_dt_s) {
+        /* recomputed only when the interval changes (usually never) */
+        for (i = 0; i < 3; i++) {
+            if (c->bias_model == FNAV_BIAS_AR1) {
+                f->ar1_c[i] = fnav_exp(-dt_s / c->gyro_tau_s[i]);
+                f->ar1_c[3 + i] = fnav_exp(-dt_s / c->accel_tau_s[i]);
+                f->ar1_q[i] = c->gyro_bias_sigma_rps[i] * c->gyro_bias_sigma_rps[i] * (FNAV_R(1.0) - f->ar1_c[i] * f->ar1_c[i]);
+                f->ar1_q[3 + i] = c->accel_bias_sigma_mps2[i] * c->accel_bias_sigma_mps2[i] *
+                                  (FNAV_R(1.0) - f->ar1_c[3 + i] * f->ar1_c[3 + i]);
+            } else {
+                f->ar1_c[i] = f->ar1_c[3 + i] = FNAV_R(1.0);
+                f->ar1_q[i] = f->ar1_q[3 + i] = FNAV_R(0.0);
+            }
         }
+        f->ar1_dt_s = dt_s;
     }
+    cb = f->ar1_c;
+    qb = f->ar1_q;
 
     for (i = 0; i < n; i++) {
         m[i] = FNAV_R(0.0);

@@ -211,6 +211,13 @@ int main(int argc, char **argv)
     } else {
         printf("  callgrind not available: instruction counts skipped\n");
     }
+    /* emulated Cortex-M4F instruction counts (tests/m4): the default
+     * configuration and the paper's 15 states (bias model on, no lever) */
+    fflush(stdout);
+    if (system("sh tests/m4/run.sh") != 0 || system("sh tests/m4/run.sh -DM4_AR1 -DM4_NOLEVER") != 0) {
+        printf("  m4 benchmark failed\n");
+    }
+    fflush(stdout);
     /* worst-case stack from the Cortex-M4F call graph */
     if (system("ls build/arm/obj/src/fnav_nav.ci >/dev/null 2>&1") == 0) {
         fflush(stdout);

@@ -145,6 +145,9 @@ typedef struct {
     fnav_vec3_t ba0_mps2;      /**< alignment accel bias (AR(1) mean), m/s^2 */
     fnav_vec3_t lever_m;       /**< pivot-to-IMU lever in b, m (0 without config.lever) */
     fnav_strapdown_hist_t hist;/**< previous increments (coning, sculling) */
+    fnav_real_t ar1_dt_s;      /**< interval of the cached AR(1) terms, s (0: none) */
+    fnav_real_t ar1_c[6];      /**< cached exp(-dt/tau), gyro then accel */
+    fnav_real_t ar1_q[6];      /**< cached sigma^2 (1 - c^2) */
     fnav_real_t P[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< covariance of the active states, packed in the
                                                        order of act[] (use fnav_ukf_cov()) */
     fnav_real_t U[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< scratch: Cholesky factor */
