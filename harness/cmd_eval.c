@@ -528,15 +528,15 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             static long evs[256][2], sw[1024][2];
             static long fo[1024], fs[1024];
             long tb[2], ub[2], rtb[2], rub[2];
-            int ne, nsw = 0, nfo = 0, nfs = 0, k, j, exp_n = 0, det_n = 0, miss = 0, used[1024];
+            int ne, nsw = 0, nfo = 0, nfs = 0, k, j, exp_n = 0, det_n = 0, miss = 0, spur_n = 0;
+            static int used[1024];
             hx_log_t log;
             char err[320];
             fnav_stance_t st;
             fnav_stance_config_t sc = cfg->stance;
             fnav_stance_out_t o;
             size_t r;
-            long seg_start = -1;
-            int prev_seg = 1, trial_fo = 0, trial_fs = 0;
+            int trial_fo = 0, trial_fs = 0;
             double tfo[256], tfs[256];
             size_t l = strlen(names[i]);
             snprintf(jpath, sizeof jpath, "%s/%.159s", dir, names[i]);
@@ -573,15 +573,11 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                     fnav_stance_finish(&st);
                 }
                 while ((ps = fnav_stance_pop(&st, &o)) == FNAV_OK) {
-                    long row = (long)(st.n_out - 1);
-                    if (prev_seg && !o.segment_stance) {
-                        seg_start = row;
-                    } else if (!prev_seg && o.segment_stance && seg_start >= 0 && nsw < 1024) {
-                        sw[nsw][0] = seg_start;
-                        sw[nsw][1] = row;
+                    if ((o.events & FNAV_STANCE_EV_STRIDE) && nsw < 1024) {
+                        sw[nsw][0] = row_of_time(log.t_ns, log.n, o.swing_t0_ns);
+                        sw[nsw][1] = row_of_time(log.t_ns, log.n, o.swing_t1_ns);
                         nsw++;
                     }
-                    prev_seg = o.segment_stance;
                     if ((o.events & FNAV_STANCE_EV_FOOT_OFF) && nfo < 1024) {
                         fo[nfo++] = row_of_time(log.t_ns, log.n, o.fo_t_ns);
                     }
@@ -595,8 +591,11 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             rtb[1] = row_of(log.seq, log.n, tb[1]);
             rub[0] = row_of(log.seq, log.n, ub[0]);
             rub[1] = row_of(log.seq, log.n, ub[1]);
-            /* evaluated: swings inside the trial and clear of the U-turn
-             * (the experts annotate the turn incompletely) */
+            /* Evaluated: the expert swings inside the trial and clear of the
+             * U-turn (the experts annotate the turn only partly). A detected
+             * swing counts when it overlaps an evaluated expert swing (a
+             * match), or else when its middle is inside the trial, outside the
+             * U-turn, and it overlaps no excluded expert swing (spurious). */
             for (k = 0; k < nsw; k++) {
                 used[k] = 0;
             }
@@ -604,13 +603,16 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                 long s0 = row_of(log.seq, log.n, evs[j][0]), s1 = row_of(log.seq, log.n, evs[j][1]);
                 int hit = -1;
                 if (overlaps(s0, s1, rub[0], rub[1]) || s0 < rtb[0] - 5 || s1 > rtb[1] + 5) {
+                    for (k = 0; k < nsw; k++) {
+                        if (overlaps(sw[k][0], sw[k][1], s0, s1)) {
+                            used[k] = 2; /* belongs to an excluded expert swing */
+                        }
+                    }
                     continue;
                 }
                 exp_n++;
                 for (k = 0; k < nsw; k++) {
-                    long mid = (sw[k][0] + sw[k][1]) / 2;
-                    if (!used[k] && !overlaps(sw[k][0], sw[k][1], rub[0], rub[1]) && mid > rtb[0] - 5 &&
-                        mid < rtb[1] + 5 && overlaps(sw[k][0], sw[k][1], s0, s1)) {
+                    if (used[k] != 1 && overlaps(sw[k][0], sw[k][1], s0, s1)) {
                         hit = k;
                         break;
                     }
@@ -620,6 +622,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                     continue;
                 }
                 used[hit] = 1;
+                det_n++;
                 /* nearest reported events to the expert's foot-off / strike */
                 {
                     long best = -1, b2 = -1;
@@ -648,19 +651,20 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             }
             for (k = 0; k < nsw; k++) {
                 long mid = (sw[k][0] + sw[k][1]) / 2;
-                if (!overlaps(sw[k][0], sw[k][1], rub[0], rub[1]) && mid > rtb[0] - 5 && mid < rtb[1] + 5) {
+                if (used[k] == 0 && !(mid >= rub[0] && mid < rub[1]) && mid > rtb[0] - 5 && mid < rtb[1] + 5) {
                     det_n++;
+                    spur_n++;
                 }
             }
             if (write) {
                 fprintf(ev->md, "| %.*s | %s | %d | %d | %d | %d | %.1f | %.1f |\n", (int)(l - 5), names[i],
-                        foot ? "right" : "left", exp_n, det_n, miss, det_n - (exp_n - miss), median(tfo, trial_fo),
+                        foot ? "right" : "left", exp_n, det_n, miss, spur_n, median(tfo, trial_fo),
                         median(tfs, trial_fs));
             }
             out->expected += exp_n;
             out->detected += det_n;
             out->missed += miss;
-            out->spurious += det_n - (exp_n - miss);
+            out->spurious += spur_n;
             out->trials++;
             hx_log_free(&log);
         }

@@ -24,7 +24,7 @@ const fnav_stance_config_t fnav_stance_config_default = {
     FNAV_R(0.4),        /* margin_dec, decades */
     FNAV_R(10.0),       /* adapt_max_ratio */
     FNAV_R(0.02),       /* min_zupt_s, s */
-    FNAV_R(0.02),       /* min_stance_s, s */
+    FNAV_R(0.05),       /* min_stance_s, s */
     FNAV_R(0.2),        /* min_swing_s, s */
     FNAV_R(0.3)         /* event_window_s, s */
 };
@@ -273,11 +273,14 @@ static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
     if (st->seg == 1 && !o->stance && st->run >= st->n_min_swing) {
         st->seg = 0;
         st->fo_pending = 1;
+        st->swing_t0_ns = st->run_t0_ns; /* the swing began with this run */
     } else if (st->seg == 0 && o->stance && st->run >= st->n_min_stance) {
         st->seg = 1;
         st->strides++;
         o->events |= FNAV_STANCE_EV_STRIDE | FNAV_STANCE_EV_FOOT_STRIKE;
         o->fs_t_ns = foot_strike(st, k - st->run + 1, o->sample.t_ns, k);
+        o->swing_t0_ns = st->swing_t0_ns;
+        o->swing_t1_ns = st->run_t0_ns; /* first sample of the stance run */
     }
     if (st->fo_pending && (!st->fo_open || st->seg == 1)) {
         st->fo_pending = 0;
@@ -379,6 +382,8 @@ fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
     out->events = 0;
     out->fo_t_ns = 0;
     out->fs_t_ns = 0;
+    out->swing_t0_ns = 0;
+    out->swing_t1_ns = 0;
     segment(st, out);
     st->prev_t_ns = out->sample.t_ns;
     st->n_out++;

@@ -79,7 +79,7 @@ typedef struct {
     fnav_real_t margin_dec;     /**< threshold above the floor, decades (default 0.4) */
     fnav_real_t adapt_max_ratio; /**< adaptive threshold at most this times gamma (default 10) */
     fnav_real_t min_zupt_s;     /**< a stance shorter than this is ignored, s (default 0.02) */
-    fnav_real_t min_stance_s;   /**< segmentation: shortest stance, s (default 0.02) */
+    fnav_real_t min_stance_s;   /**< segmentation: shortest stance ending a swing, s (default 0.05) */
     fnav_real_t min_swing_s;    /**< segmentation: shortest swing, s (default 0.2) */
     fnav_real_t event_window_s; /**< gait-event search window, s (default 0.3) */
 } fnav_stance_config_t;
@@ -106,6 +106,8 @@ typedef struct {
     uint32_t events;      /**< FNAV_STANCE_EV_* bits raised at this sample */
     int64_t fo_t_ns;      /**< foot-off time, ns (with EV_FOOT_OFF) */
     int64_t fs_t_ns;      /**< foot-strike time, ns (with EV_FOOT_STRIKE) */
+    int64_t swing_t0_ns;  /**< with EV_STRIDE: first sample of the swing, ns */
+    int64_t swing_t1_ns;  /**< with EV_STRIDE: first sample of the stance that ended it, ns */
 } fnav_stance_out_t;
 
 /** Detector object (caller-owned; fixed size, about 4.4 KB in float, see
@@ -132,6 +134,7 @@ typedef struct {
     long run;           /**< length of the current run of raw decisions, samples */
     int run_raw;        /**< raw decision of that run */
     int64_t run_t0_ns;  /**< time of the first sample of the run */
+    int64_t swing_t0_ns; /**< start of the current swing */
     int64_t prev_t_ns;  /**< time of the last decision */
     fnav_real_t prev_acc[3]; /**< specific force of the last decision (for the jerk) */
     int have_prev;
