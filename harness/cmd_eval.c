@@ -696,14 +696,14 @@ int hx_cmd_eval(int argc, char **argv)
     ev_t ev;
     char err[400], cmdline[1024];
     const char *out_path, *json_path, *data;
-    closure_t gx2, gx2_off, gx2_200, gx2_100;
+    closure_t gx2, gx2_off, gx2_ar1, gx2_200, gx2_100;
     closure_t xs, xl;
-    fp_t fp, fp_off, fp_100;
+    fp_t fp, fp_off, fp_ar1, fp_100;
     vicon_t vi;
     ipol_t ip;
     int rc, i, exp = 1;
     size_t len = 0;
-    fnav_nav_config_t off;
+    fnav_nav_config_t off, ar1;
     rc = hx_args_parse(&k_spec, argc, argv, &a);
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
@@ -755,10 +755,12 @@ int hx_cmd_eval(int argc, char **argv)
     for (i = 0; i < argc && len < sizeof cmdline; i++) {
         len += (size_t)snprintf(cmdline + len, sizeof cmdline - len, " %s", argv[i]);
     }
-    ev.total_runs = exp ? 6 * 4 + 2 * 5 + 7 * 3 + 21 + 28 + 2 : 6 + 2 + 7 + 21 + 28;
+    ev.total_runs = exp ? 6 * 5 + 2 * 7 + 7 * 4 + 21 + 28 : 6 + 2 + 7 + 21 + 28;
     hx_progress_start(&ev.prog, "eval", ev.total_runs);
     off = ev.cfg;
     off.bias_model = FNAV_BIAS_OFF;
+    ar1 = ev.cfg;
+    ar1.bias_model = FNAV_BIAS_AR1;
 
     fprintf(ev.md, "# footnav results\n\n");
     fprintf(ev.md, "Written by `%s` (float%s build). Every number below comes from that command;\n"
@@ -837,32 +839,46 @@ int hx_cmd_eval(int argc, char **argv)
     if (exp) {
         fnav_nav_config_t c2 = ev.cfg;
         fprintf(ev.md, "## Paper experiment 1: AR(1) bias model on vs off\n\n"
-                       "Same walks, same configuration except `--bias-model`.\n\n");
+                       "Same walks, same configuration (profile `%s`) except `--bias-model`.\n\n",
+                ev.cfg.profile.name);
+        closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &ar1, 0.0, 0, &gx2_ar1);
         closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &off, 0.0, 0, &gx2_off);
+        footprints(&ev, &ar1, 0.0, 0, &fp_ar1);
         footprints(&ev, &off, 0.0, 0, &fp_off);
         fprintf(ev.md, "| data set | figure | ar1 | off |\n|---|---|---:|---:|\n");
-        fprintf(ev.md, "| openshoe_gx2 | median horizontal closure (%%) | %.2f | %.2f |\n", gx2.h_pct_med,
+        fprintf(ev.md, "| openshoe_gx2 | median horizontal closure (%%) | %.2f | %.2f |\n", gx2_ar1.h_pct_med,
                 gx2_off.h_pct_med);
-        fprintf(ev.md, "| openshoe_gx2 | median 3-D closure (%%) | %.2f | %.2f |\n", gx2.d3_pct_med, gx2_off.d3_pct_med);
-        fprintf(ev.md, "| openshoe_gx2 | median vertical (m) | %+.3f | %+.3f |\n", gx2.vert_med, gx2_off.vert_med);
-        fprintf(ev.md, "| footprints | median final-stride error (%% of path) | %.2f | %.2f |\n", fp.final_pct_med,
+        fprintf(ev.md, "| openshoe_gx2 | median 3-D closure (%%) | %.2f | %.2f |\n", gx2_ar1.d3_pct_med,
+                gx2_off.d3_pct_med);
+        fprintf(ev.md, "| openshoe_gx2 | worst 3-D closure (%%) | %.2f | %.2f |\n", gx2_ar1.d3_pct_max,
+                gx2_off.d3_pct_max);
+        fprintf(ev.md, "| openshoe_gx2 | median vertical (m) | %+.3f | %+.3f |\n", gx2_ar1.vert_med, gx2_off.vert_med);
+        fprintf(ev.md, "| footprints | median final-stride error (%% of path) | %.2f | %.2f |\n", fp_ar1.final_pct_med,
                 fp_off.final_pct_med);
+        fprintf(ev.md, "| footprints | mean final-stride error (%% of path) | %.2f | %.2f |\n", fp_ar1.final_pct_mean,
+                fp_off.final_pct_mean);
         {
             char p[700], note[200];
             hx_traj_t t;
             hx_nav_summary_t s;
+            double r2[2];
+            int b;
             for (i = 0; i < 2; i++) {
                 snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, i ? "long_walk.csv" : "short_walk.csv");
-                if (replay(&ev, p, &off, 0.0, &t, &s, note, sizeof note) == 0) {
-                    fprintf(ev.md, "| xio %s | 3-D closure (m) | %.3f | %.3f |\n", i ? "long" : "short",
-                            i ? xl.d3_pct_med : xs.d3_pct_med, s.end_3d_m);
-                    hx_traj_free(&t);
+                for (b = 0; b < 2; b++) {
+                    r2[b] = (double)NAN;
+                    if (replay(&ev, p, b ? &off : &ar1, 0.0, &t, &s, note, sizeof note) == 0) {
+                        r2[b] = s.end_3d_m;
+                        hx_traj_free(&t);
+                    }
                 }
+                fprintf(ev.md, "| xio %s | 3-D closure (m) | %.3f | %.3f |\n", i ? "long" : "short", r2[0], r2[1]);
             }
         }
         fprintf(ev.md, "\n## Paper experiment 2: 100 Hz vs 200 Hz\n\n"
                        "The higher-rate walks resampled (anti-alias low-pass, docs/harness.md) to 200 and 100 Hz, "
-                       "bias model as configured.\n\n");
+                       "configuration as above (bias model `%s`).\n\n",
+                ev.cfg.bias_model == FNAV_BIAS_AR1 ? "ar1" : "off");
         closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &c2, 200.0, 0, &gx2_200);
         closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &c2, 100.0, 0, &gx2_100);
         footprints(&ev, &c2, 100.0, 0, &fp_100);
