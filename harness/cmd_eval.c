@@ -92,7 +92,7 @@ static int list_files(const char *dir, const char *suffix, char names[MAXF][160]
     while ((e = readdir(d)) != NULL && n < MAXF) {
         size_t l = strlen(e->d_name);
         if (l > ls && l < 160 && strcmp(e->d_name + l - ls, suffix) == 0) {
-            snprintf(names[n++], 160, "%s", e->d_name);
+            memcpy(names[n++], e->d_name, l + 1); /* l < 160 checked above */
         }
     }
     closedir(d);

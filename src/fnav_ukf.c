@@ -611,7 +611,7 @@ static void clear_h(fnav_ukf_t *f)
 
 fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
 {
-    int cols[9], nc = 0, i, j;
+    int cols[12], nc = 0, i, j; /* velocity, lever, attitude, gyro bias */
     fnav_vec3_t y;
     fnav_status_t st;
     if (f == NULL) {
