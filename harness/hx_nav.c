@@ -396,7 +396,9 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
     if (st == FNAV_OK) {
         c->n_read++;
         if (c->progress && (c->n_read & 1023) == 0) {
-            hx_progress_update(&c->prog, (double)c->n_read);
+            /* resampled: samples of a known total; streamed: the fraction of
+             * the input file consumed */
+            hx_progress_update(&c->prog, c->mem != NULL ? (double)c->n_read : hx_reader_progress(c->lctx.reader));
         }
     }
     return st;
@@ -496,9 +498,6 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     port.log = hx_logmsg;
     if (progress) {
         hx_progress_start(&pc.prog, cmd, pc.total > 0.0 ? pc.total : 1.0);
-        if (pc.total <= 0.0) {
-            pc.progress = 0; /* unknown length: streaming text input */
-        }
     }
     st = fnav_nav_run(&nav, &port, 0);
     if (progress) {
