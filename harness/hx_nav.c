@@ -398,7 +398,10 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
         if (c->progress && (c->n_read & 1023) == 0) {
             /* resampled: samples of a known total; streamed: the fraction of
              * the input file consumed */
-            hx_progress_update(&c->prog, c->mem != NULL ? (double)c->n_read : hx_reader_progress(c->lctx.reader));
+            double done = c->mem != NULL ? (double)c->n_read : hx_reader_progress(c->lctx.reader);
+            if (done >= 0.0) {
+                hx_progress_update(&c->prog, done);
+            }
         }
     }
     return st;
