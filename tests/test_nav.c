@@ -246,6 +246,59 @@ static void test_sizes(void **state)
 #endif
 }
 
+/* ------------------------------------------------------------ resampler */
+
+/* The --rate resampler: a 10 Hz sine at 400 Hz passes to 100 Hz with its
+ * amplitude (within 1 %), an 80 Hz sine (above the new Nyquist rate, it
+ * would alias to 20 Hz) is removed (below 1 %), duplicates are dropped and
+ * counted, and upsampling is refused. */
+static void test_resampler(void **state)
+{
+    hx_log_t in, out;
+    size_t n = 4000, i;
+    long dups = 0;
+    double fs = 0.0, a10 = 0.0, a80 = 0.0;
+    char err[320];
+    (void)state;
+    memset(&in, 0, sizeof in);
+    in.t_ns = (int64_t *)calloc(n + 1, sizeof *in.t_ns);
+    in.seq = (uint32_t *)calloc(n + 1, sizeof *in.seq);
+    in.acc = (double(*)[3])calloc(n + 1, sizeof *in.acc);
+    in.gyr = (double(*)[3])calloc(n + 1, sizeof *in.gyr);
+    in.temp = (double *)calloc(n + 1, sizeof *in.temp);
+    assert_true(in.t_ns && in.seq && in.acc && in.gyr && in.temp);
+    for (i = 0; i < n; i++) {
+        double t = (double)i / 400.0;
+        in.t_ns[i] = (int64_t)llround(t * 1e9);
+        in.acc[i][0] = sin(2.0 * 3.14159265358979 * 10.0 * t);
+        in.gyr[i][0] = sin(2.0 * 3.14159265358979 * 80.0 * t);
+    }
+    /* one exact duplicate */
+    memmove(&in.t_ns[1001], &in.t_ns[1000], (n - 1000) * sizeof *in.t_ns);
+    memmove(&in.acc[1001], &in.acc[1000], (n - 1000) * sizeof *in.acc);
+    memmove(&in.gyr[1001], &in.gyr[1000], (n - 1000) * sizeof *in.gyr);
+    in.n = n + 1;
+    assert_int_equal(hx_nav_resample(&in, 100.0, &out, &dups, &fs, err, sizeof err), 0);
+    assert_int_equal(dups, 1);
+    FNAV_ASSERT_CLOSE(fs, 400.0, 0.0, 1e-9);
+    FNAV_ASSERT_CLOSE((double)out.n, 1000.0, 1.0, 0.0);
+    FNAV_ASSERT_CLOSE((double)(out.t_ns[1] - out.t_ns[0]), 1e7, 1.0, 0.0);
+    /* amplitudes sqrt(2) x RMS over 800 output samples (80 cycles of 10 Hz)
+     * away from the edges (the filter is 161 input samples long) */
+    for (i = 100; i < 900; i++) {
+        a10 += out.acc[i][0] * out.acc[i][0];
+        a80 += out.gyr[i][0] * out.gyr[i][0];
+    }
+    a10 = sqrt(2.0 * a10 / 800.0);
+    a80 = sqrt(2.0 * a80 / 800.0);
+    FNAV_ASSERT_CLOSE(a10, 1.0, 0.01, 0.0);
+    assert_true(a80 < 0.01);
+    hx_log_free(&out);
+    assert_int_equal(hx_nav_resample(&in, 500.0, &out, &dups, &fs, err, sizeof err), -1);
+    assert_non_null(strstr(err, "only downsampling"));
+    hx_log_free(&in);
+}
+
 /* ------------------------------------------------------------ golden */
 
 /* Compare two trajectory CSV texts row by row (rows matched by their time):
@@ -413,6 +466,7 @@ int main(void)
         cmocka_unit_test(test_step),
         cmocka_unit_test(test_run_port),
         cmocka_unit_test(test_sizes),
+        cmocka_unit_test(test_resampler),
         cmocka_unit_test(test_golden_replays),
         cmocka_unit_test(test_float_vs_double),
     };

@@ -70,6 +70,23 @@ expect_exit 1 "--rate above the input rate" "$H" replay vectors/walk.bin --rate 
 expect_err "only downsampling" "rate error explains"
 expect_exit 0 "bias model off, threshold detector" "$H" replay vectors/walk.bin --bias-model off --detector threshold --quiet
 expect_exit 0 "built-in profile mtx" "$H" replay vectors/walk.bin --profile mtx --quiet
+cat > "$T/p.profile" <<'PROF'
+# written by hand in the format of harness allan --profile (docs/profile-format.md)
+format = footnav-profile 1
+name = handmade
+rate_hz = 100
+accel_noise_mps2_rthz = 0.005 0.004 0.005
+accel_tau_s = 80 80 90
+accel_bias_sigma_mps2 = 0.007 0.005 0.005
+gyro_noise_rps_rthz = 0.0007 0.0007 0.0007
+gyro_tau_s = 120 190 320
+gyro_bias_sigma_rps = 0.0002 0.0003 0.0003
+PROF
+expect_exit 0 "profile file with the bias model" "$H" replay vectors/walk.bin --profile "$T/p.profile" --bias-model ar1 --json "$T/pf.json"
+if grep -q '"aligned":.*true' "$T/pf.json"; then pass "profile file replay aligned"; else fail "profile file replay"; fi
+printf 'format = footnav-profile 1\nrate_hz = 100\n' > "$T/bad.profile"
+expect_exit 2 "incomplete profile file" "$H" replay vectors/walk.bin --profile "$T/bad.profile"
+expect_err "bad.profile" "profile error names the file"
 
 # --- bad input: a NaN in the middle; the frames before are written, exit 1
 head -2001 vectors/nav/golden/gx2_walk2.csv > "$T/bad.csv"
