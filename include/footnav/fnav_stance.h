@@ -47,12 +47,8 @@
 extern "C" {
 #endif
 
-/** Length of the history used for the foot-strike search, samples: the
- *  search covers min(event_window_s, this many samples), i.e. the full
- *  0.3 s up to 533 Hz. */
-#ifndef FNAV_STANCE_EVENT_BUF
-#define FNAV_STANCE_EVENT_BUF 160
-#endif
+/* FNAV_STANCE_EVENT_BUF (fnav_config.h): jerk history of the foot-strike
+ * search, samples. */
 
 /** Number of intervals used to estimate the rate when none is configured. */
 #define FNAV_STANCE_RATE_PROBE 32
