@@ -812,10 +812,10 @@ int hx_cmd_eval(int argc, char **argv)
                    "Estimated position at each stride sample against the footprint measured with a ruler, both "
                    "in the initial-heading frame (the `_strides_gcp.csv` truth), starting at the first stride.\n\n");
     footprints(&ev, &ev.cfg, 0.0, 1, &fp);
-    fprintf(ev.md, "\nMedian final-stride error %.2f %% of the measured path (target <= 2 %%: %s), mean %.2f %%; "
-                   "median of the per-walk median stride errors %.3f m. Reference: pyshoe with its SHOE detector, "
-                   "1.43 m median final error, 4.3 %% mean.\n\n",
-            fp.final_pct_med, met(fp.final_pct_med <= 2.0), fp.final_pct_mean, fp.stride_med);
+    fprintf(ev.md, "\nMedian final-stride error %.2f %% of the measured path (target <= 2 %%: %s), mean %.2f %%, "
+                   "median %.2f m; median of the per-walk median stride errors %.3f m. Reference: pyshoe with its "
+                   "SHOE detector, 1.43 m median final error, 4.3 %% mean.\n\n",
+            fp.final_pct_med, met(fp.final_pct_med <= 2.0), fp.final_pct_mean, fp.final_m_med, fp.stride_med);
 
     fprintf(ev.md, "## pyshoe_vicon_llio / vicon_3dmgx3: per-stride error against motion capture\n\n");
     vicon(&ev, &ev.cfg, 1, &vi);
