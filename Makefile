@@ -76,6 +76,8 @@ $(HXLIB): $(HX_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
+# The core calls the port's fnav_port_assert_failed (in libhx via
+# port/linux), so libhx is named again after the core library.
 $(HARNESS): $(BUILD)/obj/harness/main.o $(HXLIB) $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(SAN) -o $@ $^ $(HXLIB) $(LDLIBS_HOST)
