@@ -142,7 +142,7 @@ ARM_LIB   := $(ARM_BUILD)/libfootnav.a
 FW_FLASH_BUDGET ?= 49152
 FW_RAM_BUDGET   ?= 24576
 # Stack reserved after .bss (must hold the worst case of the stack report).
-FW_STACK_SIZE   ?= 2048
+FW_STACK_SIZE   ?= 1984
 
 FW_COMMON := port/cortex-m/fnav_cm_ring.c port/cortex-m/fnav_port_cortexm.c port/cortex-m/fnav_cm_est.c \
              port/cortex-m/fnav_cm_app.c port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c

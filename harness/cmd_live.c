@@ -1,8 +1,9 @@
 /* harness live: navigate live from a serial port (docs/wire-protocol.md,
  * docs/harness.md). Reads wire frames through libserialport, records every
- * received sample to a .bin that stays valid if the process is killed, and
- * prints the link state; the navigation filter runs on every sample when
- * the core has it. */
+ * received sample to a .bin that stays valid if the process is killed, runs
+ * the navigation filter on every sample exactly as `harness replay` does
+ * (fnav_nav_push / pop, then finish at the end), and prints the position and
+ * the stance state. */
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
@@ -13,9 +14,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "fnav_port_linux.h"
 #include "footnav/fnav_wire.h"
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_nav.h"
 #include "hx_serial.h"
 
 #define CMD "live"
@@ -30,13 +33,17 @@ static const hx_opt_t k_opts[] = {
     { "--plot", "FILE", "PNG drawn by --plot-every (default live.png)", 0 },
     { "--timeout", "S", "give up when no valid frame arrives for S seconds (default: wait forever)", 0 },
     { "--print-every", "S", "status line period, s (default 1; 0: only the summary)", 0 },
+    { "--out", "FILE", "trajectory CSV, the columns of `harness replay --out` ('-': standard output)", 0 },
+    { "--json", "FILE", "summary as JSON, the keys of `harness replay --json`", 0 },
+    HX_NAV_OPTS,
     { NULL, NULL, NULL, 0 }
 };
 
 static const hx_spec_t k_spec = {
     CMD, "PORT [options]",
     "Read the footnav wire protocol (docs/wire-protocol.md) from the serial port\n"
-    "PORT, record every received sample, and print the stream's state. Corrupt\n"
+    "PORT, record every received sample, run the navigation filter on it as\n"
+    "`harness replay` does, and print the position and stance state. Corrupt\n"
     "frames are skipped and counted; a gap in the frame sequence numbers is\n"
     "reported as a drop. The run ends at the sender's END frame, on Ctrl-C, or\n"
     "when the port disappears (the recording stays intact in every case).\n"
@@ -79,10 +86,70 @@ typedef struct {
     const char *record_path;
     hx_writer_t *rec;
     int rec_failed;
+    /* navigation: the filter and the trajectory so far */
+    fnav_nav_t *nav;
+    fnav_linux_port_ctx_t lctx;   /* the replay's CSV writer */
+    fnav_port_t lport;
+    FILE *csv;
+    int csv_failed;
+    hx_traj_t traj;
+    fnav_nav_frame_t last;
+    int have_frame;
     /* plot */
     hist_t hist;
     pid_t plot_pid;
 } live_t;
+
+/* One navigation output: to the CSV (through the Linux port's writer, as
+ * replay) and into the trajectory kept for the summary and the plot. */
+static void on_nav_frame(live_t *L, const fnav_nav_frame_t *f)
+{
+    if (L->csv != NULL && !L->csv_failed && fnav_port_write_nav(&L->lport, f) != FNAV_OK) {
+        hx_error(CMD, "cannot write the trajectory CSV; it stops here");
+        L->csv_failed = 1;
+    }
+    if (L->traj.n == L->traj.cap) {
+        size_t nc = L->traj.cap ? 2 * L->traj.cap : 16384;
+        fnav_nav_frame_t *p = (fnav_nav_frame_t *)realloc(L->traj.f, nc * sizeof *p);
+        if (p == NULL) {
+            return; /* the summary covers what fitted */
+        }
+        L->traj.f = p;
+        L->traj.cap = nc;
+    }
+    L->traj.f[L->traj.n++] = *f;
+    L->last = *f;
+    L->have_frame = 1;
+}
+
+static void nav_push(live_t *L, const fnav_sample_t *s)
+{
+    fnav_nav_frame_t fr;
+    if (!L->lctx.have_t0) {
+        L->lctx.t0_ns = s->t_ns; /* CSV time is relative to the first sample, as in replay */
+        L->lctx.have_t0 = 1;
+    }
+    if (fnav_nav_push(L->nav, s) != FNAV_OK) {
+        /* rejected (NaN, time backwards): counted in the filter's stats, as in replay */
+    }
+    while (fnav_nav_pop(L->nav, &fr) == FNAV_OK) {
+        on_nav_frame(L, &fr);
+    }
+}
+
+static void nav_finish(live_t *L)
+{
+    fnav_nav_frame_t fr;
+    fnav_nav_finish(L->nav);
+    while (fnav_nav_pop(L->nav, &fr) == FNAV_OK) {
+        on_nav_frame(L, &fr);
+    }
+    L->traj.stats = L->nav->stats;
+    L->traj.rate_hz = (double)L->nav->stance.rate_hz;
+    L->traj.window = L->nav->stance.win;
+    L->traj.align = L->nav->align.result;
+    L->traj.aligned = L->nav->aligned;
+}
 
 static void warn_limited(live_t *L, const char *msg)
 {
@@ -172,6 +239,7 @@ static void on_sample(live_t *L, const fnav_sample_t *s)
     L->acc_norm = sqrt(a2);
     L->gyr_norm = sqrt(w2);
     hist_push(&L->hist, (double)(s->t_ns - L->t_first_ns) * 1e-9, L->acc_norm, L->gyr_norm);
+    nav_push(L, s);
     if (L->record_path != NULL && !L->rec_failed) {
         if (L->rec == NULL && open_recording(L) != 0) {
             return;
@@ -230,11 +298,33 @@ static void print_status(const live_t *L, int tty)
 {
     const fnav_wire_stats_t *s = &L->dec.stats;
     double span = span_s(L);
-    fprintf(stderr, "%slive: %u samples, %.1f s, %.1f Hz | |a| %.2f m/s^2 |w| %.2f rad/s | bad %u lost %u%s",
-            tty ? "\r" : "", (unsigned)L->samples, span, span > 0.0 ? (double)(L->samples - 1u) / span : 0.0,
-            L->acc_norm, L->gyr_norm, (unsigned)(s->bad_frames + L->bad_samples), (unsigned)s->lost,
+    char nav[160];
+    if (L->have_frame && (L->last.flags & FNAV_FRAME_ALIGNED)) {
+        snprintf(nav, sizeof nav, "x %.2f y %.2f z %.2f m, yaw %.0f deg, %s, %u strides",
+                 (double)L->last.pos_m[0], (double)L->last.pos_m[1], (double)L->last.pos_m[2],
+                 (double)L->last.euler_rad[2] * 57.29577951308232,
+                 (L->last.flags & FNAV_FRAME_STANCE) ? "stance" : "swing ", (unsigned)L->nav->stats.strides);
+    } else {
+        snprintf(nav, sizeof nav, "aligning (keep the foot still)");
+    }
+    fprintf(stderr, "%slive: %.1f s, %u samples | %s | bad %u lost %u%s", tty ? "\r" : "", span,
+            (unsigned)L->samples, nav, (unsigned)(s->bad_frames + L->bad_samples), (unsigned)s->lost,
             tty ? "   " : "\n");
     fflush(stderr);
+}
+
+/* Has the aligned trajectory left its start (a path worth drawing)? */
+static int moved(const hx_traj_t *t)
+{
+    size_t i;
+    for (i = 0; i < t->n; i++) {
+        const fnav_nav_frame_t *f = &t->f[i];
+        if ((f->flags & FNAV_FRAME_ALIGNED) &&
+            (fabs((double)f->pos_m[0]) > 0.01 || fabs((double)f->pos_m[1]) > 0.01 || fabs((double)f->pos_m[2]) > 0.01)) {
+            return 1;
+        }
+    }
+    return 0;
 }
 
 /* Draw the plot in a child process so that the receive loop never waits for
@@ -260,6 +350,12 @@ static void plot_async(live_t *L, const char *png)
         size_t i;
         const hist_t *h = &L->hist;
         snprintf(tmp, sizeof tmp, "%s.tmp.png", png);
+        if (moved(&L->traj)) {
+            char title[160];
+            snprintf(title, sizeof title, "harness live: %u samples, bad %u lost %u", (unsigned)L->samples,
+                     (unsigned)L->dec.stats.bad_frames, (unsigned)L->dec.stats.lost);
+            _exit((hx_nav_plot(CMD, tmp, title, &L->traj) == 0 && rename(tmp, png) == 0) ? 0 : 3);
+        }
         if (hx_plot_open(&p, CMD, tmp, 900, 500) != 0) {
             _exit(3);
         }
@@ -286,15 +382,27 @@ static void plot_async(live_t *L, const char *png)
     L->plot_pid = pid;
 }
 
+static void live_free(live_t *L)
+{
+    free(L->hist.t);
+    free(L->hist.a);
+    free(L->hist.w);
+    free(L->traj.f);
+    L->traj.f = NULL;
+}
+
 int hx_cmd_live(int argc, char **argv)
 {
+    static fnav_nav_t nav; /* about 8 KB: not on the stack */
     hx_args_t a;
     live_t L;
     hx_serial_t *port;
+    hx_nav_opts_t nopt;
+    fnav_nav_config_t ncfg;
     long baud = 460800;
     double plot_every = 0.0, timeout = 0.0, print_every = 1.0;
     double t_last_frame, t_next_print, t_next_plot, t0;
-    const char *plot_png = "live.png";
+    const char *plot_png = "live.png", *out_path, *json_path;
     char err[600], gone_msg[600] = "";
     int rc = hx_args_parse(&k_spec, argc, argv, &a);
     int exit_code = HX_EXIT_OK, gone = 0, timed_out = 0, tty = isatty(fileno(stderr));
@@ -309,15 +417,35 @@ int hx_cmd_live(int argc, char **argv)
         hx_arg_double(&a, "--print-every", 0.0, 3600.0, &print_every) != 0) {
         return HX_EXIT_USAGE;
     }
+    rc = hx_nav_opts_from_args(CMD, &a, &nopt);
+    if (rc != 0) {
+        return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE; /* --param help printed */
+    }
+    if (nopt.rate_hz > 0.0) {
+        hx_error(CMD, "--rate resamples a whole log (a zero-phase filter looks ahead); run "
+                      "`harness replay --rate` on the recording instead");
+        return HX_EXIT_USAGE;
+    }
+    if (hx_nav_config(&nopt, &ncfg, err, sizeof err) != 0) {
+        hx_error(CMD, "%s", err);
+        return HX_EXIT_USAGE;
+    }
+    if (fnav_nav_init(&nav, &ncfg) != FNAV_OK) {
+        hx_error(CMD, "navigation configuration rejected (check --param values)");
+        return HX_EXIT_USAGE;
+    }
     if (hx_arg(&a, "--plot") != NULL) {
         plot_png = hx_arg(&a, "--plot");
         if (plot_every <= 0.0) {
             plot_every = 1.0;
         }
     }
+    out_path = hx_arg(&a, "--out");
+    json_path = hx_arg(&a, "--json");
 
     memset(&L, 0, sizeof L);
     fnav_wire_decoder_init(&L.dec);
+    L.nav = &nav;
     L.record_path = hx_arg(&a, "--record");
     if (plot_every > 0.0) {
         L.hist.cap = 20000u;
@@ -326,16 +454,27 @@ int hx_cmd_live(int argc, char **argv)
         L.hist.w = calloc(L.hist.cap, sizeof(double));
         if (L.hist.t == NULL || L.hist.a == NULL || L.hist.w == NULL) {
             hx_error(CMD, "out of memory");
+            live_free(&L);
             return HX_EXIT_IO;
         }
     }
+    if (out_path != NULL) {
+        L.csv = (strcmp(out_path, "-") == 0) ? stdout : fopen(out_path, "w");
+        if (L.csv == NULL) {
+            hx_error(CMD, "cannot write %s: %s", out_path, strerror(errno));
+            live_free(&L);
+            return HX_EXIT_IO;
+        }
+    }
+    fnav_linux_port_init(&L.lport, &L.lctx, NULL, L.csv);
 
     port = hx_serial_open(a.pos[0], (int)baud, HX_SERIAL_READ, err, sizeof err);
     if (port == NULL) {
         hx_error(CMD, "%s", err);
-        free(L.hist.t);
-        free(L.hist.a);
-        free(L.hist.w);
+        if (L.csv != NULL && L.csv != stdout) {
+            fclose(L.csv);
+        }
+        live_free(&L);
         return HX_EXIT_IO;
     }
     memset(&sa, 0, sizeof sa);
@@ -401,8 +540,17 @@ int hx_cmd_live(int argc, char **argv)
             L.rec_failed = 1;
         }
     }
+    /* the frames the detector still holds, as replay does at the end */
+    nav_finish(&L);
+    if (L.csv != NULL && L.csv != stdout && fclose(L.csv) != 0) {
+        L.csv_failed = 1;
+    }
+    if (L.csv_failed && out_path != NULL) {
+        hx_error(CMD, "cannot write %s", out_path);
+    }
     if (L.plot_pid > 0) {
         waitpid(L.plot_pid, NULL, 0);
+        L.plot_pid = 0;
     }
     if (plot_every > 0.0 && L.hist.n > 0u) {
         plot_async(&L, plot_png); /* the final picture */
@@ -413,40 +561,52 @@ int hx_cmd_live(int argc, char **argv)
 
     {
         const fnav_wire_stats_t *s = &L.dec.stats;
+        FILE *sum_out = (L.csv == stdout) ? stderr : stdout;
         double span = span_s(&L);
         uint32_t missing = L.have_end && L.end_count > L.samples ? L.end_count - L.samples : 0u;
-        printf("live: %s: %u samples over %.3f s of sensor time (%.1f Hz), %.1f s of wall time\n", a.pos[0],
+        if (L.traj.aligned) {
+            hx_nav_summary_t sum;
+            hx_nav_summarize(&L.traj, &sum);
+            hx_nav_print_summary(sum_out, a.pos[0], &L.traj, &sum);
+            if (json_path != NULL &&
+                hx_nav_write_json(json_path, a.pos[0], "harness live", &L.traj, &sum, err, sizeof err) != 0) {
+                hx_error(CMD, "%s", err);
+                L.csv_failed = 1;
+            }
+        } else if (L.samples > 0u) {
+            fprintf(sum_out, "live: no navigation: the filter never aligned (the foot must be still at the start)\n");
+        }
+        fprintf(sum_out, "live: %s: %u samples over %.3f s of sensor time (%.1f Hz), %.1f s of wall time\n", a.pos[0],
                (unsigned)L.samples, span, span > 0.0 ? (double)(L.samples - 1u) / span : 0.0, hx_now_s() - t0);
-        printf("live: frames: %u valid (info %u, sample %u, nav %u, status %u, end %u, unknown %u)\n",
+        fprintf(sum_out, "live: frames: %u valid (info %u, sample %u, nav %u, status %u, end %u, unknown %u)\n",
                (unsigned)s->frames, (unsigned)L.by_type[FNAV_WIRE_INFO], (unsigned)L.by_type[FNAV_WIRE_SAMPLE],
                (unsigned)L.by_type[FNAV_WIRE_NAV], (unsigned)L.by_type[FNAV_WIRE_STATUS],
                (unsigned)L.by_type[FNAV_WIRE_END], (unsigned)L.by_type[0]);
-        printf("live: link: %u bad frames, %u lost frames in %u drops, %u bad samples, %u bytes skipped, "
+        fprintf(sum_out, "live: link: %u bad frames, %u lost frames in %u drops, %u bad samples, %u bytes skipped, "
                "%u sequence restarts\n",
                (unsigned)s->bad_frames, (unsigned)s->lost, (unsigned)s->gaps, (unsigned)L.bad_samples,
                (unsigned)s->skipped_bytes, (unsigned)s->resets);
         if (L.have_info) {
-            printf("live: sender: %s, %.6g Hz%s\n", L.info.sensor[0] ? L.info.sensor : "(unnamed)", L.info.rate_hz,
-                   (L.info.flags & FNAV_WIRE_INFO_RATE_NOMINAL) ? " nominal" : "");
+            fprintf(sum_out, "live: sender: %s, %.6g Hz%s\n", L.info.sensor[0] ? L.info.sensor : "(unnamed)",
+                    L.info.rate_hz, (L.info.flags & FNAV_WIRE_INFO_RATE_NOMINAL) ? " nominal" : "");
         }
         if (L.have_status) {
-            printf("live: sender status: %u samples, %u overruns, %u estimator errors, %u frames not sent\n",
+            fprintf(sum_out, "live: sender status: %u samples, %u overruns, %u estimator errors, %u frames not sent\n",
                    (unsigned)L.status.samples, (unsigned)L.status.overruns, (unsigned)L.status.est_errors,
                    (unsigned)L.status.tx_dropped);
         }
         if (L.record_path != NULL) {
-            printf("live: recorded %u samples to %s%s\n", (unsigned)L.samples, L.record_path,
+            fprintf(sum_out, "live: recorded %u samples to %s%s\n", (unsigned)L.samples, L.record_path,
                    L.rec_failed ? " (recording failed, see above)" : "");
         }
         if (L.have_end) {
-            printf("live: end: END frame, the sender sent %u samples, %u received\n", (unsigned)L.end_count,
+            fprintf(sum_out, "live: end: END frame, the sender sent %u samples, %u received\n", (unsigned)L.end_count,
                    (unsigned)L.samples);
         } else if (gone) {
-            printf("live: end: the port went away\n");
-            hx_error(CMD, "%s; the %u samples received before are recorded", gone_msg,
-                     (unsigned)L.samples);
+            fprintf(sum_out, "live: end: the port went away\n");
+            hx_error(CMD, "%s; the %u samples received before are recorded", gone_msg, (unsigned)L.samples);
         }
-        if (L.rec_failed) {
+        if (L.rec_failed || L.csv_failed) {
             exit_code = HX_EXIT_IO;
         } else if (gone || timed_out) {
             exit_code = HX_EXIT_DATA;
@@ -459,8 +619,6 @@ int hx_cmd_live(int argc, char **argv)
             hx_error(CMD, "no valid frame for %.1f s (--timeout); giving up", timeout);
         }
     }
-    free(L.hist.t);
-    free(L.hist.a);
-    free(L.hist.w);
+    live_free(&L);
     return exit_code;
 }

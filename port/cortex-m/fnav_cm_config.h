@@ -9,10 +9,11 @@
 
 #include "footnav/fnav_config.h"
 
-/** 1: the main loop steps the navigation filter (fnav_nav.h) and emits NAV
- *  frames. 0 until the navigation module is part of the core. */
+/** 1 (default): the main loop steps the navigation filter (fnav_nav.h:
+ *  stance detection, strapdown, UKF with zero-velocity updates) and emits
+ *  NAV frames. */
 #ifndef FNAV_CM_WITH_NAV
-#define FNAV_CM_WITH_NAV 0
+#define FNAV_CM_WITH_NAV 1
 #endif
 
 /** 1 (default): the main loop pushes samples into streaming Allan

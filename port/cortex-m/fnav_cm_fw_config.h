@@ -25,7 +25,12 @@
  * channel instead of 20.6 KB. */
 #define FNAV_WELCH_MAX_NFFT 64
 
-/* Stance detector: windows up to 32 samples, 25 ms up to 1.28 kHz. */
-#define FNAV_STANCE_MAX_WINDOW 32
+/* Stance detector: windows up to 24 samples, the default 25 ms window up
+ * to 960 Hz (the paper's lowest usable rates are 200-350 Hz). */
+#define FNAV_STANCE_MAX_WINDOW 24
+
+/* Sample ring between the interrupt and the main loop: 16 samples, 40 ms at
+ * 400 Hz, far above the main loop's worst case per sample. */
+#define FNAV_CM_RING_SIZE 16u
 
 #endif /* FNAV_CM_FW_CONFIG_H */

@@ -113,6 +113,8 @@ timeout $LIMIT "$H" live --help >/dev/null 2>&1; expect_rc $? 0 "live --help"
 timeout $LIMIT "$H" live /dev/nonexistent-port >/dev/null 2>"$T/err"; expect_rc $? 3 "live on a missing port"
 grep_in "$T/err" "nonexistent-port" "the error names the port"
 timeout $LIMIT "$H" live /dev/null >/dev/null 2>"$T/err"; expect_rc $? 3 "live on /dev/null (not a serial port)"
+timeout $LIMIT "$H" live /dev/null --rate 100 >/dev/null 2>"$T/err"; expect_rc $? 2 "live --rate (resampling needs the whole log)"
+timeout $LIMIT "$H" live /dev/null --bias-model nope >/dev/null 2>"$T/err"; expect_rc $? 2 "live --bias-model nope"
 timeout $LIMIT "$H" live "$T/orig.csv" --baud 0 >/dev/null 2>&1; expect_rc $? 2 "live --baud 0"
 timeout $LIMIT "$H" stream "$T/nope.bin" /dev/null >/dev/null 2>&1; expect_rc $? 1 "stream of a missing log"
 
@@ -120,12 +122,33 @@ start_link
 # the real libserialport path refuses a pty: this is why the seam exists
 timeout $LIMIT "$H" live "$A" >/dev/null 2>"$T/err"; expect_rc $? 3 "live on a pty without the seam"
 
-# --- a real walk, streamed and received: the recording is the log
-start_live --record "$T/rec.bin" --timeout 30 --plot-every 0.5 --plot "$T/live.png"
+# --- a real walk, streamed and received: the recording is the log and the
+# live trajectory is the replay's, to the last digit
+start_live --record "$T/rec.bin" --out "$T/live.csv" --json "$T/live.json" --timeout 30 \
+    --plot-every 0.5 --plot "$T/live.png" --print-every 0.5
 stream vectors/walk.bin --speed 20
 expect_rc "$STREAM_RC" 0 "stream walk.bin at 20x"
 wait_live
 expect_rc "$LIVE_RC" 0 "live receives walk.bin"
+timeout $LIMIT "$H" replay vectors/walk.bin --out "$T/replay.csv" --json "$T/replay.json" >"$T/replay.out" 2>&1
+expect_rc $? 0 "replay walk.bin"
+if cmp -s "$T/live.csv" "$T/replay.csv"; then
+    pass "live trajectory identical to replay ($(($(wc -l <"$T/live.csv") - 1)) rows)"
+else
+    fail "live trajectory differs from replay"; diff "$T/live.csv" "$T/replay.csv" | head -5
+fi
+grep_in "$T/live.out" "return-to-start" "live prints the replay summary"
+grep_in "$T/live.err" "strides" "the status line shows position and stance"
+if /usr/bin/python3 -c "
+import json, sys
+a = json.load(open(sys.argv[1])); b = json.load(open(sys.argv[2]))
+keys = [k for k in b if k not in ('log', 'command')]
+bad = [k for k in keys if a.get(k) != b[k]]
+sys.exit(1 if bad else 0)" "$T/live.json" "$T/replay.json"; then
+    pass "live --json has the replay's figures"
+else
+    fail "live --json differs from replay --json"
+fi
 grep_in "$T/live.out" "$N samples over" "live counts every sample"
 grep_in "$T/live.out" "END frame, the sender sent $N samples, $N received" "END frame count matches"
 grep_in "$T/live.out" "0 bad frames, 0 lost frames" "no link errors on a clean stream"
