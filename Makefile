@@ -151,7 +151,7 @@ FW_ELF    := $(ARM_BUILD)/footnav-fw.elf
 # The benchmark image: profiling marks on, semihosting, a generated slice.
 FW_SLICE_LOG   ?= vectors/walk.bin
 FW_SLICE_FIRST ?= 0
-FW_SLICE_COUNT ?= 4000
+FW_SLICE_COUNT ?= 16539
 FW_SLICE_C := $(ARM_BUILD)/gen/fnav_cm_slice_data.c
 FW_SLICE_BIN := $(ARM_BUILD)/gen/slice.bin
 BENCH_SRC := $(FW_COMMON) port/cortex-m/fnav_cm_bench.c port/cortex-m/fnav_cm_semihost.c

@@ -228,12 +228,21 @@ typedef struct {
     uint32_t count;
     uint64_t sum;
     uint32_t min, max;
+    uint32_t over;       /* calls above the target (navigation step) */
 } prof_t;
 
 static prof_t g_prof[PROF_N];
 
+/* The navigation issue's target per step, and the same in SysTick ticks
+ * (set after the calibration; 0: not checked yet). */
+#define NAV_TARGET_INSTRUCTIONS 40000u
+static uint32_t g_nav_target_ticks;
+
 static void prof_add(prof_t *p, uint32_t d)
 {
+    if (p == &g_prof[FNAV_CM_PROF_NAV] && g_nav_target_ticks != 0u && d > g_nav_target_ticks) {
+        p->over++;
+    }
     p->last = d;
     p->sum += d;
     p->min = (p->count == 0u || d < p->min) ? d : p->min;
@@ -433,6 +442,12 @@ static void print_costs(uint64_t overhead10)
         fnav_cm_line_u64(&l, minus(ins10(p->min), overhead10) / 10u);
         fnav_cm_line_str(&l, " max ");
         fnav_cm_line_u64(&l, minus(ins10(p->max), overhead10) / 10u);
+        if (i == FNAV_CM_PROF_NAV && (built & 1u)) {
+            fnav_cm_line_str(&l, "; steps over ");
+            fnav_cm_line_u64(&l, NAV_TARGET_INSTRUCTIONS);
+            fnav_cm_line_str(&l, ": ");
+            fnav_cm_line_u64(&l, p->over);
+        }
         if ((i == FNAV_CM_PROF_ALLAN && (built & 2u)) || (i == FNAV_CM_PROF_WELCH && (built & 4u))) {
             uint64_t ch = (i == FNAV_CM_PROF_ALLAN) ? FNAV_CM_ALLAN_CHANNELS : FNAV_CM_WELCH_CHANNELS;
             fnav_cm_line_str(&l, "; per channel push: mean ");
@@ -512,6 +527,10 @@ int main(void)
             fnav_cm_prof_mark(PROF_EMPTY, 0);
         }
         overhead10 = ins10(g_prof[PROF_EMPTY].sum) / g_prof[PROF_EMPTY].count;
+        /* ticks of target + overhead instructions, rounded down: a step is
+         * counted over when its count, less the overhead, exceeds the target */
+        g_nav_target_ticks = (uint32_t)(((uint64_t)NAV_TARGET_INSTRUCTIONS * 10u + overhead10) * g_ins_den /
+                                        (g_ins_num * 10u));
         fnav_cm_line_str(&l, "systick: ");
         fnav_cm_line_fix(&l, (int64_t)((g_ins_num * 1000u + g_ins_den / 2u) / g_ins_den), 3u);
         fnav_cm_line_str(&l, " instructions per tick (a ");
