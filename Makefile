@@ -71,13 +71,15 @@ $(HXLIB): $(HX_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
+# The port (in HXLIB) provides fnav_port_assert_failed for the core (LIB):
+# HXLIB is named again after LIB so that single-pass linking resolves it.
 $(HARNESS): $(BUILD)/obj/harness/main.o $(HXLIB) $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(SAN) -o $@ $^ $(LDLIBS_HOST)
+	$(CC) $(SAN) -o $@ $^ $(HXLIB) $(LDLIBS_HOST)
 
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TESTHELP_OBJ) $(HXLIB) $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(SAN) -o $@ $^ $(LDLIBS_TEST)
+	$(CC) $(SAN) -o $@ $^ $(HXLIB) $(LDLIBS_TEST)
 
 # The core must not allocate, print or exit (checked on every build).
 nm-check: $(LIB)

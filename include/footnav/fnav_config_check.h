@@ -27,4 +27,8 @@
 #error "FNAV_WELCH_MAX_NFFT must be a power of two in 8..65536"
 #endif
 
+#if (FNAV_IMUERR_FLICKER_POLES < 2) || (FNAV_IMUERR_FLICKER_POLES > 64)
+#error "FNAV_IMUERR_FLICKER_POLES must be in 2..64"
+#endif
+
 #endif /* FNAV_CONFIG_CHECK_H */

@@ -14,6 +14,7 @@ extern "C" {
 #include "fnav_math.h"
 #include "fnav_port.h"
 #include "fnav_profile.h"
+#include "fnav_imuerr.h"
 
 #ifdef __cplusplus
 }
