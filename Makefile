@@ -24,7 +24,7 @@ FNAV_DEFS ?=
 
 WARN     := -std=c99 -pedantic -Wall -Wextra -Wmissing-prototypes -Wdouble-promotion \
             -Wshadow -Wstrict-prototypes -Werror
-CPPFLAGS := -Iinclude -Iport/linux -Iharness $(FNAV_DEFS)
+CPPFLAGS := -Iinclude -Iport/linux -Iharness -Itests/support -Iport/cortex-m $(FNAV_DEFS)
 CFLAGS_CORE := $(WARN) $(OPT) $(SAN)
 # The harness, the Linux port and the tests may use POSIX.
 CFLAGS_HOST := $(WARN) $(OPT) $(SAN) -D_POSIX_C_SOURCE=200809L
@@ -35,7 +35,7 @@ CORE_SRC    := $(wildcard src/*.c)
 HX_SRC      := $(filter-out harness/main.c,$(wildcard harness/*.c)) $(wildcard port/linux/*.c)
 TEST_SRC    := $(wildcard tests/test_*.c)
 BENCH_SRC   := $(wildcard tests/bench_*.c)
-TESTHELP_SRC:= $(wildcard tests/support/*.c)
+TESTHELP_SRC:= $(wildcard tests/support/*.c) port/cortex-m/fnav_cm_ring.c
 
 CORE_OBJ    := $(CORE_SRC:%.c=$(BUILD)/obj/%.o)
 HX_OBJ      := $(HX_SRC:%.c=$(BUILD)/obj/%.o)
@@ -49,7 +49,7 @@ BENCH_BINS  := $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 FORBIDDEN := malloc|calloc|realloc|free|_sbrk|sbrk|printf|fprintf|sprintf|snprintf|vprintf|vfprintf|vsprintf|vsnprintf|puts|fputs|putchar|fputc|putc|fopen|fclose|fread|fwrite|fflush|stdout|stderr|stdin|_impure_ptr|__printf_chk|__fprintf_chk|__sprintf_chk|__snprintf_chk|exit|abort|system
 
 .PHONY: all test check-suites test-double test-cli vectors-check nm-check sanitize \
-        firmware bench deps clean run
+        firmware bench deps clean run fuzz valgrind lint
 
 all: $(LIB) $(HARNESS) nm-check
 
@@ -140,6 +140,55 @@ firmware: $(ARM_LIB) $(ARM_PORT_OBJ)
 bench: $(HARNESS) $(BENCH_BINS)
 	@set -e; if [ -z "$(BENCH_BINS)" ]; then echo "bench: no benchmarks yet"; fi; \
 	for b in $(BENCH_BINS); do echo "== $$b"; $$b; done
+
+# ---------------------------------------------------------------- robustness
+# libFuzzer targets tests/fuzz/fuzz_<name>.c, each run for FUZZ_SECONDS on a
+# working copy of its committed seed corpus tests/fuzz/corpus/<name>/ under
+# ASan + UBSan; any crash, leak, timeout or sanitizer report fails the target.
+FUZZ_SECONDS ?= 60
+FUZZ_CC   ?= clang
+FUZZ_DIR  := build/fuzz
+FUZZ_SRC  := $(wildcard tests/fuzz/fuzz_*.c)
+FUZZ_BINS := $(FUZZ_SRC:tests/fuzz/%.c=$(FUZZ_DIR)/%)
+FUZZ_CFLAGS := -g -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \
+               -std=c99 -Wall -Wextra -Werror -D_POSIX_C_SOURCE=200809L
+FUZZ_LIB_OBJ := $(patsubst %.c,$(FUZZ_DIR)/obj/%.o,$(CORE_SRC) $(HX_SRC))
+
+.SECONDARY: $(FUZZ_LIB_OBJ)
+
+$(FUZZ_DIR)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(CPPFLAGS) $(FUZZ_CFLAGS) -c $< -o $@
+
+$(FUZZ_DIR)/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_LIB_OBJ)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(CPPFLAGS) -Itests/fuzz $(FUZZ_CFLAGS) -fsanitize=fuzzer $^ -o $@ $(LDLIBS_HOST)
+
+fuzz: $(FUZZ_BINS)
+	@set -e; for b in $(FUZZ_BINS); do n=$${b#$(FUZZ_DIR)/fuzz_}; \
+	  mkdir -p $(FUZZ_DIR)/corpus/$$n $(FUZZ_DIR)/artifacts/$$n; \
+	  cp -n tests/fuzz/corpus/$$n/* $(FUZZ_DIR)/corpus/$$n/ 2>/dev/null || true; \
+	  echo "== fuzz $$n for $(FUZZ_SECONDS) s"; \
+	  $$b -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+	    -artifact_prefix=$(FUZZ_DIR)/artifacts/$$n/ $(FUZZ_DIR)/corpus/$$n 2>&1 | tail -n 12; \
+	  if ls $(FUZZ_DIR)/artifacts/$$n/* >/dev/null 2>&1; then echo "fuzz $$n: FAILED, see $(FUZZ_DIR)/artifacts/$$n"; exit 1; fi; \
+	done; echo "make fuzz: no crash, leak, timeout or sanitizer report"
+
+# Every suite under valgrind's memcheck (leaks and invalid accesses are errors).
+valgrind: $(TEST_BINS)
+	@set -e; for t in $(TEST_BINS); do echo "== valgrind $$t"; \
+	  valgrind -q --error-exitcode=9 --leak-check=full --errors-for-leak-kinds=definite,indirect $$t; done
+	@echo "make valgrind: clean"
+
+# Static analysis of src/ and port/ with the committed configurations
+# (.clang-tidy, tests/cppcheck-suppressions.txt).
+lint:
+	cppcheck --std=c99 --enable=warning,style,performance,portability --inline-suppr --error-exitcode=1 \
+	  --suppressions-list=tests/cppcheck-suppressions.txt -UFNAV_CONFIG_FILE -Iinclude -Iport/linux -Iport/cortex-m -Iharness \
+	  --quiet src port
+	clang-tidy --quiet $(wildcard src/*.c) $(wildcard port/linux/*.c) $(wildcard port/cortex-m/*.c) -- \
+	  $(CPPFLAGS) -std=c99 -D_POSIX_C_SOURCE=200809L
+	@echo "make lint: cppcheck and clang-tidy clean"
 
 # ---------------------------------------------------------------- misc
 deps:

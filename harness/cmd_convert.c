@@ -36,6 +36,9 @@ int hx_cmd_convert(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    if (hx_check_input_opts("convert", &a) != 0) {
+        return HX_EXIT_USAGE;
+    }
     to_name = hx_arg(&a, "--to");
     if (to_name != NULL) {
         to = hx_format_from_name(to_name);
@@ -65,8 +68,9 @@ int hx_cmd_convert(int argc, char **argv)
         }
     }
     if (st != FNAV_END && exit_code == HX_EXIT_OK) {
-        hx_error("convert", "%s (the %ld samples before it were written)", hx_reader_error(r),
-                 hx_reader_stats(r)->records);
+        long n = hx_reader_stats(r)->records;
+        hx_error("convert", "%s (the %ld sample%s before it %s written)", hx_reader_error(r), n, n == 1 ? "" : "s",
+                 n == 1 ? "was" : "were");
         exit_code = HX_EXIT_DATA;
     }
     if (hx_writer_close(w, err, sizeof err) != FNAV_OK) {

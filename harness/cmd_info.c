@@ -229,6 +229,9 @@ int hx_cmd_info(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    if (hx_check_input_opts("info", &a) != 0) {
+        return HX_EXIT_USAGE;
+    }
     rc = hx_load_input("info", &a, a.pos[0], &log);
     if (rc < 0) {
         return HX_EXIT_DATA;

@@ -211,7 +211,15 @@ static int input_options(const char *cmd, const hx_args_t *a, hx_format_t *fmt, 
     if (hx_arg_double(a, "--input-rate", 1e-3, 1e6, rate) != 0) {
         return -1;
     }
+    (void)cmd;
     return 0;
+}
+
+int hx_check_input_opts(const char *cmd, const hx_args_t *a)
+{
+    hx_format_t fmt;
+    double rate;
+    return input_options(cmd, a, &fmt, &rate);
 }
 
 static void print_warnings(const char *cmd, const char *w)

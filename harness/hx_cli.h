@@ -86,6 +86,10 @@ void hx_warn(const char *cmd, const char *fmt, ...)
                         "ngimu, pyshoe, ipol, adis, square2", 0 },                            \
     { "--input-rate", "HZ", "sample rate of an input without time stamps", 0 }
 
+/** Check --from and --input-rate; call right after parsing so that a bad
+ *  value is a usage error (exit HX_EXIT_USAGE). 0 ok, -1 error printed. */
+int hx_check_input_opts(const char *cmd, const hx_args_t *a);
+
 /** Open the input of a command using --from and --input-rate. Prints the
  *  error and returns NULL on failure; prints reader warnings. */
 hx_reader_t *hx_open_input(const char *cmd, const hx_args_t *a, const char *path);

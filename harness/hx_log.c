@@ -4,6 +4,7 @@
 #include "hx_bin.h"
 
 #include <ctype.h>
+#include <math.h>
 #include <errno.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -67,6 +68,8 @@ struct hx_reader {
     double rate_hz;
     long index;
     int have_prev;
+    int last_line_open;         /* the last line read had no newline (EOF) */
+    long cut_lines;             /* incomplete last lines ignored */
     int64_t prev_t_ns;
     double prev_counter;
     /* GX2 timer state */
@@ -208,10 +211,10 @@ static int parse_time_ns(const char *s, int64_t *out)
         p++;
     }
     while (isdigit((unsigned char)*p)) {
-        if (ip > 9000000000LL) {
-            return -1;
-        }
         ip = ip * 10 + (*p - '0');
+        if (ip > 9000000000LL) {
+            return -1; /* beyond 9e9 s: int64 ns would overflow */
+        }
         p++;
         digits++;
     }
@@ -258,6 +261,16 @@ static int lower_eq(const char *a, const char *b)
     return *a == *b;
 }
 
+/* Seconds to ns with a range check (|t| < 9.2e9 s keeps int64 ns exact enough). */
+static int secs_to_ns(double t_s, int64_t *out)
+{
+    if (!(t_s > -9.0e9 && t_s < 9.0e9)) {
+        return -1;
+    }
+    *out = (int64_t)floor(t_s * 1.0e9 + 0.5);
+    return 0;
+}
+
 /* Read one line; 1 ok, 0 EOF, -1 error (err set). */
 static int read_line(hx_reader_t *r)
 {
@@ -273,6 +286,7 @@ static int read_line(hx_reader_t *r)
     }
     r->stats.lines++;
     n = strlen(r->line);
+    r->last_line_open = (n == 0 || r->line[n - 1] != '\n');
     if (n == sizeof r->line - 1 && r->line[n - 1] != '\n' && !gzeof(r->gz)) {
         set_err(r, "%s:%ld: line longer than %d characters", r->path, r->stats.lines, HX_LINE_MAX - 1);
         return -1;
@@ -378,9 +392,13 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
     for (i = 0; i < 8; i++) {
         int c = (names[i] != NULL) ? find_col(f, n, names[i]) : -1;
         if (c < 0 && names[i] != NULL && (i < 7) && (i > 0 || time_required)) {
-            set_err(r, "%s:%ld: header has no column '%s' (%s); expected header %s", r->path,
-                    r->stats.lines, names[i], what[i],
-                    r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "of the format");
+            if (r->meta.format == HX_FMT_CSV) {
+                set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]", r->path,
+                        r->stats.lines, names[i]);
+            } else {
+                set_err(r, "%s:%ld: header has no column '%s' (the %s column of the %s format)", r->path,
+                        r->stats.lines, names[i], what[i], hx_format_name(r->meta.format));
+            }
             return -1;
         }
         if (i == 0) {
@@ -563,11 +581,10 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s)
         r->gx2_ticks = 0;
     } else {
         double d = counter - r->prev_counter;
-        long dl = (long)d;
         if (d > 0.0 && d < GX2_TICK_HZ / 10 &&
-            (r->gx2_last_dt == 0 || labs(dl - r->gx2_last_dt) < r->gx2_last_dt / 2)) {
-            r->gx2_last_dt = dl;
-            r->gx2_ticks += dl;
+            (r->gx2_last_dt == 0 || labs((long)d - r->gx2_last_dt) < r->gx2_last_dt / 2)) {
+            r->gx2_last_dt = (long)d;
+            r->gx2_ticks += (long)d;
         } else if (r->gx2_last_dt > 0) {
             r->gx2_ticks += r->gx2_last_dt;
             r->gx2_bridged++;
@@ -585,12 +602,11 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s)
     return (r->gx2_ticks * 1000000000LL) / GX2_TICK_HZ;
 }
 
+static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s);
+
 static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
 {
-    char *f[HX_MAX_COLS];
-    int n, i, rc;
-    double v[6], tv = 0.0, aux = 0.0;
-    int64_t t_ns = 0;
+    int rc;
     for (;;) {
         rc = read_line(r);
         if (rc < 0) {
@@ -603,6 +619,31 @@ static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
             break;
         }
     }
+    if (r->last_line_open && r->meta.format != HX_FMT_CSV && gzeof(r->gz)) {
+        /* The final line of a foreign recording has no newline: the file was
+         * cut off mid-write. Parse it on a copy; if it is incomplete, ignore
+         * it with a warning (docs/log-format.md) instead of failing. */
+        fnav_status_t st;
+        r->last_line_open = 0;
+        st = next_text_fields(r, s);
+        if (st != FNAV_OK) {
+            r->err[0] = '\0';
+            r->cut_lines++;
+            add_warn(r, "%s:%ld: last line is incomplete (recording cut off mid-write); ignored", r->path,
+                     r->stats.lines);
+            return FNAV_END;
+        }
+        return st;
+    }
+    return next_text_fields(r, s);
+}
+
+static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
+{
+    char *f[HX_MAX_COLS];
+    int n, i;
+    double v[6], tv = 0.0, aux = 0.0;
+    int64_t t_ns = 0;
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     if (r->meta.format == HX_FMT_GX2) {
         if (n == 0 || strncmp(f[0], "0x", 2) != 0) {
@@ -650,7 +691,11 @@ static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
         break;
     }
     case TIME_INDEX:
-        t_ns = (int64_t)((double)r->index * 1.0e9 / r->rate_hz + 0.5);
+        if (secs_to_ns((double)r->index / r->rate_hz, &t_ns) != 0) {
+            set_err(r, "%s:%ld: time of sample %ld at %g Hz is out of range", r->path, r->stats.lines, r->index,
+                    r->rate_hz);
+            return FNAV_E_RANGE;
+        }
         s->seq = (uint32_t)r->index;
         break;
     case TIME_COUNTER:
@@ -659,7 +704,11 @@ static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
                     f[r->col_t]);
             return FNAV_E_FORMAT;
         }
-        t_ns = (int64_t)(tv * 1.0e9 / r->rate_hz + 0.5);
+        if (tv != floor(tv) || secs_to_ns(tv / r->rate_hz, &t_ns) != 0) {
+            set_err(r, "%s:%ld: counter ('%.20s') is not a whole number in range", r->path, r->stats.lines,
+                    f[r->col_t]);
+            return FNAV_E_FORMAT;
+        }
         s->seq = (uint32_t)tv;
         s->flags |= FNAV_SAMPLE_HAS_SEQ;
         break;
@@ -668,6 +717,10 @@ static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
         if (parse_num(f[7], &tv) != 0 || parse_num(f[r->col_aux], &aux) != 0 ||
             parse_num(f[r->col_t], &host) != 0) {
             set_err(r, "%s:%ld: counter, Nr or time stamp is not a number", r->path, r->stats.lines);
+            return FNAV_E_FORMAT;
+        }
+        if (!(aux >= 0.0 && aux <= 4294967295.0 && aux == floor(aux)) || !(tv >= 0.0 && tv <= 4294967295.0)) {
+            set_err(r, "%s:%ld: Nr or counter is not a 32-bit count", r->path, r->stats.lines);
             return FNAV_E_FORMAT;
         }
         t_ns = gx2_time(r, tv, host);

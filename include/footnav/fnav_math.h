@@ -299,16 +299,18 @@ static inline fnav_vec3_t fnav_quat_to_euler(fnav_quat_t q)
                      fnav_atan2(FNAV_R(2.0) * (w * z + x * y), FNAV_R(1.0) - FNAV_R(2.0) * (y * y + z * z)));
 }
 
-/** Wrap an angle to (-pi, pi]; bounded work for any finite input. */
+/** Wrap an angle to (-pi, pi]. fmod is exact, so the result stays in range
+ *  for any finite input (an angle of 1e30 rad has no meaningful phase left,
+ *  but it never escapes the range). */
 static inline fnav_real_t fnav_wrap_pi(fnav_real_t a)
 {
     const fnav_real_t two_pi = FNAV_R(2.0) * FNAV_PI;
     if (a > FNAV_PI || a <= -FNAV_PI) {
-        a -= two_pi * fnav_floor((a + FNAV_PI) / two_pi);
-        if (a <= -FNAV_PI) {
-            a += two_pi;
-        } else if (a > FNAV_PI) {
+        a = fnav_fmod(a, two_pi); /* (-2 pi, 2 pi), exact */
+        if (a > FNAV_PI) {
             a -= two_pi;
+        } else if (a <= -FNAV_PI) {
+            a += two_pi;
         }
     }
     return a;

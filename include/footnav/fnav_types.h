@@ -60,6 +60,7 @@ static inline fnav_real_t fnav_log10(fnav_real_t x) { return log10(x); }
 static inline fnav_real_t fnav_pow(fnav_real_t x, fnav_real_t y) { return pow(x, y); }
 static inline fnav_real_t fnav_floor(fnav_real_t x) { return floor(x); }
 static inline fnav_real_t fnav_ceil(fnav_real_t x) { return ceil(x); }
+static inline fnav_real_t fnav_fmod(fnav_real_t x, fnav_real_t y) { return fmod(x, y); }
 #else
 static inline fnav_real_t fnav_sqrt(fnav_real_t x) { return sqrtf(x); }
 static inline fnav_real_t fnav_fabs(fnav_real_t x) { return fabsf(x); }
@@ -75,6 +76,7 @@ static inline fnav_real_t fnav_log10(fnav_real_t x) { return log10f(x); }
 static inline fnav_real_t fnav_pow(fnav_real_t x, fnav_real_t y) { return powf(x, y); }
 static inline fnav_real_t fnav_floor(fnav_real_t x) { return floorf(x); }
 static inline fnav_real_t fnav_ceil(fnav_real_t x) { return ceilf(x); }
+static inline fnav_real_t fnav_fmod(fnav_real_t x, fnav_real_t y) { return fmodf(x, y); }
 #endif
 
 /** Non-zero when x is neither NaN nor infinite. */

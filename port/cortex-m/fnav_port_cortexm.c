@@ -1,39 +1,6 @@
 /* Cortex-M4F port skeleton (see fnav_port_cortexm.h). */
 #include "fnav_port_cortexm.h"
 
-/* Data memory barrier: orders the slot write before the index update. */
-#if defined(__arm__)
-#define FNAV_CM_DMB() __asm volatile("dmb" ::: "memory")
-#else
-#define FNAV_CM_DMB() __asm__ volatile("" ::: "memory")
-#endif
-
-int fnav_cm_ring_push(fnav_cm_ring_t *ring, const fnav_sample_t *s)
-{
-    uint32_t head = ring->head;
-    if (head - ring->tail >= FNAV_CM_RING_SIZE) {
-        ring->overruns++;
-        return -1;
-    }
-    ring->slot[head & (FNAV_CM_RING_SIZE - 1u)] = *s;
-    FNAV_CM_DMB();
-    ring->head = head + 1u;
-    return 0;
-}
-
-int fnav_cm_ring_pop(fnav_cm_ring_t *ring, fnav_sample_t *s)
-{
-    uint32_t tail = ring->tail;
-    if (ring->head == tail) {
-        return 0;
-    }
-    FNAV_CM_DMB();
-    *s = ring->slot[tail & (FNAV_CM_RING_SIZE - 1u)];
-    FNAV_CM_DMB();
-    ring->tail = tail + 1u;
-    return 1;
-}
-
 void fnav_cm_sample_isr(fnav_cm_port_ctx_t *ctx)
 {
     fnav_sample_t s;
@@ -89,9 +56,7 @@ static fnav_status_t cm_write_nav(void *ctx, const fnav_nav_frame_t *f)
 
 void fnav_cm_port_init(fnav_port_t *port, fnav_cm_port_ctx_t *ctx)
 {
-    ctx->ring.head = 0u;
-    ctx->ring.tail = 0u;
-    ctx->ring.overruns = 0u;
+    fnav_cm_ring_init(&ctx->ring);
     ctx->frames = 0u;
     port->ctx = ctx;
     port->read_sample = cm_read;

@@ -14,23 +14,7 @@
 #define FNAV_PORT_CORTEXM_H
 
 #include "footnav/fnav_port.h"
-
-/** Ring capacity in samples; a power of two. 32 samples are 160 ms at 200 Hz. */
-#ifndef FNAV_CM_RING_SIZE
-#define FNAV_CM_RING_SIZE 32u
-#endif
-
-#if (FNAV_CM_RING_SIZE & (FNAV_CM_RING_SIZE - 1u)) != 0u
-#error "FNAV_CM_RING_SIZE must be a power of two"
-#endif
-
-/** Lock-free SPSC ring: the ISR only writes head, the main loop only tail. */
-typedef struct {
-    fnav_sample_t slot[FNAV_CM_RING_SIZE];
-    volatile uint32_t head;      /**< written by the producer (ISR) */
-    volatile uint32_t tail;      /**< written by the consumer (main loop) */
-    volatile uint32_t overruns;  /**< samples dropped because the ring was full */
-} fnav_cm_ring_t;
+#include "fnav_cm_ring.h"
 
 /** Port context. */
 typedef struct {
@@ -39,12 +23,6 @@ typedef struct {
 } fnav_cm_port_ctx_t;
 
 void fnav_cm_port_init(fnav_port_t *port, fnav_cm_port_ctx_t *ctx);
-
-/** Producer side; call from the sample-ready interrupt. Returns 0, or -1
- *  (counted in overruns) when the ring is full. ISR-safe. */
-int fnav_cm_ring_push(fnav_cm_ring_t *ring, const fnav_sample_t *s);
-/** Consumer side; 1 with *s filled, 0 when empty. Main loop only. */
-int fnav_cm_ring_pop(fnav_cm_ring_t *ring, fnav_sample_t *s);
 
 /** Sample-ready interrupt body: reads the IMU and pushes the sample. */
 void fnav_cm_sample_isr(fnav_cm_port_ctx_t *ctx);

@@ -1,0 +1,104 @@
+#!/bin/sh
+# CLI tests of the foundation commands: help/usage exit codes, info and
+# convert on the bundled example and on every shared data set, bad input.
+# $HARNESS is the harness binary (set by `make test-cli`).
+set -u
+H=${HARNESS:-bin/harness}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+fails=0
+pass() { echo "ok   $1"; }
+fail() { echo "FAIL $1"; fails=$((fails + 1)); }
+expect_exit() { # expected-code description command...
+    want=$1; what=$2; shift 2
+    "$@" >"$T/out" 2>"$T/err"; got=$?
+    if [ "$got" -eq "$want" ]; then pass "$what (exit $got)"; else fail "$what: exit $got, expected $want"; cat "$T/err"; fi
+}
+expect_err() { # pattern description: checks $T/err
+    if grep -q -- "$1" "$T/err"; then pass "$2"; else fail "$2: stderr lacks '$1'"; cat "$T/err"; fi
+}
+expect_out() {
+    if grep -q -- "$1" "$T/out"; then pass "$2"; else fail "$2: stdout lacks '$1'"; cat "$T/out"; fi
+}
+
+# --- usage
+expect_exit 0 "harness --help" "$H" --help
+expect_exit 2 "no command" "$H"
+expect_exit 2 "unknown command" "$H" frobnicate
+expect_err "unknown command 'frobnicate'" "unknown command is named"
+expect_exit 2 "info without LOG" "$H" info
+expect_exit 2 "unknown option" "$H" info vectors/walk.bin --bogus
+expect_exit 0 "info --help" "$H" info --help
+expect_exit 0 "convert --help" "$H" convert --help
+expect_exit 2 "bad --input-rate" "$H" info vectors/walk.bin --input-rate -3
+expect_exit 2 "unknown --from" "$H" info vectors/walk.bin --from nope
+expect_err "unknown input format 'nope'" "--from error names the format"
+
+# --- the bundled example
+expect_exit 0 "info walk.bin" "$H" info vectors/walk.bin --json "$T/info.json"
+expect_out "samples     16539" "walk.bin sample count"
+expect_out "duplicates  205" "walk.bin duplicates (MANIFEST: 205)"
+if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['samples']==16539 and d['duplicates']==205 and d['gravity_axis']=='+z'" "$T/info.json"; then
+    pass "info --json is valid and consistent"
+else
+    fail "info --json"
+fi
+
+# --- round trip bin -> csv -> bin -> csv: identical CSV text
+expect_exit 0 "convert bin->csv" "$H" convert vectors/walk.bin "$T/a.csv"
+expect_exit 0 "convert csv->bin" "$H" convert "$T/a.csv" "$T/b.bin"
+expect_exit 0 "convert bin->csv (2)" "$H" convert "$T/b.bin" "$T/c.csv"
+if cmp -s "$T/a.csv" "$T/c.csv"; then pass "csv -> bin -> csv identical"; else fail "round trip changed values"; fi
+expect_exit 0 "convert to stdout" "$H" convert vectors/walk.bin -
+if [ "$(wc -l <"$T/out")" -eq 16540 ]; then pass "stdout has header + 16539 rows"; else fail "stdout rows"; fi
+
+# --- every shared data set (skipped visibly when the data is absent)
+. tests/cli/datadir.sh
+if [ -n "$D" ]; then
+    for f in "$D"/openshoe_gx2/Measurement*.txt "$D"/openshoe_c_820hz/OpenShoeDataSet.txt "$D"/xio_ngimu_gait/*.csv \
+             "$D"/pyshoe_vicon_llio/vicon_3dmgx3/*_imu.csv "$D"/pyshoe_vicon_llio/own_3dmgx5_footprints/*_imu.csv \
+             "$D"/ipol_gait_xsens/*_lf.txt "$D"/ipol_gait_xsens/*_rf.txt "$D"/openshoe_square2/square2_u.csv \
+             "$D"/adis16405_static/adis16405_imu2_100Hz.csv.gz; do
+        [ -f "$f" ] || continue
+        n=$(basename "$f")
+        "$H" info "$f" >"$T/out" 2>"$T/err" || { fail "info $n"; cat "$T/err"; continue; }
+        "$H" convert "$f" "$T/x.bin" 2>"$T/err" || { fail "convert $n"; cat "$T/err"; continue; }
+        a=$("$H" info "$f" 2>/dev/null | grep '^samples' | awk '{print $2}')
+        b=$("$H" info "$T/x.bin" 2>/dev/null | grep '^samples' | awk '{print $2}')
+        if [ -n "$a" ] && [ "$a" = "$b" ]; then pass "info+convert $n ($a samples)"; else fail "$n: $a vs $b samples"; fi
+    done
+else
+    echo "SKIP shared data sets (not found; set FNAV_DATA_DIR)"
+fi
+
+# --- bad input: a clear error naming the file, exit 1, outputs kept
+head -c 1000 vectors/walk.bin >"$T/trunc.bin"
+expect_exit 1 "truncated .bin" "$H" convert "$T/trunc.bin" "$T/trunc.csv"
+expect_err "trunc.bin: truncated: record #16" "truncation names file and record"
+if [ "$(wc -l <"$T/trunc.csv")" -eq 17 ]; then pass "16 complete records kept"; else fail "records before the cut lost"; fi
+cp vectors/walk.bin "$T/corrupt.bin"
+printf 'XXXX' | dd of="$T/corrupt.bin" bs=1 seek=5000 conv=notrunc 2>/dev/null
+expect_exit 1 "corrupted .bin" "$H" info "$T/corrupt.bin"
+expect_err "corrupt.bin: record #100 at byte 4992: checksum mismatch" "corruption names file and record"
+expect_out "samples     16538" "only the corrupted record is lost"
+printf 'not a log at all\n' >"$T/junk.bin"
+expect_exit 1 "junk input" "$H" info "$T/junk.bin"
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0.01,0,0,-9.8,0,0,0\n0.005,0,0,-9.8,0,0,0\n' >"$T/back.csv"
+expect_exit 1 "time backwards" "$H" convert "$T/back.csv" "$T/back.bin"
+expect_err "back.csv:4: time goes backwards" "backwards time names file and line"
+expect_exit 0 "bin written up to the error is valid" "$H" info "$T/back.bin"
+expect_out "samples     2" "two samples kept"
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,nan\n' >"$T/nan.csv"
+expect_exit 1 "NaN in CSV" "$H" info "$T/nan.csv"
+expect_err "nan.csv:2: column 7 ('nan') is NaN or Inf" "NaN names file, line and column"
+printf 't,ax,ay,az\n0,0,0,-9.8\n' >"$T/cols.csv"
+expect_exit 1 "missing columns" "$H" info "$T/cols.csv"
+expect_err "cols.csv:1: header has no column 'gx'" "missing column named"
+: >"$T/empty.csv"
+expect_exit 1 "empty file" "$H" info "$T/empty.csv"
+expect_err "empty" "empty file said"
+expect_exit 3 "unwritable output" "$H" convert vectors/walk.bin /nonexistent-dir/x.bin
+expect_err "cannot create" "unwritable output said"
+
+echo "foundation CLI: $fails failure(s)"
+[ "$fails" -eq 0 ]

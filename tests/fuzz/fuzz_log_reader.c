@@ -1,0 +1,47 @@
+/* Fuzz target: every log reader (.bin, CSV and the importers). The first
+ * input byte selects the format (0: detect, 1..: forced) and whether the
+ * whole-log loader or the streaming reader is used; the rest is the file. */
+#include <stdint.h>
+#include <string.h>
+
+#include "fuzz_support.h"
+#include "hx_log.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    char err[320];
+    const char *path;
+    hx_format_t fmt;
+    int whole;
+    if (size < 1) {
+        return 0;
+    }
+    fmt = (hx_format_t)(data[0] % HX_FMT_COUNT);
+    whole = (data[0] & 0x80) != 0;
+    path = fuzz_write_input(data + 1, size - 1, (data[0] & 0x40) ? ".gz" : ".log");
+    if (path == NULL) {
+        return 0;
+    }
+    if (whole) {
+        hx_log_t log;
+        if (hx_log_load(&log, path, fmt, (data[0] & 0x20) ? 123.0 : 0.0, err, sizeof err) >= 0) {
+            hx_log_free(&log);
+        }
+    } else {
+        hx_reader_t *r = hx_reader_open(path, fmt, 0.0, err, sizeof err);
+        if (r != NULL) {
+            fnav_sample_t s;
+            long n = 0;
+            while (hx_reader_next(r, &s) == FNAV_OK && n < 1000000) {
+                n++;
+            }
+            (void)hx_reader_error(r);
+            (void)hx_reader_warnings(r);
+            hx_reader_close(r);
+        }
+    }
+    unlink(path);
+    return 0;
+}

@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""Build the committed seed corpora of the fuzz targets (tests/fuzz/corpus/).
+
+Log reader seeds are the first lines of each data set in ../shared/data whose
+licence allows copying (MIT, ISC, BSD, CC BY), synthetic stand-ins for the
+others (ADIS: CC BY-NC-SA; IPOL: AGPL), and the golden .bin vector. The
+first byte of a log seed selects the format (see fuzz_log_reader.c).
+
+  /usr/bin/python3 tests/fuzz/make_corpus.py [DATA_DIR]
+"""
+import gzip
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+DATA = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, '..', 'shared', 'data')
+FMT = {'auto': 0, 'bin': 1, 'csv': 2, 'gx2': 3, 'openshoe820': 4, 'ngimu': 5, 'pyshoe': 6,
+       'ipol': 7, 'adis': 8, 'square2': 9}
+
+def head(rel, lines):
+    with open(os.path.join(DATA, rel), 'rb') as f:
+        return b''.join(f.readline() for _ in range(lines))
+
+def put(target, name, data):
+    d = os.path.join(HERE, 'corpus', target)
+    os.makedirs(d, exist_ok=True)
+    with open(os.path.join(d, name), 'wb') as f:
+        f.write(data)
+
+def main():
+    seeds = [
+        ('gx2', 'openshoe_gx2/Measurement_100521_2_data_inert.txt', 12),   # ISC
+        ('openshoe820', 'openshoe_c_820hz/OpenShoeDataSet.txt', 12),        # CC BY 4.0
+        ('ngimu', 'xio_ngimu_gait/short_walk.csv', 12),                     # MIT
+        ('pyshoe', 'pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-22-03_imu.csv', 12),  # MIT
+        ('square2', 'openshoe_square2/square2_u.csv', 12),                  # BSD-2
+    ]
+    for fmt, rel, n in seeds:
+        text = head(rel, n)
+        put('log_reader', fmt + '_auto', bytes([FMT['auto']]) + text)
+        put('log_reader', fmt + '_forced', bytes([FMT[fmt] | 0x80]) + text)
+    put('log_reader', 'ipol_synthetic', bytes([FMT['auto']]) +
+        b'Acquisition frequency: 100 Hz\n'
+        b'PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\tMag_X\tMag_Y\tMag_Z\n'
+        b'0.0\t5.0\t0.4\t8.9\t-0.002\t0.008\t-0.017\t-0.6\t0.0\t-0.4\n'
+        b'1.0\t5.1\t0.4\t8.9\t-0.010\t0.008\t-0.015\t-0.6\t0.0\t-0.4\n'
+        b'4.0\t5.0\t0.5\t8.8\t-0.011\t0.009\t-0.016\t-0.6\t0.0\t-0.4\n')
+    adis = (b'gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g\n'
+            b'-0.05,-0.3,0.7,-0.006,0,-1.015\n0.35,-0.3,0.45,-0.01,0,-1.018\n')
+    put('log_reader', 'adis_synthetic', bytes([FMT['auto']]) + adis)
+    put('log_reader', 'adis_synthetic_gz', bytes([FMT['auto'] | 0x40]) + gzip.compress(adis, mtime=0))
+    put('log_reader', 'csv_temp', bytes([FMT['csv']]) +
+        b't,ax,ay,az,gx,gy,gz,temp\n0,0.1,0.2,-9.8,0.01,0.02,0.03,21.5\n0.005,0.1,0.2,-9.8,0.01,0.02,0.03,21.5\n')
+    with open(os.path.join(ROOT, 'vectors', 'logformat', 'sample_v1.bin'), 'rb') as f:
+        b = f.read()
+    put('log_reader', 'bin_golden', bytes([FMT['auto']]) + b)
+    put('log_reader', 'bin_golden_whole', bytes([FMT['bin'] | 0x80]) + b)
+    put('profile', 'navchip', b'''# footnav sensor profile
+format = footnav-profile 1
+name = navchip
+rate_hz = 200
+accel_noise_mps2_rthz = 0.00074 0.00064 0.0005
+accel_tau_s = 10 10 10
+accel_bias_sigma_mps2 = 1.3e-05 9.7e-06 7.3e-06
+gyro_noise_rps_rthz = 5.7e-05 6.4e-05 7.3e-05
+gyro_tau_s = 5 5 50
+gyro_bias_sigma_rps = 1.5e-06 1.1e-06 5.9e-07
+''')
+    print('corpus written under', os.path.join(HERE, 'corpus'))
+
+if __name__ == '__main__':
+    main()

@@ -1,0 +1,719 @@
+/* Log I/O: the .bin format against the independent Python vectors, CSV
+ * interchange, every importer on the shared data, and bad input. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include <cmocka.h>
+
+#include "fnav_testdata.h"
+#include "hx_bin.h"
+#include "hx_log.h"
+
+#define MAXS 16
+
+typedef struct {
+    fnav_sample_t s[MAXS];
+    int n;
+    fnav_status_t end;
+    char err[320];
+} readall_t;
+
+static int read_all(const char *path, hx_format_t fmt, double rate, readall_t *out, hx_meta_t *meta)
+{
+    char err[320];
+    hx_reader_t *r = hx_reader_open(path, fmt, rate, err, sizeof err);
+    fnav_sample_t s;
+    memset(out, 0, sizeof *out);
+    if (r == NULL) {
+        snprintf(out->err, sizeof out->err, "%s", err);
+        return -1;
+    }
+    if (meta != NULL) {
+        *meta = *hx_reader_meta(r);
+    }
+    while ((out->end = hx_reader_next(r, &s)) == FNAV_OK) {
+        if (out->n < MAXS) {
+            out->s[out->n] = s;
+        }
+        out->n++;
+    }
+    snprintf(out->err, sizeof out->err, "%s", hx_reader_error(r));
+    hx_reader_close(r);
+    return 0;
+}
+
+static void tmp_path(char *buf, size_t size, const char *suffix)
+{
+    static int counter = 0;
+    snprintf(buf, size, "/tmp/fnav_test_log_%d_%d%s", (int)getpid(), counter++, suffix);
+}
+
+static void write_file(const char *path, const void *data, size_t n)
+{
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(data, 1, n, f), n);
+    assert_int_equal(fclose(f), 0);
+}
+
+static size_t read_file(const char *path, unsigned char *buf, size_t cap)
+{
+    FILE *f = fopen(path, "rb");
+    size_t n;
+    assert_non_null(f);
+    n = fread(buf, 1, cap, f);
+    fclose(f);
+    return n;
+}
+
+static void write_text(const char *path, const char *text)
+{
+    write_file(path, text, strlen(text));
+}
+
+/* ------------------------------------------------------------ golden */
+
+static unsigned char g_golden[4096];
+static size_t g_golden_n;
+
+static int setup_golden(void **state)
+{
+    char p[512];
+    (void)state;
+    if (fnav_vector_path("logformat/sample_v1.bin", p, sizeof p) != 0) {
+        fprintf(stderr, "vectors/logformat/sample_v1.bin missing (run from the repository root)\n");
+        return -1;
+    }
+    g_golden_n = read_file(p, g_golden, sizeof g_golden);
+    return 0;
+}
+
+/* The C reader decodes the Python-written file to the CSV's values. */
+static void test_golden_read(void **state)
+{
+    char pb[512], pc[512];
+    readall_t b, c;
+    hx_meta_t mb;
+    int i, k;
+    (void)state;
+    assert_int_equal(fnav_vector_path("logformat/sample_v1.bin", pb, sizeof pb), 0);
+    assert_int_equal(fnav_vector_path("logformat/sample_v1.csv", pc, sizeof pc), 0);
+    assert_int_equal(read_all(pb, HX_FMT_AUTO, 0.0, &b, &mb), 0);
+    assert_int_equal(read_all(pc, HX_FMT_AUTO, 0.0, &c, NULL), 0);
+    assert_int_equal(b.end, FNAV_END);
+    assert_int_equal(c.end, FNAV_END);
+    assert_int_equal(b.n, 6);
+    assert_int_equal(c.n, 6);
+    assert_int_equal(mb.format, HX_FMT_BIN);
+    assert_true(mb.rate_hz == 400.0);
+    assert_true(mb.rate_nominal && mb.has_temp && mb.has_seq);
+    assert_string_equal(mb.sensor, "golden-vector");
+    assert_string_equal(mb.axes, "x fwd, y left, z up");
+    for (i = 0; i < 6; i++) {
+        assert_true(b.s[i].t_ns == c.s[i].t_ns);
+        for (k = 0; k < 3; k++) {
+            assert_true((float)b.s[i].accel_mps2[k] == (float)c.s[i].accel_mps2[k]);
+            assert_true((float)b.s[i].gyro_rps[k] == (float)c.s[i].gyro_rps[k]);
+        }
+        assert_true((float)b.s[i].temp_c == (float)c.s[i].temp_c);
+        assert_true(b.s[i].flags & FNAV_SAMPLE_HAS_TEMP);
+        assert_true(b.s[i].flags & FNAV_SAMPLE_HAS_SEQ);
+    }
+    /* the counter shows the drop (5 missing) and the duplicate time stamp */
+    assert_int_equal(b.s[5].seq, 6);
+    assert_true(b.s[3].t_ns == b.s[4].t_ns);
+}
+
+/* The C writer reproduces the Python-written file byte for byte. */
+static void test_golden_write(void **state)
+{
+    char pb[512], out[256], err[320];
+    readall_t b;
+    hx_meta_t m;
+    hx_writer_t *w;
+    unsigned char buf[4096];
+    size_t n;
+    int i;
+    (void)state;
+    assert_int_equal(fnav_vector_path("logformat/sample_v1.bin", pb, sizeof pb), 0);
+    assert_int_equal(read_all(pb, HX_FMT_BIN, 0.0, &b, &m), 0);
+    snprintf(m.source, sizeof m.source, "vectors/logformat");
+    tmp_path(out, sizeof out, ".bin");
+    w = hx_writer_open(out, HX_FMT_AUTO, &m, 0, err, sizeof err);
+    assert_non_null(w);
+    for (i = 0; i < b.n; i++) {
+        assert_int_equal(hx_writer_write(w, &b.s[i]), FNAV_OK);
+    }
+    assert_int_equal(hx_writer_close(w, err, sizeof err), FNAV_OK);
+    n = read_file(out, buf, sizeof buf);
+    assert_int_equal(n, g_golden_n);
+    assert_memory_equal(buf, g_golden, n);
+    unlink(out);
+}
+
+/* CSV -> .bin -> CSV reproduces canonical CSV text exactly. */
+static void test_csv_bin_csv_text(void **state)
+{
+    char pc[512], b1[256], c2[256], err[320];
+    unsigned char t1[4096], t2[4096];
+    size_t n1, n2;
+    hx_reader_t *r;
+    hx_writer_t *w;
+    fnav_sample_t s;
+    hx_meta_t m;
+    (void)state;
+    assert_int_equal(fnav_vector_path("logformat/sample_v1.csv", pc, sizeof pc), 0);
+    tmp_path(b1, sizeof b1, ".bin");
+    tmp_path(c2, sizeof c2, ".csv");
+    r = hx_reader_open(pc, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_non_null(r);
+    m = *hx_reader_meta(r);
+    assert_true(m.has_temp);
+    w = hx_writer_open(b1, HX_FMT_AUTO, &m, 1, err, sizeof err);
+    assert_non_null(w);
+    while (hx_reader_next(r, &s) == FNAV_OK) {
+        assert_int_equal(hx_writer_write(w, &s), FNAV_OK);
+    }
+    hx_reader_close(r);
+    assert_int_equal(hx_writer_close(w, err, sizeof err), FNAV_OK);
+    r = hx_reader_open(b1, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_non_null(r);
+    m = *hx_reader_meta(r);
+    w = hx_writer_open(c2, HX_FMT_AUTO, &m, 0, err, sizeof err);
+    assert_non_null(w);
+    while (hx_reader_next(r, &s) == FNAV_OK) {
+        assert_int_equal(hx_writer_write(w, &s), FNAV_OK);
+    }
+    hx_reader_close(r);
+    assert_int_equal(hx_writer_close(w, err, sizeof err), FNAV_OK);
+    n1 = read_file(pc, t1, sizeof t1);
+    n2 = read_file(c2, t2, sizeof t2);
+    assert_int_equal(n1, n2);
+    assert_memory_equal(t1, t2, n1);
+    unlink(b1);
+    unlink(c2);
+}
+
+/* ------------------------------------------------------------ bad .bin */
+
+static void expect_bin(const unsigned char *data, size_t n, int open_ok, int n_samples, fnav_status_t end,
+                       const char *msg_part)
+{
+    char p[256];
+    readall_t r;
+    tmp_path(p, sizeof p, ".bin");
+    write_file(p, data, n);
+    if (!open_ok) {
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    } else {
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+        assert_int_equal(r.n, n_samples);
+        assert_int_equal(r.end, end);
+    }
+    if (msg_part != NULL && strstr(r.err, msg_part) == NULL) {
+        fail_msg("error '%s' does not contain '%s'", r.err, msg_part);
+    }
+    /* every message names the file */
+    if (msg_part != NULL && strstr(r.err, p) == NULL) {
+        fail_msg("error '%s' does not name the file", r.err);
+    }
+    unlink(p);
+}
+
+static void test_bin_truncated(void **state)
+{
+    (void)state;
+    /* cut inside the header */
+    expect_bin(g_golden, 100, 0, 0, FNAV_END, "too short");
+    /* cut inside record #3: the three complete records before the cut survive */
+    expect_bin(g_golden, HX_BIN_HEADER_SIZE + 3 * HX_BIN_RECORD_SIZE + 20, 1, 3, FNAV_E_TRUNCATED, "record #3");
+    /* cut at a record boundary, before the end record: recording not closed */
+    expect_bin(g_golden, HX_BIN_HEADER_SIZE + 6 * HX_BIN_RECORD_SIZE, 1, 6, FNAV_E_TRUNCATED, "not closed");
+    /* header only, nothing else */
+    expect_bin(g_golden, HX_BIN_HEADER_SIZE, 1, 0, FNAV_E_TRUNCATED, "truncated");
+    /* empty file */
+    expect_bin(g_golden, 0, 0, 0, FNAV_END, "empty");
+}
+
+static void test_bin_corrupted(void **state)
+{
+    unsigned char b[4096];
+    (void)state;
+    /* a flipped byte inside record #2: the other five records survive */
+    memcpy(b, g_golden, g_golden_n);
+    b[HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE + 20] ^= 0x40;
+    expect_bin(b, g_golden_n, 1, 5, FNAV_E_CRC, "record #2");
+    /* header corruption */
+    memcpy(b, g_golden, g_golden_n);
+    b[30] ^= 0x01;
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, "header checksum");
+    /* wrong magic */
+    memcpy(b, g_golden, g_golden_n);
+    b[0] = 'X';
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, NULL);
+    /* wrong version */
+    memcpy(b, g_golden, g_golden_n);
+    b[4] = 2;
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, "unsupported version 2");
+    /* huge header size */
+    memcpy(b, g_golden, g_golden_n);
+    b[6] = 0xff;
+    b[7] = 0xff;
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, "header size 65535");
+    /* seven garbage bytes inserted after record #1: resynchronised, all six kept */
+    memcpy(b, g_golden, HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE);
+    memcpy(b + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE, "GARBAGE", 7);
+    memcpy(b + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE + 7, g_golden + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE,
+           g_golden_n - HX_BIN_HEADER_SIZE - 2 * HX_BIN_RECORD_SIZE);
+    expect_bin(b, g_golden_n + 7, 1, 6, FNAV_E_CRC, "corrupted");
+    /* trailing garbage after the end record */
+    memcpy(b, g_golden, g_golden_n);
+    memset(b + g_golden_n, 0x55, 100);
+    expect_bin(b, g_golden_n + 100, 1, 6, FNAV_E_CRC, "corrupted");
+}
+
+static void test_bin_nan_record(void **state)
+{
+    unsigned char b[4096];
+    hx_bin_record_t rec;
+    float nan = (float)NAN;
+    (void)state;
+    memcpy(b, g_golden, g_golden_n);
+    assert_int_equal(hx_bin_record_decode(b + HX_BIN_HEADER_SIZE + 4 * HX_BIN_RECORD_SIZE, &rec), 0);
+    rec.gyr[1] = nan;
+    hx_bin_record_encode(&rec, b + HX_BIN_HEADER_SIZE + 4 * HX_BIN_RECORD_SIZE);
+    expect_bin(b, g_golden_n, 1, 4, FNAV_E_NANINF, "NaN");
+}
+
+/* ------------------------------------------------------------ bad CSV */
+
+static void expect_csv(const char *text, int open_ok, int n_samples, fnav_status_t end, const char *msg_part)
+{
+    char p[256];
+    readall_t r;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, text);
+    if (!open_ok) {
+        assert_int_equal(read_all(p, HX_FMT_CSV, 0.0, &r, NULL), -1);
+    } else {
+        assert_int_equal(read_all(p, HX_FMT_CSV, 0.0, &r, NULL), 0);
+        assert_int_equal(r.n, n_samples);
+        assert_int_equal(r.end, end);
+    }
+    if (msg_part != NULL && strstr(r.err, msg_part) == NULL) {
+        fail_msg("error '%s' does not contain '%s'", r.err, msg_part);
+    }
+    unlink(p);
+}
+
+static void test_csv_malformed(void **state)
+{
+    (void)state;
+    expect_csv("", 0, 0, FNAV_END, "empty");
+    expect_csv("t,ax,ay,az,gx,gy\n0,1,2,3,4,5\n", 0, 0, FNAV_END, "no column 'gz'");
+    expect_csv("t,ax,ay,az,gx,gy,gz\n", 1, 0, FNAV_E_FORMAT, "no samples");
+    expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.01,1,2,x3,4,5,6\n", 1, 1, FNAV_E_FORMAT, ":3:");
+    expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.01,1,2,3,4,5\n", 1, 1, FNAV_E_FORMAT, "6 columns");
+    expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.01,1,2,NaN,4,5,6\n", 1, 1, FNAV_E_NANINF, "NaN or Inf");
+    expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.01,1,2,3,inf,5,6\n", 1, 1, FNAV_E_NANINF, ":3:");
+    expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.02,1,2,3,4,5,6\n0.01,1,2,3,4,5,6\n", 1, 2, FNAV_E_TIME,
+               "backwards");
+    expect_csv("t,ax,ay,az,gx,gy,gz\nzero,1,2,3,4,5,6\n", 1, 0, FNAV_E_FORMAT, "time");
+    expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,1e999\n", 1, 0, FNAV_E_NANINF, ":2:");
+}
+
+static void test_csv_flexible(void **state)
+{
+    char p[256];
+    readall_t r;
+    hx_meta_t m;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    /* any column order, extra columns ignored, optional temp kept, spaces,
+     * CRLF, blank lines and duplicated time stamps accepted */
+    write_text(p, "gx, gy, gz, note, t, ax, ay, az, temp\r\n"
+                  "0.1,0.2,0.3,hello,0.000,1,2,3,20.5\r\n"
+                  "\r\n"
+                  "0.1,0.2,0.3,world,0.000,1,2,3,20.5\r\n"
+                  "0.4,0.5,0.6,!,0.0100000005,4,5,6,21\r\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, &m), 0);
+    assert_int_equal(m.format, HX_FMT_CSV);
+    assert_true(m.has_temp);
+    assert_int_equal(r.end, FNAV_END);
+    assert_int_equal(r.n, 3);
+    assert_true(r.s[2].t_ns == 10000000 || r.s[2].t_ns == 10000001); /* 9-digit rounding of 1e-2 + 5e-10 */
+    assert_true((float)r.s[2].accel_mps2[0] == 4.0f);
+    assert_true((float)r.s[2].gyro_rps[2] == 0.6f);
+    assert_true((float)r.s[2].temp_c == 21.0f);
+    assert_true(r.s[0].t_ns == r.s[1].t_ns);
+    unlink(p);
+}
+
+static void test_csv_gzip(void **state)
+{
+    char p[256];
+    readall_t r;
+    gzFile gz;
+    const char *text = "t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.005,1,2,3,4,5,6\n";
+    (void)state;
+    tmp_path(p, sizeof p, ".csv.gz");
+    gz = gzopen(p, "wb");
+    assert_non_null(gz);
+    assert_int_equal(gzwrite(gz, text, (unsigned)strlen(text)), (int)strlen(text));
+    assert_int_equal(gzclose(gz), Z_OK);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.n, 2);
+    assert_int_equal(r.end, FNAV_END);
+    assert_true(r.s[1].t_ns == 5000000);
+    unlink(p);
+}
+
+/* A foreign recording whose last line was cut off mid-write keeps every
+ * complete line and warns; our own CSV treats the same as an error. */
+static void test_cut_last_line(void **state)
+{
+    char p[256], err[320];
+    hx_reader_t *r;
+    fnav_sample_t s;
+    int n = 0;
+    fnav_status_t st;
+    readall_t ra;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps,q0,q1,q2,q3\n"
+                  "0,0.1,0.2,-9.8,0.01,0.02,0.03,1,0,0,0\n"
+                  "1,0.1,0.2,-9.8,0.01,0.02,0.03,1,0,0,0\n"
+                  "2,0.1,0.2,-9.");
+    r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_non_null(r);
+    assert_int_equal(hx_reader_meta(r)->format, HX_FMT_SQUARE2);
+    while ((st = hx_reader_next(r, &s)) == FNAV_OK) {
+        n++;
+    }
+    assert_int_equal(st, FNAV_END);
+    assert_int_equal(n, 2);
+    assert_non_null(strstr(hx_reader_warnings(r), ":4: last line is incomplete"));
+    hx_reader_close(r);
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.01,1,2,3");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+    assert_int_equal(ra.n, 1);
+    assert_int_equal(ra.end, FNAV_E_FORMAT);
+    unlink(p);
+}
+
+/* Found by fuzzing: counters beyond 32 bits or time beyond int64 ns are
+ * format errors, never undefined conversions. */
+static void test_counter_ranges(void **state)
+{
+    char p[256];
+    readall_t r;
+    (void)state;
+    tmp_path(p, sizeof p, ".txt");
+    write_text(p, "Inertial data.\nHeader: a_x [g]:\n"
+                  "   0xcb   -0.1   +0.15   +0.99   +0.005   -0.012   +0.001     130516848    0x15fd       87782700000 "
+                  "1274434048.503018 1274434048.503018 1274434048.507018  250.0   -0.12   -0.01   -0.46\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.n, 0);
+    assert_int_equal(r.end, FNAV_E_FORMAT);
+    assert_non_null(strstr(r.err, "32-bit"));
+    write_text(p, "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps\n"
+                  "0,0.1,0.2,-9.8,0.01,0.02,0.03\n1.5,0.1,0.2,-9.8,0.01,0.02,0.03\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.n, 1);
+    assert_int_equal(r.end, FNAV_E_FORMAT);
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n99999999999.5,1,2,3,4,5,6\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.n, 0);
+    assert_int_not_equal(r.end, FNAV_END);
+    unlink(p);
+}
+
+static void test_bad_rate(void **state)
+{
+    char err[320];
+    (void)state;
+    assert_null(hx_reader_open("vectors/logformat/sample_v1.csv", HX_FMT_AUTO, -5.0, err, sizeof err));
+    assert_non_null(strstr(err, "sample rate"));
+    assert_null(hx_reader_open("/nonexistent/file.csv", HX_FMT_AUTO, 0.0, err, sizeof err));
+    assert_non_null(strstr(err, "cannot open"));
+}
+
+/* ------------------------------------------------------------ importers */
+
+typedef struct {
+    const char *rel;
+    hx_format_t fmt;
+    long samples;          /* expected count, or -1 */
+    double rate_hz;        /* expected rate (nominal or estimated), 1e-3 rel */
+    double g_sign_z;       /* +1: z up at rest, -1: z down */
+} importer_case_t;
+
+static const importer_case_t k_importers[] = {
+    { "openshoe_gx2/Measurement_100521_2_data_inert.txt", HX_FMT_GX2, 16420, 249.756, 1.0 },
+    { "openshoe_c_820hz/OpenShoeDataSet.txt", HX_FMT_OS820, 51055, 820.0, 1.0 },
+    { "xio_ngimu_gait/short_walk.csv", HX_FMT_NGIMU, 16539, 398.32, 1.0 },
+    { "xio_ngimu_gait/long_walk.csv", HX_FMT_NGIMU, -1, 0.0, 1.0 },
+    { "pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-22-03_imu.csv", HX_FMT_PYSHOE, 6490, 200.0, -1.0 },
+    { "pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_31_imu.csv", HX_FMT_PYSHOE, 8549, 200.04, -1.0 },
+    { "ipol_gait_xsens/1-1_lf.txt", HX_FMT_IPOL, 2913, 100.0, 1.0 },
+    { "openshoe_square2/square2_u.csv", HX_FMT_SQUARE2, 8687, 100.0, -1.0 },
+};
+
+/* Detection, counts, rates and at-rest gravity (first 0.5 s) of every format. */
+static void test_importers(void **state)
+{
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof k_importers / sizeof k_importers[0]; i++) {
+        const importer_case_t *c = &k_importers[i];
+        char p[512], err[320];
+        hx_log_t log;
+        double f[3] = { 0, 0, 0 }, g;
+        size_t k, m;
+        if (fnav_testdata_path(c->rel, p, sizeof p) != 0) {
+            fnav_test_skip_notice(c->rel);
+            continue;
+        }
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        if (log.meta.format != c->fmt) {
+            fail_msg("%s detected as %s", c->rel, hx_format_name(log.meta.format));
+        }
+        if (c->samples >= 0) {
+            assert_int_equal((long)log.n, c->samples);
+        }
+        if (c->rate_hz > 0.0) {
+            FNAV_ASSERT_CLOSE(log.meta.rate_hz, c->rate_hz, 0.0, 1e-3);
+        }
+        m = (size_t)(0.5 * log.meta.rate_hz);
+        for (k = 0; k < m; k++) {
+            f[0] += log.acc[k][0] / (double)m;
+            f[1] += log.acc[k][1] / (double)m;
+            f[2] += log.acc[k][2] / (double)m;
+        }
+        g = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+        /* units: the specific force at rest is one g (loose: sensors are
+         * tilted, biased and some move slightly in the first half second) */
+        FNAV_ASSERT_CLOSE(g, 9.81, 0.6, 0.0);
+        assert_true(f[2] * c->g_sign_z > 4.0);
+        for (k = 1; k < log.n; k++) {
+            assert_true(log.t_ns[k] >= log.t_ns[k - 1]);
+        }
+        hx_log_free(&log);
+    }
+}
+
+/* Unit conversions of the first rows, checked against the raw text. */
+static void test_importer_units(void **state)
+{
+    char p[512], err[320];
+    hx_log_t log;
+    const double d2r = 3.14159265358979323846 / 180.0;
+    (void)state;
+    if (fnav_testdata_path("xio_ngimu_gait/short_walk.csv", p, sizeof p) == 0) {
+        /* 0,-0.1428319,-0.7708032,-0.2320606,-0.4937814,0.2420433,0.8312204 */
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        FNAV_ASSERT_CLOSE(log.gyr[0][0], -0.1428319 * d2r, 0.0, 1e-7);
+        FNAV_ASSERT_CLOSE(log.gyr[0][2], -0.2320606 * d2r, 0.0, 1e-7);
+        FNAV_ASSERT_CLOSE(log.acc[0][0], -0.4937814 * 9.80665, 0.0, 1e-7);
+        FNAV_ASSERT_CLOSE(log.acc[0][2], 0.8312204 * 9.80665, 0.0, 1e-7);
+        assert_true(log.t_ns[1] == 7531643);
+        {
+            /* MANIFEST: 205 exact duplicates (dt = 0) in the short walk */
+            size_t k;
+            long dups = 0;
+            for (k = 1; k < log.n; k++) {
+                dups += log.t_ns[k] == log.t_ns[k - 1];
+            }
+            assert_int_equal(dups, 205);
+        }
+        hx_log_free(&log);
+    } else {
+        fnav_test_skip_notice("xio_ngimu_gait/short_walk.csv");
+    }
+    if (fnav_testdata_path("openshoe_gx2/Measurement_100521_2_data_inert.txt", p, sizeof p) == 0) {
+        /* first data row: a = (-0.10581776, +0.15830289, +0.99007481) g,
+         * w = (+0.00535047, -0.01242570, +0.00101861) rad/s, Nr 1 */
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        FNAV_ASSERT_CLOSE(log.acc[0][0], -0.10581776 * 9.80665, 0.0, 1e-7);
+        FNAV_ASSERT_CLOSE(log.acc[0][2], 0.99007481 * 9.80665, 0.0, 1e-7);
+        FNAV_ASSERT_CLOSE(log.gyr[0][1], -0.01242570, 0.0, 1e-7);
+        assert_int_equal(log.seq[0], 1);
+        assert_int_equal(log.seq[log.n - 1], log.n);
+        /* the sensor timer's period: 78720 ticks of 19.6608 MHz */
+        FNAV_ASSERT_CLOSE(1e-9 * (double)(log.t_ns[100] - log.t_ns[99]), 78720.0 / 19660800.0, 2e-6, 0.0);
+        hx_log_free(&log);
+    } else {
+        fnav_test_skip_notice("openshoe_gx2");
+    }
+    if (fnav_testdata_path("ipol_gait_xsens/1-1_lf.txt", p, sizeof p) == 0) {
+        size_t k;
+        long drops = 0;
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        FNAV_ASSERT_CLOSE(log.acc[0][0], 5.090554, 0.0, 1e-7);
+        FNAV_ASSERT_CLOSE(log.gyr[0][2], -0.017776, 0.0, 1e-6);
+        for (k = 1; k < log.n; k++) {
+            drops += (long)(log.seq[k] - log.seq[k - 1]) - 1;
+            assert_true(log.t_ns[k] - log.t_ns[k - 1] == 10000000LL * (int64_t)(log.seq[k] - log.seq[k - 1]));
+        }
+        assert_true(drops > 0); /* the MANIFEST: packet counter jumps */
+        hx_log_free(&log);
+    } else {
+        fnav_test_skip_notice("ipol_gait_xsens");
+    }
+    if (fnav_testdata_path("adis16405_static/adis16405_imu1_100Hz.csv.gz", p, sizeof p) == 0) {
+        /* gzip, deg/s and g, no time stamps: first row -0.05,-0.3,0.7,-0.00666,0,-1.01565 */
+        hx_reader_t *r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+        fnav_sample_t s;
+        assert_non_null(r);
+        assert_int_equal(hx_reader_meta(r)->format, HX_FMT_ADIS);
+        assert_int_equal(hx_reader_next(r, &s), FNAV_OK);
+        FNAV_ASSERT_CLOSE(s.gyro_rps[0], -0.05 * d2r, 0.0, 1e-6);
+        FNAV_ASSERT_CLOSE(s.accel_mps2[2], -1.01565 * 9.80665, 0.0, 1e-6);
+        assert_int_equal(hx_reader_next(r, &s), FNAV_OK);
+        assert_true(s.t_ns == 10000000);
+        hx_reader_close(r);
+    } else {
+        fnav_test_skip_notice("adis16405_static");
+    }
+}
+
+/* Importer -> .bin -> CSV -> read: every value equals the importer's value
+ * rounded to float32, every time stamp is exact. */
+static void test_roundtrip_all_formats(void **state)
+{
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof k_importers / sizeof k_importers[0]; i++) {
+        char p[512], b[256], c[256], err[320];
+        hx_log_t orig, back;
+        hx_reader_t *r;
+        hx_writer_t *w;
+        fnav_sample_t s;
+        hx_meta_t m;
+        size_t k;
+        int ax;
+        if (fnav_testdata_path(k_importers[i].rel, p, sizeof p) != 0) {
+            continue;
+        }
+        tmp_path(b, sizeof b, ".bin");
+        tmp_path(c, sizeof c, ".csv");
+        /* importer -> bin */
+        r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+        assert_non_null(r);
+        m = *hx_reader_meta(r);
+        w = hx_writer_open(b, HX_FMT_BIN, &m, 0, err, sizeof err);
+        assert_non_null(w);
+        while (hx_reader_next(r, &s) == FNAV_OK) {
+            assert_int_equal(hx_writer_write(w, &s), FNAV_OK);
+        }
+        hx_reader_close(r);
+        assert_int_equal(hx_writer_close(w, err, sizeof err), FNAV_OK);
+        /* bin -> csv */
+        r = hx_reader_open(b, HX_FMT_AUTO, 0.0, err, sizeof err);
+        assert_non_null(r);
+        m = *hx_reader_meta(r);
+        w = hx_writer_open(c, HX_FMT_CSV, &m, 0, err, sizeof err);
+        assert_non_null(w);
+        while (hx_reader_next(r, &s) == FNAV_OK) {
+            assert_int_equal(hx_writer_write(w, &s), FNAV_OK);
+        }
+        hx_reader_close(r);
+        assert_int_equal(hx_writer_close(w, err, sizeof err), FNAV_OK);
+        assert_int_equal(hx_log_load(&orig, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        assert_int_equal(hx_log_load(&back, c, HX_FMT_CSV, 0.0, err, sizeof err), 0);
+        assert_int_equal(orig.n, back.n);
+        for (k = 0; k < orig.n; k++) {
+            assert_true(orig.t_ns[k] == back.t_ns[k]);
+            for (ax = 0; ax < 3; ax++) {
+                if ((float)orig.acc[k][ax] != (float)back.acc[k][ax] ||
+                    (float)orig.gyr[k][ax] != (float)back.gyr[k][ax]) {
+                    fail_msg("%s sample %zu axis %d changed beyond float32 rounding", k_importers[i].rel, k, ax);
+                }
+            }
+        }
+        hx_log_free(&orig);
+        hx_log_free(&back);
+        unlink(b);
+        unlink(c);
+    }
+}
+
+/* A recording killed mid-write (no end record, partial last record) still
+ * yields every complete record. */
+static void test_killed_writer(void **state)
+{
+    char p[256], err[320];
+    hx_writer_t *w;
+    hx_meta_t m;
+    fnav_sample_t s;
+    readall_t r;
+    FILE *f;
+    int i;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    m.rate_hz = 200.0;
+    snprintf(m.sensor, sizeof m.sensor, "test");
+    tmp_path(p, sizeof p, ".bin");
+    w = hx_writer_open(p, HX_FMT_BIN, &m, 1, err, sizeof err);
+    assert_non_null(w);
+    memset(&s, 0, sizeof s);
+    for (i = 0; i < 10; i++) {
+        s.t_ns = (int64_t)i * 5000000;
+        s.seq = (uint32_t)i;
+        s.accel_mps2[2] = FNAV_R(-9.81);
+        assert_int_equal(hx_writer_write(w, &s), FNAV_OK);
+    }
+    /* simulate the kill: the file is complete up to here (sync_each), the
+     * writer is never closed; append half a record as a torn write */
+    f = fopen(p, "ab");
+    assert_non_null(f);
+    assert_int_equal(fwrite("\x01\xa5\x00\x00\x0a\x00\x00\x00", 1, 8, f), 8);
+    fclose(f);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.n, 10);
+    assert_int_equal(r.end, FNAV_E_TRUNCATED);
+    assert_non_null(strstr(r.err, "10 complete records"));
+    (void)hx_writer_close(w, err, sizeof err); /* release; rewrites nothing already read */
+    unlink(p);
+}
+
+static void test_format_names(void **state)
+{
+    int i;
+    (void)state;
+    for (i = 1; i < HX_FMT_COUNT; i++) {
+        assert_int_equal(hx_format_from_name(hx_format_name((hx_format_t)i)), i);
+    }
+    assert_int_equal(hx_format_from_name("nonsense"), HX_FMT_COUNT);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_golden_read),
+        cmocka_unit_test(test_golden_write),
+        cmocka_unit_test(test_csv_bin_csv_text),
+        cmocka_unit_test(test_bin_truncated),
+        cmocka_unit_test(test_bin_corrupted),
+        cmocka_unit_test(test_bin_nan_record),
+        cmocka_unit_test(test_csv_malformed),
+        cmocka_unit_test(test_csv_flexible),
+        cmocka_unit_test(test_csv_gzip),
+        cmocka_unit_test(test_cut_last_line),
+        cmocka_unit_test(test_counter_ranges),
+        cmocka_unit_test(test_bad_rate),
+        cmocka_unit_test(test_importers),
+        cmocka_unit_test(test_importer_units),
+        cmocka_unit_test(test_roundtrip_all_formats),
+        cmocka_unit_test(test_killed_writer),
+        cmocka_unit_test(test_format_names),
+    };
+    return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);
+}

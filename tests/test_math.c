@@ -1,0 +1,185 @@
+/* fnav_math.h: vectors, quaternions, DCMs and Euler angles against analytic
+ * answers. Tolerances: float32 build 2e-6, double build 1e-12. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+
+#include <cmocka.h>
+
+#include "footnav/fnav_math.h"
+#include "fnav_testdata.h"
+
+#if FNAV_USE_DOUBLE
+#define TOL 1e-12
+#else
+#define TOL 2e-6
+#endif
+
+static const double k_pi = 3.14159265358979323846;
+
+static void assert_vec(fnav_vec3_t v, double x, double y, double z, double tol)
+{
+    FNAV_ASSERT_CLOSE(v.v[0], x, tol, 0.0);
+    FNAV_ASSERT_CLOSE(v.v[1], y, tol, 0.0);
+    FNAV_ASSERT_CLOSE(v.v[2], z, tol, 0.0);
+}
+
+static void test_vec3(void **state)
+{
+    fnav_vec3_t a = fnav_vec3(FNAV_R(1.0), FNAV_R(2.0), FNAV_R(3.0));
+    fnav_vec3_t b = fnav_vec3(FNAV_R(-4.0), FNAV_R(0.5), FNAV_R(2.0));
+    (void)state;
+    assert_vec(fnav_vec3_add(a, b), -3.0, 2.5, 5.0, TOL);
+    assert_vec(fnav_vec3_sub(a, b), 5.0, 1.5, 1.0, TOL);
+    FNAV_ASSERT_CLOSE(fnav_vec3_dot(a, b), -4.0 + 1.0 + 6.0, TOL, 0.0);
+    assert_vec(fnav_vec3_cross(a, b), 2.0 * 2.0 - 3.0 * 0.5, 3.0 * -4.0 - 1.0 * 2.0, 1.0 * 0.5 - 2.0 * -4.0, TOL);
+    FNAV_ASSERT_CLOSE(fnav_vec3_norm(a), sqrt(14.0), TOL, 0.0);
+    FNAV_ASSERT_CLOSE(fnav_vec3_norm(fnav_vec3_normalize(b)), 1.0, TOL, 0.0);
+    assert_vec(fnav_vec3_normalize(fnav_vec3_zero()), 0.0, 0.0, 0.0, 0.0);
+    /* [a x] b == a x b */
+    {
+        fnav_vec3_t c = fnav_mat3_mul_vec3(fnav_mat3_skew(a), b);
+        fnav_vec3_t d = fnav_vec3_cross(a, b);
+        assert_vec(c, d.v[0], d.v[1], d.v[2], TOL);
+    }
+}
+
+/* A rotation of +90 deg about z takes x to y (right hand). */
+static void test_quat_rotvec_axis(void **state)
+{
+    fnav_quat_t q = fnav_quat_from_rotvec(fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)(k_pi / 2.0)));
+    fnav_vec3_t r = fnav_quat_rotate(q, fnav_vec3(FNAV_R(1.0), FNAV_R(0.0), FNAV_R(0.0)));
+    fnav_mat3_t c = fnav_quat_to_dcm(q);
+    fnav_vec3_t r2 = fnav_mat3_mul_vec3(c, fnav_vec3(FNAV_R(1.0), FNAV_R(0.0), FNAV_R(0.0)));
+    (void)state;
+    assert_vec(r, 0.0, 1.0, 0.0, TOL);
+    assert_vec(r2, 0.0, 1.0, 0.0, TOL);
+    FNAV_ASSERT_CLOSE(q.q[0], cos(k_pi / 4.0), TOL, 0.0);
+    FNAV_ASSERT_CLOSE(q.q[3], sin(k_pi / 4.0), TOL, 0.0);
+}
+
+/* rotvec -> quat -> rotvec is the identity, across both branches of the
+ * small-angle series (1e-4 rad) and up to almost pi. */
+static void test_quat_rotvec_roundtrip(void **state)
+{
+    static const double angles[] = { 0.0, 1e-9, 3e-5, 9.9e-5, 1.01e-4, 1e-3, 0.3, 1.7, 3.0 };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof angles / sizeof angles[0]; i++) {
+        double a = angles[i];
+        double ax[3] = { 0.48, -0.6, 0.64 }; /* unit */
+        fnav_vec3_t phi = fnav_vec3((fnav_real_t)(a * ax[0]), (fnav_real_t)(a * ax[1]), (fnav_real_t)(a * ax[2]));
+        fnav_quat_t q = fnav_quat_from_rotvec(phi);
+        fnav_vec3_t back = fnav_quat_to_rotvec(q);
+        double qn = sqrt((double)(q.q[0] * q.q[0] + q.q[1] * q.q[1] + q.q[2] * q.q[2] + q.q[3] * q.q[3]));
+        FNAV_ASSERT_CLOSE(qn, 1.0, TOL, 0.0);
+        assert_vec(back, a * ax[0], a * ax[1], a * ax[2], TOL * (1.0 + a));
+        FNAV_ASSERT_CLOSE(q.q[0], cos(a / 2.0), TOL, 0.0);
+    }
+}
+
+/* Hamilton product composes rotations: rotating by q1 then q2 equals
+ * rotating by q2*q1; conj inverts. */
+static void test_quat_compose(void **state)
+{
+    fnav_quat_t q1 = fnav_quat_from_rotvec(fnav_vec3(FNAV_R(0.3), FNAV_R(-0.2), FNAV_R(0.9)));
+    fnav_quat_t q2 = fnav_quat_from_rotvec(fnav_vec3(FNAV_R(-1.1), FNAV_R(0.4), FNAV_R(0.1)));
+    fnav_vec3_t v = fnav_vec3(FNAV_R(0.7), FNAV_R(-1.3), FNAV_R(2.2));
+    fnav_vec3_t a = fnav_quat_rotate(q2, fnav_quat_rotate(q1, v));
+    fnav_vec3_t b = fnav_quat_rotate(fnav_quat_mul(q2, q1), v);
+    fnav_vec3_t c = fnav_quat_rotate(fnav_quat_conj(q1), fnav_quat_rotate(q1, v));
+    fnav_mat3_t m = fnav_mat3_mul(fnav_quat_to_dcm(q2), fnav_quat_to_dcm(q1));
+    fnav_vec3_t d = fnav_mat3_mul_vec3(m, v);
+    fnav_mat3_t mt = fnav_mat3_mul(fnav_quat_to_dcm(q1), fnav_mat3_transpose(fnav_quat_to_dcm(q1)));
+    int i, j;
+    (void)state;
+    assert_vec(a, b.v[0], b.v[1], b.v[2], 4 * TOL);
+    assert_vec(c, v.v[0], v.v[1], v.v[2], 4 * TOL);
+    assert_vec(d, b.v[0], b.v[1], b.v[2], 4 * TOL);
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            FNAV_ASSERT_CLOSE(mt.m[i][j], i == j ? 1.0 : 0.0, 2 * TOL, 0.0);
+        }
+    }
+}
+
+/* ZYX Euler: C_nb = Rz(yaw) Ry(pitch) Rx(roll), checked element by element
+ * against the closed form (Titterton & Weston eq. 3.47), and round trips. */
+static void test_euler(void **state)
+{
+    static const double cases[][3] = {
+        { 0.1, 0.2, 0.3 }, { -2.5, 1.2, -3.0 }, { 3.1, -0.7, 1.5 }, { 0.0, 0.0, 0.0 }, { -0.4, 1.5, 2.9 },
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        double r = cases[i][0], p = cases[i][1], y = cases[i][2];
+        fnav_quat_t q = fnav_quat_from_euler((fnav_real_t)r, (fnav_real_t)p, (fnav_real_t)y);
+        fnav_mat3_t c = fnav_quat_to_dcm(q);
+        fnav_vec3_t e = fnav_quat_to_euler(q);
+        double cr = cos(r), sr = sin(r), cp = cos(p), sp = sin(p), cy = cos(y), sy = sin(y);
+        double tol = TOL * (1.0 / cp);
+        FNAV_ASSERT_CLOSE(c.m[0][0], cp * cy, TOL, 0.0);
+        FNAV_ASSERT_CLOSE(c.m[0][1], -cr * sy + sr * sp * cy, TOL, 0.0);
+        FNAV_ASSERT_CLOSE(c.m[0][2], sr * sy + cr * sp * cy, TOL, 0.0);
+        FNAV_ASSERT_CLOSE(c.m[1][0], cp * sy, TOL, 0.0);
+        FNAV_ASSERT_CLOSE(c.m[1][1], cr * cy + sr * sp * sy, TOL, 0.0);
+        FNAV_ASSERT_CLOSE(c.m[1][2], -sr * cy + cr * sp * sy, TOL, 0.0);
+        FNAV_ASSERT_CLOSE(c.m[2][0], -sp, TOL, 0.0);
+        FNAV_ASSERT_CLOSE(c.m[2][1], sr * cp, TOL, 0.0);
+        FNAV_ASSERT_CLOSE(c.m[2][2], cr * cp, TOL, 0.0);
+        FNAV_ASSERT_CLOSE(e.v[0], r, tol, 0.0);
+        FNAV_ASSERT_CLOSE(e.v[1], p, tol, 0.0);
+        FNAV_ASSERT_CLOSE(e.v[2], y, tol, 0.0);
+    }
+}
+
+/* At pitch = +-90 deg the Euler extraction stays finite (clamped asin). */
+static void test_euler_gimbal(void **state)
+{
+    fnav_quat_t q = fnav_quat_from_euler(FNAV_R(0.2), (fnav_real_t)(k_pi / 2.0), FNAV_R(0.5));
+    fnav_vec3_t e;
+    (void)state;
+    q.q[0] *= FNAV_R(1.0000001); /* push |sin(pitch)| past 1 */
+    q.q[2] *= FNAV_R(1.0000001);
+    e = fnav_quat_to_euler(q);
+    assert_true(fnav_vec3_isfinite(e));
+    FNAV_ASSERT_CLOSE(e.v[1], k_pi / 2.0, 1e-3, 0.0);
+}
+
+static void test_wrap_and_normalize(void **state)
+{
+    fnav_quat_t z = fnav_quat(FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0));
+    fnav_quat_t n = fnav_quat_normalize(fnav_quat(FNAV_R(-2.0), FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0)));
+    (void)state;
+    FNAV_ASSERT_CLOSE(fnav_wrap_pi(FNAV_R(0.5)), 0.5, TOL, 0.0);
+    FNAV_ASSERT_CLOSE(fnav_wrap_pi((fnav_real_t)(k_pi + 0.25)), -k_pi + 0.25, 4 * TOL, 0.0);
+    FNAV_ASSERT_CLOSE(fnav_wrap_pi((fnav_real_t)(-k_pi - 0.25)), k_pi - 0.25, 4 * TOL, 0.0);
+    FNAV_ASSERT_CLOSE(fnav_wrap_pi((fnav_real_t)(-k_pi)), k_pi, 4 * TOL, 0.0);
+    FNAV_ASSERT_CLOSE(fnav_wrap_pi((fnav_real_t)(20.0 * k_pi + 1.0)), 1.0, 1e-5, 0.0);
+    /* bounded work and a result in range for huge finite angles */
+    {
+        fnav_real_t w = fnav_wrap_pi(FNAV_R(1.0e30));
+        assert_true(w <= FNAV_PI && w >= -FNAV_PI);
+    }
+    /* zero quaternion -> identity; negative scalar part flipped */
+    assert_true(fnav_quat_normalize(z).q[0] == FNAV_R(1.0));
+    assert_true(n.q[0] == FNAV_R(1.0));
+    assert_true(fnav_isfinite(FNAV_R(1.0)) && !fnav_isfinite((fnav_real_t)NAN) && !fnav_isfinite((fnav_real_t)INFINITY));
+    FNAV_ASSERT_CLOSE(fnav_clamp(FNAV_R(2.0), FNAV_R(-1.0), FNAV_R(1.0)), 1.0, 0.0, 0.0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_vec3),
+        cmocka_unit_test(test_quat_rotvec_axis),
+        cmocka_unit_test(test_quat_rotvec_roundtrip),
+        cmocka_unit_test(test_quat_compose),
+        cmocka_unit_test(test_euler),
+        cmocka_unit_test(test_euler_gimbal),
+        cmocka_unit_test(test_wrap_and_normalize),
+    };
+    return cmocka_run_group_tests_name("math", tests, NULL, NULL);
+}
