@@ -308,7 +308,7 @@ static void test_timing_effects_reach_the_stamps(void **state)
             s2 += d * d;
         }
         assert_true((s.t[i].meas.flags & FNAV_SAMPLE_HAS_TEMP) != 0u);
-        assert_true(s.t[i].meas.temp_c >= 25.0f);
+        assert_true((double)s.t[i].meas.temp_c >= 25.0);
     }
     FNAV_ASSERT_CLOSE((double)drops, 0.05 * (double)s.n, 4.0 * sqrt(0.05 * (double)s.n), 0.0);
     FNAV_ASSERT_CLOSE((double)dups, 0.02 * 0.95 * (double)s.n, 4.0 * sqrt(0.02 * (double)s.n), 0.0);
