@@ -239,6 +239,19 @@ int hx_cmd_sim(int argc, char **argv)
         }
     }
 
+    /* a tone in the filter's stop band never reaches the output */
+    if (sc.err.mask[FNAV_EFFECT_VIBRATION] != 0u && sc.err.mask[FNAV_EFFECT_ALIAS] == 0u &&
+        fnav_imuerr_internal_factor(&sc.err) > 1u) {
+        for (i = 0; i < 6; i++) {
+            if ((sc.err.mask[FNAV_EFFECT_VIBRATION] & (1u << i)) && (double)sc.err.vibration.freq_hz[i] > 0.41 * rate) {
+                hx_warn("sim", "vibration at %g Hz lies above the anti-alias pass band (%.0f Hz at %g Hz): filtered "
+                               "out; add --effect alias to fold it into the output band",
+                        (double)sc.err.vibration.freq_hz[i], 0.41 * rate, rate);
+                break;
+            }
+        }
+    }
+
     motion_name = hx_arg(&a, "--motion");
     if (motion_name == NULL) {
         motion_name = "walk";

@@ -28,8 +28,10 @@ static double bessel_i0(double x)
 
 /* Kaiser-windowed sinc low-pass for decimation by M: cut-off at the output
  * Nyquist frequency, L = 2 K M + 1 taps, beta 5.65 (60 dB stop band;
- * Kaiser's transition width (A - 7.95) / (14.36 (L - 1)) = 0.18 f_s either
- * side of f_s / 2), unit DC gain, linear phase (delay K output periods). */
+ * Kaiser's transition width (A - 7.95) / (14.36 (L - 1)) of the internal
+ * rate = 0.18 f_s in total, centred on f_s / 2: pass band to 0.41 f_s, stop
+ * band from 0.59 f_s), unit DC gain, linear phase (delay K output periods,
+ * compensated by centring the filter on the output instant). */
 static double *fir_design(int M, int K, int *L_out)
 {
     int L = 2 * K * M + 1, n, c = K * M;
@@ -412,7 +414,8 @@ void hx_effect_list(FILE *f)
 {
     int id, k;
     fprintf(f, "Effects (--effect NAME[:ch=CH][:PARAM=VALUE]... ; NAME:off). Units SI; \"u\" is the\n"
-               "channel's unit: m/s^2 for ax ay az, rad/s for gx gy gz. Defaults: accel / gyro.\n\n");
+               "channel's unit: m/s^2 for ax ay az, rad/s for gx gy gz. Defaults shown for\n"
+               "channels ax / gy (docs/simulator.md).\n\n");
     for (id = 0; id < (int)FNAV_EFFECT_COUNT; id++) {
         const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)id);
         fprintf(f, "%-11s %s%s\n", info->name, info->brief, info->allowed == FNAV_CH_GYRO ? " (gyro channels)" : "");

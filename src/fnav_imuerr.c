@@ -215,7 +215,7 @@ const fnav_imuerr_config_t fnav_imuerr_config_default = {
     { { FNAV_R(2.0e-3), FNAV_R(2.0e-3), FNAV_R(2.0e-3), FNAV_R(2.0e-4), FNAV_R(2.0e-4), FNAV_R(2.0e-4) },
       FNAV_R(10.0), FNAV_R(600.0), FNAV_R(25.0) },
     { { FNAV_R(0.2), FNAV_R(0.2), FNAV_R(0.2), FNAV_R(0.02), FNAV_R(0.02), FNAV_R(0.02) },
-      { FNAV_R(150.0), FNAV_R(150.0), FNAV_R(150.0), FNAV_R(150.0), FNAV_R(150.0), FNAV_R(150.0) },
+      { FNAV_R(37.0), FNAV_R(37.0), FNAV_R(37.0), FNAV_R(37.0), FNAV_R(37.0), FNAV_R(37.0) },
       { FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0) } },
     { { FNAV_R(0.01), FNAV_R(0.01), FNAV_R(0.01), FNAV_R(0.01), FNAV_R(0.01), FNAV_R(0.01) },
       { FNAV_R(0.02), FNAV_R(0.02), FNAV_R(0.02), FNAV_R(0.002), FNAV_R(0.002), FNAV_R(0.002) } },
