@@ -16,6 +16,14 @@ typedef struct {
     int phase;           /* phase of the segment that starts here */
     int leg;
     double still_from;   /* STILL segment: at rest from here (ringing over) */
+    /* rolling segment (heel-off over the toe, slap over the heel): the
+     * position is the flat-foot position plus Ry(pitch) r - r turned by the
+     * heading, r the sensor relative to the contact point in the foot's
+     * x-z plane; the contact point does not move */
+    int roll;            /* 1: position from the pitch by the pivot formula */
+    double flat[3];      /* sensor position with the foot flat, n */
+    double rx, rz;       /* sensor relative to the pivot, foot frame, m */
+    double psi;          /* heading of the segment, rad */
 } knot_t;
 
 typedef struct {
@@ -66,6 +74,7 @@ hx_motion_config_t hx_motion_config_default(void)
     c.walk.lift_m = 0.10;
     c.walk.pitch_off_deg = -50.0;
     c.walk.pitch_strike_deg = 25.0;
+    c.walk.pitch_mid_deg = -12.5;
     c.walk.roll_deg = 4.0;
     c.walk.land_speed_mps = 0.5;
     c.walk.impact_s = 0.010;
@@ -83,6 +92,7 @@ hx_motion_config_t hx_motion_config_default(void)
     c.run.lift_m = 0.25;
     c.run.pitch_off_deg = -60.0;
     c.run.pitch_strike_deg = 15.0;
+    c.run.pitch_mid_deg = -22.5;
     c.run.roll_deg = 6.0;
     c.run.land_speed_mps = 1.0;
     c.run.impact_s = 0.010;
@@ -96,16 +106,18 @@ hx_motion_config_t hx_motion_config_default(void)
     c.stairs_up.heeloff_frac = 0.10;
     c.stairs_up.slap_frac = 0.06;
     c.stairs_up.lift_m = 0.06;
-    c.stairs_up.pitch_off_deg = -20.0;
-    c.stairs_up.pitch_strike_deg = 3.0;
+    c.stairs_up.pitch_off_deg = -35.0;
+    c.stairs_up.pitch_strike_deg = -8.0; /* forefoot first on the step */
+    c.stairs_up.pitch_mid_deg = 15.0; /* toe up over the step's edge */
     c.stairs_up.roll_deg = 3.0;
     c.stairs_up.land_speed_mps = 0.35;
     c.stairs_up.impact_s = 0.012;
     c.stairs_up.ring_mps2 = 15.0;
     c.stairs_down = c.stairs_up;
     c.stairs_down.cadence_spm = 100.0;
-    c.stairs_down.pitch_off_deg = -15.0;
-    c.stairs_down.pitch_strike_deg = -15.0; /* toe first */
+    c.stairs_down.pitch_off_deg = -30.0;
+    c.stairs_down.pitch_strike_deg = -15.0;
+    c.stairs_down.pitch_mid_deg = 10.0;
     c.stairs_down.land_speed_mps = 0.45;
     c.stairs_down.impact_s = 0.015;
     c.stairs_down.ring_hz = 70.0;
@@ -114,9 +126,10 @@ hx_motion_config_t hx_motion_config_default(void)
     c.turn = c.walk;
     c.turn.cadence_spm = 100.0;
     c.turn.still_frac = 0.30;
-    c.turn.lift_m = 0.04;
-    c.turn.pitch_off_deg = -10.0;
-    c.turn.pitch_strike_deg = 5.0;
+    c.turn.lift_m = 0.06;
+    c.turn.pitch_off_deg = -25.0;
+    c.turn.pitch_strike_deg = 10.0;
+    c.turn.pitch_mid_deg = -5.0;
     c.turn.roll_deg = 2.0;
     c.turn.land_speed_mps = 0.2;
     c.turn.impact_s = 0.015;
@@ -330,34 +343,46 @@ static int stride(hx_motion_t *m, const hx_gait_t *g, double dx, double dy, doub
     P1[1] = P0[1] + dy;
     P1[2] = P0[2] + dz;
 
-    /* toe-off: heel raised by rolling over the toe (pivot at the toe) */
-    pivot(th_b, -cf->foot_toe_m, -cf->foot_height_m, d0, d1, d2);
-    Pb[0] = P0[0] + d0[0] * cos(psi0);
-    Pb[1] = P0[1] + d0[0] * sin(psi0);
-    Pb[2] = P0[2] + d0[1];
-    memset(v, 0, sizeof v);
+    /* heel-off: the foot rolls over the toe (a rigid rotation about the
+     * toe's contact point) until toe-off. The foot is still rotating
+     * toe-down at toe-off (the pitch minimum comes early in the swing), as
+     * in real gaits: a zero rate there, with |f| near g, would look like a
+     * stance to a detector. */
     {
-        /* velocity of the roll-over just before toe-off, with an effective
-         * pitch rate that completes the rotation over the heel-off time */
-        double wr = 2.0 * th_b / T_ho;
+        double wb = th_b / T_ho, rx = -cf->foot_toe_m, rz = -cf->foot_height_m;
+        knot_t *ka = last_knot(m);
+        ka->roll = 1;
+        memcpy(ka->flat, P0, sizeof ka->flat);
+        ka->rx = rx;
+        ka->rz = rz;
+        ka->psi = psi0;
+        pivot(th_b, rx, rz, d0, d1, d2);
+        memset(v, 0, sizeof v);
+        Pb[0] = P0[0] + d0[0] * cos(psi0);
+        Pb[1] = P0[1] + d0[0] * sin(psi0);
+        Pb[2] = P0[2] + d0[1];
         for (c = 0; c < 3; c++) {
             v[c][0] = Pb[c];
         }
-        v[0][1] = d1[0] * wr * cos(psi0);
-        v[1][1] = d1[0] * wr * sin(psi0);
-        v[2][1] = d1[1] * wr;
-    }
-    v[4][0] = th_b;
-    v[5][0] = psi0;
-    if (push(m, tb, v, HX_PHASE_HEELOFF) != 0) {
-        return -1;
+        /* v = dp/dth th', a = d2p/dth2 th'^2 + dp/dth th'' (th'' = 0 here) */
+        v[0][1] = d1[0] * wb * cos(psi0);
+        v[1][1] = d1[0] * wb * sin(psi0);
+        v[2][1] = d1[1] * wb;
+        v[0][2] = d2[0] * wb * wb * cos(psi0);
+        v[1][2] = d2[0] * wb * wb * sin(psi0);
+        v[2][2] = d2[1] * wb * wb;
+        v[4][0] = th_b;
+        v[4][1] = wb;
+        v[5][0] = psi0;
+        if (push(m, tb, v, HX_PHASE_HEELOFF) != 0) {
+            return -1;
+        }
     }
 
     /* contact: heel first (th_s >= 0, pivot at the heel) or toe first */
-    if (th_s >= 0.0) {
-        pivot(th_s, cf->foot_heel_m, -cf->foot_height_m, d0, d1, d2);
-    } else {
-        pivot(th_s, -cf->foot_toe_m, -cf->foot_height_m, d0, d1, d2);
+    {
+        double rx = th_s >= 0.0 ? cf->foot_heel_m : -cf->foot_toe_m;
+        pivot(th_s, rx, -cf->foot_height_m, d0, d1, d2);
     }
     Ps[0] = P1[0] + d0[0] * cos(psi1);
     Ps[1] = P1[1] + d0[0] * sin(psi1);
@@ -385,8 +410,14 @@ static int stride(hx_motion_t *m, const hx_gait_t *g, double dx, double dy, doub
             v[2][2] = 2.0 * PI * PI * (0.5 * (Pb[2] + Pd[2]) - top) / (Tm * Tm);
             w_roll = g->roll_deg * D2R * ps;
             v[3][0] = w_roll;
-            v[4][0] = 0.5 * (th_b + th_s);
-            v[4][1] = 1.5 * (th_s - th_b) / Tm;
+            /* pitch rate in mid-swing: the harmonic mean of the two chord
+             * slopes (Fritsch-Carlson), zero at a peak of toe clearance */
+            {
+                double s1 = (g->pitch_mid_deg * D2R * ps - th_b) / (0.5 * Tm);
+                double s2 = (th_s - g->pitch_mid_deg * D2R * ps) / (0.5 * Tm);
+                v[4][0] = g->pitch_mid_deg * D2R * ps;
+                v[4][1] = (s1 * s2 > 0.0) ? 2.0 / (1.0 / s1 + 1.0 / s2) : 0.0;
+            }
             v[5][0] = psi0 + 0.5 * dpsi;
             v[5][1] = 1.875 * dpsi / Tm;
             if (push(m, tc, v, HX_PHASE_SWING) != 0) {
@@ -401,12 +432,17 @@ static int stride(hx_motion_t *m, const hx_gait_t *g, double dx, double dy, doub
         v[1][1] = vf * schi;
         v[2][1] = vz;
         v[4][0] = th_s;
+        /* still rotating towards the contact attitude; the contact stops it
+         * (an angular impact, as the gyros of real walks show) */
+        v[4][1] = (th_s - g->pitch_mid_deg * D2R * ps) / (td - tb);
         v[5][0] = psi1;
         if (push(m, td, v, HX_PHASE_SWING) != 0) {
             return -1;
         }
     }
-    /* contact: foot at rest on its contact point, about to slap down */
+    /* contact: foot at rest on its contact point, about to slap down by
+     * rolling over it (pitch rate and acceleration zero at contact, so the
+     * pivot formula gives zero velocity and acceleration here too) */
     memset(v, 0, sizeof v);
     for (c = 0; c < 3; c++) {
         v[c][0] = Ps[c];
@@ -415,6 +451,14 @@ static int stride(hx_motion_t *m, const hx_gait_t *g, double dx, double dy, doub
     v[5][0] = psi1;
     if (push(m, ts, v, HX_PHASE_LANDING) != 0) {
         return -1;
+    }
+    {
+        knot_t *ke = last_knot(m);
+        ke->roll = 1;
+        memcpy(ke->flat, P1, sizeof ke->flat);
+        ke->rx = th_s >= 0.0 ? cf->foot_heel_m : -cf->foot_toe_m;
+        ke->rz = -cf->foot_height_m;
+        ke->psi = psi1;
     }
     /* foot flat */
     still_state(v, P1, psi1);
@@ -452,7 +496,7 @@ static int turn_in_place(hx_motion_t *m, double deg)
 {
     int n = (int)ceil(fabs(deg) / 45.0 - 1e-9), i;
     for (i = 0; i < n; i++) {
-        if (stride(m, &m->cfg.turn, 0.0, 0.0, 0.0, deg * D2R / n, 0.3) != 0) {
+        if (stride(m, &m->cfg.turn, 0.0, 0.0, 0.0, deg * D2R / n, 1.0) != 0) {
             return -1;
         }
     }
@@ -583,6 +627,8 @@ static int home_leg(hx_motion_t *m)
     k->v[1][0] = 0.0;
     m->k[m->nk - 2].v[0][0] = 0.0;
     m->k[m->nk - 2].v[1][0] = 0.0;
+    m->k[m->nk - 3].flat[0] = 0.0; /* the slap rolls down onto it */
+    m->k[m->nk - 3].flat[1] = 0.0;
     return 0;
 }
 
@@ -900,6 +946,25 @@ void hx_motion_eval(const hx_motion_t *m, double t, hx_truth_t *o)
             p[c][1] = (k[1] + s * (2.0 * k[2] + s * (3.0 * k[3] + s * (4.0 * k[4] + s * 5.0 * k[5])))) / h;
             p[c][2] = (2.0 * k[2] + s * (6.0 * k[3] + s * (12.0 * k[4] + s * 20.0 * k[5]))) / (h * h);
         }
+    }
+    if (m->k[i].roll && tc > m->k[0].t && tc < m->k[m->nk - 1].t) {
+        /* rolling over a contact point: position from the pitch exactly */
+        const knot_t *kk = &m->k[i];
+        double d0[2], d1[2], d2[2], th = p[4][0], w1 = p[4][1], w2 = p[4][2];
+        double cps = cos(kk->psi), sps = sin(kk->psi), hx, hv, ha;
+        pivot(th, kk->rx, kk->rz, d0, d1, d2);
+        hx = d0[0];
+        hv = d1[0] * w1;
+        ha = d2[0] * w1 * w1 + d1[0] * w2;
+        p[0][0] = kk->flat[0] + hx * cps;
+        p[1][0] = kk->flat[1] + hx * sps;
+        p[2][0] = kk->flat[2] + d0[1];
+        p[0][1] = hv * cps;
+        p[1][1] = hv * sps;
+        p[2][1] = d1[1] * w1;
+        p[0][2] = ha * cps;
+        p[1][2] = ha * sps;
+        p[2][2] = d2[1] * w1 * w1 + d1[1] * w2;
     }
     o->phase = m->k[i].phase;
     o->leg = m->k[i].leg;

@@ -35,6 +35,7 @@ typedef struct {
     double lift_m;           /**< swing clearance above the higher of start and landing, m */
     double pitch_off_deg;    /**< pitch at toe-off (negative: toe down) */
     double pitch_strike_deg; /**< pitch at contact (positive: heel first, negative: toe first) */
+    double pitch_mid_deg;    /**< pitch in mid-swing (toe raised to clear a step on stairs) */
     double roll_deg;         /**< roll in mid-swing */
     double land_speed_mps;   /**< downward speed just before contact, m/s */
     double impact_s;         /**< landing deceleration time (impact sharpness), s */

@@ -144,7 +144,7 @@ static double qangle(const double a[4], const double b[4])
 /* Integrating the ideal specific force and angular rate with a high-order
  * double-precision strapdown returns the true trajectory. Stated tolerance:
  * position 1e-6 m, velocity 1e-7 m/s, attitude 1e-8 rad at the end of every
- * scenario (RK4 from knot to knot with steps <= 0.1 ms). */
+ * scenario (RK4 from knot to knot with steps <= 0.05 ms). */
 static void check_strapdown(const char *scenario)
 {
     hx_motion_t *m = make(scenario, 40.0);
@@ -152,7 +152,7 @@ static void check_strapdown(const char *scenario)
     nav_t x;
     double perr, T = hx_motion_duration(m);
     int j;
-    integrate(m, 1e-4, &x, 9.80665, &perr);
+    integrate(m, 5e-5, &x, 9.80665, &perr);
     hx_motion_eval(m, T, &o);
     for (j = 0; j < 3; j++) {
         FNAV_ASSERT_CLOSE(x.p[j], o.pos_m[j], 1e-6, 0.0);
@@ -288,6 +288,44 @@ static void test_still_is_exactly_still(void **state)
     /* a 30 s walk is mostly strides: stance ~1/3 of each, plus 10 s standing */
     assert_true(still > 5000 && moving > 10000);
     hx_motion_free(m);
+}
+
+/* A stance detector looks at short windows of |w| and |f| - g. While the
+ * foot moves (speed > 0.3 m/s somewhere in a 25 ms window) the window must
+ * not look still: some |w| > 0.5 rad/s or some ||f| - g| > 1 m/s^2. (A zero
+ * pitch rate at toe-off once made the filter apply ZUPTs at 1 m/s.) */
+static void test_no_quiet_window_in_motion(void **state)
+{
+    const char *scen[] = { "walk", "run", "stairs", "stand:1,turn:180,walk:3:90,stand:1" };
+    size_t k;
+    (void)state;
+    for (k = 0; k < sizeof scen / sizeof scen[0]; k++) {
+        hx_motion_t *m = make(scen[k], 30.0);
+        double T = hx_motion_duration(m), t0, dt = 1e-3;
+        long bad = 0;
+        for (t0 = 0.0; t0 + 0.025 < T; t0 += 0.005) {
+            double vmax = 0.0, wmax = 0.0, fdev = 0.0, t;
+            for (t = t0; t <= t0 + 0.025; t += dt) {
+                hx_truth_t o;
+                double sp, w, f;
+                hx_motion_eval(m, t, &o);
+                sp = sqrt(o.vel_mps[0] * o.vel_mps[0] + o.vel_mps[1] * o.vel_mps[1] + o.vel_mps[2] * o.vel_mps[2]);
+                w = sqrt(o.w_b[0] * o.w_b[0] + o.w_b[1] * o.w_b[1] + o.w_b[2] * o.w_b[2]);
+                f = fabs(sqrt(o.f_b[0] * o.f_b[0] + o.f_b[1] * o.f_b[1] + o.f_b[2] * o.f_b[2]) - 9.80665);
+                vmax = sp > vmax ? sp : vmax;
+                wmax = w > wmax ? w : wmax;
+                fdev = f > fdev ? f : fdev;
+            }
+            if (vmax > 0.3 && wmax < 0.5 && fdev < 1.0) {
+                if (bad < 3) {
+                    fprintf(stderr, "%s: quiet window at t = %.3f s while moving at %.2f m/s\n", scen[k], t0, vmax);
+                }
+                bad++;
+            }
+        }
+        assert_int_equal(bad, 0);
+        hx_motion_free(m);
+    }
 }
 
 static void test_closed_loops_and_odometer(void **state)
@@ -499,6 +537,7 @@ int main(void)
         cmocka_unit_test(test_strapdown_run_stairs_elevator),
         cmocka_unit_test(test_strapdown_detects_inconsistency),
         cmocka_unit_test(test_still_is_exactly_still),
+        cmocka_unit_test(test_no_quiet_window_in_motion),
         cmocka_unit_test(test_closed_loops_and_odometer),
         cmocka_unit_test(test_stairs_and_elevator_heights),
         cmocka_unit_test(test_impact_sharpness),
