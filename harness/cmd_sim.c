@@ -12,22 +12,8 @@
 #include "hx_sim.h"
 
 static const hx_opt_t k_opts[] = {
-    { "--motion", "NAME|SCRIPT", "walk (default), run, stairs, elevator, stand, loop, paper, mixed, or a "
-                                 "script such as stand:5,walk:20:90,stairs-up:12,home", 0 },
-    { "--duration", "S", "length of the output in seconds (built-in motions are sized to it)", 0 },
-    { "--rate", "HZ", "output sample rate (default 200)", 0 },
-    { "--profile", "NAME|FILE", "sensor noise: navchip (default), mtx, shimmer, a profile file, or none", 0 },
-    { "--effect", "SPEC", "add an effect: NAME[:ch=CH][:PARAM=VALUE]... or NAME:off (see --list-effects)", 1 },
+    HX_SIM_OPTS,
     { "--list-effects", NULL, "print the effect catalogue with parameters and defaults, and exit", 0 },
-    { "--seed", "N", "random seed (default 1)", 0 },
-    { "--oversample", "M", "internal rate / output rate before the anti-alias filter (default: >= 2 kHz "
-                           "internally; 1 = point sampling)", 0 },
-    { "--speed", "MPS", "walking speed (with --cadence or --stride; the third follows)", 0 },
-    { "--cadence", "SPM", "walking steps per minute (both feet)", 0 },
-    { "--stride", "M", "walking stride of the sensor foot", 0 },
-    { "--impact-ms", "MS", "landing deceleration time of every gait (impact sharpness)", 0 },
-    { "--ring-scale", "X", "multiply the shoe ringing after each contact (0: none)", 0 },
-    { "--mount", "R,P,Y", "sensor mounting on the foot, ZYX Euler degrees", 0 },
     { "--out", "LOG", "simulated log (.bin, or CSV for any other name; - for CSV on stdout)", 0 },
     { "--truth", "CSV", "truth at every output tick (docs/simulator.md)", 0 },
     { NULL, NULL, NULL, 0 }
@@ -95,39 +81,18 @@ static int sink(void *vctx, const hx_sim_tick_t *tk)
     return 0;
 }
 
-static int parse_triple(const char *s, double v[3])
-{
-    char *end;
-    int i;
-    for (i = 0; i < 3; i++) {
-        v[i] = strtod(s, &end);
-        if (end == s || !isfinite(v[i])) {
-            return -1;
-        }
-        s = end;
-        if (i < 2) {
-            if (*s != ',') {
-                return -1;
-            }
-            s++;
-        }
-    }
-    return *s == '\0' ? 0 : -1;
-}
-
 int hx_cmd_sim(int argc, char **argv)
 {
     hx_args_t a;
-    hx_motion_config_t mc = hx_motion_config_default();
+    hx_sim_setup_t su;
     hx_sim_config_t sc;
     hx_motion_t *motion = NULL;
     sim_ctx_t ctx;
     hx_meta_t meta;
-    fnav_profile_t prof;
     char err[512];
     const char *motion_name, *profile, *out, *truth;
-    double rate = 200.0, dur = 0.0, over = 0.0, seed = 1.0, v;
-    int i, rc, status = HX_EXIT_OK;
+    double rate, dur;
+    int rc, status = HX_EXIT_OK;
     int pr = hx_args_parse(&k_spec, argc, argv, &a);
     if (pr != 0) {
         return pr > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
@@ -143,120 +108,15 @@ int hx_cmd_sim(int argc, char **argv)
         hx_usage(&k_spec, stderr);
         return HX_EXIT_USAGE;
     }
-    if (hx_arg_double(&a, "--rate", 1.0, 100000.0, &rate) != 0 ||
-        hx_arg_double(&a, "--duration", 1e-3, 1e6, &dur) != 0 ||
-        hx_arg_double(&a, "--oversample", 1.0, 1024.0, &over) != 0 ||
-        hx_arg_double(&a, "--seed", 0.0, 4294967295.0, &seed) != 0) {
+    if (hx_sim_setup_from_args("sim", &a, &su) != 0) {
         return HX_EXIT_USAGE;
     }
-    if (over != floor(over) || seed != floor(seed)) {
-        hx_error("sim", "--oversample and --seed take whole numbers");
-        return HX_EXIT_USAGE;
-    }
-    /* walking gait: two of speed, cadence, stride give the third */
-    {
-        double sp = 0.0, ca = 0.0, st = 0.0;
-        if (hx_arg_double(&a, "--speed", 0.05, 10.0, &sp) != 0 || hx_arg_double(&a, "--cadence", 20.0, 300.0, &ca) != 0 ||
-            hx_arg_double(&a, "--stride", 0.05, 5.0, &st) != 0) {
-            return HX_EXIT_USAGE;
-        }
-        if (sp > 0.0 && ca > 0.0 && st > 0.0) {
-            hx_error("sim", "give at most two of --speed, --cadence, --stride");
-            return HX_EXIT_USAGE;
-        }
-        if (ca > 0.0) {
-            mc.walk.cadence_spm = ca;
-        }
-        if (st > 0.0) {
-            mc.walk.stride_m = st;
-        }
-        if (sp > 0.0) {
-            if (st > 0.0) {
-                mc.walk.cadence_spm = 120.0 * sp / st;
-            } else {
-                mc.walk.stride_m = 120.0 * sp / mc.walk.cadence_spm;
-            }
-        }
-    }
-    v = 0.0;
-    if (hx_arg_double(&a, "--impact-ms", 0.5, 200.0, &v) != 0) {
-        return HX_EXIT_USAGE;
-    }
-    if (v > 0.0) {
-        mc.walk.impact_s = mc.run.impact_s = mc.stairs_up.impact_s = mc.stairs_down.impact_s = mc.turn.impact_s =
-            v * 1e-3;
-    }
-    v = -1.0;
-    if (hx_arg_double(&a, "--ring-scale", 0.0, 100.0, &v) != 0) {
-        return HX_EXIT_USAGE;
-    }
-    if (v >= 0.0) {
-        mc.walk.ring_mps2 *= v;
-        mc.run.ring_mps2 *= v;
-        mc.stairs_up.ring_mps2 *= v;
-        mc.stairs_down.ring_mps2 *= v;
-        mc.turn.ring_mps2 *= v;
-    }
-    if (hx_arg(&a, "--mount") != NULL && parse_triple(hx_arg(&a, "--mount"), mc.mount_deg) != 0) {
-        hx_error("sim", "--mount needs R,P,Y in degrees, e.g. --mount 0,10,90");
-        return HX_EXIT_USAGE;
-    }
-
-    /* sensor model: profile baseline, then the effects in order */
-    sc.err = fnav_imuerr_config_default;
-    sc.err.rate_hz = (fnav_real_t)rate;
-    sc.err.seed = (uint32_t)seed;
-    sc.err.oversample = over > 0.0 ? (uint32_t)over : (uint32_t)ceil(2000.0 / rate - 1e-9);
-    if (sc.err.oversample < 1u) {
-        sc.err.oversample = 1u;
-    }
-    profile = hx_arg(&a, "--profile");
-    if (profile == NULL) {
-        profile = "navchip";
-    }
-    if (strcmp(profile, "none") != 0) {
-        if (hx_profile_load(profile, &prof, err, sizeof err) != 0) {
-            hx_error("sim", "%s", err);
-            return HX_EXIT_USAGE;
-        }
-        if (fnav_imuerr_config_from_profile(&sc.err, &prof) != FNAV_OK) {
-            hx_error("sim", "profile %s is not valid", profile);
-            return HX_EXIT_USAGE;
-        }
-    }
-    for (i = 0; i < hx_arg_count(&a, "--effect"); i++) {
-        if (hx_effect_parse(&sc.err, hx_arg_at(&a, "--effect", i), err, sizeof err) != 0) {
-            hx_error("sim", "%s", err);
-            return HX_EXIT_USAGE;
-        }
-    }
-    {
-        fnav_imuerr_t probe;
-        if (fnav_imuerr_init(&probe, &sc.err) != FNAV_OK) {
-            hx_error("sim", "the effects are inconsistent (e.g. jumps faster than the rate, flicker tau_lo_s >= "
-                            "tau_hi_s, alias factor not whole)");
-            return HX_EXIT_USAGE;
-        }
-    }
-
-    /* a tone in the filter's stop band never reaches the output */
-    if (sc.err.mask[FNAV_EFFECT_VIBRATION] != 0u && sc.err.mask[FNAV_EFFECT_ALIAS] == 0u &&
-        fnav_imuerr_internal_factor(&sc.err) > 1u) {
-        for (i = 0; i < 6; i++) {
-            if ((sc.err.mask[FNAV_EFFECT_VIBRATION] & (1u << i)) && (double)sc.err.vibration.freq_hz[i] > 0.41 * rate) {
-                hx_warn("sim", "vibration at %g Hz lies above the anti-alias pass band (%.0f Hz at %g Hz): filtered "
-                               "out; add --effect alias to fold it into the output band",
-                        (double)sc.err.vibration.freq_hz[i], 0.41 * rate, rate);
-                break;
-            }
-        }
-    }
-
-    motion_name = hx_arg(&a, "--motion");
-    if (motion_name == NULL) {
-        motion_name = "walk";
-    }
-    motion = hx_motion_create(&mc, motion_name, dur, err, sizeof err);
+    sc.err = su.err;
+    rate = (double)su.err.rate_hz;
+    dur = su.duration_s;
+    profile = su.profile_name;
+    motion_name = su.motion_name;
+    motion = hx_motion_create(&su.motion_cfg, motion_name, dur, err, sizeof err);
     if (motion == NULL) {
         hx_error("sim", "%s", err);
         return HX_EXIT_USAGE;

@@ -155,6 +155,7 @@ void hx_mc_result_free(hx_mc_result_t *res)
 typedef struct {
     double sum_eh2, sum_ev2, sum_eyaw2, sum_ph2, sum_pv2;
     double sum_nees[HX_NEES_COUNT];
+    int n_nees[HX_NEES_COUNT];
     int n;
 } mc_acc_t;
 
@@ -317,15 +318,14 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
                         s.eyaw2 = e[2] * e[2];
                         s.ph2 = est.P[6][6] + est.P[7][7];
                         s.pv2 = est.P[8][8];
+                        /* a group whose covariance is not positive definite
+                         * (states switched off, e.g. the biases without the
+                         * bias model) has no NEES */
                         for (g = 0; g < HX_NEES_COUNT; g++) {
                             s.nees[g] = nees_block(est.P, e, k_first[g], hx_nees_dim[g]);
                             if (s.nees[g] < 0.0) {
-                                ok = 0;
+                                s.nees[g] = (double)NAN;
                             }
-                        }
-                        if (!ok) {
-                            x->nonfinite++;
-                            continue;
                         }
                         slots[b] = s;
                         x->final_h_m[r] = sqrt(eh2);
@@ -356,7 +356,10 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
                 a->sum_ph2 += slots[b].ph2;
                 a->sum_pv2 += slots[b].pv2;
                 for (g = 0; g < HX_NEES_COUNT; g++) {
-                    a->sum_nees[g] += slots[b].nees[g];
+                    if (isfinite(slots[b].nees[g])) {
+                        a->sum_nees[g] += slots[b].nees[g];
+                        a->n_nees[g]++;
+                    }
                 }
             }
         }
@@ -383,7 +386,8 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
             o->pred_h_m = sqrt(a->sum_ph2 / a->n);
             o->pred_v_m = sqrt(a->sum_pv2 / a->n);
             for (g = 0; g < HX_NEES_COUNT; g++) {
-                o->nees[g] = a->sum_nees[g] / a->n;
+                o->n_nees[g] = a->n_nees[g];
+                o->nees[g] = a->n_nees[g] > 0 ? a->sum_nees[g] / a->n_nees[g] : (double)NAN;
             }
         }
     }

@@ -68,7 +68,8 @@ typedef struct {
     double rms_yaw_rad;    /**< RMS heading error (attitude error about n z) */
     double pred_h_m;       /**< RMS of the predicted horizontal sd sqrt(Pxx + Pyy) */
     double pred_v_m;       /**< RMS of the predicted vertical sd */
-    double nees[HX_NEES_COUNT]; /**< average NEES over the runs */
+    double nees[HX_NEES_COUNT]; /**< average NEES over the runs (NaN: no positive definite covariance) */
+    int n_nees[HX_NEES_COUNT];  /**< runs in each average (the band depends on it) */
 } hx_mc_bin_t;
 
 /** Results of one variant. */

@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hx_profile.h"
+
 #define PI 3.14159265358979323846
 
 static const char *const k_ch_names[6] = { "ax", "ay", "az", "gx", "gy", "gz" };
@@ -431,4 +433,173 @@ void hx_effect_list(FILE *f)
             }
         }
     }
+}
+
+/* ------------------------------------------------------------ options */
+
+void hx_profile_bias_eq6(fnav_profile_t *p)
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        /* BS = sigma_bias sqrt(tau samples) (eq. 6), stationary sd = BS / 0.617 */
+        p->accel_bias_sigma_mps2[i] = (fnav_real_t)((double)p->accel_bias_sigma_mps2[i] *
+                                                    sqrt((double)p->accel_tau_s[i] * (double)p->rate_hz) / 0.617);
+        p->gyro_bias_sigma_rps[i] = (fnav_real_t)((double)p->gyro_bias_sigma_rps[i] *
+                                                  sqrt((double)p->gyro_tau_s[i] * (double)p->rate_hz) / 0.617);
+    }
+}
+
+static int parse_triple(const char *s, double v[3])
+{
+    char *end;
+    int i;
+    for (i = 0; i < 3; i++) {
+        v[i] = strtod(s, &end);
+        if (end == s || !isfinite(v[i])) {
+            return -1;
+        }
+        s = end;
+        if (i < 2) {
+            if (*s != ',') {
+                return -1;
+            }
+            s++;
+        }
+    }
+    return *s == '\0' ? 0 : -1;
+}
+
+int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *s)
+{
+    char err[512];
+    double rate = 200.0, dur = 0.0, over = 0.0, seed = 1.0, v;
+    const char *bs;
+    int i;
+    memset(s, 0, sizeof *s);
+    s->motion_cfg = hx_motion_config_default();
+    if (hx_arg_double(a, "--rate", 1.0, 100000.0, &rate) != 0 || hx_arg_double(a, "--duration", 1e-3, 1e6, &dur) != 0 ||
+        hx_arg_double(a, "--oversample", 1.0, 1024.0, &over) != 0 ||
+        hx_arg_double(a, "--seed", 0.0, 4294967295.0, &seed) != 0) {
+        return -1;
+    }
+    if (over != floor(over) || seed != floor(seed)) {
+        hx_error(cmd, "--oversample and --seed take whole numbers");
+        return -1;
+    }
+    s->duration_s = dur;
+    /* walking gait: two of speed, cadence, stride give the third */
+    {
+        double sp = 0.0, ca = 0.0, st = 0.0;
+        hx_gait_t *w = &s->motion_cfg.walk;
+        if (hx_arg_double(a, "--speed", 0.05, 10.0, &sp) != 0 || hx_arg_double(a, "--cadence", 20.0, 300.0, &ca) != 0 ||
+            hx_arg_double(a, "--stride", 0.05, 5.0, &st) != 0) {
+            return -1;
+        }
+        if (sp > 0.0 && ca > 0.0 && st > 0.0) {
+            hx_error(cmd, "give at most two of --speed, --cadence, --stride");
+            return -1;
+        }
+        if (ca > 0.0) {
+            w->cadence_spm = ca;
+        }
+        if (st > 0.0) {
+            w->stride_m = st;
+        }
+        if (sp > 0.0) {
+            if (st > 0.0) {
+                w->cadence_spm = 120.0 * sp / st;
+            } else {
+                w->stride_m = 120.0 * sp / w->cadence_spm;
+            }
+        }
+    }
+    v = 0.0;
+    if (hx_arg_double(a, "--impact-ms", 0.5, 200.0, &v) != 0) {
+        return -1;
+    }
+    if (v > 0.0) {
+        hx_motion_config_t *m = &s->motion_cfg;
+        m->walk.impact_s = m->run.impact_s = m->stairs_up.impact_s = m->stairs_down.impact_s = m->turn.impact_s =
+            v * 1e-3;
+    }
+    v = -1.0;
+    if (hx_arg_double(a, "--ring-scale", 0.0, 100.0, &v) != 0) {
+        return -1;
+    }
+    if (v >= 0.0) {
+        hx_motion_config_t *m = &s->motion_cfg;
+        m->walk.ring_mps2 *= v;
+        m->run.ring_mps2 *= v;
+        m->stairs_up.ring_mps2 *= v;
+        m->stairs_down.ring_mps2 *= v;
+        m->turn.ring_mps2 *= v;
+    }
+    if (hx_arg(a, "--mount") != NULL && parse_triple(hx_arg(a, "--mount"), s->motion_cfg.mount_deg) != 0) {
+        hx_error(cmd, "--mount needs R,P,Y in degrees, e.g. --mount 0,10,90");
+        return -1;
+    }
+    bs = hx_arg(a, "--bias-sigma");
+    if (bs != NULL && strcmp(bs, "given") != 0 && strcmp(bs, "eq6") != 0) {
+        hx_error(cmd, "--bias-sigma is given or eq6, not '%s'", bs);
+        return -1;
+    }
+    s->bias_eq6 = bs != NULL && strcmp(bs, "eq6") == 0;
+
+    /* sensor model: profile baseline, then the effects in order */
+    s->err = fnav_imuerr_config_default;
+    s->err.rate_hz = (fnav_real_t)rate;
+    s->err.seed = (uint32_t)seed;
+    s->err.oversample = over > 0.0 ? (uint32_t)over : (uint32_t)ceil(2000.0 / rate - 1e-9);
+    if (s->err.oversample < 1u) {
+        s->err.oversample = 1u;
+    }
+    s->profile_name = hx_arg(a, "--profile");
+    if (s->profile_name == NULL) {
+        s->profile_name = "navchip";
+    }
+    if (strcmp(s->profile_name, "none") != 0) {
+        if (hx_profile_load(s->profile_name, &s->profile, err, sizeof err) != 0) {
+            hx_error(cmd, "%s", err);
+            return -1;
+        }
+        if (s->bias_eq6) {
+            hx_profile_bias_eq6(&s->profile);
+        }
+        if (fnav_imuerr_config_from_profile(&s->err, &s->profile) != FNAV_OK) {
+            hx_error(cmd, "profile %s is not valid", s->profile_name);
+            return -1;
+        }
+        s->has_profile = 1;
+    }
+    for (i = 0; i < hx_arg_count(a, "--effect"); i++) {
+        if (hx_effect_parse(&s->err, hx_arg_at(a, "--effect", i), err, sizeof err) != 0) {
+            hx_error(cmd, "%s", err);
+            return -1;
+        }
+    }
+    {
+        fnav_imuerr_t probe;
+        if (fnav_imuerr_init(&probe, &s->err) != FNAV_OK) {
+            hx_error(cmd, "the effects are inconsistent (e.g. jumps faster than the rate, flicker tau_lo_s >= "
+                          "tau_hi_s, alias factor not whole)");
+            return -1;
+        }
+    }
+    /* a tone in the filter's stop band never reaches the output */
+    if (s->err.mask[FNAV_EFFECT_VIBRATION] != 0u && s->err.mask[FNAV_EFFECT_ALIAS] == 0u &&
+        fnav_imuerr_internal_factor(&s->err) > 1u) {
+        for (i = 0; i < 6; i++) {
+            if ((s->err.mask[FNAV_EFFECT_VIBRATION] & (1u << i)) && (double)s->err.vibration.freq_hz[i] > 0.41 * rate) {
+                hx_warn(cmd, "vibration at %g Hz lies above the anti-alias pass band (%.0f Hz at %g Hz): filtered "
+                             "out; add --effect alias to fold it into the output band",
+                        (double)s->err.vibration.freq_hz[i], 0.41 * rate, rate);
+                break;
+            }
+        }
+    }
+    s->motion_name = hx_arg(a, "--motion");
+    if (s->motion_name == NULL) {
+        s->motion_name = "walk";
+    }
+    return 0;
 }

@@ -15,6 +15,7 @@
 #include <stdio.h>
 
 #include "footnav/fnav_imuerr.h"
+#include "hx_cli.h"
 #include "hx_motion.h"
 
 /** Half length of the anti-alias FIR in output periods: L = 2 K M + 1 taps
@@ -68,6 +69,50 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
  *  "NAME:ch=..:P=V..." per group of channels with identical parameters
  *  (%.9g). Empty for an effect that is off. Returns the length needed. */
 size_t hx_effect_format(const fnav_imuerr_config_t *cfg, fnav_effect_id_t id, char *buf, size_t size);
+
+/* ------------------------------------------------------------ options */
+
+/** Command-line options that describe a simulation (motion, sensor,
+ *  sampling), shared by `sim` and `montecarlo`; for an hx_opt_t table. */
+#define HX_SIM_OPTS                                                                                             \
+    { "--motion", "NAME|SCRIPT", "walk (default), run, stairs, elevator, stand, loop, paper, mixed, or a "     \
+                                 "script such as stand:5,walk:20:90,stairs-up:12,home", 0 },                   \
+    { "--duration", "S", "length of the output in seconds (built-in motions are sized to it)", 0 },            \
+    { "--rate", "HZ", "output sample rate (default 200)", 0 },                                                  \
+    { "--profile", "NAME|FILE", "sensor noise: navchip (default), mtx, shimmer, a profile file, or none", 0 },  \
+    { "--bias-sigma", "READING", "paper Tables' sigma_bias: given (default, eq. 4: stationary sd) or eq6 "     \
+                                 "(sd = sigma_bias sqrt(tau) / 0.617, docs/simulator.md)", 0 },                \
+    { "--effect", "SPEC", "add an effect: NAME[:ch=CH][:PARAM=VALUE]... or NAME:off (see sim --list-effects)", 1 }, \
+    { "--seed", "N", "random seed (default 1)", 0 },                                                            \
+    { "--oversample", "M", "internal rate / output rate before the anti-alias filter (default: >= 2 kHz "     \
+                           "internally; 1 = point sampling)", 0 },                                              \
+    { "--speed", "MPS", "walking speed (with --cadence or --stride; the third follows)", 0 },                  \
+    { "--cadence", "SPM", "walking steps per minute (both feet)", 0 },                                          \
+    { "--stride", "M", "walking stride of the sensor foot", 0 },                                                \
+    { "--impact-ms", "MS", "landing deceleration time of every gait (impact sharpness)", 0 },                   \
+    { "--ring-scale", "X", "multiply the shoe ringing after each contact (0: none)", 0 },                       \
+    { "--mount", "R,P,Y", "sensor mounting on the foot, ZYX Euler degrees", 0 }
+
+/** A simulation described by the HX_SIM_OPTS options. */
+typedef struct {
+    hx_motion_config_t motion_cfg;
+    fnav_imuerr_config_t err;      /**< with rate, seed, oversample, profile baseline, effects */
+    fnav_profile_t profile;        /**< the profile (after --bias-sigma), valid when has_profile */
+    int has_profile;
+    const char *profile_name;      /**< "navchip", a path, or "none" */
+    const char *motion_name;       /**< --motion (default "walk") */
+    double duration_s;             /**< --duration (0: the motion's) */
+    int bias_eq6;                  /**< --bias-sigma eq6 */
+} hx_sim_setup_t;
+
+/** Read the HX_SIM_OPTS options. 0 ok; -1 on a usage error (message
+ *  printed as "harness CMD: error: ..."). */
+int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *s);
+
+/** The paper's eq. (6) reading of a profile's bias sigmas: the Allan floor
+ *  is BS = sigma_bias sqrt(tau / T_s) and a Gauss-Markov process with that
+ *  floor has a stationary sd of BS / 0.617 (docs/simulator.md). */
+void hx_profile_bias_eq6(fnav_profile_t *p);
 
 /** Channel mask of a channel list ("gyro", "ax+gz"); 0 when invalid. */
 uint32_t hx_channels_parse(const char *s);

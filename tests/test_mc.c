@@ -202,7 +202,8 @@ static void run_oracles(double mount_yaw_deg, const char *effect)
         in_over = 0;
         for (b = 0; b < nb; b++) {
             const hx_mc_bin_t *x = &res.var[0].bins[b], *y = &res.var[1].bins[b];
-            hx_nees_band(x->n, hx_nees_dim[g], 0.05, &lo, &hi);
+            assert_int_equal(x->n_nees[g], x->n);
+            hx_nees_band(x->n_nees[g], hx_nees_dim[g], 0.05, &lo, &hi);
             in_good += x->nees[g] >= lo && x->nees[g] <= hi;
             in_over += y->nees[g] >= lo && y->nees[g] <= hi;
             /* the over-confident oracle reports a quarter of the covariance */
