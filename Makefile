@@ -9,6 +9,9 @@
 #   make deps       install the Debian packages (scripts/bootstrap.sh)
 #   make clean
 #
+# The core calls the port's fnav_port_assert_failed(), which lives in libhx.a
+# (port/linux): libhx.a is named again after libfootnav.a on link lines.
+#
 # Sources are discovered: src/*.c is the core, harness/*.c + port/linux/*.c the
 # Linux tool, tests/test_*.c the CMocka suites, tests/bench_*.c the benchmarks,
 # tests/cli/test_*.sh the command-line tests.

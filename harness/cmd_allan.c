@@ -1,14 +1,1078 @@
-/* harness allan: placeholder until the sensor analysis issue (#4) lands. */
+/* harness allan: streaming Allan deviation of every channel of a log (or of
+ * one column of numbers), noise types, the paper's and the corrected
+ * bias-model identification, the Fig. 7 simulation check, table, JSON,
+ * plot and profile (docs/allan.md). */
+#include <cjson/cJSON.h>
+#include <errno.h>
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "footnav/fnav_allan.h"
+#include "hx_allan_ident.h"
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_profile.h"
+
+#define CMD "allan"
+#define NCH_MAX 6
+#define GRID_MAX 160
+#define NCHUNK_MAX ((GRID_MAX + FNAV_ALLAN_MAX_POINTS - 1) / FNAV_ALLAN_MAX_POINTS)
+#define RAD2DEG 57.29577951308232
+
+static const hx_opt_t k_opts[] = {
+    HX_INPUT_OPTS,
+    { "--series", "FILE", "analyse one column of numbers (any unit) instead of a log", 0 },
+    { "--phase", NULL, "the series is a phase (integral): analyse its differences x rate", 0 },
+    { "--rate", "HZ", "sample rate (needed with --series; overrides a log's rate)", 0 },
+    { "--unit", "TEXT", "unit of a series, for labels (default 'u')", 0 },
+    { "--channels", "LIST", "channels of a log to analyse, e.g. gx,gy,gz (default ax,ay,az,gx,gy,gz)", 0 },
+    { "--per-octave", "N", "tau points per octave: 1, 2 or 4 (default 4)", 0 },
+    { "--max-tau-frac", "F", "largest tau identified, tabulated and plotted, as a fraction of the "
+                             "record (default 0.1, the paper's 10 %)", 0 },
+    { "--fit-extra", NULL, "corrected fit also with quantisation and rate random walk terms", 0 },
+    { "--no-sim", NULL, "skip the simulation check (paper Fig. 7)", 0 },
+    { "--sim-samples", "N", "samples per simulation (default: as many as the input)", 0 },
+    { "--seed", "N", "random seed of the simulations (default 1)", 0 },
+    { "--conf", "P", "confidence of the intervals (default 0.683, as Stable32)", 0 },
+    { "--name", "TEXT", "profile name (default: from the file name)", 0 },
+    { "--out", "FILE", "table of every channel and tau (CSV)", 0 },
+    { "--json", "FILE", "parameters, quality and tables (JSON)", 0 },
+    { "--plot", "FILE", "Allan deviation plot (PNG): measured with confidence bars, simulated", 0 },
+    { "--profile", "FILE", "write the corrected identification as a footnav profile", 0 },
+    { "--quiet", NULL, "print only the parameter table", 0 },
+    { "--paper-tables", NULL, "check the paper's Tables IV-VI against its eqs. (4) and (6) (no input)", 0 },
+    { NULL, NULL, NULL, 0 }
+};
+
+static const hx_spec_t k_spec = {
+    CMD, "LOG [options]   |   harness allan --series FILE --rate HZ [options]",
+    "Streaming Allan deviation (overlapping and non-overlapping, fixed memory per\n"
+    "channel as on the sensor) of every channel of a log, with confidence\n"
+    "intervals (Greenhall EDF), the noise type per tau region, and the bias model\n"
+    "identified twice: as in the paper (III.C: sigma_v = ADEV at 1 s, BS at the\n"
+    "minimum, tau = t_BS f_s, sigma_bias = BS / sqrt(tau)) and corrected (weighted\n"
+    "least-squares fit of the white + AR(1) Allan variance). Both models are\n"
+    "simulated and run through the same estimator (the paper's Fig. 7 check).\n"
+    "Parameters are printed in the units of the paper's Tables IV-VI (m/s^2,\n"
+    "deg/s; tau in samples at the log's rate). --profile writes the corrected model\n"
+    "for `harness replay --profile` (docs/profile-format.md).",
+    0, 1, k_opts
+};
+
+typedef struct {
+    const char *name, *label, *unit;
+    int src;         /* 0..5: ax ay az gx gy gz; -1: series */
+    double scale;    /* SI -> display */
+    fnav_allan_t *est[NCHUNK_MAX];
+    fnav_allan_result_t res[GRID_MAX];
+    fnav_real_t slope[GRID_MAX];
+    fnav_allan_noise_t noise[GRID_MAX];
+    double edf[GRID_MAX], lo[GRID_MAX], hi[GRID_MAX];
+    double edf_n[GRID_MAX], lo_n[GRID_MAX], hi_n[GRID_MAX];
+    fnav_allan_result_t sim_paper[GRID_MAX], sim_fit[GRID_MAX];
+    int have_sim_paper, have_sim_fit;
+    size_t nres;
+    hx_allan_ident_t id;
+    int id_ok;
+} chan_t;
+
+typedef struct {
+    chan_t ch[NCH_MAX];
+    int nch;
+    uint32_t grid[GRID_MAX];
+    size_t ngrid;
+    fnav_allan_config_t cfg[NCHUNK_MAX];
+    int nchunk;
+    double rate_hz;
+    uint32_t n;              /* samples pushed per channel */
+    double tau_max_frac;
+    double conf;
+    const char *source;
+    char sensor[64];
+    int is_series;
+} run_t;
+
+static const struct {
+    const char *name, *label;
+    int gyro;
+} k_ch[6] = {
+    { "ax", "Acc x", 0 }, { "ay", "Acc y", 0 }, { "az", "Acc z", 0 },
+    { "gx", "Gyr x", 1 }, { "gy", "Gyr y", 1 }, { "gz", "Gyr z", 1 },
+};
+
+/* ------------------------------------------------------------ setup */
+
+static int setup_grid(run_t *R, long per_octave)
+{
+    int c;
+    R->ngrid = fnav_allan_grid(R->grid, GRID_MAX, (uint32_t)FNAV_ALLAN_TAU_MAX, (unsigned)per_octave);
+    R->nchunk = 0;
+    for (c = 0; (size_t)c * FNAV_ALLAN_MAX_POINTS < R->ngrid; c++) {
+        size_t off = (size_t)c * FNAV_ALLAN_MAX_POINTS;
+        R->cfg[c].tau = R->grid + off;
+        R->cfg[c].n_tau = R->ngrid - off < FNAV_ALLAN_MAX_POINTS ? R->ngrid - off : FNAV_ALLAN_MAX_POINTS;
+        R->nchunk++;
+    }
+    return R->nchunk > 0 ? 0 : -1;
+}
+
+static int alloc_channel(run_t *R, chan_t *ch)
+{
+    int c;
+    for (c = 0; c < R->nchunk; c++) {
+        ch->est[c] = (fnav_allan_t *)malloc(sizeof(fnav_allan_t));
+        if (ch->est[c] == NULL || fnav_allan_init(ch->est[c], &R->cfg[c]) != FNAV_OK) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static void free_run(run_t *R)
+{
+    int i, c;
+    for (i = 0; i < R->nch; i++) {
+        for (c = 0; c < R->nchunk; c++) {
+            free(R->ch[i].est[c]);
+            R->ch[i].est[c] = NULL;
+        }
+    }
+}
+
+static int push_all(run_t *R, chan_t *ch, double v)
+{
+    int c;
+    for (c = 0; c < R->nchunk; c++) {
+        if (fnav_allan_push(ch->est[c], (fnav_real_t)v) != FNAV_OK) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* Collect the tables (display units) from the estimators of a channel. */
+static void collect(run_t *R, chan_t *ch, fnav_allan_t *const *est, fnav_allan_result_t *out)
+{
+    size_t k = 0, i;
+    int c;
+    for (c = 0; c < R->nchunk; c++) {
+        size_t cnt = fnav_allan_count(est[c]);
+        for (i = 0; i < cnt && k < GRID_MAX; i++) {
+            if (fnav_allan_get(est[c], i, &out[k]) == FNAV_OK) {
+                out[k].avar = (fnav_real_t)((double)out[k].avar * ch->scale * ch->scale);
+                out[k].avar_nonoverlap = (fnav_real_t)((double)out[k].avar_nonoverlap * ch->scale * ch->scale);
+                k++;
+            }
+        }
+    }
+    ch->nres = k;
+}
+
+/* ------------------------------------------------------------ input */
+
+static int parse_channels(run_t *R, const char *list)
+{
+    char buf[128], *tok, *save = NULL;
+    int i;
+    snprintf(buf, sizeof buf, "%s", list != NULL ? list : "ax,ay,az,gx,gy,gz");
+    R->nch = 0;
+    for (tok = strtok_r(buf, ",", &save); tok != NULL; tok = strtok_r(NULL, ",", &save)) {
+        int found = -1;
+        for (i = 0; i < 6; i++) {
+            if (strcmp(tok, k_ch[i].name) == 0) {
+                found = i;
+            }
+        }
+        if (found < 0 || R->nch >= NCH_MAX) {
+            hx_error(CMD, "--channels: '%s' is not one of ax, ay, az, gx, gy, gz", tok);
+            return -1;
+        }
+        for (i = 0; i < R->nch; i++) {
+            if (R->ch[i].src == found) {
+                hx_error(CMD, "--channels: '%s' given twice", tok);
+                return -1;
+            }
+        }
+        R->ch[R->nch].src = found;
+        R->ch[R->nch].name = k_ch[found].name;
+        R->ch[R->nch].label = k_ch[found].label;
+        R->ch[R->nch].unit = k_ch[found].gyro ? "deg/s" : "m/s^2";
+        R->ch[R->nch].scale = k_ch[found].gyro ? RAD2DEG : 1.0;
+        R->nch++;
+    }
+    return R->nch > 0 ? 0 : -1;
+}
+
+/* Returns 0 complete, 1 partial (error printed), -1 nothing usable. */
+static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_opt)
+{
+    hx_reader_t *r = hx_open_input(CMD, a, path);
+    fnav_sample_t s;
+    fnav_status_t st;
+    hx_progress_t pr;
+    int64_t t_prev = 0;
+    long irregular = 0;
+    int i, rc = 0;
+    if (r == NULL) {
+        return -1;
+    }
+    snprintf(R->sensor, sizeof R->sensor, "%s", hx_reader_meta(r)->sensor);
+    R->rate_hz = rate_opt > 0.0 ? rate_opt : hx_reader_meta(r)->rate_hz;
+    hx_progress_start(&pr, "allan: reading", 1.0);
+    while ((st = hx_reader_next(r, &s)) == FNAV_OK) {
+        if (R->n == UINT32_MAX) {
+            hx_warn(CMD, "stopping at 2^32 - 1 samples");
+            break;
+        }
+        if (R->rate_hz <= 0.0) {
+            /* rate from the time stamps: first interval, refined below */
+            const double rh = hx_reader_meta(r)->rate_hz;
+            if (rh > 0.0) {
+                R->rate_hz = rh;
+            } else if (R->n > 0 && s.t_ns > t_prev) {
+                R->rate_hz = 1e9 / (double)(s.t_ns - t_prev);
+            }
+        }
+        if (R->n > 0 && R->rate_hz > 0.0) {
+            const double dt = 1e-9 * (double)(s.t_ns - t_prev);
+            if (fabs(dt * R->rate_hz - 1.0) > 0.1) {
+                irregular++;
+            }
+        }
+        t_prev = s.t_ns;
+        for (i = 0; i < R->nch; i++) {
+            const int k = R->ch[i].src;
+            const double v = k < 3 ? (double)s.accel_mps2[k] : (double)s.gyro_rps[k - 3];
+            if (push_all(R, &R->ch[i], v) != 0) {
+                hx_error(CMD, "%s: sample %lu: channel %s is not finite", path, (unsigned long)R->n + 1u,
+                         R->ch[i].name);
+                rc = 1;
+                break;
+            }
+        }
+        if (rc != 0) {
+            break;
+        }
+        R->n++;
+        if ((R->n & 65535u) == 0u) {
+            hx_progress_update(&pr, hx_reader_progress(r));
+        }
+    }
+    hx_progress_end(&pr);
+    if (rc == 0 && st != FNAV_OK && st != FNAV_END) {
+        hx_error(CMD, "%s", hx_reader_error(r));
+        rc = 1;
+    }
+    if (irregular > 0) {
+        hx_warn(CMD, "%ld intervals differ from 1/rate by more than 10 %%: the Allan variance assumes uniform "
+                     "sampling",
+                irregular);
+    }
+    hx_reader_close(r);
+    if (R->rate_hz <= 0.0) {
+        hx_error(CMD, "%s: sample rate unknown; give --rate", path);
+        return -1;
+    }
+    return rc;
+}
+
+static int read_series(run_t *R, const char *path, int phase)
+{
+    FILE *f = fopen(path, "r");
+    char line[256];
+    long lineno = 0;
+    int data_lines = 0, rc = 0, have_prev = 0;
+    double prev = 0.0;
+    chan_t *ch = &R->ch[0];
+    if (f == NULL) {
+        hx_error(CMD, "%s: cannot open (%s)", path, strerror(errno));
+        return -1;
+    }
+    while (fgets(line, sizeof line, f) != NULL) {
+        char *p = line, *end;
+        double v;
+        lineno++;
+        while (*p == ' ' || *p == '\t') {
+            p++;
+        }
+        if (*p == '\0' || *p == '\n' || *p == '\r' || *p == '#') {
+            continue;
+        }
+        v = strtod(p, &end);
+        if (end == p) {
+            if (data_lines == 0) {
+                data_lines = -1; /* a header line before the numbers */
+                continue;
+            }
+            hx_error(CMD, "%s:%ld: not a number", path, lineno);
+            rc = 1;
+            break;
+        }
+        while (*end == ' ' || *end == '\t' || *end == ',' || *end == '\r' || *end == '\n') {
+            if (*end == ',') {
+                break;
+            }
+            end++;
+        }
+        if (*end != '\0') {
+            hx_error(CMD, "%s:%ld: expected one number per line", path, lineno);
+            rc = 1;
+            break;
+        }
+        if (!isfinite(v)) {
+            hx_error(CMD, "%s:%ld: not a finite number", path, lineno);
+            rc = 1;
+            break;
+        }
+        data_lines = 1;
+        if (phase) {
+            if (have_prev) {
+                if (push_all(R, ch, (v - prev) * R->rate_hz) != 0) {
+                    hx_error(CMD, "%s:%ld: difference not finite", path, lineno);
+                    rc = 1;
+                    break;
+                }
+                R->n++;
+            }
+            prev = v;
+            have_prev = 1;
+        } else {
+            if (push_all(R, ch, v) != 0) {
+                rc = 1;
+                break;
+            }
+            R->n++;
+        }
+    }
+    fclose(f);
+    if (R->n == 0) {
+        if (rc == 0) {
+            hx_error(CMD, "%s: no numbers", path);
+        }
+        return -1;
+    }
+    return rc;
+}
+
+/* ------------------------------------------------------------ analysis */
+
+static double tau_max_samples(const run_t *R)
+{
+    return R->tau_max_frac * (double)R->n;
+}
+
+static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
+{
+    size_t i;
+    hx_allan_fit_opts_t o = hx_allan_fit_opts_default;
+    collect(R, ch, ch->est, ch->res);
+    fnav_allan_slopes(ch->res, ch->nres, ch->slope);
+    for (i = 0; i < ch->nres; i++) {
+        const fnav_allan_result_t *r = &ch->res[i];
+        ch->noise[i] = fnav_allan_noise_from_slope(ch->slope[i]);
+        ch->edf[i] = hx_allan_point_edf(r, ch->noise[i], 1);
+        ch->edf_n[i] = hx_allan_point_edf(r, ch->noise[i], 0);
+        if (hx_allan_ci(sqrt((double)r->avar), ch->edf[i], R->conf, &ch->lo[i], &ch->hi[i]) != 0) {
+            ch->lo[i] = ch->hi[i] = (double)NAN;
+        }
+        if (hx_allan_ci(sqrt((double)r->avar_nonoverlap), ch->edf_n[i], R->conf, &ch->lo_n[i], &ch->hi_n[i]) != 0) {
+            ch->lo_n[i] = ch->hi_n[i] = (double)NAN;
+        }
+    }
+    o.with_quant = fit_extra;
+    o.with_rrw = fit_extra;
+    o.tau_max_s = tau_max_samples(R) / R->rate_hz;
+    ch->id_ok = hx_allan_identify(ch->res, ch->nres, R->rate_hz, &o, &ch->id) == 0;
+}
+
+/* Simulate a model through estimators with the same grid (Fig. 7 check). */
+static int simulate(run_t *R, chan_t *ch, const hx_noise_model_t *mdl, uint32_t nsim, unsigned long seed,
+                    fnav_allan_result_t *out, hx_progress_t *pr, double *done, double total)
+{
+    fnav_allan_t *est[NCHUNK_MAX];
+    hx_noise_sim_t s;
+    hx_noise_model_t m = *mdl;
+    uint32_t k;
+    int c, ok = 1;
+    memset(est, 0, sizeof est);
+    if (hx_noise_sim_init(&s, &m, R->rate_hz, seed) != 0) {
+        return -1;
+    }
+    for (c = 0; c < R->nchunk && ok; c++) {
+        est[c] = (fnav_allan_t *)malloc(sizeof(fnav_allan_t));
+        ok = est[c] != NULL && fnav_allan_init(est[c], &R->cfg[c]) == FNAV_OK;
+    }
+    for (k = 0; ok && k < nsim; k++) {
+        const fnav_real_t v = (fnav_real_t)hx_noise_sim_next(&s);
+        for (c = 0; c < R->nchunk; c++) {
+            if (fnav_allan_push(est[c], v) != FNAV_OK) {
+                ok = 0;
+            }
+        }
+        if ((k & 65535u) == 0u) {
+            hx_progress_update(pr, (*done + (double)k) / total);
+        }
+    }
+    *done += (double)nsim;
+    if (ok) {
+        const double keep = ch->scale;
+        ch->scale = 1.0; /* already in display units */
+        collect(R, ch, est, out);
+        ch->scale = keep;
+    }
+    for (c = 0; c < R->nchunk; c++) {
+        free(est[c]);
+    }
+    hx_noise_sim_free(&s);
+    return ok ? 0 : -1;
+}
+
+/* ------------------------------------------------------------ output */
+
+static const char *fmt_g(char *b, size_t n, double v)
+{
+    return hx_fmt_g(b, n, v);
+}
+
+static int in_range(const run_t *R, const fnav_allan_result_t *r)
+{
+    return r->terms > 0u && (double)r->tau <= tau_max_samples(R) * (1.0 + 1e-9);
+}
+
+static void print_regions(const run_t *R, const chan_t *ch)
+{
+    size_t i = 0;
+    printf("  noise types:");
+    while (i < ch->nres) {
+        size_t j = i;
+        if (!in_range(R, &ch->res[i]) || ch->noise[i] == FNAV_ALLAN_NOISE_UNKNOWN) {
+            i++;
+            continue;
+        }
+        while (j + 1 < ch->nres && in_range(R, &ch->res[j + 1]) && ch->noise[j + 1] == ch->noise[i]) {
+            j++;
+        }
+        printf(" %s %.3g-%.3g s;", fnav_allan_noise_name(ch->noise[i]), (double)ch->res[i].tau / R->rate_hz,
+               (double)ch->res[j].tau / R->rate_hz);
+        i = j + 1;
+    }
+    printf("\n");
+}
+
+static void print_table(const run_t *R, const chan_t *ch)
+{
+    size_t i;
+    char b1[32], b2[32], b3[32], b4[32];
+    printf("\n%s [%s], %lu samples at %g Hz (octave tau shown; every tau in --out)\n", ch->label, ch->unit,
+           (unsigned long)R->n, R->rate_hz);
+    printf("  %10s %9s %12s %12s %12s %9s %12s %8s %6s  %s\n", "tau_s", "m", "oadev", "ci_lo", "ci_hi", "terms",
+           "adev", "terms_n", "slope", "noise");
+    for (i = 0; i < ch->nres; i++) {
+        const fnav_allan_result_t *r = &ch->res[i];
+        if (!in_range(R, r) || (r->tau & (r->tau - 1u)) != 0u) {
+            continue;
+        }
+        printf("  %10.4g %9lu %12s %12s %12s %9lu %12s %8lu %6.2f  %s\n", (double)r->tau / R->rate_hz,
+               (unsigned long)r->tau, fmt_g(b1, sizeof b1, sqrt((double)r->avar)), fmt_g(b2, sizeof b2, ch->lo[i]),
+               fmt_g(b3, sizeof b3, ch->hi[i]), (unsigned long)r->terms,
+               fmt_g(b4, sizeof b4, sqrt((double)r->avar_nonoverlap)), (unsigned long)r->terms_nonoverlap,
+               (double)ch->slope[i], fnav_allan_noise_name(ch->noise[i]));
+    }
+    print_regions(R, ch);
+}
+
+static void print_params(const run_t *R)
+{
+    int i;
+    printf("\nBias model, units of the paper's Tables IV-VI (sigma_v in unit/sqrt(Hz), tau in samples at %g Hz,\n"
+           "sigma_bias in unit; quality: RMS of log10 ADEV model/measured over tau <= %.3g s, and model/measured\n"
+           "at the measured minimum):\n",
+           R->rate_hz, tau_max_samples(R) / R->rate_hz);
+    printf("%-6s %-6s | %-54s | %-54s\n", "", "", "paper III.C as written (eqs. 5-6, sigma_bias per eq. 4)",
+           "corrected: LSQ fit of white + AR(1) Allan variance");
+    printf("%-6s %-6s | %10s %9s %10s %10s %5s %6s | %10s %9s %10s %10s %5s %6s\n", "chan", "unit", "sigma_v", "tau",
+           "sigma_bias", "BS", "rms", "@min", "sigma_v", "tau", "sigma_bias", "peak", "rms", "@min");
+    for (i = 0; i < R->nch; i++) {
+        const chan_t *ch = &R->ch[i];
+        const hx_allan_ident_t *id = &ch->id;
+        printf("%-6s %-6s |", ch->label, ch->unit);
+        if (ch->id_ok && id->paper_ok) {
+            printf(" %10.3g %9.0f %10.3g %10.3g %5.2f %6.3f |", (double)id->paper.sigma_v,
+                   (double)id->paper.tau_samples, (double)id->paper.sigma_bias, (double)id->paper.bs,
+                   id->paper_quality.rms_log10, id->paper_quality.ratio_at_min);
+        } else {
+            printf(" %-54s |", "n/a (1 s or the minimum not covered)");
+        }
+        if (ch->id_ok && id->fit_ok) {
+            /* ADEV peak of the AR(1) alone (hx_allan_ident.h) */
+            printf(" %10.3g %9.0f %10.3g %10.3g %5.2f %6.3f", id->fit.white, id->fit.gm_tau_s * R->rate_hz,
+                   id->fit.gm_sigma, HX_GM_PEAK_RATIO * id->fit.gm_sigma, id->fit_quality.rms_log10,
+                   id->fit_quality.ratio_at_min);
+            if (id->fit.quant > 0.0 || id->fit.rrw > 0.0) {
+                printf("  Q %.3g K %.3g", id->fit.quant, id->fit.rrw);
+            }
+            printf("\n");
+        } else {
+            printf(" n/a (fit failed)\n");
+        }
+    }
+    printf("\nOther readings of the paper's parameters (RMS log10 ADEV model/measured; model/measured at the minimum):\n"
+           "  drive:  sigma_bias taken as the std of the driving noise n_k (the Fig. 7 text), stationary std\n"
+           "          sigma_bias / sqrt(1 - c^2)\n"
+           "  sample: eq. (4) as above, but sigma_v drawn as the per-sample std (density sigma_v / sqrt(f_s))\n");
+    printf("%-6s | %12s %8s | %12s %8s\n", "chan", "drive rms", "@min", "sample rms", "@min");
+    for (i = 0; i < R->nch; i++) {
+        const chan_t *ch = &R->ch[i];
+        if (ch->id_ok && ch->id.paper_ok) {
+            printf("%-6s | %12.2f %8.3f | %12.2f %8.3f\n", ch->label, ch->id.paper_drive_quality.rms_log10,
+                   ch->id.paper_drive_quality.ratio_at_min, ch->id.paper_sample_quality.rms_log10,
+                   ch->id.paper_sample_quality.ratio_at_min);
+        }
+    }
+}
+
+static int write_csv(const run_t *R, const char *path)
+{
+    FILE *f = fopen(path, "w");
+    int i;
+    size_t k;
+    char b[16][32];
+    if (f == NULL) {
+        hx_error(CMD, "%s: cannot create (%s)", path, strerror(errno));
+        return -1;
+    }
+    fprintf(f, "# harness allan: %s, %lu samples at %g Hz; ADEV in the channel's unit; CI at %g confidence "
+               "(Greenhall EDF)\n",
+            R->source, (unsigned long)R->n, R->rate_hz, R->conf);
+    fprintf(f, "channel,unit,tau_s,m,level,stride,oadev,oadev_lo,oadev_hi,edf,terms,adev,adev_lo,adev_hi,edf_n,"
+               "terms_n,slope,noise,sim_paper,sim_fit,model_paper,model_fit\n");
+    for (i = 0; i < R->nch; i++) {
+        const chan_t *ch = &R->ch[i];
+        for (k = 0; k < ch->nres; k++) {
+            const fnav_allan_result_t *r = &ch->res[k];
+            double mp = (double)NAN, mf = (double)NAN;
+            if (r->terms == 0u) {
+                continue;
+            }
+            if (ch->id_ok && ch->id.paper_ok) {
+                mp = sqrt(hx_noise_model_avar(&ch->id.paper_model, R->rate_hz, (double)r->tau));
+            }
+            if (ch->id_ok && ch->id.fit_ok) {
+                mf = sqrt(hx_noise_model_avar(&ch->id.fit, R->rate_hz, (double)r->tau));
+            }
+            fprintf(f, "%s,%s,%s,%lu,%lu,%lu,%s,%s,%s,%s,%lu,%s,%s,%s,%s,%lu,%s,%s,%s,%s,%s,%s\n", ch->name, ch->unit,
+                    fmt_g(b[0], 32, (double)r->tau / R->rate_hz), (unsigned long)r->tau, (unsigned long)r->level,
+                    (unsigned long)r->stride, fmt_g(b[1], 32, sqrt((double)r->avar)), fmt_g(b[2], 32, ch->lo[k]),
+                    fmt_g(b[3], 32, ch->hi[k]), fmt_g(b[4], 32, ch->edf[k]), (unsigned long)r->terms,
+                    fmt_g(b[5], 32, sqrt((double)r->avar_nonoverlap)), fmt_g(b[6], 32, ch->lo_n[k]),
+                    fmt_g(b[7], 32, ch->hi_n[k]), fmt_g(b[8], 32, ch->edf_n[k]), (unsigned long)r->terms_nonoverlap,
+                    fmt_g(b[9], 32, (double)ch->slope[k]), fnav_allan_noise_name(ch->noise[k]),
+                    fmt_g(b[10], 32, ch->have_sim_paper ? sqrt((double)ch->sim_paper[k].avar) : (double)NAN),
+                    fmt_g(b[11], 32, ch->have_sim_fit ? sqrt((double)ch->sim_fit[k].avar) : (double)NAN),
+                    fmt_g(b[12], 32, mp), fmt_g(b[13], 32, mf));
+        }
+    }
+    if (fclose(f) != 0) {
+        hx_error(CMD, "%s: write failed", path);
+        return -1;
+    }
+    return 0;
+}
+
+static void json_num(cJSON *o, const char *k, double v)
+{
+    if (isfinite(v)) {
+        cJSON_AddNumberToObject(o, k, v);
+    } else {
+        cJSON_AddNullToObject(o, k);
+    }
+}
+
+static void json_model(cJSON *o, const hx_noise_model_t *m, double fs)
+{
+    json_num(o, "sigma_v", m->white);
+    json_num(o, "tau_samples", m->gm_tau_s * fs);
+    json_num(o, "tau_s", m->gm_tau_s);
+    json_num(o, "sigma_bias", m->gm_sigma);
+    json_num(o, "quant", m->quant);
+    json_num(o, "rrw", m->rrw);
+}
+
+static void json_quality(cJSON *o, const hx_allan_quality_t *q)
+{
+    cJSON *j = cJSON_AddObjectToObject(o, "quality");
+    json_num(j, "rms_log10", q->rms_log10);
+    json_num(j, "max_ratio", q->max_ratio);
+    json_num(j, "ratio_at_min", q->ratio_at_min);
+    cJSON_AddNumberToObject(j, "points", q->npoints);
+}
+
+static int write_json(const run_t *R, const char *path)
+{
+    cJSON *root = cJSON_CreateObject(), *arr;
+    char *txt;
+    FILE *f;
+    int i;
+    size_t k;
+    cJSON_AddStringToObject(root, "source", R->source);
+    cJSON_AddStringToObject(root, "sensor", R->sensor);
+    cJSON_AddNumberToObject(root, "rate_hz", R->rate_hz);
+    cJSON_AddNumberToObject(root, "samples", (double)R->n);
+    cJSON_AddNumberToObject(root, "tau_max_s", tau_max_samples(R) / R->rate_hz);
+    cJSON_AddNumberToObject(root, "confidence", R->conf);
+    cJSON_AddNumberToObject(root, "estimator_bytes_per_channel", (double)sizeof(fnav_allan_t));
+    arr = cJSON_AddArrayToObject(root, "channels");
+    for (i = 0; i < R->nch; i++) {
+        const chan_t *ch = &R->ch[i];
+        cJSON *c = cJSON_CreateObject(), *t, *p;
+        cJSON_AddStringToObject(c, "name", ch->name);
+        cJSON_AddStringToObject(c, "unit", ch->unit);
+        p = cJSON_AddObjectToObject(c, "paper");
+        if (ch->id_ok && ch->id.paper_ok) {
+            json_num(p, "sigma_v", (double)ch->id.paper.sigma_v);
+            json_num(p, "bs", (double)ch->id.paper.bs);
+            json_num(p, "t_bs_s", (double)ch->id.paper.t_bs_s);
+            json_num(p, "tau_samples", (double)ch->id.paper.tau_samples);
+            json_num(p, "sigma_bias", (double)ch->id.paper.sigma_bias);
+            json_quality(p, &ch->id.paper_quality);
+            {
+                cJSON *rd = cJSON_AddObjectToObject(p, "reading_drive");
+                json_model(rd, &ch->id.paper_drive_model, R->rate_hz);
+                json_quality(rd, &ch->id.paper_drive_quality);
+                rd = cJSON_AddObjectToObject(p, "reading_sample");
+                json_quality(rd, &ch->id.paper_sample_quality);
+            }
+        }
+        p = cJSON_AddObjectToObject(c, "corrected");
+        if (ch->id_ok && ch->id.fit_ok) {
+            json_model(p, &ch->id.fit, R->rate_hz);
+            json_num(p, "gm_adev_peak", HX_GM_PEAK_RATIO * ch->id.fit.gm_sigma);
+            json_quality(p, &ch->id.fit_quality);
+        }
+        t = cJSON_AddArrayToObject(c, "table");
+        for (k = 0; k < ch->nres; k++) {
+            const fnav_allan_result_t *r = &ch->res[k];
+            cJSON *e;
+            if (r->terms == 0u) {
+                continue;
+            }
+            e = cJSON_CreateObject();
+            json_num(e, "tau_s", (double)r->tau / R->rate_hz);
+            cJSON_AddNumberToObject(e, "m", (double)r->tau);
+            cJSON_AddNumberToObject(e, "stride", (double)r->stride);
+            json_num(e, "oadev", sqrt((double)r->avar));
+            json_num(e, "lo", ch->lo[k]);
+            json_num(e, "hi", ch->hi[k]);
+            json_num(e, "edf", ch->edf[k]);
+            cJSON_AddNumberToObject(e, "terms", (double)r->terms);
+            json_num(e, "adev", sqrt((double)r->avar_nonoverlap));
+            cJSON_AddNumberToObject(e, "terms_n", (double)r->terms_nonoverlap);
+            json_num(e, "slope", (double)ch->slope[k]);
+            cJSON_AddStringToObject(e, "noise", fnav_allan_noise_name(ch->noise[k]));
+            if (ch->have_sim_paper) {
+                json_num(e, "sim_paper", sqrt((double)ch->sim_paper[k].avar));
+            }
+            if (ch->have_sim_fit) {
+                json_num(e, "sim_fit", sqrt((double)ch->sim_fit[k].avar));
+            }
+            cJSON_AddItemToArray(t, e);
+        }
+        cJSON_AddItemToArray(arr, c);
+    }
+    txt = cJSON_Print(root);
+    cJSON_Delete(root);
+    f = fopen(path, "w");
+    if (f == NULL || txt == NULL) {
+        hx_error(CMD, "%s: cannot create (%s)", path, strerror(errno));
+        free(txt);
+        if (f != NULL) {
+            fclose(f);
+        }
+        return -1;
+    }
+    fprintf(f, "%s\n", txt);
+    free(txt);
+    if (fclose(f) != 0) {
+        hx_error(CMD, "%s: write failed", path);
+        return -1;
+    }
+    return 0;
+}
+
+/* Writes a datablock; returns the number of points (log axes: positive only). */
+static int plot_block(FILE *gp, const char *name, const run_t *R, const chan_t *ch, int what)
+{
+    size_t k;
+    int np = 0;
+    fprintf(gp, "$%s << EOD\n", name);
+    for (k = 0; k < ch->nres; k++) {
+        const fnav_allan_result_t *r = &ch->res[k];
+        const double t = (double)r->tau / R->rate_hz;
+        if (!in_range(R, r)) {
+            continue;
+        }
+        if (what == 0) {
+            if (isfinite(ch->lo[k]) && ch->lo[k] > 0.0 && (double)r->avar > 0.0) {
+                fprintf(gp, "%.6g %.6g %.6g %.6g\n", t, sqrt((double)r->avar), ch->lo[k], ch->hi[k]);
+                np++;
+            }
+        } else if (what == 1 && ch->have_sim_paper && ch->sim_paper[k].terms > 0u &&
+                   (double)ch->sim_paper[k].avar > 0.0) {
+            fprintf(gp, "%.6g %.6g\n", t, sqrt((double)ch->sim_paper[k].avar));
+            np++;
+        } else if (what == 2 && ch->have_sim_fit && ch->sim_fit[k].terms > 0u && (double)ch->sim_fit[k].avar > 0.0) {
+            fprintf(gp, "%.6g %.6g\n", t, sqrt((double)ch->sim_fit[k].avar));
+            np++;
+        } else if (what == 3 && ch->id_ok && ch->id.fit_ok) {
+            fprintf(gp, "%.6g %.6g\n", t, sqrt(hx_noise_model_avar(&ch->id.fit, R->rate_hz, (double)r->tau)));
+            np++;
+        }
+    }
+    fprintf(gp, "EOD\n");
+    return np;
+}
+
+static int write_plot(const run_t *R, const char *path)
+{
+    hx_plot_t p;
+    int i, cols = R->nch > 3 ? 3 : R->nch, rows = (R->nch + 2) / 3;
+    if (hx_plot_open(&p, CMD, path, 520 * cols, 420 * rows) != 0) {
+        return -1;
+    }
+    fprintf(p.gp, "set multiplot layout %d,%d title 'Allan deviation: %s (%g Hz, %lu samples)'\n", rows, cols,
+            R->source, R->rate_hz, (unsigned long)R->n);
+    fprintf(p.gp, "set logscale xy\nset format y '%%.0e'\nset key bottom left font ',8'\nset xlabel 'tau [s]'\n");
+    for (i = 0; i < R->nch; i++) {
+        const chan_t *ch = &R->ch[i];
+        const int nm = plot_block(p.gp, "m", R, ch, 0);
+        const int nsp = plot_block(p.gp, "sp", R, ch, 1);
+        const int nsf = plot_block(p.gp, "sf", R, ch, 2);
+        const int naf = plot_block(p.gp, "af", R, ch, 3);
+        fprintf(p.gp, "set title '%s'\nset ylabel 'ADEV [%s]'\n", ch->label, ch->unit);
+        if (nm == 0) {
+            /* nothing positive to draw on log axes: an empty panel that says so */
+            fprintf(p.gp, "set label 1 'not enough data' at graph 0.5,0.5 center\nset xrange [0.01:1]\n"
+                          "set yrange [0.01:1]\nplot 10 notitle\nunset label 1\nset autoscale\n");
+            continue;
+        }
+        fprintf(p.gp, "plot $m using 1:2:3:4 with yerrorbars pt 7 ps 0.5 lc rgb '#c00000' title 'measured (OADEV, "
+                      "%.3g CI)'",
+                R->conf);
+        if (nsp > 0) {
+            fprintf(p.gp, ", $sp using 1:2 with linespoints lw 1.5 pt 6 ps 0.5 lc rgb '#0050c0' title 'simulated, "
+                          "paper id.'");
+        }
+        if (nsf > 0) {
+            fprintf(p.gp, ", $sf using 1:2 with linespoints lw 1.5 pt 4 ps 0.5 lc rgb '#008000' title 'simulated, "
+                          "corrected id.'");
+        }
+        if (naf > 0) {
+            fprintf(p.gp, ", $af using 1:2 with lines dt 2 lc rgb '#404040' title 'corrected model (analytic)'");
+        }
+        fprintf(p.gp, "\n");
+    }
+    fprintf(p.gp, "unset multiplot\n");
+    return hx_plot_close(&p, CMD);
+}
+
+static void base_name(const char *path, char *out, size_t n)
+{
+    const char *s = strrchr(path, '/');
+    char *dot;
+    snprintf(out, n, "%s", s != NULL ? s + 1 : path);
+    dot = strchr(out, '.');
+    if (dot != NULL) {
+        *dot = '\0';
+    }
+}
+
+static int write_profile(const run_t *R, const char *path, const char *name)
+{
+    fnav_profile_t p;
+    char err[320], comment[1024], extra[2048];
+    size_t len = 0;
+    int i, have_q = 0, have_k = 0;
+    double q[6], kk[6], pv[6], pt[6], ps[6], rms[6];
+    memset(&p, 0, sizeof p);
+    snprintf(p.name, sizeof p.name, "%s", name);
+    p.rate_hz = (fnav_real_t)R->rate_hz;
+    for (i = 0; i < 6; i++) {
+        const chan_t *ch = &R->ch[i];
+        const double si = 1.0 / ch->scale; /* display -> SI */
+        const int k = ch->src;
+        if (!ch->id_ok || !ch->id.fit_ok) {
+            hx_error(CMD, "%s: no corrected identification for %s (too little data?); profile not written", path,
+                     ch->name);
+            return -2;
+        }
+        if (k < 3) {
+            p.accel_noise_mps2_rthz[k] = (fnav_real_t)(ch->id.fit.white * si);
+            p.accel_tau_s[k] = (fnav_real_t)ch->id.fit.gm_tau_s;
+            p.accel_bias_sigma_mps2[k] = (fnav_real_t)(ch->id.fit.gm_sigma * si);
+        } else {
+            p.gyro_noise_rps_rthz[k - 3] = (fnav_real_t)(ch->id.fit.white * si);
+            p.gyro_tau_s[k - 3] = (fnav_real_t)ch->id.fit.gm_tau_s;
+            p.gyro_bias_sigma_rps[k - 3] = (fnav_real_t)(ch->id.fit.gm_sigma * si);
+        }
+        q[k] = ch->id.fit.quant * si;
+        kk[k] = ch->id.fit.rrw * si;
+        have_q |= ch->id.fit.quant > 0.0;
+        have_k |= ch->id.fit.rrw > 0.0;
+        pv[k] = ch->id.paper_ok ? (double)ch->id.paper.sigma_v * si : (double)NAN;
+        pt[k] = ch->id.paper_ok ? (double)ch->id.paper.tau_samples / R->rate_hz : (double)NAN;
+        ps[k] = ch->id.paper_ok ? (double)ch->id.paper.sigma_bias * si : (double)NAN;
+        rms[k] = ch->id.fit_quality.rms_log10;
+    }
+    if (fnav_profile_validate(&p) != FNAV_OK) {
+        hx_error(CMD, "%s: identified parameters not all positive and finite; profile not written", path);
+        return -2;
+    }
+    snprintf(comment, sizeof comment,
+             "identified by `harness allan` from %s (%lu samples at %g Hz)\n"
+             "method: weighted least-squares fit of the white + AR(1) Allan variance (docs/allan.md);\n"
+             "the paper's own identification (eqs. 5-6) is kept below as paper_* keys for reference",
+             R->source, (unsigned long)R->n, R->rate_hz);
+#define ADD3(key, v, o)                                                                                   \
+    len += (size_t)snprintf(extra + len, sizeof extra - len, "%s = %.6g %.6g %.6g\n", key, (v)[(o) + 0], \
+                            (v)[(o) + 1], (v)[(o) + 2])
+    len += (size_t)snprintf(extra + len, sizeof extra - len, "ident_method = allan-lsq-white-ar1%s\n",
+                            (have_q || have_k) ? "-quant-rrw" : "");
+    len += (size_t)snprintf(extra + len, sizeof extra - len, "ident_samples = %lu\n", (unsigned long)R->n);
+    if (have_q) {
+        ADD3("accel_quant_mps", q, 0);
+        ADD3("gyro_quant_rad", q, 3);
+    }
+    if (have_k) {
+        ADD3("accel_rrw_mps2_rts", kk, 0);
+        ADD3("gyro_rrw_rps_rts", kk, 3);
+    }
+    ADD3("allan_fit_rms_log10_accel", rms, 0);
+    ADD3("allan_fit_rms_log10_gyro", rms, 3);
+    ADD3("paper_accel_noise_mps2_rthz", pv, 0);
+    ADD3("paper_accel_tau_s", pt, 0);
+    ADD3("paper_accel_bias_sigma_mps2", ps, 0);
+    ADD3("paper_gyro_noise_rps_rthz", pv, 3);
+    ADD3("paper_gyro_tau_s", pt, 3);
+    ADD3("paper_gyro_bias_sigma_rps", ps, 3);
+#undef ADD3
+    if (hx_profile_write_extra(path, &p, comment, extra, err, sizeof err) != 0) {
+        hx_error(CMD, "%s", err);
+        return -1;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------ paper tables */
+
+/* The paper's Tables IV-VI read back through eqs. (4)-(6): the bias
+ * stability each row implies (BS = sigma_bias sqrt(tau), eq. 6), and where
+ * the model's Allan deviation puts it (docs/allan.md). */
+static int paper_tables(void)
+{
+    static const char *const names[3] = { "NavChip (IV)", "MTx (V)", "Shimmer (VI)" };
+    static const char *const rows[6] = { "Acc x", "Acc y", "Acc z", "Gyr x", "Gyr y", "Gyr z" };
+    const double fs = 200.0;
+    int t, k;
+    printf("The paper's Tables IV-VI (200 Hz) read through its own equations. BS = sigma_bias sqrt(tau) (eq. 6\n"
+           "inverted) is the measured bias stability each row encodes, at t_BS = tau / f_s (eq. 5).\n"
+           "  white@t_BS  ADEV of the white part alone at t_BS, sigma_v / sqrt(t_BS)\n"
+           "  model/BS    ADEV of the paper's model (white + AR(1) with stationary std sigma_bias, eq. 4) at t_BS\n"
+           "  peak/BS     ADEV peak of that AR(1) (%.4f sigma_bias at %.2f t_BS) over BS = %.4f / sqrt(tau)\n"
+           "  drive/BS    the same peak if sigma_bias were the std of the driving noise n_k\n"
+           "  (if sigma_v were drawn as the per-sample std, the white ADEV at 1 s would be sigma_v / sqrt(200) =\n"
+           "   %.4f sigma_v instead of sigma_v)\n\n",
+           HX_GM_PEAK_RATIO, HX_GM_PEAK_TAU, HX_GM_PEAK_RATIO, 1.0 / sqrt(fs));
+    printf("%-13s %-6s %9s %7s %10s %10s %7s %10s %8s %8s %8s\n", "table", "row", "sigma_v", "tau", "sigma_bias", "BS",
+           "t_BS_s", "white@tBS", "model/BS", "peak/BS", "drive/BS");
+    for (t = 0; t < FNAV_PROFILE_COUNT; t++) {
+        const fnav_profile_paper_row_t *row = fnav_profile_paper_table((fnav_profile_id_t)t);
+        for (k = 0; k < 6; k++) {
+            const double tau = row[k].tau_samples, sb = row[k].sigma_bias, sv = row[k].noise;
+            const double bs = sb * sqrt(tau), tbs = tau / fs;
+            fnav_allan_paper_id_t id;
+            hx_noise_model_t m4, md;
+            double model_at;
+            memset(&id, 0, sizeof id);
+            id.sigma_v = (fnav_real_t)sv;
+            id.sigma_bias = (fnav_real_t)sb;
+            id.tau_samples = (fnav_real_t)tau;
+            hx_noise_model_paper_reading(&id, fs, HX_PAPER_EQ4, &m4);
+            hx_noise_model_paper_reading(&id, fs, HX_PAPER_DRIVE, &md);
+            model_at = sqrt(hx_noise_model_avar(&m4, fs, tau));
+            printf("%-13s %-6s %9.2g %7.0f %10.2g %10.3g %7.1f %10.3g %8.3f %8.4f %8.3f\n", k == 0 ? names[t] : "",
+                   rows[k], sv, tau, sb, bs, tbs, sv / sqrt(tbs), model_at / bs, HX_GM_PEAK_RATIO * sb / bs,
+                   HX_GM_PEAK_RATIO * md.gm_sigma / bs);
+        }
+    }
+    return HX_EXIT_OK;
+}
+
+/* ------------------------------------------------------------ main */
 
 int hx_cmd_allan(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    fprintf(stderr, "harness allan: not available yet (planned in issue #4, sensor analysis)\n");
-    return HX_EXIT_UNAVAIL;
+    hx_args_t a;
+    run_t *R;
+    int rc, i, exit_code = HX_EXIT_OK, input_rc;
+    double rate_opt = 0.0, seed_d = 1.0, nsim_d = 0.0;
+    long per_octave = 4;
+    const char *series, *path;
+    char name[FNAV_PROFILE_NAME_MAX];
+
+    rc = hx_args_parse(&k_spec, argc, argv, &a);
+    if (rc != 0) {
+        return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
+    }
+    series = hx_arg(&a, "--series");
+    if (hx_flag(&a, "--paper-tables")) {
+        if (series != NULL || a.npos > 0) {
+            hx_error(CMD, "--paper-tables takes no input");
+            return HX_EXIT_USAGE;
+        }
+        return paper_tables();
+    }
+    if ((series == NULL) == (a.npos == 0)) {
+        hx_error(CMD, series == NULL ? "give a LOG or --series FILE" : "give either a LOG or --series, not both");
+        hx_usage(&k_spec, stderr);
+        return HX_EXIT_USAGE;
+    }
+    R = (run_t *)calloc(1, sizeof *R);
+    if (R == NULL) {
+        hx_error(CMD, "out of memory");
+        return HX_EXIT_IO;
+    }
+    R->tau_max_frac = 0.1;
+    R->conf = 0.683;
+    if (hx_arg_double(&a, "--rate", 1e-9, 1e9, &rate_opt) != 0 || hx_arg_long(&a, "--per-octave", 1, 4, &per_octave) != 0 ||
+        hx_arg_double(&a, "--max-tau-frac", 1e-6, 0.5, &R->tau_max_frac) != 0 ||
+        hx_arg_double(&a, "--seed", 0.0, 4294967295.0, &seed_d) != 0 ||
+        hx_arg_double(&a, "--sim-samples", 16.0, 4294967295.0, &nsim_d) != 0 ||
+        hx_arg_double(&a, "--conf", 0.01, 0.999, &R->conf) != 0) {
+        free(R);
+        return HX_EXIT_USAGE;
+    }
+    if (per_octave == 3) {
+        hx_error(CMD, "--per-octave must be 1, 2 or 4");
+        free(R);
+        return HX_EXIT_USAGE;
+    }
+    if (series != NULL && hx_arg(&a, "--profile") != NULL) {
+        hx_error(CMD, "--profile needs a six-channel log, not a --series");
+        free(R);
+        return HX_EXIT_USAGE;
+    }
+    if (series != NULL && !(rate_opt > 0.0)) {
+        hx_error(CMD, "--series needs --rate HZ");
+        free(R);
+        return HX_EXIT_USAGE;
+    }
+    if (series == NULL && hx_flag(&a, "--phase")) {
+        hx_error(CMD, "--phase applies to --series only");
+        free(R);
+        return HX_EXIT_USAGE;
+    }
+    setup_grid(R, per_octave);
+    if (series != NULL) {
+        R->nch = 1;
+        R->ch[0].src = -1;
+        R->ch[0].name = "series";
+        R->ch[0].label = "series";
+        R->ch[0].unit = hx_arg(&a, "--unit") != NULL ? hx_arg(&a, "--unit") : "u";
+        R->ch[0].scale = 1.0;
+        R->is_series = 1;
+        R->rate_hz = rate_opt;
+        path = series;
+        snprintf(R->sensor, sizeof R->sensor, "series");
+    } else {
+        path = a.pos[0];
+        if (parse_channels(R, hx_arg(&a, "--channels")) != 0) {
+            free(R);
+            return HX_EXIT_USAGE;
+        }
+        if (hx_arg(&a, "--profile") != NULL && R->nch != 6) {
+            hx_error(CMD, "--profile needs all six channels");
+            free(R);
+            return HX_EXIT_USAGE;
+        }
+    }
+    R->source = path;
+    for (i = 0; i < R->nch; i++) {
+        if (alloc_channel(R, &R->ch[i]) != 0) {
+            hx_error(CMD, "out of memory");
+            free_run(R);
+            free(R);
+            return HX_EXIT_IO;
+        }
+    }
+    input_rc = series != NULL ? read_series(R, path, hx_flag(&a, "--phase")) : read_log(R, &a, path, rate_opt);
+    if (input_rc < 0 || R->n < 2u) {
+        if (input_rc >= 0) {
+            hx_error(CMD, "%s: fewer than 2 samples", path);
+        }
+        free_run(R);
+        free(R);
+        return HX_EXIT_DATA;
+    }
+    if (input_rc > 0) {
+        hx_warn(CMD, "analysing the %lu samples before the error", (unsigned long)R->n);
+        exit_code = HX_EXIT_DATA;
+    }
+
+    for (i = 0; i < R->nch; i++) {
+        analyse_channel(R, &R->ch[i], hx_flag(&a, "--fit-extra"));
+    }
+    if (!hx_flag(&a, "--no-sim")) {
+        const uint32_t nsim = nsim_d > 0.0 ? (uint32_t)nsim_d : R->n;
+        hx_progress_t pr;
+        double done = 0.0, total = 2.0 * (double)nsim * (double)R->nch;
+        hx_progress_start(&pr, "allan: simulating (Fig. 7 check)", 1.0);
+        for (i = 0; i < R->nch; i++) {
+            chan_t *ch = &R->ch[i];
+            const unsigned long seed = (unsigned long)seed_d + 1000ul * (unsigned long)i;
+            if (ch->id_ok && ch->id.paper_ok) {
+                ch->have_sim_paper =
+                    simulate(R, ch, &ch->id.paper_model, nsim, seed, ch->sim_paper, &pr, &done, total) == 0;
+            }
+            if (ch->id_ok && ch->id.fit_ok) {
+                ch->have_sim_fit = simulate(R, ch, &ch->id.fit, nsim, seed + 1u, ch->sim_fit, &pr, &done, total) == 0;
+            }
+        }
+        hx_progress_end(&pr);
+    }
+
+    if (!hx_flag(&a, "--quiet")) {
+        printf("harness allan: %s (%s), %lu samples at %g Hz, %d tau points, estimator %lu bytes per channel\n",
+               R->source, R->sensor, (unsigned long)R->n, R->rate_hz, (int)R->ngrid,
+               (unsigned long)(sizeof(fnav_allan_t) * (size_t)R->nchunk));
+        for (i = 0; i < R->nch; i++) {
+            print_table(R, &R->ch[i]);
+        }
+    }
+    print_params(R);
+
+    if (hx_arg(&a, "--out") != NULL && write_csv(R, hx_arg(&a, "--out")) != 0) {
+        exit_code = HX_EXIT_IO;
+    }
+    if (hx_arg(&a, "--json") != NULL && write_json(R, hx_arg(&a, "--json")) != 0) {
+        exit_code = HX_EXIT_IO;
+    }
+    if (hx_arg(&a, "--plot") != NULL && write_plot(R, hx_arg(&a, "--plot")) != 0) {
+        exit_code = HX_EXIT_IO;
+    }
+    if (hx_arg(&a, "--profile") != NULL) {
+        if (hx_arg(&a, "--name") != NULL) {
+            snprintf(name, sizeof name, "%s", hx_arg(&a, "--name"));
+        } else {
+            base_name(path, name, sizeof name);
+        }
+        rc = write_profile(R, hx_arg(&a, "--profile"), name);
+        if (rc != 0 && exit_code == HX_EXIT_OK) {
+            exit_code = rc == -2 ? HX_EXIT_DATA : HX_EXIT_IO;
+        }
+    }
+    free_run(R);
+    free(R);
+    return exit_code;
 }

@@ -1,14 +1,641 @@
-/* harness psd: placeholder until the sensor analysis issue (#4) lands. */
+/* harness psd: streaming Welch PSD of every channel of a log and the paper's
+ * lowest usable sampling frequency (section II.B), with the sensitivity to
+ * segment length and DC handling, and the plots of the paper's Figs. 3, 4
+ * and 6 (docs/psd.md). */
+#include <cjson/cJSON.h>
+#include <errno.h>
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
+#include "footnav/fnav_welch.h"
 #include "hx_cli.h"
 #include "hx_commands.h"
 
+#define CMD "psd"
+#define NSENS_NFFT 5
+#define NDC 5
+
+static const hx_opt_t k_opts[] = {
+    HX_INPUT_OPTS,
+    { "--nfft", "N", "Welch segment length, a power of two (default 64, the paper's)", 0 },
+    { "--overlap", "N", "samples shared by consecutive segments (default nfft/2, the paper's 50 %)", 0 },
+    { "--window", "NAME", "hamming (default, the paper's), hann or rect", 0 },
+    { "--symmetric", NULL, "symmetric window (MATLAB's hamming(N)) instead of the periodic one (scipy's)", 0 },
+    { "--dc", "MODE", "DC / gravity handling: segment (default: each segment's mean, scipy's default), "
+                      "linear, global (the record's mean), none, exclude (none, and the DC bin left out "
+                      "of the total)", 0 },
+    { "--threshold", "F", "fraction of the total power the band must hold (default 0.95)", 0 },
+    { "--round", "HZ", "round the sampling frequency up to a multiple of this (default 50)", 0 },
+    { "--sensitivity", NULL, "also tabulate the answer for segments of 64..1024 samples x every DC mode", 0 },
+    { "--spec-nfft", "N", "spectrogram segment length (default 256)", 0 },
+    { "--spec-axis", "CH", "spectrogram channel: ax..gz (default: the accelerometer axis along gravity)", 0 },
+    { "--out", "FILE", "PSD and CCDF of every axis (CSV)", 0 },
+    { "--json", "FILE", "settings, per-axis and overall answers, sensitivity (JSON)", 0 },
+    { "--plot", "DIR", "psd.png (Fig. 3), ccdf.png (Fig. 4), spectrogram.png (Fig. 6), sensitivity.png", 0 },
+    { NULL, NULL, NULL, 0 }
+};
+
+static const hx_spec_t k_spec = {
+    CMD, "LOG [options]",
+    "Welch power spectral density of the six channels (streaming, as on the sensor:\n"
+    "Hamming window of 64 samples, 50 % overlap, one-sided density), the cumulative\n"
+    "power and its complement (CCDF), the bandwidth holding 95 % of the power per\n"
+    "axis and the lowest usable sampling frequency = 2 x bandwidth rounded up to a\n"
+    "multiple of 50 Hz, per axis, per sensor group and overall (paper II.B). How the\n"
+    "DC component (gravity, biases) is treated decides the answer: see --dc and\n"
+    "--sensitivity, and docs/psd.md for the recommended setting (--dc global).",
+    1, 1, k_opts
+};
+
+static const char *const k_ch[6] = { "ax", "ay", "az", "gx", "gy", "gz" };
+static const char *const k_dc_names[NDC] = { "segment", "linear", "global", "none", "exclude" };
+static const uint32_t k_sens_nfft[NSENS_NFFT] = { 64, 128, 256, 512, 1024 };
+
+typedef struct {
+    fnav_welch_config_t wc;
+    int exclude_dc;
+} setting_t;
+
+typedef struct {
+    uint32_t nbins;
+    double df;
+    fnav_real_t psd[6][FNAV_WELCH_MAX_BINS];
+    fnav_real_t ccdf[6][FNAV_WELCH_MAX_BINS];
+    fnav_bandwidth_t bw[6];
+    int ok[6];
+    double group_bw[2], group_fs[2], overall_fs;
+    uint32_t nseg;
+} result_t;
+
+static int parse_dc(const char *s, setting_t *st)
+{
+    int i;
+    for (i = 0; i < NDC; i++) {
+        if (strcmp(s, k_dc_names[i]) == 0) {
+            static const fnav_detrend_t map[NDC] = { FNAV_DETREND_CONSTANT, FNAV_DETREND_LINEAR, FNAV_DETREND_GLOBAL,
+                                                     FNAV_DETREND_NONE, FNAV_DETREND_NONE };
+            st->wc.detrend = map[i];
+            st->exclude_dc = i == 4;
+            return i;
+        }
+    }
+    return -1;
+}
+
+static double chan(const hx_log_t *log, size_t i, int c)
+{
+    return c < 3 ? log->acc[i][c] : log->gyr[i][c - 3];
+}
+
+/* Run the six channels through streaming Welch estimators. */
+static int analyse(const hx_log_t *log, const setting_t *st, const fnav_bandwidth_config_t *bc, result_t *r)
+{
+    static fnav_welch_t w[6];
+    size_t i;
+    int c, g;
+    memset(r, 0, sizeof *r);
+    for (c = 0; c < 6; c++) {
+        if (fnav_welch_init(&w[c], &st->wc) != FNAV_OK) {
+            return -1;
+        }
+    }
+    for (i = 0; i < log->n; i++) {
+        for (c = 0; c < 6; c++) {
+            if (fnav_welch_push(&w[c], (fnav_real_t)chan(log, i, c)) != FNAV_OK) {
+                return -1;
+            }
+        }
+    }
+    r->nbins = fnav_welch_bins(&w[0]);
+    r->df = (double)st->wc.rate_hz / (double)st->wc.nfft;
+    r->nseg = fnav_welch_segments(&w[0]);
+    for (c = 0; c < 6; c++) {
+        fnav_bandwidth_config_t b = *bc;
+        b.exclude_dc = st->exclude_dc;
+        if (fnav_welch_get(&w[c], r->psd[c], FNAV_WELCH_MAX_BINS) != FNAV_OK) {
+            return -1;
+        }
+        r->ok[c] = fnav_welch_bandwidth(r->psd[c], r->nbins, (fnav_real_t)r->df, &b, &r->bw[c], r->ccdf[c]) ==
+                   FNAV_OK;
+    }
+    /* a group needs the widest band of its axes; the answer is the larger group */
+    for (g = 0; g < 2; g++) {
+        r->group_bw[g] = 0.0;
+        for (c = 3 * g; c < 3 * g + 3; c++) {
+            if (r->ok[c] && (double)r->bw[c].bandwidth_hz > r->group_bw[g]) {
+                r->group_bw[g] = (double)r->bw[c].bandwidth_hz;
+            }
+        }
+        r->group_fs[g] = bc->round_hz > FNAV_R(0.0)
+                             ? ceil(2.0 * r->group_bw[g] / (double)bc->round_hz) * (double)bc->round_hz
+                             : 2.0 * r->group_bw[g];
+    }
+    r->overall_fs = r->group_fs[0] > r->group_fs[1] ? r->group_fs[0] : r->group_fs[1];
+    return 0;
+}
+
+static void print_result(const char *title, const result_t *r, const fnav_bandwidth_config_t *bc)
+{
+    int c;
+    printf("%s\n", title);
+    printf("  %-5s %14s %12s %10s %10s\n", "axis", "total_power", "bandwidth_Hz", "2xBW_Hz", "fs_Hz");
+    for (c = 0; c < 6; c++) {
+        if (!r->ok[c]) {
+            printf("  %-5s %14s\n", k_ch[c], "no power");
+            continue;
+        }
+        printf("  %-5s %14.6g %12.1f %10.1f %10.0f\n", k_ch[c], (double)r->bw[c].total, (double)r->bw[c].bandwidth_hz,
+               (double)r->bw[c].fs_hz, (double)r->bw[c].fs_rounded_hz);
+    }
+    printf("  accelerometers: bandwidth %.1f Hz -> %.0f Hz\n", r->group_bw[0], r->group_fs[0]);
+    printf("  gyroscopes:     bandwidth %.1f Hz -> %.0f Hz\n", r->group_bw[1], r->group_fs[1]);
+    printf("  lowest usable sampling frequency: %.0f Hz (%s limit it; %.0f %% of the power, multiples of %g Hz)\n",
+           r->overall_fs, r->group_fs[0] >= r->group_fs[1] ? "the accelerometers" : "the gyroscopes",
+           100.0 * (double)bc->threshold, (double)bc->round_hz);
+}
+
+/* ------------------------------------------------------------ outputs */
+
+static int write_csv(const char *path, const result_t *r, const char *src)
+{
+    FILE *f = fopen(path, "w");
+    uint32_t k;
+    int c;
+    if (f == NULL) {
+        hx_error(CMD, "%s: cannot create (%s)", path, strerror(errno));
+        return -1;
+    }
+    fprintf(f, "# harness psd: %s; one-sided Welch PSD (accel (m/s^2)^2/Hz, gyro (rad/s)^2/Hz) and CCDF "
+               "(1 - cumulative power fraction at the bin's upper edge)\n",
+            src);
+    fprintf(f, "freq_hz");
+    for (c = 0; c < 6; c++) {
+        fprintf(f, ",psd_%s", k_ch[c]);
+    }
+    for (c = 0; c < 6; c++) {
+        fprintf(f, ",ccdf_%s", k_ch[c]);
+    }
+    fprintf(f, "\n");
+    for (k = 0; k < r->nbins; k++) {
+        fprintf(f, "%.6g", (double)k * r->df);
+        for (c = 0; c < 6; c++) {
+            fprintf(f, ",%.6g", (double)r->psd[c][k]);
+        }
+        for (c = 0; c < 6; c++) {
+            fprintf(f, ",%.6g", (double)r->ccdf[c][k]);
+        }
+        fprintf(f, "\n");
+    }
+    if (fclose(f) != 0) {
+        hx_error(CMD, "%s: write failed", path);
+        return -1;
+    }
+    return 0;
+}
+
+static cJSON *json_result(const result_t *r)
+{
+    cJSON *o = cJSON_CreateObject(), *ax = cJSON_AddObjectToObject(o, "axes");
+    int c;
+    for (c = 0; c < 6; c++) {
+        cJSON *a = cJSON_AddObjectToObject(ax, k_ch[c]);
+        if (r->ok[c]) {
+            cJSON_AddNumberToObject(a, "total_power", (double)r->bw[c].total);
+            cJSON_AddNumberToObject(a, "bandwidth_hz", (double)r->bw[c].bandwidth_hz);
+            cJSON_AddNumberToObject(a, "fs_hz", (double)r->bw[c].fs_hz);
+            cJSON_AddNumberToObject(a, "fs_rounded_hz", (double)r->bw[c].fs_rounded_hz);
+        }
+    }
+    cJSON_AddNumberToObject(o, "accel_bandwidth_hz", r->group_bw[0]);
+    cJSON_AddNumberToObject(o, "accel_fs_hz", r->group_fs[0]);
+    cJSON_AddNumberToObject(o, "gyro_bandwidth_hz", r->group_bw[1]);
+    cJSON_AddNumberToObject(o, "gyro_fs_hz", r->group_fs[1]);
+    cJSON_AddNumberToObject(o, "fs_hz", r->overall_fs);
+    cJSON_AddNumberToObject(o, "segments", (double)r->nseg);
+    cJSON_AddNumberToObject(o, "resolution_hz", r->df);
+    return o;
+}
+
+static int write_text(const char *path, char *txt)
+{
+    FILE *f = fopen(path, "w");
+    if (f == NULL || txt == NULL) {
+        hx_error(CMD, "%s: cannot create (%s)", path, strerror(errno));
+        if (f != NULL) {
+            fclose(f);
+        }
+        return -1;
+    }
+    fprintf(f, "%s\n", txt);
+    if (fclose(f) != 0) {
+        hx_error(CMD, "%s: write failed", path);
+        return -1;
+    }
+    return 0;
+}
+
+static void block(FILE *gp, const char *name, const result_t *r, int c, int ccdf)
+{
+    uint32_t k;
+    fprintf(gp, "$%s << EOD\n", name);
+    for (k = 0; k < r->nbins; k++) {
+        const double v = ccdf ? (double)r->ccdf[c][k] : (double)r->psd[c][k];
+        /* CCDF at the bin's upper edge; PSD at the bin centre */
+        const double f = ccdf ? ((k + 1u == r->nbins) ? (double)k * r->df : ((double)k + 0.5) * r->df)
+                              : (double)k * r->df;
+        if (!ccdf && !(v > 0.0)) {
+            continue;
+        }
+        fprintf(gp, "%.6g %.6g\n", f, v);
+    }
+    fprintf(gp, "EOD\n");
+}
+
+static int plot_psd(const char *dir, const result_t *r, const char *src, const setting_t *st)
+{
+    hx_plot_t p;
+    char path[600];
+    int g, c;
+    snprintf(path, sizeof path, "%s/psd.png", dir);
+    if (hx_plot_open(&p, CMD, path, 900, 700) != 0) {
+        return -1;
+    }
+    fprintf(p.gp, "set multiplot layout 2,1 title 'Welch PSD (%s %u, %u overlap, dc %s): %s'\n",
+            st->wc.window == FNAV_WINDOW_HAMMING ? "Hamming" : (st->wc.window == FNAV_WINDOW_HANN ? "Hann" : "rect"),
+            (unsigned)st->wc.nfft, (unsigned)st->wc.overlap,
+            k_dc_names[st->exclude_dc ? 4 : (st->wc.detrend == FNAV_DETREND_CONSTANT ? 0 : st->wc.detrend == FNAV_DETREND_LINEAR ? 1 : st->wc.detrend == FNAV_DETREND_GLOBAL ? 2 : 3)],
+            src);
+    fprintf(p.gp, "set logscale y\nset format y '%%.0e'\nset xlabel 'frequency [Hz]'\n");
+    for (g = 0; g < 2; g++) {
+        for (c = 3 * g; c < 3 * g + 3; c++) {
+            char nm[16];
+            snprintf(nm, sizeof nm, "d%d", c);
+            block(p.gp, nm, r, c, 0);
+        }
+        fprintf(p.gp, "set title '%s'\nset ylabel '%s'\n", g == 0 ? "accelerometers (Fig. 3)" : "gyroscopes",
+                g == 0 ? "PSD [(m/s^2)^2/Hz]" : "PSD [(rad/s)^2/Hz]");
+        fprintf(p.gp, "plot $d%d using 1:2 with lines lw 1.5 title '%s', $d%d using 1:2 with lines lw 1.5 title '%s', "
+                      "$d%d using 1:2 with lines lw 1.5 title '%s'\n",
+                3 * g, k_ch[3 * g], 3 * g + 1, k_ch[3 * g + 1], 3 * g + 2, k_ch[3 * g + 2]);
+    }
+    fprintf(p.gp, "unset multiplot\n");
+    return hx_plot_close(&p, CMD);
+}
+
+static int plot_ccdf(const char *dir, const result_t *r, const char *src, const fnav_bandwidth_config_t *bc)
+{
+    hx_plot_t p;
+    char path[600];
+    int g, c;
+    snprintf(path, sizeof path, "%s/ccdf.png", dir);
+    if (hx_plot_open(&p, CMD, path, 900, 700) != 0) {
+        return -1;
+    }
+    fprintf(p.gp, "set multiplot layout 2,1 title 'CCDF of the power (threshold %.0f %%): %s'\n",
+            100.0 * (double)bc->threshold, src);
+    fprintf(p.gp, "set xlabel 'frequency [Hz]'\nset ylabel '1 - cumulative power fraction'\nset yrange [0:1]\n");
+    for (g = 0; g < 2; g++) {
+        fprintf(p.gp, "unset arrow\n");
+        for (c = 3 * g; c < 3 * g + 3; c++) {
+            char nm[16];
+            snprintf(nm, sizeof nm, "c%d", c);
+            block(p.gp, nm, r, c, 1);
+            if (r->ok[c]) {
+                fprintf(p.gp, "set arrow from %.4g,0 to %.4g,1 nohead dt 3 lc %d\n", (double)r->bw[c].bandwidth_hz,
+                        (double)r->bw[c].bandwidth_hz, c - 3 * g + 1);
+            }
+        }
+        fprintf(p.gp, "set title '%s (Fig. 4): bandwidths %.0f, %.0f, %.0f Hz'\n",
+                g == 0 ? "accelerometers" : "gyroscopes", (double)r->bw[3 * g].bandwidth_hz,
+                (double)r->bw[3 * g + 1].bandwidth_hz, (double)r->bw[3 * g + 2].bandwidth_hz);
+        fprintf(p.gp, "plot $c%d using 1:2 with lines lw 1.5 lc 1 title '%s', $c%d using 1:2 with lines lw 1.5 lc 2 "
+                      "title '%s', $c%d using 1:2 with lines lw 1.5 lc 3 title '%s', %.4g with lines dt 2 lc rgb "
+                      "'black' title 'threshold'\n",
+                3 * g, k_ch[3 * g], 3 * g + 1, k_ch[3 * g + 1], 3 * g + 2, k_ch[3 * g + 2],
+                1.0 - (double)bc->threshold);
+    }
+    fprintf(p.gp, "unset multiplot\n");
+    return hx_plot_close(&p, CMD);
+}
+
+/* Spectrogram (Fig. 6): the per-segment spectra of one channel in dB. */
+static int plot_spectrogram(const char *dir, const hx_log_t *log, int c, uint32_t nfft, double rate, const char *src)
+{
+    static fnav_welch_t w;
+    static fnav_real_t col[FNAV_WELCH_MAX_BINS];
+    fnav_welch_config_t cfg = fnav_welch_config_default;
+    hx_plot_t p;
+    char path[600];
+    size_t i;
+    uint32_t seen = 0, k, nb;
+    cfg.nfft = nfft;
+    cfg.overlap = nfft / 2u;
+    cfg.window = FNAV_WINDOW_HANN;
+    cfg.rate_hz = (fnav_real_t)rate;
+    if (fnav_welch_init(&w, &cfg) != FNAV_OK) {
+        hx_error(CMD, "--spec-nfft %u: not a power of two in 8..%u", (unsigned)nfft, (unsigned)FNAV_WELCH_MAX_NFFT);
+        return -1;
+    }
+    snprintf(path, sizeof path, "%s/spectrogram.png", dir);
+    if (hx_plot_open(&p, CMD, path, 1000, 500) != 0) {
+        return -1;
+    }
+    nb = fnav_welch_bins(&w);
+    fprintf(p.gp, "$s << EOD\n");
+    for (i = 0; i < log->n; i++) {
+        if (fnav_welch_push(&w, (fnav_real_t)chan(log, i, c)) != FNAV_OK) {
+            break;
+        }
+        if (fnav_welch_segments(&w) > seen) {
+            const double t = ((double)i - 0.5 * (double)nfft) / rate; /* segment centre */
+            seen = fnav_welch_segments(&w);
+            if (fnav_welch_last(&w, col, FNAV_WELCH_MAX_BINS) != FNAV_OK) {
+                continue;
+            }
+            for (k = 0; k < nb; k++) {
+                const double v = (double)col[k] > 1e-30 ? 10.0 * log10((double)col[k]) : -300.0;
+                fprintf(p.gp, "%.5g %.5g %.4g\n", t, (double)k * rate / (double)nfft, v);
+            }
+            fprintf(p.gp, "\n");
+        }
+    }
+    fprintf(p.gp, "EOD\n");
+    fprintf(p.gp, "set title 'Spectrogram of %s (Hann %u, 50 %% overlap; Fig. 6): %s'\n", k_ch[c], (unsigned)nfft, src);
+    fprintf(p.gp, "set xlabel 'time [s]'\nset ylabel 'frequency [Hz]'\nset cblabel 'PSD [dB re 1 %s^2/Hz]'\n",
+            c < 3 ? "(m/s^2)" : "(rad/s)");
+    fprintf(p.gp, "set view map\nset palette rgbformulae 33,13,10\nset cbrange [*:*]\nunset grid\n");
+    fprintf(p.gp, "set xrange [0:%.6g]\nset yrange [0:%.6g]\n", (double)log->n / rate, 0.5 * rate);
+    fprintf(p.gp, "stats $s using 3 nooutput\nset cbrange [STATS_max-80:STATS_max]\n");
+    fprintf(p.gp, "plot $s using 1:2:3 with image notitle\n");
+    return hx_plot_close(&p, CMD);
+}
+
+static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], const int have[NSENS_NFFT], double rate,
+                            const char *src)
+{
+    hx_plot_t p;
+    char path[600];
+    int d, k;
+    snprintf(path, sizeof path, "%s/sensitivity.png", dir);
+    if (hx_plot_open(&p, CMD, path, 800, 500) != 0) {
+        return -1;
+    }
+    fprintf(p.gp, "$t << EOD\n");
+    for (k = 0; k < NSENS_NFFT; k++) {
+        if (!have[k]) {
+            continue;
+        }
+        fprintf(p.gp, "%u", (unsigned)k_sens_nfft[k]);
+        for (d = 0; d < NDC; d++) {
+            fprintf(p.gp, " %.6g", fs_tab[d][k]);
+        }
+        fprintf(p.gp, "\n");
+    }
+    fprintf(p.gp, "EOD\n");
+    fprintf(p.gp, "set title 'Lowest usable sampling frequency vs Welch segment (%g Hz log): %s'\n", rate, src);
+    fprintf(p.gp, "set logscale x 2\nset xlabel 'segment length [samples]'\nset ylabel 'sampling frequency [Hz]'\n");
+    fprintf(p.gp, "set key top right\nplot ");
+    for (d = 0; d < NDC; d++) {
+        fprintf(p.gp, "%s$t using 1:%d with linespoints lw 2 title 'dc %s'", d ? ", " : "", d + 2, k_dc_names[d]);
+    }
+    fprintf(p.gp, "\n");
+    return hx_plot_close(&p, CMD);
+}
+
+/* ------------------------------------------------------------ main */
+
 int hx_cmd_psd(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    fprintf(stderr, "harness psd: not available yet (planned in issue #4, sensor analysis)\n");
-    return HX_EXIT_UNAVAIL;
+    hx_args_t a;
+    hx_log_t log;
+    setting_t st;
+    fnav_bandwidth_config_t bc = fnav_bandwidth_config_default;
+    static result_t res, sres;
+    long nfft = 64, overlap = -1, spec_nfft = 256;
+    double thr = 0.95, rnd = 50.0, rate;
+    int rc, exit_code = HX_EXIT_OK, dc_mode = 0, c, spec_axis = -1;
+    const char *s;
+    double fs_tab[NDC][NSENS_NFFT];
+    int have[NSENS_NFFT];
+    cJSON *root = NULL;
+
+    rc = hx_args_parse(&k_spec, argc, argv, &a);
+    if (rc != 0) {
+        return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
+    }
+    st.wc = fnav_welch_config_default;
+    st.exclude_dc = 0;
+    if (hx_arg_long(&a, "--nfft", 8, FNAV_WELCH_MAX_NFFT, &nfft) != 0 || (nfft & (nfft - 1)) != 0) {
+        if ((nfft & (nfft - 1)) != 0) {
+            hx_error(CMD, "--nfft must be a power of two in 8..%d", FNAV_WELCH_MAX_NFFT);
+        }
+        return HX_EXIT_USAGE;
+    }
+    if (hx_arg_long(&a, "--overlap", 0, nfft - 1, &overlap) != 0 ||
+        hx_arg_double(&a, "--threshold", 0.01, 1.0, &thr) != 0 || hx_arg_double(&a, "--round", 0.0, 1e6, &rnd) != 0 ||
+        hx_arg_long(&a, "--spec-nfft", 8, FNAV_WELCH_MAX_NFFT, &spec_nfft) != 0) {
+        return HX_EXIT_USAGE;
+    }
+    st.wc.nfft = (uint32_t)nfft;
+    st.wc.overlap = overlap >= 0 ? (uint32_t)overlap : (uint32_t)nfft / 2u;
+    if ((s = hx_arg(&a, "--window")) != NULL) {
+        if (strcmp(s, "hamming") == 0) {
+            st.wc.window = FNAV_WINDOW_HAMMING;
+        } else if (strcmp(s, "hann") == 0) {
+            st.wc.window = FNAV_WINDOW_HANN;
+        } else if (strcmp(s, "rect") == 0) {
+            st.wc.window = FNAV_WINDOW_RECT;
+        } else {
+            hx_error(CMD, "--window must be hamming, hann or rect");
+            return HX_EXIT_USAGE;
+        }
+    }
+    st.wc.symmetric = hx_flag(&a, "--symmetric");
+    if ((s = hx_arg(&a, "--dc")) != NULL && (dc_mode = parse_dc(s, &st)) < 0) {
+        hx_error(CMD, "--dc must be segment, linear, global, none or exclude");
+        return HX_EXIT_USAGE;
+    }
+    if (st.wc.symmetric && st.wc.detrend == FNAV_DETREND_GLOBAL) {
+        hx_error(CMD, "--dc global needs a periodic window (drop --symmetric)");
+        return HX_EXIT_USAGE;
+    }
+    if ((s = hx_arg(&a, "--spec-axis")) != NULL) {
+        for (c = 0; c < 6; c++) {
+            if (strcmp(s, k_ch[c]) == 0) {
+                spec_axis = c;
+            }
+        }
+        if (spec_axis < 0) {
+            hx_error(CMD, "--spec-axis must be one of ax, ay, az, gx, gy, gz");
+            return HX_EXIT_USAGE;
+        }
+    }
+    bc.threshold = (fnav_real_t)thr;
+    bc.round_hz = (fnav_real_t)rnd;
+
+    rc = hx_load_input(CMD, &a, a.pos[0], &log);
+    if (rc < 0) {
+        return HX_EXIT_DATA;
+    }
+    if (rc > 0) {
+        exit_code = HX_EXIT_DATA;
+    }
+    rate = log.meta.rate_hz;
+    if (!(rate > 0.0) && log.n > 1) {
+        rate = 1e9 * (double)(log.n - 1) / (double)(log.t_ns[log.n - 1] - log.t_ns[0]);
+    }
+    if (!(rate > 0.0) || log.n < (size_t)nfft) {
+        hx_error(CMD, "%s: %s", a.pos[0],
+                 rate > 0.0 ? "fewer samples than one segment" : "sample rate unknown; give --input-rate");
+        hx_log_free(&log);
+        return HX_EXIT_DATA;
+    }
+    {
+        /* Welch assumes uniform sampling: say how far the time stamps are from it */
+        size_t i;
+        long irregular = 0;
+        for (i = 1; i < log.n; i++) {
+            if (fabs(1e-9 * (double)(log.t_ns[i] - log.t_ns[i - 1]) * rate - 1.0) > 0.1) {
+                irregular++;
+            }
+        }
+        if (irregular > 0) {
+            hx_warn(CMD, "%ld of %zu intervals differ from 1/%.4g s by more than 10 %%: Welch assumes uniform "
+                         "sampling",
+                    irregular, log.n - 1, rate);
+        }
+    }
+    st.wc.rate_hz = (fnav_real_t)rate;
+    if (analyse(&log, &st, &bc, &res) != 0) {
+        hx_error(CMD, "Welch failed (bad configuration or non-finite sample)");
+        hx_log_free(&log);
+        return HX_EXIT_DATA;
+    }
+    printf("harness psd: %s (%s), %zu samples at %.4g Hz, %.2f s\n", a.pos[0], log.meta.sensor, log.n, rate,
+           (double)log.n / rate);
+    {
+        char title[256];
+        snprintf(title, sizeof title,
+                 "Welch: %s window of %u samples%s, overlap %u, dc %s, %u segments, resolution %.3g Hz",
+                 st.wc.window == FNAV_WINDOW_HAMMING ? "Hamming" : (st.wc.window == FNAV_WINDOW_HANN ? "Hann" : "rect"),
+                 (unsigned)st.wc.nfft, st.wc.symmetric ? " (symmetric)" : "", (unsigned)st.wc.overlap,
+                 k_dc_names[dc_mode], (unsigned)res.nseg, res.df);
+        print_result(title, &res, &bc);
+    }
+
+    memset(have, 0, sizeof have);
+    if (hx_flag(&a, "--sensitivity")) {
+        int d, k;
+        printf("\nSensitivity: bandwidth per axis (Hz) and the sampling frequency, Hamming, 50 %% overlap\n");
+        printf("  %-8s %5s %7s %7s %7s %7s %7s %7s %7s %7s %7s %7s\n", "dc", "nfft", "df_Hz", "ax", "ay", "az", "gx",
+               "gy", "gz", "fs_acc", "fs_gyr", "fs");
+        for (d = 0; d < NDC; d++) {
+            for (k = 0; k < NSENS_NFFT; k++) {
+                setting_t ss;
+                ss.wc = fnav_welch_config_default;
+                ss.wc.rate_hz = (fnav_real_t)rate;
+                ss.wc.nfft = k_sens_nfft[k];
+                ss.wc.overlap = k_sens_nfft[k] / 2u;
+                ss.exclude_dc = 0;
+                parse_dc(k_dc_names[d], &ss);
+                fs_tab[d][k] = (double)NAN;
+                if (ss.wc.nfft > FNAV_WELCH_MAX_NFFT || (size_t)ss.wc.nfft > log.n || analyse(&log, &ss, &bc, &sres) != 0) {
+                    continue;
+                }
+                have[k] = 1;
+                fs_tab[d][k] = sres.overall_fs;
+                printf("  %-8s %5u %7.3g %7.1f %7.1f %7.1f %7.1f %7.1f %7.1f %7.0f %7.0f %7.0f\n", k_dc_names[d],
+                       (unsigned)ss.wc.nfft, sres.df, (double)sres.bw[0].bandwidth_hz, (double)sres.bw[1].bandwidth_hz,
+                       (double)sres.bw[2].bandwidth_hz, (double)sres.bw[3].bandwidth_hz,
+                       (double)sres.bw[4].bandwidth_hz, (double)sres.bw[5].bandwidth_hz, sres.group_fs[0],
+                       sres.group_fs[1], sres.overall_fs);
+            }
+        }
+    }
+
+    if (hx_arg(&a, "--out") != NULL && write_csv(hx_arg(&a, "--out"), &res, a.pos[0]) != 0) {
+        exit_code = HX_EXIT_IO;
+    }
+    if (hx_arg(&a, "--json") != NULL) {
+        char *txt;
+        cJSON *set;
+        root = cJSON_CreateObject();
+        cJSON_AddStringToObject(root, "source", a.pos[0]);
+        cJSON_AddStringToObject(root, "sensor", log.meta.sensor);
+        cJSON_AddNumberToObject(root, "rate_hz", rate);
+        cJSON_AddNumberToObject(root, "samples", (double)log.n);
+        set = cJSON_AddObjectToObject(root, "settings");
+        cJSON_AddNumberToObject(set, "nfft", st.wc.nfft);
+        cJSON_AddNumberToObject(set, "overlap", st.wc.overlap);
+        cJSON_AddStringToObject(set, "window", st.wc.window == FNAV_WINDOW_HAMMING ? "hamming"
+                                               : st.wc.window == FNAV_WINDOW_HANN  ? "hann"
+                                                                                   : "rect");
+        cJSON_AddBoolToObject(set, "symmetric", st.wc.symmetric);
+        cJSON_AddStringToObject(set, "dc", k_dc_names[dc_mode]);
+        cJSON_AddNumberToObject(set, "threshold", thr);
+        cJSON_AddNumberToObject(set, "round_hz", rnd);
+        cJSON_AddItemToObject(root, "result", json_result(&res));
+        if (hx_flag(&a, "--sensitivity")) {
+            cJSON *arr = cJSON_AddArrayToObject(root, "sensitivity");
+            int d, k;
+            for (d = 0; d < NDC; d++) {
+                for (k = 0; k < NSENS_NFFT; k++) {
+                    cJSON *e;
+                    if (!isfinite(fs_tab[d][k])) {
+                        continue;
+                    }
+                    e = cJSON_CreateObject();
+                    cJSON_AddStringToObject(e, "dc", k_dc_names[d]);
+                    cJSON_AddNumberToObject(e, "nfft", k_sens_nfft[k]);
+                    cJSON_AddNumberToObject(e, "fs_hz", fs_tab[d][k]);
+                    cJSON_AddItemToArray(arr, e);
+                }
+            }
+        }
+        cJSON_AddBoolToObject(root, "complete", log.status == FNAV_END);
+        txt = cJSON_Print(root);
+        if (write_text(hx_arg(&a, "--json"), txt) != 0) {
+            exit_code = HX_EXIT_IO;
+        }
+        free(txt);
+        cJSON_Delete(root);
+    }
+    if ((s = hx_arg(&a, "--plot")) != NULL) {
+        struct stat sb;
+        if (stat(s, &sb) != 0 && mkdir(s, 0777) != 0) {
+            hx_error(CMD, "%s: cannot create directory (%s)", s, strerror(errno));
+            exit_code = HX_EXIT_IO;
+        } else {
+            if (spec_axis < 0) {
+                /* the accelerometer axis along gravity: largest |mean| */
+                double best = -1.0;
+                int k;
+                for (k = 0; k < 3; k++) {
+                    double m = 0.0;
+                    size_t i;
+                    for (i = 0; i < log.n; i++) {
+                        m += log.acc[i][k];
+                    }
+                    m = fabs(m / (double)log.n);
+                    if (m > best) {
+                        best = m;
+                        spec_axis = k;
+                    }
+                }
+            }
+            if (plot_psd(s, &res, a.pos[0], &st) != 0 || plot_ccdf(s, &res, a.pos[0], &bc) != 0 ||
+                plot_spectrogram(s, &log, spec_axis, (uint32_t)spec_nfft, rate, a.pos[0]) != 0 ||
+                (hx_flag(&a, "--sensitivity") && plot_sensitivity(s, fs_tab, have, rate, a.pos[0]) != 0)) {
+                exit_code = HX_EXIT_IO;
+            }
+        }
+    }
+    if (log.status != FNAV_END) {
+        hx_error(CMD, "%s", log.error);
+    }
+    hx_log_free(&log);
+    return exit_code;
 }

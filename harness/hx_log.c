@@ -9,6 +9,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <zlib.h>
 
 #define HX_LINE_MAX 4096
@@ -1077,6 +1078,20 @@ const hx_meta_t *hx_reader_meta(const hx_reader_t *r)
 const hx_read_stats_t *hx_reader_stats(const hx_reader_t *r)
 {
     return &r->stats;
+}
+
+double hx_reader_progress(const hx_reader_t *r)
+{
+    struct stat st;
+    z_off_t off;
+    if (r == NULL || r->gz == NULL || stat(r->path, &st) != 0 || st.st_size <= 0) {
+        return -1.0;
+    }
+    off = gzoffset(r->gz); /* compressed bytes consumed (raw bytes for plain files) */
+    if (off < 0) {
+        return -1.0;
+    }
+    return (double)off >= (double)st.st_size ? 1.0 : (double)off / (double)st.st_size;
 }
 
 void hx_reader_close(hx_reader_t *r)

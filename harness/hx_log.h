@@ -89,6 +89,9 @@ const char *hx_reader_warnings(const hx_reader_t *r);
 
 const hx_meta_t *hx_reader_meta(const hx_reader_t *r);
 const hx_read_stats_t *hx_reader_stats(const hx_reader_t *r);
+/** Fraction of the input file consumed so far (0..1, compressed bytes for
+ *  .gz), for progress indicators; -1 when unknown. */
+double hx_reader_progress(const hx_reader_t *r);
 void hx_reader_close(hx_reader_t *r);
 
 /* ------------------------------------------------------------------ */

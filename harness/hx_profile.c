@@ -145,6 +145,12 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
 
 int hx_profile_write(const char *path, const fnav_profile_t *p, const char *comment, char *err, size_t err_size)
 {
+    return hx_profile_write_extra(path, p, comment, NULL, err, err_size);
+}
+
+int hx_profile_write_extra(const char *path, const fnav_profile_t *p, const char *comment, const char *extra,
+                           char *err, size_t err_size)
+{
     FILE *f = fopen(path, "w");
     int i;
     if (f == NULL) {
@@ -165,6 +171,9 @@ int hx_profile_write(const char *path, const fnav_profile_t *p, const char *comm
     for (i = 0; i < 6; i++) {
         const fnav_real_t *v = (const fnav_real_t *)((const char *)p + k_keys[i].offset);
         fprintf(f, "%s = %.9g %.9g %.9g\n", k_keys[i].key, (double)v[0], (double)v[1], (double)v[2]);
+    }
+    if (extra != NULL) {
+        fputs(extra, f);
     }
     if (fclose(f) != 0) {
         snprintf(err, err_size, "%s: write failed (%s)", path, strerror(errno));

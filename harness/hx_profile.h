@@ -17,6 +17,12 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
  *  the top. 0 on success, -1 with err filled. */
 int hx_profile_write(const char *path, const fnav_profile_t *p, const char *comment, char *err, size_t err_size);
 
+/** As hx_profile_write(), then @p extra (may be NULL) verbatim after the
+ *  standard keys: further "key = value" lines (docs/profile-format.md lists
+ *  the optional keys), which hx_profile_read() ignores. */
+int hx_profile_write_extra(const char *path, const fnav_profile_t *p, const char *comment, const char *extra,
+                           char *err, size_t err_size);
+
 /** A built-in name ("navchip", "mtx", "shimmer") or a file path. */
 int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size_t err_size);
 

@@ -32,16 +32,42 @@
 #define FNAV_STANCE_MAX_WINDOW 64
 #endif
 
-/** Number of octave levels kept by the streaming Allan estimator
- *  (tau = 2^0 .. 2^(N-1) samples). 24 levels cover 2^23 samples, more than
- *  10 % of a 12-hour log at 200 Hz (864,000 samples). */
+/** Octaves of averaging time covered by the streaming Allan estimator:
+ *  tau = 2^0 .. 2^(N-1) samples. 21 reaches 2^20 = 1,048,576 samples, more
+ *  than 10 % of a 12-hour log at 200 Hz (864,000 samples). Each octave above
+ *  the full-rate ring costs one cascade level of 2 * 2^LAG_LOG2 + 1 reals
+ *  (docs/allan.md). */
 #ifndef FNAV_ALLAN_MAX_LEVELS
-#define FNAV_ALLAN_MAX_LEVELS 24
+#define FNAV_ALLAN_MAX_LEVELS 21
 #endif
 
-/** Largest Welch segment (FFT) length; a power of two. */
+/** log2 of the full-rate phase ring of the Allan estimator. Every averaging
+ *  time tau <= 2^(N-1) - 1 samples is estimated fully overlapping (exactly
+ *  as Stable32 / NIST SP 1065); 9 (512 reals) covers tau <= 255 samples. */
+#ifndef FNAV_ALLAN_RING0_LOG2
+#define FNAV_ALLAN_RING0_LOG2 9
+#endif
+
+/** log2 of the largest lag kept by each cascade level of the Allan
+ *  estimator: level j stores 2 * 2^N + 1 phase values 2^j samples apart and
+ *  serves tau = m * 2^j for m <= 2^N (overlap stride tau / m). */
+#ifndef FNAV_ALLAN_CASCADE_LAG_LOG2
+#define FNAV_ALLAN_CASCADE_LAG_LOG2 3
+#endif
+
+/** Largest number of averaging times (tau points) one Allan estimator
+ *  tracks; each costs 4 reals + 6 bytes. The default grid (two points per
+ *  octave up to 2^20) uses 40. */
+#ifndef FNAV_ALLAN_MAX_POINTS
+#define FNAV_ALLAN_MAX_POINTS 40
+#endif
+
+/** Largest Welch segment (FFT) length; a power of two. It sizes
+ *  fnav_welch_t at about 5 * N reals: 1024 (the harness's segment-length
+ *  study) costs 20.6 KB per channel in float; a sensor that only runs the
+ *  paper's 64-sample segments sets 64 (1.4 KB per channel). */
 #ifndef FNAV_WELCH_MAX_NFFT
-#define FNAV_WELCH_MAX_NFFT 256
+#define FNAV_WELCH_MAX_NFFT 1024
 #endif
 
 /** Number of AR(1) poles (log-spaced correlation times) whose sum makes

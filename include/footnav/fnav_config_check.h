@@ -22,6 +22,19 @@
 #error "FNAV_ALLAN_MAX_LEVELS must be in 2..31"
 #endif
 
+#if (FNAV_ALLAN_RING0_LOG2 < 3) || (FNAV_ALLAN_RING0_LOG2 > 15)
+#error "FNAV_ALLAN_RING0_LOG2 must be in 3..15"
+#endif
+
+#if (FNAV_ALLAN_CASCADE_LAG_LOG2 < 0) || (FNAV_ALLAN_CASCADE_LAG_LOG2 > 6) || \
+    (FNAV_ALLAN_CASCADE_LAG_LOG2 + 1 >= FNAV_ALLAN_RING0_LOG2)
+#error "FNAV_ALLAN_CASCADE_LAG_LOG2 must be in 0..6 and below FNAV_ALLAN_RING0_LOG2 - 1"
+#endif
+
+#if (FNAV_ALLAN_MAX_POINTS < 1) || (FNAV_ALLAN_MAX_POINTS > 255)
+#error "FNAV_ALLAN_MAX_POINTS must be in 1..255"
+#endif
+
 #if (FNAV_WELCH_MAX_NFFT < 8) || (FNAV_WELCH_MAX_NFFT > 65536) || \
     ((FNAV_WELCH_MAX_NFFT & (FNAV_WELCH_MAX_NFFT - 1)) != 0)
 #error "FNAV_WELCH_MAX_NFFT must be a power of two in 8..65536"

@@ -15,6 +15,9 @@ extern "C" {
 #include "fnav_port.h"
 #include "fnav_profile.h"
 #include "fnav_imuerr.h"
+#include "fnav_allan.h"
+#include "fnav_fft.h"
+#include "fnav_welch.h"
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,525 @@
+/* Noise models and their identification from Allan tables (hx_allan_ident.h,
+ * docs/allan.md). */
+#include "hx_allan_ident.h"
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multifit.h>
+#include <gsl/gsl_multifit_nlinear.h>
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+const hx_allan_fit_opts_t hx_allan_fit_opts_default = { 0, 0, 0.0, 0.05 };
+
+/* ------------------------------------------------------------ model */
+
+/* Allan variance of a unit-variance stationary AR(1) with a = 1/(T f_s),
+ * c = e^-a, averaged over m samples. Var(mean) - Cov(adjacent means) with
+ * R(k) = c^|k|:
+ *   (1/m^2) [ m + 2c (m(1-c) - (1-c^m)) / (1-c)^2 - c (1-c^m)^2 / (1-c)^2 ].
+ * For m a < 1e-4 the process is a random walk over the window and the
+ * difference above cancels; the random-walk form (1-c^2)(2m^2+1)/(6m) is
+ * used there (relative error O(m a)). */
+static double ar1_avar_unit(double m, double a)
+{
+    const double eps = -expm1(-a);      /* 1 - c */
+    const double c = 1.0 - eps;
+    const double omc = -expm1(-m * a);  /* 1 - c^m */
+    double br;
+    if (m * a < 1e-4) {
+        const double w2 = -expm1(-2.0 * a); /* 1 - c^2: step variance of the walk */
+        return w2 * (2.0 * m * m + 1.0) / (6.0 * m);
+    }
+    br = m + (2.0 * c * (m * eps - omc) - c * omc * omc) / (eps * eps);
+    if (br < 0.0) {
+        br = 0.0;
+    }
+    return br / (m * m);
+}
+
+/* Unit-amplitude bases: index 0 white (N^2), 1 AR(1) (sigma^2), 2 quantisation
+ * (Q^2), 3 random walk (K^2). */
+static double basis(int k, double m, double fs, double T)
+{
+    switch (k) {
+    case 0: return fs / m;
+    case 1: return ar1_avar_unit(m, 1.0 / (T * fs));
+    case 2: return 3.0 * fs * fs / (m * m);
+    default: return (2.0 * m * m + 1.0) / (6.0 * m * fs);
+    }
+}
+
+double hx_noise_model_avar(const hx_noise_model_t *mdl, double rate_hz, double m)
+{
+    double v = 0.0;
+    if (mdl == NULL || !(rate_hz > 0.0) || !(m >= 1.0)) {
+        return (double)NAN;
+    }
+    if (mdl->white > 0.0) {
+        v += mdl->white * mdl->white * basis(0, m, rate_hz, 1.0);
+    }
+    if (mdl->gm_sigma > 0.0 && mdl->gm_tau_s > 0.0) {
+        v += mdl->gm_sigma * mdl->gm_sigma * basis(1, m, rate_hz, mdl->gm_tau_s);
+    }
+    if (mdl->quant > 0.0) {
+        v += mdl->quant * mdl->quant * basis(2, m, rate_hz, 1.0);
+    }
+    if (mdl->rrw > 0.0) {
+        v += mdl->rrw * mdl->rrw * basis(3, m, rate_hz, 1.0);
+    }
+    return v;
+}
+
+void hx_noise_model_paper_reading(const fnav_allan_paper_id_t *id, double rate_hz, hx_paper_reading_t reading,
+                                  hx_noise_model_t *mdl)
+{
+    const double tau = (double)id->tau_samples;
+    memset(mdl, 0, sizeof *mdl);
+    mdl->white = (double)id->sigma_v;
+    mdl->gm_sigma = (double)id->sigma_bias;
+    mdl->gm_tau_s = tau / rate_hz;
+    if (reading == HX_PAPER_DRIVE) {
+        /* n_k ~ N(0, sigma_bias^2): stationary variance sigma_bias^2 / (1 - c^2) */
+        mdl->gm_sigma = (double)id->sigma_bias / sqrt(-expm1(-2.0 / tau));
+    } else if (reading == HX_PAPER_SAMPLE) {
+        /* v_k ~ N(0, sigma_v^2) per sample: density sigma_v / sqrt(f_s) */
+        mdl->white = (double)id->sigma_v / sqrt(rate_hz);
+    }
+}
+
+void hx_noise_model_from_paper(const fnav_allan_paper_id_t *id, double rate_hz, hx_noise_model_t *mdl)
+{
+    hx_noise_model_paper_reading(id, rate_hz, HX_PAPER_EQ4, mdl);
+}
+
+/* ------------------------------------------------------------ CI, EDF */
+
+int hx_allan_ci(double dev, double edf, double conf, double *lo, double *hi)
+{
+    double p;
+    if (!(edf > 0.0) || !(conf > 0.0 && conf < 1.0)) {
+        *lo = *hi = (double)NAN;
+        return -1;
+    }
+    p = 0.5 * (1.0 - conf);
+    /* SP 1065 eq. (45): edf s^2 / chi2(1-p) <= sigma^2 <= edf s^2 / chi2(p) */
+    *lo = dev * sqrt(edf / gsl_cdf_chisq_Pinv(1.0 - p, edf));
+    *hi = dev * sqrt(edf / gsl_cdf_chisq_Pinv(p, edf));
+    return 0;
+}
+
+double hx_allan_point_edf(const fnav_allan_result_t *r, fnav_allan_noise_t type, int overlapping)
+{
+    const int alpha = fnav_allan_noise_alpha(type);
+    if (overlapping) {
+        return r->terms > 0u ? fnav_allan_edf(alpha, r->lag, r->n_phase, 1) : -1.0;
+    }
+    /* non-overlapping: the series at full rate, stride tau */
+    if (r->terms_nonoverlap == 0u) {
+        return -1.0;
+    }
+    return fnav_allan_edf(alpha, r->tau, (uint32_t)((uint64_t)(r->n_phase - 1u) * r->stride + 1u), 0);
+}
+
+/* ------------------------------------------------------------ fit */
+
+typedef struct {
+    size_t n;
+    double *m;     /* averaging factor, samples */
+    double *a;     /* measured AVAR */
+    double *w;     /* weight of log ADEV residual */
+    double fs;
+    int comp[4];   /* component k used */
+    int ncomp;
+} fit_data_t;
+
+static int usable_point(const fnav_allan_result_t *r, double fs, double tau_max_s)
+{
+    return r->terms >= 2u && isfinite((double)r->avar) && (double)r->avar > 0.0 &&
+           (tau_max_s <= 0.0 || (double)r->tau / fs <= tau_max_s * (1.0 + 1e-9));
+}
+
+/* Select the points and compute their weights. Returns the count. */
+static size_t fit_points(const fnav_allan_result_t *r, size_t n, double fs, double tau_max_s, double floor_rel,
+                         fit_data_t *d)
+{
+    fnav_real_t *slope = (fnav_real_t *)malloc((n > 0 ? n : 1) * sizeof *slope);
+    size_t i, k = 0;
+    d->n = 0;
+    d->fs = fs;
+    d->m = (double *)malloc((n > 0 ? n : 1) * sizeof(double));
+    d->a = (double *)malloc((n > 0 ? n : 1) * sizeof(double));
+    d->w = (double *)malloc((n > 0 ? n : 1) * sizeof(double));
+    if (slope == NULL || d->m == NULL || d->a == NULL || d->w == NULL) {
+        free(slope);
+        return 0;
+    }
+    fnav_allan_slopes(r, n, slope);
+    for (i = 0; i < n; i++) {
+        double edf;
+        if (!usable_point(&r[i], fs, tau_max_s)) {
+            continue;
+        }
+        edf = hx_allan_point_edf(&r[i], fnav_allan_noise_from_slope(slope[i]), 1);
+        if (!(edf > 0.0)) {
+            edf = (double)r[i].terms_nonoverlap > 0.0 ? (double)r[i].terms_nonoverlap : 1.0;
+        }
+        d->m[k] = (double)r[i].tau;
+        d->a[k] = (double)r[i].avar;
+        d->w[k] = 1.0 / sqrt(1.0 / (2.0 * edf) + floor_rel * floor_rel);
+        k++;
+    }
+    free(slope);
+    d->n = k;
+    return k;
+}
+
+static void fit_free(fit_data_t *d)
+{
+    free(d->m);
+    free(d->a);
+    free(d->w);
+    d->m = d->a = d->w = NULL;
+}
+
+static void quality_of(const fit_data_t *d, const hx_noise_model_t *mdl, hx_allan_quality_t *q)
+{
+    size_t i, imin = 0;
+    double ss = 0.0, mx = 1.0;
+    memset(q, 0, sizeof *q);
+    for (i = 0; i < d->n; i++) {
+        const double mv = hx_noise_model_avar(mdl, d->fs, d->m[i]);
+        const double lr = 0.5 * log10(mv / d->a[i]);
+        const double ratio = pow(10.0, fabs(lr));
+        ss += lr * lr;
+        if (ratio > mx || !isfinite(ratio)) {
+            mx = ratio;
+        }
+        if (d->a[i] < d->a[imin]) {
+            imin = i;
+        }
+    }
+    q->npoints = (int)d->n;
+    q->rms_log10 = d->n > 0 ? sqrt(ss / (double)d->n) : (double)NAN;
+    q->max_ratio = d->n > 0 ? mx : (double)NAN;
+    q->ratio_at_min = d->n > 0 ? sqrt(hx_noise_model_avar(mdl, d->fs, d->m[imin]) / d->a[imin]) : (double)NAN;
+}
+
+void hx_allan_quality(const fnav_allan_result_t *r, size_t n, double rate_hz, double tau_max_s,
+                      const hx_noise_model_t *mdl, hx_allan_quality_t *q)
+{
+    fit_data_t d;
+    memset(&d, 0, sizeof d);
+    fit_points(r, n, rate_hz, tau_max_s, 0.05, &d);
+    quality_of(&d, mdl, q);
+    fit_free(&d);
+}
+
+static void model_set(hx_noise_model_t *mdl, int k, double amp2)
+{
+    const double v = amp2 > 0.0 ? sqrt(amp2) : 0.0;
+    switch (k) {
+    case 0: mdl->white = v; break;
+    case 1: mdl->gm_sigma = v; break;
+    case 2: mdl->quant = v; break;
+    default: mdl->rrw = v; break;
+    }
+}
+
+/* Stage 1 at a fixed T: weighted linear least squares for the squared
+ * amplitudes of the components in mask (relative AVAR residuals). Returns
+ * the residual sum of squares, or INFINITY when an amplitude is not positive. */
+static double linear_stage(const fit_data_t *d, double T, const int *comp, int nc, double *amp2)
+{
+    gsl_matrix *X = gsl_matrix_alloc(d->n, (size_t)nc), *cov = gsl_matrix_alloc((size_t)nc, (size_t)nc);
+    gsl_vector *y = gsl_vector_alloc(d->n), *c = gsl_vector_alloc((size_t)nc);
+    gsl_multifit_linear_workspace *ws = gsl_multifit_linear_alloc(d->n, (size_t)nc);
+    double chisq = INFINITY, scale[4];
+    size_t i;
+    int k, ok = 1;
+    if (X == NULL || cov == NULL || y == NULL || c == NULL || ws == NULL) {
+        ok = 0;
+    }
+    for (k = 0; ok && k < nc; k++) {
+        double s = 0.0;
+        for (i = 0; i < d->n; i++) {
+            const double g = d->w[i] * basis(comp[k], d->m[i], d->fs, T) / d->a[i];
+            gsl_matrix_set(X, i, (size_t)k, g);
+            s += g * g;
+        }
+        scale[k] = s > 0.0 ? sqrt(s) : 1.0; /* column scaling for conditioning */
+        for (i = 0; i < d->n; i++) {
+            gsl_matrix_set(X, i, (size_t)k, gsl_matrix_get(X, i, (size_t)k) / scale[k]);
+        }
+    }
+    for (i = 0; ok && i < d->n; i++) {
+        gsl_vector_set(y, i, d->w[i]);
+    }
+    if (ok && gsl_multifit_linear(X, y, c, cov, &chisq, ws) == GSL_SUCCESS) {
+        for (k = 0; k < nc; k++) {
+            amp2[k] = gsl_vector_get(c, (size_t)k) / scale[k];
+            if (!(amp2[k] > 0.0)) {
+                chisq = INFINITY;
+            }
+        }
+    } else {
+        chisq = INFINITY;
+    }
+    if (ws) gsl_multifit_linear_free(ws);
+    if (X) gsl_matrix_free(X);
+    if (cov) gsl_matrix_free(cov);
+    if (y) gsl_vector_free(y);
+    if (c) gsl_vector_free(c);
+    return chisq;
+}
+
+/* Stage 2 residuals: p = [log amp2_k ..., log T]. */
+static int lm_f(const gsl_vector *p, void *params, gsl_vector *f)
+{
+    const fit_data_t *d = (const fit_data_t *)params;
+    const double T = exp(gsl_vector_get(p, (size_t)d->ncomp));
+    size_t i;
+    for (i = 0; i < d->n; i++) {
+        double v = 0.0;
+        int k;
+        for (k = 0; k < d->ncomp; k++) {
+            v += exp(gsl_vector_get(p, (size_t)k)) * basis(d->comp[k], d->m[i], d->fs, T);
+        }
+        gsl_vector_set(f, i, d->w[i] * 0.5 * log(v / d->a[i]));
+    }
+    return GSL_SUCCESS;
+}
+
+int hx_allan_fit(const fnav_allan_result_t *r, size_t n, double rate_hz, const hx_allan_fit_opts_t *opts,
+                 hx_noise_model_t *out, hx_allan_quality_t *q)
+{
+    const hx_allan_fit_opts_t *o = opts != NULL ? opts : &hx_allan_fit_opts_default;
+    fit_data_t d;
+    double best = INFINITY, bestT = 0.0, best_amp[4] = { 0, 0, 0, 0 };
+    int best_comp[4] = { 0, 1, 2, 3 }, best_nc = 0;
+    double tmin, tmax, lt;
+    int subset, it = 0;
+    memset(&d, 0, sizeof d);
+    memset(out, 0, sizeof *out);
+    if (q != NULL) {
+        memset(q, 0, sizeof *q);
+    }
+    if (!(rate_hz > 0.0) || fit_points(r, n, rate_hz, o->tau_max_s, o->model_floor, &d) < 4u) {
+        fit_free(&d);
+        return -1;
+    }
+    /* stage 1: correlation times from half the smallest to 20 x the largest tau */
+    tmin = 0.5 * d.m[0] / rate_hz;
+    tmax = 20.0 * d.m[d.n - 1] / rate_hz;
+    for (lt = log(tmin); lt <= log(tmax) + 1e-9; lt += log(tmax / tmin) / 96.0) {
+        const double T = exp(lt);
+        /* subsets: white and AR(1) always; quantisation and random walk if asked */
+        for (subset = 0; subset < 4; subset++) {
+            int comp[4], nc = 0;
+            double amp[4], chi;
+            if (((subset & 1) && !o->with_quant) || ((subset & 2) && !o->with_rrw)) {
+                continue;
+            }
+            comp[nc++] = 0;
+            comp[nc++] = 1;
+            if (subset & 1) {
+                comp[nc++] = 2;
+            }
+            if (subset & 2) {
+                comp[nc++] = 3;
+            }
+            chi = linear_stage(&d, T, comp, nc, amp);
+            if (chi < best) {
+                best = chi;
+                bestT = T;
+                best_nc = nc;
+                memcpy(best_comp, comp, sizeof comp);
+                memcpy(best_amp, amp, sizeof amp);
+            }
+        }
+    }
+    if (!isfinite(best)) {
+        fit_free(&d);
+        return -1;
+    }
+    /* stage 2: Levenberg-Marquardt on log ADEV from the best stage-1 point */
+    {
+        const size_t np = (size_t)best_nc + 1u;
+        gsl_multifit_nlinear_parameters fp = gsl_multifit_nlinear_default_parameters();
+        gsl_multifit_nlinear_workspace *w;
+        gsl_multifit_nlinear_fdf fdf;
+        gsl_vector *p0 = gsl_vector_alloc(np);
+        int k, info = 0;
+        d.ncomp = best_nc;
+        memcpy(d.comp, best_comp, sizeof d.comp);
+        for (k = 0; k < best_nc; k++) {
+            gsl_vector_set(p0, (size_t)k, log(best_amp[k]));
+        }
+        gsl_vector_set(p0, (size_t)best_nc, log(bestT));
+        fdf.f = lm_f;
+        fdf.df = NULL;
+        fdf.fvv = NULL;
+        fdf.n = d.n;
+        fdf.p = np;
+        fdf.params = &d;
+        w = gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &fp, d.n, np);
+        if (w != NULL && gsl_multifit_nlinear_init(p0, &fdf, w) == GSL_SUCCESS) {
+            gsl_error_handler_t *old = gsl_set_error_handler_off();
+            int st = gsl_multifit_nlinear_driver(200, 1e-10, 1e-10, 1e-12, NULL, NULL, &info, w);
+            gsl_set_error_handler(old);
+            it = (int)gsl_multifit_nlinear_niter(w);
+            if (st == GSL_SUCCESS || st == GSL_EMAXITER || st == GSL_ENOPROG) {
+                const gsl_vector *p = gsl_multifit_nlinear_position(w);
+                int finite = 1;
+                for (k = 0; k < (int)np; k++) {
+                    finite = finite && isfinite(gsl_vector_get(p, (size_t)k));
+                }
+                if (finite) {
+                    for (k = 0; k < best_nc; k++) {
+                        best_amp[k] = exp(gsl_vector_get(p, (size_t)k));
+                    }
+                    bestT = exp(gsl_vector_get(p, (size_t)best_nc));
+                }
+            }
+        }
+        if (w != NULL) {
+            gsl_multifit_nlinear_free(w);
+        }
+        gsl_vector_free(p0);
+        for (k = 0; k < best_nc; k++) {
+            model_set(out, best_comp[k], best_amp[k]);
+        }
+        out->gm_tau_s = bestT;
+    }
+    if (q != NULL) {
+        quality_of(&d, out, q);
+        q->iterations = it;
+    }
+    fit_free(&d);
+    return 0;
+}
+
+int hx_allan_identify(const fnav_allan_result_t *r, size_t n, double rate_hz, const hx_allan_fit_opts_t *opts,
+                      hx_allan_ident_t *out)
+{
+    const hx_allan_fit_opts_t *o = opts != NULL ? opts : &hx_allan_fit_opts_default;
+    uint32_t tau_max = 0;
+    memset(out, 0, sizeof *out);
+    if (o->tau_max_s > 0.0) {
+        const double t = o->tau_max_s * rate_hz;
+        tau_max = t >= 4294967295.0 ? UINT32_MAX : (uint32_t)t;
+    }
+    if (fnav_allan_identify_paper(r, n, (fnav_real_t)rate_hz, tau_max, &out->paper) == FNAV_OK) {
+        out->paper_ok = 1;
+        hx_noise_model_from_paper(&out->paper, rate_hz, &out->paper_model);
+        hx_allan_quality(r, n, rate_hz, o->tau_max_s, &out->paper_model, &out->paper_quality);
+        hx_noise_model_paper_reading(&out->paper, rate_hz, HX_PAPER_DRIVE, &out->paper_drive_model);
+        hx_allan_quality(r, n, rate_hz, o->tau_max_s, &out->paper_drive_model, &out->paper_drive_quality);
+        {
+            hx_noise_model_t ms;
+            hx_noise_model_paper_reading(&out->paper, rate_hz, HX_PAPER_SAMPLE, &ms);
+            hx_allan_quality(r, n, rate_hz, o->tau_max_s, &ms, &out->paper_sample_quality);
+        }
+    }
+    out->fit_ok = hx_allan_fit(r, n, rate_hz, o, &out->fit, &out->fit_quality) == 0;
+    return (out->paper_ok || out->fit_ok) ? 0 : -1;
+}
+
+/* ------------------------------------------------------------ simulation */
+
+int hx_noise_sim_init(hx_noise_sim_t *s, const hx_noise_model_t *mdl, double rate_hz, unsigned long seed)
+{
+    gsl_rng *rng;
+    memset(s, 0, sizeof *s);
+    if (mdl == NULL || !(rate_hz > 0.0) || !(mdl->white >= 0.0) || !(mdl->gm_sigma >= 0.0) ||
+        (mdl->gm_sigma > 0.0 && !(mdl->gm_tau_s > 0.0))) {
+        return -1;
+    }
+    rng = gsl_rng_alloc(gsl_rng_mt19937);
+    if (rng == NULL) {
+        return -1;
+    }
+    gsl_rng_set(rng, seed);
+    s->rng = rng;
+    s->rate_hz = rate_hz;
+    s->sd_white = mdl->white * sqrt(rate_hz);
+    if (mdl->gm_sigma > 0.0) {
+        const double a = 1.0 / (mdl->gm_tau_s * rate_hz);
+        s->c = exp(-a);                                           /* eq. (3), c = e^(-1/tau) */
+        s->sd_drive = mdl->gm_sigma * sqrt(-expm1(-2.0 * a));     /* eq. (4) */
+        s->b = mdl->gm_sigma * gsl_ran_gaussian_ziggurat(rng, 1.0); /* stationary start */
+    }
+    s->sd_quant = mdl->quant > 0.0 ? mdl->quant : 0.0;
+    s->sd_rw = mdl->rrw > 0.0 ? mdl->rrw / sqrt(rate_hz) : 0.0;
+    if (s->sd_quant > 0.0) {
+        s->xq = s->sd_quant * gsl_ran_gaussian_ziggurat(rng, 1.0);
+    }
+    return 0;
+}
+
+double hx_noise_sim_next(hx_noise_sim_t *s)
+{
+    gsl_rng *rng = (gsl_rng *)s->rng;
+    double e = 0.0;
+    if (s->sd_drive > 0.0) {
+        s->b = s->c * s->b + s->sd_drive * gsl_ran_gaussian_ziggurat(rng, 1.0); /* eq. (3) */
+        e += s->b;
+    }
+    if (s->sd_white > 0.0) {
+        e += s->sd_white * gsl_ran_gaussian_ziggurat(rng, 1.0); /* v_k, eq. (2) */
+    }
+    if (s->sd_quant > 0.0) {
+        const double x = s->sd_quant * gsl_ran_gaussian_ziggurat(rng, 1.0);
+        e += (x - s->xq) * s->rate_hz;
+        s->xq = x;
+    }
+    if (s->sd_rw > 0.0) {
+        s->rw += s->sd_rw * gsl_ran_gaussian_ziggurat(rng, 1.0);
+        e += s->rw;
+    }
+    return e;
+}
+
+void hx_noise_sim_free(hx_noise_sim_t *s)
+{
+    if (s->rng != NULL) {
+        gsl_rng_free((gsl_rng *)s->rng);
+        s->rng = NULL;
+    }
+}
+
+size_t hx_allan_simulate(const hx_noise_model_t *mdl, double rate_hz, uint32_t n, unsigned long seed,
+                         const fnav_allan_config_t *cfg, fnav_allan_result_t *out)
+{
+    hx_noise_sim_t s;
+    fnav_allan_t *a = (fnav_allan_t *)malloc(sizeof *a);
+    size_t i, np;
+    uint32_t k;
+    if (a == NULL || hx_noise_sim_init(&s, mdl, rate_hz, seed) != 0) {
+        free(a);
+        return 0;
+    }
+    if (fnav_allan_init(a, cfg) != FNAV_OK) {
+        hx_noise_sim_free(&s);
+        free(a);
+        return 0;
+    }
+    for (k = 0; k < n; k++) {
+        if (fnav_allan_push(a, (fnav_real_t)hx_noise_sim_next(&s)) != FNAV_OK) {
+            break;
+        }
+    }
+    np = fnav_allan_count(a);
+    for (i = 0; i < np; i++) {
+        if (fnav_allan_get(a, i, &out[i]) != FNAV_OK) {
+            np = i;
+            break;
+        }
+    }
+    hx_noise_sim_free(&s);
+    free(a);
+    return np;
+}

@@ -1,0 +1,175 @@
+/**
+ * @file hx_allan_ident.h
+ * @brief Sensor-noise models and their identification from an Allan
+ *        deviation table (harness side; docs/allan.md "Identification").
+ *
+ * The model of one channel is white noise plus a first-order Gauss-Markov
+ * (AR(1)) bias, the paper's eqs. (1)-(4), optionally with quantisation and
+ * rate random walk terms. Two identifications are offered:
+ *
+ * - hx_allan_identify() "paper": section III.C as written (eqs. 5-6) through
+ *   fnav_allan_identify_paper(), read with eq. (4), i.e. sigma_bias is the
+ *   stationary standard deviation of the AR(1) bias;
+ * - "fit": a weighted least-squares fit of the model's exact discrete-time
+ *   Allan variance to the measured one (log ADEV residuals weighted by the
+ *   equivalent degrees of freedom), which reproduces the measured curve.
+ *
+ * Also: the exact Allan variance of the model at any tau, a streaming
+ * simulator of the model (paper Fig. 7 check) and confidence intervals.
+ * Used by `harness allan` and meant for reuse (sim-to-real, issue #6).
+ * All quantities are doubles in the unit of the channel (u): u is m/s^2 or
+ * rad/s in SI, or whatever the series is in.
+ */
+#ifndef HX_ALLAN_IDENT_H
+#define HX_ALLAN_IDENT_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "footnav/fnav_allan.h"
+
+/** Noise model of one channel. A zero coefficient switches a term off. */
+typedef struct {
+    double white;     /**< N: white-noise density = ADEV at 1 s, u/sqrt(Hz); sample std N sqrt(f_s) */
+    double gm_sigma;  /**< AR(1) bias stationary standard deviation, u (paper sigma_bias, eq. 4) */
+    double gm_tau_s;  /**< AR(1) correlation time, s (paper tau / f_s, eq. 5) */
+    double quant;     /**< Q: quantisation / white phase, u s; AVAR 3 Q^2 / tau^2 */
+    double rrw;       /**< K: rate random walk, u/sqrt(s); AVAR K^2 tau / 3 */
+} hx_noise_model_t;
+
+/** Quality of a model against a measured table. */
+typedef struct {
+    double rms_log10;  /**< RMS of log10(ADEV_model / ADEV_measured) over the points used */
+    double max_ratio;  /**< largest max(model/measured, measured/model) over them */
+    double ratio_at_min; /**< model / measured ADEV at the measured minimum (bias instability) */
+    int npoints;       /**< points used */
+    int iterations;    /**< least-squares iterations (fit only) */
+} hx_allan_quality_t;
+
+/** Options of the fit. */
+typedef struct {
+    int with_quant;      /**< also fit Q */
+    int with_rrw;        /**< also fit K */
+    double tau_max_s;    /**< use points with tau <= this (s); 0: all with terms */
+    double model_floor;  /**< relative model-error floor in the weights (default 0.05) */
+} hx_allan_fit_opts_t;
+
+/** Defaults: white + AR(1) only, tau_max 0, floor 0.05. */
+extern const hx_allan_fit_opts_t hx_allan_fit_opts_default;
+
+/** Everything identified for one channel. */
+typedef struct {
+    fnav_allan_paper_id_t paper;      /**< the paper's numbers (eqs. 5-6) */
+    int paper_ok;                     /**< 0 when the table does not allow it (e.g. 1 s not covered) */
+    hx_noise_model_t paper_model;     /**< white = sigma_v, AR(1) sigma = sigma_bias, T = tau / f_s */
+    hx_allan_quality_t paper_quality; /**< how well the paper's model reproduces the table */
+    hx_noise_model_t paper_drive_model;     /**< other reading: sigma_bias = std of the driving noise n_k */
+    hx_allan_quality_t paper_drive_quality; /**< its quality */
+    hx_allan_quality_t paper_sample_quality; /**< eq. 4 reading with sigma_v taken as the per-sample std */
+    hx_noise_model_t fit;             /**< corrected identification */
+    int fit_ok;                       /**< 0 when the fit failed */
+    hx_allan_quality_t fit_quality;
+} hx_allan_ident_t;
+
+/**
+ * Exact Allan variance of the model sampled at rate_hz, averaged over m
+ * samples (tau = m / rate_hz): white N^2 f_s / m; AR(1)
+ * (s^2/m^2)[m + 2c(m(1-c) - (1-c^m))/(1-c)^2 - c(1-c^m)^2/(1-c)^2],
+ * c = exp(-1/(T f_s)); quantisation 3 Q^2 / tau^2; random walk
+ * (K^2/f_s)(2 m^2 + 1)/(6 m). Unit u^2.
+ */
+double hx_noise_model_avar(const hx_noise_model_t *mdl, double rate_hz, double m);
+
+/**
+ * Weighted least-squares fit of the model to a measured table (overlapping
+ * ADEV). Stage 1: for correlation times on a log grid, non-negative linear
+ * least squares for the squared amplitudes; stage 2: Levenberg-Marquardt
+ * (GSL) on log ADEV over log parameters from the best stage-1 point.
+ * Weight of a point 1/sqrt(1/(2 EDF) + floor^2), EDF by Greenhall with the
+ * noise type from the local slope.
+ * @return 0, or -1 when fewer than 4 usable points or the fit fails.
+ */
+int hx_allan_fit(const fnav_allan_result_t *r, size_t n, double rate_hz, const hx_allan_fit_opts_t *opts,
+                 hx_noise_model_t *out, hx_allan_quality_t *q);
+
+/** Quality of any model against a table (same points as the fit uses). */
+void hx_allan_quality(const fnav_allan_result_t *r, size_t n, double rate_hz, double tau_max_s,
+                      const hx_noise_model_t *mdl, hx_allan_quality_t *q);
+
+/**
+ * Both identifications of one channel.
+ * @param r        table, ascending tau
+ * @param n        points
+ * @param rate_hz  sample rate
+ * @param opts     fit options (NULL: defaults); tau_max_s also bounds the
+ *                 paper's search for the minimum
+ * @param out      results
+ * @return 0 when at least one identification worked, -1 otherwise.
+ */
+int hx_allan_identify(const fnav_allan_result_t *r, size_t n, double rate_hz, const hx_allan_fit_opts_t *opts,
+                      hx_allan_ident_t *out);
+
+/** Readings of the paper's parameters (docs/allan.md, "The paper's identification"). */
+typedef enum {
+    HX_PAPER_EQ4 = 0,    /**< sigma_bias is the stationary std of b (eq. 4); sigma_v a density (III.C.1) */
+    HX_PAPER_DRIVE = 1,  /**< sigma_bias is the std of the driving noise n_k (Fig. 7 text) */
+    HX_PAPER_SAMPLE = 2  /**< as EQ4, but sigma_v drawn as the per-sample std (Fig. 7 text) */
+} hx_paper_reading_t;
+
+/** Model of the paper's identification under one reading. */
+void hx_noise_model_paper_reading(const fnav_allan_paper_id_t *id, double rate_hz, hx_paper_reading_t reading,
+                                  hx_noise_model_t *mdl);
+
+/** Model of the paper's identification as eq. (4) defines sigma_bias (HX_PAPER_EQ4). */
+void hx_noise_model_from_paper(const fnav_allan_paper_id_t *id, double rate_hz, hx_noise_model_t *mdl);
+
+/** ADEV peak of a Gauss-Markov bias alone relative to its stationary std
+ *  sigma, and where it lies: max ADEV = 0.6174 sigma at tau = 1.893 T
+ *  (maximum of (2 sigma^2 T / tau)[1 - T/(2 tau)(3 - 4 e^(-tau/T) + e^(-2 tau/T))];
+ *  the often quoted 0.437 is the same peak per q_c sqrt(T), q_c^2 = 2 sigma^2 / T). */
+#define HX_GM_PEAK_RATIO 0.6174
+#define HX_GM_PEAK_TAU 1.893
+
+/**
+ * Confidence interval of a deviation with edf degrees of freedom (chi-square,
+ * NIST SP 1065 eq. 45). conf e.g. 0.683. @return 0, or -1 when edf <= 0.
+ */
+int hx_allan_ci(double dev, double edf, double conf, double *lo, double *hi);
+
+/**
+ * EDF of a table entry: Greenhall with alpha from the noise type.
+ * @param overlapping 1 for the overlapping estimate, 0 for the non-overlapping one
+ */
+double hx_allan_point_edf(const fnav_allan_result_t *r, fnav_allan_noise_t type, int overlapping);
+
+/* ------------------------------------------------------------ simulation */
+
+/** Streaming simulator of a noise model: e_k = b_k + v_k (+ quantisation,
+ *  + random walk), the paper's eqs. (2)-(4). */
+typedef struct {
+    void *rng;          /**< gsl_rng * */
+    double c;           /**< AR(1) coefficient exp(-1 / (T f_s)) */
+    double sd_drive;    /**< AR(1) driving noise std sigma sqrt(1 - c^2) (eq. 4) */
+    double sd_white;    /**< white sample std N sqrt(f_s) */
+    double sd_quant;    /**< phase noise std Q (u s) */
+    double sd_rw;       /**< random-walk step std K / sqrt(f_s) */
+    double rate_hz;
+    double b, rw, xq;   /**< AR(1) state, random-walk state, last phase noise */
+} hx_noise_sim_t;
+
+/** Start a simulator (the AR(1) starts in its stationary distribution).
+ *  @return 0, -1 on a bad model or rate. */
+int hx_noise_sim_init(hx_noise_sim_t *s, const hx_noise_model_t *mdl, double rate_hz, unsigned long seed);
+/** Next sample, u. */
+double hx_noise_sim_next(hx_noise_sim_t *s);
+void hx_noise_sim_free(hx_noise_sim_t *s);
+
+/**
+ * Allan table of n simulated samples of a model, through the same streaming
+ * estimator and grid as a measurement (the paper's Fig. 7 check).
+ * @param out  at least fnav_allan_count() entries for cfg
+ * @return number of points, or 0 on failure.
+ */
+size_t hx_allan_simulate(const hx_noise_model_t *mdl, double rate_hz, uint32_t n, unsigned long seed,
+                         const fnav_allan_config_t *cfg, fnav_allan_result_t *out);
+
+#endif /* HX_ALLAN_IDENT_H */

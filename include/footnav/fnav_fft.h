@@ -1,0 +1,60 @@
+/**
+ * @file fnav_fft.h
+ * @brief Fixed-size radix-2 FFT: in-place complex transform and a real
+ *        transform of N points through one complex transform of N/2.
+ *
+ * The twiddle table lives in the object and is sized for the largest real
+ * length FNAV_WELCH_MAX_NFFT (fnav_config.h): sizeof(fnav_fft_t) is
+ * FNAV_WELCH_MAX_NFFT * sizeof(fnav_real_t) + 8 bytes. Iterative, no
+ * recursion, no allocation; the transforms may run in an interrupt handler.
+ * Forward transform, no scaling: X_k = sum_n x_n e^(-2 pi i k n / N).
+ */
+#ifndef FNAV_FFT_H
+#define FNAV_FFT_H
+
+#include "fnav_types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Largest real transform length. */
+#define FNAV_FFT_MAX_N FNAV_WELCH_MAX_NFFT
+
+/** Twiddle table for real transforms of length n (complex ones of n/2). */
+typedef struct {
+    uint32_t n;                              /**< real transform length (power of two) */
+    uint32_t reserved;
+    fnav_real_t cs[FNAV_FFT_MAX_N / 2];      /**< cos(2 pi k / n), k < n/2 */
+    fnav_real_t sn[FNAV_FFT_MAX_N / 2];      /**< sin(2 pi k / n), k < n/2 */
+} fnav_fft_t;
+
+/**
+ * Prepare the table for real transforms of n points.
+ * @return FNAV_OK; FNAV_E_ARG for NULL; FNAV_E_CONFIG when n is not a power
+ *         of two in 4..FNAV_FFT_MAX_N.
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_fft_init(fnav_fft_t *f, uint32_t n);
+
+/**
+ * In-place forward complex FFT of m points, m a power of two with
+ * 2 <= m <= f->n / 2.
+ * @param re  real parts, m entries
+ * @param im  imaginary parts, m entries
+ */
+void fnav_fft_complex(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im, uint32_t m);
+
+/**
+ * Forward FFT of n = f->n real points, given packed: re[k] = x[2k],
+ * im[k] = x[2k+1] for k < n/2. On return re[k], im[k] hold X_k for
+ * k = 0 .. n/2 (n/2 + 1 bins; im[0] = im[n/2] = 0).
+ * @param re  n/2 + 1 entries
+ * @param im  n/2 + 1 entries
+ */
+void fnav_fft_real_packed(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FNAV_FFT_H */

@@ -1,0 +1,645 @@
+/* Streaming fixed-memory Allan deviation (see fnav_allan.h, docs/allan.md). */
+#include "footnav/fnav_allan.h"
+#include "footnav/fnav_port.h"
+
+#include <string.h>
+
+#define RING0_MASK (FNAV_ALLAN_RING0 - 1u)
+
+const fnav_allan_config_t fnav_allan_config_default = { NULL, 0 };
+
+/* Kahan (compensated) summation: s - c carries the sum to about twice the
+ * working precision (Higham, "Accuracy and Stability of Numerical
+ * Algorithms", 2nd ed., sec. 4.3). */
+static inline void kahan_add(fnav_real_t *s, fnav_real_t *c, fnav_real_t v)
+{
+    const fnav_real_t y = v - *c;
+    const fnav_real_t t = *s + y;
+    *c = (t - *s) - y;
+    *s = t;
+}
+
+/* Level of a valid tau: 0 when it fits the full-rate ring, else the lowest
+ * cascade level j with tau / 2^j <= L (then tau / 2^j is in (L/2, L]).
+ * Returns -1 when tau cannot be represented. */
+static int tau_level(uint32_t tau)
+{
+    int j;
+    if (tau == 0u || (unsigned long)tau > FNAV_ALLAN_TAU_MAX) {
+        return -1;
+    }
+    if (tau <= FNAV_ALLAN_TAU_FULL_MAX) {
+        return 0;
+    }
+    for (j = FNAV_ALLAN_LEVEL_FIRST; j <= FNAV_ALLAN_LEVEL_LAST; j++) {
+        if ((tau >> j) <= FNAV_ALLAN_CASCADE_LAG) {
+            return ((tau & ((1u << j) - 1u)) == 0u) ? j : -1;
+        }
+    }
+    return -1;
+}
+
+int fnav_allan_tau_valid(uint32_t tau)
+{
+    return tau_level(tau) >= 0;
+}
+
+size_t fnav_allan_grid(uint32_t *tau, size_t max, uint32_t tau_max, unsigned per_octave)
+{
+    size_t n = 0;
+    unsigned p = per_octave <= 1u ? 1u : (per_octave == 2u ? 2u : 4u);
+    uint32_t k, i, last = 0;
+    if (tau == NULL) {
+        return 0;
+    }
+    if ((unsigned long)tau_max > FNAV_ALLAN_TAU_MAX) {
+        tau_max = (uint32_t)FNAV_ALLAN_TAU_MAX;
+    }
+    /* octave k holds 2^k (p + i) / p, i = 0..p-1; keep the integer ones */
+    for (k = 0; k < 32u && n < max; k++) {
+        uint64_t base = (uint64_t)1u << k;
+        for (i = 0; i < p && n < max; i++) {
+            uint64_t num = base * (uint64_t)(p + i);
+            uint32_t t;
+            if (num % p != 0u) {
+                continue;
+            }
+            if (num / p > (uint64_t)tau_max) {
+                return n;
+            }
+            t = (uint32_t)(num / p);
+            if (t > last && fnav_allan_tau_valid(t)) {
+                tau[n++] = t;
+                last = t;
+            }
+        }
+    }
+    return n;
+}
+
+fnav_status_t fnav_allan_init(fnav_allan_t *a, const fnav_allan_config_t *cfg)
+{
+    uint32_t grid[FNAV_ALLAN_MAX_POINTS]; /* default grid, 4 bytes per point */
+    const uint32_t *tau;
+    size_t n, i;
+    int l;
+    if (a == NULL) {
+        return FNAV_E_ARG;
+    }
+    memset(a, 0, sizeof *a);
+    if (cfg == NULL || cfg->tau == NULL) {
+        n = fnav_allan_grid(grid, FNAV_ALLAN_MAX_POINTS, (uint32_t)FNAV_ALLAN_TAU_MAX, 2u);
+        tau = grid;
+    } else {
+        tau = cfg->tau;
+        n = cfg->n_tau;
+    }
+    if (n == 0u || n > FNAV_ALLAN_MAX_POINTS) {
+        return FNAV_E_CONFIG;
+    }
+    for (i = 0; i < n; i++) {
+        int lev = tau_level(tau[i]);
+        if (lev < 0 || (i > 0 && tau[i] <= tau[i - 1])) {
+            memset(a, 0, sizeof *a);
+            return FNAV_E_CONFIG;
+        }
+        a->pt[i].level = (uint8_t)lev;
+        a->pt[i].lag = (uint16_t)(tau[i] >> lev);
+        if (lev == 0) {
+            a->npt0 = (uint8_t)(i + 1u);
+            /* a block looks back BLOCK - 1 + 2 lag phase values: must stay in the ring */
+            a->pt[i].late = (uint8_t)(2u * tau[i] + FNAV_ALLAN_BLOCK > FNAV_ALLAN_RING0);
+        }
+    }
+    a->npt = (uint8_t)n;
+    a->nlate0 = a->npt0;
+    for (i = 0; i < a->npt0; i++) {
+        if (a->pt[i].late) {
+            a->nlate0 = (uint8_t)i;
+            break;
+        }
+    }
+    /* x_0 = 0 is the first phase value of every level (ring0 is zeroed) */
+    for (l = 0; l < FNAV_ALLAN_NLEVELS; l++) {
+        a->wc[l] = 1u;
+    }
+    return FNAV_OK;
+}
+
+/* Shift every phase value of a ring so that it is relative to the current
+ * phase: second differences are invariant to a constant, and small values
+ * keep the float ring precise however far the phase has drifted. */
+static void rebase(fnav_real_t *ring, uint32_t len, fnav_real_t *base, fnav_real_t ph)
+{
+    const fnav_real_t sh = *base - ph;
+    uint32_t i;
+    for (i = 0; i < len; i++) {
+        ring[i] += sh;
+    }
+    *base = ph;
+}
+
+/* Level l (= cascade level j) receives the phase x_n, n = k 2^j. */
+static void cascade_write(fnav_allan_t *a, int l, int j, uint32_t first, uint32_t end)
+{
+    fnav_real_t *ring = a->ringc[l];
+    const uint32_t w = a->wc[l];
+    const uint32_t k = a->n >> j; /* newest phase index at this level */
+    const fnav_real_t x = (a->ph - a->basec[l]) - a->pc;
+    uint32_t i;
+    ring[w] = x;
+    for (i = first; i < end; i++) {
+        fnav_allan_point_t *p = &a->pt[i];
+        const uint32_t m = p->lag;
+        uint32_t i1, i2;
+        fnav_real_t d, q;
+        if (k < 2u * m) {
+            break; /* lags ascend within a level */
+        }
+        i1 = (w >= m) ? w - m : w + FNAV_ALLAN_CASCADE_RING - m;
+        i2 = (w >= 2u * m) ? w - 2u * m : w + FNAV_ALLAN_CASCADE_RING - 2u * m;
+        d = (x + ring[i2]) - FNAV_R(2.0) * ring[i1];
+        q = d * d;
+        kahan_add(&p->so, &p->co, q);
+        if (k % m == 0u) {
+            /* start index k - 2m is a multiple of m: a non-overlapping term */
+            kahan_add(&p->sn, &p->cn, q);
+        }
+    }
+    if (w + 1u == FNAV_ALLAN_CASCADE_RING) {
+        a->wc[l] = 0u;
+        rebase(ring, FNAV_ALLAN_CASCADE_RING, &a->basec[l], a->ph);
+    } else {
+        a->wc[l] = (uint8_t)(w + 1u);
+    }
+}
+
+/* Second difference ending at full-rate phase index e (in the ring). */
+static inline fnav_real_t diff0(const fnav_allan_t *a, uint32_t e, uint32_t m)
+{
+    return (a->ring0[e & RING0_MASK] + a->ring0[(e - 2u * m) & RING0_MASK]) -
+           FNAV_R(2.0) * a->ring0[(e - m) & RING0_MASK];
+}
+
+/* Sum of squared second differences of lag m ending at e = lo..hi with
+ * stride st (1: overlapping terms; m: non-overlapping ones, lo a multiple of
+ * m), e >= 2m, general ring indexing. */
+static fnav_real_t terms0(const fnav_allan_t *a, uint32_t m, uint32_t lo, uint32_t hi, uint32_t st)
+{
+    fnav_real_t s = FNAV_R(0.0);
+    uint32_t e;
+    if (lo < 2u * m) {
+        lo = 2u * m;
+    }
+    for (e = lo; e <= hi; e += st) {
+        const fnav_real_t d = diff0(a, e, m);
+        s += d * d;
+    }
+    return s;
+}
+
+/* First multiple of m that is >= lo. */
+static inline uint32_t next_multiple(uint32_t lo, uint32_t m)
+{
+    return ((lo + m - 1u) / m) * m;
+}
+
+/* The rare work of a push lives out of line so that the common push stays
+ * a handful of instructions without register spills. */
+#if defined(__GNUC__)
+#define FNAV_NOINLINE __attribute__((noinline))
+#else
+#define FNAV_NOINLINE
+#endif
+
+/* A block of end indices e = n - BLOCK + 1 .. n has completed (n + 1 a
+ * multiple of BLOCK, so the block is aligned in the ring and, thanks to the
+ * repeated head of the ring, every lagged run of 32 reads is contiguous). */
+static void block0(fnav_allan_t *a, uint32_t n)
+{
+    const uint32_t e0 = n + 1u - FNAV_ALLAN_BLOCK;
+    const fnav_real_t *x0 = &a->ring0[e0 & RING0_MASK];
+    uint32_t i;
+    for (i = 0; i < a->nlate0; i++) {
+        fnav_allan_point_t *p = &a->pt[i];
+        const uint32_t m = p->lag;
+        fnav_real_t so, sn = FNAV_R(0.0);
+        if (n < 2u * m) {
+            break; /* lags ascend: no later point has a term yet */
+        }
+        if (e0 >= 2u * m) {
+            const fnav_real_t *x1 = &a->ring0[(e0 - m) & RING0_MASK];
+            const fnav_real_t *x2 = &a->ring0[(e0 - 2u * m) & RING0_MASK];
+            fnav_real_t s0 = FNAV_R(0.0), s1 = FNAV_R(0.0), s2 = FNAV_R(0.0), s3 = FNAV_R(0.0);
+            uint32_t k;
+            for (k = 0; k < FNAV_ALLAN_BLOCK; k += 4u) {
+                /* x_e - 2 x_{e-m} + x_{e-2m} = m (ybar_2 - ybar_1): four
+                 * isomorphic lanes, which the compiler turns into vector code */
+                const fnav_real_t d0 = (x0[k] + x2[k]) - FNAV_R(2.0) * x1[k];
+                const fnav_real_t d1 = (x0[k + 1u] + x2[k + 1u]) - FNAV_R(2.0) * x1[k + 1u];
+                const fnav_real_t d2 = (x0[k + 2u] + x2[k + 2u]) - FNAV_R(2.0) * x1[k + 2u];
+                const fnav_real_t d3 = (x0[k + 3u] + x2[k + 3u]) - FNAV_R(2.0) * x1[k + 3u];
+                s0 += d0 * d0;
+                s1 += d1 * d1;
+                s2 += d2 * d2;
+                s3 += d3 * d3;
+            }
+            so = (s0 + s1) + (s2 + s3);
+            /* non-overlapping: end indices that are multiples of m */
+            if (m == 1u) {
+                sn = so;
+            } else {
+                for (k = next_multiple(e0, m) - e0; k < FNAV_ALLAN_BLOCK; k += m) {
+                    const fnav_real_t d = (x0[k] + x2[k]) - FNAV_R(2.0) * x1[k];
+                    sn += d * d;
+                }
+            }
+        } else {
+            so = terms0(a, m, e0, n, 1u); /* the first terms of this point */
+            sn = terms0(a, m, next_multiple(e0, m), n, m);
+        }
+        kahan_add(&p->so, &p->co, so);
+        kahan_add(&p->sn, &p->cn, sn);
+    }
+}
+
+static FNAV_NOINLINE void push_rare(fnav_allan_t *a, uint32_t n, uint32_t w)
+{
+    uint32_t i;
+    /* level-0 points too long for blocks: every push */
+    for (i = a->nlate0; i < a->npt0; i++) {
+        fnav_allan_point_t *p = &a->pt[i];
+        const uint32_t m = p->lag;
+        fnav_real_t dd;
+        if (n < 2u * m) {
+            break;
+        }
+        dd = diff0(a, n, m);
+        kahan_add(&p->so, &p->co, dd * dd);
+        if (n % m == 0u) {
+            kahan_add(&p->sn, &p->cn, dd * dd);
+        }
+    }
+    if (((n + 1u) & (FNAV_ALLAN_BLOCK - 1u)) == 0u) {
+        block0(a, n);
+    }
+    if (w == FNAV_ALLAN_RING0 - 1u) {
+        /* the ring is full of values relative to base0: re-base them all */
+        rebase(a->ring0, FNAV_ALLAN_RING0 + FNAV_ALLAN_BLOCK, &a->base0, a->ph);
+    }
+#if FNAV_ALLAN_NLEVELS > 0
+    if ((n & ((1u << FNAV_ALLAN_LEVEL_FIRST) - 1u)) == 0u) {
+        int l;
+        uint32_t first = a->npt0;
+        for (l = 0; l < FNAV_ALLAN_NLEVELS; l++) {
+            const int j = FNAV_ALLAN_LEVEL_FIRST + l;
+            uint32_t end = first;
+            if ((n & ((1u << j) - 1u)) != 0u) {
+                break;
+            }
+            while (end < a->npt && a->pt[end].level == (uint8_t)j) {
+                end++;
+            }
+            cascade_write(a, l, j, first, end);
+            first = end;
+        }
+    }
+#endif
+}
+
+fnav_status_t fnav_allan_push(fnav_allan_t *a, fnav_real_t y)
+{
+    fnav_real_t d, t, x;
+    uint32_t w, n;
+    FNAV_ASSERT(a != NULL);
+    if (!(fnav_fabs(y) <= FNAV_REAL_MAX)) {
+        return FNAV_E_NANINF; /* NaN fails the comparison too */
+    }
+    n = a->n;
+    if (n == UINT32_MAX) {
+        return FNAV_E_RANGE;
+    }
+    if (n == 0u) {
+        a->y0 = y;
+    }
+    /* phase x_n = x_{n-1} + (y - y0), Kahan-compensated */
+    d = (y - a->y0) - a->pc;
+    t = a->ph + d;
+    a->pc = (t - a->ph) - d;
+    a->ph = t;
+    a->n = ++n;
+
+    x = (t - a->base0) - a->pc;
+    w = n & RING0_MASK;
+    a->ring0[w] = x;
+    if (w < FNAV_ALLAN_BLOCK) {
+        a->ring0[w + FNAV_ALLAN_RING0] = x; /* the repeated head */
+    }
+    if ((((n + 1u) & (FNAV_ALLAN_BLOCK - 1u)) == 0u) | ((n & ((1u << FNAV_ALLAN_LEVEL_FIRST) - 1u)) == 0u) |
+        (a->nlate0 < a->npt0)) {
+        push_rare(a, n, w);
+    }
+    return FNAV_OK;
+}
+
+size_t fnav_allan_count(const fnav_allan_t *a)
+{
+    return a != NULL ? a->npt : 0u;
+}
+
+uint32_t fnav_allan_samples(const fnav_allan_t *a)
+{
+    return a != NULL ? a->n : 0u;
+}
+
+fnav_status_t fnav_allan_get(const fnav_allan_t *a, size_t i, fnav_allan_result_t *out)
+{
+    const fnav_allan_point_t *p;
+    uint32_t k, m;
+    fnav_real_t tau, so, sn;
+    if (a == NULL || out == NULL || i >= a->npt) {
+        return FNAV_E_ARG;
+    }
+    p = &a->pt[i];
+    m = p->lag;
+    k = a->n >> p->level; /* phase values at the level: k + 1 */
+    out->level = p->level;
+    out->stride = 1u << p->level;
+    out->lag = m;
+    out->tau = m << p->level;
+    out->n_phase = k + 1u;
+    out->terms = (k >= 2u * m) ? k + 1u - 2u * m : 0u;
+    out->terms_nonoverlap = (k >= 2u * m) ? k / m - 1u : 0u;
+    tau = (fnav_real_t)out->tau;
+    so = p->so - p->co;
+    sn = p->sn - p->cn;
+    if (p->level == 0u && !p->late && a->n % FNAV_ALLAN_BLOCK != FNAV_ALLAN_BLOCK - 1u) {
+        /* the terms of the block in progress: end indices lo .. n */
+        const uint32_t lo = a->n - a->n % FNAV_ALLAN_BLOCK;
+        so += terms0(a, m, lo, a->n, 1u);
+        sn += terms0(a, m, next_multiple(lo, m), a->n, m);
+    }
+    out->avar = out->terms > 0u ? so / (FNAV_R(2.0) * tau * tau * (fnav_real_t)out->terms) : (fnav_real_t)NAN;
+    out->avar_nonoverlap = out->terms_nonoverlap > 0u
+                               ? sn / (FNAV_R(2.0) * tau * tau * (fnav_real_t)out->terms_nonoverlap)
+                               : (fnav_real_t)NAN;
+    return FNAV_OK;
+}
+
+/* ------------------------------------------------------------ noise type */
+
+fnav_allan_noise_t fnav_allan_noise_from_slope(fnav_real_t slope)
+{
+    if (!fnav_isfinite(slope)) {
+        return FNAV_ALLAN_NOISE_UNKNOWN;
+    }
+    if (slope < FNAV_R(-0.75)) {
+        return FNAV_ALLAN_NOISE_QUANT;
+    }
+    if (slope < FNAV_R(-0.25)) {
+        return FNAV_ALLAN_NOISE_WHITE;
+    }
+    if (slope < FNAV_R(0.25)) {
+        return FNAV_ALLAN_NOISE_FLICKER;
+    }
+    if (slope < FNAV_R(0.75)) {
+        return FNAV_ALLAN_NOISE_RRW;
+    }
+    return FNAV_ALLAN_NOISE_RAMP;
+}
+
+const char *fnav_allan_noise_name(fnav_allan_noise_t t)
+{
+    switch (t) {
+    case FNAV_ALLAN_NOISE_QUANT: return "quantisation";
+    case FNAV_ALLAN_NOISE_WHITE: return "white";
+    case FNAV_ALLAN_NOISE_FLICKER: return "flicker";
+    case FNAV_ALLAN_NOISE_RRW: return "rate-random-walk";
+    case FNAV_ALLAN_NOISE_RAMP: return "ramp";
+    case FNAV_ALLAN_NOISE_UNKNOWN: break;
+    }
+    return "unknown";
+}
+
+int fnav_allan_noise_alpha(fnav_allan_noise_t t)
+{
+    switch (t) {
+    case FNAV_ALLAN_NOISE_QUANT: return 2;
+    case FNAV_ALLAN_NOISE_FLICKER: return -1;
+    case FNAV_ALLAN_NOISE_RRW: /* fall through: a ramp is not a power law; use the nearest */
+    case FNAV_ALLAN_NOISE_RAMP: return -2;
+    case FNAV_ALLAN_NOISE_WHITE:
+    case FNAV_ALLAN_NOISE_UNKNOWN: break;
+    }
+    return 0;
+}
+
+static int usable(const fnav_allan_result_t *r)
+{
+    return r->terms > 0u && fnav_isfinite(r->avar) && r->avar > FNAV_R(0.0);
+}
+
+void fnav_allan_slopes(const fnav_allan_result_t *r, size_t n, fnav_real_t *slope)
+{
+    size_t i;
+    if (r == NULL || slope == NULL) {
+        return;
+    }
+    for (i = 0; i < n; i++) {
+        fnav_real_t sx = FNAV_R(0.0), sy = FNAV_R(0.0), sxx = FNAV_R(0.0), sxy = FNAV_R(0.0), cnt = FNAV_R(0.0);
+        size_t k, lo = i > 0 ? i - 1 : 0, hi = i + 1 < n ? i + 1 : i;
+        slope[i] = (fnav_real_t)NAN;
+        if (!usable(&r[i])) {
+            continue;
+        }
+        for (k = lo; k <= hi; k++) {
+            fnav_real_t lx, ly;
+            if (!usable(&r[k])) {
+                continue;
+            }
+            lx = fnav_log((fnav_real_t)r[k].tau);
+            ly = FNAV_R(0.5) * fnav_log(r[k].avar); /* log ADEV */
+            sx += lx;
+            sy += ly;
+            sxx += lx * lx;
+            sxy += lx * ly;
+            cnt += FNAV_R(1.0);
+        }
+        if (cnt >= FNAV_R(2.0)) {
+            const fnav_real_t den = cnt * sxx - sx * sx;
+            if (den > FNAV_R(0.0)) {
+                slope[i] = (cnt * sxy - sx * sy) / den;
+            }
+        }
+    }
+}
+
+/* ------------------------------------------------------------ EDF */
+/* Greenhall & Riley (PTTI 2003), eqs. (7)-(10) and tables 1-3, for the
+ * unmodified Allan variance (d = 2). F is the filter factor (m for the
+ * unmodified variance, INFINITY for its large-m limit), S the stride factor
+ * (m overlapping, 1 non-overlapping). */
+
+#define EDF_JMAX 100.0
+
+static double gh_sw(double t, int alpha)
+{
+    const double at = fabs(t);
+    switch (alpha) {
+    case 2: return -at;
+    case 1: return at > 0.0 ? t * t * log(at) : 0.0;
+    case 0: return at * at * at;
+    case -1: return at > 0.0 ? t * t * t * t * log(at) : 0.0;
+    case -2: return at * at * at * at * at;
+    case -3: return at > 0.0 ? t * t * t * t * t * t * log(at) : 0.0;
+    case -4: return at * at * at * at * at * at * at;
+    default: return 0.0;
+    }
+}
+
+static double gh_sx(double t, double F, int alpha)
+{
+    if (isinf(F)) {
+        return gh_sw(t, alpha + 2);
+    }
+    return F * F * (2.0 * gh_sw(t, alpha) - gh_sw(t - 1.0 / F, alpha) - gh_sw(t + 1.0 / F, alpha));
+}
+
+static double gh_sz(double t, double F, int alpha)
+{
+    /* d = 2: binomial weights 6, -4, -4, 1, 1 (eq. 9) */
+    return 6.0 * gh_sx(t, F, alpha) - 4.0 * gh_sx(t - 1.0, F, alpha) - 4.0 * gh_sx(t + 1.0, F, alpha) +
+           gh_sx(t - 2.0, F, alpha) + gh_sx(t + 2.0, F, alpha);
+}
+
+static double gh_basic_sum(double J, double M, double S, double F, int alpha)
+{
+    double s = gh_sz(0.0, F, alpha), sum;
+    const long jn = (long)J; /* J is a whole number (<= EDF_JMAX) */
+    long j;
+    sum = s * s;
+    s = gh_sz(J / S, F, alpha);
+    sum += (1.0 - J / M) * s * s;
+    for (j = 1; j < jn; j++) {
+        s = gh_sz((double)j / S, F, alpha);
+        sum += 2.0 * (1.0 - (double)j / M) * s * s;
+    }
+    return sum;
+}
+
+double fnav_allan_edf(int alpha, uint32_t m_u, uint32_t n_phase, int overlapping)
+{
+    /* Table 2 (d = 2 column), rows alpha = 2, 1, 0, -1, -2: (a0, a1) */
+    static const double t2[5][2] = {
+        { 35.0 / 18.0, 1.0 }, { 790.0, 410.0 }, { 2.0 / 3.0, 1.0 / 3.0 }, { 0.852, 0.375 }, { 1.079, 0.368 },
+    };
+    const double d = 2.0, m = (double)m_u, N = (double)n_phase;
+    /* filter factor F = m (unmodified variance), stride factor S */
+    const double S = overlapping ? m : 1.0;
+    const double L = 1.0 + m * d; /* m / F + m d */
+    double M, J, r, inv;
+    if (alpha < -2 || alpha > 2 || m_u == 0u || N < L + 1.0) {
+        return -1.0;
+    }
+    M = 1.0 + floor(S * (N - L) / m);
+    J = M < (d + 1.0) * S ? M : (d + 1.0) * S;
+    r = M / S;
+    if (alpha <= 0 || alpha == 2) {
+        /* case 2 (alpha <= 0) and, through the basic sum, case 4 (alpha = 2) */
+        if (J <= EDF_JMAX) {
+            const double mp = (alpha == 2 || m * (d + 1.0) <= EDF_JMAX) ? m : (double)INFINITY;
+            const double z0 = gh_sz(0.0, mp, alpha);
+            inv = gh_basic_sum(J, M, S, mp, alpha) / (z0 * z0 * M);
+        } else if (alpha == 2) {
+            const double *a = t2[0];
+            inv = (1.0 / M) * (a[0] - a[1] / r); /* case 4, K > d */
+        } else if (r > d + 1.0) {
+            const double *a = t2[2 - alpha];
+            inv = (1.0 / r) * (a[0] - a[1] / r);
+        } else {
+            const double mp = EDF_JMAX / r;
+            const double z0 = gh_sz(0.0, (double)INFINITY, alpha);
+            inv = gh_basic_sum(EDF_JMAX, EDF_JMAX, mp, (double)INFINITY, alpha) / (z0 * z0 * EDF_JMAX);
+        }
+    } else {
+        /* case 3, alpha = 1; table 3 (d = 2): b0 = 15.23, b1 = 12.0 */
+        const double b = 15.23 + 12.0 * log(m);
+        if (J <= EDF_JMAX) {
+            const double z0 = gh_sz(0.0, m, 1);
+            inv = gh_basic_sum(J, M, S, m, 1) / (z0 * z0 * M);
+        } else if (r > d + 1.0) {
+            inv = (1.0 / (b * b * r)) * (t2[1][0] - t2[1][1] / r);
+        } else {
+            const double mp = EDF_JMAX / r;
+            inv = gh_basic_sum(EDF_JMAX, EDF_JMAX, mp, mp, 1) / (b * b * EDF_JMAX);
+        }
+    }
+    return inv > 0.0 ? 1.0 / inv : -1.0;
+}
+
+/* ------------------------------------------------------------ paper id */
+
+fnav_status_t fnav_allan_identify_paper(const fnav_allan_result_t *r, size_t n, fnav_real_t rate_hz,
+                                        uint32_t tau_max, fnav_allan_paper_id_t *id)
+{
+    size_t i, imin = 0, nvalid = 0, lo = n, hi = n;
+    fnav_real_t best = FNAV_REAL_MAX, one_s;
+    if (r == NULL || id == NULL || !(rate_hz > FNAV_R(0.0)) || !fnav_isfinite(rate_hz)) {
+        return FNAV_E_ARG;
+    }
+    one_s = rate_hz; /* 1 s in samples */
+    for (i = 0; i < n; i++) {
+        if (!usable(&r[i])) {
+            continue;
+        }
+        nvalid++;
+        if ((fnav_real_t)r[i].tau <= one_s) {
+            lo = i;
+        }
+        if ((fnav_real_t)r[i].tau >= one_s && hi == n) {
+            hi = i;
+        }
+        if ((tau_max == 0u || r[i].tau <= tau_max) && r[i].avar < best) {
+            best = r[i].avar;
+            imin = i;
+        }
+    }
+    if (nvalid < 2u || lo == n || hi == n || best == FNAV_REAL_MAX) {
+        return FNAV_E_RANGE;
+    }
+    /* sigma_v: ADEV at 1 s, interpolated in log-log (section III.C.1) */
+    if (lo == hi) {
+        id->sigma_v = fnav_sqrt(r[lo].avar);
+    } else {
+        const fnav_real_t x0 = fnav_log((fnav_real_t)r[lo].tau), x1 = fnav_log((fnav_real_t)r[hi].tau);
+        const fnav_real_t y0 = FNAV_R(0.5) * fnav_log(r[lo].avar), y1 = FNAV_R(0.5) * fnav_log(r[hi].avar);
+        const fnav_real_t u = (fnav_log(one_s) - x0) / (x1 - x0);
+        id->sigma_v = fnav_exp(y0 + u * (y1 - y0));
+    }
+    /* BS and t_BS: the minimum, refined by a parabola in log-log through the
+     * minimum grid point and its neighbours when both are usable */
+    {
+        fnav_real_t lt = fnav_log((fnav_real_t)r[imin].tau), la = FNAV_R(0.5) * fnav_log(r[imin].avar);
+        if (imin > 0 && imin + 1 < n && usable(&r[imin - 1]) && usable(&r[imin + 1]) &&
+            (tau_max == 0u || r[imin + 1].tau <= tau_max)) {
+            const fnav_real_t x0 = fnav_log((fnav_real_t)r[imin - 1].tau), x2 = fnav_log((fnav_real_t)r[imin + 1].tau);
+            const fnav_real_t y0 = FNAV_R(0.5) * fnav_log(r[imin - 1].avar);
+            const fnav_real_t y2 = FNAV_R(0.5) * fnav_log(r[imin + 1].avar);
+            /* divided differences of the parabola through (x0,y0), (lt,la), (x2,y2) */
+            const fnav_real_t d1 = (la - y0) / (lt - x0), d2 = (y2 - la) / (x2 - lt);
+            const fnav_real_t c2 = (d2 - d1) / (x2 - x0);
+            if (c2 > FNAV_R(0.0)) {
+                fnav_real_t xv = FNAV_R(0.5) * (x0 + lt) - d1 / (FNAV_R(2.0) * c2);
+                xv = fnav_clamp(xv, x0, x2);
+                la = y0 + d1 * (xv - x0) + c2 * (xv - x0) * (xv - lt);
+                lt = xv;
+            }
+        }
+        id->bs = fnav_exp(la);
+        id->tau_samples = fnav_exp(lt); /* eq. (5): tau = t_BS f_s */
+        id->t_bs_s = id->tau_samples / rate_hz;
+        id->sigma_bias = id->bs / fnav_sqrt(id->tau_samples); /* eq. (6) */
+        id->i_min = (uint32_t)imin;
+    }
+    return FNAV_OK;
+}

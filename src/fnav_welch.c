@@ -1,0 +1,288 @@
+/* Streaming Welch PSD and the lowest usable sampling frequency
+ * (see fnav_welch.h, docs/psd.md). */
+#include "footnav/fnav_welch.h"
+
+#include <string.h>
+
+const fnav_welch_config_t fnav_welch_config_default = {
+    64u, 32u, FNAV_WINDOW_HAMMING, 0, FNAV_DETREND_CONSTANT, FNAV_SCALING_DENSITY, FNAV_R(1.0), FNAV_R(0.0)
+};
+
+const fnav_bandwidth_config_t fnav_bandwidth_config_default = { FNAV_R(0.95), FNAV_R(50.0), 0 };
+
+fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
+{
+    const fnav_welch_config_t *c = cfg != NULL ? cfg : &fnav_welch_config_default;
+    uint32_t i;
+    double s1 = 0.0, s2 = 0.0, w1r = 0.0, w1i = 0.0;
+    if (w == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (c->nfft < 8u || c->nfft > FNAV_WELCH_MAX_NFFT || (c->nfft & (c->nfft - 1u)) != 0u ||
+        c->overlap >= c->nfft || (unsigned)c->window > (unsigned)FNAV_WINDOW_RECT ||
+        (unsigned)c->detrend > (unsigned)FNAV_DETREND_GLOBAL ||
+        (c->detrend == FNAV_DETREND_GLOBAL && c->symmetric) || (unsigned)c->scaling > (unsigned)FNAV_SCALING_SPECTRUM ||
+        !(c->rate_hz > FNAV_R(0.0)) || !fnav_isfinite(c->rate_hz) || !fnav_isfinite(c->offset)) {
+        return FNAV_E_CONFIG;
+    }
+    memset(w, 0, sizeof *w);
+    w->cfg = *c;
+    if (fnav_fft_init(&w->fft, c->nfft) != FNAV_OK) {
+        return FNAV_E_CONFIG;
+    }
+    for (i = 0; i < c->nfft; i++) {
+        /* periodic: L = N (DFT-even, scipy get_window); symmetric: L = N - 1 */
+        const double L = (double)(c->symmetric ? c->nfft - 1u : c->nfft);
+        const double ph = 6.283185307179586476925 * (double)i / L;
+        double v;
+        switch (c->window) {
+        case FNAV_WINDOW_HAMMING: v = 0.54 - 0.46 * cos(ph); break;
+        case FNAV_WINDOW_HANN: v = 0.5 - 0.5 * cos(ph); break;
+        default: v = 1.0; break;
+        }
+        w->win[i] = (fnav_real_t)v;
+        s1 += (double)w->win[i];
+        s2 += (double)w->win[i] * (double)w->win[i];
+        /* W_1 = sum w_n e^(-2 pi i n / N) */
+        w1r += (double)w->win[i] * cos(6.283185307179586476925 * (double)i / (double)c->nfft);
+        w1i -= (double)w->win[i] * sin(6.283185307179586476925 * (double)i / (double)c->nfft);
+    }
+    w->s1 = (fnav_real_t)s1;
+    w->s2 = (fnav_real_t)s2;
+    w->w1r = (fnav_real_t)w1r;
+    w->w1i = (fnav_real_t)w1i;
+    return FNAV_OK;
+}
+
+static inline void kahan_add(fnav_real_t *s, fnav_real_t *c, fnav_real_t v)
+{
+    const fnav_real_t y = v - *c;
+    const fnav_real_t t = *s + y;
+    *c = (t - *s) - y;
+    *s = t;
+}
+
+/* One segment: the last nfft samples of the ring, oldest first. */
+static void segment(fnav_welch_t *w)
+{
+    const uint32_t n = w->cfg.nfft, h = n / 2u;
+    const fnav_real_t *x = w->ring;
+    fnav_real_t *re = w->re, *im = w->im;
+    fnav_real_t a = FNAV_R(0.0), b = FNAV_R(0.0);
+    uint32_t i, p;
+    if (w->cfg.detrend == FNAV_DETREND_CONSTANT || w->cfg.detrend == FNAV_DETREND_LINEAR) {
+        fnav_real_t sum = FNAV_R(0.0), sxy = FNAV_R(0.0);
+        const fnav_real_t c = FNAV_R(0.5) * (fnav_real_t)(n - 1u);
+        for (i = 0, p = w->pos; i < n; i++) {
+            const fnav_real_t v = x[p];
+            sum += v;
+            sxy += ((fnav_real_t)i - c) * v;
+            p = (p + 1u == n) ? 0u : p + 1u;
+        }
+        a = sum / (fnav_real_t)n; /* the segment mean */
+        if (w->cfg.detrend == FNAV_DETREND_LINEAR) {
+            /* least-squares slope about the centre: sum (i - c)^2 = n (n^2 - 1) / 12 */
+            const fnav_real_t nn = (fnav_real_t)n;
+            b = sxy / (nn * (nn * nn - FNAV_R(1.0)) / FNAV_R(12.0));
+            a -= b * c; /* line a + b i */
+        }
+    }
+    /* detrend, window and pack: re[k] = x[2k], im[k] = x[2k+1] */
+    for (i = 0, p = w->pos; i < h; i++) {
+        const fnav_real_t i0 = (fnav_real_t)(2u * i);
+        const fnav_real_t v0 = x[p];
+        fnav_real_t v1;
+        p = (p + 1u == n) ? 0u : p + 1u;
+        v1 = x[p];
+        p = (p + 1u == n) ? 0u : p + 1u;
+        re[i] = (v0 - (a + b * i0)) * w->win[(size_t)2u * i];
+        im[i] = (v1 - (a + b * (i0 + FNAV_R(1.0)))) * w->win[(size_t)2u * i + 1u];
+    }
+    fnav_fft_real_packed(&w->fft, re, im);
+    if (w->cfg.detrend == FNAV_DETREND_GLOBAL) {
+        w->x0 += re[0];
+        w->x1r += re[1];
+        w->x1i += im[1];
+    }
+    for (i = 0; i <= h; i++) {
+        kahan_add(&w->acc[i], &w->accc[i], re[i] * re[i] + im[i] * im[i]);
+    }
+    w->nseg++;
+}
+
+fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x)
+{
+    const uint32_t n = w->cfg.nfft;
+    if (!fnav_isfinite(x)) {
+        return FNAV_E_NANINF;
+    }
+    if (w->cfg.detrend == FNAV_DETREND_GLOBAL) {
+        /* the first sample becomes a fixed shift (any constant cancels in
+         * the global-mean correction) so that the sums stay small */
+        if (w->nsamples == 0u) {
+            w->shift = x - w->cfg.offset;
+        }
+        kahan_add(&w->gs, &w->gc, (x - w->cfg.offset) - w->shift);
+    }
+    w->ring[w->pos] = (x - w->cfg.offset) - w->shift;
+    w->pos = (w->pos + 1u == n) ? 0u : w->pos + 1u;
+    if (w->nsamples != UINT32_MAX) {
+        w->nsamples++;
+    }
+    if (w->fill < n) {
+        w->fill++;
+        if (w->fill == n) {
+            segment(w);
+            w->since = 0;
+        }
+        return FNAV_OK;
+    }
+    if (++w->since == n - w->cfg.overlap) {
+        segment(w);
+        w->since = 0;
+    }
+    return FNAV_OK;
+}
+
+uint32_t fnav_welch_segments(const fnav_welch_t *w)
+{
+    return w != NULL ? w->nseg : 0u;
+}
+
+uint32_t fnav_welch_bins(const fnav_welch_t *w)
+{
+    return w != NULL ? w->cfg.nfft / 2u + 1u : 0u;
+}
+
+fnav_real_t fnav_welch_freq(const fnav_welch_t *w, uint32_t k)
+{
+    return (fnav_real_t)k * w->cfg.rate_hz / (fnav_real_t)w->cfg.nfft;
+}
+
+/* Scale of bin k: one-sided (x2 except DC and Nyquist), density or spectrum. */
+static fnav_real_t bin_scale(const fnav_welch_t *w, uint32_t k)
+{
+    const uint32_t h = w->cfg.nfft / 2u;
+    const fnav_real_t base = w->cfg.scaling == FNAV_SCALING_DENSITY ? FNAV_R(1.0) / (w->cfg.rate_hz * w->s2)
+                                                                    : FNAV_R(1.0) / (w->s1 * w->s1);
+    return (k == 0u || k == h) ? base : FNAV_R(2.0) * base;
+}
+
+/* Mean of the samples so far (after offset and shift), for GLOBAL. */
+static fnav_real_t global_mean(const fnav_welch_t *w)
+{
+    return w->nsamples > 0u ? (w->gs - w->gc) / (fnav_real_t)w->nsamples : FNAV_R(0.0);
+}
+
+/* Sum over segments of |X_k - mu W_k|^2 from the sums kept (k = 0, 1; the
+ * periodic window's DFT is zero beyond): sum |X_k|^2 - 2 mu Re(conj(W_k) sum X_k)
+ * + K mu^2 |W_k|^2. */
+static fnav_real_t global_fix(const fnav_welch_t *w, uint32_t k, fnav_real_t acc)
+{
+    const fnav_real_t mu = global_mean(w), K = (fnav_real_t)w->nseg;
+    fnav_real_t v;
+    if (k == 0u) {
+        v = acc - FNAV_R(2.0) * mu * w->s1 * w->x0 + K * mu * mu * w->s1 * w->s1;
+    } else if (k == 1u) {
+        v = acc - FNAV_R(2.0) * mu * (w->w1r * w->x1r + w->w1i * w->x1i) +
+            K * mu * mu * (w->w1r * w->w1r + w->w1i * w->w1i);
+    } else {
+        return acc;
+    }
+    return v > FNAV_R(0.0) ? v : FNAV_R(0.0);
+}
+
+fnav_status_t fnav_welch_get(const fnav_welch_t *w, fnav_real_t *out, size_t n_out)
+{
+    uint32_t k, nb;
+    fnav_real_t inv;
+    if (w == NULL || out == NULL) {
+        return FNAV_E_ARG;
+    }
+    nb = fnav_welch_bins(w);
+    if (n_out < nb) {
+        return FNAV_E_SIZE;
+    }
+    if (w->nseg == 0u) {
+        return FNAV_E_STATE;
+    }
+    inv = FNAV_R(1.0) / (fnav_real_t)w->nseg;
+    for (k = 0; k < nb; k++) {
+        fnav_real_t a = w->acc[k] - w->accc[k];
+        if (w->cfg.detrend == FNAV_DETREND_GLOBAL) {
+            a = global_fix(w, k, a);
+        }
+        out[k] = a * inv * bin_scale(w, k);
+    }
+    return FNAV_OK;
+}
+
+fnav_status_t fnav_welch_last(const fnav_welch_t *w, fnav_real_t *out, size_t n_out)
+{
+    uint32_t k, nb;
+    if (w == NULL || out == NULL) {
+        return FNAV_E_ARG;
+    }
+    nb = fnav_welch_bins(w);
+    if (n_out < nb) {
+        return FNAV_E_SIZE;
+    }
+    if (w->nseg == 0u) {
+        return FNAV_E_STATE;
+    }
+    for (k = 0; k < nb; k++) {
+        fnav_real_t r = w->re[k], i = w->im[k];
+        if (w->cfg.detrend == FNAV_DETREND_GLOBAL && k <= 1u) {
+            const fnav_real_t mu = global_mean(w);
+            r -= mu * (k == 0u ? w->s1 : w->w1r);
+            i -= mu * (k == 0u ? FNAV_R(0.0) : w->w1i);
+        }
+        out[k] = (r * r + i * i) * bin_scale(w, k);
+    }
+    return FNAV_OK;
+}
+
+fnav_status_t fnav_welch_bandwidth(const fnav_real_t *psd, size_t n, fnav_real_t df_hz,
+                                   const fnav_bandwidth_config_t *cfg, fnav_bandwidth_t *out, fnav_real_t *ccdf)
+{
+    const fnav_bandwidth_config_t *c = cfg != NULL ? cfg : &fnav_bandwidth_config_default;
+    const size_t k0 = c->exclude_dc ? 1u : 0u;
+    const fnav_real_t fmax = (fnav_real_t)(n - 1u) * df_hz;
+    fnav_real_t total = FNAV_R(0.0), comp = FNAV_R(0.0), target, cum = FNAV_R(0.0);
+    size_t k;
+    int found = 0;
+    if (psd == NULL || out == NULL || n < 2u || !(df_hz > FNAV_R(0.0)) || !(c->threshold > FNAV_R(0.0)) ||
+        !(c->threshold <= FNAV_R(1.0)) || !(c->round_hz >= FNAV_R(0.0))) {
+        return FNAV_E_ARG;
+    }
+    for (k = k0; k < n; k++) {
+        kahan_add(&total, &comp, psd[k] * df_hz); /* power in bin k: P_k df (Parseval) */
+    }
+    total -= comp;
+    if (!(total > FNAV_R(0.0)) || !fnav_isfinite(total)) {
+        return FNAV_E_RANGE;
+    }
+    out->total = total;
+    target = c->threshold * total;
+    comp = FNAV_R(0.0);
+    out->bandwidth_hz = fmax;
+    for (k = 0; k < n; k++) {
+        const fnav_real_t lo = k == 0u ? FNAV_R(0.0) : ((fnav_real_t)k - FNAV_R(0.5)) * df_hz;
+        const fnav_real_t hi = k + 1u == n ? fmax : ((fnav_real_t)k + FNAV_R(0.5)) * df_hz;
+        const fnav_real_t p = k < k0 ? FNAV_R(0.0) : psd[k] * df_hz;
+        const fnav_real_t before = cum - comp;
+        kahan_add(&cum, &comp, p);
+        if (!found && cum - comp >= target) {
+            const fnav_real_t frac = p > FNAV_R(0.0) ? (target - before) / p : FNAV_R(1.0);
+            out->bandwidth_hz = lo + fnav_clamp(frac, FNAV_R(0.0), FNAV_R(1.0)) * (hi - lo);
+            found = 1;
+        }
+        if (ccdf != NULL) {
+            const fnav_real_t r = FNAV_R(1.0) - (cum - comp) / total;
+            ccdf[k] = r > FNAV_R(0.0) ? r : FNAV_R(0.0);
+        }
+    }
+    out->fs_hz = FNAV_R(2.0) * out->bandwidth_hz;
+    out->fs_rounded_hz = c->round_hz > FNAV_R(0.0) ? fnav_ceil(out->fs_hz / c->round_hz) * c->round_hz : out->fs_hz;
+    return FNAV_OK;
+}

@@ -1,0 +1,850 @@
+/* Tests of the streaming Allan estimator (src/fnav_allan.c) and of the
+ * harness identification (harness/hx_allan_ident.c).
+ *
+ * References: NIST SP 1065 NBS14 sets and Stable32 results on PHASE.DAT
+ * (../shared/data/allan_reference), a numpy extended-precision vector
+ * (vectors/allan/gen_allan.py), analytic results. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "footnav/fnav_allan.h"
+#include "footnav/fnav_profile.h"
+#include "support/fnav_testdata.h"
+#include "hx_allan_ident.h"
+#include "hx_log.h"
+#include "hx_profile.h"
+
+/* Reference tables of NIST SP 1065 / Stable32 are published to 1e-4
+ * relative (and Stable32 prints 5 digits). */
+#define REF_TOL 1e-4
+
+/* ------------------------------------------------------------ helpers */
+
+/* Read numbers from a text file (one per line, '#' comments); returns count. */
+static size_t read_numbers(const char *path, double *out, size_t max)
+{
+    FILE *f = fopen(path, "r");
+    char line[256];
+    size_t n = 0;
+    if (f == NULL) {
+        return 0;
+    }
+    while (fgets(line, sizeof line, f) != NULL && n < max) {
+        char *end;
+        double v;
+        if (line[0] == '#') {
+            continue;
+        }
+        v = strtod(line, &end);
+        if (end != line) {
+            out[n++] = v;
+        }
+    }
+    fclose(f);
+    return n;
+}
+
+typedef struct {
+    uint32_t tau;
+    uint32_t terms;
+    double lo, dev, hi;
+} s32_row_t;
+
+/* Stable32 result file: AF Tau # Alpha MinSigma Sigma MaxSigma */
+static size_t read_stable32(const char *rel, s32_row_t *rows, size_t max)
+{
+    char path[512], line[256];
+    FILE *f;
+    size_t n = 0;
+    if (fnav_testdata_path(rel, path, sizeof path) != 0 || (f = fopen(path, "r")) == NULL) {
+        return 0;
+    }
+    while (fgets(line, sizeof line, f) != NULL && n < max) {
+        unsigned af, terms, alpha;
+        double tau, lo, s, hi;
+        if (line[0] == '#') {
+            continue;
+        }
+        if (sscanf(line, "%u %lf %u %u %lf %lf %lf", &af, &tau, &terms, &alpha, &lo, &s, &hi) == 7) {
+            rows[n].tau = af;
+            rows[n].terms = terms;
+            rows[n].lo = lo;
+            rows[n].dev = s;
+            rows[n].hi = hi;
+            n++;
+        }
+    }
+    fclose(f);
+    return n;
+}
+
+/* PHASE.DAT as frequency data: y_i = x_{i+1} - x_i (tau0 = 1 s). */
+static size_t phasedat_freq(double *y, size_t max)
+{
+    static double x[1100];
+    char path[512];
+    size_t n, i;
+    if (fnav_testdata_path("allan_reference/phasedat/PHASE.DAT", path, sizeof path) != 0) {
+        return 0;
+    }
+    n = read_numbers(path, x, sizeof x / sizeof x[0]);
+    for (i = 0; i + 1 < n && i < max; i++) {
+        y[i] = x[i + 1] - x[i];
+    }
+    return n > 0 ? n - 1 : 0;
+}
+
+/* Run a series through estimators covering the tau list (chunks of
+ * FNAV_ALLAN_MAX_POINTS); results in the order of the list. */
+static void run_series(const double *y, size_t n, const uint32_t *tau, size_t ntau, fnav_allan_result_t *res)
+{
+    static fnav_allan_t a;
+    size_t c, i, k;
+    for (c = 0; c < ntau; c += FNAV_ALLAN_MAX_POINTS) {
+        const size_t cnt = ntau - c < FNAV_ALLAN_MAX_POINTS ? ntau - c : FNAV_ALLAN_MAX_POINTS;
+        const fnav_allan_config_t cfg = { tau + c, cnt };
+        assert_int_equal(fnav_allan_init(&a, &cfg), FNAV_OK);
+        for (i = 0; i < n; i++) {
+            assert_int_equal(fnav_allan_push(&a, (fnav_real_t)y[i]), FNAV_OK);
+        }
+        for (k = 0; k < cnt; k++) {
+            assert_int_equal(fnav_allan_get(&a, k, &res[c + k]), FNAV_OK);
+            assert_int_equal(res[c + k].tau, tau[c + k]);
+        }
+    }
+}
+
+static int skip_without(const char *rel)
+{
+    char path[512];
+    if (fnav_testdata_path(rel, path, sizeof path) != 0) {
+        fnav_test_skip_notice(rel);
+        return 1;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------ NBS14 */
+
+static void test_nbs14_1000(void **state)
+{
+    static double y[1000];
+    static const uint32_t tau[3] = { 1, 10, 100 };
+    /* NIST SP 1065 p. 108 (nbs14_1000pt_expected.csv) */
+    static const double adev[3] = { 2.922319e-01, 9.965736e-02, 3.897804e-02 };
+    static const double oadev[3] = { 2.922319e-01, 9.159953e-02, 3.241343e-02 };
+    fnav_allan_result_t r[3];
+    char path[512];
+    int k;
+    (void)state;
+    if (fnav_testdata_path("allan_reference/nbs14/nbs14_1000pt_frequency.txt", path, sizeof path) != 0) {
+        fnav_test_skip_notice("NBS14 1000-point set");
+        skip();
+    }
+    assert_int_equal(read_numbers(path, y, 1000), 1000);
+    run_series(y, 1000, tau, 3, r);
+    for (k = 0; k < 3; k++) {
+        FNAV_ASSERT_CLOSE(sqrt((double)r[k].avar), oadev[k], 0.0, REF_TOL);
+        FNAV_ASSERT_CLOSE(sqrt((double)r[k].avar_nonoverlap), adev[k], 0.0, REF_TOL);
+        assert_int_equal(r[k].terms, 1001u - 2u * tau[k]);
+        assert_int_equal(r[k].terms_nonoverlap, 1000u / tau[k] - 1u);
+        assert_int_equal(r[k].level, 0);
+    }
+}
+
+static void test_nbs14_10(void **state)
+{
+    /* NIST SP 1065 p. 107: the 9 frequency values */
+    static const double y[9] = { 892.0, 809.0, 823.0, 798.0, 671.0, 644.0, 883.0, 903.0, 677.0 };
+    static const uint32_t tau[2] = { 1, 2 };
+    fnav_allan_result_t r[2];
+    (void)state;
+    run_series(y, 9, tau, 2, r);
+    FNAV_ASSERT_CLOSE(sqrt((double)r[0].avar), 91.22945, 0.0, REF_TOL);
+    FNAV_ASSERT_CLOSE(sqrt((double)r[0].avar_nonoverlap), 91.22945, 0.0, REF_TOL);
+    FNAV_ASSERT_CLOSE(sqrt((double)r[1].avar), 85.95287, 0.0, REF_TOL);
+    FNAV_ASSERT_CLOSE(sqrt((double)r[1].avar_nonoverlap), 115.8082, 0.0, REF_TOL);
+    assert_int_equal(r[1].terms, 6);
+    assert_int_equal(r[1].terms_nonoverlap, 3);
+}
+
+/* ------------------------------------------------------------ PHASE.DAT */
+
+static void check_every_tau(const char *rel, int overlapping)
+{
+    static s32_row_t rows[200];
+    static double y[1100];
+    static uint32_t tau[200];
+    static fnav_allan_result_t r[200];
+    size_t n, ny, i;
+    if (skip_without(rel)) {
+        skip();
+    }
+    n = read_stable32(rel, rows, 200);
+    ny = phasedat_freq(y, 1100);
+    assert_true(n > 100);
+    assert_int_equal(ny, 1000);
+    for (i = 0; i < n; i++) {
+        tau[i] = rows[i].tau;
+        assert_true(fnav_allan_tau_valid(tau[i]));
+    }
+    run_series(y, ny, tau, n, r);
+    for (i = 0; i < n; i++) {
+        const double dev = sqrt((double)(overlapping ? r[i].avar : r[i].avar_nonoverlap));
+        assert_int_equal(r[i].level, 0); /* every tau here is fully overlapping */
+        assert_int_equal(overlapping ? r[i].terms : r[i].terms_nonoverlap, rows[i].terms);
+        FNAV_ASSERT_CLOSE(dev, rows[i].dev, 0.0, REF_TOL);
+    }
+}
+
+static void test_phasedat_oadev_every_tau(void **state)
+{
+    (void)state;
+    check_every_tau("allan_reference/phasedat/phase_dat_oadev.txt", 1);
+}
+
+static void test_phasedat_adev_every_tau(void **state)
+{
+    (void)state;
+    check_every_tau("allan_reference/phasedat/phase_dat_adev.txt", 0);
+}
+
+/* Octave tau with Stable32's confidence limits (0.683, Greenhall EDF, white
+ * FM as Stable32 identified, alpha column 0). The limits agree to the
+ * 5 printed digits up to the rounding of the printed sigma (< 5e-4). */
+static void check_octave(const char *rel, int overlapping)
+{
+    static s32_row_t rows[32];
+    static double y[1100];
+    static uint32_t tau[32];
+    fnav_allan_result_t r[32];
+    size_t n, ny, i;
+    if (skip_without(rel)) {
+        skip();
+    }
+    n = read_stable32(rel, rows, 32);
+    ny = phasedat_freq(y, 1100);
+    assert_int_equal(n, 8);
+    for (i = 0; i < n; i++) {
+        tau[i] = rows[i].tau;
+    }
+    run_series(y, ny, tau, n, r);
+    for (i = 0; i < n; i++) {
+        const double dev = sqrt((double)(overlapping ? r[i].avar : r[i].avar_nonoverlap));
+        const double edf = hx_allan_point_edf(&r[i], FNAV_ALLAN_NOISE_WHITE, overlapping);
+        double lo, hi;
+        assert_int_equal(overlapping ? r[i].terms : r[i].terms_nonoverlap, rows[i].terms);
+        FNAV_ASSERT_CLOSE(dev, rows[i].dev, 0.0, REF_TOL);
+        assert_int_equal(hx_allan_ci(rows[i].dev, edf, 0.683, &lo, &hi), 0);
+        FNAV_ASSERT_CLOSE(lo, rows[i].lo, 0.0, 5e-4);
+        FNAV_ASSERT_CLOSE(hi, rows[i].hi, 0.0, 5e-4);
+    }
+}
+
+static void test_phasedat_oadev_octave_ci(void **state)
+{
+    (void)state;
+    check_octave("allan_reference/phasedat/phase_dat_oadev_octave.txt", 1);
+}
+
+static void test_phasedat_adev_octave_ci(void **state)
+{
+    (void)state;
+    check_octave("allan_reference/phasedat/phase_dat_adev_octave.txt", 0);
+}
+
+/* ------------------------------------------------------------ cascade, float error */
+
+/* The test signal of vectors/allan/gen_allan.py, bit-exact. */
+static double *synthetic_signal(size_t n)
+{
+    double *y = (double *)malloc(n * sizeof *y);
+    uint64_t s = 20240601u;
+    double r = 0.0;
+    const double inv = 1.0 / 4294967296.0;
+    size_t k;
+    int i;
+    assert_non_null(y);
+    for (k = 0; k < n; k++) {
+        double u[4], w;
+        for (i = 0; i < 4; i++) {
+            s = 6364136223846793005u * s + 1442695040888963407u;
+            u[i] = (double)(s >> 32) * inv;
+        }
+        w = ((u[0] + u[1]) + u[2]) - 1.5;
+        r = r + 2e-4 * (u[3] - 0.5);
+        y[k] = ((9.80665 + 0.02 * w) + r) + 1e-7 * (double)k;
+    }
+    return y;
+}
+
+/* Largest relative error of the float build against the extended-precision
+ * reference on 1.1e6 samples (docs/allan.md, "float32 error"): measured
+ * 6.1e-7 (overlapping) and 8.6e-7 (non-overlapping), asserted at 1e-5 (the
+ * input itself is rounded to float: 9.8 carries 24 bits). */
+#if FNAV_USE_DOUBLE
+#define SYN_TOL 1e-9
+#else
+#define SYN_TOL 1e-5
+#endif
+
+static void test_synthetic_every_level(void **state)
+{
+    const size_t n = 1100000;
+    static fnav_allan_t a;
+    char path[512], line[256];
+    FILE *f;
+    double *y, worst = 0.0, worst_n = 0.0;
+    size_t i, rows = 0, levels_seen = 0;
+    uint32_t last_level = 0;
+    (void)state;
+    assert_int_equal(fnav_vector_path("allan/allan_synthetic.csv", path, sizeof path), 0);
+    y = synthetic_signal(n);
+    assert_int_equal(fnav_allan_init(&a, NULL), FNAV_OK);
+    for (i = 0; i < n; i++) {
+        assert_int_equal(fnav_allan_push(&a, (fnav_real_t)y[i]), FNAV_OK);
+    }
+    free(y);
+    f = fopen(path, "r");
+    assert_non_null(f);
+    while (fgets(line, sizeof line, f) != NULL) {
+        unsigned tau, level, terms, terms_n;
+        double avar, avar_n;
+        fnav_allan_result_t r;
+        if (sscanf(line, "%u,%u,%u,%u,%lf,%lf", &tau, &level, &terms, &terms_n, &avar, &avar_n) != 6) {
+            continue;
+        }
+        assert_int_equal(fnav_allan_get(&a, rows, &r), FNAV_OK);
+        assert_int_equal(r.tau, tau);
+        assert_int_equal(r.level, level);
+        assert_int_equal(r.terms, terms);
+        assert_int_equal(r.terms_nonoverlap, terms_n);
+        FNAV_ASSERT_CLOSE(r.avar, avar, 0.0, SYN_TOL);
+        FNAV_ASSERT_CLOSE(r.avar_nonoverlap, avar_n, 0.0, SYN_TOL);
+        if (fabs((double)r.avar / avar - 1.0) > worst) {
+            worst = fabs((double)r.avar / avar - 1.0);
+        }
+        if (fabs((double)r.avar_nonoverlap / avar_n - 1.0) > worst_n) {
+            worst_n = fabs((double)r.avar_nonoverlap / avar_n - 1.0);
+        }
+        if (level != last_level) {
+            levels_seen++;
+            last_level = level;
+        }
+        rows++;
+    }
+    fclose(f);
+    assert_true(rows >= 38);       /* tau up to 2^19 */
+    assert_true(levels_seen >= 10); /* the cascade is exercised */
+    fprintf(stderr, "[  INFO    ] %s build: largest relative AVAR error %.2g (overlapping), %.2g (non-overlapping)\n",
+            FNAV_USE_DOUBLE ? "double" : "float", worst, worst_n);
+}
+
+/* allantools (third party, full overlap at every tau) on ADIS16405 log 1:
+ * identical estimator for tau <= 255 samples; beyond, the cascade uses a
+ * stride of tau/m (m 5..8), a statistically equivalent estimate: it must
+ * stay within half a standard error of the full-overlap value, the standard
+ * error of the deviation being 1/sqrt(2 EDF) relative (measured: at most
+ * 0.34 standard errors, at tau = 26 % of the record; below 0.11 up to 10 %). */
+static void test_allantools_adis(void **state)
+{
+    static const char *const cols[6] = { "gx", "gy", "gz", "ax", "ay", "az" };
+    char path[512], ref[512], line[512];
+    hx_log_t log;
+    FILE *f;
+    static double y[1000000];
+    static uint32_t tau[32];
+    static double refv[32][6];
+    static fnav_allan_result_t r[32];
+    fnav_real_t slope[32];
+    size_t nt = 0, i;
+    int c;
+    char err[320];
+    (void)state;
+    if (fnav_testdata_path("adis16405_static/adis16405_imu1_100Hz.csv.gz", path, sizeof path) != 0 ||
+        fnav_testdata_path("allan_reference/derived_thirdparty/adis16405_imu1_oadev_allantools.csv", ref,
+                           sizeof ref) != 0) {
+        fnav_test_skip_notice("ADIS16405 log 1 / allantools cross-check");
+        skip();
+    }
+    f = fopen(ref, "r");
+    assert_non_null(f);
+    while (fgets(line, sizeof line, f) != NULL && nt < 32) {
+        double t, m, v[6];
+        if (sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &t, &m, &v[0], &v[1], &v[2], &v[3], &v[4], &v[5]) == 8) {
+            tau[nt] = (uint32_t)m;
+            for (c = 0; c < 6; c++) {
+                refv[nt][c] = v[c];
+            }
+            nt++;
+        }
+    }
+    fclose(f);
+    assert_true(nt >= 15);
+    assert_int_equal(hx_log_load(&log, path, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.n, 1000000);
+    for (c = 0; c < 6; c++) {
+        /* allantools columns: gyro deg/s, accel g */
+        for (i = 0; i < log.n; i++) {
+            y[i] = c < 3 ? log.gyr[i][c] * 57.29577951308232 : log.acc[i][c - 3] / 9.80665;
+        }
+        run_series(y, log.n, tau, nt, r);
+        fnav_allan_slopes(r, nt, slope);
+        for (i = 0; i < nt; i++) {
+            const double dev = sqrt((double)r[i].avar);
+            if (tau[i] <= FNAV_ALLAN_TAU_FULL_MAX) {
+                FNAV_ASSERT_CLOSE(dev, refv[i][c], 0.0, FNAV_USE_DOUBLE ? 1e-6 : 1e-5);
+            } else {
+                const double edf = hx_allan_point_edf(&r[i], fnav_allan_noise_from_slope(slope[i]), 1);
+                assert_true(edf > 0.0);
+                FNAV_ASSERT_CLOSE(dev, refv[i][c], 0.0, 0.5 / sqrt(2.0 * edf));
+            }
+        }
+        (void)cols;
+    }
+    hx_log_free(&log);
+}
+
+/* ------------------------------------------------------------ API */
+
+static void test_memory_bound(void **state)
+{
+    (void)state;
+#if !FNAV_USE_DOUBLE
+    assert_true(sizeof(fnav_allan_t) <= 4096u);
+#endif
+    assert_true(FNAV_ALLAN_TAU_MAX >= 864000ul); /* 10 % of 12 h at 200 Hz */
+    assert_true(fnav_allan_tau_valid((uint32_t)FNAV_ALLAN_TAU_MAX));
+}
+
+static void test_config_errors(void **state)
+{
+    static fnav_allan_t a;
+    static const uint32_t bad_order[3] = { 1, 4, 2 };
+    static const uint32_t not_representable[2] = { 1, 257 }; /* odd beyond the full-rate ring */
+    static const uint32_t too_big[1] = { 1u << 22 };
+    static const uint32_t zero[1] = { 0 };
+    uint32_t many[FNAV_ALLAN_MAX_POINTS + 1];
+    fnav_allan_config_t cfg;
+    size_t i;
+    (void)state;
+    for (i = 0; i < FNAV_ALLAN_MAX_POINTS + 1u; i++) {
+        many[i] = (uint32_t)i + 1u;
+    }
+    assert_int_equal(fnav_allan_init(NULL, NULL), FNAV_E_ARG);
+    cfg.tau = bad_order;
+    cfg.n_tau = 3;
+    assert_int_equal(fnav_allan_init(&a, &cfg), FNAV_E_CONFIG);
+    cfg.tau = not_representable;
+    cfg.n_tau = 2;
+    assert_int_equal(fnav_allan_init(&a, &cfg), FNAV_E_CONFIG);
+    cfg.tau = too_big;
+    cfg.n_tau = 1;
+    assert_int_equal(fnav_allan_init(&a, &cfg), FNAV_E_CONFIG);
+    cfg.tau = zero;
+    assert_int_equal(fnav_allan_init(&a, &cfg), FNAV_E_CONFIG);
+    cfg.tau = many;
+    cfg.n_tau = 0;
+    assert_int_equal(fnav_allan_init(&a, &cfg), FNAV_E_CONFIG);
+    cfg.n_tau = FNAV_ALLAN_MAX_POINTS + 1u;
+    assert_int_equal(fnav_allan_init(&a, &cfg), FNAV_E_CONFIG);
+    cfg.n_tau = FNAV_ALLAN_MAX_POINTS;
+    assert_int_equal(fnav_allan_init(&a, &cfg), FNAV_OK);
+    assert_int_equal(fnav_allan_count(&a), FNAV_ALLAN_MAX_POINTS);
+    assert_false(fnav_allan_tau_valid(9u << 6));
+    assert_true(fnav_allan_tau_valid(7u << 10));
+}
+
+static void test_bad_samples_leave_state(void **state)
+{
+    static fnav_allan_t a, copy;
+    fnav_allan_result_t r;
+    int i;
+    (void)state;
+    assert_int_equal(fnav_allan_init(&a, NULL), FNAV_OK);
+    for (i = 0; i < 100; i++) {
+        assert_int_equal(fnav_allan_push(&a, (fnav_real_t)(i % 7)), FNAV_OK);
+    }
+    copy = a;
+    assert_int_equal(fnav_allan_push(&a, (fnav_real_t)NAN), FNAV_E_NANINF);
+    assert_int_equal(fnav_allan_push(&a, (fnav_real_t)INFINITY), FNAV_E_NANINF);
+    assert_memory_equal(&a, &copy, sizeof a);
+    a.n = UINT32_MAX;
+    assert_int_equal(fnav_allan_push(&a, FNAV_R(1.0)), FNAV_E_RANGE);
+    assert_int_equal(fnav_allan_get(&copy, 1000, &r), FNAV_E_ARG);
+    assert_int_equal(fnav_allan_get(&copy, 0, NULL), FNAV_E_ARG);
+    /* no term yet: NaN, zero counts */
+    assert_int_equal(fnav_allan_init(&a, NULL), FNAV_OK);
+    assert_int_equal(fnav_allan_push(&a, FNAV_R(1.0)), FNAV_OK);
+    assert_int_equal(fnav_allan_get(&a, 0, &r), FNAV_OK);
+    assert_int_equal(r.terms, 0);
+    assert_true(isnan((double)r.avar));
+}
+
+static void test_grid(void **state)
+{
+    uint32_t g[128];
+    size_t n, i;
+    (void)state;
+    n = fnav_allan_grid(g, 128, 1u << 20, 1);
+    assert_int_equal(n, 21);
+    for (i = 0; i < n; i++) {
+        assert_int_equal(g[i], 1u << i);
+    }
+    n = fnav_allan_grid(g, 128, 1000, 2);
+    assert_int_equal(g[0], 1);
+    assert_int_equal(g[1], 2);
+    assert_int_equal(g[2], 3);
+    assert_int_equal(g[n - 1], 768);
+    n = fnav_allan_grid(g, 128, 1u << 20, 4);
+    for (i = 0; i < n; i++) {
+        assert_true(fnav_allan_tau_valid(g[i]));
+        if (i > 0) {
+            assert_true(g[i] > g[i - 1]);
+        }
+    }
+    assert_int_equal(g[n - 1], 1u << 20);
+    assert_int_equal(fnav_allan_grid(g, 3, 1u << 20, 4), 3);
+}
+
+/* ------------------------------------------------------------ noise types */
+
+static void test_noise_from_slope(void **state)
+{
+    (void)state;
+    assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(-1.0)), FNAV_ALLAN_NOISE_QUANT);
+    assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(-0.5)), FNAV_ALLAN_NOISE_WHITE);
+    assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(0.1)), FNAV_ALLAN_NOISE_FLICKER);
+    assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(0.5)), FNAV_ALLAN_NOISE_RRW);
+    assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(1.1)), FNAV_ALLAN_NOISE_RAMP);
+    assert_int_equal(fnav_allan_noise_from_slope((fnav_real_t)NAN), FNAV_ALLAN_NOISE_UNKNOWN);
+    assert_int_equal(fnav_allan_noise_alpha(FNAV_ALLAN_NOISE_FLICKER), -1);
+    assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_RRW), "rate-random-walk");
+}
+
+/* Simulated pure white noise and pure random walk: the local slopes and
+ * noise types of the streaming estimate. */
+static void test_noise_types_simulated(void **state)
+{
+    static fnav_allan_t a, b;
+    static fnav_allan_result_t ra[FNAV_ALLAN_MAX_POINTS], rb[FNAV_ALLAN_MAX_POINTS];
+    fnav_real_t sa[FNAV_ALLAN_MAX_POINTS], sb[FNAV_ALLAN_MAX_POINTS];
+    hx_noise_model_t white = { 1.0, 0.0, 0.0, 0.0, 0.0 }, rw = { 0.0, 0.0, 0.0, 0.0, 1.0 };
+    hx_noise_sim_t s1, s2;
+    size_t i, n;
+    uint32_t k;
+    (void)state;
+    assert_int_equal(fnav_allan_init(&a, NULL), FNAV_OK);
+    assert_int_equal(fnav_allan_init(&b, NULL), FNAV_OK);
+    assert_int_equal(hx_noise_sim_init(&s1, &white, 100.0, 7), 0);
+    assert_int_equal(hx_noise_sim_init(&s2, &rw, 100.0, 8), 0);
+    for (k = 0; k < 200000u; k++) {
+        assert_int_equal(fnav_allan_push(&a, (fnav_real_t)hx_noise_sim_next(&s1)), FNAV_OK);
+        assert_int_equal(fnav_allan_push(&b, (fnav_real_t)hx_noise_sim_next(&s2)), FNAV_OK);
+    }
+    hx_noise_sim_free(&s1);
+    hx_noise_sim_free(&s2);
+    n = fnav_allan_count(&a);
+    for (i = 0; i < n; i++) {
+        assert_int_equal(fnav_allan_get(&a, i, &ra[i]), FNAV_OK);
+        assert_int_equal(fnav_allan_get(&b, i, &rb[i]), FNAV_OK);
+    }
+    fnav_allan_slopes(ra, n, sa);
+    fnav_allan_slopes(rb, n, sb);
+    for (i = 0; i < n; i++) {
+        if (ra[i].tau > 2000u) {
+            break; /* enough terms for a clear slope below 1 % of the record */
+        }
+        assert_int_equal(fnav_allan_noise_from_slope(sa[i]), FNAV_ALLAN_NOISE_WHITE);
+        assert_int_equal(fnav_allan_noise_from_slope(sb[i]), FNAV_ALLAN_NOISE_RRW);
+        /* white: ADEV(tau) = N / sqrt(tau_s) within 3 standard errors (1/sqrt(2 EDF)) */
+        FNAV_ASSERT_CLOSE(sqrt((double)ra[i].avar), 1.0 / sqrt((double)ra[i].tau / 100.0), 0.0,
+                          3.0 / sqrt(2.0 * hx_allan_point_edf(&ra[i], FNAV_ALLAN_NOISE_WHITE, 1)));
+    }
+}
+
+/* ------------------------------------------------------------ identification */
+
+/* A table from an analytic model on the default grid, with term counts of
+ * a record of n samples (the model values are exact). */
+static size_t analytic_table(const hx_noise_model_t *m, double fs, uint32_t n, fnav_allan_result_t *r)
+{
+    static fnav_allan_t a;
+    size_t i, cnt;
+    assert_int_equal(fnav_allan_init(&a, NULL), FNAV_OK);
+    a.n = n; /* only the term counts are taken from the estimator */
+    cnt = fnav_allan_count(&a);
+    for (i = 0; i < cnt; i++) {
+        assert_int_equal(fnav_allan_get(&a, i, &r[i]), FNAV_OK);
+        r[i].avar = (fnav_real_t)hx_noise_model_avar(m, fs, (double)r[i].tau);
+    }
+    return cnt;
+}
+
+static void test_paper_identification_arithmetic(void **state)
+{
+    /* white N = 0.01 u/sqrt(Hz) plus a flicker floor 1e-3 u: ADEV^2 = N^2/tau + B^2
+     * has no minimum; add a rate random walk so that it turns up */
+    hx_noise_model_t m = { 0.01, 0.0, 0.0, 0.0, 2e-5 };
+    fnav_allan_result_t r[FNAV_ALLAN_MAX_POINTS];
+    fnav_allan_paper_id_t id;
+    const double fs = 200.0;
+    size_t n = analytic_table(&m, fs, 8640000u, r), i, imin = 0;
+    (void)state;
+    for (i = 0; i < n; i++) {
+        if (r[i].avar < r[imin].avar) {
+            imin = i;
+        }
+    }
+    assert_int_equal(fnav_allan_identify_paper(r, n, (fnav_real_t)fs, 0, &id), FNAV_OK);
+    /* sigma_v: ADEV at 1 s = sqrt(N^2 + K^2/3) (log-log interpolation between 192 and 256 samples) */
+    FNAV_ASSERT_CLOSE(id.sigma_v, sqrt(hx_noise_model_avar(&m, fs, 200.0)), 0.0, 2e-3);
+    /* minimum of N^2/t + K^2 t/3 at t = sqrt(3) N / K */
+    FNAV_ASSERT_CLOSE(id.t_bs_s, sqrt(3.0) * 0.01 / 2e-5, 0.0, 0.05);
+    FNAV_ASSERT_CLOSE(id.bs, sqrt(2.0 * 0.01 * 2e-5 / sqrt(3.0)), 0.0, 0.01);
+    FNAV_ASSERT_CLOSE(id.tau_samples, (double)id.t_bs_s * fs, 0.0, 1e-6);                    /* eq. 5 */
+    FNAV_ASSERT_CLOSE(id.sigma_bias, (double)id.bs / sqrt((double)id.tau_samples), 0.0, 1e-6); /* eq. 6 */
+    assert_int_equal(id.i_min, imin);
+    /* 1 s outside the table */
+    assert_int_equal(fnav_allan_identify_paper(r, 3, (fnav_real_t)fs, 0, &id), FNAV_E_RANGE);
+    assert_int_equal(fnav_allan_identify_paper(NULL, n, (fnav_real_t)fs, 0, &id), FNAV_E_ARG);
+}
+
+/* The model's Allan variance against the definition: Var(mean) - Cov of
+ * adjacent means from the autocovariance, summed directly. */
+static void test_model_avar_exact(void **state)
+{
+    static const double ms[5] = { 1.0, 2.0, 7.0, 64.0, 300.0 };
+    static const double Ts[3] = { 0.05, 2.0, 500.0 };
+    const double fs = 100.0;
+    int i, j;
+    (void)state;
+    for (j = 0; j < 3; j++) {
+        const double c = exp(-1.0 / (Ts[j] * fs));
+        hx_noise_model_t m = { 0.0, 1.0, 0.0, 0.0, 0.0 };
+        m.gm_tau_s = Ts[j];
+        for (i = 0; i < 5; i++) {
+            const int mm = (int)ms[i];
+            long double var = 0.0L, cov = 0.0L;
+            int p, q;
+            for (p = 0; p < mm; p++) {
+                for (q = 0; q < mm; q++) {
+                    var += powl((long double)c, (long double)abs(p - q));
+                    cov += powl((long double)c, (long double)(q + mm - p));
+                }
+            }
+            FNAV_ASSERT_CLOSE(hx_noise_model_avar(&m, fs, ms[i]), (double)((var - cov) / (long double)(mm * mm)),
+                              1e-15, 2e-4);
+        }
+    }
+    {
+        /* white, quantisation and random walk against their textbook forms */
+        hx_noise_model_t w = { 0.3, 0.0, 0.0, 0.0, 0.0 }, q = { 0.0, 0.0, 0.0, 0.2, 0.0 },
+                         k = { 0.0, 0.0, 0.0, 0.0, 0.5 };
+        FNAV_ASSERT_CLOSE(hx_noise_model_avar(&w, fs, 250.0), 0.09 / 2.5, 0.0, 1e-12);
+        FNAV_ASSERT_CLOSE(hx_noise_model_avar(&q, fs, 250.0), 3.0 * 0.04 / 6.25, 0.0, 1e-12);
+        FNAV_ASSERT_CLOSE(hx_noise_model_avar(&k, fs, 250000.0), 0.25 * 2500.0 / 3.0, 0.0, 1e-6);
+    }
+}
+
+/* The AR(1) ADEV peak: 0.6174 sigma at 1.893 T (hx_allan_ident.h). */
+static void test_gm_peak(void **state)
+{
+    hx_noise_model_t m = { 0.0, 2.0, 50.0, 0.0, 0.0 };
+    const double fs = 100.0;
+    double best = 0.0, best_tau = 0.0, t;
+    (void)state;
+    for (t = 10.0; t < 1000.0; t *= 1.001) {
+        const double v = sqrt(hx_noise_model_avar(&m, fs, t * fs));
+        if (v > best) {
+            best = v;
+            best_tau = t;
+        }
+    }
+    FNAV_ASSERT_CLOSE(best, HX_GM_PEAK_RATIO * 2.0, 0.0, 1e-3);
+    FNAV_ASSERT_CLOSE(best_tau, HX_GM_PEAK_TAU * 50.0, 0.0, 0.01);
+}
+
+/* The least-squares fit recovers the parameters of an exact table, and the
+ * paper's identification of that table does not reproduce it. */
+static void test_fit_recovers_model(void **state)
+{
+    hx_noise_model_t truth = { 0.004, 0.002, 30.0, 0.0, 0.0 }, fit;
+    hx_allan_quality_t q;
+    hx_allan_ident_t id;
+    hx_allan_fit_opts_t o = hx_allan_fit_opts_default;
+    fnav_allan_result_t r[FNAV_ALLAN_MAX_POINTS];
+    const double fs = 100.0;
+    size_t n = analytic_table(&truth, fs, 2000000u, r);
+    (void)state;
+    o.tau_max_s = 2000.0;
+    assert_int_equal(hx_allan_fit(r, n, fs, &o, &fit, &q), 0);
+    FNAV_ASSERT_CLOSE(fit.white, truth.white, 0.0, 1e-3);
+    FNAV_ASSERT_CLOSE(fit.gm_sigma, truth.gm_sigma, 0.0, 1e-3);
+    FNAV_ASSERT_CLOSE(fit.gm_tau_s, truth.gm_tau_s, 0.0, 1e-3);
+    assert_true(q.rms_log10 < 1e-4);
+    assert_int_equal(hx_allan_identify(r, n, fs, &o, &id), 0);
+    assert_true(id.paper_ok && id.fit_ok);
+    /* eq. 4 reading: the AR(1) bump is far too small */
+    assert_true(id.paper_quality.rms_log10 > 0.1);
+    assert_true(id.fit_quality.rms_log10 < 1e-4);
+    /* extra terms when asked */
+    {
+        hx_noise_model_t t2 = { 0.004, 0.002, 30.0, 0.0, 1e-4 };
+        n = analytic_table(&t2, fs, 2000000u, r);
+        o.with_rrw = 1;
+        assert_int_equal(hx_allan_fit(r, n, fs, &o, &fit, &q), 0);
+        FNAV_ASSERT_CLOSE(fit.rrw, 1e-4, 0.0, 0.02);
+        FNAV_ASSERT_CLOSE(fit.gm_sigma, 0.002, 0.0, 0.02);
+    }
+    /* too few points */
+    assert_int_equal(hx_allan_fit(r, 3, fs, &o, &fit, &q), -1);
+}
+
+/* Simulated white + AR(1): the fit of the streaming table lands close to the
+ * simulated parameters (statistical tolerance). */
+static void test_fit_simulated(void **state)
+{
+    hx_noise_model_t truth = { 0.01, 0.004, 20.0, 0.0, 0.0 };
+    hx_allan_ident_t id;
+    hx_allan_fit_opts_t o = hx_allan_fit_opts_default;
+    fnav_allan_result_t r[FNAV_ALLAN_MAX_POINTS];
+    const double fs = 100.0;
+    size_t n = hx_allan_simulate(&truth, fs, 1000000u, 42, NULL, r);
+    (void)state;
+    assert_true(n > 30);
+    o.tau_max_s = 1000.0;
+    assert_int_equal(hx_allan_identify(r, n, fs, &o, &id), 0);
+    assert_true(id.fit_ok);
+    FNAV_ASSERT_CLOSE(id.fit.white, truth.white, 0.0, 0.02);
+    FNAV_ASSERT_CLOSE(id.fit.gm_sigma, truth.gm_sigma, 0.0, 0.25);
+    FNAV_ASSERT_CLOSE(id.fit.gm_tau_s, truth.gm_tau_s, 0.0, 0.5);
+    assert_true(id.fit_quality.rms_log10 < 0.05);
+}
+
+static void test_sim_statistics(void **state)
+{
+    hx_noise_model_t m = { 0.02, 0.5, 0.1, 0.0, 0.0 };
+    hx_noise_sim_t s;
+    double sum = 0.0, sum2 = 0.0;
+    const int n = 400000;
+    int k;
+    (void)state;
+    assert_int_equal(hx_noise_sim_init(&s, &m, 100.0, 3), 0);
+    for (k = 0; k < n; k++) {
+        const double v = hx_noise_sim_next(&s);
+        sum += v;
+        sum2 += v * v;
+    }
+    hx_noise_sim_free(&s);
+    /* variance = sigma_b^2 + N^2 f_s = 0.25 + 0.04 */
+    FNAV_ASSERT_CLOSE(sum2 / n - (sum / n) * (sum / n), 0.29, 0.0, 0.03);
+    m.gm_tau_s = 0.0;
+    assert_int_equal(hx_noise_sim_init(&s, &m, 100.0, 3), -1);
+}
+
+/* ------------------------------------------------------------ paper tables, profiles */
+
+/* The built-in profiles are the paper's Tables IV-VI (a few cells checked
+ * against the printed tables, all in the paper's units). */
+static void test_paper_tables_builtin(void **state)
+{
+    fnav_profile_t p;
+    const fnav_profile_paper_row_t *t;
+    const double d2r = 3.14159265358979323846 / 180.0;
+    (void)state;
+    t = fnav_profile_paper_table(FNAV_PROFILE_NAVCHIP);
+    assert_non_null(t);
+    FNAV_ASSERT_CLOSE(t[0].noise, 7.4e-4, 0.0, 1e-12);
+    FNAV_ASSERT_CLOSE(t[5].tau_samples, 10000.0, 0.0, 0.0);
+    FNAV_ASSERT_CLOSE(t[3].sigma_bias, 8.5e-5, 0.0, 1e-12);
+    t = fnav_profile_paper_table(FNAV_PROFILE_MTX);
+    FNAV_ASSERT_CLOSE(t[5].tau_samples, 144000.0, 0.0, 0.0);
+    FNAV_ASSERT_CLOSE(t[2].sigma_bias, 2.5e-6, 0.0, 1e-12);
+    t = fnav_profile_paper_table(FNAV_PROFILE_SHIMMER);
+    FNAV_ASSERT_CLOSE(t[4].sigma_bias, 5.3e-4, 0.0, 1e-12);
+    assert_int_equal(fnav_profile_builtin(&p, FNAV_PROFILE_SHIMMER), FNAV_OK);
+    FNAV_ASSERT_CLOSE(p.gyro_tau_s[1], 800.0 / 200.0, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(p.gyro_noise_rps_rthz[0], 1.9e-2 * d2r, 0.0, 1e-6);
+}
+
+/* The paper's own rows, read through eqs. (4) and (6): the AR(1) bump the
+ * model produces is 0.6174 / sqrt(tau) of the bias stability the row encodes. */
+static void test_paper_tables_inconsistent(void **state)
+{
+    int t, k;
+    (void)state;
+    for (t = 0; t < FNAV_PROFILE_COUNT; t++) {
+        const fnav_profile_paper_row_t *row = fnav_profile_paper_table((fnav_profile_id_t)t);
+        for (k = 0; k < 6; k++) {
+            fnav_allan_paper_id_t id;
+            hx_noise_model_t m;
+            const double bs = row[k].sigma_bias * sqrt(row[k].tau_samples);
+            double peak = 0.0, tt;
+            memset(&id, 0, sizeof id);
+            id.sigma_v = (fnav_real_t)row[k].noise;
+            id.sigma_bias = (fnav_real_t)row[k].sigma_bias;
+            id.tau_samples = (fnav_real_t)row[k].tau_samples;
+            hx_noise_model_paper_reading(&id, 200.0, HX_PAPER_EQ4, &m);
+            m.white = 0.0;
+            for (tt = 1.0; tt < 1e7; tt *= 1.05) {
+                const double v = sqrt(hx_noise_model_avar(&m, 200.0, tt));
+                peak = v > peak ? v : peak;
+            }
+            assert_true(peak < 0.03 * bs); /* the bump is 30x to 600x below the bias stability */
+        }
+    }
+}
+
+static void test_profile_roundtrip(void **state)
+{
+    fnav_profile_t p, q;
+    char err[320];
+    const char *path = "build/test_allan_roundtrip.profile";
+    (void)state;
+    assert_int_equal(fnav_profile_builtin(&p, FNAV_PROFILE_MTX), FNAV_OK);
+    assert_int_equal(hx_profile_write_extra(path, &p, "test", "gyro_rrw_rps_rts = 1e-5 2e-5 3e-5\nident_samples = 5\n",
+                                            err, sizeof err),
+                     0);
+    assert_int_equal(hx_profile_read(path, &q, err, sizeof err), 0);
+    FNAV_ASSERT_CLOSE(q.gyro_tau_s[2], p.gyro_tau_s[2], 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(q.accel_bias_sigma_mps2[0], p.accel_bias_sigma_mps2[0], 0.0, 1e-6);
+    remove(path);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_nbs14_1000),
+        cmocka_unit_test(test_nbs14_10),
+        cmocka_unit_test(test_phasedat_oadev_every_tau),
+        cmocka_unit_test(test_phasedat_adev_every_tau),
+        cmocka_unit_test(test_phasedat_oadev_octave_ci),
+        cmocka_unit_test(test_phasedat_adev_octave_ci),
+        cmocka_unit_test(test_synthetic_every_level),
+        cmocka_unit_test(test_allantools_adis),
+        cmocka_unit_test(test_memory_bound),
+        cmocka_unit_test(test_config_errors),
+        cmocka_unit_test(test_bad_samples_leave_state),
+        cmocka_unit_test(test_grid),
+        cmocka_unit_test(test_noise_from_slope),
+        cmocka_unit_test(test_noise_types_simulated),
+        cmocka_unit_test(test_paper_identification_arithmetic),
+        cmocka_unit_test(test_model_avar_exact),
+        cmocka_unit_test(test_gm_peak),
+        cmocka_unit_test(test_fit_recovers_model),
+        cmocka_unit_test(test_fit_simulated),
+        cmocka_unit_test(test_sim_statistics),
+        cmocka_unit_test(test_paper_tables_builtin),
+        cmocka_unit_test(test_paper_tables_inconsistent),
+        cmocka_unit_test(test_profile_roundtrip),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,376 @@
+/* Tests of the streaming Welch PSD and the bandwidth rule (src/fnav_welch.c)
+ * against scipy.signal.welch vectors (vectors/welch/gen_welch.py) and
+ * analytic cases. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "footnav/fnav_welch.h"
+#include "support/fnav_testdata.h"
+
+/* Per-bin relative tolerance against scipy: 1e-6 in double (the issue's
+ * requirement; measured 3e-13). Float: the input itself is rounded to 24
+ * bits and a 9.81 offset sits under 0.3 of signal; measured worst 2.0e-4
+ * relative to its bin (low bins of the sidelobe floor) and 5.2e-7 relative
+ * to the largest bin; asserted per bin at 1e-3 relative to the bin or 1e-6
+ * of the largest bin, whichever is larger. */
+#if FNAV_USE_DOUBLE
+#define BIN_REL 1e-6
+#define PEAK_REL 0.0
+#define BAND_REL 1e-9
+#else
+#define BIN_REL 1e-3
+#define PEAK_REL 1e-6
+#define BAND_REL 1e-4
+#endif
+
+static size_t read_series(const char *rel, double *x, size_t max)
+{
+    char path[512], line[128];
+    FILE *f;
+    size_t n = 0;
+    if (fnav_vector_path(rel, path, sizeof path) != 0 || (f = fopen(path, "r")) == NULL) {
+        return 0;
+    }
+    while (fgets(line, sizeof line, f) != NULL && n < max) {
+        if (line[0] != '#') {
+            x[n++] = strtod(line, NULL);
+        }
+    }
+    fclose(f);
+    return n;
+}
+
+typedef struct {
+    char name[64], input[16], window[16], detrend[16], scaling[16];
+    double fs;
+    unsigned nfft, overlap, nbins;
+    int sym;
+} vcase_t;
+
+static int parse_case(const char *line, vcase_t *c)
+{
+    return sscanf(line, "case,%63[^,],%15[^,],%lf,%u,%u,%15[^,],%d,%15[^,],%15[^,],%u", c->name, c->input, &c->fs,
+                  &c->nfft, &c->overlap, c->window, &c->sym, c->detrend, c->scaling, &c->nbins) == 10;
+}
+
+static void config_of(const vcase_t *c, fnav_welch_config_t *cfg)
+{
+    *cfg = fnav_welch_config_default;
+    cfg->nfft = c->nfft;
+    cfg->overlap = c->overlap;
+    cfg->window = strcmp(c->window, "hamming") == 0 ? FNAV_WINDOW_HAMMING
+                  : strcmp(c->window, "hann") == 0  ? FNAV_WINDOW_HANN
+                                                    : FNAV_WINDOW_RECT;
+    cfg->symmetric = c->sym;
+    cfg->detrend = strcmp(c->detrend, "none") == 0       ? FNAV_DETREND_NONE
+                   : strcmp(c->detrend, "constant") == 0 ? FNAV_DETREND_CONSTANT
+                   : strcmp(c->detrend, "global") == 0   ? FNAV_DETREND_GLOBAL
+                                                         : FNAV_DETREND_LINEAR;
+    cfg->scaling = strcmp(c->scaling, "density") == 0 ? FNAV_SCALING_DENSITY : FNAV_SCALING_SPECTRUM;
+    cfg->rate_hz = (fnav_real_t)c->fs;
+}
+
+static void test_against_scipy(void **state)
+{
+    static double synth[6000], os820[9000];
+    static fnav_welch_t w;
+    static fnav_real_t psd[FNAV_WELCH_MAX_BINS];
+    static double expect[FNAV_WELCH_MAX_BINS];
+    char path[512], line[256];
+    size_t nsyn, nos, i;
+    FILE *f;
+    int ncases = 0, nbands = 0;
+    double worst = 0.0, worst_peak = 0.0;
+    vcase_t c, cur;
+    (void)state;
+    nsyn = read_series("welch/welch_input_synth.txt", synth, 6000);
+    nos = read_series("welch/welch_input_os820.txt", os820, 9000);
+    assert_int_equal(nsyn, 5000);
+    assert_int_equal(nos, 8192);
+    assert_int_equal(fnav_vector_path("welch/welch_expected.csv", path, sizeof path), 0);
+    f = fopen(path, "r");
+    assert_non_null(f);
+    memset(&cur, 0, sizeof cur);
+    while (1) {
+        char *got = fgets(line, sizeof line, f);
+        int is_case = got != NULL && parse_case(line, &c);
+        if ((got == NULL || is_case || strncmp(line, "band,", 5) == 0) && cur.nbins > 0) {
+            /* run the previous case */
+            fnav_welch_config_t cfg;
+            const double *x = strcmp(cur.input, "synth") == 0 ? synth : os820;
+            const size_t n = strcmp(cur.input, "synth") == 0 ? nsyn : nos;
+            double peak = 0.0;
+            config_of(&cur, &cfg);
+            assert_int_equal(fnav_welch_init(&w, &cfg), FNAV_OK);
+            for (i = 0; i < n; i++) {
+                assert_int_equal(fnav_welch_push(&w, (fnav_real_t)x[i]), FNAV_OK);
+            }
+            assert_int_equal(fnav_welch_segments(&w), (n - cur.nfft) / (cur.nfft - cur.overlap) + 1u);
+            assert_int_equal(fnav_welch_bins(&w), cur.nbins);
+            assert_int_equal(fnav_welch_get(&w, psd, FNAV_WELCH_MAX_BINS), FNAV_OK);
+            for (i = 0; i < cur.nbins; i++) {
+                peak = expect[i] > peak ? expect[i] : peak;
+            }
+            for (i = 0; i < cur.nbins; i++) {
+                const double e = fabs((double)psd[i] - expect[i]);
+                if (e / expect[i] > worst) {
+                    worst = e / expect[i];
+                }
+                if (e / peak > worst_peak) {
+                    worst_peak = e / peak;
+                }
+                if (!(e <= BIN_REL * expect[i] || e <= PEAK_REL * peak)) {
+                    fprintf(stderr, "case %s bin %zu: %.9g vs %.9g\n", cur.name, i, (double)psd[i], expect[i]);
+                    fail();
+                }
+            }
+            ncases++;
+            cur.nbins = 0;
+        }
+        if (got == NULL) {
+            break;
+        }
+        if (is_case) {
+            cur = c;
+            continue;
+        }
+        if (strncmp(line, "band,", 5) == 0) {
+            /* band,case,threshold,round,exclude_dc,bandwidth,fs_rounded: re-run that case */
+            char name[64];
+            double thr, rnd, bw, fsr;
+            int ex;
+            fnav_bandwidth_config_t bc;
+            fnav_bandwidth_t out;
+            vcase_t bcase;
+            FILE *g;
+            char l2[256];
+            int found = 0;
+            assert_int_equal(sscanf(line, "band,%63[^,],%lf,%lf,%d,%lf,%lf", name, &thr, &rnd, &ex, &bw, &fsr), 6);
+            g = fopen(path, "r");
+            assert_non_null(g);
+            while (fgets(l2, sizeof l2, g) != NULL) {
+                if (parse_case(l2, &bcase) && strcmp(bcase.name, name) == 0) {
+                    found = 1;
+                    break;
+                }
+            }
+            fclose(g);
+            assert_true(found);
+            {
+                fnav_welch_config_t cfg;
+                const double *x = strcmp(bcase.input, "synth") == 0 ? synth : os820;
+                const size_t n = strcmp(bcase.input, "synth") == 0 ? nsyn : nos;
+                config_of(&bcase, &cfg);
+                assert_int_equal(fnav_welch_init(&w, &cfg), FNAV_OK);
+                for (i = 0; i < n; i++) {
+                    assert_int_equal(fnav_welch_push(&w, (fnav_real_t)x[i]), FNAV_OK);
+                }
+                assert_int_equal(fnav_welch_get(&w, psd, FNAV_WELCH_MAX_BINS), FNAV_OK);
+            }
+            bc.threshold = (fnav_real_t)thr;
+            bc.round_hz = (fnav_real_t)rnd;
+            bc.exclude_dc = ex;
+            assert_int_equal(fnav_welch_bandwidth(psd, bcase.nbins, (fnav_real_t)(bcase.fs / bcase.nfft), &bc, &out,
+                                                  NULL),
+                             FNAV_OK);
+            FNAV_ASSERT_CLOSE(out.bandwidth_hz, bw, 0.0, BAND_REL);
+            FNAV_ASSERT_CLOSE(out.fs_rounded_hz, fsr, 0.0, 0.0);
+            nbands++;
+            continue;
+        }
+        if (line[0] != '#' && cur.nbins > 0) {
+            unsigned k;
+            double v;
+            assert_int_equal(sscanf(line, "%u,%lf", &k, &v), 2);
+            assert_true(k < cur.nbins);
+            expect[k] = v;
+        }
+    }
+    fclose(f);
+    assert_int_equal(ncases, 12);
+    assert_int_equal(nbands, 6);
+    fprintf(stderr, "[  INFO    ] %s build: worst per-bin error vs scipy %.2g relative to the bin, %.2g relative "
+                    "to the largest bin\n",
+            FNAV_USE_DOUBLE ? "double" : "float", worst, worst_peak);
+}
+
+/* The mean of the per-segment spectra (fnav_welch_last) is the Welch average. */
+static void test_last_segment_average(void **state)
+{
+    static fnav_welch_t w;
+    static fnav_real_t one[FNAV_WELCH_MAX_BINS], avg[FNAV_WELCH_MAX_BINS];
+    static double sum[FNAV_WELCH_MAX_BINS];
+    fnav_welch_config_t cfg = fnav_welch_config_default;
+    uint32_t k, seen = 0;
+    int i;
+    (void)state;
+    cfg.rate_hz = FNAV_R(100.0);
+    assert_int_equal(fnav_welch_init(&w, &cfg), FNAV_OK);
+    assert_int_equal(fnav_welch_last(&w, one, FNAV_WELCH_MAX_BINS), FNAV_E_STATE);
+    assert_int_equal(fnav_welch_get(&w, avg, FNAV_WELCH_MAX_BINS), FNAV_E_STATE);
+    memset(sum, 0, sizeof sum);
+    for (i = 0; i < 3000; i++) {
+        assert_int_equal(fnav_welch_push(&w, (fnav_real_t)(sin(0.3 * i) + 0.01 * (i % 17))), FNAV_OK);
+        if (fnav_welch_segments(&w) > seen) {
+            seen = fnav_welch_segments(&w);
+            assert_int_equal(fnav_welch_last(&w, one, FNAV_WELCH_MAX_BINS), FNAV_OK);
+            for (k = 0; k < fnav_welch_bins(&w); k++) {
+                sum[k] += (double)one[k];
+            }
+        }
+    }
+    assert_int_equal(fnav_welch_get(&w, avg, FNAV_WELCH_MAX_BINS), FNAV_OK);
+    for (k = 0; k < fnav_welch_bins(&w); k++) {
+        FNAV_ASSERT_CLOSE(avg[k], sum[k] / seen, 1e-12, FNAV_USE_DOUBLE ? 1e-12 : 1e-5);
+    }
+    assert_int_equal(fnav_welch_get(&w, avg, 10), FNAV_E_SIZE);
+}
+
+/* Parseval: with a rectangular window and no detrending, the one-sided
+ * density integrates to the mean square of the segments (analytic). */
+static void test_parseval(void **state)
+{
+    static fnav_welch_t w;
+    static fnav_real_t p[FNAV_WELCH_MAX_BINS];
+    fnav_welch_config_t cfg = fnav_welch_config_default;
+    double ms = 0.0, integral = 0.0;
+    uint32_t k;
+    int i;
+    (void)state;
+    cfg.window = FNAV_WINDOW_RECT;
+    cfg.detrend = FNAV_DETREND_NONE;
+    cfg.overlap = 0;
+    cfg.nfft = 128;
+    cfg.rate_hz = FNAV_R(50.0);
+    assert_int_equal(fnav_welch_init(&w, &cfg), FNAV_OK);
+    for (i = 0; i < 1280; i++) {
+        const double v = 2.0 + cos(0.05 * i * i); /* chirp with an offset */
+        ms += v * v;
+        assert_int_equal(fnav_welch_push(&w, (fnav_real_t)v), FNAV_OK);
+    }
+    assert_int_equal(fnav_welch_get(&w, p, FNAV_WELCH_MAX_BINS), FNAV_OK);
+    for (k = 0; k < fnav_welch_bins(&w); k++) {
+        integral += (double)p[k] * 50.0 / 128.0;
+    }
+    FNAV_ASSERT_CLOSE(integral, ms / 1280.0, 0.0, FNAV_USE_DOUBLE ? 1e-12 : 1e-5);
+    FNAV_ASSERT_CLOSE(fnav_welch_freq(&w, 64), 25.0, 0.0, 1e-7);
+}
+
+/* Bandwidth on spectra whose answer is known. */
+static void test_bandwidth_analytic(void **state)
+{
+    fnav_real_t p[33], ccdf[33];
+    fnav_bandwidth_t out;
+    fnav_bandwidth_config_t c = fnav_bandwidth_config_default;
+    const fnav_real_t df = FNAV_R(12.8125); /* 820 Hz / 64 */
+    int k;
+    (void)state;
+    /* one tone in bin 9: 95 % of it is reached 95 % across the bin */
+    for (k = 0; k < 33; k++) {
+        p[k] = k == 9 ? FNAV_R(4.0) : FNAV_R(0.0);
+    }
+    assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, ccdf), FNAV_OK);
+    FNAV_ASSERT_CLOSE(out.bandwidth_hz, (9.0 - 0.5 + 0.95) * 12.8125, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(out.fs_hz, 2.0 * (9.0 - 0.5 + 0.95) * 12.8125, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(out.fs_rounded_hz, 250.0, 0.0, 0.0);
+    FNAV_ASSERT_CLOSE(out.total, 4.0 * 12.8125, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(ccdf[8], 1.0, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(ccdf[9], 0.0, 1e-6, 0.0);
+    /* equal tones in bins 2 and 20: the crossing is 90 % into bin 20 */
+    p[9] = FNAV_R(0.0);
+    p[2] = FNAV_R(1.0);
+    p[20] = FNAV_R(1.0);
+    assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_OK);
+    FNAV_ASSERT_CLOSE(out.bandwidth_hz, (20.0 - 0.5 + 0.9) * 12.8125, 0.0, 1e-6);
+    /* a huge DC bin decides the answer unless it is excluded */
+    p[0] = FNAV_R(1000.0);
+    assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_OK);
+    assert_true(out.bandwidth_hz < df * FNAV_R(0.5));
+    c.exclude_dc = 1;
+    assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_OK);
+    FNAV_ASSERT_CLOSE(out.bandwidth_hz, (20.0 - 0.5 + 0.9) * 12.8125, 0.0, 1e-5);
+    /* errors */
+    for (k = 0; k < 33; k++) {
+        p[k] = FNAV_R(0.0);
+    }
+    assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_E_RANGE);
+    c.threshold = FNAV_R(1.5);
+    assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_E_ARG);
+    assert_int_equal(fnav_welch_bandwidth(NULL, 33, df, NULL, &out, NULL), FNAV_E_ARG);
+}
+
+static void test_config_and_bad_input(void **state)
+{
+    static fnav_welch_t w, copy;
+    fnav_welch_config_t c = fnav_welch_config_default;
+    int i;
+    (void)state;
+    assert_int_equal(fnav_welch_init(NULL, NULL), FNAV_E_ARG);
+    c.nfft = 48;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c.nfft = FNAV_WELCH_MAX_NFFT * 2u;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c.nfft = 64;
+    c.overlap = 64;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c.overlap = 32;
+    c.rate_hz = FNAV_R(0.0);
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c.rate_hz = FNAV_R(1.0);
+    c.window = (fnav_window_t)7;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    assert_int_equal(fnav_welch_init(&w, NULL), FNAV_OK);
+    for (i = 0; i < 100; i++) {
+        assert_int_equal(fnav_welch_push(&w, (fnav_real_t)i), FNAV_OK);
+    }
+    copy = w;
+    assert_int_equal(fnav_welch_push(&w, (fnav_real_t)NAN), FNAV_E_NANINF);
+    assert_memory_equal(&w, &copy, sizeof w);
+}
+
+/* The offset is removed before anything else: with no detrending, a
+ * constant offset equal to the signal's mean gives the spectrum of the
+ * zero-mean signal. */
+static void test_offset(void **state)
+{
+    static fnav_welch_t a, b;
+    static fnav_real_t pa[FNAV_WELCH_MAX_BINS], pb[FNAV_WELCH_MAX_BINS];
+    fnav_welch_config_t c = fnav_welch_config_default;
+    uint32_t k;
+    int i;
+    (void)state;
+    c.detrend = FNAV_DETREND_NONE;
+    assert_int_equal(fnav_welch_init(&a, &c), FNAV_OK);
+    c.offset = FNAV_R(9.75);
+    assert_int_equal(fnav_welch_init(&b, &c), FNAV_OK);
+    for (i = 0; i < 2000; i++) {
+        const double v = 0.3 * sin(0.21 * i);
+        assert_int_equal(fnav_welch_push(&a, (fnav_real_t)v), FNAV_OK);
+        assert_int_equal(fnav_welch_push(&b, (fnav_real_t)(v + 9.75)), FNAV_OK);
+    }
+    assert_int_equal(fnav_welch_get(&a, pa, FNAV_WELCH_MAX_BINS), FNAV_OK);
+    assert_int_equal(fnav_welch_get(&b, pb, FNAV_WELCH_MAX_BINS), FNAV_OK);
+    for (k = 0; k < fnav_welch_bins(&a); k++) {
+        FNAV_ASSERT_CLOSE(pb[k], pa[k], FNAV_USE_DOUBLE ? 1e-12 : 1e-6, FNAV_USE_DOUBLE ? 1e-9 : 1e-3);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_against_scipy),
+        cmocka_unit_test(test_last_segment_average),
+        cmocka_unit_test(test_parseval),
+        cmocka_unit_test(test_bandwidth_analytic),
+        cmocka_unit_test(test_config_and_bad_input),
+        cmocka_unit_test(test_offset),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

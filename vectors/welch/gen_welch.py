@@ -1,0 +1,167 @@
+#!/usr/bin/python3
+"""Golden vectors for the streaming Welch PSD (tests/test_welch.c).
+
+Inputs (committed next to this script):
+  welch_input_synth.txt   5000 samples: offset + two sines + LCG noise (below)
+  welch_input_os820.txt   8192 samples of the vertical accelerometer (f_z,
+                          m/s^2) of the OpenShoe 820 Hz walk, rows 10001..18192
+                          of ../shared/data/openshoe_c_820hz/OpenShoeDataSet.txt
+                          (CC BY 4.0, see vectors/README.md)
+Expected: scipy.signal.welch with the same window, overlap, detrending and
+scaling, one-sided, for each case below ("global": welch(x - x.mean(),
+detrend=False)); and the bandwidth holding a fraction
+of the total power by the rule of docs/psd.md (bin k holds P_k df over
+[(k-1/2) df, (k+1/2) df], linear interpolation where the cumulative power
+crosses the threshold), written here independently with numpy.
+
+--check regenerates and compares with the committed files (relative 1e-12).
+--write-os820 re-extracts the real-data excerpt (needs ../shared/data).
+"""
+import os
+import sys
+import numpy as np
+import scipy
+import scipy.signal as sig
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+OUT = os.path.join(HERE, "welch_expected.csv")
+SYN = os.path.join(HERE, "welch_input_synth.txt")
+OS8 = os.path.join(HERE, "welch_input_os820.txt")
+
+# name, input, fs, nperseg, noverlap, window, symmetric, detrend, scaling
+CASES = [
+    ("paper_hamming64", "synth", 820.0, 64, 32, "hamming", 0, "constant", "density"),
+    ("hamming64_sym_nodetrend", "synth", 820.0, 64, 32, "hamming", 1, "none", "density"),
+    ("hann256_linear", "synth", 100.0, 256, 128, "hann", 0, "linear", "density"),
+    ("hann128_75pct_spectrum", "synth", 100.0, 128, 96, "hann", 0, "constant", "spectrum"),
+    ("rect32_nooverlap", "synth", 1.0, 32, 0, "boxcar", 0, "none", "density"),
+    ("hamming1024_constant", "synth", 820.0, 1024, 512, "hamming", 0, "constant", "density"),
+    ("os820_hamming64", "os820", 820.0, 64, 32, "hamming", 0, "constant", "density"),
+    ("os820_hamming1024", "os820", 820.0, 1024, 512, "hamming", 0, "constant", "density"),
+    ("os820_hamming256_nodetrend", "os820", 820.0, 256, 128, "hamming", 0, "none", "density"),
+    ("os820_hamming64_global", "os820", 820.0, 64, 32, "hamming", 0, "global", "density"),
+    ("synth_hann256_global", "synth", 100.0, 256, 100, "hann", 0, "global", "density"),
+    ("synth_rect64_global", "synth", 10.0, 64, 0, "boxcar", 0, "global", "spectrum"),
+]
+# bandwidth checks: case, threshold, round_hz, exclude_dc
+BANDS = [
+    ("os820_hamming64", 0.95, 50.0, 0),
+    ("os820_hamming1024", 0.95, 50.0, 0),
+    ("os820_hamming256_nodetrend", 0.95, 50.0, 0),
+    ("os820_hamming256_nodetrend", 0.95, 50.0, 1),
+    ("paper_hamming64", 0.90, 25.0, 0),
+    ("os820_hamming64_global", 0.95, 50.0, 0),
+]
+
+
+def synth():
+    a, c, mask = 6364136223846793005, 1442695040888963407, (1 << 64) - 1
+    s = 12345
+    y = np.empty(5000)
+    for k in range(5000):
+        s = (a * s + c) & mask
+        u = float(s >> 32) / 4294967296.0
+        y[k] = 9.81 + 0.7 * np.sin(0.0377 * k) + 0.2 * np.sin(1.3 * k + 0.4) + (u - 0.5)
+    return y
+
+
+def window(name, n, sym):
+    if name == "boxcar":
+        return np.ones(n)
+    return sig.get_window(name, n, fftbins=not sym)
+
+
+def welch(x, fs, n, nov, win, sym, detrend, scaling):
+    w = window(win, n, sym)
+    if detrend == "global":
+        # the whole record's mean removed first (footnav's FNAV_DETREND_GLOBAL)
+        x = x - x.mean()
+        detrend = "none"
+    f, p = sig.welch(x, fs=fs, window=w, nperseg=n, noverlap=nov, detrend=False if detrend == "none" else detrend,
+                     scaling=scaling, return_onesided=True)
+    return f, p
+
+
+def bandwidth(p, df, thr, round_hz, exclude_dc):
+    n = len(p)
+    pw = p * df
+    if exclude_dc:
+        pw = pw.copy()
+        pw[0] = 0.0
+    total = pw.sum()
+    cum = np.cumsum(pw)
+    k = int(np.argmax(cum >= thr * total))
+    lo = 0.0 if k == 0 else (k - 0.5) * df
+    hi = (n - 1) * df if k == n - 1 else (k + 0.5) * df
+    before = cum[k] - pw[k]
+    bw = lo + min(max((thr * total - before) / pw[k], 0.0), 1.0) * (hi - lo)
+    fs = 2 * bw
+    return bw, np.ceil(fs / round_hz) * round_hz
+
+
+def read(path):
+    return np.array([float(l) for l in open(path) if l.strip() and not l.startswith("#")])
+
+
+def generate():
+    inputs = {"synth": read(SYN), "os820": read(OS8)}
+    lines = ["# scipy %s numpy %s: scipy.signal.welch (one-sided) and the docs/psd.md bandwidth rule\n"
+             % (scipy.__version__, np.__version__)]
+    spectra = {}
+    for name, inp, fs, n, nov, win, sym, det, sc in CASES:
+        f, p = welch(inputs[inp], fs, n, nov, win, sym, det, sc)
+        spectra[name] = (p, fs / n)
+        lines.append("case,%s,%s,%.17g,%d,%d,%s,%d,%s,%s,%d\n" % (name, inp, fs, n, nov, win, sym, det, sc, len(p)))
+        for k, v in enumerate(p):
+            lines.append("%d,%.17e\n" % (k, v))
+    for name, thr, rnd, ex in BANDS:
+        p, df = spectra[name]
+        bw, fsr = bandwidth(p, df, thr, rnd, ex)
+        lines.append("band,%s,%.17g,%.17g,%d,%.17e,%.17g\n" % (name, thr, rnd, ex, bw, fsr))
+    return lines
+
+
+def compare(old, new):
+    if len(old) != len(new):
+        return "line count differs"
+    for a, b in zip(old[1:], new[1:]):
+        fa, fb = a.strip().split(","), b.strip().split(",")
+        if fa[0] in ("case",) and fa != fb:
+            return "case line differs: " + a
+        if fa[0] == "band":
+            if fa[:5] != fb[:5] or abs(float(fa[5]) - float(fb[5])) > 1e-9 * abs(float(fb[5])) or fa[6] != fb[6]:
+                return "band differs: " + a
+        elif fa[0] != "case":
+            x, y = float(fa[1]), float(fb[1])
+            if abs(x - y) > 1e-12 * abs(y) + 1e-300:
+                return "value differs: %s vs %s" % (a.strip(), b.strip())
+    return None
+
+
+def main():
+    if "--write-os820" in sys.argv:
+        src = os.path.join(HERE, "..", "..", "..", "shared", "data", "openshoe_c_820hz", "OpenShoeDataSet.txt")
+        rows = open(src).read().splitlines()[10000:18192]
+        with open(OS8, "w") as f:
+            f.write("# OpenShoe 820 Hz walk (CC BY 4.0, data OpenShoe ISC): f_z [m/s^2], rows 10001-18192\n")
+            for r in rows:
+                f.write(r.split(",")[2].strip() + "\n")
+    if "--write-synth" in sys.argv or not os.path.exists(SYN):
+        with open(SYN, "w") as f:
+            f.write("# synthetic: 9.81 + 0.7 sin(0.0377 k) + 0.2 sin(1.3 k + 0.4) + (u - 0.5), u from a 64-bit LCG\n")
+            for v in synth():
+                f.write("%.17g\n" % v)
+    lines = generate()
+    if "--check" in sys.argv:
+        err = compare(open(OUT).readlines(), lines)
+        if err:
+            print("gen_welch:", err)
+            return 1
+        return 0
+    with open(OUT, "w") as f:
+        f.writelines(lines)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
