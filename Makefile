@@ -74,8 +74,6 @@ $(HXLIB): $(HX_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
-# The port (in HXLIB) provides fnav_port_assert_failed for the core (LIB):
-# HXLIB is named again after LIB so that single-pass linking resolves it.
 $(HARNESS): $(BUILD)/obj/harness/main.o $(HXLIB) $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(SAN) -o $@ $^ $(HXLIB) $(LDLIBS_HOST)
