@@ -394,6 +394,69 @@ static void test_sampled_strapdown(void **state)
     hx_motion_free(m);
 }
 
+/* Motion-domain signatures (docs/simulator.md): on a walk, the paired
+ * difference with and without the effect (same seed, same filter) is the
+ * effect applied to the filtered signal: scale error = sf x signal,
+ * misalignment = m x the other axis, g-sensitivity = G x specific force
+ * (largest at the heel strikes). Regression recovers each parameter. */
+static double regress(const ticks_t *a, const ticks_t *b, int ch, int drv)
+{
+    double sxy = 0.0, sxx = 0.0;
+    size_t i;
+    for (i = 0; i < a->n; i++) {
+        double ya = ch < 3 ? (double)a->t[i].meas.accel_mps2[ch] : (double)a->t[i].meas.gyro_rps[ch - 3];
+        double yb = ch < 3 ? (double)b->t[i].meas.accel_mps2[ch] : (double)b->t[i].meas.gyro_rps[ch - 3];
+        double x = drv < 3 ? (double)b->t[i].meas.accel_mps2[drv] : (double)b->t[i].meas.gyro_rps[drv - 3];
+        sxy += (ya - yb) * x;
+        sxx += x * x;
+    }
+    return sxy / sxx;
+}
+
+static void test_motion_domain_signatures(void **state)
+{
+    hx_motion_t *m = motion("stand:1,walk:10:90,stand:1", -1.0, 0.0);
+    fnav_imuerr_config_t e0 = ideal(200.0, 10), e = e0;
+    ticks_t base = { 0, 0, NULL }, s = { 0, 0, NULL };
+    char err[256];
+    (void)state;
+    run(m, &e0, 0.0, &base);
+    assert_int_equal(hx_effect_parse(&e, "scale:ch=gy:sf=0.02", err, sizeof err), 0);
+    run(m, &e, 0.0, &s);
+    FNAV_ASSERT_CLOSE(regress(&s, &base, 4, 4), 0.02, 1e-6, 1e-4);
+    e = e0;
+    assert_int_equal(hx_effect_parse(&e, "misalign:ch=gz:from_x=0:from_y=0.01", err, sizeof err), 0);
+    run(m, &e, 0.0, &s);
+    FNAV_ASSERT_CLOSE(regress(&s, &base, 5, 4), 0.01, 1e-6, 1e-4); /* pitch rate leaks into yaw */
+    e = e0;
+    assert_int_equal(hx_effect_parse(&e, "gsens:ch=gx:from_x=0:from_y=0:from_z=3e-4", err, sizeof err), 0);
+    run(m, &e, 0.0, &s);
+    FNAV_ASSERT_CLOSE(regress(&s, &base, 3, 2), 3e-4, 1e-8, 1e-3);
+    {
+        /* the largest gyro error is at the largest |f_z|: a heel strike */
+        size_t i, imax = 0, jmax = 0;
+        double emax = 0.0, fmax = 0.0;
+        for (i = 0; i < s.n; i++) {
+            double d = fabs((double)s.t[i].meas.gyro_rps[0] - (double)base.t[i].meas.gyro_rps[0]);
+            double f = fabs((double)base.t[i].meas.accel_mps2[2]);
+            if (d > emax) {
+                emax = d;
+                imax = i;
+            }
+            if (f > fmax) {
+                fmax = f;
+                jmax = i;
+            }
+        }
+        assert_int_equal(imax, jmax);
+        assert_true(s.t[imax].truth.phase == HX_PHASE_LANDING || s.t[imax].truth.phase == HX_PHASE_SLAP ||
+                    s.t[imax].truth.phase == HX_PHASE_SWING);
+    }
+    free(base.t);
+    free(s.t);
+    hx_motion_free(m);
+}
+
 static void test_effect_specs(void **state)
 {
     fnav_imuerr_config_t e = fnav_imuerr_config_default, back = fnav_imuerr_config_default;
@@ -471,6 +534,7 @@ int main(void)
         cmocka_unit_test(test_noise_level_and_determinism),
         cmocka_unit_test(test_timing_effects_reach_the_stamps),
         cmocka_unit_test(test_sampled_strapdown),
+        cmocka_unit_test(test_motion_domain_signatures),
         cmocka_unit_test(test_effect_specs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
