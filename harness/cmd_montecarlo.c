@@ -434,7 +434,7 @@ static int ad_pop(void *ctx, hx_mc_est_t *e)
     }
     for (i = 0; i < 15; i++) {
         for (j = 0; j < 15; j++) {
-            e->P[i][j] = (double)a->nav.ukf.P[k_map[i]][k_map[j]];
+            e->P[i][j] = (double)fnav_ukf_cov(&a->nav.ukf, k_map[i], k_map[j]);
         }
     }
     return 1;
