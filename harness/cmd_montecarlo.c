@@ -529,6 +529,7 @@ int hx_cmd_montecarlo(int argc, char **argv)
         }
         mc.sim.motion = motion;
         mc.sim.err = su.err;
+        mc.sim.decim = su.decim;
         mc.sim.duration_s = su.duration_s > 0.0 ? su.duration_s : hx_motion_duration(motion);
         mc.runs = (int)seeds;
         mc.bin_s = bin;

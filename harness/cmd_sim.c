@@ -112,6 +112,7 @@ int hx_cmd_sim(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     sc.err = su.err;
+    sc.decim = su.decim;
     rate = (double)su.err.rate_hz;
     dur = su.duration_s;
     profile = su.profile_name;
@@ -182,6 +183,7 @@ int hx_cmd_sim(int argc, char **argv)
                sc.duration_s, hx_motion_strides(motion), end.odo_m, end.pos_m[0], end.pos_m[1], end.pos_m[2]);
         printf("sampling    %g Hz, internal x%u (%s), seed %u\n", rate, fnav_imuerr_internal_factor(&sc.err),
                sc.err.mask[FNAV_EFFECT_ALIAS]              ? "picked, no anti-alias filter"
+               : sc.decim == HX_DECIM_MEAN                 ? "interval means"
                : fnav_imuerr_internal_factor(&sc.err) > 1u ? "anti-alias FIR"
                                                              : "point samples",
                sc.err.seed);

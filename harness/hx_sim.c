@@ -92,7 +92,8 @@ int hx_sim_run(const hx_sim_config_t *cfg, hx_sim_sink_fn sink, void *ctx, char 
     fnav_imuerr_t e;
     gen_t g;
     size_t N, j;
-    int M, pick, K = HX_SIM_FIR_HALF, L = 1, status = 0, c;
+    int M, pick, mean, K = HX_SIM_FIR_HALF, L = 1, status = 0, c;
+    double prev_end[6];
     double *h = NULL, (*ring)[6] = NULL, rate;
     long n_next, half = 0;
     int64_t last_ns = INT64_MIN;
@@ -103,7 +104,8 @@ int hx_sim_run(const hx_sim_config_t *cfg, hx_sim_sink_fn sink, void *ctx, char 
     }
     rate = (double)cfg->err.rate_hz;
     M = (int)fnav_imuerr_internal_factor(&cfg->err);
-    pick = (cfg->err.mask[FNAV_EFFECT_ALIAS] != 0u) || M == 1;
+    mean = cfg->decim == HX_DECIM_MEAN && cfg->err.mask[FNAV_EFFECT_ALIAS] == 0u;
+    pick = !mean && ((cfg->err.mask[FNAV_EFFECT_ALIAS] != 0u) || M == 1);
     if (!pick && cfg->err.mask[FNAV_EFFECT_JITTER] != 0u && cfg->err.jitter.sample_s > FNAV_R(0.0)) {
         snprintf(err, err_size,
                  "sampling-instant jitter (jitter:sample_s) needs point sampling: --oversample 1 or the alias effect");
@@ -113,7 +115,7 @@ int hx_sim_run(const hx_sim_config_t *cfg, hx_sim_sink_fn sink, void *ctx, char 
     g.e = &e;
     g.f_int = rate * M;
     N = hx_sim_ticks(cfg);
-    if (!pick) {
+    if (!pick && !mean) {
         h = fir_design(M, K, &L);
         ring = (double(*)[6])malloc((size_t)L * sizeof *ring);
         if (h == NULL || ring == NULL) {
@@ -124,14 +126,31 @@ int hx_sim_run(const hx_sim_config_t *cfg, hx_sim_sink_fn sink, void *ctx, char 
         }
         half = (long)K * M;
     }
-    n_next = pick ? 0 : -half;
+    n_next = mean ? -(long)M : (pick ? 0 : -half);
+    if (mean) {
+        gen(&g, n_next++, 0.0, prev_end); /* the start of the first interval */
+    }
     for (j = 0; j < N; j++) {
         fnav_imuerr_tick_t plan;
         fnav_real_t y[6];
         double yd[6];
         long center = (long)j * M;
         fnav_imuerr_tick(&e, &plan);
-        if (pick) {
+        if (mean) {
+            /* trapezoidal mean of the internal samples over ((j-1) M, j M]:
+             * the interval that ends at the stamp */
+            double yi[6], inner[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+            for (; n_next <= center; n_next++) {
+                gen(&g, n_next, 0.0, yi);
+                for (c = 0; c < 6; c++) {
+                    inner[c] += (n_next < center) ? yi[c] : 0.0;
+                }
+            }
+            for (c = 0; c < 6; c++) {
+                yd[c] = (0.5 * prev_end[c] + inner[c] + 0.5 * yi[c]) / (double)M;
+                prev_end[c] = yi[c];
+            }
+        } else if (pick) {
             /* every internal sample passes the signal stage; the last one of
              * the output period is kept (no filter: what lies above the
              * output Nyquist frequency folds) */
@@ -600,6 +619,14 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
     s->motion_name = hx_arg(a, "--motion");
     if (s->motion_name == NULL) {
         s->motion_name = "walk";
+    }
+    {
+        const char *d = hx_arg(a, "--decimation");
+        if (d != NULL && strcmp(d, "fir") != 0 && strcmp(d, "mean") != 0) {
+            hx_error(cmd, "--decimation is fir or mean, not '%s'", d);
+            return -1;
+        }
+        s->decim = (d != NULL && strcmp(d, "mean") == 0) ? HX_DECIM_MEAN : HX_DECIM_FIR;
     }
     return 0;
 }

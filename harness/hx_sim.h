@@ -22,11 +22,21 @@
  *  (Kaiser, 60 dB, pass band to 0.41 f_s, stop band from 0.59 f_s). */
 #define HX_SIM_FIR_HALF 10
 
+/** How the internal samples become output samples (without `alias`). */
+typedef enum {
+    HX_DECIM_FIR = 0,  /**< linear-phase anti-alias FIR centred on the stamp: the band-limited
+                            instantaneous value (a rate-output MEMS sensor, delay compensated) */
+    HX_DECIM_MEAN = 1  /**< the mean over the output interval that ends at the stamp (an
+                            integrating sensor delivering delta-angles and delta-velocities; the
+                            convention of footnav's strapdown, fnav_strapdown.h) */
+} hx_decim_t;
+
 /** What to simulate. */
 typedef struct {
     const hx_motion_t *motion;  /**< truth */
     fnav_imuerr_config_t err;   /**< sensor model; err.rate_hz is the output rate, err.seed the seed */
     double duration_s;          /**< output covers [0, duration_s]; <= 0: the motion's duration */
+    hx_decim_t decim;           /**< decimation (ignored with the alias effect: picking) */
 } hx_sim_config_t;
 
 /** One nominal output tick. */
@@ -91,7 +101,9 @@ size_t hx_effect_format(const fnav_imuerr_config_t *cfg, fnav_effect_id_t id, ch
     { "--stride", "M", "walking stride of the sensor foot", 0 },                                                \
     { "--impact-ms", "MS", "landing deceleration time of every gait (impact sharpness)", 0 },                   \
     { "--ring-scale", "X", "multiply the shoe ringing after each contact (0: none)", 0 },                       \
-    { "--mount", "R,P,Y", "sensor mounting on the foot, ZYX Euler degrees", 0 }
+    { "--mount", "R,P,Y", "sensor mounting on the foot, ZYX Euler degrees", 0 },                            \
+    { "--decimation", "KIND", "fir (default: band-limited instantaneous samples) or mean (the mean over "     \
+                              "each interval, as delta-angle/velocity sensors; docs/simulator.md)", 0 }
 
 /** A simulation described by the HX_SIM_OPTS options. */
 typedef struct {
@@ -103,6 +115,7 @@ typedef struct {
     const char *motion_name;       /**< --motion (default "walk") */
     double duration_s;             /**< --duration (0: the motion's) */
     int bias_eq6;                  /**< --bias-sigma eq6 */
+    hx_decim_t decim;              /**< --decimation */
 } hx_sim_setup_t;
 
 /** Read the HX_SIM_OPTS options. 0 ok; -1 on a usage error (message

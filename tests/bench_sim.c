@@ -92,6 +92,7 @@ int main(void)
         sc.err.rate_hz = (fnav_real_t)200.0;
         sc.err.oversample = 10u;
         sc.duration_s = 0.0;
+        sc.decim = HX_DECIM_FIR;
         t0 = now_s();
         if (hx_sim_run(&sc, count_sink, &ticks, err, sizeof err) != 0) {
             return 1;

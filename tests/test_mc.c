@@ -185,6 +185,7 @@ static void run_oracles(double mount_yaw_deg, const char *effect)
     cfg.sim.err.oversample = 1u;
     cfg.sim.err.seed = 5u;
     cfg.sim.duration_s = 0.0;
+    cfg.sim.decim = HX_DECIM_FIR;
     if (effect != NULL) {
         assert_int_equal(hx_effect_parse(&cfg.sim.err, effect, err, sizeof err), 0);
     }
