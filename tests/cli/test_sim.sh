@@ -44,6 +44,10 @@ expect_exit 2 "bad rate" "$H" sim --out "$T/x.bin" --rate -5
 expect_exit 2 "three gait figures" "$H" sim --out "$T/x.bin" --speed 1 --cadence 100 --stride 1
 expect_exit 2 "sample jitter through the filter" "$H" sim --out "$T/x.bin" --effect jitter:sample_s=1e-4
 expect_err "sample_s" "sample jitter error explains"
+expect_exit 2 "bad --decimation" "$H" sim --out "$T/x.bin" --decimation cubic
+expect_err "fir or mean" "decimation error lists the kinds"
+expect_exit 0 "integrating sensor" "$H" sim --out "$T/m.bin" --duration 3 --rate 100 --decimation mean
+expect_out "interval means" "summary names the decimation"
 expect_exit 3 "unwritable output" "$H" sim --out "$T/no/such/dir/x.bin" --duration 2
 expect_exit 3 "unwritable truth" "$H" sim --out "$T/x.bin" --truth "$T/no/such/dir/t.csv" --duration 2
 
