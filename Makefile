@@ -74,6 +74,8 @@ $(HXLIB): $(HX_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
+# The core calls the port's fnav_port_assert_failed (in libhx via
+# port/linux), so libhx is named again after the core library.
 $(HARNESS): $(BUILD)/obj/harness/main.o $(HXLIB) $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(SAN) -o $@ $^ $(HXLIB) $(LDLIBS_HOST)
@@ -116,7 +118,7 @@ ARM_NM    ?= arm-none-eabi-nm
 ARM_SIZE  ?= arm-none-eabi-size
 ARM_BUILD := build/arm
 ARM_ARCH  := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
-ARM_CFLAGS := $(ARM_ARCH) -Os -g -ffunction-sections -fdata-sections -fstack-usage $(WARN)
+ARM_CFLAGS := $(ARM_ARCH) -Os -g -ffunction-sections -fdata-sections -fstack-usage -fcallgraph-info=su $(WARN)
 ARM_CORE_OBJ := $(CORE_SRC:%.c=$(ARM_BUILD)/obj/%.o)
 ARM_PORT_OBJ := $(patsubst %.c,$(ARM_BUILD)/obj/%.o,$(wildcard port/cortex-m/*.c))
 ARM_LIB   := $(ARM_BUILD)/libfootnav.a

@@ -1,14 +1,966 @@
-/* harness eval: placeholder until the navigation issue (#3) lands. */
-#include <stdio.h>
+/* harness eval: every data set with ground truth in the shared data
+ * directory through the navigation, figures written to docs/results.md
+ * (docs/harness.md). */
+#include <cjson/cJSON.h>
+#include <dirent.h>
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_nav.h"
+
+static const hx_opt_t k_opts[] = {
+    HX_NAV_OPTS,
+    { "--data", "DIR", "shared data directory (default: $FNAV_DATA_DIR, ../shared/data)", 0 },
+    { "--out", "FILE", "results in Markdown (default docs/results.md; '-' for standard output)", 0 },
+    { "--json", "FILE", "also write the headline figures as JSON", 0 },
+    { "--no-experiments", NULL, "skip the paper's experiments (bias model, 100 vs 200 Hz)", 0 },
+    { NULL, NULL, NULL, 0 }
+};
+
+static const hx_spec_t k_spec = {
+    "eval", "[options]",
+    "Run every data set with ground truth in the shared data directory through\n"
+    "the navigation and write docs/results.md: closure on openshoe_gx2 and\n"
+    "xio_ngimu_gait, per-stride error against the measured footprints and the\n"
+    "motion capture of pyshoe_vicon_llio, stance detection and gait-event\n"
+    "timing against the expert events of ipol_gait_xsens, and the paper's two\n"
+    "experiments (AR(1) bias model on/off; 100 vs 200 Hz by resampling).",
+    0, 0, k_opts
+};
+
+#define MAXF 64
+
+typedef struct {
+    char data[512];
+    fnav_nav_config_t cfg;
+    FILE *md;
+    int runs, failures;
+    hx_progress_t prog;
+    double total_runs;
+    cJSON *json;
+} ev_t;
+
+static int cmp_d(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+    if (n <= 0) {
+        return (double)NAN;
+    }
+    qsort(v, (size_t)n, sizeof *v, cmp_d);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+static double maxv(const double *v, int n)
+{
+    double m = -INFINITY;
+    int i;
+    for (i = 0; i < n; i++) {
+        m = v[i] > m ? v[i] : m;
+    }
+    return n > 0 ? m : (double)NAN;
+}
+
+static double pct_rank(double *v, int n, double p)
+{
+    int k;
+    if (n <= 0) {
+        return (double)NAN;
+    }
+    qsort(v, (size_t)n, sizeof *v, cmp_d);
+    k = (int)ceil(p / 100.0 * n) - 1;
+    return v[k < 0 ? 0 : (k >= n ? n - 1 : k)];
+}
+
+/* Sorted file names in dir ending with suffix. */
+static int list_files(const char *dir, const char *suffix, char names[MAXF][160])
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    int n = 0, i, j;
+    size_t ls = strlen(suffix);
+    if (d == NULL) {
+        return 0;
+    }
+    while ((e = readdir(d)) != NULL && n < MAXF) {
+        size_t l = strlen(e->d_name);
+        if (l > ls && l < 160 && strcmp(e->d_name + l - ls, suffix) == 0) {
+            memcpy(names[n++], e->d_name, l + 1); /* l < 160 checked above */
+        }
+    }
+    closedir(d);
+    for (i = 1; i < n; i++) {
+        for (j = i; j > 0 && strcmp(names[j - 1], names[j]) > 0; j--) {
+            char t[160];
+            memcpy(t, names[j], 160);
+            memcpy(names[j], names[j - 1], 160);
+            memcpy(names[j - 1], t, 160);
+        }
+    }
+    return n;
+}
+
+/* One replay; 0 ok (partial input accepted with a note), -1 failure. */
+static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, double rate_hz, hx_traj_t *t,
+                  hx_nav_summary_t *s, char *note, size_t note_size)
+{
+    char err[400];
+    int rc = hx_nav_replay("eval", path, HX_FMT_AUTO, 0.0, cfg, rate_hz, NULL, t, 0, err, sizeof err);
+    ev->runs++;
+    hx_progress_update(&ev->prog, (double)ev->runs);
+    note[0] = '\0';
+    if (rc < 0 || t->n == 0) {
+        hx_warn("eval", "%s: %s", path, err);
+        ev->failures++;
+        hx_traj_free(t);
+        return -1;
+    }
+    if (rc == 1) {
+        /* e.g. a truncated last line: every sample before it was used */
+        snprintf(note, note_size, "input ends early (%.150s)", strstr(err, ": ") ? strstr(err, ": ") + 2 : err);
+    }
+    hx_nav_summarize(t, s);
+    return 0;
+}
+
+static void fmt_name(char *out, size_t size, const char *name, const char *strip)
+{
+    const char *p = strstr(name, strip);
+    snprintf(out, size, "%.*s", p ? (int)(p - name) : (int)strlen(name), name);
+}
+
+/* ------------------------------------------------------------ closure */
+
+typedef struct {
+    double h_pct_med, d3_pct_med, d3_pct_max, vert_med, h_m_med, path_med;
+    int n;
+} closure_t;
+
+static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fnav_nav_config_t *cfg, double rate_hz,
+                        int write, closure_t *out)
+{
+    char dir[600], names[MAXF][160], path[1000], note[200], nm[100];
+    double h[MAXF], d3[MAXF], vz[MAXF], hm[MAXF], pm[MAXF];
+    int n, i, k = 0;
+    snprintf(dir, sizeof dir, "%s/%s", ev->data, sub);
+    n = list_files(dir, suffix, names);
+    if (write) {
+        fprintf(ev->md, "| walk | path (m) | horizontal (m) | horizontal (%%) | 3-D (m) | 3-D (%%) | "
+                        "vertical (m) | heading change (deg) | strides | note |\n");
+        fprintf(ev->md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+    }
+    for (i = 0; i < n; i++) {
+        hx_traj_t t;
+        hx_nav_summary_t s;
+        snprintf(path, sizeof path, "%s/%.159s", dir, names[i]);
+        if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0) {
+            continue;
+        }
+        fmt_name(nm, sizeof nm, names[i], suffix);
+        if (write) {
+            fprintf(ev->md, "| %s | %.2f | %.3f | %.2f | %.3f | %.2f | %+.3f | %+.1f | %ld | %s |\n", nm, s.path_m,
+                    s.end_h_m, s.end_h_pct, s.end_3d_m, s.end_3d_pct, s.vertical_m, s.heading_change_deg, s.strides,
+                    note);
+        }
+        h[k] = s.end_h_pct;
+        d3[k] = s.end_3d_pct;
+        vz[k] = s.vertical_m;
+        hm[k] = s.end_h_m;
+        pm[k] = s.path_m;
+        k++;
+        hx_traj_free(&t);
+    }
+    out->n = k;
+    out->d3_pct_max = maxv(d3, k);
+    out->h_pct_med = median(h, k);
+    out->d3_pct_med = median(d3, k);
+    out->vert_med = median(vz, k);
+    out->h_m_med = median(hm, k);
+    out->path_med = median(pm, k);
+}
+
+/* ------------------------------------------------------------ strides */
+
+typedef struct {
+    int n;
+    long idx[1024];
+    double x[1024], y[1024];
+} gcp_t;
+
+static int read_gcp(const char *path, gcp_t *g)
+{
+    FILE *f = fopen(path, "r");
+    char line[512];
+    g->n = 0;
+    if (f == NULL) {
+        return -1;
+    }
+    if (fgets(line, sizeof line, f) == NULL) {
+        fclose(f);
+        return -1;
+    }
+    while (fgets(line, sizeof line, f) != NULL && g->n < 1024) {
+        double a, b, c, d;
+        if (sscanf(line, "%lf,%lf,%lf,%lf", &a, &b, &c, &d) == 4) {
+            g->idx[g->n] = (long)llround(a);
+            g->x[g->n] = c;
+            g->y[g->n] = d;
+            g->n++;
+        }
+    }
+    fclose(f);
+    return g->n > 1 ? 0 : -1;
+}
+
+typedef struct {
+    double stride_err_med, final_err, path, final_pct, rms;
+    int strides;
+} stride_res_t;
+
+/* Per-stride horizontal error in the truth's frame, which is the initial
+ * heading frame of the IMU (as footnav's n frame: x along the initial
+ * heading): both start at the first stride position. */
+static int stride_errors(const hx_traj_t *t, const gcp_t *g, stride_res_t *r)
+{
+    double e[1024], se2 = 0.0;
+    double x0, y0;
+    int i, n = 0;
+    long i0 = g->idx[0];
+    if (i0 < 0 || (size_t)i0 >= t->n) {
+        return -1;
+    }
+    x0 = (double)t->f[i0].pos_m[0];
+    y0 = (double)t->f[i0].pos_m[1];
+    r->path = 0.0;
+    for (i = 0; i < g->n; i++) {
+        long k = g->idx[i];
+        double dx, dy;
+        if (k < 0 || (size_t)k >= t->n) {
+            continue;
+        }
+        dx = ((double)t->f[k].pos_m[0] - x0) - (g->x[i] - g->x[0]);
+        dy = ((double)t->f[k].pos_m[1] - y0) - (g->y[i] - g->y[0]);
+        e[n] = sqrt(dx * dx + dy * dy);
+        se2 += e[n] * e[n];
+        r->final_err = e[n];
+        n++;
+        if (i > 0) {
+            r->path += hypot(g->x[i] - g->x[i - 1], g->y[i] - g->y[i - 1]);
+        }
+    }
+    r->strides = n;
+    r->rms = n > 0 ? sqrt(se2 / n) : (double)NAN;
+    r->stride_err_med = median(e, n);
+    r->final_pct = r->path > 0.0 ? 100.0 * r->final_err / r->path : (double)NAN;
+    return n > 1 ? 0 : -1;
+}
+
+typedef struct {
+    double final_pct_med, final_pct_mean, stride_med, final_m_med;
+    int n;
+} fp_t;
+
+static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, int write, fp_t *out)
+{
+    char dir[600], names[MAXF][160], path[800], gpath[800], note[200], nm[100];
+    double fpct[MAXF], smed[MAXF], fm[MAXF], sum = 0.0;
+    int n, i, k = 0;
+    snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/own_3dmgx5_footprints", ev->data);
+    n = list_files(dir, "_imu.csv", names);
+    if (write) {
+        fprintf(ev->md, "| walk | strides | measured path (m) | median stride error (m) | RMS (m) | "
+                        "final-stride error (m) | final (%% of path) | note |\n");
+        fprintf(ev->md, "|---|---:|---:|---:|---:|---:|---:|---|\n");
+    }
+    for (i = 0; i < n; i++) {
+        hx_traj_t t;
+        hx_nav_summary_t s;
+        gcp_t g;
+        stride_res_t r;
+        size_t l = strlen(names[i]);
+        snprintf(path, sizeof path, "%s/%.159s", dir, names[i]);
+        snprintf(gpath, sizeof gpath, "%s/%.*s_strides_gcp.csv", dir, (int)(l - 8), names[i]);
+        if (read_gcp(gpath, &g) != 0) {
+            hx_warn("eval", "%s: no footprints", gpath);
+            continue;
+        }
+        if (rate_hz > 0.0) {
+            /* resampled: the stride indices refer to the original samples */
+            double in = 0.0;
+            if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0) {
+                continue;
+            }
+            in = t.in_rate_hz;
+            for (l = 0; l < (size_t)g.n; l++) {
+                g.idx[l] = (long)llround((double)g.idx[l] * rate_hz / in);
+            }
+        } else if (replay(ev, path, cfg, 0.0, &t, &s, note, sizeof note) != 0) {
+            continue;
+        }
+        if (stride_errors(&t, &g, &r) == 0) {
+            fmt_name(nm, sizeof nm, names[i], "_imu.csv");
+            if (write) {
+                fprintf(ev->md, "| %s | %d | %.1f | %.3f | %.3f | %.3f | %.2f | %s |\n", nm, r.strides, r.path,
+                        r.stride_err_med, r.rms, r.final_err, r.final_pct, note);
+            }
+            fpct[k] = r.final_pct;
+            smed[k] = r.stride_err_med;
+            fm[k] = r.final_err;
+            sum += r.final_pct;
+            k++;
+        }
+        hx_traj_free(&t);
+    }
+    out->n = k;
+    out->final_pct_mean = k > 0 ? sum / k : (double)NAN;
+    out->final_pct_med = median(fpct, k);
+    out->stride_med = median(smed, k);
+    out->final_m_med = median(fm, k);
+}
+
+/* Vicon: every stride of the trials against the motion-capture position at
+ * the same sample (its frame is also the IMU's initial heading frame). */
+static int read_vicon(const char *path, double **vx, double **vy, size_t *n)
+{
+    FILE *f = fopen(path, "r");
+    char line[512];
+    size_t cap = 0;
+    *vx = *vy = NULL;
+    *n = 0;
+    if (f == NULL || fgets(line, sizeof line, f) == NULL) {
+        if (f != NULL) {
+            fclose(f);
+        }
+        return -1;
+    }
+    while (fgets(line, sizeof line, f) != NULL) {
+        double v[9];
+        if (sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6], &v[7],
+                   &v[8]) != 9) {
+            continue;
+        }
+        if (*n == cap) {
+            size_t nc = cap ? cap * 2 : 4096;
+            double *a = (double *)realloc(*vx, nc * sizeof *a), *b = (double *)realloc(*vy, nc * sizeof *b);
+            if (a) *vx = a;
+            if (b) *vy = b;
+            if (!a || !b) {
+                fclose(f);
+                return -1;
+            }
+            cap = nc;
+        }
+        (*vx)[*n] = v[7];
+        (*vy)[*n] = v[8];
+        (*n)++;
+    }
+    fclose(f);
+    return 0;
+}
+
+typedef struct {
+    double stride_med, rms_med, final_med;
+    int n, strides;
+} vicon_t;
+
+static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *out)
+{
+    char dir[600], names[MAXF][160], path[800], gpath[800], note[200], nm[100];
+    double med[MAXF], rms[MAXF], fin[MAXF];
+    int n, i, k = 0;
+    snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/vicon_3dmgx3", ev->data);
+    n = list_files(dir, "_imu.csv", names);
+    out->strides = 0;
+    if (write) {
+        fprintf(ev->md, "| trial | strides | median stride error (m) | RMS (m) | final (m) | note |\n");
+        fprintf(ev->md, "|---|---:|---:|---:|---:|---|\n");
+    }
+    for (i = 0; i < n; i++) {
+        hx_traj_t t;
+        hx_nav_summary_t s;
+        gcp_t g;
+        stride_res_t r;
+        double *vx, *vy;
+        size_t nv, l = strlen(names[i]);
+        int j;
+        snprintf(path, sizeof path, "%s/%.159s", dir, names[i]);
+        snprintf(gpath, sizeof gpath, "%s/%.*s_strides_gcp.csv", dir, (int)(l - 8), names[i]);
+        if (read_gcp(gpath, &g) != 0 || read_vicon(path, &vx, &vy, &nv) != 0) {
+            hx_warn("eval", "%s: no motion-capture strides", gpath);
+            continue;
+        }
+        /* truth = the motion capture at the stride samples */
+        for (j = 0; j < g.n; j++) {
+            if (g.idx[j] >= 0 && (size_t)g.idx[j] < nv) {
+                g.x[j] = vx[g.idx[j]];
+                g.y[j] = vy[g.idx[j]];
+            }
+        }
+        free(vx);
+        free(vy);
+        if (replay(ev, path, cfg, 0.0, &t, &s, note, sizeof note) != 0) {
+            continue;
+        }
+        if (stride_errors(&t, &g, &r) == 0) {
+            fmt_name(nm, sizeof nm, names[i], "_imu.csv");
+            if (write) {
+                fprintf(ev->md, "| %s | %d | %.3f | %.3f | %.3f | %s |\n", nm, r.strides, r.stride_err_med, r.rms,
+                        r.final_err, note);
+            }
+            med[k] = r.stride_err_med;
+            rms[k] = r.rms;
+            fin[k] = r.final_err;
+            out->strides += r.strides;
+            k++;
+        }
+        hx_traj_free(&t);
+    }
+    out->n = k;
+    out->stride_med = median(med, k);
+    out->rms_med = median(rms, k);
+    out->final_med = median(fin, k);
+}
+
+/* ------------------------------------------------------------ stance (IPOL) */
+
+typedef struct {
+    int expected, detected, missed, spurious, trials;
+    double fo_med, fs_med, fo_p90, fs_p90, fo_bias, fs_bias;
+    int n_fo, n_fs;
+} ipol_t;
+
+static int read_events(const char *path, long ev[][2], int max, const char *key, long tb[2], long ub[2])
+{
+    FILE *f = fopen(path, "r");
+    char buf[8192];
+    size_t n;
+    cJSON *root, *a;
+    int k = 0, i;
+    if (f == NULL) {
+        return -1;
+    }
+    n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = '\0';
+    /* the data set writes NaN for unknown values, which JSON does not have */
+    {
+        char *q = buf;
+        while ((q = strstr(q, "NaN")) != NULL) {
+            memcpy(q, "0.0", 3);
+        }
+    }
+    root = cJSON_Parse(buf);
+    if (root == NULL) {
+        return -1;
+    }
+    a = cJSON_GetObjectItem(root, "TrialBoundaries");
+    tb[0] = cJSON_GetArrayItem(a, 0) ? (long)cJSON_GetArrayItem(a, 0)->valuedouble : 0;
+    tb[1] = cJSON_GetArrayItem(a, 1) ? (long)cJSON_GetArrayItem(a, 1)->valuedouble : 0;
+    a = cJSON_GetObjectItem(root, "UTurnBoundaries");
+    ub[0] = cJSON_GetArrayItem(a, 0) ? (long)cJSON_GetArrayItem(a, 0)->valuedouble : 0;
+    ub[1] = cJSON_GetArrayItem(a, 1) ? (long)cJSON_GetArrayItem(a, 1)->valuedouble : 0;
+    a = cJSON_GetObjectItem(root, key);
+    for (i = 0; i < cJSON_GetArraySize(a) && k < max; i++) {
+        cJSON *p = cJSON_GetArrayItem(a, i);
+        ev[k][0] = (long)cJSON_GetArrayItem(p, 0)->valuedouble;
+        ev[k][1] = (long)cJSON_GetArrayItem(p, 1)->valuedouble;
+        k++;
+    }
+    cJSON_Delete(root);
+    return k;
+}
+
+/* Row of the first sample whose packet counter (relative to the first
+ * sample's) reaches c: the experts' indices count packets, rows skip the
+ * dropped ones. */
+static long row_of(const uint32_t *seq, size_t n, long c)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        if ((long)(seq[i] - seq[0]) >= c) {
+            return (long)i;
+        }
+    }
+    return (long)n;
+}
+
+static long row_of_time(const int64_t *t, size_t n, int64_t tn)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = (lo + hi) / 2;
+        if (t[mid] < tn) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    return (long)lo;
+}
+
+static int overlaps(long a0, long a1, long b0, long b1)
+{
+    return a0 < b1 && a1 > b0;
+}
+
+static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
+{
+    char dir[600], names[MAXF][160], path[800], jpath[800];
+    static double fo_e[4096], fs_e[4096], fo_a[4096], fs_a[4096];
+    int n, i, foot;
+    memset(out, 0, sizeof *out);
+    snprintf(dir, sizeof dir, "%s/ipol_gait_xsens", ev->data);
+    n = list_files(dir, ".json", names);
+    if (write) {
+        fprintf(ev->md, "| trial | foot | expert strides | detected | missed | spurious | median |FO error| | "
+                        "median |FS error| (samples) |\n");
+        fprintf(ev->md, "|---|---|---:|---:|---:|---:|---:|---:|\n");
+    }
+    for (i = 0; i < n; i++) {
+        for (foot = 0; foot < 2; foot++) {
+            static long evs[256][2], sw[1024][2];
+            static long fo[1024], fs[1024];
+            long tb[2], ub[2], rtb[2], rub[2];
+            int ne, nsw = 0, nfo = 0, nfs = 0, k, j, exp_n = 0, det_n = 0, miss = 0, spur_n = 0;
+            static int used[1024];
+            hx_log_t log;
+            char err[320];
+            fnav_stance_t st;
+            fnav_stance_config_t sc = cfg->stance;
+            fnav_stance_out_t o;
+            size_t r;
+            int trial_fo = 0, trial_fs = 0;
+            double tfo[256], tfs[256];
+            size_t l = strlen(names[i]);
+            snprintf(jpath, sizeof jpath, "%s/%.159s", dir, names[i]);
+            snprintf(path, sizeof path, "%s/%.*s_%s.txt", dir, (int)(l - 5), names[i], foot ? "rf" : "lf");
+            ne = read_events(jpath, evs, 256, foot ? "RightFootEvents" : "LeftFootEvents", tb, ub);
+            if (ne < 0 || hx_log_load(&log, path, HX_FMT_AUTO, 0.0, err, sizeof err) < 0) {
+                hx_warn("eval", "%s: cannot read the trial", path);
+                continue;
+            }
+            ev->runs++;
+            hx_progress_update(&ev->prog, (double)ev->runs);
+            sc.gravity_mps2 = cfg->gravity_mps2;
+            if (fnav_stance_init(&st, &sc) != FNAV_OK) {
+                hx_log_free(&log);
+                continue;
+            }
+            /* run the detector sample by sample */
+            for (r = 0; r <= log.n; r++) {
+                fnav_status_t ps;
+                if (r < log.n) {
+                    fnav_sample_t s;
+                    int c;
+                    memset(&s, 0, sizeof s);
+                    s.t_ns = log.t_ns[r];
+                    s.seq = log.seq[r];
+                    for (c = 0; c < 3; c++) {
+                        s.accel_mps2[c] = (fnav_real_t)log.acc[r][c];
+                        s.gyro_rps[c] = (fnav_real_t)log.gyr[r][c];
+                    }
+                    if (fnav_stance_push(&st, &s) != FNAV_OK) {
+                        break;
+                    }
+                } else {
+                    fnav_stance_finish(&st);
+                }
+                while ((ps = fnav_stance_pop(&st, &o)) == FNAV_OK) {
+                    if ((o.events & FNAV_STANCE_EV_STRIDE) && nsw < 1024) {
+                        sw[nsw][0] = row_of_time(log.t_ns, log.n, o.swing_t0_ns);
+                        sw[nsw][1] = row_of_time(log.t_ns, log.n, o.swing_t1_ns);
+                        nsw++;
+                    }
+                    if ((o.events & FNAV_STANCE_EV_FOOT_OFF) && nfo < 1024) {
+                        fo[nfo++] = row_of_time(log.t_ns, log.n, o.fo_t_ns);
+                    }
+                    if ((o.events & FNAV_STANCE_EV_FOOT_STRIKE) && nfs < 1024) {
+                        fs[nfs++] = row_of_time(log.t_ns, log.n, o.fs_t_ns);
+                    }
+                }
+                (void)ps;
+            }
+            rtb[0] = row_of(log.seq, log.n, tb[0]);
+            rtb[1] = row_of(log.seq, log.n, tb[1]);
+            rub[0] = row_of(log.seq, log.n, ub[0]);
+            rub[1] = row_of(log.seq, log.n, ub[1]);
+            /* Evaluated: the expert swings inside the trial and clear of the
+             * U-turn (the experts annotate the turn only partly). A detected
+             * swing counts when it overlaps an evaluated expert swing (a
+             * match), or else when its middle is inside the trial, outside the
+             * U-turn, and it overlaps no excluded expert swing (spurious). */
+            for (k = 0; k < nsw; k++) {
+                used[k] = 0;
+            }
+            for (j = 0; j < ne; j++) {
+                long s0 = row_of(log.seq, log.n, evs[j][0]), s1 = row_of(log.seq, log.n, evs[j][1]);
+                int hit = -1;
+                if (overlaps(s0, s1, rub[0], rub[1]) || s0 < rtb[0] - 5 || s1 > rtb[1] + 5) {
+                    for (k = 0; k < nsw; k++) {
+                        if (overlaps(sw[k][0], sw[k][1], s0, s1)) {
+                            used[k] = 2; /* belongs to an excluded expert swing */
+                        }
+                    }
+                    continue;
+                }
+                exp_n++;
+                for (k = 0; k < nsw; k++) {
+                    if (used[k] != 1 && overlaps(sw[k][0], sw[k][1], s0, s1)) {
+                        hit = k;
+                        break;
+                    }
+                }
+                if (hit < 0) {
+                    miss++;
+                    continue;
+                }
+                used[hit] = 1;
+                det_n++;
+                /* nearest reported events to the expert's foot-off / strike */
+                {
+                    long best = -1, b2 = -1;
+                    int q;
+                    for (q = 0; q < nfo; q++) {
+                        if (best < 0 || labs(fo[q] - s0) < labs(best - s0)) {
+                            best = fo[q];
+                        }
+                    }
+                    for (q = 0; q < nfs; q++) {
+                        if (b2 < 0 || labs(fs[q] - s1) < labs(b2 - s1)) {
+                            b2 = fs[q];
+                        }
+                    }
+                    if (best >= 0 && labs(best - s0) < 50 && out->n_fo < 4096 && trial_fo < 256) {
+                        fo_e[out->n_fo] = (double)(best - s0);
+                        fo_a[out->n_fo++] = fabs((double)(best - s0));
+                        tfo[trial_fo++] = fabs((double)(best - s0));
+                    }
+                    if (b2 >= 0 && labs(b2 - s1) < 50 && out->n_fs < 4096 && trial_fs < 256) {
+                        fs_e[out->n_fs] = (double)(b2 - s1);
+                        fs_a[out->n_fs++] = fabs((double)(b2 - s1));
+                        tfs[trial_fs++] = fabs((double)(b2 - s1));
+                    }
+                }
+            }
+            for (k = 0; k < nsw; k++) {
+                long mid = (sw[k][0] + sw[k][1]) / 2;
+                if (used[k] == 0 && !(mid >= rub[0] && mid < rub[1]) && mid > rtb[0] - 5 && mid < rtb[1] + 5) {
+                    det_n++;
+                    spur_n++;
+                }
+            }
+            if (write) {
+                fprintf(ev->md, "| %.*s | %s | %d | %d | %d | %d | %.1f | %.1f |\n", (int)(l - 5), names[i],
+                        foot ? "right" : "left", exp_n, det_n, miss, spur_n, median(tfo, trial_fo),
+                        median(tfs, trial_fs));
+            }
+            out->expected += exp_n;
+            out->detected += det_n;
+            out->missed += miss;
+            out->spurious += spur_n;
+            out->trials++;
+            hx_log_free(&log);
+        }
+    }
+    out->fo_bias = median(fo_e, out->n_fo);
+    out->fs_bias = median(fs_e, out->n_fs);
+    out->fo_p90 = pct_rank(fo_a, out->n_fo, 90.0);
+    out->fs_p90 = pct_rank(fs_a, out->n_fs, 90.0);
+    out->fo_med = median(fo_a, out->n_fo);
+    out->fs_med = median(fs_a, out->n_fs);
+}
+
+/* ------------------------------------------------------------ main */
+
+static void jnum(cJSON *o, const char *k, double v)
+{
+    cJSON_AddItemToObject(o, k, isfinite(v) ? cJSON_CreateNumber(v) : cJSON_CreateNull());
+}
+
+static const char *met(int ok)
+{
+    return ok ? "met" : "**not met**";
+}
 
 int hx_cmd_eval(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    fprintf(stderr, "harness eval: not available yet (planned in issue #3, navigation)\n");
-    return HX_EXIT_UNAVAIL;
+    hx_args_t a;
+    hx_nav_opts_t o;
+    ev_t ev;
+    char err[400], cmdline[1024];
+    const char *out_path, *json_path, *data;
+    closure_t gx2, gx2_off, gx2_ar1, gx2_200, gx2_100;
+    closure_t xs, xl;
+    fp_t fp, fp_off, fp_ar1, fp_100;
+    vicon_t vi;
+    ipol_t ip;
+    int rc, i, exp = 1;
+    size_t len = 0;
+    fnav_nav_config_t off, ar1;
+    rc = hx_args_parse(&k_spec, argc, argv, &a);
+    if (rc != 0) {
+        return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
+    }
+    rc = hx_nav_opts_from_args("eval", &a, &o);
+    if (rc != 0) {
+        return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
+    }
+    if (o.rate_hz > 0.0) {
+        hx_error("eval", "--rate is not used by eval (it runs the rate experiment itself)");
+        return HX_EXIT_USAGE;
+    }
+    memset(&ev, 0, sizeof ev);
+    if (hx_nav_config(&o, &ev.cfg, err, sizeof err) != 0) {
+        hx_error("eval", "%s", err);
+        return HX_EXIT_USAGE;
+    }
+    exp = !hx_flag(&a, "--no-experiments");
+    data = hx_arg(&a, "--data");
+    if (data == NULL) {
+        data = getenv("FNAV_DATA_DIR");
+    }
+    if (data == NULL || *data == '\0') {
+        data = "../shared/data";
+    }
+    snprintf(ev.data, sizeof ev.data, "%s", data);
+    {
+        char probe[700];
+        FILE *f;
+        snprintf(probe, sizeof probe, "%s/MANIFEST.md", ev.data);
+        f = fopen(probe, "r");
+        if (f == NULL) {
+            hx_error("eval", "no shared data in %s (give --data DIR or set FNAV_DATA_DIR)", ev.data);
+            return HX_EXIT_UNAVAIL;
+        }
+        fclose(f);
+    }
+    out_path = hx_arg(&a, "--out");
+    if (out_path == NULL) {
+        out_path = "docs/results.md";
+    }
+    json_path = hx_arg(&a, "--json");
+    ev.md = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
+    if (ev.md == NULL) {
+        hx_error("eval", "cannot write %s", out_path);
+        return HX_EXIT_IO;
+    }
+    len += (size_t)snprintf(cmdline, sizeof cmdline, "./bin/harness eval");
+    for (i = 0; i < argc && len < sizeof cmdline; i++) {
+        len += (size_t)snprintf(cmdline + len, sizeof cmdline - len, " %s", argv[i]);
+    }
+    ev.total_runs = exp ? 6 * 5 + 2 * 7 + 7 * 4 + 21 + 28 : 6 + 2 + 7 + 21 + 28;
+    hx_progress_start(&ev.prog, "eval", ev.total_runs);
+    off = ev.cfg;
+    off.bias_model = FNAV_BIAS_OFF;
+    ar1 = ev.cfg;
+    ar1.bias_model = FNAV_BIAS_AR1;
+
+    fprintf(ev.md, "# footnav results\n\n");
+    fprintf(ev.md, "Written by `%s` (float%s build). Every number below comes from that command;\n"
+                   "rerun it to reproduce them. Data: `../shared/data` (MANIFEST.md). Configuration: profile `%s`, "
+                   "bias model `%s`, detector `%s`%s (docs/navigation.md).\n\n",
+            cmdline, FNAV_USE_DOUBLE ? "64" : "32", ev.cfg.profile.name,
+            ev.cfg.bias_model == FNAV_BIAS_AR1 ? "ar1" : "off",
+            ev.cfg.stance.detector == FNAV_DETECTOR_SHOE ? "shoe" : "threshold",
+            ev.cfg.stance.adaptive ? " (adaptive threshold)" : "");
+
+    fprintf(ev.md, "## openshoe_gx2: return to start (6 closed loops, 250 Hz)\n\n"
+                   "Error of the last stance mid-point from the first, as a fraction of the step-to-step path "
+                   "through the stance mid-points. Vertical: height change, up positive.\n\n");
+    closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &ev.cfg, 0.0, 1, &gx2);
+    fprintf(ev.md, "\nMedian horizontal %.2f %% (target <= 0.35 %%: %s), median 3-D %.2f %% (target <= 0.6 %%: %s), "
+                   "worst 3-D %.2f %% (target <= 1.2 %%: %s); median vertical %+.3f m, median path %.1f m.\n\n",
+            gx2.h_pct_med, met(gx2.h_pct_med <= 0.35), gx2.d3_pct_med, met(gx2.d3_pct_med <= 0.6), gx2.d3_pct_max,
+            met(gx2.d3_pct_max <= 1.2), gx2.vert_med, gx2.path_med);
+
+    fprintf(ev.md, "## xio_ngimu_gait: return to start (2 closed loops, ~400 Hz, irregular timing)\n\n");
+    {
+        char p[700], note[200];
+        const char *w[2] = { "short_walk.csv", "long_walk.csv" };
+        const double vendor[2] = { 0.082, 0.421 };
+        closure_t *c[2] = { &xs, &xl };
+        fprintf(ev.md, "| walk | path (m) | horizontal (m) | 3-D (m) | 3-D (%%) | vertical (m) | vendor 3-D (m) | "
+                       "duplicates | gaps | longest interval (ms) | result |\n");
+        fprintf(ev.md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+        for (i = 0; i < 2; i++) {
+            hx_traj_t t;
+            hx_nav_summary_t s;
+            memset(c[i], 0, sizeof *c[i]);
+            snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, w[i]);
+            if (replay(&ev, p, &ev.cfg, 0.0, &t, &s, note, sizeof note) != 0) {
+                continue;
+            }
+            c[i]->n = 1;
+            c[i]->d3_pct_med = s.end_3d_m;
+            fprintf(ev.md, "| %s | %.2f | %.3f | %.3f | %.2f | %+.3f | %.3f | %u | %u | %.1f | %s |\n", w[i], s.path_m,
+                    s.end_h_m, s.end_3d_m, s.end_3d_pct, s.vertical_m, vendor[i], t.stats.duplicates, t.stats.gaps,
+                    1e3 * (double)t.stats.max_gap_seen_s, s.end_3d_m < vendor[i] ? "better than vendor" : "**worse than vendor**");
+            hx_traj_free(&t);
+        }
+        fprintf(ev.md, "\nThe vendor's figures come from an offline method that uses future samples; footnav is "
+                       "causal.\n\n");
+    }
+
+    fprintf(ev.md, "## pyshoe_vicon_llio / own_3dmgx5_footprints: per-stride error against measured footprints\n\n"
+                   "Estimated position at each stride sample against the footprint measured with a ruler, both "
+                   "in the initial-heading frame (the `_strides_gcp.csv` truth), starting at the first stride.\n\n");
+    footprints(&ev, &ev.cfg, 0.0, 1, &fp);
+    fprintf(ev.md, "\nMedian final-stride error %.2f %% of the measured path (target <= 2 %%: %s), mean %.2f %%, "
+                   "median %.2f m; median of the per-walk median stride errors %.3f m. Reference: pyshoe with its "
+                   "SHOE detector, 1.43 m median final error, 4.3 %% mean.\n\n",
+            fp.final_pct_med, met(fp.final_pct_med <= 2.0), fp.final_pct_mean, fp.final_m_med, fp.stride_med);
+
+    fprintf(ev.md, "## pyshoe_vicon_llio / vicon_3dmgx3: per-stride error against motion capture\n\n");
+    vicon(&ev, &ev.cfg, 1, &vi);
+    fprintf(ev.md, "\n%d trials, %d strides: median of the per-trial median stride errors %.3f m, median RMS %.3f m, "
+                   "median final error %.3f m.\n\n",
+            vi.n, vi.strides, vi.stride_med, vi.rms_med, vi.final_med);
+
+    fprintf(ev.md, "## ipol_gait_xsens: stance detection and gait events against the experts\n\n"
+                   "Strides of the straight walking phases (inside the trial, clear of the U-turn, which the "
+                   "experts annotate only partly). A detected swing matches an expert swing when they overlap. "
+                   "Event errors in samples at 100 Hz: foot-off (FO) against the start, foot-strike (FS) against "
+                   "the end of the expert swing.\n\n");
+    ipol(&ev, &ev.cfg, 1, &ip);
+    fprintf(ev.md, "\n%d trials and feet: %d expert strides, %d detected, %d missed, %d spurious (target: none "
+                   "missed or spurious: %s). Event timing: median |FO error| %.1f samples (bias %+.1f, 90th percentile "
+                   "%.1f), median |FS error| %.1f samples (bias %+.1f, 90th percentile %.1f) (target <= 2: %s).\n\n",
+            ip.trials, ip.expected, ip.detected, ip.missed, ip.spurious, met(ip.missed == 0 && ip.spurious == 0),
+            ip.fo_med, ip.fo_bias, ip.fo_p90, ip.fs_med, ip.fs_bias, ip.fs_p90,
+            met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
+
+    if (exp) {
+        fnav_nav_config_t c2 = ev.cfg;
+        fprintf(ev.md, "## Paper experiment 1: AR(1) bias model on vs off\n\n"
+                       "Same walks, same configuration (profile `%s`) except `--bias-model`.\n\n",
+                ev.cfg.profile.name);
+        closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &ar1, 0.0, 0, &gx2_ar1);
+        closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &off, 0.0, 0, &gx2_off);
+        footprints(&ev, &ar1, 0.0, 0, &fp_ar1);
+        footprints(&ev, &off, 0.0, 0, &fp_off);
+        fprintf(ev.md, "| data set | figure | ar1 | off |\n|---|---|---:|---:|\n");
+        fprintf(ev.md, "| openshoe_gx2 | median horizontal closure (%%) | %.2f | %.2f |\n", gx2_ar1.h_pct_med,
+                gx2_off.h_pct_med);
+        fprintf(ev.md, "| openshoe_gx2 | median 3-D closure (%%) | %.2f | %.2f |\n", gx2_ar1.d3_pct_med,
+                gx2_off.d3_pct_med);
+        fprintf(ev.md, "| openshoe_gx2 | worst 3-D closure (%%) | %.2f | %.2f |\n", gx2_ar1.d3_pct_max,
+                gx2_off.d3_pct_max);
+        fprintf(ev.md, "| openshoe_gx2 | median vertical (m) | %+.3f | %+.3f |\n", gx2_ar1.vert_med, gx2_off.vert_med);
+        fprintf(ev.md, "| footprints | median final-stride error (%% of path) | %.2f | %.2f |\n", fp_ar1.final_pct_med,
+                fp_off.final_pct_med);
+        fprintf(ev.md, "| footprints | mean final-stride error (%% of path) | %.2f | %.2f |\n", fp_ar1.final_pct_mean,
+                fp_off.final_pct_mean);
+        {
+            char p[700], note[200];
+            hx_traj_t t;
+            hx_nav_summary_t s;
+            double r2[2];
+            int b;
+            for (i = 0; i < 2; i++) {
+                snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, i ? "long_walk.csv" : "short_walk.csv");
+                for (b = 0; b < 2; b++) {
+                    r2[b] = (double)NAN;
+                    if (replay(&ev, p, b ? &off : &ar1, 0.0, &t, &s, note, sizeof note) == 0) {
+                        r2[b] = s.end_3d_m;
+                        hx_traj_free(&t);
+                    }
+                }
+                fprintf(ev.md, "| xio %s | 3-D closure (m) | %.3f | %.3f |\n", i ? "long" : "short", r2[0], r2[1]);
+            }
+        }
+        fprintf(ev.md, "\n## Paper experiment 2: 100 Hz vs 200 Hz\n\n"
+                       "The higher-rate walks resampled (anti-alias low-pass, docs/harness.md) to 200 and 100 Hz, "
+                       "configuration as above (bias model `%s`).\n\n",
+                ev.cfg.bias_model == FNAV_BIAS_AR1 ? "ar1" : "off");
+        closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &c2, 200.0, 0, &gx2_200);
+        closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &c2, 100.0, 0, &gx2_100);
+        footprints(&ev, &c2, 100.0, 0, &fp_100);
+        fprintf(ev.md, "| data set | figure | native | 200 Hz | 100 Hz |\n|---|---|---:|---:|---:|\n");
+        fprintf(ev.md, "| openshoe_gx2 (250 Hz) | median horizontal closure (%%) | %.2f | %.2f | %.2f |\n",
+                gx2.h_pct_med, gx2_200.h_pct_med, gx2_100.h_pct_med);
+        fprintf(ev.md, "| openshoe_gx2 (250 Hz) | median 3-D closure (%%) | %.2f | %.2f | %.2f |\n", gx2.d3_pct_med,
+                gx2_200.d3_pct_med, gx2_100.d3_pct_med);
+        fprintf(ev.md, "| openshoe_gx2 (250 Hz) | median vertical (m) | %+.3f | %+.3f | %+.3f |\n", gx2.vert_med,
+                gx2_200.vert_med, gx2_100.vert_med);
+        fprintf(ev.md, "| footprints (200 Hz) | median final-stride error (%%) | %.2f | %.2f | %.2f |\n",
+                fp.final_pct_med, fp.final_pct_med, fp_100.final_pct_med);
+        {
+            char p[700], note[200];
+            hx_traj_t t;
+            hx_nav_summary_t s;
+            double r3[3];
+            const double rates[2] = { 200.0, 100.0 };
+            for (i = 0; i < 2; i++) {
+                int k;
+                r3[0] = i ? xl.d3_pct_med : xs.d3_pct_med;
+                for (k = 0; k < 2; k++) {
+                    r3[k + 1] = (double)NAN;
+                    snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, i ? "long_walk.csv" : "short_walk.csv");
+                    if (replay(&ev, p, &c2, rates[k], &t, &s, note, sizeof note) == 0) {
+                        r3[k + 1] = s.end_3d_m;
+                        hx_traj_free(&t);
+                    }
+                }
+                fprintf(ev.md, "| xio %s (400 Hz) | 3-D closure (m) | %.3f | %.3f | %.3f |\n", i ? "long" : "short",
+                        r3[0], r3[1], r3[2]);
+            }
+        }
+        fprintf(ev.md, "\n");
+    }
+    fprintf(ev.md, "## Targets\n\n| target | measured | status |\n|---|---|---|\n");
+    fprintf(ev.md, "| openshoe_gx2 horizontal median <= 0.35 %% | %.2f %% | %s |\n", gx2.h_pct_med, met(gx2.h_pct_med <= 0.35));
+    fprintf(ev.md, "| openshoe_gx2 3-D median <= 0.6 %% | %.2f %% | %s |\n", gx2.d3_pct_med, met(gx2.d3_pct_med <= 0.6));
+    fprintf(ev.md, "| openshoe_gx2 3-D worst <= 1.2 %% | %.2f %% | %s |\n", gx2.d3_pct_max, met(gx2.d3_pct_max <= 1.2));
+    fprintf(ev.md, "| footprints median final-stride error <= 2 %% | %.2f %% | %s |\n", fp.final_pct_med,
+            met(fp.final_pct_med <= 2.0));
+    fprintf(ev.md, "| xio short 3-D < 82 mm | %.0f mm | %s |\n", 1e3 * xs.d3_pct_med, met(xs.d3_pct_med < 0.082));
+    fprintf(ev.md, "| xio long 3-D < 421 mm | %.0f mm | %s |\n", 1e3 * xl.d3_pct_med, met(xl.d3_pct_med < 0.421));
+    fprintf(ev.md, "| ipol: no missed or spurious strides | %d missed, %d spurious | %s |\n", ip.missed, ip.spurious,
+            met(ip.missed == 0 && ip.spurious == 0));
+    fprintf(ev.md, "| ipol: median event timing error <= 2 samples | FO %.1f, FS %.1f | %s |\n", ip.fo_med, ip.fs_med,
+            met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
+    hx_progress_end(&ev.prog);
+    if (ev.md != stdout && fclose(ev.md) != 0) {
+        hx_error("eval", "cannot write %s", out_path);
+        return HX_EXIT_IO;
+    }
+    if (json_path != NULL) {
+        cJSON *j = cJSON_CreateObject();
+        char *text;
+        FILE *f;
+        jnum(j, "gx2_h_pct_median", gx2.h_pct_med);
+        jnum(j, "gx2_3d_pct_median", gx2.d3_pct_med);
+        jnum(j, "gx2_3d_pct_worst", gx2.d3_pct_max);
+        jnum(j, "gx2_vertical_m_median", gx2.vert_med);
+        jnum(j, "xio_short_3d_m", xs.d3_pct_med);
+        jnum(j, "xio_long_3d_m", xl.d3_pct_med);
+        jnum(j, "footprints_final_pct_median", fp.final_pct_med);
+        jnum(j, "footprints_final_pct_mean", fp.final_pct_mean);
+        jnum(j, "vicon_stride_err_m_median", vi.stride_med);
+        jnum(j, "ipol_missed", ip.missed);
+        jnum(j, "ipol_spurious", ip.spurious);
+        jnum(j, "ipol_fo_err_median", ip.fo_med);
+        jnum(j, "ipol_fs_err_median", ip.fs_med);
+        text = cJSON_Print(j);
+        cJSON_Delete(j);
+        f = text ? fopen(json_path, "w") : NULL;
+        if (f == NULL || fputs(text, f) == EOF || fclose(f) != 0) {
+            hx_error("eval", "cannot write %s", json_path);
+            free(text);
+            return HX_EXIT_IO;
+        }
+        free(text);
+    }
+    if (ev.failures > 0) {
+        hx_error("eval", "%d run(s) failed (see the warnings); results are incomplete", ev.failures);
+        return HX_EXIT_DATA;
+    }
+    return HX_EXIT_OK;
 }

@@ -1,14 +1,112 @@
-/* harness replay: placeholder until the navigation issue (#3) lands. */
-#include <stdio.h>
+/* harness replay: a log through the navigation core, sample by sample via
+ * the port layer, as firmware would run it (docs/harness.md). */
+#include <stdlib.h>
 #include <string.h>
 
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_nav.h"
+
+static const hx_opt_t k_opts[] = {
+    HX_INPUT_OPTS,
+    HX_NAV_OPTS,
+    { "--out", "FILE", "trajectory CSV (time, position, velocity, attitude, biases, flags, covariance)", 0 },
+    { "--json", "FILE", "summary as JSON (keys in docs/harness.md)", 0 },
+    { "--plot", "FILE", "PNG of the 2-D path and of the height over time", 0 },
+    { "--quiet", NULL, "no summary on standard output", 0 },
+    { NULL, NULL, NULL, 0 }
+};
+
+static const hx_spec_t k_spec = {
+    "replay", "LOG [options]",
+    "Replay a log through footnav's navigation (stance detector, alignment,\n"
+    "15-state UKF with zero-velocity updates) sample by sample through the\n"
+    "port layer, write the trajectory, print a summary: duration, distance\n"
+    "(step-to-step through stance mid-points), return-to-start error, vertical\n"
+    "drift, heading change, strides, timing and health counters. On bad input\n"
+    "every frame before the error is written and the exit status is 1.",
+    1, 1, k_opts
+};
 
 int hx_cmd_replay(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    fprintf(stderr, "harness replay: not available yet (planned in issue #3, navigation)\n");
-    return HX_EXIT_UNAVAIL;
+    hx_args_t a;
+    hx_nav_opts_t o;
+    fnav_nav_config_t cfg;
+    hx_traj_t traj;
+    hx_nav_summary_t sum;
+    hx_format_t fmt = HX_FMT_AUTO;
+    double in_rate = 0.0;
+    const char *out_path, *json_path, *plot_path, *from;
+    FILE *csv = NULL;
+    char err[400], cmdline[1024];
+    int rc, exit_code = HX_EXIT_OK, i;
+    size_t len = 0;
+    rc = hx_args_parse(&k_spec, argc, argv, &a);
+    if (rc != 0) {
+        return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
+    }
+    rc = hx_nav_opts_from_args("replay", &a, &o);
+    if (rc != 0) {
+        return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
+    }
+    from = hx_arg(&a, "--from");
+    if (from != NULL) {
+        fmt = hx_format_from_name(from);
+        if (fmt == HX_FMT_COUNT) {
+            hx_error("replay", "unknown --from format '%s' (%s)", from, hx_format_list());
+            return HX_EXIT_USAGE;
+        }
+    }
+    if (hx_arg_double(&a, "--input-rate", 0.001, 1e6, &in_rate) != 0) {
+        return HX_EXIT_USAGE;
+    }
+    if (hx_nav_config(&o, &cfg, err, sizeof err) != 0) {
+        hx_error("replay", "%s", err);
+        return HX_EXIT_USAGE;
+    }
+    out_path = hx_arg(&a, "--out");
+    json_path = hx_arg(&a, "--json");
+    plot_path = hx_arg(&a, "--plot");
+    if (out_path != NULL) {
+        csv = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
+        if (csv == NULL) {
+            hx_error("replay", "cannot write %s", out_path);
+            return HX_EXIT_IO;
+        }
+    }
+    len += (size_t)snprintf(cmdline, sizeof cmdline, "harness replay");
+    for (i = 0; i < argc && len < sizeof cmdline; i++) {
+        len += (size_t)snprintf(cmdline + len, sizeof cmdline - len, " %s", argv[i]);
+    }
+    rc = hx_nav_replay("replay", a.pos[0], fmt, in_rate, &cfg, o.rate_hz, csv, &traj, 1, err, sizeof err);
+    if (csv != NULL && csv != stdout && fclose(csv) != 0 && rc >= 0) {
+        hx_error("replay", "cannot write %s", out_path);
+        rc = -3;
+    }
+    if (rc == -1) {
+        hx_error("replay", "%s", err);
+        hx_traj_free(&traj);
+        return HX_EXIT_DATA;
+    }
+    if (rc == -3) {
+        hx_error("replay", "%s", err);
+        exit_code = HX_EXIT_IO;
+    } else if (rc == 1) {
+        hx_error("replay", "%s (frames before it were written)", err);
+        exit_code = HX_EXIT_DATA;
+    }
+    hx_nav_summarize(&traj, &sum);
+    if (!hx_flag(&a, "--quiet")) {
+        hx_nav_print_summary(csv == stdout ? stderr : stdout, a.pos[0], &traj, &sum);
+    }
+    if (json_path != NULL && hx_nav_write_json(json_path, a.pos[0], cmdline, &traj, &sum, err, sizeof err) != 0) {
+        hx_error("replay", "%s", err);
+        exit_code = HX_EXIT_IO;
+    }
+    if (plot_path != NULL && hx_nav_plot("replay", plot_path, a.pos[0], &traj) != 0) {
+        exit_code = HX_EXIT_IO;
+    }
+    hx_traj_free(&traj);
+    return exit_code;
 }

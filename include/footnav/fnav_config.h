@@ -32,6 +32,13 @@
 #define FNAV_STANCE_MAX_WINDOW 64
 #endif
 
+/** Jerk history of the stance detector's foot-strike search, samples: the
+ *  search covers min(event_window_s, this many samples), i.e. the full 0.3 s
+ *  up to 533 Hz (fnav_stance.h). 8 bytes per sample. */
+#ifndef FNAV_STANCE_EVENT_BUF
+#define FNAV_STANCE_EVENT_BUF 160
+#endif
+
 /** Octaves of averaging time covered by the streaming Allan estimator:
  *  tau = 2^0 .. 2^(N-1) samples. 21 reaches 2^20 = 1,048,576 samples, more
  *  than 10 % of a 12-hour log at 200 Hz (864,000 samples). Each octave above

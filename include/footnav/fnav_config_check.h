@@ -18,6 +18,10 @@
 #error "FNAV_STANCE_MAX_WINDOW must be in 3..1024"
 #endif
 
+#if (FNAV_STANCE_EVENT_BUF < 8) || (FNAV_STANCE_EVENT_BUF > 4096)
+#error "FNAV_STANCE_EVENT_BUF must be in 8..4096"
+#endif
+
 #if (FNAV_ALLAN_MAX_LEVELS < 2) || (FNAV_ALLAN_MAX_LEVELS > 31)
 #error "FNAV_ALLAN_MAX_LEVELS must be in 2..31"
 #endif

@@ -48,6 +48,7 @@ typedef struct {
     fnav_real_t gyro_bias_rps[3];    /**< gyroscope bias estimate, rad/s */
     fnav_real_t accel_bias_mps2[3];  /**< accelerometer bias estimate, m/s^2 */
     fnav_real_t p_diag[15];          /**< covariance diagonal, state order of fnav_ukf.h */
+    fnav_real_t lever_m[3];          /**< estimated pivot-to-IMU lever in b, m (0 when not estimated) */
 } fnav_nav_frame_t;
 
 /** A port: callbacks plus the context pointer passed to each of them.

@@ -18,6 +18,11 @@ extern "C" {
 #include "fnav_allan.h"
 #include "fnav_fft.h"
 #include "fnav_welch.h"
+#include "fnav_strapdown.h"
+#include "fnav_stance.h"
+#include "fnav_align.h"
+#include "fnav_ukf.h"
+#include "fnav_nav.h"
 
 #ifdef __cplusplus
 }

@@ -65,6 +65,9 @@ static fnav_status_t linux_write_nav(void *ctx, const fnav_nav_frame_t *f)
     for (i = 0; i < 15; i++) {
         fprintf(c->nav_csv, ",%.4e", (double)f->p_diag[i]);
     }
+    for (i = 0; i < 3; i++) {
+        fprintf(c->nav_csv, ",%.4f", (double)f->lever_m[i]);
+    }
     if (fputc('\n', c->nav_csv) == EOF) {
         return FNAV_E_IO;
     }

@@ -1,0 +1,769 @@
+/* Harness side of navigation: options, replay engine, resampler, summary,
+ * JSON and plots (hx_nav.h). */
+#include "hx_nav.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fnav_port_linux.h"
+#include "hx_profile.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+/* ------------------------------------------------------------ options */
+
+int hx_nav_opts_from_args(const char *cmd, const hx_args_t *a, hx_nav_opts_t *o)
+{
+    int i;
+    memset(o, 0, sizeof *o);
+    o->profile = hx_arg(a, "--profile");
+    o->bias_model = hx_arg(a, "--bias-model");
+    o->detector = hx_arg(a, "--detector");
+    if (hx_arg_double(a, "--rate", 1.0, 100000.0, &o->rate_hz) != 0) {
+        return -1;
+    }
+    o->nparams = hx_arg_count(a, "--param");
+    for (i = 0; i < o->nparams; i++) {
+        o->params[i] = hx_arg_at(a, "--param", i);
+        if (strcmp(o->params[i], "help") == 0) {
+            hx_nav_param_help(stdout);
+            return 1;
+        }
+    }
+    if (o->bias_model != NULL && strcmp(o->bias_model, "ar1") != 0 && strcmp(o->bias_model, "off") != 0) {
+        hx_error(cmd, "--bias-model must be ar1 or off, not '%s'", o->bias_model);
+        return -1;
+    }
+    if (o->detector != NULL && strcmp(o->detector, "shoe") != 0 && strcmp(o->detector, "threshold") != 0) {
+        hx_error(cmd, "--detector must be shoe or threshold, not '%s'", o->detector);
+        return -1;
+    }
+    return 0;
+}
+
+/* --param table: key, unit scale (value * scale -> SI), help. */
+typedef enum { P_REAL, P_INT } ptype_t;
+typedef struct {
+    const char *key;
+    ptype_t type;
+    double scale;
+    const char *help;
+} param_t;
+
+static const param_t k_params[] = {
+    { "gamma", P_REAL, 1.0, "SHOE threshold" },
+    { "window_s", P_REAL, 1.0, "detector window, s" },
+    { "sigma_a", P_REAL, 1.0, "SHOE accel weight, m/s^2" },
+    { "sigma_g_dps", P_REAL, 3.14159265358979323846 / 180.0, "SHOE gyro weight, deg/s" },
+    { "adaptive", P_INT, 1.0, "adaptive threshold 0/1" },
+    { "floor_rise", P_REAL, 1.0, "adaptive floor rise, decades/s" },
+    { "margin_dec", P_REAL, 1.0, "adaptive threshold above the floor, decades" },
+    { "adapt_max_ratio", P_REAL, 1.0, "adaptive threshold at most gamma times this" },
+    { "gyro_thresh_dps", P_REAL, 3.14159265358979323846 / 180.0, "threshold detector: RMS rate limit, deg/s" },
+    { "accel_thresh", P_REAL, 1.0, "threshold detector: RMS ||f|-g| limit, m/s^2" },
+    { "min_zupt_s", P_REAL, 1.0, "a stance shorter than this is ignored, s" },
+    { "min_stance_s", P_REAL, 1.0, "segmentation: shortest stance, s" },
+    { "min_swing_s", P_REAL, 1.0, "segmentation: shortest swing, s" },
+    { "gravity", P_REAL, 1.0, "local gravity, m/s^2" },
+    { "accel_motion_noise", P_REAL, 1.0, "extra accel process noise, m/s^2/sqrt(Hz)" },
+    { "gyro_motion_noise_dps", P_REAL, 3.14159265358979323846 / 180.0, "extra gyro process noise, deg/s/sqrt(Hz)" },
+    { "zupt_sigma", P_REAL, 1.0, "ZUPT noise, m/s" },
+    { "lever", P_INT, 1.0, "estimate the rolling-foot lever 0/1 (ZUPT of the pivot)" },
+    { "lever_sd", P_REAL, 1.0, "initial lever sd, m" },
+    { "lever_rw", P_REAL, 1.0, "lever random walk, m/sqrt(s)" },
+    { "zaru", P_INT, 1.0, "zero-angular-rate updates 0/1" },
+    { "zaru_sigma_dps", P_REAL, 3.14159265358979323846 / 180.0, "ZARU noise, deg/s" },
+    { "tilt_sd_deg", P_REAL, 3.14159265358979323846 / 180.0, "initial roll/pitch sd, deg" },
+    { "yaw_sd_deg", P_REAL, 3.14159265358979323846 / 180.0, "initial yaw sd, deg" },
+    { "gyro_bias_sd_dps", P_REAL, 3.14159265358979323846 / 180.0, "initial gyro bias sd floor, deg/s" },
+    { "accel_bias_sd", P_REAL, 1.0, "initial accel bias sd, m/s^2" },
+    { "max_gap_s", P_REAL, 1.0, "longest interval integrated as it is, s" },
+    { "closed_form", P_INT, 1.0, "UKF closed-form linear sigma points 0/1" },
+    { "align_min_s", P_REAL, 1.0, "shortest still period for the alignment, s" },
+    { "align_max_s", P_REAL, 1.0, "alignment ends after this much stillness, s" },
+    { NULL, P_REAL, 0.0, NULL }
+};
+
+static void *param_ptr(fnav_nav_config_t *c, const char *key)
+{
+    if (strcmp(key, "gamma") == 0) return &c->stance.gamma;
+    if (strcmp(key, "window_s") == 0) return &c->stance.window_s;
+    if (strcmp(key, "sigma_a") == 0) return &c->stance.sigma_a_mps2;
+    if (strcmp(key, "sigma_g_dps") == 0) return &c->stance.sigma_g_rps;
+    if (strcmp(key, "adaptive") == 0) return &c->stance.adaptive;
+    if (strcmp(key, "floor_rise") == 0) return &c->stance.floor_rise_dps;
+    if (strcmp(key, "margin_dec") == 0) return &c->stance.margin_dec;
+    if (strcmp(key, "adapt_max_ratio") == 0) return &c->stance.adapt_max_ratio;
+    if (strcmp(key, "gyro_thresh_dps") == 0) return &c->stance.gyro_thresh_rps;
+    if (strcmp(key, "accel_thresh") == 0) return &c->stance.accel_thresh_mps2;
+    if (strcmp(key, "min_stance_s") == 0) return &c->stance.min_stance_s;
+    if (strcmp(key, "min_zupt_s") == 0) return &c->stance.min_zupt_s;
+    if (strcmp(key, "min_swing_s") == 0) return &c->stance.min_swing_s;
+    if (strcmp(key, "gravity") == 0) return &c->gravity_mps2;
+    if (strcmp(key, "accel_motion_noise") == 0) return &c->accel_motion_noise_mps2_rthz;
+    if (strcmp(key, "gyro_motion_noise_dps") == 0) return &c->gyro_motion_noise_rps_rthz;
+    if (strcmp(key, "zupt_sigma") == 0) return &c->zupt_sigma_mps;
+    if (strcmp(key, "lever") == 0) return &c->lever;
+    if (strcmp(key, "lever_sd") == 0) return &c->lever_sd_m;
+    if (strcmp(key, "lever_rw") == 0) return &c->lever_rw_m_rts;
+    if (strcmp(key, "zaru") == 0) return &c->zaru;
+    if (strcmp(key, "zaru_sigma_dps") == 0) return &c->zaru_sigma_rps;
+    if (strcmp(key, "tilt_sd_deg") == 0) return &c->tilt_sd_rad;
+    if (strcmp(key, "yaw_sd_deg") == 0) return &c->yaw_sd_rad;
+    if (strcmp(key, "gyro_bias_sd_dps") == 0) return &c->gyro_bias_sd_rps;
+    if (strcmp(key, "accel_bias_sd") == 0) return &c->accel_bias_sd_mps2;
+    if (strcmp(key, "max_gap_s") == 0) return &c->max_gap_s;
+    if (strcmp(key, "closed_form") == 0) return &c->closed_form;
+    if (strcmp(key, "align_min_s") == 0) return &c->align.min_still_s;
+    if (strcmp(key, "align_max_s") == 0) return &c->align.max_still_s;
+    return NULL;
+}
+
+void hx_nav_param_help(FILE *f)
+{
+    fnav_nav_config_t c = fnav_nav_config_default;
+    int i;
+    fprintf(f, "navigation parameters (--param KEY=VALUE), with their defaults:\n");
+    for (i = 0; k_params[i].key != NULL; i++) {
+        void *p = param_ptr(&c, k_params[i].key);
+        double v = k_params[i].type == P_INT ? (double)*(int *)p : (double)*(fnav_real_t *)p / k_params[i].scale;
+        fprintf(f, "  %-22s %-12g %s\n", k_params[i].key, v, k_params[i].help);
+    }
+}
+
+static int set_param(fnav_nav_config_t *c, const char *kv, char *err, size_t err_size)
+{
+    char key[64];
+    const char *eq = strchr(kv, '=');
+    char *end;
+    double v;
+    int i;
+    void *p;
+    if (eq == NULL || (size_t)(eq - kv) >= sizeof key) {
+        snprintf(err, err_size, "--param needs KEY=VALUE, not '%s'", kv);
+        return -1;
+    }
+    memcpy(key, kv, (size_t)(eq - kv));
+    key[eq - kv] = '\0';
+    v = strtod(eq + 1, &end);
+    if (end == eq + 1 || *end != '\0' || !isfinite(v)) {
+        snprintf(err, err_size, "--param %s: '%s' is not a number", key, eq + 1);
+        return -1;
+    }
+    for (i = 0; k_params[i].key != NULL; i++) {
+        if (strcmp(k_params[i].key, key) == 0) {
+            break;
+        }
+    }
+    p = param_ptr(c, key);
+    if (k_params[i].key == NULL || p == NULL) {
+        snprintf(err, err_size, "--param: unknown key '%s' (list: --param help)", key);
+        return -1;
+    }
+    if (k_params[i].type == P_INT) {
+        *(int *)p = (int)v;
+    } else {
+        *(fnav_real_t *)p = (fnav_real_t)(v * k_params[i].scale);
+    }
+    return 0;
+}
+
+int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, size_t err_size)
+{
+    static fnav_nav_t probe; /* validates the configuration as the core will */
+    int i;
+    *cfg = fnav_nav_config_default;
+    if (o->profile != NULL && hx_profile_load(o->profile, &cfg->profile, err, err_size) != 0) {
+        return -1;
+    }
+    if (o->bias_model != NULL) {
+        cfg->bias_model = strcmp(o->bias_model, "off") == 0 ? FNAV_BIAS_OFF : FNAV_BIAS_AR1;
+    }
+    if (o->detector != NULL) {
+        cfg->stance.detector = strcmp(o->detector, "threshold") == 0 ? FNAV_DETECTOR_THRESHOLD : FNAV_DETECTOR_SHOE;
+    }
+    for (i = 0; i < o->nparams; i++) {
+        if (set_param(cfg, o->params[i], err, err_size) != 0) {
+            return -1;
+        }
+    }
+    if (o->rate_hz > 0.0) {
+        cfg->stance.rate_hz = (fnav_real_t)o->rate_hz;
+    }
+    if (fnav_nav_init(&probe, cfg) != FNAV_OK) {
+        snprintf(err, err_size, "navigation configuration rejected by the core (a --param value out of range)");
+        return -1;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------ resampler */
+
+static int cmp_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+int hx_nav_resample(const hx_log_t *in, double rate_hz, hx_log_t *out, long *dups, double *in_rate, char *err,
+                    size_t err_size)
+{
+    size_t n = 0, i, k, nout, m;
+    int64_t *dt;
+    double fs, fc, *h, (*fa)[3], (*fg)[3];
+    int half, j, c;
+    size_t *keep;
+    memset(out, 0, sizeof *out);
+    *dups = 0;
+    if (in->n < 4) {
+        snprintf(err, err_size, "too few samples to resample (%zu)", in->n);
+        return -1;
+    }
+    keep = (size_t *)malloc(in->n * sizeof *keep);
+    dt = (int64_t *)malloc(in->n * sizeof *dt);
+    if (keep == NULL || dt == NULL) {
+        free(keep);
+        free(dt);
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    /* exact repeated time stamps carry no new instant: keep the first */
+    for (i = 0; i < in->n; i++) {
+        if (n > 0 && in->t_ns[i] <= in->t_ns[keep[n - 1]]) {
+            (*dups)++;
+            continue;
+        }
+        keep[n++] = i;
+    }
+    for (i = 1; i < n; i++) {
+        dt[i - 1] = in->t_ns[keep[i]] - in->t_ns[keep[i - 1]];
+    }
+    qsort(dt, n - 1, sizeof *dt, cmp_i64);
+    fs = 1e9 / (double)dt[(n - 1) / 2];
+    free(dt);
+    *in_rate = fs;
+    if (!(rate_hz < fs * 0.999)) {
+        free(keep);
+        snprintf(err, err_size, "--rate %g Hz is not below the input rate %.1f Hz (only downsampling)", rate_hz, fs);
+        return -1;
+    }
+    /* Blackman-windowed sinc low-pass at 0.45 x the new rate, about 41
+     * times the rate ratio long (transition ~0.13 x the new rate), unit DC
+     * gain; applied as if the input were uniform at its median rate. */
+    fc = 0.45 * rate_hz / fs; /* cycles per input sample */
+    half = (int)ceil(20.0 * fs / rate_hz);
+    h = (double *)malloc((size_t)(2 * half + 1) * sizeof *h);
+    fa = (double(*)[3])malloc(n * sizeof *fa);
+    fg = (double(*)[3])malloc(n * sizeof *fg);
+    if (h == NULL || fa == NULL || fg == NULL) {
+        free(h);
+        free(fa);
+        free(fg);
+        free(keep);
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    for (j = -half; j <= half; j++) {
+        double x = 2.0 * M_PI * fc * j;
+        double s = j == 0 ? 2.0 * fc : sin(x) / (M_PI * j);
+        double w = 0.42 + 0.5 * cos(M_PI * j / half) + 0.08 * cos(2.0 * M_PI * j / half);
+        h[j + half] = s * w;
+    }
+    for (i = 0; i < n; i++) {
+        double sa[3] = { 0, 0, 0 }, sg[3] = { 0, 0, 0 }, sw = 0.0;
+        for (j = -half; j <= half; j++) {
+            long q = (long)i + j;
+            if (q < 0 || q >= (long)n) {
+                continue; /* edges: renormalised partial window */
+            }
+            for (c = 0; c < 3; c++) {
+                sa[c] += h[j + half] * in->acc[keep[q]][c];
+                sg[c] += h[j + half] * in->gyr[keep[q]][c];
+            }
+            sw += h[j + half];
+        }
+        for (c = 0; c < 3; c++) {
+            fa[i][c] = sa[c] / sw;
+            fg[i][c] = sg[c] / sw;
+        }
+    }
+    free(h);
+    /* outputs on the new grid, linear interpolation of the filtered signal
+     * at the actual input time stamps */
+    {
+        int64_t t0 = in->t_ns[keep[0]], t1 = in->t_ns[keep[n - 1]];
+        double period_ns = 1e9 / rate_hz;
+        nout = (size_t)floor((double)(t1 - t0) / period_ns) + 1;
+        out->t_ns = (int64_t *)malloc(nout * sizeof *out->t_ns);
+        out->seq = (uint32_t *)malloc(nout * sizeof *out->seq);
+        out->acc = (double(*)[3])malloc(nout * sizeof *out->acc);
+        out->gyr = (double(*)[3])malloc(nout * sizeof *out->gyr);
+        out->temp = (double *)malloc(nout * sizeof *out->temp);
+        if (!out->t_ns || !out->seq || !out->acc || !out->gyr || !out->temp) {
+            hx_log_free(out);
+            free(fa);
+            free(fg);
+            free(keep);
+            snprintf(err, err_size, "out of memory");
+            return -1;
+        }
+        m = 0;
+        for (k = 0; k < nout; k++) {
+            int64_t t = t0 + (int64_t)llround((double)k * period_ns);
+            double u;
+            while (m + 1 < n - 1 && in->t_ns[keep[m + 1]] <= t) {
+                m++;
+            }
+            if (m + 1 >= n) {
+                m = n - 2;
+            }
+            u = (double)(t - in->t_ns[keep[m]]) / (double)(in->t_ns[keep[m + 1]] - in->t_ns[keep[m]]);
+            u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
+            out->t_ns[k] = t;
+            out->seq[k] = (uint32_t)k;
+            out->temp[k] = (double)NAN;
+            for (c = 0; c < 3; c++) {
+                out->acc[k][c] = fa[m][c] + u * (fa[m + 1][c] - fa[m][c]);
+                out->gyr[k][c] = fg[m][c] + u * (fg[m + 1][c] - fg[m][c]);
+            }
+        }
+    }
+    out->n = nout;
+    out->meta = in->meta;
+    out->meta.rate_hz = rate_hz;
+    out->meta.rate_nominal = 1;
+    out->status = FNAV_END;
+    free(fa);
+    free(fg);
+    free(keep);
+    return 0;
+}
+
+/* ------------------------------------------------------------ replay */
+
+void hx_traj_free(hx_traj_t *t)
+{
+    free(t->f);
+    memset(t, 0, sizeof *t);
+}
+
+/* The harness port: the Linux port's CSV sink plus frame collection, and a
+ * source that is either the Linux port's reader or a resampled log in
+ * memory; progress is updated from the source. */
+typedef struct {
+    fnav_port_t linux_port;
+    fnav_linux_port_ctx_t lctx;
+    const hx_log_t *mem;      /* resampled input, or NULL */
+    size_t mem_i;
+    hx_traj_t *traj;
+    hx_progress_t prog;
+    int progress;
+    double total;
+    long n_read;
+    int sink_failed;
+} hx_port_ctx_t;
+
+static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
+{
+    hx_port_ctx_t *c = (hx_port_ctx_t *)ctx;
+    fnav_status_t st;
+    if (c->mem != NULL) {
+        size_t i = c->mem_i;
+        int k;
+        if (i >= c->mem->n) {
+            return FNAV_END;
+        }
+        memset(s, 0, sizeof *s);
+        s->t_ns = c->mem->t_ns[i];
+        s->seq = c->mem->seq[i];
+        for (k = 0; k < 3; k++) {
+            s->accel_mps2[k] = (fnav_real_t)c->mem->acc[i][k];
+            s->gyro_rps[k] = (fnav_real_t)c->mem->gyr[i][k];
+        }
+        c->mem_i++;
+        if (!c->lctx.have_t0) {
+            c->lctx.t0_ns = s->t_ns;
+            c->lctx.have_t0 = 1;
+        }
+        st = FNAV_OK;
+    } else {
+        st = c->linux_port.read_sample(c->linux_port.ctx, s);
+    }
+    if (st == FNAV_OK) {
+        c->n_read++;
+        if (c->progress && (c->n_read & 1023) == 0) {
+            /* resampled: samples of a known total; streamed: the fraction of
+             * the input file consumed */
+            double done = c->mem != NULL ? (double)c->n_read : hx_reader_progress(c->lctx.reader);
+            if (done >= 0.0) {
+                hx_progress_update(&c->prog, done);
+            }
+        }
+    }
+    return st;
+}
+
+static fnav_status_t hx_write(void *ctx, const fnav_nav_frame_t *f)
+{
+    hx_port_ctx_t *c = (hx_port_ctx_t *)ctx;
+    hx_traj_t *t = c->traj;
+    if (c->linux_port.write_nav(c->linux_port.ctx, f) != FNAV_OK) {
+        c->sink_failed = 1;
+        return FNAV_E_IO;
+    }
+    if (t != NULL) {
+        if (t->n == t->cap) {
+            size_t nc = t->cap ? 2 * t->cap : 16384;
+            fnav_nav_frame_t *p = (fnav_nav_frame_t *)realloc(t->f, nc * sizeof *p);
+            if (p == NULL) {
+                return FNAV_E_IO;
+            }
+            t->f = p;
+            t->cap = nc;
+        }
+        t->f[t->n++] = *f;
+    }
+    return FNAV_OK;
+}
+
+static int64_t hx_now(void *ctx)
+{
+    hx_port_ctx_t *c = (hx_port_ctx_t *)ctx;
+    return c->linux_port.now_ns(c->linux_port.ctx);
+}
+
+static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
+{
+    hx_port_ctx_t *c = (hx_port_ctx_t *)ctx;
+    c->linux_port.log(c->linux_port.ctx, level, msg);
+}
+
+int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_rate, const fnav_nav_config_t *cfg,
+                  double rate_hz, FILE *csv, hx_traj_t *traj, int progress, char *err, size_t err_size)
+{
+    static fnav_nav_t nav; /* about 7.5 KB: not on the stack of a deep caller */
+    hx_port_ctx_t pc;
+    fnav_port_t port;
+    hx_reader_t *r = NULL;
+    hx_log_t raw, res;
+    fnav_status_t st;
+    int rc = 0;
+    memset(&pc, 0, sizeof pc);
+    memset(&raw, 0, sizeof raw);
+    memset(&res, 0, sizeof res);
+    err[0] = '\0';
+    if (traj != NULL) {
+        memset(traj, 0, sizeof *traj);
+    }
+    if (fnav_nav_init(&nav, cfg) != FNAV_OK) {
+        snprintf(err, err_size, "navigation configuration rejected (check --param values)");
+        return -1;
+    }
+    if (rate_hz > 0.0) {
+        long dups = 0;
+        double fs = 0.0;
+        int lrc = hx_log_load(&raw, path, fmt, in_rate, err, err_size);
+        if (lrc < 0) {
+            return -1;
+        }
+        if (lrc > 0) {
+            snprintf(err, err_size, "%s", raw.error);
+            rc = 1;
+        }
+        if (hx_nav_resample(&raw, rate_hz, &res, &dups, &fs, err, err_size) != 0) {
+            hx_log_free(&raw);
+            return -1;
+        }
+        hx_log_free(&raw);
+        pc.mem = &res;
+        pc.total = (double)res.n;
+        if (traj != NULL) {
+            traj->in_rate_hz = fs;
+            traj->resample_dropped_dups = dups;
+        }
+    } else {
+        r = hx_reader_open(path, fmt, in_rate, err, err_size);
+        if (r == NULL) {
+            return -1;
+        }
+    }
+    fnav_linux_port_init(&pc.linux_port, &pc.lctx, r, csv);
+    pc.traj = traj;
+    pc.progress = progress;
+    port.ctx = &pc;
+    port.read_sample = hx_read;
+    port.now_ns = hx_now;
+    port.write_nav = hx_write;
+    port.log = hx_logmsg;
+    if (progress) {
+        hx_progress_start(&pc.prog, cmd, pc.total > 0.0 ? pc.total : 1.0);
+    }
+    st = fnav_nav_run(&nav, &port, 0);
+    if (progress) {
+        hx_progress_end(&pc.prog);
+    }
+    if (st == FNAV_E_IO || pc.sink_failed) {
+        snprintf(err, err_size, "cannot write the trajectory");
+        rc = -3;
+    } else if (st != FNAV_OK && r != NULL) {
+        snprintf(err, err_size, "%s", hx_reader_error(r));
+        rc = 1;
+    }
+    if (traj != NULL) {
+        traj->stats = nav.stats;
+        traj->rate_hz = (double)nav.stance.rate_hz;
+        traj->window = nav.stance.win;
+        traj->align = nav.align.result;
+        traj->aligned = nav.aligned;
+    }
+    if (r != NULL) {
+        /* warnings collected while reading (assumed rates, cut-off lines) */
+        const char *w = hx_reader_warnings(r);
+        if (w != NULL && *w != '\0') {
+            hx_warn(cmd, "%s", w);
+        }
+        hx_reader_close(r);
+    }
+    hx_log_free(&res);
+    if (rc == 0 && !nav.aligned) {
+        snprintf(err, err_size, "%s: no still period of %.2f s found for the initial alignment", path,
+                 (double)cfg->align.min_still_s);
+        rc = 1;
+    }
+    return rc;
+}
+
+/* ------------------------------------------------------------ summary */
+
+size_t hx_nav_stance_mids(const hx_traj_t *t, size_t *idx, size_t max)
+{
+    size_t i, n = 0, start = 0;
+    int in = 0;
+    for (i = 0; i <= t->n; i++) {
+        int st = i < t->n && (t->f[i].flags & FNAV_FRAME_ALIGNED) && (t->f[i].flags & FNAV_FRAME_SEG_STANCE);
+        if (st && !in) {
+            start = i;
+            in = 1;
+        } else if (!st && in) {
+            if (n < max) {
+                idx[n++] = (start + i - 1) / 2;
+            }
+            in = 0;
+        }
+    }
+    return n;
+}
+
+void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
+{
+    size_t i, n, *mid;
+    size_t first = t->n;
+    double yaw_prev = 0.0, yaw_acc = 0.0, zupt = 0.0;
+    memset(s, 0, sizeof *s);
+    for (i = 0; i < t->n; i++) {
+        if (t->f[i].flags & FNAV_FRAME_ALIGNED) {
+            first = i;
+            break;
+        }
+    }
+    if (first >= t->n) {
+        return;
+    }
+    s->duration_s = 1e-9 * (double)(t->f[t->n - 1].t_ns - t->f[0].t_ns);
+    for (i = first; i < t->n; i++) {
+        const fnav_nav_frame_t *f = &t->f[i];
+        double yaw = (double)f->euler_rad[2];
+        if (i > first) {
+            const fnav_nav_frame_t *g = &t->f[i - 1];
+            double dx = (double)f->pos_m[0] - (double)g->pos_m[0], dy = (double)f->pos_m[1] - (double)g->pos_m[1],
+                   dz = (double)f->pos_m[2] - (double)g->pos_m[2];
+            double dyaw = yaw - yaw_prev;
+            s->integrated_path_m += sqrt(dx * dx + dy * dy + dz * dz);
+            while (dyaw > M_PI) {
+                dyaw -= 2.0 * M_PI;
+            }
+            while (dyaw < -M_PI) {
+                dyaw += 2.0 * M_PI;
+            }
+            yaw_acc += dyaw;
+        }
+        yaw_prev = yaw;
+        if (f->flags & FNAV_FRAME_ZUPT) {
+            zupt += 1.0;
+        }
+    }
+    s->heading_change_deg = yaw_acc * 180.0 / M_PI;
+    s->stance_fraction = zupt / (double)(t->n - first);
+    s->strides = (long)t->stats.strides;
+    mid = (size_t *)malloc((t->n + 1) * sizeof *mid);
+    n = mid != NULL ? hx_nav_stance_mids(t, mid, t->n + 1) : 0;
+    s->stance_phases = (long)n;
+    {
+        const fnav_nav_frame_t *a = n > 0 ? &t->f[mid[0]] : &t->f[first];
+        const fnav_nav_frame_t *b = n > 0 ? &t->f[mid[n - 1]] : &t->f[t->n - 1];
+        int k;
+        for (i = 1; i < n; i++) {
+            const fnav_nav_frame_t *p = &t->f[mid[i - 1]], *q = &t->f[mid[i]];
+            double dx = (double)q->pos_m[0] - (double)p->pos_m[0], dy = (double)q->pos_m[1] - (double)p->pos_m[1],
+                   dz = (double)q->pos_m[2] - (double)p->pos_m[2];
+            s->path_m += sqrt(dx * dx + dy * dy + dz * dz);
+            s->path_h_m += sqrt(dx * dx + dy * dy);
+        }
+        for (k = 0; k < 3; k++) {
+            s->start_pos_m[k] = (double)a->pos_m[k];
+            s->end_pos_m[k] = (double)b->pos_m[k];
+        }
+    }
+    free(mid);
+    {
+        double dx = s->end_pos_m[0] - s->start_pos_m[0], dy = s->end_pos_m[1] - s->start_pos_m[1],
+               dz = s->end_pos_m[2] - s->start_pos_m[2];
+        s->end_h_m = sqrt(dx * dx + dy * dy);
+        s->end_3d_m = sqrt(dx * dx + dy * dy + dz * dz);
+        s->vertical_m = -dz; /* n is z down: up positive */
+        s->end_h_pct = s->path_m > 0.0 ? 100.0 * s->end_h_m / s->path_m : (double)NAN;
+        s->end_3d_pct = s->path_m > 0.0 ? 100.0 * s->end_3d_m / s->path_m : (double)NAN;
+    }
+}
+
+void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const hx_nav_summary_t *s)
+{
+    const fnav_nav_stats_t *st = &t->stats;
+    fprintf(f, "log               %s\n", path);
+    if (t->in_rate_hz > 0.0) {
+        fprintf(f, "resampled         %.1f Hz -> %.1f Hz (%ld duplicate time stamps dropped)\n", t->in_rate_hz,
+                t->rate_hz, t->resample_dropped_dups);
+    }
+    fprintf(f, "rate              %.1f Hz, detector window %d samples\n", t->rate_hz, t->window);
+    fprintf(f, "duration          %.2f s, %u samples, %u frames\n", s->duration_s, st->samples, st->frames);
+    if (!t->aligned) {
+        fprintf(f, "alignment         NOT ALIGNED (no still period)\n");
+        return;
+    }
+    fprintf(f, "alignment         %.2f s still: roll %.2f deg, pitch %.2f deg, |f| %.4f m/s^2\n",
+            (double)t->align.duration_s, (double)t->align.euler_rad.v[0] * 180.0 / M_PI,
+            (double)t->align.euler_rad.v[1] * 180.0 / M_PI, (double)fnav_vec3_norm(t->align.accel_mean_mps2));
+    fprintf(f, "distance          %.2f m step-to-step (%.2f m horizontal), %.2f m integrated\n", s->path_m,
+            s->path_h_m, s->integrated_path_m);
+    fprintf(f, "return-to-start   horizontal %.3f m (%.2f %%), 3-D %.3f m (%.2f %%)\n", s->end_h_m, s->end_h_pct,
+            s->end_3d_m, s->end_3d_pct);
+    fprintf(f, "end position      x %.3f, y %.3f, z %.3f m (n frame, z down)\n", s->end_pos_m[0], s->end_pos_m[1],
+            s->end_pos_m[2]);
+    fprintf(f, "vertical drift    %+.3f m (height change, up positive)\n", s->vertical_m);
+    fprintf(f, "heading change    %+.1f deg\n", s->heading_change_deg);
+    fprintf(f, "stance            %ld strides, %ld stance phases, %.1f %% of frames with ZUPT\n", s->strides,
+            s->stance_phases, 100.0 * s->stance_fraction);
+    fprintf(f, "timing            %u duplicates (dt = 0), %u gaps, %u time jumps, longest interval %.1f ms\n",
+            st->duplicates, st->gaps, st->time_jumps, 1e3 * (double)st->max_gap_seen_s);
+    fprintf(f, "health            %u NaN/Inf rejected, %u backwards rejected, %u jitter, %u resets, "
+               "%u undone, %u updates rejected\n",
+            st->nan_inputs, st->time_back, st->chol_jitter, st->chol_reset, st->diverged, st->update_reject);
+}
+
+static cJSON *num(double v)
+{
+    return isfinite(v) ? cJSON_CreateNumber(v) : cJSON_CreateNull();
+}
+
+int hx_nav_write_json(const char *json_path, const char *log_path, const char *command, const hx_traj_t *t,
+                      const hx_nav_summary_t *s, char *err, size_t err_size)
+{
+    cJSON *root = cJSON_CreateObject(), *h = cJSON_CreateObject(), *arr;
+    const fnav_nav_stats_t *st = &t->stats;
+    char *text;
+    FILE *f;
+    int k, rc = 0;
+    cJSON_AddStringToObject(root, "log", log_path);
+    cJSON_AddStringToObject(root, "command", command);
+    cJSON_AddItemToObject(root, "rate_hz", num(t->rate_hz));
+    cJSON_AddItemToObject(root, "input_rate_hz", num(t->in_rate_hz > 0.0 ? t->in_rate_hz : t->rate_hz));
+    cJSON_AddNumberToObject(root, "window_samples", t->window);
+    cJSON_AddBoolToObject(root, "aligned", t->aligned);
+    cJSON_AddItemToObject(root, "duration_s", num(s->duration_s));
+    cJSON_AddItemToObject(root, "distance_m", num(s->path_m));
+    cJSON_AddItemToObject(root, "distance_horizontal_m", num(s->path_h_m));
+    cJSON_AddItemToObject(root, "integrated_path_m", num(s->integrated_path_m));
+    cJSON_AddItemToObject(root, "return_error_h_m", num(s->end_h_m));
+    cJSON_AddItemToObject(root, "return_error_3d_m", num(s->end_3d_m));
+    cJSON_AddItemToObject(root, "return_error_h_pct", num(s->end_h_pct));
+    cJSON_AddItemToObject(root, "return_error_3d_pct", num(s->end_3d_pct));
+    cJSON_AddItemToObject(root, "vertical_drift_m", num(s->vertical_m));
+    cJSON_AddItemToObject(root, "heading_change_deg", num(s->heading_change_deg));
+    arr = cJSON_CreateArray();
+    for (k = 0; k < 3; k++) {
+        cJSON_AddItemToArray(arr, num(s->end_pos_m[k]));
+    }
+    cJSON_AddItemToObject(root, "end_position_m", arr);
+    cJSON_AddNumberToObject(root, "strides", (double)s->strides);
+    cJSON_AddNumberToObject(root, "stance_phases", (double)s->stance_phases);
+    cJSON_AddItemToObject(root, "stance_fraction", num(s->stance_fraction));
+    cJSON_AddNumberToObject(h, "samples", st->samples);
+    cJSON_AddNumberToObject(h, "frames", st->frames);
+    cJSON_AddNumberToObject(h, "nan_rejected", st->nan_inputs);
+    cJSON_AddNumberToObject(h, "backwards_rejected", st->time_back);
+    cJSON_AddNumberToObject(h, "duplicates", st->duplicates);
+    cJSON_AddNumberToObject(h, "gaps", st->gaps);
+    cJSON_AddNumberToObject(h, "time_jumps", st->time_jumps);
+    cJSON_AddItemToObject(h, "longest_interval_s", num((double)st->max_gap_seen_s));
+    cJSON_AddNumberToObject(h, "zupts", st->zupts);
+    cJSON_AddNumberToObject(h, "zarus", st->zarus);
+    cJSON_AddNumberToObject(h, "chol_jitter", st->chol_jitter);
+    cJSON_AddNumberToObject(h, "chol_reset", st->chol_reset);
+    cJSON_AddNumberToObject(h, "steps_undone", st->diverged);
+    cJSON_AddNumberToObject(h, "updates_rejected", st->update_reject);
+    cJSON_AddNumberToObject(h, "health_bits", t->n > 0 ? (double)t->f[t->n - 1].health : 0.0);
+    cJSON_AddItemToObject(root, "health", h);
+    text = cJSON_Print(root);
+    cJSON_Delete(root);
+    if (text == NULL) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    f = fopen(json_path, "w");
+    if (f == NULL || fputs(text, f) == EOF || fputc('\n', f) == EOF) {
+        snprintf(err, err_size, "cannot write %s", json_path);
+        rc = -1;
+    }
+    if (f != NULL && fclose(f) != 0 && rc == 0) {
+        snprintf(err, err_size, "cannot write %s", json_path);
+        rc = -1;
+    }
+    free(text);
+    return rc;
+}
+
+int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_traj_t *t)
+{
+    hx_plot_t p;
+    size_t i;
+    if (hx_plot_open(&p, cmd, png, 1200, 600) != 0) {
+        return -1;
+    }
+    fprintf(p.gp, "set multiplot layout 1,2 title '%s'\n", title);
+    fprintf(p.gp, "set size ratio -1\nset xlabel 'east y (m)'\nset ylabel 'north x (m)'\n");
+    fprintf(p.gp, "plot '-' with lines lw 1 title 'path', '-' with points pt 7 ps 1 title 'start', "
+                  "'-' with points pt 5 ps 1 title 'end'\n");
+    for (i = 0; i < t->n; i++) {
+        if (t->f[i].flags & FNAV_FRAME_ALIGNED) {
+            fprintf(p.gp, "%.4f %.4f\n", (double)t->f[i].pos_m[1], (double)t->f[i].pos_m[0]);
+        }
+    }
+    fprintf(p.gp, "e\n0 0\ne\n");
+    if (t->n > 0) {
+        fprintf(p.gp, "%.4f %.4f\n", (double)t->f[t->n - 1].pos_m[1], (double)t->f[t->n - 1].pos_m[0]);
+    }
+    fprintf(p.gp, "e\n");
+    fprintf(p.gp, "set size noratio\nset xlabel 'time (s)'\nset ylabel 'height (m, up)'\n");
+    fprintf(p.gp, "plot '-' with lines lw 1 title 'height'\n");
+    for (i = 0; i < t->n; i++) {
+        if (t->f[i].flags & FNAV_FRAME_ALIGNED) {
+            fprintf(p.gp, "%.4f %.4f\n", 1e-9 * (double)(t->f[i].t_ns - t->f[0].t_ns), -(double)t->f[i].pos_m[2]);
+        }
+    }
+    fprintf(p.gp, "e\nunset multiplot\n");
+    return hx_plot_close(&p, cmd);
+}

@@ -1,0 +1,139 @@
+/**
+ * @file hx_nav.h
+ * @brief Harness side of navigation: option handling shared by `replay` and
+ *        `eval`, the replay engine (a log through the Linux port into
+ *        fnav_nav sample by sample), the anti-alias resampler behind
+ *        `--rate`, the trajectory kept in memory, and the summary figures
+ *        (docs/harness.md).
+ */
+#ifndef HX_NAV_H
+#define HX_NAV_H
+
+#include <stdio.h>
+
+#include "footnav/fnav_nav.h"
+#include "hx_cli.h"
+#include "hx_log.h"
+
+/* ------------------------------------------------------------ options */
+
+/** Options of the navigation commands (NULL/0 = default). */
+typedef struct {
+    const char *profile;     /**< --profile NAME|FILE */
+    const char *bias_model;  /**< --bias-model ar1|off */
+    const char *detector;    /**< --detector shoe|threshold */
+    double rate_hz;          /**< --rate HZ: resample the input (0: no) */
+    const char *params[HX_MAX_REPEAT]; /**< --param KEY=VALUE */
+    int nparams;
+} hx_nav_opts_t;
+
+/** The options every navigation command accepts, for an hx_opt_t table. */
+#define HX_NAV_OPTS                                                                                   \
+    { "--profile", "NAME|FILE", "sensor profile: navchip, mtx, shimmer or a profile file (default navchip)", 0 }, \
+    { "--bias-model", "MODEL", "ar1 or off (default, docs/navigation.md)", 0 },                                           \
+    { "--detector", "KIND", "stance detector: shoe (default) or threshold", 0 },                      \
+    { "--rate", "HZ", "resample the input to HZ first (anti-alias low-pass, docs/harness.md)", 0 },   \
+    { "--param", "KEY=VALUE", "set a navigation parameter (list: --param help)", 1 }
+
+/** Collect the HX_NAV_OPTS values from parsed arguments; -1 on a usage
+ *  error (printed). */
+int hx_nav_opts_from_args(const char *cmd, const hx_args_t *a, hx_nav_opts_t *o);
+
+/** Build a navigation configuration. 0 ok; -1 with err filled. */
+int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, size_t err_size);
+
+/** Print the --param keys with their current default values. */
+void hx_nav_param_help(FILE *f);
+
+/* ------------------------------------------------------------ trajectory */
+
+/** Frames of one replay, kept in memory. */
+typedef struct {
+    size_t n, cap;
+    fnav_nav_frame_t *f;
+    fnav_nav_stats_t stats;      /**< navigator counters at the end */
+    double rate_hz;              /**< detector rate */
+    int window;                  /**< detector window, samples */
+    double in_rate_hz;           /**< input rate before resampling (0 if not resampled) */
+    long resample_dropped_dups;  /**< duplicates dropped by the resampler */
+    fnav_align_result_t align;   /**< alignment result */
+    int aligned;
+} hx_traj_t;
+
+void hx_traj_free(hx_traj_t *t);
+
+/* ------------------------------------------------------------ resampler */
+
+/**
+ * Resample a whole log to rate_hz (downsampling only): exact duplicate time
+ * stamps are dropped, a Blackman-windowed sinc low-pass with cut-off 0.45 x
+ * rate_hz (length about 41 x the rate ratio, unit DC gain, zero phase) is run
+ * over the input as if it were uniform at its median rate, and the filtered
+ * signal is interpolated linearly at t0 + k / rate_hz using the input's own
+ * time stamps.
+ * @param dups     receives the number of dropped duplicates
+ * @param in_rate  receives the input's median rate, Hz
+ * @return 0, or -1 with err filled (too few samples, rate not below the
+ *         input rate, memory). out is freed with hx_log_free().
+ */
+int hx_nav_resample(const hx_log_t *in, double rate_hz, hx_log_t *out, long *dups, double *in_rate, char *err,
+                    size_t err_size);
+
+/* ------------------------------------------------------------ replay */
+
+/**
+ * Replay one log through the Linux port into a navigator, sample by sample.
+ * @param cmd       command name for messages
+ * @param path      log file
+ * @param fmt       input format (HX_FMT_AUTO)
+ * @param in_rate   --input-rate (0: default)
+ * @param cfg       navigation configuration
+ * @param rate_hz   resample to this rate first (0: no)
+ * @param csv       trajectory CSV sink (may be NULL)
+ * @param traj      frames kept (may be NULL)
+ * @param progress  show a progress indicator
+ * @param err       message on failure
+ * @return 0 complete; 1 the input had an error after some samples (frames up
+ *         to it are valid, err says why); -1 nothing could be replayed;
+ *         -3 the CSV sink failed.
+ */
+int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_rate, const fnav_nav_config_t *cfg,
+                  double rate_hz, FILE *csv, hx_traj_t *traj, int progress, char *err, size_t err_size);
+
+/* ------------------------------------------------------------ summary */
+
+/** Summary figures of a trajectory (docs/harness.md lists the JSON keys). */
+typedef struct {
+    double duration_s;        /**< first to last frame, s */
+    double path_m;            /**< step-to-step path through stance mid-points, 3-D, m */
+    double path_h_m;          /**< the same, horizontal, m */
+    double integrated_path_m; /**< sum of |dp| over all frames, m */
+    double end_pos_m[3];      /**< last stance mid-point (or last frame), n frame, m */
+    double start_pos_m[3];    /**< first stance mid-point, m */
+    double end_h_m, end_3d_m; /**< return-to-start error, m */
+    double end_h_pct, end_3d_pct; /**< the same in % of path_m */
+    double vertical_m;        /**< height change start -> end (up positive), m */
+    double heading_change_deg; /**< unwrapped yaw change, deg */
+    long strides;             /**< completed swings */
+    long stance_phases;       /**< stance phases (segmented) */
+    double stance_fraction;   /**< share of frames with the ZUPT flag */
+} hx_nav_summary_t;
+
+/** Compute the summary of a trajectory. */
+void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s);
+
+/** Stance mid-points of a trajectory (frame indices); returns their number
+ *  (at most max). */
+size_t hx_nav_stance_mids(const hx_traj_t *t, size_t *idx, size_t max);
+
+/** Print the summary as text. */
+void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const hx_nav_summary_t *s);
+
+/** Write the summary as JSON (keys in docs/harness.md). 0 ok, -1 failure. */
+int hx_nav_write_json(const char *json_path, const char *log_path, const char *command, const hx_traj_t *t,
+                      const hx_nav_summary_t *s, char *err, size_t err_size);
+
+/** Plot the 2-D path and the height over time. 0 ok, -1 failure (printed). */
+int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_traj_t *t);
+
+#endif /* HX_NAV_H */

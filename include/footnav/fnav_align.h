@@ -1,0 +1,104 @@
+/**
+ * @file fnav_align.h
+ * @brief Initial alignment from the first still seconds (paper IV.A): roll
+ *        and pitch from gravity, gyro bias from the mean angular rate,
+ *        accelerometer bias along gravity, yaw 0.
+ *
+ * The walker stands still for a couple of seconds before walking. Every
+ * sample the stance detector marks as still is averaged while its detector
+ * statistic also stays below still_ratio times the geometric mean of the
+ * statistic over the period so far: the zero-velocity threshold accepts the
+ * slow weight shift before the first step, which would bias the gyro mean,
+ * but that shift raises the statistic by a decade above the sensor's noise
+ * floor (docs/navigation.md). Motion before min_still_s of stillness
+ * restarts the average; the alignment completes when the foot first moves
+ * after at least min_still_s of stillness, or after max_still_s of it.
+ *
+ * With the mean specific force f and the mean rate w over the still period
+ * (navigation frame z down, f_b = C_bn (0, 0, -g) at rest):
+ *   roll  = atan2(-f_y, -f_z),  pitch = atan2(f_x, sqrt(f_y^2 + f_z^2)),
+ *   yaw   = 0 (the navigation frame's x axis is the initial heading),
+ *   b_g   = w (Earth rate, 7.3e-5 rad/s at most, is absorbed in the bias),
+ *   b_a   = f - C_bn (0, 0, -g) = (|f| - g) f / |f|.
+ * Only the component of the accelerometer bias along gravity is observable
+ * at rest; its horizontal components are indistinguishable from tilt and are
+ * left at zero (the tilt absorbs them).
+ */
+#ifndef FNAV_ALIGN_H
+#define FNAV_ALIGN_H
+
+#include "fnav_math.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Alignment configuration. */
+typedef struct {
+    fnav_real_t min_still_s;  /**< shortest usable still period, s (default 0.5) */
+    fnav_real_t max_still_s;  /**< alignment ends after this much stillness, s (default 5) */
+    fnav_real_t gravity_mps2; /**< local gravity, m/s^2 (default 9.80665) */
+    fnav_real_t still_ratio;  /**< statistic limit over its running geometric mean (default 10) */
+} fnav_align_config_t;
+
+extern const fnav_align_config_t fnav_align_config_default;
+
+/** Result of an alignment. */
+typedef struct {
+    fnav_quat_t q_nb;          /**< initial attitude (yaw 0) */
+    fnav_vec3_t euler_rad;     /**< roll, pitch, yaw = 0, rad */
+    fnav_vec3_t gyro_bias_rps; /**< rad/s */
+    fnav_vec3_t accel_bias_mps2; /**< m/s^2, along gravity only */
+    fnav_vec3_t accel_mean_mps2; /**< mean specific force, m/s^2 */
+    fnav_vec3_t gyro_sd_rps;   /**< per-axis sample standard deviation of the rate, rad/s */
+    fnav_vec3_t accel_sd_mps2; /**< per-axis sample standard deviation of f, m/s^2 */
+    fnav_real_t duration_s;    /**< still time used, s */
+    long samples;              /**< samples used */
+} fnav_align_result_t;
+
+/** Accumulator (caller-owned). Sums are kept relative to the first sample
+ *  of the period so that float32 variances do not cancel. */
+typedef struct {
+    fnav_align_config_t cfg;
+    fnav_vec3_t a_ref, g_ref;        /**< first sample of the period */
+    fnav_vec3_t sa, sg, sa2, sg2;    /**< sums of deviations and squares */
+    long n;                          /**< samples in the period */
+    fnav_real_t sum_log_stat;        /**< sum of log10 of the detector statistic */
+    int64_t t0_ns, t_last_ns;        /**< period start, last sample */
+    int done;
+    fnav_align_result_t result;
+} fnav_align_t;
+
+/** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (non-positive or non-finite
+ *          values, max < min, still_ratio <= 1). */
+FNAV_WARN_UNUSED fnav_status_t fnav_align_init(fnav_align_t *al, const fnav_align_config_t *cfg);
+
+/**
+ * Feed one sample with the detector's decision.
+ * @param sample  the sample (finite, checked by the caller)
+ * @param still   1 when the detector marks the foot at rest
+ * @param stat    the detector's test statistic (> 0), or 0 to skip the ratio test
+ * @return FNAV_AGAIN while aligning, FNAV_OK when the alignment completed
+ *         with this call (result valid), FNAV_E_STATE once already done.
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_sample_t *sample, int still,
+                                                fnav_real_t stat);
+
+/**
+ * Complete the alignment with what was collected (e.g. at the end of the
+ * input, or when a caller knows the period is over).
+ * @return FNAV_OK with the result, FNAV_E_STATE when fewer than two samples
+ *         or less than min_still_s were collected.
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_align_finish(fnav_align_t *al);
+
+/** Compute an alignment from a mean specific force, mean rate and gravity
+ *  (the formulas of the file comment). FNAV_E_RANGE if |f| is zero. */
+FNAV_WARN_UNUSED fnav_status_t fnav_align_from_means(fnav_vec3_t f_mean, fnav_vec3_t w_mean, fnav_real_t gravity_mps2,
+                                                     fnav_align_result_t *out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FNAV_ALIGN_H */

@@ -1,0 +1,172 @@
+/**
+ * @file fnav_nav.h
+ * @brief Foot-mounted navigation, one object stepped once per sample: stance
+ *        detection, initial alignment, 15-state UKF with zero-velocity
+ *        updates. The same calls run in `harness replay`, in firmware and in
+ *        the simulator's Monte Carlo.
+ *
+ * Use:
+ * @code
+ *   fnav_nav_t nav;                 // about 7.5 KB in float32, no allocation
+ *   fnav_nav_config_t cfg = fnav_nav_config_default;
+ *   fnav_nav_init(&nav, &cfg);
+ *   for each sample s:
+ *       fnav_nav_push(&nav, &s);            // FNAV_E_NANINF / FNAV_E_TIME: rejected, counted
+ *       while (fnav_nav_pop(&nav, &frame) == FNAV_OK) write(frame);
+ *   fnav_nav_finish(&nav);
+ *   while (fnav_nav_pop(&nav, &frame) == FNAV_OK) write(frame);
+ * @endcode
+ * or fnav_nav_step(&nav, &s, &frame), which pushes one sample and returns the
+ * newest frame (firmware that only wants the latest state).
+ *
+ * Latency: the SHOE window is centred, so frames come out h = (W - 1) / 2
+ * samples after their sample (2 samples at 200 Hz with the default 25 ms
+ * window); when the rate is estimated (rate_hz = 0) the first frame waits
+ * for 33 samples. Each frame carries its own sample's time.
+ *
+ * Timing: each sample's own dt is used. A repeated time stamp (dt = 0,
+ * e.g. the duplicated rows of the NGIMU logs) is counted and produces a
+ * frame without propagation or update (a duplicate must not be counted as a
+ * second measurement); an interval longer than 1.5 nominal intervals is
+ * counted as a gap and integrated as it is; an interval longer than
+ * max_gap_s is counted as a time jump and integrated as one nominal interval
+ * (the motion inside it is unknown); time going backwards is rejected with
+ * FNAV_E_TIME and the sample ignored. NaN/Inf samples are rejected with
+ * FNAV_E_NANINF. Nothing of the state changes on a rejected sample.
+ */
+#ifndef FNAV_NAV_H
+#define FNAV_NAV_H
+
+#include "fnav_align.h"
+#include "fnav_port.h"
+#include "fnav_profile.h"
+#include "fnav_stance.h"
+#include "fnav_ukf.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* fnav_nav_frame_t.health bits (sticky: set once the event happened). */
+#define FNAV_HEALTH_NANINF 0x001u        /**< a sample with NaN/Inf was rejected */
+#define FNAV_HEALTH_TIME_BACK 0x002u     /**< a sample going back in time was rejected */
+#define FNAV_HEALTH_DUPLICATE 0x004u     /**< a repeated time stamp (dt = 0) was seen */
+#define FNAV_HEALTH_GAP 0x008u           /**< an interval > 1.5 nominal intervals was seen */
+#define FNAV_HEALTH_TIME_JUMP 0x010u     /**< an interval > max_gap_s was seen */
+#define FNAV_HEALTH_CHOL_JITTER 0x020u   /**< a covariance factorisation needed jitter */
+#define FNAV_HEALTH_CHOL_RESET 0x040u    /**< the covariance was reset to its diagonal */
+#define FNAV_HEALTH_DIVERGED 0x080u      /**< a filter step was undone (non-finite result) */
+#define FNAV_HEALTH_UPDATE_REJECT 0x100u /**< an update was skipped (bad innovation covariance) */
+#define FNAV_HEALTH_NOT_ALIGNED 0x200u   /**< the input ended before an alignment */
+
+/* Additional fnav_nav_frame_t.flags bits (fnav_port.h defines 0x1..0x4). */
+#define FNAV_FRAME_SEG_STANCE 0x8u  /**< segmented gait phase is stance */
+#define FNAV_FRAME_STRIDE 0x10u     /**< a stride (swing) ended at this frame */
+
+/** Configuration of the navigator. */
+typedef struct {
+    fnav_profile_t profile;            /**< sensor error model (white noise, AR(1) biases) */
+    fnav_bias_model_t bias_model;      /**< AR1 (default) or OFF (paper IV.A) */
+    fnav_stance_config_t stance;       /**< detector (its gravity is overwritten with gravity_mps2) */
+    fnav_align_config_t align;         /**< alignment (gravity overwritten) */
+    fnav_real_t gravity_mps2;          /**< local gravity, m/s^2 (default 9.80665) */
+    fnav_real_t accel_motion_noise_mps2_rthz; /**< extra accel process noise in motion, m/s^2/sqrt(Hz) */
+    fnav_real_t gyro_motion_noise_rps_rthz;   /**< extra gyro process noise, rad/s/sqrt(Hz) */
+    fnav_real_t zupt_sigma_mps;        /**< ZUPT noise, m/s */
+    int lever;                         /**< 1: estimate the rolling-foot lever (fnav_ukf.h) */
+    fnav_real_t lever_sd_m;            /**< initial lever sd, m */
+    fnav_real_t lever_rw_m_rts;        /**< lever random walk, m/sqrt(s) */
+    int zaru;                          /**< 1: zero-angular-rate updates in stance */
+    fnav_real_t zaru_sigma_rps;        /**< ZARU noise, rad/s */
+    fnav_real_t tilt_sd_rad;           /**< initial roll/pitch standard deviation, rad */
+    fnav_real_t yaw_sd_rad;            /**< initial yaw standard deviation, rad (yaw is defined 0) */
+    fnav_real_t gyro_bias_sd_rps;      /**< initial gyro bias sd floor, rad/s */
+    fnav_real_t accel_bias_sd_mps2;    /**< initial accel bias sd, m/s^2 */
+    fnav_real_t max_gap_s;             /**< intervals above this are time jumps, s */
+    int closed_form;                   /**< UKF closed-form linear sigma points (1) */
+} fnav_nav_config_t;
+
+/** Defaults: profile "navchip" (paper Table IV), bias model off, lever on,
+ *  SHOE with the adaptive threshold (docs/navigation.md gives the reasons). */
+extern const fnav_nav_config_t fnav_nav_config_default;
+
+/** Counters (also summarised in fnav_nav_frame_t.health). */
+typedef struct {
+    uint32_t samples;        /**< samples accepted */
+    uint32_t frames;         /**< frames produced */
+    uint32_t nan_inputs;     /**< samples rejected: NaN/Inf */
+    uint32_t time_back;      /**< samples rejected: time going backwards */
+    uint32_t duplicates;     /**< dt = 0 */
+    uint32_t gaps;           /**< dt > 1.5 nominal */
+    uint32_t time_jumps;     /**< dt > max_gap_s */
+    uint32_t stance_samples; /**< samples decided as stance */
+    uint32_t zupts;          /**< ZUPT updates applied */
+    uint32_t zarus;          /**< ZARU updates applied */
+    uint32_t strides;        /**< completed swings */
+    uint32_t chol_jitter, chol_reset, diverged, update_reject; /**< UKF health */
+    fnav_real_t max_gap_seen_s; /**< longest interval seen, s */
+} fnav_nav_stats_t;
+
+/** The navigator (caller-owned, fixed size). */
+typedef struct {
+    fnav_nav_config_t cfg;
+    fnav_stance_t stance;
+    fnav_align_t align;
+    fnav_ukf_t ukf;
+    int aligned;
+    int have_prev;          /**< a sample was processed */
+    int64_t t_prev_ns;      /**< time of the last processed sample */
+    int have_in;
+    int64_t t_in_ns;        /**< time of the last accepted sample */
+    uint32_t health;        /**< FNAV_HEALTH_* bits */
+    fnav_nav_stats_t stats;
+    fnav_nav_frame_t last;  /**< newest frame */
+} fnav_nav_t;
+
+/** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (profile or any module's
+ *          configuration invalid). */
+FNAV_WARN_UNUSED fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg);
+
+/**
+ * Accept one sample (b frame, SI units).
+ * @return FNAV_OK; FNAV_E_NANINF or FNAV_E_TIME: sample rejected (counted,
+ *         state unchanged); FNAV_E_STATE after fnav_nav_finish() or when
+ *         frames were not popped.
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample);
+
+/**
+ * Next navigation frame.
+ * @return FNAV_OK with *frame; FNAV_AGAIN when none is due; FNAV_END after
+ *         fnav_nav_finish() when all frames were returned. A filter problem
+ *         in this step (covariance reset, undone step) is reported in
+ *         frame->health and the counters, not as a status.
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_nav_pop(fnav_nav_t *nav, fnav_nav_frame_t *frame);
+
+/** End of input: the frames held back by the detector become due. If the
+ *  input ended before an alignment, aligns on what was still, if enough. */
+void fnav_nav_finish(fnav_nav_t *nav);
+
+/**
+ * Push one sample and process every due frame; *frame receives the newest.
+ * @return FNAV_OK with *frame; FNAV_AGAIN when no frame is due yet; the
+ *         rejection statuses of fnav_nav_push().
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_nav_step(fnav_nav_t *nav, const fnav_sample_t *sample, fnav_nav_frame_t *frame);
+
+/**
+ * Replay a whole source through a port, as firmware does: read_sample ->
+ * fnav_nav_push -> fnav_nav_pop -> write_nav, until the source ends.
+ * @param max_samples  stop after this many samples (0: no limit)
+ * @return FNAV_OK at the end of the source; the source's negative status
+ *         (after flushing every frame) on a read error; FNAV_E_IO when the
+ *         sink fails. Rejected samples are counted, not fatal.
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_nav_run(fnav_nav_t *nav, const fnav_port_t *port, long max_samples);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FNAV_NAV_H */

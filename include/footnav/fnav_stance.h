@@ -1,0 +1,188 @@
+/**
+ * @file fnav_stance.h
+ * @brief Stance (zero-velocity) detection for a foot-mounted IMU: the SHOE
+ *        generalised likelihood ratio test (Skog, Handel, Nilsson, Rantakokko
+ *        2010) by default, or a simple angular-rate / specific-force
+ *        threshold detector; a rate-adaptive window, an optional adaptive
+ *        threshold, stride segmentation and gait events (foot-off,
+ *        foot-strike).
+ *
+ * SHOE test statistic over a centred window of W samples (Skog et al. 2010,
+ * eq. (13) with the gravity direction taken from the window mean):
+ *
+ *   T_k = 1/W sum_j ( |f_j - g u|^2 / sigma_a^2 + |w_j|^2 / sigma_g^2 ),
+ *   u = mean(f) / |mean(f)|,
+ *
+ * and the foot is at rest when T_k < gamma. A centred window looks half a
+ * window ahead, so the detector delays its decisions by h = (W - 1) / 2
+ * samples; a raw stance must also last at least min_zupt_s (a single-sample
+ * dip of T in mid-swing, when the foot's rotation reverses, must not zero a
+ * velocity of metres per second), which needs L = min_zupt_s * rate - 1 more
+ * samples of look-ahead. fnav_stance_push() stores each sample in a fixed
+ * ring inside the object and fnav_stance_pop() returns it, with its
+ * decision, h + L samples later. Call pop until it says FNAV_AGAIN
+ * after every push; after the last sample call fnav_stance_finish() and pop
+ * until FNAV_END.
+ *
+ * The window and the durations are set in seconds and converted with the
+ * sample rate (configured, or estimated from the first 32 intervals), so the
+ * detector behaves the same at 100 Hz and at 820 Hz.
+ *
+ * Adaptive threshold (docs/navigation.md): running or jogging keeps the foot
+ * from coming fully to rest, and the statistic's minimum in each stance rises
+ * by one to two decades. The detector tracks that floor F in log10 T (it
+ * follows every new minimum at once and otherwise rises by floor_rise_dps
+ * decades per second) and uses gamma' = clamp(10^(F + margin), gamma,
+ * adapt_max_ratio * gamma): for walking the floor sits decades below the configured gamma
+ * and nothing changes; when the stance floor rises, the threshold follows it.
+ *
+ * Not ISR-safe by itself (one object per caller); no allocation.
+ */
+#ifndef FNAV_STANCE_H
+#define FNAV_STANCE_H
+
+#include "fnav_math.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* FNAV_STANCE_EVENT_BUF (fnav_config.h): jerk history of the foot-strike
+ * search, samples. */
+
+/** Number of intervals used to estimate the rate when none is configured. */
+#define FNAV_STANCE_RATE_PROBE 32
+
+/** Detector kind. */
+typedef enum {
+    FNAV_DETECTOR_SHOE = 0,     /**< SHOE / GLRT (default) */
+    FNAV_DETECTOR_THRESHOLD = 1 /**< |w| and ||f| - g| below thresholds */
+} fnav_detector_t;
+
+/** Configuration; every value in SI units. */
+typedef struct {
+    fnav_detector_t detector;   /**< SHOE (default) or THRESHOLD */
+    fnav_real_t rate_hz;        /**< nominal sample rate, Hz; 0: estimate from the first 32 intervals */
+    fnav_real_t window_s;       /**< detector window, s (default 0.025: 5 samples at 200 Hz) */
+    fnav_real_t sigma_a_mps2;   /**< SHOE accelerometer noise weight, m/s^2 (default 0.01) */
+    fnav_real_t sigma_g_rps;    /**< SHOE gyroscope noise weight, rad/s (default 0.1 deg/s) */
+    fnav_real_t gamma;          /**< SHOE threshold on T, dimensionless (default 1e5) */
+    fnav_real_t gyro_thresh_rps;   /**< THRESHOLD: window RMS |w| limit, rad/s (default 0.6) */
+    fnav_real_t accel_thresh_mps2; /**< THRESHOLD: window RMS ||f| - g| limit, m/s^2 (default 0.6) */
+    fnav_real_t gravity_mps2;   /**< local gravity, m/s^2 (default 9.80665) */
+    int adaptive;               /**< 1 (default): adaptive threshold (see file comment) */
+    fnav_real_t floor_rise_dps; /**< floor rise, decades of T per second (default 0.25) */
+    fnav_real_t margin_dec;     /**< threshold above the floor, decades (default 0.4) */
+    fnav_real_t adapt_max_ratio; /**< adaptive threshold at most this times gamma (default 10) */
+    fnav_real_t min_zupt_s;     /**< a stance shorter than this is ignored, s (default 0.02) */
+    fnav_real_t min_stance_s;   /**< segmentation: shortest stance ending a swing, s (default 0.05) */
+    fnav_real_t min_swing_s;    /**< segmentation: shortest swing, s (default 0.2) */
+    fnav_real_t event_window_s; /**< gait-event search window, s (default 0.3) */
+} fnav_stance_config_t;
+
+/** Defaults (see each field). */
+extern const fnav_stance_config_t fnav_stance_config_default;
+
+/** fnav_stance_out_t.events: a swing ended (a stride was completed). */
+#define FNAV_STANCE_EV_STRIDE 0x1u
+/** fnav_stance_out_t.events: foot-off time fo_t_ns was determined. */
+#define FNAV_STANCE_EV_FOOT_OFF 0x2u
+/** fnav_stance_out_t.events: foot-strike time fs_t_ns was determined. */
+#define FNAV_STANCE_EV_FOOT_STRIKE 0x4u
+
+/** One decision, for the sample it carries (h samples behind the input). */
+typedef struct {
+    fnav_sample_t sample; /**< the sample this decision is for */
+    fnav_real_t stat;     /**< test statistic T (SHOE) or normalised RMS (THRESHOLD) */
+    fnav_real_t gamma;    /**< threshold used for this sample */
+    int raw_stance;       /**< 1: statistic below the threshold */
+    int stance;           /**< 1: foot at rest (apply a zero-velocity update): raw stance in a
+                               run of at least min_zupt_s */
+    int segment_stance;   /**< segmented gait phase: 1 stance, 0 swing */
+    uint32_t events;      /**< FNAV_STANCE_EV_* bits raised at this sample */
+    int64_t fo_t_ns;      /**< foot-off time, ns (with EV_FOOT_OFF) */
+    int64_t fs_t_ns;      /**< foot-strike time, ns (with EV_FOOT_STRIKE) */
+    int64_t swing_t0_ns;  /**< with EV_STRIDE: first sample of the swing, ns */
+    int64_t swing_t1_ns;  /**< with EV_STRIDE: first sample of the stance that ended it, ns */
+} fnav_stance_out_t;
+
+/** Detector object (caller-owned; fixed size, about 4.4 KB in float, see
+ *  docs/navigation.md for the measured sizeof). */
+typedef struct {
+    fnav_stance_config_t cfg;
+    fnav_sample_t ring[FNAV_STANCE_MAX_WINDOW]; /**< newest samples */
+    long n_in;          /**< samples pushed */
+    long n_raw;         /**< raw decisions made */
+    long n_out;         /**< decisions returned */
+    fnav_real_t dq_stat[FNAV_STANCE_MAX_WINDOW];  /**< raw decisions waiting for confirmation */
+    fnav_real_t dq_gamma[FNAV_STANCE_MAX_WINDOW];
+    unsigned char dq_raw[FNAV_STANCE_MAX_WINDOW];
+    int lag;            /**< confirmation look-ahead, samples (n_min_zupt - 1) */
+    int n_min_zupt;     /**< shortest stance run, samples */
+    long back;          /**< raw stance run length ending at the last output */
+    int win;            /**< window W, samples (odd), 0 until the rate is known */
+    int half;           /**< h = (W - 1) / 2 */
+    fnav_real_t rate_hz; /**< rate in use, Hz */
+    fnav_real_t floor_l; /**< adaptive floor, log10 T */
+    int floor_valid;
+    /* segmentation */
+    int seg;            /**< 1 stance, 0 swing */
+    long run;           /**< length of the current run of raw decisions, samples */
+    int run_raw;        /**< raw decision of that run */
+    int64_t run_t0_ns;  /**< time of the first sample of the run */
+    int64_t swing_t0_ns; /**< start of the current swing */
+    int64_t prev_t_ns;  /**< time of the last decision */
+    fnav_real_t prev_acc[3]; /**< specific force of the last decision (for the jerk) */
+    int have_prev;
+    /* foot-off search: largest |f| in the first event_window_s of a swing run */
+    fnav_real_t fo_max;
+    int64_t fo_t_ns;
+    int fo_open;
+    int fo_pending;     /**< report foot-off once the swing is confirmed */
+    /* foot-strike search: jerk history of the newest decisions */
+    fnav_real_t jerk[FNAV_STANCE_EVENT_BUF];     /**< |f_k - f_k-1|, m/s^2 */
+    uint32_t jerk_t_us[FNAV_STANCE_EVENT_BUF];   /**< sample time, us modulo 2^32 */
+    int n_ev;           /**< event window, samples */
+    int n_min_stance;   /**< shortest stance, samples */
+    int n_min_swing;    /**< shortest swing, samples */
+    long strides;       /**< completed swings */
+    int finished;       /**< fnav_stance_finish() was called */
+} fnav_stance_t;
+
+/**
+ * Initialise a detector.
+ * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG on a bad config
+ *         (non-positive or non-finite weights, window, threshold; negative rate).
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_stance_init(fnav_stance_t *st, const fnav_stance_config_t *cfg);
+
+/**
+ * Store one sample. The caller checks it first (finite values, time not going
+ * backwards); the sample is copied.
+ * @return FNAV_OK; FNAV_E_ARG on NULL; FNAV_E_STATE after fnav_stance_finish()
+ *         or when the caller did not pop the due decisions (ring full).
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_stance_push(fnav_stance_t *st, const fnav_sample_t *sample);
+
+/**
+ * Next due decision.
+ * @param st   detector
+ * @param out  decision for the oldest undecided sample (valid with FNAV_OK)
+ * @return FNAV_OK with *out; FNAV_AGAIN when no decision is due yet (the
+ *         window still fills, or the rate is being estimated); after
+ *         fnav_stance_finish(), FNAV_END once every sample was returned.
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out);
+
+/** Mark the end of the input: the samples still held back become due and
+ *  are decided on the part of their window that exists. */
+void fnav_stance_finish(fnav_stance_t *st);
+
+/** Samples the detector currently holds back (its delay), samples. */
+long fnav_stance_pending(const fnav_stance_t *st);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FNAV_STANCE_H */

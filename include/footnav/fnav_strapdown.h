@@ -1,0 +1,123 @@
+/**
+ * @file fnav_strapdown.h
+ * @brief Strapdown inertial navigation in a local-level frame: attitude,
+ *        velocity and position from raw specific force and angular rate.
+ *
+ * Frames (docs/frames.md): n is local level, z down, x along the initial
+ * heading; b is the sensor frame. Gravity in n is g_n = (0, 0, +g), so the
+ * specific force at rest is f_n = (0, 0, -g). Earth rate and transport rate
+ * are neglected (a walker moves a few hundred metres; Earth rate, 15 deg/h,
+ * is far below the gyro noise of the sensors footnav targets; docs/frames.md).
+ *
+ * The algorithm (Titterton & Weston 2004, ch. 11; Savage 1998) for one
+ * sample interval dt with the gyro and accelerometer readings of that sample
+ * taken as the mean rate and mean specific force over the interval:
+ *  - rotation increment theta = w dt, velocity increment dv = f dt;
+ *  - two-sample coning correction: phi = theta + (1/12) theta_prev x theta;
+ *  - attitude: q_nb(k) = q_nb(k-1) * q(phi) with the exact quaternion of phi;
+ *  - velocity: rotation compensation 0.5 theta x dv and two-sample sculling
+ *    (1/12)(theta_prev x dv + dv_prev x theta), then
+ *    v(k) = v(k-1) + C_nb(k-1) dv' + g_n dt;
+ *  - position: trapezoidal, p(k) = p(k-1) + 0.5 (v(k-1) + v(k)) dt, exact for
+ *    constant acceleration.
+ * All functions are reentrant and may run in an interrupt (no shared state).
+ */
+#ifndef FNAV_STRAPDOWN_H
+#define FNAV_STRAPDOWN_H
+
+#include "fnav_math.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Kinematic state propagated by the strapdown. */
+typedef struct {
+    fnav_quat_t q_nb;    /**< attitude, body to navigation frame (unit, w >= 0 not required) */
+    fnav_vec3_t vel_mps; /**< velocity in n, m/s */
+    fnav_vec3_t pos_m;   /**< position in n, m */
+} fnav_strapdown_state_t;
+
+/** Increments of the previous interval, for the coning and sculling terms. */
+typedef struct {
+    fnav_vec3_t theta_rad; /**< previous rotation increment (body), rad */
+    fnav_vec3_t dv_mps;    /**< previous velocity increment (body), m/s */
+    int valid;             /**< 0 until one interval was integrated */
+} fnav_strapdown_hist_t;
+
+/** Configuration of the strapdown. */
+typedef struct {
+    fnav_real_t gravity_mps2; /**< magnitude of local gravity, m/s^2 (default 9.80665) */
+    int coning;               /**< 1 (default): two-sample coning and sculling terms */
+} fnav_strapdown_config_t;
+
+/** Defaults: standard gravity, coning/sculling on. */
+extern const fnav_strapdown_config_t fnav_strapdown_config_default;
+
+/**
+ * Normal gravity on the WGS-84 ellipsoid (Somigliana's formula, closed form
+ * of Moritz 1980) with the free-air height correction -3.086e-6 m/s^2 per m.
+ * @param lat_rad  geodetic latitude, rad
+ * @param height_m height above the ellipsoid, m
+ * @return gravity magnitude, m/s^2
+ */
+fnav_real_t fnav_gravity_wgs84(fnav_real_t lat_rad, fnav_real_t height_m);
+
+/** Pre-computed increments of one interval (shared by every sigma point). */
+typedef struct {
+    fnav_vec3_t theta_rad; /**< rotation increment w dt (bias removed), rad */
+    fnav_vec3_t dv_mps;    /**< velocity increment f dt (bias removed), m/s */
+    fnav_vec3_t coning;    /**< (1/12) theta_prev x theta, rad */
+    fnav_vec3_t scull;     /**< (1/12)(theta_prev x dv + dv_prev x theta), m/s */
+    fnav_real_t dt_s;      /**< interval, s */
+} fnav_strapdown_incr_t;
+
+/**
+ * Form the increments of one interval from bias-corrected rates.
+ * @param cfg        configuration (coning switch)
+ * @param hist       previous increments (read), may be NULL for none
+ * @param gyro_rps   angular rate in b over the interval, rad/s
+ * @param accel_mps2 specific force in b over the interval, m/s^2
+ * @param dt_s       interval, s (>= 0)
+ * @param out        increments
+ */
+void fnav_strapdown_increments(const fnav_strapdown_config_t *cfg, const fnav_strapdown_hist_t *hist,
+                               fnav_vec3_t gyro_rps, fnav_vec3_t accel_mps2, fnav_real_t dt_s,
+                               fnav_strapdown_incr_t *out);
+
+/** Remember the increments of this interval for the next one. */
+void fnav_strapdown_hist_push(fnav_strapdown_hist_t *hist, const fnav_strapdown_incr_t *inc);
+
+/**
+ * Propagate a state over one interval with given increments; the corrections
+ * d_theta and d_dv (e.g. a sigma point's bias deviation times dt) are added to
+ * the increments first. The result's quaternion is renormalised.
+ * @param cfg      configuration (gravity)
+ * @param x        state, updated in place
+ * @param inc      increments of the interval
+ * @param d_theta  extra rotation increment, rad (body)
+ * @param d_dv     extra velocity increment, m/s (body)
+ */
+void fnav_strapdown_propagate(const fnav_strapdown_config_t *cfg, fnav_strapdown_state_t *x,
+                              const fnav_strapdown_incr_t *inc, fnav_vec3_t d_theta, fnav_vec3_t d_dv);
+
+/**
+ * One complete strapdown step from raw (bias-corrected) readings: forms the
+ * increments, propagates and updates the history.
+ * @return FNAV_OK; FNAV_E_NANINF on a non-finite input or dt (x unchanged);
+ *         FNAV_E_TIME on dt < 0 (x unchanged).
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_strapdown_step(const fnav_strapdown_config_t *cfg, fnav_strapdown_state_t *x,
+                                                   fnav_strapdown_hist_t *hist, fnav_vec3_t gyro_rps,
+                                                   fnav_vec3_t accel_mps2, fnav_real_t dt_s);
+
+/** Quaternion of a small or large rotation vector without trigonometric
+ *  calls below 0.2 rad (a 6th-order series, truncation below 2.5e-13), exact
+ *  (fnav_quat_from_rotvec) above. */
+fnav_quat_t fnav_strapdown_quat_exp(fnav_vec3_t phi);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FNAV_STRAPDOWN_H */

@@ -1,0 +1,240 @@
+/**
+ * @file fnav_ukf.h
+ * @brief 15-state unscented Kalman filter of foot-mounted inertial
+ *        navigation (paper IV): attitude, velocity, position, gyroscope and
+ *        accelerometer biases; unscented prediction through the strapdown,
+ *        zero-velocity (ZUPT) and zero-angular-rate (ZARU) updates, AR(1)
+ *        bias model (paper eqs. (3), (4)).
+ *
+ * Attitude. The paper's three Euler-angle states are carried the way the
+ * attitude-estimation literature does it (Crassidis & Markley 2003, USQUE):
+ * a nominal quaternion q_nb plus a three-parameter attitude error in the
+ * navigation frame, q_true = dq(a) * q_nb, where a are the generalised
+ * Rodrigues parameters with a = 1, f = 4 (a = 4 tan(angle/4) along the axis:
+ * equal to the rotation vector to third order, trig-free both ways, singular
+ * only at 360 degrees). After each prediction and update the error mean is
+ * folded into q_nb and reset to zero. Roll, pitch and yaw (ZYX) are derived
+ * from q_nb for output only, so the filter has no Euler singularity at
+ * +-90 degrees of pitch. The covariance of the attitude error is what the
+ * output reports as the attitude variances (rad^2, about the n axes).
+ *
+ * Lever (optional, docs/navigation.md). A foot does not stand still in
+ * stance: it rolls over the heel and then over the forefoot, so the IMU
+ * moves with v = C_nb (w x r) about the contact point, r the lever from that
+ * pivot to the IMU in the body frame. A plain ZUPT (v = 0) removes that
+ * motion every stride and the error accumulates, mostly vertically. With
+ * config.lever = 1 the filter carries r as three more states (constant, with
+ * a small random walk) and the zero-velocity update measures
+ * v - C_nb (w x r) = 0, the velocity of the pivot; with lever = 0 it is the
+ * paper's 15-state filter with v = 0.
+ *
+ * State order of the covariance (internal, fnav_ukf_t.P), FNAV_UKF_NMAX = 18:
+ *   0-2 lever, 3-5 velocity, 6-8 position, 9-11 attitude error, 12-14 gyro
+ *   bias, 15-17 accelerometer bias. States that are switched off (lever
+ *   without config.lever, biases with the bias model off) keep zero rows and
+ *   columns and take no part in the sigma points.
+ * Lever, velocity and position come first so that, with an upper-triangular
+ * Cholesky factor (P = U U^T, column j non-zero in rows 0..j only), the
+ * sigma-point pairs along columns 0-8 differ from the centre only in those
+ * states, which the strapdown propagates exactly linearly (r' = r,
+ * v' = v + dv, p' = p + dp + dv dt): those points are propagated in closed
+ * form, the others through the full strapdown. The result is the same as
+ * propagating every point (tested; config.closed_form = 0 runs them all).
+ * The output order (fnav_nav_frame_t.p_diag) is the paper's: attitude,
+ * velocity, position, gyro bias, accelerometer bias.
+ *
+ * Numerics (float32): P is kept symmetric (only the upper triangle is
+ * computed, then mirrored); the weights (alpha = 1, beta = 2, kappa = 0) make
+ * every term of the predicted covariance positive semi-definite; updates use
+ * the Joseph form, expanded as P - K H P - P H^T K^T + K S K^T (valid for any
+ * gain, symmetric term by term). A Cholesky pivot that is not positive triggers the defined
+ * recovery: add jitter (1e-6 of each variance) and retry; if that also fails,
+ * reset P to its own diagonal (cross-covariances dropped), count it, and
+ * return FNAV_E_DECOMP after completing the step with the reset covariance.
+ * Non-finite inputs return FNAV_E_NANINF and leave the filter unchanged; a
+ * step that would produce a non-finite state is undone (FNAV_E_DIVERGED).
+ */
+#ifndef FNAV_UKF_H
+#define FNAV_UKF_H
+
+#include "fnav_strapdown.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define FNAV_UKF_N 15    /**< the paper's state dimension (output order) */
+#define FNAV_UKF_NMAX 18 /**< with the optional lever states */
+
+/** Internal covariance indices (see file comment). */
+enum {
+    FNAV_UKF_R = 0,
+    FNAV_UKF_V = 3,
+    FNAV_UKF_P = 6,
+    FNAV_UKF_A = 9,
+    FNAV_UKF_BG = 12,
+    FNAV_UKF_BA = 15
+};
+
+/** Bias model (paper IV.A/IV.B). */
+typedef enum {
+    FNAV_BIAS_AR1 = 0, /**< AR(1)/Gauss-Markov biases about the alignment values (default) */
+    FNAV_BIAS_OFF = 1  /**< biases fixed at the alignment values; no bias process noise */
+} fnav_bias_model_t;
+
+/** Filter configuration; SI units, per axis of the body frame. */
+typedef struct {
+    fnav_real_t gyro_noise_rps_rthz[3];   /**< gyro white noise density, rad/s/sqrt(Hz) */
+    fnav_real_t accel_noise_mps2_rthz[3]; /**< accel white noise density, m/s^2/sqrt(Hz) */
+    fnav_bias_model_t bias_model;         /**< AR1 (default) or OFF */
+    fnav_real_t gyro_tau_s[3];            /**< gyro bias correlation time, s */
+    fnav_real_t accel_tau_s[3];           /**< accel bias correlation time, s */
+    fnav_real_t gyro_bias_sigma_rps[3];   /**< gyro bias stationary std (paper sigma_bias), rad/s */
+    fnav_real_t accel_bias_sigma_mps2[3]; /**< accel bias stationary std, m/s^2 */
+    fnav_strapdown_config_t strapdown;    /**< gravity, coning */
+    fnav_real_t alpha, beta, kappa;       /**< unscented transform (default 1, 2, 0) */
+    fnav_real_t zupt_sigma_mps;           /**< ZUPT measurement noise, m/s (default 0.01) */
+    fnav_real_t zaru_sigma_rps;           /**< ZARU measurement noise, rad/s (default 0.01) */
+    int closed_form;                      /**< 1 (default): closed-form linear sigma points */
+    int lever;                            /**< 1: estimate the pivot-to-IMU lever (default 0) */
+    fnav_real_t lever_sd_m;               /**< initial lever sd per axis, m (default 0.1) */
+    fnav_real_t lever_rw_m_rts;           /**< lever random walk, m/sqrt(s) (default 0.002) */
+} fnav_ukf_config_t;
+
+/** Defaults: NavChip-like noise (paper Table IV), AR(1) model, 9.80665 m/s^2. */
+extern const fnav_ukf_config_t fnav_ukf_config_default;
+
+/** Initial standard deviations (after alignment), in the output order. */
+typedef struct {
+    fnav_real_t att_rad[3];   /**< attitude error about n x, y, z, rad */
+    fnav_real_t vel_mps;      /**< per axis, m/s */
+    fnav_real_t pos_m;        /**< per axis, m */
+    fnav_real_t gyro_bias_rps[3];   /**< rad/s */
+    fnav_real_t accel_bias_mps2[3]; /**< m/s^2 */
+} fnav_ukf_init_sd_t;
+
+/** Health counters of the filter. */
+typedef struct {
+    uint32_t predicts;      /**< predictions done */
+    uint32_t zupts;         /**< ZUPT updates applied */
+    uint32_t zarus;         /**< ZARU updates applied */
+    uint32_t chol_jitter;   /**< factorisations that needed jitter */
+    uint32_t chol_reset;    /**< covariance resets to the diagonal */
+    uint32_t nan_inputs;    /**< inputs rejected as NaN/Inf */
+    uint32_t diverged;      /**< steps undone because the result was not finite */
+    uint32_t update_reject; /**< updates skipped (innovation covariance not positive) */
+} fnav_ukf_health_t;
+
+/** The filter (caller-owned, fixed size: 3 matrices of 18 x 18). */
+typedef struct {
+    fnav_ukf_config_t cfg;
+    int started;               /**< fnav_ukf_start() was called */
+    int n_act;                 /**< active states (9, 12, 15 or 18) */
+    int n_lin;                 /**< leading active states that propagate linearly (lever, v, p) */
+    unsigned char act[FNAV_UKF_NMAX]; /**< internal indices of the active states, ascending */
+    int16_t pos[FNAV_UKF_NMAX];       /**< packed index of each internal state, -1 if inactive */
+    fnav_real_t gamma;         /**< sigma-point scale sqrt(n + lambda) */
+    fnav_real_t w0m, w0c, wi;  /**< weights */
+    /* nominal state */
+    fnav_quat_t q_nb;          /**< attitude */
+    fnav_vec3_t vel_mps;       /**< velocity in n, m/s */
+    fnav_vec3_t pos_m;         /**< position in n, m */
+    fnav_vec3_t bg_rps;        /**< gyro bias, rad/s */
+    fnav_vec3_t ba_mps2;       /**< accel bias, m/s^2 */
+    fnav_vec3_t bg0_rps;       /**< alignment gyro bias (AR(1) mean), rad/s */
+    fnav_vec3_t ba0_mps2;      /**< alignment accel bias (AR(1) mean), m/s^2 */
+    fnav_vec3_t lever_m;       /**< pivot-to-IMU lever in b, m (0 without config.lever) */
+    fnav_strapdown_hist_t hist;/**< previous increments (coning, sculling) */
+    fnav_real_t ar1_dt_s;      /**< interval of the cached AR(1) terms, s (0: none) */
+    fnav_real_t ar1_c[6];      /**< cached exp(-dt/tau), gyro then accel */
+    fnav_real_t ar1_q[6];      /**< cached sigma^2 (1 - c^2) */
+    fnav_real_t P[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< covariance of the active states, packed in the
+                                                       order of act[] (use fnav_ukf_cov()) */
+    fnav_real_t U[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< scratch: Cholesky factor */
+    fnav_real_t S[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< scratch: new covariance */
+    fnav_real_t Hm[3][FNAV_UKF_NMAX];             /**< scratch: measurement matrix */
+    fnav_real_t K[FNAV_UKF_NMAX][3];              /**< scratch: gain */
+    fnav_real_t PHt[FNAV_UKF_NMAX][3];            /**< scratch: P H^T */
+    fnav_real_t APHt[FNAV_UKF_NMAX][3];           /**< scratch: K S */
+    fnav_ukf_health_t health;
+} fnav_ukf_t;
+
+/**
+ * Initialise (validates the configuration; the filter waits for
+ * fnav_ukf_start()).
+ * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG on a bad value
+ *         (negative or non-finite noise, non-positive tau/sigma with AR1,
+ *         alpha <= 0, n + lambda <= 0, non-positive measurement noise).
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg);
+
+/**
+ * Start navigating from an aligned state at the origin at rest.
+ * @param q_nb     initial attitude
+ * @param bg_rps   gyro bias from the alignment, rad/s
+ * @param ba_mps2  accel bias from the alignment, m/s^2
+ * @param sd       initial standard deviations (biases ignored with the model off)
+ * @return FNAV_OK, FNAV_E_ARG, FNAV_E_NANINF on non-finite values.
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps,
+                                              fnav_vec3_t ba_mps2, const fnav_ukf_init_sd_t *sd);
+
+/**
+ * Unscented prediction over one interval with raw readings.
+ * @param gyro_rps    angular rate (body, bias not removed), rad/s
+ * @param accel_mps2  specific force (body, bias not removed), m/s^2
+ * @param dt_s        interval, s; 0 does nothing
+ * @return FNAV_OK; FNAV_E_NANINF (input ignored); FNAV_E_TIME on dt < 0;
+ *         FNAV_E_STATE before start; FNAV_E_DECOMP when the covariance had
+ *         to be reset (step completed); FNAV_E_DIVERGED (step undone).
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t accel_mps2,
+                                                fnav_real_t dt_s);
+
+/**
+ * Zero-velocity update with standard deviation zupt_sigma_mps per axis:
+ * v = 0, or with config.lever v - C_nb (w x r) = 0 for the bias-corrected
+ * rate w of this sample. The measurement is linear in the error states (the
+ * lever term to first order), so the exact Kalman update is used: it is what
+ * the unscented update reduces to for a linear measurement.
+ * @param gyro_rps  raw angular rate of the sample (body), rad/s (used with the lever)
+ * @return FNAV_OK; FNAV_E_STATE before start; FNAV_E_NANINF on a non-finite
+ *         rate; FNAV_E_DECOMP when the innovation covariance is not positive
+ *         (update skipped, counted).
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps);
+
+/**
+ * Zero-angular-rate update: the raw gyro reading equals the gyro bias
+ * (the foot does not rotate), standard deviation zaru_sigma_rps.
+ * @return as fnav_ukf_zupt(); FNAV_E_NANINF on a non-finite reading;
+ *         FNAV_OK without effect when the bias model is off.
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps);
+
+/** Covariance element of the internal states i, j (FNAV_UKF_V + k etc.);
+ *  0 for a state that is switched off. */
+fnav_real_t fnav_ukf_cov(const fnav_ukf_t *f, int i, int j);
+
+/** Set a covariance element (and its mirror) of two active internal states
+ *  (for tests and for callers that seed correlations). */
+void fnav_ukf_set_cov(fnav_ukf_t *f, int i, int j, fnav_real_t v);
+
+/** Roll, pitch, yaw (ZYX) of the nominal attitude, rad. */
+fnav_vec3_t fnav_ukf_euler(const fnav_ukf_t *f);
+
+/** Covariance diagonal in the output order (att, vel, pos, bg, ba). */
+void fnav_ukf_p_diag(const fnav_ukf_t *f, fnav_real_t out[FNAV_UKF_N]);
+
+/** Quaternion of generalised Rodrigues parameters (a = 1, f = 4). */
+fnav_quat_t fnav_ukf_grp_to_quat(fnav_vec3_t p);
+
+/** Generalised Rodrigues parameters (a = 1, f = 4) of a unit quaternion
+ *  (the sign is chosen so that the scalar part is non-negative). */
+fnav_vec3_t fnav_ukf_quat_to_grp(fnav_quat_t q);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FNAV_UKF_H */

@@ -1,0 +1,376 @@
+/* Foot-mounted navigation: detector + alignment + UKF, stepped per sample
+ * (fnav_nav.h). */
+#include "footnav/fnav_nav.h"
+
+/* Paper Table IV (NavChip at 200 Hz) converted to SI: tau = samples / 200 Hz,
+ * deg -> rad. Identical to fnav_profile_builtin(FNAV_PROFILE_NAVCHIP). */
+#define D2R FNAV_DEG2RAD
+const fnav_nav_config_t fnav_nav_config_default = {
+    { "navchip",
+      FNAV_R(200.0),
+      { FNAV_R(7.4e-4), FNAV_R(6.4e-4), FNAV_R(5.0e-4) },
+      { FNAV_R(10.0), FNAV_R(10.0), FNAV_R(10.0) },
+      { FNAV_R(1.3e-5), FNAV_R(9.7e-6), FNAV_R(7.3e-6) },
+      { FNAV_R(3.3e-3) * D2R, FNAV_R(3.7e-3) * D2R, FNAV_R(4.2e-3) * D2R },
+      { FNAV_R(5.0), FNAV_R(5.0), FNAV_R(50.0) },
+      { FNAV_R(8.5e-5) * D2R, FNAV_R(6.4e-5) * D2R, FNAV_R(3.4e-5) * D2R } },
+    FNAV_BIAS_OFF, /* bias_model: see docs/navigation.md (evidence in docs/results.md) */
+    { FNAV_DETECTOR_SHOE, FNAV_R(0.0), FNAV_R(0.025), FNAV_R(0.01), FNAV_R(0.1) * D2R, FNAV_R(1.0e5),
+      FNAV_R(0.6), FNAV_R(0.6), FNAV_R(9.80665), 1, FNAV_R(0.25), FNAV_R(0.4), FNAV_R(10.0), FNAV_R(0.02), FNAV_R(0.05),
+      FNAV_R(0.2), FNAV_R(0.3) },
+    { FNAV_R(0.5), FNAV_R(5.0), FNAV_R(9.80665), FNAV_R(10.0) },
+    FNAV_R(9.80665),    /* gravity_mps2 */
+    FNAV_R(0.02),       /* accel_motion_noise_mps2_rthz */
+    FNAV_R(0.02) * D2R, /* gyro_motion_noise_rps_rthz */
+    FNAV_R(0.01),       /* zupt_sigma_mps */
+    1,                  /* lever */
+    FNAV_R(0.1),        /* lever_sd_m */
+    FNAV_R(0.002),      /* lever_rw_m_rts */
+    0,                  /* zaru */
+    FNAV_R(0.01),       /* zaru_sigma_rps */
+    FNAV_R(0.5) * D2R,  /* tilt_sd_rad */
+    FNAV_R(0.001),      /* yaw_sd_rad */
+    FNAV_R(0.01) * D2R, /* gyro_bias_sd_rps */
+    FNAV_R(0.02),       /* accel_bias_sd_mps2 */
+    FNAV_R(0.5),        /* max_gap_s */
+    1                   /* closed_form */
+};
+
+static fnav_real_t rss(fnav_real_t a, fnav_real_t b)
+{
+    return fnav_sqrt(a * a + b * b);
+}
+
+static void ukf_config_from(const fnav_nav_config_t *c, fnav_ukf_config_t *u)
+{
+    int i;
+    *u = fnav_ukf_config_default;
+    for (i = 0; i < 3; i++) {
+        u->gyro_noise_rps_rthz[i] = rss(c->profile.gyro_noise_rps_rthz[i], c->gyro_motion_noise_rps_rthz);
+        u->accel_noise_mps2_rthz[i] = rss(c->profile.accel_noise_mps2_rthz[i], c->accel_motion_noise_mps2_rthz);
+        u->gyro_tau_s[i] = c->profile.gyro_tau_s[i];
+        u->accel_tau_s[i] = c->profile.accel_tau_s[i];
+        u->gyro_bias_sigma_rps[i] = c->profile.gyro_bias_sigma_rps[i];
+        u->accel_bias_sigma_mps2[i] = c->profile.accel_bias_sigma_mps2[i];
+    }
+    u->bias_model = c->bias_model;
+    u->strapdown.gravity_mps2 = c->gravity_mps2;
+    u->zupt_sigma_mps = c->zupt_sigma_mps;
+    u->zaru_sigma_rps = c->zaru_sigma_rps;
+    u->closed_form = c->closed_form;
+    u->lever = c->lever;
+    u->lever_sd_m = c->lever_sd_m;
+    u->lever_rw_m_rts = c->lever_rw_m_rts;
+}
+
+fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
+{
+    fnav_stance_config_t sc;
+    fnav_align_config_t ac;
+    fnav_ukf_config_t uc;
+    fnav_status_t st;
+    size_t b;
+    unsigned char *p = (unsigned char *)nav;
+    if (nav == NULL || cfg == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (fnav_profile_validate(&cfg->profile) != FNAV_OK || !fnav_isfinite(cfg->gravity_mps2) ||
+        !(cfg->gravity_mps2 > FNAV_R(0.0)) || !fnav_isfinite(cfg->accel_motion_noise_mps2_rthz) ||
+        cfg->accel_motion_noise_mps2_rthz < FNAV_R(0.0) || !fnav_isfinite(cfg->gyro_motion_noise_rps_rthz) ||
+        cfg->gyro_motion_noise_rps_rthz < FNAV_R(0.0) || !(cfg->tilt_sd_rad > FNAV_R(0.0)) ||
+        !(cfg->yaw_sd_rad > FNAV_R(0.0)) || !(cfg->gyro_bias_sd_rps > FNAV_R(0.0)) ||
+        !(cfg->accel_bias_sd_mps2 > FNAV_R(0.0)) || !(cfg->max_gap_s > FNAV_R(0.0)) ||
+        !fnav_isfinite(cfg->tilt_sd_rad) || !fnav_isfinite(cfg->yaw_sd_rad) || !fnav_isfinite(cfg->gyro_bias_sd_rps) ||
+        !fnav_isfinite(cfg->accel_bias_sd_mps2) || !fnav_isfinite(cfg->max_gap_s)) {
+        return FNAV_E_CONFIG;
+    }
+    for (b = 0; b < sizeof *nav; b++) {
+        p[b] = 0;
+    }
+    nav->cfg = *cfg;
+    sc = cfg->stance;
+    sc.gravity_mps2 = cfg->gravity_mps2;
+    ac = cfg->align;
+    ac.gravity_mps2 = cfg->gravity_mps2;
+    ukf_config_from(cfg, &uc);
+    st = fnav_stance_init(&nav->stance, &sc);
+    if (st != FNAV_OK) {
+        return st;
+    }
+    st = fnav_align_init(&nav->align, &ac);
+    if (st != FNAV_OK) {
+        return st;
+    }
+    return fnav_ukf_init(&nav->ukf, &uc);
+}
+
+static int sample_finite(const fnav_sample_t *s)
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        if (!fnav_isfinite(s->accel_mps2[i]) || !fnav_isfinite(s->gyro_rps[i])) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample)
+{
+    fnav_status_t st;
+    if (nav == NULL || sample == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!sample_finite(sample)) {
+        nav->stats.nan_inputs++;
+        nav->health |= FNAV_HEALTH_NANINF;
+        return FNAV_E_NANINF;
+    }
+    if (nav->have_in && sample->t_ns < nav->t_in_ns) {
+        nav->stats.time_back++;
+        nav->health |= FNAV_HEALTH_TIME_BACK;
+        return FNAV_E_TIME;
+    }
+    st = fnav_stance_push(&nav->stance, sample);
+    if (st != FNAV_OK) {
+        return st;
+    }
+    nav->have_in = 1;
+    nav->t_in_ns = sample->t_ns;
+    nav->stats.samples++;
+    return FNAV_OK;
+}
+
+static void start_filter(fnav_nav_t *nav)
+{
+    const fnav_align_result_t *r = &nav->align.result;
+    const fnav_nav_config_t *c = &nav->cfg;
+    fnav_ukf_init_sd_t sd;
+    fnav_status_t st;
+    fnav_real_t n = (fnav_real_t)(r->samples > 1 ? r->samples : 1);
+    int i;
+    for (i = 0; i < 3; i++) {
+        /* gyro bias: standard error of the alignment mean, with a floor */
+        sd.gyro_bias_rps[i] = rss(r->gyro_sd_rps.v[i] / fnav_sqrt(n), c->gyro_bias_sd_rps);
+        sd.accel_bias_mps2[i] = c->accel_bias_sd_mps2;
+        sd.att_rad[i] = c->tilt_sd_rad;
+    }
+    sd.att_rad[2] = c->yaw_sd_rad;
+    sd.vel_mps = c->zupt_sigma_mps;
+    sd.pos_m = FNAV_R(0.001);
+    st = fnav_ukf_start(&nav->ukf, r->q_nb, r->gyro_bias_rps, r->accel_bias_mps2, &sd);
+    FNAV_ASSERT(st == FNAV_OK);
+    (void)st;
+    nav->aligned = 1;
+}
+
+static void sync_health(fnav_nav_t *nav)
+{
+    const fnav_ukf_health_t *h = &nav->ukf.health;
+    nav->stats.chol_jitter = h->chol_jitter;
+    nav->stats.chol_reset = h->chol_reset;
+    nav->stats.diverged = h->diverged;
+    nav->stats.update_reject = h->update_reject;
+    nav->stats.zupts = h->zupts;
+    nav->stats.zarus = h->zarus;
+    if (h->chol_jitter) {
+        nav->health |= FNAV_HEALTH_CHOL_JITTER;
+    }
+    if (h->chol_reset) {
+        nav->health |= FNAV_HEALTH_CHOL_RESET;
+    }
+    if (h->diverged) {
+        nav->health |= FNAV_HEALTH_DIVERGED;
+    }
+    if (h->update_reject) {
+        nav->health |= FNAV_HEALTH_UPDATE_REJECT;
+    }
+}
+
+static void fill_frame(fnav_nav_t *nav, const fnav_stance_out_t *o, uint32_t flags, fnav_nav_frame_t *fr)
+{
+    int i;
+    size_t b;
+    unsigned char *p = (unsigned char *)fr;
+    for (b = 0; b < sizeof *fr; b++) {
+        p[b] = 0; /* padding too: frames are byte-for-byte reproducible */
+    }
+    fr->t_ns = o->sample.t_ns;
+    fr->seq = o->sample.seq;
+    fr->flags = flags;
+    if (nav->aligned) {
+        const fnav_ukf_t *u = &nav->ukf;
+        fnav_vec3_t e = fnav_ukf_euler(u);
+        fr->flags |= FNAV_FRAME_ALIGNED;
+        for (i = 0; i < 3; i++) {
+            fr->pos_m[i] = u->pos_m.v[i];
+            fr->vel_mps[i] = u->vel_mps.v[i];
+            fr->euler_rad[i] = e.v[i];
+            fr->gyro_bias_rps[i] = u->bg_rps.v[i];
+            fr->accel_bias_mps2[i] = u->ba_mps2.v[i];
+            fr->lever_m[i] = u->lever_m.v[i];
+        }
+        fnav_ukf_p_diag(u, fr->p_diag);
+    } else {
+        for (i = 0; i < 3; i++) {
+            fr->pos_m[i] = fr->vel_mps[i] = fr->euler_rad[i] = FNAV_R(0.0);
+            fr->gyro_bias_rps[i] = fr->accel_bias_mps2[i] = fr->lever_m[i] = FNAV_R(0.0);
+        }
+        for (i = 0; i < FNAV_UKF_N; i++) {
+            fr->p_diag[i] = FNAV_R(0.0);
+        }
+    }
+    sync_health(nav);
+    fr->health = nav->health;
+}
+
+/* One detector decision through alignment / filter. */
+static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_t *fr)
+{
+    const fnav_sample_t *s = &o->sample;
+    fnav_real_t dt = FNAV_R(0.0), dt_used;
+    fnav_real_t nominal = FNAV_R(1.0) / nav->stance.rate_hz;
+    uint32_t flags = 0;
+    fnav_status_t st;
+    if (o->stance) {
+        flags |= FNAV_FRAME_STANCE;
+        nav->stats.stance_samples++;
+    }
+    if (o->segment_stance) {
+        flags |= FNAV_FRAME_SEG_STANCE;
+    }
+    if (o->events & FNAV_STANCE_EV_STRIDE) {
+        flags |= FNAV_FRAME_STRIDE;
+        nav->stats.strides++;
+    }
+    if (nav->have_prev) {
+        dt = (fnav_real_t)(s->t_ns - nav->t_prev_ns) * FNAV_R(1.0e-9);
+        if (dt > nav->stats.max_gap_seen_s) {
+            nav->stats.max_gap_seen_s = dt;
+        }
+        if (dt == FNAV_R(0.0)) {
+            nav->stats.duplicates++;
+            nav->health |= FNAV_HEALTH_DUPLICATE;
+        } else if (dt > nav->cfg.max_gap_s) {
+            nav->stats.time_jumps++;
+            nav->health |= FNAV_HEALTH_TIME_JUMP;
+            dt = nominal; /* the motion inside the jump is unknown */
+        } else if (dt > FNAV_R(1.5) * nominal) {
+            nav->stats.gaps++;
+            nav->health |= FNAV_HEALTH_GAP;
+        }
+    }
+    nav->have_prev = 1;
+    nav->t_prev_ns = s->t_ns;
+    dt_used = dt;
+
+    if (!nav->aligned) {
+        if (fnav_align_push(&nav->align, s, o->stance, o->stat) != FNAV_OK) {
+            fill_frame(nav, o, flags, fr);
+            return;
+        }
+        start_filter(nav);
+        /* aligned on the still samples before this one: if the foot moves at
+         * this sample its interval is navigated, otherwise navigation starts
+         * with the next interval */
+        if (o->stance) {
+            dt_used = FNAV_R(0.0);
+        }
+    }
+    if (dt_used > FNAV_R(0.0)) {
+        st = fnav_ukf_predict(&nav->ukf, fnav_vec3_from(s->gyro_rps), fnav_vec3_from(s->accel_mps2), dt_used);
+        (void)st; /* problems are counted in the UKF's health */
+        if (o->stance) {
+            if (fnav_ukf_zupt(&nav->ukf, fnav_vec3_from(s->gyro_rps)) == FNAV_OK) {
+                flags |= FNAV_FRAME_ZUPT;
+            }
+            if (nav->cfg.zaru) {
+                st = fnav_ukf_zaru(&nav->ukf, fnav_vec3_from(s->gyro_rps));
+                (void)st;
+            }
+        }
+    }
+    fill_frame(nav, o, flags, fr);
+}
+
+fnav_status_t fnav_nav_pop(fnav_nav_t *nav, fnav_nav_frame_t *frame)
+{
+    fnav_stance_out_t o;
+    fnav_status_t st;
+    if (nav == NULL || frame == NULL) {
+        return FNAV_E_ARG;
+    }
+    st = fnav_stance_pop(&nav->stance, &o);
+    if (st != FNAV_OK) {
+        if (st == FNAV_END && !nav->aligned) {
+            nav->health |= FNAV_HEALTH_NOT_ALIGNED;
+        }
+        return st;
+    }
+    process(nav, &o, frame);
+    nav->last = *frame;
+    nav->stats.frames++;
+    return FNAV_OK;
+}
+
+void fnav_nav_finish(fnav_nav_t *nav)
+{
+    FNAV_ASSERT(nav != NULL);
+    fnav_stance_finish(&nav->stance);
+    /* the input ended while the foot was still: align on that period, so
+     * that the frames still held back are navigated */
+    if (!nav->aligned && fnav_align_finish(&nav->align) == FNAV_OK) {
+        start_filter(nav);
+    }
+}
+
+fnav_status_t fnav_nav_step(fnav_nav_t *nav, const fnav_sample_t *sample, fnav_nav_frame_t *frame)
+{
+    fnav_status_t st = fnav_nav_push(nav, sample);
+    int got = 0;
+    if (st != FNAV_OK) {
+        return st;
+    }
+    while (fnav_nav_pop(nav, frame) == FNAV_OK) {
+        got = 1;
+    }
+    return got ? FNAV_OK : FNAV_AGAIN;
+}
+
+fnav_status_t fnav_nav_run(fnav_nav_t *nav, const fnav_port_t *port, long max_samples)
+{
+    fnav_sample_t s;
+    fnav_nav_frame_t fr;
+    fnav_status_t st, rd = FNAV_OK;
+    long n = 0;
+    if (nav == NULL || port == NULL) {
+        return FNAV_E_ARG;
+    }
+    for (;;) {
+        if (max_samples > 0 && n >= max_samples) {
+            break;
+        }
+        rd = fnav_port_read(port, &s);
+        if (rd == FNAV_AGAIN) {
+            continue;
+        }
+        if (rd != FNAV_OK) {
+            break;
+        }
+        n++;
+        st = fnav_nav_push(nav, &s); /* rejected samples are counted in nav->stats */
+        (void)st;
+        while (fnav_nav_pop(nav, &fr) == FNAV_OK) {
+            if (fnav_port_write_nav(port, &fr) != FNAV_OK) {
+                return FNAV_E_IO;
+            }
+        }
+    }
+    fnav_nav_finish(nav);
+    while (fnav_nav_pop(nav, &fr) == FNAV_OK) {
+        if (fnav_port_write_nav(port, &fr) != FNAV_OK) {
+            return FNAV_E_IO;
+        }
+    }
+    return (rd == FNAV_OK || rd == FNAV_END) ? FNAV_OK : rd;
+}

@@ -1,0 +1,392 @@
+/* Stance detection: SHOE / threshold detectors, adaptive threshold, stride
+ * segmentation and gait events (fnav_stance.h). */
+#include "footnav/fnav_stance.h"
+#include "footnav/fnav_port.h"
+
+#if FNAV_STANCE_MAX_WINDOW < FNAV_STANCE_RATE_PROBE + 1
+#define PROBE (FNAV_STANCE_MAX_WINDOW - 1)
+#else
+#define PROBE FNAV_STANCE_RATE_PROBE
+#endif
+
+const fnav_stance_config_t fnav_stance_config_default = {
+    FNAV_DETECTOR_SHOE, /* detector */
+    FNAV_R(0.0),        /* rate_hz: estimate */
+    FNAV_R(0.025),      /* window_s, s */
+    FNAV_R(0.01),       /* sigma_a_mps2, m/s^2 (OpenShoe default) */
+    FNAV_R(0.1) * FNAV_DEG2RAD, /* sigma_g_rps, rad/s (OpenShoe default) */
+    FNAV_R(1.0e5),      /* gamma */
+    FNAV_R(0.6),        /* gyro_thresh_rps, rad/s */
+    FNAV_R(0.6),        /* accel_thresh_mps2, m/s^2 */
+    FNAV_R(9.80665),    /* gravity_mps2, m/s^2 */
+    1,                  /* adaptive */
+    FNAV_R(0.25),       /* floor_rise_dps, decades/s */
+    FNAV_R(0.4),        /* margin_dec, decades */
+    FNAV_R(10.0),       /* adapt_max_ratio */
+    FNAV_R(0.02),       /* min_zupt_s, s */
+    FNAV_R(0.05),       /* min_stance_s, s */
+    FNAV_R(0.2),        /* min_swing_s, s */
+    FNAV_R(0.3)         /* event_window_s, s */
+};
+
+static int pos_finite(fnav_real_t x)
+{
+    return fnav_isfinite(x) && x > FNAV_R(0.0);
+}
+
+fnav_status_t fnav_stance_init(fnav_stance_t *st, const fnav_stance_config_t *cfg)
+{
+    const fnav_stance_config_t *c = cfg;
+    size_t i;
+    unsigned char *p = (unsigned char *)st;
+    if (st == NULL || cfg == NULL) {
+        return FNAV_E_ARG;
+    }
+    if ((c->detector != FNAV_DETECTOR_SHOE && c->detector != FNAV_DETECTOR_THRESHOLD) ||
+        !(fnav_isfinite(c->rate_hz) && c->rate_hz >= FNAV_R(0.0)) || !pos_finite(c->window_s) ||
+        !pos_finite(c->sigma_a_mps2) || !pos_finite(c->sigma_g_rps) || !pos_finite(c->gamma) ||
+        !pos_finite(c->gyro_thresh_rps) || !pos_finite(c->accel_thresh_mps2) || !pos_finite(c->gravity_mps2) ||
+        !(fnav_isfinite(c->floor_rise_dps) && c->floor_rise_dps >= FNAV_R(0.0)) ||
+        !(fnav_isfinite(c->margin_dec) && c->margin_dec >= FNAV_R(0.0)) ||
+        !(fnav_isfinite(c->adapt_max_ratio) && c->adapt_max_ratio >= FNAV_R(1.0)) ||
+        !(fnav_isfinite(c->min_stance_s) && c->min_stance_s >= FNAV_R(0.0)) ||
+        !(fnav_isfinite(c->min_zupt_s) && c->min_zupt_s >= FNAV_R(0.0)) ||
+        !(fnav_isfinite(c->min_swing_s) && c->min_swing_s >= FNAV_R(0.0)) || !pos_finite(c->event_window_s)) {
+        return FNAV_E_CONFIG;
+    }
+    for (i = 0; i < sizeof *st; i++) {
+        p[i] = 0;
+    }
+    st->cfg = *cfg;
+    st->seg = 1; /* the walker starts standing (paper IV.A) */
+    st->run_raw = -1;
+    return FNAV_OK;
+}
+
+static int round_pos(fnav_real_t x)
+{
+    return (int)(x + FNAV_R(0.5));
+}
+
+/* Window and durations from the rate. */
+static void set_rate(fnav_stance_t *st, fnav_real_t rate_hz)
+{
+    int w = 2 * (int)(FNAV_R(0.5) * st->cfg.window_s * rate_hz) + 1;
+    int n;
+    if (w < 3) {
+        w = 3;
+    }
+    if (w > FNAV_STANCE_MAX_WINDOW) {
+        w = FNAV_STANCE_MAX_WINDOW - ((FNAV_STANCE_MAX_WINDOW % 2) == 0 ? 1 : 0);
+    }
+    st->rate_hz = rate_hz;
+    st->win = w;
+    st->half = (w - 1) / 2;
+    n = round_pos(st->cfg.event_window_s * rate_hz);
+    st->n_ev = n < 1 ? 1 : (n > FNAV_STANCE_EVENT_BUF - 1 ? FNAV_STANCE_EVENT_BUF - 1 : n);
+    n = round_pos(st->cfg.min_stance_s * rate_hz);
+    st->n_min_stance = n < 1 ? 1 : n;
+    n = round_pos(st->cfg.min_zupt_s * rate_hz);
+    st->n_min_zupt = n < 1 ? 1 : n;
+    st->lag = st->n_min_zupt - 1;
+    if (st->half + st->lag + 2 > FNAV_STANCE_MAX_WINDOW) {
+        st->lag = FNAV_STANCE_MAX_WINDOW - 2 - st->half;
+        st->n_min_zupt = st->lag + 1;
+    }
+    n = round_pos(st->cfg.min_swing_s * rate_hz);
+    st->n_min_swing = n < 1 ? 1 : n;
+}
+
+static const fnav_sample_t *at(const fnav_stance_t *st, long i)
+{
+    return &st->ring[i % FNAV_STANCE_MAX_WINDOW];
+}
+
+/* Median of the positive intervals of the first samples (insertion sort of
+ * at most PROBE values). */
+static void estimate_rate(fnav_stance_t *st)
+{
+    int64_t d[PROBE];
+    int n = 0, i, j;
+    for (i = 1; i < (int)st->n_in && i <= PROBE; i++) {
+        int64_t v = at(st, i)->t_ns - at(st, i - 1)->t_ns;
+        if (v > 0) {
+            for (j = n; j > 0 && d[j - 1] > v; j--) {
+                d[j] = d[j - 1];
+            }
+            d[j] = v;
+            n++;
+        }
+    }
+    if (n > 0) {
+        int mid = n / 2; /* median interval */
+        set_rate(st, FNAV_R(1.0e9) / (fnav_real_t)d[mid]);
+    } else {
+        set_rate(st, FNAV_R(100.0)); /* no usable time stamps: documented fallback */
+    }
+}
+
+fnav_status_t fnav_stance_push(fnav_stance_t *st, const fnav_sample_t *sample)
+{
+    if (st == NULL || sample == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (st->finished || st->n_in - st->n_out >= FNAV_STANCE_MAX_WINDOW) {
+        /* the caller did not pop the due decisions */
+        return FNAV_E_STATE;
+    }
+    st->ring[st->n_in % FNAV_STANCE_MAX_WINDOW] = *sample;
+    st->n_in++;
+    if (st->win == 0) {
+        if (st->cfg.rate_hz > FNAV_R(0.0)) {
+            set_rate(st, st->cfg.rate_hz);
+        } else if (st->n_in > PROBE) {
+            estimate_rate(st);
+        }
+    }
+    return FNAV_OK;
+}
+
+void fnav_stance_finish(fnav_stance_t *st)
+{
+    FNAV_ASSERT(st != NULL);
+    st->finished = 1;
+    if (st->win == 0 && st->n_in > 0) {
+        if (st->cfg.rate_hz > FNAV_R(0.0)) {
+            set_rate(st, st->cfg.rate_hz);
+        } else {
+            estimate_rate(st);
+        }
+    }
+}
+
+long fnav_stance_pending(const fnav_stance_t *st)
+{
+    return st->n_in - st->n_out;
+}
+
+/* Test statistic of sample i over the window [lo, hi]. */
+static fnav_real_t statistic(const fnav_stance_t *st, long lo, long hi)
+{
+    const fnav_stance_config_t *c = &st->cfg;
+    fnav_real_t n = (fnav_real_t)(hi - lo + 1);
+    fnav_vec3_t m = fnav_vec3_zero();
+    fnav_real_t sa = FNAV_R(0.0), sg = FNAV_R(0.0);
+    long j;
+    if (c->detector == FNAV_DETECTOR_SHOE) {
+        fnav_vec3_t gu;
+        for (j = lo; j <= hi; j++) {
+            m = fnav_vec3_add(m, fnav_vec3_from(at(st, j)->accel_mps2));
+        }
+        /* g times the unit vector of the mean specific force (Skog 2010, eq. 13) */
+        gu = fnav_vec3_scale(fnav_vec3_normalize(m), c->gravity_mps2);
+        for (j = lo; j <= hi; j++) {
+            fnav_vec3_t e = fnav_vec3_sub(fnav_vec3_from(at(st, j)->accel_mps2), gu);
+            fnav_vec3_t w = fnav_vec3_from(at(st, j)->gyro_rps);
+            sa += fnav_vec3_dot(e, e);
+            sg += fnav_vec3_dot(w, w);
+        }
+        return (sa / (c->sigma_a_mps2 * c->sigma_a_mps2) + sg / (c->sigma_g_rps * c->sigma_g_rps)) / n;
+    }
+    for (j = lo; j <= hi; j++) {
+        fnav_vec3_t w = fnav_vec3_from(at(st, j)->gyro_rps);
+        fnav_real_t e = fnav_vec3_norm(fnav_vec3_from(at(st, j)->accel_mps2)) - c->gravity_mps2;
+        sa += e * e;
+        sg += fnav_vec3_dot(w, w);
+    }
+    sa /= n * c->accel_thresh_mps2 * c->accel_thresh_mps2;
+    sg /= n * c->gyro_thresh_rps * c->gyro_thresh_rps;
+    return sa > sg ? sa : sg; /* stance when both RMS values are below their limits */
+}
+
+static uint32_t t_us(int64_t t_ns)
+{
+    return (uint32_t)((uint64_t)(t_ns / 1000));
+}
+
+/* Foot-strike: the first sample, in the event window before the stance run
+ * that starts at decision index k0, whose jerk reaches half the window's
+ * largest jerk: the onset of the heel impact (docs/navigation.md). */
+static int64_t foot_strike(const fnav_stance_t *st, long k0, int64_t t_now_ns, long k_now)
+{
+    long lo = k0 - st->n_ev, k, kbest = k0;
+    fnav_real_t jmax = FNAV_R(0.0);
+    if (lo < 0) {
+        lo = 0;
+    }
+    if (lo < k_now - (FNAV_STANCE_EVENT_BUF - 1)) {
+        lo = k_now - (FNAV_STANCE_EVENT_BUF - 1);
+    }
+    for (k = lo; k < k0; k++) {
+        fnav_real_t j = st->jerk[k % FNAV_STANCE_EVENT_BUF];
+        jmax = j > jmax ? j : jmax;
+    }
+    for (k = lo; k < k0; k++) {
+        if (st->jerk[k % FNAV_STANCE_EVENT_BUF] >= FNAV_R(0.5) * jmax) {
+            kbest = k;
+            break;
+        }
+    }
+    return t_now_ns - (int64_t)(uint32_t)(t_us(t_now_ns) - st->jerk_t_us[kbest % FNAV_STANCE_EVENT_BUF]) * 1000;
+}
+
+/* Segmentation and gait events for decision index k (= st->n_out). */
+static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
+{
+    long k = st->n_out;
+    const fnav_real_t *f = o->sample.accel_mps2;
+    fnav_real_t fn = fnav_vec3_norm(fnav_vec3_from(f));
+    fnav_real_t jerk = FNAV_R(0.0);
+    if (st->have_prev) {
+        jerk = fnav_vec3_norm(fnav_vec3_sub(fnav_vec3_from(f), fnav_vec3_from(st->prev_acc)));
+    }
+    st->jerk[k % FNAV_STANCE_EVENT_BUF] = jerk;
+    st->jerk_t_us[k % FNAV_STANCE_EVENT_BUF] = t_us(o->sample.t_ns);
+    st->prev_acc[0] = f[0];
+    st->prev_acc[1] = f[1];
+    st->prev_acc[2] = f[2];
+    st->have_prev = 1;
+
+    if (o->stance == st->run_raw) {
+        st->run++;
+    } else {
+        st->run = 1;
+        st->run_raw = o->stance;
+        st->run_t0_ns = o->sample.t_ns;
+        if (!o->stance) {
+            /* a new swing run: foot-off is the largest |f| of its first
+             * event window (push-off peak) */
+            st->fo_open = 1;
+            st->fo_max = fn;
+            st->fo_t_ns = o->sample.t_ns;
+        }
+    }
+    if (st->fo_open && !o->stance) {
+        if (st->run <= st->n_ev) {
+            if (fn > st->fo_max) {
+                st->fo_max = fn;
+                st->fo_t_ns = o->sample.t_ns;
+            }
+        } else {
+            st->fo_open = 0;
+        }
+    }
+    if (st->seg == 1 && !o->stance && st->run >= st->n_min_swing) {
+        st->seg = 0;
+        st->fo_pending = 1;
+        st->swing_t0_ns = st->run_t0_ns; /* the swing began with this run */
+    } else if (st->seg == 0 && o->stance && st->run >= st->n_min_stance) {
+        st->seg = 1;
+        st->strides++;
+        o->events |= FNAV_STANCE_EV_STRIDE | FNAV_STANCE_EV_FOOT_STRIKE;
+        o->fs_t_ns = foot_strike(st, k - st->run + 1, o->sample.t_ns, k);
+        o->swing_t0_ns = st->swing_t0_ns;
+        o->swing_t1_ns = st->run_t0_ns; /* first sample of the stance run */
+    }
+    if (st->fo_pending && (!st->fo_open || st->seg == 1)) {
+        st->fo_pending = 0;
+        o->events |= FNAV_STANCE_EV_FOOT_OFF;
+        o->fo_t_ns = st->fo_t_ns;
+    }
+    o->segment_stance = st->seg;
+}
+
+/* Raw decision for sample n_raw, whose window is complete: statistic,
+ * (adaptive) threshold, below-threshold flag, into the confirmation queue. */
+static void decide_raw(fnav_stance_t *st)
+{
+    long i = st->n_raw, lo, hi;
+    fnav_real_t stat, gamma, g0, dt_s = FNAV_R(0.0);
+    const fnav_sample_t *s = at(st, i);
+    int q = (int)(i % FNAV_STANCE_MAX_WINDOW);
+    lo = i - st->half;
+    hi = i + st->half;
+    if (lo < 0) {
+        lo = 0;
+    }
+    if (lo < st->n_in - FNAV_STANCE_MAX_WINDOW) {
+        lo = st->n_in - FNAV_STANCE_MAX_WINDOW;
+    }
+    if (hi > st->n_in - 1) {
+        hi = st->n_in - 1;
+    }
+    stat = statistic(st, lo, hi);
+    g0 = st->cfg.detector == FNAV_DETECTOR_SHOE ? st->cfg.gamma : FNAV_R(1.0);
+    gamma = g0;
+    if (i > 0 && s->t_ns > at(st, i - 1)->t_ns) {
+        dt_s = (fnav_real_t)(s->t_ns - at(st, i - 1)->t_ns) * FNAV_R(1.0e-9);
+    }
+    if (st->cfg.adaptive) {
+        /* floor of log10 T: follows new minima at once, else rises slowly;
+         * it never sits below log10(gamma) - margin, so that after a long
+         * rest it catches up with a jogging stance in a few strides */
+        fnav_real_t l = fnav_log10(stat > FNAV_R(1.0e-30) ? stat : FNAV_R(1.0e-30));
+        fnav_real_t fmin = fnav_log10(g0) - st->cfg.margin_dec;
+        if (st->floor_valid) {
+            fnav_real_t fl = st->floor_l + st->cfg.floor_rise_dps * dt_s;
+            fnav_real_t ga = fnav_pow(FNAV_R(10.0), fl + st->cfg.margin_dec);
+            gamma = fnav_clamp(ga, g0, g0 * st->cfg.adapt_max_ratio);
+            st->floor_l = l < fl ? l : fl;
+        } else {
+            st->floor_l = l;
+            st->floor_valid = 1;
+        }
+        if (st->floor_l < fmin) {
+            st->floor_l = fmin;
+        }
+    }
+    st->dq_stat[q] = stat;
+    st->dq_gamma[q] = gamma;
+    st->dq_raw[q] = (unsigned char)(stat < gamma);
+    st->n_raw++;
+}
+
+fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
+{
+    long i, k, fwd;
+    int q;
+    if (st == NULL || out == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (st->win == 0) {
+        return (st->finished && st->n_in == 0) ? FNAV_END : FNAV_AGAIN;
+    }
+    /* raw decisions for every sample whose window is complete */
+    while (st->n_raw < st->n_in && (st->finished || st->n_raw + st->half <= st->n_in - 1)) {
+        decide_raw(st);
+    }
+    i = st->n_out;
+    if (i >= st->n_in) {
+        return st->finished ? FNAV_END : FNAV_AGAIN;
+    }
+    if (i >= st->n_raw || (!st->finished && i + st->lag >= st->n_raw)) {
+        return FNAV_AGAIN;
+    }
+    FNAV_ASSERT(i >= st->n_in - FNAV_STANCE_MAX_WINDOW);
+    q = (int)(i % FNAV_STANCE_MAX_WINDOW);
+    out->sample = *at(st, i);
+    out->stat = st->dq_stat[q];
+    out->gamma = st->dq_gamma[q];
+    out->raw_stance = st->dq_raw[q];
+    /* length of the raw stance run through i, looking ahead at most lag */
+    st->back = out->raw_stance ? st->back + 1 : 0;
+    fwd = 0;
+    if (out->raw_stance) {
+        for (k = i + 1; k < st->n_raw && k <= i + st->lag; k++) {
+            if (!st->dq_raw[k % FNAV_STANCE_MAX_WINDOW]) {
+                break;
+            }
+            fwd++;
+        }
+    }
+    out->stance = out->raw_stance && (st->back + fwd >= st->n_min_zupt || i == 0);
+    out->events = 0;
+    out->fo_t_ns = 0;
+    out->fs_t_ns = 0;
+    out->swing_t0_ns = 0;
+    out->swing_t1_ns = 0;
+    segment(st, out);
+    st->prev_t_ns = out->sample.t_ns;
+    st->n_out++;
+    return FNAV_OK;
+}

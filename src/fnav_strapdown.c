@@ -1,0 +1,111 @@
+/* Strapdown inertial navigation in a local-level frame (fnav_strapdown.h). */
+#include "footnav/fnav_strapdown.h"
+#include "footnav/fnav_port.h"
+
+const fnav_strapdown_config_t fnav_strapdown_config_default = {
+    FNAV_R(9.80665), /* gravity_mps2: standard gravity, m/s^2 */
+    1                /* coning: two-sample coning and sculling terms */
+};
+
+fnav_real_t fnav_gravity_wgs84(fnav_real_t lat_rad, fnav_real_t height_m)
+{
+    /* Somigliana closed form (Moritz 1980, WGS-84 constants):
+     * g = ge (1 + k sin^2 lat) / sqrt(1 - e^2 sin^2 lat), then the free-air
+     * gradient -3.086e-6 s^-2 (Groves 2013, eq. 2.134 first order). */
+    const fnav_real_t ge = FNAV_R(9.7803253359);
+    const fnav_real_t k = FNAV_R(0.00193185265241);
+    const fnav_real_t e2 = FNAV_R(0.00669437999013);
+    fnav_real_t s = fnav_sin(lat_rad);
+    fnav_real_t s2 = s * s;
+    return ge * (FNAV_R(1.0) + k * s2) / fnav_sqrt(FNAV_R(1.0) - e2 * s2) - FNAV_R(3.086e-6) * height_m;
+}
+
+fnav_quat_t fnav_strapdown_quat_exp(fnav_vec3_t phi)
+{
+    fnav_real_t a2 = fnav_vec3_dot(phi, phi);
+    fnav_real_t c, s;
+    if (a2 > FNAV_R(0.04)) {
+        return fnav_quat_from_rotvec(phi);
+    }
+    /* cos(a/2) and sin(a/2)/a as series in a^2 (Titterton & Weston eq. 11.33);
+     * the first omitted terms are a^8/10321920 and a^8/185794560. */
+    c = FNAV_R(1.0) + a2 * (-FNAV_R(1.0) / FNAV_R(8.0) +
+                            a2 * (FNAV_R(1.0) / FNAV_R(384.0) - a2 * (FNAV_R(1.0) / FNAV_R(46080.0))));
+    s = FNAV_R(0.5) + a2 * (-FNAV_R(1.0) / FNAV_R(48.0) +
+                            a2 * (FNAV_R(1.0) / FNAV_R(3840.0) - a2 * (FNAV_R(1.0) / FNAV_R(645120.0))));
+    return fnav_quat(c, s * phi.v[0], s * phi.v[1], s * phi.v[2]);
+}
+
+void fnav_strapdown_increments(const fnav_strapdown_config_t *cfg, const fnav_strapdown_hist_t *hist,
+                               fnav_vec3_t gyro_rps, fnav_vec3_t accel_mps2, fnav_real_t dt_s,
+                               fnav_strapdown_incr_t *out)
+{
+    const fnav_real_t k12 = FNAV_R(1.0) / FNAV_R(12.0);
+    out->theta_rad = fnav_vec3_scale(gyro_rps, dt_s);
+    out->dv_mps = fnav_vec3_scale(accel_mps2, dt_s);
+    out->dt_s = dt_s;
+    if (cfg->coning && hist != NULL && hist->valid) {
+        /* Savage 1998, two-sample algorithms with the previous interval:
+         * coning (eq. 7.1.1.1-13 form) and sculling (eq. 7.2.2.2-22 form). */
+        out->coning = fnav_vec3_scale(fnav_vec3_cross(hist->theta_rad, out->theta_rad), k12);
+        out->scull = fnav_vec3_scale(fnav_vec3_add(fnav_vec3_cross(hist->theta_rad, out->dv_mps),
+                                                   fnav_vec3_cross(hist->dv_mps, out->theta_rad)),
+                                     k12);
+    } else {
+        out->coning = fnav_vec3_zero();
+        out->scull = fnav_vec3_zero();
+    }
+}
+
+void fnav_strapdown_hist_push(fnav_strapdown_hist_t *hist, const fnav_strapdown_incr_t *inc)
+{
+    if (inc->dt_s > FNAV_R(0.0)) {
+        hist->theta_rad = inc->theta_rad;
+        hist->dv_mps = inc->dv_mps;
+        hist->valid = 1;
+    }
+}
+
+void fnav_strapdown_propagate(const fnav_strapdown_config_t *cfg, fnav_strapdown_state_t *x,
+                              const fnav_strapdown_incr_t *inc, fnav_vec3_t d_theta, fnav_vec3_t d_dv)
+{
+    fnav_vec3_t th = fnav_vec3_add(inc->theta_rad, d_theta);
+    fnav_vec3_t dv = fnav_vec3_add(inc->dv_mps, d_dv);
+    fnav_vec3_t phi = fnav_vec3_add(th, inc->coning);
+    /* rotation compensation (T&W eq. 11.29 with the half-interval rotation) */
+    fnav_vec3_t dvc = fnav_vec3_add(fnav_vec3_add(dv, fnav_vec3_scale(fnav_vec3_cross(th, dv), FNAV_R(0.5))),
+                                    inc->scull);
+    fnav_vec3_t dv_n = fnav_quat_rotate(x->q_nb, dvc);
+    fnav_vec3_t v0 = x->vel_mps;
+    fnav_quat_t q;
+    fnav_real_t n2;
+    dv_n.v[2] += cfg->gravity_mps2 * inc->dt_s; /* g_n = (0, 0, +g), z down */
+    x->vel_mps = fnav_vec3_add(v0, dv_n);
+    x->pos_m = fnav_vec3_add(x->pos_m, fnav_vec3_scale(fnav_vec3_add(v0, x->vel_mps), FNAV_R(0.5) * inc->dt_s));
+    q = fnav_quat_mul(x->q_nb, fnav_strapdown_quat_exp(phi));
+    /* one Newton step towards unit norm: |q| stays within 1e-7 of 1 without
+     * a square root (the product of unit quaternions drifts by rounding only) */
+    n2 = q.q[0] * q.q[0] + q.q[1] * q.q[1] + q.q[2] * q.q[2] + q.q[3] * q.q[3];
+    n2 = FNAV_R(0.5) * (FNAV_R(3.0) - n2);
+    x->q_nb = fnav_quat(q.q[0] * n2, q.q[1] * n2, q.q[2] * n2, q.q[3] * n2);
+}
+
+fnav_status_t fnav_strapdown_step(const fnav_strapdown_config_t *cfg, fnav_strapdown_state_t *x,
+                                  fnav_strapdown_hist_t *hist, fnav_vec3_t gyro_rps, fnav_vec3_t accel_mps2,
+                                  fnav_real_t dt_s)
+{
+    fnav_strapdown_incr_t inc;
+    FNAV_ASSERT(cfg != NULL && x != NULL);
+    if (!fnav_vec3_isfinite(gyro_rps) || !fnav_vec3_isfinite(accel_mps2) || !fnav_isfinite(dt_s)) {
+        return FNAV_E_NANINF;
+    }
+    if (dt_s < FNAV_R(0.0)) {
+        return FNAV_E_TIME;
+    }
+    fnav_strapdown_increments(cfg, hist, gyro_rps, accel_mps2, dt_s, &inc);
+    fnav_strapdown_propagate(cfg, x, &inc, fnav_vec3_zero(), fnav_vec3_zero());
+    if (hist != NULL) {
+        fnav_strapdown_hist_push(hist, &inc);
+    }
+    return FNAV_OK;
+}

@@ -1,0 +1,714 @@
+/* 15-state unscented Kalman filter (USQUE-style attitude error), ZUPT/ZARU
+ * updates in Joseph form, AR(1) biases (fnav_ukf.h). */
+#include "footnav/fnav_ukf.h"
+#include "footnav/fnav_port.h"
+
+#define N FNAV_UKF_NMAX
+
+/* NavChip noise densities of paper Table IV, converted (tau in samples at
+ * 200 Hz -> s; deg -> rad). fnav_nav normally fills these from a profile. */
+const fnav_ukf_config_t fnav_ukf_config_default = {
+    { FNAV_R(3.3e-3) * FNAV_DEG2RAD, FNAV_R(3.7e-3) * FNAV_DEG2RAD, FNAV_R(4.2e-3) * FNAV_DEG2RAD },
+    { FNAV_R(7.4e-4), FNAV_R(6.4e-4), FNAV_R(5.0e-4) },
+    FNAV_BIAS_AR1,
+    { FNAV_R(5.0), FNAV_R(5.0), FNAV_R(50.0) },
+    { FNAV_R(10.0), FNAV_R(10.0), FNAV_R(10.0) },
+    { FNAV_R(8.5e-5) * FNAV_DEG2RAD, FNAV_R(6.4e-5) * FNAV_DEG2RAD, FNAV_R(3.4e-5) * FNAV_DEG2RAD },
+    { FNAV_R(1.3e-5), FNAV_R(9.7e-6), FNAV_R(7.3e-6) },
+    { FNAV_R(9.80665), 1 },
+    FNAV_R(1.0), FNAV_R(2.0), FNAV_R(0.0),
+    FNAV_R(0.01),
+    FNAV_R(0.01),
+    1,
+    0,
+    FNAV_R(0.1),
+    FNAV_R(0.002)
+};
+
+static int finite_nonneg(fnav_real_t x)
+{
+    return fnav_isfinite(x) && x >= FNAV_R(0.0);
+}
+
+static int finite_pos(fnav_real_t x)
+{
+    return fnav_isfinite(x) && x > FNAV_R(0.0);
+}
+
+fnav_quat_t fnav_ukf_grp_to_quat(fnav_vec3_t p)
+{
+    /* Crassidis & Markley 2003, eq. (33) with a = 1, f = 4 */
+    fnav_real_t s = fnav_vec3_dot(p, p);
+    fnav_real_t inv = FNAV_R(1.0) / (FNAV_R(16.0) + s);
+    fnav_real_t w = (FNAV_R(16.0) - s) * inv;
+    fnav_real_t k = FNAV_R(8.0) * inv;
+    return fnav_quat(w, k * p.v[0], k * p.v[1], k * p.v[2]);
+}
+
+fnav_vec3_t fnav_ukf_quat_to_grp(fnav_quat_t q)
+{
+    /* eq. (32) with a = 1, f = 4: p = 4 q_v / (1 + q_w), q_w >= 0 */
+    fnav_real_t k;
+    if (q.q[0] < FNAV_R(0.0)) {
+        q = fnav_quat(-q.q[0], -q.q[1], -q.q[2], -q.q[3]);
+    }
+    k = FNAV_R(4.0) / (FNAV_R(1.0) + q.q[0]);
+    return fnav_vec3(k * q.q[1], k * q.q[2], k * q.q[3]);
+}
+
+/* q' = dq(a) * q, renormalised with one Newton step. */
+static fnav_quat_t apply_att(fnav_quat_t q, fnav_vec3_t a)
+{
+    fnav_quat_t r = fnav_quat_mul(fnav_ukf_grp_to_quat(a), q);
+    fnav_real_t n2 = r.q[0] * r.q[0] + r.q[1] * r.q[1] + r.q[2] * r.q[2] + r.q[3] * r.q[3];
+    n2 = FNAV_R(0.5) * (FNAV_R(3.0) - n2);
+    return fnav_quat(r.q[0] * n2, r.q[1] * n2, r.q[2] * n2, r.q[3] * n2);
+}
+
+fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
+{
+    size_t b;
+    unsigned char *p = (unsigned char *)f;
+    int i, n;
+    fnav_real_t lambda;
+    if (f == NULL || cfg == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (cfg->bias_model != FNAV_BIAS_AR1 && cfg->bias_model != FNAV_BIAS_OFF) {
+        return FNAV_E_CONFIG;
+    }
+    for (i = 0; i < 3; i++) {
+        if (!finite_nonneg(cfg->gyro_noise_rps_rthz[i]) || !finite_nonneg(cfg->accel_noise_mps2_rthz[i])) {
+            return FNAV_E_CONFIG;
+        }
+        if (cfg->bias_model == FNAV_BIAS_AR1 &&
+            (!finite_pos(cfg->gyro_tau_s[i]) || !finite_pos(cfg->accel_tau_s[i]) ||
+             !finite_pos(cfg->gyro_bias_sigma_rps[i]) || !finite_pos(cfg->accel_bias_sigma_mps2[i]))) {
+            return FNAV_E_CONFIG;
+        }
+    }
+    if (!finite_pos(cfg->alpha) || !fnav_isfinite(cfg->beta) || !fnav_isfinite(cfg->kappa) ||
+        !finite_pos(cfg->zupt_sigma_mps) || !finite_pos(cfg->zaru_sigma_rps) ||
+        !finite_pos(cfg->strapdown.gravity_mps2) || (cfg->lever != 0 && cfg->lever != 1) ||
+        (cfg->lever && (!finite_pos(cfg->lever_sd_m) || !finite_nonneg(cfg->lever_rw_m_rts)))) {
+        return FNAV_E_CONFIG;
+    }
+    n = 9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0);
+    lambda = cfg->alpha * cfg->alpha * ((fnav_real_t)n + cfg->kappa) - (fnav_real_t)n;
+    if (!((fnav_real_t)n + lambda > FNAV_R(0.0))) {
+        return FNAV_E_CONFIG;
+    }
+    for (b = 0; b < sizeof *f; b++) {
+        p[b] = 0;
+    }
+    f->cfg = *cfg;
+    f->n_act = 0;
+    for (i = 0; i < N; i++) {
+        int on = (i >= FNAV_UKF_V && i < FNAV_UKF_BG) || (i < FNAV_UKF_V && cfg->lever) ||
+                 (i >= FNAV_UKF_BG && cfg->bias_model == FNAV_BIAS_AR1);
+        f->pos[i] = -1;
+        if (on) {
+            f->pos[i] = (int16_t)f->n_act;
+            f->act[f->n_act++] = (unsigned char)i;
+        }
+    }
+    FNAV_ASSERT(f->n_act == n);
+    /* active states come in triples; the linear ones (lever, velocity,
+     * position) are the leading packed states */
+    for (f->n_lin = 0; f->n_lin < n && f->act[f->n_lin] < FNAV_UKF_A; f->n_lin++) {
+    }
+    f->gamma = fnav_sqrt((fnav_real_t)n + lambda);
+    f->w0m = lambda / ((fnav_real_t)n + lambda);
+    f->w0c = f->w0m + FNAV_R(1.0) - cfg->alpha * cfg->alpha + cfg->beta;
+    f->wi = FNAV_R(0.5) / ((fnav_real_t)n + lambda);
+    f->q_nb = fnav_quat_identity();
+    return FNAV_OK;
+}
+
+/* Covariance element of internal states i, j (0 for an inactive state). */
+fnav_real_t fnav_ukf_cov(const fnav_ukf_t *f, int i, int j)
+{
+    FNAV_ASSERT(f != NULL && i >= 0 && i < N && j >= 0 && j < N);
+    if (f->pos[i] < 0 || f->pos[j] < 0) {
+        return FNAV_R(0.0);
+    }
+    return f->P[f->pos[i]][f->pos[j]];
+}
+
+/* Set a covariance element (and its mirror) of active internal states. */
+void fnav_ukf_set_cov(fnav_ukf_t *f, int i, int j, fnav_real_t v)
+{
+    FNAV_ASSERT(f != NULL && i >= 0 && i < N && j >= 0 && j < N && f->pos[i] >= 0 && f->pos[j] >= 0);
+    f->P[f->pos[i]][f->pos[j]] = v;
+    f->P[f->pos[j]][f->pos[i]] = v;
+}
+
+fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps, fnav_vec3_t ba_mps2,
+                             const fnav_ukf_init_sd_t *sd)
+{
+    int i, j;
+    if (f == NULL || sd == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!fnav_vec3_isfinite(bg_rps) || !fnav_vec3_isfinite(ba_mps2) || !fnav_isfinite(q_nb.q[0]) ||
+        !fnav_isfinite(q_nb.q[1]) || !fnav_isfinite(q_nb.q[2]) || !fnav_isfinite(q_nb.q[3])) {
+        return FNAV_E_NANINF;
+    }
+    for (i = 0; i < 3; i++) {
+        if (!finite_pos(sd->att_rad[i]) || !finite_pos(sd->gyro_bias_rps[i]) || !finite_pos(sd->accel_bias_mps2[i])) {
+            return FNAV_E_ARG;
+        }
+    }
+    if (!finite_pos(sd->vel_mps) || !finite_pos(sd->pos_m)) {
+        return FNAV_E_ARG;
+    }
+    f->q_nb = fnav_quat_normalize(q_nb);
+    f->vel_mps = fnav_vec3_zero();
+    f->pos_m = fnav_vec3_zero();
+    f->bg_rps = bg_rps;
+    f->ba_mps2 = ba_mps2;
+    f->bg0_rps = bg_rps;
+    f->ba0_mps2 = ba_mps2;
+    f->lever_m = fnav_vec3_zero();
+    f->hist.valid = 0;
+    for (i = 0; i < N; i++) {
+        for (j = 0; j < N; j++) {
+            f->P[i][j] = FNAV_R(0.0);
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        fnav_ukf_set_cov(f, FNAV_UKF_V + i, FNAV_UKF_V + i, sd->vel_mps * sd->vel_mps);
+        fnav_ukf_set_cov(f, FNAV_UKF_P + i, FNAV_UKF_P + i, sd->pos_m * sd->pos_m);
+        fnav_ukf_set_cov(f, FNAV_UKF_A + i, FNAV_UKF_A + i, sd->att_rad[i] * sd->att_rad[i]);
+        if (f->cfg.bias_model == FNAV_BIAS_AR1) {
+            fnav_ukf_set_cov(f, FNAV_UKF_BG + i, FNAV_UKF_BG + i, sd->gyro_bias_rps[i] * sd->gyro_bias_rps[i]);
+            fnav_ukf_set_cov(f, FNAV_UKF_BA + i, FNAV_UKF_BA + i, sd->accel_bias_mps2[i] * sd->accel_bias_mps2[i]);
+        }
+        if (f->cfg.lever) {
+            fnav_ukf_set_cov(f, FNAV_UKF_R + i, FNAV_UKF_R + i, f->cfg.lever_sd_m * f->cfg.lever_sd_m);
+        }
+    }
+    f->started = 1;
+    return FNAV_OK;
+}
+
+/* Upper-triangular Cholesky factor A = U U^T of the leading n x n block
+ * (packed states); reads only the upper triangle of A. Column j of U is
+ * non-zero in rows 0..j only. Returns 0, or -1 at the first pivot that is
+ * not clearly positive. */
+static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], int n)
+{
+    int i, j, k;
+    for (j = n - 1; j >= 0; j--) {
+        fnav_real_t d = A[j][j], inv;
+        const fnav_real_t *uj = U[j];
+        for (k = j + 1; k < n; k++) {
+            d -= uj[k] * uj[k];
+        }
+        if (!(d > FNAV_REAL_EPSILON * A[j][j]) || !fnav_isfinite(d)) {
+            return -1;
+        }
+        d = fnav_sqrt(d);
+        U[j][j] = d;
+        inv = FNAV_R(1.0) / d;
+        for (i = 0; i < j; i++) {
+            fnav_real_t sum = A[i][j];
+            const fnav_real_t *ui = U[i];
+            for (k = j + 1; k < n; k++) {
+                sum -= ui[k] * uj[k];
+            }
+            U[i][j] = sum * inv;
+        }
+        for (i = j + 1; i < n; i++) {
+            U[i][j] = FNAV_R(0.0);
+        }
+    }
+    return 0;
+}
+
+/* Guarded factorisation: 0 ok, 1 ok after jitter, 2 after a reset. */
+static int factor(fnav_ukf_t *f)
+{
+    int n = f->n_act, i, j;
+    if (chol_upper(f->P, f->U, n) == 0) {
+        return 0;
+    }
+    for (i = 0; i < n; i++) {
+        for (j = i + 1; j < n; j++) {
+            fnav_real_t sy = FNAV_R(0.5) * (f->P[i][j] + f->P[j][i]);
+            f->P[i][j] = sy;
+            f->P[j][i] = sy;
+        }
+        f->P[i][i] += FNAV_R(1.0e-6) * f->P[i][i];
+    }
+    if (chol_upper(f->P, f->U, n) == 0) {
+        f->health.chol_jitter++;
+        return 1;
+    }
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++) {
+            if (i != j) {
+                f->P[i][j] = FNAV_R(0.0);
+            }
+        }
+        if (!(f->P[i][i] > FNAV_R(1.0e-20)) || !fnav_isfinite(f->P[i][i])) {
+            f->P[i][i] = FNAV_R(1.0e-20);
+        }
+    }
+    f->health.chol_reset++;
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++) {
+            f->U[i][j] = (i == j) ? fnav_sqrt(f->P[i][i]) : FNAV_R(0.0);
+        }
+    }
+    return 2;
+}
+
+static int state_finite(const fnav_strapdown_state_t *x)
+{
+    return fnav_vec3_isfinite(x->vel_mps) && fnav_vec3_isfinite(x->pos_m) && fnav_isfinite(x->q_nb.q[0]) &&
+           fnav_isfinite(x->q_nb.q[1]) && fnav_isfinite(x->q_nb.q[2]) && fnav_isfinite(x->q_nb.q[3]);
+}
+
+/* S (upper) += w d d^T over the leading nnz packed states. */
+static void accumulate(fnav_real_t S[N][N], const fnav_real_t *d, int nnz, fnav_real_t w)
+{
+    int a, b;
+    for (a = 0; a < nnz; a++) {
+        fnav_real_t wd = w * d[a];
+        fnav_real_t *sa = S[a];
+        for (b = a; b < nnz; b++) {
+            sa[b] += wd * d[b];
+        }
+    }
+}
+
+/* 3x3 block of C diag(dens^2) C^T dt added to the upper triangle of S at the
+ * packed offset o. */
+static void add_rotated_noise(fnav_real_t S[N][N], int o, fnav_mat3_t C, const fnav_real_t dens[3], fnav_real_t dt)
+{
+    int i, j, k;
+    for (i = 0; i < 3; i++) {
+        for (j = i; j < 3; j++) {
+            fnav_real_t s = FNAV_R(0.0);
+            for (k = 0; k < 3; k++) {
+                s += C.m[i][k] * C.m[j][k] * dens[k] * dens[k];
+            }
+            S[o + i][o + j] += s * dt;
+        }
+    }
+}
+
+fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t accel_mps2, fnav_real_t dt_s)
+{
+    const fnav_ukf_config_t *c;
+    fnav_strapdown_incr_t inc;
+    fnav_strapdown_state_t x0, xi;
+    fnav_quat_t q0inv;
+    fnav_real_t m[N], d[N], dxp[N], dx[N];
+    const fnav_real_t *cb, *qb;
+    fnav_real_t kmm, g;
+    int n, nl, i, j, jj, s, fr, ov, op;
+    if (f == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!f->started) {
+        return FNAV_E_STATE;
+    }
+    if (!fnav_vec3_isfinite(gyro_rps) || !fnav_vec3_isfinite(accel_mps2) || !fnav_isfinite(dt_s)) {
+        f->health.nan_inputs++;
+        return FNAV_E_NANINF;
+    }
+    if (dt_s < FNAV_R(0.0)) {
+        return FNAV_E_TIME;
+    }
+    if (dt_s == FNAV_R(0.0)) {
+        return FNAV_OK;
+    }
+    c = &f->cfg;
+    n = f->n_act;
+    nl = f->n_lin;
+    ov = f->pos[FNAV_UKF_V];
+    op = f->pos[FNAV_UKF_P];
+    fr = factor(f);
+
+    fnav_strapdown_increments(&c->strapdown, &f->hist, fnav_vec3_sub(gyro_rps, f->bg_rps),
+                              fnav_vec3_sub(accel_mps2, f->ba_mps2), dt_s, &inc);
+    x0.q_nb = f->q_nb;
+    x0.vel_mps = f->vel_mps;
+    x0.pos_m = f->pos_m;
+    fnav_strapdown_propagate(&c->strapdown, &x0, &inc, fnav_vec3_zero(), fnav_vec3_zero());
+    q0inv = fnav_quat_conj(x0.q_nb);
+
+    /* AR(1) coefficients c = exp(-dt/tau) and driving variances
+     * sigma^2 (1 - exp(-2 dt/tau)) (paper eqs. (3), (4) with c = e^(-1/tau)
+     * for dt = one sample); the model off keeps the biases fixed. */
+    if (dt_s != f->ar1_dt_s) {
+        /* recomputed only when the interval changes (usually never) */
+        for (i = 0; i < 3; i++) {
+            if (c->bias_model == FNAV_BIAS_AR1) {
+                f->ar1_c[i] = fnav_exp(-dt_s / c->gyro_tau_s[i]);
+                f->ar1_c[3 + i] = fnav_exp(-dt_s / c->accel_tau_s[i]);
+                f->ar1_q[i] = c->gyro_bias_sigma_rps[i] * c->gyro_bias_sigma_rps[i] * (FNAV_R(1.0) - f->ar1_c[i] * f->ar1_c[i]);
+                f->ar1_q[3 + i] = c->accel_bias_sigma_mps2[i] * c->accel_bias_sigma_mps2[i] *
+                                  (FNAV_R(1.0) - f->ar1_c[3 + i] * f->ar1_c[3 + i]);
+            } else {
+                f->ar1_c[i] = f->ar1_c[3 + i] = FNAV_R(1.0);
+                f->ar1_q[i] = f->ar1_q[3 + i] = FNAV_R(0.0);
+            }
+        }
+        f->ar1_dt_s = dt_s;
+    }
+    cb = f->ar1_c;
+    qb = f->ar1_q;
+
+    for (i = 0; i < n; i++) {
+        m[i] = FNAV_R(0.0);
+        for (j = i; j < n; j++) {
+            f->S[i][j] = FNAV_R(0.0);
+        }
+    }
+    if (c->closed_form && nl > 0) {
+        /* The pairs +-gamma U_j, j < nl, differ from the centre only in
+         * lever, velocity and position, which propagate exactly linearly
+         * (r' = r, v' = v + dv, p' = p + dp + dv dt, i.e. D = F dx): each pair
+         * adds 2 W gamma^2 (F U_j)(F U_j)^T = (F U_j)(F U_j)^T and nothing to
+         * the mean. F U_j is formed in place in the columns j < nl of U (the
+         * other sigma points use only the columns >= nl). */
+        fnav_real_t kl = FNAV_R(2.0) * f->wi * f->gamma * f->gamma;
+        int a, b, k;
+        for (jj = 0; jj < nl; jj++) {
+            for (i = 0; i < 3; i++) {
+                f->U[op + i][jj] += dt_s * f->U[ov + i][jj];
+            }
+        }
+        for (a = 0; a < nl; a++) {
+            int sa = (a >= op && a < op + 3) ? ov + (a - op) : a;
+            for (b = a; b < nl; b++) {
+                int sb = (b >= op && b < op + 3) ? ov + (b - op) : b;
+                fnav_real_t sum = FNAV_R(0.0);
+                for (k = sa > sb ? sa : sb; k < nl; k++) {
+                    sum += f->U[a][k] * f->U[b][k];
+                }
+                f->S[a][b] += kl * sum;
+            }
+        }
+    }
+    for (jj = 0; jj < n; jj++) {
+        if (c->closed_form && jj < nl) {
+            continue;
+        }
+        for (s = 0; s < 2; s++) {
+            g = s == 0 ? f->gamma : -f->gamma;
+            for (i = 0; i < n; i++) {
+                dxp[i] = (i <= jj) ? g * f->U[i][jj] : FNAV_R(0.0);
+            }
+            for (i = 0; i < N; i++) {
+                dx[i] = f->pos[i] >= 0 ? dxp[f->pos[i]] : FNAV_R(0.0);
+            }
+            xi.q_nb = apply_att(f->q_nb, fnav_vec3_from(&dx[FNAV_UKF_A]));
+            xi.vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&dx[FNAV_UKF_V]));
+            xi.pos_m = fnav_vec3_add(f->pos_m, fnav_vec3_from(&dx[FNAV_UKF_P]));
+            fnav_strapdown_propagate(&c->strapdown, &xi, &inc, fnav_vec3_scale(fnav_vec3_from(&dx[FNAV_UKF_BG]), -dt_s),
+                                     fnav_vec3_scale(fnav_vec3_from(&dx[FNAV_UKF_BA]), -dt_s));
+            {
+                fnav_vec3_t dv = fnav_vec3_sub(xi.vel_mps, x0.vel_mps);
+                fnav_vec3_t dp = fnav_vec3_sub(xi.pos_m, x0.pos_m);
+                fnav_vec3_t da = fnav_ukf_quat_to_grp(fnav_quat_mul(xi.q_nb, q0inv));
+                for (i = 0; i < 3; i++) {
+                    dx[FNAV_UKF_V + i] = dv.v[i];
+                    dx[FNAV_UKF_P + i] = dp.v[i];
+                    dx[FNAV_UKF_A + i] = da.v[i];
+                    dx[FNAV_UKF_BG + i] *= cb[i];
+                    dx[FNAV_UKF_BA + i] *= cb[3 + i];
+                }
+            }
+            for (i = 0; i < n; i++) {
+                d[i] = dx[f->act[i]];
+                m[i] += f->wi * d[i];
+            }
+            accumulate(f->S, d, n, f->wi);
+        }
+    }
+    /* With the propagated centre as reference (D_0 = 0) and the mean
+     * m = sum_i W_i D_i, the scatter sum_i Wc_i (D_i - m)(D_i - m)^T equals
+     * S - 2 m m^T + (1 - W0m) m m^T + W0c m m^T = S + (beta - alpha^2) m m^T,
+     * S = sum_{i>0} W_i D_i D_i^T; with beta >= alpha^2 every term is PSD. */
+    kmm = c->beta - c->alpha * c->alpha;
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
+            f->S[i][j] += kmm * m[i] * m[j];
+        }
+    }
+    {
+        fnav_mat3_t C = fnav_quat_to_dcm(x0.q_nb);
+        add_rotated_noise(f->S, ov, C, c->accel_noise_mps2_rthz, dt_s);
+        add_rotated_noise(f->S, f->pos[FNAV_UKF_A], C, c->gyro_noise_rps_rthz, dt_s);
+    }
+    for (i = 0; i < 3; i++) {
+        if (c->bias_model == FNAV_BIAS_AR1) {
+            int ob = f->pos[FNAV_UKF_BG], oa = f->pos[FNAV_UKF_BA];
+            f->S[ob + i][ob + i] += qb[i];
+            f->S[oa + i][oa + i] += qb[3 + i];
+        }
+        if (c->lever) {
+            int orr = f->pos[FNAV_UKF_R];
+            f->S[orr + i][orr + i] += c->lever_rw_m_rts * c->lever_rw_m_rts * dt_s;
+        }
+    }
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
+            if (!fnav_isfinite(f->S[i][j])) {
+                f->health.diverged++;
+                return FNAV_E_DIVERGED;
+            }
+        }
+    }
+    /* fold the mean into the nominal state (the bias and lever means are zero
+     * by the symmetry of the sigma points) */
+    x0.q_nb = apply_att(x0.q_nb, fnav_vec3_from(&m[f->pos[FNAV_UKF_A]]));
+    x0.vel_mps = fnav_vec3_add(x0.vel_mps, fnav_vec3_from(&m[ov]));
+    x0.pos_m = fnav_vec3_add(x0.pos_m, fnav_vec3_from(&m[op]));
+    if (!state_finite(&x0)) {
+        f->health.diverged++;
+        return FNAV_E_DIVERGED;
+    }
+    f->q_nb = x0.q_nb;
+    f->vel_mps = x0.vel_mps;
+    f->pos_m = x0.pos_m;
+    for (i = 0; i < 3; i++) {
+        f->bg_rps.v[i] = f->bg0_rps.v[i] + cb[i] * (f->bg_rps.v[i] - f->bg0_rps.v[i]);
+        f->ba_mps2.v[i] = f->ba0_mps2.v[i] + cb[3 + i] * (f->ba_mps2.v[i] - f->ba0_mps2.v[i]);
+    }
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
+            f->P[i][j] = f->S[i][j];
+            f->P[j][i] = f->S[i][j];
+        }
+    }
+    fnav_strapdown_hist_push(&f->hist, &inc);
+    f->health.predicts++;
+    return fr == 2 ? FNAV_E_DECOMP : FNAV_OK;
+}
+
+/* Linear update with a 3-row measurement matrix f->Hm over the packed states
+ * (non-zero only in the packed columns cols[0..nc-1]), innovation y and
+ * variance r2 per axis, in Joseph form (see below). */
+static fnav_status_t update(fnav_ukf_t *f, const int *cols, int nc, fnav_vec3_t y, fnav_real_t r2)
+{
+    int n = f->n_act, i, j, k, c;
+    fnav_real_t s[3][3], si[3][3], det, dx[N], dxi[N];
+    fnav_real_t (*H)[N] = f->Hm;  /* scratch in the object: a small stack */
+    fnav_real_t (*K)[3] = f->K;
+    fnav_real_t (*PHt)[3] = f->PHt;
+    fnav_real_t (*APHt)[3] = f->APHt;
+    fnav_real_t (*Pn)[N] = f->U;
+    /* P H^T (n x 3) */
+    for (i = 0; i < n; i++) {
+        for (k = 0; k < 3; k++) {
+            fnav_real_t sum = FNAV_R(0.0);
+            for (c = 0; c < nc; c++) {
+                sum += f->P[i][cols[c]] * H[k][cols[c]];
+            }
+            PHt[i][k] = sum;
+        }
+    }
+    /* S = H P H^T + R */
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            fnav_real_t sum = (i == j) ? r2 : FNAV_R(0.0);
+            for (c = 0; c < nc; c++) {
+                sum += H[i][cols[c]] * PHt[cols[c]][j];
+            }
+            s[i][j] = sum;
+        }
+    }
+    s[0][1] = s[1][0] = FNAV_R(0.5) * (s[0][1] + s[1][0]);
+    s[0][2] = s[2][0] = FNAV_R(0.5) * (s[0][2] + s[2][0]);
+    s[1][2] = s[2][1] = FNAV_R(0.5) * (s[1][2] + s[2][1]);
+    /* inverse of the symmetric 3x3 innovation covariance (adjugate) */
+    si[0][0] = s[1][1] * s[2][2] - s[1][2] * s[2][1];
+    si[0][1] = s[0][2] * s[2][1] - s[0][1] * s[2][2];
+    si[0][2] = s[0][1] * s[1][2] - s[0][2] * s[1][1];
+    si[1][1] = s[0][0] * s[2][2] - s[0][2] * s[2][0];
+    si[1][2] = s[0][2] * s[1][0] - s[0][0] * s[1][2];
+    si[2][2] = s[0][0] * s[1][1] - s[0][1] * s[1][0];
+    det = s[0][0] * si[0][0] + s[0][1] * si[0][1] + s[0][2] * si[0][2];
+    if (!(det > FNAV_R(0.0)) || !fnav_isfinite(det) || !(si[0][0] > FNAV_R(0.0)) || !(si[2][2] > FNAV_R(0.0))) {
+        f->health.update_reject++;
+        return FNAV_E_DECOMP;
+    }
+    det = FNAV_R(1.0) / det;
+    si[1][0] = si[0][1];
+    si[2][0] = si[0][2];
+    si[2][1] = si[1][2];
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            si[i][j] *= det;
+        }
+    }
+    for (i = 0; i < n; i++) {
+        for (k = 0; k < 3; k++) {
+            K[i][k] = PHt[i][0] * si[0][k] + PHt[i][1] * si[1][k] + PHt[i][2] * si[2][k];
+        }
+        dx[i] = K[i][0] * y.v[0] + K[i][1] * y.v[1] + K[i][2] * y.v[2];
+        if (!fnav_isfinite(dx[i])) {
+            f->health.diverged++;
+            return FNAV_E_DIVERGED;
+        }
+    }
+    /* Joseph form (I - K H) P (I - K H)^T + K R K^T, expanded:
+     * P - K (P H^T)^T - (P H^T) K^T + K S K^T with S = H P H^T + R. It holds
+     * for any gain K (not only the optimal one, unlike P - K H P), is
+     * symmetric term by term, and only its upper triangle is computed.
+     * SK = K S (n x 3) first; here APHt holds SK. */
+    for (i = 0; i < n; i++) {
+        for (k = 0; k < 3; k++) {
+            APHt[i][k] = K[i][0] * s[0][k] + K[i][1] * s[1][k] + K[i][2] * s[2][k];
+        }
+    }
+    for (i = 0; i < n; i++) {
+        const fnav_real_t *ki = K[i], *pi = PHt[i];
+        for (j = i; j < n; j++) {
+            const fnav_real_t *kj = K[j], *pj = PHt[j], *sj = APHt[j];
+            fnav_real_t v = f->P[i][j] - (ki[0] * pj[0] + ki[1] * pj[1] + ki[2] * pj[2]) -
+                            (pi[0] * kj[0] + pi[1] * kj[1] + pi[2] * kj[2]) + (ki[0] * sj[0] + ki[1] * sj[1] + ki[2] * sj[2]);
+            if (!fnav_isfinite(v)) {
+                f->health.diverged++;
+                return FNAV_E_DIVERGED;
+            }
+            Pn[i][j] = v;
+        }
+    }
+    for (i = 0; i < n; i++) {
+        for (j = i; j < n; j++) {
+            f->P[i][j] = Pn[i][j];
+            f->P[j][i] = Pn[i][j];
+        }
+    }
+    for (i = 0; i < N; i++) {
+        dxi[i] = f->pos[i] >= 0 ? dx[f->pos[i]] : FNAV_R(0.0);
+    }
+    f->lever_m = fnav_vec3_add(f->lever_m, fnav_vec3_from(&dxi[FNAV_UKF_R]));
+    f->vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&dxi[FNAV_UKF_V]));
+    f->pos_m = fnav_vec3_add(f->pos_m, fnav_vec3_from(&dxi[FNAV_UKF_P]));
+    f->q_nb = apply_att(f->q_nb, fnav_vec3_from(&dxi[FNAV_UKF_A]));
+    f->bg_rps = fnav_vec3_add(f->bg_rps, fnav_vec3_from(&dxi[FNAV_UKF_BG]));
+    f->ba_mps2 = fnav_vec3_add(f->ba_mps2, fnav_vec3_from(&dxi[FNAV_UKF_BA]));
+    return FNAV_OK;
+}
+
+/* Clear the measurement matrix over the packed states. */
+static void clear_h(fnav_ukf_t *f)
+{
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < f->n_act; j++) {
+            f->Hm[i][j] = FNAV_R(0.0);
+        }
+    }
+}
+
+fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
+{
+    int cols[12], nc = 0, i, j; /* velocity, lever, attitude, gyro bias */
+    fnav_vec3_t y;
+    fnav_status_t st;
+    if (f == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!f->started) {
+        return FNAV_E_STATE;
+    }
+    if (!fnav_vec3_isfinite(gyro_rps)) {
+        f->health.nan_inputs++;
+        return FNAV_E_NANINF;
+    }
+    clear_h(f);
+    for (i = 0; i < 3; i++) {
+        f->Hm[i][f->pos[FNAV_UKF_V] + i] = FNAV_R(1.0);
+        cols[nc++] = f->pos[FNAV_UKF_V] + i;
+    }
+    y = fnav_vec3_scale(f->vel_mps, -FNAV_R(1.0));
+    if (f->cfg.lever) {
+        /* h = v - C (w x r) = 0 with w = w_m - b_g; first-order error terms:
+         * dh/dr = -C [w x], dh/da = [u x] with u = C (w x r) (attitude error
+         * in n), dh/db_g = -C [r x] */
+        fnav_vec3_t w = fnav_vec3_sub(gyro_rps, f->bg_rps);
+        fnav_mat3_t C = fnav_quat_to_dcm(f->q_nb);
+        fnav_mat3_t Hr = fnav_mat3_mul(C, fnav_mat3_skew(w));
+        fnav_vec3_t u = fnav_mat3_mul_vec3(C, fnav_vec3_cross(w, f->lever_m));
+        fnav_mat3_t Ha = fnav_mat3_skew(u);
+        fnav_mat3_t Hb = fnav_mat3_mul(C, fnav_mat3_skew(f->lever_m));
+        int orr = f->pos[FNAV_UKF_R], oa = f->pos[FNAV_UKF_A], ob = f->pos[FNAV_UKF_BG];
+        y = fnav_vec3_sub(u, f->vel_mps);
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                f->Hm[i][orr + j] = -Hr.m[i][j];
+                f->Hm[i][oa + j] = Ha.m[i][j];
+                if (ob >= 0) {
+                    f->Hm[i][ob + j] = -Hb.m[i][j];
+                }
+            }
+        }
+        for (j = 0; j < 3; j++) {
+            cols[nc++] = orr + j;
+            cols[nc++] = oa + j;
+            if (ob >= 0) {
+                cols[nc++] = ob + j;
+            }
+        }
+    }
+    st = update(f, cols, nc, y, f->cfg.zupt_sigma_mps * f->cfg.zupt_sigma_mps);
+    if (st == FNAV_OK) {
+        f->health.zupts++;
+    }
+    return st;
+}
+
+fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
+{
+    int cols[3], i, ob;
+    fnav_status_t st;
+    if (f == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!f->started) {
+        return FNAV_E_STATE;
+    }
+    if (!fnav_vec3_isfinite(gyro_rps)) {
+        f->health.nan_inputs++;
+        return FNAV_E_NANINF;
+    }
+    if (f->cfg.bias_model != FNAV_BIAS_AR1) {
+        return FNAV_OK;
+    }
+    ob = f->pos[FNAV_UKF_BG];
+    clear_h(f);
+    for (i = 0; i < 3; i++) {
+        f->Hm[i][ob + i] = FNAV_R(1.0);
+        cols[i] = ob + i;
+    }
+    st = update(f, cols, 3, fnav_vec3_sub(gyro_rps, f->bg_rps), f->cfg.zaru_sigma_rps * f->cfg.zaru_sigma_rps);
+    if (st == FNAV_OK) {
+        f->health.zarus++;
+    }
+    return st;
+}
+
+fnav_vec3_t fnav_ukf_euler(const fnav_ukf_t *f)
+{
+    return fnav_quat_to_euler(f->q_nb);
+}
+
+void fnav_ukf_p_diag(const fnav_ukf_t *f, fnav_real_t out[FNAV_UKF_N])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        out[i] = fnav_ukf_cov(f, FNAV_UKF_A + i, FNAV_UKF_A + i);
+        out[3 + i] = fnav_ukf_cov(f, FNAV_UKF_V + i, FNAV_UKF_V + i);
+        out[6 + i] = fnav_ukf_cov(f, FNAV_UKF_P + i, FNAV_UKF_P + i);
+        out[9 + i] = fnav_ukf_cov(f, FNAV_UKF_BG + i, FNAV_UKF_BG + i);
+        out[12 + i] = fnav_ukf_cov(f, FNAV_UKF_BA + i, FNAV_UKF_BA + i);
+    }
+}

@@ -1,0 +1,124 @@
+#!/bin/sh
+# CLI tests of `harness replay` and `harness eval`: usage errors, the summary,
+# CSV / JSON / PNG outputs, resampling, bad and truncated input (exit 1 with
+# the frames before the error written), eval on the shared data.
+# $HARNESS is the harness binary (set by `make test-cli`).
+set -u
+H=${HARNESS:-bin/harness}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+fails=0
+pass() { echo "ok   $1"; }
+fail() { echo "FAIL $1"; fails=$((fails + 1)); }
+expect_exit() { # expected-code description command...
+    want=$1; what=$2; shift 2
+    "$@" >"$T/out" 2>"$T/err"; got=$?
+    if [ "$got" -eq "$want" ]; then pass "$what (exit $got)"; else fail "$what: exit $got, expected $want"; cat "$T/err"; fi
+}
+expect_err() {
+    if grep -q -- "$1" "$T/err"; then pass "$2"; else fail "$2: stderr lacks '$1'"; cat "$T/err"; fi
+}
+expect_out() {
+    if grep -q -- "$1" "$T/out"; then pass "$2"; else fail "$2: stdout lacks '$1'"; cat "$T/out"; fi
+}
+. "$(dirname "$0")/datadir.sh"
+
+# --- usage
+expect_exit 0 "replay --help" "$H" replay --help
+expect_exit 2 "replay without LOG" "$H" replay
+expect_exit 2 "bad --bias-model" "$H" replay vectors/walk.bin --bias-model maybe
+expect_err "must be ar1 or off" "--bias-model error names the choices"
+expect_exit 2 "bad --detector" "$H" replay vectors/walk.bin --detector psychic
+expect_exit 2 "unknown --param" "$H" replay vectors/walk.bin --param nope=1
+expect_err "unknown key 'nope'" "--param error names the key"
+expect_exit 2 "--param without =" "$H" replay vectors/walk.bin --param gamma
+expect_exit 2 "--param not a number" "$H" replay vectors/walk.bin --param gamma=abc
+expect_exit 0 "--param help" "$H" replay vectors/walk.bin --param help
+expect_out "zupt_sigma" "--param help lists the keys"
+expect_exit 2 "unknown profile" "$H" replay vectors/walk.bin --profile /nonexistent/profile.txt
+expect_exit 2 "bad --rate" "$H" replay vectors/walk.bin --rate -5
+expect_exit 2 "config rejected by the core" "$H" replay vectors/walk.bin --param window_s=-1 --quiet
+expect_err "rejected" "rejected configuration explained"
+expect_exit 1 "missing log" "$H" replay /nonexistent/log.csv
+
+# --- the bundled walk (x-io short walk, duplicates and gaps)
+expect_exit 0 "replay walk.bin" "$H" replay vectors/walk.bin --out "$T/traj.csv" --json "$T/s.json"
+expect_out "return-to-start" "summary: return-to-start"
+expect_out "vertical drift" "summary: vertical drift"
+expect_out "205 duplicates" "summary: duplicates counted (MANIFEST: 205)"
+rows=$(($(wc -l < "$T/traj.csv") - 1))
+if [ "$rows" -eq 16539 ]; then pass "one CSV row per sample ($rows)"; else fail "CSV rows $rows, expected 16539"; fi
+if head -1 "$T/traj.csv" | grep -q "^t,x,y,z,vx,vy,vz,roll,pitch,yaw,bgx"; then pass "CSV header"; else fail "CSV header"; fi
+for k in distance_m return_error_h_m return_error_3d_pct vertical_drift_m heading_change_deg strides health; do
+    if grep -q "\"$k\"" "$T/s.json"; then pass "JSON key $k"; else fail "JSON key $k missing"; fi
+done
+if /usr/bin/python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if j['health']['duplicates']==205 and j['aligned'] else 1)" "$T/s.json"; then
+    pass "JSON health.duplicates = 205, aligned"
+else
+    fail "JSON health content"
+fi
+expect_exit 0 "CSV to standard output" "$H" replay vectors/walk.bin --out -
+if [ "$(wc -l < "$T/out")" -eq 16540 ]; then pass "stdout CSV complete"; else fail "stdout CSV rows"; fi
+expect_err "return-to-start" "summary on stderr when the CSV is on stdout"
+if command -v gnuplot >/dev/null 2>&1; then
+    expect_exit 0 "replay --plot" "$H" replay vectors/walk.bin --plot "$T/p.png" --quiet
+    if [ -s "$T/p.png" ]; then pass "PNG written"; else fail "PNG missing"; fi
+fi
+expect_exit 0 "replay --rate 100" "$H" replay vectors/walk.bin --rate 100 --json "$T/r.json"
+expect_out "resampled" "summary reports the resampling"
+expect_exit 1 "--rate above the input rate" "$H" replay vectors/walk.bin --rate 2000
+expect_err "only downsampling" "rate error explains"
+expect_exit 0 "bias model off, threshold detector" "$H" replay vectors/walk.bin --bias-model off --detector threshold --quiet
+expect_exit 0 "built-in profile mtx" "$H" replay vectors/walk.bin --profile mtx --quiet
+cat > "$T/p.profile" <<'PROF'
+# written by hand in the format of harness allan --profile (docs/profile-format.md)
+format = footnav-profile 1
+name = handmade
+rate_hz = 100
+accel_noise_mps2_rthz = 0.005 0.004 0.005
+accel_tau_s = 80 80 90
+accel_bias_sigma_mps2 = 0.007 0.005 0.005
+gyro_noise_rps_rthz = 0.0007 0.0007 0.0007
+gyro_tau_s = 120 190 320
+gyro_bias_sigma_rps = 0.0002 0.0003 0.0003
+PROF
+expect_exit 0 "profile file with the bias model" "$H" replay vectors/walk.bin --profile "$T/p.profile" --bias-model ar1 --json "$T/pf.json"
+if grep -q '"aligned":.*true' "$T/pf.json"; then pass "profile file replay aligned"; else fail "profile file replay"; fi
+printf 'format = footnav-profile 1\nrate_hz = 100\n' > "$T/bad.profile"
+expect_exit 2 "incomplete profile file" "$H" replay vectors/walk.bin --profile "$T/bad.profile"
+expect_err "bad.profile" "profile error names the file"
+
+# --- bad input: a NaN in the middle; the frames before are written, exit 1
+head -2001 vectors/nav/golden/gx2_walk2.csv > "$T/bad.csv"
+echo "8.1,nan,0,9.8,0,0,0" >> "$T/bad.csv"
+tail -n +2002 vectors/nav/golden/gx2_walk2.csv | head -100 >> "$T/bad.csv"
+expect_exit 1 "NaN in the input" "$H" replay "$T/bad.csv" --out "$T/bad_traj.csv"
+expect_err "NaN" "NaN error names the problem"
+rows=$(($(wc -l < "$T/bad_traj.csv") - 1))
+if [ "$rows" -eq 2000 ]; then pass "every frame before the NaN written ($rows)"; else fail "frames before the NaN: $rows, expected 2000"; fi
+printf 't,ax,ay,az,gx,gy,gz\n0.0,0,0,-9.8,0,0,0\n' > "$T/tiny.csv"
+expect_exit 1 "too short to align" "$H" replay "$T/tiny.csv"
+expect_err "no still period" "alignment failure explained"
+
+# --- shared data: a truncated last line, and eval
+if [ -n "$D" ]; then
+    expect_exit 0 "GX2 log cut off mid-line" "$H" replay "$D/openshoe_gx2/Measurement_100521_31_data_inert.txt" --out "$T/t31.csv"
+    expect_err "last line is incomplete" "the cut-off line is reported"
+    rows=$(($(wc -l < "$T/t31.csv") - 1))
+    if [ "$rows" -eq 16785 ]; then pass "every good sample replayed ($rows)"; else fail "truncated log rows $rows, expected 16785"; fi
+    expect_exit 0 "eval --help" "$H" eval --help
+    expect_exit 0 "eval (no experiments)" "$H" eval --no-experiments --out "$T/results.md" --json "$T/e.json"
+    for s in "openshoe_gx2" "xio_ngimu_gait" "own_3dmgx5_footprints" "vicon_3dmgx3" "ipol_gait_xsens" "## Targets"; do
+        if grep -q "$s" "$T/results.md"; then pass "results.md has $s"; else fail "results.md lacks $s"; fi
+    done
+    if head -5 "$T/results.md" | grep -q "harness eval"; then pass "results.md names its command"; else fail "results.md command"; fi
+else
+    echo "skip shared-data checks (no ../shared/data; set FNAV_DATA_DIR)"
+fi
+expect_exit 4 "eval without data" "$H" eval --data /nonexistent --out "$T/x.md"
+
+if [ "$fails" -ne 0 ]; then
+    echo "test_replay.sh: $fails failure(s)"
+    exit 1
+fi
+echo "test_replay.sh: all passed"

@@ -1,0 +1,23 @@
+#!/bin/sh
+# Cortex-M4F instruction counts of the navigation step (make bench): builds
+# tests/m4 with the firmware flags and runs it in qemu-system-arm (mps2-an386,
+# -icount shift=0, semihosting). Skips with a message when the tools are
+# missing. Usage: sh tests/m4/run.sh [extra CFLAGS: -O2, -DM4_AR1 (bias model
+# on), -DM4_NOLEVER (no lever states)]
+set -u
+cd "$(dirname "$0")/../.."
+for t in arm-none-eabi-gcc qemu-system-arm /usr/bin/python3; do
+    command -v "$t" >/dev/null 2>&1 || { echo "  m4: $t not installed; skipped"; exit 0; }
+done
+B=build/m4
+mkdir -p "$B"
+/usr/bin/python3 tests/m4/gen_data.py "$B/m4_data.h" 3000 || exit 1
+OPT="-Os"
+for a in "$@"; do case "$a" in -O*) OPT="$a" ;; esac; done
+arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard $OPT -std=c99 "$@" \
+    -Iinclude -I"$B" -nostartfiles --specs=nosys.specs -T tests/m4/link.ld \
+    tests/m4/startup.c tests/m4/main.c src/fnav_nav.c src/fnav_ukf.c src/fnav_stance.c src/fnav_align.c \
+    src/fnav_strapdown.c src/fnav_profile.c src/fnav_port.c -lm -o "$B/m4.elf" || exit 1
+echo "  Cortex-M4F in qemu-system-arm mps2-an386 -icount shift=0 ($OPT $*):"
+timeout 600 qemu-system-arm -M mps2-an386 -nographic -semihosting-config enable=on,target=native \
+    -icount shift=0 -kernel "$B/m4.elf" 2>&1 | sed "s/^/    /"

@@ -1,0 +1,474 @@
+/* fnav_nav: configuration, timing (duplicates, gaps, jumps, time going
+ * backwards), NaN rejection, the push/pop/step/run contracts, object sizes,
+ * the golden replays of vectors/nav/golden (any change fails), and the
+ * float32-versus-float64 agreement on every real walk of the shared data
+ * (vectors/nav/double_reference.csv, from gen_double_reference.py). */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "footnav/fnav_nav.h"
+#include "fnav_testdata.h"
+#include "hx_nav.h"
+
+static const double k_g = 9.80665;
+
+/* A still foot (level, tiny deterministic wobble) sampled at 200 Hz. */
+static fnav_sample_t still(long k)
+{
+    fnav_sample_t s;
+    memset(&s, 0, sizeof s);
+    s.t_ns = (int64_t)k * 5000000;
+    s.seq = (uint32_t)k;
+    s.accel_mps2[0] = (fnav_real_t)(0.001 * ((k % 3) - 1));
+    s.accel_mps2[2] = (fnav_real_t)(-k_g + 0.001 * ((k % 5) - 2));
+    s.gyro_rps[1] = (fnav_real_t)(0.0002 * ((k % 7) - 3));
+    return s;
+}
+
+static void test_config(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    (void)state;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    assert_int_equal(fnav_nav_init(NULL, &c), FNAV_E_ARG);
+    c.gravity_mps2 = FNAV_R(0.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c = fnav_nav_config_default;
+    c.profile.gyro_tau_s[0] = FNAV_R(-1.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c = fnav_nav_config_default;
+    c.stance.window_s = FNAV_R(-0.1);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c = fnav_nav_config_default;
+    c.zupt_sigma_mps = FNAV_R(0.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+}
+
+/* One frame per accepted sample, in order; rejected samples change nothing;
+ * alignment after the still period; position stays at the origin at rest. */
+static void test_stream_contract(void **state)
+{
+    static fnav_nav_t nav, copy;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    long k, frames = 0, n = 600;
+    uint32_t next = 0;
+    (void)state;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    for (k = 0; k < n; k++) {
+        fnav_sample_t s = still(k);
+        assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+        while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+            assert_int_equal(fr.seq, next);
+            next++;
+            frames++;
+        }
+        if (k == 300) {
+            /* NaN and a time going backwards: rejected, nothing changes */
+            fnav_sample_t bad = still(301);
+            copy = nav;
+            bad.gyro_rps[2] = (fnav_real_t)NAN;
+            assert_int_equal(fnav_nav_push(&nav, &bad), FNAV_E_NANINF);
+            bad = still(299);
+            assert_int_equal(fnav_nav_push(&nav, &bad), FNAV_E_TIME);
+            assert_int_equal(nav.stats.nan_inputs, 1);
+            assert_int_equal(nav.stats.time_back, 1);
+            nav.stats.nan_inputs = copy.stats.nan_inputs;
+            nav.stats.time_back = copy.stats.time_back;
+            nav.health = copy.health;
+            assert_memory_equal(&nav, &copy, sizeof nav);
+            nav.stats.nan_inputs = 1;
+            nav.stats.time_back = 1;
+            nav.health |= FNAV_HEALTH_NANINF | FNAV_HEALTH_TIME_BACK;
+        }
+    }
+    fnav_nav_finish(&nav);
+    while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+        assert_int_equal(fr.seq, next);
+        next++;
+        frames++;
+    }
+    assert_int_equal(fnav_nav_pop(&nav, &fr), FNAV_END);
+    assert_int_equal(frames, n);
+    assert_int_equal(nav.stats.frames, n);
+    assert_true(nav.aligned);
+    assert_true(fr.flags & FNAV_FRAME_ALIGNED);
+    assert_true(fr.flags & FNAV_FRAME_ZUPT);
+    assert_true(fr.health & FNAV_HEALTH_NANINF);
+    assert_true(fr.health & FNAV_HEALTH_TIME_BACK);
+    /* at rest the position stays at the origin (ZUPTs every sample) */
+    assert_true(fabs((double)fr.pos_m[0]) < 1e-3 && fabs((double)fr.pos_m[1]) < 1e-3 && fabs((double)fr.pos_m[2]) < 1e-3);
+    assert_true(fabs((double)fr.euler_rad[0]) < 1e-3 && fabs((double)fr.euler_rad[1]) < 1e-3);
+}
+
+/* Duplicates (dt = 0), gaps (> 1.5 intervals), time jumps (> max_gap_s). */
+static void test_timing(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    long k, n = 800, frames = 0;
+    int64_t shift = 0;
+    (void)state;
+    c.stance.rate_hz = FNAV_R(200.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    for (k = 0; k < n; k++) {
+        fnav_sample_t s = still(k);
+        if (k == 400) {
+            shift += 10000000; /* a 15 ms interval: gap */
+        }
+        if (k == 500) {
+            shift += 1000000000; /* a 1 s interval: time jump */
+        }
+        s.t_ns += shift;
+        assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+        if (k == 300 || k == 301) {
+            assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK); /* exact duplicate */
+        }
+        while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+            frames++;
+        }
+    }
+    fnav_nav_finish(&nav);
+    while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+        frames++;
+    }
+    assert_int_equal(frames, n + 2);
+    assert_int_equal(nav.stats.duplicates, 2);
+    assert_int_equal(nav.stats.gaps, 1);
+    assert_int_equal(nav.stats.time_jumps, 1);
+    assert_true(fr.health & FNAV_HEALTH_DUPLICATE);
+    assert_true(fr.health & FNAV_HEALTH_GAP);
+    assert_true(fr.health & FNAV_HEALTH_TIME_JUMP);
+    FNAV_ASSERT_CLOSE(nav.stats.max_gap_seen_s, 1.005, 1e-6, 0.0);
+}
+
+/* fnav_nav_step returns the newest frame and processes every due one. */
+static void test_step(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    long k, ok = 0;
+    (void)state;
+    c.stance.rate_hz = FNAV_R(200.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    for (k = 0; k < 100; k++) {
+        fnav_sample_t s = still(k);
+        fnav_status_t st = fnav_nav_step(&nav, &s, &fr);
+        if (st == FNAV_OK) {
+            ok++;
+            /* latency: W = 5 (h = 2) plus the 4-sample confirmation (L = 3) */
+            assert_int_equal((long)fr.seq, k - 5);
+        } else {
+            assert_int_equal(st, FNAV_AGAIN);
+        }
+    }
+    assert_int_equal(ok, 95);
+}
+
+/* The port loop produces the same frames as push/pop by hand. */
+typedef struct {
+    long i, n;
+    fnav_nav_frame_t *out;
+    long nout;
+} mem_port_t;
+
+static fnav_status_t mem_read(void *ctx, fnav_sample_t *s)
+{
+    mem_port_t *m = (mem_port_t *)ctx;
+    if (m->i >= m->n) {
+        return FNAV_END;
+    }
+    *s = still(m->i);
+    if (m->i > 250 && m->i < 330) {
+        s->gyro_rps[1] = FNAV_R(2.0); /* some motion */
+        s->accel_mps2[0] = FNAV_R(1.0);
+    }
+    m->i++;
+    return FNAV_OK;
+}
+
+static fnav_status_t mem_write(void *ctx, const fnav_nav_frame_t *f)
+{
+    mem_port_t *m = (mem_port_t *)ctx;
+    m->out[m->nout++] = *f;
+    return FNAV_OK;
+}
+
+static void test_run_port(void **state)
+{
+    static fnav_nav_t a, b;
+    static fnav_nav_frame_t fa[500], fb[500];
+    fnav_nav_config_t c = fnav_nav_config_default;
+    mem_port_t m = { 0, 500, fa, 0 }, m2 = { 0, 500, fb, 0 };
+    fnav_port_t port;
+    fnav_sample_t s;
+    (void)state;
+    memset(&port, 0, sizeof port);
+    port.ctx = &m;
+    port.read_sample = mem_read;
+    port.write_nav = mem_write;
+    assert_int_equal(fnav_nav_init(&a, &c), FNAV_OK);
+    assert_int_equal(fnav_nav_run(&a, &port, 0), FNAV_OK);
+    assert_int_equal(m.nout, 500);
+    assert_int_equal(fnav_nav_init(&b, &c), FNAV_OK);
+    while (mem_read(&m2, &s) == FNAV_OK) {
+        assert_int_equal(fnav_nav_push(&b, &s), FNAV_OK);
+        while (fnav_nav_pop(&b, &fb[m2.nout]) == FNAV_OK) {
+            m2.nout++;
+        }
+    }
+    fnav_nav_finish(&b);
+    while (fnav_nav_pop(&b, &fb[m2.nout]) == FNAV_OK) {
+        m2.nout++;
+    }
+    assert_int_equal(m2.nout, 500);
+    assert_memory_equal(fa, fb, sizeof fa);
+}
+
+/* Memory: the filter object within 8 KB in float32 (the limit). */
+static void test_sizes(void **state)
+{
+    (void)state;
+    fprintf(stderr, "sizeof: fnav_nav_t %zu, fnav_ukf_t %zu, fnav_stance_t %zu, fnav_align_t %zu bytes\n",
+            sizeof(fnav_nav_t), sizeof(fnav_ukf_t), sizeof(fnav_stance_t), sizeof(fnav_align_t));
+#if !FNAV_USE_DOUBLE
+    assert_true(sizeof(fnav_ukf_t) <= 8192);
+#endif
+}
+
+/* ------------------------------------------------------------ resampler */
+
+/* The --rate resampler: a 10 Hz sine at 400 Hz passes to 100 Hz with its
+ * amplitude (within 1 %), an 80 Hz sine (above the new Nyquist rate, it
+ * would alias to 20 Hz) is removed (below 1 %), duplicates are dropped and
+ * counted, and upsampling is refused. */
+static void test_resampler(void **state)
+{
+    hx_log_t in, out;
+    size_t n = 4000, i;
+    long dups = 0;
+    double fs = 0.0, a10 = 0.0, a80 = 0.0;
+    char err[320];
+    (void)state;
+    memset(&in, 0, sizeof in);
+    in.t_ns = (int64_t *)calloc(n + 1, sizeof *in.t_ns);
+    in.seq = (uint32_t *)calloc(n + 1, sizeof *in.seq);
+    in.acc = (double(*)[3])calloc(n + 1, sizeof *in.acc);
+    in.gyr = (double(*)[3])calloc(n + 1, sizeof *in.gyr);
+    in.temp = (double *)calloc(n + 1, sizeof *in.temp);
+    assert_true(in.t_ns && in.seq && in.acc && in.gyr && in.temp);
+    for (i = 0; i < n; i++) {
+        double t = (double)i / 400.0;
+        in.t_ns[i] = (int64_t)llround(t * 1e9);
+        in.acc[i][0] = sin(2.0 * 3.14159265358979 * 10.0 * t);
+        in.gyr[i][0] = sin(2.0 * 3.14159265358979 * 80.0 * t);
+    }
+    /* one exact duplicate */
+    memmove(&in.t_ns[1001], &in.t_ns[1000], (n - 1000) * sizeof *in.t_ns);
+    memmove(&in.acc[1001], &in.acc[1000], (n - 1000) * sizeof *in.acc);
+    memmove(&in.gyr[1001], &in.gyr[1000], (n - 1000) * sizeof *in.gyr);
+    in.n = n + 1;
+    assert_int_equal(hx_nav_resample(&in, 100.0, &out, &dups, &fs, err, sizeof err), 0);
+    assert_int_equal(dups, 1);
+    FNAV_ASSERT_CLOSE(fs, 400.0, 0.0, 1e-9);
+    FNAV_ASSERT_CLOSE((double)out.n, 1000.0, 1.0, 0.0);
+    FNAV_ASSERT_CLOSE((double)(out.t_ns[1] - out.t_ns[0]), 1e7, 1.0, 0.0);
+    /* amplitudes sqrt(2) x RMS over 800 output samples (80 cycles of 10 Hz)
+     * away from the edges (the filter is 161 input samples long) */
+    for (i = 100; i < 900; i++) {
+        a10 += out.acc[i][0] * out.acc[i][0];
+        a80 += out.gyr[i][0] * out.gyr[i][0];
+    }
+    a10 = sqrt(2.0 * a10 / 800.0);
+    a80 = sqrt(2.0 * a80 / 800.0);
+    FNAV_ASSERT_CLOSE(a10, 1.0, 0.01, 0.0);
+    assert_true(a80 < 0.01);
+    hx_log_free(&out);
+    assert_int_equal(hx_nav_resample(&in, 500.0, &out, &dups, &fs, err, sizeof err), -1);
+    assert_non_null(strstr(err, "only downsampling"));
+    hx_log_free(&in);
+}
+
+/* ------------------------------------------------------------ golden */
+
+/* Compare two trajectory CSV texts row by row (rows matched by their time):
+ * fields printed as %.6f must agree to 2e-6, fields printed as %.4e to
+ * 2e-4 relative: any change of the computation shows. */
+static int compare_rows(const char *got_path, const char *ref_path, char *why, size_t why_size)
+{
+    FILE *g = fopen(got_path, "r"), *r = fopen(ref_path, "r");
+    static char lg[2048], lr[2048];
+    long matched = 0;
+    int rc = 0;
+    if (g == NULL || r == NULL) {
+        snprintf(why, why_size, "cannot open %s or %s", got_path, ref_path);
+        if (g) fclose(g);
+        if (r) fclose(r);
+        return -1;
+    }
+    if (fgets(lg, sizeof lg, g) == NULL || fgets(lr, sizeof lr, r) == NULL || strcmp(lg, lr) != 0) {
+        snprintf(why, why_size, "header differs");
+        fclose(g);
+        fclose(r);
+        return -1;
+    }
+    while (rc == 0 && fgets(lr, sizeof lr, r) != NULL) {
+        double tr = atof(lr), tg = -1.0;
+        while (fgets(lg, sizeof lg, g) != NULL) {
+            tg = atof(lg);
+            if (tg >= tr - 1e-7) {
+                break;
+            }
+        }
+        if (fabs(tg - tr) > 1e-7) {
+            snprintf(why, why_size, "row at t = %.6f missing", tr);
+            rc = -1;
+            break;
+        }
+        {
+            char *pg = lg, *pr = lr;
+            int col = 0;
+            while (*pr != '\0' && *pr != '\n') {
+                char *eg, *er;
+                double vg = strtod(pg, &eg), vr = strtod(pr, &er);
+                int sci = memchr(pr, 'e', (size_t)(er - pr)) != NULL;
+                double tol = sci ? 2e-4 * fabs(vr) + 1e-30 : 2e-6;
+                if (eg == pg || er == pr || fabs(vg - vr) > tol) {
+                    snprintf(why, why_size, "t = %.6f column %d: %.9g vs golden %.9g", tr, col + 1, vg, vr);
+                    rc = -1;
+                    break;
+                }
+                pg = (*eg == ',') ? eg + 1 : eg;
+                pr = (*er == ',') ? er + 1 : er;
+                col++;
+            }
+        }
+        matched++;
+    }
+    fclose(g);
+    fclose(r);
+    if (rc == 0 && matched < 10) {
+        snprintf(why, why_size, "only %ld rows compared", matched);
+        rc = -1;
+    }
+    return rc;
+}
+
+static void test_golden_replays(void **state)
+{
+    static const char *const names[3] = { "gx2_walk2", "xio_short", "square2" };
+    int i;
+    (void)state;
+    for (i = 0; i < 3; i++) {
+        char in[256], ref[256], rel[128], err[400], why[300], out[] = "/tmp/fnav_golden_XXXXXX";
+        fnav_nav_config_t c = fnav_nav_config_default;
+        FILE *f;
+        int fd, rc;
+        snprintf(rel, sizeof rel, "nav/golden/%s.csv", names[i]);
+        if (fnav_vector_path(rel, in, sizeof in) != 0) {
+            fail_msg("golden input %s missing (run from the repository root)", rel);
+        }
+        snprintf(rel, sizeof rel, "nav/golden/%s_traj_%s.csv", names[i], FNAV_USE_DOUBLE ? "double" : "float");
+        assert_int_equal(fnav_vector_path(rel, ref, sizeof ref), 0);
+        fd = mkstemp(out);
+        assert_true(fd >= 0);
+        f = fdopen(fd, "w");
+        assert_non_null(f);
+        rc = hx_nav_replay("test", in, HX_FMT_AUTO, 0.0, &c, 0.0, f, NULL, 0, err, sizeof err);
+        fclose(f);
+        assert_int_equal(rc, 0);
+        if (compare_rows(out, ref, why, sizeof why) != 0) {
+            remove(out);
+            fail_msg("golden replay %s changed: %s (if intended: sh vectors/nav/make_golden.sh and commit the "
+                     "reason)",
+                     names[i], why);
+        }
+        remove(out);
+    }
+}
+
+/* ------------------------------------------------------------ float vs double */
+
+static void test_float_vs_double(void **state)
+{
+    char ref[256], line[512], path[600], err[400];
+    FILE *f;
+    int n = 0, skipped = 0;
+    double worst = 0.0;
+    (void)state;
+    assert_int_equal(fnav_vector_path("nav/double_reference.csv", ref, sizeof ref), 0);
+    f = fopen(ref, "r");
+    assert_non_null(f);
+    while (fgets(line, sizeof line, f) != NULL) {
+        char walk[300];
+        double dist, ex, ey, ez, tol, d;
+        hx_traj_t t;
+        hx_nav_summary_t s;
+        fnav_nav_config_t c = fnav_nav_config_default;
+        int rc;
+        if (line[0] == '#' || strncmp(line, "walk,", 5) == 0) {
+            continue;
+        }
+        if (sscanf(line, "%299[^,],%lf,%lf,%lf,%lf", walk, &dist, &ex, &ey, &ez) != 5) {
+            continue;
+        }
+        if (fnav_testdata_path(walk, path, sizeof path) != 0) {
+            skipped++;
+            continue;
+        }
+        rc = hx_nav_replay("test", path, HX_FMT_AUTO, 0.0, &c, 0.0, NULL, &t, 0, err, sizeof err);
+        assert_true(rc == 0 || rc == 1); /* 1: a truncated last line */
+        hx_nav_summarize(&t, &s);
+        d = sqrt((s.end_pos_m[0] - ex) * (s.end_pos_m[0] - ex) + (s.end_pos_m[1] - ey) * (s.end_pos_m[1] - ey) +
+                 (s.end_pos_m[2] - ez) * (s.end_pos_m[2] - ez));
+        /* float32: 0.1 % of the distance travelled (1 cm for a walk whose
+         * detector finds no steps); float64: the same code, 1e-9 relative */
+#if FNAV_USE_DOUBLE
+        tol = 1e-9 * (dist + 1.0);
+#else
+        tol = 0.001 * (dist > 10.0 ? dist : 10.0);
+#endif
+        if (!(d <= tol)) {
+            fail_msg("%s: final position differs from the float64 reference by %.4f m (limit %.4f m, distance %.1f m)",
+                     walk, d, tol, dist);
+        }
+        if (dist > 0.0 && d / dist > worst) {
+            worst = d / dist;
+        }
+        hx_traj_free(&t);
+        n++;
+    }
+    fclose(f);
+    if (skipped > 0 && n == 0) {
+        fnav_test_skip_notice("float vs double on the real walks");
+        skip();
+    }
+    fprintf(stderr, "float%s vs float64 reference: %d walks, worst final-position difference %.4f %% of distance\n",
+            FNAV_USE_DOUBLE ? "64" : "32", n, 100.0 * worst);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_config),
+        cmocka_unit_test(test_stream_contract),
+        cmocka_unit_test(test_timing),
+        cmocka_unit_test(test_step),
+        cmocka_unit_test(test_run_port),
+        cmocka_unit_test(test_sizes),
+        cmocka_unit_test(test_resampler),
+        cmocka_unit_test(test_golden_replays),
+        cmocka_unit_test(test_float_vs_double),
+    };
+    return cmocka_run_group_tests_name("nav", tests, NULL, NULL);
+}

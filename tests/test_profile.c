@@ -1,0 +1,183 @@
+/* fnav_profile: the paper's Tables IV-VI as printed, converted to SI
+ * (tau in samples at 200 Hz -> s, deg -> rad) and checked here against the
+ * tables with the conversions redone in double; the AR(1) coefficient of the
+ * paper (c = e^(-1/tau), tau in samples) equals footnav's exp(-dt / tau_s) at
+ * the identification rate; lookup by name; validation; the profile file
+ * (written by `harness allan`) round trip and `--profile FILE` loading. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+
+#include "footnav/fnav_profile.h"
+#include "fnav_testdata.h"
+#include "hx_profile.h"
+
+#if FNAV_USE_DOUBLE
+#define REL 1e-15
+#else
+#define REL 1.2e-7
+#endif
+
+static const double k_deg = 3.14159265358979323846 / 180.0;
+
+/* The tables as printed in the paper: noise (m/s^2/sqrt(Hz) or
+ * deg/s/sqrt(Hz)), tau (samples at 200 Hz), sigma_bias (m/s^2 or deg/s);
+ * rows acc x, y, z, gyr x, y, z. Table IV is the NavChip, V the MTx, VI the
+ * Shimmer (the captions; see fnav_profile.c for the text's inconsistency). */
+static const double k_tables[3][6][3] = {
+    { { 7.4e-4, 2000, 1.3e-5 }, { 6.4e-4, 2000, 9.7e-6 }, { 5.0e-4, 2000, 7.3e-6 },
+      { 3.3e-3, 1000, 8.5e-5 }, { 3.7e-3, 1000, 6.4e-5 }, { 4.2e-3, 10000, 3.4e-5 } },
+    { { 8.9e-4, 2600, 7.9e-6 }, { 8.4e-4, 2600, 8.1e-6 }, { 8.4e-4, 11000, 2.5e-6 },
+      { 2.6e-2, 42000, 1.8e-5 }, { 2.5e-2, 56000, 1.6e-5 }, { 2.9e-2, 144000, 8.4e-6 } },
+    { { 6.0e-3, 14600, 8.7e-6 }, { 5.9e-3, 36000, 5.3e-6 }, { 6.5e-3, 9400, 1.4e-5 },
+      { 1.9e-2, 4200, 1.0e-4 }, { 1.7e-2, 800, 5.3e-4 }, { 1.9e-2, 2800, 2.2e-4 } },
+};
+static const char *const k_names[3] = { "navchip", "mtx", "shimmer" };
+
+static void check_profile(const fnav_profile_t *p, int t)
+{
+    int i;
+    assert_string_equal(p->name, k_names[t]);
+    FNAV_ASSERT_CLOSE(p->rate_hz, 200.0, 0.0, REL);
+    for (i = 0; i < 3; i++) {
+        FNAV_ASSERT_CLOSE(p->accel_noise_mps2_rthz[i], k_tables[t][i][0], 0.0, REL);
+        FNAV_ASSERT_CLOSE(p->accel_tau_s[i], k_tables[t][i][1] / 200.0, 0.0, REL);
+        FNAV_ASSERT_CLOSE(p->accel_bias_sigma_mps2[i], k_tables[t][i][2], 0.0, REL);
+        FNAV_ASSERT_CLOSE(p->gyro_noise_rps_rthz[i], k_tables[t][3 + i][0] * k_deg, 0.0, 2.0 * REL);
+        FNAV_ASSERT_CLOSE(p->gyro_tau_s[i], k_tables[t][3 + i][1] / 200.0, 0.0, REL);
+        FNAV_ASSERT_CLOSE(p->gyro_bias_sigma_rps[i], k_tables[t][3 + i][2] * k_deg, 0.0, 2.0 * REL);
+    }
+}
+
+static void test_builtin_tables(void **state)
+{
+    int t;
+    (void)state;
+    for (t = 0; t < 3; t++) {
+        fnav_profile_t p;
+        const fnav_profile_paper_row_t *rows = fnav_profile_paper_table((fnav_profile_id_t)t);
+        int i;
+        assert_non_null(rows);
+        for (i = 0; i < 6; i++) {
+            assert_true(rows[i].noise == k_tables[t][i][0]);
+            assert_true(rows[i].tau_samples == k_tables[t][i][1]);
+            assert_true(rows[i].sigma_bias == k_tables[t][i][2]);
+        }
+        assert_int_equal(fnav_profile_builtin(&p, (fnav_profile_id_t)t), FNAV_OK);
+        check_profile(&p, t);
+        assert_int_equal(fnav_profile_validate(&p), FNAV_OK);
+        memset(&p, 0, sizeof p);
+        assert_int_equal(fnav_profile_by_name(&p, k_names[t]), FNAV_OK);
+        check_profile(&p, t);
+    }
+    {
+        fnav_profile_t p;
+        assert_null(fnav_profile_paper_table(FNAV_PROFILE_COUNT));
+        assert_int_equal(fnav_profile_builtin(&p, FNAV_PROFILE_COUNT), FNAV_E_ARG);
+        assert_int_equal(fnav_profile_by_name(&p, "navchip2"), FNAV_E_ARG);
+        assert_int_equal(fnav_profile_by_name(&p, "nav"), FNAV_E_ARG);
+        assert_int_equal(fnav_profile_by_name(NULL, "mtx"), FNAV_E_ARG);
+    }
+}
+
+/* The paper's AR(1) coefficient c = e^(-1/tau) per sample (tau in samples)
+ * is footnav's exp(-dt / tau_s) at dt = 1 / 200 Hz, and eq. (4)'s driving
+ * variance sigma^2 (1 - e^(-2/tau)) is sigma^2 (1 - c^2). */
+static void test_ar1_units(void **state)
+{
+    fnav_profile_t p;
+    int i;
+    (void)state;
+    assert_int_equal(fnav_profile_builtin(&p, FNAV_PROFILE_SHIMMER), FNAV_OK);
+    for (i = 0; i < 3; i++) {
+        double c_paper = exp(-1.0 / k_tables[2][3 + i][1]);
+        double c_fnav = exp(-(1.0 / 200.0) / (double)p.gyro_tau_s[i]);
+        double q_paper = pow(k_tables[2][3 + i][2] * k_deg, 2.0) * (1.0 - exp(-2.0 / k_tables[2][3 + i][1]));
+        double q_fnav = (double)p.gyro_bias_sigma_rps[i] * (double)p.gyro_bias_sigma_rps[i] * (1.0 - c_fnav * c_fnav);
+        FNAV_ASSERT_CLOSE(c_fnav, c_paper, 0.0, 4.0 * REL);
+        FNAV_ASSERT_CLOSE(q_fnav, q_paper, 0.0, 1e3 * REL);
+    }
+}
+
+static void test_validate(void **state)
+{
+    fnav_profile_t p;
+    fnav_profile_paper_row_t rows[6];
+    (void)state;
+    assert_int_equal(fnav_profile_builtin(&p, FNAV_PROFILE_MTX), FNAV_OK);
+    p.gyro_tau_s[1] = FNAV_R(0.0);
+    assert_int_equal(fnav_profile_validate(&p), FNAV_E_CONFIG);
+    assert_int_equal(fnav_profile_builtin(&p, FNAV_PROFILE_MTX), FNAV_OK);
+    p.accel_noise_mps2_rthz[2] = (fnav_real_t)NAN;
+    assert_int_equal(fnav_profile_validate(&p), FNAV_E_CONFIG);
+    assert_int_equal(fnav_profile_builtin(&p, FNAV_PROFILE_MTX), FNAV_OK);
+    p.rate_hz = FNAV_R(-200.0);
+    assert_int_equal(fnav_profile_validate(&p), FNAV_E_CONFIG);
+    assert_int_equal(fnav_profile_validate(NULL), FNAV_E_ARG);
+    memcpy(rows, fnav_profile_paper_table(FNAV_PROFILE_NAVCHIP), sizeof rows);
+    rows[4].sigma_bias = -1.0;
+    assert_int_equal(fnav_profile_from_paper(&p, "x", 200.0, rows), FNAV_E_ARG);
+    memcpy(rows, fnav_profile_paper_table(FNAV_PROFILE_NAVCHIP), sizeof rows);
+    assert_int_equal(fnav_profile_from_paper(&p, "x", 0.0, rows), FNAV_E_ARG);
+    /* another identification rate: tau in samples scales with it */
+    assert_int_equal(fnav_profile_from_paper(&p, "at100", 100.0, rows), FNAV_OK);
+    FNAV_ASSERT_CLOSE(p.accel_tau_s[0], 2000.0 / 100.0, 0.0, REL);
+}
+
+/* A profile file (the format `harness allan --profile` writes) survives a
+ * write/read round trip, and hx_profile_load takes names and files. */
+static void test_file_round_trip(void **state)
+{
+    fnav_profile_t a, b;
+    char path[] = "/tmp/fnav_profile_XXXXXX", err[320];
+    int fd, i;
+    FILE *f;
+    (void)state;
+    fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    assert_int_equal(fnav_profile_builtin(&a, FNAV_PROFILE_SHIMMER), FNAV_OK);
+    a.accel_bias_sigma_mps2[1] = FNAV_R(0.0071); /* an Allan-style value */
+    assert_int_equal(hx_profile_write(path, &a, "test_profile round trip", err, sizeof err), 0);
+    assert_int_equal(hx_profile_read(path, &b, err, sizeof err), 0);
+    assert_int_equal(hx_profile_load(path, &b, err, sizeof err), 0);
+    assert_int_equal(fnav_profile_validate(&b), FNAV_OK);
+    for (i = 0; i < 3; i++) {
+        FNAV_ASSERT_CLOSE(b.accel_noise_mps2_rthz[i], a.accel_noise_mps2_rthz[i], 0.0, 1e-6);
+        FNAV_ASSERT_CLOSE(b.accel_tau_s[i], a.accel_tau_s[i], 0.0, 1e-6);
+        FNAV_ASSERT_CLOSE(b.accel_bias_sigma_mps2[i], a.accel_bias_sigma_mps2[i], 0.0, 1e-6);
+        FNAV_ASSERT_CLOSE(b.gyro_noise_rps_rthz[i], a.gyro_noise_rps_rthz[i], 0.0, 1e-6);
+        FNAV_ASSERT_CLOSE(b.gyro_tau_s[i], a.gyro_tau_s[i], 0.0, 1e-6);
+        FNAV_ASSERT_CLOSE(b.gyro_bias_sigma_rps[i], a.gyro_bias_sigma_rps[i], 0.0, 1e-6);
+    }
+    FNAV_ASSERT_CLOSE(b.rate_hz, 200.0, 0.0, 1e-6);
+    assert_int_equal(hx_profile_load("mtx", &b, err, sizeof err), 0);
+    assert_string_equal(b.name, "mtx");
+    /* a broken file: one line error with its line number */
+    f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("format = footnav-profile 1\nrate_hz = 200\naccel_tau_s = 1 2\n", f);
+    fclose(f);
+    assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":3:"));
+    remove(path);
+    assert_int_equal(hx_profile_load("/nonexistent/dir/p.profile", &b, err, sizeof err), -1);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_builtin_tables),
+        cmocka_unit_test(test_ar1_units),
+        cmocka_unit_test(test_validate),
+        cmocka_unit_test(test_file_round_trip),
+    };
+    return cmocka_run_group_tests_name("profile", tests, NULL, NULL);
+}

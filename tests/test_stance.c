@@ -1,0 +1,469 @@
+/* fnav_stance: configuration, window from the rate (configured and
+ * estimated), the SHOE statistic against a direct computation in double,
+ * the delay and flush contract, stance/swing boundaries of a synthetic step,
+ * rejection of a short mid-swing dip, the adaptive threshold, the threshold
+ * detector, gait events at known samples, and the ring contract. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "footnav/fnav_port.h"
+#include "footnav/fnav_stance.h"
+#include "fnav_testdata.h"
+
+#if FNAV_USE_DOUBLE
+#define EPS 1e-15
+#else
+#define EPS 1.2e-7
+#endif
+
+static const double k_g = 9.80665;
+
+static fnav_sample_t sample(long k, double rate, const double f[3], const double w[3])
+{
+    fnav_sample_t s;
+    int i;
+    memset(&s, 0, sizeof s);
+    s.t_ns = (int64_t)llround((double)k * 1e9 / rate);
+    s.seq = (uint32_t)k;
+    for (i = 0; i < 3; i++) {
+        s.accel_mps2[i] = (fnav_real_t)f[i];
+        s.gyro_rps[i] = (fnav_real_t)w[i];
+    }
+    return s;
+}
+
+/* Deterministic pseudo-random numbers in [-1, 1]. */
+static uint32_t g_lcg = 12345u;
+static double jitter(void)
+{
+    g_lcg = g_lcg * 1664525u + 1013904223u;
+    return (double)(g_lcg >> 8) / 8388608.0 - 1.0;
+}
+
+static void test_config(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    (void)state;
+    assert_int_equal(fnav_stance_init(NULL, &c), FNAV_E_ARG);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    c.window_s = FNAV_R(0.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+    c = fnav_stance_config_default;
+    c.gamma = (fnav_real_t)NAN;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+    c = fnav_stance_config_default;
+    c.rate_hz = FNAV_R(-1.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+    c = fnav_stance_config_default;
+    c.adapt_max_ratio = FNAV_R(0.5);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+    c = fnav_stance_config_default;
+    c.detector = (fnav_detector_t)7;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+}
+
+/* W = 2 floor(window * rate / 2) + 1, at least 3: the same 25 ms at every rate. */
+static void test_window_from_rate(void **state)
+{
+    static const double rates[5] = { 100.0, 200.0, 250.0, 400.0, 820.0 };
+    static const int wins[5] = { 3, 5, 7, 11, 21 };
+    int i, k;
+    (void)state;
+    for (i = 0; i < 5; i++) {
+        fnav_stance_t st;
+        fnav_stance_config_t c = fnav_stance_config_default;
+        double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0, 0, 0 };
+        fnav_sample_t s;
+        c.rate_hz = (fnav_real_t)rates[i];
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        s = sample(0, rates[i], f, w);
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        assert_int_equal(st.win, wins[i]);
+        /* estimated from time stamps with 1 % jitter: the same window */
+        c.rate_hz = FNAV_R(0.0);
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        for (k = 0; k < 40; k++) {
+            fnav_stance_out_t o;
+            s = sample(k, rates[i], f, w);
+            s.t_ns += (int64_t)(0.01 * 1e9 / rates[i] * jitter());
+            assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+            while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            }
+        }
+        assert_int_equal(st.win, wins[i]);
+        FNAV_ASSERT_CLOSE(st.rate_hz, rates[i], 0.0, 0.01);
+    }
+}
+
+/* The SHOE statistic of a window equals the formula evaluated here in
+ * double: T = 1/W sum(|f - g u|^2 / sa^2 + |w|^2 / sg^2), u = mean f / |mean f|. */
+static void test_shoe_statistic(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    double f[64][3], w[64][3];
+    int k, i, n = 40, got = 0;
+    fnav_stance_out_t o;
+    (void)state;
+    c.rate_hz = FNAV_R(200.0);
+    c.adaptive = 0;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k < n; k++) {
+        fnav_sample_t s;
+        for (i = 0; i < 3; i++) {
+            f[k][i] = 0.3 * jitter() + (i == 2 ? -k_g : 0.5);
+            w[k][i] = 0.02 * jitter();
+        }
+        s = sample(k, 200.0, f[k], w[k]);
+        /* the test compares with the values as stored */
+        for (i = 0; i < 3; i++) {
+            f[k][i] = (double)s.accel_mps2[i];
+            w[k][i] = (double)s.gyro_rps[i];
+        }
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            long j = (long)st.n_out - 1;
+            if (j >= 2 && j <= n - 3) {
+                double m[3] = { 0, 0, 0 }, nm, T = 0.0;
+                long q;
+                for (q = j - 2; q <= j + 2; q++) {
+                    for (i = 0; i < 3; i++) {
+                        m[i] += f[q][i];
+                    }
+                }
+                nm = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+                for (q = j - 2; q <= j + 2; q++) {
+                    double ea = 0.0, eg = 0.0;
+                    for (i = 0; i < 3; i++) {
+                        double e = f[q][i] - k_g * m[i] / nm;
+                        ea += e * e;
+                        eg += w[q][i] * w[q][i];
+                    }
+                    T += ea / (0.01 * 0.01) + eg / pow(0.1 * 3.14159265358979323846 / 180.0, 2.0);
+                }
+                T /= 5.0;
+                FNAV_ASSERT_CLOSE(o.stat, T, 0.0, 200.0 * EPS);
+                got++;
+            }
+        }
+    }
+    assert_true(got > 30);
+}
+
+/* Every sample comes back once, in order, h + L samples late; after
+ * finish the rest comes back and then FNAV_END. */
+static void test_delay_and_flush(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0, 0, 0 };
+    fnav_stance_out_t o;
+    long k, next = 0, max_lag = 0;
+    (void)state;
+    c.rate_hz = FNAV_R(200.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k < 100; k++) {
+        fnav_sample_t s = sample(k, 200.0, f, w);
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            assert_int_equal((long)o.sample.seq, next);
+            next++;
+        }
+        max_lag = (k + 1 - next) > max_lag ? (k + 1 - next) : max_lag;
+    }
+    /* h = 2 (W = 5) plus L = 3 (min_zupt 20 ms = 4 samples) */
+    assert_int_equal(max_lag, 5);
+    assert_int_equal(fnav_stance_pending(&st), 5);
+    fnav_stance_finish(&st);
+    {
+        fnav_sample_t s = sample(100, 200.0, f, w);
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_E_STATE);
+    }
+    while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+        assert_int_equal((long)o.sample.seq, next);
+        next++;
+    }
+    assert_int_equal(next, 100);
+    assert_int_equal(fnav_stance_pop(&st, &o), FNAV_END);
+}
+
+/* The caller must pop: a full ring refuses more samples. */
+static void test_ring_contract(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0, 0, 0 };
+    int k;
+    (void)state;
+    c.rate_hz = FNAV_R(200.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k < FNAV_STANCE_MAX_WINDOW; k++) {
+        fnav_sample_t s = sample(k, 200.0, f, w);
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+    }
+    {
+        fnav_sample_t s = sample(k, 200.0, f, w);
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_E_STATE);
+    }
+}
+
+/* Synthetic steps at 200 Hz: still (f = -g z, w = 0, tiny noise), then a
+ * swing of 0.5 s with |w| ~ 3 rad/s, then still again. The stance must end
+ * and start within half a window of the motion, every still sample farther
+ * than that from the motion must be stance, and the stride is counted. */
+static void test_step_boundaries(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    fnav_stance_out_t o;
+    const double rate = 200.0;
+    long k, n = 400, m0 = 150, m1 = 250; /* motion in [m0, m1) */
+    int strides = 0;
+    (void)state;
+    c.rate_hz = (fnav_real_t)rate;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k <= n; k++) {
+        if (k < n) {
+            double f[3], w[3];
+            int i;
+            for (i = 0; i < 3; i++) {
+                f[i] = (i == 2 ? -k_g : 0.0) + 0.003 * jitter();
+                w[i] = 0.0005 * jitter();
+            }
+            if (k >= m0 && k < m1) {
+                double ph = (double)(k - m0) / (double)(m1 - m0) * 3.14159265358979;
+                w[1] += 3.0 * sin(ph) + 1.0;
+                f[0] += 6.0 * cos(ph);
+            }
+            {
+                fnav_sample_t s = sample(k, rate, f, w);
+                assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+            }
+        } else {
+            fnav_stance_finish(&st);
+        }
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            long j = (long)o.sample.seq;
+            if (j < m0 - 2 || j >= m1 + 2) {
+                assert_int_equal(o.stance, 1);
+            }
+            if (j >= m0 && j < m1) {
+                assert_int_equal(o.stance, 0);
+            }
+            /* the segmentation confirms a swing after min_swing_s (40 samples) */
+            if (j >= m0 + 40 && j < m1) {
+                assert_int_equal(o.segment_stance, 0);
+            }
+            if (o.events & FNAV_STANCE_EV_STRIDE) {
+                strides++;
+            }
+        }
+    }
+    assert_int_equal(strides, 1);
+    assert_int_equal(st.strides, 1);
+}
+
+/* A dip of the statistic below the threshold for fewer samples than
+ * min_zupt_s in the middle of motion is not a stance. */
+static void test_short_dip_rejected(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    fnav_stance_out_t o;
+    long k, n = 300;
+    int raw_dip = 0;
+    (void)state;
+    c.rate_hz = FNAV_R(200.0);
+    c.window_s = FNAV_R(0.01); /* W = 3: the dip shows in the raw decisions */
+    c.adaptive = 0;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k <= n; k++) {
+        if (k < n) {
+            double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+            if (k >= 50 && k < 250 && !(k >= 150 && k < 154)) {
+                w[1] = 2.0; /* moving, except a 4-sample still gap */
+            }
+            {
+                fnav_sample_t s = sample(k, 200.0, f, w);
+                assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+            }
+        } else {
+            fnav_stance_finish(&st);
+        }
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            long j = (long)o.sample.seq;
+            if (j >= 140 && j < 165) {
+                raw_dip |= o.raw_stance;
+                assert_int_equal(o.stance, 0);
+            }
+        }
+    }
+    assert_true(raw_dip); /* the raw test did see the dip */
+}
+
+/* Adaptive threshold: when the statistic's minimum in each stance rises
+ * (jogging), the threshold follows the floor (never below gamma, never
+ * above ratio * gamma); with walking-like minima it stays at gamma. */
+static void test_adaptive_threshold(void **state)
+{
+    int mode;
+    (void)state;
+    for (mode = 0; mode < 2; mode++) {
+        fnav_stance_t st;
+        fnav_stance_config_t c = fnav_stance_config_default;
+        fnav_stance_out_t o;
+        long k, n = 2000, stance_n = 0, stance_expect = 0;
+        double gmax = 0.0;
+        c.rate_hz = FNAV_R(200.0);
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        for (k = 0; k <= n; k++) {
+            if (k < n) {
+                /* stride of 0.7 s: 0.1 s "stance" with a rate of r0, then motion */
+                double ph = fmod((double)k / 200.0, 0.7);
+                double r0 = mode == 0 ? 0.0 : 0.8; /* rad/s in stance: T = r0^2 / sigma_g^2 = 2.1e5 */
+                double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+                w[1] = ph < 0.1 ? r0 : 4.0;
+                {
+                    fnav_sample_t s = sample(k, 200.0, f, w);
+                    assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+                }
+            } else {
+                fnav_stance_finish(&st);
+            }
+            while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+                double ph = fmod((double)o.sample.seq / 200.0, 0.7);
+                gmax = (double)o.gamma > gmax ? (double)o.gamma : gmax;
+                assert_true(o.gamma >= c.gamma && o.gamma <= c.gamma * c.adapt_max_ratio);
+                if (o.sample.seq > 600 && ph > 0.02 && ph < 0.08) {
+                    stance_expect++;
+                    stance_n += o.stance;
+                }
+            }
+        }
+        if (mode == 0) {
+            /* still stances: the floor rests at log10(gamma) - margin and
+             * rises by at most floor_rise x stride time (0.7 s) between
+             * stances, so the threshold stays within 10^(0.25 x 0.7) of gamma */
+            assert_true(gmax <= (double)c.gamma * pow(10.0, 0.25 * 0.7) * (1.0 + 1e-5));
+        } else {
+            /* rolling stances (T about 2e5 > gamma = 1e5) are still found */
+            assert_true(gmax > 2.0 * (double)c.gamma);
+        }
+        assert_true(stance_n >= (stance_expect * 9) / 10);
+    }
+}
+
+/* Threshold detector: stance when the RMS rate and RMS ||f|-g| are below
+ * their limits. */
+static void test_threshold_detector(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    fnav_stance_out_t o;
+    long k;
+    (void)state;
+    c.detector = FNAV_DETECTOR_THRESHOLD;
+    c.rate_hz = FNAV_R(100.0);
+    c.adaptive = 0;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k <= 300; k++) {
+        if (k < 300) {
+            double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+            if (k >= 100 && k < 200) {
+                w[0] = 0.9; /* above 0.6 rad/s */
+            }
+            if (k >= 200 && k < 250) {
+                f[2] = -k_g - 1.0; /* ||f| - g| = 1 > 0.6 */
+            }
+            {
+                fnav_sample_t s = sample(k, 100.0, f, w);
+                assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+            }
+        } else {
+            fnav_stance_finish(&st);
+        }
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            long j = (long)o.sample.seq;
+            if ((j > 5 && j < 95) || j > 260) {
+                assert_int_equal(o.stance, 1);
+            }
+            if (j > 105 && j < 245) {
+                assert_int_equal(o.stance, 0);
+            }
+        }
+    }
+}
+
+/* Gait events: a push-off peak of |f| at a known sample after the stance
+ * ends is the foot-off; a jerk onset before the stance begins is the
+ * foot-strike. */
+static void test_gait_events(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    fnav_stance_out_t o;
+    const double rate = 100.0;
+    long k, n = 300, fo_at = -1, fs_at = -1;
+    int nfo = 0, nfs = 0;
+    (void)state;
+    c.rate_hz = (fnav_real_t)rate;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k <= n; k++) {
+        if (k < n) {
+            double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+            if (k >= 100 && k < 160) {
+                w[1] = 3.0;
+                f[0] = 2.0;
+            }
+            if (k == 104) {
+                f[0] = 25.0; /* push-off peak */
+            }
+            if (k >= 152 && k < 156) {
+                f[2] = -k_g + (k == 152 ? 30.0 : (k == 153 ? -20.0 : 8.0)); /* impact from sample 152 */
+            }
+            {
+                fnav_sample_t s = sample(k, rate, f, w);
+                assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+            }
+        } else {
+            fnav_stance_finish(&st);
+        }
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            if (o.events & FNAV_STANCE_EV_FOOT_OFF) {
+                fo_at = (long)llround((double)o.fo_t_ns * rate * 1e-9);
+                nfo++;
+            }
+            if (o.events & FNAV_STANCE_EV_FOOT_STRIKE) {
+                fs_at = (long)llround((double)o.fs_t_ns * rate * 1e-9);
+                nfs++;
+            }
+        }
+    }
+    assert_int_equal(nfo, 1);
+    assert_int_equal(nfs, 1);
+    assert_int_equal(fo_at, 104);
+    assert_int_equal(fs_at, 152);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_config),
+        cmocka_unit_test(test_window_from_rate),
+        cmocka_unit_test(test_shoe_statistic),
+        cmocka_unit_test(test_delay_and_flush),
+        cmocka_unit_test(test_ring_contract),
+        cmocka_unit_test(test_step_boundaries),
+        cmocka_unit_test(test_short_dip_rejected),
+        cmocka_unit_test(test_adaptive_threshold),
+        cmocka_unit_test(test_threshold_detector),
+        cmocka_unit_test(test_gait_events),
+    };
+    return cmocka_run_group_tests_name("stance", tests, NULL, NULL);
+}

@@ -1,0 +1,297 @@
+/* fnav_strapdown: analytic motions with exact answers (rest, constant
+ * rotation, constant acceleration, classical coning), the gravity model
+ * against published values, the trig-free quaternion series, bad input.
+ *
+ * Tolerances: the algorithm is exact for rest, constant rotation and
+ * constant acceleration, so only rounding remains: per step about one
+ * float32 ulp (1.2e-7 relative), accumulated over N steps as at most N ulp
+ * (random-walk growth is smaller). The double build is held to 1e-9. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+
+#include <cmocka.h>
+
+#include "footnav/fnav_port.h"
+#include "footnav/fnav_strapdown.h"
+#include "fnav_testdata.h"
+
+#if FNAV_USE_DOUBLE
+#define EPS 1e-15
+#else
+#define EPS 1.2e-7
+#endif
+
+static const double k_g = 9.80665;
+
+static double quat_angle_between(fnav_quat_t a, fnav_quat_t b)
+{
+    /* angle of a^-1 b, rad */
+    fnav_quat_t d = fnav_quat_mul(fnav_quat_conj(a), b);
+    double vn = sqrt((double)d.q[1] * (double)d.q[1] + (double)d.q[2] * (double)d.q[2] + (double)d.q[3] * (double)d.q[3]);
+    return 2.0 * atan2(vn, fabs((double)d.q[0]));
+}
+
+static fnav_strapdown_state_t state_at(fnav_quat_t q)
+{
+    fnav_strapdown_state_t x;
+    x.q_nb = q;
+    x.vel_mps = fnav_vec3_zero();
+    x.pos_m = fnav_vec3_zero();
+    return x;
+}
+
+/* At rest with any attitude, f_b = C_bn (0, 0, -g): nothing moves. */
+static void test_rest(void **state)
+{
+    const int n = 1000;
+    const fnav_real_t dt = FNAV_R(0.01);
+    fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.3), FNAV_R(-0.2), FNAV_R(1.1));
+    fnav_strapdown_state_t x = state_at(q0);
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0 };
+    fnav_vec3_t f = fnav_quat_rotate(fnav_quat_conj(q0), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g));
+    int i;
+    (void)state;
+    for (i = 0; i < n; i++) {
+        assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, fnav_vec3_zero(), f, dt), FNAV_OK);
+    }
+    /* the residual |C f + g| is a few ulp of g per step */
+    for (i = 0; i < 3; i++) {
+        FNAV_ASSERT_CLOSE(x.vel_mps.v[i], 0.0, 4.0 * EPS * k_g * 0.01 * n, 0.0);
+        FNAV_ASSERT_CLOSE(x.pos_m.v[i], 0.0, 4.0 * EPS * k_g * 0.01 * n * 0.01 * n, 0.0);
+    }
+    assert_true(quat_angle_between(x.q_nb, q0) < 8.0 * EPS);
+}
+
+/* Constant rate about a fixed axis: q(T) = q0 * exp(w T) exactly (the coning
+ * term vanishes because successive increments are parallel). */
+static void test_constant_rotation(void **state)
+{
+    const int n = 2000;
+    const double dt = 0.005, T = n * dt;
+    const double w[3] = { 0.4, -1.3, 2.2 }; /* rad/s */
+    fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(-0.1), FNAV_R(0.25), FNAV_R(-2.0));
+    fnav_strapdown_state_t x = state_at(q0);
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0 };
+    fnav_vec3_t wv = fnav_vec3((fnav_real_t)w[0], (fnav_real_t)w[1], (fnav_real_t)w[2]);
+    fnav_quat_t qt;
+    int i;
+    (void)state;
+    for (i = 0; i < n; i++) {
+        /* specific force that keeps the body free-falling-compensated: f_n = -g_n */
+        fnav_vec3_t f = fnav_quat_rotate(fnav_quat_conj(x.q_nb), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g));
+        assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, wv, f, (fnav_real_t)dt), FNAV_OK);
+    }
+    qt = fnav_quat_mul(q0, fnav_quat_from_rotvec(fnav_vec3((fnav_real_t)(w[0] * T), (fnav_real_t)(w[1] * T),
+                                                            (fnav_real_t)(w[2] * T))));
+    /* the total angle is 25.6 rad: one ulp of that is the floor of the reference */
+    assert_true(quat_angle_between(x.q_nb, qt) < 4.0 * EPS * n + 30.0 * EPS);
+}
+
+/* Constant acceleration a in n with a tilted constant attitude:
+ * v = a T, p = a T^2 / 2 exactly with trapezoidal position integration. */
+static void test_constant_acceleration(void **state)
+{
+    const int n = 500;
+    const double dt = 0.004, T = n * dt;
+    const double a[3] = { 1.5, -0.7, 0.3 };
+    fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.2), FNAV_R(0.1), FNAV_R(-0.6));
+    fnav_strapdown_state_t x = state_at(q0);
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0 };
+    fnav_vec3_t fn = fnav_vec3((fnav_real_t)a[0], (fnav_real_t)a[1], (fnav_real_t)(a[2] - k_g));
+    fnav_vec3_t fb = fnav_quat_rotate(fnav_quat_conj(q0), fn);
+    int i;
+    (void)state;
+    for (i = 0; i < n; i++) {
+        assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, fnav_vec3_zero(), fb, (fnav_real_t)dt),
+                         FNAV_OK);
+    }
+    for (i = 0; i < 3; i++) {
+        /* worst-case rounding: f_b carries ~2 ulp of g per step (4 EPS g T
+         * in all), and each of the n additions rounds the running sum by at
+         * most half an ulp of its final size */
+        double tol_v = 4.0 * EPS * k_g * T + 0.5 * n * EPS * fabs(a[i]) * T;
+        double tol_p = tol_v * T + 0.5 * n * EPS * 0.5 * fabs(a[i]) * T * T;
+        FNAV_ASSERT_CLOSE(x.vel_mps.v[i], a[i] * T, tol_v, 0.0);
+        FNAV_ASSERT_CLOSE(x.pos_m.v[i], 0.5 * a[i] * T * T, tol_p, 0.0);
+    }
+}
+
+/* Rotation and acceleration together: constant body rate w and a constant
+ * acceleration a in n. The accelerometer delivers the exact mean specific
+ * force of each interval, dv_b = integral of C_bn(t) (a - g_n) dt (Simpson
+ * quadrature on 64 sub-steps in double, error < 1e-12), so the only error
+ * left is the algorithm's: the velocity must be a T (tests the rotation
+ * compensation and sculling terms and their signs). */
+static void test_rotating_acceleration(void **state)
+{
+    const int n = 1000, sub = 64;
+    const double dt = 0.005, T = n * dt;
+    const double w[3] = { 3.0, -1.0, 2.0 }; /* rad/s: 3.7 rad/s, 18.7 rad in all */
+    const double a[3] = { 0.8, -1.2, 0.5 };
+    fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.4), FNAV_R(-0.3), FNAV_R(0.9));
+    fnav_strapdown_state_t x = state_at(q0);
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0 };
+    fnav_vec3_t wv = fnav_vec3((fnav_real_t)w[0], (fnav_real_t)w[1], (fnav_real_t)w[2]);
+    int k, j, i;
+    (void)state;
+    for (k = 0; k < n; k++) {
+        double dvb[3] = { 0, 0, 0 };
+        for (j = 0; j <= sub; j++) {
+            double t = (k + (double)j / sub) * dt;
+            double wt = (j == 0 || j == sub) ? 1.0 : (j % 2 ? 4.0 : 2.0);
+            /* C_nb(t) = C_nb(0) exp([w x] t): f_b = exp(-[w x] t) C_bn(0) f_n */
+            fnav_quat_t qt = fnav_quat_mul(q0, fnav_quat_from_rotvec(fnav_vec3((fnav_real_t)(w[0] * t), (fnav_real_t)(w[1] * t),
+                                                                             (fnav_real_t)(w[2] * t))));
+            double fn[3] = { a[0], a[1], a[2] - k_g };
+            /* rotate f_n into b in double: v_b = q^-1 v_n q */
+            double qw = qt.q[0], qx = -(double)qt.q[1], qy = -(double)qt.q[2], qz = -(double)qt.q[3];
+            double tx = 2.0 * (qy * fn[2] - qz * fn[1]), ty = 2.0 * (qz * fn[0] - qx * fn[2]), tz = 2.0 * (qx * fn[1] - qy * fn[0]);
+            double fb[3];
+            fb[0] = fn[0] + qw * tx + (qy * tz - qz * ty);
+            fb[1] = fn[1] + qw * ty + (qz * tx - qx * tz);
+            fb[2] = fn[2] + qw * tz + (qx * ty - qy * tx);
+            for (i = 0; i < 3; i++) {
+                dvb[i] += wt * fb[i] * dt / (3.0 * sub);
+            }
+        }
+        assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, wv,
+                                             fnav_vec3((fnav_real_t)(dvb[0] / dt), (fnav_real_t)(dvb[1] / dt),
+                                                       (fnav_real_t)(dvb[2] / dt)),
+                                             (fnav_real_t)dt),
+                         FNAV_OK);
+    }
+    for (i = 0; i < 3; i++) {
+        /* algorithm error of the two-sample sculling for |w dt| = 0.019 rad
+         * is O((w dt)^2) of g dt per step, about 1e-4 of g T in all; the
+         * float32 build adds rounding of n steps of g dt */
+        FNAV_ASSERT_CLOSE(x.vel_mps.v[i], a[i] * T, 2e-4 * k_g * T + 2.0 * n * EPS * k_g * dt, 0.0);
+    }
+}
+
+/* Classical coning: q(t) = exp(beta u(t)), u = (cos Wt, sin Wt, 0). Its body
+ * rate is w_b = W (-sin b sin Wt, sin b cos Wt, cos b - 1) and the exact
+ * integral of w_b over each interval is fed as the mean rate (an integrating
+ * gyro). The two-sample coning term must remove the coning drift that the
+ * uncorrected single-sample algorithm accumulates. */
+static double coning_error(int coning, double beta, double W, double dt, int n)
+{
+    fnav_strapdown_config_t cfg = fnav_strapdown_config_default;
+    fnav_strapdown_state_t x;
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0 };
+    fnav_quat_t qt;
+    int k;
+    cfg.coning = coning;
+    x = state_at(fnav_quat_from_rotvec(fnav_vec3((fnav_real_t)beta, FNAV_R(0.0), FNAV_R(0.0))));
+    for (k = 1; k <= n; k++) {
+        double t0 = (k - 1) * dt, t1 = k * dt;
+        double dth[3];
+        fnav_vec3_t w;
+        fnav_status_t st;
+        dth[0] = sin(beta) * (cos(W * t1) - cos(W * t0));
+        dth[1] = sin(beta) * (sin(W * t1) - sin(W * t0));
+        dth[2] = W * (cos(beta) - 1.0) * dt;
+        w = fnav_vec3((fnav_real_t)(dth[0] / dt), (fnav_real_t)(dth[1] / dt), (fnav_real_t)(dth[2] / dt));
+        st = fnav_strapdown_step(&cfg, &x, &h, w, fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g), (fnav_real_t)dt);
+        assert_int_equal(st, FNAV_OK);
+    }
+    qt = fnav_quat_from_rotvec(fnav_vec3((fnav_real_t)(beta * cos(W * n * dt)), (fnav_real_t)(beta * sin(W * n * dt)),
+                                         FNAV_R(0.0)));
+    return quat_angle_between(x.q_nb, qt);
+}
+
+static void test_coning(void **state)
+{
+    const double beta = 0.05, W = 2.0 * 3.14159265358979 * 5.0, dt = 0.005;
+    const int n = 2000; /* 10 s */
+    double e1 = coning_error(0, beta, W, dt, n);
+    double e2 = coning_error(1, beta, W, dt, n);
+    /* Single-sample drift rate for classical coning with integrated
+     * increments (Savage 1998, eq. 7.1.1.2-8): 0.5 W beta^2 (1 - sin(l)/l),
+     * l = W dt; the coning contribution of the error grows linearly. */
+    double l = W * dt;
+    double drift1 = 0.5 * W * sin(beta) * sin(beta) * (1.0 - sin(l) / l) * n * dt;
+    (void)state;
+    FNAV_ASSERT_CLOSE(e1, drift1, 0.0, 0.1);
+    /* the two-sample algorithm's residual is O(l^4): below a hundredth of it,
+     * plus float rounding (one ulp per step of the 0.05 rad attitude) */
+    assert_true(e2 < 0.01 * drift1 + 2.0 * EPS * n);
+}
+
+/* Somigliana on WGS-84: 9.7803253359 m/s^2 at the equator and
+ * 9.8321849378 m/s^2 at the poles (NIMA TR8350.2, table 3.4). */
+static void test_gravity(void **state)
+{
+    /* the published values have 10 decimals: 1e-10 is their own precision */
+    (void)state;
+    FNAV_ASSERT_CLOSE(fnav_gravity_wgs84(FNAV_R(0.0), FNAV_R(0.0)), 9.7803253359, 1e-10 + 2.0 * EPS * 10.0, 0.0);
+    FNAV_ASSERT_CLOSE(fnav_gravity_wgs84((fnav_real_t)(3.14159265358979 / 2.0), FNAV_R(0.0)), 9.8321849378,
+                      1e-10 + 4.0 * EPS * 10.0, 0.0);
+    /* free-air: 1000 m lowers g by 3.086 mm/s^2 */
+    FNAV_ASSERT_CLOSE(fnav_gravity_wgs84(FNAV_R(0.0), FNAV_R(0.0)) - fnav_gravity_wgs84(FNAV_R(0.0), FNAV_R(1000.0)),
+                      3.086e-3, 4.0 * EPS * 10.0, 0.0);
+}
+
+/* The trig-free series agrees with the exact quaternion across its range. */
+static void test_quat_exp_series(void **state)
+{
+    int i;
+    (void)state;
+    for (i = 0; i <= 40; i++) {
+        double a = 0.2 * i / 40.0;
+        fnav_vec3_t phi = fnav_vec3((fnav_real_t)(0.6 * a), (fnav_real_t)(-0.48 * a), (fnav_real_t)(0.64 * a));
+        fnav_quat_t s = fnav_strapdown_quat_exp(phi);
+        double ang = sqrt(fnav_vec3_dot(phi, phi));
+        /* a few ulp (the series and libm each round once or twice) plus the
+         * truncation, bounded by the first omitted term a^8 / 10321920 */
+        double tol = 4.0 * EPS + pow(ang, 8.0) / 10321920.0;
+        FNAV_ASSERT_CLOSE(s.q[0], cos(0.5 * ang), tol, 0.0);
+        FNAV_ASSERT_CLOSE(s.q[1], ang > 0 ? sin(0.5 * ang) * (double)phi.v[0] / ang : 0.0, tol, 0.0);
+        FNAV_ASSERT_CLOSE(s.q[3], ang > 0 ? sin(0.5 * ang) * (double)phi.v[2] / ang : 0.0, tol, 0.0);
+    }
+}
+
+/* NaN and negative dt are rejected and leave the state as it was. */
+static void test_bad_input(void **state)
+{
+    fnav_strapdown_state_t x = state_at(fnav_quat_identity());
+    fnav_strapdown_state_t x0 = x;
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0 };
+    fnav_vec3_t nanv = fnav_vec3((fnav_real_t)NAN, FNAV_R(0.0), FNAV_R(0.0));
+    (void)state;
+    assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, nanv, fnav_vec3_zero(), FNAV_R(0.01)),
+                     FNAV_E_NANINF);
+    assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, fnav_vec3_zero(), nanv, FNAV_R(0.01)),
+                     FNAV_E_NANINF);
+    assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, fnav_vec3_zero(), fnav_vec3_zero(),
+                                         (fnav_real_t)INFINITY),
+                     FNAV_E_NANINF);
+    assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, fnav_vec3_zero(), fnav_vec3_zero(),
+                                         FNAV_R(-0.01)),
+                     FNAV_E_TIME);
+    assert_memory_equal(&x, &x0, sizeof x);
+    assert_int_equal(h.valid, 0);
+    /* dt = 0 is a valid no-op */
+    assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, fnav_vec3(FNAV_R(1.0), FNAV_R(0.0), FNAV_R(0.0)),
+                                         fnav_vec3(FNAV_R(3.0), FNAV_R(0.0), FNAV_R(0.0)), FNAV_R(0.0)),
+                     FNAV_OK);
+    assert_true(quat_angle_between(x.q_nb, x0.q_nb) < 2.0 * EPS);
+    FNAV_ASSERT_CLOSE(fnav_vec3_norm(x.vel_mps), 0.0, 0.0, 0.0);
+    assert_int_equal(h.valid, 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_rest),
+        cmocka_unit_test(test_constant_rotation),
+        cmocka_unit_test(test_constant_acceleration),
+        cmocka_unit_test(test_rotating_acceleration),
+        cmocka_unit_test(test_coning),
+        cmocka_unit_test(test_gravity),
+        cmocka_unit_test(test_quat_exp_series),
+        cmocka_unit_test(test_bad_input),
+    };
+    return cmocka_run_group_tests_name("strapdown", tests, NULL, NULL);
+}

@@ -1,0 +1,701 @@
+/* fnav_ukf: configuration checks, the attitude-error parameters, closed-form
+ * versus full sigma-point propagation, linear covariance propagation against
+ * the exact discrete recursion, the ZUPT update against the textbook Kalman
+ * update computed here in double, the lever measurement, NaN rejection, the
+ * covariance recovery, and NEES consistency on simulated walks from a
+ * self-contained generator (see sim_walk below). */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "footnav/fnav_port.h"
+#include "footnav/fnav_ukf.h"
+#include "fnav_testdata.h"
+
+#if FNAV_USE_DOUBLE
+#define EPS 1e-15
+#else
+#define EPS 1.2e-7
+#endif
+
+#define NM FNAV_UKF_NMAX
+static const double k_g = 9.80665;
+
+static fnav_ukf_init_sd_t sd_default(void)
+{
+    fnav_ukf_init_sd_t sd;
+    int i;
+    for (i = 0; i < 3; i++) {
+        sd.att_rad[i] = FNAV_R(0.01);
+        sd.gyro_bias_rps[i] = FNAV_R(0.001);
+        sd.accel_bias_mps2[i] = FNAV_R(0.02);
+    }
+    sd.vel_mps = FNAV_R(0.01);
+    sd.pos_m = FNAV_R(0.001);
+    return sd;
+}
+
+static void test_config(void **state)
+{
+    fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    (void)state;
+    assert_int_equal(fnav_ukf_init(NULL, &c), FNAV_E_ARG);
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(f.n_act, 15);
+    c.lever = 1;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(f.n_act, 18);
+    c.bias_model = FNAV_BIAS_OFF;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(f.n_act, 12);
+    c = fnav_ukf_config_default;
+    c.zupt_sigma_mps = FNAV_R(0.0);
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    c = fnav_ukf_config_default;
+    c.accel_tau_s[1] = FNAV_R(-1.0);
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    c.bias_model = FNAV_BIAS_OFF; /* tau is not used without the model */
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    c = fnav_ukf_config_default;
+    c.gyro_noise_rps_rthz[2] = (fnav_real_t)NAN;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    c = fnav_ukf_config_default;
+    c.kappa = FNAV_R(-20.0); /* n + lambda <= 0 */
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    /* calls before start */
+    c = fnav_ukf_config_default;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3_zero(), FNAV_R(0.01)), FNAV_E_STATE);
+    assert_int_equal(fnav_ukf_zupt(&f, fnav_vec3_zero()), FNAV_E_STATE);
+    sd.vel_mps = FNAV_R(0.0);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_E_ARG);
+}
+
+/* GRP (a = 1, f = 4) round trip, and p = 4 tan(angle / 4) along the axis. */
+static void test_grp(void **state)
+{
+    int i;
+    (void)state;
+    for (i = 0; i < 20; i++) {
+        double ang = 0.3 * i; /* up to 5.7 rad */
+        fnav_vec3_t ax = fnav_vec3_normalize(fnav_vec3(FNAV_R(0.3), FNAV_R(-0.5), FNAV_R(0.8)));
+        fnav_quat_t q = fnav_quat_from_rotvec(fnav_vec3_scale(ax, (fnav_real_t)ang));
+        fnav_vec3_t p = fnav_ukf_quat_to_grp(q);
+        fnav_quat_t r = fnav_ukf_grp_to_quat(p);
+        /* past pi the same rotation is 2 pi - ang about the opposite axis */
+        double pa = ang <= 3.14159265358979 ? ang : 2.0 * 3.14159265358979 - ang;
+        double expect = 4.0 * tan(pa / 4.0);
+        /* conditioning grows as tan(ang/4): allow a few ulp of the result */
+        FNAV_ASSERT_CLOSE(fnav_vec3_norm(p), expect, 8.0 * EPS * (1.0 + expect * expect), 0.0);
+        FNAV_ASSERT_CLOSE(fabs((double)fnav_quat_mul(fnav_quat_conj(q), r).q[0]), 1.0, 8.0 * EPS * (1.0 + expect), 0.0);
+    }
+}
+
+/* Closed-form linear sigma points give the same result as propagating all
+ * of them through the strapdown. */
+static void test_closed_form_equivalence(void **state)
+{
+    static fnav_ukf_t a, b;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.2), FNAV_R(-0.3), FNAV_R(0.5));
+    int k, i, j;
+    (void)state;
+    c.lever = 1;
+    assert_int_equal(fnav_ukf_init(&a, &c), FNAV_OK);
+    c.closed_form = 0;
+    assert_int_equal(fnav_ukf_init(&b, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&a, q0, fnav_vec3(FNAV_R(0.001), FNAV_R(0.0), FNAV_R(-0.002)),
+                                    fnav_vec3(FNAV_R(0.01), FNAV_R(0.0), FNAV_R(0.0)), &sd),
+                     FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&b, q0, fnav_vec3(FNAV_R(0.001), FNAV_R(0.0), FNAV_R(-0.002)),
+                                    fnav_vec3(FNAV_R(0.01), FNAV_R(0.0), FNAV_R(0.0)), &sd),
+                     FNAV_OK);
+    for (k = 0; k < 200; k++) {
+        fnav_real_t t = (fnav_real_t)k * FNAV_R(0.005);
+        fnav_vec3_t w = fnav_vec3(FNAV_R(2.0) * fnav_sin(FNAV_R(3.0) * t), FNAV_R(1.0), FNAV_R(-0.5) * fnav_cos(t));
+        fnav_vec3_t f = fnav_vec3(FNAV_R(3.0) * fnav_cos(FNAV_R(5.0) * t), FNAV_R(1.0), FNAV_R(-9.0));
+        assert_int_equal(fnav_ukf_predict(&a, w, f, FNAV_R(0.005)), FNAV_OK);
+        assert_int_equal(fnav_ukf_predict(&b, w, f, FNAV_R(0.005)), FNAV_OK);
+        if (k % 50 == 49) {
+            assert_int_equal(fnav_ukf_zupt(&a, w), FNAV_OK);
+            assert_int_equal(fnav_ukf_zupt(&b, w), FNAV_OK);
+        }
+    }
+    for (i = 0; i < NM; i++) {
+        for (j = 0; j < NM; j++) {
+            double scale = sqrt(fabs((double)fnav_ukf_cov(&b, i, i) * (double)fnav_ukf_cov(&b, j, j))) + 1e-30;
+            /* rounding of two different summation orders over 200 steps */
+            FNAV_ASSERT_CLOSE((double)fnav_ukf_cov(&a, i, j) / scale, (double)fnav_ukf_cov(&b, i, j) / scale, 2e3 * EPS, 0.0);
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        FNAV_ASSERT_CLOSE(a.pos_m.v[i], b.pos_m.v[i], 2e4 * EPS, 0.0);
+        FNAV_ASSERT_CLOSE(a.vel_mps.v[i], b.vel_mps.v[i], 2e4 * EPS, 0.0);
+    }
+}
+
+/* For a level body at rest with no gyro noise and the bias model off, the
+ * filter is linear in velocity and position: P must follow the discrete
+ * recursion P_vv += q dt, P_pv += P_vv(before) dt, P_pp += (2 P_pv + P_vv dt) dt
+ * exactly (the unscented transform is exact for linear maps). */
+static void test_linear_covariance(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const double dt = 0.01, qa = 0.05; /* m/s^2/sqrt(Hz) */
+    double pvv = 0.01 * 0.01, ppv = 0.0, ppp = 0.001 * 0.001;
+    int k, i;
+    (void)state;
+    c.bias_model = FNAV_BIAS_OFF;
+    for (i = 0; i < 3; i++) {
+        c.gyro_noise_rps_rthz[i] = FNAV_R(0.0);
+        c.accel_noise_mps2_rthz[i] = (fnav_real_t)qa;
+    }
+    for (i = 0; i < 3; i++) {
+        sd.att_rad[i] = FNAV_R(1.0e-9);
+    }
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    for (k = 0; k < 300; k++) {
+        assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g),
+                                          (fnav_real_t)dt),
+                         FNAV_OK);
+        ppp += (2.0 * ppv + pvv * dt) * dt;
+        ppv += pvv * dt;
+        pvv += qa * qa * dt;
+    }
+    for (i = 0; i < 3; i++) {
+        FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_V + i, FNAV_UKF_V + i), pvv, 0.0, 1e3 * EPS);
+        FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_P + i, FNAV_UKF_V + i), ppv, 0.0, 1e3 * EPS);
+        FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_P + i, FNAV_UKF_P + i), ppp, 0.0, 1e3 * EPS);
+    }
+}
+
+/* ZUPT against the textbook Kalman update computed here in double. */
+static void test_zupt_update(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    static double P[NM][NM], K[NM][3], Pn[NM][NM];
+    double S[3][3], Si[3][3], det, v[3], r2, x0[NM];
+    int i, j, k, n = NM;
+    (void)state;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_from_euler(FNAV_R(0.1), FNAV_R(0.2), FNAV_R(0.3)), fnav_vec3_zero(),
+                                    fnav_vec3_zero(), &sd),
+                     FNAV_OK);
+    /* build correlations by a short motion */
+    for (k = 0; k < 50; k++) {
+        assert_int_equal(fnav_ukf_predict(&f, fnav_vec3(FNAV_R(0.5), FNAV_R(-1.0), FNAV_R(0.2)),
+                                          fnav_vec3(FNAV_R(2.0), FNAV_R(-1.0), FNAV_R(-8.0)), FNAV_R(0.01)),
+                         FNAV_OK);
+    }
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++) {
+            P[i][j] = (double)fnav_ukf_cov(&f, i, j);
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        v[i] = (double)f.vel_mps.v[i];
+    }
+    x0[FNAV_UKF_P] = (double)f.pos_m.v[0];
+    r2 = (double)c.zupt_sigma_mps * (double)c.zupt_sigma_mps;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            S[i][j] = P[FNAV_UKF_V + i][FNAV_UKF_V + j] + (i == j ? r2 : 0.0);
+        }
+    }
+    det = S[0][0] * (S[1][1] * S[2][2] - S[1][2] * S[2][1]) - S[0][1] * (S[1][0] * S[2][2] - S[1][2] * S[2][0]) +
+          S[0][2] * (S[1][0] * S[2][1] - S[1][1] * S[2][0]);
+    Si[0][0] = (S[1][1] * S[2][2] - S[1][2] * S[2][1]) / det;
+    Si[0][1] = (S[0][2] * S[2][1] - S[0][1] * S[2][2]) / det;
+    Si[0][2] = (S[0][1] * S[1][2] - S[0][2] * S[1][1]) / det;
+    Si[1][0] = (S[1][2] * S[2][0] - S[1][0] * S[2][2]) / det;
+    Si[1][1] = (S[0][0] * S[2][2] - S[0][2] * S[2][0]) / det;
+    Si[1][2] = (S[0][2] * S[1][0] - S[0][0] * S[1][2]) / det;
+    Si[2][0] = (S[1][0] * S[2][1] - S[1][1] * S[2][0]) / det;
+    Si[2][1] = (S[0][1] * S[2][0] - S[0][0] * S[2][1]) / det;
+    Si[2][2] = (S[0][0] * S[1][1] - S[0][1] * S[1][0]) / det;
+    for (i = 0; i < n; i++) {
+        for (k = 0; k < 3; k++) {
+            K[i][k] = 0.0;
+            for (j = 0; j < 3; j++) {
+                K[i][k] += P[i][FNAV_UKF_V + j] * Si[j][k];
+            }
+        }
+    }
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++) {
+            Pn[i][j] = P[i][j];
+            for (k = 0; k < 3; k++) {
+                Pn[i][j] -= K[i][k] * P[FNAV_UKF_V + k][j];
+            }
+        }
+    }
+    assert_int_equal(fnav_ukf_zupt(&f, fnav_vec3_zero()), FNAV_OK);
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++) {
+            double scale = sqrt(P[i][i] * P[j][j]) + 1e-30;
+            FNAV_ASSERT_CLOSE((double)fnav_ukf_cov(&f, i, j) / scale, Pn[i][j] / scale, 1e3 * EPS, 0.0);
+        }
+    }
+    /* state: v' = v - K_v v, p' = p - K_p v */
+    {
+        double dvx = -(K[FNAV_UKF_V][0] * v[0] + K[FNAV_UKF_V][1] * v[1] + K[FNAV_UKF_V][2] * v[2]);
+        double dpx = -(K[FNAV_UKF_P][0] * v[0] + K[FNAV_UKF_P][1] * v[1] + K[FNAV_UKF_P][2] * v[2]);
+        FNAV_ASSERT_CLOSE(f.vel_mps.v[0], v[0] + dvx, 1e3 * EPS * (fabs(v[0]) + 1e-3), 0.0);
+        FNAV_ASSERT_CLOSE(f.pos_m.v[0], x0[FNAV_UKF_P] + dpx, 1e3 * EPS * (fabs(x0[FNAV_UKF_P]) + 1e-3), 0.0);
+    }
+    assert_int_equal(f.health.zupts, 1);
+}
+
+/* With the lever, a velocity equal to C (w x r) with the true lever gives a
+ * zero innovation: the update changes neither velocity nor lever. */
+static void test_lever_measurement(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    fnav_vec3_t r = fnav_vec3(FNAV_R(0.02), FNAV_R(0.06), FNAV_R(-0.03));
+    fnav_vec3_t w = fnav_vec3(FNAV_R(0.4), FNAV_R(-0.2), FNAV_R(0.1));
+    fnav_vec3_t v;
+    (void)state;
+    c.lever = 1;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_from_euler(FNAV_R(0.1), FNAV_R(0.3), FNAV_R(-1.0)), fnav_vec3_zero(),
+                                    fnav_vec3_zero(), &sd),
+                     FNAV_OK);
+    f.lever_m = r;
+    v = fnav_quat_rotate(f.q_nb, fnav_vec3_cross(w, r));
+    f.vel_mps = v;
+    assert_int_equal(fnav_ukf_zupt(&f, w), FNAV_OK);
+    FNAV_ASSERT_CLOSE(f.vel_mps.v[0], v.v[0], 20.0 * EPS, 0.0);
+    FNAV_ASSERT_CLOSE(f.vel_mps.v[2], v.v[2], 20.0 * EPS, 0.0);
+    FNAV_ASSERT_CLOSE(f.lever_m.v[1], r.v[1], 20.0 * EPS, 0.0);
+    /* a wrong velocity moves the lever estimate towards explaining it */
+    f.vel_mps = fnav_vec3_add(v, fnav_quat_rotate(f.q_nb, fnav_vec3_cross(w, fnav_vec3(FNAV_R(0.0), FNAV_R(0.05), FNAV_R(0.0)))));
+    assert_int_equal(fnav_ukf_zupt(&f, w), FNAV_OK);
+    assert_true(f.lever_m.v[1] > r.v[1]);
+}
+
+/* NaN input: rejected, nothing changes; dt < 0 rejected; dt = 0 no-op. */
+static void test_bad_input(void **state)
+{
+    static fnav_ukf_t f, g;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    (void)state;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    g = f;
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3((fnav_real_t)NAN, FNAV_R(0.0), FNAV_R(0.0)), fnav_vec3_zero(),
+                                      FNAV_R(0.01)),
+                     FNAV_E_NANINF);
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), (fnav_real_t)INFINITY, FNAV_R(0.0)),
+                                      FNAV_R(0.01)),
+                     FNAV_E_NANINF);
+    assert_int_equal(fnav_ukf_zaru(&f, fnav_vec3((fnav_real_t)NAN, FNAV_R(0.0), FNAV_R(0.0))), FNAV_E_NANINF);
+    assert_int_equal(f.health.nan_inputs, 3);
+    f.health = g.health;
+    assert_memory_equal(&f, &g, sizeof f);
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3_zero(), FNAV_R(-0.01)), FNAV_E_TIME);
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3(FNAV_R(1.0), FNAV_R(0.0), FNAV_R(0.0)), fnav_vec3_zero(), FNAV_R(0.0)),
+                     FNAV_OK);
+    assert_memory_equal(&f, &g, sizeof f);
+}
+
+/* A covariance that is not positive definite: the step recovers (jitter or
+ * reset to the diagonal, counted, FNAV_E_DECOMP on a reset) and leaves a
+ * symmetric positive definite covariance. */
+static void test_covariance_recovery(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    fnav_status_t st;
+    int i, j, k;
+    static double A[NM][NM], L[NM][NM];
+    (void)state;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    /* correlation > 1 between velocity x and position x: indefinite */
+    fnav_ukf_set_cov(&f, FNAV_UKF_V, FNAV_UKF_P,
+                     FNAV_R(3.0) * fnav_sqrt(fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_V) * fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_P)));
+    st = fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g), FNAV_R(0.01));
+    assert_int_equal(st, FNAV_E_DECOMP);
+    assert_int_equal(f.health.chol_reset, 1);
+    /* the result factors in double (positive definite) and is symmetric */
+    for (i = 0; i < NM; i++) {
+        for (j = 0; j < NM; j++) {
+            A[i][j] = (double)fnav_ukf_cov(&f, i, j);
+            assert_true(fnav_ukf_cov(&f, i, j) == fnav_ukf_cov(&f, j, i));
+        }
+    }
+    for (j = 0; j < NM; j++) {
+        double d = A[j][j];
+        if (d == 0.0) {
+            continue; /* inactive state */
+        }
+        for (k = 0; k < j; k++) {
+            d -= L[j][k] * L[j][k];
+        }
+        assert_true(d > 0.0);
+        L[j][j] = sqrt(d);
+        for (i = j + 1; i < NM; i++) {
+            double s = A[i][j];
+            for (k = 0; k < j; k++) {
+                s -= L[i][k] * L[j][k];
+            }
+            L[i][j] = L[j][j] > 0.0 ? s / L[j][j] : 0.0;
+        }
+    }
+    /* the next step runs normally */
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g),
+                                      FNAV_R(0.01)),
+                     FNAV_OK);
+}
+
+/* ------------------------------------------------------------------ NEES */
+
+/* Gaussian numbers from a fixed-seed generator (xorshift64* + Box-Muller),
+ * so that the test is deterministic. */
+static uint64_t g_rng = 0x9E3779B97F4A7C15ull;
+static double urand(void)
+{
+    g_rng ^= g_rng >> 12;
+    g_rng ^= g_rng << 25;
+    g_rng ^= g_rng >> 27;
+    return ((double)((g_rng * 2685821657736338717ull) >> 11) + 0.5) / 9007199254740992.0;
+}
+static double nrand(void)
+{
+    return sqrt(-2.0 * log(urand())) * cos(2.0 * 3.14159265358979323846 * urand());
+}
+
+/* Simulated walk: strides of 0.4 s stance and 0.6 s swing along a heading
+ * that changes by 20 deg each swing. In the swing the velocity in n follows
+ * v(t) = (V s, 0, -H w cos(w t)) rotated by the heading, s = sin^2(pi t/T),
+ * and the foot pitches by A sin(2 pi t / T). The clean specific force of
+ * each sample is solved from the strapdown's own velocity update (the 3x3
+ * system of the rotation-compensation and sculling terms), so that the
+ * strapdown fed the clean samples reproduces the truth exactly; in stance the
+ * true velocity is white with the ZUPT's standard deviation (the model the
+ * ZUPT assumes). The filter then gets the clean samples plus white noise of
+ * the densities it is configured with. */
+typedef struct {
+    fnav_strapdown_state_t x; /* truth */
+    fnav_strapdown_hist_t h;
+    fnav_vec3_t bg, ba;       /* true biases */
+} truth_t;
+
+static void solve3(double A[3][3], const double b[3], double x[3])
+{
+    double d = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+               A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        double M[3][3];
+        for (j = 0; j < 3; j++) {
+            M[j][0] = A[j][0];
+            M[j][1] = A[j][1];
+            M[j][2] = A[j][2];
+            M[j][i] = b[j];
+        }
+        x[i] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+                M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) /
+               d;
+    }
+}
+
+typedef struct {
+    int bias_ar1;
+    int runs, steps_per_s, seconds;
+    double nees_mean;   /* over runs and check times */
+    double band_lo, band_hi;
+    int checks, inside;
+} nees_t;
+
+/* Wilson-Hilferty quantile of chi-square with k degrees of freedom. */
+static double chi2_q(double k, double z)
+{
+    double a = 2.0 / (9.0 * k);
+    double t = 1.0 - a + z * sqrt(a);
+    return k * t * t * t;
+}
+
+static void run_nees(nees_t *r)
+{
+    static fnav_ukf_t f;
+    const double dt = 1.0 / r->steps_per_s;
+    const double na = 0.02, ng = 0.002; /* densities: m/s^2/sqrt(Hz), rad/s/sqrt(Hz) */
+    const double zs = 0.005;            /* ZUPT sigma, m/s */
+    const int nsteps = r->seconds * r->steps_per_s;
+    const int n_states = r->bias_ar1 ? 15 : 9;
+    static double sum_at[64];
+    int run, k, i, ncheck = 0;
+    memset(sum_at, 0, sizeof sum_at);
+    for (run = 0; run < r->runs; run++) {
+        fnav_ukf_config_t c = fnav_ukf_config_default;
+        fnav_ukf_init_sd_t sd = sd_default();
+        truth_t T;
+        double heading = 0.0;
+        fnav_vec3_t vprev = fnav_vec3_zero();
+        int check = 0;
+        c.bias_model = r->bias_ar1 ? FNAV_BIAS_AR1 : FNAV_BIAS_OFF;
+        for (i = 0; i < 3; i++) {
+            c.accel_noise_mps2_rthz[i] = (fnav_real_t)na;
+            c.gyro_noise_rps_rthz[i] = (fnav_real_t)ng;
+            c.gyro_tau_s[i] = FNAV_R(20.0);
+            c.accel_tau_s[i] = FNAV_R(20.0);
+            c.gyro_bias_sigma_rps[i] = FNAV_R(0.002);
+            c.accel_bias_sigma_mps2[i] = FNAV_R(0.02);
+            sd.att_rad[i] = FNAV_R(0.005);
+            sd.gyro_bias_rps[i] = FNAV_R(0.002);
+            sd.accel_bias_mps2[i] = FNAV_R(0.02);
+        }
+        c.zupt_sigma_mps = (fnav_real_t)zs;
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+        memset(&T, 0, sizeof T);
+        T.x.q_nb = fnav_quat_identity();
+        /* initial errors drawn from the initial covariance */
+        {
+            fnav_vec3_t da, bg0 = fnav_vec3_zero(), ba0 = fnav_vec3_zero();
+            da = fnav_vec3((fnav_real_t)(0.005 * nrand()), (fnav_real_t)(0.005 * nrand()), (fnav_real_t)(0.005 * nrand()));
+            T.x.vel_mps = fnav_vec3((fnav_real_t)(0.01 * nrand()), (fnav_real_t)(0.01 * nrand()), (fnav_real_t)(0.01 * nrand()));
+            T.x.pos_m = fnav_vec3((fnav_real_t)(0.001 * nrand()), (fnav_real_t)(0.001 * nrand()), (fnav_real_t)(0.001 * nrand()));
+            if (r->bias_ar1) {
+                for (i = 0; i < 3; i++) {
+                    T.bg.v[i] = (fnav_real_t)(0.002 * nrand());
+                    T.ba.v[i] = (fnav_real_t)(0.02 * nrand());
+                }
+            }
+            /* filter: q_hat = dq(-da) * q_true, so q_true = dq(da) q_hat */
+            assert_int_equal(fnav_ukf_start(&f, fnav_quat_mul(fnav_ukf_grp_to_quat(fnav_vec3_scale(da, -FNAV_R(1.0))), T.x.q_nb),
+                                            bg0, ba0, &sd),
+                             FNAV_OK);
+            f.vel_mps = fnav_vec3_zero();
+            f.pos_m = fnav_vec3_zero();
+            vprev = T.x.vel_mps;
+        }
+        for (k = 1; k <= nsteps; k++) {
+            double t = k * dt, ph = fmod(t, 1.0);
+            int stance = ph < 0.4 || ph > 0.999;
+            double vn[3], w_b[3], fb[3];
+            fnav_strapdown_incr_t inc;
+            fnav_vec3_t wv, fv;
+            /* desired true velocity and rate at the end of this interval */
+            if (stance) {
+                vn[0] = zs * nrand();
+                vn[1] = zs * nrand();
+                vn[2] = zs * nrand();
+                w_b[0] = w_b[1] = w_b[2] = 0.0;
+                if (ph < dt && k > 1) {
+                    heading += 20.0 * 3.14159265358979 / 180.0;
+                }
+            } else {
+                double u = (ph - 0.4) / 0.6, s = sin(3.14159265358979 * u);
+                double along = 2.5 * s * s, up = 0.3 * sin(2.0 * 3.14159265358979 * u);
+                vn[0] = along * cos(heading);
+                vn[1] = along * sin(heading);
+                vn[2] = -up;
+                w_b[0] = 0.0;
+                w_b[1] = 1.2 * 2.0 * 3.14159265358979 / 0.6 * cos(2.0 * 3.14159265358979 * u) * 0.5;
+                w_b[2] = 0.0;
+            }
+            /* solve f_b so the strapdown step reproduces vn exactly:
+             * (I + 0.5 [th x] + 1/12 [th_prev x]) f dt = C_bn (vn - v - g dt) - 1/12 (dv_prev x th) */
+            {
+                double th[3], A[3][3], rhs[3], tp[3] = { 0, 0, 0 }, dvp[3] = { 0, 0, 0 };
+                fnav_vec3_t dvn = fnav_vec3((fnav_real_t)(vn[0] - (double)T.x.vel_mps.v[0]),
+                                            (fnav_real_t)(vn[1] - (double)T.x.vel_mps.v[1]),
+                                            (fnav_real_t)(vn[2] - (double)T.x.vel_mps.v[2] - k_g * dt));
+                fnav_vec3_t rb = fnav_quat_rotate(fnav_quat_conj(T.x.q_nb), dvn);
+                for (i = 0; i < 3; i++) {
+                    th[i] = w_b[i] * dt;
+                    if (T.h.valid) {
+                        tp[i] = (double)T.h.theta_rad.v[i];
+                        dvp[i] = (double)T.h.dv_mps.v[i];
+                    }
+                }
+                for (i = 0; i < 3; i++) {
+                    int j;
+                    for (j = 0; j < 3; j++) {
+                        A[i][j] = (i == j) ? dt : 0.0;
+                    }
+                }
+                /* [a x] entries: (0,-a2,a1; a2,0,-a0; -a1,a0,0) times (0.5 th + tp/12) dt */
+                {
+                    double a0 = (0.5 * th[0] + tp[0] / 12.0) * dt, a1 = (0.5 * th[1] + tp[1] / 12.0) * dt,
+                           a2 = (0.5 * th[2] + tp[2] / 12.0) * dt;
+                    A[0][1] -= a2;
+                    A[0][2] += a1;
+                    A[1][0] += a2;
+                    A[1][2] -= a0;
+                    A[2][0] -= a1;
+                    A[2][1] += a0;
+                }
+                rhs[0] = (double)rb.v[0] - (dvp[1] * th[2] - dvp[2] * th[1]) / 12.0;
+                rhs[1] = (double)rb.v[1] - (dvp[2] * th[0] - dvp[0] * th[2]) / 12.0;
+                rhs[2] = (double)rb.v[2] - (dvp[0] * th[1] - dvp[1] * th[0]) / 12.0;
+                solve3(A, rhs, fb);
+            }
+            wv = fnav_vec3((fnav_real_t)w_b[0], (fnav_real_t)w_b[1], (fnav_real_t)w_b[2]);
+            fv = fnav_vec3((fnav_real_t)fb[0], (fnav_real_t)fb[1], (fnav_real_t)fb[2]);
+            fnav_strapdown_increments(&c.strapdown, &T.h, wv, fv, (fnav_real_t)dt, &inc);
+            fnav_strapdown_propagate(&c.strapdown, &T.x, &inc, fnav_vec3_zero(), fnav_vec3_zero());
+            fnav_strapdown_hist_push(&T.h, &inc);
+            (void)vprev;
+            /* AR(1) truth biases */
+            if (r->bias_ar1) {
+                double cg = exp(-dt / 20.0);
+                for (i = 0; i < 3; i++) {
+                    T.bg.v[i] = (fnav_real_t)(cg * (double)T.bg.v[i] + 0.002 * sqrt(1.0 - cg * cg) * nrand());
+                    T.ba.v[i] = (fnav_real_t)(cg * (double)T.ba.v[i] + 0.02 * sqrt(1.0 - cg * cg) * nrand());
+                }
+            }
+            /* measured = clean + bias + white noise */
+            {
+                fnav_vec3_t wm, fm;
+                for (i = 0; i < 3; i++) {
+                    wm.v[i] = (fnav_real_t)(w_b[i] + (double)T.bg.v[i] + ng / sqrt(dt) * nrand());
+                    fm.v[i] = (fnav_real_t)(fb[i] + (double)T.ba.v[i] + na / sqrt(dt) * nrand());
+                }
+                assert_int_equal(fnav_ukf_predict(&f, wm, fm, (fnav_real_t)dt), FNAV_OK);
+                if (stance) {
+                    assert_int_equal(fnav_ukf_zupt(&f, wm), FNAV_OK);
+                }
+            }
+            /* NEES at the middle of every other stance and swing */
+            if (k % (r->steps_per_s / 2) == r->steps_per_s / 5 && check < 64) {
+                static double e[15], Pm[15][15], L[15][15];
+                int idx[15], ne = n_states, a, b2, kk;
+                fnav_vec3_t da = fnav_ukf_quat_to_grp(fnav_quat_mul(T.x.q_nb, fnav_quat_conj(f.q_nb)));
+                double nees = 0.0, y[15];
+                for (i = 0; i < 3; i++) {
+                    idx[i] = FNAV_UKF_A + i;
+                    e[i] = (double)da.v[i];
+                    idx[3 + i] = FNAV_UKF_V + i;
+                    e[3 + i] = (double)T.x.vel_mps.v[i] - (double)f.vel_mps.v[i];
+                    idx[6 + i] = FNAV_UKF_P + i;
+                    e[6 + i] = (double)T.x.pos_m.v[i] - (double)f.pos_m.v[i];
+                    if (r->bias_ar1) {
+                        idx[9 + i] = FNAV_UKF_BG + i;
+                        e[9 + i] = (double)T.bg.v[i] - (double)f.bg_rps.v[i];
+                        idx[12 + i] = FNAV_UKF_BA + i;
+                        e[12 + i] = (double)T.ba.v[i] - (double)f.ba_mps2.v[i];
+                    }
+                }
+                for (a = 0; a < ne; a++) {
+                    for (b2 = 0; b2 < ne; b2++) {
+                        Pm[a][b2] = (double)fnav_ukf_cov(&f, idx[a], idx[b2]);
+                    }
+                }
+                /* e^T P^-1 e by Cholesky in double */
+                for (b2 = 0; b2 < ne; b2++) {
+                    double d = Pm[b2][b2];
+                    for (kk = 0; kk < b2; kk++) {
+                        d -= L[b2][kk] * L[b2][kk];
+                    }
+                    assert_true(d > 0.0);
+                    L[b2][b2] = sqrt(d);
+                    for (a = b2 + 1; a < ne; a++) {
+                        double s = Pm[a][b2];
+                        for (kk = 0; kk < b2; kk++) {
+                            s -= L[a][kk] * L[b2][kk];
+                        }
+                        L[a][b2] = s / L[b2][b2];
+                    }
+                }
+                for (a = 0; a < ne; a++) {
+                    double s = e[a];
+                    for (kk = 0; kk < a; kk++) {
+                        s -= L[a][kk] * y[kk];
+                    }
+                    y[a] = s / L[a][a];
+                    nees += y[a] * y[a];
+                }
+                sum_at[check++] += nees;
+            }
+        }
+        ncheck = check;
+    }
+    /* band of the run-average at each check time: chi2(n R) / R */
+    r->band_lo = chi2_q((double)n_states * r->runs, -1.959964) / r->runs;
+    r->band_hi = chi2_q((double)n_states * r->runs, 1.959964) / r->runs;
+    r->checks = ncheck;
+    r->inside = 0;
+    r->nees_mean = 0.0;
+    for (i = 0; i < ncheck; i++) {
+        double m = sum_at[i] / r->runs;
+        r->nees_mean += m / ncheck;
+        if (m >= r->band_lo && m <= r->band_hi) {
+            r->inside++;
+        }
+    }
+}
+
+static void check_nees(int ar1)
+{
+    nees_t r;
+    double lo, hi;
+    memset(&r, 0, sizeof r);
+    r.bias_ar1 = ar1;
+    r.runs = 25;
+    r.steps_per_s = 100;
+    r.seconds = 20;
+    run_nees(&r);
+    /* The run-averaged NEES at each check time has the distribution
+     * chi2(n R) / R when the filter is consistent: its 95 % band is
+     * [band_lo, band_hi]. Criteria: the time average of the run-averaged
+     * NEES lies in that band ("inside its band on average"), and at least
+     * 85 % of the check times do (95 % expected; the check times of one run
+     * are correlated, so the count varies more than a binomial). */
+    lo = r.band_lo;
+    hi = r.band_hi;
+    fprintf(stderr, "NEES (%s, %d runs): time-averaged %.2f, 95 %% band %.2f..%.2f; %d of %d check times inside\n",
+            ar1 ? "15 states" : "9 states", r.runs, r.nees_mean, lo, hi, r.inside, r.checks);
+    assert_true(r.nees_mean >= lo && r.nees_mean <= hi);
+    assert_true(r.inside >= (int)(0.85 * r.checks));
+}
+
+static void test_nees_bias_off(void **state)
+{
+    (void)state;
+    g_rng = 0x1234567890ABCDEFull;
+    check_nees(0);
+}
+
+static void test_nees_ar1(void **state)
+{
+    (void)state;
+    g_rng = 0x0FEDCBA987654321ull;
+    check_nees(1);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_config),
+        cmocka_unit_test(test_grp),
+        cmocka_unit_test(test_closed_form_equivalence),
+        cmocka_unit_test(test_linear_covariance),
+        cmocka_unit_test(test_zupt_update),
+        cmocka_unit_test(test_lever_measurement),
+        cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_covariance_recovery),
+        cmocka_unit_test(test_nees_bias_off),
+        cmocka_unit_test(test_nees_ar1),
+    };
+    return cmocka_run_group_tests_name("ukf", tests, NULL, NULL);
+}

@@ -1,0 +1,42 @@
+#!/bin/sh
+# Golden replays (regression vectors, docs/harness.md): short pieces of real
+# walks whose licences allow copying (ISC, MIT, BSD-2; vectors/nav/README.md),
+# replayed by the float32 and the float64 build with the default
+# configuration. tests/test_nav.c replays the inputs and fails on any change
+# of the outputs. After an intended change of the navigation, run
+#     sh vectors/nav/make_golden.sh
+# and commit the new outputs with the reason in the commit message.
+#
+# Inputs are written only when missing (they are data, not results);
+# outputs keep every 25th frame and the last one.
+set -eu
+cd "$(dirname "$0")/../.."
+D=${FNAV_DATA_DIR:-../shared/data}
+G=vectors/nav/golden
+make -s bin/harness
+make -s BUILD=build/double HARNESS=build/double/harness FNAV_DEFS=-DFNAV_USE_DOUBLE=1 build/double/harness
+mkdir -p "$G"
+
+piece() { # name source from_s to_s
+    if [ ! -f "$G/$1.csv" ]; then
+        tmp=$(mktemp)
+        bin/harness convert "$2" "$tmp" >/dev/null 2>&1 || true
+        awk -F, -v S="$3" -v T="$4" 'NR == 1 || (($1 + 0) >= S && ($1 + 0) <= T)' "$tmp" > "$G/$1.csv"
+        rm -f "$tmp"
+    fi
+}
+piece gx2_walk2 "$D/openshoe_gx2/Measurement_100521_2_data_inert.txt" 0 12
+piece xio_short "$D/xio_ngimu_gait/short_walk.csv" 11 19
+piece square2 "$D/openshoe_square2/square2_u.csv" 10 30
+
+for n in gx2_walk2 xio_short square2; do
+    for b in float double; do
+        if [ "$b" = float ]; then h=bin/harness; else h=build/double/harness; fi
+        tmp=$(mktemp)
+        "$h" replay "$G/$n.csv" --out "$tmp" --quiet
+        awk 'NR == 1 || (NR - 2) % 25 == 0 { print; next } { last = $0 } END { if ((NR - 2) % 25 != 0) print last }' \
+            "$tmp" > "$G/${n}_traj_$b.csv"
+        rm -f "$tmp"
+    done
+done
+echo "golden replays written to $G"
