@@ -14,15 +14,8 @@
 #include "hx_profile.h"
 #include "hx_sim.h"
 
-/* The navigation filter (fnav_nav.h) is built on another branch; until it is
- * on main this command reports that it is not available. */
-#if defined(__has_include)
-#if __has_include("footnav/fnav_nav.h") && __has_include("hx_nav.h")
-#define HX_MC_HAVE_NAV 1
 #include "footnav/fnav_nav.h"
 #include "hx_nav.h"
-#endif
-#endif
 
 static const hx_opt_t k_opts[] = {
     HX_SIM_OPTS,
@@ -51,7 +44,6 @@ static const hx_spec_t k_spec = {
     0, 0, k_opts
 };
 
-#if HX_MC_HAVE_NAV
 /* ------------------------------------------------------------ statistics */
 
 static int cmp_d(const void *a, const void *b)
@@ -455,7 +447,6 @@ static void on_progress(void *ctx, int done, int total)
     (void)total;
     hx_progress_update(&((prog_ctx_t *)ctx)->prog, (double)done);
 }
-#endif
 
 int hx_cmd_montecarlo(int argc, char **argv)
 {
@@ -468,10 +459,6 @@ int hx_cmd_montecarlo(int argc, char **argv)
     if (hx_sim_setup_from_args("montecarlo", &a, &su) != 0) {
         return HX_EXIT_USAGE;
     }
-#if !HX_MC_HAVE_NAV
-    hx_error("montecarlo", "needs the navigation filter (fnav_nav.h), which is not in this build yet");
-    return HX_EXIT_UNAVAIL;
-#else
     {
         static fnav_adapter_t ad[2];
         hx_mc_nav_t navs[2];
@@ -560,5 +547,4 @@ int hx_cmd_montecarlo(int argc, char **argv)
         hx_motion_free(motion);
         return status;
     }
-#endif
 }

@@ -8,10 +8,7 @@
  * integration of 14 strides, pitch rates up to 10 rad/s), and the error
  * falls as the square of the interval (a second-order algorithm: at least
  * 3x per doubling of the rate). Measured: 9.5 cm and 2.0 cm, float and
- * double alike.
- *
- * Until the strapdown is in the build (it comes with the navigation filter)
- * the suite says so and skips visibly. */
+ * double alike. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -25,14 +22,8 @@
 #include "hx_sim.h"
 #include "support/fnav_testdata.h"
 
-#if defined(__has_include)
-#if __has_include("footnav/fnav_strapdown.h")
-#define HAVE_STRAPDOWN 1
 #include "footnav/fnav_strapdown.h"
-#endif
-#endif
 
-#if HAVE_STRAPDOWN
 typedef struct {
     fnav_strapdown_state_t x;
     fnav_strapdown_hist_t h;
@@ -113,13 +104,6 @@ static void test_project_strapdown(void **state)
     assert_true(e200 / e400 > 3.0);
     hx_motion_free(m);
 }
-#else
-static void test_project_strapdown(void **state)
-{
-    (void)state;
-    fprintf(stderr, "[  SKIP    ] test_project_strapdown (fnav_strapdown.h is not in this build yet)\n");
-}
-#endif
 
 int main(void)
 {

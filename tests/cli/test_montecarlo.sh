@@ -1,8 +1,7 @@
 #!/bin/sh
 # CLI tests of `harness montecarlo` and of a simulated closed loop replayed
-# through the filter (issue 5 acceptance). Until the navigation filter is in
-# the build, montecarlo must say so with exit status 4 and the rest is
-# skipped visibly. $HARNESS is the harness binary (set by `make test-cli`).
+# through the filter (issue 5 acceptance). $HARNESS is the harness binary
+# (set by `make test-cli`).
 set -u
 H=${HARNESS:-bin/harness}
 T=$(mktemp -d)
@@ -22,13 +21,6 @@ expect_err() {
 expect_exit 0 "montecarlo --help" "$H" montecarlo --help
 expect_exit 2 "bad effect" "$H" montecarlo --effect wobble
 "$H" montecarlo --seeds 1 --duration 8 --quiet >"$T/out" 2>"$T/err"; rc=$?
-if [ "$rc" -eq 4 ]; then
-    expect_err "navigation filter" "montecarlo explains what is missing"
-    echo "SKIP montecarlo runs and the replayed loop: the navigation filter is not in this build"
-    if [ "$fails" -ne 0 ]; then echo "test_montecarlo.sh: $fails failure(s)"; exit 1; fi
-    echo "test_montecarlo.sh: all passed (filter parts skipped)"
-    exit 0
-fi
 if [ "$rc" -eq 0 ]; then pass "montecarlo small run (exit 0)"; else fail "montecarlo small run: exit $rc"; cat "$T/err"; fi
 expect_exit 2 "bad --bias-model" "$H" montecarlo --bias-model maybe
 expect_exit 0 "montecarlo with outputs" "$H" montecarlo --motion "stand:5,walk:10,stand:2" --seeds 3 \
