@@ -19,6 +19,9 @@ B. Sampling frequency (paper II, V.B): 120 s of walking and of running at
    (instantaneous band-limited values) and as point samples without any
    filter (`--oversample 1`), for the MTx sensor (random, N seeds) and an ideal
    sensor (`--profile none`: no randomness, one run).
+C. Consistency: the paper walk with each sensor, the filter with its AR(1)
+   model, interval-mean and instantaneous samples: NEES of position,
+   velocity, attitude, biases and all states against the chi-square band.
 """
 import argparse
 import json
@@ -141,18 +144,55 @@ def sampling(harness, seeds, jd):
     print()
 
 
+def consistency(harness, seeds, jd):
+    groups = ("pos", "vel", "att", "bias", "all")
+    rows = []
+    for prof in ("navchip", "mtx", "shimmer"):
+        for decim in ("mean", "fir"):
+            args = ["--motion", "paper", "--rate", "200", "--profile", prof, "--seeds", str(seeds),
+                    "--bias-model", "ar1", "--decimation", decim]
+            d = run(harness, args, os.path.join(jd, "nees_%s_%s.json" % (prof, decim)))
+            rows.append((prof, decim, d))
+            sys.stderr.write("nees %s %s: %.0f s\n" % (prof, decim, d["_secs"]))
+    print("| sensor | samples | " + " | ".join("%s (d=%d)" % (g, n) for g, n in zip(groups, (3, 3, 3, 6, 15))) +
+          " | error RMS / predicted sd, horiz. |")
+    print("| --- | --- | " + " | ".join("---" for _ in groups) + " | --- |")
+    for prof, decim, d in rows:
+        v = d["variants"][0]
+        cells = []
+        for g in groups:
+            c = v["nees"][g]
+            if c["time_average"] is None:
+                cells.append("n/a")
+            else:
+                cells.append("%.2f (%.0f %%)" % (c["time_average"], 100.0 * c["fraction_in_band"]))
+        pred = rms(v["final_pred_h_m"])
+        print("| %s | %s | %s | %.2f |" % (prof, "interval means" if decim == "mean" else "instantaneous (FIR)",
+                                          " | ".join(cells), rms(v["final_h_m"]) / pred))
+    lo, hi = rows[0][2]["variants"][0]["nees"]["pos"]["band_lo"], rows[0][2]["variants"][0]["nees"]["pos"]["band_hi"]
+    print()
+    print("Time-average of the NEES averaged over %d runs (in brackets: bins inside their 95 %% band); the band "
+          "for d = 3 is [%.2f, %.2f]. Commands:" % (seeds, lo, hi))
+    print()
+    for r in rows:
+        print("    " + r[2]["_cmd"])
+    print()
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--harness", default="bin/harness")
     ap.add_argument("--seeds", type=int, default=50)
     ap.add_argument("--jsondir", default="build/results-sim")
-    ap.add_argument("--only", choices=("bias", "rate"))
+    ap.add_argument("--only", choices=("bias", "rate", "nees"))
     a = ap.parse_args()
     os.makedirs(a.jsondir, exist_ok=True)
     if a.only in (None, "bias"):
         bias_model(a.harness, a.seeds, a.jsondir)
     if a.only in (None, "rate"):
         sampling(a.harness, max(10, a.seeds * 3 // 5), a.jsondir)
+    if a.only in (None, "nees"):
+        consistency(a.harness, a.seeds, a.jsondir)
     return 0
 
 
