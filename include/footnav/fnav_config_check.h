@@ -48,4 +48,8 @@
 #error "FNAV_IMUERR_FLICKER_POLES must be in 2..64"
 #endif
 
+/* FNAV_INPUT_MAX_ABS is a floating constant, which neither the preprocessor
+ * nor a C99 constant expression can compare; keep it in (0, 1e12]
+ * (fnav_config.h). */
+
 #endif /* FNAV_CONFIG_CHECK_H */
