@@ -1,14 +1,114 @@
-/* harness simgap: placeholder until the sim-to-real gap issue (#6) lands. */
+/* harness simgap: where a real log and its simulated twin disagree, which
+ * effect of the simulator's catalogue explains it and how far the gap
+ * shrinks on held-out data (docs/simgap.md). */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_simgap.h"
+
+static const hx_opt_t k_opts[] = {
+    HX_INPUT_OPTS,
+    { "--static", NULL, "treat the log as static (default: detected)", 0 },
+    { "--walk", NULL, "treat the log as a walk (default: detected)", 0 },
+    { "--json", "FILE", "JSON report (schema in docs/simgap.md)", 0 },
+    { "--plot", "DIR", "plots: Allan and PSD real vs twin before and after, innovations", 0 },
+    { "--seeds", "N", "twins per model (default 12)", 0 },
+    { "--seed", "S", "first simulator seed (default 1)", 0 },
+    { "--fit-frac", "F", "fraction of the log in the fit segment (default 0.6; the rest is held out)", 0 },
+    { "--alpha", "A", "family-wise false-alarm level of the gap tests (default 0.05)", 0 },
+    { "--max-effects", "K", "forward-selection steps per channel (default 3)", 0 },
+    { "--prescreen", "K", "candidates simulated per step besides lattice and line (default 3)", 0 },
+    { "--profile", "NAME|FILE", "walks: baseline noise from a profile instead of the stances", 0 },
+    { "--closed", NULL, "walks: the walk ends where it started (drift check against the twins)", 0 },
+    { "--quiet", NULL, "no progress indicator", 0 },
+    { NULL, NULL, NULL, 0 }
+};
+
+static const hx_spec_t k_spec = {
+    "simgap", "LOG [options]",
+    "Sim-to-real gap: fit the baseline model (white noise + AR(1) bias per axis)\n"
+    "on the first part of a real log, simulate its twin with several seeds, locate\n"
+    "where real and twin disagree (Allan per tau, PSD per band, value lattice,\n"
+    "timing; for walks the navigation filter's innovations and drift) with\n"
+    "z-scores, and rank the simulator's catalogue effects by how much of the gap\n"
+    "they explain on the held-out part of the log (forward selection, stopping\n"
+    "when the rest is within noise). Input: any log format, e.g. CSV with header\n"
+    "t,ax,ay,az,gx,gy,gz in SI units.",
+    1, 1, k_opts
+};
 
 int hx_cmd_simgap(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    fprintf(stderr, "harness simgap: not available yet (planned in issue #6, sim-to-real gap)\n");
-    return HX_EXIT_UNAVAIL;
+    hx_args_t a;
+    hx_log_t log;
+    sg_opts_t o = sg_opts_default();
+    sg_result_t *r;
+    char err[512];
+    long seeds = o.seeds, seed = (long)o.seed, steps = o.max_steps, pre = o.prescreen;
+    double frac = o.fit_frac, alpha = o.alpha;
+    const char *json, *plot, *path;
+    int lr, status = HX_EXIT_OK;
+    int pr = hx_args_parse(&k_spec, argc, argv, &a);
+    if (pr != 0) {
+        return pr > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
+    }
+    if (hx_check_input_opts("simgap", &a) != 0 || hx_arg_long(&a, "--seeds", 3, 60, &seeds) != 0 ||
+        hx_arg_long(&a, "--seed", 0, 2000000000L, &seed) != 0 || hx_arg_double(&a, "--fit-frac", 0.2, 0.9, &frac) != 0 ||
+        hx_arg_double(&a, "--alpha", 1e-6, 0.5, &alpha) != 0 || hx_arg_long(&a, "--max-effects", 0, SG_MAX_STEPS, &steps) != 0 ||
+        hx_arg_long(&a, "--prescreen", 0, 16, &pre) != 0) {
+        return HX_EXIT_USAGE;
+    }
+    if (hx_flag(&a, "--static") && hx_flag(&a, "--walk")) {
+        hx_error("simgap", "--static and --walk exclude each other");
+        return HX_EXIT_USAGE;
+    }
+    o.domain = hx_flag(&a, "--static") ? 1 : (hx_flag(&a, "--walk") ? 2 : 0);
+    o.seeds = (int)seeds;
+    o.seeds_cand = (int)seeds;
+    o.seed = (uint32_t)seed;
+    o.fit_frac = frac;
+    o.alpha = alpha;
+    o.max_steps = (int)steps;
+    o.prescreen = (int)pre;
+    o.quiet = hx_flag(&a, "--quiet");
+    o.profile = hx_arg(&a, "--profile");
+    o.closed = hx_flag(&a, "--closed");
+    json = hx_arg(&a, "--json");
+    plot = hx_arg(&a, "--plot");
+    path = a.pos[0];
+    lr = hx_load_input("simgap", &a, path, &log);
+    if (lr < 0) {
+        return HX_EXIT_DATA;
+    }
+    r = (sg_result_t *)calloc(1, sizeof *r);
+    if (r == NULL) {
+        hx_log_free(&log);
+        hx_error("simgap", "out of memory");
+        return HX_EXIT_IO;
+    }
+    if (sg_diagnose(&log, path, &o, r, err, sizeof err) != 0) {
+        hx_error("simgap", "%s: %s", path, err);
+        hx_log_free(&log);
+        sg_result_free(r);
+        free(r);
+        return HX_EXIT_DATA;
+    }
+    sg_print_summary(stdout, r);
+    if (json != NULL && sg_write_json(r, json, err, sizeof err) != 0) {
+        hx_error("simgap", "%s", err);
+        status = HX_EXIT_IO;
+    }
+    if (plot != NULL && sg_write_plots(r, plot, "simgap") != 0) {
+        status = HX_EXIT_IO;
+    }
+    if (status == HX_EXIT_OK && (lr == 1 || !r->confident)) {
+        status = HX_EXIT_DATA;
+    }
+    hx_log_free(&log);
+    sg_result_free(r);
+    free(r);
+    return status;
 }

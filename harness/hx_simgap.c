@@ -1,0 +1,958 @@
+/* Sim-to-real gap diagnosis: the pipeline (hx_simgap.h, docs/simgap.md).
+ * Static logs: per channel, baseline fit on the fit segment, twins, gap per
+ * segment and domain, forward selection of catalogue effects scored on the
+ * held-out segment; timing domain from the time stamps. Walks: see
+ * hx_simgap_nav.c. */
+#include "hx_simgap.h"
+#include "hx_simgap_nav.h"
+
+#include <gsl/gsl_cdf.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hx_cli.h"
+
+sg_opts_t sg_opts_default(void)
+{
+    sg_opts_t o;
+    memset(&o, 0, sizeof o);
+    o.domain = 0;
+    o.seeds = 12;
+    o.seeds_cand = 12;
+    o.prescreen = 3;
+    o.fit_frac = 0.6;
+    o.alpha = 0.05;
+    o.seed = 1u;
+    o.max_steps = 3;
+    o.cmd = "simgap";
+    return o;
+}
+
+double sg_log_rate(const hx_log_t *log)
+{
+    size_t n = log->n, k, m = 0;
+    int64_t *dt;
+    double r;
+    if (log->meta.rate_hz > 0.0 && log->meta.rate_nominal) {
+        return log->meta.rate_hz;
+    }
+    if (n < 3) {
+        return log->meta.rate_hz;
+    }
+    dt = (int64_t *)malloc(n * sizeof *dt);
+    if (dt == NULL) {
+        return log->meta.rate_hz;
+    }
+    for (k = 1; k < n; k++) {
+        if (log->t_ns[k] > log->t_ns[k - 1]) {
+            dt[m++] = log->t_ns[k] - log->t_ns[k - 1];
+        }
+    }
+    if (m == 0) {
+        free(dt);
+        return log->meta.rate_hz;
+    }
+    /* median by partial selection sort would be enough; a full sort is simple */
+    {
+        size_t i, j;
+        /* insertion into a histogram-free median: quickselect */
+        size_t lo = 0, hi = m - 1, kk = m / 2;
+        while (lo < hi) {
+            int64_t piv = dt[(lo + hi) / 2], t;
+            i = lo;
+            j = hi;
+            while (i <= j) {
+                while (dt[i] < piv) {
+                    i++;
+                }
+                while (dt[j] > piv) {
+                    j--;
+                }
+                if (i <= j) {
+                    t = dt[i];
+                    dt[i] = dt[j];
+                    dt[j] = t;
+                    i++;
+                    if (j == 0) {
+                        break;
+                    }
+                    j--;
+                }
+            }
+            if (kk <= j) {
+                hi = j;
+            } else if (kk >= i) {
+                lo = i;
+            } else {
+                break;
+            }
+        }
+        r = 1e9 / (double)dt[kk];
+    }
+    free(dt);
+    return r;
+}
+
+int sg_detect_domain(const hx_log_t *log, double rate_hz)
+{
+    size_t n = log->n, k, w = (size_t)(rate_hz > 1.0 ? rate_hz : 1.0), nw = 0, moving = 0;
+    double gm[3] = { 0, 0, 0 }, fn = 0.0;
+    if (n == 0) {
+        return 1;
+    }
+    for (k = 0; k < n; k++) {
+        int i;
+        for (i = 0; i < 3; i++) {
+            gm[i] += log->gyr[k][i];
+        }
+        fn += sqrt(log->acc[k][0] * log->acc[k][0] + log->acc[k][1] * log->acc[k][1] + log->acc[k][2] * log->acc[k][2]);
+    }
+    for (k = 0; k < 3; k++) {
+        gm[k] /= (double)n;
+    }
+    fn /= (double)n;
+    /* one-second windows: moving when the rate departs from the log's mean
+     * by more than 1 rad/s or the specific force from its mean norm by more
+     * than 3 m/s^2 (a foot in swing does both many times a second) */
+    for (k = 0; k + w <= n; k += w) {
+        size_t i;
+        int mv = 0;
+        for (i = k; i < k + w && !mv; i++) {
+            double a = log->gyr[i][0] - gm[0], b = log->gyr[i][1] - gm[1], c = log->gyr[i][2] - gm[2];
+            double f = sqrt(log->acc[i][0] * log->acc[i][0] + log->acc[i][1] * log->acc[i][1] +
+                            log->acc[i][2] * log->acc[i][2]);
+            if (a * a + b * b + c * c > 1.0 || fabs(f - fn) > 3.0) {
+                mv = 1;
+            }
+        }
+        moving += (size_t)mv;
+        nw++;
+    }
+    return (nw > 0 && (double)moving > 0.02 * (double)nw) ? 2 : 1;
+}
+
+/* ------------------------------------------------------------ timing */
+
+static double poisson_z(long n, double lam)
+{
+    double p;
+    lam += 0.05; /* the twin's clock is ideal; one stray event is not evidence */
+    if (n <= 0) {
+        return 0.0;
+    }
+    p = gsl_cdf_poisson_Q((unsigned)(n - 1), lam); /* P(X >= n) */
+    if (!(p > 1e-300)) {
+        return SG_ZCAP;
+    }
+    p = gsl_cdf_ugaussian_Qinv(p);
+    return p > SG_ZCAP ? SG_ZCAP : p;
+}
+
+/* Two-sided score of a count against an expectation (after fitting). */
+static double count_z(long n, double lam)
+{
+    lam += 0.05;
+    return ((double)n - lam) / sqrt(lam);
+}
+
+static void timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, double alpha, sg_timing_t *t)
+{
+    const double T = 1e9 / rate;
+    int g, d;
+    long k;
+    double res = 1.0;
+    memset(t, 0, sizeof *t);
+    t->first_t[SG_TIM_DUP] = t->first_t[SG_TIM_DROP] = (double)NAN;
+    if (lg->n < 16 || lg->t_ns == NULL) {
+        return;
+    }
+    /* resolution: the largest decade of ns that divides every stamp offset */
+    for (d = 9; d >= 0; d--) {
+        int64_t r = 1;
+        int i, ok = 1;
+        for (i = 0; i < d; i++) {
+            r *= 10;
+        }
+        for (k = 1; k < (long)lg->n && ok; k++) {
+            if ((lg->t_ns[k] - lg->t_ns[0]) % r != 0) {
+                ok = 0;
+            }
+        }
+        if (ok) {
+            res = (double)r;
+            break;
+        }
+    }
+    t->have = 1;
+    t->res_s = res * 1e-9;
+    for (g = 0; g < SG_NSEG; g++) {
+        long a = segs->start[g] + 1, b = segs->start[g] + segs->n[g];
+        double s = 0.0, s2 = 0.0;
+        long nreg = 0;
+        for (k = a; k < b; k++) {
+            double dt = (double)(lg->t_ns[k] - lg->t_ns[k - 1]);
+            double tk = (double)(lg->t_ns[k] - lg->t_ns[0]) * 1e-9;
+            t->n_int[g]++;
+            if (dt <= 0.1 * T) {
+                t->n_dup[g]++;
+                if (g == SG_FULL && !(t->first_t[SG_TIM_DUP] == t->first_t[SG_TIM_DUP])) {
+                    t->first_t[SG_TIM_DUP] = tk;
+                }
+            } else if (dt > 1.5 * T) {
+                t->n_drop[g] += (long)floor(dt / T + 0.5) - 1;
+                if (g == SG_FULL && !(t->first_t[SG_TIM_DROP] == t->first_t[SG_TIM_DROP])) {
+                    t->first_t[SG_TIM_DROP] = tk;
+                }
+            } else {
+                s += dt - T;
+                s2 += (dt - T) * (dt - T);
+                nreg++;
+            }
+        }
+        t->jit_sd[g] = nreg > 1 ? sqrt((s2 - s * s / (double)nreg) / (double)(nreg - 1)) * 1e-9 : 0.0;
+        t->z[g][SG_TIM_DUP] = poisson_z(t->n_dup[g], 0.0);
+        t->z[g][SG_TIM_DROP] = poisson_z(t->n_drop[g], 0.0);
+        {
+            /* rounding to the resolution leaves at most res/sqrt(6) */
+            double s0 = res * 1e-9 / sqrt(6.0), z = 0.0;
+            if (nreg > 2 && t->jit_sd[g] > s0) {
+                z = (log(t->jit_sd[g] * t->jit_sd[g]) - log(s0 > 1e-12 ? s0 * s0 : 1e-24)) /
+                    sqrt(2.0 / (double)(nreg - 1));
+            }
+            t->z[g][SG_TIM_JITTER] = z > SG_ZCAP ? SG_ZCAP : z;
+        }
+    }
+    {
+        double zc = gsl_cdf_ugaussian_Qinv(alpha / 3.0);
+        long nif = t->n_int[SG_FIT] > 0 ? t->n_int[SG_FIT] : 1;
+        double s0 = t->res_s / sqrt(6.0);
+        for (d = 0; d < SG_TIM_NKIND; d++) {
+            t->sel[d] = t->z[SG_FULL][d] > zc;
+            t->significant |= t->sel[d];
+        }
+        t->dup_prob = (double)t->n_dup[SG_FIT] / (double)nif;
+        t->drop_prob = (double)t->n_drop[SG_FIT] / (double)(nif + t->n_drop[SG_FIT]);
+        t->stamp_s = t->jit_sd[SG_FIT] > s0 ? sqrt(0.5 * (t->jit_sd[SG_FIT] * t->jit_sd[SG_FIT] - s0 * s0)) : 0.0;
+        t->z_after[SG_TIM_DUP] = count_z(t->n_dup[SG_HOLD], t->dup_prob * (double)t->n_int[SG_HOLD]);
+        t->z_after[SG_TIM_DROP] = count_z(t->n_drop[SG_HOLD], t->drop_prob * (double)t->n_int[SG_HOLD]);
+        {
+            double ex = 2.0 * t->stamp_s * t->stamp_s + s0 * s0, sd = t->jit_sd[SG_HOLD];
+            long nh = t->n_int[SG_HOLD] - t->n_dup[SG_HOLD];
+            t->z_after[SG_TIM_JITTER] = (ex > 0.0 && sd > 0.0 && nh > 2)
+                                            ? (log(sd * sd) - log(ex)) / sqrt(2.0 / (double)(nh - 1))
+                                            : 0.0;
+        }
+    }
+}
+
+/* ------------------------------------------------------------ static */
+
+typedef struct {
+    double *v[SG_NSEG];   /**< S rows of values per segment */
+    double *vx[SG_NSEG];  /**< parameter-uncertainty variance per point */
+    double *sh[SG_NSEG];  /**< S rows: shift of each point's expectation by the refit to twin s */
+} twinset_t;
+
+static void twinset_free(twinset_t *t)
+{
+    int g;
+    for (g = 0; g < SG_NSEG; g++) {
+        free(t->v[g]);
+        free(t->vx[g]);
+        free(t->sh[g]);
+        t->v[g] = NULL;
+        t->vx[g] = NULL;
+        t->sh[g] = NULL;
+    }
+}
+
+/* Spread of the model's predictions when it is refitted on each twin's
+ * fit segment: the sampling uncertainty of the fitted parameters, carried
+ * into every point of every segment (a parametric bootstrap of the fit). */
+static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, const int *with, int nwith,
+                     const sg_evidence_t *ev, double tmax, twinset_t *t)
+{
+    const int S = r->S;
+    const sg_plist_t *pl = r->pl[ch];
+    const double fs = r->rate_hz;
+    double t0[SG_NSEG], t1[SG_NSEG], *pred[SG_NSEG];
+    int g, s, ok = 0;
+    size_t j;
+    for (g = 0; g < SG_NSEG; g++) {
+        t0[g] = (double)r->segs.start[g] / fs;
+        t1[g] = (double)(r->segs.start[g] + r->segs.n[g]) / fs;
+        t->vx[g] = (double *)calloc(pl[g].n + 1, sizeof(double));
+        pred[g] = (double *)malloc(((size_t)S * pl[g].n + 1) * sizeof(double));
+        if (t->vx[g] == NULL || pred[g] == NULL) {
+            for (; g >= 0; g--) {
+                free(pred[g]);
+            }
+            return -1;
+        }
+    }
+    for (s = 0; s < S; s++) {
+        sg_table_t tb;
+        sg_fit_t f;
+        sg_table_from(&pl[SG_FIT], t->v[SG_FIT] + (size_t)s * pl[SG_FIT].n, ch, fs, t0[SG_FIT], t1[SG_FIT], &tb);
+        if (sg_fit_model(&tb, gen->mean, with, nwith, ev, tmax, &f) != 0) {
+            for (g = 0; g < SG_NSEG; g++) {
+                for (j = 0; j < pl[g].n; j++) {
+                    pred[g][(size_t)s * pl[g].n + j] = (double)NAN;
+                }
+            }
+            continue;
+        }
+        ok++;
+        for (g = 0; g < SG_NSEG; g++) {
+            for (j = 0; j < pl[g].n; j++) {
+                pred[g][(size_t)s * pl[g].n + j] = sg_model_lnstat(&f.model, &pl[g].p[j], fs, t0[g], t1[g]);
+            }
+        }
+    }
+    for (g = 0; g < SG_NSEG; g++) {
+        for (j = 0; j < pl[g].n && ok >= 3; j++) {
+            double m = 0.0, v = 0.0;
+            int c = 0;
+            for (s = 0; s < S; s++) {
+                double x = pred[g][(size_t)s * pl[g].n + j];
+                if (x == x) {
+                    m += x;
+                    c++;
+                }
+            }
+            if (c < 3) {
+                continue;
+            }
+            m /= (double)c;
+            for (s = 0; s < S; s++) {
+                double x = pred[g][(size_t)s * pl[g].n + j];
+                if (x == x) {
+                    v += (x - m) * (x - m);
+                }
+            }
+            t->vx[g][j] = v / (double)(c - 1);
+            /* shifts relative to the generating model's expectation: the
+             * fit's bias, if any, is part of the null as of the real */
+            {
+                double m0 = sg_model_lnstat(gen, &pl[g].p[j], fs, t0[g], t1[g]);
+                if (!(m0 == m0)) {
+                    m0 = m;
+                }
+                for (s = 0; s < S; s++) {
+                    double x = pred[g][(size_t)s * pl[g].n + j];
+                    pred[g][(size_t)s * pl[g].n + j] = (x == x) ? x - m0 : 0.0;
+                }
+            }
+        }
+        if (ok < 3) {
+            memset(pred[g], 0, (size_t)S * pl[g].n * sizeof(double));
+        }
+        t->sh[g] = pred[g];
+    }
+    return 0;
+}
+
+static int twinset_run(const sg_chmodel_t *m, int ch, const sg_feat_cfg_t *fc, const sg_segs_t *segs, double q,
+                       int S, uint32_t seed, sg_plist_t pl[SG_NSEG], twinset_t *t)
+{
+    int g;
+    memset(t, 0, sizeof *t);
+    for (g = 0; g < SG_NSEG; g++) {
+        t->v[g] = (double *)calloc((size_t)S * (pl[g].n + 1), sizeof(double));
+        if (t->v[g] == NULL) {
+            twinset_free(t);
+            return -1;
+        }
+    }
+    if (sg_twin_static(m, ch, fc, segs, q, S, seed, pl, t->v) != 0) {
+        twinset_free(t);
+        return -1;
+    }
+    return 0;
+}
+
+static int cmp_all(const sg_plist_t pl[SG_NSEG], double *const real[SG_NSEG], const twinset_t *t, int S, double alpha,
+                   sg_cmp_t cmp[SG_NSEG])
+{
+    int g;
+    for (g = 0; g < SG_NSEG; g++) {
+        if (sg_compare(&pl[g], real[g], t->v[g], S, t->vx[g], t->sh[g], alpha, &cmp[g]) != 0) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* Explained fraction of the held-out excess gap by going from twins a to
+ * twins b (paired seeds), with a bootstrap over the seeds (68 % interval). */
+static void explained(const sg_plist_t *pl, const double *real, const double *ta, const double *va, const double *tb,
+                      const double *vb, int S, double null_mean, double *f, double *lo, double *hi, uint32_t seed)
+{
+    enum { B = 200 };
+    double fb[B], Ga, Gb;
+    int idx[64], b, k, nb = 0;
+    uint32_t st = seed * 2654435761u + 12345u;
+    for (k = 0; k < S && k < 64; k++) {
+        idx[k] = k;
+    }
+    Ga = sg_gap_resampled(pl, real, ta, S, idx, S, va);
+    Gb = sg_gap_resampled(pl, real, tb, S, idx, S, vb);
+    *f = (Ga - null_mean) > 0.0 ? (Ga - Gb) / (Ga - null_mean) : 0.0;
+    for (b = 0; b < B; b++) {
+        double ga, gb;
+        for (k = 0; k < S && k < 64; k++) {
+            st = st * 1664525u + 1013904223u;
+            idx[k] = (int)((st >> 8) % (uint32_t)S);
+        }
+        ga = sg_gap_resampled(pl, real, ta, S, idx, S, va);
+        gb = sg_gap_resampled(pl, real, tb, S, idx, S, vb);
+        if (ga - null_mean > 0.0) {
+            fb[nb++] = (ga - gb) / (ga - null_mean);
+        }
+    }
+    if (nb < 10) {
+        *lo = *hi = *f;
+        return;
+    }
+    /* sort and take the 16th and 84th percentiles */
+    for (b = 1; b < nb; b++) {
+        double v = fb[b];
+        k = b - 1;
+        while (k >= 0 && fb[k] > v) {
+            fb[k + 1] = fb[k];
+            k--;
+        }
+        fb[k + 1] = v;
+    }
+    *lo = fb[(int)(0.16 * (double)(nb - 1))];
+    *hi = fb[(int)(0.84 * (double)(nb - 1))];
+}
+
+/* The static effects the diagnosis can fit. */
+static const int k_static_cands[] = { FNAV_EFFECT_QUANT,   FNAV_EFFECT_VIBRATION, FNAV_EFFECT_FLICKER,
+                                      FNAV_EFFECT_RRW,     FNAV_EFFECT_RAMP,      FNAV_EFFECT_THERMAL,
+                                      FNAV_EFFECT_JUMPS };
+#define N_STATIC_CANDS ((int)(sizeof k_static_cands / sizeof k_static_cands[0]))
+
+/* Index of an effect's magnitude parameter. */
+static int mag_index(int id)
+{
+    return id == FNAV_EFFECT_JUMPS ? 1 : 0;
+}
+
+/* Which candidate effects have the evidence they need. */
+static int cand_eligible(int id, const sg_evidence_t *ev, double zc)
+{
+    switch (id) {
+    case FNAV_EFFECT_QUANT: return ev->q > 0.0 && ev->q_z > zc;
+    case FNAV_EFFECT_VIBRATION: return ev->tone_score > 3.0 && ev->tone_hz > 0.0;
+    case FNAV_EFFECT_JUMPS: return ev->nsteps >= 1;
+    default: return 1;
+    }
+}
+
+/* Longest AR(1) correlation time of the baseline: its Allan bump (at
+ * 1.89 T) must lie inside the tau range of both the fit and the held-out
+ * analysis; longer correlations are random-walk-like and belong to the
+ * catalogue (rrw, flicker, ramp), where the held-out test can judge them. */
+static double fit_tmax(const sg_result_t *r, int ch)
+{
+    int g;
+    double t = INFINITY;
+    for (g = SG_FIT; g <= SG_HOLD; g++) {
+        const sg_plist_t *pl = &r->pl[ch][g];
+        size_t j;
+        double tmax = 0.0;
+        for (j = 0; j < pl->n; j++) {
+            if (pl->p[j].dom == SG_ALLAN && pl->p[j].x > tmax) {
+                tmax = pl->p[j].x;
+            }
+        }
+        t = tmax < t ? tmax : t;
+    }
+    return t / 1.893;
+}
+
+/* Forward selection on one channel. */
+static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_t *fc, const sg_table_t *tab,
+                     double alpha, hx_progress_t *prog, double *pdone)
+{
+    sg_chres_t *c = &r->ch[ch];
+    const sg_opts_t *o = &r->opts;
+    const int S = o->seeds;
+    twinset_t cur;
+    sg_cmp_t ccur[SG_NSEG];
+    int with[SG_MAX_EFF], nwith = 0, step, g, i;
+    double zc = c->cmp[SG_FULL].z_crit;
+    const double tmax = fit_tmax(r, ch);
+    uint32_t seed = o->seed + 1000u * (uint32_t)ch;
+    (void)x;
+    memset(&cur, 0, sizeof cur);
+    /* the baseline twins are the current ones */
+    for (g = 0; g < SG_NSEG; g++) {
+        cur.v[g] = (double *)malloc((size_t)S * (r->pl[ch][g].n + 1) * sizeof(double));
+        cur.vx[g] = (double *)malloc((r->pl[ch][g].n + 1) * sizeof(double));
+        cur.sh[g] = (double *)malloc((size_t)S * (r->pl[ch][g].n + 1) * sizeof(double));
+        if (cur.v[g] == NULL || cur.vx[g] == NULL || cur.sh[g] == NULL) {
+            twinset_free(&cur);
+            return -1;
+        }
+        memcpy(cur.v[g], r->twin[ch][g], (size_t)S * r->pl[ch][g].n * sizeof(double));
+        memcpy(cur.vx[g], r->vx[ch][g], r->pl[ch][g].n * sizeof(double));
+        memcpy(cur.sh[g], r->sh[ch][g], (size_t)S * r->pl[ch][g].n * sizeof(double));
+        if (sg_compare(&r->pl[ch][g], r->real[ch][g], cur.v[g], S, cur.vx[g], cur.sh[g], alpha, &ccur[g]) != 0) {
+            twinset_free(&cur);
+            return -1;
+        }
+    }
+    c->final = c->baseline;
+    for (step = 0; step < o->max_steps; step++) {
+        sg_step_t *st = &c->step[step];
+        int order[N_STATIC_CANDS], nord = 0, best = -1, k;
+        double bestdG = 0.0;
+        twinset_t bestset;
+        sg_cmp_t bestcmp[SG_NSEG];
+        sg_fit_t curfit;
+        memset(st, 0, sizeof *st);
+        memset(&bestset, 0, sizeof bestset);
+        memset(bestcmp, 0, sizeof bestcmp);
+        st->selected = -1;
+        st->G_hold_before = ccur[SG_HOLD].G;
+        st->G_fit_before = ccur[SG_FIT].G;
+        if (step > 0 && !ccur[SG_HOLD].significant) {
+            break;
+        }
+        if (sg_fit_model(tab, c->baseline.mean, with, nwith, &c->ev, tmax, &curfit) != 0) {
+            break;
+        }
+        /* fit every eligible candidate on the fit segment */
+        for (i = 0; i < N_STATIC_CANDS; i++) {
+            int id = k_static_cands[i], w2[SG_MAX_EFF];
+            sg_fit_t f;
+            sg_cand_t *cd;
+            if (sg_model_find(&c->final, id) >= 0 || !cand_eligible(id, &c->ev, zc) || nwith + 1 >= SG_MAX_EFF) {
+                continue;
+            }
+            memcpy(w2, with, (size_t)nwith * sizeof *w2);
+            w2[nwith] = id;
+            if (sg_fit_model(tab, c->baseline.mean, w2, nwith + 1, &c->ev, tmax, &f) != 0) {
+                continue;
+            }
+            cd = &st->cand[st->ncand++];
+            memset(cd, 0, sizeof *cd);
+            cd->id = id;
+            cd->eff = f.model.e[sg_model_find(&f.model, id)];
+            cd->Q_fit = f.Q;
+            cd->expl_hold = cd->expl_lo = cd->expl_hi = (double)NAN;
+            cd->G_fit = cd->G_hold = (double)NAN;
+            order[nord++] = st->ncand - 1;
+        }
+        /* prescreen: lattice and line candidates always; the others by the
+         * improvement of the fit-segment objective */
+        for (i = 1; i < nord; i++) {
+            int v = order[i];
+            k = i - 1;
+            while (k >= 0) {
+                const sg_cand_t *a = &st->cand[order[k]], *b = &st->cand[v];
+                int pa = (a->id == FNAV_EFFECT_QUANT || a->id == FNAV_EFFECT_VIBRATION);
+                int pb = (b->id == FNAV_EFFECT_QUANT || b->id == FNAV_EFFECT_VIBRATION);
+                if (pa > pb || (pa == pb && a->Q_fit <= b->Q_fit)) {
+                    break;
+                }
+                order[k + 1] = order[k];
+                k--;
+            }
+            order[k + 1] = v;
+        }
+        for (i = 0; i < nord; i++) {
+            sg_cand_t *cd = &st->cand[order[i]];
+            int pri = (cd->id == FNAV_EFFECT_QUANT || cd->id == FNAV_EFFECT_VIBRATION);
+            int w2[SG_MAX_EFF];
+            sg_fit_t f;
+            twinset_t ts;
+            sg_cmp_t cc[SG_NSEG];
+            double dG;
+            if (!pri && (i >= o->prescreen + (c->ev.q_z > zc) + (c->ev.tone_score > 3.0) || !(cd->eff.p[mag_index(cd->id)] != 0.0))) {
+                continue;
+            }
+            memcpy(w2, with, (size_t)nwith * sizeof *w2);
+            w2[nwith] = cd->id;
+            if (sg_fit_model(tab, c->baseline.mean, w2, nwith + 1, &c->ev, tmax, &f) != 0) {
+                continue;
+            }
+            if (twinset_run(&f.model, ch, fc, &r->segs, c->q_full, S, seed, r->pl[ch], &ts) != 0) {
+                continue;
+            }
+            if (param_var(r, ch, &f.model, w2, nwith + 1, &c->ev, tmax, &ts) != 0) {
+                twinset_free(&ts);
+                continue;
+            }
+            memset(cc, 0, sizeof cc);
+            {
+                sg_plist_t *pls = r->pl[ch];
+                double **rv = r->real[ch];
+                if (cmp_all(pls, rv, &ts, S, alpha, cc) != 0) {
+                    twinset_free(&ts);
+                    continue;
+                }
+                cd->simulated = 1;
+                cd->G_fit = cc[SG_FIT].G;
+                cd->G_hold = cc[SG_HOLD].G;
+                explained(&pls[SG_HOLD], rv[SG_HOLD], cur.v[SG_HOLD], cur.vx[SG_HOLD], ts.v[SG_HOLD], ts.vx[SG_HOLD], S,
+                          ccur[SG_HOLD].null_mean,
+                          &cd->expl_hold, &cd->expl_lo, &cd->expl_hi, seed + (uint32_t)cd->id);
+                cd->expl_fit = (ccur[SG_FIT].G - ccur[SG_FIT].null_mean) > 0.0
+                                   ? (ccur[SG_FIT].G - cc[SG_FIT].G) / (ccur[SG_FIT].G - ccur[SG_FIT].null_mean)
+                                   : 0.0;
+            }
+            dG = ccur[SG_HOLD].G - cd->G_hold;
+            if (prog != NULL) {
+                *pdone += 1.0;
+                hx_progress_update(prog, *pdone);
+            }
+            /* accepted only with a held-out gain beyond the seed noise */
+            if (dG > bestdG && cd->expl_lo > 0.0 && cd->expl_hold >= 0.2) {
+                if (best >= 0) {
+                    twinset_free(&bestset);
+                    for (g = 0; g < SG_NSEG; g++) {
+                        sg_cmp_free(&bestcmp[g]);
+                    }
+                }
+                best = order[i];
+                bestdG = dG;
+                bestset = ts;
+                memcpy(bestcmp, cc, sizeof cc);
+                c->final = f.model;
+            } else {
+                twinset_free(&ts);
+                for (g = 0; g < SG_NSEG; g++) {
+                    sg_cmp_free(&cc[g]);
+                }
+            }
+        }
+        c->nsteps = step + 1;
+        if (best < 0) {
+            break;
+        }
+        st->selected = best;
+        c->sel_id[c->nsel] = st->cand[best].id;
+        c->sel_expl[c->nsel] = st->cand[best].expl_hold;
+        c->sel_lo[c->nsel] = st->cand[best].expl_lo;
+        c->sel_hi[c->nsel] = st->cand[best].expl_hi;
+        c->nsel++;
+        with[nwith++] = st->cand[best].id;
+        twinset_free(&cur);
+        cur = bestset;
+        for (g = 0; g < SG_NSEG; g++) {
+            sg_cmp_free(&ccur[g]);
+            ccur[g] = bestcmp[g];
+        }
+    }
+    c->within_noise = !ccur[SG_HOLD].significant;
+    for (g = 0; g < SG_NSEG; g++) {
+        c->cmp_final[g] = ccur[g];
+        r->twin_final[ch][g] = cur.v[g];
+        r->vx_final[ch][g] = cur.vx[g];
+        r->sh_final[ch][g] = cur.sh[g];
+    }
+    return 0;
+}
+
+/* Locations: runs of consecutive points of one channel and domain with
+ * |z| > 2.5 of one sign holding a point beyond the critical z. */
+static void locate(sg_result_t *r, int ch, int seg)
+{
+    const sg_plist_t *pl = &r->pl[ch][seg];
+    const sg_cmp_t *c = &r->ch[ch].cmp[seg];
+    size_t j = 0;
+    while (j < pl->n) {
+        size_t k = j, best = j;
+        double sgn = c->z[j] > 0.0 ? 1.0 : -1.0;
+        if (fabs(c->z[j]) <= 2.5) {
+            j++;
+            continue;
+        }
+        while (k < pl->n && pl->p[k].dom == pl->p[j].dom && fabs(c->z[k]) > 2.5 && c->z[k] * sgn > 0.0) {
+            if (fabs(c->z[k]) > fabs(c->z[best])) {
+                best = k;
+            }
+            k++;
+        }
+        if (fabs(c->z[best]) > c->z_crit && r->nloc < sizeof r->loc / sizeof r->loc[0]) {
+            sg_loc_t *L = &r->loc[r->nloc++];
+            double d = r->real[ch][seg][best] - c->twin_mean[best];
+            L->dom = pl->p[j].dom;
+            L->ch = ch;
+            L->seg = seg;
+            L->kind = 0;
+            L->x_lo = pl->p[j].x_lo;
+            L->x_hi = pl->p[k - 1].x_hi;
+            L->peak_z = c->z[best];
+            /* Allan and PSD values are logs of variances: the ratio of deviations */
+            L->ratio = (L->dom == SG_ALLAN || L->dom == SG_PSD) ? exp(0.5 * d) : d;
+            L->npts = (int)(k - j);
+        }
+        j = k > j ? k : j + 1;
+    }
+}
+
+/* Real features of the three segments of one channel. */
+static int real_features(const double *x, const sg_segs_t *segs, const sg_feat_cfg_t *fc, double q, int ch,
+                         sg_plist_t pl[SG_NSEG], double *vals[SG_NSEG])
+{
+    int g;
+    for (g = 0; g < SG_NSEG; g++) {
+        sg_acc_t a;
+        long k, cnt;
+        size_t cap = 512;
+        if (sg_acc_init(&a, fc, segs->n[g], q) != 0) {
+            return -1;
+        }
+        for (k = 0; k < segs->n[g]; k++) {
+            sg_acc_push(&a, x[segs->start[g] + k]);
+        }
+        vals[g] = (double *)malloc(cap * sizeof(double));
+        if (vals[g] == NULL) {
+            sg_acc_free(&a);
+            return -1;
+        }
+        cnt = sg_acc_finish(&a, ch, &pl[g], vals[g], cap);
+        sg_acc_free(&a);
+        if (cnt < 0) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_t err_size)
+{
+    const sg_opts_t *o = &r->opts;
+    const int S = o->seeds;
+    sg_feat_cfg_t fc = sg_feat_cfg_default(r->rate_hz);
+    double *x = NULL;
+    /* Bonferroni over the channels and the four tests of each (G and max |z|,
+     * whole log and held-out segment) */
+    double alpha = o->alpha / (double)(SG_NCH * 4);
+    int ch, g;
+    hx_progress_t progs, *prog = o->quiet ? NULL : &progs;
+    double done = 0.0;
+    x = (double *)malloc(r->n * sizeof *x);
+    if (x == NULL) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    if (prog != NULL) {
+        hx_progress_start(prog, "simgap", (double)SG_NCH * (1.0 + 4.0));
+    }
+    r->confident = 1;
+    for (ch = 0; ch < SG_NCH; ch++) {
+        sg_chres_t *c = &r->ch[ch];
+        sg_table_t tfit, thold;
+        sg_fit_t bf;
+        double mean = 0.0, tmax;
+        twinset_t ts;
+        size_t k;
+        for (k = 0; k < (size_t)r->n; k++) {
+            x[k] = ch < 3 ? log->acc[k][ch] : log->gyr[k][ch - 3];
+            mean += x[k];
+        }
+        mean /= (double)r->n;
+        c->q_full = sg_lattice_step(x, r->n, &c->q_full_z);
+        /* the lattice domain exists only where the values lie on one */
+        if (!(c->q_full_z > gsl_cdf_ugaussian_Qinv(0.5 * alpha))) {
+            c->q_full = 0.0;
+        }
+        if (real_features(x, &r->segs, &fc, c->q_full, ch, r->pl[ch], r->real[ch]) != 0) {
+            snprintf(err, err_size, "feature extraction failed (memory)");
+            free(x);
+            return -1;
+        }
+        sg_table_from(&r->pl[ch][SG_FIT], r->real[ch][SG_FIT], ch, r->rate_hz, 0.0,
+                      (double)r->segs.n[SG_FIT] / r->rate_hz, &tfit);
+        sg_table_from(&r->pl[ch][SG_HOLD], r->real[ch][SG_HOLD], ch, r->rate_hz,
+                      (double)r->segs.start[SG_HOLD] / r->rate_hz, (double)r->n / r->rate_hz, &thold);
+        /* confident answer: the held-out segment must give tight intervals
+         * (ADEV within about +-25 %, i.e. sd(ln AVAR) <= 0.5) over a decade */
+        {
+            double tlo = INFINITY, thi = 0.0;
+            for (k = 0; k < thold.n; k++) {
+                double var = 1.0 / thold.w[k] - 0.003 * 0.003;
+                if (var <= 0.25) {
+                    double tau = thold.m[k] / r->rate_hz;
+                    tlo = tau < tlo ? tau : tlo;
+                    thi = tau > thi ? tau : thi;
+                }
+            }
+            r->tau_span_dec[ch] = thi > 0.0 ? log10(thi / tlo) : 0.0;
+            if (r->tau_span_dec[ch] < 1.0) {
+                r->confident = 0;
+                snprintf(r->why, sizeof r->why,
+                         "the held-out segment (%.1f s) gives Allan deviations within +-25 %% over only %.2f "
+                         "decades of tau (a confident answer needs one decade)",
+                         (double)r->segs.n[SG_HOLD] / r->rate_hz, r->tau_span_dec[ch]);
+            }
+        }
+        if (tfit.n < 4) {
+            r->confident = 0;
+            snprintf(r->why, sizeof r->why, "the fit segment has fewer than 4 Allan points");
+            continue;
+        }
+        sg_evidence(x, (size_t)r->segs.n[SG_FIT], r->rate_hz, 0.0, c->q_full, &c->ev);
+        tmax = fit_tmax(r, ch);
+        if (sg_fit_model(&tfit, mean, NULL, 0, &c->ev, tmax, &bf) != 0) {
+            snprintf(err, err_size, "baseline fit failed on channel %s", sg_channel_name(ch));
+            free(x);
+            return -1;
+        }
+        c->baseline = bf.model;
+        c->final = bf.model;
+        c->active = 1;
+        if (twinset_run(&c->baseline, ch, &fc, &r->segs, c->q_full, S, o->seed + 1000u * (uint32_t)ch,
+                        r->pl[ch], &ts) != 0) {
+            snprintf(err, err_size, "twin simulation failed on channel %s", sg_channel_name(ch));
+            free(x);
+            return -1;
+        }
+        if (param_var(r, ch, &c->baseline, NULL, 0, &c->ev, tmax, &ts) != 0) {
+            snprintf(err, err_size, "out of memory");
+            free(x);
+            return -1;
+        }
+        for (g = 0; g < SG_NSEG; g++) {
+            r->twin[ch][g] = ts.v[g];
+            r->vx[ch][g] = ts.vx[g];
+            r->sh[ch][g] = ts.sh[g];
+            if (sg_compare(&r->pl[ch][g], r->real[ch][g], ts.v[g], S, ts.vx[g], ts.sh[g], alpha, &c->cmp[g]) != 0) {
+                snprintf(err, err_size, "out of memory");
+                free(x);
+                return -1;
+            }
+        }
+        c->gap_full = c->cmp[SG_FULL].significant;
+        c->gap_hold = c->cmp[SG_HOLD].significant;
+        done += 1.0;
+        if (prog != NULL) {
+            hx_progress_update(prog, done);
+        }
+        locate(r, ch, SG_FULL);
+        if ((c->gap_full || c->gap_hold) && r->confident) {
+            if (attribute(r, ch, x, &fc, &tfit, alpha, prog, &done) != 0) {
+                snprintf(err, err_size, "attribution failed on channel %s", sg_channel_name(ch));
+                free(x);
+                return -1;
+            }
+        } else {
+            c->within_noise = !c->gap_hold;
+        }
+    }
+    if (prog != NULL) {
+        hx_progress_end(prog);
+    }
+    free(x);
+    return 0;
+}
+
+/* ------------------------------------------------------------ verdict */
+
+static void verdict(sg_result_t *r)
+{
+    int ch, gaps = 0, sel = 0, open = 0;
+    if (!r->confident) {
+        snprintf(r->verdict, sizeof r->verdict, "too-short");
+        return;
+    }
+    for (ch = 0; ch < SG_NCH; ch++) {
+        const sg_chres_t *c = &r->ch[ch];
+        if (!c->active) {
+            continue;
+        }
+        if (c->gap_full || c->gap_hold) {
+            gaps++;
+            sel += c->nsel;
+            open += !c->within_noise;
+        }
+    }
+    if (r->tim.significant) {
+        int d;
+        gaps++;
+        for (d = 0; d < SG_TIM_NKIND; d++) {
+            sel += r->tim.sel[d];
+        }
+    }
+    if (r->nav != NULL) {
+        sg_nav_verdict_counts((const sg_nav_t *)r->nav, &gaps, &sel, &open);
+    }
+    if (gaps == 0) {
+        snprintf(r->verdict, sizeof r->verdict, "none");
+    } else if (sel == 0) {
+        snprintf(r->verdict, sizeof r->verdict, "unexplained");
+    } else if (open > 0) {
+        snprintf(r->verdict, sizeof r->verdict, "partly-explained");
+    } else {
+        snprintf(r->verdict, sizeof r->verdict, "explained");
+    }
+}
+
+int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_result_t *r, char *err, size_t err_size)
+{
+    double t0 = hx_now_s();
+    int rc;
+    memset(r, 0, sizeof *r);
+    snprintf(r->path, sizeof r->path, "%s", path != NULL ? path : "");
+    r->opts = *o;
+    if (r->opts.seeds < 3) {
+        r->opts.seeds = 3;
+    }
+    if (r->opts.seeds > 60) {
+        r->opts.seeds = 60;
+    }
+    r->S = r->opts.seeds;
+    r->n = (long)log->n;
+    r->rate_hz = sg_log_rate(log);
+    if (!(r->rate_hz > 0.0) || log->n < 16) {
+        snprintf(err, err_size, "the log has %zu samples and no usable rate", log->n);
+        return -1;
+    }
+    r->duration_s = (double)r->n / r->rate_hz;
+    r->domain_detected = sg_detect_domain(log, r->rate_hz);
+    r->domain = o->domain != 0 ? o->domain : r->domain_detected;
+    sg_segs_split(r->n, r->opts.fit_frac, &r->segs);
+    timing_analyse(log, r->rate_hz, &r->segs, r->opts.alpha, &r->tim);
+    if (r->domain == 1) {
+        rc = diagnose_static(log, r, err, err_size);
+    } else {
+        rc = sg_nav_diagnose(log, r, err, err_size);
+    }
+    if (rc != 0) {
+        return -1;
+    }
+    verdict(r);
+    r->elapsed_s = hx_now_s() - t0;
+    return 0;
+}
+
+void sg_result_free(sg_result_t *r)
+{
+    int g, ch;
+    for (ch = 0; ch < SG_NCH; ch++) {
+        for (g = 0; g < SG_NSEG; g++) {
+            sg_plist_free(&r->pl[ch][g]);
+            free(r->real[ch][g]);
+            free(r->twin[ch][g]);
+            free(r->twin_final[ch][g]);
+            free(r->vx[ch][g]);
+            free(r->vx_final[ch][g]);
+            free(r->sh[ch][g]);
+            free(r->sh_final[ch][g]);
+            sg_cmp_free(&r->ch[ch].cmp_final[g]);
+            sg_cmp_free(&r->ch[ch].cmp[g]);
+        }
+    }
+    if (r->nav != NULL) {
+        sg_nav_free((sg_nav_t *)r->nav);
+        free(r->nav);
+    }
+    memset(r, 0, sizeof *r);
+}

@@ -1,0 +1,405 @@
+/**
+ * @file hx_simgap.h
+ * @brief Sim-to-real gap diagnosis (docs/simgap.md): a twin of a real log
+ *        simulated from a baseline model fitted on a fit segment, the gap
+ *        located per domain with z-scores, and attribution of the gap to the
+ *        simulator's effect catalogue by forward selection scored on a
+ *        held-out segment.
+ *
+ * Domains: Allan (per channel and tau), spectral (per channel and frequency
+ * band), lattice (the value lattice that quantisation leaves, per channel),
+ * timing (duplicated and dropped samples, time-stamp jitter) and, for walks,
+ * navigation (zero-velocity-update innovations, residual velocity in stance,
+ * drift against the twin's Monte Carlo spread).
+ *
+ * Statistics are compared as z-scores: z = (y_real - mean_s y_twin,s) /
+ * sqrt(var_s(y_twin)/S + v_real), v_real the variance of the real estimate
+ * from its own confidence interval (equivalent degrees of freedom) or, where
+ * no theory exists, the twins' spread. The null distribution of the
+ * aggregate gap comes from treating each twin seed as the real log.
+ */
+#ifndef HX_SIMGAP_H
+#define HX_SIMGAP_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "footnav/fnav_allan.h"
+#include "footnav/fnav_imuerr.h"
+#include "footnav/fnav_welch.h"
+#include "hx_log.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+#define SG_NCH 6            /**< channels: ax ay az gx gy gz */
+#define SG_MAX_EFF 8        /**< effects in one channel model */
+#define SG_MAX_PAR 4        /**< parameters of one effect */
+#define SG_MAX_STEPS 3      /**< forward-selection steps */
+#define SG_ZCAP 40.0        /**< |z| counted at most this in aggregates */
+
+/** Domains of the gap. */
+enum { SG_ALLAN = 0, SG_PSD, SG_LATTICE, SG_TIMING, SG_NAV, SG_NDOM };
+/** Segments: the whole log, the fit segment, the held-out segment. */
+enum { SG_FULL = 0, SG_FIT, SG_HOLD, SG_NSEG };
+/** Kinds of navigation-domain points. */
+enum { SG_NAV_NIS = 0, SG_NAV_WHITE, SG_NAV_RESID, SG_NAV_DRIFT_H, SG_NAV_DRIFT_V, SG_NAV_NKIND };
+/** Kinds of timing points. */
+enum { SG_TIM_DUP = 0, SG_TIM_DROP, SG_TIM_JITTER, SG_TIM_NKIND };
+
+/** Domain name ("allan", "psd", "lattice", "timing", "nav"). */
+const char *sg_domain_name(int dom);
+/** Channel name ("ax" .. "gz"). */
+const char *sg_channel_name(int ch);
+/** Channel unit ("m/s^2" or "rad/s"). */
+const char *sg_channel_unit(int ch);
+
+/* ------------------------------------------------------------ points */
+
+/** One statistic of one segment (e.g. ln AVAR of gz at tau = 0.04 s). */
+typedef struct {
+    int dom, ch, kind;
+    double x, x_lo, x_hi;     /**< tau (s), band centre and edges (Hz), or time window (s) */
+    uint32_t m, lag, n_phase; /**< Allan: averaging factor, lag and phase count at its level */
+    double edf;               /**< degrees of freedom of the estimate (0: no theory) */
+} sg_point_t;
+
+/** A list of points. */
+typedef struct {
+    size_t n, cap;
+    sg_point_t *p;
+} sg_plist_t;
+
+void sg_plist_free(sg_plist_t *l);
+int sg_plist_add(sg_plist_t *l, const sg_point_t *p);
+
+/* ------------------------------------------------------------ features */
+
+/** Settings of the static features (defaults: sg_feat_cfg_default()). */
+typedef struct {
+    double rate_hz;           /**< sample rate */
+    unsigned allan_per_octave;/**< Allan grid density (2) */
+    double tau_frac;          /**< largest tau as a fraction of the segment (0.1) */
+    unsigned nfft_max;        /**< longest Welch segment (1024) */
+    unsigned bands_per_octave;/**< spectral bands per octave (3) */
+} sg_feat_cfg_t;
+
+sg_feat_cfg_t sg_feat_cfg_default(double rate_hz);
+
+/** Streaming features of one channel over one segment: Allan deviation,
+ *  Welch PSD bands, the value lattice at a given step. */
+typedef struct {
+    fnav_allan_t *allan;
+    fnav_welch_t *welch;
+    uint32_t tau[FNAV_ALLAN_MAX_POINTS];
+    size_t ntau;
+    long n_expect, n;
+    double q;                 /**< lattice step (0: none) */
+    double lc, ls, prev;      /**< lattice sums, previous value */
+    long lm;
+    int have_prev;
+    int lat_external;         /**< lattice sums set by the caller (lc, ls, lm), not pushed */
+    sg_feat_cfg_t cfg;
+} sg_acc_t;
+
+/** Prepare features of a segment of n samples; q the lattice step (0: none).
+ *  0, or -1 on memory / configuration failure. */
+int sg_acc_init(sg_acc_t *a, const sg_feat_cfg_t *cfg, long n, double q);
+void sg_acc_push(sg_acc_t *a, double x);
+void sg_acc_free(sg_acc_t *a);
+/**
+ * Finish: append the points of channel ch (when pl is not NULL) and write
+ * their values to vals (capacity cap; the count is returned, -1 on error).
+ * Values: Allan ln AVAR, spectral ln(mean PSD of the band), lattice the
+ * normal score of the Rayleigh statistic. Points are a function of the
+ * segment length and settings only, so a twin of the same length yields the
+ * same list.
+ */
+long sg_acc_finish(sg_acc_t *a, int ch, sg_plist_t *pl, double *vals, size_t cap);
+
+/** Lattice step of a series: the smallest difference between consecutive
+ *  values above 10 ulp, refined; 0 when there is none. Also the normal score
+ *  of the lattice statistic at that step (*z). */
+double sg_lattice_step(const double *x, size_t n, double *z);
+
+/** Normal score of the lattice (Rayleigh) statistic of the differences of x
+ *  at step q: exactly N(0, 1) for a continuous signal, large on a lattice. */
+double sg_lattice_z(const double *x, size_t n, double q);
+
+/* ------------------------------------------------------------ gap */
+
+/** Comparison of one segment's real values with S twins. */
+typedef struct {
+    size_t n;                 /**< points */
+    double *z;                /**< z-score per point */
+    double *twin_mean, *twin_sd; /**< mean and spread of the twins per point */
+    double *sd_tot;           /**< denominator of z */
+    double G;                 /**< aggregate gap: mean over domains of mean min(z^2, SG_ZCAP^2) */
+    double G_dom[SG_NDOM];    /**< per domain (NaN when the domain has no point) */
+    double maxz;              /**< largest |z| */
+    int imax;                 /**< its point */
+    int S;                    /**< twins */
+    double *G_null;           /**< G of each twin treated as the real (leave one out), S values */
+    double null_mean, null_sd;  /**< null distribution of G */
+    double G_crit;            /**< (1 - alpha) quantile of the null G (scaled chi-square) */
+    double z_crit;            /**< point threshold (Bonferroni over the points, alpha) */
+    int significant;          /**< G > G_crit or maxz > z_crit */
+} sg_cmp_t;
+
+void sg_cmp_free(sg_cmp_t *c);
+
+/**
+ * Compare real values with S twin rows (twin[s * n + j]).
+ * @param vx    extra variance per point (the fitted model's parameter
+ *              uncertainty), or NULL
+ * @param shift S rows: how much the model refitted to twin s moves each
+ *              point's expectation (the null's twin-as-real carries it), or NULL
+ * @param alpha family-wise level of the point test (0.05 / channels)
+ * @return 0, -1 on memory failure.
+ */
+int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int S, const double *vx,
+               const double *shift, double alpha, sg_cmp_t *out);
+
+/** G of the real against a subset of twin seeds (bootstrap helper):
+ *  idx[k], k < S2, are seed indices (with repeats). */
+double sg_gap_resampled(const sg_plist_t *pl, const double *real, const double *twin, int S, const int *idx, int S2,
+                        const double *vx);
+
+/* ------------------------------------------------------------ models */
+
+/** One effect of a channel model: catalogue id and parameter values in the
+ *  catalogue's parameter order (per-channel ones hold this channel's value). */
+typedef struct {
+    int id;                   /**< fnav_effect_id_t */
+    double p[SG_MAX_PAR];
+    double se[SG_MAX_PAR];    /**< standard errors (NaN: unknown) */
+} sg_effect_t;
+
+/** Model of one channel of a static log: the value at rest plus effects
+ *  (white and ar1 are the baseline). */
+typedef struct {
+    double mean;
+    int n;
+    sg_effect_t e[SG_MAX_EFF];
+} sg_chmodel_t;
+
+/** Find an effect in a model (index or -1). */
+int sg_model_find(const sg_chmodel_t *m, int id);
+/** Add or replace an effect. 0, -1 when full. */
+int sg_model_set(sg_chmodel_t *m, const sg_effect_t *e);
+
+/**
+ * Build a simulator configuration that applies channel model m to all six
+ * simulator channels (six independent realisations of the same channel).
+ */
+int sg_model_imuerr(const sg_chmodel_t *m, double rate_hz, uint32_t seed, fnav_imuerr_config_t *cfg);
+
+/* ------------------------------------------------------------ twin */
+
+/** Segments of a log: [start, start + n) per SG_FULL, SG_FIT, SG_HOLD. */
+typedef struct {
+    long start[SG_NSEG], n[SG_NSEG];
+} sg_segs_t;
+
+/** Split n samples: fit = the first frac, held out = the rest. */
+void sg_segs_split(long n, double frac, sg_segs_t *s);
+
+/**
+ * Simulate S static twins of one channel model over the segments and
+ * return their features: vals[seg][s * npts[seg] + j] with the point lists
+ * pl[seg] (the real's lists, checked). seed0 + run is the simulator seed of
+ * each run of six twins.
+ * @return 0, -1 on failure.
+ */
+int sg_twin_static(const sg_chmodel_t *m, int ch, const sg_feat_cfg_t *fc, const sg_segs_t *segs, double q, int S,
+                   uint32_t seed0, const sg_plist_t pl[SG_NSEG], double *vals[SG_NSEG]);
+
+/* ------------------------------------------------------------ fitting */
+
+/** Evidence of the special estimators on a channel's fit segment. */
+typedef struct {
+    double q, q_z;            /**< lattice step and its normal score */
+    double tone_hz, tone_amp, tone_phase, tone_score; /**< strongest line, amplitude, phase at sample 0,
+                                                           -log10 of its false-alarm probability */
+    int nsteps;               /**< bias steps detected */
+    double step_rms;          /**< their RMS size */
+    double slope;             /**< least-squares slope of the fit segment, u/s */
+} sg_evidence_t;
+
+/** Fit result of one model on the fit segment's Allan table. */
+typedef struct {
+    sg_chmodel_t model;
+    double Q;                 /**< weighted sum of squared log residuals */
+    int npts;
+    int ok;
+} sg_fit_t;
+
+/** Allan table of a segment for fitting: ln AVAR, m, EDF of each point. */
+typedef struct {
+    size_t n;
+    double lnav[FNAV_ALLAN_MAX_POINTS];
+    double m[FNAV_ALLAN_MAX_POINTS];
+    double w[FNAV_ALLAN_MAX_POINTS]; /**< 1 / var(ln AVAR) */
+    double rate_hz;
+    double t0_s, t1_s;        /**< segment time span (for thermal) */
+} sg_table_t;
+
+/** Allan table of the Allan points of channel ch in a point list / values. */
+void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate_hz, double t0_s, double t1_s,
+                   sg_table_t *t);
+
+/**
+ * Fit white + AR(1) (correlation time at most tmax_s) plus the effects
+ * listed in `with` (ids; their non-Allan parameters taken from ev) to a
+ * table. The fitted model keeps `mean`.
+ */
+int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, const sg_evidence_t *ev, double tmax_s,
+                 sg_fit_t *out);
+
+/** Exact Allan variance of a channel model at averaging factor m over a
+ *  segment spanning [t0_s, t1_s] (thermal depends on it). */
+double sg_model_avar(const sg_chmodel_t *mdl, double rate_hz, double m, double t0_s, double t1_s);
+
+/** Expected statistic of a point under a model: ln AVAR (Allan) or ln of
+ *  the band's mean one-sided PSD (spectral, continuous-time shapes); NaN
+ *  for other domains. Used for the spread of refitted models. */
+double sg_model_lnstat(const sg_chmodel_t *mdl, const sg_point_t *p, double rate_hz, double t0_s, double t1_s);
+
+/** Gather the special-estimator evidence of the fit segment x[0..n). */
+void sg_evidence(const double *x, size_t n, double rate_hz, double t0_s, double q_hint, sg_evidence_t *ev);
+
+/* ------------------------------------------------------------ diagnosis */
+
+/** Options of a diagnosis. */
+typedef struct {
+    int domain;               /**< 0 detect, 1 static, 2 walk */
+    int seeds;                /**< baseline twins (12) */
+    int seeds_cand;           /**< twins per candidate (12) */
+    int prescreen;            /**< candidates simulated per step (3) */
+    double fit_frac;          /**< fit segment fraction (0.6) */
+    double alpha;             /**< family-wise false-alarm level (0.05) */
+    uint32_t seed;            /**< first simulator seed */
+    int max_steps;            /**< forward-selection steps (3) */
+    int quiet;                /**< no progress */
+    const char *cmd;          /**< command name for messages */
+    const char *profile;      /**< walk: baseline noise profile (NULL: from the stances) */
+    int closed;               /**< walk: the walk ends where it started (drift check) */
+} sg_opts_t;
+
+sg_opts_t sg_opts_default(void);
+
+/** One location of a gap. */
+typedef struct {
+    int dom, ch, kind, seg;
+    double x_lo, x_hi;        /**< tau (s), frequency (Hz) or time (s) range */
+    double peak_z;            /**< signed z at the peak */
+    double ratio;             /**< real / twin at the peak (deviation for Allan, PSD, values) */
+    int npts;
+} sg_loc_t;
+
+/** One candidate tried in a step. */
+typedef struct {
+    int id;
+    sg_effect_t eff;          /**< fitted parameters */
+    double Q_fit;             /**< fit-segment objective with it */
+    int simulated;
+    double G_fit, G_hold;     /**< gaps with it */
+    double expl_hold, expl_lo, expl_hi; /**< explained fraction of the held-out excess gap, 68 % interval */
+    double expl_fit;
+} sg_cand_t;
+
+/** One forward-selection step of a channel. */
+typedef struct {
+    int ncand;
+    sg_cand_t cand[FNAV_EFFECT_COUNT];
+    int selected;             /**< index into cand, -1 none */
+    double G_hold_before, G_fit_before;
+} sg_step_t;
+
+/** Diagnosis of one channel. */
+typedef struct {
+    int active;               /**< channel present and analysed */
+    sg_chmodel_t baseline;    /**< fitted baseline */
+    sg_chmodel_t final;       /**< baseline + selected effects, refitted */
+    sg_evidence_t ev;
+    double q_full, q_full_z;  /**< lattice on the whole log */
+    sg_cmp_t cmp[SG_NSEG];    /**< baseline vs real */
+    sg_cmp_t cmp_final[SG_NSEG]; /**< final model vs real */
+    int nsteps;
+    sg_step_t step[SG_MAX_STEPS];
+    int nsel;
+    int sel_id[SG_MAX_STEPS];
+    double sel_expl[SG_MAX_STEPS], sel_lo[SG_MAX_STEPS], sel_hi[SG_MAX_STEPS];
+    int within_noise;         /**< held-out gap of the final model within the null band */
+    int gap_full;             /**< significant gap on the whole log with the baseline */
+    int gap_hold;             /**< ... on the held-out segment */
+} sg_chres_t;
+
+/** Timing-domain result. */
+typedef struct {
+    int have;                 /**< the log has time stamps */
+    double res_s;             /**< time-stamp resolution found */
+    long n_dup[SG_NSEG], n_drop[SG_NSEG], n_int[SG_NSEG];
+    double jit_sd[SG_NSEG];   /**< sd of interval - nominal over regular intervals, s */
+    double z[SG_NSEG][SG_TIM_NKIND];
+    int significant;
+    double dup_prob, drop_prob, stamp_s;   /**< fitted on the fit segment */
+    double z_after[SG_TIM_NKIND];          /**< held-out z with the fitted effects */
+    int sel[SG_TIM_NKIND];
+    double first_t[SG_TIM_NKIND];          /**< time of the first event */
+} sg_timing_t;
+
+/** Whole result. */
+typedef struct {
+    char path[512];
+    int domain;               /**< 1 static, 2 walk */
+    int domain_detected;
+    double rate_hz;
+    long n;
+    double duration_s;
+    sg_segs_t segs;
+    sg_opts_t opts;
+    int confident;
+    char why[256];            /**< too short: why */
+    double tau_span_dec[SG_NCH]; /**< decades of tau with a tight interval on the held-out segment */
+    sg_chres_t ch[SG_NCH];
+    sg_plist_t pl[SG_NCH][SG_NSEG];      /**< points per channel and segment */
+    double *real[SG_NCH][SG_NSEG];       /**< real values */
+    double *twin[SG_NCH][SG_NSEG];       /**< baseline twins, S rows */
+    double *twin_final[SG_NCH][SG_NSEG]; /**< final-model twins (NULL: the baseline's) */
+    double *vx[SG_NCH][SG_NSEG];         /**< parameter-uncertainty variance per point, baseline */
+    double *vx_final[SG_NCH][SG_NSEG];   /**< ... final model */
+    double *sh[SG_NCH][SG_NSEG];         /**< refit shifts of the baseline twins (S rows) */
+    double *sh_final[SG_NCH][SG_NSEG];   /**< ... final model */
+    int S;
+    sg_timing_t tim;
+    size_t nloc;
+    sg_loc_t loc[64];
+    char verdict[32];         /**< none, explained, partly-explained, unexplained, too-short */
+    double elapsed_s;
+    void *nav;                /**< walk-domain result (hx_simgap_nav.h) */
+} sg_result_t;
+
+/** Run the whole diagnosis on a loaded log. 0, or -1 with err filled. */
+int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_result_t *r, char *err, size_t err_size);
+void sg_result_free(sg_result_t *r);
+
+/** Static or walk: stillness over the whole log (1 static, 2 walk). */
+int sg_detect_domain(const hx_log_t *log, double rate_hz);
+
+/** Nominal rate of a log (meta, else median interval). */
+double sg_log_rate(const hx_log_t *log);
+
+/** One effect with its parameters as text ("quant (lsb ..., plain rounding)"). */
+void sg_effect_text(char *b, size_t n, int ch, const sg_effect_t *e);
+
+/** Text summary. */
+void sg_print_summary(FILE *f, const sg_result_t *r);
+/** JSON report (schema in docs/simgap.md). 0, -1 on failure (err). */
+int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_size);
+/** Plots into a directory. 0, -1 on failure (printed). */
+int sg_write_plots(const sg_result_t *r, const char *dir, const char *cmd);
+
+#endif /* HX_SIMGAP_H */

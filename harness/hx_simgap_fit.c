@@ -1,0 +1,941 @@
+/* Sim-to-real gap: channel models, their exact Allan variance, the joint
+ * fit of the baseline and candidate effects to a segment's Allan table, and
+ * the special estimators of effects whose signature is not (only) in the
+ * Allan curve: value lattice, spectral line, bias steps (hx_simgap.h,
+ * docs/simgap.md). */
+#include "hx_simgap.h"
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_fft_real.h>
+#include <gsl/gsl_sf_psi.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ------------------------------------------------------------ models */
+
+int sg_model_find(const sg_chmodel_t *m, int id)
+{
+    int i;
+    for (i = 0; i < m->n; i++) {
+        if (m->e[i].id == id) {
+            return i;
+        }
+    }
+    return -1;
+}
+
+int sg_model_set(sg_chmodel_t *m, const sg_effect_t *e)
+{
+    int i = sg_model_find(m, e->id);
+    if (i < 0) {
+        if (m->n >= SG_MAX_EFF) {
+            return -1;
+        }
+        i = m->n++;
+    }
+    m->e[i] = *e;
+    return 0;
+}
+
+int sg_model_imuerr(const sg_chmodel_t *m, double rate_hz, uint32_t seed, fnav_imuerr_config_t *cfg)
+{
+    int i, k;
+    *cfg = fnav_imuerr_config_default;
+    cfg->seed = seed;
+    cfg->rate_hz = (fnav_real_t)rate_hz;
+    cfg->oversample = 1u;
+    for (i = 0; i < m->n; i++) {
+        const sg_effect_t *e = &m->e[i];
+        const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)e->id);
+        if (info == NULL) {
+            return -1;
+        }
+        for (k = 0; k < info->nparams && k < SG_MAX_PAR; k++) {
+            if (fnav_imuerr_param_set(cfg, (fnav_effect_id_t)e->id, k, info->allowed, (fnav_real_t)e->p[k]) !=
+                FNAV_OK) {
+                return -1;
+            }
+        }
+        if (fnav_imuerr_enable(cfg, (fnav_effect_id_t)e->id, info->allowed) != FNAV_OK) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------ exact AVAR */
+
+/* Allan variance of a unit-variance AR(1), a = 1 / (T f_s), over m samples
+ * (the same expression as hx_allan_ident.c, docs/allan.md). */
+static double ar1_unit(double m, double a)
+{
+    const double eps = -expm1(-a);
+    const double c = 1.0 - eps;
+    const double omc = -expm1(-m * a);
+    double br;
+    if (m * a < 1e-4) {
+        return -expm1(-2.0 * a) * (2.0 * m * m + 1.0) / (6.0 * m);
+    }
+    br = m + (2.0 * c * (m * eps - omc) - c * omc * omc) / (eps * eps);
+    return br > 0.0 ? br / (m * m) : 0.0;
+}
+
+/* AVAR per B^2 of the simulator's 12-pole flicker over [lo, hi]. */
+static double flicker_unit(double m, double fs, double lo, double hi)
+{
+    const int P = FNAV_IMUERR_FLICKER_POLES;
+    double lnr = log(hi / lo) / (double)(P - 1), s = 0.0;
+    int i;
+    for (i = 0; i < P; i++) {
+        double T = lo * exp(lnr * (double)i);
+        s += ar1_unit(m, 1.0 / (T * fs));
+    }
+    return s * lnr / M_PI;
+}
+
+/* AVAR per A^2 of the warm-up A (1 - exp(-t/T)) over a segment [a, b]:
+ * block-mean differences are A (T/tau)(1 - e^(-tau/T))^2 e^(-t/T). */
+static double thermal_unit(double tau, double T, double a, double b)
+{
+    double c = b - 2.0 * tau, me, x;
+    if (!(c > a) || !(T > 0.0)) {
+        return 0.0;
+    }
+    me = T / (2.0 * (c - a)) * (exp(-2.0 * a / T) - exp(-2.0 * c / T));
+    x = -expm1(-tau / T);
+    return 0.5 * (T / tau) * (T / tau) * x * x * x * x * me;
+}
+
+static double vib_unit(double m, double w)
+{
+    double s1 = sin(0.5 * w * m), s2 = sin(0.5 * w);
+    if (fabs(s2) < 1e-15) {
+        return 0.0;
+    }
+    return s1 * s1 * s1 * s1 / (m * m * s2 * s2);
+}
+
+/* Unit basis of an effect's AVAR (coefficient = the square of its magnitude
+ * parameter); the other parameters are taken from e. */
+static double effect_unit(const sg_effect_t *e, double fs, double m, double t0, double t1)
+{
+    const double tau = m / fs;
+    switch (e->id) {
+    case FNAV_EFFECT_WHITE: return fs / m;
+    case FNAV_EFFECT_AR1: return ar1_unit(m, 1.0 / (e->p[0] * fs));
+    case FNAV_EFFECT_QUANT: return e->p[1] != 0.0 ? 1.0 / (4.0 * m * m) : 1.0 / (12.0 * m);
+    case FNAV_EFFECT_FLICKER: return flicker_unit(m, fs, e->p[1], e->p[2]);
+    case FNAV_EFFECT_RRW: return (2.0 * m * m + 1.0) / (6.0 * m * fs);
+    case FNAV_EFFECT_RAMP: return 0.5 * tau * tau;
+    case FNAV_EFFECT_THERMAL: return e->p[1] * e->p[1] * thermal_unit(tau, e->p[2], t0, t1);
+    case FNAV_EFFECT_VIBRATION: return vib_unit(m, 2.0 * M_PI * e->p[1] / fs);
+    case FNAV_EFFECT_JUMPS: return -expm1(-e->p[0] / fs) * (2.0 * m * m + 1.0) / (6.0 * m);
+    default: return 0.0;
+    }
+}
+
+/* Index of the magnitude parameter of an effect (its coefficient is its
+ * square), -1 for effects without a static Allan signature. */
+static int mag_param(int id)
+{
+    switch (id) {
+    case FNAV_EFFECT_WHITE: return 0;
+    case FNAV_EFFECT_AR1: return 1;
+    case FNAV_EFFECT_QUANT: return 0;
+    case FNAV_EFFECT_FLICKER: return 0;
+    case FNAV_EFFECT_RRW: return 0;
+    case FNAV_EFFECT_RAMP: return 0;
+    case FNAV_EFFECT_THERMAL: return 0;
+    case FNAV_EFFECT_VIBRATION: return 0;
+    case FNAV_EFFECT_JUMPS: return 1;
+    default: return -1;
+    }
+}
+
+double sg_model_avar(const sg_chmodel_t *mdl, double rate_hz, double m, double t0_s, double t1_s)
+{
+    double v = 0.0;
+    int i;
+    for (i = 0; i < mdl->n; i++) {
+        const sg_effect_t *e = &mdl->e[i];
+        int k = mag_param(e->id);
+        if (k < 0) {
+            continue;
+        }
+        v += e->p[k] * e->p[k] * effect_unit(e, rate_hz, m, t0_s, t1_s);
+    }
+    return v;
+}
+
+/* One-sided PSD of a model at f (continuous-time shapes, u^2/Hz). */
+static double model_psd(const sg_chmodel_t *mdl, double f, double fs)
+{
+    double S = 0.0;
+    int i;
+    for (i = 0; i < mdl->n; i++) {
+        const sg_effect_t *e = &mdl->e[i];
+        double w = 2.0 * M_PI * f;
+        switch (e->id) {
+        case FNAV_EFFECT_WHITE: S += 2.0 * e->p[0] * e->p[0]; break;
+        case FNAV_EFFECT_AR1: S += 4.0 * e->p[1] * e->p[1] * e->p[0] / (1.0 + w * w * e->p[0] * e->p[0]); break;
+        case FNAV_EFFECT_FLICKER: S += e->p[0] * e->p[0] / (M_PI * f); break;
+        case FNAV_EFFECT_RRW: S += e->p[0] * e->p[0] / (2.0 * M_PI * M_PI * f * f); break;
+        case FNAV_EFFECT_JUMPS: S += e->p[0] * e->p[1] * e->p[1] / (2.0 * M_PI * M_PI * f * f); break;
+        case FNAV_EFFECT_QUANT: {
+            double q2 = e->p[0] * e->p[0] / 12.0, sh = 2.0 * sin(M_PI * f / fs);
+            S += (e->p[1] != 0.0 ? sh * sh : 1.0) * 2.0 * q2 / fs;
+            break;
+        }
+        default: break;
+        }
+    }
+    return S;
+}
+
+double sg_model_lnstat(const sg_chmodel_t *mdl, const sg_point_t *p, double rate_hz, double t0_s, double t1_s)
+{
+    if (p->dom == SG_ALLAN) {
+        double v = sg_model_avar(mdl, rate_hz, (double)p->m, t0_s, t1_s);
+        return v > 0.0 ? log(v) : (double)NAN;
+    }
+    if (p->dom == SG_PSD && p->n_phase > 0u && p->lag > 0u) {
+        double df = rate_hz / (double)p->n_phase, s = 0.0;
+        uint32_t k;
+        for (k = p->m; k < p->m + p->lag; k++) {
+            s += model_psd(mdl, (double)k * df, rate_hz);
+        }
+        s /= (double)p->lag;
+        return s > 0.0 ? log(s) : (double)NAN;
+    }
+    return (double)NAN;
+}
+
+/* ------------------------------------------------------------ table */
+
+void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate_hz, double t0_s, double t1_s,
+                   sg_table_t *t)
+{
+    size_t j, k = 0;
+    size_t idx[FNAV_ALLAN_MAX_POINTS];
+    memset(t, 0, sizeof *t);
+    t->rate_hz = rate_hz;
+    t->t0_s = t0_s;
+    t->t1_s = t1_s;
+    for (j = 0; j < pl->n && k < FNAV_ALLAN_MAX_POINTS; j++) {
+        if (pl->p[j].dom == SG_ALLAN && pl->p[j].ch == ch && vals[j] > -600.0) {
+            idx[k] = j;
+            t->lnav[k] = vals[j];
+            t->m[k] = (double)pl->p[j].m;
+            k++;
+        }
+    }
+    t->n = k;
+    for (j = 0; j < k; j++) {
+        size_t a = j > 0 ? j - 1 : j, b = j + 1 < k ? j + 1 : j;
+        double sl = 0.0, nu, var;
+        fnav_allan_noise_t type;
+        if (a != b) {
+            sl = 0.5 * (t->lnav[b] - t->lnav[a]) / log(t->m[b] / t->m[a]);
+        }
+        type = fnav_allan_noise_from_slope((fnav_real_t)sl);
+        if (type == FNAV_ALLAN_NOISE_RAMP || type == FNAV_ALLAN_NOISE_UNKNOWN) {
+            type = type == FNAV_ALLAN_NOISE_RAMP ? FNAV_ALLAN_NOISE_RRW : FNAV_ALLAN_NOISE_WHITE;
+        }
+        nu = fnav_allan_edf(fnav_allan_noise_alpha(type), pl->p[idx[j]].lag, pl->p[idx[j]].n_phase, 1);
+        var = nu > 0.0 ? (nu > 1e6 ? 2.0 / nu : gsl_sf_psi_1(0.5 * nu)) : 1.0;
+        /* 0.3 % model floor: the short-tau points' EDF reach 10^6 */
+        t->w[j] = 1.0 / (var + 0.003 * 0.003);
+    }
+}
+
+/* ------------------------------------------------------------ NNLS */
+
+#define NCOL 8
+
+/* Solve the k x k system M c = v (Gauss with partial pivoting); -1 if singular. */
+static int solve(int k, double M[NCOL][NCOL], double *v, double *c)
+{
+    double A[NCOL][NCOL + 1];
+    int i, j, r;
+    for (i = 0; i < k; i++) {
+        for (j = 0; j < k; j++) {
+            A[i][j] = M[i][j];
+        }
+        A[i][k] = v[i];
+    }
+    for (i = 0; i < k; i++) {
+        int p = i;
+        for (r = i + 1; r < k; r++) {
+            if (fabs(A[r][i]) > fabs(A[p][i])) {
+                p = r;
+            }
+        }
+        if (!(fabs(A[p][i]) > 1e-300)) {
+            return -1;
+        }
+        if (p != i) {
+            for (j = 0; j <= k; j++) {
+                double t = A[i][j];
+                A[i][j] = A[p][j];
+                A[p][j] = t;
+            }
+        }
+        for (r = i + 1; r < k; r++) {
+            double f = A[r][i] / A[i][i];
+            for (j = i; j <= k; j++) {
+                A[r][j] -= f * A[i][j];
+            }
+        }
+    }
+    for (i = k - 1; i >= 0; i--) {
+        double s = A[i][k];
+        for (j = i + 1; j < k; j++) {
+            s -= A[i][j] * c[j];
+        }
+        c[i] = s / A[i][i];
+    }
+    return 0;
+}
+
+/* Non-negative least squares min |A c - y|^2, c >= 0, by enumerating the
+ * active sets (at most NCOL = 8 columns, 256 sets). Columns are scaled to
+ * unit norm first. Returns the residual. */
+static double nnls(size_t n, int k, double A[][NCOL], const double *y, double *c)
+{
+    double scale[NCOL], best = INFINITY, cbest[NCOL];
+    unsigned set, nsets = 1u << k;
+    int i, j;
+    size_t r;
+    for (j = 0; j < k; j++) {
+        double s = 0.0;
+        for (r = 0; r < n; r++) {
+            s += A[r][j] * A[r][j];
+        }
+        scale[j] = s > 0.0 ? 1.0 / sqrt(s) : 0.0;
+        cbest[j] = 0.0;
+    }
+    for (set = 0; set < nsets; set++) {
+        int idx[NCOL], na = 0, ok = 1;
+        double M[NCOL][NCOL], v[NCOL], cc[NCOL], res = 0.0;
+        for (j = 0; j < k; j++) {
+            if ((set >> j) & 1u) {
+                if (scale[j] == 0.0) {
+                    ok = 0;
+                }
+                idx[na++] = j;
+            }
+        }
+        if (!ok) {
+            continue;
+        }
+        for (i = 0; i < na; i++) {
+            v[i] = 0.0;
+            for (j = 0; j < na; j++) {
+                double s = 0.0;
+                for (r = 0; r < n; r++) {
+                    s += A[r][idx[i]] * A[r][idx[j]];
+                }
+                M[i][j] = s * scale[idx[i]] * scale[idx[j]];
+            }
+            for (r = 0; r < n; r++) {
+                v[i] += A[r][idx[i]] * y[r];
+            }
+            v[i] *= scale[idx[i]];
+        }
+        if (na > 0 && solve(na, M, v, cc) != 0) {
+            continue;
+        }
+        for (i = 0; i < na; i++) {
+            if (!(cc[i] >= 0.0)) {
+                ok = 0;
+            }
+        }
+        if (!ok) {
+            continue;
+        }
+        for (r = 0; r < n; r++) {
+            double f = 0.0;
+            for (i = 0; i < na; i++) {
+                f += A[r][idx[i]] * cc[i] * scale[idx[i]];
+            }
+            res += (f - y[r]) * (f - y[r]);
+        }
+        if (res < best) {
+            best = res;
+            for (j = 0; j < k; j++) {
+                cbest[j] = 0.0;
+            }
+            for (i = 0; i < na; i++) {
+                cbest[idx[i]] = cc[i] * scale[idx[i]];
+            }
+        }
+    }
+    for (j = 0; j < k; j++) {
+        c[j] = cbest[j];
+    }
+    return best;
+}
+
+/* ------------------------------------------------------------ fit */
+
+/* Least improvement of the Allan objective that keeps an AR(1) term. */
+#define SG_AR1_DQ 10.0
+
+/* Q = sum w (ln a - ln model)^2 of a complete model. */
+static double objective(const sg_table_t *t, const sg_chmodel_t *m)
+{
+    double Q = 0.0;
+    size_t j;
+    for (j = 0; j < t->n; j++) {
+        double mv = sg_model_avar(m, t->rate_hz, t->m[j], t->t0_s, t->t1_s), r;
+        if (!(mv > 0.0)) {
+            mv = 1e-300;
+        }
+        r = t->lnav[j] - log(mv);
+        Q += t->w[j] * r * r;
+    }
+    return Q;
+}
+
+/* Everything about one fit configuration: the model skeleton (effects with
+ * their fixed parameters), which have a free coefficient (the square of the
+ * magnitude), and the fixed ones. */
+typedef struct {
+    sg_chmodel_t m;
+    int free_[SG_MAX_EFF];
+} skel_t;
+
+/* Solve the linear coefficients of a skeleton for fixed nonlinear params;
+ * writes the magnitudes into s->m and returns the log objective. */
+static double solve_skel(const sg_table_t *t, skel_t *s)
+{
+    double A[FNAV_ALLAN_MAX_POINTS][NCOL], y[FNAV_ALLAN_MAX_POINTS], c[NCOL];
+    int col[SG_MAX_EFF], k = 0, i;
+    size_t j;
+    for (i = 0; i < s->m.n; i++) {
+        col[i] = s->free_[i] ? k++ : -1;
+    }
+    for (j = 0; j < t->n; j++) {
+        double a = exp(t->lnav[j]), sw = sqrt(t->w[j]), fixed = 0.0;
+        for (i = 0; i < s->m.n; i++) {
+            const sg_effect_t *e = &s->m.e[i];
+            double u = effect_unit(e, t->rate_hz, t->m[j], t->t0_s, t->t1_s);
+            if (col[i] >= 0) {
+                A[j][col[i]] = sw * u / a;
+            } else if (mag_param(e->id) >= 0) {
+                double mg = e->p[mag_param(e->id)];
+                fixed += mg * mg * u;
+            }
+        }
+        y[j] = sw * (a - fixed) / a;
+    }
+    (void)nnls(t->n, k, A, y, c);
+    for (i = 0; i < s->m.n; i++) {
+        if (col[i] >= 0) {
+            s->m.e[i].p[mag_param(s->m.e[i].id)] = sqrt(c[col[i]] > 0.0 ? c[col[i]] : 0.0);
+        }
+    }
+    return objective(t, &s->m);
+}
+
+static void set_effect(sg_effect_t *e, int id)
+{
+    const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)id);
+    fnav_imuerr_config_t d = fnav_imuerr_config_default;
+    int k;
+    memset(e, 0, sizeof *e);
+    e->id = id;
+    for (k = 0; k < SG_MAX_PAR; k++) {
+        e->se[k] = (double)NAN;
+        if (info != NULL && k < info->nparams) {
+            e->p[k] = (double)fnav_imuerr_param_get(&d, (fnav_effect_id_t)id, k, 0);
+        }
+    }
+}
+
+/* Standard errors of the magnitudes (and of the AR(1) time) from the
+ * Gauss-Newton covariance of the log parameters. */
+static void fit_errors(const sg_table_t *t, skel_t *s)
+{
+    enum { NP = 10 };
+    double J[FNAV_ALLAN_MAX_POINTS][NP], M[NCOL][NCOL], cov[NP][NP];
+    int pe[NP], pk[NP], np = 0, i, a, b;
+    size_t j;
+    for (i = 0; i < s->m.n && np < NP - 1; i++) {
+        int k = mag_param(s->m.e[i].id);
+        if (s->free_[i] && k >= 0 && s->m.e[i].p[k] > 0.0) {
+            pe[np] = i;
+            pk[np] = k;
+            np++;
+        }
+        if (s->m.e[i].id == FNAV_EFFECT_AR1 && s->m.e[i].p[1] > 0.0 && np < NP) {
+            pe[np] = i;
+            pk[np] = 0;
+            np++;
+        }
+    }
+    if (np == 0 || np > NCOL || (size_t)np >= t->n) {
+        return;
+    }
+    for (a = 0; a < np; a++) {
+        double h = 1e-4;
+        sg_chmodel_t mp = s->m, mm = s->m;
+        mp.e[pe[a]].p[pk[a]] *= exp(h);
+        mm.e[pe[a]].p[pk[a]] *= exp(-h);
+        for (j = 0; j < t->n; j++) {
+            double vp = sg_model_avar(&mp, t->rate_hz, t->m[j], t->t0_s, t->t1_s);
+            double vm = sg_model_avar(&mm, t->rate_hz, t->m[j], t->t0_s, t->t1_s);
+            J[j][a] = sqrt(t->w[j]) * (log(vp > 0.0 ? vp : 1e-300) - log(vm > 0.0 ? vm : 1e-300)) / (2.0 * h);
+        }
+    }
+    for (a = 0; a < np; a++) {
+        for (b = 0; b < np; b++) {
+            double sum = 0.0;
+            for (j = 0; j < t->n; j++) {
+                sum += J[j][a] * J[j][b];
+            }
+            M[a][b] = sum;
+        }
+    }
+    for (a = 0; a < np; a++) {
+        double e[NCOL], col[NCOL];
+        for (b = 0; b < np; b++) {
+            e[b] = (a == b) ? 1.0 : 0.0;
+        }
+        if (solve(np, M, e, col) != 0) {
+            return;
+        }
+        for (b = 0; b < np; b++) {
+            cov[b][a] = col[b];
+        }
+    }
+    for (a = 0; a < np; a++) {
+        double v = cov[a][a];
+        sg_effect_t *e = &s->m.e[pe[a]];
+        e->se[pk[a]] = v > 0.0 ? e->p[pk[a]] * sqrt(v) : (double)NAN;
+    }
+}
+
+int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, const sg_evidence_t *ev, double tmax_s,
+                 sg_fit_t *out)
+{
+    skel_t s, best;
+    int i, iw = -1, ia = -1, it = -1, nq, qv, ngT, gi, ti, have_th = 0;
+    double tmin_s, bestQ = INFINITY, span = t->t1_s - t->t0_s;
+    memset(out, 0, sizeof *out);
+    memset(&s, 0, sizeof s);
+    if (t->n < 4) {
+        return -1;
+    }
+    s.m.mean = mean;
+    set_effect(&s.m.e[0], FNAV_EFFECT_WHITE);
+    set_effect(&s.m.e[1], FNAV_EFFECT_AR1);
+    s.free_[0] = s.free_[1] = 1;
+    iw = 0;
+    ia = 1;
+    s.m.n = 2;
+    best = s;
+    for (i = 0; i < nwith; i++) {
+        sg_effect_t e;
+        set_effect(&e, with[i]);
+        switch (with[i]) {
+        case FNAV_EFFECT_QUANT:
+            e.p[0] = ev->q;
+            break;
+        case FNAV_EFFECT_VIBRATION:
+            e.p[0] = ev->tone_amp;
+            e.p[1] = ev->tone_hz;
+            e.p[2] = ev->tone_phase;
+            break;
+        case FNAV_EFFECT_JUMPS:
+            e.p[0] = (ev->nsteps > 0 ? (double)ev->nsteps : 1.0) / (span > 0.0 ? span : 1.0);
+            break;
+        case FNAV_EFFECT_THERMAL:
+            have_th = 1;
+            break;
+        default:
+            break;
+        }
+        if (with[i] == FNAV_EFFECT_QUANT && !(e.p[0] > 0.0)) {
+            return -1;
+        }
+        if (with[i] == FNAV_EFFECT_VIBRATION && !(e.p[1] > 0.0)) {
+            return -1;
+        }
+        s.free_[s.m.n] = (with[i] != FNAV_EFFECT_QUANT && with[i] != FNAV_EFFECT_VIBRATION);
+        if (with[i] == FNAV_EFFECT_THERMAL) {
+            it = s.m.n;
+        }
+        s.m.e[s.m.n++] = e;
+        if (s.m.n >= SG_MAX_EFF) {
+            break;
+        }
+    }
+    (void)iw;
+    /* AR(1) correlation time grid: from one sample to tmax */
+    tmin_s = 1.0 / t->rate_hz;
+    if (!(tmax_s > tmin_s)) {
+        tmax_s = 2.0 * tmin_s;
+    }
+    ngT = 40;
+    nq = (ev != NULL && sg_model_find(&s.m, FNAV_EFFECT_QUANT) >= 0) ? 2 : 1;
+    for (qv = 0; qv < nq; qv++) {
+        int iq = sg_model_find(&s.m, FNAV_EFFECT_QUANT);
+        if (iq >= 0) {
+            s.m.e[iq].p[1] = (double)qv;
+        }
+        for (ti = 0; ti < (have_th ? 24 : 1); ti++) {
+            if (have_th) {
+                /* warm-up time constants from 10 s to twice the segment */
+                double lo = 10.0, hi = 2.0 * (t->t1_s > 20.0 ? t->t1_s : 20.0);
+                s.m.e[it].p[2] = lo * pow(hi / lo, (double)ti / 23.0);
+            }
+            for (gi = 0; gi < ngT; gi++) {
+                double Q;
+                s.m.e[ia].p[0] = tmin_s * pow(tmax_s / tmin_s, (double)gi / (double)(ngT - 1));
+                Q = solve_skel(t, &s);
+                if (Q < bestQ) {
+                    bestQ = Q;
+                    best = s;
+                }
+            }
+        }
+    }
+    if (!isfinite(bestQ)) {
+        return -1;
+    }
+    /* refine the AR(1) time: golden section in ln T around the grid point */
+    {
+        double step = log(tmax_s / tmin_s) / (double)(ngT - 1);
+        double lo = log(best.m.e[ia].p[0]) - step, hi = log(best.m.e[ia].p[0]) + step;
+        const double gr = 0.6180339887498949;
+        int k;
+        if (lo < log(tmin_s)) {
+            lo = log(tmin_s);
+        }
+        if (hi > log(tmax_s)) {
+            hi = log(tmax_s);
+        }
+        for (k = 0; k < 30 && hi > lo; k++) {
+            skel_t s1 = best, s2 = best;
+            double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo), q1, q2;
+            s1.m.e[ia].p[0] = exp(x1);
+            s2.m.e[ia].p[0] = exp(x2);
+            q1 = solve_skel(t, &s1);
+            q2 = solve_skel(t, &s2);
+            if (q1 < q2) {
+                hi = x2;
+                if (q1 < bestQ) {
+                    bestQ = q1;
+                    best = s1;
+                }
+            } else {
+                lo = x1;
+                if (q2 < bestQ) {
+                    bestQ = q2;
+                    best = s2;
+                }
+            }
+        }
+    }
+    /* keep the AR(1) term only when it pays: without it the objective must
+     * be worse by more than SG_AR1_DQ (the Allan points are strongly
+     * correlated, so Q over-counts their information; a bump fitted to
+     * noise would make the twin's shape wrong on the held-out data) */
+    {
+        skel_t s0 = best;
+        double Q0;
+        s0.free_[ia] = 0;
+        s0.m.e[ia].p[1] = 0.0;
+        Q0 = solve_skel(t, &s0);
+        if (Q0 - bestQ < SG_AR1_DQ) {
+            best = s0;
+            bestQ = Q0;
+            best.m.e[ia].p[0] = 1.0;
+        }
+    }
+    /* signs of the drifts from the fit segment's slope */
+    for (i = 0; i < best.m.n; i++) {
+        sg_effect_t *e = &best.m.e[i];
+        if (e->id == FNAV_EFFECT_RAMP && ev != NULL && ev->slope < 0.0) {
+            e->p[0] = -e->p[0];
+        }
+        if (e->id == FNAV_EFFECT_THERMAL && ev != NULL && ev->slope < 0.0) {
+            /* coef * rise is what the data fix; rise keeps its default */
+            e->p[0] = -e->p[0];
+        }
+    }
+    fit_errors(t, &best);
+    for (i = 0; i < best.m.n; i++) {
+        sg_effect_t *e = &best.m.e[i];
+        if (e->id == FNAV_EFFECT_THERMAL && isfinite(e->se[0])) {
+            e->se[0] = fabs(e->se[0]);
+        }
+        if (e->id == FNAV_EFFECT_AR1 && !(e->p[1] > 0.0)) {
+            /* no AR(1) part: keep a harmless time */
+            e->p[1] = 0.0;
+        }
+    }
+    out->model = best.m;
+    out->Q = bestQ;
+    out->npts = (int)t->n;
+    out->ok = 1;
+    return 0;
+}
+
+/* ------------------------------------------------------------ evidence */
+
+/* |DFT|^2 with a Hann window at frequency f (cycles per sample), and the
+ * complex value. */
+static double dft_hann(const double *x, size_t n, double f, double *re, double *im)
+{
+    double cr = 0.0, ci = 0.0, wsum = 0.0;
+    double c1 = cos(2.0 * M_PI * f), s1 = -sin(2.0 * M_PI * f), c = 1.0, s = 0.0;
+    size_t k;
+    for (k = 0; k < n; k++) {
+        double w = 0.5 - 0.5 * cos(2.0 * M_PI * (double)k / (double)n), t;
+        cr += w * x[k] * c;
+        ci += w * x[k] * s;
+        wsum += w;
+        t = c * c1 - s * s1;
+        s = c * s1 + s * c1;
+        c = t;
+        if ((k & 1023u) == 1023u) {
+            /* re-anchor the recurrence */
+            c = cos(2.0 * M_PI * f * (double)(k + 1));
+            s = -sin(2.0 * M_PI * f * (double)(k + 1));
+        }
+    }
+    *re = cr / wsum;
+    *im = ci / wsum;
+    return (*re) * (*re) + (*im) * (*im);
+}
+
+static int cmp_d(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Strongest spectral line of x (mean removed), by a Hann periodogram
+ * against the local median, refined by maximising the DFT. */
+static void find_tone(const double *x, size_t n, double fs, sg_evidence_t *ev)
+{
+    size_t n2 = 1, k, kbest = 0, nb;
+    double *b, mean = 0.0, best = 0.0, *tmp;
+    const size_t blk = 64;
+    ev->tone_hz = ev->tone_amp = ev->tone_phase = 0.0;
+    ev->tone_score = 0.0;
+    while (2 * n2 <= n) {
+        n2 *= 2;
+    }
+    if (n2 < 1024) {
+        return;
+    }
+    b = (double *)malloc(n2 * sizeof *b);
+    tmp = (double *)malloc((n2 / 2 + 1) * sizeof *tmp);
+    if (b == NULL || tmp == NULL) {
+        free(b);
+        free(tmp);
+        return;
+    }
+    for (k = 0; k < n2; k++) {
+        mean += x[k];
+    }
+    mean /= (double)n2;
+    for (k = 0; k < n2; k++) {
+        double w = 0.5 - 0.5 * cos(2.0 * M_PI * (double)k / (double)n2);
+        b[k] = w * (x[k] - mean);
+    }
+    if (gsl_fft_real_radix2_transform(b, 1, n2) != 0) {
+        free(b);
+        free(tmp);
+        return;
+    }
+    /* half-complex: b[k] = Re, b[n2 - k] = Im */
+    nb = n2 / 2;
+    for (k = 1; k < nb; k++) {
+        tmp[k] = b[k] * b[k] + b[n2 - k] * b[n2 - k];
+    }
+    /* local median per block of 64 bins; lines below 8 bins are drift */
+    {
+        size_t k0;
+        double med[64];
+        for (k0 = 8; k0 + blk <= nb; k0 += blk) {
+            size_t i;
+            double md;
+            for (i = 0; i < blk; i++) {
+                med[i] = tmp[k0 + i];
+            }
+            qsort(med, blk, sizeof med[0], cmp_d);
+            md = 0.5 * (med[blk / 2 - 1] + med[blk / 2]);
+            for (i = 0; i < blk && md > 0.0; i++) {
+                double r = tmp[k0 + i] / md;
+                if (r > best) {
+                    best = r;
+                    kbest = k0 + i;
+                }
+            }
+        }
+    }
+    free(b);
+    if (kbest == 0) {
+        free(tmp);
+        return;
+    }
+    /* ratio to the median of an exponential: P(r > s) = 2^-s per bin */
+    ev->tone_score = best * log10(2.0) - log10((double)nb);
+    {
+        /* refine on the whole segment by golden section over +-1 bin */
+        double f0 = (double)kbest / (double)n2, lo = f0 - 1.0 / (double)n2, hi = f0 + 1.0 / (double)n2;
+        const double gr = 0.6180339887498949;
+        double re, im, fb = f0, pb;
+        int it;
+        double *xc = (double *)malloc(n * sizeof *xc);
+        if (xc == NULL) {
+            free(tmp);
+            return;
+        }
+        mean = 0.0;
+        for (k = 0; k < n; k++) {
+            mean += x[k];
+        }
+        mean /= (double)n;
+        for (k = 0; k < n; k++) {
+            xc[k] = x[k] - mean;
+        }
+        pb = dft_hann(xc, n, fb, &re, &im);
+        for (it = 0; it < 40; it++) {
+            double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo), r1, i1, r2, i2;
+            double p1 = dft_hann(xc, n, x1, &r1, &i1), p2 = dft_hann(xc, n, x2, &r2, &i2);
+            if (p1 > p2) {
+                hi = x2;
+                if (p1 > pb) {
+                    pb = p1;
+                    fb = x1;
+                }
+            } else {
+                lo = x1;
+                if (p2 > pb) {
+                    pb = p2;
+                    fb = x2;
+                }
+            }
+        }
+        pb = dft_hann(xc, n, fb, &re, &im);
+        free(xc);
+        ev->tone_hz = fb * fs;
+        ev->tone_amp = 2.0 * sqrt(pb);
+        ev->tone_phase = atan2(im, re) + 0.5 * M_PI;
+    }
+    free(tmp);
+}
+
+/* Bias steps: two-window mean differences at scales of 64 samples to an
+ * eighth of the segment, normalised by their robust spread, Bonferroni over
+ * the positions; detections merged across scales. */
+static void find_steps(const double *x, size_t n, sg_evidence_t *ev)
+{
+    double *cs, pos[256], size[256], zsc[256], scl[256];
+    size_t w, np = 0, k;
+    ev->nsteps = 0;
+    ev->step_rms = 0.0;
+    if (n < 512) {
+        return;
+    }
+    cs = (double *)malloc((n + 1) * sizeof *cs);
+    if (cs == NULL) {
+        return;
+    }
+    cs[0] = 0.0;
+    for (k = 0; k < n; k++) {
+        cs[k + 1] = cs[k] + (x[k] - x[0]);
+    }
+    for (w = 64; 8 * w <= n; w *= 2) {
+        size_t hop = w / 4, nd = 0, i;
+        double *d, *ad, mad, thr;
+        size_t cnt = (n - 2 * w) / hop + 1;
+        d = (double *)malloc(cnt * sizeof *d);
+        ad = (double *)malloc(cnt * sizeof *ad);
+        if (d == NULL || ad == NULL) {
+            free(d);
+            free(ad);
+            break;
+        }
+        for (k = w; k + w <= n; k += hop) {
+            d[nd] = (cs[k + w] - cs[k]) / (double)w - (cs[k] - cs[k - w]) / (double)w;
+            ad[nd] = fabs(d[nd]);
+            nd++;
+        }
+        qsort(ad, nd, sizeof *ad, cmp_d);
+        mad = 1.4826 * ad[nd / 2];
+        thr = gsl_cdf_ugaussian_Qinv(0.0025 / (double)nd);
+        for (i = 0; i < nd && mad > 0.0; i++) {
+            double z = fabs(d[i]) / mad, t = (double)(w + i * hop);
+            size_t j, lo = i > 4 ? i - 4 : 0, hi = i + 4 < nd ? i + 4 : nd - 1;
+            int ismax = 1, merged = 0;
+            if (z < thr) {
+                continue;
+            }
+            for (j = lo; j <= hi; j++) {
+                if (fabs(d[j]) > fabs(d[i])) {
+                    ismax = 0;
+                }
+            }
+            if (!ismax) {
+                continue;
+            }
+            for (j = 0; j < np; j++) {
+                double sc = scl[j] > (double)w ? scl[j] : (double)w;
+                if (fabs(pos[j] - t) < sc) {
+                    merged = 1;
+                    if (z > zsc[j]) {
+                        zsc[j] = z;
+                        size[j] = d[i];
+                    }
+                }
+            }
+            if (!merged && np < 256) {
+                pos[np] = t;
+                size[np] = d[i];
+                zsc[np] = z;
+                scl[np] = (double)w;
+                np++;
+            }
+        }
+        free(d);
+        free(ad);
+    }
+    free(cs);
+    if (np > 0) {
+        double s = 0.0;
+        for (k = 0; k < np; k++) {
+            s += size[k] * size[k];
+        }
+        ev->step_rms = sqrt(s / (double)np);
+    }
+    ev->nsteps = (int)np;
+}
+
+void sg_evidence(const double *x, size_t n, double rate_hz, double t0_s, double q_hint, sg_evidence_t *ev)
+{
+    double st = 0.0, sx = 0.0, stt = 0.0, stx = 0.0;
+    size_t k;
+    memset(ev, 0, sizeof *ev);
+    ev->q = q_hint;
+    ev->q_z = q_hint > 0.0 ? sg_lattice_z(x, n, q_hint) : 0.0;
+    find_tone(x, n, rate_hz, ev);
+    find_steps(x, n, ev);
+    for (k = 0; k < n; k++) {
+        double t = t0_s + (double)k / rate_hz, v = x[k] - x[0];
+        st += t;
+        sx += v;
+        stt += t * t;
+        stx += t * v;
+    }
+    if (n > 2) {
+        double dn = (double)n, den = stt - st * st / dn;
+        ev->slope = den > 0.0 ? (stx - st * sx / dn) / den : 0.0;
+    }
+}

@@ -1,0 +1,258 @@
+/* Sim-to-real gap diagnosis: the human summary (hx_simgap.h). JSON in
+ * hx_simgap_json.c, plots in hx_simgap_plot.c. */
+#include "hx_simgap.h"
+#include "hx_simgap_nav.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *dom_title(int dom)
+{
+    switch (dom) {
+    case SG_ALLAN: return "Allan";
+    case SG_PSD: return "PSD";
+    case SG_LATTICE: return "value lattice";
+    case SG_TIMING: return "timing";
+    default: return "navigation";
+    }
+}
+
+static const char *ch_title(int ch)
+{
+    static const char *const t[SG_NCH] = { "accel x", "accel y", "accel z", "gyro x", "gyro y", "gyro z" };
+    return (ch >= 0 && ch < SG_NCH) ? t[ch] : "all";
+}
+
+/* A value in the channel's unit, with deg for gyro quantities. */
+static void fmt_u(char *b, size_t n, int ch, double v, const char *suffix)
+{
+    if (ch >= 3) {
+        snprintf(b, n, "%.3g rad/s%s (%.3g deg/s%s)", v, suffix, v * 180.0 / M_PI, suffix);
+    } else {
+        snprintf(b, n, "%.3g m/s^2%s", v, suffix);
+    }
+}
+
+void sg_effect_text(char *b, size_t n, int ch, const sg_effect_t *e)
+{
+    char u[96], u2[96];
+    switch (e->id) {
+    case FNAV_EFFECT_QUANT:
+        fmt_u(u, sizeof u, ch, e->p[0], "");
+        snprintf(b, n, "quant (lsb %s, %s)", u, e->p[1] != 0.0 ? "noise-shaped" : "plain rounding");
+        break;
+    case FNAV_EFFECT_FLICKER:
+        fmt_u(u, sizeof u, ch, e->p[0], "");
+        snprintf(b, n, "flicker (B %s)", u);
+        break;
+    case FNAV_EFFECT_RRW:
+        fmt_u(u, sizeof u, ch, e->p[0], "/sqrt(s)");
+        snprintf(b, n, "rrw (K %s)", u);
+        break;
+    case FNAV_EFFECT_RAMP:
+        fmt_u(u, sizeof u, ch, e->p[0], "/s");
+        snprintf(b, n, "ramp (rate %s)", u);
+        break;
+    case FNAV_EFFECT_THERMAL:
+        fmt_u(u, sizeof u, ch, e->p[0], "/degC");
+        snprintf(b, n, "thermal (coef %s over a %.3g degC rise, tau %.3g s)", u, e->p[1], e->p[2]);
+        break;
+    case FNAV_EFFECT_VIBRATION:
+        fmt_u(u, sizeof u, ch, e->p[0], "");
+        snprintf(b, n, "vibration (amp %s at %.4g Hz)", u, e->p[1]);
+        break;
+    case FNAV_EFFECT_JUMPS:
+        fmt_u(u, sizeof u, ch, e->p[1], "");
+        snprintf(b, n, "jumps (%.3g per hour, rms step %s)", e->p[0] * 3600.0, u);
+        break;
+    case FNAV_EFFECT_WHITE:
+        fmt_u(u, sizeof u, ch, e->p[0], "/sqrt(Hz)");
+        snprintf(b, n, "white (%s)", u);
+        break;
+    case FNAV_EFFECT_AR1:
+        fmt_u(u2, sizeof u2, ch, e->p[1], "");
+        snprintf(b, n, "ar1 (sigma %s, tau %.3g s)", u2, e->p[0]);
+        break;
+    default: {
+        const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)e->id);
+        int k;
+        size_t o = 0;
+        o += (size_t)snprintf(b + o, n - o, "%s (", info != NULL ? info->name : "?");
+        for (k = 0; info != NULL && k < info->nparams && k < SG_MAX_PAR && o < n; k++) {
+            o += (size_t)snprintf(b + o, n - o, "%s%s %.3g", k ? ", " : "", info->params[k].name, e->p[k]);
+        }
+        if (o < n) {
+            snprintf(b + o, n - o, ")");
+        }
+        break;
+    }
+    }
+}
+
+static void range_text(char *b, size_t n, const sg_loc_t *L)
+{
+    const char *u = L->dom == SG_ALLAN ? "s" : (L->dom == SG_PSD ? "Hz" : "");
+    if (L->dom == SG_ALLAN) {
+        snprintf(b, n, "tau %.3g-%.3g %s", L->x_lo, L->x_hi, u);
+    } else if (L->dom == SG_PSD) {
+        snprintf(b, n, "%.3g-%.3g %s", L->x_lo, L->x_hi, u);
+    } else if (L->dom == SG_LATTICE) {
+        snprintf(b, n, "values on a lattice of step %.4g", L->x_lo);
+    } else {
+        snprintf(b, n, "t %.1f-%.1f s", L->x_lo, L->x_hi);
+    }
+}
+
+static void print_static(FILE *f, const sg_result_t *r)
+{
+    int ch, i;
+    size_t k;
+    char b[256];
+    fprintf(f, "baseline (white + AR(1) per channel, fitted on the fit segment):\n");
+    for (ch = 0; ch < SG_NCH; ch++) {
+        const sg_chres_t *c = &r->ch[ch];
+        char w[128], a[128];
+        int iw, ia;
+        if (!c->active) {
+            continue;
+        }
+        iw = sg_model_find(&c->baseline, FNAV_EFFECT_WHITE);
+        ia = sg_model_find(&c->baseline, FNAV_EFFECT_AR1);
+        sg_effect_text(w, sizeof w, ch, &c->baseline.e[iw]);
+        sg_effect_text(a, sizeof a, ch, &c->baseline.e[ia]);
+        fprintf(f, "  %s  %s, %s\n", sg_channel_name(ch), w, a);
+    }
+    fprintf(f, "gap of the baseline twin (%d seeds; G = mean z^2, about 1 when the twin explains the data):\n", r->S);
+    for (ch = 0; ch < SG_NCH; ch++) {
+        const sg_chres_t *c = &r->ch[ch];
+        if (!c->active) {
+            continue;
+        }
+        fprintf(f, "  %s  whole log G %.3g (null %.2g, crit %.2g, max |z| %.1f)%s; held out G %.3g (crit %.2g)%s\n",
+                sg_channel_name(ch), c->cmp[SG_FULL].G, c->cmp[SG_FULL].null_mean, c->cmp[SG_FULL].G_crit,
+                c->cmp[SG_FULL].maxz, c->gap_full ? " SIGNIFICANT" : "", c->cmp[SG_HOLD].G, c->cmp[SG_HOLD].G_crit,
+                c->gap_hold ? " SIGNIFICANT" : "");
+    }
+    if (r->nloc > 0) {
+        fprintf(f, "where (whole log, |z| beyond the critical %.2f):\n", r->ch[r->loc[0].ch].cmp[SG_FULL].z_crit);
+    }
+    for (k = 0; k < r->nloc; k++) {
+        const sg_loc_t *L = &r->loc[k];
+        range_text(b, sizeof b, L);
+        if (L->dom == SG_LATTICE) {
+            fprintf(f, "  %s, %s: %.0f sigma above the twin\n", ch_title(L->ch), b, L->peak_z);
+        } else {
+            fprintf(f, "  %s, %s %s, %.1f sigma %s the twin (%s x%.3g)\n", ch_title(L->ch), dom_title(L->dom), b,
+                    fabs(L->peak_z), L->peak_z > 0 ? "above" : "below", L->dom == SG_ALLAN ? "ADEV" : "amplitude",
+                    L->ratio);
+        }
+    }
+    for (ch = 0; ch < SG_NCH; ch++) {
+        const sg_chres_t *c = &r->ch[ch];
+        if (!c->active || !(c->gap_full || c->gap_hold)) {
+            continue;
+        }
+        fprintf(f, "attribution %s (held-out segment):\n", sg_channel_name(ch));
+        if (c->nsteps == 0) {
+            fprintf(f, "  not attempted\n");
+        }
+        for (i = 0; i < c->nsteps; i++) {
+            const sg_step_t *st = &c->step[i];
+            int j;
+            for (j = 0; j < st->ncand; j++) {
+                const sg_cand_t *cd = &st->cand[j];
+                sg_effect_text(b, sizeof b, ch, &cd->eff);
+                if (cd->simulated) {
+                    fprintf(f, "  step %d %c %-58s held-out excess explained %5.0f %% (68 %%: %.0f..%.0f %%)\n", i + 1,
+                            j == st->selected ? '*' : ' ', b, 100.0 * cd->expl_hold, 100.0 * cd->expl_lo,
+                            100.0 * cd->expl_hi);
+                } else {
+                    fprintf(f, "  step %d   %-58s not simulated (fit-segment objective %.1f)\n", i + 1, b,
+                            cd->Q_fit);
+                }
+            }
+        }
+        fprintf(f, "  -> %s\n", c->within_noise ? "remaining held-out gap within noise"
+                                                 : "a significant held-out gap remains");
+    }
+}
+
+/* SG_DEBUG=CH:SEG prints every point of a channel and segment (development aid). */
+static void debug_points(FILE *f, const sg_result_t *r)
+{
+    const char *e = getenv("SG_DEBUG");
+    int ch, g;
+    size_t j;
+    if (e == NULL || sscanf(e, "%d:%d", &ch, &g) != 2 || ch < 0 || ch >= SG_NCH || g < 0 || g >= SG_NSEG ||
+        !r->ch[ch].active) {
+        return;
+    }
+    for (j = 0; j < r->pl[ch][g].n; j++) {
+        const sg_point_t *p = &r->pl[ch][g].p[j];
+        const sg_cmp_t *c = &r->ch[ch].cmp[g];
+        fprintf(f, "  %-7s x %-10.4g real %-10.5g twin %-10.5g sd %-9.3g sdtot %-9.3g vx %-9.3g z %+.2f\n",
+                sg_domain_name(p->dom), p->x, r->real[ch][g][j], c->twin_mean[j], c->twin_sd[j], c->sd_tot[j],
+                r->vx[ch][g] != NULL ? sqrt(r->vx[ch][g][j]) : 0.0, c->z[j]);
+    }
+}
+
+void sg_print_summary(FILE *f, const sg_result_t *r)
+{
+    debug_points(f, r);
+    int ch, i, d;
+    char b[256];
+    fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first %.0f %%, held out the last %.0f %%\n",
+            r->path, r->domain == 1 ? "static" : "walk", r->n, r->rate_hz, r->duration_s, 100.0 * r->opts.fit_frac,
+            100.0 * (1.0 - r->opts.fit_frac));
+    if (!r->confident) {
+        fprintf(f, "TOO SHORT for a confident answer: %s\n", r->why);
+    }
+    if (r->domain == 1) {
+        print_static(f, r);
+    } else if (r->nav != NULL) {
+        sg_nav_print((const sg_nav_t *)r->nav, f, r);
+    }
+    if (r->tim.have) {
+        static const char *const nm[SG_TIM_NKIND] = { "duplicated samples", "dropped samples", "time-stamp jitter" };
+        fprintf(f, "timing: %ld duplicated, %ld dropped, interval sd %.3g s (stamp resolution %.3g s)\n",
+                r->tim.n_dup[SG_FULL], r->tim.n_drop[SG_FULL], r->tim.jit_sd[SG_FULL], r->tim.res_s);
+        for (d = 0; d < SG_TIM_NKIND; d++) {
+            if (r->tim.sel[d]) {
+                fprintf(f, "  %s: %.1f sigma above an ideal clock; held out after fitting: %+.1f sigma\n", nm[d],
+                        r->tim.z[SG_FULL][d], r->tim.z_after[d]);
+            }
+        }
+    }
+    fprintf(f, "verdict: %s", r->verdict);
+    {
+        int first = 1;
+        for (ch = 0; ch < SG_NCH; ch++) {
+            for (i = 0; i < r->ch[ch].nsel; i++) {
+                const sg_chmodel_t *m = &r->ch[ch].final;
+                int k = sg_model_find(m, r->ch[ch].sel_id[i]);
+                if (k >= 0) {
+                    sg_effect_text(b, sizeof b, ch, &m->e[k]);
+                    fprintf(f, "%s %s on %s (%.0f %% of the held-out excess)", first ? ":" : ";", b,
+                            sg_channel_name(ch), 100.0 * r->ch[ch].sel_expl[i]);
+                    first = 0;
+                }
+            }
+        }
+        if (r->tim.significant) {
+            if (r->tim.sel[SG_TIM_DUP]) {
+                fprintf(f, "%s duplicate (prob %.3g)", first ? ":" : ";", r->tim.dup_prob);
+                first = 0;
+            }
+            if (r->tim.sel[SG_TIM_DROP]) {
+                fprintf(f, "%s dropout (prob %.3g)", first ? ":" : ";", r->tim.drop_prob);
+                first = 0;
+            }
+            if (r->tim.sel[SG_TIM_JITTER]) {
+                fprintf(f, "%s jitter (stamp_s %.3g s)", first ? ":" : ";", r->tim.stamp_s);
+                first = 0;
+            }
+        }
+    }
+    fprintf(f, "\n(%.1f s)\n", r->elapsed_s);
+}

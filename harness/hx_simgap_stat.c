@@ -1,0 +1,663 @@
+/* Sim-to-real gap: features of a segment (Allan, Welch bands, value
+ * lattice) and the comparison of a real segment with its twins
+ * (hx_simgap.h, docs/simgap.md). */
+#include "hx_simgap.h"
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_sf_psi.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const k_dom[SG_NDOM] = { "allan", "psd", "lattice", "timing", "nav" };
+static const char *const k_ch[SG_NCH] = { "ax", "ay", "az", "gx", "gy", "gz" };
+
+const char *sg_domain_name(int dom)
+{
+    return (dom >= 0 && dom < SG_NDOM) ? k_dom[dom] : "?";
+}
+
+const char *sg_channel_name(int ch)
+{
+    return (ch >= 0 && ch < SG_NCH) ? k_ch[ch] : "all";
+}
+
+const char *sg_channel_unit(int ch)
+{
+    return ch < 3 ? "m/s^2" : "rad/s";
+}
+
+/* ------------------------------------------------------------ points */
+
+void sg_plist_free(sg_plist_t *l)
+{
+    free(l->p);
+    memset(l, 0, sizeof *l);
+}
+
+int sg_plist_add(sg_plist_t *l, const sg_point_t *p)
+{
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? 2 * l->cap : 64;
+        sg_point_t *np = (sg_point_t *)realloc(l->p, cap * sizeof *np);
+        if (np == NULL) {
+            return -1;
+        }
+        l->p = np;
+        l->cap = cap;
+    }
+    l->p[l->n++] = *p;
+    return 0;
+}
+
+/* ------------------------------------------------------------ features */
+
+sg_feat_cfg_t sg_feat_cfg_default(double rate_hz)
+{
+    sg_feat_cfg_t c;
+    c.rate_hz = rate_hz;
+    c.allan_per_octave = 2u;
+    c.tau_frac = 0.1;
+    c.nfft_max = FNAV_WELCH_MAX_NFFT;
+    c.bands_per_octave = 3u;
+    return c;
+}
+
+/* Welch segment length for n samples: at least 16 segments. */
+static unsigned pick_nfft(long n, unsigned nfft_max)
+{
+    unsigned nf = 16u;
+    if (n < 16 * 16) {
+        return 0u;
+    }
+    while (2u * nf <= nfft_max && (long)(2u * nf) * 16 <= n) {
+        nf *= 2u;
+    }
+    return nf;
+}
+
+int sg_acc_init(sg_acc_t *a, const sg_feat_cfg_t *cfg, long n, double q)
+{
+    fnav_allan_config_t ac;
+    unsigned nfft;
+    memset(a, 0, sizeof *a);
+    a->cfg = *cfg;
+    a->n_expect = n;
+    a->q = q;
+    if (n >= 40) {
+        uint32_t tmax = (uint32_t)floor((double)n * cfg->tau_frac);
+        size_t i, k = 0;
+        uint32_t grid[FNAV_ALLAN_MAX_POINTS];
+        size_t ng;
+        if (tmax < 1u) {
+            tmax = 1u;
+        }
+        ng = fnav_allan_grid(grid, FNAV_ALLAN_MAX_POINTS, tmax, cfg->allan_per_octave);
+        for (i = 0; i < ng; i++) {
+            if (grid[i] <= tmax) {
+                a->tau[k++] = grid[i];
+            }
+        }
+        a->ntau = k;
+        if (k > 0) {
+            a->allan = (fnav_allan_t *)malloc(sizeof *a->allan);
+            ac.tau = a->tau;
+            ac.n_tau = k;
+            if (a->allan == NULL || fnav_allan_init(a->allan, &ac) != FNAV_OK) {
+                sg_acc_free(a);
+                return -1;
+            }
+        }
+    }
+    nfft = pick_nfft(n, cfg->nfft_max);
+    if (nfft > 0u) {
+        fnav_welch_config_t wc = fnav_welch_config_default;
+        wc.nfft = nfft;
+        wc.overlap = nfft / 2u;
+        wc.rate_hz = (fnav_real_t)cfg->rate_hz;
+        a->welch = (fnav_welch_t *)malloc(sizeof *a->welch);
+        if (a->welch == NULL || fnav_welch_init(a->welch, &wc) != FNAV_OK) {
+            sg_acc_free(a);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+void sg_acc_free(sg_acc_t *a)
+{
+    free(a->allan);
+    free(a->welch);
+    a->allan = NULL;
+    a->welch = NULL;
+}
+
+void sg_acc_push(sg_acc_t *a, double x)
+{
+    fnav_status_t st;
+    if (a->allan != NULL) {
+        st = fnav_allan_push(a->allan, (fnav_real_t)x);
+        (void)st;
+    }
+    if (a->welch != NULL) {
+        st = fnav_welch_push(a->welch, (fnav_real_t)x);
+        (void)st;
+    }
+    if (a->q > 0.0 && !a->lat_external) {
+        if (a->have_prev) {
+            double ph = 2.0 * M_PI * (x - a->prev) / a->q;
+            a->lc += cos(ph);
+            a->ls += sin(ph);
+            a->lm++;
+        }
+        a->prev = x;
+        a->have_prev = 1;
+    }
+    a->n++;
+}
+
+/* Normal score of a Rayleigh statistic R (exponential under the null):
+ * z = Phi^-1(1 - exp(-R)), with the asymptotic form for large R. */
+static double rayleigh_z(double R)
+{
+    if (!(R > 0.0)) {
+        return -8.0;
+    }
+    if (R > 30.0) {
+        return sqrt(2.0 * R - log(4.0 * M_PI * R));
+    }
+    return gsl_cdf_ugaussian_Qinv(exp(-R));
+}
+
+/* Correlation of the Welch estimates: between segments hop apart (window
+ * overlap) and between bins l apart (window leakage), for a locally flat
+ * spectrum (Percival & Walden 1993, sec. 6.17). Equivalent degrees of
+ * freedom of the mean of B adjacent bins averaged over K segments. */
+static double welch_band_edf(unsigned nfft, unsigned K, unsigned B)
+{
+    double w[FNAV_WELCH_MAX_NFFT], s2 = 0.0, rho = 0.0, nu_bin, den = 1.0;
+    unsigned n, l, hop = nfft / 2u;
+    for (n = 0; n < nfft; n++) {
+        w[n] = 0.54 - 0.46 * cos(2.0 * M_PI * (double)n / (double)nfft);
+        s2 += w[n] * w[n];
+    }
+    for (n = 0; n + hop < nfft; n++) {
+        rho += w[n] * w[n + hop];
+    }
+    rho /= s2;
+    nu_bin = 2.0 * (double)K / (1.0 + 2.0 * rho * rho * ((double)K - 1.0) / (double)K);
+    for (l = 1; l < B && l < 8u; l++) {
+        double cr = 0.0, ci = 0.0, c2;
+        for (n = 0; n < nfft; n++) {
+            double ph = 2.0 * M_PI * (double)(l * n) / (double)nfft;
+            cr += w[n] * w[n] * cos(ph);
+            ci += w[n] * w[n] * sin(ph);
+        }
+        c2 = (cr * cr + ci * ci) / (s2 * s2);
+        den += 2.0 * (1.0 - (double)l / (double)B) * c2;
+    }
+    return (double)B * nu_bin / den;
+}
+
+long sg_acc_finish(sg_acc_t *a, int ch, sg_plist_t *pl, double *vals, size_t cap)
+{
+    size_t i, cnt = 0;
+    sg_point_t p;
+    const double fs = a->cfg.rate_hz;
+    if (a->allan != NULL) {
+        size_t na = fnav_allan_count(a->allan);
+        for (i = 0; i < na; i++) {
+            fnav_allan_result_t r;
+            double av;
+            if (fnav_allan_get(a->allan, i, &r) != FNAV_OK || r.terms < 2u) {
+                continue;
+            }
+            if (cnt >= cap) {
+                return -1;
+            }
+            av = (double)r.avar;
+            vals[cnt++] = (av > 0.0 && isfinite(av)) ? log(av) : -700.0;
+            if (pl != NULL) {
+                memset(&p, 0, sizeof p);
+                p.dom = SG_ALLAN;
+                p.ch = ch;
+                p.x = p.x_lo = p.x_hi = (double)r.tau / fs;
+                p.m = r.tau;
+                p.lag = r.lag;
+                p.n_phase = r.n_phase;
+                if (sg_plist_add(pl, &p) != 0) {
+                    return -1;
+                }
+            }
+        }
+    }
+    if (a->welch != NULL && fnav_welch_segments(a->welch) > 0u) {
+        fnav_real_t psd[FNAV_WELCH_MAX_BINS];
+        uint32_t nb = fnav_welch_bins(a->welch), k, K = fnav_welch_segments(a->welch);
+        unsigned nfft = a->welch->cfg.nfft;
+        double df = fs / (double)nfft;
+        if (fnav_welch_get(a->welch, psd, FNAV_WELCH_MAX_BINS) != FNAV_OK) {
+            return -1;
+        }
+        k = 1u;
+        nb -= 1u; /* the Nyquist bin is real-valued (half the degrees of freedom): left out */
+        while (k < nb) {
+            int band = (int)floor((double)a->cfg.bands_per_octave * log2((double)k) + 1e-9);
+            uint32_t k1 = k;
+            double s = 0.0;
+            while (k1 < nb && (int)floor((double)a->cfg.bands_per_octave * log2((double)k1) + 1e-9) == band) {
+                s += (double)psd[k1];
+                k1++;
+            }
+            if (cnt >= cap) {
+                return -1;
+            }
+            s /= (double)(k1 - k);
+            vals[cnt++] = s > 0.0 ? log(s) : -700.0;
+            if (pl != NULL) {
+                memset(&p, 0, sizeof p);
+                p.dom = SG_PSD;
+                p.ch = ch;
+                p.x_lo = ((double)k - 0.5) * df;
+                p.x_hi = ((double)k1 - 0.5) * df;
+                if (p.x_hi > 0.5 * fs) {
+                    p.x_hi = 0.5 * fs;
+                }
+                p.x = sqrt(p.x_lo * p.x_hi);
+                p.m = k;
+                p.lag = k1 - k;
+                p.n_phase = nfft; /* PSD points: the segment length */
+                p.edf = welch_band_edf(nfft, K, k1 - k);
+                if (sg_plist_add(pl, &p) != 0) {
+                    return -1;
+                }
+            }
+            k = k1;
+        }
+    }
+    if (a->q > 0.0 && a->lm > 0) {
+        double R = (a->lc * a->lc + a->ls * a->ls) / (double)a->lm;
+        if (cnt >= cap) {
+            return -1;
+        }
+        vals[cnt++] = rayleigh_z(R);
+        if (pl != NULL) {
+            memset(&p, 0, sizeof p);
+            p.dom = SG_LATTICE;
+            p.ch = ch;
+            p.x = p.x_lo = p.x_hi = a->q;
+            p.edf = -1.0; /* exactly N(0, 1) under the null */
+            if (sg_plist_add(pl, &p) != 0) {
+                return -1;
+            }
+        }
+    }
+    return (long)cnt;
+}
+
+/* ------------------------------------------------------------ lattice */
+
+double sg_lattice_z(const double *x, size_t n, double q)
+{
+    double c = 0.0, s = 0.0;
+    size_t k;
+    if (!(q > 0.0) || n < 3) {
+        return 0.0;
+    }
+    for (k = 1; k < n; k++) {
+        double ph = 2.0 * M_PI * (x[k] - x[k - 1]) / q;
+        c += cos(ph);
+        s += sin(ph);
+    }
+    return rayleigh_z((c * c + s * s) / (double)(n - 1));
+}
+
+static int cmp_dbl(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+double sg_lattice_step(const double *x, size_t n, double *z)
+{
+    double amax = 0.0, floor_q, q = INFINITY, *r;
+    size_t k, nr = 0;
+    if (z != NULL) {
+        *z = 0.0;
+    }
+    if (n < 16) {
+        return 0.0;
+    }
+    for (k = 0; k < n; k++) {
+        double v = fabs(x[k]);
+        amax = v > amax ? v : amax;
+    }
+    /* 10 ulp of float32 at the largest value: finer steps are storage */
+    floor_q = 10.0 * ldexp(1.0, (int)floor(log2(amax > 1e-30 ? amax : 1e-30)) - 23);
+    for (k = 1; k < n; k++) {
+        double d = fabs(x[k] - x[k - 1]);
+        if (d > floor_q && d < q) {
+            q = d;
+        }
+    }
+    if (!isfinite(q)) {
+        return 0.0;
+    }
+    /* refine: median of d / round(d / q) over the differences of a few steps */
+    r = (double *)malloc(n * sizeof *r);
+    if (r != NULL) {
+        for (k = 1; k < n; k++) {
+            double d = fabs(x[k] - x[k - 1]), m = floor(d / q + 0.5);
+            if (m >= 1.0 && m <= 64.0 && fabs(d / q - m) < 0.05) {
+                r[nr++] = d / m;
+            }
+        }
+        if (nr > 0) {
+            qsort(r, nr, sizeof *r, cmp_dbl);
+            q = r[nr / 2];
+        }
+        free(r);
+    }
+    if (z != NULL) {
+        *z = sg_lattice_z(x, n, q);
+    }
+    return q;
+}
+
+/* ------------------------------------------------------------ compare */
+
+void sg_cmp_free(sg_cmp_t *c)
+{
+    free(c->z);
+    free(c->twin_mean);
+    free(c->twin_sd);
+    free(c->sd_tot);
+    free(c->G_null);
+    memset(c, 0, sizeof *c);
+}
+
+/* Variance of the log of a chi-square estimate with nu degrees of freedom
+ * divided by nu: trigamma(nu / 2). */
+static double logchi2_var(double nu)
+{
+    if (!(nu > 0.0)) {
+        return 0.0;
+    }
+    if (nu > 1e6) {
+        return 2.0 / nu;
+    }
+    return gsl_sf_psi_1(0.5 * nu);
+}
+
+/* Theoretical variance of each point's real estimate (0: none). For Allan
+ * points the noise type comes from the local slope of the twins' mean
+ * curve (the model's), the EDF from Greenhall & Riley. */
+static void theory_var(const sg_plist_t *pl, const double *mean, double *vt)
+{
+    size_t j;
+    for (j = 0; j < pl->n; j++) {
+        const sg_point_t *p = &pl->p[j];
+        vt[j] = 0.0;
+        if (p->dom == SG_ALLAN) {
+            /* slope of log ADEV = half the slope of ln AVAR over ln tau */
+            size_t a = j, b = j;
+            double sl, nu;
+            fnav_allan_noise_t type;
+            if (j > 0 && pl->p[j - 1].dom == SG_ALLAN && pl->p[j - 1].ch == p->ch) {
+                a = j - 1;
+            }
+            if (j + 1 < pl->n && pl->p[j + 1].dom == SG_ALLAN && pl->p[j + 1].ch == p->ch) {
+                b = j + 1;
+            }
+            if (a == b) {
+                vt[j] = 0.0;
+                continue;
+            }
+            sl = 0.5 * (mean[b] - mean[a]) / log(pl->p[b].x / pl->p[a].x);
+            type = fnav_allan_noise_from_slope((fnav_real_t)sl);
+            if (type == FNAV_ALLAN_NOISE_RAMP) {
+                type = FNAV_ALLAN_NOISE_RRW;
+            }
+            nu = fnav_allan_edf(fnav_allan_noise_alpha(type), p->lag, p->n_phase, 1);
+            vt[j] = logchi2_var(nu);
+        } else if (p->edf < 0.0) {
+            vt[j] = 1.0;
+        } else if (p->edf > 0.0) {
+            vt[j] = logchi2_var(p->edf);
+        }
+    }
+}
+
+/* z of every point of `real` against the twin rows `rows` (nr of them),
+ * and the aggregate. */
+static double zscores(const sg_plist_t *pl, const double *real, const double *twin, const int *rows, int nr,
+                      const double *vx, double *z, double *mean_out, double *sd_out, double *sdt_out,
+                      double *G_dom, double *maxz, int *imax)
+{
+    size_t j, n = pl->n;
+    double gsum[SG_NDOM], G = 0.0;
+    long gcnt[SG_NDOM];
+    int d, nd = 0, r;
+    double *vt = NULL, *mean = NULL;
+    memset(gsum, 0, sizeof gsum);
+    memset(gcnt, 0, sizeof gcnt);
+    mean = (double *)malloc((n + 1) * sizeof *mean);
+    vt = (double *)malloc((n + 1) * sizeof *vt);
+    if (mean == NULL || vt == NULL) {
+        free(mean);
+        free(vt);
+        return (double)NAN;
+    }
+    for (j = 0; j < n; j++) {
+        double s = 0.0;
+        for (r = 0; r < nr; r++) {
+            s += twin[(size_t)rows[r] * n + j];
+        }
+        mean[j] = s / (double)nr;
+    }
+    theory_var(pl, mean, vt);
+    if (maxz != NULL) {
+        *maxz = 0.0;
+        *imax = -1;
+    }
+    for (j = 0; j < n; j++) {
+        double v = 0.0, var, zz, dd;
+        for (r = 0; r < nr; r++) {
+            dd = twin[(size_t)rows[r] * n + j] - mean[j];
+            v += dd * dd;
+        }
+        v = nr > 1 ? v / (double)(nr - 1) : 0.0;
+        if (vt[j] > 0.0) {
+            var = v / (double)nr + (vt[j] > v ? vt[j] : v);
+        } else {
+            var = v * (1.0 + 1.0 / (double)nr);
+        }
+        if (vx != NULL && vx[j] > 0.0) {
+            var += vx[j]; /* the fitted parameters' own uncertainty */
+        }
+        if (!(var > 1e-24)) {
+            var = 1e-24;
+        }
+        zz = (real[j] - mean[j]) / sqrt(var);
+        if (z != NULL) {
+            z[j] = zz;
+        }
+        if (mean_out != NULL) {
+            mean_out[j] = mean[j];
+            sd_out[j] = sqrt(v);
+            sdt_out[j] = sqrt(var);
+        }
+        d = pl->p[j].dom;
+        gsum[d] += zz * zz < SG_ZCAP * SG_ZCAP ? zz * zz : SG_ZCAP * SG_ZCAP;
+        gcnt[d]++;
+        if (maxz != NULL && fabs(zz) > *maxz) {
+            *maxz = fabs(zz);
+            *imax = (int)j;
+        }
+    }
+    for (d = 0; d < SG_NDOM; d++) {
+        if (G_dom != NULL) {
+            G_dom[d] = gcnt[d] > 0 ? gsum[d] / (double)gcnt[d] : (double)NAN;
+        }
+        if (gcnt[d] > 0) {
+            G += gsum[d] / (double)gcnt[d];
+            nd++;
+        }
+    }
+    free(mean);
+    free(vt);
+    return nd > 0 ? G / (double)nd : 0.0;
+}
+
+/* Variance of G = sum_j w_j z_j^2 (w_j = 1 / (domains x points of its
+ * domain)) for Gaussian z of unit variance with correlation R:
+ * 2 sum_ij w_i w_j R_ij^2. R is estimated from the S pseudo-reals (rows of
+ * dev, deviations from their mean); r^2 is corrected for its small-sample
+ * bias E[r^2] = rho^2 + (1 - rho^2)^2 / (S - 1) to first order. */
+static double g_corr_var(const sg_plist_t *pl, const double *dev, int S)
+{
+    size_t n = pl->n, i, j;
+    long cnt[SG_NDOM];
+    int d, nd = 0, s;
+    double *w, *sd, v = 0.0;
+    memset(cnt, 0, sizeof cnt);
+    for (j = 0; j < n; j++) {
+        cnt[pl->p[j].dom]++;
+    }
+    for (d = 0; d < SG_NDOM; d++) {
+        nd += cnt[d] > 0;
+    }
+    w = (double *)malloc((n + 1) * sizeof *w);
+    sd = (double *)malloc((n + 1) * sizeof *sd);
+    if (w == NULL || sd == NULL || nd == 0 || S < 4) {
+        free(w);
+        free(sd);
+        return 0.0;
+    }
+    for (j = 0; j < n; j++) {
+        double q = 0.0;
+        w[j] = 1.0 / ((double)nd * (double)cnt[pl->p[j].dom]);
+        for (s = 0; s < S; s++) {
+            q += dev[(size_t)s * n + j] * dev[(size_t)s * n + j];
+        }
+        sd[j] = sqrt(q / (double)(S - 1));
+    }
+    for (i = 0; i < n; i++) {
+        v += w[i] * w[i];
+        for (j = i + 1; j < n; j++) {
+            double r = 0.0, r2;
+            if (!(sd[i] > 0.0) || !(sd[j] > 0.0)) {
+                continue;
+            }
+            for (s = 0; s < S; s++) {
+                r += dev[(size_t)s * n + i] * dev[(size_t)s * n + j];
+            }
+            r /= (double)(S - 1) * sd[i] * sd[j];
+            r2 = r * r;
+            /* rho^2 ~ (r^2 - 1/(S-1)) / (1 - 1/(S-1)), clipped to [0, 1] */
+            r2 = (r2 - 1.0 / (double)(S - 1)) / (1.0 - 1.0 / (double)(S - 1));
+            r2 = r2 < 0.0 ? 0.0 : (r2 > 1.0 ? 1.0 : r2);
+            v += 2.0 * w[i] * w[j] * r2;
+        }
+    }
+    free(w);
+    free(sd);
+    return 2.0 * v;
+}
+
+int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int S, const double *vx,
+               const double *shift, double alpha, sg_cmp_t *out)
+{
+    size_t n = pl->n, j;
+    int s, r, *rows = NULL;
+    double *pseudo = NULL;
+    double sum = 0.0, sum2 = 0.0, var, k;
+    memset(out, 0, sizeof *out);
+    out->n = n;
+    out->S = S;
+    out->z = (double *)calloc(n + 1, sizeof(double));
+    out->twin_mean = (double *)calloc(n + 1, sizeof(double));
+    out->twin_sd = (double *)calloc(n + 1, sizeof(double));
+    out->sd_tot = (double *)calloc(n + 1, sizeof(double));
+    out->G_null = (double *)calloc((size_t)S + 1, sizeof(double));
+    rows = (int *)malloc(((size_t)S + 1) * sizeof *rows);
+    pseudo = (double *)malloc((n + 1) * sizeof *pseudo);
+    if (out->z == NULL || out->twin_mean == NULL || out->twin_sd == NULL || out->sd_tot == NULL ||
+        out->G_null == NULL || rows == NULL || pseudo == NULL || S < 2) {
+        free(rows);
+        free(pseudo);
+        sg_cmp_free(out);
+        return -1;
+    }
+    for (s = 0; s < S; s++) {
+        rows[s] = s;
+    }
+    out->G = zscores(pl, real, twin, rows, S, vx, out->z, out->twin_mean, out->twin_sd, out->sd_tot, out->G_dom,
+                     &out->maxz, &out->imax);
+    /* null: each twin in turn as the real, the others as twins; the twin
+     * taken as real carries the error of a model refitted to it (shift), as
+     * the real carries the error of the model fitted to it */
+    for (s = 0; s < S && S >= 3; s++) {
+        int m = 0;
+        for (r = 0; r < S; r++) {
+            if (r != s) {
+                rows[m++] = r;
+            }
+        }
+        for (j = 0; j < n; j++) {
+            pseudo[j] = twin[(size_t)s * n + j] - (shift != NULL ? shift[(size_t)s * n + j] : 0.0);
+        }
+        out->G_null[s] = zscores(pl, pseudo, twin, rows, m, vx, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
+        sum += out->G_null[s];
+        sum2 += out->G_null[s] * out->G_null[s];
+    }
+    free(rows);
+    if (S >= 3) {
+        double vc;
+        double *dev = (double *)malloc(((size_t)S * n + 1) * sizeof *dev);
+        out->null_mean = sum / (double)S;
+        var = (sum2 - sum * sum / (double)S) / (double)(S - 1);
+        if (dev != NULL) {
+            /* deviations of the pseudo-reals from their mean, in units of
+             * the z denominators (their correlation decides G's spread) */
+            for (j = 0; j < n; j++) {
+                double m = 0.0;
+                for (s = 0; s < S; s++) {
+                    pseudo[j] = twin[(size_t)s * n + j] - (shift != NULL ? shift[(size_t)s * n + j] : 0.0);
+                    dev[(size_t)s * n + j] = pseudo[j];
+                    m += pseudo[j];
+                }
+                m /= (double)S;
+                for (s = 0; s < S; s++) {
+                    dev[(size_t)s * n + j] = (dev[(size_t)s * n + j] - m) / out->sd_tot[j];
+                }
+            }
+            vc = g_corr_var(pl, dev, S) * out->null_mean * out->null_mean;
+            if (vc > var) {
+                var = vc;
+            }
+            free(dev);
+        }
+    } else {
+        out->null_mean = 1.0;
+        var = 0.0;
+    }
+    free(pseudo);
+    if (!(var > 0.0)) {
+        var = 1.0;
+    }
+    out->null_sd = sqrt(var);
+    /* scaled chi-square with the null's mean and variance */
+    k = 2.0 * out->null_mean * out->null_mean / var;
+    out->G_crit = out->null_mean * gsl_cdf_chisq_Pinv(1.0 - alpha, k) / k;
+    out->z_crit = gsl_cdf_ugaussian_Qinv(0.5 * alpha / (double)(n > 0 ? n : 1));
+    out->significant = (out->G > out->G_crit) || (out->maxz > out->z_crit);
+    return 0;
+}
+
+double sg_gap_resampled(const sg_plist_t *pl, const double *real, const double *twin, int S, const int *idx, int S2,
+                        const double *vx)
+{
+    (void)S;
+    return zscores(pl, real, twin, idx, S2, vx, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
+}
