@@ -15,9 +15,10 @@ static const hx_opt_t k_opts[] = {
     { "--walk", NULL, "treat the log as a walk (default: detected)", 0 },
     { "--json", "FILE", "JSON report (schema in docs/simgap.md)", 0 },
     { "--plot", "DIR", "plots: Allan and PSD real vs twin before and after, innovations", 0 },
-    { "--seeds", "N", "twins per model (default 12)", 0 },
+    { "--seeds", "N", "twins per model (default 16)", 0 },
     { "--seed", "S", "first simulator seed (default 1)", 0 },
     { "--fit-frac", "F", "fraction of the log in the fit segment (default 0.6; the rest is held out)", 0 },
+    { "--contiguous", NULL, "static logs: fit on the first part (default: on both ends, held out the middle)", 0 },
     { "--alpha", "A", "family-wise false-alarm level of the gap tests (default 0.05)", 0 },
     { "--max-effects", "K", "forward-selection steps per channel (default 3)", 0 },
     { "--prescreen", "K", "candidates simulated per step besides lattice and line (default 3)", 0 },
@@ -74,6 +75,7 @@ int hx_cmd_simgap(int argc, char **argv)
     o.max_steps = (int)steps;
     o.prescreen = (int)pre;
     o.quiet = hx_flag(&a, "--quiet");
+    o.contiguous = hx_flag(&a, "--contiguous");
     o.profile = hx_arg(&a, "--profile");
     o.closed = hx_flag(&a, "--closed");
     json = hx_arg(&a, "--json");

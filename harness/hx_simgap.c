@@ -18,8 +18,8 @@ sg_opts_t sg_opts_default(void)
     sg_opts_t o;
     memset(&o, 0, sizeof o);
     o.domain = 0;
-    o.seeds = 12;
-    o.seeds_cand = 12;
+    o.seeds = 16;
+    o.seeds_cand = 16;
     o.prescreen = 3;
     o.fit_frac = 0.6;
     o.alpha = 0.05;
@@ -187,10 +187,11 @@ static void timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *seg
     t->have = 1;
     t->res_s = res * 1e-9;
     for (g = 0; g < SG_NSEG; g++) {
-        long a = segs->start[g] + 1, b = segs->start[g] + segs->n[g];
         double s = 0.0, s2 = 0.0;
         long nreg = 0;
-        for (k = a; k < b; k++) {
+        int blk;
+        for (blk = 0; blk < segs->nb[g]; blk++)
+        for (k = segs->start[g][blk] + 1; k < segs->start[g][blk] + segs->n[g][blk]; k++) {
             double dt = (double)(lg->t_ns[k] - lg->t_ns[k - 1]);
             double tk = (double)(lg->t_ns[k] - lg->t_ns[0]) * 1e-9;
             t->n_int[g]++;
@@ -276,12 +277,14 @@ static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, cons
     const int S = r->S;
     const sg_plist_t *pl = r->pl[ch];
     const double fs = r->rate_hz;
-    double t0[SG_NSEG], t1[SG_NSEG], *pred[SG_NSEG];
-    int g, s, ok = 0;
+    double t0[SG_NSEG][SG_MAX_BLK], t1[SG_NSEG][SG_MAX_BLK], *pred[SG_NSEG];
+    int g, s, ok = 0, b;
     size_t j;
     for (g = 0; g < SG_NSEG; g++) {
-        t0[g] = (double)r->segs.start[g] / fs;
-        t1[g] = (double)(r->segs.start[g] + r->segs.n[g]) / fs;
+        for (b = 0; b < r->segs.nb[g]; b++) {
+            t0[g][b] = (double)r->segs.start[g][b] / fs;
+            t1[g][b] = (double)(r->segs.start[g][b] + r->segs.n[g][b]) / fs;
+        }
         t->vx[g] = (double *)calloc(pl[g].n + 1, sizeof(double));
         pred[g] = (double *)malloc(((size_t)S * pl[g].n + 1) * sizeof(double));
         if (t->vx[g] == NULL || pred[g] == NULL) {
@@ -294,7 +297,7 @@ static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, cons
     for (s = 0; s < S; s++) {
         sg_table_t tb;
         sg_fit_t f;
-        sg_table_from(&pl[SG_FIT], t->v[SG_FIT] + (size_t)s * pl[SG_FIT].n, ch, fs, t0[SG_FIT], t1[SG_FIT], &tb);
+        sg_table_from(&pl[SG_FIT], t->v[SG_FIT] + (size_t)s * pl[SG_FIT].n, ch, fs, &r->segs, SG_FIT, &tb);
         if (sg_fit_model(&tb, gen->mean, with, nwith, ev, tmax, &f) != 0) {
             for (g = 0; g < SG_NSEG; g++) {
                 for (j = 0; j < pl[g].n; j++) {
@@ -306,7 +309,8 @@ static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, cons
         ok++;
         for (g = 0; g < SG_NSEG; g++) {
             for (j = 0; j < pl[g].n; j++) {
-                pred[g][(size_t)s * pl[g].n + j] = sg_model_lnstat(&f.model, &pl[g].p[j], fs, t0[g], t1[g]);
+                pred[g][(size_t)s * pl[g].n + j] =
+                    sg_model_lnstat(&f.model, &pl[g].p[j], fs, r->segs.nb[g], t0[g], t1[g]);
             }
         }
     }
@@ -322,6 +326,10 @@ static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, cons
                 }
             }
             if (c < 3) {
+                /* no analytic expectation (lattice, timing): no shift */
+                for (s = 0; s < S; s++) {
+                    pred[g][(size_t)s * pl[g].n + j] = 0.0;
+                }
                 continue;
             }
             m /= (double)c;
@@ -335,7 +343,7 @@ static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, cons
             /* shifts relative to the generating model's expectation: the
              * fit's bias, if any, is part of the null as of the real */
             {
-                double m0 = sg_model_lnstat(gen, &pl[g].p[j], fs, t0[g], t1[g]);
+                double m0 = sg_model_lnstat(gen, &pl[g].p[j], fs, r->segs.nb[g], t0[g], t1[g]);
                 if (!(m0 == m0)) {
                     m0 = m;
                 }
@@ -386,8 +394,9 @@ static int cmp_all(const sg_plist_t pl[SG_NSEG], double *const real[SG_NSEG], co
 
 /* Explained fraction of the held-out excess gap by going from twins a to
  * twins b (paired seeds), with a bootstrap over the seeds (68 % interval). */
-static void explained(const sg_plist_t *pl, const double *real, const double *ta, const double *va, const double *tb,
-                      const double *vb, int S, double null_mean, double *f, double *lo, double *hi, uint32_t seed)
+void sg_explained(const sg_plist_t *pl, const double *real, const double *ta, const double *va, const double *sa,
+                      const double *tb, const double *vb, const double *sb, int S, double null_mean, double null_sd,
+                      double *f, double *lo, double *hi, uint32_t seed)
 {
     enum { B = 200 };
     double fb[B], Ga, Gb;
@@ -396,17 +405,22 @@ static void explained(const sg_plist_t *pl, const double *real, const double *ta
     for (k = 0; k < S && k < 64; k++) {
         idx[k] = k;
     }
-    Ga = sg_gap_resampled(pl, real, ta, S, idx, S, va);
-    Gb = sg_gap_resampled(pl, real, tb, S, idx, S, vb);
-    *f = (Ga - null_mean) > 0.0 ? (Ga - Gb) / (Ga - null_mean) : 0.0;
+    Ga = sg_gap_resampled(pl, real, ta, S, idx, S, va, sa);
+    Gb = sg_gap_resampled(pl, real, tb, S, idx, S, vb, sb);
+    /* a fraction of the excess only where there is an excess (two null sd) */
+    if (!(Ga - null_mean > 2.0 * null_sd)) {
+        *f = *lo = *hi = (double)NAN;
+        return;
+    }
+    *f = (Ga - Gb) / (Ga - null_mean);
     for (b = 0; b < B; b++) {
         double ga, gb;
         for (k = 0; k < S && k < 64; k++) {
             st = st * 1664525u + 1013904223u;
             idx[k] = (int)((st >> 8) % (uint32_t)S);
         }
-        ga = sg_gap_resampled(pl, real, ta, S, idx, S, va);
-        gb = sg_gap_resampled(pl, real, tb, S, idx, S, vb);
+        ga = sg_gap_resampled(pl, real, ta, S, idx, S, va, sa);
+        gb = sg_gap_resampled(pl, real, tb, S, idx, S, vb, sb);
         if (ga - null_mean > 0.0) {
             fb[nb++] = (ga - gb) / (ga - null_mean);
         }
@@ -429,11 +443,71 @@ static void explained(const sg_plist_t *pl, const double *real, const double *ta
     *hi = fb[(int)(0.84 * (double)(nb - 1))];
 }
 
+/* Score test of adding an effect, on the held-out segment: the deviation
+ * of the real from model a's twins projected on the effect's signature
+ * (delta_j = twin mean of b - twin mean of a), T = sum_j delta_j d_j / D_j,
+ * D_j the noise variance of point j (the matched filter, most powerful for
+ * this alternative; linear, so its null is close to Gaussian). Its null
+ * distribution comes from the twins of a taken as the real (with their
+ * refit shifts), each against the other twins of a and b (its own seed
+ * left out of both: b's twin of that seed shares its random numbers).
+ * Returns z = (T_real - mean T_s) / sd T_s. */
+double sg_score_test(const sg_plist_t *pl, const double *real, const sg_cmp_t *ca, const double *ta,
+                         const double *sa, const double *tb, int S, double *t_real, double *t_mean, double *t_sd)
+{
+    size_t j, n = pl->n;
+    int s, r;
+    double sum = 0.0, sum2 = 0.0, T = 0.0, sd;
+    double *ma = (double *)malloc((n + 1) * sizeof *ma), *mb = (double *)malloc((n + 1) * sizeof *mb);
+    double *D = (double *)malloc((n + 1) * sizeof *D);
+    if (ma == NULL || mb == NULL || D == NULL || S < 4) {
+        free(ma);
+        free(mb);
+        free(D);
+        return 0.0;
+    }
+    for (j = 0; j < n; j++) {
+        ma[j] = mb[j] = 0.0;
+        for (r = 0; r < S; r++) {
+            ma[j] += ta[(size_t)r * n + j];
+            mb[j] += tb[(size_t)r * n + j];
+        }
+        D[j] = ca->sd_tot[j] * ca->sd_tot[j];
+        if (!(D[j] > 1e-24)) {
+            D[j] = 1e-24;
+        }
+        T += (mb[j] - ma[j]) / (double)S * (real[j] - ma[j] / (double)S) / D[j];
+    }
+    for (s = 0; s < S; s++) {
+        double Ts = 0.0;
+        for (j = 0; j < n; j++) {
+            double a1 = (ma[j] - ta[(size_t)s * n + j]) / (double)(S - 1);
+            double b1 = (mb[j] - tb[(size_t)s * n + j]) / (double)(S - 1);
+            double ps = ta[(size_t)s * n + j] - (sa != NULL ? sa[(size_t)s * n + j] : 0.0);
+            Ts += (b1 - a1) * (ps - a1) / D[j];
+        }
+        sum += Ts;
+        sum2 += Ts * Ts;
+    }
+    free(ma);
+    free(mb);
+    free(D);
+    *t_real = T;
+    *t_mean = sum / (double)S;
+    sd = sqrt((sum2 - sum * sum / (double)S) / (double)(S - 1));
+    *t_sd = sd;
+    return sd > 0.0 ? (T - *t_mean) / sd : 0.0;
+}
+
 /* The static effects the diagnosis can fit. */
 static const int k_static_cands[] = { FNAV_EFFECT_QUANT,   FNAV_EFFECT_VIBRATION, FNAV_EFFECT_FLICKER,
                                       FNAV_EFFECT_RRW,     FNAV_EFFECT_RAMP,      FNAV_EFFECT_THERMAL,
                                       FNAV_EFFECT_JUMPS };
 #define N_STATIC_CANDS ((int)(sizeof k_static_cands / sizeof k_static_cands[0]))
+
+/* Least improvement of the fit segment's Allan objective for a candidate to
+ * be simulated and tested on the held-out segment. */
+#define SG_DQ_TEST 6.0
 
 /* Index of an effect's magnitude parameter. */
 static int mag_index(int id)
@@ -453,25 +527,29 @@ static int cand_eligible(int id, const sg_evidence_t *ev, double zc)
 }
 
 /* Longest AR(1) correlation time of the baseline: its Allan bump (at
- * 1.89 T) must lie inside the tau range of both the fit and the held-out
- * analysis; longer correlations are random-walk-like and belong to the
- * catalogue (rrw, flicker, ramp), where the held-out test can judge them. */
+ * 1.89 T) and the fall after it must lie inside the tau range of both the
+ * fit and the held-out analysis; longer correlations are random-walk-like
+ * over the record (sigma and T trade off along sigma^2 / T) and belong to
+ * the catalogue (rrw, flicker, ramp), where the held-out test judges them. */
 static double fit_tmax(const sg_result_t *r, int ch)
 {
     int g;
     double t = INFINITY;
     for (g = SG_FIT; g <= SG_HOLD; g++) {
         const sg_plist_t *pl = &r->pl[ch][g];
+        const double lim = SG_ID_FRAC * (double)sg_segs_minblock(&r->segs, g) / r->rate_hz * (1.0 + 1e-9);
         size_t j;
         double tmax = 0.0;
         for (j = 0; j < pl->n; j++) {
-            if (pl->p[j].dom == SG_ALLAN && pl->p[j].x > tmax) {
+            if (pl->p[j].dom == SG_ALLAN && pl->p[j].x <= lim && pl->p[j].x > tmax) {
                 tmax = pl->p[j].x;
             }
         }
         t = tmax < t ? tmax : t;
     }
-    return t / 1.893;
+    /* the bump at 1.89 T and the fall after it (slope -1/2, what tells a
+     * Gauss-Markov bias from a random walk) inside the range: T <= tau_max / 4 */
+    return t / 4.0;
 }
 
 /* Forward selection on one channel. */
@@ -485,6 +563,10 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     sg_cmp_t ccur[SG_NSEG];
     int with[SG_MAX_EFF], nwith = 0, step, g, i;
     double zc = c->cmp[SG_FULL].z_crit;
+    /* each simulated candidate is a test: Bonferroni over the channels and
+     * about five candidates each; the null's spread comes from S twins, so
+     * the quantile is Student's with S - 1 degrees of freedom */
+    const double zacc = gsl_cdf_tdist_Qinv(r->opts.alpha / (double)(SG_NCH * 5), (double)(r->opts.seeds - 1));
     const double tmax = fit_tmax(r, ch);
     uint32_t seed = o->seed + 1000u * (uint32_t)ch;
     (void)x;
@@ -523,6 +605,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
         if (step > 0 && !ccur[SG_HOLD].significant) {
             break;
         }
+        (void)zacc;
         if (sg_fit_model(tab, c->baseline.mean, with, nwith, &c->ev, tmax, &curfit) != 0) {
             break;
         }
@@ -544,6 +627,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             cd->id = id;
             cd->eff = f.model.e[sg_model_find(&f.model, id)];
             cd->Q_fit = f.Q;
+            cd->dQ_fit = curfit.Q - f.Q;
             cd->expl_hold = cd->expl_lo = cd->expl_hi = (double)NAN;
             cd->G_fit = cd->G_hold = (double)NAN;
             order[nord++] = st->ncand - 1;
@@ -573,7 +657,10 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             twinset_t ts;
             sg_cmp_t cc[SG_NSEG];
             double dG;
-            if (!pri && (i >= o->prescreen + (c->ev.q_z > zc) + (c->ev.tone_score > 3.0) || !(cd->eff.p[mag_index(cd->id)] != 0.0))) {
+            /* a candidate is tested on the held-out segment when the fit
+             * segment supports it (objective lower by SG_DQ_TEST) */
+            if (!pri && (i >= o->prescreen + (c->ev.q_z > zc) + (c->ev.tone_score > 3.0) ||
+                         !(cd->eff.p[mag_index(cd->id)] != 0.0) || !(curfit.Q - cd->Q_fit > SG_DQ_TEST))) {
                 continue;
             }
             memcpy(w2, with, (size_t)nwith * sizeof *w2);
@@ -599,20 +686,25 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
                 cd->simulated = 1;
                 cd->G_fit = cc[SG_FIT].G;
                 cd->G_hold = cc[SG_HOLD].G;
-                explained(&pls[SG_HOLD], rv[SG_HOLD], cur.v[SG_HOLD], cur.vx[SG_HOLD], ts.v[SG_HOLD], ts.vx[SG_HOLD], S,
-                          ccur[SG_HOLD].null_mean,
+                sg_explained(&pls[SG_HOLD], rv[SG_HOLD], cur.v[SG_HOLD], cur.vx[SG_HOLD], cur.sh[SG_HOLD], ts.v[SG_HOLD],
+                          ts.vx[SG_HOLD], ts.sh[SG_HOLD], S,
+                          ccur[SG_HOLD].null_mean, ccur[SG_HOLD].null_sd,
                           &cd->expl_hold, &cd->expl_lo, &cd->expl_hi, seed + (uint32_t)cd->id);
                 cd->expl_fit = (ccur[SG_FIT].G - ccur[SG_FIT].null_mean) > 0.0
                                    ? (ccur[SG_FIT].G - cc[SG_FIT].G) / (ccur[SG_FIT].G - ccur[SG_FIT].null_mean)
                                    : 0.0;
+                cd->z_delta = sg_score_test(&pls[SG_HOLD], rv[SG_HOLD], &ccur[SG_HOLD], cur.v[SG_HOLD], cur.sh[SG_HOLD],
+                                         ts.v[SG_HOLD], S, &cd->t_hold, &cd->t_null_mean, &cd->t_null_sd);
             }
             dG = ccur[SG_HOLD].G - cd->G_hold;
+            cd->dG_hold = dG;
             if (prog != NULL) {
                 *pdone += 1.0;
                 hx_progress_update(prog, *pdone);
             }
-            /* accepted only with a held-out gain beyond the seed noise */
-            if (dG > bestdG && cd->expl_lo > 0.0 && cd->expl_hold >= 0.2) {
+            /* accepted only with a held-out gain beyond what twins without
+             * the effect show (z_delta) and beyond the seed noise */
+            if (dG > bestdG && cd->z_delta > zacc && !(cd->expl_lo <= 0.0)) {
                 if (best >= 0) {
                     twinset_free(&bestset);
                     for (g = 0; g < SG_NSEG; g++) {
@@ -701,24 +793,26 @@ static void locate(sg_result_t *r, int ch, int seg)
 static int real_features(const double *x, const sg_segs_t *segs, const sg_feat_cfg_t *fc, double q, int ch,
                          sg_plist_t pl[SG_NSEG], double *vals[SG_NSEG])
 {
-    int g;
+    int g, b;
     for (g = 0; g < SG_NSEG; g++) {
-        sg_acc_t a;
+        sg_segacc_t a;
         long k, cnt;
         size_t cap = 512;
-        if (sg_acc_init(&a, fc, segs->n[g], q) != 0) {
+        if (sg_segacc_init(&a, fc, segs, g, q) != 0) {
             return -1;
         }
-        for (k = 0; k < segs->n[g]; k++) {
-            sg_acc_push(&a, x[segs->start[g] + k]);
+        for (b = 0; b < segs->nb[g]; b++) {
+            for (k = 0; k < segs->n[g][b]; k++) {
+                sg_segacc_push(&a, b, x[segs->start[g][b] + k]);
+            }
         }
         vals[g] = (double *)malloc(cap * sizeof(double));
         if (vals[g] == NULL) {
-            sg_acc_free(&a);
+            sg_segacc_free(&a);
             return -1;
         }
-        cnt = sg_acc_finish(&a, ch, &pl[g], vals[g], cap);
-        sg_acc_free(&a);
+        cnt = sg_segacc_finish(&a, ch, &pl[g], vals[g], cap);
+        sg_segacc_free(&a);
         if (cnt < 0) {
             return -1;
         }
@@ -769,10 +863,8 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             free(x);
             return -1;
         }
-        sg_table_from(&r->pl[ch][SG_FIT], r->real[ch][SG_FIT], ch, r->rate_hz, 0.0,
-                      (double)r->segs.n[SG_FIT] / r->rate_hz, &tfit);
-        sg_table_from(&r->pl[ch][SG_HOLD], r->real[ch][SG_HOLD], ch, r->rate_hz,
-                      (double)r->segs.start[SG_HOLD] / r->rate_hz, (double)r->n / r->rate_hz, &thold);
+        sg_table_from(&r->pl[ch][SG_FIT], r->real[ch][SG_FIT], ch, r->rate_hz, &r->segs, SG_FIT, &tfit);
+        sg_table_from(&r->pl[ch][SG_HOLD], r->real[ch][SG_HOLD], ch, r->rate_hz, &r->segs, SG_HOLD, &thold);
         /* confident answer: the held-out segment must give tight intervals
          * (ADEV within about +-25 %, i.e. sd(ln AVAR) <= 0.5) over a decade */
         {
@@ -791,7 +883,7 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
                 snprintf(r->why, sizeof r->why,
                          "the held-out segment (%.1f s) gives Allan deviations within +-25 %% over only %.2f "
                          "decades of tau (a confident answer needs one decade)",
-                         (double)r->segs.n[SG_HOLD] / r->rate_hz, r->tau_span_dec[ch]);
+                         (double)r->segs.total[SG_HOLD] / r->rate_hz, r->tau_span_dec[ch]);
             }
         }
         if (tfit.n < 4) {
@@ -799,7 +891,7 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             snprintf(r->why, sizeof r->why, "the fit segment has fewer than 4 Allan points");
             continue;
         }
-        sg_evidence(x, (size_t)r->segs.n[SG_FIT], r->rate_hz, 0.0, c->q_full, &c->ev);
+        sg_evidence(x, &r->segs, r->rate_hz, c->q_full, &c->ev);
         tmax = fit_tmax(r, ch);
         if (sg_fit_model(&tfit, mean, NULL, 0, &c->ev, tmax, &bf) != 0) {
             snprintf(err, err_size, "baseline fit failed on channel %s", sg_channel_name(ch));
@@ -837,7 +929,9 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             hx_progress_update(prog, done);
         }
         locate(r, ch, SG_FULL);
-        if ((c->gap_full || c->gap_hold) && r->confident) {
+        /* attribution on every channel: a candidate whose held-out gain is
+         * significant reveals a gap the omnibus test is too blunt for */
+        if (r->confident) {
             if (attribute(r, ch, x, &fc, &tfit, alpha, prog, &done) != 0) {
                 snprintf(err, err_size, "attribution failed on channel %s", sg_channel_name(ch));
                 free(x);
@@ -846,6 +940,7 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
         } else {
             c->within_noise = !c->gap_hold;
         }
+        c->gap = c->gap_full || c->gap_hold || c->nsel > 0;
     }
     if (prog != NULL) {
         hx_progress_end(prog);
@@ -868,7 +963,7 @@ static void verdict(sg_result_t *r)
         if (!c->active) {
             continue;
         }
-        if (c->gap_full || c->gap_hold) {
+        if (c->gap) {
             gaps++;
             sel += c->nsel;
             open += !c->within_noise;
@@ -918,7 +1013,9 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
     r->duration_s = (double)r->n / r->rate_hz;
     r->domain_detected = sg_detect_domain(log, r->rate_hz);
     r->domain = o->domain != 0 ? o->domain : r->domain_detected;
-    sg_segs_split(r->n, r->opts.fit_frac, &r->segs);
+    /* static logs: fit on both ends, held out the middle (a warm-up at the
+     * start and the late behaviour are in both); walks: the first part */
+    sg_segs_split(r->n, r->opts.fit_frac, r->domain == 1 && !r->opts.contiguous, &r->segs);
     timing_analyse(log, r->rate_hz, &r->segs, r->opts.alpha, &r->tim);
     if (r->domain == 1) {
         rc = diagnose_static(log, r, err, err_size);

@@ -39,13 +39,25 @@
 #define SG_MAX_PAR 4        /**< parameters of one effect */
 #define SG_MAX_STEPS 3      /**< forward-selection steps */
 #define SG_ZCAP 40.0        /**< |z| counted at most this in aggregates */
+#define SG_ID_FRAC 0.1      /**< identification (fits) uses tau up to this fraction of a segment */
+#define SG_TEST_FRAC 0.25   /**< the gap tests use tau up to this fraction (the twins give the statistics) */
 
 /** Domains of the gap. */
 enum { SG_ALLAN = 0, SG_PSD, SG_LATTICE, SG_TIMING, SG_NAV, SG_NDOM };
 /** Segments: the whole log, the fit segment, the held-out segment. */
 enum { SG_FULL = 0, SG_FIT, SG_HOLD, SG_NSEG };
 /** Kinds of navigation-domain points. */
-enum { SG_NAV_NIS = 0, SG_NAV_WHITE, SG_NAV_RESID, SG_NAV_DRIFT_H, SG_NAV_DRIFT_V, SG_NAV_NKIND };
+enum {
+    SG_NAV_NIS_FIRST = 0, /**< ln mean NIS of each stance's first zero-velocity update */
+    SG_NAV_NIS_ALL,       /**< ln mean NIS of every update */
+    SG_NAV_AXIS,          /**< ln mean normalised first innovation squared per n axis (x = axis) */
+    SG_NAV_WHITE,         /**< lag-1 correlation of the normalised innovations within stances */
+    SG_NAV_RESID,         /**< ln RMS residual velocity at mid-stance */
+    SG_NAV_WIN,           /**< ln mean first NIS in a time window (x = window centre, s) */
+    SG_NAV_DRIFT_H,       /**< ln horizontal drift at the end (closed walks) */
+    SG_NAV_DRIFT_V,       /**< ln vertical drift at the end (closed walks) */
+    SG_NAV_NKIND
+};
 /** Kinds of timing points. */
 enum { SG_TIM_DUP = 0, SG_TIM_DROP, SG_TIM_JITTER, SG_TIM_NKIND };
 
@@ -62,8 +74,12 @@ const char *sg_channel_unit(int ch);
 typedef struct {
     int dom, ch, kind;
     double x, x_lo, x_hi;     /**< tau (s), band centre and edges (Hz), or time window (s) */
-    uint32_t m, lag, n_phase; /**< Allan: averaging factor, lag and phase count at its level */
-    double edf;               /**< degrees of freedom of the estimate (0: no theory) */
+    uint32_t m, lag, n_phase; /**< Allan: averaging factor, lag and phase count at its level
+                                   (of one block); PSD: first bin, bins, segment length */
+    double edf;               /**< degrees of freedom of the estimate (0: no theory; Allan: computed
+                                   at comparison time from the noise type) */
+    double w;                 /**< weight of the estimate when blocks are pooled (terms, segments) */
+    int nblk;                 /**< independent blocks pooled (EDF adds up) */
 } sg_point_t;
 
 /** A list of points. */
@@ -81,7 +97,7 @@ int sg_plist_add(sg_plist_t *l, const sg_point_t *p);
 typedef struct {
     double rate_hz;           /**< sample rate */
     unsigned allan_per_octave;/**< Allan grid density (2) */
-    double tau_frac;          /**< largest tau as a fraction of the segment (0.1) */
+    double tau_frac;          /**< largest tau as a fraction of the segment (SG_TEST_FRAC) */
     unsigned nfft_max;        /**< longest Welch segment (1024) */
     unsigned bands_per_octave;/**< spectral bands per octave (3) */
 } sg_feat_cfg_t;
@@ -165,7 +181,26 @@ int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int
 /** G of the real against a subset of twin seeds (bootstrap helper):
  *  idx[k], k < S2, are seed indices (with repeats). */
 double sg_gap_resampled(const sg_plist_t *pl, const double *real, const double *twin, int S, const int *idx, int S2,
-                        const double *vx);
+                        const double *vx, const double *shift);
+
+/**
+ * Explained fraction of the excess gap (G_a - null mean) by going from twins
+ * a to twins b (paired seeds), with a 68 % bootstrap interval over the
+ * seeds; NaN when G_a is within two null standard deviations (no excess).
+ */
+void sg_explained(const sg_plist_t *pl, const double *real, const double *ta, const double *va, const double *sa,
+                  const double *tb, const double *vb, const double *sb, int S, double null_mean, double null_sd,
+                  double *f, double *lo, double *hi, uint32_t seed);
+
+/**
+ * Score test of going from model a to model b on one segment: the real's
+ * deviation from a's twins projected on the signature b - a (each point
+ * weighted by its noise variance from ca), against the same projection of
+ * each twin of a taken as the real. Returns z; the statistic and its null
+ * mean and sd through the pointers.
+ */
+double sg_score_test(const sg_plist_t *pl, const double *real, const sg_cmp_t *ca, const double *ta, const double *sa,
+                     const double *tb, int S, double *t_real, double *t_mean, double *t_sd);
 
 /* ------------------------------------------------------------ models */
 
@@ -198,13 +233,40 @@ int sg_model_imuerr(const sg_chmodel_t *m, double rate_hz, uint32_t seed, fnav_i
 
 /* ------------------------------------------------------------ twin */
 
-/** Segments of a log: [start, start + n) per SG_FULL, SG_FIT, SG_HOLD. */
+#define SG_MAX_BLK 2 /**< blocks of one segment */
+
+/** Segments of a log: each one or two blocks [start, start + n). */
 typedef struct {
-    long start[SG_NSEG], n[SG_NSEG];
+    int nb[SG_NSEG];
+    long start[SG_NSEG][SG_MAX_BLK], n[SG_NSEG][SG_MAX_BLK];
+    long total[SG_NSEG];      /**< samples of the segment */
+    int sandwich;             /**< 1: fit = both ends, held out = the middle */
 } sg_segs_t;
 
-/** Split n samples: fit = the first frac, held out = the rest. */
-void sg_segs_split(long n, double frac, sg_segs_t *s);
+/**
+ * Split n samples, frac of them to the fit segment: contiguous (fit = the
+ * first frac, held out = the rest) or sandwich (fit = the first and the
+ * last frac/2, held out = the middle; a transient at the start and the late
+ * behaviour are then in both). The whole log is SG_FULL.
+ */
+void sg_segs_split(long n, double frac, int sandwich, sg_segs_t *s);
+/** Block of segment g holding sample k, or -1. */
+int sg_segs_block(const sg_segs_t *s, int g, long k);
+/** Shortest block of a segment, samples. */
+long sg_segs_minblock(const sg_segs_t *s, int g);
+
+/** Features of a segment of one or two blocks (pooled: Allan variances
+ *  weighted by their terms, Welch spectra by their segments, lattice sums
+ *  added; degrees of freedom add up). */
+typedef struct {
+    int nb;
+    sg_acc_t b[SG_MAX_BLK];
+} sg_segacc_t;
+
+int sg_segacc_init(sg_segacc_t *a, const sg_feat_cfg_t *cfg, const sg_segs_t *s, int g, double q);
+void sg_segacc_push(sg_segacc_t *a, int blk, double x);
+long sg_segacc_finish(sg_segacc_t *a, int ch, sg_plist_t *pl, double *vals, size_t cap);
+void sg_segacc_free(sg_segacc_t *a);
 
 /**
  * Simulate S static twins of one channel model over the segments and
@@ -243,11 +305,13 @@ typedef struct {
     double m[FNAV_ALLAN_MAX_POINTS];
     double w[FNAV_ALLAN_MAX_POINTS]; /**< 1 / var(ln AVAR) */
     double rate_hz;
-    double t0_s, t1_s;        /**< segment time span (for thermal) */
+    int nb;                   /**< blocks of the segment */
+    double t0_s[SG_MAX_BLK], t1_s[SG_MAX_BLK]; /**< their time spans (for thermal) */
 } sg_table_t;
 
-/** Allan table of the Allan points of channel ch in a point list / values. */
-void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate_hz, double t0_s, double t1_s,
+/** Allan table of the Allan points of channel ch in a point list / values,
+ *  tau up to SG_ID_FRAC of the shortest block of segment g. */
+void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate_hz, const sg_segs_t *segs, int g,
                    sg_table_t *t);
 
 /**
@@ -258,17 +322,28 @@ void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate
 int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, const sg_evidence_t *ev, double tmax_s,
                  sg_fit_t *out);
 
+/** Allan variance of an effect per unit magnitude squared (its other
+ *  parameters from e) at averaging factor m over [t0_s, t1_s]; 0 for
+ *  effects without a static Allan signature. */
+double sg_effect_avar_unit(const sg_effect_t *e, double rate_hz, double m, double t0_s, double t1_s);
+
 /** Exact Allan variance of a channel model at averaging factor m over a
  *  segment spanning [t0_s, t1_s] (thermal depends on it). */
 double sg_model_avar(const sg_chmodel_t *mdl, double rate_hz, double m, double t0_s, double t1_s);
+/** The same pooled over nb blocks (weights: their terms). */
+double sg_model_avar_blocks(const sg_chmodel_t *mdl, double rate_hz, double m, int nb, const double *t0_s,
+                            const double *t1_s);
 
 /** Expected statistic of a point under a model: ln AVAR (Allan) or ln of
  *  the band's mean one-sided PSD (spectral, continuous-time shapes); NaN
  *  for other domains. Used for the spread of refitted models. */
-double sg_model_lnstat(const sg_chmodel_t *mdl, const sg_point_t *p, double rate_hz, double t0_s, double t1_s);
+double sg_model_lnstat(const sg_chmodel_t *mdl, const sg_point_t *p, double rate_hz, int nb, const double *t0_s,
+                       const double *t1_s);
 
-/** Gather the special-estimator evidence of the fit segment x[0..n). */
-void sg_evidence(const double *x, size_t n, double rate_hz, double t0_s, double q_hint, sg_evidence_t *ev);
+/** Gather the special-estimator evidence of the fit segment of x (lines in
+ *  its first block, which starts at sample 0; steps in every block; the
+ *  slope over all of it). */
+void sg_evidence(const double *x, const sg_segs_t *segs, double rate_hz, double q_hint, sg_evidence_t *ev);
 
 /* ------------------------------------------------------------ diagnosis */
 
@@ -279,6 +354,7 @@ typedef struct {
     int seeds_cand;           /**< twins per candidate (12) */
     int prescreen;            /**< candidates simulated per step (3) */
     double fit_frac;          /**< fit segment fraction (0.6) */
+    int contiguous;           /**< static logs: fit on the first part instead of both ends */
     double alpha;             /**< family-wise false-alarm level (0.05) */
     uint32_t seed;            /**< first simulator seed */
     int max_steps;            /**< forward-selection steps (3) */
@@ -304,10 +380,15 @@ typedef struct {
     int id;
     sg_effect_t eff;          /**< fitted parameters */
     double Q_fit;             /**< fit-segment objective with it */
+    double dQ_fit;            /**< improvement of the fit-segment objective over the current model */
     int simulated;
     double G_fit, G_hold;     /**< gaps with it */
     double expl_hold, expl_lo, expl_hi; /**< explained fraction of the held-out excess gap, 68 % interval */
     double expl_fit;
+    double dG_hold;           /**< held-out gap reduction of the real */
+    double t_hold;            /**< score statistic: the held-out deviation projected on the effect's signature */
+    double t_null_mean, t_null_sd; /**< ... of the twins taken as real (no effect): its null distribution */
+    double z_delta;           /**< (t_hold - null mean) / null sd: significance of the effect on held-out data */
 } sg_cand_t;
 
 /** One forward-selection step of a channel. */
@@ -335,6 +416,7 @@ typedef struct {
     int within_noise;         /**< held-out gap of the final model within the null band */
     int gap_full;             /**< significant gap on the whole log with the baseline */
     int gap_hold;             /**< ... on the held-out segment */
+    int gap;                  /**< a gap: either of the above, or an effect selected on held-out evidence */
 } sg_chres_t;
 
 /** Timing-domain result. */

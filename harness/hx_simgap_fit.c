@@ -118,7 +118,7 @@ static double vib_unit(double m, double w)
 
 /* Unit basis of an effect's AVAR (coefficient = the square of its magnitude
  * parameter); the other parameters are taken from e. */
-static double effect_unit(const sg_effect_t *e, double fs, double m, double t0, double t1)
+double sg_effect_avar_unit(const sg_effect_t *e, double fs, double m, double t0, double t1)
 {
     const double tau = m / fs;
     switch (e->id) {
@@ -163,9 +163,26 @@ double sg_model_avar(const sg_chmodel_t *mdl, double rate_hz, double m, double t
         if (k < 0) {
             continue;
         }
-        v += e->p[k] * e->p[k] * effect_unit(e, rate_hz, m, t0_s, t1_s);
+        v += e->p[k] * e->p[k] * sg_effect_avar_unit(e, rate_hz, m, t0_s, t1_s);
     }
     return v;
+}
+
+double sg_model_avar_blocks(const sg_chmodel_t *mdl, double rate_hz, double m, int nb, const double *t0_s,
+                            const double *t1_s)
+{
+    double v = 0.0, w = 0.0;
+    int b;
+    for (b = 0; b < nb; b++) {
+        /* weight: the overlapping terms of the block */
+        double wb = (t1_s[b] - t0_s[b]) * rate_hz - 2.0 * m + 1.0;
+        if (wb <= 0.0) {
+            continue;
+        }
+        v += wb * sg_model_avar(mdl, rate_hz, m, t0_s[b], t1_s[b]);
+        w += wb;
+    }
+    return w > 0.0 ? v / w : sg_model_avar(mdl, rate_hz, m, t0_s[0], t1_s[0]);
 }
 
 /* One-sided PSD of a model at f (continuous-time shapes, u^2/Hz). */
@@ -193,10 +210,11 @@ static double model_psd(const sg_chmodel_t *mdl, double f, double fs)
     return S;
 }
 
-double sg_model_lnstat(const sg_chmodel_t *mdl, const sg_point_t *p, double rate_hz, double t0_s, double t1_s)
+double sg_model_lnstat(const sg_chmodel_t *mdl, const sg_point_t *p, double rate_hz, int nb, const double *t0_s,
+                       const double *t1_s)
 {
     if (p->dom == SG_ALLAN) {
-        double v = sg_model_avar(mdl, rate_hz, (double)p->m, t0_s, t1_s);
+        double v = sg_model_avar_blocks(mdl, rate_hz, (double)p->m, nb, t0_s, t1_s);
         return v > 0.0 ? log(v) : (double)NAN;
     }
     if (p->dom == SG_PSD && p->n_phase > 0u && p->lag > 0u) {
@@ -213,17 +231,22 @@ double sg_model_lnstat(const sg_chmodel_t *mdl, const sg_point_t *p, double rate
 
 /* ------------------------------------------------------------ table */
 
-void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate_hz, double t0_s, double t1_s,
+void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate_hz, const sg_segs_t *segs, int g,
                    sg_table_t *t)
 {
     size_t j, k = 0;
     size_t idx[FNAV_ALLAN_MAX_POINTS];
+    int b;
+    const double lim = SG_ID_FRAC * (double)sg_segs_minblock(segs, g) / rate_hz * (1.0 + 1e-9);
     memset(t, 0, sizeof *t);
     t->rate_hz = rate_hz;
-    t->t0_s = t0_s;
-    t->t1_s = t1_s;
+    t->nb = segs->nb[g];
+    for (b = 0; b < t->nb; b++) {
+        t->t0_s[b] = (double)segs->start[g][b] / rate_hz;
+        t->t1_s[b] = (double)(segs->start[g][b] + segs->n[g][b]) / rate_hz;
+    }
     for (j = 0; j < pl->n && k < FNAV_ALLAN_MAX_POINTS; j++) {
-        if (pl->p[j].dom == SG_ALLAN && pl->p[j].ch == ch && vals[j] > -600.0) {
+        if (pl->p[j].dom == SG_ALLAN && pl->p[j].ch == ch && vals[j] > -600.0 && pl->p[j].x <= lim) {
             idx[k] = j;
             t->lnav[k] = vals[j];
             t->m[k] = (double)pl->p[j].m;
@@ -232,21 +255,41 @@ void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate
     }
     t->n = k;
     for (j = 0; j < k; j++) {
-        size_t a = j > 0 ? j - 1 : j, b = j + 1 < k ? j + 1 : j;
+        size_t a = j > 0 ? j - 1 : j, bb = j + 1 < k ? j + 1 : j;
         double sl = 0.0, nu, var;
         fnav_allan_noise_t type;
-        if (a != b) {
-            sl = 0.5 * (t->lnav[b] - t->lnav[a]) / log(t->m[b] / t->m[a]);
+        if (a != bb) {
+            sl = 0.5 * (t->lnav[bb] - t->lnav[a]) / log(t->m[bb] / t->m[a]);
         }
         type = fnav_allan_noise_from_slope((fnav_real_t)sl);
         if (type == FNAV_ALLAN_NOISE_RAMP || type == FNAV_ALLAN_NOISE_UNKNOWN) {
             type = type == FNAV_ALLAN_NOISE_RAMP ? FNAV_ALLAN_NOISE_RRW : FNAV_ALLAN_NOISE_WHITE;
         }
-        nu = fnav_allan_edf(fnav_allan_noise_alpha(type), pl->p[idx[j]].lag, pl->p[idx[j]].n_phase, 1);
+        nu = fnav_allan_edf(fnav_allan_noise_alpha(type), pl->p[idx[j]].lag, pl->p[idx[j]].n_phase, 1) *
+             (double)(pl->p[idx[j]].nblk > 1 ? pl->p[idx[j]].nblk : 1);
         var = nu > 0.0 ? (nu > 1e6 ? 2.0 / nu : gsl_sf_psi_1(0.5 * nu)) : 1.0;
         /* 0.3 % model floor: the short-tau points' EDF reach 10^6 */
         t->w[j] = 1.0 / (var + 0.003 * 0.003);
     }
+}
+
+/* Unit Allan variance of an effect at point m of a table, pooled over its
+ * blocks as the estimator pools them. */
+static double table_unit(const sg_effect_t *e, const sg_table_t *t, double m)
+{
+    double v = 0.0, w = 0.0;
+    int b;
+    if (e->id != FNAV_EFFECT_THERMAL || t->nb <= 1) {
+        return sg_effect_avar_unit(e, t->rate_hz, m, t->t0_s[0], t->t1_s[0]);
+    }
+    for (b = 0; b < t->nb; b++) {
+        double wb = (t->t1_s[b] - t->t0_s[b]) * t->rate_hz - 2.0 * m + 1.0;
+        if (wb > 0.0) {
+            v += wb * sg_effect_avar_unit(e, t->rate_hz, m, t->t0_s[b], t->t1_s[b]);
+            w += wb;
+        }
+    }
+    return w > 0.0 ? v / w : 0.0;
 }
 
 /* ------------------------------------------------------------ NNLS */
@@ -388,7 +431,7 @@ static double objective(const sg_table_t *t, const sg_chmodel_t *m)
     double Q = 0.0;
     size_t j;
     for (j = 0; j < t->n; j++) {
-        double mv = sg_model_avar(m, t->rate_hz, t->m[j], t->t0_s, t->t1_s), r;
+        double mv = sg_model_avar_blocks(m, t->rate_hz, t->m[j], t->nb, t->t0_s, t->t1_s), r;
         if (!(mv > 0.0)) {
             mv = 1e-300;
         }
@@ -420,7 +463,7 @@ static double solve_skel(const sg_table_t *t, skel_t *s)
         double a = exp(t->lnav[j]), sw = sqrt(t->w[j]), fixed = 0.0;
         for (i = 0; i < s->m.n; i++) {
             const sg_effect_t *e = &s->m.e[i];
-            double u = effect_unit(e, t->rate_hz, t->m[j], t->t0_s, t->t1_s);
+            double u = table_unit(e, t, t->m[j]);
             if (col[i] >= 0) {
                 A[j][col[i]] = sw * u / a;
             } else if (mag_param(e->id) >= 0) {
@@ -484,8 +527,8 @@ static void fit_errors(const sg_table_t *t, skel_t *s)
         mp.e[pe[a]].p[pk[a]] *= exp(h);
         mm.e[pe[a]].p[pk[a]] *= exp(-h);
         for (j = 0; j < t->n; j++) {
-            double vp = sg_model_avar(&mp, t->rate_hz, t->m[j], t->t0_s, t->t1_s);
-            double vm = sg_model_avar(&mm, t->rate_hz, t->m[j], t->t0_s, t->t1_s);
+            double vp = sg_model_avar_blocks(&mp, t->rate_hz, t->m[j], t->nb, t->t0_s, t->t1_s);
+            double vm = sg_model_avar_blocks(&mm, t->rate_hz, t->m[j], t->nb, t->t0_s, t->t1_s);
             J[j][a] = sqrt(t->w[j]) * (log(vp > 0.0 ? vp : 1e-300) - log(vm > 0.0 ? vm : 1e-300)) / (2.0 * h);
         }
     }
@@ -522,7 +565,13 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
 {
     skel_t s, best;
     int i, iw = -1, ia = -1, it = -1, nq, qv, ngT, gi, ti, have_th = 0;
-    double tmin_s, bestQ = INFINITY, span = t->t1_s - t->t0_s;
+    double tmin_s, bestQ = INFINITY, span = 0.0;
+    {
+        int b;
+        for (b = 0; b < t->nb; b++) {
+            span += t->t1_s[b] - t->t0_s[b];
+        }
+    }
     memset(out, 0, sizeof *out);
     memset(&s, 0, sizeof s);
     if (t->n < 4) {
@@ -573,6 +622,7 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
         }
     }
     (void)iw;
+    (void)span;
     /* AR(1) correlation time grid: from one sample to tmax */
     tmin_s = 1.0 / t->rate_hz;
     if (!(tmax_s > tmin_s)) {
@@ -588,7 +638,7 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
         for (ti = 0; ti < (have_th ? 24 : 1); ti++) {
             if (have_th) {
                 /* warm-up time constants from 10 s to twice the segment */
-                double lo = 10.0, hi = 2.0 * (t->t1_s > 20.0 ? t->t1_s : 20.0);
+                double te = t->t1_s[t->nb - 1], lo = 10.0, hi = 2.0 * (te > 20.0 ? te : 20.0);
                 s.m.e[it].p[2] = lo * pow(hi / lo, (double)ti / 23.0);
             }
             for (gi = 0; gi < ngT; gi++) {
@@ -918,24 +968,44 @@ static void find_steps(const double *x, size_t n, sg_evidence_t *ev)
     ev->nsteps = (int)np;
 }
 
-void sg_evidence(const double *x, size_t n, double rate_hz, double t0_s, double q_hint, sg_evidence_t *ev)
+void sg_evidence(const double *x, const sg_segs_t *segs, double rate_hz, double q_hint, sg_evidence_t *ev)
 {
-    double st = 0.0, sx = 0.0, stt = 0.0, stx = 0.0;
-    size_t k;
+    double st = 0.0, sx = 0.0, stt = 0.0, stx = 0.0, cnt = 0.0;
+    int b, ns = 0;
+    double s2 = 0.0;
     memset(ev, 0, sizeof *ev);
     ev->q = q_hint;
-    ev->q_z = q_hint > 0.0 ? sg_lattice_z(x, n, q_hint) : 0.0;
-    find_tone(x, n, rate_hz, ev);
-    find_steps(x, n, ev);
-    for (k = 0; k < n; k++) {
-        double t = t0_s + (double)k / rate_hz, v = x[k] - x[0];
-        st += t;
-        sx += v;
-        stt += t * t;
-        stx += t * v;
+    ev->q_z = 0.0;
+    if (q_hint > 0.0) {
+        double zs = 0.0;
+        for (b = 0; b < segs->nb[SG_FIT]; b++) {
+            zs += sg_lattice_z(x + segs->start[SG_FIT][b], (size_t)segs->n[SG_FIT][b], q_hint);
+        }
+        ev->q_z = zs / sqrt((double)segs->nb[SG_FIT]);
     }
-    if (n > 2) {
-        double dn = (double)n, den = stt - st * st / dn;
-        ev->slope = den > 0.0 ? (stx - st * sx / dn) / den : 0.0;
+    /* lines: the first block starts at sample 0, so its phase is the log's */
+    find_tone(x + segs->start[SG_FIT][0], (size_t)segs->n[SG_FIT][0], rate_hz, ev);
+    for (b = 0; b < segs->nb[SG_FIT]; b++) {
+        sg_evidence_t e2;
+        long k;
+        memset(&e2, 0, sizeof e2);
+        find_steps(x + segs->start[SG_FIT][b], (size_t)segs->n[SG_FIT][b], &e2);
+        ns += e2.nsteps;
+        s2 += e2.step_rms * e2.step_rms * (double)e2.nsteps;
+        for (k = 0; k < segs->n[SG_FIT][b]; k++) {
+            long i = segs->start[SG_FIT][b] + k;
+            double t = (double)i / rate_hz, v = x[i] - x[0];
+            st += t;
+            sx += v;
+            stt += t * t;
+            stx += t * v;
+            cnt += 1.0;
+        }
+    }
+    ev->nsteps = ns;
+    ev->step_rms = ns > 0 ? sqrt(s2 / (double)ns) : 0.0;
+    if (cnt > 2.0) {
+        double den = stt - st * st / cnt;
+        ev->slope = den > 0.0 ? (stx - st * sx / cnt) / den : 0.0;
     }
 }

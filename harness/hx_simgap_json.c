@@ -1,15 +1,370 @@
-/* Sim-to-real gap: JSON report (WORK IN PROGRESS). */
+/* Sim-to-real gap diagnosis: the JSON report, schema footnav-simgap/1
+ * (documented in docs/simgap.md). */
 #include "hx_simgap.h"
+#include "hx_simgap_nav.h"
+
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const k_seg[SG_NSEG] = { "full", "fit", "held_out" };
+
+/* A finite number or null. */
+static void add_num(cJSON *o, const char *k, double v)
+{
+    if (isfinite(v)) {
+        cJSON_AddNumberToObject(o, k, v);
+    } else {
+        cJSON_AddNullToObject(o, k);
+    }
+}
+
+/* {"name": value, ...} of an effect's parameters, and their standard errors. */
+static cJSON *effect_json(const sg_effect_t *e, int ch)
+{
+    const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)e->id);
+    cJSON *o = cJSON_CreateObject(), *p = cJSON_CreateObject(), *se = cJSON_CreateObject(), *u = cJSON_CreateObject();
+    int k;
+    cJSON_AddStringToObject(o, "effect", info != NULL ? info->name : "?");
+    for (k = 0; info != NULL && k < info->nparams && k < SG_MAX_PAR; k++) {
+        const char *unit = info->params[k].unit;
+        add_num(p, info->params[k].name, e->p[k]);
+        add_num(se, info->params[k].name, e->se[k]);
+        if (strncmp(unit, "u", 1) == 0) {
+            char b[48];
+            snprintf(b, sizeof b, "%s%s", sg_channel_unit(ch), unit + 1);
+            cJSON_AddStringToObject(u, info->params[k].name, b);
+        } else {
+            cJSON_AddStringToObject(u, info->params[k].name, unit);
+        }
+    }
+    cJSON_AddItemToObject(o, "params", p);
+    cJSON_AddItemToObject(o, "se", se);
+    cJSON_AddItemToObject(o, "units", u);
+    return o;
+}
+
+static cJSON *cmp_json(const sg_cmp_t *c)
+{
+    cJSON *o = cJSON_CreateObject(), *d = cJSON_CreateObject();
+    int k;
+    add_num(o, "G", c->G);
+    add_num(o, "G_null_mean", c->null_mean);
+    add_num(o, "G_null_sd", c->null_sd);
+    add_num(o, "G_crit", c->G_crit);
+    add_num(o, "max_abs_z", c->maxz);
+    add_num(o, "z_crit", c->z_crit);
+    cJSON_AddBoolToObject(o, "significant", c->significant);
+    for (k = 0; k < SG_NDOM; k++) {
+        if (c->G_dom[k] == c->G_dom[k]) {
+            add_num(d, sg_domain_name(k), c->G_dom[k]);
+        }
+    }
+    cJSON_AddItemToObject(o, "G_per_domain", d);
+    return o;
+}
+
+static cJSON *points_json(const sg_plist_t *pl, const double *real, const sg_cmp_t *c)
+{
+    cJSON *a = cJSON_CreateArray();
+    size_t j;
+    for (j = 0; j < pl->n && c->z != NULL; j++) {
+        const sg_point_t *p = &pl->p[j];
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddStringToObject(o, "domain", sg_domain_name(p->dom));
+        add_num(o, "x", p->x);
+        add_num(o, "x_lo", p->x_lo);
+        add_num(o, "x_hi", p->x_hi);
+        add_num(o, "real", real[j]);
+        add_num(o, "twin", c->twin_mean[j]);
+        add_num(o, "twin_sd", c->twin_sd[j]);
+        add_num(o, "sd", c->sd_tot[j]);
+        add_num(o, "z", c->z[j]);
+        cJSON_AddItemToArray(a, o);
+    }
+    return a;
+}
+
+static cJSON *channel_json(const sg_result_t *r, int ch)
+{
+    const sg_chres_t *c = &r->ch[ch];
+    cJSON *o = cJSON_CreateObject(), *b, *g, *gf, *pts, *att, *steps, *sel, *fm;
+    int i, k, iw, ia;
+    cJSON_AddStringToObject(o, "channel", sg_channel_name(ch));
+    cJSON_AddStringToObject(o, "unit", sg_channel_unit(ch));
+    cJSON_AddBoolToObject(o, "analysed", c->active);
+    if (!c->active) {
+        return o;
+    }
+    b = cJSON_AddObjectToObject(o, "baseline");
+    add_num(b, "mean", c->baseline.mean);
+    iw = sg_model_find(&c->baseline, FNAV_EFFECT_WHITE);
+    ia = sg_model_find(&c->baseline, FNAV_EFFECT_AR1);
+    if (iw >= 0) {
+        add_num(b, "white_density", c->baseline.e[iw].p[0]);
+        add_num(b, "white_density_se", c->baseline.e[iw].se[0]);
+    }
+    if (ia >= 0) {
+        add_num(b, "ar1_sigma", c->baseline.e[ia].p[1]);
+        add_num(b, "ar1_sigma_se", c->baseline.e[ia].se[1]);
+        add_num(b, "ar1_tau_s", c->baseline.e[ia].p[1] > 0.0 ? c->baseline.e[ia].p[0] : (double)NAN);
+        add_num(b, "ar1_tau_s_se", c->baseline.e[ia].se[0]);
+    }
+    if (c->q_full > 0.0) {
+        cJSON *l = cJSON_AddObjectToObject(o, "lattice");
+        add_num(l, "step", c->q_full);
+        add_num(l, "z", c->q_full_z);
+    } else {
+        cJSON_AddNullToObject(o, "lattice");
+    }
+    g = cJSON_AddObjectToObject(o, "gap");
+    gf = cJSON_AddObjectToObject(o, "gap_final");
+    pts = cJSON_AddObjectToObject(o, "points");
+    for (k = 0; k < SG_NSEG; k++) {
+        cJSON_AddItemToObject(g, k_seg[k], cmp_json(&c->cmp[k]));
+        if (c->cmp_final[k].z != NULL) {
+            cJSON_AddItemToObject(gf, k_seg[k], cmp_json(&c->cmp_final[k]));
+        }
+        if (k != SG_FIT) {
+            cJSON_AddItemToObject(pts, k_seg[k], points_json(&r->pl[ch][k], r->real[ch][k], &c->cmp[k]));
+        }
+    }
+    cJSON_AddBoolToObject(o, "gap_significant", c->gap);
+    att = cJSON_AddObjectToObject(o, "attribution");
+    steps = cJSON_AddArrayToObject(att, "steps");
+    for (i = 0; i < c->nsteps; i++) {
+        const sg_step_t *st = &c->step[i];
+        cJSON *so = cJSON_CreateObject(), *ca = cJSON_AddArrayToObject(so, "candidates");
+        cJSON_AddNumberToObject(so, "step", i + 1);
+        add_num(so, "G_held_out_before", st->G_hold_before);
+        add_num(so, "G_fit_before", st->G_fit_before);
+        for (k = 0; k < st->ncand; k++) {
+            const sg_cand_t *cd = &st->cand[k];
+            cJSON *co = effect_json(&cd->eff, ch);
+            add_num(co, "fit_dQ", cd->dQ_fit);
+            cJSON_AddBoolToObject(co, "simulated", cd->simulated);
+            if (cd->simulated) {
+                add_num(co, "G_fit", cd->G_fit);
+                add_num(co, "G_held_out", cd->G_hold);
+                add_num(co, "dG_held_out", cd->dG_hold);
+                add_num(co, "score", cd->t_hold);
+                add_num(co, "score_null_mean", cd->t_null_mean);
+                add_num(co, "score_null_sd", cd->t_null_sd);
+                add_num(co, "z", cd->z_delta);
+                add_num(co, "explained", cd->expl_hold);
+                add_num(co, "explained_lo", cd->expl_lo);
+                add_num(co, "explained_hi", cd->expl_hi);
+                add_num(co, "explained_fit", cd->expl_fit);
+            }
+            cJSON_AddBoolToObject(co, "selected", k == st->selected);
+            cJSON_AddItemToArray(ca, co);
+        }
+        cJSON_AddItemToArray(steps, so);
+    }
+    sel = cJSON_AddArrayToObject(att, "selected");
+    for (i = 0; i < c->nsel; i++) {
+        int m = sg_model_find(&c->final, c->sel_id[i]);
+        if (m >= 0) {
+            cJSON *so = effect_json(&c->final.e[m], ch);
+            add_num(so, "explained", c->sel_expl[i]);
+            add_num(so, "explained_lo", c->sel_lo[i]);
+            add_num(so, "explained_hi", c->sel_hi[i]);
+            cJSON_AddItemToArray(sel, so);
+        }
+    }
+    fm = cJSON_AddArrayToObject(att, "final_model");
+    for (i = 0; i < c->final.n; i++) {
+        cJSON_AddItemToArray(fm, effect_json(&c->final.e[i], ch));
+    }
+    cJSON_AddBoolToObject(att, "within_noise", c->within_noise);
+    return o;
+}
+
 int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_size)
 {
-    (void)r;
-    snprintf(err, err_size, "%s: JSON not written yet", path);
-    return -1;
-}
-int sg_write_plots(const sg_result_t *r, const char *dir, const char *cmd)
-{
-    (void)r;
-    (void)dir;
-    (void)cmd;
-    return -1;
+    cJSON *root = cJSON_CreateObject(), *o, *a;
+    char *txt;
+    FILE *f;
+    int ch, k;
+    size_t i;
+    if (root == NULL) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    cJSON_AddStringToObject(root, "schema", "footnav-simgap/1");
+    o = cJSON_AddObjectToObject(root, "log");
+    cJSON_AddStringToObject(o, "path", r->path);
+    cJSON_AddNumberToObject(o, "samples", (double)r->n);
+    add_num(o, "rate_hz", r->rate_hz);
+    add_num(o, "duration_s", r->duration_s);
+    cJSON_AddStringToObject(o, "domain", r->domain == 1 ? "static" : "walk");
+    cJSON_AddStringToObject(o, "domain_detected", r->domain_detected == 1 ? "static" : "walk");
+    cJSON_AddStringToObject(o, "domain_from", r->opts.domain != 0 ? "option" : "detected");
+    o = cJSON_AddObjectToObject(root, "split");
+    cJSON_AddStringToObject(o, "method", r->segs.sandwich ? "sandwich: fit on both ends, held out the middle"
+                                                          : "contiguous: fit on the first part, held out the rest");
+    for (k = SG_FIT; k <= SG_HOLD; k++) {
+        cJSON *s = cJSON_AddArrayToObject(o, k_seg[k]);
+        int b;
+        for (b = 0; b < r->segs.nb[k]; b++) {
+            cJSON *bo = cJSON_CreateObject();
+            add_num(bo, "start_s", (double)r->segs.start[k][b] / r->rate_hz);
+            add_num(bo, "end_s", (double)(r->segs.start[k][b] + r->segs.n[k][b]) / r->rate_hz);
+            cJSON_AddNumberToObject(bo, "samples", (double)r->segs.n[k][b]);
+            cJSON_AddItemToArray(s, bo);
+        }
+    }
+    o = cJSON_AddObjectToObject(root, "settings");
+    cJSON_AddNumberToObject(o, "seeds", r->S);
+    cJSON_AddNumberToObject(o, "seed", r->opts.seed);
+    add_num(o, "alpha", r->opts.alpha);
+    add_num(o, "fit_frac", r->opts.fit_frac);
+    cJSON_AddNumberToObject(o, "max_effects", r->opts.max_steps);
+    cJSON_AddNumberToObject(o, "prescreen", r->opts.prescreen);
+    add_num(o, "tau_identification_frac", SG_ID_FRAC);
+    add_num(o, "tau_test_frac", SG_TEST_FRAC);
+    add_num(o, "z_cap", SG_ZCAP);
+    cJSON_AddBoolToObject(root, "confident", r->confident);
+    if (r->confident) {
+        cJSON_AddNullToObject(root, "too_short");
+    } else {
+        cJSON_AddStringToObject(root, "too_short", r->why);
+    }
+    if (r->domain == 1) {
+        a = cJSON_AddArrayToObject(root, "channels");
+        for (ch = 0; ch < SG_NCH; ch++) {
+            cJSON_AddItemToArray(a, channel_json(r, ch));
+        }
+    }
+    a = cJSON_AddArrayToObject(root, "locations");
+    for (i = 0; i < r->nloc; i++) {
+        const sg_loc_t *L = &r->loc[i];
+        cJSON *lo = cJSON_CreateObject();
+        cJSON_AddStringToObject(lo, "channel", sg_channel_name(L->ch));
+        cJSON_AddStringToObject(lo, "domain", sg_domain_name(L->dom));
+        cJSON_AddStringToObject(lo, "segment", k_seg[L->seg]);
+        add_num(lo, "x_lo", L->x_lo);
+        add_num(lo, "x_hi", L->x_hi);
+        cJSON_AddStringToObject(lo, "x_unit", L->dom == SG_ALLAN ? "s" : (L->dom == SG_PSD ? "Hz" : (L->dom == SG_NAV ? "s" : "u")));
+        add_num(lo, "peak_z", L->peak_z);
+        add_num(lo, "ratio", L->ratio);
+        cJSON_AddNumberToObject(lo, "points", L->npts);
+        cJSON_AddItemToArray(a, lo);
+    }
+    o = cJSON_AddObjectToObject(root, "timing");
+    cJSON_AddBoolToObject(o, "has_stamps", r->tim.have);
+    if (r->tim.have) {
+        static const char *const nm[SG_TIM_NKIND] = { "duplicate", "dropout", "jitter" };
+        cJSON *cnt = cJSON_AddObjectToObject(o, "counts");
+        add_num(o, "stamp_resolution_s", r->tim.res_s);
+        for (k = 0; k < SG_NSEG; k++) {
+            cJSON *s = cJSON_AddObjectToObject(cnt, k_seg[k]);
+            int d;
+            cJSON *z = cJSON_AddObjectToObject(s, "z");
+            cJSON_AddNumberToObject(s, "duplicated", (double)r->tim.n_dup[k]);
+            cJSON_AddNumberToObject(s, "dropped", (double)r->tim.n_drop[k]);
+            cJSON_AddNumberToObject(s, "intervals", (double)r->tim.n_int[k]);
+            add_num(s, "interval_sd_s", r->tim.jit_sd[k]);
+            for (d = 0; d < SG_TIM_NKIND; d++) {
+                add_num(z, nm[d], r->tim.z[k][d]);
+            }
+        }
+        cJSON_AddBoolToObject(o, "significant", r->tim.significant);
+        a = cJSON_AddArrayToObject(o, "selected");
+        for (k = 0; k < SG_TIM_NKIND; k++) {
+            if (r->tim.sel[k]) {
+                cJSON *e = cJSON_CreateObject(), *p = cJSON_AddObjectToObject(e, "params");
+                cJSON_AddStringToObject(e, "effect", nm[k]);
+                if (k == SG_TIM_JITTER) {
+                    add_num(p, "stamp_s", r->tim.stamp_s);
+                } else {
+                    add_num(p, "prob", k == SG_TIM_DUP ? r->tim.dup_prob : r->tim.drop_prob);
+                }
+                add_num(e, "z_whole_log", r->tim.z[SG_FULL][k]);
+                add_num(e, "z_held_out_before", r->tim.z[SG_HOLD][k]);
+                add_num(e, "z_held_out_after", r->tim.z_after[k]);
+                add_num(e, "first_event_s", r->tim.first_t[k]);
+                cJSON_AddItemToArray(a, e);
+            }
+        }
+    }
+    if (r->nav != NULL) {
+        cJSON_AddItemToObject(root, "navigation", sg_nav_json((const sg_nav_t *)r->nav, r));
+    }
+    /* ranked effects over the channels: held-out gap reduction summed */
+    a = cJSON_AddArrayToObject(root, "effects");
+    {
+        int ids[FNAV_EFFECT_COUNT], ne = 0, e2;
+        double score[FNAV_EFFECT_COUNT];
+        memset(score, 0, sizeof score);
+        for (ch = 0; ch < SG_NCH; ch++) {
+            const sg_chres_t *c = &r->ch[ch];
+            for (k = 0; k < c->nsteps; k++) {
+                if (c->step[k].selected >= 0) {
+                    const sg_cand_t *cd = &c->step[k].cand[c->step[k].selected];
+                    int found = 0;
+                    for (e2 = 0; e2 < ne; e2++) {
+                        found |= ids[e2] == cd->id;
+                    }
+                    if (!found) {
+                        ids[ne++] = cd->id;
+                    }
+                    score[cd->id] += cd->dG_hold;
+                }
+            }
+        }
+        /* order by score */
+        for (e2 = 1; e2 < ne; e2++) {
+            int v = ids[e2], m = e2 - 1;
+            while (m >= 0 && score[ids[m]] < score[v]) {
+                ids[m + 1] = ids[m];
+                m--;
+            }
+            ids[m + 1] = v;
+        }
+        for (e2 = 0; e2 < ne; e2++) {
+            cJSON *eo = cJSON_CreateObject(), *chs = cJSON_AddArrayToObject(eo, "channels");
+            cJSON_AddStringToObject(eo, "effect", fnav_imuerr_effect_info((fnav_effect_id_t)ids[e2])->name);
+            cJSON_AddNumberToObject(eo, "rank", e2 + 1);
+            add_num(eo, "held_out_gap_reduction", score[ids[e2]]);
+            for (ch = 0; ch < SG_NCH; ch++) {
+                const sg_chres_t *c = &r->ch[ch];
+                for (k = 0; k < c->nsel; k++) {
+                    int m = sg_model_find(&c->final, c->sel_id[k]);
+                    if (c->sel_id[k] == ids[e2] && m >= 0) {
+                        cJSON *co = effect_json(&c->final.e[m], ch);
+                        cJSON_AddStringToObject(co, "channel", sg_channel_name(ch));
+                        add_num(co, "explained", c->sel_expl[k]);
+                        add_num(co, "explained_lo", c->sel_lo[k]);
+                        add_num(co, "explained_hi", c->sel_hi[k]);
+                        cJSON_AddItemToArray(chs, co);
+                    }
+                }
+            }
+            cJSON_AddItemToArray(a, eo);
+        }
+    }
+    o = cJSON_AddObjectToObject(root, "verdict");
+    cJSON_AddStringToObject(o, "answer", r->verdict);
+    add_num(root, "elapsed_s", r->elapsed_s);
+    txt = cJSON_Print(root);
+    cJSON_Delete(root);
+    if (txt == NULL) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    f = fopen(path, "w");
+    if (f == NULL) {
+        snprintf(err, err_size, "cannot write %s", path);
+        free(txt);
+        return -1;
+    }
+    if (fputs(txt, f) < 0 || fputc('\n', f) == EOF || fclose(f) != 0) {
+        snprintf(err, err_size, "cannot write %s", path);
+        free(txt);
+        return -1;
+    }
+    free(txt);
+    return 0;
 }

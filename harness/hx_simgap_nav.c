@@ -1,37 +1,2079 @@
-/* Sim-to-real gap diagnosis, walk domain (hx_simgap_nav.h). */
+/* Sim-to-real gap diagnosis, walk domain (hx_simgap_nav.h, docs/simgap.md).
+ *
+ * The navigation filter (fnav_nav, the project's) runs on the real walk;
+ * before every frame the navigator is copied, so that after the frame the
+ * prediction of that sample can be repeated on the copy and the
+ * zero-velocity update's innovation y and covariance S computed exactly as
+ * fnav_ukf_zupt() forms them (the core does not expose them, and its RAM
+ * budget on the firmware has no room for them).
+ *
+ * The twin's motion is the filter's estimated trajectory: the attitude and
+ * velocity after every sample define interval-mean angular rates and
+ * specific forces (an inverse strapdown), so the twin's truth is exactly
+ * what the filter believes happened, impacts included; the twin's sensor
+ * adds the baseline noise (and candidate effects) through the simulator's
+ * error model, and the same filter runs on it. What the real filter
+ * corrected at each update is then motion for the twin, and what remains
+ * visible in the real's innovations and not in the twin's is the gap.
+ */
 #include "hx_simgap_nav.h"
 
-#include <stdio.h>
+#include <gsl/gsl_cdf.h>
+#include <math.h>
 #include <stdlib.h>
+#include <string.h>
+
+#include <cjson/cJSON.h>
+
+#include "footnav/fnav_nav.h"
+#include "hx_cli.h"
+#include "hx_nav.h"
+#include "hx_motion.h"
+#include "hx_profile.h"
+
+#define FL_ALIGNED 1u
+#define FL_STANCE 2u
+#define FL_ZUPT 4u
+
+/* ------------------------------------------------------------ runs */
+
+/** Samples of a walk (the real log's or a twin's), SI, body frame. */
+typedef struct {
+    long n;
+    const int64_t *t_ns;
+    double (*acc)[3];
+    double (*gyr)[3];
+} walk_t;
+
+/** One run of the filter, per sample. */
+typedef struct {
+    long n;
+    unsigned char *flag;
+    double (*q)[4], (*v)[3], (*p)[3]; /* posterior */
+    double (*y)[3];                   /* innovation of the zero-velocity update */
+    double (*S)[6];                   /* its covariance: xx xy xz yy yz zz */
+    double *nis;
+} navrun_t;
+
+static void navrun_free(navrun_t *r)
+{
+    free(r->flag);
+    free(r->q);
+    free(r->v);
+    free(r->p);
+    free(r->y);
+    free(r->S);
+    free(r->nis);
+    memset(r, 0, sizeof *r);
+}
+
+static int navrun_alloc(navrun_t *r, long n)
+{
+    memset(r, 0, sizeof *r);
+    r->n = n;
+    r->flag = (unsigned char *)calloc((size_t)n + 1, 1);
+    r->q = (double(*)[4])calloc((size_t)n + 1, sizeof *r->q);
+    r->v = (double(*)[3])calloc((size_t)n + 1, sizeof *r->v);
+    r->p = (double(*)[3])calloc((size_t)n + 1, sizeof *r->p);
+    r->y = (double(*)[3])calloc((size_t)n + 1, sizeof *r->y);
+    r->S = (double(*)[6])calloc((size_t)n + 1, sizeof *r->S);
+    r->nis = (double *)calloc((size_t)n + 1, sizeof *r->nis);
+    if (r->flag == NULL || r->q == NULL || r->v == NULL || r->p == NULL || r->y == NULL || r->S == NULL ||
+        r->nis == NULL) {
+        navrun_free(r);
+        return -1;
+    }
+    return 0;
+}
+
+/* Inverse of a symmetric 3x3 (upper: xx xy xz yy yz zz); 0 ok. */
+static int inv3(const double s[6], double o[3][3])
+{
+    double a = s[0], b = s[1], c = s[2], d = s[3], e = s[4], f = s[5];
+    double A = d * f - e * e, B = c * e - b * f, C = b * e - c * d;
+    double det = a * A + b * B + c * C;
+    if (!(det > 0.0)) {
+        return -1;
+    }
+    o[0][0] = A / det;
+    o[0][1] = o[1][0] = B / det;
+    o[0][2] = o[2][0] = C / det;
+    o[1][1] = (a * f - c * c) / det;
+    o[1][2] = o[2][1] = (b * c - a * e) / det;
+    o[2][2] = (a * d - b * b) / det;
+    return 0;
+}
+
+/* Innovation and covariance of the zero-velocity update that follows the
+ * prediction of this sample, formed as fnav_ukf_zupt() forms them (v = 0,
+ * or v - C (w x r) = 0 with the lever states), from the filter's state
+ * after the prediction. Internal covariance indices of fnav_ukf.h. */
+static void zupt_innovation(const fnav_ukf_t *u, const fnav_real_t gyro[3], double y[3], double S[6])
+{
+    int i, j, k, l, cols[12], nc = 0;
+    double H[3][FNAV_UKF_NMAX], r2 = (double)u->cfg.zupt_sigma_mps * (double)u->cfg.zupt_sigma_mps, P[12][12];
+    memset(H, 0, sizeof H);
+    for (i = 0; i < 3; i++) {
+        H[i][FNAV_UKF_V + i] = 1.0;
+        cols[nc++] = FNAV_UKF_V + i;
+        y[i] = -(double)u->vel_mps.v[i];
+    }
+    if (u->cfg.lever) {
+        double w[3], C[3][3], r[3], wr[3], uu[3];
+        fnav_mat3_t Cm = fnav_quat_to_dcm(u->q_nb);
+        for (i = 0; i < 3; i++) {
+            w[i] = (double)gyro[i] - (double)u->bg_rps.v[i];
+            r[i] = (double)u->lever_m.v[i];
+            for (j = 0; j < 3; j++) {
+                C[i][j] = (double)Cm.m[i][j];
+            }
+        }
+        wr[0] = w[1] * r[2] - w[2] * r[1];
+        wr[1] = w[2] * r[0] - w[0] * r[2];
+        wr[2] = w[0] * r[1] - w[1] * r[0];
+        for (i = 0; i < 3; i++) {
+            uu[i] = C[i][0] * wr[0] + C[i][1] * wr[1] + C[i][2] * wr[2];
+            y[i] = uu[i] - (double)u->vel_mps.v[i];
+        }
+        /* dh/dr = -C [w x], dh/da = [u x], dh/dbg = -C [r x] */
+        for (i = 0; i < 3; i++) {
+            double sw[3][3] = { { 0.0, -w[2], w[1] }, { w[2], 0.0, -w[0] }, { -w[1], w[0], 0.0 } };
+            double sr[3][3] = { { 0.0, -r[2], r[1] }, { r[2], 0.0, -r[0] }, { -r[1], r[0], 0.0 } };
+            double su[3][3] = { { 0.0, -uu[2], uu[1] }, { uu[2], 0.0, -uu[0] }, { -uu[1], uu[0], 0.0 } };
+            for (j = 0; j < 3; j++) {
+                double hr = 0.0, hb = 0.0;
+                for (k = 0; k < 3; k++) {
+                    hr += C[i][k] * sw[k][j];
+                    hb += C[i][k] * sr[k][j];
+                }
+                H[i][FNAV_UKF_R + j] = -hr;
+                H[i][FNAV_UKF_A + j] = su[i][j];
+                H[i][FNAV_UKF_BG + j] = -hb;
+            }
+        }
+        for (j = 0; j < 3; j++) {
+            cols[nc++] = FNAV_UKF_R + j;
+            cols[nc++] = FNAV_UKF_A + j;
+            cols[nc++] = FNAV_UKF_BG + j;
+        }
+    }
+    for (k = 0; k < nc; k++) {
+        for (l = 0; l < nc; l++) {
+            P[k][l] = (double)fnav_ukf_cov(u, cols[k], cols[l]);
+        }
+    }
+    {
+        int map[6][2] = { { 0, 0 }, { 0, 1 }, { 0, 2 }, { 1, 1 }, { 1, 2 }, { 2, 2 } }, m;
+        for (m = 0; m < 6; m++) {
+            double s = 0.0;
+            int a = map[m][0], b = map[m][1];
+            for (k = 0; k < nc; k++) {
+                for (l = 0; l < nc; l++) {
+                    s += H[a][cols[k]] * P[k][l] * H[b][cols[l]];
+                }
+            }
+            S[m] = s + (a == b ? r2 : 0.0);
+        }
+    }
+}
+
+/* Run the filter over a walk, recording per sample the posterior state and
+ * the innovation of every zero-velocity update. 0, -1 on failure. */
+static int nav_run(const walk_t *w, const fnav_nav_config_t *cfg, navrun_t *out)
+{
+    fnav_nav_t *nav = (fnav_nav_t *)malloc(sizeof *nav), *cp = (fnav_nav_t *)malloc(sizeof *cp);
+    long *acc_idx = (long *)malloc(((size_t)w->n + 1) * sizeof *acc_idx);
+    long i, nacc = 0, npop = 0;
+    int fin = 0;
+    if (nav == NULL || cp == NULL || acc_idx == NULL || navrun_alloc(out, w->n) != 0 ||
+        fnav_nav_init(nav, cfg) != FNAV_OK) {
+        free(nav);
+        free(cp);
+        free(acc_idx);
+        navrun_free(out);
+        return -1;
+    }
+    for (i = 0; i <= w->n; i++) {
+        fnav_nav_frame_t fr;
+        if (i < w->n) {
+            fnav_sample_t s;
+            int c;
+            memset(&s, 0, sizeof s);
+            s.t_ns = w->t_ns[i];
+            s.seq = (uint32_t)i;
+            for (c = 0; c < 3; c++) {
+                s.accel_mps2[c] = (fnav_real_t)w->acc[i][c];
+                s.gyro_rps[c] = (fnav_real_t)w->gyr[i][c];
+            }
+            if (fnav_nav_push(nav, &s) == FNAV_OK) {
+                acc_idx[nacc++] = i;
+            }
+        } else {
+            fnav_nav_finish(nav);
+            fin = 1;
+        }
+        for (;;) {
+            long k;
+            unsigned char fl = 0;
+            int c;
+            memcpy(cp, nav, sizeof *nav);
+            if (fnav_nav_pop(nav, &fr) != FNAV_OK) {
+                break;
+            }
+            if (npop >= nacc) {
+                continue;
+            }
+            k = acc_idx[npop++];
+            if (fr.flags & FNAV_FRAME_ALIGNED) {
+                fl |= FL_ALIGNED;
+            }
+            if (fr.flags & FNAV_FRAME_STANCE) {
+                fl |= FL_STANCE;
+            }
+            if ((fr.flags & FNAV_FRAME_ZUPT) && cp->aligned) {
+                /* repeat the prediction of this sample on the copy */
+                double dt = cp->have_prev ? (double)(w->t_ns[k] - cp->t_prev_ns) * 1e-9 : 0.0;
+                double nominal = 1.0 / (double)cp->stance.rate_hz;
+                fnav_real_t g[3], a[3];
+                for (c = 0; c < 3; c++) {
+                    g[c] = (fnav_real_t)w->gyr[k][c];
+                    a[c] = (fnav_real_t)w->acc[k][c];
+                }
+                if (dt > (double)cp->cfg.max_gap_s) {
+                    dt = nominal;
+                }
+                fnav_status_t pst = dt > 0.0 ? fnav_ukf_predict(&cp->ukf, fnav_vec3_from(g), fnav_vec3_from(a),
+                                                                 (fnav_real_t)dt)
+                                             : FNAV_E_TIME;
+                if (pst == FNAV_OK || pst == FNAV_E_DECOMP) {
+                    double Si[3][3];
+                    zupt_innovation(&cp->ukf, g, out->y[k], out->S[k]);
+                    if (inv3(out->S[k], Si) == 0) {
+                        double nis = 0.0;
+                        int a2, b2;
+                        for (a2 = 0; a2 < 3; a2++) {
+                            for (b2 = 0; b2 < 3; b2++) {
+                                nis += out->y[k][a2] * Si[a2][b2] * out->y[k][b2];
+                            }
+                        }
+                        out->nis[k] = nis;
+                        fl |= FL_ZUPT;
+                    }
+                }
+            }
+            out->flag[k] = fl;
+            for (c = 0; c < 4; c++) {
+                out->q[k][c] = (double)nav->ukf.q_nb.q[c];
+            }
+            for (c = 0; c < 3; c++) {
+                out->v[k][c] = (double)nav->ukf.vel_mps.v[c];
+                out->p[k][c] = (double)nav->ukf.pos_m.v[c];
+            }
+        }
+        if (fin) {
+            break;
+        }
+    }
+    free(nav);
+    free(cp);
+    free(acc_idx);
+    return 0;
+}
+
+/* ------------------------------------------------------------ stances */
+
+typedef struct {
+    long i0, i1;         /* first and last update sample */
+    long first;          /* first update */
+    int nupd;
+    double nis_first, nis_sum;
+    double ee_next, ee_self; /* sums of e_k . e_k+1 and e_k . e_k (normalised innovations) */
+    double vres2;        /* squared posterior speed at mid-stance */
+    double axis[3];      /* first innovation per axis squared / its variance */
+} stance_t;
+
+/* Normalised innovation e = L^-1 y, S = L L^T. */
+static void whiten(const double y[3], const double s[6], double e[3])
+{
+    double l00 = sqrt(s[0] > 0.0 ? s[0] : 1e-30);
+    double l10 = s[1] / l00, l20 = s[2] / l00;
+    double d1 = s[3] - l10 * l10, l11 = sqrt(d1 > 0.0 ? d1 : 1e-30);
+    double l21 = (s[4] - l20 * l10) / l11;
+    double d2 = s[5] - l20 * l20 - l21 * l21, l22 = sqrt(d2 > 0.0 ? d2 : 1e-30);
+    e[0] = y[0] / l00;
+    e[1] = (y[1] - l10 * e[0]) / l11;
+    e[2] = (y[2] - l20 * e[0] - l21 * e[1]) / l22;
+}
+
+/* Stances of samples [a, b): runs of updates with gaps of at most 2 samples. */
+static int stances_of(const navrun_t *r, long a, long b, stance_t *st, int max)
+{
+    int ns = 0;
+    long k = a;
+    while (k < b && ns < max) {
+        stance_t *s;
+        long last, mid, j, cnt = 0;
+        double eprev[3];
+        int have = 0;
+        if (!(r->flag[k] & FL_ZUPT)) {
+            k++;
+            continue;
+        }
+        s = &st[ns++];
+        memset(s, 0, sizeof *s);
+        s->i0 = s->first = k;
+        last = k;
+        for (j = k; j < b && j - last <= 3; j++) {
+            if (r->flag[j] & FL_ZUPT) {
+                double e[3];
+                whiten(r->y[j], r->S[j], e);
+                if (have) {
+                    s->ee_next += eprev[0] * e[0] + eprev[1] * e[1] + eprev[2] * e[2];
+                }
+                s->ee_self += e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+                memcpy(eprev, e, sizeof e);
+                have = 1;
+                s->nis_sum += r->nis[j];
+                s->nupd++;
+                last = j;
+                cnt++;
+            }
+        }
+        s->i1 = last;
+        s->nis_first = r->nis[s->first];
+        {
+            int c;
+            for (c = 0; c < 3; c++) {
+                double v = r->S[s->first][c == 0 ? 0 : (c == 1 ? 3 : 5)];
+                s->axis[c] = v > 0.0 ? r->y[s->first][c] * r->y[s->first][c] / v : 0.0;
+            }
+        }
+        mid = (s->i0 + s->i1) / 2;
+        s->vres2 = r->v[mid][0] * r->v[mid][0] + r->v[mid][1] * r->v[mid][1] + r->v[mid][2] * r->v[mid][2];
+        k = last + 1;
+        (void)cnt;
+    }
+    return ns;
+}
+
+/* ------------------------------------------------------------ points */
+
+#define NAV_WIN_FULL 6
+#define NAV_WIN_SEG 3
+#define MAX_ST 4096
+
+static double lnpos(double v)
+{
+    return log(v > 1e-30 ? v : 1e-30);
+}
+
+/* Navigation points of samples [a, b) (rate fs), optionally with the drift
+ * (truth: the true trajectory's positions, NULL for the real: closed walk). */
+static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, int nwin, int drift,
+                       const double (*truth_p)[3], int with_pl, sg_plist_t *pl, double *vals)
+{
+    stance_t *st = (stance_t *)malloc(MAX_ST * sizeof *st);
+    int ns, i, w, c;
+    long cnt = 0;
+    double sf = 0.0, sa = 0.0, nu = 0.0, en = 0.0, es = 0.0, vr = 0.0, ax[3] = { 0, 0, 0 };
+    double t0 = (double)(t_ns[a] - t_ns[0]) * 1e-9, t1 = (double)(t_ns[b - 1] - t_ns[0]) * 1e-9;
+    sg_point_t p;
+    if (st == NULL) {
+        return -1;
+    }
+    ns = stances_of(r, a, b, st, MAX_ST);
+    for (i = 0; i < ns; i++) {
+        sf += st[i].nis_first;
+        sa += st[i].nis_sum;
+        nu += st[i].nupd;
+        en += st[i].ee_next;
+        es += st[i].ee_self;
+        vr += st[i].vres2;
+        for (c = 0; c < 3; c++) {
+            ax[c] += st[i].axis[c];
+        }
+    }
+#define ADD(KIND, X, XLO, XHI, VAL)                                                                                    \
+    do {                                                                                                               \
+        vals[cnt++] = (VAL);                                                                                           \
+        if (with_pl) {                                                                                                 \
+            memset(&p, 0, sizeof p);                                                                                   \
+            p.dom = SG_NAV;                                                                                            \
+            p.ch = -1;                                                                                                 \
+            p.kind = (KIND);                                                                                           \
+            p.x = (X);                                                                                                 \
+            p.x_lo = (XLO);                                                                                            \
+            p.x_hi = (XHI);                                                                                            \
+            p.nblk = 1;                                                                                                \
+            if (sg_plist_add(pl, &p) != 0) {                                                                           \
+                free(st);                                                                                              \
+                return -1;                                                                                             \
+            }                                                                                                          \
+        }                                                                                                              \
+    } while (0)
+    ADD(SG_NAV_NIS_FIRST, 0.0, t0, t1, lnpos(ns > 0 ? sf / ns : 0.0));
+    ADD(SG_NAV_NIS_ALL, 0.0, t0, t1, lnpos(nu > 0 ? sa / nu : 0.0));
+    for (c = 0; c < 3; c++) {
+        ADD(SG_NAV_AXIS, (double)c, t0, t1, lnpos(ns > 0 ? ax[c] / ns : 0.0));
+    }
+    ADD(SG_NAV_WHITE, 0.0, t0, t1, es > 0.0 ? en / es : 0.0);
+    ADD(SG_NAV_RESID, 0.0, t0, t1, 0.5 * lnpos(ns > 0 ? vr / ns : 0.0));
+    for (w = 0; w < nwin; w++) {
+        double wa = t0 + (t1 - t0) * w / nwin, wb = t0 + (t1 - t0) * (w + 1) / nwin, s = 0.0;
+        int m = 0;
+        for (i = 0; i < ns; i++) {
+            double ts = (double)(t_ns[st[i].first] - t_ns[0]) * 1e-9;
+            if (ts >= wa && ts < wb) {
+                s += st[i].nis_first;
+                m++;
+            }
+        }
+        ADD(SG_NAV_WIN, 0.5 * (wa + wb), wa, wb, lnpos(m > 0 ? s / m : 0.0));
+    }
+    if (drift && ns >= 2) {
+        long i0 = (st[0].i0 + st[0].i1) / 2, i1 = (st[ns - 1].i0 + st[ns - 1].i1) / 2;
+        double d[3];
+        for (c = 0; c < 3; c++) {
+            d[c] = (r->p[i1][c] - r->p[i0][c]) - (truth_p != NULL ? truth_p[i1][c] - truth_p[i0][c] : 0.0);
+        }
+        ADD(SG_NAV_DRIFT_H, 0.0, t0, t1, 0.5 * lnpos(d[0] * d[0] + d[1] * d[1]));
+        ADD(SG_NAV_DRIFT_V, 0.0, t0, t1, lnpos(fabs(d[2])));
+    } else if (drift) {
+        ADD(SG_NAV_DRIFT_H, 0.0, t0, t1, lnpos(0.0));
+        ADD(SG_NAV_DRIFT_V, 0.0, t0, t1, lnpos(0.0));
+    }
+#undef ADD
+    free(st);
+    return cnt;
+}
+
+/* Lattice point of channel ch over samples [a, b). */
+static double lattice_val(const walk_t *w, int ch, long a, long b, double q)
+{
+    double c = 0.0, s = 0.0;
+    long k;
+    for (k = a + 1; k < b; k++) {
+        double x1 = ch < 3 ? w->acc[k][ch] : w->gyr[k][ch - 3], x0 = ch < 3 ? w->acc[k - 1][ch] : w->gyr[k - 1][ch - 3];
+        double ph = 2.0 * M_PI * (x1 - x0) / q;
+        c += cos(ph);
+        s += sin(ph);
+    }
+    {
+        double R = b - a > 1 ? (c * c + s * s) / (double)(b - a - 1) : 0.0;
+        if (!(R > 0.0)) {
+            return -8.0;
+        }
+        return R > 30.0 ? sqrt(2.0 * R - log(4.0 * M_PI * R)) : gsl_cdf_ugaussian_Qinv(exp(-R));
+    }
+}
+
+/* ------------------------------------------------------------ state */
+
+#define NAV_MAX_CAND 8
+
+/** A walk-domain candidate: effect with the channels and values fitted. */
+typedef struct {
+    int id;                      /* fnav_effect_id_t */
+    int npar;                    /* parameters set */
+    int ch[24], k[24];           /* channel and parameter index */
+    double val[24];              /* value */
+    double dQ;                   /* fit-segment improvement (dispersion-scaled) */
+    double dQ_hold, z_hold;      /* held-out improvement of the innovations' objective and its z */
+    double Q0_hold;              /* held-out objective without the effect (dispersion-scaled) */
+    int n_fit, n_hold;           /* stances used */
+    int simulated;
+    double G_fit, G_hold, dG_hold, z, t_hold, t_mean, t_sd, expl, expl_lo, expl_hi;
+} navcand_t;
+
+typedef struct {
+    int ncand;
+    navcand_t cand[NAV_MAX_CAND];
+    int selected;
+    double G_hold_before, G_fit_before;
+} navstep_t;
 
 struct sg_nav {
-    int dummy;
+    navrun_t real;
+    long n;
+    double rate_hz;
+    int nst[SG_NSEG];
+    double white[SG_NCH];        /* baseline white densities, u/sqrt(Hz) */
+    double ar1_tau[SG_NCH], ar1_sig[SG_NCH];
+    int from_profile;
+    double q[SG_NCH], qz[SG_NCH];/* lattice */
+    double sat[SG_NCH];          /* saturation plateau found (0: none) */
+    int nsat[SG_NCH];
+    double (*tf)[3], (*tw)[3];   /* twin truth samples in use: specific force, angular rate */
+    double (*mf)[3], (*mw)[3];   /* interval means (an integrating sensor) */
+    double (*if_)[3], (*iw)[3];  /* instantaneous values at the stamps (a rate-output sensor) */
+    int inst;                    /* 1: the twin samples instantaneous values (chosen on the fit segment) */
+    double G_fit_conv[2];        /* fit-segment gap of each sampling convention (mean, instantaneous) */
+    double (*tp)[3];             /* twin truth positions */
+    sg_plist_t pl[SG_NSEG];
+    double *real_v[SG_NSEG];
+    double *twin_v[SG_NSEG];     /* baseline twins */
+    double *twin_f[SG_NSEG];     /* final-model twins (NULL: baseline) */
+    sg_cmp_t cmp[SG_NSEG], cmp_final[SG_NSEG];
+    int nsteps, nsel;
+    navstep_t step[SG_MAX_STEPS];
+    navcand_t sel[SG_MAX_STEPS];
+    double sel_expl[SG_MAX_STEPS];
+    int gap, within_noise;
+    int model_gap;               /* the navigation twins disagree (the filter's model included) */
+    fnav_nav_config_t cfg;
+    int closed;
+    size_t nloc;
+    sg_loc_t loc[32];
 };
+
+/* ------------------------------------------------------------ twins */
+
+/* Truth of the twin from the real filter's posterior: interval-mean rate
+ * w = rotvec(q_{k-1}^-1 q_k) / dt and specific force f = C_mid^T ((v_k -
+ * v_{k-1}) / dt - g_n), C_mid the attitude half-way through the interval;
+ * before the alignment the foot stands at the first aligned attitude. */
+static void twin_truth(const navrun_t *r, const walk_t *w, double g, double (*tf)[3], double (*tw)[3], double (*tp)[3])
+{
+    long k, first = -1;
+    int c;
+    for (k = 0; k < w->n; k++) {
+        if (r->flag[k] & FL_ALIGNED) {
+            first = k;
+            break;
+        }
+    }
+    for (k = 0; k < w->n; k++) {
+        if (first < 0 || k <= first) {
+            long kk = first < 0 ? 0 : first;
+            fnav_quat_t q = fnav_quat((fnav_real_t)r->q[kk][0], (fnav_real_t)r->q[kk][1], (fnav_real_t)r->q[kk][2],
+                                      (fnav_real_t)r->q[kk][3]);
+            fnav_vec3_t gb;
+            if (first < 0) {
+                q = fnav_quat_identity();
+            }
+            gb = fnav_quat_rotate(fnav_quat_conj(q), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)(-g)));
+            for (c = 0; c < 3; c++) {
+                tf[k][c] = (double)gb.v[c];
+                tw[k][c] = 0.0;
+                tp[k][c] = r->p[kk][c];
+            }
+            continue;
+        }
+        {
+            double dt = (double)(w->t_ns[k] - w->t_ns[k - 1]) * 1e-9;
+            double qa[4], qb[4], dq[4], phi[3], sn, ang, hm[4], C[3][3], a[3];
+            if (!(dt > 0.0)) {
+                for (c = 0; c < 3; c++) {
+                    tf[k][c] = tf[k - 1][c];
+                    tw[k][c] = tw[k - 1][c];
+                    tp[k][c] = tp[k - 1][c];
+                }
+                continue;
+            }
+            memcpy(qa, r->q[k - 1], sizeof qa);
+            memcpy(qb, r->q[k], sizeof qb);
+            /* dq = qa^-1 qb (Hamilton), body-frame rotation over the interval */
+            dq[0] = qa[0] * qb[0] + qa[1] * qb[1] + qa[2] * qb[2] + qa[3] * qb[3];
+            dq[1] = qa[0] * qb[1] - qa[1] * qb[0] - qa[2] * qb[3] + qa[3] * qb[2];
+            dq[2] = qa[0] * qb[2] + qa[1] * qb[3] - qa[2] * qb[0] - qa[3] * qb[1];
+            dq[3] = qa[0] * qb[3] - qa[1] * qb[2] + qa[2] * qb[1] - qa[3] * qb[0];
+            if (dq[0] < 0.0) {
+                for (c = 0; c < 4; c++) {
+                    dq[c] = -dq[c];
+                }
+            }
+            sn = sqrt(dq[1] * dq[1] + dq[2] * dq[2] + dq[3] * dq[3]);
+            ang = 2.0 * atan2(sn, dq[0]);
+            for (c = 0; c < 3; c++) {
+                phi[c] = sn > 1e-15 ? dq[c + 1] / sn * ang : 2.0 * dq[c + 1];
+                tw[k][c] = phi[c] / dt;
+            }
+            /* half rotation: qa * exp(phi / 2) */
+            {
+                double hs = sin(0.25 * ang), hc = cos(0.25 * ang), u[3];
+                for (c = 0; c < 3; c++) {
+                    u[c] = sn > 1e-15 ? dq[c + 1] / sn : 0.0;
+                }
+                hm[0] = qa[0] * hc - (qa[1] * u[0] + qa[2] * u[1] + qa[3] * u[2]) * hs;
+                hm[1] = qa[0] * u[0] * hs + qa[1] * hc + (qa[2] * u[2] - qa[3] * u[1]) * hs;
+                hm[2] = qa[0] * u[1] * hs + qa[2] * hc + (qa[3] * u[0] - qa[1] * u[2]) * hs;
+                hm[3] = qa[0] * u[2] * hs + qa[3] * hc + (qa[1] * u[1] - qa[2] * u[0]) * hs;
+            }
+            {
+                fnav_mat3_t Cm = fnav_quat_to_dcm(fnav_quat((fnav_real_t)hm[0], (fnav_real_t)hm[1],
+                                                            (fnav_real_t)hm[2], (fnav_real_t)hm[3]));
+                int i2, j2;
+                for (i2 = 0; i2 < 3; i2++) {
+                    for (j2 = 0; j2 < 3; j2++) {
+                        C[i2][j2] = (double)Cm.m[i2][j2];
+                    }
+                }
+            }
+            for (c = 0; c < 3; c++) {
+                a[c] = (r->v[k][c] - r->v[k - 1][c]) / dt - (c == 2 ? g : 0.0);
+            }
+            for (c = 0; c < 3; c++) {
+                tf[k][c] = C[0][c] * a[0] + C[1][c] * a[1] + C[2][c] * a[2];
+                tp[k][c] = r->p[k][c];
+            }
+        }
+    }
+}
+
+/* Instantaneous values at the stamps of a signal known by its interval
+ * means: the quadratic through three consecutive means, evaluated at the
+ * end of the middle interval, x(t_k) = (-m_{k-1} + 5 m_k + 2 m_{k+1}) / 6. A
+ * rate-output sensor delivers these; a strapdown that takes them as means
+ * runs half a sample ahead (docs/simulator.md), and so does the real's. */
+static void means_to_inst(const double (*m)[3], long n, double (*x)[3])
+{
+    long k;
+    int c;
+    for (k = 0; k < n; k++) {
+        for (c = 0; c < 3; c++) {
+            if (k == 0 || k == n - 1) {
+                x[k][c] = m[k][c];
+            } else {
+                x[k][c] = (-m[k - 1][c] + 5.0 * m[k][c] + 2.0 * m[k + 1][c]) / 6.0;
+            }
+        }
+    }
+}
+
+/* Apply one candidate's values to a configuration (every element of a
+ * linear family is set: its defaults are not zero, docs/simulator.md). */
+static int apply_cand(fnav_imuerr_config_t *cfg, const navcand_t *cand)
+{
+    uint32_t mask = 0u;
+    int i;
+    const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)cand->id);
+    int lin = cand->id == FNAV_EFFECT_MISALIGN || cand->id == FNAV_EFFECT_GSENS || cand->id == FNAV_EFFECT_SCALE;
+    if (info == NULL) {
+        return -1;
+    }
+    if (cfg->mask[cand->id] == 0u) {
+        fnav_imuerr_effect_reset(cfg, (fnav_effect_id_t)cand->id);
+        if (lin) {
+            int k;
+            for (k = 0; k < info->nparams; k++) {
+                if (fnav_imuerr_param_set(cfg, (fnav_effect_id_t)cand->id, k, info->allowed, FNAV_R(0.0)) != FNAV_OK) {
+                    return -1;
+                }
+            }
+        }
+    }
+    for (i = 0; i < cand->npar; i++) {
+        if (fnav_imuerr_param_set(cfg, (fnav_effect_id_t)cand->id, cand->k[i], 1u << cand->ch[i],
+                                  (fnav_real_t)cand->val[i]) != FNAV_OK) {
+            return -1;
+        }
+        mask |= 1u << cand->ch[i];
+    }
+    if (lin) {
+        mask = info->allowed; /* zeros elsewhere */
+    }
+    if (mask != 0u && fnav_imuerr_enable(cfg, (fnav_effect_id_t)cand->id, mask) != FNAV_OK) {
+        return -1;
+    }
+    return 0;
+}
+
+/* The twin's sensor: the baseline noise (optional) plus candidates' values
+ * (a, then b; either may be NULL). */
+static int twin_config(const sg_nav_t *nv, const navcand_t *a, const navcand_t *b, uint32_t seed, int noise,
+                       fnav_imuerr_config_t *cfg)
+{
+    int c;
+    *cfg = fnav_imuerr_config_default;
+    cfg->seed = seed;
+    cfg->rate_hz = (fnav_real_t)nv->rate_hz;
+    cfg->oversample = 1u;
+    if (noise) {
+        for (c = 0; c < SG_NCH; c++) {
+            cfg->white.density[c] = (fnav_real_t)nv->white[c];
+            cfg->ar1.tau_s[c] = (fnav_real_t)(nv->ar1_tau[c] > 1e-3 ? nv->ar1_tau[c] : 1.0);
+            cfg->ar1.sigma[c] = (fnav_real_t)nv->ar1_sig[c];
+        }
+        cfg->mask[FNAV_EFFECT_WHITE] = FNAV_CH_ALL;
+        if (nv->from_profile) {
+            cfg->mask[FNAV_EFFECT_AR1] = FNAV_CH_ALL;
+        }
+    }
+    if (a != NULL && apply_cand(cfg, a) != 0) {
+        return -1;
+    }
+    if (b != NULL && apply_cand(cfg, b) != 0) {
+        return -1;
+    }
+    return 0;
+}
+
+/* Measurements of one twin: truth through the error model; duplicated
+ * stamps repeat the previous sample (as a duplicated delivery does). */
+static int twin_walk(const sg_nav_t *nv, const walk_t *rw, const fnav_imuerr_config_t *cfg, walk_t *tw)
+{
+    fnav_imuerr_t e;
+    long k;
+    int c;
+    tw->n = rw->n;
+    tw->t_ns = rw->t_ns;
+    tw->acc = (double(*)[3])malloc(((size_t)rw->n + 1) * sizeof *tw->acc);
+    tw->gyr = (double(*)[3])malloc(((size_t)rw->n + 1) * sizeof *tw->gyr);
+    if (tw->acc == NULL || tw->gyr == NULL || fnav_imuerr_init(&e, cfg) != FNAV_OK) {
+        free(tw->acc);
+        free(tw->gyr);
+        return -1;
+    }
+    for (k = 0; k < rw->n; k++) {
+        fnav_sample_t s;
+        if (k > 0 && rw->t_ns[k] <= rw->t_ns[k - 1]) {
+            memcpy(tw->acc[k], tw->acc[k - 1], sizeof tw->acc[k]);
+            memcpy(tw->gyr[k], tw->gyr[k - 1], sizeof tw->gyr[k]);
+            continue;
+        }
+        memset(&s, 0, sizeof s);
+        for (c = 0; c < 3; c++) {
+            s.accel_mps2[c] = (fnav_real_t)nv->tf[k][c];
+            s.gyro_rps[c] = (fnav_real_t)nv->tw[k][c];
+        }
+        if (fnav_imuerr_apply(&e, &s) != FNAV_OK) {
+            free(tw->acc);
+            free(tw->gyr);
+            return -1;
+        }
+        for (c = 0; c < 3; c++) {
+            tw->acc[k][c] = (double)s.accel_mps2[c];
+            tw->gyr[k][c] = (double)s.gyro_rps[c];
+        }
+    }
+    return 0;
+}
+
+/* Points of every segment for one walk and its run. */
+static int walk_points(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *w, const navrun_t *run,
+                       const double (*truth_p)[3], int with_pl, sg_plist_t pl[SG_NSEG], double *vals[SG_NSEG])
+{
+    int g, c;
+    for (g = 0; g < SG_NSEG; g++) {
+        long a = segs->start[g][0], b = a + segs->n[g][0], cnt;
+        cnt = nav_points(run, w->t_ns, a, b, g == SG_FULL ? NAV_WIN_FULL : NAV_WIN_SEG, nv->closed && g == SG_FULL,
+                         truth_p, with_pl, &pl[g], vals[g]);
+        if (cnt < 0) {
+            return -1;
+        }
+        for (c = 0; c < SG_NCH; c++) {
+            if (nv->q[c] > 0.0) {
+                vals[g][cnt++] = lattice_val(w, c, a, b, nv->q[c]);
+                if (with_pl) {
+                    sg_point_t p;
+                    memset(&p, 0, sizeof p);
+                    p.dom = SG_LATTICE;
+                    p.ch = c;
+                    p.x = p.x_lo = p.x_hi = nv->q[c];
+                    p.edf = -1.0;
+                    p.nblk = 1;
+                    if (sg_plist_add(&pl[g], &p) != 0) {
+                        return -1;
+                    }
+                }
+            }
+        }
+    }
+    return 0;
+}
+
+/* S twins of a candidate (NULL: the baseline): values per segment. */
+static int run_twins(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *rw, const navcand_t *cand, int S,
+                     uint32_t seed0, double *vals[SG_NSEG])
+{
+    int s, g;
+    double *tmp[SG_NSEG];
+    sg_plist_t dummy[SG_NSEG];
+    memset(dummy, 0, sizeof dummy);
+    for (g = 0; g < SG_NSEG; g++) {
+        tmp[g] = (double *)malloc((nv->pl[g].n + 16) * sizeof(double));
+        if (tmp[g] == NULL) {
+            return -1;
+        }
+    }
+    for (s = 0; s < S; s++) {
+        fnav_imuerr_config_t cfg;
+        walk_t tw;
+        navrun_t run;
+        if (twin_config(nv, cand, NULL, seed0 + (uint32_t)s, 1, &cfg) != 0 || twin_walk(nv, rw, &cfg, &tw) != 0) {
+            break;
+        }
+        if (nav_run(&tw, &nv->cfg, &run) != 0) {
+            free(tw.acc);
+            free(tw.gyr);
+            break;
+        }
+        if (walk_points(nv, segs, &tw, &run, (const double(*)[3])nv->tp, 0, dummy, tmp) != 0) {
+            navrun_free(&run);
+            free(tw.acc);
+            free(tw.gyr);
+            break;
+        }
+        for (g = 0; g < SG_NSEG; g++) {
+            memcpy(vals[g] + (size_t)s * nv->pl[g].n, tmp[g], nv->pl[g].n * sizeof(double));
+        }
+        navrun_free(&run);
+        free(tw.acc);
+        free(tw.gyr);
+    }
+    for (g = 0; g < SG_NSEG; g++) {
+        free(tmp[g]);
+    }
+    return s == S ? 0 : -1;
+}
+
+/* ------------------------------------------------------------ fitting */
+
+/* First-update innovations of the stances of [a, b) of a run (3 per stance)
+ * with their covariance and start times. */
+typedef struct {
+    int n;
+    double t[MAX_ST];
+    double y[MAX_ST][3];
+    double S[MAX_ST][6];
+} firsts_t;
+
+static void firsts_of(const navrun_t *r, const int64_t *t_ns, long a, long b, firsts_t *f)
+{
+    stance_t *st = (stance_t *)malloc(MAX_ST * sizeof *st);
+    int i, ns;
+    f->n = 0;
+    if (st == NULL) {
+        return;
+    }
+    ns = stances_of(r, a, b, st, MAX_ST);
+    for (i = 0; i < ns; i++) {
+        f->t[f->n] = (double)(t_ns[st[i].first] - t_ns[0]) * 1e-9;
+        memcpy(f->y[f->n], r->y[st[i].first], sizeof f->y[0]);
+        memcpy(f->S[f->n], r->S[st[i].first], sizeof f->S[0]);
+        f->n++;
+    }
+    free(st);
+}
+
+/* The stance of b nearest in time to stance i of a (within 0.15 s), or -1. */
+static int match(const firsts_t *a, int i, const firsts_t *b)
+{
+    int j, best = -1;
+    double bd = 0.15;
+    for (j = 0; j < b->n; j++) {
+        double d = fabs(b->t[j] - a->t[i]);
+        if (d < bd) {
+            bd = d;
+            best = j;
+        }
+    }
+    return best;
+}
+
+/* Noise-free twin run with the given candidate: first-update innovations. */
+static int clean_run(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *rw, const navcand_t *given,
+                     const navcand_t *cand, firsts_t *f)
+{
+    fnav_imuerr_config_t cfg;
+    walk_t tw;
+    navrun_t run;
+    if (twin_config(nv, given, cand, 1u, 0, &cfg) != 0 || twin_walk(nv, rw, &cfg, &tw) != 0) {
+        return -1;
+    }
+    if (nav_run(&tw, &nv->cfg, &run) != 0) {
+        free(tw.acc);
+        free(tw.gyr);
+        return -1;
+    }
+    firsts_of(&run, tw.t_ns, segs->start[SG_FULL][0], segs->start[SG_FULL][0] + segs->n[SG_FULL][0], f);
+    navrun_free(&run);
+    free(tw.acc);
+    free(tw.gyr);
+    return 0;
+}
+
+/* Parameters of a linear motion effect family: (channel, parameter index). */
+static int family_params(int id, int ch[24], int k[24])
+{
+    int n = 0, c, j;
+    if (id == FNAV_EFFECT_SCALE) {
+        for (c = 0; c < 6; c++) {
+            ch[n] = c;
+            k[n++] = 0;
+        }
+    } else if (id == FNAV_EFFECT_MISALIGN) {
+        for (c = 0; c < 6; c++) {
+            for (j = 0; j < 3; j++) {
+                if (j != c % 3) {
+                    ch[n] = c;
+                    k[n++] = j;
+                }
+            }
+        }
+    } else if (id == FNAV_EFFECT_GSENS) {
+        for (c = 3; c < 6; c++) {
+            for (j = 0; j < 3; j++) {
+                ch[n] = c;
+                k[n++] = j;
+            }
+        }
+    }
+    return n;
+}
+
+/* Fit a linear motion effect on the fit segment: sensitivities of the
+ * first-update innovations to each parameter from noise-free twin runs,
+ * then generalised least squares with forward selection of the parameters
+ * (each must lower the dispersion-scaled objective by more than chi2_1 at
+ * 0.1 %). Then the held-out test: with the parameters fixed, the held-out
+ * objective changes by dQ = 2 b - a (a = |J theta|^2_W, b = (J theta)^T W r);
+ * without the effect 2 b ~ N(0, 4 disp a), so z = b / sqrt(disp a). The
+ * stances come from the whole walk (fr) and are split at t_split. */
+static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *rw, const firsts_t *fr, double t_split,
+                      const navcand_t *given, int id, navcand_t *out)
+{
+    int ch[24], kk[24], np = family_params(id, ch, kk), p, i, a, b;
+    double delta = id == FNAV_EFFECT_GSENS ? 1e-3 : 1e-2;
+    firsts_t *base = (firsts_t *)malloc(sizeof *base), *pert = (firsts_t *)malloc(sizeof *pert);
+    double (*J)[MAX_ST][3] = (double(*)[MAX_ST][3])calloc((size_t)np + 1, sizeof *J);
+    double (*r)[3] = (double(*)[3])calloc(MAX_ST, sizeof *r), (*W)[3][3] = (double(*)[3][3])calloc(MAX_ST, sizeof *W);
+    int *mi = (int *)calloc(MAX_ST, sizeof *mi), sel[24], nsel = 0, ok = -1, *hold = (int *)calloc(MAX_ST, sizeof *hold);
+    double disp = 0.0, Q0 = 0.0, Qh0 = 0.0;
+    int nm = 0, nh = 0;
+    memset(out, 0, sizeof *out);
+    out->id = id;
+    if (base == NULL || pert == NULL || J == NULL || r == NULL || W == NULL || mi == NULL || hold == NULL || np == 0) {
+        goto done;
+    }
+    if (clean_run(nv, segs, rw, given, NULL, base) != 0) {
+        goto done;
+    }
+    for (i = 0; i < fr->n; i++) {
+        mi[i] = match(fr, i, base);
+        hold[i] = fr->t[i] >= t_split;
+        if (mi[i] >= 0) {
+            double Si[3][3], q = 0.0;
+            if (inv3(fr->S[i], Si) != 0) {
+                mi[i] = -1;
+                continue;
+            }
+            for (a = 0; a < 3; a++) {
+                r[i][a] = fr->y[i][a] - base->y[mi[i]][a];
+                for (b = 0; b < 3; b++) {
+                    W[i][a][b] = Si[a][b];
+                }
+            }
+            for (a = 0; a < 3; a++) {
+                for (b = 0; b < 3; b++) {
+                    q += r[i][a] * W[i][a][b] * r[i][b];
+                }
+            }
+            if (hold[i]) {
+                Qh0 += q;
+                nh++;
+            } else {
+                Q0 += q;
+                nm++;
+            }
+        }
+    }
+    if (nm < 5) {
+        goto done;
+    }
+    /* dispersion: the filter's S need not be the innovations' true spread
+     * (its own model errors add to them); estimated on the fit stances */
+    disp = Q0 / (3.0 * nm);
+    if (disp < 1.0) {
+        disp = 1.0;
+    }
+    for (p = 0; p < np; p++) {
+        navcand_t c1;
+        memset(&c1, 0, sizeof c1);
+        c1.id = id;
+        c1.npar = 1;
+        c1.ch[0] = ch[p];
+        c1.k[0] = kk[p];
+        c1.val[0] = delta;
+        if (clean_run(nv, segs, rw, given, &c1, pert) != 0) {
+            goto done;
+        }
+        for (i = 0; i < fr->n; i++) {
+            int j = mi[i] >= 0 ? match(base, mi[i], pert) : -1;
+            for (a = 0; a < 3; a++) {
+                J[p][i][a] = j >= 0 ? (pert->y[j][a] - base->y[mi[i]][a]) / delta : 0.0;
+            }
+        }
+    }
+    /* forward selection of parameters by GLS on the fit stances */
+    {
+        double theta[24];
+        double Qcur = Q0;
+        for (;;) {
+            int bestp = -1;
+            double bestQ = Qcur, bth[24];
+            for (p = 0; p < np; p++) {
+                int in = 0, m, s1, s2, ns = nsel + 1, idx[24];
+                double M[24][24], v[24], th[24], Q = 0.0;
+                for (m = 0; m < nsel; m++) {
+                    in |= sel[m] == p;
+                }
+                if (in) {
+                    continue;
+                }
+                memcpy(idx, sel, (size_t)nsel * sizeof *idx);
+                idx[nsel] = p;
+                memset(M, 0, sizeof M);
+                memset(v, 0, sizeof v);
+                for (i = 0; i < fr->n; i++) {
+                    if (mi[i] < 0 || hold[i]) {
+                        continue;
+                    }
+                    for (s1 = 0; s1 < ns; s1++) {
+                        for (a = 0; a < 3; a++) {
+                            for (b = 0; b < 3; b++) {
+                                v[s1] += J[idx[s1]][i][a] * W[i][a][b] * r[i][b];
+                                for (s2 = 0; s2 < ns; s2++) {
+                                    M[s1][s2] += J[idx[s1]][i][a] * W[i][a][b] * J[idx[s2]][i][b];
+                                }
+                            }
+                        }
+                    }
+                }
+                /* Gauss-Jordan */
+                {
+                    double A[24][25];
+                    int r1, r2, c1;
+                    int sing = 0;
+                    for (r1 = 0; r1 < ns; r1++) {
+                        for (c1 = 0; c1 < ns; c1++) {
+                            A[r1][c1] = M[r1][c1];
+                        }
+                        A[r1][ns] = v[r1];
+                    }
+                    for (r1 = 0; r1 < ns && !sing; r1++) {
+                        double piv = A[r1][r1];
+                        if (!(fabs(piv) > 1e-300)) {
+                            sing = 1;
+                            break;
+                        }
+                        for (c1 = r1; c1 <= ns; c1++) {
+                            A[r1][c1] /= piv;
+                        }
+                        for (r2 = 0; r2 < ns; r2++) {
+                            if (r2 != r1) {
+                                double fct = A[r2][r1];
+                                for (c1 = r1; c1 <= ns; c1++) {
+                                    A[r2][c1] -= fct * A[r1][c1];
+                                }
+                            }
+                        }
+                    }
+                    if (sing) {
+                        continue;
+                    }
+                    for (r1 = 0; r1 < ns; r1++) {
+                        th[r1] = A[r1][ns];
+                    }
+                }
+                for (i = 0; i < fr->n; i++) {
+                    double e[3];
+                    if (mi[i] < 0 || hold[i]) {
+                        continue;
+                    }
+                    for (a = 0; a < 3; a++) {
+                        e[a] = r[i][a];
+                        for (s1 = 0; s1 < ns; s1++) {
+                            e[a] -= J[idx[s1]][i][a] * th[s1];
+                        }
+                    }
+                    for (a = 0; a < 3; a++) {
+                        for (b = 0; b < 3; b++) {
+                            Q += e[a] * W[i][a][b] * e[b];
+                        }
+                    }
+                }
+                if (Q < bestQ) {
+                    bestQ = Q;
+                    bestp = p;
+                    memcpy(bth, th, (size_t)ns * sizeof *th);
+                }
+            }
+            /* chi2_1 at 0.1 %: 10.83, on the dispersion-scaled objective */
+            if (bestp < 0 || (Qcur - bestQ) / disp < 10.83 || nsel >= 6) {
+                break;
+            }
+            sel[nsel++] = bestp;
+            memcpy(theta, bth, (size_t)nsel * sizeof *theta);
+            Qcur = bestQ;
+        }
+        out->dQ = (Q0 - Qcur) / disp;
+        out->npar = nsel;
+        out->n_fit = nm;
+        out->n_hold = nh;
+        for (i = 0; i < nsel; i++) {
+            const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)id);
+            double lo = info->params[kk[sel[i]]].lo, hi = info->params[kk[sel[i]]].hi, v = theta[i];
+            out->ch[i] = ch[sel[i]];
+            out->k[i] = kk[sel[i]];
+            out->val[i] = v < lo ? lo : (v > hi ? hi : v);
+        }
+        /* the held-out test with the parameters fixed */
+        if (nsel > 0 && nh > 0) {
+            double aa = 0.0, bb = 0.0, dh;
+            for (i = 0; i < fr->n; i++) {
+                double pr[3] = { 0.0, 0.0, 0.0 };
+                int m;
+                if (mi[i] < 0 || !hold[i]) {
+                    continue;
+                }
+                for (m = 0; m < nsel; m++) {
+                    for (a = 0; a < 3; a++) {
+                        pr[a] += J[sel[m]][i][a] * out->val[m];
+                    }
+                }
+                for (a = 0; a < 3; a++) {
+                    for (b = 0; b < 3; b++) {
+                        aa += pr[a] * W[i][a][b] * pr[b];
+                        bb += pr[a] * W[i][a][b] * r[i][b];
+                    }
+                }
+            }
+            dh = Qh0 / (3.0 * nh);
+            dh = dh > disp ? dh : disp;
+            out->dQ_hold = (2.0 * bb - aa) / dh;
+            out->z_hold = aa > 0.0 ? bb / sqrt(dh * aa) : 0.0;
+            out->Q0_hold = Qh0;
+            /* fraction of the held-out innovation excess (over the filter's
+             * own 3 per stance) that the effect removes */
+            out->expl = Qh0 - 3.0 * nh > 0.0 ? (2.0 * bb - aa) / (Qh0 - 3.0 * nh) : (double)NAN;
+            out->expl_lo = out->expl_hi = out->expl;
+        }
+    }
+    ok = 0;
+done:
+    free(base);
+    free(pert);
+    free(J);
+    free(r);
+    free(W);
+    free(mi);
+    free(hold);
+    return ok;
+}
+
+/* ------------------------------------------------------------ diagnosis */
+
+/* Baseline white noise from the stances of the fit segment: the robust
+ * spread of first differences between consecutive stance samples. */
+static void stance_noise(const walk_t *w, const navrun_t *r, long a, long b, double fs, double white[SG_NCH])
+{
+    long k, m = 0;
+    int c;
+    double *d = (double *)malloc(((size_t)(b - a) + 1) * sizeof *d);
+    for (c = 0; c < SG_NCH; c++) {
+        white[c] = 0.0;
+    }
+    if (d == NULL) {
+        return;
+    }
+    for (c = 0; c < SG_NCH; c++) {
+        m = 0;
+        for (k = a + 1; k < b; k++) {
+            if ((r->flag[k] & FL_STANCE) && (r->flag[k - 1] & FL_STANCE) && w->t_ns[k] > w->t_ns[k - 1]) {
+                double x1 = c < 3 ? w->acc[k][c] : w->gyr[k][c - 3], x0 = c < 3 ? w->acc[k - 1][c] : w->gyr[k - 1][c - 3];
+                d[m++] = fabs(x1 - x0);
+            }
+        }
+        if (m > 10) {
+            long i, j;
+            /* median by selection (partial insertion is enough for a rank) */
+            for (i = 0; i <= m / 2; i++) {
+                long mn = i;
+                for (j = i + 1; j < m; j++) {
+                    if (d[j] < d[mn]) {
+                        mn = j;
+                    }
+                }
+                if (mn != i) {
+                    double t = d[i];
+                    d[i] = d[mn];
+                    d[mn] = t;
+                }
+            }
+            /* MAD of a difference of two white samples: 0.6745 sqrt(2) sigma */
+            white[c] = d[m / 2] / (0.6745 * sqrt(2.0)) / sqrt(fs);
+        }
+    }
+    free(d);
+}
+
+/* Saturation: values at the channel's extreme repeated (flat tops). */
+static void find_saturation(const walk_t *w, long a, long b, double sat[SG_NCH], int nsat[SG_NCH])
+{
+    int c;
+    long k;
+    for (c = 0; c < SG_NCH; c++) {
+        double mx = 0.0;
+        int n = 0;
+        for (k = a; k < b; k++) {
+            double x = fabs(c < 3 ? w->acc[k][c] : w->gyr[k][c - 3]);
+            mx = x > mx ? x : mx;
+        }
+        for (k = a; k < b; k++) {
+            double x = fabs(c < 3 ? w->acc[k][c] : w->gyr[k][c - 3]);
+            if (x >= mx * (1.0 - 1e-6)) {
+                n++;
+            }
+        }
+        sat[c] = n >= 3 ? mx : 0.0;
+        nsat[c] = n;
+    }
+}
 
 int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_size)
 {
-    (void)log;
-    (void)r;
-    snprintf(err, err_size, "the walk domain is not built yet");
-    return -1;
+    sg_nav_t *nv = (sg_nav_t *)calloc(1, sizeof *nv);
+    hx_nav_opts_t no;
+    walk_t rw;
+    const int S = r->opts.seeds;
+    const double alpha = r->opts.alpha / 4.0;
+    int g, c;
+    uint32_t seed = r->opts.seed + 7777u;
+    if (nv == NULL) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    r->nav = nv;
+    nv->n = r->n;
+    nv->rate_hz = r->rate_hz;
+    nv->closed = r->opts.closed;
+    memset(&no, 0, sizeof no);
+    no.profile = r->opts.profile;
+    if (hx_nav_config(&no, &nv->cfg, err, err_size) != 0) {
+        return -1;
+    }
+    rw.n = (long)log->n;
+    rw.t_ns = log->t_ns;
+    rw.acc = log->acc;
+    rw.gyr = log->gyr;
+    if (nav_run(&rw, &nv->cfg, &nv->real) != 0) {
+        snprintf(err, err_size, "the navigation filter could not run on the log");
+        return -1;
+    }
+    for (g = 0; g < SG_NSEG; g++) {
+        stance_t *st = (stance_t *)malloc(MAX_ST * sizeof *st);
+        if (st == NULL) {
+            return -1;
+        }
+        nv->nst[g] = stances_of(&nv->real, r->segs.start[g][0], r->segs.start[g][0] + r->segs.n[g][0], st, MAX_ST);
+        free(st);
+    }
+    /* a confident answer: the mean first-update NIS of the held-out stances
+     * known to +-50 % (95 %), i.e. at least 10 stances (chi2_3 / 3 per stance) */
+    r->confident = 1;
+    if (nv->nst[SG_HOLD] < 10) {
+        r->confident = 0;
+        snprintf(r->why, sizeof r->why,
+                 "the held-out segment has %d stances with zero-velocity updates; the mean innovation of fewer than "
+                 "10 is not known to +-50 %% (95 %%)",
+                 nv->nst[SG_HOLD]);
+    }
+    /* baseline noise */
+    if (r->opts.profile != NULL) {
+        fnav_profile_t p = nv->cfg.profile;
+        nv->from_profile = 1;
+        for (c = 0; c < 3; c++) {
+            nv->white[c] = (double)p.accel_noise_mps2_rthz[c];
+            nv->white[3 + c] = (double)p.gyro_noise_rps_rthz[c];
+            nv->ar1_tau[c] = (double)p.accel_tau_s[c];
+            nv->ar1_tau[3 + c] = (double)p.gyro_tau_s[c];
+            nv->ar1_sig[c] = (double)p.accel_bias_sigma_mps2[c];
+            nv->ar1_sig[3 + c] = (double)p.gyro_bias_sigma_rps[c];
+        }
+    } else {
+        stance_noise(&rw, &nv->real, r->segs.start[SG_FIT][0], r->segs.start[SG_FIT][0] + r->segs.n[SG_FIT][0],
+                     r->rate_hz, nv->white);
+    }
+    for (c = 0; c < SG_NCH; c++) {
+        double *x = (double *)malloc(((size_t)r->n + 1) * sizeof *x);
+        long k;
+        if (x == NULL) {
+            return -1;
+        }
+        for (k = 0; k < r->n; k++) {
+            x[k] = c < 3 ? log->acc[k][c] : log->gyr[k][c - 3];
+        }
+        nv->q[c] = sg_lattice_step(x, (size_t)r->n, &nv->qz[c]);
+        if (!(nv->qz[c] > gsl_cdf_ugaussian_Qinv(0.5 * alpha / SG_NCH))) {
+            nv->q[c] = 0.0;
+        }
+        free(x);
+    }
+    find_saturation(&rw, r->segs.start[SG_FIT][0], r->segs.start[SG_FIT][0] + r->segs.n[SG_FIT][0], nv->sat, nv->nsat);
+    /* the twin's truth */
+    nv->mf = (double(*)[3])malloc(((size_t)r->n + 1) * sizeof *nv->mf);
+    nv->mw = (double(*)[3])malloc(((size_t)r->n + 1) * sizeof *nv->mw);
+    nv->if_ = (double(*)[3])malloc(((size_t)r->n + 1) * sizeof *nv->if_);
+    nv->iw = (double(*)[3])malloc(((size_t)r->n + 1) * sizeof *nv->iw);
+    nv->tp = (double(*)[3])malloc(((size_t)r->n + 1) * sizeof *nv->tp);
+    if (nv->mf == NULL || nv->mw == NULL || nv->if_ == NULL || nv->iw == NULL || nv->tp == NULL) {
+        return -1;
+    }
+    twin_truth(&nv->real, &rw, (double)nv->cfg.gravity_mps2, nv->mf, nv->mw, nv->tp);
+    means_to_inst((const double(*)[3])nv->mf, r->n, nv->if_);
+    means_to_inst((const double(*)[3])nv->mw, r->n, nv->iw);
+    if (getenv("SG_NAVDEBUG") != NULL) {
+        /* development aid: the twin truth as a CSV log */
+        FILE *df = fopen(getenv("SG_NAVDEBUG"), "w");
+        long k;
+        if (df != NULL) {
+            fprintf(df, "t,ax,ay,az,gx,gy,gz\n");
+            for (k = 0; k < r->n; k++) {
+                fprintf(df, "%.9f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", (double)(rw.t_ns[k] - rw.t_ns[0]) * 1e-9,
+                        nv->mf[k][0], nv->mf[k][1], nv->mf[k][2], nv->mw[k][0], nv->mw[k][1], nv->mw[k][2]);
+            }
+            fclose(df);
+        }
+    }
+    /* real points */
+    for (g = 0; g < SG_NSEG; g++) {
+        nv->real_v[g] = (double *)malloc(256 * sizeof(double));
+        if (nv->real_v[g] == NULL) {
+            return -1;
+        }
+    }
+    if (walk_points(nv, &r->segs, &rw, &nv->real, NULL, 1, nv->pl, nv->real_v) != 0) {
+        snprintf(err, err_size, "navigation statistics failed");
+        return -1;
+    }
+    for (g = 0; g < SG_NSEG; g++) {
+        nv->twin_v[g] = (double *)malloc(((size_t)S * nv->pl[g].n + 1) * sizeof(double));
+        if (nv->twin_v[g] == NULL) {
+            return -1;
+        }
+    }
+    if (!r->opts.quiet) {
+        fprintf(stderr, "simgap: %d baseline twins of the walk, two sampling conventions...\n", S);
+    }
+    /* the sampling convention is part of the baseline: both are simulated
+     * and the one with the smaller fit-segment gap is kept */
+    {
+        int conv;
+        double *tv[2][SG_NSEG];
+        sg_cmp_t cc[2][SG_NSEG];
+        memset(cc, 0, sizeof cc);
+        for (conv = 0; conv < 2; conv++) {
+            nv->tf = conv ? nv->if_ : nv->mf;
+            nv->tw = conv ? nv->iw : nv->mw;
+            for (g = 0; g < SG_NSEG; g++) {
+                tv[conv][g] = (double *)malloc(((size_t)S * nv->pl[g].n + 1) * sizeof(double));
+                if (tv[conv][g] == NULL) {
+                    return -1;
+                }
+            }
+            if (run_twins(nv, &r->segs, &rw, NULL, S, seed, tv[conv]) != 0) {
+                snprintf(err, err_size, "twin simulation failed");
+                return -1;
+            }
+            for (g = 0; g < SG_NSEG; g++) {
+                if (sg_compare(&nv->pl[g], nv->real_v[g], tv[conv][g], S, NULL, NULL, alpha, &cc[conv][g]) != 0) {
+                    return -1;
+                }
+            }
+            nv->G_fit_conv[conv] = cc[conv][SG_FIT].G;
+            if (getenv("SG_NAVDEBUG") != NULL) {
+                fprintf(stderr, "conv %d: nis_first twin %g real %g\n", conv, exp(cc[conv][SG_FULL].twin_mean[0]),
+                        exp(nv->real_v[SG_FULL][0]));
+            }
+        }
+        nv->inst = nv->G_fit_conv[1] < nv->G_fit_conv[0];
+        nv->tf = nv->inst ? nv->if_ : nv->mf;
+        nv->tw = nv->inst ? nv->iw : nv->mw;
+        for (g = 0; g < SG_NSEG; g++) {
+            free(nv->twin_v[g]);
+            nv->twin_v[g] = tv[nv->inst][g];
+            nv->cmp[g] = cc[nv->inst][g];
+            free(tv[!nv->inst][g]);
+            sg_cmp_free(&cc[!nv->inst][g]);
+        }
+    }
+    nv->gap = nv->cmp[SG_FULL].significant || nv->cmp[SG_HOLD].significant;
+    /* locations: navigation points beyond the critical z */
+    {
+        const sg_plist_t *pl = &nv->pl[SG_FULL];
+        size_t j;
+        for (j = 0; j < pl->n && nv->nloc < 32; j++) {
+            const sg_cmp_t *cc = &nv->cmp[SG_FULL];
+            if (fabs(cc->z[j]) > cc->z_crit) {
+                sg_loc_t *L = &nv->loc[nv->nloc++];
+                L->dom = pl->p[j].dom;
+                L->ch = pl->p[j].ch;
+                L->kind = pl->p[j].kind;
+                L->seg = SG_FULL;
+                L->x_lo = pl->p[j].x_lo;
+                L->x_hi = pl->p[j].x_hi;
+                L->peak_z = cc->z[j];
+                L->ratio = pl->p[j].kind == SG_NAV_WHITE ? nv->real_v[SG_FULL][j] - cc->twin_mean[j]
+                                                        : exp(nv->real_v[SG_FULL][j] - cc->twin_mean[j]);
+                L->npts = 1;
+            }
+        }
+    }
+    /* attribution: the motion effects by innovation regression (fit on the
+     * fit stances, tested on the held-out ones), saturation and quantisation
+     * by their evidence on both segments; then twins of the selected effect
+     * for the held-out navigation gap before and after */
+    {
+        firsts_t *fr = (firsts_t *)malloc(sizeof *fr);
+        const double zacc = gsl_cdf_ugaussian_Qinv(r->opts.alpha / (double)(3 + 2 * SG_NCH));
+        const double t_split = (double)(rw.t_ns[r->segs.start[SG_HOLD][0]] - rw.t_ns[0]) * 1e-9;
+        navstep_t *st = &nv->step[0];
+        static const int fams[] = { FNAV_EFFECT_SCALE, FNAV_EFFECT_MISALIGN, FNAV_EFFECT_GSENS };
+        int f, i, order[NAV_MAX_CAND], nord = 0;
+        double sath[SG_NCH];
+        int nsath[SG_NCH];
+        if (fr == NULL) {
+            return -1;
+        }
+        memset(st, 0, sizeof *st);
+        st->selected = -1;
+        st->G_hold_before = nv->cmp[SG_HOLD].G;
+        st->G_fit_before = nv->cmp[SG_FIT].G;
+        firsts_of(&nv->real, rw.t_ns, 0, r->n, fr);
+        find_saturation(&rw, r->segs.start[SG_HOLD][0], r->segs.start[SG_HOLD][0] + r->segs.n[SG_HOLD][0], sath, nsath);
+        for (f = 0; f < 3 && r->confident; f++) {
+            navcand_t cd;
+            if (!r->opts.quiet) {
+                fprintf(stderr, "simgap: fitting %s on the fit stances...\n",
+                        fnav_imuerr_effect_info((fnav_effect_id_t)fams[f])->name);
+            }
+            if (fit_family(nv, &r->segs, &rw, fr, t_split, NULL, fams[f], &cd) == 0 && cd.npar > 0) {
+                st->cand[st->ncand++] = cd;
+            }
+        }
+        for (c = 0; c < SG_NCH && st->ncand < NAV_MAX_CAND; c++) {
+            if (nv->sat[c] > 0.0) {
+                navcand_t cd;
+                memset(&cd, 0, sizeof cd);
+                cd.id = FNAV_EFFECT_SATURATION;
+                cd.npar = 1;
+                cd.ch[0] = c;
+                cd.val[0] = nv->sat[c];
+                cd.dQ = (double)nv->nsat[c];
+                /* held out: the same flat top again (at least 3 samples) */
+                cd.dQ_hold = (double)nsath[c];
+                cd.z_hold = (sath[c] > 0.0 && fabs(sath[c] - nv->sat[c]) <= 1e-6 * nv->sat[c]) ? SG_ZCAP : 0.0;
+                cd.expl = cd.expl_lo = cd.expl_hi = (double)NAN;
+                st->cand[st->ncand++] = cd;
+            }
+        }
+        for (c = 0; c < SG_NCH && st->ncand < NAV_MAX_CAND; c++) {
+            if (nv->q[c] > 0.0) {
+                navcand_t cd;
+                memset(&cd, 0, sizeof cd);
+                cd.id = FNAV_EFFECT_QUANT;
+                cd.npar = 1;
+                cd.ch[0] = c;
+                cd.val[0] = nv->q[c];
+                cd.dQ = nv->qz[c];
+                cd.z_hold = lattice_val(&rw, c, r->segs.start[SG_HOLD][0],
+                                        r->segs.start[SG_HOLD][0] + r->segs.n[SG_HOLD][0], nv->q[c]);
+                cd.dQ_hold = cd.z_hold;
+                cd.expl = cd.expl_lo = cd.expl_hi = (double)NAN;
+                st->cand[st->ncand++] = cd;
+            }
+        }
+        /* accepted: supported on the fit segment and significant held out;
+         * ranked by the held-out z */
+        for (i = 0; i < st->ncand; i++) {
+            const navcand_t *cd = &st->cand[i];
+            int isfam = cd->id != FNAV_EFFECT_SATURATION && cd->id != FNAV_EFFECT_QUANT;
+            if ((!isfam || cd->dQ >= 10.83) && cd->z_hold > zacc) {
+                int k2 = nord++;
+                while (k2 > 0 && st->cand[order[k2 - 1]].z_hold < cd->z_hold) {
+                    order[k2] = order[k2 - 1];
+                    k2--;
+                }
+                order[k2] = i;
+            }
+        }
+        /* parsimony: within one z of the best, the fewest parameters win
+         * (two effects that explain the same innovations are not told apart
+         * by a fraction of a sigma) */
+        if (nord > 1) {
+            int b0 = 0, k3;
+            for (k3 = 1; k3 < nord; k3++) {
+                const navcand_t *x = &st->cand[order[k3]], *y = &st->cand[order[b0]];
+                if (x->z_hold >= st->cand[order[0]].z_hold - 1.0 && x->npar < y->npar) {
+                    b0 = k3;
+                }
+            }
+            if (b0 != 0) {
+                int t = order[b0];
+                memmove(order + 1, order, (size_t)b0 * sizeof *order);
+                order[0] = t;
+            }
+        }
+        st->selected = nord > 0 ? order[0] : -1;
+        nv->nsteps = st->ncand > 0 ? 1 : 0;
+        if (nord > 0) {
+            nv->sel[0] = st->cand[order[0]];
+            nv->sel_expl[0] = st->cand[order[0]].expl;
+            nv->nsel = 1;
+        }
+        /* further steps: the other linear families refitted given the
+         * selected ones (their clean twins carry them) */
+        for (i = 1; i < r->opts.max_steps && nv->nsel == i && nv->sel[0].id != FNAV_EFFECT_SATURATION &&
+                    nv->sel[0].id != FNAV_EFFECT_QUANT;
+             i++) {
+            navstep_t *s2 = &nv->step[i];
+            int bi = -1, m2;
+            memset(s2, 0, sizeof *s2);
+            s2->selected = -1;
+            for (f = 0; f < 3; f++) {
+                navcand_t cd;
+                int used = 0;
+                for (m2 = 0; m2 < nv->nsel; m2++) {
+                    used |= nv->sel[m2].id == fams[f];
+                }
+                if (used || nv->nsel > 1) {
+                    continue;
+                }
+                if (fit_family(nv, &r->segs, &rw, fr, t_split, &nv->sel[0], fams[f], &cd) == 0 && cd.npar > 0) {
+                    s2->cand[s2->ncand] = cd;
+                    if (cd.dQ >= 10.83 && cd.z_hold > zacc && (bi < 0 || cd.z_hold > s2->cand[bi].z_hold)) {
+                        bi = s2->ncand;
+                    }
+                    s2->ncand++;
+                }
+            }
+            nv->nsteps = i + 1;
+            if (bi < 0) {
+                break;
+            }
+            s2->selected = bi;
+            nv->sel[nv->nsel] = s2->cand[bi];
+            nv->sel_expl[nv->nsel] = s2->cand[bi].expl;
+            nv->nsel++;
+        }
+        /* twins of the top effect: the navigation gap before and after */
+        if (nv->nsel > 0) {
+            navcand_t *cd = &st->cand[order[0]];
+            double *tv[SG_NSEG];
+            int okv = 1;
+            for (g = 0; g < SG_NSEG; g++) {
+                tv[g] = (double *)malloc(((size_t)S * nv->pl[g].n + 1) * sizeof(double));
+                okv &= tv[g] != NULL;
+            }
+            if (okv && run_twins(nv, &r->segs, &rw, cd, S, seed, tv) == 0) {
+                for (g = 0; g < SG_NSEG; g++) {
+                    if (sg_compare(&nv->pl[g], nv->real_v[g], tv[g], S, NULL, NULL, alpha, &nv->cmp_final[g]) != 0) {
+                        okv = 0;
+                    }
+                    nv->twin_f[g] = tv[g];
+                }
+                if (okv) {
+                    cd->simulated = 1;
+                    cd->G_fit = nv->cmp_final[SG_FIT].G;
+                    cd->G_hold = nv->cmp_final[SG_HOLD].G;
+                    cd->dG_hold = nv->cmp[SG_HOLD].G - cd->G_hold;
+                    nv->sel[0] = *cd;
+                }
+            } else {
+                for (g = 0; g < SG_NSEG; g++) {
+                    free(tv[g]);
+                }
+            }
+        }
+        nv->within_noise = nv->nsel > 0 ? (nv->cmp_final[SG_HOLD].z != NULL && !nv->cmp_final[SG_HOLD].significant)
+                                        : !nv->cmp[SG_HOLD].significant;
+        /* the navigation twins' gap is dominated by the filter's own model
+         * (stance, integration), which a twin built from the filter's
+         * trajectory cannot reproduce (docs/simgap.md): it is reported as the
+         * model gap; the sensor gap is what the effects explain on held-out
+         * stances, the lattice and the flat tops */
+        nv->model_gap = nv->gap;
+        nv->gap = nv->nsel > 0;
+        free(fr);
+    }
+    return 0;
 }
+
+/* ------------------------------------------------------------ outputs */
 
 void sg_nav_verdict_counts(const sg_nav_t *nv, int *gaps, int *sel, int *open)
 {
-    (void)nv;
-    (void)gaps;
-    (void)sel;
-    (void)open;
+    (void)open; /* what remains of a walk's gap is the filter's model: reported, not counted */
+    if (nv->gap) {
+        (*gaps)++;
+        *sel += nv->nsel;
+    }
 }
 
 void sg_nav_free(sg_nav_t *nv)
 {
-    (void)nv;
+    int g;
+    navrun_free(&nv->real);
+    free(nv->mf);
+    free(nv->mw);
+    free(nv->if_);
+    free(nv->iw);
+    free(nv->tp);
+    for (g = 0; g < SG_NSEG; g++) {
+        sg_plist_free(&nv->pl[g]);
+        free(nv->real_v[g]);
+        free(nv->twin_v[g]);
+        free(nv->twin_f[g]);
+        sg_cmp_free(&nv->cmp[g]);
+        sg_cmp_free(&nv->cmp_final[g]);
+    }
+    memset(nv, 0, sizeof *nv);
+}
+
+static const char *kind_name(int k)
+{
+    static const char *const nm[SG_NAV_NKIND] = { "nis_first", "nis_all", "axis", "whiteness", "residual_velocity",
+                                                   "window", "drift_h", "drift_v" };
+    return (k >= 0 && k < SG_NAV_NKIND) ? nm[k] : "?";
+}
+
+static void cand_text(char *b, size_t n, const navcand_t *cd)
+{
+    const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)cd->id);
+    size_t o = (size_t)snprintf(b, n, "%s", info != NULL ? info->name : "?");
+    int i;
+    for (i = 0; i < cd->npar && o < n; i++) {
+        o += (size_t)snprintf(b + o, n - o, "%s%s.%s=%.3g", i ? ", " : " (", sg_channel_name(cd->ch[i]),
+                              info->params[cd->k[i]].name, cd->val[i]);
+    }
+    if (cd->npar > 0 && o < n) {
+        snprintf(b + o, n - o, ")");
+    }
 }
 
 void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
 {
-    (void)nv;
-    (void)f;
+    int c, i, j;
+    size_t k;
+    char b[256];
     (void)r;
+    fprintf(f, "navigation: %d stances (fit %d, held out %d); twin noise %s:", nv->nst[SG_FULL], nv->nst[SG_FIT],
+            nv->nst[SG_HOLD], nv->from_profile ? "from the profile" : "from the stances (white)");
+    for (c = 0; c < SG_NCH; c++) {
+        fprintf(f, " %s %.3g", sg_channel_name(c), nv->white[c]);
+    }
+    fprintf(f, " /sqrt(Hz); twin samples: %s (fit-segment gap %.3g as interval means, %.3g as instantaneous values)\n",
+            nv->inst ? "instantaneous values" : "interval means", nv->G_fit_conv[0], nv->G_fit_conv[1]);
+    for (c = 0; c < SG_NCH; c++) {
+        if (nv->q[c] > 0.0) {
+            fprintf(f, "  %s lies on a lattice of step %.4g (z %.0f)\n", sg_channel_name(c), nv->q[c], nv->qz[c]);
+        }
+        if (nv->sat[c] > 0.0) {
+            fprintf(f, "  %s reaches %.4g %d times (flat tops)\n", sg_channel_name(c), nv->sat[c], nv->nsat[c]);
+        }
+    }
+    for (i = 0; i < SG_NSEG; i++) {
+        static const char *const nm[SG_NSEG] = { "whole walk", "fit", "held out" };
+        fprintf(f, "  %-10s G %.3g (null %.2g, crit %.2g, max |z| %.1f)%s\n", nm[i], nv->cmp[i].G, nv->cmp[i].null_mean,
+                nv->cmp[i].G_crit, nv->cmp[i].maxz, nv->cmp[i].significant ? " SIGNIFICANT" : "");
+    }
+    for (k = 0; k < nv->pl[SG_FULL].n; k++) {
+        const sg_point_t *p = &nv->pl[SG_FULL].p[k];
+        if (p->dom != SG_NAV) {
+            continue;
+        }
+        fprintf(f, "    %-17s %-8s real %-9.4g twin %-9.4g (sd %.3g) z %+.1f\n", kind_name(p->kind),
+                p->kind == SG_NAV_WIN ? "" : (p->kind == SG_NAV_AXIS ? (p->x == 0.0 ? "x" : p->x == 1.0 ? "y" : "z") : ""),
+                p->kind == SG_NAV_WHITE ? nv->real_v[SG_FULL][k] : exp(nv->real_v[SG_FULL][k]),
+                p->kind == SG_NAV_WHITE ? nv->cmp[SG_FULL].twin_mean[k] : exp(nv->cmp[SG_FULL].twin_mean[k]),
+                nv->cmp[SG_FULL].sd_tot[k], nv->cmp[SG_FULL].z[k]);
+    }
+    for (k = 0; k < nv->nloc; k++) {
+        const sg_loc_t *L = &nv->loc[k];
+        fprintf(f, "  gap: navigation %s, t %.1f-%.1f s, %.1f sigma %s the twin\n", kind_name(L->kind), L->x_lo,
+                L->x_hi, fabs(L->peak_z), L->peak_z > 0 ? "above" : "below");
+    }
+    if (nv->nsteps > 0) {
+        fprintf(f, "attribution (innovation regression on the fit stances; held out: objective change and its z):\n");
+    }
+    for (i = 0; i < nv->nsteps; i++) {
+        for (j = 0; j < nv->step[i].ncand; j++) {
+            const navcand_t *cd = &nv->step[i].cand[j];
+            cand_text(b, sizeof b, cd);
+            fprintf(f, "  %c %-52s fit %.1f; held out: %+.1f, z %+.1f", j == nv->step[i].selected ? '*' : ' ', b,
+                    cd->dQ, cd->dQ_hold, cd->z_hold);
+            if (cd->expl == cd->expl) {
+                fprintf(f, ", explains %.0f %% of the held-out innovation excess", 100.0 * cd->expl);
+            }
+            if (cd->simulated) {
+                fprintf(f, "; twins: held-out gap %.3g -> %.3g", nv->step[i].G_hold_before, cd->G_hold);
+            }
+            fprintf(f, "\n");
+        }
+    }
+    if (nv->model_gap) {
+        fprintf(f, "  the navigation twins' innovations differ from the real's (G above): a twin built from the filter's own\n"
+                   "  trajectory cannot carry the filter's stance and integration model errors, which dominate foot-mounted\n"
+                   "  innovations even with a perfect sensor (docs/simgap.md); this model gap is reported, not attributed\n");
+    }
+    for (i = 0; i < nv->nsel; i++) {
+        cand_text(b, sizeof b, &nv->sel[i]);
+        fprintf(f, "  selected: %s\n", b);
+    }
+}
+
+static void add_num(cJSON *o, const char *k, double v)
+{
+    if (isfinite(v)) {
+        cJSON_AddNumberToObject(o, k, v);
+    } else {
+        cJSON_AddNullToObject(o, k);
+    }
+}
+
+static cJSON *cand_json(const navcand_t *cd)
+{
+    const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)cd->id);
+    cJSON *o = cJSON_CreateObject(), *a = cJSON_AddArrayToObject(o, "params");
+    int i;
+    cJSON_AddStringToObject(o, "effect", info != NULL ? info->name : "?");
+    for (i = 0; i < cd->npar; i++) {
+        cJSON *p = cJSON_CreateObject();
+        cJSON_AddStringToObject(p, "channel", sg_channel_name(cd->ch[i]));
+        cJSON_AddStringToObject(p, "param", info->params[cd->k[i]].name);
+        add_num(p, "value", cd->val[i]);
+        cJSON_AddItemToArray(a, p);
+    }
+    add_num(o, "fit_dQ", cd->dQ);
+    add_num(o, "held_out_dQ", cd->dQ_hold);
+    add_num(o, "held_out_z", cd->z_hold);
+    add_num(o, "explained", cd->expl);
+    cJSON_AddNumberToObject(o, "stances_fit", cd->n_fit);
+    cJSON_AddNumberToObject(o, "stances_held_out", cd->n_hold);
+    cJSON_AddBoolToObject(o, "simulated", cd->simulated);
+    if (cd->simulated) {
+        add_num(o, "G_fit", cd->G_fit);
+        add_num(o, "G_held_out", cd->G_hold);
+        add_num(o, "dG_held_out", cd->dG_hold);
+
+    }
+    return o;
+}
+
+cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r)
+{
+    static const char *const segn[SG_NSEG] = { "full", "fit", "held_out" };
+    cJSON *o = cJSON_CreateObject(), *a, *w;
+    int g, i, j, c;
+    size_t k;
+    (void)r;
+    cJSON_AddNumberToObject(o, "stances_full", nv->nst[SG_FULL]);
+    cJSON_AddNumberToObject(o, "stances_fit", nv->nst[SG_FIT]);
+    cJSON_AddNumberToObject(o, "stances_held_out", nv->nst[SG_HOLD]);
+    cJSON_AddStringToObject(o, "twin_noise", nv->from_profile ? "profile" : "stances");
+    cJSON_AddStringToObject(o, "twin_sampling", nv->inst ? "instantaneous" : "interval-mean");
+    add_num(o, "G_fit_interval_mean", nv->G_fit_conv[0]);
+    add_num(o, "G_fit_instantaneous", nv->G_fit_conv[1]);
+    w = cJSON_AddObjectToObject(o, "white_density");
+    for (c = 0; c < SG_NCH; c++) {
+        add_num(w, sg_channel_name(c), nv->white[c]);
+    }
+    a = cJSON_AddObjectToObject(o, "gap");
+    for (g = 0; g < SG_NSEG; g++) {
+        cJSON *s = cJSON_AddObjectToObject(a, segn[g]), *pts;
+        add_num(s, "G", nv->cmp[g].G);
+        add_num(s, "G_null_mean", nv->cmp[g].null_mean);
+        add_num(s, "G_crit", nv->cmp[g].G_crit);
+        add_num(s, "max_abs_z", nv->cmp[g].maxz);
+        add_num(s, "z_crit", nv->cmp[g].z_crit);
+        cJSON_AddBoolToObject(s, "significant", nv->cmp[g].significant);
+        pts = cJSON_AddArrayToObject(s, "points");
+        for (k = 0; k < nv->pl[g].n; k++) {
+            const sg_point_t *p = &nv->pl[g].p[k];
+            cJSON *po = cJSON_CreateObject();
+            cJSON_AddStringToObject(po, "domain", sg_domain_name(p->dom));
+            cJSON_AddStringToObject(po, "kind", p->dom == SG_NAV ? kind_name(p->kind) : sg_channel_name(p->ch));
+            add_num(po, "x", p->x);
+            add_num(po, "x_lo", p->x_lo);
+            add_num(po, "x_hi", p->x_hi);
+            add_num(po, "real", nv->real_v[g][k]);
+            add_num(po, "twin", nv->cmp[g].twin_mean[k]);
+            add_num(po, "sd", nv->cmp[g].sd_tot[k]);
+            add_num(po, "z", nv->cmp[g].z[k]);
+            cJSON_AddItemToArray(pts, po);
+        }
+    }
+    a = cJSON_AddArrayToObject(o, "steps");
+    for (i = 0; i < nv->nsteps; i++) {
+        cJSON *s = cJSON_CreateObject(), *ca = cJSON_AddArrayToObject(s, "candidates");
+        add_num(s, "G_held_out_before", nv->step[i].G_hold_before);
+        for (j = 0; j < nv->step[i].ncand; j++) {
+            cJSON *co = cand_json(&nv->step[i].cand[j]);
+            cJSON_AddBoolToObject(co, "selected", j == nv->step[i].selected);
+            cJSON_AddItemToArray(ca, co);
+        }
+        cJSON_AddItemToArray(a, s);
+    }
+    a = cJSON_AddArrayToObject(o, "selected");
+    for (i = 0; i < nv->nsel; i++) {
+        cJSON_AddItemToArray(a, cand_json(&nv->sel[i]));
+    }
+    cJSON_AddBoolToObject(o, "gap_significant", nv->gap);
+    cJSON_AddBoolToObject(o, "model_gap", nv->model_gap);
+    cJSON_AddBoolToObject(o, "within_noise", nv->within_noise);
+    return o;
+}
+
+int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const char *cmd)
+{
+    hx_plot_t p;
+    char path[600];
+    stance_t *st = (stance_t *)malloc(MAX_ST * sizeof *st);
+    int ns, i;
+    (void)r;
+    if (st == NULL) {
+        return -1;
+    }
+    snprintf(path, sizeof path, "%s/innovations.png", dir);
+    if (hx_plot_open(&p, cmd, path, 1100, 700) != 0) {
+        free(st);
+        return -1;
+    }
+    ns = stances_of(&nv->real, 0, nv->n, st, MAX_ST);
+    fprintf(p.gp, "set multiplot layout 2,1 title 'Zero-velocity-update innovations of the real walk'\n");
+    fprintf(p.gp, "$d << EOD\n");
+    for (i = 0; i < ns; i++) {
+        /* stance start time from the run's own sample index (uniform rate) */
+        fprintf(p.gp, "%.4f %.6g %.6g\n", (double)st[i].first / nv->rate_hz, st[i].nis_first,
+                st[i].nupd > 0 ? st[i].nis_sum / st[i].nupd : 0.0);
+    }
+    fprintf(p.gp, "EOD\n");
+    {
+        int g = SG_FULL;
+        double tw = 0.0;
+        size_t k;
+        for (k = 0; k < nv->pl[g].n; k++) {
+            if (nv->pl[g].p[k].kind == SG_NAV_NIS_FIRST && nv->pl[g].p[k].dom == SG_NAV) {
+                tw = exp(nv->cmp[g].twin_mean[k]);
+            }
+        }
+        fprintf(p.gp, "set logscale y\nset xlabel 't [s]'\nset ylabel 'NIS'\nset title 'NIS of the first update of "
+                      "each stance (line: the twins'' mean, 3 = chi-square mean)'\n");
+        fprintf(p.gp, "plot $d using 1:2 with impulses lw 2 title 'real, first update', %.6g with lines lw 2 title "
+                      "'twins (mean)', 3 with lines dt 2 lc rgb 'black' title 'chi2_3 mean'\n",
+                tw);
+    }
+    fprintf(p.gp, "set title 'mean NIS over each stance'\nplot $d using 1:3 with impulses lw 2 title 'real'\n");
+    fprintf(p.gp, "unset multiplot\n");
+    free(st);
+    return hx_plot_close(&p, cmd);
+}
+
+/* ------------------------------------------------------------ validation */
+
+void sg_nav_scores(const sg_nav_t *nv, double *score, int neff, uint32_t *flagged)
+{
+    const sgv_effect_t *E;
+    int n, i, j, c;
+    E = sgv_effects(&n);
+    (void)neff;
+    for (i = 0; i < nv->nsel; i++) {
+        for (j = 0; j < n; j++) {
+            if (E[j].id == nv->sel[i].id && strcmp(E[j].name, "quant_shaped") != 0) {
+                score[j] += nv->sel[i].dG_hold > 0.0 ? nv->sel[i].dG_hold : 1e-9;
+                break;
+            }
+        }
+        for (c = 0; c < nv->sel[i].npar; c++) {
+            *flagged |= 1u << nv->sel[i].ch[c];
+        }
+    }
+}
+
+void sg_nav_truth_errors(const sg_nav_t *nv, int id, uint32_t mask, const double *truth, double *pe, int *np,
+                         double *sh, int *ns)
+{
+    int i, c;
+    for (i = 0; i < nv->nsel; i++) {
+        if (nv->sel[i].id != id) {
+            continue;
+        }
+        for (c = 0; c < nv->sel[i].npar; c++) {
+            int ch = nv->sel[i].ch[c];
+            if (((mask >> ch) & 1u) && truth[ch] != 0.0) {
+                pe[(*np)++] = fabs(nv->sel[i].val[c] - truth[ch]) / fabs(truth[ch]);
+            }
+        }
+        sh[(*ns)++] = nv->sel_expl[i];
+    }
+}
+
+/* First-update innovations of a simulated walk through the default filter. */
+static int sim_firsts(const char *script, const fnav_imuerr_config_t *cfg, const fnav_nav_config_t *nc, firsts_t *f,
+                      double peak[SG_NCH])
+{
+    hx_log_t L;
+    walk_t w;
+    navrun_t run;
+    char err[256];
+    int c;
+    long k;
+    if (sgv_simulate(script, cfg, 0, &L, err, sizeof err) != 0) {
+        return -1;
+    }
+    w.n = (long)L.n;
+    w.t_ns = L.t_ns;
+    w.acc = L.acc;
+    w.gyr = L.gyr;
+    if (peak != NULL) {
+        for (c = 0; c < SG_NCH; c++) {
+            peak[c] = 0.0;
+            for (k = 0; k < w.n; k++) {
+                double x = fabs(c < 3 ? w.acc[k][c] : w.gyr[k][c - 3]);
+                peak[c] = x > peak[c] ? x : peak[c];
+            }
+        }
+    }
+    if (nav_run(&w, nc, &run) != 0) {
+        hx_log_free(&L);
+        return -1;
+    }
+    firsts_of(&run, w.t_ns, 0, w.n, f);
+    navrun_free(&run);
+    hx_log_free(&L);
+    return 0;
+}
+
+int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t *cs, fnav_imuerr_config_t *cfg,
+                     char *script, size_t script_size)
+{
+    const sgv_effect_t *E;
+    int n, c, i;
+    fnav_profile_t prof;
+    fnav_nav_config_t nc = fnav_nav_config_default;
+    hx_motion_config_t mc = hx_motion_config_default();
+    firsts_t *f0 = NULL, *f1 = NULL, *f2 = NULL;
+    double peak[SG_NCH];
+    fnav_imuerr_config_t clean;
+    int rc = -1;
+    E = sgv_effects(&n);
+    cs->profile = (int)((double)fnav_rng_uniform(rng) * 3.0) % 3;
+    if (fnav_profile_builtin(&prof, (fnav_profile_id_t)cs->profile) != FNAV_OK ||
+        hx_motion_scenario("loop", &mc, o->walk_duration_s, script, script_size) != 0) {
+        return -1;
+    }
+    *cfg = fnav_imuerr_config_default;
+    cfg->rate_hz = (fnav_real_t)o->walk_rate_hz;
+    cfg->seed = fnav_rng_u32(rng);
+    if (fnav_imuerr_config_from_profile(cfg, &prof) != FNAV_OK) {
+        return -1;
+    }
+    cs->cls = SGV_MOTION;
+    cs->mult = o->mag_lo * pow(o->mag_hi / o->mag_lo, (double)fnav_rng_uniform(rng));
+    if (type < 0) {
+        return 0;
+    }
+    clean = *cfg;
+    clean.mask[FNAV_EFFECT_WHITE] = 0u;
+    clean.mask[FNAV_EFFECT_AR1] = 0u;
+    f0 = (firsts_t *)malloc(sizeof *f0);
+    f1 = (firsts_t *)malloc(sizeof *f1);
+    f2 = (firsts_t *)malloc(sizeof *f2);
+    if (f0 == NULL || f1 == NULL || f2 == NULL || sim_firsts(script, &clean, &nc, f0, peak) != 0) {
+        goto done;
+    }
+    if (E[type].id == FNAV_EFFECT_SATURATION) {
+        /* a full scale below the walk's peak: the impacts clip */
+        double frac = 0.6 + 0.35 * (double)fnav_rng_uniform(rng);
+        c = (int)((double)fnav_rng_uniform(rng) * 6.0) % 6;
+        cs->mask = 1u << c;
+        cs->value[c] = peak[c] * frac;
+        cs->mult = 1.0 / frac;
+        if (fnav_imuerr_param_set(cfg, FNAV_EFFECT_SATURATION, 0, 1u << c, (fnav_real_t)cs->value[c]) != FNAV_OK ||
+            fnav_imuerr_enable(cfg, FNAV_EFFECT_SATURATION, 1u << c) != FNAV_OK) {
+            goto done;
+        }
+        rc = 0;
+        goto done;
+    }
+    {
+        /* one element of a linear family; its detectable magnitude on this
+         * walk: the noncentrality of the first-update innovations,
+         * sum (J theta)^T S^-1 (J theta) / dispersion, reaches 25 (5 sigma) */
+        int ch, k, m;
+        double delta = E[type].id == FNAV_EFFECT_GSENS ? 1e-3 : 1e-2, disp = 0.0, sjj = 0.0, thr, v;
+        navcand_t cd;
+        fnav_imuerr_config_t pert = clean;
+        int nmatch = 0;
+        if (E[type].id == FNAV_EFFECT_GSENS) {
+            ch = 3 + (int)((double)fnav_rng_uniform(rng) * 3.0) % 3;
+            k = (int)((double)fnav_rng_uniform(rng) * 3.0) % 3;
+        } else if (E[type].id == FNAV_EFFECT_MISALIGN) {
+            ch = (int)((double)fnav_rng_uniform(rng) * 6.0) % 6;
+            k = (ch % 3 + 1 + (int)((double)fnav_rng_uniform(rng) * 2.0) % 2) % 3;
+        } else {
+            ch = (int)((double)fnav_rng_uniform(rng) * 6.0) % 6;
+            k = 0;
+        }
+        memset(&cd, 0, sizeof cd);
+        cd.id = E[type].id;
+        cd.npar = 1;
+        cd.ch[0] = ch;
+        cd.k[0] = k;
+        cd.val[0] = delta;
+        if (apply_cand(&pert, &cd) != 0 || sim_firsts(script, &pert, &nc, f2, NULL) != 0 ||
+            sim_firsts(script, cfg, &nc, f1, NULL) != 0) {
+            goto done;
+        }
+        for (i = 0; i < f0->n; i++) {
+            int j1 = match(f0, i, f1), j2 = match(f0, i, f2), a, b;
+            double Si[3][3], J[3], rr[3];
+            if (j1 < 0 || j2 < 0 || inv3(f1->S[j1], Si) != 0) {
+                continue;
+            }
+            for (a = 0; a < 3; a++) {
+                J[a] = (f2->y[j2][a] - f0->y[i][a]) / delta;
+                rr[a] = f1->y[j1][a] - f0->y[i][a];
+            }
+            for (a = 0; a < 3; a++) {
+                for (b = 0; b < 3; b++) {
+                    sjj += J[a] * Si[a][b] * J[b];
+                    disp += rr[a] * Si[a][b] * rr[b];
+                }
+            }
+            nmatch++;
+        }
+        if (nmatch < 5 || !(sjj > 0.0)) {
+            goto done;
+        }
+        disp /= 3.0 * nmatch;
+        disp = disp > 1.0 ? disp : 1.0;
+        thr = sqrt(25.0 * disp / sjj);
+        v = thr * cs->mult * ((double)fnav_rng_uniform(rng) < 0.5 ? -1.0 : 1.0);
+        {
+            const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)E[type].id);
+            double hi = info->params[k].hi;
+            if (fabs(v) > 0.5 * hi) {
+                v = v > 0.0 ? 0.5 * hi : -0.5 * hi;
+            }
+        }
+        cs->mask = 1u << ch;
+        cs->value[ch] = v;
+        cd.val[0] = v;
+        for (m = 0; m < SG_NCH; m++) {
+            if (m != ch) {
+                cs->value[m] = 0.0;
+            }
+        }
+        if (apply_cand(cfg, &cd) != 0) {
+            goto done;
+        }
+        rc = 0;
+    }
+done:
+    free(f0);
+    free(f1);
+    free(f2);
+    return rc;
 }

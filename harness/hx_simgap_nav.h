@@ -9,6 +9,7 @@
 #define HX_SIMGAP_NAV_H
 
 #include "hx_simgap.h"
+#include "hx_simgap_valid.h"
 
 typedef struct sg_nav sg_nav_t;
 
@@ -16,8 +17,25 @@ typedef struct sg_nav sg_nav_t;
 int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_size);
 /** Add the walk domain's gaps, selected effects and open gaps to the counts. */
 void sg_nav_verdict_counts(const sg_nav_t *nv, int *gaps, int *sel, int *open);
+/** The walk domain's part of the JSON report (cJSON object, caller owns). */
+struct cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r);
+/** Plots of the walk domain into dir. 0, -1 (printed). */
+int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const char *cmd);
+
 /** Print the walk domain's part of the summary. */
 void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r);
 void sg_nav_free(sg_nav_t *nv);
+
+/** Validation: add the walk domain's selected effects to the per-effect
+ *  scores (indices of sgv_effects()) and its flagged channels. */
+void sg_nav_scores(const sg_nav_t *nv, double *score, int neff, uint32_t *flagged);
+/** Validation: relative errors of the fitted magnitude and held-out shrink
+ *  of effect id on the channels of mask against the true values. */
+void sg_nav_truth_errors(const sg_nav_t *nv, int id, uint32_t mask, const double *truth, double *pe, int *np,
+                         double *sh, int *ns);
+/** Validation: draw a walk case (type: index of sgv_effects() or -1 for a
+ *  control): sensor configuration, motion script, truth in cs. */
+int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t *cs, fnav_imuerr_config_t *cfg,
+                     char *script, size_t script_size);
 
 #endif /* HX_SIMGAP_NAV_H */

@@ -150,7 +150,7 @@ static void print_static(FILE *f, const sg_result_t *r)
     }
     for (ch = 0; ch < SG_NCH; ch++) {
         const sg_chres_t *c = &r->ch[ch];
-        if (!c->active || !(c->gap_full || c->gap_hold)) {
+        if (!c->active || c->nsteps == 0 || !(c->gap || c->step[0].ncand > 0)) {
             continue;
         }
         fprintf(f, "attribution %s (held-out segment):\n", sg_channel_name(ch));
@@ -164,12 +164,18 @@ static void print_static(FILE *f, const sg_result_t *r)
                 const sg_cand_t *cd = &st->cand[j];
                 sg_effect_text(b, sizeof b, ch, &cd->eff);
                 if (cd->simulated) {
-                    fprintf(f, "  step %d %c %-58s held-out excess explained %5.0f %% (68 %%: %.0f..%.0f %%)\n", i + 1,
-                            j == st->selected ? '*' : ' ', b, 100.0 * cd->expl_hold, 100.0 * cd->expl_lo,
-                            100.0 * cd->expl_hi);
+                    char ex[96];
+                    if (cd->expl_hold == cd->expl_hold) {
+                        snprintf(ex, sizeof ex, "explains %.0f %% of the excess (68 %%: %.0f..%.0f %%)",
+                                 100.0 * cd->expl_hold, 100.0 * cd->expl_lo, 100.0 * cd->expl_hi);
+                    } else {
+                        snprintf(ex, sizeof ex, "no held-out excess to explain");
+                    }
+                    fprintf(f, "  step %d %c %-58s fit dQ %.1f; held out: G %.3g -> %.3g, score %+.1f sigma, %s\n",
+                            i + 1, j == st->selected ? '*' : ' ', b, cd->dQ_fit, st->G_hold_before, cd->G_hold,
+                            cd->z_delta, ex);
                 } else {
-                    fprintf(f, "  step %d   %-58s not simulated (fit-segment objective %.1f)\n", i + 1, b,
-                            cd->Q_fit);
+                    fprintf(f, "  step %d   %-58s fit dQ %.1f; not simulated\n", i + 1, b, cd->dQ_fit);
                 }
             }
         }
@@ -202,9 +208,16 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
     debug_points(f, r);
     int ch, i, d;
     char b[256];
-    fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first %.0f %%, held out the last %.0f %%\n",
-            r->path, r->domain == 1 ? "static" : "walk", r->n, r->rate_hz, r->duration_s, 100.0 * r->opts.fit_frac,
-            100.0 * (1.0 - r->opts.fit_frac));
+    if (r->segs.sandwich) {
+        fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first and last %.0f %%, held out the "
+                   "middle %.0f %%\n",
+                r->path, r->domain == 1 ? "static" : "walk", r->n, r->rate_hz, r->duration_s,
+                50.0 * r->opts.fit_frac, 100.0 * (1.0 - r->opts.fit_frac));
+    } else {
+        fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first %.0f %%, held out the last %.0f %%\n",
+                r->path, r->domain == 1 ? "static" : "walk", r->n, r->rate_hz, r->duration_s, 100.0 * r->opts.fit_frac,
+                100.0 * (1.0 - r->opts.fit_frac));
+    }
     if (!r->confident) {
         fprintf(f, "TOO SHORT for a confident answer: %s\n", r->why);
     }

@@ -57,7 +57,7 @@ sg_feat_cfg_t sg_feat_cfg_default(double rate_hz)
     sg_feat_cfg_t c;
     c.rate_hz = rate_hz;
     c.allan_per_octave = 2u;
-    c.tau_frac = 0.1;
+    c.tau_frac = SG_TEST_FRAC;
     c.nfft_max = FNAV_WELCH_MAX_NFFT;
     c.bands_per_octave = 3u;
     return c;
@@ -225,6 +225,8 @@ long sg_acc_finish(sg_acc_t *a, int ch, sg_plist_t *pl, double *vals, size_t cap
                 p.m = r.tau;
                 p.lag = r.lag;
                 p.n_phase = r.n_phase;
+                p.w = (double)r.terms;
+                p.nblk = 1;
                 if (sg_plist_add(pl, &p) != 0) {
                     return -1;
                 }
@@ -268,6 +270,8 @@ long sg_acc_finish(sg_acc_t *a, int ch, sg_plist_t *pl, double *vals, size_t cap
                 p.lag = k1 - k;
                 p.n_phase = nfft; /* PSD points: the segment length */
                 p.edf = welch_band_edf(nfft, K, k1 - k);
+                p.w = (double)K;
+                p.nblk = 1;
                 if (sg_plist_add(pl, &p) != 0) {
                     return -1;
                 }
@@ -287,12 +291,110 @@ long sg_acc_finish(sg_acc_t *a, int ch, sg_plist_t *pl, double *vals, size_t cap
             p.ch = ch;
             p.x = p.x_lo = p.x_hi = a->q;
             p.edf = -1.0; /* exactly N(0, 1) under the null */
+            p.w = 1.0;
+            p.nblk = 1;
             if (sg_plist_add(pl, &p) != 0) {
                 return -1;
             }
         }
     }
     return (long)cnt;
+}
+
+/* ------------------------------------------------------------ segments */
+
+int sg_segacc_init(sg_segacc_t *a, const sg_feat_cfg_t *cfg, const sg_segs_t *s, int g, double q)
+{
+    int b;
+    memset(a, 0, sizeof *a);
+    a->nb = s->nb[g];
+    for (b = 0; b < a->nb; b++) {
+        if (sg_acc_init(&a->b[b], cfg, s->n[g][b], q) != 0) {
+            sg_segacc_free(a);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+void sg_segacc_push(sg_segacc_t *a, int blk, double x)
+{
+    sg_acc_push(&a->b[blk], x);
+}
+
+void sg_segacc_free(sg_segacc_t *a)
+{
+    int b;
+    for (b = 0; b < SG_MAX_BLK; b++) {
+        sg_acc_free(&a->b[b]);
+    }
+}
+
+long sg_segacc_finish(sg_segacc_t *a, int ch, sg_plist_t *pl, double *vals, size_t cap)
+{
+    sg_plist_t p0, p1;
+    double *v1;
+    long n0, n1, j, m;
+    if (a->nb <= 1) {
+        return sg_acc_finish(&a->b[0], ch, pl, vals, cap);
+    }
+    /* the lattice sums of the blocks add up (the step across blocks is not a difference) */
+    a->b[0].lc += a->b[1].lc;
+    a->b[0].ls += a->b[1].ls;
+    a->b[0].lm += a->b[1].lm;
+    a->b[1].q = 0.0;
+    memset(&p0, 0, sizeof p0);
+    memset(&p1, 0, sizeof p1);
+    v1 = (double *)malloc((cap + 1) * sizeof *v1);
+    if (v1 == NULL) {
+        return -1;
+    }
+    n0 = sg_acc_finish(&a->b[0], ch, &p0, vals, cap);
+    n1 = sg_acc_finish(&a->b[1], ch, &p1, v1, cap);
+    if (n0 < 0 || n1 < 0) {
+        free(v1);
+        sg_plist_free(&p0);
+        sg_plist_free(&p1);
+        return -1;
+    }
+    /* pool point by point (the blocks are of equal length up to a sample,
+     * so their grids agree; a point only one block has is dropped) */
+    m = 0;
+    for (j = 0; j < n0; j++) {
+        sg_point_t q = p0.p[j];
+        long k;
+        for (k = 0; k < n1; k++) {
+            if (p1.p[k].dom == q.dom && p1.p[k].m == q.m && p1.p[k].lag == q.lag) {
+                break;
+            }
+        }
+        if (q.dom == SG_LATTICE) {
+            k = -2; /* already pooled */
+        } else if (k >= n1) {
+            continue;
+        }
+        if (k >= 0) {
+            double w0 = q.w, w1 = p1.p[k].w, a0 = exp(vals[j]), a1 = exp(v1[k]);
+            double pooled = (w0 * a0 + w1 * a1) / (w0 + w1 > 0.0 ? w0 + w1 : 1.0);
+            vals[m] = pooled > 0.0 ? log(pooled) : -700.0;
+            if (q.dom == SG_PSD) {
+                q.edf = welch_band_edf(q.n_phase, (unsigned)(w0 + w1), q.lag);
+            }
+            q.w = w0 + w1;
+            q.nblk = 2;
+        } else {
+            vals[m] = vals[j];
+        }
+        if (pl != NULL && sg_plist_add(pl, &q) != 0) {
+            m = -1;
+            break;
+        }
+        m++;
+    }
+    free(v1);
+    sg_plist_free(&p0);
+    sg_plist_free(&p1);
+    return m;
 }
 
 /* ------------------------------------------------------------ lattice */
@@ -419,7 +521,7 @@ static void theory_var(const sg_plist_t *pl, const double *mean, double *vt)
                 type = FNAV_ALLAN_NOISE_RRW;
             }
             nu = fnav_allan_edf(fnav_allan_noise_alpha(type), p->lag, p->n_phase, 1);
-            vt[j] = logchi2_var(nu);
+            vt[j] = logchi2_var(nu * (double)(p->nblk > 1 ? p->nblk : 1));
         } else if (p->edf < 0.0) {
             vt[j] = 1.0;
         } else if (p->edf > 0.0) {
@@ -428,24 +530,78 @@ static void theory_var(const sg_plist_t *pl, const double *mean, double *vt)
     }
 }
 
+/* Solve the k x k symmetric positive definite system A x = b in place
+ * (Cholesky); -1 when not positive definite. */
+static int chol_solve(int k, double *A, double *b)
+{
+    int i, j, m;
+    for (j = 0; j < k; j++) {
+        double d = A[j * k + j];
+        for (m = 0; m < j; m++) {
+            d -= A[j * k + m] * A[j * k + m];
+        }
+        if (!(d > 0.0)) {
+            return -1;
+        }
+        A[j * k + j] = sqrt(d);
+        for (i = j + 1; i < k; i++) {
+            double v = A[i * k + j];
+            for (m = 0; m < j; m++) {
+                v -= A[i * k + m] * A[j * k + m];
+            }
+            A[i * k + j] = v / A[j * k + j];
+        }
+    }
+    for (i = 0; i < k; i++) {
+        double v = b[i];
+        for (m = 0; m < i; m++) {
+            v -= A[i * k + m] * b[m];
+        }
+        b[i] = v / A[i * k + i];
+    }
+    for (i = k - 1; i >= 0; i--) {
+        double v = b[i];
+        for (m = i + 1; m < k; m++) {
+            v -= A[m * k + i] * b[m];
+        }
+        b[i] = v / A[i * k + i];
+    }
+    return 0;
+}
+
 /* z of every point of `real` against the twin rows `rows` (nr of them),
- * and the aggregate. */
+ * and the aggregate. The fitted model's parameter uncertainty is a
+ * low-rank covariance U U^T, U = the S refit shifts / sqrt(S - 1): the
+ * deviation d is first explained as far as that uncertainty allows,
+ * a = argmin sum_j (d_j - (U a)_j)^2 / D_j + |a|^2 (D the noise variance),
+ * and the z-scores are the residuals r_j / sqrt(D_j): the Mahalanobis form
+ * d^T (D + U U^T)^-1 d = |r|^2_D + |a|^2 (Woodbury). Without shifts the
+ * diagonal vx is added to D instead. */
 static double zscores(const sg_plist_t *pl, const double *real, const double *twin, const int *rows, int nr,
-                      const double *vx, double *z, double *mean_out, double *sd_out, double *sdt_out,
-                      double *G_dom, double *maxz, int *imax)
+                      const double *vx, const double *shift, int S, double *z, double *mean_out, double *sd_out,
+                      double *sdt_out, double *G_dom, double *maxz, int *imax)
 {
     size_t j, n = pl->n;
     double gsum[SG_NDOM], G = 0.0;
     long gcnt[SG_NDOM];
-    int d, nd = 0, r;
-    double *vt = NULL, *mean = NULL;
+    int d, nd = 0, r, k = (shift != NULL && S >= 2) ? S : 0, a, b;
+    double pen = 0.0;
+    double *vt = NULL, *mean = NULL, *D = NULL, *dev = NULL, *M = NULL, *rhs = NULL;
     memset(gsum, 0, sizeof gsum);
     memset(gcnt, 0, sizeof gcnt);
     mean = (double *)malloc((n + 1) * sizeof *mean);
     vt = (double *)malloc((n + 1) * sizeof *vt);
-    if (mean == NULL || vt == NULL) {
+    D = (double *)malloc((n + 1) * sizeof *D);
+    dev = (double *)malloc((n + 1) * sizeof *dev);
+    M = (double *)malloc(((size_t)k * (size_t)k + 1) * sizeof *M);
+    rhs = (double *)malloc(((size_t)k + 1) * sizeof *rhs);
+    if (mean == NULL || vt == NULL || D == NULL || dev == NULL || M == NULL || rhs == NULL) {
         free(mean);
         free(vt);
+        free(D);
+        free(dev);
+        free(M);
+        free(rhs);
         return (double)NAN;
     }
     for (j = 0; j < n; j++) {
@@ -456,12 +612,8 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
         mean[j] = s / (double)nr;
     }
     theory_var(pl, mean, vt);
-    if (maxz != NULL) {
-        *maxz = 0.0;
-        *imax = -1;
-    }
     for (j = 0; j < n; j++) {
-        double v = 0.0, var, zz, dd;
+        double v = 0.0, var, dd;
         for (r = 0; r < nr; r++) {
             dd = twin[(size_t)rows[r] * n + j] - mean[j];
             v += dd * dd;
@@ -472,20 +624,58 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
         } else {
             var = v * (1.0 + 1.0 / (double)nr);
         }
-        if (vx != NULL && vx[j] > 0.0) {
-            var += vx[j]; /* the fitted parameters' own uncertainty */
+        if (k == 0 && vx != NULL && vx[j] > 0.0) {
+            var += vx[j]; /* the fitted parameters' own uncertainty, diagonal */
         }
         if (!(var > 1e-24)) {
             var = 1e-24;
         }
-        zz = (real[j] - mean[j]) / sqrt(var);
-        if (z != NULL) {
-            z[j] = zz;
-        }
+        D[j] = var;
+        dev[j] = real[j] - mean[j];
         if (mean_out != NULL) {
             mean_out[j] = mean[j];
             sd_out[j] = sqrt(v);
             sdt_out[j] = sqrt(var);
+        }
+    }
+    if (k > 0) {
+        /* (U^T D^-1 U + I) a = U^T D^-1 d */
+        const double su = 1.0 / sqrt((double)(S - 1));
+        for (a = 0; a < k; a++) {
+            double sb = 0.0;
+            for (j = 0; j < n; j++) {
+                sb += shift[(size_t)a * n + j] * su * dev[j] / D[j];
+            }
+            rhs[a] = sb;
+            for (b = 0; b <= a; b++) {
+                double sm = 0.0;
+                for (j = 0; j < n; j++) {
+                    sm += shift[(size_t)a * n + j] * shift[(size_t)b * n + j] * su * su / D[j];
+                }
+                M[a * k + b] = M[b * k + a] = sm + (a == b ? 1.0 : 0.0);
+            }
+        }
+        if (chol_solve(k, M, rhs) == 0) {
+            for (a = 0; a < k; a++) {
+                pen += rhs[a] * rhs[a];
+            }
+            for (j = 0; j < n; j++) {
+                double u = 0.0;
+                for (a = 0; a < k; a++) {
+                    u += shift[(size_t)a * n + j] * su * rhs[a];
+                }
+                dev[j] -= u;
+            }
+        }
+    }
+    if (maxz != NULL) {
+        *maxz = 0.0;
+        *imax = -1;
+    }
+    for (j = 0; j < n; j++) {
+        double zz = dev[j] / sqrt(D[j]);
+        if (z != NULL) {
+            z[j] = zz;
         }
         d = pl->p[j].dom;
         gsum[d] += zz * zz < SG_ZCAP * SG_ZCAP ? zz * zz : SG_ZCAP * SG_ZCAP;
@@ -506,7 +696,12 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
     }
     free(mean);
     free(vt);
-    return nd > 0 ? G / (double)nd : 0.0;
+    free(D);
+    free(dev);
+    free(M);
+    free(rhs);
+    /* |a|^2: how far the parameters had to move, on the scale of one point */
+    return nd > 0 ? G / (double)nd + pen / (double)(n > 0 ? n : 1) : 0.0;
 }
 
 /* Variance of G = sum_j w_j z_j^2 (w_j = 1 / (domains x points of its
@@ -592,7 +787,7 @@ int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int
     for (s = 0; s < S; s++) {
         rows[s] = s;
     }
-    out->G = zscores(pl, real, twin, rows, S, vx, out->z, out->twin_mean, out->twin_sd, out->sd_tot, out->G_dom,
+    out->G = zscores(pl, real, twin, rows, S, vx, shift, S, out->z, out->twin_mean, out->twin_sd, out->sd_tot, out->G_dom,
                      &out->maxz, &out->imax);
     /* null: each twin in turn as the real, the others as twins; the twin
      * taken as real carries the error of a model refitted to it (shift), as
@@ -607,7 +802,7 @@ int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int
         for (j = 0; j < n; j++) {
             pseudo[j] = twin[(size_t)s * n + j] - (shift != NULL ? shift[(size_t)s * n + j] : 0.0);
         }
-        out->G_null[s] = zscores(pl, pseudo, twin, rows, m, vx, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
+        out->G_null[s] = zscores(pl, pseudo, twin, rows, m, vx, shift, S, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
         sum += out->G_null[s];
         sum2 += out->G_null[s] * out->G_null[s];
     }
@@ -656,8 +851,7 @@ int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int
 }
 
 double sg_gap_resampled(const sg_plist_t *pl, const double *real, const double *twin, int S, const int *idx, int S2,
-                        const double *vx)
+                        const double *vx, const double *shift)
 {
-    (void)S;
-    return zscores(pl, real, twin, idx, S2, vx, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
+    return zscores(pl, real, twin, idx, S2, vx, shift, S, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
 }

@@ -7,29 +7,75 @@
 #include <stdlib.h>
 #include <string.h>
 
-void sg_segs_split(long n, double frac, sg_segs_t *s)
+void sg_segs_split(long n, double frac, int sandwich, sg_segs_t *s)
 {
     long nf = (long)floor((double)n * frac);
-    if (nf < 1) {
-        nf = 1;
+    memset(s, 0, sizeof *s);
+    if (nf < 2) {
+        nf = 2;
     }
     if (nf > n - 1) {
         nf = n - 1;
     }
-    s->start[SG_FULL] = 0;
-    s->n[SG_FULL] = n;
-    s->start[SG_FIT] = 0;
-    s->n[SG_FIT] = nf;
-    s->start[SG_HOLD] = nf;
-    s->n[SG_HOLD] = n - nf;
+    s->sandwich = sandwich;
+    s->nb[SG_FULL] = 1;
+    s->start[SG_FULL][0] = 0;
+    s->n[SG_FULL][0] = n;
+    if (sandwich) {
+        long a = nf / 2, b = n - (nf - a);
+        s->nb[SG_FIT] = 2;
+        s->start[SG_FIT][0] = 0;
+        s->n[SG_FIT][0] = a;
+        s->start[SG_FIT][1] = b;
+        s->n[SG_FIT][1] = n - b;
+        s->nb[SG_HOLD] = 1;
+        s->start[SG_HOLD][0] = a;
+        s->n[SG_HOLD][0] = b - a;
+    } else {
+        s->nb[SG_FIT] = 1;
+        s->start[SG_FIT][0] = 0;
+        s->n[SG_FIT][0] = nf;
+        s->nb[SG_HOLD] = 1;
+        s->start[SG_HOLD][0] = nf;
+        s->n[SG_HOLD][0] = n - nf;
+    }
+    {
+        int g, b;
+        for (g = 0; g < SG_NSEG; g++) {
+            for (b = 0; b < s->nb[g]; b++) {
+                s->total[g] += s->n[g][b];
+            }
+        }
+    }
+}
+
+int sg_segs_block(const sg_segs_t *s, int g, long k)
+{
+    int b;
+    for (b = 0; b < s->nb[g]; b++) {
+        if (k >= s->start[g][b] && k < s->start[g][b] + s->n[g][b]) {
+            return b;
+        }
+    }
+    return -1;
+}
+
+long sg_segs_minblock(const sg_segs_t *s, int g)
+{
+    long m = s->n[g][0];
+    int b;
+    for (b = 1; b < s->nb[g]; b++) {
+        m = s->n[g][b] < m ? s->n[g][b] : m;
+    }
+    return m;
 }
 
 int sg_twin_static(const sg_chmodel_t *m, int ch, const sg_feat_cfg_t *fc, const sg_segs_t *segs, double q, int S,
                    uint32_t seed0, const sg_plist_t pl[SG_NSEG], double *vals[SG_NSEG])
 {
     int runs = (S + FNAV_IMUERR_NCH - 1) / FNAV_IMUERR_NCH, r, j, g, rc = 0;
-    const long N = segs->n[SG_FULL], nf = segs->n[SG_FIT];
-    sg_acc_t *acc = (sg_acc_t *)calloc((size_t)SG_NSEG * FNAV_IMUERR_NCH, sizeof *acc);
+    const long N = segs->n[SG_FULL][0];
+    sg_segacc_t *acc = (sg_segacc_t *)calloc((size_t)SG_NSEG * FNAV_IMUERR_NCH, sizeof *acc);
     double *tmp = NULL;
     size_t cap = 0;
     if (acc == NULL) {
@@ -38,7 +84,7 @@ int sg_twin_static(const sg_chmodel_t *m, int ch, const sg_feat_cfg_t *fc, const
     for (g = 0; g < SG_NSEG; g++) {
         cap = pl[g].n > cap ? pl[g].n : cap;
     }
-    tmp = (double *)malloc((cap + 1) * sizeof *tmp);
+    tmp = (double *)malloc((cap + 16) * sizeof *tmp);
     if (tmp == NULL) {
         free(acc);
         return -1;
@@ -47,23 +93,20 @@ int sg_twin_static(const sg_chmodel_t *m, int ch, const sg_feat_cfg_t *fc, const
         fnav_imuerr_config_t cfg;
         fnav_imuerr_t e;
         long k;
-        double prev[FNAV_IMUERR_NCH], bc[FNAV_IMUERR_NCH], bs[FNAV_IMUERR_NCH];
+        int blk[SG_NSEG];
         if (sg_model_imuerr(m, fc->rate_hz, seed0 + (uint32_t)r, &cfg) != 0 || fnav_imuerr_init(&e, &cfg) != FNAV_OK) {
             rc = -1;
             break;
         }
         for (g = 0; g < SG_NSEG && rc == 0; g++) {
             for (j = 0; j < FNAV_IMUERR_NCH; j++) {
-                if (sg_acc_init(&acc[g * FNAV_IMUERR_NCH + j], fc, segs->n[g], q) != 0) {
+                if (sg_segacc_init(&acc[g * FNAV_IMUERR_NCH + j], fc, segs, g, q) != 0) {
                     rc = -1;
                 }
-                /* the whole log's lattice sums are those of the parts */
-                acc[g * FNAV_IMUERR_NCH + j].lat_external = (g == SG_FULL);
             }
         }
         for (k = 0; k < N && rc == 0; k++) {
             fnav_sample_t s;
-            int seg = k < nf ? SG_FIT : SG_HOLD;
             memset(&s, 0, sizeof s);
             for (j = 0; j < 3; j++) {
                 s.accel_mps2[j] = (fnav_real_t)m->mean;
@@ -73,30 +116,22 @@ int sg_twin_static(const sg_chmodel_t *m, int ch, const sg_feat_cfg_t *fc, const
                 rc = -1;
                 break;
             }
+            for (g = 0; g < SG_NSEG; g++) {
+                blk[g] = sg_segs_block(segs, g, k);
+            }
             for (j = 0; j < FNAV_IMUERR_NCH; j++) {
                 double x = (double)(j < 3 ? s.accel_mps2[j] : s.gyro_rps[j - 3]);
-                sg_acc_push(&acc[SG_FULL * FNAV_IMUERR_NCH + j], x);
-                sg_acc_push(&acc[seg * FNAV_IMUERR_NCH + j], x);
-                if (k == nf && q > 0.0) {
-                    /* the difference across the boundary */
-                    double ph = 2.0 * M_PI * (x - prev[j]) / q;
-                    bc[j] = cos(ph);
-                    bs[j] = sin(ph);
+                for (g = 0; g < SG_NSEG; g++) {
+                    if (blk[g] >= 0) {
+                        sg_segacc_push(&acc[g * FNAV_IMUERR_NCH + j], blk[g], x);
+                    }
                 }
-                prev[j] = x;
             }
         }
         for (j = 0; j < FNAV_IMUERR_NCH && rc == 0; j++) {
             int sidx = r * FNAV_IMUERR_NCH + j;
-            sg_acc_t *full = &acc[SG_FULL * FNAV_IMUERR_NCH + j];
-            const sg_acc_t *fit = &acc[SG_FIT * FNAV_IMUERR_NCH + j], *hold = &acc[SG_HOLD * FNAV_IMUERR_NCH + j];
-            if (q > 0.0) {
-                full->lc = fit->lc + hold->lc + bc[j];
-                full->ls = fit->ls + hold->ls + bs[j];
-                full->lm = fit->lm + hold->lm + 1;
-            }
             for (g = 0; g < SG_NSEG; g++) {
-                long cnt = sg_acc_finish(&acc[g * FNAV_IMUERR_NCH + j], ch, NULL, tmp, cap + 1);
+                long cnt = sg_segacc_finish(&acc[g * FNAV_IMUERR_NCH + j], ch, NULL, tmp, cap + 16);
                 if (cnt != (long)pl[g].n) {
                     rc = -1;
                     break;
@@ -107,7 +142,7 @@ int sg_twin_static(const sg_chmodel_t *m, int ch, const sg_feat_cfg_t *fc, const
             }
         }
         for (g = 0; g < SG_NSEG * FNAV_IMUERR_NCH; g++) {
-            sg_acc_free(&acc[g]);
+            sg_segacc_free(&acc[g]);
         }
     }
     free(tmp);

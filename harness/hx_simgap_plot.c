@@ -1,0 +1,139 @@
+/* Sim-to-real gap diagnosis: plots (gnuplot pngcairo through hx_plot_*):
+ * allan.png (real vs the baseline twin and the final model's twin, whole
+ * log, with the twins' spread), psd.png (the same for the Welch bands),
+ * z.png (z per point with the critical values), and the walk domain's
+ * innovations plot (hx_simgap_nav.c). */
+#include "hx_simgap.h"
+#include "hx_simgap_nav.h"
+
+#include <errno.h>
+#include <math.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "hx_cli.h"
+
+/* Data block of one channel and domain: x, real, twin mean, twin sd, final
+ * twin mean (value transformed: deviation for Allan, PSD as is). */
+static void block(FILE *gp, const char *name, const sg_result_t *r, int ch, int dom)
+{
+    const sg_plist_t *pl = &r->pl[ch][SG_FULL];
+    const double *real = r->real[ch][SG_FULL], *tw = r->twin[ch][SG_FULL];
+    const double *tf = r->twin_final[ch][SG_FULL] != NULL ? r->twin_final[ch][SG_FULL] : tw;
+    const int S = r->S;
+    size_t j, n = pl->n;
+    fprintf(gp, "$%s << EOD\n", name);
+    for (j = 0; j < n; j++) {
+        double m = 0.0, v = 0.0, mf = 0.0, f = dom == SG_ALLAN ? 0.5 : 1.0;
+        int s;
+        if (pl->p[j].dom != dom) {
+            continue;
+        }
+        for (s = 0; s < S; s++) {
+            m += tw[(size_t)s * n + j];
+            mf += tf[(size_t)s * n + j];
+        }
+        m /= S;
+        mf /= S;
+        for (s = 0; s < S; s++) {
+            v += (tw[(size_t)s * n + j] - m) * (tw[(size_t)s * n + j] - m);
+        }
+        v = sqrt(v / (S - 1));
+        /* values are ln AVAR / ln PSD: ADEV = exp(ln AVAR / 2) */
+        fprintf(gp, "%.6g %.6g %.6g %.6g %.6g %.6g\n", pl->p[j].x, exp(f * real[j]), exp(f * m), exp(f * (m - v)),
+                exp(f * (m + v)), exp(f * mf));
+    }
+    fprintf(gp, "EOD\n");
+}
+
+static int plot_domain(const sg_result_t *r, const char *dir, const char *cmd, int dom)
+{
+    hx_plot_t p;
+    char path[600];
+    int ch;
+    snprintf(path, sizeof path, "%s/%s.png", dir, dom == SG_ALLAN ? "allan" : "psd");
+    if (hx_plot_open(&p, cmd, path, 1200, 800) != 0) {
+        return -1;
+    }
+    fprintf(p.gp, "set multiplot layout 2,3 title '%s: real (points) vs baseline twin (line, +-1 sd band) and the "
+                  "final model (dashed), whole log'\n",
+            dom == SG_ALLAN ? "Allan deviation" : "Welch PSD (band means)");
+    fprintf(p.gp, "set logscale xy\nset format y '%%.0e'\nset key bottom left\n");
+    fprintf(p.gp, "set xlabel '%s'\n", dom == SG_ALLAN ? "tau [s]" : "frequency [Hz]");
+    for (ch = 0; ch < SG_NCH; ch++) {
+        char nm[16];
+        snprintf(nm, sizeof nm, "d%d", ch);
+        if (!r->ch[ch].active) {
+            fprintf(p.gp, "set title '%s: not analysed'\nplot 1/0 notitle\n", sg_channel_name(ch));
+            continue;
+        }
+        block(p.gp, nm, r, ch, dom);
+        fprintf(p.gp, "set title '%s'\nset ylabel '%s'\n", sg_channel_name(ch),
+                dom == SG_ALLAN ? (ch < 3 ? "ADEV [m/s^2]" : "ADEV [rad/s]")
+                                : (ch < 3 ? "PSD [(m/s^2)^2/Hz]" : "PSD [(rad/s)^2/Hz]"));
+        fprintf(p.gp, "plot $%s using 1:4:5 with filledcurves fs transparent solid 0.25 lc rgb '#4060c0' title "
+                      "'twin +-1 sd', $%s using 1:3 with lines lw 1.5 lc rgb '#4060c0' title 'baseline twin', "
+                      "$%s using 1:6 with lines lw 1.5 dt 2 lc rgb '#20a040' title 'final model', $%s using 1:2 with "
+                      "points pt 7 ps 0.6 lc rgb '#c02020' title 'real'\n",
+                nm, nm, nm, nm);
+    }
+    fprintf(p.gp, "unset multiplot\n");
+    return hx_plot_close(&p, cmd);
+}
+
+static int plot_z(const sg_result_t *r, const char *dir, const char *cmd)
+{
+    hx_plot_t p;
+    char path[600];
+    int ch, dom;
+    snprintf(path, sizeof path, "%s/z.png", dir);
+    if (hx_plot_open(&p, cmd, path, 1200, 700) != 0) {
+        return -1;
+    }
+    fprintf(p.gp, "set multiplot layout 2,1 title 'z of the real against the baseline twin, whole log (lines: the "
+                  "critical |z|)'\nset logscale x\nset key outside right\n");
+    for (dom = SG_ALLAN; dom <= SG_PSD; dom++) {
+        double zc = 0.0;
+        fprintf(p.gp, "set xlabel '%s'\nset ylabel 'z'\nset title '%s'\n", dom == SG_ALLAN ? "tau [s]" : "frequency [Hz]",
+                dom == SG_ALLAN ? "Allan" : "PSD bands");
+        for (ch = 0; ch < SG_NCH; ch++) {
+            const sg_plist_t *pl = &r->pl[ch][SG_FULL];
+            const sg_cmp_t *c = &r->ch[ch].cmp[SG_FULL];
+            size_t j;
+            fprintf(p.gp, "$z%d << EOD\n", ch);
+            for (j = 0; r->ch[ch].active && c->z != NULL && j < pl->n; j++) {
+                if (pl->p[j].dom == dom) {
+                    double zz = c->z[j] > SG_ZCAP ? SG_ZCAP : (c->z[j] < -SG_ZCAP ? -SG_ZCAP : c->z[j]);
+                    fprintf(p.gp, "%.6g %.4g\n", pl->p[j].x, zz);
+                }
+            }
+            fprintf(p.gp, "EOD\n");
+            if (r->ch[ch].active && c->z_crit > zc) {
+                zc = c->z_crit;
+            }
+        }
+        fprintf(p.gp, "plot ");
+        for (ch = 0; ch < SG_NCH; ch++) {
+            fprintf(p.gp, "$z%d using 1:2 with linespoints pt 7 ps 0.5 title '%s', ", ch, sg_channel_name(ch));
+        }
+        fprintf(p.gp, "%.3f with lines dt 2 lc rgb 'black' notitle, %.3f with lines dt 2 lc rgb 'black' notitle\n", zc,
+                -zc);
+    }
+    fprintf(p.gp, "unset multiplot\n");
+    return hx_plot_close(&p, cmd);
+}
+
+int sg_write_plots(const sg_result_t *r, const char *dir, const char *cmd)
+{
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
+        hx_error(cmd, "cannot create %s: %s", dir, strerror(errno));
+        return -1;
+    }
+    if (r->domain == 2) {
+        return r->nav != NULL ? sg_nav_plot((const sg_nav_t *)r->nav, r, dir, cmd) : -1;
+    }
+    if (plot_domain(r, dir, cmd, SG_ALLAN) != 0 || plot_domain(r, dir, cmd, SG_PSD) != 0 || plot_z(r, dir, cmd) != 0) {
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,105 @@
+/**
+ * @file hx_simgap_valid.h
+ * @brief Validation of the sim-to-real gap diagnosis on cases whose effect
+ *        is withheld (docs/simgap.md, docs/simgap-validation.md): each case
+ *        is a log simulated with one effect of the catalogue drawn at random
+ *        (or none: a control) at a magnitude drawn from the range the
+ *        catalogue documents as detectable; the diagnosis sees only the log;
+ *        the answer is scored afterwards.
+ */
+#ifndef HX_SIMGAP_VALID_H
+#define HX_SIMGAP_VALID_H
+
+#include <stdio.h>
+
+#include "footnav/fnav_profile.h"
+#include "hx_simgap.h"
+
+/** Effect classes of the validation. */
+enum { SGV_STATIC = 0, SGV_TIMING, SGV_MOTION, SGV_NCLASS };
+
+/** One effect the validation draws. */
+typedef struct {
+    const char *name;   /**< catalogue name; "quant_shaped" is quant with shaped = 1 */
+    int id;             /**< fnav_effect_id_t */
+    int cls;            /**< SGV_* */
+    int magp;           /**< index of the magnitude parameter */
+} sgv_effect_t;
+
+/** The table of validated effects; *n receives its length. */
+const sgv_effect_t *sgv_effects(int *n);
+
+/**
+ * Smallest detectable magnitude of an effect on one channel by the
+ * catalogue's rule (docs/simulator.md, vectors/sim/gen_detectable.py): a
+ * static log of `duration_s` at `rate_hz` whose baseline is white noise
+ * (density N) + AR(1) (sigma, tau_s); detectable when the effect's Allan
+ * variance exceeds the baseline's by more than 5 standard deviations of the
+ * overlapping estimate (white-FM EDF, NIST SP 1065) at some octave tau with
+ * at least 10 averages in the log (at least 20 for the octave's pairs).
+ * @param e  the effect with every non-magnitude parameter set (frequency,
+ *           band, warm-up, step rate); its magnitude is ignored
+ * @return the magnitude, or NAN when the effect has no Allan signature.
+ */
+double sgv_detect_threshold(const sg_effect_t *e, int magp, double N, double sigma, double tau_s, double rate_hz,
+                            double duration_s);
+
+/** Simulate a log in memory through the simulator's chain (hx_sim_run):
+ *  motion script, sensor configuration; point = 1 samples the truth at the
+ *  output instants (static logs). 0, -1 with err filled. */
+int sgv_simulate(const char *script, const fnav_imuerr_config_t *cfg, int point, hx_log_t *log, char *err,
+                 size_t err_size);
+
+/** Options of a validation run. */
+typedef struct {
+    int cases;
+    uint32_t seed;
+    double duration_s;      /**< static cases (default 3600 s: the catalogue's reference) */
+    double rate_hz;         /**< static cases (default 200 Hz) */
+    double walk_duration_s; /**< walk cases (default 60 s) */
+    double walk_rate_hz;    /**< walk cases (default 200 Hz) */
+    int walks;              /**< 1: include motion-domain cases */
+    int statics;            /**< 1: include static-domain cases */
+    int seeds;              /**< twins per model in the diagnosis */
+    double mag_lo, mag_hi;  /**< magnitude multiplier range over the threshold (1, 10) */
+    int quiet;
+    int verbose;            /**< print the diagnosis of every case */
+    int only;               /**< run only this case index (-1: all) */
+    const char *effects;    /**< comma-separated effect names to draw (NULL: all), "control" for controls */
+} sgv_opts_t;
+
+sgv_opts_t sgv_opts_default(void);
+
+/** One scored case. */
+typedef struct {
+    int truth;              /**< index into sgv_effects(), -1 control */
+    int cls;                /**< class of the truth (controls: the domain's) */
+    int walk;               /**< walk case */
+    int profile;            /**< fnav_profile_id_t */
+    uint32_t mask;          /**< channels of the effect */
+    double mult;            /**< magnitude / threshold */
+    double value[SG_NCH];   /**< true magnitude per channel */
+    int pred;               /**< top-ranked effect, index into sgv_effects(); -1 none; -2 other */
+    int detected;           /**< verdict is not "none" */
+    uint32_t flagged;       /**< channels with a significant gap */
+    int timing_flagged;
+    double jaccard;         /**< |flagged & mask| / |flagged | mask| (timing: 1 when flagged) */
+    double perr;            /**< median relative error of the magnitude over the channels (NaN) */
+    double shrink;          /**< median held-out excess explained by the right effect (NaN) */
+    char verdict[32];
+    double elapsed_s;
+    double n_events[SG_NSEG]; /**< jumps: steps in the fit and held-out parts */
+} sgv_case_t;
+
+/** Run the validation; prints progress lines to `f` (NULL: silent). 0, -1
+ *  with err filled. cases receives o->cases entries (caller allocated). */
+int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t err_size);
+
+/** The summary: confusion matrix, rates, errors, targets (text, or
+ *  Markdown when md != 0). */
+void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, int md, double elapsed_s);
+
+/** JSON of the run. 0, -1 on failure. */
+int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *cases, int n, double elapsed_s);
+
+#endif /* HX_SIMGAP_VALID_H */
