@@ -39,7 +39,8 @@
 #define SG_MAX_PAR 4        /**< parameters of one effect */
 #define SG_MAX_STEPS 3      /**< forward-selection steps */
 #define SG_ZCAP 40.0        /**< |z| counted at most this in aggregates */
-#define SG_ID_FRAC 0.1      /**< identification (fits) uses tau up to this fraction of a segment */
+#define SG_LAT_MAX 65536L   /**< differences used by the lattice statistic of a segment */
+#define SG_ID_FRAC 0.1      /**< the baseline's AR(1) bump must lie within this fraction of a block */
 #define SG_TEST_FRAC 0.25   /**< the gap tests use tau up to this fraction (the twins give the statistics) */
 
 /** Domains of the gap. */
@@ -310,7 +311,9 @@ typedef struct {
 } sg_table_t;
 
 /** Allan table of the Allan points of channel ch in a point list / values,
- *  tau up to SG_ID_FRAC of the shortest block of segment g. */
+ *  every tau of the tests (SG_TEST_FRAC of the shortest block of segment g:
+ *  the long-tau points weigh little, by their EDF, but carry the slow
+ *  effects' signatures; the AR(1) time bound still follows SG_ID_FRAC). */
 void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate_hz, const sg_segs_t *segs, int g,
                    sg_table_t *t);
 

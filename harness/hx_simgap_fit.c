@@ -237,7 +237,7 @@ void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate
     size_t j, k = 0;
     size_t idx[FNAV_ALLAN_MAX_POINTS];
     int b;
-    const double lim = SG_ID_FRAC * (double)sg_segs_minblock(segs, g) / rate_hz * (1.0 + 1e-9);
+    const double lim = SG_TEST_FRAC * (double)sg_segs_minblock(segs, g) / rate_hz * (1.0 + 1e-9);
     memset(t, 0, sizeof *t);
     t->rate_hz = rate_hz;
     t->nb = segs->nb[g];

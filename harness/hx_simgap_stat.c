@@ -143,7 +143,9 @@ void sg_acc_push(sg_acc_t *a, double x)
         st = fnav_welch_push(a->welch, (fnav_real_t)x);
         (void)st;
     }
-    if (a->q > 0.0 && !a->lat_external) {
+    /* the lattice statistic from at most SG_LAT_MAX differences: its z
+     * is then up to about 360, far beyond SG_ZCAP, at a fraction of the cost */
+    if (a->q > 0.0 && !a->lat_external && a->lm < SG_LAT_MAX) {
         if (a->have_prev) {
             double ph = 2.0 * M_PI * (x - a->prev) / a->q;
             a->lc += cos(ph);
