@@ -85,6 +85,9 @@ static const param_t k_params[] = {
     { "closed_form", P_INT, 1.0, "UKF closed-form linear sigma points 0/1" },
     { "align_min_s", P_REAL, 1.0, "shortest still period for the alignment, s" },
     { "align_max_s", P_REAL, 1.0, "alignment ends after this much stillness, s" },
+    { "align_short_s", P_REAL, 1.0, "alignment: shortest still period used when the walk starts early, s" },
+    { "align_ratio", P_REAL, 1.0, "alignment: statistic limit over its running geometric mean" },
+    { "gyro_bias_prior_dps", P_REAL, 3.14159265358979323846 / 180.0, "alignment: prior sd of the gyro turn-on bias, deg/s (0: plain mean)" },
     { NULL, P_REAL, 0.0, NULL }
 };
 
@@ -120,6 +123,9 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     if (strcmp(key, "closed_form") == 0) return &c->closed_form;
     if (strcmp(key, "align_min_s") == 0) return &c->align.min_still_s;
     if (strcmp(key, "align_max_s") == 0) return &c->align.max_still_s;
+    if (strcmp(key, "align_short_s") == 0) return &c->align.short_still_s;
+    if (strcmp(key, "align_ratio") == 0) return &c->align.still_ratio;
+    if (strcmp(key, "gyro_bias_prior_dps") == 0) return &c->align.gyro_bias_prior_sd_rps;
     return NULL;
 }
 

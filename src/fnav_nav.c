@@ -18,7 +18,7 @@ const fnav_nav_config_t fnav_nav_config_default = {
     { FNAV_DETECTOR_SHOE, FNAV_R(0.0), FNAV_R(0.025), FNAV_R(0.01), FNAV_R(0.1) * D2R, FNAV_R(1.0e5),
       FNAV_R(0.6), FNAV_R(0.6), FNAV_R(9.80665), 1, FNAV_R(0.25), FNAV_R(0.4), FNAV_R(10.0), FNAV_R(0.02), FNAV_R(0.05),
       FNAV_R(0.2), FNAV_R(0.3) },
-    { FNAV_R(0.5), FNAV_R(5.0), FNAV_R(9.80665), FNAV_R(10.0) },
+    { FNAV_R(0.5), FNAV_R(5.0), FNAV_R(9.80665), FNAV_R(10.0), FNAV_R(0.2), FNAV_R(0.5) * D2R },
     FNAV_R(9.80665),    /* gravity_mps2 */
     FNAV_R(0.02),       /* accel_motion_noise_mps2_rthz */
     FNAV_R(0.02) * D2R, /* gyro_motion_noise_rps_rthz */
@@ -147,11 +147,10 @@ static void start_filter(fnav_nav_t *nav)
     const fnav_nav_config_t *c = &nav->cfg;
     fnav_ukf_init_sd_t sd;
     fnav_status_t st;
-    fnav_real_t n = (fnav_real_t)(r->samples > 1 ? r->samples : 1);
     int i;
     for (i = 0; i < 3; i++) {
         /* gyro bias: standard error of the alignment mean, with a floor */
-        sd.gyro_bias_rps[i] = rss(r->gyro_sd_rps.v[i] / fnav_sqrt(n), c->gyro_bias_sd_rps);
+        sd.gyro_bias_rps[i] = rss(r->gyro_bias_sd_rps.v[i], c->gyro_bias_sd_rps);
         sd.accel_bias_mps2[i] = c->accel_bias_sd_mps2;
         sd.att_rad[i] = c->tilt_sd_rad;
     }
