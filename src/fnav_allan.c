@@ -315,6 +315,9 @@ fnav_status_t fnav_allan_push(fnav_allan_t *a, fnav_real_t y)
     if (!(fnav_fabs(y) <= FNAV_REAL_MAX)) {
         return FNAV_E_NANINF; /* NaN fails the comparison too */
     }
+    if (fnav_fabs(y) > (fnav_real_t)FNAV_INPUT_MAX_ABS) {
+        return FNAV_E_RANGE; /* its squares would overflow the sums */
+    }
     n = a->n;
     if (n == UINT32_MAX) {
         return FNAV_E_RANGE;

@@ -359,14 +359,14 @@ fnav_status_t fnav_nav_run(fnav_nav_t *nav, const fnav_port_t *port, long max_sa
         n++;
         st = fnav_nav_push(nav, &s); /* rejected samples are counted in nav->stats */
         (void)st;
-        while ((st = fnav_nav_pop(nav, &fr)) == FNAV_OK) {
+        while (fnav_nav_pop(nav, &fr) == FNAV_OK) {
             if (fnav_port_write_nav(port, &fr) != FNAV_OK) {
                 return FNAV_E_IO;
             }
         }
     }
     fnav_nav_finish(nav);
-    while ((st = fnav_nav_pop(nav, &fr)) == FNAV_OK) {
+    while (fnav_nav_pop(nav, &fr) == FNAV_OK) {
         if (fnav_port_write_nav(port, &fr) != FNAV_OK) {
             return FNAV_E_IO;
         }

@@ -119,7 +119,8 @@ static void estimate_rate(fnav_stance_t *st)
         }
     }
     if (n > 0) {
-        set_rate(st, FNAV_R(1.0e9) / (fnav_real_t)d[n / 2]);
+        int mid = n / 2; /* median interval */
+        set_rate(st, FNAV_R(1.0e9) / (fnav_real_t)d[mid]);
     } else {
         set_rate(st, FNAV_R(100.0)); /* no usable time stamps: documented fallback */
     }

@@ -108,7 +108,7 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
                  (i >= FNAV_UKF_BG && cfg->bias_model == FNAV_BIAS_AR1);
         f->pos[i] = -1;
         if (on) {
-            f->pos[i] = (signed char)f->n_act;
+            f->pos[i] = (int16_t)f->n_act;
             f->act[f->n_act++] = (unsigned char)i;
         }
     }

@@ -22,7 +22,7 @@ fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
         c->overlap >= c->nfft || (unsigned)c->window > (unsigned)FNAV_WINDOW_RECT ||
         (unsigned)c->detrend > (unsigned)FNAV_DETREND_GLOBAL ||
         (c->detrend == FNAV_DETREND_GLOBAL && c->symmetric) || (unsigned)c->scaling > (unsigned)FNAV_SCALING_SPECTRUM ||
-        !(c->rate_hz > FNAV_R(0.0)) || !fnav_isfinite(c->rate_hz) || !fnav_isfinite(c->offset)) {
+        !(c->rate_hz > FNAV_R(0.0)) || !fnav_isfinite(c->rate_hz) || !(fnav_fabs(c->offset) <= (fnav_real_t)FNAV_INPUT_MAX_ABS)) {
         return FNAV_E_CONFIG;
     }
     memset(w, 0, sizeof *w);
@@ -115,6 +115,9 @@ fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x)
     const uint32_t n = w->cfg.nfft;
     if (!fnav_isfinite(x)) {
         return FNAV_E_NANINF;
+    }
+    if (fnav_fabs(x) > (fnav_real_t)FNAV_INPUT_MAX_ABS) {
+        return FNAV_E_RANGE; /* its square would overflow the periodogram */
     }
     if (w->cfg.detrend == FNAV_DETREND_GLOBAL) {
         /* the first sample becomes a fixed shift (any constant cancels in

@@ -475,7 +475,13 @@ static void test_bad_samples_leave_state(void **state)
     copy = a;
     assert_int_equal(fnav_allan_push(&a, (fnav_real_t)NAN), FNAV_E_NANINF);
     assert_int_equal(fnav_allan_push(&a, (fnav_real_t)INFINITY), FNAV_E_NANINF);
+    /* finite but beyond FNAV_INPUT_MAX_ABS: its squares would overflow the
+     * float sums into Inf/NaN (found by fuzzing) */
+    assert_int_equal(fnav_allan_push(&a, FNAV_R(1.0e30)), FNAV_E_RANGE);
+    assert_int_equal(fnav_allan_push(&a, (fnav_real_t)(-2.0 * FNAV_INPUT_MAX_ABS)), FNAV_E_RANGE);
     assert_memory_equal(&a, &copy, sizeof a);
+    assert_int_equal(fnav_allan_push(&a, (fnav_real_t)FNAV_INPUT_MAX_ABS), FNAV_OK);
+    a = copy;
     a.n = UINT32_MAX;
     assert_int_equal(fnav_allan_push(&a, FNAV_R(1.0)), FNAV_E_RANGE);
     assert_int_equal(fnav_allan_get(&copy, 1000, &r), FNAV_E_ARG);

@@ -332,7 +332,11 @@ static void test_config_and_bad_input(void **state)
     }
     copy = w;
     assert_int_equal(fnav_welch_push(&w, (fnav_real_t)NAN), FNAV_E_NANINF);
+    assert_int_equal(fnav_welch_push(&w, FNAV_R(1.0e30)), FNAV_E_RANGE); /* found by fuzzing */
     assert_memory_equal(&w, &copy, sizeof w);
+    c = fnav_welch_config_default;
+    c.offset = FNAV_R(1.0e30);
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
 }
 
 /* The offset is removed before anything else: with no detrending, a

@@ -161,8 +161,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_allan_init(fnav_allan_t *a, const fnav_allan
  * Add one sample.
  * @param a  initialised estimator
  * @param y  the sample (any unit; rate, specific force, ...)
- * @return FNAV_OK; FNAV_E_NANINF for a NaN/Inf sample (ignored, state
- *         unchanged); FNAV_E_RANGE when 2^32 - 1 samples were already pushed.
+ * @return FNAV_OK; FNAV_E_NANINF for a NaN/Inf sample and FNAV_E_RANGE
+ *         for |y| > FNAV_INPUT_MAX_ABS (both ignored, state unchanged), and
+ *         FNAV_E_RANGE when 2^32 - 1 samples were already pushed.
  * ISR-safe for distinct objects; bounded time.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_allan_push(fnav_allan_t *a, fnav_real_t y);

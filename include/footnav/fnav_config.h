@@ -77,6 +77,14 @@
 #define FNAV_WELCH_MAX_NFFT 1024
 #endif
 
+/** Largest sample magnitude the streaming Allan and Welch estimators accept
+ *  (beyond it a push returns FNAV_E_RANGE and the sample is ignored). 1e6
+ *  covers every inertial sensor in SI units with room to spare, and keeps
+ *  sums of squared differences over 2^32 samples finite in float32. */
+#ifndef FNAV_INPUT_MAX_ABS
+#define FNAV_INPUT_MAX_ABS 1.0e6
+#endif
+
 #include "fnav_config_check.h"
 
 #endif /* FNAV_CONFIG_H */

@@ -44,4 +44,8 @@
 #error "FNAV_WELCH_MAX_NFFT must be a power of two in 8..65536"
 #endif
 
+/* FNAV_INPUT_MAX_ABS is a floating constant, which neither the preprocessor
+ * nor a C99 constant expression can compare; keep it in (0, 1e12]
+ * (fnav_config.h). */
+
 #endif /* FNAV_CONFIG_CHECK_H */

@@ -132,7 +132,7 @@ typedef struct {
     int n_act;                 /**< active states (9, 12, 15 or 18) */
     int n_lin;                 /**< leading active states that propagate linearly (lever, v, p) */
     unsigned char act[FNAV_UKF_NMAX]; /**< internal indices of the active states, ascending */
-    signed char pos[FNAV_UKF_NMAX];   /**< packed index of each internal state, -1 if inactive */
+    int16_t pos[FNAV_UKF_NMAX];       /**< packed index of each internal state, -1 if inactive */
     fnav_real_t gamma;         /**< sigma-point scale sqrt(n + lambda) */
     fnav_real_t w0m, w0c, wi;  /**< weights */
     /* nominal state */

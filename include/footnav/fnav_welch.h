@@ -106,7 +106,8 @@ FNAV_WARN_UNUSED fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch
 /**
  * Add one sample; completes a segment every (nfft - overlap) samples once
  * nfft samples were seen.
- * @return FNAV_OK; FNAV_E_NANINF for NaN/Inf (ignored, state unchanged).
+ * @return FNAV_OK; FNAV_E_NANINF for NaN/Inf, FNAV_E_RANGE for
+ *         |x| > FNAV_INPUT_MAX_ABS (both ignored, state unchanged).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x);
 
