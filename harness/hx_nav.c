@@ -60,7 +60,7 @@ static const param_t k_params[] = {
     { "sigma_a", P_REAL, 1.0, "SHOE accel weight, m/s^2" },
     { "sigma_g_dps", P_REAL, 3.14159265358979323846 / 180.0, "SHOE gyro weight, deg/s" },
     { "adaptive", P_INT, 1.0, "adaptive threshold 0/1" },
-    { "floor_rise", P_REAL, 1.0, "adaptive floor rise, decades/s" },
+    { "floor_window_s", P_REAL, 1.0, "adaptive floor: minimum of log10 T over this window, s" },
     { "margin_dec", P_REAL, 1.0, "adaptive threshold above the floor, decades" },
     { "adapt_max_ratio", P_REAL, 1.0, "adaptive threshold at most gamma times this" },
     { "gyro_thresh_dps", P_REAL, 3.14159265358979323846 / 180.0, "threshold detector: RMS rate limit, deg/s" },
@@ -98,8 +98,8 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     if (strcmp(key, "sigma_a") == 0) return &c->stance.sigma_a_mps2;
     if (strcmp(key, "sigma_g_dps") == 0) return &c->stance.sigma_g_rps;
     if (strcmp(key, "adaptive") == 0) return &c->stance.adaptive;
-    if (strcmp(key, "floor_rise") == 0) return &c->stance.floor_rise_dps;
     if (strcmp(key, "margin_dec") == 0) return &c->stance.margin_dec;
+    if (strcmp(key, "floor_window_s") == 0) return &c->stance.floor_window_s;
     if (strcmp(key, "adapt_max_ratio") == 0) return &c->stance.adapt_max_ratio;
     if (strcmp(key, "gyro_thresh_dps") == 0) return &c->stance.gyro_thresh_rps;
     if (strcmp(key, "accel_thresh") == 0) return &c->stance.accel_thresh_mps2;
