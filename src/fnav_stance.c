@@ -25,7 +25,7 @@ const fnav_stance_config_t fnav_stance_config_default = {
     FNAV_R(10.0),       /* adapt_max_ratio */
     FNAV_R(0.02),       /* min_zupt_s, s */
     FNAV_R(0.05),       /* min_stance_s, s */
-    FNAV_R(0.2),        /* min_swing_s, s */
+    FNAV_R(0.25),       /* min_swing_s, s */
     FNAV_R(0.3)         /* event_window_s, s */
 };
 

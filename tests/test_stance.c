@@ -256,8 +256,8 @@ static void test_step_boundaries(void **state)
             if (j >= m0 && j < m1) {
                 assert_int_equal(o.stance, 0);
             }
-            /* the segmentation confirms a swing after min_swing_s (40 samples) */
-            if (j >= m0 + 40 && j < m1) {
+            /* the segmentation confirms a swing after min_swing_s (50 samples) */
+            if (j >= m0 + 50 && j < m1) {
                 assert_int_equal(o.segment_stance, 0);
             }
             if (o.events & FNAV_STANCE_EV_STRIDE) {

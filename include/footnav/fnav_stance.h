@@ -78,7 +78,7 @@ typedef struct {
     fnav_real_t adapt_max_ratio; /**< adaptive threshold at most this times gamma (default 10) */
     fnav_real_t min_zupt_s;     /**< a stance shorter than this is ignored, s (default 0.02) */
     fnav_real_t min_stance_s;   /**< segmentation: shortest stance ending a swing, s (default 0.05) */
-    fnav_real_t min_swing_s;    /**< segmentation: shortest swing, s (default 0.2) */
+    fnav_real_t min_swing_s;    /**< segmentation: shortest swing, s (default 0.25) */
     fnav_real_t event_window_s; /**< gait-event search window, s (default 0.3) */
 } fnav_stance_config_t;
 
