@@ -4,7 +4,8 @@
 #   make test       every CMocka suite (float and double builds), the CLI
 #                   tests, the golden-vector cross-checks, the no-allocation check
 #   make sanitize   the suites and CLI tests under ASan + UBSan
-#   make firmware   the core cross-compiled for Cortex-M4F, with a size report
+#   make firmware   the reference firmware image for Cortex-M4F: size and stack report
+#   make firmware-bench  the firmware in qemu-system-arm: instructions per call
 #   make bench      benchmarks (figures quoted in docs/ come from here)
 #   make deps       install the Debian packages (scripts/bootstrap.sh)
 #   make clean
@@ -38,7 +39,8 @@ CORE_SRC    := $(wildcard src/*.c)
 HX_SRC      := $(filter-out harness/main.c,$(wildcard harness/*.c)) $(wildcard port/linux/*.c)
 TEST_SRC    := $(wildcard tests/test_*.c)
 BENCH_SRC   := $(wildcard tests/bench_*.c)
-TESTHELP_SRC:= $(wildcard tests/support/*.c) port/cortex-m/fnav_cm_ring.c
+TESTHELP_SRC:= $(wildcard tests/support/*.c) port/cortex-m/fnav_cm_ring.c port/cortex-m/fnav_port_cortexm.c \
+               port/cortex-m/fnav_cm_est.c port/cortex-m/fnav_cm_app.c
 
 CORE_OBJ    := $(CORE_SRC:%.c=$(BUILD)/obj/%.o)
 HX_OBJ      := $(HX_SRC:%.c=$(BUILD)/obj/%.o)
@@ -52,7 +54,7 @@ BENCH_BINS  := $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 FORBIDDEN := malloc|calloc|realloc|free|_sbrk|sbrk|printf|fprintf|sprintf|snprintf|vprintf|vfprintf|vsprintf|vsnprintf|puts|fputs|putchar|fputc|putc|fopen|fclose|fread|fwrite|fflush|stdout|stderr|stdin|_impure_ptr|__printf_chk|__fprintf_chk|__sprintf_chk|__snprintf_chk|exit|abort|system
 
 .PHONY: all test check-suites test-double test-cli vectors-check nm-check sanitize \
-        firmware bench deps clean run fuzz valgrind lint
+        firmware firmware-bench bench deps clean run fuzz valgrind lint
 
 all: $(LIB) $(HARNESS) nm-check
 
@@ -112,32 +114,135 @@ sanitize:
 	@echo "make sanitize: all passed under ASan + UBSan"
 
 # ---------------------------------------------------------------- firmware
+# make firmware: the reference firmware image for a generic Cortex-M4F
+# (port/cortex-m, docs/firmware.md): links, fails on any allocation or libc
+# I/O, prints flash/RAM against the budget and the worst-case stack per entry
+# point from -fstack-usage / -fcallgraph-info=su.
+# make firmware-bench: the same code as a semihosting image for
+# qemu-system-arm (mps2-an386, -icount shift=0) replaying a piece of a real
+# walk; instructions per call, checked against the same code built for the host.
 ARM_CC    ?= arm-none-eabi-gcc
 ARM_AR    ?= arm-none-eabi-ar
 ARM_NM    ?= arm-none-eabi-nm
 ARM_SIZE  ?= arm-none-eabi-size
+ARM_OBJDUMP ?= arm-none-eabi-objdump
+QEMU      ?= qemu-system-arm
 ARM_BUILD := build/arm
 ARM_ARCH  := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
 ARM_CFLAGS := $(ARM_ARCH) -Os -g -ffunction-sections -fdata-sections -fstack-usage -fcallgraph-info=su $(WARN)
+FW_DEFS   ?=
+# The library options of the firmware (core and port must agree on sizes).
+FW_CONFIG := -DFNAV_CONFIG_FILE='"fnav_cm_fw_config.h"'
+ARM_CPPFLAGS := -Iinclude -Iport/cortex-m $(FW_CONFIG) $(FW_DEFS)
+ARM_LDFLAGS := $(ARM_ARCH) -nostartfiles --specs=nano.specs -Wl,--gc-sections -Lport/cortex-m/ld
+ARM_LDLIBS := -lm -lc -lgcc
 ARM_CORE_OBJ := $(CORE_SRC:%.c=$(ARM_BUILD)/obj/%.o)
-ARM_PORT_OBJ := $(patsubst %.c,$(ARM_BUILD)/obj/%.o,$(wildcard port/cortex-m/*.c))
 ARM_LIB   := $(ARM_BUILD)/libfootnav.a
+# Budget (issue 7): whole image with every estimator.
+FW_FLASH_BUDGET ?= 49152
+FW_RAM_BUDGET   ?= 24576
+# Stack reserved after .bss (must hold the worst case of the stack report).
+FW_STACK_SIZE   ?= 1984
 
-$(ARM_BUILD)/obj/%.o: %.c
+FW_COMMON := port/cortex-m/fnav_cm_ring.c port/cortex-m/fnav_port_cortexm.c port/cortex-m/fnav_cm_est.c \
+             port/cortex-m/fnav_cm_app.c port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c
+FW_OBJ    := $(patsubst %.c,$(ARM_BUILD)/obj/%.o,$(FW_COMMON) port/cortex-m/fnav_cm_main.c)
+FW_ELF    := $(ARM_BUILD)/footnav-fw.elf
+# The benchmark image: profiling marks on, semihosting, a generated slice.
+FW_SLICE_LOG   ?= vectors/walk.bin
+FW_SLICE_FIRST ?= 0
+FW_SLICE_COUNT ?= 16539
+FW_SLICE_C := $(ARM_BUILD)/gen/fnav_cm_slice_data.c
+FW_SLICE_BIN := $(ARM_BUILD)/gen/slice.bin
+BENCH_SRC := $(FW_COMMON) port/cortex-m/fnav_cm_bench.c port/cortex-m/fnav_cm_semihost.c
+BENCH_OBJ := $(patsubst %.c,$(ARM_BUILD)/bench/%.o,$(BENCH_SRC)) $(ARM_BUILD)/bench/gen/fnav_cm_slice_data.o
+BENCH_ELF := $(ARM_BUILD)/footnav-bench.elf
+FW_ICOUNT_SHIFT ?= 0
+# Semihosting console on stdout (without a chardev QEMU 7.2 writes it to
+# stderr); no display, no serial, no monitor.
+QEMU_FLAGS := -M mps2-an386 -display none -monitor none -serial none -chardev stdio,id=fwsh \
+              -semihosting-config enable=on,target=native,chardev=fwsh -icount shift=$(FW_ICOUNT_SHIFT)
+FW_HOSTREF := $(BUILD)/fw/footnav-bench-host
+FW_SLICE_GEN := $(BUILD)/fw/fw_slice
+
+# Rebuild the images when the firmware options change (FW_DEFS, the slice).
+FW_STAMP  := $(ARM_BUILD)/fw-options.stamp
+FW_OPTIONS := $(FW_DEFS) | $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT) | $(FW_STACK_SIZE)
+ifneq ($(filter firmware firmware-bench $(ARM_BUILD)/%,$(MAKECMDGOALS)),)
+$(shell mkdir -p $(ARM_BUILD) && (echo '$(FW_OPTIONS)' | cmp -s - $(FW_STAMP) || echo '$(FW_OPTIONS)' > $(FW_STAMP)))
+endif
+
+$(FW_STAMP):
 	@mkdir -p $(dir $@)
-	$(ARM_CC) -Iinclude -Iport/cortex-m $(ARM_CFLAGS) -MMD -MP -c $< -o $@
+	@echo '$(FW_OPTIONS)' > $@
+
+$(ARM_BUILD)/obj/%.o: %.c $(FW_STAMP)
+	@mkdir -p $(dir $@)
+	$(ARM_CC) $(ARM_CPPFLAGS) $(ARM_CFLAGS) -MMD -MP -c $< -o $@
+
+$(ARM_BUILD)/bench/%.o: %.c $(FW_STAMP)
+	@mkdir -p $(dir $@)
+	$(ARM_CC) $(ARM_CPPFLAGS) -DFNAV_CM_PROFILE=1 $(ARM_CFLAGS) -MMD -MP -c $< -o $@
+
+$(ARM_BUILD)/bench/gen/%.o: $(ARM_BUILD)/gen/%.c
+	@mkdir -p $(dir $@)
+	$(ARM_CC) $(ARM_CPPFLAGS) $(ARM_CFLAGS) -c $< -o $@
 
 $(ARM_LIB): $(ARM_CORE_OBJ)
 	@mkdir -p $(dir $@)
 	rm -f $@
 	$(ARM_AR) rcs $@ $^
 
-firmware: $(ARM_LIB) $(ARM_PORT_OBJ)
+$(FW_ELF): $(FW_OBJ) $(ARM_LIB) port/cortex-m/ld/cortex-m4f.ld port/cortex-m/ld/fnav_cm_sections.ld $(FW_STAMP)
+	$(ARM_CC) $(ARM_LDFLAGS) -Tcortex-m4f.ld -Wl,--defsym=_stack_size=$(FW_STACK_SIZE) \
+	  -Wl,-Map=$(ARM_BUILD)/footnav-fw.map -o $@ $(FW_OBJ) $(ARM_LIB) $(ARM_LDLIBS)
+
+$(FW_SLICE_GEN): port/cortex-m/tools/fw_slice.c $(HXLIB) $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS_HOST) -o $@ $< $(HXLIB) $(LIB) $(LDLIBS_HOST)
+
+$(FW_SLICE_C): $(FW_SLICE_GEN) $(FW_SLICE_LOG) $(FW_STAMP)
+	@mkdir -p $(dir $@)
+	$(FW_SLICE_GEN) $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT) $@ $(FW_SLICE_BIN)
+
+$(BENCH_ELF): $(BENCH_OBJ) $(ARM_LIB) port/cortex-m/ld/mps2-an386.ld port/cortex-m/ld/fnav_cm_sections.ld
+	$(ARM_CC) $(ARM_LDFLAGS) -Tmps2-an386.ld -Wl,-Map=$(ARM_BUILD)/footnav-bench.map -o $@ $(BENCH_OBJ) $(ARM_LIB) $(ARM_LDLIBS)
+
+# The benchmark's code built for the host (float32 core), the reference the
+# emulator's output is compared with.
+$(FW_HOSTREF): $(BENCH_SRC) $(FW_SLICE_C) $(CORE_SRC) $(FW_STAMP) port/cortex-m/fnav_cm_fw_config.h
+	@mkdir -p $(dir $@)
+	$(CC) -Iinclude -Iport/cortex-m $(FW_CONFIG) $(FW_DEFS) $(CFLAGS_CORE) -o $@ \
+	  $(filter-out port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c,$(BENCH_SRC)) $(FW_SLICE_C) $(CORE_SRC) -lm
+
+firmware: $(ARM_LIB) $(FW_ELF)
 	@if $(ARM_NM) -u $(ARM_LIB) | grep -E -w '$(FORBIDDEN)'; then \
 	  echo "firmware: the core references the symbols above"; exit 1; fi
+	@if $(ARM_NM) $(FW_ELF) | grep -E -w 'malloc|_malloc_r|free|_free_r|calloc|realloc|_sbrk|_sbrk_r|printf|_printf_r|puts|fwrite|_write'; then \
+	  echo "firmware: the image contains the symbols above (no heap, no stdio allowed)"; exit 1; fi
 	@echo "firmware: Cortex-M4F core library $(ARM_LIB) (text = flash, data+bss = RAM):"
 	@$(ARM_SIZE) -t $(ARM_LIB) | tail -n 1
-	@$(ARM_SIZE) $(ARM_PORT_OBJ)
+	@sz=0; sk=0; sh port/cortex-m/tools/fw_size.sh $(ARM_SIZE) $(FW_ELF) $(FW_FLASH_BUDGET) $(FW_RAM_BUDGET) || sz=1; \
+	  $(PYTHON) port/cortex-m/tools/stack_report.py --elf $(FW_ELF) --objdump $(ARM_OBJDUMP) \
+	    --indirect port/cortex-m/tools/indirect_calls.txt --reserve-symbol _stack_size --nm $(ARM_NM) \
+	    $(patsubst %.o,%.ci,$(FW_OBJ) $(ARM_CORE_OBJ)) || sk=1; \
+	  if [ $$sz -ne 0 ] || [ $$sk -ne 0 ]; then echo "firmware: FAILED (budget or stack, see above)"; exit 1; fi
+
+firmware-bench: $(BENCH_ELF) $(FW_HOSTREF) $(HARNESS)
+	@if $(ARM_NM) $(BENCH_ELF) | grep -E -w 'malloc|_malloc_r|_sbrk|_sbrk_r|printf|_printf_r'; then \
+	  echo "firmware-bench: the image contains the symbols above"; exit 1; fi
+	@echo "firmware-bench: $(QEMU) $(QEMU_FLAGS) -kernel $(BENCH_ELF)"
+	@timeout 600 $(QEMU) $(QEMU_FLAGS) -kernel $(BENCH_ELF) >$(ARM_BUILD)/bench.txt; st=$$?; \
+	  grep -v -E '^(nav|allan|welch) ' $(ARM_BUILD)/bench.txt; \
+	  if [ $$st -ne 0 ]; then echo "firmware-bench: the emulator run failed (status $$st)"; exit 1; fi
+	@$(FW_HOSTREF) >$(ARM_BUILD)/bench-host.txt || { cat $(ARM_BUILD)/bench-host.txt; \
+	  echo "firmware-bench: the host build of the benchmark failed"; exit 1; }
+	@rm -f $(ARM_BUILD)/bench-replay.csv; $(HARNESS) replay $(FW_SLICE_BIN) --out $(ARM_BUILD)/bench-replay.csv \
+	  >$(ARM_BUILD)/bench-replay.txt 2>&1; st=$$?; \
+	  if [ $$st -ne 0 ] && [ $$st -ne 4 ]; then cat $(ARM_BUILD)/bench-replay.txt; \
+	  echo "firmware-bench: harness replay of the slice failed (status $$st)"; exit 1; fi
+	@$(PYTHON) port/cortex-m/tools/bench_compare.py $(ARM_BUILD)/bench.txt $(ARM_BUILD)/bench-host.txt \
+	  --replay $(ARM_BUILD)/bench-replay.csv
 
 # ---------------------------------------------------------------- bench
 bench: $(HARNESS) $(BENCH_BINS)

@@ -1,14 +1,624 @@
-/* harness live: placeholder until the firmware and live issue (#7) lands. */
+/* harness live: navigate live from a serial port (docs/wire-protocol.md,
+ * docs/harness.md). Reads wire frames through libserialport, records every
+ * received sample to a .bin that stays valid if the process is killed, runs
+ * the navigation filter on every sample exactly as `harness replay` does
+ * (fnav_nav_push / pop, then finish at the end), and prints the position and
+ * the stance state. */
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include "fnav_port_linux.h"
+#include "footnav/fnav_wire.h"
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_nav.h"
+#include "hx_serial.h"
+
+#define CMD "live"
+#define READ_TIMEOUT_MS 100u
+#define MAX_WARNINGS 20
+#define PLOT_SECONDS 10.0
+
+static const hx_opt_t k_opts[] = {
+    { "--baud", "N", "baud rate, 8N1 (default 460800)", 0 },
+    { "--record", "FILE", "record every received sample to FILE (.bin; valid even if killed)", 0 },
+    { "--plot-every", "S", "redraw the plot every S seconds", 0 },
+    { "--plot", "FILE", "PNG drawn by --plot-every (default live.png)", 0 },
+    { "--timeout", "S", "give up when no valid frame arrives for S seconds (default: wait forever)", 0 },
+    { "--print-every", "S", "status line period, s (default 1; 0: only the summary)", 0 },
+    { "--out", "FILE", "trajectory CSV, the columns of `harness replay --out` ('-': standard output)", 0 },
+    { "--json", "FILE", "summary as JSON, the keys of `harness replay --json`", 0 },
+    HX_NAV_OPTS,
+    { NULL, NULL, NULL, 0 }
+};
+
+static const hx_spec_t k_spec = {
+    CMD, "PORT [options]",
+    "Read the footnav wire protocol (docs/wire-protocol.md) from the serial port\n"
+    "PORT, record every received sample, run the navigation filter on it as\n"
+    "`harness replay` does, and print the position and stance state. Corrupt\n"
+    "frames are skipped and counted; a gap in the frame sequence numbers is\n"
+    "reported as a drop. The run ends at the sender's END frame, on Ctrl-C, or\n"
+    "when the port disappears (the recording stays intact in every case).\n"
+    "Exit status: 0 complete, 1 samples were lost (drops, bad frames) or the\n"
+    "port went away, 2 usage, 3 the port or the recording could not be opened\n"
+    "or written.",
+    1, 1, k_opts
+};
+
+static volatile sig_atomic_t g_stop;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    g_stop = 1;
+}
+
+/* Recent signal magnitudes for the plot (a ring of PLOT_SECONDS). */
+typedef struct {
+    double *t, *a, *w;
+    size_t cap, head, n;
+} hist_t;
+
+typedef struct {
+    /* link */
+    fnav_wire_decoder_t dec;
+    fnav_wire_stats_t last_stats; /* to report what changed */
+    uint32_t by_type[6];
+    uint32_t bad_samples;         /* CRC-valid SAMPLE frames with NaN/Inf */
+    int have_info, have_end, have_status;
+    fnav_wire_info_t info;
+    fnav_wire_status_t status;
+    uint32_t end_count;
+    int warnings;
+    /* samples */
+    uint32_t samples;
+    int64_t t_first_ns, t_last_ns;
+    double acc_norm, gyr_norm;
+    /* recording */
+    const char *record_path;
+    hx_writer_t *rec;
+    int rec_failed;
+    /* navigation: the filter and the trajectory so far */
+    fnav_nav_t *nav;
+    fnav_linux_port_ctx_t lctx;   /* the replay's CSV writer */
+    fnav_port_t lport;
+    FILE *csv;
+    int csv_failed;
+    hx_traj_t traj;
+    fnav_nav_frame_t last;
+    int have_frame;
+    /* plot */
+    hist_t hist;
+    pid_t plot_pid;
+} live_t;
+
+/* One navigation output: to the CSV (through the Linux port's writer, as
+ * replay) and into the trajectory kept for the summary and the plot. */
+static void on_nav_frame(live_t *L, const fnav_nav_frame_t *f)
+{
+    if (L->csv != NULL && !L->csv_failed && fnav_port_write_nav(&L->lport, f) != FNAV_OK) {
+        hx_error(CMD, "cannot write the trajectory CSV; it stops here");
+        L->csv_failed = 1;
+    }
+    if (L->traj.n == L->traj.cap) {
+        size_t nc = L->traj.cap ? 2 * L->traj.cap : 16384;
+        fnav_nav_frame_t *p = (fnav_nav_frame_t *)realloc(L->traj.f, nc * sizeof *p);
+        if (p == NULL) {
+            return; /* the summary covers what fitted */
+        }
+        L->traj.f = p;
+        L->traj.cap = nc;
+    }
+    L->traj.f[L->traj.n++] = *f;
+    L->last = *f;
+    L->have_frame = 1;
+}
+
+static void nav_push(live_t *L, const fnav_sample_t *s)
+{
+    fnav_nav_frame_t fr;
+    if (!L->lctx.have_t0) {
+        L->lctx.t0_ns = s->t_ns; /* CSV time is relative to the first sample, as in replay */
+        L->lctx.have_t0 = 1;
+    }
+    if (fnav_nav_push(L->nav, s) != FNAV_OK) {
+        /* rejected (NaN, time backwards): counted in the filter's stats, as in replay */
+    }
+    while (fnav_nav_pop(L->nav, &fr) == FNAV_OK) {
+        on_nav_frame(L, &fr);
+    }
+}
+
+static void nav_finish(live_t *L)
+{
+    fnav_nav_frame_t fr;
+    fnav_nav_finish(L->nav);
+    while (fnav_nav_pop(L->nav, &fr) == FNAV_OK) {
+        on_nav_frame(L, &fr);
+    }
+    L->traj.stats = L->nav->stats;
+    L->traj.rate_hz = (double)L->nav->stance.rate_hz;
+    L->traj.window = L->nav->stance.win;
+    L->traj.align = L->nav->align.result;
+    L->traj.aligned = L->nav->aligned;
+}
+
+static void warn_limited(live_t *L, const char *msg)
+{
+    if (L->warnings < MAX_WARNINGS) {
+        hx_warn(CMD, "%s", msg);
+    } else if (L->warnings == MAX_WARNINGS) {
+        hx_warn(CMD, "more link problems: only counted from now on (see the summary)");
+    }
+    L->warnings++;
+}
+
+/* Report what the decoder's counters say happened since the last frame. */
+static void report_link(live_t *L, const fnav_wire_frame_t *f)
+{
+    const fnav_wire_stats_t *s = &L->dec.stats;
+    char msg[160];
+    if (s->bad_frames != L->last_stats.bad_frames) {
+        snprintf(msg, sizeof msg, "bad frame: %lu corrupt frame(s) skipped before frame seq %u",
+                 (unsigned long)(s->bad_frames - L->last_stats.bad_frames), (unsigned)f->seq);
+        warn_limited(L, msg);
+    }
+    if (s->lost != L->last_stats.lost) {
+        snprintf(msg, sizeof msg, "drop: %lu frame(s) lost before frame seq %u",
+                 (unsigned long)(s->lost - L->last_stats.lost), (unsigned)f->seq);
+        warn_limited(L, msg);
+    }
+    if (s->resets != L->last_stats.resets) {
+        snprintf(msg, sizeof msg, "restart: the frame sequence went back to %u (sender reset?)", (unsigned)f->seq);
+        warn_limited(L, msg);
+    }
+    L->last_stats = *s;
+}
+
+static int open_recording(live_t *L)
+{
+    hx_meta_t meta;
+    char err[320];
+    memset(&meta, 0, sizeof meta);
+    meta.format = HX_FMT_BIN;
+    if (L->have_info) {
+        meta.rate_hz = L->info.rate_hz;
+        meta.rate_nominal = (L->info.flags & FNAV_WIRE_INFO_RATE_NOMINAL) != 0u;
+        meta.has_temp = (L->info.flags & FNAV_WIRE_INFO_TEMP) != 0u;
+        meta.has_seq = (L->info.flags & FNAV_WIRE_INFO_SEQ) != 0u;
+        snprintf(meta.sensor, sizeof meta.sensor, "%s", L->info.sensor);
+        snprintf(meta.axes, sizeof meta.axes, "%s", L->info.axes);
+    } else {
+        snprintf(meta.sensor, sizeof meta.sensor, "unknown (no INFO frame)");
+    }
+    snprintf(meta.source, sizeof meta.source, "harness live");
+    L->rec = hx_writer_open(L->record_path, HX_FMT_BIN, &meta, 1, err, sizeof err);
+    if (L->rec == NULL) {
+        hx_error(CMD, "%s", err);
+        L->rec_failed = 1;
+        return -1;
+    }
+    return 0;
+}
+
+static void hist_push(hist_t *h, double t, double a, double w)
+{
+    if (h->cap == 0u) {
+        return;
+    }
+    h->t[h->head] = t;
+    h->a[h->head] = a;
+    h->w[h->head] = w;
+    h->head = (h->head + 1u) % h->cap;
+    if (h->n < h->cap) {
+        h->n++;
+    }
+}
+
+static void on_sample(live_t *L, const fnav_sample_t *s)
+{
+    double a2 = 0.0, w2 = 0.0;
+    int i;
+    if (L->samples == 0u) {
+        L->t_first_ns = s->t_ns;
+    }
+    L->samples++;
+    L->t_last_ns = s->t_ns;
+    for (i = 0; i < 3; i++) {
+        a2 += (double)s->accel_mps2[i] * (double)s->accel_mps2[i];
+        w2 += (double)s->gyro_rps[i] * (double)s->gyro_rps[i];
+    }
+    L->acc_norm = sqrt(a2);
+    L->gyr_norm = sqrt(w2);
+    hist_push(&L->hist, (double)(s->t_ns - L->t_first_ns) * 1e-9, L->acc_norm, L->gyr_norm);
+    nav_push(L, s);
+    if (L->record_path != NULL && !L->rec_failed) {
+        if (L->rec == NULL && open_recording(L) != 0) {
+            return;
+        }
+        if (hx_writer_write(L->rec, s) != FNAV_OK) {
+            hx_error(CMD, "%s: write failed (%s); recording stopped", L->record_path, strerror(errno));
+            L->rec_failed = 1;
+        }
+    }
+}
+
+static void on_frame(live_t *L, const fnav_wire_frame_t *f)
+{
+    report_link(L, f);
+    L->by_type[f->type <= 5u ? f->type : 0u]++;
+    switch (f->type) {
+    case FNAV_WIRE_SAMPLE: {
+        fnav_sample_t s;
+        fnav_status_t st = fnav_wire_parse_sample(f, &s);
+        if (st == FNAV_OK) {
+            on_sample(L, &s);
+        } else {
+            char msg[120];
+            L->bad_samples++;
+            snprintf(msg, sizeof msg, "bad sample: sample frame seq %u holds NaN or Inf; skipped", (unsigned)f->seq);
+            warn_limited(L, msg);
+        }
+        break;
+    }
+    case FNAV_WIRE_INFO:
+        if (fnav_wire_parse_info(f, &L->info) == FNAV_OK) {
+            L->have_info = 1;
+        }
+        break;
+    case FNAV_WIRE_STATUS:
+        if (fnav_wire_parse_status(f, &L->status) == FNAV_OK) {
+            L->have_status = 1;
+        }
+        break;
+    case FNAV_WIRE_END:
+        if (fnav_wire_parse_end(f, &L->end_count) == FNAV_OK) {
+            L->have_end = 1;
+        }
+        break;
+    default:
+        break; /* NAV from an on-sensor filter, or a type this receiver does not know */
+    }
+}
+
+static double span_s(const live_t *L)
+{
+    return L->samples > 1u ? (double)(L->t_last_ns - L->t_first_ns) * 1e-9 : 0.0;
+}
+
+static void print_status(const live_t *L, int tty)
+{
+    const fnav_wire_stats_t *s = &L->dec.stats;
+    double span = span_s(L);
+    char nav[160];
+    if (L->have_frame && (L->last.flags & FNAV_FRAME_ALIGNED)) {
+        snprintf(nav, sizeof nav, "x %.2f y %.2f z %.2f m, yaw %.0f deg, %s, %u strides",
+                 (double)L->last.pos_m[0], (double)L->last.pos_m[1], (double)L->last.pos_m[2],
+                 (double)L->last.euler_rad[2] * 57.29577951308232,
+                 (L->last.flags & FNAV_FRAME_STANCE) ? "stance" : "swing ", (unsigned)L->nav->stats.strides);
+    } else {
+        snprintf(nav, sizeof nav, "aligning (keep the foot still)");
+    }
+    fprintf(stderr, "%slive: %.1f s, %u samples | %s | bad %u lost %u%s", tty ? "\r" : "", span,
+            (unsigned)L->samples, nav, (unsigned)(s->bad_frames + L->bad_samples), (unsigned)s->lost,
+            tty ? "   " : "\n");
+    fflush(stderr);
+}
+
+/* Has the aligned trajectory left its start (a path worth drawing)? */
+static int moved(const hx_traj_t *t)
+{
+    size_t i;
+    for (i = 0; i < t->n; i++) {
+        const fnav_nav_frame_t *f = &t->f[i];
+        if ((f->flags & FNAV_FRAME_ALIGNED) &&
+            (fabs((double)f->pos_m[0]) > 0.01 || fabs((double)f->pos_m[1]) > 0.01 || fabs((double)f->pos_m[2]) > 0.01)) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* Draw the plot in a child process so that the receive loop never waits for
+ * gnuplot; the PNG is written to a temporary name and renamed. */
+static void plot_async(live_t *L, const char *png)
+{
+    pid_t pid;
+    if (L->plot_pid > 0) {
+        if (waitpid(L->plot_pid, NULL, WNOHANG) == 0) {
+            return; /* the previous plot is still being drawn */
+        }
+        L->plot_pid = 0;
+    }
+    fflush(stdout);
+    fflush(stderr);
+    pid = fork();
+    if (pid < 0) {
+        return;
+    }
+    if (pid == 0) {
+        hx_plot_t p;
+        char tmp[600];
+        size_t i;
+        const hist_t *h = &L->hist;
+        snprintf(tmp, sizeof tmp, "%s.tmp.png", png);
+        if (moved(&L->traj)) {
+            char title[160];
+            snprintf(title, sizeof title, "harness live: %u samples, bad %u lost %u", (unsigned)L->samples,
+                     (unsigned)L->dec.stats.bad_frames, (unsigned)L->dec.stats.lost);
+            _exit((hx_nav_plot(CMD, tmp, title, &L->traj) == 0 && rename(tmp, png) == 0) ? 0 : 3);
+        }
+        if (hx_plot_open(&p, CMD, tmp, 900, 500) != 0) {
+            _exit(3);
+        }
+        fprintf(p.gp, "set title 'harness live: last %.0f s, %u samples, bad %u lost %u'\n", PLOT_SECONDS,
+                (unsigned)L->samples, (unsigned)L->dec.stats.bad_frames, (unsigned)L->dec.stats.lost);
+        fprintf(p.gp, "set xlabel 't (s)'\nset ylabel '|a| (m/s^2)'\nset y2label '|w| (rad/s)'\n"
+                      "set y2tics\nset ytics nomirror\n");
+        fprintf(p.gp, "plot '-' using 1:2 with lines title '|a|', '-' using 1:2 axes x1y2 with lines title '|w|'\n");
+        for (i = 0; i < h->n; i++) {
+            size_t k = (h->head + h->cap - h->n + i) % h->cap;
+            fprintf(p.gp, "%.4f %.5g\n", h->t[k], h->a[k]);
+        }
+        fprintf(p.gp, "e\n");
+        for (i = 0; i < h->n; i++) {
+            size_t k = (h->head + h->cap - h->n + i) % h->cap;
+            fprintf(p.gp, "%.4f %.5g\n", h->t[k], h->w[k]);
+        }
+        fprintf(p.gp, "e\n");
+        if (hx_plot_close(&p, CMD) != 0 || rename(tmp, png) != 0) {
+            _exit(3);
+        }
+        _exit(0);
+    }
+    L->plot_pid = pid;
+}
+
+static void live_free(live_t *L)
+{
+    free(L->hist.t);
+    free(L->hist.a);
+    free(L->hist.w);
+    free(L->traj.f);
+    L->traj.f = NULL;
+}
 
 int hx_cmd_live(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    fprintf(stderr, "harness live: not available yet (planned in issue #7, firmware and live)\n");
-    return HX_EXIT_UNAVAIL;
+    static fnav_nav_t nav; /* about 8 KB: not on the stack */
+    hx_args_t a;
+    live_t L;
+    hx_serial_t *port;
+    hx_nav_opts_t nopt;
+    fnav_nav_config_t ncfg;
+    long baud = 460800;
+    double plot_every = 0.0, timeout = 0.0, print_every = 1.0;
+    double t_last_frame, t_next_print, t_next_plot, t0;
+    const char *plot_png = "live.png", *out_path, *json_path;
+    char err[600], gone_msg[600] = "";
+    int rc = hx_args_parse(&k_spec, argc, argv, &a);
+    int exit_code = HX_EXIT_OK, gone = 0, timed_out = 0, tty = isatty(fileno(stderr));
+    struct sigaction sa;
+
+    if (rc != 0) {
+        return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
+    }
+    if (hx_arg_long(&a, "--baud", 50, 20000000, &baud) != 0 ||
+        hx_arg_double(&a, "--plot-every", 0.1, 3600.0, &plot_every) != 0 ||
+        hx_arg_double(&a, "--timeout", 0.1, 1e6, &timeout) != 0 ||
+        hx_arg_double(&a, "--print-every", 0.0, 3600.0, &print_every) != 0) {
+        return HX_EXIT_USAGE;
+    }
+    rc = hx_nav_opts_from_args(CMD, &a, &nopt);
+    if (rc != 0) {
+        return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE; /* --param help printed */
+    }
+    if (nopt.rate_hz > 0.0) {
+        hx_error(CMD, "--rate resamples a whole log (a zero-phase filter looks ahead); run "
+                      "`harness replay --rate` on the recording instead");
+        return HX_EXIT_USAGE;
+    }
+    if (hx_nav_config(&nopt, &ncfg, err, sizeof err) != 0) {
+        hx_error(CMD, "%s", err);
+        return HX_EXIT_USAGE;
+    }
+    if (fnav_nav_init(&nav, &ncfg) != FNAV_OK) {
+        hx_error(CMD, "navigation configuration rejected (check --param values)");
+        return HX_EXIT_USAGE;
+    }
+    if (hx_arg(&a, "--plot") != NULL) {
+        plot_png = hx_arg(&a, "--plot");
+        if (plot_every <= 0.0) {
+            plot_every = 1.0;
+        }
+    }
+    out_path = hx_arg(&a, "--out");
+    json_path = hx_arg(&a, "--json");
+
+    memset(&L, 0, sizeof L);
+    fnav_wire_decoder_init(&L.dec);
+    L.nav = &nav;
+    L.record_path = hx_arg(&a, "--record");
+    if (plot_every > 0.0) {
+        L.hist.cap = 20000u;
+        L.hist.t = calloc(L.hist.cap, sizeof(double));
+        L.hist.a = calloc(L.hist.cap, sizeof(double));
+        L.hist.w = calloc(L.hist.cap, sizeof(double));
+        if (L.hist.t == NULL || L.hist.a == NULL || L.hist.w == NULL) {
+            hx_error(CMD, "out of memory");
+            live_free(&L);
+            return HX_EXIT_IO;
+        }
+    }
+    if (out_path != NULL) {
+        L.csv = (strcmp(out_path, "-") == 0) ? stdout : fopen(out_path, "w");
+        if (L.csv == NULL) {
+            hx_error(CMD, "cannot write %s: %s", out_path, strerror(errno));
+            live_free(&L);
+            return HX_EXIT_IO;
+        }
+    }
+    fnav_linux_port_init(&L.lport, &L.lctx, NULL, L.csv);
+
+    port = hx_serial_open(a.pos[0], (int)baud, HX_SERIAL_READ, err, sizeof err);
+    if (port == NULL) {
+        hx_error(CMD, "%s", err);
+        if (L.csv != NULL && L.csv != stdout) {
+            fclose(L.csv);
+        }
+        live_free(&L);
+        return HX_EXIT_IO;
+    }
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal; /* no SA_RESTART: a read returns at once */
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGHUP, &sa, NULL);
+    fprintf(stderr, "harness live: reading %s at %ld baud\n", hx_serial_path(port), baud);
+
+    t0 = hx_now_s();
+    t_last_frame = t0;
+    t_next_print = t0 + print_every;
+    t_next_plot = t0 + plot_every;
+    while (!g_stop && !L.have_end && !L.rec_failed) {
+        uint8_t buf[4096];
+        long n = hx_serial_read(port, buf, sizeof buf, READ_TIMEOUT_MS);
+        double now;
+        size_t pos = 0;
+        if (n == HX_SERIAL_GONE) {
+            if (!g_stop) {
+                gone = 1;
+                snprintf(gone_msg, sizeof gone_msg, "%s", hx_serial_error(port));
+            }
+            break;
+        }
+        for (;;) {
+            size_t used;
+            fnav_wire_frame_t f;
+            if (fnav_wire_decode(&L.dec, buf + pos, (size_t)n - pos, &used, &f) != FNAV_OK) {
+                break;
+            }
+            pos += used;
+            on_frame(&L, &f);
+            t_last_frame = hx_now_s();
+            if (L.have_end) {
+                break; /* anything after END belongs to the next run */
+            }
+        }
+        now = hx_now_s();
+        if (timeout > 0.0 && now - t_last_frame > timeout) {
+            timed_out = 1;
+            break;
+        }
+        if (print_every > 0.0 && now >= t_next_print) {
+            print_status(&L, tty);
+            t_next_print = now + print_every;
+        }
+        if (plot_every > 0.0 && now >= t_next_plot) {
+            plot_async(&L, plot_png);
+            t_next_plot = now + plot_every;
+        }
+    }
+    if (tty && print_every > 0.0) {
+        fputc('\n', stderr);
+    }
+    hx_serial_close(port);
+
+    /* the recording first: it must be complete whatever happens below */
+    if (L.rec != NULL) {
+        char werr[320];
+        if (hx_writer_close(L.rec, werr, sizeof werr) != FNAV_OK) {
+            hx_error(CMD, "%s", werr);
+            L.rec_failed = 1;
+        }
+    }
+    /* the frames the detector still holds, as replay does at the end */
+    nav_finish(&L);
+    if (L.csv != NULL && L.csv != stdout && fclose(L.csv) != 0) {
+        L.csv_failed = 1;
+    }
+    if (L.csv_failed && out_path != NULL) {
+        hx_error(CMD, "cannot write %s", out_path);
+    }
+    if (L.plot_pid > 0) {
+        waitpid(L.plot_pid, NULL, 0);
+        L.plot_pid = 0;
+    }
+    if (plot_every > 0.0 && L.hist.n > 0u) {
+        plot_async(&L, plot_png); /* the final picture */
+        if (L.plot_pid > 0) {
+            waitpid(L.plot_pid, NULL, 0);
+        }
+    }
+
+    {
+        const fnav_wire_stats_t *s = &L.dec.stats;
+        FILE *sum_out = (L.csv == stdout) ? stderr : stdout;
+        double span = span_s(&L);
+        uint32_t missing = L.have_end && L.end_count > L.samples ? L.end_count - L.samples : 0u;
+        if (L.traj.aligned) {
+            hx_nav_summary_t sum;
+            hx_nav_summarize(&L.traj, &sum);
+            hx_nav_print_summary(sum_out, a.pos[0], &L.traj, &sum);
+            if (json_path != NULL &&
+                hx_nav_write_json(json_path, a.pos[0], "harness live", &L.traj, &sum, err, sizeof err) != 0) {
+                hx_error(CMD, "%s", err);
+                L.csv_failed = 1;
+            }
+        } else if (L.samples > 0u) {
+            fprintf(sum_out, "live: no navigation: the filter never aligned (the foot must be still at the start)\n");
+        }
+        fprintf(sum_out, "live: %s: %u samples over %.3f s of sensor time (%.1f Hz), %.1f s of wall time\n", a.pos[0],
+               (unsigned)L.samples, span, span > 0.0 ? (double)(L.samples - 1u) / span : 0.0, hx_now_s() - t0);
+        fprintf(sum_out, "live: frames: %u valid (info %u, sample %u, nav %u, status %u, end %u, unknown %u)\n",
+               (unsigned)s->frames, (unsigned)L.by_type[FNAV_WIRE_INFO], (unsigned)L.by_type[FNAV_WIRE_SAMPLE],
+               (unsigned)L.by_type[FNAV_WIRE_NAV], (unsigned)L.by_type[FNAV_WIRE_STATUS],
+               (unsigned)L.by_type[FNAV_WIRE_END], (unsigned)L.by_type[0]);
+        fprintf(sum_out, "live: link: %u bad frames, %u lost frames in %u drops, %u bad samples, %u bytes skipped, "
+               "%u sequence restarts\n",
+               (unsigned)s->bad_frames, (unsigned)s->lost, (unsigned)s->gaps, (unsigned)L.bad_samples,
+               (unsigned)s->skipped_bytes, (unsigned)s->resets);
+        if (L.have_info) {
+            fprintf(sum_out, "live: sender: %s, %.6g Hz%s\n", L.info.sensor[0] ? L.info.sensor : "(unnamed)",
+                    L.info.rate_hz, (L.info.flags & FNAV_WIRE_INFO_RATE_NOMINAL) ? " nominal" : "");
+        }
+        if (L.have_status) {
+            fprintf(sum_out, "live: sender status: %u samples, %u overruns, %u estimator errors, %u frames not sent\n",
+                   (unsigned)L.status.samples, (unsigned)L.status.overruns, (unsigned)L.status.est_errors,
+                   (unsigned)L.status.tx_dropped);
+        }
+        if (L.record_path != NULL) {
+            fprintf(sum_out, "live: recorded %u samples to %s%s\n", (unsigned)L.samples, L.record_path,
+                   L.rec_failed ? " (recording failed, see above)" : "");
+        }
+        if (L.have_end) {
+            fprintf(sum_out, "live: end: END frame, the sender sent %u samples, %u received\n", (unsigned)L.end_count,
+                   (unsigned)L.samples);
+        } else if (gone) {
+            fprintf(sum_out, "live: end: the port went away\n");
+            hx_error(CMD, "%s; the %u samples received before are recorded", gone_msg, (unsigned)L.samples);
+        }
+        if (L.rec_failed || L.csv_failed) {
+            exit_code = HX_EXIT_IO;
+        } else if (gone || timed_out) {
+            exit_code = HX_EXIT_DATA;
+        } else if (s->lost > 0u || s->bad_frames > 0u || L.bad_samples > 0u || missing > 0u) {
+            hx_error(CMD, "incomplete: %u frames lost, %u corrupt frames, %u bad samples, %u samples missing",
+                     (unsigned)s->lost, (unsigned)s->bad_frames, (unsigned)L.bad_samples, (unsigned)missing);
+            exit_code = HX_EXIT_DATA;
+        }
+        if (timed_out) {
+            hx_error(CMD, "no valid frame for %.1f s (--timeout); giving up", timeout);
+        }
+    }
+    live_free(&L);
+    return exit_code;
 }

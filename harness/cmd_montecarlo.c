@@ -1,14 +1,550 @@
-/* harness montecarlo: placeholder until the simulator issue (#5) lands. */
+/* harness montecarlo: N seeds of a simulated motion through the navigation
+ * filter; error growth with time and distance and the filter's consistency
+ * (NEES against its chi-square band). docs/results-sim.md. */
+#include <cjson/cJSON.h>
+#include <errno.h>
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_mc.h"
+#include "hx_profile.h"
+#include "hx_sim.h"
+
+#include "footnav/fnav_nav.h"
+#include "hx_nav.h"
+
+static const hx_opt_t k_opts[] = {
+    HX_SIM_OPTS,
+    { "--seeds", "N", "number of runs (seeds seed .. seed+N-1; default 50)", 0 },
+    { "--filter-profile", "NAME|FILE", "the filter's sensor profile (default: --profile, with --bias-sigma)", 0 },
+    { "--bias-model", "MODEL", "filter bias model: ar1 (default), off, or both (paired, on the same samples)", 0 },
+    { "--detector", "KIND", "stance detector: shoe (default) or threshold", 0 },
+    { "--param", "KEY=VALUE", "set a navigation parameter (list: harness replay --param help)", 1 },
+    { "--bin", "S", "time bin of the growth curves, s (default 1)", 0 },
+    { "--json", "FILE", "results as JSON (docs/results-sim.md)", 0 },
+    { "--csv", "FILE", "growth curves and NEES per bin and variant", 0 },
+    { "--plot", "PNG", "error growth with the predicted sd, and position NEES with its band", 0 },
+    { "--quiet", NULL, "no summary on standard output", 0 },
+    { NULL, NULL, NULL, 0 }
+};
+
+static const hx_spec_t k_spec = {
+    "montecarlo", "[options]",
+    "Run N seeds of one simulated motion (options as for `harness sim`) through\n"
+    "the navigation filter and report the error growth with time and distance,\n"
+    "the final errors, and the filter's consistency: the average normalised\n"
+    "estimation error squared (NEES) of position, velocity, attitude, biases and\n"
+    "all 15 states against its 95 % chi-square band. With --bias-model both,\n"
+    "the filter runs with and without the AR(1) bias model on exactly the same\n"
+    "samples and the paired differences are reported.",
+    0, 0, k_opts
+};
+
+/* ------------------------------------------------------------ statistics */
+
+static int cmp_d(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+typedef struct {
+    int n;
+    double mean, sd, rms, median, p95, max;
+} stats_t;
+
+static stats_t stats_of(const double *x, int n)
+{
+    stats_t s;
+    double *v = (double *)malloc((size_t)(n > 0 ? n : 1) * sizeof *v);
+    int i, k = 0;
+    memset(&s, 0, sizeof s);
+    if (v == NULL) {
+        return s;
+    }
+    for (i = 0; i < n; i++) {
+        if (isfinite(x[i])) {
+            v[k++] = x[i];
+        }
+    }
+    s.n = k;
+    if (k > 0) {
+        double sum = 0.0, sq = 0.0;
+        qsort(v, (size_t)k, sizeof *v, cmp_d);
+        for (i = 0; i < k; i++) {
+            sum += v[i];
+            sq += v[i] * v[i];
+        }
+        s.mean = sum / k;
+        s.rms = sqrt(sq / k);
+        s.sd = k > 1 ? sqrt((sq - sum * sum / k) / (k - 1)) : 0.0;
+        s.median = (k % 2) ? v[k / 2] : 0.5 * (v[k / 2 - 1] + v[k / 2]);
+        s.p95 = v[(int)ceil(0.95 * k) - 1];
+        s.max = v[k - 1];
+    }
+    free(v);
+    return s;
+}
+
+typedef struct {
+    double time_avg;   /* average over bins of the average NEES */
+    double frac_in;    /* fraction of bins inside their 95 % band */
+    double lo, hi;     /* band for the full number of runs */
+    int bins;
+} cons_t;
+
+static cons_t consistency(const hx_mc_var_t *v, int g, int runs)
+{
+    cons_t c;
+    int b, in = 0, k = 0;
+    double sum = 0.0;
+    memset(&c, 0, sizeof c);
+    hx_nees_band(runs, hx_nees_dim[g], 0.05, &c.lo, &c.hi);
+    for (b = 0; b < v->nbins; b++) {
+        const hx_mc_bin_t *x = &v->bins[b];
+        double lo, hi;
+        if (x->n_nees[g] < 1 || !isfinite(x->nees[g])) {
+            continue;
+        }
+        hx_nees_band(x->n_nees[g], hx_nees_dim[g], 0.05, &lo, &hi);
+        in += x->nees[g] >= lo && x->nees[g] <= hi;
+        sum += x->nees[g];
+        k++;
+    }
+    c.bins = k;
+    c.time_avg = k > 0 ? sum / k : (double)NAN;
+    c.frac_in = k > 0 ? (double)in / k : (double)NAN;
+    return c;
+}
+
+/* ------------------------------------------------------------ outputs */
+
+static void print_summary(const hx_mc_result_t *r, const char *motion, double rate, const char *profile,
+                          const char *fprofile, int eq6)
+{
+    int v, g, i;
+    printf("montecarlo  %d seeds of '%s': %.1f s, %.1f m between footfalls, %g Hz\n", r->runs, motion, r->duration_s,
+           r->distance_m, rate);
+    printf("sensor      %s, filter %s (bias sigma: %s)\n", profile, fprofile, eq6 ? "eq. 6 reading" : "as given");
+    for (v = 0; v < r->nvar; v++) {
+        const hx_mc_var_t *x = &r->var[v];
+        stats_t h = stats_of(x->final_h_m, r->runs), z = stats_of(x->final_v_m, r->runs);
+        stats_t p = stats_of(x->final_pred_h_m, r->runs), rm = stats_of(x->rms_h_m, r->runs);
+        printf("\nvariant %s (%ld estimates compared, %d skipped as non-finite)\n", x->name, x->estimates, x->nonfinite);
+        printf("  final horizontal error   mean %.3f m (+- %.3f), median %.3f, 95%% %.3f, RMS %.3f = %.2f %% of "
+               "distance\n",
+               h.mean, 1.96 * h.sd / sqrt(h.n > 0 ? h.n : 1), h.median, h.p95, h.rms,
+               r->distance_m > 0.0 ? 100.0 * h.rms / r->distance_m : (double)NAN);
+        printf("  final vertical error     mean %.3f m, median %.3f, 95%% %.3f, RMS %.3f\n", z.mean, z.median, z.p95,
+               z.rms);
+        printf("  predicted horizontal sd  RMS over runs %.3f m (error RMS / predicted %.2f)\n", p.rms,
+               p.rms > 0.0 ? h.rms / p.rms : (double)NAN);
+        printf("  RMS horizontal error over each run: mean %.3f m\n", rm.mean);
+        printf("  growth     t [s]   dist [m]  RMS horiz [m]  pred sd [m]  RMS vert [m]  RMS yaw [deg]\n");
+        for (i = 0; i < 6; i++) {
+            int b = (int)((double)(i + 1) / 6.0 * x->nbins) - 1;
+            const hx_mc_bin_t *o;
+            if (b < 0) {
+                continue;
+            }
+            o = &x->bins[b];
+            printf("           %7.1f  %8.1f  %13.3f  %11.3f  %12.3f  %13.2f\n", o->t_s, o->odo_m, o->rms_h_m, o->pred_h_m,
+                   o->rms_v_m, o->rms_yaw_rad * 180.0 / 3.14159265358979323846);
+        }
+        printf("  consistency (NEES averaged over runs; 95 %% band for %d runs)\n", r->runs);
+        for (g = 0; g < HX_NEES_COUNT; g++) {
+            cons_t c = consistency(x, g, r->runs);
+            if (c.bins == 0) {
+                printf("    %-5s d=%-2d  no positive definite covariance (states off)\n", hx_nees_name[g],
+                       hx_nees_dim[g]);
+                continue;
+            }
+            printf("    %-5s d=%-2d  time-average %7.2f  band [%.2f, %.2f]  %3.0f %% of bins inside -> %s\n",
+                   hx_nees_name[g], hx_nees_dim[g], c.time_avg, c.lo, c.hi, 100.0 * c.frac_in,
+                   c.time_avg > c.hi ? "over-confident" : (c.time_avg < c.lo ? "pessimistic" : "consistent"));
+        }
+    }
+    if (r->nvar == 2) {
+        double *d = (double *)malloc((size_t)r->runs * sizeof *d), *dv = (double *)malloc((size_t)r->runs * sizeof *dv);
+        int better = 0, k;
+        if (d != NULL && dv != NULL) {
+            stats_t s, sv;
+            for (k = 0; k < r->runs; k++) {
+                d[k] = r->var[1].final_h_m[k] - r->var[0].final_h_m[k];
+                dv[k] = r->var[1].final_v_m[k] - r->var[0].final_v_m[k];
+                better += d[k] > 0.0;
+            }
+            s = stats_of(d, r->runs);
+            sv = stats_of(dv, r->runs);
+            printf("\npaired (%s - %s, same samples): final horizontal error %+.3f m +- %.3f (95 %%), vertical %+.3f m "
+                   "+- %.3f; %s better in %d of %d runs\n",
+                   r->var[1].name, r->var[0].name, s.mean, 1.96 * s.sd / sqrt(s.n > 0 ? s.n : 1), sv.mean,
+                   1.96 * sv.sd / sqrt(sv.n > 0 ? sv.n : 1), r->var[0].name, better, r->runs);
+        }
+        free(d);
+        free(dv);
+    }
+}
+
+static cJSON *num_array(const double *x, int n)
+{
+    cJSON *a = cJSON_CreateArray();
+    int i;
+    for (i = 0; i < n; i++) {
+        cJSON_AddItemToArray(a, isfinite(x[i]) ? cJSON_CreateNumber(x[i]) : cJSON_CreateNull());
+    }
+    return a;
+}
+
+static void add_num(cJSON *o, const char *k, double v)
+{
+    if (isfinite(v)) {
+        cJSON_AddNumberToObject(o, k, v);
+    } else {
+        cJSON_AddNullToObject(o, k);
+    }
+}
+
+static int write_json(const char *path, const hx_mc_result_t *r, const char *motion, double rate, const char *profile,
+                      const char *fprofile, int eq6, unsigned seed)
+{
+    cJSON *root = cJSON_CreateObject(), *vars = cJSON_CreateArray();
+    char *txt;
+    FILE *f;
+    int v, g, b, ok;
+    cJSON_AddStringToObject(root, "motion", motion);
+    cJSON_AddNumberToObject(root, "rate_hz", rate);
+    cJSON_AddStringToObject(root, "profile", profile);
+    cJSON_AddStringToObject(root, "filter_profile", fprofile);
+    cJSON_AddStringToObject(root, "bias_sigma", eq6 ? "eq6" : "given");
+    cJSON_AddNumberToObject(root, "runs", r->runs);
+    cJSON_AddNumberToObject(root, "first_seed", seed);
+    cJSON_AddNumberToObject(root, "duration_s", r->duration_s);
+    cJSON_AddNumberToObject(root, "distance_m", r->distance_m);
+    cJSON_AddNumberToObject(root, "bin_s", r->bin_s);
+    for (v = 0; v < r->nvar; v++) {
+        const hx_mc_var_t *x = &r->var[v];
+        cJSON *o = cJSON_CreateObject(), *cons = cJSON_CreateObject(), *bins = cJSON_CreateArray();
+        stats_t h = stats_of(x->final_h_m, r->runs), z = stats_of(x->final_v_m, r->runs);
+        cJSON_AddStringToObject(o, "name", x->name);
+        cJSON_AddNumberToObject(o, "estimates", (double)x->estimates);
+        cJSON_AddNumberToObject(o, "nonfinite", x->nonfinite);
+        add_num(o, "final_h_mean_m", h.mean);
+        add_num(o, "final_h_rms_m", h.rms);
+        add_num(o, "final_h_median_m", h.median);
+        add_num(o, "final_h_p95_m", h.p95);
+        add_num(o, "final_v_rms_m", z.rms);
+        add_num(o, "final_v_median_m", z.median);
+        cJSON_AddItemToObject(o, "final_h_m", num_array(x->final_h_m, r->runs));
+        cJSON_AddItemToObject(o, "final_v_m", num_array(x->final_v_m, r->runs));
+        cJSON_AddItemToObject(o, "final_pred_h_m", num_array(x->final_pred_h_m, r->runs));
+        cJSON_AddItemToObject(o, "final_nees_pos", num_array(x->final_nees_pos, r->runs));
+        cJSON_AddItemToObject(o, "rms_h_m", num_array(x->rms_h_m, r->runs));
+        for (g = 0; g < HX_NEES_COUNT; g++) {
+            cons_t c = consistency(x, g, r->runs);
+            cJSON *cg = cJSON_CreateObject();
+            cJSON_AddNumberToObject(cg, "dim", hx_nees_dim[g]);
+            add_num(cg, "time_average", c.time_avg);
+            add_num(cg, "fraction_in_band", c.frac_in);
+            add_num(cg, "band_lo", c.lo);
+            add_num(cg, "band_hi", c.hi);
+            cJSON_AddItemToObject(cons, hx_nees_name[g], cg);
+        }
+        cJSON_AddItemToObject(o, "nees", cons);
+        for (b = 0; b < x->nbins; b++) {
+            const hx_mc_bin_t *q = &x->bins[b];
+            cJSON *ob = cJSON_CreateObject();
+            add_num(ob, "t_s", q->t_s);
+            add_num(ob, "odo_m", q->odo_m);
+            cJSON_AddNumberToObject(ob, "n", q->n);
+            add_num(ob, "rms_h_m", q->rms_h_m);
+            add_num(ob, "rms_v_m", q->rms_v_m);
+            add_num(ob, "rms_yaw_rad", q->rms_yaw_rad);
+            add_num(ob, "pred_h_m", q->pred_h_m);
+            add_num(ob, "pred_v_m", q->pred_v_m);
+            for (g = 0; g < HX_NEES_COUNT; g++) {
+                char key[16];
+                snprintf(key, sizeof key, "nees_%s", hx_nees_name[g]);
+                add_num(ob, key, q->nees[g]);
+            }
+            cJSON_AddItemToArray(bins, ob);
+        }
+        cJSON_AddItemToObject(o, "bins", bins);
+        cJSON_AddItemToArray(vars, o);
+    }
+    cJSON_AddItemToObject(root, "variants", vars);
+    txt = cJSON_Print(root);
+    cJSON_Delete(root);
+    if (txt == NULL) {
+        return -1;
+    }
+    f = fopen(path, "w");
+    ok = f != NULL && fputs(txt, f) >= 0 && fputc('\n', f) != EOF;
+    if (f != NULL && fclose(f) != 0) {
+        ok = 0;
+    }
+    free(txt);
+    return ok ? 0 : -1;
+}
+
+static int write_csv(const char *path, const hx_mc_result_t *r)
+{
+    FILE *f = fopen(path, "w");
+    int v, b, g, ok = 1;
+    if (f == NULL) {
+        return -1;
+    }
+    fprintf(f, "variant,t_s,odo_m,n,rms_h_m,pred_h_m,rms_v_m,pred_v_m,rms_yaw_rad");
+    for (g = 0; g < HX_NEES_COUNT; g++) {
+        fprintf(f, ",nees_%s,lo_%s,hi_%s", hx_nees_name[g], hx_nees_name[g], hx_nees_name[g]);
+    }
+    fprintf(f, "\n");
+    for (v = 0; v < r->nvar; v++) {
+        for (b = 0; b < r->var[v].nbins; b++) {
+            const hx_mc_bin_t *q = &r->var[v].bins[b];
+            fprintf(f, "%s,%.3f,%.3f,%d,%.6g,%.6g,%.6g,%.6g,%.6g", r->var[v].name, q->t_s, q->odo_m, q->n, q->rms_h_m,
+                    q->pred_h_m, q->rms_v_m, q->pred_v_m, q->rms_yaw_rad);
+            for (g = 0; g < HX_NEES_COUNT; g++) {
+                double lo = (double)NAN, hi = (double)NAN;
+                if (q->n_nees[g] > 0) {
+                    hx_nees_band(q->n_nees[g], hx_nees_dim[g], 0.05, &lo, &hi);
+                }
+                fprintf(f, ",%.6g,%.6g,%.6g", q->nees[g], lo, hi);
+            }
+            if (fprintf(f, "\n") < 0) {
+                ok = 0;
+            }
+        }
+    }
+    if (fclose(f) != 0) {
+        ok = 0;
+    }
+    return ok ? 0 : -1;
+}
+
+static int write_plot(const char *png, const hx_mc_result_t *r)
+{
+    hx_plot_t p;
+    int v, b;
+    if (hx_plot_open(&p, "montecarlo", png, 1100, 800) != 0) {
+        return -1;
+    }
+    fprintf(p.gp, "set multiplot layout 2,1\nset grid\nset key left top\n");
+    fprintf(p.gp, "set xlabel 'time [s]'\nset ylabel 'horizontal error [m]'\nplot ");
+    for (v = 0; v < r->nvar; v++) {
+        fprintf(p.gp, "%s'-' w l lw 2 t 'RMS error, %s', '-' w l dt 2 t 'predicted sd, %s'", v ? ", " : "",
+                r->var[v].name, r->var[v].name);
+    }
+    fprintf(p.gp, "\n");
+    for (v = 0; v < r->nvar; v++) {
+        for (b = 0; b < r->var[v].nbins; b++) {
+            if (isfinite(r->var[v].bins[b].rms_h_m)) {
+                fprintf(p.gp, "%g %g\n", r->var[v].bins[b].t_s, r->var[v].bins[b].rms_h_m);
+            }
+        }
+        fprintf(p.gp, "e\n");
+        for (b = 0; b < r->var[v].nbins; b++) {
+            if (isfinite(r->var[v].bins[b].pred_h_m)) {
+                fprintf(p.gp, "%g %g\n", r->var[v].bins[b].t_s, r->var[v].bins[b].pred_h_m);
+            }
+        }
+        fprintf(p.gp, "e\n");
+    }
+    {
+        double lo, hi;
+        hx_nees_band(r->runs, 3, 0.05, &lo, &hi);
+        fprintf(p.gp, "set ylabel 'position NEES (d = 3)'\nset logscale y\nset format y '%%g'\n");
+        fprintf(p.gp, "plot %g w l lc rgb 'gray' t '95%% band, %d runs', %g w l lc rgb 'gray' notitle", lo, r->runs, hi);
+        for (v = 0; v < r->nvar; v++) {
+            fprintf(p.gp, ", '-' w l lw 2 t 'average NEES, %s'", r->var[v].name);
+        }
+        fprintf(p.gp, "\n");
+        for (v = 0; v < r->nvar; v++) {
+            for (b = 0; b < r->var[v].nbins; b++) {
+                double x = r->var[v].bins[b].nees[HX_NEES_POS];
+                if (isfinite(x) && x > 0.0) {
+                    fprintf(p.gp, "%g %g\n", r->var[v].bins[b].t_s, x);
+                }
+            }
+            fprintf(p.gp, "e\n");
+        }
+    }
+    fprintf(p.gp, "unset multiplot\n");
+    return hx_plot_close(&p, "montecarlo");
+}
+
+/* ------------------------------------------------------------ filter */
+
+typedef struct {
+    fnav_nav_config_t cfg;
+    fnav_nav_t nav;
+} fnav_adapter_t;
+
+static int ad_start(void *ctx, double rate_hz, int run)
+{
+    fnav_adapter_t *a = (fnav_adapter_t *)ctx;
+    (void)rate_hz;
+    (void)run;
+    return fnav_nav_init(&a->nav, &a->cfg) == FNAV_OK ? 0 : -1;
+}
+
+static int ad_push(void *ctx, const fnav_sample_t *s)
+{
+    fnav_adapter_t *a = (fnav_adapter_t *)ctx;
+    fnav_status_t st = fnav_nav_push(&a->nav, s);
+    return st == FNAV_E_STATE ? -1 : 0; /* rejected samples are counted by the filter */
+}
+
+static int ad_pop(void *ctx, hx_mc_est_t *e)
+{
+    /* 15-state output order <- the filter's internal covariance order */
+    static const int k_map[15] = { FNAV_UKF_A,      FNAV_UKF_A + 1,  FNAV_UKF_A + 2,  FNAV_UKF_V,     FNAV_UKF_V + 1,
+                                   FNAV_UKF_V + 2,  FNAV_UKF_P,      FNAV_UKF_P + 1,  FNAV_UKF_P + 2, FNAV_UKF_BG,
+                                   FNAV_UKF_BG + 1, FNAV_UKF_BG + 2, FNAV_UKF_BA,     FNAV_UKF_BA + 1, FNAV_UKF_BA + 2 };
+    fnav_adapter_t *a = (fnav_adapter_t *)ctx;
+    fnav_nav_frame_t fr;
+    int i, j;
+    if (fnav_nav_pop(&a->nav, &fr) != FNAV_OK) {
+        return 0;
+    }
+    memset(e, 0, sizeof *e);
+    e->seq = fr.seq;
+    e->valid = (fr.flags & FNAV_FRAME_ALIGNED) != 0u;
+    for (i = 0; i < 3; i++) {
+        e->pos_m[i] = (double)fr.pos_m[i];
+        e->vel_mps[i] = (double)fr.vel_mps[i];
+        e->gyro_bias_rps[i] = (double)fr.gyro_bias_rps[i];
+        e->accel_bias_mps2[i] = (double)fr.accel_bias_mps2[i];
+    }
+    /* the filter has just processed this frame: its state is the frame's */
+    for (i = 0; i < 4; i++) {
+        e->q_nb[i] = (double)a->nav.ukf.q_nb.q[i];
+    }
+    for (i = 0; i < 15; i++) {
+        for (j = 0; j < 15; j++) {
+            e->P[i][j] = (double)fnav_ukf_cov(&a->nav.ukf, k_map[i], k_map[j]);
+        }
+    }
+    return 1;
+}
+
+static void ad_finish(void *ctx)
+{
+    fnav_adapter_t *a = (fnav_adapter_t *)ctx;
+    fnav_nav_finish(&a->nav);
+}
+
+typedef struct {
+    hx_progress_t prog;
+} prog_ctx_t;
+
+static void on_progress(void *ctx, int done, int total)
+{
+    (void)total;
+    hx_progress_update(&((prog_ctx_t *)ctx)->prog, (double)done);
+}
 
 int hx_cmd_montecarlo(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    fprintf(stderr, "harness montecarlo: not available yet (planned in issue #5, simulator)\n");
-    return HX_EXIT_UNAVAIL;
+    hx_args_t a;
+    hx_sim_setup_t su;
+    int pr = hx_args_parse(&k_spec, argc, argv, &a);
+    if (pr != 0) {
+        return pr > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
+    }
+    if (hx_sim_setup_from_args("montecarlo", &a, &su) != 0) {
+        return HX_EXIT_USAGE;
+    }
+    {
+        static fnav_adapter_t ad[2];
+        hx_mc_nav_t navs[2];
+        hx_mc_config_t mc;
+        hx_mc_result_t res;
+        hx_motion_t *motion;
+        hx_nav_opts_t no;
+        prog_ctx_t pc;
+        char err[512];
+        const char *bm = hx_arg(&a, "--bias-model"), *fprof = hx_arg(&a, "--filter-profile");
+        const char *json = hx_arg(&a, "--json"), *csv = hx_arg(&a, "--csv"), *png = hx_arg(&a, "--plot");
+        double seeds = 50.0, bin = 1.0;
+        int nvar, v, i, status = HX_EXIT_OK;
+        if (hx_arg_double(&a, "--seeds", 1.0, 100000.0, &seeds) != 0 ||
+            hx_arg_double(&a, "--bin", 0.01, 1e5, &bin) != 0) {
+            return HX_EXIT_USAGE;
+        }
+        if (bm == NULL) {
+            bm = "ar1";
+        }
+        if (strcmp(bm, "ar1") != 0 && strcmp(bm, "off") != 0 && strcmp(bm, "both") != 0) {
+            hx_error("montecarlo", "--bias-model is ar1, off or both, not '%s'", bm);
+            return HX_EXIT_USAGE;
+        }
+        if (fprof == NULL) {
+            fprof = strcmp(su.profile_name, "none") == 0 ? "navchip" : su.profile_name;
+        }
+        nvar = strcmp(bm, "both") == 0 ? 2 : 1;
+        for (v = 0; v < nvar; v++) {
+            memset(&no, 0, sizeof no);
+            no.profile = fprof;
+            no.bias_model = nvar == 2 ? (v == 0 ? "ar1" : "off") : bm;
+            no.detector = hx_arg(&a, "--detector");
+            for (i = 0; i < hx_arg_count(&a, "--param") && i < HX_MAX_REPEAT; i++) {
+                no.params[no.nparams++] = hx_arg_at(&a, "--param", i);
+            }
+            if (hx_nav_config(&no, &ad[v].cfg, err, sizeof err) != 0) {
+                hx_error("montecarlo", "%s", err);
+                return HX_EXIT_USAGE;
+            }
+            if (su.bias_eq6) {
+                hx_profile_bias_eq6(&ad[v].cfg.profile);
+            }
+            navs[v].name = no.bias_model;
+            navs[v].ctx = &ad[v];
+            navs[v].start = ad_start;
+            navs[v].push = ad_push;
+            navs[v].pop = ad_pop;
+            navs[v].finish = ad_finish;
+        }
+        motion = hx_motion_create(&su.motion_cfg, su.motion_name, su.duration_s, err, sizeof err);
+        if (motion == NULL) {
+            hx_error("montecarlo", "%s", err);
+            return HX_EXIT_USAGE;
+        }
+        mc.sim.motion = motion;
+        mc.sim.err = su.err;
+        mc.sim.decim = su.decim;
+        mc.sim.duration_s = su.duration_s > 0.0 ? su.duration_s : hx_motion_duration(motion);
+        mc.runs = (int)seeds;
+        mc.bin_s = bin;
+        hx_progress_start(&pc.prog, "montecarlo", seeds);
+        if (hx_mc_run(&mc, navs, nvar, &res, on_progress, &pc, err, sizeof err) != 0) {
+            hx_progress_end(&pc.prog);
+            hx_error("montecarlo", "%s", err);
+            hx_motion_free(motion);
+            return HX_EXIT_USAGE;
+        }
+        hx_progress_end(&pc.prog);
+        if (!hx_flag(&a, "--quiet")) {
+            print_summary(&res, su.motion_name, (double)su.err.rate_hz, su.profile_name, fprof, su.bias_eq6);
+        }
+        if (json != NULL && write_json(json, &res, su.motion_name, (double)su.err.rate_hz, su.profile_name, fprof,
+                                       su.bias_eq6, su.err.seed) != 0) {
+            hx_error("montecarlo", "%s: cannot write (%s)", json, strerror(errno));
+            status = HX_EXIT_IO;
+        }
+        if (csv != NULL && write_csv(csv, &res) != 0) {
+            hx_error("montecarlo", "%s: cannot write (%s)", csv, strerror(errno));
+            status = HX_EXIT_IO;
+        }
+        if (png != NULL && write_plot(png, &res) != 0) {
+            status = HX_EXIT_IO;
+        }
+        hx_mc_result_free(&res);
+        hx_motion_free(motion);
+        return status;
+    }
 }

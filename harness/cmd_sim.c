@@ -1,14 +1,207 @@
-/* harness sim: placeholder until the simulator issue (#5) lands. */
+/* harness sim: simulated foot motion and sensor errors into a log with truth
+ * (docs/simulator.md). */
+#include <errno.h>
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_profile.h"
+#include "hx_sim.h"
+
+static const hx_opt_t k_opts[] = {
+    HX_SIM_OPTS,
+    { "--list-effects", NULL, "print the effect catalogue with parameters and defaults, and exit", 0 },
+    { "--out", "LOG", "simulated log (.bin, or CSV for any other name; - for CSV on stdout)", 0 },
+    { "--truth", "CSV", "truth at every output tick (docs/simulator.md)", 0 },
+    { NULL, NULL, NULL, 0 }
+};
+
+static const hx_spec_t k_spec = {
+    "sim", "--out LOG [options]",
+    "Simulate a foot-mounted IMU: exact foot motion (stance, swing, heel-strike\n"
+    "impacts; walking, running, stairs, turns, elevator), the sensor's white\n"
+    "noise and AR(1) bias from a profile (paper eqs. 1-4) and any effects of the\n"
+    "catalogue, through an anti-alias filter and decimation to the output rate.\n"
+    "Writes the log and, with --truth, position, velocity, attitude, the ideal\n"
+    "signals, the injected bias and the stance truth at every tick.",
+    0, 0, k_opts
+};
+
+typedef struct {
+    hx_writer_t *w;
+    FILE *truth;
+    const char *truth_path;
+    int write_error;
+    size_t written, dropped, dups, ticks, total;
+    double peak_f, peak_w;
+    hx_progress_t prog;
+} sim_ctx_t;
+
+static int sink(void *vctx, const hx_sim_tick_t *tk)
+{
+    sim_ctx_t *s = (sim_ctx_t *)vctx;
+    const hx_truth_t *o = &tk->truth;
+    uint32_t k;
+    int c;
+    for (k = 0; k < tk->count && s->w != NULL; k++) {
+        if (hx_writer_write(s->w, &tk->meas) != FNAV_OK) {
+            s->write_error = 1;
+            return 1;
+        }
+        s->written++;
+    }
+    s->dropped += tk->count == 0u;
+    s->dups += tk->count == 2u;
+    for (c = 0; c < 3; c++) {
+        double f = fabs((double)tk->meas.accel_mps2[c]), w = fabs((double)tk->meas.gyro_rps[c]);
+        s->peak_f = f > s->peak_f ? f : s->peak_f;
+        s->peak_w = w > s->peak_w ? w : s->peak_w;
+    }
+    if (s->truth != NULL) {
+        int r = fprintf(s->truth,
+                        "%.9f,%u,%u,%.9f,%.9f,%.9f,%.9f,%.9f,%.9f,%.12f,%.12f,%.12f,%.12f,%.9f,%.9f,%.9f,"
+                        "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%d,%d,%d,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
+                        tk->t_s, tk->seq, tk->count, o->pos_m[0], o->pos_m[1], o->pos_m[2], o->vel_mps[0],
+                        o->vel_mps[1], o->vel_mps[2], o->q_nb[0], o->q_nb[1], o->q_nb[2], o->q_nb[3], o->euler_rad[0],
+                        o->euler_rad[1], o->euler_rad[2], o->f_b[0], o->f_b[1], o->f_b[2], o->w_b[0], o->w_b[1],
+                        o->w_b[2], o->still, o->zero_vel, o->phase, o->leg, o->odo_m, tk->bias[0], tk->bias[1],
+                        tk->bias[2], tk->bias[3], tk->bias[4], tk->bias[5]);
+        if (r < 0) {
+            s->write_error = 2;
+            return 1;
+        }
+    }
+    s->ticks++;
+    if ((s->ticks & 1023u) == 0u) {
+        hx_progress_update(&s->prog, (double)s->ticks);
+    }
+    return 0;
+}
 
 int hx_cmd_sim(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    fprintf(stderr, "harness sim: not available yet (planned in issue #5, simulator)\n");
-    return HX_EXIT_UNAVAIL;
+    hx_args_t a;
+    hx_sim_setup_t su;
+    hx_sim_config_t sc;
+    hx_motion_t *motion = NULL;
+    sim_ctx_t ctx;
+    hx_meta_t meta;
+    char err[512];
+    const char *motion_name, *profile, *out, *truth;
+    double rate, dur;
+    int rc, status = HX_EXIT_OK;
+    int pr = hx_args_parse(&k_spec, argc, argv, &a);
+    if (pr != 0) {
+        return pr > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
+    }
+    if (hx_flag(&a, "--list-effects")) {
+        hx_effect_list(stdout);
+        return HX_EXIT_OK;
+    }
+    out = hx_arg(&a, "--out");
+    truth = hx_arg(&a, "--truth");
+    if (out == NULL) {
+        hx_error("sim", "--out LOG is required");
+        hx_usage(&k_spec, stderr);
+        return HX_EXIT_USAGE;
+    }
+    if (hx_sim_setup_from_args("sim", &a, &su) != 0) {
+        return HX_EXIT_USAGE;
+    }
+    sc.err = su.err;
+    sc.decim = su.decim;
+    rate = (double)su.err.rate_hz;
+    dur = su.duration_s;
+    profile = su.profile_name;
+    motion_name = su.motion_name;
+    motion = hx_motion_create(&su.motion_cfg, motion_name, dur, err, sizeof err);
+    if (motion == NULL) {
+        hx_error("sim", "%s", err);
+        return HX_EXIT_USAGE;
+    }
+    sc.motion = motion;
+    sc.duration_s = dur > 0.0 ? dur : hx_motion_duration(motion);
+
+    memset(&meta, 0, sizeof meta);
+    meta.format = HX_FMT_AUTO;
+    meta.rate_hz = rate;
+    meta.rate_nominal = 1;
+    meta.has_seq = 1;
+    meta.has_temp = sc.err.mask[FNAV_EFFECT_THERMAL] != 0u;
+    snprintf(meta.sensor, sizeof meta.sensor, "sim:%.27s", profile);
+    snprintf(meta.source, sizeof meta.source, "harness sim --motion %.20s --seed %u", motion_name, sc.err.seed);
+    snprintf(meta.axes, sizeof meta.axes, "sensor frame; foot flat: z down");
+
+    memset(&ctx, 0, sizeof ctx);
+    ctx.w = hx_writer_open(out, HX_FMT_AUTO, &meta, 0, err, sizeof err);
+    if (ctx.w == NULL) {
+        hx_error("sim", "%s", err);
+        hx_motion_free(motion);
+        return HX_EXIT_IO;
+    }
+    if (truth != NULL) {
+        ctx.truth_path = truth;
+        ctx.truth = fopen(truth, "w");
+        if (ctx.truth == NULL) {
+            hx_error("sim", "%s: cannot create (%s)", truth, strerror(errno));
+            hx_writer_close(ctx.w, err, sizeof err);
+            hx_motion_free(motion);
+            return HX_EXIT_IO;
+        }
+        fprintf(ctx.truth, "t,seq,count,px,py,pz,vx,vy,vz,qw,qx,qy,qz,roll,pitch,yaw,fx,fy,fz,wx,wy,wz,"
+                           "still,zero_vel,phase,leg,odo,bax,bay,baz,bgx,bgy,bgz\n");
+    }
+    ctx.total = hx_sim_ticks(&sc);
+    hx_progress_start(&ctx.prog, "sim", (double)ctx.total);
+    rc = hx_sim_run(&sc, sink, &ctx, err, sizeof err);
+    hx_progress_end(&ctx.prog);
+    if (rc < 0) {
+        hx_error("sim", "%s", err);
+        status = HX_EXIT_USAGE;
+    } else if (ctx.write_error) {
+        hx_error("sim", "%s: write failed", ctx.write_error == 1 ? out : truth);
+        status = HX_EXIT_IO;
+    }
+    if (hx_writer_close(ctx.w, err, sizeof err) != FNAV_OK) {
+        hx_error("sim", "%s", err);
+        status = HX_EXIT_IO;
+    }
+    if (ctx.truth != NULL && fclose(ctx.truth) != 0) {
+        hx_error("sim", "%s: write failed (%s)", truth, strerror(errno));
+        status = HX_EXIT_IO;
+    }
+    if (status == HX_EXIT_OK && strcmp(out, "-") != 0) {
+        hx_truth_t end;
+        char spec[1024];
+        int id;
+        hx_motion_eval(motion, sc.duration_s, &end);
+        printf("motion      %s\n", motion_name);
+        printf("duration    %.3f s, %d strides, %.2f m between footfalls, ends at (%.3f, %.3f, %.3f) m\n",
+               sc.duration_s, hx_motion_strides(motion), end.odo_m, end.pos_m[0], end.pos_m[1], end.pos_m[2]);
+        printf("sampling    %g Hz, internal x%u (%s), seed %u\n", rate, fnav_imuerr_internal_factor(&sc.err),
+               sc.err.mask[FNAV_EFFECT_ALIAS]              ? "picked, no anti-alias filter"
+               : sc.decim == HX_DECIM_MEAN                 ? "interval means"
+               : fnav_imuerr_internal_factor(&sc.err) > 1u ? "anti-alias FIR"
+                                                             : "point samples",
+               sc.err.seed);
+        printf("profile     %s\n", profile);
+        for (id = 0; id < (int)FNAV_EFFECT_COUNT; id++) {
+            if (hx_effect_format(&sc.err, (fnav_effect_id_t)id, spec, sizeof spec) > 0) {
+                printf("effect      %s\n", spec);
+            }
+        }
+        printf("samples     %zu written (%zu ticks, %zu dropped, %zu duplicated)\n", ctx.written, ctx.ticks,
+               ctx.dropped, ctx.dups);
+        printf("peaks       |f| %.1f m/s^2 (%.1f g), |w| %.2f rad/s (%.0f deg/s)\n", ctx.peak_f, ctx.peak_f / 9.80665,
+               ctx.peak_w, ctx.peak_w * 180.0 / 3.14159265358979323846);
+        printf("log         %s\n", out);
+        if (truth != NULL) {
+            printf("truth       %s\n", truth);
+        }
+    }
+    hx_motion_free(motion);
+    return status;
 }

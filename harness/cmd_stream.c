@@ -1,14 +1,238 @@
-/* harness stream: placeholder until the firmware and live issue (#7) lands. */
+/* harness stream: play a log out over a serial port in the wire protocol
+ * (docs/wire-protocol.md), at the pace of its time stamps, so a desk test of
+ * `harness live` (or of any receiver) needs no sensor. */
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
+#include <time.h>
 
+#include "footnav/fnav_wire.h"
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_serial.h"
+
+#define CMD "stream"
+#define WRITE_TIMEOUT_MS 10000u
+
+static const hx_opt_t k_opts[] = {
+    HX_INPUT_OPTS,
+    { "--baud", "N", "baud rate, 8N1 (default 460800)", 0 },
+    { "--rate", "HZ", "send HZ samples per second instead of following the time stamps", 0 },
+    { "--speed", "X", "play X times faster than real time (default 1; 0: as fast as the port takes it)", 0 },
+    { "--inject-corrupt", "N", "test: flip one payload bit of every N-th sample frame", 0 },
+    { "--inject-drop", "N", "test: leave out every N-th sample frame (its sequence number is used up)", 0 },
+    { "--hangup-after", "N", "test: close the port after N samples without an END frame", 0 },
+    { NULL, NULL, NULL, 0 }
+};
+
+static const hx_spec_t k_spec = {
+    CMD, "LOG PORT [options]",
+    "Play LOG out over the serial port PORT in the footnav wire protocol\n"
+    "(docs/wire-protocol.md): an INFO frame (rate, sensor), one SAMPLE frame per\n"
+    "sample at the pace of the log's time stamps (or --rate), and an END frame.\n"
+    "The other end is `harness live PORT`. The --inject-* and --hangup-after\n"
+    "options damage the stream on purpose to test a receiver.\n"
+    "Exit status: 0 sent, 1 the log was bad (every sample before the error was\n"
+    "sent), 2 usage, 3 the port could not be opened or stopped accepting data.",
+    2, 2, k_opts
+};
+
+static volatile sig_atomic_t g_stop;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    g_stop = 1;
+}
+
+static void sleep_until(double t)
+{
+    struct timespec ts;
+    double now = hx_now_s();
+    if (t <= now) {
+        return;
+    }
+    t -= now;
+    ts.tv_sec = (time_t)t;
+    ts.tv_nsec = (long)((t - (double)ts.tv_sec) * 1e9);
+    while (nanosleep(&ts, &ts) != 0 && errno == EINTR && !g_stop) {
+    }
+}
+
+/* Frames wait in a buffer until the next sample is due later, so a fast
+ * pace costs one write per batch instead of one per sample. */
+typedef struct {
+    hx_serial_t *port;
+    uint8_t buf[8192];
+    size_t n;
+    uint16_t seq;
+    int failed;
+} tx_t;
+
+static int tx_flush(tx_t *tx)
+{
+    if (tx->n > 0u && !tx->failed) {
+        if (hx_serial_write(tx->port, tx->buf, tx->n, WRITE_TIMEOUT_MS) != 0) {
+            hx_error(CMD, "%s", hx_serial_error(tx->port));
+            tx->failed = 1;
+        }
+    }
+    tx->n = 0u;
+    return tx->failed ? -1 : 0;
+}
+
+/* Room for one more frame of the largest size. */
+static uint8_t *tx_room(tx_t *tx)
+{
+    if (sizeof tx->buf - tx->n < FNAV_WIRE_MAX_FRAME) {
+        (void)tx_flush(tx);
+    }
+    return tx->buf + tx->n;
+}
 
 int hx_cmd_stream(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    fprintf(stderr, "harness stream: not available yet (planned in issue #7, firmware and live)\n");
-    return HX_EXIT_UNAVAIL;
+    hx_args_t a;
+    hx_log_t log;
+    tx_t tx;
+    long baud = 460800, corrupt = 0, drop = 0, hangup = 0;
+    double rate = 0.0, speed = 1.0, t_start, need_bps;
+    char err[600];
+    int rc = hx_args_parse(&k_spec, argc, argv, &a), loaded;
+    int exit_code = HX_EXIT_OK;
+    size_t i;
+    uint32_t sent = 0;
+    hx_progress_t prog;
+    struct sigaction sa;
+
+    if (rc != 0) {
+        return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
+    }
+    if (hx_check_input_opts(CMD, &a) != 0 || hx_arg_long(&a, "--baud", 50, 20000000, &baud) != 0 ||
+        hx_arg_double(&a, "--rate", 1e-3, 1e6, &rate) != 0 || hx_arg_double(&a, "--speed", 0.0, 1e6, &speed) != 0 ||
+        hx_arg_long(&a, "--inject-corrupt", 1, 1000000000L, &corrupt) != 0 ||
+        hx_arg_long(&a, "--inject-drop", 1, 1000000000L, &drop) != 0 ||
+        hx_arg_long(&a, "--hangup-after", 0, 2000000000L, &hangup) != 0) {
+        return HX_EXIT_USAGE;
+    }
+    if (hx_arg(&a, "--rate") != NULL && hx_arg(&a, "--speed") != NULL) {
+        hx_error(CMD, "--rate and --speed exclude each other");
+        return HX_EXIT_USAGE;
+    }
+
+    loaded = hx_load_input(CMD, &a, a.pos[0], &log);
+    if (loaded < 0) {
+        return HX_EXIT_DATA;
+    }
+    if (log.n == 0) {
+        hx_error(CMD, "%s: no samples to send", a.pos[0]);
+        hx_log_free(&log);
+        return HX_EXIT_DATA;
+    }
+
+    memset(&tx, 0, sizeof tx);
+    tx.port = hx_serial_open(a.pos[1], (int)baud, HX_SERIAL_WRITE, err, sizeof err);
+    if (tx.port == NULL) {
+        hx_error(CMD, "%s", err);
+        hx_log_free(&log);
+        return HX_EXIT_IO;
+    }
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    signal(SIGPIPE, SIG_IGN);
+
+    /* 10 bits per byte on an 8N1 line */
+    {
+        double dur = (double)(log.t_ns[log.n - 1] - log.t_ns[0]) * 1e-9;
+        double sps = (rate > 0.0) ? rate : ((dur > 0.0) ? (double)(log.n - 1) / dur * speed : 0.0);
+        need_bps = sps * (double)FNAV_WIRE_FRAME_SIZE(FNAV_WIRE_SAMPLE_LEN) * 10.0;
+        if (speed > 0.0 && need_bps > (double)baud) {
+            hx_warn(CMD, "%.0f samples/s need %.0f baud; at %ld baud a real UART falls behind (a pty does not care)",
+                    sps, need_bps, baud);
+        }
+    }
+
+    {
+        fnav_wire_info_t info;
+        memset(&info, 0, sizeof info);
+        info.rate_hz = log.meta.rate_hz;
+        info.flags = (log.meta.rate_nominal ? FNAV_WIRE_INFO_RATE_NOMINAL : 0u) |
+                     (log.meta.has_temp ? FNAV_WIRE_INFO_TEMP : 0u) | (log.meta.has_seq ? FNAV_WIRE_INFO_SEQ : 0u);
+        snprintf(info.sensor, sizeof info.sensor, "%s", log.meta.sensor);
+        snprintf(info.axes, sizeof info.axes, "%s", log.meta.axes);
+        tx.n += fnav_wire_encode_info(tx_room(&tx), FNAV_WIRE_MAX_FRAME, tx.seq++, &info);
+    }
+
+    hx_progress_start(&prog, "harness stream", (double)log.n);
+    t_start = hx_now_s();
+    for (i = 0; i < log.n && !g_stop && !tx.failed; i++) {
+        fnav_sample_t s;
+        double due;
+        uint8_t *f;
+        size_t k;
+        int j;
+        if (hangup > 0 && (long)i == hangup) {
+            break;
+        }
+        if (rate > 0.0) {
+            due = t_start + (double)i / rate;
+        } else if (speed > 0.0) {
+            due = t_start + (double)(log.t_ns[i] - log.t_ns[0]) * 1e-9 / speed;
+        } else {
+            due = 0.0;
+        }
+        if (due > hx_now_s() + 5e-4) {
+            if (tx_flush(&tx) != 0) {
+                break;
+            }
+            sleep_until(due);
+        }
+        memset(&s, 0, sizeof s);
+        s.t_ns = log.t_ns[i];
+        s.seq = log.seq[i];
+        s.flags = log.meta.has_seq ? FNAV_SAMPLE_HAS_SEQ : 0u;
+        for (j = 0; j < 3; j++) {
+            s.accel_mps2[j] = (fnav_real_t)log.acc[i][j];
+            s.gyro_rps[j] = (fnav_real_t)log.gyr[i][j];
+        }
+        if (log.temp != NULL && log.temp[i] == log.temp[i]) {
+            s.temp_c = (fnav_real_t)log.temp[i];
+            s.flags |= FNAV_SAMPLE_HAS_TEMP;
+        }
+        f = tx_room(&tx);
+        k = fnav_wire_encode_sample(f, FNAV_WIRE_MAX_FRAME, tx.seq++, &s);
+        sent++;
+        if (drop > 0 && sent % (uint32_t)drop == 0u) {
+            continue; /* never sent: the receiver sees the seq gap */
+        }
+        if (corrupt > 0 && sent % (uint32_t)corrupt == 0u) {
+            f[FNAV_WIRE_HEADER_SIZE + 20u] ^= 0x08u; /* a bit inside acc y */
+        }
+        tx.n += k;
+        hx_progress_update(&prog, (double)(i + 1));
+    }
+    if (!tx.failed && !g_stop && !(hangup > 0 && (long)i == hangup)) {
+        tx.n += fnav_wire_encode_end(tx_room(&tx), FNAV_WIRE_MAX_FRAME, tx.seq++, sent);
+    }
+    if (tx_flush(&tx) == 0 && hx_serial_drain(tx.port) != 0) {
+        hx_error(CMD, "%s", hx_serial_error(tx.port));
+        tx.failed = 1;
+    }
+    hx_progress_end(&prog);
+    hx_serial_close(tx.port);
+
+    printf("stream: %u samples sent to %s in %.1f s%s%s\n", (unsigned)sent, a.pos[1], hx_now_s() - t_start,
+           (hangup > 0 && (long)i == hangup) ? " (hung up on purpose, no END frame)" : "",
+           g_stop ? " (interrupted)" : "");
+    if (tx.failed) {
+        exit_code = HX_EXIT_IO;
+    } else if (loaded == 1) {
+        exit_code = HX_EXIT_DATA; /* the reader's error was printed by hx_load_input */
+    }
+    hx_log_free(&log);
+    return exit_code;
 }

@@ -77,6 +77,13 @@
 #define FNAV_WELCH_MAX_NFFT 1024
 #endif
 
+/** Number of AR(1) poles (log-spaced correlation times) whose sum makes
+ *  the 1/f "flicker" bias of the error model (fnav_imuerr.h). 12 poles over
+ *  four decades keep the Allan floor within a few per cent of 0.664 B. */
+#ifndef FNAV_IMUERR_FLICKER_POLES
+#define FNAV_IMUERR_FLICKER_POLES 12
+#endif
+
 /** Largest sample magnitude the streaming Allan and Welch estimators accept
  *  (beyond it a push returns FNAV_E_RANGE and the sample is ignored). 1e6
  *  covers every inertial sensor in SI units with room to spare, and keeps

@@ -44,6 +44,10 @@
 #error "FNAV_WELCH_MAX_NFFT must be a power of two in 8..65536"
 #endif
 
+#if (FNAV_IMUERR_FLICKER_POLES < 2) || (FNAV_IMUERR_FLICKER_POLES > 64)
+#error "FNAV_IMUERR_FLICKER_POLES must be in 2..64"
+#endif
+
 /* FNAV_INPUT_MAX_ABS is a floating constant, which neither the preprocessor
  * nor a C99 constant expression can compare; keep it in (0, 1e12]
  * (fnav_config.h). */

@@ -14,6 +14,8 @@ extern "C" {
 #include "fnav_math.h"
 #include "fnav_port.h"
 #include "fnav_profile.h"
+#include "fnav_wire.h"
+#include "fnav_imuerr.h"
 #include "fnav_allan.h"
 #include "fnav_fft.h"
 #include "fnav_welch.h"

@@ -1,35 +1,73 @@
 /**
  * @file fnav_port_cortexm.h
- * @brief Cortex-M4F port skeleton: a sample-ready interrupt pushes samples
- *        into a lock-free single-producer / single-consumer ring buffer that
- *        the main loop drains through fnav_port_t.read_sample.
+ * @brief Cortex-M4F port: a sample-ready interrupt pushes samples into a
+ *        lock-free single-producer / single-consumer ring buffer that the
+ *        main loop drains through fnav_port_t.read_sample; navigation frames
+ *        leave through fnav_port_t.write_nav as wire-protocol NAV frames
+ *        (fnav_wire.h, docs/wire-protocol.md).
  *
  * Hardware specifics are weak functions with default stubs, so the port
- * links for a generic Cortex-M4F; a board overrides them:
- *   - fnav_cm_imu_read(): read one sample from the IMU (e.g. over SPI),
- *   - fnav_cm_ticks_ns(): a monotonic time base (default: SysTick counter),
- *   - fnav_cm_out_write(): send bytes of an output frame (e.g. UART DMA).
+ * links for a generic Cortex-M4F; a board overrides them with strong ones:
+ *   - fnav_cm_board_init(): clocks, pins, IMU set-up, enabling the
+ *     sample-ready interrupt (default: nothing),
+ *   - fnav_cm_imu_read(): read one sample from the IMU, e.g. over SPI
+ *     (default: no IMU, returns -1),
+ *   - fnav_cm_ticks_ns(): a monotonic time base (default: the SysTick time
+ *     base of fnav_cm_systick_start(), 0 until it is started),
+ *   - fnav_cm_out_write(): send the bytes of one frame, e.g. by UART DMA
+ *     (default: discard),
+ *   - fnav_cm_idle(): wait for the next interrupt (default: WFI).
+ * The code is portable C apart from the ARM-only parts guarded by
+ * __arm__, so the host tests exercise it too.
  */
 #ifndef FNAV_PORT_CORTEXM_H
 #define FNAV_PORT_CORTEXM_H
 
 #include "footnav/fnav_port.h"
+#include "footnav/fnav_wire.h"
+#include "fnav_cm_config.h"
 #include "fnav_cm_ring.h"
 
-/** Port context. */
+/** Largest frame the port sends (INFO). */
+#define FNAV_CM_TX_SIZE FNAV_WIRE_FRAME_SIZE(FNAV_WIRE_INFO_LEN)
+
+/** Port context (caller-owned; about 1.4 KB with the default ring). */
 typedef struct {
-    fnav_cm_ring_t ring;
-    uint32_t frames;             /**< frames sent to the sink */
+    fnav_cm_ring_t ring;         /**< samples from the ISR to the main loop */
+    uint32_t frames;             /**< frames handed to fnav_cm_out_write() */
+    uint32_t tx_dropped;         /**< frames the output refused (link busy) */
+    uint16_t tx_seq;             /**< wire frame counter */
+    uint8_t tx[FNAV_CM_TX_SIZE]; /**< frame being sent */
 } fnav_cm_port_ctx_t;
 
+/** Set up @p port over @p ctx (empties the ring, zeroes the counters). */
 void fnav_cm_port_init(fnav_port_t *port, fnav_cm_port_ctx_t *ctx);
 
-/** Sample-ready interrupt body: reads the IMU and pushes the sample. */
+/** Sample-ready interrupt body: reads the IMU and pushes the sample
+ *  (a full ring counts an overrun). ISR only. */
 void fnav_cm_sample_isr(fnav_cm_port_ctx_t *ctx);
 
+/** Send a SAMPLE frame (raw stream). Main loop only. @return FNAV_OK or FNAV_E_IO. */
+fnav_status_t fnav_cm_port_send_sample(fnav_cm_port_ctx_t *ctx, const fnav_sample_t *s);
+/** Send a STATUS frame. Main loop only. */
+fnav_status_t fnav_cm_port_send_status(fnav_cm_port_ctx_t *ctx, const fnav_wire_status_t *st);
+/** Send an INFO frame. Main loop only. */
+fnav_status_t fnav_cm_port_send_info(fnav_cm_port_ctx_t *ctx, const fnav_wire_info_t *info);
+
+/** Start a SysTick time base: a 1 ms interrupt from the core clock
+ *  @p core_hz (ARM only; does nothing on the host). */
+void fnav_cm_systick_start(uint32_t core_hz);
+
 /* Weak hardware hooks (override in the board support code). */
+/** Board set-up; called once by the reference main() before the loop. */
+void fnav_cm_board_init(void);
+/** Read one sample (fill every field, t_ns included). 0 ok, -1 none. ISR context. */
 int fnav_cm_imu_read(fnav_sample_t *s);
+/** Monotonic time, ns. */
 int64_t fnav_cm_ticks_ns(void);
+/** Send n bytes (one whole frame). 0 ok, -1 busy (the frame is dropped and counted). */
 int fnav_cm_out_write(const void *bytes, uint32_t n);
+/** Sleep until the next interrupt. */
+void fnav_cm_idle(void);
 
 #endif /* FNAV_PORT_CORTEXM_H */

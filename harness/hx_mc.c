@@ -1,0 +1,403 @@
+/* Monte Carlo engine (see hx_mc.h). */
+#include "hx_mc.h"
+
+#include <gsl/gsl_cdf.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+const int hx_nees_dim[HX_NEES_COUNT] = { 3, 3, 3, 6, 15 };
+const char *const hx_nees_name[HX_NEES_COUNT] = { "pos", "vel", "att", "bias", "all" };
+
+/* first index and size of each NEES group in the 15-state error order */
+static const int k_first[HX_NEES_COUNT] = { 6, 3, 0, 9, 0 };
+
+double hx_chi2_quantile(double nu, double p)
+{
+    return gsl_cdf_chisq_Pinv(p, nu);
+}
+
+void hx_nees_band(int n, int d, double alpha, double *lo, double *hi)
+{
+    double nu = (double)n * (double)d;
+    *lo = hx_chi2_quantile(nu, 0.5 * alpha) / (double)n;
+    *hi = hx_chi2_quantile(nu, 1.0 - 0.5 * alpha) / (double)n;
+}
+
+/* ------------------------------------------------------------ buffers */
+
+typedef struct {
+    uint32_t count;
+    fnav_sample_t meas;
+    double pos[3], vel[3], q[4], bias[6], odo;
+} mc_tick_t;
+
+typedef struct {
+    mc_tick_t *t;
+    size_t n, cap;
+    int oom;
+} mc_buf_t;
+
+static int mc_sink(void *ctx, const hx_sim_tick_t *tk)
+{
+    mc_buf_t *b = (mc_buf_t *)ctx;
+    mc_tick_t *x;
+    if (b->n == b->cap) {
+        size_t cap = b->cap ? 2 * b->cap : 8192;
+        mc_tick_t *nt = (mc_tick_t *)realloc(b->t, cap * sizeof *nt);
+        if (nt == NULL) {
+            b->oom = 1;
+            return 1;
+        }
+        b->t = nt;
+        b->cap = cap;
+    }
+    x = &b->t[b->n++];
+    x->count = tk->count;
+    x->meas = tk->meas;
+    memcpy(x->pos, tk->truth.pos_m, sizeof x->pos);
+    memcpy(x->vel, tk->truth.vel_mps, sizeof x->vel);
+    memcpy(x->q, tk->truth.q_nb, sizeof x->q);
+    memcpy(x->bias, tk->bias, sizeof x->bias);
+    x->odo = tk->truth.odo_m;
+    return 0;
+}
+
+/* per run, per bin: the last estimate in the bin */
+typedef struct {
+    int valid;
+    double eh2, ev2, eyaw2, ph2, pv2;
+    double nees[HX_NEES_COUNT];
+} mc_slot_t;
+
+/* ------------------------------------------------------------ math */
+
+static void qmul(const double a[4], const double b[4], double r[4])
+{
+    double t[4];
+    t[0] = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
+    t[1] = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
+    t[2] = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
+    t[3] = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
+    memcpy(r, t, sizeof t);
+}
+
+/* rotation vector of a unit quaternion, angle in [0, pi] */
+static void rotvec(const double q[4], double v[3])
+{
+    double w = q[0], s = 1.0, sn, a;
+    int i;
+    if (w < 0.0) {
+        w = -w;
+        s = -1.0;
+    }
+    sn = sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    a = (sn < 1e-12) ? 2.0 : 2.0 * atan2(sn, w) / sn;
+    for (i = 0; i < 3; i++) {
+        v[i] = s * a * q[1 + i];
+    }
+}
+
+/* e^T P^-1 e for the d x d block of P starting at (k, k), by Cholesky;
+ * -1 when the block is not positive definite or not finite. */
+static double nees_block(double P[15][15], const double e[15], int k, int d)
+{
+    double L[15][15], y[15], s = 0.0;
+    int i, j, m;
+    for (i = 0; i < d; i++) {
+        for (j = 0; j <= i; j++) {
+            double v = 0.5 * (P[k + i][k + j] + P[k + j][k + i]);
+            for (m = 0; m < j; m++) {
+                v -= L[i][m] * L[j][m];
+            }
+            if (i == j) {
+                if (!(v > 0.0) || !isfinite(v)) {
+                    return -1.0;
+                }
+                L[i][i] = sqrt(v);
+            } else {
+                L[i][j] = v / L[j][j];
+            }
+        }
+    }
+    for (i = 0; i < d; i++) {
+        double v = e[k + i];
+        for (m = 0; m < i; m++) {
+            v -= L[i][m] * y[m];
+        }
+        y[i] = v / L[i][i];
+        s += y[i] * y[i];
+    }
+    return s;
+}
+
+/* ------------------------------------------------------------ engine */
+
+static void free_var(hx_mc_var_t *v)
+{
+    free(v->bins);
+    free(v->final_h_m);
+    free(v->final_v_m);
+    free(v->final_pred_h_m);
+    free(v->final_nees_pos);
+    free(v->rms_h_m);
+    memset(v, 0, sizeof *v);
+}
+
+void hx_mc_result_free(hx_mc_result_t *res)
+{
+    int i;
+    for (i = 0; i < HX_MC_MAX_VARIANTS; i++) {
+        free_var(&res->var[i]);
+    }
+}
+
+typedef struct {
+    double sum_eh2, sum_ev2, sum_eyaw2, sum_ph2, sum_pv2;
+    double sum_nees[HX_NEES_COUNT];
+    int n_nees[HX_NEES_COUNT];
+    int n;
+} mc_acc_t;
+
+int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_result_t *res,
+              hx_mc_progress_fn progress, void *progress_ctx, char *err, size_t err_size)
+{
+    mc_buf_t buf;
+    mc_slot_t *slots = NULL;
+    mc_acc_t *acc = NULL;
+    hx_sim_config_t sc;
+    double rate, bin_s = cfg->bin_s > 0.0 ? cfg->bin_s : 1.0;
+    int nbins, r, v, b, status = -1;
+    size_t nt;
+    memset(res, 0, sizeof *res);
+    memset(&buf, 0, sizeof buf);
+    if (cfg->runs < 1 || nvar < 1 || nvar > HX_MC_MAX_VARIANTS) {
+        snprintf(err, err_size, "montecarlo: need at least one run and 1..%d variants", HX_MC_MAX_VARIANTS);
+        return -1;
+    }
+    rate = (double)cfg->sim.err.rate_hz;
+    nt = hx_sim_ticks(&cfg->sim);
+    nbins = (int)ceil(((double)(nt - 1) / rate) / bin_s - 1e-9);
+    if (nbins < 1) {
+        nbins = 1;
+    }
+    res->runs = cfg->runs;
+    res->nvar = nvar;
+    res->bin_s = bin_s;
+    res->duration_s = (double)(nt - 1) / rate;
+    slots = (mc_slot_t *)calloc((size_t)nbins, sizeof *slots);
+    acc = (mc_acc_t *)calloc((size_t)nbins * (size_t)nvar, sizeof *acc);
+    if (slots == NULL || acc == NULL) {
+        snprintf(err, err_size, "out of memory");
+        goto out;
+    }
+    for (v = 0; v < nvar; v++) {
+        hx_mc_var_t *x = &res->var[v];
+        x->name = navs[v].name;
+        x->nbins = nbins;
+        x->bins = (hx_mc_bin_t *)calloc((size_t)nbins, sizeof *x->bins);
+        x->final_h_m = (double *)calloc((size_t)cfg->runs, sizeof(double));
+        x->final_v_m = (double *)calloc((size_t)cfg->runs, sizeof(double));
+        x->final_pred_h_m = (double *)calloc((size_t)cfg->runs, sizeof(double));
+        x->final_nees_pos = (double *)calloc((size_t)cfg->runs, sizeof(double));
+        x->rms_h_m = (double *)calloc((size_t)cfg->runs, sizeof(double));
+        if (x->bins == NULL || x->final_h_m == NULL || x->final_v_m == NULL || x->final_pred_h_m == NULL ||
+            x->final_nees_pos == NULL || x->rms_h_m == NULL) {
+            snprintf(err, err_size, "out of memory");
+            goto out;
+        }
+    }
+    for (r = 0; r < cfg->runs; r++) {
+        double yaw0, cz, sz, qz[4];
+        sc = cfg->sim;
+        sc.err.seed = cfg->sim.err.seed + (uint32_t)r;
+        buf.n = 0;
+        if (hx_sim_run(&sc, mc_sink, &buf, err, err_size) != 0 || buf.oom) {
+            if (buf.oom) {
+                snprintf(err, err_size, "out of memory");
+            }
+            goto out;
+        }
+        if (r == 0) {
+            res->distance_m = buf.t[buf.n - 1].odo;
+            for (b = 0; b < nbins; b++) {
+                size_t i = (size_t)llround((double)(b + 1) * bin_s * rate);
+                for (v = 0; v < nvar; v++) {
+                    res->var[v].bins[b].t_s = (double)(b + 1) * bin_s;
+                    res->var[v].bins[b].odo_m = buf.t[i < buf.n ? i : buf.n - 1].odo;
+                }
+            }
+        }
+        /* the filter's frame: x along the sensor's initial heading */
+        {
+            const double *q = buf.t[0].q;
+            yaw0 = atan2(2.0 * (q[0] * q[3] + q[1] * q[2]), 1.0 - 2.0 * (q[2] * q[2] + q[3] * q[3]));
+        }
+        cz = cos(yaw0);
+        sz = sin(yaw0);
+        qz[0] = cos(0.5 * yaw0);
+        qz[1] = 0.0;
+        qz[2] = 0.0;
+        qz[3] = -sin(0.5 * yaw0);
+        for (v = 0; v < nvar; v++) {
+            hx_mc_nav_t *nav = &navs[v];
+            hx_mc_var_t *x = &res->var[v];
+            hx_mc_est_t est;
+            size_t i;
+            uint32_t k;
+            double sum_h2 = 0.0;
+            long nest = 0;
+            int have_final = 0, finishing = 0;
+            memset(slots, 0, (size_t)nbins * sizeof *slots);
+            if (nav->start(nav->ctx, rate, r) != 0) {
+                snprintf(err, err_size, "montecarlo: navigator %s failed to start", nav->name);
+                goto out;
+            }
+            for (i = 0; i <= buf.n; i++) {
+                if (i < buf.n) {
+                    for (k = 0; k < buf.t[i].count; k++) {
+                        if (nav->push(nav->ctx, &buf.t[i].meas) != 0) {
+                            snprintf(err, err_size, "montecarlo: navigator %s failed on sample %zu", nav->name, i);
+                            goto out;
+                        }
+                    }
+                } else {
+                    nav->finish(nav->ctx);
+                    finishing = 1;
+                }
+                while (nav->pop(nav->ctx, &est) == 1) {
+                    const mc_tick_t *tk;
+                    double e[15], pt[3], vt[3], qt[4], qc[4], dq[4], eh2, ev2;
+                    int g, j, ok = 1;
+                    (void)finishing;
+                    if (!est.valid || est.seq >= buf.n) {
+                        continue;
+                    }
+                    tk = &buf.t[est.seq];
+                    pt[0] = cz * tk->pos[0] + sz * tk->pos[1];
+                    pt[1] = -sz * tk->pos[0] + cz * tk->pos[1];
+                    pt[2] = tk->pos[2];
+                    vt[0] = cz * tk->vel[0] + sz * tk->vel[1];
+                    vt[1] = -sz * tk->vel[0] + cz * tk->vel[1];
+                    vt[2] = tk->vel[2];
+                    qmul(qz, tk->q, qt);
+                    /* q_true = dq (x) q_est: attitude error about the n axes */
+                    qc[0] = est.q_nb[0];
+                    qc[1] = -est.q_nb[1];
+                    qc[2] = -est.q_nb[2];
+                    qc[3] = -est.q_nb[3];
+                    qmul(qt, qc, dq);
+                    rotvec(dq, e);
+                    for (j = 0; j < 3; j++) {
+                        e[3 + j] = est.vel_mps[j] - vt[j];
+                        e[6 + j] = est.pos_m[j] - pt[j];
+                        e[9 + j] = est.gyro_bias_rps[j] - tk->bias[3 + j];
+                        e[12 + j] = est.accel_bias_mps2[j] - tk->bias[j];
+                    }
+                    for (j = 0; j < 15; j++) {
+                        ok = ok && isfinite(e[j]);
+                    }
+                    if (!ok) {
+                        x->nonfinite++;
+                        continue;
+                    }
+                    eh2 = e[6] * e[6] + e[7] * e[7];
+                    ev2 = e[8] * e[8];
+                    b = (int)ceil((double)est.seq / rate / bin_s - 1e-9) - 1;
+                    if (b < 0) {
+                        b = 0;
+                    }
+                    if (b >= nbins) {
+                        b = nbins - 1;
+                    }
+                    {
+                        mc_slot_t s;
+                        s.valid = 1;
+                        s.eh2 = eh2;
+                        s.ev2 = ev2;
+                        s.eyaw2 = e[2] * e[2];
+                        s.ph2 = est.P[6][6] + est.P[7][7];
+                        s.pv2 = est.P[8][8];
+                        /* a group whose covariance is not positive definite
+                         * (states switched off, e.g. the biases without the
+                         * bias model) has no NEES */
+                        for (g = 0; g < HX_NEES_COUNT; g++) {
+                            s.nees[g] = nees_block(est.P, e, k_first[g], hx_nees_dim[g]);
+                            if (s.nees[g] < 0.0) {
+                                s.nees[g] = (double)NAN;
+                            }
+                        }
+                        slots[b] = s;
+                        x->final_h_m[r] = sqrt(eh2);
+                        x->final_v_m[r] = sqrt(ev2);
+                        x->final_pred_h_m[r] = sqrt(s.ph2);
+                        x->final_nees_pos[r] = s.nees[HX_NEES_POS];
+                        have_final = 1;
+                    }
+                    sum_h2 += eh2;
+                    nest++;
+                    x->estimates++;
+                }
+            }
+            x->rms_h_m[r] = nest > 0 ? sqrt(sum_h2 / (double)nest) : (double)NAN;
+            if (!have_final) {
+                x->final_h_m[r] = x->final_v_m[r] = x->final_pred_h_m[r] = x->final_nees_pos[r] = (double)NAN;
+            }
+            for (b = 0; b < nbins; b++) {
+                mc_acc_t *a = &acc[(size_t)v * (size_t)nbins + (size_t)b];
+                int g;
+                if (!slots[b].valid) {
+                    continue;
+                }
+                a->n++;
+                a->sum_eh2 += slots[b].eh2;
+                a->sum_ev2 += slots[b].ev2;
+                a->sum_eyaw2 += slots[b].eyaw2;
+                a->sum_ph2 += slots[b].ph2;
+                a->sum_pv2 += slots[b].pv2;
+                for (g = 0; g < HX_NEES_COUNT; g++) {
+                    if (isfinite(slots[b].nees[g])) {
+                        a->sum_nees[g] += slots[b].nees[g];
+                        a->n_nees[g]++;
+                    }
+                }
+            }
+        }
+        if (progress != NULL) {
+            progress(progress_ctx, r + 1, cfg->runs);
+        }
+    }
+    for (v = 0; v < nvar; v++) {
+        for (b = 0; b < nbins; b++) {
+            const mc_acc_t *a = &acc[(size_t)v * (size_t)nbins + (size_t)b];
+            hx_mc_bin_t *o = &res->var[v].bins[b];
+            int g;
+            o->n = a->n;
+            if (a->n == 0) {
+                o->rms_h_m = o->rms_v_m = o->rms_yaw_rad = o->pred_h_m = o->pred_v_m = (double)NAN;
+                for (g = 0; g < HX_NEES_COUNT; g++) {
+                    o->nees[g] = (double)NAN;
+                }
+                continue;
+            }
+            o->rms_h_m = sqrt(a->sum_eh2 / a->n);
+            o->rms_v_m = sqrt(a->sum_ev2 / a->n);
+            o->rms_yaw_rad = sqrt(a->sum_eyaw2 / a->n);
+            o->pred_h_m = sqrt(a->sum_ph2 / a->n);
+            o->pred_v_m = sqrt(a->sum_pv2 / a->n);
+            for (g = 0; g < HX_NEES_COUNT; g++) {
+                o->n_nees[g] = a->n_nees[g];
+                o->nees[g] = a->n_nees[g] > 0 ? a->sum_nees[g] / a->n_nees[g] : (double)NAN;
+            }
+        }
+    }
+    status = 0;
+out:
+    free(buf.t);
+    free(slots);
+    free(acc);
+    if (status != 0) {
+        hx_mc_result_free(res);
+    }
+    return status;
+}

@@ -1,0 +1,632 @@
+/* The simulator's sampling chain and the text form of effects (hx_sim.h). */
+#include "hx_sim.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hx_profile.h"
+
+#define PI 3.14159265358979323846
+
+static const char *const k_ch_names[6] = { "ax", "ay", "az", "gx", "gy", "gz" };
+
+/* ------------------------------------------------------------ FIR */
+
+/* Modified Bessel function I0 by its power series (converges for any x). */
+static double bessel_i0(double x)
+{
+    double s = 1.0, term = 1.0, q = 0.25 * x * x;
+    int k;
+    for (k = 1; k < 200; k++) {
+        term *= q / ((double)k * (double)k);
+        s += term;
+        if (term < 1e-17 * s) {
+            break;
+        }
+    }
+    return s;
+}
+
+/* Kaiser-windowed sinc low-pass for decimation by M: cut-off at the output
+ * Nyquist frequency, L = 2 K M + 1 taps, beta 5.65 (60 dB stop band;
+ * Kaiser's transition width (A - 7.95) / (14.36 (L - 1)) of the internal
+ * rate = 0.18 f_s in total, centred on f_s / 2: pass band to 0.41 f_s, stop
+ * band from 0.59 f_s), unit DC gain, linear phase (delay K output periods,
+ * compensated by centring the filter on the output instant). */
+static double *fir_design(int M, int K, int *L_out)
+{
+    int L = 2 * K * M + 1, n, c = K * M;
+    double beta = 0.1102 * (60.0 - 8.7), i0b = bessel_i0(beta), sum = 0.0;
+    double *h = (double *)malloc((size_t)L * sizeof *h);
+    if (h == NULL) {
+        return NULL;
+    }
+    for (n = 0; n < L; n++) {
+        double x = (double)(n - c) / (double)M;
+        double r = (double)(n - c) / (double)c;
+        double sinc = (n == c) ? 1.0 : sin(PI * x) / (PI * x);
+        h[n] = sinc * bessel_i0(beta * sqrt(1.0 - r * r)) / i0b;
+        sum += h[n];
+    }
+    for (n = 0; n < L; n++) {
+        h[n] /= sum;
+    }
+    *L_out = L;
+    return h;
+}
+
+/* ------------------------------------------------------------ chain */
+
+size_t hx_sim_ticks(const hx_sim_config_t *cfg)
+{
+    double T = cfg->duration_s > 0.0 ? cfg->duration_s : hx_motion_duration(cfg->motion);
+    return (size_t)floor(T * (double)cfg->err.rate_hz + 1e-9) + 1;
+}
+
+typedef struct {
+    const hx_motion_t *motion;
+    fnav_imuerr_t *e;
+    double f_int;
+} gen_t;
+
+/* Signal stage of internal sample n, the truth taken at n / f_int + dt. */
+static void gen(const gen_t *g, long n, double dt, double y[6])
+{
+    hx_truth_t o;
+    fnav_real_t f[3], w[3], r[6];
+    int c;
+    hx_motion_eval(g->motion, (double)n / g->f_int + dt, &o);
+    for (c = 0; c < 3; c++) {
+        f[c] = (fnav_real_t)o.f_b[c];
+        w[c] = (fnav_real_t)o.w_b[c];
+    }
+    fnav_imuerr_signal(g->e, f, w, r);
+    for (c = 0; c < 6; c++) {
+        y[c] = (double)r[c];
+    }
+}
+
+int hx_sim_run(const hx_sim_config_t *cfg, hx_sim_sink_fn sink, void *ctx, char *err, size_t err_size)
+{
+    fnav_imuerr_t e;
+    gen_t g;
+    size_t N, j;
+    int M, pick, mean, K = HX_SIM_FIR_HALF, L = 1, status = 0, c;
+    double prev_end[6];
+    double *h = NULL, (*ring)[6] = NULL, rate;
+    long n_next, half = 0;
+    int64_t last_ns = INT64_MIN;
+    hx_sim_tick_t tk;
+    if (fnav_imuerr_init(&e, &cfg->err) != FNAV_OK) {
+        snprintf(err, err_size, "invalid sensor error configuration (a parameter out of its range?)");
+        return -1;
+    }
+    rate = (double)cfg->err.rate_hz;
+    M = (int)fnav_imuerr_internal_factor(&cfg->err);
+    mean = cfg->decim == HX_DECIM_MEAN && cfg->err.mask[FNAV_EFFECT_ALIAS] == 0u;
+    pick = !mean && ((cfg->err.mask[FNAV_EFFECT_ALIAS] != 0u) || M == 1);
+    if (!pick && cfg->err.mask[FNAV_EFFECT_JITTER] != 0u && cfg->err.jitter.sample_s > FNAV_R(0.0)) {
+        snprintf(err, err_size,
+                 "sampling-instant jitter (jitter:sample_s) needs point sampling: --oversample 1 or the alias effect");
+        return -1;
+    }
+    g.motion = cfg->motion;
+    g.e = &e;
+    g.f_int = rate * M;
+    N = hx_sim_ticks(cfg);
+    if (!pick && !mean) {
+        h = fir_design(M, K, &L);
+        ring = (double(*)[6])malloc((size_t)L * sizeof *ring);
+        if (h == NULL || ring == NULL) {
+            free(h);
+            free(ring);
+            snprintf(err, err_size, "out of memory");
+            return -1;
+        }
+        half = (long)K * M;
+    }
+    n_next = mean ? -(long)M : (pick ? 0 : -half);
+    if (mean) {
+        gen(&g, n_next++, 0.0, prev_end); /* the start of the first interval */
+    }
+    for (j = 0; j < N; j++) {
+        fnav_imuerr_tick_t plan;
+        fnav_real_t y[6];
+        double yd[6];
+        long center = (long)j * M;
+        fnav_imuerr_tick(&e, &plan);
+        if (mean) {
+            /* trapezoidal mean of the internal samples over ((j-1) M, j M]:
+             * the interval that ends at the stamp */
+            double yi[6], inner[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+            for (; n_next <= center; n_next++) {
+                gen(&g, n_next, 0.0, yi);
+                for (c = 0; c < 6; c++) {
+                    inner[c] += (n_next < center) ? yi[c] : 0.0;
+                }
+            }
+            for (c = 0; c < 6; c++) {
+                yd[c] = (0.5 * prev_end[c] + inner[c] + 0.5 * yi[c]) / (double)M;
+                prev_end[c] = yi[c];
+            }
+        } else if (pick) {
+            /* every internal sample passes the signal stage; the last one of
+             * the output period is kept (no filter: what lies above the
+             * output Nyquist frequency folds) */
+            for (; n_next <= center; n_next++) {
+                gen(&g, n_next, n_next == center ? (double)plan.sample_off_s : 0.0, yd);
+            }
+        } else {
+            long i;
+            for (; n_next <= center + half; n_next++) {
+                long slot = ((n_next % L) + L) % L;
+                gen(&g, n_next, 0.0, ring[slot]);
+            }
+            for (c = 0; c < 6; c++) {
+                yd[c] = 0.0;
+            }
+            for (i = 0; i < L; i++) {
+                long n = center - half + i, slot = ((n % L) + L) % L;
+                for (c = 0; c < 6; c++) {
+                    yd[c] += h[i] * ring[slot][c];
+                }
+            }
+        }
+        for (c = 0; c < 6; c++) {
+            y[c] = (fnav_real_t)yd[c];
+        }
+        fnav_imuerr_sensor(&e, y);
+
+        memset(&tk, 0, sizeof tk);
+        tk.seq = (uint32_t)j;
+        tk.t_s = (double)j / rate;
+        hx_motion_eval(cfg->motion, tk.t_s, &tk.truth);
+        tk.count = plan.count;
+        {
+            fnav_real_t b[6];
+            fnav_imuerr_bias(&e, b);
+            for (c = 0; c < 6; c++) {
+                tk.bias[c] = (double)b[c];
+            }
+        }
+        tk.meas.seq = (uint32_t)j;
+        tk.meas.flags = FNAV_SAMPLE_HAS_SEQ;
+        {
+            int64_t ns = (int64_t)llround((tk.t_s + (double)plan.stamp_off_s) * 1e9);
+            if (ns < last_ns) {
+                ns = last_ns; /* stamps never go backwards (rounding) */
+            }
+            tk.meas.t_ns = ns;
+            if (plan.count > 0u) {
+                last_ns = ns;
+            }
+        }
+        for (c = 0; c < 3; c++) {
+            tk.meas.accel_mps2[c] = y[c];
+            tk.meas.gyro_rps[c] = y[3 + c];
+        }
+        if (cfg->err.mask[FNAV_EFFECT_THERMAL] != 0u) {
+            tk.meas.temp_c = e.temp_c;
+            tk.meas.flags |= FNAV_SAMPLE_HAS_TEMP;
+        }
+        if (sink(ctx, &tk) != 0) {
+            status = 1;
+            break;
+        }
+    }
+    free(h);
+    free(ring);
+    return status;
+}
+
+/* ------------------------------------------------------------ effect text */
+
+uint32_t hx_channels_parse(const char *s)
+{
+    uint32_t m = 0u;
+    const char *p = s;
+    if (strcmp(s, "all") == 0) {
+        return FNAV_CH_ALL;
+    }
+    if (strcmp(s, "acc") == 0) {
+        return FNAV_CH_ACC;
+    }
+    if (strcmp(s, "gyro") == 0) {
+        return FNAV_CH_GYRO;
+    }
+    while (*p != '\0') {
+        int c, found = 0;
+        for (c = 0; c < 6; c++) {
+            if (strncmp(p, k_ch_names[c], 2) == 0 && (p[2] == '+' || p[2] == '\0')) {
+                m |= 1u << c;
+                p += 2;
+                found = 1;
+                break;
+            }
+        }
+        if (!found) {
+            return 0u;
+        }
+        if (*p == '+') {
+            p++;
+            if (*p == '\0') {
+                return 0u;
+            }
+        }
+    }
+    return m;
+}
+
+int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size_t err_size)
+{
+    char buf[512], *tok[32], *save = NULL, *t;
+    int ntok = 0, i;
+    fnav_effect_id_t id;
+    const fnav_effect_info_t *info;
+    uint32_t mask;
+    if (strlen(spec) >= sizeof buf) {
+        snprintf(err, err_size, "effect specification too long: %.40s...", spec);
+        return -1;
+    }
+    strcpy(buf, spec);
+    for (t = strtok_r(buf, ":", &save); t != NULL && ntok < 32; t = strtok_r(NULL, ":", &save)) {
+        tok[ntok++] = t;
+    }
+    if (ntok == 0) {
+        snprintf(err, err_size, "empty effect specification");
+        return -1;
+    }
+    id = fnav_imuerr_effect_find(tok[0]);
+    info = fnav_imuerr_effect_info(id);
+    if (info == NULL) {
+        snprintf(err, err_size, "unknown effect '%s' (see --list-effects)", tok[0]);
+        return -1;
+    }
+    if (ntok == 2 && strcmp(tok[1], "off") == 0) {
+        fnav_imuerr_disable(cfg, id);
+        return 0;
+    }
+    mask = info->allowed;
+    for (i = 1; i < ntok; i++) {
+        if (strncmp(tok[i], "ch=", 3) == 0) {
+            mask = hx_channels_parse(tok[i] + 3);
+            if (mask == 0u) {
+                snprintf(err, err_size, "effect %s: bad channel list '%s' (all, acc, gyro or ax+ay+az+gx+gy+gz)",
+                         info->name, tok[i] + 3);
+                return -1;
+            }
+            if ((mask & info->allowed) == 0u) {
+                snprintf(err, err_size, "effect %s does not apply to channels '%s'", info->name, tok[i] + 3);
+                return -1;
+            }
+            mask &= info->allowed;
+        }
+    }
+    for (i = 1; i < ntok; i++) {
+        char *eq = strchr(tok[i], '='), *end;
+        int k;
+        double v;
+        uint32_t pm = mask;
+        if (strncmp(tok[i], "ch=", 3) == 0) {
+            continue;
+        }
+        if (eq == NULL) {
+            snprintf(err, err_size, "effect %s: expected PARAM=VALUE, got '%s'", info->name, tok[i]);
+            return -1;
+        }
+        *eq = '\0';
+        k = fnav_imuerr_param_find(id, tok[i]);
+        if (k < 0) {
+            int q;
+            size_t len;
+            len = (size_t)snprintf(err, err_size, "effect %s has no parameter '%s' (parameters:", info->name, tok[i]);
+            for (q = 0; q < info->nparams && len < err_size; q++) {
+                len += (size_t)snprintf(err + len, err_size - len, " %s", info->params[q].name);
+            }
+            if (len < err_size) {
+                snprintf(err + len, err_size - len, ")");
+            }
+            return -1;
+        }
+        v = strtod(eq + 1, &end);
+        if (end == eq + 1 || *end != '\0' || !isfinite(v)) {
+            snprintf(err, err_size, "effect %s: %s needs a number, got '%s'", info->name, tok[i], eq + 1);
+            return -1;
+        }
+        if (id == FNAV_EFFECT_MISALIGN) {
+            /* a channel's own axis is the scale factor's: left at 0 */
+            int axis = tok[i][5] - 'x', c;
+            for (c = 0; c < 6; c++) {
+                if (c % 3 == axis) {
+                    pm &= ~(1u << c);
+                }
+            }
+        }
+        if (fnav_imuerr_param_set(cfg, id, k, pm, (fnav_real_t)v) != FNAV_OK) {
+            snprintf(err, err_size, "effect %s: %s = %g is outside [%g, %g] (%s)", info->name, tok[i], v,
+                     info->params[k].lo, info->params[k].hi, info->params[k].unit);
+            return -1;
+        }
+    }
+    if (fnav_imuerr_enable(cfg, id, mask) != FNAV_OK) {
+        snprintf(err, err_size, "effect %s: no channel to apply it to", info->name);
+        return -1;
+    }
+    return 0;
+}
+
+static int same_params(const fnav_imuerr_config_t *cfg, fnav_effect_id_t id, int a, int b)
+{
+    const fnav_effect_info_t *info = fnav_imuerr_effect_info(id);
+    int k;
+    for (k = 0; k < info->nparams; k++) {
+        if (fnav_imuerr_param_get(cfg, id, k, a) != fnav_imuerr_param_get(cfg, id, k, b)) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+size_t hx_effect_format(const fnav_imuerr_config_t *cfg, fnav_effect_id_t id, char *buf, size_t size)
+{
+    const fnav_effect_info_t *info = fnav_imuerr_effect_info(id);
+    uint32_t left;
+    size_t len = 0;
+    int first = 1, scalar = 1, k;
+    if (size > 0) {
+        buf[0] = '\0';
+    }
+    if (info == NULL || cfg->mask[id] == 0u) {
+        return 0;
+    }
+    for (k = 0; k < info->nparams; k++) {
+        if (info->params[k].flags & FNAV_PARAM_PER_CHANNEL) {
+            scalar = 0;
+        }
+    }
+    left = cfg->mask[id];
+    while (left != 0u) {
+        int c0 = 0, c;
+        uint32_t group = 0u;
+        while (!(left & (1u << c0))) {
+            c0++;
+        }
+        for (c = c0; c < 6; c++) {
+            if ((left & (1u << c)) && (scalar || same_params(cfg, id, c0, c))) {
+                group |= 1u << c;
+            }
+        }
+        left &= ~group;
+#define APPEND(...)                                                                  \
+    do {                                                                             \
+        int w_ = snprintf(len < size ? buf + len : NULL, len < size ? size - len : 0, __VA_ARGS__); \
+        len += (w_ > 0) ? (size_t)w_ : 0u;                                           \
+    } while (0)
+        APPEND("%s%s", first ? "" : " ", info->name);
+        first = 0;
+        if (!scalar) {
+            if (group == FNAV_CH_ALL) {
+                APPEND(":ch=all");
+            } else if (group == FNAV_CH_ACC) {
+                APPEND(":ch=acc");
+            } else if (group == FNAV_CH_GYRO) {
+                APPEND(":ch=gyro");
+            } else {
+                int sep = 0;
+                APPEND(":ch=");
+                for (c = 0; c < 6; c++) {
+                    if (group & (1u << c)) {
+                        APPEND("%s%s", sep ? "+" : "", k_ch_names[c]);
+                        sep = 1;
+                    }
+                }
+            }
+        }
+        for (k = 0; k < info->nparams; k++) {
+            APPEND(":%s=%.9g", info->params[k].name, (double)fnav_imuerr_param_get(cfg, id, k, c0));
+        }
+#undef APPEND
+    }
+    return len;
+}
+
+void hx_effect_list(FILE *f)
+{
+    int id, k;
+    fprintf(f, "Effects (--effect NAME[:ch=CH][:PARAM=VALUE]... ; NAME:off). Units SI; \"u\" is the\n"
+               "channel's unit: m/s^2 for ax ay az, rad/s for gx gy gz. Defaults shown for\n"
+               "channels ax / gy (docs/simulator.md).\n\n");
+    for (id = 0; id < (int)FNAV_EFFECT_COUNT; id++) {
+        const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)id);
+        fprintf(f, "%-11s %s%s\n", info->name, info->brief, info->allowed == FNAV_CH_GYRO ? " (gyro channels)" : "");
+        for (k = 0; k < info->nparams; k++) {
+            const fnav_effect_param_t *p = &info->params[k];
+            double a = (double)fnav_imuerr_param_get(&fnav_imuerr_config_default, (fnav_effect_id_t)id, k, 0);
+            double g = (double)fnav_imuerr_param_get(&fnav_imuerr_config_default, (fnav_effect_id_t)id, k, 4);
+            if (p->flags & FNAV_PARAM_PER_CHANNEL) {
+                fprintf(f, "    %-10s %-16s default %-11.4g / %-11.4g range [%g, %g]\n", p->name, p->unit, a, g, p->lo,
+                        p->hi);
+            } else {
+                fprintf(f, "    %-10s %-16s default %-25.4g range [%g, %g]\n", p->name, p->unit, a, p->lo, p->hi);
+            }
+        }
+    }
+}
+
+/* ------------------------------------------------------------ options */
+
+void hx_profile_bias_eq6(fnav_profile_t *p)
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        /* BS = sigma_bias sqrt(tau samples) (eq. 6), stationary sd = BS / 0.617 */
+        p->accel_bias_sigma_mps2[i] = (fnav_real_t)((double)p->accel_bias_sigma_mps2[i] *
+                                                    sqrt((double)p->accel_tau_s[i] * (double)p->rate_hz) / 0.617);
+        p->gyro_bias_sigma_rps[i] = (fnav_real_t)((double)p->gyro_bias_sigma_rps[i] *
+                                                  sqrt((double)p->gyro_tau_s[i] * (double)p->rate_hz) / 0.617);
+    }
+}
+
+static int parse_triple(const char *s, double v[3])
+{
+    char *end;
+    int i;
+    for (i = 0; i < 3; i++) {
+        v[i] = strtod(s, &end);
+        if (end == s || !isfinite(v[i])) {
+            return -1;
+        }
+        s = end;
+        if (i < 2) {
+            if (*s != ',') {
+                return -1;
+            }
+            s++;
+        }
+    }
+    return *s == '\0' ? 0 : -1;
+}
+
+int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *s)
+{
+    char err[512];
+    double rate = 200.0, dur = 0.0, over = 0.0, seed = 1.0, v;
+    const char *bs;
+    int i;
+    memset(s, 0, sizeof *s);
+    s->motion_cfg = hx_motion_config_default();
+    if (hx_arg_double(a, "--rate", 1.0, 100000.0, &rate) != 0 || hx_arg_double(a, "--duration", 1e-3, 1e6, &dur) != 0 ||
+        hx_arg_double(a, "--oversample", 1.0, 1024.0, &over) != 0 ||
+        hx_arg_double(a, "--seed", 0.0, 4294967295.0, &seed) != 0) {
+        return -1;
+    }
+    if (over != floor(over) || seed != floor(seed)) {
+        hx_error(cmd, "--oversample and --seed take whole numbers");
+        return -1;
+    }
+    s->duration_s = dur;
+    /* walking gait: two of speed, cadence, stride give the third */
+    {
+        double sp = 0.0, ca = 0.0, st = 0.0;
+        hx_gait_t *w = &s->motion_cfg.walk;
+        if (hx_arg_double(a, "--speed", 0.05, 10.0, &sp) != 0 || hx_arg_double(a, "--cadence", 20.0, 300.0, &ca) != 0 ||
+            hx_arg_double(a, "--stride", 0.05, 5.0, &st) != 0) {
+            return -1;
+        }
+        if (sp > 0.0 && ca > 0.0 && st > 0.0) {
+            hx_error(cmd, "give at most two of --speed, --cadence, --stride");
+            return -1;
+        }
+        if (ca > 0.0) {
+            w->cadence_spm = ca;
+        }
+        if (st > 0.0) {
+            w->stride_m = st;
+        }
+        if (sp > 0.0) {
+            if (st > 0.0) {
+                w->cadence_spm = 120.0 * sp / st;
+            } else {
+                w->stride_m = 120.0 * sp / w->cadence_spm;
+            }
+        }
+    }
+    v = 0.0;
+    if (hx_arg_double(a, "--impact-ms", 0.5, 200.0, &v) != 0) {
+        return -1;
+    }
+    if (v > 0.0) {
+        hx_motion_config_t *m = &s->motion_cfg;
+        m->walk.impact_s = m->run.impact_s = m->stairs_up.impact_s = m->stairs_down.impact_s = m->turn.impact_s =
+            v * 1e-3;
+    }
+    v = -1.0;
+    if (hx_arg_double(a, "--ring-scale", 0.0, 100.0, &v) != 0) {
+        return -1;
+    }
+    if (v >= 0.0) {
+        hx_motion_config_t *m = &s->motion_cfg;
+        m->walk.ring_mps2 *= v;
+        m->run.ring_mps2 *= v;
+        m->stairs_up.ring_mps2 *= v;
+        m->stairs_down.ring_mps2 *= v;
+        m->turn.ring_mps2 *= v;
+    }
+    if (hx_arg(a, "--mount") != NULL && parse_triple(hx_arg(a, "--mount"), s->motion_cfg.mount_deg) != 0) {
+        hx_error(cmd, "--mount needs R,P,Y in degrees, e.g. --mount 0,10,90");
+        return -1;
+    }
+    bs = hx_arg(a, "--bias-sigma");
+    if (bs != NULL && strcmp(bs, "given") != 0 && strcmp(bs, "eq6") != 0) {
+        hx_error(cmd, "--bias-sigma is given or eq6, not '%s'", bs);
+        return -1;
+    }
+    s->bias_eq6 = bs != NULL && strcmp(bs, "eq6") == 0;
+
+    /* sensor model: profile baseline, then the effects in order */
+    s->err = fnav_imuerr_config_default;
+    s->err.rate_hz = (fnav_real_t)rate;
+    s->err.seed = (uint32_t)seed;
+    s->err.oversample = over > 0.0 ? (uint32_t)over : (uint32_t)ceil(2000.0 / rate - 1e-9);
+    if (s->err.oversample < 1u) {
+        s->err.oversample = 1u;
+    }
+    s->profile_name = hx_arg(a, "--profile");
+    if (s->profile_name == NULL) {
+        s->profile_name = "navchip";
+    }
+    if (strcmp(s->profile_name, "none") != 0) {
+        if (hx_profile_load(s->profile_name, &s->profile, err, sizeof err) != 0) {
+            hx_error(cmd, "%s", err);
+            return -1;
+        }
+        if (s->bias_eq6) {
+            hx_profile_bias_eq6(&s->profile);
+        }
+        if (fnav_imuerr_config_from_profile(&s->err, &s->profile) != FNAV_OK) {
+            hx_error(cmd, "profile %s is not valid", s->profile_name);
+            return -1;
+        }
+        s->has_profile = 1;
+    }
+    for (i = 0; i < hx_arg_count(a, "--effect"); i++) {
+        if (hx_effect_parse(&s->err, hx_arg_at(a, "--effect", i), err, sizeof err) != 0) {
+            hx_error(cmd, "%s", err);
+            return -1;
+        }
+    }
+    {
+        fnav_imuerr_t probe;
+        if (fnav_imuerr_init(&probe, &s->err) != FNAV_OK) {
+            hx_error(cmd, "the effects are inconsistent (e.g. jumps faster than the rate, flicker tau_lo_s >= "
+                          "tau_hi_s, alias factor not whole)");
+            return -1;
+        }
+    }
+    /* a tone in the filter's stop band never reaches the output */
+    if (s->err.mask[FNAV_EFFECT_VIBRATION] != 0u && s->err.mask[FNAV_EFFECT_ALIAS] == 0u &&
+        fnav_imuerr_internal_factor(&s->err) > 1u) {
+        for (i = 0; i < 6; i++) {
+            if ((s->err.mask[FNAV_EFFECT_VIBRATION] & (1u << i)) && (double)s->err.vibration.freq_hz[i] > 0.41 * rate) {
+                hx_warn(cmd, "vibration at %g Hz lies above the anti-alias pass band (%.0f Hz at %g Hz): filtered "
+                             "out; add --effect alias to fold it into the output band",
+                        (double)s->err.vibration.freq_hz[i], 0.41 * rate, rate);
+                break;
+            }
+        }
+    }
+    s->motion_name = hx_arg(a, "--motion");
+    if (s->motion_name == NULL) {
+        s->motion_name = "walk";
+    }
+    {
+        const char *d = hx_arg(a, "--decimation");
+        if (d != NULL && strcmp(d, "fir") != 0 && strcmp(d, "mean") != 0) {
+            hx_error(cmd, "--decimation is fir or mean, not '%s'", d);
+            return -1;
+        }
+        s->decim = (d != NULL && strcmp(d, "mean") == 0) ? HX_DECIM_MEAN : HX_DECIM_FIR;
+    }
+    return 0;
+}

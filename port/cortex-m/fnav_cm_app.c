@@ -1,0 +1,125 @@
+/* The reference firmware application (see fnav_cm_app.h). */
+#include "fnav_cm_app.h"
+#include "fnav_cm_prof.h"
+
+const fnav_cm_app_config_t fnav_cm_app_config_default = {
+    FNAV_R(400.0), /* rate_hz */
+    FNAV_R(0.0),   /* nav_rate_hz: estimated, as replay */
+    4u,            /* nav_every: 100 Hz of NAV frames at 400 Hz */
+    0u,            /* sample_every */
+    400u,          /* status_every: about once a second */
+    "footnav-fw",  /* sensor */
+};
+
+fnav_status_t fnav_cm_app_init(fnav_cm_app_t *app, const fnav_cm_app_config_t *cfg)
+{
+    fnav_status_t st;
+    if (app == NULL || cfg == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!(cfg->rate_hz > FNAV_R(0.0)) || !fnav_isfinite(cfg->rate_hz) || !(cfg->nav_rate_hz >= FNAV_R(0.0)) ||
+        !fnav_isfinite(cfg->nav_rate_hz)) {
+        return FNAV_E_CONFIG;
+    }
+    app->cfg = *cfg;
+    fnav_cm_port_init(&app->port, &app->port_ctx);
+    st = fnav_cm_est_init(&app->est, cfg->rate_hz, cfg->nav_rate_hz);
+    if (st != FNAV_OK) {
+        return st;
+    }
+    app->samples = 0u;
+    app->nav_outputs = 0u;
+    app->est_errors = 0u;
+    app->last_error = FNAV_OK;
+    return FNAV_OK;
+}
+
+fnav_status_t fnav_cm_app_announce(fnav_cm_app_t *app)
+{
+    fnav_wire_info_t info;
+    const char *name = (app->cfg.sensor != NULL) ? app->cfg.sensor : "";
+    size_t i;
+    info.rate_hz = (double)app->cfg.rate_hz;
+    info.flags = FNAV_WIRE_INFO_RATE_NOMINAL | FNAV_WIRE_INFO_SEQ;
+    for (i = 0; i + 1u < sizeof info.sensor && name[i] != '\0'; i++) {
+        info.sensor[i] = name[i];
+    }
+    info.sensor[i] = '\0';
+    info.axes[0] = '\0';
+    return fnav_cm_port_send_info(&app->port_ctx, &info);
+}
+
+static void count_error(fnav_cm_app_t *app, fnav_status_t st)
+{
+    if (st < 0 && st != FNAV_E_UNSUPPORTED) {
+        app->est_errors++;
+        app->last_error = st;
+    }
+}
+
+void fnav_cm_app_process(fnav_cm_app_t *app, const fnav_sample_t *s)
+{
+    fnav_status_t st;
+    app->samples++;
+    if (app->cfg.sample_every != 0u && app->samples % app->cfg.sample_every == 0u) {
+        FNAV_CM_PROF_BEGIN(FNAV_CM_PROF_TX_SAMPLE);
+        (void)fnav_cm_port_send_sample(&app->port_ctx, s);
+        FNAV_CM_PROF_END(FNAV_CM_PROF_TX_SAMPLE);
+    }
+
+    FNAV_CM_PROF_BEGIN(FNAV_CM_PROF_NAV);
+    st = fnav_cm_est_nav(&app->est, s, &app->frame);
+    FNAV_CM_PROF_END(FNAV_CM_PROF_NAV);
+    FNAV_CM_PROF_NOTE(FNAV_CM_PROF_NAV, (st == FNAV_OK) ? app->frame.flags : FNAV_CM_PROF_TAG_NO_OUTPUT);
+    if (st == FNAV_OK) {
+        app->nav_outputs++;
+        if (app->cfg.nav_every != 0u && app->nav_outputs % app->cfg.nav_every == 0u) {
+            FNAV_CM_PROF_BEGIN(FNAV_CM_PROF_TX_NAV);
+            if (fnav_port_write_nav(&app->port, &app->frame) != FNAV_OK) {
+                /* link busy: counted in port_ctx.tx_dropped, the receiver sees the seq gap */
+            }
+            FNAV_CM_PROF_END(FNAV_CM_PROF_TX_NAV);
+        }
+    } else {
+        count_error(app, st);
+    }
+
+    FNAV_CM_PROF_BEGIN(FNAV_CM_PROF_ALLAN);
+    st = fnav_cm_est_allan(&app->est, s);
+    FNAV_CM_PROF_END(FNAV_CM_PROF_ALLAN);
+    count_error(app, st);
+
+    FNAV_CM_PROF_BEGIN(FNAV_CM_PROF_WELCH);
+    st = fnav_cm_est_welch(&app->est, s);
+    FNAV_CM_PROF_END(FNAV_CM_PROF_WELCH);
+    count_error(app, st);
+
+    if (app->cfg.status_every != 0u && app->samples % app->cfg.status_every == 0u) {
+        fnav_wire_status_t ws;
+        ws.samples = app->samples;
+        ws.overruns = app->port_ctx.ring.overruns;
+        ws.est_errors = app->est_errors;
+        ws.tx_dropped = app->port_ctx.tx_dropped;
+        ws.uptime_ms = (uint32_t)(fnav_port_now_ns(&app->port) / 1000000);
+        (void)fnav_cm_port_send_status(&app->port_ctx, &ws);
+    }
+}
+
+uint32_t fnav_cm_app_poll(fnav_cm_app_t *app)
+{
+    uint32_t n = 0u;
+    for (;;) {
+        fnav_sample_t s;
+        fnav_status_t st;
+        FNAV_CM_PROF_BEGIN(FNAV_CM_PROF_POP);
+        st = fnav_port_read(&app->port, &s);
+        FNAV_CM_PROF_END(FNAV_CM_PROF_POP);
+        if (st != FNAV_OK) {
+            return n;
+        }
+        FNAV_CM_PROF_BEGIN(FNAV_CM_PROF_SAMPLE);
+        fnav_cm_app_process(app, &s);
+        FNAV_CM_PROF_END(FNAV_CM_PROF_SAMPLE);
+        n++;
+    }
+}

@@ -1,0 +1,58 @@
+/**
+ * @file fnav_cm_app.h
+ * @brief The reference firmware application: the main loop's work, as one
+ *        caller-owned object. The sample-ready interrupt pushes samples into
+ *        the port's ring (fnav_cm_sample_isr); fnav_cm_app_poll() drains it
+ *        through the port layer, steps the estimators (fnav_cm_est.h) and
+ *        emits wire frames: NAV (decimated), optionally the raw SAMPLEs, and
+ *        STATUS counters. Portable C: the host tests run it as is.
+ */
+#ifndef FNAV_CM_APP_H
+#define FNAV_CM_APP_H
+
+#include "fnav_cm_est.h"
+#include "fnav_port_cortexm.h"
+
+/** Application settings. */
+typedef struct {
+    fnav_real_t rate_hz;     /**< nominal IMU sample rate, Hz (default 400): INFO frame, Welch */
+    fnav_real_t nav_rate_hz; /**< rate given to the navigation filter's stance detector: 0 (default)
+                                  estimates it from the first intervals, as `harness replay` does for a
+                                  log, so the sensor computes what a replay of its recording computes */
+    uint32_t nav_every;      /**< send a NAV frame every N navigation outputs (0: none; default 4) */
+    uint32_t sample_every;   /**< send every N-th raw sample as a SAMPLE frame (0: none; default 0) */
+    uint32_t status_every;   /**< send a STATUS frame every N samples (0: none; default 400) */
+    const char *sensor;      /**< sensor name for the INFO frame (default "footnav-fw") */
+} fnav_cm_app_config_t;
+
+/** Defaults (above). */
+extern const fnav_cm_app_config_t fnav_cm_app_config_default;
+
+/** The application (caller-owned, usually one static object). */
+typedef struct {
+    fnav_cm_app_config_t cfg;   /**< settings */
+    fnav_port_t port;           /**< the port layer over port_ctx */
+    fnav_cm_port_ctx_t port_ctx;/**< ring buffer and frame output */
+    fnav_cm_est_t est;          /**< the estimators */
+    fnav_nav_frame_t frame;     /**< last navigation output */
+    uint32_t samples;           /**< samples processed */
+    uint32_t nav_outputs;       /**< navigation outputs produced */
+    uint32_t est_errors;        /**< estimator failures (data errors; the state stays usable) */
+    fnav_status_t last_error;   /**< status of the last failure */
+} fnav_cm_app_t;
+
+/** Validate @p cfg and set up the port and the estimators.
+ *  @return FNAV_OK, FNAV_E_CONFIG on a bad setting, or an estimator's status. */
+FNAV_WARN_UNUSED fnav_status_t fnav_cm_app_init(fnav_cm_app_t *app, const fnav_cm_app_config_t *cfg);
+
+/** Send the INFO frame that describes the stream (call once at start). */
+fnav_status_t fnav_cm_app_announce(fnav_cm_app_t *app);
+
+/** Process every sample waiting in the ring. Main loop only.
+ *  @return number of samples processed */
+uint32_t fnav_cm_app_poll(fnav_cm_app_t *app);
+
+/** Process one sample (what fnav_cm_app_poll() does per sample). */
+void fnav_cm_app_process(fnav_cm_app_t *app, const fnav_sample_t *s);
+
+#endif /* FNAV_CM_APP_H */

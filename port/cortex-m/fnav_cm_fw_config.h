@@ -1,0 +1,36 @@
+/**
+ * @file fnav_cm_fw_config.h
+ * @brief Library options of the firmware images (`make firmware`,
+ *        `make firmware-bench`), passed as FNAV_CONFIG_FILE so that the core
+ *        and the port see the same sizes. Everything not set here keeps its
+ *        default from fnav_config.h. The harness keeps the defaults (it has
+ *        the memory); docs/firmware.md gives the RAM of each choice.
+ */
+#ifndef FNAV_CM_FW_CONFIG_H
+#define FNAV_CM_FW_CONFIG_H
+
+/* Allan (one estimator per channel; FNAV_CM_ALLAN_CHANNELS of them):
+ * a full-rate ring of 32 phase values (every tau <= 15 samples fully
+ * overlapping, exactly as Stable32), cascade levels with lags up to 4 beyond
+ * (overlap stride tau / 4 instead of 1: somewhat wider confidence intervals
+ * than the harness's stride tau / 8), one point per octave up to 2^20
+ * samples (more than 10 % of a 12-hour record at 200 Hz). 1,396 bytes per
+ * channel in float32 instead of the harness's 3,948. */
+#define FNAV_ALLAN_RING0_LOG2 5
+#define FNAV_ALLAN_CASCADE_LAG_LOG2 2
+#define FNAV_ALLAN_MAX_POINTS 21
+
+/* Welch: the paper's 64-sample Hamming segments are all the sensor runs
+ * (the harness keeps 1024 for its segment-length study): 1,392 bytes per
+ * channel instead of 20.6 KB. */
+#define FNAV_WELCH_MAX_NFFT 64
+
+/* Stance detector: windows up to 24 samples, the default 25 ms window up
+ * to 960 Hz (the paper's lowest usable rates are 200-350 Hz). */
+#define FNAV_STANCE_MAX_WINDOW 24
+
+/* Sample ring between the interrupt and the main loop: 16 samples, 40 ms at
+ * 400 Hz, far above the main loop's worst case per sample. */
+#define FNAV_CM_RING_SIZE 16u
+
+#endif /* FNAV_CM_FW_CONFIG_H */

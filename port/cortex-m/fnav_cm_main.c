@@ -1,0 +1,31 @@
+/* The reference firmware: main() of the generic Cortex-M4F image
+ * (make firmware). The board hooks of fnav_port_cortexm.h supply the IMU,
+ * the clock and the output link; without a board the image links and runs
+ * but has no samples to process. ARM only. */
+#include "fnav_cm_app.h"
+
+/* The one application object; the interrupt handler reaches the ring
+ * through it. */
+static fnav_cm_app_t g_app;
+
+/* Sample-ready interrupt (vector FNAV_CM_SAMPLE_IRQN). */
+void FNAV_CM_Sample_IRQHandler(void);
+void FNAV_CM_Sample_IRQHandler(void)
+{
+    fnav_cm_sample_isr(&g_app.port_ctx);
+}
+
+int main(void)
+{
+    fnav_cm_board_init();
+    if (fnav_cm_app_init(&g_app, &fnav_cm_app_config_default) != FNAV_OK) {
+        for (;;) {
+            fnav_cm_idle(); /* a bad build-time configuration: nothing to run */
+        }
+    }
+    (void)fnav_cm_app_announce(&g_app);
+    for (;;) {
+        (void)fnav_cm_app_poll(&g_app);
+        fnav_cm_idle();
+    }
+}

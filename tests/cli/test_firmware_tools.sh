@@ -1,0 +1,110 @@
+#!/bin/sh
+# The firmware report tools on small images with known answers:
+# port/cortex-m/tools/stack_report.py (worst-case stack from
+# -fcallgraph-info=su and the disassembly: sums along the deepest path,
+# indirect calls resolved by a table, recursion and unlisted indirect calls
+# refused) and tools/fw_size.sh (budget check). Skipped visibly without the
+# ARM toolchain.
+set -u
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+fails=0
+pass() { echo "ok   $1"; }
+fail() { echo "FAIL $1"; fails=$((fails + 1)); }
+CC=${ARM_CC:-arm-none-eabi-gcc}
+PY=${PYTHON:-/usr/bin/python3}
+if ! command -v "$CC" >/dev/null 2>&1; then
+    echo "SKIP test_firmware_tools.sh: $CC not installed"
+    exit 0
+fi
+ARCH="-mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard"
+LD="-nostartfiles --specs=nano.specs -Wl,--gc-sections -Lport/cortex-m/ld -Tcortex-m4f.ld"
+
+# a -> b -> c (volatile locals keep every frame), d called through a pointer
+cat >"$T/t.c" <<'EOF'
+#include <stdint.h>
+typedef int (*fn_t)(int);
+int c(int x);
+int b(int x);
+int a(int x);
+int d(int x);
+int Reset_Handler(void);
+int main(void);
+fn_t g_fn;
+__attribute__((noinline)) int c(int x) { volatile int v[40]; v[0] = x; return v[0]; }
+__attribute__((noinline)) int b(int x) { volatile int v[20]; v[0] = c(x); return v[0]; }
+__attribute__((noinline)) int a(int x) { volatile int v[10]; v[0] = b(x); return v[0] + g_fn(x); }
+__attribute__((noinline)) int d(int x) { volatile int v[100]; v[0] = x; return v[0]; }
+#ifdef RECURSE
+__attribute__((noinline)) int r(int x);
+__attribute__((noinline)) int r(int x) { volatile int v[4]; v[0] = x; return x > 0 ? 1 + r(x - v[0] / 2) * v[0] : 0; }
+#endif
+int main(void) { g_fn = d; return a(1)
+#ifdef RECURSE
+    + r(3)
+#endif
+    ; }
+__attribute__((used)) const uint32_t vec[2] __attribute__((section(".isr_vector"))) = { 0x20001000u, 0 };
+int Reset_Handler(void) { return main(); }
+EOF
+build() { # name extra-flags
+    (cd "$T" && $CC $ARCH -Os -fstack-usage -fcallgraph-info=su -c t.c -o "$1.o" $2) &&
+        $CC $ARCH $LD -o "$T/$1.elf" "$T/$1.o" -lc >/dev/null 2>&1
+}
+report() { # name indirect-table
+    printf '%s' "$2" >"$T/ind.txt"
+    "$PY" port/cortex-m/tools/stack_report.py --elf "$T/$1.elf" --objdump arm-none-eabi-objdump --nm arm-none-eabi-nm \
+        --indirect "$T/ind.txt" --reserve-symbol _stack_size "$T/$1.ci" >"$T/out" 2>&1
+}
+su() { awk -v f="$1" -F'\t' '{ n = split($1, p, ":"); if (p[n] == f) print $2 }' "$T/plain.su"; }
+
+if ! build plain ""; then fail "cannot build the test image"; exit 1; fi
+A=$(su a); B=$(su b); C=$(su c); D=$(su d); M=$(su main); R=$(su Reset_Handler)
+report plain "a: d
+"
+st=$?
+if [ $st -eq 0 ]; then pass "stack report on a clean image (exit 0)"; else fail "stack report failed"; cat "$T/out"; fi
+# the deepest path from Reset_Handler: Reset_Handler > main > a > max(b > c, d)
+BC=$((B + C))
+[ "$D" -gt "$BC" ] && DEEP=$D || DEEP=$BC
+WANT=$((R + M + A + DEEP))
+if grep -q "stack: Reset_Handler  *$WANT " "$T/out"; then
+    pass "worst case = sum of the -fstack-usage frames on the deepest path ($WANT bytes)"
+else
+    fail "worst case: expected $WANT bytes"; cat "$T/out"
+fi
+if grep -q "> d($D)" "$T/out"; then pass "the indirect call resolves to its table target (d, $D bytes)"; else fail "indirect target not on the path"; cat "$T/out"; fi
+
+report plain ""
+if [ $? -ne 0 ] && grep -q "a calls through a pointer and is not in" "$T/out"; then
+    pass "an indirect call missing from the table fails the report"
+else
+    fail "an unlisted indirect call was accepted"; cat "$T/out"
+fi
+
+if build rec "-DRECURSE"; then
+    report rec "a: d
+"
+    if [ $? -ne 0 ] && grep -q "recursion: r -> r" "$T/out"; then pass "recursion fails the report"; else fail "recursion not detected"; cat "$T/out"; fi
+else
+    fail "cannot build the recursive test image"
+fi
+
+# fw_size.sh: within and over budget
+if sh port/cortex-m/tools/fw_size.sh arm-none-eabi-size "$T/plain.elf" 100000 100000 >"$T/out" 2>&1; then
+    pass "fw_size.sh within budget (exit 0)"
+else
+    fail "fw_size.sh within budget"; cat "$T/out"
+fi
+if ! sh port/cortex-m/tools/fw_size.sh arm-none-eabi-size "$T/plain.elf" 10 100000 >"$T/out" 2>&1 &&
+    grep -q "FLASH OVER BUDGET" "$T/out"; then
+    pass "fw_size.sh fails over the flash budget"
+else
+    fail "fw_size.sh did not fail over budget"; cat "$T/out"
+fi
+
+if [ "$fails" -ne 0 ]; then
+    echo "test_firmware_tools.sh: $fails failure(s)"
+    exit 1
+fi
+echo "test_firmware_tools.sh: all passed"

@@ -1,0 +1,232 @@
+#!/bin/sh
+# CLI tests of `harness stream` and `harness live` over a pseudo-terminal
+# pair made by socat: a real walk streamed and received (recording identical
+# to the log), corrupt frames, dropped frames, a port that disappears, a
+# receiver killed mid-stream, usage and open errors.
+#
+# libserialport 0.1.1 refuses ptys; tests/cli/pty_seam.c (LD_PRELOAD) answers
+# the two questions a pty cannot (sysfs lookup, modem lines) and leaves every
+# other call to libserialport (docs/wire-protocol.md, "Testing without a
+# sensor"). Every harness run has a time limit and every socat is killed on
+# exit, so the test cannot hang.
+# $HARNESS is the harness binary (set by `make test-cli`).
+set -u
+H=${HARNESS:-bin/harness}
+T=$(mktemp -d)
+SOCAT=""
+LIVE=""
+STREAM=""
+LIMIT=120 # seconds for any single harness run (ASan builds are slow)
+fails=0
+pass() { echo "ok   $1"; }
+fail() { echo "FAIL $1"; fails=$((fails + 1)); }
+cleanup() {
+    for p in $STREAM $LIVE $SOCAT; do kill "$p" 2>/dev/null; done
+    for p in $STREAM $LIVE $SOCAT; do wait "$p" 2>/dev/null; done
+    rm -rf "$T"
+}
+trap cleanup EXIT
+trap 'exit 130' INT TERM
+
+if ! command -v socat >/dev/null 2>&1; then
+    echo "SKIP test_live.sh: socat is not installed (apt-get install socat)"
+    exit 0
+fi
+
+# the seam, built for this run unless given
+SEAM=${PTYSEAM:-}
+if [ -z "$SEAM" ]; then
+    SEAM=$T/pty_seam.so
+    if ! ${CC:-cc} -shared -fPIC -O2 -Wall -o "$SEAM" tests/cli/pty_seam.c -ldl 2>"$T/cc.err"; then
+        cat "$T/cc.err"
+        echo "FAIL cannot build tests/cli/pty_seam.c"
+        exit 1
+    fi
+fi
+# ASan wants to be first in the library list; the seam must be first too
+ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0"
+export ASAN_OPTIONS
+
+# wait_for CONDITION TENTHS: poll a shell condition, 0.1 s steps
+wait_for() {
+    i=0
+    while [ "$i" -lt "$2" ]; do
+        if eval "$1"; then return 0; fi
+        sleep 0.1
+        i=$((i + 1))
+    done
+    return 1
+}
+
+start_link() {
+    rm -f "$T/a" "$T/b"
+    socat -t 1 pty,raw,echo=0,link="$T/a" pty,raw,echo=0,link="$T/b" 2>>"$T/socat.log" &
+    SOCAT=$!
+    if ! wait_for '[ -L "$T/a" ] && [ -L "$T/b" ]' 100; then
+        echo "FAIL socat did not create the pty pair"
+        cat "$T/socat.log"
+        exit 1
+    fi
+    A=$(readlink "$T/a")
+    B=$(readlink "$T/b")
+}
+stop_link() {
+    if [ -n "$SOCAT" ]; then kill "$SOCAT" 2>/dev/null; wait "$SOCAT" 2>/dev/null; SOCAT=""; fi
+}
+# start_live ARGS...: live on end A in the background, once it listens
+start_live() {
+    LD_PRELOAD=$SEAM timeout $LIMIT "$H" live "$A" --print-every 0 "$@" >"$T/live.out" 2>"$T/live.err" &
+    LIVE=$!
+    if ! wait_for 'grep -q "reading" "$T/live.err"' 200; then
+        fail "live did not start"
+        cat "$T/live.err"
+    fi
+}
+wait_live() {
+    wait "$LIVE"
+    LIVE_RC=$?
+    LIVE=""
+}
+# stream ARGS...: stream to end B in the foreground
+stream() {
+    LD_PRELOAD=$SEAM timeout $LIMIT "$H" stream "$@" "$B" >"$T/stream.out" 2>"$T/stream.err"
+    STREAM_RC=$?
+}
+records() { # records in a .bin being written (header 192 B, records 48 B)
+    s=$(wc -c <"$1")
+    echo $(((s - 192) / 48))
+}
+expect_rc() { # got want description
+    if [ "$1" -eq "$2" ]; then pass "$3 (exit $1)"; else fail "$3: exit $1, expected $2"; cat "$T/live.err" "$T/stream.err" 2>/dev/null; fi
+}
+grep_in() { # file pattern description
+    if grep -q -- "$2" "$1"; then pass "$3"; else fail "$3: $1 lacks '$2'"; cat "$1"; fi
+}
+
+"$H" convert vectors/walk.bin "$T/orig.csv" >/dev/null 2>&1 || { echo "FAIL cannot convert walk.bin"; exit 1; }
+N=$(($(wc -l <"$T/orig.csv") - 1))
+
+# --- usage and open errors
+timeout $LIMIT "$H" live >/dev/null 2>&1; expect_rc $? 2 "live without PORT"
+timeout $LIMIT "$H" stream vectors/walk.bin >/dev/null 2>&1; expect_rc $? 2 "stream without PORT"
+timeout $LIMIT "$H" live --help >/dev/null 2>&1; expect_rc $? 0 "live --help"
+timeout $LIMIT "$H" live /dev/nonexistent-port >/dev/null 2>"$T/err"; expect_rc $? 3 "live on a missing port"
+grep_in "$T/err" "nonexistent-port" "the error names the port"
+timeout $LIMIT "$H" live /dev/null >/dev/null 2>"$T/err"; expect_rc $? 3 "live on /dev/null (not a serial port)"
+timeout $LIMIT "$H" live /dev/null --rate 100 >/dev/null 2>"$T/err"; expect_rc $? 2 "live --rate (resampling needs the whole log)"
+timeout $LIMIT "$H" live /dev/null --bias-model nope >/dev/null 2>"$T/err"; expect_rc $? 2 "live --bias-model nope"
+timeout $LIMIT "$H" live "$T/orig.csv" --baud 0 >/dev/null 2>&1; expect_rc $? 2 "live --baud 0"
+timeout $LIMIT "$H" stream "$T/nope.bin" /dev/null >/dev/null 2>&1; expect_rc $? 1 "stream of a missing log"
+
+start_link
+# the real libserialport path refuses a pty: this is why the seam exists
+timeout $LIMIT "$H" live "$A" >/dev/null 2>"$T/err"; expect_rc $? 3 "live on a pty without the seam"
+
+# --- a real walk, streamed and received: the recording is the log and the
+# live trajectory is the replay's, to the last digit
+start_live --record "$T/rec.bin" --out "$T/live.csv" --json "$T/live.json" --timeout 30 \
+    --plot-every 0.5 --plot "$T/live.png" --print-every 0.5
+stream vectors/walk.bin --speed 20
+expect_rc "$STREAM_RC" 0 "stream walk.bin at 20x"
+wait_live
+expect_rc "$LIVE_RC" 0 "live receives walk.bin"
+timeout $LIMIT "$H" replay vectors/walk.bin --out "$T/replay.csv" --json "$T/replay.json" >"$T/replay.out" 2>&1
+expect_rc $? 0 "replay walk.bin"
+if cmp -s "$T/live.csv" "$T/replay.csv"; then
+    pass "live trajectory identical to replay ($(($(wc -l <"$T/live.csv") - 1)) rows)"
+else
+    fail "live trajectory differs from replay"; diff "$T/live.csv" "$T/replay.csv" | head -5
+fi
+grep_in "$T/live.out" "return-to-start" "live prints the replay summary"
+grep_in "$T/live.err" "strides" "the status line shows position and stance"
+if /usr/bin/python3 -c "
+import json, sys
+a = json.load(open(sys.argv[1])); b = json.load(open(sys.argv[2]))
+keys = [k for k in b if k not in ('log', 'command')]
+bad = [k for k in keys if a.get(k) != b[k]]
+sys.exit(1 if bad else 0)" "$T/live.json" "$T/replay.json"; then
+    pass "live --json has the replay's figures"
+else
+    fail "live --json differs from replay --json"
+fi
+grep_in "$T/live.out" "$N samples over" "live counts every sample"
+grep_in "$T/live.out" "END frame, the sender sent $N samples, $N received" "END frame count matches"
+grep_in "$T/live.out" "0 bad frames, 0 lost frames" "no link errors on a clean stream"
+"$H" convert "$T/rec.bin" "$T/rec.csv" >/dev/null 2>"$T/err"
+if cmp -s "$T/rec.csv" "$T/orig.csv"; then pass "recording identical to walk.bin (every value)"; else fail "recording differs from walk.bin"; cat "$T/err"; fi
+if command -v gnuplot >/dev/null 2>&1; then
+    if [ -s "$T/live.png" ]; then pass "--plot-every drew $T/live.png"; else fail "--plot-every drew nothing"; fi
+fi
+
+# --- corrupt frames: skipped, counted, reported; the rest recorded
+start_live --record "$T/rec_c.bin" --timeout 30
+stream vectors/walk.bin --speed 40 --inject-corrupt 1000
+wait_live
+BAD=$((N / 1000))
+expect_rc "$LIVE_RC" 1 "live with corrupt frames (incomplete data)"
+grep_in "$T/live.out" "$BAD bad frames, $BAD lost frames in $BAD drops" "every corrupt frame counted and reported as a drop"
+grep_in "$T/live.err" "bad frame:" "corrupt frames are reported as they happen"
+"$H" convert "$T/rec_c.bin" "$T/rec_c.csv" >/dev/null 2>&1
+got=$(($(wc -l <"$T/rec_c.csv") - 1))
+if [ "$got" -eq $((N - BAD)) ]; then pass "recording holds every intact sample ($got)"; else fail "recording holds $got samples, expected $((N - BAD))"; fi
+
+# --- dropped frames
+start_live --record "$T/rec_d.bin" --timeout 30
+stream vectors/walk.bin --speed 40 --inject-drop 500
+wait_live
+DROP=$((N / 500))
+expect_rc "$LIVE_RC" 1 "live with dropped frames"
+grep_in "$T/live.out" "0 bad frames, $DROP lost frames in $DROP drops" "every drop counted"
+grep_in "$T/live.err" "drop: 1 frame(s) lost before frame seq 501" "the first drop is reported with its sequence number"
+grep_in "$T/live.out" "the sender sent $N samples, $((N - DROP)) received" "END count shows the missing samples"
+
+# --- the port disappears mid-stream: clean end, recording intact
+start_live --record "$T/rec_h.bin" --timeout 60
+stream vectors/walk.bin --speed 40 --hangup-after 1000
+expect_rc "$STREAM_RC" 0 "stream stops after 1000 samples without END"
+if ! wait_for '[ "$(records "$T/rec_h.bin")" -ge 1000 ]' 300; then fail "live did not record 1000 samples"; fi
+stop_link # the pty pair vanishes under live
+wait_live
+expect_rc "$LIVE_RC" 1 "live when the port disappears"
+grep_in "$T/live.err" "disappeared\|hung up\|port gone" "a clear message says the port went away"
+grep_in "$T/live.out" "recorded 1000 samples" "the summary names the recorded samples"
+timeout $LIMIT "$H" info "$T/rec_h.bin" >"$T/info.out" 2>&1
+expect_rc $? 0 "the recording is complete and closed (END record written)"
+grep_in "$T/info.out" "samples     1000" "the recording holds the 1000 samples"
+
+# --- the receiver is killed: every record written so far stays readable
+start_link
+LD_PRELOAD=$SEAM "$H" live "$A" --print-every 0 --record "$T/rec_k.bin" --timeout 30 >/dev/null 2>"$T/live.err" &
+LIVE=$!
+wait_for 'grep -q "reading" "$T/live.err"' 200
+LD_PRELOAD=$SEAM timeout $LIMIT "$H" stream vectors/walk.bin "$B" --speed 4 >/dev/null 2>&1 &
+STREAM=$!
+wait_for '[ -f "$T/rec_k.bin" ] && [ "$(records "$T/rec_k.bin")" -ge 300 ]' 300
+kill -9 "$LIVE" 2>/dev/null
+wait "$LIVE" 2>/dev/null
+LIVE=""
+kill "$STREAM" 2>/dev/null
+wait "$STREAM" 2>/dev/null
+STREAM=""
+timeout $LIMIT "$H" convert "$T/rec_k.bin" "$T/rec_k.csv" >/dev/null 2>"$T/err"
+expect_rc $? 1 "a killed recording reads as truncated (no END record)"
+grep_in "$T/err" "no end record" "the reader says the recording was not closed"
+k=$(($(wc -l <"$T/rec_k.csv") - 1))
+if [ "$k" -ge 300 ] && head -n $((k + 1)) "$T/orig.csv" | cmp -s - "$T/rec_k.csv"; then
+    pass "all $k samples recorded before the kill are intact"
+else
+    fail "the killed recording ($k samples) is not a prefix of the log"
+fi
+
+# --- nobody sends: --timeout ends the run
+start_live --timeout 1
+wait_live
+expect_rc "$LIVE_RC" 1 "live --timeout with no sender"
+grep_in "$T/live.err" "no valid frame for" "the timeout is explained"
+stop_link
+
+if [ "$fails" -ne 0 ]; then
+    echo "test_live.sh: $fails failure(s)"
+    exit 1
+fi
+echo "test_live.sh: all passed"

@@ -1,0 +1,46 @@
+#!/bin/sh
+# CLI tests of `harness montecarlo` and of a simulated closed loop replayed
+# through the filter (issue 5 acceptance). $HARNESS is the harness binary
+# (set by `make test-cli`).
+set -u
+H=${HARNESS:-bin/harness}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+fails=0
+pass() { echo "ok   $1"; }
+fail() { echo "FAIL $1"; fails=$((fails + 1)); }
+expect_exit() { # expected-code description command...
+    want=$1; what=$2; shift 2
+    "$@" >"$T/out" 2>"$T/err"; got=$?
+    if [ "$got" -eq "$want" ]; then pass "$what (exit $got)"; else fail "$what: exit $got, expected $want"; cat "$T/err"; fi
+}
+expect_err() {
+    if grep -q -- "$1" "$T/err"; then pass "$2"; else fail "$2: stderr lacks '$1'"; cat "$T/err"; fi
+}
+
+expect_exit 0 "montecarlo --help" "$H" montecarlo --help
+expect_exit 2 "bad effect" "$H" montecarlo --effect wobble
+"$H" montecarlo --seeds 1 --duration 8 --quiet >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" -eq 0 ]; then pass "montecarlo small run (exit 0)"; else fail "montecarlo small run: exit $rc"; cat "$T/err"; fi
+expect_exit 2 "bad --bias-model" "$H" montecarlo --bias-model maybe
+expect_exit 0 "montecarlo with outputs" "$H" montecarlo --motion "stand:5,walk:10,stand:2" --seeds 3 \
+    --bias-model both --json "$T/mc.json" --csv "$T/mc.csv" --quiet
+if grep -q '"variants"' "$T/mc.json" && grep -q '"nees"' "$T/mc.json"; then pass "JSON has variants and NEES"; else fail "JSON content"; fi
+if head -1 "$T/mc.csv" | grep -q "^variant,t_s,odo_m,n,rms_h_m"; then pass "CSV header"; else fail "CSV header"; fi
+if grep -q "^off," "$T/mc.csv" && grep -q "^ar1," "$T/mc.csv"; then pass "both variants in the CSV"; else fail "variants in CSV"; fi
+expect_exit 3 "unwritable JSON" "$H" montecarlo --motion "stand:5,walk:3" --seeds 1 --quiet --json "$T/no/dir/x.json"
+
+# Acceptance: a simulated closed-loop walk replayed through `harness replay`
+# closes to within the filter's predicted uncertainty (3 sigma of the
+# horizontal position at the end).
+expect_exit 0 "simulate a closed loop" "$H" sim --motion loop --rate 200 --profile navchip --seed 11 --out "$T/loop.bin"
+expect_exit 0 "replay the loop" "$H" replay "$T/loop.bin" --profile navchip --out "$T/traj.csv" --quiet
+awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+         { x = $c["x"]; y = $c["y"]; px = $c["P_pos_x"]; py = $c["P_pos_y"] }
+         END { e = sqrt(x * x + y * y); s = sqrt(px + py);
+               printf "loop closes to %.3f m, predicted horizontal sd %.3f m\n", e, s;
+               exit !(e <= 3 * s) }' "$T/traj.csv"
+if [ $? -eq 0 ]; then pass "loop closes within 3 sigma"; else fail "loop does not close within 3 sigma"; fi
+
+if [ "$fails" -ne 0 ]; then echo "test_montecarlo.sh: $fails failure(s)"; exit 1; fi
+echo "test_montecarlo.sh: all passed"

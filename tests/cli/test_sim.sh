@@ -1,0 +1,99 @@
+#!/bin/sh
+# CLI tests of `harness sim`: usage errors, outputs (.bin, CSV, truth),
+# determinism, and effects visible to `harness info`.
+# $HARNESS is the harness binary (set by `make test-cli`).
+set -u
+H=${HARNESS:-bin/harness}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+fails=0
+pass() { echo "ok   $1"; }
+fail() { echo "FAIL $1"; fails=$((fails + 1)); }
+expect_exit() { # expected-code description command...
+    want=$1; what=$2; shift 2
+    "$@" >"$T/out" 2>"$T/err"; got=$?
+    if [ "$got" -eq "$want" ]; then pass "$what (exit $got)"; else fail "$what: exit $got, expected $want"; cat "$T/err"; fi
+}
+expect_err() {
+    if grep -q -- "$1" "$T/err"; then pass "$2"; else fail "$2: stderr lacks '$1'"; cat "$T/err"; fi
+}
+expect_out() {
+    if grep -q -- "$1" "$T/out"; then pass "$2"; else fail "$2: stdout lacks '$1'"; cat "$T/out"; fi
+}
+
+# --- usage and bad input: one-line errors, exit 2 (3 for outputs)
+expect_exit 0 "sim --help" "$H" sim --help
+expect_exit 2 "sim without --out" "$H" sim
+expect_err "--out LOG is required" "missing --out is named"
+expect_exit 0 "sim --list-effects" "$H" sim --list-effects
+for e in white ar1 offset quant flicker rrw ramp thermal vibration jumps saturation scale misalign gsens \
+         jitter dropout duplicate alias; do
+    if grep -q "^$e " "$T/out"; then pass "catalogue lists $e"; else fail "catalogue lacks $e"; fi
+done
+expect_exit 2 "unknown effect" "$H" sim --out "$T/x.bin" --effect wobble
+expect_err "unknown effect 'wobble'" "unknown effect is named"
+expect_exit 2 "bad effect parameter" "$H" sim --out "$T/x.bin" --effect quant:size=3
+expect_err "has no parameter 'size'" "bad parameter is named"
+expect_exit 2 "effect value out of range" "$H" sim --out "$T/x.bin" --effect dropout:prob=1.5
+expect_err "outside" "range error"
+expect_exit 2 "unknown motion" "$H" sim --out "$T/x.bin" --motion fly
+expect_err "unknown motion 'fly'" "unknown motion is named"
+expect_exit 2 "bad motion script" "$H" sim --out "$T/x.bin" --motion stand:5,walk:abc
+expect_exit 2 "unknown profile" "$H" sim --out "$T/x.bin" --profile nosuchprofile
+expect_exit 2 "bad rate" "$H" sim --out "$T/x.bin" --rate -5
+expect_exit 2 "three gait figures" "$H" sim --out "$T/x.bin" --speed 1 --cadence 100 --stride 1
+expect_exit 2 "sample jitter through the filter" "$H" sim --out "$T/x.bin" --effect jitter:sample_s=1e-4
+expect_err "sample_s" "sample jitter error explains"
+expect_exit 2 "bad --decimation" "$H" sim --out "$T/x.bin" --decimation cubic
+expect_err "fir or mean" "decimation error lists the kinds"
+expect_exit 0 "integrating sensor" "$H" sim --out "$T/m.bin" --duration 3 --rate 100 --decimation mean
+expect_out "interval means" "summary names the decimation"
+expect_exit 3 "unwritable output" "$H" sim --out "$T/no/such/dir/x.bin" --duration 2
+expect_exit 3 "unwritable truth" "$H" sim --out "$T/x.bin" --truth "$T/no/such/dir/t.csv" --duration 2
+
+# --- a walk: .bin log, truth CSV, summary
+expect_exit 0 "sim walk 20 s" "$H" sim --motion walk --duration 20 --rate 100 --out "$T/w.bin" --truth "$T/t.csv"
+expect_out "samples     2001 written" "2001 samples at 100 Hz over 20 s"
+expect_out "anti-alias FIR" "filtered by default"
+n=$(wc -l <"$T/t.csv")
+if [ "$n" -eq 2002 ]; then pass "truth has a row per tick"; else fail "truth rows $n, expected 2002"; fi
+if head -1 "$T/t.csv" | grep -q "^t,seq,count,px,py,pz,vx,vy,vz,qw,qx,qy,qz,roll,pitch,yaw,fx,fy,fz,wx,wy,wz,still,zero_vel,phase,leg,odo,bax,bay,baz,bgx,bgy,bgz$"; then
+    pass "truth header"; else fail "truth header"; head -1 "$T/t.csv"; fi
+expect_exit 0 "info reads the simulated log" "$H" info "$T/w.bin"
+expect_out "rate        100.000 Hz (nominal)" "nominal rate in the header"
+expect_out "gravity along -z" "gravity along -z at rest"
+expect_out "samples     2001" "info sample count"
+
+# --- CSV output and determinism
+expect_exit 0 "sim to CSV" "$H" sim --duration 5 --rate 200 --seed 7 --out "$T/a.csv"
+expect_exit 0 "same seed again" "$H" sim --duration 5 --rate 200 --seed 7 --out "$T/b.csv"
+if cmp -s "$T/a.csv" "$T/b.csv"; then pass "same seed, same log"; else fail "same seed gave different logs"; fi
+expect_exit 0 "another seed" "$H" sim --duration 5 --rate 200 --seed 8 --out "$T/c.csv"
+if cmp -s "$T/a.csv" "$T/c.csv"; then fail "different seeds gave the same log"; else pass "different seed, different log"; fi
+if head -1 "$T/a.csv" | grep -q "^t,ax,ay,az,gx,gy,gz$"; then pass "CSV header"; else fail "CSV header"; fi
+n=$(wc -l <"$T/a.csv")
+if [ "$n" -eq 1002 ]; then pass "CSV rows"; else fail "CSV rows $n, expected 1002"; fi
+expect_exit 0 "CSV on stdout" "$H" sim --duration 1 --rate 100 --out -
+n=$(wc -l <"$T/out")
+if [ "$n" -eq 102 ]; then pass "CSV on stdout rows"; else fail "stdout rows $n, expected 102"; fi
+
+# --- effects that `harness info` sees
+expect_exit 0 "dropout + duplicate" "$H" sim --duration 20 --rate 100 --out "$T/d.bin" \
+    --effect dropout:prob=0.05 --effect duplicate:prob=0.05
+expect_exit 0 "info on drops" "$H" info "$T/d.bin"
+if grep -Eq "^drops +[1-9]" "$T/out"; then pass "drops visible in the counter"; else fail "no drops"; cat "$T/out"; fi
+if grep -Eq "^duplicates +[1-9]" "$T/out"; then pass "duplicates visible"; else fail "no duplicates"; cat "$T/out"; fi
+expect_exit 0 "saturation at 4 g" "$H" sim --motion run --duration 15 --rate 200 --out "$T/s.bin" \
+    --effect saturation:ch=acc:range=39.2266
+expect_exit 0 "info on clipping" "$H" info "$T/s.bin"
+if grep -Eq "^saturation .*a[xyz] [1-9]" "$T/out"; then pass "clipping visible"; else fail "no clipping"; cat "$T/out"; fi
+expect_exit 0 "thermal writes temperature" "$H" sim --duration 3 --rate 100 --out "$T/th.csv" --effect thermal
+if head -1 "$T/th.csv" | grep -q ",temp$"; then pass "temperature column"; else fail "no temperature column"; fi
+expect_exit 0 "every scenario" sh -c "for m in stand walk run stairs elevator loop paper mixed; do \
+    \"$H\" sim --motion \$m --rate 100 --out \"$T/m.bin\" >/dev/null || exit 1; done"
+expect_exit 0 "a script with every leg" "$H" sim --motion "stand:2,walk:5:30,run:6,stairs-up:4,turn:90,stairs-down:4,elevator:3,home,stand:2" \
+    --rate 100 --out "$T/s2.bin"
+expect_out "ends at (0.000, 0.000, -3.000)" "script ends at the start, 3 m up (elevator)"
+
+if [ "$fails" -ne 0 ]; then echo "test_sim.sh: $fails failure(s)"; exit 1; fi
+echo "test_sim.sh: all passed"

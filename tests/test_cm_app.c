@@ -1,0 +1,243 @@
+/* The Cortex-M reference firmware's application and port, compiled for the
+ * host: interrupt-to-main-loop path through the ring and the port layer,
+ * the frames it emits (decoded with the wire decoder, as a receiver would),
+ * ring overruns, a busy output link, configuration errors. The board hooks
+ * are the test's own strong definitions of the port's weak functions. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "fnav_cm_app.h"
+
+/* ---- the test board ---- */
+
+static uint32_t g_imu_next;           /* sample counter of the fake IMU */
+static int g_imu_absent;
+static uint8_t g_link[1 << 17];       /* everything sent */
+static size_t g_link_n;
+static int g_busy_every;              /* refuse every N-th frame (0: never) */
+static int g_writes;
+
+static fnav_sample_t make_sample(uint32_t k)
+{
+    fnav_sample_t s;
+    int i;
+    memset(&s, 0, sizeof s);
+    s.t_ns = (int64_t)k * 2500000;
+    s.seq = k;
+    s.flags = FNAV_SAMPLE_HAS_SEQ;
+    for (i = 0; i < 3; i++) {
+        s.accel_mps2[i] = (fnav_real_t)(0.25 * (double)(i + 1) + (double)k);
+        s.gyro_rps[i] = (fnav_real_t)(-0.125 * (double)(i + 1) - (double)k / 1024.0);
+    }
+    return s;
+}
+
+int fnav_cm_imu_read(fnav_sample_t *s)
+{
+    if (g_imu_absent) {
+        return -1;
+    }
+    *s = make_sample(g_imu_next++);
+    return 0;
+}
+
+int fnav_cm_out_write(const void *bytes, uint32_t n)
+{
+    g_writes++;
+    if (g_busy_every > 0 && g_writes % g_busy_every == 0) {
+        return -1;
+    }
+    assert_true(g_link_n + n <= sizeof g_link);
+    memcpy(g_link + g_link_n, bytes, n);
+    g_link_n += n;
+    return 0;
+}
+
+static void reset_board(void)
+{
+    g_imu_next = 0;
+    g_imu_absent = 0;
+    g_link_n = 0;
+    g_busy_every = 0;
+    g_writes = 0;
+}
+
+/* ---- the receiving end ---- */
+
+typedef struct {
+    fnav_wire_decoder_t dec;
+    uint32_t by_type[6];
+    uint32_t samples_ok;          /* echoed samples equal to what the IMU gave */
+    fnav_wire_status_t last_status;
+    fnav_wire_info_t info;
+} rx_t;
+
+static void receive(rx_t *rx)
+{
+    size_t pos = 0;
+    fnav_wire_decoder_init(&rx->dec);
+    memset(rx->by_type, 0, sizeof rx->by_type);
+    rx->samples_ok = 0;
+    for (;;) {
+        size_t used;
+        fnav_wire_frame_t f;
+        if (fnav_wire_decode(&rx->dec, g_link + pos, g_link_n - pos, &used, &f) != FNAV_OK) {
+            break;
+        }
+        pos += used;
+        assert_true(f.type >= 1 && f.type <= 5);
+        rx->by_type[f.type]++;
+        if (f.type == FNAV_WIRE_SAMPLE) {
+            fnav_sample_t s, want;
+            assert_int_equal(fnav_wire_parse_sample(&f, &s), FNAV_OK);
+            want = make_sample(s.seq);
+            if (s.t_ns == want.t_ns && s.accel_mps2[2] == want.accel_mps2[2] && s.gyro_rps[0] == want.gyro_rps[0]) {
+                rx->samples_ok++;
+            }
+        } else if (f.type == FNAV_WIRE_STATUS) {
+            assert_int_equal(fnav_wire_parse_status(&f, &rx->last_status), FNAV_OK);
+        } else if (f.type == FNAV_WIRE_INFO) {
+            assert_int_equal(fnav_wire_parse_info(&f, &rx->info), FNAV_OK);
+        }
+    }
+    assert_int_equal(pos, g_link_n);
+    assert_int_equal(rx->dec.stats.bad_frames, 0);
+}
+
+/* ---- tests ---- */
+
+static void test_config(void **state)
+{
+    static fnav_cm_app_t app;
+    fnav_cm_app_config_t cfg = fnav_cm_app_config_default;
+    (void)state;
+    reset_board();
+    assert_int_equal(fnav_cm_app_init(&app, NULL), FNAV_E_ARG);
+    cfg.rate_hz = FNAV_R(0.0);
+    assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_E_CONFIG);
+    cfg.rate_hz = (fnav_real_t)NAN;
+    assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_E_CONFIG);
+    cfg = fnav_cm_app_config_default;
+    cfg.nav_rate_hz = -FNAV_R(1.0);
+    assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_E_CONFIG);
+    cfg = fnav_cm_app_config_default;
+    assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_OK);
+    assert_int_equal(app.samples, 0);
+}
+
+/* Interrupts feed the ring; the main loop drains it through the port
+ * layer, echoes every sample and reports its counters. */
+static void test_isr_to_frames(void **state)
+{
+    static fnav_cm_app_t app;
+    static rx_t rx;
+    fnav_cm_app_config_t cfg = fnav_cm_app_config_default;
+    uint32_t i, processed = 0;
+    (void)state;
+    reset_board();
+    cfg.sample_every = 1;
+    cfg.status_every = 100;
+    cfg.sensor = "test-board";
+    assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_OK);
+    assert_int_equal(fnav_cm_app_announce(&app), FNAV_OK);
+    for (i = 0; i < 1000; i++) {
+        fnav_cm_sample_isr(&app.port_ctx);
+        if (i % 7 == 6) { /* the main loop runs now and then, several samples waiting */
+            processed += fnav_cm_app_poll(&app);
+        }
+    }
+    processed += fnav_cm_app_poll(&app);
+    assert_int_equal(processed, 1000);
+    assert_int_equal(app.samples, 1000);
+    assert_int_equal(app.port_ctx.ring.overruns, 0);
+    assert_int_equal(app.est_errors, 0); /* estimators not built: not an error */
+    receive(&rx);
+    assert_int_equal(rx.by_type[FNAV_WIRE_INFO], 1);
+    assert_string_equal(rx.info.sensor, "test-board");
+    assert_true(rx.info.rate_hz == 400.0);
+    assert_int_equal(rx.by_type[FNAV_WIRE_SAMPLE], 1000);
+    assert_int_equal(rx.samples_ok, 1000);
+    assert_int_equal(rx.by_type[FNAV_WIRE_STATUS], 10);
+    assert_int_equal(rx.last_status.samples, 1000);
+    /* a NAV frame for every nav_every-th navigation output (none without the filter) */
+    assert_int_equal(rx.by_type[FNAV_WIRE_NAV], app.nav_outputs / cfg.nav_every);
+    if (!(fnav_cm_est_built() & 1u)) {
+        assert_int_equal(app.nav_outputs, 0);
+    }
+    assert_int_equal(rx.dec.stats.lost, 0);
+    assert_int_equal(app.port_ctx.frames, 1 + 1000 + 10 + rx.by_type[FNAV_WIRE_NAV]);
+}
+
+/* A main loop that falls behind: the ring keeps the oldest samples, counts
+ * the rest as overruns, and STATUS tells the receiver. */
+static void test_ring_overrun(void **state)
+{
+    static fnav_cm_app_t app;
+    static rx_t rx;
+    fnav_cm_app_config_t cfg = fnav_cm_app_config_default;
+    uint32_t i;
+    (void)state;
+    reset_board();
+    cfg.sample_every = 1;
+    cfg.nav_every = 0; /* only the raw stream: this test is about the ring */
+    cfg.status_every = FNAV_CM_RING_SIZE;
+    assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_OK);
+    for (i = 0; i < FNAV_CM_RING_SIZE + 9u; i++) {
+        fnav_cm_sample_isr(&app.port_ctx);
+    }
+    assert_int_equal(app.port_ctx.ring.overruns, 9);
+    assert_int_equal(fnav_cm_app_poll(&app), FNAV_CM_RING_SIZE);
+    receive(&rx);
+    assert_int_equal(rx.by_type[FNAV_WIRE_SAMPLE], FNAV_CM_RING_SIZE);
+    assert_int_equal(rx.samples_ok, FNAV_CM_RING_SIZE);
+    assert_int_equal(rx.by_type[FNAV_WIRE_STATUS], 1);
+    assert_int_equal(rx.last_status.overruns, 9);
+    /* no IMU: the interrupt pushes nothing */
+    g_imu_absent = 1;
+    fnav_cm_sample_isr(&app.port_ctx);
+    assert_int_equal(fnav_cm_app_poll(&app), 0);
+}
+
+/* A busy link: the refused frames are counted by the sender and show up
+ * as sequence gaps (drops) at the receiver. */
+static void test_busy_link(void **state)
+{
+    static fnav_cm_app_t app;
+    static rx_t rx;
+    fnav_cm_app_config_t cfg = fnav_cm_app_config_default;
+    uint32_t i;
+    (void)state;
+    reset_board();
+    g_busy_every = 10;
+    cfg.sample_every = 1;
+    cfg.nav_every = 0; /* only the raw stream: this test is about the link */
+    cfg.status_every = 0;
+    assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_OK);
+    for (i = 0; i < 200; i++) {
+        fnav_cm_sample_isr(&app.port_ctx);
+        (void)fnav_cm_app_poll(&app);
+    }
+    assert_int_equal(app.port_ctx.tx_dropped, 20);
+    receive(&rx);
+    assert_int_equal(rx.by_type[FNAV_WIRE_SAMPLE], 180);
+    /* frames 10, 20, ..., 200 were refused; the last one is the last frame
+     * sent, so no later frame reveals it: 19 gaps of one frame */
+    assert_int_equal(rx.dec.stats.lost, 19);
+    assert_int_equal(rx.dec.stats.gaps, 19);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_config),
+        cmocka_unit_test(test_isr_to_frames),
+        cmocka_unit_test(test_ring_overrun),
+        cmocka_unit_test(test_busy_link),
+    };
+    return cmocka_run_group_tests_name("cm_app", tests, NULL, NULL);
+}

@@ -1,0 +1,291 @@
+/* Tests of the Monte Carlo engine (harness/hx_mc.h) with oracle navigators
+ * whose errors are drawn from the covariance they report: the average NEES
+ * must sit in its chi-square band, the RMS error must match the predicted
+ * standard deviation; an over-confident oracle (covariance / 4) must be
+ * flagged. Also the frame convention (x along the sensor's initial heading)
+ * and the pairing of estimates with the truth through the sample counter. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "hx_mc.h"
+#include "support/fnav_testdata.h"
+
+typedef struct {
+    const hx_motion_t *m;
+    double scale;        /* reported covariance = true covariance * scale */
+    fnav_rng_t rng;
+    double yaw0;
+    hx_mc_est_t pending[4];
+    int npending;
+    int started;
+} oracle_t;
+
+static void qmul(const double a[4], const double b[4], double r[4])
+{
+    r[0] = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
+    r[1] = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
+    r[2] = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
+    r[3] = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
+}
+
+static int o_start(void *ctx, double rate, int run)
+{
+    oracle_t *o = (oracle_t *)ctx;
+    hx_truth_t t;
+    (void)rate;
+    /* the same error draws for both oracles of a run: paired variants */
+    fnav_rng_seed(&o->rng, 1000u + (uint32_t)run, 7u);
+    hx_motion_eval(o->m, 0.0, &t);
+    o->yaw0 = t.euler_rad[2];
+    o->npending = 0;
+    o->started = 1;
+    return 0;
+}
+
+/* Lower-triangular factor A of the true covariance at time t (position
+ * sd grows with time and is correlated between x and y). */
+static void factor(double t, double A[15][15])
+{
+    double sp = 0.02 + 0.01 * t;
+    int i;
+    memset(A, 0, sizeof(double) * 225);
+    for (i = 0; i < 3; i++) {
+        A[i][i] = 0.01;       /* attitude, rad */
+        A[3 + i][3 + i] = 0.05; /* velocity */
+        A[6 + i][6 + i] = sp;
+        A[9 + i][9 + i] = 1e-3;
+        A[12 + i][12 + i] = 2e-2;
+    }
+    A[7][6] = 0.8 * sp; /* correlated horizontal position */
+    A[0][2] = 0.0;
+}
+
+static int o_push(void *ctx, const fnav_sample_t *s)
+{
+    oracle_t *o = (oracle_t *)ctx;
+    hx_mc_est_t *e;
+    hx_truth_t t;
+    double A[15][15], z[15], d[15], ang, dq[4], qf[4], qz[4], cz, sz;
+    int i, j;
+    if (o->npending >= 4) {
+        return -1;
+    }
+    e = &o->pending[o->npending++];
+    memset(e, 0, sizeof *e);
+    e->seq = s->seq;
+    e->valid = 1;
+    hx_motion_eval(o->m, (double)s->t_ns * 1e-9, &t);
+    factor(t.t_s, A);
+    for (i = 0; i < 15; i++) {
+        z[i] = (double)fnav_rng_gauss(&o->rng);
+    }
+    for (i = 0; i < 15; i++) {
+        d[i] = 0.0;
+        for (j = 0; j < 15; j++) {
+            d[i] += A[i][j] * z[j];
+        }
+    }
+    for (i = 0; i < 15; i++) {
+        for (j = 0; j < 15; j++) {
+            int k;
+            double v = 0.0;
+            for (k = 0; k < 15; k++) {
+                v += A[i][k] * A[j][k];
+            }
+            e->P[i][j] = v * o->scale;
+        }
+    }
+    /* truth in the filter frame (rotated by -yaw0), plus the error */
+    cz = cos(o->yaw0);
+    sz = sin(o->yaw0);
+    qz[0] = cos(0.5 * o->yaw0);
+    qz[1] = qz[2] = 0.0;
+    qz[3] = -sin(0.5 * o->yaw0);
+    qmul(qz, t.q_nb, qf);
+    e->pos_m[0] = cz * t.pos_m[0] + sz * t.pos_m[1] + d[6];
+    e->pos_m[1] = -sz * t.pos_m[0] + cz * t.pos_m[1] + d[7];
+    e->pos_m[2] = t.pos_m[2] + d[8];
+    e->vel_mps[0] = cz * t.vel_mps[0] + sz * t.vel_mps[1] + d[3];
+    e->vel_mps[1] = -sz * t.vel_mps[0] + cz * t.vel_mps[1] + d[4];
+    e->vel_mps[2] = t.vel_mps[2] + d[5];
+    for (i = 0; i < 3; i++) {
+        e->gyro_bias_rps[i] = d[9 + i];
+        e->accel_bias_mps2[i] = d[12 + i];
+    }
+    /* q_true = dq (x) q_est with dq = exp(d_att): q_est = dq^-1 (x) q_true */
+    ang = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    dq[0] = cos(0.5 * ang);
+    for (i = 0; i < 3; i++) {
+        dq[1 + i] = -(ang > 0.0 ? sin(0.5 * ang) / ang : 0.5) * d[i];
+    }
+    qmul(dq, qf, e->q_nb);
+    return 0;
+}
+
+static int o_pop(void *ctx, hx_mc_est_t *est)
+{
+    oracle_t *o = (oracle_t *)ctx;
+    if (o->npending == 0) {
+        return 0;
+    }
+    *est = o->pending[0];
+    memmove(&o->pending[0], &o->pending[1], (size_t)(o->npending - 1) * sizeof o->pending[0]);
+    o->npending--;
+    return 1;
+}
+
+static void o_finish(void *ctx)
+{
+    (void)ctx;
+}
+
+static hx_mc_nav_t make_nav(const char *name, oracle_t *o)
+{
+    hx_mc_nav_t n;
+    n.name = name;
+    n.ctx = o;
+    n.start = o_start;
+    n.push = o_push;
+    n.pop = o_pop;
+    n.finish = o_finish;
+    return n;
+}
+
+static void run_oracles(double mount_yaw_deg, const char *effect)
+{
+    char err[256];
+    hx_motion_config_t mc = hx_motion_config_default();
+    hx_motion_t *m;
+    hx_mc_config_t cfg;
+    hx_mc_result_t res;
+    oracle_t good, over;
+    hx_mc_nav_t navs[2];
+    double lo, hi;
+    int b, in_good = 0, in_over = 0, nb, g;
+    mc.mount_deg[2] = mount_yaw_deg;
+    m = hx_motion_create(&mc, "stand:2,walk:30:90,stand:1", 0.0, err, sizeof err);
+    assert_non_null(m);
+    memset(&good, 0, sizeof good);
+    memset(&over, 0, sizeof over);
+    good.m = over.m = m;
+    good.scale = 1.0;
+    over.scale = 0.25;
+    navs[0] = make_nav("consistent", &good);
+    navs[1] = make_nav("overconfident", &over);
+    cfg.sim.motion = m;
+    cfg.sim.err = fnav_imuerr_config_default;
+    cfg.sim.err.rate_hz = (fnav_real_t)50.0;
+    cfg.sim.err.oversample = 1u;
+    cfg.sim.err.seed = 5u;
+    cfg.sim.duration_s = 0.0;
+    cfg.sim.decim = HX_DECIM_FIR;
+    if (effect != NULL) {
+        assert_int_equal(hx_effect_parse(&cfg.sim.err, effect, err, sizeof err), 0);
+    }
+    cfg.runs = 50;
+    cfg.bin_s = 1.0;
+    assert_int_equal(hx_mc_run(&cfg, navs, 2, &res, NULL, NULL, err, sizeof err), 0);
+    assert_int_equal(res.nvar, 2);
+    assert_int_equal(res.runs, 50);
+    assert_int_equal(res.var[0].nonfinite, 0);
+    nb = res.var[0].nbins;
+    assert_true(nb >= 25);
+    FNAV_ASSERT_CLOSE(res.distance_m, 30.0, 1e-6, 0.0);
+    for (g = 0; g < HX_NEES_COUNT; g++) {
+        in_good = 0;
+        in_over = 0;
+        for (b = 0; b < nb; b++) {
+            const hx_mc_bin_t *x = &res.var[0].bins[b], *y = &res.var[1].bins[b];
+            assert_int_equal(x->n_nees[g], x->n);
+            hx_nees_band(x->n_nees[g], hx_nees_dim[g], 0.05, &lo, &hi);
+            in_good += x->nees[g] >= lo && x->nees[g] <= hi;
+            in_over += y->nees[g] >= lo && y->nees[g] <= hi;
+            /* the over-confident oracle reports a quarter of the covariance */
+            FNAV_ASSERT_CLOSE(y->nees[g], 4.0 * x->nees[g], 0.0, 1e-9);
+        }
+        /* 95 % bands: expect ~95 % of the bins inside for the consistent one */
+        if (in_good < (int)(0.85 * nb) || in_over > 0) {
+            fprintf(stderr, "NEES %s: %d / %d bins in band (consistent), %d (over-confident)\n", hx_nees_name[g],
+                    in_good, nb, in_over);
+            fail();
+        }
+    }
+    for (b = 0; b < nb; b++) {
+        const hx_mc_bin_t *x = &res.var[0].bins[b];
+        assert_int_equal(x->n, 50);
+        /* RMS horizontal error matches the predicted sd (100 dof: ~7 %) */
+        FNAV_ASSERT_CLOSE(x->rms_h_m, x->pred_h_m, 0.0, 0.3);
+        FNAV_ASSERT_CLOSE(res.var[1].bins[b].rms_h_m, x->rms_h_m, 0.0, 1e-12); /* same errors */
+    }
+    hx_mc_result_free(&res);
+    hx_motion_free(m);
+}
+
+static void test_consistent_and_overconfident(void **state)
+{
+    (void)state;
+    run_oracles(0.0, NULL);
+}
+
+/* The sensor mounted at 30 degrees of yaw: the filter's frame is the
+ * sensor's initial heading, the engine rotates the truth into it. */
+static void test_filter_frame(void **state)
+{
+    (void)state;
+    run_oracles(30.0, NULL);
+}
+
+/* Dropped and duplicated samples: estimates are matched by the counter. */
+static void test_drops_and_duplicates(void **state)
+{
+    (void)state;
+    run_oracles(0.0, "dropout:prob=0.1");
+    run_oracles(0.0, "duplicate:prob=0.1");
+}
+
+static void test_band(void **state)
+{
+    double lo, hi;
+    (void)state;
+    /* one run of dimension 3: the chi-square(3) 95 % interval */
+    hx_nees_band(1, 3, 0.05, &lo, &hi);
+    FNAV_ASSERT_CLOSE(lo, 0.2157952826, 1e-8, 0.0); /* scipy.stats.chi2.ppf(0.025, 3) */
+    FNAV_ASSERT_CLOSE(hi, 9.3484036045, 1e-8, 0.0); /* scipy.stats.chi2.ppf(0.975, 3) */
+    /* 50 runs of dimension 3 */
+    hx_nees_band(50, 3, 0.05, &lo, &hi);
+    FNAV_ASSERT_CLOSE(lo, 2.36, 0.01, 0.0);
+    FNAV_ASSERT_CLOSE(hi, 3.72, 0.01, 0.0);
+}
+
+static void test_bad_config(void **state)
+{
+    hx_mc_config_t cfg;
+    hx_mc_result_t res;
+    char err[256];
+    oracle_t o;
+    hx_mc_nav_t n = make_nav("x", &o);
+    (void)state;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.runs = 0;
+    assert_int_equal(hx_mc_run(&cfg, &n, 1, &res, NULL, NULL, err, sizeof err), -1);
+    assert_true(strlen(err) > 5);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_band),
+        cmocka_unit_test(test_consistent_and_overconfident),
+        cmocka_unit_test(test_filter_frame),
+        cmocka_unit_test(test_drops_and_duplicates),
+        cmocka_unit_test(test_bad_config),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
