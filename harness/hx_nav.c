@@ -23,6 +23,7 @@ int hx_nav_opts_from_args(const char *cmd, const hx_args_t *a, hx_nav_opts_t *o)
     o->profile = hx_arg(a, "--profile");
     o->bias_model = hx_arg(a, "--bias-model");
     o->detector = hx_arg(a, "--detector");
+    o->samples = hx_arg(a, "--samples");
     if (hx_arg_double(a, "--rate", 1.0, 100000.0, &o->rate_hz) != 0) {
         return -1;
     }
@@ -36,6 +37,10 @@ int hx_nav_opts_from_args(const char *cmd, const hx_args_t *a, hx_nav_opts_t *o)
     }
     if (o->bias_model != NULL && strcmp(o->bias_model, "ar1") != 0 && strcmp(o->bias_model, "off") != 0) {
         hx_error(cmd, "--bias-model must be ar1 or off, not '%s'", o->bias_model);
+        return -1;
+    }
+    if (o->samples != NULL && strcmp(o->samples, "instant") != 0 && strcmp(o->samples, "mean") != 0) {
+        hx_error(cmd, "--samples must be instant or mean, not '%s'", o->samples);
         return -1;
     }
     if (o->detector != NULL && strcmp(o->detector, "shoe") != 0 && strcmp(o->detector, "threshold") != 0) {
@@ -188,6 +193,9 @@ int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, siz
     }
     if (o->bias_model != NULL) {
         cfg->bias_model = strcmp(o->bias_model, "off") == 0 ? FNAV_BIAS_OFF : FNAV_BIAS_AR1;
+    }
+    if (o->samples != NULL) {
+        cfg->sample_type = strcmp(o->samples, "mean") == 0 ? FNAV_SAMPLE_MEAN : FNAV_SAMPLE_INSTANT;
     }
     if (o->detector != NULL) {
         cfg->stance.detector = strcmp(o->detector, "threshold") == 0 ? FNAV_DETECTOR_THRESHOLD : FNAV_DETECTOR_SHOE;

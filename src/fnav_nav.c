@@ -20,6 +20,7 @@ const fnav_nav_config_t fnav_nav_config_default = {
       FNAV_R(0.25), FNAV_R(0.3) },
     { FNAV_R(0.5), FNAV_R(5.0), FNAV_R(9.80665), FNAV_R(10.0), FNAV_R(0.2), FNAV_R(0.5) * D2R },
     FNAV_R(9.80665),    /* gravity_mps2 */
+    FNAV_SAMPLE_INSTANT, /* sample_type: rate-output sensors (docs/navigation.md) */
     FNAV_R(0.02),       /* accel_motion_noise_mps2_rthz */
     FNAV_R(0.02) * D2R, /* gyro_motion_noise_rps_rthz */
     FNAV_R(0.01),       /* zupt_sigma_mps */
@@ -55,6 +56,7 @@ static void ukf_config_from(const fnav_nav_config_t *c, fnav_ukf_config_t *u)
     }
     u->bias_model = c->bias_model;
     u->strapdown.gravity_mps2 = c->gravity_mps2;
+    u->strapdown.sample_type = c->sample_type;
     u->zupt_sigma_mps = c->zupt_sigma_mps;
     u->zaru_sigma_rps = c->zaru_sigma_rps;
     u->closed_form = c->closed_form;

@@ -15,7 +15,7 @@ const fnav_ukf_config_t fnav_ukf_config_default = {
     { FNAV_R(10.0), FNAV_R(10.0), FNAV_R(10.0) },
     { FNAV_R(8.5e-5) * FNAV_DEG2RAD, FNAV_R(6.4e-5) * FNAV_DEG2RAD, FNAV_R(3.4e-5) * FNAV_DEG2RAD },
     { FNAV_R(1.3e-5), FNAV_R(9.7e-6), FNAV_R(7.3e-6) },
-    { FNAV_R(9.80665), 1 },
+    { FNAV_R(9.80665), 1, FNAV_SAMPLE_INSTANT },
     FNAV_R(1.0), FNAV_R(2.0), FNAV_R(0.0),
     FNAV_R(0.01),
     FNAV_R(0.01),
@@ -90,6 +90,7 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
     if (!finite_pos(cfg->alpha) || !fnav_isfinite(cfg->beta) || !fnav_isfinite(cfg->kappa) ||
         !finite_pos(cfg->zupt_sigma_mps) || !finite_pos(cfg->zaru_sigma_rps) ||
         !finite_pos(cfg->strapdown.gravity_mps2) || (cfg->lever != 0 && cfg->lever != 1) ||
+        (cfg->strapdown.sample_type != FNAV_SAMPLE_INSTANT && cfg->strapdown.sample_type != FNAV_SAMPLE_MEAN) ||
         (cfg->lever && (!finite_pos(cfg->lever_sd_m) || !finite_nonneg(cfg->lever_rw_m_rts)))) {
         return FNAV_E_CONFIG;
     }
@@ -171,6 +172,7 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     f->ba0_mps2 = ba_mps2;
     f->lever_m = fnav_vec3_zero();
     f->hist.valid = 0;
+    f->hist.have_sample = 0;
     for (i = 0; i < N; i++) {
         for (j = 0; j < N; j++) {
             f->P[i][j] = FNAV_R(0.0);

@@ -453,6 +453,8 @@ static void run_nees(nees_t *r)
         fnav_vec3_t vprev = fnav_vec3_zero();
         int check = 0;
         c.bias_model = r->bias_ar1 ? FNAV_BIAS_AR1 : FNAV_BIAS_OFF;
+        /* the generator solves each sample from the interval-mean update */
+        c.strapdown.sample_type = FNAV_SAMPLE_MEAN;
         for (i = 0; i < 3; i++) {
             c.accel_noise_mps2_rthz[i] = (fnav_real_t)na;
             c.gyro_noise_rps_rthz[i] = (fnav_real_t)ng;

@@ -70,6 +70,7 @@ typedef struct {
     fnav_stance_config_t stance;       /**< detector (its gravity is overwritten with gravity_mps2) */
     fnav_align_config_t align;         /**< alignment (gravity overwritten) */
     fnav_real_t gravity_mps2;          /**< local gravity, m/s^2 (default 9.80665) */
+    fnav_sample_type_t sample_type;    /**< what a sample is (fnav_strapdown.h): instantaneous (default) or interval mean */
     fnav_real_t accel_motion_noise_mps2_rthz; /**< extra accel process noise in motion, m/s^2/sqrt(Hz) */
     fnav_real_t gyro_motion_noise_rps_rthz;   /**< extra gyro process noise, rad/s/sqrt(Hz) */
     fnav_real_t zupt_sigma_mps;        /**< ZUPT noise, m/s */
