@@ -674,8 +674,9 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     fprintf(f, "timing            %u duplicates (dt = 0), %u gaps, %u time jumps, longest interval %.1f ms\n",
             st->duplicates, st->gaps, st->time_jumps, 1e3 * (double)st->max_gap_seen_s);
     fprintf(f, "health            %u NaN/Inf rejected, %u backwards rejected, %u jitter, %u resets, "
-               "%u undone, %u updates rejected\n",
-            st->nan_inputs, st->time_back, st->chol_jitter, st->chol_reset, st->diverged, st->update_reject);
+               "%u undone, %u updates rejected, %u covariance guard\n",
+            st->nan_inputs, st->time_back, st->chol_jitter, st->chol_reset, st->diverged, st->update_reject,
+            st->cov_guard);
 }
 
 static cJSON *num(double v)
@@ -729,6 +730,7 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddNumberToObject(h, "chol_reset", st->chol_reset);
     cJSON_AddNumberToObject(h, "steps_undone", st->diverged);
     cJSON_AddNumberToObject(h, "updates_rejected", st->update_reject);
+    cJSON_AddNumberToObject(h, "covariance_guard", st->cov_guard);
     cJSON_AddNumberToObject(h, "health_bits", t->n > 0 ? (double)t->f[t->n - 1].health : 0.0);
     cJSON_AddItemToObject(root, "health", h);
     text = cJSON_Print(root);

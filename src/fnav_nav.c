@@ -172,6 +172,7 @@ static void sync_health(fnav_nav_t *nav)
     nav->stats.chol_reset = h->chol_reset;
     nav->stats.diverged = h->diverged;
     nav->stats.update_reject = h->update_reject;
+    nav->stats.cov_guard = h->cov_guard;
     nav->stats.zupts = h->zupts;
     nav->stats.zarus = h->zarus;
     if (h->chol_jitter) {
@@ -185,6 +186,9 @@ static void sync_health(fnav_nav_t *nav)
     }
     if (h->update_reject) {
         nav->health |= FNAV_HEALTH_UPDATE_REJECT;
+    }
+    if (h->cov_guard) {
+        nav->health |= FNAV_HEALTH_COV_GUARD;
     }
 }
 

@@ -58,6 +58,7 @@ extern "C" {
 #define FNAV_HEALTH_DIVERGED 0x080u      /**< a filter step was undone (non-finite result) */
 #define FNAV_HEALTH_UPDATE_REJECT 0x100u /**< an update was skipped (bad innovation covariance) */
 #define FNAV_HEALTH_NOT_ALIGNED 0x200u   /**< the input ended before an alignment */
+#define FNAV_HEALTH_COV_GUARD 0x400u     /**< the covariance guard reset or clamped a variance */
 
 /* Additional fnav_nav_frame_t.flags bits (fnav_port.h defines 0x1..0x4). */
 #define FNAV_FRAME_SEG_STANCE 0x8u  /**< segmented gait phase is stance */
@@ -105,6 +106,7 @@ typedef struct {
     uint32_t zarus;          /**< ZARU updates applied */
     uint32_t strides;        /**< completed swings */
     uint32_t chol_jitter, chol_reset, diverged, update_reject; /**< UKF health */
+    uint32_t cov_guard;      /**< covariance guard interventions (fnav_ukf.h) */
     fnav_real_t max_gap_seen_s; /**< longest interval seen, s */
 } fnav_nav_stats_t;
 
