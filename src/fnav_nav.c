@@ -151,8 +151,11 @@ static void start_filter(fnav_nav_t *nav)
     fnav_status_t st;
     int i;
     for (i = 0; i < 3; i++) {
-        /* gyro bias: standard error of the alignment mean, with a floor */
-        sd.gyro_bias_rps[i] = rss(r->gyro_bias_sd_rps.v[i], c->gyro_bias_sd_rps);
+        /* AR(1) states: the in-run variation about the alignment value
+         * (docs/navigation.md, "Bias model"), which starts small; the
+         * alignment's own error (r->gyro_bias_sd_rps) is not re-estimated
+         * from the ZUPTs, which attribute strapdown errors to it */
+        sd.gyro_bias_rps[i] = c->gyro_bias_sd_rps;
         sd.accel_bias_mps2[i] = c->accel_bias_sd_mps2;
         sd.att_rad[i] = c->tilt_sd_rad;
     }

@@ -82,8 +82,8 @@ typedef struct {
     fnav_real_t zaru_sigma_rps;        /**< ZARU noise, rad/s */
     fnav_real_t tilt_sd_rad;           /**< initial roll/pitch standard deviation, rad */
     fnav_real_t yaw_sd_rad;            /**< initial yaw standard deviation, rad (yaw is defined 0) */
-    fnav_real_t gyro_bias_sd_rps;      /**< initial gyro bias sd floor, rad/s */
-    fnav_real_t accel_bias_sd_mps2;    /**< initial accel bias sd, m/s^2 */
+    fnav_real_t gyro_bias_sd_rps;      /**< initial sd of the AR(1) gyro bias states, rad/s */
+    fnav_real_t accel_bias_sd_mps2;    /**< initial sd of the AR(1) accel bias states, m/s^2 */
     fnav_real_t max_gap_s;             /**< intervals above this are time jumps, s */
     int closed_form;                   /**< UKF closed-form linear sigma points (1) */
 } fnav_nav_config_t;
