@@ -317,37 +317,31 @@ static fnav_real_t sd_max(int i)
  * state's row and column to zero and the variance to its maximum; a
  * variance above its maximum is clamped, its row and column scaled by the
  * same factor (the correlations are kept). Counted in health.cov_guard.
- * Nothing changes on a covariance within its limits. */
+ * Nothing changes on a covariance within its limits. Off-diagonal entries
+ * need no check: prediction and update reject non-finite results. */
 static void guard_cov(fnav_ukf_t *f)
 {
     int n = f->n_act, i, j;
     for (i = 0; i < n; i++) {
         fnav_real_t mx = sd_max(f->act[i]), v = f->P[i][i];
-        if (!fnav_isfinite(v) || !(v > FNAV_R(0.0))) {
+        if (v > FNAV_R(0.0) && v <= mx * mx) {
+            continue; /* the normal case: one comparison pair per state */
+        }
+        if (!(v > FNAV_R(0.0))) { /* also NaN */
             for (j = 0; j < n; j++) {
                 f->P[i][j] = FNAV_R(0.0);
                 f->P[j][i] = FNAV_R(0.0);
             }
             f->P[i][i] = mx * mx;
-            f->health.cov_guard++;
-        } else if (v > mx * mx) {
+        } else {
             fnav_real_t k = mx / fnav_sqrt(v);
             for (j = 0; j < n; j++) {
                 f->P[i][j] *= k;
                 f->P[j][i] = f->P[i][j];
             }
             f->P[i][i] = mx * mx;
-            f->health.cov_guard++;
         }
-    }
-    for (i = 0; i < n; i++) {
-        for (j = i + 1; j < n; j++) {
-            if (!fnav_isfinite(f->P[i][j])) {
-                f->P[i][j] = FNAV_R(0.0);
-                f->P[j][i] = FNAV_R(0.0);
-                f->health.cov_guard++;
-            }
-        }
+        f->health.cov_guard++;
     }
 }
 
