@@ -40,8 +40,9 @@ fnav_status_t fnav_align_init(fnav_align_t *al, const fnav_align_config_t *cfg)
     }
     al->cfg = *cfg;
     al->done = 0;
+    al->have_best = 0;
+    al->best_log_stat = FNAV_R(0.0);
     reset_period(&al->cur);
-    reset_period(&al->best);
     return FNAV_OK;
 }
 
@@ -96,11 +97,11 @@ static fnav_real_t mean_se2(const fnav_align_period_t *p, fnav_real_t var, int i
     return se2;
 }
 
-static fnav_status_t complete(fnav_align_t *al, const fnav_align_period_t *p)
+/* The alignment of period p into *r. */
+static fnav_status_t period_result(const fnav_align_t *al, const fnav_align_period_t *p, fnav_align_result_t *r)
 {
     fnav_real_t inv = FNAV_R(1.0) / (fnav_real_t)p->n;
     fnav_vec3_t ma = fnav_vec3_scale(p->sa, inv), mg = fnav_vec3_scale(p->sg, inv);
-    fnav_align_result_t *r = &al->result;
     fnav_real_t s02 = al->cfg.gyro_bias_prior_sd_rps * al->cfg.gyro_bias_prior_sd_rps;
     fnav_status_t st;
     int i;
@@ -129,8 +130,16 @@ static fnav_status_t complete(fnav_align_t *al, const fnav_align_period_t *p)
     }
     r->samples = p->n;
     r->duration_s = duration_s(p);
-    al->done = 1;
     return FNAV_OK;
+}
+
+static fnav_status_t complete(fnav_align_t *al, const fnav_align_period_t *p)
+{
+    fnav_status_t st = period_result(al, p, &al->result);
+    if (st == FNAV_OK) {
+        al->done = 1;
+    }
+    return st;
 }
 
 static fnav_real_t mean_log_stat(const fnav_align_period_t *p)
@@ -138,14 +147,21 @@ static fnav_real_t mean_log_stat(const fnav_align_period_t *p)
     return p->sum_log_stat / (fnav_real_t)p->n;
 }
 
-/* The current period ended before min_still_s: keep it if it is long enough
- * and quieter than the kept one, then restart. */
+/* 1 when period p is a short-period candidate quieter than the kept one. */
+static int better_short(const fnav_align_t *al, const fnav_align_period_t *p)
+{
+    return p->n >= 2 && duration_s(p) >= al->cfg.short_still_s &&
+           (!al->have_best || mean_log_stat(p) < al->best_log_stat);
+}
+
+/* The current period ended before min_still_s: keep its alignment if it is
+ * long enough and quieter than the kept one, then restart. */
 static void end_short_period(fnav_align_t *al)
 {
     fnav_align_period_t *c = &al->cur;
-    if (c->n >= 2 && duration_s(c) >= al->cfg.short_still_s &&
-        (al->best.n == 0 || mean_log_stat(c) < mean_log_stat(&al->best))) {
-        al->best = *c;
+    if (better_short(al, c) && period_result(al, c, &al->result) == FNAV_OK) {
+        al->have_best = 1;
+        al->best_log_stat = mean_log_stat(c);
     }
     reset_period(c);
 }
@@ -209,10 +225,11 @@ fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_sample_t *s, int stil
             return complete(al, c);
         }
         end_short_period(al);
-        if (!still && al->best.n > 0) {
+        if (!still && al->have_best) {
             /* the foot moves and no period reached min_still_s: the
              * quietest short period is all there is before the walk */
-            return complete(al, &al->best);
+            al->done = 1;
+            return FNAV_OK;
         }
         return FNAV_AGAIN;
     }
@@ -236,12 +253,12 @@ fnav_status_t fnav_align_finish(fnav_align_t *al)
     }
     /* the quietest period of at least short_still_s, the current one
      * included (nothing is discarded when none qualifies) */
-    if (al->cur.n >= 2 && duration_s(&al->cur) >= al->cfg.short_still_s &&
-        (al->best.n == 0 || mean_log_stat(&al->cur) < mean_log_stat(&al->best))) {
+    if (better_short(al, &al->cur)) {
         return complete(al, &al->cur);
     }
-    if (al->best.n > 0) {
-        return complete(al, &al->best);
+    if (al->have_best) {
+        al->done = 1;
+        return FNAV_OK;
     }
     return FNAV_E_STATE;
 }

@@ -91,30 +91,31 @@ void fnav_strapdown_increments(const fnav_strapdown_config_t *cfg, const fnav_st
     if (cfg->sample_type == FNAV_SAMPLE_MEAN && cfg->coning && have_prev) {
         /* Savage 1998, two-sample algorithms with the previous interval:
          * coning (eq. 7.1.1.1-13 form) and sculling (eq. 7.2.2.2-22 form). */
-        out->coning = fnav_vec3_scale(fnav_vec3_cross(hist->theta_rad, out->theta_rad), k12);
-        out->scull = fnav_vec3_scale(fnav_vec3_add(fnav_vec3_cross(hist->theta_rad, out->dv_mps),
-                                                   fnav_vec3_cross(hist->dv_mps, out->theta_rad)),
+        fnav_vec3_t th_p = fnav_vec3_scale(hist->w_rps, hist->dt_prev_s); /* the previous interval's */
+        fnav_vec3_t dv_p = fnav_vec3_scale(hist->f_mps2, hist->dt_prev_s); /* increments */
+        out->coning = fnav_vec3_scale(fnav_vec3_cross(th_p, out->theta_rad), k12);
+        out->scull = fnav_vec3_scale(fnav_vec3_add(fnav_vec3_cross(th_p, out->dv_mps), fnav_vec3_cross(dv_p, out->theta_rad)),
                                      k12);
     }
 }
 
 void fnav_strapdown_hist_push(fnav_strapdown_hist_t *hist, const fnav_strapdown_incr_t *inc)
 {
-    if (hist->have_sample >= 1 && inc->dt_s > FNAV_R(0.0)) {
-        hist->w2_rps = hist->w_rps;
-        hist->f2_mps2 = hist->f_mps2;
+    if (inc->dt_s > FNAV_R(0.0)) {
+        if (hist->have_sample >= 1) {
+            hist->w2_rps = hist->w_rps;
+            hist->f2_mps2 = hist->f_mps2;
+            hist->have_sample = 2;
+        } else {
+            hist->have_sample = 1;
+        }
         hist->dt_prev_s = inc->dt_s;
-        hist->have_sample = 2;
+        hist->valid = 1;
     } else if (hist->have_sample == 0) {
         hist->have_sample = 1;
     }
     hist->w_rps = inc->w_rps;
     hist->f_mps2 = inc->f_mps2;
-    if (inc->dt_s > FNAV_R(0.0)) {
-        hist->theta_rad = inc->theta_rad;
-        hist->dv_mps = inc->dv_mps;
-        hist->valid = 1;
-    }
 }
 
 void fnav_strapdown_propagate(const fnav_strapdown_config_t *cfg, fnav_strapdown_state_t *x,

@@ -49,7 +49,7 @@ static void test_rest(void **state)
     const fnav_real_t dt = FNAV_R(0.01);
     fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.3), FNAV_R(-0.2), FNAV_R(1.1));
     fnav_strapdown_state_t x = state_at(q0);
-    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0, { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0 };
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_vec3_t f = fnav_quat_rotate(fnav_quat_conj(q0), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g));
     int i;
     (void)state;
@@ -73,7 +73,7 @@ static void test_constant_rotation(void **state)
     const double w[3] = { 0.4, -1.3, 2.2 }; /* rad/s */
     fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(-0.1), FNAV_R(0.25), FNAV_R(-2.0));
     fnav_strapdown_state_t x = state_at(q0);
-    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0, { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0 };
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_vec3_t wv = fnav_vec3((fnav_real_t)w[0], (fnav_real_t)w[1], (fnav_real_t)w[2]);
     fnav_quat_t qt;
     int i;
@@ -98,7 +98,7 @@ static void test_constant_acceleration(void **state)
     const double a[3] = { 1.5, -0.7, 0.3 };
     fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.2), FNAV_R(0.1), FNAV_R(-0.6));
     fnav_strapdown_state_t x = state_at(q0);
-    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0, { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0 };
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_vec3_t fn = fnav_vec3((fnav_real_t)a[0], (fnav_real_t)a[1], (fnav_real_t)(a[2] - k_g));
     fnav_vec3_t fb = fnav_quat_rotate(fnav_quat_conj(q0), fn);
     int i;
@@ -132,7 +132,7 @@ static double rotating_acceleration(int instant, int algo_instant)
     const double a[3] = { 0.8, -1.2, 0.5 };
     fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.4), FNAV_R(-0.3), FNAV_R(0.9));
     fnav_strapdown_state_t x = state_at(q0);
-    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0, { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0 };
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_vec3_t wv = fnav_vec3((fnav_real_t)w[0], (fnav_real_t)w[1], (fnav_real_t)w[2]);
     fnav_strapdown_config_t cfg = fnav_strapdown_config_default;
     int k, j, i;
@@ -211,7 +211,7 @@ static double coning_error(int coning, int instant, double beta, double W, doubl
 {
     fnav_strapdown_config_t cfg = fnav_strapdown_config_default;
     fnav_strapdown_state_t x;
-    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0, { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0 };
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_quat_t qt;
     int k;
     cfg.coning = coning;
@@ -284,7 +284,7 @@ static void test_coning_instant(void **state)
         /* instantaneous samples integrated as interval means */
         fnav_strapdown_config_t cfg = fnav_strapdown_config_default;
         fnav_strapdown_state_t x = state_at(fnav_quat_from_rotvec(fnav_vec3((fnav_real_t)beta, FNAV_R(0.0), FNAV_R(0.0))));
-        fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0, { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0 };
+        fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
         fnav_quat_t qt;
         int k;
         cfg.sample_type = FNAV_SAMPLE_MEAN;
@@ -344,7 +344,7 @@ static void test_bad_input(void **state)
 {
     fnav_strapdown_state_t x = state_at(fnav_quat_identity());
     fnav_strapdown_state_t x0 = x;
-    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0, { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0 };
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_vec3_t nanv = fnav_vec3((fnav_real_t)NAN, FNAV_R(0.0), FNAV_R(0.0));
     (void)state;
     assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, nanv, fnav_vec3_zero(), FNAV_R(0.01)),

@@ -566,9 +566,9 @@ static void run_nees(nees_t *r)
                 fnav_vec3_t rb = fnav_quat_rotate(fnav_quat_conj(T.x.q_nb), dvn);
                 for (i = 0; i < 3; i++) {
                     th[i] = w_b[i] * dt;
-                    if (T.h.valid) {
-                        tp[i] = (double)T.h.theta_rad.v[i];
-                        dvp[i] = (double)T.h.dv_mps.v[i];
+                    if (T.h.valid) { /* the previous interval's increments (interval means) */
+                        tp[i] = (double)T.h.w_rps.v[i] * (double)T.h.dt_prev_s;
+                        dvp[i] = (double)T.h.f_mps2.v[i] * (double)T.h.dt_prev_s;
                     }
                 }
                 for (i = 0; i < 3; i++) {

@@ -99,14 +99,14 @@ typedef struct {
     int64_t t0_ns, t_last_ns;        /**< period start, last sample */
 } fnav_align_period_t;
 
-/** Accumulator (caller-owned, about 0.6 KB in float). */
+/** Accumulator (caller-owned, about 0.4 KB in float). */
 typedef struct {
     fnav_align_config_t cfg;
     fnav_align_period_t cur;         /**< the period being accumulated */
-    fnav_align_period_t best;        /**< the quietest earlier period shorter than min_still_s
-                                          (best.n = 0: none) */
     int done;
-    fnav_align_result_t result;
+    int have_best;                   /**< result holds the quietest earlier short period */
+    fnav_real_t best_log_stat;       /**< its mean log10 statistic */
+    fnav_align_result_t result;      /**< the alignment (with done), or the short-period candidate */
 } fnav_align_t;
 
 /** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (non-positive or non-finite

@@ -54,17 +54,15 @@ typedef struct {
     fnav_vec3_t pos_m;   /**< position in n, m */
 } fnav_strapdown_state_t;
 
-/** Increments and readings of the previous interval, for the next one. */
+/** Readings of the previous samples, for the next interval. */
 typedef struct {
-    fnav_vec3_t theta_rad; /**< previous rotation increment (body), rad */
-    fnav_vec3_t dv_mps;    /**< previous velocity increment (body), m/s */
-    int valid;             /**< 0 until one interval was integrated */
-    fnav_vec3_t w_rps;     /**< previous (bias-corrected) rate reading, rad/s */
-    fnav_vec3_t f_mps2;    /**< previous (bias-corrected) specific-force reading, m/s^2 */
-    fnav_vec3_t w2_rps;    /**< the reading before that, rad/s */
-    fnav_vec3_t f2_mps2;   /**< the reading before that, m/s^2 */
-    fnav_real_t dt_prev_s; /**< interval between those two readings, s */
-    int have_sample;       /**< readings stored: 0, 1 (w_rps, f_mps2) or 2 (also w2, f2, dt_prev) */
+    fnav_vec3_t w_rps;     /**< newest (bias-corrected) rate reading, rad/s */
+    fnav_vec3_t f_mps2;    /**< newest (bias-corrected) specific-force reading, m/s^2 */
+    fnav_vec3_t w2_rps;    /**< the reading before it, rad/s */
+    fnav_vec3_t f2_mps2;   /**< the reading before it, m/s^2 */
+    fnav_real_t dt_prev_s; /**< interval that ended at the newest reading, s */
+    int have_sample;       /**< readings stored: 0, 1 (w_rps, f_mps2) or 2 (also w2, f2) */
+    int valid;             /**< 1 once an interval was integrated (dt_prev_s valid) */
 } fnav_strapdown_hist_t;
 
 /** What a sample's readings are (fnav_strapdown.h file comment). */
