@@ -193,8 +193,10 @@ static void add_sample(fnav_align_period_t *p, const fnav_sample_t *s, fnav_real
         p->blk_cur = fnav_vec3_zero();
         p->blk_fill = 0;
         if (p->nblk == FNAV_ALIGN_BLOCKS) {
+            int j = 0;
             for (i = 0; i < FNAV_ALIGN_BLOCKS / 2; i++) {
-                p->blk[i] = fnav_vec3_add(p->blk[2 * i], p->blk[2 * i + 1]);
+                p->blk[i] = fnav_vec3_add(p->blk[j], p->blk[j + 1]);
+                j += 2;
             }
             p->nblk = FNAV_ALIGN_BLOCKS / 2;
             p->blk_len *= 2;
