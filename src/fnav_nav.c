@@ -16,10 +16,11 @@ const fnav_nav_config_t fnav_nav_config_default = {
       { FNAV_R(8.5e-5) * D2R, FNAV_R(6.4e-5) * D2R, FNAV_R(3.4e-5) * D2R } },
     FNAV_BIAS_OFF, /* bias_model: see docs/navigation.md (evidence in docs/results.md) */
     { FNAV_DETECTOR_SHOE, FNAV_R(0.0), FNAV_R(0.025), FNAV_R(0.01), FNAV_R(0.1) * D2R, FNAV_R(1.0e5),
-      FNAV_R(0.6), FNAV_R(0.6), FNAV_R(9.80665), 1, FNAV_R(0.25), FNAV_R(0.4), FNAV_R(10.0), FNAV_R(0.02), FNAV_R(0.05),
-      FNAV_R(0.2), FNAV_R(0.3) },
-    { FNAV_R(0.5), FNAV_R(5.0), FNAV_R(9.80665), FNAV_R(10.0) },
+      FNAV_R(0.6), FNAV_R(0.6), FNAV_R(9.80665), 1, FNAV_R(2.0), FNAV_R(0.4), FNAV_R(10.0), FNAV_R(0.02), FNAV_R(0.05),
+      FNAV_R(0.25), FNAV_R(0.3) },
+    { FNAV_R(0.5), FNAV_R(5.0), FNAV_R(9.80665), FNAV_R(10.0), FNAV_R(0.2), FNAV_R(0.5) * D2R },
     FNAV_R(9.80665),    /* gravity_mps2 */
+    FNAV_SAMPLE_INSTANT, /* sample_type: rate-output sensors (docs/navigation.md) */
     FNAV_R(0.02),       /* accel_motion_noise_mps2_rthz */
     FNAV_R(0.02) * D2R, /* gyro_motion_noise_rps_rthz */
     FNAV_R(0.01),       /* zupt_sigma_mps */
@@ -55,6 +56,7 @@ static void ukf_config_from(const fnav_nav_config_t *c, fnav_ukf_config_t *u)
     }
     u->bias_model = c->bias_model;
     u->strapdown.gravity_mps2 = c->gravity_mps2;
+    u->strapdown.sample_type = c->sample_type;
     u->zupt_sigma_mps = c->zupt_sigma_mps;
     u->zaru_sigma_rps = c->zaru_sigma_rps;
     u->closed_form = c->closed_form;
@@ -147,11 +149,13 @@ static void start_filter(fnav_nav_t *nav)
     const fnav_nav_config_t *c = &nav->cfg;
     fnav_ukf_init_sd_t sd;
     fnav_status_t st;
-    fnav_real_t n = (fnav_real_t)(r->samples > 1 ? r->samples : 1);
     int i;
     for (i = 0; i < 3; i++) {
-        /* gyro bias: standard error of the alignment mean, with a floor */
-        sd.gyro_bias_rps[i] = rss(r->gyro_sd_rps.v[i] / fnav_sqrt(n), c->gyro_bias_sd_rps);
+        /* AR(1) states: the in-run variation about the alignment value
+         * (docs/navigation.md, "Bias model"), which starts small; the
+         * alignment's own error (r->gyro_bias_sd_rps) is not re-estimated
+         * from the ZUPTs, which attribute strapdown errors to it */
+        sd.gyro_bias_rps[i] = c->gyro_bias_sd_rps;
         sd.accel_bias_mps2[i] = c->accel_bias_sd_mps2;
         sd.att_rad[i] = c->tilt_sd_rad;
     }
@@ -171,6 +175,7 @@ static void sync_health(fnav_nav_t *nav)
     nav->stats.chol_reset = h->chol_reset;
     nav->stats.diverged = h->diverged;
     nav->stats.update_reject = h->update_reject;
+    nav->stats.cov_guard = h->cov_guard;
     nav->stats.zupts = h->zupts;
     nav->stats.zarus = h->zarus;
     if (h->chol_jitter) {
@@ -184,6 +189,9 @@ static void sync_health(fnav_nav_t *nav)
     }
     if (h->update_reject) {
         nav->health |= FNAV_HEALTH_UPDATE_REJECT;
+    }
+    if (h->cov_guard) {
+        nav->health |= FNAV_HEALTH_COV_GUARD;
     }
 }
 

@@ -58,6 +58,7 @@ extern "C" {
 #define FNAV_HEALTH_DIVERGED 0x080u      /**< a filter step was undone (non-finite result) */
 #define FNAV_HEALTH_UPDATE_REJECT 0x100u /**< an update was skipped (bad innovation covariance) */
 #define FNAV_HEALTH_NOT_ALIGNED 0x200u   /**< the input ended before an alignment */
+#define FNAV_HEALTH_COV_GUARD 0x400u     /**< the covariance guard reset or clamped a variance */
 
 /* Additional fnav_nav_frame_t.flags bits (fnav_port.h defines 0x1..0x4). */
 #define FNAV_FRAME_SEG_STANCE 0x8u  /**< segmented gait phase is stance */
@@ -70,6 +71,7 @@ typedef struct {
     fnav_stance_config_t stance;       /**< detector (its gravity is overwritten with gravity_mps2) */
     fnav_align_config_t align;         /**< alignment (gravity overwritten) */
     fnav_real_t gravity_mps2;          /**< local gravity, m/s^2 (default 9.80665) */
+    fnav_sample_type_t sample_type;    /**< what a sample is (fnav_strapdown.h): instantaneous (default) or interval mean */
     fnav_real_t accel_motion_noise_mps2_rthz; /**< extra accel process noise in motion, m/s^2/sqrt(Hz) */
     fnav_real_t gyro_motion_noise_rps_rthz;   /**< extra gyro process noise, rad/s/sqrt(Hz) */
     fnav_real_t zupt_sigma_mps;        /**< ZUPT noise, m/s */
@@ -80,8 +82,8 @@ typedef struct {
     fnav_real_t zaru_sigma_rps;        /**< ZARU noise, rad/s */
     fnav_real_t tilt_sd_rad;           /**< initial roll/pitch standard deviation, rad */
     fnav_real_t yaw_sd_rad;            /**< initial yaw standard deviation, rad (yaw is defined 0) */
-    fnav_real_t gyro_bias_sd_rps;      /**< initial gyro bias sd floor, rad/s */
-    fnav_real_t accel_bias_sd_mps2;    /**< initial accel bias sd, m/s^2 */
+    fnav_real_t gyro_bias_sd_rps;      /**< initial sd of the AR(1) gyro bias states, rad/s */
+    fnav_real_t accel_bias_sd_mps2;    /**< initial sd of the AR(1) accel bias states, m/s^2 */
     fnav_real_t max_gap_s;             /**< intervals above this are time jumps, s */
     int closed_form;                   /**< UKF closed-form linear sigma points (1) */
 } fnav_nav_config_t;
@@ -104,6 +106,7 @@ typedef struct {
     uint32_t zarus;          /**< ZARU updates applied */
     uint32_t strides;        /**< completed swings */
     uint32_t chol_jitter, chol_reset, diverged, update_reject; /**< UKF health */
+    uint32_t cov_guard;      /**< covariance guard interventions (fnav_ukf.h) */
     fnav_real_t max_gap_seen_s; /**< longest interval seen, s */
 } fnav_nav_stats_t;
 
