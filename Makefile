@@ -154,8 +154,8 @@ FW_SLICE_FIRST ?= 0
 FW_SLICE_COUNT ?= 16539
 FW_SLICE_C := $(ARM_BUILD)/gen/fnav_cm_slice_data.c
 FW_SLICE_BIN := $(ARM_BUILD)/gen/slice.bin
-BENCH_SRC := $(FW_COMMON) port/cortex-m/fnav_cm_bench.c port/cortex-m/fnav_cm_semihost.c
-BENCH_OBJ := $(patsubst %.c,$(ARM_BUILD)/bench/%.o,$(BENCH_SRC)) $(ARM_BUILD)/bench/gen/fnav_cm_slice_data.o
+FWBENCH_SRC := $(FW_COMMON) port/cortex-m/fnav_cm_bench.c port/cortex-m/fnav_cm_semihost.c
+FWBENCH_OBJ := $(patsubst %.c,$(ARM_BUILD)/bench/%.o,$(FWBENCH_SRC)) $(ARM_BUILD)/bench/gen/fnav_cm_slice_data.o
 BENCH_ELF := $(ARM_BUILD)/footnav-bench.elf
 FW_ICOUNT_SHIFT ?= 0
 # Semihosting console on stdout (without a chardev QEMU 7.2 writes it to
@@ -205,15 +205,15 @@ $(FW_SLICE_C): $(FW_SLICE_GEN) $(FW_SLICE_LOG) $(FW_STAMP)
 	@mkdir -p $(dir $@)
 	$(FW_SLICE_GEN) $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT) $@ $(FW_SLICE_BIN)
 
-$(BENCH_ELF): $(BENCH_OBJ) $(ARM_LIB) port/cortex-m/ld/mps2-an386.ld port/cortex-m/ld/fnav_cm_sections.ld
-	$(ARM_CC) $(ARM_LDFLAGS) -Tmps2-an386.ld -Wl,-Map=$(ARM_BUILD)/footnav-bench.map -o $@ $(BENCH_OBJ) $(ARM_LIB) $(ARM_LDLIBS)
+$(BENCH_ELF): $(FWBENCH_OBJ) $(ARM_LIB) port/cortex-m/ld/mps2-an386.ld port/cortex-m/ld/fnav_cm_sections.ld
+	$(ARM_CC) $(ARM_LDFLAGS) -Tmps2-an386.ld -Wl,-Map=$(ARM_BUILD)/footnav-bench.map -o $@ $(FWBENCH_OBJ) $(ARM_LIB) $(ARM_LDLIBS)
 
 # The benchmark's code built for the host (float32 core), the reference the
 # emulator's output is compared with.
-$(FW_HOSTREF): $(BENCH_SRC) $(FW_SLICE_C) $(CORE_SRC) $(FW_STAMP) port/cortex-m/fnav_cm_fw_config.h
+$(FW_HOSTREF): $(FWBENCH_SRC) $(FW_SLICE_C) $(CORE_SRC) $(FW_STAMP) port/cortex-m/fnav_cm_fw_config.h
 	@mkdir -p $(dir $@)
 	$(CC) -Iinclude -Iport/cortex-m $(FW_CONFIG) $(FW_DEFS) $(CFLAGS_CORE) -o $@ \
-	  $(filter-out port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c,$(BENCH_SRC)) $(FW_SLICE_C) $(CORE_SRC) -lm
+	  $(filter-out port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c,$(FWBENCH_SRC)) $(FW_SLICE_C) $(CORE_SRC) -lm
 
 firmware: $(ARM_LIB) $(FW_ELF)
 	@if $(ARM_NM) -u $(ARM_LIB) | grep -E -w '$(FORBIDDEN)'; then \
