@@ -54,7 +54,7 @@ BENCH_BINS  := $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 FORBIDDEN := malloc|calloc|realloc|free|_sbrk|sbrk|printf|fprintf|sprintf|snprintf|vprintf|vfprintf|vsprintf|vsnprintf|puts|fputs|putchar|fputc|putc|fopen|fclose|fread|fwrite|fflush|stdout|stderr|stdin|_impure_ptr|__printf_chk|__fprintf_chk|__sprintf_chk|__snprintf_chk|exit|abort|system
 
 .PHONY: all test check-suites test-double test-cli vectors-check nm-check sanitize \
-        firmware firmware-bench bench deps clean run fuzz valgrind lint
+        firmware firmware-bench bench deps clean run fuzz valgrind lint longrun
 
 all: $(LIB) $(HARNESS) nm-check
 
@@ -142,7 +142,7 @@ ARM_LIB   := $(ARM_BUILD)/libfootnav.a
 FW_FLASH_BUDGET ?= 49152
 FW_RAM_BUDGET   ?= 24576
 # Stack reserved after .bss (must hold the worst case of the stack report).
-FW_STACK_SIZE   ?= 1984
+FW_STACK_SIZE   ?= 1664
 
 FW_COMMON := port/cortex-m/fnav_cm_ring.c port/cortex-m/fnav_port_cortexm.c port/cortex-m/fnav_cm_est.c \
              port/cortex-m/fnav_cm_app.c port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c
@@ -281,6 +281,12 @@ fuzz: $(FUZZ_BINS)
 	    -artifact_prefix=$(FUZZ_DIR)/artifacts/$$n/ $(FUZZ_DIR)/corpus/$$n 2>&1 | tail -n 12; \
 	  if ls $(FUZZ_DIR)/artifacts/$$n/* >/dev/null 2>&1; then echo "fuzz $$n: FAILED, see $(FUZZ_DIR)/artifacts/$$n"; exit 1; fi; \
 	done; echo "make fuzz: no crash, leak, timeout or sanitizer report"
+
+# Long-run numerical health: LONGRUN_HOURS of simulated walking through the
+# float32 navigator (tests/longrun_nav.c); about 1.5 minutes for 10 hours.
+LONGRUN_HOURS ?= 10
+longrun: $(BUILD)/tests/longrun_nav
+	$(BUILD)/tests/longrun_nav $(LONGRUN_HOURS)
 
 # Every suite under valgrind's memcheck (leaks and invalid accesses are errors).
 valgrind: $(TEST_BINS)

@@ -673,10 +673,10 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
             s->stance_phases, 100.0 * s->stance_fraction);
     fprintf(f, "timing            %u duplicates (dt = 0), %u gaps, %u time jumps, longest interval %.1f ms\n",
             st->duplicates, st->gaps, st->time_jumps, 1e3 * (double)st->max_gap_seen_s);
-    fprintf(f, "health            %u NaN/Inf rejected, %u backwards rejected, %u jitter, %u resets, "
-               "%u undone, %u updates rejected, %u covariance guard\n",
+    fprintf(f, "health            %u NaN/Inf rejected, %u backwards rejected, %u jitter, %u covariance resets, "
+               "%u undone, %u updates rejected, %u covariance guard, %u divergence resets\n",
             st->nan_inputs, st->time_back, st->chol_jitter, st->chol_reset, st->diverged, st->update_reject,
-            st->cov_guard);
+            st->cov_guard, st->resets);
 }
 
 static cJSON *num(double v)
@@ -731,6 +731,7 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddNumberToObject(h, "steps_undone", st->diverged);
     cJSON_AddNumberToObject(h, "updates_rejected", st->update_reject);
     cJSON_AddNumberToObject(h, "covariance_guard", st->cov_guard);
+    cJSON_AddNumberToObject(h, "divergence_resets", st->resets);
     cJSON_AddNumberToObject(h, "health_bits", t->n > 0 ? (double)t->f[t->n - 1].health : 0.0);
     cJSON_AddItemToObject(root, "health", h);
     text = cJSON_Print(root);

@@ -25,8 +25,30 @@ fnav_quat_t fnav_strapdown_quat_exp(fnav_vec3_t phi)
 {
     fnav_real_t a2 = fnav_vec3_dot(phi, phi);
     fnav_real_t c, s;
-    if (a2 > FNAV_R(0.04)) {
-        return fnav_quat_from_rotvec(phi);
+    fnav_quat_t q;
+    int k = 0;
+    if (!(a2 <= FNAV_R(0.04))) {
+        /* Larger increments (over 0.2 rad, i.e. above about 2300 deg/s at
+         * 200 Hz) without libm trigonometry, whose large-argument reduction
+         * is the deepest stack path on a Cortex-M: the same rotation with
+         * the angle wrapped to (-pi, pi] (fmod is exact), halved until the
+         * series below is exact, then squared back (q(2x) = q(x)^2 about the
+         * same axis). NaN or Inf give the identity (the UKF rejects them
+         * before this point; this only keeps the function total). */
+        fnav_real_t a = fnav_sqrt(a2);
+        if (!fnav_isfinite(a)) {
+            return fnav_quat_identity();
+        }
+        if (a > FNAV_PI) {
+            fnav_real_t w = fnav_wrap_pi(a);
+            phi = fnav_vec3_scale(phi, w / a);
+            a2 = w * w;
+        }
+        while (a2 > FNAV_R(0.04)) { /* at most 4 halvings: pi / 2^4 < 0.2 */
+            phi = fnav_vec3_scale(phi, FNAV_R(0.5));
+            a2 *= FNAV_R(0.25);
+            k++;
+        }
     }
     /* cos(a/2) and sin(a/2)/a as series in a^2 (Titterton & Weston eq. 11.33);
      * the first omitted terms are a^8/10321920 and a^8/185794560. */
@@ -34,7 +56,11 @@ fnav_quat_t fnav_strapdown_quat_exp(fnav_vec3_t phi)
                             a2 * (FNAV_R(1.0) / FNAV_R(384.0) - a2 * (FNAV_R(1.0) / FNAV_R(46080.0))));
     s = FNAV_R(0.5) + a2 * (-FNAV_R(1.0) / FNAV_R(48.0) +
                             a2 * (FNAV_R(1.0) / FNAV_R(3840.0) - a2 * (FNAV_R(1.0) / FNAV_R(645120.0))));
-    return fnav_quat(c, s * phi.v[0], s * phi.v[1], s * phi.v[2]);
+    q = fnav_quat(c, s * phi.v[0], s * phi.v[1], s * phi.v[2]);
+    while (k-- > 0) {
+        q = fnav_quat_mul(q, q);
+    }
+    return q;
 }
 
 void fnav_strapdown_increments(const fnav_strapdown_config_t *cfg, const fnav_strapdown_hist_t *hist,

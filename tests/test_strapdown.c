@@ -339,6 +339,41 @@ static void test_quat_exp_series(void **state)
     }
 }
 
+/* Beyond 0.2 rad the exponential wraps, halves and squares instead of
+ * calling libm trigonometry: it still equals the exact quaternion of the
+ * rotation (up to sign), for angles up to many turns, and stays total. */
+static void test_quat_exp_large(void **state)
+{
+    static const double angles[] = { 0.2001, 0.35, 0.7, 1.5, 3.0, 3.14, 3.2, 6.0, 6.2831, 10.0, 100.0, 12345.6 };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof angles / sizeof angles[0]; i++) {
+        double a = angles[i];
+        fnav_vec3_t phi = fnav_vec3((fnav_real_t)(0.6 * a), (fnav_real_t)(-0.48 * a), (fnav_real_t)(0.64 * a));
+        fnav_quat_t q = fnav_strapdown_quat_exp(phi);
+        double ang = sqrt((double)fnav_vec3_dot(phi, phi)); /* the angle as rounded into phi */
+        double c = cos(0.5 * ang), sn = sin(0.5 * ang);
+        double sg = ((double)q.q[0] * c >= 0.0) ? 1.0 : -1.0; /* q and -q are the same rotation */
+        /* each of at most 4 squarings doubles the error of the halved
+         * angle's series: rounding (a few ulp) and truncation (at most
+         * 0.2^8 / 10321920 = 2.5e-13); angles beyond pi also lose what
+         * rounding lost in wrapping them (ulp of the angle) */
+        double tol = 64.0 * EPS * (1.0 + ang) + 16.0 * pow(0.2, 8.0) / 10321920.0;
+        FNAV_ASSERT_CLOSE(sg * (double)q.q[0], c, tol, 0.0);
+        FNAV_ASSERT_CLOSE(sg * (double)q.q[1], sn * (double)phi.v[0] / ang, tol, 0.0);
+        FNAV_ASSERT_CLOSE(sg * (double)q.q[2], sn * (double)phi.v[1] / ang, tol, 0.0);
+        FNAV_ASSERT_CLOSE(sg * (double)q.q[3], sn * (double)phi.v[2] / ang, tol, 0.0);
+    }
+    {
+        fnav_quat_t q = fnav_strapdown_quat_exp(fnav_vec3((fnav_real_t)NAN, FNAV_R(0.0), FNAV_R(0.0)));
+        assert_true(q.q[0] == FNAV_R(1.0));
+        q = fnav_strapdown_quat_exp(fnav_vec3((fnav_real_t)INFINITY, FNAV_R(0.0), FNAV_R(0.0)));
+        assert_true(q.q[0] == FNAV_R(1.0));
+        q = fnav_strapdown_quat_exp(fnav_vec3(FNAV_R(1.0e30), FNAV_R(0.0), FNAV_R(0.0)));
+        assert_true(fnav_isfinite(q.q[0]) && fnav_isfinite(q.q[1]));
+    }
+}
+
 /* NaN and negative dt are rejected and leave the state as it was. */
 static void test_bad_input(void **state)
 {
@@ -380,6 +415,7 @@ int main(void)
         cmocka_unit_test(test_coning_instant),
         cmocka_unit_test(test_gravity),
         cmocka_unit_test(test_quat_exp_series),
+        cmocka_unit_test(test_quat_exp_large),
         cmocka_unit_test(test_bad_input),
     };
     return cmocka_run_group_tests_name("strapdown", tests, NULL, NULL);
