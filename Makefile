@@ -54,7 +54,7 @@ BENCH_BINS  := $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 FORBIDDEN := malloc|calloc|realloc|free|_sbrk|sbrk|printf|fprintf|sprintf|snprintf|vprintf|vfprintf|vsprintf|vsnprintf|puts|fputs|putchar|fputc|putc|fopen|fclose|fread|fwrite|fflush|stdout|stderr|stdin|_impure_ptr|__printf_chk|__fprintf_chk|__sprintf_chk|__snprintf_chk|exit|abort|system
 
 .PHONY: all test check-suites test-double test-cli vectors-check nm-check sanitize \
-        firmware firmware-bench bench deps clean run fuzz valgrind lint
+        firmware firmware-bench bench deps clean run fuzz valgrind lint longrun
 
 all: $(LIB) $(HARNESS) nm-check
 
@@ -142,7 +142,7 @@ ARM_LIB   := $(ARM_BUILD)/libfootnav.a
 FW_FLASH_BUDGET ?= 49152
 FW_RAM_BUDGET   ?= 24576
 # Stack reserved after .bss (must hold the worst case of the stack report).
-FW_STACK_SIZE   ?= 1984
+FW_STACK_SIZE   ?= 1664
 
 FW_COMMON := port/cortex-m/fnav_cm_ring.c port/cortex-m/fnav_port_cortexm.c port/cortex-m/fnav_cm_est.c \
              port/cortex-m/fnav_cm_app.c port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c
@@ -154,8 +154,8 @@ FW_SLICE_FIRST ?= 0
 FW_SLICE_COUNT ?= 16539
 FW_SLICE_C := $(ARM_BUILD)/gen/fnav_cm_slice_data.c
 FW_SLICE_BIN := $(ARM_BUILD)/gen/slice.bin
-BENCH_SRC := $(FW_COMMON) port/cortex-m/fnav_cm_bench.c port/cortex-m/fnav_cm_semihost.c
-BENCH_OBJ := $(patsubst %.c,$(ARM_BUILD)/bench/%.o,$(BENCH_SRC)) $(ARM_BUILD)/bench/gen/fnav_cm_slice_data.o
+FWBENCH_SRC := $(FW_COMMON) port/cortex-m/fnav_cm_bench.c port/cortex-m/fnav_cm_semihost.c
+FWBENCH_OBJ := $(patsubst %.c,$(ARM_BUILD)/bench/%.o,$(FWBENCH_SRC)) $(ARM_BUILD)/bench/gen/fnav_cm_slice_data.o
 BENCH_ELF := $(ARM_BUILD)/footnav-bench.elf
 FW_ICOUNT_SHIFT ?= 0
 # Semihosting console on stdout (without a chardev QEMU 7.2 writes it to
@@ -205,15 +205,15 @@ $(FW_SLICE_C): $(FW_SLICE_GEN) $(FW_SLICE_LOG) $(FW_STAMP)
 	@mkdir -p $(dir $@)
 	$(FW_SLICE_GEN) $(FW_SLICE_LOG) $(FW_SLICE_FIRST) $(FW_SLICE_COUNT) $@ $(FW_SLICE_BIN)
 
-$(BENCH_ELF): $(BENCH_OBJ) $(ARM_LIB) port/cortex-m/ld/mps2-an386.ld port/cortex-m/ld/fnav_cm_sections.ld
-	$(ARM_CC) $(ARM_LDFLAGS) -Tmps2-an386.ld -Wl,-Map=$(ARM_BUILD)/footnav-bench.map -o $@ $(BENCH_OBJ) $(ARM_LIB) $(ARM_LDLIBS)
+$(BENCH_ELF): $(FWBENCH_OBJ) $(ARM_LIB) port/cortex-m/ld/mps2-an386.ld port/cortex-m/ld/fnav_cm_sections.ld
+	$(ARM_CC) $(ARM_LDFLAGS) -Tmps2-an386.ld -Wl,-Map=$(ARM_BUILD)/footnav-bench.map -o $@ $(FWBENCH_OBJ) $(ARM_LIB) $(ARM_LDLIBS)
 
 # The benchmark's code built for the host (float32 core), the reference the
 # emulator's output is compared with.
-$(FW_HOSTREF): $(BENCH_SRC) $(FW_SLICE_C) $(CORE_SRC) $(FW_STAMP) port/cortex-m/fnav_cm_fw_config.h
+$(FW_HOSTREF): $(FWBENCH_SRC) $(FW_SLICE_C) $(CORE_SRC) $(FW_STAMP) port/cortex-m/fnav_cm_fw_config.h
 	@mkdir -p $(dir $@)
 	$(CC) -Iinclude -Iport/cortex-m $(FW_CONFIG) $(FW_DEFS) $(CFLAGS_CORE) -o $@ \
-	  $(filter-out port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c,$(BENCH_SRC)) $(FW_SLICE_C) $(CORE_SRC) -lm
+	  $(filter-out port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_fault.c,$(FWBENCH_SRC)) $(FW_SLICE_C) $(CORE_SRC) -lm
 
 firmware: $(ARM_LIB) $(FW_ELF)
 	@if $(ARM_NM) -u $(ARM_LIB) | grep -E -w '$(FORBIDDEN)'; then \
@@ -266,11 +266,11 @@ FUZZ_LIB_OBJ := $(patsubst %.c,$(FUZZ_DIR)/obj/%.o,$(CORE_SRC) $(HX_SRC))
 
 $(FUZZ_DIR)/obj/%.o: %.c
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(CPPFLAGS) $(FUZZ_CFLAGS) -c $< -o $@
+	$(FUZZ_CC) $(CPPFLAGS) $(FUZZ_CFLAGS) -MMD -MP -c $< -o $@
 
 $(FUZZ_DIR)/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_LIB_OBJ)
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(CPPFLAGS) -Itests/fuzz $(FUZZ_CFLAGS) -fsanitize=fuzzer $^ -o $@ $(LDLIBS_HOST)
+	$(FUZZ_CC) $(CPPFLAGS) -Itests/fuzz $(FUZZ_CFLAGS) -MMD -MP -fsanitize=fuzzer $(filter %.c %.o,$^) -o $@ $(LDLIBS_HOST)
 
 fuzz: $(FUZZ_BINS)
 	@set -e; for b in $(FUZZ_BINS); do n=$${b#$(FUZZ_DIR)/fuzz_}; \
@@ -281,6 +281,12 @@ fuzz: $(FUZZ_BINS)
 	    -artifact_prefix=$(FUZZ_DIR)/artifacts/$$n/ $(FUZZ_DIR)/corpus/$$n 2>&1 | tail -n 12; \
 	  if ls $(FUZZ_DIR)/artifacts/$$n/* >/dev/null 2>&1; then echo "fuzz $$n: FAILED, see $(FUZZ_DIR)/artifacts/$$n"; exit 1; fi; \
 	done; echo "make fuzz: no crash, leak, timeout or sanitizer report"
+
+# Long-run numerical health: LONGRUN_HOURS of simulated walking through the
+# float32 navigator (tests/longrun_nav.c); about 1.5 minutes for 10 hours.
+LONGRUN_HOURS ?= 10
+longrun: $(BUILD)/tests/longrun_nav
+	$(BUILD)/tests/longrun_nav $(LONGRUN_HOURS)
 
 # Every suite under valgrind's memcheck (leaks and invalid accesses are errors).
 valgrind: $(TEST_BINS)

@@ -793,8 +793,10 @@ static int write_profile(const run_t *R, const char *path, const char *name)
     fnav_profile_t p;
     char err[320], comment[1024], extra[2048];
     size_t len = 0;
-    int i, have_q = 0, have_k = 0;
-    double q[6], kk[6], pv[6], pt[6], ps[6], rms[6];
+    int i, have_q = 0, have_k = 0, nfallback = 0;
+    size_t j;
+    double tau_long_s;
+    double q[6], kk[6], pv[6], pt[6], ps[6], rms[6], fallback[6];
     memset(&p, 0, sizeof p);
     snprintf(p.name, sizeof p.name, "%s", name);
     p.rate_hz = (fnav_real_t)R->rate_hz;
@@ -802,28 +804,62 @@ static int write_profile(const run_t *R, const char *path, const char *name)
         const chan_t *ch = &R->ch[i];
         const double si = 1.0 / ch->scale; /* display -> SI */
         const int k = ch->src;
-        if (!ch->id_ok || !ch->id.fit_ok) {
-            hx_error(CMD, "%s: no corrected identification for %s (too little data?); profile not written", path,
-                     ch->name);
+        hx_noise_model_t m;
+        if (!ch->id_ok || (!ch->id.fit_ok && !ch->id.paper_ok)) {
+            hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
             return -2;
         }
-        if (k < 3) {
-            p.accel_noise_mps2_rthz[k] = (fnav_real_t)(ch->id.fit.white * si);
-            p.accel_tau_s[k] = (fnav_real_t)ch->id.fit.gm_tau_s;
-            p.accel_bias_sigma_mps2[k] = (fnav_real_t)(ch->id.fit.gm_sigma * si);
-        } else {
-            p.gyro_noise_rps_rthz[k - 3] = (fnav_real_t)(ch->id.fit.white * si);
-            p.gyro_tau_s[k - 3] = (fnav_real_t)ch->id.fit.gm_tau_s;
-            p.gyro_bias_sigma_rps[k - 3] = (fnav_real_t)(ch->id.fit.gm_sigma * si);
+        /* the longest averaging time with data bounds what can be identified:
+         * an AR(1) whose bump (near 1.89 T) lies beyond it is a random walk
+         * in disguise, with an arbitrary sigma */
+        tau_long_s = 0.0;
+        for (j = 0; j < ch->nres; j++) {
+            if (ch->res[j].terms > 0) {
+                tau_long_s = (double)ch->res[j].tau / R->rate_hz;
+            }
         }
-        q[k] = ch->id.fit.quant * si;
-        kk[k] = ch->id.fit.rrw * si;
-        have_q |= ch->id.fit.quant > 0.0;
-        have_k |= ch->id.fit.rrw > 0.0;
+        if (ch->id.fit_ok && 1.89 * ch->id.fit.gm_tau_s <= tau_long_s) {
+            m = ch->id.fit;
+            fallback[k] = 0;
+        } else if (!ch->id.paper_ok) {
+            hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
+            return -2;
+        } else {
+            /* The AR(1) part is not identifiable: white noise dominates the
+             * whole curve (typically a bias correlation time longer than a
+             * tenth of the record). Write the conservative first-order
+             * Gauss-Markov bound from the curve's minimum: the AR(1) Allan
+             * deviation peaks at 0.618 sigma near tau = 1.89 T, so T =
+             * t_min / 1.89 and sigma = ADEV_min / 0.618 put the model's bump
+             * on the lowest measured point, an upper bound for the bias. */
+            memset(&m, 0, sizeof m);
+            m.white = (double)ch->id.paper.sigma_v;
+            m.gm_tau_s = (double)ch->id.paper.t_bs_s / 1.89;
+            m.gm_sigma = (double)ch->id.paper.bs / 0.6183;
+            fallback[k] = 1;
+            nfallback++;
+            hx_warn(CMD, "%s: the AR(1) bias of %s is not identifiable within the record (longest tau %.3g s, "
+                         "Allan minimum at %.3g s); the profile holds the upper bound T = %.3g s, sigma = %.3g %s "
+                         "from that minimum",
+                    path, ch->name, tau_long_s, (double)ch->id.paper.t_bs_s, m.gm_tau_s, m.gm_sigma, ch->unit);
+        }
+        if (k < 3) {
+            p.accel_noise_mps2_rthz[k] = (fnav_real_t)(m.white * si);
+            p.accel_tau_s[k] = (fnav_real_t)m.gm_tau_s;
+            p.accel_bias_sigma_mps2[k] = (fnav_real_t)(m.gm_sigma * si);
+        } else {
+            p.gyro_noise_rps_rthz[k - 3] = (fnav_real_t)(m.white * si);
+            p.gyro_tau_s[k - 3] = (fnav_real_t)m.gm_tau_s;
+            p.gyro_bias_sigma_rps[k - 3] = (fnav_real_t)(m.gm_sigma * si);
+        }
+        q[k] = m.quant * si;
+        kk[k] = m.rrw * si;
+        have_q |= m.quant > 0.0;
+        have_k |= m.rrw > 0.0;
         pv[k] = ch->id.paper_ok ? (double)ch->id.paper.sigma_v * si : (double)NAN;
         pt[k] = ch->id.paper_ok ? (double)ch->id.paper.tau_samples / R->rate_hz : (double)NAN;
         ps[k] = ch->id.paper_ok ? (double)ch->id.paper.sigma_bias * si : (double)NAN;
-        rms[k] = ch->id.fit_quality.rms_log10;
+        rms[k] = fallback[k] ? (double)NAN : ch->id.fit_quality.rms_log10;
     }
     if (fnav_profile_validate(&p) != FNAV_OK) {
         hx_error(CMD, "%s: identified parameters not all positive and finite; profile not written", path);
@@ -847,6 +883,11 @@ static int write_profile(const run_t *R, const char *path, const char *name)
     if (have_k) {
         ADD3("accel_rrw_mps2_rts", kk, 0);
         ADD3("gyro_rrw_rps_rts", kk, 3);
+    }
+    if (nfallback > 0) {
+        /* 1 where the AR(1) part is the Allan-minimum upper bound, not a fit */
+        ADD3("ident_bound_accel", fallback, 0);
+        ADD3("ident_bound_gyro", fallback, 3);
     }
     ADD3("allan_fit_rms_log10_accel", rms, 0);
     ADD3("allan_fit_rms_log10_gyro", rms, 3);

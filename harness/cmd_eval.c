@@ -10,6 +10,7 @@
 #include "hx_cli.h"
 #include "hx_commands.h"
 #include "hx_nav.h"
+#include "hx_profile.h"
 
 static const hx_opt_t k_opts[] = {
     HX_NAV_OPTS,
@@ -755,7 +756,7 @@ int hx_cmd_eval(int argc, char **argv)
     for (i = 0; i < argc && len < sizeof cmdline; i++) {
         len += (size_t)snprintf(cmdline + len, sizeof cmdline - len, " %s", argv[i]);
     }
-    ev.total_runs = exp ? 6 * 5 + 2 * 7 + 7 * 4 + 21 + 28 : 6 + 2 + 7 + 21 + 28;
+    ev.total_runs = exp ? 6 * 3 + 2 * 5 + 7 * 2 + 21 + 28 + 5 * (6 + 7 + 21 + 2) : 6 + 2 + 7 + 21 + 28;
     hx_progress_start(&ev.prog, "eval", ev.total_runs);
     off = ev.cfg;
     off.bias_model = FNAV_BIAS_OFF;
@@ -838,42 +839,86 @@ int hx_cmd_eval(int argc, char **argv)
 
     if (exp) {
         fnav_nav_config_t c2 = ev.cfg;
-        fprintf(ev.md, "## Paper experiment 1: AR(1) bias model on vs off\n\n"
-                       "Same walks, same configuration (profile `%s`) except `--bias-model`.\n\n",
-                ev.cfg.profile.name);
-        closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &ar1, 0.0, 0, &gx2_ar1);
-        closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &off, 0.0, 0, &gx2_off);
-        footprints(&ev, &ar1, 0.0, 0, &fp_ar1);
-        footprints(&ev, &off, 0.0, 0, &fp_off);
-        fprintf(ev.md, "| data set | figure | ar1 | off |\n|---|---|---:|---:|\n");
-        fprintf(ev.md, "| openshoe_gx2 | median horizontal closure (%%) | %.2f | %.2f |\n", gx2_ar1.h_pct_med,
-                gx2_off.h_pct_med);
-        fprintf(ev.md, "| openshoe_gx2 | median 3-D closure (%%) | %.2f | %.2f |\n", gx2_ar1.d3_pct_med,
-                gx2_off.d3_pct_med);
-        fprintf(ev.md, "| openshoe_gx2 | worst 3-D closure (%%) | %.2f | %.2f |\n", gx2_ar1.d3_pct_max,
-                gx2_off.d3_pct_max);
-        fprintf(ev.md, "| openshoe_gx2 | median vertical (m) | %+.3f | %+.3f |\n", gx2_ar1.vert_med, gx2_off.vert_med);
-        fprintf(ev.md, "| footprints | median final-stride error (%% of path) | %.2f | %.2f |\n", fp_ar1.final_pct_med,
-                fp_off.final_pct_med);
-        fprintf(ev.md, "| footprints | mean final-stride error (%% of path) | %.2f | %.2f |\n", fp_ar1.final_pct_mean,
-                fp_off.final_pct_mean);
         {
-            char p[700], note[200];
-            hx_traj_t t;
-            hx_nav_summary_t s;
-            double r2[2];
-            int b;
-            for (i = 0; i < 2; i++) {
-                snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, i ? "long_walk.csv" : "short_walk.csv");
-                for (b = 0; b < 2; b++) {
-                    r2[b] = (double)NAN;
-                    if (replay(&ev, p, b ? &off : &ar1, 0.0, &t, &s, note, sizeof note) == 0) {
-                        r2[b] = s.end_3d_m;
+            /* the bias model off, and on with each built-in table and with
+             * the generic MEMS profile of docs/profiles (literature reading
+             * of sigma_bias), everything else as configured */
+            static const char *const prof[5] = { NULL, "navchip", "mtx", "shimmer", "docs/profiles/generic-mems.profile" };
+            static const char *const head[5] = { "off", "ar1 navchip", "ar1 mtx", "ar1 shimmer", "ar1 generic MEMS" };
+            closure_t g[5];
+            fp_t fpv[5];
+            vicon_t vv[5];
+            double xs3[5], xl3[5];
+            int nv = 0, b, ok[5];
+            fprintf(ev.md, "## Paper experiment 1: AR(1) bias model on vs off\n\n"
+                           "Same walks and configuration except `--bias-model` and the profile: off (the default), "
+                           "and the AR(1) model with the paper's Tables IV-VI and with `docs/profiles/generic-mems."
+                           "profile` (bias instability as the stationary sd, 100 s; docs/navigation.md, \"Bias "
+                           "model\").\n\n");
+            for (b = 0; b < 5; b++) {
+                fnav_nav_config_t cv = b == 0 ? off : ar1;
+                char perr[300];
+                ok[b] = 1;
+                if (prof[b] != NULL && hx_profile_load(prof[b], &cv.profile, perr, sizeof perr) != 0) {
+                    hx_warn("eval", "bias-model experiment: %s", perr);
+                    ok[b] = 0;
+                    continue;
+                }
+                closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &cv, 0.0, 0, &g[b]);
+                footprints(&ev, &cv, 0.0, 0, &fpv[b]);
+                vicon(&ev, &cv, 0, &vv[b]);
+                for (i = 0; i < 2; i++) {
+                    char p[700], note[200];
+                    hx_traj_t t;
+                    hx_nav_summary_t s;
+                    double *dst = i ? &xl3[b] : &xs3[b];
+                    *dst = (double)NAN;
+                    snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, i ? "long_walk.csv" : "short_walk.csv");
+                    if (replay(&ev, p, &cv, 0.0, &t, &s, note, sizeof note) == 0) {
+                        *dst = s.end_3d_m;
                         hx_traj_free(&t);
                     }
                 }
-                fprintf(ev.md, "| xio %s | 3-D closure (m) | %.3f | %.3f |\n", i ? "long" : "short", r2[0], r2[1]);
+                nv++;
             }
+            (void)nv;
+            fprintf(ev.md, "| data set | figure |");
+            for (b = 0; b < 5; b++) {
+                if (ok[b]) {
+                    fprintf(ev.md, " %s |", head[b]);
+                }
+            }
+            fprintf(ev.md, "\n|---|---|");
+            for (b = 0; b < 5; b++) {
+                if (ok[b]) {
+                    fprintf(ev.md, "---:|");
+                }
+            }
+            fprintf(ev.md, "\n");
+#define EV_ROW(label, fmt, expr)                                                                                     \
+    do {                                                                                                             \
+        fprintf(ev.md, "| %s |", label);                                                                             \
+        for (b = 0; b < 5; b++) {                                                                                    \
+            if (ok[b]) {                                                                                             \
+                fprintf(ev.md, " " fmt " |", (expr));                                                                \
+            }                                                                                                        \
+        }                                                                                                            \
+        fprintf(ev.md, "\n");                                                                                        \
+    } while (0)
+            EV_ROW("openshoe_gx2 | median horizontal closure (%)", "%.2f", g[b].h_pct_med);
+            EV_ROW("openshoe_gx2 | median 3-D closure (%)", "%.2f", g[b].d3_pct_med);
+            EV_ROW("openshoe_gx2 | worst 3-D closure (%)", "%.2f", g[b].d3_pct_max);
+            EV_ROW("openshoe_gx2 | median vertical (m)", "%+.3f", g[b].vert_med);
+            EV_ROW("footprints | median final-stride error (% of path)", "%.2f", fpv[b].final_pct_med);
+            EV_ROW("footprints | mean final-stride error (% of path)", "%.2f", fpv[b].final_pct_mean);
+            EV_ROW("vicon | median of the per-trial median stride errors (m)", "%.3f", vv[b].stride_med);
+            EV_ROW("xio short | 3-D closure (m)", "%.3f", xs3[b]);
+            EV_ROW("xio long | 3-D closure (m)", "%.3f", xl3[b]);
+#undef EV_ROW
+            (void)gx2_ar1;
+            (void)gx2_off;
+            (void)fp_ar1;
+            (void)fp_off;
         }
         fprintf(ev.md, "\n## Paper experiment 2: 100 Hz vs 200 Hz\n\n"
                        "The higher-rate walks resampled (anti-alias low-pass, docs/harness.md) to 200 and 100 Hz, "

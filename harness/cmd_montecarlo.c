@@ -23,6 +23,7 @@ static const hx_opt_t k_opts[] = {
     { "--filter-profile", "NAME|FILE", "the filter's sensor profile (default: --profile, with --bias-sigma)", 0 },
     { "--bias-model", "MODEL", "filter bias model: ar1 (default), off, or both (paired, on the same samples)", 0 },
     { "--detector", "KIND", "stance detector: shoe (default) or threshold", 0 },
+    { "--samples", "KIND", "what the filter takes a sample for: instant or mean (default: what --decimation makes)", 0 },
     { "--param", "KEY=VALUE", "set a navigation parameter (list: harness replay --param help)", 1 },
     { "--bin", "S", "time bin of the growth curves, s (default 1)", 0 },
     { "--json", "FILE", "results as JSON (docs/results-sim.md)", 0 },
@@ -492,6 +493,16 @@ int hx_cmd_montecarlo(int argc, char **argv)
             no.profile = fprof;
             no.bias_model = nvar == 2 ? (v == 0 ? "ar1" : "off") : bm;
             no.detector = hx_arg(&a, "--detector");
+            /* the filter integrates the samples as what they are: interval
+             * means with --decimation mean, instantaneous values otherwise */
+            no.samples = hx_arg(&a, "--samples");
+            if (no.samples == NULL) {
+                no.samples = su.decim == HX_DECIM_MEAN ? "mean" : "instant";
+            }
+            if (strcmp(no.samples, "instant") != 0 && strcmp(no.samples, "mean") != 0) {
+                hx_error("montecarlo", "--samples is instant or mean, not '%s'", no.samples);
+                return HX_EXIT_USAGE;
+            }
             for (i = 0; i < hx_arg_count(&a, "--param") && i < HX_MAX_REPEAT; i++) {
                 no.params[no.nparams++] = hx_arg_at(&a, "--param", i);
             }

@@ -23,6 +23,7 @@ int hx_nav_opts_from_args(const char *cmd, const hx_args_t *a, hx_nav_opts_t *o)
     o->profile = hx_arg(a, "--profile");
     o->bias_model = hx_arg(a, "--bias-model");
     o->detector = hx_arg(a, "--detector");
+    o->samples = hx_arg(a, "--samples");
     if (hx_arg_double(a, "--rate", 1.0, 100000.0, &o->rate_hz) != 0) {
         return -1;
     }
@@ -36,6 +37,10 @@ int hx_nav_opts_from_args(const char *cmd, const hx_args_t *a, hx_nav_opts_t *o)
     }
     if (o->bias_model != NULL && strcmp(o->bias_model, "ar1") != 0 && strcmp(o->bias_model, "off") != 0) {
         hx_error(cmd, "--bias-model must be ar1 or off, not '%s'", o->bias_model);
+        return -1;
+    }
+    if (o->samples != NULL && strcmp(o->samples, "instant") != 0 && strcmp(o->samples, "mean") != 0) {
+        hx_error(cmd, "--samples must be instant or mean, not '%s'", o->samples);
         return -1;
     }
     if (o->detector != NULL && strcmp(o->detector, "shoe") != 0 && strcmp(o->detector, "threshold") != 0) {
@@ -60,7 +65,7 @@ static const param_t k_params[] = {
     { "sigma_a", P_REAL, 1.0, "SHOE accel weight, m/s^2" },
     { "sigma_g_dps", P_REAL, 3.14159265358979323846 / 180.0, "SHOE gyro weight, deg/s" },
     { "adaptive", P_INT, 1.0, "adaptive threshold 0/1" },
-    { "floor_rise", P_REAL, 1.0, "adaptive floor rise, decades/s" },
+    { "floor_window_s", P_REAL, 1.0, "adaptive floor: minimum of log10 T over this window, s" },
     { "margin_dec", P_REAL, 1.0, "adaptive threshold above the floor, decades" },
     { "adapt_max_ratio", P_REAL, 1.0, "adaptive threshold at most gamma times this" },
     { "gyro_thresh_dps", P_REAL, 3.14159265358979323846 / 180.0, "threshold detector: RMS rate limit, deg/s" },
@@ -79,12 +84,15 @@ static const param_t k_params[] = {
     { "zaru_sigma_dps", P_REAL, 3.14159265358979323846 / 180.0, "ZARU noise, deg/s" },
     { "tilt_sd_deg", P_REAL, 3.14159265358979323846 / 180.0, "initial roll/pitch sd, deg" },
     { "yaw_sd_deg", P_REAL, 3.14159265358979323846 / 180.0, "initial yaw sd, deg" },
-    { "gyro_bias_sd_dps", P_REAL, 3.14159265358979323846 / 180.0, "initial gyro bias sd floor, deg/s" },
-    { "accel_bias_sd", P_REAL, 1.0, "initial accel bias sd, m/s^2" },
+    { "gyro_bias_sd_dps", P_REAL, 3.14159265358979323846 / 180.0, "initial sd of the AR(1) gyro bias states, deg/s" },
+    { "accel_bias_sd", P_REAL, 1.0, "initial sd of the AR(1) accel bias states, m/s^2" },
     { "max_gap_s", P_REAL, 1.0, "longest interval integrated as it is, s" },
     { "closed_form", P_INT, 1.0, "UKF closed-form linear sigma points 0/1" },
     { "align_min_s", P_REAL, 1.0, "shortest still period for the alignment, s" },
     { "align_max_s", P_REAL, 1.0, "alignment ends after this much stillness, s" },
+    { "align_short_s", P_REAL, 1.0, "alignment: shortest still period used when the walk starts early, s" },
+    { "align_ratio", P_REAL, 1.0, "alignment: statistic limit over its running geometric mean" },
+    { "gyro_bias_prior_dps", P_REAL, 3.14159265358979323846 / 180.0, "alignment: prior sd of the gyro turn-on bias, deg/s (0: plain mean)" },
     { NULL, P_REAL, 0.0, NULL }
 };
 
@@ -95,8 +103,8 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     if (strcmp(key, "sigma_a") == 0) return &c->stance.sigma_a_mps2;
     if (strcmp(key, "sigma_g_dps") == 0) return &c->stance.sigma_g_rps;
     if (strcmp(key, "adaptive") == 0) return &c->stance.adaptive;
-    if (strcmp(key, "floor_rise") == 0) return &c->stance.floor_rise_dps;
     if (strcmp(key, "margin_dec") == 0) return &c->stance.margin_dec;
+    if (strcmp(key, "floor_window_s") == 0) return &c->stance.floor_window_s;
     if (strcmp(key, "adapt_max_ratio") == 0) return &c->stance.adapt_max_ratio;
     if (strcmp(key, "gyro_thresh_dps") == 0) return &c->stance.gyro_thresh_rps;
     if (strcmp(key, "accel_thresh") == 0) return &c->stance.accel_thresh_mps2;
@@ -120,6 +128,9 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     if (strcmp(key, "closed_form") == 0) return &c->closed_form;
     if (strcmp(key, "align_min_s") == 0) return &c->align.min_still_s;
     if (strcmp(key, "align_max_s") == 0) return &c->align.max_still_s;
+    if (strcmp(key, "align_short_s") == 0) return &c->align.short_still_s;
+    if (strcmp(key, "align_ratio") == 0) return &c->align.still_ratio;
+    if (strcmp(key, "gyro_bias_prior_dps") == 0) return &c->align.gyro_bias_prior_sd_rps;
     return NULL;
 }
 
@@ -182,6 +193,9 @@ int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, siz
     }
     if (o->bias_model != NULL) {
         cfg->bias_model = strcmp(o->bias_model, "off") == 0 ? FNAV_BIAS_OFF : FNAV_BIAS_AR1;
+    }
+    if (o->samples != NULL) {
+        cfg->sample_type = strcmp(o->samples, "mean") == 0 ? FNAV_SAMPLE_MEAN : FNAV_SAMPLE_INSTANT;
     }
     if (o->detector != NULL) {
         cfg->stance.detector = strcmp(o->detector, "threshold") == 0 ? FNAV_DETECTOR_THRESHOLD : FNAV_DETECTOR_SHOE;
@@ -659,9 +673,10 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
             s->stance_phases, 100.0 * s->stance_fraction);
     fprintf(f, "timing            %u duplicates (dt = 0), %u gaps, %u time jumps, longest interval %.1f ms\n",
             st->duplicates, st->gaps, st->time_jumps, 1e3 * (double)st->max_gap_seen_s);
-    fprintf(f, "health            %u NaN/Inf rejected, %u backwards rejected, %u jitter, %u resets, "
-               "%u undone, %u updates rejected\n",
-            st->nan_inputs, st->time_back, st->chol_jitter, st->chol_reset, st->diverged, st->update_reject);
+    fprintf(f, "health            %u NaN/Inf rejected, %u backwards rejected, %u jitter, %u covariance resets, "
+               "%u undone, %u updates rejected, %u covariance guard, %u divergence resets\n",
+            st->nan_inputs, st->time_back, st->chol_jitter, st->chol_reset, st->diverged, st->update_reject,
+            st->cov_guard, st->resets);
 }
 
 static cJSON *num(double v)
@@ -715,6 +730,8 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddNumberToObject(h, "chol_reset", st->chol_reset);
     cJSON_AddNumberToObject(h, "steps_undone", st->diverged);
     cJSON_AddNumberToObject(h, "updates_rejected", st->update_reject);
+    cJSON_AddNumberToObject(h, "covariance_guard", st->cov_guard);
+    cJSON_AddNumberToObject(h, "divergence_resets", st->resets);
     cJSON_AddNumberToObject(h, "health_bits", t->n > 0 ? (double)t->f[t->n - 1].health : 0.0);
     cJSON_AddItemToObject(root, "health", h);
     text = cJSON_Print(root);

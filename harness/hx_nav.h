@@ -22,6 +22,7 @@ typedef struct {
     const char *profile;     /**< --profile NAME|FILE */
     const char *bias_model;  /**< --bias-model ar1|off */
     const char *detector;    /**< --detector shoe|threshold */
+    const char *samples;     /**< --samples instant|mean */
     double rate_hz;          /**< --rate HZ: resample the input (0: no) */
     const char *params[HX_MAX_REPEAT]; /**< --param KEY=VALUE */
     int nparams;
@@ -32,6 +33,7 @@ typedef struct {
     { "--profile", "NAME|FILE", "sensor profile: navchip, mtx, shimmer or a profile file (default navchip)", 0 }, \
     { "--bias-model", "MODEL", "ar1 or off (default, docs/navigation.md)", 0 },                                           \
     { "--detector", "KIND", "stance detector: shoe (default) or threshold", 0 },                      \
+    { "--samples", "KIND", "what a sample is: instant (default; rate-output sensors) or mean (delta-angle/velocity over the interval)", 0 }, \
     { "--rate", "HZ", "resample the input to HZ first (anti-alias low-pass, docs/harness.md)", 0 },   \
     { "--param", "KEY=VALUE", "set a navigation parameter (list: --param help)", 1 }
 

@@ -6,14 +6,22 @@ const fnav_align_config_t fnav_align_config_default = {
     FNAV_R(0.5),    /* min_still_s, s */
     FNAV_R(5.0),    /* max_still_s, s */
     FNAV_R(9.80665), /* gravity_mps2, m/s^2 */
-    FNAV_R(10.0)     /* still_ratio: one decade above the noise floor */
+    FNAV_R(10.0),    /* still_ratio: one decade above the noise floor */
+    FNAV_R(0.2),     /* short_still_s, s */
+    FNAV_R(0.5) * FNAV_DEG2RAD /* gyro_bias_prior_sd_rps, rad/s */
 };
 
-static void reset_period(fnav_align_t *al)
+static void reset_period(fnav_align_period_t *p)
 {
-    al->sa = al->sg = al->sa2 = al->sg2 = fnav_vec3_zero();
-    al->n = 0;
-    al->sum_log_stat = FNAV_R(0.0);
+    p->sa = p->sg = p->sa2 = p->sg2 = fnav_vec3_zero();
+    p->a_ref = p->g_ref = fnav_vec3_zero();
+    p->n = 0;
+    p->sum_log_stat = FNAV_R(0.0);
+    p->blk_cur = fnav_vec3_zero();
+    p->blk_len = 1;
+    p->blk_fill = 0;
+    p->nblk = 0;
+    p->t0_ns = p->t_last_ns = 0;
 }
 
 fnav_status_t fnav_align_init(fnav_align_t *al, const fnav_align_config_t *cfg)
@@ -23,15 +31,18 @@ fnav_status_t fnav_align_init(fnav_align_t *al, const fnav_align_config_t *cfg)
     }
     if (!(fnav_isfinite(cfg->min_still_s) && cfg->min_still_s > FNAV_R(0.0)) ||
         !(fnav_isfinite(cfg->max_still_s) && cfg->max_still_s >= cfg->min_still_s) ||
+        !(fnav_isfinite(cfg->short_still_s) && cfg->short_still_s > FNAV_R(0.0) &&
+          cfg->short_still_s <= cfg->min_still_s) ||
         !(fnav_isfinite(cfg->gravity_mps2) && cfg->gravity_mps2 > FNAV_R(0.0)) ||
-        !(fnav_isfinite(cfg->still_ratio) && cfg->still_ratio > FNAV_R(1.0))) {
+        !(fnav_isfinite(cfg->still_ratio) && cfg->still_ratio > FNAV_R(1.0)) ||
+        !(fnav_isfinite(cfg->gyro_bias_prior_sd_rps) && cfg->gyro_bias_prior_sd_rps >= FNAV_R(0.0))) {
         return FNAV_E_CONFIG;
     }
     al->cfg = *cfg;
     al->done = 0;
-    al->t0_ns = al->t_last_ns = 0;
-    al->a_ref = al->g_ref = fnav_vec3_zero();
-    reset_period(al);
+    al->have_best = 0;
+    al->best_log_stat = FNAV_R(0.0);
+    reset_period(&al->cur);
     return FNAV_OK;
 }
 
@@ -48,78 +59,185 @@ fnav_status_t fnav_align_from_means(fnav_vec3_t f, fnav_vec3_t w, fnav_real_t g,
     out->q_nb = fnav_quat_from_euler(roll, pitch, FNAV_R(0.0));
     out->euler_rad = fnav_vec3(roll, pitch, FNAV_R(0.0));
     out->gyro_bias_rps = w;
+    out->gyro_mean_rps = w;
+    out->gyro_mean_se_rps = fnav_vec3_zero();
+    out->gyro_bias_sd_rps = fnav_vec3_zero();
     out->accel_bias_mps2 = fnav_vec3_scale(f, (fn - g) / fn);
     out->accel_mean_mps2 = f;
     return FNAV_OK;
 }
 
-static fnav_status_t complete(fnav_align_t *al)
+static fnav_real_t duration_s(const fnav_align_period_t *p)
 {
-    fnav_real_t inv = FNAV_R(1.0) / (fnav_real_t)al->n;
-    fnav_vec3_t ma = fnav_vec3_scale(al->sa, inv), mg = fnav_vec3_scale(al->sg, inv);
-    fnav_align_result_t *r = &al->result;
+    return (fnav_real_t)(p->t_last_ns - p->t0_ns) * FNAV_R(1.0e-9);
+}
+
+/* Squared standard error of the mean rate of axis i: the larger of the
+ * batch-means estimate (var of the block means / blocks) and the white-noise
+ * value (var / n). */
+static fnav_real_t mean_se2(const fnav_align_period_t *p, fnav_real_t var, int i)
+{
+    fnav_real_t se2 = var / (fnav_real_t)p->n;
+    if (p->nblk >= 2) {
+        fnav_real_t sm = FNAV_R(0.0), sq = FNAV_R(0.0), nb = (fnav_real_t)p->nblk;
+        fnav_real_t inv = FNAV_R(1.0) / (fnav_real_t)p->blk_len;
+        fnav_real_t vb;
+        int k;
+        for (k = 0; k < p->nblk; k++) {
+            fnav_real_t m = p->blk[k].v[i] * inv;
+            sm += m;
+            sq += m * m;
+        }
+        sm /= nb;
+        vb = (sq - nb * sm * sm) / (nb - FNAV_R(1.0));
+        if (vb / nb > se2) {
+            se2 = vb / nb;
+        }
+    }
+    return se2;
+}
+
+/* The alignment of period p into *r. */
+static fnav_status_t period_result(const fnav_align_t *al, const fnav_align_period_t *p, fnav_align_result_t *r)
+{
+    fnav_real_t inv = FNAV_R(1.0) / (fnav_real_t)p->n;
+    fnav_vec3_t ma = fnav_vec3_scale(p->sa, inv), mg = fnav_vec3_scale(p->sg, inv);
+    fnav_real_t s02 = al->cfg.gyro_bias_prior_sd_rps * al->cfg.gyro_bias_prior_sd_rps;
     fnav_status_t st;
     int i;
-    st = fnav_align_from_means(fnav_vec3_add(al->a_ref, ma), fnav_vec3_add(al->g_ref, mg), al->cfg.gravity_mps2, r);
+    st = fnav_align_from_means(fnav_vec3_add(p->a_ref, ma), fnav_vec3_add(p->g_ref, mg), al->cfg.gravity_mps2, r);
     if (st != FNAV_OK) {
         return st;
     }
     for (i = 0; i < 3; i++) {
-        fnav_real_t k = (al->n > 1) ? FNAV_R(1.0) / (fnav_real_t)(al->n - 1) : FNAV_R(0.0);
-        fnav_real_t va = (al->sa2.v[i] - al->sa.v[i] * ma.v[i]) * k;
-        fnav_real_t vg = (al->sg2.v[i] - al->sg.v[i] * mg.v[i]) * k;
-        r->accel_sd_mps2.v[i] = fnav_sqrt(va > FNAV_R(0.0) ? va : FNAV_R(0.0));
-        r->gyro_sd_rps.v[i] = fnav_sqrt(vg > FNAV_R(0.0) ? vg : FNAV_R(0.0));
+        fnav_real_t k = (p->n > 1) ? FNAV_R(1.0) / (fnav_real_t)(p->n - 1) : FNAV_R(0.0);
+        fnav_real_t va = (p->sa2.v[i] - p->sa.v[i] * ma.v[i]) * k;
+        fnav_real_t vg = (p->sg2.v[i] - p->sg.v[i] * mg.v[i]) * k;
+        fnav_real_t se2;
+        va = va > FNAV_R(0.0) ? va : FNAV_R(0.0);
+        vg = vg > FNAV_R(0.0) ? vg : FNAV_R(0.0);
+        r->accel_sd_mps2.v[i] = fnav_sqrt(va);
+        r->gyro_sd_rps.v[i] = fnav_sqrt(vg);
+        /* posterior of a zero-mean prior (sd s0) and the mean (se) */
+        se2 = mean_se2(p, vg, i);
+        r->gyro_mean_se_rps.v[i] = fnav_sqrt(se2);
+        if (s02 > FNAV_R(0.0)) {
+            r->gyro_bias_rps.v[i] = r->gyro_mean_rps.v[i] * s02 / (s02 + se2);
+            r->gyro_bias_sd_rps.v[i] = fnav_sqrt(s02 * se2 / (s02 + se2));
+        } else {
+            r->gyro_bias_sd_rps.v[i] = r->gyro_mean_se_rps.v[i];
+        }
     }
-    r->samples = al->n;
-    r->duration_s = (fnav_real_t)(al->t_last_ns - al->t0_ns) * FNAV_R(1.0e-9);
-    al->done = 1;
+    r->samples = p->n;
+    r->duration_s = duration_s(p);
     return FNAV_OK;
+}
+
+static fnav_status_t complete(fnav_align_t *al, const fnav_align_period_t *p)
+{
+    fnav_status_t st = period_result(al, p, &al->result);
+    if (st == FNAV_OK) {
+        al->done = 1;
+    }
+    return st;
+}
+
+static fnav_real_t mean_log_stat(const fnav_align_period_t *p)
+{
+    return p->sum_log_stat / (fnav_real_t)p->n;
+}
+
+/* 1 when period p is a short-period candidate quieter than the kept one. */
+static int better_short(const fnav_align_t *al, const fnav_align_period_t *p)
+{
+    return p->n >= 2 && duration_s(p) >= al->cfg.short_still_s &&
+           (!al->have_best || mean_log_stat(p) < al->best_log_stat);
+}
+
+/* The current period ended before min_still_s: keep its alignment if it is
+ * long enough and quieter than the kept one, then restart. */
+static void end_short_period(fnav_align_t *al)
+{
+    fnav_align_period_t *c = &al->cur;
+    if (better_short(al, c) && period_result(al, c, &al->result) == FNAV_OK) {
+        al->have_best = 1;
+        al->best_log_stat = mean_log_stat(c);
+    }
+    reset_period(c);
+}
+
+static void add_sample(fnav_align_period_t *p, const fnav_sample_t *s, fnav_real_t lstat)
+{
+    int i;
+    if (p->n == 0) {
+        p->a_ref = fnav_vec3_from(s->accel_mps2);
+        p->g_ref = fnav_vec3_from(s->gyro_rps);
+        p->t0_ns = s->t_ns;
+    }
+    for (i = 0; i < 3; i++) {
+        fnav_real_t da = s->accel_mps2[i] - p->a_ref.v[i];
+        fnav_real_t dg = s->gyro_rps[i] - p->g_ref.v[i];
+        p->sa.v[i] += da;
+        p->sa2.v[i] += da * da;
+        p->sg.v[i] += dg;
+        p->sg2.v[i] += dg * dg;
+        p->blk_cur.v[i] += dg;
+    }
+    p->sum_log_stat += lstat;
+    p->n++;
+    p->t_last_ns = s->t_ns;
+    /* batch means with doubling blocks: FNAV_ALIGN_BLOCKS full blocks are
+     * merged pairwise into half as many blocks of twice the length */
+    if (++p->blk_fill == p->blk_len) {
+        p->blk[p->nblk++] = p->blk_cur;
+        p->blk_cur = fnav_vec3_zero();
+        p->blk_fill = 0;
+        if (p->nblk == FNAV_ALIGN_BLOCKS) {
+            int j = 0;
+            for (i = 0; i < FNAV_ALIGN_BLOCKS / 2; i++) {
+                p->blk[i] = fnav_vec3_add(p->blk[j], p->blk[j + 1]);
+                j += 2;
+            }
+            p->nblk = FNAV_ALIGN_BLOCKS / 2;
+            p->blk_len *= 2;
+        }
+    }
 }
 
 fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_sample_t *s, int still, fnav_real_t stat)
 {
-    fnav_real_t dur, lstat = FNAV_R(0.0);
-    int i;
+    fnav_align_period_t *c;
+    fnav_real_t lstat = FNAV_R(0.0);
+    int ratio_break = 0;
     if (al == NULL || s == NULL) {
         return FNAV_E_ARG;
     }
     if (al->done) {
         return FNAV_E_STATE;
     }
+    c = &al->cur;
     if (still && stat > FNAV_R(0.0) && fnav_isfinite(stat)) {
         lstat = fnav_log10(stat);
-        if (al->n > 0 && lstat > al->sum_log_stat / (fnav_real_t)al->n + fnav_log10(al->cfg.still_ratio)) {
-            still = 0; /* the statistic left the noise floor: motion begins */
+        if (c->n > 0 && lstat > mean_log_stat(c) + fnav_log10(al->cfg.still_ratio)) {
+            ratio_break = 1; /* the statistic left the noise floor: the clean stillness ends */
         }
     }
-    if (!still) {
-        dur = (fnav_real_t)(al->t_last_ns - al->t0_ns) * FNAV_R(1.0e-9);
-        if (al->n >= 2 && dur >= al->cfg.min_still_s) {
-            return complete(al);
+    if (!still || ratio_break) {
+        if (c->n >= 2 && duration_s(c) >= al->cfg.min_still_s) {
+            return complete(al, c);
         }
-        reset_period(al);
+        end_short_period(al);
+        if (!still && al->have_best) {
+            /* the foot moves and no period reached min_still_s: the
+             * quietest short period is all there is before the walk */
+            al->done = 1;
+            return FNAV_OK;
+        }
         return FNAV_AGAIN;
     }
-    if (al->n == 0) {
-        al->a_ref = fnav_vec3_from(s->accel_mps2);
-        al->g_ref = fnav_vec3_from(s->gyro_rps);
-        al->t0_ns = s->t_ns;
-    }
-    for (i = 0; i < 3; i++) {
-        fnav_real_t da = s->accel_mps2[i] - al->a_ref.v[i];
-        fnav_real_t dg = s->gyro_rps[i] - al->g_ref.v[i];
-        al->sa.v[i] += da;
-        al->sa2.v[i] += da * da;
-        al->sg.v[i] += dg;
-        al->sg2.v[i] += dg * dg;
-    }
-    al->sum_log_stat += lstat;
-    al->n++;
-    al->t_last_ns = s->t_ns;
-    dur = (fnav_real_t)(al->t_last_ns - al->t0_ns) * FNAV_R(1.0e-9);
-    if (dur >= al->cfg.max_still_s) {
-        return complete(al);
+    add_sample(c, s, lstat);
+    if (duration_s(c) >= al->cfg.max_still_s) {
+        return complete(al, c);
     }
     return FNAV_AGAIN;
 }
@@ -132,8 +250,17 @@ fnav_status_t fnav_align_finish(fnav_align_t *al)
     if (al->done) {
         return FNAV_OK;
     }
-    if (al->n < 2 || (fnav_real_t)(al->t_last_ns - al->t0_ns) * FNAV_R(1.0e-9) < al->cfg.min_still_s) {
-        return FNAV_E_STATE;
+    if (al->cur.n >= 2 && duration_s(&al->cur) >= al->cfg.min_still_s) {
+        return complete(al, &al->cur);
     }
-    return complete(al);
+    /* the quietest period of at least short_still_s, the current one
+     * included (nothing is discarded when none qualifies) */
+    if (better_short(al, &al->cur)) {
+        return complete(al, &al->cur);
+    }
+    if (al->have_best) {
+        al->done = 1;
+        return FNAV_OK;
+    }
+    return FNAV_E_STATE;
 }

@@ -4,6 +4,36 @@
  * Schafer, "Discrete-Time Signal Processing", 3rd ed., problem 9.51). */
 #include "footnav/fnav_fft.h"
 
+void fnav_fft_cos_sin_2pi(uint32_t k, uint32_t n, fnav_real_t *c, fnav_real_t *s)
+{
+    const fnav_real_t two_pi = FNAV_R(6.283185307179586476925);
+    uint32_t x = k % n;
+    fnav_real_t sgn_s = FNAV_R(1.0), sgn_c = FNAV_R(1.0), cc, ss;
+    int swap = 0;
+    if ((n & 7u) == 0u) {
+        const uint32_t h = n / 2u, q = n / 4u, e = n / 8u;
+        if (x >= h) { /* angle in [pi, 2 pi): sin negative, cos even */
+            x = n - x;
+            sgn_s = -sgn_s;
+        }
+        if (x > q) { /* (pi/2, pi]: cos negative */
+            x = h - x;
+            sgn_c = -sgn_c;
+        }
+        if (x > e) { /* (pi/4, pi/2]: swap sine and cosine */
+            x = q - x;
+            swap = 1;
+        }
+    } else if (2u * x > n) {
+        x = n - x;
+        sgn_s = -sgn_s;
+    }
+    cc = fnav_cos(two_pi * (fnav_real_t)x / (fnav_real_t)n);
+    ss = fnav_sin(two_pi * (fnav_real_t)x / (fnav_real_t)n);
+    *c = sgn_c * (swap ? ss : cc);
+    *s = sgn_s * (swap ? cc : ss);
+}
+
 fnav_status_t fnav_fft_init(fnav_fft_t *f, uint32_t n)
 {
     uint32_t k;
@@ -16,10 +46,7 @@ fnav_status_t fnav_fft_init(fnav_fft_t *f, uint32_t n)
     f->n = n;
     f->reserved = 0;
     for (k = 0; k < n / 2u; k++) {
-        /* table computed in double once, so that float twiddles are correctly rounded */
-        const double ang = 6.283185307179586476925 * (double)k / (double)n;
-        f->cs[k] = (fnav_real_t)cos(ang);
-        f->sn[k] = (fnav_real_t)sin(ang);
+        fnav_fft_cos_sin_2pi(k, n, &f->cs[k], &f->sn[k]);
     }
     return FNAV_OK;
 }

@@ -16,10 +16,11 @@ const fnav_nav_config_t fnav_nav_config_default = {
       { FNAV_R(8.5e-5) * D2R, FNAV_R(6.4e-5) * D2R, FNAV_R(3.4e-5) * D2R } },
     FNAV_BIAS_OFF, /* bias_model: see docs/navigation.md (evidence in docs/results.md) */
     { FNAV_DETECTOR_SHOE, FNAV_R(0.0), FNAV_R(0.025), FNAV_R(0.01), FNAV_R(0.1) * D2R, FNAV_R(1.0e5),
-      FNAV_R(0.6), FNAV_R(0.6), FNAV_R(9.80665), 1, FNAV_R(0.25), FNAV_R(0.4), FNAV_R(10.0), FNAV_R(0.02), FNAV_R(0.05),
-      FNAV_R(0.2), FNAV_R(0.3) },
-    { FNAV_R(0.5), FNAV_R(5.0), FNAV_R(9.80665), FNAV_R(10.0) },
+      FNAV_R(0.6), FNAV_R(0.6), FNAV_R(9.80665), 1, FNAV_R(2.0), FNAV_R(0.4), FNAV_R(10.0), FNAV_R(0.02), FNAV_R(0.05),
+      FNAV_R(0.25), FNAV_R(0.3) },
+    { FNAV_R(0.5), FNAV_R(5.0), FNAV_R(9.80665), FNAV_R(10.0), FNAV_R(0.2), FNAV_R(0.5) * D2R },
     FNAV_R(9.80665),    /* gravity_mps2 */
+    FNAV_SAMPLE_INSTANT, /* sample_type: rate-output sensors (docs/navigation.md) */
     FNAV_R(0.02),       /* accel_motion_noise_mps2_rthz */
     FNAV_R(0.02) * D2R, /* gyro_motion_noise_rps_rthz */
     FNAV_R(0.01),       /* zupt_sigma_mps */
@@ -33,7 +34,9 @@ const fnav_nav_config_t fnav_nav_config_default = {
     FNAV_R(0.01) * D2R, /* gyro_bias_sd_rps */
     FNAV_R(0.02),       /* accel_bias_sd_mps2 */
     FNAV_R(0.5),        /* max_gap_s */
-    1                   /* closed_form */
+    1,                  /* closed_form */
+    FNAV_R(30.0),       /* diverge_speed_mps */
+    20u                 /* diverge_undone */
 };
 
 static fnav_real_t rss(fnav_real_t a, fnav_real_t b)
@@ -55,6 +58,7 @@ static void ukf_config_from(const fnav_nav_config_t *c, fnav_ukf_config_t *u)
     }
     u->bias_model = c->bias_model;
     u->strapdown.gravity_mps2 = c->gravity_mps2;
+    u->strapdown.sample_type = c->sample_type;
     u->zupt_sigma_mps = c->zupt_sigma_mps;
     u->zaru_sigma_rps = c->zaru_sigma_rps;
     u->closed_form = c->closed_form;
@@ -81,7 +85,9 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
         !(cfg->yaw_sd_rad > FNAV_R(0.0)) || !(cfg->gyro_bias_sd_rps > FNAV_R(0.0)) ||
         !(cfg->accel_bias_sd_mps2 > FNAV_R(0.0)) || !(cfg->max_gap_s > FNAV_R(0.0)) ||
         !fnav_isfinite(cfg->tilt_sd_rad) || !fnav_isfinite(cfg->yaw_sd_rad) || !fnav_isfinite(cfg->gyro_bias_sd_rps) ||
-        !fnav_isfinite(cfg->accel_bias_sd_mps2) || !fnav_isfinite(cfg->max_gap_s)) {
+        !fnav_isfinite(cfg->accel_bias_sd_mps2) || !fnav_isfinite(cfg->max_gap_s) ||
+        !(cfg->diverge_speed_mps > FNAV_R(0.0)) || !fnav_isfinite(cfg->diverge_speed_mps) ||
+        cfg->diverge_undone == 0u) {
         return FNAV_E_CONFIG;
     }
     for (b = 0; b < sizeof *nav; b++) {
@@ -147,11 +153,13 @@ static void start_filter(fnav_nav_t *nav)
     const fnav_nav_config_t *c = &nav->cfg;
     fnav_ukf_init_sd_t sd;
     fnav_status_t st;
-    fnav_real_t n = (fnav_real_t)(r->samples > 1 ? r->samples : 1);
     int i;
     for (i = 0; i < 3; i++) {
-        /* gyro bias: standard error of the alignment mean, with a floor */
-        sd.gyro_bias_rps[i] = rss(r->gyro_sd_rps.v[i] / fnav_sqrt(n), c->gyro_bias_sd_rps);
+        /* AR(1) states: the in-run variation about the alignment value
+         * (docs/navigation.md, "Bias model"), which starts small; the
+         * alignment's own error (r->gyro_bias_sd_rps) is not re-estimated
+         * from the ZUPTs, which attribute strapdown errors to it */
+        sd.gyro_bias_rps[i] = c->gyro_bias_sd_rps;
         sd.accel_bias_mps2[i] = c->accel_bias_sd_mps2;
         sd.att_rad[i] = c->tilt_sd_rad;
     }
@@ -161,7 +169,53 @@ static void start_filter(fnav_nav_t *nav)
     st = fnav_ukf_start(&nav->ukf, r->q_nb, r->gyro_bias_rps, r->accel_bias_mps2, &sd);
     FNAV_ASSERT(st == FNAV_OK);
     (void)st;
+    if (nav->have_hold) {
+        /* after a reset: continue from the last good position and heading
+         * (the alignment defines yaw 0; rotate it to the held heading) */
+        fnav_quat_t qz = fnav_quat_from_rotvec(fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), nav->hold_yaw_rad));
+        nav->ukf.q_nb = fnav_quat_normalize(fnav_quat_mul(qz, nav->ukf.q_nb));
+        nav->ukf.pos_m = nav->hold_pos_m;
+        for (i = 0; i < 3; i++) {
+            fnav_real_t v = nav->hold_pos_var_m2[i];
+            if (fnav_isfinite(v) && v > fnav_ukf_cov(&nav->ukf, FNAV_UKF_P + i, FNAV_UKF_P + i)) {
+                fnav_ukf_set_cov(&nav->ukf, FNAV_UKF_P + i, FNAV_UKF_P + i, v);
+            }
+        }
+        nav->have_hold = 0;
+    }
+    nav->undone_run = 0;
     nav->aligned = 1;
+}
+
+void fnav_nav_reset(fnav_nav_t *nav)
+{
+    fnav_status_t st;
+    int i;
+    FNAV_ASSERT(nav != NULL);
+    if (nav->aligned) {
+        /* hold the last good frame's position and heading: the state that
+         * triggered the reset is the diverged one */
+        const fnav_nav_frame_t *g = &nav->last;
+        int good = (g->flags & FNAV_FRAME_ALIGNED) != 0u;
+        for (i = 0; i < 3; i++) {
+            good = good && fnav_isfinite(g->pos_m[i]) && fnav_isfinite(g->p_diag[FNAV_UKF_P + i]);
+        }
+        if (good) {
+            nav->hold_pos_m = fnav_vec3(g->pos_m[0], g->pos_m[1], g->pos_m[2]);
+            nav->hold_yaw_rad = fnav_isfinite(g->euler_rad[2]) ? g->euler_rad[2] : FNAV_R(0.0);
+            for (i = 0; i < 3; i++) {
+                nav->hold_pos_var_m2[i] = g->p_diag[FNAV_UKF_P + i];
+            }
+            nav->have_hold = 1;
+        }
+    }
+    nav->aligned = 0;
+    nav->undone_run = 0;
+    st = fnav_align_init(&nav->align, &nav->align.cfg);
+    FNAV_ASSERT(st == FNAV_OK); /* the configuration was accepted at init */
+    (void)st;
+    nav->stats.resets++;
+    nav->health |= FNAV_HEALTH_RESET;
 }
 
 static void sync_health(fnav_nav_t *nav)
@@ -171,6 +225,7 @@ static void sync_health(fnav_nav_t *nav)
     nav->stats.chol_reset = h->chol_reset;
     nav->stats.diverged = h->diverged;
     nav->stats.update_reject = h->update_reject;
+    nav->stats.cov_guard = h->cov_guard;
     nav->stats.zupts = h->zupts;
     nav->stats.zarus = h->zarus;
     if (h->chol_jitter) {
@@ -184,6 +239,9 @@ static void sync_health(fnav_nav_t *nav)
     }
     if (h->update_reject) {
         nav->health |= FNAV_HEALTH_UPDATE_REJECT;
+    }
+    if (h->cov_guard) {
+        nav->health |= FNAV_HEALTH_COV_GUARD;
     }
 }
 
@@ -218,6 +276,14 @@ static void fill_frame(fnav_nav_t *nav, const fnav_stance_out_t *o, uint32_t fla
         }
         for (i = 0; i < FNAV_UKF_N; i++) {
             fr->p_diag[i] = FNAV_R(0.0);
+        }
+        if (nav->have_hold) {
+            /* re-aligning after a reset: the held position and heading */
+            for (i = 0; i < 3; i++) {
+                fr->pos_m[i] = nav->hold_pos_m.v[i];
+                fr->p_diag[FNAV_UKF_P + i] = nav->hold_pos_var_m2[i];
+            }
+            fr->euler_rad[2] = nav->hold_yaw_rad;
         }
     }
     sync_health(nav);
@@ -279,7 +345,15 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
     }
     if (dt_used > FNAV_R(0.0)) {
         st = fnav_ukf_predict(&nav->ukf, fnav_vec3_from(s->gyro_rps), fnav_vec3_from(s->accel_mps2), dt_used);
-        (void)st; /* problems are counted in the UKF's health */
+        /* problems are counted in the UKF's health; a run of undone steps or
+         * an impossible speed is divergence: reset and re-align */
+        nav->undone_run = (st == FNAV_E_DIVERGED) ? nav->undone_run + 1u : 0u;
+        if (nav->undone_run >= nav->cfg.diverge_undone ||
+            !(fnav_vec3_norm(nav->ukf.vel_mps) <= nav->cfg.diverge_speed_mps)) {
+            fnav_nav_reset(nav);
+            fill_frame(nav, o, flags, fr);
+            return;
+        }
         if (o->stance) {
             if (fnav_ukf_zupt(&nav->ukf, fnav_vec3_from(s->gyro_rps)) == FNAV_OK) {
                 flags |= FNAV_FRAME_ZUPT;

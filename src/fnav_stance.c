@@ -20,12 +20,12 @@ const fnav_stance_config_t fnav_stance_config_default = {
     FNAV_R(0.6),        /* accel_thresh_mps2, m/s^2 */
     FNAV_R(9.80665),    /* gravity_mps2, m/s^2 */
     1,                  /* adaptive */
-    FNAV_R(0.25),       /* floor_rise_dps, decades/s */
+    FNAV_R(2.0),        /* floor_window_s, s */
     FNAV_R(0.4),        /* margin_dec, decades */
     FNAV_R(10.0),       /* adapt_max_ratio */
     FNAV_R(0.02),       /* min_zupt_s, s */
     FNAV_R(0.05),       /* min_stance_s, s */
-    FNAV_R(0.2),        /* min_swing_s, s */
+    FNAV_R(0.25),       /* min_swing_s, s */
     FNAV_R(0.3)         /* event_window_s, s */
 };
 
@@ -46,7 +46,7 @@ fnav_status_t fnav_stance_init(fnav_stance_t *st, const fnav_stance_config_t *cf
         !(fnav_isfinite(c->rate_hz) && c->rate_hz >= FNAV_R(0.0)) || !pos_finite(c->window_s) ||
         !pos_finite(c->sigma_a_mps2) || !pos_finite(c->sigma_g_rps) || !pos_finite(c->gamma) ||
         !pos_finite(c->gyro_thresh_rps) || !pos_finite(c->accel_thresh_mps2) || !pos_finite(c->gravity_mps2) ||
-        !(fnav_isfinite(c->floor_rise_dps) && c->floor_rise_dps >= FNAV_R(0.0)) ||
+        (c->adaptive != 0 && c->adaptive != 1) || !pos_finite(c->floor_window_s) ||
         !(fnav_isfinite(c->margin_dec) && c->margin_dec >= FNAV_R(0.0)) ||
         !(fnav_isfinite(c->adapt_max_ratio) && c->adapt_max_ratio >= FNAV_R(1.0)) ||
         !(fnav_isfinite(c->min_stance_s) && c->min_stance_s >= FNAV_R(0.0)) ||
@@ -95,6 +95,8 @@ static void set_rate(fnav_stance_t *st, fnav_real_t rate_hz)
     }
     n = round_pos(st->cfg.min_swing_s * rate_hz);
     st->n_min_swing = n < 1 ? 1 : n;
+    n = round_pos(st->cfg.floor_window_s * rate_hz / (fnav_real_t)FNAV_STANCE_FLOOR_BLOCKS);
+    st->fw_len = n < 1 ? 1 : n;
 }
 
 static const fnav_sample_t *at(const fnav_stance_t *st, long i)
@@ -296,8 +298,7 @@ static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
 static void decide_raw(fnav_stance_t *st)
 {
     long i = st->n_raw, lo, hi;
-    fnav_real_t stat, gamma, g0, dt_s = FNAV_R(0.0);
-    const fnav_sample_t *s = at(st, i);
+    fnav_real_t stat, gamma, g0;
     int q = (int)(i % FNAV_STANCE_MAX_WINDOW);
     lo = i - st->half;
     hi = i + st->half;
@@ -313,26 +314,34 @@ static void decide_raw(fnav_stance_t *st)
     stat = statistic(st, lo, hi);
     g0 = st->cfg.detector == FNAV_DETECTOR_SHOE ? st->cfg.gamma : FNAV_R(1.0);
     gamma = g0;
-    if (i > 0 && s->t_ns > at(st, i - 1)->t_ns) {
-        dt_s = (fnav_real_t)(s->t_ns - at(st, i - 1)->t_ns) * FNAV_R(1.0e-9);
-    }
     if (st->cfg.adaptive) {
-        /* floor of log10 T: follows new minima at once, else rises slowly;
-         * it never sits below log10(gamma) - margin, so that after a long
-         * rest it catches up with a jogging stance in a few strides */
+        /* floor F of log10 T: its minimum over the last floor_window_s (the
+         * completed blocks and the one being filled), never below
+         * log10(gamma) - margin; the threshold of this sample comes from the
+         * samples before it */
         fnav_real_t l = fnav_log10(stat > FNAV_R(1.0e-30) ? stat : FNAV_R(1.0e-30));
         fnav_real_t fmin = fnav_log10(g0) - st->cfg.margin_dec;
+        int k;
         if (st->floor_valid) {
-            fnav_real_t fl = st->floor_l + st->cfg.floor_rise_dps * dt_s;
-            fnav_real_t ga = fnav_pow(FNAV_R(10.0), fl + st->cfg.margin_dec);
-            gamma = fnav_clamp(ga, g0, g0 * st->cfg.adapt_max_ratio);
-            st->floor_l = l < fl ? l : fl;
+            fnav_real_t fl = st->fw_cur;
+            for (k = 0; k < st->fw_nblk; k++) {
+                fl = st->fw_blk[k] < fl ? st->fw_blk[k] : fl;
+            }
+            fl = fl < fmin ? fmin : fl;
+            gamma = fnav_clamp(fnav_pow(FNAV_R(10.0), fl + st->cfg.margin_dec), g0, g0 * st->cfg.adapt_max_ratio);
         } else {
-            st->floor_l = l;
             st->floor_valid = 1;
+            st->fw_cur = l;
         }
-        if (st->floor_l < fmin) {
-            st->floor_l = fmin;
+        st->fw_cur = l < st->fw_cur ? l : st->fw_cur;
+        if (++st->fw_fill >= st->fw_len) {
+            st->fw_blk[st->fw_head] = st->fw_cur;
+            st->fw_head = (st->fw_head + 1) % FNAV_STANCE_FLOOR_BLOCKS;
+            if (st->fw_nblk < FNAV_STANCE_FLOOR_BLOCKS) {
+                st->fw_nblk++;
+            }
+            st->fw_fill = 0;
+            st->fw_cur = FNAV_R(1.0e30);
         }
     }
     st->dq_stat[q] = stat;

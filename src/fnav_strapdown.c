@@ -3,8 +3,9 @@
 #include "footnav/fnav_port.h"
 
 const fnav_strapdown_config_t fnav_strapdown_config_default = {
-    FNAV_R(9.80665), /* gravity_mps2: standard gravity, m/s^2 */
-    1                /* coning: two-sample coning and sculling terms */
+    FNAV_R(9.80665),    /* gravity_mps2: standard gravity, m/s^2 */
+    1,                  /* coning: coning and sculling terms */
+    FNAV_SAMPLE_INSTANT /* sample_type: rate-output sensors */
 };
 
 fnav_real_t fnav_gravity_wgs84(fnav_real_t lat_rad, fnav_real_t height_m)
@@ -24,8 +25,30 @@ fnav_quat_t fnav_strapdown_quat_exp(fnav_vec3_t phi)
 {
     fnav_real_t a2 = fnav_vec3_dot(phi, phi);
     fnav_real_t c, s;
-    if (a2 > FNAV_R(0.04)) {
-        return fnav_quat_from_rotvec(phi);
+    fnav_quat_t q;
+    int k = 0;
+    if (!(a2 <= FNAV_R(0.04))) {
+        /* Larger increments (over 0.2 rad, i.e. above about 2300 deg/s at
+         * 200 Hz) without libm trigonometry, whose large-argument reduction
+         * is the deepest stack path on a Cortex-M: the same rotation with
+         * the angle wrapped to (-pi, pi] (fmod is exact), halved until the
+         * series below is exact, then squared back (q(2x) = q(x)^2 about the
+         * same axis). NaN or Inf give the identity (the UKF rejects them
+         * before this point; this only keeps the function total). */
+        fnav_real_t a = fnav_sqrt(a2);
+        if (!fnav_isfinite(a)) {
+            return fnav_quat_identity();
+        }
+        if (a > FNAV_PI) {
+            fnav_real_t w = fnav_wrap_pi(a);
+            phi = fnav_vec3_scale(phi, w / a);
+            a2 = w * w;
+        }
+        while (a2 > FNAV_R(0.04)) { /* at most 4 halvings: pi / 2^4 < 0.2 */
+            phi = fnav_vec3_scale(phi, FNAV_R(0.5));
+            a2 *= FNAV_R(0.25);
+            k++;
+        }
     }
     /* cos(a/2) and sin(a/2)/a as series in a^2 (Titterton & Weston eq. 11.33);
      * the first omitted terms are a^8/10321920 and a^8/185794560. */
@@ -33,7 +56,11 @@ fnav_quat_t fnav_strapdown_quat_exp(fnav_vec3_t phi)
                             a2 * (FNAV_R(1.0) / FNAV_R(384.0) - a2 * (FNAV_R(1.0) / FNAV_R(46080.0))));
     s = FNAV_R(0.5) + a2 * (-FNAV_R(1.0) / FNAV_R(48.0) +
                             a2 * (FNAV_R(1.0) / FNAV_R(3840.0) - a2 * (FNAV_R(1.0) / FNAV_R(645120.0))));
-    return fnav_quat(c, s * phi.v[0], s * phi.v[1], s * phi.v[2]);
+    q = fnav_quat(c, s * phi.v[0], s * phi.v[1], s * phi.v[2]);
+    while (k-- > 0) {
+        q = fnav_quat_mul(q, q);
+    }
+    return q;
 }
 
 void fnav_strapdown_increments(const fnav_strapdown_config_t *cfg, const fnav_strapdown_hist_t *hist,
@@ -41,29 +68,80 @@ void fnav_strapdown_increments(const fnav_strapdown_config_t *cfg, const fnav_st
                                fnav_strapdown_incr_t *out)
 {
     const fnav_real_t k12 = FNAV_R(1.0) / FNAV_R(12.0);
+    int have_prev = hist != NULL && hist->valid;
+    int have_sample = hist != NULL && hist->have_sample;
+    out->dt_s = dt_s;
+    out->w_rps = gyro_rps;
+    out->f_mps2 = accel_mps2;
+    out->coning = fnav_vec3_zero();
+    out->scull = fnav_vec3_zero();
+    if (cfg->sample_type == FNAV_SAMPLE_INSTANT && have_sample) {
+        /* Readings w0, f0 at the start and w1, f1 at the end of the interval,
+         * linear in between: w(t) = w0 + (w1 - w0) t / T, likewise f.
+         * theta(t) = int w, v(t) = int f. Then theta = (w0 + w1) T / 2,
+         * dv = (f0 + f1) T / 2, and the second-order terms
+         *   coning    = 1/2 int theta x w dt               = (1/12) (w0 T) x (w1 T),
+         *   sculling  = int theta x f dt - 1/2 theta x dv  = (1/12) ((w0 T) x (f1 T) + (f0 T) x (w1 T))
+         * (the integrals of the linear profiles, exact; Savage 1998 eq.
+         * 7.1.1.1-1 and 7.2.2.2-10 for the definitions). */
+        fnav_vec3_t a0 = fnav_vec3_scale(hist->w_rps, dt_s), a1 = fnav_vec3_scale(gyro_rps, dt_s);
+        fnav_vec3_t v0 = fnav_vec3_scale(hist->f_mps2, dt_s), v1 = fnav_vec3_scale(accel_mps2, dt_s);
+        fnav_real_t h = dt_s, h1 = hist->dt_prev_s;
+        if (hist->have_sample >= 2 && h1 > FNAV_R(0.0) && h <= FNAV_R(2.0) * h1 && h1 <= FNAV_R(2.0) * h) {
+            /* integral over [t_k-1, t_k] of the quadratic through the
+             * readings at t_k-2 = t_k-1 - h1, t_k-1, t_k = t_k-1 + h
+             * (Lagrange weights integrated):
+             *   c2 = -h^3 / (6 h1 (h1 + h)), c1 = h^2 / (6 h1) + h / 2,
+             *   c0 = (h^2 / 3 + h1 h / 2) / (h + h1);
+             * h1 = h: h/12 (-1, 8, 5). Third order: the trapezoid's
+             * attenuation of a fast rotating rate (coning) is O(dt^2). */
+            fnav_real_t c2 = -h * h * h / (FNAV_R(6.0) * h1 * (h1 + h));
+            fnav_real_t c1 = h * h / (FNAV_R(6.0) * h1) + FNAV_R(0.5) * h;
+            fnav_real_t c0 = (h * h / FNAV_R(3.0) + FNAV_R(0.5) * h1 * h) / (h + h1);
+            out->theta_rad = fnav_vec3_add(fnav_vec3_add(fnav_vec3_scale(hist->w2_rps, c2), fnav_vec3_scale(hist->w_rps, c1)),
+                                           fnav_vec3_scale(gyro_rps, c0));
+            out->dv_mps = fnav_vec3_add(fnav_vec3_add(fnav_vec3_scale(hist->f2_mps2, c2), fnav_vec3_scale(hist->f_mps2, c1)),
+                                        fnav_vec3_scale(accel_mps2, c0));
+        } else {
+            out->theta_rad = fnav_vec3_scale(fnav_vec3_add(a0, a1), FNAV_R(0.5));
+            out->dv_mps = fnav_vec3_scale(fnav_vec3_add(v0, v1), FNAV_R(0.5));
+        }
+        if (cfg->coning) {
+            out->coning = fnav_vec3_scale(fnav_vec3_cross(a0, a1), k12);
+            out->scull = fnav_vec3_scale(fnav_vec3_add(fnav_vec3_cross(a0, v1), fnav_vec3_cross(v0, a1)), k12);
+        }
+        return;
+    }
     out->theta_rad = fnav_vec3_scale(gyro_rps, dt_s);
     out->dv_mps = fnav_vec3_scale(accel_mps2, dt_s);
-    out->dt_s = dt_s;
-    if (cfg->coning && hist != NULL && hist->valid) {
+    if (cfg->sample_type == FNAV_SAMPLE_MEAN && cfg->coning && have_prev) {
         /* Savage 1998, two-sample algorithms with the previous interval:
          * coning (eq. 7.1.1.1-13 form) and sculling (eq. 7.2.2.2-22 form). */
-        out->coning = fnav_vec3_scale(fnav_vec3_cross(hist->theta_rad, out->theta_rad), k12);
-        out->scull = fnav_vec3_scale(fnav_vec3_add(fnav_vec3_cross(hist->theta_rad, out->dv_mps),
-                                                   fnav_vec3_cross(hist->dv_mps, out->theta_rad)),
+        fnav_vec3_t th_p = fnav_vec3_scale(hist->w_rps, hist->dt_prev_s); /* the previous interval's */
+        fnav_vec3_t dv_p = fnav_vec3_scale(hist->f_mps2, hist->dt_prev_s); /* increments */
+        out->coning = fnav_vec3_scale(fnav_vec3_cross(th_p, out->theta_rad), k12);
+        out->scull = fnav_vec3_scale(fnav_vec3_add(fnav_vec3_cross(th_p, out->dv_mps), fnav_vec3_cross(dv_p, out->theta_rad)),
                                      k12);
-    } else {
-        out->coning = fnav_vec3_zero();
-        out->scull = fnav_vec3_zero();
     }
 }
 
 void fnav_strapdown_hist_push(fnav_strapdown_hist_t *hist, const fnav_strapdown_incr_t *inc)
 {
     if (inc->dt_s > FNAV_R(0.0)) {
-        hist->theta_rad = inc->theta_rad;
-        hist->dv_mps = inc->dv_mps;
+        if (hist->have_sample >= 1) {
+            hist->w2_rps = hist->w_rps;
+            hist->f2_mps2 = hist->f_mps2;
+            hist->have_sample = 2;
+        } else {
+            hist->have_sample = 1;
+        }
+        hist->dt_prev_s = inc->dt_s;
         hist->valid = 1;
+    } else if (hist->have_sample == 0) {
+        hist->have_sample = 1;
     }
+    hist->w_rps = inc->w_rps;
+    hist->f_mps2 = inc->f_mps2;
 }
 
 void fnav_strapdown_propagate(const fnav_strapdown_config_t *cfg, fnav_strapdown_state_t *x,

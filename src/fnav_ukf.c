@@ -15,7 +15,7 @@ const fnav_ukf_config_t fnav_ukf_config_default = {
     { FNAV_R(10.0), FNAV_R(10.0), FNAV_R(10.0) },
     { FNAV_R(8.5e-5) * FNAV_DEG2RAD, FNAV_R(6.4e-5) * FNAV_DEG2RAD, FNAV_R(3.4e-5) * FNAV_DEG2RAD },
     { FNAV_R(1.3e-5), FNAV_R(9.7e-6), FNAV_R(7.3e-6) },
-    { FNAV_R(9.80665), 1 },
+    { FNAV_R(9.80665), 1, FNAV_SAMPLE_INSTANT },
     FNAV_R(1.0), FNAV_R(2.0), FNAV_R(0.0),
     FNAV_R(0.01),
     FNAV_R(0.01),
@@ -90,6 +90,7 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
     if (!finite_pos(cfg->alpha) || !fnav_isfinite(cfg->beta) || !fnav_isfinite(cfg->kappa) ||
         !finite_pos(cfg->zupt_sigma_mps) || !finite_pos(cfg->zaru_sigma_rps) ||
         !finite_pos(cfg->strapdown.gravity_mps2) || (cfg->lever != 0 && cfg->lever != 1) ||
+        (cfg->strapdown.sample_type != FNAV_SAMPLE_INSTANT && cfg->strapdown.sample_type != FNAV_SAMPLE_MEAN) ||
         (cfg->lever && (!finite_pos(cfg->lever_sd_m) || !finite_nonneg(cfg->lever_rw_m_rts)))) {
         return FNAV_E_CONFIG;
     }
@@ -171,6 +172,7 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     f->ba0_mps2 = ba_mps2;
     f->lever_m = fnav_vec3_zero();
     f->hist.valid = 0;
+    f->hist.have_sample = 0;
     for (i = 0; i < N; i++) {
         for (j = 0; j < N; j++) {
             f->P[i][j] = FNAV_R(0.0);
@@ -299,6 +301,50 @@ static void add_rotated_noise(fnav_real_t S[N][N], int o, fnav_mat3_t C, const f
     }
 }
 
+/* Largest standard deviation of each internal state kind (lever, velocity,
+ * position, attitude error, gyro bias, accel bias): far beyond any walk,
+ * small enough for float32 to keep the covariance's cancellations (updates
+ * subtract terms of the size of the variance). */
+static fnav_real_t sd_max(int i)
+{
+    static const fnav_real_t m[6] = { FNAV_R(1.0), FNAV_R(100.0), FNAV_R(1.0e4), FNAV_R(3.14159265), FNAV_R(1.0),
+                                      FNAV_R(10.0) };
+    return m[i / 3];
+}
+
+/* Covariance guard (PX4 EKF2 style): a variance that is not finite or not
+ * positive (float32 rounding after a long time without updates) resets its
+ * state's row and column to zero and the variance to its maximum; a
+ * variance above its maximum is clamped, its row and column scaled by the
+ * same factor (the correlations are kept). Counted in health.cov_guard.
+ * Nothing changes on a covariance within its limits. Off-diagonal entries
+ * need no check: prediction and update reject non-finite results. */
+static void guard_cov(fnav_ukf_t *f)
+{
+    int n = f->n_act, i, j;
+    for (i = 0; i < n; i++) {
+        fnav_real_t mx = sd_max(f->act[i]), v = f->P[i][i];
+        if (v > FNAV_R(0.0) && v <= mx * mx) {
+            continue; /* the normal case: one comparison pair per state */
+        }
+        if (!(v > FNAV_R(0.0))) { /* also NaN */
+            for (j = 0; j < n; j++) {
+                f->P[i][j] = FNAV_R(0.0);
+                f->P[j][i] = FNAV_R(0.0);
+            }
+            f->P[i][i] = mx * mx;
+        } else {
+            fnav_real_t k = mx / fnav_sqrt(v);
+            for (j = 0; j < n; j++) {
+                f->P[i][j] *= k;
+                f->P[j][i] = f->P[i][j];
+            }
+            f->P[i][i] = mx * mx;
+        }
+        f->health.cov_guard++;
+    }
+}
+
 fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t accel_mps2, fnav_real_t dt_s)
 {
     const fnav_ukf_config_t *c;
@@ -330,6 +376,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     nl = f->n_lin;
     ov = f->pos[FNAV_UKF_V];
     op = f->pos[FNAV_UKF_P];
+    guard_cov(f); /* e.g. a covariance set by a caller */
     fr = factor(f);
 
     fnav_strapdown_increments(&c->strapdown, &f->hist, fnav_vec3_sub(gyro_rps, f->bg_rps),
@@ -486,6 +533,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
             f->P[j][i] = f->S[i][j];
         }
     }
+    guard_cov(f);
     fnav_strapdown_hist_push(&f->hist, &inc);
     f->health.predicts++;
     return fr == 2 ? FNAV_E_DECOMP : FNAV_OK;
@@ -586,6 +634,7 @@ static fnav_status_t update(fnav_ukf_t *f, const int *cols, int nc, fnav_vec3_t 
             f->P[j][i] = Pn[i][j];
         }
     }
+    guard_cov(f);
     for (i = 0; i < N; i++) {
         dxi[i] = f->pos[i] >= 0 ? dx[f->pos[i]] : FNAV_R(0.0);
     }

@@ -32,20 +32,20 @@ fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
     }
     for (i = 0; i < c->nfft; i++) {
         /* periodic: L = N (DFT-even, scipy get_window); symmetric: L = N - 1 */
-        const double L = (double)(c->symmetric ? c->nfft - 1u : c->nfft);
-        const double ph = 6.283185307179586476925 * (double)i / L;
-        double v;
+        const uint32_t L = c->symmetric ? c->nfft - 1u : c->nfft;
+        fnav_real_t cph, sph, c1, s1i;
+        fnav_fft_cos_sin_2pi(i, L, &cph, &sph);
         switch (c->window) {
-        case FNAV_WINDOW_HAMMING: v = 0.54 - 0.46 * cos(ph); break;
-        case FNAV_WINDOW_HANN: v = 0.5 - 0.5 * cos(ph); break;
-        default: v = 1.0; break;
+        case FNAV_WINDOW_HAMMING: w->win[i] = FNAV_R(0.54) - FNAV_R(0.46) * cph; break;
+        case FNAV_WINDOW_HANN: w->win[i] = FNAV_R(0.5) - FNAV_R(0.5) * cph; break;
+        default: w->win[i] = FNAV_R(1.0); break;
         }
-        w->win[i] = (fnav_real_t)v;
         s1 += (double)w->win[i];
         s2 += (double)w->win[i] * (double)w->win[i];
         /* W_1 = sum w_n e^(-2 pi i n / N) */
-        w1r += (double)w->win[i] * cos(6.283185307179586476925 * (double)i / (double)c->nfft);
-        w1i -= (double)w->win[i] * sin(6.283185307179586476925 * (double)i / (double)c->nfft);
+        fnav_fft_cos_sin_2pi(i, c->nfft, &c1, &s1i);
+        w1r += (double)w->win[i] * (double)c1;
+        w1i -= (double)w->win[i] * (double)s1i;
     }
     w->s1 = (fnav_real_t)s1;
     w->s2 = (fnav_real_t)s2;

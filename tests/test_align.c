@@ -1,6 +1,8 @@
 /* fnav_align: roll, pitch and biases from known means (exact), the still
  * period logic (restart on early motion, completion on motion or after
- * max_still_s, the noise-floor ratio test), configuration checks. */
+ * max_still_s, the noise-floor ratio test, the short-period fallback), the
+ * gyro bias posterior (batch-means standard error, prior shrinkage),
+ * configuration checks. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -36,6 +38,17 @@ static void test_config(void **state)
     c = fnav_align_config_default;
     c.gravity_mps2 = (fnav_real_t)NAN;
     assert_int_equal(fnav_align_init(&al, &c), FNAV_E_CONFIG);
+    c = fnav_align_config_default;
+    c.short_still_s = c.min_still_s + FNAV_R(0.1); /* above min */
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_E_CONFIG);
+    c = fnav_align_config_default;
+    c.short_still_s = FNAV_R(0.0);
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_E_CONFIG);
+    c = fnav_align_config_default;
+    c.gyro_bias_prior_sd_rps = -FNAV_R(0.01);
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_E_CONFIG);
+    c.gyro_bias_prior_sd_rps = FNAV_R(0.0); /* no prior: allowed */
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
 }
 
 /* For a body at rest with attitude (roll, pitch, yaw) and an accelerometer
@@ -86,8 +99,9 @@ static fnav_sample_t still_sample(long k, double rate, double wobble)
     return s;
 }
 
-/* Motion before min_still_s restarts the average; motion after it
- * completes the alignment with the mean of the still samples. */
+/* Motion before short_still_s restarts the average; motion after
+ * min_still_s completes the alignment with the mean of the still samples
+ * (no prior here: the plain mean). */
 static void test_still_period(void **state)
 {
     fnav_align_t al;
@@ -95,17 +109,19 @@ static void test_still_period(void **state)
     long k;
     fnav_status_t st = FNAV_AGAIN;
     (void)state;
+    c.gyro_bias_prior_sd_rps = FNAV_R(0.0);
     assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
-    /* 0.3 s still, then a moving sample: too short, restart */
-    for (k = 0; k < 30; k++) {
+    /* 0.15 s still, then a moving sample: too short, restart */
+    for (k = 0; k < 16; k++) {
         fnav_sample_t s = still_sample(k, 100.0, 0.0);
         assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_AGAIN);
     }
-    {
-        fnav_sample_t s = still_sample(30, 100.0, 0.0);
+    for (; k < 31; k++) {
+        fnav_sample_t s = still_sample(k, 100.0, 0.0);
         assert_int_equal(fnav_align_push(&al, &s, 0, FNAV_R(1e7)), FNAV_AGAIN);
     }
-    assert_int_equal((int)al.n, 0);
+    assert_int_equal((int)al.cur.n, 0);
+    assert_int_equal(al.have_best, 0);
     /* 1 s still, then motion: complete */
     for (k = 31; k < 132 && st == FNAV_AGAIN; k++) {
         fnav_sample_t s = still_sample(k, 100.0, 0.0);
@@ -197,6 +213,117 @@ static void test_finish(void **state)
     assert_int_equal((int)al.result.samples, 80);
 }
 
+/* A period that ends before min_still_s but after short_still_s is kept;
+ * when the foot then moves, the quietest kept period aligns (a walk that
+ * starts a fraction of a second after the recording). A noisier one does
+ * not replace it. */
+static void test_short_period_fallback(void **state)
+{
+    fnav_align_t al;
+    fnav_align_config_t c = fnav_align_config_default;
+    long k;
+    (void)state;
+    c.gyro_bias_prior_sd_rps = FNAV_R(0.0);
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
+    /* 0.3 s quiet (T = 100), then the statistic jumps (ratio test) */
+    for (k = 0; k < 31; k++) {
+        fnav_sample_t s = still_sample(k, 100.0, 0.0);
+        assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_AGAIN);
+    }
+    {
+        fnav_sample_t s = still_sample(31, 100.0, 0.0);
+        assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(1e4)), FNAV_AGAIN);
+    }
+    assert_int_equal(al.have_best, 1);
+    assert_int_equal((int)al.result.samples, 31);
+    assert_int_equal((int)al.cur.n, 0);
+    /* 0.3 s of sway (T = 1e4), still below the detector threshold */
+    for (k = 32; k < 63; k++) {
+        fnav_sample_t s = still_sample(k, 100.0, 0.0);
+        assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(1e4)), FNAV_AGAIN);
+    }
+    /* the step: completes on the quiet period, samples 0..30 */
+    {
+        fnav_sample_t s = still_sample(63, 100.0, 0.0);
+        assert_int_equal(fnav_align_push(&al, &s, 0, FNAV_R(1e7)), FNAV_OK);
+    }
+    assert_int_equal((int)al.result.samples, 31);
+    FNAV_ASSERT_CLOSE(al.result.duration_s, 0.3, 1e-6, 0.0);
+    /* finish on a short period also uses the fallback */
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
+    for (k = 0; k < 25; k++) {
+        fnav_sample_t s = still_sample(k, 100.0, 0.0);
+        assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_AGAIN);
+    }
+    assert_int_equal(fnav_align_finish(&al), FNAV_OK);
+    assert_int_equal((int)al.result.samples, 25);
+}
+
+/* Gyro bias posterior. (1) A clean still period (white noise) keeps almost
+ * the whole mean: its standard error is the white-noise value. (2) A foot
+ * swaying at 1 Hz by 1 deg over 0.75 s has a mean rate far from the bias;
+ * the batch means see the correlated motion and the prior pulls the
+ * estimate to (near) zero: the error shrinks. The posterior follows
+ * b = w s0^2 / (s0^2 + se^2) exactly. */
+static void test_gyro_bias_posterior(void **state)
+{
+    fnav_align_t al;
+    fnav_align_config_t c = fnav_align_config_default;
+    const double rate = 200.0, b_true = 0.002, s0 = (double)c.gyro_bias_prior_sd_rps;
+    long k;
+    unsigned long seed = 12345u;
+    (void)state;
+    /* (1) white noise of 0.005 rad/s around the bias, 2 s */
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
+    for (k = 0; k < 400; k++) {
+        fnav_sample_t s = still_sample(k, rate, 0.0);
+        double u = 0.0;
+        int j;
+        for (j = 0; j < 12; j++) { /* Irwin-Hall approximately normal, sd 1 */
+            seed = seed * 1103515245u + 12345u;
+            u += (double)((seed >> 16) & 0x7fff) / 32768.0;
+        }
+        s.gyro_rps[1] = (fnav_real_t)(b_true + 0.005 * (u - 6.0));
+        assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_AGAIN);
+    }
+    {
+        fnav_sample_t s = still_sample(400, rate, 0.0);
+        assert_int_equal(fnav_align_push(&al, &s, 0, FNAV_R(1e7)), FNAV_OK);
+    }
+    {
+        double w = (double)al.result.gyro_mean_rps.v[1], se = (double)al.result.gyro_mean_se_rps.v[1];
+        double k_shrink = s0 * s0 / (s0 * s0 + se * se);
+        /* the standard error is of the white-noise order 0.005 / sqrt(400) */
+        assert_true(se > 0.5 * 0.005 / 20.0 && se < 2.5 * 0.005 / 20.0);
+        assert_true(k_shrink > 0.99);
+        FNAV_ASSERT_CLOSE(al.result.gyro_bias_rps.v[1], w * k_shrink, 0.0, 1e-5);
+        FNAV_ASSERT_CLOSE(al.result.gyro_bias_sd_rps.v[1], s0 * se / sqrt(s0 * s0 + se * se), 0.0, 1e-5);
+        FNAV_ASSERT_CLOSE(al.result.gyro_bias_rps.v[1], b_true, 3.0 * se, 0.0);
+    }
+    /* (2) sway: angle 1 deg sin(2 pi t), rate its derivative, over 0.75 s */
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
+    for (k = 0; k < 150; k++) {
+        fnav_sample_t s = still_sample(k, rate, 0.0);
+        double t = (double)k / rate;
+        s.gyro_rps[1] = (fnav_real_t)(b_true + 0.0174533 * 6.283185307179586 * cos(6.283185307179586 * t));
+        assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_AGAIN);
+    }
+    {
+        fnav_sample_t s = still_sample(150, rate, 0.0);
+        assert_int_equal(fnav_align_push(&al, &s, 0, FNAV_R(1e7)), FNAV_OK);
+    }
+    {
+        double w = (double)al.result.gyro_mean_rps.v[1], se = (double)al.result.gyro_mean_se_rps.v[1];
+        double bias_err_mean = fabs(w - b_true), bias_err = fabs((double)al.result.gyro_bias_rps.v[1] - b_true);
+        /* the mean is off by the sway (about 0.02 rad/s); the standard
+         * error sees it, and the estimate is several times closer */
+        assert_true(bias_err_mean > 0.01);
+        assert_true(se > 0.3 * bias_err_mean);
+        assert_true(bias_err < 0.5 * bias_err_mean);
+        FNAV_ASSERT_CLOSE(al.result.gyro_bias_rps.v[1], w * s0 * s0 / (s0 * s0 + se * se), 0.0, 1e-6);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -206,6 +333,8 @@ int main(void)
         cmocka_unit_test(test_max_duration),
         cmocka_unit_test(test_ratio_ends_period),
         cmocka_unit_test(test_finish),
+        cmocka_unit_test(test_short_period_fallback),
+        cmocka_unit_test(test_gyro_bias_posterior),
     };
     return cmocka_run_group_tests_name("align", tests, NULL, NULL);
 }

@@ -49,7 +49,7 @@ static void test_rest(void **state)
     const fnav_real_t dt = FNAV_R(0.01);
     fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.3), FNAV_R(-0.2), FNAV_R(1.1));
     fnav_strapdown_state_t x = state_at(q0);
-    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0 };
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_vec3_t f = fnav_quat_rotate(fnav_quat_conj(q0), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g));
     int i;
     (void)state;
@@ -73,7 +73,7 @@ static void test_constant_rotation(void **state)
     const double w[3] = { 0.4, -1.3, 2.2 }; /* rad/s */
     fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(-0.1), FNAV_R(0.25), FNAV_R(-2.0));
     fnav_strapdown_state_t x = state_at(q0);
-    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0 };
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_vec3_t wv = fnav_vec3((fnav_real_t)w[0], (fnav_real_t)w[1], (fnav_real_t)w[2]);
     fnav_quat_t qt;
     int i;
@@ -98,7 +98,7 @@ static void test_constant_acceleration(void **state)
     const double a[3] = { 1.5, -0.7, 0.3 };
     fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.2), FNAV_R(0.1), FNAV_R(-0.6));
     fnav_strapdown_state_t x = state_at(q0);
-    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0 };
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_vec3_t fn = fnav_vec3((fnav_real_t)a[0], (fnav_real_t)a[1], (fnav_real_t)(a[2] - k_g));
     fnav_vec3_t fb = fnav_quat_rotate(fnav_quat_conj(q0), fn);
     int i;
@@ -124,7 +124,7 @@ static void test_constant_acceleration(void **state)
  * quadrature on 64 sub-steps in double, error < 1e-12), so the only error
  * left is the algorithm's: the velocity must be a T (tests the rotation
  * compensation and sculling terms and their signs). */
-static void test_rotating_acceleration(void **state)
+static double rotating_acceleration(int instant, int algo_instant)
 {
     const int n = 1000, sub = 64;
     const double dt = 0.005, T = n * dt;
@@ -132,15 +132,22 @@ static void test_rotating_acceleration(void **state)
     const double a[3] = { 0.8, -1.2, 0.5 };
     fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.4), FNAV_R(-0.3), FNAV_R(0.9));
     fnav_strapdown_state_t x = state_at(q0);
-    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0 };
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_vec3_t wv = fnav_vec3((fnav_real_t)w[0], (fnav_real_t)w[1], (fnav_real_t)w[2]);
+    fnav_strapdown_config_t cfg = fnav_strapdown_config_default;
     int k, j, i;
-    (void)state;
-    for (k = 0; k < n; k++) {
+    double err = 0.0;
+    cfg.sample_type = algo_instant ? FNAV_SAMPLE_INSTANT : FNAV_SAMPLE_MEAN;
+    for (k = instant ? -1 : 0; k < n; k++) {
         double dvb[3] = { 0, 0, 0 };
         for (j = 0; j <= sub; j++) {
             double t = (k + (double)j / sub) * dt;
             double wt = (j == 0 || j == sub) ? 1.0 : (j % 2 ? 4.0 : 2.0);
+            if (instant) {
+                /* the specific force at the end of the interval itself */
+                t = (k + 1) * dt;
+                wt = j == sub ? 3.0 * sub : 0.0;
+            }
             /* C_nb(t) = C_nb(0) exp([w x] t): f_b = exp(-[w x] t) C_bn(0) f_n */
             fnav_quat_t qt = fnav_quat_mul(q0, fnav_quat_from_rotvec(fnav_vec3((fnav_real_t)(w[0] * t), (fnav_real_t)(w[1] * t),
                                                                              (fnav_real_t)(w[2] * t))));
@@ -156,18 +163,43 @@ static void test_rotating_acceleration(void **state)
                 dvb[i] += wt * fb[i] * dt / (3.0 * sub);
             }
         }
-        assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, wv,
+        assert_int_equal(fnav_strapdown_step(&cfg, &x, &h, wv,
                                              fnav_vec3((fnav_real_t)(dvb[0] / dt), (fnav_real_t)(dvb[1] / dt),
                                                        (fnav_real_t)(dvb[2] / dt)),
-                                             (fnav_real_t)dt),
+                                             k < 0 ? FNAV_R(0.0) : (fnav_real_t)dt),
                          FNAV_OK);
     }
     for (i = 0; i < 3; i++) {
-        /* algorithm error of the two-sample sculling for |w dt| = 0.019 rad
-         * is O((w dt)^2) of g dt per step, about 1e-4 of g T in all; the
-         * float32 build adds rounding of n steps of g dt */
-        FNAV_ASSERT_CLOSE(x.vel_mps.v[i], a[i] * T, 2e-4 * k_g * T + 2.0 * n * EPS * k_g * dt, 0.0);
+        double e = fabs((double)x.vel_mps.v[i] - a[i] * T);
+        err = e > err ? e : err;
     }
+    return err;
+}
+
+/* The readings are the exact interval means: algorithm error of the
+ * two-sample sculling for |w dt| = 0.019 rad is O((w dt)^2) of g dt per
+ * step, about 1e-4 of g T in all; the float32 build adds rounding of n steps
+ * of g dt. */
+static void test_rotating_acceleration(void **state)
+{
+    const double T = 5.0, dt = 0.005;
+    (void)state;
+    assert_true(rotating_acceleration(0, 0) < 2e-4 * k_g * T + 2.0 * 1000 * EPS * k_g * dt);
+}
+
+/* The readings are the instantaneous specific force at each sample time
+ * (rate-output accelerometer): the instantaneous algorithm (trapezoid and
+ * the sculling of linear profiles) meets the same bound; integrating the
+ * same samples as interval means does not (half a sample ahead). */
+static void test_rotating_acceleration_instant(void **state)
+{
+    const double T = 5.0, dt = 0.005;
+    double e_inst = rotating_acceleration(1, 1), e_mis = rotating_acceleration(1, 0);
+    (void)state;
+    print_message("rotating acceleration, instantaneous samples: instant %.3e m/s, taken as means %.3e m/s\n", e_inst,
+                  e_mis);
+    assert_true(e_inst < 2e-4 * k_g * T + 2.0 * 1000 * EPS * k_g * dt);
+    assert_true(e_mis > 5.0 * e_inst);
 }
 
 /* Classical coning: q(t) = exp(beta u(t)), u = (cos Wt, sin Wt, 0). Its body
@@ -175,24 +207,37 @@ static void test_rotating_acceleration(void **state)
  * integral of w_b over each interval is fed as the mean rate (an integrating
  * gyro). The two-sample coning term must remove the coning drift that the
  * uncorrected single-sample algorithm accumulates. */
-static double coning_error(int coning, double beta, double W, double dt, int n)
+static double coning_error(int coning, int instant, double beta, double W, double dt, int n)
 {
     fnav_strapdown_config_t cfg = fnav_strapdown_config_default;
     fnav_strapdown_state_t x;
-    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0 };
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_quat_t qt;
     int k;
     cfg.coning = coning;
+    cfg.sample_type = instant ? FNAV_SAMPLE_INSTANT : FNAV_SAMPLE_MEAN;
     x = state_at(fnav_quat_from_rotvec(fnav_vec3((fnav_real_t)beta, FNAV_R(0.0), FNAV_R(0.0))));
-    for (k = 1; k <= n; k++) {
+    for (k = instant ? 0 : 1; k <= n; k++) {
         double t0 = (k - 1) * dt, t1 = k * dt;
         double dth[3];
         fnav_vec3_t w;
         fnav_status_t st;
-        dth[0] = sin(beta) * (cos(W * t1) - cos(W * t0));
-        dth[1] = sin(beta) * (sin(W * t1) - sin(W * t0));
+        if (instant) {
+            /* the rate at t1 itself (a rate-output gyro); the sample at t = 0
+             * only starts the history (dt = 0 for it) */
+            dth[0] = -sin(beta) * W * sin(W * t1) * dt;
+            dth[1] = sin(beta) * W * cos(W * t1) * dt;
+        } else {
+            dth[0] = sin(beta) * (cos(W * t1) - cos(W * t0));
+            dth[1] = sin(beta) * (sin(W * t1) - sin(W * t0));
+        }
         dth[2] = W * (cos(beta) - 1.0) * dt;
         w = fnav_vec3((fnav_real_t)(dth[0] / dt), (fnav_real_t)(dth[1] / dt), (fnav_real_t)(dth[2] / dt));
+        if (k == 0) {
+            st = fnav_strapdown_step(&cfg, &x, &h, w, fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g), FNAV_R(0.0));
+            assert_int_equal(st, FNAV_OK);
+            continue;
+        }
         st = fnav_strapdown_step(&cfg, &x, &h, w, fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g), (fnav_real_t)dt);
         assert_int_equal(st, FNAV_OK);
     }
@@ -205,8 +250,8 @@ static void test_coning(void **state)
 {
     const double beta = 0.05, W = 2.0 * 3.14159265358979 * 5.0, dt = 0.005;
     const int n = 2000; /* 10 s */
-    double e1 = coning_error(0, beta, W, dt, n);
-    double e2 = coning_error(1, beta, W, dt, n);
+    double e1 = coning_error(0, 0, beta, W, dt, n);
+    double e2 = coning_error(1, 0, beta, W, dt, n);
     /* Single-sample drift rate for classical coning with integrated
      * increments (Savage 1998, eq. 7.1.1.2-8): 0.5 W beta^2 (1 - sin(l)/l),
      * l = W dt; the coning contribution of the error grows linearly. */
@@ -217,6 +262,48 @@ static void test_coning(void **state)
     /* the two-sample algorithm's residual is O(l^4): below a hundredth of it,
      * plus float rounding (one ulp per step of the 0.05 rad attitude) */
     assert_true(e2 < 0.01 * drift1 + 2.0 * EPS * n);
+}
+
+/* The same coning motion delivered as instantaneous rates (a rate-output
+ * gyro sampled at t_k): the instantaneous algorithm (quadratic increments,
+ * coning of the linear rate profile) stays below 2 % of the single-sample
+ * drift (measured 1.3 %: the third-order interpolation error of a rate
+ * rotating by l = W dt = 0.16 rad per step; the trapezoid alone leaves 100 %),
+ * while taking the samples for interval means (the two-sample algorithm on
+ * them) leaves an error at least 20 times larger. */
+static void test_coning_instant(void **state)
+{
+    const double beta = 0.05, W = 2.0 * 3.14159265358979 * 5.0, dt = 0.005;
+    const int n = 2000;
+    double l = W * dt;
+    double drift1 = 0.5 * W * sin(beta) * sin(beta) * (1.0 - sin(l) / l) * n * dt;
+    double e_inst = coning_error(1, 1, beta, W, dt, n);
+    double e_mis;
+    (void)state;
+    {
+        /* instantaneous samples integrated as interval means */
+        fnav_strapdown_config_t cfg = fnav_strapdown_config_default;
+        fnav_strapdown_state_t x = state_at(fnav_quat_from_rotvec(fnav_vec3((fnav_real_t)beta, FNAV_R(0.0), FNAV_R(0.0))));
+        fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
+        fnav_quat_t qt;
+        int k;
+        cfg.sample_type = FNAV_SAMPLE_MEAN;
+        for (k = 1; k <= n; k++) {
+            double t1 = k * dt;
+            fnav_vec3_t w = fnav_vec3((fnav_real_t)(-sin(beta) * W * sin(W * t1)), (fnav_real_t)(sin(beta) * W * cos(W * t1)),
+                                      (fnav_real_t)(W * (cos(beta) - 1.0)));
+            assert_int_equal(fnav_strapdown_step(&cfg, &x, &h, w, fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g),
+                                                 (fnav_real_t)dt),
+                             FNAV_OK);
+        }
+        qt = fnav_quat_from_rotvec(fnav_vec3((fnav_real_t)(beta * cos(W * n * dt)), (fnav_real_t)(beta * sin(W * n * dt)),
+                                             FNAV_R(0.0)));
+        e_mis = quat_angle_between(x.q_nb, qt);
+    }
+    print_message("coning, instantaneous samples: instant algorithm %.3e rad, taken as means %.3e rad, drift %.3e rad\n",
+                  e_inst, e_mis, drift1);
+    assert_true(e_inst < 0.02 * drift1 + 2.0 * EPS * n);
+    assert_true(e_mis > 20.0 * e_inst);
 }
 
 /* Somigliana on WGS-84: 9.7803253359 m/s^2 at the equator and
@@ -252,12 +339,47 @@ static void test_quat_exp_series(void **state)
     }
 }
 
+/* Beyond 0.2 rad the exponential wraps, halves and squares instead of
+ * calling libm trigonometry: it still equals the exact quaternion of the
+ * rotation (up to sign), for angles up to many turns, and stays total. */
+static void test_quat_exp_large(void **state)
+{
+    static const double angles[] = { 0.2001, 0.35, 0.7, 1.5, 3.0, 3.14, 3.2, 6.0, 6.2831, 10.0, 100.0, 12345.6 };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof angles / sizeof angles[0]; i++) {
+        double a = angles[i];
+        fnav_vec3_t phi = fnav_vec3((fnav_real_t)(0.6 * a), (fnav_real_t)(-0.48 * a), (fnav_real_t)(0.64 * a));
+        fnav_quat_t q = fnav_strapdown_quat_exp(phi);
+        double ang = sqrt((double)fnav_vec3_dot(phi, phi)); /* the angle as rounded into phi */
+        double c = cos(0.5 * ang), sn = sin(0.5 * ang);
+        double sg = ((double)q.q[0] * c >= 0.0) ? 1.0 : -1.0; /* q and -q are the same rotation */
+        /* each of at most 4 squarings doubles the error of the halved
+         * angle's series: rounding (a few ulp) and truncation (at most
+         * 0.2^8 / 10321920 = 2.5e-13); angles beyond pi also lose what
+         * rounding lost in wrapping them (ulp of the angle) */
+        double tol = 64.0 * EPS * (1.0 + ang) + 16.0 * pow(0.2, 8.0) / 10321920.0;
+        FNAV_ASSERT_CLOSE(sg * (double)q.q[0], c, tol, 0.0);
+        FNAV_ASSERT_CLOSE(sg * (double)q.q[1], sn * (double)phi.v[0] / ang, tol, 0.0);
+        FNAV_ASSERT_CLOSE(sg * (double)q.q[2], sn * (double)phi.v[1] / ang, tol, 0.0);
+        FNAV_ASSERT_CLOSE(sg * (double)q.q[3], sn * (double)phi.v[2] / ang, tol, 0.0);
+    }
+    {
+        fnav_quat_t q = fnav_strapdown_quat_exp(fnav_vec3((fnav_real_t)NAN, FNAV_R(0.0), FNAV_R(0.0)));
+        assert_true(q.q[0] == FNAV_R(1.0));
+        q = fnav_strapdown_quat_exp(fnav_vec3((fnav_real_t)INFINITY, FNAV_R(0.0), FNAV_R(0.0)));
+        assert_true(q.q[0] == FNAV_R(1.0));
+        q = fnav_strapdown_quat_exp(fnav_vec3(FNAV_R(1.0e30), FNAV_R(0.0), FNAV_R(0.0)));
+        assert_true(fnav_isfinite(q.q[0]) && fnav_isfinite(q.q[1]));
+    }
+}
+
 /* NaN and negative dt are rejected and leave the state as it was. */
 static void test_bad_input(void **state)
 {
     fnav_strapdown_state_t x = state_at(fnav_quat_identity());
     fnav_strapdown_state_t x0 = x;
-    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, 0 };
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_vec3_t nanv = fnav_vec3((fnav_real_t)NAN, FNAV_R(0.0), FNAV_R(0.0));
     (void)state;
     assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, nanv, fnav_vec3_zero(), FNAV_R(0.01)),
@@ -288,9 +410,12 @@ int main(void)
         cmocka_unit_test(test_constant_rotation),
         cmocka_unit_test(test_constant_acceleration),
         cmocka_unit_test(test_rotating_acceleration),
+        cmocka_unit_test(test_rotating_acceleration_instant),
         cmocka_unit_test(test_coning),
+        cmocka_unit_test(test_coning_instant),
         cmocka_unit_test(test_gravity),
         cmocka_unit_test(test_quat_exp_series),
+        cmocka_unit_test(test_quat_exp_large),
         cmocka_unit_test(test_bad_input),
     };
     return cmocka_run_group_tests_name("strapdown", tests, NULL, NULL);

@@ -318,6 +318,47 @@ static void test_bad_input(void **state)
 /* A covariance that is not positive definite: the step recovers (jitter or
  * reset to the diagonal, counted, FNAV_E_DECOMP on a reset) and leaves a
  * symmetric positive definite covariance. */
+/* Covariance guard: a negative variance (as float32 rounding produces after
+ * minutes without an update) is reset to its maximum with its row and column
+ * zeroed; a variance above the maximum is clamped with its correlations
+ * kept; a normal covariance is left alone. */
+static void test_covariance_guard(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
+    double rho, big = 1.0e10, pvx;
+    (void)state;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fz, FNAV_R(0.01)), FNAV_OK);
+    assert_int_equal((int)f.health.cov_guard, 0);
+    /* velocity y negative: zeroed row, variance at (100 m/s)^2 after the step */
+    fnav_ukf_set_cov(&f, FNAV_UKF_V + 1, FNAV_UKF_V + 1, -FNAV_R(1.0));
+    fnav_ukf_set_cov(&f, FNAV_UKF_V + 1, FNAV_UKF_P + 1, FNAV_R(0.0));
+    {
+        fnav_status_t st = fnav_ukf_predict(&f, fnav_vec3_zero(), fz, FNAV_R(0.01));
+        assert_int_equal(st, FNAV_OK);
+    }
+    assert_true(f.health.cov_guard >= 1);
+    FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_V + 1, FNAV_UKF_V + 1), 1.0e4, 0.0, 1e-5);
+    assert_int_equal((int)f.health.chol_reset, 0); /* repaired before the factorisation */
+    /* position x far too large, correlated with velocity x: clamped to
+     * (1e4 m)^2, the correlation coefficient unchanged */
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    pvx = (double)fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_V);
+    fnav_ukf_set_cov(&f, FNAV_UKF_P, FNAV_UKF_P, (fnav_real_t)big);
+    fnav_ukf_set_cov(&f, FNAV_UKF_P, FNAV_UKF_V, (fnav_real_t)(0.5 * sqrt(big * pvx)));
+    f.health.cov_guard = 0;
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fz, FNAV_R(0.01)), FNAV_OK);
+    assert_true(f.health.cov_guard >= 1);
+    FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_P), 1.0e8, 0.0, 1e-5);
+    rho = (double)fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_V) /
+          sqrt((double)fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_P) * (double)fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_V));
+    FNAV_ASSERT_CLOSE(rho, 0.5, 0.02, 0.0);
+}
+
 static void test_covariance_recovery(void **state)
 {
     static fnav_ukf_t f;
@@ -453,6 +494,8 @@ static void run_nees(nees_t *r)
         fnav_vec3_t vprev = fnav_vec3_zero();
         int check = 0;
         c.bias_model = r->bias_ar1 ? FNAV_BIAS_AR1 : FNAV_BIAS_OFF;
+        /* the generator solves each sample from the interval-mean update */
+        c.strapdown.sample_type = FNAV_SAMPLE_MEAN;
         for (i = 0; i < 3; i++) {
             c.accel_noise_mps2_rthz[i] = (fnav_real_t)na;
             c.gyro_noise_rps_rthz[i] = (fnav_real_t)ng;
@@ -523,9 +566,9 @@ static void run_nees(nees_t *r)
                 fnav_vec3_t rb = fnav_quat_rotate(fnav_quat_conj(T.x.q_nb), dvn);
                 for (i = 0; i < 3; i++) {
                     th[i] = w_b[i] * dt;
-                    if (T.h.valid) {
-                        tp[i] = (double)T.h.theta_rad.v[i];
-                        dvp[i] = (double)T.h.dv_mps.v[i];
+                    if (T.h.valid) { /* the previous interval's increments (interval means) */
+                        tp[i] = (double)T.h.w_rps.v[i] * (double)T.h.dt_prev_s;
+                        dvp[i] = (double)T.h.f_mps2.v[i] * (double)T.h.dt_prev_s;
                     }
                 }
                 for (i = 0; i < 3; i++) {
@@ -693,6 +736,7 @@ int main(void)
         cmocka_unit_test(test_zupt_update),
         cmocka_unit_test(test_lever_measurement),
         cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_covariance_guard),
         cmocka_unit_test(test_covariance_recovery),
         cmocka_unit_test(test_nees_bias_off),
         cmocka_unit_test(test_nees_ar1),

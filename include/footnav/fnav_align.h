@@ -10,15 +10,33 @@
  * statistic over the period so far: the zero-velocity threshold accepts the
  * slow weight shift before the first step, which would bias the gyro mean,
  * but that shift raises the statistic by a decade above the sensor's noise
- * floor (docs/navigation.md). Motion before min_still_s of stillness
- * restarts the average; the alignment completes when the foot first moves
- * after at least min_still_s of stillness, or after max_still_s of it.
+ * floor (docs/navigation.md). A period that ends (motion, or the ratio test)
+ * after at least min_still_s completes the alignment, as does max_still_s of
+ * stillness. A shorter period restarts the average, but the quietest such
+ * period (lowest mean log10 of the statistic) of at least short_still_s is
+ * kept: when the detector reports motion before any period reached
+ * min_still_s (a recording that starts a fraction of a second before the
+ * first step), the alignment completes on it instead of waiting for a later
+ * stance and losing the start of the walk.
+ *
+ * Gyro bias. A foot standing "still" sways and twists by a degree or two
+ * (weight shifts), so the mean rate over a short period carries a rotation
+ * rate of the order of the sway angle over the period (up to 2 deg/s on the
+ * footprint walks, docs/navigation.md). The standard error of the mean is
+ * therefore estimated from batch means (FNAV_ALIGN_BLOCKS blocks whose
+ * length doubles as the period grows), which sees that correlated motion,
+ * not from the white-noise formula sd / sqrt(n); the bias is the posterior
+ * mean of a zero-mean prior of sd gyro_bias_prior_sd_rps (the spread of a
+ * MEMS gyro's turn-on bias) updated with that mean:
+ *   b_g = w k,  k = s0^2 / (s0^2 + se^2),  sd(b_g) = s0 se / sqrt(s0^2 + se^2).
+ * A clean still period (se << s0) gives the mean; a swaying one is shrunk
+ * towards zero.
  *
  * With the mean specific force f and the mean rate w over the still period
  * (navigation frame z down, f_b = C_bn (0, 0, -g) at rest):
  *   roll  = atan2(-f_y, -f_z),  pitch = atan2(f_x, sqrt(f_y^2 + f_z^2)),
  *   yaw   = 0 (the navigation frame's x axis is the initial heading),
- *   b_g   = w (Earth rate, 7.3e-5 rad/s at most, is absorbed in the bias),
+ *   b_g   = w k (above; Earth rate, 7.3e-5 rad/s at most, is absorbed in the bias),
  *   b_a   = f - C_bn (0, 0, -g) = (|f| - g) f / |f|.
  * Only the component of the accelerometer bias along gravity is observable
  * at rest; its horizontal components are indistinguishable from tilt and are
@@ -35,42 +53,64 @@ extern "C" {
 
 /** Alignment configuration. */
 typedef struct {
-    fnav_real_t min_still_s;  /**< shortest usable still period, s (default 0.5) */
+    fnav_real_t min_still_s;  /**< still period that completes the alignment at the first motion, s (default 0.5) */
     fnav_real_t max_still_s;  /**< alignment ends after this much stillness, s (default 5) */
     fnav_real_t gravity_mps2; /**< local gravity, m/s^2 (default 9.80665) */
     fnav_real_t still_ratio;  /**< statistic limit over its running geometric mean (default 10) */
+    fnav_real_t short_still_s; /**< shortest period accepted when the walk starts before min_still_s
+                                    of clean stillness, s (default 0.2) */
+    fnav_real_t gyro_bias_prior_sd_rps; /**< prior sd of the gyro turn-on bias, rad/s; 0: no prior,
+                                             the plain mean (default 0.5 deg/s) */
 } fnav_align_config_t;
 
 extern const fnav_align_config_t fnav_align_config_default;
+
+/** Blocks of the batch-means estimate of the gyro mean's uncertainty. */
+#define FNAV_ALIGN_BLOCKS 8
 
 /** Result of an alignment. */
 typedef struct {
     fnav_quat_t q_nb;          /**< initial attitude (yaw 0) */
     fnav_vec3_t euler_rad;     /**< roll, pitch, yaw = 0, rad */
-    fnav_vec3_t gyro_bias_rps; /**< rad/s */
+    fnav_vec3_t gyro_bias_rps; /**< rad/s (posterior mean, see the file comment) */
     fnav_vec3_t accel_bias_mps2; /**< m/s^2, along gravity only */
     fnav_vec3_t accel_mean_mps2; /**< mean specific force, m/s^2 */
     fnav_vec3_t gyro_sd_rps;   /**< per-axis sample standard deviation of the rate, rad/s */
     fnav_vec3_t accel_sd_mps2; /**< per-axis sample standard deviation of f, m/s^2 */
+    fnav_vec3_t gyro_mean_rps; /**< mean rate over the still period, rad/s */
+    fnav_vec3_t gyro_mean_se_rps; /**< standard error of that mean (batch means), rad/s */
+    fnav_vec3_t gyro_bias_sd_rps; /**< standard deviation of gyro_bias_rps, rad/s */
     fnav_real_t duration_s;    /**< still time used, s */
     long samples;              /**< samples used */
 } fnav_align_result_t;
 
-/** Accumulator (caller-owned). Sums are kept relative to the first sample
- *  of the period so that float32 variances do not cancel. */
+/** One still period being accumulated. Sums are kept relative to the first
+ *  sample of the period so that float32 variances do not cancel. */
 typedef struct {
-    fnav_align_config_t cfg;
     fnav_vec3_t a_ref, g_ref;        /**< first sample of the period */
     fnav_vec3_t sa, sg, sa2, sg2;    /**< sums of deviations and squares */
     long n;                          /**< samples in the period */
     fnav_real_t sum_log_stat;        /**< sum of log10 of the detector statistic */
+    fnav_vec3_t blk[FNAV_ALIGN_BLOCKS]; /**< gyro sums of completed blocks (relative to g_ref) */
+    fnav_vec3_t blk_cur;             /**< gyro sum of the block being filled */
+    long blk_len;                    /**< samples per block (doubles when the blocks are full) */
+    long blk_fill;                   /**< samples in the current block */
+    int nblk;                        /**< completed blocks */
     int64_t t0_ns, t_last_ns;        /**< period start, last sample */
+} fnav_align_period_t;
+
+/** Accumulator (caller-owned, about 0.4 KB in float). */
+typedef struct {
+    fnav_align_config_t cfg;
+    fnav_align_period_t cur;         /**< the period being accumulated */
     int done;
-    fnav_align_result_t result;
+    int have_best;                   /**< result holds the quietest earlier short period */
+    fnav_real_t best_log_stat;       /**< its mean log10 statistic */
+    fnav_align_result_t result;      /**< the alignment (with done), or the short-period candidate */
 } fnav_align_t;
 
 /** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (non-positive or non-finite
- *          values, max < min, still_ratio <= 1). */
+ *          values, max < min, short > min, still_ratio <= 1, negative prior). */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_init(fnav_align_t *al, const fnav_align_config_t *cfg);
 
 /**

@@ -30,6 +30,19 @@ typedef struct {
 } fnav_fft_t;
 
 /**
+ * cos(2 pi k / n) and sin(2 pi k / n) in fnav_real_t without double-precision
+ * libm calls (they cost ~7 KB of flash on a Cortex-M4F): the angle is reduced
+ * with exact integer arithmetic to [0, pi/4] when 8 divides n (to [0, pi]
+ * otherwise) before fnav_cos / fnav_sin, so float twiddles stay within about
+ * one ulp of the correctly rounded values.
+ * @param k     numerator (any value; taken modulo n)
+ * @param n     denominator, > 0
+ * @param c     cosine (output)
+ * @param s     sine (output)
+ */
+void fnav_fft_cos_sin_2pi(uint32_t k, uint32_t n, fnav_real_t *c, fnav_real_t *s);
+
+/**
  * Prepare the table for real transforms of n points.
  * @return FNAV_OK; FNAV_E_ARG for NULL; FNAV_E_CONFIG when n is not a power
  *         of two in 4..FNAV_FFT_MAX_N.

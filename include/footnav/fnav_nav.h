@@ -58,6 +58,8 @@ extern "C" {
 #define FNAV_HEALTH_DIVERGED 0x080u      /**< a filter step was undone (non-finite result) */
 #define FNAV_HEALTH_UPDATE_REJECT 0x100u /**< an update was skipped (bad innovation covariance) */
 #define FNAV_HEALTH_NOT_ALIGNED 0x200u   /**< the input ended before an alignment */
+#define FNAV_HEALTH_COV_GUARD 0x400u     /**< the covariance guard reset or clamped a variance */
+#define FNAV_HEALTH_RESET 0x800u         /**< the navigator diverged and was reset (fnav_nav_reset) */
 
 /* Additional fnav_nav_frame_t.flags bits (fnav_port.h defines 0x1..0x4). */
 #define FNAV_FRAME_SEG_STANCE 0x8u  /**< segmented gait phase is stance */
@@ -70,6 +72,7 @@ typedef struct {
     fnav_stance_config_t stance;       /**< detector (its gravity is overwritten with gravity_mps2) */
     fnav_align_config_t align;         /**< alignment (gravity overwritten) */
     fnav_real_t gravity_mps2;          /**< local gravity, m/s^2 (default 9.80665) */
+    fnav_sample_type_t sample_type;    /**< what a sample is (fnav_strapdown.h): instantaneous (default) or interval mean */
     fnav_real_t accel_motion_noise_mps2_rthz; /**< extra accel process noise in motion, m/s^2/sqrt(Hz) */
     fnav_real_t gyro_motion_noise_rps_rthz;   /**< extra gyro process noise, rad/s/sqrt(Hz) */
     fnav_real_t zupt_sigma_mps;        /**< ZUPT noise, m/s */
@@ -80,10 +83,13 @@ typedef struct {
     fnav_real_t zaru_sigma_rps;        /**< ZARU noise, rad/s */
     fnav_real_t tilt_sd_rad;           /**< initial roll/pitch standard deviation, rad */
     fnav_real_t yaw_sd_rad;            /**< initial yaw standard deviation, rad (yaw is defined 0) */
-    fnav_real_t gyro_bias_sd_rps;      /**< initial gyro bias sd floor, rad/s */
-    fnav_real_t accel_bias_sd_mps2;    /**< initial accel bias sd, m/s^2 */
+    fnav_real_t gyro_bias_sd_rps;      /**< initial sd of the AR(1) gyro bias states, rad/s */
+    fnav_real_t accel_bias_sd_mps2;    /**< initial sd of the AR(1) accel bias states, m/s^2 */
     fnav_real_t max_gap_s;             /**< intervals above this are time jumps, s */
     int closed_form;                   /**< UKF closed-form linear sigma points (1) */
+    fnav_real_t diverge_speed_mps;     /**< |velocity| above this is divergence, m/s (default 30:
+                                            beyond any foot, sprinting swing included) */
+    uint32_t diverge_undone;           /**< this many consecutive undone steps is divergence (default 20) */
 } fnav_nav_config_t;
 
 /** Defaults: profile "navchip" (paper Table IV), bias model off, lever on,
@@ -104,6 +110,8 @@ typedef struct {
     uint32_t zarus;          /**< ZARU updates applied */
     uint32_t strides;        /**< completed swings */
     uint32_t chol_jitter, chol_reset, diverged, update_reject; /**< UKF health */
+    uint32_t cov_guard;      /**< covariance guard interventions (fnav_ukf.h) */
+    uint32_t resets;         /**< divergence resets (automatic or fnav_nav_reset) */
     fnav_real_t max_gap_seen_s; /**< longest interval seen, s */
 } fnav_nav_stats_t;
 
@@ -121,6 +129,11 @@ typedef struct {
     uint32_t health;        /**< FNAV_HEALTH_* bits */
     fnav_nav_stats_t stats;
     fnav_nav_frame_t last;  /**< newest frame */
+    uint32_t undone_run;    /**< consecutive undone filter steps */
+    int have_hold;          /**< a reset holds the last good position and heading */
+    fnav_vec3_t hold_pos_m; /**< position carried over a reset, n frame, m */
+    fnav_real_t hold_yaw_rad; /**< heading carried over a reset, rad */
+    fnav_real_t hold_pos_var_m2[3]; /**< position variance carried over a reset, m^2 */
 } fnav_nav_t;
 
 /** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (profile or any module's
@@ -143,6 +156,17 @@ FNAV_WARN_UNUSED fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_
  *         frame->health and the counters, not as a status.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_nav_pop(fnav_nav_t *nav, fnav_nav_frame_t *frame);
+
+/**
+ * Divergence reset: the filter stops and re-aligns at the next still period,
+ * keeping the last good position and heading (with their variances) so the
+ * trajectory stays continuous; until then frames hold that position with the
+ * ALIGNED flag clear. The navigator calls it itself when |velocity| exceeds
+ * cfg.diverge_speed_mps or cfg.diverge_undone consecutive steps were undone;
+ * a caller may call it on its own evidence (e.g. an external position fix
+ * disagreeing). Counted in stats.resets, FNAV_HEALTH_RESET in the frames.
+ */
+void fnav_nav_reset(fnav_nav_t *nav);
 
 /** End of input: the frames held back by the detector become due. If the
  *  input ended before an alignment, aligns on what was still, if enough. */

@@ -30,11 +30,13 @@
  *
  * Adaptive threshold (docs/navigation.md): running or jogging keeps the foot
  * from coming fully to rest, and the statistic's minimum in each stance rises
- * by one to two decades. The detector tracks that floor F in log10 T (it
- * follows every new minimum at once and otherwise rises by floor_rise_dps
- * decades per second) and uses gamma' = clamp(10^(F + margin), gamma,
- * adapt_max_ratio * gamma): for walking the floor sits decades below the configured gamma
- * and nothing changes; when the stance floor rises, the threshold follows it.
+ * by one to two decades. The detector tracks the floor F of log10 T, its
+ * minimum over the last floor_window_s (longer than a stride, so the window
+ * always holds the last stance; kept as the minima of
+ * FNAV_STANCE_FLOOR_BLOCKS blocks) and uses gamma' = clamp(10^(F + margin),
+ * gamma, adapt_max_ratio * gamma) for the next sample: for walking the floor
+ * sits decades below the configured gamma and nothing changes; when the
+ * stance minima rise, the threshold follows them one window later.
  *
  * Not ISR-safe by itself (one object per caller); no allocation.
  */
@@ -71,14 +73,17 @@ typedef struct {
     fnav_real_t accel_thresh_mps2; /**< THRESHOLD: window RMS ||f| - g| limit, m/s^2 (default 0.6) */
     fnav_real_t gravity_mps2;   /**< local gravity, m/s^2 (default 9.80665) */
     int adaptive;               /**< 1 (default): adaptive threshold (see file comment) */
-    fnav_real_t floor_rise_dps; /**< floor rise, decades of T per second (default 0.25) */
+    fnav_real_t floor_window_s; /**< adaptive floor: minimum of log10 T over this window, s (default 2) */
     fnav_real_t margin_dec;     /**< threshold above the floor, decades (default 0.4) */
     fnav_real_t adapt_max_ratio; /**< adaptive threshold at most this times gamma (default 10) */
     fnav_real_t min_zupt_s;     /**< a stance shorter than this is ignored, s (default 0.02) */
     fnav_real_t min_stance_s;   /**< segmentation: shortest stance ending a swing, s (default 0.05) */
-    fnav_real_t min_swing_s;    /**< segmentation: shortest swing, s (default 0.2) */
+    fnav_real_t min_swing_s;    /**< segmentation: shortest swing, s (default 0.25) */
     fnav_real_t event_window_s; /**< gait-event search window, s (default 0.3) */
 } fnav_stance_config_t;
+
+/** Blocks of the sliding-window minimum of the adaptive floor. */
+#define FNAV_STANCE_FLOOR_BLOCKS 8
 
 /** Defaults (see each field). */
 extern const fnav_stance_config_t fnav_stance_config_default;
@@ -123,8 +128,11 @@ typedef struct {
     int win;            /**< window W, samples (odd), 0 until the rate is known */
     int half;           /**< h = (W - 1) / 2 */
     fnav_real_t rate_hz; /**< rate in use, Hz */
-    fnav_real_t floor_l; /**< adaptive floor, log10 T */
-    int floor_valid;
+    int floor_valid;       /**< a statistic entered the floor window */
+    fnav_real_t fw_blk[FNAV_STANCE_FLOOR_BLOCKS]; /**< minima of the completed blocks, log10 T */
+    int fw_nblk, fw_head;  /**< completed blocks kept, next slot */
+    fnav_real_t fw_cur;    /**< minimum of the block being filled */
+    long fw_fill, fw_len;  /**< samples in it, samples per block */
     /* segmentation */
     int seg;            /**< 1 stance, 0 swing */
     long run;           /**< length of the current run of raw decisions, samples */

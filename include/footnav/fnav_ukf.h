@@ -53,6 +53,14 @@
  * return FNAV_E_DECOMP after completing the step with the reset covariance.
  * Non-finite inputs return FNAV_E_NANINF and leave the filter unchanged; a
  * step that would produce a non-finite state is undone (FNAV_E_DIVERGED).
+ * After every prediction and update a guard keeps the diagonal finite,
+ * positive and below a generous maximum per state kind (standard deviation
+ * 1 m lever, 100 m/s, 10 km, pi rad, 1 rad/s, 10 m/s^2): a variance that is
+ * not finite or not positive resets its row and column to zero and itself to
+ * the maximum; a larger one is clamped with its row and column scaled alike
+ * (health.cov_guard counts both). Long stretches without any stance (no
+ * update for minutes) otherwise let float32 rounding drive variances
+ * negative.
  */
 #ifndef FNAV_UKF_H
 #define FNAV_UKF_H
@@ -123,6 +131,7 @@ typedef struct {
     uint32_t nan_inputs;    /**< inputs rejected as NaN/Inf */
     uint32_t diverged;      /**< steps undone because the result was not finite */
     uint32_t update_reject; /**< updates skipped (innovation covariance not positive) */
+    uint32_t cov_guard;     /**< covariance entries reset or clamped by the guard (file comment) */
 } fnav_ukf_health_t;
 
 /** The filter (caller-owned, fixed size: 3 matrices of 18 x 18). */

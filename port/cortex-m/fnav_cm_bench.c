@@ -219,8 +219,10 @@ static void print_estimates(void)
 #define PROF_NAV_SWING ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 2))
 #define PROF_NAV_ZUPT ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 3))
 #define PROF_STANCE ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 4))
-#define PROF_EMPTY ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 5))
-#define PROF_N (FNAV_CM_PROF_COUNT + 6)
+#define PROF_UKF_PRED ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 5))
+#define PROF_UKF_STANCE ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 6))
+#define PROF_EMPTY ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 7))
+#define PROF_N (FNAV_CM_PROF_COUNT + 8)
 
 typedef struct {
     uint32_t begin;
@@ -240,7 +242,8 @@ static uint32_t g_nav_target_ticks;
 
 static void prof_add(prof_t *p, uint32_t d)
 {
-    if (p == &g_prof[FNAV_CM_PROF_NAV] && g_nav_target_ticks != 0u && d > g_nav_target_ticks) {
+    if ((p == &g_prof[FNAV_CM_PROF_NAV] || p == &g_prof[PROF_UKF_PRED] || p == &g_prof[PROF_UKF_STANCE]) &&
+        g_nav_target_ticks != 0u && d > g_nav_target_ticks) {
         p->over++;
     }
     p->last = d;
@@ -250,15 +253,103 @@ static void prof_add(prof_t *p, uint32_t d)
     p->count++;
 }
 
+#if FNAV_CM_WITH_NAV
+/* The UKF step alone (strapdown prediction plus, in stance, the ZUPT: the
+ * quantity of the navigation issue's 40,000-instruction target): before each
+ * navigator step the filter is copied; after it, when the step ran exactly
+ * one prediction, the same prediction (same sample, interval) and update are
+ * replayed on the copy and timed. The copy and the search are not timed. */
+static fnav_ukf_t g_ukf_copy;
+static uint32_t g_excluded; /* ticks of snapshot + replay inside the current main-loop pass */
+static int64_t g_tprev_copy;
+static uint32_t g_predicts_before;
+static uint32_t g_frame_idx;
+
+static void ukf_snapshot(void)
+{
+    uint32_t t0 = SYST_CVR;
+    g_ukf_copy = g_app.est.nav.ukf;
+    g_tprev_copy = g_app.est.nav.t_prev_ns;
+    g_predicts_before = g_app.est.nav.ukf.health.predicts;
+    g_excluded += (t0 - SYST_CVR) & 0xFFFFFFu;
+}
+
+static void ukf_replay_timed(const fnav_nav_frame_t *fr);
+
+/* The replay is measurement, not firmware work: its time is excluded from
+ * the enclosing main-loop figure. */
+static void ukf_replay(const fnav_nav_frame_t *fr)
+{
+    uint32_t t0 = SYST_CVR;
+    ukf_replay_timed(fr);
+    g_excluded += (t0 - SYST_CVR) & 0xFFFFFFu;
+}
+
+static void ukf_replay_timed(const fnav_nav_frame_t *fr)
+{
+    const fnav_nav_t *nav = &g_app.est.nav;
+    const fnav_cm_slice_sample_t *x;
+    fnav_vec3_t w, a;
+    fnav_real_t dt;
+    fnav_status_t st;
+    uint32_t a0, a1, b1;
+    if (nav->ukf.health.predicts != g_predicts_before + 1u || !g_ukf_copy.started) {
+        return;
+    }
+    while (g_frame_idx < fnav_cm_slice_n && fnav_cm_slice[g_frame_idx].t_ns < fr->t_ns) {
+        g_frame_idx++;
+    }
+    if (g_frame_idx >= fnav_cm_slice_n || fnav_cm_slice[g_frame_idx].t_ns != fr->t_ns) {
+        return;
+    }
+    x = &fnav_cm_slice[g_frame_idx];
+    w = fnav_vec3((fnav_real_t)x->gyr[0], (fnav_real_t)x->gyr[1], (fnav_real_t)x->gyr[2]);
+    a = fnav_vec3((fnav_real_t)x->acc[0], (fnav_real_t)x->acc[1], (fnav_real_t)x->acc[2]);
+    dt = (fnav_real_t)(fr->t_ns - g_tprev_copy) * FNAV_R(1.0e-9);
+    if (!(dt > FNAV_R(0.0)) || dt > nav->cfg.max_gap_s) {
+        return; /* the navigator used the nominal interval: not the same call */
+    }
+    a0 = SYST_CVR;
+    st = fnav_ukf_predict(&g_ukf_copy, w, a, dt);
+    a1 = SYST_CVR;
+    if (fr->flags & FNAV_FRAME_ZUPT) {
+        st = fnav_ukf_zupt(&g_ukf_copy, w);
+    }
+    b1 = SYST_CVR;
+    (void)st; /* statuses are the navigator's business; here only the cost */
+    prof_add(&g_prof[PROF_UKF_PRED], (a0 - a1) & 0xFFFFFFu);
+    if (fr->flags & FNAV_FRAME_ZUPT) {
+        prof_add(&g_prof[PROF_UKF_STANCE], (a0 - b1) & 0xFFFFFFu);
+    }
+}
+#endif
+
 /* SysTick counts down, 24 bits: a call shorter than 2^24 ticks is measured
  * exactly by the difference modulo 2^24. */
 FNAV_CM_NOIPA void fnav_cm_prof_mark(fnav_cm_prof_id_t id, int begin)
 {
-    uint32_t now = SYST_CVR;
+    uint32_t now;
     prof_t *p = &g_prof[id];
+#if FNAV_CM_WITH_NAV
+    if (begin && id == FNAV_CM_PROF_NAV) {
+        ukf_snapshot(); /* before reading the clock: not part of the step */
+    }
+#endif
+    now = SYST_CVR;
     if (begin) {
         p->begin = now;
+#if FNAV_CM_WITH_NAV
+        if (id == FNAV_CM_PROF_SAMPLE) {
+            g_excluded = 0u;
+        }
+#endif
     } else {
+#if FNAV_CM_WITH_NAV
+        if (id == FNAV_CM_PROF_SAMPLE) {
+            now += g_excluded; /* SysTick counts down: later by the excluded ticks */
+            g_excluded = 0u;
+        }
+#endif
         prof_add(p, (p->begin - now) & 0xFFFFFFu);
     }
 }
@@ -272,6 +363,11 @@ FNAV_CM_NOIPA void fnav_cm_prof_note(fnav_cm_prof_id_t id, uint32_t tag)
                                   ? PROF_NAV_NOOUT
                                   : ((tag & FNAV_FRAME_ZUPT) ? PROF_NAV_ZUPT : PROF_NAV_SWING);
         prof_add(&g_prof[k], g_prof[id].last);
+#if FNAV_CM_WITH_NAV
+        if (tag != FNAV_CM_PROF_TAG_NO_OUTPUT) {
+            ukf_replay(&g_app.frame);
+        }
+#endif
     }
 }
 
@@ -399,6 +495,8 @@ static const char *const k_prof_name[PROF_N] = {
     "navigation step, swing",
     "navigation step, stance with ZUPT",
     "stance detector alone (push+pop)",
+    "UKF step alone, prediction (every step)",
+    "UKF step alone, prediction + ZUPT (stance)",
     "empty mark pair",
 };
 
@@ -421,7 +519,7 @@ static void print_costs(uint64_t overhead10)
         fnav_cm_line_str(&l, "cost ");
         fnav_cm_line_str(&l, k_prof_name[i]);
         fnav_cm_line_str(&l, ": ");
-        if (!(built & 1u) && (i >= (int)PROF_NAV_NOOUT && i <= (int)PROF_STANCE)) {
+        if (!(built & 1u) && (i >= (int)PROF_NAV_NOOUT && i <= (int)PROF_UKF_STANCE)) {
             continue; /* nothing to split without the filter */
         }
         if ((i == FNAV_CM_PROF_NAV && !(built & 1u)) || (i == FNAV_CM_PROF_ALLAN && !(built & 2u)) ||
@@ -442,7 +540,7 @@ static void print_costs(uint64_t overhead10)
         fnav_cm_line_u64(&l, minus(ins10(p->min), overhead10) / 10u);
         fnav_cm_line_str(&l, " max ");
         fnav_cm_line_u64(&l, minus(ins10(p->max), overhead10) / 10u);
-        if (i == FNAV_CM_PROF_NAV && (built & 1u)) {
+        if ((i == FNAV_CM_PROF_NAV || i == (int)PROF_UKF_PRED || i == (int)PROF_UKF_STANCE) && (built & 1u)) {
             fnav_cm_line_str(&l, "; steps over ");
             fnav_cm_line_u64(&l, NAV_TARGET_INSTRUCTIONS);
             fnav_cm_line_str(&l, ": ");

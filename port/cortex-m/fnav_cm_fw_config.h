@@ -29,6 +29,12 @@
  * to 960 Hz (the paper's lowest usable rates are 200-350 Hz). */
 #define FNAV_STANCE_MAX_WINDOW 24
 
+/* Foot-strike search history: 128 samples hold the default 0.3 s event
+ * window up to 426 Hz (the firmware samples at 400 Hz at most, see
+ * FNAV_CM_RING_SIZE); 8 bytes per sample, 256 bytes less than the default
+ * 160 (which the navigation's alignment and detector state needed). */
+#define FNAV_STANCE_EVENT_BUF 128
+
 /* Sample ring between the interrupt and the main loop: 16 samples, 40 ms at
  * 400 Hz, far above the main loop's worst case per sample. */
 #define FNAV_CM_RING_SIZE 16u

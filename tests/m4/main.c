@@ -9,9 +9,21 @@
 #include <string.h>
 
 #include "footnav/fnav_nav.h"
+#include "fnav_cm_semihost.h"
 #include "m4_data.h"
 
-void sh_puts(const char *s);
+/* semihosted output and the assert hook come from port/cortex-m */
+#define sh_puts fnav_cm_sh_puts
+
+/* Assert hook: report through semihosting and stop the emulator. */
+void fnav_port_assert_failed(const char *file, int line, const char *expr)
+{
+    (void)file;
+    (void)line;
+    fnav_cm_sh_puts(expr);
+    fnav_cm_sh_puts(" ASSERT\n");
+    fnav_cm_sh_exit(1);
+}
 
 #define SYST_CSR (*(volatile uint32_t *)0xE000E010)
 #define SYST_RVR (*(volatile uint32_t *)0xE000E014)
@@ -71,7 +83,7 @@ int main(void)
     putu("instructions per SysTick tick: ", per_tick);
     if (fnav_nav_init(&nav, &c) != FNAV_OK) {
         sh_puts("init failed\n");
-        return 1;
+        fnav_cm_sh_exit(1);
     }
     for (k = 0; k < NS; k++) {
         fnav_sample_t s;
@@ -136,5 +148,5 @@ int main(void)
     putu("ZUPT update, instructions (mean): ", uz_sum / (uz_n ? uz_n : 1) * per_tick);
     putu("UKF step in stance (prediction + ZUPT), instructions (max): ", ust_max * per_tick);
     putu("whole fnav_nav_pop (detector, filter, frame), instructions (max): ", nav_max * per_tick);
-    return 0;
+    fnav_cm_sh_exit(0);
 }

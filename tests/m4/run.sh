@@ -14,10 +14,14 @@ mkdir -p "$B"
 /usr/bin/python3 tests/m4/gen_data.py "$B/m4_data.h" 3000 || exit 1
 OPT="-Os"
 for a in "$@"; do case "$a" in -O*) OPT="$a" ;; esac; done
+# startup (vector table, FPU enable), semihosting and the linker script are
+# the firmware port's (port/cortex-m); only the measuring main() is here
 arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard $OPT -std=c99 "$@" \
-    -Iinclude -I"$B" -nostartfiles --specs=nosys.specs -T tests/m4/link.ld \
-    tests/m4/startup.c tests/m4/main.c src/fnav_nav.c src/fnav_ukf.c src/fnav_stance.c src/fnav_align.c \
-    src/fnav_strapdown.c src/fnav_profile.c src/fnav_port.c -lm -o "$B/m4.elf" || exit 1
+    -Iinclude -Iport/cortex-m -I"$B" -nostartfiles --specs=nano.specs -Wl,--gc-sections \
+    -Lport/cortex-m/ld -Tmps2-an386.ld \
+    port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_semihost.c tests/m4/main.c \
+    src/fnav_nav.c src/fnav_ukf.c src/fnav_stance.c src/fnav_align.c \
+    src/fnav_strapdown.c src/fnav_profile.c src/fnav_port.c -lm -lc -lgcc -o "$B/m4.elf" || exit 1
 echo "  Cortex-M4F in qemu-system-arm mps2-an386 -icount shift=0 ($OPT $*):"
 timeout 600 qemu-system-arm -M mps2-an386 -nographic -semihosting-config enable=on,target=native \
     -icount shift=0 -kernel "$B/m4.elf" 2>&1 | sed "s/^/    /"

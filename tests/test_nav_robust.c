@@ -1,0 +1,253 @@
+/* Navigator health under abuse (issue: robustness): the divergence reset path,
+ * and extreme but physical inputs - a 2000 deg/s spin, 16 g impacts, an hour
+ * of stance, a long swing - never produce NaN and keep the covariance
+ * symmetric positive definite. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "footnav/fnav_nav.h"
+#include "fnav_testdata.h"
+
+static fnav_nav_t g_nav;
+
+/* Every output finite, the covariance diagonal non-negative. */
+static void check_frame(const fnav_nav_frame_t *f)
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        assert_true(fnav_isfinite(f->pos_m[i]) && fnav_isfinite(f->vel_mps[i]) && fnav_isfinite(f->euler_rad[i]));
+        assert_true(fnav_isfinite(f->gyro_bias_rps[i]) && fnav_isfinite(f->accel_bias_mps2[i]));
+    }
+    for (i = 0; i < FNAV_UKF_N; i++) {
+        assert_true(fnav_isfinite(f->p_diag[i]) && f->p_diag[i] >= FNAV_R(0.0));
+    }
+}
+
+/* The active covariance is symmetric and positive definite: a Cholesky
+ * factorisation in double succeeds with positive pivots. */
+static void check_cov_spd(const fnav_ukf_t *u)
+{
+    static double a[FNAV_UKF_NMAX][FNAV_UKF_NMAX];
+    int n = u->n_act, i, j, k;
+    if (!u->started) {
+        return;
+    }
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++) {
+            double pij = (double)fnav_ukf_cov(u, u->act[i], u->act[j]);
+            double pji = (double)fnav_ukf_cov(u, u->act[j], u->act[i]);
+            assert_true(isfinite(pij));
+            FNAV_ASSERT_CLOSE(pij, pji, 0.0, 1e-6);
+            a[i][j] = pij;
+        }
+    }
+    for (j = 0; j < n; j++) {
+        double d = a[j][j];
+        for (k = 0; k < j; k++) {
+            d -= a[j][k] * a[j][k];
+        }
+        if (!(d > 0.0)) {
+            fail_msg("covariance not positive definite at pivot %d (%g)", j, d);
+        }
+        a[j][j] = sqrt(d);
+        for (i = j + 1; i < n; i++) {
+            double s = a[i][j];
+            for (k = 0; k < j; k++) {
+                s -= a[i][k] * a[j][k];
+            }
+            a[i][j] = s / a[j][j];
+        }
+    }
+}
+
+typedef struct {
+    int64_t t_ns;
+    int64_t dt_ns;
+    long frames, aligned_frames;
+    fnav_nav_frame_t last;
+} run_t;
+
+static void init(run_t *r, double rate_hz)
+{
+    fnav_nav_config_t c = fnav_nav_config_default;
+    assert_int_equal(fnav_nav_init(&g_nav, &c), FNAV_OK);
+    memset(r, 0, sizeof *r);
+    r->t_ns = 1000000000LL;
+    r->dt_ns = (int64_t)(1.0e9 / rate_hz + 0.5);
+}
+
+static void push(run_t *r, const double a[3], const double w[3])
+{
+    fnav_sample_t s;
+    fnav_nav_frame_t f;
+    fnav_status_t st;
+    int i;
+    memset(&s, 0, sizeof s);
+    s.t_ns = r->t_ns;
+    r->t_ns += r->dt_ns;
+    for (i = 0; i < 3; i++) {
+        s.accel_mps2[i] = (fnav_real_t)a[i];
+        s.gyro_rps[i] = (fnav_real_t)w[i];
+    }
+    st = fnav_nav_push(&g_nav, &s);
+    assert_int_equal(st, FNAV_OK);
+    while (fnav_nav_pop(&g_nav, &f) == FNAV_OK) {
+        check_frame(&f);
+        r->frames++;
+        r->aligned_frames += (f.flags & FNAV_FRAME_ALIGNED) != 0u;
+        r->last = f;
+    }
+}
+
+static void still(run_t *r, double seconds)
+{
+    static const double a[3] = { 0.0, 0.0, -9.80665 }, w[3] = { 0.0, 0.0, 0.0 };
+    long n = (long)(seconds * 1.0e9 / (double)r->dt_ns), i;
+    for (i = 0; i < n; i++) {
+        push(r, a, w);
+    }
+}
+
+/* A physically impossible state (a foot at over 30 m/s) resets the
+ * navigator; it re-aligns at the next still period and continues from the
+ * last good position, so the trajectory stays continuous. */
+static void test_divergence_reset(void **state)
+{
+    run_t r;
+    long i;
+    fnav_vec3_t before;
+    (void)state;
+    init(&r, 200.0);
+    still(&r, 6.0); /* alignment completes after at most 5 s of stillness */
+    assert_true(r.last.flags & FNAV_FRAME_ALIGNED);
+    before = fnav_vec3(r.last.pos_m[0], r.last.pos_m[1], r.last.pos_m[2]);
+    /* 5 g along x for 2 s with the foot turning: never a stance, and the
+     * integrated speed passes 30 m/s within a second */
+    for (i = 0; i < 400; i++) {
+        const double a[3] = { 49.0, 0.0, -9.80665 }, w[3] = { 0.0, 0.0, 1.0 };
+        push(&r, a, w);
+    }
+    assert_true(g_nav.stats.resets >= 1u);
+    assert_true(g_nav.health & FNAV_HEALTH_RESET);
+    /* while re-aligning, frames hold a position near where it was before the
+     * acceleration began (the last good frame's) and are not ALIGNED */
+    assert_false(r.last.flags & FNAV_FRAME_ALIGNED);
+    assert_true(fabs((double)r.last.pos_m[0] - (double)before.v[0]) < 30.0);
+    {
+        fnav_vec3_t hold = fnav_vec3(r.last.pos_m[0], r.last.pos_m[1], r.last.pos_m[2]);
+        still(&r, 6.0);
+        assert_true(r.last.flags & FNAV_FRAME_ALIGNED); /* re-aligned */
+        FNAV_ASSERT_CLOSE(r.last.pos_m[0], hold.v[0], 0.05, 0.0);
+        FNAV_ASSERT_CLOSE(r.last.pos_m[1], hold.v[1], 0.05, 0.0);
+        assert_true(fnav_vec3_norm(fnav_vec3(r.last.vel_mps[0], r.last.vel_mps[1], r.last.vel_mps[2])) < FNAV_R(0.1));
+    }
+    check_cov_spd(&g_nav.ukf);
+    /* a caller-initiated reset takes the same path */
+    fnav_nav_reset(&g_nav);
+    assert_true(g_nav.stats.resets >= 2u);
+    still(&r, 6.0);
+    assert_true(r.last.flags & FNAV_FRAME_ALIGNED);
+}
+
+/* A 2000 deg/s spin for 10 s (the gyro range of the NGIMU), between still
+ * periods. */
+static void test_spin_2000dps(void **state)
+{
+    run_t r;
+    long i;
+    (void)state;
+    init(&r, 400.0);
+    still(&r, 2.0);
+    for (i = 0; i < 4000; i++) {
+        const double a[3] = { 1.0, -0.5, -9.80665 }, w[3] = { 0.3, -0.2, 2000.0 * 3.14159265358979 / 180.0 };
+        push(&r, a, w);
+        if (i % 500 == 0) {
+            check_cov_spd(&g_nav.ukf);
+        }
+    }
+    still(&r, 2.0);
+    check_cov_spd(&g_nav.ukf);
+    assert_true(r.aligned_frames > 0);
+}
+
+/* 16 g heel-strike impacts (three samples each, every 0.5 s) in walking-like
+ * stance/swing alternation. */
+static void test_impacts_16g(void **state)
+{
+    run_t r;
+    long i;
+    (void)state;
+    init(&r, 200.0);
+    still(&r, 2.0);
+    for (i = 0; i < 200 * 30; i++) {
+        long ph = i % 100;
+        double a[3] = { 0.0, 0.0, -9.80665 }, w[3] = { 0.0, 0.0, 0.0 };
+        if (ph < 60) { /* swing: forward swing of the foot */
+            a[0] = 8.0 * sin(2.0 * 3.14159265358979 * (double)ph / 60.0);
+            w[1] = 6.0 * sin(2.0 * 3.14159265358979 * (double)ph / 60.0);
+        } else if (ph < 63) { /* impact */
+            a[0] = -40.0;
+            a[2] = -16.0 * 9.80665;
+            w[1] = -10.0;
+        }
+        push(&r, a, w);
+        if (i % 1000 == 0) {
+            check_cov_spd(&g_nav.ukf);
+        }
+    }
+    check_cov_spd(&g_nav.ukf);
+    assert_true(g_nav.stats.zupts > 0u);
+}
+
+/* An hour of stance at 100 Hz: the covariance stays positive definite while
+ * the ZUPTs keep shrinking it. */
+static void test_long_stance(void **state)
+{
+    run_t r;
+    (void)state;
+    init(&r, 100.0);
+    still(&r, 3600.0);
+    check_cov_spd(&g_nav.ukf);
+    assert_true(r.last.flags & FNAV_FRAME_ALIGNED);
+    assert_true(fabs((double)r.last.pos_m[0]) < 0.05 && fabs((double)r.last.pos_m[2]) < 0.05);
+}
+
+/* A long swing: 30 s of motion without one stance; the uncertainty grows,
+ * the covariance guard bounds it, nothing becomes NaN. */
+static void test_long_swing(void **state)
+{
+    run_t r;
+    long i;
+    (void)state;
+    init(&r, 200.0);
+    still(&r, 2.0);
+    for (i = 0; i < 200 * 30; i++) {
+        double t = (double)i / 200.0;
+        const double a[3] = { 3.0 * sin(5.0 * t), 2.0 * cos(3.0 * t), -9.80665 + 4.0 * sin(7.0 * t) },
+                     w[3] = { 2.0 * sin(4.0 * t), 3.0 * cos(2.5 * t), 1.5 * sin(1.3 * t) };
+        push(&r, a, w);
+        if (i % 1000 == 0) {
+            check_cov_spd(&g_nav.ukf);
+        }
+    }
+    check_cov_spd(&g_nav.ukf);
+    still(&r, 3.0);
+    check_cov_spd(&g_nav.ukf);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_divergence_reset),
+        cmocka_unit_test(test_spin_2000dps),
+        cmocka_unit_test(test_impacts_16g),
+        cmocka_unit_test(test_long_stance),
+        cmocka_unit_test(test_long_swing),
+    };
+    return cmocka_run_group_tests_name("nav_robust", tests, NULL, NULL);
+}
