@@ -1,0 +1,91 @@
+#!/bin/sh
+# CLI tests of `harness simgap` and `harness simgap-validate` (run by make
+# test and make sanitize with $HARNESS set; docs/simgap.md). The logs are
+# simulated here with `harness sim`, so the right answer is known.
+set -u
+H=${HARNESS:-bin/harness}
+PY=${PYTHON:-/usr/bin/python3}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+fail=0
+ok() { echo "ok   $1"; }
+bad() { echo "FAIL $1"; fail=1; }
+expect() { # expect CODE NAME CMD...
+    want=$1; name=$2; shift 2
+    "$@" >"$T/out" 2>"$T/err"; got=$?
+    if [ "$got" -eq "$want" ]; then ok "$name (exit $got)"; else bad "$name: exit $got, wanted $want"; cat "$T/err"; fi
+}
+json() { # json FILE PYTHON-EXPRESSION-ON-j: passes when it is true
+    "$PY" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' "$1" "$2" 2>"$T/pyerr"
+}
+
+# usage and input errors
+expect 2 "no input" "$H" simgap
+expect 2 "static and walk" "$H" simgap x.csv --static --walk
+expect 2 "too few seeds" "$H" simgap x.csv --seeds 1
+expect 2 "fit fraction out of range" "$H" simgap x.csv --fit-frac 0.95
+expect 1 "missing file" "$H" simgap "$T/nope.csv"
+expect 2 "validate: zero cases" "$H" simgap-validate --cases 0
+expect 2 "validate: bad magnitude range" "$H" simgap-validate --mag-range 3,1
+expect 2 "validate: static-only and walk-only" "$H" simgap-validate --static-only --walk-only
+
+# a static log of 2 s: the held-out part cannot give tight Allan intervals
+# over a decade of tau -> "too short", exit 1, and the JSON says why
+"$H" sim --motion stand:2 --rate 100 --profile mtx --seed 2 --out "$T/short.csv" >/dev/null 2>&1 || bad "sim short"
+expect 1 "too short log" "$H" simgap "$T/short.csv" --quiet --json "$T/short.json"
+grep -q "TOO SHORT" "$T/out" && ok "too short said in the summary" || bad "too short summary"
+json "$T/short.json" 'j["confident"] is False and j["verdict"]["answer"] == "too-short" and "decade" in j["too_short"]' &&
+    ok "too short in the JSON" || bad "too short JSON: $(cat "$T/pyerr")"
+
+# a static CSV (t,ax,ay,az,gx,gy,gz, SI) of 600 s at 100 Hz, MTx noise, gyro z
+# rounded to 0.001 rad/s: found on gz (lattice), attributed to quant with the
+# right LSB, the held-out gap explained, no other channel flagged
+"$H" sim --motion stand:600 --rate 100 --profile mtx --seed 3 --effect quant:ch=gz:lsb=0.001 \
+    --out "$T/q.csv" >/dev/null 2>&1 || bad "sim quant"
+head -n 1 "$T/q.csv" | grep -q '^t,ax,ay,az,gx,gy,gz$' && ok "CSV input header" || bad "CSV header"
+expect 0 "static log with quantisation" "$H" simgap "$T/q.csv" --quiet --seeds 8 --json "$T/q.json" --plot "$T/qp"
+grep -q "^verdict: explained: quant" "$T/out" && ok "summary names quant" || bad "summary: $(grep verdict "$T/out")"
+json "$T/q.json" 'j["schema"] == "footnav-simgap/1" and j["log"]["domain"] == "static" and j["log"]["domain_from"] == "detected"' &&
+    ok "JSON schema and domain" || bad "JSON schema/domain: $(cat "$T/pyerr")"
+json "$T/q.json" 'j["verdict"]["answer"] == "explained" and j["effects"][0]["effect"] == "quant" and j["effects"][0]["rank"] == 1 and [c["channel"] for c in j["effects"][0]["channels"]] == ["gz"]' &&
+    ok "quant ranked first, on gz only" || bad "ranked effects: $(cat "$T/pyerr")"
+json "$T/q.json" 'abs(j["effects"][0]["channels"][0]["params"]["lsb"] / 0.001 - 1) < 0.01 and j["effects"][0]["channels"][0]["explained"] >= 0.7' &&
+    ok "LSB within 1 %, held-out gap explained >= 70 %" || bad "quant parameters: $(cat "$T/pyerr")"
+json "$T/q.json" '[c["channel"] for c in j["channels"] if c["gap_significant"]] == ["gz"] and any(l["channel"] == "gz" and l["domain"] == "lattice" for l in j["locations"])' &&
+    ok "gap located on gz, lattice domain" || bad "locations: $(cat "$T/pyerr")"
+json "$T/q.json" 'all(c["attribution"]["within_noise"] for c in j["channels"])' &&
+    ok "remaining gap within noise on every channel" || bad "within noise: $(cat "$T/pyerr")"
+[ -s "$T/qp/allan.png" ] && [ -s "$T/qp/psd.png" ] && ok "plots written" || bad "plots: $(ls "$T/qp" 2>&1)"
+expect 3 "unwritable JSON" "$H" simgap "$T/q.csv" --quiet --seeds 3 --max-effects 0 --json /nonexistent/dir/q.json
+
+# --walk on a static log is honoured (domain given, not detected)
+expect 0 "domain given" "$H" simgap "$T/q.csv" --quiet --seeds 3 --max-effects 0 --static --json "$T/g.json"
+json "$T/g.json" 'j["log"]["domain_from"] == "option"' && ok "domain_from option" || bad "domain_from: $(cat "$T/pyerr")"
+
+# a simulated walk (CSV): detected as a walk, the navigation domain reported
+# (innovations per stance, the filter's model gap kept apart from the sensor
+# verdict); a 12 s walk has too few held-out stances for a confident answer
+"$H" sim --motion walk --duration 40 --rate 100 --profile mtx --seed 4 --out "$T/w.csv" >/dev/null 2>&1 || bad "sim walk"
+expect 0 "walk log" "$H" simgap "$T/w.csv" --quiet --seeds 6 --json "$T/w.json" --plot "$T/wp"
+json "$T/w.json" 'j["log"]["domain"] == "walk" and j["log"]["domain_from"] == "detected" and j["navigation"]["stances_held_out"] >= 10 and "model_gap" in j["navigation"] and j["verdict"]["answer"] == "none"' &&
+    ok "walk detected, navigation domain in the JSON, no sensor effect claimed" || bad "walk JSON: $(cat "$T/pyerr")"
+[ -s "$T/wp/innovations.png" ] && ok "innovation plot" || bad "innovation plot: $(ls "$T/wp" 2>&1)"
+"$H" sim --motion walk --duration 12 --rate 100 --profile mtx --seed 5 --out "$T/w2.csv" >/dev/null 2>&1 || bad "sim short walk"
+expect 1 "short walk" "$H" simgap "$T/w2.csv" --quiet --seeds 4 --json "$T/w2.json"
+json "$T/w2.json" 'j["verdict"]["answer"] == "too-short" and "stances" in j["too_short"]' &&
+    ok "short walk: too few stances said" || bad "short walk JSON: $(cat "$T/pyerr")"
+
+# a small validation run on withheld effects: a control, a line and a
+# quantiser (short static logs); the line and the quantiser must be named and
+# the control left alone
+expect 0 "simgap-validate small run" "$H" simgap-validate --cases 3 --static-only --duration 300 --seeds 6 \
+    --effects control,quant,vibration --json "$T/v.json" --markdown "$T/v.md"
+grep -q "^confusion" "$T/out" && grep -q "^targets:" "$T/out" && ok "confusion matrix and targets printed" ||
+    bad "validate output"
+json "$T/v.json" 'j["schema"] == "footnav-simgap-validate/1" and len(j["results"]) == 3' &&
+    ok "validate JSON: three cases" || bad "validate JSON: $(cat "$T/pyerr")"
+json "$T/v.json" 'all((r["answer"] == "none") if r["truth"] == "control" else (r["answer"].startswith(r["truth"].split("_")[0]) and r["param_rel_error"] <= 0.25 and r["held_out_shrink"] >= 0.7) for r in j["results"])' &&
+    ok "validate: effects named with parameters within 25 %, control clean" || bad "validate answers: $(cat "$T/pyerr"; cat "$T/out")"
+grep -q "^| control " "$T/v.md" && grep -q "^# Sim-to-real gap diagnosis: validation" "$T/v.md" && ok "validate Markdown" ||
+    bad "validate Markdown"
+exit $fail
