@@ -1,8 +1,9 @@
 /* Tests of the sim-to-real gap diagnosis's building blocks
  * (harness/hx_simgap.h, hx_simgap_valid.h): the detectable magnitudes
- * against the catalogue's own table, the exact Allan variance of the
- * models against the estimator, the z-scores' calibration, the lattice
- * statistic, the fits, and end-to-end diagnoses of simulated logs. */
+ * against the catalogue's own table, the models' Allan variances against
+ * the textbook forms, the lattice statistic and step, the fit / held-out
+ * split. End-to-end diagnoses of simulated logs are in
+ * tests/cli/test_simgap.sh. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -95,10 +96,118 @@ static void test_thresholds_match_catalogue(void **state)
     assert_int_equal(rows, 42);
 }
 
+/* ------------------------------------------------------------ Allan models */
+
+static sg_chmodel_t one_effect(int id, double p0, double p1)
+{
+    sg_chmodel_t m;
+    memset(&m, 0, sizeof m);
+    m.n = 1;
+    m.e[0].id = id;
+    m.e[0].p[0] = p0;
+    m.e[0].p[1] = p1;
+    return m;
+}
+
+/* The models' Allan variances against the textbook continuous-time forms
+ * (IEEE Std 952-1997 Annex C; first-order Gauss-Markov as in El-Sheimy et
+ * al. 2008): white N^2 / tau exactly, ramp R^2 tau^2 / 2 exactly, rate random
+ * walk K^2 tau / 3 and Gauss-Markov (sigma^2 T^2 / tau^2)(2 tau / T - 3 +
+ * 4 e^{-tau/T} - e^{-2 tau/T}) up to their discretisation (O(1/m^2),
+ * O(1/(fs T))). */
+static void test_model_avar_textbook(void **state)
+{
+    const double fs = 100.0, N = 3e-3, R = 2e-5, K = 4e-4, sig = 5e-3, T = 60.0;
+    double m;
+    (void)state;
+    for (m = 1.0; m <= 65536.0; m *= 4.0) {
+        const double tau = m / fs, x = tau / T;
+        sg_chmodel_t w = one_effect(FNAV_EFFECT_WHITE, N, 0.0);
+        sg_chmodel_t r = one_effect(FNAV_EFFECT_RAMP, R, 0.0);
+        sg_chmodel_t k = one_effect(FNAV_EFFECT_RRW, K, 0.0);
+        sg_chmodel_t g = one_effect(FNAV_EFFECT_AR1, T, sig);
+        double gm = sig * sig / (x * x) * (2.0 * x - 3.0 + 4.0 * exp(-x) - exp(-2.0 * x));
+        FNAV_ASSERT_CLOSE(sg_model_avar(&w, fs, m, 0.0, 3600.0), N * N / tau, 0.0, 1e-12);
+        FNAV_ASSERT_CLOSE(sg_model_avar(&r, fs, m, 0.0, 3600.0), 0.5 * R * R * tau * tau, 0.0, 1e-12);
+        FNAV_ASSERT_CLOSE(sg_model_avar(&k, fs, m, 0.0, 3600.0), K * K * tau / 3.0, 0.0, 1.0 / (2.0 * m * m) + 1e-12);
+        if (m >= 16.0) {
+            FNAV_ASSERT_CLOSE(sg_model_avar(&g, fs, m, 0.0, 3600.0), gm, 0.0, 2e-2);
+        }
+    }
+}
+
+/* ------------------------------------------------------------ lattice */
+
+/* The lattice statistic is about N(0, 1) on continuous values and huge on
+ * rounded ones; the step is recovered from the rounded series. */
+static void test_lattice(void **state)
+{
+    enum { N = 20000 };
+    static double x[N], y[N];
+    const double q = 0.061 * D2R;
+    fnav_rng_t rng;
+    double z = 0.0, step;
+    size_t k;
+    (void)state;
+    fnav_rng_seed(&rng, 7u, 1u);
+    for (k = 0; k < N; k++) {
+        x[k] = 0.01 + 0.02 * (double)fnav_rng_gauss(&rng);
+        y[k] = q * floor(x[k] / q + 0.5);
+    }
+    assert_true(fabs(sg_lattice_z(x, N, q)) < 4.0);
+    assert_true(sg_lattice_z(y, N, q) > 100.0);
+    step = sg_lattice_step(y, N, &z);
+    FNAV_ASSERT_CLOSE(step, q, 0.0, 1e-6);
+    assert_true(z > 100.0);
+    step = sg_lattice_step(x, N, &z);
+    assert_true(step == 0.0 || fabs(z) < 5.0);
+}
+
+/* ------------------------------------------------------------ split */
+
+/* Fit and held-out segments are disjoint in time and cover the log, in both
+ * splits; the fit segment holds the requested fraction. */
+static void test_split_disjoint(void **state)
+{
+    int sandwich;
+    (void)state;
+    for (sandwich = 0; sandwich <= 1; sandwich++) {
+        static unsigned char use[100001];
+        const long n = 100001;
+        sg_segs_t s;
+        int g, b;
+        long k, nfit = 0;
+        memset(use, 0, sizeof use);
+        sg_segs_split(n, 0.6, sandwich, &s);
+        assert_int_equal(s.nb[SG_FIT], sandwich ? 2 : 1);
+        for (g = SG_FIT; g <= SG_HOLD; g++) {
+            for (b = 0; b < s.nb[g]; b++) {
+                for (k = s.start[g][b]; k < s.start[g][b] + s.n[g][b]; k++) {
+                    assert_int_equal(use[k], 0);
+                    use[k] = (unsigned char)g;
+                    nfit += g == SG_FIT;
+                }
+            }
+        }
+        for (k = 0; k < n; k++) {
+            assert_true(use[k] != 0);
+        }
+        assert_true(labs(nfit - (long)(0.6 * (double)n)) <= 1);
+        if (sandwich) {
+            assert_int_equal(use[0], SG_FIT);
+            assert_int_equal(use[n - 1], SG_FIT);
+            assert_int_equal(use[n / 2], SG_HOLD);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_thresholds_match_catalogue),
+        cmocka_unit_test(test_model_avar_textbook),
+        cmocka_unit_test(test_lattice),
+        cmocka_unit_test(test_split_disjoint),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
