@@ -22,7 +22,8 @@ static const hx_opt_t k_opts[] = {
     { "--alpha", "A", "family-wise false-alarm level of the gap tests (default 0.05)", 0 },
     { "--max-effects", "K", "forward-selection steps per channel (default 3)", 0 },
     { "--prescreen", "K", "candidates simulated per step besides lattice and line (default 3)", 0 },
-    { "--profile", "NAME|FILE", "walks: baseline noise from a profile instead of the stances", 0 },
+    { "--profile", "NAME|FILE", "walks: baseline noise from a profile instead of the stances; static logs: also "
+                                "test the profile's white + AR(1) model as given (a parameterisation check)", 0 },
     { "--closed", NULL, "walks: the walk ends where it started (drift check against the twins)", 0 },
     { "--quiet", NULL, "no progress indicator", 0 },
     { NULL, NULL, NULL, 0 }

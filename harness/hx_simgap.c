@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "hx_cli.h"
+#include "hx_profile.h"
 
 sg_opts_t sg_opts_default(void)
 {
@@ -752,11 +753,12 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
 }
 
 /* Locations: runs of consecutive points of one channel and domain with
- * |z| > 2.5 of one sign holding a point beyond the critical z. */
-static void locate(sg_result_t *r, int ch, int seg)
+ * |z| > 2.5 of one sign holding a point beyond the critical z of the
+ * comparison c, appended to loc (count *nloc, capacity cap). */
+static void locate_into(const sg_result_t *r, int ch, int seg, const sg_cmp_t *c, sg_loc_t *loc, size_t *nloc,
+                        size_t cap)
 {
     const sg_plist_t *pl = &r->pl[ch][seg];
-    const sg_cmp_t *c = &r->ch[ch].cmp[seg];
     size_t j = 0;
     while (j < pl->n) {
         size_t k = j, best = j;
@@ -771,8 +773,8 @@ static void locate(sg_result_t *r, int ch, int seg)
             }
             k++;
         }
-        if (fabs(c->z[best]) > c->z_crit && r->nloc < sizeof r->loc / sizeof r->loc[0]) {
-            sg_loc_t *L = &r->loc[r->nloc++];
+        if (fabs(c->z[best]) > c->z_crit && *nloc < cap) {
+            sg_loc_t *L = &loc[(*nloc)++];
             double d = r->real[ch][seg][best] - c->twin_mean[best];
             L->dom = pl->p[j].dom;
             L->ch = ch;
@@ -787,6 +789,25 @@ static void locate(sg_result_t *r, int ch, int seg)
         }
         j = k > j ? k : j + 1;
     }
+}
+
+static void locate(sg_result_t *r, int ch, int seg)
+{
+    locate_into(r, ch, seg, &r->ch[ch].cmp[seg], r->loc, &r->nloc, sizeof r->loc / sizeof r->loc[0]);
+}
+
+/* The given profile's white + AR(1) model of channel ch (not fitted). */
+static void profile_model(const fnav_profile_t *p, int ch, double mean, sg_chmodel_t *m)
+{
+    memset(m, 0, sizeof *m);
+    m->mean = mean;
+    m->n = 2;
+    m->e[0].id = FNAV_EFFECT_WHITE;
+    m->e[1].id = FNAV_EFFECT_AR1;
+    m->e[0].p[0] = ch < 3 ? (double)p->accel_noise_mps2_rthz[ch] : (double)p->gyro_noise_rps_rthz[ch - 3];
+    m->e[1].p[0] = ch < 3 ? (double)p->accel_tau_s[ch] : (double)p->gyro_tau_s[ch - 3];
+    m->e[1].p[1] = ch < 3 ? (double)p->accel_bias_sigma_mps2[ch] : (double)p->gyro_bias_sigma_rps[ch - 3];
+    m->e[0].se[0] = m->e[1].se[0] = m->e[1].se[1] = (double)NAN;
 }
 
 /* Real features of the three segments of one channel. */
@@ -829,9 +850,19 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
     /* Bonferroni over the channels and the four tests of each (G and max |z|,
      * whole log and held-out segment) */
     double alpha = o->alpha / (double)(SG_NCH * 4);
-    int ch, g;
+    int ch, g, have_prof = 0;
     hx_progress_t progs, *prog = o->quiet ? NULL : &progs;
     double done = 0.0;
+    fnav_profile_t prof;
+    if (o->profile != NULL) {
+        char e2[256];
+        if (hx_profile_load(o->profile, &prof, e2, sizeof e2) != 0) {
+            snprintf(err, err_size, "%s", e2);
+            return -1;
+        }
+        have_prof = 1;
+        snprintf(r->prof_name, sizeof r->prof_name, "%s", prof.name[0] != '\0' ? prof.name : o->profile);
+    }
     x = (double *)malloc(r->n * sizeof *x);
     if (x == NULL) {
         snprintf(err, err_size, "out of memory");
@@ -929,6 +960,29 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             hx_progress_update(prog, done);
         }
         locate(r, ch, SG_FULL);
+        if (have_prof) {
+            /* the given parameterisation against the log: its own twins, no
+             * parameter uncertainty (nothing was fitted) */
+            twinset_t tp;
+            profile_model(&prof, ch, mean, &c->prof);
+            if (twinset_run(&c->prof, ch, &fc, &r->segs, c->q_full, S, o->seed + 7000u + 1000u * (uint32_t)ch, r->pl[ch],
+                            &tp) != 0) {
+                snprintf(err, err_size, "profile twin simulation failed on channel %s", sg_channel_name(ch));
+                free(x);
+                return -1;
+            }
+            for (g = 0; g < SG_NSEG; g++) {
+                if (sg_compare(&r->pl[ch][g], r->real[ch][g], tp.v[g], S, NULL, NULL, alpha, &c->cmp_prof[g]) != 0) {
+                    twinset_free(&tp);
+                    snprintf(err, err_size, "out of memory");
+                    free(x);
+                    return -1;
+                }
+            }
+            twinset_free(&tp);
+            c->have_prof = 1;
+            locate_into(r, ch, SG_FULL, &c->cmp_prof[SG_FULL], r->ploc, &r->nploc, sizeof r->ploc / sizeof r->ploc[0]);
+        }
         /* attribution on every channel: a candidate whose held-out gain is
          * significant reveals a gap the omnibus test is too blunt for */
         if (r->confident) {
@@ -1045,6 +1099,7 @@ void sg_result_free(sg_result_t *r)
             free(r->sh_final[ch][g]);
             sg_cmp_free(&r->ch[ch].cmp_final[g]);
             sg_cmp_free(&r->ch[ch].cmp[g]);
+            sg_cmp_free(&r->ch[ch].cmp_prof[g]);
         }
     }
     if (r->nav != NULL) {

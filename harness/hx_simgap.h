@@ -363,7 +363,9 @@ typedef struct {
     int max_steps;            /**< forward-selection steps (3) */
     int quiet;                /**< no progress */
     const char *cmd;          /**< command name for messages */
-    const char *profile;      /**< walk: baseline noise profile (NULL: from the stances) */
+    const char *profile;      /**< walk: baseline noise profile (NULL: from the stances); static: a given
+                                   white + AR(1) model compared with the log besides the fitted
+                                   baseline (a parameterisation check, e.g. the paper's Fig. 7) */
     int closed;               /**< walk: the walk ends where it started (drift check) */
 } sg_opts_t;
 
@@ -420,6 +422,9 @@ typedef struct {
     int gap_full;             /**< significant gap on the whole log with the baseline */
     int gap_hold;             /**< ... on the held-out segment */
     int gap;                  /**< a gap: either of the above, or an effect selected on held-out evidence */
+    int have_prof;            /**< static logs with --profile: the profile's model compared too */
+    sg_chmodel_t prof;        /**< the profile's white + AR(1) model of this channel (not fitted) */
+    sg_cmp_t cmp_prof[SG_NSEG]; /**< profile model twins vs real (no parameter uncertainty: given) */
 } sg_chres_t;
 
 /** Timing-domain result. */
@@ -463,6 +468,9 @@ typedef struct {
     size_t nloc;
     sg_loc_t loc[64];
     char verdict[32];         /**< none, explained, partly-explained, unexplained, too-short */
+    char prof_name[64];       /**< static logs with --profile: its name */
+    size_t nploc;
+    sg_loc_t ploc[64];        /**< where the profile's model misses the log (whole log) */
     double elapsed_s;
     void *nav;                /**< walk-domain result (hx_simgap_nav.h) */
 } sg_result_t;

@@ -178,6 +178,23 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
         cJSON_AddItemToArray(fm, effect_json(&c->final.e[i], ch));
     }
     cJSON_AddBoolToObject(att, "within_noise", c->within_noise);
+    if (c->have_prof) {
+        cJSON *pr = cJSON_AddObjectToObject(o, "profile"), *pg = cJSON_AddObjectToObject(pr, "gap"), *pm;
+        add_num(pr, "white_density", c->prof.e[0].p[0]);
+        add_num(pr, "ar1_sigma", c->prof.e[1].p[1]);
+        add_num(pr, "ar1_tau_s", c->prof.e[1].p[0]);
+        for (k = 0; k < SG_NSEG; k++) {
+            cJSON_AddItemToObject(pg, k_seg[k], cmp_json(&c->cmp_prof[k]));
+        }
+        pm = cJSON_AddArrayToObject(pr, "twin");
+        for (k = 0; k < (int)r->pl[ch][SG_FULL].n && c->cmp_prof[SG_FULL].z != NULL; k++) {
+            cJSON *po = cJSON_CreateObject();
+            add_num(po, "twin", c->cmp_prof[SG_FULL].twin_mean[k]);
+            add_num(po, "sd", c->cmp_prof[SG_FULL].sd_tot[k]);
+            add_num(po, "z", c->cmp_prof[SG_FULL].z[k]);
+            cJSON_AddItemToArray(pm, po);
+        }
+    }
     return o;
 }
 
@@ -235,6 +252,24 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
         a = cJSON_AddArrayToObject(root, "channels");
         for (ch = 0; ch < SG_NCH; ch++) {
             cJSON_AddItemToArray(a, channel_json(r, ch));
+        }
+    }
+    if (r->prof_name[0] != '\0') {
+        cJSON_AddStringToObject(root, "profile", r->prof_name);
+        a = cJSON_AddArrayToObject(root, "profile_locations");
+        for (i = 0; i < r->nploc; i++) {
+            const sg_loc_t *L = &r->ploc[i];
+            cJSON *lo = cJSON_CreateObject();
+            cJSON_AddStringToObject(lo, "channel", sg_channel_name(L->ch));
+            cJSON_AddStringToObject(lo, "domain", sg_domain_name(L->dom));
+            cJSON_AddStringToObject(lo, "segment", k_seg[L->seg]);
+            add_num(lo, "x_lo", L->x_lo);
+            add_num(lo, "x_hi", L->x_hi);
+            cJSON_AddStringToObject(lo, "x_unit", L->dom == SG_ALLAN ? "s" : (L->dom == SG_PSD ? "Hz" : "u"));
+            add_num(lo, "peak_z", L->peak_z);
+            add_num(lo, "ratio", L->ratio);
+            cJSON_AddNumberToObject(lo, "points", L->npts);
+            cJSON_AddItemToArray(a, lo);
         }
     }
     a = cJSON_AddArrayToObject(root, "locations");

@@ -39,9 +39,11 @@ static void block(FILE *gp, const char *name, const sg_result_t *r, int ch, int 
             v += (tw[(size_t)s * n + j] - m) * (tw[(size_t)s * n + j] - m);
         }
         v = sqrt(v / (S - 1));
-        /* values are ln AVAR / ln PSD: ADEV = exp(ln AVAR / 2) */
-        fprintf(gp, "%.6g %.6g %.6g %.6g %.6g %.6g\n", pl->p[j].x, exp(f * real[j]), exp(f * m), exp(f * (m - v)),
-                exp(f * (m + v)), exp(f * mf));
+        /* values are ln AVAR / ln PSD: ADEV = exp(ln AVAR / 2); column 7 the
+         * given profile's twin (--profile), NaN without */
+        fprintf(gp, "%.6g %.6g %.6g %.6g %.6g %.6g %.6g\n", pl->p[j].x, exp(f * real[j]), exp(f * m), exp(f * (m - v)),
+                exp(f * (m + v)), exp(f * mf),
+                r->ch[ch].have_prof ? exp(f * r->ch[ch].cmp_prof[SG_FULL].twin_mean[j]) : (double)NAN);
     }
     fprintf(gp, "EOD\n");
 }
@@ -74,8 +76,13 @@ static int plot_domain(const sg_result_t *r, const char *dir, const char *cmd, i
         fprintf(p.gp, "plot $%s using 1:4:5 with filledcurves fs transparent solid 0.25 lc rgb '#4060c0' title "
                       "'twin +-1 sd', $%s using 1:3 with lines lw 1.5 lc rgb '#4060c0' title 'baseline twin', "
                       "$%s using 1:6 with lines lw 1.5 dt 2 lc rgb '#20a040' title 'final model', $%s using 1:2 with "
-                      "points pt 7 ps 0.6 lc rgb '#c02020' title 'real'\n",
+                      "points pt 7 ps 0.6 lc rgb '#c02020' title 'real'",
                 nm, nm, nm, nm);
+        if (r->ch[ch].have_prof) {
+            fprintf(p.gp, ", $%s using 1:7 with lines lw 1.5 dt 4 lc rgb '#e08000' title 'profile %s'", nm,
+                    r->prof_name);
+        }
+        fprintf(p.gp, "\n");
     }
     fprintf(p.gp, "unset multiplot\n");
     return hx_plot_close(&p, cmd);

@@ -148,6 +148,39 @@ static void print_static(FILE *f, const sg_result_t *r)
                     L->ratio);
         }
     }
+    if (r->prof_name[0] != '\0') {
+        fprintf(f, "given model: profile %s (white + AR(1) as given, not fitted; %d seeds):\n", r->prof_name, r->S);
+        for (ch = 0; ch < SG_NCH; ch++) {
+            const sg_chres_t *c = &r->ch[ch];
+            char w[128], a[128];
+            if (!c->have_prof) {
+                continue;
+            }
+            sg_effect_text(w, sizeof w, ch, &c->prof.e[0]);
+            sg_effect_text(a, sizeof a, ch, &c->prof.e[1]);
+            fprintf(f, "  %s  %s, %s\n      whole log G %.3g (null %.2g, crit %.2g, max |z| %.1f)%s; held out G %.3g "
+                       "(crit %.2g)%s; the fitted baseline: whole log G %.3g\n",
+                    sg_channel_name(ch), w, a, c->cmp_prof[SG_FULL].G, c->cmp_prof[SG_FULL].null_mean,
+                    c->cmp_prof[SG_FULL].G_crit, c->cmp_prof[SG_FULL].maxz,
+                    c->cmp_prof[SG_FULL].significant ? " SIGNIFICANT" : "", c->cmp_prof[SG_HOLD].G,
+                    c->cmp_prof[SG_HOLD].G_crit, c->cmp_prof[SG_HOLD].significant ? " SIGNIFICANT" : "",
+                    c->cmp[SG_FULL].G);
+        }
+        if (r->nploc > 0) {
+            fprintf(f, "where the given model misses (whole log):\n");
+        }
+        for (k = 0; k < r->nploc; k++) {
+            const sg_loc_t *L = &r->ploc[k];
+            range_text(b, sizeof b, L);
+            if (L->dom == SG_LATTICE) {
+                fprintf(f, "  %s, %s: %.0f sigma above the profile's twin\n", ch_title(L->ch), b, L->peak_z);
+            } else {
+                fprintf(f, "  %s, %s %s, %.1f sigma %s the profile's twin (%s x%.3g)\n", ch_title(L->ch),
+                        dom_title(L->dom), b, fabs(L->peak_z), L->peak_z > 0 ? "above" : "below",
+                        L->dom == SG_ALLAN ? "ADEV" : "amplitude", L->ratio);
+            }
+        }
+    }
     for (ch = 0; ch < SG_NCH; ch++) {
         const sg_chres_t *c = &r->ch[ch];
         if (!c->active || c->nsteps == 0 || !(c->gap || c->step[0].ncand > 0)) {

@@ -62,6 +62,20 @@ expect 3 "unwritable JSON" "$H" simgap "$T/q.csv" --quiet --seeds 3 --max-effect
 expect 0 "domain given" "$H" simgap "$T/q.csv" --quiet --seeds 3 --max-effects 0 --static --json "$T/g.json"
 json "$T/g.json" 'j["log"]["domain_from"] == "option"' && ok "domain_from option" || bad "domain_from: $(cat "$T/pyerr")"
 
+# --profile on a static log: the given parameterisation is tested as is.
+# A log simulated with the MTx profile: the MTx model shows no gap, the
+# NavChip model (7x lower gyro noise) a gap on every channel, located in the
+# Allan and PSD domains; the fitted baseline has none either way
+"$H" sim --motion stand:300 --rate 100 --profile mtx --seed 5 --out "$T/m.csv" >/dev/null 2>&1 || bad "sim mtx"
+expect 0 "given profile, right" "$H" simgap "$T/m.csv" --quiet --seeds 8 --max-effects 0 --profile mtx --json "$T/m1.json"
+json "$T/m1.json" 'j["profile"] == "mtx" and not any(c["profile"]["gap"]["full"]["significant"] or c["gap"]["full"]["significant"] for c in j["channels"]) and j["profile_locations"] == []' &&
+    ok "the right profile explains the log" || bad "right profile: $(cat "$T/pyerr")"
+expect 0 "given profile, wrong" "$H" simgap "$T/m.csv" --quiet --seeds 8 --max-effects 0 --profile navchip --json "$T/m2.json" --plot "$T/mp"
+json "$T/m2.json" 'all(c["profile"]["gap"]["full"]["significant"] and c["profile"]["gap"]["held_out"]["significant"] and not c["gap"]["full"]["significant"] for c in j["channels"]) and {l["channel"] for l in j["profile_locations"] if l["domain"] == "allan" and l["ratio"] > 5} == {"gx", "gy", "gz"}' &&
+    ok "the wrong profile: gap on every channel, gyro ADEV x5+" || bad "wrong profile: $(cat "$T/pyerr")"
+grep -q "^where the given model misses" "$T/out" && ok "summary lists where the profile misses" || bad "profile summary"
+expect 1 "unknown profile" "$H" simgap "$T/m.csv" --quiet --seeds 3 --profile "$T/nope.profile"
+
 # a simulated walk (CSV): detected as a walk, the navigation domain reported
 # (innovations per stance, the filter's model gap kept apart from the sensor
 # verdict); a 12 s walk has too few held-out stances for a confident answer
