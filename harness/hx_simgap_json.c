@@ -382,6 +382,42 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
     }
     o = cJSON_AddObjectToObject(root, "verdict");
     cJSON_AddStringToObject(o, "answer", r->verdict);
+    /* every accepted effect of every domain, in the summary's order */
+    a = cJSON_AddArrayToObject(o, "effects");
+    for (ch = 0; ch < SG_NCH; ch++) {
+        const sg_chres_t *c = &r->ch[ch];
+        for (k = 0; k < c->nsel; k++) {
+            int m = sg_model_find(&c->final, c->sel_id[k]);
+            if (m >= 0) {
+                cJSON *eo = effect_json(&c->final.e[m], ch), *cl = cJSON_CreateArray();
+                cJSON_AddStringToObject(eo, "domain", "static");
+                cJSON_AddItemToArray(cl, cJSON_CreateString(sg_channel_name(ch)));
+                cJSON_AddItemToObject(eo, "channels", cl);
+                add_num(eo, "explained", c->sel_expl[k]);
+                cJSON_AddItemToArray(a, eo);
+            }
+        }
+    }
+    if (r->nav != NULL) {
+        sg_nav_verdict_json((const sg_nav_t *)r->nav, a);
+    }
+    if (r->tim.have && r->tim.significant) {
+        static const char *const tn[SG_TIM_NKIND] = { "duplicate", "dropout", "jitter" };
+        for (k = 0; k < SG_TIM_NKIND; k++) {
+            if (r->tim.sel[k]) {
+                cJSON *eo = cJSON_CreateObject(), *p = cJSON_AddObjectToObject(eo, "params");
+                cJSON_AddStringToObject(eo, "effect", tn[k]);
+                cJSON_AddStringToObject(eo, "domain", "timing");
+                cJSON_AddItemToObject(eo, "channels", cJSON_CreateArray());
+                if (k == SG_TIM_JITTER) {
+                    add_num(p, "stamp_s", r->tim.stamp_s);
+                } else {
+                    add_num(p, "prob", k == SG_TIM_DUP ? r->tim.dup_prob : r->tim.drop_prob);
+                }
+                cJSON_AddItemToArray(a, eo);
+            }
+        }
+    }
     add_num(root, "elapsed_s", r->elapsed_s);
     txt = cJSON_Print(root);
     cJSON_Delete(root);

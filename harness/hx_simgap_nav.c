@@ -1761,6 +1761,45 @@ static cJSON *cand_json(const navcand_t *cd)
     return o;
 }
 
+void sg_nav_verdict_text(const sg_nav_t *nv, FILE *f, int *first)
+{
+    int i;
+    char b[256];
+    for (i = 0; i < nv->nsel; i++) {
+        cand_text(b, sizeof b, &nv->sel[i]);
+        fprintf(f, "%s %s (walk: held-out stances)", *first ? ":" : ";", b);
+        *first = 0;
+    }
+}
+
+void sg_nav_verdict_json(const sg_nav_t *nv, cJSON *arr)
+{
+    int i, j;
+    for (i = 0; i < nv->nsel; i++) {
+        const navcand_t *cd = &nv->sel[i];
+        const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)cd->id);
+        cJSON *o = cJSON_CreateObject(), *ch = cJSON_AddArrayToObject(o, "channels"), *pa;
+        uint32_t seen = 0u;
+        cJSON_AddStringToObject(o, "effect", info != NULL ? info->name : "?");
+        cJSON_AddStringToObject(o, "domain", "nav");
+        for (j = 0; j < cd->npar; j++) {
+            if (!((seen >> cd->ch[j]) & 1u)) {
+                cJSON_AddItemToArray(ch, cJSON_CreateString(sg_channel_name(cd->ch[j])));
+                seen |= 1u << cd->ch[j];
+            }
+        }
+        pa = cJSON_AddArrayToObject(o, "params");
+        for (j = 0; j < cd->npar; j++) {
+            cJSON *p = cJSON_CreateObject();
+            cJSON_AddStringToObject(p, "channel", sg_channel_name(cd->ch[j]));
+            cJSON_AddStringToObject(p, "param", info != NULL ? info->params[cd->k[j]].name : "?");
+            add_num(p, "value", cd->val[j]);
+            cJSON_AddItemToArray(pa, p);
+        }
+        cJSON_AddItemToArray(arr, o);
+    }
+}
+
 cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r)
 {
     static const char *const segn[SG_NSEG] = { "full", "fit", "held_out" };

@@ -22,6 +22,12 @@ struct cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r);
 /** Plots of the walk domain into dir. 0, -1 (printed). */
 int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const char *cmd);
 
+/** The walk domain's selected effects on the verdict line ("; name (...)";
+ *  *first: no effect printed yet on the line). */
+void sg_nav_verdict_text(const sg_nav_t *nv, FILE *f, int *first);
+/** The walk domain's selected effects appended to a JSON array of
+ *  {effect, domain, channels, params[]} objects. */
+void sg_nav_verdict_json(const sg_nav_t *nv, struct cJSON *arr);
 /** Print the walk domain's part of the summary. */
 void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r);
 void sg_nav_free(sg_nav_t *nv);

@@ -285,6 +285,9 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
                 }
             }
         }
+        if (r->nav != NULL) {
+            sg_nav_verdict_text((const sg_nav_t *)r->nav, f, &first);
+        }
         if (r->tim.significant) {
             if (r->tim.sel[SG_TIM_DUP]) {
                 fprintf(f, "%s duplicate (prob %.3g)", first ? ":" : ";", r->tim.dup_prob);
