@@ -901,7 +901,7 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
         {
             double tlo = INFINITY, thi = 0.0;
             for (k = 0; k < thold.n; k++) {
-                double var = 1.0 / thold.w[k] - 0.003 * 0.003;
+                double var = 1.0 / thold.w[k] - SG_FIT_FLOOR * SG_FIT_FLOOR;
                 if (var <= 0.25) {
                     double tau = thold.m[k] / r->rate_hz;
                     tlo = tau < tlo ? tau : tlo;

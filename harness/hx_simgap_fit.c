@@ -268,8 +268,8 @@ void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate
         nu = fnav_allan_edf(fnav_allan_noise_alpha(type), pl->p[idx[j]].lag, pl->p[idx[j]].n_phase, 1) *
              (double)(pl->p[idx[j]].nblk > 1 ? pl->p[idx[j]].nblk : 1);
         var = nu > 0.0 ? (nu > 1e6 ? 2.0 / nu : gsl_sf_psi_1(0.5 * nu)) : 1.0;
-        /* 0.3 % model floor: the short-tau points' EDF reach 10^6 */
-        t->w[j] = 1.0 / (var + 0.003 * 0.003);
+        /* model floor (SG_FIT_FLOOR): the short-tau points' EDF reach 10^6 */
+        t->w[j] = 1.0 / (var + SG_FIT_FLOOR * SG_FIT_FLOOR);
     }
 }
 
