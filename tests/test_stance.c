@@ -453,6 +453,94 @@ static void test_gait_events(void **state)
     assert_int_equal(fs_at, 152);
 }
 
+/* The foot-strike search reads whole blocks of the jerk history through
+ * their maxima: over many strides of random swings (window positions at
+ * every phase of the blocks) it must give exactly the answer of the plain
+ * definition, the first sample of the event window before the stance whose
+ * jerk reaches half the window's largest, computed here from the samples. */
+#define FS_N 24000
+static fnav_real_t g_fs_acc[FS_N][3];
+static int64_t g_fs_t[FS_N];
+
+static void test_foot_strike_reference(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    fnav_stance_out_t o;
+    const double rate = 400.0;
+    long k = 0, n_out = 0, swing_end = 0;
+    int nfs = 0, phase_seen[FNAV_STANCE_JERK_BLOCK] = { 0 }, i;
+    (void)state;
+    c.rate_hz = (fnav_real_t)rate;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    g_lcg = 777u;
+    while (k < FS_N) {
+        double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+        long pos;
+        if (k >= swing_end + 160) {
+            /* a new swing of 0.4-0.6 s after 0.4 s of stance */
+            swing_end = k + 160 + (long)(80.0 * (jitter() + 1.0));
+        }
+        pos = k - (swing_end - 160 - 160);
+        if (k < swing_end && pos >= 160 && k > 200) {
+            w[1] = 4.0 + jitter();
+            f[0] = 3.0 * jitter();
+            f[2] = -k_g + 6.0 * jitter() + (jitter() > 0.9 ? 40.0 * jitter() : 0.0);
+        }
+        {
+            fnav_sample_t s = sample(k, rate, f, w);
+            assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        }
+        k++;
+        if (k == FS_N) {
+            fnav_stance_finish(&st);
+        }
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            assert_true(n_out < FS_N);
+            for (i = 0; i < 3; i++) {
+                g_fs_acc[n_out][i] = o.sample.accel_mps2[i];
+            }
+            g_fs_t[n_out] = o.sample.t_ns;
+            if (o.events & FNAV_STANCE_EV_FOOT_STRIKE) {
+                long k0 = -1, lo, j, kbest;
+                fnav_real_t jmax = FNAV_R(0.0), jk;
+                for (j = n_out; j >= 0; j--) {
+                    if (g_fs_t[j] == o.swing_t1_ns) {
+                        k0 = j;
+                        break;
+                    }
+                }
+                assert_true(k0 > 0);
+                lo = k0 - st.n_ev;
+                lo = lo < 0 ? 0 : lo;
+                kbest = k0;
+                for (j = lo; j < k0; j++) {
+                    jk = j == 0 ? FNAV_R(0.0)
+                                : fnav_vec3_norm(fnav_vec3_sub(fnav_vec3_from(g_fs_acc[j]), fnav_vec3_from(g_fs_acc[j - 1])));
+                    jmax = jk > jmax ? jk : jmax;
+                }
+                for (j = lo; j < k0; j++) {
+                    jk = j == 0 ? FNAV_R(0.0)
+                                : fnav_vec3_norm(fnav_vec3_sub(fnav_vec3_from(g_fs_acc[j]), fnav_vec3_from(g_fs_acc[j - 1])));
+                    if (jk >= FNAV_R(0.5) * jmax) {
+                        kbest = j;
+                        break;
+                    }
+                }
+                assert_true(o.fs_t_ns == g_fs_t[kbest]);
+                phase_seen[lo % FNAV_STANCE_JERK_BLOCK] = 1;
+                nfs++;
+            }
+            n_out++;
+        }
+    }
+    print_message("foot-strike events checked: %d\n", nfs);
+    assert_true(nfs >= 12);
+    for (i = 0; i < FNAV_STANCE_JERK_BLOCK; i++) {
+        assert_true(phase_seen[i] || nfs < 40); /* many strides: every block phase */
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -466,6 +554,7 @@ int main(void)
         cmocka_unit_test(test_adaptive_threshold),
         cmocka_unit_test(test_threshold_detector),
         cmocka_unit_test(test_gait_events),
+        cmocka_unit_test(test_foot_strike_reference),
     };
     return cmocka_run_group_tests_name("stance", tests, NULL, NULL);
 }

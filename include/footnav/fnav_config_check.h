@@ -18,8 +18,8 @@
 #error "FNAV_STANCE_MAX_WINDOW must be in 3..1024"
 #endif
 
-#if (FNAV_STANCE_EVENT_BUF < 8) || (FNAV_STANCE_EVENT_BUF > 4096)
-#error "FNAV_STANCE_EVENT_BUF must be in 8..4096"
+#if (FNAV_STANCE_EVENT_BUF < 8) || (FNAV_STANCE_EVENT_BUF > 4096) || (FNAV_STANCE_EVENT_BUF % 8 != 0)
+#error "FNAV_STANCE_EVENT_BUF must be a multiple of 8 in 8..4096"
 #endif
 
 #if (FNAV_ALLAN_MAX_LEVELS < 2) || (FNAV_ALLAN_MAX_LEVELS > 31)

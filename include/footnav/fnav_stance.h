@@ -52,6 +52,10 @@ extern "C" {
 /* FNAV_STANCE_EVENT_BUF (fnav_config.h): jerk history of the foot-strike
  * search, samples. */
 
+/** Jerk samples per block of the foot-strike search's block maxima
+ *  (FNAV_STANCE_EVENT_BUF is a multiple of it). */
+#define FNAV_STANCE_JERK_BLOCK 8
+
 /** Number of intervals used to estimate the rate when none is configured. */
 #define FNAV_STANCE_RATE_PROBE 32
 
@@ -129,10 +133,11 @@ typedef struct {
     int half;           /**< h = (W - 1) / 2 */
     fnav_real_t rate_hz; /**< rate in use, Hz */
     int floor_valid;       /**< a statistic entered the floor window */
-    fnav_real_t fw_blk[FNAV_STANCE_FLOOR_BLOCKS]; /**< minima of the completed blocks, log10 T */
+    fnav_real_t fw_blk[FNAV_STANCE_FLOOR_BLOCKS]; /**< minima of T in the completed blocks */
     int fw_nblk, fw_head;  /**< completed blocks kept, next slot */
     fnav_real_t fw_cur;    /**< minimum of the block being filled */
     long fw_fill, fw_len;  /**< samples in it, samples per block */
+    fnav_real_t margin_ratio; /**< 10^margin_dec */
     /* segmentation */
     int seg;            /**< 1 stance, 0 swing */
     long run;           /**< length of the current run of raw decisions, samples */
@@ -150,6 +155,7 @@ typedef struct {
     /* foot-strike search: jerk history of the newest decisions */
     fnav_real_t jerk[FNAV_STANCE_EVENT_BUF];     /**< |f_k - f_k-1|, m/s^2 */
     uint32_t jerk_t_us[FNAV_STANCE_EVENT_BUF];   /**< sample time, us modulo 2^32 */
+    fnav_real_t jerk_bmax[FNAV_STANCE_EVENT_BUF / FNAV_STANCE_JERK_BLOCK]; /**< largest jerk per block */
     int n_ev;           /**< event window, samples */
     int n_min_stance;   /**< shortest stance, samples */
     int n_min_swing;    /**< shortest swing, samples */

@@ -221,8 +221,9 @@ static void print_estimates(void)
 #define PROF_STANCE ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 4))
 #define PROF_UKF_PRED ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 5))
 #define PROF_UKF_STANCE ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 6))
-#define PROF_EMPTY ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 7))
-#define PROF_N (FNAV_CM_PROF_COUNT + 8)
+#define PROF_UKF_ZUPT ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 7))
+#define PROF_EMPTY ((fnav_cm_prof_id_t)(FNAV_CM_PROF_COUNT + 8))
+#define PROF_N (FNAV_CM_PROF_COUNT + 9)
 
 typedef struct {
     uint32_t begin;
@@ -320,6 +321,7 @@ static void ukf_replay_timed(const fnav_nav_frame_t *fr)
     prof_add(&g_prof[PROF_UKF_PRED], (a0 - a1) & 0xFFFFFFu);
     if (fr->flags & FNAV_FRAME_ZUPT) {
         prof_add(&g_prof[PROF_UKF_STANCE], (a0 - b1) & 0xFFFFFFu);
+        prof_add(&g_prof[PROF_UKF_ZUPT], (a1 - b1) & 0xFFFFFFu);
     }
 }
 #endif
@@ -497,6 +499,7 @@ static const char *const k_prof_name[PROF_N] = {
     "stance detector alone (push+pop)",
     "UKF step alone, prediction (every step)",
     "UKF step alone, prediction + ZUPT (stance)",
+    "stance update alone (ZUPT)",
     "empty mark pair",
 };
 
@@ -519,7 +522,7 @@ static void print_costs(uint64_t overhead10)
         fnav_cm_line_str(&l, "cost ");
         fnav_cm_line_str(&l, k_prof_name[i]);
         fnav_cm_line_str(&l, ": ");
-        if (!(built & 1u) && (i >= (int)PROF_NAV_NOOUT && i <= (int)PROF_UKF_STANCE)) {
+        if (!(built & 1u) && (i >= (int)PROF_NAV_NOOUT && i <= (int)PROF_UKF_ZUPT)) {
             continue; /* nothing to split without the filter */
         }
         if ((i == FNAV_CM_PROF_NAV && !(built & 1u)) || (i == FNAV_CM_PROF_ALLAN && !(built & 2u)) ||
