@@ -273,7 +273,7 @@ static void twinset_free(twinset_t *t)
  * fit segment: the sampling uncertainty of the fitted parameters, carried
  * into every point of every segment (a parametric bootstrap of the fit). */
 static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, const int *with, int nwith,
-                     const sg_evidence_t *ev, double tmax, twinset_t *t)
+                     const sg_evidence_t *ev, double tmax, int gfit, twinset_t *t)
 {
     const int S = r->S;
     const sg_plist_t *pl = r->pl[ch];
@@ -298,7 +298,7 @@ static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, cons
     for (s = 0; s < S; s++) {
         sg_table_t tb;
         sg_fit_t f;
-        sg_table_from(&pl[SG_FIT], t->v[SG_FIT] + (size_t)s * pl[SG_FIT].n, ch, fs, &r->segs, SG_FIT, &tb);
+        sg_table_from(&pl[gfit], t->v[gfit] + (size_t)s * pl[gfit].n, ch, fs, &r->segs, gfit, &tb);
         if (sg_fit_model(&tb, gen->mean, with, nwith, ev, tmax, &f) != 0) {
             for (g = 0; g < SG_NSEG; g++) {
                 for (j = 0; j < pl[g].n; j++) {
@@ -553,6 +553,56 @@ static double fit_tmax(const sg_result_t *r, int ch)
     return t / 4.0;
 }
 
+/* The second fold of a sandwich split: the candidate model (current
+ * effects plus one, ids `with`) fitted on the middle (table tm) and tested
+ * on the ends, which the first fold fitted on. The reference is the
+ * current model's twins (fitted on the ends, their refit shifts on the
+ * ends included, so twins taken as the real are treated as the real was);
+ * the candidate's twins share their seeds. Gives the score test's z on the
+ * ends and the ends' gap reduction. Returns 0, or -1 when the fold could
+ * not be computed. */
+static int fold_ends(sg_result_t *r, int ch, const sg_feat_cfg_t *fc, const sg_table_t *tm, const int *with,
+                     int nwith, double tmax, double alpha, uint32_t seed, const twinset_t *cur,
+                     const sg_cmp_t ccur[SG_NSEG], const sg_cand_t *cd, double *z, double *dG)
+{
+    const sg_chres_t *c = &r->ch[ch];
+    const int S = r->opts.seeds;
+    sg_fit_t f;
+    twinset_t ts;
+    sg_cmp_t cc;
+    double tr, tmn, tsd;
+    int k;
+    if (sg_fit_model(tm, c->baseline.mean, with, nwith, &c->ev, tmax, &f) != 0) {
+        return -1;
+    }
+    k = sg_model_find(&f.model, cd->id);
+    if (k < 0 || !(f.model.e[k].p[mag_index(cd->id)] != 0.0)) {
+        /* the middle shows none of it: no evidence from this fold */
+        *z = 0.0;
+        *dG = 0.0;
+        return 0;
+    }
+    if (twinset_run(&f.model, ch, fc, &r->segs, c->q_full, S, seed, r->pl[ch], &ts) != 0) {
+        return -1;
+    }
+    if (param_var(r, ch, &f.model, with, nwith, &c->ev, tmax, SG_HOLD, &ts) != 0) {
+        twinset_free(&ts);
+        return -1;
+    }
+    memset(&cc, 0, sizeof cc);
+    if (sg_compare(&r->pl[ch][SG_FIT], r->real[ch][SG_FIT], ts.v[SG_FIT], S, ts.vx[SG_FIT], ts.sh[SG_FIT], alpha,
+                   &cc) != 0) {
+        twinset_free(&ts);
+        return -1;
+    }
+    *dG = ccur[SG_FIT].G - cc.G;
+    *z = sg_score_test(&r->pl[ch][SG_FIT], r->real[ch][SG_FIT], &ccur[SG_FIT], cur->v[SG_FIT], cur->sh[SG_FIT],
+                       ts.v[SG_FIT], S, &tr, &tmn, &tsd);
+    sg_cmp_free(&cc);
+    twinset_free(&ts);
+    return 0;
+}
+
 /* Forward selection on one channel. */
 static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_t *fc, const sg_table_t *tab,
                      double alpha, hx_progress_t *prog, double *pdone)
@@ -597,6 +647,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
         twinset_t bestset;
         sg_cmp_t bestcmp[SG_NSEG];
         sg_fit_t curfit;
+        sg_table_t tabm;
         memset(st, 0, sizeof *st);
         memset(&bestset, 0, sizeof bestset);
         memset(bestcmp, 0, sizeof bestcmp);
@@ -607,6 +658,9 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             break;
         }
         (void)zacc;
+        if (r->segs.sandwich) {
+            sg_table_from(&r->pl[ch][SG_HOLD], r->real[ch][SG_HOLD], ch, r->rate_hz, &r->segs, SG_HOLD, &tabm);
+        }
         if (sg_fit_model(tab, c->baseline.mean, with, nwith, &c->ev, tmax, &curfit) != 0) {
             break;
         }
@@ -672,7 +726,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             if (twinset_run(&f.model, ch, fc, &r->segs, c->q_full, S, seed, r->pl[ch], &ts) != 0) {
                 continue;
             }
-            if (param_var(r, ch, &f.model, w2, nwith + 1, &c->ev, tmax, &ts) != 0) {
+            if (param_var(r, ch, &f.model, w2, nwith + 1, &c->ev, tmax, SG_FIT, &ts) != 0) {
                 twinset_free(&ts);
                 continue;
             }
@@ -699,6 +753,18 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             }
             dG = ccur[SG_HOLD].G - cd->G_hold;
             cd->dG_hold = dG;
+            cd->z_mid = cd->z_delta;
+            cd->z_ends = cd->dG_ends = (double)NAN;
+            if (r->segs.sandwich) {
+                /* second fold: fit on the middle, held out the ends */
+                double zb = 0.0, dGb = 0.0;
+                if (fold_ends(r, ch, fc, &tabm, w2, nwith + 1, tmax, alpha, seed, &cur, ccur, cd, &zb, &dGb) == 0) {
+                    cd->z_ends = zb;
+                    cd->dG_ends = dGb;
+                    cd->z_delta = (cd->z_mid + zb) / sqrt(2.0);
+                    dG += dGb;
+                }
+            }
             if (prog != NULL) {
                 *pdone += 1.0;
                 hx_progress_update(prog, *pdone);
@@ -938,7 +1004,7 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             free(x);
             return -1;
         }
-        if (param_var(r, ch, &c->baseline, NULL, 0, &c->ev, tmax, &ts) != 0) {
+        if (param_var(r, ch, &c->baseline, NULL, 0, &c->ev, tmax, SG_FIT, &ts) != 0) {
             snprintf(err, err_size, "out of memory");
             free(x);
             return -1;

@@ -396,7 +396,11 @@ typedef struct {
     double dG_hold;           /**< held-out gap reduction of the real */
     double t_hold;            /**< score statistic: the held-out deviation projected on the effect's signature */
     double t_null_mean, t_null_sd; /**< ... of the twins taken as real (no effect): its null distribution */
-    double z_delta;           /**< (t_hold - null mean) / null sd: significance of the effect on held-out data */
+    double z_delta;           /**< significance of the effect on held-out data: z_mid, or with a sandwich
+                                   split (z_mid + z_ends) / sqrt 2 (both folds, Stouffer) */
+    double z_mid;             /**< (t_hold - null mean) / null sd: fitted on the ends, held out the middle */
+    double z_ends;            /**< the same, fitted on the middle, held out the ends (NaN: no second fold) */
+    double dG_ends;           /**< the ends' gap reduction in the second fold (NaN: none) */
 } sg_cand_t;
 
 /** One forward-selection step of a channel. */

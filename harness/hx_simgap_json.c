@@ -152,6 +152,9 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
                 add_num(co, "score_null_mean", cd->t_null_mean);
                 add_num(co, "score_null_sd", cd->t_null_sd);
                 add_num(co, "z", cd->z_delta);
+                add_num(co, "z_held_out_middle", cd->z_mid);
+                add_num(co, "z_held_out_ends", cd->z_ends);
+                add_num(co, "dG_held_out_ends", cd->dG_ends);
                 add_num(co, "explained", cd->expl_hold);
                 add_num(co, "explained_lo", cd->expl_lo);
                 add_num(co, "explained_hi", cd->expl_hi);

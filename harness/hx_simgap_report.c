@@ -204,9 +204,13 @@ static void print_static(FILE *f, const sg_result_t *r)
                     } else {
                         snprintf(ex, sizeof ex, "no held-out excess to explain");
                     }
-                    fprintf(f, "  step %d %c %-58s fit dQ %.1f; held out: G %.3g -> %.3g, score %+.1f sigma, %s\n",
+                    char zf[96] = "";
+                    if (cd->z_ends == cd->z_ends) {
+                        snprintf(zf, sizeof zf, " (middle %+.1f, ends %+.1f)", cd->z_mid, cd->z_ends);
+                    }
+                    fprintf(f, "  step %d %c %-58s fit dQ %.1f; held out: G %.3g -> %.3g, score %+.1f sigma%s, %s\n",
                             i + 1, j == st->selected ? '*' : ' ', b, cd->dQ_fit, st->G_hold_before, cd->G_hold,
-                            cd->z_delta, ex);
+                            cd->z_delta, zf, ex);
                 } else {
                     fprintf(f, "  step %d   %-58s fit dQ %.1f; not simulated\n", i + 1, b, cd->dQ_fit);
                 }
