@@ -765,6 +765,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
                     dG += dGb;
                 }
             }
+            cd->dG_rank = dG;
             if (prog != NULL) {
                 *pdone += 1.0;
                 hx_progress_update(prog, *pdone);

@@ -401,6 +401,8 @@ typedef struct {
     double z_mid;             /**< (t_hold - null mean) / null sd: fitted on the ends, held out the middle */
     double z_ends;            /**< the same, fitted on the middle, held out the ends (NaN: no second fold) */
     double dG_ends;           /**< the ends' gap reduction in the second fold (NaN: none) */
+    double dG_rank;           /**< held-out gap reduction that ranks effects: dG_hold, plus dG_ends with a
+                                   second fold */
 } sg_cand_t;
 
 /** One forward-selection step of a channel. */

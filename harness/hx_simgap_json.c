@@ -348,7 +348,7 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
                     if (!found) {
                         ids[ne++] = cd->id;
                     }
-                    score[cd->id] += cd->dG_hold;
+                    score[cd->id] += cd->dG_rank;
                 }
             }
         }

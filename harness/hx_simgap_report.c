@@ -283,8 +283,13 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
                 int k = sg_model_find(m, r->ch[ch].sel_id[i]);
                 if (k >= 0) {
                     sg_effect_text(b, sizeof b, ch, &m->e[k]);
-                    fprintf(f, "%s %s on %s (%.0f %% of the held-out excess)", first ? ":" : ";", b,
-                            sg_channel_name(ch), 100.0 * r->ch[ch].sel_expl[i]);
+                    if (r->ch[ch].sel_expl[i] == r->ch[ch].sel_expl[i]) {
+                        fprintf(f, "%s %s on %s (%.0f %% of the held-out excess)", first ? ":" : ";", b,
+                                sg_channel_name(ch), 100.0 * r->ch[ch].sel_expl[i]);
+                    } else {
+                        fprintf(f, "%s %s on %s (no excess in the held-out middle to explain)", first ? ":" : ";",
+                                b, sg_channel_name(ch));
+                    }
                     first = 0;
                 }
             }

@@ -391,7 +391,7 @@ static void score(const sg_result_t *r, sgv_case_t *cs)
                 const sg_cand_t *cd = &st->cand[st->selected];
                 int ti = table_index(cd->id, cd->id == FNAV_EFFECT_QUANT && cd->eff.p[1] != 0.0);
                 if (ti >= 0) {
-                    double d = st->G_hold_before - cd->G_hold;
+                    double d = cd->dG_rank; /* both folds' held-out reductions */
                     sc[ti] += d > 0.0 ? d : 1e-9;
                 }
             }

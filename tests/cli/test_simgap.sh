@@ -55,6 +55,8 @@ json "$T/q.json" '[c["channel"] for c in j["channels"] if c["gap_significant"]] 
     ok "gap located on gz, lattice domain" || bad "locations: $(cat "$T/pyerr")"
 json "$T/q.json" 'all(c["attribution"]["within_noise"] for c in j["channels"])' &&
     ok "remaining gap within noise on every channel" || bad "within noise: $(cat "$T/pyerr")"
+json "$T/q.json" 'j["split"]["method"].startswith("sandwich") and all(abs(cd["z"] - (cd["z_held_out_middle"] + cd["z_held_out_ends"]) / 2 ** 0.5) < 1e-6 * (1 + abs(cd["z"])) for c in j["channels"] for s in c["attribution"]["steps"] for cd in s["candidates"] if cd["simulated"] and cd["z_held_out_ends"] is not None) and any(cd["effect"] == "quant" and cd["selected"] and cd["z_held_out_ends"] is not None and cd["z_held_out_middle"] > 0 and cd["z_held_out_ends"] > 0 for s in j["channels"][5]["attribution"]["steps"] for cd in s["candidates"])' &&
+    ok "both folds scored: z combines middle and ends, quant significant on both" || bad "two folds: $(cat "$T/pyerr")"
 [ -s "$T/qp/allan.png" ] && [ -s "$T/qp/psd.png" ] && ok "plots written" || bad "plots: $(ls "$T/qp" 2>&1)"
 expect 3 "unwritable JSON" "$H" simgap "$T/q.csv" --quiet --seeds 3 --max-effects 0 --json /nonexistent/dir/q.json
 
