@@ -767,7 +767,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             }
             cd->dG_rank = dG;
             if (prog != NULL) {
-                *pdone += 1.0;
+                *pdone += cd->z_ends == cd->z_ends ? 2.0 : 1.0;
                 hx_progress_update(prog, *pdone);
             }
             /* accepted only with a held-out gain beyond what twins without
@@ -936,7 +936,9 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
         return -1;
     }
     if (prog != NULL) {
-        hx_progress_start(prog, "simgap", (double)SG_NCH * (1.0 + 4.0));
+        /* a baseline and about four candidates per channel, each simulated
+         * twice with the sandwich split's second fold */
+        hx_progress_start(prog, "simgap", (double)SG_NCH * (1.0 + 4.0 * (r->segs.sandwich ? 2.0 : 1.0)));
     }
     r->confident = 1;
     for (ch = 0; ch < SG_NCH; ch++) {
