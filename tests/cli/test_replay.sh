@@ -107,7 +107,7 @@ if [ -n "$D" ]; then
     rows=$(($(wc -l < "$T/t31.csv") - 1))
     if [ "$rows" -eq 16785 ]; then pass "every good sample replayed ($rows)"; else fail "truncated log rows $rows, expected 16785"; fi
     expect_exit 0 "eval --help" "$H" eval --help
-    expect_exit 0 "eval (no experiments)" "$H" eval --no-experiments --out "$T/results.md" --json "$T/e.json"
+    expect_exit 0 "eval (no experiments)" "$H" eval --no-experiments --data "$D" --out "$T/results.md" --json "$T/e.json"
     for s in "openshoe_gx2" "xio_ngimu_gait" "own_3dmgx5_footprints" "vicon_3dmgx3" "ipol_gait_xsens" "## Targets"; do
         if grep -q "$s" "$T/results.md"; then pass "results.md has $s"; else fail "results.md lacks $s"; fi
     done
