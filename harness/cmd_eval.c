@@ -44,21 +44,6 @@ typedef struct {
     cJSON *json;
 } ev_t;
 
-static int cmp_d(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    if (n <= 0) {
-        return (double)NAN;
-    }
-    qsort(v, (size_t)n, sizeof *v, cmp_d);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 static double maxv(const double *v, int n)
 {
     double m = -INFINITY;
@@ -75,7 +60,7 @@ static double pct_rank(double *v, int n, double p)
     if (n <= 0) {
         return (double)NAN;
     }
-    qsort(v, (size_t)n, sizeof *v, cmp_d);
+    qsort(v, (size_t)n, sizeof *v, hx_cmp_double);
     k = (int)ceil(p / 100.0 * n) - 1;
     return v[k < 0 ? 0 : (k >= n ? n - 1 : k)];
 }
@@ -180,11 +165,11 @@ static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fna
     }
     out->n = k;
     out->d3_pct_max = maxv(d3, k);
-    out->h_pct_med = median(h, k);
-    out->d3_pct_med = median(d3, k);
-    out->vert_med = median(vz, k);
-    out->h_m_med = median(hm, k);
-    out->path_med = median(pm, k);
+    out->h_pct_med = hx_median(h, k);
+    out->d3_pct_med = hx_median(d3, k);
+    out->vert_med = hx_median(vz, k);
+    out->h_m_med = hx_median(hm, k);
+    out->path_med = hx_median(pm, k);
 }
 
 /* ------------------------------------------------------------ strides */
@@ -258,7 +243,7 @@ static int stride_errors(const hx_traj_t *t, const gcp_t *g, stride_res_t *r)
     }
     r->strides = n;
     r->rms = n > 0 ? sqrt(se2 / n) : (double)NAN;
-    r->stride_err_med = median(e, n);
+    r->stride_err_med = hx_median(e, n);
     r->final_pct = r->path > 0.0 ? 100.0 * r->final_err / r->path : (double)NAN;
     return n > 1 ? 0 : -1;
 }
@@ -321,9 +306,9 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
     }
     out->n = k;
     out->final_pct_mean = k > 0 ? sum / k : (double)NAN;
-    out->final_pct_med = median(fpct, k);
-    out->stride_med = median(smed, k);
-    out->final_m_med = median(fm, k);
+    out->final_pct_med = hx_median(fpct, k);
+    out->stride_med = hx_median(smed, k);
+    out->final_m_med = hx_median(fm, k);
 }
 
 /* Vicon: every stride of the trials against the motion-capture position at
@@ -424,9 +409,9 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         hx_traj_free(&t);
     }
     out->n = k;
-    out->stride_med = median(med, k);
-    out->rms_med = median(rms, k);
-    out->final_med = median(fin, k);
+    out->stride_med = hx_median(med, k);
+    out->rms_med = hx_median(rms, k);
+    out->final_med = hx_median(fin, k);
 }
 
 /* ------------------------------------------------------------ stance (IPOL) */
@@ -659,8 +644,8 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             }
             if (write) {
                 fprintf(ev->md, "| %.*s | %s | %d | %d | %d | %d | %.1f | %.1f |\n", (int)(l - 5), names[i],
-                        foot ? "right" : "left", exp_n, det_n, miss, spur_n, median(tfo, trial_fo),
-                        median(tfs, trial_fs));
+                        foot ? "right" : "left", exp_n, det_n, miss, spur_n, hx_median(tfo, trial_fo),
+                        hx_median(tfs, trial_fs));
             }
             out->expected += exp_n;
             out->detected += det_n;
@@ -670,12 +655,12 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             hx_log_free(&log);
         }
     }
-    out->fo_bias = median(fo_e, out->n_fo);
-    out->fs_bias = median(fs_e, out->n_fs);
+    out->fo_bias = hx_median(fo_e, out->n_fo);
+    out->fs_bias = hx_median(fs_e, out->n_fs);
     out->fo_p90 = pct_rank(fo_a, out->n_fo, 90.0);
     out->fs_p90 = pct_rank(fs_a, out->n_fs, 90.0);
-    out->fo_med = median(fo_a, out->n_fo);
-    out->fs_med = median(fs_a, out->n_fs);
+    out->fo_med = hx_median(fo_a, out->n_fo);
+    out->fs_med = hx_median(fs_a, out->n_fs);
 }
 
 /* ------------------------------------------------------------ main */

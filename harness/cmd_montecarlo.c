@@ -47,11 +47,6 @@ static const hx_spec_t k_spec = {
 
 /* ------------------------------------------------------------ statistics */
 
-static int cmp_d(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 typedef struct {
     int n;
@@ -75,7 +70,7 @@ static stats_t stats_of(const double *x, int n)
     s.n = k;
     if (k > 0) {
         double sum = 0.0, sq = 0.0;
-        qsort(v, (size_t)k, sizeof *v, cmp_d);
+        qsort(v, (size_t)k, sizeof *v, hx_cmp_double);
         for (i = 0; i < k; i++) {
             sum += v[i];
             sq += v[i] * v[i];

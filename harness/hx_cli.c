@@ -377,3 +377,18 @@ const char *hx_fmt_g(char *buf, size_t size, double v)
     }
     return buf;
 }
+
+int hx_cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+double hx_median(double *v, int n)
+{
+    if (n <= 0) {
+        return (double)NAN;
+    }
+    qsort(v, (size_t)n, sizeof *v, hx_cmp_double);
+    return (n % 2) ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}

@@ -119,6 +119,12 @@ void hx_progress_end(hx_progress_t *p);
 /** Seconds since an arbitrary origin (monotonic). */
 double hx_now_s(void);
 
+/** qsort comparator of doubles, ascending. */
+int hx_cmp_double(const void *a, const void *b);
+
+/** Median of v[0..n-1] (sorts v in place); NaN when n <= 0. */
+double hx_median(double *v, int n);
+
 /* ------------------------------------------------------------ plots */
 
 /** A gnuplot session writing one PNG. */

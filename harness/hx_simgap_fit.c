@@ -3,6 +3,7 @@
  * the special estimators of effects whose signature is not (only) in the
  * Allan curve: value lattice, spectral line, bias steps (hx_simgap.h,
  * docs/simgap.md). */
+#include "hx_cli.h"
 #include "hx_simgap.h"
 
 #include <gsl/gsl_cdf.h>
@@ -762,11 +763,6 @@ static double dft_hann(const double *x, size_t n, double f, double *re, double *
     return (*re) * (*re) + (*im) * (*im);
 }
 
-static int cmp_d(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 /* Strongest spectral line of x (mean removed), by a Hann periodogram
  * against the local median, refined by maximising the DFT. */
@@ -818,7 +814,7 @@ static void find_tone(const double *x, size_t n, double fs, sg_evidence_t *ev)
             for (i = 0; i < blk; i++) {
                 med[i] = tmp[k0 + i];
             }
-            qsort(med, blk, sizeof med[0], cmp_d);
+            qsort(med, blk, sizeof med[0], hx_cmp_double);
             md = 0.5 * (med[blk / 2 - 1] + med[blk / 2]);
             for (i = 0; i < blk && md > 0.0; i++) {
                 double r = tmp[k0 + i] / md;
@@ -918,7 +914,7 @@ static void find_steps(const double *x, size_t n, sg_evidence_t *ev)
             ad[nd] = fabs(d[nd]);
             nd++;
         }
-        qsort(ad, nd, sizeof *ad, cmp_d);
+        qsort(ad, nd, sizeof *ad, hx_cmp_double);
         mad = 1.4826 * ad[nd / 2];
         thr = gsl_cdf_ugaussian_Qinv(0.0025 / (double)nd);
         for (i = 0; i < nd && mad > 0.0; i++) {

@@ -21,6 +21,22 @@ static void add_num(cJSON *o, const char *k, double v)
 }
 
 /* {"name": value, ...} of an effect's parameters, and their standard errors. */
+/* One place where the gap is significant. */
+static cJSON *loc_json(const sg_loc_t *L)
+{
+    cJSON *lo = cJSON_CreateObject();
+    cJSON_AddStringToObject(lo, "channel", sg_channel_name(L->ch));
+    cJSON_AddStringToObject(lo, "domain", sg_domain_name(L->dom));
+    cJSON_AddStringToObject(lo, "segment", k_seg[L->seg]);
+    add_num(lo, "x_lo", L->x_lo);
+    add_num(lo, "x_hi", L->x_hi);
+    cJSON_AddStringToObject(lo, "x_unit", (L->dom == SG_ALLAN || L->dom == SG_NAV) ? "s" : (L->dom == SG_PSD ? "Hz" : "u"));
+    add_num(lo, "peak_z", L->peak_z);
+    add_num(lo, "ratio", L->ratio);
+    cJSON_AddNumberToObject(lo, "points", L->npts);
+    return lo;
+}
+
 static cJSON *effect_json(const sg_effect_t *e, int ch)
 {
     const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)e->id);
@@ -261,34 +277,12 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
         cJSON_AddStringToObject(root, "profile", r->prof_name);
         a = cJSON_AddArrayToObject(root, "profile_locations");
         for (i = 0; i < r->nploc; i++) {
-            const sg_loc_t *L = &r->ploc[i];
-            cJSON *lo = cJSON_CreateObject();
-            cJSON_AddStringToObject(lo, "channel", sg_channel_name(L->ch));
-            cJSON_AddStringToObject(lo, "domain", sg_domain_name(L->dom));
-            cJSON_AddStringToObject(lo, "segment", k_seg[L->seg]);
-            add_num(lo, "x_lo", L->x_lo);
-            add_num(lo, "x_hi", L->x_hi);
-            cJSON_AddStringToObject(lo, "x_unit", L->dom == SG_ALLAN ? "s" : (L->dom == SG_PSD ? "Hz" : "u"));
-            add_num(lo, "peak_z", L->peak_z);
-            add_num(lo, "ratio", L->ratio);
-            cJSON_AddNumberToObject(lo, "points", L->npts);
-            cJSON_AddItemToArray(a, lo);
+            cJSON_AddItemToArray(a, loc_json(&r->ploc[i]));
         }
     }
     a = cJSON_AddArrayToObject(root, "locations");
     for (i = 0; i < r->nloc; i++) {
-        const sg_loc_t *L = &r->loc[i];
-        cJSON *lo = cJSON_CreateObject();
-        cJSON_AddStringToObject(lo, "channel", sg_channel_name(L->ch));
-        cJSON_AddStringToObject(lo, "domain", sg_domain_name(L->dom));
-        cJSON_AddStringToObject(lo, "segment", k_seg[L->seg]);
-        add_num(lo, "x_lo", L->x_lo);
-        add_num(lo, "x_hi", L->x_hi);
-        cJSON_AddStringToObject(lo, "x_unit", L->dom == SG_ALLAN ? "s" : (L->dom == SG_PSD ? "Hz" : (L->dom == SG_NAV ? "s" : "u")));
-        add_num(lo, "peak_z", L->peak_z);
-        add_num(lo, "ratio", L->ratio);
-        cJSON_AddNumberToObject(lo, "points", L->npts);
-        cJSON_AddItemToArray(a, lo);
+        cJSON_AddItemToArray(a, loc_json(&r->loc[i]));
     }
     o = cJSON_AddObjectToObject(root, "timing");
     cJSON_AddBoolToObject(o, "has_stamps", r->tim.have);

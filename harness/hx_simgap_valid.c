@@ -361,20 +361,6 @@ static int table_index(int id, int shaped)
     return -2;
 }
 
-static int cmp_d(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    if (n <= 0) {
-        return (double)NAN;
-    }
-    qsort(v, (size_t)n, sizeof *v, cmp_d);
-    return (n % 2) ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /* Top-ranked effect of a result: the selected effect with the largest
  * held-out gap reduction summed over channels; timing effects by their z^2. */
@@ -463,7 +449,7 @@ static void score(const sg_result_t *r, sgv_case_t *cs)
         } else if (r->nav != NULL) {
             sg_nav_truth_errors((const sg_nav_t *)r->nav, E->id, cs->mask, cs->value, pe, &np, sh, &ns);
         }
-        cs->perr = median(pe, np);
+        cs->perr = hx_median(pe, np);
         {
             int j, m = 0;
             for (j = 0; j < ns; j++) {
@@ -471,7 +457,7 @@ static void score(const sg_result_t *r, sgv_case_t *cs)
                     sh[m++] = sh[j];
                 }
             }
-            cs->shrink = median(sh, m);
+            cs->shrink = hx_median(sh, m);
         }
     }
 }
@@ -721,7 +707,7 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
         fprintf(f, "%s%-7s%s%5d%s%4d/%-4d%s%3d/%-3d = %5.1f %% (%4.1f..%5.1f %%)%s%3d/%-3d / %.2f%s%3d/%-3d (%.2f)%s%3d/%-3d (%.2f)%s\n",
                 md ? "| " : "", k_cls[k], sep, a->n, sep, a->det, a->n, sep, a->top1, a->n, 100.0 * a->top1 / a->n,
                 100.0 * lo, 100.0 * hi, sep, a->loc_exact, a->n, a->jac / a->n, sep, a->pe_ok, a->pe_n,
-                median(a->pe_med_v, a->npe), sep, a->sh_ok, a->sh_n, median(a->sh_med_v, a->nsh), md ? " |" : "");
+                hx_median(a->pe_med_v, a->npe), sep, a->sh_ok, a->sh_n, hx_median(a->sh_med_v, a->nsh), md ? " |" : "");
     }
     if (md) {
         fprintf(f, "\nControls (no effect): ");
