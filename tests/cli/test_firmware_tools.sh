@@ -8,9 +8,7 @@
 set -u
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
-fails=0
-pass() { echo "ok   $1"; }
-fail() { echo "FAIL $1"; fails=$((fails + 1)); }
+. "$(dirname "$0")/lib.sh"
 CC=${ARM_CC:-arm-none-eabi-gcc}
 PY=${PYTHON:-/usr/bin/python3}
 if ! command -v "$CC" >/dev/null 2>&1; then

@@ -6,20 +6,7 @@ set -u
 H=${HARNESS:-bin/harness}
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
-fails=0
-pass() { echo "ok   $1"; }
-fail() { echo "FAIL $1"; fails=$((fails + 1)); }
-expect_exit() { # expected-code description command...
-    want=$1; what=$2; shift 2
-    "$@" >"$T/out" 2>"$T/err"; got=$?
-    if [ "$got" -eq "$want" ]; then pass "$what (exit $got)"; else fail "$what: exit $got, expected $want"; cat "$T/err"; fi
-}
-expect_err() { # pattern description: checks $T/err
-    if grep -q -- "$1" "$T/err"; then pass "$2"; else fail "$2: stderr lacks '$1'"; cat "$T/err"; fi
-}
-expect_out() {
-    if grep -q -- "$1" "$T/out"; then pass "$2"; else fail "$2: stdout lacks '$1'"; cat "$T/out"; fi
-}
+. "$(dirname "$0")/lib.sh"
 
 # --- usage
 expect_exit 0 "harness --help" "$H" --help

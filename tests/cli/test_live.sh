@@ -17,9 +17,7 @@ SOCAT=""
 LIVE=""
 STREAM=""
 LIMIT=120 # seconds for any single harness run (ASan builds are slow)
-fails=0
-pass() { echo "ok   $1"; }
-fail() { echo "FAIL $1"; fails=$((fails + 1)); }
+. "$(dirname "$0")/lib.sh"
 cleanup() {
     for p in $STREAM $LIVE $SOCAT; do kill "$p" 2>/dev/null; done
     for p in $STREAM $LIVE $SOCAT; do wait "$p" 2>/dev/null; done

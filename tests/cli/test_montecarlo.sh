@@ -6,17 +6,7 @@ set -u
 H=${HARNESS:-bin/harness}
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
-fails=0
-pass() { echo "ok   $1"; }
-fail() { echo "FAIL $1"; fails=$((fails + 1)); }
-expect_exit() { # expected-code description command...
-    want=$1; what=$2; shift 2
-    "$@" >"$T/out" 2>"$T/err"; got=$?
-    if [ "$got" -eq "$want" ]; then pass "$what (exit $got)"; else fail "$what: exit $got, expected $want"; cat "$T/err"; fi
-}
-expect_err() {
-    if grep -q -- "$1" "$T/err"; then pass "$2"; else fail "$2: stderr lacks '$1'"; cat "$T/err"; fi
-}
+. "$(dirname "$0")/lib.sh"
 
 expect_exit 0 "montecarlo --help" "$H" montecarlo --help
 expect_exit 2 "bad effect" "$H" montecarlo --effect wobble

@@ -8,9 +8,7 @@ set -u
 H=${HARNESS:-bin/harness}
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
-fails=0
-pass() { echo "ok   $1"; }
-fail() { echo "FAIL $1"; fails=$((fails + 1)); }
+. "$(dirname "$0")/lib.sh"
 
 "$H" sim --motion stand --duration 900 --rate 200 --profile mtx --seed 7 --out "$T/stand.bin" >/dev/null 2>"$T/err" \
     && pass "sim a 15-minute static MTx log" || { fail "sim"; cat "$T/err"; }

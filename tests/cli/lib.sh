@@ -1,0 +1,17 @@
+# Sourced by the CLI tests after they set T (their scratch directory): a
+# tally of passed and failed checks, and checks of a command's exit status,
+# standard error and standard output (kept in $T/err and $T/out).
+fails=0
+pass() { echo "ok   $1"; }
+fail() { echo "FAIL $1"; fails=$((fails + 1)); }
+expect_exit() { # expected-code description command...
+    want=$1; what=$2; shift 2
+    "$@" >"$T/out" 2>"$T/err"; got=$?
+    if [ "$got" -eq "$want" ]; then pass "$what (exit $got)"; else fail "$what: exit $got, expected $want"; cat "$T/err"; fi
+}
+expect_err() { # pattern description: checks $T/err
+    if grep -q -- "$1" "$T/err"; then pass "$2"; else fail "$2: stderr lacks '$1'"; cat "$T/err"; fi
+}
+expect_out() { # pattern description: checks $T/out
+    if grep -q -- "$1" "$T/out"; then pass "$2"; else fail "$2: stdout lacks '$1'"; cat "$T/out"; fi
+}
