@@ -5,70 +5,64 @@ H=${HARNESS:-bin/harness}
 PY=${PYTHON:-/usr/bin/python3}
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
-fail=0
-ok() { echo "ok   $1"; }
-bad() { echo "FAIL $1"; fail=1; }
-expect() { # expect CODE NAME CMD...
-    want=$1; name=$2; shift 2
-    "$@" >"$T/out" 2>"$T/err"; got=$?
-    if [ "$got" -eq "$want" ]; then ok "$name (exit $got)"; else bad "$name: exit $got, wanted $want"; cat "$T/err"; fi
-}
+. "$(dirname "$0")/lib.sh"
 data() { # data REL -> path or empty
     for root in "${FNAV_DATA_DIR:-}" ../shared/data /work/shared/data; do
         [ -n "$root" ] && [ -f "$root/$1" ] && { echo "$root/$1"; return; }
     done
 }
 
-expect 2 "no input" "$H" allan
-expect 2 "series without rate" "$H" allan --series /dev/null
-expect 2 "log and series" "$H" allan x.csv --series y.txt --rate 1
-expect 2 "bad per-octave" "$H" allan --series x --rate 1 --per-octave 3
-expect 1 "missing file" "$H" allan "$T/nope.csv"
-expect 1 "missing series" "$H" allan --series "$T/nope.txt" --rate 1
-expect 0 "paper tables" "$H" allan --paper-tables
-grep -q "NavChip (IV)" "$T/out" && ok "paper tables list NavChip" || bad "paper tables output"
+expect_exit 2 "no input" "$H" allan
+expect_exit 2 "series without rate" "$H" allan --series /dev/null
+expect_exit 2 "log and series" "$H" allan x.csv --series y.txt --rate 1
+expect_exit 2 "bad per-octave" "$H" allan --series x --rate 1 --per-octave 3
+expect_exit 1 "missing file" "$H" allan "$T/nope.csv"
+expect_exit 1 "missing series" "$H" allan --series "$T/nope.txt" --rate 1
+expect_exit 0 "paper tables" "$H" allan --paper-tables
+grep -q "NavChip (IV)" "$T/out" && pass "paper tables list NavChip" || fail "paper tables output"
 
 # a series with a bad line: the numbers before it are analysed, outputs written, exit 1
 awk 'BEGIN { s = 1; for (i = 0; i < 3000; i++) { s = (s * 1103515245 + 12345) % 2147483648; print s / 2147483648.0 } print "oops" }' >"$T/bad.txt"
-expect 1 "bad line in series" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --out "$T/bad.csv"
-grep -q "bad.txt:3001: not a number" "$T/err" && ok "bad line reported with its number" || bad "bad line message"
-[ "$(grep -c '^series,' "$T/bad.csv")" -gt 10 ] && ok "table written before the error" || bad "table before error"
-expect 3 "unwritable output" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --quiet --out /nonexistent/dir/t.csv
+expect_exit 1 "bad line in series" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --out "$T/bad.csv"
+grep -q "bad.txt:3001: not a number" "$T/err" && pass "bad line reported with its number" || fail "bad line message"
+[ "$(grep -c '^series,' "$T/bad.csv")" -gt 10 ] && pass "table written before the error" || fail "table before error"
+expect_exit 3 "unwritable output" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --quiet --out /nonexistent/dir/t.csv
 
 # a log too short for an identification: tables and plot still written, no profile, exit 1
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 10; i++) printf "%.2f,0.1,0.2,9.8,0.01,0.02,0.0%d\n", i / 100, i }' >"$T/tiny.csv"
-expect 1 "too short for a profile" "$H" allan "$T/tiny.csv" --quiet --profile "$T/tiny.profile" --plot "$T/tiny.png"
-[ -s "$T/tiny.png" ] && [ ! -e "$T/tiny.profile" ] && ok "plot without profile" || bad "tiny outputs"
+expect_exit 1 "too short for a profile" "$H" allan "$T/tiny.csv" --quiet --profile "$T/tiny.profile" --plot "$T/tiny.png"
+[ -s "$T/tiny.png" ] && [ ! -e "$T/tiny.profile" ] && pass "plot without profile" || fail "tiny outputs"
 
 P=$(data allan_reference/phasedat/PHASE.DAT)
 if [ -n "$P" ]; then
-    expect 0 "PHASE.DAT as phase" "$H" allan --series "$P" --phase --rate 1 --per-octave 1 --no-sim \
+    expect_exit 0 "PHASE.DAT as phase" "$H" allan --series "$P" --phase --rate 1 --per-octave 1 --no-sim \
         --out "$T/p.csv" --json "$T/p.json"
     # Stable32: OADEV tau=1 0.29223 (999 terms), tau=128 0.027674 (745 terms)
     grep -q '^series,u,1,1,0,1,0.29223[0-9]*,' "$T/p.csv" && grep '^series,u,1,1,' "$T/p.csv" | grep -q ',999,' &&
-        ok "tau 1 matches Stable32" || bad "tau 1 row: $(grep '^series,u,1,1,' "$T/p.csv")"
+        pass "tau 1 matches Stable32" || fail "tau 1 row: $(grep '^series,u,1,1,' "$T/p.csv")"
     grep '^series,u,128,128,' "$T/p.csv" | awk -F, '{ d = $7 / 0.027674 - 1; exit !(d < 1e-4 && d > -1e-4 && $11 == 745) }' &&
-        ok "tau 128 matches Stable32" || bad "tau 128 row: $(grep '^series,u,128,128,' "$T/p.csv")"
+        pass "tau 128 matches Stable32" || fail "tau 128 row: $(grep '^series,u,128,128,' "$T/p.csv")"
     if "$PY" -c 'import json,sys; j=json.load(open(sys.argv[1])); assert j["samples"]==1000 and j["channels"][0]["table"]' "$T/p.json" 2>/dev/null; then
-        ok "JSON parses"
+        pass "JSON parses"
     else
-        bad "JSON"
+        fail "JSON"
     fi
-    expect 2 "profile from a series" "$H" allan --series "$P" --rate 1 --profile "$T/x.profile"
+    expect_exit 2 "profile from a series" "$H" allan --series "$P" --rate 1 --profile "$T/x.profile"
 else
     echo "SKIP PHASE.DAT tests (shared data not found; set FNAV_DATA_DIR)"
 fi
 
 A=$(data adis16405_static/adis16405_imu1_100Hz.csv.gz)
 if [ -n "$A" ]; then
-    expect 0 "ADIS log, all outputs" "$H" allan "$A" --sim-samples 100000 --quiet --profile "$T/a.profile" \
+    expect_exit 0 "ADIS log, all outputs" "$H" allan "$A" --sim-samples 100000 --quiet --profile "$T/a.profile" \
         --plot "$T/a.png" --json "$T/a.json" --out "$T/a.csv"
     grep -q "^format = footnav-profile 1" "$T/a.profile" && grep -q "^gyro_tau_s = " "$T/a.profile" &&
-        grep -q "^accel_bias_sigma_mps2 = " "$T/a.profile" && ok "profile written" || bad "profile content"
-    [ -s "$T/a.png" ] && ok "plot written" || bad "plot missing"
-    grep -q "corrected: LSQ fit" "$T/out" && ok "parameter table printed" || bad "parameter table"
-    expect 2 "profile needs six channels" "$H" allan "$A" --channels gx --profile "$T/b.profile"
+        grep -q "^accel_bias_sigma_mps2 = " "$T/a.profile" && pass "profile written" || fail "profile content"
+    [ -s "$T/a.png" ] && pass "plot written" || fail "plot missing"
+    grep -q "corrected: LSQ fit" "$T/out" && pass "parameter table printed" || fail "parameter table"
+    expect_exit 2 "profile needs six channels" "$H" allan "$A" --channels gx --profile "$T/b.profile"
 else
     echo "SKIP ADIS16405 tests (shared data not found; set FNAV_DATA_DIR)"
 fi
-exit $fail
+if [ "$fails" -ne 0 ]; then echo "test_allan.sh: $fails failure(s)"; exit 1; fi
+echo "test_allan.sh: all passed"

@@ -7,101 +7,95 @@ H=${HARNESS:-bin/harness}
 PY=${PYTHON:-/usr/bin/python3}
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
-fail=0
-ok() { echo "ok   $1"; }
-bad() { echo "FAIL $1"; fail=1; }
-expect() { # expect CODE NAME CMD...
-    want=$1; name=$2; shift 2
-    "$@" >"$T/out" 2>"$T/err"; got=$?
-    if [ "$got" -eq "$want" ]; then ok "$name (exit $got)"; else bad "$name: exit $got, wanted $want"; cat "$T/err"; fi
-}
+. "$(dirname "$0")/lib.sh"
 json() { # json FILE PYTHON-EXPRESSION-ON-j: passes when it is true
     "$PY" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' "$1" "$2" 2>"$T/pyerr"
 }
 
 # usage and input errors
-expect 2 "no input" "$H" simgap
-expect 2 "static and walk" "$H" simgap x.csv --static --walk
-expect 2 "too few seeds" "$H" simgap x.csv --seeds 1
-expect 2 "fit fraction out of range" "$H" simgap x.csv --fit-frac 0.95
-expect 1 "missing file" "$H" simgap "$T/nope.csv"
-expect 2 "validate: zero cases" "$H" simgap-validate --cases 0
-expect 2 "validate: bad magnitude range" "$H" simgap-validate --mag-range 3,1
-expect 2 "validate: static-only and walk-only" "$H" simgap-validate --static-only --walk-only
+expect_exit 2 "no input" "$H" simgap
+expect_exit 2 "static and walk" "$H" simgap x.csv --static --walk
+expect_exit 2 "too few seeds" "$H" simgap x.csv --seeds 1
+expect_exit 2 "fit fraction out of range" "$H" simgap x.csv --fit-frac 0.95
+expect_exit 1 "missing file" "$H" simgap "$T/nope.csv"
+expect_exit 2 "validate: zero cases" "$H" simgap-validate --cases 0
+expect_exit 2 "validate: bad magnitude range" "$H" simgap-validate --mag-range 3,1
+expect_exit 2 "validate: static-only and walk-only" "$H" simgap-validate --static-only --walk-only
 
 # a static log of 2 s: the held-out part cannot give tight Allan intervals
 # over a decade of tau -> "too short", exit 1, and the JSON says why
-"$H" sim --motion stand:2 --rate 100 --profile mtx --seed 2 --out "$T/short.csv" >/dev/null 2>&1 || bad "sim short"
-expect 1 "too short log" "$H" simgap "$T/short.csv" --quiet --json "$T/short.json"
-grep -q "TOO SHORT" "$T/out" && ok "too short said in the summary" || bad "too short summary"
+"$H" sim --motion stand:2 --rate 100 --profile mtx --seed 2 --out "$T/short.csv" >/dev/null 2>&1 || fail "sim short"
+expect_exit 1 "too short log" "$H" simgap "$T/short.csv" --quiet --json "$T/short.json"
+grep -q "TOO SHORT" "$T/out" && pass "too short said in the summary" || fail "too short summary"
 json "$T/short.json" 'j["confident"] is False and j["verdict"]["answer"] == "too-short" and "decade" in j["too_short"]' &&
-    ok "too short in the JSON" || bad "too short JSON: $(cat "$T/pyerr")"
+    pass "too short in the JSON" || fail "too short JSON: $(cat "$T/pyerr")"
 
 # a static CSV (t,ax,ay,az,gx,gy,gz, SI) of 600 s at 100 Hz, MTx noise, gyro z
 # rounded to 0.001 rad/s: found on gz (lattice), attributed to quant with the
 # right LSB, the held-out gap explained, no other channel flagged
 "$H" sim --motion stand:600 --rate 100 --profile mtx --seed 3 --effect quant:ch=gz:lsb=0.001 \
-    --out "$T/q.csv" >/dev/null 2>&1 || bad "sim quant"
-head -n 1 "$T/q.csv" | grep -q '^t,ax,ay,az,gx,gy,gz$' && ok "CSV input header" || bad "CSV header"
-expect 0 "static log with quantisation" "$H" simgap "$T/q.csv" --quiet --seeds 8 --json "$T/q.json" --plot "$T/qp"
-grep -q "^verdict: explained: quant" "$T/out" && ok "summary names quant" || bad "summary: $(grep verdict "$T/out")"
+    --out "$T/q.csv" >/dev/null 2>&1 || fail "sim quant"
+head -n 1 "$T/q.csv" | grep -q '^t,ax,ay,az,gx,gy,gz$' && pass "CSV input header" || fail "CSV header"
+expect_exit 0 "static log with quantisation" "$H" simgap "$T/q.csv" --quiet --seeds 8 --json "$T/q.json" --plot "$T/qp"
+grep -q "^verdict: explained: quant" "$T/out" && pass "summary names quant" || fail "summary: $(grep verdict "$T/out")"
 json "$T/q.json" 'j["schema"] == "footnav-simgap/1" and j["log"]["domain"] == "static" and j["log"]["domain_from"] == "detected"' &&
-    ok "JSON schema and domain" || bad "JSON schema/domain: $(cat "$T/pyerr")"
+    pass "JSON schema and domain" || fail "JSON schema/domain: $(cat "$T/pyerr")"
 json "$T/q.json" 'j["verdict"]["answer"] == "explained" and j["effects"][0]["effect"] == "quant" and j["effects"][0]["rank"] == 1 and [c["channel"] for c in j["effects"][0]["channels"]] == ["gz"]' &&
-    ok "quant ranked first, on gz only" || bad "ranked effects: $(cat "$T/pyerr")"
+    pass "quant ranked first, on gz only" || fail "ranked effects: $(cat "$T/pyerr")"
 json "$T/q.json" 'abs(j["effects"][0]["channels"][0]["params"]["lsb"] / 0.001 - 1) < 0.01 and j["effects"][0]["channels"][0]["explained"] >= 0.7' &&
-    ok "LSB within 1 %, held-out gap explained >= 70 %" || bad "quant parameters: $(cat "$T/pyerr")"
+    pass "LSB within 1 %, held-out gap explained >= 70 %" || fail "quant parameters: $(cat "$T/pyerr")"
 json "$T/q.json" '[c["channel"] for c in j["channels"] if c["gap_significant"]] == ["gz"] and any(l["channel"] == "gz" and l["domain"] == "lattice" for l in j["locations"])' &&
-    ok "gap located on gz, lattice domain" || bad "locations: $(cat "$T/pyerr")"
+    pass "gap located on gz, lattice domain" || fail "locations: $(cat "$T/pyerr")"
 json "$T/q.json" 'all(c["attribution"]["within_noise"] for c in j["channels"])' &&
-    ok "remaining gap within noise on every channel" || bad "within noise: $(cat "$T/pyerr")"
+    pass "remaining gap within noise on every channel" || fail "within noise: $(cat "$T/pyerr")"
 json "$T/q.json" 'j["split"]["method"].startswith("sandwich") and all(abs(cd["z"] - (cd["z_held_out_middle"] + cd["z_held_out_ends"]) / 2 ** 0.5) < 1e-6 * (1 + abs(cd["z"])) for c in j["channels"] for s in c["attribution"]["steps"] for cd in s["candidates"] if cd["simulated"] and cd["z_held_out_ends"] is not None) and any(cd["effect"] == "quant" and cd["selected"] and cd["z_held_out_ends"] is not None and cd["z_held_out_middle"] > 0 and cd["z_held_out_ends"] > 0 for s in j["channels"][5]["attribution"]["steps"] for cd in s["candidates"])' &&
-    ok "both folds scored: z combines middle and ends, quant significant on both" || bad "two folds: $(cat "$T/pyerr")"
-[ -s "$T/qp/allan.png" ] && [ -s "$T/qp/psd.png" ] && ok "plots written" || bad "plots: $(ls "$T/qp" 2>&1)"
-expect 3 "unwritable JSON" "$H" simgap "$T/q.csv" --quiet --seeds 3 --max-effects 0 --json /nonexistent/dir/q.json
+    pass "both folds scored: z combines middle and ends, quant significant on both" || fail "two folds: $(cat "$T/pyerr")"
+[ -s "$T/qp/allan.png" ] && [ -s "$T/qp/psd.png" ] && pass "plots written" || fail "plots: $(ls "$T/qp" 2>&1)"
+expect_exit 3 "unwritable JSON" "$H" simgap "$T/q.csv" --quiet --seeds 3 --max-effects 0 --json /nonexistent/dir/q.json
 
 # --walk on a static log is honoured (domain given, not detected)
-expect 0 "domain given" "$H" simgap "$T/q.csv" --quiet --seeds 3 --max-effects 0 --static --json "$T/g.json"
-json "$T/g.json" 'j["log"]["domain_from"] == "option"' && ok "domain_from option" || bad "domain_from: $(cat "$T/pyerr")"
+expect_exit 0 "domain given" "$H" simgap "$T/q.csv" --quiet --seeds 3 --max-effects 0 --static --json "$T/g.json"
+json "$T/g.json" 'j["log"]["domain_from"] == "option"' && pass "domain_from option" || fail "domain_from: $(cat "$T/pyerr")"
 
 # --profile on a static log: the given parameterisation is tested as is.
 # A log simulated with the MTx profile: the MTx model shows no gap, the
 # NavChip model (7x lower gyro noise) a gap on every channel, located in the
 # Allan and PSD domains; the fitted baseline has none either way
-"$H" sim --motion stand:300 --rate 100 --profile mtx --seed 5 --out "$T/m.csv" >/dev/null 2>&1 || bad "sim mtx"
-expect 0 "given profile, right" "$H" simgap "$T/m.csv" --quiet --seeds 8 --max-effects 0 --profile mtx --json "$T/m1.json"
+"$H" sim --motion stand:300 --rate 100 --profile mtx --seed 5 --out "$T/m.csv" >/dev/null 2>&1 || fail "sim mtx"
+expect_exit 0 "given profile, right" "$H" simgap "$T/m.csv" --quiet --seeds 8 --max-effects 0 --profile mtx --json "$T/m1.json"
 json "$T/m1.json" 'j["profile"] == "mtx" and not any(c["profile"]["gap"]["full"]["significant"] or c["gap"]["full"]["significant"] for c in j["channels"]) and j["profile_locations"] == []' &&
-    ok "the right profile explains the log" || bad "right profile: $(cat "$T/pyerr")"
-expect 0 "given profile, wrong" "$H" simgap "$T/m.csv" --quiet --seeds 8 --max-effects 0 --profile navchip --json "$T/m2.json" --plot "$T/mp"
+    pass "the right profile explains the log" || fail "right profile: $(cat "$T/pyerr")"
+expect_exit 0 "given profile, wrong" "$H" simgap "$T/m.csv" --quiet --seeds 8 --max-effects 0 --profile navchip --json "$T/m2.json" --plot "$T/mp"
 json "$T/m2.json" 'all(c["profile"]["gap"]["full"]["significant"] and c["profile"]["gap"]["held_out"]["significant"] and not c["gap"]["full"]["significant"] for c in j["channels"]) and {l["channel"] for l in j["profile_locations"] if l["domain"] == "allan" and l["ratio"] > 5} == {"gx", "gy", "gz"}' &&
-    ok "the wrong profile: gap on every channel, gyro ADEV x5+" || bad "wrong profile: $(cat "$T/pyerr")"
-grep -q "^where the given model misses" "$T/out" && ok "summary lists where the profile misses" || bad "profile summary"
-expect 1 "unknown profile" "$H" simgap "$T/m.csv" --quiet --seeds 3 --profile "$T/nope.profile"
+    pass "the wrong profile: gap on every channel, gyro ADEV x5+" || fail "wrong profile: $(cat "$T/pyerr")"
+grep -q "^where the given model misses" "$T/out" && pass "summary lists where the profile misses" || fail "profile summary"
+expect_exit 1 "unknown profile" "$H" simgap "$T/m.csv" --quiet --seeds 3 --profile "$T/nope.profile"
 
 # a simulated walk (CSV): detected as a walk, the navigation domain reported
 # (innovations per stance, the filter's model gap kept apart from the sensor
 # verdict); a 12 s walk has too few held-out stances for a confident answer
-"$H" sim --motion walk --duration 40 --rate 100 --profile mtx --seed 4 --out "$T/w.csv" >/dev/null 2>&1 || bad "sim walk"
-expect 0 "walk log" "$H" simgap "$T/w.csv" --quiet --seeds 6 --json "$T/w.json" --plot "$T/wp"
+"$H" sim --motion walk --duration 40 --rate 100 --profile mtx --seed 4 --out "$T/w.csv" >/dev/null 2>&1 || fail "sim walk"
+expect_exit 0 "walk log" "$H" simgap "$T/w.csv" --quiet --seeds 6 --json "$T/w.json" --plot "$T/wp"
 json "$T/w.json" 'j["log"]["domain"] == "walk" and j["log"]["domain_from"] == "detected" and j["navigation"]["stances_held_out"] >= 10 and "model_gap" in j["navigation"] and j["verdict"]["answer"] == "none"' &&
-    ok "walk detected, navigation domain in the JSON, no sensor effect claimed" || bad "walk JSON: $(cat "$T/pyerr")"
-[ -s "$T/wp/innovations.png" ] && ok "innovation plot" || bad "innovation plot: $(ls "$T/wp" 2>&1)"
-"$H" sim --motion walk --duration 12 --rate 100 --profile mtx --seed 5 --out "$T/w2.csv" >/dev/null 2>&1 || bad "sim short walk"
-expect 1 "short walk" "$H" simgap "$T/w2.csv" --quiet --seeds 4 --json "$T/w2.json"
+    pass "walk detected, navigation domain in the JSON, no sensor effect claimed" || fail "walk JSON: $(cat "$T/pyerr")"
+[ -s "$T/wp/innovations.png" ] && pass "innovation plot" || fail "innovation plot: $(ls "$T/wp" 2>&1)"
+"$H" sim --motion walk --duration 12 --rate 100 --profile mtx --seed 5 --out "$T/w2.csv" >/dev/null 2>&1 || fail "sim short walk"
+expect_exit 1 "short walk" "$H" simgap "$T/w2.csv" --quiet --seeds 4 --json "$T/w2.json"
 json "$T/w2.json" 'j["verdict"]["answer"] == "too-short" and "stances" in j["too_short"]' &&
-    ok "short walk: too few stances said" || bad "short walk JSON: $(cat "$T/pyerr")"
+    pass "short walk: too few stances said" || fail "short walk JSON: $(cat "$T/pyerr")"
 
 # a small validation run on withheld effects: a control, a line and a
 # quantiser (short static logs); the line and the quantiser must be named and
 # the control left alone
-expect 0 "simgap-validate small run" "$H" simgap-validate --cases 3 --static-only --duration 300 --seeds 6 \
+expect_exit 0 "simgap-validate small run" "$H" simgap-validate --cases 3 --static-only --duration 300 --seeds 6 \
     --effects control,quant,vibration --json "$T/v.json" --markdown "$T/v.md"
-grep -q "^confusion" "$T/out" && grep -q "^targets:" "$T/out" && ok "confusion matrix and targets printed" ||
-    bad "validate output"
+grep -q "^confusion" "$T/out" && grep -q "^targets:" "$T/out" && pass "confusion matrix and targets printed" ||
+    fail "validate output"
 json "$T/v.json" 'j["schema"] == "footnav-simgap-validate/1" and len(j["results"]) == 3' &&
-    ok "validate JSON: three cases" || bad "validate JSON: $(cat "$T/pyerr")"
+    pass "validate JSON: three cases" || fail "validate JSON: $(cat "$T/pyerr")"
 json "$T/v.json" 'all((r["answer"] == "none") if r["truth"] == "control" else (r["answer"].startswith(r["truth"].split("_")[0]) and r["param_rel_error"] <= 0.25 and r["held_out_shrink"] >= 0.7) for r in j["results"])' &&
-    ok "validate: effects named with parameters within 25 %, control clean" || bad "validate answers: $(cat "$T/pyerr"; cat "$T/out")"
-grep -q "^| control " "$T/v.md" && grep -q "^# Sim-to-real gap diagnosis: validation" "$T/v.md" && ok "validate Markdown" ||
-    bad "validate Markdown"
-exit $fail
+    pass "validate: effects named with parameters within 25 %, control clean" || fail "validate answers: $(cat "$T/pyerr"; cat "$T/out")"
+grep -q "^| control " "$T/v.md" && grep -q "^# Sim-to-real gap diagnosis: validation" "$T/v.md" && pass "validate Markdown" ||
+    fail "validate Markdown"
+if [ "$fails" -ne 0 ]; then echo "test_simgap.sh: $fails failure(s)"; exit 1; fi
+echo "test_simgap.sh: all passed"
