@@ -17,6 +17,7 @@
 
 #include "footnav/fnav_nav.h"
 #include "footnav/fnav_imuerr.h"
+#include "fnav_testcov.h"
 #include "hx_motion.h"
 #include "hx_sim.h"
 
@@ -43,44 +44,6 @@ static int fail(run_t *r, const char *what, double v)
     return 0;
 }
 
-/* Cholesky of the active covariance in double: returns the smallest pivot
- * (<= 0 or NaN: not positive definite); checks symmetry on the way. */
-static double cov_check(run_t *r, const fnav_ukf_t *u)
-{
-    static double a[FNAV_UKF_NMAX][FNAV_UKF_NMAX];
-    int n = u->n_act, i, j, k;
-    double minpiv = INFINITY;
-    for (i = 0; i < n; i++) {
-        for (j = 0; j < n; j++) {
-            double pij = (double)fnav_ukf_cov(u, u->act[i], u->act[j]);
-            double pji = (double)fnav_ukf_cov(u, u->act[j], u->act[i]);
-            if (!isfinite(pij) || fabs(pij - pji) > 1e-6 * (fabs(pij) + 1e-30)) {
-                fail(r, "covariance not finite or not symmetric", pij - pji);
-            }
-            a[i][j] = pij;
-        }
-    }
-    for (j = 0; j < n; j++) {
-        double d = a[j][j];
-        for (k = 0; k < j; k++) {
-            d -= a[j][k] * a[j][k];
-        }
-        if (!(d > 0.0)) {
-            return d;
-        }
-        /* pivot relative to the diagonal: how far from singular */
-        minpiv = fmin(minpiv, d / a[j][j]);
-        a[j][j] = sqrt(d);
-        for (i = j + 1; i < n; i++) {
-            double s = a[i][j];
-            for (k = 0; k < j; k++) {
-                s -= a[i][k] * a[j][k];
-            }
-            a[i][j] = s / a[j][j];
-        }
-    }
-    return minpiv;
-}
 
 static void check_frame(run_t *r, const fnav_nav_frame_t *f)
 {
@@ -127,8 +90,11 @@ static int sink(void *ctx, const hx_sim_tick_t *tick)
             check_frame(r, &f);
             r->last = f;
             if (r->frames % 2000 == 0 && r->nav.ukf.started) {
-                double piv = cov_check(r, &r->nav.ukf);
+                double asym, piv = fnav_test_cov_spd(&r->nav.ukf, &asym);
                 r->checks++;
+                if (!(asym <= 1e-6)) {
+                    fail(r, "covariance not finite or not symmetric", asym);
+                }
                 if (!(piv > 0.0)) {
                     fail(r, "covariance not positive definite", piv);
                 }

@@ -11,6 +11,7 @@
 #include <cmocka.h>
 
 #include "footnav/fnav_nav.h"
+#include "fnav_testcov.h"
 #include "fnav_testdata.h"
 
 static fnav_nav_t g_nav;
@@ -32,36 +33,16 @@ static void check_frame(const fnav_nav_frame_t *f)
  * factorisation in double succeeds with positive pivots. */
 static void check_cov_spd(const fnav_ukf_t *u)
 {
-    static double a[FNAV_UKF_NMAX][FNAV_UKF_NMAX];
-    int n = u->n_act, i, j, k;
+    double asym, piv;
     if (!u->started) {
         return;
     }
-    for (i = 0; i < n; i++) {
-        for (j = 0; j < n; j++) {
-            double pij = (double)fnav_ukf_cov(u, u->act[i], u->act[j]);
-            double pji = (double)fnav_ukf_cov(u, u->act[j], u->act[i]);
-            assert_true(isfinite(pij));
-            FNAV_ASSERT_CLOSE(pij, pji, 0.0, 1e-6);
-            a[i][j] = pij;
-        }
+    piv = fnav_test_cov_spd(u, &asym);
+    if (!(asym <= 1e-6)) {
+        fail_msg("covariance not finite or not symmetric (relative asymmetry %g)", asym);
     }
-    for (j = 0; j < n; j++) {
-        double d = a[j][j];
-        for (k = 0; k < j; k++) {
-            d -= a[j][k] * a[j][k];
-        }
-        if (!(d > 0.0)) {
-            fail_msg("covariance not positive definite at pivot %d (%g)", j, d);
-        }
-        a[j][j] = sqrt(d);
-        for (i = j + 1; i < n; i++) {
-            double s = a[i][j];
-            for (k = 0; k < j; k++) {
-                s -= a[i][k] * a[j][k];
-            }
-            a[i][j] = s / a[j][j];
-        }
+    if (!(piv > 0.0)) {
+        fail_msg("covariance not positive definite (pivot %g)", piv);
     }
 }
 
