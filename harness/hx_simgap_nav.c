@@ -476,7 +476,9 @@ typedef struct {
     int id;                      /* fnav_effect_id_t */
     int npar;                    /* parameters set */
     int ch[24], k[24];           /* channel and parameter index */
-    double val[24];              /* value */
+    double val[24];              /* value: the sensor's parameter, y = (I + A) x */
+    double eq[24];               /* linear families: the same effect as it acts on the twin's truth (B, below) */
+    int has_eq;
     double dQ;                   /* fit-segment improvement (dispersion-scaled) */
     double dQ_hold, z_hold;      /* held-out improvement of the innovations' objective and its z */
     double Q0_hold;              /* held-out objective without the effect (dispersion-scaled) */
@@ -678,8 +680,105 @@ static int apply_cand(fnav_imuerr_config_t *cfg, const navcand_t *cand)
     return 0;
 }
 
+/* Column of the 6x6 error matrix A (y = (I + A) x, rows and columns ax ay
+ * az gx gy gz) that parameter k of a linear family sets on channel ch. */
+static int lin_col(int id, int ch, int k)
+{
+    if (id == FNAV_EFFECT_SCALE) {
+        return ch;
+    }
+    if (id == FNAV_EFFECT_MISALIGN) {
+        return (ch / 3) * 3 + k;
+    }
+    return k; /* gsens: the gyro gets G f */
+}
+
+/* The sensor's parameters from the fitted ones. The twin's truth is the
+ * filter's trajectory, which integrated the real's measurements: its
+ * signals are x_t = (I + A) x, the true motion x seen through the sensor's
+ * error A. A linear effect fitted on the twin (B, in eq[]) reproduces the
+ * real's error signal A x as B x_t, so B (I + A) = A, i.e.
+ * A = B (I - B)^-1 (a scale factor b fitted on the trajectory is the
+ * sensor's b / (1 - b); misalignment and g-sensitivity alone are unchanged,
+ * their B B vanishes). c's values are computed jointly with other's (NULL:
+ * none), the effects selected together; values out of the parameter's
+ * range (I - B singular) are clamped to it. */
+static void to_sensor(navcand_t *c, const navcand_t *other)
+{
+    double B[6][12];
+    int i, j, r2, m;
+    const navcand_t *set[2];
+    set[0] = c;
+    set[1] = other;
+    if (!c->has_eq) {
+        return;
+    }
+    memset(B, 0, sizeof B);
+    for (m = 0; m < 2; m++) {
+        if (set[m] == NULL || !set[m]->has_eq) {
+            continue;
+        }
+        for (i = 0; i < set[m]->npar; i++) {
+            B[set[m]->ch[i]][lin_col(set[m]->id, set[m]->ch[i], set[m]->k[i])] += set[m]->eq[i];
+        }
+    }
+    /* A = B (I - B)^-1: solve A (I - B) = B, i.e. (I - B)^T A^T = B^T by
+     * Gauss-Jordan on [(I - B)^T | B^T] */
+    {
+        double G[6][12];
+        int sing = 0;
+        for (i = 0; i < 6; i++) {
+            for (j = 0; j < 6; j++) {
+                G[i][j] = (i == j ? 1.0 : 0.0) - B[j][i];
+                G[i][6 + j] = B[j][i];
+            }
+        }
+        for (i = 0; i < 6 && !sing; i++) {
+            int piv = i;
+            for (r2 = i + 1; r2 < 6; r2++) {
+                if (fabs(G[r2][i]) > fabs(G[piv][i])) {
+                    piv = r2;
+                }
+            }
+            if (!(fabs(G[piv][i]) > 1e-9)) {
+                sing = 1;
+                break;
+            }
+            if (piv != i) {
+                for (j = 0; j < 12; j++) {
+                    double t = G[i][j];
+                    G[i][j] = G[piv][j];
+                    G[piv][j] = t;
+                }
+            }
+            {
+                double d = G[i][i];
+                for (j = 0; j < 12; j++) {
+                    G[i][j] /= d;
+                }
+            }
+            for (r2 = 0; r2 < 6; r2++) {
+                if (r2 != i && G[r2][i] != 0.0) {
+                    double fct = G[r2][i];
+                    for (j = 0; j < 12; j++) {
+                        G[r2][j] -= fct * G[i][j];
+                    }
+                }
+            }
+        }
+        for (i = 0; i < c->npar; i++) {
+            const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)c->id);
+            double lo = info->params[c->k[i]].lo, hi = info->params[c->k[i]].hi, v;
+            /* row ch of A is column ch of A^T */
+            v = sing ? (c->eq[i] > 0.0 ? hi : lo) : G[lin_col(c->id, c->ch[i], c->k[i])][6 + c->ch[i]];
+            c->val[i] = v < lo ? lo : (v > hi ? hi : v);
+        }
+    }
+}
+
 /* The twin's sensor: the baseline noise (optional) plus candidates' values
- * (a, then b; either may be NULL). */
+ * (a, then b; either may be NULL); linear families act on the twin's truth
+ * with their trajectory form (eq[]). */
 static int twin_config(const sg_nav_t *nv, const navcand_t *a, const navcand_t *b, uint32_t seed, int noise,
                        fnav_imuerr_config_t *cfg)
 {
@@ -699,11 +798,24 @@ static int twin_config(const sg_nav_t *nv, const navcand_t *a, const navcand_t *
             cfg->mask[FNAV_EFFECT_AR1] = FNAV_CH_ALL;
         }
     }
-    if (a != NULL && apply_cand(cfg, a) != 0) {
-        return -1;
-    }
-    if (b != NULL && apply_cand(cfg, b) != 0) {
-        return -1;
+    {
+        const navcand_t *ab[2];
+        int m;
+        ab[0] = a;
+        ab[1] = b;
+        for (m = 0; m < 2; m++) {
+            navcand_t t;
+            if (ab[m] == NULL) {
+                continue;
+            }
+            t = *ab[m];
+            if (t.has_eq) {
+                memcpy(t.val, t.eq, sizeof t.val);
+            }
+            if (apply_cand(cfg, &t) != 0) {
+                return -1;
+            }
+        }
     }
     return 0;
 }
@@ -834,6 +946,7 @@ static int run_twins(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *rw
 typedef struct {
     int n;
     double t[MAX_ST];
+    double swing[MAX_ST]; /* time since the previous stance's last update (s; the start of the run for the first) */
     double y[MAX_ST][3];
     double S[MAX_ST][6];
 } firsts_t;
@@ -849,6 +962,7 @@ static void firsts_of(const navrun_t *r, const int64_t *t_ns, long a, long b, fi
     ns = stances_of(r, a, b, st, MAX_ST);
     for (i = 0; i < ns; i++) {
         f->t[f->n] = (double)(t_ns[st[i].first] - t_ns[0]) * 1e-9;
+        f->swing[f->n] = (double)(t_ns[st[i].first] - t_ns[i > 0 ? st[i - 1].i1 : a]) * 1e-9;
         memcpy(f->y[f->n], r->y[st[i].first], sizeof f->y[0]);
         memcpy(f->S[f->n], r->S[st[i].first], sizeof f->S[0]);
         f->n++;
@@ -869,6 +983,21 @@ static int match(const firsts_t *a, int i, const firsts_t *b)
         }
     }
     return best;
+}
+
+/* The stance of b that observes the same swing as stance i of a, or -1:
+ * the nearest in time (within 0.15 s), each other's nearest (one to one),
+ * and after a swing of the same duration to 10 % (the first update's
+ * innovation is the drift accumulated over the swing; a stance the
+ * detector split or started early in one run and not in the other follows
+ * a different swing, and its innovation is not the same observation). */
+static int match_swing(const firsts_t *a, int i, const firsts_t *b)
+{
+    int j = match(a, i, b);
+    if (j < 0 || match(b, j, a) != i || fabs(b->swing[j] - a->swing[i]) > 0.1 * a->swing[i]) {
+        return -1;
+    }
+    return j;
 }
 
 /* Noise-free twin run with the given candidate: first-update innovations. */
@@ -950,7 +1079,7 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
         goto done;
     }
     for (i = 0; i < fr->n; i++) {
-        mi[i] = match(fr, i, base);
+        mi[i] = match_swing(fr, i, base);
         hold[i] = fr->t[i] >= t_split;
         if (mi[i] >= 0) {
             double Si[3][3], q = 0.0;
@@ -999,7 +1128,7 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
             goto done;
         }
         for (i = 0; i < fr->n; i++) {
-            int j = mi[i] >= 0 ? match(base, mi[i], pert) : -1;
+            int j = mi[i] >= 0 ? match_swing(base, mi[i], pert) : -1;
             for (a = 0; a < 3; a++) {
                 J[p][i][a] = j >= 0 ? (pert->y[j][a] - base->y[mi[i]][a]) / delta : 0.0;
             }
@@ -1116,8 +1245,10 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
             double lo = info->params[kk[sel[i]]].lo, hi = info->params[kk[sel[i]]].hi, v = theta[i];
             out->ch[i] = ch[sel[i]];
             out->k[i] = kk[sel[i]];
-            out->val[i] = v < lo ? lo : (v > hi ? hi : v);
+            out->eq[i] = v < lo ? lo : (v > hi ? hi : v);
         }
+        out->has_eq = 1;
+        to_sensor(out, given);
         /* the held-out test with the parameters fixed */
         if (nsel > 0 && nh > 0) {
             double aa = 0.0, bb = 0.0, dh;
@@ -1129,7 +1260,7 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
                 }
                 for (m = 0; m < nsel; m++) {
                     for (a = 0; a < 3; a++) {
-                        pr[a] += J[sel[m]][i][a] * out->val[m];
+                        pr[a] += J[sel[m]][i][a] * out->eq[m];
                     }
                 }
                 for (a = 0; a < 3; a++) {
@@ -1593,6 +1724,10 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
          * trajectory cannot reproduce (docs/simgap.md): it is reported as the
          * model gap; the sensor gap is what the effects explain on held-out
          * stances, the lattice and the flat tops */
+        /* the sensor's values of effects selected together, jointly */
+        if (nv->nsel > 1) {
+            to_sensor(&nv->sel[0], &nv->sel[1]);
+        }
         nv->model_gap = nv->gap;
         nv->gap = nv->nsel > 0;
         free(fr);
