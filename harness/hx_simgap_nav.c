@@ -31,6 +31,9 @@
 #include "hx_motion.h"
 #include "hx_profile.h"
 
+#ifndef MINNORM
+#define MINNORM 1
+#endif
 #define FL_ALIGNED 1u
 #define FL_STANCE 2u
 #define FL_ZUPT 4u
@@ -693,6 +696,57 @@ static int lin_col(int id, int ch, int k)
     return k; /* gsens: the gyro gets G f */
 }
 
+int sg_nav_lin_to_sensor(const double B[6][6], double A[6][6])
+{
+    /* A (I - B) = B, i.e. (I - B)^T A^T = B^T: Gauss-Jordan with partial
+     * pivoting on [(I - B)^T | B^T] */
+    double G[6][12];
+    int i, j, r2;
+    for (i = 0; i < 6; i++) {
+        for (j = 0; j < 6; j++) {
+            G[i][j] = (i == j ? 1.0 : 0.0) - B[j][i];
+            G[i][6 + j] = B[j][i];
+        }
+    }
+    for (i = 0; i < 6; i++) {
+        int piv = i;
+        double d;
+        for (r2 = i + 1; r2 < 6; r2++) {
+            if (fabs(G[r2][i]) > fabs(G[piv][i])) {
+                piv = r2;
+            }
+        }
+        if (!(fabs(G[piv][i]) > 1e-9)) {
+            return -1;
+        }
+        if (piv != i) {
+            for (j = 0; j < 12; j++) {
+                double t = G[i][j];
+                G[i][j] = G[piv][j];
+                G[piv][j] = t;
+            }
+        }
+        d = G[i][i];
+        for (j = 0; j < 12; j++) {
+            G[i][j] /= d;
+        }
+        for (r2 = 0; r2 < 6; r2++) {
+            if (r2 != i && G[r2][i] != 0.0) {
+                double fct = G[r2][i];
+                for (j = 0; j < 12; j++) {
+                    G[r2][j] -= fct * G[i][j];
+                }
+            }
+        }
+    }
+    for (i = 0; i < 6; i++) {
+        for (j = 0; j < 6; j++) {
+            A[i][j] = G[j][6 + i]; /* A = (A^T)^T */
+        }
+    }
+    return 0;
+}
+
 /* The sensor's parameters from the fitted ones. The twin's truth is the
  * filter's trajectory, which integrated the real's measurements: its
  * signals are x_t = (I + A) x, the true motion x seen through the sensor's
@@ -705,8 +759,8 @@ static int lin_col(int id, int ch, int k)
  * range (I - B singular) are clamped to it. */
 static void to_sensor(navcand_t *c, const navcand_t *other)
 {
-    double B[6][12];
-    int i, j, r2, m;
+    double B[6][6];
+    int i, m;
     const navcand_t *set[2];
     set[0] = c;
     set[1] = other;
@@ -722,55 +776,13 @@ static void to_sensor(navcand_t *c, const navcand_t *other)
             B[set[m]->ch[i]][lin_col(set[m]->id, set[m]->ch[i], set[m]->k[i])] += set[m]->eq[i];
         }
     }
-    /* A = B (I - B)^-1: solve A (I - B) = B, i.e. (I - B)^T A^T = B^T by
-     * Gauss-Jordan on [(I - B)^T | B^T] */
     {
-        double G[6][12];
-        int sing = 0;
-        for (i = 0; i < 6; i++) {
-            for (j = 0; j < 6; j++) {
-                G[i][j] = (i == j ? 1.0 : 0.0) - B[j][i];
-                G[i][6 + j] = B[j][i];
-            }
-        }
-        for (i = 0; i < 6 && !sing; i++) {
-            int piv = i;
-            for (r2 = i + 1; r2 < 6; r2++) {
-                if (fabs(G[r2][i]) > fabs(G[piv][i])) {
-                    piv = r2;
-                }
-            }
-            if (!(fabs(G[piv][i]) > 1e-9)) {
-                sing = 1;
-                break;
-            }
-            if (piv != i) {
-                for (j = 0; j < 12; j++) {
-                    double t = G[i][j];
-                    G[i][j] = G[piv][j];
-                    G[piv][j] = t;
-                }
-            }
-            {
-                double d = G[i][i];
-                for (j = 0; j < 12; j++) {
-                    G[i][j] /= d;
-                }
-            }
-            for (r2 = 0; r2 < 6; r2++) {
-                if (r2 != i && G[r2][i] != 0.0) {
-                    double fct = G[r2][i];
-                    for (j = 0; j < 12; j++) {
-                        G[r2][j] -= fct * G[i][j];
-                    }
-                }
-            }
-        }
+        double A[6][6];
+        int sing = sg_nav_lin_to_sensor((const double(*)[6])B, A) != 0;
         for (i = 0; i < c->npar; i++) {
             const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)c->id);
             double lo = info->params[c->k[i]].lo, hi = info->params[c->k[i]].hi, v;
-            /* row ch of A is column ch of A^T */
-            v = sing ? (c->eq[i] > 0.0 ? hi : lo) : G[lin_col(c->id, c->ch[i], c->k[i])][6 + c->ch[i]];
+            v = sing ? (c->eq[i] > 0.0 ? hi : lo) : A[c->ch[i]][lin_col(c->id, c->ch[i], c->k[i])];
             c->val[i] = v < lo ? lo : (v > hi ? hi : v);
         }
     }
@@ -991,13 +1003,33 @@ static int match(const firsts_t *a, int i, const firsts_t *b)
  * innovation is the drift accumulated over the swing; a stance the
  * detector split or started early in one run and not in the other follows
  * a different swing, and its innovation is not the same observation). */
-static int match_swing(const firsts_t *a, int i, const firsts_t *b)
+static int nearest(const double *ta, int i, const double *tb, int nb)
 {
-    int j = match(a, i, b);
-    if (j < 0 || match(b, j, a) != i || fabs(b->swing[j] - a->swing[i]) > 0.1 * a->swing[i]) {
+    int j, best = -1;
+    double bd = 0.15;
+    for (j = 0; j < nb; j++) {
+        double d = fabs(tb[j] - ta[i]);
+        if (d < bd) {
+            bd = d;
+            best = j;
+        }
+    }
+    return best;
+}
+
+int sg_nav_match_swing(const double *ta, const double *swa, int na, int i, const double *tb, const double *swb,
+                       int nb)
+{
+    int j = nearest(ta, i, tb, nb);
+    if (j < 0 || nearest(tb, j, ta, na) != i || fabs(swb[j] - swa[i]) > 0.1 * swa[i]) {
         return -1;
     }
     return j;
+}
+
+static int match_swing(const firsts_t *a, int i, const firsts_t *b)
+{
+    return sg_nav_match_swing(a->t, a->swing, a->n, i, b->t, b->swing, b->n);
 }
 
 /* Noise-free twin run with the given candidate: first-update innovations. */
@@ -1140,8 +1172,9 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
         double Qcur = Q0;
         for (;;) {
             int bestp = -1;
-            double bestQ = Qcur, bth[24];
+            double bestQ = Qcur, bth[24], Qp[24], thp[24][24];
             for (p = 0; p < np; p++) {
+                Qp[p] = (double)INFINITY;
                 int in = 0, m, s1, s2, ns = nsel + 1, idx[24];
                 double M[24][24], v[24], th[24], Q = 0.0;
                 for (m = 0; m < nsel; m++) {
@@ -1222,11 +1255,31 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
                         }
                     }
                 }
+                Qp[p] = Q;
+                memcpy(thp[p], th, (size_t)ns * sizeof *th);
                 if (Q < bestQ) {
                     bestQ = Q;
                     bestp = p;
                     memcpy(bth, th, (size_t)ns * sizeof *th);
                 }
+            }
+            /* identifiability: parameters whose fits are within one (chi2_1
+             * difference, dispersion-scaled) of the best are not told apart
+             * by the data (their innovation signatures are nearly collinear:
+             * a gyro's g-sensitivity to the vertical and to a horizontal
+             * specific force, both acting mostly in stance); among them the
+             * smallest magnitude is taken, the minimum-norm solution of the
+             * unidentified direction (the pseudo-inverse's, the limit of
+             * ridge regression), i.e. the most sensitive parameter */
+            if (MINNORM && bestp >= 0) {
+                int p2;
+                for (p2 = 0; p2 < np; p2++) {
+                    if (Qp[p2] <= bestQ + disp && fabs(thp[p2][nsel]) < fabs(bth[nsel])) {
+                        bestp = p2;
+                        memcpy(bth, thp[p2], (size_t)(nsel + 1) * sizeof *bth);
+                    }
+                }
+                bestQ = Qp[bestp];
             }
             /* chi2_1 at 0.1 %: 10.83, on the dispersion-scaled objective */
             if (bestp < 0 || (Qcur - bestQ) / disp < 10.83 || nsel >= 6) {

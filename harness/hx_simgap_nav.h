@@ -44,4 +44,26 @@ void sg_nav_truth_errors(const sg_nav_t *nv, int id, uint32_t mask, const double
 int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t *cs, fnav_imuerr_config_t *cfg,
                      char *script, size_t script_size);
 
+/**
+ * The sensor's linear error from the one fitted on a twin whose truth is
+ * the filter's trajectory (docs/simgap.md, "Walks"): with y = (I + A) x the
+ * sensor and x_t = (I + A) x the trajectory's signals, the effect fitted on
+ * the trajectory (B x_t = A x) gives A = B (I - B)^-1.
+ * @param B  fitted error matrix, rows and columns ax ay az gx gy gz
+ * @param A  the sensor's error matrix (out)
+ * @return 0, -1 when I - B is singular (A untouched).
+ */
+int sg_nav_lin_to_sensor(const double B[6][6], double A[6][6]);
+
+/**
+ * The stance of run b that observes the same swing as stance i of run a:
+ * the nearest first update in time (within 0.15 s), each other's nearest
+ * (one to one), after a swing of the same duration to 10 %.
+ * @param ta, swa  run a: first-update times and preceding swing durations (s), na stances
+ * @param tb, swb  run b, nb stances
+ * @return index into b, or -1.
+ */
+int sg_nav_match_swing(const double *ta, const double *swa, int na, int i, const double *tb, const double *swb,
+                       int nb);
+
 #endif /* HX_SIMGAP_NAV_H */
