@@ -31,9 +31,6 @@
 #include "hx_motion.h"
 #include "hx_profile.h"
 
-#ifndef MINNORM
-#define MINNORM 1
-#endif
 #define FL_ALIGNED 1u
 #define FL_STANCE 2u
 #define FL_ZUPT 4u
@@ -482,6 +479,9 @@ typedef struct {
     double val[24];              /* value: the sensor's parameter, y = (I + A) x */
     double eq[24];               /* linear families: the same effect as it acts on the twin's truth (B, below) */
     int has_eq;
+    int nalt;                    /* parameters the fit cannot tell from the first (fits within chi2_1 = 1) */
+    int alt_ch[4], alt_k[4];
+    double alt_val[4];           /* their values fitted alone (the sensor's) */
     double dQ;                   /* fit-segment improvement (dispersion-scaled) */
     double dQ_hold, z_hold;      /* held-out improvement of the innovations' objective and its z */
     double Q0_hold;              /* held-out objective without the effect (dispersion-scaled) */
@@ -1263,23 +1263,36 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
                     memcpy(bth, th, (size_t)ns * sizeof *th);
                 }
             }
-            /* identifiability: parameters whose fits are within one (chi2_1
-             * difference, dispersion-scaled) of the best are not told apart
-             * by the data (their innovation signatures are nearly collinear:
-             * a gyro's g-sensitivity to the vertical and to a horizontal
-             * specific force, both acting mostly in stance); among them the
-             * smallest magnitude is taken, the minimum-norm solution of the
-             * unidentified direction (the pseudo-inverse's, the limit of
-             * ridge regression), i.e. the most sensitive parameter */
-            if (MINNORM && bestp >= 0) {
-                int p2;
+            /* identifiability: the parameters whose single fits are within
+             * one (chi2_1, dispersion-scaled) of the first one's are not told
+             * apart by the stances (nearly collinear innovation signatures:
+             * roll and yaw rate errors that follow the stride); they are
+             * reported with it, best fit first */
+            if (nsel == 0 && bestp >= 0) {
+                int p2, na = 0, idx2[24], m2;
                 for (p2 = 0; p2 < np; p2++) {
-                    if (Qp[p2] <= bestQ + disp && fabs(thp[p2][nsel]) < fabs(bth[nsel])) {
-                        bestp = p2;
-                        memcpy(bth, thp[p2], (size_t)(nsel + 1) * sizeof *bth);
+                    if (p2 != bestp && Qp[p2] <= bestQ + disp) {
+                        for (m2 = na++; m2 > 0 && Qp[idx2[m2 - 1]] > Qp[p2]; m2--) {
+                            idx2[m2] = idx2[m2 - 1];
+                        }
+                        idx2[m2] = p2;
                     }
                 }
-                bestQ = Qp[bestp];
+                out->nalt = na < 4 ? na : 4;
+                for (m2 = 0; m2 < out->nalt; m2++) {
+                    navcand_t one;
+                    memset(&one, 0, sizeof one);
+                    one.id = id;
+                    one.npar = 1;
+                    one.ch[0] = ch[idx2[m2]];
+                    one.k[0] = kk[idx2[m2]];
+                    one.eq[0] = thp[idx2[m2]][0];
+                    one.has_eq = 1;
+                    to_sensor(&one, given);
+                    out->alt_ch[m2] = one.ch[0];
+                    out->alt_k[m2] = one.k[0];
+                    out->alt_val[m2] = one.val[0];
+                }
             }
             /* chi2_1 at 0.1 %: 10.83, on the dispersion-scaled objective */
             if (bestp < 0 || (Qcur - bestQ) / disp < 10.83 || nsel >= 6) {
@@ -1329,8 +1342,10 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
             out->z_hold = aa > 0.0 ? bb / sqrt(dh * aa) : 0.0;
             out->Q0_hold = Qh0;
             /* fraction of the held-out innovation excess (over the filter's
-             * own 3 per stance) that the effect removes */
-            out->expl = Qh0 - 3.0 * nh > 0.0 ? (2.0 * bb - aa) / (Qh0 - 3.0 * nh) : (double)NAN;
+             * own 3 per stance) that the effect removes, defined where there
+             * is an excess: more than two null standard deviations (chi2 with
+             * 3 per stance: sd sqrt(6 n)), as for the static domain */
+            out->expl = Qh0 - 3.0 * nh > 2.0 * sqrt(6.0 * nh) ? (2.0 * bb - aa) / (Qh0 - 3.0 * nh) : (double)NAN;
             out->expl_lo = out->expl_hi = out->expl;
         }
     }
@@ -1898,6 +1913,17 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
                 fprintf(f, "; twins: held-out gap %.3g -> %.3g", nv->step[i].G_hold_before, cd->G_hold);
             }
             fprintf(f, "\n");
+            if (cd->nalt > 0) {
+                const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)cd->id);
+                int m;
+                fprintf(f, "      as good a fit (within chi2 1) in place of %s.%s:", sg_channel_name(cd->ch[0]),
+                        info->params[cd->k[0]].name);
+                for (m = 0; m < cd->nalt; m++) {
+                    fprintf(f, "%s %s.%s=%.3g", m ? "," : "", sg_channel_name(cd->alt_ch[m]),
+                            info->params[cd->alt_k[m]].name, cd->alt_val[m]);
+                }
+                fprintf(f, "\n");
+            }
         }
     }
     if (nv->model_gap) {
@@ -1932,6 +1958,17 @@ static cJSON *cand_json(const navcand_t *cd)
         cJSON_AddStringToObject(p, "param", info->params[cd->k[i]].name);
         add_num(p, "value", cd->val[i]);
         cJSON_AddItemToArray(a, p);
+    }
+    if (cd->nalt > 0) {
+        /* parameters the stances cannot tell from the first one */
+        cJSON *alt = cJSON_AddArrayToObject(o, "indistinguishable");
+        for (i = 0; i < cd->nalt; i++) {
+            cJSON *p = cJSON_CreateObject();
+            cJSON_AddStringToObject(p, "channel", sg_channel_name(cd->alt_ch[i]));
+            cJSON_AddStringToObject(p, "param", info->params[cd->alt_k[i]].name);
+            add_num(p, "value", cd->alt_val[i]);
+            cJSON_AddItemToArray(alt, p);
+        }
     }
     add_num(o, "fit_dQ", cd->dQ);
     add_num(o, "held_out_dQ", cd->dQ_hold);

@@ -84,6 +84,14 @@ expect_exit 1 "short walk" "$H" simgap "$T/w2.csv" --quiet --seeds 4 --json "$T/
 json "$T/w2.json" 'j["verdict"]["answer"] == "too-short" and "stances" in j["too_short"]' &&
     pass "short walk: too few stances said" || fail "short walk JSON: $(cat "$T/pyerr")"
 
+# a walk with a 40 % scale error on gz: found on gz, the sensor's value (the
+# trajectory's b = 0.4 / 1.4 = 0.29 converted, A = B (I - B)^-1) within 10 %,
+# most of the held-out innovation excess explained (docs/simgap.md, "Walks")
+"$H" sim --motion walk --duration 60 --rate 200 --profile mtx --seed 4 --effect scale:ch=gz:sf=0.4 --out "$T/ws.csv" >/dev/null 2>&1 || fail "sim walk with scale"
+expect_exit 0 "walk with scale" "$H" simgap "$T/ws.csv" --quiet --seeds 6 --json "$T/ws.json"
+json "$T/ws.json" '(s := j["navigation"]["selected"][0])["effect"] == "scale" and (p := s["params"][0])["channel"] == "gz" and abs(p["value"] - 0.4) < 0.04 and s["explained"] >= 0.7' &&
+    pass "walk: scale on gz, the sensor's value, held-out excess explained" || fail "walk scale JSON: $(cat "$T/pyerr")"
+
 # a small validation run on withheld effects: a control, a line and a
 # quantiser (short static logs); the line and the quantiser must be named and
 # the control left alone
