@@ -1957,6 +1957,9 @@ static cJSON *cand_json(const navcand_t *cd)
         cJSON_AddStringToObject(p, "channel", sg_channel_name(cd->ch[i]));
         cJSON_AddStringToObject(p, "param", info->params[cd->k[i]].name);
         add_num(p, "value", cd->val[i]);
+        if (cd->has_eq) {
+            add_num(p, "trajectory_value", cd->eq[i]);
+        }
         cJSON_AddItemToArray(a, p);
     }
     if (cd->nalt > 0) {
