@@ -563,7 +563,8 @@ static double fit_tmax(const sg_result_t *r, int ch)
  * not be computed. */
 static int fold_ends(sg_result_t *r, int ch, const sg_feat_cfg_t *fc, const sg_table_t *tm, const int *with,
                      int nwith, double tmax, double alpha, uint32_t seed, const twinset_t *cur,
-                     const sg_cmp_t ccur[SG_NSEG], const sg_cand_t *cd, double *z, double *dG)
+                     const sg_cmp_t ccur[SG_NSEG], const sg_cand_t *cd, double *z, double *dG, double *zg,
+                     double *dL)
 {
     const sg_chres_t *c = &r->ch[ch];
     const int S = r->opts.seeds;
@@ -580,6 +581,8 @@ static int fold_ends(sg_result_t *r, int ch, const sg_feat_cfg_t *fc, const sg_t
         /* the middle shows none of it: no evidence from this fold */
         *z = 0.0;
         *dG = 0.0;
+        *zg = 0.0;
+        *dL = 0.0;
         return 0;
     }
     if (twinset_run(&f.model, ch, fc, &r->segs, c->q_full, S, seed, r->pl[ch], &ts) != 0) {
@@ -598,6 +601,8 @@ static int fold_ends(sg_result_t *r, int ch, const sg_feat_cfg_t *fc, const sg_t
     *dG = ccur[SG_FIT].G - cc.G;
     *z = sg_score_test(&r->pl[ch][SG_FIT], r->real[ch][SG_FIT], &ccur[SG_FIT], cur->v[SG_FIT], cur->sh[SG_FIT],
                        ts.v[SG_FIT], S, &tr, &tmn, &tsd);
+    *zg = sg_lr_test(&r->pl[ch][SG_FIT], r->real[ch][SG_FIT], cur->v[SG_FIT], cur->vx[SG_FIT], cur->sh[SG_FIT],
+                     ts.v[SG_FIT], ts.vx[SG_FIT], ts.sh[SG_FIT], S, dL);
     sg_cmp_free(&cc);
     twinset_free(&ts);
     return 0;
@@ -614,10 +619,11 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     sg_cmp_t ccur[SG_NSEG];
     int with[SG_MAX_EFF], nwith = 0, step, g, i;
     double zc = c->cmp[SG_FULL].z_crit;
-    /* each simulated candidate is a test: Bonferroni over the channels and
+    /* each simulated candidate is two tests (score and likelihood ratio, either
+     * may accept): Bonferroni over the two, the channels and
      * about five candidates each; the null's spread comes from S twins, so
      * the quantile is Student's with S - 1 degrees of freedom */
-    const double zacc = gsl_cdf_tdist_Qinv(r->opts.alpha / (double)(SG_NCH * 5), (double)(r->opts.seeds - 1));
+    const double zacc = gsl_cdf_tdist_Qinv(r->opts.alpha / (double)(SG_NCH * 5 * 2), (double)(r->opts.seeds - 1));
     const double tmax = fit_tmax(r, ch);
     uint32_t seed = o->seed + 1000u * (uint32_t)ch;
     (void)x;
@@ -643,7 +649,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     for (step = 0; step < o->max_steps; step++) {
         sg_step_t *st = &c->step[step];
         int order[N_STATIC_CANDS], nord = 0, best = -1, k;
-        double bestdG = 0.0;
+        double bestdL = 0.0;
         twinset_t bestset;
         sg_cmp_t bestcmp[SG_NSEG];
         sg_fit_t curfit;
@@ -750,18 +756,27 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
                                    : 0.0;
                 cd->z_delta = sg_score_test(&pls[SG_HOLD], rv[SG_HOLD], &ccur[SG_HOLD], cur.v[SG_HOLD], cur.sh[SG_HOLD],
                                          ts.v[SG_HOLD], S, &cd->t_hold, &cd->t_null_mean, &cd->t_null_sd);
+                cd->zg_mid = sg_lr_test(&pls[SG_HOLD], rv[SG_HOLD], cur.v[SG_HOLD], cur.vx[SG_HOLD], cur.sh[SG_HOLD],
+                                        ts.v[SG_HOLD], ts.vx[SG_HOLD], ts.sh[SG_HOLD], S, &cd->dL_mid);
             }
             dG = ccur[SG_HOLD].G - cd->G_hold;
             cd->dG_hold = dG;
             cd->z_mid = cd->z_delta;
-            cd->z_ends = cd->dG_ends = (double)NAN;
+            cd->z_ends = cd->dG_ends = cd->zg_ends = cd->dL_ends = (double)NAN;
+            cd->z_gap = cd->zg_mid;
+            cd->dL_rank = cd->dL_mid;
             if (r->segs.sandwich) {
                 /* second fold: fit on the middle, held out the ends */
-                double zb = 0.0, dGb = 0.0;
-                if (fold_ends(r, ch, fc, &tabm, w2, nwith + 1, tmax, alpha, seed, &cur, ccur, cd, &zb, &dGb) == 0) {
+                double zb = 0.0, dGb = 0.0, zgb = 0.0, dLb = 0.0;
+                if (fold_ends(r, ch, fc, &tabm, w2, nwith + 1, tmax, alpha, seed, &cur, ccur, cd, &zb, &dGb, &zgb,
+                              &dLb) == 0) {
                     cd->z_ends = zb;
                     cd->dG_ends = dGb;
+                    cd->zg_ends = zgb;
+                    cd->dL_ends = dLb;
+                    cd->dL_rank += dLb;
                     cd->z_delta = (cd->z_mid + zb) / sqrt(2.0);
+                    cd->z_gap = (cd->zg_mid + zgb) / sqrt(2.0);
                     dG += dGb;
                 }
             }
@@ -772,7 +787,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             }
             /* accepted only with a held-out gain beyond what twins without
              * the effect show (z_delta) and beyond the seed noise */
-            if (dG > bestdG && cd->z_delta > zacc && !(cd->expl_lo <= 0.0)) {
+            if (cd->dL_rank > bestdL && (cd->z_delta > zacc || cd->z_gap > zacc) && !(cd->expl_lo <= 0.0)) {
                 if (best >= 0) {
                     twinset_free(&bestset);
                     for (g = 0; g < SG_NSEG; g++) {
@@ -780,7 +795,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
                     }
                 }
                 best = order[i];
-                bestdG = dG;
+                bestdL = cd->dL_rank;
                 bestset = ts;
                 memcpy(bestcmp, cc, sizeof cc);
                 c->final = f.model;
@@ -834,7 +849,8 @@ static void locate_into(const sg_result_t *r, int ch, int seg, const sg_cmp_t *c
             j++;
             continue;
         }
-        while (k < pl->n && pl->p[k].dom == pl->p[j].dom && fabs(c->z[k]) > 2.5 && c->z[k] * sgn > 0.0) {
+        while (k < pl->n && pl->p[k].dom == pl->p[j].dom && fabs(c->z[k]) > 2.5 && c->z[k] * sgn > 0.0 &&
+               (pl->p[k].dom != SG_TIME || pl->p[k].kind == pl->p[j].kind)) {
             if (fabs(c->z[k]) > fabs(c->z[best])) {
                 best = k;
             }
@@ -846,7 +862,7 @@ static void locate_into(const sg_result_t *r, int ch, int seg, const sg_cmp_t *c
             L->dom = pl->p[j].dom;
             L->ch = ch;
             L->seg = seg;
-            L->kind = 0;
+            L->kind = pl->p[j].dom == SG_TIME ? pl->p[j].kind : 0;
             L->x_lo = pl->p[j].x_lo;
             L->x_hi = pl->p[k - 1].x_hi;
             L->peak_z = c->z[best];

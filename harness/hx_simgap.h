@@ -47,7 +47,17 @@
 #endif
 
 /** Domains of the gap. */
-enum { SG_ALLAN = 0, SG_PSD, SG_LATTICE, SG_TIMING, SG_NAV, SG_NDOM };
+enum { SG_ALLAN = 0, SG_PSD, SG_LATTICE, SG_TIMING, SG_NAV, SG_TIME, SG_NDOM };
+/** Kinds of time-domain points (static logs, one of each per block of a
+ *  segment; x_lo, x_hi the block's time span, s). */
+enum {
+    SG_TIME_TREND = 0, /**< least-squares slope over the block, u/s (Legendre P1) */
+    SG_TIME_CURV,      /**< curvature: the Legendre P2 coefficient over the block, u */
+    SG_TIME_STEP,      /**< ln(largest |lag-2 difference of SG_TD_K sub-block means| / its robust sd):
+                            isolated steps make it large, Gaussian increments do not */
+    SG_TIME_NKIND
+};
+#define SG_TD_K 32          /**< sub-blocks of a block for the step statistic */
 /** Segments: the whole log, the fit segment, the held-out segment. */
 enum { SG_FULL = 0, SG_FIT, SG_HOLD, SG_NSEG };
 /** Kinds of navigation-domain points. */
@@ -67,6 +77,8 @@ enum { SG_TIM_DUP = 0, SG_TIM_DROP, SG_TIM_JITTER, SG_TIM_NKIND };
 
 /** Domain name ("allan", "psd", "lattice", "timing", "nav"). */
 const char *sg_domain_name(int dom);
+/** Time-domain kind name ("trend", "curvature", "steps"). */
+const char *sg_time_kind_name(int kind);
 /** Channel name ("ax" .. "gz"). */
 const char *sg_channel_name(int ch);
 /** Channel unit ("m/s^2" or "rad/s"). */
@@ -121,6 +133,13 @@ typedef struct {
     long lm;
     int have_prev;
     int lat_external;         /**< lattice sums set by the caller (lc, ls, lm), not pushed */
+    /* time domain: Legendre sums over the block and the sub-block sums */
+    int td;                   /**< time-domain points on (blocks of at least 16 SG_TD_K samples) */
+    double t0_s;              /**< block start, s (set by sg_segacc_init) */
+    double x0;                /**< first value (the sums are of x - x0) */
+    double s1, s1q, s2, s2q;  /**< sum (x - x0) u, sum u^2, sum (x - x0) c, sum c^2 (u in [-1, 1], c = P2(u) centred) */
+    double sub[SG_TD_K];      /**< sums of x - x0 per sub-block */
+    long subn[SG_TD_K];
     sg_feat_cfg_t cfg;
 } sg_acc_t;
 
@@ -133,7 +152,9 @@ void sg_acc_free(sg_acc_t *a);
  * Finish: append the points of channel ch (when pl is not NULL) and write
  * their values to vals (capacity cap; the count is returned, -1 on error).
  * Values: Allan ln AVAR, spectral ln(mean PSD of the band), lattice the
- * normal score of the Rayleigh statistic. Points are a function of the
+ * normal score of the Rayleigh statistic, time domain the trend, curvature
+ * and step statistic of the block (SG_TIME_*; signed, so that twins of a
+ * deterministic drift reproduce them and twins of a random one do not). Points are a function of the
  * segment length and settings only, so a twin of the same length yields the
  * same list.
  */
@@ -205,6 +226,21 @@ void sg_explained(const sg_plist_t *pl, const double *real, const double *ta, co
  */
 double sg_score_test(const sg_plist_t *pl, const double *real, const sg_cmp_t *ca, const double *ta, const double *sa,
                      const double *tb, int S, double *t_real, double *t_mean, double *t_sd);
+
+/**
+ * Likelihood-ratio test of going from model a to model b on one segment:
+ * the drop of the Gaussian deviance (G plus the mean ln of the points'
+ * variances, with G's weights) from a's twins to b's, for the real, against
+ * the same drop for each twin of a taken as the real (against the other
+ * twins of a and of b: b's paired seed shares its noise). A parametric
+ * bootstrap of the likelihood ratio: it sees effects that change the
+ * spread or the shape of a statistic (sparse steps) as well as those that
+ * shift its mean, which sg_score_test projects on, and the ln-variance term
+ * charges a model for the spread it adds, so a wider twin does not win by
+ * being wide. Returns z; the real's deviance drop through drop (or NULL).
+ */
+double sg_lr_test(const sg_plist_t *pl, const double *real, const double *ta, const double *va, const double *sa,
+                  const double *tb, const double *vb, const double *sb, int S, double *drop);
 
 /* ------------------------------------------------------------ models */
 
@@ -340,9 +376,10 @@ double sg_model_avar(const sg_chmodel_t *mdl, double rate_hz, double m, double t
 double sg_model_avar_blocks(const sg_chmodel_t *mdl, double rate_hz, double m, int nb, const double *t0_s,
                             const double *t1_s);
 
-/** Expected statistic of a point under a model: ln AVAR (Allan) or ln of
- *  the band's mean one-sided PSD (spectral, continuous-time shapes); NaN
- *  for other domains. Used for the spread of refitted models. */
+/** Expected statistic of a point under a model: ln AVAR (Allan), ln of
+ *  the band's mean one-sided PSD (spectral, continuous-time shapes), or the
+ *  trend and curvature of the model's deterministic drift over the block
+ *  (time domain); NaN for other points. Used for the spread of refitted models. */
 double sg_model_lnstat(const sg_chmodel_t *mdl, const sg_point_t *p, double rate_hz, int nb, const double *t0_s,
                        const double *t1_s);
 
@@ -403,6 +440,10 @@ typedef struct {
     double dG_ends;           /**< the ends' gap reduction in the second fold (NaN: none) */
     double dG_rank;           /**< held-out gap reduction that ranks effects: dG_hold, plus dG_ends with a
                                    second fold */
+    double zg_mid, zg_ends;   /**< likelihood-ratio test (sg_lr_test) per fold (NaN: no second fold) */
+    double z_gap;             /**< the two folds' likelihood-ratio z combined (Stouffer) */
+    double dL_mid, dL_ends;   /**< the real's deviance drop per fold (NaN: no second fold) */
+    double dL_rank;           /**< their sum: what ranks the accepted candidates */
 } sg_cand_t;
 
 /** One forward-selection step of a channel. */

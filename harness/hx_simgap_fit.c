@@ -211,9 +211,57 @@ static double model_psd(const sg_chmodel_t *mdl, double f, double fs)
     return S;
 }
 
+/* Deterministic part of a channel model at time t (ramp and thermal drift). */
+static double model_drift(const sg_chmodel_t *mdl, double t)
+{
+    double b = 0.0;
+    int i;
+    for (i = 0; i < mdl->n; i++) {
+        const sg_effect_t *e = &mdl->e[i];
+        if (e->id == FNAV_EFFECT_RAMP) {
+            b += e->p[0] * t;
+        } else if (e->id == FNAV_EFFECT_THERMAL && e->p[2] > 0.0) {
+            /* coef (temp - t0), temp = t0 + rise (1 - exp(-t / tau)) */
+            b += e->p[0] * e->p[1] * -expm1(-t / e->p[2]);
+        }
+    }
+    return b;
+}
+
+/* Expected trend (u/s) or curvature (u) of a block [t0, t1] under a model:
+ * the Legendre projections of its deterministic drift (midpoint rule;
+ * the random parts have expectation zero). */
+static double model_time_stat(const sg_chmodel_t *mdl, int kind, double t0, double t1)
+{
+    enum { NQ = 256 };
+    double s = 0.0, q = 0.0, pm = 0.0;
+    int i;
+    if (kind == SG_TIME_CURV) {
+        for (i = 0; i < NQ; i++) {
+            double u = -1.0 + 2.0 * ((double)i + 0.5) / (double)NQ;
+            pm += 0.5 * (3.0 * u * u - 1.0);
+        }
+        pm /= (double)NQ;
+    }
+    for (i = 0; i < NQ; i++) {
+        double u = -1.0 + 2.0 * ((double)i + 0.5) / (double)NQ;
+        double f = model_drift(mdl, t0 + 0.5 * (u + 1.0) * (t1 - t0));
+        double b = kind == SG_TIME_TREND ? u : 0.5 * (3.0 * u * u - 1.0) - pm;
+        s += f * b;
+        q += b * b;
+    }
+    if (!(q > 0.0) || !(t1 > t0)) {
+        return (double)NAN;
+    }
+    return kind == SG_TIME_TREND ? (s / q) * 2.0 / (t1 - t0) : s / q;
+}
+
 double sg_model_lnstat(const sg_chmodel_t *mdl, const sg_point_t *p, double rate_hz, int nb, const double *t0_s,
                        const double *t1_s)
 {
+    if (p->dom == SG_TIME && (p->kind == SG_TIME_TREND || p->kind == SG_TIME_CURV)) {
+        return model_time_stat(mdl, p->kind, p->x_lo, p->x_hi);
+    }
     if (p->dom == SG_ALLAN) {
         double v = sg_model_avar_blocks(mdl, rate_hz, (double)p->m, nb, t0_s, t1_s);
         return v > 0.0 ? log(v) : (double)NAN;

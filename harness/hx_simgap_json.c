@@ -30,7 +30,10 @@ static cJSON *loc_json(const sg_loc_t *L)
     cJSON_AddStringToObject(lo, "segment", k_seg[L->seg]);
     add_num(lo, "x_lo", L->x_lo);
     add_num(lo, "x_hi", L->x_hi);
-    cJSON_AddStringToObject(lo, "x_unit", (L->dom == SG_ALLAN || L->dom == SG_NAV) ? "s" : (L->dom == SG_PSD ? "Hz" : "u"));
+    cJSON_AddStringToObject(lo, "x_unit", (L->dom == SG_ALLAN || L->dom == SG_NAV || L->dom == SG_TIME) ? "s" : (L->dom == SG_PSD ? "Hz" : "u"));
+    if (L->dom == SG_TIME) {
+        cJSON_AddStringToObject(lo, "kind", sg_time_kind_name(L->kind));
+    }
     add_num(lo, "peak_z", L->peak_z);
     add_num(lo, "ratio", L->ratio);
     cJSON_AddNumberToObject(lo, "points", L->npts);
@@ -89,6 +92,9 @@ static cJSON *points_json(const sg_plist_t *pl, const double *real, const sg_cmp
         const sg_point_t *p = &pl->p[j];
         cJSON *o = cJSON_CreateObject();
         cJSON_AddStringToObject(o, "domain", sg_domain_name(p->dom));
+        if (p->dom == SG_TIME) {
+            cJSON_AddStringToObject(o, "kind", sg_time_kind_name(p->kind));
+        }
         add_num(o, "x", p->x);
         add_num(o, "x_lo", p->x_lo);
         add_num(o, "x_hi", p->x_hi);
@@ -171,6 +177,9 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
                 add_num(co, "z_held_out_middle", cd->z_mid);
                 add_num(co, "z_held_out_ends", cd->z_ends);
                 add_num(co, "dG_held_out_ends", cd->dG_ends);
+                add_num(co, "z_lr", cd->z_gap);
+                add_num(co, "z_lr_held_out_middle", cd->zg_mid);
+                add_num(co, "z_lr_held_out_ends", cd->zg_ends);
                 add_num(co, "explained", cd->expl_hold);
                 add_num(co, "explained_lo", cd->expl_lo);
                 add_num(co, "explained_hi", cd->expl_hi);

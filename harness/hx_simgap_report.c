@@ -14,6 +14,7 @@ static const char *dom_title(int dom)
     case SG_PSD: return "PSD";
     case SG_LATTICE: return "value lattice";
     case SG_TIMING: return "timing";
+    case SG_TIME: return "time domain";
     default: return "navigation";
     }
 }
@@ -99,6 +100,8 @@ static void range_text(char *b, size_t n, const sg_loc_t *L)
         snprintf(b, n, "%.3g-%.3g %s", L->x_lo, L->x_hi, u);
     } else if (L->dom == SG_LATTICE) {
         snprintf(b, n, "values on a lattice of step %.4g", L->x_lo);
+    } else if (L->dom == SG_TIME) {
+        snprintf(b, n, "%s, t %.0f-%.0f s", sg_time_kind_name(L->kind), L->x_lo, L->x_hi);
     } else {
         snprintf(b, n, "t %.1f-%.1f s", L->x_lo, L->x_hi);
     }
@@ -142,6 +145,9 @@ static void print_static(FILE *f, const sg_result_t *r)
         range_text(b, sizeof b, L);
         if (L->dom == SG_LATTICE) {
             fprintf(f, "  %s, %s: %.0f sigma above the twin\n", ch_title(L->ch), b, L->peak_z);
+        } else if (L->dom == SG_TIME) {
+            fprintf(f, "  %s, %s %s, %.1f sigma %s the twin (real - twin %.3g)\n", ch_title(L->ch), dom_title(L->dom),
+                    b, fabs(L->peak_z), L->peak_z > 0 ? "above" : "below", L->ratio);
         } else {
             fprintf(f, "  %s, %s %s, %.1f sigma %s the twin (%s x%.3g)\n", ch_title(L->ch), dom_title(L->dom), b,
                     fabs(L->peak_z), L->peak_z > 0 ? "above" : "below", L->dom == SG_ALLAN ? "ADEV" : "amplitude",
@@ -174,6 +180,9 @@ static void print_static(FILE *f, const sg_result_t *r)
             range_text(b, sizeof b, L);
             if (L->dom == SG_LATTICE) {
                 fprintf(f, "  %s, %s: %.0f sigma above the profile's twin\n", ch_title(L->ch), b, L->peak_z);
+            } else if (L->dom == SG_TIME) {
+                fprintf(f, "  %s, %s %s, %.1f sigma %s the profile's twin (real - twin %.3g)\n", ch_title(L->ch),
+                        dom_title(L->dom), b, fabs(L->peak_z), L->peak_z > 0 ? "above" : "below", L->ratio);
             } else {
                 fprintf(f, "  %s, %s %s, %.1f sigma %s the profile's twin (%s x%.3g)\n", ch_title(L->ch),
                         dom_title(L->dom), b, fabs(L->peak_z), L->peak_z > 0 ? "above" : "below",
@@ -208,9 +217,11 @@ static void print_static(FILE *f, const sg_result_t *r)
                     if (cd->z_ends == cd->z_ends) {
                         snprintf(zf, sizeof zf, " (middle %+.1f, ends %+.1f)", cd->z_mid, cd->z_ends);
                     }
-                    fprintf(f, "  step %d %c %-58s fit dQ %.1f; held out: G %.3g -> %.3g, score %+.1f sigma%s, %s\n",
+                    fprintf(f,
+                            "  step %d %c %-58s fit dQ %.1f; held out: G %.3g -> %.3g, score %+.1f sigma%s, "
+                            "likelihood ratio %+.1f sigma, deviance drop %.3g (ends %.3g), %s\n",
                             i + 1, j == st->selected ? '*' : ' ', b, cd->dQ_fit, st->G_hold_before, cd->G_hold,
-                            cd->z_delta, zf, ex);
+                            cd->z_delta, zf, cd->z_gap, cd->dL_rank, cd->dL_ends, ex);
                 } else {
                     fprintf(f, "  step %d   %-58s fit dQ %.1f; not simulated\n", i + 1, b, cd->dQ_fit);
                 }

@@ -2,6 +2,7 @@
  * lattice) and the comparison of a real segment with its twins
  * (hx_simgap.h, docs/simgap.md). */
 #include "hx_simgap.h"
+#include "hx_cli.h"
 
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_sf_psi.h>
@@ -9,12 +10,18 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const k_dom[SG_NDOM] = { "allan", "psd", "lattice", "timing", "nav" };
+static const char *const k_dom[SG_NDOM] = { "allan", "psd", "lattice", "timing", "nav", "time" };
 static const char *const k_ch[SG_NCH] = { "ax", "ay", "az", "gx", "gy", "gz" };
 
 const char *sg_domain_name(int dom)
 {
     return (dom >= 0 && dom < SG_NDOM) ? k_dom[dom] : "?";
+}
+
+const char *sg_time_kind_name(int kind)
+{
+    static const char *const k[SG_TIME_NKIND] = { "trend", "curvature", "steps" };
+    return (kind >= 0 && kind < SG_TIME_NKIND) ? k[kind] : "?";
 }
 
 const char *sg_channel_name(int ch)
@@ -109,6 +116,7 @@ int sg_acc_init(sg_acc_t *a, const sg_feat_cfg_t *cfg, long n, double q)
             }
         }
     }
+    a->td = n >= 16L * SG_TD_K;
     nfft = pick_nfft(n, cfg->nfft_max);
     if (nfft > 0u) {
         fnav_welch_config_t wc = fnav_welch_config_default;
@@ -155,7 +163,52 @@ void sg_acc_push(sg_acc_t *a, double x)
         a->prev = x;
         a->have_prev = 1;
     }
+    if (a->td && a->n < a->n_expect) {
+        /* u from -1 to 1 over the block; c = P2(u) minus its grid mean
+         * 1 / (n - 1), so that sum c = sum u = 0 and the offset x0 drops out */
+        const double nm1 = (double)(a->n_expect - 1);
+        const double u = 2.0 * (double)a->n / nm1 - 1.0, c = 0.5 * (3.0 * u * u - 1.0) - 1.0 / nm1;
+        const double d = a->n == 0 ? 0.0 : x - a->x0;
+        const long i = (long)(((double)a->n * (double)SG_TD_K) / (double)a->n_expect);
+        if (a->n == 0) {
+            a->x0 = x;
+        }
+        a->s1 += d * u;
+        a->s1q += u * u;
+        a->s2 += d * c;
+        a->s2q += c * c;
+        a->sub[i] += d;
+        a->subn[i]++;
+    }
     a->n++;
+}
+
+/* The time-domain statistics of a block (SG_TIME_* order): trend (u/s),
+ * curvature (u) and the step statistic. */
+static void time_stats(const sg_acc_t *a, double v[SG_TIME_NKIND])
+{
+    double m[SG_TD_K], d[SG_TD_K], ad[SG_TD_K], med, mad, big = 0.0;
+    const double span_s = (double)(a->n_expect - 1) / a->cfg.rate_hz;
+    int i, nd = 0;
+    v[SG_TIME_TREND] = a->s1q > 0.0 ? (a->s1 / a->s1q) * 2.0 / span_s : 0.0;
+    v[SG_TIME_CURV] = a->s2q > 0.0 ? a->s2 / a->s2q : 0.0;
+    for (i = 0; i < SG_TD_K; i++) {
+        m[i] = a->subn[i] > 0 ? a->sub[i] / (double)a->subn[i] : 0.0;
+    }
+    /* lag-2 differences: a step inside sub-block i shows whole in d_i */
+    for (i = 1; i + 1 < SG_TD_K; i++) {
+        d[nd++] = m[i + 1] - m[i - 1];
+    }
+    memcpy(ad, d, (size_t)nd * sizeof *ad);
+    qsort(ad, (size_t)nd, sizeof *ad, hx_cmp_double);
+    med = 0.5 * (ad[(nd - 1) / 2] + ad[nd / 2]);
+    for (i = 0; i < nd; i++) {
+        ad[i] = fabs(d[i] - med);
+        big = ad[i] > big ? ad[i] : big;
+    }
+    qsort(ad, (size_t)nd, sizeof *ad, hx_cmp_double);
+    mad = 1.4826 * 0.5 * (ad[(nd - 1) / 2] + ad[nd / 2]);
+    v[SG_TIME_STEP] = (mad > 0.0 && big > 0.0) ? log(big / mad) : 0.0;
 }
 
 /* Normal score of a Rayleigh statistic R (exponential under the null):
@@ -300,6 +353,32 @@ long sg_acc_finish(sg_acc_t *a, int ch, sg_plist_t *pl, double *vals, size_t cap
             }
         }
     }
+    if (a->td && a->n == a->n_expect) {
+        double v[SG_TIME_NKIND];
+        int k;
+        time_stats(a, v);
+        for (k = 0; k < SG_TIME_NKIND; k++) {
+            if (cnt >= cap) {
+                return -1;
+            }
+            vals[cnt++] = v[k];
+            if (pl != NULL) {
+                memset(&p, 0, sizeof p);
+                p.dom = SG_TIME;
+                p.ch = ch;
+                p.kind = k;
+                p.x_lo = a->t0_s;
+                p.x_hi = a->t0_s + (double)a->n_expect / fs;
+                p.x = 0.5 * (p.x_lo + p.x_hi);
+                p.m = (uint32_t)k;
+                p.w = 1.0;
+                p.nblk = 1; /* no theory: the twins' spread */
+                if (sg_plist_add(pl, &p) != 0) {
+                    return -1;
+                }
+            }
+        }
+    }
     return (long)cnt;
 }
 
@@ -315,6 +394,7 @@ int sg_segacc_init(sg_segacc_t *a, const sg_feat_cfg_t *cfg, const sg_segs_t *s,
             sg_segacc_free(a);
             return -1;
         }
+        a->b[b].t0_s = (double)s->start[g][b] / cfg->rate_hz;
     }
     return 0;
 }
@@ -370,8 +450,8 @@ long sg_segacc_finish(sg_segacc_t *a, int ch, sg_plist_t *pl, double *vals, size
                 break;
             }
         }
-        if (q.dom == SG_LATTICE) {
-            k = -2; /* already pooled */
+        if (q.dom == SG_LATTICE || q.dom == SG_TIME) {
+            k = -2; /* already pooled (lattice), one point per block (time) */
         } else if (k >= n1) {
             continue;
         }
@@ -392,6 +472,17 @@ long sg_segacc_finish(sg_segacc_t *a, int ch, sg_plist_t *pl, double *vals, size
             break;
         }
         m++;
+    }
+    /* the second block's time-domain points follow the first's */
+    for (j = 0; j < n1 && m >= 0; j++) {
+        if (p1.p[j].dom != SG_TIME) {
+            continue;
+        }
+        if ((size_t)m >= cap || (pl != NULL && sg_plist_add(pl, &p1.p[j]) != 0)) {
+            m = -1;
+            break;
+        }
+        vals[m++] = v1[j];
     }
     free(v1);
     sg_plist_free(&p0);
@@ -581,15 +672,16 @@ static int chol_solve(int k, double *A, double *b)
  * diagonal vx is added to D instead. */
 static double zscores(const sg_plist_t *pl, const double *real, const double *twin, const int *rows, int nr,
                       const double *vx, const double *shift, int S, double *z, double *mean_out, double *sd_out,
-                      double *sdt_out, double *G_dom, double *maxz, int *imax)
+                      double *sdt_out, double *G_dom, double *maxz, int *imax, double *lnD_out)
 {
     size_t j, n = pl->n;
-    double gsum[SG_NDOM], G = 0.0;
+    double gsum[SG_NDOM], lsum[SG_NDOM], G = 0.0, L = 0.0;
     long gcnt[SG_NDOM];
     int d, nd = 0, r, k = (shift != NULL && S >= 2) ? S : 0, a, b;
     double pen = 0.0;
     double *vt = NULL, *mean = NULL, *D = NULL, *dev = NULL, *M = NULL, *rhs = NULL;
     memset(gsum, 0, sizeof gsum);
+    memset(lsum, 0, sizeof lsum);
     memset(gcnt, 0, sizeof gcnt);
     mean = (double *)malloc((n + 1) * sizeof *mean);
     vt = (double *)malloc((n + 1) * sizeof *vt);
@@ -681,6 +773,7 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
         }
         d = pl->p[j].dom;
         gsum[d] += zz * zz < SG_ZCAP * SG_ZCAP ? zz * zz : SG_ZCAP * SG_ZCAP;
+        lsum[d] += log(D[j]);
         gcnt[d]++;
         if (maxz != NULL && fabs(zz) > *maxz) {
             *maxz = fabs(zz);
@@ -693,8 +786,12 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
         }
         if (gcnt[d] > 0) {
             G += gsum[d] / (double)gcnt[d];
+            L += lsum[d] / (double)gcnt[d];
             nd++;
         }
+    }
+    if (lnD_out != NULL) {
+        *lnD_out = nd > 0 ? L / (double)nd : 0.0;
     }
     free(mean);
     free(vt);
@@ -790,7 +887,7 @@ int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int
         rows[s] = s;
     }
     out->G = zscores(pl, real, twin, rows, S, vx, shift, S, out->z, out->twin_mean, out->twin_sd, out->sd_tot, out->G_dom,
-                     &out->maxz, &out->imax);
+                     &out->maxz, &out->imax, NULL);
     /* null: each twin in turn as the real, the others as twins; the twin
      * taken as real carries the error of a model refitted to it (shift), as
      * the real carries the error of the model fitted to it */
@@ -804,7 +901,7 @@ int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int
         for (j = 0; j < n; j++) {
             pseudo[j] = twin[(size_t)s * n + j] - (shift != NULL ? shift[(size_t)s * n + j] : 0.0);
         }
-        out->G_null[s] = zscores(pl, pseudo, twin, rows, m, vx, shift, S, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
+        out->G_null[s] = zscores(pl, pseudo, twin, rows, m, vx, shift, S, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
         sum += out->G_null[s];
         sum2 += out->G_null[s] * out->G_null[s];
     }
@@ -855,5 +952,66 @@ int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int
 double sg_gap_resampled(const sg_plist_t *pl, const double *real, const double *twin, int S, const int *idx, int S2,
                         const double *vx, const double *shift)
 {
-    return zscores(pl, real, twin, idx, S2, vx, shift, S, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
+    return zscores(pl, real, twin, idx, S2, vx, shift, S, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
+}
+
+/* The Gaussian deviance of a real (or pseudo-real) against twin rows: G plus
+ * the mean ln of the z denominators, with G's weights (domains equal). */
+static double deviance(const sg_plist_t *pl, const double *real, const double *twin, const int *rows, int nr,
+                       const double *vx, const double *shift, int S)
+{
+    double lnD = 0.0;
+    double G = zscores(pl, real, twin, rows, nr, vx, shift, S, NULL, NULL, NULL, NULL, NULL, NULL, NULL, &lnD);
+    return G + lnD;
+}
+
+double sg_lr_test(const sg_plist_t *pl, const double *real, const double *ta, const double *va, const double *sa,
+                  const double *tb, const double *vb, const double *sb, int S, double *drop)
+{
+    size_t n = pl->n, j;
+    int s, r, m;
+    int *rows = (int *)malloc(((size_t)S + 1) * sizeof *rows);
+    double *pseudo = (double *)malloc((n + 1) * sizeof *pseudo);
+    double sum = 0.0, sum2 = 0.0, mean, sd, Dr;
+    if (drop != NULL) {
+        *drop = 0.0;
+    }
+    if (rows == NULL || pseudo == NULL || S < 4) {
+        free(rows);
+        free(pseudo);
+        return 0.0;
+    }
+    for (r = 0; r < S; r++) {
+        rows[r] = r;
+    }
+    Dr = deviance(pl, real, ta, rows, S, va, sa, S) - deviance(pl, real, tb, rows, S, vb, sb, S);
+    if (drop != NULL) {
+        *drop = Dr;
+    }
+    for (s = 0; s < S; s++) {
+        double D;
+        /* twin s of a as the real (as in the null of sg_compare), against
+         * the other twins of a and of b (b's paired seed shares its noise) */
+        for (m = 0, r = 0; r < S; r++) {
+            if (r != s) {
+                rows[m++] = r;
+            }
+        }
+        for (j = 0; j < n; j++) {
+            pseudo[j] = ta[(size_t)s * n + j] - (sa != NULL ? sa[(size_t)s * n + j] : 0.0);
+        }
+        D = deviance(pl, pseudo, ta, rows, m, va, sa, S) - deviance(pl, pseudo, tb, rows, m, vb, sb, S);
+        sum += D;
+        sum2 += D * D;
+    }
+    free(rows);
+    free(pseudo);
+    mean = sum / (double)S;
+    sd = sqrt((sum2 - sum * sum / (double)S) / (double)(S - 1));
+    /* a floor at a hundredth of a point's z^2 keeps a candidate that
+     * changes nothing from dividing by zero */
+    if (!(sd > 1e-2)) {
+        sd = 1e-2;
+    }
+    return (Dr - mean) / sd;
 }

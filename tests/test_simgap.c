@@ -201,6 +201,167 @@ static void test_split_disjoint(void **state)
     }
 }
 
+
+/* ------------------------------------------------------------ time domain */
+
+/* Time-domain points of segment g of an n-sample log at fs filled by f(k):
+ * their values in v[block][kind]; the number of blocks is returned. */
+static int time_points(long n, double fs, int g, double (*f)(long, void *), void *ctx, double v[SG_MAX_BLK][3],
+                       double span[SG_MAX_BLK][2])
+{
+    sg_feat_cfg_t fc = sg_feat_cfg_default(fs);
+    sg_segs_t segs;
+    sg_segacc_t a;
+    sg_plist_t pl;
+    static double vals[512];
+    long cnt, k, j;
+    int b, nb = 0;
+    memset(&pl, 0, sizeof pl);
+    sg_segs_split(n, 0.6, 1, &segs);
+    assert_int_equal(sg_segacc_init(&a, &fc, &segs, g, 0.0), 0);
+    for (b = 0; b < segs.nb[g]; b++) {
+        for (k = 0; k < segs.n[g][b]; k++) {
+            sg_segacc_push(&a, b, f(segs.start[g][b] + k, ctx));
+        }
+    }
+    cnt = sg_segacc_finish(&a, 3, &pl, vals, 512);
+    sg_segacc_free(&a);
+    assert_true(cnt > 0);
+    for (j = 0; j < cnt; j++) {
+        const sg_point_t *p = &pl.p[j];
+        if (p->dom != SG_TIME) {
+            continue;
+        }
+        b = p->x_lo < 1e-9 || segs.nb[g] == 1 ? 0 : (p->x_lo * fs > (double)segs.start[g][0] + 1.0 ? 1 : 0);
+        assert_true(p->kind >= 0 && p->kind < 3);
+        v[b][p->kind] = vals[j];
+        span[b][0] = p->x_lo;
+        span[b][1] = p->x_hi;
+        nb = b + 1 > nb ? b + 1 : nb;
+    }
+    sg_plist_free(&pl);
+    return nb;
+}
+
+typedef struct {
+    double fs, a, b, c;  /* x = a + b t + c t^2 */
+    double step_at, step; /* a step of size step at time step_at */
+    double noise;
+    fnav_rng_t rng;
+} td_sig_t;
+
+static double td_poly(long k, void *ctx)
+{
+    td_sig_t *s = (td_sig_t *)ctx;
+    const double t = (double)k / s->fs;
+    double x = s->a + s->b * t + s->c * t * t;
+    if (s->step != 0.0 && t >= s->step_at) {
+        x += s->step;
+    }
+    if (s->noise > 0.0) {
+        x += s->noise * (double)fnav_rng_gauss(&s->rng);
+    }
+    return x;
+}
+
+/* Trend and curvature are the Legendre P1 and P2 coefficients of the block:
+ * a line's slope exactly, and for c t^2 over a block of length T starting at
+ * t0 the continuous answer c T^2 / 6 (P2) and b + c (2 t0 + T) (slope), to
+ * O(1/n); a single large step shows in the step statistic, white noise does
+ * not. The point list has one set per block (two in a sandwich's fit
+ * segment). */
+static void test_time_domain_stats(void **state)
+{
+    double v[SG_MAX_BLK][3], span[SG_MAX_BLK][2];
+    td_sig_t s;
+    int nb, b;
+    (void)state;
+    memset(&s, 0, sizeof s);
+    s.fs = 100.0;
+    s.a = 9.81;
+    s.b = 2e-4;
+    nb = time_points(100000, s.fs, SG_FIT, td_poly, &s, v, span);
+    assert_int_equal(nb, 2);
+    for (b = 0; b < nb; b++) {
+        FNAV_ASSERT_CLOSE(v[b][SG_TIME_TREND], 2e-4, 0.0, 1e-9);
+        FNAV_ASSERT_CLOSE(v[b][SG_TIME_CURV], 0.0, 1e-9, 0.0);
+    }
+    s.b = 0.0;
+    s.c = 3e-6;
+    nb = time_points(100000, s.fs, SG_HOLD, td_poly, &s, v, span);
+    assert_int_equal(nb, 1);
+    {
+        const double T = span[0][1] - span[0][0], t0 = span[0][0];
+        FNAV_ASSERT_CLOSE(v[0][SG_TIME_CURV], 3e-6 * T * T / 6.0, 0.0, 1e-3);
+        FNAV_ASSERT_CLOSE(v[0][SG_TIME_TREND], 3e-6 * (2.0 * t0 + T), 0.0, 1e-3);
+    }
+    /* white noise: the largest of 30 lag-2 differences is a few robust sd */
+    memset(&s, 0, sizeof s);
+    s.fs = 100.0;
+    s.noise = 0.01;
+    fnav_rng_seed(&s.rng, 3u, 1u);
+    (void)time_points(100000, s.fs, SG_HOLD, td_poly, &s, v, span);
+    assert_true(v[0][SG_TIME_STEP] < log(6.0));
+    /* the same with a step of 20 sub-block sd in the held-out middle */
+    fnav_rng_seed(&s.rng, 3u, 1u);
+    s.step_at = 500.0;
+    s.step = 20.0 * 0.01 / sqrt(40000.0 / 32.0);
+    (void)time_points(100000, s.fs, SG_HOLD, td_poly, &s, v, span);
+    assert_true(v[0][SG_TIME_STEP] > log(10.0));
+}
+
+/* The model's expected trend and curvature (quadrature of its drift) agree
+ * with the statistics measured on the drift itself, sample by sample: a
+ * ramp's rate exactly, a thermal warm-up to 1e-3. */
+static double td_model(long k, void *ctx)
+{
+    const sg_chmodel_t *m = (const sg_chmodel_t *)ctx;
+    const double t = (double)k / 100.0;
+    double x = 0.0;
+    int i;
+    for (i = 0; i < m->n; i++) {
+        if (m->e[i].id == FNAV_EFFECT_RAMP) {
+            x += m->e[i].p[0] * t;
+        } else if (m->e[i].id == FNAV_EFFECT_THERMAL) {
+            x += m->e[i].p[0] * m->e[i].p[1] * (1.0 - exp(-t / m->e[i].p[2]));
+        }
+    }
+    return x;
+}
+
+static void test_time_domain_model(void **state)
+{
+    sg_chmodel_t m;
+    sg_effect_t e;
+    sg_point_t p;
+    double v[SG_MAX_BLK][3], span[SG_MAX_BLK][2], t0[1], t1[1];
+    int kind;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    memset(&e, 0, sizeof e);
+    e.id = FNAV_EFFECT_RAMP;
+    e.p[0] = -3e-6;
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    e.id = FNAV_EFFECT_THERMAL;
+    e.p[0] = 2e-4;
+    e.p[1] = 10.0;
+    e.p[2] = 150.0;
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    (void)time_points(100000, 100.0, SG_HOLD, td_model, &m, v, span);
+    memset(&p, 0, sizeof p);
+    p.dom = SG_TIME;
+    p.x_lo = span[0][0];
+    p.x_hi = span[0][1];
+    t0[0] = p.x_lo;
+    t1[0] = p.x_hi;
+    for (kind = SG_TIME_TREND; kind <= SG_TIME_CURV; kind++) {
+        p.kind = kind;
+        FNAV_ASSERT_CLOSE(sg_model_lnstat(&m, &p, 100.0, 1, t0, t1), v[0][kind], 0.0, 1e-3);
+    }
+    p.kind = SG_TIME_STEP;
+    assert_true(isnan(sg_model_lnstat(&m, &p, 100.0, 1, t0, t1)));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -208,6 +369,8 @@ int main(void)
         cmocka_unit_test(test_model_avar_textbook),
         cmocka_unit_test(test_lattice),
         cmocka_unit_test(test_split_disjoint),
+        cmocka_unit_test(test_time_domain_stats),
+        cmocka_unit_test(test_time_domain_model),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
