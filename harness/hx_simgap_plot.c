@@ -1,7 +1,8 @@
 /* Sim-to-real gap diagnosis: plots (gnuplot pngcairo through hx_plot_*):
  * allan.png (real vs the baseline twin and the final model's twin, whole
  * log, with the twins' spread), psd.png (the same for the Welch bands),
- * z.png (z per point with the critical values), and the walk domain's
+ * z.png (z per point with the critical values: Allan, PSD and the time
+ * domain's trend, curvature and steps), and the walk domain's
  * innovations plot (hx_simgap_nav.c). */
 #include "hx_simgap.h"
 #include "hx_simgap_nav.h"
@@ -94,10 +95,10 @@ static int plot_z(const sg_result_t *r, const char *dir, const char *cmd)
     char path[600];
     int ch, dom;
     snprintf(path, sizeof path, "%s/z.png", dir);
-    if (hx_plot_open(&p, cmd, path, 1200, 700) != 0) {
+    if (hx_plot_open(&p, cmd, path, 1200, 1000) != 0) {
         return -1;
     }
-    fprintf(p.gp, "set multiplot layout 2,1 title 'z of the real against the baseline twin, whole log (lines: the "
+    fprintf(p.gp, "set multiplot layout 3,1 title 'z of the real against the baseline twin, whole log (lines: the "
                   "critical |z|)'\nset logscale x\nset key outside right\n");
     for (dom = SG_ALLAN; dom <= SG_PSD; dom++) {
         double zc = 0.0;
@@ -122,6 +123,35 @@ static int plot_z(const sg_result_t *r, const char *dir, const char *cmd)
         fprintf(p.gp, "plot ");
         for (ch = 0; ch < SG_NCH; ch++) {
             fprintf(p.gp, "$z%d using 1:2 with linespoints pt 7 ps 0.5 title '%s', ", ch, sg_channel_name(ch));
+        }
+        fprintf(p.gp, "%.3f with lines dt 2 lc rgb 'black' notitle, %.3f with lines dt 2 lc rgb 'black' notitle\n", zc,
+                -zc);
+    }
+    /* the time domain: per channel, the trend, curvature and steps points
+     * of the whole log (one block), side by side */
+    {
+        double zc = 0.0;
+        fprintf(p.gp, "unset logscale x\nset xrange [0.5:3.5]\nset xtics ('trend' 1, 'curvature' 2, 'steps' 3)\n"
+                      "set xlabel 'time-domain statistic'\nset ylabel 'z'\nset title 'time domain'\n");
+        for (ch = 0; ch < SG_NCH; ch++) {
+            const sg_plist_t *pl = &r->pl[ch][SG_FULL];
+            const sg_cmp_t *c = &r->ch[ch].cmp[SG_FULL];
+            size_t j;
+            fprintf(p.gp, "$t%d << EOD\n", ch);
+            for (j = 0; r->ch[ch].active && c->z != NULL && j < pl->n; j++) {
+                if (pl->p[j].dom == SG_TIME) {
+                    double zz = c->z[j] > SG_ZCAP ? SG_ZCAP : (c->z[j] < -SG_ZCAP ? -SG_ZCAP : c->z[j]);
+                    fprintf(p.gp, "%.4g %.4g\n", 1.0 + (double)pl->p[j].kind + 0.08 * ((double)ch - 2.5), zz);
+                }
+            }
+            fprintf(p.gp, "EOD\n");
+            if (r->ch[ch].active && c->z_crit > zc) {
+                zc = c->z_crit;
+            }
+        }
+        fprintf(p.gp, "plot ");
+        for (ch = 0; ch < SG_NCH; ch++) {
+            fprintf(p.gp, "$t%d using 1:2 with impulses lw 3 title '%s', ", ch, sg_channel_name(ch));
         }
         fprintf(p.gp, "%.3f with lines dt 2 lc rgb 'black' notitle, %.3f with lines dt 2 lc rgb 'black' notitle\n", zc,
                 -zc);

@@ -52,7 +52,7 @@ json "$T/q.json" 'j["split"]["method"].startswith("sandwich") and all(abs(cd["z"
     pass "both folds scored: z combines middle and ends, quant significant on both" || fail "two folds: $(cat "$T/pyerr")"
 json "$T/q.json" 'all(sorted(p["kind"] for p in c["points"]["held_out"] if p["domain"] == "time") == ["curvature", "steps", "trend"] for c in j["channels"]) and all(cd["z_lr"] is not None and abs(cd["z_lr"] - (cd["z_lr_held_out_middle"] + cd["z_lr_held_out_ends"]) / 2 ** 0.5) < 1e-6 * (1 + abs(cd["z_lr"])) for c in j["channels"] for s in c["attribution"]["steps"] for cd in s["candidates"] if cd["simulated"] and cd["z_lr_held_out_ends"] is not None)' &&
     pass "time-domain points per channel; likelihood-ratio z combines both folds" || fail "time domain / z_lr: $(cat "$T/pyerr")"
-[ -s "$T/qp/allan.png" ] && [ -s "$T/qp/psd.png" ] && pass "plots written" || fail "plots: $(ls "$T/qp" 2>&1)"
+[ -s "$T/qp/allan.png" ] && [ -s "$T/qp/psd.png" ] && [ -s "$T/qp/z.png" ] && pass "plots written" || fail "plots: $(ls "$T/qp" 2>&1)"
 expect_exit 3 "unwritable JSON" "$H" simgap "$T/q.csv" --quiet --seeds 3 --max-effects 0 --json /nonexistent/dir/q.json
 
 # --walk on a static log is honoured (domain given, not detected)
