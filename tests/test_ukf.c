@@ -16,6 +16,7 @@
 
 #include "footnav/fnav_port.h"
 #include "footnav/fnav_ukf.h"
+#include "fnav_testcov.h"
 #include "fnav_testdata.h"
 
 #if FNAV_USE_DOUBLE
@@ -621,7 +622,7 @@ static void run_nees(nees_t *r)
             }
             /* NEES at the middle of every other stance and swing */
             if (k % (r->steps_per_s / 2) == r->steps_per_s / 5 && check < 64) {
-                static double e[15], Pm[15][15], L[15][15];
+                static double e[15], L[FNAV_UKF_NMAX][FNAV_UKF_NMAX];
                 int idx[15], ne = n_states, a, b2, kk;
                 fnav_vec3_t da = fnav_ukf_quat_to_grp(fnav_quat_mul(T.x.q_nb, fnav_quat_conj(f.q_nb)));
                 double nees = 0.0, y[15];
@@ -641,25 +642,11 @@ static void run_nees(nees_t *r)
                 }
                 for (a = 0; a < ne; a++) {
                     for (b2 = 0; b2 < ne; b2++) {
-                        Pm[a][b2] = (double)fnav_ukf_cov(&f, idx[a], idx[b2]);
+                        L[a][b2] = (double)fnav_ukf_cov(&f, idx[a], idx[b2]);
                     }
                 }
                 /* e^T P^-1 e by Cholesky in double */
-                for (b2 = 0; b2 < ne; b2++) {
-                    double d = Pm[b2][b2];
-                    for (kk = 0; kk < b2; kk++) {
-                        d -= L[b2][kk] * L[b2][kk];
-                    }
-                    assert_true(d > 0.0);
-                    L[b2][b2] = sqrt(d);
-                    for (a = b2 + 1; a < ne; a++) {
-                        double s = Pm[a][b2];
-                        for (kk = 0; kk < b2; kk++) {
-                            s -= L[a][kk] * L[b2][kk];
-                        }
-                        L[a][b2] = s / L[b2][b2];
-                    }
-                }
+                assert_true(fnav_test_chol(ne, L) > 0.0);
                 for (a = 0; a < ne; a++) {
                     double s = e[a];
                     for (kk = 0; kk < a; kk++) {

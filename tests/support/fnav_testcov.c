@@ -3,22 +3,10 @@
 
 #include <math.h>
 
-double fnav_test_cov_spd(const fnav_ukf_t *u, double *asym)
+double fnav_test_chol(int n, double a[][FNAV_UKF_NMAX])
 {
-    static double a[FNAV_UKF_NMAX][FNAV_UKF_NMAX];
-    int n = u->n_act, i, j, k;
     double minpiv = (double)INFINITY;
-    *asym = 0.0;
-    for (i = 0; i < n; i++) {
-        for (j = 0; j < n; j++) {
-            double pij = (double)fnav_ukf_cov(u, u->act[i], u->act[j]);
-            double pji = (double)fnav_ukf_cov(u, u->act[j], u->act[i]);
-            double d = fabs(pij - pji);
-            double r = (d == 0.0) ? 0.0 : (isfinite(d) && pji != 0.0 ? d / fabs(pji) : (double)INFINITY);
-            *asym = r > *asym ? r : *asym;
-            a[i][j] = pij;
-        }
-    }
+    int i, j, k;
     for (j = 0; j < n; j++) {
         double d = a[j][j];
         for (k = 0; k < j; k++) {
@@ -39,4 +27,22 @@ double fnav_test_cov_spd(const fnav_ukf_t *u, double *asym)
         }
     }
     return minpiv;
+}
+
+double fnav_test_cov_spd(const fnav_ukf_t *u, double *asym)
+{
+    static double a[FNAV_UKF_NMAX][FNAV_UKF_NMAX];
+    int n = u->n_act, i, j;
+    *asym = 0.0;
+    for (i = 0; i < n; i++) {
+        for (j = 0; j < n; j++) {
+            double pij = (double)fnav_ukf_cov(u, u->act[i], u->act[j]);
+            double pji = (double)fnav_ukf_cov(u, u->act[j], u->act[i]);
+            double d = fabs(pij - pji);
+            double r = (d == 0.0) ? 0.0 : (isfinite(d) && pji != 0.0 ? d / fabs(pji) : (double)INFINITY);
+            *asym = r > *asym ? r : *asym;
+            a[i][j] = pij;
+        }
+    }
+    return fnav_test_chol(n, a);
 }

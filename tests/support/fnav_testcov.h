@@ -8,6 +8,13 @@
 
 #include "footnav/fnav_ukf.h"
 
+/** Cholesky factorisation in double, in place: the lower triangle of the
+ *  n x n matrix a becomes L (a = L L^T; the strict upper triangle is not
+ *  used). Returns the smallest pivot relative to its diagonal element; a
+ *  value <= 0 or NaN means not positive definite (the factorisation stops
+ *  at the first such pivot and returns it). */
+double fnav_test_chol(int n, double a[][FNAV_UKF_NMAX]);
+
 /** Factorises the active covariance of u by Cholesky in double.
  *  Returns the smallest pivot relative to its diagonal element; a value
  *  <= 0 or NaN means not positive definite (the factorisation stops at the
