@@ -89,73 +89,57 @@ static int plot_domain(const sg_result_t *r, const char *dir, const char *cmd, i
     return hx_plot_close(&p, cmd);
 }
 
+/* The z of every whole-log point of domain dom, one data block per channel
+ * ($<tag><ch>; x the point's x, or for the time domain its kind with the
+ * channels side by side), and the panel's plot line (style per channel;
+ * dashed lines at the largest critical |z| of the channels). */
+static void z_panel(FILE *gp, const sg_result_t *r, int dom, char tag, const char *style)
+{
+    double zc = 0.0;
+    int ch;
+    for (ch = 0; ch < SG_NCH; ch++) {
+        const sg_plist_t *pl = &r->pl[ch][SG_FULL];
+        const sg_cmp_t *c = &r->ch[ch].cmp[SG_FULL];
+        size_t j;
+        fprintf(gp, "$%c%d << EOD\n", tag, ch);
+        for (j = 0; r->ch[ch].active && c->z != NULL && j < pl->n; j++) {
+            if (pl->p[j].dom == dom) {
+                double zz = c->z[j] > SG_ZCAP ? SG_ZCAP : (c->z[j] < -SG_ZCAP ? -SG_ZCAP : c->z[j]);
+                double x = dom == SG_TIME ? 1.0 + (double)pl->p[j].kind + 0.08 * ((double)ch - 2.5) : pl->p[j].x;
+                fprintf(gp, "%.6g %.4g\n", x, zz);
+            }
+        }
+        fprintf(gp, "EOD\n");
+        if (r->ch[ch].active && c->z_crit > zc) {
+            zc = c->z_crit;
+        }
+    }
+    fprintf(gp, "plot ");
+    for (ch = 0; ch < SG_NCH; ch++) {
+        fprintf(gp, "$%c%d using 1:2 with %s title '%s', ", tag, ch, style, sg_channel_name(ch));
+    }
+    fprintf(gp, "%.3f with lines dt 2 lc rgb 'black' notitle, %.3f with lines dt 2 lc rgb 'black' notitle\n", zc, -zc);
+}
+
 static int plot_z(const sg_result_t *r, const char *dir, const char *cmd)
 {
     hx_plot_t p;
     char path[600];
-    int ch, dom;
     snprintf(path, sizeof path, "%s/z.png", dir);
     if (hx_plot_open(&p, cmd, path, 1200, 1000) != 0) {
         return -1;
     }
     fprintf(p.gp, "set multiplot layout 3,1 title 'z of the real against the baseline twin, whole log (lines: the "
-                  "critical |z|)'\nset logscale x\nset key outside right\n");
-    for (dom = SG_ALLAN; dom <= SG_PSD; dom++) {
-        double zc = 0.0;
-        fprintf(p.gp, "set xlabel '%s'\nset ylabel 'z'\nset title '%s'\n", dom == SG_ALLAN ? "tau [s]" : "frequency [Hz]",
-                dom == SG_ALLAN ? "Allan" : "PSD bands");
-        for (ch = 0; ch < SG_NCH; ch++) {
-            const sg_plist_t *pl = &r->pl[ch][SG_FULL];
-            const sg_cmp_t *c = &r->ch[ch].cmp[SG_FULL];
-            size_t j;
-            fprintf(p.gp, "$z%d << EOD\n", ch);
-            for (j = 0; r->ch[ch].active && c->z != NULL && j < pl->n; j++) {
-                if (pl->p[j].dom == dom) {
-                    double zz = c->z[j] > SG_ZCAP ? SG_ZCAP : (c->z[j] < -SG_ZCAP ? -SG_ZCAP : c->z[j]);
-                    fprintf(p.gp, "%.6g %.4g\n", pl->p[j].x, zz);
-                }
-            }
-            fprintf(p.gp, "EOD\n");
-            if (r->ch[ch].active && c->z_crit > zc) {
-                zc = c->z_crit;
-            }
-        }
-        fprintf(p.gp, "plot ");
-        for (ch = 0; ch < SG_NCH; ch++) {
-            fprintf(p.gp, "$z%d using 1:2 with linespoints pt 7 ps 0.5 title '%s', ", ch, sg_channel_name(ch));
-        }
-        fprintf(p.gp, "%.3f with lines dt 2 lc rgb 'black' notitle, %.3f with lines dt 2 lc rgb 'black' notitle\n", zc,
-                -zc);
-    }
+                  "critical |z|)'\nset logscale x\nset key outside right\nset ylabel 'z'\n");
+    fprintf(p.gp, "set xlabel 'tau [s]'\nset title 'Allan'\n");
+    z_panel(p.gp, r, SG_ALLAN, 'a', "linespoints pt 7 ps 0.5");
+    fprintf(p.gp, "set xlabel 'frequency [Hz]'\nset title 'PSD bands'\n");
+    z_panel(p.gp, r, SG_PSD, 'p', "linespoints pt 7 ps 0.5");
     /* the time domain: per channel, the trend, curvature and steps points
      * of the whole log (one block), side by side */
-    {
-        double zc = 0.0;
-        fprintf(p.gp, "unset logscale x\nset xrange [0.5:3.5]\nset xtics ('trend' 1, 'curvature' 2, 'steps' 3)\n"
-                      "set xlabel 'time-domain statistic'\nset ylabel 'z'\nset title 'time domain'\n");
-        for (ch = 0; ch < SG_NCH; ch++) {
-            const sg_plist_t *pl = &r->pl[ch][SG_FULL];
-            const sg_cmp_t *c = &r->ch[ch].cmp[SG_FULL];
-            size_t j;
-            fprintf(p.gp, "$t%d << EOD\n", ch);
-            for (j = 0; r->ch[ch].active && c->z != NULL && j < pl->n; j++) {
-                if (pl->p[j].dom == SG_TIME) {
-                    double zz = c->z[j] > SG_ZCAP ? SG_ZCAP : (c->z[j] < -SG_ZCAP ? -SG_ZCAP : c->z[j]);
-                    fprintf(p.gp, "%.4g %.4g\n", 1.0 + (double)pl->p[j].kind + 0.08 * ((double)ch - 2.5), zz);
-                }
-            }
-            fprintf(p.gp, "EOD\n");
-            if (r->ch[ch].active && c->z_crit > zc) {
-                zc = c->z_crit;
-            }
-        }
-        fprintf(p.gp, "plot ");
-        for (ch = 0; ch < SG_NCH; ch++) {
-            fprintf(p.gp, "$t%d using 1:2 with impulses lw 3 title '%s', ", ch, sg_channel_name(ch));
-        }
-        fprintf(p.gp, "%.3f with lines dt 2 lc rgb 'black' notitle, %.3f with lines dt 2 lc rgb 'black' notitle\n", zc,
-                -zc);
-    }
+    fprintf(p.gp, "unset logscale x\nset xrange [0.5:3.5]\nset xtics ('trend' 1, 'curvature' 2, 'steps' 3)\n"
+                  "set xlabel 'time-domain statistic'\nset title 'time domain'\n");
+    z_panel(p.gp, r, SG_TIME, 't', "impulses lw 3");
     fprintf(p.gp, "unset multiplot\n");
     return hx_plot_close(&p, cmd);
 }

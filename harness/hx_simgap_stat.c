@@ -773,7 +773,9 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
         }
         d = pl->p[j].dom;
         gsum[d] += zz * zz < SG_ZCAP * SG_ZCAP ? zz * zz : SG_ZCAP * SG_ZCAP;
-        lsum[d] += log(D[j]);
+        if (lnD_out != NULL) {
+            lsum[d] += log(D[j]);
+        }
         gcnt[d]++;
         if (maxz != NULL && fabs(zz) > *maxz) {
             *maxz = fabs(zz);
