@@ -269,6 +269,15 @@ static void twinset_free(twinset_t *t)
     }
 }
 
+/* The time points of a table weighted by the baseline twins' spread
+ * (once they exist: the baseline fit itself has no drift to fit). */
+static void table_weights(const sg_result_t *r, int ch, int g, sg_table_t *t)
+{
+    if (r->twin[ch][g] != NULL) {
+        sg_table_time_weights(t, r->twin[ch][g], r->pl[ch][g].n, r->S);
+    }
+}
+
 /* Spread of the model's predictions when it is refitted on each twin's
  * fit segment: the sampling uncertainty of the fitted parameters, carried
  * into every point of every segment (a parametric bootstrap of the fit). */
@@ -299,6 +308,7 @@ static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, cons
         sg_table_t tb;
         sg_fit_t f;
         sg_table_from(&pl[gfit], t->v[gfit] + (size_t)s * pl[gfit].n, ch, fs, &r->segs, gfit, &tb);
+        table_weights(r, ch, gfit, &tb);
         if (sg_fit_model(&tb, gen->mean, with, nwith, ev, tmax, &f) != 0) {
             for (g = 0; g < SG_NSEG; g++) {
                 for (j = 0; j < pl[g].n; j++) {
@@ -648,7 +658,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     c->final = c->baseline;
     for (step = 0; step < o->max_steps; step++) {
         sg_step_t *st = &c->step[step];
-        int order[N_STATIC_CANDS], nord = 0, best = -1, k;
+        int order[N_STATIC_CANDS], nord = 0, best = -1, k, th_nested, nskip = 0;
         double bestdL = 0.0;
         twinset_t bestset;
         sg_cmp_t bestcmp[SG_NSEG];
@@ -666,9 +676,19 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
         (void)zacc;
         if (r->segs.sandwich) {
             sg_table_from(&r->pl[ch][SG_HOLD], r->real[ch][SG_HOLD], ch, r->rate_hz, &r->segs, SG_HOLD, &tabm);
+            table_weights(r, ch, SG_HOLD, &tabm);
         }
         if (sg_fit_model(tab, c->baseline.mean, with, nwith, &c->ev, tmax, &curfit) != 0) {
             break;
+        }
+        /* parsimony between nested drifts: a warm-up is a ramp plus
+         * curvature (a ramp is its long-time-constant limit); when the fit
+         * segment's trends, curvatures and level do not need the curvature
+         * (the warm-up's fit beats the ramp's by less than chi-square_1 at
+         * 1 %), the warm-up is not simulated: the ramp stands for it */
+        {
+            const double qr = sg_time_fit_q(tab, 0), qt = sg_time_fit_q(tab, 1);
+            th_nested = qr == qr && qt == qt && qr - qt < gsl_cdf_chisq_Qinv(0.01, 1.0);
         }
         /* fit every eligible candidate on the fit segment */
         for (i = 0; i < N_STATIC_CANDS; i++) {
@@ -687,8 +707,13 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             memset(cd, 0, sizeof *cd);
             cd->id = id;
             cd->eff = f.model.e[sg_model_find(&f.model, id)];
+            /* ranked by the Allan objective; the time points' residuals
+             * (in the baseline twins' variances, which a random-walk real
+             * exceeds for every model: only a drift can lower them) join
+             * only the threshold */
             cd->Q_fit = f.Q;
-            cd->dQ_fit = curfit.Q - f.Q;
+            cd->dQ_fit = (curfit.Q + curfit.Q_time) - (f.Q + f.Q_time);
+            cd->nested = id == FNAV_EFFECT_THERMAL && th_nested;
             cd->expl_hold = cd->expl_lo = cd->expl_hi = (double)NAN;
             cd->G_fit = cd->G_hold = (double)NAN;
             order[nord++] = st->ncand - 1;
@@ -720,8 +745,12 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             double dG;
             /* a candidate is tested on the held-out segment when the fit
              * segment supports it (objective lower by SG_DQ_TEST) */
-            if (!pri && (i >= o->prescreen + (c->ev.q_z > zc) + (c->ev.tone_score > 3.0) ||
-                         !(cd->eff.p[mag_index(cd->id)] != 0.0) || !(curfit.Q - cd->Q_fit > SG_DQ_TEST))) {
+            if (cd->nested) {
+                nskip++; /* the ramp stands for it; its prescreen place goes to the next */
+                continue;
+            }
+            if (!pri && (i - nskip >= o->prescreen + (c->ev.q_z > zc) + (c->ev.tone_score > 3.0) ||
+                         !(cd->eff.p[mag_index(cd->id)] != 0.0) || !(cd->dQ_fit > SG_DQ_TEST))) {
                 continue;
             }
             memcpy(w2, with, (size_t)nwith * sizeof *w2);
@@ -1038,6 +1067,7 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
                 return -1;
             }
         }
+        table_weights(r, ch, SG_FIT, &tfit);
         c->gap_full = c->cmp[SG_FULL].significant;
         c->gap_hold = c->cmp[SG_HOLD].significant;
         done += 1.0;

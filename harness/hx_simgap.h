@@ -57,6 +57,11 @@ enum {
                             isolated steps make it large, Gaussian increments do not */
     SG_TIME_NKIND
 };
+/** The segment's level point (a two-block segment only, one per segment):
+ *  the mean of the second block minus the mean of the first, u; x_lo the
+ *  first block's start, x_hi the second's end, x_blk each block's length.
+ *  A drift's strongest evidence over a sandwich's ends. */
+#define SG_TIME_LEVEL SG_TIME_NKIND
 #define SG_TD_K 32          /**< sub-blocks of a block for the step statistic */
 /** Segments: the whole log, the fit segment, the held-out segment. */
 enum { SG_FULL = 0, SG_FIT, SG_HOLD, SG_NSEG };
@@ -96,6 +101,7 @@ typedef struct {
                                    at comparison time from the noise type) */
     double w;                 /**< weight of the estimate when blocks are pooled (terms, segments) */
     int nblk;                 /**< independent blocks pooled (EDF adds up) */
+    double x_blk;             /**< time domain level point: length of each of the two blocks, s */
 } sg_point_t;
 
 /** A list of points. */
@@ -327,16 +333,23 @@ typedef struct {
                                                            -log10 of its false-alarm probability */
     int nsteps;               /**< bias steps detected */
     double step_rms;          /**< their RMS size */
+    double step_min;          /**< smallest step size the detector finds (its threshold at the best scale), u */
+    double span_s;            /**< time the detector searched (the fit segment), s */
     double slope;             /**< least-squares slope of the fit segment, u/s */
 } sg_evidence_t;
 
 /** Fit result of one model on the fit segment's Allan table. */
 typedef struct {
     sg_chmodel_t model;
-    double Q;                 /**< weighted sum of squared log residuals */
+    double Q;                 /**< weighted sum of squared log residuals (Allan) */
+    double Q_time;            /**< sum of the time points' squared residuals over the baseline twins'
+                                   variances (0 without them): what a drift explains */
     int npts;
     int ok;
 } sg_fit_t;
+
+/** Time points of a fit table: trend and curvature per block, one level. */
+#define SG_TAB_NT (2 * SG_MAX_BLK + 1)
 
 /** Allan table of a segment for fitting: ln AVAR, m, EDF of each point. */
 typedef struct {
@@ -347,6 +360,15 @@ typedef struct {
     double rate_hz;
     int nb;                   /**< blocks of the segment */
     double t0_s[SG_MAX_BLK], t1_s[SG_MAX_BLK]; /**< their time spans (for thermal) */
+    /* time domain: the blocks' trend and curvature, which fix the
+     * deterministic drifts (ramp, thermal) with their signs */
+    int nt;
+    int tkind[SG_TAB_NT];               /**< SG_TIME_TREND, SG_TIME_CURV or SG_TIME_LEVEL */
+    size_t tidx[SG_TAB_NT];             /**< index of the point in the list */
+    double ty[SG_TAB_NT];               /**< value (u/s or u) */
+    double tw[SG_TAB_NT];               /**< 1 / variance (white-noise shape unless set from twins) */
+    double tlo[SG_TAB_NT], thi[SG_TAB_NT], tblk[SG_TAB_NT]; /**< span and (level) block length, s */
+    int tw_twins;                       /**< tw are 1 / the twins' variances (absolute) */
 } sg_table_t;
 
 /** Allan table of the Allan points of channel ch in a point list / values,
@@ -355,6 +377,15 @@ typedef struct {
  *  effects' signatures; the AR(1) time bound still follows SG_ID_FRAC). */
 void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate_hz, const sg_segs_t *segs, int g,
                    sg_table_t *t);
+
+/** Weighted residual of the time-domain fit of a ramp alone (thermal 0)
+ *  or a warm-up alone (thermal 1) to a table's trend and curvature, in the
+ *  twins' variances (chi-square-like); NAN without twin weights. */
+double sg_time_fit_q(const sg_table_t *t, int thermal);
+
+/** Weights of a table's time-domain points from S twins' values of the same
+ *  list (vals[s * npts + j]): 1 / their variance. */
+void sg_table_time_weights(sg_table_t *t, const double *vals, size_t npts, int S);
 
 /**
  * Fit white + AR(1) (correlation time at most tmax_s) plus the effects
@@ -444,6 +475,8 @@ typedef struct {
     double z_gap;             /**< the two folds' likelihood-ratio z combined (Stouffer) */
     double dL_mid, dL_ends;   /**< the real's deviance drop per fold (NaN: no second fold) */
     double dL_rank;           /**< their sum: what ranks the accepted candidates */
+    int nested;               /**< thermal only: its warm-up fits the fit segment's trend and curvature no
+                                   better than a ramp (chi-square_1 at 1 %); not simulated, the ramp stands for it */
 } sg_cand_t;
 
 /** One forward-selection step of a channel. */

@@ -230,12 +230,25 @@ static double model_drift(const sg_chmodel_t *mdl, double t)
 
 /* Expected trend (u/s) or curvature (u) of a block [t0, t1] under a model:
  * the Legendre projections of its deterministic drift (midpoint rule;
- * the random parts have expectation zero). */
-static double model_time_stat(const sg_chmodel_t *mdl, int kind, double t0, double t1)
+ * the random parts have expectation zero); or the level (u) of a two-block
+ * segment spanning [t0, t1] with blocks of blk s: the drift's mean over the
+ * second block minus its mean over the first. */
+static double model_time_stat(const sg_chmodel_t *mdl, int kind, double t0, double t1, double blk)
 {
     enum { NQ = 256 };
     double s = 0.0, q = 0.0, pm = 0.0;
     int i;
+    if (kind == SG_TIME_LEVEL) {
+        /* mean over the second block minus mean over the first */
+        if (!(blk > 0.0) || !(t1 - t0 >= blk)) {
+            return (double)NAN;
+        }
+        for (i = 0; i < NQ; i++) {
+            double f = ((double)i + 0.5) / (double)NQ * blk;
+            s += model_drift(mdl, t1 - blk + f) - model_drift(mdl, t0 + f);
+        }
+        return s / (double)NQ;
+    }
     if (kind == SG_TIME_CURV) {
         for (i = 0; i < NQ; i++) {
             double u = -1.0 + 2.0 * ((double)i + 0.5) / (double)NQ;
@@ -259,8 +272,8 @@ static double model_time_stat(const sg_chmodel_t *mdl, int kind, double t0, doub
 double sg_model_lnstat(const sg_chmodel_t *mdl, const sg_point_t *p, double rate_hz, int nb, const double *t0_s,
                        const double *t1_s)
 {
-    if (p->dom == SG_TIME && (p->kind == SG_TIME_TREND || p->kind == SG_TIME_CURV)) {
-        return model_time_stat(mdl, p->kind, p->x_lo, p->x_hi);
+    if (p->dom == SG_TIME && (p->kind == SG_TIME_TREND || p->kind == SG_TIME_CURV || p->kind == SG_TIME_LEVEL)) {
+        return model_time_stat(mdl, p->kind, p->x_lo, p->x_hi, p->x_blk);
     }
     if (p->dom == SG_ALLAN) {
         double v = sg_model_avar_blocks(mdl, rate_hz, (double)p->m, nb, t0_s, t1_s);
@@ -303,6 +316,31 @@ void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate
         }
     }
     t->n = k;
+    for (j = 0; j < pl->n; j++) {
+        const sg_point_t *q = &pl->p[j];
+        double L = q->x_hi - q->x_lo;
+        if (q->dom != SG_TIME || q->ch != ch ||
+            (q->kind != SG_TIME_TREND && q->kind != SG_TIME_CURV && q->kind != SG_TIME_LEVEL) ||
+            t->nt >= SG_TAB_NT || !(L > 0.0) || vals[j] != vals[j]) {
+            continue;
+        }
+        t->tkind[t->nt] = q->kind;
+        t->tidx[t->nt] = j;
+        t->ty[t->nt] = vals[j];
+        t->tlo[t->nt] = q->x_lo;
+        t->thi[t->nt] = q->x_hi;
+        t->tblk[t->nt] = q->x_blk;
+        /* white noise sigma^2 per sample: the Legendre coefficient l has
+         * variance (2l + 1) sigma^2 / N, so the slope 12 sigma^2 / (N L^2),
+         * the curvature 5 sigma^2 / N and a difference of two block means
+         * 2 sigma^2 / N (common factor sigma^2 / f_s dropped) */
+        if (q->kind == SG_TIME_LEVEL) {
+            t->tw[t->nt] = q->x_blk / 2.0;
+        } else {
+            t->tw[t->nt] = q->kind == SG_TIME_TREND ? L * L * L / 12.0 : L / 5.0;
+        }
+        t->nt++;
+    }
     for (j = 0; j < k; j++) {
         size_t a = j > 0 ? j - 1 : j, bb = j + 1 < k ? j + 1 : j;
         double sl = 0.0, nu, var;
@@ -319,6 +357,35 @@ void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate
         var = nu > 0.0 ? (nu > 1e6 ? 2.0 / nu : gsl_sf_psi_1(0.5 * nu)) : 1.0;
         /* model floor (SG_FIT_FLOOR): the short-tau points' EDF reach 10^6 */
         t->w[j] = 1.0 / (var + SG_FIT_FLOOR * SG_FIT_FLOOR);
+    }
+}
+
+void sg_table_time_weights(sg_table_t *t, const double *vals, size_t npts, int S)
+{
+    int k, s, ok = 1;
+    double w[SG_TAB_NT];
+    if (S < 3 || t->nt == 0) {
+        return;
+    }
+    for (k = 0; k < t->nt; k++) {
+        double m = 0.0, v = 0.0;
+        for (s = 0; s < S; s++) {
+            m += vals[(size_t)s * npts + t->tidx[k]];
+        }
+        m /= (double)S;
+        for (s = 0; s < S; s++) {
+            double d = vals[(size_t)s * npts + t->tidx[k]] - m;
+            v += d * d;
+        }
+        v /= (double)(S - 1);
+        if (!(v > 0.0) || !isfinite(v)) {
+            ok = 0;
+        }
+        w[k] = 1.0 / v;
+    }
+    if (ok) {
+        memcpy(t->tw, w, (size_t)t->nt * sizeof *w);
+        t->tw_twins = 1;
     }
 }
 
@@ -609,11 +676,232 @@ static void fit_errors(const sg_table_t *t, skel_t *s)
     }
 }
 
+/* Weighted least squares of the time points on nc <= 2 columns X; the
+ * coefficients c, their covariance (XᵀWX)⁻¹ in cov; returns the weighted
+ * residual sum, INFINITY when singular. */
+static double time_ls(const sg_table_t *t, int nc, double X[][2], double *c, double cov[2][2])
+{
+    double a = 0.0, b = 0.0, d = 0.0, u = 0.0, v = 0.0, det, q = 0.0;
+    int k;
+    for (k = 0; k < t->nt; k++) {
+        a += t->tw[k] * X[k][0] * X[k][0];
+        u += t->tw[k] * X[k][0] * t->ty[k];
+        if (nc > 1) {
+            b += t->tw[k] * X[k][0] * X[k][1];
+            d += t->tw[k] * X[k][1] * X[k][1];
+            v += t->tw[k] * X[k][1] * t->ty[k];
+        }
+    }
+    if (nc == 1) {
+        if (!(a > 0.0)) {
+            return INFINITY;
+        }
+        c[0] = u / a;
+        cov[0][0] = 1.0 / a;
+    } else {
+        det = a * d - b * b;
+        if (!(det > 1e-12 * a * d)) {
+            return INFINITY;
+        }
+        c[0] = (d * u - b * v) / det;
+        c[1] = (a * v - b * u) / det;
+        cov[0][0] = d / det;
+        cov[1][1] = a / det;
+        cov[0][1] = cov[1][0] = -b / det;
+    }
+    for (k = 0; k < t->nt; k++) {
+        double r = t->ty[k] - c[0] * X[k][0] - (nc > 1 ? c[1] * X[k][1] : 0.0);
+        q += t->tw[k] * r * r;
+    }
+    return q;
+}
+
+/* Columns of the time fit at warm-up time constant T: the expected trend
+ * and curvature of a unit warm-up (1 - exp(-t/T)) and of a unit ramp t. */
+static int time_cols(const sg_table_t *t, int th, int rp, double T, double X[][2])
+{
+    sg_chmodel_t u;
+    int k, nc = 0;
+    memset(&u, 0, sizeof u);
+    u.n = 1;
+    for (k = 0; k < t->nt; k++) {
+        nc = 0;
+        if (th) {
+            u.e[0].id = FNAV_EFFECT_THERMAL;
+            u.e[0].p[0] = u.e[0].p[1] = 1.0;
+            u.e[0].p[2] = T;
+            X[k][nc++] = model_time_stat(&u, t->tkind[k], t->tlo[k], t->thi[k], t->tblk[k]);
+        }
+        if (rp) {
+            memset(&u.e[0], 0, sizeof u.e[0]);
+            u.e[0].id = FNAV_EFFECT_RAMP;
+            u.e[0].p[0] = 1.0;
+            X[k][nc++] = model_time_stat(&u, t->tkind[k], t->tlo[k], t->thi[k], t->tblk[k]);
+        }
+    }
+    return nc;
+}
+
+/* Time-domain fit of the deterministic drifts of a model (thermal at index
+ * it, ramp at ir; -1 when absent) on the blocks' trend and curvature: the
+ * drift A (1 - exp(-t/T)) + R t is linear in A and R for a fixed T (a grid
+ * in ln T from 10 s to twice the segment's end, refined by golden section).
+ * The signed amplitudes go into the model (thermal: coef = A / rise, rise
+ * keeping its value) with standard errors: from the twins' variances when
+ * the weights are theirs (conditional on T), else scaled by the residual.
+ * Returns 0, -1 when the table has no time points or the fit is singular. */
+static int time_fit(const sg_table_t *t, sg_chmodel_t *m, int it, int ir)
+{
+    enum { NG = 48 };
+    double X[SG_TAB_NT][2], c[2] = { 0.0, 0.0 }, cov[2][2], best = INFINITY, bT = 0.0, disp = 1.0;
+    const int th = it >= 0, rp = ir >= 0, np = th + rp;
+    int nc, g;
+    if (t->nt == 0 || np == 0) {
+        return -1;
+    }
+    if (th) {
+        double te = t->t1_s[t->nb - 1], lo = log(10.0), hi = log(2.0 * (te > 20.0 ? te : 20.0)), step = (hi - lo) / (double)(NG - 1), a, b;
+        const double gr = 0.6180339887498949;
+        for (g = 0; g < t->nt; g++) {
+            te = t->thi[g] > te ? t->thi[g] : te;
+        }
+        hi = log(2.0 * (te > 20.0 ? te : 20.0));
+        step = (hi - lo) / (double)(NG - 1);
+        for (g = 0; g < NG; g++) {
+            double T = exp(lo + step * (double)g), q;
+            nc = time_cols(t, th, rp, T, X);
+            q = time_ls(t, nc, X, c, cov);
+            if (q < best) {
+                best = q;
+                bT = T;
+            }
+        }
+        if (!isfinite(best)) {
+            return -1;
+        }
+        a = log(bT) - step > lo ? log(bT) - step : lo;
+        b = log(bT) + step < hi ? log(bT) + step : hi;
+        for (g = 0; g < 40 && b - a > 1e-6; g++) {
+            double x1 = b - gr * (b - a), x2 = a + gr * (b - a), q1, q2;
+            q1 = time_ls(t, time_cols(t, th, rp, exp(x1), X), X, c, cov);
+            q2 = time_ls(t, time_cols(t, th, rp, exp(x2), X), X, c, cov);
+            if (q1 < q2) {
+                b = x2;
+            } else {
+                a = x1;
+            }
+        }
+        if (time_ls(t, time_cols(t, th, rp, exp(0.5 * (a + b)), X), X, c, cov) <= best) {
+            bT = exp(0.5 * (a + b));
+        }
+    }
+    nc = time_cols(t, th, rp, bT, X);
+    best = time_ls(t, nc, X, c, cov);
+    if (!isfinite(best)) {
+        return -1;
+    }
+    if (!t->tw_twins) {
+        disp = t->nt > np + (th ? 1 : 0) ? best / (double)(t->nt - np - (th ? 1 : 0)) : (double)NAN;
+    }
+    if (th) {
+        sg_effect_t *e = &m->e[it];
+        double rise = e->p[1] != 0.0 ? e->p[1] : 1.0;
+        e->p[0] = c[0] / rise;
+        e->p[2] = bT;
+        e->se[0] = sqrt(cov[0][0] * disp) / fabs(rise);
+    }
+    if (rp) {
+        sg_effect_t *e = &m->e[ir];
+        e->p[0] = c[th ? 1 : 0];
+        e->se[0] = sqrt(cov[th ? 1 : 0][th ? 1 : 0] * disp);
+    }
+    return 0;
+}
+
+/* The steps the detector misses. It finds a step when its size exceeds
+ * about c (ev->step_min), so of steps N(0, amp^2) it finds the fraction
+ * P(amp) = 2 Q(c / amp): a rate of n found / T underestimates the rate and
+ * (with the Allan level K^2 = rate amp^2, which the fit fixes) overstates
+ * the size. With u = c / amp, n = (K^2 / amp^2) T P gives
+ * u^2 2 Q(u) = n c^2 / (K^2 T); of its two roots the one with the larger
+ * steps (u below u*, where u^2 2 Q(u) peaks: 2 Q(u*) = u* phi(u*)) is taken,
+ * the one the detection of n steps supports (u* itself when n exceeds
+ * what any size would give). n is the count found on the evidence's span,
+ * scaled to this segment's T. The Allan level is unchanged: rate and amp
+ * move along rate amp^2 = K^2. */
+static void jumps_rate(sg_chmodel_t *m, const sg_evidence_t *ev, double T)
+{
+    int k = sg_model_find(m, FNAV_EFFECT_JUMPS), i;
+    double K2, c, nT, rhs, lo = 0.0, hi, us, a, b, rel;
+    if (k < 0 || ev == NULL || ev->nsteps < 1 || !(ev->step_min > 0.0) || !(ev->span_s > 0.0) || !(T > 0.0)) {
+        return;
+    }
+    K2 = m->e[k].p[0] * m->e[k].p[1] * m->e[k].p[1];
+    if (!(K2 > 0.0)) {
+        return;
+    }
+    c = ev->step_min;
+    nT = (double)ev->nsteps * T / ev->span_s;
+    rhs = nT * c * c / (K2 * T);
+    /* u*: the root of 2 Q(u) - u phi(u) on [0.5, 2] */
+    a = 0.5;
+    b = 2.0;
+    for (i = 0; i < 60; i++) {
+        double u = 0.5 * (a + b);
+        if (2.0 * gsl_cdf_ugaussian_Q(u) - u * exp(-0.5 * u * u) / sqrt(2.0 * M_PI) > 0.0) {
+            a = u;
+        } else {
+            b = u;
+        }
+    }
+    us = 0.5 * (a + b);
+    hi = us;
+    if (rhs < us * us * 2.0 * gsl_cdf_ugaussian_Q(us)) {
+        for (i = 0; i < 60; i++) {
+            double u = 0.5 * (lo + hi);
+            if (u * u * 2.0 * gsl_cdf_ugaussian_Q(u) < rhs) {
+                lo = u;
+            } else {
+                hi = u;
+            }
+        }
+    }
+    us = 0.5 * (lo + hi);
+    if (!(us > 0.0)) {
+        return;
+    }
+    /* the relative error of the size stays that of K (the count's own
+     * Poisson error is not added) */
+    rel = m->e[k].se[1] / m->e[k].p[1];
+    m->e[k].p[1] = c / us;
+    m->e[k].p[0] = K2 / (m->e[k].p[1] * m->e[k].p[1]);
+    m->e[k].se[1] = rel * m->e[k].p[1];
+}
+
+double sg_time_fit_q(const sg_table_t *t, int thermal)
+{
+    sg_chmodel_t m;
+    double X[SG_TAB_NT][2], c[2], cov[2][2];
+    memset(&m, 0, sizeof m);
+    if (!t->tw_twins || t->nt == 0) {
+        return (double)NAN;
+    }
+    if (!thermal) {
+        return time_ls(t, time_cols(t, 0, 1, 1.0, X), X, c, cov);
+    }
+    m.n = 1;
+    set_effect(&m.e[0], FNAV_EFFECT_THERMAL);
+    if (time_fit(t, &m, 0, -1) != 0) {
+        return (double)NAN;
+    }
+    return time_ls(t, time_cols(t, 1, 0, m.e[0].p[2], X), X, c, cov);
+}
+
 int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, const sg_evidence_t *ev, double tmax_s,
                  sg_fit_t *out)
 {
     skel_t s, best;
-    int i, iw = -1, ia = -1, it = -1, nq, qv, ngT, gi, ti, have_th = 0;
+    int i, iw = -1, ia = -1, it = -1, ir = -1, nq, qv, ngT, gi, ti, have_th = 0, timefit = 0;
     double tmin_s, bestQ = INFINITY, span = 0.0;
     {
         int b;
@@ -665,6 +953,9 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
         if (with[i] == FNAV_EFFECT_THERMAL) {
             it = s.m.n;
         }
+        if (with[i] == FNAV_EFFECT_RAMP) {
+            ir = s.m.n;
+        }
         s.m.e[s.m.n++] = e;
         if (s.m.n >= SG_MAX_EFF) {
             break;
@@ -672,6 +963,18 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
     }
     (void)iw;
     (void)span;
+    /* the deterministic drifts from the time domain (their signs too); the
+     * Allan fit then takes them as fixed */
+    if ((it >= 0 || ir >= 0) && time_fit(t, &s.m, it, ir) == 0) {
+        timefit = 1;
+        have_th = 0;
+        if (it >= 0) {
+            s.free_[it] = 0;
+        }
+        if (ir >= 0) {
+            s.free_[ir] = 0;
+        }
+    }
     /* AR(1) correlation time grid: from one sample to tmax */
     tmin_s = 1.0 / t->rate_hz;
     if (!(tmax_s > tmin_s)) {
@@ -754,8 +1057,9 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
             best.m.e[ia].p[0] = 1.0;
         }
     }
-    /* signs of the drifts from the fit segment's slope */
-    for (i = 0; i < best.m.n; i++) {
+    /* signs of the drifts from the fit segment's slope (when the Allan
+     * table fitted them) */
+    for (i = 0; i < best.m.n && !timefit; i++) {
         sg_effect_t *e = &best.m.e[i];
         if (e->id == FNAV_EFFECT_RAMP && ev != NULL && ev->slope < 0.0) {
             e->p[0] = -e->p[0];
@@ -766,9 +1070,10 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
         }
     }
     fit_errors(t, &best);
+    jumps_rate(&best.m, ev, span);
     for (i = 0; i < best.m.n; i++) {
         sg_effect_t *e = &best.m.e[i];
-        if (e->id == FNAV_EFFECT_THERMAL && isfinite(e->se[0])) {
+        if (e->id == FNAV_EFFECT_THERMAL && !timefit && isfinite(e->se[0])) {
             e->se[0] = fabs(e->se[0]);
         }
         if (e->id == FNAV_EFFECT_AR1 && !(e->p[1] > 0.0)) {
@@ -778,6 +1083,18 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
     }
     out->model = best.m;
     out->Q = bestQ;
+    /* with the twins' variances the time points are chi-square-like: a
+     * drift the Allan range is too short to see (its excess lies beyond the
+     * longest tau analysed) shows in the blocks' trends and level; models
+     * without a drift all carry the same sum */
+    out->Q_time = 0.0;
+    if (t->tw_twins) {
+        int k;
+        for (k = 0; k < t->nt; k++) {
+            double r = t->ty[k] - model_time_stat(&best.m, t->tkind[k], t->tlo[k], t->thi[k], t->tblk[k]);
+            out->Q_time += t->tw[k] * r * r;
+        }
+    }
     out->npts = (int)t->n;
     out->ok = 1;
     return 0;
@@ -935,6 +1252,7 @@ static void find_steps(const double *x, size_t n, sg_evidence_t *ev)
     size_t w, np = 0, k;
     ev->nsteps = 0;
     ev->step_rms = 0.0;
+    ev->step_min = 0.0;
     if (n < 512) {
         return;
     }
@@ -965,6 +1283,9 @@ static void find_steps(const double *x, size_t n, sg_evidence_t *ev)
         qsort(ad, nd, sizeof *ad, hx_cmp_double);
         mad = 1.4826 * ad[nd / 2];
         thr = gsl_cdf_ugaussian_Qinv(0.0025 / (double)nd);
+        if (mad > 0.0 && (ev->step_min == 0.0 || thr * mad < ev->step_min)) {
+            ev->step_min = thr * mad;
+        }
         for (i = 0; i < nd && mad > 0.0; i++) {
             double z = fabs(d[i]) / mad, t = (double)(w + i * hop);
             size_t j, lo = i > 4 ? i - 4 : 0, hi = i + 4 < nd ? i + 4 : nd - 1;
@@ -1015,8 +1336,8 @@ static void find_steps(const double *x, size_t n, sg_evidence_t *ev)
 void sg_evidence(const double *x, const sg_segs_t *segs, double rate_hz, double q_hint, sg_evidence_t *ev)
 {
     double st = 0.0, sx = 0.0, stt = 0.0, stx = 0.0, cnt = 0.0;
-    int b, ns = 0;
-    double s2 = 0.0;
+    int b, ns = 0, nm = 0;
+    double s2 = 0.0, cmin = 0.0;
     memset(ev, 0, sizeof *ev);
     ev->q = q_hint;
     ev->q_z = 0.0;
@@ -1036,6 +1357,11 @@ void sg_evidence(const double *x, const sg_segs_t *segs, double rate_hz, double 
         find_steps(x + segs->start[SG_FIT][b], (size_t)segs->n[SG_FIT][b], &e2);
         ns += e2.nsteps;
         s2 += e2.step_rms * e2.step_rms * (double)e2.nsteps;
+        if (e2.step_min > 0.0) {
+            cmin += e2.step_min;
+            nm++;
+        }
+        ev->span_s += (double)segs->n[SG_FIT][b] / rate_hz;
         for (k = 0; k < segs->n[SG_FIT][b]; k++) {
             long i = segs->start[SG_FIT][b] + k;
             double t = (double)i / rate_hz, v = x[i] - x[0];
@@ -1048,6 +1374,7 @@ void sg_evidence(const double *x, const sg_segs_t *segs, double rate_hz, double 
     }
     ev->nsteps = ns;
     ev->step_rms = ns > 0 ? sqrt(s2 / (double)ns) : 0.0;
+    ev->step_min = nm > 0 ? cmin / (double)nm : 0.0;
     if (cnt > 2.0) {
         double den = stt - st * st / cnt;
         ev->slope = den > 0.0 ? (stx - st * sx / cnt) / den : 0.0;

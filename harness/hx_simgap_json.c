@@ -166,6 +166,7 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
             cJSON *co = effect_json(&cd->eff, ch);
             add_num(co, "fit_dQ", cd->dQ_fit);
             cJSON_AddBoolToObject(co, "simulated", cd->simulated);
+            cJSON_AddBoolToObject(co, "nested_in_ramp", cd->nested != 0);
             if (cd->simulated) {
                 add_num(co, "G_fit", cd->G_fit);
                 add_num(co, "G_held_out", cd->G_hold);

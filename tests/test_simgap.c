@@ -206,6 +206,8 @@ static void test_split_disjoint(void **state)
 
 /* Time-domain points of segment g of an n-sample log at fs filled by f(k):
  * their values in v[block][kind]; the number of blocks is returned. */
+static double td_level; /* the level point of the last two-block segment */
+
 static int time_points(long n, double fs, int g, double (*f)(long, void *), void *ctx, double v[SG_MAX_BLK][3],
                        double span[SG_MAX_BLK][2])
 {
@@ -230,6 +232,15 @@ static int time_points(long n, double fs, int g, double (*f)(long, void *), void
     for (j = 0; j < cnt; j++) {
         const sg_point_t *p = &pl.p[j];
         if (p->dom != SG_TIME) {
+            continue;
+        }
+        if (p->kind == SG_TIME_LEVEL) {
+            /* one per two-block segment: from the first block's start to the second's end */
+            assert_int_equal(segs.nb[g], 2);
+            FNAV_ASSERT_CLOSE(p->x_lo, (double)segs.start[g][0] / fs, 1e-9, 0.0);
+            FNAV_ASSERT_CLOSE(p->x_hi, (double)(segs.start[g][1] + segs.n[g][1]) / fs, 1e-9, 0.0);
+            FNAV_ASSERT_CLOSE(p->x_blk, (double)segs.n[g][0] / fs, 1e-9, 0.0);
+            td_level = vals[j];
             continue;
         }
         b = p->x_lo < 1e-9 || segs.nb[g] == 1 ? 0 : (p->x_lo * fs > (double)segs.start[g][0] + 1.0 ? 1 : 0);
@@ -286,6 +297,8 @@ static void test_time_domain_stats(void **state)
         FNAV_ASSERT_CLOSE(v[b][SG_TIME_TREND], 2e-4, 0.0, 1e-9);
         FNAV_ASSERT_CLOSE(v[b][SG_TIME_CURV], 0.0, 1e-9, 0.0);
     }
+    /* the level: the line's rise between the blocks' centres */
+    FNAV_ASSERT_CLOSE(td_level, 2e-4 * (0.5 * (span[1][0] + span[1][1]) - 0.5 * (span[0][0] + span[0][1])), 0.0, 1e-6);
     s.b = 0.0;
     s.c = 3e-6;
     nb = time_points(100000, s.fs, SG_HOLD, td_poly, &s, v, span);
@@ -360,6 +373,135 @@ static void test_time_domain_model(void **state)
     }
     p.kind = SG_TIME_STEP;
     assert_true(isnan(sg_model_lnstat(&m, &p, 100.0, 1, t0, t1)));
+    /* the level between the two blocks of the fit segment */
+    (void)time_points(100000, 100.0, SG_FIT, td_model, &m, v, span);
+    p.kind = SG_TIME_LEVEL;
+    p.x_lo = span[0][0];
+    p.x_hi = span[1][1];
+    p.x_blk = span[0][1] - span[0][0];
+    FNAV_ASSERT_CLOSE(sg_model_lnstat(&m, &p, 100.0, 1, t0, t1), td_level, 0.0, 1e-3);
+}
+
+/* The deterministic drifts are fitted on the blocks' trend and curvature:
+ * a warm-up's amplitude and time constant and a ramp's signed rate come
+ * back from the features of a noise-free log (the statistics are sample
+ * sums, the model's expectation a quadrature: they agree to 1e-3). */
+static void fit_drift_on(const sg_chmodel_t *truth, const int *with, int nwith, sg_fit_t *f)
+{
+    const double fs = 100.0;
+    const long n = 300000;
+    sg_feat_cfg_t fc = sg_feat_cfg_default(fs);
+    sg_segs_t segs;
+    sg_segacc_t a;
+    sg_plist_t pl;
+    sg_table_t tb;
+    sg_evidence_t ev;
+    static double vals[1024];
+    long cnt, k;
+    int b;
+    memset(&pl, 0, sizeof pl);
+    memset(&ev, 0, sizeof ev);
+    sg_segs_split(n, 0.6, 1, &segs);
+    assert_int_equal(sg_segacc_init(&a, &fc, &segs, SG_FIT, 0.0), 0);
+    for (b = 0; b < segs.nb[SG_FIT]; b++) {
+        for (k = 0; k < segs.n[SG_FIT][b]; k++) {
+            long i = segs.start[SG_FIT][b] + k;
+            /* a little white noise keeps the Allan table finite */
+            sg_segacc_push(&a, b, td_model(i, (void *)truth) + 1e-6 * sin(0.7 * (double)i * (double)i));
+        }
+    }
+    cnt = sg_segacc_finish(&a, 3, &pl, vals, 1024);
+    sg_segacc_free(&a);
+    assert_true(cnt > 0);
+    sg_table_from(&pl, vals, 3, fs, &segs, SG_FIT, &tb);
+    assert_int_equal(tb.nt, 5); /* trend and curvature of both blocks, their level difference */
+    assert_int_equal(sg_fit_model(&tb, 0.0, with, nwith, &ev, 10.0, f), 0);
+    sg_plist_free(&pl);
+}
+
+static void test_time_fit_drifts(void **state)
+{
+    sg_chmodel_t m;
+    sg_effect_t e;
+    sg_fit_t f;
+    int with[2], k;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    memset(&e, 0, sizeof e);
+    e.id = FNAV_EFFECT_THERMAL;
+    e.p[0] = -2e-4; /* coef, u/degC: a falling drift */
+    e.p[1] = 10.0;  /* the catalogue's default rise */
+    e.p[2] = 500.0; /* tau, s, inside the 3000 s log */
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    with[0] = FNAV_EFFECT_THERMAL;
+    fit_drift_on(&m, with, 1, &f);
+    k = sg_model_find(&f.model, FNAV_EFFECT_THERMAL);
+    assert_true(k >= 0);
+    FNAV_ASSERT_CLOSE(f.model.e[k].p[0], -2e-4, 0.0, 1e-3);
+    FNAV_ASSERT_CLOSE(f.model.e[k].p[2], 500.0, 0.0, 1e-2);
+    /* a ramp, negative */
+    memset(&m, 0, sizeof m);
+    memset(&e, 0, sizeof e);
+    e.id = FNAV_EFFECT_RAMP;
+    e.p[0] = -3e-7;
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    with[0] = FNAV_EFFECT_RAMP;
+    fit_drift_on(&m, with, 1, &f);
+    k = sg_model_find(&f.model, FNAV_EFFECT_RAMP);
+    assert_true(k >= 0);
+    FNAV_ASSERT_CLOSE(f.model.e[k].p[0], -3e-7, 0.0, 1e-3);
+}
+
+/* Jumps: the detector finds a step only above about its threshold c, the
+ * fraction 2 Q(c / amp) of N(0, amp^2) steps. From an Allan table of white
+ * noise plus jumps (exact variances) and the count of steps found, the fit
+ * returns the true rate and size, not count / span. */
+static void test_jumps_rate_detection(void **state)
+{
+    const double fs = 100.0, T = 2000.0, amp = 0.01, u0 = 0.8;
+    const double pdet = erfc(u0 / sqrt(2.0)); /* 2 Q(u0) */
+    const int nfound = 3;
+    const double rate = (double)nfound / (pdet * T);
+    sg_chmodel_t m;
+    sg_effect_t e;
+    sg_table_t tb;
+    sg_evidence_t ev;
+    sg_fit_t f;
+    int with = FNAV_EFFECT_JUMPS, k;
+    size_t j;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    memset(&e, 0, sizeof e);
+    e.id = FNAV_EFFECT_WHITE;
+    e.p[0] = 1e-3;
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    memset(&e, 0, sizeof e);
+    e.id = FNAV_EFFECT_JUMPS;
+    e.p[0] = rate;
+    e.p[1] = amp;
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    memset(&tb, 0, sizeof tb);
+    tb.rate_hz = fs;
+    tb.nb = 1;
+    tb.t0_s[0] = 0.0;
+    tb.t1_s[0] = T;
+    for (j = 0; j < 20; j++) {
+        tb.m[j] = pow(2.0, (double)j);
+        tb.lnav[j] = log(sg_model_avar(&m, fs, tb.m[j], 0.0, T));
+        tb.w[j] = 1.0;
+    }
+    tb.n = 20;
+    memset(&ev, 0, sizeof ev);
+    ev.nsteps = nfound;
+    ev.step_min = u0 * amp;
+    ev.span_s = T;
+    assert_int_equal(sg_fit_model(&tb, 0.0, &with, 1, &ev, 1.0, &f), 0);
+    k = sg_model_find(&f.model, FNAV_EFFECT_JUMPS);
+    assert_true(k >= 0);
+    FNAV_ASSERT_CLOSE(f.model.e[k].p[0], rate, 0.0, 1e-3);
+    FNAV_ASSERT_CLOSE(f.model.e[k].p[1], amp, 0.0, 1e-3);
+    /* count / span alone would have said */
+    assert_true(fabs((double)nfound / T - rate) / rate > 0.5);
 }
 
 int main(void)
@@ -371,6 +513,8 @@ int main(void)
         cmocka_unit_test(test_split_disjoint),
         cmocka_unit_test(test_time_domain_stats),
         cmocka_unit_test(test_time_domain_model),
+        cmocka_unit_test(test_time_fit_drifts),
+        cmocka_unit_test(test_jumps_rate_detection),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

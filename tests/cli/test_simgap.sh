@@ -55,6 +55,25 @@ json "$T/q.json" 'all(sorted(p["kind"] for p in c["points"]["held_out"] if p["do
 [ -s "$T/qp/allan.png" ] && [ -s "$T/qp/psd.png" ] && [ -s "$T/qp/z.png" ] && pass "plots written" || fail "plots: $(ls "$T/qp" 2>&1)"
 expect_exit 3 "unwritable JSON" "$H" simgap "$T/q.csv" --quiet --seeds 3 --max-effects 0 --json /nonexistent/dir/q.json
 
+# deterministic drifts (docs/simgap.md, section 4: fitted on the blocks'
+# trend, curvature and level, signs included). A warm-up on gz (coef -2e-4
+# rad/s/degC over the default 10 degC rise, tau 100 s) and a ramp on gx
+# (-1e-6 rad/s/s, whose Allan excess lies beyond the longest tau analysed
+# of a 600 s log) are named on their channel with their signed parameters
+# within 25 %; the ramp's warm-up rival is set aside as nested in it.
+# 16 twins, as the validation: with 8 the acceptance level (Student's t
+# with 7 degrees of freedom at alpha/60) is 5.0 sigma
+"$H" sim --motion stand:600 --rate 100 --profile mtx --seed 7 --effect thermal:ch=gz:coef=-0.0002:tau_s=100 \
+    --out "$T/th.csv" >/dev/null 2>&1 || fail "sim thermal"
+expect_exit 0 "static log with a warm-up" "$H" simgap "$T/th.csv" --quiet --seeds 16 --json "$T/th.json"
+json "$T/th.json" '(lambda e: e["effect"] == "thermal" and [c["channel"] for c in e["channels"]] == ["gz"] and abs(e["channels"][0]["params"]["coef"] / -2e-4 - 1) < 0.25 and abs(e["channels"][0]["params"]["tau_s"] / 100 - 1) < 0.25)(j["effects"][0])' &&
+    pass "warm-up on gz, coefficient (sign included) and time constant within 25 %" || fail "thermal: $(cat "$T/pyerr"; grep verdict "$T/out")"
+"$H" sim --motion stand:600 --rate 100 --profile mtx --seed 8 --effect ramp:ch=gx:rate=-1e-6 \
+    --out "$T/rp.csv" >/dev/null 2>&1 || fail "sim ramp"
+expect_exit 0 "static log with a ramp" "$H" simgap "$T/rp.csv" --quiet --seeds 16 --json "$T/rp.json"
+json "$T/rp.json" '(lambda e: e["effect"] == "ramp" and [c["channel"] for c in e["channels"]] == ["gx"] and abs(e["channels"][0]["params"]["rate"] / -1e-6 - 1) < 0.25)(j["effects"][0]) and any(cd["effect"] == "thermal" and cd["nested_in_ramp"] and not cd["simulated"] for s in j["channels"][3]["attribution"]["steps"] for cd in s["candidates"])' &&
+    pass "ramp on gx, signed rate within 25 %, the warm-up nested in it" || fail "ramp: $(cat "$T/pyerr"; grep verdict "$T/out")"
+
 # --walk on a static log is honoured (domain given, not detected)
 expect_exit 0 "domain given" "$H" simgap "$T/q.csv" --quiet --seeds 3 --max-effects 0 --static --json "$T/g.json"
 json "$T/g.json" 'j["log"]["domain_from"] == "option"' && pass "domain_from option" || fail "domain_from: $(cat "$T/pyerr")"
