@@ -825,8 +825,9 @@ static int time_fit(const sg_table_t *t, sg_chmodel_t *m, int it, int ir)
  * the size. With u = c / amp, n = (K^2 / amp^2) T P gives
  * u^2 2 Q(u) = n c^2 / (K^2 T); of its two roots the one with the larger
  * steps (u below u*, where u^2 2 Q(u) peaks: 2 Q(u*) = u* phi(u*)) is taken,
- * the one the detection of n steps supports (u* itself when n exceeds
- * what any size would give). n is the count found on the evidence's span,
+ * the one the detection of n steps supports; when n exceeds what any size
+ * would give, the rate stays count / span (a rarer, larger step than
+ * counted would contradict the count). n is the count found on the evidence's span,
  * scaled to this segment's T. The Allan level is unchanged: rate and amp
  * move along rate amp^2 = K^2. */
 static void jumps_rate(sg_chmodel_t *m, const sg_evidence_t *ev, double T)
@@ -856,14 +857,17 @@ static void jumps_rate(sg_chmodel_t *m, const sg_evidence_t *ev, double T)
     }
     us = 0.5 * (a + b);
     hi = us;
-    if (rhs < us * us * 2.0 * gsl_cdf_ugaussian_Q(us)) {
-        for (i = 0; i < 60; i++) {
-            double u = 0.5 * (lo + hi);
-            if (u * u * 2.0 * gsl_cdf_ugaussian_Q(u) < rhs) {
-                lo = u;
-            } else {
-                hi = u;
-            }
+    if (!(rhs < us * us * 2.0 * gsl_cdf_ugaussian_Q(us))) {
+        /* the Allan level cannot hold that many detectable steps: the rate
+         * stays at what was counted (count / span) */
+        return;
+    }
+    for (i = 0; i < 60; i++) {
+        double u = 0.5 * (lo + hi);
+        if (u * u * 2.0 * gsl_cdf_ugaussian_Q(u) < rhs) {
+            lo = u;
+        } else {
+            hi = u;
         }
     }
     us = 0.5 * (lo + hi);
