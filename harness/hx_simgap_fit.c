@@ -760,10 +760,17 @@ static int time_fit(const sg_table_t *t, sg_chmodel_t *m, int it, int ir)
         return -1;
     }
     if (th) {
-        double te = t->t1_s[t->nb - 1], lo = log(10.0), hi = log(2.0 * (te > 20.0 ? te : 20.0)), step = (hi - lo) / (double)(NG - 1), a, b;
+        double te = t->t1_s[t->nb - 1], ts = t->t0_s[0], lo = log(10.0), hi, step, a, b;
         const double gr = 0.6180339887498949;
         for (g = 0; g < t->nt; g++) {
             te = t->thi[g] > te ? t->thi[g] : te;
+            ts = t->tlo[g] < ts ? t->tlo[g] : ts;
+        }
+        /* a warm-up that has decayed by 10^6 before the segment begins is
+         * not identifiable from it (fitted to a tail, its amplitude would be
+         * the tail's times up to e^(t0/T)): T >= t0 / ln(10^6) */
+        if (ts / log(1e6) > 10.0) {
+            lo = log(ts / log(1e6));
         }
         hi = log(2.0 * (te > 20.0 ? te : 20.0));
         step = (hi - lo) / (double)(NG - 1);

@@ -227,7 +227,7 @@ static void print_static(FILE *f, const sg_result_t *r)
                             cd->z_delta, zf, cd->z_gap, zl, cd->dL_rank, cd->dL_ends, ex);
                 } else {
                     fprintf(f, "  step %d   %-58s fit dQ %.1f; not simulated%s\n", i + 1, b, cd->dQ_fit,
-                            cd->nested ? " (nested: a ramp fits the blocks' trend and curvature as well)" : "");
+                            cd->nested ? " (nested: a ramp fits the blocks' trends, curvatures and level as well)" : "");
                 }
             }
         }
