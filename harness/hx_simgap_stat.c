@@ -693,14 +693,6 @@ static int chol_solve(int k, double *A, double *b)
     return 0;
 }
 
-/* z of every point of `real` against the twin rows `rows` (nr of them),
- * and the aggregate. The fitted model's parameter uncertainty is a
- * low-rank covariance U U^T, U = the S refit shifts / sqrt(S - 1): the
- * deviation d is first explained as far as that uncertainty allows,
- * a = argmin sum_j (d_j - (U a)_j)^2 / D_j + |a|^2 (D the noise variance),
- * and the z-scores are the residuals r_j / sqrt(D_j): the Mahalanobis form
- * d^T (D + U U^T)^-1 d = |r|^2_D + |a|^2 (Woodbury). Without shifts the
- * diagonal vx is added to D instead. */
 /* Points that enter the gap statistics: all but the level of a two-block
  * segment, which is fit data for the drifts only (section 4 of
  * docs/simgap.md: a drift extrapolated from the middle to the ends carries
@@ -712,6 +704,14 @@ static int gap_point(const sg_point_t *p)
     return !(p->dom == SG_TIME && p->kind == SG_TIME_LEVEL);
 }
 
+/* z of every point of `real` against the twin rows `rows` (nr of them),
+ * and the aggregate. The fitted model's parameter uncertainty is a
+ * low-rank covariance U U^T, U = the S refit shifts / sqrt(S - 1): the
+ * deviation d is first explained as far as that uncertainty allows,
+ * a = argmin sum_j (d_j - (U a)_j)^2 / D_j + |a|^2 (D the noise variance),
+ * and the z-scores are the residuals r_j / sqrt(D_j): the Mahalanobis form
+ * d^T (D + U U^T)^-1 d = |r|^2_D + |a|^2 (Woodbury). Without shifts the
+ * diagonal vx is added to D instead. */
 static double zscores(const sg_plist_t *pl, const double *real, const double *twin, const int *rows, int nr,
                       const double *vx, const double *shift, int S, double *z, double *mean_out, double *sd_out,
                       double *sdt_out, double *G_dom, double *maxz, int *imax, double *lnD_out)
