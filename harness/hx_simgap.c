@@ -269,12 +269,13 @@ static void twinset_free(twinset_t *t)
     }
 }
 
-/* The time points of a table weighted by the baseline twins' spread
- * (once they exist: the baseline fit itself has no drift to fit). */
+/* The time points of a table weighted by the baseline twins' spread, as
+ * their comparison measured it (once it exists: the baseline fit itself
+ * has no drift to fit). */
 static void table_weights(const sg_result_t *r, int ch, int g, sg_table_t *t)
 {
-    if (r->twin[ch][g] != NULL) {
-        sg_table_time_weights(t, r->twin[ch][g], r->pl[ch][g].n, r->S);
+    if (r->ch[ch].cmp[g].twin_sd != NULL) {
+        sg_table_time_weights(t, r->ch[ch].cmp[g].twin_sd);
     }
 }
 

@@ -360,8 +360,8 @@ typedef struct {
     double rate_hz;
     int nb;                   /**< blocks of the segment */
     double t0_s[SG_MAX_BLK], t1_s[SG_MAX_BLK]; /**< their time spans (for thermal) */
-    /* time domain: the blocks' trend and curvature, which fix the
-     * deterministic drifts (ramp, thermal) with their signs */
+    /* time domain: the blocks' trends and curvatures and the ends' level,
+     * which fix the deterministic drifts (ramp, thermal) with their signs */
     int nt;
     int tkind[SG_TAB_NT];               /**< SG_TIME_TREND, SG_TIME_CURV or SG_TIME_LEVEL */
     size_t tidx[SG_TAB_NT];             /**< index of the point in the list */
@@ -379,13 +379,13 @@ void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate
                    sg_table_t *t);
 
 /** Weighted residual of the time-domain fit of a ramp alone (thermal 0)
- *  or a warm-up alone (thermal 1) to a table's trend and curvature, in the
+ *  or a warm-up alone (thermal 1) to a table's time points, in the
  *  twins' variances (chi-square-like); NAN without twin weights. */
 double sg_time_fit_q(const sg_table_t *t, int thermal);
 
-/** Weights of a table's time-domain points from S twins' values of the same
- *  list (vals[s * npts + j]): 1 / their variance. */
-void sg_table_time_weights(sg_table_t *t, const double *vals, size_t npts, int S);
+/** Weights of a table's time-domain points from the twins' spread of each
+ *  point of the same list (sd[j], a comparison's twin_sd): 1 / sd^2. */
+void sg_table_time_weights(sg_table_t *t, const double *sd);
 
 /**
  * Fit white + AR(1) (correlation time at most tmax_s) plus the effects
@@ -475,7 +475,7 @@ typedef struct {
     double z_gap;             /**< the two folds' likelihood-ratio z combined (Stouffer) */
     double dL_mid, dL_ends;   /**< the real's deviance drop per fold (NaN: no second fold) */
     double dL_rank;           /**< their sum: what ranks the accepted candidates */
-    int nested;               /**< thermal only: its warm-up fits the fit segment's trend and curvature no
+    int nested;               /**< thermal only: its warm-up fits the fit segment's time points no
                                    better than a ramp (chi-square_1 at 1 %); not simulated, the ramp stands for it */
 } sg_cand_t;
 

@@ -360,30 +360,18 @@ void sg_table_from(const sg_plist_t *pl, const double *vals, int ch, double rate
     }
 }
 
-void sg_table_time_weights(sg_table_t *t, const double *vals, size_t npts, int S)
+void sg_table_time_weights(sg_table_t *t, const double *sd)
 {
-    int k, s, ok = 1;
     double w[SG_TAB_NT];
-    if (S < 3 || t->nt == 0) {
-        return;
-    }
+    int k;
     for (k = 0; k < t->nt; k++) {
-        double m = 0.0, v = 0.0;
-        for (s = 0; s < S; s++) {
-            m += vals[(size_t)s * npts + t->tidx[k]];
-        }
-        m /= (double)S;
-        for (s = 0; s < S; s++) {
-            double d = vals[(size_t)s * npts + t->tidx[k]] - m;
-            v += d * d;
-        }
-        v /= (double)(S - 1);
+        const double v = sd[t->tidx[k]] * sd[t->tidx[k]];
         if (!(v > 0.0) || !isfinite(v)) {
-            ok = 0;
+            return; /* keep the white-noise shape */
         }
         w[k] = 1.0 / v;
     }
-    if (ok) {
+    if (t->nt > 0) {
         memcpy(t->tw, w, (size_t)t->nt * sizeof *w);
         t->tw_twins = 1;
     }
@@ -716,8 +704,8 @@ static double time_ls(const sg_table_t *t, int nc, double X[][2], double *c, dou
     return q;
 }
 
-/* Columns of the time fit at warm-up time constant T: the expected trend
- * and curvature of a unit warm-up (1 - exp(-t/T)) and of a unit ramp t. */
+/* Columns of the time fit at warm-up time constant T: the expected time
+ * points of a unit warm-up (1 - exp(-t/T)) and of a unit ramp t. */
 static int time_cols(const sg_table_t *t, int th, int rp, double T, double X[][2])
 {
     sg_chmodel_t u;
@@ -743,7 +731,8 @@ static int time_cols(const sg_table_t *t, int th, int rp, double T, double X[][2
 }
 
 /* Time-domain fit of the deterministic drifts of a model (thermal at index
- * it, ramp at ir; -1 when absent) on the blocks' trend and curvature: the
+ * it, ramp at ir; -1 when absent) on the blocks' trends and curvatures and
+ * the ends' level: the
  * drift A (1 - exp(-t/T)) + R t is linear in A and R for a fixed T (a grid
  * in ln T from 10 s to twice the segment's end, refined by golden section).
  * The signed amplitudes go into the model (thermal: coef = A / rise, rise
@@ -834,14 +823,14 @@ static int time_fit(const sg_table_t *t, sg_chmodel_t *m, int it, int ir)
  * steps (u below u*, where u^2 2 Q(u) peaks: 2 Q(u*) = u* phi(u*)) is taken,
  * the one the detection of n steps supports; when n exceeds what any size
  * would give, the rate stays count / span (a rarer, larger step than
- * counted would contradict the count). n is the count found on the evidence's span,
- * scaled to this segment's T. The Allan level is unchanged: rate and amp
- * move along rate amp^2 = K^2. */
-static void jumps_rate(sg_chmodel_t *m, const sg_evidence_t *ev, double T)
+ * counted would contradict the count). n and T are the count and the span
+ * of the evidence (the fit segment: a rate, so it holds for the middle too).
+ * The Allan level is unchanged: rate and amp move along rate amp^2 = K^2. */
+static void jumps_rate(sg_chmodel_t *m, const sg_evidence_t *ev)
 {
     int k = sg_model_find(m, FNAV_EFFECT_JUMPS), i;
-    double K2, c, nT, rhs, lo = 0.0, hi, us, a, b, rel;
-    if (k < 0 || ev == NULL || ev->nsteps < 1 || !(ev->step_min > 0.0) || !(ev->span_s > 0.0) || !(T > 0.0)) {
+    double K2, c, rhs, lo = 0.0, hi, us, a, b, rel;
+    if (k < 0 || ev == NULL || ev->nsteps < 1 || !(ev->step_min > 0.0) || !(ev->span_s > 0.0)) {
         return;
     }
     K2 = m->e[k].p[0] * m->e[k].p[1] * m->e[k].p[1];
@@ -849,8 +838,7 @@ static void jumps_rate(sg_chmodel_t *m, const sg_evidence_t *ev, double T)
         return;
     }
     c = ev->step_min;
-    nT = (double)ev->nsteps * T / ev->span_s;
-    rhs = nT * c * c / (K2 * T);
+    rhs = (double)ev->nsteps * c * c / (K2 * ev->span_s);
     /* u*: the root of 2 Q(u) - u phi(u) on [0.5, 2] */
     a = 0.5;
     b = 2.0;
@@ -1081,7 +1069,7 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
         }
     }
     fit_errors(t, &best);
-    jumps_rate(&best.m, ev, span);
+    jumps_rate(&best.m, ev);
     for (i = 0; i < best.m.n; i++) {
         sg_effect_t *e = &best.m.e[i];
         if (e->id == FNAV_EFFECT_THERMAL && !timefit && isfinite(e->se[0])) {
