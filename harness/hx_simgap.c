@@ -276,6 +276,7 @@ static void table_weights(const sg_result_t *r, int ch, int g, sg_table_t *t)
 {
     if (r->ch[ch].cmp[g].twin_sd != NULL) {
         sg_table_time_weights(t, r->ch[ch].cmp[g].twin_sd);
+        sg_table_time_base(t, &r->ch[ch].baseline);
     }
 }
 

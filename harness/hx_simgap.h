@@ -369,6 +369,9 @@ typedef struct {
     double tw[SG_TAB_NT];               /**< 1 / variance (white-noise shape unless set from twins) */
     double tlo[SG_TAB_NT], thi[SG_TAB_NT], tblk[SG_TAB_NT]; /**< span and (level) block length, s */
     int tw_twins;                       /**< tw are 1 / the twins' variances (absolute) */
+    double tvb[SG_TAB_NT];              /**< variance of each time point from the baseline model's slow
+                                             random parts (AR(1), flicker, rrw, jumps), u^2 (or (u/s)^2) */
+    int tvb_set;                        /**< tvb holds the baseline's variances */
 } sg_table_t;
 
 /** Allan table of the Allan points of channel ch in a point list / values,
@@ -386,6 +389,13 @@ double sg_time_fit_q(const sg_table_t *t, int thermal);
 /** Weights of a table's time-domain points from the twins' spread of each
  *  point of the same list (sd[j], a comparison's twin_sd): 1 / sd^2. */
 void sg_table_time_weights(sg_table_t *t, const double *sd);
+
+/** Variances of a table's time points under the baseline model's slow
+ *  random parts (sg_table_t.tvb): what the prescreen's time-point deviance
+ *  of a candidate model is measured against (a random drift candidate
+ *  explains a trend by widening its spread, at the price of the log of the
+ *  widening). */
+void sg_table_time_base(sg_table_t *t, const sg_chmodel_t *base);
 
 /**
  * Fit white + AR(1) (correlation time at most tmax_s) plus the effects

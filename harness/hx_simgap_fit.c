@@ -377,6 +377,91 @@ void sg_table_time_weights(sg_table_t *t, const double *sd)
     }
 }
 
+/* One-sided PSD of a model's slow random parts (AR(1), flicker, rrw,
+ * jumps), u^2/Hz: what spreads the time points beyond the white noise. */
+static double model_psd_slow(const sg_chmodel_t *mdl, double f)
+{
+    double S = 0.0;
+    int i;
+    for (i = 0; i < mdl->n; i++) {
+        const sg_effect_t *e = &mdl->e[i];
+        if (e->id == FNAV_EFFECT_AR1 || e->id == FNAV_EFFECT_FLICKER || e->id == FNAV_EFFECT_RRW ||
+            e->id == FNAV_EFFECT_JUMPS) {
+            sg_chmodel_t one;
+            memset(&one, 0, sizeof one);
+            one.n = 1;
+            one.e[0] = *e;
+            S += model_psd(&one, f, 1.0);
+        }
+    }
+    return S;
+}
+
+/* Spherical Bessel j_l(a)^2 for l = 1, 2, with the series near 0 and the
+ * mean of the oscillation, 1 / (2 a^2), far out (where a log grid cannot
+ * follow it; the weight there is small for the slow parts). */
+static double sbessel2(int l, double a)
+{
+    double j;
+    if (a > 40.0) {
+        return 0.5 / (a * a);
+    }
+    if (a < 1e-2) {
+        j = l == 1 ? a / 3.0 : a * a / 15.0;
+    } else if (l == 1) {
+        j = sin(a) / (a * a) - cos(a) / a;
+    } else {
+        j = (3.0 / (a * a) - 1.0) * sin(a) / a - 3.0 * cos(a) / (a * a);
+    }
+    return j * j;
+}
+
+/* Variance of a time point (trend, curvature or level; span [t0, t1],
+ * level blocks blk) under a model's slow random parts: the integral of the
+ * one-sided PSD S(f) against the statistic's squared transfer function.
+ * The Legendre coefficient c_l = (2l + 1)/2 int P_l(u) x du over a block of
+ * length L has |W|^2 = (2l + 1)^2 j_l(pi f L)^2 (since int P_l(u)
+ * e^(-iau) du = 2 (-i)^l j_l(a)), so var c_l = (2l + 1)^2 int S j_l^2 df
+ * (white noise: (2l + 1) sigma^2 / N); the trend is c_1 2 / L. A difference
+ * of two block means at centre distance D has |W|^2 = 4 sin^2(pi f D)
+ * sinc^2(pi f blk). Trapezoid in ln f over 10^-4 / L .. 10^4 / L. */
+static double model_time_var(const sg_chmodel_t *mdl, int kind, double t0, double t1, double blk)
+{
+    enum { NF = 1200 };
+    const double L = t1 - t0;
+    double lo, hi, h, s = 0.0;
+    int i;
+    if (!(L > 0.0) || (kind == SG_TIME_LEVEL && !(blk > 0.0 && L > blk))) {
+        return 0.0;
+    }
+    lo = log(1e-4 / L);
+    hi = log(1e4 / L);
+    h = (hi - lo) / (double)(NF - 1);
+    for (i = 0; i < NF; i++) {
+        double f = exp(lo + h * (double)i), W2, a = M_PI * f * L, v;
+        if (kind == SG_TIME_LEVEL) {
+            double D = L - blk, x = M_PI * f * blk, sc = x < 1e-6 ? 1.0 : sin(x) / x, sn = sin(M_PI * f * D);
+            W2 = 4.0 * sn * sn * sc * sc;
+        } else if (kind == SG_TIME_TREND) {
+            W2 = 9.0 * sbessel2(1, a) * 4.0 / (L * L);
+        } else {
+            W2 = 25.0 * sbessel2(2, a);
+        }
+        v = model_psd_slow(mdl, f) * W2 * f; /* d f = f d ln f */
+        s += (i == 0 || i == NF - 1 ? 0.5 : 1.0) * v;
+    }
+    return s * h;
+}
+
+void sg_table_time_base(sg_table_t *t, const sg_chmodel_t *base)
+{
+    int k;
+    for (k = 0; k < t->nt; k++) {
+        t->tvb[k] = model_time_var(base, t->tkind[k], t->tlo[k], t->thi[k], t->tblk[k]);
+    }
+    t->tvb_set = 1;
+}
+
 /* Unit Allan variance of an effect at point m of a table, pooled over its
  * blocks as the estimator pools them. */
 static double table_unit(const sg_effect_t *e, const sg_table_t *t, double m)
@@ -1091,7 +1176,15 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
         int k;
         for (k = 0; k < t->nt; k++) {
             double r = t->ty[k] - model_time_stat(&best.m, t->tkind[k], t->tlo[k], t->thi[k], t->tblk[k]);
-            out->Q_time += t->tw[k] * r * r;
+            double dv = 0.0;
+            if (t->tvb_set) {
+                /* the model's slow random parts beyond the baseline's widen
+                 * the point's spread: Gaussian deviance, the log term the
+                 * price of the widening */
+                dv = (model_time_var(&best.m, t->tkind[k], t->tlo[k], t->thi[k], t->tblk[k]) - t->tvb[k]) * t->tw[k];
+                dv = dv > 0.0 ? dv : 0.0;
+            }
+            out->Q_time += t->tw[k] * r * r / (1.0 + dv) + log1p(dv);
         }
     }
     out->npts = (int)t->n;

@@ -452,6 +452,43 @@ static void test_time_fit_drifts(void **state)
     FNAV_ASSERT_CLOSE(f.model.e[k].p[0], -3e-7, 0.0, 1e-3);
 }
 
+/* The spread a random drift gives the time points (the prescreen's
+ * deviance): for a rate random walk K W(t), the least-squares slope over L
+ * has variance 6 K^2 / (5 L), the P2 coefficient 5 K^2 L / 42, and the
+ * difference of two block means (length B, starts D apart) K^2 (D - B / 3)
+ * (double integrals of min(s, u) against the weights, done by hand). */
+static void test_time_var_rrw(void **state)
+{
+    sg_chmodel_t m;
+    sg_effect_t e;
+    sg_table_t t;
+    const double K = 2e-5, L = 1000.0, B = 600.0, D = 2400.0;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    memset(&e, 0, sizeof e);
+    e.id = FNAV_EFFECT_WHITE;
+    e.p[0] = 1e-3; /* white noise adds nothing: the baseline twins carry it */
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    e.id = FNAV_EFFECT_RRW;
+    e.p[0] = K;
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    memset(&t, 0, sizeof t);
+    t.nt = 3;
+    t.tkind[0] = SG_TIME_TREND;
+    t.tkind[1] = SG_TIME_CURV;
+    t.tlo[0] = t.tlo[1] = 100.0;
+    t.thi[0] = t.thi[1] = 100.0 + L;
+    t.tkind[2] = SG_TIME_LEVEL;
+    t.tlo[2] = 0.0;
+    t.thi[2] = D + B;
+    t.tblk[2] = B;
+    sg_table_time_base(&t, &m);
+    assert_true(t.tvb_set);
+    FNAV_ASSERT_CLOSE(t.tvb[0], 6.0 * K * K / (5.0 * L), 0.0, 1e-3);
+    FNAV_ASSERT_CLOSE(t.tvb[1], 5.0 * K * K * L / 42.0, 0.0, 1e-3);
+    FNAV_ASSERT_CLOSE(t.tvb[2], K * K * (D - B / 3.0), 0.0, 1e-3);
+}
+
 /* Jumps: the detector finds a step only above about its threshold c, the
  * fraction 2 Q(c / amp) of N(0, amp^2) steps. From an Allan table of white
  * noise plus jumps (exact variances) and the count of steps found, the fit
@@ -515,6 +552,7 @@ int main(void)
         cmocka_unit_test(test_time_domain_model),
         cmocka_unit_test(test_time_fit_drifts),
         cmocka_unit_test(test_jumps_rate_detection),
+        cmocka_unit_test(test_time_var_rrw),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
