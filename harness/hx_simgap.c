@@ -709,12 +709,20 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             memset(cd, 0, sizeof *cd);
             cd->id = id;
             cd->eff = f.model.e[sg_model_find(&f.model, id)];
-            /* ranked by the Allan objective; the time points' residuals
-             * (in the baseline twins' variances, which a random-walk real
-             * exceeds for every model: only a drift can lower them) join
-             * only the threshold */
+            /* ranked by the Allan objective; the time points join only
+             * the threshold, read two ways, either of which lets a
+             * candidate be simulated (the held-out tests judge it): their
+             * deviance with the variance the model's slow random parts add
+             * (a random walk that tilts the blocks) and their residual in
+             * the baseline twins' variances (a drift, also after a random
+             * drift has been selected, whose variance the deviance would
+             * credit with the trends the drift explains) */
             cd->Q_fit = f.Q;
             cd->dQ_fit = (curfit.Q + curfit.Q_time) - (f.Q + f.Q_time);
+            {
+                const double dq_drift = (curfit.Q + curfit.Q_time_drift) - (f.Q + f.Q_time_drift);
+                cd->dQ_fit = dq_drift > cd->dQ_fit ? dq_drift : cd->dQ_fit;
+            }
             cd->nested = id == FNAV_EFFECT_THERMAL && th_nested;
             cd->expl_hold = cd->expl_lo = cd->expl_hi = (double)NAN;
             cd->G_fit = cd->G_hold = (double)NAN;

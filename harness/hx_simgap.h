@@ -342,8 +342,12 @@ typedef struct {
 typedef struct {
     sg_chmodel_t model;
     double Q;                 /**< weighted sum of squared log residuals (Allan) */
-    double Q_time;            /**< sum of the time points' squared residuals over the baseline twins'
-                                   variances (0 without them): what a drift explains */
+    double Q_time;            /**< the time points' Gaussian deviance: squared residuals over the
+                                   baseline twins' variances widened by the model's slow random parts
+                                   beyond the baseline's, plus the log of the widening (0 without
+                                   twins): what a drift or a random drift explains */
+    double Q_time_drift;      /**< the same residuals over the baseline twins' variances alone: what a
+                                   drift explains, whatever random parts the model holds */
     int npts;
     int ok;
 } sg_fit_t;

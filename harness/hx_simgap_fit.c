@@ -1172,6 +1172,7 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
      * longest tau analysed) shows in the blocks' trends and level; models
      * without a drift all carry the same sum */
     out->Q_time = 0.0;
+    out->Q_time_drift = 0.0;
     if (t->tw_twins) {
         int k;
         for (k = 0; k < t->nt; k++) {
@@ -1185,6 +1186,7 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
                 dv = dv > 0.0 ? dv : 0.0;
             }
             out->Q_time += t->tw[k] * r * r / (1.0 + dv) + log1p(dv);
+            out->Q_time_drift += t->tw[k] * r * r;
         }
     }
     out->npts = (int)t->n;
