@@ -489,6 +489,76 @@ static void test_time_var_rrw(void **state)
     FNAV_ASSERT_CLOSE(t.tvb[2], K * K * (D - B / 3.0), 0.0, 1e-3);
 }
 
+/* The prescreen's two readings of the time points (sg_fit_t): on a table
+ * of white noise plus a rate random walk whose blocks' trend and
+ * curvature lie far outside the baseline's spread, the rrw model's
+ * deviance is the residual over the widened variance plus the log of the
+ * widening, below the plain residual, which a model without a drift
+ * cannot lower. */
+static void test_time_deviance(void **state)
+{
+    const double fs = 100.0, T = 2000.0, K = 2e-5;
+    sg_chmodel_t m, base;
+    sg_effect_t e;
+    sg_table_t tb, tv;
+    sg_evidence_t ev;
+    sg_fit_t f;
+    int with = FNAV_EFFECT_RRW, k;
+    double qd = 0.0, qr = 0.0;
+    size_t j;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    memset(&e, 0, sizeof e);
+    e.id = FNAV_EFFECT_WHITE;
+    e.p[0] = 1e-3;
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    base = m;
+    e.id = FNAV_EFFECT_RRW;
+    e.p[0] = K;
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    memset(&tb, 0, sizeof tb);
+    tb.rate_hz = fs;
+    tb.nb = 1;
+    tb.t1_s[0] = T;
+    for (j = 0; j < 16; j++) {
+        tb.m[j] = pow(2.0, (double)j);
+        tb.lnav[j] = log(sg_model_avar(&m, fs, tb.m[j], 0.0, T));
+        tb.w[j] = 1.0;
+    }
+    tb.n = 16;
+    /* trend and curvature of the block at the rrw's own sd, 10 baseline sd */
+    tb.nt = 2;
+    tb.tkind[0] = SG_TIME_TREND;
+    tb.tkind[1] = SG_TIME_CURV;
+    tb.thi[0] = tb.thi[1] = T;
+    tv = tb;
+    sg_table_time_base(&tv, &m);
+    for (k = 0; k < 2; k++) {
+        tb.ty[k] = sqrt(tv.tvb[k]);
+        tb.tw[k] = 100.0 / tv.tvb[k];
+    }
+    tb.tw_twins = 1;
+    sg_table_time_base(&tb, &base);
+    memset(&ev, 0, sizeof ev);
+    assert_int_equal(sg_fit_model(&tb, 0.0, &with, 1, &ev, 1.0, &f), 0);
+    k = sg_model_find(&f.model, FNAV_EFFECT_RRW);
+    assert_true(k >= 0);
+    FNAV_ASSERT_CLOSE(f.model.e[k].p[0], K, 0.0, 0.02);
+    tv = tb;
+    sg_table_time_base(&tv, &f.model);
+    for (k = 0; k < 2; k++) {
+        const double dv = (tv.tvb[k] - tb.tvb[k]) * tb.tw[k];
+        qd += tb.tw[k] * tb.ty[k] * tb.ty[k];
+        qr += tb.tw[k] * tb.ty[k] * tb.ty[k] / (1.0 + dv) + log1p(dv);
+    }
+    FNAV_ASSERT_CLOSE(f.Q_time_drift, qd, 0.0, 1e-9);
+    FNAV_ASSERT_CLOSE(f.Q_time, qr, 0.0, 1e-9);
+    assert_true(qd > 150.0 && qr < 12.0); /* 2 x 100 against 2 x (about 1 + ln 101) */
+    /* without a random drift, the two readings agree */
+    assert_int_equal(sg_fit_model(&tb, 0.0, NULL, 0, &ev, 1.0, &f), 0);
+    FNAV_ASSERT_CLOSE(f.Q_time, f.Q_time_drift, 0.0, 1e-3);
+}
+
 /* Jumps: the detector finds a step only above about its threshold c, the
  * fraction 2 Q(c / amp) of N(0, amp^2) steps. From an Allan table of white
  * noise plus jumps (exact variances) and the count of steps found, the fit
@@ -553,6 +623,7 @@ int main(void)
         cmocka_unit_test(test_time_fit_drifts),
         cmocka_unit_test(test_jumps_rate_detection),
         cmocka_unit_test(test_time_var_rrw),
+        cmocka_unit_test(test_time_deviance),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
