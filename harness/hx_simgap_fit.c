@@ -1169,8 +1169,9 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
     out->Q = bestQ;
     /* with the twins' variances the time points are chi-square-like: a
      * drift the Allan range is too short to see (its excess lies beyond the
-     * longest tau analysed) shows in the blocks' trends and level; models
-     * without a drift all carry the same sum */
+     * longest tau analysed) shows in the blocks' trends and level (models
+     * without a drift all carry the same Q_time_drift); a random drift,
+     * in Q_time, by the spread it gives them */
     out->Q_time = 0.0;
     out->Q_time_drift = 0.0;
     if (t->tw_twins) {
