@@ -489,6 +489,30 @@ static void test_time_var_rrw(void **state)
     FNAV_ASSERT_CLOSE(t.tvb[2], K * K * (D - B / 3.0), 0.0, 1e-3);
 }
 
+/* White noise of 1e-3 u/sqrt(Hz) plus one effect (e), and the exact Allan
+ * table of that model over one block [0, T] at octaves m = 1 .. 2^(n-1). */
+static void white_plus_table(const sg_effect_t *e, double fs, double T, size_t n, sg_chmodel_t *m, sg_table_t *tb)
+{
+    sg_effect_t w;
+    size_t j;
+    memset(m, 0, sizeof *m);
+    memset(&w, 0, sizeof w);
+    w.id = FNAV_EFFECT_WHITE;
+    w.p[0] = 1e-3;
+    assert_int_equal(sg_model_set(m, &w), 0);
+    assert_int_equal(sg_model_set(m, e), 0);
+    memset(tb, 0, sizeof *tb);
+    tb->rate_hz = fs;
+    tb->nb = 1;
+    tb->t1_s[0] = T;
+    for (j = 0; j < n; j++) {
+        tb->m[j] = pow(2.0, (double)j);
+        tb->lnav[j] = log(sg_model_avar(m, fs, tb->m[j], 0.0, T));
+        tb->w[j] = 1.0;
+    }
+    tb->n = n;
+}
+
 /* The prescreen's two readings of the time points (sg_fit_t): on a table
  * of white noise plus a rate random walk whose blocks' trend and
  * curvature lie far outside the baseline's spread, the rrw model's
@@ -505,27 +529,13 @@ static void test_time_deviance(void **state)
     sg_fit_t f;
     int with = FNAV_EFFECT_RRW, k;
     double qd = 0.0, qr = 0.0;
-    size_t j;
     (void)state;
-    memset(&m, 0, sizeof m);
     memset(&e, 0, sizeof e);
-    e.id = FNAV_EFFECT_WHITE;
-    e.p[0] = 1e-3;
-    assert_int_equal(sg_model_set(&m, &e), 0);
-    base = m;
     e.id = FNAV_EFFECT_RRW;
     e.p[0] = K;
-    assert_int_equal(sg_model_set(&m, &e), 0);
-    memset(&tb, 0, sizeof tb);
-    tb.rate_hz = fs;
-    tb.nb = 1;
-    tb.t1_s[0] = T;
-    for (j = 0; j < 16; j++) {
-        tb.m[j] = pow(2.0, (double)j);
-        tb.lnav[j] = log(sg_model_avar(&m, fs, tb.m[j], 0.0, T));
-        tb.w[j] = 1.0;
-    }
-    tb.n = 16;
+    white_plus_table(&e, fs, T, 16, &m, &tb);
+    base = m;
+    base.n = 1; /* the white noise alone */
     /* trend and curvature of the block at the rrw's own sd, 10 baseline sd */
     tb.nt = 2;
     tb.tkind[0] = SG_TIME_TREND;
@@ -575,29 +585,12 @@ static void test_jumps_rate_detection(void **state)
     sg_evidence_t ev;
     sg_fit_t f;
     int with = FNAV_EFFECT_JUMPS, k;
-    size_t j;
     (void)state;
-    memset(&m, 0, sizeof m);
-    memset(&e, 0, sizeof e);
-    e.id = FNAV_EFFECT_WHITE;
-    e.p[0] = 1e-3;
-    assert_int_equal(sg_model_set(&m, &e), 0);
     memset(&e, 0, sizeof e);
     e.id = FNAV_EFFECT_JUMPS;
     e.p[0] = rate;
     e.p[1] = amp;
-    assert_int_equal(sg_model_set(&m, &e), 0);
-    memset(&tb, 0, sizeof tb);
-    tb.rate_hz = fs;
-    tb.nb = 1;
-    tb.t0_s[0] = 0.0;
-    tb.t1_s[0] = T;
-    for (j = 0; j < 20; j++) {
-        tb.m[j] = pow(2.0, (double)j);
-        tb.lnav[j] = log(sg_model_avar(&m, fs, tb.m[j], 0.0, T));
-        tb.w[j] = 1.0;
-    }
-    tb.n = 20;
+    white_plus_table(&e, fs, T, 20, &m, &tb);
     memset(&ev, 0, sizeof ev);
     ev.nsteps = nfound;
     ev.step_min = u0 * amp;
