@@ -8,6 +8,7 @@
 
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_fft_real.h>
+#include <gsl/gsl_sf_bessel.h>
 #include <gsl/gsl_sf_psi.h>
 #include <math.h>
 #include <stdlib.h>
@@ -377,42 +378,30 @@ void sg_table_time_weights(sg_table_t *t, const double *sd)
     }
 }
 
-/* One-sided PSD of a model's slow random parts (AR(1), flicker, rrw,
- * jumps), u^2/Hz: what spreads the time points beyond the white noise. */
-static double model_psd_slow(const sg_chmodel_t *mdl, double f)
+/* The slow random parts of a model (AR(1), flicker, rrw, jumps): what
+ * spreads the time points beyond the white noise the twins carry. */
+static void slow_parts(const sg_chmodel_t *mdl, sg_chmodel_t *slow)
 {
-    double S = 0.0;
     int i;
+    memset(slow, 0, sizeof *slow);
     for (i = 0; i < mdl->n; i++) {
-        const sg_effect_t *e = &mdl->e[i];
-        if (e->id == FNAV_EFFECT_AR1 || e->id == FNAV_EFFECT_FLICKER || e->id == FNAV_EFFECT_RRW ||
-            e->id == FNAV_EFFECT_JUMPS) {
-            sg_chmodel_t one;
-            memset(&one, 0, sizeof one);
-            one.n = 1;
-            one.e[0] = *e;
-            S += model_psd(&one, f, 1.0);
+        const int id = mdl->e[i].id;
+        if (id == FNAV_EFFECT_AR1 || id == FNAV_EFFECT_FLICKER || id == FNAV_EFFECT_RRW || id == FNAV_EFFECT_JUMPS) {
+            slow->e[slow->n++] = mdl->e[i];
         }
     }
-    return S;
 }
 
-/* Spherical Bessel j_l(a)^2 for l = 1, 2, with the series near 0 and the
- * mean of the oscillation, 1 / (2 a^2), far out (where a log grid cannot
- * follow it; the weight there is small for the slow parts). */
+/* j_l(a)^2, the spherical Bessel function (GSL), replaced far out by the
+ * mean of its oscillation, 1 / (2 a^2), which a log grid cannot follow
+ * (the weight there is small for the slow parts). */
 static double sbessel2(int l, double a)
 {
     double j;
     if (a > 40.0) {
         return 0.5 / (a * a);
     }
-    if (a < 1e-2) {
-        j = l == 1 ? a / 3.0 : a * a / 15.0;
-    } else if (l == 1) {
-        j = sin(a) / (a * a) - cos(a) / a;
-    } else {
-        j = (3.0 / (a * a) - 1.0) * sin(a) / a - 3.0 * cos(a) / (a * a);
-    }
+    j = l == 1 ? gsl_sf_bessel_j1(a) : gsl_sf_bessel_j2(a);
     return j * j;
 }
 
@@ -430,8 +419,13 @@ static double model_time_var(const sg_chmodel_t *mdl, int kind, double t0, doubl
     enum { NF = 1200 };
     const double L = t1 - t0;
     double lo, hi, h, s = 0.0;
+    sg_chmodel_t slow;
     int i;
     if (!(L > 0.0) || (kind == SG_TIME_LEVEL && !(blk > 0.0 && L > blk))) {
+        return 0.0;
+    }
+    slow_parts(mdl, &slow);
+    if (slow.n == 0) {
         return 0.0;
     }
     lo = log(1e-4 / L);
@@ -447,7 +441,7 @@ static double model_time_var(const sg_chmodel_t *mdl, int kind, double t0, doubl
         } else {
             W2 = 25.0 * sbessel2(2, a);
         }
-        v = model_psd_slow(mdl, f) * W2 * f; /* d f = f d ln f */
+        v = model_psd(&slow, f, 1.0) * W2 * f; /* d f = f d ln f (no quantiser: fs unused) */
         s += (i == 0 || i == NF - 1 ? 0.5 : 1.0) * v;
     }
     return s * h;
