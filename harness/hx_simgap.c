@@ -573,7 +573,7 @@ static double fit_tmax(const sg_result_t *r, int ch)
  * the candidate's twins share their seeds. Gives the score test's z on the
  * ends and the ends' gap reduction. Returns 0, or -1 when the fold could
  * not be computed. */
-static int fold_ends(sg_result_t *r, int ch, const sg_feat_cfg_t *fc, const sg_table_t *tm, const int *with,
+static int fold_ends(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_t *fc, const sg_table_t *tm, const int *with,
                      int nwith, double tmax, double alpha, uint32_t seed, const twinset_t *cur,
                      const sg_cmp_t ccur[SG_NSEG], const sg_cand_t *cd, double *z, double *dG, double *zg,
                      double *dL)
@@ -588,6 +588,7 @@ static int fold_ends(sg_result_t *r, int ch, const sg_feat_cfg_t *fc, const sg_t
     if (sg_fit_model(tm, c->baseline.mean, with, nwith, &c->ev, tmax, &f) != 0) {
         return -1;
     }
+    (void)sg_rrw_ml(x, &r->segs, SG_HOLD, r->rate_hz, &f.model);
     k = sg_model_find(&f.model, cd->id);
     if (k < 0 || !(f.model.e[k].p[mag_index(cd->id)] != 0.0)) {
         /* the middle shows none of it: no evidence from this fold */
@@ -638,7 +639,6 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     const double zacc = gsl_cdf_tdist_Qinv(r->opts.alpha / (double)(SG_NCH * 5 * 2), (double)(r->opts.seeds - 1));
     const double tmax = fit_tmax(r, ch);
     uint32_t seed = o->seed + 1000u * (uint32_t)ch;
-    (void)x;
     memset(&cur, 0, sizeof cur);
     /* the baseline twins are the current ones */
     for (g = 0; g < SG_NSEG; g++) {
@@ -768,6 +768,9 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             if (sg_fit_model(tab, c->baseline.mean, w2, nwith + 1, &c->ev, tmax, &f) != 0) {
                 continue;
             }
+            if (sg_rrw_ml(x, &r->segs, SG_FIT, r->rate_hz, &f.model) == 0) {
+                cd->eff = f.model.e[sg_model_find(&f.model, cd->id)];
+            }
             if (twinset_run(&f.model, ch, fc, &r->segs, c->q_full, S, seed, r->pl[ch], &ts) != 0) {
                 continue;
             }
@@ -807,7 +810,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             if (r->segs.sandwich) {
                 /* second fold: fit on the middle, held out the ends */
                 double zb = 0.0, dGb = 0.0, zgb = 0.0, dLb = 0.0;
-                if (fold_ends(r, ch, fc, &tabm, w2, nwith + 1, tmax, alpha, seed, &cur, ccur, cd, &zb, &dGb, &zgb,
+                if (fold_ends(r, ch, x, fc, &tabm, w2, nwith + 1, tmax, alpha, seed, &cur, ccur, cd, &zb, &dGb, &zgb,
                               &dLb) == 0) {
                     cd->z_ends = zb;
                     cd->dG_ends = dGb;

@@ -409,6 +409,15 @@ void sg_table_time_base(sg_table_t *t, const sg_chmodel_t *base);
 int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, const sg_evidence_t *ev, double tmax_s,
                  sg_fit_t *out);
 
+/**
+ * Refine the rate random walk's K of a model by the exact likelihood of
+ * segment g of the samples x (white + AR(1) + walk as a Kalman filter, the
+ * deterministic drifts removed, the other parameters held). Returns 0 when
+ * K was refined, 1 when the model has no walk or parts without a
+ * state-space form (the Allan fit's K stands).
+ */
+int sg_rrw_ml(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_chmodel_t *m);
+
 /** Allan variance of an effect per unit magnitude squared (its other
  *  parameters from e) at averaging factor m over [t0_s, t1_s]; 0 for
  *  effects without a static Allan signature. */

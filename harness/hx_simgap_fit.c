@@ -1469,3 +1469,109 @@ void sg_evidence(const double *x, const sg_segs_t *segs, double rate_hz, double 
         ev->slope = den > 0.0 ? (stx - st * sx / cnt) / den : 0.0;
     }
 }
+
+/* ------------------------------------------------------------ rrw by likelihood */
+
+/* -2 ln L (up to a constant) of segment g of x under white (variance r per
+ * sample) + AR(1) (phi, stationary variance s2) + rate random walk (qb per
+ * sample) after removing the deterministic drift: a two-state Kalman filter
+ * over the segment's blocks, the walk carried across the gaps between them
+ * (its variance grows by qb per skipped sample; the AR(1) relaxes towards
+ * its stationary variance). The walk starts diffuse: the first sample's
+ * term is left out. */
+static double rrw_nll(const double *x, const sg_segs_t *segs, int g, double rate_hz, const sg_chmodel_t *m, double r,
+                      double phi, double s2, double qb)
+{
+    const double dt = 1.0 / rate_hz;
+    double a = 0.0, b = 0.0, Paa = s2, Pab = 0.0, Pbb = 0.0, nll = 0.0;
+    long last = -1;
+    int blk, started = 0;
+    for (blk = 0; blk < segs->nb[g]; blk++) {
+        long k0 = segs->start[g][blk], k1 = k0 + segs->n[g][blk], k;
+        for (k = k0; k < k1; k++) {
+            double y = x[k] - model_drift(m, (double)k * dt), v, S, ka, kb;
+            if (!started) {
+                b = y;
+                Pbb = r + s2;
+                last = k;
+                started = 1;
+                continue;
+            }
+            if (k - last == 1) {
+                a *= phi;
+                Paa = phi * phi * Paa + s2 * (1.0 - phi * phi);
+                Pab *= phi;
+                Pbb += qb;
+            } else {
+                const double gap = (double)(k - last), pg = pow(phi, gap);
+                a *= pg;
+                Paa = pg * pg * Paa + s2 * (1.0 - pg * pg);
+                Pab *= pg;
+                Pbb += qb * gap;
+            }
+            last = k;
+            v = y - a - b;
+            S = Paa + 2.0 * Pab + Pbb + r;
+            ka = (Paa + Pab) / S;
+            kb = (Pab + Pbb) / S;
+            a += ka * v;
+            b += kb * v;
+            Paa -= ka * ka * S;
+            Pab -= ka * kb * S;
+            Pbb -= kb * kb * S;
+            nll += log(S) + v * v / S;
+        }
+    }
+    return nll;
+}
+
+int sg_rrw_ml(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_chmodel_t *m)
+{
+    const double gr = 0.6180339887498949, dt = 1.0 / rate_hz;
+    double r = 0.0, phi = 0.0, s2 = 0.0, K, lo, hi;
+    int i, ik = -1, k;
+    for (i = 0; i < m->n; i++) {
+        const sg_effect_t *e = &m->e[i];
+        switch (e->id) {
+        case FNAV_EFFECT_WHITE: r = e->p[0] * e->p[0] * rate_hz; break;
+        case FNAV_EFFECT_AR1:
+            if (e->p[1] > 0.0 && e->p[0] > 0.0) {
+                s2 = e->p[1] * e->p[1];
+                phi = exp(-dt / e->p[0]);
+            }
+            break;
+        case FNAV_EFFECT_RRW: ik = i; break;
+        case FNAV_EFFECT_RAMP:
+        case FNAV_EFFECT_THERMAL: break;
+        default: return 1; /* no state-space form here: the Allan fit stands */
+        }
+    }
+    if (ik < 0 || !(m->e[ik].p[0] > 0.0) || !(r > 0.0) || segs->nb[g] < 1) {
+        return 1;
+    }
+    K = m->e[ik].p[0];
+    lo = log(K) - log(8.0);
+    hi = log(K) + log(8.0);
+    for (k = 0; k < 40 && hi - lo > 1e-3; k++) {
+        double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo);
+        double q1 = rrw_nll(x, segs, g, rate_hz, m, r, phi, s2, exp(2.0 * x1) * dt);
+        double q2 = rrw_nll(x, segs, g, rate_hz, m, r, phi, s2, exp(2.0 * x2) * dt);
+        if (q1 < q2) {
+            hi = x2;
+        } else {
+            lo = x1;
+        }
+    }
+    {
+        /* standard error from the curvature of -2 ln L in ln K (Fisher
+         * information: half of it) */
+        const double lk = 0.5 * (lo + hi), h = 0.05;
+        const double q0 = rrw_nll(x, segs, g, rate_hz, m, r, phi, s2, exp(2.0 * lk) * dt);
+        const double qp = rrw_nll(x, segs, g, rate_hz, m, r, phi, s2, exp(2.0 * (lk + h)) * dt);
+        const double qm = rrw_nll(x, segs, g, rate_hz, m, r, phi, s2, exp(2.0 * (lk - h)) * dt);
+        const double curv = (qp - 2.0 * q0 + qm) / (h * h);
+        m->e[ik].p[0] = exp(lk);
+        m->e[ik].se[0] = curv > 0.0 ? m->e[ik].p[0] * sqrt(2.0 / curv) : (double)NAN;
+    }
+    return 0;
+}
