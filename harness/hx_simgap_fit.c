@@ -1477,8 +1477,8 @@ void sg_evidence(const double *x, const sg_segs_t *segs, double rate_hz, double 
  * sample) after removing the deterministic drift: a two-state Kalman filter
  * over the segment's blocks, the walk carried across the gaps between them
  * (its variance grows by qb per skipped sample; the AR(1) relaxes towards
- * its stationary variance). The walk starts diffuse: the first sample's
- * term is left out. */
+ * its stationary variance). The walk starts diffuse: it is set from the
+ * first sample, whose term is left out. */
 static double rrw_nll(const double *x, const sg_segs_t *segs, int g, double rate_hz, const sg_chmodel_t *m, double r,
                       double phi, double s2, double qb)
 {
@@ -1491,8 +1491,10 @@ static double rrw_nll(const double *x, const sg_segs_t *segs, int g, double rate
         for (k = k0; k < k1; k++) {
             double y = x[k] - model_drift(m, (double)k * dt), v, S, ka, kb;
             if (!started) {
+                /* the walk from the first sample, its error -(a + e) */
                 b = y;
                 Pbb = r + s2;
+                Pab = -s2;
                 last = k;
                 started = 1;
                 continue;
