@@ -546,6 +546,58 @@ static void test_rrw_ml(void **state)
     free(xr);
 }
 
+/* The likelihood's K over many logs: 24 seeds of white noise plus a walk
+ * (K = 5e-5 u/sqrt(s), 2000 s at 50 Hz, the fit segment the two ends):
+ * the mean of K^/K is 1 within three standard errors of the mean (no
+ * bias), and the spread of K^/K agrees with the mean of the estimator's
+ * own standard errors within a factor 1.6 (the curvature's error bars
+ * are honest). Prints the figures docs/simgap.md quotes. */
+static void test_rrw_ml_calibration(void **state)
+{
+    enum { NSEED = 24 };
+    const double fs = 50.0, N = 1e-3, K = 5e-5;
+    const long n = 100000;
+    double *x = malloc((size_t)n * sizeof *x), s1 = 0.0, s2 = 0.0, sse = 0.0, mean, sd, mse;
+    sg_segs_t segs;
+    int it;
+    (void)state;
+    assert_non_null(x);
+    sg_segs_split(n, 0.6, 1, &segs);
+    for (it = 0; it < NSEED; it++) {
+        fnav_rng_t rng;
+        sg_chmodel_t m;
+        sg_effect_t e;
+        double b = 0.0, q;
+        long k;
+        fnav_rng_seed(&rng, 100u + (uint32_t)it, 3u);
+        for (k = 0; k < n; k++) {
+            b += K / sqrt(fs) * (double)fnav_rng_gauss(&rng);
+            x[k] = b + N * sqrt(fs) * (double)fnav_rng_gauss(&rng);
+        }
+        memset(&m, 0, sizeof m);
+        memset(&e, 0, sizeof e);
+        e.id = FNAV_EFFECT_WHITE;
+        e.p[0] = N;
+        assert_int_equal(sg_model_set(&m, &e), 0);
+        e.id = FNAV_EFFECT_RRW;
+        e.p[0] = K;
+        assert_int_equal(sg_model_set(&m, &e), 0);
+        assert_int_equal(sg_rrw_ml(x, &segs, SG_FIT, fs, &m), 0);
+        q = m.e[1].p[0] / K;
+        s1 += q;
+        s2 += q * q;
+        sse += m.e[1].se[0] / K;
+    }
+    mean = s1 / NSEED;
+    sd = sqrt((s2 - s1 * s1 / NSEED) / (NSEED - 1));
+    mse = sse / NSEED;
+    print_message("rrw likelihood, %d seeds: mean K^/K %.3f, spread %.3f, mean standard error %.3f\n", NSEED, mean,
+                  sd, mse);
+    assert_true(fabs(mean - 1.0) < 3.0 * sd / sqrt((double)NSEED));
+    assert_true(sd < 1.6 * mse && mse < 1.6 * sd);
+    free(x);
+}
+
 /* White noise of 1e-3 u/sqrt(Hz) plus one effect (e), and the exact Allan
  * table of that model over one block [0, T] at octaves m = 1 .. 2^(n-1). */
 static void white_plus_table(const sg_effect_t *e, double fs, double T, size_t n, sg_chmodel_t *m, sg_table_t *tb)
@@ -675,6 +727,7 @@ int main(void)
         cmocka_unit_test(test_time_var_rrw),
         cmocka_unit_test(test_time_deviance),
         cmocka_unit_test(test_rrw_ml),
+        cmocka_unit_test(test_rrw_ml_calibration),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
