@@ -489,6 +489,29 @@ static void test_time_var_rrw(void **state)
     FNAV_ASSERT_CLOSE(t.tvb[2], K * K * (D - B / 3.0), 0.0, 1e-3);
 }
 
+/* n samples at fs of white noise (N u/sqrt(Hz)) plus a rate random walk
+ * (K u/sqrt(s)) from seed into x, and the model white N + rrw K0 in m. */
+static void white_rrw(double *x, long n, double fs, double N, double K, uint32_t seed, double K0, sg_chmodel_t *m)
+{
+    fnav_rng_t rng;
+    sg_effect_t e;
+    double b = 0.0;
+    long k;
+    fnav_rng_seed(&rng, seed, 3u);
+    for (k = 0; k < n; k++) {
+        b += K / sqrt(fs) * (double)fnav_rng_gauss(&rng);
+        x[k] = b + N * sqrt(fs) * (double)fnav_rng_gauss(&rng);
+    }
+    memset(m, 0, sizeof *m);
+    memset(&e, 0, sizeof e);
+    e.id = FNAV_EFFECT_WHITE;
+    e.p[0] = N;
+    assert_int_equal(sg_model_set(m, &e), 0);
+    e.id = FNAV_EFFECT_RRW;
+    e.p[0] = K0;
+    assert_int_equal(sg_model_set(m, &e), 0);
+}
+
 /* The rate random walk's K by likelihood (sg_rrw_ml): white noise plus a
  * random walk of known K, the fit segment the two ends of a sandwich
  * split; started 3x too high, the estimate comes back to the truth within
@@ -500,30 +523,21 @@ static void test_rrw_ml(void **state)
 {
     const double fs = 50.0, N = 1e-3, K = 5e-5, ramp = 3e-6;
     const long n = 200000;
-    double *x = malloc((size_t)n * sizeof *x), *xr = malloc((size_t)n * sizeof *xr), b = 0.0, K1, se;
+    double *x = malloc((size_t)n * sizeof *x), *xr = malloc((size_t)n * sizeof *xr), K1, se;
     sg_chmodel_t m, m2;
     sg_effect_t e;
     sg_segs_t segs;
-    fnav_rng_t rng;
     long k;
     (void)state;
     assert_non_null(x);
     assert_non_null(xr);
-    fnav_rng_seed(&rng, 11u, 3u);
+    white_rrw(x, n, fs, N, K, 11u, 3.0 * K, &m);
     for (k = 0; k < n; k++) {
-        b += K / sqrt(fs) * (double)fnav_rng_gauss(&rng);
-        x[k] = 0.05 + b + N * sqrt(fs) * (double)fnav_rng_gauss(&rng);
+        x[k] += 0.05;
         xr[k] = x[k] + ramp * (double)k / fs;
     }
     sg_segs_split(n, 0.6, 1, &segs);
-    memset(&m, 0, sizeof m);
     memset(&e, 0, sizeof e);
-    e.id = FNAV_EFFECT_WHITE;
-    e.p[0] = N;
-    assert_int_equal(sg_model_set(&m, &e), 0);
-    e.id = FNAV_EFFECT_RRW;
-    e.p[0] = 3.0 * K;
-    assert_int_equal(sg_model_set(&m, &e), 0);
     m2 = m;
     assert_int_equal(sg_rrw_ml(x, &segs, SG_FIT, fs, &m), 0);
     K1 = m.e[sg_model_find(&m, FNAV_EFFECT_RRW)].p[0];
@@ -564,24 +578,9 @@ static void test_rrw_ml_calibration(void **state)
     assert_non_null(x);
     sg_segs_split(n, 0.6, 1, &segs);
     for (it = 0; it < NSEED; it++) {
-        fnav_rng_t rng;
         sg_chmodel_t m;
-        sg_effect_t e;
-        double b = 0.0, q;
-        long k;
-        fnav_rng_seed(&rng, 100u + (uint32_t)it, 3u);
-        for (k = 0; k < n; k++) {
-            b += K / sqrt(fs) * (double)fnav_rng_gauss(&rng);
-            x[k] = b + N * sqrt(fs) * (double)fnav_rng_gauss(&rng);
-        }
-        memset(&m, 0, sizeof m);
-        memset(&e, 0, sizeof e);
-        e.id = FNAV_EFFECT_WHITE;
-        e.p[0] = N;
-        assert_int_equal(sg_model_set(&m, &e), 0);
-        e.id = FNAV_EFFECT_RRW;
-        e.p[0] = K;
-        assert_int_equal(sg_model_set(&m, &e), 0);
+        double q;
+        white_rrw(x, n, fs, N, K, 100u + (uint32_t)it, K, &m);
         assert_int_equal(sg_rrw_ml(x, &segs, SG_FIT, fs, &m), 0);
         q = m.e[1].p[0] / K;
         s1 += q;
