@@ -566,15 +566,16 @@ static double fit_tmax(const sg_result_t *r, int ch)
 }
 
 /* The second fold of a sandwich split: the candidate model (current
- * effects plus one, ids `with`) fitted on the middle (table tm) and tested
+ * effects plus one, ids `with`) fitted on the middle (table tm; a walk's K
+ * by the likelihood of the middle's samples of x) and tested
  * on the ends, which the first fold fitted on. The reference is the
  * current model's twins (fitted on the ends, their refit shifts on the
  * ends included, so twins taken as the real are treated as the real was);
  * the candidate's twins share their seeds. Gives the score test's z on the
  * ends and the ends' gap reduction. Returns 0, or -1 when the fold could
  * not be computed. */
-static int fold_ends(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_t *fc, const sg_table_t *tm, const int *with,
-                     int nwith, double tmax, double alpha, uint32_t seed, const twinset_t *cur,
+static int fold_ends(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_t *fc, const sg_table_t *tm,
+                     const int *with, int nwith, double tmax, double alpha, uint32_t seed, const twinset_t *cur,
                      const sg_cmp_t ccur[SG_NSEG], const sg_cand_t *cd, double *z, double *dG, double *zg,
                      double *dL)
 {
