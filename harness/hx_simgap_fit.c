@@ -1472,24 +1472,23 @@ void sg_evidence(const double *x, const sg_segs_t *segs, double rate_hz, double 
 
 /* ------------------------------------------------------------ rrw by likelihood */
 
-/* -2 ln L (up to a constant) of segment g of x under white (variance r per
+/* -2 ln L (up to a constant) of segment g under white (variance r per
  * sample) + AR(1) (phi, stationary variance s2) + rate random walk (qb per
- * sample) after removing the deterministic drift: a two-state Kalman filter
- * over the segment's blocks, the walk carried across the gaps between them
- * (its variance grows by qb per skipped sample; the AR(1) relaxes towards
- * its stationary variance). The walk starts diffuse: it is set from the
- * first sample, whose term is left out. */
-static double rrw_nll(const double *x, const sg_segs_t *segs, int g, double rate_hz, const sg_chmodel_t *m, double r,
-                      double phi, double s2, double qb)
+ * sample); y holds the segment's samples, its blocks one after the other,
+ * with the deterministic drift removed. A two-state Kalman filter over the
+ * segment's blocks, the walk carried across the gaps between them (its
+ * variance grows by qb per skipped sample; the AR(1) relaxes towards its
+ * stationary variance). The walk starts diffuse: it is set from the first
+ * sample, whose term is left out. */
+static double rrw_nll(const double *ys, const sg_segs_t *segs, int g, double r, double phi, double s2, double qb)
 {
-    const double dt = 1.0 / rate_hz;
     double a = 0.0, b = 0.0, Paa = s2, Pab = 0.0, Pbb = 0.0, nll = 0.0;
-    long last = -1;
+    long last = -1, j = 0;
     int blk, started = 0;
     for (blk = 0; blk < segs->nb[g]; blk++) {
         long k0 = segs->start[g][blk], k1 = k0 + segs->n[g][blk], k;
         for (k = k0; k < k1; k++) {
-            double y = x[k] - model_drift(m, (double)k * dt), v, S, ka, kb;
+            double y = ys[j++], v, S, ka, kb;
             if (!started) {
                 /* the walk from the first sample, its error -(a + e) */
                 b = y;
@@ -1530,8 +1529,9 @@ static double rrw_nll(const double *x, const sg_segs_t *segs, int g, double rate
 int sg_rrw_ml(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_chmodel_t *m)
 {
     const double gr = 0.6180339887498949, dt = 1.0 / rate_hz;
-    double r = 0.0, phi = 0.0, s2 = 0.0, K, lo, hi;
-    int i, ik = -1, k;
+    double r = 0.0, phi = 0.0, s2 = 0.0, K, lo, hi, *y;
+    long ny = 0, j = 0;
+    int i, ik = -1, k, blk;
     for (i = 0; i < m->n; i++) {
         const sg_effect_t *e = &m->e[i];
         switch (e->id) {
@@ -1551,13 +1551,27 @@ int sg_rrw_ml(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_
     if (ik < 0 || !(m->e[ik].p[0] > 0.0) || !(r > 0.0) || segs->nb[g] < 1) {
         return 1;
     }
+    /* the samples without the deterministic drift, once: they do not depend on K */
+    for (blk = 0; blk < segs->nb[g]; blk++) {
+        ny += segs->n[g][blk];
+    }
+    y = (double *)malloc((size_t)(ny > 0 ? ny : 1) * sizeof *y);
+    if (y == NULL) {
+        return 1;
+    }
+    for (blk = 0; blk < segs->nb[g]; blk++) {
+        long k0 = segs->start[g][blk], k1 = k0 + segs->n[g][blk], kk;
+        for (kk = k0; kk < k1; kk++) {
+            y[j++] = x[kk] - model_drift(m, (double)kk * dt);
+        }
+    }
     K = m->e[ik].p[0];
     lo = log(K) - log(8.0);
     hi = log(K) + log(8.0);
     for (k = 0; k < 40 && hi - lo > 1e-3; k++) {
         double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo);
-        double q1 = rrw_nll(x, segs, g, rate_hz, m, r, phi, s2, exp(2.0 * x1) * dt);
-        double q2 = rrw_nll(x, segs, g, rate_hz, m, r, phi, s2, exp(2.0 * x2) * dt);
+        double q1 = rrw_nll(y, segs, g, r, phi, s2, exp(2.0 * x1) * dt);
+        double q2 = rrw_nll(y, segs, g, r, phi, s2, exp(2.0 * x2) * dt);
         if (q1 < q2) {
             hi = x2;
         } else {
@@ -1568,12 +1582,13 @@ int sg_rrw_ml(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_
         /* standard error from the curvature of -2 ln L in ln K (Fisher
          * information: half of it) */
         const double lk = 0.5 * (lo + hi), h = 0.05;
-        const double q0 = rrw_nll(x, segs, g, rate_hz, m, r, phi, s2, exp(2.0 * lk) * dt);
-        const double qp = rrw_nll(x, segs, g, rate_hz, m, r, phi, s2, exp(2.0 * (lk + h)) * dt);
-        const double qm = rrw_nll(x, segs, g, rate_hz, m, r, phi, s2, exp(2.0 * (lk - h)) * dt);
+        const double q0 = rrw_nll(y, segs, g, r, phi, s2, exp(2.0 * lk) * dt);
+        const double qp = rrw_nll(y, segs, g, r, phi, s2, exp(2.0 * (lk + h)) * dt);
+        const double qm = rrw_nll(y, segs, g, r, phi, s2, exp(2.0 * (lk - h)) * dt);
         const double curv = (qp - 2.0 * q0 + qm) / (h * h);
         m->e[ik].p[0] = exp(lk);
         m->e[ik].se[0] = curv > 0.0 ? m->e[ik].p[0] * sqrt(2.0 / curv) : (double)NAN;
     }
+    free(y);
     return 0;
 }
