@@ -18,6 +18,7 @@ Run: /usr/bin/python3 scripts/flicker_rrw_limit.py   (about a minute)
 """
 import numpy as np
 from scipy.linalg import cho_factor, cho_solve
+from scipy.optimize import minimize_scalar
 from scipy.signal import lfilter
 
 N = 6.0e-3
@@ -88,22 +89,10 @@ def nll(segs, unit, m2):
 
 
 def best_nll(segs, unit, m0):
-    """Golden section over ln(magnitude) within a factor 30 of m0."""
-    lo, hi, gr = np.log(m0 / 30.0), np.log(m0 * 30.0), 0.6180339887498949
-    f = lambda l: nll(segs, unit, np.exp(2.0 * l))
-    a, b = hi - gr * (hi - lo), lo + gr * (hi - lo)
-    fa, fb = f(a), f(b)
-    while hi - lo > 2e-3:
-        if fa < fb:
-            hi, b, fb = b, a, fa
-            a = hi - gr * (hi - lo)
-            fa = f(a)
-        else:
-            lo, a, fa = a, b, fb
-            b = lo + gr * (hi - lo)
-            fb = f(b)
-    return min(fa, fb)
-
+    """Least -2 ln L over the magnitude, searched in its log within a factor 30 of m0."""
+    res = minimize_scalar(lambda l: nll(segs, unit, np.exp(2.0 * l)), bounds=(np.log(m0 / 30.0), np.log(m0 * 30.0)),
+                          method="bounded", options={"xatol": 2e-3})
+    return res.fun
 
 for mult in (1.0, 1.5, 2.0):
     right = {}

@@ -18,6 +18,7 @@ K estimate is within 25 % of the truth, and the median relative error.
 Run: /usr/bin/python3 scripts/rrw_k_limit.py   (about half a minute)
 """
 import numpy as np
+from scipy.optimize import minimize_scalar
 
 N = 6.0e-3           # white noise, m/s^2/sqrt(Hz)
 K_TH = 7.15099e-05   # detectable K, shimmer acc (vectors/sim/detectable.csv)
@@ -60,21 +61,10 @@ def nll(y, keep, K):
 
 
 def fit(y, keep):
-    lo, hi = np.log(K_TH / 20.0), np.log(K_TH * 40.0)
-    gr = 0.6180339887498949
-    a, b = hi - gr * (hi - lo), lo + gr * (hi - lo)
-    fa, fb = nll(y, keep, np.exp(a)), nll(y, keep, np.exp(b))
-    while hi - lo > 1e-3:
-        if fa < fb:
-            hi, b, fb = b, a, fa
-            a = hi - gr * (hi - lo)
-            fa = nll(y, keep, np.exp(a))
-        else:
-            lo, a, fa = a, b, fb
-            b = lo + gr * (hi - lo)
-            fb = nll(y, keep, np.exp(b))
-    return np.exp(0.5 * (lo + hi))
-
+    """K maximising the likelihood, searched in ln K over [K_th/20, 40 K_th]."""
+    res = minimize_scalar(lambda l: nll(y, keep, np.exp(l)), bounds=(np.log(K_TH / 20.0), np.log(K_TH * 40.0)),
+                          method="bounded", options={"xatol": 1e-3})
+    return np.exp(res.x)
 
 for mult in (1.0, 1.5, 2.0, 3.0):
     K = mult * K_TH
