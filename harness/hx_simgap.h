@@ -418,6 +418,28 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
  */
 int sg_rrw_ml(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_chmodel_t *m);
 
+/**
+ * -2 ln L (without the constant n ln 2 pi) of nblk independent series dd[b]
+ * of lengths nd[b] <= 400, each stationary Gaussian with autocovariance
+ * acv[0 .. max nd - 1], by the Durbin-Levinson recursion (O(n^2)): the sum of
+ * ln v_k + e_k^2 / v_k over the one-step prediction errors e_k and their
+ * variances v_k. INFINITY when acv is not positive definite; NaN when a
+ * series is too long.
+ */
+double sg_toeplitz_nll2(const double *acv, int nblk, const int *nd, const double *const *dd);
+
+/**
+ * Fit the magnitude of a flicker's B or a walk's K (id) in m by the exact
+ * Gaussian likelihood of the first differences of the block means of
+ * segment g of x (the deterministic drifts removed, every other parameter
+ * held; at most 401 block means per block), by golden section in
+ * ln magnitude within a factor 30 of the starting value; its se from the
+ * curvature of -2 ln L. Returns 0 with *nll2 = -2 ln L at the fit, 1 when
+ * the model has no such effect or a part without a closed-form
+ * autocovariance here (vibration and other deterministic tones).
+ */
+int sg_bm_fit(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_chmodel_t *m, int id, double *nll2);
+
 /** Allan variance of an effect per unit magnitude squared (its other
  *  parameters from e) at averaging factor m over [t0_s, t1_s]; 0 for
  *  effects without a static Allan signature. */

@@ -1592,3 +1592,238 @@ int sg_rrw_ml(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_
     free(y);
     return 0;
 }
+
+/* ------------------------------------------------ flicker or rrw: the block means' likelihood */
+
+/* A segment's block means (D samples each, at most BM_MAXN + 1 per data
+ * block) are differenced, which makes a walk stationary, and their exact
+ * Gaussian likelihood follows from closed-form autocovariances of every
+ * random part of the model; flicker has no finite state-space form for the
+ * exact filter of sg_rrw_ml, but its 12 poles have one here
+ * (scripts/flicker_rrw_limit.py is the independent double-precision version
+ * of the same likelihood). */
+
+#define BM_MAXN 400 /* differenced block means per data block */
+
+/* autocovariance of the first differences of D-long block means, lags
+ * 0..n-1, of a model's random parts (deterministic drifts excluded);
+ * returns -1 for parts without a Gaussian form here */
+static int bm_diff_acov(const sg_chmodel_t *m, double fs, double D, int n, double *d)
+{
+    static double c[BM_MAXN + 2];
+    int i, k, j;
+    for (k = 0; k < n; k++) {
+        d[k] = 0.0;
+    }
+    for (i = 0; i < m->n; i++) {
+        const sg_effect_t *e = &m->e[i];
+        int npole = 0;
+        double s2[FNAV_IMUERR_FLICKER_POLES], tau[FNAV_IMUERR_FLICKER_POLES], K2 = 0.0, W = 0.0;
+        switch (e->id) {
+        case FNAV_EFFECT_WHITE: W = e->p[0] * e->p[0] / D; break;
+        case FNAV_EFFECT_QUANT:
+            if (e->p[1] != 0.0) {
+                break; /* noise-shaped: its block means carry one LSB over the block, negligible */
+            }
+            W = e->p[0] * e->p[0] / 12.0 / (fs * D);
+            break;
+        case FNAV_EFFECT_AR1:
+            if (e->p[1] > 0.0 && e->p[0] > 0.0) {
+                s2[0] = e->p[1] * e->p[1];
+                tau[0] = e->p[0];
+                npole = 1;
+            }
+            break;
+        case FNAV_EFFECT_FLICKER: {
+            const int P = FNAV_IMUERR_FLICKER_POLES;
+            double lnr = log(e->p[2] / e->p[1]) / (double)(P - 1);
+            for (j = 0; j < P; j++) {
+                tau[j] = e->p[1] * exp(lnr * (double)j);
+                s2[j] = e->p[0] * e->p[0] * lnr / M_PI;
+            }
+            npole = P;
+            break;
+        }
+        case FNAV_EFFECT_RRW: K2 = e->p[0] * e->p[0]; break;
+        case FNAV_EFFECT_JUMPS: K2 = e->p[0] * e->p[1] * e->p[1]; break;
+        case FNAV_EFFECT_RAMP:
+        case FNAV_EFFECT_THERMAL: break;
+        default: return -1;
+        }
+        d[0] += 2.0 * W + K2 * 2.0 * D / 3.0;
+        if (n > 1) {
+            d[1] += -W + K2 * D / 6.0;
+        }
+        for (j = 0; j < npole; j++) {
+            const double a = D / tau[j], g = s2[j] / (a * a);
+            c[0] = 2.0 * g * (a - 1.0 + exp(-a));
+            for (k = 1; k <= n; k++) {
+                c[k] = g * (2.0 * cosh(a) - 2.0) * exp(-(double)k * a);
+                if (!isfinite(c[k])) {
+                    c[k] = 0.0;
+                }
+            }
+            d[0] += 2.0 * (c[0] - c[1]);
+            for (k = 1; k < n; k++) {
+                d[k] += 2.0 * c[k] - c[k - 1] - c[k + 1];
+            }
+        }
+    }
+    return 0;
+}
+
+/* Durbin-Levinson: phi_{k+1,k+1} = (acv(k+1) - sum_j phi_{k,j} acv(k+1-j)) / v_k,
+ * phi_{k+1,j} = phi_{k,j} - phi_{k+1,k+1} phi_{k,k+1-j}, v_{k+1} = v_k (1 - phi_{k+1,k+1}^2)
+ * (Brockwell and Davis, Time Series: Theory and Methods, 5.2.1) */
+double sg_toeplitz_nll2(const double *acv, int nblk, const int *nd, const double *const *dd)
+{
+    static double phi[BM_MAXN], prev[BM_MAXN];
+    int nmax = 0, k, j, b;
+    double v = acv[0], q = 0.0;
+    for (b = 0; b < nblk; b++) {
+        if (nd[b] > BM_MAXN) {
+            return (double)NAN;
+        }
+        nmax = nd[b] > nmax ? nd[b] : nmax;
+    }
+    for (k = 0; k < nmax; k++) {
+        /* phi holds phi_{k,1..k}: the predictor of sample k from the k before it */
+        if (!(v > 0.0)) {
+            return INFINITY;
+        }
+        for (b = 0; b < nblk; b++) {
+            if (k < nd[b]) {
+                double e = dd[b][k];
+                for (j = 0; j < k; j++) {
+                    e -= phi[j] * dd[b][k - 1 - j];
+                }
+                q += log(v) + e * e / v;
+            }
+        }
+        if (k + 1 < nmax) {
+            double num = acv[k + 1], a;
+            for (j = 0; j < k; j++) {
+                num -= phi[j] * acv[k - j];
+                prev[j] = phi[j];
+            }
+            a = num / v;
+            for (j = 0; j < k; j++) {
+                phi[j] = prev[j] - a * prev[k - 1 - j];
+            }
+            phi[k] = a;
+            v *= 1.0 - a * a;
+        }
+    }
+    return q;
+}
+
+/* -2 ln L with the model as it is (NaN: a part without a Gaussian form) */
+static double bm_eval(const sg_chmodel_t *m, double fs, double Ds, int nblk, const int *nd, double (*dd)[BM_MAXN])
+{
+    static double acv[BM_MAXN + 1];
+    const double *rows[SG_MAX_BLK];
+    int b;
+    if (bm_diff_acov(m, fs, Ds, BM_MAXN, acv) != 0) {
+        return (double)NAN;
+    }
+    for (b = 0; b < nblk; b++) {
+        rows[b] = dd[b];
+    }
+    return sg_toeplitz_nll2(acv, nblk, nd, rows);
+}
+
+/* golden section for one parameter p (searched in ln p over [lo, hi]),
+ * the others fixed; leaves the best value in *p and returns its -2 ln L */
+static double bm_golden(sg_chmodel_t *m, double *p, double lo, double hi, double fs, double Ds, int nblk,
+                        const int *nd, double (*dd)[BM_MAXN])
+{
+    const double gr = 0.6180339887498949;
+    double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo), q1, q2, p0 = *p, q0;
+    q0 = bm_eval(m, fs, Ds, nblk, nd, dd);
+    *p = exp(x1);
+    q1 = bm_eval(m, fs, Ds, nblk, nd, dd);
+    *p = exp(x2);
+    q2 = bm_eval(m, fs, Ds, nblk, nd, dd);
+    while (hi - lo > 5e-3) {
+        if (q1 < q2) {
+            hi = x2;
+            x2 = x1;
+            q2 = q1;
+            x1 = hi - gr * (hi - lo);
+            *p = exp(x1);
+            q1 = bm_eval(m, fs, Ds, nblk, nd, dd);
+        } else {
+            lo = x1;
+            x1 = x2;
+            q1 = q2;
+            x2 = lo + gr * (hi - lo);
+            *p = exp(x2);
+            q2 = bm_eval(m, fs, Ds, nblk, nd, dd);
+        }
+    }
+    if (q0 <= q1 && q0 <= q2) {
+        *p = p0;
+        return q0;
+    }
+    *p = q1 < q2 ? exp(x1) : exp(x2);
+    return q1 < q2 ? q1 : q2;
+}
+
+int sg_bm_fit(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_chmodel_t *m, int id, double *nll2)
+{
+    static double dd[SG_MAX_BLK][BM_MAXN], acv[BM_MAXN + 1];
+    const double h = 0.05;
+    int nd[SG_MAX_BLK], blk, ik, mp;
+    long nmax = 0, D;
+    double Ds, c, q, qp, qm, curv, *p;
+    ik = sg_model_find(m, id);
+    mp = mag_param(id);
+    if ((id != FNAV_EFFECT_FLICKER && id != FNAV_EFFECT_RRW) || ik < 0 || !(m->e[ik].p[mp] > 0.0) ||
+        bm_diff_acov(m, rate_hz, 1.0, 1, acv) != 0) {
+        return 1;
+    }
+    for (blk = 0; blk < segs->nb[g]; blk++) {
+        nmax = segs->n[g][blk] > nmax ? segs->n[g][blk] : nmax;
+    }
+    /* at most BM_MAXN + 1 block means per data block */
+    D = (nmax + BM_MAXN) / (BM_MAXN + 1);
+    D = D < 1 ? 1 : D;
+    Ds = (double)D / rate_hz;
+    for (blk = 0; blk < segs->nb[g]; blk++) {
+        long k0 = segs->start[g][blk], nb = segs->n[g][blk] / D, b;
+        double prev = 0.0;
+        nd[blk] = 0;
+        for (b = 0; b < nb; b++) {
+            double s = 0.0;
+            long k;
+            for (k = k0 + b * D; k < k0 + (b + 1) * D; k++) {
+                s += x[k] - model_drift(m, (double)k / rate_hz);
+            }
+            s /= (double)D;
+            if (b > 0 && nd[blk] < BM_MAXN) {
+                dd[blk][nd[blk]++] = s - prev;
+            }
+            prev = s;
+        }
+        if (nd[blk] < 2) {
+            return 1; /* a block too short for a likelihood */
+        }
+    }
+    p = &m->e[ik].p[mp];
+    c = log(*p);
+    q = bm_golden(m, p, c - log(30.0), c + log(30.0), rate_hz, Ds, segs->nb[g], nd, dd);
+    if (!(q < (double)INFINITY)) {
+        return 1;
+    }
+    /* standard error from the curvature of -2 ln L in ln magnitude */
+    c = *p;
+    *p = c * exp(h);
+    qp = bm_eval(m, rate_hz, Ds, segs->nb[g], nd, dd);
+    *p = c * exp(-h);
+    qm = bm_eval(m, rate_hz, Ds, segs->nb[g], nd, dd);
+    *p = c;
+    curv = (qp + qm - 2.0 * q) / (h * h);
+    m->e[ik].se[mp] = curv > 0.0 ? c * sqrt(2.0 / curv) : (double)NAN;
+    *nll2 = q;
+    return 0;
+}

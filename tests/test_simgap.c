@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include <cmocka.h>
+#include <gsl/gsl_linalg.h>
 
 #include "footnav/fnav_profile.h"
 #include "hx_simgap.h"
@@ -597,6 +598,146 @@ static void test_rrw_ml_calibration(void **state)
     free(x);
 }
 
+/* The Durbin-Levinson likelihood (sg_toeplitz_nll2) against a dense
+ * Cholesky factorisation (GSL) of the same Toeplitz covariance: the
+ * autocovariance of a differenced white noise plus an AR(1), two series of
+ * different lengths; -2 ln L = ln det C + y' C^-1 y per series. A
+ * covariance that is not positive definite gives INFINITY. */
+static void test_toeplitz_nll2(void **state)
+{
+    enum { N1 = 60, N2 = 41 };
+    double acv[N1], y1[N1], y2[N2], ref = 0.0, got;
+    const double *dd[2];
+    int nd[2] = {N1, N2}, b, i, j;
+    fnav_rng_t rng;
+    (void)state;
+    fnav_rng_seed(&rng, 5u, 1u);
+    for (i = 0; i < N1; i++) {
+        acv[i] = 0.7 * pow(0.93, (double)i);
+        y1[i] = (double)fnav_rng_gauss(&rng);
+    }
+    acv[0] += 2.0;
+    acv[1] -= 1.0;
+    for (i = 0; i < N2; i++) {
+        y2[i] = 0.5 * (double)fnav_rng_gauss(&rng);
+    }
+    dd[0] = y1;
+    dd[1] = y2;
+    for (b = 0; b < 2; b++) {
+        gsl_matrix *C = gsl_matrix_alloc((size_t)nd[b], (size_t)nd[b]);
+        gsl_vector *v = gsl_vector_alloc((size_t)nd[b]), *z = gsl_vector_alloc((size_t)nd[b]);
+        for (i = 0; i < nd[b]; i++) {
+            for (j = 0; j < nd[b]; j++) {
+                gsl_matrix_set(C, (size_t)i, (size_t)j, acv[abs(i - j)]);
+            }
+            gsl_vector_set(v, (size_t)i, dd[b][i]);
+        }
+        assert_int_equal(gsl_linalg_cholesky_decomp1(C), 0);
+        assert_int_equal(gsl_linalg_cholesky_solve(C, v, z), 0);
+        for (i = 0; i < nd[b]; i++) {
+            ref += 2.0 * log(gsl_matrix_get(C, (size_t)i, (size_t)i)) + dd[b][i] * gsl_vector_get(z, (size_t)i);
+        }
+        gsl_matrix_free(C);
+        gsl_vector_free(v);
+        gsl_vector_free(z);
+    }
+    got = sg_toeplitz_nll2(acv, 2, nd, dd);
+    FNAV_ASSERT_CLOSE(got, ref, 1e-9, 1e-9);
+    /* lag-1 correlation beyond 1: not positive definite */
+    acv[1] = 1.5 * acv[0];
+    assert_true(isinf(sg_toeplitz_nll2(acv, 2, nd, dd)));
+}
+
+/* White noise (1e-3 u/sqrt(Hz)) plus flicker made the simulator's way (12
+ * AR(1) poles log-spaced over 0.5-5000 s, each of variance B^2 ln r / pi,
+ * docs/simulator.md), or plus a random walk; 4000 s at 50 Hz, the fit
+ * segment the two ends. */
+static void white_flicker(double *x, long n, double fs, double B, uint32_t seed)
+{
+    enum { P = 12 };
+    const double lnr = log(5000.0 / 0.5) / (double)(P - 1), v = B * B * lnr / M_PI;
+    double b[P], phi[P];
+    fnav_rng_t rng;
+    long k;
+    int i;
+    fnav_rng_seed(&rng, seed, 4u);
+    for (i = 0; i < P; i++) {
+        phi[i] = exp(-1.0 / (fs * 0.5 * exp(lnr * (double)i)));
+        b[i] = sqrt(v) * (double)fnav_rng_gauss(&rng);
+    }
+    for (k = 0; k < n; k++) {
+        double s = 0.0;
+        for (i = 0; i < P; i++) {
+            b[i] = phi[i] * b[i] + sqrt(v * (1.0 - phi[i] * phi[i])) * (double)fnav_rng_gauss(&rng);
+            s += b[i];
+        }
+        x[k] = s + 1e-3 * sqrt(fs) * (double)fnav_rng_gauss(&rng);
+    }
+}
+
+/* Flicker or a walk by the block means' likelihood (sg_bm_fit): on a log
+ * holding one of them, each model's magnitude is fitted (started 2x off)
+ * and the true model's -2 ln L is the lower by more than 10; its magnitude
+ * is within four of its own standard errors of the truth. */
+static void test_bm_fit(void **state)
+{
+    const double fs = 50.0, B = 1e-3, K = 1e-4;
+    const long n = 200000;
+    double *x = malloc((size_t)n * sizeof *x), qf, qw;
+    sg_segs_t segs;
+    int truth;
+    (void)state;
+    assert_non_null(x);
+    sg_segs_split(n, 0.6, 1, &segs);
+    for (truth = 0; truth < 2; truth++) {
+        sg_chmodel_t mf, mw;
+        sg_effect_t e;
+        int kf, kw;
+        if (truth == 0) {
+            white_flicker(x, n, fs, B, 21u);
+        } else {
+            white_rrw(x, n, fs, 1e-3, K, 23u, 2.0 * K, &mw);
+        }
+        white_rrw(x, 0, fs, 1e-3, 0.0, 0u, 2.0 * K, &mw); /* n = 0: the model only (white, walk at 2K) */
+        mf = mw;
+        mf.n = 1; /* white only, then flicker */
+        memset(&e, 0, sizeof e);
+        e.id = FNAV_EFFECT_FLICKER;
+        e.p[0] = 2.0 * B;
+        e.p[1] = 0.5;
+        e.p[2] = 5000.0;
+        assert_int_equal(sg_model_set(&mf, &e), 0);
+        assert_int_equal(sg_bm_fit(x, &segs, SG_FIT, fs, &mf, FNAV_EFFECT_FLICKER, &qf), 0);
+        assert_int_equal(sg_bm_fit(x, &segs, SG_FIT, fs, &mw, FNAV_EFFECT_RRW, &qw), 0);
+        kf = sg_model_find(&mf, FNAV_EFFECT_FLICKER);
+        kw = sg_model_find(&mw, FNAV_EFFECT_RRW);
+        print_message("block means' likelihood, %s in the data: flicker B %.3g (se %.2g), rrw K %.3g (se %.2g), "
+                      "-2 ln L flicker - rrw %.1f\n",
+                      truth == 0 ? "flicker" : "rrw", mf.e[kf].p[0], mf.e[kf].se[0], mw.e[kw].p[0], mw.e[kw].se[0],
+                      qf - qw);
+        if (truth == 0) {
+            assert_true(qf < qw - 10.0);
+            assert_true(mf.e[kf].se[0] > 0.0 && fabs(mf.e[kf].p[0] - B) < 4.0 * mf.e[kf].se[0]);
+        } else {
+            assert_true(qw < qf - 10.0);
+            assert_true(mw.e[kw].se[0] > 0.0 && fabs(mw.e[kw].p[0] - K) < 4.0 * mw.e[kw].se[0]);
+        }
+    }
+    /* a tone has no closed-form autocovariance here: refused */
+    {
+        sg_chmodel_t mv;
+        sg_effect_t e;
+        white_rrw(x, 0, fs, 1e-3, 0.0, 0u, K, &mv);
+        memset(&e, 0, sizeof e);
+        e.id = FNAV_EFFECT_VIBRATION;
+        e.p[0] = 1e-3;
+        e.p[1] = 7.0;
+        assert_int_equal(sg_model_set(&mv, &e), 0);
+        assert_int_equal(sg_bm_fit(x, &segs, SG_FIT, fs, &mv, FNAV_EFFECT_RRW, &qw), 1);
+    }
+    free(x);
+}
+
 /* White noise of 1e-3 u/sqrt(Hz) plus one effect (e), and the exact Allan
  * table of that model over one block [0, T] at octaves m = 1 .. 2^(n-1). */
 static void white_plus_table(const sg_effect_t *e, double fs, double T, size_t n, sg_chmodel_t *m, sg_table_t *tb)
@@ -727,6 +868,8 @@ int main(void)
         cmocka_unit_test(test_time_deviance),
         cmocka_unit_test(test_rrw_ml),
         cmocka_unit_test(test_rrw_ml_calibration),
+        cmocka_unit_test(test_toeplitz_nll2),
+        cmocka_unit_test(test_bm_fit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
