@@ -585,27 +585,26 @@ static int fold_ends(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     twinset_t ts;
     sg_cmp_t cc;
     double tr, tmn, tsd;
-    int k, started;
+    int k;
     if (sg_fit_model(tm, c->baseline.mean, with, nwith, &c->ev, tmax, &f) != 0) {
         return -1;
     }
     k = sg_model_find(&f.model, cd->id);
-    /* the middle's few long-tau Allan points put a random drift at zero
-     * more often than its samples do: its magnitude is then fitted by the
-     * middle's likelihood (flicker by its block means, a walk by the exact
-     * filter), started from fold 1's; without a likelihood it stays zero */
-    started = k >= 0 && (cd->id == FNAV_EFFECT_FLICKER || cd->id == FNAV_EFFECT_RRW) && !(f.model.e[k].p[0] > 0.0) &&
-              cd->eff.p[0] > 0.0;
-    if (started) {
+    if (k >= 0 && (cd->id == FNAV_EFFECT_FLICKER || cd->id == FNAV_EFFECT_RRW) && !(f.model.e[k].p[0] > 0.0) &&
+        cd->eff.p[0] > 0.0) {
+        /* the middle's few long-tau Allan points put a random drift at
+         * zero more often than its samples do: its magnitude is then
+         * fitted by the middle's likelihood (flicker by its block means, a
+         * walk by the exact filter), started from fold 1's; without a
+         * likelihood it stays zero */
         double q2;
         f.model.e[k].p[0] = cd->eff.p[0];
-        if (cd->id == FNAV_EFFECT_FLICKER &&
-            sg_bm_fit(x, &r->segs, SG_HOLD, r->rate_hz, &f.model, FNAV_EFFECT_FLICKER, &q2) != 0) {
+        if ((cd->id == FNAV_EFFECT_FLICKER ? sg_bm_fit(x, &r->segs, SG_HOLD, r->rate_hz, &f.model, cd->id, &q2)
+                                           : sg_rrw_ml(x, &r->segs, SG_HOLD, r->rate_hz, &f.model)) != 0) {
             f.model.e[k].p[0] = 0.0;
         }
-    }
-    if (sg_rrw_ml(x, &r->segs, SG_HOLD, r->rate_hz, &f.model) != 0 && started && cd->id == FNAV_EFFECT_RRW) {
-        f.model.e[k].p[0] = 0.0;
+    } else {
+        (void)sg_rrw_ml(x, &r->segs, SG_HOLD, r->rate_hz, &f.model);
     }
     if (k < 0 || !(f.model.e[k].p[mag_index(cd->id)] != 0.0)) {
         /* the middle shows none of it: no evidence from this fold */

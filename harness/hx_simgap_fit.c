@@ -1610,7 +1610,7 @@ int sg_rrw_ml(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_
  * returns -1 for parts without a Gaussian form here */
 static int bm_diff_acov(const sg_chmodel_t *m, double fs, double D, int n, double *d)
 {
-    static double c[BM_MAXN + 2];
+    double c[BM_MAXN + 2];
     int i, k, j;
     for (k = 0; k < n; k++) {
         d[k] = 0.0;
@@ -1677,7 +1677,7 @@ static int bm_diff_acov(const sg_chmodel_t *m, double fs, double D, int n, doubl
  * (Brockwell and Davis, Time Series: Theory and Methods, 5.2.1) */
 double sg_toeplitz_nll2(const double *acv, int nblk, const int *nd, const double *const *dd)
 {
-    static double phi[BM_MAXN], prev[BM_MAXN];
+    double phi[BM_MAXN], prev[BM_MAXN];
     int nmax = 0, k, j, b;
     double v = acv[0], q = 0.0;
     for (b = 0; b < nblk; b++) {
@@ -1718,24 +1718,19 @@ double sg_toeplitz_nll2(const double *acv, int nblk, const int *nd, const double
 }
 
 /* -2 ln L with the model as it is (NaN: a part without a Gaussian form) */
-static double bm_eval(const sg_chmodel_t *m, double fs, double Ds, int nblk, const int *nd, double (*dd)[BM_MAXN])
+static double bm_eval(const sg_chmodel_t *m, double fs, double Ds, int nblk, const int *nd, const double *const *dd)
 {
-    static double acv[BM_MAXN + 1];
-    const double *rows[SG_MAX_BLK];
-    int b;
+    double acv[BM_MAXN + 1];
     if (bm_diff_acov(m, fs, Ds, BM_MAXN, acv) != 0) {
         return (double)NAN;
     }
-    for (b = 0; b < nblk; b++) {
-        rows[b] = dd[b];
-    }
-    return sg_toeplitz_nll2(acv, nblk, nd, rows);
+    return sg_toeplitz_nll2(acv, nblk, nd, dd);
 }
 
 /* golden section for one parameter p (searched in ln p over [lo, hi]),
  * the others fixed; leaves the best value in *p and returns its -2 ln L */
 static double bm_golden(sg_chmodel_t *m, double *p, double lo, double hi, double fs, double Ds, int nblk,
-                        const int *nd, double (*dd)[BM_MAXN])
+                        const int *nd, const double *const *dd)
 {
     const double gr = 0.6180339887498949;
     double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo), q1, q2, p0 = *p, q0;
@@ -1771,7 +1766,8 @@ static double bm_golden(sg_chmodel_t *m, double *p, double lo, double hi, double
 
 int sg_bm_fit(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_chmodel_t *m, int id, double *nll2)
 {
-    static double dd[SG_MAX_BLK][BM_MAXN], acv[BM_MAXN + 1];
+    double dd[SG_MAX_BLK][BM_MAXN], acv[1];
+    const double *rows[SG_MAX_BLK];
     const double h = 0.05;
     int nd[SG_MAX_BLK], blk, ik, mp;
     long nmax = 0, D;
@@ -1809,18 +1805,21 @@ int sg_bm_fit(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_
             return 1; /* a block too short for a likelihood */
         }
     }
+    for (blk = 0; blk < segs->nb[g]; blk++) {
+        rows[blk] = dd[blk];
+    }
     p = &m->e[ik].p[mp];
     c = log(*p);
-    q = bm_golden(m, p, c - log(30.0), c + log(30.0), rate_hz, Ds, segs->nb[g], nd, dd);
+    q = bm_golden(m, p, c - log(30.0), c + log(30.0), rate_hz, Ds, segs->nb[g], nd, rows);
     if (!(q < (double)INFINITY)) {
         return 1;
     }
     /* standard error from the curvature of -2 ln L in ln magnitude */
     c = *p;
     *p = c * exp(h);
-    qp = bm_eval(m, rate_hz, Ds, segs->nb[g], nd, dd);
+    qp = bm_eval(m, rate_hz, Ds, segs->nb[g], nd, rows);
     *p = c * exp(-h);
-    qm = bm_eval(m, rate_hz, Ds, segs->nb[g], nd, dd);
+    qm = bm_eval(m, rate_hz, Ds, segs->nb[g], nd, rows);
     *p = c;
     curv = (qp + qm - 2.0 * q) / (h * h);
     m->e[ik].se[mp] = curv > 0.0 ? c * sqrt(2.0 / curv) : (double)NAN;
