@@ -206,11 +206,6 @@ static inline uint32_t next_multiple(uint32_t lo, uint32_t m)
 
 /* The rare work of a push lives out of line so that the common push stays
  * a handful of instructions without register spills. */
-#if defined(__GNUC__)
-#define FNAV_NOINLINE __attribute__((noinline))
-#else
-#define FNAV_NOINLINE
-#endif
 
 /* A block of end indices e = n - BLOCK + 1 .. n has completed (n + 1 a
  * multiple of BLOCK, so the block is aligned in the ring and, thanks to the

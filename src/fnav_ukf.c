@@ -65,6 +65,9 @@ static fnav_quat_t apply_att(fnav_quat_t q, fnav_vec3_t a)
     return fnav_quat(r.q[0] * n2, r.q[1] * n2, r.q[2] * n2, r.q[3] * n2);
 }
 
+/* Internal index of the first state of each triple, in packing order. */
+static const unsigned char pack_order[6] = { FNAV_UKF_R, FNAV_UKF_V, FNAV_UKF_P, FNAV_UKF_BA, FNAV_UKF_BG, FNAV_UKF_A };
+
 fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
 {
     size_t b;
@@ -105,19 +108,22 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
     f->cfg = *cfg;
     f->n_act = 0;
     for (i = 0; i < N; i++) {
-        int on = (i >= FNAV_UKF_V && i < FNAV_UKF_BG) || (i < FNAV_UKF_V && cfg->lever) ||
-                 (i >= FNAV_UKF_BG && cfg->bias_model == FNAV_BIAS_AR1);
         f->pos[i] = -1;
-        if (on) {
+    }
+    /* packing order: lever, velocity, position, accelerometer bias, gyro
+     * bias, attitude (fnav_ukf.h: every state before the attitude is
+     * propagated in closed form) */
+    for (b = 0; b < sizeof pack_order; b++) {
+        int k0 = pack_order[b];
+        int on = (k0 == FNAV_UKF_R && cfg->lever) || k0 == FNAV_UKF_V || k0 == FNAV_UKF_P || k0 == FNAV_UKF_A ||
+                 ((k0 == FNAV_UKF_BG || k0 == FNAV_UKF_BA) && cfg->bias_model == FNAV_BIAS_AR1);
+        for (i = k0; on && i < k0 + 3; i++) {
             f->pos[i] = (int16_t)f->n_act;
             f->act[f->n_act++] = (unsigned char)i;
         }
     }
     FNAV_ASSERT(f->n_act == n);
-    /* active states come in triples; the linear ones (lever, velocity,
-     * position) are the leading packed states */
-    for (f->n_lin = 0; f->n_lin < n && f->act[f->n_lin] < FNAV_UKF_A; f->n_lin++) {
-    }
+    f->n_lin = n - 3;
     f->gamma = fnav_sqrt((fnav_real_t)n + lambda);
     f->w0m = lambda / ((fnav_real_t)n + lambda);
     f->w0c = f->w0m + FNAV_R(1.0) - cfg->alpha * cfg->alpha + cfg->beta;
@@ -200,12 +206,12 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
  * not clearly positive. */
 static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], int n)
 {
-    int i, j, k;
+    int i, j;
     for (j = n - 1; j >= 0; j--) {
         fnav_real_t d = A[j][j], inv;
-        const fnav_real_t *uj = U[j];
-        for (k = j + 1; k < n; k++) {
-            d -= uj[k] * uj[k];
+        const fnav_real_t *uj = U[j] + j + 1, *ue = U[j] + n, *p, *q;
+        for (p = uj; p < ue; p++) {
+            d -= *p * *p;
         }
         if (!(d > FNAV_REAL_EPSILON * A[j][j]) || !fnav_isfinite(d)) {
             return -1;
@@ -215,9 +221,8 @@ static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], int n)
         inv = FNAV_R(1.0) / d;
         for (i = 0; i < j; i++) {
             fnav_real_t sum = A[i][j];
-            const fnav_real_t *ui = U[i];
-            for (k = j + 1; k < n; k++) {
-                sum -= ui[k] * uj[k];
+            for (p = uj, q = U[i] + j + 1; p < ue; p++, q++) {
+                sum -= *q * *p;
             }
             U[i][j] = sum * inv;
         }
@@ -275,12 +280,13 @@ static int state_finite(const fnav_strapdown_state_t *x)
 /* S (upper) += w d d^T over the leading nnz packed states. */
 static void accumulate(fnav_real_t S[N][N], const fnav_real_t *d, int nnz, fnav_real_t w)
 {
-    int a, b;
+    int a;
     for (a = 0; a < nnz; a++) {
         fnav_real_t wd = w * d[a];
-        fnav_real_t *sa = S[a];
-        for (b = a; b < nnz; b++) {
-            sa[b] += wd * d[b];
+        fnav_real_t *sa = S[a] + a, *se = S[a] + nnz;
+        const fnav_real_t *db = d + a;
+        while (sa < se) {
+            *sa++ += wd * *db++;
         }
     }
 }
@@ -343,6 +349,145 @@ static void guard_cov(fnav_ukf_t *f)
         }
         f->health.cov_guard++;
     }
+}
+
+/* S (upper) += k sum_{j < nl} u_a,j u_b,j over the rows a, b < na, the
+ * products of row a taken from column st[a] on (the rows are zero before).
+ * Its own function so that the dot products keep their registers. */
+static FNAV_NOINLINE void scatter_lin(fnav_real_t S[N][N], fnav_real_t U[N][N], const unsigned char *st, int na, int nl,
+                                      fnav_real_t k)
+{
+    int a, b;
+    for (a = 0; a < na; a++) {
+        const fnav_real_t *ua = U[a], *ue = U[a] + nl;
+        for (b = a; b < na; b++) {
+            int j0 = st[a] > st[b] ? st[a] : st[b];
+            const fnav_real_t *pa = ua + j0, *pb = U[b] + j0;
+            fnav_real_t sum = FNAV_R(0.0);
+            while (pa < ue) {
+                sum += *pa++ * *pb++;
+            }
+            S[a][b] += k * sum;
+        }
+    }
+}
+
+/* Closed-form prediction of the sigma-point pairs along the columns j < nl
+ * of U (fnav_ukf_predict); adds their scatter to the upper triangle of S.
+ * Out of line so that its locals do not add to the deepest stack path
+ * (the strapdown of the full sigma points). */
+static FNAV_NOINLINE void predict_linear(fnav_ukf_t *f, const fnav_strapdown_incr_t *inc, fnav_real_t dt_s)
+{
+    const fnav_real_t *cb = f->ar1_c;
+    int n = f->n_act, nl = f->n_lin, ov = f->pos[FNAV_UKF_V], op = f->pos[FNAV_UKF_P], i;
+    /* The pairs +-gamma U_j, j < nl, leave the attitude at its centre
+     * (U is upper triangular and the attitude is packed last), so they
+     * differ from the centre only in lever, velocity, position and the
+     * biases. The strapdown maps those linearly (fnav_strapdown_propagate
+     * with d_dv = -b_a dt, d_theta = -b_g dt):
+     *   r' = r,  b_a' = c_a b_a,  b_g' = c_g b_g,
+     *   v' = v + G_a b_a + G_g b_g,  p' = p + dt v + dt/2 (G_a b_a + G_g b_g),
+     *   a' = A_g b_g,
+     * G_a = -dt C (I + [th x]/2)  (the velocity increment with its
+     *   rotation compensation, exact),
+     * G_g = dt/2 C [dv x]         (the compensation's th x dv / 2),
+     * A_g = -dt C J(phi)          (the rotation increment; left Jacobian
+     *   J(phi) = I + [phi x]/2 + [phi x]^2/6, truncated at |phi|^3/24),
+     * C = C_nb at the start of the interval. The gyro-bias terms are the
+     * first order of the full strapdown (the gyro bias linearised, so that
+     * the model is partially linear with only the attitude nonlinear): the
+     * terms they drop (th x dv / 2 with both increments
+     * perturbed, the rotation's second order) are of relative order
+     * e = gamma sigma_bg dt, the sigma spread of the rotation increment, a
+     * few 1e-6 for a MEMS gyro at 200 Hz: below float32 resolution
+     * (test_closed_form_equivalence, docs/navigation.md). Each pair adds
+     * 2 W gamma^2 (F U_j)(F U_j)^T = (F U_j)(F U_j)^T to S and nothing to
+     * the mean. F U_j is formed in place in the columns j < nl of U (their
+     * attitude rows, zero in the factor, receive A_g b_g; the other sigma
+     * points use only the columns >= nl). Row a of F U is zero in the columns
+     * before st(a): a itself, the velocity's for position rows, the gyro
+     * bias's first for attitude rows. */
+    fnav_real_t kl = FNAV_R(2.0) * f->wi * f->gamma * f->gamma, hd = FNAV_R(0.5) * dt_s;
+    int oba = f->pos[FNAV_UKF_BA], obg = f->pos[FNAV_UKF_BG], oat = f->pos[FNAV_UKF_A];
+    int a, k;
+    unsigned char st[N];
+    for (k = ov; k < nl; k++) {
+        /* F U_k in place; U_k is zero below row k, so only the columns
+         * from the velocity's on reach the position rows */
+        for (i = 0; i < 3; i++) {
+            f->U[op + i][k] += dt_s * f->U[ov + i][k];
+        }
+    }
+    if (obg >= 0) {
+        /* The three maps, transposed (G[j][i] = row i, column j), in the
+         * update's gain scratch, which is free during the prediction (keeps
+         * them off the stack): G[0..2] G_a, G[3..5] G_g, G[6..8] A_g. With
+         * c^T the row i of C, row i of C [x x] is (c x x)^T and row i of
+         * C [x x]^2 is ((c x x) x x)^T. */
+        fnav_real_t (*G)[3] = f->K;
+        const fnav_real_t *th = inc->theta_rad.v, *dv = inc->dv_mps.v;
+        fnav_real_t ph[3];
+        int j;
+        fnav_mat3_t C = fnav_quat_to_dcm(f->q_nb);
+        for (i = 0; i < 3; i++) {
+            ph[i] = inc->theta_rad.v[i] + inc->coning.v[i];
+        }
+        for (i = 0; i < 3; i++) {
+            const fnav_real_t *c = C.m[i];
+            G[0][i] = -dt_s * (c[0] + FNAV_R(0.5) * (c[1] * th[2] - c[2] * th[1]));
+            G[1][i] = -dt_s * (c[1] + FNAV_R(0.5) * (c[2] * th[0] - c[0] * th[2]));
+            G[2][i] = -dt_s * (c[2] + FNAV_R(0.5) * (c[0] * th[1] - c[1] * th[0]));
+            G[3][i] = hd * (c[1] * dv[2] - c[2] * dv[1]);
+            G[4][i] = hd * (c[2] * dv[0] - c[0] * dv[2]);
+            G[5][i] = hd * (c[0] * dv[1] - c[1] * dv[0]);
+        }
+        for (i = 0; i < 3; i++) {
+            /* row i of A_g = -dt (c + u / 2 + w / 6)^T, u = c x phi, w = u x phi */
+            const fnav_real_t *c = C.m[i];
+            fnav_real_t u[3], w[3];
+            u[0] = c[1] * ph[2] - c[2] * ph[1];
+            u[1] = c[2] * ph[0] - c[0] * ph[2];
+            u[2] = c[0] * ph[1] - c[1] * ph[0];
+            w[0] = u[1] * ph[2] - u[2] * ph[1];
+            w[1] = u[2] * ph[0] - u[0] * ph[2];
+            w[2] = u[0] * ph[1] - u[1] * ph[0];
+            for (j = 0; j < 3; j++) {
+                G[6 + j][i] = -dt_s * (c[j] + FNAV_R(0.5) * u[j] + w[j] * (FNAV_R(1.0) / FNAV_R(6.0)));
+            }
+        }
+        for (k = oba; k < nl; k++) {
+            /* the bias columns: velocity, position and attitude responses,
+             * then the AR(1) decay of the biases themselves */
+            int gy = k >= obg;
+            for (i = 0; i < 3; i++) {
+                fnav_real_t dvb = FNAV_R(0.0), da = FNAV_R(0.0);
+                for (j = 0; j < 3; j++) {
+                    fnav_real_t ua = f->U[oba + j][k], ug = gy ? f->U[obg + j][k] : FNAV_R(0.0);
+                    dvb += G[j][i] * ua + G[3 + j][i] * ug;
+                    da += G[6 + j][i] * ug;
+                }
+                f->U[op + i][k] += hd * dvb;
+                f->U[ov + i][k] += dvb;
+                f->U[oat + i][k] = da;
+            }
+            for (i = 0; i < 3; i++) {
+                f->U[oba + i][k] *= cb[3 + i];
+                f->U[obg + i][k] *= gy ? cb[i] : FNAV_R(0.0);
+            }
+        }
+    }
+    /* S += kl (F U_l)(F U_l)^T: rows 0..nl-1 and, with the biases, the
+     * attitude rows; row a of F U is zero before column st(a): a itself,
+     * the velocity's for a position row, the gyro bias's first for an
+     * attitude row */
+    for (a = 0; a < n; a++) {
+        st[a] = (unsigned char)a;
+    }
+    for (i = 0; i < 3; i++) {
+        st[op + i] = (unsigned char)(ov + i);
+        st[oat + i] = (unsigned char)(obg >= 0 ? obg : nl);
+    }
+    scatter_lin(f->S, f->U, st, obg >= 0 ? n : nl, nl, kl);
 }
 
 fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t accel_mps2, fnav_real_t dt_s)
@@ -416,30 +561,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
         }
     }
     if (c->closed_form && nl > 0) {
-        /* The pairs +-gamma U_j, j < nl, differ from the centre only in
-         * lever, velocity and position, which propagate exactly linearly
-         * (r' = r, v' = v + dv, p' = p + dp + dv dt, i.e. D = F dx): each pair
-         * adds 2 W gamma^2 (F U_j)(F U_j)^T = (F U_j)(F U_j)^T and nothing to
-         * the mean. F U_j is formed in place in the columns j < nl of U (the
-         * other sigma points use only the columns >= nl). */
-        fnav_real_t kl = FNAV_R(2.0) * f->wi * f->gamma * f->gamma;
-        int a, b, k;
-        for (jj = 0; jj < nl; jj++) {
-            for (i = 0; i < 3; i++) {
-                f->U[op + i][jj] += dt_s * f->U[ov + i][jj];
-            }
-        }
-        for (a = 0; a < nl; a++) {
-            int sa = (a >= op && a < op + 3) ? ov + (a - op) : a;
-            for (b = a; b < nl; b++) {
-                int sb = (b >= op && b < op + 3) ? ov + (b - op) : b;
-                fnav_real_t sum = FNAV_R(0.0);
-                for (k = sa > sb ? sa : sb; k < nl; k++) {
-                    sum += f->U[a][k] * f->U[b][k];
-                }
-                f->S[a][b] += kl * sum;
-            }
-        }
+        predict_linear(f, &inc, dt_s);
     }
     for (jj = 0; jj < n; jj++) {
         if (c->closed_form && jj < nl) {

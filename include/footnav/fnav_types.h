@@ -43,6 +43,14 @@ typedef float fnav_real_t;
 /** Standard gravity, m/s^2 (CGPM 1901), used to convert g to m/s^2. */
 #define FNAV_G0_MPS2 FNAV_R(9.80665)
 
+/* Keep a function out of line (its stack frame then does not add to its
+ * caller's deeper calls); a no-op for compilers without the attribute. */
+#if defined(__GNUC__)
+#define FNAV_NOINLINE __attribute__((noinline))
+#else
+#define FNAV_NOINLINE
+#endif
+
 /* Math functions, mapped once (STYLE 5). static inline so that no argument
  * is evaluated twice. */
 #if FNAV_USE_DOUBLE

@@ -28,18 +28,28 @@
  * v - C_nb (w x r) = 0, the velocity of the pivot; with lever = 0 it is the
  * paper's 15-state filter with v = 0.
  *
- * State order of the covariance (internal, fnav_ukf_t.P), FNAV_UKF_NMAX = 18:
+ * Internal state indices (FNAV_UKF_R .. FNAV_UKF_BA), FNAV_UKF_NMAX = 18:
  *   0-2 lever, 3-5 velocity, 6-8 position, 9-11 attitude error, 12-14 gyro
- *   bias, 15-17 accelerometer bias. States that are switched off (lever
- *   without config.lever, biases with the bias model off) keep zero rows and
- *   columns and take no part in the sigma points.
- * Lever, velocity and position come first so that, with an upper-triangular
- * Cholesky factor (P = U U^T, column j non-zero in rows 0..j only), the
- * sigma-point pairs along columns 0-8 differ from the centre only in those
- * states, which the strapdown propagates exactly linearly (r' = r,
- * v' = v + dv, p' = p + dp + dv dt): those points are propagated in closed
- * form, the others through the full strapdown. The result is the same as
- * propagating every point (tested; config.closed_form = 0 runs them all).
+ *   bias, 15-17 accelerometer bias. The covariance fnav_ukf_t.P holds only
+ *   the active states (lever without config.lever and the biases with the
+ *   bias model off take no room and no time), packed in the order lever,
+ *   velocity, position, accelerometer bias, gyro bias, attitude error
+ *   (fnav_ukf_t.act, .pos; read it with fnav_ukf_cov()).
+ * The attitude comes last so that, with an upper-triangular Cholesky factor
+ * (P = U U^T, column j non-zero in rows 0..j only), the sigma-point pairs
+ * along every other column leave the attitude at its centre. The strapdown
+ * maps lever, velocity, position and accelerometer bias exactly linearly
+ * (r' = r, v' = v + dv, p' = p + dp + dv dt, the accelerometer bias through
+ * the velocity increment) and the gyro bias to first order (its sigma
+ * spread rotates the increment by gamma sigma_bg dt, a few 1e-6 rad): those
+ * pairs are propagated in closed form, and only the 6 attitude points go
+ * through the full strapdown, in every configuration (the linear
+ * substructure of a partially linear model, as in "Exploiting linear
+ * substructure in LRKFs", arXiv:2009.07571, extended to the gyro bias by
+ * linearisation). Running
+ * every point through the strapdown (config.closed_form = 0) gives the same
+ * result up to rounding with the bias model off, and up to the first-order
+ * terms' relative error gamma sigma_bg dt with it (tested).
  * The output order (fnav_nav_frame_t.p_diag) is the paper's: attitude,
  * velocity, position, gyro bias, accelerometer bias.
  *
@@ -139,8 +149,8 @@ typedef struct {
     fnav_ukf_config_t cfg;
     int started;               /**< fnav_ukf_start() was called */
     int n_act;                 /**< active states (9, 12, 15 or 18) */
-    int n_lin;                 /**< leading active states that propagate linearly (lever, v, p) */
-    unsigned char act[FNAV_UKF_NMAX]; /**< internal indices of the active states, ascending */
+    int n_lin;                 /**< leading packed states propagated in closed form (all but the attitude) */
+    unsigned char act[FNAV_UKF_NMAX]; /**< internal indices of the active states, in packing order */
     int16_t pos[FNAV_UKF_NMAX];       /**< packed index of each internal state, -1 if inactive */
     fnav_real_t gamma;         /**< sigma-point scale sqrt(n + lambda) */
     fnav_real_t w0m, w0c, wi;  /**< weights */
@@ -162,7 +172,7 @@ typedef struct {
     fnav_real_t U[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< scratch: Cholesky factor */
     fnav_real_t S[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< scratch: new covariance */
     fnav_real_t Hm[3][FNAV_UKF_NMAX];             /**< scratch: measurement matrix */
-    fnav_real_t K[FNAV_UKF_NMAX][3];              /**< scratch: gain */
+    fnav_real_t K[FNAV_UKF_NMAX][3];              /**< scratch: gain (update); bias maps (prediction) */
     fnav_real_t PHt[FNAV_UKF_NMAX][3];            /**< scratch: P H^T */
     fnav_real_t APHt[FNAV_UKF_NMAX][3];           /**< scratch: K S */
     fnav_ukf_health_t health;
