@@ -496,10 +496,10 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     fnav_strapdown_incr_t inc;
     fnav_strapdown_state_t x0, xi;
     fnav_quat_t q0inv;
-    fnav_real_t m[N], d[N], dxp[N], dx[N];
+    fnav_real_t m[N], dxp[N];
     const fnav_real_t *cb, *qb;
     fnav_real_t kmm, g;
-    int n, nl, i, j, jj, s, fr, ov, op;
+    int n, nl, i, j, jj, s, fr, ov, op, oa, obg, oba;
     if (f == NULL) {
         return FNAV_E_ARG;
     }
@@ -521,6 +521,9 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     nl = f->n_lin;
     ov = f->pos[FNAV_UKF_V];
     op = f->pos[FNAV_UKF_P];
+    oa = f->pos[FNAV_UKF_A];
+    obg = f->pos[FNAV_UKF_BG];
+    oba = f->pos[FNAV_UKF_BA];
     guard_cov(f); /* e.g. a covariance set by a caller */
     fr = factor(f);
 
@@ -563,40 +566,38 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     if (c->closed_form && nl > 0) {
         predict_linear(f, &inc, dt_s);
     }
-    for (jj = 0; jj < n; jj++) {
-        if (c->closed_form && jj < nl) {
-            continue;
-        }
+    /* the full sigma points, along the columns the closed form leaves
+     * (with it, the attitude's), worked on in packed order */
+    for (jj = c->closed_form ? nl : 0; jj < n; jj++) {
         for (s = 0; s < 2; s++) {
             g = s == 0 ? f->gamma : -f->gamma;
             for (i = 0; i < n; i++) {
                 dxp[i] = (i <= jj) ? g * f->U[i][jj] : FNAV_R(0.0);
             }
-            for (i = 0; i < N; i++) {
-                dx[i] = f->pos[i] >= 0 ? dxp[f->pos[i]] : FNAV_R(0.0);
-            }
-            xi.q_nb = apply_att(f->q_nb, fnav_vec3_from(&dx[FNAV_UKF_A]));
-            xi.vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&dx[FNAV_UKF_V]));
-            xi.pos_m = fnav_vec3_add(f->pos_m, fnav_vec3_from(&dx[FNAV_UKF_P]));
-            fnav_strapdown_propagate(&c->strapdown, &xi, &inc, fnav_vec3_scale(fnav_vec3_from(&dx[FNAV_UKF_BG]), -dt_s),
-                                     fnav_vec3_scale(fnav_vec3_from(&dx[FNAV_UKF_BA]), -dt_s));
+            xi.q_nb = apply_att(f->q_nb, fnav_vec3_from(&dxp[oa]));
+            xi.vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&dxp[ov]));
+            xi.pos_m = fnav_vec3_add(f->pos_m, fnav_vec3_from(&dxp[op]));
+            fnav_strapdown_propagate(&c->strapdown, &xi, &inc,
+                                     fnav_vec3_scale(obg >= 0 ? fnav_vec3_from(&dxp[obg]) : fnav_vec3_zero(), -dt_s),
+                                     fnav_vec3_scale(oba >= 0 ? fnav_vec3_from(&dxp[oba]) : fnav_vec3_zero(), -dt_s));
             {
                 fnav_vec3_t dv = fnav_vec3_sub(xi.vel_mps, x0.vel_mps);
                 fnav_vec3_t dp = fnav_vec3_sub(xi.pos_m, x0.pos_m);
                 fnav_vec3_t da = fnav_ukf_quat_to_grp(fnav_quat_mul(xi.q_nb, q0inv));
                 for (i = 0; i < 3; i++) {
-                    dx[FNAV_UKF_V + i] = dv.v[i];
-                    dx[FNAV_UKF_P + i] = dp.v[i];
-                    dx[FNAV_UKF_A + i] = da.v[i];
-                    dx[FNAV_UKF_BG + i] *= cb[i];
-                    dx[FNAV_UKF_BA + i] *= cb[3 + i];
+                    dxp[ov + i] = dv.v[i];
+                    dxp[op + i] = dp.v[i];
+                    dxp[oa + i] = da.v[i];
+                }
+                for (i = 0; obg >= 0 && i < 3; i++) {
+                    dxp[obg + i] *= cb[i];
+                    dxp[oba + i] *= cb[3 + i];
                 }
             }
             for (i = 0; i < n; i++) {
-                d[i] = dx[f->act[i]];
-                m[i] += f->wi * d[i];
+                m[i] += f->wi * dxp[i];
             }
-            accumulate(f->S, d, n, f->wi);
+            accumulate(f->S, dxp, n, f->wi);
         }
     }
     /* With the propagated centre as reference (D_0 = 0) and the mean
@@ -612,30 +613,35 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     {
         fnav_mat3_t C = fnav_quat_to_dcm(x0.q_nb);
         add_rotated_noise(f->S, ov, C, c->accel_noise_mps2_rthz, dt_s);
-        add_rotated_noise(f->S, f->pos[FNAV_UKF_A], C, c->gyro_noise_rps_rthz, dt_s);
+        add_rotated_noise(f->S, oa, C, c->gyro_noise_rps_rthz, dt_s);
     }
     for (i = 0; i < 3; i++) {
         if (c->bias_model == FNAV_BIAS_AR1) {
-            int ob = f->pos[FNAV_UKF_BG], oa = f->pos[FNAV_UKF_BA];
-            f->S[ob + i][ob + i] += qb[i];
-            f->S[oa + i][oa + i] += qb[3 + i];
+            f->S[obg + i][obg + i] += qb[i];
+            f->S[oba + i][oba + i] += qb[3 + i];
         }
         if (c->lever) {
             int orr = f->pos[FNAV_UKF_R];
             f->S[orr + i][orr + i] += c->lever_rw_m_rts * c->lever_rw_m_rts * dt_s;
         }
     }
-    for (i = 0; i < n; i++) {
-        for (j = i; j < n; j++) {
-            if (!fnav_isfinite(f->S[i][j])) {
-                f->health.diverged++;
-                return FNAV_E_DIVERGED;
+    {
+        /* one check of the sum: a NaN or an infinity anywhere makes it
+         * non-finite (entries are bounded far below overflow by the guard) */
+        fnav_real_t chk = FNAV_R(0.0);
+        for (i = 0; i < n; i++) {
+            for (j = i; j < n; j++) {
+                chk += f->S[i][j];
             }
+        }
+        if (!fnav_isfinite(chk)) {
+            f->health.diverged++;
+            return FNAV_E_DIVERGED;
         }
     }
     /* fold the mean into the nominal state (the bias and lever means are zero
      * by the symmetry of the sigma points) */
-    x0.q_nb = apply_att(x0.q_nb, fnav_vec3_from(&m[f->pos[FNAV_UKF_A]]));
+    x0.q_nb = apply_att(x0.q_nb, fnav_vec3_from(&m[oa]));
     x0.vel_mps = fnav_vec3_add(x0.vel_mps, fnav_vec3_from(&m[ov]));
     x0.pos_m = fnav_vec3_add(x0.pos_m, fnav_vec3_from(&m[op]));
     if (!state_finite(&x0)) {
@@ -667,7 +673,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
 static fnav_status_t update(fnav_ukf_t *f, const int *cols, int nc, fnav_vec3_t y, fnav_real_t r2)
 {
     int n = f->n_act, i, j, k, c;
-    fnav_real_t s[3][3], si[3][3], det, dx[N], dxi[N];
+    fnav_real_t s[3][3], si[3][3], det, dx[N], dxi[N], chk = FNAV_R(0.0);
     fnav_real_t (*H)[N] = f->Hm;  /* scratch in the object: a small stack */
     fnav_real_t (*K)[3] = f->K;
     fnav_real_t (*PHt)[3] = f->PHt;
@@ -743,12 +749,13 @@ static fnav_status_t update(fnav_ukf_t *f, const int *cols, int nc, fnav_vec3_t 
             const fnav_real_t *kj = K[j], *pj = PHt[j], *sj = APHt[j];
             fnav_real_t v = f->P[i][j] - (ki[0] * pj[0] + ki[1] * pj[1] + ki[2] * pj[2]) -
                             (pi[0] * kj[0] + pi[1] * kj[1] + pi[2] * kj[2]) + (ki[0] * sj[0] + ki[1] * sj[1] + ki[2] * sj[2]);
-            if (!fnav_isfinite(v)) {
-                f->health.diverged++;
-                return FNAV_E_DIVERGED;
-            }
+            chk += v;
             Pn[i][j] = v;
         }
+    }
+    if (!fnav_isfinite(chk)) { /* as in the prediction: one check of the sum */
+        f->health.diverged++;
+        return FNAV_E_DIVERGED;
     }
     for (i = 0; i < n; i++) {
         for (j = i; j < n; j++) {

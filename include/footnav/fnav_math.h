@@ -101,7 +101,7 @@ static inline fnav_vec3_t fnav_vec3_normalize(fnav_vec3_t a)
     return (n > FNAV_R(0.0)) ? fnav_vec3_scale(a, FNAV_R(1.0) / n) : a;
 }
 
-static inline int fnav_vec3_isfinite(fnav_vec3_t a)
+static inline FNAV_ALWAYS_INLINE int fnav_vec3_isfinite(fnav_vec3_t a)
 {
     return fnav_isfinite(a.v[0]) && fnav_isfinite(a.v[1]) && fnav_isfinite(a.v[2]);
 }

@@ -44,11 +44,15 @@ typedef float fnav_real_t;
 #define FNAV_G0_MPS2 FNAV_R(9.80665)
 
 /* Keep a function out of line (its stack frame then does not add to its
- * caller's deeper calls); a no-op for compilers without the attribute. */
+ * caller's deeper calls), or always inline a tiny one that -Os would
+ * otherwise call (a per-element check in the filter's loops); no-ops for
+ * compilers without the attributes. */
 #if defined(__GNUC__)
 #define FNAV_NOINLINE __attribute__((noinline))
+#define FNAV_ALWAYS_INLINE __attribute__((always_inline))
 #else
 #define FNAV_NOINLINE
+#define FNAV_ALWAYS_INLINE
 #endif
 
 /* Math functions, mapped once (STYLE 5). static inline so that no argument
@@ -88,7 +92,7 @@ static inline fnav_real_t fnav_fmod(fnav_real_t x, fnav_real_t y) { return fmodf
 #endif
 
 /** Non-zero when x is neither NaN nor infinite. */
-static inline int fnav_isfinite(fnav_real_t x)
+static inline FNAV_ALWAYS_INLINE int fnav_isfinite(fnav_real_t x)
 {
     return (x == x) && (x <= FNAV_REAL_MAX) && (x >= -FNAV_REAL_MAX);
 }
