@@ -277,12 +277,13 @@ static int state_finite(const fnav_strapdown_state_t *x)
            fnav_isfinite(x->q_nb.q[1]) && fnav_isfinite(x->q_nb.q[2]) && fnav_isfinite(x->q_nb.q[3]);
 }
 
-/* S (upper) += w d d^T over the leading nnz packed states. */
-static void accumulate(fnav_real_t S[N][N], const fnav_real_t *d, int nnz, fnav_real_t w)
+/* S (upper) += w d d^T and m += w d over the leading nnz packed states. */
+static void accumulate(fnav_real_t S[N][N], fnav_real_t *m, const fnav_real_t *d, int nnz, fnav_real_t w)
 {
     int a;
     for (a = 0; a < nnz; a++) {
         fnav_real_t wd = w * d[a];
+        m[a] += wd;
         fnav_real_t *sa = S[a] + a, *se = S[a] + nnz;
         const fnav_real_t *db = d + a;
         while (sa < se) {
@@ -498,7 +499,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     fnav_quat_t q0inv;
     fnav_real_t m[N], dxp[N];
     const fnav_real_t *cb, *qb;
-    fnav_real_t kmm, g;
+    fnav_real_t kmm, g, chk = FNAV_R(0.0);
     int n, nl, i, j, jj, s, fr, ov, op, oa, obg, oba;
     if (f == NULL) {
         return FNAV_E_ARG;
@@ -594,10 +595,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
                     dxp[oba + i] *= cb[3 + i];
                 }
             }
-            for (i = 0; i < n; i++) {
-                m[i] += f->wi * dxp[i];
-            }
-            accumulate(f->S, dxp, n, f->wi);
+            accumulate(f->S, m, dxp, n, f->wi);
         }
     }
     /* With the propagated centre as reference (D_0 = 0) and the mean
@@ -606,8 +604,12 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
      * S = sum_{i>0} W_i D_i D_i^T; with beta >= alpha^2 every term is PSD. */
     kmm = c->beta - c->alpha * c->alpha;
     for (i = 0; i < n; i++) {
-        for (j = i; j < n; j++) {
-            f->S[i][j] += kmm * m[i] * m[j];
+        fnav_real_t km = kmm * m[i];
+        fnav_real_t *si = f->S[i] + i, *se = f->S[i] + n;
+        const fnav_real_t *mj = m + i;
+        while (si < se) {
+            *si += km * *mj++;
+            chk += *si++; /* one check of the sum below */
         }
     }
     {
@@ -625,19 +627,12 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
             f->S[orr + i][orr + i] += c->lever_rw_m_rts * c->lever_rw_m_rts * dt_s;
         }
     }
-    {
-        /* one check of the sum: a NaN or an infinity anywhere makes it
-         * non-finite (entries are bounded far below overflow by the guard) */
-        fnav_real_t chk = FNAV_R(0.0);
-        for (i = 0; i < n; i++) {
-            for (j = i; j < n; j++) {
-                chk += f->S[i][j];
-            }
-        }
-        if (!fnav_isfinite(chk)) {
-            f->health.diverged++;
-            return FNAV_E_DIVERGED;
-        }
+    /* a NaN or an infinity anywhere in S makes the sum of its entries
+     * non-finite (they are bounded far below overflow by the guard; the
+     * process noise added after the sum is finite) */
+    if (!fnav_isfinite(chk)) {
+        f->health.diverged++;
+        return FNAV_E_DIVERGED;
     }
     /* fold the mean into the nominal state (the bias and lever means are zero
      * by the symmetry of the sigma points) */
@@ -669,12 +664,15 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
 
 /* Linear update with a 3-row measurement matrix f->Hm over the packed states
  * (non-zero only in the packed columns cols[0..nc-1]), innovation y and
- * variance r2 per axis, in Joseph form (see below). */
-static fnav_status_t update(fnav_ukf_t *f, const int *cols, int nc, fnav_vec3_t y, fnav_real_t r2)
+ * variance r2 per axis, in Joseph form (see below). With nc = 3 and
+ * H = NULL the measurement matrix is the selection of the states cols[0..2]
+ * (row k one at cols[k]): P H^T is then copied, not multiplied, and f->Hm
+ * is not read. */
+static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int *cols, int nc, fnav_vec3_t y,
+                            fnav_real_t r2)
 {
     int n = f->n_act, i, j, k, c;
     fnav_real_t s[3][3], si[3][3], det, dx[N], dxi[N], chk = FNAV_R(0.0);
-    fnav_real_t (*H)[N] = f->Hm;  /* scratch in the object: a small stack */
     fnav_real_t (*K)[3] = f->K;
     fnav_real_t (*PHt)[3] = f->PHt;
     fnav_real_t (*APHt)[3] = f->APHt;
@@ -683,7 +681,10 @@ static fnav_status_t update(fnav_ukf_t *f, const int *cols, int nc, fnav_vec3_t 
     for (i = 0; i < n; i++) {
         for (k = 0; k < 3; k++) {
             fnav_real_t sum = FNAV_R(0.0);
-            for (c = 0; c < nc; c++) {
+            if (H == NULL) {
+                sum = f->P[i][cols[k]];
+            }
+            for (c = 0; H != NULL && c < nc; c++) {
                 sum += f->P[i][cols[c]] * H[k][cols[c]];
             }
             PHt[i][k] = sum;
@@ -693,7 +694,10 @@ static fnav_status_t update(fnav_ukf_t *f, const int *cols, int nc, fnav_vec3_t 
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) {
             fnav_real_t sum = (i == j) ? r2 : FNAV_R(0.0);
-            for (c = 0; c < nc; c++) {
+            if (H == NULL) {
+                sum += PHt[cols[i]][j];
+            }
+            for (c = 0; H != NULL && c < nc; c++) {
                 sum += H[i][cols[c]] * PHt[cols[c]][j];
             }
             s[i][j] = sum;
@@ -802,9 +806,7 @@ fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
         f->health.nan_inputs++;
         return FNAV_E_NANINF;
     }
-    clear_h(f);
     for (i = 0; i < 3; i++) {
-        f->Hm[i][f->pos[FNAV_UKF_V] + i] = FNAV_R(1.0);
         cols[nc++] = f->pos[FNAV_UKF_V] + i;
     }
     y = fnav_vec3_scale(f->vel_mps, -FNAV_R(1.0));
@@ -820,7 +822,9 @@ fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
         fnav_mat3_t Hb = fnav_mat3_mul(C, fnav_mat3_skew(f->lever_m));
         int orr = f->pos[FNAV_UKF_R], oa = f->pos[FNAV_UKF_A], ob = f->pos[FNAV_UKF_BG];
         y = fnav_vec3_sub(u, f->vel_mps);
+        clear_h(f);
         for (i = 0; i < 3; i++) {
+            f->Hm[i][cols[i]] = FNAV_R(1.0);
             for (j = 0; j < 3; j++) {
                 f->Hm[i][orr + j] = -Hr.m[i][j];
                 f->Hm[i][oa + j] = Ha.m[i][j];
@@ -837,7 +841,9 @@ fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
             }
         }
     }
-    st = update(f, cols, nc, y, f->cfg.zupt_sigma_mps * f->cfg.zupt_sigma_mps);
+    /* without the lever, H selects the velocity */
+    st = update(f, f->cfg.lever ? (const fnav_real_t(*)[N])f->Hm : NULL, cols, nc, y,
+                f->cfg.zupt_sigma_mps * f->cfg.zupt_sigma_mps);
     if (st == FNAV_OK) {
         f->health.zupts++;
     }
@@ -862,12 +868,10 @@ fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
         return FNAV_OK;
     }
     ob = f->pos[FNAV_UKF_BG];
-    clear_h(f);
     for (i = 0; i < 3; i++) {
-        f->Hm[i][ob + i] = FNAV_R(1.0);
         cols[i] = ob + i;
     }
-    st = update(f, cols, 3, fnav_vec3_sub(gyro_rps, f->bg_rps), f->cfg.zaru_sigma_rps * f->cfg.zaru_sigma_rps);
+    st = update(f, NULL, cols, 3, fnav_vec3_sub(gyro_rps, f->bg_rps), f->cfg.zaru_sigma_rps * f->cfg.zaru_sigma_rps);
     if (st == FNAV_OK) {
         f->health.zarus++;
     }
