@@ -1,8 +1,9 @@
 /* fnav_ukf: configuration checks, the attitude-error parameters, closed-form
  * versus full sigma-point propagation, linear covariance propagation against
  * the exact discrete recursion, the ZUPT update against the textbook Kalman
- * update computed here in double, the lever measurement, NaN rejection, the
- * covariance recovery, and NEES consistency on simulated walks from a
+ * update computed here in double, the lever measurement, NaN rejection,
+ * steps undone when their result would not be finite, the covariance
+ * recovery, and NEES consistency on simulated walks from a
  * self-contained generator (see sim_walk below). */
 #include <math.h>
 #include <setjmp.h>
@@ -357,6 +358,43 @@ static void test_bad_input(void **state)
     assert_int_equal(fnav_ukf_predict(&f, fnav_vec3(FNAV_R(1.0), FNAV_R(0.0), FNAV_R(0.0)), fnav_vec3_zero(), FNAV_R(0.0)),
                      FNAV_OK);
     assert_memory_equal(&f, &g, sizeof f);
+}
+
+/* A step whose result would not be finite is undone: FNAV_E_DIVERGED,
+ * counted, covariance and nominal state as before. Prediction: an interval
+ * so long that the sigma points overflow; update: a cross-covariance so large
+ * that the gain stays finite but the Joseph form's products overflow (both
+ * caught by the one check of each matrix's sum). */
+static void test_diverged(void **state)
+{
+    static fnav_ukf_t f, g;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
+    (void)state;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fz, FNAV_R(0.01)), FNAV_OK);
+    g = f;
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3(FNAV_R(0.1), FNAV_R(0.0), FNAV_R(0.0)), fz,
+                                      FNAV_REAL_MAX / FNAV_R(1000.0)),
+                     FNAV_E_DIVERGED);
+    assert_int_equal(f.health.diverged, 1);
+    assert_memory_equal(f.P, g.P, sizeof f.P);
+    assert_memory_equal(&f.q_nb, &g.q_nb, sizeof f.q_nb);
+    assert_memory_equal(&f.vel_mps, &g.vel_mps, sizeof f.vel_mps);
+    assert_memory_equal(&f.pos_m, &g.pos_m, sizeof f.pos_m);
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fz, FNAV_R(0.01)), FNAV_OK);
+    /* a finite gain (the velocity is zero, so is the correction) but
+     * products beyond the range in the Joseph form */
+    fnav_ukf_set_cov(&f, FNAV_UKF_V, FNAV_UKF_P, fnav_sqrt(FNAV_REAL_MAX) * FNAV_R(100.0));
+    f.vel_mps = fnav_vec3_zero();
+    g = f;
+    assert_int_equal(fnav_ukf_zupt(&f, fnav_vec3_zero()), FNAV_E_DIVERGED);
+    assert_int_equal(f.health.diverged, 2);
+    assert_memory_equal(f.P, g.P, sizeof f.P);
+    assert_memory_equal(&f.vel_mps, &g.vel_mps, sizeof f.vel_mps);
+    assert_memory_equal(&f.pos_m, &g.pos_m, sizeof f.pos_m);
 }
 
 /* A covariance that is not positive definite: the step recovers (jitter or
@@ -766,6 +804,7 @@ int main(void)
         cmocka_unit_test(test_zupt_update),
         cmocka_unit_test(test_lever_measurement),
         cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_diverged),
         cmocka_unit_test(test_covariance_guard),
         cmocka_unit_test(test_covariance_recovery),
         cmocka_unit_test(test_nees_bias_off),
