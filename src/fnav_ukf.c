@@ -590,9 +590,11 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
                     dxp[op + i] = dp.v[i];
                     dxp[oa + i] = da.v[i];
                 }
-                for (i = 0; obg >= 0 && i < 3; i++) {
-                    dxp[obg + i] *= cb[i];
-                    dxp[oba + i] *= cb[3 + i];
+                if (obg >= 0) {
+                    for (i = 0; i < 3; i++) {
+                        dxp[obg + i] *= cb[i];
+                        dxp[oba + i] *= cb[3 + i];
+                    }
                 }
             }
             accumulate(f->S, m, dxp, n, f->wi);
@@ -683,9 +685,10 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
             fnav_real_t sum = FNAV_R(0.0);
             if (H == NULL) {
                 sum = f->P[i][cols[k]];
-            }
-            for (c = 0; H != NULL && c < nc; c++) {
-                sum += f->P[i][cols[c]] * H[k][cols[c]];
+            } else {
+                for (c = 0; c < nc; c++) {
+                    sum += f->P[i][cols[c]] * H[k][cols[c]];
+                }
             }
             PHt[i][k] = sum;
         }
@@ -696,9 +699,10 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
             fnav_real_t sum = (i == j) ? r2 : FNAV_R(0.0);
             if (H == NULL) {
                 sum += PHt[cols[i]][j];
-            }
-            for (c = 0; H != NULL && c < nc; c++) {
-                sum += H[i][cols[c]] * PHt[cols[c]][j];
+            } else {
+                for (c = 0; c < nc; c++) {
+                    sum += H[i][cols[c]] * PHt[cols[c]][j];
+                }
             }
             s[i][j] = sum;
         }
