@@ -680,17 +680,34 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
     fnav_real_t (*APHt)[3] = f->APHt;
     fnav_real_t (*Pn)[N] = f->U;
     /* P H^T (n x 3) */
-    for (i = 0; i < n; i++) {
-        for (k = 0; k < 3; k++) {
-            fnav_real_t sum = FNAV_R(0.0);
-            if (H == NULL) {
-                sum = f->P[i][cols[k]];
-            } else {
-                for (c = 0; c < nc; c++) {
-                    sum += f->P[i][cols[c]] * H[k][cols[c]];
-                }
+    if (H == NULL) {
+        for (i = 0; i < n; i++) {
+            for (k = 0; k < 3; k++) {
+                PHt[i][k] = f->P[i][cols[k]];
             }
-            PHt[i][k] = sum;
+        }
+    } else {
+        /* H's non-zero columns gathered first (into APHt, free until the
+         * Joseph products), so that each P element is loaded once for the
+         * three rows; the sums run over c in the same order */
+        fnav_real_t (*hc)[3] = APHt;
+        for (c = 0; c < nc; c++) {
+            for (k = 0; k < 3; k++) {
+                hc[c][k] = H[k][cols[c]];
+            }
+        }
+        for (i = 0; i < n; i++) {
+            const fnav_real_t *pi = f->P[i];
+            fnav_real_t s0 = FNAV_R(0.0), s1 = FNAV_R(0.0), s2 = FNAV_R(0.0);
+            for (c = 0; c < nc; c++) {
+                fnav_real_t pc = pi[cols[c]];
+                s0 += pc * hc[c][0];
+                s1 += pc * hc[c][1];
+                s2 += pc * hc[c][2];
+            }
+            PHt[i][0] = s0;
+            PHt[i][1] = s1;
+            PHt[i][2] = s2;
         }
     }
     /* S = H P H^T + R */
