@@ -663,8 +663,13 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
             (double)t->align.euler_rad.v[1] * 180.0 / M_PI, (double)fnav_vec3_norm(t->align.accel_mean_mps2));
     fprintf(f, "distance          %.2f m step-to-step (%.2f m horizontal), %.2f m integrated\n", s->path_m,
             s->path_h_m, s->integrated_path_m);
-    fprintf(f, "return-to-start   horizontal %.3f m (%.2f %%), 3-D %.3f m (%.2f %%)\n", s->end_h_m, s->end_h_pct,
-            s->end_3d_m, s->end_3d_pct);
+    if (isfinite(s->end_h_pct) && isfinite(s->end_3d_pct)) {
+        fprintf(f, "return-to-start   horizontal %.3f m (%.2f %%), 3-D %.3f m (%.2f %%)\n", s->end_h_m, s->end_h_pct,
+                s->end_3d_m, s->end_3d_pct);
+    } else { /* no step-to-step path (fewer than two stance mid-points): no percentage */
+        fprintf(f, "return-to-start   horizontal %.3f m, 3-D %.3f m (no step-to-step path for a percentage)\n",
+                s->end_h_m, s->end_3d_m);
+    }
     fprintf(f, "end position      x %.3f, y %.3f, z %.3f m (n frame, z down)\n", s->end_pos_m[0], s->end_pos_m[1],
             s->end_pos_m[2]);
     fprintf(f, "vertical drift    %+.3f m (height change, up positive)\n", s->vertical_m);

@@ -83,6 +83,11 @@ expect_exit 1 "NaN in the input" "$H" replay "$T/bad.csv" --out "$T/bad_traj.csv
 expect_err "NaN" "NaN error names the problem"
 rows=$(($(wc -l < "$T/bad_traj.csv") - 1))
 if [ "$rows" -eq 2000 ]; then pass "every frame before the NaN written ($rows)"; else fail "frames before the NaN: $rows, expected 2000"; fi
+# a log that never leaves its first stance: no path, so no percentage (not "nan %")
+head -400 vectors/nav/golden/gx2_walk2.csv > "$T/still.csv"
+expect_exit 0 "still log (no strides)" "$H" replay "$T/still.csv"
+expect_out "no step-to-step path for a percentage" "summary without a path says so"
+if grep -q "nan %" "$T/out"; then fail "summary of a still log prints nan"; else pass "no nan in the summary of a still log"; fi
 printf 't,ax,ay,az,gx,gy,gz\n0.0,0,0,-9.8,0,0,0\n' > "$T/tiny.csv"
 expect_exit 1 "too short to align" "$H" replay "$T/tiny.csv"
 expect_err "no still period" "alignment failure explained"
