@@ -246,7 +246,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
             const int k = R->ch[i].src;
             const double v = k < 3 ? (double)s.accel_mps2[k] : (double)s.gyro_rps[k - 3];
             if (push_all(R, &R->ch[i], v) != 0) {
-                hx_error(CMD, "%s: sample %lu: channel %s is not finite", path, (unsigned long)R->n + 1u,
+                hx_error(CMD, "%s: sample %lu: channel %s is not finite (or beyond the float range)", path, (unsigned long)R->n + 1u,
                          R->ch[i].name);
                 rc = 1;
                 break;

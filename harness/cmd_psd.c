@@ -90,13 +90,19 @@ static double chan(const hx_log_t *log, size_t i, int c)
     return c < 3 ? log->acc[i][c] : log->gyr[i][c - 3];
 }
 
-/* Run the six channels through streaming Welch estimators. */
-static int analyse(const hx_log_t *log, const setting_t *st, const fnav_bandwidth_config_t *bc, result_t *r)
+/* Run the six channels through streaming Welch estimators. A sample the
+ * estimator rejects (not finite, or so large that its power overflows the
+ * core's float) stops the analysis: its index and channel go to bad_i /
+ * bad_c (else both stay -1). */
+static int analyse(const hx_log_t *log, const setting_t *st, const fnav_bandwidth_config_t *bc, result_t *r,
+                   long *bad_i, int *bad_c)
 {
     static fnav_welch_t w[6];
     size_t i;
     int c, g;
     memset(r, 0, sizeof *r);
+    *bad_i = -1;
+    *bad_c = -1;
     for (c = 0; c < 6; c++) {
         if (fnav_welch_init(&w[c], &st->wc) != FNAV_OK) {
             return -1;
@@ -105,6 +111,8 @@ static int analyse(const hx_log_t *log, const setting_t *st, const fnav_bandwidt
     for (i = 0; i < log->n; i++) {
         for (c = 0; c < 6; c++) {
             if (fnav_welch_push(&w[c], (fnav_real_t)chan(log, i, c)) != FNAV_OK) {
+                *bad_i = (long)i;
+                *bad_c = c;
                 return -1;
             }
         }
@@ -414,9 +422,9 @@ int hx_cmd_psd(int argc, char **argv)
     setting_t st;
     fnav_bandwidth_config_t bc = fnav_bandwidth_config_default;
     static result_t res, sres;
-    long nfft = 64, overlap = -1, spec_nfft = 256;
+    long nfft = 64, overlap = -1, spec_nfft = 256, bad_i = -1;
     double thr = 0.95, rnd = 50.0, rate;
-    int rc, exit_code = HX_EXIT_OK, dc_mode = 0, c, spec_axis = -1;
+    int rc, exit_code = HX_EXIT_OK, dc_mode = 0, c, spec_axis = -1, bad_c = -1;
     const char *s;
     double fs_tab[NDC][NSENS_NFFT];
     int have[NSENS_NFFT];
@@ -509,8 +517,13 @@ int hx_cmd_psd(int argc, char **argv)
         }
     }
     st.wc.rate_hz = (fnav_real_t)rate;
-    if (analyse(&log, &st, &bc, &res) != 0) {
-        hx_error(CMD, "Welch failed (bad configuration or non-finite sample)");
+    if (analyse(&log, &st, &bc, &res, &bad_i, &bad_c) != 0) {
+        if (bad_i >= 0) {
+            hx_error(CMD, "%s: sample %ld: channel %s (%g) is not finite or its power overflows the core's float",
+                     a.pos[0], bad_i + 1, k_ch[bad_c], chan(&log, (size_t)bad_i, bad_c));
+        } else {
+            hx_error(CMD, "Welch rejected the configuration (nfft %d at %.4g Hz)", (int)st.wc.nfft, rate);
+        }
         hx_log_free(&log);
         return HX_EXIT_DATA;
     }
@@ -542,7 +555,7 @@ int hx_cmd_psd(int argc, char **argv)
                 ss.exclude_dc = 0;
                 parse_dc(k_dc_names[d], &ss);
                 fs_tab[d][k] = (double)NAN;
-                if (ss.wc.nfft > FNAV_WELCH_MAX_NFFT || (size_t)ss.wc.nfft > log.n || analyse(&log, &ss, &bc, &sres) != 0) {
+                if (ss.wc.nfft > FNAV_WELCH_MAX_NFFT || (size_t)ss.wc.nfft > log.n || analyse(&log, &ss, &bc, &sres, &bad_i, &bad_c) != 0) {
                     continue;
                 }
                 have[k] = 1;
