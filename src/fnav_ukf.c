@@ -219,7 +219,19 @@ static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], int n)
         d = fnav_sqrt(d);
         U[j][j] = d;
         inv = FNAV_R(1.0) / d;
-        for (i = 0; i < j; i++) {
+        /* two rows at a time (each element of row j loaded once for both;
+         * every sum in the same order as row by row) */
+        for (i = 0; i + 1 < j; i += 2) {
+            fnav_real_t s0 = A[i][j], s1 = A[i + 1][j];
+            const fnav_real_t *r = U[i + 1] + j + 1;
+            for (p = uj, q = U[i] + j + 1; p < ue; p++, q++, r++) {
+                s0 -= *q * *p;
+                s1 -= *r * *p;
+            }
+            U[i][j] = s0 * inv;
+            U[i + 1][j] = s1 * inv;
+        }
+        if (i < j) {
             fnav_real_t sum = A[i][j];
             for (p = uj, q = U[i] + j + 1; p < ue; p++, q++) {
                 sum -= *q * *p;
@@ -277,17 +289,22 @@ static int state_finite(const fnav_strapdown_state_t *x)
            fnav_isfinite(x->q_nb.q[1]) && fnav_isfinite(x->q_nb.q[2]) && fnav_isfinite(x->q_nb.q[3]);
 }
 
-/* S (upper) += w d d^T and m += w d over the leading nnz packed states. */
-static void accumulate(fnav_real_t S[N][N], fnav_real_t *m, const fnav_real_t *d, int nnz, fnav_real_t w)
+/* S (upper) += w d d^T + w e e^T and m += w d + w e over the leading nnz
+ * packed states: a sigma-point pair in one pass over S, each element
+ * receiving d's term before e's (the order of two single updates). */
+static void accumulate2(fnav_real_t S[N][N], fnav_real_t *m, const fnav_real_t *d, const fnav_real_t *e, int nnz,
+                        fnav_real_t w)
 {
     int a;
     for (a = 0; a < nnz; a++) {
-        fnav_real_t wd = w * d[a];
-        m[a] += wd;
+        fnav_real_t wd = w * d[a], we = w * e[a];
         fnav_real_t *sa = S[a] + a, *se = S[a] + nnz;
-        const fnav_real_t *db = d + a;
+        const fnav_real_t *db = d + a, *eb = e + a;
+        m[a] += wd;
+        m[a] += we;
         while (sa < se) {
-            *sa++ += wd * *db++;
+            fnav_real_t v = *sa + wd * *db++;
+            *sa++ = v + we * *eb++;
         }
     }
 }
@@ -361,7 +378,23 @@ static FNAV_NOINLINE void scatter_lin(fnav_real_t S[N][N], fnav_real_t U[N][N], 
     int a, b;
     for (a = 0; a < na; a++) {
         const fnav_real_t *ua = U[a], *ue = U[a] + nl;
-        for (b = a; b < na; b++) {
+        /* two columns b, b + 1 at a time, from the earlier of their first
+         * non-zero columns: the extra products are exact zeros, so every
+         * sum equals the one taken from its own first column */
+        for (b = a; b + 1 < na; b += 2) {
+            int sb = st[b] < st[b + 1] ? st[b] : st[b + 1];
+            int j0 = st[a] > sb ? st[a] : sb;
+            const fnav_real_t *pa = ua + j0, *pb = U[b] + j0, *pc = U[b + 1] + j0;
+            fnav_real_t s0 = FNAV_R(0.0), s1 = FNAV_R(0.0);
+            while (pa < ue) {
+                fnav_real_t x = *pa++;
+                s0 += x * *pb++;
+                s1 += x * *pc++;
+            }
+            S[a][b] += k * s0;
+            S[a][b + 1] += k * s1;
+        }
+        if (b < na) {
             int j0 = st[a] > st[b] ? st[a] : st[b];
             const fnav_real_t *pa = ua + j0, *pb = U[b] + j0;
             fnav_real_t sum = FNAV_R(0.0);
@@ -568,9 +601,12 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
         predict_linear(f, &inc, dt_s);
     }
     /* the full sigma points, along the columns the closed form leaves
-     * (with it, the attitude's), worked on in packed order */
+     * (with it, the attitude's), worked on in packed order; each pair's
+     * differences D go to the rows of f->Hm (free during the prediction)
+     * and into S in one pass */
     for (jj = c->closed_form ? nl : 0; jj < n; jj++) {
         for (s = 0; s < 2; s++) {
+            fnav_real_t *d = f->Hm[s];
             g = s == 0 ? f->gamma : -f->gamma;
             for (i = 0; i < n; i++) {
                 dxp[i] = (i <= jj) ? g * f->U[i][jj] : FNAV_R(0.0);
@@ -585,20 +621,23 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
                 fnav_vec3_t dv = fnav_vec3_sub(xi.vel_mps, x0.vel_mps);
                 fnav_vec3_t dp = fnav_vec3_sub(xi.pos_m, x0.pos_m);
                 fnav_vec3_t da = fnav_ukf_quat_to_grp(fnav_quat_mul(xi.q_nb, q0inv));
+                for (i = 0; i < n; i++) {
+                    d[i] = dxp[i];
+                }
                 for (i = 0; i < 3; i++) {
-                    dxp[ov + i] = dv.v[i];
-                    dxp[op + i] = dp.v[i];
-                    dxp[oa + i] = da.v[i];
+                    d[ov + i] = dv.v[i];
+                    d[op + i] = dp.v[i];
+                    d[oa + i] = da.v[i];
                 }
                 if (obg >= 0) {
                     for (i = 0; i < 3; i++) {
-                        dxp[obg + i] *= cb[i];
-                        dxp[oba + i] *= cb[3 + i];
+                        d[obg + i] *= cb[i];
+                        d[oba + i] *= cb[3 + i];
                     }
                 }
             }
-            accumulate(f->S, m, dxp, n, f->wi);
         }
+        accumulate2(f->S, m, f->Hm[0], f->Hm[1], n, f->wi);
     }
     /* With the propagated centre as reference (D_0 = 0) and the mean
      * m = sum_i W_i D_i, the scatter sum_i Wc_i (D_i - m)(D_i - m)^T equals
