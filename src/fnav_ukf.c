@@ -727,8 +727,9 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
         }
     } else {
         /* H's non-zero columns gathered first (into APHt, free until the
-         * Joseph products), so that each P element is loaded once for the
-         * three rows; the sums run over c in the same order */
+         * Joseph products; S below uses them too), so that each P element
+         * is loaded once for the three rows; the sums run over c in the
+         * same order */
         fnav_real_t (*hc)[3] = APHt;
         for (c = 0; c < nc; c++) {
             for (k = 0; k < 3; k++) {
@@ -749,18 +750,24 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
             PHt[i][2] = s2;
         }
     }
-    /* S = H P H^T + R */
+    /* S = H P H^T + R (with H, over its gathered columns: each sum in the
+     * order of c) */
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) {
-            fnav_real_t sum = (i == j) ? r2 : FNAV_R(0.0);
+            s[i][j] = (i == j) ? r2 : FNAV_R(0.0);
             if (H == NULL) {
-                sum += PHt[cols[i]][j];
-            } else {
-                for (c = 0; c < nc; c++) {
-                    sum += H[i][cols[c]] * PHt[cols[c]][j];
-                }
+                s[i][j] += PHt[cols[i]][j];
             }
-            s[i][j] = sum;
+        }
+    }
+    if (H != NULL) {
+        for (c = 0; c < nc; c++) {
+            const fnav_real_t *h = APHt[c], *ph = PHt[cols[c]];
+            for (i = 0; i < 3; i++) {
+                s[i][0] += h[i] * ph[0];
+                s[i][1] += h[i] * ph[1];
+                s[i][2] += h[i] * ph[2];
+            }
         }
     }
     s[0][1] = s[1][0] = FNAV_R(0.5) * (s[0][1] + s[1][0]);
