@@ -369,7 +369,8 @@ static void guard_cov(fnav_ukf_t *f)
     }
 }
 
-/* S (upper) += k sum_{j < nl} u_a,j u_b,j over the rows a, b < na, the
+/* S (upper) = k sum_{j < nl} u_a,j u_b,j over the rows a, b < na (assigned:
+ * the caller clears only the rest of S), the
  * products of row a taken from column st[a] on (the rows are zero before).
  * Its own function so that the dot products keep their registers. */
 static FNAV_NOINLINE void scatter_lin(fnav_real_t S[N][N], fnav_real_t U[N][N], const unsigned char *st, int na, int nl,
@@ -391,8 +392,8 @@ static FNAV_NOINLINE void scatter_lin(fnav_real_t S[N][N], fnav_real_t U[N][N], 
                 s0 += x * *pb++;
                 s1 += x * *pc++;
             }
-            S[a][b] += k * s0;
-            S[a][b + 1] += k * s1;
+            S[a][b] = k * s0;
+            S[a][b + 1] = k * s1;
         }
         if (b < na) {
             int j0 = st[a] > st[b] ? st[a] : st[b];
@@ -401,7 +402,7 @@ static FNAV_NOINLINE void scatter_lin(fnav_real_t S[N][N], fnav_real_t U[N][N], 
             while (pa < ue) {
                 sum += *pa++ * *pb++;
             }
-            S[a][b] += k * sum;
+            S[a][b] = k * sum;
         }
     }
 }
@@ -591,9 +592,12 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     cb = f->ar1_c;
     qb = f->ar1_q;
 
+    /* S starts at zero; the closed form assigns the block of its rows and
+     * columns (below nl, or all with the biases), the rest is cleared here */
+    jj = !(c->closed_form && nl > 0) ? 0 : (obg >= 0 ? n : nl);
     for (i = 0; i < n; i++) {
         m[i] = FNAV_R(0.0);
-        for (j = i; j < n; j++) {
+        for (j = i < jj ? jj : i; j < n; j++) {
             f->S[i][j] = FNAV_R(0.0);
         }
     }
