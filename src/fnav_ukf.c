@@ -309,6 +309,44 @@ static void accumulate2(fnav_real_t S[N][N], fnav_real_t *m, const fnav_real_t *
     }
 }
 
+/* The closed form's last pass: the six attitude sigma points (differences
+ * D[0..5], in the order of the columns and signs) with the mean
+ * m = sum w D_p first, then S (upper) += sum_p w D_p D_p^T + kmm m m^T and
+ * *chk += the new elements, one pass over S. Every element and every m
+ * receives its terms in the order of accumulate2 pair by pair followed by
+ * the mean's pass. */
+static void accumulate6(fnav_real_t S[N][N], fnav_real_t *m, fnav_real_t D[6][N], int n, fnav_real_t w,
+                        fnav_real_t kmm, fnav_real_t *chk)
+{
+    int a, p;
+    fnav_real_t c = *chk;
+    for (a = 0; a < n; a++) {
+        for (p = 0; p < 6; p++) {
+            m[a] += w * D[p][a];
+        }
+    }
+    for (a = 0; a < n; a++) {
+        const fnav_real_t w0 = w * D[0][a], w1 = w * D[1][a], w2 = w * D[2][a], w3 = w * D[3][a], w4 = w * D[4][a],
+                          w5 = w * D[5][a], km = kmm * m[a];
+        const fnav_real_t *d0 = D[0] + a, *d1 = D[1] + a, *d2 = D[2] + a, *d3 = D[3] + a, *d4 = D[4] + a,
+                          *d5 = D[5] + a, *mb = m + a;
+        fnav_real_t *sa = S[a] + a, *se = S[a] + n;
+        while (sa < se) {
+            fnav_real_t v = *sa;
+            v += w0 * *d0++;
+            v += w1 * *d1++;
+            v += w2 * *d2++;
+            v += w3 * *d3++;
+            v += w4 * *d4++;
+            v += w5 * *d5++;
+            v += km * *mb++;
+            c += v;
+            *sa++ = v;
+        }
+    }
+    *chk = c;
+}
+
 /* 3x3 block of C diag(dens^2) C^T dt added to the upper triangle of S at the
  * packed offset o. */
 static void add_rotated_noise(fnav_real_t S[N][N], int o, fnav_mat3_t C, const fnav_real_t dens[3], fnav_real_t dt)
@@ -531,7 +569,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     fnav_strapdown_incr_t inc;
     fnav_strapdown_state_t x0, xi;
     fnav_quat_t q0inv;
-    fnav_real_t m[N], dxp[N];
+    fnav_real_t m[N];
     const fnav_real_t *cb, *qb;
     fnav_real_t kmm, g, chk = FNAV_R(0.0);
     int n, nl, i, j, jj, s, fr, ov, op, oa, obg, oba;
@@ -605,29 +643,27 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
         predict_linear(f, &inc, dt_s);
     }
     /* the full sigma points, along the columns the closed form leaves
-     * (with it, the attitude's), worked on in packed order; each pair's
-     * differences D go to the rows of f->Hm (free during the prediction)
-     * and into S in one pass */
+     * (with it, the attitude's), worked on in packed order; each point's
+     * difference D from the propagated centre is formed in a row of f->Hm
+     * (free during the prediction): with the closed form the six attitude
+     * points go into S together below, else pair by pair */
     for (jj = c->closed_form ? nl : 0; jj < n; jj++) {
         for (s = 0; s < 2; s++) {
-            fnav_real_t *d = f->Hm[s];
+            fnav_real_t *d = f->Hm[c->closed_form ? 2 * (jj - nl) + s : s];
             g = s == 0 ? f->gamma : -f->gamma;
             for (i = 0; i < n; i++) {
-                dxp[i] = (i <= jj) ? g * f->U[i][jj] : FNAV_R(0.0);
+                d[i] = (i <= jj) ? g * f->U[i][jj] : FNAV_R(0.0);
             }
-            xi.q_nb = apply_att(f->q_nb, fnav_vec3_from(&dxp[oa]));
-            xi.vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&dxp[ov]));
-            xi.pos_m = fnav_vec3_add(f->pos_m, fnav_vec3_from(&dxp[op]));
+            xi.q_nb = apply_att(f->q_nb, fnav_vec3_from(&d[oa]));
+            xi.vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&d[ov]));
+            xi.pos_m = fnav_vec3_add(f->pos_m, fnav_vec3_from(&d[op]));
             fnav_strapdown_propagate(&c->strapdown, &xi, &inc,
-                                     fnav_vec3_scale(obg >= 0 ? fnav_vec3_from(&dxp[obg]) : fnav_vec3_zero(), -dt_s),
-                                     fnav_vec3_scale(oba >= 0 ? fnav_vec3_from(&dxp[oba]) : fnav_vec3_zero(), -dt_s));
+                                     fnav_vec3_scale(obg >= 0 ? fnav_vec3_from(&d[obg]) : fnav_vec3_zero(), -dt_s),
+                                     fnav_vec3_scale(oba >= 0 ? fnav_vec3_from(&d[oba]) : fnav_vec3_zero(), -dt_s));
             {
                 fnav_vec3_t dv = fnav_vec3_sub(xi.vel_mps, x0.vel_mps);
                 fnav_vec3_t dp = fnav_vec3_sub(xi.pos_m, x0.pos_m);
                 fnav_vec3_t da = fnav_ukf_quat_to_grp(fnav_quat_mul(xi.q_nb, q0inv));
-                for (i = 0; i < n; i++) {
-                    d[i] = dxp[i];
-                }
                 for (i = 0; i < 3; i++) {
                     d[ov + i] = dv.v[i];
                     d[op + i] = dp.v[i];
@@ -641,14 +677,19 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
                 }
             }
         }
-        accumulate2(f->S, m, f->Hm[0], f->Hm[1], n, f->wi);
+        if (!c->closed_form) {
+            accumulate2(f->S, m, f->Hm[0], f->Hm[1], n, f->wi);
+        }
     }
     /* With the propagated centre as reference (D_0 = 0) and the mean
      * m = sum_i W_i D_i, the scatter sum_i Wc_i (D_i - m)(D_i - m)^T equals
      * S - 2 m m^T + (1 - W0m) m m^T + W0c m m^T = S + (beta - alpha^2) m m^T,
      * S = sum_{i>0} W_i D_i D_i^T; with beta >= alpha^2 every term is PSD. */
     kmm = c->beta - c->alpha * c->alpha;
-    for (i = 0; i < n; i++) {
+    if (c->closed_form) {
+        accumulate6(f->S, m, f->Hm, n, f->wi, kmm, &chk);
+    }
+    for (i = 0; i < n && !c->closed_form; i++) {
         fnav_real_t km = kmm * m[i];
         fnav_real_t *si = f->S[i] + i, *se = f->S[i] + n;
         const fnav_real_t *mj = m + i;
