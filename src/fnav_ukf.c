@@ -414,33 +414,69 @@ static void guard_cov(fnav_ukf_t *f)
 static FNAV_NOINLINE void scatter_lin(fnav_real_t S[N][N], fnav_real_t U[N][N], const unsigned char *st, int na, int nl,
                                       fnav_real_t k)
 {
+    /* In blocks of two rows by two columns (each element loaded once for
+     * two products), each block's sums from the earliest first non-zero
+     * column of its rows and of its columns: the extra products are exact
+     * zeros, so every sum equals the one taken from its own first column,
+     * in the same order. */
     int a, b;
-    for (a = 0; a < na; a++) {
-        const fnav_real_t *ua = U[a], *ue = U[a] + nl;
-        /* two columns b, b + 1 at a time, from the earlier of their first
-         * non-zero columns: the extra products are exact zeros, so every
-         * sum equals the one taken from its own first column */
-        for (b = a; b + 1 < na; b += 2) {
-            int sb = st[b] < st[b + 1] ? st[b] : st[b + 1];
-            int j0 = st[a] > sb ? st[a] : sb;
-            const fnav_real_t *pa = ua + j0, *pb = U[b] + j0, *pc = U[b + 1] + j0;
-            fnav_real_t s0 = FNAV_R(0.0), s1 = FNAV_R(0.0);
-            while (pa < ue) {
-                fnav_real_t x = *pa++;
-                s0 += x * *pb++;
-                s1 += x * *pc++;
+    for (a = 0; a < na; a += 2) {
+        const fnav_real_t *ua = U[a] + nl, *ue;
+        int sa, j0;
+        if (a + 1 == na) { /* the last row alone: its diagonal element */
+            const fnav_real_t *pa = U[a] + st[a];
+            fnav_real_t s0 = FNAV_R(0.0);
+            while (pa < ua) {
+                s0 += *pa * *pa;
+                pa++;
             }
-            S[a][b] = k * s0;
-            S[a][b + 1] = k * s1;
+            S[a][a] = k * s0;
+            break;
         }
-        if (b < na) {
-            int j0 = st[a] > st[b] ? st[a] : st[b];
-            const fnav_real_t *pa = ua + j0, *pb = U[b] + j0;
-            fnav_real_t sum = FNAV_R(0.0);
+        ue = ua;
+        sa = st[a] < st[a + 1] ? st[a] : st[a + 1];
+        {
+            /* the diagonal block (a, a), (a, a + 1), (a + 1, a + 1) */
+            const fnav_real_t *pa = U[a] + sa, *pb = U[a + 1] + sa;
+            fnav_real_t s00 = FNAV_R(0.0), s01 = FNAV_R(0.0), s11 = FNAV_R(0.0);
             while (pa < ue) {
-                sum += *pa++ * *pb++;
+                fnav_real_t x = *pa++, y = *pb++;
+                s00 += x * x;
+                s01 += x * y;
+                s11 += y * y;
             }
-            S[a][b] = k * sum;
+            S[a][a] = k * s00;
+            S[a][a + 1] = k * s01;
+            S[a + 1][a + 1] = k * s11;
+        }
+        for (b = a + 2; b < na; b += 2) {
+            int two = b + 1 < na, sb = two && st[b + 1] < st[b] ? st[b + 1] : st[b];
+            const fnav_real_t *pa, *pa1, *pb, *pc;
+            fnav_real_t s00 = FNAV_R(0.0), s01 = FNAV_R(0.0), s10 = FNAV_R(0.0), s11 = FNAV_R(0.0);
+            j0 = sa > sb ? sa : sb;
+            pa = U[a] + j0;
+            pa1 = U[a + 1] + j0;
+            pb = U[b] + j0;
+            if (two) {
+                pc = U[b + 1] + j0;
+                while (pa < ue) {
+                    fnav_real_t x = *pa++, y = *pa1++, u = *pb++, v = *pc++;
+                    s00 += x * u;
+                    s01 += x * v;
+                    s10 += y * u;
+                    s11 += y * v;
+                }
+                S[a][b + 1] = k * s01;
+                S[a + 1][b + 1] = k * s11;
+            } else {
+                while (pa < ue) {
+                    fnav_real_t u = *pb++;
+                    s00 += *pa++ * u;
+                    s10 += *pa1++ * u;
+                }
+            }
+            S[a][b] = k * s00;
+            S[a + 1][b] = k * s10;
         }
     }
 }
