@@ -566,22 +566,39 @@ static FNAV_NOINLINE void predict_linear(fnav_ukf_t *f, const fnav_strapdown_inc
         }
         for (k = oba; k < nl; k++) {
             /* the bias columns: velocity, position and attitude responses,
-             * then the AR(1) decay of the biases themselves */
-            int gy = k >= obg;
-            for (i = 0; i < 3; i++) {
-                fnav_real_t dvb = FNAV_R(0.0), da = FNAV_R(0.0);
-                for (j = 0; j < 3; j++) {
-                    fnav_real_t ua = f->U[oba + j][k], ug = gy ? f->U[obg + j][k] : FNAV_R(0.0);
-                    dvb += G[j][i] * ua + G[3 + j][i] * ug;
-                    da += G[6 + j][i] * ug;
+             * then the AR(1) decay of the biases themselves; an accelerometer
+             * column (k < obg) has no gyro-bias rows (zero in the factor) */
+            const fnav_real_t ua0 = f->U[oba][k], ua1 = f->U[oba + 1][k], ua2 = f->U[oba + 2][k];
+            if (k < obg) {
+                for (i = 0; i < 3; i++) {
+                    fnav_real_t dvb = FNAV_R(0.0);
+                    dvb += G[0][i] * ua0;
+                    dvb += G[1][i] * ua1;
+                    dvb += G[2][i] * ua2;
+                    f->U[op + i][k] += hd * dvb;
+                    f->U[ov + i][k] += dvb;
+                    f->U[oat + i][k] = FNAV_R(0.0);
                 }
-                f->U[op + i][k] += hd * dvb;
-                f->U[ov + i][k] += dvb;
-                f->U[oat + i][k] = da;
+            } else {
+                const fnav_real_t ug0 = f->U[obg][k], ug1 = f->U[obg + 1][k], ug2 = f->U[obg + 2][k];
+                for (i = 0; i < 3; i++) {
+                    fnav_real_t dvb = FNAV_R(0.0), da = FNAV_R(0.0);
+                    dvb += G[0][i] * ua0 + G[3][i] * ug0;
+                    da += G[6][i] * ug0;
+                    dvb += G[1][i] * ua1 + G[4][i] * ug1;
+                    da += G[7][i] * ug1;
+                    dvb += G[2][i] * ua2 + G[5][i] * ug2;
+                    da += G[8][i] * ug2;
+                    f->U[op + i][k] += hd * dvb;
+                    f->U[ov + i][k] += dvb;
+                    f->U[oat + i][k] = da;
+                }
+                for (i = 0; i < 3; i++) {
+                    f->U[obg + i][k] *= cb[i];
+                }
             }
             for (i = 0; i < 3; i++) {
                 f->U[oba + i][k] *= cb[3 + i];
-                f->U[obg + i][k] *= gy ? cb[i] : FNAV_R(0.0);
             }
         }
     }
