@@ -210,8 +210,12 @@ static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], int n)
     for (j = n - 1; j >= 0; j--) {
         fnav_real_t d = A[j][j], inv;
         const fnav_real_t *uj = U[j] + j + 1, *ue = U[j] + n, *p, *q;
-        for (p = uj; p < ue; p++) {
-            d -= *p * *p;
+        if (uj < ue) {
+            p = uj;
+            do {
+                d -= *p * *p;
+                p++;
+            } while (p < ue);
         }
         if (!(d > FNAV_REAL_EPSILON * A[j][j]) || !fnav_isfinite(d)) {
             return -1;
@@ -224,17 +228,25 @@ static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], int n)
         for (i = 0; i + 1 < j; i += 2) {
             fnav_real_t s0 = A[i][j], s1 = A[i + 1][j];
             const fnav_real_t *r = U[i + 1] + j + 1;
-            for (p = uj, q = U[i] + j + 1; p < ue; p++, q++, r++) {
-                s0 -= *q * *p;
-                s1 -= *r * *p;
+            p = uj;
+            q = U[i] + j + 1;
+            if (p < ue) {
+                do { /* tested at the bottom: one branch per product pair */
+                    s0 -= *q++ * *p;
+                    s1 -= *r++ * *p++;
+                } while (p < ue);
             }
             U[i][j] = s0 * inv;
             U[i + 1][j] = s1 * inv;
         }
         if (i < j) {
             fnav_real_t sum = A[i][j];
-            for (p = uj, q = U[i] + j + 1; p < ue; p++, q++) {
-                sum -= *q * *p;
+            p = uj;
+            q = U[i] + j + 1;
+            if (p < ue) {
+                do {
+                    sum -= *q++ * *p++;
+                } while (p < ue);
             }
             U[i][j] = sum * inv;
         }
@@ -331,17 +343,19 @@ static void accumulate6(fnav_real_t S[N][N], fnav_real_t *m, fnav_real_t D[6][N]
         const fnav_real_t *d0 = D[0] + a, *d1 = D[1] + a, *d2 = D[2] + a, *d3 = D[3] + a, *d4 = D[4] + a,
                           *d5 = D[5] + a, *mb = m + a;
         fnav_real_t *sa = S[a] + a, *se = S[a] + n;
-        while (sa < se) {
-            fnav_real_t v = *sa;
-            v += w0 * *d0++;
-            v += w1 * *d1++;
-            v += w2 * *d2++;
-            v += w3 * *d3++;
-            v += w4 * *d4++;
-            v += w5 * *d5++;
-            v += km * *mb++;
-            c += v;
-            *sa++ = v;
+        if (sa < se) {
+            do {
+                fnav_real_t v = *sa;
+                v += w0 * *d0++;
+                v += w1 * *d1++;
+                v += w2 * *d2++;
+                v += w3 * *d3++;
+                v += w4 * *d4++;
+                v += w5 * *d5++;
+                v += km * *mb++;
+                c += v;
+                *sa++ = v;
+            } while (sa < se);
         }
     }
     *chk = c;
@@ -426,9 +440,11 @@ static FNAV_NOINLINE void scatter_lin(fnav_real_t S[N][N], fnav_real_t U[N][N], 
         if (a + 1 == na) { /* the last row alone: its diagonal element */
             const fnav_real_t *pa = U[a] + st[a];
             fnav_real_t s0 = FNAV_R(0.0);
-            while (pa < ua) {
-                s0 += *pa * *pa;
-                pa++;
+            if (pa < ua) {
+                do {
+                    s0 += *pa * *pa;
+                    pa++;
+                } while (pa < ua);
             }
             S[a][a] = k * s0;
             break;
@@ -439,11 +455,13 @@ static FNAV_NOINLINE void scatter_lin(fnav_real_t S[N][N], fnav_real_t U[N][N], 
             /* the diagonal block (a, a), (a, a + 1), (a + 1, a + 1) */
             const fnav_real_t *pa = U[a] + sa, *pb = U[a + 1] + sa;
             fnav_real_t s00 = FNAV_R(0.0), s01 = FNAV_R(0.0), s11 = FNAV_R(0.0);
-            while (pa < ue) {
-                fnav_real_t x = *pa++, y = *pb++;
-                s00 += x * x;
-                s01 += x * y;
-                s11 += y * y;
+            if (pa < ue) {
+                do {
+                    fnav_real_t x = *pa++, y = *pb++;
+                    s00 += x * x;
+                    s01 += x * y;
+                    s11 += y * y;
+                } while (pa < ue);
             }
             S[a][a] = k * s00;
             S[a][a + 1] = k * s01;
@@ -459,20 +477,24 @@ static FNAV_NOINLINE void scatter_lin(fnav_real_t S[N][N], fnav_real_t U[N][N], 
             pb = U[b] + j0;
             if (two) {
                 pc = U[b + 1] + j0;
-                while (pa < ue) {
-                    fnav_real_t x = *pa++, y = *pa1++, u = *pb++, v = *pc++;
-                    s00 += x * u;
-                    s01 += x * v;
-                    s10 += y * u;
-                    s11 += y * v;
+                if (pa < ue) {
+                    do {
+                        fnav_real_t x = *pa++, y = *pa1++, u = *pb++, v = *pc++;
+                        s00 += x * u;
+                        s01 += x * v;
+                        s10 += y * u;
+                        s11 += y * v;
+                    } while (pa < ue);
                 }
                 S[a][b + 1] = k * s01;
                 S[a + 1][b + 1] = k * s11;
             } else {
-                while (pa < ue) {
-                    fnav_real_t u = *pb++;
-                    s00 += *pa++ * u;
-                    s10 += *pa1++ * u;
+                if (pa < ue) {
+                    do {
+                        fnav_real_t u = *pb++;
+                        s00 += *pa++ * u;
+                        s10 += *pa1++ * u;
+                    } while (pa < ue);
                 }
             }
             S[a][b] = k * s00;
