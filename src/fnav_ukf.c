@@ -935,14 +935,22 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
         }
     }
     for (i = 0; i < n; i++) {
-        const fnav_real_t *ki = K[i], *pi = PHt[i];
-        for (j = i; j < n; j++) {
-            const fnav_real_t *kj = K[j], *pj = PHt[j], *sj = APHt[j];
-            fnav_real_t v = f->P[i][j] - (ki[0] * pj[0] + ki[1] * pj[1] + ki[2] * pj[2]) -
-                            (pi[0] * kj[0] + pi[1] * kj[1] + pi[2] * kj[2]) + (ki[0] * sj[0] + ki[1] * sj[1] + ki[2] * sj[2]);
+        /* row i's operands in locals: the stores to Pn could alias them */
+        const fnav_real_t ki0 = K[i][0], ki1 = K[i][1], ki2 = K[i][2];
+        const fnav_real_t pi0 = PHt[i][0], pi1 = PHt[i][1], pi2 = PHt[i][2];
+        const fnav_real_t *pij = f->P[i] + i;
+        fnav_real_t *pn = Pn[i] + i, *pe = Pn[i] + n;
+        fnav_real_t (*kj)[3] = K + i, (*pj)[3] = PHt + i, (*sj)[3] = APHt + i;
+        do {
+            fnav_real_t v = *pij++ - (ki0 * (*pj)[0] + ki1 * (*pj)[1] + ki2 * (*pj)[2]) -
+                            (pi0 * (*kj)[0] + pi1 * (*kj)[1] + pi2 * (*kj)[2]) +
+                            (ki0 * (*sj)[0] + ki1 * (*sj)[1] + ki2 * (*sj)[2]);
             chk += v;
-            Pn[i][j] = v;
-        }
+            *pn++ = v;
+            kj++;
+            pj++;
+            sj++;
+        } while (pn < pe);
     }
     if (!fnav_isfinite(chk)) { /* as in the prediction: one check of the sum */
         f->health.diverged++;
