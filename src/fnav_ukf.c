@@ -321,42 +321,43 @@ static void accumulate2(fnav_real_t S[N][N], fnav_real_t *m, const fnav_real_t *
     }
 }
 
-/* The closed form's last pass: the six attitude sigma points (differences
- * D[0..5], in the order of the columns and signs) with the mean
- * m = sum w D_p first, then S (upper) += sum_p w D_p D_p^T + kmm m m^T and
- * *chk += the new elements, one pass over S. Every element and every m
- * receives its terms in the order of accumulate2 pair by pair followed by
- * the mean's pass. */
-static void accumulate6(fnav_real_t S[N][N], fnav_real_t *m, fnav_real_t D[6][N], int n, fnav_real_t w,
+/* The closed form's last pass: the six attitude sigma points (their
+ * differences D_p, in the order of the columns and signs, in the columns
+ * p = 0..5 of D) with the mean m = sum w D_p first, then S (upper) +=
+ * sum_p w D_p D_p^T + kmm m m^T and *chk += the new elements, one pass over
+ * S. Every element and every m receives its terms in the order of
+ * accumulate2 pair by pair followed by the mean's pass. */
+static void accumulate6(fnav_real_t S[N][N], fnav_real_t *m, fnav_real_t D[N][N], int n, fnav_real_t w,
                         fnav_real_t kmm, fnav_real_t *chk)
 {
-    int a, p;
+    int a, b;
     fnav_real_t c = *chk;
     for (a = 0; a < n; a++) {
-        for (p = 0; p < 6; p++) {
-            m[a] += w * D[p][a];
-        }
+        m[a] += w * D[a][0];
+        m[a] += w * D[a][1];
+        m[a] += w * D[a][2];
+        m[a] += w * D[a][3];
+        m[a] += w * D[a][4];
+        m[a] += w * D[a][5];
     }
     for (a = 0; a < n; a++) {
-        const fnav_real_t w0 = w * D[0][a], w1 = w * D[1][a], w2 = w * D[2][a], w3 = w * D[3][a], w4 = w * D[4][a],
-                          w5 = w * D[5][a], km = kmm * m[a];
-        const fnav_real_t *d0 = D[0] + a, *d1 = D[1] + a, *d2 = D[2] + a, *d3 = D[3] + a, *d4 = D[4] + a,
-                          *d5 = D[5] + a, *mb = m + a;
-        fnav_real_t *sa = S[a] + a, *se = S[a] + n;
-        if (sa < se) {
-            do {
-                fnav_real_t v = *sa;
-                v += w0 * *d0++;
-                v += w1 * *d1++;
-                v += w2 * *d2++;
-                v += w3 * *d3++;
-                v += w4 * *d4++;
-                v += w5 * *d5++;
-                v += km * *mb++;
-                c += v;
-                *sa++ = v;
-            } while (sa < se);
-        }
+        const fnav_real_t w0 = w * D[a][0], w1 = w * D[a][1], w2 = w * D[a][2], w3 = w * D[a][3], w4 = w * D[a][4],
+                          w5 = w * D[a][5], km = kmm * m[a];
+        fnav_real_t *sa = S[a];
+        b = a;
+        do {
+            const fnav_real_t *d = D[b];
+            fnav_real_t v = sa[b];
+            v += w0 * d[0];
+            v += w1 * d[1];
+            v += w2 * d[2];
+            v += w3 * d[3];
+            v += w4 * d[4];
+            v += w5 * d[5];
+            v += km * m[b];
+            c += v;
+            sa[b] = v;
+        } while (++b < n);
     }
     *chk = c;
 }
@@ -638,6 +639,61 @@ static FNAV_NOINLINE void predict_linear(fnav_ukf_t *f, const fnav_strapdown_inc
     scatter_lin(f->S, f->U, st, obg >= 0 ? n : nl, nl, kl);
 }
 
+/* Sigma-point offset of packed state i along column jj of U, scaled by g
+ * (zero below the diagonal). */
+static inline FNAV_ALWAYS_INLINE fnav_real_t sp_off(const fnav_ukf_t *f, int i, int jj, fnav_real_t g)
+{
+    return i <= jj ? g * f->U[i][jj] : FNAV_R(0.0);
+}
+
+/* The closed form's six attitude sigma points (fnav_ukf_predict): the
+ * columns jj = nl..nl+2 of U, each with +gamma and -gamma, through the full
+ * strapdown; the difference D_p of point p = 2 (jj - nl) + s from the
+ * propagated centre x0 goes into column p of U (the closed form's columns,
+ * consumed by predict_linear; nl >= 6), for accumulate6. The same
+ * arithmetic as the full path's loop, element by element. */
+static void sigma_att(fnav_ukf_t *f, const fnav_strapdown_incr_t *inc, const fnav_strapdown_state_t *x0,
+                       fnav_quat_t q0inv, fnav_real_t dt_s)
+{
+    const fnav_real_t *cb = f->ar1_c;
+    const int n = f->n_act, nl = f->n_lin, ov = f->pos[FNAV_UKF_V], op = f->pos[FNAV_UKF_P], oa = f->pos[FNAV_UKF_A],
+              obg = f->pos[FNAV_UKF_BG], oba = f->pos[FNAV_UKF_BA];
+    int jj, s, i;
+    for (jj = nl; jj < n; jj++) {
+        for (s = 0; s < 2; s++) {
+            const fnav_real_t g = s == 0 ? f->gamma : -f->gamma;
+            const int pt = 2 * (jj - nl) + s;
+            fnav_strapdown_state_t xi;
+            fnav_vec3_t dth = fnav_vec3_zero(), ddv = fnav_vec3_zero(), dv, dp, da;
+            xi.q_nb = apply_att(f->q_nb, fnav_vec3(sp_off(f, oa, jj, g), sp_off(f, oa + 1, jj, g), sp_off(f, oa + 2, jj, g)));
+            xi.vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3(g * f->U[ov][jj], g * f->U[ov + 1][jj], g * f->U[ov + 2][jj]));
+            xi.pos_m = fnav_vec3_add(f->pos_m, fnav_vec3(g * f->U[op][jj], g * f->U[op + 1][jj], g * f->U[op + 2][jj]));
+            if (obg >= 0) {
+                dth = fnav_vec3(g * f->U[obg][jj], g * f->U[obg + 1][jj], g * f->U[obg + 2][jj]);
+                ddv = fnav_vec3(g * f->U[oba][jj], g * f->U[oba + 1][jj], g * f->U[oba + 2][jj]);
+            }
+            fnav_strapdown_propagate(&f->cfg.strapdown, &xi, inc, fnav_vec3_scale(dth, -dt_s), fnav_vec3_scale(ddv, -dt_s));
+            dv = fnav_vec3_sub(xi.vel_mps, x0->vel_mps);
+            dp = fnav_vec3_sub(xi.pos_m, x0->pos_m);
+            da = fnav_ukf_quat_to_grp(fnav_quat_mul(xi.q_nb, q0inv));
+            for (i = 0; i < nl; i++) {
+                f->U[i][pt] = g * f->U[i][jj]; /* lever and biases; velocity, position overwritten */
+            }
+            for (i = 0; i < 3; i++) {
+                f->U[ov + i][pt] = dv.v[i];
+                f->U[op + i][pt] = dp.v[i];
+                f->U[oa + i][pt] = da.v[i];
+            }
+            if (obg >= 0) {
+                for (i = 0; i < 3; i++) {
+                    f->U[obg + i][pt] *= cb[i];
+                    f->U[oba + i][pt] *= cb[3 + i];
+                }
+            }
+        }
+    }
+}
+
 fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t accel_mps2, fnav_real_t dt_s)
 {
     const fnav_ukf_config_t *c;
@@ -717,14 +773,17 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     if (c->closed_form && nl > 0) {
         predict_linear(f, &inc, dt_s);
     }
-    /* the full sigma points, along the columns the closed form leaves
-     * (with it, the attitude's), worked on in packed order; each point's
-     * difference D from the propagated centre is formed in a row of f->Hm
-     * (free during the prediction): with the closed form the six attitude
-     * points go into S together below, else pair by pair */
-    for (jj = c->closed_form ? nl : 0; jj < n; jj++) {
+    /* the full sigma points: with the closed form the attitude's six
+     * (sigma_att, into S together below); without it, along every column,
+     * in packed order, each point's difference D from the propagated centre
+     * formed in a row of f->Hm (free during the prediction) and a pair at a
+     * time into S */
+    if (c->closed_form) {
+        sigma_att(f, &inc, &x0, q0inv, dt_s);
+    }
+    for (jj = 0; jj < n && !c->closed_form; jj++) {
         for (s = 0; s < 2; s++) {
-            fnav_real_t *d = f->Hm[c->closed_form ? 2 * (jj - nl) + s : s];
+            fnav_real_t *d = f->Hm[s];
             g = s == 0 ? f->gamma : -f->gamma;
             for (i = 0; i < n; i++) {
                 d[i] = (i <= jj) ? g * f->U[i][jj] : FNAV_R(0.0);
@@ -752,9 +811,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
                 }
             }
         }
-        if (!c->closed_form) {
-            accumulate2(f->S, m, f->Hm[0], f->Hm[1], n, f->wi);
-        }
+        accumulate2(f->S, m, f->Hm[0], f->Hm[1], n, f->wi);
     }
     /* With the propagated centre as reference (D_0 = 0) and the mean
      * m = sum_i W_i D_i, the scatter sum_i Wc_i (D_i - m)(D_i - m)^T equals
@@ -762,7 +819,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
      * S = sum_{i>0} W_i D_i D_i^T; with beta >= alpha^2 every term is PSD. */
     kmm = c->beta - c->alpha * c->alpha;
     if (c->closed_form) {
-        accumulate6(f->S, m, f->Hm, n, f->wi, kmm, &chk);
+        accumulate6(f->S, m, f->U, n, f->wi, kmm, &chk);
     }
     for (i = 0; i < n && !c->closed_form; i++) {
         fnav_real_t km = kmm * m[i];

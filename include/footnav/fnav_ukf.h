@@ -171,8 +171,7 @@ typedef struct {
                                                        order of act[] (use fnav_ukf_cov()) */
     fnav_real_t U[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< scratch: Cholesky factor */
     fnav_real_t S[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< scratch: new covariance */
-    fnav_real_t Hm[6][FNAV_UKF_NMAX];             /**< scratch: measurement matrix (rows 0-2, update);
-                                                       sigma-point differences (prediction) */
+    fnav_real_t Hm[3][FNAV_UKF_NMAX];             /**< scratch: measurement matrix */
     fnav_real_t K[FNAV_UKF_NMAX][3];              /**< scratch: gain (update); bias maps (prediction) */
     fnav_real_t PHt[FNAV_UKF_NMAX][3];            /**< scratch: P H^T */
     fnav_real_t APHt[FNAV_UKF_NMAX][3];           /**< scratch: K S */
