@@ -915,13 +915,16 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
         }
         for (i = 0; i < n; i++) {
             const fnav_real_t *pi = f->P[i];
+            const int *cp = cols, *ce = cols + nc;
+            fnav_real_t (*h)[3] = hc;
             fnav_real_t s0 = FNAV_R(0.0), s1 = FNAV_R(0.0), s2 = FNAV_R(0.0);
-            for (c = 0; c < nc; c++) {
-                fnav_real_t pc = pi[cols[c]];
-                s0 += pc * hc[c][0];
-                s1 += pc * hc[c][1];
-                s2 += pc * hc[c][2];
-            }
+            do { /* nc >= 1 */
+                fnav_real_t pc = pi[*cp++];
+                s0 += pc * (*h)[0];
+                s1 += pc * (*h)[1];
+                s2 += pc * (*h)[2];
+                h++;
+            } while (cp < ce);
             PHt[i][0] = s0;
             PHt[i][1] = s1;
             PHt[i][2] = s2;
@@ -971,26 +974,30 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
             si[i][j] *= det;
         }
     }
+    /* the gain K = P H^T S^-1, the correction dx = K y and (for the Joseph
+     * form below) SK = K S, row by row with the row's operands in locals */
     for (i = 0; i < n; i++) {
-        for (k = 0; k < 3; k++) {
-            K[i][k] = PHt[i][0] * si[0][k] + PHt[i][1] * si[1][k] + PHt[i][2] * si[2][k];
-        }
-        dx[i] = K[i][0] * y.v[0] + K[i][1] * y.v[1] + K[i][2] * y.v[2];
+        const fnav_real_t p0 = PHt[i][0], p1 = PHt[i][1], p2 = PHt[i][2];
+        const fnav_real_t k0 = p0 * si[0][0] + p1 * si[1][0] + p2 * si[2][0];
+        const fnav_real_t k1 = p0 * si[0][1] + p1 * si[1][1] + p2 * si[2][1];
+        const fnav_real_t k2 = p0 * si[0][2] + p1 * si[1][2] + p2 * si[2][2];
+        K[i][0] = k0;
+        K[i][1] = k1;
+        K[i][2] = k2;
+        dx[i] = k0 * y.v[0] + k1 * y.v[1] + k2 * y.v[2];
         if (!fnav_isfinite(dx[i])) {
             f->health.diverged++;
             return FNAV_E_DIVERGED;
         }
+        APHt[i][0] = k0 * s[0][0] + k1 * s[1][0] + k2 * s[2][0];
+        APHt[i][1] = k0 * s[0][1] + k1 * s[1][1] + k2 * s[2][1];
+        APHt[i][2] = k0 * s[0][2] + k1 * s[1][2] + k2 * s[2][2];
     }
     /* Joseph form (I - K H) P (I - K H)^T + K R K^T, expanded:
      * P - K (P H^T)^T - (P H^T) K^T + K S K^T with S = H P H^T + R. It holds
      * for any gain K (not only the optimal one, unlike P - K H P), is
-     * symmetric term by term, and only its upper triangle is computed.
-     * SK = K S (n x 3) first; here APHt holds SK. */
-    for (i = 0; i < n; i++) {
-        for (k = 0; k < 3; k++) {
-            APHt[i][k] = K[i][0] * s[0][k] + K[i][1] * s[1][k] + K[i][2] * s[2][k];
-        }
-    }
+     * symmetric term by term, and only its upper triangle is computed
+     * (APHt holds SK). */
     for (i = 0; i < n; i++) {
         /* row i's operands in locals: the stores to Pn could alias them */
         const fnav_real_t ki0 = K[i][0], ki1 = K[i][1], ki2 = K[i][2];
