@@ -869,10 +869,15 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
         f->ba_mps2.v[i] = f->ba0_mps2.v[i] + cb[3 + i] * (f->ba_mps2.v[i] - f->ba0_mps2.v[i]);
     }
     for (i = 0; i < n; i++) {
-        for (j = i; j < n; j++) {
-            f->P[i][j] = f->S[i][j];
-            f->P[j][i] = f->S[i][j];
-        }
+        /* row i from the diagonal on, and its mirror down column i */
+        const fnav_real_t *a = f->S[i] + i, *ae = f->S[i] + n;
+        fnav_real_t *r = f->P[i] + i;
+        fnav_real_t (*cl)[N] = f->P + i;
+        do {
+            fnav_real_t v = *a++;
+            *r++ = v;
+            (*cl++)[i] = v;
+        } while (a < ae);
     }
     guard_cov(f);
     fnav_strapdown_hist_push(&f->hist, &inc);
@@ -1021,10 +1026,15 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
         return FNAV_E_DIVERGED;
     }
     for (i = 0; i < n; i++) {
-        for (j = i; j < n; j++) {
-            f->P[i][j] = Pn[i][j];
-            f->P[j][i] = Pn[i][j];
-        }
+        /* row i from the diagonal on, and its mirror down column i */
+        const fnav_real_t *a = Pn[i] + i, *ae = Pn[i] + n;
+        fnav_real_t *r = f->P[i] + i;
+        fnav_real_t (*cl)[N] = f->P + i;
+        do {
+            fnav_real_t v = *a++;
+            *r++ = v;
+            (*cl++)[i] = v;
+        } while (a < ae);
     }
     guard_cov(f);
     for (i = 0; i < N; i++) {
