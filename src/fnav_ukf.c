@@ -223,9 +223,28 @@ static int chol_upper(fnav_real_t A[N][N], fnav_real_t U[N][N], int n)
         d = fnav_sqrt(d);
         U[j][j] = d;
         inv = FNAV_R(1.0) / d;
-        /* two rows at a time (each element of row j loaded once for both;
-         * every sum in the same order as row by row) */
-        for (i = 0; i + 1 < j; i += 2) {
+        /* four rows at a time, then two (each element of row j loaded once
+         * for all; every sum in the same order as row by row) */
+        for (i = 0; i + 3 < j; i += 4) {
+            fnav_real_t s0 = A[i][j], s1 = A[i + 1][j], s2 = A[i + 2][j], s3 = A[i + 3][j];
+            const fnav_real_t *r = U[i + 1] + j + 1, *t = U[i + 2] + j + 1, *w = U[i + 3] + j + 1;
+            p = uj;
+            q = U[i] + j + 1;
+            if (p < ue) {
+                do {
+                    fnav_real_t x = *p++;
+                    s0 -= *q++ * x;
+                    s1 -= *r++ * x;
+                    s2 -= *t++ * x;
+                    s3 -= *w++ * x;
+                } while (p < ue);
+            }
+            U[i][j] = s0 * inv;
+            U[i + 1][j] = s1 * inv;
+            U[i + 2][j] = s2 * inv;
+            U[i + 3][j] = s3 * inv;
+        }
+        for (; i + 1 < j; i += 2) {
             fnav_real_t s0 = A[i][j], s1 = A[i + 1][j];
             const fnav_real_t *r = U[i + 1] + j + 1;
             p = uj;
