@@ -1448,7 +1448,11 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
     nv->rate_hz = r->rate_hz;
     nv->closed = r->opts.closed;
     memset(&no, 0, sizeof no);
-    no.profile = r->opts.profile;
+    /* the filter of the configuration this domain was validated with
+     * (docs/simgap.md): bias model off, the NavChip's noise unless a profile
+     * is given (the navigation's default before it became the AR(1) model) */
+    no.profile = r->opts.profile != NULL ? r->opts.profile : "navchip";
+    no.bias_model = "off";
     if (hx_nav_config(&no, &nv->cfg, err, err_size) != 0) {
         return -1;
     }
@@ -2225,6 +2229,11 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
     fnav_imuerr_config_t clean;
     int rc = -1;
     E = sgv_effects(&n);
+    /* the filter as in sg_nav_diagnose: bias model off, NavChip noise */
+    nc.bias_model = FNAV_BIAS_OFF;
+    if (fnav_profile_builtin(&nc.profile, FNAV_PROFILE_NAVCHIP) != FNAV_OK) {
+        return -1;
+    }
     cs->profile = (int)((double)fnav_rng_uniform(rng) * 3.0) % 3;
     if (fnav_profile_builtin(&prof, (fnav_profile_id_t)cs->profile) != FNAV_OK ||
         hx_motion_scenario("loop", &mc, o->walk_duration_s, script, script_size) != 0) {

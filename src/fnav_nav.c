@@ -2,19 +2,13 @@
  * (fnav_nav.h). */
 #include "footnav/fnav_nav.h"
 
-/* Paper Table IV (NavChip at 200 Hz) converted to SI: tau = samples / 200 Hz,
- * deg -> rad. Identical to fnav_profile_builtin(FNAV_PROFILE_NAVCHIP). */
+/* The default: the generic MEMS profile (fnav_profile.h; the same as
+ * fnav_profile_by_name("generic-mems") and docs/profiles/generic-mems.profile,
+ * tested) with the AR(1) bias model, and the lever states. */
 #define D2R FNAV_DEG2RAD
 const fnav_nav_config_t fnav_nav_config_default = {
-    { "navchip",
-      FNAV_R(200.0),
-      { FNAV_R(7.4e-4), FNAV_R(6.4e-4), FNAV_R(5.0e-4) },
-      { FNAV_R(10.0), FNAV_R(10.0), FNAV_R(10.0) },
-      { FNAV_R(1.3e-5), FNAV_R(9.7e-6), FNAV_R(7.3e-6) },
-      { FNAV_R(3.3e-3) * D2R, FNAV_R(3.7e-3) * D2R, FNAV_R(4.2e-3) * D2R },
-      { FNAV_R(5.0), FNAV_R(5.0), FNAV_R(50.0) },
-      { FNAV_R(8.5e-5) * D2R, FNAV_R(6.4e-5) * D2R, FNAV_R(3.4e-5) * D2R } },
-    FNAV_BIAS_OFF, /* bias_model: see docs/navigation.md (evidence in docs/results.md) */
+    FNAV_PROFILE_GENERIC_MEMS_INIT, /* profile: docs/navigation.md, "Bias model" */
+    FNAV_BIAS_AR1, /* bias_model: see docs/navigation.md (evidence in docs/results.md) */
     { FNAV_DETECTOR_SHOE, FNAV_R(0.0), FNAV_R(0.025), FNAV_R(0.01), FNAV_R(0.1) * D2R, FNAV_R(1.0e5),
       FNAV_R(0.6), FNAV_R(0.6), FNAV_R(9.80665), 1, FNAV_R(2.0), FNAV_R(0.4), FNAV_R(10.0), FNAV_R(0.02), FNAV_R(0.05),
       FNAV_R(0.25), FNAV_R(0.3) },

@@ -24,6 +24,9 @@ static const fnav_profile_paper_row_t k_shimmer[6] = {
 
 static const char *const k_names[FNAV_PROFILE_COUNT] = { "navchip", "mtx", "shimmer" };
 
+/* Not a paper table: SI units directly (fnav_profile.h). */
+static const fnav_profile_t k_generic_mems = FNAV_PROFILE_GENERIC_MEMS_INIT;
+
 const fnav_profile_paper_row_t *fnav_profile_paper_table(fnav_profile_id_t id)
 {
     switch (id) {
@@ -99,6 +102,10 @@ fnav_status_t fnav_profile_by_name(fnav_profile_t *p, const char *name)
         if (str_eq(name, k_names[i])) {
             return fnav_profile_builtin(p, (fnav_profile_id_t)i);
         }
+    }
+    if (str_eq(name, k_generic_mems.name)) {
+        *p = k_generic_mems;
+        return FNAV_OK;
     }
     return FNAV_E_ARG;
 }

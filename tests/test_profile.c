@@ -15,6 +15,7 @@
 
 #include <cmocka.h>
 
+#include "footnav/fnav_nav.h"
 #include "footnav/fnav_profile.h"
 #include "fnav_testdata.h"
 #include "hx_profile.h"
@@ -171,6 +172,40 @@ static void test_file_round_trip(void **state)
     assert_int_equal(hx_profile_load("/nonexistent/dir/p.profile", &b, err, sizeof err), -1);
 }
 
+/* The built-in generic MEMS profile (the navigation's default) is the file
+ * docs/profiles/generic-mems.profile, value for value (the evidence runs
+ * of docs/navigation.md load the file), and the default configuration's
+ * profile is it. */
+static void test_generic_mems(void **state)
+{
+    fnav_profile_t a, b;
+    const fnav_profile_t *d = &fnav_nav_config_default.profile;
+    char err[256];
+    int i;
+    (void)state;
+    assert_int_equal(fnav_profile_by_name(&a, "generic-mems"), FNAV_OK);
+    assert_int_equal(fnav_profile_validate(&a), FNAV_OK);
+    assert_string_equal(a.name, "generic-mems");
+    if (access("docs/profiles/generic-mems.profile", R_OK) != 0) {
+        fprintf(stderr, "docs/profiles/generic-mems.profile missing (run from the repository root)\n");
+        fail();
+    }
+    assert_int_equal(hx_profile_load("docs/profiles/generic-mems.profile", &b, err, sizeof err), 0);
+    assert_true(a.rate_hz == b.rate_hz && a.rate_hz == d->rate_hz);
+    for (i = 0; i < 3; i++) {
+        assert_true(a.accel_noise_mps2_rthz[i] == b.accel_noise_mps2_rthz[i]);
+        assert_true(a.accel_tau_s[i] == b.accel_tau_s[i]);
+        assert_true(a.accel_bias_sigma_mps2[i] == b.accel_bias_sigma_mps2[i]);
+        assert_true(a.gyro_noise_rps_rthz[i] == b.gyro_noise_rps_rthz[i]);
+        assert_true(a.gyro_tau_s[i] == b.gyro_tau_s[i]);
+        assert_true(a.gyro_bias_sigma_rps[i] == b.gyro_bias_sigma_rps[i]);
+    }
+    assert_true(memcmp(&a, d, sizeof a) == 0);
+    /* 10 deg/h and 50 ug, as documented */
+    FNAV_ASSERT_CLOSE(a.gyro_bias_sigma_rps[0], 10.0 / 3600.0 * 3.14159265358979 / 180.0, 0.0, 0.01);
+    FNAV_ASSERT_CLOSE(a.accel_bias_sigma_mps2[0], 50e-6 * 9.80665, 0.0, 0.01);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -178,6 +213,7 @@ int main(void)
         cmocka_unit_test(test_ar1_units),
         cmocka_unit_test(test_validate),
         cmocka_unit_test(test_file_round_trip),
+        cmocka_unit_test(test_generic_mems),
     };
     return cmocka_run_group_tests_name("profile", tests, NULL, NULL);
 }

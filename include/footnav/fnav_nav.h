@@ -92,8 +92,9 @@ typedef struct {
     uint32_t diverge_undone;           /**< this many consecutive undone steps is divergence (default 20) */
 } fnav_nav_config_t;
 
-/** Defaults: profile "navchip" (paper Table IV), bias model off, lever on,
- *  SHOE with the adaptive threshold (docs/navigation.md gives the reasons). */
+/** Defaults: profile "generic-mems" (fnav_profile.h) with the AR(1) bias
+ *  model, lever on (18 states), SHOE with the adaptive threshold
+ *  (docs/navigation.md gives the reasons). */
 extern const fnav_nav_config_t fnav_nav_config_default;
 
 /** Counters (also summarised in fnav_nav_frame_t.health). */

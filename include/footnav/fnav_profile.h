@@ -55,6 +55,25 @@ typedef struct {
     double sigma_bias;
 } fnav_profile_paper_row_t;
 
+/**
+ * A generic industrial MEMS IMU (3DM-GX5 / MTi class), the navigation's
+ * default (docs/navigation.md, "Bias model"): white noise as the NavChip's
+ * (Table IV, rounded), each bias's stationary sd the bias instability itself
+ * (gyro 10 deg/h = 4.8e-5 rad/s, accelerometer 50 ug = 4.9e-4 m/s^2) with a
+ * correlation time of 100 s. Datasheet-class values, not identified from
+ * the data in ../shared/data; the same as docs/profiles/generic-mems.profile
+ * (tested). Built in as "generic-mems" (fnav_profile_by_name).
+ */
+#define FNAV_PROFILE_GENERIC_MEMS_INIT                                                                            \
+    {                                                                                                             \
+        "generic-mems", FNAV_R(200.0), { FNAV_R(7.4e-4), FNAV_R(6.4e-4), FNAV_R(5.0e-4) },                        \
+            { FNAV_R(100.0), FNAV_R(100.0), FNAV_R(100.0) }, { FNAV_R(4.9e-4), FNAV_R(4.9e-4), FNAV_R(4.9e-4) },  \
+            { FNAV_R(5.8e-5), FNAV_R(6.5e-5), FNAV_R(7.3e-5) }, { FNAV_R(100.0), FNAV_R(100.0), FNAV_R(100.0) }, \
+        {                                                                                                         \
+            FNAV_R(4.8e-5), FNAV_R(4.8e-5), FNAV_R(4.8e-5)                                                        \
+        }                                                                                                         \
+    }
+
 /** The paper's table of a built-in profile (6 rows), or NULL. */
 const fnav_profile_paper_row_t *fnav_profile_paper_table(fnav_profile_id_t id);
 
@@ -68,7 +87,7 @@ FNAV_WARN_UNUSED fnav_status_t fnav_profile_from_paper(fnav_profile_t *p, const 
 /** A built-in profile. @return FNAV_OK or FNAV_E_ARG for an unknown id. */
 FNAV_WARN_UNUSED fnav_status_t fnav_profile_builtin(fnav_profile_t *p, fnav_profile_id_t id);
 
-/** Built-in profile by name ("navchip", "mtx", "shimmer"); FNAV_E_ARG if unknown. */
+/** Built-in profile by name ("navchip", "mtx", "shimmer", "generic-mems"); FNAV_E_ARG if unknown. */
 FNAV_WARN_UNUSED fnav_status_t fnav_profile_by_name(fnav_profile_t *p, const char *name);
 
 /** FNAV_OK when every value is finite and positive (noise, tau, sigma). */
