@@ -836,10 +836,11 @@ int hx_cmd_eval(int argc, char **argv)
             double xs3[5], xl3[5];
             int nv = 0, b, ok[5];
             fprintf(ev.md, "## Paper experiment 1: AR(1) bias model on vs off\n\n"
-                           "Same walks and configuration except `--bias-model` and the profile: off (the default), "
-                           "and the AR(1) model with the paper's Tables IV-VI and with `docs/profiles/generic-mems."
-                           "profile` (bias instability as the stationary sd, 100 s; docs/navigation.md, \"Bias "
-                           "model\").\n\n");
+                           "Same walks and configuration except `--bias-model` and the profile: off, and the AR(1) "
+                           "model with the paper's Tables IV-VI and with `docs/profiles/generic-mems.profile` (bias "
+                           "instability as the stationary sd, 100 s; the built-in `generic-mems`; docs/navigation.md, "
+                           "\"Bias model\"). The navigation's default profile and bias model are the last "
+                           "column's.\n\n");
             for (b = 0; b < 5; b++) {
                 fnav_nav_config_t cv = b == 0 ? off : ar1;
                 char perr[300];

@@ -65,7 +65,10 @@ int main(void)
     unsigned long up_sum = 0, up_n = 0, up_max = 0, uz_sum = 0, uz_n = 0, ust_max = 0, nav_max = 0;
     volatile int x = 0;
 #ifdef M4_AR1
-    c.bias_model = FNAV_BIAS_AR1;
+    c.bias_model = FNAV_BIAS_AR1; /* the default since the AR(1) model fits the budget */
+#endif
+#ifdef M4_BIASOFF
+    c.bias_model = FNAV_BIAS_OFF;
 #endif
 #ifdef M4_NOLEVER
     c.lever = 0;

@@ -2,8 +2,10 @@
 # Cortex-M4F instruction counts of the navigation step (make bench): builds
 # tests/m4 with the firmware flags and runs it in qemu-system-arm (mps2-an386,
 # -icount shift=0, semihosting). Skips with a message when the tools are
-# missing. Usage: sh tests/m4/run.sh [extra CFLAGS: -O2, -DM4_AR1 (bias model
-# on), -DM4_NOLEVER (no lever states)]
+# missing. Usage: sh tests/m4/run.sh [extra CFLAGS: -O2, -DM4_BIASOFF (bias
+# model off; the default is on), -DM4_NOLEVER (no lever states)]: the default
+# configuration has 18 states, -DM4_NOLEVER the paper's 15, -DM4_BIASOFF 12,
+# both 9.
 set -u
 cd "$(dirname "$0")/../.."
 for t in arm-none-eabi-gcc qemu-system-arm /usr/bin/python3; do
