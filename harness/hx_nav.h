@@ -30,8 +30,8 @@ typedef struct {
 
 /** The options every navigation command accepts, for an hx_opt_t table. */
 #define HX_NAV_OPTS                                                                                   \
-    { "--profile", "NAME|FILE", "sensor profile: navchip, mtx, shimmer or a profile file (default navchip)", 0 }, \
-    { "--bias-model", "MODEL", "ar1 or off (default, docs/navigation.md)", 0 },                                           \
+    { "--profile", "NAME|FILE", "sensor profile: generic-mems (default), navchip, mtx, shimmer or a profile file", 0 }, \
+    { "--bias-model", "MODEL", "ar1 (default, docs/navigation.md) or off", 0 },                                           \
     { "--detector", "KIND", "stance detector: shoe (default) or threshold", 0 },                      \
     { "--samples", "KIND", "what a sample is: instant (default; rate-output sensors) or mean (delta-angle/velocity over the interval)", 0 }, \
     { "--rate", "HZ", "resample the input to HZ first (anti-alias low-pass, docs/harness.md)", 0 },   \

@@ -188,7 +188,7 @@ int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size
         return 0;
     }
     if (strchr(name_or_path, '/') == NULL && strchr(name_or_path, '.') == NULL) {
-        snprintf(err, err_size, "unknown profile '%s' (built-in: navchip, mtx, shimmer; or a profile file)",
+        snprintf(err, err_size, "unknown profile '%s' (built-in: navchip, mtx, shimmer, generic-mems; or a profile file)",
                  name_or_path);
         return -1;
     }
