@@ -397,6 +397,24 @@ static void add_rotated_noise(fnav_real_t S[N][N], int o, fnav_mat3_t C, const f
     }
 }
 
+/* P = the upper triangle of A (from the diagonal on), mirrored: row i by
+ * pointer, column i by row pointer. Inlined at both uses (a call cost the
+ * prediction more than the loop). */
+static inline FNAV_ALWAYS_INLINE void mirror_upper(fnav_real_t P[N][N], fnav_real_t A[N][N], int n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        const fnav_real_t *a = A[i] + i, *ae = A[i] + n;
+        fnav_real_t *r = P[i] + i;
+        fnav_real_t (*cl)[N] = P + i;
+        do {
+            fnav_real_t v = *a++;
+            *r++ = v;
+            (*cl++)[i] = v;
+        } while (a < ae);
+    }
+}
+
 /* Largest standard deviation of each internal state kind (lever, velocity,
  * position, attitude error, gyro bias, accel bias): far beyond any walk,
  * small enough for float32 to keep the covariance's cancellations (updates
@@ -887,17 +905,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
         f->bg_rps.v[i] = f->bg0_rps.v[i] + cb[i] * (f->bg_rps.v[i] - f->bg0_rps.v[i]);
         f->ba_mps2.v[i] = f->ba0_mps2.v[i] + cb[3 + i] * (f->ba_mps2.v[i] - f->ba0_mps2.v[i]);
     }
-    for (i = 0; i < n; i++) {
-        /* row i from the diagonal on, and its mirror down column i */
-        const fnav_real_t *a = f->S[i] + i, *ae = f->S[i] + n;
-        fnav_real_t *r = f->P[i] + i;
-        fnav_real_t (*cl)[N] = f->P + i;
-        do {
-            fnav_real_t v = *a++;
-            *r++ = v;
-            (*cl++)[i] = v;
-        } while (a < ae);
-    }
+    mirror_upper(f->P, f->S, n);
     guard_cov(f);
     fnav_strapdown_hist_push(&f->hist, &inc);
     f->health.predicts++;
@@ -1044,17 +1052,7 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
         f->health.diverged++;
         return FNAV_E_DIVERGED;
     }
-    for (i = 0; i < n; i++) {
-        /* row i from the diagonal on, and its mirror down column i */
-        const fnav_real_t *a = Pn[i] + i, *ae = Pn[i] + n;
-        fnav_real_t *r = f->P[i] + i;
-        fnav_real_t (*cl)[N] = f->P + i;
-        do {
-            fnav_real_t v = *a++;
-            *r++ = v;
-            (*cl++)[i] = v;
-        } while (a < ae);
-    }
+    mirror_upper(f->P, Pn, n);
     guard_cov(f);
     for (i = 0; i < N; i++) {
         dxi[i] = f->pos[i] >= 0 ? dx[f->pos[i]] : FNAV_R(0.0);
