@@ -5,7 +5,8 @@
 # missing. Usage: sh tests/m4/run.sh [extra CFLAGS: -O2, -DM4_BIASOFF (bias
 # model off; the default is on), -DM4_NOLEVER (no lever states)]: the default
 # configuration has 18 states, -DM4_NOLEVER the paper's 15, -DM4_BIASOFF 12,
-# both 9.
+# both 9. M4_MAIN and M4_UKF replace tests/m4/main.c and src/fnav_ukf.c
+# (tests/m4/profile.sh passes its instrumented copies).
 set -u
 cd "$(dirname "$0")/../.."
 for t in arm-none-eabi-gcc qemu-system-arm /usr/bin/python3; do
@@ -21,8 +22,8 @@ for a in "$@"; do case "$a" in -O*) OPT="$a" ;; esac; done
 arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard $OPT -std=c99 "$@" \
     -Iinclude -Iport/cortex-m -I"$B" -nostartfiles --specs=nano.specs -Wl,--gc-sections \
     -Lport/cortex-m/ld -Tmps2-an386.ld \
-    port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_semihost.c tests/m4/main.c \
-    src/fnav_nav.c src/fnav_ukf.c src/fnav_stance.c src/fnav_align.c \
+    port/cortex-m/fnav_cm_startup.c port/cortex-m/fnav_cm_semihost.c "${M4_MAIN:-tests/m4/main.c}" \
+    src/fnav_nav.c "${M4_UKF:-src/fnav_ukf.c}" src/fnav_stance.c src/fnav_align.c \
     src/fnav_strapdown.c src/fnav_profile.c src/fnav_port.c -lm -lc -lgcc -o "$B/m4.elf" || exit 1
 echo "  Cortex-M4F in qemu-system-arm mps2-an386 -icount shift=0 ($OPT $*):"
 timeout 600 qemu-system-arm -M mps2-an386 -nographic -semihosting-config enable=on,target=native \
