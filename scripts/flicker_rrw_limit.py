@@ -94,14 +94,20 @@ def best_nll(segs, unit, m0):
                           method="bounded", options={"xatol": 2e-3})
     return res.fun
 
-for mult in (1.0, 1.5, 2.0):
-    right = {}
-    for kind in ("flicker", "rrw"):
-        ok = 0
-        for _ in range(RUNS):
-            segs = simulate(kind, mult * (B_TH if kind == "flicker" else K_TH))
-            named = "flicker" if best_nll(segs, FLK_UNIT, B_TH) < best_nll(segs, RRW_UNIT, K_TH) else "rrw"
-            ok += named == kind
-        right[kind] = ok
-    print("%.1fx threshold: flicker named right %d/%d, rrw named right %d/%d"
-          % (mult, right["flicker"], RUNS, right["rrw"], RUNS), flush=True)
+
+def main():
+    for mult in (1.0, 1.5, 2.0):
+        right = {}
+        for kind in ("flicker", "rrw"):
+            ok = 0
+            for _ in range(RUNS):
+                segs = simulate(kind, mult * (B_TH if kind == "flicker" else K_TH))
+                named = "flicker" if best_nll(segs, FLK_UNIT, B_TH) < best_nll(segs, RRW_UNIT, K_TH) else "rrw"
+                ok += named == kind
+            right[kind] = ok
+        print("%.1fx threshold: flicker named right %d/%d, rrw named right %d/%d"
+              % (mult, right["flicker"], RUNS, right["rrw"], RUNS), flush=True)
+
+
+if __name__ == "__main__":
+    main()
