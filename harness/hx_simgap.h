@@ -618,6 +618,15 @@ void sg_effect_text(char *b, size_t n, int ch, const sg_effect_t *e);
 
 /** Text summary. */
 void sg_print_summary(FILE *f, const sg_result_t *r);
+
+/** Why a static channel with a gap has no accepted effect (logs with a
+ *  confident answer): SG_UNCONF_NOT_HELD_OUT, the whole log's gap does not
+ *  show on the held-out segment, so no effect can be confirmed there;
+ *  SG_UNCONF_NO_EFFECT, a held-out gap that no candidate reduces;
+ *  SG_UNCONF_NONE otherwise. *lead: the simulated candidate of the first
+ *  step the fit segment supports most (largest fit dQ), or NULL. */
+enum { SG_UNCONF_NONE = 0, SG_UNCONF_NOT_HELD_OUT = 1, SG_UNCONF_NO_EFFECT = 2 };
+int sg_unconfirmed(const sg_result_t *r, int ch, const sg_cand_t **lead);
 /** JSON report (schema in docs/simgap.md). 0, -1 on failure (err). */
 int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_size);
 /** Plots into a directory. 0, -1 on failure (printed). */

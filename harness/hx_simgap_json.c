@@ -408,6 +408,29 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
     if (r->nav != NULL) {
         sg_nav_verdict_json((const sg_nav_t *)r->nav, a);
     }
+    /* static channels with a gap and no accepted effect, and why */
+    {
+        cJSON *u = cJSON_AddArrayToObject(o, "unconfirmed");
+        for (ch = 0; ch < SG_NCH; ch++) {
+            const sg_cand_t *lead;
+            const int why = sg_unconfirmed(r, ch, &lead);
+            cJSON *uo;
+            if (why == SG_UNCONF_NONE) {
+                continue;
+            }
+            uo = cJSON_CreateObject();
+            cJSON_AddStringToObject(uo, "channel", sg_channel_name(ch));
+            cJSON_AddStringToObject(uo, "reason", why == SG_UNCONF_NOT_HELD_OUT ? "not-held-out" : "no-effect");
+            if (why == SG_UNCONF_NOT_HELD_OUT && lead != NULL) {
+                cJSON *lo = effect_json(&lead->eff, ch);
+                add_num(lo, "fit_dq", lead->dQ_fit);
+                cJSON_AddItemToObject(uo, "lead", lo);
+            } else {
+                cJSON_AddNullToObject(uo, "lead");
+            }
+            cJSON_AddItemToArray(u, uo);
+        }
+    }
     if (r->tim.have && r->tim.significant) {
         static const char *const tn[SG_TIM_NKIND] = { "duplicate", "dropout", "jitter" };
         for (k = 0; k < SG_TIM_NKIND; k++) {

@@ -255,6 +255,50 @@ static void debug_points(FILE *f, const sg_result_t *r)
     }
 }
 
+int sg_unconfirmed(const sg_result_t *r, int ch, const sg_cand_t **lead)
+{
+    const sg_chres_t *c = &r->ch[ch];
+    int j;
+    *lead = NULL;
+    if (r->domain != 1 || !r->confident || !c->active || c->nsel > 0 || !c->gap) {
+        return SG_UNCONF_NONE;
+    }
+    for (j = 0; c->nsteps > 0 && j < c->step[0].ncand; j++) {
+        const sg_cand_t *cd = &c->step[0].cand[j];
+        if (cd->simulated && (*lead == NULL || cd->dQ_fit > (*lead)->dQ_fit)) {
+            *lead = cd;
+        }
+    }
+    return c->gap_hold ? SG_UNCONF_NO_EFFECT : SG_UNCONF_NOT_HELD_OUT;
+}
+
+/* The summary's line for each channel sg_unconfirmed names. */
+static void print_unconfirmed(FILE *f, const sg_result_t *r)
+{
+    int ch;
+    char b[256];
+    for (ch = 0; ch < SG_NCH; ch++) {
+        const sg_chres_t *c = &r->ch[ch];
+        const sg_cand_t *lead;
+        const int why = sg_unconfirmed(r, ch, &lead);
+        if (why == SG_UNCONF_NO_EFFECT) {
+            fprintf(f, "  %s: a held-out gap (G %.3g, critical %.2g) that no effect of the catalogue reduces on "
+                       "held-out data\n",
+                    sg_channel_name(ch), c->cmp[SG_HOLD].G, c->cmp[SG_HOLD].G_crit);
+        } else if (why == SG_UNCONF_NOT_HELD_OUT) {
+            fprintf(f, "  %s: the whole log's gap (G %.3g, critical %.2g) does not show on the held-out %s (G %.3g, "
+                       "critical %.2g), so no effect can be confirmed",
+                    sg_channel_name(ch), c->cmp[SG_FULL].G, c->cmp[SG_FULL].G_crit,
+                    r->segs.sandwich ? "middle" : "segment", c->cmp[SG_HOLD].G, c->cmp[SG_HOLD].G_crit);
+            if (lead != NULL) {
+                sg_effect_text(b, sizeof b, ch, &lead->eff);
+                fprintf(f, "; the fit segment's best candidate is %s, fit dQ %.1f, unconfirmed", b, lead->dQ_fit);
+            }
+            fprintf(f, "; a longer log may tell\n");
+        }
+    }
+}
+
 void sg_print_summary(FILE *f, const sg_result_t *r)
 {
     debug_points(f, r);
@@ -327,5 +371,7 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
             }
         }
     }
-    fprintf(f, "\n(%.1f s)\n", r->elapsed_s);
+    fprintf(f, "\n");
+    print_unconfirmed(f, r);
+    fprintf(f, "(%.1f s)\n", r->elapsed_s);
 }

@@ -40,7 +40,7 @@ expect_exit 0 "static log with quantisation" "$H" simgap "$T/q.csv" --quiet --se
 grep -q "^verdict: explained: quant" "$T/out" && pass "summary names quant" || fail "summary: $(grep verdict "$T/out")"
 json "$T/q.json" 'j["schema"] == "footnav-simgap/1" and j["log"]["domain"] == "static" and j["log"]["domain_from"] == "detected"' &&
     pass "JSON schema and domain" || fail "JSON schema/domain: $(cat "$T/pyerr")"
-json "$T/q.json" 'j["verdict"]["answer"] == "explained" and j["effects"][0]["effect"] == "quant" and j["effects"][0]["rank"] == 1 and [c["channel"] for c in j["effects"][0]["channels"]] == ["gz"]' &&
+json "$T/q.json" 'j["verdict"]["answer"] == "explained" and j["verdict"]["unconfirmed"] == [] and j["effects"][0]["effect"] == "quant" and j["effects"][0]["rank"] == 1 and [c["channel"] for c in j["effects"][0]["channels"]] == ["gz"]' &&
     pass "quant ranked first, on gz only" || fail "ranked effects: $(cat "$T/pyerr")"
 json "$T/q.json" 'abs(j["effects"][0]["channels"][0]["params"]["lsb"] / 0.001 - 1) < 0.01 and j["effects"][0]["channels"][0]["explained"] >= 0.7' &&
     pass "LSB within 1 %, held-out gap explained >= 70 %" || fail "quant parameters: $(cat "$T/pyerr")"
@@ -73,6 +73,30 @@ json "$T/th.json" '(lambda e: e["effect"] == "thermal" and [c["channel"] for c i
 expect_exit 0 "static log with a ramp" "$H" simgap "$T/rp.csv" --quiet --seeds 16 --json "$T/rp.json"
 json "$T/rp.json" '(lambda e: e["effect"] == "ramp" and [c["channel"] for c in e["channels"]] == ["gx"] and abs(e["channels"][0]["params"]["rate"] / -1e-6 - 1) < 0.25)(j["effects"][0]) and any(cd["effect"] == "thermal" and cd["nested_in_ramp"] and not cd["simulated"] for s in j["channels"][3]["attribution"]["steps"] for cd in s["candidates"])' &&
     pass "ramp on gx, signed rate within 25 %, the warm-up nested in it" || fail "ramp: $(cat "$T/pyerr"; grep verdict "$T/out")"
+
+# a bias offset of 1e-3 rad/s on gx in the first and last 30 % only (the
+# fit segment): the whole log's gap is significant, the held-out middle has
+# none, so no effect is confirmed; the verdict is `unexplained` and the
+# summary says why on gx alone
+"$H" sim --motion stand:600 --rate 100 --profile mtx --seed 9 --out "$T/e.csv" >/dev/null 2>&1 || fail "sim ends"
+"$PY" -c '
+import sys
+src, dst = open(sys.argv[1]), open(sys.argv[2], "w")
+hdr = src.readline()
+dst.write(hdr)
+gi = hdr.strip().split(",").index("gx")
+for line in src:
+    f = line.strip().split(",")
+    if float(f[0]) < 180.0 or float(f[0]) >= 420.0:
+        f[gi] = "%.9g" % (float(f[gi]) + 1e-3)
+    dst.write(",".join(f) + "\n")
+' "$T/e.csv" "$T/e2.csv" || fail "offset the ends"
+expect_exit 0 "gap in the fit segment only" "$H" simgap "$T/e2.csv" --quiet --seeds 16 --json "$T/e2.json"
+grep -q "^  gx: the whole log's gap .* does not show on the held-out middle .* so no effect can be confirmed" "$T/out" &&
+    [ "$(grep -c "^  [ag][xyz]: " "$T/out")" -eq 1 ] && pass "summary: the unconfirmed gap on gx said, no other channel" ||
+    fail "unconfirmed gap: $(grep -A3 verdict "$T/out")"
+json "$T/e2.json" 'j["verdict"]["answer"] == "unexplained" and j["verdict"]["effects"] == [] and [c["channel"] for c in j["channels"] if c["gap"]["full"]["significant"]] == ["gx"] and not j["channels"][3]["gap"]["held_out"]["significant"] and [(u["channel"], u["reason"]) for u in j["verdict"]["unconfirmed"]] == [("gx", "not-held-out")]' &&
+    pass "unconfirmed gap: verdict unexplained, gap on gx, none held out" || fail "unconfirmed JSON: $(cat "$T/pyerr")"
 
 # --walk on a static log is honoured (domain given, not detected)
 expect_exit 0 "domain given" "$H" simgap "$T/q.csv" --quiet --seeds 3 --max-effects 0 --static --json "$T/g.json"
