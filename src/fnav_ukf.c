@@ -778,13 +778,15 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
 
     /* AR(1) coefficients c = exp(-dt/tau) and driving variances
      * sigma^2 (1 - exp(-2 dt/tau)) (paper eqs. (3), (4) with c = e^(-1/tau)
-     * for dt = one sample); the model off keeps the biases fixed. */
+     * for dt = one sample); the model off keeps the biases fixed. c comes
+     * from fnav_exp_neg, not the C library, so that host and target agree
+     * bit for bit (fnav_math.h). */
     if (dt_s != f->ar1_dt_s) {
         /* recomputed only when the interval changes (usually never) */
         for (i = 0; i < 3; i++) {
             if (c->bias_model == FNAV_BIAS_AR1) {
-                f->ar1_c[i] = fnav_exp(-dt_s / c->gyro_tau_s[i]);
-                f->ar1_c[3 + i] = fnav_exp(-dt_s / c->accel_tau_s[i]);
+                f->ar1_c[i] = fnav_exp_neg(dt_s / c->gyro_tau_s[i]);
+                f->ar1_c[3 + i] = fnav_exp_neg(dt_s / c->accel_tau_s[i]);
                 f->ar1_q[i] = c->gyro_bias_sigma_rps[i] * c->gyro_bias_sigma_rps[i] * (FNAV_R(1.0) - f->ar1_c[i] * f->ar1_c[i]);
                 f->ar1_q[3 + i] = c->accel_bias_sigma_mps2[i] * c->accel_bias_sigma_mps2[i] *
                                   (FNAV_R(1.0) - f->ar1_c[3 + i] * f->ar1_c[3 + i]);

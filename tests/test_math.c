@@ -4,6 +4,9 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
 
 #include <cmocka.h>
 
@@ -170,6 +173,60 @@ static void test_wrap_and_normalize(void **state)
     FNAV_ASSERT_CLOSE(fnav_clamp(FNAV_R(2.0), FNAV_R(-1.0), FNAV_R(1.0)), 1.0, 0.0, 0.0);
 }
 
+/* fnav_exp_neg: in the float build exactly the bits of the same algorithm
+ * run in numpy float32 (vectors/math/gen_exp_neg.py); in both builds within
+ * its documented relative error of exp(-x); the edge values. */
+static void test_exp_neg(void **state)
+{
+    char path[512], line[256];
+    FILE *f;
+    int rows = 0;
+    double x, worst1 = 0.0, worst20 = 0.0;
+    (void)state;
+    assert_true(fnav_exp_neg(FNAV_R(0.0)) == FNAV_R(1.0));
+    assert_true(fnav_exp_neg(FNAV_R(-3.0)) == FNAV_R(1.0));
+    assert_true(fnav_exp_neg((fnav_real_t)NAN) == FNAV_R(1.0));
+#if !FNAV_USE_DOUBLE
+    assert_true(fnav_exp_neg(FNAV_R(150.0)) == FNAV_R(0.0));
+    assert_true(fnav_exp_neg((fnav_real_t)INFINITY) == FNAV_R(0.0));
+#endif
+    for (x = 1e-7; x <= 80.0; x *= 1.01) {
+        const fnav_real_t xr = (fnav_real_t)x;
+        const double ref = exp(-(double)xr), rel = fabs((double)fnav_exp_neg(xr) - ref) / ref;
+        if (x <= 1.0 && rel > worst1) {
+            worst1 = rel;
+        } else if (x <= 20.0 && rel > worst20) {
+            worst20 = rel;
+        }
+        assert_true(rel <= (x <= 1.0 ? 1.1e-6 : x <= 20.0 ? 3.4e-5 : 1.4e-4));
+    }
+    fprintf(stderr, "exp_neg: worst relative error %.3g (x <= 1), %.3g (x <= 20)\n", worst1, worst20);
+    assert_int_equal(fnav_vector_path("math/exp_neg.csv", path, sizeof path), 0);
+    f = fopen(path, "r");
+    assert_non_null(f);
+    assert_non_null(fgets(line, sizeof line, f)); /* header */
+    while (fgets(line, sizeof line, f) != NULL) {
+        unsigned long xb, rb;
+        assert_int_equal(sscanf(line, "%lx,%lx", &xb, &rb), 2);
+#if !FNAV_USE_DOUBLE
+        {
+            uint32_t xu = (uint32_t)xb, ru;
+            float xf, r;
+            memcpy(&xf, &xu, sizeof xf);
+            r = fnav_exp_neg(xf);
+            memcpy(&ru, &r, sizeof ru);
+            if (ru != (uint32_t)rb) {
+                fprintf(stderr, "exp_neg(%.9g) = 0x%08lx, expected 0x%08lx\n", (double)xf, (unsigned long)ru, rb);
+            }
+            assert_true(ru == (uint32_t)rb);
+        }
+#endif
+        rows++;
+    }
+    fclose(f);
+    assert_true(rows > 400);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -180,6 +237,7 @@ int main(void)
         cmocka_unit_test(test_euler),
         cmocka_unit_test(test_euler_gimbal),
         cmocka_unit_test(test_wrap_and_normalize),
+        cmocka_unit_test(test_exp_neg),
     };
     return cmocka_run_group_tests_name("math", tests, NULL, NULL);
 }

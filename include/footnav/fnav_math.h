@@ -43,6 +43,51 @@ typedef union {
 
 /* ---------------------------------------------------------------- vec3 */
 
+/**
+ * exp(-x) for x >= 0 from additions, multiplications and comparisons only,
+ * so that the float build gives the same bits on every IEEE-754 target: the
+ * filter's decay factors exp(-dt/tau) must not depend on the C library
+ * (newlib's and glibc's expf differ in the last bit for some arguments, and
+ * one ulp in one decay factor moves a 77 m walk's yaw by about 1e-4 rad:
+ * docs/firmware.md, "Host and target agree"). x is halved k times until it
+ * is at most 1/16, exp(-y) is its Taylor polynomial of degree 6 there (the
+ * first omitted term below 1e-12), and the result is squared k times
+ * (each squaring doubles the relative rounding error). In float the
+ * relative error is at most 1.1e-6 for x <= 1, 3.4e-5 for x <= 20 and
+ * 1.4e-4 up to 80 (the maxima over every float in [1e-7, 80]:
+ * `/usr/bin/python3 vectors/math/gen_exp_neg.py --exhaustive`); 0 above 100.
+ * The double build uses the C library's exp (it is the host's accuracy
+ * reference).
+ * @param x  non-negative; x <= 0 (or NaN) gives 1
+ */
+static inline fnav_real_t fnav_exp_neg(fnav_real_t x)
+{
+#if FNAV_USE_DOUBLE
+    return x > 0.0 ? exp(-x) : 1.0;
+#else
+    int k = 0;
+    fnav_real_t y = x, p;
+    if (!(x > FNAV_R(0.0))) {
+        return FNAV_R(1.0);
+    }
+    if (x > FNAV_R(100.0)) {
+        return FNAV_R(0.0); /* below the smallest float, and no halving loop for an infinity */
+    }
+    while (y > FNAV_R(0.0625)) {
+        y *= FNAV_R(0.5);
+        k++;
+    }
+    /* 1 - y + y^2/2 - y^3/6 + y^4/24 - y^5/120 + y^6/720, Horner */
+    p = FNAV_R(1.0) - y * (FNAV_R(1.0) - y * (FNAV_R(0.5) - y * (FNAV_R(1.0) / FNAV_R(6.0) -
+        y * (FNAV_R(1.0) / FNAV_R(24.0) - y * (FNAV_R(1.0) / FNAV_R(120.0) - y * (FNAV_R(1.0) / FNAV_R(720.0)))))));
+    while (k > 0) {
+        p *= p;
+        k--;
+    }
+    return p;
+#endif
+}
+
 static inline fnav_vec3_t fnav_vec3(fnav_real_t x, fnav_real_t y, fnav_real_t z)
 {
     fnav_vec3_t r;
