@@ -110,8 +110,8 @@ static int inv3(const double s[6], double o[3][3])
  * after the prediction. Internal covariance indices of fnav_ukf.h. */
 static void zupt_innovation(const fnav_ukf_t *u, const fnav_real_t gyro[3], double y[3], double S[6])
 {
-    int i, j, k, l, cols[12], nc = 0;
-    double H[3][FNAV_UKF_NMAX], r2 = (double)u->cfg.zupt_sigma_mps * (double)u->cfg.zupt_sigma_mps, P[12][12];
+    int i, j, k, l, cols[9], nc = 0;
+    double H[3][FNAV_UKF_NMAX], r2 = (double)u->cfg.zupt_sigma_mps * (double)u->cfg.zupt_sigma_mps, P[9][9];
     memset(H, 0, sizeof H);
     for (i = 0; i < 3; i++) {
         H[i][FNAV_UKF_V + i] = 1.0;
@@ -135,26 +135,23 @@ static void zupt_innovation(const fnav_ukf_t *u, const fnav_real_t gyro[3], doub
             uu[i] = C[i][0] * wr[0] + C[i][1] * wr[1] + C[i][2] * wr[2];
             y[i] = uu[i] - (double)u->vel_mps.v[i];
         }
-        /* dh/dr = -C [w x], dh/da = [u x], dh/dbg = -C [r x] */
+        /* dh/dr = -C [w x], dh/da = [u x] (the UKF leaves out the gyro
+         * bias's term, fnav_ukf_zupt) */
         for (i = 0; i < 3; i++) {
             double sw[3][3] = { { 0.0, -w[2], w[1] }, { w[2], 0.0, -w[0] }, { -w[1], w[0], 0.0 } };
-            double sr[3][3] = { { 0.0, -r[2], r[1] }, { r[2], 0.0, -r[0] }, { -r[1], r[0], 0.0 } };
             double su[3][3] = { { 0.0, -uu[2], uu[1] }, { uu[2], 0.0, -uu[0] }, { -uu[1], uu[0], 0.0 } };
             for (j = 0; j < 3; j++) {
-                double hr = 0.0, hb = 0.0;
+                double hr = 0.0;
                 for (k = 0; k < 3; k++) {
                     hr += C[i][k] * sw[k][j];
-                    hb += C[i][k] * sr[k][j];
                 }
                 H[i][FNAV_UKF_R + j] = -hr;
                 H[i][FNAV_UKF_A + j] = su[i][j];
-                H[i][FNAV_UKF_BG + j] = -hb;
             }
         }
         for (j = 0; j < 3; j++) {
             cols[nc++] = FNAV_UKF_R + j;
             cols[nc++] = FNAV_UKF_A + j;
-            cols[nc++] = FNAV_UKF_BG + j;
         }
     }
     for (k = 0; k < nc; k++) {
