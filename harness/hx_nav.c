@@ -80,6 +80,9 @@ static const param_t k_params[] = {
     { "lever", P_INT, 1.0, "estimate the rolling-foot lever 0/1 (ZUPT of the pivot)" },
     { "lever_sd", P_REAL, 1.0, "initial lever sd, m" },
     { "lever_rw", P_REAL, 1.0, "lever random walk, m/sqrt(s)" },
+    { "settle", P_INT, 1.0, "landing settling state 0/1 (coloured ZUPT error at each stance onset)" },
+    { "settle_sd", P_REAL, 1.0, "settling sd at the stance onset, m/s" },
+    { "settle_tau", P_REAL, 1.0, "settling time constant, s" },
     { "zaru", P_INT, 1.0, "zero-angular-rate updates 0/1" },
     { "zaru_sigma_dps", P_REAL, 3.14159265358979323846 / 180.0, "ZARU noise, deg/s" },
     { "tilt_sd_deg", P_REAL, 3.14159265358979323846 / 180.0, "initial roll/pitch sd, deg" },
@@ -118,6 +121,9 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     if (strcmp(key, "lever") == 0) return &c->lever;
     if (strcmp(key, "lever_sd") == 0) return &c->lever_sd_m;
     if (strcmp(key, "lever_rw") == 0) return &c->lever_rw_m_rts;
+    if (strcmp(key, "settle") == 0) return &c->settle;
+    if (strcmp(key, "settle_sd") == 0) return &c->settle_sd_mps;
+    if (strcmp(key, "settle_tau") == 0) return &c->settle_tau_s;
     if (strcmp(key, "zaru") == 0) return &c->zaru;
     if (strcmp(key, "zaru_sigma_dps") == 0) return &c->zaru_sigma_rps;
     if (strcmp(key, "tilt_sd_deg") == 0) return &c->tilt_sd_rad;

@@ -1453,6 +1453,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
     if (hx_nav_config(&no, &nv->cfg, err, err_size) != 0) {
         return -1;
     }
+    nv->cfg.settle = 0; /* nor the landing settling state, added after the validation */
     rw.n = (long)log->n;
     rw.t_ns = log->t_ns;
     rw.acc = log->acc;
@@ -2226,8 +2227,10 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
     fnav_imuerr_config_t clean;
     int rc = -1;
     E = sgv_effects(&n);
-    /* the filter as in sg_nav_diagnose: bias model off, NavChip noise */
+    /* the filter as in sg_nav_diagnose: bias model off, NavChip noise, no
+     * settling state */
     nc.bias_model = FNAV_BIAS_OFF;
+    nc.settle = 0;
     if (fnav_profile_builtin(&nc.profile, FNAV_PROFILE_NAVCHIP) != FNAV_OK) {
         return -1;
     }

@@ -21,6 +21,9 @@ const fnav_nav_config_t fnav_nav_config_default = {
     1,                  /* lever */
     FNAV_R(0.1),        /* lever_sd_m */
     FNAV_R(0.002),      /* lever_rw_m_rts */
+    1,                  /* settle: docs/navigation.md, "The landing" */
+    FNAV_R(0.025),      /* settle_sd_mps */
+    FNAV_R(0.03),       /* settle_tau_s */
     0,                  /* zaru */
     FNAV_R(0.01),       /* zaru_sigma_rps */
     FNAV_R(0.5) * D2R,  /* tilt_sd_rad */
@@ -59,6 +62,9 @@ static void ukf_config_from(const fnav_nav_config_t *c, fnav_ukf_config_t *u)
     u->lever = c->lever;
     u->lever_sd_m = c->lever_sd_m;
     u->lever_rw_m_rts = c->lever_rw_m_rts;
+    u->settle = c->settle;
+    u->settle_sd_mps = c->settle_sd_mps;
+    u->settle_tau_s = c->settle_tau_s;
 }
 
 fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
@@ -299,6 +305,14 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
     if (o->segment_stance) {
         flags |= FNAV_FRAME_SEG_STANCE;
     }
+    /* a stance begins: the landing's settling state starts with its first
+     * ZUPT (which a duplicated sample may postpone) */
+    if (o->stance && !nav->prev_stance) {
+        nav->settle_pending = 1;
+    } else if (!o->stance) {
+        nav->settle_pending = 0;
+    }
+    nav->prev_stance = o->stance;
     if (o->events & FNAV_STANCE_EV_STRIDE) {
         flags |= FNAV_FRAME_STRIDE;
         nav->stats.strides++;
@@ -349,6 +363,11 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
             return;
         }
         if (o->stance) {
+            if (nav->settle_pending) {
+                st = fnav_ukf_settle_start(&nav->ukf);
+                (void)st; /* started: cannot fail */
+                nav->settle_pending = 0;
+            }
             if (fnav_ukf_zupt(&nav->ukf, fnav_vec3_from(s->gyro_rps)) == FNAV_OK) {
                 flags |= FNAV_FRAME_ZUPT;
             }

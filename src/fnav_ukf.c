@@ -22,7 +22,10 @@ const fnav_ukf_config_t fnav_ukf_config_default = {
     1,
     0,
     FNAV_R(0.1),
-    FNAV_R(0.002)
+    FNAV_R(0.002),
+    0,
+    FNAV_R(0.025),
+    FNAV_R(0.03)
 };
 
 static int finite_nonneg(fnav_real_t x)
@@ -94,7 +97,9 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
         !finite_pos(cfg->zupt_sigma_mps) || !finite_pos(cfg->zaru_sigma_rps) ||
         !finite_pos(cfg->strapdown.gravity_mps2) || (cfg->lever != 0 && cfg->lever != 1) ||
         (cfg->strapdown.sample_type != FNAV_SAMPLE_INSTANT && cfg->strapdown.sample_type != FNAV_SAMPLE_MEAN) ||
-        (cfg->lever && (!finite_pos(cfg->lever_sd_m) || !finite_nonneg(cfg->lever_rw_m_rts)))) {
+        (cfg->lever && (!finite_pos(cfg->lever_sd_m) || !finite_nonneg(cfg->lever_rw_m_rts))) ||
+        (cfg->settle != 0 && cfg->settle != 1) ||
+        (cfg->settle && (!finite_pos(cfg->settle_sd_mps) || !finite_pos(cfg->settle_tau_s)))) {
         return FNAV_E_CONFIG;
     }
     n = 9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0);
@@ -177,6 +182,9 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     f->bg0_rps = bg_rps;
     f->ba0_mps2 = ba_mps2;
     f->lever_m = fnav_vec3_zero();
+    f->settle_on = 0;
+    f->settle_mps = FNAV_R(0.0);
+    f->settle_var = FNAV_R(0.0);
     f->hist.valid = 0;
     f->hist.have_sample = 0;
     for (i = 0; i < N; i++) {
@@ -198,6 +206,35 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     }
     f->started = 1;
     return FNAV_OK;
+}
+
+fnav_status_t fnav_ukf_settle_start(fnav_ukf_t *f)
+{
+    int i;
+    if (f == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!f->started) {
+        return FNAV_E_STATE;
+    }
+    if (f->cfg.settle) {
+        for (i = 0; i < f->n_act; i++) {
+            f->Pxs[i] = FNAV_R(0.0);
+        }
+        f->settle_mps = FNAV_R(0.0);
+        f->settle_var = f->cfg.settle_sd_mps * f->cfg.settle_sd_mps;
+        f->settle_on = 1;
+    }
+    return FNAV_OK;
+}
+
+/* Drop the settling state: marginalising it leaves the other states'
+ * mean and covariance as they are. */
+static void settle_drop(fnav_ukf_t *f)
+{
+    f->settle_on = 0;
+    f->settle_mps = FNAV_R(0.0);
+    f->settle_var = FNAV_R(0.0);
 }
 
 /* Upper-triangular Cholesky factor A = U U^T of the leading n x n block
@@ -306,6 +343,9 @@ static int factor(fnav_ukf_t *f)
         }
     }
     f->health.chol_reset++;
+    for (i = 0; i < n; i++) {
+        f->Pxs[i] = FNAV_R(0.0); /* the settling's cross-covariances too */
+    }
     for (i = 0; i < n; i++) {
         for (j = 0; j < n; j++) {
             f->U[i][j] = (i == j) ? fnav_sqrt(f->P[i][i]) : FNAV_R(0.0);
@@ -447,6 +487,7 @@ static void guard_cov(fnav_ukf_t *f)
                 f->P[j][i] = FNAV_R(0.0);
             }
             f->P[i][i] = mx * mx;
+            f->Pxs[i] = FNAV_R(0.0);
         } else {
             fnav_real_t k = mx / fnav_sqrt(v);
             for (j = 0; j < n; j++) {
@@ -454,6 +495,7 @@ static void guard_cov(fnav_ukf_t *f)
                 f->P[j][i] = f->P[i][j];
             }
             f->P[i][i] = mx * mx;
+            f->Pxs[i] *= k;
         }
         f->health.cov_guard++;
     }
@@ -541,6 +583,97 @@ static FNAV_NOINLINE void scatter_lin(fnav_real_t S[N][N], fnav_real_t U[N][N], 
     }
 }
 
+/* The strapdown's first-order maps of the bias errors over one interval
+ * (predict_linear), transposed (G[j][i] = row i, column j): G[0..2] G_a,
+ * G[3..5] G_g, G[6..8] A_g. C = C_nb at the start of the interval; with c^T
+ * the row i of C, row i of C [x x] is (c x x)^T and row i of C [x x]^2 is
+ * ((c x x) x x)^T. */
+static void bias_maps(const fnav_ukf_t *f, const fnav_strapdown_incr_t *inc, fnav_real_t dt_s, fnav_real_t (*G)[3])
+{
+    const fnav_real_t *th = inc->theta_rad.v, *dv = inc->dv_mps.v, hd = FNAV_R(0.5) * dt_s;
+    fnav_real_t ph[3];
+    int i, j;
+    fnav_mat3_t C = fnav_quat_to_dcm(f->q_nb);
+    for (i = 0; i < 3; i++) {
+        ph[i] = inc->theta_rad.v[i] + inc->coning.v[i];
+    }
+    for (i = 0; i < 3; i++) {
+        const fnav_real_t *c = C.m[i];
+        G[0][i] = -dt_s * (c[0] + FNAV_R(0.5) * (c[1] * th[2] - c[2] * th[1]));
+        G[1][i] = -dt_s * (c[1] + FNAV_R(0.5) * (c[2] * th[0] - c[0] * th[2]));
+        G[2][i] = -dt_s * (c[2] + FNAV_R(0.5) * (c[0] * th[1] - c[1] * th[0]));
+        G[3][i] = hd * (c[1] * dv[2] - c[2] * dv[1]);
+        G[4][i] = hd * (c[2] * dv[0] - c[0] * dv[2]);
+        G[5][i] = hd * (c[0] * dv[1] - c[1] * dv[0]);
+    }
+    for (i = 0; i < 3; i++) {
+        /* row i of A_g = -dt (c + u / 2 + w / 6)^T, u = c x phi, w = u x phi */
+        const fnav_real_t *c = C.m[i];
+        fnav_real_t u[3], w[3];
+        u[0] = c[1] * ph[2] - c[2] * ph[1];
+        u[1] = c[2] * ph[0] - c[0] * ph[2];
+        u[2] = c[0] * ph[1] - c[1] * ph[0];
+        w[0] = u[1] * ph[2] - u[2] * ph[1];
+        w[1] = u[2] * ph[0] - u[0] * ph[2];
+        w[2] = u[0] * ph[1] - u[1] * ph[0];
+        for (j = 0; j < 3; j++) {
+            G[6 + j][i] = -dt_s * (c[j] + FNAV_R(0.5) * u[j] + w[j] * (FNAV_R(1.0) / FNAV_R(6.0)));
+        }
+    }
+}
+
+/* The settling state's prediction (fnav_ukf.h): Pxs' = c F Pxs, Pss' = c^2
+ * Pss, s' = c s, with F the strapdown's error-state map over the interval
+ * (predict_linear's, to first order in the attitude error a, which rotates
+ * the specific-force increment dvn: d(dv_n) = a x dvn):
+ *   r' = r,  v' = v + a x dvn + G_a b_a + G_g b_g,
+ *   p' = p + dt v + dt/2 (a x dvn + G_a b_a + G_g b_g),
+ *   a' = a + A_g b_g,  b_g' = c_g b_g,  b_a' = c_a b_a.
+ * G: the bias maps (bias_maps), unused without the biases. s is dropped
+ * once Pss has decayed below 1e-4 of its start. */
+static void settle_predict(fnav_ukf_t *f, fnav_vec3_t dvn, const fnav_real_t (*G)[3], fnav_real_t dt_s)
+{
+    fnav_real_t *x = f->Pxs, c, va[3], vb[3] = { FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0) };
+    const fnav_real_t *cb = f->ar1_c, hd = FNAV_R(0.5) * dt_s;
+    const int n = f->n_act, ov = f->pos[FNAV_UKF_V], op = f->pos[FNAV_UKF_P], oa = f->pos[FNAV_UKF_A],
+              obg = f->pos[FNAV_UKF_BG], oba = f->pos[FNAV_UKF_BA];
+    int i, j;
+    if (dt_s != f->settle_dt_s) {
+        f->settle_c = fnav_exp_neg(dt_s / f->cfg.settle_tau_s);
+        f->settle_dt_s = dt_s;
+    }
+    c = f->settle_c;
+    va[0] = x[oa + 1] * dvn.v[2] - x[oa + 2] * dvn.v[1];
+    va[1] = x[oa + 2] * dvn.v[0] - x[oa] * dvn.v[2];
+    va[2] = x[oa] * dvn.v[1] - x[oa + 1] * dvn.v[0];
+    if (obg >= 0) {
+        for (i = 0; i < 3; i++) {
+            fnav_real_t da = FNAV_R(0.0);
+            for (j = 0; j < 3; j++) {
+                vb[i] += G[j][i] * x[oba + j] + G[3 + j][i] * x[obg + j];
+                da += G[6 + j][i] * x[obg + j];
+            }
+            x[oa + i] += da;
+        }
+        for (i = 0; i < 3; i++) {
+            x[obg + i] *= cb[i];
+            x[oba + i] *= cb[3 + i];
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        x[op + i] += dt_s * x[ov + i] + hd * (va[i] + vb[i]);
+        x[ov + i] += va[i] + vb[i];
+    }
+    for (i = 0; i < n; i++) {
+        x[i] *= c;
+    }
+    f->settle_mps *= c;
+    f->settle_var *= c * c;
+    if (f->settle_var < FNAV_R(1.0e-4) * f->cfg.settle_sd_mps * f->cfg.settle_sd_mps) {
+        settle_drop(f);
+    }
+}
+
 /* Closed-form prediction of the sigma-point pairs along the columns j < nl
  * of U (fnav_ukf_predict); adds their scatter to the upper triangle of S.
  * Out of line so that its locals do not add to the deepest stack path
@@ -594,36 +727,7 @@ static FNAV_NOINLINE void predict_linear(fnav_ukf_t *f, const fnav_strapdown_inc
          * c^T the row i of C, row i of C [x x] is (c x x)^T and row i of
          * C [x x]^2 is ((c x x) x x)^T. */
         fnav_real_t (*G)[3] = f->K;
-        const fnav_real_t *th = inc->theta_rad.v, *dv = inc->dv_mps.v;
-        fnav_real_t ph[3];
-        int j;
-        fnav_mat3_t C = fnav_quat_to_dcm(f->q_nb);
-        for (i = 0; i < 3; i++) {
-            ph[i] = inc->theta_rad.v[i] + inc->coning.v[i];
-        }
-        for (i = 0; i < 3; i++) {
-            const fnav_real_t *c = C.m[i];
-            G[0][i] = -dt_s * (c[0] + FNAV_R(0.5) * (c[1] * th[2] - c[2] * th[1]));
-            G[1][i] = -dt_s * (c[1] + FNAV_R(0.5) * (c[2] * th[0] - c[0] * th[2]));
-            G[2][i] = -dt_s * (c[2] + FNAV_R(0.5) * (c[0] * th[1] - c[1] * th[0]));
-            G[3][i] = hd * (c[1] * dv[2] - c[2] * dv[1]);
-            G[4][i] = hd * (c[2] * dv[0] - c[0] * dv[2]);
-            G[5][i] = hd * (c[0] * dv[1] - c[1] * dv[0]);
-        }
-        for (i = 0; i < 3; i++) {
-            /* row i of A_g = -dt (c + u / 2 + w / 6)^T, u = c x phi, w = u x phi */
-            const fnav_real_t *c = C.m[i];
-            fnav_real_t u[3], w[3];
-            u[0] = c[1] * ph[2] - c[2] * ph[1];
-            u[1] = c[2] * ph[0] - c[0] * ph[2];
-            u[2] = c[0] * ph[1] - c[1] * ph[0];
-            w[0] = u[1] * ph[2] - u[2] * ph[1];
-            w[1] = u[2] * ph[0] - u[0] * ph[2];
-            w[2] = u[0] * ph[1] - u[1] * ph[0];
-            for (j = 0; j < 3; j++) {
-                G[6 + j][i] = -dt_s * (c[j] + FNAV_R(0.5) * u[j] + w[j] * (FNAV_R(1.0) / FNAV_R(6.0)));
-            }
-        }
+        bias_maps(f, inc, dt_s, G);
         for (k = oba; k < nl; k++) {
             /* the bias columns: velocity, position and attitude responses,
              * then the AR(1) decay of the biases themselves; an accelerometer
@@ -736,6 +840,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     const fnav_ukf_config_t *c;
     fnav_strapdown_incr_t inc;
     fnav_strapdown_state_t x0, xi;
+    fnav_vec3_t vc;
     fnav_quat_t q0inv;
     fnav_real_t m[N];
     const fnav_real_t *cb, *qb;
@@ -893,12 +998,23 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     }
     /* fold the mean into the nominal state (the bias and lever means are zero
      * by the symmetry of the sigma points) */
+    vc = x0.vel_mps;
     x0.q_nb = apply_att(x0.q_nb, fnav_vec3_from(&m[oa]));
     x0.vel_mps = fnav_vec3_add(x0.vel_mps, fnav_vec3_from(&m[ov]));
     x0.pos_m = fnav_vec3_add(x0.pos_m, fnav_vec3_from(&m[op]));
     if (!state_finite(&x0)) {
         f->health.diverged++;
         return FNAV_E_DIVERGED;
+    }
+    if (f->settle_on) {
+        /* the specific-force velocity increment in n: the centre's change
+         * less gravity's (the mean's second-order shift left out) */
+        fnav_vec3_t dvn = fnav_vec3_sub(vc, f->vel_mps);
+        dvn.v[2] -= c->strapdown.gravity_mps2 * dt_s;
+        if (obg >= 0 && !(c->closed_form && nl > 0)) {
+            bias_maps(f, &inc, dt_s, f->K); /* predict_linear did not run */
+        }
+        settle_predict(f, dvn, (const fnav_real_t(*)[3])f->K, dt_s);
     }
     f->q_nb = x0.q_nb;
     f->vel_mps = x0.vel_mps;
@@ -914,17 +1030,80 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     return fr == 2 ? FNAV_E_DECOMP : FNAV_OK;
 }
 
+/* The settling's part of the augmented P H^T (update(), after P H^T): its
+ * row hp = H Pxs + Pss h_s, and with h_s = -e_z (hs) the packed rows' third
+ * column less Pxs. Out of line, as settle_update: inlined, the extra live
+ * values cost the hot loops of the update registers. */
+static FNAV_NOINLINE void settle_pht(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int *cols, int nc, int hs,
+                                     fnav_real_t hp[3])
+{
+    const fnav_real_t *x = f->Pxs;
+    int i, k, c;
+    for (k = 0; k < 3; k++) {
+        hp[k] = FNAV_R(0.0);
+        if (H == NULL) {
+            hp[k] = x[cols[k]];
+        } else {
+            for (c = 0; c < nc; c++) {
+                hp[k] += H[k][cols[c]] * x[cols[c]];
+            }
+        }
+    }
+    if (hs) {
+        hp[2] -= f->settle_var;
+        for (i = 0; i < f->n_act; i++) {
+            f->PHt[i][2] -= x[i];
+        }
+    }
+}
+
+/* The settling's gain ks = hp S^-1, its correction and, in the expanded
+ * Joseph form of the packed states (update()), its new cross-covariances
+ * Pxs - (P H^T) ks^T + K e and variance Pss + ks (e - hp^T), e = S ks^T -
+ * hp^T; f->K and f->PHt hold the packed rows'. A result that is not finite
+ * or a variance that is not positive drops the settling (the packed
+ * states' own update is checked on its own). */
+static FNAV_NOINLINE void settle_update(fnav_ukf_t *f, const fnav_real_t hp[3], const fnav_real_t (*si)[3],
+                                        const fnav_real_t (*s)[3], fnav_vec3_t y)
+{
+    fnav_real_t ks[3], e[3], ds, pss = f->settle_var, chk;
+    int i, k;
+    for (k = 0; k < 3; k++) {
+        ks[k] = hp[0] * si[0][k] + hp[1] * si[1][k] + hp[2] * si[2][k];
+    }
+    for (k = 0; k < 3; k++) {
+        e[k] = ks[0] * s[0][k] + ks[1] * s[1][k] + ks[2] * s[2][k] - hp[k];
+    }
+    ds = ks[0] * y.v[0] + ks[1] * y.v[1] + ks[2] * y.v[2];
+    pss += ks[0] * (e[0] - hp[0]) + ks[1] * (e[1] - hp[1]) + ks[2] * (e[2] - hp[2]);
+    chk = ds;
+    for (i = 0; i < f->n_act; i++) {
+        fnav_real_t v = f->Pxs[i] + (f->K[i][0] * e[0] + f->K[i][1] * e[1] + f->K[i][2] * e[2]) -
+                        (f->PHt[i][0] * ks[0] + f->PHt[i][1] * ks[1] + f->PHt[i][2] * ks[2]);
+        chk += v;
+        f->Pxs[i] = v;
+    }
+    f->settle_mps += ds;
+    f->settle_var = pss;
+    if (!(pss > FNAV_R(0.0)) || !fnav_isfinite(chk + pss)) {
+        settle_drop(f);
+    }
+}
+
 /* Linear update with a 3-row measurement matrix f->Hm over the packed states
  * (non-zero only in the packed columns cols[0..nc-1]), innovation y and
  * variance r2 per axis, in Joseph form (see below). With nc = 3 and
  * H = NULL the measurement matrix is the selection of the states cols[0..2]
  * (row k one at cols[k]): P H^T is then copied, not multiplied, and f->Hm
- * is not read. */
+ * is not read. While the settling state is active the update is that of
+ * the state augmented with it (fnav_ukf.h), whose measurement row 2 holds
+ * -1 for it when hs = 1 (the ZUPT) and nothing otherwise. */
 static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int *cols, int nc, fnav_vec3_t y,
-                            fnav_real_t r2)
+                            fnav_real_t r2, int hs)
 {
-    int n = f->n_act, i, j, k, c;
+    int n = f->n_act, i, j, k, c, so = f->settle_on;
     fnav_real_t s[3][3], si[3][3], det, dx[N], dxi[N], chk = FNAV_R(0.0);
+    fnav_real_t hp[3];
     fnav_real_t (*K)[3] = f->K;
     fnav_real_t (*PHt)[3] = f->PHt;
     fnav_real_t (*APHt)[3] = f->APHt;
@@ -964,8 +1143,11 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
             PHt[i][2] = s2;
         }
     }
+    if (so) {
+        settle_pht(f, H, cols, nc, hs, hp);
+    }
     /* S = H P H^T + R (with H, over its gathered columns: each sum in the
-     * order of c) */
+     * order of c); with the settling, + h_s (the settling's row of P H^T) */
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) {
             s[i][j] = (i == j) ? r2 : FNAV_R(0.0);
@@ -984,6 +1166,11 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
             }
         }
     }
+    if (so && hs) {
+        for (j = 0; j < 3; j++) {
+            s[2][j] -= hp[j];
+        }
+    }
     s[0][1] = s[1][0] = FNAV_R(0.5) * (s[0][1] + s[1][0]);
     s[0][2] = s[2][0] = FNAV_R(0.5) * (s[0][2] + s[2][0]);
     s[1][2] = s[2][1] = FNAV_R(0.5) * (s[1][2] + s[2][1]);
@@ -997,6 +1184,9 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
     det = s[0][0] * si[0][0] + s[0][1] * si[0][1] + s[0][2] * si[0][2];
     if (!(det > FNAV_R(0.0)) || !fnav_isfinite(det) || !(si[0][0] > FNAV_R(0.0)) || !(si[2][2] > FNAV_R(0.0))) {
         f->health.update_reject++;
+        if (so) {
+            settle_drop(f); /* the next update goes without it */
+        }
         return FNAV_E_DECOMP;
     }
     det = FNAV_R(1.0) / det;
@@ -1053,6 +1243,9 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
     if (!fnav_isfinite(chk)) { /* as in the prediction: one check of the sum */
         f->health.diverged++;
         return FNAV_E_DIVERGED;
+    }
+    if (so) {
+        settle_update(f, hp, (const fnav_real_t(*)[3])si, (const fnav_real_t(*)[3])s, y);
     }
     mirror_upper(f->P, Pn, n);
     guard_cov(f);
@@ -1126,9 +1319,12 @@ fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
             cols[nc++] = oa + j;
         }
     }
+    if (f->settle_on) {
+        y.v[2] += f->settle_mps; /* h = ... - s e_z */
+    }
     /* without the lever, H selects the velocity */
     st = update(f, f->cfg.lever ? (const fnav_real_t(*)[N])f->Hm : NULL, cols, nc, y,
-                f->cfg.zupt_sigma_mps * f->cfg.zupt_sigma_mps);
+                f->cfg.zupt_sigma_mps * f->cfg.zupt_sigma_mps, 1);
     if (st == FNAV_OK) {
         f->health.zupts++;
     }
@@ -1156,7 +1352,7 @@ fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
     for (i = 0; i < 3; i++) {
         cols[i] = ob + i;
     }
-    st = update(f, NULL, cols, 3, fnav_vec3_sub(gyro_rps, f->bg_rps), f->cfg.zaru_sigma_rps * f->cfg.zaru_sigma_rps);
+    st = update(f, NULL, cols, 3, fnav_vec3_sub(gyro_rps, f->bg_rps), f->cfg.zaru_sigma_rps * f->cfg.zaru_sigma_rps, 0);
     if (st == FNAV_OK) {
         f->health.zarus++;
     }

@@ -1,5 +1,6 @@
 /* fnav_nav: configuration, timing (duplicates, gaps, jumps, time going
- * backwards), NaN rejection, the push/pop/step/run contracts, object sizes,
+ * backwards), NaN rejection, the push/pop/step/run contracts, the landing
+ * settling state's start at every stance onset, object sizes,
  * the golden replays of vectors/nav/golden (any change fails), and the
  * float32-versus-float64 agreement on every real walk of the shared data
  * (vectors/nav/double_reference.csv, from gen_double_reference.py). */
@@ -235,6 +236,84 @@ static void test_run_port(void **state)
     assert_memory_equal(fa, fb, sizeof fa);
 }
 
+/* The landing settling state (fnav_ukf.h) starts at the first ZUPT of every
+ * stance. A synthetic walk: still 2 s, then three 0.4 s bursts of motion,
+ * each followed by 0.6 s still, at 200 Hz. A first pass finds the sample the
+ * detector calls the first of the third stance; the second pass gives it
+ * the previous sample's time stamp (dt = 0, a duplicate: that frame has no
+ * ZUPT, and the start waits for the next one).
+ * A start sets the settling variance back to settle_sd^2, so each shows as
+ * a rise of it: one per stance. */
+static fnav_sample_t settle_walk(long k)
+{
+    fnav_sample_t s = still(k);
+    long ph = k - 400;
+    if (ph >= 0 && ph % 200 < 80) {
+        s.gyro_rps[1] = FNAV_R(2.0);
+        s.accel_mps2[0] = FNAV_R(1.0);
+    }
+    return s;
+}
+
+static void test_settle_onsets(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    const long n = 400 + 3 * 200;
+    long k, third = -1;
+    int pass;
+    (void)state;
+    c.stance.rate_hz = FNAV_R(200.0);
+    assert_int_equal(c.settle, 1);
+    for (pass = 0; pass < 2; pass++) {
+        int prev_stance = 1, onsets = 0, starts = 0, first_zupts = 0, dup_frames = 0;
+        fnav_real_t prev_var = FNAV_R(0.0);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+        for (k = 0; k < n; k++) {
+            fnav_sample_t s = settle_walk(k);
+            if (pass == 1 && k == third) {
+                s.t_ns = settle_walk(k - 1).t_ns; /* the previous stamp again: dt = 0 */
+            }
+            assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+            while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+                int stance = (fr.flags & FNAV_FRAME_STANCE) != 0u;
+                if ((fr.flags & FNAV_FRAME_ALIGNED) != 0u) {
+                    if (stance && !prev_stance) {
+                        onsets++;
+                        if (onsets == 3 && pass == 0) {
+                            third = (long)fr.seq;
+                        }
+                        if (pass == 1 && (long)fr.seq == third) {
+                            /* the onset's first frame: no ZUPT yet, pending */
+                            assert_true((fr.flags & FNAV_FRAME_ZUPT) == 0u);
+                            assert_true(nav.settle_pending);
+                            assert_false(nav.ukf.settle_on);
+                            dup_frames++;
+                        }
+                    }
+                    if (nav.ukf.settle_var > prev_var) {
+                        /* a start: at a stance's first ZUPT */
+                        starts++;
+                        assert_true(stance && (fr.flags & FNAV_FRAME_ZUPT) != 0u);
+                        assert_true(nav.ukf.settle_on);
+                        assert_false(nav.settle_pending);
+                        first_zupts++;
+                    }
+                }
+                prev_stance = stance;
+                prev_var = nav.ukf.settle_var;
+            }
+        }
+        assert_int_equal(onsets, 3);
+        assert_int_equal(starts, 3);
+        assert_int_equal(first_zupts, 3);
+        assert_true(third > 400);
+        assert_int_equal(dup_frames, pass == 1 ? 1 : 0);
+        assert_int_equal(nav.stats.duplicates, pass == 1 ? 1u : 0u);
+    }
+}
+
 /* Memory: the filter object within 8 KB in float32 (the limit). */
 static void test_sizes(void **state)
 {
@@ -465,6 +544,7 @@ int main(void)
         cmocka_unit_test(test_timing),
         cmocka_unit_test(test_step),
         cmocka_unit_test(test_run_port),
+        cmocka_unit_test(test_settle_onsets),
         cmocka_unit_test(test_sizes),
         cmocka_unit_test(test_resampler),
         cmocka_unit_test(test_golden_replays),

@@ -2,6 +2,9 @@
  * versus full sigma-point propagation, linear covariance propagation against
  * the exact discrete recursion, the ZUPT update against the textbook Kalman
  * update computed here in double, the lever measurement, NaN rejection,
+ * the landing settling state (its augmented updates against the textbook
+ * update in double, its prediction against a central difference of the
+ * strapdown, its decay and drop),
  * steps undone when their result would not be finite, the covariance
  * recovery, and NEES consistency on simulated walks from a
  * self-contained generator (see sim_walk below). */
@@ -69,6 +72,18 @@ static void test_config(void **state)
     c = fnav_ukf_config_default;
     c.gyro_noise_rps_rthz[2] = (fnav_real_t)NAN;
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    c = fnav_ukf_config_default;
+    c.settle = 2;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    c.settle = 1;
+    c.settle_tau_s = FNAV_R(0.0);
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    c.settle_tau_s = FNAV_R(0.03);
+    c.settle_sd_mps = (fnav_real_t)NAN;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    c.settle_sd_mps = FNAV_R(0.025);
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(f.n_act, 15); /* the settling is not a packed state */
     c = fnav_ukf_config_default;
     c.kappa = FNAV_R(-20.0); /* n + lambda <= 0 */
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
@@ -543,8 +558,11 @@ static void solve3(double A[3][3], const double b[3], double x[3])
 
 typedef struct {
     int bias_ar1;
+    int settle_truth;   /* stances begin with a settling transient (below) */
+    int settle_filter;  /* the filter carries the settling state */
     int runs, steps_per_s, seconds;
     double nees_mean;   /* over runs and check times */
+    double z_nees_mean; /* the vertical position's alone (1 degree of freedom) */
     double band_lo, band_hi;
     int checks, inside;
 } nees_t;
@@ -566,7 +584,8 @@ static void run_nees(nees_t *r)
     const int nsteps = r->seconds * r->steps_per_s;
     const int n_states = r->bias_ar1 ? 15 : 9;
     static double sum_at[64];
-    int run, k, i, ncheck = 0;
+    double z_sum = 0.0;
+    int run, k, i, ncheck = 0, z_n = 0;
     memset(sum_at, 0, sizeof sum_at);
     for (run = 0; run < r->runs; run++) {
         fnav_ukf_config_t c = fnav_ukf_config_default;
@@ -574,7 +593,8 @@ static void run_nees(nees_t *r)
         truth_t T;
         double heading = 0.0;
         fnav_vec3_t vprev = fnav_vec3_zero();
-        int check = 0;
+        int check = 0, prev_stance = 1;
+        double s0 = 0.0, t_on = 0.0;
         c.bias_model = r->bias_ar1 ? FNAV_BIAS_AR1 : FNAV_BIAS_OFF;
         /* the generator solves each sample from the interval-mean update */
         c.strapdown.sample_type = FNAV_SAMPLE_MEAN;
@@ -590,6 +610,7 @@ static void run_nees(nees_t *r)
             sd.accel_bias_mps2[i] = FNAV_R(0.02);
         }
         c.zupt_sigma_mps = (fnav_real_t)zs;
+        c.settle = r->settle_filter;
         assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
         memset(&T, 0, sizeof T);
         T.x.q_nb = fnav_quat_identity();
@@ -624,6 +645,14 @@ static void run_nees(nees_t *r)
                 vn[0] = zs * nrand();
                 vn[1] = zs * nrand();
                 vn[2] = zs * nrand();
+                /* the landing's settling (fnav_ukf.h): a vertical velocity
+                 * s0 exp(-t/tau) from the onset, s0 ~ N(0, sd^2), with the
+                 * filter's default sd and tau */
+                if (!prev_stance) {
+                    s0 = r->settle_truth ? (double)c.settle_sd_mps * nrand() : 0.0;
+                    t_on = t;
+                }
+                vn[2] += s0 * exp(-(t - t_on) / (double)c.settle_tau_s);
                 w_b[0] = w_b[1] = w_b[2] = 0.0;
                 if (ph < dt && k > 1) {
                     heading += 20.0 * 3.14159265358979 / 180.0;
@@ -697,9 +726,13 @@ static void run_nees(nees_t *r)
                     fm.v[i] = (fnav_real_t)(fb[i] + (double)T.ba.v[i] + na / sqrt(dt) * nrand());
                 }
                 assert_int_equal(fnav_ukf_predict(&f, wm, fm, (fnav_real_t)dt), FNAV_OK);
+                if (stance && !prev_stance) {
+                    assert_int_equal(fnav_ukf_settle_start(&f), FNAV_OK);
+                }
                 if (stance) {
                     assert_int_equal(fnav_ukf_zupt(&f, wm), FNAV_OK);
                 }
+                prev_stance = stance;
             }
             /* NEES at the middle of every other stance and swing */
             if (k % (r->steps_per_s / 2) == r->steps_per_s / 5 && check < 64) {
@@ -736,6 +769,8 @@ static void run_nees(nees_t *r)
                     y[a] = s / L[a][a];
                     nees += y[a] * y[a];
                 }
+                z_sum += e[8] * e[8] / (double)fnav_ukf_cov(&f, FNAV_UKF_P + 2, FNAV_UKF_P + 2);
+                z_n++;
                 sum_at[check++] += nees;
             }
         }
@@ -747,6 +782,7 @@ static void run_nees(nees_t *r)
     r->checks = ncheck;
     r->inside = 0;
     r->nees_mean = 0.0;
+    r->z_nees_mean = z_n > 0 ? z_sum / z_n : 0.0;
     for (i = 0; i < ncheck; i++) {
         double m = sum_at[i] / r->runs;
         r->nees_mean += m / ncheck;
@@ -756,13 +792,15 @@ static void run_nees(nees_t *r)
     }
 }
 
-static void check_nees(int ar1)
+static void check_nees(int ar1, int settle, int runs)
 {
     nees_t r;
-    double lo, hi;
+    double lo, hi, zlo, zhi;
     memset(&r, 0, sizeof r);
     r.bias_ar1 = ar1;
-    r.runs = 25;
+    r.settle_truth = settle;
+    r.settle_filter = settle;
+    r.runs = runs;
     r.steps_per_s = 100;
     r.seconds = 20;
     run_nees(&r);
@@ -774,24 +812,435 @@ static void check_nees(int ar1)
      * are correlated, so the count varies more than a binomial). */
     lo = r.band_lo;
     hi = r.band_hi;
-    fprintf(stderr, "NEES (%s, %d runs): time-averaged %.2f, 95 %% band %.2f..%.2f; %d of %d check times inside\n",
-            ar1 ? "15 states" : "9 states", r.runs, r.nees_mean, lo, hi, r.inside, r.checks);
+    fprintf(stderr, "NEES (%s%s, %d runs): time-averaged %.2f, 95 %% band %.2f..%.2f; %d of %d check times inside; "
+                    "vertical position alone %.2f\n",
+            ar1 ? "15 states" : "9 states", settle ? ", landing settling" : "", r.runs, r.nees_mean, lo, hi, r.inside,
+            r.checks, r.z_nees_mean);
     assert_true(r.nees_mean >= lo && r.nees_mean <= hi);
     assert_true(r.inside >= (int)(0.85 * r.checks));
+    /* the vertical position alone (1 degree of freedom): its run-average at
+     * a check time is chi2(R) / R, and so is the band its time average is
+     * held to */
+    zlo = chi2_q((double)r.runs, -1.959964) / r.runs;
+    zhi = chi2_q((double)r.runs, 1.959964) / r.runs;
+    assert_true(r.z_nees_mean >= zlo && r.z_nees_mean <= zhi);
 }
 
 static void test_nees_bias_off(void **state)
 {
     (void)state;
     g_rng = 0x1234567890ABCDEFull;
-    check_nees(0);
+    check_nees(0, 0, 25);
 }
 
 static void test_nees_ar1(void **state)
 {
     (void)state;
     g_rng = 0x0FEDCBA987654321ull;
-    check_nees(1);
+    check_nees(1, 0, 25);
+}
+
+/* Stances that begin with a settling transient drawn from the model (50
+ * runs): the filter with the settling state stays consistent, over the 15
+ * states and on the vertical position alone. The same walks without the
+ * state are not: the transient, taken for an INS error, moves the height
+ * by about half a swing times it at every landing, and the vertical
+ * position's NEES leaves its band above (the 15-state NEES, with 14 other
+ * degrees of freedom, does not show it). */
+static void test_nees_settle(void **state)
+{
+    nees_t r;
+    (void)state;
+    g_rng = 0x2545F4914F6CDD1Dull;
+    check_nees(1, 1, 50);
+    memset(&r, 0, sizeof r);
+    r.bias_ar1 = 1;
+    r.settle_truth = 1;
+    r.settle_filter = 0;
+    r.runs = 50;
+    r.steps_per_s = 100;
+    r.seconds = 20;
+    g_rng = 0x2545F4914F6CDD1Dull;
+    run_nees(&r);
+    fprintf(stderr, "NEES (15 states, landing settling in the data, not in the filter): vertical position alone %.2f, "
+                    "band %.2f..%.2f\n",
+            r.z_nees_mean, chi2_q(50.0, -1.959964) / 50.0, chi2_q(50.0, 1.959964) / 50.0);
+    assert_true(r.z_nees_mean > chi2_q(50.0, 1.959964) / 50.0);
+}
+
+/* ---- the landing settling state (fnav_ukf.h) ---- */
+
+/* A filter with the lever, the AR(1) biases and the settling, moved about
+ * so that its covariance has correlations, the settling started, and a few
+ * predictions and ZUPTs so that it is correlated with the other states. */
+static void settle_setup(fnav_ukf_t *f, int settle_cycles)
+{
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    int k;
+    c.lever = 1;
+    c.settle = 1;
+    assert_int_equal(fnav_ukf_init(f, &c), FNAV_OK);
+    assert_int_equal(f->n_act, 18);
+    assert_int_equal(fnav_ukf_start(f, fnav_quat_from_euler(FNAV_R(0.1), FNAV_R(0.2), FNAV_R(0.3)), fnav_vec3_zero(),
+                                    fnav_vec3_zero(), &sd),
+                     FNAV_OK);
+    f->lever_m = fnav_vec3(FNAV_R(0.02), FNAV_R(0.05), FNAV_R(-0.03));
+    for (k = 0; k < 50; k++) {
+        assert_int_equal(fnav_ukf_predict(f, fnav_vec3(FNAV_R(0.5), FNAV_R(-1.0), FNAV_R(0.2)),
+                                          fnav_vec3(FNAV_R(2.0), FNAV_R(-1.0), FNAV_R(-8.0)), FNAV_R(0.004)),
+                         FNAV_OK);
+    }
+    assert_int_equal(fnav_ukf_settle_start(f), FNAV_OK);
+    assert_true(f->settle_on);
+    FNAV_ASSERT_CLOSE(f->settle_var, 0.025 * 0.025, 0.0, EPS);
+    for (k = 0; k < settle_cycles; k++) {
+        assert_int_equal(fnav_ukf_predict(f, fnav_vec3(FNAV_R(0.3), FNAV_R(-0.4), FNAV_R(0.1)),
+                                          fnav_vec3(FNAV_R(0.5), FNAV_R(0.3), FNAV_R(-9.5)), FNAV_R(0.004)),
+                         FNAV_OK);
+        assert_int_equal(fnav_ukf_zupt(f, fnav_vec3(FNAV_R(0.3), FNAV_R(-0.4), FNAV_R(0.1))), FNAV_OK);
+    }
+    assert_true(f->settle_on);
+}
+
+/* The augmented covariance over the internal indices 0..NM-1 and the
+ * settling at NM, in double. */
+static void settle_paug(const fnav_ukf_t *f, double P[NM + 1][NM + 1])
+{
+    int i, j;
+    for (i = 0; i <= NM; i++) {
+        for (j = 0; j <= NM; j++) {
+            if (i < NM && j < NM) {
+                P[i][j] = (double)fnav_ukf_cov(f, i, j);
+            } else if (i < NM) {
+                P[i][j] = f->pos[i] >= 0 ? (double)f->Pxs[f->pos[i]] : 0.0;
+            } else if (j < NM) {
+                P[i][j] = f->pos[j] >= 0 ? (double)f->Pxs[f->pos[j]] : 0.0;
+            } else {
+                P[i][j] = (double)f->settle_var;
+            }
+        }
+    }
+}
+
+static void inv3d(double S[3][3], double Si[3][3])
+{
+    double det = S[0][0] * (S[1][1] * S[2][2] - S[1][2] * S[2][1]) - S[0][1] * (S[1][0] * S[2][2] - S[1][2] * S[2][0]) +
+                 S[0][2] * (S[1][0] * S[2][1] - S[1][1] * S[2][0]);
+    Si[0][0] = (S[1][1] * S[2][2] - S[1][2] * S[2][1]) / det;
+    Si[0][1] = (S[0][2] * S[2][1] - S[0][1] * S[2][2]) / det;
+    Si[0][2] = (S[0][1] * S[1][2] - S[0][2] * S[1][1]) / det;
+    Si[1][0] = (S[1][2] * S[2][0] - S[1][0] * S[2][2]) / det;
+    Si[1][1] = (S[0][0] * S[2][2] - S[0][2] * S[2][0]) / det;
+    Si[1][2] = (S[0][2] * S[1][0] - S[0][0] * S[1][2]) / det;
+    Si[2][0] = (S[1][0] * S[2][1] - S[1][1] * S[2][0]) / det;
+    Si[2][1] = (S[0][1] * S[2][0] - S[0][0] * S[2][1]) / det;
+    Si[2][2] = (S[0][0] * S[1][1] - S[0][1] * S[1][0]) / det;
+}
+
+/* Textbook Kalman update of the augmented state in double: P' = P - K H P,
+ * dx = K y, K = P H^T (H P H^T + r2 I)^-1. */
+static void textbook_aug(double P[NM + 1][NM + 1], double H[3][NM + 1], const double y[3], double r2,
+                         double Pn[NM + 1][NM + 1], double dx[NM + 1])
+{
+    static double PHt[NM + 1][3], K[NM + 1][3];
+    double S[3][3], Si[3][3];
+    int i, j, k, l;
+    for (i = 0; i <= NM; i++) {
+        for (k = 0; k < 3; k++) {
+            PHt[i][k] = 0.0;
+            for (j = 0; j <= NM; j++) {
+                PHt[i][k] += P[i][j] * H[k][j];
+            }
+        }
+    }
+    for (k = 0; k < 3; k++) {
+        for (l = 0; l < 3; l++) {
+            S[k][l] = k == l ? r2 : 0.0;
+            for (j = 0; j <= NM; j++) {
+                S[k][l] += H[k][j] * PHt[j][l];
+            }
+        }
+    }
+    inv3d(S, Si);
+    for (i = 0; i <= NM; i++) {
+        dx[i] = 0.0;
+        for (k = 0; k < 3; k++) {
+            K[i][k] = PHt[i][0] * Si[0][k] + PHt[i][1] * Si[1][k] + PHt[i][2] * Si[2][k];
+            dx[i] += K[i][k] * y[k];
+        }
+    }
+    for (i = 0; i <= NM; i++) {
+        for (j = 0; j <= NM; j++) {
+            Pn[i][j] = P[i][j] - (K[i][0] * PHt[j][0] + K[i][1] * PHt[j][1] + K[i][2] * PHt[j][2]);
+        }
+    }
+}
+
+static void check_aug(const fnav_ukf_t *f, double Pn[NM + 1][NM + 1], double tol)
+{
+    static double Pf[NM + 1][NM + 1];
+    int i, j;
+    settle_paug(f, Pf);
+    for (i = 0; i <= NM; i++) {
+        for (j = 0; j <= NM; j++) {
+            double scale = sqrt(fabs(Pn[i][i] * Pn[j][j])) + 1e-30;
+            FNAV_ASSERT_CLOSE(Pf[i][j] / scale, Pn[i][j] / scale, tol, 0.0);
+        }
+    }
+}
+
+/* The ZUPT with the lever and the settling = the textbook update of the
+ * augmented state, its measurement h = v - C (w x r) - s e_z (the lever's
+ * Jacobians as documented: -C [w x] and [u x]) built here. */
+static void test_settle_zupt(void **state)
+{
+    static fnav_ukf_t f;
+    static double P[NM + 1][NM + 1], Pn[NM + 1][NM + 1];
+    double H[3][NM + 1], y[3], dx[NM + 1], C[3][3], w[3], r[3], wr[3], u[3], v0[3], p0[3], s0;
+    const fnav_vec3_t gyro = fnav_vec3(FNAV_R(0.35), FNAV_R(-0.2), FNAV_R(0.05));
+    int i, j;
+    (void)state;
+    settle_setup(&f, 3);
+    assert_int_equal(fnav_ukf_predict(&f, gyro, fnav_vec3(FNAV_R(0.5), FNAV_R(0.3), FNAV_R(-9.5)), FNAV_R(0.004)),
+                     FNAV_OK);
+    settle_paug(&f, P);
+    {
+        double pxs = 0.0;
+        for (i = 0; i < f.n_act; i++) {
+            pxs += fabs((double)f.Pxs[i]);
+        }
+        assert_true(pxs > 1e-9); /* correlated: the test exercises the cross terms */
+    }
+    {
+        fnav_mat3_t Cm = fnav_quat_to_dcm(f.q_nb);
+        for (i = 0; i < 3; i++) {
+            w[i] = (double)gyro.v[i] - (double)f.bg_rps.v[i];
+            r[i] = (double)f.lever_m.v[i];
+            v0[i] = (double)f.vel_mps.v[i];
+            p0[i] = (double)f.pos_m.v[i];
+            for (j = 0; j < 3; j++) {
+                C[i][j] = (double)Cm.m[i][j];
+            }
+        }
+    }
+    s0 = (double)f.settle_mps;
+    wr[0] = w[1] * r[2] - w[2] * r[1];
+    wr[1] = w[2] * r[0] - w[0] * r[2];
+    wr[2] = w[0] * r[1] - w[1] * r[0];
+    memset(H, 0, sizeof H);
+    for (i = 0; i < 3; i++) {
+        double sw[3][3] = { { 0.0, -w[2], w[1] }, { w[2], 0.0, -w[0] }, { -w[1], w[0], 0.0 } };
+        u[i] = C[i][0] * wr[0] + C[i][1] * wr[1] + C[i][2] * wr[2];
+        H[i][FNAV_UKF_V + i] = 1.0;
+        for (j = 0; j < 3; j++) {
+            H[i][FNAV_UKF_R + j] = -(C[i][0] * sw[0][j] + C[i][1] * sw[1][j] + C[i][2] * sw[2][j]);
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        double su[3][3] = { { 0.0, -u[2], u[1] }, { u[2], 0.0, -u[0] }, { -u[1], u[0], 0.0 } };
+        for (j = 0; j < 3; j++) {
+            H[i][FNAV_UKF_A + j] = su[i][j];
+        }
+        y[i] = u[i] - v0[i] + (i == 2 ? s0 : 0.0);
+    }
+    H[2][NM] = -1.0;
+    textbook_aug(P, H, y, 0.01 * 0.01, Pn, dx);
+    assert_int_equal(fnav_ukf_zupt(&f, gyro), FNAV_OK);
+    assert_true(f.settle_on);
+    check_aug(&f, Pn, 1e3 * EPS);
+    for (i = 0; i < 3; i++) {
+        FNAV_ASSERT_CLOSE(f.vel_mps.v[i], v0[i] + dx[FNAV_UKF_V + i], 1e3 * EPS * 0.01, 0.0);
+        FNAV_ASSERT_CLOSE(f.pos_m.v[i], p0[i] + dx[FNAV_UKF_P + i], 1e3 * EPS * (fabs(p0[i]) + 1e-3), 0.0);
+    }
+    FNAV_ASSERT_CLOSE(f.settle_mps, s0 + dx[NM], 1e3 * EPS * 0.01, 0.0);
+    /* the settling took part of the innovation: it moved */
+    assert_true(fabs(dx[NM]) > 1e-6);
+}
+
+/* The ZARU with the settling active: the textbook update of the augmented
+ * state with a measurement that does not involve the settling (which is
+ * still corrected through its correlations). */
+static void test_settle_zaru(void **state)
+{
+    static fnav_ukf_t f;
+    static double P[NM + 1][NM + 1], Pn[NM + 1][NM + 1];
+    double H[3][NM + 1], y[3], dx[NM + 1], s0, r2;
+    const fnav_vec3_t gyro = fnav_vec3(FNAV_R(0.01), FNAV_R(-0.02), FNAV_R(0.005));
+    int i;
+    (void)state;
+    settle_setup(&f, 3);
+    settle_paug(&f, P);
+    memset(H, 0, sizeof H);
+    for (i = 0; i < 3; i++) {
+        H[i][FNAV_UKF_BG + i] = 1.0;
+        y[i] = (double)gyro.v[i] - (double)f.bg_rps.v[i];
+    }
+    s0 = (double)f.settle_mps;
+    r2 = (double)f.cfg.zaru_sigma_rps * (double)f.cfg.zaru_sigma_rps;
+    textbook_aug(P, H, y, r2, Pn, dx);
+    assert_int_equal(fnav_ukf_zaru(&f, gyro), FNAV_OK);
+    check_aug(&f, Pn, 1e3 * EPS);
+    FNAV_ASSERT_CLOSE(f.settle_mps, s0 + dx[NM], 1e3 * EPS * 0.01, 0.0);
+}
+
+/* The prediction of the settling's cross-covariance, Pxs' = c F Pxs, against
+ * F Pxs as the central difference of the strapdown along Pxs (double here),
+ * and Pss' = c^2 Pss, s' = c s with c = exp(-dt/tau). */
+static void test_settle_predict(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_strapdown_incr_t inc;
+    fnav_strapdown_state_t x0, xp, xm;
+    const fnav_vec3_t gyro = fnav_vec3(FNAV_R(2.5), FNAV_R(-1.0), FNAV_R(0.7));
+    const fnav_vec3_t acc = fnav_vec3(FNAV_R(25.0), FNAV_R(-14.0), FNAV_R(-30.0));
+    const fnav_real_t dt = FNAV_R(0.004);
+    double d[NM], dn = 0.0, fd[NM], c, s0, v0;
+    int i, sgn;
+#if FNAV_USE_DOUBLE
+    const double h = 1e-5, tol = 1e-6;
+#else
+    const double h = 3e-3, tol = 2e-3;
+#endif
+    (void)state;
+    settle_setup(&f, 3);
+    /* the prediction is linear in Pxs: a designed vector with every
+     * component of a size that makes each term of F visible */
+    for (i = 0; i < NM; i++) {
+        d[i] = f.pos[i] >= 0 ? 1e-3 * (1.0 + 0.1 * i) * (i % 2 ? -1.0 : 1.0) : 0.0;
+        if (f.pos[i] >= 0) {
+            f.Pxs[f.pos[i]] = (fnav_real_t)d[i];
+            d[i] = (double)f.Pxs[f.pos[i]];
+        }
+        dn += d[i] * d[i];
+    }
+    dn = sqrt(dn);
+    assert_true(dn > 0.0);
+    fnav_strapdown_increments(&f.cfg.strapdown, &f.hist, fnav_vec3_sub(gyro, f.bg_rps), fnav_vec3_sub(acc, f.ba_mps2),
+                              dt, &inc);
+    x0.q_nb = f.q_nb;
+    x0.vel_mps = f.vel_mps;
+    x0.pos_m = f.pos_m;
+    fnav_strapdown_propagate(&f.cfg.strapdown, &x0, &inc, fnav_vec3_zero(), fnav_vec3_zero());
+    for (sgn = -1; sgn <= 1; sgn += 2) {
+        fnav_strapdown_state_t *x = sgn > 0 ? &xp : &xm;
+        const double e = sgn * h / dn;
+        fnav_vec3_t da = fnav_vec3((fnav_real_t)(e * d[FNAV_UKF_A]), (fnav_real_t)(e * d[FNAV_UKF_A + 1]),
+                                   (fnav_real_t)(e * d[FNAV_UKF_A + 2]));
+        x->q_nb = fnav_quat_normalize(fnav_quat_mul(fnav_ukf_grp_to_quat(da), f.q_nb));
+        for (i = 0; i < 3; i++) {
+            x->vel_mps.v[i] = f.vel_mps.v[i] + (fnav_real_t)(e * d[FNAV_UKF_V + i]);
+            x->pos_m.v[i] = f.pos_m.v[i] + (fnav_real_t)(e * d[FNAV_UKF_P + i]);
+        }
+        {
+            const double edt = -e * (double)dt;
+            fnav_strapdown_propagate(&f.cfg.strapdown, x, &inc,
+                                     fnav_vec3((fnav_real_t)(edt * d[FNAV_UKF_BG]), (fnav_real_t)(edt * d[FNAV_UKF_BG + 1]),
+                                               (fnav_real_t)(edt * d[FNAV_UKF_BG + 2])),
+                                     fnav_vec3((fnav_real_t)(edt * d[FNAV_UKF_BA]), (fnav_real_t)(edt * d[FNAV_UKF_BA + 1]),
+                                               (fnav_real_t)(edt * d[FNAV_UKF_BA + 2])));
+        }
+    }
+    {
+        fnav_vec3_t ap = fnav_ukf_quat_to_grp(fnav_quat_mul(xp.q_nb, fnav_quat_conj(x0.q_nb)));
+        fnav_vec3_t am = fnav_ukf_quat_to_grp(fnav_quat_mul(xm.q_nb, fnav_quat_conj(x0.q_nb)));
+        for (i = 0; i < 3; i++) {
+            fd[FNAV_UKF_R + i] = d[FNAV_UKF_R + i];
+            fd[FNAV_UKF_V + i] = ((double)xp.vel_mps.v[i] - (double)xm.vel_mps.v[i]) / (2.0 * h) * dn;
+            fd[FNAV_UKF_P + i] = ((double)xp.pos_m.v[i] - (double)xm.pos_m.v[i]) / (2.0 * h) * dn;
+            fd[FNAV_UKF_A + i] = ((double)ap.v[i] - (double)am.v[i]) / (2.0 * h) * dn;
+            fd[FNAV_UKF_BG + i] = d[FNAV_UKF_BG + i] * exp(-(double)dt / (double)f.cfg.gyro_tau_s[i]);
+            fd[FNAV_UKF_BA + i] = d[FNAV_UKF_BA + i] * exp(-(double)dt / (double)f.cfg.accel_tau_s[i]);
+        }
+    }
+    c = exp(-(double)dt / (double)f.cfg.settle_tau_s);
+    s0 = (double)f.settle_mps;
+    v0 = (double)f.settle_var;
+    assert_int_equal(fnav_ukf_predict(&f, gyro, acc, dt), FNAV_OK);
+    for (i = 0; i < NM; i++) {
+        FNAV_ASSERT_CLOSE(f.Pxs[f.pos[i]], c * fd[i], tol * dn, 0.0);
+    }
+    FNAV_ASSERT_CLOSE(f.settle_mps, c * s0, 10.0 * EPS * fabs(s0), 0.0);
+    FNAV_ASSERT_CLOSE(f.settle_var, c * c * v0, 0.0, 10.0 * EPS);
+}
+
+/* Decay and drop: without updates the settling's variance falls as
+ * c^(2k) and the state is dropped once below 1e-4 of its start
+ * (k > ln(1e4) / (2 dt / tau)); the next onset starts it again. A
+ * configuration without the settling ignores fnav_ukf_settle_start. */
+static void test_settle_decay(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const double dt = 0.004;
+    const int kdrop = (int)ceil(log(1e4) / (2.0 * dt / 0.03));
+    int k;
+    (void)state;
+    c.settle = 1;
+    assert_int_equal(fnav_ukf_settle_start(NULL), FNAV_E_ARG);
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_settle_start(&f), FNAV_E_STATE);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    assert_false(f.settle_on);
+    assert_int_equal(fnav_ukf_settle_start(&f), FNAV_OK);
+    for (k = 1; k <= kdrop + 1; k++) {
+        assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g),
+                                          (fnav_real_t)dt),
+                         FNAV_OK);
+        if (k < kdrop - 1) {
+            assert_true(f.settle_on);
+            FNAV_ASSERT_CLOSE(f.settle_var, 0.025 * 0.025 * exp(-2.0 * k * dt / 0.03), 0.0, 1e3 * EPS);
+        }
+    }
+    assert_false(f.settle_on);
+    assert_true(f.settle_var == FNAV_R(0.0));
+    assert_int_equal(fnav_ukf_settle_start(&f), FNAV_OK);
+    assert_true(f.settle_on);
+    c.settle = 0;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    assert_int_equal(fnav_ukf_settle_start(&f), FNAV_OK);
+    assert_false(f.settle_on);
+}
+
+/* A filter configured with the settling but never started behaves bit for
+ * bit like one without it. */
+static void test_settle_idle_identical(void **state)
+{
+    static fnav_ukf_t a, b;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    int k, i, j;
+    (void)state;
+    c.lever = 1;
+    assert_int_equal(fnav_ukf_init(&a, &c), FNAV_OK);
+    c.settle = 1;
+    assert_int_equal(fnav_ukf_init(&b, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&a, fnav_quat_from_euler(FNAV_R(0.1), FNAV_R(0.2), FNAV_R(0.3)), fnav_vec3_zero(),
+                                    fnav_vec3_zero(), &sd),
+                     FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&b, fnav_quat_from_euler(FNAV_R(0.1), FNAV_R(0.2), FNAV_R(0.3)), fnav_vec3_zero(),
+                                    fnav_vec3_zero(), &sd),
+                     FNAV_OK);
+    for (k = 0; k < 40; k++) {
+        fnav_vec3_t w = fnav_vec3(FNAV_R(0.5), FNAV_R(-1.0), FNAV_R(0.2));
+        fnav_vec3_t f3 = fnav_vec3(FNAV_R(2.0), FNAV_R(-1.0), FNAV_R(-8.0));
+        assert_int_equal(fnav_ukf_predict(&a, w, f3, FNAV_R(0.004)), FNAV_OK);
+        assert_int_equal(fnav_ukf_predict(&b, w, f3, FNAV_R(0.004)), FNAV_OK);
+        if (k % 4 == 0) {
+            assert_int_equal(fnav_ukf_zupt(&a, w), FNAV_OK);
+            assert_int_equal(fnav_ukf_zupt(&b, w), FNAV_OK);
+        }
+    }
+    for (i = 0; i < NM; i++) {
+        for (j = 0; j < NM; j++) {
+            assert_true(a.P[i][j] == b.P[i][j]);
+        }
+    }
+    assert_memory_equal(&a.vel_mps, &b.vel_mps, sizeof a.vel_mps);
+    assert_memory_equal(&a.pos_m, &b.pos_m, sizeof a.pos_m);
+    assert_memory_equal(&a.q_nb, &b.q_nb, sizeof a.q_nb);
 }
 
 int main(void)
@@ -809,6 +1258,12 @@ int main(void)
         cmocka_unit_test(test_covariance_recovery),
         cmocka_unit_test(test_nees_bias_off),
         cmocka_unit_test(test_nees_ar1),
+        cmocka_unit_test(test_nees_settle),
+        cmocka_unit_test(test_settle_zupt),
+        cmocka_unit_test(test_settle_zaru),
+        cmocka_unit_test(test_settle_predict),
+        cmocka_unit_test(test_settle_decay),
+        cmocka_unit_test(test_settle_idle_identical),
     };
     return cmocka_run_group_tests_name("ukf", tests, NULL, NULL);
 }

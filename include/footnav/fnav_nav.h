@@ -79,6 +79,9 @@ typedef struct {
     int lever;                         /**< 1: estimate the rolling-foot lever (fnav_ukf.h) */
     fnav_real_t lever_sd_m;            /**< initial lever sd, m */
     fnav_real_t lever_rw_m_rts;        /**< lever random walk, m/sqrt(s) */
+    int settle;                        /**< 1: the landing settling state (fnav_ukf.h) */
+    fnav_real_t settle_sd_mps;         /**< settling sd at each stance onset, m/s */
+    fnav_real_t settle_tau_s;          /**< settling time constant, s */
     int zaru;                          /**< 1: zero-angular-rate updates in stance */
     fnav_real_t zaru_sigma_rps;        /**< ZARU noise, rad/s */
     fnav_real_t tilt_sd_rad;           /**< initial roll/pitch standard deviation, rad */
@@ -131,6 +134,8 @@ typedef struct {
     fnav_nav_stats_t stats;
     fnav_nav_frame_t last;  /**< newest frame */
     uint32_t undone_run;    /**< consecutive undone filter steps */
+    int prev_stance;        /**< the previous frame was decided stance */
+    int settle_pending;     /**< a stance began: start the settling state at its first ZUPT */
     int have_hold;          /**< a reset holds the last good position and heading */
     fnav_vec3_t hold_pos_m; /**< position carried over a reset, n frame, m */
     fnav_real_t hold_yaw_rad; /**< heading carried over a reset, rad */

@@ -28,6 +28,30 @@
  * v - C_nb (w x r) = 0, the velocity of the pivot; with lever = 0 it is the
  * paper's 15-state filter with v = 0.
  *
+ * Landing settling (optional, docs/navigation.md, "The landing"). When the
+ * foot lands it is not yet still: for a few tens of milliseconds after the
+ * stance begins the IMU still moves vertically (the sole settles, the
+ * forefoot comes down), a few cm/s that decay, and the lever above does not
+ * explain it. A ZUPT that takes this motion for INS error corrects the
+ * position as if the error had grown over the whole swing (by about half a
+ * swing times the velocity) and the height climbs at every stride. With
+ * config.settle = 1 the vertical settling velocity s (along the n frame's
+ * z) is a coloured error of the ZUPT (Bryson & Henrikson's state
+ * augmentation for coloured measurement noise): the ZUPT measures
+ * v - C_nb (w x r) - s e_z = 0, s starts at each stance onset at 0 with
+ * standard deviation settle_sd_mps (fnav_ukf_settle_start()) and decays as
+ * s' = c s, c = exp(-dt/settle_tau_s), without driving noise. The filter
+ * then attributes to s the part of the onset velocity that decays, and to
+ * the INS the part that persists. s never enters the strapdown, so it is
+ * kept outside the sigma points: its variance Pss and its cross-covariance
+ * Pxs with the packed states are propagated as Pss' = c^2 Pss and
+ * Pxs' = c F Pxs, with F the strapdown's error-state map (exact in the
+ * lever, velocity, position and biases, first order in the attitude error,
+ * as the closed form's gyro-bias terms), and every update is the exact
+ * Kalman update of the augmented state. Once Pss has decayed below
+ * 1e-4 settle_sd_mps^2 (4.6 settle_tau_s) s is dropped (marginalised: the
+ * other states' covariance is unchanged).
+ *
  * Internal state indices (FNAV_UKF_R .. FNAV_UKF_BA), FNAV_UKF_NMAX = 18:
  *   0-2 lever, 3-5 velocity, 6-8 position, 9-11 attitude error, 12-14 gyro
  *   bias, 15-17 accelerometer bias. The covariance fnav_ukf_t.P holds only
@@ -117,6 +141,9 @@ typedef struct {
     int lever;                            /**< 1: estimate the pivot-to-IMU lever (default 0) */
     fnav_real_t lever_sd_m;               /**< initial lever sd per axis, m (default 0.1) */
     fnav_real_t lever_rw_m_rts;           /**< lever random walk, m/sqrt(s) (default 0.002) */
+    int settle;                           /**< 1: landing settling state (file comment; default 0) */
+    fnav_real_t settle_sd_mps;            /**< settling sd at stance onset, m/s (default 0.025) */
+    fnav_real_t settle_tau_s;             /**< settling time constant, s (default 0.03) */
 } fnav_ukf_config_t;
 
 /** Defaults: NavChip-like noise (paper Table IV), AR(1) model, 9.80665 m/s^2. */
@@ -167,6 +194,12 @@ typedef struct {
     fnav_real_t ar1_dt_s;      /**< interval of the cached AR(1) terms, s (0: none) */
     fnav_real_t ar1_c[6];      /**< cached exp(-dt/tau), gyro then accel */
     fnav_real_t ar1_q[6];      /**< cached sigma^2 (1 - c^2) */
+    int settle_on;             /**< the settling state is active (since the last stance onset) */
+    fnav_real_t settle_mps;    /**< settling velocity along n z, m/s (0 when not active) */
+    fnav_real_t settle_var;    /**< its variance Pss, (m/s)^2 */
+    fnav_real_t settle_dt_s;   /**< interval of the cached decay (0: none) */
+    fnav_real_t settle_c;      /**< cached exp(-dt/settle_tau_s) */
+    fnav_real_t Pxs[FNAV_UKF_NMAX]; /**< cross-covariance of the packed states with the settling */
     fnav_real_t P[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< covariance of the active states, packed in the
                                                        order of act[] (use fnav_ukf_cov()) */
     fnav_real_t U[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< scratch: Cholesky factor */
@@ -213,7 +246,7 @@ FNAV_WARN_UNUSED fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_
 /**
  * Zero-velocity update with standard deviation zupt_sigma_mps per axis:
  * v = 0, or with config.lever v - C_nb (w x r) = 0 for the bias-corrected
- * rate w of this sample. The measurement is linear in the error states (the
+ * rate w of this sample; minus s e_z while the settling state is active. The measurement is linear in the error states (the
  * lever term to first order), so the exact Kalman update is used: it is what
  * the unscented update reduces to for a linear measurement.
  * @param gyro_rps  raw angular rate of the sample (body), rad/s (used with the lever)
@@ -222,6 +255,15 @@ FNAV_WARN_UNUSED fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_
  *         (update skipped, counted).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps);
+
+/**
+ * Start the landing settling state (config.settle): s = 0 with variance
+ * settle_sd_mps^2, uncorrelated with the other states. The navigator calls
+ * it when a stance begins, before its first ZUPT. Nothing happens with
+ * config.settle = 0.
+ * @return FNAV_OK; FNAV_E_ARG; FNAV_E_STATE before start.
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_ukf_settle_start(fnav_ukf_t *f);
 
 /**
  * Zero-angular-rate update: the raw gyro reading equals the gyro bias

@@ -73,6 +73,9 @@ int main(void)
 #ifdef M4_NOLEVER
     c.lever = 0;
 #endif
+#ifdef M4_NOSETTLE
+    c.settle = 0;
+#endif
     SYST_RVR = 0xFFFFFF;
     SYST_CVR = 0;
     SYST_CSR = 5;

@@ -3,7 +3,8 @@
 # tests/m4 with the firmware flags and runs it in qemu-system-arm (mps2-an386,
 # -icount shift=0, semihosting). Skips with a message when the tools are
 # missing. Usage: sh tests/m4/run.sh [extra CFLAGS: -O2, -DM4_BIASOFF (bias
-# model off; the default is on), -DM4_NOLEVER (no lever states)]: the default
+# model off; the default is on), -DM4_NOLEVER (no lever states),
+# -DM4_NOSETTLE (no landing settling state)]: the default
 # configuration has 18 states, -DM4_NOLEVER the paper's 15, -DM4_BIASOFF 12,
 # both 9. M4_MAIN and M4_UKF replace tests/m4/main.c and src/fnav_ukf.c
 # (tests/m4/profile.sh passes its instrumented copies).
