@@ -82,17 +82,26 @@ FLK_UNIT = diff_acov(sum(ar1_blockmean_acov(LNR / np.pi, t, n1) for t in TAUS)) 
 IDX = np.abs(np.arange(n1)[:, None] - np.arange(n1)[None, :])
 
 
-def nll(segs, unit, m2):
-    cf = cho_factor((WHITE + m2 * unit)[IDX])
+def nll_acv(segs, acv):
+    """-2 ln L of the segments' differenced block means with autocovariance acv."""
+    cf = cho_factor(acv[IDX])
     logdet = 2.0 * np.log(np.diag(cf[0])).sum()
     return sum(logdet + d @ cho_solve(cf, d) for d in (np.diff(y) for y in segs))
 
 
-def best_nll(segs, unit, m0):
-    """Least -2 ln L over the magnitude, searched in its log within a factor 30 of m0."""
+def nll(segs, unit, m2):
+    return nll_acv(segs, WHITE + m2 * unit)
+
+
+def fit_mag(segs, unit, m0):
+    """(least -2 ln L, magnitude) over the magnitude, searched in its log within a factor 30 of m0."""
     res = minimize_scalar(lambda l: nll(segs, unit, np.exp(2.0 * l)), bounds=(np.log(m0 / 30.0), np.log(m0 * 30.0)),
                           method="bounded", options={"xatol": 2e-3})
-    return res.fun
+    return res.fun, np.exp(res.x)
+
+
+def best_nll(segs, unit, m0):
+    return fit_mag(segs, unit, m0)[0]
 
 
 def main():
