@@ -751,11 +751,13 @@ int hx_cmd_eval(int argc, char **argv)
     fprintf(ev.md, "# footnav results\n\n");
     fprintf(ev.md, "Written by `%s` (float%s build). Every number below comes from that command;\n"
                    "rerun it to reproduce them. Data: `../shared/data` (MANIFEST.md). Configuration: profile `%s`, "
-                   "bias model `%s`, detector `%s`%s (docs/navigation.md).\n\n",
+                   "bias model `%s`, detector `%s`%s, lever states %s, landing settling state %s "
+                   "(docs/navigation.md).\n\n",
             cmdline, FNAV_USE_DOUBLE ? "64" : "32", ev.cfg.profile.name,
             ev.cfg.bias_model == FNAV_BIAS_AR1 ? "ar1" : "off",
             ev.cfg.stance.detector == FNAV_DETECTOR_SHOE ? "shoe" : "threshold",
-            ev.cfg.stance.adaptive ? " (adaptive threshold)" : "");
+            ev.cfg.stance.adaptive ? " (adaptive threshold)" : "", ev.cfg.lever ? "on" : "off",
+            ev.cfg.settle ? "on" : "off");
 
     fprintf(ev.md, "## openshoe_gx2: return to start (6 closed loops, 250 Hz)\n\n"
                    "Error of the last stance mid-point from the first, as a fraction of the step-to-step path "

@@ -769,6 +769,11 @@ static void run_nees(nees_t *r)
                     y[a] = s / L[a][a];
                     nees += y[a] * y[a];
                 }
+                {
+                    double asym;
+                    /* the covariance, with the settling when active */
+                    assert_true(fnav_test_cov_spd(&f, &asym) > 0.0);
+                }
                 z_sum += e[8] * e[8] / (double)fnav_ukf_cov(&f, FNAV_UKF_P + 2, FNAV_UKF_P + 2);
                 z_n++;
                 sum_at[check++] += nees;
@@ -1243,6 +1248,34 @@ static void test_settle_idle_identical(void **state)
     assert_memory_equal(&a.q_nb, &b.q_nb, sizeof a.q_nb);
 }
 
+/* The settling's recovery paths: a covariance reset to the diagonal drops
+ * its cross-covariances too; an update whose augmented innovation
+ * covariance is not positive is rejected, counted and drops the settling,
+ * and the next ZUPT runs without it. */
+static void test_settle_recovery(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_status_t st;
+    int i;
+    (void)state;
+    settle_setup(&f, 3);
+    fnav_ukf_set_cov(&f, FNAV_UKF_V, FNAV_UKF_P,
+                     FNAV_R(3.0) * fnav_sqrt(fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_V) * fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_P)));
+    st = fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g), FNAV_R(0.004));
+    assert_int_equal(st, FNAV_E_DECOMP);
+    assert_int_equal(f.health.chol_reset, 1);
+    assert_true(f.settle_on);
+    for (i = 0; i < f.n_act; i++) {
+        assert_true(f.Pxs[i] == FNAV_R(0.0));
+    }
+    /* a settling variance that makes the innovation covariance indefinite */
+    f.settle_var = -FNAV_R(1.0);
+    assert_int_equal(fnav_ukf_zupt(&f, fnav_vec3_zero()), FNAV_E_DECOMP);
+    assert_int_equal(f.health.update_reject, 1);
+    assert_false(f.settle_on);
+    assert_int_equal(fnav_ukf_zupt(&f, fnav_vec3_zero()), FNAV_OK);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1264,6 +1297,7 @@ int main(void)
         cmocka_unit_test(test_settle_predict),
         cmocka_unit_test(test_settle_decay),
         cmocka_unit_test(test_settle_idle_identical),
+        cmocka_unit_test(test_settle_recovery),
     };
     return cmocka_run_group_tests_name("ukf", tests, NULL, NULL);
 }

@@ -44,5 +44,25 @@ double fnav_test_cov_spd(const fnav_ukf_t *u, double *asym)
             a[i][j] = pij;
         }
     }
-    return fnav_test_chol(n, a);
+    {
+        double piv = fnav_test_chol(n, a);
+        if (!(piv > 0.0) || !u->settle_on) {
+            return piv;
+        }
+        /* with the landing settling active, the augmented covariance
+         * [P Pxs; Pxs^T Pss] is positive definite when P is and the Schur
+         * complement Pss - |L^-1 Pxs|^2 is positive (P = L L^T, L in a) */
+        {
+            double y[FNAV_UKF_NMAX], schur = (double)u->settle_var;
+            for (i = 0; i < n; i++) {
+                double t = (double)u->Pxs[i];
+                for (j = 0; j < i; j++) {
+                    t -= a[i][j] * y[j];
+                }
+                y[i] = t / a[i][i];
+                schur -= y[i] * y[i];
+            }
+            return fmin(piv, schur / (double)u->settle_var);
+        }
+    }
 }

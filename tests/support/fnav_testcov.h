@@ -15,7 +15,9 @@
  *  at the first such pivot and returns it). */
 double fnav_test_chol(int n, double a[][FNAV_UKF_NMAX]);
 
-/** Factorises the active covariance of u by Cholesky in double.
+/** Factorises the active covariance of u by Cholesky in double; while the
+ *  landing settling is active, the covariance augmented with it (through
+ *  its Schur complement, whose value relative to Pss counts as a pivot).
  *  Returns the smallest pivot relative to its diagonal element; a value
  *  <= 0 or NaN means not positive definite (the factorisation stops at the
  *  first such pivot and returns it). *asym receives the largest
