@@ -404,9 +404,13 @@ int hx_cmd_live(int argc, char **argv)
     double t_last_frame, t_next_print, t_next_plot, t0;
     const char *plot_png = "live.png", *out_path, *json_path;
     char err[600], gone_msg[600] = "";
-    int rc = hx_args_parse(&k_spec, argc, argv, &a);
-    int exit_code = HX_EXIT_OK, gone = 0, timed_out = 0, tty = isatty(fileno(stderr));
+    int rc, exit_code = HX_EXIT_OK, gone = 0, timed_out = 0, tty = isatty(fileno(stderr));
     struct sigaction sa;
+
+    if (hx_nav_param_help_requested(argc, argv)) {
+        return HX_EXIT_OK;
+    }
+    rc = hx_args_parse(&k_spec, argc, argv, &a);
 
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;

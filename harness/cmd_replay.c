@@ -42,6 +42,9 @@ int hx_cmd_replay(int argc, char **argv)
     char err[400], cmdline[1024];
     int rc, exit_code = HX_EXIT_OK, i;
     size_t len = 0;
+    if (hx_nav_param_help_requested(argc, argv)) {
+        return HX_EXIT_OK;
+    }
     rc = hx_args_parse(&k_spec, argc, argv, &a);
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;

@@ -140,6 +140,19 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     return NULL;
 }
 
+int hx_nav_param_help_requested(int argc, char **argv)
+{
+    int i;
+    for (i = 0; i < argc; i++) { /* argv holds the command's arguments only */
+        if ((strcmp(argv[i], "--param") == 0 && i + 1 < argc && strcmp(argv[i + 1], "help") == 0) ||
+            strcmp(argv[i], "--param=help") == 0) {
+            hx_nav_param_help(stdout);
+            return 1;
+        }
+    }
+    return 0;
+}
+
 void hx_nav_param_help(FILE *f)
 {
     fnav_nav_config_t c = fnav_nav_config_default;

@@ -46,6 +46,10 @@ int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, siz
 
 /** Print the --param keys with their current default values. */
 void hx_nav_param_help(FILE *f);
+/** 1 (after printing the list on stdout) when the command line asks for
+ *  `--param help`, so that it works without the command's required
+ *  arguments; 0 otherwise. */
+int hx_nav_param_help_requested(int argc, char **argv);
 
 /* ------------------------------------------------------------ trajectory */
 

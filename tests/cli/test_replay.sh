@@ -22,6 +22,8 @@ expect_exit 2 "--param without =" "$H" replay vectors/walk.bin --param gamma
 expect_exit 2 "--param not a number" "$H" replay vectors/walk.bin --param gamma=abc
 expect_exit 0 "--param help" "$H" replay vectors/walk.bin --param help
 expect_out "zupt_sigma" "--param help lists the keys"
+expect_exit 0 "--param help without a log" "$H" replay --param help
+expect_out "settle_tau" "--param help without a log lists the keys"
 expect_exit 2 "unknown profile" "$H" replay vectors/walk.bin --profile /nonexistent/profile.txt
 expect_exit 2 "bad --rate" "$H" replay vectors/walk.bin --rate -5
 expect_exit 2 "config rejected by the core" "$H" replay vectors/walk.bin --param window_s=-1 --quiet
