@@ -241,6 +241,22 @@ static void test_linear_covariance(void **state)
     }
 }
 
+/* Inverse of a 3x3 matrix in double (adjugate over the determinant). */
+static void inv3d(double S[3][3], double Si[3][3])
+{
+    double det = S[0][0] * (S[1][1] * S[2][2] - S[1][2] * S[2][1]) - S[0][1] * (S[1][0] * S[2][2] - S[1][2] * S[2][0]) +
+                 S[0][2] * (S[1][0] * S[2][1] - S[1][1] * S[2][0]);
+    Si[0][0] = (S[1][1] * S[2][2] - S[1][2] * S[2][1]) / det;
+    Si[0][1] = (S[0][2] * S[2][1] - S[0][1] * S[2][2]) / det;
+    Si[0][2] = (S[0][1] * S[1][2] - S[0][2] * S[1][1]) / det;
+    Si[1][0] = (S[1][2] * S[2][0] - S[1][0] * S[2][2]) / det;
+    Si[1][1] = (S[0][0] * S[2][2] - S[0][2] * S[2][0]) / det;
+    Si[1][2] = (S[0][2] * S[1][0] - S[0][0] * S[1][2]) / det;
+    Si[2][0] = (S[1][0] * S[2][1] - S[1][1] * S[2][0]) / det;
+    Si[2][1] = (S[0][1] * S[2][0] - S[0][0] * S[2][1]) / det;
+    Si[2][2] = (S[0][0] * S[1][1] - S[0][1] * S[1][0]) / det;
+}
+
 /* ZUPT against the textbook Kalman update computed here in double. */
 static void test_zupt_update(void **state)
 {
@@ -248,7 +264,7 @@ static void test_zupt_update(void **state)
     fnav_ukf_config_t c = fnav_ukf_config_default;
     fnav_ukf_init_sd_t sd = sd_default();
     static double P[NM][NM], K[NM][3], Pn[NM][NM];
-    double S[3][3], Si[3][3], det, v[3], r2, x0[NM];
+    double S[3][3], Si[3][3], v[3], r2, x0[NM];
     int i, j, k, n = NM;
     (void)state;
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
@@ -276,17 +292,7 @@ static void test_zupt_update(void **state)
             S[i][j] = P[FNAV_UKF_V + i][FNAV_UKF_V + j] + (i == j ? r2 : 0.0);
         }
     }
-    det = S[0][0] * (S[1][1] * S[2][2] - S[1][2] * S[2][1]) - S[0][1] * (S[1][0] * S[2][2] - S[1][2] * S[2][0]) +
-          S[0][2] * (S[1][0] * S[2][1] - S[1][1] * S[2][0]);
-    Si[0][0] = (S[1][1] * S[2][2] - S[1][2] * S[2][1]) / det;
-    Si[0][1] = (S[0][2] * S[2][1] - S[0][1] * S[2][2]) / det;
-    Si[0][2] = (S[0][1] * S[1][2] - S[0][2] * S[1][1]) / det;
-    Si[1][0] = (S[1][2] * S[2][0] - S[1][0] * S[2][2]) / det;
-    Si[1][1] = (S[0][0] * S[2][2] - S[0][2] * S[2][0]) / det;
-    Si[1][2] = (S[0][2] * S[1][0] - S[0][0] * S[1][2]) / det;
-    Si[2][0] = (S[1][0] * S[2][1] - S[1][1] * S[2][0]) / det;
-    Si[2][1] = (S[0][1] * S[2][0] - S[0][0] * S[2][1]) / det;
-    Si[2][2] = (S[0][0] * S[1][1] - S[0][1] * S[1][0]) / det;
+    inv3d(S, Si);
     for (i = 0; i < n; i++) {
         for (k = 0; k < 3; k++) {
             K[i][k] = 0.0;
@@ -926,21 +932,6 @@ static void settle_paug(const fnav_ukf_t *f, double P[NM + 1][NM + 1])
             }
         }
     }
-}
-
-static void inv3d(double S[3][3], double Si[3][3])
-{
-    double det = S[0][0] * (S[1][1] * S[2][2] - S[1][2] * S[2][1]) - S[0][1] * (S[1][0] * S[2][2] - S[1][2] * S[2][0]) +
-                 S[0][2] * (S[1][0] * S[2][1] - S[1][1] * S[2][0]);
-    Si[0][0] = (S[1][1] * S[2][2] - S[1][2] * S[2][1]) / det;
-    Si[0][1] = (S[0][2] * S[2][1] - S[0][1] * S[2][2]) / det;
-    Si[0][2] = (S[0][1] * S[1][2] - S[0][2] * S[1][1]) / det;
-    Si[1][0] = (S[1][2] * S[2][0] - S[1][0] * S[2][2]) / det;
-    Si[1][1] = (S[0][0] * S[2][2] - S[0][2] * S[2][0]) / det;
-    Si[1][2] = (S[0][2] * S[1][0] - S[0][0] * S[1][2]) / det;
-    Si[2][0] = (S[1][0] * S[2][1] - S[1][1] * S[2][0]) / det;
-    Si[2][1] = (S[0][1] * S[2][0] - S[0][0] * S[2][1]) / det;
-    Si[2][2] = (S[0][0] * S[1][1] - S[0][1] * S[1][0]) / det;
 }
 
 /* Textbook Kalman update of the augmented state in double: P' = P - K H P,
