@@ -305,9 +305,10 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
     if (o->segment_stance) {
         flags |= FNAV_FRAME_SEG_STANCE;
     }
-    /* a stance begins: the landing's settling state starts with its first
-     * ZUPT (which a duplicated sample may postpone) */
-    if (o->stance && !nav->prev_stance) {
+    /* a landing the running filter sees (not the still period the
+     * alignment ends in): the settling state starts with its first ZUPT,
+     * which a duplicated sample may postpone */
+    if (o->stance && !nav->prev_stance && nav->aligned) {
         nav->settle_pending = 1;
     } else if (!o->stance) {
         nav->settle_pending = 0;
