@@ -314,6 +314,46 @@ static void test_settle_onsets(void **state)
     }
 }
 
+/* An alignment that ends while the foot still stands (7 s still against the
+ * alignment's 5 s at most) starts no settling state: the first one starts
+ * at the landing after the following swing. */
+static void test_settle_not_at_alignment(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    long k, aligned_still = 0;
+    int starts = 0, moved = 0;
+    fnav_real_t prev_var = FNAV_R(0.0);
+    (void)state;
+    c.stance.rate_hz = FNAV_R(200.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    for (k = 0; k < 1400 + 80 + 200; k++) {
+        fnav_sample_t s = still(k);
+        if (k >= 1400 && k < 1480) {
+            s.gyro_rps[1] = FNAV_R(2.0);
+            s.accel_mps2[0] = FNAV_R(1.0);
+        }
+        assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+        while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+            if ((fr.flags & FNAV_FRAME_ALIGNED) != 0u && (fr.flags & FNAV_FRAME_STANCE) == 0u) {
+                moved = 1;
+            }
+            if ((fr.flags & FNAV_FRAME_ALIGNED) != 0u && !moved) {
+                aligned_still++; /* standing after the alignment: no settling */
+                assert_false(nav.ukf.settle_on);
+            }
+            if (nav.ukf.settle_var > prev_var) {
+                starts++;
+                assert_true(moved);
+            }
+            prev_var = nav.ukf.settle_var;
+        }
+    }
+    assert_true(aligned_still > 100);
+    assert_int_equal(starts, 1);
+}
+
 /* Memory: the filter object within 8 KB in float32 (the limit). */
 static void test_sizes(void **state)
 {
@@ -545,6 +585,7 @@ int main(void)
         cmocka_unit_test(test_step),
         cmocka_unit_test(test_run_port),
         cmocka_unit_test(test_settle_onsets),
+        cmocka_unit_test(test_settle_not_at_alignment),
         cmocka_unit_test(test_sizes),
         cmocka_unit_test(test_resampler),
         cmocka_unit_test(test_golden_replays),
