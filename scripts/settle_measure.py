@@ -62,7 +62,7 @@ def onsets(tr, raw, window):
     """Pivot velocity over the first `window` seconds of each stance, freely integrated."""
     n = len(tr)
     st = tr["stance"].astype(int)
-    aligned = (tr["health"].astype(int) >= 0)  # every frame after the alignment has a state
+    aligned = tr["P_vel_x"] > 0.0  # frames before the alignment carry a zero covariance
     segs = []
     for i0 in np.flatnonzero((st[1:] == 1) & (st[:-1] == 0)) + 1:
         if i0 < 2 or not aligned[i0 - 1]:

@@ -721,11 +721,9 @@ static FNAV_NOINLINE void predict_linear(fnav_ukf_t *f, const fnav_strapdown_inc
         }
     }
     if (obg >= 0) {
-        /* The three maps, transposed (G[j][i] = row i, column j), in the
-         * update's gain scratch, which is free during the prediction (keeps
-         * them off the stack): G[0..2] G_a, G[3..5] G_g, G[6..8] A_g. With
-         * c^T the row i of C, row i of C [x x] is (c x x)^T and row i of
-         * C [x x]^2 is ((c x x) x x)^T. */
+        /* the three maps (bias_maps) in the update's gain scratch, which is
+         * free during the prediction (keeps them off the stack; the
+         * settling's prediction reads them there too) */
         fnav_real_t (*G)[3] = f->K;
         bias_maps(f, inc, dt_s, G);
         for (k = oba; k < nl; k++) {
@@ -1297,8 +1295,8 @@ fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
          * in n). The gyro bias's term, dh/db_g = -C [r x], is left out: its
          * effect |r| |db_g| (5 cm times a MEMS gyro's in-run bias sd, about
          * 1e-5 m/s) is three orders below the ZUPT noise, and its three
-         * columns cost the update about 1,000 instructions on the
-         * Cortex-M4F (docs/navigation.md, "Cost and size"). */
+         * columns cost the step 1,400 instructions on the Cortex-M4F
+         * (docs/navigation.md, "The rolling foot"). */
         fnav_vec3_t w = fnav_vec3_sub(gyro_rps, f->bg_rps);
         fnav_mat3_t C = fnav_quat_to_dcm(f->q_nb);
         fnav_mat3_t Hr = fnav_mat3_mul(C, fnav_mat3_skew(w));
