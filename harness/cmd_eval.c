@@ -93,6 +93,20 @@ static int list_files(const char *dir, const char *suffix, char names[MAXF][160]
     return n;
 }
 
+/* The walk files of a data set folder: names ending in ext, without the
+ * folder's licence, source and readme files. */
+static int list_walks(const char *dir, const char *ext, char names[MAXF][160])
+{
+    int n = list_files(dir, ext, names), i, k = 0;
+    for (i = 0; i < n; i++) {
+        if (strncmp(names[i], "LICENSE", 7) != 0 && strncmp(names[i], "SOURCE", 6) != 0 &&
+            strncmp(names[i], "README", 6) != 0) {
+            memmove(names[k++], names[i], 160);
+        }
+    }
+    return k;
+}
+
 /* One replay; 0 ok (partial input accepted with a note), -1 failure. */
 static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, double rate_hz, hx_traj_t *t,
                   hx_nav_summary_t *s, char *note, size_t note_size)
@@ -170,6 +184,35 @@ static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fna
     out->vert_med = hx_median(vz, k);
     out->h_m_med = hx_median(hm, k);
     out->path_med = hx_median(pm, k);
+}
+
+/* ------------------------------------------------------------ xio and other closed walks */
+
+/* The vendor's published 3-D closure of its two walks (x-io Gait-Tracking
+ * README), m; NaN for a walk without one. */
+static double xio_vendor_m(const char *name)
+{
+    if (strcmp(name, "short_walk.csv") == 0) {
+        return 0.082;
+    }
+    if (strcmp(name, "long_walk.csv") == 0) {
+        return 0.421;
+    }
+    return (double)NAN;
+}
+
+/* Closure of one walk (last stance mid-point from the first), m; NaN when
+ * the replay failed. */
+static double closure_3d_m(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, double rate_hz)
+{
+    hx_traj_t t;
+    hx_nav_summary_t s;
+    char note[200];
+    if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0) {
+        return (double)NAN;
+    }
+    hx_traj_free(&t);
+    return s.end_3d_m;
 }
 
 /* ------------------------------------------------------------ strides */
@@ -675,6 +718,24 @@ static const char *met(int ok)
     return ok ? "met" : "**not met**";
 }
 
+/* A target's status: judged only when its data set was found. */
+static const char *target(int have_data, int ok)
+{
+    return have_data ? met(ok) : "no data";
+}
+
+static const char *fmt_pct(char *buf, size_t size, double v)
+{
+    snprintf(buf, size, isfinite(v) ? "%.2f %%" : "-", v);
+    return buf;
+}
+
+static const char *fmt_mm(char *buf, size_t size, double v_m)
+{
+    snprintf(buf, size, isfinite(v_m) ? "%.0f mm" : "-", 1e3 * v_m);
+    return buf;
+}
+
 int hx_cmd_eval(int argc, char **argv)
 {
     hx_args_t a;
@@ -683,7 +744,10 @@ int hx_cmd_eval(int argc, char **argv)
     char err[400], cmdline[1024];
     const char *out_path, *json_path, *data;
     closure_t gx2, gx2_off, gx2_ar1, gx2_200, gx2_100;
-    closure_t xs, xl;
+    double xs = (double)NAN, xl = (double)NAN; /* the vendor-figure walks' 3-D closure, m */
+    static char xio[MAXF][160], other[2 * MAXF][330];
+    double xio3[MAXF], other3[2 * MAXF], other_hz[2 * MAXF];
+    int nxio, nother = 0;
     fp_t fp, fp_off, fp_ar1, fp_100;
     vicon_t vi;
     ipol_t ip;
@@ -717,15 +781,48 @@ int hx_cmd_eval(int argc, char **argv)
     }
     snprintf(ev.data, sizeof ev.data, "%s", data);
     {
+        /* the shared data: its MANIFEST.md, or at least one data set folder
+         * (a copy holding only some of the sets is evaluated on those) */
+        static const char *const sets[] = { "MANIFEST.md",     "openshoe_gx2",     "xio_ngimu_gait",
+                                             "pyshoe_vicon_llio", "ipol_gait_xsens", "openshoe_c_820hz",
+                                             "openshoe_square2" };
         char probe[700];
-        FILE *f;
-        snprintf(probe, sizeof probe, "%s/MANIFEST.md", ev.data);
-        f = fopen(probe, "r");
-        if (f == NULL) {
+        FILE *f = NULL;
+        DIR *d = NULL;
+        size_t k;
+        for (k = 0; k < sizeof sets / sizeof sets[0] && f == NULL && d == NULL; k++) {
+            snprintf(probe, sizeof probe, "%s/%s", ev.data, sets[k]);
+            if (k == 0) {
+                f = fopen(probe, "r");
+            } else {
+                d = opendir(probe);
+            }
+        }
+        if (f == NULL && d == NULL) {
             hx_error("eval", "no shared data in %s (give --data DIR or set FNAV_DATA_DIR)", ev.data);
             return HX_EXIT_UNAVAIL;
         }
-        fclose(f);
+        if (f != NULL) {
+            fclose(f);
+        }
+        if (d != NULL) {
+            closedir(d);
+        }
+    }
+    {
+        /* the closed walks without a file-name convention of their own */
+        static const char *const osets[2][2] = { { "openshoe_c_820hz", ".txt" }, { "openshoe_square2", ".csv" } };
+        char dir[700], names[MAXF][160];
+        int k, j, n;
+        snprintf(dir, sizeof dir, "%s/xio_ngimu_gait", ev.data);
+        nxio = list_walks(dir, ".csv", xio);
+        for (k = 0; k < 2; k++) {
+            snprintf(dir, sizeof dir, "%s/%s", ev.data, osets[k][0]);
+            n = list_walks(dir, osets[k][1], names);
+            for (j = 0; j < n; j++) {
+                snprintf(other[nother++], sizeof other[0], "%.40s/%.159s", osets[k][0], names[j]);
+            }
+        }
     }
     out_path = hx_arg(&a, "--out");
     if (out_path == NULL) {
@@ -741,7 +838,26 @@ int hx_cmd_eval(int argc, char **argv)
     for (i = 0; i < argc && len < sizeof cmdline; i++) {
         len += (size_t)snprintf(cmdline + len, sizeof cmdline - len, " %s", argv[i]);
     }
-    ev.total_runs = exp ? 6 * 3 + 2 * 5 + 7 * 2 + 21 + 28 + 5 * (6 + 7 + 21 + 2) : 6 + 2 + 7 + 21 + 28;
+    {
+        /* progress: one run per walk or trial and configuration */
+        char dir[700], names[MAXF][160];
+        int ngx2, nfp, nvi, nip;
+        snprintf(dir, sizeof dir, "%s/openshoe_gx2", ev.data);
+        ngx2 = list_files(dir, "_data_inert.txt", names);
+        snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/own_3dmgx5_footprints", ev.data);
+        nfp = list_files(dir, "_imu.csv", names);
+        snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/vicon_3dmgx3", ev.data);
+        nvi = list_files(dir, "_imu.csv", names);
+        snprintf(dir, sizeof dir, "%s/ipol_gait_xsens", ev.data);
+        nip = 2 * list_files(dir, ".json", names);
+        ev.total_runs = ngx2 + nxio + nother + nfp + nvi + nip;
+        if (exp) {
+            ev.total_runs += 5 * (ngx2 + nfp + nvi + nxio) + 2 * (ngx2 + nxio + nother) + nfp;
+        }
+        if (ev.total_runs < 1) {
+            ev.total_runs = 1;
+        }
+    }
     hx_progress_start(&ev.prog, "eval", ev.total_runs);
     off = ev.cfg;
     off.bias_model = FNAV_BIAS_OFF;
@@ -750,66 +866,121 @@ int hx_cmd_eval(int argc, char **argv)
 
     fprintf(ev.md, "# footnav results\n\n");
     fprintf(ev.md, "Written by `%s` (float%s build). Every number below comes from that command;\n"
-                   "rerun it to reproduce them. Data: `../shared/data` (MANIFEST.md). Configuration: profile `%s`, "
+                   "rerun it to reproduce them. Data: `%s` (MANIFEST.md). Configuration: profile `%s`, "
                    "bias model `%s`, detector `%s`%s, lever states %s, landing settling state %s "
                    "(docs/navigation.md).\n\n",
-            cmdline, FNAV_USE_DOUBLE ? "64" : "32", ev.cfg.profile.name,
+            cmdline, FNAV_USE_DOUBLE ? "64" : "32", ev.data, ev.cfg.profile.name,
             ev.cfg.bias_model == FNAV_BIAS_AR1 ? "ar1" : "off",
             ev.cfg.stance.detector == FNAV_DETECTOR_SHOE ? "shoe" : "threshold",
             ev.cfg.stance.adaptive ? " (adaptive threshold)" : "", ev.cfg.lever ? "on" : "off",
             ev.cfg.settle ? "on" : "off");
 
-    fprintf(ev.md, "## openshoe_gx2: return to start (6 closed loops, 250 Hz)\n\n"
+    fprintf(ev.md, "## openshoe_gx2: return to start (closed loops, 250 Hz)\n\n"
                    "Error of the last stance mid-point from the first, as a fraction of the step-to-step path "
                    "through the stance mid-points. Vertical: height change, up positive.\n\n");
     closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &ev.cfg, 0.0, 1, &gx2);
-    fprintf(ev.md, "\nMedian horizontal %.2f %% (target <= 0.35 %%: %s), median 3-D %.2f %% (target <= 0.6 %%: %s), "
-                   "worst 3-D %.2f %% (target <= 1.2 %%: %s); median vertical %+.3f m, median path %.1f m.\n\n",
-            gx2.h_pct_med, met(gx2.h_pct_med <= 0.35), gx2.d3_pct_med, met(gx2.d3_pct_med <= 0.6), gx2.d3_pct_max,
-            met(gx2.d3_pct_max <= 1.2), gx2.vert_med, gx2.path_med);
+    if (gx2.n == 0) {
+        fprintf(ev.md, "\nNo walks found in `%s/openshoe_gx2`.\n\n", ev.data);
+    } else {
+        fprintf(ev.md, "\nMedian horizontal %.2f %% (target <= 0.35 %%: %s), median 3-D %.2f %% (target <= 0.6 %%: %s), "
+                       "worst 3-D %.2f %% (target <= 1.2 %%: %s); median vertical %+.3f m, median path %.1f m.\n\n",
+                gx2.h_pct_med, met(gx2.h_pct_med <= 0.35), gx2.d3_pct_med, met(gx2.d3_pct_med <= 0.6), gx2.d3_pct_max,
+                met(gx2.d3_pct_max <= 1.2), gx2.vert_med, gx2.path_med);
+    }
 
-    fprintf(ev.md, "## xio_ngimu_gait: return to start (2 closed loops, ~400 Hz, irregular timing)\n\n");
-    {
+    fprintf(ev.md, "## xio_ngimu_gait: return to start (closed loops, ~400 Hz, irregular timing)\n\n");
+    if (nxio == 0) {
+        fprintf(ev.md, "No walks found in `%s/xio_ngimu_gait`.\n\n", ev.data);
+    } else {
         char p[700], note[200];
-        const char *w[2] = { "short_walk.csv", "long_walk.csv" };
-        const double vendor[2] = { 0.082, 0.421 };
-        closure_t *c[2] = { &xs, &xl };
         fprintf(ev.md, "| walk | path (m) | horizontal (m) | 3-D (m) | 3-D (%%) | vertical (m) | vendor 3-D (m) | "
                        "duplicates | gaps | longest interval (ms) | result |\n");
         fprintf(ev.md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
-        for (i = 0; i < 2; i++) {
+        for (i = 0; i < nxio; i++) {
             hx_traj_t t;
             hx_nav_summary_t s;
-            memset(c[i], 0, sizeof *c[i]);
-            snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, w[i]);
+            double vendor = xio_vendor_m(xio[i]);
+            char vs[32];
+            xio3[i] = (double)NAN;
+            snprintf(p, sizeof p, "%s/xio_ngimu_gait/%.159s", ev.data, xio[i]);
             if (replay(&ev, p, &ev.cfg, 0.0, &t, &s, note, sizeof note) != 0) {
                 continue;
             }
-            c[i]->n = 1;
-            c[i]->d3_pct_med = s.end_3d_m;
-            fprintf(ev.md, "| %s | %.2f | %.3f | %.3f | %.2f | %+.3f | %.3f | %u | %u | %.1f | %s |\n", w[i], s.path_m,
-                    s.end_h_m, s.end_3d_m, s.end_3d_pct, s.vertical_m, vendor[i], t.stats.duplicates, t.stats.gaps,
-                    1e3 * (double)t.stats.max_gap_seen_s, s.end_3d_m < vendor[i] ? "better than vendor" : "**worse than vendor**");
+            xio3[i] = s.end_3d_m;
+            if (strcmp(xio[i], "short_walk.csv") == 0) {
+                xs = s.end_3d_m;
+            } else if (strcmp(xio[i], "long_walk.csv") == 0) {
+                xl = s.end_3d_m;
+            }
+            snprintf(vs, sizeof vs, isfinite(vendor) ? "%.3f" : "-", vendor);
+            fprintf(ev.md, "| %s | %.2f | %.3f | %.3f | %.2f | %+.3f | %s | %u | %u | %.1f | %s%s%s |\n", xio[i],
+                    s.path_m, s.end_h_m, s.end_3d_m, s.end_3d_pct, s.vertical_m, vs, t.stats.duplicates,
+                    t.stats.gaps, 1e3 * (double)t.stats.max_gap_seen_s,
+                    !isfinite(vendor) ? "no vendor figure"
+                                      : (s.end_3d_m < vendor ? "better than vendor" : "**worse than vendor**"),
+                    note[0] ? "; " : "", note);
             hx_traj_free(&t);
         }
         fprintf(ev.md, "\nThe vendor's figures come from an offline method that uses future samples; footnav is "
                        "causal.\n\n");
     }
 
+    fprintf(ev.md, "## Other closed walks (no measured truth)\n\n"
+                   "Walks that the MANIFEST describes as returning to the start (from the sources' plots, not "
+                   "measured): the closure is reported, not judged. A walk with almost every frame in stance and "
+                   "a path of centimetres moved too gently for the foot-tuned detector (docs/navigation.md, "
+                   "\"Stance detector\").\n\n");
+    if (nother == 0) {
+        fprintf(ev.md, "No walks found in `%s/openshoe_c_820hz` or `%s/openshoe_square2`.\n\n", ev.data, ev.data);
+    } else {
+        char p[1000], note[200];
+        fprintf(ev.md, "| walk | rate (Hz) | path (m) | horizontal (m) | 3-D (m) | 3-D (%%) | vertical (m) | "
+                       "frames in stance (%%) | strides | note |\n");
+        fprintf(ev.md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+        for (i = 0; i < nother; i++) {
+            hx_traj_t t;
+            hx_nav_summary_t s;
+            other3[i] = other_hz[i] = (double)NAN;
+            snprintf(p, sizeof p, "%s/%.300s", ev.data, other[i]);
+            if (replay(&ev, p, &ev.cfg, 0.0, &t, &s, note, sizeof note) != 0) {
+                continue;
+            }
+            other3[i] = s.end_3d_m;
+            if (hx_nav_little_motion(&s)) {
+                snprintf(note + strlen(note), sizeof note - strlen(note), "%s%.0f %% of frames in stance: motion "
+                         "below the detector's threshold", note[0] ? "; " : "", 100.0 * s.stance_fraction);
+            }
+            other_hz[i] = t.rate_hz;
+            fprintf(ev.md, "| %s | %.0f | %.2f | %.3f | %.3f | %.2f | %+.3f | %.1f | %ld | %s |\n", other[i],
+                    t.rate_hz, s.path_m, s.end_h_m, s.end_3d_m, s.end_3d_pct, s.vertical_m,
+                    100.0 * s.stance_fraction, s.strides, note);
+            hx_traj_free(&t);
+        }
+        fprintf(ev.md, "\n");
+    }
+
     fprintf(ev.md, "## pyshoe_vicon_llio / own_3dmgx5_footprints: per-stride error against measured footprints\n\n"
                    "Estimated position at each stride sample against the footprint measured with a ruler, both "
                    "in the initial-heading frame (the `_strides_gcp.csv` truth), starting at the first stride.\n\n");
     footprints(&ev, &ev.cfg, 0.0, 1, &fp);
-    fprintf(ev.md, "\nMedian final-stride error %.2f %% of the measured path (target <= 2 %%: %s), mean %.2f %%, "
-                   "median %.2f m; median of the per-walk median stride errors %.3f m. Reference: pyshoe with its "
-                   "SHOE detector, 1.43 m median final error, 4.3 %% mean.\n\n",
-            fp.final_pct_med, met(fp.final_pct_med <= 2.0), fp.final_pct_mean, fp.final_m_med, fp.stride_med);
+    if (fp.n == 0) {
+        fprintf(ev.md, "\nNo walks found in `%s/pyshoe_vicon_llio/own_3dmgx5_footprints`.\n\n", ev.data);
+    } else {
+        fprintf(ev.md, "\nMedian final-stride error %.2f %% of the measured path (target <= 2 %%: %s), mean %.2f %%, "
+                       "median %.2f m; median of the per-walk median stride errors %.3f m. Reference: pyshoe with its "
+                       "SHOE detector, 1.43 m median final error, 4.3 %% mean.\n\n",
+                fp.final_pct_med, met(fp.final_pct_med <= 2.0), fp.final_pct_mean, fp.final_m_med, fp.stride_med);
+    }
 
     fprintf(ev.md, "## pyshoe_vicon_llio / vicon_3dmgx3: per-stride error against motion capture\n\n");
     vicon(&ev, &ev.cfg, 1, &vi);
-    fprintf(ev.md, "\n%d trials, %d strides: median of the per-trial median stride errors %.3f m, median RMS %.3f m, "
-                   "median final error %.3f m.\n\n",
-            vi.n, vi.strides, vi.stride_med, vi.rms_med, vi.final_med);
+    if (vi.n == 0) {
+        fprintf(ev.md, "\nNo trials found in `%s/pyshoe_vicon_llio/vicon_3dmgx3`.\n\n", ev.data);
+    } else {
+        fprintf(ev.md, "\n%d trials, %d strides: median of the per-trial median stride errors %.3f m, median RMS %.3f m, "
+                       "median final error %.3f m.\n\n",
+                vi.n, vi.strides, vi.stride_med, vi.rms_med, vi.final_med);
+    }
 
     fprintf(ev.md, "## ipol_gait_xsens: stance detection and gait events against the experts\n\n"
                    "Strides of the straight walking phases (inside the trial, clear of the U-turn, which the "
@@ -817,12 +988,16 @@ int hx_cmd_eval(int argc, char **argv)
                    "Event errors in samples at 100 Hz: foot-off (FO) against the start, foot-strike (FS) against "
                    "the end of the expert swing.\n\n");
     ipol(&ev, &ev.cfg, 1, &ip);
-    fprintf(ev.md, "\n%d trials and feet: %d expert strides, %d detected, %d missed, %d spurious (target: none "
-                   "missed or spurious: %s). Event timing: median |FO error| %.1f samples (bias %+.1f, 90th percentile "
-                   "%.1f), median |FS error| %.1f samples (bias %+.1f, 90th percentile %.1f) (target <= 2: %s).\n\n",
-            ip.trials, ip.expected, ip.detected, ip.missed, ip.spurious, met(ip.missed == 0 && ip.spurious == 0),
-            ip.fo_med, ip.fo_bias, ip.fo_p90, ip.fs_med, ip.fs_bias, ip.fs_p90,
-            met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
+    if (ip.trials == 0) {
+        fprintf(ev.md, "\nNo trials found in `%s/ipol_gait_xsens`.\n\n", ev.data);
+    } else {
+        fprintf(ev.md, "\n%d trials and feet: %d expert strides, %d detected, %d missed, %d spurious (target: none "
+                       "missed or spurious: %s). Event timing: median |FO error| %.1f samples (bias %+.1f, 90th percentile "
+                       "%.1f), median |FS error| %.1f samples (bias %+.1f, 90th percentile %.1f) (target <= 2: %s).\n\n",
+                ip.trials, ip.expected, ip.detected, ip.missed, ip.spurious, met(ip.missed == 0 && ip.spurious == 0),
+                ip.fo_med, ip.fo_bias, ip.fo_p90, ip.fs_med, ip.fs_bias, ip.fs_p90,
+                met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
+    }
 
     if (exp) {
         fnav_nav_config_t c2 = ev.cfg;
@@ -835,7 +1010,7 @@ int hx_cmd_eval(int argc, char **argv)
             closure_t g[5];
             fp_t fpv[5];
             vicon_t vv[5];
-            double xs3[5], xl3[5];
+            static double x3[5][MAXF];
             int nv = 0, b, ok[5];
             fprintf(ev.md, "## Paper experiment 1: AR(1) bias model on vs off\n\n"
                            "Same walks and configuration except `--bias-model` and the profile: off, and the AR(1) "
@@ -855,17 +1030,10 @@ int hx_cmd_eval(int argc, char **argv)
                 closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &cv, 0.0, 0, &g[b]);
                 footprints(&ev, &cv, 0.0, 0, &fpv[b]);
                 vicon(&ev, &cv, 0, &vv[b]);
-                for (i = 0; i < 2; i++) {
-                    char p[700], note[200];
-                    hx_traj_t t;
-                    hx_nav_summary_t s;
-                    double *dst = i ? &xl3[b] : &xs3[b];
-                    *dst = (double)NAN;
-                    snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, i ? "long_walk.csv" : "short_walk.csv");
-                    if (replay(&ev, p, &cv, 0.0, &t, &s, note, sizeof note) == 0) {
-                        *dst = s.end_3d_m;
-                        hx_traj_free(&t);
-                    }
+                for (i = 0; i < nxio; i++) {
+                    char p[700];
+                    snprintf(p, sizeof p, "%s/xio_ngimu_gait/%.159s", ev.data, xio[i]);
+                    x3[b][i] = closure_3d_m(&ev, p, &cv, 0.0);
                 }
                 nv++;
             }
@@ -887,8 +1055,10 @@ int hx_cmd_eval(int argc, char **argv)
     do {                                                                                                             \
         fprintf(ev.md, "| %s |", label);                                                                             \
         for (b = 0; b < 5; b++) {                                                                                    \
-            if (ok[b]) {                                                                                             \
+            if (ok[b] && isfinite(expr)) {                                                                           \
                 fprintf(ev.md, " " fmt " |", (expr));                                                                \
+            } else if (ok[b]) {                                                                                      \
+                fprintf(ev.md, " - |");                                                                              \
             }                                                                                                        \
         }                                                                                                            \
         fprintf(ev.md, "\n");                                                                                        \
@@ -900,8 +1070,11 @@ int hx_cmd_eval(int argc, char **argv)
             EV_ROW("footprints | median final-stride error (% of path)", "%.2f", fpv[b].final_pct_med);
             EV_ROW("footprints | mean final-stride error (% of path)", "%.2f", fpv[b].final_pct_mean);
             EV_ROW("vicon | median of the per-trial median stride errors (m)", "%.3f", vv[b].stride_med);
-            EV_ROW("xio short | 3-D closure (m)", "%.3f", xs3[b]);
-            EV_ROW("xio long | 3-D closure (m)", "%.3f", xl3[b]);
+            for (i = 0; i < nxio; i++) {
+                char label[200];
+                snprintf(label, sizeof label, "xio %.159s | 3-D closure (m)", xio[i]);
+                EV_ROW(label, "%.3f", x3[b][i]);
+            }
 #undef EV_ROW
             (void)gx2_ar1;
             (void)gx2_off;
@@ -916,49 +1089,73 @@ int hx_cmd_eval(int argc, char **argv)
         closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &c2, 100.0, 0, &gx2_100);
         footprints(&ev, &c2, 100.0, 0, &fp_100);
         fprintf(ev.md, "| data set | figure | native | 200 Hz | 100 Hz |\n|---|---|---:|---:|---:|\n");
-        fprintf(ev.md, "| openshoe_gx2 (250 Hz) | median horizontal closure (%%) | %.2f | %.2f | %.2f |\n",
-                gx2.h_pct_med, gx2_200.h_pct_med, gx2_100.h_pct_med);
-        fprintf(ev.md, "| openshoe_gx2 (250 Hz) | median 3-D closure (%%) | %.2f | %.2f | %.2f |\n", gx2.d3_pct_med,
-                gx2_200.d3_pct_med, gx2_100.d3_pct_med);
-        fprintf(ev.md, "| openshoe_gx2 (250 Hz) | median vertical (m) | %+.3f | %+.3f | %+.3f |\n", gx2.vert_med,
-                gx2_200.vert_med, gx2_100.vert_med);
-        fprintf(ev.md, "| footprints (200 Hz) | median final-stride error (%%) | %.2f | %.2f | %.2f |\n",
-                fp.final_pct_med, fp.final_pct_med, fp_100.final_pct_med);
+        if (gx2.n > 0) {
+            fprintf(ev.md, "| openshoe_gx2 (250 Hz) | median horizontal closure (%%) | %.2f | %.2f | %.2f |\n",
+                    gx2.h_pct_med, gx2_200.h_pct_med, gx2_100.h_pct_med);
+            fprintf(ev.md, "| openshoe_gx2 (250 Hz) | median 3-D closure (%%) | %.2f | %.2f | %.2f |\n", gx2.d3_pct_med,
+                    gx2_200.d3_pct_med, gx2_100.d3_pct_med);
+            fprintf(ev.md, "| openshoe_gx2 (250 Hz) | median vertical (m) | %+.3f | %+.3f | %+.3f |\n", gx2.vert_med,
+                    gx2_200.vert_med, gx2_100.vert_med);
+        }
+        if (fp.n > 0) {
+            fprintf(ev.md, "| footprints (200 Hz) | median final-stride error (%%) | %.2f | %.2f | %.2f |\n",
+                    fp.final_pct_med, fp.final_pct_med, fp_100.final_pct_med);
+        }
         {
-            char p[700], note[200];
-            hx_traj_t t;
-            hx_nav_summary_t s;
-            double r3[3];
             const double rates[2] = { 200.0, 100.0 };
-            for (i = 0; i < 2; i++) {
-                int k;
-                r3[0] = i ? xl.d3_pct_med : xs.d3_pct_med;
-                for (k = 0; k < 2; k++) {
-                    r3[k + 1] = (double)NAN;
-                    snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, i ? "long_walk.csv" : "short_walk.csv");
-                    if (replay(&ev, p, &c2, rates[k], &t, &s, note, sizeof note) == 0) {
-                        r3[k + 1] = s.end_3d_m;
-                        hx_traj_free(&t);
+            int k;
+            for (i = 0; i < nxio + nother; i++) {
+                char p[1000];
+                double r3[3];
+                if (i < nxio) {
+                    snprintf(p, sizeof p, "%s/xio_ngimu_gait/%.159s", ev.data, xio[i]);
+                    r3[0] = xio3[i];
+                } else {
+                    snprintf(p, sizeof p, "%s/%.300s", ev.data, other[i - nxio]);
+                    r3[0] = other3[i - nxio];
+                    if (!(other_hz[i - nxio] > 200.0)) {
+                        continue; /* not above the experiment's rates */
                     }
                 }
-                fprintf(ev.md, "| xio %s (400 Hz) | 3-D closure (m) | %.3f | %.3f | %.3f |\n", i ? "long" : "short",
-                        r3[0], r3[1], r3[2]);
+                for (k = 0; k < 2; k++) {
+                    r3[k + 1] = closure_3d_m(&ev, p, &c2, rates[k]);
+                }
+                if (i < nxio) {
+                    fprintf(ev.md, "| xio %s (~400 Hz) | 3-D closure (m) | %.3f | %.3f | %.3f |\n", xio[i], r3[0],
+                            r3[1], r3[2]);
+                } else {
+                    fprintf(ev.md, "| %s (%.0f Hz) | 3-D closure (m) | %.3f | %.3f | %.3f |\n", other[i - nxio],
+                            other_hz[i - nxio], r3[0], r3[1], r3[2]);
+                }
             }
         }
         fprintf(ev.md, "\n");
     }
     fprintf(ev.md, "## Targets\n\n| target | measured | status |\n|---|---|---|\n");
-    fprintf(ev.md, "| openshoe_gx2 horizontal median <= 0.35 %% | %.2f %% | %s |\n", gx2.h_pct_med, met(gx2.h_pct_med <= 0.35));
-    fprintf(ev.md, "| openshoe_gx2 3-D median <= 0.6 %% | %.2f %% | %s |\n", gx2.d3_pct_med, met(gx2.d3_pct_med <= 0.6));
-    fprintf(ev.md, "| openshoe_gx2 3-D worst <= 1.2 %% | %.2f %% | %s |\n", gx2.d3_pct_max, met(gx2.d3_pct_max <= 1.2));
-    fprintf(ev.md, "| footprints median final-stride error <= 2 %% | %.2f %% | %s |\n", fp.final_pct_med,
-            met(fp.final_pct_med <= 2.0));
-    fprintf(ev.md, "| xio short 3-D < 82 mm | %.0f mm | %s |\n", 1e3 * xs.d3_pct_med, met(xs.d3_pct_med < 0.082));
-    fprintf(ev.md, "| xio long 3-D < 421 mm | %.0f mm | %s |\n", 1e3 * xl.d3_pct_med, met(xl.d3_pct_med < 0.421));
-    fprintf(ev.md, "| ipol: no missed or spurious strides | %d missed, %d spurious | %s |\n", ip.missed, ip.spurious,
-            met(ip.missed == 0 && ip.spurious == 0));
-    fprintf(ev.md, "| ipol: median event timing error <= 2 samples | FO %.1f, FS %.1f | %s |\n", ip.fo_med, ip.fs_med,
-            met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
+    {
+        char v[96];
+        fprintf(ev.md, "| openshoe_gx2 horizontal median <= 0.35 %% | %s | %s |\n", fmt_pct(v, sizeof v, gx2.h_pct_med),
+                target(gx2.n, gx2.h_pct_med <= 0.35));
+        fprintf(ev.md, "| openshoe_gx2 3-D median <= 0.6 %% | %s | %s |\n", fmt_pct(v, sizeof v, gx2.d3_pct_med),
+                target(gx2.n, gx2.d3_pct_med <= 0.6));
+        fprintf(ev.md, "| openshoe_gx2 3-D worst <= 1.2 %% | %s | %s |\n", fmt_pct(v, sizeof v, gx2.d3_pct_max),
+                target(gx2.n, gx2.d3_pct_max <= 1.2));
+        fprintf(ev.md, "| footprints median final-stride error <= 2 %% | %s | %s |\n",
+                fmt_pct(v, sizeof v, fp.final_pct_med), target(fp.n, fp.final_pct_med <= 2.0));
+        fprintf(ev.md, "| xio short 3-D < 82 mm | %s | %s |\n", fmt_mm(v, sizeof v, xs),
+                target(isfinite(xs), xs < 0.082));
+        fprintf(ev.md, "| xio long 3-D < 421 mm | %s | %s |\n", fmt_mm(v, sizeof v, xl),
+                target(isfinite(xl), xl < 0.421));
+        fprintf(ev.md, "| ipol: no missed or spurious strides | %d missed, %d spurious | %s |\n", ip.missed,
+                ip.spurious, target(ip.trials, ip.missed == 0 && ip.spurious == 0));
+        if (ip.trials > 0) {
+            snprintf(v, sizeof v, "FO %.1f, FS %.1f", ip.fo_med, ip.fs_med);
+        } else {
+            snprintf(v, sizeof v, "-");
+        }
+        fprintf(ev.md, "| ipol: median event timing error <= 2 samples | %s | %s |\n", v,
+                target(ip.trials, ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
+    }
     hx_progress_end(&ev.prog);
     if (ev.md != stdout && fclose(ev.md) != 0) {
         hx_error("eval", "cannot write %s", out_path);
@@ -972,8 +1169,8 @@ int hx_cmd_eval(int argc, char **argv)
         jnum(j, "gx2_3d_pct_median", gx2.d3_pct_med);
         jnum(j, "gx2_3d_pct_worst", gx2.d3_pct_max);
         jnum(j, "gx2_vertical_m_median", gx2.vert_med);
-        jnum(j, "xio_short_3d_m", xs.d3_pct_med);
-        jnum(j, "xio_long_3d_m", xl.d3_pct_med);
+        jnum(j, "xio_short_3d_m", xs);
+        jnum(j, "xio_long_3d_m", xl);
         jnum(j, "footprints_final_pct_median", fp.final_pct_med);
         jnum(j, "footprints_final_pct_mean", fp.final_pct_mean);
         jnum(j, "vicon_stride_err_m_median", vi.stride_med);

@@ -663,6 +663,11 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
     }
 }
 
+int hx_nav_little_motion(const hx_nav_summary_t *s)
+{
+    return s->duration_s > 10.0 && s->stance_fraction > 0.9 && s->strides < 3;
+}
+
 void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const hx_nav_summary_t *s)
 {
     const fnav_nav_stats_t *st = &t->stats;
@@ -695,6 +700,12 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     fprintf(f, "heading change    %+.1f deg\n", s->heading_change_deg);
     fprintf(f, "stance            %ld strides, %ld stance phases, %.1f %% of frames with ZUPT\n", s->strides,
             s->stance_phases, 100.0 * s->stance_fraction);
+    if (hx_nav_little_motion(s)) {
+        fprintf(f, "note              almost no motion detected (%.0f %% of frames in stance, %ld strides in %.0f s): "
+                   "a still log, or motion too gentle for the foot-tuned detector (docs/navigation.md, \"Stance "
+                   "detector\")\n",
+                100.0 * s->stance_fraction, s->strides, s->duration_s);
+    }
     fprintf(f, "timing            %u duplicates (dt = 0), %u gaps, %u time jumps, longest interval %.1f ms\n",
             st->duplicates, st->gaps, st->time_jumps, 1e3 * (double)st->max_gap_seen_s);
     fprintf(f, "health            %u NaN/Inf rejected, %u backwards rejected, %u jitter, %u covariance resets, "

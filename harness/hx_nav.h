@@ -125,6 +125,11 @@ typedef struct {
     double stance_fraction;   /**< share of frames with the ZUPT flag */
 } hx_nav_summary_t;
 
+/** True when a log of more than 10 s shows almost no motion: over 90 % of
+ *  its frames in stance and fewer than three strides (a still log, or
+ *  motion too gentle for the foot-tuned detector). */
+int hx_nav_little_motion(const hx_nav_summary_t *s);
+
 /** Compute the summary of a trajectory. */
 void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s);
 

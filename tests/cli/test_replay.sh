@@ -90,6 +90,15 @@ head -400 vectors/nav/golden/gx2_walk2.csv > "$T/still.csv"
 expect_exit 0 "still log (no strides)" "$H" replay "$T/still.csv"
 expect_out "no step-to-step path for a percentage" "summary without a path says so"
 if grep -q "nan %" "$T/out"; then fail "summary of a still log prints nan"; else pass "no nan in the summary of a still log"; fi
+# 12 s of a sensor at rest (deterministic noise): the summary says that it saw no motion
+awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz";
+             for (k = 0; k < 1200; k++) printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", k / 100.0,
+                 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5), -9.80665 + 0.01 * (rand() - 0.5),
+                 0.001 * (rand() - 0.5), 0.001 * (rand() - 0.5), 0.001 * (rand() - 0.5) }' > "$T/rest12.csv"
+expect_exit 0 "12 s at rest" "$H" replay "$T/rest12.csv"
+expect_out "almost no motion detected" "a long log without motion is flagged in the summary"
+expect_exit 0 "a walk" "$H" replay vectors/walk.bin
+if grep -q "almost no motion" "$T/out"; then fail "a walk flagged as motionless"; else pass "a walk is not flagged as motionless"; fi
 printf 't,ax,ay,az,gx,gy,gz\n0.0,0,0,-9.8,0,0,0\n' > "$T/tiny.csv"
 expect_exit 1 "too short to align" "$H" replay "$T/tiny.csv"
 expect_err "no still period" "alignment failure explained"
@@ -106,6 +115,18 @@ if [ -n "$D" ]; then
         if grep -q "$s" "$T/results.md"; then pass "results.md has $s"; else fail "results.md lacks $s"; fi
     done
     if head -5 "$T/results.md" | grep -q "harness eval"; then pass "results.md names its command"; else fail "results.md command"; fi
+    # a data directory holding only part of the sets, no MANIFEST.md, and an
+    # xio walk under another name: evaluated on what is there, the rest "no data"
+    mkdir -p "$T/part/xio_ngimu_gait"
+    cp "$D/xio_ngimu_gait/short_walk.csv" "$T/part/xio_ngimu_gait/other_walk.csv"
+    cp "$D/xio_ngimu_gait/LICENSE.md" "$T/part/xio_ngimu_gait/"
+    expect_exit 0 "eval on a partial data directory" "$H" eval --no-experiments --data "$T/part" --out "$T/part.md"
+    if grep -q "| other_walk.csv |.*| no vendor figure |" "$T/part.md"; then pass "an unknown xio walk is evaluated"; else fail "unknown xio walk missing"; fi
+    if grep -q "LICENSE" "$T/part.md"; then fail "a licence file replayed as a walk"; else pass "licence files are not walks"; fi
+    if grep -q "| xio short 3-D < 82 mm | - | no data |" "$T/part.md" && grep -q "| ipol: no missed or spurious strides | .* | no data |" "$T/part.md"; then
+        pass "targets without their data say so"; else fail "targets without data judged"; fi
+    if grep -q "nan" "$T/part.md"; then fail "partial results print nan"; else pass "no nan in partial results"; fi
+    if grep -q "No walks found in .*openshoe_gx2" "$T/part.md"; then pass "missing sets named"; else fail "missing sets not named"; fi
 else
     echo "skip shared-data checks (no ../shared/data; set FNAV_DATA_DIR)"
 fi
