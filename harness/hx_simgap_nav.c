@@ -1896,8 +1896,13 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
     }
     for (k = 0; k < nv->nloc; k++) {
         const sg_loc_t *L = &nv->loc[k];
-        fprintf(f, "  gap: navigation %s, t %.1f-%.1f s, %.1f sigma %s the twin\n", kind_name(L->kind), L->x_lo,
-                L->x_hi, fabs(L->peak_z), L->peak_z > 0 ? "above" : "below");
+        if (L->dom == SG_LATTICE) { /* a channel's lattice statistic, not a navigation point */
+            fprintf(f, "  gap: lattice %s, step %.4g, %.1f sigma %s the twin\n", sg_channel_name(L->ch), L->x_lo,
+                    fabs(L->peak_z), L->peak_z > 0 ? "above" : "below");
+        } else {
+            fprintf(f, "  gap: navigation %s, t %.1f-%.1f s, %.1f sigma %s the twin\n", kind_name(L->kind), L->x_lo,
+                    L->x_hi, fabs(L->peak_z), L->peak_z > 0 ? "above" : "below");
+        }
     }
     if (nv->nsteps > 0) {
         fprintf(f, "attribution (innovation regression on the fit stances; held out: objective change and its z):\n");
