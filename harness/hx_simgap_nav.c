@@ -466,7 +466,7 @@ static double lattice_val(const walk_t *w, int ch, long a, long b, double q)
 
 /* ------------------------------------------------------------ state */
 
-#define NAV_MAX_CAND 8
+#define NAV_MAX_CAND 16 /* the three linear families, a flat top and a lattice per channel */
 
 /** A walk-domain candidate: effect with the channels and values fitted. */
 typedef struct {
@@ -484,6 +484,7 @@ typedef struct {
     double Q0_hold;              /* held-out objective without the effect (dispersion-scaled) */
     int n_fit, n_hold;           /* stances used */
     int simulated;
+    int joined;                  /* a lattice or flat top that joined the selected one (same effect, its channel) */
     double G_fit, G_hold, dG_hold, z, t_hold, t_mean, t_sd, expl, expl_lo, expl_hi;
 } navcand_t;
 
@@ -1719,9 +1720,40 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
         st->selected = nord > 0 ? order[0] : -1;
         nv->nsteps = st->ncand > 0 ? 1 : 0;
         if (nord > 0) {
+            int k4;
             nv->sel[0] = st->cand[order[0]];
             nv->sel_expl[0] = st->cand[order[0]].expl;
             nv->nsel = 1;
+            /* a lattice or a flat top is a property of each channel, tested
+             * on that channel alone: when one is selected, every other
+             * channel whose own lattice (flat top) passed joins it, one
+             * effect over several channels (a sensor quantises all six) */
+            if (nv->sel[0].id == FNAV_EFFECT_QUANT || nv->sel[0].id == FNAV_EFFECT_SATURATION) {
+                for (k4 = 1; k4 < nord && nv->sel[0].npar < 24; k4++) {
+                    navcand_t *o = &st->cand[order[k4]];
+                    if (o->id == nv->sel[0].id) {
+                        nv->sel[0].ch[nv->sel[0].npar] = o->ch[0];
+                        nv->sel[0].k[nv->sel[0].npar] = o->k[0];
+                        nv->sel[0].val[nv->sel[0].npar] = o->val[0];
+                        nv->sel[0].npar++;
+                        o->joined = 1;
+                    }
+                }
+                for (k4 = 1; k4 < nv->sel[0].npar; k4++) { /* in channel order */
+                    navcand_t *m = &nv->sel[0];
+                    int k5;
+                    for (k5 = k4; k5 > 0 && m->ch[k5 - 1] > m->ch[k5]; k5--) {
+                        int tc = m->ch[k5], tk = m->k[k5];
+                        double tvl = m->val[k5];
+                        m->ch[k5] = m->ch[k5 - 1];
+                        m->k[k5] = m->k[k5 - 1];
+                        m->val[k5] = m->val[k5 - 1];
+                        m->ch[k5 - 1] = tc;
+                        m->k[k5 - 1] = tk;
+                        m->val[k5 - 1] = tvl;
+                    }
+                }
+            }
         }
         /* further steps: the other linear families refitted given the
          * selected ones (their clean twins carry them) */
@@ -1760,7 +1792,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
         }
         /* twins of the top effect: the navigation gap before and after */
         if (nv->nsel > 0) {
-            navcand_t *cd = &st->cand[order[0]];
+            navcand_t *cd = &nv->sel[0], *top = &st->cand[order[0]];
             double *tv[SG_NSEG];
             int okv = 1;
             for (g = 0; g < SG_NSEG; g++) {
@@ -1775,11 +1807,10 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                     nv->twin_f[g] = tv[g];
                 }
                 if (okv) {
-                    cd->simulated = 1;
-                    cd->G_fit = nv->cmp_final[SG_FIT].G;
-                    cd->G_hold = nv->cmp_final[SG_HOLD].G;
-                    cd->dG_hold = nv->cmp[SG_HOLD].G - cd->G_hold;
-                    nv->sel[0] = *cd;
+                    cd->simulated = top->simulated = 1;
+                    cd->G_fit = top->G_fit = nv->cmp_final[SG_FIT].G;
+                    cd->G_hold = top->G_hold = nv->cmp_final[SG_HOLD].G;
+                    cd->dG_hold = top->dG_hold = nv->cmp[SG_HOLD].G - cd->G_hold;
                 }
             } else {
                 for (g = 0; g < SG_NSEG; g++) {
@@ -1911,7 +1942,8 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
         for (j = 0; j < nv->step[i].ncand; j++) {
             const navcand_t *cd = &nv->step[i].cand[j];
             cand_text(b, sizeof b, cd);
-            fprintf(f, "  %c %-52s fit %.1f; held out: %+.1f, z %+.1f", j == nv->step[i].selected ? '*' : ' ', b,
+            fprintf(f, "  %c %-52s fit %.1f; held out: %+.1f, z %+.1f",
+                    j == nv->step[i].selected ? '*' : (cd->joined ? '+' : ' '), b,
                     cd->dQ, cd->dQ_hold, cd->z_hold);
             if (cd->expl == cd->expl) {
                 fprintf(f, ", explains %.0f %% of the held-out innovation excess", 100.0 * cd->expl);
@@ -2085,6 +2117,7 @@ cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r)
         for (j = 0; j < nv->step[i].ncand; j++) {
             cJSON *co = cand_json(&nv->step[i].cand[j]);
             cJSON_AddBoolToObject(co, "selected", j == nv->step[i].selected);
+            cJSON_AddBoolToObject(co, "joined", nv->step[i].cand[j].joined != 0);
             cJSON_AddItemToArray(ca, co);
         }
         cJSON_AddItemToArray(a, s);

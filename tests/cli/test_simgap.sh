@@ -124,12 +124,14 @@ expect_exit 0 "walk log" "$H" simgap "$T/w.csv" --quiet --seeds 6 --json "$T/w.j
 json "$T/w.json" 'j["log"]["domain"] == "walk" and j["log"]["domain_from"] == "detected" and j["navigation"]["stances_held_out"] >= 10 and "model_gap" in j["navigation"] and j["verdict"]["answer"] == "none"' &&
     pass "walk detected, navigation domain in the JSON, no sensor effect claimed" || fail "walk JSON: $(cat "$T/pyerr")"
 [ -s "$T/wp/innovations.png" ] && pass "innovation plot" || fail "innovation plot: $(ls "$T/wp" 2>&1)"
-# a walk on a gz lattice: the summary names the lattice as such, not as a
-# navigation point at t 0
-"$H" sim --motion walk --duration 40 --rate 100 --profile mtx --seed 4 --effect quant:ch=gz:lsb=0.002 --out "$T/wq.csv" >/dev/null 2>&1 || fail "sim walk with quantisation"
-expect_exit 0 "walk log on a lattice" "$H" simgap "$T/wq.csv" --seeds 4 --max-effects 0
+# a walk on gyro lattices: the summary names the lattice as such, not as a
+# navigation point at t 0; every gyro's lattice is selected, not the top one's alone
+"$H" sim --motion walk --duration 40 --rate 100 --profile mtx --seed 4 --effect quant:ch=gyro:lsb=0.002 --out "$T/wq.csv" >/dev/null 2>&1 || fail "sim walk with quantisation"
+expect_exit 0 "walk log on a lattice" "$H" simgap "$T/wq.csv" --seeds 4 --json "$T/wq.json"
 expect_out "gap: lattice gz, step 0.002" "a walk's lattice gap is named as a lattice"
 if grep -q "gap: navigation nis_first, t 0.0-0.0" "$T/out"; then fail "lattice gap printed as a navigation point"; else pass "no lattice gap printed as a navigation point"; fi
+json "$T/wq.json" 'sorted(p["channel"] for p in j["navigation"]["selected"][0]["params"]) == ["gx", "gy", "gz"] and j["navigation"]["selected"][0]["effect"] == "quant"' &&
+    pass "the three gyros' lattices selected together" || fail "walk lattice selection: $(cat "$T/pyerr")"
 "$H" sim --motion walk --duration 12 --rate 100 --profile mtx --seed 5 --out "$T/w2.csv" >/dev/null 2>&1 || fail "sim short walk"
 expect_exit 1 "short walk" "$H" simgap "$T/w2.csv" --quiet --seeds 4 --json "$T/w2.json"
 json "$T/w2.json" 'j["verdict"]["answer"] == "too-short" and "stances" in j["too_short"]' &&
