@@ -61,7 +61,7 @@ struct hx_reader {
 
     /* text */
     char line[HX_LINE_MAX];
-    char delim;                 /* ',' '\t' or ' ' (any whitespace) */
+    char delim;                 /* ',' '\t' ';' or ' ' (any whitespace) */
     int col_t, col_a[3], col_g[3], col_temp, col_aux;
     int ncols_needed;
     double acc_scale, gyr_scale;
@@ -287,6 +287,11 @@ static int read_line(hx_reader_t *r)
     }
     r->stats.lines++;
     n = strlen(r->line);
+    if (r->stats.lines == 1 && n >= 3 && memcmp(r->line, "\xef\xbb\xbf", 3) == 0) {
+        /* a UTF-8 byte-order mark, as Windows tools write it: not data */
+        memmove(r->line, r->line + 3, n - 2);
+        n -= 3;
+    }
     r->last_line_open = (n == 0 || r->line[n - 1] != '\n');
     if (n == sizeof r->line - 1 && r->line[n - 1] != '\n' && !gzeof(r->gz)) {
         set_err(r, "%s:%ld: line longer than %d characters", r->path, r->stats.lines, HX_LINE_MAX - 1);
@@ -311,10 +316,15 @@ static int blank(const char *s)
 static hx_format_t detect(const unsigned char *b, size_t n)
 {
     char text[600];
-    size_t m = n < sizeof text - 1 ? n : sizeof text - 1;
+    size_t m;
     if (n >= 4 && memcmp(b, HX_BIN_MAGIC, 4) == 0) {
         return HX_FMT_BIN;
     }
+    if (n >= 3 && memcmp(b, "\xef\xbb\xbf", 3) == 0) {
+        b += 3; /* UTF-8 byte-order mark (read_line drops it too) */
+        n -= 3;
+    }
+    m = n < sizeof text - 1 ? n : sizeof text - 1;
     memcpy(text, b, m);
     text[m] = '\0';
     if (strstr(text, "Inertial data") != NULL || strstr(text, "a_x [g]") != NULL) {
@@ -388,6 +398,15 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
             return -1;
         }
     } while (blank(r->line));
+    if (r->meta.format == HX_FMT_CSV && strchr(r->line, ',') == NULL) {
+        /* the interchange format is comma-separated; a spreadsheet's
+         * tab- or semicolon-separated export is read the same way */
+        if (strchr(r->line, '\t') != NULL) {
+            r->delim = '\t';
+        } else if (strchr(r->line, ';') != NULL) {
+            r->delim = ';';
+        }
+    }
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     r->ncols_needed = 0;
     for (i = 0; i < 8; i++) {

@@ -81,6 +81,26 @@ expect_err "nan.csv:2: column 7 ('nan') is NaN or Inf" "NaN names file, line and
 printf 't,ax,ay,az\n0,0,0,-9.8\n' >"$T/cols.csv"
 expect_exit 1 "missing columns" "$H" info "$T/cols.csv"
 expect_err "cols.csv:1: header has no column 'gx'" "missing column named"
+# --- spreadsheet exports: a UTF-8 byte-order mark, tab or semicolon separators
+"$H" convert vectors/walk.bin "$T/a.csv" 2>/dev/null
+"$H" info "$T/a.csv" >"$T/ref" 2>/dev/null
+{ printf '\357\273\277'; cat "$T/a.csv"; } >"$T/bom.csv"
+tr ',' '\t' <"$T/a.csv" >"$T/tab.csv"
+tr ',' ';' <"$T/a.csv" >"$T/semi.csv"
+for v in bom tab semi; do
+    if "$H" info "$T/$v.csv" >"$T/out" 2>"$T/err" &&
+       grep -v '^file' "$T/out" >"$T/o1" && grep -v '^file' "$T/ref" >"$T/o2" && cmp -s "$T/o1" "$T/o2"; then
+        pass "$v.csv reads as the comma-separated original"
+    else
+        fail "$v.csv"; cat "$T/err"
+    fi
+done
+{ printf '\357\273\277'; head -3 "$T/a.csv"; } >"$T/bom3.csv"
+expect_exit 0 "BOM on a short log" "$H" info "$T/bom3.csv"
+expect_out "samples     2" "BOM: the header is a header, not a bad line"
+tr ',.' ';,' <"$T/a.csv" >"$T/deccomma.csv"
+expect_exit 1 "decimal commas" "$H" info "$T/deccomma.csv"
+expect_err "deccomma.csv:2: column 2 ('-4,84234142') is not a number" "decimal comma named"
 : >"$T/empty.csv"
 expect_exit 1 "empty file" "$H" info "$T/empty.csv"
 expect_err "empty" "empty file said"
