@@ -85,6 +85,7 @@ static const param_t k_params[] = {
     { "settle_tau", P_REAL, 1.0, "settling time constant, s" },
     { "zaru", P_INT, 1.0, "zero-angular-rate updates 0/1" },
     { "zaru_sigma_dps", P_REAL, 3.14159265358979323846 / 180.0, "ZARU noise, deg/s" },
+    { "realign_min_s", P_REAL, 1.0, "renew the alignment on still periods this long before the first stride, s (0: off)" },
     { "tilt_sd_deg", P_REAL, 3.14159265358979323846 / 180.0, "initial roll/pitch sd, deg" },
     { "yaw_sd_deg", P_REAL, 3.14159265358979323846 / 180.0, "initial yaw sd, deg" },
     { "gyro_bias_sd_dps", P_REAL, 3.14159265358979323846 / 180.0, "initial sd of the AR(1) gyro bias states, deg/s" },
@@ -126,6 +127,7 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     if (strcmp(key, "settle_tau") == 0) return &c->settle_tau_s;
     if (strcmp(key, "zaru") == 0) return &c->zaru;
     if (strcmp(key, "zaru_sigma_dps") == 0) return &c->zaru_sigma_rps;
+    if (strcmp(key, "realign_min_s") == 0) return &c->realign_min_s;
     if (strcmp(key, "tilt_sd_deg") == 0) return &c->tilt_sd_rad;
     if (strcmp(key, "yaw_sd_deg") == 0) return &c->yaw_sd_rad;
     if (strcmp(key, "gyro_bias_sd_dps") == 0) return &c->gyro_bias_sd_rps;
@@ -682,9 +684,13 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
         fprintf(f, "alignment         NOT ALIGNED (no still period)\n");
         return;
     }
-    fprintf(f, "alignment         %.2f s still: roll %.2f deg, pitch %.2f deg, |f| %.4f m/s^2\n",
+    fprintf(f, "alignment         %.2f s still: roll %.2f deg, pitch %.2f deg, |f| %.4f m/s^2",
             (double)t->align.duration_s, (double)t->align.euler_rad.v[0] * 180.0 / M_PI,
             (double)t->align.euler_rad.v[1] * 180.0 / M_PI, (double)fnav_vec3_norm(t->align.accel_mean_mps2));
+    if (st->realigned > 0u) {
+        fprintf(f, " (renewed %u time%s before the first stride)", st->realigned, st->realigned == 1u ? "" : "s");
+    }
+    fprintf(f, "\n");
     fprintf(f, "distance          %.2f m step-to-step (%.2f m horizontal), %.2f m integrated\n", s->path_m,
             s->path_h_m, s->integrated_path_m);
     if (isfinite(s->end_h_pct) && isfinite(s->end_3d_pct)) {
@@ -761,6 +767,7 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddItemToObject(h, "longest_interval_s", num((double)st->max_gap_seen_s));
     cJSON_AddNumberToObject(h, "zupts", st->zupts);
     cJSON_AddNumberToObject(h, "zarus", st->zarus);
+    cJSON_AddNumberToObject(h, "realigned", st->realigned);
     cJSON_AddNumberToObject(h, "chol_jitter", st->chol_jitter);
     cJSON_AddNumberToObject(h, "chol_reset", st->chol_reset);
     cJSON_AddNumberToObject(h, "steps_undone", st->diverged);

@@ -264,3 +264,37 @@ fnav_status_t fnav_align_finish(fnav_align_t *al)
     }
     return FNAV_E_STATE;
 }
+
+void fnav_align_renew_start(fnav_align_t *al)
+{
+    FNAV_ASSERT(al != NULL);
+    reset_period(&al->cur);
+}
+
+int fnav_align_renew(fnav_align_t *al, const fnav_sample_t *s, int still, fnav_real_t stat, fnav_real_t min_s,
+                     fnav_align_result_t *out)
+{
+    fnav_align_period_t *c;
+    fnav_real_t lstat = FNAV_R(0.0);
+    int ended = 0, ok = 0;
+    if (al == NULL || s == NULL || out == NULL) {
+        return 0;
+    }
+    c = &al->cur;
+    if (still && stat > FNAV_R(0.0) && fnav_isfinite(stat)) {
+        lstat = fnav_log10(stat);
+        /* the ratio test of fnav_align_push */
+        ended = c->n > 0 && lstat > mean_log_stat(c) + fnav_log10(al->cfg.still_ratio);
+    }
+    if (still && !ended) {
+        add_sample(c, s, lstat);
+        ended = duration_s(c) >= al->cfg.max_still_s;
+    } else {
+        ended = 1;
+    }
+    if (ended) {
+        ok = c->n >= 2 && duration_s(c) >= min_s && period_result(al, c, out) == FNAV_OK;
+        reset_period(c);
+    }
+    return ok;
+}

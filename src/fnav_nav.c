@@ -26,6 +26,7 @@ const fnav_nav_config_t fnav_nav_config_default = {
     FNAV_R(0.03),       /* settle_tau_s */
     0,                  /* zaru */
     FNAV_R(0.01),       /* zaru_sigma_rps */
+    FNAV_R(3.0),        /* realign_min_s: docs/navigation.md, "Initial alignment" */
     FNAV_R(0.5) * D2R,  /* tilt_sd_rad */
     FNAV_R(0.001),      /* yaw_sd_rad */
     FNAV_R(0.01) * D2R, /* gyro_bias_sd_rps */
@@ -87,7 +88,7 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
         !fnav_isfinite(cfg->tilt_sd_rad) || !fnav_isfinite(cfg->yaw_sd_rad) || !fnav_isfinite(cfg->gyro_bias_sd_rps) ||
         !fnav_isfinite(cfg->accel_bias_sd_mps2) || !fnav_isfinite(cfg->max_gap_s) ||
         !(cfg->diverge_speed_mps > FNAV_R(0.0)) || !fnav_isfinite(cfg->diverge_speed_mps) ||
-        cfg->diverge_undone == 0u) {
+        cfg->diverge_undone == 0u || !(cfg->realign_min_s >= FNAV_R(0.0)) || !fnav_isfinite(cfg->realign_min_s)) {
         return FNAV_E_CONFIG;
     }
     for (b = 0; b < sizeof *nav; b++) {
@@ -185,6 +186,37 @@ static void start_filter(fnav_nav_t *nav)
     }
     nav->undone_run = 0;
     nav->aligned = 1;
+    /* the walker may stand on: keep measuring the still periods */
+    nav->renewing = nav->cfg.realign_min_s > FNAV_R(0.0);
+    fnav_align_renew_start(&nav->align);
+}
+
+/* Before the first stride, a clean still period of at least realign_min_s
+ * that ends renews the alignment: roll, pitch and the biases from it, the
+ * position and heading held (the alignment defines neither). The bias a
+ * MEMS gyro has just after power-on drifts by several hundredths of a
+ * degree per second in the first seconds, so the stillness just before the
+ * walk is the better measurement (docs/navigation.md, "Initial alignment").
+ * 1 when the filter was restarted at this sample. */
+static int renew_alignment(fnav_nav_t *nav, const fnav_stance_out_t *o)
+{
+    fnav_vec3_t e;
+    int i;
+    /* written only with a renewal (no copy on the step's stack) */
+    if (!fnav_align_renew(&nav->align, &o->sample, o->stance, o->stat, nav->cfg.realign_min_s,
+                          &nav->align.result)) {
+        return 0;
+    }
+    e = fnav_ukf_euler(&nav->ukf);
+    nav->hold_pos_m = nav->ukf.pos_m;
+    nav->hold_yaw_rad = e.v[2];
+    for (i = 0; i < 3; i++) {
+        nav->hold_pos_var_m2[i] = fnav_ukf_cov(&nav->ukf, FNAV_UKF_P + i, FNAV_UKF_P + i);
+    }
+    nav->have_hold = 1;
+    start_filter(nav);
+    nav->stats.realigned++;
+    return 1;
 }
 
 void fnav_nav_reset(fnav_nav_t *nav)
@@ -350,6 +382,12 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
          * with the next interval */
         if (o->stance) {
             dt_used = FNAV_R(0.0);
+        }
+    } else if (nav->renewing) {
+        if (o->events & FNAV_STANCE_EV_STRIDE) {
+            nav->renewing = 0;
+        } else if (renew_alignment(nav, o) && o->stance) {
+            dt_used = FNAV_R(0.0); /* as at the first alignment */
         }
     }
     if (dt_used > FNAV_R(0.0)) {

@@ -1,6 +1,7 @@
 /* fnav_nav: configuration, timing (duplicates, gaps, jumps, time going
  * backwards), NaN rejection, the push/pop/step/run contracts, the landing
- * settling state's start at every stance onset, object sizes,
+ * settling state's start at every stance onset, the alignment's renewal
+ * before the first stride, object sizes,
  * the golden replays of vectors/nav/golden (any change fails), and the
  * float32-versus-float64 agreement on every real walk of the shared data
  * (vectors/nav/double_reference.csv, from gen_double_reference.py). */
@@ -354,6 +355,77 @@ static void test_settle_not_at_alignment(void **state)
     assert_int_equal(starts, 1);
 }
 
+/* The renewal of the alignment before the first stride: a foot that stands
+ * 10 s whose gyro z bias steps from 0.002 to 0.004 rad/s at 5 s (a power-on
+ * drift, which the AR(1) states cannot follow and no ZUPT observes), then
+ * two strides and 7 s of standing. The alignment completes at 5 s on the
+ * first bias; the still period 5-10 s ends at the first swing and renews
+ * it (bias 0.004, position and heading held); after the first stride the
+ * long stillness renews nothing. With realign_min_s = 0 the first bias
+ * stays. */
+static fnav_sample_t renew_walk(long k)
+{
+    fnav_sample_t s = still(k);
+    s.gyro_rps[2] = (fnav_real_t)(k < 1000 ? 0.002 : 0.004);
+    if ((k >= 2000 && k < 2080) || (k >= 2400 && k < 2480)) {
+        s.gyro_rps[1] = FNAV_R(2.0);
+        s.accel_mps2[0] = FNAV_R(1.0);
+    }
+    return s;
+}
+
+static void test_realign(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    int pass;
+    (void)state;
+    c.stance.rate_hz = FNAV_R(200.0);
+    assert_true(c.realign_min_s > FNAV_R(0.0));
+    for (pass = 0; pass < 2; pass++) {
+        long k;
+        double bz_before = 0.0, bz_after = 0.0, pos_at = 1.0, yaw_before = 0.0, yaw_at = 1.0;
+        uint32_t renewed_at_stride = 99u;
+        if (pass == 1) {
+            c.realign_min_s = FNAV_R(0.0);
+        }
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+        for (k = 0; k < 2480 + 1400; k++) {
+            fnav_sample_t s = renew_walk(k);
+            assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+            while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+                if ((long)fr.seq == 1990) {
+                    bz_before = (double)fr.gyro_bias_rps[2];
+                    yaw_before = (double)fr.euler_rad[2];
+                }
+                if ((long)fr.seq == 2000) {
+                    bz_after = (double)fr.gyro_bias_rps[2];
+                    yaw_at = (double)fr.euler_rad[2];
+                    double x = (double)fr.pos_m[0], y = (double)fr.pos_m[1], z = (double)fr.pos_m[2];
+                    pos_at = sqrt(x * x + y * y + z * z);
+                }
+                if ((fr.flags & FNAV_FRAME_STRIDE) != 0u && renewed_at_stride == 99u) {
+                    renewed_at_stride = nav.stats.realigned;
+                }
+            }
+        }
+        /* the first alignment's bias, 0.002 rad/s, up to the first swing */
+        assert_true(fabs(bz_before - 0.002) < 2.0e-4);
+        assert_true(pos_at < 1.0e-3);
+        assert_true(fabs(yaw_at - yaw_before) < 1.0e-3);
+        assert_int_equal(renewed_at_stride, pass == 0 ? 1u : 0u);
+        assert_int_equal(nav.stats.realigned, pass == 0 ? 1u : 0u); /* none after the stride */
+        if (pass == 0) {
+            assert_true(fabs(bz_after - 0.004) < 2.0e-4);
+            /* the renewed alignment: 5-10 s less the detector's window at the swing */
+            assert_true((double)nav.align.result.duration_s > 4.9 && (double)nav.align.result.duration_s <= 5.0);
+        } else {
+            assert_true(fabs(bz_after - 0.002) < 2.0e-4);
+        }
+    }
+}
+
 /* Memory: the filter object within 8 KB in float32 (the limit). */
 static void test_sizes(void **state)
 {
@@ -586,6 +658,7 @@ int main(void)
         cmocka_unit_test(test_run_port),
         cmocka_unit_test(test_settle_onsets),
         cmocka_unit_test(test_settle_not_at_alignment),
+        cmocka_unit_test(test_realign),
         cmocka_unit_test(test_sizes),
         cmocka_unit_test(test_resampler),
         cmocka_unit_test(test_golden_replays),

@@ -132,6 +132,21 @@ FNAV_WARN_UNUSED fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_samp
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_finish(fnav_align_t *al);
 
+/** Start measuring again after the alignment (the renewal, below); the
+ *  alignment result is kept. */
+void fnav_align_renew_start(fnav_align_t *al);
+
+/**
+ * Renewal: after the alignment, while the foot has not walked yet, the
+ * still periods go on being measured with the same rules (the ratio test,
+ * max_still_s). When a period ends with at least min_s of clean stillness,
+ * its alignment is written to *out, which is not touched otherwise (out
+ * may be &al->result).
+ * @return 1 with *out, 0 otherwise (also for NULL arguments).
+ */
+int fnav_align_renew(fnav_align_t *al, const fnav_sample_t *s, int still, fnav_real_t stat, fnav_real_t min_s,
+                     fnav_align_result_t *out);
+
 /** Compute an alignment from a mean specific force, mean rate and gravity
  *  (the formulas of the file comment). FNAV_E_RANGE if |f| is zero. */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_from_means(fnav_vec3_t f_mean, fnav_vec3_t w_mean, fnav_real_t gravity_mps2,

@@ -84,6 +84,9 @@ typedef struct {
     fnav_real_t settle_tau_s;          /**< settling time constant, s */
     int zaru;                          /**< 1: zero-angular-rate updates in stance */
     fnav_real_t zaru_sigma_rps;        /**< ZARU noise, rad/s */
+    fnav_real_t realign_min_s;         /**< until the first stride, every clean still period of at
+                                            least this long renews the alignment; 0: off
+                                            (docs/navigation.md, "Initial alignment") */
     fnav_real_t tilt_sd_rad;           /**< initial roll/pitch standard deviation, rad */
     fnav_real_t yaw_sd_rad;            /**< initial yaw standard deviation, rad (yaw is defined 0) */
     fnav_real_t gyro_bias_sd_rps;      /**< initial sd of the AR(1) gyro bias states, rad/s */
@@ -112,6 +115,7 @@ typedef struct {
     uint32_t stance_samples; /**< samples decided as stance */
     uint32_t zupts;          /**< ZUPT updates applied */
     uint32_t zarus;          /**< ZARU updates applied */
+    uint32_t realigned;      /**< alignments renewed before the first stride */
     uint32_t strides;        /**< completed swings */
     uint32_t chol_jitter, chol_reset, diverged, update_reject; /**< UKF health */
     uint32_t cov_guard;      /**< covariance guard interventions (fnav_ukf.h) */
@@ -136,6 +140,7 @@ typedef struct {
     uint32_t undone_run;    /**< consecutive undone filter steps */
     int prev_stance;        /**< the previous frame was decided stance */
     int settle_pending;     /**< a stance began: start the settling state at its first ZUPT */
+    int renewing;           /**< aligned, no stride yet: still periods renew the alignment */
     int have_hold;          /**< a reset holds the last good position and heading */
     fnav_vec3_t hold_pos_m; /**< position carried over a reset, n frame, m */
     fnav_real_t hold_yaw_rad; /**< heading carried over a reset, rad */
