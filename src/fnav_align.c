@@ -204,11 +204,25 @@ static void add_sample(fnav_align_period_t *p, const fnav_sample_t *s, fnav_real
     }
 }
 
+/* The ratio test: 1 when a still sample's statistic left the noise floor
+ * of period c (a decade above its running geometric mean by default): the
+ * clean stillness ends. *lstat = log10 of the statistic (0 when unusable). */
+static int left_floor(const fnav_align_t *al, const fnav_align_period_t *c, int still, fnav_real_t stat,
+                      fnav_real_t *lstat)
+{
+    *lstat = FNAV_R(0.0);
+    if (!(still && stat > FNAV_R(0.0) && fnav_isfinite(stat))) {
+        return 0;
+    }
+    *lstat = fnav_log10(stat);
+    return c->n > 0 && *lstat > mean_log_stat(c) + fnav_log10(al->cfg.still_ratio);
+}
+
 fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_sample_t *s, int still, fnav_real_t stat)
 {
     fnav_align_period_t *c;
-    fnav_real_t lstat = FNAV_R(0.0);
-    int ratio_break = 0;
+    fnav_real_t lstat;
+    int ratio_break;
     if (al == NULL || s == NULL) {
         return FNAV_E_ARG;
     }
@@ -216,12 +230,7 @@ fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_sample_t *s, int stil
         return FNAV_E_STATE;
     }
     c = &al->cur;
-    if (still && stat > FNAV_R(0.0) && fnav_isfinite(stat)) {
-        lstat = fnav_log10(stat);
-        if (c->n > 0 && lstat > mean_log_stat(c) + fnav_log10(al->cfg.still_ratio)) {
-            ratio_break = 1; /* the statistic left the noise floor: the clean stillness ends */
-        }
-    }
+    ratio_break = left_floor(al, c, still, stat, &lstat);
     if (!still || ratio_break) {
         if (c->n >= 2 && duration_s(c) >= al->cfg.min_still_s) {
             return complete(al, c);
@@ -275,17 +284,13 @@ int fnav_align_renew(fnav_align_t *al, const fnav_sample_t *s, int still, fnav_r
                      fnav_align_result_t *out)
 {
     fnav_align_period_t *c;
-    fnav_real_t lstat = FNAV_R(0.0);
-    int ended = 0, ok = 0;
+    fnav_real_t lstat;
+    int ended, ok = 0;
     if (al == NULL || s == NULL || out == NULL) {
         return 0;
     }
     c = &al->cur;
-    if (still && stat > FNAV_R(0.0) && fnav_isfinite(stat)) {
-        lstat = fnav_log10(stat);
-        /* the ratio test of fnav_align_push */
-        ended = c->n > 0 && lstat > mean_log_stat(c) + fnav_log10(al->cfg.still_ratio);
-    }
+    ended = left_floor(al, c, still, stat, &lstat);
     if (still && !ended) {
         add_sample(c, s, lstat);
         ended = duration_s(c) >= al->cfg.max_still_s;

@@ -191,6 +191,27 @@ static void start_filter(fnav_nav_t *nav)
     fnav_align_renew_start(&nav->align);
 }
 
+/* Hold the last frame's position, heading and position variance for the
+ * next start_filter (a reset, a renewed alignment), if that frame is a
+ * good one. */
+static void hold_last_frame(fnav_nav_t *nav)
+{
+    const fnav_nav_frame_t *g = &nav->last;
+    int good = (g->flags & FNAV_FRAME_ALIGNED) != 0u;
+    int i;
+    for (i = 0; i < 3; i++) {
+        good = good && fnav_isfinite(g->pos_m[i]) && fnav_isfinite(g->p_diag[FNAV_UKF_P + i]);
+    }
+    if (good) {
+        nav->hold_pos_m = fnav_vec3(g->pos_m[0], g->pos_m[1], g->pos_m[2]);
+        nav->hold_yaw_rad = fnav_isfinite(g->euler_rad[2]) ? g->euler_rad[2] : FNAV_R(0.0);
+        for (i = 0; i < 3; i++) {
+            nav->hold_pos_var_m2[i] = g->p_diag[FNAV_UKF_P + i];
+        }
+        nav->have_hold = 1;
+    }
+}
+
 /* Before the first stride, a clean still period of at least realign_min_s
  * that ends renews the alignment: roll, pitch and the biases from it, the
  * position and heading held (the alignment defines neither). The bias a
@@ -200,20 +221,12 @@ static void start_filter(fnav_nav_t *nav)
  * 1 when the filter was restarted at this sample. */
 static int renew_alignment(fnav_nav_t *nav, const fnav_stance_out_t *o)
 {
-    fnav_vec3_t e;
-    int i;
     /* written only with a renewal (no copy on the step's stack) */
     if (!fnav_align_renew(&nav->align, &o->sample, o->stance, o->stat, nav->cfg.realign_min_s,
                           &nav->align.result)) {
         return 0;
     }
-    e = fnav_ukf_euler(&nav->ukf);
-    nav->hold_pos_m = nav->ukf.pos_m;
-    nav->hold_yaw_rad = e.v[2];
-    for (i = 0; i < 3; i++) {
-        nav->hold_pos_var_m2[i] = fnav_ukf_cov(&nav->ukf, FNAV_UKF_P + i, FNAV_UKF_P + i);
-    }
-    nav->have_hold = 1;
+    hold_last_frame(nav); /* the state before this sample */
     start_filter(nav);
     nav->stats.realigned++;
     return 1;
@@ -222,24 +235,10 @@ static int renew_alignment(fnav_nav_t *nav, const fnav_stance_out_t *o)
 void fnav_nav_reset(fnav_nav_t *nav)
 {
     fnav_status_t st;
-    int i;
     FNAV_ASSERT(nav != NULL);
     if (nav->aligned) {
-        /* hold the last good frame's position and heading: the state that
-         * triggered the reset is the diverged one */
-        const fnav_nav_frame_t *g = &nav->last;
-        int good = (g->flags & FNAV_FRAME_ALIGNED) != 0u;
-        for (i = 0; i < 3; i++) {
-            good = good && fnav_isfinite(g->pos_m[i]) && fnav_isfinite(g->p_diag[FNAV_UKF_P + i]);
-        }
-        if (good) {
-            nav->hold_pos_m = fnav_vec3(g->pos_m[0], g->pos_m[1], g->pos_m[2]);
-            nav->hold_yaw_rad = fnav_isfinite(g->euler_rad[2]) ? g->euler_rad[2] : FNAV_R(0.0);
-            for (i = 0; i < 3; i++) {
-                nav->hold_pos_var_m2[i] = g->p_diag[FNAV_UKF_P + i];
-            }
-            nav->have_hold = 1;
-        }
+        /* the state that triggered the reset is the diverged one */
+        hold_last_frame(nav);
     }
     nav->aligned = 0;
     nav->undone_run = 0;
