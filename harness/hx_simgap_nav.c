@@ -464,6 +464,17 @@ static double lattice_val(const walk_t *w, int ch, long a, long b, double q)
     }
 }
 
+/* The score lattice_val gives a segment of b - a samples all of whose
+ * differences lie on the lattice (a quantiser's twin): R = b - a - 1. */
+static double lattice_full(long a, long b)
+{
+    double R = (double)(b - a - 1);
+    if (!(R > 0.0)) {
+        return -8.0;
+    }
+    return R > 30.0 ? sqrt(2.0 * R - log(4.0 * M_PI * R)) : gsl_cdf_ugaussian_Qinv(exp(-R));
+}
+
 /* ------------------------------------------------------------ state */
 
 #define NAV_MAX_CAND 16 /* the three linear families, a flat top and a lattice per channel */
@@ -504,6 +515,7 @@ struct sg_nav {
     double ar1_tau[SG_NCH], ar1_sig[SG_NCH];
     int from_profile;
     double q[SG_NCH], qz[SG_NCH];/* lattice */
+    double q_fit[SG_NCH], q_full[SG_NCH], q_base[SG_NCH]; /* its fit-segment score: real, a quantiser's, the baseline twins' */
     double sat[SG_NCH];          /* saturation plateau found (0: none) */
     int nsat[SG_NCH];
     double (*tf)[3], (*tw)[3];   /* twin truth samples in use: specific force, angular rate */
@@ -641,6 +653,14 @@ static void means_to_inst(const double (*m)[3], long n, double (*x)[3])
             }
         }
     }
+}
+
+/* A channel's lattice is a quantiser's when its fit-segment score is nearer
+ * what a quantiser's twin gives than what the baseline twins give (both
+ * set with the attribution; before it, or without a lattice: no). */
+static int lattice_complete(const sg_nav_t *nv, int c)
+{
+    return nv->q[c] > 0.0 && fabs(nv->q_fit[c] - nv->q_full[c]) < fabs(nv->q_fit[c] - nv->q_base[c]);
 }
 
 /* Apply one candidate's values to a configuration (every element of a
@@ -1507,6 +1527,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
             x[k] = c < 3 ? log->acc[k][c] : log->gyr[k][c - 3];
         }
         nv->q[c] = sg_lattice_step(x, (size_t)r->n, &nv->qz[c]);
+        nv->q_fit[c] = nv->q_full[c] = nv->q_base[c] = (double)NAN;
         if (!(nv->qz[c] > gsl_cdf_ugaussian_Qinv(0.5 * alpha / SG_NCH))) {
             nv->q[c] = 0.0;
         }
@@ -1670,8 +1691,32 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                 st->cand[st->ncand++] = cd;
             }
         }
+        for (c = 0; c < SG_NCH; c++) {
+            /* a quantiser puts every difference on its lattice; a channel
+             * whose values are only partly coherent with the step (the
+             * NGIMU's calibrated gx and gz, printed to 7 digits) is not one,
+             * and twins that quantise it overshoot its score (xio long:
+             * real 42 and 11, quantised twins 150, the baseline's 1): a
+             * candidate needs a fit-segment score nearer the quantiser's
+             * than the baseline twins' */
+            long fa = r->segs.start[SG_FIT][0], fb = fa + r->segs.n[SG_FIT][0];
+            size_t j;
+            nv->q_fit[c] = nv->q_full[c] = nv->q_base[c] = (double)NAN;
+            if (!(nv->q[c] > 0.0)) {
+                continue;
+            }
+            nv->q_fit[c] = lattice_val(&rw, c, fa, fb, nv->q[c]);
+            nv->q_full[c] = lattice_full(fa, fb);
+            nv->q_base[c] = 0.0; /* N(0, 1) for continuous values */
+            for (j = 0; j < nv->pl[SG_FIT].n; j++) {
+                if (nv->pl[SG_FIT].p[j].dom == SG_LATTICE && nv->pl[SG_FIT].p[j].ch == c &&
+                    nv->cmp[SG_FIT].twin_mean != NULL) {
+                    nv->q_base[c] = nv->cmp[SG_FIT].twin_mean[j];
+                }
+            }
+        }
         for (c = 0; c < SG_NCH && st->ncand < NAV_MAX_CAND; c++) {
-            if (nv->q[c] > 0.0) {
+            if (lattice_complete(nv, c)) {
                 navcand_t cd;
                 memset(&cd, 0, sizeof cd);
                 cd.id = FNAV_EFFECT_QUANT;
@@ -1903,7 +1948,12 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
             nv->inst ? "instantaneous values" : "interval means", nv->G_fit_conv[0], nv->G_fit_conv[1]);
     for (c = 0; c < SG_NCH; c++) {
         if (nv->q[c] > 0.0) {
-            fprintf(f, "  %s lies on a lattice of step %.4g (z %.0f)\n", sg_channel_name(c), nv->q[c], nv->qz[c]);
+            fprintf(f, "  %s lies on a lattice of step %.4g (z %.0f)", sg_channel_name(c), nv->q[c], nv->qz[c]);
+            if (nv->q_fit[c] == nv->q_fit[c] && !lattice_complete(nv, c)) {
+                fprintf(f, ", only partly (fit-segment score %.0f; a quantiser's %.0f, the twins' %.0f): not a quantiser",
+                        nv->q_fit[c], nv->q_full[c], nv->q_base[c]);
+            }
+            fputc('\n', f);
         }
         if (nv->sat[c] > 0.0) {
             fprintf(f, "  %s reaches %.4g %d times (flat tops)\n", sg_channel_name(c), nv->sat[c], nv->nsat[c]);
@@ -2084,6 +2134,20 @@ cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r)
     w = cJSON_AddObjectToObject(o, "white_density");
     for (c = 0; c < SG_NCH; c++) {
         add_num(w, sg_channel_name(c), nv->white[c]);
+    }
+    a = cJSON_AddArrayToObject(o, "lattices");
+    for (c = 0; c < SG_NCH; c++) {
+        if (nv->q[c] > 0.0) {
+            cJSON *lo = cJSON_CreateObject();
+            cJSON_AddStringToObject(lo, "channel", sg_channel_name(c));
+            add_num(lo, "step", nv->q[c]);
+            add_num(lo, "z", nv->qz[c]);
+            add_num(lo, "fit_score", nv->q_fit[c]);
+            add_num(lo, "quantiser_score", nv->q_full[c]);
+            add_num(lo, "twin_score", nv->q_base[c]);
+            cJSON_AddBoolToObject(lo, "quantiser", lattice_complete(nv, c));
+            cJSON_AddItemToArray(a, lo);
+        }
     }
     a = cJSON_AddObjectToObject(o, "gap");
     for (g = 0; g < SG_NSEG; g++) {

@@ -132,6 +132,25 @@ expect_out "gap: lattice gz, step 0.002" "a walk's lattice gap is named as a lat
 if grep -q "gap: navigation nis_first, t 0.0-0.0" "$T/out"; then fail "lattice gap printed as a navigation point"; else pass "no lattice gap printed as a navigation point"; fi
 json "$T/wq.json" 'sorted(p["channel"] for p in j["navigation"]["selected"][0]["params"]) == ["gx", "gy", "gz"] and j["navigation"]["selected"][0]["effect"] == "quant"' &&
     pass "the three gyros' lattices selected together" || fail "walk lattice selection: $(cat "$T/pyerr")"
+json "$T/wq.json" 'all(l["quantiser"] for l in j["navigation"]["lattices"] if l["channel"] in ("gx", "gy", "gz"))' &&
+    pass "a quantiser's lattices are complete" || fail "walk lattices: $(cat "$T/pyerr")"
+# a real walk with one quantised gyro and two gyros only partly on a fine
+# lattice (x-io NGIMU, long walk: gy on 0.06 deg/s; gx and gz coherent with
+# about 5 urad/s mainly at small rates): only gy is a quantiser, the others
+# are named as partial lattices and not simulated (a quantiser's twins would
+# overshoot their score and widen the held-out gap)
+. "$(dirname "$0")/datadir.sh"
+if [ -n "$D" ] && [ -f "$D/xio_ngimu_gait/long_walk.csv" ]; then
+    expect_exit 0 "NGIMU long walk" "$H" simgap "$D/xio_ngimu_gait/long_walk.csv" --closed --quiet --seeds 4 --json "$T/xl.json"
+    expect_out "gx lies on a lattice of step 4.9" "NGIMU gx lattice reported"
+    grep -q "^  gx lies on a lattice.*only partly.*not a quantiser" "$T/out" && pass "gx named a partial lattice" || fail "gx lattice line: $(grep 'gx lies' "$T/out")"
+    json "$T/xl.json" '[(s["effect"], [p["channel"] for p in s["params"]]) for s in j["navigation"]["selected"]] == [("quant", ["gy"])] and [l["channel"] for l in j["navigation"]["lattices"] if not l["quantiser"]] == ["gx", "gz"] and all(l["fit_score"] < 0.5 * l["quantiser_score"] for l in j["navigation"]["lattices"] if not l["quantiser"])' &&
+        pass "only gy's lattice selected as quant" || fail "NGIMU lattices: $(cat "$T/pyerr")"
+    json "$T/xl.json" 'any(c["effect"] == "quant" and c["selected"] and c["G_held_out"] < j["navigation"]["steps"][0]["G_held_out_before"] for c in j["navigation"]["steps"][0]["candidates"])' &&
+        pass "gy's quantiser lowers the held-out navigation gap" || fail "NGIMU held-out gap: $(cat "$T/pyerr")"
+else
+    echo "SKIP NGIMU lattice test (shared data not found; set FNAV_DATA_DIR)"
+fi
 "$H" sim --motion walk --duration 12 --rate 100 --profile mtx --seed 5 --out "$T/w2.csv" >/dev/null 2>&1 || fail "sim short walk"
 expect_exit 1 "short walk" "$H" simgap "$T/w2.csv" --quiet --seeds 4 --json "$T/w2.json"
 json "$T/w2.json" 'j["verdict"]["answer"] == "too-short" and "stances" in j["too_short"]' &&
