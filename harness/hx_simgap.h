@@ -175,6 +175,10 @@ double sg_lattice_step(const double *x, size_t n, double *z);
  *  at step q: exactly N(0, 1) for a continuous signal, large on a lattice. */
 double sg_lattice_z(const double *x, size_t n, double q);
 
+/** Normal score of a Rayleigh statistic R (exponential under the null):
+ *  Phi^-1(1 - exp(-R)), asymptotic for large R; -8 for R <= 0. */
+double sg_rayleigh_z(double R);
+
 /* ------------------------------------------------------------ gap */
 
 /** Comparison of one segment's real values with S twins. */

@@ -444,15 +444,6 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, i
     return cnt;
 }
 
-/* Normal score of the Rayleigh statistic R (exponential for continuous values). */
-static double lattice_score(double R)
-{
-    if (!(R > 0.0)) {
-        return -8.0;
-    }
-    return R > 30.0 ? sqrt(2.0 * R - log(4.0 * M_PI * R)) : gsl_cdf_ugaussian_Qinv(exp(-R));
-}
-
 /* Lattice point of channel ch over samples [a, b). */
 static double lattice_val(const walk_t *w, int ch, long a, long b, double q)
 {
@@ -464,14 +455,14 @@ static double lattice_val(const walk_t *w, int ch, long a, long b, double q)
         c += cos(ph);
         s += sin(ph);
     }
-    return lattice_score(b - a > 1 ? (c * c + s * s) / (double)(b - a - 1) : 0.0);
+    return sg_rayleigh_z(b - a > 1 ? (c * c + s * s) / (double)(b - a - 1) : 0.0);
 }
 
 /* The score lattice_val gives a segment of b - a samples all of whose
  * differences lie on the lattice (a quantiser's twin): R = b - a - 1. */
 static double lattice_full(long a, long b)
 {
-    return lattice_score((double)(b - a - 1));
+    return sg_rayleigh_z((double)(b - a - 1));
 }
 
 /* ------------------------------------------------------------ state */

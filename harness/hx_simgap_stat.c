@@ -211,9 +211,7 @@ static void time_stats(const sg_acc_t *a, double v[SG_TIME_NKIND])
     v[SG_TIME_STEP] = (mad > 0.0 && big > 0.0) ? log(big / mad) : 0.0;
 }
 
-/* Normal score of a Rayleigh statistic R (exponential under the null):
- * z = Phi^-1(1 - exp(-R)), with the asymptotic form for large R. */
-static double rayleigh_z(double R)
+double sg_rayleigh_z(double R)
 {
     if (!(R > 0.0)) {
         return -8.0;
@@ -339,7 +337,7 @@ long sg_acc_finish(sg_acc_t *a, int ch, sg_plist_t *pl, double *vals, size_t cap
         if (cnt >= cap) {
             return -1;
         }
-        vals[cnt++] = rayleigh_z(R);
+        vals[cnt++] = sg_rayleigh_z(R);
         if (pl != NULL) {
             memset(&p, 0, sizeof p);
             p.dom = SG_LATTICE;
@@ -535,7 +533,7 @@ double sg_lattice_z(const double *x, size_t n, double q)
         c += cos(ph);
         s += sin(ph);
     }
-    return rayleigh_z((c * c + s * s) / (double)(n - 1));
+    return sg_rayleigh_z((c * c + s * s) / (double)(n - 1));
 }
 
 static int cmp_dbl(const void *a, const void *b)
