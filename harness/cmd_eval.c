@@ -116,7 +116,7 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
     ev->runs++;
     hx_progress_update(&ev->prog, (double)ev->runs);
     note[0] = '\0';
-    if (rc < 0 || t->n == 0) {
+    if (rc < 0 || rc == 2 || t->n == 0) { /* 2: not in SI units */
         hx_warn("eval", "%s: %s", path, err);
         ev->failures++;
         hx_traj_free(t);

@@ -98,6 +98,9 @@ int hx_cmd_replay(int argc, char **argv)
     } else if (rc == 1) {
         hx_error("replay", "%s (frames before it were written)", err);
         exit_code = HX_EXIT_DATA;
+    } else if (rc == 2) {
+        hx_error("replay", "%s; outputs were still written, computed from the values as given", err);
+        exit_code = HX_EXIT_DATA;
     }
     hx_nav_summarize(&traj, &sum);
     if (!hx_flag(&a, "--quiet")) {

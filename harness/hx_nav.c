@@ -400,6 +400,7 @@ typedef struct {
     double total;
     long n_read;
     int sink_failed;
+    double gyro_max_rps; /* largest |w| read: the units check */
 } hx_port_ctx_t;
 
 static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
@@ -429,6 +430,11 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
         st = c->linux_port.read_sample(c->linux_port.ctx, s);
     }
     if (st == FNAV_OK) {
+        double w2 = (double)s->gyro_rps[0] * (double)s->gyro_rps[0] + (double)s->gyro_rps[1] * (double)s->gyro_rps[1] +
+                    (double)s->gyro_rps[2] * (double)s->gyro_rps[2];
+        if (w2 > c->gyro_max_rps * c->gyro_max_rps) {
+            c->gyro_max_rps = sqrt(w2);
+        }
         c->n_read++;
         if (c->progress && (c->n_read & 1023) == 0) {
             /* resampled: samples of a known total; streamed: the fraction of
@@ -475,6 +481,46 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 {
     hx_port_ctx_t *c = (hx_port_ctx_t *)ctx;
     c->linux_port.log(c->linux_port.ctx, level, msg);
+}
+
+/* Input that is not in the SI units of docs/log-format.md navigates into
+ * nonsense without any error of the reader: a log in g aligns on |f| = 1,
+ * one in deg/s turns 57 times too fast, time in milliseconds makes 100 Hz
+ * a 0.1 Hz log. Each leaves a mark no real foot-mounted IMU leaves: 2 when
+ * one is found (err says which and what to do), else 0. */
+#define HX_GRAVITY_TOL 0.25    /* |f| at rest within 25 % of gravity (a few % for any MEMS part) */
+#define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
+#define HX_RATE_MIN_HZ 20.0    /* below this, no stance lasts more than a few samples */
+static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_rps, double in_rate_hz, char *err,
+                       size_t err_size)
+{
+    double g = (double)nav->cfg.gravity_mps2, rate = in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz;
+    if (nav->aligned) {
+        double fn = (double)fnav_vec3_norm(nav->align.result.accel_mean_mps2);
+        if (fabs(fn / g - 1.0) > HX_GRAVITY_TOL) {
+            snprintf(err, err_size,
+                     "%s: the accelerometer reads |f| = %.4g at rest, where gravity is %.4g m/s^2: the log is not in "
+                     "m/s^2%s (docs/log-format.md)",
+                     path, fn, g, fabs(fn * 9.80665 / g - 1.0) < HX_GRAVITY_TOL ? " but in g (multiply by 9.80665)" : "");
+            return 2;
+        }
+    }
+    if (gyro_max_rps > HX_GYRO_MAX_RPS) {
+        snprintf(err, err_size,
+                 "%s: the gyroscope reaches %.4g rad/s, beyond the range of any MEMS gyro (about %.0f rad/s = 4000 "
+                 "deg/s): the log is not in rad/s%s (docs/log-format.md)",
+                 path, gyro_max_rps, HX_GYRO_MAX_RPS,
+                 gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS ? " but probably in deg/s (multiply by pi/180)" : "");
+        return 2;
+    }
+    if (rate > 0.0 && rate < HX_RATE_MIN_HZ) {
+        snprintf(err, err_size,
+                 "%s: the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the time "
+                 "stamps in seconds? (in milliseconds, divide by 1000; docs/log-format.md)",
+                 path, 1.0 / rate, rate, HX_RATE_MIN_HZ);
+        return 2;
+    }
+    return 0;
 }
 
 int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_rate, const fnav_nav_config_t *cfg,
@@ -564,6 +610,12 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         hx_reader_close(r);
     }
     hx_log_free(&res);
+    if (rc == 0) {
+        /* wrong units are also why a log never looks still */
+        int u = units_check(path, &nav, pc.gyro_max_rps, traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0,
+                            err, err_size);
+        rc = u != 0 ? u : rc;
+    }
     if (rc == 0 && !nav.aligned) {
         snprintf(err, err_size, "%s: no still period of %.2f s found for the initial alignment", path,
                  (double)cfg->align.min_still_s);

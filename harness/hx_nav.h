@@ -100,8 +100,10 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, hx_log_t *out, long *dup
  * @param progress  show a progress indicator
  * @param err       message on failure
  * @return 0 complete; 1 the input had an error after some samples (frames up
- *         to it are valid, err says why); -1 nothing could be replayed;
- *         -3 the CSV sink failed.
+ *         to it are valid, err says why); 2 complete, but the input is
+ *         not in SI units (|f| at rest far from gravity, a rate beyond any
+ *         MEMS gyro, samples more than 1/20 s apart; err says which);
+ *         -1 nothing could be replayed; -3 the CSV sink failed.
  */
 int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_rate, const fnav_nav_config_t *cfg,
                   double rate_hz, FILE *csv, hx_traj_t *traj, int progress, char *err, size_t err_size);

@@ -102,6 +102,24 @@ if grep -q "almost no motion" "$T/out"; then fail "a walk flagged as motionless"
 printf 't,ax,ay,az,gx,gy,gz\n0.0,0,0,-9.8,0,0,0\n' > "$T/tiny.csv"
 expect_exit 1 "too short to align" "$H" replay "$T/tiny.csv"
 expect_err "no still period" "alignment failure explained"
+# a walk in the wrong units navigates into nonsense without a reader error:
+# each mistake is named with its remedy, exit 1, and the outputs are still
+# written (from the values as given)
+awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_g.csv"
+expect_exit 1 "accelerometer in g" "$H" replay "$T/in_g.csv" --json "$T/in_g.json"
+expect_err "not in m/s^2 but in g (multiply by 9.80665)" "a log in g is named as such"
+[ -s "$T/in_g.json" ] && pass "JSON written for a log in g" || fail "no JSON for a log in g"
+awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.7g,%.7g,%.7g\n", $1, $2, $3, $4, $5 * 57.29578, $6 * 57.29578, $7 * 57.29578 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_deg.csv"
+expect_exit 1 "gyroscope in deg/s" "$H" replay "$T/in_deg.csv" --quiet
+expect_err "probably in deg/s (multiply by pi/180)" "a log in deg/s is named as such"
+awk -F, 'NR == 1 { print; next } { printf "%.3f,%s,%s,%s,%s,%s,%s\n", $1 * 1000, $2, $3, $4, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_ms.csv"
+expect_exit 1 "time in milliseconds" "$H" replay "$T/in_ms.csv" --out "$T/in_ms_traj.csv"
+expect_err "are the time stamps in seconds" "time stamps in ms are named as such"
+rows=$(($(wc -l < "$T/in_ms_traj.csv") - 1))
+[ "$rows" -gt 1000 ] && pass "trajectory written for a log in ms ($rows frames)" || fail "trajectory of a log in ms: $rows frames"
 
 # --- shared data: a truncated last line, and eval
 if [ -n "$D" ]; then
