@@ -6,6 +6,7 @@
 
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_nav.h"
 
 static const hx_opt_t k_opts[] = {
     HX_INPUT_OPTS,
@@ -36,6 +37,8 @@ typedef struct {
     double peak[6];
     double g_vec[3], g_mag, still_t_s, gyro_rest[3];
     int g_axis;
+    int units_bad;     /* not SI units (hx_units_problem) */
+    char units[320];   /* why, and the remedy */
 } info_t;
 
 /* Clipping at full scale leaves flat tops at the channel's extreme value,
@@ -160,6 +163,12 @@ static void analyse(const hx_log_t *log, info_t *in)
             in->still_t_s = 1e-9 * (double)(log->t_ns[best] - log->t_ns[0]);
         }
     }
+    {
+        double wmax = in->peak[3] > in->peak[4] ? in->peak[3] : in->peak[4];
+        wmax = wmax > in->peak[5] ? wmax : in->peak[5];
+        /* the rate is not judged here: a static log for the Allan variance may be slow */
+        in->units_bad = hx_units_problem(in->g_mag, 9.80665, wmax, 0.0, in->units, sizeof in->units);
+    }
 }
 
 static int write_json(const char *path, const hx_log_t *log, const info_t *in)
@@ -198,6 +207,11 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
         cJSON_AddStringToObject(j, "gravity_axis", axis);
     }
     cJSON_AddItemToObject(j, "gyro_at_rest_rps", cJSON_CreateDoubleArray(in->gyro_rest, 3));
+    if (in->units_bad) {
+        cJSON_AddStringToObject(j, "units_problem", in->units);
+    } else {
+        cJSON_AddNullToObject(j, "units_problem");
+    }
     cJSON_AddNumberToObject(j, "still_window_start_s", in->still_t_s);
     cJSON_AddBoolToObject(j, "complete", log->status == FNAV_END);
     if (log->status != FNAV_END) {
@@ -264,6 +278,9 @@ int hx_cmd_info(int argc, char **argv)
            in.g_vec[in.g_axis] >= 0.0 ? '+' : '-', 'x' + in.g_axis, in.g_mag, in.g_mag / 9.80665, in.g_vec[0],
            in.g_vec[1], in.g_vec[2], in.still_t_s);
     printf("            gyro (%.5f, %.5f, %.5f) rad/s\n", in.gyro_rest[0], in.gyro_rest[1], in.gyro_rest[2]);
+    if (in.units_bad) {
+        printf("units       NOT SI: %s\n", in.units);
+    }
     if (log.status != FNAV_END) {
         printf("incomplete  %s\n", log.error);
         exit_code = HX_EXIT_DATA;

@@ -486,38 +486,49 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 /* Input that is not in the SI units of docs/log-format.md navigates into
  * nonsense without any error of the reader: a log in g aligns on |f| = 1,
  * one in deg/s turns 57 times too fast, time in milliseconds makes 100 Hz
- * a 0.1 Hz log. Each leaves a mark no real foot-mounted IMU leaves: 2 when
- * one is found (err says which and what to do), else 0. */
+ * a 0.1 Hz log. Each leaves a mark no real foot-mounted IMU leaves. */
 #define HX_GRAVITY_TOL 0.25    /* |f| at rest within 25 % of gravity (a few % for any MEMS part) */
 #define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
 #define HX_RATE_MIN_HZ 20.0    /* below this, no stance lasts more than a few samples */
+int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz, char *msg,
+                     size_t msg_size)
+{
+    double g = gravity_mps2;
+    if (f_rest_mps2 > 0.0 && fabs(f_rest_mps2 / g - 1.0) > HX_GRAVITY_TOL) {
+        snprintf(msg, msg_size,
+                 "the accelerometer reads |f| = %.4g at rest, where gravity is %.4g m/s^2: the log is not in m/s^2%s "
+                 "(docs/log-format.md)",
+                 f_rest_mps2, g,
+                 fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL ? " but in g (multiply by 9.80665)" : "");
+        return 1;
+    }
+    if (gyro_max_rps > HX_GYRO_MAX_RPS) {
+        snprintf(msg, msg_size,
+                 "the gyroscope reaches %.4g rad/s, beyond the range of any MEMS gyro (about %.0f rad/s = 4000 "
+                 "deg/s): the log is not in rad/s%s (docs/log-format.md)",
+                 gyro_max_rps, HX_GYRO_MAX_RPS,
+                 gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS ? " but probably in deg/s (multiply by pi/180)" : "");
+        return 1;
+    }
+    if (rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ) {
+        snprintf(msg, msg_size,
+                 "the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the time "
+                 "stamps in seconds? (in milliseconds, divide by 1000; docs/log-format.md)",
+                 1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ);
+        return 1;
+    }
+    return 0;
+}
+
+/* 2 when the replayed log is not in SI units (err says why), else 0. */
 static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_rps, double in_rate_hz, char *err,
                        size_t err_size)
 {
-    double g = (double)nav->cfg.gravity_mps2, rate = in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz;
-    if (nav->aligned) {
-        double fn = (double)fnav_vec3_norm(nav->align.result.accel_mean_mps2);
-        if (fabs(fn / g - 1.0) > HX_GRAVITY_TOL) {
-            snprintf(err, err_size,
-                     "%s: the accelerometer reads |f| = %.4g at rest, where gravity is %.4g m/s^2: the log is not in "
-                     "m/s^2%s (docs/log-format.md)",
-                     path, fn, g, fabs(fn * 9.80665 / g - 1.0) < HX_GRAVITY_TOL ? " but in g (multiply by 9.80665)" : "");
-            return 2;
-        }
-    }
-    if (gyro_max_rps > HX_GYRO_MAX_RPS) {
-        snprintf(err, err_size,
-                 "%s: the gyroscope reaches %.4g rad/s, beyond the range of any MEMS gyro (about %.0f rad/s = 4000 "
-                 "deg/s): the log is not in rad/s%s (docs/log-format.md)",
-                 path, gyro_max_rps, HX_GYRO_MAX_RPS,
-                 gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS ? " but probably in deg/s (multiply by pi/180)" : "");
-        return 2;
-    }
-    if (rate > 0.0 && rate < HX_RATE_MIN_HZ) {
-        snprintf(err, err_size,
-                 "%s: the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the time "
-                 "stamps in seconds? (in milliseconds, divide by 1000; docs/log-format.md)",
-                 path, 1.0 / rate, rate, HX_RATE_MIN_HZ);
+    char msg[320];
+    double fn = nav->aligned ? (double)fnav_vec3_norm(nav->align.result.accel_mean_mps2) : 0.0;
+    if (hx_units_problem(fn, (double)nav->cfg.gravity_mps2, gyro_max_rps,
+                         in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz, msg, sizeof msg) != 0) {
+        snprintf(err, err_size, "%s: %s", path, msg);
         return 2;
     }
     return 0;

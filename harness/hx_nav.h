@@ -87,6 +87,13 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, hx_log_t *out, long *dup
 
 /* ------------------------------------------------------------ replay */
 
+/** Whether a log's values look like SI units (docs/harness.md, "Units
+ *  check"): |f| at rest within 25 % of gravity (0: not known), no rate above
+ *  70 rad/s, samples at least 20 per second (0: not known). 1 with the
+ *  mistake and its remedy in msg, else 0. */
+int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz, char *msg,
+                     size_t msg_size);
+
 /**
  * Replay one log through the Linux port into a navigator, sample by sample.
  * @param cmd       command name for messages

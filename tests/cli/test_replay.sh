@@ -114,6 +114,10 @@ awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.7g,%.7g,%.7g\n", $1, $2
     vectors/nav/golden/gx2_walk2.csv > "$T/in_deg.csv"
 expect_exit 1 "gyroscope in deg/s" "$H" replay "$T/in_deg.csv" --quiet
 expect_err "probably in deg/s (multiply by pi/180)" "a log in deg/s is named as such"
+expect_exit 0 "info on a log in deg/s" "$H" info "$T/in_deg.csv"
+expect_out "units       NOT SI: .*probably in deg/s" "info names the units too"
+expect_exit 0 "info on a log in SI units" "$H" info vectors/nav/golden/gx2_walk2.csv
+if grep -q "NOT SI" "$T/out"; then fail "an SI log flagged by info"; else pass "an SI log is not flagged by info"; fi
 awk -F, 'NR == 1 { print; next } { printf "%.3f,%s,%s,%s,%s,%s,%s\n", $1 * 1000, $2, $3, $4, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_ms.csv"
 expect_exit 1 "time in milliseconds" "$H" replay "$T/in_ms.csv" --out "$T/in_ms_traj.csv"
