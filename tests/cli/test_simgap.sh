@@ -124,6 +124,11 @@ expect_exit 0 "walk log" "$H" simgap "$T/w.csv" --quiet --seeds 6 --json "$T/w.j
 json "$T/w.json" 'j["log"]["domain"] == "walk" and j["log"]["domain_from"] == "detected" and j["navigation"]["stances_held_out"] >= 10 and "model_gap" in j["navigation"] and j["verdict"]["answer"] == "none"' &&
     pass "walk detected, navigation domain in the JSON, no sensor effect claimed" || fail "walk JSON: $(cat "$T/pyerr")"
 [ -s "$T/wp/innovations.png" ] && pass "innovation plot" || fail "innovation plot: $(ls "$T/wp" 2>&1)"
+# the same walk with its accelerometer in g: named before any work, exit 1
+awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5, $6, $7 }' \
+    "$T/w.csv" > "$T/wg.csv"
+expect_exit 1 "walk in g" "$H" simgap "$T/wg.csv" --quiet --seeds 4
+expect_err "not in m/s^2 but in g" "a walk in g is named as such"
 # a walk on gyro lattices: the summary names the lattice as such, not as a
 # navigation point at t 0; every gyro's lattice is selected, not the top one's alone
 "$H" sim --motion walk --duration 40 --rate 100 --profile mtx --seed 4 --effect quant:ch=gyro:lsb=0.002 --out "$T/wq.csv" >/dev/null 2>&1 || fail "sim walk with quantisation"
