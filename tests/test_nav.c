@@ -34,6 +34,13 @@ static fnav_sample_t still(long k)
     return s;
 }
 
+/* A sample of the synthetic swing: 2 rad/s of pitch rate, 1 m/s^2 forward. */
+static void swing(fnav_sample_t *s)
+{
+    s->gyro_rps[1] = FNAV_R(2.0);
+    s->accel_mps2[0] = FNAV_R(1.0);
+}
+
 static void test_config(void **state)
 {
     static fnav_nav_t nav;
@@ -192,8 +199,7 @@ static fnav_status_t mem_read(void *ctx, fnav_sample_t *s)
     }
     *s = still(m->i);
     if (m->i > 250 && m->i < 330) {
-        s->gyro_rps[1] = FNAV_R(2.0); /* some motion */
-        s->accel_mps2[0] = FNAV_R(1.0);
+        swing(s); /* some motion */
     }
     m->i++;
     return FNAV_OK;
@@ -250,8 +256,7 @@ static fnav_sample_t settle_walk(long k)
     fnav_sample_t s = still(k);
     long ph = k - 400;
     if (ph >= 0 && ph % 200 < 80) {
-        s.gyro_rps[1] = FNAV_R(2.0);
-        s.accel_mps2[0] = FNAV_R(1.0);
+        swing(&s);
     }
     return s;
 }
@@ -332,8 +337,7 @@ static void test_settle_not_at_alignment(void **state)
     for (k = 0; k < 1400 + 80 + 200; k++) {
         fnav_sample_t s = still(k);
         if (k >= 1400 && k < 1480) {
-            s.gyro_rps[1] = FNAV_R(2.0);
-            s.accel_mps2[0] = FNAV_R(1.0);
+            swing(&s);
         }
         assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
         while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
@@ -368,8 +372,7 @@ static fnav_sample_t renew_walk(long k)
     fnav_sample_t s = still(k);
     s.gyro_rps[2] = (fnav_real_t)(k < 1000 ? 0.002 : 0.004);
     if ((k >= 2000 && k < 2080) || (k >= 2400 && k < 2480)) {
-        s.gyro_rps[1] = FNAV_R(2.0);
-        s.accel_mps2[0] = FNAV_R(1.0);
+        swing(&s);
     }
     return s;
 }
