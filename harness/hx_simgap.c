@@ -1189,6 +1189,53 @@ static void verdict(sg_result_t *r)
     }
 }
 
+/* Units (docs/harness.md, "Units check"): the rest value of |f| is its
+ * median over the tenth of the samples that rotate least (the stances of a
+ * walk; any of a static log). A walk in other units would be navigated into
+ * nonsense: -1 with err set. A static log's Allan and PSD analysis only
+ * carries the wrong unit labels (and a slow rate is no mistake there): a
+ * warning, 0. */
+static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t *r, char *err, size_t err_size)
+{
+    double *wm = (double *)malloc(log->n * sizeof *wm), *fm = (double *)malloc(log->n * sizeof *fm);
+    double wmax = 0.0, wq;
+    char msg[320];
+    size_t k, nf = 0;
+    int bad;
+    if (wm == NULL || fm == NULL) {
+        free(wm);
+        free(fm);
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    for (k = 0; k < log->n; k++) {
+        wm[k] = sqrt(log->gyr[k][0] * log->gyr[k][0] + log->gyr[k][1] * log->gyr[k][1] +
+                     log->gyr[k][2] * log->gyr[k][2]);
+        wmax = wm[k] > wmax ? wm[k] : wmax;
+    }
+    memcpy(fm, wm, log->n * sizeof *fm);
+    qsort(fm, log->n, sizeof *fm, hx_cmp_double);
+    wq = fm[log->n / 10];
+    for (k = 0; k < log->n; k++) {
+        if (wm[k] <= wq) {
+            fm[nf++] = sqrt(log->acc[k][0] * log->acc[k][0] + log->acc[k][1] * log->acc[k][1] +
+                            log->acc[k][2] * log->acc[k][2]);
+        }
+    }
+    qsort(fm, nf, sizeof *fm, hx_cmp_double);
+    bad = hx_units_problem(fm[nf / 2], 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, msg, sizeof msg);
+    free(wm);
+    free(fm);
+    if (bad && r->domain == 2) {
+        snprintf(err, err_size, "%s", msg);
+        return -1;
+    }
+    if (bad && !r->opts.quiet) {
+        hx_warn("simgap", "%s: %s", path, msg);
+    }
+    return 0;
+}
+
 int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_result_t *r, char *err, size_t err_size)
 {
     double t0 = hx_now_s();
@@ -1212,49 +1259,8 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
     r->duration_s = (double)r->n / r->rate_hz;
     r->domain_detected = sg_detect_domain(log, r->rate_hz);
     r->domain = o->domain != 0 ? o->domain : r->domain_detected;
-    {
-        /* units (docs/harness.md, "Units check"): the rest value of |f| is
-         * its median over the tenth of the samples that rotate least (the
-         * stances of a walk; any of a static log); a walk in other units
-         * would be navigated into nonsense, so it is an error; a static
-         * log's Allan and PSD analysis only carries the wrong unit labels
-         * (and a slow rate is no mistake there) */
-        double *wm = (double *)malloc(log->n * sizeof *wm), *fm = (double *)malloc(log->n * sizeof *fm);
-        double wmax = 0.0, wq;
-        char msg[320];
-        size_t k, nf = 0;
-        if (wm == NULL || fm == NULL) {
-            free(wm);
-            free(fm);
-            snprintf(err, err_size, "out of memory");
-            return -1;
-        }
-        for (k = 0; k < log->n; k++) {
-            wm[k] = sqrt(log->gyr[k][0] * log->gyr[k][0] + log->gyr[k][1] * log->gyr[k][1] +
-                         log->gyr[k][2] * log->gyr[k][2]);
-            wmax = wm[k] > wmax ? wm[k] : wmax;
-        }
-        memcpy(fm, wm, log->n * sizeof *fm);
-        qsort(fm, log->n, sizeof *fm, hx_cmp_double);
-        wq = fm[log->n / 10];
-        for (k = 0; k < log->n; k++) {
-            if (wm[k] <= wq) {
-                fm[nf++] = sqrt(log->acc[k][0] * log->acc[k][0] + log->acc[k][1] * log->acc[k][1] +
-                                log->acc[k][2] * log->acc[k][2]);
-            }
-        }
-        qsort(fm, nf, sizeof *fm, hx_cmp_double);
-        rc = hx_units_problem(fm[nf / 2], 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, msg, sizeof msg);
-        free(wm);
-        free(fm);
-        if (rc != 0 && r->domain == 2) {
-            snprintf(err, err_size, "%s", msg);
-            return -1;
-        }
-        if (rc != 0 && !o->quiet) {
-            hx_warn("simgap", "%s: %s", path, msg);
-        }
-        rc = 0;
+    if (units_of_log(log, path, r, err, err_size) != 0) {
+        return -1;
     }
     /* static logs: fit on both ends, held out the middle (a warm-up at the
      * start and the late behaviour are in both); walks: the first part */
