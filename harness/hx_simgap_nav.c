@@ -1684,14 +1684,13 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
         for (c = 0; c < SG_NCH; c++) {
             /* a quantiser puts every difference on its lattice; a channel
              * whose values are only partly coherent with the step (the
-             * NGIMU's calibrated gx and gz, printed to 7 digits) is not one,
-             * and twins that quantise it overshoot its score (xio long:
-             * real 42 and 11, quantised twins 150, the baseline's 1): a
-             * candidate needs a fit-segment score nearer the quantiser's
-             * than the baseline twins' */
+             * NGIMU long walk's gx and gz) is not one, and twins that
+             * quantise it overshoot its score (there, held out: real 42
+             * and 11, quantised twins 150, the baseline's 1): a candidate
+             * needs a fit-segment score nearer the quantiser's than the
+             * baseline twins' (NaN, set with the lattice, when none) */
             long fa = r->segs.start[SG_FIT][0], fb = fa + r->segs.n[SG_FIT][0];
             size_t j;
-            nv->q_fit[c] = nv->q_full[c] = nv->q_base[c] = (double)NAN;
             if (!(nv->q[c] > 0.0)) {
                 continue;
             }
