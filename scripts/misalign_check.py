@@ -1,0 +1,125 @@
+#!/usr/bin/env python3
+"""Would a gyro-to-accelerometer misalignment explain a walk's vertical drift?
+(docs/navigation.md, "Round 5: one-parameter knobs that close the xio climb").
+
+The gyro triad is rotated against the accelerometer's by a small angle about
+one sensor axis (what a misalignment between the two triads would undo), the
+log replayed with the default configuration, and two things printed for each
+angle:
+- the closure (horizontal, 3-D, height change; `harness replay --json`);
+- the mean normalised innovation squared of each stance's first zero-velocity
+  update (`harness simgap --closed`, its `nis_first real` line): what the
+  filter itself can see of the error, causally.
+A real misalignment, undone, would lower both. A knob that lowers the
+closure while the innovations grow compensates an error instead of removing
+it, and tuning it on the closure would be tuning to the log.
+
+With --fit, the rotation (a rotation vector, three angles) that minimises the
+first-update NIS is searched instead (Nelder-Mead from zero, 0.05 deg): what
+the innovations alone would calibrate. With --rotvec X,Y,Z that rotation is
+applied as it is (e.g. one walk's fit on the other walk).
+
+Usage (from the repository root, after `make`; about 15 s per angle and log):
+  /usr/bin/python3 scripts/misalign_check.py ../shared/data/xio_ngimu_gait/short_walk.csv [--axis y]
+      [--angles=-1.5,-1,-0.5,0,0.5,1] [--fit] [--rotvec=X,Y,Z]
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+H = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bin", "harness")
+# The real log's first-update NIS does not depend on the twins: the fit uses as few as simgap allows.
+FAST = ["--seeds", "3", "--max-effects", "1", "--prescreen", "1", "--quiet"]
+
+
+def rotvec_matrix(v_deg):
+    """Rotation matrix of a rotation vector (degrees), by Rodrigues' formula."""
+    v = np.radians(np.asarray(v_deg, dtype=float))
+    a = np.linalg.norm(v)
+    if a == 0.0:
+        return np.eye(3)
+    k = v / a
+    kx = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + np.sin(a) * kx + (1 - np.cos(a)) * kx @ kx
+
+
+def rotation(axis, deg):
+    """Rotation matrix about a sensor axis (right-handed), angle in degrees."""
+    c, s = np.cos(np.radians(deg)), np.sin(np.radians(deg))
+    i = "xyz".index(axis)
+    j, k = (i + 1) % 3, (i + 2) % 3
+    m = np.eye(3)
+    m[j, j] = m[k, k] = c
+    m[j, k], m[k, j] = -s, s
+    return m
+
+
+def run(args):
+    r = subprocess.run([H] + args, capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit("harness %s failed: %s" % (args[0], r.stderr.strip()))
+    return r.stdout
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("logs", nargs="+")
+    ap.add_argument("--axis", default="y", choices=["x", "y", "z"])
+    ap.add_argument("--angles", default="-1.5,-1,-0.5,0,0.5,1", help="gyro rotations to try, deg (comma-separated)")
+    ap.add_argument("--fit", action="store_true", help="search the rotation that minimises the first-update NIS")
+    ap.add_argument("--rotvec", default="", help="apply this rotation vector, deg (X,Y,Z)")
+    a = ap.parse_args()
+    angles = [float(x) for x in a.angles.split(",")]
+    print("log, gyro rotation: horizontal / 3-D closure (m), height change (m, up), first-update NIS"
+          + ("" if a.fit or a.rotvec else " (about sensor %s, deg)" % a.axis))
+    with tempfile.TemporaryDirectory() as tmp:
+        for log in a.logs:
+            base = os.path.join(tmp, "base.csv")
+            run(["convert", log, base, "--to", "csv"])
+            d = np.genfromtxt(base, delimiter=",", names=True)
+            acc = np.column_stack([d[c] for c in ("ax", "ay", "az")])
+            gyr = np.column_stack([d[c] for c in ("gx", "gy", "gz")])
+            name = os.path.basename(log)
+
+            def evaluate(m, closure):
+                path = os.path.join(tmp, "rot.csv")
+                np.savetxt(path, np.column_stack([d["t"], acc, gyr @ m.T]), delimiter=",",
+                           header="t,ax,ay,az,gx,gy,gz", comments="", fmt="%.9g")
+                out = run(["simgap", path, "--closed"] + FAST)
+                m_nis = re.search(r"nis_first\s+real\s+(\S+)", out)
+                nis = float(m_nis.group(1)) if m_nis else float("nan")
+                if not closure:
+                    return nis, None
+                js = os.path.join(tmp, "r.json")
+                run(["replay", path, "--json", js, "--quiet"])
+                with open(js) as f:
+                    return nis, json.load(f)
+
+            def show(label, nis, r):
+                print("%s %s: %.3f / %.3f m, %+.3f m, NIS %.1f" % (name, label, r["return_error_h_m"],
+                      r["return_error_3d_m"], r["vertical_drift_m"], nis))
+                sys.stdout.flush()
+
+            if a.fit:
+                from scipy.optimize import minimize
+                res = minimize(lambda v: evaluate(rotvec_matrix(v), False)[0], np.zeros(3), method="Nelder-Mead",
+                               options=dict(initial_simplex=np.vstack([np.zeros(3), np.eye(3)]), xatol=0.05,
+                                            fatol=0.2, maxfev=80))
+                show("no rotation", *evaluate(np.eye(3), True))
+                show("NIS fit (%+.2f, %+.2f, %+.2f) deg" % tuple(res.x), *evaluate(rotvec_matrix(res.x), True))
+            elif a.rotvec:
+                v = [float(x) for x in a.rotvec.split(",")]
+                show("rotation vector (%s) deg" % a.rotvec, *evaluate(rotvec_matrix(v), True))
+            else:
+                for deg in angles:
+                    show("%+5.2f" % deg, *evaluate(rotation(a.axis, deg), True))
+
+
+if __name__ == "__main__":
+    main()
