@@ -32,6 +32,8 @@ import sys
 import tempfile
 
 import numpy as np
+from scipy.optimize import minimize
+from scipy.spatial.transform import Rotation
 
 H = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bin", "harness")
 # The real log's first-update NIS does not depend on the twins: the fit uses as few as simgap allows.
@@ -39,25 +41,8 @@ FAST = ["--seeds", "3", "--max-effects", "1", "--prescreen", "1", "--quiet"]
 
 
 def rotvec_matrix(v_deg):
-    """Rotation matrix of a rotation vector (degrees), by Rodrigues' formula."""
-    v = np.radians(np.asarray(v_deg, dtype=float))
-    a = np.linalg.norm(v)
-    if a == 0.0:
-        return np.eye(3)
-    k = v / a
-    kx = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
-    return np.eye(3) + np.sin(a) * kx + (1 - np.cos(a)) * kx @ kx
-
-
-def rotation(axis, deg):
-    """Rotation matrix about a sensor axis (right-handed), angle in degrees."""
-    c, s = np.cos(np.radians(deg)), np.sin(np.radians(deg))
-    i = "xyz".index(axis)
-    j, k = (i + 1) % 3, (i + 2) % 3
-    m = np.eye(3)
-    m[j, j] = m[k, k] = c
-    m[j, k], m[k, j] = -s, s
-    return m
+    """Rotation matrix of a rotation vector given in degrees."""
+    return Rotation.from_rotvec(np.asarray(v_deg, dtype=float), degrees=True).as_matrix()
 
 
 def run(args):
@@ -107,7 +92,6 @@ def main():
                 sys.stdout.flush()
 
             if a.fit:
-                from scipy.optimize import minimize
                 res = minimize(lambda v: evaluate(rotvec_matrix(v), False)[0], np.zeros(3), method="Nelder-Mead",
                                options=dict(initial_simplex=np.vstack([np.zeros(3), np.eye(3)]), xatol=0.05,
                                             fatol=0.2, maxfev=80))
@@ -118,7 +102,7 @@ def main():
                 show("rotation vector (%s) deg" % a.rotvec, *evaluate(rotvec_matrix(v), True))
             else:
                 for deg in angles:
-                    show("%+5.2f" % deg, *evaluate(rotation(a.axis, deg), True))
+                    show("%+5.2f" % deg, *evaluate(rotvec_matrix(deg * np.eye(3)["xyz".index(a.axis)]), True))
 
 
 if __name__ == "__main__":
