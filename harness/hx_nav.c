@@ -85,6 +85,7 @@ static const param_t k_params[] = {
     { "settle_tau", P_REAL, 1.0, "settling time constant, s" },
     { "zaru", P_INT, 1.0, "zero-angular-rate updates 0/1" },
     { "zaru_sigma_dps", P_REAL, 3.14159265358979323846 / 180.0, "ZARU noise, deg/s" },
+    { "zaru_gate", P_REAL, 1.0, "ZARU gate on the innovation's NIS, chi-square 3 dof (0: none)" },
     { "realign_min_s", P_REAL, 1.0, "renew the alignment on still periods this long before the first stride, s (0: off)" },
     { "tilt_sd_deg", P_REAL, 3.14159265358979323846 / 180.0, "initial roll/pitch sd, deg" },
     { "yaw_sd_deg", P_REAL, 3.14159265358979323846 / 180.0, "initial yaw sd, deg" },
@@ -127,6 +128,7 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     if (strcmp(key, "settle_tau") == 0) return &c->settle_tau_s;
     if (strcmp(key, "zaru") == 0) return &c->zaru;
     if (strcmp(key, "zaru_sigma_dps") == 0) return &c->zaru_sigma_rps;
+    if (strcmp(key, "zaru_gate") == 0) return &c->zaru_gate;
     if (strcmp(key, "realign_min_s") == 0) return &c->realign_min_s;
     if (strcmp(key, "tilt_sd_deg") == 0) return &c->tilt_sd_rad;
     if (strcmp(key, "yaw_sd_deg") == 0) return &c->yaw_sd_rad;
@@ -769,6 +771,9 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     fprintf(f, "heading change    %+.1f deg\n", s->heading_change_deg);
     fprintf(f, "stance            %ld strides, %ld stance phases, %.1f %% of frames with ZUPT\n", s->strides,
             s->stance_phases, 100.0 * s->stance_fraction);
+    if (st->zarus > 0u || st->zaru_gated > 0u) {
+        fprintf(f, "ZARU              %u applied, %u skipped by the gate (the foot turned)\n", st->zarus, st->zaru_gated);
+    }
     if (hx_nav_little_motion(s)) {
         fprintf(f, "note              almost no motion detected (%.0f %% of frames in stance, %ld strides in %.0f s): "
                    "a still log, or motion too gentle for the foot-tuned detector (docs/navigation.md, \"Stance "
@@ -830,6 +835,7 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddItemToObject(h, "longest_interval_s", num((double)st->max_gap_seen_s));
     cJSON_AddNumberToObject(h, "zupts", st->zupts);
     cJSON_AddNumberToObject(h, "zarus", st->zarus);
+    cJSON_AddNumberToObject(h, "zaru_gated", st->zaru_gated);
     cJSON_AddNumberToObject(h, "realigned", st->realigned);
     cJSON_AddNumberToObject(h, "chol_jitter", st->chol_jitter);
     cJSON_AddNumberToObject(h, "chol_reset", st->chol_reset);

@@ -26,6 +26,7 @@ const fnav_nav_config_t fnav_nav_config_default = {
     FNAV_R(0.03),       /* settle_tau_s */
     0,                  /* zaru */
     FNAV_R(0.01),       /* zaru_sigma_rps */
+    FNAV_R(11.34),      /* zaru_gate: chi-square, 3 dof, 99 % */
     FNAV_R(3.0),        /* realign_min_s: docs/navigation.md, "Initial alignment" */
     FNAV_R(0.5) * D2R,  /* tilt_sd_rad */
     FNAV_R(0.001),      /* yaw_sd_rad */
@@ -59,6 +60,7 @@ static void ukf_config_from(const fnav_nav_config_t *c, fnav_ukf_config_t *u)
     u->strapdown.sample_type = c->sample_type;
     u->zupt_sigma_mps = c->zupt_sigma_mps;
     u->zaru_sigma_rps = c->zaru_sigma_rps;
+    u->zaru_gate = c->zaru_gate;
     u->closed_form = c->closed_form;
     u->lever = c->lever;
     u->lever_sd_m = c->lever_sd_m;
@@ -259,6 +261,7 @@ static void sync_health(fnav_nav_t *nav)
     nav->stats.cov_guard = h->cov_guard;
     nav->stats.zupts = h->zupts;
     nav->stats.zarus = h->zarus;
+    nav->stats.zaru_gated = h->zaru_gated;
     if (h->chol_jitter) {
         nav->health |= FNAV_HEALTH_CHOL_JITTER;
     }

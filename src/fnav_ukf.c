@@ -25,7 +25,8 @@ const fnav_ukf_config_t fnav_ukf_config_default = {
     FNAV_R(0.002),
     0,
     FNAV_R(0.025),
-    FNAV_R(0.03)
+    FNAV_R(0.03),
+    FNAV_R(11.34) /* zaru_gate: chi-square, 3 dof, 99 % (11.345) */
 };
 
 static int finite_nonneg(fnav_real_t x)
@@ -99,7 +100,8 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
         (cfg->strapdown.sample_type != FNAV_SAMPLE_INSTANT && cfg->strapdown.sample_type != FNAV_SAMPLE_MEAN) ||
         (cfg->lever && (!finite_pos(cfg->lever_sd_m) || !finite_nonneg(cfg->lever_rw_m_rts))) ||
         (cfg->settle != 0 && cfg->settle != 1) ||
-        (cfg->settle && (!finite_pos(cfg->settle_sd_mps) || !finite_pos(cfg->settle_tau_s)))) {
+        (cfg->settle && (!finite_pos(cfg->settle_sd_mps) || !finite_pos(cfg->settle_tau_s))) ||
+        !finite_nonneg(cfg->zaru_gate)) {
         return FNAV_E_CONFIG;
     }
     n = 9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0);
@@ -1329,10 +1331,47 @@ fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
     return st;
 }
 
+/* The ZARU innovation's normalised square y^T S^-1 y, S = P_bg + r2 I (the
+ * ZARU's H selects the gyro-bias states; the settling state does not enter
+ * its row), by the Cholesky factor of S; a factor that is not positive gives
+ * +Inf, so the gate rejects and update() is not asked to invert it. */
+static fnav_real_t zaru_nis(const fnav_ukf_t *f, int ob, fnav_vec3_t y, fnav_real_t r2)
+{
+    fnav_real_t l[3][3], z[3] = { FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0) }, nis = FNAV_R(0.0);
+    int i, j, k;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j <= i; j++) {
+            fnav_real_t a = f->P[ob + i][ob + j] + (i == j ? r2 : FNAV_R(0.0));
+            for (k = 0; k < j; k++) {
+                a -= l[i][k] * l[j][k];
+            }
+            if (i == j) {
+                if (!(a > FNAV_R(0.0))) {
+                    return (fnav_real_t)INFINITY;
+                }
+                l[i][i] = fnav_sqrt(a);
+            } else {
+                l[i][j] = a / l[j][j];
+            }
+        }
+    }
+    for (i = 0; i < 3; i++) { /* z = L^-1 y, nis = |z|^2 */
+        fnav_real_t a = y.v[i];
+        for (k = 0; k < i; k++) {
+            a -= l[i][k] * z[k];
+        }
+        z[i] = a / l[i][i];
+        nis += z[i] * z[i];
+    }
+    return nis;
+}
+
 fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
 {
     int cols[3], i, ob;
     fnav_status_t st;
+    fnav_vec3_t y;
+    fnav_real_t r2;
     if (f == NULL) {
         return FNAV_E_ARG;
     }
@@ -1350,7 +1389,13 @@ fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps)
     for (i = 0; i < 3; i++) {
         cols[i] = ob + i;
     }
-    st = update(f, NULL, cols, 3, fnav_vec3_sub(gyro_rps, f->bg_rps), f->cfg.zaru_sigma_rps * f->cfg.zaru_sigma_rps, 0);
+    y = fnav_vec3_sub(gyro_rps, f->bg_rps);
+    r2 = f->cfg.zaru_sigma_rps * f->cfg.zaru_sigma_rps;
+    if (f->cfg.zaru_gate > FNAV_R(0.0) && !(zaru_nis(f, ob, y, r2) <= f->cfg.zaru_gate)) {
+        f->health.zaru_gated++;
+        return FNAV_E_RANGE;
+    }
+    st = update(f, NULL, cols, 3, y, r2, 0);
     if (st == FNAV_OK) {
         f->health.zarus++;
     }

@@ -59,6 +59,15 @@ static void test_config(void **state)
     c = fnav_nav_config_default;
     c.zupt_sigma_mps = FNAV_R(0.0);
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* the ZARU's gate reaches the filter; a negative one is refused */
+    c = fnav_nav_config_default;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    assert_true(nav.ukf.cfg.zaru_gate == fnav_ukf_config_default.zaru_gate);
+    c.zaru_gate = FNAV_R(5.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    assert_true(nav.ukf.cfg.zaru_gate == FNAV_R(5.0));
+    c.zaru_gate = FNAV_R(-1.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
 }
 
 /* One frame per accepted sample, in order; rejected samples change nothing;

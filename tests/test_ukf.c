@@ -85,6 +85,13 @@ static void test_config(void **state)
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
     assert_int_equal(f.n_act, 15); /* the settling is not a packed state */
     c = fnav_ukf_config_default;
+    c.zaru_gate = FNAV_R(-1.0);
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    c.zaru_gate = (fnav_real_t)NAN;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    c.zaru_gate = FNAV_R(0.0); /* no gate */
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    c = fnav_ukf_config_default;
     c.kappa = FNAV_R(-20.0); /* n + lambda <= 0 */
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
     /* calls before start */
@@ -1080,6 +1087,88 @@ static void test_settle_zaru(void **state)
     FNAV_ASSERT_CLOSE(f.settle_mps, s0 + dx[NM], 1e3 * EPS * 0.01, 0.0);
 }
 
+/* The ZARU's validation gate. With a full (correlated) gyro-bias block in
+ * P, a reading is scaled so that its NIS
+ * y^T (P_bg + r2 I)^-1 y, computed here in double from the filter's own P,
+ * lies 5 % inside or outside the gate: inside it is the ordinary update
+ * (counted in zarus), outside it is skipped (FNAV_E_RANGE, counted in
+ * zaru_gated, the state and P bit for bit as before), and with the gate at 0
+ * the same reading is applied. */
+static void test_zaru_gate(void **state)
+{
+    static fnav_ukf_t f, g, h;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const fnav_vec3_t dir = fnav_vec3(FNAV_R(0.6), FNAV_R(-0.3), FNAV_R(0.2));
+    static const double blk[3][3] = { { 4.0, 1.5, -1.0 }, { 1.5, 3.0, 0.5 }, { -1.0, 0.5, 2.0 } };
+    double S[3][3], L[3][3], z[3], nis1 = 0.0, r2, gate;
+    fnav_vec3_t y;
+    int i, j, k, ob;
+    (void)state;
+    c.lever = 1;
+    c.settle = 1;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3(FNAV_R(0.001), FNAV_R(-0.002), FNAV_R(0.0005)),
+                                    fnav_vec3_zero(), &sd),
+                     FNAV_OK);
+    /* a correlated gyro-bias block (positive definite, of the order of the
+     * ZARU noise), uncorrelated with the other states */
+    ob = f.pos[FNAV_UKF_BG];
+    for (i = 0; i < 3; i++) {
+        for (k = 0; k < f.n_act; k++) {
+            f.P[ob + i][k] = f.P[k][ob + i] = FNAV_R(0.0);
+        }
+        for (j = 0; j < 3; j++) {
+            f.P[ob + i][ob + j] = (fnav_real_t)(5e-5 * blk[i][j]);
+        }
+    }
+    /* S and the NIS of the unit reading bg + dir, in double */
+    r2 = (double)f.cfg.zaru_sigma_rps * (double)f.cfg.zaru_sigma_rps;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            S[i][j] = (double)f.P[ob + i][ob + j] + (i == j ? r2 : 0.0);
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j <= i; j++) {
+            double a = S[i][j];
+            for (k = 0; k < j; k++) {
+                a -= L[i][k] * L[j][k];
+            }
+            L[i][j] = (i == j) ? sqrt(a) : a / L[j][j];
+        }
+        z[i] = (double)dir.v[i];
+        for (k = 0; k < i; k++) {
+            z[i] -= L[i][k] * z[k];
+        }
+        z[i] /= L[i][i];
+        nis1 += z[i] * z[i];
+    }
+    gate = (double)f.cfg.zaru_gate;
+    FNAV_ASSERT_CLOSE(gate, 11.34, 1e-6, 0.0);
+    /* 5 % inside: applied */
+    g = f;
+    y = fnav_vec3_add(f.bg_rps, fnav_vec3_scale(dir, (fnav_real_t)sqrt(0.95 * gate / nis1)));
+    assert_int_equal(fnav_ukf_zaru(&f, y), FNAV_OK);
+    assert_int_equal(f.health.zarus, 1);
+    assert_int_equal(f.health.zaru_gated, 0);
+    assert_true(fabs((double)f.bg_rps.v[0] - (double)g.bg_rps.v[0]) > 0.0);
+    /* 5 % outside: skipped, nothing changes but the counter */
+    f = g;
+    y = fnav_vec3_add(f.bg_rps, fnav_vec3_scale(dir, (fnav_real_t)sqrt(1.05 * gate / nis1)));
+    assert_int_equal(fnav_ukf_zaru(&f, y), FNAV_E_RANGE);
+    assert_int_equal(f.health.zaru_gated, 1);
+    assert_int_equal(f.health.zarus, 0);
+    f.health = g.health;
+    assert_memory_equal(&f, &g, sizeof f);
+    /* no gate: the same reading is the textbook update (test_settle_zaru) */
+    h = g;
+    h.cfg.zaru_gate = FNAV_R(0.0);
+    assert_int_equal(fnav_ukf_zaru(&h, y), FNAV_OK);
+    assert_int_equal(h.health.zarus, 1);
+    assert_int_equal(h.health.zaru_gated, 0);
+}
+
 /* The prediction of the settling's cross-covariance, Pxs' = c F Pxs, against
  * F Pxs as the central difference of the strapdown along Pxs (double here),
  * and Pss' = c^2 Pss, s' = c s with c = exp(-dt/tau). */
@@ -1285,6 +1374,7 @@ int main(void)
         cmocka_unit_test(test_nees_settle),
         cmocka_unit_test(test_settle_zupt),
         cmocka_unit_test(test_settle_zaru),
+        cmocka_unit_test(test_zaru_gate),
         cmocka_unit_test(test_settle_predict),
         cmocka_unit_test(test_settle_decay),
         cmocka_unit_test(test_settle_idle_identical),

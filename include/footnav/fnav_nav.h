@@ -84,6 +84,7 @@ typedef struct {
     fnav_real_t settle_tau_s;          /**< settling time constant, s */
     int zaru;                          /**< 1: zero-angular-rate updates in stance */
     fnav_real_t zaru_sigma_rps;        /**< ZARU noise, rad/s */
+    fnav_real_t zaru_gate;             /**< ZARU validation gate, chi-square 3 dof (fnav_ukf.h); 0: none */
     fnav_real_t realign_min_s;         /**< until the first stride, every clean still period of at
                                             least this long renews the alignment; 0: off
                                             (docs/navigation.md, "Initial alignment") */
@@ -115,6 +116,7 @@ typedef struct {
     uint32_t stance_samples; /**< samples decided as stance */
     uint32_t zupts;          /**< ZUPT updates applied */
     uint32_t zarus;          /**< ZARU updates applied */
+    uint32_t zaru_gated;     /**< ZARU updates skipped by the gate (the foot turns) */
     uint32_t realigned;      /**< alignments renewed before the first stride */
     uint32_t strides;        /**< completed swings */
     uint32_t chol_jitter, chol_reset, diverged, update_reject; /**< UKF health */

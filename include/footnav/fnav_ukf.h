@@ -144,6 +144,8 @@ typedef struct {
     int settle;                           /**< 1: landing settling state (file comment; default 0) */
     fnav_real_t settle_sd_mps;            /**< settling sd at stance onset, m/s (default 0.025) */
     fnav_real_t settle_tau_s;             /**< settling time constant, s (default 0.03) */
+    fnav_real_t zaru_gate;                /**< ZARU validation gate on the innovation's NIS (chi-square,
+                                               3 dof); 0: none (default 11.34, the 99 % point) */
 } fnav_ukf_config_t;
 
 /** Defaults: NavChip-like noise (paper Table IV), AR(1) model, 9.80665 m/s^2. */
@@ -163,6 +165,7 @@ typedef struct {
     uint32_t predicts;      /**< predictions done */
     uint32_t zupts;         /**< ZUPT updates applied */
     uint32_t zarus;         /**< ZARU updates applied */
+    uint32_t zaru_gated;    /**< ZARU updates skipped: NIS beyond config.zaru_gate (the foot turns) */
     uint32_t chol_jitter;   /**< factorisations that needed jitter */
     uint32_t chol_reset;    /**< covariance resets to the diagonal */
     uint32_t nan_inputs;    /**< inputs rejected as NaN/Inf */
@@ -267,9 +270,14 @@ FNAV_WARN_UNUSED fnav_status_t fnav_ukf_settle_start(fnav_ukf_t *f);
 
 /**
  * Zero-angular-rate update: the raw gyro reading equals the gyro bias
- * (the foot does not rotate), standard deviation zaru_sigma_rps.
+ * (the foot does not rotate), standard deviation zaru_sigma_rps. A
+ * validation gate skips it when the foot does turn: with the innovation
+ * y = gyro - b_g and S = P_bg + zaru_sigma^2 I, the update is made only
+ * when y^T S^-1 y <= config.zaru_gate (0: always).
  * @return as fnav_ukf_zupt(); FNAV_E_NANINF on a non-finite reading;
- *         FNAV_OK without effect when the bias model is off.
+ *         FNAV_E_RANGE without effect when the gate rejects the reading
+ *         (counted in health.zaru_gated); FNAV_OK without effect when the
+ *         bias model is off.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_zaru(fnav_ukf_t *f, fnav_vec3_t gyro_rps);
 

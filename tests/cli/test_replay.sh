@@ -46,6 +46,23 @@ if /usr/bin/python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exi
 else
     fail "JSON health content"
 fi
+# the ZARU's validation gate (docs/navigation.md, "Zero-velocity update"):
+# on a real walk, whose stance rolls, it skips readings and keeps the ZARU
+# from wrecking the closure that the ungated ZARU ruins
+expect_exit 2 "negative ZARU gate rejected by the core" "$H" replay vectors/walk.bin --param zaru=1 --param zaru_gate=-1 --quiet
+expect_exit 0 "replay with the gated ZARU" "$H" replay vectors/walk.bin --param zaru=1 --json "$T/zg.json"
+expect_out "skipped by the gate" "summary: the ZARU line"
+expect_exit 0 "replay with the ungated ZARU" "$H" replay vectors/walk.bin --param zaru=1 --param zaru_gate=0 --json "$T/z0.json" --quiet
+if /usr/bin/python3 -c "
+import json, sys
+g, u = (json.load(open(a)) for a in sys.argv[1:3])
+ok = (g['health']['zarus'] > 0 and g['health']['zaru_gated'] > 0 and u['health']['zaru_gated'] == 0
+      and g['return_error_3d_m'] < u['return_error_3d_m'])
+sys.exit(0 if ok else 1)" "$T/zg.json" "$T/z0.json"; then
+    pass "ZARU gate: readings applied and skipped; 3-D closure better than without the gate"
+else
+    fail "ZARU gate counts or closure"
+fi
 expect_exit 0 "CSV to standard output" "$H" replay vectors/walk.bin --out -
 if [ "$(wc -l < "$T/out")" -eq 16540 ]; then pass "stdout CSV complete"; else fail "stdout CSV rows"; fi
 expect_err "return-to-start" "summary on stderr when the CSV is on stdout"
