@@ -15,11 +15,11 @@ Usage: /usr/bin/python3 scripts/height_phases.py LOG... [-- REPLAY OPTIONS]
 Prints a markdown table (metres; per stance phase in brackets: cm).
 """
 import os
-import subprocess
 import sys
-import tempfile
 
 import numpy as np
+
+from replay_runs import split_args, trajectories
 
 EDGES_S = (0.03, 0.15)
 
@@ -51,28 +51,13 @@ def phases(csv_path):
 
 
 def main(argv):
-    if '--' in argv:
-        k = argv.index('--')
-        logs, opts = argv[:k], argv[k + 1:]
-    else:
-        logs, opts = argv, []
-    if not logs:
-        sys.exit(__doc__)
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    harness = os.path.join(root, 'bin', 'harness')
+    logs, opts = split_args(argv, __doc__)
     print('| log | stance phases | total | swing | stance 0-30 ms | 30-150 ms | after 150 ms |')
     print('| --- | ---: | ---: | ---: | ---: | ---: | ---: |')
-    with tempfile.TemporaryDirectory() as tmp:
-        for log in logs:
-            out = os.path.join(tmp, 'traj.csv')
-            r = subprocess.run([harness, 'replay', log, '--out', out] + opts,
-                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-            if r.returncode != 0:
-                sys.exit('%s: replay failed (%d): %s' % (log, r.returncode, r.stderr.strip()))
-            total, parts, runs = phases(out)
-            cells = ['%+.3f (%+.1f)' % (p, 100.0 * p / max(runs, 1)) for p in parts]
-            print('| %s | %d | %+.3f | %s |' % (os.path.basename(log), runs, total, ' | '.join(cells)))
-
+    for log, out in trajectories(logs, opts):
+        total, parts, runs = phases(out)
+        cells = ['%+.3f (%+.1f)' % (p, 100.0 * p / max(runs, 1)) for p in parts]
+        print('| %s | %d | %+.3f | %s |' % (os.path.basename(log), runs, total, ' | '.join(cells)))
 
 if __name__ == '__main__':
     main(sys.argv[1:])

@@ -15,11 +15,11 @@ Usage: /usr/bin/python3 scripts/stand_drift.py LOG... [-- REPLAY OPTIONS]
 Prints a markdown table (mm, mm/s).
 """
 import os
-import subprocess
 import sys
-import tempfile
 
 import numpy as np
+
+from replay_runs import split_args, trajectories
 
 SKIP_S = 1.0
 MIN_STAND_S = 2.0
@@ -48,34 +48,19 @@ def stand(csv_path):
 
 
 def main(argv):
-    if '--' in argv:
-        k = argv.index('--')
-        logs, opts = argv[:k], argv[k + 1:]
-    else:
-        logs, opts = argv, []
-    if not logs:
-        sys.exit(__doc__)
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    harness = os.path.join(root, 'bin', 'harness')
+    logs, opts = split_args(argv, __doc__)
     print('| log | last stance from %.0f s in (s) | north / east / up (mm) | rate (mm/s) | integral of the velocity (mm) |'
           % SKIP_S)
     print('| --- | ---: | ---: | ---: | ---: |')
-    with tempfile.TemporaryDirectory() as tmp:
-        for log in logs:
-            out = os.path.join(tmp, 'traj.csv')
-            r = subprocess.run([harness, 'replay', log, '--out', out] + opts,
-                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-            if r.returncode != 0:
-                sys.exit('%s: replay failed (%d): %s' % (log, r.returncode, r.stderr.strip()))
-            res = stand(out)
-            if res is None:
-                print('| %s | (no stance of %.0f s at the end) | | | |' % (os.path.basename(log), MIN_STAND_S))
-                continue
-            span, dp, iv = res
-            print('| %s | %.1f | %+.1f / %+.1f / %+.1f | %.1f | %.1f |'
-                  % (os.path.basename(log), span, 1e3 * dp[0], 1e3 * dp[1], 1e3 * dp[2],
-                     1e3 * np.linalg.norm(dp) / span, 1e3 * np.linalg.norm(iv)))
-
+    for log, out in trajectories(logs, opts):
+        res = stand(out)
+        if res is None:
+            print('| %s | (no stance of %.0f s at the end) | | | |' % (os.path.basename(log), MIN_STAND_S))
+            continue
+        span, dp, iv = res
+        print('| %s | %.1f | %+.1f / %+.1f / %+.1f | %.1f | %.1f |'
+              % (os.path.basename(log), span, 1e3 * dp[0], 1e3 * dp[1], 1e3 * dp[2],
+                 1e3 * np.linalg.norm(dp) / span, 1e3 * np.linalg.norm(iv)))
 
 if __name__ == '__main__':
     main(sys.argv[1:])
