@@ -1161,7 +1161,8 @@ static void test_zaru_gate(void **state)
     assert_int_equal(f.health.zarus, 0);
     f.health = g.health;
     assert_memory_equal(&f, &g, sizeof f);
-    /* no gate: the same reading is the textbook update (test_settle_zaru) */
+    /* no gate: the same reading is applied (the update itself against the
+     * textbook one: test_settle_zaru) */
     h = g;
     h.cfg.zaru_gate = FNAV_R(0.0);
     assert_int_equal(fnav_ukf_zaru(&h, y), FNAV_OK);
