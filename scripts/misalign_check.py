@@ -14,6 +14,13 @@ A real misalignment, undone, would lower both. A knob that lowers the
 closure while the innovations grow compensates an error instead of removing
 it, and tuning it on the closure would be tuning to the log.
 
+With --accel TERMS, the gyro is left as it is and the accelerometer gets
+cross-axis terms instead: f_i += k f_j for each TERM "ij:k" (e.g. "zx:-0.03"
+adds 3 % of f_x to f_z; several joined by "+"; "none" for the baseline; a
+comma-separated list of settings). A rotation of either triad is the
+antisymmetric part of such a coupling; a single term like zx also has a
+symmetric (non-orthogonality) part, which no rotation covers.
+
 With --fit, the rotation (a rotation vector, three angles) that minimises the
 first-update NIS is searched instead (Nelder-Mead from zero, 0.05 deg): what
 the innovations alone would calibrate. With --rotvec X,Y,Z that rotation is
@@ -21,7 +28,7 @@ applied as it is (e.g. one walk's fit on the other walk).
 
 Usage (from the repository root, after `make`; about 15 s per angle and log):
   /usr/bin/python3 scripts/misalign_check.py ../shared/data/xio_ngimu_gait/short_walk.csv [--axis y]
-      [--angles=-1.5,-1,-0.5,0,0.5,1] [--fit] [--rotvec=X,Y,Z]
+      [--angles=-1.5,-1,-0.5,0,0.5,1] [--fit] [--rotvec=X,Y,Z] [--accel=none,zx:-0.03,...]
 """
 import argparse
 import json
@@ -52,6 +59,19 @@ def run(args):
     return r.stdout
 
 
+def cross_matrix(terms):
+    """I plus the cross-axis terms of "ij:k[+ij:k...]" (row i, column j), or I for "none"."""
+    k = np.eye(3)
+    if terms == "none":
+        return k
+    for term in terms.split("+"):
+        ij, val = term.split(":")
+        if len(ij) != 2 or ij[0] not in "xyz" or ij[1] not in "xyz" or ij[0] == ij[1]:
+            sys.exit("bad --accel term %r (want e.g. zx:-0.03)" % term)
+        k["xyz".index(ij[0]), "xyz".index(ij[1])] += float(val)
+    return k
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("logs", nargs="+")
@@ -59,10 +79,11 @@ def main():
     ap.add_argument("--angles", default="-1.5,-1,-0.5,0,0.5,1", help="gyro rotations to try, deg (comma-separated)")
     ap.add_argument("--fit", action="store_true", help="search the rotation that minimises the first-update NIS")
     ap.add_argument("--rotvec", default="", help="apply this rotation vector, deg (X,Y,Z)")
+    ap.add_argument("--accel", default="", help="accelerometer cross-axis settings instead, e.g. none,zx:-0.03")
     a = ap.parse_args()
     angles = [float(x) for x in a.angles.split(",")]
-    print("log, gyro rotation: horizontal / 3-D closure (m), height change (m, up), first-update NIS"
-          + ("" if a.fit or a.rotvec else " (about sensor %s, deg)" % a.axis))
+    print("log, " + ("accelerometer cross-axis terms" if a.accel else "gyro rotation") + ": horizontal / 3-D closure (m), height change (m, up), first-update NIS"
+          + ("" if a.fit or a.rotvec or a.accel else " (about sensor %s, deg)" % a.axis))
     with tempfile.TemporaryDirectory() as tmp:
         for log in a.logs:
             base = os.path.join(tmp, "base.csv")
@@ -72,9 +93,9 @@ def main():
             gyr = np.column_stack([d[c] for c in ("gx", "gy", "gz")])
             name = os.path.basename(log)
 
-            def evaluate(m, closure):
+            def evaluate(m, closure, ka=np.eye(3)):
                 path = os.path.join(tmp, "rot.csv")
-                np.savetxt(path, np.column_stack([d["t"], acc, gyr @ m.T]), delimiter=",",
+                np.savetxt(path, np.column_stack([d["t"], acc @ ka.T, gyr @ m.T]), delimiter=",",
                            header="t,ax,ay,az,gx,gy,gz", comments="", fmt="%.9g")
                 out = run(["simgap", path, "--closed"] + FAST)
                 m_nis = re.search(r"nis_first\s+real\s+(\S+)", out)
@@ -91,7 +112,10 @@ def main():
                       r["return_error_3d_m"], r["vertical_drift_m"], nis))
                 sys.stdout.flush()
 
-            if a.fit:
+            if a.accel:
+                for terms in a.accel.split(","):
+                    show("accel %s" % terms, *evaluate(np.eye(3), True, cross_matrix(terms)))
+            elif a.fit:
                 res = minimize(lambda v: evaluate(rotvec_matrix(v), False)[0], np.zeros(3), method="Nelder-Mead",
                                options=dict(initial_simplex=np.vstack([np.zeros(3), np.eye(3)]), xatol=0.05,
                                             fatol=0.2, maxfev=80))
