@@ -65,10 +65,14 @@ def cross_matrix(terms):
     if terms == "none":
         return k
     for term in terms.split("+"):
-        ij, val = term.split(":")
-        if len(ij) != 2 or ij[0] not in "xyz" or ij[1] not in "xyz" or ij[0] == ij[1]:
+        ij, _, val = term.partition(":")
+        try:
+            v = float(val)
+        except ValueError:
+            v = None
+        if v is None or len(ij) != 2 or ij[0] not in "xyz" or ij[1] not in "xyz" or ij[0] == ij[1]:
             sys.exit("bad --accel term %r (want e.g. zx:-0.03)" % term)
-        k["xyz".index(ij[0]), "xyz".index(ij[1])] += float(val)
+        k["xyz".index(ij[0]), "xyz".index(ij[1])] += v
     return k
 
 
@@ -82,6 +86,7 @@ def main():
     ap.add_argument("--accel", default="", help="accelerometer cross-axis settings instead, e.g. none,zx:-0.03")
     a = ap.parse_args()
     angles = [float(x) for x in a.angles.split(",")]
+    accel = [(terms, cross_matrix(terms)) for terms in a.accel.split(",")] if a.accel else []
     print("log, " + ("accelerometer cross-axis terms" if a.accel else "gyro rotation") + ": horizontal / 3-D closure (m), height change (m, up), first-update NIS"
           + ("" if a.fit or a.rotvec or a.accel else " (about sensor %s, deg)" % a.axis))
     with tempfile.TemporaryDirectory() as tmp:
@@ -112,9 +117,9 @@ def main():
                       r["return_error_3d_m"], r["vertical_drift_m"], nis))
                 sys.stdout.flush()
 
-            if a.accel:
-                for terms in a.accel.split(","):
-                    show("accel %s" % terms, *evaluate(np.eye(3), True, cross_matrix(terms)))
+            if accel:
+                for terms, ka in accel:
+                    show("accel %s" % terms, *evaluate(np.eye(3), True, ka))
             elif a.fit:
                 res = minimize(lambda v: evaluate(rotvec_matrix(v), False)[0], np.zeros(3), method="Nelder-Mead",
                                options=dict(initial_simplex=np.vstack([np.zeros(3), np.eye(3)]), xatol=0.05,

@@ -1,7 +1,8 @@
 """Shared by the analysis scripts that replay logs: `LOG... [-- REPLAY OPTIONS]`
 arguments and `bin/harness replay LOG --out CSV` for each log.
 
-Not a command; imported by scripts/height_phases.py and scripts/stand_drift.py.
+Not a command; imported by scripts/height_phases.py, scripts/stand_drift.py and
+scripts/still_start.py (its argument split).
 """
 import os
 import subprocess

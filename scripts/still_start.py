@@ -8,8 +8,12 @@ to start S seconds before that swing, for each S of --before, and replayed
 again: the horizontal return-to-start error (% of the step-to-step path)
 for each S, then the median and the worst over the logs per S.
 
+With --bias, also the gyro bias the alignment handed the filter (the first
+non-zero row of the trajectory's bgx-bgz) and the walk's last one, deg/s,
+for the whole log and each cut.
+
 Usage (from the repository root, after `make`; about 2 s per replay):
-  /usr/bin/python3 scripts/still_start.py LOG... [--before 0.3,0.5,0.8,1.2,2] [-- REPLAY OPTIONS]
+  /usr/bin/python3 scripts/still_start.py LOG... [--before 0.3,0.5,0.8,1.2,2] [--bias] [-- REPLAY OPTIONS]
 """
 import argparse
 import json
@@ -19,6 +23,8 @@ import sys
 import tempfile
 
 import numpy as np
+
+from replay_runs import split_args
 
 H = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bin", "harness")
 
@@ -44,15 +50,26 @@ def first_swing(tr):
     return None if after.size == 0 else float(tr["t"][i + after[0]])
 
 
+def gyro_bias(tr):
+    """(aligned, last) gyro bias of a trajectory, deg/s: its first non-zero bgx-bgz row and its last."""
+    b = np.degrees(np.column_stack([tr["bgx"], tr["bgy"], tr["bgz"]]))
+    nz = np.nonzero(np.any(b != 0.0, axis=1))[0]
+    return (b[nz[0]] if nz.size else b[0]), b[-1]
+
+
+def show_bias(label, tr):
+    b0, b1 = gyro_bias(tr)
+    print("  %-10s gyro bias aligned (%+.2f, %+.2f, %+.2f), at the end (%+.2f, %+.2f, %+.2f) deg/s"
+          % ((label,) + tuple(b0) + tuple(b1)))
+
+
 def main():
-    argv = sys.argv[1:]
-    opts = []
-    if "--" in argv:
-        k = argv.index("--")
-        argv, opts = argv[:k], argv[k + 1:]
-    ap = argparse.ArgumentParser(usage=__doc__.split("Usage")[1].split("\n", 2)[1].strip())
+    usage = __doc__.split("Usage")[1].split("\n", 2)[1].strip()
+    argv, opts = split_args(sys.argv[1:], usage)
+    ap = argparse.ArgumentParser(usage=usage)
     ap.add_argument("logs", nargs="+")
     ap.add_argument("--before", default="0.3,0.5,0.8,1.2,2", help="stillness kept before the first swing, s")
+    ap.add_argument("--bias", action="store_true", help="print the aligned and the last gyro bias of each run")
     a = ap.parse_args(argv)
     before = [float(x) for x in a.before.split(",")]
     print("horizontal return-to-start error, % of the step-to-step path, log cut to start S s before its first swing")
@@ -69,18 +86,23 @@ def main():
             ts = first_swing(tr)
             if ts is None:
                 sys.exit("%s: no stance followed by a swing" % log)
-            row = []
+            row, trs = [], []
             for k, s in enumerate(before):
                 m = d["t"] >= ts - s
                 cut = os.path.join(tmp, "cut.csv")
                 np.savetxt(cut, np.column_stack([d["t"][m] - d["t"][m][0]] +
                                                 [d[c][m] for c in ("ax", "ay", "az", "gx", "gy", "gz")]),
                            delimiter=",", header="t,ax,ay,az,gx,gy,gz", comments="", fmt="%.9g")
-                jc, _ = replay(cut, tmp, opts)
+                jc, tc = replay(cut, tmp, opts)
+                trs.append(tc)
                 per[k].append(jc["return_error_h_pct"])
                 row.append(jc["return_error_h_pct"])
             print("%-38s %9.2f %7.2f" % (os.path.basename(log)[:38], ts, j["return_error_h_pct"]) +
                   "".join("  %7.2f" % x for x in row))
+            if a.bias:
+                show_bias("whole", tr)
+                for s, tc in zip(before, trs):
+                    show_bias("S=%g" % s, tc)
             sys.stdout.flush()
     print("%-38s %9s %7s" % ("median", "", "") + "".join("  %7.2f" % np.median(p) for p in per))
     print("%-38s %9s %7s" % ("worst", "", "") + "".join("  %7.2f" % np.max(p) for p in per))
