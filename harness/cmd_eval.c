@@ -13,7 +13,7 @@
 #include "hx_profile.h"
 
 static const hx_opt_t k_opts[] = {
-    HX_NAV_OPTS,
+    HX_NAV_OPTS(NULL),
     { "--data", "DIR", "shared data directory (default: $FNAV_DATA_DIR, ../shared/data)", 0 },
     { "--out", "FILE", "results in Markdown (default docs/results.md; '-' for standard output)", 0 },
     { "--json", "FILE", "also write the headline figures as JSON", 0 },
@@ -1174,10 +1174,11 @@ int hx_cmd_eval(int argc, char **argv)
         jnum(j, "footprints_final_pct_median", fp.final_pct_med);
         jnum(j, "footprints_final_pct_mean", fp.final_pct_mean);
         jnum(j, "vicon_stride_err_m_median", vi.stride_med);
-        jnum(j, "ipol_missed", ip.missed);
-        jnum(j, "ipol_spurious", ip.spurious);
-        jnum(j, "ipol_fo_err_median", ip.fo_med);
-        jnum(j, "ipol_fs_err_median", ip.fs_med);
+        /* the counts are 0 on no trials: null, as every absent figure */
+        jnum(j, "ipol_missed", ip.trials > 0 ? (double)ip.missed : (double)NAN);
+        jnum(j, "ipol_spurious", ip.trials > 0 ? (double)ip.spurious : (double)NAN);
+        jnum(j, "ipol_fo_err_median", ip.trials > 0 ? ip.fo_med : (double)NAN);
+        jnum(j, "ipol_fs_err_median", ip.trials > 0 ? ip.fs_med : (double)NAN);
         text = cJSON_Print(j);
         cJSON_Delete(j);
         f = text ? fopen(json_path, "w") : NULL;

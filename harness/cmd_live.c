@@ -30,12 +30,12 @@ static const hx_opt_t k_opts[] = {
     { "--baud", "N", "baud rate, 8N1 (default 460800)", 0 },
     { "--record", "FILE", "record every received sample to FILE (.bin; valid even if killed)", 0 },
     { "--plot-every", "S", "redraw the plot every S seconds", 0 },
-    { "--plot", "FILE", "PNG drawn by --plot-every (default live.png)", 0 },
+    { "--plot", "FILE", "PNG redrawn every --plot-every seconds (default live.png; given alone: every 1 s)", 0 },
     { "--timeout", "S", "give up when no valid frame arrives for S seconds (default: wait forever)", 0 },
     { "--print-every", "S", "status line period, s (default 1; 0: only the summary)", 0 },
     { "--out", "FILE", "trajectory CSV, the columns of `harness replay --out` ('-': standard output)", 0 },
     { "--json", "FILE", "summary as JSON, the keys of `harness replay --json`", 0 },
-    HX_NAV_OPTS,
+    HX_NAV_OPTS(NULL),
     { NULL, NULL, NULL, 0 }
 };
 

@@ -9,7 +9,7 @@
 
 static const hx_opt_t k_opts[] = {
     HX_INPUT_OPTS,
-    HX_NAV_OPTS,
+    HX_NAV_OPTS(HX_NAV_RATE_HELP),
     { "--out", "FILE", "trajectory CSV (time, position, velocity, attitude, biases, flags, covariance)", 0 },
     { "--json", "FILE", "summary as JSON (keys in docs/harness.md)", 0 },
     { "--plot", "FILE", "PNG of the 2-D path and of the height over time", 0 },

@@ -7,6 +7,7 @@
 
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_profile.h"
 #include "hx_simgap.h"
 
 static const hx_opt_t k_opts[] = {
@@ -78,6 +79,13 @@ int hx_cmd_simgap(int argc, char **argv)
     o.quiet = hx_flag(&a, "--quiet");
     o.contiguous = hx_flag(&a, "--contiguous");
     o.profile = hx_arg(&a, "--profile");
+    if (o.profile != NULL) {
+        fnav_profile_t probe; /* refused up front, as by the other commands */
+        if (hx_profile_load(o.profile, &probe, err, sizeof err) != 0) {
+            hx_error("simgap", "%s", err);
+            return HX_EXIT_USAGE;
+        }
+    }
     o.closed = hx_flag(&a, "--closed");
     json = hx_arg(&a, "--json");
     plot = hx_arg(&a, "--plot");

@@ -31,6 +31,9 @@ void hx_usage(const hx_spec_t *spec, FILE *f)
     fprintf(f, "\noptions:\n");
     for (i = 0; spec->opts != NULL && spec->opts[i].name != NULL; i++) {
         char left[64];
+        if (spec->opts[i].help == NULL) {
+            continue; /* accepted only to be refused with a reason */
+        }
         snprintf(left, sizeof left, "%s%s%s", spec->opts[i].name, spec->opts[i].metavar ? " " : "",
                  spec->opts[i].metavar ? spec->opts[i].metavar : "");
         fprintf(f, "  %-22s %s%s\n", left, spec->opts[i].help, spec->opts[i].repeat ? " (repeatable)" : "");
@@ -60,7 +63,7 @@ int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
             int k = opt_index(spec, s, len);
             const char *v = NULL;
             if (k < 0) {
-                fprintf(stderr, "harness %s: unknown option '%.*s'\n", spec->name, (int)len, s);
+                hx_error(spec->name, "unknown option '%.*s'", (int)len, s);
                 hx_usage(spec, stderr);
                 return -1;
             }
@@ -70,38 +73,37 @@ int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
                 } else if (i + 1 < argc) {
                     v = argv[++i];
                 } else {
-                    fprintf(stderr, "harness %s: option %s needs a value (%s)\n", spec->name, spec->opts[k].name,
-                            spec->opts[k].metavar);
+                    hx_error(spec->name, "option %s needs a value (%s)", spec->opts[k].name, spec->opts[k].metavar);
                     return -1;
                 }
             } else if (eq != NULL) {
-                fprintf(stderr, "harness %s: option %s takes no value\n", spec->name, spec->opts[k].name);
+                hx_error(spec->name, "option %s takes no value", spec->opts[k].name);
                 return -1;
             }
             if (a->count[k] > 0 && !spec->opts[k].repeat) {
                 a->count[k] = 0; /* last one wins */
             }
             if (a->count[k] >= HX_MAX_REPEAT) {
-                fprintf(stderr, "harness %s: option %s given too often\n", spec->name, spec->opts[k].name);
+                hx_error(spec->name, "option %s given too often", spec->opts[k].name);
                 return -1;
             }
             a->val[k][a->count[k]++] = v ? v : "";
             continue;
         }
         if (s[0] == '-' && s[1] != '\0' && !only_pos && !(s[1] >= '0' && s[1] <= '9')) {
-            fprintf(stderr, "harness %s: unknown option '%s'\n", spec->name, s);
+            hx_error(spec->name, "unknown option '%s'", s);
             hx_usage(spec, stderr);
             return -1;
         }
         if (a->npos >= spec->max_pos || a->npos >= HX_MAX_POS) {
-            fprintf(stderr, "harness %s: unexpected argument '%s'\n", spec->name, s);
+            hx_error(spec->name, "unexpected argument '%s'", s);
             hx_usage(spec, stderr);
             return -1;
         }
         a->pos[a->npos++] = s;
     }
     if (a->npos < spec->min_pos) {
-        fprintf(stderr, "harness %s: missing argument\n", spec->name);
+        hx_error(spec->name, "missing argument");
         hx_usage(spec, stderr);
         return -1;
     }
@@ -151,7 +153,7 @@ int hx_arg_double(const hx_args_t *a, const char *name, double lo, double hi, do
     errno = 0;
     v = strtod(s, &end);
     if (end == s || *end != '\0' || v != v || v < lo || v > hi) {
-        fprintf(stderr, "harness %s: %s '%s' is not a number in [%g, %g]\n", a->spec->name, name, s, lo, hi);
+        hx_error(a->spec->name, "%s '%s' is not a number in [%g, %g]", name, s, lo, hi);
         return -1;
     }
     *out = v;
@@ -169,7 +171,7 @@ int hx_arg_long(const hx_args_t *a, const char *name, long lo, long hi, long *ou
     errno = 0;
     v = strtol(s, &end, 10);
     if (end == s || *end != '\0' || errno != 0 || v < lo || v > hi) {
-        fprintf(stderr, "harness %s: %s '%s' is not an integer in [%ld, %ld]\n", a->spec->name, name, s, lo, hi);
+        hx_error(a->spec->name, "%s '%s' is not an integer in [%ld, %ld]", name, s, lo, hi);
         return -1;
     }
     *out = v;

@@ -25,7 +25,8 @@ enum {
 typedef struct {
     const char *name;     /**< "--out" */
     const char *metavar;  /**< "FILE"; NULL for a flag */
-    const char *help;     /**< one line */
+    const char *help;     /**< one line; NULL: accepted but left out of the
+                           *   usage (a command that refuses it with a reason) */
     int repeat;           /**< may be given several times */
 } hx_opt_t;
 

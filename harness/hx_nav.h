@@ -28,13 +28,17 @@ typedef struct {
     int nparams;
 } hx_nav_opts_t;
 
-/** The options every navigation command accepts, for an hx_opt_t table. */
-#define HX_NAV_OPTS                                                                                   \
+/** The options every navigation command accepts, for an hx_opt_t table:
+ *  HX_NAV_OPTS(HX_NAV_RATE_HELP) where --rate resamples the log,
+ *  HX_NAV_OPTS(NULL) where the command refuses it with its own reason (the
+ *  option is then left out of the usage). */
+#define HX_NAV_RATE_HELP "resample the input to HZ first (anti-alias low-pass, docs/harness.md)"
+#define HX_NAV_OPTS(rate_help)                                                                        \
     { "--profile", "NAME|FILE", "sensor profile: generic-mems (default), navchip, mtx, shimmer or a profile file", 0 }, \
     { "--bias-model", "MODEL", "ar1 (default, docs/navigation.md) or off", 0 },                                           \
     { "--detector", "KIND", "stance detector: shoe (default) or threshold", 0 },                      \
     { "--samples", "KIND", "what a sample is: instant (default; rate-output sensors) or mean (delta-angle/velocity over the interval)", 0 }, \
-    { "--rate", "HZ", "resample the input to HZ first (anti-alias low-pass, docs/harness.md)", 0 },   \
+    { "--rate", "HZ", rate_help, 0 },                                                                 \
     { "--param", "KEY=VALUE", "set a navigation parameter (list: --param help)", 1 }
 
 /** Collect the HX_NAV_OPTS values from parsed arguments; -1 on a usage

@@ -89,7 +89,7 @@ size_t hx_effect_format(const fnav_imuerr_config_t *cfg, fnav_effect_id_t id, ch
                                  "script such as stand:5,walk:20:90,stairs-up:12,home", 0 },                   \
     { "--duration", "S", "length of the output in seconds (built-in motions are sized to it)", 0 },            \
     { "--rate", "HZ", "output sample rate (default 200)", 0 },                                                  \
-    { "--profile", "NAME|FILE", "sensor noise: navchip (default), mtx, shimmer, a profile file, or none", 0 },  \
+    { "--profile", "NAME|FILE", "sensor noise: navchip (default), mtx, shimmer, generic-mems, a profile file, or none", 0 },  \
     { "--bias-sigma", "READING", "paper Tables' sigma_bias: given (default, eq. 4: stationary sd) or eq6 "     \
                                  "(sd = sigma_bias sqrt(tau) / 0.617, docs/simulator.md)", 0 },                \
     { "--effect", "SPEC", "add an effect: NAME[:ch=CH][:PARAM=VALUE]... or NAME:off (see sim --list-effects)", 1 }, \

@@ -51,7 +51,7 @@ int main(int argc, char **argv)
             return k_commands[i].fn(argc - 2, argv + 2);
         }
     }
-    fprintf(stderr, "harness: unknown command '%s'\n", argv[1]);
+    fprintf(stderr, "harness: error: unknown command '%s'\n", argv[1]);
     usage(stderr);
     return HX_EXIT_USAGE;
 }

@@ -159,7 +159,10 @@ if [ -n "$D" ]; then
     mkdir -p "$T/part/xio_ngimu_gait"
     cp "$D/xio_ngimu_gait/short_walk.csv" "$T/part/xio_ngimu_gait/other_walk.csv"
     cp "$D/xio_ngimu_gait/LICENSE.md" "$T/part/xio_ngimu_gait/"
-    expect_exit 0 "eval on a partial data directory" "$H" eval --no-experiments --data "$T/part" --out "$T/part.md"
+    expect_exit 0 "eval on a partial data directory" "$H" eval --no-experiments --data "$T/part" --out "$T/part.md" --json "$T/part.json"
+    if grep -q '"ipol_missed":[[:space:]]*null' "$T/part.json" && grep -q '"ipol_spurious":[[:space:]]*null' "$T/part.json" &&
+        grep -q '"gx2_h_pct_median":[[:space:]]*null' "$T/part.json"; then
+        pass "eval JSON: null for the absent sets (not a perfect 0)"; else fail "eval JSON on partial data: $(tr -d '\n' < "$T/part.json")"; fi
     if grep -q "| other_walk.csv |.*| no vendor figure |" "$T/part.md"; then pass "an unknown xio walk is evaluated"; else fail "unknown xio walk missing"; fi
     if grep -q "LICENSE" "$T/part.md"; then fail "a licence file replayed as a walk"; else pass "licence files are not walks"; fi
     if grep -q "| xio short 3-D < 82 mm | - | no data |" "$T/part.md" && grep -q "| ipol: no missed or spurious strides | .* | no data |" "$T/part.md"; then
@@ -170,6 +173,12 @@ else
     echo "skip shared-data checks (no ../shared/data; set FNAV_DATA_DIR)"
 fi
 expect_exit 4 "eval without data" "$H" eval --data /nonexistent --out "$T/x.md"
+expect_exit 2 "eval refuses --rate" "$H" eval --rate 100 --data /nonexistent
+expect_err "runs the rate experiment itself" "eval says why --rate is refused"
+expect_exit 0 "eval --help" "$H" eval --help
+if grep -q -- "--rate" "$T/out"; then fail "eval --help offers --rate, which it refuses"; else pass "eval --help does not offer --rate"; fi
+expect_exit 2 "replay: an unknown option" "$H" replay vectors/walk.bin --bogus
+expect_err "harness replay: error: unknown option '--bogus'" "command-line errors use the error: prefix"
 
 if [ "$fails" -ne 0 ]; then
     echo "test_replay.sh: $fails failure(s)"

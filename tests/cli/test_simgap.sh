@@ -114,7 +114,7 @@ expect_exit 0 "given profile, wrong" "$H" simgap "$T/m.csv" --quiet --seeds 8 --
 json "$T/m2.json" 'all(c["profile"]["gap"]["full"]["significant"] and c["profile"]["gap"]["held_out"]["significant"] and not c["gap"]["full"]["significant"] for c in j["channels"]) and {l["channel"] for l in j["profile_locations"] if l["domain"] == "allan" and l["ratio"] > 5} == {"gx", "gy", "gz"}' &&
     pass "the wrong profile: gap on every channel, gyro ADEV x5+" || fail "wrong profile: $(cat "$T/pyerr")"
 grep -q "^where the given model misses" "$T/out" && pass "summary lists where the profile misses" || fail "profile summary"
-expect_exit 1 "unknown profile" "$H" simgap "$T/m.csv" --quiet --seeds 3 --profile "$T/nope.profile"
+expect_exit 2 "unknown profile (refused before the log is read)" "$H" simgap "$T/m.csv" --quiet --seeds 3 --profile "$T/nope.profile"
 
 # a simulated walk (CSV): detected as a walk, the navigation domain reported
 # (innovations per stance, the filter's model gap kept apart from the sensor
