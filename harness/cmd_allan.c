@@ -202,7 +202,11 @@ static int parse_channels(run_t *R, const char *list)
         R->ch[R->nch].scale = k_ch[found].gyro ? RAD2DEG : 1.0;
         R->nch++;
     }
-    return R->nch > 0 ? 0 : -1;
+    if (R->nch == 0) {
+        hx_error(CMD, "--channels: no channel named (a comma-separated list of ax, ay, az, gx, gy, gz)");
+        return -1;
+    }
+    return 0;
 }
 
 /* Returns 0 complete, 1 partial (error printed), -1 nothing usable. */
@@ -330,7 +334,8 @@ static int read_series(run_t *R, const char *path, int phase)
         if (phase) {
             if (have_prev) {
                 if (push_all(R, ch, (v - prev) * R->rate_hz) != 0) {
-                    hx_error(CMD, "%s:%ld: difference not finite", path, lineno);
+                    hx_error(CMD, "%s:%ld: the difference x rate is not finite or beyond the estimator's input "
+                                  "range (|y| <= %g)", path, lineno, FNAV_INPUT_MAX_ABS);
                     rc = 1;
                     break;
                 }
@@ -340,6 +345,8 @@ static int read_series(run_t *R, const char *path, int phase)
             have_prev = 1;
         } else {
             if (push_all(R, ch, v) != 0) {
+                hx_error(CMD, "%s:%ld: %g is beyond the estimator's input range (|y| <= %g)", path, lineno, v,
+                         FNAV_INPUT_MAX_ABS);
                 rc = 1;
                 break;
             }
@@ -737,12 +744,13 @@ static int plot_block(FILE *gp, const char *name, const run_t *R, const chan_t *
 static int write_plot(const run_t *R, const char *path)
 {
     hx_plot_t p;
+    char q[512];
     int i, cols = R->nch > 3 ? 3 : R->nch, rows = (R->nch + 2) / 3;
     if (hx_plot_open(&p, CMD, path, 520 * cols, 420 * rows) != 0) {
         return -1;
     }
     fprintf(p.gp, "set multiplot layout %d,%d title 'Allan deviation: %s (%g Hz, %lu samples)'\n", rows, cols,
-            R->source, R->rate_hz, (unsigned long)R->n);
+            hx_gp_str(q, sizeof q, R->source), R->rate_hz, (unsigned long)R->n);
     fprintf(p.gp, "set logscale xy\nset format y '%%.0e'\nset key bottom left font ',8'\nset xlabel 'tau [s]'\n");
     for (i = 0; i < R->nch; i++) {
         const chan_t *ch = &R->ch[i];
@@ -750,7 +758,8 @@ static int write_plot(const run_t *R, const char *path)
         const int nsp = plot_block(p.gp, "sp", R, ch, 1);
         const int nsf = plot_block(p.gp, "sf", R, ch, 2);
         const int naf = plot_block(p.gp, "af", R, ch, 3);
-        fprintf(p.gp, "set title '%s'\nset ylabel 'ADEV [%s]'\n", ch->label, ch->unit);
+        fprintf(p.gp, "set title '%s'\n", hx_gp_str(q, sizeof q, ch->label));
+        fprintf(p.gp, "set ylabel 'ADEV [%s]'\n", hx_gp_str(q, sizeof q, ch->unit));
         if (nm == 0) {
             /* nothing positive to draw on log axes: an empty panel that says so */
             fprintf(p.gp, "set label 1 'not enough data' at graph 0.5,0.5 center\nset xrange [0.01:1]\n"

@@ -49,6 +49,10 @@ int hx_cmd_convert(int argc, char **argv)
     } else if (strcmp(a.pos[1], "-") == 0) {
         to = HX_FMT_CSV;
     }
+    if (hx_same_file(a.pos[0], a.pos[1])) {
+        hx_error("convert", "%s: the output is the input (it would be overwritten while read)", a.pos[1]);
+        return HX_EXIT_USAGE;
+    }
     r = hx_open_input("convert", &a, a.pos[0]);
     if (r == NULL) {
         return HX_EXIT_DATA;

@@ -130,6 +130,23 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
     return 0;
 }
 
+/* A judged walk must give a closure: with no stride (a log that never
+ * aligned, or no motion the detector took for a step) its "return to the
+ * start" is zero by construction, not a result. Counted as a failed run;
+ * 1 (after freeing t) when it is one. */
+static int no_closure(ev_t *ev, const char *path, const hx_nav_summary_t *s, hx_traj_t *t)
+{
+    if (s->strides > 0 && s->path_m > 0.0) {
+        return 0;
+    }
+    hx_warn("eval", "%s: %s: no closure to judge", path,
+            (t->n > 0 && (t->f[t->n - 1].flags & FNAV_FRAME_ALIGNED) != 0) ? "no stride detected"
+                                                                          : "the filter never aligned");
+    ev->failures++;
+    hx_traj_free(t);
+    return 1;
+}
+
 static void fmt_name(char *out, size_t size, const char *name, const char *strip)
 {
     const char *p = strstr(name, strip);
@@ -160,7 +177,7 @@ static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fna
         hx_traj_t t;
         hx_nav_summary_t s;
         snprintf(path, sizeof path, "%s/%.159s", dir, names[i]);
-        if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0) {
+        if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0 || no_closure(ev, path, &s, &t)) {
             continue;
         }
         fmt_name(nm, sizeof nm, names[i], suffix);
@@ -208,7 +225,7 @@ static double closure_3d_m(ev_t *ev, const char *path, const fnav_nav_config_t *
     hx_traj_t t;
     hx_nav_summary_t s;
     char note[200];
-    if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0) {
+    if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0 || no_closure(ev, path, &s, &t)) {
         return (double)NAN;
     }
     hx_traj_free(&t);
@@ -903,7 +920,7 @@ int hx_cmd_eval(int argc, char **argv)
             char vs[32];
             xio3[i] = (double)NAN;
             snprintf(p, sizeof p, "%s/xio_ngimu_gait/%.159s", ev.data, xio[i]);
-            if (replay(&ev, p, &ev.cfg, 0.0, &t, &s, note, sizeof note) != 0) {
+            if (replay(&ev, p, &ev.cfg, 0.0, &t, &s, note, sizeof note) != 0 || no_closure(&ev, p, &s, &t)) {
                 continue;
             }
             xio3[i] = s.end_3d_m;
@@ -1146,8 +1163,13 @@ int hx_cmd_eval(int argc, char **argv)
                 target(isfinite(xs), xs < 0.082));
         fprintf(ev.md, "| xio long 3-D < 421 mm | %s | %s |\n", fmt_mm(v, sizeof v, xl),
                 target(isfinite(xl), xl < 0.421));
-        fprintf(ev.md, "| ipol: no missed or spurious strides | %d missed, %d spurious | %s |\n", ip.missed,
-                ip.spurious, target(ip.trials, ip.missed == 0 && ip.spurious == 0));
+        if (ip.trials > 0) {
+            snprintf(v, sizeof v, "%d missed, %d spurious", ip.missed, ip.spurious);
+        } else {
+            snprintf(v, sizeof v, "-");
+        }
+        fprintf(ev.md, "| ipol: no missed or spurious strides | %s | %s |\n", v,
+                target(ip.trials, ip.missed == 0 && ip.spurious == 0));
         if (ip.trials > 0) {
             snprintf(v, sizeof v, "FO %.1f, FS %.1f", ip.fo_med, ip.fs_med);
         } else {

@@ -444,6 +444,16 @@ int hx_cmd_live(int argc, char **argv)
             plot_every = 1.0;
         }
     }
+    if (plot_every > 0.0) {
+        /* the plots are drawn in a child, whose failure nobody would see:
+         * find out now that the picture can be written */
+        FILE *f = fopen(plot_png, "ab");
+        if (f == NULL) {
+            hx_error(CMD, "cannot write %s: %s", plot_png, strerror(errno));
+            return HX_EXIT_IO;
+        }
+        fclose(f);
+    }
     out_path = hx_arg(&a, "--out");
     json_path = hx_arg(&a, "--json");
 
@@ -568,16 +578,20 @@ int hx_cmd_live(int argc, char **argv)
         FILE *sum_out = (L.csv == stdout) ? stderr : stdout;
         double span = span_s(&L);
         uint32_t missing = L.have_end && L.end_count > L.samples ? L.end_count - L.samples : 0u;
-        if (L.traj.aligned) {
+        if (L.traj.aligned || (json_path != NULL && L.traj.n > 0)) {
             hx_nav_summary_t sum;
             hx_nav_summarize(&L.traj, &sum);
-            hx_nav_print_summary(sum_out, a.pos[0], &L.traj, &sum);
+            if (L.traj.aligned) {
+                hx_nav_print_summary(sum_out, a.pos[0], &L.traj, &sum);
+            }
+            /* as replay's: written unaligned too ("aligned": false) */
             if (json_path != NULL &&
                 hx_nav_write_json(json_path, a.pos[0], "harness live", &L.traj, &sum, err, sizeof err) != 0) {
                 hx_error(CMD, "%s", err);
                 L.csv_failed = 1;
             }
-        } else if (L.samples > 0u) {
+        }
+        if (!L.traj.aligned && L.samples > 0u) {
             fprintf(sum_out, "live: no navigation: the filter never aligned (the foot must be still at the start)\n");
         }
         fprintf(sum_out, "live: %s: %u samples over %.3f s of sensor time (%.1f Hz), %.1f s of wall time\n", a.pos[0],

@@ -71,6 +71,10 @@ int hx_cmd_replay(int argc, char **argv)
     out_path = hx_arg(&a, "--out");
     json_path = hx_arg(&a, "--json");
     plot_path = hx_arg(&a, "--plot");
+    if (hx_same_file(a.pos[0], out_path) || hx_same_file(a.pos[0], json_path) || hx_same_file(a.pos[0], plot_path)) {
+        hx_error("replay", "%s: an output is the log itself (it would be overwritten)", a.pos[0]);
+        return HX_EXIT_USAGE;
+    }
     if (out_path != NULL) {
         csv = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
         if (csv == NULL) {

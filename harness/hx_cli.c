@@ -6,6 +6,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -335,21 +336,60 @@ void hx_progress_end(hx_progress_t *p)
 
 /* ------------------------------------------------------------ plots */
 
+int hx_same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    if (a == NULL || b == NULL || stat(a, &sa) != 0 || stat(b, &sb) != 0) {
+        return 0;
+    }
+    return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+const char *hx_gp_str(char *buf, size_t size, const char *s)
+{
+    size_t o = 0;
+    if (size == 0) {
+        return buf;
+    }
+    for (; *s != '\0' && o + 1 < size; s++) {
+        if (*s == '\'') {
+            if (o + 2 >= size) {
+                break;
+            }
+            buf[o++] = '\'';
+        }
+        buf[o++] = (*s == '\n' || *s == '\r') ? ' ' : *s;
+    }
+    buf[o] = '\0';
+    return buf;
+}
+
 int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h)
 {
+    char q[1024];
     memset(p, 0, sizeof *p);
     if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
         hx_error(cmd, "cannot draw %s: gnuplot is not installed (apt-get install gnuplot-nox)", png_path);
         return -1;
     }
-    p->gp = popen("gnuplot", "w");
+    {
+        /* gnuplot writes the image to its standard output when it cannot
+         * open the file: find out first, and keep its output away from ours */
+        FILE *f = fopen(png_path, "wb");
+        if (f == NULL) {
+            hx_error(cmd, "cannot write %s (%s)", png_path, strerror(errno));
+            return -1;
+        }
+        fclose(f);
+    }
+    p->gp = popen("gnuplot >/dev/null", "w");
     if (p->gp == NULL) {
         hx_error(cmd, "cannot start gnuplot (%s)", strerror(errno));
         return -1;
     }
     snprintf(p->path, sizeof p->path, "%s", png_path);
     fprintf(p->gp, "set terminal pngcairo size %d,%d noenhanced font 'sans,10'\n", w, h);
-    fprintf(p->gp, "set output '%s'\n", png_path);
+    fprintf(p->gp, "set output '%s'\n", hx_gp_str(q, sizeof q, png_path));
     fprintf(p->gp, "set grid\n");
     return 0;
 }

@@ -135,10 +135,19 @@ typedef struct {
 } hx_plot_t;
 
 /** Start gnuplot for a PNG of w x h pixels. Returns 0, or -1 with a
- *  message printed when gnuplot is not installed. */
+ *  message printed when gnuplot is not installed or the PNG cannot be
+ *  written. */
 int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h);
 /** Finish; returns 0 when the PNG was written. */
 int hx_plot_close(hx_plot_t *p, const char *cmd);
+/** 1 when the two paths name one existing file (an output about to
+ *  overwrite the input), else 0. */
+int hx_same_file(const char *a, const char *b);
+
+/** `s` as the inside of a gnuplot single-quoted string (a quote doubled),
+ *  cut to fit `buf`; returns buf. Every text from outside the program (a
+ *  path, a file name, a unit) goes through it, so that it stays text. */
+const char *hx_gp_str(char *buf, size_t size, const char *s);
 
 /** Format a double for JSON/text (finite or "null"). */
 const char *hx_fmt_g(char *buf, size_t size, double v);

@@ -276,6 +276,9 @@ static int secs_to_ns(double t_s, int64_t *out)
 static int read_line(hx_reader_t *r)
 {
     size_t n;
+    /* a sentinel behind gzgets' terminator tells a NUL byte in the data
+     * (which strlen would take for the end of the line) from the end */
+    memset(r->line, 1, sizeof r->line);
     if (gzgets(r->gz, r->line, (int)sizeof r->line) == NULL) {
         int e;
         (void)gzerror(r->gz, &e);
@@ -287,6 +290,11 @@ static int read_line(hx_reader_t *r)
     }
     r->stats.lines++;
     n = strlen(r->line);
+    if (n + 1 < sizeof r->line && r->line[n + 1] != 1) {
+        set_err(r, "%s:%ld: a NUL byte in the text (binary data, e.g. a logger's unwritten blocks)", r->path,
+                r->stats.lines);
+        return -1;
+    }
     if (r->stats.lines == 1 && n >= 3 && memcmp(r->line, "\xef\xbb\xbf", 3) == 0) {
         /* a UTF-8 byte-order mark, as Windows tools write it: not data */
         memmove(r->line, r->line + 3, n - 2);
@@ -686,6 +694,13 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
                         prc == -2 ? "NaN or Inf" : "not a number");
                 return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
             }
+            /* what the core would refuse (and float would make Inf) is a
+             * reader error here, with its line */
+            if (fabs(v[c * 3 + i] * (c == 0 ? r->acc_scale : r->gyr_scale)) > FNAV_INPUT_MAX_ABS) {
+                set_err(r, "%s:%ld: column %d ('%.20s') is beyond %g in SI units (no sensor reads that)", r->path,
+                        r->stats.lines, col + 1, f[col], FNAV_INPUT_MAX_ABS);
+                return FNAV_E_RANGE;
+            }
         }
     }
     if (r->col_temp >= 0) {
@@ -860,14 +875,21 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                 return FNAV_E_TIME;
             }
             {
-                int k, finite = 1;
+                int k, finite = 1, in_range = 1;
                 for (k = 0; k < 3; k++) {
                     finite &= isfinite(rec.acc[k]) && isfinite(rec.gyr[k]);
+                    in_range &= fabs((double)rec.acc[k]) <= FNAV_INPUT_MAX_ABS &&
+                                fabs((double)rec.gyr[k]) <= FNAV_INPUT_MAX_ABS;
                 }
                 if (!finite) {
                     set_err(r, "%s: record #%ld at byte %lld: NaN or Inf in a sample", r->path, r->record_slot,
                             r->offset);
                     return FNAV_E_NANINF;
+                }
+                if (!in_range) {
+                    set_err(r, "%s: record #%ld at byte %lld: a value beyond %g in SI units (no sensor reads that)",
+                            r->path, r->record_slot, r->offset, FNAV_INPUT_MAX_ABS);
+                    return FNAV_E_RANGE;
                 }
             }
             r->pos += HX_BIN_RECORD_SIZE;

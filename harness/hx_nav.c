@@ -211,6 +211,16 @@ int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, siz
     static fnav_nav_t probe; /* validates the configuration as the core will */
     int i;
     *cfg = fnav_nav_config_default;
+    /* checked here as well as by hx_nav_opts_from_args: some commands
+     * (montecarlo) fill the options themselves */
+    if ((o->detector != NULL && strcmp(o->detector, "shoe") != 0 && strcmp(o->detector, "threshold") != 0) ||
+        (o->bias_model != NULL && strcmp(o->bias_model, "ar1") != 0 && strcmp(o->bias_model, "off") != 0) ||
+        (o->samples != NULL && strcmp(o->samples, "instant") != 0 && strcmp(o->samples, "mean") != 0)) {
+        snprintf(err, err_size, "--detector must be shoe or threshold, --bias-model ar1 or off, --samples instant or "
+                                "mean (given: %s, %s, %s)",
+                 o->detector ? o->detector : "-", o->bias_model ? o->bias_model : "-", o->samples ? o->samples : "-");
+        return -1;
+    }
     if (o->profile != NULL && hx_profile_load(o->profile, &cfg->profile, err, err_size) != 0) {
         return -1;
     }
@@ -868,10 +878,11 @@ int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_tr
 {
     hx_plot_t p;
     size_t i;
+    char q[512];
     if (hx_plot_open(&p, cmd, png, 1200, 600) != 0) {
         return -1;
     }
-    fprintf(p.gp, "set multiplot layout 1,2 title '%s'\n", title);
+    fprintf(p.gp, "set multiplot layout 1,2 title '%s'\n", hx_gp_str(q, sizeof q, title));
     fprintf(p.gp, "set size ratio -1\nset xlabel 'east y (m)'\nset ylabel 'north x (m)'\n");
     fprintf(p.gp, "plot '-' with lines lw 1 title 'path', '-' with points pt 7 ps 1 title 'start', "
                   "'-' with points pt 5 ps 1 title 'end'\n");

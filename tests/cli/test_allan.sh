@@ -17,6 +17,11 @@ expect_exit 2 "series without rate" "$H" allan --series /dev/null
 expect_exit 2 "log and series" "$H" allan x.csv --series y.txt --rate 1
 expect_exit 2 "bad per-octave" "$H" allan --series x --rate 1 --per-octave 3
 expect_exit 1 "missing file" "$H" allan "$T/nope.csv"
+printf "1e30\n1\n2\n" > "$T/big.txt"
+expect_exit 1 "series value beyond the input range" "$H" allan --series "$T/big.txt" --rate 100
+expect_err "big.txt:1: 1e+30 is beyond" "the rejected value is named with its line"
+expect_exit 2 "empty --channels" "$H" allan vectors/walk.bin --channels ,
+expect_err "no channel named" "empty --channels explained"
 expect_exit 1 "missing series" "$H" allan --series "$T/nope.txt" --rate 1
 expect_exit 0 "paper tables" "$H" allan --paper-tables
 grep -q "NavChip (IV)" "$T/out" && pass "paper tables list NavChip" || fail "paper tables output"

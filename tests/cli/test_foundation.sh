@@ -36,6 +36,11 @@ expect_exit 0 "convert bin->csv" "$H" convert vectors/walk.bin "$T/a.csv"
 expect_exit 0 "convert csv->bin" "$H" convert "$T/a.csv" "$T/b.bin"
 expect_exit 0 "convert bin->csv (2)" "$H" convert "$T/b.bin" "$T/c.csv"
 if cmp -s "$T/a.csv" "$T/c.csv"; then pass "csv -> bin -> csv identical"; else fail "round trip changed values"; fi
+expect_exit 2 "convert onto its own input" "$H" convert "$T/a.csv" "$T/a.csv"
+if cmp -s "$T/a.csv" "$T/c.csv"; then pass "convert left its input intact"; else fail "convert overwrote its input"; fi
+{ head -200 "$T/a.csv"; head -c 600 /dev/zero; echo; sed -n 201,400p "$T/a.csv"; } > "$T/nul.csv"
+expect_exit 1 "a NUL block inside a CSV" "$H" info "$T/nul.csv"
+expect_err "nul.csv:201: a NUL byte" "the NUL block is reported with its line"
 expect_exit 0 "convert to stdout" "$H" convert vectors/walk.bin -
 if [ "$(wc -l <"$T/out")" -eq 16540 ]; then pass "stdout has header + 16539 rows"; else fail "stdout rows"; fi
 

@@ -30,10 +30,10 @@ else
     fail "tone bandwidth"
 fi
 expect_exit 3 "unwritable output" "$H" psd "$T/tone.csv" --out /nonexistent/dir/p.csv
-# a value whose power overflows the core's float32: exit 1, the sample and channel named
+# a value beyond any sensor (and the core's input range): exit 1, the line and column named
 awk -F, 'NR == 102 { $5 = "1e30" } { print }' OFS=, "$T/tone.csv" >"$T/huge.csv"
 expect_exit 1 "a sample beyond float range" "$H" psd "$T/huge.csv"
-expect_err "sample 101: channel gx" "the overflowing sample and channel are named"
+expect_err "huge.csv:102: column 5 (.1e30.) is beyond" "the out-of-range value is named with its line and column"
 
 O=$(data openshoe_c_820hz/OpenShoeDataSet.txt)
 if [ -n "$O" ]; then

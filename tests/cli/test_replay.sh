@@ -69,7 +69,18 @@ expect_err "return-to-start" "summary on stderr when the CSV is on stdout"
 if command -v gnuplot >/dev/null 2>&1; then
     expect_exit 0 "replay --plot" "$H" replay vectors/walk.bin --plot "$T/p.png" --quiet
     if [ -s "$T/p.png" ]; then pass "PNG written"; else fail "PNG missing"; fi
+    # an unwritable PNG: exit 3 before any gnuplot, nothing on stdout
+    expect_exit 3 "unwritable --plot" "$H" replay vectors/walk.bin --plot /nonexistent/dir/p.png --quiet
+    if [ ! -s "$T/out" ]; then pass "no image on standard output"; else fail "unwritable --plot wrote $(wc -c < "$T/out") bytes to stdout"; fi
+    # a quote in the path is text to gnuplot, not a command
+    case "$H" in /*) HA=$H ;; *) HA=$(pwd)/$H ;; esac
+    WB=$(pwd)/vectors/walk.bin
+    (cd "$T" && "$HA" replay "$WB" --plot "q'; system('touch PWNED'); print '.png" --quiet) >/dev/null 2>&1
+    if [ ! -e "$T/PWNED" ] && [ -s "$T/q'; system('touch PWNED'); print '.png" ]; then pass "a quote in the --plot path is text to gnuplot"; else fail "plot path reached gnuplot as a command"; fi
 fi
+cp vectors/walk.bin "$T/self.bin"
+expect_exit 2 "replay --out onto its own log" "$H" replay "$T/self.bin" --out "$T/self.bin" --quiet
+if cmp -s vectors/walk.bin "$T/self.bin"; then pass "the log is left intact"; else fail "replay overwrote its log"; fi
 expect_exit 0 "replay --rate 100" "$H" replay vectors/walk.bin --rate 100 --json "$T/r.json"
 expect_out "resampled" "summary reports the resampling"
 expect_exit 1 "--rate above the input rate" "$H" replay vectors/walk.bin --rate 2000
@@ -172,6 +183,14 @@ if [ -n "$D" ]; then
 else
     echo "skip shared-data checks (no ../shared/data; set FNAV_DATA_DIR)"
 fi
+# a judged walk without a single stride (a still log under a gx2 name) is a
+# failed run, not a closure of 0: exit 1, its targets "no data"
+mkdir -p "$T/still/openshoe_gx2"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) printf "%.3f,0.01,0.02,9.81,0.001,0,0\n", i / 200 }' \
+    > "$T/still/openshoe_gx2/still_data_inert.txt"
+expect_exit 1 "eval: a judged walk with no stride fails the run" "$H" eval --no-experiments --data "$T/still" --out "$T/still.md"
+expect_err "no stride detected: no closure to judge" "eval says why the walk has no closure"
+if grep -q "| openshoe_gx2 3-D worst <= 1.2 % | - | no data |" "$T/still.md"; then pass "no closure is not judged met"; else fail "a still walk judged: $(grep 'worst' "$T/still.md")"; fi
 expect_exit 4 "eval without data" "$H" eval --data /nonexistent --out "$T/x.md"
 expect_exit 2 "eval refuses --rate" "$H" eval --rate 100 --data /nonexistent
 expect_err "runs the rate experiment itself" "eval says why --rate is refused"
