@@ -100,14 +100,40 @@ static void segment(fnav_welch_t *w)
     }
     fnav_fft_real_packed(&w->fft, re, im);
     if (w->cfg.detrend == FNAV_DETREND_GLOBAL) {
-        w->x0 += re[0];
-        w->x1r += re[1];
-        w->x1i += im[1];
+        /* compensated: global_fix subtracts terms of the size of these sums */
+        kahan_add(&w->x0, &w->x0c, re[0]);
+        kahan_add(&w->x1r, &w->x1rc, re[1]);
+        kahan_add(&w->x1i, &w->x1ic, im[1]);
     }
     for (i = 0; i <= h; i++) {
         kahan_add(&w->acc[i], &w->accc[i], re[i] * re[i] + im[i] * im[i]);
     }
     w->nseg++;
+}
+
+/* GLOBAL, once, before the first segment: move the shift from the first
+ * sample to the first segment's mean. global_fix takes the record's mean mu
+ * (relative to the shift) out of bins 0 and 1 as sum |X_k|^2 - 2 mu Re(..)
+ * + K mu^2 |W_k|^2, which cancels terms of K mu^2 |W_k|^2 against the noise
+ * power: with the first sample as the shift, mu is of the size of one
+ * sample's noise; with a segment's mean, of that over sqrt(nfft). Only
+ * samples of the first segment have been pushed (nsamples == nfft). */
+static void recentre(fnav_welch_t *w)
+{
+    const uint32_t n = w->cfg.nfft;
+    fnav_real_t m = FNAV_R(0.0);
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        m += w->ring[i];
+    }
+    m /= (fnav_real_t)n;
+    w->shift += m;
+    w->gs = FNAV_R(0.0);
+    w->gc = FNAV_R(0.0);
+    for (i = 0; i < n; i++) {
+        w->ring[i] -= m;
+        kahan_add(&w->gs, &w->gc, w->ring[i]);
+    }
 }
 
 fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x)
@@ -135,6 +161,9 @@ fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x)
     if (w->fill < n) {
         w->fill++;
         if (w->fill == n) {
+            if (w->cfg.detrend == FNAV_DETREND_GLOBAL) {
+                recentre(w);
+            }
             segment(w);
             w->since = 0;
         }
@@ -185,9 +214,9 @@ static fnav_real_t global_fix(const fnav_welch_t *w, uint32_t k, fnav_real_t acc
     const fnav_real_t mu = global_mean(w), K = (fnav_real_t)w->nseg;
     fnav_real_t v;
     if (k == 0u) {
-        v = acc - FNAV_R(2.0) * mu * w->s1 * w->x0 + K * mu * mu * w->s1 * w->s1;
+        v = acc - FNAV_R(2.0) * mu * w->s1 * (w->x0 - w->x0c) + K * mu * mu * w->s1 * w->s1;
     } else if (k == 1u) {
-        v = acc - FNAV_R(2.0) * mu * (w->w1r * w->x1r + w->w1i * w->x1i) +
+        v = acc - FNAV_R(2.0) * mu * (w->w1r * (w->x1r - w->x1rc) + w->w1i * (w->x1i - w->x1ic)) +
             K * mu * mu * (w->w1r * w->w1r + w->w1i * w->w1i);
     } else {
         return acc;

@@ -12,9 +12,9 @@
  * does not say how it treated DC; see docs/psd.md).
  *
  * Memory: fixed by FNAV_WELCH_MAX_NFFT (fnav_config.h), independent of the
- * log length; sizeof(fnav_welch_t) is about 6.5 * MAX_NFFT reals (float:
- * 6.7 KB for MAX_NFFT 256, 26 KB for 1024; set MAX_NFFT 64 on a sensor that
- * only needs the paper's 64-sample segments: 1.8 KB). Push costs O(1); every
+ * log length; sizeof(fnav_welch_t) is about 5 * MAX_NFFT reals (float:
+ * 20.6 KB for the default 1024, about 5.2 KB for 256; set MAX_NFFT 64 on a
+ * sensor that only needs the paper's 64-sample segments: 1.4 KB). Push costs O(1); every
  * hop samples one real FFT of nfft points (no allocation, no recursion).
  */
 #ifndef FNAV_WELCH_H
@@ -83,9 +83,11 @@ typedef struct {
     fnav_real_t s2;                            /**< sum of w^2 */
     fnav_real_t s1;                            /**< sum of w (= W_0, the window's DFT at bin 0) */
     fnav_real_t w1r, w1i;                      /**< W_1, the window's DFT at bin 1 */
-    fnav_real_t shift;                         /**< GLOBAL: first sample, removed to keep sums small */
+    fnav_real_t shift;                         /**< GLOBAL: removed to keep sums small: the first sample,
+                                                    then the first segment's mean */
     fnav_real_t gs, gc;                        /**< GLOBAL: sum of samples (Kahan) */
-    fnav_real_t x0, x1r, x1i;                  /**< GLOBAL: sums of X_0, X_1 over segments */
+    fnav_real_t x0, x1r, x1i;                  /**< GLOBAL: sums of X_0, X_1 over segments (Kahan) */
+    fnav_real_t x0c, x1rc, x1ic;               /**< their Kahan compensations */
     uint32_t pos;                              /**< ring index of the next sample */
     uint32_t fill;                             /**< samples in the ring (<= nfft) */
     uint32_t since;                            /**< samples since the last segment */
