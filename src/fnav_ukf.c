@@ -884,17 +884,21 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     /* AR(1) coefficients c = exp(-dt/tau) and driving variances
      * sigma^2 (1 - exp(-2 dt/tau)) (paper eqs. (3), (4) with c = e^(-1/tau)
      * for dt = one sample); the model off keeps the biases fixed. c comes
-     * from fnav_exp_neg, not the C library, so that host and target agree
-     * bit for bit (fnav_math.h). */
+     * from fnav_one_minus_exp_neg, not the C library, so that host and
+     * target agree bit for bit (fnav_math.h). */
     if (dt_s != f->ar1_dt_s) {
         /* recomputed only when the interval changes (usually never) */
         for (i = 0; i < 3; i++) {
             if (c->bias_model == FNAV_BIAS_AR1) {
-                f->ar1_c[i] = fnav_exp_neg(dt_s / c->gyro_tau_s[i]);
-                f->ar1_c[3 + i] = fnav_exp_neg(dt_s / c->accel_tau_s[i]);
-                f->ar1_q[i] = c->gyro_bias_sigma_rps[i] * c->gyro_bias_sigma_rps[i] * (FNAV_R(1.0) - f->ar1_c[i] * f->ar1_c[i]);
-                f->ar1_q[3 + i] = c->accel_bias_sigma_mps2[i] * c->accel_bias_sigma_mps2[i] *
-                                  (FNAV_R(1.0) - f->ar1_c[3 + i] * f->ar1_c[3 + i]);
+                /* from d = 1 - c, exact to float's relative precision even
+                 * for dt/tau of 1e-7: c = 1 - d, and 1 - c^2 = d (2 - d)
+                 * without the cancellation of 1 - c*c */
+                const fnav_real_t dg = fnav_one_minus_exp_neg(dt_s / c->gyro_tau_s[i]);
+                const fnav_real_t da = fnav_one_minus_exp_neg(dt_s / c->accel_tau_s[i]);
+                f->ar1_c[i] = FNAV_R(1.0) - dg;
+                f->ar1_c[3 + i] = FNAV_R(1.0) - da;
+                f->ar1_q[i] = c->gyro_bias_sigma_rps[i] * c->gyro_bias_sigma_rps[i] * (dg * (FNAV_R(2.0) - dg));
+                f->ar1_q[3 + i] = c->accel_bias_sigma_mps2[i] * c->accel_bias_sigma_mps2[i] * (da * (FNAV_R(2.0) - da));
             } else {
                 f->ar1_c[i] = f->ar1_c[3 + i] = FNAV_R(1.0);
                 f->ar1_q[i] = f->ar1_q[3 + i] = FNAV_R(0.0);
