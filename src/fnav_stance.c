@@ -63,15 +63,18 @@ fnav_status_t fnav_stance_init(fnav_stance_t *st, const fnav_stance_config_t *cf
     return FNAV_OK;
 }
 
+/* Nearest integer of a non-negative duration in samples, saturated (a
+ * configured duration of years must not overflow the conversion). */
 static int round_pos(fnav_real_t x)
 {
-    return (int)(x + FNAV_R(0.5));
+    return x < FNAV_R(1.0e9) ? (int)(x + FNAV_R(0.5)) : 1000000000;
 }
 
 /* Window and durations from the rate. */
 static void set_rate(fnav_stance_t *st, fnav_real_t rate_hz)
 {
-    int w = 2 * (int)(FNAV_R(0.5) * st->cfg.window_s * rate_hz) + 1;
+    const fnav_real_t half_w = FNAV_R(0.5) * st->cfg.window_s * rate_hz;
+    int w = half_w < (fnav_real_t)FNAV_STANCE_MAX_WINDOW ? 2 * (int)half_w + 1 : FNAV_STANCE_MAX_WINDOW + 1;
     int n;
     if (w < 3) {
         w = 3;
@@ -227,7 +230,7 @@ static fnav_real_t jerk_block_max(const fnav_stance_t *st, long k)
  * 2 n_ev: it runs once per stride, inside a stance step with a ZUPT, and
  * keeps that step within the navigation issue's instruction budget
  * (docs/firmware.md). Same answer as the plain two-pass scan. */
-static int64_t foot_strike(const fnav_stance_t *st, long k0, int64_t t_now_ns, long k_now)
+static int64_t foot_strike(const fnav_stance_t *st, long k0, int64_t t_now_ns, long k_now, int64_t t0_ns)
 {
     const long B = FNAV_STANCE_JERK_BLOCK;
     long lo = k0 - st->n_ev, k, kbest = k0;
@@ -235,8 +238,13 @@ static int64_t foot_strike(const fnav_stance_t *st, long k0, int64_t t_now_ns, l
     if (lo < 0) {
         lo = 0;
     }
+    /* the history ends k_now - k0 = n_min_stance - 1 samples after k0: the
+     * window before k0 is cut to what it still holds */
     if (lo < k_now - (FNAV_STANCE_EVENT_BUF - 1)) {
         lo = k_now - (FNAV_STANCE_EVENT_BUF - 1);
+    }
+    if (lo >= k0) {
+        return t0_ns; /* nothing before the stance is left: its first sample */
     }
     /* the largest jerk in [lo, k0): single samples up to a block boundary,
      * whole blocks, single samples after the last whole block */
@@ -324,7 +332,7 @@ static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
         st->seg = 1;
         st->strides++;
         o->events |= FNAV_STANCE_EV_STRIDE | FNAV_STANCE_EV_FOOT_STRIKE;
-        o->fs_t_ns = foot_strike(st, k - st->run + 1, o->sample.t_ns, k);
+        o->fs_t_ns = foot_strike(st, k - st->run + 1, o->sample.t_ns, k, st->run_t0_ns);
         o->swing_t0_ns = st->swing_t0_ns;
         o->swing_t1_ns = st->run_t0_ns; /* first sample of the stance run */
     }

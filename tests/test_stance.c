@@ -541,6 +541,58 @@ static void test_foot_strike_reference(void **state)
     }
 }
 
+/* A minimum stance longer than the jerk history (0.2 s at 1 kHz: 200
+ * samples against FNAV_STANCE_EVENT_BUF) leaves nothing before the stance
+ * to search when it is confirmed: the foot strike is then the stance's
+ * first sample, never a time inside it (it read an overwritten slot). With
+ * the default 0.05 s the impact 10 ms before the stance is found. */
+static void test_foot_strike_long_min_stance(void **state)
+{
+    const double rate = 1000.0, t_strike = 1.6;
+    double min_st;
+    (void)state;
+    for (min_st = 0.05; min_st < 0.3; min_st += 0.15) {
+        static fnav_stance_t st;
+        fnav_stance_config_t c = fnav_stance_config_default;
+        fnav_stance_out_t o;
+        fnav_sample_t s;
+        long i, strikes = 0;
+        memset(&s, 0, sizeof s);
+        c.rate_hz = (fnav_real_t)rate;
+        c.min_stance_s = (fnav_real_t)min_st;
+        c.adaptive = 0;
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        for (i = 0; i < (long)(3.1 * rate); i++) {
+            const double t = (double)i / rate;
+            s.t_ns = (int64_t)llround(t * 1e9);
+            s.seq = (uint32_t)i;
+            s.accel_mps2[0] = FNAV_R(0.0);
+            s.accel_mps2[2] = FNAV_R(-9.80665);
+            s.gyro_rps[1] = FNAV_R(0.0);
+            if (t >= 1.0 && t < t_strike) {
+                s.gyro_rps[1] = (fnav_real_t)(3.0 * sin(3.14159 * (t - 1.0) / 0.6));
+                s.accel_mps2[0] = (fnav_real_t)(5.0 * sin(6.28 * (t - 1.0) / 0.6));
+            }
+            if (fabs(t - (t_strike - 0.01)) < 0.5 / rate) {
+                s.accel_mps2[2] = FNAV_R(-60.0); /* the heel impact */
+            }
+            assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+            while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+                if (o.events & FNAV_STANCE_EV_FOOT_STRIKE) {
+                    strikes++;
+                    assert_true(o.fs_t_ns <= o.swing_t1_ns);
+                    if (min_st < 0.1) {
+                        assert_true(fabs((double)o.fs_t_ns * 1e-9 - (t_strike - 0.01)) <= 1e-3);
+                    } else {
+                        assert_true(o.fs_t_ns == o.swing_t1_ns);
+                    }
+                }
+            }
+        }
+        assert_int_equal(strikes, 1);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -555,6 +607,7 @@ int main(void)
         cmocka_unit_test(test_threshold_detector),
         cmocka_unit_test(test_gait_events),
         cmocka_unit_test(test_foot_strike_reference),
+        cmocka_unit_test(test_foot_strike_long_min_stance),
     };
     return cmocka_run_group_tests_name("stance", tests, NULL, NULL);
 }

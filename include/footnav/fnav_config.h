@@ -32,9 +32,12 @@
 #define FNAV_STANCE_MAX_WINDOW 64
 #endif
 
-/** Jerk history of the stance detector's foot-strike search, samples: the
- *  search covers min(event_window_s, this many samples), i.e. the full 0.3 s
- *  up to 533 Hz (fnav_stance.h). 8 bytes per sample. */
+/** Jerk history of the stance detector's foot-strike search, samples. The
+ *  search runs when a stance is confirmed, min_stance_s after it began, and
+ *  covers what the history still holds before the stance: min(event_window_s,
+ *  this many samples less the min_stance_s ones), i.e. the full 0.3 s up to
+ *  457 Hz with the default 0.05 s (fnav_stance.h); beyond, a shorter window.
+ *  8 bytes per sample. */
 #ifndef FNAV_STANCE_EVENT_BUF
 #define FNAV_STANCE_EVENT_BUF 160
 #endif
