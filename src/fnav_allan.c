@@ -536,7 +536,7 @@ double fnav_allan_edf(int alpha, uint32_t m_u, uint32_t n_phase, int overlapping
     const double S = overlapping ? m : 1.0;
     const double L = 1.0 + m * d; /* m / F + m d */
     double M, J, r, inv;
-    if (alpha < -2 || alpha > 2 || m_u == 0u || N < L + 1.0) {
+    if (alpha < -2 || alpha > 2 || m_u == 0u || N < L) { /* N = L: one difference, M = 1 */
         return -1.0;
     }
     M = 1.0 + floor(S * (N - L) / m);

@@ -825,6 +825,22 @@ static void test_profile_roundtrip(void **state)
     remove(path);
 }
 
+/* One second difference (N = L = 2m + 1 phase values) is one chi-square
+ * degree of freedom for every noise type (Greenhall and Riley's M = 1); one
+ * value fewer has no difference and no EDF. */
+static void test_edf_single_term(void **state)
+{
+    int alpha;
+    (void)state;
+    for (alpha = -2; alpha <= 2; alpha++) {
+        assert_true(fabs(fnav_allan_edf(alpha, 1u, 3u, 1) - 1.0) < 1e-12);
+        assert_true(fabs(fnav_allan_edf(alpha, 4u, 9u, 0) - 1.0) < 1e-12);
+        assert_true(fnav_allan_edf(alpha, 1u, 2u, 1) < 0.0);
+        assert_true(fnav_allan_edf(alpha, 4u, 8u, 0) < 0.0);
+    }
+    assert_true(fnav_allan_edf(3, 1u, 100u, 1) < 0.0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -851,6 +867,7 @@ int main(void)
         cmocka_unit_test(test_paper_tables_builtin),
         cmocka_unit_test(test_paper_tables_inconsistent),
         cmocka_unit_test(test_profile_roundtrip),
+        cmocka_unit_test(test_edf_single_term),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

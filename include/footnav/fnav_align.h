@@ -126,9 +126,12 @@ FNAV_WARN_UNUSED fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_samp
 
 /**
  * Complete the alignment with what was collected (e.g. at the end of the
- * input, or when a caller knows the period is over).
- * @return FNAV_OK with the result, FNAV_E_STATE when fewer than two samples
- *         or less than min_still_s were collected.
+ * input, or when a caller knows the period is over): the current period
+ * when it has at least min_still_s, else the quietest period of at least
+ * short_still_s seen (the current one included), as fnav_align_push does
+ * at the first motion.
+ * @return FNAV_OK with the result (also when already done), FNAV_E_STATE
+ *         when no period qualifies, FNAV_E_ARG for NULL.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_finish(fnav_align_t *al);
 

@@ -7,8 +7,8 @@
  *
  * One fnav_allan_t per channel; fnav_allan_push() once per sample. Memory is
  * fixed at compile time (fnav_config.h) and never grows with the log:
- * sizeof(fnav_allan_t) is 3,944 bytes in the float build with the default
- * options (7,600 in the double build). Method (docs/allan.md):
+ * sizeof(fnav_allan_t) is 3,948 bytes in the float build with the default
+ * options (7,880 in the double build). Method (docs/allan.md):
  *
  * - The samples y_k (a rate, "frequency" in time-and-frequency terms) are
  *   summed into a phase x_k = sum_{i<=k} (y_i - y_0) kept as a Kahan pair, so

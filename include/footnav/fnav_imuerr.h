@@ -236,7 +236,7 @@ uint32_t fnav_imuerr_internal_factor(const fnav_imuerr_config_t *cfg);
 
 /* ---------------------------------------------------------------- model */
 
-/** The error model (caller-owned, about 1.2 kB in float). */
+/** The error model (caller-owned, about 2.3 kB in float). */
 typedef struct {
     fnav_imuerr_config_t cfg;
     fnav_rng_t rng[FNAV_EFFECT_COUNT];     /**< one stream per effect */

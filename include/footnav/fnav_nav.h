@@ -7,7 +7,7 @@
  *
  * Use:
  * @code
- *   fnav_nav_t nav;                 // about 7.5 KB in float32, no allocation
+ *   fnav_nav_t nav;                 // 11.7 KB in float32 (9 KB with the firmware's options), no allocation
  *   fnav_nav_config_t cfg = fnav_nav_config_default;
  *   fnav_nav_init(&nav, &cfg);
  *   for each sample s:
@@ -19,10 +19,12 @@
  * or fnav_nav_step(&nav, &s, &frame), which pushes one sample and returns the
  * newest frame (firmware that only wants the latest state).
  *
- * Latency: the SHOE window is centred, so frames come out h = (W - 1) / 2
- * samples after their sample (2 samples at 200 Hz with the default 25 ms
- * window); when the rate is estimated (rate_hz = 0) the first frame waits
- * for 33 samples. Each frame carries its own sample's time.
+ * Latency: the SHOE window is centred, so a sample's statistic is known h =
+ * (W - 1) / 2 samples after it, and the stance decision also waits for the
+ * shortest ZUPT run to be confirmed (lag = n_min_zupt - 1): frames come out
+ * h + lag samples after their sample (5 at 200 Hz with the defaults, 25 ms
+ * window and 20 ms run: h 2, lag 3; fnav_stance.h); when the rate is estimated (rate_hz = 0) the first
+ * frame waits for 33 samples. Each frame carries its own sample's time.
  *
  * Timing: each sample's own dt is used. A repeated time stamp (dt = 0,
  * e.g. the duplicated rows of the NGIMU logs) is counted and produces a

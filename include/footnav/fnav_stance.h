@@ -115,7 +115,7 @@ typedef struct {
     int64_t swing_t1_ns;  /**< with EV_STRIDE: first sample of the stance that ended it, ns */
 } fnav_stance_out_t;
 
-/** Detector object (caller-owned; fixed size, about 4.4 KB in float, see
+/** Detector object (caller-owned; fixed size, about 5.3 KB in float, see
  *  docs/navigation.md for the measured sizeof). */
 typedef struct {
     fnav_stance_config_t cfg;

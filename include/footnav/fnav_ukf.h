@@ -228,8 +228,10 @@ FNAV_WARN_UNUSED fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_confi
  * @param q_nb     initial attitude
  * @param bg_rps   gyro bias from the alignment, rad/s
  * @param ba_mps2  accel bias from the alignment, m/s^2
- * @param sd       initial standard deviations (biases ignored with the model off)
- * @return FNAV_OK, FNAV_E_ARG, FNAV_E_NANINF on non-finite values.
+ * @param sd       initial standard deviations, every one finite and > 0 (the
+ *                 bias ones are checked, then unused, with the model off)
+ * @return FNAV_OK, FNAV_E_ARG (a NULL pointer or an sd not finite and
+ *         positive), FNAV_E_NANINF on non-finite values.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps,
                                               fnav_vec3_t ba_mps2, const fnav_ukf_init_sd_t *sd);
