@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "hx_cli.h"
 #include "hx_commands.h"
@@ -846,6 +847,19 @@ int hx_cmd_eval(int argc, char **argv)
         out_path = "docs/results.md";
     }
     json_path = hx_arg(&a, "--json");
+    if (json_path != NULL) {
+        /* found out before the run, as for --out (an existing file is kept) */
+        const int existed = access(json_path, F_OK) == 0;
+        FILE *jf = fopen(json_path, "a");
+        if (jf == NULL) {
+            hx_error("eval", "cannot write %s", json_path);
+            return HX_EXIT_IO;
+        }
+        fclose(jf);
+        if (!existed) {
+            remove(json_path);
+        }
+    }
     ev.md = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
     if (ev.md == NULL) {
         hx_error("eval", "cannot write %s", out_path);

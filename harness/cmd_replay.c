@@ -1,7 +1,9 @@
 /* harness replay: a log through the navigation core, sample by sample via
  * the port layer, as firmware would run it (docs/harness.md). */
 #include <stdlib.h>
+#include <errno.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "hx_cli.h"
 #include "hx_commands.h"
@@ -71,6 +73,11 @@ int hx_cmd_replay(int argc, char **argv)
     out_path = hx_arg(&a, "--out");
     json_path = hx_arg(&a, "--json");
     plot_path = hx_arg(&a, "--plot");
+    if (access(a.pos[0], R_OK) != 0) {
+        /* before any output is opened (and an existing one emptied) */
+        hx_error("replay", "%s: cannot read (%s)", a.pos[0], strerror(errno));
+        return HX_EXIT_DATA;
+    }
     if (hx_same_file(a.pos[0], out_path) || hx_same_file(a.pos[0], json_path) || hx_same_file(a.pos[0], plot_path)) {
         hx_error("replay", "%s: an output is the log itself (it would be overwritten)", a.pos[0]);
         return HX_EXIT_USAGE;

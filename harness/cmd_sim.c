@@ -108,6 +108,10 @@ int hx_cmd_sim(int argc, char **argv)
         hx_usage(&k_spec, stderr);
         return HX_EXIT_USAGE;
     }
+    if (truth != NULL && (strcmp(truth, out) == 0 || hx_same_file(truth, out))) {
+        hx_error("sim", "--truth and --out name the same file");
+        return HX_EXIT_USAGE;
+    }
     if (hx_sim_setup_from_args("sim", &a, &su) != 0) {
         return HX_EXIT_USAGE;
     }

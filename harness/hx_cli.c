@@ -71,7 +71,7 @@ int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
             if (spec->opts[k].metavar != NULL) {
                 if (eq != NULL) {
                     v = eq + 1;
-                } else if (i + 1 < argc) {
+                } else if (i + 1 < argc && !(argv[i + 1][0] == '-' && argv[i + 1][1] == '-' && argv[i + 1][2] != '\0')) {
                     v = argv[++i];
                 } else {
                     hx_error(spec->name, "option %s needs a value (%s)", spec->opts[k].name, spec->opts[k].metavar);

@@ -286,6 +286,12 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, hx_log_t *out, long *dup
         }
         keep[n++] = i;
     }
+    if (n < 4) {
+        free(keep);
+        free(dt);
+        snprintf(err, err_size, "too few distinct time stamps to resample (%zu)", n);
+        return -1;
+    }
     for (i = 1; i < n; i++) {
         dt[i - 1] = in->t_ns[keep[i]] - in->t_ns[keep[i - 1]];
     }

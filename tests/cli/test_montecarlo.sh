@@ -13,6 +13,7 @@ expect_exit 2 "bad effect" "$H" montecarlo --effect wobble
 "$H" montecarlo --seeds 1 --duration 8 --quiet >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" -eq 0 ]; then pass "montecarlo small run (exit 0)"; else fail "montecarlo small run: exit $rc"; cat "$T/err"; fi
 expect_exit 2 "bad --bias-model" "$H" montecarlo --bias-model maybe
+expect_exit 2 "sim: --truth onto --out" "$H" sim --out "$T/same.csv" --truth "$T/same.csv" --duration 5
 expect_exit 2 "bad --detector" "$H" montecarlo --detector psychic --seeds 1 --duration 10
 expect_err "detector must be shoe or threshold" "--detector error names the choices"
 expect_exit 0 "montecarlo with outputs" "$H" montecarlo --motion "stand:5,walk:10,stand:2" --seeds 3 \

@@ -78,6 +78,15 @@ if command -v gnuplot >/dev/null 2>&1; then
     (cd "$T" && "$HA" replay "$WB" --plot "q'; system('touch PWNED'); print '.png" --quiet) >/dev/null 2>&1
     if [ ! -e "$T/PWNED" ] && [ -s "$T/q'; system('touch PWNED'); print '.png" ]; then pass "a quote in the --plot path is text to gnuplot"; else fail "plot path reached gnuplot as a command"; fi
 fi
+echo keep > "$T/existing.csv"
+expect_exit 1 "a missing log" "$H" replay "$T/missing.csv" --out "$T/existing.csv"
+if [ "$(cat "$T/existing.csv")" = "keep" ]; then pass "a missing log leaves an existing --out alone"; else fail "a missing log emptied --out"; fi
+expect_exit 2 "an option where a value belongs" "$H" replay vectors/walk.bin --out --quiet
+if [ ! -e ./--quiet ]; then pass "no file named after the option"; else rm -f ./--quiet; fail "--out --quiet wrote a file named --quiet"; fi
+printf 't,ax,ay,az,gx,gy,gz\n' > "$T/same_t.csv"
+for i in 1 2 3 4 5 6 7 8 9 10; do echo "0,0,0,9.8,0,0,0" >> "$T/same_t.csv"; done
+expect_exit 1 "--rate on one time stamp" "$H" replay "$T/same_t.csv" --rate 10 --quiet
+expect_err "too few distinct time stamps" "the resampler says why"
 cp vectors/walk.bin "$T/self.bin"
 expect_exit 2 "replay --out onto its own log" "$H" replay "$T/self.bin" --out "$T/self.bin" --quiet
 if cmp -s vectors/walk.bin "$T/self.bin"; then pass "the log is left intact"; else fail "replay overwrote its log"; fi
