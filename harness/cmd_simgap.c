@@ -115,6 +115,19 @@ int hx_cmd_simgap(int argc, char **argv)
     if (plot != NULL && sg_write_plots(r, plot, "simgap") != 0) {
         status = HX_EXIT_IO;
     }
+    /* exit 1 says why in one error line (the summary, JSON and plots are
+     * written): the input's error (FILE:LINE or record), else why the log
+     * is too short for a confident answer */
+    if (lr == 1) {
+        if (!r->confident) {
+            hx_error("simgap", "%s (the %zu samples before it are too short for a confident answer: %s)", log.error,
+                     log.n, r->why);
+        } else {
+            hx_error("simgap", "%s (diagnosed on the %zu samples before it)", log.error, log.n);
+        }
+    } else if (!r->confident) {
+        hx_error("simgap", "%s: too short for a confident answer: %s", path, r->why);
+    }
     if (status == HX_EXIT_OK && (lr == 1 || !r->confident)) {
         status = HX_EXIT_DATA;
     }

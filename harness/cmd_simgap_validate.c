@@ -82,10 +82,13 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     {
         long only = -1;
         if (hx_arg_long(&a, "--only", 0, 100000, &only) != 0) {
-            free(NULL);
             return HX_EXIT_USAGE;
         }
         o.only = (int)only;
+    }
+    if (sgv_check_opts(&o, err, sizeof err) != 0) {
+        hx_error("simgap-validate", "%s", err);
+        return HX_EXIT_USAGE;
     }
     o.quiet = hx_flag(&a, "--quiet");
     json = hx_arg(&a, "--json");

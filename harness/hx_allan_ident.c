@@ -353,6 +353,10 @@ int hx_allan_fit(const fnav_allan_result_t *r, size_t n, double rate_hz, const h
         gsl_multifit_nlinear_fdf fdf;
         gsl_vector *p0 = gsl_vector_alloc(np);
         int k, info = 0;
+        if (p0 == NULL) { /* with GSL's handler off, an allocation failure comes back as NULL */
+            fit_free(&d);
+            return -1;
+        }
         d.ncomp = best_nc;
         memcpy(d.comp, best_comp, sizeof d.comp);
         for (k = 0; k < best_nc; k++) {

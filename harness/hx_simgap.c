@@ -1096,6 +1096,14 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
                 free(x);
                 return -1;
             }
+            if (c->cmp[g].undefined > SG_CMP_EMPTY) {
+                /* nothing to test the channel against: said as an input
+                 * the diagnosis cannot answer */
+                snprintf(err, err_size, "channel %s: the gap of the baseline twin cannot be tested: %s",
+                         sg_channel_name(ch), sg_cmp_why(&c->cmp[g]));
+                free(x);
+                return -1;
+            }
         }
         table_weights(r, ch, SG_FIT, &tfit);
         c->gap_full = c->cmp[SG_FULL].significant;
@@ -1120,6 +1128,13 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
                 if (sg_compare(&r->pl[ch][g], r->real[ch][g], tp.v[g], S, NULL, NULL, alpha, &c->cmp_prof[g]) != 0) {
                     twinset_free(&tp);
                     snprintf(err, err_size, "out of memory");
+                    free(x);
+                    return -1;
+                }
+                if (c->cmp_prof[g].undefined > SG_CMP_EMPTY) {
+                    twinset_free(&tp);
+                    snprintf(err, err_size, "channel %s: the given profile's gap cannot be tested: %s",
+                             sg_channel_name(ch), sg_cmp_why(&c->cmp_prof[g]));
                     free(x);
                     return -1;
                 }
@@ -1240,6 +1255,9 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
 {
     double t0 = hx_now_s();
     int rc;
+    if (err_size > 0) {
+        err[0] = '\0';
+    }
     memset(r, 0, sizeof *r);
     snprintf(r->path, sizeof r->path, "%s", path != NULL ? path : "");
     r->opts = *o;
@@ -1272,6 +1290,9 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
         rc = sg_nav_diagnose(log, r, err, err_size);
     }
     if (rc != 0) {
+        if (err_size > 0 && err[0] == '\0') {
+            snprintf(err, err_size, "the diagnosis failed (out of memory)");
+        }
         return -1;
     }
     verdict(r);

@@ -194,10 +194,20 @@ typedef struct {
     int S;                    /**< twins */
     double *G_null;           /**< G of each twin treated as the real (leave one out), S values */
     double null_mean, null_sd;  /**< null distribution of G */
-    double G_crit;            /**< (1 - alpha) quantile of the null G (scaled chi-square) */
+    double G_crit;            /**< (1 - alpha) quantile of the null G (scaled chi-square); NaN when undefined */
     double z_crit;            /**< point threshold (Bonferroni over the points, alpha) */
-    int significant;          /**< G > G_crit or maxz > z_crit */
+    int significant;          /**< G > G_crit or maxz > z_crit; 0 when undefined */
+    int undefined;            /**< the null of G has no distribution to test against (no critical
+                               *   value, nothing significant): SG_CMP_EMPTY no point to compare
+                               *   (a segment too short: G 0), SG_CMP_FLAT the twins do not vary
+                               *   (every null G is 0: a noise-free model), SG_CMP_NONFINITE a
+                               *   twin statistic is not finite; 0 otherwise */
 } sg_cmp_t;
+
+enum { SG_CMP_EMPTY = 1, SG_CMP_FLAT = 2, SG_CMP_NONFINITE = 3 };
+
+/** Why a comparison is undefined, as a phrase ("" when it is defined). */
+const char *sg_cmp_why(const sg_cmp_t *c);
 
 void sg_cmp_free(sg_cmp_t *c);
 
@@ -208,7 +218,8 @@ void sg_cmp_free(sg_cmp_t *c);
  * @param shift S rows: how much the model refitted to twin s moves each
  *              point's expectation (the null's twin-as-real carries it), or NULL
  * @param alpha family-wise level of the point test (0.05 / channels)
- * @return 0, -1 on memory failure.
+ * @return 0 (out->undefined says whether the test is defined), -1 on
+ *         memory failure.
  */
 int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int S, const double *vx,
                const double *shift, double alpha, sg_cmp_t *out);

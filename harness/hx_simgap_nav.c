@@ -1594,6 +1594,26 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                     return -1;
                 }
             }
+            for (g = 0; g < SG_NSEG; g++) {
+                if (cc[conv][g].undefined > SG_CMP_EMPTY) {
+                    break;
+                }
+            }
+            if (g < SG_NSEG) {
+                /* nothing to test the walk against (a noise-free log, or
+                 * statistics out of range): an input the diagnosis cannot
+                 * answer, said as such */
+                int c2, g2;
+                snprintf(err, err_size, "the navigation gap of the walk cannot be tested: %s",
+                         sg_cmp_why(&cc[conv][g]));
+                for (c2 = 0; c2 <= conv; c2++) {
+                    for (g2 = 0; g2 < SG_NSEG; g2++) {
+                        free(tv[c2][g2]);
+                        sg_cmp_free(&cc[c2][g2]);
+                    }
+                }
+                return -1;
+            }
             nv->G_fit_conv[conv] = cc[conv][SG_FIT].G;
             if (getenv("SG_NAVDEBUG") != NULL) {
                 fprintf(stderr, "conv %d: nis_first twin %g real %g\n", conv, exp(cc[conv][SG_FULL].twin_mean[0]),

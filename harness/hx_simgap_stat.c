@@ -556,6 +556,9 @@ double sg_lattice_step(const double *x, size_t n, double *z)
         double v = fabs(x[k]);
         amax = v > amax ? v : amax;
     }
+    if (!isfinite(amax)) {
+        return 0.0; /* an infinite value: no lattice to speak of (nor an exponent to take) */
+    }
     /* 10 ulp of float32 at the largest value: finer steps are storage */
     floor_q = 10.0 * ldexp(1.0, (int)floor(log2(amax > 1e-30 ? amax : 1e-30)) - 23);
     for (k = 1; k < n; k++) {
@@ -991,12 +994,53 @@ int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int
         var = 1.0;
     }
     out->null_sd = sqrt(var);
-    /* scaled chi-square with the null's mean and variance */
-    k = 2.0 * out->null_mean * out->null_mean / var;
-    out->G_crit = out->null_mean * gsl_cdf_chisq_Pinv(1.0 - alpha, k) / k;
     out->z_crit = gsl_cdf_ugaussian_Qinv(0.5 * alpha / (double)(n > 0 ? n : 1));
+    /* scaled chi-square with the null's mean and variance. It needs a null
+     * with a positive, finite mean: no point to compare, twins that do not
+     * vary (every null G 0: a noise-free model) or a statistic that is not
+     * finite leave nothing to test against: no critical value, nothing
+     * significant, and `undefined` says why (the caller decides) */
+    k = 2.0 * out->null_mean * out->null_mean / var;
+    if (!(k > 0.0) || !isfinite(k)) {
+        size_t npts = 0;
+        for (j = 0; j < n; j++) {
+            npts += gap_point(&pl->p[j]) ? 1u : 0u;
+        }
+        if (npts == 0) {
+            out->undefined = SG_CMP_EMPTY;
+        } else if (out->null_mean == 0.0 && isfinite(var)) {
+            out->undefined = SG_CMP_FLAT;
+        } else {
+            out->undefined = SG_CMP_NONFINITE;
+        }
+        out->G_crit = (double)NAN;
+        out->significant = 0;
+        return 0;
+    }
+    out->G_crit = out->null_mean * gsl_cdf_chisq_Pinv(1.0 - alpha, k) / k;
+    if (!isfinite(out->G_crit)) {
+        out->undefined = SG_CMP_NONFINITE;
+        out->significant = 0;
+        return 0;
+    }
     out->significant = (out->G > out->G_crit) || (out->maxz > out->z_crit);
     return 0;
+}
+
+const char *sg_cmp_why(const sg_cmp_t *c)
+{
+    switch (c->undefined) {
+    case SG_CMP_EMPTY:
+        return "the segment has no point to compare (too short)";
+    case SG_CMP_FLAT:
+        return "the twins do not vary (no noise in the model: a noise-free log?), so the gap has no null "
+               "distribution to be tested against";
+    case SG_CMP_NONFINITE:
+        return "a statistic of the twins is not finite (values out of any sensor's range?), so the gap cannot "
+               "be tested";
+    default:
+        return "";
+    }
 }
 
 double sg_gap_resampled(const sg_plist_t *pl, const double *real, const double *twin, int S, const int *idx, int S2,

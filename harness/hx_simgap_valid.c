@@ -484,10 +484,11 @@ static int listed(const char *list, const char *name)
     return 0;
 }
 
-int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t err_size)
+/* The case kinds drawn in turn: -1 a static control, -100 a walk control,
+ * else an index into k_eff. Returns their number (types holds 2 + NEFF). */
+static int case_types(const sgv_opts_t *o, int *types)
 {
-    int types[64], ntypes = 0, i, off;
-    fnav_rng_t r0;
+    int ntypes = 0, i;
     if (o->statics) {
         if (listed(o->effects, "control")) {
             types[ntypes++] = -1; /* static control */
@@ -508,6 +509,59 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
             }
         }
     }
+    return ntypes;
+}
+
+int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size)
+{
+    int types[2 + NEFF], i;
+    if (o->effects != NULL) {
+        const char *p = o->effects;
+        for (;;) {
+            const char *e = strchr(p, ',');
+            const size_t len = e != NULL ? (size_t)(e - p) : strlen(p);
+            int known = len == strlen("control") && strncmp(p, "control", len) == 0;
+            for (i = 0; i < NEFF && !known; i++) {
+                known = len == strlen(k_eff[i].name) && strncmp(p, k_eff[i].name, len) == 0;
+            }
+            if (!known) {
+                size_t o2;
+                if (len == 0) {
+                    o2 = (size_t)snprintf(err, err_size, "--effects: an empty name in '%s'; known: control", o->effects);
+                } else {
+                    o2 = (size_t)snprintf(err, err_size, "--effects: unknown effect '%.*s'; known: control",
+                                          len > 64 ? 64 : (int)len, p);
+                }
+                for (i = 0; i < NEFF && o2 < err_size; i++) {
+                    o2 += (size_t)snprintf(err + o2, err_size - o2, ", %s", k_eff[i].name);
+                }
+                return -1;
+            }
+            if (e == NULL) {
+                break;
+            }
+            p = e + 1;
+        }
+    }
+    if (case_types(o, types) == 0) {
+        snprintf(err, err_size, "--effects %s draws no case%s (%s)", o->effects != NULL ? o->effects : "",
+                 !o->walks ? " with --static-only" : (!o->statics ? " with --walk-only" : ""),
+                 !o->walks ? "scale, misalign, gsens and saturation are walk effects"
+                           : "the static and timing effects and their control need static cases");
+        return -1;
+    }
+    if (o->only >= o->cases) {
+        snprintf(err, err_size, "--only %d must be below --cases %d (cases are numbered from 0)", o->only, o->cases);
+        return -1;
+    }
+    return 0;
+}
+
+int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t err_size)
+{
+    int types[2 + NEFF], ntypes, i, off;
+    fnav_rng_t r0;
+    ntypes = case_types(o, types);
     if (ntypes == 0) {
         snprintf(err, err_size, "no case kinds selected");
         return -1;

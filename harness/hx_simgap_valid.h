@@ -91,6 +91,11 @@ typedef struct {
     double n_events[SG_NSEG]; /**< jumps: steps in the fit and held-out parts */
 } sgv_case_t;
 
+/** Check the options a command line gives (every --effects name known, some
+ *  case kind selected, --only below --cases): 0, or -1 with err filled (a
+ *  usage error). */
+int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size);
+
 /** Run the validation; prints progress lines to `f` (NULL: silent). 0, -1
  *  with err filled. cases receives o->cases entries (caller allocated). */
 int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t err_size);

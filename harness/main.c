@@ -2,6 +2,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include <gsl/gsl_errno.h>
+
 #include "hx_cli.h"
 #include "hx_commands.h"
 
@@ -38,6 +40,10 @@ static void usage(FILE *f)
 int main(int argc, char **argv)
 {
     size_t i;
+    /* GSL's default error handler aborts the process: a domain error on
+     * degenerate data must come back as a NaN or an error code that the
+     * command checks and reports (exit 1), never as SIGABRT */
+    gsl_set_error_handler_off();
     if (argc < 2) {
         usage(stderr);
         return HX_EXIT_USAGE;

@@ -21,14 +21,47 @@ expect_exit 1 "missing file" "$H" simgap "$T/nope.csv"
 expect_exit 2 "validate: zero cases" "$H" simgap-validate --cases 0
 expect_exit 2 "validate: bad magnitude range" "$H" simgap-validate --mag-range 3,1
 expect_exit 2 "validate: static-only and walk-only" "$H" simgap-validate --static-only --walk-only
+expect_exit 2 "validate: unknown effect" "$H" simgap-validate --effects xx
+expect_err "unknown effect 'xx'; known: control, quant" "validate: the unknown effect named, the known ones listed"
+expect_exit 2 "validate: unknown effect beside a known one" "$H" simgap-validate --effects control,xx
+expect_err "unknown effect 'xx'" "validate: unknown effect beside a known one named"
+expect_exit 2 "validate: walk effect with --static-only" "$H" simgap-validate --effects scale --static-only
+expect_exit 2 "validate: --only beyond --cases" "$H" simgap-validate --only 5 --cases 2
+expect_err "only 5 must be below --cases 2" "validate: --only beyond --cases said"
 
 # a static log of 2 s: the held-out part cannot give tight Allan intervals
 # over a decade of tau -> "too short", exit 1, and the JSON says why
 "$H" sim --motion stand:2 --rate 100 --profile mtx --seed 2 --out "$T/short.csv" >/dev/null 2>&1 || fail "sim short"
 expect_exit 1 "too short log" "$H" simgap "$T/short.csv" --quiet --json "$T/short.json"
 grep -q "TOO SHORT" "$T/out" && pass "too short said in the summary" || fail "too short summary"
+expect_err "^harness simgap: error: .*short.csv: too short for a confident answer: .*decade" "too short said in one error line"
 json "$T/short.json" 'j["confident"] is False and j["verdict"]["answer"] == "too-short" and "decade" in j["too_short"]' &&
     pass "too short in the JSON" || fail "too short JSON: $(cat "$T/pyerr")"
+# a held-out part with no point to compare (0.3 s of a 3 s log): too short,
+# not a GSL abort on an undefined null distribution
+"$H" sim --motion stand:3 --rate 100 --profile mtx --seed 2 --out "$T/s3.csv" >/dev/null 2>&1 || fail "sim 3 s"
+expect_exit 1 "held-out segment without points" "$H" simgap "$T/s3.csv" --quiet --seeds 3 --fit-frac 0.9
+expect_err "^harness simgap: error: .*too short for a confident answer" "no held-out point: too short, said"
+
+# logs without any noise (simulated with --profile none): the twins do not
+# vary, so no gap can be tested; a one-line error and exit 1, not SIGABRT
+"$H" sim --duration 30 --profile none --out "$T/nf.csv" >/dev/null 2>&1 || fail "sim noise-free walk"
+expect_exit 1 "noise-free walk" "$H" simgap "$T/nf.csv" --quiet --seeds 3
+expect_err "^harness simgap: error: .*nf.csv: .*twins do not vary" "noise-free walk: said why"
+"$H" sim --motion stand:20 --profile none --out "$T/nfs.csv" >/dev/null 2>&1 || fail "sim noise-free still log"
+expect_exit 1 "noise-free still log as a walk" "$H" simgap "$T/nfs.csv" --quiet --seeds 3 --walk
+expect_err "^harness simgap: error: " "noise-free still log as a walk: an error line"
+
+# incomplete input: the diagnosis runs on the samples before the error, and
+# exit 1 comes with one error line naming the file and line (or record)
+"$H" sim --motion stand:4 --rate 100 --profile mtx --seed 2 --out "$T/tx.csv" >/dev/null 2>&1 || fail "sim text"
+{ head -n 301 "$T/tx.csv"; echo abc; } > "$T/tx2.csv"
+expect_exit 1 "CSV with text at line 302" "$H" simgap "$T/tx2.csv" --quiet --seeds 3 --json "$T/tx2.json"
+expect_err "^harness simgap: error: .*tx2.csv:302: " "text in the CSV: error line with FILE:LINE"
+[ -s "$T/tx2.json" ] && pass "text in the CSV: JSON still written" || fail "text in the CSV: no JSON"
+head -c 50000 "$(dirname "$0")/../../vectors/walk.bin" > "$T/trunc.bin"
+expect_exit 1 "truncated .bin" "$H" simgap "$T/trunc.bin" --quiet --seeds 3
+expect_err "^harness simgap: error: .*trunc.bin: truncated" "truncated .bin: error line"
 
 # a static CSV (t,ax,ay,az,gx,gy,gz, SI) of 600 s at 100 Hz, MTx noise, gyro z
 # rounded to 0.001 rad/s: found on gz (lattice), attributed to quant with the
