@@ -276,7 +276,9 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     }
     hx_reader_close(r);
     if (R->rate_hz <= 0.0) {
-        hx_error(CMD, "%s: sample rate unknown; give --rate", path);
+        hx_error(CMD, "%s: %s", path,
+                 rc != 0 ? "too few samples before the error to know the sample rate"
+                         : "sample rate unknown; give --rate");
         return -1;
     }
     return rc;

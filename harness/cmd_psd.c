@@ -496,8 +496,14 @@ int hx_cmd_psd(int argc, char **argv)
         rate = 1e9 * (double)(log.n - 1) / (double)(log.t_ns[log.n - 1] - log.t_ns[0]);
     }
     if (!(rate > 0.0) || log.n < (size_t)nfft) {
-        hx_error(CMD, "%s: %s", a.pos[0],
-                 rate > 0.0 ? "fewer samples than one segment" : "sample rate unknown; give --input-rate");
+        if (rc > 0) {
+            /* the input's error is the cause, not a missing option */
+            hx_error(CMD, "%s (the %zu samples before it are fewer than one %u-sample segment)", log.error, log.n,
+                     (unsigned)nfft);
+        } else {
+            hx_error(CMD, "%s: %s", a.pos[0],
+                     rate > 0.0 ? "fewer samples than one segment" : "sample rate unknown; give --input-rate");
+        }
         hx_log_free(&log);
         return HX_EXIT_DATA;
     }
