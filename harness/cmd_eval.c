@@ -127,6 +127,13 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
         /* e.g. a truncated last line: every sample before it was used */
         snprintf(note, note_size, "input ends early (%.150s)", strstr(err, ": ") ? strstr(err, ": ") + 2 : err);
     }
+    if (!t->aligned) {
+        /* no still period: no navigation to evaluate (its figures are NaN) */
+        hx_warn("eval", "%s: the filter never aligned (no still period at the start)", path);
+        ev->failures++;
+        hx_traj_free(t);
+        return -1;
+    }
     hx_nav_summarize(t, s);
     return 0;
 }

@@ -686,10 +686,17 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
             break;
         }
     }
+    if (t->n > 0) {
+        s->duration_s = 1e-9 * (double)(t->f[t->n - 1].t_ns - t->f[0].t_ns);
+    }
     if (first >= t->n) {
+        /* never aligned: no position, so no return-to-start figure (null in
+         * the JSON, as other figures that cannot be computed) */
+        s->end_h_m = s->end_3d_m = s->end_h_pct = s->end_3d_pct = (double)NAN;
+        s->vertical_m = s->heading_change_deg = (double)NAN;
+        s->end_pos_m[0] = s->end_pos_m[1] = s->end_pos_m[2] = (double)NAN;
         return;
     }
-    s->duration_s = 1e-9 * (double)(t->f[t->n - 1].t_ns - t->f[0].t_ns);
     for (i = first; i < t->n; i++) {
         const fnav_nav_frame_t *f = &t->f[i];
         double yaw = (double)f->euler_rad[2];
@@ -740,7 +747,7 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
                dz = s->end_pos_m[2] - s->start_pos_m[2];
         s->end_h_m = sqrt(dx * dx + dy * dy);
         s->end_3d_m = sqrt(dx * dx + dy * dy + dz * dz);
-        s->vertical_m = -dz; /* n is z down: up positive */
+        s->vertical_m = 0.0 - dz; /* n is z down: up positive (0 - dz: never -0) */
         s->end_h_pct = s->path_m > 0.0 ? 100.0 * s->end_h_m / s->path_m : (double)NAN;
         s->end_3d_pct = s->path_m > 0.0 ? 100.0 * s->end_3d_m / s->path_m : (double)NAN;
     }

@@ -87,6 +87,10 @@ printf 't,ax,ay,az,gx,gy,gz\n' > "$T/same_t.csv"
 for i in 1 2 3 4 5 6 7 8 9 10; do echo "0,0,0,9.8,0,0,0" >> "$T/same_t.csv"; done
 expect_exit 1 "--rate on one time stamp" "$H" replay "$T/same_t.csv" --rate 10 --quiet
 expect_err "too few distinct time stamps" "the resampler says why"
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.005,0,0,9.8,0,0,0\n' > "$T/two.csv"
+expect_exit 1 "a log too short to align" "$H" replay "$T/two.csv" --json "$T/two.json" --quiet
+if grep -q '"aligned":[[:space:]]*false' "$T/two.json" && grep -q '"return_error_3d_m":[[:space:]]*null' "$T/two.json" &&
+    grep -q '"vertical_drift_m":[[:space:]]*null' "$T/two.json"; then pass "never aligned: the JSON has null figures, not zeros"; else fail "unaligned JSON: $(tr -d '\n\t' < "$T/two.json")"; fi
 cp vectors/walk.bin "$T/self.bin"
 expect_exit 2 "replay --out onto its own log" "$H" replay "$T/self.bin" --out "$T/self.bin" --quiet
 if cmp -s vectors/walk.bin "$T/self.bin"; then pass "the log is left intact"; else fail "replay overwrote its log"; fi
