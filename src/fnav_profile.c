@@ -80,7 +80,9 @@ fnav_status_t fnav_profile_from_paper(fnav_profile_t *p, const char *name, doubl
         p->gyro_tau_s[i] = (fnav_real_t)(rows[3 + i].tau_samples / rate_hz);
         p->gyro_bias_sigma_rps[i] = (fnav_real_t)(rows[3 + i].sigma_bias * deg2rad);
     }
-    return FNAV_OK;
+    /* the conversions can leave float's range (an infinite rate gives tau
+     * 0): the result must pass the same check as a profile file */
+    return fnav_profile_validate(p) == FNAV_OK ? FNAV_OK : FNAV_E_ARG;
 }
 
 fnav_status_t fnav_profile_builtin(fnav_profile_t *p, fnav_profile_id_t id)

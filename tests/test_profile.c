@@ -127,6 +127,7 @@ static void test_validate(void **state)
     assert_int_equal(fnav_profile_from_paper(&p, "x", 200.0, rows), FNAV_E_ARG);
     memcpy(rows, fnav_profile_paper_table(FNAV_PROFILE_NAVCHIP), sizeof rows);
     assert_int_equal(fnav_profile_from_paper(&p, "x", 0.0, rows), FNAV_E_ARG);
+    assert_int_equal(fnav_profile_from_paper(&p, "x", (double)INFINITY, rows), FNAV_E_ARG);
     /* another identification rate: tau in samples scales with it */
     assert_int_equal(fnav_profile_from_paper(&p, "at100", 100.0, rows), FNAV_OK);
     FNAV_ASSERT_CLOSE(p.accel_tau_s[0], 2000.0 / 100.0, 0.0, REL);
