@@ -6,7 +6,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "hx_cli.h"
 #include "hx_commands.h"
@@ -138,18 +137,16 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
     return 0;
 }
 
-/* A judged walk must give a closure: with no stride (a log that never
- * aligned, or no motion the detector took for a step) its "return to the
- * start" is zero by construction, not a result. Counted as a failed run;
- * 1 (after freeing t) when it is one. */
+/* A judged walk must give a closure: with no stride (no motion the
+ * detector took for a step) its "return to the start" is zero by
+ * construction, not a result. Counted as a failed run; 1 (after freeing t)
+ * when it is one. (A walk that never aligned has failed in replay().) */
 static int no_closure(ev_t *ev, const char *path, const hx_nav_summary_t *s, hx_traj_t *t)
 {
     if (s->strides > 0 && s->path_m > 0.0) {
         return 0;
     }
-    hx_warn("eval", "%s: %s: no closure to judge", path,
-            (t->n > 0 && (t->f[t->n - 1].flags & FNAV_FRAME_ALIGNED) != 0) ? "no stride detected"
-                                                                          : "the filter never aligned");
+    hx_warn("eval", "%s: no stride detected: no closure to judge", path);
     ev->failures++;
     hx_traj_free(t);
     return 1;
@@ -854,18 +851,8 @@ int hx_cmd_eval(int argc, char **argv)
         out_path = "docs/results.md";
     }
     json_path = hx_arg(&a, "--json");
-    if (json_path != NULL) {
-        /* found out before the run, as for --out (an existing file is kept) */
-        const int existed = access(json_path, F_OK) == 0;
-        FILE *jf = fopen(json_path, "a");
-        if (jf == NULL) {
-            hx_error("eval", "cannot write %s", json_path);
-            return HX_EXIT_IO;
-        }
-        fclose(jf);
-        if (!existed) {
-            remove(json_path);
-        }
+    if (json_path != NULL && hx_check_writable("eval", json_path) != 0) {
+        return HX_EXIT_IO; /* found out before the run, as for --out */
     }
     ev.md = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
     if (ev.md == NULL) {

@@ -447,12 +447,9 @@ int hx_cmd_live(int argc, char **argv)
     if (plot_every > 0.0) {
         /* the plots are drawn in a child, whose failure nobody would see:
          * find out now that the picture can be written */
-        FILE *f = fopen(plot_png, "ab");
-        if (f == NULL) {
-            hx_error(CMD, "cannot write %s: %s", plot_png, strerror(errno));
+        if (hx_check_writable(CMD, plot_png) != 0) {
             return HX_EXIT_IO;
         }
-        fclose(f);
     }
     out_path = hx_arg(&a, "--out");
     json_path = hx_arg(&a, "--json");

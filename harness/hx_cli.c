@@ -334,7 +334,7 @@ void hx_progress_end(hx_progress_t *p)
     }
 }
 
-/* ------------------------------------------------------------ plots */
+/* ------------------------------------------------------------ output files */
 
 int hx_same_file(const char *a, const char *b)
 {
@@ -344,6 +344,23 @@ int hx_same_file(const char *a, const char *b)
     }
     return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
+
+int hx_check_writable(const char *cmd, const char *path)
+{
+    const int existed = access(path, F_OK) == 0;
+    FILE *f = fopen(path, "a");
+    if (f == NULL) {
+        hx_error(cmd, "cannot write %s (%s)", path, strerror(errno));
+        return -1;
+    }
+    fclose(f);
+    if (!existed) {
+        remove(path);
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------ plots */
 
 const char *hx_gp_str(char *buf, size_t size, const char *s)
 {
@@ -372,15 +389,10 @@ int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int
         hx_error(cmd, "cannot draw %s: gnuplot is not installed (apt-get install gnuplot-nox)", png_path);
         return -1;
     }
-    {
-        /* gnuplot writes the image to its standard output when it cannot
-         * open the file: find out first, and keep its output away from ours */
-        FILE *f = fopen(png_path, "wb");
-        if (f == NULL) {
-            hx_error(cmd, "cannot write %s (%s)", png_path, strerror(errno));
-            return -1;
-        }
-        fclose(f);
+    /* gnuplot writes the image to its standard output when it cannot open
+     * the file: find out first, and keep its output away from ours */
+    if (hx_check_writable(cmd, png_path) != 0) {
+        return -1;
     }
     p->gp = popen("gnuplot >/dev/null", "w");
     if (p->gp == NULL) {

@@ -143,6 +143,10 @@ int hx_plot_close(hx_plot_t *p, const char *cmd);
 /** 1 when the two paths name one existing file (an output about to
  *  overwrite the input), else 0. */
 int hx_same_file(const char *a, const char *b);
+/** 0 when `path` can be opened for writing (an existing file is left as
+ *  it is, none is left behind); -1 with the error printed. For outputs
+ *  written only after long work, or by a child process. */
+int hx_check_writable(const char *cmd, const char *path);
 
 /** `s` as the inside of a gnuplot single-quoted string (a quote doubled),
  *  cut to fit `buf`; returns buf. Every text from outside the program (a

@@ -276,9 +276,6 @@ static int secs_to_ns(double t_s, int64_t *out)
 static int read_line(hx_reader_t *r)
 {
     size_t n;
-    /* a sentinel behind gzgets' terminator tells a NUL byte in the data
-     * (which strlen would take for the end of the line) from the end */
-    memset(r->line, 1, sizeof r->line);
     if (gzgets(r->gz, r->line, (int)sizeof r->line) == NULL) {
         int e;
         (void)gzerror(r->gz, &e);
@@ -290,7 +287,9 @@ static int read_line(hx_reader_t *r)
     }
     r->stats.lines++;
     n = strlen(r->line);
-    if (n + 1 < sizeof r->line && r->line[n + 1] != 1) {
+    /* gzgets stops only at a newline, a full buffer or the end of the
+     * file: a line shorter than that was cut by a NUL byte in the data */
+    if (n == 0 || (n < sizeof r->line - 1 && r->line[n - 1] != '\n' && !gzeof(r->gz))) {
         set_err(r, "%s:%ld: a NUL byte in the text (binary data, e.g. a logger's unwritten blocks)", r->path,
                 r->stats.lines);
         return -1;

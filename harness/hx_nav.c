@@ -35,18 +35,7 @@ int hx_nav_opts_from_args(const char *cmd, const hx_args_t *a, hx_nav_opts_t *o)
             return 1;
         }
     }
-    if (o->bias_model != NULL && strcmp(o->bias_model, "ar1") != 0 && strcmp(o->bias_model, "off") != 0) {
-        hx_error(cmd, "--bias-model must be ar1 or off, not '%s'", o->bias_model);
-        return -1;
-    }
-    if (o->samples != NULL && strcmp(o->samples, "instant") != 0 && strcmp(o->samples, "mean") != 0) {
-        hx_error(cmd, "--samples must be instant or mean, not '%s'", o->samples);
-        return -1;
-    }
-    if (o->detector != NULL && strcmp(o->detector, "shoe") != 0 && strcmp(o->detector, "threshold") != 0) {
-        hx_error(cmd, "--detector must be shoe or threshold, not '%s'", o->detector);
-        return -1;
-    }
+    (void)cmd; /* the values are checked by hx_nav_config, which every command calls */
     return 0;
 }
 
@@ -211,14 +200,18 @@ int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, siz
     static fnav_nav_t probe; /* validates the configuration as the core will */
     int i;
     *cfg = fnav_nav_config_default;
-    /* checked here as well as by hx_nav_opts_from_args: some commands
-     * (montecarlo) fill the options themselves */
-    if ((o->detector != NULL && strcmp(o->detector, "shoe") != 0 && strcmp(o->detector, "threshold") != 0) ||
-        (o->bias_model != NULL && strcmp(o->bias_model, "ar1") != 0 && strcmp(o->bias_model, "off") != 0) ||
-        (o->samples != NULL && strcmp(o->samples, "instant") != 0 && strcmp(o->samples, "mean") != 0)) {
-        snprintf(err, err_size, "--detector must be shoe or threshold, --bias-model ar1 or off, --samples instant or "
-                                "mean (given: %s, %s, %s)",
-                 o->detector ? o->detector : "-", o->bias_model ? o->bias_model : "-", o->samples ? o->samples : "-");
+    /* the choices, checked here for every command (montecarlo fills the
+     * options itself, without hx_nav_opts_from_args) */
+    if (o->bias_model != NULL && strcmp(o->bias_model, "ar1") != 0 && strcmp(o->bias_model, "off") != 0) {
+        snprintf(err, err_size, "--bias-model must be ar1 or off, not '%s'", o->bias_model);
+        return -1;
+    }
+    if (o->samples != NULL && strcmp(o->samples, "instant") != 0 && strcmp(o->samples, "mean") != 0) {
+        snprintf(err, err_size, "--samples must be instant or mean, not '%s'", o->samples);
+        return -1;
+    }
+    if (o->detector != NULL && strcmp(o->detector, "shoe") != 0 && strcmp(o->detector, "threshold") != 0) {
+        snprintf(err, err_size, "--detector must be shoe or threshold, not '%s'", o->detector);
         return -1;
     }
     if (o->profile != NULL && hx_profile_load(o->profile, &cfg->profile, err, err_size) != 0) {

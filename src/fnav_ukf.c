@@ -887,7 +887,9 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
      * from fnav_one_minus_exp_neg, not the C library, so that host and
      * target agree bit for bit (fnav_math.h). */
     if (dt_s != f->ar1_dt_s) {
-        /* recomputed only when the interval changes (usually never) */
+        /* recomputed only when the interval changes: never on a steady
+         * clock, every sample where the stamps jitter by a nanosecond (the
+         * NGIMU logs: six divisions and six short series per sample) */
         for (i = 0; i < 3; i++) {
             if (c->bias_model == FNAV_BIAS_AR1) {
                 /* from d = 1 - c, exact to float's relative precision even
