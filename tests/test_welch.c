@@ -370,9 +370,9 @@ static void test_offset(void **state)
 /* GLOBAL on a long record whose first sample is far from the mean: white
  * noise, sd 1 at 1 kHz, so the one-sided density is 2e-3 (1e-3 at DC).
  * Bins 0 and 1 are where global_fix cancels large terms; with the first
- * sample as the only shift and plain float sums they came out +75 % and
- * -8 % (float32; a double build was right). 31,249 segments: the
- * estimate's own sd is about 0.6 %. */
+ * sample as the only shift and plain float sums this test failed in
+ * float32 (a double build was right). 31,249 segments: the estimate's own
+ * sd is about 0.6 %. */
 static void test_global_long_offset_start(void **state)
 {
     static fnav_welch_t w;
