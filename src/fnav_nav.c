@@ -90,7 +90,10 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
         !fnav_isfinite(cfg->tilt_sd_rad) || !fnav_isfinite(cfg->yaw_sd_rad) || !fnav_isfinite(cfg->gyro_bias_sd_rps) ||
         !fnav_isfinite(cfg->accel_bias_sd_mps2) || !fnav_isfinite(cfg->max_gap_s) ||
         !(cfg->diverge_speed_mps > FNAV_R(0.0)) || !fnav_isfinite(cfg->diverge_speed_mps) ||
-        cfg->diverge_undone == 0u || !(cfg->realign_min_s >= FNAV_R(0.0)) || !fnav_isfinite(cfg->realign_min_s)) {
+        cfg->diverge_undone == 0u || !(cfg->realign_min_s >= FNAV_R(0.0)) || !fnav_isfinite(cfg->realign_min_s) ||
+        /* a still period ends at the alignment's max_still_s, so a longer
+         * minimum would never renew */
+        cfg->realign_min_s > cfg->align.max_still_s) {
         return FNAV_E_CONFIG;
     }
     for (b = 0; b < sizeof *nav; b++) {

@@ -68,6 +68,13 @@ static void test_config(void **state)
     assert_true(nav.ukf.cfg.zaru_gate == FNAV_R(5.0));
     c.zaru_gate = FNAV_R(-1.0);
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* a renewal minimum longer than a still period can last (the
+     * alignment's max_still_s ends it) would never renew: refused */
+    c = fnav_nav_config_default;
+    c.realign_min_s = c.align.max_still_s;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    c.realign_min_s = c.align.max_still_s + FNAV_R(0.5);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
 }
 
 /* One frame per accepted sample, in order; rejected samples change nothing;

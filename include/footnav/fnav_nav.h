@@ -88,7 +88,8 @@ typedef struct {
     fnav_real_t zaru_sigma_rps;        /**< ZARU noise, rad/s */
     fnav_real_t zaru_gate;             /**< ZARU validation gate, chi-square 3 dof (fnav_ukf.h); 0: none */
     fnav_real_t realign_min_s;         /**< until the first stride, every clean still period of at
-                                            least this long renews the alignment; 0: off
+                                            least this long renews the alignment; 0: off;
+                                            at most align.max_still_s, where a period ends
                                             (docs/navigation.md, "Initial alignment") */
     fnav_real_t tilt_sd_rad;           /**< initial roll/pitch standard deviation, rad */
     fnav_real_t yaw_sd_rad;            /**< initial yaw standard deviation, rad (yaw is defined 0) */
