@@ -621,9 +621,8 @@ static void json_quality(cJSON *o, const hx_allan_quality_t *q)
 static int write_json(const run_t *R, const char *path)
 {
     cJSON *root = cJSON_CreateObject(), *arr;
-    char *txt;
-    FILE *f;
-    int i;
+    char err[256];
+    int i, rc;
     size_t k;
     cJSON_AddStringToObject(root, "source", R->source);
     cJSON_AddStringToObject(root, "sensor", R->sensor);
@@ -690,24 +689,12 @@ static int write_json(const run_t *R, const char *path)
         }
         cJSON_AddItemToArray(arr, c);
     }
-    txt = cJSON_Print(root);
+    rc = hx_write_json(path, root, err, sizeof err);
     cJSON_Delete(root);
-    f = fopen(path, "w");
-    if (f == NULL || txt == NULL) {
-        hx_error(CMD, "%s: cannot create (%s)", path, strerror(errno));
-        free(txt);
-        if (f != NULL) {
-            fclose(f);
-        }
-        return -1;
+    if (rc != 0) {
+        hx_error(CMD, "%s", err);
     }
-    fprintf(f, "%s\n", txt);
-    free(txt);
-    if (fclose(f) != 0) {
-        hx_error(CMD, "%s: write failed", path);
-        return -1;
-    }
-    return 0;
+    return rc;
 }
 
 /* Writes a datablock; returns the number of points (log axes: positive only). */

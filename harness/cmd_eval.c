@@ -851,7 +851,7 @@ int hx_cmd_eval(int argc, char **argv)
         out_path = "docs/results.md";
     }
     json_path = hx_arg(&a, "--json");
-    if (json_path != NULL && hx_check_writable("eval", json_path) != 0) {
+    if (json_path != NULL && strcmp(json_path, "-") != 0 && hx_check_writable("eval", json_path) != 0) {
         return HX_EXIT_IO; /* found out before the run, as for --out */
     }
     ev.md = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
@@ -1193,8 +1193,6 @@ int hx_cmd_eval(int argc, char **argv)
     }
     if (json_path != NULL) {
         cJSON *j = cJSON_CreateObject();
-        char *text;
-        FILE *f;
         jnum(j, "gx2_h_pct_median", gx2.h_pct_med);
         jnum(j, "gx2_3d_pct_median", gx2.d3_pct_med);
         jnum(j, "gx2_3d_pct_worst", gx2.d3_pct_max);
@@ -1209,15 +1207,12 @@ int hx_cmd_eval(int argc, char **argv)
         jnum(j, "ipol_spurious", ip.trials > 0 ? (double)ip.spurious : (double)NAN);
         jnum(j, "ipol_fo_err_median", ip.trials > 0 ? ip.fo_med : (double)NAN);
         jnum(j, "ipol_fs_err_median", ip.trials > 0 ? ip.fs_med : (double)NAN);
-        text = cJSON_Print(j);
+        rc = hx_write_json(json_path, j, err, sizeof err);
         cJSON_Delete(j);
-        f = text ? fopen(json_path, "w") : NULL;
-        if (f == NULL || fputs(text, f) == EOF || fclose(f) != 0) {
-            hx_error("eval", "cannot write %s", json_path);
-            free(text);
+        if (rc != 0) {
+            hx_error("eval", "%s", err);
             return HX_EXIT_IO;
         }
-        free(text);
     }
     if (ev.failures > 0) {
         hx_error("eval", "%d run(s) failed (see the warnings); results are incomplete", ev.failures);

@@ -175,9 +175,8 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
 {
     cJSON *j = cJSON_CreateObject();
     cJSON *arr;
-    char *txt;
-    FILE *f;
-    int c;
+    char err[256];
+    int c, rc;
     static const char *const ch[6] = { "ax", "ay", "az", "gx", "gy", "gz" };
     cJSON_AddStringToObject(j, "format", hx_format_name(log->meta.format));
     cJSON_AddStringToObject(j, "sensor", log->meta.sensor);
@@ -217,19 +216,12 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     if (log->status != FNAV_END) {
         cJSON_AddStringToObject(j, "error", log->error);
     }
-    txt = cJSON_Print(j);
+    rc = hx_write_json(path, j, err, sizeof err);
     cJSON_Delete(j);
-    f = fopen(path, "w");
-    if (f == NULL || txt == NULL) {
-        free(txt);
-        if (f) {
-            fclose(f);
-        }
-        return -1;
+    if (rc != 0) {
+        hx_error("info", "%s", err);
     }
-    fprintf(f, "%s\n", txt);
-    free(txt);
-    return fclose(f);
+    return rc;
 }
 
 int hx_cmd_info(int argc, char **argv)
@@ -286,7 +278,6 @@ int hx_cmd_info(int argc, char **argv)
         exit_code = HX_EXIT_DATA;
     }
     if (hx_arg(&a, "--json") != NULL && write_json(hx_arg(&a, "--json"), &log, &in) != 0) {
-        hx_error("info", "%s: cannot write", hx_arg(&a, "--json"));
         exit_code = HX_EXIT_IO;
     }
     if (log.status != FNAV_END) {

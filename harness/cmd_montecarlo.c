@@ -209,9 +209,8 @@ static int write_json(const char *path, const hx_mc_result_t *r, const char *mot
                       const char *fprofile, int eq6, unsigned seed)
 {
     cJSON *root = cJSON_CreateObject(), *vars = cJSON_CreateArray();
-    char *txt;
-    FILE *f;
-    int v, g, b, ok;
+    char err[256];
+    int v, g, b, rc;
     cJSON_AddStringToObject(root, "motion", motion);
     cJSON_AddNumberToObject(root, "rate_hz", rate);
     cJSON_AddStringToObject(root, "profile", profile);
@@ -273,18 +272,12 @@ static int write_json(const char *path, const hx_mc_result_t *r, const char *mot
         cJSON_AddItemToArray(vars, o);
     }
     cJSON_AddItemToObject(root, "variants", vars);
-    txt = cJSON_Print(root);
+    rc = hx_write_json(path, root, err, sizeof err);
     cJSON_Delete(root);
-    if (txt == NULL) {
-        return -1;
+    if (rc != 0) {
+        hx_error("montecarlo", "%s", err);
     }
-    f = fopen(path, "w");
-    ok = f != NULL && fputs(txt, f) >= 0 && fputc('\n', f) != EOF;
-    if (f != NULL && fclose(f) != 0) {
-        ok = 0;
-    }
-    free(txt);
-    return ok ? 0 : -1;
+    return rc;
 }
 
 static int write_csv(const char *path, const hx_mc_result_t *r)
@@ -535,7 +528,6 @@ int hx_cmd_montecarlo(int argc, char **argv)
         }
         if (json != NULL && write_json(json, &res, su.motion_name, (double)su.err.rate_hz, su.profile_name, fprof,
                                        su.bias_eq6, su.err.seed) != 0) {
-            hx_error("montecarlo", "%s: cannot write (%s)", json, strerror(errno));
             status = HX_EXIT_IO;
         }
         if (csv != NULL && write_csv(csv, &res) != 0) {

@@ -227,24 +227,6 @@ static cJSON *json_result(const result_t *r)
     return o;
 }
 
-static int write_text(const char *path, char *txt)
-{
-    FILE *f = fopen(path, "w");
-    if (f == NULL || txt == NULL) {
-        hx_error(CMD, "%s: cannot create (%s)", path, strerror(errno));
-        if (f != NULL) {
-            fclose(f);
-        }
-        return -1;
-    }
-    fprintf(f, "%s\n", txt);
-    if (fclose(f) != 0) {
-        hx_error(CMD, "%s: write failed", path);
-        return -1;
-    }
-    return 0;
-}
-
 static void block(FILE *gp, const char *name, const result_t *r, int c, int ccdf)
 {
     uint32_t k;
@@ -579,7 +561,7 @@ int hx_cmd_psd(int argc, char **argv)
         exit_code = HX_EXIT_IO;
     }
     if (hx_arg(&a, "--json") != NULL) {
-        char *txt;
+        char err[256];
         cJSON *set;
         root = cJSON_CreateObject();
         cJSON_AddStringToObject(root, "source", a.pos[0]);
@@ -615,11 +597,10 @@ int hx_cmd_psd(int argc, char **argv)
             }
         }
         cJSON_AddBoolToObject(root, "complete", log.status == FNAV_END);
-        txt = cJSON_Print(root);
-        if (write_text(hx_arg(&a, "--json"), txt) != 0) {
+        if (hx_write_json(hx_arg(&a, "--json"), root, err, sizeof err) != 0) {
+            hx_error(CMD, "%s", err);
             exit_code = HX_EXIT_IO;
         }
-        free(txt);
         cJSON_Delete(root);
     }
     if ((s = hx_arg(&a, "--plot")) != NULL) {

@@ -107,7 +107,6 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     t0 = hx_now_s() - t0;
     sgv_report(stdout, &o, cases, (int)n, 0, t0);
     if (json != NULL && sgv_write_json(json, &o, cases, (int)n, t0) != 0) {
-        hx_error("simgap-validate", "cannot write %s", json);
         status = HX_EXIT_IO;
     }
     if (md != NULL) {

@@ -1,6 +1,7 @@
 /* Shared command-line plumbing of ./harness (see hx_cli.h). */
 #include "hx_cli.h"
 
+#include <cjson/cJSON.h>
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -343,6 +344,60 @@ int hx_same_file(const char *a, const char *b)
         return 0;
     }
     return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+FILE *hx_json_stdout = NULL;
+
+int hx_json_stdout_claim(const char *cmd, int argc, char **argv)
+{
+    int i, json = 0, out = 0, fd;
+    for (i = 0; i + 1 < argc; i++) {
+        if (strcmp(argv[i + 1], "-") == 0) {
+            json |= strcmp(argv[i], "--json") == 0;
+            out |= strcmp(argv[i], "--out") == 0;
+        }
+    }
+    if (!json) {
+        return 0;
+    }
+    if (out) {
+        hx_error(cmd, "--json - and --out - cannot both write to standard output");
+        return -1;
+    }
+    fflush(stdout);
+    fd = dup(STDOUT_FILENO);
+    hx_json_stdout = fd >= 0 ? fdopen(fd, "w") : NULL;
+    if (hx_json_stdout == NULL || dup2(STDERR_FILENO, STDOUT_FILENO) < 0) {
+        hx_error(cmd, "--json -: cannot set up standard output (%s)", strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+int hx_write_json(const char *path, const struct cJSON *root, char *err, size_t err_size)
+{
+    const int to_stdout = strcmp(path, "-") == 0;
+    char *txt = cJSON_Print(root);
+    FILE *f;
+    int ok;
+    if (txt == NULL) {
+        snprintf(err, err_size, "%s: out of memory", path);
+        return -1;
+    }
+    f = to_stdout ? hx_json_stdout : fopen(path, "w");
+    if (f == NULL) {
+        snprintf(err, err_size, "cannot write %s (%s)", path, to_stdout ? "standard output not claimed" : strerror(errno));
+        free(txt);
+        return -1;
+    }
+    ok = fputs(txt, f) >= 0 && fputc('\n', f) != EOF;
+    ok = (to_stdout ? fflush(f) : fclose(f)) == 0 && ok;
+    free(txt);
+    if (!ok) {
+        snprintf(err, err_size, "cannot write %s", path);
+        return -1;
+    }
+    return 0;
 }
 
 int hx_check_writable(const char *cmd, const char *path)

@@ -148,6 +148,20 @@ int hx_same_file(const char *a, const char *b);
  *  written only after long work, or by a child process. */
 int hx_check_writable(const char *cmd, const char *path);
 
+/** Where `--json -` writes: the process's standard output, kept aside by
+ *  hx_json_stdout_claim (main.c) before a command runs; NULL when no
+ *  option asked for it. */
+extern FILE *hx_json_stdout;
+/** When argv has `--json -`, standard output is kept for the JSON alone
+ *  (hx_json_stdout) and what a command prints there goes to standard error
+ *  instead, so that the JSON can be piped. 0, or -1 with the error printed
+ *  when another option (`--out -`) wants standard output as well. */
+int hx_json_stdout_claim(const char *cmd, int argc, char **argv);
+struct cJSON;
+/** Write `root` as text (one trailing newline) to `path`, or to
+ *  hx_json_stdout when `path` is "-". 0, or -1 with the reason in err. */
+int hx_write_json(const char *path, const struct cJSON *root, char *err, size_t err_size);
+
 /** `s` as the inside of a gnuplot single-quoted string (a quote doubled),
  *  cut to fit `buf`; returns buf. Every text from outside the program (a
  *  path, a file name, a unit) goes through it, so that it stays text. */

@@ -814,9 +814,7 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
 {
     cJSON *root = cJSON_CreateObject(), *h = cJSON_CreateObject(), *arr;
     const fnav_nav_stats_t *st = &t->stats;
-    char *text;
-    FILE *f;
-    int k, rc = 0;
+    int k, rc;
     cJSON_AddStringToObject(root, "log", log_path);
     cJSON_AddStringToObject(root, "command", command);
     cJSON_AddItemToObject(root, "rate_hz", num(t->rate_hz));
@@ -861,22 +859,8 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddNumberToObject(h, "divergence_resets", st->resets);
     cJSON_AddNumberToObject(h, "health_bits", t->n > 0 ? (double)t->f[t->n - 1].health : 0.0);
     cJSON_AddItemToObject(root, "health", h);
-    text = cJSON_Print(root);
+    rc = hx_write_json(json_path, root, err, err_size);
     cJSON_Delete(root);
-    if (text == NULL) {
-        snprintf(err, err_size, "out of memory");
-        return -1;
-    }
-    f = fopen(json_path, "w");
-    if (f == NULL || fputs(text, f) == EOF || fputc('\n', f) == EOF) {
-        snprintf(err, err_size, "cannot write %s", json_path);
-        rc = -1;
-    }
-    if (f != NULL && fclose(f) != 0 && rc == 0) {
-        snprintf(err, err_size, "cannot write %s", json_path);
-        rc = -1;
-    }
-    free(text);
     return rc;
 }
 

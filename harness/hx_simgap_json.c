@@ -2,6 +2,7 @@
  * (documented in docs/simgap.md). */
 #include "hx_simgap.h"
 #include "hx_simgap_nav.h"
+#include "hx_cli.h"
 
 #include <cjson/cJSON.h>
 #include <math.h>
@@ -230,9 +231,7 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
 int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_size)
 {
     cJSON *root = cJSON_CreateObject(), *o, *a;
-    char *txt;
-    FILE *f;
-    int ch, k;
+    int ch, k, rc;
     size_t i;
     if (root == NULL) {
         snprintf(err, err_size, "out of memory");
@@ -449,23 +448,7 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
         }
     }
     add_num(root, "elapsed_s", r->elapsed_s);
-    txt = cJSON_Print(root);
+    rc = hx_write_json(path, root, err, err_size);
     cJSON_Delete(root);
-    if (txt == NULL) {
-        snprintf(err, err_size, "out of memory");
-        return -1;
-    }
-    f = fopen(path, "w");
-    if (f == NULL) {
-        snprintf(err, err_size, "cannot write %s", path);
-        free(txt);
-        return -1;
-    }
-    if (fputs(txt, f) < 0 || fputc('\n', f) == EOF || fclose(f) != 0) {
-        snprintf(err, err_size, "cannot write %s", path);
-        free(txt);
-        return -1;
-    }
-    free(txt);
-    return 0;
+    return rc;
 }

@@ -917,9 +917,8 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
 int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *cases, int n, double elapsed_s)
 {
     cJSON *root = cJSON_CreateObject(), *arr;
-    char *txt;
-    FILE *f;
-    int i, ch;
+    char err[256];
+    int i, ch, rc;
     if (root == NULL) {
         return -1;
     }
@@ -972,20 +971,10 @@ int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *case
         cJSON_AddNumberToObject(o2, "elapsed_s", c->elapsed_s);
         cJSON_AddItemToArray(arr, o2);
     }
-    txt = cJSON_Print(root);
+    rc = hx_write_json(path, root, err, sizeof err);
     cJSON_Delete(root);
-    if (txt == NULL) {
-        return -1;
+    if (rc != 0) {
+        hx_error("simgap-validate", "%s", err);
     }
-    f = fopen(path, "w");
-    if (f == NULL) {
-        free(txt);
-        return -1;
-    }
-    if (fputs(txt, f) < 0 || fclose(f) != 0) {
-        free(txt);
-        return -1;
-    }
-    free(txt);
-    return 0;
+    return rc;
 }

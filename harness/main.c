@@ -54,6 +54,9 @@ int main(int argc, char **argv)
     }
     for (i = 0; i < sizeof k_commands / sizeof k_commands[0]; i++) {
         if (strcmp(argv[1], k_commands[i].name) == 0) {
+            if (hx_json_stdout_claim(k_commands[i].name, argc - 2, argv + 2) != 0) {
+                return HX_EXIT_USAGE;
+            }
             return k_commands[i].fn(argc - 2, argv + 2);
         }
     }

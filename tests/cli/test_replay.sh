@@ -118,6 +118,25 @@ printf 'format = footnav-profile 1\nrate_hz = 100\n' > "$T/bad.profile"
 expect_exit 2 "incomplete profile file" "$H" replay vectors/walk.bin --profile "$T/bad.profile"
 expect_err "bad.profile" "profile error names the file"
 
+# --- `--json -`: the JSON alone on standard output (the summary moves to
+# standard error), the same document as --json FILE; not with --out -
+expect_exit 0 "replay --json -" "$H" replay vectors/walk.bin --json -
+expect_err "return-to-start" "--json -: the summary is on stderr"
+if /usr/bin/python3 -c "import json,sys; a=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2])); a.pop('command'); b.pop('command'); assert a==b" "$T/out" "$T/s.json"; then
+    pass "--json - writes the document of --json FILE, nothing else, on stdout"
+else
+    fail "--json - on stdout"
+fi
+expect_exit 0 "info --json -" "$H" info vectors/walk.bin --json -
+if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['samples']==16539" "$T/out"; then
+    pass "info --json - is the JSON alone"
+else
+    fail "info --json -"
+fi
+expect_exit 2 "--json - with --out -" "$H" replay vectors/walk.bin --out - --json -
+expect_err "cannot both write to standard output" "--json - and --out - refused"
+if [ -e ./- ]; then fail "a file named '-' was created"; rm -f ./-; else pass "no file named '-'"; fi
+
 # --- bad input: a NaN in the middle; the frames before are written, exit 1
 head -2001 vectors/nav/golden/gx2_walk2.csv > "$T/bad.csv"
 echo "8.1,nan,0,9.8,0,0,0" >> "$T/bad.csv"
