@@ -798,9 +798,9 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     }
     fprintf(f, "timing            %u duplicates (dt = 0), %u gaps, %u time jumps, longest interval %.1f ms\n",
             st->duplicates, st->gaps, st->time_jumps, 1e3 * (double)st->max_gap_seen_s);
-    fprintf(f, "health            %u NaN/Inf rejected, %u backwards rejected, %u jitter, %u covariance resets, "
-               "%u undone, %u updates rejected, %u covariance guard, %u divergence resets\n",
-            st->nan_inputs, st->time_back, st->chol_jitter, st->chol_reset, st->diverged, st->update_reject,
+    fprintf(f, "health            %u NaN/Inf rejected, %u out of range rejected, %u backwards rejected, %u jitter, "
+               "%u covariance resets, %u undone, %u updates rejected, %u covariance guard, %u divergence resets\n",
+            st->nan_inputs, st->range_inputs, st->time_back, st->chol_jitter, st->chol_reset, st->diverged, st->update_reject,
             st->cov_guard, st->resets);
 }
 
@@ -842,6 +842,7 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddNumberToObject(h, "samples", st->samples);
     cJSON_AddNumberToObject(h, "frames", st->frames);
     cJSON_AddNumberToObject(h, "nan_rejected", st->nan_inputs);
+    cJSON_AddNumberToObject(h, "range_rejected", st->range_inputs);
     cJSON_AddNumberToObject(h, "backwards_rejected", st->time_back);
     cJSON_AddNumberToObject(h, "duplicates", st->duplicates);
     cJSON_AddNumberToObject(h, "gaps", st->gaps);

@@ -116,15 +116,24 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
     return fnav_ukf_init(&nav->ukf, &uc);
 }
 
-static int sample_finite(const fnav_sample_t *s)
+/* FNAV_OK, FNAV_E_NANINF or FNAV_E_RANGE */
+static fnav_status_t sample_check(const fnav_sample_t *s)
 {
+    fnav_status_t st = FNAV_OK;
     int i;
     for (i = 0; i < 3; i++) {
         if (!fnav_isfinite(s->accel_mps2[i]) || !fnav_isfinite(s->gyro_rps[i])) {
-            return 0;
+            return FNAV_E_NANINF;
+        }
+        if (fnav_fabs(s->accel_mps2[i]) > (fnav_real_t)FNAV_INPUT_MAX_ABS ||
+            fnav_fabs(s->gyro_rps[i]) > (fnav_real_t)FNAV_INPUT_MAX_ABS) {
+            st = FNAV_E_RANGE;
         }
     }
-    return 1;
+    if (s->t_ns > FNAV_T_NS_MAX || s->t_ns < -FNAV_T_NS_MAX) {
+        st = FNAV_E_RANGE; /* a later difference would overflow */
+    }
+    return st;
 }
 
 fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample)
@@ -133,10 +142,16 @@ fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample)
     if (nav == NULL || sample == NULL) {
         return FNAV_E_ARG;
     }
-    if (!sample_finite(sample)) {
+    st = sample_check(sample);
+    if (st == FNAV_E_NANINF) {
         nav->stats.nan_inputs++;
         nav->health |= FNAV_HEALTH_NANINF;
-        return FNAV_E_NANINF;
+        return st;
+    }
+    if (st != FNAV_OK) {
+        nav->stats.range_inputs++;
+        nav->health |= FNAV_HEALTH_RANGE;
+        return st;
     }
     if (nav->have_in && sample->t_ns < nav->t_in_ns) {
         nav->stats.time_back++;

@@ -97,22 +97,34 @@ static void test_stream_contract(void **state)
             frames++;
         }
         if (k == 300) {
-            /* NaN and a time going backwards: rejected, nothing changes */
+            /* NaN, a value or a stamp out of range (a glitch; a
+             * stamp whose difference with the last would overflow) and a
+             * time going backwards: rejected, nothing changes */
             fnav_sample_t bad = still(301);
             copy = nav;
             bad.gyro_rps[2] = (fnav_real_t)NAN;
             assert_int_equal(fnav_nav_push(&nav, &bad), FNAV_E_NANINF);
+            bad = still(301);
+            bad.accel_mps2[1] = FNAV_R(-2.0e6);
+            assert_int_equal(fnav_nav_push(&nav, &bad), FNAV_E_RANGE);
+            bad = still(301);
+            bad.t_ns = FNAV_T_NS_MAX + 1;
+            assert_int_equal(fnav_nav_push(&nav, &bad), FNAV_E_RANGE);
             bad = still(299);
             assert_int_equal(fnav_nav_push(&nav, &bad), FNAV_E_TIME);
             assert_int_equal(nav.stats.nan_inputs, 1);
+            assert_int_equal(nav.stats.range_inputs, 2);
             assert_int_equal(nav.stats.time_back, 1);
+            assert_true((nav.health & FNAV_HEALTH_RANGE) != 0u);
             nav.stats.nan_inputs = copy.stats.nan_inputs;
+            nav.stats.range_inputs = copy.stats.range_inputs;
             nav.stats.time_back = copy.stats.time_back;
             nav.health = copy.health;
             assert_memory_equal(&nav, &copy, sizeof nav);
             nav.stats.nan_inputs = 1;
+            nav.stats.range_inputs = 2;
             nav.stats.time_back = 1;
-            nav.health |= FNAV_HEALTH_NANINF | FNAV_HEALTH_TIME_BACK;
+            nav.health |= FNAV_HEALTH_NANINF | FNAV_HEALTH_RANGE | FNAV_HEALTH_TIME_BACK;
         }
     }
     fnav_nav_finish(&nav);

@@ -11,7 +11,7 @@
  *   fnav_nav_config_t cfg = fnav_nav_config_default;
  *   fnav_nav_init(&nav, &cfg);
  *   for each sample s:
- *       fnav_nav_push(&nav, &s);            // FNAV_E_NANINF / FNAV_E_TIME: rejected, counted
+ *       fnav_nav_push(&nav, &s);            // FNAV_E_NANINF / _RANGE / _TIME: rejected, counted
  *       while (fnav_nav_pop(&nav, &frame) == FNAV_OK) write(frame);
  *   fnav_nav_finish(&nav);
  *   while (fnav_nav_pop(&nav, &frame) == FNAV_OK) write(frame);
@@ -62,6 +62,7 @@ extern "C" {
 #define FNAV_HEALTH_NOT_ALIGNED 0x200u   /**< the input ended before an alignment */
 #define FNAV_HEALTH_COV_GUARD 0x400u     /**< the covariance guard reset or clamped a variance */
 #define FNAV_HEALTH_RESET 0x800u         /**< the navigator diverged and was reset (fnav_nav_reset) */
+#define FNAV_HEALTH_RANGE 0x1000u        /**< a sample beyond FNAV_INPUT_MAX_ABS or FNAV_T_NS_MAX was rejected */
 
 /* Additional fnav_nav_frame_t.flags bits (fnav_port.h defines 0x1..0x4). */
 #define FNAV_FRAME_SEG_STANCE 0x8u  /**< segmented gait phase is stance */
@@ -112,6 +113,7 @@ typedef struct {
     uint32_t samples;        /**< samples accepted */
     uint32_t frames;         /**< frames produced */
     uint32_t nan_inputs;     /**< samples rejected: NaN/Inf */
+    uint32_t range_inputs;   /**< samples rejected: |value| > FNAV_INPUT_MAX_ABS or |t_ns| > FNAV_T_NS_MAX */
     uint32_t time_back;      /**< samples rejected: time going backwards */
     uint32_t duplicates;     /**< dt = 0 */
     uint32_t gaps;           /**< dt > 1.5 nominal */
@@ -158,8 +160,10 @@ FNAV_WARN_UNUSED fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_con
 
 /**
  * Accept one sample (b frame, SI units).
- * @return FNAV_OK; FNAV_E_NANINF or FNAV_E_TIME: sample rejected (counted,
- *         state unchanged); FNAV_E_STATE after fnav_nav_finish() or when
+ * @return FNAV_OK; FNAV_E_NANINF, FNAV_E_RANGE (a value beyond
+ *         FNAV_INPUT_MAX_ABS, a glitch no sensor reads, or a stamp beyond
+ *         FNAV_T_NS_MAX) or FNAV_E_TIME: sample rejected (counted, state
+ *         unchanged); FNAV_E_STATE after fnav_nav_finish() or when
  *         frames were not popped.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample);

@@ -147,9 +147,13 @@ const char *fnav_status_str(fnav_status_t status);
 /** fnav_sample_t.flags: seq is a counter from the sensor (drops visible). */
 #define FNAV_SAMPLE_HAS_SEQ 0x2u
 
+/** Largest |t_ns| a sample may carry: 2^62 ns (146 years either side of
+ *  the epoch), so that the difference of any two stamps fits int64_t. */
+#define FNAV_T_NS_MAX ((int64_t)1 << 62)
+
 /** One IMU sample in the sensor (body) frame b, SI units. */
 typedef struct {
-    int64_t t_ns;                 /**< sample time, ns, monotonic non-decreasing */
+    int64_t t_ns;                 /**< sample time, ns, monotonic non-decreasing, |t_ns| <= FNAV_T_NS_MAX */
     uint32_t seq;                 /**< record counter of the source (wraps at 2^32) */
     uint32_t flags;               /**< FNAV_SAMPLE_* bits */
     fnav_real_t accel_mps2[3];    /**< specific force f_b, m/s^2 */
