@@ -90,12 +90,22 @@ struct hx_reader {
 static void set_err(hx_reader_t *r, const char *fmt, ...)
 {
     va_list ap;
-    if (r->err[0] != '\0') {
+    char msg[sizeof r->err], old[sizeof r->err];
+    if (r->err[0] != '\0' && r->deferred == FNAV_OK) {
         return; /* keep the first error */
     }
     va_start(ap, fmt);
-    vsnprintf(r->err, sizeof r->err, fmt, ap);
+    vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
+    if (r->err[0] == '\0') {
+        memcpy(r->err, msg, sizeof r->err);
+        return;
+    }
+    /* the earlier message was deferred (a skipped record: the reading went
+     * on); this one says where it stopped, and keeps the earlier */
+    memcpy(old, r->err, sizeof old);
+    snprintf(r->err, sizeof r->err, "%.*s; before it: %.*s", (int)sizeof r->err / 2, msg,
+             (int)sizeof r->err / 2 - 16, old);
 }
 
 static void add_warn(hx_reader_t *r, const char *fmt, ...)
@@ -763,6 +773,10 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         break;
     }
     }
+    if (t_ns > FNAV_T_NS_MAX || t_ns < -FNAV_T_NS_MAX) {
+        set_err(r, "%s:%ld: time %.6g s is beyond 2^62 ns (146 years)", r->path, r->stats.lines, (double)t_ns * 1e-9);
+        return FNAV_E_RANGE;
+    }
     if (r->have_prev && t_ns < r->prev_t_ns) {
         set_err(r, "%s:%ld: time goes backwards (%.9f s after %.9f s)", r->path, r->stats.lines,
                 (double)t_ns * 1e-9, (double)r->prev_t_ns * 1e-9);
@@ -867,6 +881,11 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                         r->offset);
                 r->deferred = FNAV_E_FORMAT;
                 r->stats.clean_end = 0;
+            }
+            if (rec.t_ns > FNAV_T_NS_MAX || rec.t_ns < -FNAV_T_NS_MAX) {
+                set_err(r, "%s: record #%ld at byte %lld: time %.6g s is beyond 2^62 ns (146 years)", r->path,
+                        r->record_slot, r->offset, (double)rec.t_ns * 1e-9);
+                return FNAV_E_RANGE;
             }
             if (r->have_prev && rec.t_ns < r->prev_t_ns) {
                 set_err(r, "%s: record #%ld: time goes backwards (%.9f s after %.9f s)", r->path,

@@ -73,6 +73,15 @@ printf 'XXXX' | dd of="$T/corrupt.bin" bs=1 seek=5000 conv=notrunc 2>/dev/null
 expect_exit 1 "corrupted .bin" "$H" info "$T/corrupt.bin"
 expect_err "corrupt.bin: record #100 at byte 4992: checksum mismatch" "corruption names file and record"
 expect_out "samples     16538" "only the corrupted record is lost"
+# a skipped record, then a stop: the message says where reading stopped and
+# keeps the skipped record (it used to name only the first)
+head -c $((192 + 48 * 1000 + 10)) "$T/corrupt.bin" >"$T/corrupt_cut.bin"
+expect_exit 1 "corrupted, then cut .bin" "$H" info "$T/corrupt_cut.bin"
+expect_err "record #1000 at byte 48192 has 10 of 48 bytes.*; before it: .*record #100 at byte 4992: checksum mismatch" \
+    "the stop and the skipped record both named"
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n5000000000,0,0,9.8,0,0,0\n' >"$T/farfuture.csv"
+expect_exit 1 "a time beyond 2^62 ns" "$H" info "$T/farfuture.csv"
+expect_err "farfuture.csv:3: time 5e+09 s is beyond 2^62 ns" "a time whose differences would overflow is refused with its line"
 printf 'not a log at all\n' >"$T/junk.bin"
 expect_exit 1 "junk input" "$H" info "$T/junk.bin"
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0.01,0,0,-9.8,0,0,0\n0.005,0,0,-9.8,0,0,0\n' >"$T/back.csv"
