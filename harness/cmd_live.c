@@ -72,8 +72,12 @@ typedef struct {
     fnav_wire_decoder_t dec;
     fnav_wire_stats_t last_stats; /* to report what changed */
     uint32_t by_type[6];
-    uint32_t bad_samples;         /* CRC-valid SAMPLE frames with NaN/Inf */
+    uint32_t bad_samples;         /* CRC-valid SAMPLE frames with NaN/Inf or out of range */
+    uint32_t bad_info;            /* INFO frames with an impossible rate */
     int have_info, have_end, have_status;
+    int restarted;                /* a sample went back in time: the sender restarted */
+    double restart_from_s, restart_to_s;
+    unsigned restart_seq;
     fnav_wire_info_t info;
     fnav_wire_status_t status;
     uint32_t end_count;
@@ -251,6 +255,20 @@ static void on_sample(live_t *L, const fnav_sample_t *s)
     }
 }
 
+/* What the .bin reader refuses (and fnav_nav_push): a value beyond
+ * FNAV_INPUT_MAX_ABS in SI units, a time beyond FNAV_T_NS_MAX. Refused on
+ * arrival so that the recording stays readable to its end. */
+static int sample_in_range(const fnav_sample_t *s)
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        if (fabs((double)s->accel_mps2[i]) > FNAV_INPUT_MAX_ABS || fabs((double)s->gyro_rps[i]) > FNAV_INPUT_MAX_ABS) {
+            return 0;
+        }
+    }
+    return s->t_ns <= FNAV_T_NS_MAX && s->t_ns >= -FNAV_T_NS_MAX;
+}
+
 static void on_frame(live_t *L, const fnav_wire_frame_t *f)
 {
     report_link(L, f);
@@ -259,21 +277,40 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
     case FNAV_WIRE_SAMPLE: {
         fnav_sample_t s;
         fnav_status_t st = fnav_wire_parse_sample(f, &s);
-        if (st == FNAV_OK) {
+        if (st == FNAV_OK && !sample_in_range(&s)) {
+            st = FNAV_E_RANGE;
+        }
+        if (st == FNAV_OK && L->samples > 0u && s.t_ns < L->t_last_ns) {
+            /* what the .bin reader and the navigator refuse: the session
+             * ends here, with the recording readable to this point */
+            L->restarted = 1;
+            L->restart_from_s = (double)L->t_last_ns * 1e-9;
+            L->restart_to_s = (double)s.t_ns * 1e-9;
+            L->restart_seq = (unsigned)f->seq;
+        } else if (st == FNAV_OK) {
             on_sample(L, &s);
         } else {
-            char msg[120];
+            char msg[160];
             L->bad_samples++;
-            snprintf(msg, sizeof msg, "bad sample: sample frame seq %u holds NaN or Inf; skipped", (unsigned)f->seq);
+            snprintf(msg, sizeof msg, "bad sample: sample frame seq %u holds %s; skipped", (unsigned)f->seq,
+                     st == FNAV_E_RANGE ? "a value beyond 1e6 SI or a time beyond 2^62 ns" : "NaN or Inf");
             warn_limited(L, msg);
         }
         break;
     }
-    case FNAV_WIRE_INFO:
-        if (fnav_wire_parse_info(f, &L->info) == FNAV_OK) {
+    case FNAV_WIRE_INFO: {
+        fnav_wire_info_t info;
+        if (fnav_wire_parse_info(f, &info) == FNAV_OK) {
+            L->info = info;
             L->have_info = 1;
+        } else {
+            char msg[120];
+            L->bad_info++;
+            snprintf(msg, sizeof msg, "bad INFO frame seq %u: its rate is not in [0, 1e6] Hz; ignored", (unsigned)f->seq);
+            warn_limited(L, msg);
         }
         break;
+    }
     case FNAV_WIRE_STATUS:
         if (fnav_wire_parse_status(f, &L->status) == FNAV_OK) {
             L->have_status = 1;
@@ -499,7 +536,7 @@ int hx_cmd_live(int argc, char **argv)
     t_last_frame = t0;
     t_next_print = t0 + print_every;
     t_next_plot = t0 + plot_every;
-    while (!g_stop && !L.have_end && !L.rec_failed) {
+    while (!g_stop && !L.have_end && !L.rec_failed && !L.restarted) {
         uint8_t buf[4096];
         long n = hx_serial_read(port, buf, sizeof buf, READ_TIMEOUT_MS);
         double now;
@@ -520,7 +557,7 @@ int hx_cmd_live(int argc, char **argv)
             pos += used;
             on_frame(&L, &f);
             t_last_frame = hx_now_s();
-            if (L.have_end) {
+            if (L.have_end || L.restarted) {
                 break; /* anything after END belongs to the next run */
             }
         }
@@ -610,9 +647,16 @@ int hx_cmd_live(int argc, char **argv)
                    (unsigned)L.status.samples, (unsigned)L.status.overruns, (unsigned)L.status.est_errors,
                    (unsigned)L.status.tx_dropped);
         }
-        if (L.record_path != NULL) {
+        if (L.record_path != NULL && L.rec != NULL) {
             fprintf(sum_out, "live: recorded %u samples to %s%s\n", (unsigned)L.samples, L.record_path,
                    L.rec_failed ? " (recording failed, see above)" : "");
+        } else if (L.record_path != NULL) {
+            fprintf(sum_out, "live: nothing recorded: no sample was received (%s not written)\n", L.record_path);
+        }
+        if (L.samples == 0u && L.by_type[FNAV_WIRE_NAV] > 0u) {
+            fprintf(sum_out, "live: the sender sends NAV frames but no SAMPLE frames: live navigates and records "
+                             "raw samples (the reference firmware sends them with sample_every = 1, "
+                             "docs/firmware.md)\n");
         }
         if (L.have_end) {
             fprintf(sum_out, "live: end: END frame, the sender sent %u samples, %u received\n", (unsigned)L.end_count,
@@ -621,13 +665,21 @@ int hx_cmd_live(int argc, char **argv)
             fprintf(sum_out, "live: end: the port went away\n");
             hx_error(CMD, "%s; the %u samples received before are recorded", gone_msg, (unsigned)L.samples);
         }
+        if (L.restarted) {
+            hx_error(CMD, "the sender restarted: time went back from %.6f s to %.6f s at sample frame seq %u; "
+                          "stopped there (the %u samples before it are recorded and navigated; run live again "
+                          "for the new session)",
+                     L.restart_from_s, L.restart_to_s, L.restart_seq, (unsigned)L.samples);
+        }
         if (L.rec_failed || L.csv_failed) {
             exit_code = HX_EXIT_IO;
-        } else if (gone || timed_out) {
+        } else if (gone || timed_out || L.restarted) {
             exit_code = HX_EXIT_DATA;
-        } else if (s->lost > 0u || s->bad_frames > 0u || L.bad_samples > 0u || missing > 0u) {
-            hx_error(CMD, "incomplete: %u frames lost, %u corrupt frames, %u bad samples, %u samples missing",
-                     (unsigned)s->lost, (unsigned)s->bad_frames, (unsigned)L.bad_samples, (unsigned)missing);
+        } else if (s->lost > 0u || s->bad_frames > 0u || L.bad_samples > 0u || L.bad_info > 0u || missing > 0u) {
+            hx_error(CMD, "incomplete: %u frames lost, %u corrupt frames, %u bad samples, %u bad INFO frames, "
+                          "%u samples missing",
+                     (unsigned)s->lost, (unsigned)s->bad_frames, (unsigned)L.bad_samples, (unsigned)L.bad_info,
+                     (unsigned)missing);
             exit_code = HX_EXIT_DATA;
         }
         if (timed_out) {

@@ -441,11 +441,16 @@ fnav_status_t fnav_wire_parse_status(const fnav_wire_frame_t *f, fnav_wire_statu
 fnav_status_t fnav_wire_parse_info(const fnav_wire_frame_t *f, fnav_wire_info_t *info)
 {
     const uint8_t *p;
+    double rate;
     if (f == NULL || info == NULL || f->type != FNAV_WIRE_INFO || f->len != FNAV_WIRE_INFO_LEN) {
         return FNAV_E_FORMAT;
     }
     p = f->payload;
-    info->rate_hz = get_f64(p);
+    rate = get_f64(p);
+    if (!(rate >= 0.0 && rate <= 1.0e6)) {
+        return FNAV_E_RANGE; /* NaN fails both; *info unchanged */
+    }
+    info->rate_hz = rate;
     info->flags = get_u32(p + 8);
     get_text(info->sensor, p + 12, FNAV_WIRE_SENSOR_SIZE);
     get_text(info->axes, p + 12 + FNAV_WIRE_SENSOR_SIZE, FNAV_WIRE_AXES_SIZE);

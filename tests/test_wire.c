@@ -385,6 +385,39 @@ static void test_sample_nan(void **state)
     assert_int_equal(r.seq, 0x5A5A5A5Au); /* unchanged */
 }
 
+/* An INFO rate that is not a number in [0, 1e6] Hz (the .bin header's
+ * range) is refused and nothing is written; 0 (unknown) is accepted. */
+static void test_info_rate(void **state)
+{
+    uint8_t buf[128];
+    fnav_wire_info_t info, got;
+    fnav_wire_decoder_t d;
+    fnav_wire_frame_t f;
+    size_t used, k;
+    (void)state;
+    fnav_wire_decoder_init(&d);
+    memset(&info, 0, sizeof info);
+    memset(&got, 0x5A, sizeof got);
+    info.rate_hz = (double)NAN;
+    k = fnav_wire_encode_info(buf, sizeof buf, 3u, &info);
+    assert_int_equal(fnav_wire_decode(&d, buf, k, &used, &f), FNAV_OK);
+    assert_int_equal(fnav_wire_parse_info(&f, &got), FNAV_E_RANGE);
+    assert_int_equal(got.flags, 0x5A5A5A5Au); /* unchanged */
+    info.rate_hz = 1.0e6 * 1.001;
+    k = fnav_wire_encode_info(buf, sizeof buf, 4u, &info);
+    assert_int_equal(fnav_wire_decode(&d, buf, k, &used, &f), FNAV_OK);
+    assert_int_equal(fnav_wire_parse_info(&f, &got), FNAV_E_RANGE);
+    info.rate_hz = -1.0;
+    k = fnav_wire_encode_info(buf, sizeof buf, 5u, &info);
+    assert_int_equal(fnav_wire_decode(&d, buf, k, &used, &f), FNAV_OK);
+    assert_int_equal(fnav_wire_parse_info(&f, &got), FNAV_E_RANGE);
+    info.rate_hz = 0.0; /* unknown */
+    k = fnav_wire_encode_info(buf, sizeof buf, 6u, &info);
+    assert_int_equal(fnav_wire_decode(&d, buf, k, &used, &f), FNAV_OK);
+    assert_int_equal(fnav_wire_parse_info(&f, &got), FNAV_OK);
+    assert_true(got.rate_hz == 0.0);
+}
+
 /* Sequence accounting across the 16-bit wrap, gaps and restarts. */
 static void test_seq_accounting(void **state)
 {
@@ -492,6 +525,7 @@ int main(void)
         cmocka_unit_test(test_encode_golden),
         cmocka_unit_test(test_roundtrip_and_sizes),
         cmocka_unit_test(test_sample_nan),
+        cmocka_unit_test(test_info_rate),
         cmocka_unit_test(test_seq_accounting),
         cmocka_unit_test(test_garbage_fuzz),
     };

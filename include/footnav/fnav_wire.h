@@ -191,8 +191,11 @@ void fnav_wire_decoder_init(fnav_wire_decoder_t *d);
 FNAV_WARN_UNUSED fnav_status_t fnav_wire_decode(fnav_wire_decoder_t *d, const uint8_t *in, size_t n, size_t *used,
                                                 fnav_wire_frame_t *frame);
 
-/** Sample of a SAMPLE frame. @return FNAV_OK, FNAV_E_FORMAT (wrong type or
- *  length), FNAV_E_NANINF (a non-finite value; *s unchanged). */
+/** Sample of a SAMPLE frame, as sent (any finite float, any time; what a
+ *  consumer accepts is its own policy: fnav_nav_push refuses values beyond
+ *  FNAV_INPUT_MAX_ABS and times beyond FNAV_T_NS_MAX). @return FNAV_OK,
+ *  FNAV_E_FORMAT (wrong type or length), FNAV_E_NANINF (a non-finite value;
+ *  *s unchanged). */
 FNAV_WARN_UNUSED fnav_status_t fnav_wire_parse_sample(const fnav_wire_frame_t *f, fnav_sample_t *s);
 
 /** Navigation output of a NAV frame. @return FNAV_OK or FNAV_E_FORMAT. */
@@ -202,7 +205,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_wire_parse_nav(const fnav_wire_frame_t *f, f
 FNAV_WARN_UNUSED fnav_status_t fnav_wire_parse_status(const fnav_wire_frame_t *f, fnav_wire_status_t *st);
 
 /** Description of an INFO frame (text fields always NUL-terminated).
- *  @return FNAV_OK or FNAV_E_FORMAT. */
+ *  @return FNAV_OK, FNAV_E_FORMAT, or FNAV_E_RANGE when the rate is not a
+ *  number in [0, 1e6] Hz (0: unknown; the .bin header's range; *info
+ *  unchanged). */
 FNAV_WARN_UNUSED fnav_status_t fnav_wire_parse_info(const fnav_wire_frame_t *f, fnav_wire_info_t *info);
 
 /** Sample count of an END frame. @return FNAV_OK or FNAV_E_FORMAT. */

@@ -1,0 +1,63 @@
+"""Byte streams of misbehaving senders for tests/cli/test_live.sh (framing
+from vectors/wire/gen_wire.py, the protocol's independent Python model).
+
+usage: wire_cases.py CASE OUT
+  restart   500 samples, then the sender restarts (time and sequence from 0)
+            and sends 5 more and an END
+  range     300 samples, the 100th with an acceleration of 1e20 m/s^2
+  badrate   an INFO frame whose rate is NaN, then 300 samples and an END
+  navonly   an INFO frame and 300 NAV frames (an on-sensor filter's output)
+"""
+import math
+import os
+import struct
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'vectors', 'wire'))
+from gen_wire import frame, sample_payload, nav_payload, text, SAMPLE, NAV, INFO, END  # noqa: E402
+
+DT_NS = 2500000  # 400 Hz
+
+
+def info(rate):
+    return frame(INFO, 0, struct.pack('<dI', rate, 4) + text('test sender', 32) + text('', 48))
+
+
+def still(k, t0_ns=0):
+    return sample_payload(t0_ns + k * DT_NS, k, 2, (0.0, 0.0, 9.81), (0.0, 0.0, 0.0), 0.0)
+
+
+def samples(n, seq0=1, t0_ns=0):
+    return b''.join(frame(SAMPLE, (seq0 + k) & 0xffff, still(k, t0_ns)) for k in range(n))
+
+
+def end(seq, count):
+    return frame(END, seq & 0xffff, struct.pack('<I', count))
+
+
+def main():
+    case, out = sys.argv[1], sys.argv[2]
+    if case == 'restart':
+        b = info(400.0) + samples(500, 1, 10 * 10**9) + info(400.0) + samples(5, 1, 0) + end(6, 5)
+    elif case == 'range':
+        b = info(400.0)
+        for k in range(300):
+            p = still(k)
+            if k == 99:
+                p = sample_payload(k * DT_NS, k, 2, (1e20, 0.0, 9.81), (0.0, 0.0, 0.0), 0.0)
+            b += frame(SAMPLE, k + 1, p)
+        b += end(301, 300)
+    elif case == 'badrate':
+        b = info(math.nan) + samples(300) + end(301, 300)
+    elif case == 'navonly':
+        b = info(400.0) + b''.join(
+            frame(NAV, k + 1, nav_payload(k * DT_NS, k, 1, 0, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)))
+            for k in range(300))
+    else:
+        sys.exit('unknown case ' + case)
+    with open(out, 'wb') as f:
+        f.write(b)
+
+
+if __name__ == '__main__':
+    main()
