@@ -590,7 +590,7 @@ int hx_cmd_live(int argc, char **argv)
     }
     /* the frames the detector still holds, as replay does at the end */
     nav_finish(&L);
-    if (L.csv != NULL && L.csv != stdout && fclose(L.csv) != 0) {
+    if (L.csv != NULL && (L.csv == stdout ? fflush(L.csv) != 0 || ferror(L.csv) : fclose(L.csv) != 0)) {
         L.csv_failed = 1;
     }
     if (L.csv_failed && out_path != NULL) {

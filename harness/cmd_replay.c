@@ -94,8 +94,8 @@ int hx_cmd_replay(int argc, char **argv)
         len += (size_t)snprintf(cmdline + len, sizeof cmdline - len, " %s", argv[i]);
     }
     rc = hx_nav_replay("replay", a.pos[0], fmt, in_rate, &cfg, o.rate_hz, csv, &traj, 1, err, sizeof err);
-    if (csv != NULL && csv != stdout && fclose(csv) != 0 && rc >= 0) {
-        hx_error("replay", "cannot write %s", out_path);
+    if (csv != NULL && (csv == stdout ? fflush(csv) != 0 || ferror(csv) : fclose(csv) != 0) && rc >= 0) {
+        snprintf(err, sizeof err, "cannot write %s", strcmp(out_path, "-") == 0 ? "standard output" : out_path);
         rc = -3;
     }
     if (rc == -1) {

@@ -68,7 +68,8 @@ static fnav_status_t linux_write_nav(void *ctx, const fnav_nav_frame_t *f)
     for (i = 0; i < 3; i++) {
         fprintf(c->nav_csv, ",%.4f", (double)f->lever_m[i]);
     }
-    if (fputc('\n', c->nav_csv) == EOF) {
+    /* a full disk shows when the buffer is flushed: ferror is sticky */
+    if (fputc('\n', c->nav_csv) == EOF || ferror(c->nav_csv)) {
         return FNAV_E_IO;
     }
     c->frames++;

@@ -137,6 +137,15 @@ expect_exit 2 "--json - with --out -" "$H" replay vectors/walk.bin --out - --jso
 expect_err "cannot both write to standard output" "--json - and --out - refused"
 if [ -e ./- ]; then fail "a file named '-' was created"; rm -f ./-; else pass "no file named '-'"; fi
 
+# --- a trajectory that cannot be written (a full disk): exit 3 with the
+# reason, to a file and to standard output
+if [ -w /dev/full ]; then
+    expect_exit 3 "--out to a full disk" "$H" replay vectors/walk.bin --out /dev/full --quiet
+    expect_err "cannot write the trajectory" "a full disk is reported"
+    "$H" replay vectors/walk.bin --out - >/dev/full 2>"$T/err"; rc=$?
+    if [ "$rc" -eq 3 ] && grep -q "cannot write" "$T/err"; then pass "--out - to a full disk: exit 3"; else fail "--out - to a full disk: exit $rc"; cat "$T/err"; fi
+fi
+
 # --- bad input: a NaN in the middle; the frames before are written, exit 1
 head -2001 vectors/nav/golden/gx2_walk2.csv > "$T/bad.csv"
 echo "8.1,nan,0,9.8,0,0,0" >> "$T/bad.csv"
