@@ -244,6 +244,7 @@ firmware-bench: $(BENCH_ELF) $(FW_HOSTREF) $(HARNESS)
 	  echo "firmware-bench: harness replay of the slice failed (status $$st)"; exit 1; fi
 	@$(PYTHON) port/cortex-m/tools/bench_compare.py $(ARM_BUILD)/bench.txt $(ARM_BUILD)/bench-host.txt \
 	  --replay $(ARM_BUILD)/bench-replay.csv
+	@sh tests/m4/ticks.sh
 
 # ---------------------------------------------------------------- bench
 bench: $(HARNESS) $(BENCH_BINS)

@@ -15,8 +15,12 @@ void fnav_cm_sample_isr(fnav_cm_port_ctx_t *ctx)
 #define SYST_CSR (*(volatile uint32_t *)0xE000E010u)
 #define SYST_RVR (*(volatile uint32_t *)0xE000E014u)
 #define SYST_CVR (*(volatile uint32_t *)0xE000E018u)
+#define SCB_ICSR (*(volatile uint32_t *)0xE000ED04u)
+#define ICSR_PENDSTSET (1u << 26) /* SysTick exception pending (ARMv7-M ARM, B3.2.4) */
 
-static volatile uint32_t g_systick_ms;  /* 1 ms interrupts since start */
+/* 1 ms interrupts since start: 64 bits (32 wrap after 49.7 days, and the
+ * navigator then refuses every sample as going back in time) */
+static volatile uint64_t g_systick_ms;
 static uint32_t g_systick_reload;       /* core clocks per ms - 1 */
 static uint32_t g_systick_hz;
 
@@ -30,23 +34,46 @@ void fnav_cm_systick_start(uint32_t core_hz)
     SYST_CSR = 0x7u; /* processor clock, interrupt, enable */
 }
 
-/* Weak: a board that needs SysTick for something else replaces it. */
-FNAV_CM_WEAK void SysTick_Handler(void);
-FNAV_CM_WEAK void SysTick_Handler(void)
+void fnav_cm_systick_tick(void)
 {
     g_systick_ms++;
 }
 
+#if !defined(FNAV_CM_OWN_SYSTICK)
+/* Strong: the startup file's weak alias of the default handler must lose
+ * whatever the link order (with two weak definitions the first linked
+ * wins, and the first SysTick would halt on the default handler). */
+void SysTick_Handler(void);
+void SysTick_Handler(void)
+{
+    fnav_cm_systick_tick();
+}
+#endif
+
 FNAV_CM_WEAK int64_t fnav_cm_ticks_ns(void)
 {
-    uint32_t ms, cvr;
+    uint64_t ms;
+    uint32_t cvr, cvr_after;
+    int pending;
     if (g_systick_hz == 0u) {
         return 0;
     }
-    do { /* re-read if the millisecond interrupt hit in between */
+    do { /* re-read if the millisecond interrupt ran in between */
         ms = g_systick_ms;
         cvr = SYST_CVR;
+        pending = (SCB_ICSR & ICSR_PENDSTSET) != 0u;
+        cvr_after = SYST_CVR;
     } while (ms != g_systick_ms);
+    if (pending) {
+        /* The counter wrapped and its interrupt has not run: we are in an
+         * interrupt of the same or higher priority (the sample-ready
+         * handler stamping a sample), or interrupts are masked. The wrap
+         * came before the pending bit was read, so the reading after it
+         * belongs to the next millisecond. (Two wraps, over 1 ms inside one
+         * handler, cannot be told apart.) */
+        ms++;
+        cvr = cvr_after;
+    }
     return (int64_t)ms * 1000000 +
            (int64_t)(g_systick_reload - cvr) * 1000000000 / (int64_t)g_systick_hz;
 }

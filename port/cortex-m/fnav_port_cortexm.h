@@ -15,6 +15,7 @@
  *   - fnav_cm_ticks_ns(): a monotonic time base (default: the SysTick time
  *     base of fnav_cm_systick_start(), 0 until it is started),
  *   - fnav_cm_out_write(): send the bytes of one frame, e.g. by UART DMA
+ *     from a copy (the port reuses its buffer: see below)
  *     (default: discard),
  *   - fnav_cm_idle(): wait for the next interrupt (default: WFI).
  * The code is portable C apart from the ARM-only parts guarded by
@@ -55,8 +56,15 @@ fnav_status_t fnav_cm_port_send_status(fnav_cm_port_ctx_t *ctx, const fnav_wire_
 fnav_status_t fnav_cm_port_send_info(fnav_cm_port_ctx_t *ctx, const fnav_wire_info_t *info);
 
 /** Start a SysTick time base: a 1 ms interrupt from the core clock
- *  @p core_hz (ARM only; does nothing on the host). */
+ *  @p core_hz (ARM only; does nothing on the host). The port defines
+ *  SysTick_Handler; a board that needs SysTick for itself builds the port
+ *  with -DFNAV_CM_OWN_SYSTICK and calls fnav_cm_systick_tick() from its own
+ *  handler once per millisecond. fnav_cm_ticks_ns() is right in any
+ *  context, the sample-ready interrupt included (a wrap whose interrupt is
+ *  still pending is counted), and 64-bit milliseconds do not wrap. */
 void fnav_cm_systick_start(uint32_t core_hz);
+/** One millisecond of the SysTick time base (called by SysTick_Handler). */
+void fnav_cm_systick_tick(void);
 
 /* Weak hardware hooks (override in the board support code). */
 /** Board set-up; called once by the reference main() before the loop. */
@@ -65,7 +73,11 @@ void fnav_cm_board_init(void);
 int fnav_cm_imu_read(fnav_sample_t *s);
 /** Monotonic time, ns. */
 int64_t fnav_cm_ticks_ns(void);
-/** Send n bytes (one whole frame). 0 ok, -1 busy (the frame is dropped and counted). */
+/** Send n bytes (one whole frame). 0 ok, -1 busy (the frame is dropped and
+ *  counted). The bytes are in the port's single transmit buffer, which the
+ *  next frame's encoding overwrites: the hook must copy them (into its DMA
+ *  buffer or a FIFO) or finish sending before it returns. A DMA reading
+ *  these bytes after the return would send a mix of two frames. */
 int fnav_cm_out_write(const void *bytes, uint32_t n);
 /** Sleep until the next interrupt. */
 void fnav_cm_idle(void);
