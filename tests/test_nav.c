@@ -146,14 +146,20 @@ static void test_stream_contract(void **state)
     assert_true(fabs((double)fr.euler_rad[0]) < 1e-3 && fabs((double)fr.euler_rad[1]) < 1e-3);
 }
 
-/* Duplicates (dt = 0), gaps (> 1.5 intervals), time jumps (> max_gap_s). */
+/* Duplicates (dt = 0), gaps (> 1.5 intervals), time jumps (> max_gap_s).
+ * The motion inside a time jump is unknown: its frame is propagated over
+ * the nominal interval 1 / rate, not over the 1.005 s of the stamps. The
+ * filter's cached AR(1) interval (fnav_ukf_t.ar1_dt_s, the dt of the last
+ * prediction whose interval changed) shows which interval was used at the
+ * jump's frame. */
 static void test_timing(void **state)
 {
     static fnav_nav_t nav;
     fnav_nav_config_t c = fnav_nav_config_default;
     fnav_nav_frame_t fr;
-    long k, n = 800, frames = 0;
+    long k, n = 1400, frames = 0;
     int64_t shift = 0;
+    int jump_seen = 0;
     (void)state;
     c.stance.rate_hz = FNAV_R(200.0);
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
@@ -162,8 +168,10 @@ static void test_timing(void **state)
         if (k == 400) {
             shift += 10000000; /* a 15 ms interval: gap */
         }
-        if (k == 500) {
-            shift += 1000000000; /* a 1 s interval: time jump */
+        if (k == 1200) {
+            /* a 1 s interval: time jump, after the alignment (5 s of the
+             * still foot: the alignment's max_still_s) */
+            shift += 1000000000;
         }
         s.t_ns += shift;
         assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
@@ -172,12 +180,25 @@ static void test_timing(void **state)
         }
         while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
             frames++;
+            if (fr.seq == 1200u) {
+                /* the jump's frame: aligned and predicted (the still foot
+                 * is stance: a ZUPT follows), over the nominal 5 ms. The
+                 * two ways of forming 5 ms in fnav_real_t (5e6 ns * 1e-9
+                 * and 1 / 200) differ by a rounding at most: 2 eps
+                 * relative; a 1.005 s interval differs by a factor 201 */
+                jump_seen = 1;
+                assert_true(fr.flags & FNAV_FRAME_ALIGNED);
+                assert_true(fr.flags & FNAV_FRAME_ZUPT);
+                assert_true(fr.health & FNAV_HEALTH_TIME_JUMP);
+                FNAV_ASSERT_CLOSE(nav.ukf.ar1_dt_s, 1.0 / 200.0, 0.0, 2.0 * (double)FNAV_REAL_EPSILON);
+            }
         }
     }
     fnav_nav_finish(&nav);
     while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
         frames++;
     }
+    assert_true(jump_seen);
     assert_int_equal(frames, n + 2);
     assert_int_equal(nav.stats.duplicates, 2);
     assert_int_equal(nav.stats.gaps, 1);
