@@ -216,7 +216,10 @@ static void test_ring_contract(void **state)
 /* Synthetic steps at 200 Hz: still (f = -g z, w = 0, tiny noise), then a
  * swing of 0.5 s with |w| ~ 3 rad/s, then still again. The stance must end
  * and start within half a window of the motion, every still sample farther
- * than that from the motion must be stance, and the stride is counted. */
+ * than that from the motion must be stance, and the stride is counted.
+ * The segmentation turns to swing at the frame where the swing run reaches
+ * min_swing_s: round(0.25 s x 200 Hz) = 50 frames, so the 50th frame of the
+ * run (its first + 49) is the first with segment_stance 0. */
 static void test_step_boundaries(void **state)
 {
     fnav_stance_t st;
@@ -224,8 +227,11 @@ static void test_step_boundaries(void **state)
     fnav_stance_out_t o;
     const double rate = 200.0;
     long k, n = 400, m0 = 150, m1 = 250; /* motion in [m0, m1) */
-    int strides = 0;
+    long run0 = -1, swing_run0 = -1, seg_off = -1, n_min_swing;
+    int strides = 0, prev_stance = 1;
     (void)state;
+    n_min_swing = lround((double)c.min_swing_s * rate);
+    assert_int_equal(n_min_swing, 50);
     c.rate_hz = (fnav_real_t)rate;
     assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
     for (k = 0; k <= n; k++) {
@@ -260,6 +266,16 @@ static void test_step_boundaries(void **state)
             if (j >= m0 + 50 && j < m1) {
                 assert_int_equal(o.segment_stance, 0);
             }
+            if (!o.stance && prev_stance) {
+                run0 = j; /* a swing run starts */
+            }
+            prev_stance = o.stance;
+            if (j == m0) {
+                swing_run0 = run0; /* the run the motion is in */
+            }
+            if (!o.segment_stance && seg_off < 0) {
+                seg_off = j;
+            }
             if (o.events & FNAV_STANCE_EV_STRIDE) {
                 strides++;
             }
@@ -267,6 +283,8 @@ static void test_step_boundaries(void **state)
     }
     assert_int_equal(strides, 1);
     assert_int_equal(st.strides, 1);
+    assert_true(swing_run0 >= m0 - 2 && swing_run0 <= m0);
+    assert_int_equal(seg_off, swing_run0 + n_min_swing - 1);
 }
 
 /* A dip of the statistic below the threshold for fewer samples than
