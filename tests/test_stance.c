@@ -420,6 +420,60 @@ static void test_threshold_detector(void **state)
     }
 }
 
+/* Threshold detector: the two normalised mean squares (rate and ||f| - g|,
+ * each over its limit squared) are combined by their maximum, so stance
+ * means both RMS values are below their limits. A window with both at
+ * 0.8 of their limits (a constant 0.48 rad/s, ||f| - g| = 0.48 m/s^2) has
+ * both ratios 0.64: stance; their sum (1.28) would not be. */
+static void test_threshold_both_below(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    fnav_stance_out_t o;
+    double f[3], w[3] = { 0.0, 0.0, 0.0 }, e, sa, sg, expect;
+    long k, frames = 0;
+    (void)state;
+    c.detector = FNAV_DETECTOR_THRESHOLD;
+    c.rate_hz = FNAV_R(100.0);
+    c.adaptive = 0;
+    w[0] = 0.8 * (double)c.gyro_thresh_rps;
+    f[0] = 0.0;
+    f[1] = 0.0;
+    f[2] = -(k_g + 0.8 * (double)c.accel_thresh_mps2);
+    /* the expected ratios in double from the values the detector sees
+     * (fnav_real_t inputs and limits) */
+    e = fabs((double)(fnav_real_t)f[2]) - (double)c.gravity_mps2;
+    sa = e * e / ((double)c.accel_thresh_mps2 * (double)c.accel_thresh_mps2);
+    sg = (double)(fnav_real_t)w[0] * (double)(fnav_real_t)w[0] / ((double)c.gyro_thresh_rps * (double)c.gyro_thresh_rps);
+    expect = sa > sg ? sa : sg;
+    /* 0.64 each, up to the rounding of the inputs to fnav_real_t: half an
+     * ulp of 10.29 m/s^2 (4.8e-7 in float32) moves e = 0.48 by that and the
+     * ratio e^2 / 0.36 by 2 x 0.48 x 4.8e-7 / 0.36 = 1.3e-6 */
+    FNAV_ASSERT_CLOSE(sa, 0.64, 2e-6, 0.0);
+    FNAV_ASSERT_CLOSE(sg, 0.64, 2e-6, 0.0);
+    assert_true(expect < 1.0 && sa + sg > 1.0); /* max: stance; a sum would not be */
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k <= 100; k++) {
+        if (k < 100) {
+            fnav_sample_t s = sample(k, 100.0, f, w);
+            assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        } else {
+            fnav_stance_finish(&st);
+        }
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            /* |f| - g in fnav_real_t: the norm is good to 2 eps of 10.3,
+             * which is 21 times the difference 0.48 (42 eps relative in
+             * e, 86 after squaring), plus a few roundings of the window's
+             * sums and the divisions: 100 eps relative */
+            FNAV_ASSERT_CLOSE(o.stat, expect, 0.0, 100.0 * EPS);
+            assert_int_equal(o.raw_stance, 1);
+            assert_int_equal(o.stance, 1);
+            frames++;
+        }
+    }
+    assert_int_equal(frames, 100);
+}
+
 /* Gait events: a push-off peak of |f| at a known sample after the stance
  * ends is the foot-off; a jerk onset before the stance begins is the
  * foot-strike. */
@@ -623,6 +677,7 @@ int main(void)
         cmocka_unit_test(test_short_dip_rejected),
         cmocka_unit_test(test_adaptive_threshold),
         cmocka_unit_test(test_threshold_detector),
+        cmocka_unit_test(test_threshold_both_below),
         cmocka_unit_test(test_gait_events),
         cmocka_unit_test(test_foot_strike_reference),
         cmocka_unit_test(test_foot_strike_long_min_stance),
