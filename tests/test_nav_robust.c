@@ -51,6 +51,9 @@ typedef struct {
     int64_t dt_ns;
     long frames, aligned_frames;
     fnav_nav_frame_t last;
+    fnav_nav_frame_t last_aligned;  /* the newest ALIGNED frame */
+    fnav_nav_frame_t first_aligned; /* the first ALIGNED frame after one that was not */
+    long align_starts;              /* frames that turned ALIGNED */
 } run_t;
 
 static void init(run_t *r, double rate_hz)
@@ -81,6 +84,13 @@ static void push(run_t *r, const double a[3], const double w[3])
         check_frame(&f);
         r->frames++;
         r->aligned_frames += (f.flags & FNAV_FRAME_ALIGNED) != 0u;
+        if ((f.flags & FNAV_FRAME_ALIGNED) != 0u) {
+            if (r->frames == 1 || (r->last.flags & FNAV_FRAME_ALIGNED) == 0u) {
+                r->first_aligned = f;
+                r->align_starts++;
+            }
+            r->last_aligned = f;
+        }
         r->last = f;
     }
 }
@@ -100,8 +110,9 @@ static void still(run_t *r, double seconds)
 static void test_divergence_reset(void **state)
 {
     run_t r;
-    long i;
+    long i, starts;
     fnav_vec3_t before;
+    fnav_nav_frame_t held;
     (void)state;
     init(&r, 200.0);
     still(&r, 6.0); /* alignment completes after at most 5 s of stillness */
@@ -115,6 +126,14 @@ static void test_divergence_reset(void **state)
     }
     assert_true(g_nav.stats.resets >= 1u);
     assert_true(g_nav.health & FNAV_HEALTH_RESET);
+    /* the last good frame: the newest ALIGNED one, held by the reset; its
+     * position variance grew over the unaided motion far above the start
+     * value 0.001^2 m^2 of a fresh alignment */
+    held = r.last_aligned;
+    starts = r.align_starts;
+    for (i = 0; i < 3; i++) {
+        assert_true(held.p_diag[6 + i] > FNAV_R(1.0e-6));
+    }
     /* while re-aligning, frames hold a position near where it was before the
      * acceleration began (the last good frame's) and are not ALIGNED */
     assert_false(r.last.flags & FNAV_FRAME_ALIGNED);
@@ -123,6 +142,22 @@ static void test_divergence_reset(void **state)
         fnav_vec3_t hold = fnav_vec3(r.last.pos_m[0], r.last.pos_m[1], r.last.pos_m[2]);
         still(&r, 6.0);
         assert_true(r.last.flags & FNAV_FRAME_ALIGNED); /* re-aligned */
+        /* the re-aligned filter keeps the held position variance: at its
+         * first frame (aligned on the still samples before it: no
+         * prediction, no ZUPT yet) the variance is the held one exactly,
+         * not the fresh 0.001^2 m^2; a smaller one would claim the
+         * position is better known after the divergence than before it */
+        assert_int_equal(r.align_starts, starts + 1);
+        assert_true(r.first_aligned.flags & FNAV_FRAME_STANCE);
+        assert_false(r.first_aligned.flags & FNAV_FRAME_ZUPT);
+        for (i = 0; i < 3; i++) {
+            assert_true(r.first_aligned.p_diag[6 + i] == held.p_diag[6 + i]);
+            /* and 6 s later: the position enters neither the dynamics of
+             * the other states nor a ZUPT, so the held position error is
+             * independent of every measurement and stays in the variance,
+             * which the motion noise only adds to */
+            assert_true(r.last.p_diag[6 + i] >= held.p_diag[6 + i]);
+        }
         FNAV_ASSERT_CLOSE(r.last.pos_m[0], hold.v[0], 0.05, 0.0);
         FNAV_ASSERT_CLOSE(r.last.pos_m[1], hold.v[1], 0.05, 0.0);
         assert_true(fnav_vec3_norm(fnav_vec3(r.last.vel_mps[0], r.last.vel_mps[1], r.last.vel_mps[2])) < FNAV_R(0.1));
