@@ -478,6 +478,55 @@ static void test_realign(void **state)
     }
 }
 
+/* A renewal on a still frame: a foot that stands 11 s. The alignment
+ * completes at 5 s (max_still_s) and the renewal's still period, starting
+ * at the next sample, reaches max_still_s about 5 s later while the foot
+ * still stands: the filter restarts at that stance frame on the still
+ * samples before it, as at the first alignment, so that frame is neither
+ * predicted nor updated. Its position variance is exactly the start value,
+ * max(held variance, 0.001^2 m^2) (fnav_nav.c start_filter): a prediction
+ * over the frame's interval would add to it. */
+static void test_realign_still_frame(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr, prev;
+    const fnav_real_t start_var = FNAV_R(0.001) * FNAV_R(0.001); /* start_filter's sd.pos_m^2 */
+    long k;
+    int renewals = 0, have_prev = 0;
+    (void)state;
+    c.stance.rate_hz = FNAV_R(200.0);
+    assert_true(c.realign_min_s > FNAV_R(0.0) && c.realign_min_s <= c.align.max_still_s);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    memset(&prev, 0, sizeof prev);
+    for (k = 0; k < 2200; k++) {
+        fnav_sample_t s = renew_walk(k); /* still up to 10 s (sample 2000) */
+        if (k >= 2000) {
+            s = still(k);
+            s.gyro_rps[2] = FNAV_R(0.004);
+        }
+        assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+        while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+            if ((int)nav.stats.realigned > renewals) {
+                int i;
+                renewals = (int)nav.stats.realigned;
+                assert_true(have_prev && (prev.flags & FNAV_FRAME_ALIGNED) != 0u);
+                assert_true(fr.flags & FNAV_FRAME_STANCE);
+                assert_false(fr.flags & FNAV_FRAME_ZUPT);
+                for (i = 0; i < 3; i++) {
+                    fnav_real_t held = prev.p_diag[6 + i];
+                    fnav_real_t expect = held > start_var ? held : start_var;
+                    assert_true(fr.p_diag[6 + i] == expect);
+                }
+            }
+            prev = fr;
+            have_prev = 1;
+        }
+    }
+    assert_int_equal(renewals, 1);
+    assert_true(nav.stats.strides == 0u);
+}
+
 /* Memory: the filter object within 8 KB in float32 (the limit). */
 static void test_sizes(void **state)
 {
@@ -711,6 +760,7 @@ int main(void)
         cmocka_unit_test(test_settle_onsets),
         cmocka_unit_test(test_settle_not_at_alignment),
         cmocka_unit_test(test_realign),
+        cmocka_unit_test(test_realign_still_frame),
         cmocka_unit_test(test_sizes),
         cmocka_unit_test(test_resampler),
         cmocka_unit_test(test_golden_replays),
