@@ -1,6 +1,7 @@
 /* Tests of the streaming Welch PSD and the bandwidth rule (src/fnav_welch.c)
- * against scipy.signal.welch vectors (vectors/welch/gen_welch.py) and
- * analytic cases. */
+ * against scipy.signal.welch vectors (vectors/welch/gen_welch.py), the last
+ * segment's spectrum with the global-mean detrending against
+ * scipy.signal.periodogram, and analytic cases. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -200,6 +201,84 @@ static void test_against_scipy(void **state)
     fprintf(stderr, "[  INFO    ] %s build: worst per-bin error vs scipy %.2g relative to the bin, %.2g relative "
                     "to the largest bin\n",
             FNAV_USE_DOUBLE ? "double" : "float", worst, worst_peak);
+}
+
+/* fnav_welch_last with the global-mean detrending against scipy
+ * (vectors/welch/welch_last_expected.csv, gen_welch.py): after the whole
+ * input is pushed, the last segment's spectrum is that of the segment less
+ * the mean of every sample pushed, scipy.signal.periodogram(seg - x.mean(),
+ * detrend=False). Bins 0 and 1 are the ones the mean correction changes
+ * (the periodic window's DFT is zero beyond bin 1). The tolerances of
+ * test_against_scipy apply: the same input rounding and offset, one
+ * segment's arithmetic instead of an average of several. */
+static void test_last_global_against_scipy(void **state)
+{
+    static double synth[6000], os820[9000];
+    static fnav_welch_t w;
+    static fnav_real_t psd[FNAV_WELCH_MAX_BINS];
+    static double expect[FNAV_WELCH_MAX_BINS];
+    char path[512], line[256];
+    size_t nsyn, nos, i;
+    FILE *f;
+    int ncases = 0;
+    vcase_t c, cur;
+    (void)state;
+    nsyn = read_series("welch/welch_input_synth.txt", synth, 6000);
+    nos = read_series("welch/welch_input_os820.txt", os820, 9000);
+    assert_int_equal(nsyn, 5000);
+    assert_int_equal(nos, 8192);
+    assert_int_equal(fnav_vector_path("welch/welch_last_expected.csv", path, sizeof path), 0);
+    f = fopen(path, "r");
+    assert_non_null(f);
+    memset(&cur, 0, sizeof cur);
+    while (1) {
+        char *got = fgets(line, sizeof line, f);
+        int is_case = got != NULL && parse_case(line, &c);
+        if ((got == NULL || is_case) && cur.nbins > 0) {
+            fnav_welch_config_t cfg;
+            const double *x = strcmp(cur.input, "synth") == 0 ? synth : os820;
+            const size_t n = strcmp(cur.input, "synth") == 0 ? nsyn : nos;
+            double peak = 0.0;
+            assert_string_equal(cur.detrend, "global");
+            config_of(&cur, &cfg);
+            assert_int_equal(fnav_welch_init(&w, &cfg), FNAV_OK);
+            for (i = 0; i < n; i++) {
+                assert_int_equal(fnav_welch_push(&w, (fnav_real_t)x[i]), FNAV_OK);
+            }
+            assert_int_equal(fnav_welch_segments(&w), (n - cur.nfft) / (cur.nfft - cur.overlap) + 1u);
+            assert_int_equal(fnav_welch_bins(&w), cur.nbins);
+            assert_int_equal(fnav_welch_last(&w, psd, FNAV_WELCH_MAX_BINS), FNAV_OK);
+            for (i = 0; i < cur.nbins; i++) {
+                peak = expect[i] > peak ? expect[i] : peak;
+            }
+            for (i = 0; i < cur.nbins; i++) {
+                const double e = fabs((double)psd[i] - expect[i]);
+                if (!(e <= BIN_REL * expect[i] || e <= PEAK_REL * peak)) {
+                    fprintf(stderr, "last segment, case %s bin %zu: %.9g vs %.9g\n", cur.name, i, (double)psd[i],
+                            expect[i]);
+                    fail();
+                }
+            }
+            ncases++;
+            cur.nbins = 0;
+        }
+        if (got == NULL) {
+            break;
+        }
+        if (is_case) {
+            cur = c;
+            continue;
+        }
+        if (line[0] != '#' && cur.nbins > 0) {
+            unsigned k;
+            double v;
+            assert_int_equal(sscanf(line, "%u,%lf", &k, &v), 2);
+            assert_true(k < cur.nbins);
+            expect[k] = v;
+        }
+    }
+    fclose(f);
+    assert_int_equal(ncases, 3);
 }
 
 /* The mean of the per-segment spectra (fnav_welch_last) is the Welch average. */
@@ -404,6 +483,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_against_scipy),
         cmocka_unit_test(test_last_segment_average),
+        cmocka_unit_test(test_last_global_against_scipy),
         cmocka_unit_test(test_parseval),
         cmocka_unit_test(test_bandwidth_analytic),
         cmocka_unit_test(test_config_and_bad_input),

@@ -14,6 +14,14 @@ of the total power by the rule of docs/psd.md (bin k holds P_k df over
 [(k-1/2) df, (k+1/2) df], linear interpolation where the cumulative power
 crosses the threshold), written here independently with numpy.
 
+welch_last_expected.csv: for each "global" case, the spectrum of the last
+full segment alone (fnav_welch_last after every sample of the input was
+pushed): scipy.signal.periodogram(seg - x.mean(), window, detrend=False,
+same scaling, one-sided), seg the last segment that fits (start
+(K - 1) (nperseg - noverlap), K segments) and x.mean() the mean of the
+whole input (the samples pushed so far). Same line format as
+welch_expected.csv, without band lines.
+
 --check regenerates and compares with the committed files (relative 1e-12).
 --write-os820 re-extracts the real-data excerpt (needs ../shared/data).
 """
@@ -25,6 +33,7 @@ import scipy.signal as sig
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 OUT = os.path.join(HERE, "welch_expected.csv")
+OUT_LAST = os.path.join(HERE, "welch_last_expected.csv")
 SYN = os.path.join(HERE, "welch_input_synth.txt")
 OS8 = os.path.join(HERE, "welch_input_os820.txt")
 
@@ -99,6 +108,18 @@ def bandwidth(p, df, thr, round_hz, exclude_dc):
     return bw, np.ceil(fs / round_hz) * round_hz
 
 
+def last_segment(x, fs, n, nov, win, sym, detrend, scaling):
+    """Periodogram of the last full segment less the whole record's mean
+    (fnav_welch_last with the global-mean detrending)."""
+    assert detrend == "global"
+    w = window(win, n, sym)
+    k = (len(x) - n) // (n - nov) + 1  # segments
+    s = (k - 1) * (n - nov)
+    f, p = sig.periodogram(x[s:s + n] - x.mean(), fs=fs, window=w, nfft=n, detrend=False, return_onesided=True,
+                           scaling=scaling)
+    return f, p
+
+
 def read(path):
     return np.array([float(l) for l in open(path) if l.strip() and not l.startswith("#")])
 
@@ -118,7 +139,16 @@ def generate():
         p, df = spectra[name]
         bw, fsr = bandwidth(p, df, thr, rnd, ex)
         lines.append("band,%s,%.17g,%.17g,%d,%.17e,%.17g\n" % (name, thr, rnd, ex, bw, fsr))
-    return lines
+    last = ["# scipy %s numpy %s: scipy.signal.periodogram of the last segment less the record's mean (one-sided)\n"
+            % (scipy.__version__, np.__version__)]
+    for name, inp, fs, n, nov, win, sym, det, sc in CASES:
+        if det != "global":
+            continue
+        f, p = last_segment(inputs[inp], fs, n, nov, win, sym, det, sc)
+        last.append("case,%s,%s,%.17g,%d,%d,%s,%d,%s,%s,%d\n" % (name, inp, fs, n, nov, win, sym, det, sc, len(p)))
+        for k, v in enumerate(p):
+            last.append("%d,%.17e\n" % (k, v))
+    return lines, last
 
 
 def compare(old, new):
@@ -151,15 +181,19 @@ def main():
             f.write("# synthetic: 9.81 + 0.7 sin(0.0377 k) + 0.2 sin(1.3 k + 0.4) + (u - 0.5), u from a 64-bit LCG\n")
             for v in synth():
                 f.write("%.17g\n" % v)
-    lines = generate()
+    lines, last = generate()
     if "--check" in sys.argv:
-        err = compare(open(OUT).readlines(), lines)
-        if err:
-            print("gen_welch:", err)
-            return 1
-        return 0
+        status = 0
+        for path, new in ((OUT, lines), (OUT_LAST, last)):
+            err = compare(open(path).readlines(), new) if os.path.exists(path) else "missing"
+            if err:
+                print("gen_welch: %s: %s" % (os.path.basename(path), err))
+                status = 1
+        return status
     with open(OUT, "w") as f:
         f.writelines(lines)
+    with open(OUT_LAST, "w") as f:
+        f.writelines(last)
     return 0
 
 
