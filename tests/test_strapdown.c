@@ -87,6 +87,17 @@ static void test_constant_rotation(void **state)
                                                             (fnav_real_t)(w[2] * T))));
     /* the total angle is 25.6 rad: one ulp of that is the floor of the reference */
     assert_true(quat_angle_between(x.q_nb, qt) < 4.0 * EPS * n + 30.0 * EPS);
+    /* the attitude stays a unit quaternion: each step's Newton
+     * renormalisation takes a norm error e to 1.5 e^2 plus the rounding of
+     * the norm and the scaling (a few ulp), so after any number of steps
+     * |q| is within a few ulp of 1 (1e-6 is 8 float32 ulp); the angle check
+     * above cannot see the norm, which quat_angle_between divides out */
+    {
+        const fnav_quat_t q = x.q_nb;
+        const double nq = sqrt((double)q.q[0] * (double)q.q[0] + (double)q.q[1] * (double)q.q[1] +
+                               (double)q.q[2] * (double)q.q[2] + (double)q.q[3] * (double)q.q[3]);
+        FNAV_ASSERT_CLOSE(nq, 1.0, 1e-6, 0.0);
+    }
 }
 
 /* Constant acceleration a in n with a tilted constant attitude:
