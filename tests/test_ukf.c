@@ -248,6 +248,52 @@ static void test_linear_covariance(void **state)
     }
 }
 
+/* AR(1) biases without updates: the estimated bias's offset from its
+ * mean (the alignment value) decays as c^k = exp(-k dt / tau) over k
+ * predictions, and its variance follows P' = c^2 P + sigma^2 (1 - c^2),
+ * i.e. P_k = sigma^2 + (P_0 - sigma^2) c^(2k) (paper eqs. (3), (4)); both
+ * computed here in double. Over 5 s the gyro x, y biases (tau 5 s) fall to
+ * e^-1, the accelerometer's (tau 10 s) to e^-0.5. Rounding: c is rounded
+ * once (EPS / 2 relative, repeated k times) and each step rounds the
+ * product once, so the mean is within k EPS relative; the variance's
+ * factorisation and scatter round each step by a few EPS (a square root,
+ * squares and sums of positive terms): 5 k EPS relative. */
+static void test_ar1_decay(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const double offg[3] = { 0.01, -0.02, 0.005 }, offa[3] = { 0.05, -0.03, 0.02 };
+    const fnav_real_t dt = FNAV_R(0.01);
+    const int k = 500;
+    int i, j;
+    (void)state;
+    assert_int_equal(c.bias_model, FNAV_BIAS_AR1);
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    for (i = 0; i < 3; i++) {
+        f.bg_rps.v[i] = (fnav_real_t)offg[i]; /* the mean bg0 is 0 */
+        f.ba_mps2.v[i] = (fnav_real_t)offa[i];
+    }
+    for (j = 0; j < k; j++) {
+        assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g), dt),
+                         FNAV_OK);
+    }
+    for (i = 0; i < 3; i++) {
+        const double cg = exp(-(double)dt / (double)c.gyro_tau_s[i]), ca = exp(-(double)dt / (double)c.accel_tau_s[i]);
+        const double sg2 = (double)c.gyro_bias_sigma_rps[i] * (double)c.gyro_bias_sigma_rps[i];
+        const double sa2 = (double)c.accel_bias_sigma_mps2[i] * (double)c.accel_bias_sigma_mps2[i];
+        const double pg0 = (double)sd.gyro_bias_rps[i] * (double)sd.gyro_bias_rps[i];
+        const double pa0 = (double)sd.accel_bias_mps2[i] * (double)sd.accel_bias_mps2[i];
+        FNAV_ASSERT_CLOSE(f.bg_rps.v[i], (double)(fnav_real_t)offg[i] * pow(cg, k), 0.0, k * EPS);
+        FNAV_ASSERT_CLOSE(f.ba_mps2.v[i], (double)(fnav_real_t)offa[i] * pow(ca, k), 0.0, k * EPS);
+        FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_BG + i, FNAV_UKF_BG + i), sg2 + (pg0 - sg2) * pow(cg, 2 * k), 0.0,
+                          5.0 * k * EPS);
+        FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_BA + i, FNAV_UKF_BA + i), sa2 + (pa0 - sa2) * pow(ca, 2 * k), 0.0,
+                          5.0 * k * EPS);
+    }
+}
+
 /* Inverse of a 3x3 matrix in double (adjugate over the determinant). */
 static void inv3d(double S[3][3], double Si[3][3])
 {
@@ -1364,6 +1410,7 @@ int main(void)
         cmocka_unit_test(test_grp),
         cmocka_unit_test(test_closed_form_equivalence),
         cmocka_unit_test(test_linear_covariance),
+        cmocka_unit_test(test_ar1_decay),
         cmocka_unit_test(test_zupt_update),
         cmocka_unit_test(test_lever_measurement),
         cmocka_unit_test(test_bad_input),
