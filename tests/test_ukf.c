@@ -294,6 +294,82 @@ static void test_ar1_decay(void **state)
     }
 }
 
+/* The accelerometer's white noise enters the velocity covariance rotated
+ * into the navigation frame: C diag(q^2) C^T dt, C = C_nb. A body at rest
+ * in a rotated attitude with anisotropic noise densities, the bias model
+ * off and a tiny attitude spread s = 1e-7 rad, over one prediction: the
+ * velocity covariance grows by exactly that, plus the attitude error's
+ * own term: an error a about n tilts the specific-force increment
+ * (0, 0, -g dt) by a x (0, 0, -g dt) = g dt (-a_y, a_x, 0), adding
+ * (g dt s)^2 = 1e-16 to the x and y variances (below float32 rounding,
+ * visible in double). C is formed here in double from the quaternion
+ * (Hamilton, body to n) and checked against fnav_quat_rotate, the rotation
+ * the strapdown applies to the specific force. Rounding: the increment's
+ * sums and the velocity columns' scatter round each element by a few EPS
+ * of the largest variance: 16 EPS of it. */
+static void test_rotated_accel_noise(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const double q2[3] = { 0.02 * 0.02, 0.05 * 0.05, 0.1 * 0.1 }, dt = 0.01;
+    const fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.3), FNAV_R(-0.4), FNAV_R(1.1));
+    double C[3][3], w, x, y, z, pv0, top = 0.0;
+    fnav_vec3_t fb;
+    int i, j, k;
+    (void)state;
+    c.bias_model = FNAV_BIAS_OFF;
+    for (i = 0; i < 3; i++) {
+        c.accel_noise_mps2_rthz[i] = (fnav_real_t)sqrt(q2[i]);
+        c.gyro_noise_rps_rthz[i] = FNAV_R(0.0);
+        sd.att_rad[i] = FNAV_R(1.0e-7);
+    }
+    sd.vel_mps = FNAV_R(0.001);
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, q0, fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    w = (double)f.q_nb.q[0];
+    x = (double)f.q_nb.q[1];
+    y = (double)f.q_nb.q[2];
+    z = (double)f.q_nb.q[3];
+    C[0][0] = 1.0 - 2.0 * (y * y + z * z);
+    C[0][1] = 2.0 * (x * y - w * z);
+    C[0][2] = 2.0 * (x * z + w * y);
+    C[1][0] = 2.0 * (x * y + w * z);
+    C[1][1] = 1.0 - 2.0 * (x * x + z * z);
+    C[1][2] = 2.0 * (y * z - w * x);
+    C[2][0] = 2.0 * (x * z - w * y);
+    C[2][1] = 2.0 * (y * z + w * x);
+    C[2][2] = 1.0 - 2.0 * (x * x + y * y);
+    for (k = 0; k < 3; k++) {
+        fnav_vec3_t e = fnav_vec3_zero(), r;
+        e.v[k] = FNAV_R(1.0);
+        r = fnav_quat_rotate(f.q_nb, e);
+        for (i = 0; i < 3; i++) {
+            FNAV_ASSERT_CLOSE(r.v[i], C[i][k], 8.0 * EPS, 0.0); /* column k of C: e_k rotated */
+        }
+    }
+    assert_true(fabs(C[0][1] - C[1][0]) > 0.1); /* C is not symmetric: C^T would differ */
+    pv0 = (double)sd.vel_mps * (double)sd.vel_mps;
+    fb = fnav_quat_rotate(fnav_quat_conj(q0), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g));
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fb, (fnav_real_t)dt), FNAV_OK);
+    for (i = 0; i < 3; i++) {
+        top = q2[i] * dt + pv0 > top ? q2[i] * dt + pv0 : top;
+    }
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            double e = (i == j) ? pv0 : 0.0;
+            if (i == j && i < 2) {
+                const double gs = k_g * (double)(fnav_real_t)dt * (double)sd.att_rad[1 - i];
+                e += gs * gs; /* the attitude error's term */
+            }
+            for (k = 0; k < 3; k++) {
+                e += C[i][k] * C[j][k] * q2[k] * (double)(fnav_real_t)dt;
+            }
+            FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_V + i, FNAV_UKF_V + j), e, 16.0 * EPS * top, 0.0);
+        }
+    }
+}
+
 /* Inverse of a 3x3 matrix in double (adjugate over the determinant). */
 static void inv3d(double S[3][3], double Si[3][3])
 {
@@ -1411,6 +1487,7 @@ int main(void)
         cmocka_unit_test(test_closed_form_equivalence),
         cmocka_unit_test(test_linear_covariance),
         cmocka_unit_test(test_ar1_decay),
+        cmocka_unit_test(test_rotated_accel_noise),
         cmocka_unit_test(test_zupt_update),
         cmocka_unit_test(test_lever_measurement),
         cmocka_unit_test(test_bad_input),
