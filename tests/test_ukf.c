@@ -370,6 +370,39 @@ static void test_rotated_accel_noise(void **state)
     }
 }
 
+/* The lever's random walk: without updates the lever is constant (r' = r,
+ * no other state feeds it), so each prediction adds lever_rw^2 dt to its
+ * variance: P_r = lever_sd^2 + k lever_rw^2 dt after k steps, exactly but
+ * for rounding (a few EPS of P_r per step: 4 k EPS relative). A small
+ * lever_sd (1 mm) makes the walk's 100 steps most of the final variance. */
+static void test_lever_random_walk(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const fnav_real_t dt = FNAV_R(0.01);
+    const int k = 100;
+    int i, j;
+    double expect;
+    (void)state;
+    c.lever = 1;
+    c.lever_sd_m = FNAV_R(0.001);
+    c.lever_rw_m_rts = FNAV_R(0.002);
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    for (j = 0; j < k; j++) {
+        assert_int_equal(fnav_ukf_predict(&f, fnav_vec3(FNAV_R(0.3), FNAV_R(-0.2), FNAV_R(0.1)),
+                                          fnav_vec3(FNAV_R(1.0), FNAV_R(0.5), (fnav_real_t)-k_g), dt),
+                         FNAV_OK);
+    }
+    expect = (double)c.lever_sd_m * (double)c.lever_sd_m +
+             k * (double)c.lever_rw_m_rts * (double)c.lever_rw_m_rts * (double)dt;
+    for (i = 0; i < 3; i++) {
+        FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_R + i, FNAV_UKF_R + i), expect, 0.0, 4.0 * k * EPS);
+        assert_true(f.lever_m.v[i] == FNAV_R(0.0));
+    }
+}
+
 /* Inverse of a 3x3 matrix in double (adjugate over the determinant). */
 static void inv3d(double S[3][3], double Si[3][3])
 {
@@ -1488,6 +1521,7 @@ int main(void)
         cmocka_unit_test(test_linear_covariance),
         cmocka_unit_test(test_ar1_decay),
         cmocka_unit_test(test_rotated_accel_noise),
+        cmocka_unit_test(test_lever_random_walk),
         cmocka_unit_test(test_zupt_update),
         cmocka_unit_test(test_lever_measurement),
         cmocka_unit_test(test_bad_input),
