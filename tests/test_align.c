@@ -164,8 +164,46 @@ static void test_max_duration(void **state)
     }
     assert_int_equal(st, FNAV_OK);
     assert_int_equal((int)k, 401);
+    assert_int_equal((int)al.result.samples, 401); /* samples 0..400 (0 to 2 s) */
     /* sample standard deviation of the wobble pattern (0.002 x {-2..2}) */
     FNAV_ASSERT_CLOSE(al.result.accel_sd_mps2.v[2], 0.002 * sqrt(2.0), 0.0, 0.02);
+    /* exactly: the sample standard deviation (divisor n - 1) of the values
+     * pushed, computed here in double. The running sums of the n = 401
+     * offsets from the first sample (sa, sa2) are within n EPS relative
+     * each, so sa2 - sa^2 / n is within 3 n EPS of sa2; against the
+     * difference that is a factor (mean^2 + var) / var larger, at most
+     * 3.25 here (gyro x: offsets 0..6 mrad/s, mean 3, variance 4), so
+     * the variance is within 10 n EPS and its square root within 5 n EPS
+     * relative. The divisor n instead of n - 1 gives an sd smaller by
+     * 1 / (2 (n - 1)) = 1.25e-3, five times that. */
+    {
+        const long n = 401;
+        double sum[3] = { 0.0, 0.0, 0.0 }, ss[3] = { 0.0, 0.0, 0.0 };
+        int i;
+        for (k = 0; k < n; k++) {
+            fnav_sample_t s = still_sample(k, 200.0, 0.002);
+            double v[3];
+            v[0] = (double)s.accel_mps2[0];
+            v[1] = (double)s.accel_mps2[2];
+            v[2] = (double)s.gyro_rps[0];
+            for (i = 0; i < 3; i++) {
+                sum[i] += v[i];
+            }
+        }
+        for (k = 0; k < n; k++) {
+            fnav_sample_t s = still_sample(k, 200.0, 0.002);
+            double v[3];
+            v[0] = (double)s.accel_mps2[0];
+            v[1] = (double)s.accel_mps2[2];
+            v[2] = (double)s.gyro_rps[0];
+            for (i = 0; i < 3; i++) {
+                ss[i] += (v[i] - sum[i] / n) * (v[i] - sum[i] / n);
+            }
+        }
+        FNAV_ASSERT_CLOSE(al.result.accel_sd_mps2.v[0], sqrt(ss[0] / (double)(n - 1)), 0.0, 5.0 * n * EPS);
+        FNAV_ASSERT_CLOSE(al.result.accel_sd_mps2.v[2], sqrt(ss[1] / (double)(n - 1)), 0.0, 5.0 * n * EPS);
+        FNAV_ASSERT_CLOSE(al.result.gyro_sd_rps.v[0], sqrt(ss[2] / (double)(n - 1)), 0.0, 5.0 * n * EPS);
+    }
 }
 
 /* The detector statistic rising a decade above its running geometric
