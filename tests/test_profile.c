@@ -89,21 +89,47 @@ static void test_builtin_tables(void **state)
 }
 
 /* The paper's AR(1) coefficient c = e^(-1/tau) per sample (tau in samples)
- * is footnav's exp(-dt / tau_s) at dt = 1 / 200 Hz, and eq. (4)'s driving
- * variance sigma^2 (1 - e^(-2/tau)) is sigma^2 (1 - c^2). */
+ * and eq. (4)'s driving variance sigma^2 (1 - e^(-2/tau)) are what the
+ * filter uses at the identification rate: the navigator configured with
+ * the Shimmer profile, one prediction at dt = 1/200 s, and the filter's
+ * cached coefficients (fnav_ukf_t.ar1_c, ar1_q: gyro x, y, z, then
+ * accelerometer x, y, z) compared with the paper's tables, converted here
+ * in double. Rounding: c = 1 - d with d = 1 - exp(-dt/tau) good to about
+ * 5.5 EPS relative (dt / tau rounded 1.5 EPS, fnav_one_minus_exp_neg's
+ * series 4 EPS), which is d < 1.3e-3 times that relative to c, plus c's own
+ * rounding EPS / 2: 2 REL. q = sigma^2 d (2 - d): sigma^2 within 4 EPS
+ * (the profile's sigma within 2 EPS, test_builtin_tables), d within
+ * 5.5 EPS, three products: 16 REL. */
 static void test_ar1_units(void **state)
 {
-    fnav_profile_t p;
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_ukf_init_sd_t sd;
     int i;
     (void)state;
-    assert_int_equal(fnav_profile_builtin(&p, FNAV_PROFILE_SHIMMER), FNAV_OK);
+    assert_int_equal(fnav_profile_builtin(&c.profile, FNAV_PROFILE_SHIMMER), FNAV_OK);
+    assert_int_equal(c.bias_model, FNAV_BIAS_AR1);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
     for (i = 0; i < 3; i++) {
-        double c_paper = exp(-1.0 / k_tables[2][3 + i][1]);
-        double c_fnav = exp(-(1.0 / 200.0) / (double)p.gyro_tau_s[i]);
-        double q_paper = pow(k_tables[2][3 + i][2] * k_deg, 2.0) * (1.0 - exp(-2.0 / k_tables[2][3 + i][1]));
-        double q_fnav = (double)p.gyro_bias_sigma_rps[i] * (double)p.gyro_bias_sigma_rps[i] * (1.0 - c_fnav * c_fnav);
-        FNAV_ASSERT_CLOSE(c_fnav, c_paper, 0.0, 4.0 * REL);
-        FNAV_ASSERT_CLOSE(q_fnav, q_paper, 0.0, 1e3 * REL);
+        sd.att_rad[i] = FNAV_R(0.01);
+        sd.gyro_bias_rps[i] = FNAV_R(1.0e-4);
+        sd.accel_bias_mps2[i] = FNAV_R(1.0e-3);
+    }
+    sd.vel_mps = FNAV_R(0.01);
+    sd.pos_m = FNAV_R(0.001);
+    assert_int_equal(fnav_ukf_start(&nav.ukf, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    assert_int_equal(fnav_ukf_predict(&nav.ukf, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), -FNAV_R(9.80665)),
+                                      FNAV_R(1.0) / FNAV_R(200.0)),
+                     FNAV_OK);
+    for (i = 0; i < 3; i++) {
+        const double tg = k_tables[2][3 + i][1], ta = k_tables[2][i][1];
+        const double sg = k_tables[2][3 + i][2] * k_deg, sa = k_tables[2][i][2];
+        FNAV_ASSERT_CLOSE(nav.ukf.ar1_c[i], exp(-1.0 / tg), 0.0, 2.0 * REL);
+        FNAV_ASSERT_CLOSE(nav.ukf.ar1_c[3 + i], exp(-1.0 / ta), 0.0, 2.0 * REL);
+        /* 1 - e^(-2/tau) as -expm1(-2/tau): 1 - exp() would lose 2/tau's
+         * ratio of digits (exp's last bit against 5e-4 here) */
+        FNAV_ASSERT_CLOSE(nav.ukf.ar1_q[i], sg * sg * -expm1(-2.0 / tg), 0.0, 16.0 * REL);
+        FNAV_ASSERT_CLOSE(nav.ukf.ar1_q[3 + i], sa * sa * -expm1(-2.0 / ta), 0.0, 16.0 * REL);
     }
 }
 
