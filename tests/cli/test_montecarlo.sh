@@ -25,15 +25,36 @@ expect_exit 3 "unwritable JSON" "$H" montecarlo --motion "stand:5,walk:3" --seed
 
 # Acceptance: a simulated closed-loop walk replayed through `harness replay`
 # closes to within the filter's predicted uncertainty (3 sigma of the
-# horizontal position at the end).
+# horizontal position at the end). The check means something only when the
+# last row is navigated and its sigma is a real one: an unaligned row is all
+# zeros (0 <= 3 x 0 would pass), so the last row must be aligned (its
+# attitude variance, 0 in unaligned rows, positive; no reset in its health
+# bits, 0x800), its predicted horizontal sd positive, and that sd below
+# 1 % of the path walked (the horizontal path of the trajectory's rows),
+# the accuracy class of foot-mounted navigation: a sigma as large as the
+# loop would make any end position pass.
+loop_check() { # trajectory CSV
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+             { x = $c["x"]; y = $c["y"]; px = $c["P_pos_x"]; py = $c["P_pos_y"]; pa = $c["P_att_x"]; h = $c["health"]
+               if (NR > 2) path += sqrt((x - x0) * (x - x0) + (y - y0) * (y - y0)); x0 = x; y0 = y }
+             END { e = sqrt(x * x + y * y); s = sqrt(px + py);
+                   printf "loop closes to %.3f m, predicted horizontal sd %.3f m, path %.1f m\n", e, s, path;
+                   if (!(pa > 0)) { print "last row not aligned"; exit 1 }
+                   if (int(h / 2048) % 2 == 1) { print "the navigator was reset"; exit 1 }
+                   if (!(s > 0)) { print "no predicted uncertainty"; exit 1 }
+                   if (!(s <= 0.01 * path)) { print "predicted sd above 1 % of the path"; exit 1 }
+                   exit !(e <= 3 * s) }' "$1"
+}
 expect_exit 0 "simulate a closed loop" "$H" sim --motion loop --rate 200 --profile navchip --seed 11 --out "$T/loop.bin"
 expect_exit 0 "replay the loop" "$H" replay "$T/loop.bin" --profile navchip --out "$T/traj.csv" --quiet
-awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
-         { x = $c["x"]; y = $c["y"]; px = $c["P_pos_x"]; py = $c["P_pos_y"] }
-         END { e = sqrt(x * x + y * y); s = sqrt(px + py);
-               printf "loop closes to %.3f m, predicted horizontal sd %.3f m\n", e, s;
-               exit !(e <= 3 * s) }' "$T/traj.csv"
-if [ $? -eq 0 ]; then pass "loop closes within 3 sigma"; else fail "loop does not close within 3 sigma"; fi
+if loop_check "$T/traj.csv"; then pass "loop closes within 3 sigma"; else fail "loop does not close within 3 sigma"; fi
+# the check itself: an unaligned trajectory (every row zero) and one whose
+# sigma covers the whole loop do not pass
+awk -F, 'BEGIN { OFS = "," } NR == 1 { print; next } { for (i = 2; i <= NF; i++) $i = 0; print }' "$T/traj.csv" >"$T/zero.csv"
+if loop_check "$T/zero.csv" >/dev/null; then fail "an unaligned trajectory passes the loop check"; else pass "an unaligned trajectory fails the loop check"; fi
+awk -F, 'BEGIN { OFS = "," } NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; print; next }
+         { $c["P_pos_x"] = 1000; $c["P_pos_y"] = 1000; print }' "$T/traj.csv" >"$T/wide.csv"
+if loop_check "$T/wide.csv" >/dev/null; then fail "a 45 m sigma passes the loop check"; else pass "a 45 m sigma fails the loop check"; fi
 
 if [ "$fails" -ne 0 ]; then echo "test_montecarlo.sh: $fails failure(s)"; exit 1; fi
 echo "test_montecarlo.sh: all passed"
