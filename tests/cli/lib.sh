@@ -15,3 +15,6 @@ expect_err() { # pattern description: checks $T/err
 expect_out() { # pattern description: checks $T/out
     if grep -q -- "$1" "$T/out"; then pass "$2"; else fail "$2: stdout lacks '$1'"; cat "$T/out"; fi
 }
+expect_out_re() { # extended-regex description: checks $T/out (anchor with ^ and $ for a whole line)
+    if grep -q -E -- "$1" "$T/out"; then pass "$2"; else fail "$2: stdout lacks /$1/"; cat "$T/out"; fi
+}
