@@ -255,20 +255,6 @@ static void on_sample(live_t *L, const fnav_sample_t *s)
     }
 }
 
-/* What the .bin reader refuses (and fnav_nav_push): a value beyond
- * FNAV_INPUT_MAX_ABS in SI units, a time beyond FNAV_T_NS_MAX. Refused on
- * arrival so that the recording stays readable to its end. */
-static int sample_in_range(const fnav_sample_t *s)
-{
-    int i;
-    for (i = 0; i < 3; i++) {
-        if (fabs((double)s->accel_mps2[i]) > FNAV_INPUT_MAX_ABS || fabs((double)s->gyro_rps[i]) > FNAV_INPUT_MAX_ABS) {
-            return 0;
-        }
-    }
-    return s->t_ns <= FNAV_T_NS_MAX && s->t_ns >= -FNAV_T_NS_MAX;
-}
-
 static void on_frame(live_t *L, const fnav_wire_frame_t *f)
 {
     report_link(L, f);
@@ -277,8 +263,10 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
     case FNAV_WIRE_SAMPLE: {
         fnav_sample_t s;
         fnav_status_t st = fnav_wire_parse_sample(f, &s);
-        if (st == FNAV_OK && !sample_in_range(&s)) {
-            st = FNAV_E_RANGE;
+        if (st == FNAV_OK) {
+            /* what the navigator and the .bin reader refuse, refused on
+             * arrival so that the recording stays readable to its end */
+            st = fnav_sample_check(&s);
         }
         if (st == FNAV_OK && L->samples > 0u && s.t_ns < L->t_last_ns) {
             /* what the .bin reader and the navigator refuse: the session

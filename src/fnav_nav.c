@@ -116,11 +116,13 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
     return fnav_ukf_init(&nav->ukf, &uc);
 }
 
-/* FNAV_OK, FNAV_E_NANINF or FNAV_E_RANGE */
-static fnav_status_t sample_check(const fnav_sample_t *s)
+fnav_status_t fnav_sample_check(const fnav_sample_t *s)
 {
     fnav_status_t st = FNAV_OK;
     int i;
+    if (s == NULL) {
+        return FNAV_E_ARG;
+    }
     for (i = 0; i < 3; i++) {
         if (!fnav_isfinite(s->accel_mps2[i]) || !fnav_isfinite(s->gyro_rps[i])) {
             return FNAV_E_NANINF;
@@ -142,7 +144,7 @@ fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample)
     if (nav == NULL || sample == NULL) {
         return FNAV_E_ARG;
     }
-    st = sample_check(sample);
+    st = fnav_sample_check(sample);
     if (st == FNAV_E_NANINF) {
         nav->stats.nan_inputs++;
         nav->health |= FNAV_HEALTH_NANINF;

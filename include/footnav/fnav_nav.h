@@ -168,6 +168,12 @@ FNAV_WARN_UNUSED fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_con
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample);
 
+/** The input check of fnav_nav_push, for a receiver that must refuse what
+ *  the navigator would (harness live, before recording). @return FNAV_OK,
+ *  FNAV_E_NANINF (a non-finite value), FNAV_E_RANGE (a value beyond
+ *  FNAV_INPUT_MAX_ABS or a time beyond FNAV_T_NS_MAX), FNAV_E_ARG. */
+FNAV_WARN_UNUSED fnav_status_t fnav_sample_check(const fnav_sample_t *s);
+
 /**
  * Next navigation frame.
  * @return FNAV_OK with *frame; FNAV_AGAIN when none is due; FNAV_END after
