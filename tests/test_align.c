@@ -177,27 +177,22 @@ static void test_max_duration(void **state)
      * relative. The divisor n instead of n - 1 gives an sd smaller by
      * 1 / (2 (n - 1)) = 1.25e-3, five times that. */
     {
-        const long n = 401;
+        enum { n = 401 };
+        static double v[n][3];
         double sum[3] = { 0.0, 0.0, 0.0 }, ss[3] = { 0.0, 0.0, 0.0 };
         int i;
         for (k = 0; k < n; k++) {
             fnav_sample_t s = still_sample(k, 200.0, 0.002);
-            double v[3];
-            v[0] = (double)s.accel_mps2[0];
-            v[1] = (double)s.accel_mps2[2];
-            v[2] = (double)s.gyro_rps[0];
+            v[k][0] = (double)s.accel_mps2[0];
+            v[k][1] = (double)s.accel_mps2[2];
+            v[k][2] = (double)s.gyro_rps[0];
             for (i = 0; i < 3; i++) {
-                sum[i] += v[i];
+                sum[i] += v[k][i];
             }
         }
         for (k = 0; k < n; k++) {
-            fnav_sample_t s = still_sample(k, 200.0, 0.002);
-            double v[3];
-            v[0] = (double)s.accel_mps2[0];
-            v[1] = (double)s.accel_mps2[2];
-            v[2] = (double)s.gyro_rps[0];
             for (i = 0; i < 3; i++) {
-                ss[i] += (v[i] - sum[i] / n) * (v[i] - sum[i] / n);
+                ss[i] += (v[k][i] - sum[i] / n) * (v[k][i] - sum[i] / n);
             }
         }
         FNAV_ASSERT_CLOSE(al.result.accel_sd_mps2.v[0], sqrt(ss[0] / (double)(n - 1)), 0.0, 5.0 * n * EPS);

@@ -79,44 +79,77 @@ static void config_of(const vcase_t *c, fnav_welch_config_t *cfg)
     cfg->rate_hz = (fnav_real_t)c->fs;
 }
 
+/* The two input series of the vectors (read once), and a case's input. */
+static double g_synth[6000], g_os820[9000];
+static size_t g_nsyn, g_nos;
+
+static void load_inputs(void)
+{
+    if (g_nsyn == 0u) {
+        g_nsyn = read_series("welch/welch_input_synth.txt", g_synth, 6000);
+        g_nos = read_series("welch/welch_input_os820.txt", g_os820, 9000);
+    }
+    assert_int_equal(g_nsyn, 5000);
+    assert_int_equal(g_nos, 8192);
+}
+
+/* A vector file of vectors/, opened for reading. */
+static FILE *open_vector(const char *rel)
+{
+    char path[512];
+    FILE *f;
+    assert_int_equal(fnav_vector_path(rel, path, sizeof path), 0);
+    f = fopen(path, "r");
+    assert_non_null(f);
+    return f;
+}
+
+/* Push case c's input through w (its segment count and bins checked) and
+ * read the average (fnav_welch_get) or, with last, the last segment's
+ * periodogram (fnav_welch_last) into psd. */
+static void run_case(fnav_welch_t *w, const vcase_t *c, int last, fnav_real_t *psd)
+{
+    fnav_welch_config_t cfg;
+    const int syn = strcmp(c->input, "synth") == 0;
+    const double *x = syn ? g_synth : g_os820;
+    const size_t n = syn ? g_nsyn : g_nos;
+    size_t i;
+    config_of(c, &cfg);
+    assert_int_equal(fnav_welch_init(w, &cfg), FNAV_OK);
+    for (i = 0; i < n; i++) {
+        assert_int_equal(fnav_welch_push(w, (fnav_real_t)x[i]), FNAV_OK);
+    }
+    assert_int_equal(fnav_welch_segments(w), (n - c->nfft) / (c->nfft - c->overlap) + 1u);
+    assert_int_equal(fnav_welch_bins(w), c->nbins);
+    if (last) {
+        assert_int_equal(fnav_welch_last(w, psd, FNAV_WELCH_MAX_BINS), FNAV_OK);
+    } else {
+        assert_int_equal(fnav_welch_get(w, psd, FNAV_WELCH_MAX_BINS), FNAV_OK);
+    }
+}
+
 static void test_against_scipy(void **state)
 {
-    static double synth[6000], os820[9000];
     static fnav_welch_t w;
     static fnav_real_t psd[FNAV_WELCH_MAX_BINS];
     static double expect[FNAV_WELCH_MAX_BINS];
-    char path[512], line[256];
-    size_t nsyn, nos, i;
+    char line[256];
+    size_t i;
     FILE *f;
     int ncases = 0, nbands = 0;
     double worst = 0.0, worst_peak = 0.0;
     vcase_t c, cur;
     (void)state;
-    nsyn = read_series("welch/welch_input_synth.txt", synth, 6000);
-    nos = read_series("welch/welch_input_os820.txt", os820, 9000);
-    assert_int_equal(nsyn, 5000);
-    assert_int_equal(nos, 8192);
-    assert_int_equal(fnav_vector_path("welch/welch_expected.csv", path, sizeof path), 0);
-    f = fopen(path, "r");
-    assert_non_null(f);
+    load_inputs();
+    f = open_vector("welch/welch_expected.csv");
     memset(&cur, 0, sizeof cur);
     while (1) {
         char *got = fgets(line, sizeof line, f);
         int is_case = got != NULL && parse_case(line, &c);
         if ((got == NULL || is_case || strncmp(line, "band,", 5) == 0) && cur.nbins > 0) {
             /* run the previous case */
-            fnav_welch_config_t cfg;
-            const double *x = strcmp(cur.input, "synth") == 0 ? synth : os820;
-            const size_t n = strcmp(cur.input, "synth") == 0 ? nsyn : nos;
             double peak = 0.0;
-            config_of(&cur, &cfg);
-            assert_int_equal(fnav_welch_init(&w, &cfg), FNAV_OK);
-            for (i = 0; i < n; i++) {
-                assert_int_equal(fnav_welch_push(&w, (fnav_real_t)x[i]), FNAV_OK);
-            }
-            assert_int_equal(fnav_welch_segments(&w), (n - cur.nfft) / (cur.nfft - cur.overlap) + 1u);
-            assert_int_equal(fnav_welch_bins(&w), cur.nbins);
-            assert_int_equal(fnav_welch_get(&w, psd, FNAV_WELCH_MAX_BINS), FNAV_OK);
+            run_case(&w, &cur, 0, psd);
             for (i = 0; i < cur.nbins; i++) {
                 peak = expect[i] > peak ? expect[i] : peak;
             }
@@ -155,8 +188,7 @@ static void test_against_scipy(void **state)
             char l2[256];
             int found = 0;
             assert_int_equal(sscanf(line, "band,%63[^,],%lf,%lf,%d,%lf,%lf", name, &thr, &rnd, &ex, &bw, &fsr), 6);
-            g = fopen(path, "r");
-            assert_non_null(g);
+            g = open_vector("welch/welch_expected.csv");
             while (fgets(l2, sizeof l2, g) != NULL) {
                 if (parse_case(l2, &bcase) && strcmp(bcase.name, name) == 0) {
                     found = 1;
@@ -165,17 +197,7 @@ static void test_against_scipy(void **state)
             }
             fclose(g);
             assert_true(found);
-            {
-                fnav_welch_config_t cfg;
-                const double *x = strcmp(bcase.input, "synth") == 0 ? synth : os820;
-                const size_t n = strcmp(bcase.input, "synth") == 0 ? nsyn : nos;
-                config_of(&bcase, &cfg);
-                assert_int_equal(fnav_welch_init(&w, &cfg), FNAV_OK);
-                for (i = 0; i < n; i++) {
-                    assert_int_equal(fnav_welch_push(&w, (fnav_real_t)x[i]), FNAV_OK);
-                }
-                assert_int_equal(fnav_welch_get(&w, psd, FNAV_WELCH_MAX_BINS), FNAV_OK);
-            }
+            run_case(&w, &bcase, 0, psd);
             bc.threshold = (fnav_real_t)thr;
             bc.round_hz = (fnav_real_t)rnd;
             bc.exclude_dc = ex;
@@ -213,41 +235,25 @@ static void test_against_scipy(void **state)
  * segment's arithmetic instead of an average of several. */
 static void test_last_global_against_scipy(void **state)
 {
-    static double synth[6000], os820[9000];
     static fnav_welch_t w;
     static fnav_real_t psd[FNAV_WELCH_MAX_BINS];
     static double expect[FNAV_WELCH_MAX_BINS];
-    char path[512], line[256];
-    size_t nsyn, nos, i;
+    char line[256];
+    size_t i;
     FILE *f;
     int ncases = 0;
     vcase_t c, cur;
     (void)state;
-    nsyn = read_series("welch/welch_input_synth.txt", synth, 6000);
-    nos = read_series("welch/welch_input_os820.txt", os820, 9000);
-    assert_int_equal(nsyn, 5000);
-    assert_int_equal(nos, 8192);
-    assert_int_equal(fnav_vector_path("welch/welch_last_expected.csv", path, sizeof path), 0);
-    f = fopen(path, "r");
-    assert_non_null(f);
+    load_inputs();
+    f = open_vector("welch/welch_last_expected.csv");
     memset(&cur, 0, sizeof cur);
     while (1) {
         char *got = fgets(line, sizeof line, f);
         int is_case = got != NULL && parse_case(line, &c);
         if ((got == NULL || is_case) && cur.nbins > 0) {
-            fnav_welch_config_t cfg;
-            const double *x = strcmp(cur.input, "synth") == 0 ? synth : os820;
-            const size_t n = strcmp(cur.input, "synth") == 0 ? nsyn : nos;
             double peak = 0.0;
             assert_string_equal(cur.detrend, "global");
-            config_of(&cur, &cfg);
-            assert_int_equal(fnav_welch_init(&w, &cfg), FNAV_OK);
-            for (i = 0; i < n; i++) {
-                assert_int_equal(fnav_welch_push(&w, (fnav_real_t)x[i]), FNAV_OK);
-            }
-            assert_int_equal(fnav_welch_segments(&w), (n - cur.nfft) / (cur.nfft - cur.overlap) + 1u);
-            assert_int_equal(fnav_welch_bins(&w), cur.nbins);
-            assert_int_equal(fnav_welch_last(&w, psd, FNAV_WELCH_MAX_BINS), FNAV_OK);
+            run_case(&w, &cur, 1, psd);
             for (i = 0; i < cur.nbins; i++) {
                 peak = expect[i] > peak ? expect[i] : peak;
             }

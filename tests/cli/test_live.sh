@@ -218,48 +218,36 @@ fi
 
 # --- misbehaving senders (tests/cli/wire_cases.py): whatever live records,
 # its own reader reads; what it refuses is reported and fails the run
-send_case() { # CASE: the case's bytes into end B
-    /usr/bin/python3 tests/cli/wire_cases.py "$1" "$T/case.bin" || fail "wire_cases.py $1"
-    timeout 30 cat "$T/case.bin" >"$B"
-}
-fresh_link() { # a new pty pair for each case: nothing left from the one before
+live_case() { # CASE RECORDING TIMEOUT: live on a new pty pair (nothing left
+    # from the case before) receives the case's bytes into end B
     stop_link
     start_link
+    start_live --record "$T/$2" --timeout "$3"
+    /usr/bin/python3 tests/cli/wire_cases.py "$1" "$T/case.bin" || fail "wire_cases.py $1"
+    timeout 30 cat "$T/case.bin" >"$B"
+    wait_live
 }
-fresh_link
-start_live --record "$T/rec_r.bin" --timeout 5
-send_case restart
-wait_live
+reads_back() { # RECORDING SAMPLES DESCRIPTION: harness info reads it whole
+    timeout $LIMIT "$H" info "$T/$1" >"$T/info.out" 2>&1
+    expect_rc $? 0 "$3"
+    grep_in "$T/info.out" "samples     $2\$" "it holds $2 samples"
+}
+live_case restart rec_r.bin 5
 expect_rc "$LIVE_RC" 1 "live when the sender restarts (time goes back)"
 grep_in "$T/live.err" "the sender restarted: time went back from 11.247500 s to 0.000000 s" "the restart is explained"
-timeout $LIMIT "$H" info "$T/rec_r.bin" >"$T/info.out" 2>&1
-expect_rc $? 0 "the recording up to the restart reads back whole"
-grep_in "$T/info.out" "samples     500\$" "it holds the 500 samples before the restart"
+reads_back rec_r.bin 500 "the recording up to the restart reads back whole"
 
-fresh_link
-start_live --record "$T/rec_g.bin" --timeout 5
-send_case range
-wait_live
+live_case range rec_g.bin 5
 expect_rc "$LIVE_RC" 1 "live with a sample of 1e20 m/s^2"
 grep_in "$T/live.err" "sample frame seq 100 holds a value beyond 1e6" "the out-of-range sample is reported"
-timeout $LIMIT "$H" info "$T/rec_g.bin" >"$T/info.out" 2>&1
-expect_rc $? 0 "the recording without it reads back whole"
-grep_in "$T/info.out" "samples     299\$" "it holds the 299 other samples"
+reads_back rec_g.bin 299 "the recording without it reads back whole"
 
-fresh_link
-start_live --record "$T/rec_n.bin" --timeout 5
-send_case badrate
-wait_live
+live_case badrate rec_n.bin 5
 expect_rc "$LIVE_RC" 1 "live with an INFO frame whose rate is NaN"
 grep_in "$T/live.err" "bad INFO frame seq 0" "the bad INFO frame is reported"
-timeout $LIMIT "$H" info "$T/rec_n.bin" >"$T/info.out" 2>&1
-expect_rc $? 0 "the recording's header is readable (rate unknown)"
-grep_in "$T/info.out" "samples     300\$" "it holds the 300 samples"
+reads_back rec_n.bin 300 "the recording's header is readable (rate unknown)"
 
-fresh_link
-start_live --record "$T/rec_v.bin" --timeout 1
-send_case navonly
-wait_live
+live_case navonly rec_v.bin 1
 expect_rc "$LIVE_RC" 1 "live from a sender of NAV frames only"
 grep_in "$T/live.out" "NAV frames but no SAMPLE frames" "live says why nothing is navigated"
 grep_in "$T/live.out" "nothing recorded" "live does not claim a recording"
