@@ -275,7 +275,8 @@ static void skip_byte(fnav_wire_decoder_t *d)
 }
 
 /* A corrupt frame of extent bytes starts at buf[0]: count it unless it lies
- * inside one already counted, then resume the search one byte further. */
+ * inside one already counted (and no valid frame came since), then resume
+ * the search one byte further. */
 static void reject(fnav_wire_decoder_t *d, uint16_t extent)
 {
     if (d->bad_until == 0u) {
@@ -345,6 +346,7 @@ fnav_status_t fnav_wire_decode(fnav_wire_decoder_t *d, const uint8_t *in, size_t
                 frame->seq = get_u16(d->buf + 4);
                 frame->payload = d->buf + FNAV_WIRE_HEADER_SIZE;
                 d->consumed = (uint16_t)total;
+                d->bad_until = 0u; /* a valid frame ends a counted extent: that candidate was false */
                 d->stats.frames++;
                 if (klen < 0) {
                     d->stats.unknown++;

@@ -87,7 +87,8 @@ def decode(stream):
     search the sync word; a known type must have its length; a whole frame
     must pass the CRC; on any failure discard one byte and search again; a
     corrupt frame that starts inside the extent of one already counted is
-    not counted again. Sequence: a forward jump of k < 32768 counts one gap
+    not counted again, unless a valid frame was delivered since (a valid
+    frame ends the extent: the counted candidate was false). Sequence: a forward jump of k < 32768 counts one gap
     and k lost frames; a backward jump counts a reset."""
     buf = bytearray(stream)
     out = []
@@ -146,7 +147,7 @@ def decode(stream):
         expect = (seq + 1) & 0xffff
         out.append(describe(ftype, seq, bytes(buf[i + 6:i + 6 + ln])))
         i += total
-        bad_until = max(0, bad_until - total)
+        bad_until = 0
     return out, st
 
 
@@ -196,9 +197,11 @@ def build():
     # a false sync word inside garbage, announcing a long unknown frame
     bad += SYNC + bytes([0x33, 200]) + b'\x00' * 10
     # the frames inside that false frame's extent are found once its CRC fails
-    # (idle-line zeros complete the false frame); a duplicated STATUS frame
-    # makes the sequence go backwards
-    bad += fr[5] + fr[6] + fr[6] + fr[7] + fr[8]
+    # (idle-line zeros complete the false frame); a damaged STATUS frame after
+    # the first of them, still inside that extent, counts as a corrupt frame of
+    # its own; a duplicated STATUS frame makes the sequence go backwards
+    f = bytearray(fr[6]); f[8] ^= 0x01
+    bad += fr[5] + bytes(f) + fr[6] + fr[6] + fr[7] + fr[8]
     bad += b'\x00' * 80
     bad += b'\xa5\x5a\x01'  # trailing partial header
     clines, cst = decode(bad)
