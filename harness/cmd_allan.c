@@ -265,6 +265,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         }
     }
     hx_progress_end(&pr);
+    hx_print_warnings(CMD, hx_reader_take_warnings(r)); /* a cut-off last line is found at the end */
     if (rc == 0 && st != FNAV_OK && st != FNAV_END) {
         hx_error(CMD, "%s", hx_reader_error(r));
         rc = 1;

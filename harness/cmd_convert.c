@@ -81,6 +81,6 @@ int hx_cmd_convert(int argc, char **argv)
         hx_error("convert", "%s", err);
         exit_code = HX_EXIT_IO;
     }
-    hx_reader_close(r);
+    hx_close_input("convert", r);
     return exit_code;
 }

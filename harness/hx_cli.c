@@ -226,7 +226,7 @@ int hx_check_input_opts(const char *cmd, const hx_args_t *a)
     return input_options(cmd, a, &fmt, &rate);
 }
 
-static void print_warnings(const char *cmd, const char *w)
+void hx_print_warnings(const char *cmd, const char *w)
 {
     char buf[512];
     char *line, *save = NULL;
@@ -253,8 +253,16 @@ hx_reader_t *hx_open_input(const char *cmd, const hx_args_t *a, const char *path
         hx_error(cmd, "%s", err);
         return NULL;
     }
-    print_warnings(cmd, hx_reader_warnings(r));
+    hx_print_warnings(cmd, hx_reader_take_warnings(r));
     return r;
+}
+
+void hx_close_input(const char *cmd, hx_reader_t *r)
+{
+    if (r != NULL) {
+        hx_print_warnings(cmd, hx_reader_take_warnings(r)); /* e.g. a cut-off last line, found at the end */
+        hx_reader_close(r);
+    }
 }
 
 int hx_load_input(const char *cmd, const hx_args_t *a, const char *path, hx_log_t *log)
@@ -271,7 +279,7 @@ int hx_load_input(const char *cmd, const hx_args_t *a, const char *path, hx_log_
         hx_error(cmd, "%s", err);
         return -1;
     }
-    print_warnings(cmd, log->warnings);
+    hx_print_warnings(cmd, log->warnings);
     if (rc > 0) {
         hx_warn(cmd, "%s (using the %zu samples before it)", log->error, log->n);
     }

@@ -56,6 +56,7 @@ struct hx_reader {
     hx_read_stats_t stats;
     char err[320];
     char warn[512];
+    size_t warn_taken;          /* bytes of warn already handed out by hx_reader_take_warnings */
     fnav_status_t deferred;     /* error to return at the end (bin) */
     int finished;
 
@@ -1127,6 +1128,13 @@ const char *hx_reader_error(const hx_reader_t *r)
 const char *hx_reader_warnings(const hx_reader_t *r)
 {
     return r->warn;
+}
+
+const char *hx_reader_take_warnings(hx_reader_t *r)
+{
+    const char *w = r->warn + r->warn_taken;
+    r->warn_taken = strlen(r->warn);
+    return *w == '\n' ? w + 1 : w;
 }
 
 const hx_meta_t *hx_reader_meta(const hx_reader_t *r)

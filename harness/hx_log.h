@@ -86,6 +86,9 @@ const char *hx_reader_error(const hx_reader_t *r);
 
 /** Warnings collected so far (e.g. "assuming 820 Hz"), newline-separated. */
 const char *hx_reader_warnings(const hx_reader_t *r);
+/** The warnings added since the last call (all of them the first time),
+ *  newline-separated; for printing each warning once, as it appears. */
+const char *hx_reader_take_warnings(hx_reader_t *r);
 
 const hx_meta_t *hx_reader_meta(const hx_reader_t *r);
 const hx_read_stats_t *hx_reader_stats(const hx_reader_t *r);

@@ -625,10 +625,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     }
     if (r != NULL) {
         /* warnings collected while reading (assumed rates, cut-off lines) */
-        const char *w = hx_reader_warnings(r);
-        if (w != NULL && *w != '\0') {
-            hx_warn(cmd, "%s", w);
-        }
+        hx_print_warnings(cmd, hx_reader_take_warnings(r));
         hx_reader_close(r);
     }
     hx_log_free(&res);
