@@ -298,8 +298,31 @@ static void test_short_period_fallback(void **state)
  * the batch means see the correlated motion and the prior pulls the
  * estimate to (near) zero: the error shrinks. The posterior follows
  * b = w s0^2 / (s0^2 + se^2) exactly. */
+static double batch_means_se(const double *x, long n)
+{
+    long len = 1, nb, b, k;
+    double m[FNAV_ALIGN_BLOCKS], mean = 0.0, var = 0.0;
+    while (n / len >= FNAV_ALIGN_BLOCKS) { /* a full set of blocks merges into half as many */
+        len *= 2;
+    }
+    nb = n / len;
+    for (b = 0; b < nb; b++) {
+        m[b] = 0.0;
+        for (k = 0; k < len; k++) {
+            m[b] += x[b * len + k];
+        }
+        m[b] /= (double)len;
+        mean += m[b] / (double)nb;
+    }
+    for (b = 0; b < nb; b++) {
+        var += (m[b] - mean) * (m[b] - mean) / (double)(nb - 1);
+    }
+    return sqrt(var / (double)nb);
+}
+
 static void test_gyro_bias_posterior(void **state)
 {
+    static double rates[150];
     fnav_align_t al;
     fnav_align_config_t c = fnav_align_config_default;
     const double rate = 200.0, b_true = 0.002, s0 = (double)c.gyro_bias_prior_sd_rps;
@@ -339,6 +362,7 @@ static void test_gyro_bias_posterior(void **state)
         fnav_sample_t s = still_sample(k, rate, 0.0);
         double t = (double)k / rate;
         s.gyro_rps[1] = (fnav_real_t)(b_true + 0.0174533 * 6.283185307179586 * cos(6.283185307179586 * t));
+        rates[k] = (double)s.gyro_rps[1];
         assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_AGAIN);
     }
     {
@@ -354,6 +378,11 @@ static void test_gyro_bias_posterior(void **state)
         assert_true(se > 0.3 * bias_err_mean);
         assert_true(bias_err < 0.5 * bias_err_mean);
         FNAV_ASSERT_CLOSE(al.result.gyro_bias_rps.v[1], w * s0 * s0 / (s0 * s0 + se * se), 0.0, 1e-6);
+        /* the standard error is the batch-means value, recomputed here in
+         * double: the doubling blocks of fnav_align.h end, for 150 samples,
+         * as 4 whole blocks of 32 (the 22 samples after them are in no
+         * block); the block means' unbiased variance (divisor 3) over 4 */
+        FNAV_ASSERT_CLOSE(se, batch_means_se(rates, 150), 0.0, 1e-4);
     }
 }
 
