@@ -370,6 +370,79 @@ static void test_rotated_accel_noise(void **state)
     }
 }
 
+/* The unscented transform's second-order terms, against the textbook
+ * transform computed here in double (Julier & Uhlmann; Wan & van der Merwe
+ * 2000: sigma points x0 +- gamma sqrt(P) columns, gamma^2 = n + lambda,
+ * lambda = alpha^2 (n + kappa) - n, W0m = lambda / (n + lambda), W0c = W0m +
+ * 1 - alpha^2 + beta, Wi = 1 / (2 (n + lambda)); mean sum Wm y, covariance
+ * sum Wc (y - mean)(y - mean)^T). A level body at rest, the bias model and
+ * the noise off, a large attitude error about n's x (sd 0.2 rad) and tiny
+ * others: one prediction of dt. The attitude pair a_x = +-gamma s (GRP, a
+ * = 1, f = 4: a rotation by th = 4 atan(gamma s / 4), test_grp) tilts the
+ * specific-force increment (0, 0, -g dt) about x, to (0, +-g sin(th) dt,
+ * -g cos(th) dt); with gravity's (0, 0, g dt) the velocity is y_z = g (1 -
+ * cos(th)) dt (the same for both points), y_y = +-g sin(th) dt. The velocity pairs +-gamma sd_v add to their own axis;
+ * every other point leaves the velocity at 0. So the mean velocity shifts
+ * down by 2 Wi y_z (the fold of the sigma points' mean into the state) and
+ * the vertical variance holds the centre's W0c (0 - mean)^2 (the beta -
+ * alpha^2 term): a filter without either is off by 100 % and 10 % here.
+ * Rounding: the increments are O(1e-2) and the variances O(1e-4): a few
+ * hundred EPS relative. */
+static void test_unscented_second_order(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const double s = 0.2, sv = 1e-3, dt = 0.01;
+    double g, n, lambda, w0m, w0c, wi, gam, th, yz, yy, mean_z = 0.0, var_z, var_y, cov_yz;
+    int i;
+    (void)state;
+    c.bias_model = FNAV_BIAS_OFF;
+    for (i = 0; i < 3; i++) {
+        c.accel_noise_mps2_rthz[i] = FNAV_R(0.0);
+        c.gyro_noise_rps_rthz[i] = FNAV_R(0.0);
+        sd.att_rad[i] = FNAV_R(1.0e-9);
+        sd.gyro_bias_rps[i] = FNAV_R(1.0e-9);
+        sd.accel_bias_mps2[i] = FNAV_R(1.0e-9);
+    }
+    sd.att_rad[0] = (fnav_real_t)s;
+    sd.vel_mps = (fnav_real_t)sv;
+    g = (double)c.strapdown.gravity_mps2;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    n = (double)f.n_act;
+    lambda = (double)c.alpha * (double)c.alpha * (n + (double)c.kappa) - n;
+    w0m = lambda / (n + lambda);
+    w0c = w0m + 1.0 - (double)c.alpha * (double)c.alpha + (double)c.beta;
+    wi = 0.5 / (n + lambda);
+    gam = sqrt(n + lambda);
+    th = 4.0 * atan(gam * s / 4.0);
+    yz = g * (1.0 - cos(th)) * dt;
+    yy = g * sin(th) * dt;
+    /* mean: the centre and the other points at 0, the attitude pair at yz,
+     * the vertical velocity pair at +-gamma sv (cancelling) */
+    mean_z = 2.0 * wi * yz;
+    /* covariance: every point's deviation from the mean, weighted */
+    var_z = w0c * mean_z * mean_z + 2.0 * wi * (yz - mean_z) * (yz - mean_z) +
+            wi * ((gam * sv - mean_z) * (gam * sv - mean_z) + (-gam * sv - mean_z) * (-gam * sv - mean_z)) +
+            (2.0 * n - 4.0) * wi * mean_z * mean_z;
+    var_y = 2.0 * wi * yy * yy + sv * sv; /* the y mean is 0 */
+    cov_yz = 0.0;                          /* the attitude pair: (yz - m)(+yy) + (yz - m)(-yy) */
+    assert_true(w0c * mean_z * mean_z > 0.03 * var_z); /* the term a missing beta - alpha^2 would lose */
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-g),
+                                      (fnav_real_t)dt),
+                     FNAV_OK);
+    printf("UT: mean v_z %.6e (expected %.6e), var v_z %.6e (%.6e), var v_y %.6e (%.6e)\n", (double)f.vel_mps.v[2],
+           mean_z, (double)fnav_ukf_cov(&f, FNAV_UKF_V + 2, FNAV_UKF_V + 2), var_z,
+           (double)fnav_ukf_cov(&f, FNAV_UKF_V + 1, FNAV_UKF_V + 1), var_y);
+    FNAV_ASSERT_CLOSE(f.vel_mps.v[2], mean_z, 1e-3 * EPS, 300.0 * EPS);
+    FNAV_ASSERT_CLOSE(f.vel_mps.v[0], 0.0, 1e-3 * EPS, 0.0);
+    FNAV_ASSERT_CLOSE(f.vel_mps.v[1], 0.0, 1e-3 * EPS, 0.0);
+    FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_V + 2, FNAV_UKF_V + 2), var_z, 0.0, 300.0 * EPS);
+    FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_V + 1, FNAV_UKF_V + 1), var_y, 0.0, 300.0 * EPS);
+    FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_V + 1, FNAV_UKF_V + 2), cov_yz, 300.0 * EPS * var_y, 0.0);
+}
+
 /* The lever's random walk: without updates the lever is constant (r' = r,
  * no other state feeds it), so each prediction adds lever_rw^2 dt to its
  * variance: P_r = lever_sd^2 + k lever_rw^2 dt after k steps, exactly but
@@ -1521,6 +1594,7 @@ int main(void)
         cmocka_unit_test(test_linear_covariance),
         cmocka_unit_test(test_ar1_decay),
         cmocka_unit_test(test_rotated_accel_noise),
+        cmocka_unit_test(test_unscented_second_order),
         cmocka_unit_test(test_lever_random_walk),
         cmocka_unit_test(test_zupt_update),
         cmocka_unit_test(test_lever_measurement),
