@@ -631,7 +631,7 @@ int hx_cmd_live(int argc, char **argv)
                     L.info.rate_hz, (L.info.flags & FNAV_WIRE_INFO_RATE_NOMINAL) ? " nominal" : "");
         }
         if (L.have_status) {
-            fprintf(sum_out, "live: sender status: %u samples, %u overruns, %u estimator errors, %u frames not sent\n",
+            fprintf(sum_out, "live: sender status: %u samples processed, %u overruns, %u estimator errors, %u frames not sent\n",
                    (unsigned)L.status.samples, (unsigned)L.status.overruns, (unsigned)L.status.est_errors,
                    (unsigned)L.status.tx_dropped);
         }

@@ -93,7 +93,7 @@ typedef struct {
 
 /** Sender counters carried by a STATUS frame. */
 typedef struct {
-    uint32_t samples;        /**< samples taken by the sender */
+    uint32_t samples;        /**< samples the sender processed (taken = these + overruns) */
     uint32_t overruns;       /**< samples lost before processing (ring full) */
     uint32_t est_errors;     /**< estimator calls that returned a failure */
     uint32_t tx_dropped;     /**< frames not sent because the link was busy */

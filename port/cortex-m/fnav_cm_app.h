@@ -19,7 +19,9 @@ typedef struct {
     fnav_real_t nav_rate_hz; /**< rate given to the navigation filter's stance detector: 0 (default)
                                   estimates it from the first intervals, as `harness replay` does for a
                                   log, so the sensor computes what a replay of its recording computes */
-    uint32_t nav_every;      /**< send a NAV frame every N navigation outputs (0: none; default 4) */
+    uint32_t nav_every;      /**< send a NAV frame every N navigation outputs (0: none; default 4); the
+                                  navigator has no output while it aligns, so the count starts at its
+                                  first output, not at the first sample */
     uint32_t sample_every;   /**< send every N-th raw sample as a SAMPLE frame (0: none; default 0) */
     uint32_t status_every;   /**< send a STATUS frame every N samples (0: none; default 400) */
     const char *sensor;      /**< sensor name for the INFO frame (default "footnav-fw") */
