@@ -631,9 +631,10 @@ int hx_cmd_live(int argc, char **argv)
                     L.info.rate_hz, (L.info.flags & FNAV_WIRE_INFO_RATE_NOMINAL) ? " nominal" : "");
         }
         if (L.have_status) {
-            fprintf(sum_out, "live: sender status: %u samples processed, %u overruns, %u estimator errors, %u frames not sent\n",
-                   (unsigned)L.status.samples, (unsigned)L.status.overruns, (unsigned)L.status.est_errors,
-                   (unsigned)L.status.tx_dropped);
+            fprintf(sum_out,
+                    "live: sender status: %u samples processed, %u overruns, %u estimator errors, %u frames not sent\n",
+                    (unsigned)L.status.samples, (unsigned)L.status.overruns, (unsigned)L.status.est_errors,
+                    (unsigned)L.status.tx_dropped);
         }
         if (L.record_path != NULL && L.rec != NULL) {
             fprintf(sum_out, "live: recorded %u samples to %s%s\n", (unsigned)L.samples, L.record_path,
