@@ -128,13 +128,48 @@ static void run_case(fnav_welch_t *w, const vcase_t *c, int last, fnav_real_t *p
     }
 }
 
+/* Compare a case's spectrum with scipy's, bin by bin: within BIN_REL of the
+ * bin or PEAK_REL of the largest bin. The worst relative errors found are
+ * raised into *worst and *worst_peak. */
+static void compare_bins(const char *what, const vcase_t *c, const fnav_real_t *psd, const double *expect,
+                         double *worst, double *worst_peak)
+{
+    double peak = 0.0;
+    size_t i;
+    for (i = 0; i < c->nbins; i++) {
+        peak = expect[i] > peak ? expect[i] : peak;
+    }
+    for (i = 0; i < c->nbins; i++) {
+        const double e = fabs((double)psd[i] - expect[i]);
+        if (e / expect[i] > *worst) {
+            *worst = e / expect[i];
+        }
+        if (e / peak > *worst_peak) {
+            *worst_peak = e / peak;
+        }
+        if (!(e <= BIN_REL * expect[i] || e <= PEAK_REL * peak)) {
+            fprintf(stderr, "%scase %s bin %zu: %.9g vs %.9g\n", what, c->name, i, (double)psd[i], expect[i]);
+            fail();
+        }
+    }
+}
+
+/* A "k,value" line of the current case into expect[k]. */
+static void read_bin(const char *line, const vcase_t *c, double *expect)
+{
+    unsigned k;
+    double v;
+    assert_int_equal(sscanf(line, "%u,%lf", &k, &v), 2);
+    assert_true(k < c->nbins);
+    expect[k] = v;
+}
+
 static void test_against_scipy(void **state)
 {
     static fnav_welch_t w;
     static fnav_real_t psd[FNAV_WELCH_MAX_BINS];
     static double expect[FNAV_WELCH_MAX_BINS];
     char line[256];
-    size_t i;
     FILE *f;
     int ncases = 0, nbands = 0;
     double worst = 0.0, worst_peak = 0.0;
@@ -148,24 +183,8 @@ static void test_against_scipy(void **state)
         int is_case = got != NULL && parse_case(line, &c);
         if ((got == NULL || is_case || strncmp(line, "band,", 5) == 0) && cur.nbins > 0) {
             /* run the previous case */
-            double peak = 0.0;
             run_case(&w, &cur, 0, psd);
-            for (i = 0; i < cur.nbins; i++) {
-                peak = expect[i] > peak ? expect[i] : peak;
-            }
-            for (i = 0; i < cur.nbins; i++) {
-                const double e = fabs((double)psd[i] - expect[i]);
-                if (e / expect[i] > worst) {
-                    worst = e / expect[i];
-                }
-                if (e / peak > worst_peak) {
-                    worst_peak = e / peak;
-                }
-                if (!(e <= BIN_REL * expect[i] || e <= PEAK_REL * peak)) {
-                    fprintf(stderr, "case %s bin %zu: %.9g vs %.9g\n", cur.name, i, (double)psd[i], expect[i]);
-                    fail();
-                }
-            }
+            compare_bins("", &cur, psd, expect, &worst, &worst_peak);
             ncases++;
             cur.nbins = 0;
         }
@@ -210,11 +229,7 @@ static void test_against_scipy(void **state)
             continue;
         }
         if (line[0] != '#' && cur.nbins > 0) {
-            unsigned k;
-            double v;
-            assert_int_equal(sscanf(line, "%u,%lf", &k, &v), 2);
-            assert_true(k < cur.nbins);
-            expect[k] = v;
+            read_bin(line, &cur, expect);
         }
     }
     fclose(f);
@@ -239,7 +254,6 @@ static void test_last_global_against_scipy(void **state)
     static fnav_real_t psd[FNAV_WELCH_MAX_BINS];
     static double expect[FNAV_WELCH_MAX_BINS];
     char line[256];
-    size_t i;
     FILE *f;
     int ncases = 0;
     vcase_t c, cur;
@@ -251,20 +265,10 @@ static void test_last_global_against_scipy(void **state)
         char *got = fgets(line, sizeof line, f);
         int is_case = got != NULL && parse_case(line, &c);
         if ((got == NULL || is_case) && cur.nbins > 0) {
-            double peak = 0.0;
+            double worst = 0.0, worst_peak = 0.0;
             assert_string_equal(cur.detrend, "global");
             run_case(&w, &cur, 1, psd);
-            for (i = 0; i < cur.nbins; i++) {
-                peak = expect[i] > peak ? expect[i] : peak;
-            }
-            for (i = 0; i < cur.nbins; i++) {
-                const double e = fabs((double)psd[i] - expect[i]);
-                if (!(e <= BIN_REL * expect[i] || e <= PEAK_REL * peak)) {
-                    fprintf(stderr, "last segment, case %s bin %zu: %.9g vs %.9g\n", cur.name, i, (double)psd[i],
-                            expect[i]);
-                    fail();
-                }
-            }
+            compare_bins("last segment, ", &cur, psd, expect, &worst, &worst_peak);
             ncases++;
             cur.nbins = 0;
         }
@@ -276,11 +280,7 @@ static void test_last_global_against_scipy(void **state)
             continue;
         }
         if (line[0] != '#' && cur.nbins > 0) {
-            unsigned k;
-            double v;
-            assert_int_equal(sscanf(line, "%u,%lf", &k, &v), 2);
-            assert_true(k < cur.nbins);
-            expect[k] = v;
+            read_bin(line, &cur, expect);
         }
     }
     fclose(f);
