@@ -81,6 +81,7 @@ int hx_cmd_convert(int argc, char **argv)
         hx_error("convert", "%s", err);
         exit_code = HX_EXIT_IO;
     }
-    hx_close_input("convert", r);
+    hx_print_warnings("convert", hx_reader_take_warnings(r)); /* a cut-off last line is found at the end */
+    hx_reader_close(r);
     return exit_code;
 }

@@ -257,14 +257,6 @@ hx_reader_t *hx_open_input(const char *cmd, const hx_args_t *a, const char *path
     return r;
 }
 
-void hx_close_input(const char *cmd, hx_reader_t *r)
-{
-    if (r != NULL) {
-        hx_print_warnings(cmd, hx_reader_take_warnings(r)); /* e.g. a cut-off last line, found at the end */
-        hx_reader_close(r);
-    }
-}
-
 int hx_load_input(const char *cmd, const hx_args_t *a, const char *path, hx_log_t *log)
 {
     hx_format_t fmt;

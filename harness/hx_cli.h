@@ -94,9 +94,6 @@ int hx_check_input_opts(const char *cmd, const hx_args_t *a);
 /** Open the input of a command using --from and --input-rate. Prints the
  *  error and returns NULL on failure; prints reader warnings. */
 hx_reader_t *hx_open_input(const char *cmd, const hx_args_t *a, const char *path);
-/** Print the warnings the reader added since it was opened (a cut-off last
- *  line is only found at the end), then close it. NULL is a no-op. */
-void hx_close_input(const char *cmd, hx_reader_t *r);
 /** Print newline-separated warnings, one "warning:" line each. */
 void hx_print_warnings(const char *cmd, const char *w);
 /** Load a whole input using --from and --input-rate. Returns 0 complete,
