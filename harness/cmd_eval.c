@@ -107,29 +107,75 @@ static int list_walks(const char *dir, const char *ext, char names[MAXF][160])
     return k;
 }
 
-/* One replay; 0 ok (partial input accepted with a note), -1 failure. */
+/* A reader's or replay's message without the file's path in front of it
+ * (the table names the file): "PATH:LINE: what" becomes "line LINE: what". */
+static const char *after_path(const char *msg, const char *path, char *buf, size_t size)
+{
+    size_t lp = strlen(path);
+    if (strncmp(msg, path, lp) != 0 || msg[lp] != ':') {
+        return msg;
+    }
+    msg += lp + 1;
+    if (*msg >= '0' && *msg <= '9') {
+        snprintf(buf, size, "line %s", msg);
+        return buf;
+    }
+    return *msg == ' ' ? msg + 1 : msg;
+}
+
+/* A failed run: warned with its path, counted (eval's exit status and the
+ * targets' note) and its reason kept for the row of its table. */
+static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const char *msg)
+{
+    char buf[400];
+    size_t i;
+    hx_warn("eval", "%s: %s", path, after_path(msg, path, buf, sizeof buf));
+    ev->failures++;
+    if (why == NULL) {
+        return;
+    }
+    snprintf(why, why_size, "%s", after_path(msg, path, buf, sizeof buf));
+    for (i = 0; why[i] != '\0'; i++) {
+        if (why[i] == '|' || why[i] == '\n') {
+            why[i] = '/'; /* would break the Markdown table */
+        }
+    }
+}
+
+/* The row of a walk that gave no figures: a dash in each of its ncol
+ * figure columns and the reason in the last. */
+static void not_run_row(const ev_t *ev, const char *name, int ncol, const char *why)
+{
+    int i;
+    fprintf(ev->md, "| %s |", name);
+    for (i = 0; i < ncol; i++) {
+        fputs(" - |", ev->md);
+    }
+    fprintf(ev->md, " not run: %s |\n", why);
+}
+
+/* One replay; 0 ok (partial input accepted with a note), -1 failure (its
+ * reason in note). */
 static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, double rate_hz, hx_traj_t *t,
                   hx_nav_summary_t *s, char *note, size_t note_size)
 {
-    char err[400];
+    char err[400], buf[400];
     int rc = hx_nav_replay("eval", path, HX_FMT_AUTO, 0.0, cfg, rate_hz, NULL, t, 0, err, sizeof err);
     ev->runs++;
     hx_progress_update(&ev->prog, (double)ev->runs);
     note[0] = '\0';
     if (rc < 0 || rc == 2 || t->n == 0) { /* 2: not in SI units */
-        hx_warn("eval", "%s: %s", path, err);
-        ev->failures++;
+        fail(ev, path, note, note_size, err);
         hx_traj_free(t);
         return -1;
     }
     if (rc == 1) {
         /* e.g. a truncated last line: every sample before it was used */
-        snprintf(note, note_size, "input ends early (%.150s)", strstr(err, ": ") ? strstr(err, ": ") + 2 : err);
+        snprintf(note, note_size, "input ends early (%.150s)", after_path(err, path, buf, sizeof buf));
     }
     if (!t->aligned) {
         /* no still period: no navigation to evaluate (its figures are NaN) */
-        hx_warn("eval", "%s: the filter never aligned (no still period at the start)", path);
-        ev->failures++;
+        fail(ev, path, note, note_size, "the filter never aligned (no still period at the start)");
         hx_traj_free(t);
         return -1;
     }
@@ -141,13 +187,13 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
  * detector took for a step) its "return to the start" is zero by
  * construction, not a result. Counted as a failed run; 1 (after freeing t)
  * when it is one. (A walk that never aligned has failed in replay().) */
-static int no_closure(ev_t *ev, const char *path, const hx_nav_summary_t *s, hx_traj_t *t)
+static int no_closure(ev_t *ev, const char *path, const hx_nav_summary_t *s, hx_traj_t *t, char *note,
+                      size_t note_size)
 {
     if (s->strides > 0 && s->path_m > 0.0) {
         return 0;
     }
-    hx_warn("eval", "%s: no stride detected: no closure to judge", path);
-    ev->failures++;
+    fail(ev, path, note, note_size, "no stride detected: no closure to judge");
     hx_traj_free(t);
     return 1;
 }
@@ -162,7 +208,7 @@ static void fmt_name(char *out, size_t size, const char *name, const char *strip
 
 typedef struct {
     double h_pct_med, d3_pct_med, d3_pct_max, vert_med, h_m_med, path_med;
-    int n;
+    int n, files; /* walks with a result, walk files found */
 } closure_t;
 
 static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fnav_nav_config_t *cfg, double rate_hz,
@@ -182,10 +228,14 @@ static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fna
         hx_traj_t t;
         hx_nav_summary_t s;
         snprintf(path, sizeof path, "%s/%.159s", dir, names[i]);
-        if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0 || no_closure(ev, path, &s, &t)) {
+        fmt_name(nm, sizeof nm, names[i], suffix);
+        if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0 ||
+            no_closure(ev, path, &s, &t, note, sizeof note)) {
+            if (write) {
+                not_run_row(ev, nm, 8, note);
+            }
             continue;
         }
-        fmt_name(nm, sizeof nm, names[i], suffix);
         if (write) {
             fprintf(ev->md, "| %s | %.2f | %.3f | %.2f | %.3f | %.2f | %+.3f | %+.1f | %ld | %s |\n", nm, s.path_m,
                     s.end_h_m, s.end_h_pct, s.end_3d_m, s.end_3d_pct, s.vertical_m, s.heading_change_deg, s.strides,
@@ -200,6 +250,7 @@ static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fna
         hx_traj_free(&t);
     }
     out->n = k;
+    out->files = n;
     out->d3_pct_max = maxv(d3, k);
     out->h_pct_med = hx_median(h, k);
     out->d3_pct_med = hx_median(d3, k);
@@ -230,7 +281,8 @@ static double closure_3d_m(ev_t *ev, const char *path, const fnav_nav_config_t *
     hx_traj_t t;
     hx_nav_summary_t s;
     char note[200];
-    if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0 || no_closure(ev, path, &s, &t)) {
+    if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0 ||
+        no_closure(ev, path, &s, &t, note, sizeof note)) {
         return (double)NAN;
     }
     hx_traj_free(&t);
@@ -239,27 +291,38 @@ static double closure_3d_m(ev_t *ev, const char *path, const fnav_nav_config_t *
 
 /* ------------------------------------------------------------ strides */
 
+#define GCP_MAX 1024
+
 typedef struct {
     int n;
-    long idx[1024];
-    double x[1024], y[1024];
+    long idx[GCP_MAX];
+    double x[GCP_MAX], y[GCP_MAX];
 } gcp_t;
 
-static int read_gcp(const char *path, gcp_t *g)
+/* The strides of a _strides_gcp.csv truth file (strideIndex, ..., x, y);
+ * 0, or -1 with the reason in why. */
+static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
 {
     FILE *f = fopen(path, "r");
     char line[512];
     g->n = 0;
     if (f == NULL) {
+        snprintf(why, why_size, "no truth file %.160s", strrchr(path, '/') ? strrchr(path, '/') + 1 : path);
         return -1;
     }
     if (fgets(line, sizeof line, f) == NULL) {
         fclose(f);
+        snprintf(why, why_size, "empty truth file");
         return -1;
     }
-    while (fgets(line, sizeof line, f) != NULL && g->n < 1024) {
+    while (fgets(line, sizeof line, f) != NULL) {
         double a, b, c, d;
-        if (sscanf(line, "%lf,%lf,%lf,%lf", &a, &b, &c, &d) == 4) {
+        if (sscanf(line, "%lf,%lf,%lf,%lf", &a, &b, &c, &d) == 4 && isfinite(a) && isfinite(c) && isfinite(d)) {
+            if (g->n == GCP_MAX) {
+                fclose(f);
+                snprintf(why, why_size, "truth file has more than %d strides", GCP_MAX);
+                return -1;
+            }
             g->idx[g->n] = (long)llround(a);
             g->x[g->n] = c;
             g->y[g->n] = d;
@@ -267,7 +330,11 @@ static int read_gcp(const char *path, gcp_t *g)
         }
     }
     fclose(f);
-    return g->n > 1 ? 0 : -1;
+    if (g->n < 2) {
+        snprintf(why, why_size, "truth file has %d readable stride rows (strideIndex, _, x, y), 2 needed", g->n);
+        return -1;
+    }
+    return 0;
 }
 
 typedef struct {
@@ -280,7 +347,7 @@ typedef struct {
  * heading): both start at the first stride position. */
 static int stride_errors(const hx_traj_t *t, const gcp_t *g, stride_res_t *r)
 {
-    double e[1024], se2 = 0.0;
+    double e[GCP_MAX], se2 = 0.0;
     double x0, y0;
     int i, n = 0;
     long i0 = g->idx[0];
@@ -315,12 +382,18 @@ static int stride_errors(const hx_traj_t *t, const gcp_t *g, stride_res_t *r)
 
 typedef struct {
     double final_pct_med, final_pct_mean, stride_med, final_m_med;
-    int n;
+    int n, files; /* walks with a result, IMU files found */
 } fp_t;
+
+/* stride_errors' failure as a reason */
+static void no_strides(ev_t *ev, const char *path, char *why, size_t why_size)
+{
+    fail(ev, path, why, why_size, "fewer than 2 truth strides fall inside the replayed samples");
+}
 
 static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, int write, fp_t *out)
 {
-    char dir[600], names[MAXF][160], path[800], gpath[800], note[200], nm[100];
+    char dir[600], names[MAXF][160], path[800], gpath[800], note[200], msg[200], nm[100];
     double fpct[MAXF], smed[MAXF], fm[MAXF], sum = 0.0;
     int n, i, k = 0;
     snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/own_3dmgx5_footprints", ev->data);
@@ -333,13 +406,17 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
     for (i = 0; i < n; i++) {
         hx_traj_t t;
         hx_nav_summary_t s;
-        gcp_t g;
+        static gcp_t g;
         stride_res_t r;
         size_t l = strlen(names[i]);
         snprintf(path, sizeof path, "%s/%.159s", dir, names[i]);
         snprintf(gpath, sizeof gpath, "%s/%.*s_strides_gcp.csv", dir, (int)(l - 8), names[i]);
-        if (read_gcp(gpath, &g) != 0) {
-            hx_warn("eval", "%s: no footprints", gpath);
+        fmt_name(nm, sizeof nm, names[i], "_imu.csv");
+        if (read_gcp(gpath, &g, msg, sizeof msg) != 0) {
+            fail(ev, path, note, sizeof note, msg);
+            if (write) {
+                not_run_row(ev, nm, 6, note);
+            }
             continue;
         }
         if (rate_hz > 0.0) {
@@ -353,10 +430,17 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
                 g.idx[l] = (long)llround((double)g.idx[l] * rate_hz / in);
             }
         } else if (replay(ev, path, cfg, 0.0, &t, &s, note, sizeof note) != 0) {
+            if (write) {
+                not_run_row(ev, nm, 6, note);
+            }
             continue;
         }
-        if (stride_errors(&t, &g, &r) == 0) {
-            fmt_name(nm, sizeof nm, names[i], "_imu.csv");
+        if (stride_errors(&t, &g, &r) != 0) {
+            no_strides(ev, path, note, sizeof note);
+            if (write) {
+                not_run_row(ev, nm, 6, note);
+            }
+        } else {
             if (write) {
                 fprintf(ev->md, "| %s | %d | %.1f | %.3f | %.3f | %.3f | %.2f | %s |\n", nm, r.strides, r.path,
                         r.stride_err_med, r.rms, r.final_err, r.final_pct, note);
@@ -370,6 +454,7 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
         hx_traj_free(&t);
     }
     out->n = k;
+    out->files = n;
     out->final_pct_mean = k > 0 ? sum / k : (double)NAN;
     out->final_pct_med = hx_median(fpct, k);
     out->stride_med = hx_median(smed, k);
@@ -418,14 +503,14 @@ static int read_vicon(const char *path, double **vx, double **vy, size_t *n)
 
 typedef struct {
     double stride_med, rms_med, final_med;
-    int n, strides;
+    int n, strides, files; /* trials with a result, strides, IMU files found */
 } vicon_t;
 
 static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *out)
 {
-    char dir[600], names[MAXF][160], path[800], gpath[800], note[200], nm[100];
+    char dir[600], names[MAXF][160], path[800], gpath[800], note[200], msg[200], nm[100];
     double med[MAXF], rms[MAXF], fin[MAXF];
-    int n, i, k = 0;
+    int n, i, k = 0, rc;
     snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/vicon_3dmgx3", ev->data);
     n = list_files(dir, "_imu.csv", names);
     out->strides = 0;
@@ -436,15 +521,24 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
     for (i = 0; i < n; i++) {
         hx_traj_t t;
         hx_nav_summary_t s;
-        gcp_t g;
+        static gcp_t g;
         stride_res_t r;
         double *vx, *vy;
         size_t nv, l = strlen(names[i]);
         int j;
         snprintf(path, sizeof path, "%s/%.159s", dir, names[i]);
         snprintf(gpath, sizeof gpath, "%s/%.*s_strides_gcp.csv", dir, (int)(l - 8), names[i]);
-        if (read_gcp(gpath, &g) != 0 || read_vicon(path, &vx, &vy, &nv) != 0) {
-            hx_warn("eval", "%s: no motion-capture strides", gpath);
+        fmt_name(nm, sizeof nm, names[i], "_imu.csv");
+        rc = read_gcp(gpath, &g, msg, sizeof msg);
+        if (rc == 0 && read_vicon(path, &vx, &vy, &nv) != 0) {
+            snprintf(msg, sizeof msg, "no motion-capture position columns");
+            rc = -1;
+        }
+        if (rc != 0) {
+            fail(ev, path, note, sizeof note, msg);
+            if (write) {
+                not_run_row(ev, nm, 4, note);
+            }
             continue;
         }
         /* truth = the motion capture at the stride samples */
@@ -457,10 +551,17 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         free(vx);
         free(vy);
         if (replay(ev, path, cfg, 0.0, &t, &s, note, sizeof note) != 0) {
+            if (write) {
+                not_run_row(ev, nm, 4, note);
+            }
             continue;
         }
-        if (stride_errors(&t, &g, &r) == 0) {
-            fmt_name(nm, sizeof nm, names[i], "_imu.csv");
+        if (stride_errors(&t, &g, &r) != 0) {
+            no_strides(ev, path, note, sizeof note);
+            if (write) {
+                not_run_row(ev, nm, 4, note);
+            }
+        } else {
             if (write) {
                 fprintf(ev->md, "| %s | %d | %.3f | %.3f | %.3f | %s |\n", nm, r.strides, r.stride_err_med, r.rms,
                         r.final_err, note);
@@ -474,6 +575,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         hx_traj_free(&t);
     }
     out->n = k;
+    out->files = n;
     out->stride_med = hx_median(med, k);
     out->rms_med = hx_median(rms, k);
     out->final_med = hx_median(fin, k);
@@ -482,46 +584,91 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
 /* ------------------------------------------------------------ stance (IPOL) */
 
 typedef struct {
-    int expected, detected, missed, spurious, trials;
+    int expected, detected, missed, spurious, trials, files; /* files: events files found */
     double fo_med, fs_med, fo_p90, fs_p90, fo_bias, fs_bias;
     int n_fo, n_fs;
 } ipol_t;
 
-static int read_events(const char *path, long ev[][2], int max, const char *key, long tb[2], long ub[2])
+/* Index pair i of a JSON array of pairs into v; 0, or -1 when it is not
+ * a pair of numbers. */
+static int json_pair(const cJSON *a, int i, long v[2])
 {
-    FILE *f = fopen(path, "r");
-    char buf[8192];
-    size_t n;
-    cJSON *root, *a;
-    int k = 0, i;
-    if (f == NULL) {
+    const cJSON *p = cJSON_GetArrayItem(a, i), *x = cJSON_GetArrayItem(p, 0), *y = cJSON_GetArrayItem(p, 1);
+    if (!cJSON_IsArray(p) || !cJSON_IsNumber(x) || !cJSON_IsNumber(y)) {
         return -1;
     }
-    n = fread(buf, 1, sizeof buf - 1, f);
+    v[0] = (long)x->valuedouble;
+    v[1] = (long)y->valuedouble;
+    return 0;
+}
+
+/* The expert events of one foot (key) and the trial and U-turn boundaries
+ * of an ipol_gait_xsens N-M.json; the number of events, or -1 with the
+ * reason in why. */
+static int read_events(const char *path, long ev[][2], int max, const char *key, long tb[2], long ub[2], char *why,
+                       size_t why_size)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf, *q;
+    long size;
+    cJSON *root, *a;
+    int k = 0, i, n;
+    if (f == NULL) {
+        snprintf(why, why_size, "cannot open %.160s", strrchr(path, '/') ? strrchr(path, '/') + 1 : path);
+        return -1;
+    }
+    if (fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 || size > (16L << 20) || fseek(f, 0, SEEK_SET) != 0 ||
+        (buf = (char *)malloc((size_t)size + 1)) == NULL) {
+        fclose(f);
+        snprintf(why, why_size, "cannot read the events file (larger than 16 MB or unreadable)");
+        return -1;
+    }
+    buf[fread(buf, 1, (size_t)size, f)] = '\0';
     fclose(f);
-    buf[n] = '\0';
     /* the data set writes NaN for unknown values, which JSON does not have */
-    {
-        char *q = buf;
-        while ((q = strstr(q, "NaN")) != NULL) {
-            memcpy(q, "0.0", 3);
-        }
+    for (q = buf; (q = strstr(q, "NaN")) != NULL;) {
+        memcpy(q, "0.0", 3);
     }
     root = cJSON_Parse(buf);
+    free(buf);
     if (root == NULL) {
+        snprintf(why, why_size, "the events file is not valid JSON");
         return -1;
     }
     a = cJSON_GetObjectItem(root, "TrialBoundaries");
-    tb[0] = cJSON_GetArrayItem(a, 0) ? (long)cJSON_GetArrayItem(a, 0)->valuedouble : 0;
-    tb[1] = cJSON_GetArrayItem(a, 1) ? (long)cJSON_GetArrayItem(a, 1)->valuedouble : 0;
+    if (!cJSON_IsArray(a) || cJSON_GetArraySize(a) < 2 || !cJSON_IsNumber(cJSON_GetArrayItem(a, 0)) ||
+        !cJSON_IsNumber(cJSON_GetArrayItem(a, 1))) {
+        cJSON_Delete(root);
+        snprintf(why, why_size, "the events file has no TrialBoundaries pair");
+        return -1;
+    }
+    tb[0] = (long)cJSON_GetArrayItem(a, 0)->valuedouble;
+    tb[1] = (long)cJSON_GetArrayItem(a, 1)->valuedouble;
+    /* a trial without a U-turn: an empty range */
     a = cJSON_GetObjectItem(root, "UTurnBoundaries");
-    ub[0] = cJSON_GetArrayItem(a, 0) ? (long)cJSON_GetArrayItem(a, 0)->valuedouble : 0;
-    ub[1] = cJSON_GetArrayItem(a, 1) ? (long)cJSON_GetArrayItem(a, 1)->valuedouble : 0;
+    ub[0] = ub[1] = 0;
+    if (cJSON_IsArray(a) && cJSON_IsNumber(cJSON_GetArrayItem(a, 0)) && cJSON_IsNumber(cJSON_GetArrayItem(a, 1))) {
+        ub[0] = (long)cJSON_GetArrayItem(a, 0)->valuedouble;
+        ub[1] = (long)cJSON_GetArrayItem(a, 1)->valuedouble;
+    }
     a = cJSON_GetObjectItem(root, key);
-    for (i = 0; i < cJSON_GetArraySize(a) && k < max; i++) {
-        cJSON *p = cJSON_GetArrayItem(a, i);
-        ev[k][0] = (long)cJSON_GetArrayItem(p, 0)->valuedouble;
-        ev[k][1] = (long)cJSON_GetArrayItem(p, 1)->valuedouble;
+    if (!cJSON_IsArray(a)) {
+        cJSON_Delete(root);
+        snprintf(why, why_size, "the events file has no %s", key);
+        return -1;
+    }
+    n = cJSON_GetArraySize(a);
+    if (n > max) {
+        cJSON_Delete(root);
+        snprintf(why, why_size, "%s holds %d events, more than %d", key, n, max);
+        return -1;
+    }
+    for (i = 0; i < n; i++) {
+        if (json_pair(a, i, ev[k]) != 0) {
+            cJSON_Delete(root);
+            snprintf(why, why_size, "%s[%d] is not a pair of sample indices", key, i);
+            return -1;
+        }
         k++;
     }
     cJSON_Delete(root);
@@ -563,16 +710,17 @@ static int overlaps(long a0, long a1, long b0, long b1)
 
 static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
 {
-    char dir[600], names[MAXF][160], path[800], jpath[800];
+    char dir[600], names[MAXF][160], path[800], jpath[800], note[200], nm[200];
     static double fo_e[4096], fs_e[4096], fo_a[4096], fs_a[4096];
     int n, i, foot;
     memset(out, 0, sizeof *out);
     snprintf(dir, sizeof dir, "%s/ipol_gait_xsens", ev->data);
     n = list_files(dir, ".json", names);
+    out->files = n;
     if (write) {
-        fprintf(ev->md, "| trial | foot | expert strides | detected | missed | spurious | median |FO error| | "
-                        "median |FS error| (samples) |\n");
-        fprintf(ev->md, "|---|---|---:|---:|---:|---:|---:|---:|\n");
+        fprintf(ev->md, "| trial | foot | expert strides | detected | missed | spurious | median \\|FO error\\| | "
+                        "median \\|FS error\\| (samples) | note |\n");
+        fprintf(ev->md, "|---|---|---:|---:|---:|---:|---:|---:|---|\n");
     }
     for (i = 0; i < n; i++) {
         for (foot = 0; foot < 2; foot++) {
@@ -592,15 +740,28 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             size_t l = strlen(names[i]);
             snprintf(jpath, sizeof jpath, "%s/%.159s", dir, names[i]);
             snprintf(path, sizeof path, "%s/%.*s_%s.txt", dir, (int)(l - 5), names[i], foot ? "rf" : "lf");
-            ne = read_events(jpath, evs, 256, foot ? "RightFootEvents" : "LeftFootEvents", tb, ub);
-            if (ne < 0 || hx_log_load(&log, path, HX_FMT_AUTO, 0.0, err, sizeof err) < 0) {
-                hx_warn("eval", "%s: cannot read the trial", path);
+            snprintf(nm, sizeof nm, "%.*s | %s", (int)(l - 5), names[i], foot ? "right" : "left");
+            ne = read_events(jpath, evs, 256, foot ? "RightFootEvents" : "LeftFootEvents", tb, ub, err, sizeof err);
+            if (ne < 0) {
+                fail(ev, jpath, note, sizeof note, err);
+            } else if (hx_log_load(&log, path, HX_FMT_AUTO, 0.0, err, sizeof err) < 0) {
+                fail(ev, path, note, sizeof note, err);
+                ne = -1;
+            }
+            if (ne < 0) {
+                if (write) {
+                    not_run_row(ev, nm, 6, note);
+                }
                 continue;
             }
             ev->runs++;
             hx_progress_update(&ev->prog, (double)ev->runs);
             sc.gravity_mps2 = cfg->gravity_mps2;
             if (fnav_stance_init(&st, &sc) != FNAV_OK) {
+                fail(ev, path, note, sizeof note, "the stance detector refused its configuration");
+                if (write) {
+                    not_run_row(ev, nm, 6, note);
+                }
                 hx_log_free(&log);
                 continue;
             }
@@ -708,9 +869,8 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                 }
             }
             if (write) {
-                fprintf(ev->md, "| %.*s | %s | %d | %d | %d | %d | %.1f | %.1f |\n", (int)(l - 5), names[i],
-                        foot ? "right" : "left", exp_n, det_n, miss, spur_n, hx_median(tfo, trial_fo),
-                        hx_median(tfs, trial_fs));
+                fprintf(ev->md, "| %s | %d | %d | %d | %d | %.1f | %.1f |  |\n", nm, exp_n, det_n, miss, spur_n,
+                        hx_median(tfo, trial_fo), hx_median(tfs, trial_fs));
             }
             out->expected += exp_n;
             out->detected += det_n;
@@ -905,7 +1065,9 @@ int hx_cmd_eval(int argc, char **argv)
                    "through the stance mid-points. Vertical: height change, up positive.\n\n");
     closure_set(&ev, "openshoe_gx2", "_data_inert.txt", &ev.cfg, 0.0, 1, &gx2);
     if (gx2.n == 0) {
-        fprintf(ev.md, "\nNo walks found in `%s/openshoe_gx2`.\n\n", ev.data);
+        fprintf(ev.md, gx2.files > 0 ? "\nNo walk in `%s/openshoe_gx2` gave a result (table).\n\n"
+                                     : "\nNo walks found in `%s/openshoe_gx2`.\n\n",
+                ev.data);
     } else {
         fprintf(ev.md, "\nMedian horizontal %.2f %% (target <= 0.35 %%: %s), median 3-D %.2f %% (target <= 0.6 %%: %s), "
                        "worst 3-D %.2f %% (target <= 1.2 %%: %s); median vertical %+.3f m, median path %.1f m.\n\n",
@@ -928,7 +1090,9 @@ int hx_cmd_eval(int argc, char **argv)
             char vs[32];
             xio3[i] = (double)NAN;
             snprintf(p, sizeof p, "%s/xio_ngimu_gait/%.159s", ev.data, xio[i]);
-            if (replay(&ev, p, &ev.cfg, 0.0, &t, &s, note, sizeof note) != 0 || no_closure(&ev, p, &s, &t)) {
+            if (replay(&ev, p, &ev.cfg, 0.0, &t, &s, note, sizeof note) != 0 ||
+                no_closure(&ev, p, &s, &t, note, sizeof note)) {
+                not_run_row(&ev, xio[i], 9, note);
                 continue;
             }
             xio3[i] = s.end_3d_m;
@@ -968,6 +1132,7 @@ int hx_cmd_eval(int argc, char **argv)
             other3[i] = other_hz[i] = (double)NAN;
             snprintf(p, sizeof p, "%s/%.300s", ev.data, other[i]);
             if (replay(&ev, p, &ev.cfg, 0.0, &t, &s, note, sizeof note) != 0) {
+                not_run_row(&ev, other[i], 8, note);
                 continue;
             }
             other3[i] = s.end_3d_m;
@@ -989,7 +1154,9 @@ int hx_cmd_eval(int argc, char **argv)
                    "in the initial-heading frame (the `_strides_gcp.csv` truth), starting at the first stride.\n\n");
     footprints(&ev, &ev.cfg, 0.0, 1, &fp);
     if (fp.n == 0) {
-        fprintf(ev.md, "\nNo walks found in `%s/pyshoe_vicon_llio/own_3dmgx5_footprints`.\n\n", ev.data);
+        fprintf(ev.md, fp.files > 0 ? "\nNo walk in `%s/pyshoe_vicon_llio/own_3dmgx5_footprints` gave a result (table).\n\n"
+                                    : "\nNo walks found in `%s/pyshoe_vicon_llio/own_3dmgx5_footprints`.\n\n",
+                ev.data);
     } else {
         fprintf(ev.md, "\nMedian final-stride error %.2f %% of the measured path (target <= 2 %%: %s), mean %.2f %%, "
                        "median %.2f m; median of the per-walk median stride errors %.3f m. Reference: pyshoe with its "
@@ -1000,7 +1167,9 @@ int hx_cmd_eval(int argc, char **argv)
     fprintf(ev.md, "## pyshoe_vicon_llio / vicon_3dmgx3: per-stride error against motion capture\n\n");
     vicon(&ev, &ev.cfg, 1, &vi);
     if (vi.n == 0) {
-        fprintf(ev.md, "\nNo trials found in `%s/pyshoe_vicon_llio/vicon_3dmgx3`.\n\n", ev.data);
+        fprintf(ev.md, vi.files > 0 ? "\nNo trial in `%s/pyshoe_vicon_llio/vicon_3dmgx3` gave a result (table).\n\n"
+                                    : "\nNo trials found in `%s/pyshoe_vicon_llio/vicon_3dmgx3`.\n\n",
+                ev.data);
     } else {
         fprintf(ev.md, "\n%d trials, %d strides: median of the per-trial median stride errors %.3f m, median RMS %.3f m, "
                        "median final error %.3f m.\n\n",
@@ -1014,7 +1183,9 @@ int hx_cmd_eval(int argc, char **argv)
                    "the end of the expert swing.\n\n");
     ipol(&ev, &ev.cfg, 1, &ip);
     if (ip.trials == 0) {
-        fprintf(ev.md, "\nNo trials found in `%s/ipol_gait_xsens`.\n\n", ev.data);
+        fprintf(ev.md, ip.files > 0 ? "\nNo trial in `%s/ipol_gait_xsens` gave a result (table).\n\n"
+                                    : "\nNo trials found in `%s/ipol_gait_xsens`.\n\n",
+                ev.data);
     } else {
         fprintf(ev.md, "\n%d trials and feet: %d expert strides, %d detected, %d missed, %d spurious (target: none "
                        "missed or spurious: %s). Event timing: median |FO error| %.1f samples (bias %+.1f, 90th percentile "
@@ -1186,6 +1357,12 @@ int hx_cmd_eval(int argc, char **argv)
         fprintf(ev.md, "| ipol: median event timing error <= 2 samples | %s | %s |\n", v,
                 target(ip.trials, ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
     }
+    if (ev.failures > 0) {
+        fprintf(ev.md, "\n**%d run(s) failed** (\"not run\" in the tables above, with the reason; the experiments' "
+                       "runs are in the warnings). The figures and targets leave them out: they are judged on "
+                       "incomplete data.\n",
+                ev.failures);
+    }
     hx_progress_end(&ev.prog);
     if (ev.md != stdout && fclose(ev.md) != 0) {
         hx_error("eval", "cannot write %s", out_path);
@@ -1207,6 +1384,7 @@ int hx_cmd_eval(int argc, char **argv)
         jnum(j, "ipol_spurious", ip.trials > 0 ? (double)ip.spurious : (double)NAN);
         jnum(j, "ipol_fo_err_median", ip.trials > 0 ? ip.fo_med : (double)NAN);
         jnum(j, "ipol_fs_err_median", ip.trials > 0 ? ip.fs_med : (double)NAN);
+        jnum(j, "failed_runs", (double)ev.failures);
         rc = hx_write_json(json_path, j, err, sizeof err);
         cJSON_Delete(j);
         if (rc != 0) {

@@ -194,6 +194,14 @@ expect_err "are the time stamps in seconds" "time stamps in ms are named as such
 rows=$(($(wc -l < "$T/in_ms_traj.csv") - 1))
 [ "$rows" -gt 1000 ] && pass "trajectory written for a log in ms ($rows frames)" || fail "trajectory of a log in ms: $rows frames"
 
+# Rows of the Markdown tables in FILE... whose cell count differs from their
+# header's (an unescaped | in a header or a note breaks a table), as FILE:LINE.
+md_bad_rows() {
+    awk '/^\|/ { l = $0; gsub(/\\\|/, "", l); n = gsub(/\|/, "", l);
+                 if (!intab) { want = n; intab = 1 } else if (n != want) print FILENAME ":" FNR }
+         !/^\|/ { intab = 0 }' "$@"
+}
+
 # --- shared data: a truncated last line, and eval
 if [ -n "$D" ]; then
     expect_exit 0 "GX2 log cut off mid-line" "$H" replay "$D/openshoe_gx2/Measurement_100521_31_data_inert.txt" --out "$T/t31.csv"
@@ -221,6 +229,38 @@ if [ -n "$D" ]; then
         pass "targets without their data say so"; else fail "targets without data judged"; fi
     if grep -q "nan" "$T/part.md"; then fail "partial results print nan"; else pass "no nan in partial results"; fi
     if grep -q "No walks found in .*openshoe_gx2" "$T/part.md"; then pass "missing sets named"; else fail "missing sets not named"; fi
+    # every Markdown table of results.md keeps its header's cell count on
+    # each row (an unescaped | in a header or a note breaks the table)
+    bad=$(md_bad_rows "$T/results.md" "$T/part.md" docs/*.md README.md)
+    if [ -z "$bad" ]; then pass "results.md and the committed docs: tables well formed"; else fail "rows with a wrong cell count: $bad"; fi
+    # a walk or trial that gives no figures keeps its row with the reason, and
+    # the run fails: an empty walk, an IMU log without its truth, a trial
+    # whose events file is not JSON; an events file over 8 KB is read whole
+    mkdir -p "$T/bad/openshoe_gx2" "$T/bad/pyshoe_vicon_llio/own_3dmgx5_footprints" "$T/bad/ipol_gait_xsens"
+    cp "$D/openshoe_gx2/Measurement_100521_2_data_inert.txt" "$T/bad/openshoe_gx2/"
+    : > "$T/bad/openshoe_gx2/Measurement_100521_98_data_inert.txt"
+    cp "$D/pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_31_imu.csv" "$T/bad/pyshoe_vicon_llio/own_3dmgx5_footprints/"
+    for f in lf rf; do
+        cp "$D/ipol_gait_xsens/1-1_$f.txt" "$T/bad/ipol_gait_xsens/"
+        cp "$D/ipol_gait_xsens/1-1_$f.txt" "$T/bad/ipol_gait_xsens/1-2_$f.txt"
+    done
+    pad=$(awk 'BEGIN { for (i = 0; i < 12000; i++) printf "x" }')
+    sed "s/^{/{\"Pad\": \"$pad\", /" "$D/ipol_gait_xsens/1-1.json" > "$T/bad/ipol_gait_xsens/1-1.json"
+    echo '{"TrialBoundaries": [459, 2464], "LeftFootEvents": [[527' > "$T/bad/ipol_gait_xsens/1-2.json"
+    expect_exit 1 "eval with walks that give no figures" "$H" eval --no-experiments --data "$T/bad" --out "$T/bad.md" --json "$T/bad.json"
+    expect_err "4 run(s) failed" "eval counts the runs without figures"
+    if grep -q "| Measurement_100521_98 | - |.*| not run: empty file |" "$T/bad.md"; then pass "an empty walk keeps its row"; else fail "empty walk row: $(grep 98 "$T/bad.md")"; fi
+    if grep -q "| SensorConnectData_31 | - |.*| not run: no truth file SensorConnectData_31_strides_gcp.csv |" "$T/bad.md"; then
+        pass "a walk without its truth keeps its row"; else fail "walk without truth: $(grep SensorConnectData_31 "$T/bad.md")"; fi
+    if grep -q "| 1-2 | left | - |.*| not run: the events file is not valid JSON |" "$T/bad.md"; then
+        pass "a broken events file is named"; else fail "broken events row: $(grep '1-2' "$T/bad.md")"; fi
+    if grep -q "| 1-1 | left | [0-9]" "$T/bad.md" && [ "$(wc -c < "$T/bad/ipol_gait_xsens/1-1.json")" -gt 8192 ]; then
+        pass "an events file over 8 KB is read"; else fail "large events file: $(grep '1-1' "$T/bad.md")"; fi
+    if grep -q "| Measurement_100521_2 | [0-9]" "$T/bad.md"; then pass "the good walk still has its figures"; else fail "good walk lost"; fi
+    if grep -q '\*\*4 run(s) failed\*\*' "$T/bad.md" && grep -q '"failed_runs":[[:space:]]*4' "$T/bad.json"; then
+        pass "results.md and the JSON say the results are incomplete"; else fail "failure count not reported"; fi
+    bad=$(md_bad_rows "$T/bad.md")
+    if [ -z "$bad" ]; then pass "not-run rows keep the tables well formed"; else fail "rows with a wrong cell count: $bad"; fi
 else
     echo "skip shared-data checks (no ../shared/data; set FNAV_DATA_DIR)"
 fi
