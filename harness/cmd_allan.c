@@ -301,6 +301,13 @@ static int read_series(run_t *R, const char *path, int phase)
         char *p = line, *end;
         double v;
         lineno++;
+        if (strchr(line, '\n') == NULL && !feof(f)) {
+            /* a longer line would be read in pieces, each taken for a line */
+            hx_error(CMD, "%s:%ld: line longer than %d characters (one number per line expected)", path, lineno,
+                     (int)sizeof line - 2);
+            rc = 1;
+            break;
+        }
         while (*p == ' ' || *p == '\t') {
             p++;
         }

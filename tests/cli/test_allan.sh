@@ -23,6 +23,10 @@ expect_err "big.txt:1: 1e+30 is beyond" "the rejected value is named with its li
 expect_exit 2 "empty --channels" "$H" allan vectors/walk.bin --channels ,
 expect_err "no channel named" "empty --channels explained"
 expect_exit 1 "missing series" "$H" allan --series "$T/nope.txt" --rate 1
+# two numbers 300 blanks apart on one line: refused, not read as two lines
+awk 'BEGIN { for (i = 0; i < 50; i++) { printf "1.0"; for (j = 0; j < 300; j++) printf " "; print "2.0" } }' > "$T/long.txt"
+expect_exit 1 "series line longer than the reader's buffer" "$H" allan --series "$T/long.txt" --rate 1 --no-sim
+expect_err "long.txt:1: line longer than" "the long line is named"
 expect_exit 0 "paper tables" "$H" allan --paper-tables
 grep -q "NavChip (IV)" "$T/out" && pass "paper tables list NavChip" || fail "paper tables output"
 
