@@ -142,11 +142,14 @@ static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const c
     }
 }
 
-/* The row of a walk that gave no figures: a dash in each of its ncol
- * figure columns and the reason in the last. */
-static void not_run_row(const ev_t *ev, const char *name, int ncol, const char *why)
+/* The row of a walk that gave no figures, when its table is written: a
+ * dash in each of its ncol figure columns and the reason in the last. */
+static void not_run_row(const ev_t *ev, int write, const char *name, int ncol, const char *why)
 {
     int i;
+    if (!write) {
+        return;
+    }
     fprintf(ev->md, "| %s |", name);
     for (i = 0; i < ncol; i++) {
         fputs(" - |", ev->md);
@@ -231,9 +234,7 @@ static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fna
         fmt_name(nm, sizeof nm, names[i], suffix);
         if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0 ||
             no_closure(ev, path, &s, &t, note, sizeof note)) {
-            if (write) {
-                not_run_row(ev, nm, 8, note);
-            }
+            not_run_row(ev, write, nm, 8, note);
             continue;
         }
         if (write) {
@@ -414,15 +415,14 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
         fmt_name(nm, sizeof nm, names[i], "_imu.csv");
         if (read_gcp(gpath, &g, msg, sizeof msg) != 0) {
             fail(ev, path, note, sizeof note, msg);
-            if (write) {
-                not_run_row(ev, nm, 6, note);
-            }
+            not_run_row(ev, write, nm, 6, note);
             continue;
         }
         if (rate_hz > 0.0) {
             /* resampled: the stride indices refer to the original samples */
             double in = 0.0;
             if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0) {
+                not_run_row(ev, write, nm, 6, note);
                 continue;
             }
             in = t.in_rate_hz;
@@ -430,16 +430,12 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
                 g.idx[l] = (long)llround((double)g.idx[l] * rate_hz / in);
             }
         } else if (replay(ev, path, cfg, 0.0, &t, &s, note, sizeof note) != 0) {
-            if (write) {
-                not_run_row(ev, nm, 6, note);
-            }
+            not_run_row(ev, write, nm, 6, note);
             continue;
         }
         if (stride_errors(&t, &g, &r) != 0) {
             no_strides(ev, path, note, sizeof note);
-            if (write) {
-                not_run_row(ev, nm, 6, note);
-            }
+            not_run_row(ev, write, nm, 6, note);
         } else {
             if (write) {
                 fprintf(ev->md, "| %s | %d | %.1f | %.3f | %.3f | %.3f | %.2f | %s |\n", nm, r.strides, r.path,
@@ -536,9 +532,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         }
         if (rc != 0) {
             fail(ev, path, note, sizeof note, msg);
-            if (write) {
-                not_run_row(ev, nm, 4, note);
-            }
+            not_run_row(ev, write, nm, 4, note);
             continue;
         }
         /* truth = the motion capture at the stride samples */
@@ -551,16 +545,12 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         free(vx);
         free(vy);
         if (replay(ev, path, cfg, 0.0, &t, &s, note, sizeof note) != 0) {
-            if (write) {
-                not_run_row(ev, nm, 4, note);
-            }
+            not_run_row(ev, write, nm, 4, note);
             continue;
         }
         if (stride_errors(&t, &g, &r) != 0) {
             no_strides(ev, path, note, sizeof note);
-            if (write) {
-                not_run_row(ev, nm, 4, note);
-            }
+            not_run_row(ev, write, nm, 4, note);
         } else {
             if (write) {
                 fprintf(ev->md, "| %s | %d | %.3f | %.3f | %.3f | %s |\n", nm, r.strides, r.stride_err_med, r.rms,
@@ -589,11 +579,10 @@ typedef struct {
     int n_fo, n_fs;
 } ipol_t;
 
-/* Index pair i of a JSON array of pairs into v; 0, or -1 when it is not
- * a pair of numbers. */
-static int json_pair(const cJSON *a, int i, long v[2])
+/* A JSON pair of numbers [x, y] into v; 0, or -1 when p is not one. */
+static int json_pair(const cJSON *p, long v[2])
 {
-    const cJSON *p = cJSON_GetArrayItem(a, i), *x = cJSON_GetArrayItem(p, 0), *y = cJSON_GetArrayItem(p, 1);
+    const cJSON *x = cJSON_GetArrayItem(p, 0), *y = cJSON_GetArrayItem(p, 1);
     if (!cJSON_IsArray(p) || !cJSON_IsNumber(x) || !cJSON_IsNumber(y)) {
         return -1;
     }
@@ -635,21 +624,13 @@ static int read_events(const char *path, long ev[][2], int max, const char *key,
         snprintf(why, why_size, "the events file is not valid JSON");
         return -1;
     }
-    a = cJSON_GetObjectItem(root, "TrialBoundaries");
-    if (!cJSON_IsArray(a) || cJSON_GetArraySize(a) < 2 || !cJSON_IsNumber(cJSON_GetArrayItem(a, 0)) ||
-        !cJSON_IsNumber(cJSON_GetArrayItem(a, 1))) {
+    if (json_pair(cJSON_GetObjectItem(root, "TrialBoundaries"), tb) != 0) {
         cJSON_Delete(root);
         snprintf(why, why_size, "the events file has no TrialBoundaries pair");
         return -1;
     }
-    tb[0] = (long)cJSON_GetArrayItem(a, 0)->valuedouble;
-    tb[1] = (long)cJSON_GetArrayItem(a, 1)->valuedouble;
-    /* a trial without a U-turn: an empty range */
-    a = cJSON_GetObjectItem(root, "UTurnBoundaries");
-    ub[0] = ub[1] = 0;
-    if (cJSON_IsArray(a) && cJSON_IsNumber(cJSON_GetArrayItem(a, 0)) && cJSON_IsNumber(cJSON_GetArrayItem(a, 1))) {
-        ub[0] = (long)cJSON_GetArrayItem(a, 0)->valuedouble;
-        ub[1] = (long)cJSON_GetArrayItem(a, 1)->valuedouble;
+    if (json_pair(cJSON_GetObjectItem(root, "UTurnBoundaries"), ub) != 0) {
+        ub[0] = ub[1] = 0; /* a trial without a U-turn: an empty range */
     }
     a = cJSON_GetObjectItem(root, key);
     if (!cJSON_IsArray(a)) {
@@ -664,7 +645,7 @@ static int read_events(const char *path, long ev[][2], int max, const char *key,
         return -1;
     }
     for (i = 0; i < n; i++) {
-        if (json_pair(a, i, ev[k]) != 0) {
+        if (json_pair(cJSON_GetArrayItem(a, i), ev[k]) != 0) {
             cJSON_Delete(root);
             snprintf(why, why_size, "%s[%d] is not a pair of sample indices", key, i);
             return -1;
@@ -749,9 +730,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                 ne = -1;
             }
             if (ne < 0) {
-                if (write) {
-                    not_run_row(ev, nm, 6, note);
-                }
+                not_run_row(ev, write, nm, 6, note);
                 continue;
             }
             ev->runs++;
@@ -759,9 +738,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             sc.gravity_mps2 = cfg->gravity_mps2;
             if (fnav_stance_init(&st, &sc) != FNAV_OK) {
                 fail(ev, path, note, sizeof note, "the stance detector refused its configuration");
-                if (write) {
-                    not_run_row(ev, nm, 6, note);
-                }
+                not_run_row(ev, write, nm, 6, note);
                 hx_log_free(&log);
                 continue;
             }
@@ -1092,7 +1069,7 @@ int hx_cmd_eval(int argc, char **argv)
             snprintf(p, sizeof p, "%s/xio_ngimu_gait/%.159s", ev.data, xio[i]);
             if (replay(&ev, p, &ev.cfg, 0.0, &t, &s, note, sizeof note) != 0 ||
                 no_closure(&ev, p, &s, &t, note, sizeof note)) {
-                not_run_row(&ev, xio[i], 9, note);
+                not_run_row(&ev, 1, xio[i], 9, note);
                 continue;
             }
             xio3[i] = s.end_3d_m;
@@ -1132,7 +1109,7 @@ int hx_cmd_eval(int argc, char **argv)
             other3[i] = other_hz[i] = (double)NAN;
             snprintf(p, sizeof p, "%s/%.300s", ev.data, other[i]);
             if (replay(&ev, p, &ev.cfg, 0.0, &t, &s, note, sizeof note) != 0) {
-                not_run_row(&ev, other[i], 8, note);
+                not_run_row(&ev, 1, other[i], 8, note);
                 continue;
             }
             other3[i] = s.end_3d_m;
