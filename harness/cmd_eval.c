@@ -182,6 +182,12 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
         hx_traj_free(t);
         return -1;
     }
+    if (t->axes.problem) {
+        /* a statistical verdict (hx_axes.h): noted in the walk's row, not a failure */
+        size_t len = strlen(note);
+        snprintf(note + len, note_size - len, "%sgyro axes do not match the accelerometer's (fits as %s)",
+                 len > 0 ? "; " : "", t->axes.best_map);
+    }
     hx_nav_summarize(t, s);
     return 0;
 }

@@ -97,6 +97,7 @@ typedef struct {
     FILE *csv;
     int csv_failed;
     hx_traj_t traj;
+    hx_axes_t *axes;              /* the axes check, as replay's (NULL: out of memory, not checked) */
     fnav_nav_frame_t last;
     int have_frame;
     /* plot */
@@ -122,6 +123,9 @@ static void on_nav_frame(live_t *L, const fnav_nav_frame_t *f)
         L->traj.cap = nc;
     }
     L->traj.f[L->traj.n++] = *f;
+    if (L->axes != NULL) {
+        hx_axes_frame(L->axes, f);
+    }
     L->last = *f;
     L->have_frame = 1;
 }
@@ -132,6 +136,9 @@ static void nav_push(live_t *L, const fnav_sample_t *s)
     if (!L->lctx.have_t0) {
         L->lctx.t0_ns = s->t_ns; /* CSV time is relative to the first sample, as in replay */
         L->lctx.have_t0 = 1;
+    }
+    if (L->axes != NULL) {
+        hx_axes_sample(L->axes, s);
     }
     if (fnav_nav_push(L->nav, s) != FNAV_OK) {
         /* rejected (NaN, time backwards): counted in the filter's stats, as in replay */
@@ -153,6 +160,11 @@ static void nav_finish(live_t *L)
     L->traj.window = L->nav->stance.win;
     L->traj.align = L->nav->align.result;
     L->traj.aligned = L->nav->aligned;
+    if (L->axes != NULL) {
+        hx_axes_result(L->axes, &L->traj.axes);
+    } else {
+        snprintf(L->traj.axes.msg, sizeof L->traj.axes.msg, "not checked: out of memory");
+    }
 }
 
 static void warn_limited(live_t *L, const char *msg)
@@ -414,6 +426,11 @@ static void live_free(live_t *L)
     free(L->hist.w);
     free(L->traj.f);
     L->traj.f = NULL;
+    if (L->axes != NULL) {
+        hx_axes_free(L->axes);
+        free(L->axes);
+        L->axes = NULL;
+    }
 }
 
 int hx_cmd_live(int argc, char **argv)
@@ -482,6 +499,10 @@ int hx_cmd_live(int argc, char **argv)
     memset(&L, 0, sizeof L);
     fnav_wire_decoder_init(&L.dec);
     L.nav = &nav;
+    L.axes = (hx_axes_t *)malloc(sizeof *L.axes);
+    if (L.axes != NULL) {
+        hx_axes_init(L.axes);
+    }
     L.record_path = hx_arg(&a, "--record");
     if (plot_every > 0.0) {
         L.hist.cap = 20000u;
@@ -604,6 +625,9 @@ int hx_cmd_live(int argc, char **argv)
             hx_nav_summary_t sum;
             hx_nav_summarize(&L.traj, &sum);
             if (L.traj.aligned) {
+                if (L.traj.axes.problem) {
+                    hx_warn(CMD, "%s: %s", a.pos[0], L.traj.axes.msg);
+                }
                 hx_nav_print_summary(sum_out, a.pos[0], &L.traj, &sum);
             }
             /* as replay's: written unaligned too ("aligned": false) */

@@ -113,6 +113,11 @@ int hx_cmd_replay(int argc, char **argv)
         hx_error("replay", "%s; outputs were still written, computed from the values as given", err);
         exit_code = HX_EXIT_DATA;
     }
+    if (rc != 2 && traj.axes.problem) {
+        /* a statistical verdict, not a physical impossibility like the
+         * units check: a warning, the exit status is the replay's */
+        hx_warn("replay", "%s: %s; outputs were computed from the axes as recorded", a.pos[0], traj.axes.msg);
+    }
     hx_nav_summarize(&traj, &sum);
     if (!hx_flag(&a, "--quiet")) {
         hx_nav_print_summary(csv == stdout ? stderr : stdout, a.pos[0], &traj, &sum);

@@ -412,6 +412,7 @@ typedef struct {
     long n_read;
     int sink_failed;
     double gyro_max_rps; /* largest |w| read: the units check */
+    hx_axes_t *axes;     /* the axes check (with traj), or NULL */
 } hx_port_ctx_t;
 
 static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
@@ -447,6 +448,9 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
             c->gyro_max_rps = sqrt(w2);
         }
         c->n_read++;
+        if (c->axes != NULL) {
+            hx_axes_sample(c->axes, s);
+        }
         if (c->progress && (c->n_read & 1023) == 0) {
             /* resampled: samples of a known total; streamed: the fraction of
              * the input file consumed */
@@ -478,6 +482,9 @@ static fnav_status_t hx_write(void *ctx, const fnav_nav_frame_t *f)
             t->cap = nc;
         }
         t->f[t->n++] = *f;
+    }
+    if (c->axes != NULL) {
+        hx_axes_frame(c->axes, f);
     }
     return FNAV_OK;
 }
@@ -596,6 +603,12 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     }
     fnav_linux_port_init(&pc.linux_port, &pc.lctx, r, csv);
     pc.traj = traj;
+    if (traj != NULL) {
+        pc.axes = (hx_axes_t *)malloc(sizeof *pc.axes); /* 160 KB: not on the stack; NULL: no check */
+        if (pc.axes != NULL) {
+            hx_axes_init(pc.axes);
+        }
+    }
     pc.progress = progress;
     port.ctx = &pc;
     port.read_sample = hx_read;
@@ -622,6 +635,15 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         traj->window = nav.stance.win;
         traj->align = nav.align.result;
         traj->aligned = nav.aligned;
+        if (pc.axes != NULL) {
+            hx_axes_result(pc.axes, &traj->axes);
+        } else {
+            snprintf(traj->axes.msg, sizeof traj->axes.msg, "not checked: out of memory");
+        }
+    }
+    if (pc.axes != NULL) {
+        hx_axes_free(pc.axes);
+        free(pc.axes);
     }
     if (r != NULL) {
         /* warnings collected while reading (assumed rates, cut-off lines) */
@@ -793,6 +815,13 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                    "detector\")\n",
                 100.0 * s->stance_fraction, s->strides, s->duration_s);
     }
+    if (t->axes.problem) {
+        fprintf(f, "axes              MISMATCH: swings end at %.2f m/s as recorded, %.2f m/s with the gyro read as %s "
+                   "(the warning above)\n",
+                t->axes.v_recorded_mps, t->axes.v_best_mps, t->axes.best_map);
+    } else {
+        fprintf(f, "axes              %s\n", t->axes.msg);
+    }
     fprintf(f, "timing            %u duplicates (dt = 0), %u gaps, %u time jumps, longest interval %.1f ms\n",
             st->duplicates, st->gaps, st->time_jumps, 1e3 * (double)st->max_gap_seen_s);
     fprintf(f, "health            %u NaN/Inf rejected, %u out of range rejected, %u backwards rejected, %u jitter, "
@@ -836,6 +865,18 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddNumberToObject(root, "strides", (double)s->strides);
     cJSON_AddNumberToObject(root, "stance_phases", (double)s->stance_phases);
     cJSON_AddItemToObject(root, "stance_fraction", num(s->stance_fraction));
+    {
+        cJSON *ax = cJSON_CreateObject();
+        int checked = t->axes.swings > 0 && t->axes.best_map[0] != '\0';
+        cJSON_AddNumberToObject(ax, "swings", (double)t->axes.swings);
+        cJSON_AddItemToObject(ax, "v_recorded_mps", num(checked ? t->axes.v_recorded_mps : (double)NAN));
+        cJSON_AddItemToObject(ax, "v_best_mps", num(checked ? t->axes.v_best_mps : (double)NAN));
+        cJSON_AddItemToObject(ax, "v_other_mps", num(checked ? t->axes.v_other_mps : (double)NAN));
+        cJSON_AddItemToObject(ax, "best_map", checked ? cJSON_CreateString(t->axes.best_map) : cJSON_CreateNull());
+        cJSON_AddItemToObject(ax, "problem", checked ? cJSON_CreateBool(t->axes.problem) : cJSON_CreateNull());
+        cJSON_AddStringToObject(ax, "message", t->axes.msg);
+        cJSON_AddItemToObject(root, "axes", ax);
+    }
     cJSON_AddNumberToObject(h, "samples", st->samples);
     cJSON_AddNumberToObject(h, "frames", st->frames);
     cJSON_AddNumberToObject(h, "nan_rejected", st->nan_inputs);

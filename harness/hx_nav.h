@@ -12,6 +12,7 @@
 #include <stdio.h>
 
 #include "footnav/fnav_nav.h"
+#include "hx_axes.h"
 #include "hx_cli.h"
 #include "hx_log.h"
 
@@ -68,6 +69,7 @@ typedef struct {
     long resample_dropped_dups;  /**< duplicates dropped by the resampler */
     fnav_align_result_t align;   /**< alignment result */
     int aligned;
+    hx_axes_result_t axes;       /**< the axes check (hx_axes.h) */
 } hx_traj_t;
 
 void hx_traj_free(hx_traj_t *t);

@@ -158,6 +158,45 @@ PY
     ); then pass "$rot: the same path ($msg)"; else fail "$rot changed the path: $msg"; fi
 done
 
+# --- the axes check (docs/harness.md, "Axes check"): a gyro axis flipped or
+# two swapped against the accelerometer is named with its fix, a warning with
+# exit 0; the walk as recorded and the turned mountings above pass it
+expect_exit 0 "replay the recorded walk with --json" "$H" replay "$T/m.csv" --json "$T/ax0.json" --quiet
+for axv in "flip:(gx, -gy, gz)" "swap:(gy, gx, gz)"; do
+    axn=${axv%%:*}
+    axw=${axv#*:}
+    /usr/bin/python3 - "$T/m.csv" "$T/ax_$axn.csv" "$axn" <<'PY'
+import sys, numpy as np
+d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
+g = [d['gx'], -d['gy'], d['gz']] if sys.argv[3] == 'flip' else [d['gy'], d['gx'], d['gz']]
+np.savetxt(sys.argv[2], np.column_stack([d['t'], d['ax'], d['ay'], d['az']] + g), delimiter=',',
+           header='t,ax,ay,az,gx,gy,gz', comments='', fmt=['%.9f'] + ['%.9g'] * 6)
+PY
+    expect_exit 0 "axes check: $axn, a warning, exit 0" "$H" replay "$T/ax_$axn.csv" --json "$T/ax_$axn.json"
+    expect_err "axes do not match the accelerometer's" "axes check: $axn is warned about"
+    expect_out "axes              MISMATCH" "axes check: $axn in the summary"
+    if /usr/bin/python3 -c "
+import json, sys
+a = json.load(open(sys.argv[1]))['axes']
+sys.exit(0 if a['problem'] is True and a['best_map'] == sys.argv[2] and a['v_recorded_mps'] > 3 * a['v_best_mps'] else 1)" "$T/ax_$axn.json" "$axw"; then
+        pass "axes check: $axn, JSON names the fix $axw"
+    else
+        fail "axes check: $axn JSON $(tr -d '\n' < "$T/ax_$axn.json" | sed 's/.*"axes"/"axes"/')"
+    fi
+done
+if /usr/bin/python3 -c "
+import json, sys
+a = json.load(open(sys.argv[1]))['axes']
+sys.exit(0 if a['problem'] is False and a['best_map'] == '(gx, gy, gz)' and a['swings'] >= 8 else 1)" "$T/ax0.json"; then
+    pass "axes check: the walk as recorded agrees"
+else
+    fail "axes check on the recorded walk: $(tr -d '\n' < "$T/ax0.json" | sed 's/.*"axes"/"axes"/')"
+fi
+expect_exit 0 "a turned mounting with --json" "$H" replay "$T/m_xyz.csv" --json "$T/axm.json" --quiet
+if grep -q '"problem":[[:space:]]*false' "$T/axm.json"; then pass "axes check: a turned mounting (both triads) agrees"; else fail "axes check flagged a turned mounting"; fi
+expect_exit 1 "a log too short to align, axes" "$H" replay "$T/two.csv" --json "$T/ax2.json" --quiet
+if grep -q '"problem":[[:space:]]*null' "$T/ax2.json" && grep -q 'not checked' "$T/ax2.json"; then pass "axes check: no verdict without swings (null)"; else fail "axes check without swings: $(tr -d '\n\t' < "$T/ax2.json")"; fi
+
 # --- `--json -`: the JSON alone on standard output (the summary moves to
 # standard error), the same document as --json FILE; not with --out -
 expect_exit 0 "replay --json -" "$H" replay vectors/walk.bin --json -

@@ -1,0 +1,69 @@
+/* The axes check: do the gyroscope's axes match the accelerometer's?
+ * (docs/harness.md, "Axes check")
+ *
+ * A log whose gyro axis is sign-flipped or swapped against the accelerometer
+ * (a left-handed triad, a wrong axis map in a logger) reads without any error
+ * and navigates into nonsense. Each swing between two stances is integrated
+ * from the accelerometer's tilt at the end of the stance, once for every
+ * signed permutation of the gyro axes (48: the recorded map, 23 other
+ * rotations and 24 reflections); the true map brings the foot back to rest,
+ * v = 0, at the next stance, a wrong one leaves metres per second. The check
+ * compares the median end speed of the recorded map with the best one.
+ * Streaming: samples in (hx_axes_sample, as read), the navigator's frames in
+ * (hx_axes_frame, in order, each after its sample), a verdict at the end. */
+#ifndef HX_AXES_H
+#define HX_AXES_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "footnav/footnav.h"
+
+#define HX_AXES_MAPS 48          /**< signed permutations of three axes */
+#define HX_AXES_RING 4096        /**< samples held until their frame arrives (the navigator's delay is far less) */
+
+typedef struct {
+    /* samples between read and frame */
+    int64_t t_ns[HX_AXES_RING];
+    float acc[HX_AXES_RING][3], gyr[HX_AXES_RING][3];
+    unsigned char zupt[HX_AXES_RING]; /* its frame had a ZUPT (set when matched) */
+    size_t n_in, n_used;         /* samples pushed / matched or passed */
+    size_t stance_run;           /* matched stance samples in a row, up to the newest */
+    /* the swing being integrated, one state per gyro map */
+    int in_swing;
+    int64_t t_swing_ns;
+    double g_mps2;               /* |f| of this swing's start tilt */
+    double C[HX_AXES_MAPS][3][3];
+    double v[HX_AXES_MAPS][3];
+    /* end speeds, swings x maps, m/s */
+    double *vend;
+    size_t nswing, cap;
+    int failed;                  /* out of memory: no verdict */
+} hx_axes_t;
+
+typedef struct {
+    size_t swings;               /**< swings of 0.2-2 s judged */
+    double v_recorded_mps;       /**< median end speed with the axes as recorded */
+    double v_best_mps;           /**< the smallest median end speed over the 48 maps */
+    double v_other_mps;          /**< the smallest over the 47 other maps than the recorded one: how far
+                                      the walk tells the recorded map from its nearest rival */
+    int best;                    /**< that map (0: as recorded) */
+    char best_map[40];           /**< e.g. "(gx, -gy, gz)" */
+    int problem;                 /**< 1: the recorded map is clearly not the gyro's */
+    char msg[320];               /**< the verdict, with the remedy when problem */
+} hx_axes_result_t;
+
+/** Start a check. */
+void hx_axes_init(hx_axes_t *a);
+/** A sample as it is read. */
+void hx_axes_sample(hx_axes_t *a, const fnav_sample_t *s);
+/** A frame of the navigator, in order, after its sample was pushed. */
+void hx_axes_frame(hx_axes_t *a, const fnav_nav_frame_t *f);
+/** The verdict over the swings so far. */
+void hx_axes_result(const hx_axes_t *a, hx_axes_result_t *r);
+void hx_axes_free(hx_axes_t *a);
+
+/** Signed permutation k (0..47; 0 the identity) applied to w: out_i = s_i w_p(i). */
+void hx_axes_map(int k, const double w[3], double out[3]);
+
+#endif
