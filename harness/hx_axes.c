@@ -190,8 +190,11 @@ static void start_swing(hx_axes_t *a, size_t n)
     int64_t t_end = a->t_ns[(n - 1u) % HX_AXES_RING];
     double wmin = norm3f(a->gyr[best % HX_AXES_RING]), f[3] = { 0.0, 0.0, 0.0 }, C[3][3];
     int k;
-    if (back + ahead >= HX_AXES_RING) {
-        back = HX_AXES_RING - ahead - 1u; /* older samples are overwritten */
+    if (back > HX_AXES_RING - ahead) {
+        back = HX_AXES_RING - ahead; /* older samples are overwritten (frames far behind the samples) */
+    }
+    if (back == 0u) {
+        return;
     }
     lo = n - back; /* the oldest stance sample held */
     for (j = n - 1u; j > lo; j--) {
@@ -253,8 +256,9 @@ void hx_axes_frame(hx_axes_t *a, const fnav_nav_frame_t *f)
     if (!stance && !a->in_swing && a->stance_run > 0) {
         start_swing(a, n);
     } else if (a->in_swing) {
-        integrate(a, i, 1e-9 * (double)(f->t_ns - a->t_ns[(n - 1u) % HX_AXES_RING]));
+        integrate(a, i, 1e-9 * (double)(f->t_ns - a->t_last_ns));
     }
+    a->t_last_ns = f->t_ns;
     if (stance) {
         if (a->in_swing) {
             end_swing(a, f->t_ns);

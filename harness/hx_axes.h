@@ -31,7 +31,7 @@ typedef struct {
     size_t stance_run;           /* matched stance samples in a row, up to the newest */
     /* the swing being integrated, one state per gyro map */
     int in_swing;
-    int64_t t_swing_ns;
+    int64_t t_swing_ns, t_last_ns; /* the swing's first frame; the last matched frame */
     double g_mps2;               /* |f| of this swing's start tilt */
     double C[HX_AXES_MAPS][3][3];
     double v[HX_AXES_MAPS][3];

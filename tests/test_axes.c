@@ -66,9 +66,11 @@ static void test_maps(void **state)
 }
 
 /* Walk of n steps: stance 0.4 s (f = g along z, w = 0), swing 0.5 s turning
- * about x (even steps) or y (odd) by theta(t) = A (1 - cos(2 pi t / T)) / 2
- * and back, in place: the specific force is gravity seen from the turned
- * body, f_b = R(theta)^T (0, 0, g). gyro_sign flips gx, swap exchanges gx and
+ * about the level body axis u = (cos phi, sin phi, 0), phi 30 deg (even
+ * steps) or 60 deg (odd), by theta(t) = A (1 - cos(2 pi t / T)) / 2 and back,
+ * in place: the specific force is gravity seen from the turned body,
+ * f_b = R(u, theta)^T (0, 0, g) = g (-u_y sin theta, u_x sin theta, cos theta),
+ * and the rate theta' u. gyro_sign flips gx, swap exchanges gx and
  * gy in the "recorded" samples. Frames reach the check lag samples late. */
 static void walk(hx_axes_t *a, int n, double gyro_sign, int swap, size_t lag)
 {
@@ -82,19 +84,18 @@ static void walk(hx_axes_t *a, int n, double gyro_sign, int swap, size_t lag)
             fnav_sample_t s;
             size_t step = i / per;
             double ts = (double)(i % per) / RATE_HZ - stance_s, w = 0.0, th = 0.0, f[3], gx, gy;
-            int about_y = (int)(step % 2u);
+            double phi = (step % 2u) ? M_PI / 3.0 : M_PI / 6.0, ux = cos(phi), uy = sin(phi);
             memset(&s, 0, sizeof s);
             s.t_ns = (int64_t)i * 2500000;
             if (ts > 0.0 && step < (size_t)n) {
                 th = amp * 0.5 * (1.0 - cos(2.0 * M_PI * ts / swing_s));
                 w = amp * 0.5 * (2.0 * M_PI / swing_s) * sin(2.0 * M_PI * ts / swing_s);
             }
-            /* R_x(th)^T (0,0,g) = (0, g sin th, g cos th); R_y(th)^T (0,0,g) = (-g sin th, 0, g cos th) */
-            f[0] = about_y ? -G_MPS2 * sin(th) : 0.0;
-            f[1] = about_y ? 0.0 : G_MPS2 * sin(th);
+            f[0] = -G_MPS2 * uy * sin(th);
+            f[1] = G_MPS2 * ux * sin(th);
             f[2] = G_MPS2 * cos(th);
-            gx = about_y ? 0.0 : w;
-            gy = about_y ? w : 0.0;
+            gx = w * ux;
+            gy = w * uy;
             s.accel_mps2[0] = (fnav_real_t)f[0];
             s.accel_mps2[1] = (fnav_real_t)f[1];
             s.accel_mps2[2] = (fnav_real_t)f[2];
@@ -153,6 +154,33 @@ static void test_flipped_and_swapped(void **state)
     hx_axes_free(&a);
 }
 
+/* frames as far behind their samples as the ring holds, or further (a
+ * navigator buffering a long alignment): swings whose samples were
+ * overwritten are dropped, the rest judged on their own samples */
+static void test_frames_behind_the_ring(void **state)
+{
+    static hx_axes_t a;
+    const size_t lags[] = { HX_AXES_RING + 100u, HX_AXES_RING - 1u, HX_AXES_RING - 200u };
+    size_t k;
+    (void)state;
+    for (k = 0; k < 3; k++) {
+        hx_axes_result_t r;
+        walk(&a, 14, -1.0, 0, lags[k]);
+        hx_axes_result(&a, &r);
+        assert_true(r.swings <= 14u);
+        if (r.swings >= 8u) {
+            /* whatever was judged was judged on the swing's own samples */
+            assert_int_equal(r.problem, 1);
+            assert_string_equal(r.best_map, "(-gx, gy, gz)");
+            assert_true(r.v_best_mps < 0.002);
+        }
+        if (k == 2) {
+            assert_int_equal(r.swings, 14); /* 0.5 s of stance held behind each frame: all judged */
+        }
+        hx_axes_free(&a);
+    }
+}
+
 static void test_too_few_swings(void **state)
 {
     static hx_axes_t a;
@@ -172,6 +200,7 @@ int main(void)
         cmocka_unit_test(test_maps),
         cmocka_unit_test(test_recorded_map_right),
         cmocka_unit_test(test_flipped_and_swapped),
+        cmocka_unit_test(test_frames_behind_the_ring),
         cmocka_unit_test(test_too_few_swings),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
