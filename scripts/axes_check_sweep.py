@@ -13,6 +13,16 @@ Two parts, both through bin/harness replay --json (the check's own code):
 
 Usage: /usr/bin/python3 scripts/axes_check_sweep.py [--data DIR] [--harness BIN]
        [--corrupt WALK...]
+
+The run in docs/harness.md ("Axes check"): without options, then with
+  --corrupt xio_ngimu_gait/short_walk.csv xio_ngimu_gait/long_walk.csv
+  openshoe_gx2/Measurement_100521_2_data_inert.txt
+  openshoe_gx2/Measurement_100521_31_data_inert.txt
+  pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_31_imu.csv
+  pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_35_imu.csv
+  pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-28-39_imu.csv
+  ipol_gait_xsens/1-1_lf.txt ipol_gait_xsens/1-5_lf.txt
+  openshoe_c_820hz/OpenShoeDataSet.txt
 """
 import argparse
 import glob
