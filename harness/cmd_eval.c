@@ -158,12 +158,15 @@ static void not_run_row(const ev_t *ev, int write, const char *name, int ncol, c
 }
 
 /* One replay; 0 ok (partial input accepted with a note), -1 failure (its
- * reason in note). */
-static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, double rate_hz, hx_traj_t *t,
+ * reason in note). axes: run the axes check (the tables' replays; the
+ * experiments' repeat the same walks and would spend half of eval's time on
+ * it). */
+static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, double rate_hz, int axes, hx_traj_t *t,
                   hx_nav_summary_t *s, char *note, size_t note_size)
 {
     char err[400], buf[400];
-    int rc = hx_nav_replay("eval", path, HX_FMT_AUTO, 0.0, cfg, rate_hz, NULL, t, 0, err, sizeof err);
+    int rc = hx_nav_replay("eval", path, HX_FMT_AUTO, 0.0, cfg, rate_hz, NULL, t, axes ? HX_REPLAY_AXES : 0u, err,
+                           sizeof err);
     ev->runs++;
     hx_progress_update(&ev->prog, (double)ev->runs);
     note[0] = '\0';
@@ -238,7 +241,7 @@ static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fna
         hx_nav_summary_t s;
         snprintf(path, sizeof path, "%s/%.159s", dir, names[i]);
         fmt_name(nm, sizeof nm, names[i], suffix);
-        if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0 ||
+        if (replay(ev, path, cfg, rate_hz, write, &t, &s, note, sizeof note) != 0 ||
             no_closure(ev, path, &s, &t, note, sizeof note)) {
             not_run_row(ev, write, nm, 8, note);
             continue;
@@ -288,7 +291,7 @@ static double closure_3d_m(ev_t *ev, const char *path, const fnav_nav_config_t *
     hx_traj_t t;
     hx_nav_summary_t s;
     char note[200];
-    if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0 ||
+    if (replay(ev, path, cfg, rate_hz, 0, &t, &s, note, sizeof note) != 0 ||
         no_closure(ev, path, &s, &t, note, sizeof note)) {
         return (double)NAN;
     }
@@ -427,7 +430,7 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
         if (rate_hz > 0.0) {
             /* resampled: the stride indices refer to the original samples */
             double in = 0.0;
-            if (replay(ev, path, cfg, rate_hz, &t, &s, note, sizeof note) != 0) {
+            if (replay(ev, path, cfg, rate_hz, write, &t, &s, note, sizeof note) != 0) {
                 not_run_row(ev, write, nm, 6, note);
                 continue;
             }
@@ -435,7 +438,7 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
             for (l = 0; l < (size_t)g.n; l++) {
                 g.idx[l] = (long)llround((double)g.idx[l] * rate_hz / in);
             }
-        } else if (replay(ev, path, cfg, 0.0, &t, &s, note, sizeof note) != 0) {
+        } else if (replay(ev, path, cfg, 0.0, write, &t, &s, note, sizeof note) != 0) {
             not_run_row(ev, write, nm, 6, note);
             continue;
         }
@@ -550,7 +553,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         }
         free(vx);
         free(vy);
-        if (replay(ev, path, cfg, 0.0, &t, &s, note, sizeof note) != 0) {
+        if (replay(ev, path, cfg, 0.0, write, &t, &s, note, sizeof note) != 0) {
             not_run_row(ev, write, nm, 4, note);
             continue;
         }
@@ -1073,7 +1076,7 @@ int hx_cmd_eval(int argc, char **argv)
             char vs[32];
             xio3[i] = (double)NAN;
             snprintf(p, sizeof p, "%s/xio_ngimu_gait/%.159s", ev.data, xio[i]);
-            if (replay(&ev, p, &ev.cfg, 0.0, &t, &s, note, sizeof note) != 0 ||
+            if (replay(&ev, p, &ev.cfg, 0.0, 1, &t, &s, note, sizeof note) != 0 ||
                 no_closure(&ev, p, &s, &t, note, sizeof note)) {
                 not_run_row(&ev, 1, xio[i], 9, note);
                 continue;
@@ -1114,7 +1117,7 @@ int hx_cmd_eval(int argc, char **argv)
             hx_nav_summary_t s;
             other3[i] = other_hz[i] = (double)NAN;
             snprintf(p, sizeof p, "%s/%.300s", ev.data, other[i]);
-            if (replay(&ev, p, &ev.cfg, 0.0, &t, &s, note, sizeof note) != 0) {
+            if (replay(&ev, p, &ev.cfg, 0.0, 1, &t, &s, note, sizeof note) != 0) {
                 not_run_row(&ev, 1, other[i], 8, note);
                 continue;
             }

@@ -160,11 +160,8 @@ static void nav_finish(live_t *L)
     L->traj.window = L->nav->stance.win;
     L->traj.align = L->nav->align.result;
     L->traj.aligned = L->nav->aligned;
-    if (L->axes != NULL) {
-        hx_axes_result(L->axes, &L->traj.axes);
-    } else {
-        snprintf(L->traj.axes.msg, sizeof L->traj.axes.msg, "not checked: out of memory");
-    }
+    hx_axes_finish(L->axes, &L->traj.axes);
+    L->axes = NULL;
 }
 
 static void warn_limited(live_t *L, const char *msg)
@@ -426,9 +423,9 @@ static void live_free(live_t *L)
     free(L->hist.w);
     free(L->traj.f);
     L->traj.f = NULL;
-    if (L->axes != NULL) {
-        hx_axes_free(L->axes);
-        free(L->axes);
+    if (L->axes != NULL) { /* an exit before nav_finish: free the check, its verdict unused */
+        hx_axes_result_t unused;
+        hx_axes_finish(L->axes, &unused);
         L->axes = NULL;
     }
 }
@@ -499,10 +496,7 @@ int hx_cmd_live(int argc, char **argv)
     memset(&L, 0, sizeof L);
     fnav_wire_decoder_init(&L.dec);
     L.nav = &nav;
-    L.axes = (hx_axes_t *)malloc(sizeof *L.axes);
-    if (L.axes != NULL) {
-        hx_axes_init(L.axes);
-    }
+    L.axes = hx_axes_new(); /* NULL: out of memory, not checked */
     L.record_path = hx_arg(&a, "--record");
     if (plot_every > 0.0) {
         L.hist.cap = 20000u;

@@ -93,7 +93,8 @@ int hx_cmd_replay(int argc, char **argv)
     for (i = 0; i < argc && len < sizeof cmdline; i++) {
         len += (size_t)snprintf(cmdline + len, sizeof cmdline - len, " %s", argv[i]);
     }
-    rc = hx_nav_replay("replay", a.pos[0], fmt, in_rate, &cfg, o.rate_hz, csv, &traj, 1, err, sizeof err);
+    rc = hx_nav_replay("replay", a.pos[0], fmt, in_rate, &cfg, o.rate_hz, csv, &traj, HX_REPLAY_PROGRESS | HX_REPLAY_AXES,
+                       err, sizeof err);
     if (csv != NULL && (csv == stdout ? fflush(csv) != 0 || ferror(csv) : fclose(csv) != 0) && rc >= 0) {
         snprintf(err, sizeof err, "cannot write %s", strcmp(out_path, "-") == 0 ? "standard output" : out_path);
         rc = -3;

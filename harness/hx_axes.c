@@ -1,4 +1,7 @@
-/* The axes check (hx_axes.h; docs/harness.md, "Axes check"). */
+/* The axes check (hx_axes.h; docs/harness.md, "Axes check"). The attitude
+ * and velocity of each map use the core's math (fnav_math.h) and its
+ * alignment formulas (fnav_align_from_means), in the navigator's frames:
+ * n is north-east-down, so at rest C_nb f_b = (0, 0, -g). */
 #include "hx_axes.h"
 
 #include <math.h>
@@ -6,29 +9,35 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hx_cli.h"
+
 #define SWING_MIN_S 0.2   /* shorter: a stance split by the detector */
 #define SWING_MAX_S 2.0   /* longer: not one step (a pause, a carried foot) */
 #define MIN_SWINGS 8      /* fewer: no verdict */
 /* The verdict: the recorded map's median end speed at least RATIO times the
- * best map's and MARGIN_MPS above it. On the 67 real walks of ../shared/data
- * the recorded map is the best on every one, and the next best map ends 1.11
- * times slower or more; with both triads right, true end speeds are 0.19-1.35
- * m/s (median over a walk). 1.5 and 0.2 m/s flag 356 of 376 wrong maps on 8 of
- * those walks, each with the right fix (scripts/axes_check_sweep.py). */
+ * best map's and MARGIN_MPS above it. On the 65 real walks of ../shared/data
+ * with 8 swings or more the recorded map is the best on every one, and the
+ * nearest rival ends 1.11 times slower or more; 1.5 and 0.2 m/s flag 450 of
+ * 470 wrong maps on 10 of those walks, each with the right fix
+ * (scripts/axes_check_sweep.py). */
 #define RATIO 1.5
 #define MARGIN_MPS 0.2
 #define STILL_S 0.5       /* the start: the stillest stance sample of the stance's last 0.5 s */
 #define TILT_S 0.01       /* its tilt: the specific force over the 10 ms up to it */
 
+static const char NOT_CHECKED_OOM[] = "not checked: out of memory";
+
 static const int PERM[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
 
-void hx_axes_map(int k, const double w[3], double out[3])
+fnav_vec3_t hx_axes_map(int k, fnav_vec3_t w)
 {
     const int *p = PERM[k / 8];
+    fnav_vec3_t o;
     int i;
     for (i = 0; i < 3; i++) {
-        out[i] = ((k >> i) & 1) ? -w[p[i]] : w[p[i]];
+        o.v[i] = ((k >> i) & 1) ? -w.v[p[i]] : w.v[p[i]];
     }
+    return o;
 }
 
 static void map_name(int k, char *buf, size_t size)
@@ -38,93 +47,21 @@ static void map_name(int k, char *buf, size_t size)
              (k & 4) ? "-" : "", 'x' + p[2]);
 }
 
-void hx_axes_init(hx_axes_t *a)
+hx_axes_t *hx_axes_new(void)
 {
-    memset(a, 0, sizeof *a);
+    return (hx_axes_t *)calloc(1, sizeof(hx_axes_t));
 }
 
 void hx_axes_sample(hx_axes_t *a, const fnav_sample_t *s)
 {
     size_t i = a->n_in % HX_AXES_RING;
-    int k;
     a->t_ns[i] = s->t_ns;
-    for (k = 0; k < 3; k++) {
-        a->acc[i][k] = (float)s->accel_mps2[k];
-        a->gyr[i][k] = (float)s->gyro_rps[k];
-    }
+    a->acc[i] = fnav_vec3_from(s->accel_mps2);
+    a->gyr[i] = fnav_vec3_from(s->gyro_rps);
     a->n_in++;
     if (a->n_in - a->n_used > HX_AXES_RING) {
         a->n_used = a->n_in - HX_AXES_RING; /* overwritten unmatched: skipped */
     }
-}
-
-/* Direction cosines C_nb of a level frame whose z is along f (up, since f
- * at rest is -g in a z-down frame, the sign is immaterial here: each map is
- * started from the same C and judged by |v|). */
-static void tilt(const double f[3], double C[3][3])
-{
-    double n = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-    double z[3], x[3], y[3], e[3] = { 0.0, 1.0, 0.0 }, m;
-    int i;
-    for (i = 0; i < 3; i++) {
-        z[i] = f[i] / n;
-    }
-    if (fabs(z[1]) > 0.9) {
-        e[0] = 1.0;
-        e[1] = 0.0;
-    }
-    x[0] = e[1] * z[2] - e[2] * z[1];
-    x[1] = e[2] * z[0] - e[0] * z[2];
-    x[2] = e[0] * z[1] - e[1] * z[0];
-    m = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-    for (i = 0; i < 3; i++) {
-        x[i] /= m;
-    }
-    y[0] = z[1] * x[2] - z[2] * x[1];
-    y[1] = z[2] * x[0] - z[0] * x[2];
-    y[2] = z[0] * x[1] - z[1] * x[0];
-    for (i = 0; i < 3; i++) {
-        C[0][i] = x[i];
-        C[1][i] = y[i];
-        C[2][i] = z[i];
-    }
-}
-
-/* C <- C exp([th x]) (Rodrigues). */
-static void rotate(double C[3][3], const double th[3])
-{
-    double a2 = th[0] * th[0] + th[1] * th[1] + th[2] * th[2], s, c, R[3][3], K[3][3], T[3][3];
-    int i, j, k;
-    if (a2 < 1e-8) {
-        s = 1.0 - a2 / 6.0;
-        c = 0.5 - a2 / 24.0;
-    } else {
-        double a = sqrt(a2);
-        s = sin(a) / a;
-        c = (1.0 - cos(a)) / a2;
-    }
-    K[0][0] = K[1][1] = K[2][2] = 0.0;
-    K[0][1] = -th[2];
-    K[0][2] = th[1];
-    K[1][0] = th[2];
-    K[1][2] = -th[0];
-    K[2][0] = -th[1];
-    K[2][1] = th[0];
-    for (i = 0; i < 3; i++) {
-        for (j = 0; j < 3; j++) {
-            double kk = 0.0;
-            for (k = 0; k < 3; k++) {
-                kk += K[i][k] * K[k][j];
-            }
-            R[i][j] = (i == j ? 1.0 : 0.0) + s * K[i][j] + c * kk;
-        }
-    }
-    for (i = 0; i < 3; i++) {
-        for (j = 0; j < 3; j++) {
-            T[i][j] = C[i][0] * R[0][j] + C[i][1] * R[1][j] + C[i][2] * R[2][j];
-        }
-    }
-    memcpy(C, T, sizeof T);
 }
 
 static void end_swing(hx_axes_t *a, int64_t t_ns)
@@ -146,38 +83,24 @@ static void end_swing(hx_axes_t *a, int64_t t_ns)
         a->cap = nc;
     }
     for (k = 0; k < HX_AXES_MAPS; k++) {
-        const double *v = a->v[k];
-        a->vend[a->nswing * HX_AXES_MAPS + (size_t)k] = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        a->vend[a->nswing * HX_AXES_MAPS + (size_t)k] = (double)fnav_vec3_norm(a->v_mps[k]);
     }
     a->nswing++;
 }
 
-/* One sample, every map: C <- C exp(P w dt), v <- v + (C f - g z) dt (z is
- * up along the start tilt's f). */
+/* One sample of ring slot `slot`, every map: the strapdown's first-order
+ * step, q <- q exp(P w dt), v <- v + (C_nb f + (0, 0, g)) dt. */
 static void integrate(hx_axes_t *a, size_t slot, double dt)
 {
-    double w[3], f[3], th[3];
-    int k, i;
-    for (i = 0; i < 3; i++) {
-        w[i] = (double)a->gyr[slot][i];
-        f[i] = (double)a->acc[slot][i];
-    }
+    fnav_real_t h = (fnav_real_t)dt;
+    fnav_vec3_t g_n = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), a->g_mps2);
+    int k;
     for (k = 0; k < HX_AXES_MAPS; k++) {
-        hx_axes_map(k, w, th);
-        for (i = 0; i < 3; i++) {
-            th[i] *= dt;
-        }
-        rotate(a->C[k], th);
-        for (i = 0; i < 3; i++) {
-            a->v[k][i] += (a->C[k][i][0] * f[0] + a->C[k][i][1] * f[1] + a->C[k][i][2] * f[2]) * dt;
-        }
-        a->v[k][2] -= a->g_mps2 * dt;
+        fnav_vec3_t th = fnav_vec3_scale(hx_axes_map(k, a->gyr[slot]), h);
+        a->q_nb[k] = fnav_quat_normalize(fnav_quat_mul(a->q_nb[k], fnav_quat_from_rotvec(th)));
+        a->v_mps[k] = fnav_vec3_add(
+            a->v_mps[k], fnav_vec3_scale(fnav_vec3_add(fnav_quat_rotate(a->q_nb[k], a->acc[slot]), g_n), h));
     }
-}
-
-static double norm3f(const float x[3])
-{
-    return sqrt((double)x[0] * (double)x[0] + (double)x[1] * (double)x[1] + (double)x[2] * (double)x[2]);
 }
 
 /* The swing begins at ring sample n (its first frame without a ZUPT): start
@@ -188,7 +111,9 @@ static void start_swing(hx_axes_t *a, size_t n)
 {
     size_t ahead = a->n_in - n, back = a->stance_run, lo, j, best = n - 1u, m = 0;
     int64_t t_end = a->t_ns[(n - 1u) % HX_AXES_RING];
-    double wmin = norm3f(a->gyr[best % HX_AXES_RING]), f[3] = { 0.0, 0.0, 0.0 }, C[3][3];
+    fnav_real_t wmin = fnav_vec3_norm(a->gyr[best % HX_AXES_RING]);
+    fnav_vec3_t f = fnav_vec3_zero();
+    fnav_align_result_t al;
     int k;
     if (back > HX_AXES_RING - ahead) {
         back = HX_AXES_RING - ahead; /* older samples are overwritten (frames far behind the samples) */
@@ -202,8 +127,8 @@ static void start_swing(hx_axes_t *a, size_t n)
         if (1e-9 * (double)(t_end - a->t_ns[q]) > STILL_S) {
             break;
         }
-        if (norm3f(a->gyr[q]) < wmin) {
-            wmin = norm3f(a->gyr[q]);
+        if (fnav_vec3_norm(a->gyr[q]) < wmin) {
+            wmin = fnav_vec3_norm(a->gyr[q]);
             best = j - 1u;
         }
     }
@@ -212,22 +137,20 @@ static void start_swing(hx_axes_t *a, size_t n)
         if (m > 0 && 1e-9 * (double)(a->t_ns[best % HX_AXES_RING] - a->t_ns[q]) > TILT_S) {
             break;
         }
-        for (k = 0; k < 3; k++) {
-            f[k] += (double)a->acc[q][k];
-        }
+        f = fnav_vec3_add(f, a->acc[q]);
         m++;
         if (j == lo) {
             break;
         }
     }
-    a->g_mps2 = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) / (double)m;
-    if (!(a->g_mps2 > 0.0)) {
+    f = fnav_vec3_scale(f, FNAV_R(1.0) / (fnav_real_t)m);
+    a->g_mps2 = fnav_vec3_norm(f);
+    if (fnav_align_from_means(f, fnav_vec3_zero(), a->g_mps2, &al) != FNAV_OK) {
         return;
     }
-    tilt(f, C);
     for (k = 0; k < HX_AXES_MAPS; k++) {
-        memcpy(a->C[k], C, sizeof C);
-        a->v[k][0] = a->v[k][1] = a->v[k][2] = 0.0;
+        a->q_nb[k] = al.q_nb;
+        a->v_mps[k] = fnav_vec3_zero();
     }
     a->in_swing = 1;
     a->t_swing_ns = a->t_ns[n % HX_AXES_RING];
@@ -238,7 +161,7 @@ static void start_swing(hx_axes_t *a, size_t n)
 
 void hx_axes_frame(hx_axes_t *a, const fnav_nav_frame_t *f)
 {
-    size_t n, i;
+    size_t n;
     int stance = (f->flags & FNAV_FRAME_ZUPT) != 0;
     /* its sample: the oldest unmatched one with its time stamp */
     while (a->n_used < a->n_in && a->t_ns[a->n_used % HX_AXES_RING] < f->t_ns) {
@@ -251,12 +174,10 @@ void hx_axes_frame(hx_axes_t *a, const fnav_nav_frame_t *f)
         return;
     }
     n = a->n_used++;
-    i = n % HX_AXES_RING;
-    a->zupt[i] = (unsigned char)stance;
     if (!stance && !a->in_swing && a->stance_run > 0) {
         start_swing(a, n);
     } else if (a->in_swing) {
-        integrate(a, i, 1e-9 * (double)(f->t_ns - a->t_last_ns));
+        integrate(a, n % HX_AXES_RING, 1e-9 * (double)(f->t_ns - a->t_last_ns));
     }
     a->t_last_ns = f->t_ns;
     if (stance) {
@@ -269,47 +190,36 @@ void hx_axes_frame(hx_axes_t *a, const fnav_nav_frame_t *f)
     }
 }
 
-static int cmp_double(const void *x, const void *y)
+static void verdict(const hx_axes_t *a, hx_axes_result_t *r)
 {
-    double a = *(const double *)x, b = *(const double *)y;
-    return (a > b) - (a < b);
-}
-
-void hx_axes_result(const hx_axes_t *a, hx_axes_result_t *r)
-{
-    double med[HX_AXES_MAPS];
-    double *col;
+    double med[HX_AXES_MAPS], *col;
     size_t i;
     int k;
-    memset(r, 0, sizeof *r);
     r->swings = a->nswing;
-    if (a->failed || a->nswing < MIN_SWINGS) {
-        snprintf(r->msg, sizeof r->msg, "not checked: %s", a->failed ? "out of memory" : "fewer than 8 swings");
+    if (a->nswing < MIN_SWINGS) {
+        snprintf(r->msg, sizeof r->msg, "not checked: fewer than %d swings", MIN_SWINGS);
         return;
     }
-    col = (double *)malloc(a->nswing * sizeof *col);
+    col = a->failed ? NULL : (double *)malloc(a->nswing * sizeof *col);
     if (col == NULL) {
-        snprintf(r->msg, sizeof r->msg, "not checked: out of memory");
+        snprintf(r->msg, sizeof r->msg, "%s", NOT_CHECKED_OOM);
         return;
     }
+    r->v_other_mps = (double)INFINITY;
     for (k = 0; k < HX_AXES_MAPS; k++) {
         for (i = 0; i < a->nswing; i++) {
             col[i] = a->vend[i * HX_AXES_MAPS + (size_t)k];
         }
-        qsort(col, a->nswing, sizeof *col, cmp_double);
-        med[k] = a->nswing % 2 ? col[a->nswing / 2] : 0.5 * (col[a->nswing / 2 - 1] + col[a->nswing / 2]);
+        med[k] = hx_median(col, (int)a->nswing);
         if (med[k] < med[r->best]) {
             r->best = k;
+        }
+        if (k > 0 && med[k] < r->v_other_mps) {
+            r->v_other_mps = med[k];
         }
     }
     free(col);
     r->v_recorded_mps = med[0];
-    r->v_other_mps = med[1];
-    for (k = 2; k < HX_AXES_MAPS; k++) {
-        if (med[k] < r->v_other_mps) {
-            r->v_other_mps = med[k];
-        }
-    }
     r->v_best_mps = med[r->best];
     map_name(r->best, r->best_map, sizeof r->best_map);
     r->problem = r->best != 0 && med[0] >= RATIO * med[r->best] && med[0] - med[r->best] >= MARGIN_MPS;
@@ -325,9 +235,14 @@ void hx_axes_result(const hx_axes_t *a, hx_axes_result_t *r)
     }
 }
 
-void hx_axes_free(hx_axes_t *a)
+void hx_axes_finish(hx_axes_t *a, hx_axes_result_t *r)
 {
+    memset(r, 0, sizeof *r);
+    if (a == NULL) {
+        snprintf(r->msg, sizeof r->msg, "%s", NOT_CHECKED_OOM);
+        return;
+    }
+    verdict(a, r);
     free(a->vend);
-    a->vend = NULL;
-    a->nswing = a->cap = 0;
+    free(a);
 }

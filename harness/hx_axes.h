@@ -25,16 +25,15 @@
 typedef struct {
     /* samples between read and frame */
     int64_t t_ns[HX_AXES_RING];
-    float acc[HX_AXES_RING][3], gyr[HX_AXES_RING][3];
-    unsigned char zupt[HX_AXES_RING]; /* its frame had a ZUPT (set when matched) */
+    fnav_vec3_t acc[HX_AXES_RING], gyr[HX_AXES_RING];
     size_t n_in, n_used;         /* samples pushed / matched or passed */
     size_t stance_run;           /* matched stance samples in a row, up to the newest */
-    /* the swing being integrated, one state per gyro map */
+    /* the swing being integrated, one state per gyro map (the core's math) */
     int in_swing;
     int64_t t_swing_ns, t_last_ns; /* the swing's first frame; the last matched frame */
-    double g_mps2;               /* |f| of this swing's start tilt */
-    double C[HX_AXES_MAPS][3][3];
-    double v[HX_AXES_MAPS][3];
+    fnav_real_t g_mps2;          /* |f| of this swing's start tilt */
+    fnav_quat_t q_nb[HX_AXES_MAPS];
+    fnav_vec3_t v_mps[HX_AXES_MAPS];
     /* end speeds, swings x maps, m/s */
     double *vend;
     size_t nswing, cap;
@@ -53,17 +52,17 @@ typedef struct {
     char msg[320];               /**< the verdict, with the remedy when problem */
 } hx_axes_result_t;
 
-/** Start a check. */
-void hx_axes_init(hx_axes_t *a);
+/** A new check (about 100 KB, so on the heap); NULL when out of memory. */
+hx_axes_t *hx_axes_new(void);
 /** A sample as it is read. */
 void hx_axes_sample(hx_axes_t *a, const fnav_sample_t *s);
 /** A frame of the navigator, in order, after its sample was pushed. */
 void hx_axes_frame(hx_axes_t *a, const fnav_nav_frame_t *f);
-/** The verdict over the swings so far. */
-void hx_axes_result(const hx_axes_t *a, hx_axes_result_t *r);
-void hx_axes_free(hx_axes_t *a);
+/** The verdict over the swings seen ("not checked: out of memory" for a
+ *  NULL check); frees the check. */
+void hx_axes_finish(hx_axes_t *a, hx_axes_result_t *r);
 
 /** Signed permutation k (0..47; 0 the identity) applied to w: out_i = s_i w_p(i). */
-void hx_axes_map(int k, const double w[3], double out[3]);
+fnav_vec3_t hx_axes_map(int k, fnav_vec3_t w);
 
 #endif

@@ -553,7 +553,7 @@ static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_
 }
 
 int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_rate, const fnav_nav_config_t *cfg,
-                  double rate_hz, FILE *csv, hx_traj_t *traj, int progress, char *err, size_t err_size)
+                  double rate_hz, FILE *csv, hx_traj_t *traj, unsigned flags, char *err, size_t err_size)
 {
     static fnav_nav_t nav; /* about 7.5 KB: not on the stack of a deep caller */
     hx_port_ctx_t pc;
@@ -603,23 +603,20 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     }
     fnav_linux_port_init(&pc.linux_port, &pc.lctx, r, csv);
     pc.traj = traj;
-    if (traj != NULL) {
-        pc.axes = (hx_axes_t *)malloc(sizeof *pc.axes); /* 160 KB: not on the stack; NULL: no check */
-        if (pc.axes != NULL) {
-            hx_axes_init(pc.axes);
-        }
+    if (traj != NULL && (flags & HX_REPLAY_AXES)) {
+        pc.axes = hx_axes_new(); /* NULL: out of memory, not checked */
     }
-    pc.progress = progress;
+    pc.progress = (flags & HX_REPLAY_PROGRESS) != 0;
     port.ctx = &pc;
     port.read_sample = hx_read;
     port.now_ns = hx_now;
     port.write_nav = hx_write;
     port.log = hx_logmsg;
-    if (progress) {
+    if (pc.progress) {
         hx_progress_start(&pc.prog, cmd, pc.total > 0.0 ? pc.total : 1.0);
     }
     st = fnav_nav_run(&nav, &port, 0);
-    if (progress) {
+    if (pc.progress) {
         hx_progress_end(&pc.prog);
     }
     if (st == FNAV_E_IO || pc.sink_failed) {
@@ -635,15 +632,11 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         traj->window = nav.stance.win;
         traj->align = nav.align.result;
         traj->aligned = nav.aligned;
-        if (pc.axes != NULL) {
-            hx_axes_result(pc.axes, &traj->axes);
+        if (flags & HX_REPLAY_AXES) {
+            hx_axes_finish(pc.axes, &traj->axes);
         } else {
-            snprintf(traj->axes.msg, sizeof traj->axes.msg, "not checked: out of memory");
+            snprintf(traj->axes.msg, sizeof traj->axes.msg, "not checked: not asked for");
         }
-    }
-    if (pc.axes != NULL) {
-        hx_axes_free(pc.axes);
-        free(pc.axes);
     }
     if (r != NULL) {
         /* warnings collected while reading (assumed rates, cut-off lines) */
@@ -867,7 +860,7 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddItemToObject(root, "stance_fraction", num(s->stance_fraction));
     {
         cJSON *ax = cJSON_CreateObject();
-        int checked = t->axes.swings > 0 && t->axes.best_map[0] != '\0';
+        int checked = t->axes.best_map[0] != '\0';
         cJSON_AddNumberToObject(ax, "swings", (double)t->axes.swings);
         cJSON_AddItemToObject(ax, "v_recorded_mps", num(checked ? t->axes.v_recorded_mps : (double)NAN));
         cJSON_AddItemToObject(ax, "v_best_mps", num(checked ? t->axes.v_best_mps : (double)NAN));

@@ -100,6 +100,9 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, hx_log_t *out, long *dup
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz, char *msg,
                      size_t msg_size);
 
+#define HX_REPLAY_PROGRESS 0x1u /**< hx_nav_replay: progress indicator */
+#define HX_REPLAY_AXES 0x2u     /**< hx_nav_replay: the axes check (48 integrations per swing sample) */
+
 /**
  * Replay one log through the Linux port into a navigator, sample by sample.
  * @param cmd       command name for messages
@@ -110,7 +113,9 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
  * @param rate_hz   resample to this rate first (0: no)
  * @param csv       trajectory CSV sink (may be NULL)
  * @param traj      frames kept (may be NULL)
- * @param progress  show a progress indicator
+ * @param flags     HX_REPLAY_PROGRESS: show a progress indicator;
+ *                  HX_REPLAY_AXES: run the axes check into traj->axes
+ *                  (hx_axes.h; without it traj->axes says "not checked")
  * @param err       message on failure
  * @return 0 complete; 1 the input had an error after some samples (frames up
  *         to it are valid, err says why); 2 complete, but the input is
@@ -119,7 +124,7 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
  *         -1 nothing could be replayed; -3 the CSV sink failed.
  */
 int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_rate, const fnav_nav_config_t *cfg,
-                  double rate_hz, FILE *csv, hx_traj_t *traj, int progress, char *err, size_t err_size);
+                  double rate_hz, FILE *csv, hx_traj_t *traj, unsigned flags, char *err, size_t err_size);
 
 /* ------------------------------------------------------------ summary */
 

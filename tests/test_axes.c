@@ -24,11 +24,11 @@ static void map_matrix(int k, double m[3][3])
 {
     int i, j;
     for (j = 0; j < 3; j++) {
-        double e[3] = { 0.0, 0.0, 0.0 }, o[3];
-        e[j] = 1.0;
-        hx_axes_map(k, e, o);
+        fnav_vec3_t e = fnav_vec3_zero(), o;
+        e.v[j] = FNAV_R(1.0);
+        o = hx_axes_map(k, e);
         for (i = 0; i < 3; i++) {
-            m[i][j] = o[i];
+            m[i][j] = (double)o.v[i];
         }
     }
 }
@@ -71,14 +71,16 @@ static void test_maps(void **state)
  * in place: the specific force is gravity seen from the turned body,
  * f_b = R(u, theta)^T (0, 0, g) = g (-u_y sin theta, u_x sin theta, cos theta),
  * and the rate theta' u. gyro_sign flips gx, swap exchanges gx and
- * gy in the "recorded" samples. Frames reach the check lag samples late. */
-static void walk(hx_axes_t *a, int n, double gyro_sign, int swap, size_t lag)
+ * gy in the "recorded" samples. Frames reach the check lag samples late.
+ * The verdict in r. */
+static void walk(int n, double gyro_sign, int swap, size_t lag, hx_axes_result_t *r)
 {
     const double stance_s = 0.4, swing_s = 0.5, amp = 1.0; /* 57 deg */
     size_t per = (size_t)((stance_s + swing_s) * RATE_HZ), total = (size_t)n * per + (size_t)(stance_s * RATE_HZ), i;
     fnav_nav_frame_t *fr = (fnav_nav_frame_t *)calloc(total, sizeof *fr);
+    hx_axes_t *a = hx_axes_new();
     assert_non_null(fr);
-    hx_axes_init(a);
+    assert_non_null(a);
     for (i = 0; i < total + lag; i++) {
         if (i < total) {
             fnav_sample_t s;
@@ -111,15 +113,14 @@ static void walk(hx_axes_t *a, int n, double gyro_sign, int swap, size_t lag)
         }
     }
     free(fr);
+    hx_axes_finish(a, r);
 }
 
 static void test_recorded_map_right(void **state)
 {
-    static hx_axes_t a;
     hx_axes_result_t r;
     (void)state;
-    walk(&a, 12, 1.0, 0, 0);
-    hx_axes_result(&a, &r);
+    walk(12, 1.0, 0, 0, &r);
     assert_int_equal(r.swings, 12);
     assert_int_equal(r.problem, 0);
     assert_int_equal(r.best, 0);
@@ -128,16 +129,13 @@ static void test_recorded_map_right(void **state)
      * integration's first-order rate */
     assert_true(r.v_recorded_mps < 0.002); /* 0.0002 observed */
     assert_non_null(strstr(r.msg, "agree"));
-    hx_axes_free(&a);
 }
 
 static void test_flipped_and_swapped(void **state)
 {
-    static hx_axes_t a;
     hx_axes_result_t r;
     (void)state;
-    walk(&a, 12, -1.0, 0, 37); /* frames 37 samples behind, as the navigator's delay */
-    hx_axes_result(&a, &r);
+    walk(12, -1.0, 0, 37, &r); /* frames 37 samples behind, as the navigator's delay */
     assert_int_equal(r.swings, 12);
     assert_int_equal(r.problem, 1);
     assert_string_equal(r.best_map, "(-gx, gy, gz)");
@@ -145,13 +143,10 @@ static void test_flipped_and_swapped(void **state)
     /* turning 57 deg the wrong way mis-projects gravity by metres per second */
     assert_true(r.v_recorded_mps > 1.0);
     assert_non_null(strstr(r.msg, "(-gx, gy, gz)"));
-    hx_axes_free(&a);
 
-    walk(&a, 12, 1.0, 1, 5);
-    hx_axes_result(&a, &r);
+    walk(12, 1.0, 1, 5, &r);
     assert_int_equal(r.problem, 1);
     assert_string_equal(r.best_map, "(gy, gx, gz)");
-    hx_axes_free(&a);
 }
 
 /* frames as far behind their samples as the ring holds, or further (a
@@ -159,14 +154,12 @@ static void test_flipped_and_swapped(void **state)
  * overwritten are dropped, the rest judged on their own samples */
 static void test_frames_behind_the_ring(void **state)
 {
-    static hx_axes_t a;
     const size_t lags[] = { HX_AXES_RING + 100u, HX_AXES_RING - 1u, HX_AXES_RING - 200u };
     size_t k;
     (void)state;
     for (k = 0; k < 3; k++) {
         hx_axes_result_t r;
-        walk(&a, 14, -1.0, 0, lags[k]);
-        hx_axes_result(&a, &r);
+        walk(14, -1.0, 0, lags[k], &r);
         assert_true(r.swings <= 14u);
         if (r.swings >= 8u) {
             /* whatever was judged was judged on the swing's own samples */
@@ -177,21 +170,17 @@ static void test_frames_behind_the_ring(void **state)
         if (k == 2) {
             assert_int_equal(r.swings, 14); /* 0.5 s of stance held behind each frame: all judged */
         }
-        hx_axes_free(&a);
     }
 }
 
 static void test_too_few_swings(void **state)
 {
-    static hx_axes_t a;
     hx_axes_result_t r;
     (void)state;
-    walk(&a, 7, -1.0, 0, 0);
-    hx_axes_result(&a, &r);
+    walk(7, -1.0, 0, 0, &r);
     assert_int_equal(r.swings, 7);
     assert_int_equal(r.problem, 0); /* no verdict on 7 swings, wrong as they are */
     assert_non_null(strstr(r.msg, "not checked"));
-    hx_axes_free(&a);
 }
 
 int main(void)
