@@ -27,6 +27,11 @@ static const hx_opt_t k_opts[] = {
     { "--phase", NULL, "the series is a phase (integral): analyse its differences x rate", 0 },
     { "--rate", "HZ", "sample rate (needed with --series; overrides a log's rate)", 0 },
     { "--unit", "TEXT", "unit of a series, for labels (default 'u')", 0 },
+    { "--fractional", "F0", "the series is a frequency around F0 (e.g. Hz): analyse (f - F0) / F0, the fractional "
+                             "frequency", 0 },
+    { "--estimator", "NAME", "exact (the whole record, fully overlapping at every tau, in double, as Stable32; "
+                             "default for --series) or streaming (the core's fixed-memory estimator, as on the "
+                             "sensor; default for a log)", 0 },
     { "--channels", "LIST", "channels of a log to analyse, e.g. gx,gy,gz (default ax,ay,az,gx,gy,gz)", 0 },
     { "--per-octave", "N", "tau points per octave: 1, 2 or 4 (default 4)", 0 },
     { "--max-tau-frac", "F", "largest tau identified, tabulated and plotted, as a fraction of the "
@@ -69,11 +74,16 @@ typedef struct {
     fnav_allan_result_t res[GRID_MAX];
     fnav_real_t slope[GRID_MAX];
     fnav_allan_noise_t noise[GRID_MAX];
+    int alpha[GRID_MAX];      /* power-law exponent behind the EDF */
+    int alpha_acf[GRID_MAX];  /* 1: alpha from the lag-1 autocorrelation (exact), 0: from the slope */
     double edf[GRID_MAX], lo[GRID_MAX], hi[GRID_MAX];
     double edf_n[GRID_MAX], lo_n[GRID_MAX], hi_n[GRID_MAX];
     fnav_allan_result_t sim_paper[GRID_MAX], sim_fit[GRID_MAX];
     int have_sim_paper, have_sim_fit;
     size_t nres;
+    double *x;       /* --estimator exact: the phase record x_0 .. x_n (sample units) */
+    size_t nx, capx;
+    double y0;       /* first sample, removed from the record (the variance ignores a constant) */
     hx_allan_ident_t id;
     int id_ok;
 } chan_t;
@@ -92,7 +102,12 @@ typedef struct {
     const char *source;
     char sensor[64];
     int is_series;
+    int exact;               /* --estimator exact */
+    double f0;               /* --fractional: nominal value, 0 if not given */
 } run_t;
+
+static const char k_exact_oom[] = "out of memory: --estimator exact keeps the whole record (8 bytes per sample "
+                                  "and channel); use --estimator streaming";
 
 static const struct {
     const char *name, *label;
@@ -138,12 +153,41 @@ static void free_run(run_t *R)
             free(R->ch[i].est[c]);
             R->ch[i].est[c] = NULL;
         }
+        free(R->ch[i].x);
+        R->ch[i].x = NULL;
     }
 }
 
+/* Append a sample to the phase record (--estimator exact).
+ * @return 0, or -2 when out of memory */
+static int record(chan_t *ch, double v)
+{
+    if (ch->nx + 1u >= ch->capx) {
+        const size_t cap = ch->capx == 0u ? 65536u : 2u * ch->capx;
+        double *x = (double *)realloc(ch->x, cap * sizeof *x);
+        if (x == NULL) {
+            return -2;
+        }
+        ch->x = x;
+        ch->capx = cap;
+    }
+    if (ch->nx == 0u) {
+        ch->y0 = v;
+        ch->x[ch->nx++] = 0.0;
+    }
+    ch->x[ch->nx] = ch->x[ch->nx - 1u] + (v - ch->y0);
+    ch->nx++;
+    return 0;
+}
+
+/* Push a sample into the channel's estimators (and its record).
+ * @return 0; -1 when the core refuses it (not finite, or beyond its input range); -2 when out of memory */
 static int push_all(run_t *R, chan_t *ch, double v)
 {
     int c;
+    if (R->exact && record(ch, v) != 0) {
+        return -2;
+    }
     for (c = 0; c < R->nchunk; c++) {
         if (fnav_allan_push(ch->est[c], (fnav_real_t)v) != FNAV_OK) {
             return -1;
@@ -249,7 +293,13 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         for (i = 0; i < R->nch; i++) {
             const int k = R->ch[i].src;
             const double v = k < 3 ? (double)s.accel_mps2[k] : (double)s.gyro_rps[k - 3];
-            if (push_all(R, &R->ch[i], v) != 0) {
+            const int pr_rc = push_all(R, &R->ch[i], v);
+            if (pr_rc == -2) {
+                hx_error(CMD, "%s: sample %lu: %s", path, (unsigned long)R->n + 1u, k_exact_oom);
+                rc = 1;
+                break;
+            }
+            if (pr_rc != 0) {
                 hx_error(CMD, "%s: sample %lu: channel %s is not finite (or beyond the float range)", path, (unsigned long)R->n + 1u,
                          R->ch[i].name);
                 rc = 1;
@@ -285,14 +335,33 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     return rc;
 }
 
+/* Push one value of a series. The first value is removed here, in double, so
+ * that a large offset (a 10 MHz frequency counted to the mHz) keeps its
+ * digits in the float core; the Allan variance ignores a constant. */
+static int push_series(run_t *R, const char *path, long lineno, double y, double *first, int *have_first)
+{
+    int prc;
+    if (!*have_first) {
+        *first = y;
+        *have_first = 1;
+    }
+    prc = push_all(R, &R->ch[0], y - *first);
+    if (prc == -2) {
+        hx_error(CMD, "%s:%ld: %s", path, lineno, k_exact_oom);
+    } else if (prc != 0) {
+        hx_error(CMD, "%s:%ld: %g differs from the first value, %g, by more than the estimator's input range (%g)",
+                 path, lineno, y, *first, FNAV_INPUT_MAX_ABS);
+    }
+    return prc;
+}
+
 static int read_series(run_t *R, const char *path, int phase)
 {
     FILE *f = fopen(path, "r");
     char line[256];
     long lineno = 0;
-    int data_lines = 0, rc = 0, have_prev = 0;
-    double prev = 0.0;
-    chan_t *ch = &R->ch[0];
+    int data_lines = 0, rc = 0, have_prev = 0, have_first = 0;
+    double prev = 0.0, first = 0.0;
     if (f == NULL) {
         hx_error(CMD, "%s: cannot open (%s)", path, strerror(errno));
         return -1;
@@ -343,9 +412,7 @@ static int read_series(run_t *R, const char *path, int phase)
         data_lines = 1;
         if (phase) {
             if (have_prev) {
-                if (push_all(R, ch, (v - prev) * R->rate_hz) != 0) {
-                    hx_error(CMD, "%s:%ld: the difference x rate is not finite or beyond the estimator's input "
-                                  "range (|y| <= %g)", path, lineno, FNAV_INPUT_MAX_ABS);
+                if (push_series(R, path, lineno, (v - prev) * R->rate_hz, &first, &have_first) != 0) {
                     rc = 1;
                     break;
                 }
@@ -354,9 +421,7 @@ static int read_series(run_t *R, const char *path, int phase)
             prev = v;
             have_prev = 1;
         } else {
-            if (push_all(R, ch, v) != 0) {
-                hx_error(CMD, "%s:%ld: %g is beyond the estimator's input range (|y| <= %g)", path, lineno, v,
-                         FNAV_INPUT_MAX_ABS);
+            if (push_series(R, path, lineno, R->f0 > 0.0 ? (v - R->f0) / R->f0 : v, &first, &have_first) != 0) {
                 rc = 1;
                 break;
             }
@@ -380,17 +445,44 @@ static double tau_max_samples(const run_t *R)
     return R->tau_max_frac * (double)R->n;
 }
 
+/* --estimator exact: every tau point from the channel's whole record, in
+ * double (the grid and the streaming estimators' rows are kept; their values,
+ * term counts and levels are replaced). */
+static void exact_table(chan_t *ch)
+{
+    size_t i;
+    for (i = 0; i < ch->nres; i++) {
+        fnav_allan_result_t *r = &ch->res[i];
+        uint32_t terms, terms_n;
+        const double ao = hx_allan_avar_record(ch->x, ch->nx, r->tau, 1, &terms);
+        const double an = hx_allan_avar_record(ch->x, ch->nx, r->tau, 0, &terms_n);
+        r->level = 0u;
+        r->stride = 1u;
+        r->lag = r->tau;
+        r->n_phase = (uint32_t)ch->nx;
+        r->terms = terms;
+        r->terms_nonoverlap = terms_n;
+        r->avar = (fnav_real_t)(ao * ch->scale * ch->scale);
+        r->avar_nonoverlap = (fnav_real_t)(an * ch->scale * ch->scale);
+    }
+}
+
 static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
 {
     size_t i;
     hx_allan_fit_opts_t o = hx_allan_fit_opts_default;
     collect(R, ch, ch->est, ch->res);
+    if (R->exact) {
+        exact_table(ch);
+    }
     fnav_allan_slopes(ch->res, ch->nres, ch->slope);
     for (i = 0; i < ch->nres; i++) {
         const fnav_allan_result_t *r = &ch->res[i];
         ch->noise[i] = fnav_allan_noise_from_slope(ch->slope[i]);
-        ch->edf[i] = hx_allan_point_edf(r, ch->noise[i], 1);
-        ch->edf_n[i] = hx_allan_point_edf(r, ch->noise[i], 0);
+        ch->alpha[i] = fnav_allan_noise_alpha(ch->noise[i]);
+        ch->alpha_acf[i] = R->exact && hx_allan_noise_id_acf(ch->x, ch->nx, r->tau, &ch->alpha[i]) == 0;
+        ch->edf[i] = hx_allan_point_edf_alpha(r, ch->alpha[i], 1);
+        ch->edf_n[i] = hx_allan_point_edf_alpha(r, ch->alpha[i], 0);
         if (hx_allan_ci(sqrt((double)r->avar), ch->edf[i], R->conf, &ch->lo[i], &ch->hi[i]) != 0) {
             ch->lo[i] = ch->hi[i] = (double)NAN;
         }
@@ -484,18 +576,18 @@ static void print_table(const run_t *R, const chan_t *ch)
     char b1[32], b2[32], b3[32], b4[32];
     printf("\n%s [%s], %lu samples at %g Hz (octave tau shown; every tau in --out)\n", ch->label, ch->unit,
            (unsigned long)R->n, R->rate_hz);
-    printf("  %10s %9s %12s %12s %12s %9s %12s %8s %6s  %s\n", "tau_s", "m", "oadev", "ci_lo", "ci_hi", "terms",
-           "adev", "terms_n", "slope", "noise");
+    printf("  %10s %9s %12s %12s %12s %9s %12s %8s %6s %5s  %s\n", "tau_s", "m", "oadev", "ci_lo", "ci_hi", "terms",
+           "adev", "terms_n", "slope", "alpha", "noise");
     for (i = 0; i < ch->nres; i++) {
         const fnav_allan_result_t *r = &ch->res[i];
         if (!in_range(R, r) || (r->tau & (r->tau - 1u)) != 0u) {
             continue;
         }
-        printf("  %10.4g %9lu %12s %12s %12s %9lu %12s %8lu %6.2f  %s\n", (double)r->tau / R->rate_hz,
+        printf("  %10.4g %9lu %12s %12s %12s %9lu %12s %8lu %6.2f %4d%s  %s\n", (double)r->tau / R->rate_hz,
                (unsigned long)r->tau, fmt_g(b1, sizeof b1, sqrt((double)r->avar)), fmt_g(b2, sizeof b2, ch->lo[i]),
                fmt_g(b3, sizeof b3, ch->hi[i]), (unsigned long)r->terms,
                fmt_g(b4, sizeof b4, sqrt((double)r->avar_nonoverlap)), (unsigned long)r->terms_nonoverlap,
-               (double)ch->slope[i], fnav_allan_noise_name(ch->noise[i]));
+               (double)ch->slope[i], ch->alpha[i], ch->alpha_acf[i] ? "a" : "s", fnav_allan_noise_name(ch->noise[i]));
     }
     print_regions(R, ch);
 }
@@ -560,11 +652,11 @@ static int write_csv(const run_t *R, const char *path)
         hx_error(CMD, "%s: cannot create (%s)", path, strerror(errno));
         return -1;
     }
-    fprintf(f, "# harness allan: %s, %lu samples at %g Hz; ADEV in the channel's unit; CI at %g confidence "
-               "(Greenhall EDF)\n",
-            R->source, (unsigned long)R->n, R->rate_hz, R->conf);
+    fprintf(f, "# harness allan: %s, %lu samples at %g Hz; %s estimator; ADEV in the channel's unit; CI at %g "
+               "confidence (Greenhall EDF)\n",
+            R->source, (unsigned long)R->n, R->rate_hz, R->exact ? "exact" : "streaming", R->conf);
     fprintf(f, "channel,unit,tau_s,m,level,stride,oadev,oadev_lo,oadev_hi,edf,terms,adev,adev_lo,adev_hi,edf_n,"
-               "terms_n,slope,noise,sim_paper,sim_fit,model_paper,model_fit\n");
+               "terms_n,slope,noise,sim_paper,sim_fit,model_paper,model_fit,alpha,alpha_from\n");
     for (i = 0; i < R->nch; i++) {
         const chan_t *ch = &R->ch[i];
         for (k = 0; k < ch->nres; k++) {
@@ -579,7 +671,7 @@ static int write_csv(const run_t *R, const char *path)
             if (ch->id_ok && ch->id.fit_ok) {
                 mf = sqrt(hx_noise_model_avar(&ch->id.fit, R->rate_hz, (double)r->tau));
             }
-            fprintf(f, "%s,%s,%s,%lu,%lu,%lu,%s,%s,%s,%s,%lu,%s,%s,%s,%s,%lu,%s,%s,%s,%s,%s,%s\n", ch->name, ch->unit,
+            fprintf(f, "%s,%s,%s,%lu,%lu,%lu,%s,%s,%s,%s,%lu,%s,%s,%s,%s,%lu,%s,%s,%s,%s,%s,%s,%d,%s\n", ch->name, ch->unit,
                     fmt_g(b[0], 32, (double)r->tau / R->rate_hz), (unsigned long)r->tau, (unsigned long)r->level,
                     (unsigned long)r->stride, fmt_g(b[1], 32, sqrt((double)r->avar)), fmt_g(b[2], 32, ch->lo[k]),
                     fmt_g(b[3], 32, ch->hi[k]), fmt_g(b[4], 32, ch->edf[k]), (unsigned long)r->terms,
@@ -588,7 +680,7 @@ static int write_csv(const run_t *R, const char *path)
                     fmt_g(b[9], 32, (double)ch->slope[k]), fnav_allan_noise_name(ch->noise[k]),
                     fmt_g(b[10], 32, ch->have_sim_paper ? sqrt((double)ch->sim_paper[k].avar) : (double)NAN),
                     fmt_g(b[11], 32, ch->have_sim_fit ? sqrt((double)ch->sim_fit[k].avar) : (double)NAN),
-                    fmt_g(b[12], 32, mp), fmt_g(b[13], 32, mf));
+                    fmt_g(b[12], 32, mp), fmt_g(b[13], 32, mf), ch->alpha[k], ch->alpha_acf[k] ? "acf" : "slope");
         }
     }
     if (fclose(f) != 0) {
@@ -638,7 +730,11 @@ static int write_json(const run_t *R, const char *path)
     cJSON_AddNumberToObject(root, "samples", (double)R->n);
     cJSON_AddNumberToObject(root, "tau_max_s", tau_max_samples(R) / R->rate_hz);
     cJSON_AddNumberToObject(root, "confidence", R->conf);
+    cJSON_AddStringToObject(root, "estimator", R->exact ? "exact" : "streaming");
     cJSON_AddNumberToObject(root, "estimator_bytes_per_channel", (double)sizeof(fnav_allan_t));
+    if (R->f0 > 0.0) {
+        cJSON_AddNumberToObject(root, "fractional_f0", R->f0);
+    }
     arr = cJSON_AddArrayToObject(root, "channels");
     for (i = 0; i < R->nch; i++) {
         const chan_t *ch = &R->ch[i];
@@ -687,6 +783,8 @@ static int write_json(const run_t *R, const char *path)
             cJSON_AddNumberToObject(e, "terms_n", (double)r->terms_nonoverlap);
             json_num(e, "slope", (double)ch->slope[k]);
             cJSON_AddStringToObject(e, "noise", fnav_allan_noise_name(ch->noise[k]));
+            cJSON_AddNumberToObject(e, "alpha", (double)ch->alpha[k]);
+            cJSON_AddStringToObject(e, "alpha_from", ch->alpha_acf[k] ? "acf" : "slope");
             if (ch->have_sim_paper) {
                 json_num(e, "sim_paper", sqrt((double)ch->sim_paper[k].avar));
             }
@@ -965,7 +1063,7 @@ int hx_cmd_allan(int argc, char **argv)
     int rc, i, exit_code = HX_EXIT_OK, input_rc;
     double rate_opt = 0.0, seed_d = 1.0, nsim_d = 0.0;
     long per_octave = 4;
-    const char *series, *path;
+    const char *series, *path, *s_est;
     char name[FNAV_PROFILE_NAME_MAX];
 
     rc = hx_args_parse(&k_spec, argc, argv, &a);
@@ -1019,6 +1117,23 @@ int hx_cmd_allan(int argc, char **argv)
         hx_error(CMD, "--phase applies to --series only");
         free(R);
         return HX_EXIT_USAGE;
+    }
+    if (hx_arg(&a, "--fractional") != NULL &&
+        (series == NULL || hx_flag(&a, "--phase") || hx_arg_double(&a, "--fractional", 1e-300, 1e300, &R->f0) != 0)) {
+        if (series == NULL || hx_flag(&a, "--phase")) {
+            hx_error(CMD, "--fractional applies to a --series of frequencies (not a log, not --phase)");
+        }
+        free(R);
+        return HX_EXIT_USAGE;
+    }
+    R->exact = series != NULL;
+    if ((s_est = hx_arg(&a, "--estimator")) != NULL) {
+        if (strcmp(s_est, "exact") != 0 && strcmp(s_est, "streaming") != 0) {
+            hx_error(CMD, "--estimator must be exact or streaming");
+            free(R);
+            return HX_EXIT_USAGE;
+        }
+        R->exact = strcmp(s_est, "exact") == 0;
     }
     setup_grid(R, per_octave);
     if (series != NULL) {
@@ -1090,9 +1205,14 @@ int hx_cmd_allan(int argc, char **argv)
     }
 
     if (!hx_flag(&a, "--quiet")) {
-        printf("harness allan: %s (%s), %lu samples at %g Hz, %d tau points, estimator %lu bytes per channel\n",
-               R->source, R->sensor, (unsigned long)R->n, R->rate_hz, (int)R->ngrid,
-               (unsigned long)(sizeof(fnav_allan_t) * (size_t)R->nchunk));
+        printf("harness allan: %s (%s), %lu samples at %g Hz, %d tau points, ", R->source, R->sensor,
+               (unsigned long)R->n, R->rate_hz, (int)R->ngrid);
+        if (R->exact) {
+            printf("exact estimator (the whole record in double, fully overlapping at every tau)\n");
+        } else {
+            printf("streaming estimator, %lu bytes per channel\n",
+                   (unsigned long)(sizeof(fnav_allan_t) * (size_t)R->nchunk));
+        }
         for (i = 0; i < R->nch; i++) {
             print_table(R, &R->ch[i]);
         }

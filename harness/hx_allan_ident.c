@@ -113,7 +113,11 @@ int hx_allan_ci(double dev, double edf, double conf, double *lo, double *hi)
 
 double hx_allan_point_edf(const fnav_allan_result_t *r, fnav_allan_noise_t type, int overlapping)
 {
-    const int alpha = fnav_allan_noise_alpha(type);
+    return hx_allan_point_edf_alpha(r, fnav_allan_noise_alpha(type), overlapping);
+}
+
+double hx_allan_point_edf_alpha(const fnav_allan_result_t *r, int alpha, int overlapping)
+{
     if (overlapping) {
         return r->terms > 0u ? fnav_allan_edf(alpha, r->lag, r->n_phase, 1) : -1.0;
     }
@@ -122,6 +126,136 @@ double hx_allan_point_edf(const fnav_allan_result_t *r, fnav_allan_noise_t type,
         return -1.0;
     }
     return fnav_allan_edf(alpha, r->tau, (uint32_t)((uint64_t)(r->n_phase - 1u) * r->stride + 1u), 0);
+}
+
+double hx_allan_avar_record(const double *x, size_t n, uint32_t m, int overlapping, uint32_t *terms)
+{
+    const size_t stride = overlapping ? 1u : (size_t)m;
+    double sum = 0.0;
+    size_t i, k = 0;
+    *terms = 0u;
+    if (m == 0u || n <= 2u * (size_t)m) {
+        return (double)NAN;
+    }
+    for (i = 0; i + 2u * (size_t)m < n; i += stride) {
+        const double d = x[i + 2u * (size_t)m] - 2.0 * x[i + m] + x[i];
+        sum += d * d;
+        k++;
+    }
+    *terms = (uint32_t)k;
+    return sum / (2.0 * (double)m * (double)m * (double)k);
+}
+
+/* Lag-1 autocorrelation of z_0..z_{n-1} about its mean. */
+static double lag1_acf(const double *z, size_t n)
+{
+    double mean = 0.0, num = 0.0, den = 0.0;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        mean += z[i];
+    }
+    mean /= (double)n;
+    for (i = 0; i < n; i++) {
+        const double d = z[i] - mean;
+        den += d * d;
+        if (i + 1u < n) {
+            num += d * (z[i + 1u] - mean);
+        }
+    }
+    return den > 0.0 ? num / den : 0.0;
+}
+
+/* Barnes' bias function B1(N, mu): the expected ratio of the standard
+ * variance of N frequency averages to their Allan variance for
+ * S_y ~ f^alpha, mu = -alpha - 1 (NIST TN 375, 1969; SP 1065 sec. 5.6). */
+static double b1_theory(double N, double mu)
+{
+    if (fabs(mu) < 1e-12) {
+        return N * log(N) / (2.0 * (N - 1.0) * log(2.0));
+    }
+    return N * (1.0 - pow(N, mu)) / (2.0 * (N - 1.0) * (1.0 - pow(2.0, mu)));
+}
+
+/* B1 ratio noise identification for few averages: alpha -2, -1 or 0, or 2
+ * for phase noise (mu = -2), which B1 cannot split into white and flicker. */
+static int noise_id_b1(const double *x, size_t len, uint32_t m, int *alpha)
+{
+    double mean = 0.0, var = 0.0, avar = 0.0, b1, best = 0.0;
+    size_t i;
+    int mu;
+    for (i = 0; i < len; i++) {
+        mean += (x[(i + 1u) * m] - x[i * m]) / (double)m;
+    }
+    mean /= (double)len;
+    for (i = 0; i < len; i++) {
+        const double y = (x[(i + 1u) * m] - x[i * m]) / (double)m;
+        var += (y - mean) * (y - mean);
+        if (i + 1u < len) {
+            const double dy = (x[(i + 2u) * m] - x[(i + 1u) * m]) / (double)m - y;
+            avar += dy * dy;
+        }
+    }
+    var /= (double)(len - 1u);
+    avar /= 2.0 * (double)(len - 1u);
+    if (!(avar > 0.0)) {
+        return -1;
+    }
+    b1 = var / avar;
+    /* the mu whose B1 is nearest on a log scale (boundaries at the geometric means) */
+    *alpha = 2;
+    for (mu = 1; mu >= -2; mu--) {
+        const double d = fabs(log(b1 / b1_theory((double)len, (double)mu)));
+        if (mu == 1 || d < best) {
+            best = d;
+            *alpha = mu == -2 ? 2 : -mu - 1;
+        }
+    }
+    return 0;
+}
+
+int hx_allan_noise_id_acf(const double *x, size_t n, uint32_t m, int *alpha)
+{
+    const size_t len = m > 0u && n > 0u ? (n - 1u) / m : 0u;
+    double *z, sx = 0.0, sxx = 0.0, sz = 0.0, sxz = 0.0, slope, icpt, den, delta = 0.0;
+    size_t i, k = len;
+    int d, a;
+    if (len < HX_ACF_MIN_POINTS) {
+        return len >= HX_B1_MIN_POINTS ? noise_id_b1(x, len, m, alpha) : -1;
+    }
+    z = (double *)malloc(len * sizeof *z);
+    if (z == NULL) {
+        return -1;
+    }
+    /* frequency averaged over m (non-overlapping): phase differences / m */
+    for (i = 0; i < len; i++) {
+        z[i] = (x[(i + 1u) * m] - x[i * m]) / (double)m;
+        sx += (double)i;
+        sxx += (double)i * (double)i;
+        sz += z[i];
+        sxz += (double)i * z[i];
+    }
+    /* remove the least-squares line (a frequency drift) */
+    den = (double)len * sxx - sx * sx;
+    slope = den > 0.0 ? ((double)len * sxz - sx * sz) / den : 0.0;
+    icpt = (sz - slope * sx) / (double)len;
+    for (i = 0; i < len; i++) {
+        z[i] -= icpt + slope * (double)i;
+    }
+    for (d = 0;; d++) {
+        const double r1 = lag1_acf(z, k);
+        delta = r1 > -0.999 ? r1 / (1.0 + r1) : -999.0; /* r1 -> -1: strongly alternating, alpha +2 */
+        if (delta < 0.25 || d >= 2) {
+            break;
+        }
+        for (i = 0; i + 1u < k; i++) {
+            z[i] = z[i + 1u] - z[i];
+        }
+        k--;
+    }
+    free(z);
+    a = -(int)lround(2.0 * delta) - 2 * d;
+    *alpha = a < -2 ? -2 : (a > 2 ? 2 : a);
+    return 0;
 }
 
 /* ------------------------------------------------------------ fit */

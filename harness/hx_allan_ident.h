@@ -141,6 +141,49 @@ int hx_allan_ci(double dev, double edf, double conf, double *lo, double *hi);
  */
 double hx_allan_point_edf(const fnav_allan_result_t *r, fnav_allan_noise_t type, int overlapping);
 
+/**
+ * Allan variance at averaging factor m from a whole phase record x_0..x_{n-1}
+ * (x_k = sum of the first k samples, any constant removed), offline and in
+ * double: the fully overlapping estimator (stride 1, NIST SP 1065 eq. 11,
+ * n - 2m terms: the numbers and term counts Stable32 prints at every tau)
+ * or the non-overlapping one (stride m, eq. 7, floor((n - 1)/m) - 1 terms).
+ * The core's streaming estimator gives the same at tau <= 255 samples and
+ * a stride-2^j estimate beyond (docs/allan.md, "Cascade beyond").
+ * @param terms  out: the number of terms (0: none, and the result is NaN)
+ */
+double hx_allan_avar_record(const double *x, size_t n, uint32_t m, int overlapping, uint32_t *terms);
+
+/** Fewest averaged values the lag-1 autocorrelation noise identification uses. */
+#define HX_ACF_MIN_POINTS 30u
+/** Fewest averaged values the B1-ratio identification (below HX_ACF_MIN_POINTS) uses. */
+#define HX_B1_MIN_POINTS 4u
+
+/**
+ * Power-law noise exponent alpha (S_y(f) ~ f^alpha) at averaging factor m
+ * by the lag-1 autocorrelation method (W. J. Riley and C. A. Greenhall,
+ * "Power law noise identification using the lag 1 autocorrelation", 18th
+ * EFTF, 2004; the method Stable32 uses): the frequency averaged over m
+ * (non-overlapping) and detrended (least-squares line) is differenced d
+ * times until delta = r1 / (1 + r1) < 0.25 (r1: its lag-1 autocorrelation)
+ * or d = 2; alpha = -round(2 delta) - 2 d, limited to -2..+2. Unlike the
+ * slope of ADEV it tells flicker phase (+1) from white phase (+2) noise.
+ * With fewer than HX_ACF_MIN_POINTS averages (but HX_B1_MIN_POINTS or more)
+ * it uses Barnes' B1 ratio (standard over Allan variance of the averages)
+ * against its expected value for alpha = -2, -1, 0 and phase noise, nearest
+ * on a log scale; B1 cannot tell white from flicker phase noise, and gives +2
+ * for both (Stable32 then also looks at MVAR / AVAR, which is not done here).
+ * @param x      phase record x_0..x_{n-1} (hx_allan_avar_record())
+ * @param alpha  out: the integer exponent
+ * @return 0, or -1 when fewer than HX_B1_MIN_POINTS averages exist or out of memory
+ */
+int hx_allan_noise_id_acf(const double *x, size_t n, uint32_t m, int *alpha);
+
+/**
+ * EDF of a table entry for a given alpha (Greenhall; fnav_allan_edf()).
+ * @param overlapping 1 for the overlapping estimate, 0 for the non-overlapping one
+ */
+double hx_allan_point_edf_alpha(const fnav_allan_result_t *r, int alpha, int overlapping);
+
 /* ------------------------------------------------------------ simulation */
 
 /** Streaming simulator of a noise model: e_k = b_k + v_k (+ quantisation,

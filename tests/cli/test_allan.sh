@@ -17,9 +17,12 @@ expect_exit 2 "series without rate" "$H" allan --series /dev/null
 expect_exit 2 "log and series" "$H" allan x.csv --series y.txt --rate 1
 expect_exit 2 "bad per-octave" "$H" allan --series x --rate 1 --per-octave 3
 expect_exit 1 "missing file" "$H" allan "$T/nope.csv"
-printf "1e30\n1\n2\n" > "$T/big.txt"
+printf "1\n1e30\n2\n" > "$T/big.txt"
 expect_exit 1 "series value beyond the input range" "$H" allan --series "$T/big.txt" --rate 100
-expect_err "big.txt:1: 1e+30 is beyond" "the rejected value is named with its line"
+expect_err "big.txt:2: 1e+30 differs from the first value, 1, by more than" "the rejected value is named with its line"
+expect_exit 2 "--fractional with --phase" "$H" allan --series "$T/big.txt" --rate 1 --phase --fractional 1e7
+expect_exit 2 "--fractional of a log" "$H" allan vectors/walk.bin --fractional 1e7
+expect_exit 2 "bad --estimator" "$H" allan --series "$T/big.txt" --rate 1 --estimator fast
 expect_exit 2 "empty --channels" "$H" allan vectors/walk.bin --channels ,
 expect_err "no channel named" "empty --channels explained"
 expect_exit 1 "missing series" "$H" allan --series "$T/nope.txt" --rate 1
@@ -41,6 +44,75 @@ expect_exit 3 "unwritable output" "$H" allan --series "$T/bad.txt" --rate 10 --n
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 10; i++) printf "%.2f,0.1,0.2,9.8,0.01,0.02,0.0%d\n", i / 100, i }' >"$T/tiny.csv"
 expect_exit 1 "too short for a profile" "$H" allan "$T/tiny.csv" --quiet --profile "$T/tiny.profile" --plot "$T/tiny.png"
 [ -s "$T/tiny.png" ] && [ ! -e "$T/tiny.profile" ] && pass "plot without profile" || fail "tiny outputs"
+
+# Exact estimator against numpy (double, every tau, both estimators, term counts) on a 10 MHz
+# frequency counted to the mHz, as counters log it: the offset must not eat the float core's digits.
+"$PY" - "$T/f.txt" <<'PYEOF'
+import sys, numpy as np
+rng = np.random.default_rng(7)
+n = 6000
+y = 7.6e-4 * rng.standard_normal(n) + 2e-5 * np.cumsum(rng.standard_normal(n))
+np.savetxt(sys.argv[1], 1e7 + 0.127 + y, fmt="%.9f", header="frequency, Hz")
+PYEOF
+expect_exit 0 "10 MHz series, exact, fractional" "$H" allan --series "$T/f.txt" --rate 1 --fractional 1e7 --no-sim \
+    --out "$T/f.csv"
+expect_exit 0 "10 MHz series, exact, in Hz" "$H" allan --series "$T/f.txt" --rate 1 --no-sim --quiet --out "$T/fhz.csv"
+expect_exit 0 "10 MHz series, streaming" "$H" allan --series "$T/f.txt" --rate 1 --no-sim --quiet \
+    --estimator streaming --out "$T/fs.csv"
+if "$PY" - "$T/f.txt" "$T/f.csv" "$T/fhz.csv" "$T/fs.csv" <<'PYEOF'
+import sys, numpy as np
+f = np.loadtxt(sys.argv[1])
+y = f / 1e7 - 1.0                      # fractional frequency, as allantools' frequency2fractional
+x = np.concatenate([[0.0], np.cumsum(y - y[0])])
+def rows(path):
+    out = {}
+    for line in open(path):
+        if line.startswith("#") or line.startswith("channel"):
+            continue
+        c = line.strip().split(",")
+        out[int(c[3])] = c
+    return out
+ex, hz, st = rows(sys.argv[2]), rows(sys.argv[3]), rows(sys.argv[4])
+n = len(y)
+bad = []
+assert len(ex) >= 20, len(ex)
+for m, c in ex.items():
+    d = x[2 * m:] - 2 * x[m:-m] + x[:-2 * m]
+    dn = d[::m]
+    oadev, adev = np.sqrt(np.mean(d * d) / (2.0 * m * m)), np.sqrt(np.mean(dn * dn) / (2.0 * m * m))
+    # the CSV prints 6 significant digits: rounding is up to 5e-6 relative
+    if abs(float(c[6]) / oadev - 1) > 5e-6 or int(c[10]) != n + 1 - 2 * m or int(c[4]) != 0:
+        bad.append(("oadev", m, c[6], oadev, c[10]))
+    if abs(float(c[11]) / adev - 1) > 5e-6 or int(c[15]) != len(dn):
+        bad.append(("adev", m, c[11], adev, c[15]))
+    if abs(float(hz[m][6]) / (1e7 * oadev) - 1) > 5e-6:
+        bad.append(("Hz", m, hz[m][6], 1e7 * oadev))
+# the streaming estimator (fractional via its own input: Hz / 1e7) takes stride 2^j beyond 255 samples
+deep = [m for m in st if m >= 256]
+assert deep and all(int(st[m][4]) > 0 for m in deep), "no cascade rows in the streaming run"
+# below it both are the same estimator: the float core within its documented 1e-5 (docs/allan.md)
+assert all(abs(float(st[m][6]) / float(hz[m][6]) - 1) < 1e-5 for m in st if m < 256), "streaming != exact, tau < 256"
+print(bad if bad else "ok")
+sys.exit(1 if bad else 0)
+PYEOF
+then pass "exact estimator = numpy at every tau (values, term counts; Hz and fractional)"; else fail "exact estimator against numpy"; fi
+
+# Noise identification (lag-1 autocorrelation) on power-law noise made by FFT shaping, alpha -2..+2
+for al in 2 1 0 -1 -2; do
+    "$PY" - "$al" "$T/n.txt" <<'PYEOF'
+import sys, numpy as np
+alpha, n = float(sys.argv[1]), 32768
+rng = np.random.default_rng(11)
+W = np.fft.rfft(rng.standard_normal(2 * n))
+fr = np.fft.rfftfreq(2 * n)
+fr[0] = fr[1]
+np.savetxt(sys.argv[2], 1e-3 * np.fft.irfft(W * fr ** (alpha / 2.0), 2 * n)[:n], fmt="%.12e")
+PYEOF
+    "$H" allan --series "$T/n.txt" --rate 1 --per-octave 1 --no-sim --quiet --out "$T/n.csv" >/dev/null 2>&1
+    got_a=$(awk -F, '!/^#/ && $4 ~ /^(1|2|4|8)$/ { printf "%s%s ", $23, $24 }' "$T/n.csv")
+    [ "$got_a" = "${al}acf ${al}acf ${al}acf ${al}acf " ] && pass "noise id alpha $al at m 1..8" ||
+        fail "noise id alpha $al: $got_a"
+done
 
 P=$(data allan_reference/phasedat/PHASE.DAT)
 if [ -n "$P" ]; then
@@ -70,6 +142,37 @@ if [ -n "$A" ]; then
     [ -s "$T/a.png" ] && pass "plot written" || fail "plot missing"
     grep -q "corrected: LSQ fit" "$T/out" && pass "parameter table printed" || fail "parameter table"
     expect_exit 2 "profile needs six channels" "$H" allan "$A" --channels gx --profile "$T/b.profile"
+    R=$(data allan_reference/derived_thirdparty/adis16405_imu1_oadev_allantools.csv)
+    if [ -n "$R" ] && case "$A" in *imu1*) true ;; *) false ;; esac; then
+        expect_exit 0 "ADIS log 1, exact estimator" "$H" allan "$A" --estimator exact --per-octave 1 --no-sim --quiet \
+            --out "$T/ax.csv"
+        # allantools' full-overlap OADEV at every octave tau up to 2^18 (the streaming estimator is only within
+        # half a standard error beyond 255 samples: test_allan.c); 6 printed digits, g -> m/s^2 by 9.80665
+        if "$PY" - "$R" "$T/ax.csv" <<'PYEOF'
+import sys
+ref, got = {}, {}
+for line in open(sys.argv[1]):
+    if not line[0].isdigit():
+        continue
+    c = line.strip().split(",")
+    ref[int(c[1])] = [float(v) for v in c[2:]]
+for line in open(sys.argv[2]):
+    if line.startswith("#") or line.startswith("channel"):
+        continue
+    c = line.strip().split(",")
+    got[(c[0], int(c[3]))] = float(c[6])
+n, bad = 0, []
+for m, v in ref.items():
+    for j, ch in enumerate(["gx", "gy", "gz", "ax", "ay", "az"]):
+        r = v[j] * (9.80665 if ch[0] == "a" else 1.0)
+        n += 1
+        if (ch, m) not in got or abs(got[(ch, m)] / r - 1) > 1e-5:
+            bad.append((ch, m, got.get((ch, m)), r))
+print(n, bad[:5])
+sys.exit(1 if bad or n < 100 else 0)
+PYEOF
+        then pass "exact estimator = allantools OADEV on ADIS log 1 at every octave tau"; else fail "exact vs allantools"; fi
+    fi
 else
     echo "SKIP ADIS16405 tests (shared data not found; set FNAV_DATA_DIR)"
 fi
