@@ -129,6 +129,20 @@ if [ -n "$P" ]; then
         fail "JSON"
     fi
     expect_exit 2 "profile from a series" "$H" allan --series "$P" --rate 1 --profile "$T/x.profile"
+    # every Stable32 PHASE.DAT table (all tau and octave, OADEV and ADEV) through scripts/stable32_check.py:
+    # values 1e-4, term counts exact, limits 5e-4 where alpha agrees
+    expect_exit 0 "PHASE.DAT, default grid" "$H" allan --series "$P" --phase --rate 1 --no-sim --quiet --out "$T/pd.csv"
+    for s32 in phase_dat_oadev phase_dat_adev phase_dat_oadev_octave phase_dat_adev_octave; do
+        if "$PY" "$(dirname "$0")/../../scripts/stable32_check.py" "$T/pd.csv" "$(dirname "$P")/$s32.txt" >"$T/s32" 2>&1 &&
+            grep -q "averaging factors in common" "$T/s32" && ! grep -q " 0 of " "$T/s32"; then
+            pass "stable32_check $s32"
+        else
+            fail "stable32_check $s32: $(cat "$T/s32")"
+        fi
+    done
+    # Stable32 identified white FM (alpha 0) at every octave tau; the autocorrelation has 30 averages up to m = 32
+    awk -F, '!/^#/ && $4 ~ /^(1|2|4|8|16|32)$/ { n++; if ($23 != 0 || $24 != "acf") bad++ } END { exit !(n == 6 && !bad) }' \
+        "$T/pd.csv" && pass "PHASE.DAT alpha 0 by autocorrelation at m 1..32" || fail "PHASE.DAT alpha"
 else
     echo "SKIP PHASE.DAT tests (shared data not found; set FNAV_DATA_DIR)"
 fi
