@@ -27,6 +27,8 @@ static const hx_opt_t k_opts[] = {
     { "--phase", NULL, "the series is a phase (integral): analyse its differences x rate", 0 },
     { "--rate", "HZ", "sample rate (needed with --series; overrides a log's rate)", 0 },
     { "--unit", "TEXT", "unit of a series, for labels (default 'u')", 0 },
+    { "--column", "N", "take the N-th number of each line of a series (columns split by blanks or a comma; "
+                       "default: one number per line)", 0 },
     { "--fractional", "F0", "the series is a frequency around F0 (e.g. Hz): analyse (f - F0) / F0, the fractional "
                              "frequency", 0 },
     { "--estimator", "NAME", "exact (the whole record, fully overlapping at every tau, in double, as Stable32; "
@@ -355,10 +357,26 @@ static int push_series(run_t *R, const char *path, long lineno, double y, double
     return prc;
 }
 
-static int read_series(run_t *R, const char *path, int phase)
+/* Skip blanks, then one comma and the blanks after it. */
+static char *skip_sep(char *p)
+{
+    while (*p == ' ' || *p == '\t') {
+        p++;
+    }
+    if (*p == ',') {
+        p++;
+        while (*p == ' ' || *p == '\t') {
+            p++;
+        }
+    }
+    return p;
+}
+
+/* column: 0 for one number per line, else the 1-based column to take */
+static int read_series(run_t *R, const char *path, int phase, long column)
 {
     FILE *f = fopen(path, "r");
-    char line[256];
+    char line[1024];
     long lineno = 0;
     int data_lines = 0, rc = 0, have_prev = 0, have_first = 0;
     double prev = 0.0, first = 0.0;
@@ -369,10 +387,11 @@ static int read_series(run_t *R, const char *path, int phase)
     while (fgets(line, sizeof line, f) != NULL) {
         char *p = line, *end;
         double v;
+        long k;
         lineno++;
         if (strchr(line, '\n') == NULL && !feof(f)) {
             /* a longer line would be read in pieces, each taken for a line */
-            hx_error(CMD, "%s:%ld: line longer than %d characters (one number per line expected)", path, lineno,
+            hx_error(CMD, "%s:%ld: line longer than %d characters", path, lineno,
                      (int)sizeof line - 2);
             rc = 1;
             break;
@@ -383,24 +402,31 @@ static int read_series(run_t *R, const char *path, int phase)
         if (*p == '\0' || *p == '\n' || *p == '\r' || *p == '#') {
             continue;
         }
-        v = strtod(p, &end);
+        for (k = 1;; k++) {
+            v = strtod(p, &end);
+            if (end == p || k >= column) {
+                break;
+            }
+            p = skip_sep(end);
+        }
         if (end == p) {
-            if (data_lines == 0) {
+            if (data_lines == 0 && k == 1) {
                 data_lines = -1; /* a header line before the numbers */
                 continue;
             }
-            hx_error(CMD, "%s:%ld: not a number", path, lineno);
+            if (*p == '\0' || *p == '\n' || *p == '\r') {
+                hx_error(CMD, "%s:%ld: no column %ld", path, lineno, column);
+            } else {
+                hx_error(CMD, "%s:%ld: not a number", path, lineno);
+            }
             rc = 1;
             break;
         }
-        while (*end == ' ' || *end == '\t' || *end == ',' || *end == '\r' || *end == '\n') {
-            if (*end == ',') {
-                break;
-            }
+        while (column == 0 && (*end == ' ' || *end == '\t' || *end == '\r' || *end == '\n')) {
             end++;
         }
-        if (*end != '\0') {
-            hx_error(CMD, "%s:%ld: expected one number per line", path, lineno);
+        if (column == 0 && *end != '\0') {
+            hx_error(CMD, "%s:%ld: expected one number per line (--column N takes one of several)", path, lineno);
             rc = 1;
             break;
         }
@@ -1062,7 +1088,7 @@ int hx_cmd_allan(int argc, char **argv)
     run_t *R;
     int rc, i, exit_code = HX_EXIT_OK, input_rc;
     double rate_opt = 0.0, seed_d = 1.0, nsim_d = 0.0;
-    long per_octave = 4;
+    long per_octave = 4, column = 0;
     const char *series, *path, *s_est;
     char name[FNAV_PROFILE_NAME_MAX];
 
@@ -1094,7 +1120,7 @@ int hx_cmd_allan(int argc, char **argv)
         hx_arg_double(&a, "--max-tau-frac", 1e-6, 0.5, &R->tau_max_frac) != 0 ||
         hx_arg_double(&a, "--seed", 0.0, 4294967295.0, &seed_d) != 0 ||
         hx_arg_double(&a, "--sim-samples", 16.0, 4294967295.0, &nsim_d) != 0 ||
-        hx_arg_double(&a, "--conf", 0.01, 0.999, &R->conf) != 0) {
+        hx_arg_double(&a, "--conf", 0.01, 0.999, &R->conf) != 0 || hx_arg_long(&a, "--column", 1, 1000, &column) != 0) {
         free(R);
         return HX_EXIT_USAGE;
     }
@@ -1113,8 +1139,8 @@ int hx_cmd_allan(int argc, char **argv)
         free(R);
         return HX_EXIT_USAGE;
     }
-    if (series == NULL && hx_flag(&a, "--phase")) {
-        hx_error(CMD, "--phase applies to --series only");
+    if (series == NULL && (hx_flag(&a, "--phase") || hx_arg(&a, "--column") != NULL)) {
+        hx_error(CMD, "--phase and --column apply to --series only");
         free(R);
         return HX_EXIT_USAGE;
     }
@@ -1168,7 +1194,8 @@ int hx_cmd_allan(int argc, char **argv)
             return HX_EXIT_IO;
         }
     }
-    input_rc = series != NULL ? read_series(R, path, hx_flag(&a, "--phase")) : read_log(R, &a, path, rate_opt);
+    input_rc = series != NULL ? read_series(R, path, hx_flag(&a, "--phase"), column)
+                              : read_log(R, &a, path, rate_opt);
     if (input_rc < 0 || R->n < 2u) {
         if (input_rc >= 0) {
             hx_error(CMD, "%s: fewer than 2 samples", path);

@@ -27,7 +27,7 @@ expect_exit 2 "empty --channels" "$H" allan vectors/walk.bin --channels ,
 expect_err "no channel named" "empty --channels explained"
 expect_exit 1 "missing series" "$H" allan --series "$T/nope.txt" --rate 1
 # two numbers 300 blanks apart on one line: refused, not read as two lines
-awk 'BEGIN { for (i = 0; i < 50; i++) { printf "1.0"; for (j = 0; j < 300; j++) printf " "; print "2.0" } }' > "$T/long.txt"
+awk 'BEGIN { for (i = 0; i < 50; i++) { printf "1.0"; for (j = 0; j < 1100; j++) printf " "; print "2.0" } }' > "$T/long.txt"
 expect_exit 1 "series line longer than the reader's buffer" "$H" allan --series "$T/long.txt" --rate 1 --no-sim
 expect_err "long.txt:1: line longer than" "the long line is named"
 expect_exit 0 "paper tables" "$H" allan --paper-tables
@@ -96,6 +96,17 @@ print(bad if bad else "ok")
 sys.exit(1 if bad else 0)
 PYEOF
 then pass "exact estimator = numpy at every tau (values, term counts; Hz and fractional)"; else fail "exact estimator against numpy"; fi
+
+# --column: the same numbers as the second of three columns (blanks, or a comma) give the same table
+awk '!/^#/ { n++; printf "%d%s %s%s 7\n", n, (n % 2 ? "," : ""), $1, (n % 3 ? "" : ",") }' "$T/f.txt" >"$T/f3.txt"
+expect_exit 0 "series as column 2 of 3" "$H" allan --series "$T/f3.txt" --column 2 --rate 1 --no-sim --quiet --out "$T/f3.csv"
+[ "$(grep -v '^#' "$T/f3.csv")" = "$(grep -v '^#' "$T/fhz.csv")" ] && pass "--column 2 table = one-column table" ||
+    fail "--column table differs"
+expect_exit 1 "several numbers without --column" "$H" allan --series "$T/f3.txt" --rate 1 --no-sim --quiet
+expect_err "f3.txt:1: expected one number per line (--column N" "several numbers: --column named"
+expect_exit 1 "a column beyond the line" "$H" allan --series "$T/f3.txt" --column 4 --rate 1 --no-sim --quiet
+expect_err "f3.txt:1: no column 4" "missing column named with its line"
+expect_exit 2 "--column of a log" "$H" allan vectors/walk.bin --column 2
 
 # Noise identification (lag-1 autocorrelation) on power-law noise made by FFT shaping, alpha -2..+2
 for al in 2 1 0 -1 -2; do
