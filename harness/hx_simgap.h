@@ -42,6 +42,7 @@
 #define SG_LAT_MAX 65536L   /**< differences used by the lattice statistic of a segment */
 #define SG_ID_FRAC 0.1      /**< the baseline's AR(1) bump must lie within this fraction of a block */
 #define SG_TEST_FRAC 0.25   /**< the gap tests use tau up to this fraction (the twins give the statistics) */
+#define SG_NFFT_MAX 1024u   /**< longest Welch segment of the gap features (at least 16 segments per block) */
 #ifndef SG_FIT_FLOOR
 #define SG_FIT_FLOOR 0.003  /**< model-error floor of the Allan fits: sd of ln AVAR added to every point's */
 #endif

@@ -65,7 +65,7 @@ sg_feat_cfg_t sg_feat_cfg_default(double rate_hz)
     c.rate_hz = rate_hz;
     c.allan_per_octave = 2u;
     c.tau_frac = SG_TEST_FRAC;
-    c.nfft_max = FNAV_WELCH_MAX_NFFT;
+    c.nfft_max = SG_NFFT_MAX;
     c.bands_per_octave = 3u;
     return c;
 }
@@ -228,7 +228,7 @@ double sg_rayleigh_z(double R)
  * freedom of the mean of B adjacent bins averaged over K segments. */
 static double welch_band_edf(unsigned nfft, unsigned K, unsigned B)
 {
-    double w[FNAV_WELCH_MAX_NFFT], s2 = 0.0, rho = 0.0, nu_bin, den = 1.0;
+    double w[SG_NFFT_MAX], s2 = 0.0, rho = 0.0, nu_bin, den = 1.0;
     unsigned n, l, hop = nfft / 2u;
     for (n = 0; n < nfft; n++) {
         w[n] = 0.54 - 0.46 * cos(2.0 * M_PI * (double)n / (double)nfft);

@@ -73,11 +73,13 @@
 #endif
 
 /** Largest Welch segment (FFT) length; a power of two. It sizes
- *  fnav_welch_t at about 5 * N reals: 1024 (the harness's segment-length
- *  study) costs 20.6 KB per channel in float; a sensor that only runs the
- *  paper's 64-sample segments sets 64 (1.4 KB per channel). */
+ *  fnav_welch_t at about 5 * N reals: 4096 (the host default: the
+ *  harness's segment-length study, and segments as long as common reference
+ *  spectra use, e.g. scipy's nperseg 4096) costs 82 KB per channel in float;
+ *  a sensor that only runs the paper's 64-sample segments sets 64 (1.4 KB
+ *  per channel; port/cortex-m/fnav_cm_fw_config.h). */
 #ifndef FNAV_WELCH_MAX_NFFT
-#define FNAV_WELCH_MAX_NFFT 1024
+#define FNAV_WELCH_MAX_NFFT 4096
 #endif
 
 /** Number of AR(1) poles (log-spaced correlation times) whose sum makes
