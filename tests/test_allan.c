@@ -841,6 +841,66 @@ static void test_edf_single_term(void **state)
     assert_true(fnav_allan_edf(3, 1u, 100u, 1) < 0.0);
 }
 
+/* hx_allan_avar_record() on a frequency ramp y_k = a k: the phase
+ * x_n = a n (n - 1) / 2 has every second difference at lag m equal to a m^2,
+ * so AVAR(m) = a^2 m^2 / 2 exactly, for both estimators; term counts
+ * n - 2m (stride 1) and floor((n - 1) / m) - 1 (stride m). */
+static void test_avar_record_ramp(void **state)
+{
+    static double x[1001];
+    const double a = 0.125;
+    uint32_t m, terms;
+    size_t n;
+    (void)state;
+    for (n = 0; n < 1001u; n++) {
+        x[n] = a * (double)n * ((double)n - 1.0) / 2.0;
+    }
+    for (m = 1; m <= 500u; m += 37u) {
+        const double want = a * a * (double)m * (double)m / 2.0;
+        assert_true(fabs(hx_allan_avar_record(x, 1001u, m, 1, &terms) / want - 1.0) < 1e-12);
+        assert_int_equal(terms, 1001u - 2u * m);
+        assert_true(fabs(hx_allan_avar_record(x, 1001u, m, 0, &terms) / want - 1.0) < 1e-12);
+        assert_int_equal(terms, 1000u / m - 1u);
+    }
+    /* n = 2m phase values: no second difference */
+    assert_true(isnan(hx_allan_avar_record(x, 10u, 5u, 1, &terms)));
+    assert_int_equal(terms, 0u);
+    assert_true(isnan(hx_allan_avar_record(x, 10u, 0u, 1, &terms)));
+}
+
+/* The data's noise identification at its edges: a strictly alternating
+ * frequency (lag-1 autocorrelation -1: the strongest phase noise), a
+ * constant, and too few averages. */
+static void test_noise_id_edges(void **state)
+{
+    static double x[4001];
+    size_t n;
+    int alpha = 99;
+    (void)state;
+    x[0] = 0.0;
+    for (n = 1; n < 4001u; n++) {
+        x[n] = x[n - 1u] + ((n % 2u) ? 1.0 : -1.0); /* y = +1, -1, +1, ... */
+    }
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1u, &alpha), 0);
+    assert_int_equal(alpha, 2);
+    for (n = 0; n < 4001u; n++) {
+        x[n] = 0.0;
+    }
+    alpha = 99;
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1u, &alpha), 0);
+    assert_true(alpha >= -2 && alpha <= 2);
+    /* 4000 samples: 30 averages up to m = 133 (autocorrelation), 4 up to
+     * m = 1000 (B1; a constant has no Allan variance: no answer), none beyond */
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 200u, &alpha), -1);
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1001u, &alpha), -1);
+    for (n = 1; n < 4001u; n++) {
+        x[n] = x[n - 1u] + (double)((n * 2654435761u) % 1000u) / 1000.0 - 0.5; /* scrambled: white FM */
+    }
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 200u, &alpha), 0); /* 20 averages: B1 */
+    assert_true(alpha >= -2 && alpha <= 2);
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1001u, &alpha), -1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -868,6 +928,8 @@ int main(void)
         cmocka_unit_test(test_paper_tables_inconsistent),
         cmocka_unit_test(test_profile_roundtrip),
         cmocka_unit_test(test_edf_single_term),
+        cmocka_unit_test(test_avar_record_ramp),
+        cmocka_unit_test(test_noise_id_edges),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
