@@ -138,6 +138,9 @@ static int setup_grid(run_t *R, long per_octave)
 static int alloc_channel(run_t *R, chan_t *ch)
 {
     int c;
+    if (R->exact) {
+        return 0; /* the table comes from the record (exact_table), no streaming estimator runs */
+    }
     for (c = 0; c < R->nchunk; c++) {
         ch->est[c] = (fnav_allan_t *)malloc(sizeof(fnav_allan_t));
         if (ch->est[c] == NULL || fnav_allan_init(ch->est[c], &R->cfg[c]) != FNAV_OK) {
@@ -182,13 +185,14 @@ static int record(chan_t *ch, double v)
     return 0;
 }
 
-/* Push a sample into the channel's estimators (and its record).
- * @return 0; -1 when the core refuses it (not finite, or beyond its input range); -2 when out of memory */
+/* Push a sample into the channel's streaming estimators, or its record
+ * (--estimator exact; the same input range as the core's).
+ * @return 0; -1 when refused (not finite, or beyond the input range); -2 when out of memory */
 static int push_all(run_t *R, chan_t *ch, double v)
 {
     int c;
-    if (R->exact && record(ch, v) != 0) {
-        return -2;
+    if (R->exact) {
+        return isfinite(v) && fabs(v) <= FNAV_INPUT_MAX_ABS ? record(ch, v) : -1;
     }
     for (c = 0; c < R->nchunk; c++) {
         if (fnav_allan_push(ch->est[c], (fnav_real_t)v) != FNAV_OK) {
@@ -471,15 +475,16 @@ static double tau_max_samples(const run_t *R)
     return R->tau_max_frac * (double)R->n;
 }
 
-/* --estimator exact: every tau point from the channel's whole record, in
- * double (the grid and the streaming estimators' rows are kept; their values,
- * term counts and levels are replaced). */
-static void exact_table(chan_t *ch)
+/* --estimator exact: every tau of the grid from the channel's whole record,
+ * in double, in the streaming estimator's result rows (display units). */
+static void exact_table(const run_t *R, chan_t *ch)
 {
     size_t i;
+    ch->nres = R->ngrid;
     for (i = 0; i < ch->nres; i++) {
         fnav_allan_result_t *r = &ch->res[i];
         uint32_t terms, terms_n;
+        r->tau = R->grid[i];
         const double ao = hx_allan_avar_record(ch->x, ch->nx, r->tau, 1, &terms);
         const double an = hx_allan_avar_record(ch->x, ch->nx, r->tau, 0, &terms_n);
         r->level = 0u;
@@ -497,9 +502,10 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
 {
     size_t i;
     hx_allan_fit_opts_t o = hx_allan_fit_opts_default;
-    collect(R, ch, ch->est, ch->res);
     if (R->exact) {
-        exact_table(ch);
+        exact_table(R, ch);
+    } else {
+        collect(R, ch, ch->est, ch->res);
     }
     fnav_allan_slopes(ch->res, ch->nres, ch->slope);
     for (i = 0; i < ch->nres; i++) {

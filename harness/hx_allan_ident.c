@@ -176,23 +176,22 @@ static double b1_theory(double N, double mu)
     return N * (1.0 - pow(N, mu)) / (2.0 * (N - 1.0) * (1.0 - pow(2.0, mu)));
 }
 
-/* B1 ratio noise identification for few averages: alpha -2, -1 or 0, or 2
- * for phase noise (mu = -2), which B1 cannot split into white and flicker. */
-static int noise_id_b1(const double *x, size_t len, uint32_t m, int *alpha)
+/* B1 ratio noise identification from len frequency averages z: alpha -2,
+ * -1 or 0, or 2 for phase noise (mu = -2), which B1 cannot split into white
+ * and flicker. */
+static int noise_id_b1(const double *z, size_t len, int *alpha)
 {
     double mean = 0.0, var = 0.0, avar = 0.0, b1, best = 0.0;
     size_t i;
     int mu;
     for (i = 0; i < len; i++) {
-        mean += (x[(i + 1u) * m] - x[i * m]) / (double)m;
+        mean += z[i];
     }
     mean /= (double)len;
     for (i = 0; i < len; i++) {
-        const double y = (x[(i + 1u) * m] - x[i * m]) / (double)m;
-        var += (y - mean) * (y - mean);
+        var += (z[i] - mean) * (z[i] - mean);
         if (i + 1u < len) {
-            const double dy = (x[(i + 2u) * m] - x[(i + 1u) * m]) / (double)m - y;
-            avar += dy * dy;
+            avar += (z[i + 1u] - z[i]) * (z[i + 1u] - z[i]);
         }
     }
     var /= (double)(len - 1u);
@@ -219,8 +218,8 @@ int hx_allan_noise_id_acf(const double *x, size_t n, uint32_t m, int *alpha)
     double *z, sx = 0.0, sxx = 0.0, sz = 0.0, sxz = 0.0, slope, icpt, den, delta = 0.0;
     size_t i, k = len;
     int d, a;
-    if (len < HX_ACF_MIN_POINTS) {
-        return len >= HX_B1_MIN_POINTS ? noise_id_b1(x, len, m, alpha) : -1;
+    if (len < HX_B1_MIN_POINTS) {
+        return -1;
     }
     z = (double *)malloc(len * sizeof *z);
     if (z == NULL) {
@@ -229,6 +228,13 @@ int hx_allan_noise_id_acf(const double *x, size_t n, uint32_t m, int *alpha)
     /* frequency averaged over m (non-overlapping): phase differences / m */
     for (i = 0; i < len; i++) {
         z[i] = (x[(i + 1u) * m] - x[i * m]) / (double)m;
+    }
+    if (len < HX_ACF_MIN_POINTS) {
+        const int rc = noise_id_b1(z, len, alpha);
+        free(z);
+        return rc;
+    }
+    for (i = 0; i < len; i++) {
         sx += (double)i;
         sxx += (double)i * (double)i;
         sz += z[i];
