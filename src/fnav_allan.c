@@ -474,9 +474,9 @@ void fnav_allan_slopes(const fnav_allan_result_t *r, size_t n, fnav_real_t *slop
 
 /* ------------------------------------------------------------ EDF */
 /* Greenhall & Riley (PTTI 2003), eqs. (7)-(10) and tables 1-3, for the
- * unmodified Allan variance (d = 2). F is the filter factor (m for the
- * unmodified variance, INFINITY for its large-m limit), S the stride factor
- * (m overlapping, 1 non-overlapping). */
+ * d-th difference variances (d = 1, 2: Allan, 3: Hadamard), unmodified
+ * (filter factor F = m, INFINITY for its large-m limit) or modified (F = 1),
+ * with stride factor S (m overlapping, 1 non-overlapping). */
 
 #define EDF_JMAX 100.0
 
@@ -503,76 +503,120 @@ static double gh_sx(double t, double F, int alpha)
     return F * F * (2.0 * gh_sw(t, alpha) - gh_sw(t - 1.0 / F, alpha) - gh_sw(t + 1.0 / F, alpha));
 }
 
-static double gh_sz(double t, double F, int alpha)
+/* eq. (9): sz(t) = sum over k = -d..d of (-1)^k C(2d, d + k) sx(t + k);
+ * d = 2 gives the weights 6, -4, -4, 1, 1 */
+static double gh_sz(double t, double F, int alpha, int d)
 {
-    /* d = 2: binomial weights 6, -4, -4, 1, 1 (eq. 9) */
-    return 6.0 * gh_sx(t, F, alpha) - 4.0 * gh_sx(t - 1.0, F, alpha) - 4.0 * gh_sx(t + 1.0, F, alpha) +
-           gh_sx(t - 2.0, F, alpha) + gh_sx(t + 2.0, F, alpha);
+    static const double binom[4][4] = { { 1, 0, 0, 0 }, { 2, 1, 0, 0 }, { 6, 4, 1, 0 }, { 20, 15, 6, 1 } };
+    double s = binom[d][0] * gh_sx(t, F, alpha), sign = -1.0;
+    int k;
+    for (k = 1; k <= d; k++) {
+        s += sign * binom[d][k] * (gh_sx(t - (double)k, F, alpha) + gh_sx(t + (double)k, F, alpha));
+        sign = -sign;
+    }
+    return s;
 }
 
-static double gh_basic_sum(double J, double M, double S, double F, int alpha)
+static double gh_basic_sum(double J, double M, double S, double F, int alpha, int d)
 {
-    double s = gh_sz(0.0, F, alpha), sum;
+    double s = gh_sz(0.0, F, alpha, d), sum;
     const long jn = (long)J; /* J is a whole number (<= EDF_JMAX) */
     long j;
     sum = s * s;
-    s = gh_sz(J / S, F, alpha);
+    s = gh_sz(J / S, F, alpha, d);
     sum += (1.0 - J / M) * s * s;
     for (j = 1; j < jn; j++) {
-        s = gh_sz((double)j / S, F, alpha);
+        s = gh_sz((double)j / S, F, alpha, d);
         sum += 2.0 * (1.0 - (double)j / M) * s * s;
     }
     return sum;
 }
 
-double fnav_allan_edf(int alpha, uint32_t m_u, uint32_t n_phase, int overlapping)
+double fnav_allan_edf_var(int alpha, int d, int modified, uint32_t m_u, uint32_t n_phase, int overlapping)
 {
-    /* Table 2 (d = 2 column), rows alpha = 2, 1, 0, -1, -2: (a0, a1) */
-    static const double t2[5][2] = {
-        { 35.0 / 18.0, 1.0 }, { 790.0, 410.0 }, { 2.0 / 3.0, 1.0 / 3.0 }, { 0.852, 0.375 }, { 1.079, 0.368 },
+    /* Table 1 (modified, F = 1) and table 2 (unmodified, large m): (a0, a1)
+     * for rows alpha = 2 .. -4 and columns d = 1, 2, 3; 0, 0 where the
+     * variance does not converge (alpha + 2 d <= 1) */
+    static const double t1[7][3][2] = {
+        { { 2.0 / 3.0, 1.0 / 3.0 }, { 7.0 / 9.0, 0.5 }, { 22.0 / 25.0, 2.0 / 3.0 } },
+        { { 0.840, 0.345 }, { 0.997, 0.616 }, { 1.141, 0.843 } },
+        { { 1.079, 0.368 }, { 1.033, 0.607 }, { 1.184, 0.848 } },
+        { { 0, 0 }, { 1.048, 0.534 }, { 1.180, 0.816 } },
+        { { 0, 0 }, { 1.302, 0.535 }, { 1.175, 0.777 } },
+        { { 0, 0 }, { 0, 0 }, { 1.194, 0.703 } },
+        { { 0, 0 }, { 0, 0 }, { 1.489, 0.702 } },
     };
-    const double d = 2.0, m = (double)m_u, N = (double)n_phase;
-    /* filter factor F = m (unmodified variance), stride factor S */
+    static const double t2[7][3][2] = {
+        { { 1.5, 0.5 }, { 35.0 / 18.0, 1.0 }, { 231.0 / 100.0, 1.5 } },
+        { { 78.6, 25.2 }, { 790.0, 410.0 }, { 9950.0, 6520.0 } },
+        { { 2.0 / 3.0, 1.0 / 6.0 }, { 2.0 / 3.0, 1.0 / 3.0 }, { 7.0 / 9.0, 0.5 } },
+        { { 0, 0 }, { 0.852, 0.375 }, { 0.997, 0.617 } },
+        { { 0, 0 }, { 1.079, 0.368 }, { 1.033, 0.607 } },
+        { { 0, 0 }, { 0, 0 }, { 1.053, 0.553 } },
+        { { 0, 0 }, { 0, 0 }, { 1.302, 0.535 } },
+    };
+    /* Table 3 (unmodified, alpha = 1): b0, b1 for d = 1, 2, 3 */
+    static const double t3[3][2] = { { 6.0, 4.0 }, { 15.23, 12.0 }, { 47.8, 40.0 } };
+    const double dd = (double)d, m = (double)m_u, N = (double)n_phase;
+    const double F = modified ? 1.0 : m;
     const double S = overlapping ? m : 1.0;
-    const double L = 1.0 + m * d; /* m / F + m d */
+    const double L = m / F + m * dd;
     double M, J, r, inv;
-    if (alpha < -2 || alpha > 2 || m_u == 0u || N < L) { /* N = L: one difference, M = 1 */
-        return -1.0;
+    const double *a;
+    if (d < 1 || d > 3 || alpha > 2 || alpha + 2 * d <= 1 || m_u == 0u || N < L) {
+        return -1.0; /* N = L: one difference, M = 1 */
     }
     M = 1.0 + floor(S * (N - L) / m);
-    J = M < (d + 1.0) * S ? M : (d + 1.0) * S;
+    J = M < (dd + 1.0) * S ? M : (dd + 1.0) * S;
     r = M / S;
-    if (alpha <= 0 || alpha == 2) {
-        /* case 2 (alpha <= 0) and, through the basic sum, case 4 (alpha = 2) */
+    if (modified) {
+        /* case 1: every alpha */
+        a = t1[2 - alpha][d - 1];
         if (J <= EDF_JMAX) {
-            const double mp = (alpha == 2 || m * (d + 1.0) <= EDF_JMAX) ? m : (double)INFINITY;
-            const double z0 = gh_sz(0.0, mp, alpha);
-            inv = gh_basic_sum(J, M, S, mp, alpha) / (z0 * z0 * M);
+            const double z0 = gh_sz(0.0, 1.0, alpha, d);
+            inv = gh_basic_sum(J, M, S, 1.0, alpha, d) / (z0 * z0 * M);
+        } else if (r > dd + 1.0) {
+            inv = (1.0 / r) * (a[0] - a[1] / r);
+        } else {
+            const double z0 = gh_sz(0.0, 1.0, alpha, d);
+            inv = gh_basic_sum(EDF_JMAX, EDF_JMAX, EDF_JMAX / r, 1.0, alpha, d) / (z0 * z0 * EDF_JMAX);
+        }
+    } else if (alpha <= 0 || alpha == 2) {
+        /* case 2 (alpha <= 0) and, through the basic sum, case 4 (alpha = 2) */
+        a = t2[2 - alpha][d - 1];
+        if (J <= EDF_JMAX) {
+            const double mp = (alpha == 2 || m * (dd + 1.0) <= EDF_JMAX) ? m : (double)INFINITY;
+            const double z0 = gh_sz(0.0, mp, alpha, d);
+            inv = gh_basic_sum(J, M, S, mp, alpha, d) / (z0 * z0 * M);
         } else if (alpha == 2) {
-            const double *a = t2[0];
             inv = (1.0 / M) * (a[0] - a[1] / r); /* case 4, K > d */
-        } else if (r > d + 1.0) {
-            const double *a = t2[2 - alpha];
+        } else if (r > dd + 1.0) {
             inv = (1.0 / r) * (a[0] - a[1] / r);
         } else {
             const double mp = EDF_JMAX / r;
-            const double z0 = gh_sz(0.0, (double)INFINITY, alpha);
-            inv = gh_basic_sum(EDF_JMAX, EDF_JMAX, mp, (double)INFINITY, alpha) / (z0 * z0 * EDF_JMAX);
+            const double z0 = gh_sz(0.0, (double)INFINITY, alpha, d);
+            inv = gh_basic_sum(EDF_JMAX, EDF_JMAX, mp, (double)INFINITY, alpha, d) / (z0 * z0 * EDF_JMAX);
         }
     } else {
-        /* case 3, alpha = 1; table 3 (d = 2): b0 = 15.23, b1 = 12.0 */
-        const double b = 15.23 + 12.0 * log(m);
+        /* case 3, alpha = 1 */
+        const double b = t3[d - 1][0] + t3[d - 1][1] * log(m);
+        a = t2[1][d - 1];
         if (J <= EDF_JMAX) {
-            const double z0 = gh_sz(0.0, m, 1);
-            inv = gh_basic_sum(J, M, S, m, 1) / (z0 * z0 * M);
-        } else if (r > d + 1.0) {
-            inv = (1.0 / (b * b * r)) * (t2[1][0] - t2[1][1] / r);
+            const double z0 = gh_sz(0.0, m, 1, d);
+            inv = gh_basic_sum(J, M, S, m, 1, d) / (z0 * z0 * M);
+        } else if (r > dd + 1.0) {
+            inv = (1.0 / (b * b * r)) * (a[0] - a[1] / r);
         } else {
             const double mp = EDF_JMAX / r;
-            inv = gh_basic_sum(EDF_JMAX, EDF_JMAX, mp, mp, 1) / (b * b * EDF_JMAX);
+            inv = gh_basic_sum(EDF_JMAX, EDF_JMAX, mp, mp, 1, d) / (b * b * EDF_JMAX);
         }
     }
     return inv > 0.0 ? 1.0 / inv : -1.0;
+}
+
+double fnav_allan_edf(int alpha, uint32_t m_u, uint32_t n_phase, int overlapping)
+{
+    return alpha < -2 ? -1.0 : fnav_allan_edf_var(alpha, 2, 0, m_u, n_phase, overlapping);
 }
 
 /* ------------------------------------------------------------ paper id */

@@ -238,6 +238,22 @@ void fnav_allan_slopes(const fnav_allan_result_t *r, size_t n, fnav_real_t *slop
 double fnav_allan_edf(int alpha, uint32_t m, uint32_t n_phase, int overlapping);
 
 /**
+ * The same algorithm for the family of difference variances (Greenhall &
+ * Riley's d, filter factor F and stride factor S): d = 2 is the Allan
+ * variance, d = 3 the Hadamard variance; modified (F = 1) gives the
+ * modified Allan (and time) variance with d = 2. fnav_allan_edf() is the
+ * case d = 2, unmodified.
+ * @param alpha    power-law noise exponent, -4..+2, with alpha + 2 d > 1
+ * @param d        order of the phase difference, 1..3
+ * @param modified 1: the modified variance (phase averaged over m), 0: not
+ * @param m        averaging factor in phase samples
+ * @param n_phase  phase values of the series
+ * @param overlapping 1: stride 1 (fully overlapping), 0: stride m
+ * @return the EDF, or a negative value when it is undefined.
+ */
+double fnav_allan_edf_var(int alpha, int d, int modified, uint32_t m, uint32_t n_phase, int overlapping);
+
+/**
  * The paper's identification (section III.C) from an Allan deviation table:
  * sigma_v = ADEV at 1 s (log-log interpolation between grid points), BS =
  * the minimum of ADEV over points with tau <= tau_max (refined by a parabola
