@@ -13,6 +13,7 @@
 #include "hx_allan_ident.h"
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_devs.h"
 #include "hx_profile.h"
 
 #define CMD "allan"
@@ -34,6 +35,11 @@ static const hx_opt_t k_opts[] = {
     { "--estimator", "NAME", "exact (the whole record, fully overlapping at every tau, in double, as Stable32; "
                              "default for --series) or streaming (the core's fixed-memory estimator, as on the "
                              "sensor; default for a log)", 0 },
+    { "--deviation", "LIST", "also these deviations of the whole record (needs --estimator exact): mdev, tdev, hdev, "
+                             "ohdev, totdev, or all; each with its interval and term count (adev and oadev are "
+                             "always in the table)", 0 },
+    { "--m", "LIST", "averaging factors instead of the log-spaced grid, ascending, e.g. 1,10,100 (needs "
+                     "--estimator exact)", 0 },
     { "--channels", "LIST", "channels of a log to analyse, e.g. gx,gy,gz (default ax,ay,az,gx,gy,gz)", 0 },
     { "--per-octave", "N", "tau points per octave: 1, 2 or 4 (default 4)", 0 },
     { "--max-tau-frac", "F", "largest tau identified, tabulated and plotted, as a fraction of the "
@@ -42,7 +48,7 @@ static const hx_opt_t k_opts[] = {
     { "--no-sim", NULL, "skip the simulation check (paper Fig. 7)", 0 },
     { "--sim-samples", "N", "samples per simulation (default: as many as the input)", 0 },
     { "--seed", "N", "random seed of the simulations (default 1)", 0 },
-    { "--conf", "P", "confidence of the intervals (default 0.683, as Stable32)", 0 },
+    { "--conf", "P", "confidence of the intervals (default 0.682689 = erf(1/sqrt(2)), one sigma, Stable32's 0.683)", 0 },
     { "--name", "TEXT", "profile name (default: from the file name)", 0 },
     { "--out", "FILE", "table of every channel and tau (CSV)", 0 },
     { "--json", "FILE", "parameters, quality and tables (JSON)", 0 },
@@ -77,7 +83,7 @@ typedef struct {
     fnav_real_t slope[GRID_MAX];
     fnav_allan_noise_t noise[GRID_MAX];
     int alpha[GRID_MAX];      /* power-law exponent behind the EDF */
-    int alpha_acf[GRID_MAX];  /* 1: alpha from the lag-1 autocorrelation (exact), 0: from the slope */
+    hx_noise_id_t alpha_from[GRID_MAX]; /* how alpha was found: from the data (exact) or the slope */
     double edf[GRID_MAX], lo[GRID_MAX], hi[GRID_MAX];
     double edf_n[GRID_MAX], lo_n[GRID_MAX], hi_n[GRID_MAX];
     fnav_allan_result_t sim_paper[GRID_MAX], sim_fit[GRID_MAX];
@@ -88,6 +94,10 @@ typedef struct {
     double y0;       /* first sample, removed from the record (the variance ignores a constant) */
     hx_allan_ident_t id;
     int id_ok;
+    /* --deviation: per deviation kind and grid point (display units; TDEV in unit s) */
+    double dv[HX_DEV_COUNT][GRID_MAX], dv_lo[HX_DEV_COUNT][GRID_MAX], dv_hi[HX_DEV_COUNT][GRID_MAX];
+    double dv_edf[HX_DEV_COUNT][GRID_MAX];
+    uint32_t dv_terms[HX_DEV_COUNT][GRID_MAX];
 } chan_t;
 
 typedef struct {
@@ -106,6 +116,8 @@ typedef struct {
     int is_series;
     int exact;               /* --estimator exact */
     double f0;               /* --fractional: nominal value, 0 if not given */
+    hx_dev_t dev[HX_DEV_COUNT]; /* --deviation, in the order given */
+    int ndev;
 } run_t;
 
 static const char k_exact_oom[] = "out of memory: --estimator exact keeps the whole record (8 bytes per sample "
@@ -121,10 +133,60 @@ static const struct {
 
 /* ------------------------------------------------------------ setup */
 
-static int setup_grid(run_t *R, long per_octave)
+/* Whether the streaming estimator (the simulation check) can track R->grid. */
+static int grid_streamable(const run_t *R)
+{
+    size_t i;
+    for (i = 0; i < R->ngrid; i++) {
+        if (!fnav_allan_tau_valid(R->grid[i])) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* --m LIST: the averaging factors, strictly ascending, at most GRID_MAX. */
+static int parse_m_list(run_t *R, const char *list)
+{
+    const char *p = list;
+    R->ngrid = 0;
+    while (*p != '\0') {
+        char *end;
+        unsigned long v;
+        if (*p < '0' || *p > '9') {
+            break;
+        }
+        v = strtoul(p, &end, 10);
+        if (end == p || v == 0ul || v > 4294967295ul || (R->ngrid > 0 && v <= R->grid[R->ngrid - 1u]) ||
+            R->ngrid == GRID_MAX) {
+            break;
+        }
+        R->grid[R->ngrid++] = (uint32_t)v;
+        p = end;
+        if (*p == ',') {
+            p++;
+        } else if (*p != '\0') {
+            break;
+        }
+    }
+    if (*p != '\0' || R->ngrid == 0) {
+        hx_error(CMD, "--m must be positive whole numbers separated by commas, strictly ascending, at most %d",
+                 GRID_MAX);
+        return -1;
+    }
+    return 0;
+}
+
+/* The streaming estimators' configuration chunks over R->grid; with
+ * m_list NULL the grid is first filled with the log-spaced one. */
+static int setup_grid(run_t *R, long per_octave, const char *m_list)
 {
     int c;
-    R->ngrid = fnav_allan_grid(R->grid, GRID_MAX, (uint32_t)FNAV_ALLAN_TAU_MAX, (unsigned)per_octave);
+    if (m_list == NULL) {
+        R->ngrid = fnav_allan_grid(R->grid, GRID_MAX, (uint32_t)FNAV_ALLAN_TAU_MAX, (unsigned)per_octave);
+    } else if (parse_m_list(R, m_list) != 0) {
+        return -1;
+    }
     R->nchunk = 0;
     for (c = 0; (size_t)c * FNAV_ALLAN_MAX_POINTS < R->ngrid; c++) {
         size_t off = (size_t)c * FNAV_ALLAN_MAX_POINTS;
@@ -260,6 +322,48 @@ static int parse_channels(run_t *R, const char *list)
 }
 
 /* Returns 0 complete, 1 partial (error printed), -1 nothing usable. */
+/* --deviation LIST: names separated by commas, or "all". */
+static int parse_deviations(run_t *R, const char *list)
+{
+    char buf[128], *tok, *save = NULL;
+    int i;
+    if (!R->exact) {
+        hx_error(CMD, "--deviation needs --estimator exact (the streaming estimator computes the Allan deviation "
+                      "only)");
+        return -1;
+    }
+    if (strcmp(list, "all") == 0) {
+        for (i = HX_DEV_MDEV; i < HX_DEV_COUNT; i++) {
+            R->dev[R->ndev++] = (hx_dev_t)i;
+        }
+        return 0;
+    }
+    if (strlen(list) >= sizeof buf) {
+        hx_error(CMD, "--deviation: list too long");
+        return -1;
+    }
+    memcpy(buf, list, strlen(list) + 1u);
+    for (tok = strtok_r(buf, ",", &save); tok != NULL; tok = strtok_r(NULL, ",", &save)) {
+        hx_dev_t k;
+        if (hx_dev_parse(tok, &k) != 0) {
+            hx_error(CMD, "--deviation: unknown '%s' (mdev, tdev, hdev, ohdev, totdev or all)", tok);
+            return -1;
+        }
+        if (k == HX_DEV_ADEV || k == HX_DEV_OADEV) {
+            continue; /* always in the table */
+        }
+        for (i = 0; i < R->ndev; i++) {
+            if (R->dev[i] == k) {
+                break;
+            }
+        }
+        if (i == R->ndev) {
+            R->dev[R->ndev++] = k;
+        }
+    }
+    return 0;
+}
+
 static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_opt)
 {
     hx_reader_t *r = hx_open_input(CMD, a, path);
@@ -498,6 +602,27 @@ static void exact_table(const run_t *R, chan_t *ch)
     }
 }
 
+/* --deviation: each requested deviation at every tau of the grid from the
+ * record, with the interval of the tau's noise exponent (hx_devs.h). */
+static void deviation_tables(const run_t *R, chan_t *ch)
+{
+    int j;
+    size_t i;
+    for (j = 0; j < R->ndev; j++) {
+        const hx_dev_t k = R->dev[j];
+        for (i = 0; i < ch->nres; i++) {
+            const uint32_t m = ch->res[i].tau;
+            const double v = hx_dev_var_record(k, ch->x, ch->nx, m, &ch->dv_terms[k][i]);
+            const double dev = sqrt(v) * ch->scale * hx_dev_scale(k, m, R->rate_hz);
+            ch->dv[k][i] = dev;
+            ch->dv_edf[k][i] = ch->dv_terms[k][i] > 0u ? hx_dev_edf(k, ch->alpha[i], m, ch->nx) : -1.0;
+            if (hx_allan_ci(dev, ch->dv_edf[k][i], R->conf, &ch->dv_lo[k][i], &ch->dv_hi[k][i]) != 0) {
+                ch->dv_lo[k][i] = ch->dv_hi[k][i] = (double)NAN;
+            }
+        }
+    }
+}
+
 static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
 {
     size_t i;
@@ -512,7 +637,10 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
         const fnav_allan_result_t *r = &ch->res[i];
         ch->noise[i] = fnav_allan_noise_from_slope(ch->slope[i]);
         ch->alpha[i] = fnav_allan_noise_alpha(ch->noise[i]);
-        ch->alpha_acf[i] = R->exact && hx_allan_noise_id_acf(ch->x, ch->nx, r->tau, &ch->alpha[i]) == 0;
+        ch->alpha_from[i] = HX_NOISE_ID_SLOPE;
+        if (R->exact && hx_allan_noise_id_acf(ch->x, ch->nx, r->tau, &ch->alpha[i], &ch->alpha_from[i]) != 0) {
+            ch->alpha_from[i] = HX_NOISE_ID_SLOPE; /* alpha keeps the slope's */
+        }
         ch->edf[i] = hx_allan_point_edf_alpha(r, ch->alpha[i], 1);
         ch->edf_n[i] = hx_allan_point_edf_alpha(r, ch->alpha[i], 0);
         if (hx_allan_ci(sqrt((double)r->avar), ch->edf[i], R->conf, &ch->lo[i], &ch->hi[i]) != 0) {
@@ -522,6 +650,7 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
             ch->lo_n[i] = ch->hi_n[i] = (double)NAN;
         }
     }
+    deviation_tables(R, ch);
     o.with_quant = fit_extra;
     o.with_rrw = fit_extra;
     o.tau_max_s = tau_max_samples(R) / R->rate_hz;
@@ -602,6 +731,30 @@ static void print_regions(const run_t *R, const chan_t *ch)
     printf("\n");
 }
 
+/* --deviation: one table per deviation at the octave tau, laid out as
+ * Stable32's (averaging factor, tau, terms, alpha, min, sigma, max). */
+static void print_deviations(const run_t *R, const chan_t *ch)
+{
+    int j;
+    size_t i;
+    char b1[32], b2[32], b3[32];
+    for (j = 0; j < R->ndev; j++) {
+        const hx_dev_t k = R->dev[j];
+        printf("\n  %s (%s) [%s%s], CI at %g confidence\n", hx_dev_title(k), hx_dev_name(k), ch->unit,
+               k == HX_DEV_TDEV ? " s" : "", R->conf);
+        printf("  %9s %10s %9s %5s %12s %12s %12s\n", "m", "tau_s", "terms", "alpha", "min", "sigma", "max");
+        for (i = 0; i < ch->nres; i++) {
+            const uint32_t m = ch->res[i].tau;
+            if (!in_range(R, &ch->res[i]) || (m & (m - 1u)) != 0u || ch->dv_terms[k][i] == 0u) {
+                continue;
+            }
+            printf("  %9lu %10.4g %9lu %5d %12s %12s %12s\n", (unsigned long)m, (double)m / R->rate_hz,
+                   (unsigned long)ch->dv_terms[k][i], ch->alpha[i], fmt_g(b1, sizeof b1, ch->dv_lo[k][i]),
+                   fmt_g(b2, sizeof b2, ch->dv[k][i]), fmt_g(b3, sizeof b3, ch->dv_hi[k][i]));
+        }
+    }
+}
+
 static void print_table(const run_t *R, const chan_t *ch)
 {
     size_t i;
@@ -619,9 +772,10 @@ static void print_table(const run_t *R, const chan_t *ch)
                (unsigned long)r->tau, fmt_g(b1, sizeof b1, sqrt((double)r->avar)), fmt_g(b2, sizeof b2, ch->lo[i]),
                fmt_g(b3, sizeof b3, ch->hi[i]), (unsigned long)r->terms,
                fmt_g(b4, sizeof b4, sqrt((double)r->avar_nonoverlap)), (unsigned long)r->terms_nonoverlap,
-               (double)ch->slope[i], ch->alpha[i], ch->alpha_acf[i] ? "a" : "s", fnav_allan_noise_name(ch->noise[i]));
+               (double)ch->slope[i], ch->alpha[i], ch->alpha_from[i] != HX_NOISE_ID_SLOPE ? "a" : "s", fnav_allan_noise_name(ch->noise[i]));
     }
     print_regions(R, ch);
+    print_deviations(R, ch);
 }
 
 static void print_params(const run_t *R)
@@ -674,6 +828,24 @@ static void print_params(const run_t *R)
     }
 }
 
+/* --deviation columns of one CSV row, ending the line. */
+static void csv_deviations(const run_t *R, const chan_t *ch, size_t k, FILE *f)
+{
+    int j;
+    char b[4][32];
+    for (j = 0; j < R->ndev; j++) {
+        const hx_dev_t d = R->dev[j];
+        if (ch->dv_terms[d][k] == 0u) {
+            fprintf(f, ",,,,,0");
+            continue;
+        }
+        fprintf(f, ",%s,%s,%s,%s,%lu", fmt_g(b[0], 32, ch->dv[d][k]), fmt_g(b[1], 32, ch->dv_lo[d][k]),
+                fmt_g(b[2], 32, ch->dv_hi[d][k]), fmt_g(b[3], 32, ch->dv_edf[d][k]),
+                (unsigned long)ch->dv_terms[d][k]);
+    }
+    fprintf(f, "\n");
+}
+
 static int write_csv(const run_t *R, const char *path)
 {
     FILE *f = fopen(path, "w");
@@ -688,7 +860,12 @@ static int write_csv(const run_t *R, const char *path)
                "confidence (Greenhall EDF)\n",
             R->source, (unsigned long)R->n, R->rate_hz, R->exact ? "exact" : "streaming", R->conf);
     fprintf(f, "channel,unit,tau_s,m,level,stride,oadev,oadev_lo,oadev_hi,edf,terms,adev,adev_lo,adev_hi,edf_n,"
-               "terms_n,slope,noise,sim_paper,sim_fit,model_paper,model_fit,alpha,alpha_from\n");
+               "terms_n,slope,noise,sim_paper,sim_fit,model_paper,model_fit,alpha,alpha_from");
+    for (i = 0; i < R->ndev; i++) {
+        const char *n = hx_dev_name(R->dev[i]);
+        fprintf(f, ",%s,%s_lo,%s_hi,%s_edf,%s_terms", n, n, n, n, n);
+    }
+    fprintf(f, "\n");
     for (i = 0; i < R->nch; i++) {
         const chan_t *ch = &R->ch[i];
         for (k = 0; k < ch->nres; k++) {
@@ -703,7 +880,7 @@ static int write_csv(const run_t *R, const char *path)
             if (ch->id_ok && ch->id.fit_ok) {
                 mf = sqrt(hx_noise_model_avar(&ch->id.fit, R->rate_hz, (double)r->tau));
             }
-            fprintf(f, "%s,%s,%s,%lu,%lu,%lu,%s,%s,%s,%s,%lu,%s,%s,%s,%s,%lu,%s,%s,%s,%s,%s,%s,%d,%s\n", ch->name, ch->unit,
+            fprintf(f, "%s,%s,%s,%lu,%lu,%lu,%s,%s,%s,%s,%lu,%s,%s,%s,%s,%lu,%s,%s,%s,%s,%s,%s,%d,%s", ch->name, ch->unit,
                     fmt_g(b[0], 32, (double)r->tau / R->rate_hz), (unsigned long)r->tau, (unsigned long)r->level,
                     (unsigned long)r->stride, fmt_g(b[1], 32, sqrt((double)r->avar)), fmt_g(b[2], 32, ch->lo[k]),
                     fmt_g(b[3], 32, ch->hi[k]), fmt_g(b[4], 32, ch->edf[k]), (unsigned long)r->terms,
@@ -712,7 +889,8 @@ static int write_csv(const run_t *R, const char *path)
                     fmt_g(b[9], 32, (double)ch->slope[k]), fnav_allan_noise_name(ch->noise[k]),
                     fmt_g(b[10], 32, ch->have_sim_paper ? sqrt((double)ch->sim_paper[k].avar) : (double)NAN),
                     fmt_g(b[11], 32, ch->have_sim_fit ? sqrt((double)ch->sim_fit[k].avar) : (double)NAN),
-                    fmt_g(b[12], 32, mp), fmt_g(b[13], 32, mf), ch->alpha[k], ch->alpha_acf[k] ? "acf" : "slope");
+                    fmt_g(b[12], 32, mp), fmt_g(b[13], 32, mf), ch->alpha[k], hx_noise_id_name(ch->alpha_from[k]));
+            csv_deviations(R, ch, k, f);
         }
     }
     if (fclose(f) != 0) {
@@ -748,6 +926,23 @@ static void json_quality(cJSON *o, const hx_allan_quality_t *q)
     json_num(j, "max_ratio", q->max_ratio);
     json_num(j, "ratio_at_min", q->ratio_at_min);
     cJSON_AddNumberToObject(j, "points", q->npoints);
+}
+
+/* --deviation keys of one table entry: an object per deviation. */
+static void json_deviations(const run_t *R, const chan_t *ch, size_t k, cJSON *e)
+{
+    int j;
+    for (j = 0; j < R->ndev; j++) {
+        const hx_dev_t d = R->dev[j];
+        cJSON *o = cJSON_AddObjectToObject(e, hx_dev_name(d));
+        cJSON_AddNumberToObject(o, "terms", (double)ch->dv_terms[d][k]);
+        if (ch->dv_terms[d][k] > 0u) {
+            json_num(o, "dev", ch->dv[d][k]);
+            json_num(o, "lo", ch->dv_lo[d][k]);
+            json_num(o, "hi", ch->dv_hi[d][k]);
+            json_num(o, "edf", ch->dv_edf[d][k]);
+        }
+    }
 }
 
 static int write_json(const run_t *R, const char *path)
@@ -816,13 +1011,14 @@ static int write_json(const run_t *R, const char *path)
             json_num(e, "slope", (double)ch->slope[k]);
             cJSON_AddStringToObject(e, "noise", fnav_allan_noise_name(ch->noise[k]));
             cJSON_AddNumberToObject(e, "alpha", (double)ch->alpha[k]);
-            cJSON_AddStringToObject(e, "alpha_from", ch->alpha_acf[k] ? "acf" : "slope");
+            cJSON_AddStringToObject(e, "alpha_from", hx_noise_id_name(ch->alpha_from[k]));
             if (ch->have_sim_paper) {
                 json_num(e, "sim_paper", sqrt((double)ch->sim_paper[k].avar));
             }
             if (ch->have_sim_fit) {
                 json_num(e, "sim_fit", sqrt((double)ch->sim_fit[k].avar));
             }
+            json_deviations(R, ch, k, e);
             cJSON_AddItemToArray(t, e);
         }
         cJSON_AddItemToArray(arr, c);
@@ -1121,7 +1317,7 @@ int hx_cmd_allan(int argc, char **argv)
         return HX_EXIT_IO;
     }
     R->tau_max_frac = 0.1;
-    R->conf = 0.683;
+    R->conf = 0.682689492137086; /* one sigma, erf(1 / sqrt(2)): Stable32's "0.683" (docs/allan.md) */
     if (hx_arg_double(&a, "--rate", 1e-9, 1e9, &rate_opt) != 0 || hx_arg_long(&a, "--per-octave", 1, 4, &per_octave) != 0 ||
         hx_arg_double(&a, "--max-tau-frac", 1e-6, 0.5, &R->tau_max_frac) != 0 ||
         hx_arg_double(&a, "--seed", 0.0, 4294967295.0, &seed_d) != 0 ||
@@ -1167,7 +1363,19 @@ int hx_cmd_allan(int argc, char **argv)
         }
         R->exact = strcmp(s_est, "exact") == 0;
     }
-    setup_grid(R, per_octave);
+    if (hx_arg(&a, "--deviation") != NULL && parse_deviations(R, hx_arg(&a, "--deviation")) != 0) {
+        free(R);
+        return HX_EXIT_USAGE;
+    }
+    if (hx_arg(&a, "--m") != NULL && !R->exact) {
+        hx_error(CMD, "--m needs --estimator exact (the streaming estimator has its own grid)");
+        free(R);
+        return HX_EXIT_USAGE;
+    }
+    if (setup_grid(R, per_octave, hx_arg(&a, "--m")) != 0) {
+        free(R);
+        return HX_EXIT_USAGE;
+    }
     if (series != NULL) {
         R->nch = 1;
         R->ch[0].src = -1;
@@ -1218,7 +1426,9 @@ int hx_cmd_allan(int argc, char **argv)
     for (i = 0; i < R->nch; i++) {
         analyse_channel(R, &R->ch[i], hx_flag(&a, "--fit-extra"));
     }
-    if (!hx_flag(&a, "--no-sim")) {
+    if (!hx_flag(&a, "--no-sim") && !grid_streamable(R)) {
+        hx_warn(CMD, "simulation check skipped: it runs the streaming estimator, which cannot track every --m");
+    } else if (!hx_flag(&a, "--no-sim")) {
         const uint32_t nsim = nsim_d > 0.0 ? (uint32_t)nsim_d : R->n;
         hx_progress_t pr;
         double done = 0.0, total = 2.0 * (double)nsim * (double)R->nch;

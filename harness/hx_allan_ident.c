@@ -12,6 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hx_devs.h"
+
 const hx_allan_fit_opts_t hx_allan_fit_opts_default = { 0, 0, 0.0, 0.05 };
 
 /* ------------------------------------------------------------ model */
@@ -176,9 +178,34 @@ static double b1_theory(double N, double mu)
     return N * (1.0 - pow(N, mu)) / (2.0 * (N - 1.0) * (1.0 - pow(2.0, mu)));
 }
 
+const char *hx_noise_id_name(hx_noise_id_t how)
+{
+    static const char *const names[] = { "slope", "acf", "b1", "b1+rn" };
+    return (unsigned)how < sizeof names / sizeof names[0] ? names[how] : "?";
+}
+
+/* R(m) = MVAR / AVAR of the record against its expected values for white
+ * (1 / m) and flicker phase noise (SP 1065 sec. 5.6, with the bandwidth at
+ * the Nyquist frequency: 2 pi f_h tau = pi m): +2 below their geometric
+ * mean, +1 above; -1 when MVAR or AVAR is not there. */
+static int noise_id_rn(const double *x, size_t n, uint32_t m, int *alpha)
+{
+    const double pi = 3.14159265358979323846;
+    uint32_t t1, t2;
+    const double mv = hx_dev_var_record(HX_DEV_MDEV, x, n, m, &t1);
+    const double av = hx_allan_avar_record(x, n, m, 1, &t2);
+    const double r_white = 1.0 / (double)m;
+    const double r_flicker = 3.0 * log(256.0 / 27.0) / (2.0 * (1.038 + 3.0 * log(pi * (double)m)));
+    if (!(mv >= 0.0) || !(av > 0.0)) {
+        return -1;
+    }
+    *alpha = mv / av < sqrt(r_white * r_flicker) ? 2 : 1;
+    return 0;
+}
+
 /* B1 ratio noise identification from len frequency averages z: alpha -2,
  * -1 or 0, or 2 for phase noise (mu = -2), which B1 cannot split into white
- * and flicker. */
+ * and flicker (noise_id_rn() does). */
 static int noise_id_b1(const double *z, size_t len, int *alpha)
 {
     double mean = 0.0, var = 0.0, avar = 0.0, b1, best = 0.0;
@@ -212,7 +239,7 @@ static int noise_id_b1(const double *z, size_t len, int *alpha)
     return 0;
 }
 
-int hx_allan_noise_id_acf(const double *x, size_t n, uint32_t m, int *alpha)
+int hx_allan_noise_id_acf(const double *x, size_t n, uint32_t m, int *alpha, hx_noise_id_t *how)
 {
     const size_t len = m > 0u && n > 0u ? (n - 1u) / m : 0u;
     double *z, sx = 0.0, sxx = 0.0, sz = 0.0, sxz = 0.0, slope, icpt, den, delta = 0.0;
@@ -230,8 +257,14 @@ int hx_allan_noise_id_acf(const double *x, size_t n, uint32_t m, int *alpha)
         z[i] = (x[(i + 1u) * m] - x[i * m]) / (double)m;
     }
     if (len < HX_ACF_MIN_POINTS) {
-        const int rc = noise_id_b1(z, len, alpha);
+        int rc = noise_id_b1(z, len, alpha);
         free(z);
+        if (how != NULL) {
+            *how = HX_NOISE_ID_B1;
+        }
+        if (rc == 0 && *alpha == 2 && noise_id_rn(x, n, m, alpha) == 0 && how != NULL) {
+            *how = HX_NOISE_ID_B1_RN;
+        }
         return rc;
     }
     for (i = 0; i < len; i++) {
@@ -261,6 +294,9 @@ int hx_allan_noise_id_acf(const double *x, size_t n, uint32_t m, int *alpha)
     free(z);
     a = -(int)lround(2.0 * delta) - 2 * d;
     *alpha = a < -2 ? -2 : (a > 2 ? 2 : a);
+    if (how != NULL) {
+        *how = HX_NOISE_ID_ACF;
+    }
     return 0;
 }
 

@@ -158,6 +158,17 @@ double hx_allan_avar_record(const double *x, size_t n, uint32_t m, int overlappi
 /** Fewest averaged values the B1-ratio identification (below HX_ACF_MIN_POINTS) uses. */
 #define HX_B1_MIN_POINTS 4u
 
+/** How a noise exponent was identified (hx_allan_noise_id_acf()). */
+typedef enum {
+    HX_NOISE_ID_SLOPE = 0, /**< from the slope of log ADEV (no identification from the data) */
+    HX_NOISE_ID_ACF,       /**< lag-1 autocorrelation */
+    HX_NOISE_ID_B1,        /**< Barnes' B1 ratio */
+    HX_NOISE_ID_B1_RN      /**< B1, then MVAR / AVAR to tell white from flicker phase noise */
+} hx_noise_id_t;
+
+/** "slope", "acf", "b1" or "b1+rn". */
+const char *hx_noise_id_name(hx_noise_id_t how);
+
 /**
  * Power-law noise exponent alpha (S_y(f) ~ f^alpha) at averaging factor m
  * by the lag-1 autocorrelation method (W. J. Riley and C. A. Greenhall,
@@ -170,13 +181,17 @@ double hx_allan_avar_record(const double *x, size_t n, uint32_t m, int overlappi
  * With fewer than HX_ACF_MIN_POINTS averages (but HX_B1_MIN_POINTS or more)
  * it uses Barnes' B1 ratio (standard over Allan variance of the averages)
  * against its expected value for alpha = -2, -1, 0 and phase noise, nearest
- * on a log scale; B1 cannot tell white from flicker phase noise, and gives +2
- * for both (Stable32 then also looks at MVAR / AVAR, which is not done here).
+ * on a log scale. B1 cannot tell white from flicker phase noise; there, as
+ * Stable32 does, the ratio R(m) = MVAR / AVAR of the record decides: 1 / m
+ * for white phase noise, 3 ln(256/27) / (2 (1.038 + 3 ln(pi m))) for
+ * flicker phase noise with the bandwidth at the Nyquist frequency (NIST
+ * SP 1065 sec. 5.6), split at their geometric mean.
  * @param x      phase record x_0..x_{n-1} (hx_allan_avar_record())
  * @param alpha  out: the integer exponent
+ * @param how    out (may be NULL): the method that gave it
  * @return 0, or -1 when fewer than HX_B1_MIN_POINTS averages exist or out of memory
  */
-int hx_allan_noise_id_acf(const double *x, size_t n, uint32_t m, int *alpha);
+int hx_allan_noise_id_acf(const double *x, size_t n, uint32_t m, int *alpha, hx_noise_id_t *how);
 
 /**
  * EDF of a table entry for a given alpha (Greenhall; fnav_allan_edf()).

@@ -2,10 +2,12 @@
 """Compare `harness allan --out` tables with a Stable32 result file.
 
 Stable32 writes one table per statistic ("# Sigma Type: Overlapping Allan"
-or "Allan", the non-overlapping one): averaging factor, tau, term count, alpha, min sigma,
-sigma, max sigma. This script reads such a file, takes the column of the
-harness CSV that matches its sigma type (oadev or adev, with their interval
-and term counts), and prints, over the averaging factors both have:
+or "Allan", the non-overlapping one, "Modified Allan", "Time", "Hadamard",
+"Overlapping Hadamard", "Total"): averaging factor, tau, term count, alpha,
+min sigma, sigma, max sigma. This script reads such a file, takes the column
+of the harness CSV that matches its sigma type (oadev or adev, with their
+interval and term counts; the others from `--deviation`: mdev, tdev, hdev,
+ohdev, totdev), and prints, over the averaging factors both have:
 - the largest relative difference of the deviation, and where;
 - how many term counts differ;
 - where the noise exponent alpha differs (Stable32's against the harness's
@@ -68,13 +70,21 @@ def main():
     kind, ref = read_stable32(a.stable32)
     if kind is None or not ref:
         sys.exit("%s: no Stable32 sigma type or table found" % a.stable32)
+    other = {"Modified Allan": "mdev", "Time": "tdev", "Hadamard": "hdev", "Overlapping Hadamard": "ohdev",
+             "Total": "totdev"}
     if kind.startswith("Overlapping Allan"):
         dev, lo, hi, terms = "oadev", "oadev_lo", "oadev_hi", "terms"
     elif kind == "Allan" or kind.startswith("Normal Allan"):
         dev, lo, hi, terms = "adev", "adev_lo", "adev_hi", "terms_n"
+    elif kind in other:
+        d = other[kind]
+        dev, lo, hi, terms = d, d + "_lo", d + "_hi", d + "_terms"
     else:
         sys.exit("%s: sigma type '%s' is not one harness allan computes" % (a.stable32, kind))
     got = read_harness(a.table, a.channel)
+    if got and dev not in next(iter(got.values())):
+        sys.exit("%s: no '%s' column (run harness allan with --deviation %s)" % (a.table, dev, dev))
+    got = {m: g for m, g in got.items() if g[dev] not in ("", "null") and int(g[terms]) > 0}
     common = sorted(m for m in ref if m in got)
     if not common:
         sys.exit("no averaging factor in common")

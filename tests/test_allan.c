@@ -18,12 +18,16 @@
 #include "footnav/fnav_profile.h"
 #include "support/fnav_testdata.h"
 #include "hx_allan_ident.h"
+#include "hx_devs.h"
 #include "hx_log.h"
 #include "hx_profile.h"
 
 /* Reference tables of NIST SP 1065 / Stable32 are published to 1e-4
  * relative (and Stable32 prints 5 digits). */
 #define REF_TOL 1e-4
+
+/* Stable32's confidence factor "0.683": one sigma, erf(1 / sqrt(2)) */
+#define S32_CONF 0.682689492137086
 
 /* ------------------------------------------------------------ helpers */
 
@@ -54,6 +58,7 @@ static size_t read_numbers(const char *path, double *out, size_t max)
 typedef struct {
     uint32_t tau;
     uint32_t terms;
+    int alpha;
     double lo, dev, hi;
 } s32_row_t;
 
@@ -67,14 +72,16 @@ static size_t read_stable32(const char *rel, s32_row_t *rows, size_t max)
         return 0;
     }
     while (fgets(line, sizeof line, f) != NULL && n < max) {
-        unsigned af, terms, alpha;
+        unsigned af, terms;
+        int alpha;
         double tau, lo, s, hi;
         if (line[0] == '#') {
             continue;
         }
-        if (sscanf(line, "%u %lf %u %u %lf %lf %lf", &af, &tau, &terms, &alpha, &lo, &s, &hi) == 7) {
+        if (sscanf(line, "%u %lf %u %d %lf %lf %lf", &af, &tau, &terms, &alpha, &lo, &s, &hi) == 7) {
             rows[n].tau = af;
             rows[n].terms = terms;
+            rows[n].alpha = alpha;
             rows[n].lo = lo;
             rows[n].dev = s;
             rows[n].hi = hi;
@@ -216,9 +223,12 @@ static void test_phasedat_adev_every_tau(void **state)
     check_every_tau("allan_reference/phasedat/phase_dat_adev.txt", 0);
 }
 
-/* Octave tau with Stable32's confidence limits (0.683, Greenhall EDF, white
- * FM as Stable32 identified, alpha column 0). The limits agree to the
- * 5 printed digits up to the rounding of the printed sigma (< 5e-4). */
+/* Octave tau with Stable32's confidence limits (Greenhall EDF, white FM as
+ * Stable32 identified, alpha column 0). Stable32's "0.683" is the
+ * one-sigma probability erf(1 / sqrt(2)) = 0.682689 (S32_CONF): at its
+ * few-term points only that value makes both printed limits agree with
+ * one EDF (HDEV, m = 128, 5 terms). The limits agree to the 5 printed
+ * digits up to the rounding of the printed sigma (< 5e-4). */
 static void check_octave(const char *rel, int overlapping)
 {
     static s32_row_t rows[32];
@@ -242,7 +252,7 @@ static void check_octave(const char *rel, int overlapping)
         double lo, hi;
         assert_int_equal(overlapping ? r[i].terms : r[i].terms_nonoverlap, rows[i].terms);
         FNAV_ASSERT_CLOSE(dev, rows[i].dev, 0.0, REF_TOL);
-        assert_int_equal(hx_allan_ci(rows[i].dev, edf, 0.683, &lo, &hi), 0);
+        assert_int_equal(hx_allan_ci(rows[i].dev, edf, S32_CONF, &lo, &hi), 0);
         FNAV_ASSERT_CLOSE(lo, rows[i].lo, 0.0, 5e-4);
         FNAV_ASSERT_CLOSE(hi, rows[i].hi, 0.0, 5e-4);
     }
@@ -258,6 +268,142 @@ static void test_phasedat_adev_octave_ci(void **state)
 {
     (void)state;
     check_octave("allan_reference/phasedat/phase_dat_adev_octave.txt", 0);
+}
+
+/* ------------------------------------------------------------ other deviations */
+
+/* PHASE.DAT's phase record relative to its first value (the x of hx_devs.h). */
+static size_t phasedat_phase(double *x, size_t max)
+{
+    static double y[1100];
+    const size_t ny = phasedat_freq(y, 1100);
+    size_t i;
+    assert_true(ny + 1u <= max);
+    x[0] = 0.0;
+    for (i = 0; i < ny; i++) {
+        x[i + 1u] = x[i] + y[i];
+    }
+    return ny + 1u;
+}
+
+/* Every tau of a Stable32 table of deviation k: value and term count; where
+ * Stable32 printed limits (the octave runs), the limits from hx_dev_edf()
+ * with Stable32's own alpha, so that the EDF is checked apart from the
+ * noise identification. */
+static void check_dev_table(const char *rel, hx_dev_t k)
+{
+    static s32_row_t rows[200];
+    static double x[1100];
+    size_t n, nx, i, nlim = 0;
+    if (skip_without(rel)) {
+        skip();
+    }
+    n = read_stable32(rel, rows, 200);
+    nx = phasedat_phase(x, 1100);
+    assert_true(n >= 8u);
+    assert_int_equal(nx, 1001);
+    for (i = 0; i < n; i++) {
+        uint32_t terms;
+        const double v = hx_dev_var_record(k, x, nx, rows[i].tau, &terms);
+        const double dev = sqrt(v) * hx_dev_scale(k, rows[i].tau, 1.0);
+        assert_int_equal(terms, rows[i].terms);
+        FNAV_ASSERT_CLOSE(dev, rows[i].dev, 0.0, REF_TOL);
+        if (rows[i].lo > 0.0) {
+            double lo, hi;
+            const double edf = hx_dev_edf(k, rows[i].alpha, rows[i].tau, nx);
+            assert_int_equal(hx_allan_ci(rows[i].dev, edf, S32_CONF, &lo, &hi), 0);
+            FNAV_ASSERT_CLOSE(lo, rows[i].lo, 0.0, 5e-4);
+            FNAV_ASSERT_CLOSE(hi, rows[i].hi, 0.0, 5e-4);
+            nlim++;
+        }
+    }
+    /* the octave files carry limits on every row, the all-tau files none */
+    assert_true(nlim == 0u || nlim == n);
+}
+
+static void test_phasedat_other_deviations(void **state)
+{
+    static const struct {
+        const char *name;
+        hx_dev_t k;
+    } t[] = {
+        { "mdev", HX_DEV_MDEV }, { "tdev", HX_DEV_TDEV }, { "hdev", HX_DEV_HDEV }, { "ohdev", HX_DEV_OHDEV },
+        { "totdev", HX_DEV_TOTDEV }, { "adev", HX_DEV_ADEV }, { "oadev", HX_DEV_OADEV },
+    };
+    size_t i;
+    char rel[128];
+    (void)state;
+    for (i = 0; i < sizeof t / sizeof t[0]; i++) {
+        snprintf(rel, sizeof rel, "allan_reference/phasedat/phase_dat_%s.txt", t[i].name);
+        check_dev_table(rel, t[i].k);
+        snprintf(rel, sizeof rel, "allan_reference/phasedat/phase_dat_%s_octave.txt", t[i].name);
+        check_dev_table(rel, t[i].k);
+    }
+}
+
+/* NIST SP 1065 p. 107: every deviation of the 10-point NBS14 set at
+ * tau 1 and 2 s (nbs14_10pt_expected.csv; HTOTDEV and the other totals are
+ * not computed here). Published to 7 digits: 1e-6. */
+static void test_nbs14_10_other_deviations(void **state)
+{
+    static const double y[9] = { 892.0, 809.0, 823.0, 798.0, 671.0, 644.0, 883.0, 903.0, 677.0 };
+    static const double want[HX_DEV_COUNT][2] = {
+        { 91.22945, 115.8082 }, { 91.22945, 85.95287 }, { 91.22945, 74.78849 }, { 52.67135, 86.35831 },
+        { 70.80608, 116.7980 }, { 70.80607, 85.61487 }, { 91.22945, 93.90379 },
+    };
+    double x[10];
+    unsigned k, m;
+    (void)state;
+    x[0] = 0.0;
+    for (m = 0; m < 9u; m++) {
+        x[m + 1u] = x[m] + y[m];
+    }
+    for (k = 0; k < HX_DEV_COUNT; k++) {
+        for (m = 1; m <= 2u; m++) {
+            uint32_t terms;
+            const double dev = sqrt(hx_dev_var_record((hx_dev_t)k, x, 10u, m, &terms)) *
+                               hx_dev_scale((hx_dev_t)k, m, 1.0);
+            FNAV_ASSERT_CLOSE(dev, want[k][m - 1u], 0.0, 1e-6);
+            assert_true(terms > 0u);
+        }
+    }
+    /* too long an averaging factor: no term, NaN */
+    for (k = 0; k < HX_DEV_COUNT; k++) {
+        uint32_t terms = 7u;
+        assert_true(isnan(hx_dev_var_record((hx_dev_t)k, x, 10u, 5u, &terms)));
+        assert_int_equal(terms, 0u);
+    }
+}
+
+/* Greenhall's EDF for the variance family: one difference term (M = 1)
+ * is one degree of freedom for every d, filter and stride; undefined where
+ * the variance diverges (alpha + 2 d <= 1) or no term exists; and the
+ * Allan case is fnav_allan_edf(). */
+static void test_edf_var_edges(void **state)
+{
+    int alpha, d;
+    (void)state;
+    for (d = 1; d <= 3; d++) {
+        for (alpha = 2; alpha + 2 * d > 1; alpha--) {
+            const uint32_t m = 4u;
+            /* a term spans L = m / F + m d phase values: 1 + m d unmodified (F = m), m + m d modified */
+            assert_true(fabs(fnav_allan_edf_var(alpha, d, 0, m, 1u + m * (uint32_t)d, 1) - 1.0) < 1e-12);
+            assert_true(fabs(fnav_allan_edf_var(alpha, d, 0, m, 1u + m * (uint32_t)d, 0) - 1.0) < 1e-12);
+            assert_true(fabs(fnav_allan_edf_var(alpha, d, 1, m, m + m * (uint32_t)d, 1) - 1.0) < 1e-12);
+            assert_true(fnav_allan_edf_var(alpha, d, 0, m, m * (uint32_t)d, 1) < 0.0);
+            assert_true(fnav_allan_edf_var(alpha, d, 1, m, m + m * (uint32_t)d - 1u, 1) < 0.0);
+        }
+        assert_true(fnav_allan_edf_var(alpha, d, 0, 4u, 1000u, 1) < 0.0); /* alpha + 2 d = 1 */
+    }
+    assert_true(fnav_allan_edf_var(0, 0, 0, 4u, 1000u, 1) < 0.0);
+    assert_true(fnav_allan_edf_var(0, 4, 0, 4u, 1000u, 1) < 0.0);
+    assert_true(fnav_allan_edf_var(3, 2, 0, 4u, 1000u, 1) < 0.0);
+    for (alpha = -2; alpha <= 2; alpha++) {
+        assert_true(fnav_allan_edf_var(alpha, 2, 0, 16u, 1001u, 1) == fnav_allan_edf(alpha, 16u, 1001u, 1));
+    }
+    /* the Hadamard variance converges for alpha down to -4 */
+    assert_true(fnav_allan_edf_var(-4, 3, 0, 16u, 1001u, 1) > 0.0);
+    assert_true(fnav_allan_edf_var(-4, 3, 1, 16u, 1001u, 1) > 0.0);
 }
 
 /* ------------------------------------------------------------ cascade, float error */
@@ -841,7 +987,7 @@ static void test_edf_single_term(void **state)
     assert_true(fnav_allan_edf(3, 1u, 100u, 1) < 0.0);
 }
 
-/* hx_allan_avar_record() on a frequency ramp y_k = a k: the phase
+/* hx_allan_avar_record() and hx_dev_var_record() on a frequency ramp y_k = a k: the phase
  * x_n = a n (n - 1) / 2 has every second difference at lag m equal to a m^2,
  * so AVAR(m) = a^2 m^2 / 2 exactly, for both estimators; term counts
  * n - 2m (stride 1) and floor((n - 1) / m) - 1 (stride m). */
@@ -862,6 +1008,17 @@ static void test_avar_record_ramp(void **state)
         assert_true(fabs(hx_allan_avar_record(x, 1001u, m, 0, &terms) / want - 1.0) < 1e-12);
         assert_int_equal(terms, 1000u / m - 1u);
     }
+    /* the other deviations (hx_devs.h): MVAR sums m second differences, all
+     * a m^2, so MVAR = AVAR = a^2 m^2 / 2; the third differences vanish, so
+     * HVAR = OHVAR = 0 (the Hadamard variance ignores a drift) */
+    for (m = 1; m <= 333u; m += 23u) {
+        const double want = a * a * (double)m * (double)m / 2.0;
+        assert_true(fabs(hx_dev_var_record(HX_DEV_MDEV, x, 1001u, m, &terms) / want - 1.0) < 1e-9);
+        assert_int_equal(terms, 1001u - 3u * m + 1u);
+        assert_true(hx_dev_var_record(HX_DEV_HDEV, x, 1001u, m, &terms) < 1e-18 * want);
+        assert_true(hx_dev_var_record(HX_DEV_OHDEV, x, 1001u, m, &terms) < 1e-18 * want);
+        assert_int_equal(terms, 1001u - 3u * m);
+    }
     /* n = 2m phase values: no second difference */
     assert_true(isnan(hx_allan_avar_record(x, 10u, 5u, 1, &terms)));
     assert_int_equal(terms, 0u);
@@ -876,29 +1033,49 @@ static void test_noise_id_edges(void **state)
     static double x[4001];
     size_t n;
     int alpha = 99;
+    hx_noise_id_t how = HX_NOISE_ID_SLOPE;
     (void)state;
     x[0] = 0.0;
     for (n = 1; n < 4001u; n++) {
         x[n] = x[n - 1u] + ((n % 2u) ? 1.0 : -1.0); /* y = +1, -1, +1, ... */
     }
-    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1u, &alpha), 0);
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1u, &alpha, NULL), 0);
     assert_int_equal(alpha, 2);
     for (n = 0; n < 4001u; n++) {
         x[n] = 0.0;
     }
     alpha = 99;
-    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1u, &alpha), 0);
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1u, &alpha, NULL), 0);
     assert_true(alpha >= -2 && alpha <= 2);
     /* 4000 samples: 30 averages up to m = 133 (autocorrelation), 4 up to
      * m = 1000 (B1; a constant has no Allan variance: no answer), none beyond */
-    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 200u, &alpha), -1);
-    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1001u, &alpha), -1);
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 200u, &alpha, NULL), -1);
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1001u, &alpha, NULL), -1);
     for (n = 1; n < 4001u; n++) {
         x[n] = x[n - 1u] + (double)((n * 2654435761u) % 1000u) / 1000.0 - 0.5; /* scrambled: white FM */
     }
-    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 200u, &alpha), 0); /* 20 averages: B1 */
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 200u, &alpha, &how), 0); /* 20 averages: B1 */
     assert_true(alpha >= -2 && alpha <= 2);
-    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1001u, &alpha), -1);
+    assert_int_equal(how, HX_NOISE_ID_B1);
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1001u, &alpha, NULL), -1);
+    /* a white phase: B1 says phase noise, and MVAR / AVAR (about 1 / m =
+     * 0.005 against 0.11 for flicker) says white: +2 */
+    {
+        uint64_t r = 88172645463325252ull; /* xorshift64 (Marsaglia 2003): uniform phase, white */
+        for (n = 1; n < 4001u; n++) {
+            r ^= r << 13;
+            r ^= r >> 7;
+            r ^= r << 17;
+            x[n] = (double)(r >> 11) / 9007199254740992.0 - 0.5;
+        }
+    }
+    alpha = 99;
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 200u, &alpha, &how), 0);
+    assert_int_equal(alpha, 2);
+    assert_int_equal(how, HX_NOISE_ID_B1_RN);
+    assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1u, &alpha, &how), 0);
+    assert_int_equal(how, HX_NOISE_ID_ACF);
+    assert_string_equal(hx_noise_id_name(HX_NOISE_ID_B1_RN), "b1+rn");
 }
 
 int main(void)
@@ -906,6 +1083,9 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_nbs14_1000),
         cmocka_unit_test(test_nbs14_10),
+        cmocka_unit_test(test_nbs14_10_other_deviations),
+        cmocka_unit_test(test_phasedat_other_deviations),
+        cmocka_unit_test(test_edf_var_edges),
         cmocka_unit_test(test_phasedat_oadev_every_tau),
         cmocka_unit_test(test_phasedat_adev_every_tau),
         cmocka_unit_test(test_phasedat_oadev_octave_ci),

@@ -123,6 +123,12 @@ PYEOF
     got_a=$(awk -F, '!/^#/ && $4 ~ /^(1|2|4|8)$/ { printf "%s%s ", $23, $24 }' "$T/n.csv")
     [ "$got_a" = "${al}acf ${al}acf ${al}acf ${al}acf " ] && pass "noise id alpha $al at m 1..8" ||
         fail "noise id alpha $al: $got_a"
+    # m = 2048: 16 averages, B1 (phase noise) and then MVAR / AVAR tell white (+2) from flicker (+1) phase noise
+    if [ "$al" -ge 1 ]; then
+        got_a=$(awk -F, '!/^#/ && $4 == 2048 { print $23 $24 }' "$T/n.csv")
+        [ "$got_a" = "${al}b1+rn" ] && pass "noise id alpha $al at m 2048 by B1 and R(n)" ||
+            fail "noise id alpha $al at m 2048: $got_a"
+    fi
 done
 
 P=$(data allan_reference/phasedat/PHASE.DAT)
@@ -140,10 +146,13 @@ if [ -n "$P" ]; then
         fail "JSON"
     fi
     expect_exit 2 "profile from a series" "$H" allan --series "$P" --rate 1 --profile "$T/x.profile"
-    # every Stable32 PHASE.DAT table (all tau and octave, OADEV and ADEV) through scripts/stable32_check.py:
-    # values 1e-4, term counts exact, limits 5e-4 where alpha agrees
-    expect_exit 0 "PHASE.DAT, default grid" "$H" allan --series "$P" --phase --rate 1 --no-sim --quiet --out "$T/pd.csv"
-    for s32 in phase_dat_oadev phase_dat_adev phase_dat_oadev_octave phase_dat_adev_octave; do
+    # every Stable32 PHASE.DAT table (all tau and octave; ADEV, OADEV and, with --deviation all, MDEV, TDEV, HDEV,
+    # OHDEV, TOTDEV) through scripts/stable32_check.py: values 1e-4, term counts exact, limits 5e-4 where alpha agrees
+    expect_exit 0 "PHASE.DAT, default grid" "$H" allan --series "$P" --phase --rate 1 --no-sim --quiet --deviation all \
+        --out "$T/pd.csv" --json "$T/pd.json"
+    for s32 in phase_dat_oadev phase_dat_adev phase_dat_mdev phase_dat_tdev phase_dat_hdev phase_dat_ohdev \
+        phase_dat_totdev phase_dat_oadev_octave phase_dat_adev_octave phase_dat_mdev_octave phase_dat_tdev_octave \
+        phase_dat_hdev_octave phase_dat_ohdev_octave phase_dat_totdev_octave; do
         if "$PY" "$(dirname "$0")/../../scripts/stable32_check.py" "$T/pd.csv" "$(dirname "$P")/$s32.txt" >"$T/s32" 2>&1 &&
             grep -q "averaging factors in common" "$T/s32" && ! grep -q " 0 of " "$T/s32"; then
             pass "stable32_check $s32"
@@ -151,12 +160,53 @@ if [ -n "$P" ]; then
             fail "stable32_check $s32: $(cat "$T/s32")"
         fi
     done
+    # the JSON carries the same deviations: MDEV at m = 1 equals OADEV (one average), TOTDEV has n - 2 terms everywhere
+    if "$PY" - "$T/pd.json" <<'PYEOF'
+import json, sys
+t = json.load(open(sys.argv[1]))["channels"][0]["table"]
+assert t[0]["m"] == 1 and abs(t[0]["mdev"]["dev"] / t[0]["oadev"] - 1) < 1e-6  # oadev passes through a float
+assert all(e["totdev"]["terms"] == 999 for e in t), [e["totdev"]["terms"] for e in t]
+assert all(set(e) >= {"mdev", "tdev", "hdev", "ohdev", "totdev"} for e in t)
+PYEOF
+    then pass "deviations in the JSON"; else fail "deviations in the JSON"; fi
     # Stable32 identified white FM (alpha 0) at every octave tau; the autocorrelation has 30 averages up to m = 32
     awk -F, '!/^#/ && $4 ~ /^(1|2|4|8|16|32)$/ { n++; if ($23 != 0 || $24 != "acf") bad++ } END { exit !(n == 6 && !bad) }' \
         "$T/pd.csv" && pass "PHASE.DAT alpha 0 by autocorrelation at m 1..32" || fail "PHASE.DAT alpha"
 else
     echo "SKIP PHASE.DAT tests (shared data not found; set FNAV_DATA_DIR)"
 fi
+
+# NBS14 1000-point set: NIST SP 1065's published ADEV, OADEV, MDEV, TDEV, HDEV, OHDEV and TOTDEV at tau 1, 10, 100 s
+# (nbs14_1000pt_expected.csv, 7 digits; the CSV prints 6: at most 5e-6 + 5e-7 from the two roundings)
+N14=$(data allan_reference/nbs14/nbs14_1000pt_frequency.txt)
+if [ -n "$N14" ]; then
+    expect_exit 0 "NBS14 1000-point, --m 1,10,100, every deviation" "$H" allan --series "$N14" --rate 1 --m 1,10,100 \
+        --no-sim --quiet --deviation all --out "$T/n14.csv"
+    if "$PY" - "$T/n14.csv" "$(dirname "$N14")/nbs14_1000pt_expected.csv" >"$T/n14.txt" 2>&1 <<'PYEOF'
+import csv, sys
+rows = {int(r["m"]): r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#"))}
+assert sorted(rows) == [1, 10, 100], sorted(rows)
+exp = {}
+for l in open(sys.argv[2]):
+    c = l.strip().split(",")
+    if not l.startswith("#") and c[0] != "statistic":
+        exp[c[0]] = c[1:4]
+worst = 0.0
+for stat in ("ADEV", "OADEV", "MDEV", "TDEV", "HDEV", "OHDEV", "TOTDEV"):
+    for m, want in zip((1, 10, 100), exp[stat]):
+        worst = max(worst, abs(float(rows[m][stat.lower()]) / float(want) - 1.0))
+print("worst %.1e" % worst)
+assert worst < 5.5e-6, worst
+PYEOF
+    then pass "NBS14 published deviations ($(cat "$T/n14.txt"))"; else fail "NBS14 deviations: $(cat "$T/n14.txt")"; fi
+else
+    echo "SKIP NBS14 tests (shared data not found; set FNAV_DATA_DIR)"
+fi
+expect_exit 2 "--deviation with the streaming estimator" "$H" allan vectors/walk.bin --deviation mdev
+expect_exit 2 "unknown --deviation" "$H" allan --series "$T/f.txt" --rate 1 --deviation xdev
+expect_exit 2 "--m not ascending" "$H" allan --series "$T/f.txt" --rate 1 --m 10,5
+expect_exit 2 "--m not a number" "$H" allan --series "$T/f.txt" --rate 1 --m 1,x
+expect_exit 2 "--m with the streaming estimator" "$H" allan --series "$T/f.txt" --rate 1 --estimator streaming --m 4
 
 A=$(data adis16405_static/adis16405_imu1_100Hz.csv.gz)
 if [ -n "$A" ]; then
