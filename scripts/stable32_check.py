@@ -14,8 +14,9 @@ ohdev, totdev), and prints, over the averaging factors both have:
   `alpha` column), and, where it agrees and Stable32 printed limits, the
   largest relative difference of the interval limits.
 
-Usage: /usr/bin/python3 scripts/stable32_check.py TABLE.csv STABLE32.txt
+Usage: /usr/bin/python3 scripts/stable32_check.py TABLE.csv [TABLE2.csv ...] STABLE32.txt
        [--channel NAME] [--tol REL] [--ci-tol REL]
+Several tables are read as one (e.g. two `--m` runs of at most 160 tau).
 Exit status 1 when the deviation or a term count is off by more than --tol
 (default 1e-4, what Stable32's 5 printed digits allow), or a limit with the
 same alpha by more than --ci-tol (default 5e-4).
@@ -61,7 +62,7 @@ def read_harness(path, channel):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("table")
+    ap.add_argument("table", nargs="+")
     ap.add_argument("stable32")
     ap.add_argument("--channel", default=None, help="channel of the harness table (default: all rows)")
     ap.add_argument("--tol", type=float, default=1e-4)
@@ -81,9 +82,11 @@ def main():
         dev, lo, hi, terms = d, d + "_lo", d + "_hi", d + "_terms"
     else:
         sys.exit("%s: sigma type '%s' is not one harness allan computes" % (a.stable32, kind))
-    got = read_harness(a.table, a.channel)
+    got = {}
+    for t in a.table:
+        got.update(read_harness(t, a.channel))
     if got and dev not in next(iter(got.values())):
-        sys.exit("%s: no '%s' column (run harness allan with --deviation %s)" % (a.table, dev, dev))
+        sys.exit("%s: no '%s' column (run harness allan with --deviation %s)" % (" ".join(a.table), dev, dev))
     got = {m: g for m, g in got.items() if g[dev] not in ("", "null") and int(g[terms]) > 0}
     common = sorted(m for m in ref if m in got)
     if not common:
