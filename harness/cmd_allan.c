@@ -48,7 +48,8 @@ static const hx_opt_t k_opts[] = {
     { "--no-sim", NULL, "skip the simulation check (paper Fig. 7)", 0 },
     { "--sim-samples", "N", "samples per simulation (default: as many as the input)", 0 },
     { "--seed", "N", "random seed of the simulations (default 1)", 0 },
-    { "--conf", "P", "confidence of the intervals (default 0.682689 = erf(1/sqrt(2)), one sigma, Stable32's 0.683)", 0 },
+    { "--conf", "P", "confidence of the intervals (default 0.682689 = erf(1/sqrt(2)), one sigma, Stable32's "
+                     "0.683)", 0 },
     { "--name", "TEXT", "profile name (default: from the file name)", 0 },
     { "--out", "FILE", "table of every channel and tau (CSV)", 0 },
     { "--json", "FILE", "parameters, quality and tables (JSON)", 0 },
@@ -772,7 +773,8 @@ static void print_table(const run_t *R, const chan_t *ch)
                (unsigned long)r->tau, fmt_g(b1, sizeof b1, sqrt((double)r->avar)), fmt_g(b2, sizeof b2, ch->lo[i]),
                fmt_g(b3, sizeof b3, ch->hi[i]), (unsigned long)r->terms,
                fmt_g(b4, sizeof b4, sqrt((double)r->avar_nonoverlap)), (unsigned long)r->terms_nonoverlap,
-               (double)ch->slope[i], ch->alpha[i], ch->alpha_from[i] != HX_NOISE_ID_SLOPE ? "a" : "s", fnav_allan_noise_name(ch->noise[i]));
+               (double)ch->slope[i], ch->alpha[i], ch->alpha_from[i] != HX_NOISE_ID_SLOPE ? "a" : "s",
+               fnav_allan_noise_name(ch->noise[i]));
     }
     print_regions(R, ch);
     print_deviations(R, ch);
