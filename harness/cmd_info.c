@@ -281,7 +281,8 @@ int hx_cmd_info(int argc, char **argv)
         exit_code = HX_EXIT_IO;
     }
     if (log.status != FNAV_END) {
-        hx_error("info", "%s", log.error);
+        /* the reader's message was warned when the input was read (hx_load_input()) */
+        hx_error("info", "incomplete input (warned above): the results cover the %zu samples before the error", log.n);
     }
     hx_log_free(&log);
     return exit_code;

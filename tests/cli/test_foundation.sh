@@ -107,6 +107,12 @@ expect_out_re "^samples     2$" "two samples kept"
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,nan\n' >"$T/nan.csv"
 expect_exit 1 "NaN in CSV" "$H" info "$T/nan.csv"
 expect_err "nan.csv:2: column 7 ('nan') is NaN or Inf" "NaN names file, line and column"
+# a bad line after good ones: the reader's message once (the warning when it is read), then one closing error
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\nbad,line\n' >"$T/badline.csv"
+expect_exit 1 "a bad line after two samples" "$H" info "$T/badline.csv"
+expect_err "incomplete input (warned above): the results cover the 2 samples before the error" "closing error says what the report covers"
+[ "$(grep -c 'badline.csv:4: 2 columns' "$T/err")" -eq 1 ] && pass "the bad line is named once on stderr" ||
+    fail "the bad line named $(grep -c 'badline.csv:4: 2 columns' "$T/err") times"
 printf 't,ax,ay,az\n0,0,0,-9.8\n' >"$T/cols.csv"
 expect_exit 1 "missing columns" "$H" info "$T/cols.csv"
 expect_err "cols.csv:1: header has no column 'gx'" "missing column named"
