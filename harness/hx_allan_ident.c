@@ -257,7 +257,7 @@ int hx_allan_noise_id_acf(const double *x, size_t n, uint32_t m, int *alpha, hx_
         z[i] = (x[(i + 1u) * m] - x[i * m]) / (double)m;
     }
     if (len < HX_ACF_MIN_POINTS) {
-        int rc = noise_id_b1(z, len, alpha);
+        const int rc = noise_id_b1(z, len, alpha);
         free(z);
         if (how != NULL) {
             *how = HX_NOISE_ID_B1;

@@ -114,11 +114,13 @@ double hx_dev_var_record(hx_dev_t k, const double *x, size_t n, uint32_t m_u, ui
     switch (k) {
     case HX_DEV_ADEV:
     case HX_DEV_OADEV: return hx_allan_avar_record(x, n, m_u, k == HX_DEV_OADEV, terms);
+    /* the record's length against the span of one term, without forming k m (no overflow) */
     case HX_DEV_MDEV:
-    case HX_DEV_TDEV: return n >= 3u * m ? mvar(x, n, m, terms) : (double)NAN;
+    case HX_DEV_TDEV: return m <= n / 3u ? mvar(x, n, m, terms) : (double)NAN;
     case HX_DEV_HDEV:
-    case HX_DEV_OHDEV: return n > 3u * m ? hvar(x, n, m, k == HX_DEV_HDEV ? m : 1u, terms) : (double)NAN;
-    case HX_DEV_TOTDEV: return n > 2u * m && n >= 3u ? totvar(x, n, m, terms) : (double)NAN;
+    case HX_DEV_OHDEV:
+        return n > 0u && m <= (n - 1u) / 3u ? hvar(x, n, m, k == HX_DEV_HDEV ? m : 1u, terms) : (double)NAN;
+    case HX_DEV_TOTDEV: return n >= 3u && m <= (n - 1u) / 2u ? totvar(x, n, m, terms) : (double)NAN;
     default: return (double)NAN;
     }
 }
