@@ -401,6 +401,14 @@ static void test_edf_var_edges(void **state)
     for (alpha = -2; alpha <= 2; alpha++) {
         assert_true(fnav_allan_edf_var(alpha, 2, 0, 16u, 1001u, 1) == fnav_allan_edf(alpha, 16u, 1001u, 1));
     }
+    /* Stable32's PHASE.DAT HDEV octave limits at m = 128 (5 terms, white FM)
+     * imply an EDF of 2.8664 (lower limit) and 2.8672 (upper) at the
+     * one-sigma confidence (scripts/stable32_conf.py; their 5 printed digits
+     * move it by about 0.002): Greenhall's d = 3, non-overlapping value */
+    {
+        const double e = fnav_allan_edf_var(0, 3, 0, 128u, 1001u, 0);
+        assert_true(e > 2.862 && e < 2.871);
+    }
     /* the Hadamard variance converges for alpha down to -4 */
     assert_true(fnav_allan_edf_var(-4, 3, 0, 16u, 1001u, 1) > 0.0);
     assert_true(fnav_allan_edf_var(-4, 3, 1, 16u, 1001u, 1) > 0.0);
