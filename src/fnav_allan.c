@@ -614,6 +614,64 @@ double fnav_allan_edf_var(int alpha, int d, int modified, uint32_t m_u, uint32_t
     return inv > 0.0 ? 1.0 / inv : -1.0;
 }
 
+/* PVAR: R(t) = sum over tau of q(tau) sx(t + tau), q the autocorrelation of
+ * the taps (symmetric, q[0 .. 2m - 1] for tau >= 0), sx the phase's
+ * sample-averaged generalized autocovariance (gh_sx() with F = 1, t in
+ * samples). */
+#define EDF_PVAR_MMAX 64u
+
+static double pvar_r(const double *q, uint32_t len, double t, int alpha)
+{
+    double r = q[0] * gh_sx(t, 1.0, alpha);
+    uint32_t k;
+    for (k = 1; k < len; k++) {
+        r += q[k] * (gh_sx(t + (double)k, 1.0, alpha) + gh_sx(t - (double)k, 1.0, alpha));
+    }
+    return r;
+}
+
+double fnav_allan_edf_pvar(int alpha, uint32_t m_u, uint32_t n_phase)
+{
+    double tap[2u * EDF_PVAR_MMAX] = { 0.0 }, q[2u * EDF_PVAR_MMAX] = { 0.0 };
+    const uint32_t mp = m_u > EDF_PVAR_MMAX ? EDF_PVAR_MMAX : m_u, len = 2u * mp;
+    double M, J, step, r0, sum, r;
+    uint32_t k, i, j, jn;
+    if (alpha > 2 || alpha < -2 || m_u == 0u || n_phase < 3u || m_u > (n_phase - 1u) / 2u) {
+        return -1.0;
+    }
+    if (m_u == 1u) {
+        return fnav_allan_edf_var(alpha, 2, 0, 1u, n_phase, 1);
+    }
+    for (k = 0; k < len; k++) {
+        const double c = 0.5 * (double)(mp - 1u) - (double)(k % mp);
+        tap[k] = k < mp ? c : -c;
+    }
+    for (k = 0; k < len; k++) {
+        q[k] = 0.0;
+        for (i = 0; i + k < len; i++) {
+            q[k] += tap[i] * tap[i + k];
+        }
+    }
+    M = (double)(n_phase - 2u * m_u);
+    J = M < 3.0 * (double)m_u ? M : 3.0 * (double)m_u;
+    step = (double)mp / (double)m_u; /* one lag of m in lags of mp */
+    if (J > 3.0 * (double)EDF_PVAR_MMAX) {
+        /* more lags than m = 64 has: the sum on mp's own lag grid */
+        M *= step;
+        J = floor(M < 3.0 * (double)mp ? M : 3.0 * (double)mp);
+        step = 1.0;
+    }
+    jn = (uint32_t)J;
+    r0 = pvar_r(q, len, 0.0, alpha);
+    r = jn > 0u ? pvar_r(q, len, (double)jn * step, alpha) : 0.0;
+    sum = r0 * r0 + (1.0 - (double)jn / M) * r * r;
+    for (j = 1; j < jn; j++) {
+        r = pvar_r(q, len, (double)j * step, alpha);
+        sum += 2.0 * (1.0 - (double)j / M) * r * r;
+    }
+    return sum > 0.0 && r0 != 0.0 ? M * r0 * r0 / sum : -1.0;
+}
+
 double fnav_allan_edf(int alpha, uint32_t m_u, uint32_t n_phase, int overlapping)
 {
     return alpha < -2 ? -1.0 : fnav_allan_edf_var(alpha, 2, 0, m_u, n_phase, overlapping);

@@ -254,6 +254,22 @@ double fnav_allan_edf(int alpha, uint32_t m, uint32_t n_phase, int overlapping);
 double fnav_allan_edf_var(int alpha, int d, int modified, uint32_t m, uint32_t n_phase, int overlapping);
 
 /**
+ * EDF of the parabolic variance (PVAR, Vernotte, Lenczner, Bourgeois &
+ * Rubiola, IEEE TUFFC 63(4), 2016), fully overlapping, M = n_phase - 2m
+ * terms (SigmaTheta's and allantools' count), for power-law noise. The
+ * same quantity as Greenhall & Riley's, computed the same way (the
+ * filter's output autocovariance under the sample-averaged power law,
+ * their basic sum to J = min(M, 3m) lags) for the PVAR filter, whose taps
+ * (m - 1) / 2 - k, k < m, and their negatives are not in their family.
+ * Exact up to m = 64; above, the filter of m = 64 with lags scaled by
+ * 64 / m (the large-m limit). m = 1: PVAR is the overlapping Allan variance
+ * and so is the EDF. Checked against simulation (docs/allan.md).
+ * @param alpha   power-law noise exponent, -2..+2
+ * @return the EDF, or a negative value when it is undefined.
+ */
+double fnav_allan_edf_pvar(int alpha, uint32_t m, uint32_t n_phase);
+
+/**
  * The paper's identification (section III.C) from an Allan deviation table:
  * sigma_v = ADEV at 1 s (log-log interpolation between grid points), BS =
  * the minimum of ADEV over points with tau <= tau_max (refined by a parabola
