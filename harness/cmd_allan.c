@@ -36,7 +36,8 @@ static const hx_opt_t k_opts[] = {
                              "default for --series) or streaming (the core's fixed-memory estimator, as on the "
                              "sensor; default for a log)", 0 },
     { "--deviation", "LIST", "also these deviations of the whole record (needs --estimator exact): mdev, tdev, hdev, "
-                             "ohdev, totdev, or all; each with its interval and term count (adev and oadev are "
+                             "ohdev, totdev, pdev (parabolic), or all; each with its interval and term count (adev and "
+                             "oadev are "
                              "always in the table)", 0 },
     { "--m", "LIST", "averaging factors instead of the log-spaced grid, ascending, e.g. 1,10,100 (needs "
                      "--estimator exact)", 0 },
@@ -347,7 +348,7 @@ static int parse_deviations(run_t *R, const char *list)
     for (tok = strtok_r(buf, ",", &save); tok != NULL; tok = strtok_r(NULL, ",", &save)) {
         hx_dev_t k;
         if (hx_dev_parse(tok, &k) != 0) {
-            hx_error(CMD, "--deviation: unknown '%s' (mdev, tdev, hdev, ohdev, totdev or all)", tok);
+            hx_error(CMD, "--deviation: unknown '%s' (mdev, tdev, hdev, ohdev, totdev, pdev or all)", tok);
             return -1;
         }
         if (k == HX_DEV_ADEV || k == HX_DEV_OADEV) {

@@ -11,7 +11,7 @@ static const struct {
     const char *name, *title;
 } k_dev[HX_DEV_COUNT] = {
     { "adev", "Allan" },       { "oadev", "Overlapping Allan" }, { "mdev", "Modified Allan" }, { "tdev", "Time" },
-    { "hdev", "Hadamard" },    { "ohdev", "Overlapping Hadamard" }, { "totdev", "Total" },
+    { "hdev", "Hadamard" },    { "ohdev", "Overlapping Hadamard" }, { "totdev", "Total" }, { "pdev", "Parabolic" },
 };
 
 const char *hx_dev_name(hx_dev_t k)
@@ -104,6 +104,39 @@ static double totvar(const double *x, size_t n, size_t m, uint32_t *terms)
     return sum / (2.0 * (double)m * (double)m * (double)(n - 2u));
 }
 
+/* PVAR: z_i = sum over k < m of ((m - 1) / 2 - k) (x_{i+k} - x_{i+m+k}), the
+ * difference of two least-squares frequency slopes (up to a factor), written
+ * with u_i = x_i - x_{i+m} as (m - 1) / 2 S0_i - S1_i, S0_i = sum u_{i+k},
+ * S1_i = sum k u_{i+k}. Both slide (S0_i = S0_{i-1} - u_{i-1} + u_{i-1+m},
+ * S1_i = S1_{i-1} + m u_{i-1+m} - S0_i) and are summed afresh every m
+ * starts, as in mvar(). */
+static double pvar(const double *x, size_t n, size_t m, uint32_t *terms)
+{
+    const size_t nt = n - 2u * m; /* m <= (n - 1) / 2 checked by the caller */
+    const double h = 0.5 * (double)(m - 1u), md = (double)m;
+    double s0 = 0.0, s1 = 0.0, sum = 0.0;
+    size_t i, k;
+    for (i = 0; i < nt; i++) {
+        double z;
+        if (i % m == 0u) {
+            s0 = s1 = 0.0;
+            for (k = 0; k < m; k++) {
+                const double u = x[i + k] - x[i + m + k];
+                s0 += u;
+                s1 += (double)k * u;
+            }
+        } else {
+            const double un = x[i + m - 1u] - x[i + 2u * m - 1u];
+            s0 += un - (x[i - 1u] - x[i + m - 1u]);
+            s1 += md * un - s0;
+        }
+        z = h * s0 - s1;
+        sum += z * z;
+    }
+    *terms = (uint32_t)nt;
+    return 72.0 * sum / (md * md * md * md * md * md * (double)nt);
+}
+
 double hx_dev_var_record(hx_dev_t k, const double *x, size_t n, uint32_t m_u, uint32_t *terms)
 {
     const size_t m = (size_t)m_u;
@@ -121,6 +154,11 @@ double hx_dev_var_record(hx_dev_t k, const double *x, size_t n, uint32_t m_u, ui
     case HX_DEV_OHDEV:
         return n > 0u && m <= (n - 1u) / 3u ? hvar(x, n, m, k == HX_DEV_HDEV ? m : 1u, terms) : (double)NAN;
     case HX_DEV_TOTDEV: return n >= 3u && m <= (n - 1u) / 2u ? totvar(x, n, m, terms) : (double)NAN;
+    case HX_DEV_PDEV:
+        if (n == 0u || m > (n - 1u) / 2u) {
+            return (double)NAN;
+        }
+        return m == 1u ? hx_allan_avar_record(x, n, 1u, 1, terms) : pvar(x, n, m, terms);
     default: return (double)NAN;
     }
 }
@@ -150,6 +188,7 @@ double hx_dev_edf(hx_dev_t k, int alpha, uint32_t m, size_t n)
             return -1.0;
         }
         return tot[-alpha][0] * (double)n / (double)m - tot[-alpha][1];
+    case HX_DEV_PDEV: return fnav_allan_edf_pvar(alpha, m, np);
     default: return -1.0;
     }
 }

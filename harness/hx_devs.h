@@ -21,7 +21,13 @@
  *    3 x_{i+m} - x_i, stride m and 1, HVAR = sum / (6 m^2 terms);
  *  - TOTDEV: total deviation, the second differences at i = 1 .. n - 2 of
  *    the record extended at both ends by odd reflection (x*_{-j} = 2 x_0 -
- *    x_j, x*_{n-1+j} = 2 x_{n-1} - x_{n-1-j}), TOTVAR = sum / (2 m^2 (n - 2)).
+ *    x_j, x*_{n-1+j} = 2 x_{n-1} - x_{n-1-j}), TOTVAR = sum / (2 m^2 (n - 2));
+ *  - PDEV: parabolic (Vernotte et al., IEEE TUFFC 63(4), 2016), from the
+ *    least-squares frequency of each half: z_i = sum over k < m of
+ *    ((m - 1) / 2 - k) (x_{i+k} - x_{i+m+k}), PVAR = 72 sum z_i^2 /
+ *    (m^6 terms), i = 0 .. n - 2m - 1 (n - 2m terms: SigmaTheta's and
+ *    allantools' count, one fewer than the record allows); at m = 1 the
+ *    overlapping Allan variance.
  *
  * All in double, each O(n) per tau. Not for the core: the core's streaming
  * estimator computes the Allan variance alone, in fixed memory.
@@ -40,6 +46,7 @@ typedef enum {
     HX_DEV_HDEV,
     HX_DEV_OHDEV,
     HX_DEV_TOTDEV,
+    HX_DEV_PDEV,
     HX_DEV_COUNT
 } hx_dev_t;
 
@@ -71,7 +78,8 @@ double hx_dev_scale(hx_dev_t k, uint32_t m, double rate_hz);
  * algorithm (fnav_allan_edf_var(): d = 2 for the Allan family, 3 for the
  * Hadamard one, modified for MDEV and TDEV) and, for TOTDEV, SP 1065's
  * b N / m - c (Table 7: white, flicker and random-walk FM; for alpha > 0,
- * where the table has no row, the overlapping Allan variance's EDF).
+ * where the table has no row, the overlapping Allan variance's EDF); for
+ * PDEV fnav_allan_edf_pvar().
  * @return the EDF, or a negative value when undefined.
  */
 double hx_dev_edf(hx_dev_t k, int alpha, uint32_t m, size_t n);

@@ -343,13 +343,15 @@ static void test_phasedat_other_deviations(void **state)
 
 /* NIST SP 1065 p. 107: every deviation of the 10-point NBS14 set at
  * tau 1 and 2 s (nbs14_10pt_expected.csv; HTOTDEV and the other totals are
- * not computed here). Published to 7 digits: 1e-6. */
+ * not computed here). Published to 7 digits: 1e-6. PDEV has no published
+ * value there. */
 static void test_nbs14_10_other_deviations(void **state)
 {
     static const double y[9] = { 892.0, 809.0, 823.0, 798.0, 671.0, 644.0, 883.0, 903.0, 677.0 };
     static const double want[HX_DEV_COUNT][2] = {
         { 91.22945, 115.8082 }, { 91.22945, 85.95287 }, { 91.22945, 74.78849 }, { 52.67135, 86.35831 },
         { 70.80608, 116.7980 }, { 70.80607, 85.61487 }, { 91.22945, 93.90379 },
+        { 91.22945, 87.60538 }, /* PDEV: OADEV at m = 1; m = 2 from the definition (scripts/pvar_edf.py --nbs14-10) */
     };
     double x[10];
     unsigned k, m;
@@ -412,6 +414,144 @@ static void test_edf_var_edges(void **state)
     /* the Hadamard variance converges for alpha down to -4 */
     assert_true(fnav_allan_edf_var(-4, 3, 0, 16u, 1001u, 1) > 0.0);
     assert_true(fnav_allan_edf_var(-4, 3, 1, 16u, 1001u, 1) > 0.0);
+}
+
+/* PDEV of the NBS14 1000-point set against SigmaTheta's values (17 digits,
+ * nbs14_1000pt_pdev_expected.csv, octaves m = 1 .. 256), with the term
+ * count n - 2m of SigmaTheta and allantools. */
+static void test_pdev_nbs14(void **state)
+{
+    static double y[1000], x[1001];
+    char path[512], line[256];
+    FILE *f;
+    size_t i;
+    int rows = 0;
+    (void)state;
+    if (fnav_testdata_path("allan_reference/nbs14/nbs14_1000pt_frequency.txt", path, sizeof path) != 0) {
+        fnav_test_skip_notice("NBS14 1000-point set");
+        skip();
+    }
+    assert_int_equal(read_numbers(path, y, 1000), 1000);
+    x[0] = 0.0;
+    for (i = 0; i < 1000u; i++) {
+        x[i + 1u] = x[i] + y[i];
+    }
+    assert_int_equal(fnav_testdata_path("allan_reference/nbs14/nbs14_1000pt_pdev_expected.csv", path, sizeof path), 0);
+    f = fopen(path, "r");
+    assert_non_null(f);
+    while (fgets(line, sizeof line, f) != NULL) {
+        unsigned m;
+        double want;
+        uint32_t terms;
+        if (sscanf(line, "%u,%lf", &m, &want) == 2) {
+            const double dev = sqrt(hx_dev_var_record(HX_DEV_PDEV, x, 1001u, m, &terms));
+            FNAV_ASSERT_CLOSE(dev, want, 0.0, 1e-9);
+            assert_int_equal(terms, 1001u - 2u * m);
+            rows++;
+        }
+    }
+    fclose(f);
+    assert_int_equal(rows, 9);
+    /* the longest averaging factor with a term (one), and the first without */
+    {
+        uint32_t terms;
+        assert_true(isfinite(hx_dev_var_record(HX_DEV_PDEV, x, 1001u, 500u, &terms)));
+        assert_int_equal(terms, 1u);
+        assert_true(isnan(hx_dev_var_record(HX_DEV_PDEV, x, 1001u, 501u, &terms)));
+        assert_int_equal(terms, 0u);
+    }
+}
+
+/* fnav_allan_edf_pvar() against scripts/pvar_edf.py (an independent double
+ * computation at the full m): exact to m = 64, within 1e-3 above, where the
+ * C code scales the filter of m = 64 (measured: 3.4e-4 at most). And the
+ * same script's overlapping Allan filter reproduces Greenhall & Riley's
+ * algorithm (fnav_allan_edf_var()) to 1e-9: the computation that the PVAR
+ * EDF rests on is theirs. */
+static void test_pdev_edf(void **state)
+{
+    static const uint32_t pt[8][2] = { { 2, 40 },   { 4, 60 },    { 8, 50 },    { 16, 200 },
+                                       { 64, 1001 }, { 100, 260 }, { 128, 1001 }, { 256, 1001 } };
+    /* scripts/pvar_edf.py: rows alpha = 2 .. -2 */
+    static const double pv[5][8] = {
+        { 21.07317073, 19.0744921, 7.220970441, 16.73028462, 21.57632536, 2.234819055, 9.728350216, 3.998883816 },
+        { 22.66517674, 17.16582649, 6.099108925, 13.98547604, 17.96213693, 1.734472353, 8.068559079, 3.261914387 },
+        { 23.51020408, 16.93541551, 5.955197884, 13.72800162, 17.64503866, 1.533581752, 7.895373891, 3.136357433 },
+        { 23.59715853, 16.83778542, 5.860544076, 13.63409334, 17.54765765, 1.363734368, 7.803178333, 3.006947262 },
+        { 19.38505583, 13.79038036, 4.719117611, 11.13907963, 14.36698672, 1.186584269, 6.324756511, 2.341091802 },
+    };
+    /* scripts/pvar_edf.py --greenhall: the overlapping Allan filter, first four points */
+    static const double av[5][4] = {
+        { 19.05882353, 27.84439359, 19.89292543, 90.84978541 }, { 19.73310042, 21.15435496, 10.87489701, 34.46970977 },
+        { 20.01830664, 16.62619559, 6.463806933, 15.59265899 }, { 19.88019553, 15.26729478, 5.494300393, 12.8087277 },
+        { 16.10001608, 12.19088568, 4.266009197, 10.05142385 },
+    };
+    int a, i;
+    (void)state;
+    for (a = 0; a < 5; a++) {
+        for (i = 0; i < 8; i++) {
+            FNAV_ASSERT_CLOSE(fnav_allan_edf_pvar(2 - a, pt[i][0], pt[i][1]), pv[a][i], 0.0, pt[i][0] <= 64u ? 1e-9 : 1e-3);
+        }
+        for (i = 0; i < 4; i++) {
+            FNAV_ASSERT_CLOSE(fnav_allan_edf_var(2 - a, 2, 0, pt[i][0], pt[i][1], 1), av[a][i], 0.0, 1e-9);
+        }
+        /* m = 1: PVAR is the overlapping Allan variance */
+        assert_true(fnav_allan_edf_pvar(2 - a, 1u, 500u) == fnav_allan_edf_var(2 - a, 2, 0, 1u, 500u, 1));
+    }
+    /* one term (n = 2m + 1) is one degree of freedom; none, or a divergent noise, is undefined */
+    assert_true(fabs(fnav_allan_edf_pvar(0, 8u, 17u) - 1.0) < 1e-12);
+    assert_true(fnav_allan_edf_pvar(0, 8u, 16u) < 0.0);
+    assert_true(fnav_allan_edf_pvar(-3, 8u, 1001u) < 0.0);
+    assert_true(fnav_allan_edf_pvar(3, 8u, 1001u) < 0.0);
+    assert_true(fnav_allan_edf_pvar(0, 0u, 1001u) < 0.0);
+}
+
+/* The PVAR EDF against simulation: 2000 records of white phase, white FM and
+ * random-walk FM noise, the PDEV of each (hx_dev_var_record()), and the
+ * EDF 2 mean^2 / var of the estimates, within 15 % of fnav_allan_edf_pvar()
+ * (the simulated EDF's standard error is about 3.5 %: sqrt(2.4 / 2000)). */
+static void test_pdev_edf_simulated(void **state)
+{
+    static double x[257];
+    const hx_noise_model_t white = { 1.0, 0.0, 0.0, 0.0, 0.0 };
+    static const int alphas[3] = { 2, 0, -2 };
+    static const uint32_t ms[2] = { 4, 16 };
+    int a, im;
+    (void)state;
+    for (a = 0; a < 3; a++) {
+        for (im = 0; im < 2; im++) {
+            hx_noise_sim_t sim;
+            double s1 = 0.0, s2 = 0.0, mean, var, edf;
+            const int reps = 2000;
+            int r;
+            assert_int_equal(hx_noise_sim_init(&sim, &white, 1.0, 11u + (unsigned long)(a * 2 + im)), 0);
+            for (r = 0; r < reps; r++) {
+                double y = 0.0, v;
+                uint32_t terms;
+                size_t k;
+                x[0] = 0.0;
+                for (k = 1; k < 257u; k++) {
+                    const double e = hx_noise_sim_next(&sim);
+                    if (alphas[a] == 2) {
+                        x[k] = e;
+                    } else if (alphas[a] == 0) {
+                        x[k] = x[k - 1u] + e;
+                    } else {
+                        y += e;
+                        x[k] = x[k - 1u] + y;
+                    }
+                }
+                v = hx_dev_var_record(HX_DEV_PDEV, x, 257u, ms[im], &terms);
+                s1 += v;
+                s2 += v * v;
+            }
+            hx_noise_sim_free(&sim);
+            mean = s1 / reps;
+            var = s2 / reps - mean * mean;
+            edf = fnav_allan_edf_pvar(alphas[a], ms[im], 257u);
+            FNAV_ASSERT_CLOSE(2.0 * mean * mean / var, edf, 0.0, 0.15);
+        }
+    }
 }
 
 /* ------------------------------------------------------------ cascade, float error */
@@ -1094,6 +1234,9 @@ int main(void)
         cmocka_unit_test(test_nbs14_10_other_deviations),
         cmocka_unit_test(test_phasedat_other_deviations),
         cmocka_unit_test(test_edf_var_edges),
+        cmocka_unit_test(test_pdev_nbs14),
+        cmocka_unit_test(test_pdev_edf),
+        cmocka_unit_test(test_pdev_edf_simulated),
         cmocka_unit_test(test_phasedat_oadev_every_tau),
         cmocka_unit_test(test_phasedat_adev_every_tau),
         cmocka_unit_test(test_phasedat_oadev_octave_ci),

@@ -199,6 +199,21 @@ print("worst %.1e" % worst)
 assert worst < 5.5e-6, worst
 PYEOF
     then pass "NBS14 published deviations ($(cat "$T/n14.txt"))"; else fail "NBS14 deviations: $(cat "$T/n14.txt")"; fi
+    # PDEV at the octaves against SigmaTheta's values (nbs14_1000pt_pdev_expected.csv, 17 digits; the CSV's 6: 5e-6)
+    expect_exit 0 "NBS14 1000-point, --deviation pdev at the octaves" "$H" allan --series "$N14" --rate 1 \
+        --m 1,2,4,8,16,32,64,128,256 --no-sim --quiet --deviation pdev --out "$T/p14.csv"
+    if "$PY" - "$T/p14.csv" "$(dirname "$N14")/nbs14_1000pt_pdev_expected.csv" >"$T/p14.txt" 2>&1 <<'PYEOF'
+import csv, sys
+rows = {int(r["m"]): r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#"))}
+exp = {int(float(c[0])): float(c[1]) for c in (l.strip().split(",") for l in open(sys.argv[2])) if c[0][:1].isdigit()}
+assert sorted(rows) == sorted(exp), (sorted(rows), sorted(exp))
+worst = max(abs(float(rows[m]["pdev"]) / exp[m] - 1.0) for m in exp)
+assert all(int(rows[m]["pdev_terms"]) == 1001 - 2 * m for m in exp)
+assert all(float(rows[m]["pdev_lo"]) < float(rows[m]["pdev"]) < float(rows[m]["pdev_hi"]) for m in exp)
+print("worst %.1e" % worst)
+assert worst < 5e-6, worst
+PYEOF
+    then pass "NBS14 PDEV against SigmaTheta ($(cat "$T/p14.txt"))"; else fail "NBS14 PDEV: $(cat "$T/p14.txt")"; fi
 else
     echo "SKIP NBS14 tests (shared data not found; set FNAV_DATA_DIR)"
 fi
