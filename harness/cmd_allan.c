@@ -37,8 +37,7 @@ static const hx_opt_t k_opts[] = {
                              "sensor; default for a log)", 0 },
     { "--deviation", "LIST", "also these deviations of the whole record (needs --estimator exact): mdev, tdev, hdev, "
                              "ohdev, totdev, pdev (parabolic), or all; each with its interval and term count (adev and "
-                             "oadev are "
-                             "always in the table)", 0 },
+                             "oadev are always in the table)", 0 },
     { "--m", "LIST", "averaging factors instead of the log-spaced grid, ascending, e.g. 1,10,100 (needs "
                      "--estimator exact)", 0 },
     { "--channels", "LIST", "channels of a log to analyse, e.g. gx,gy,gz (default ax,ay,az,gx,gy,gz)", 0 },
