@@ -7,13 +7,12 @@ golden values of tests/test_allan.c and the figures in docs/allan.md
 
 - the filter is built tap by tap from its definition (PVAR: taps
   (m - 1)/2 - k and their negatives, k < m; the overlapping Allan variance:
-  1, -2, 1 at lags 0, m, 2m), its output autocovariance R(j) comes from the
-  phase's generalized autocovariance, which is the
-  power law's sw(t) (Greenhall & Riley 2003, eq. 8) differenced twice over
-  one sample (the sample-averaged phase), summed over the taps'
-  autocorrelation, and the EDF is Greenhall & Riley's
-  basic sum (their eq. 10) to J = min(M, 3m) lags: always at the full m
-  (no scaling above m = 64, as the C code does);
+  1, -2, 1 at lags 0, m, 2m). Its output autocovariance R(j) is the taps'
+  autocorrelation summed against the phase's generalized autocovariance,
+  the power law's sw(t) (Greenhall & Riley 2003, eq. 8) differenced twice
+  over one sample (the sample-averaged phase). The EDF is Greenhall &
+  Riley's basic sum (their eq. 10) to J = min(M, 3m) lags, always at the
+  full m (no scaling above m = 64, as the C code does);
 - `--greenhall` prints the same computation for the overlapping Allan
   filter, which must reproduce Greenhall & Riley's own algorithm
   (fnav_allan_edf_var(alpha, 2, 0, m, n, 1)) wherever that sums exactly;
@@ -96,11 +95,12 @@ def simulate(alpha, n, rng):
     return np.cumsum(np.cumsum(e))  # alpha = -2
 
 
-def pvar_record(x, m):
+def pvar_record(x, m, terms=None):
+    """PVAR from the definition with `terms` terms (default n - 2m; the record allows n - 2m + 1)."""
     n = len(x)
     c = (m - 1) / 2.0 - np.arange(m)
     u = x[: n - m] - x[m:]
-    z = np.convolve(u, c[::-1], "valid")[: n - 2 * m]
+    z = np.convolve(u, c[::-1], "valid")[: n - 2 * m if terms is None else terms]
     return 72.0 * np.mean(z * z) / m ** 6
 
 
@@ -134,9 +134,7 @@ def main():
             m = int(m)
             if m == 1:
                 continue
-            c = (m - 1) / 2.0 - np.arange(m)
-            z = np.convolve(x[: n - m] - x[m:], c[::-1], "valid")  # n - 2m + 1 values
-            dev = [math.sqrt(72.0 * np.sum(z[:k] ** 2) / (k * m ** 6)) for k in (n - 2 * m, n - 2 * m + 1)]
+            dev = [math.sqrt(pvar_record(x, m, k)) for k in (n - 2 * m, n - 2 * m + 1)]
             print("%3d  %+.1e  %+.1e" % (m, dev[0] / want - 1.0, dev[1] / want - 1.0))
     if any(a in args for a in ("--greenhall", "--mc", "--nbs14-10", "--terms")):
         return

@@ -646,8 +646,7 @@ double fnav_allan_edf_pvar(int alpha, uint32_t m_u, uint32_t n_phase)
         const double c = 0.5 * (double)(mp - 1u) - (double)(k % mp);
         tap[k] = k < mp ? c : -c;
     }
-    for (k = 0; k < len; k++) {
-        q[k] = 0.0;
+    for (k = 0; k < len; k++) { /* q starts at zero */
         for (i = 0; i + k < len; i++) {
             q[k] += tap[i] * tap[i + k];
         }
