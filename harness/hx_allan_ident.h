@@ -135,6 +135,12 @@ void hx_noise_model_from_paper(const fnav_allan_paper_id_t *id, double rate_hz, 
  */
 int hx_allan_ci(double dev, double edf, double conf, double *lo, double *hi);
 
+/** Chi-square quantile: the P-quantile of chi^2 with nu degrees of freedom
+ *  (GSL's gsl_cdf_chisq_Pinv up to nu = 1e4; above, where GSL's search
+ *  fails at some nu, the Wilson-Hilferty approximation, within 2.6e-7).
+ *  NaN when GSL fails. */
+double hx_chi2_quantile(double nu, double p);
+
 /**
  * EDF of a table entry: Greenhall with alpha from the noise type.
  * @param overlapping 1 for the overlapping estimate, 0 for the non-overlapping one

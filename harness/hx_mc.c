@@ -1,6 +1,8 @@
 /* Monte Carlo engine (see hx_mc.h). */
 #include "hx_mc.h"
 
+#include "hx_allan_ident.h"
+
 #include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <stdlib.h>
@@ -11,11 +13,6 @@ const char *const hx_nees_name[HX_NEES_COUNT] = { "pos", "vel", "att", "bias", "
 
 /* first index and size of each NEES group in the 15-state error order */
 static const int k_first[HX_NEES_COUNT] = { 6, 3, 0, 9, 0 };
-
-double hx_chi2_quantile(double nu, double p)
-{
-    return gsl_cdf_chisq_Pinv(p, nu);
-}
 
 void hx_nees_band(int n, int d, double alpha, double *lo, double *hi)
 {

@@ -121,7 +121,4 @@ void hx_mc_result_free(hx_mc_result_t *res);
  *  Li & Kirubarajan 2001, sec. 5.4). */
 void hx_nees_band(int n, int d, double alpha, double *lo, double *hi);
 
-/** Chi-square quantile (GSL). */
-double hx_chi2_quantile(double nu, double p);
-
 #endif /* HX_MC_H */

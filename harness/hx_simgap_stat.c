@@ -3,6 +3,7 @@
  * (hx_simgap.h, docs/simgap.md). */
 #include "hx_simgap.h"
 #include "hx_cli.h"
+#include "hx_allan_ident.h"
 
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_sf_psi.h>
@@ -1017,7 +1018,7 @@ int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int
         out->significant = 0;
         return 0;
     }
-    out->G_crit = out->null_mean * gsl_cdf_chisq_Pinv(1.0 - alpha, k) / k;
+    out->G_crit = out->null_mean * hx_chi2_quantile(k, 1.0 - alpha) / k;
     if (!isfinite(out->G_crit)) {
         out->undefined = SG_CMP_NONFINITE;
         out->significant = 0;

@@ -462,6 +462,37 @@ static void test_pdev_nbs14(void **state)
     }
 }
 
+/* Chi-square quantiles at large EDF, where GSL's gsl_cdf_chisq_Pinv() fails
+ * at some nu (81,000 and 243,000 at the lower one-sigma point; 6,561,000 at
+ * the upper): scipy.stats.chi2.ppf values to 1e-6 (GSL's other tail is
+ * itself 2e-7 off at 6.5e6); and the one-sigma interval of a deviation is
+ * finite and as wide as the asymptotic +-1 / sqrt(2 nu) (within 2 %) from
+ * nu = 1e3 to 1e8: an exact OADEV at m = 1 on 1,000,000 samples had no
+ * upper limit before. */
+static void test_chi2_quantile_large(void **state)
+{
+    static const double ref[6][3] = { /* nu, P, chi2.ppf(P, nu) */
+        { 81000.0, 0.15865525393145702, 80597.509420763541 },
+        { 81000.0, 0.84134474606854304, 81402.490579968056 },
+        { 243000.0, 0.15865525393145702, 242302.86395409697 },
+        { 243000.0, 0.84134474606854304, 243697.13604614689 },
+        { 6561000.0, 0.15865525393145702, 6557377.5700604934 },
+        { 6561000.0, 0.84134474606854304, 6564622.4299395159 },
+    };
+    double nu;
+    size_t i;
+    (void)state;
+    for (i = 0; i < 6u; i++) {
+        FNAV_ASSERT_CLOSE(hx_chi2_quantile(ref[i][0], ref[i][1]), ref[i][2], 0.0, 1e-6);
+    }
+    for (nu = 1e3; nu < 1e8; nu *= 1.37) {
+        double lo, hi;
+        assert_int_equal(hx_allan_ci(1.0, nu, 0.682689492137086, &lo, &hi), 0);
+        assert_true(isfinite(lo) && isfinite(hi) && lo < 1.0 && hi > 1.0);
+        FNAV_ASSERT_CLOSE(0.5 * (hi - lo), 1.0 / sqrt(2.0 * nu), 0.0, 0.02);
+    }
+}
+
 /* fnav_allan_edf_pvar() against scripts/pvar_edf.py (an independent double
  * computation at the full m): exact to m = 64, within 1e-3 above, where the
  * C code scales the filter of m = 64 (measured: 3.4e-4 at most). And the
@@ -1241,6 +1272,7 @@ int main(void)
         cmocka_unit_test(test_phasedat_other_deviations),
         cmocka_unit_test(test_edf_var_edges),
         cmocka_unit_test(test_pdev_nbs14),
+        cmocka_unit_test(test_chi2_quantile_large),
         cmocka_unit_test(test_pdev_edf),
         cmocka_unit_test(test_pdev_edf_simulated),
         cmocka_unit_test(test_phasedat_oadev_every_tau),
