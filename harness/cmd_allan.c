@@ -36,8 +36,12 @@ static const hx_opt_t k_opts[] = {
                              "default for --series) or streaming (the core's fixed-memory estimator, as on the "
                              "sensor; default for a log)", 0 },
     { "--deviation", "LIST", "also these deviations of the whole record (needs --estimator exact): mdev, tdev, hdev, "
-                             "ohdev, totdev, pdev (parabolic), or all; each with its interval and term count (adev and "
-                             "oadev are always in the table)", 0 },
+                             "ohdev, totdev, pdev (parabolic), mtotdev, ttotdev, htotdev (the total forms of mdev, "
+                             "tdev and hdev), or all; each with its interval and term count (adev and oadev are "
+                             "always in the table)", 0 },
+    { "--max-work", "N", "largest number of window terms (starts x 6m) computed for one tau of mtotdev, ttotdev or "
+                         "htotdev, whose cost grows as n m (default 2e8, about a second); larger tau are left out "
+                         "and say so", 0 },
     { "--m", "LIST", "averaging factors instead of the log-spaced grid, ascending, e.g. 1,10,100 (needs "
                      "--estimator exact)", 0 },
     { "--channels", "LIST", "channels of a log to analyse, e.g. gx,gy,gz (default ax,ay,az,gx,gy,gz)", 0 },
@@ -99,6 +103,7 @@ typedef struct {
     double dv[HX_DEV_COUNT][GRID_MAX], dv_lo[HX_DEV_COUNT][GRID_MAX], dv_hi[HX_DEV_COUNT][GRID_MAX];
     double dv_edf[HX_DEV_COUNT][GRID_MAX];
     uint32_t dv_terms[HX_DEV_COUNT][GRID_MAX];
+    unsigned char dv_skip[HX_DEV_COUNT][GRID_MAX]; /* not computed: over --max-work */
 } chan_t;
 
 typedef struct {
@@ -119,6 +124,7 @@ typedef struct {
     double f0;               /* --fractional: nominal value, 0 if not given */
     hx_dev_t dev[HX_DEV_COUNT]; /* --deviation, in the order given */
     int ndev;
+    double max_work;         /* --max-work: window terms of one tau of an O(n m) deviation */
 } run_t;
 
 static const char k_exact_oom[] = "out of memory: --estimator exact keeps the whole record (8 bytes per sample "
@@ -347,7 +353,8 @@ static int parse_deviations(run_t *R, const char *list)
     for (tok = strtok_r(buf, ",", &save); tok != NULL; tok = strtok_r(NULL, ",", &save)) {
         hx_dev_t k;
         if (hx_dev_parse(tok, &k) != 0) {
-            hx_error(CMD, "--deviation: unknown '%s' (mdev, tdev, hdev, ohdev, totdev, pdev or all)", tok);
+            hx_error(CMD, "--deviation: unknown '%s' (mdev, tdev, hdev, ohdev, totdev, pdev, mtotdev, ttotdev, "
+                          "htotdev or all)", tok);
             return -1;
         }
         if (k == HX_DEV_ADEV || k == HX_DEV_OADEV) {
@@ -613,7 +620,13 @@ static void deviation_tables(const run_t *R, chan_t *ch)
         const hx_dev_t k = R->dev[j];
         for (i = 0; i < ch->nres; i++) {
             const uint32_t m = ch->res[i].tau;
-            const double v = hx_dev_var_record(k, ch->x, ch->nx, m, &ch->dv_terms[k][i]);
+            double v;
+            if ((double)hx_dev_work(k, ch->nx, m) > R->max_work) {
+                ch->dv_skip[k][i] = 1u;
+                ch->dv_terms[k][i] = 0u;
+                continue;
+            }
+            v = hx_dev_var_record(k, ch->x, ch->nx, m, &ch->dv_terms[k][i]);
             const double dev = sqrt(v) * ch->scale * hx_dev_scale(k, m, R->rate_hz);
             ch->dv[k][i] = dev;
             ch->dv_edf[k][i] = ch->dv_terms[k][i] > 0u ? hx_dev_edf(k, ch->alpha[i], m, ch->nx) : -1.0;
@@ -742,7 +755,7 @@ static void print_deviations(const run_t *R, const chan_t *ch)
     for (j = 0; j < R->ndev; j++) {
         const hx_dev_t k = R->dev[j];
         printf("\n  %s (%s) [%s%s], CI at %g confidence\n", hx_dev_title(k), hx_dev_name(k), ch->unit,
-               k == HX_DEV_TDEV ? " s" : "", R->conf);
+               k == HX_DEV_TDEV || k == HX_DEV_TTOTDEV ? " s" : "", R->conf);
         printf("  %9s %10s %9s %5s %12s %12s %12s\n", "m", "tau_s", "terms", "alpha", "min", "sigma", "max");
         for (i = 0; i < ch->nres; i++) {
             const uint32_t m = ch->res[i].tau;
@@ -752,6 +765,14 @@ static void print_deviations(const run_t *R, const chan_t *ch)
             printf("  %9lu %10.4g %9lu %5d %12s %12s %12s\n", (unsigned long)m, (double)m / R->rate_hz,
                    (unsigned long)ch->dv_terms[k][i], ch->alpha[i], fmt_g(b1, sizeof b1, ch->dv_lo[k][i]),
                    fmt_g(b2, sizeof b2, ch->dv[k][i]), fmt_g(b3, sizeof b3, ch->dv_hi[k][i]));
+        }
+        for (i = 0; i < ch->nres; i++) {
+            if (ch->dv_skip[k][i]) {
+                printf("  m >= %lu not computed: more than %g window terms per tau (the cost is O(n m)); raise "
+                       "--max-work\n",
+                       (unsigned long)ch->res[i].tau, R->max_work);
+                break;
+            }
         }
     }
 }
@@ -938,6 +959,9 @@ static void json_deviations(const run_t *R, const chan_t *ch, size_t k, cJSON *e
         const hx_dev_t d = R->dev[j];
         cJSON *o = cJSON_AddObjectToObject(e, hx_dev_name(d));
         cJSON_AddNumberToObject(o, "terms", (double)ch->dv_terms[d][k]);
+        if (ch->dv_skip[d][k]) {
+            cJSON_AddStringToObject(o, "not_computed", "max_work");
+        }
         if (ch->dv_terms[d][k] > 0u) {
             json_num(o, "dev", ch->dv[d][k]);
             json_num(o, "lo", ch->dv_lo[d][k]);
@@ -1319,12 +1343,14 @@ int hx_cmd_allan(int argc, char **argv)
         return HX_EXIT_IO;
     }
     R->tau_max_frac = 0.1;
+    R->max_work = 2e8;
     R->conf = 0.682689492137086; /* one sigma, erf(1 / sqrt(2)): Stable32's "0.683" (docs/allan.md) */
     if (hx_arg_double(&a, "--rate", 1e-9, 1e9, &rate_opt) != 0 || hx_arg_long(&a, "--per-octave", 1, 4, &per_octave) != 0 ||
         hx_arg_double(&a, "--max-tau-frac", 1e-6, 0.5, &R->tau_max_frac) != 0 ||
         hx_arg_double(&a, "--seed", 0.0, 4294967295.0, &seed_d) != 0 ||
         hx_arg_double(&a, "--sim-samples", 16.0, 4294967295.0, &nsim_d) != 0 ||
-        hx_arg_double(&a, "--conf", 0.01, 0.999, &R->conf) != 0 || hx_arg_long(&a, "--column", 1, 1000, &column) != 0) {
+        hx_arg_double(&a, "--conf", 0.01, 0.999, &R->conf) != 0 ||
+        hx_arg_double(&a, "--max-work", 1.0, 1e18, &R->max_work) != 0 || hx_arg_long(&a, "--column", 1, 1000, &column) != 0) {
         free(R);
         return HX_EXIT_USAGE;
     }

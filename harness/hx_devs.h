@@ -47,6 +47,9 @@ typedef enum {
     HX_DEV_OHDEV,
     HX_DEV_TOTDEV,
     HX_DEV_PDEV,
+    HX_DEV_MTOTDEV,
+    HX_DEV_TTOTDEV,
+    HX_DEV_HTOTDEV,
     HX_DEV_COUNT
 } hx_dev_t;
 
@@ -67,6 +70,13 @@ int hx_dev_parse(const char *s, hx_dev_t *k);
  *         there is no term.
  */
 double hx_dev_var_record(hx_dev_t k, const double *x, size_t n, uint32_t m, uint32_t *terms);
+
+/**
+ * The work of hx_dev_var_record() for deviation k at averaging factor m, in
+ * window terms: starts x 6m for MTOTDEV, TTOTDEV and HTOTDEV (m >= 2), whose
+ * cost grows as n m; 0 for the others (O(n)) and where there is no term.
+ */
+uint64_t hx_dev_work(hx_dev_t k, size_t n, uint32_t m);
 
 /** Factor from the deviation of hx_dev_var_record() to the one printed:
  *  tau / sqrt(3) for TDEV (tau = m / rate_hz, s), 1 otherwise. */

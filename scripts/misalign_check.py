@@ -19,7 +19,10 @@ cross-axis terms instead: f_i += k f_j for each TERM "ij:k" (e.g. "zx:-0.03"
 adds 3 % of f_x to f_z; several joined by "+"; "none" for the baseline; a
 comma-separated list of settings). A rotation of either triad is the
 antisymmetric part of such a coupling; a single term like zx also has a
-symmetric (non-orthogonality) part, which no rotation covers.
+symmetric (non-orthogonality) part, which no rotation covers. A TERM "bi:v"
+adds a constant v m/s^2 to f_i instead (an accelerometer bias the filter did
+not start with, e.g. "by:0.1"): whether a bias the filter has to separate from
+a tilt could make the climb.
 
 With --fit, the rotation (a rotation vector, three angles) that minimises the
 first-update NIS is searched instead (Nelder-Mead from zero, 0.05 deg): what
@@ -28,7 +31,7 @@ applied as it is (e.g. one walk's fit on the other walk).
 
 Usage (from the repository root, after `make`; about 15 s per angle and log):
   /usr/bin/python3 scripts/misalign_check.py ../shared/data/xio_ngimu_gait/short_walk.csv [--axis y]
-      [--angles=-1.5,-1,-0.5,0,0.5,1] [--fit] [--rotvec=X,Y,Z] [--accel=none,zx:-0.03,...]
+      [--angles=-1.5,-1,-0.5,0,0.5,1] [--fit] [--rotvec=X,Y,Z] [--accel=none,zx:-0.03,by:0.1,...]
 """
 import argparse
 import json
@@ -60,20 +63,25 @@ def run(args):
 
 
 def cross_matrix(terms):
-    """I plus the cross-axis terms of "ij:k[+ij:k...]" (row i, column j), or I for "none"."""
+    """I plus the cross-axis terms of "ij:k[+ij:k...]" (row i, column j), and the
+    offset of the bias terms "bi:v" (m/s^2); (I, 0) for "none"."""
     k = np.eye(3)
+    b = np.zeros(3)
     if terms == "none":
-        return k
+        return k, b
     for term in terms.split("+"):
         ij, _, val = term.partition(":")
         try:
             v = float(val)
         except ValueError:
             v = None
+        if v is not None and len(ij) == 2 and ij[0] == "b" and ij[1] in "xyz":
+            b["xyz".index(ij[1])] += v
+            continue
         if v is None or len(ij) != 2 or ij[0] not in "xyz" or ij[1] not in "xyz" or ij[0] == ij[1]:
-            sys.exit("bad --accel term %r (want e.g. zx:-0.03)" % term)
+            sys.exit("bad --accel term %r (want e.g. zx:-0.03 or by:0.1)" % term)
         k["xyz".index(ij[0]), "xyz".index(ij[1])] += v
-    return k
+    return k, b
 
 
 def main():
@@ -83,7 +91,7 @@ def main():
     ap.add_argument("--angles", default="-1.5,-1,-0.5,0,0.5,1", help="gyro rotations to try, deg (comma-separated)")
     ap.add_argument("--fit", action="store_true", help="search the rotation that minimises the first-update NIS")
     ap.add_argument("--rotvec", default="", help="apply this rotation vector, deg (X,Y,Z)")
-    ap.add_argument("--accel", default="", help="accelerometer cross-axis settings instead, e.g. none,zx:-0.03")
+    ap.add_argument("--accel", default="", help="accelerometer cross-axis or bias settings instead, e.g. none,zx:-0.03,by:0.1")
     a = ap.parse_args()
     angles = [float(x) for x in a.angles.split(",")]
     accel = [(terms, cross_matrix(terms)) for terms in a.accel.split(",")] if a.accel else []
@@ -98,9 +106,9 @@ def main():
             gyr = np.column_stack([d[c] for c in ("gx", "gy", "gz")])
             name = os.path.basename(log)
 
-            def evaluate(m, closure, ka=np.eye(3)):
+            def evaluate(m, closure, ka=(np.eye(3), np.zeros(3))):
                 path = os.path.join(tmp, "rot.csv")
-                np.savetxt(path, np.column_stack([d["t"], acc @ ka.T, gyr @ m.T]), delimiter=",",
+                np.savetxt(path, np.column_stack([d["t"], acc @ ka[0].T + ka[1], gyr @ m.T]), delimiter=",",
                            header="t,ax,ay,az,gx,gy,gz", comments="", fmt="%.9g")
                 out = run(["simgap", path, "--closed"] + FAST)
                 m_nis = re.search(r"nis_first\s+real\s+(\S+)", out)

@@ -214,6 +214,35 @@ print("worst %.1e" % worst)
 assert worst < 5e-6, worst
 PYEOF
     then pass "NBS14 PDEV against SigmaTheta ($(cat "$T/p14.txt"))"; else fail "NBS14 PDEV: $(cat "$T/p14.txt")"; fi
+    # MTOTDEV, TTOTDEV, HTOTDEV against Stable32 (nbs14_1000pt_expected.csv, 5 digits; HTOTDEV published
+    # with the white-FM bias correction 1 / 0.995, undone here), with the term counts and the limits
+    expect_exit 0 "NBS14 1000-point, the total forms" "$H" allan --series "$N14" --rate 1 --m 1,10,100 --no-sim \
+        --quiet --deviation mtotdev,ttotdev,htotdev --out "$T/t14.csv" --json "$T/t14.json"
+    if "$PY" - "$T/t14.csv" "$T/t14.json" "$(dirname "$N14")/nbs14_1000pt_expected.csv" >"$T/t14.txt" 2>&1 <<'PYEOF'
+import csv, json, sys
+rows = {int(r["m"]): r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#"))}
+exp = {r[0]: r[1:4] for r in (l.strip().split(",") for l in open(sys.argv[3]) if not l.startswith("#"))}
+worst = 0.0
+for stat in ("MTOTDEV", "TTOTDEV", "HTOTDEV"):
+    for m, want in zip((1, 10, 100), exp[stat]):
+        got = float(rows[m][stat.lower()]) / (0.995 ** 0.5 if stat == "HTOTDEV" and m > 1 else 1.0)
+        worst = max(worst, abs(got / float(want) - 1.0))
+        assert float(rows[m][stat.lower() + "_lo"]) < float(rows[m][stat.lower()]) < float(rows[m][stat.lower() + "_hi"])
+for m in (1, 10, 100):
+    assert int(rows[m]["mtotdev_terms"]) == 1001 - 3 * m + 1
+    assert int(rows[m]["htotdev_terms"]) == (998 if m == 1 else 1001 - 3 * m)
+j = json.load(open(sys.argv[2]))
+assert "mtotdev" in json.dumps(j) and "not_computed" not in json.dumps(j)
+print("worst %.1e" % worst)
+assert worst < 5e-5, worst
+PYEOF
+    then pass "NBS14 total forms against Stable32 ($(cat "$T/t14.txt"))"; else fail "NBS14 total forms: $(cat "$T/t14.txt")"; fi
+    # over --max-work: the tau is left out, the table says so, the JSON marks it
+    expect_exit 0 "total forms over --max-work" "$H" allan --series "$N14" --rate 1 --m 1,10,100 --no-sim \
+        --deviation mtotdev --max-work 100000 --json "$T/w14.json"
+    expect_out "m >= 100 not computed: more than 100000 window terms per tau" "the skipped tau is named"
+    grep -q '"not_computed":[[:space:]]*"max_work"' "$T/w14.json" && pass "JSON marks the skipped tau" ||
+        fail "JSON lacks not_computed"
 else
     echo "SKIP NBS14 tests (shared data not found; set FNAV_DATA_DIR)"
 fi
