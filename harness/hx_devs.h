@@ -8,7 +8,8 @@
  * x_k = sum of y over the first k samples, in the unit of y times samples
  * (hx_allan_avar_record()). Averaging factor m, tau = m tau0. Every
  * variance is returned in the unit of y squared; TDEV's time variance is
- * tau^2 / 3 times MVAR, which the caller scales (hx_dev_scale()).
+ * tau^2 / 3 times MVAR (TTOT: MTOTVAR), which the caller scales
+ * (hx_dev_scale()).
  *
  * The definitions are those of W. J. Riley, "Handbook of Frequency
  * Stability Analysis", NIST SP 1065 (2008), chapter 5:
@@ -27,10 +28,18 @@
  *    ((m - 1) / 2 - k) (x_{i+k} - x_{i+m+k}), PVAR = 72 sum z_i^2 /
  *    (m^6 terms), i = 0 .. n - 2m - 1 (n - 2m terms: SigmaTheta's and
  *    allantools' count, one fewer than the record allows); at m = 1 the
- *    overlapping Allan variance.
+ *    overlapping Allan variance;
+ *  - MTOTDEV, TTOTDEV, HTOTDEV: the total forms (SP 1065 eqs. 27-29): per
+ *    start, 3m phase (MTOT) or frequency (HTOT) values less the line through
+ *    their half means, extended to 9m by uninverted even reflection, the
+ *    mean of the 6m squared second differences of m-sample means; MTOTVAR =
+ *    its mean over the n - 3m + 1 starts / (2 m^2), TTOT = tau / sqrt(3)
+ *    MTOT, HTOTVAR = its mean over the n - 3m starts / 6 (at m = 1 the
+ *    overlapping Hadamard variance). No bias correction.
  *
- * All in double, each O(n) per tau. Not for the core: the core's streaming
- * estimator computes the Allan variance alone, in fixed memory.
+ * All in double, O(n) per tau except the total forms, O(n m)
+ * (hx_dev_work()). Not for the core: the core's streaming estimator
+ * computes the Allan variance alone, in fixed memory.
  */
 #ifndef HX_DEVS_H
 #define HX_DEVS_H
@@ -89,7 +98,9 @@ double hx_dev_scale(hx_dev_t k, uint32_t m, double rate_hz);
  * Hadamard one, modified for MDEV and TDEV) and, for TOTDEV, SP 1065's
  * b N / m - c (Table 7: white, flicker and random-walk FM; for alpha > 0,
  * where the table has no row, the overlapping Allan variance's EDF); for
- * PDEV fnav_allan_edf_pvar().
+ * PDEV fnav_allan_edf_pvar(); for MTOTDEV and TTOTDEV SP 1065's Table 8
+ * (b N / m - c, alpha +2 .. -2); for HTOTDEV, which has no published EDF
+ * at hand, the overlapping Hadamard variance's (conservative).
  * @return the EDF, or a negative value when undefined.
  */
 double hx_dev_edf(hx_dev_t k, int alpha, uint32_t m, size_t n);
