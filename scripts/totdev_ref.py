@@ -35,6 +35,8 @@ import os
 
 import numpy as np
 
+from pvar_edf import simulate  # power-law phase records: white PM, white FM, random-walk FM
+
 
 def window_terms(v, m):
     """Mean over the 6m starts of the squared second difference of m-sample
@@ -101,14 +103,6 @@ def golden(data_dir):
                  np.sqrt(htotvar(x10, m) / (0.995 if m > 1 else 1.0)), wh))
 
 
-def simulate(kind, n, rng):
-    w = rng.standard_normal(n)
-    if kind == "white PM":
-        return w
-    y = w[:-1] if kind == "white FM" else np.cumsum(w[:-1])
-    return np.concatenate(([0.0], np.cumsum(y)))
-
-
 def monte_carlo(reps):
     rng = np.random.default_rng(20261126)
     n = 1001
@@ -121,7 +115,7 @@ def monte_carlo(reps):
             ht = np.empty(reps)
             oh = np.empty(reps)
             for r in range(reps):
-                x = simulate(kind, n, rng)
+                x = simulate(a, n, rng)
                 mt[r] = mtotvar(x, m)
                 ht[r] = htotvar(x, m)
                 oh[r] = ohvar(x, m)

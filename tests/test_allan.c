@@ -420,25 +420,38 @@ static void test_edf_var_edges(void **state)
     assert_true(fnav_allan_edf_var(-4, 3, 1, 16u, 1001u, 1) > 0.0);
 }
 
-/* PDEV of the NBS14 1000-point set against SigmaTheta's values (17 digits,
- * nbs14_1000pt_pdev_expected.csv, octaves m = 1 .. 256), with the term
- * count n - 2m of SigmaTheta and allantools. */
-static void test_pdev_nbs14(void **state)
+/* The NBS14 1000-point frequency set as its phase record x_0 .. x_1000
+ * (x_0 = 0). @return 0, or -1 (with the skip notice) when the shared data
+ * are not found. */
+static int nbs14_1000_phase(double *x)
 {
-    static double y[1000], x[1001];
-    char path[512], line[256];
-    FILE *f;
+    static double y[1000];
+    char path[512];
     size_t i;
-    int rows = 0;
-    (void)state;
     if (fnav_testdata_path("allan_reference/nbs14/nbs14_1000pt_frequency.txt", path, sizeof path) != 0) {
         fnav_test_skip_notice("NBS14 1000-point set");
-        skip();
+        return -1;
     }
     assert_int_equal(read_numbers(path, y, 1000), 1000);
     x[0] = 0.0;
     for (i = 0; i < 1000u; i++) {
         x[i + 1u] = x[i] + y[i];
+    }
+    return 0;
+}
+
+/* PDEV of the NBS14 1000-point set against SigmaTheta's values (17 digits,
+ * nbs14_1000pt_pdev_expected.csv, octaves m = 1 .. 256), with the term
+ * count n - 2m of SigmaTheta and allantools. */
+static void test_pdev_nbs14(void **state)
+{
+    static double x[1001];
+    char path[512], line[256];
+    FILE *f;
+    int rows = 0;
+    (void)state;
+    if (nbs14_1000_phase(x) != 0) {
+        skip();
     }
     assert_int_equal(fnav_testdata_path("allan_reference/nbs14/nbs14_1000pt_pdev_expected.csv", path, sizeof path), 0);
     f = fopen(path, "r");
@@ -493,19 +506,12 @@ static void test_totdev_nbs14(void **state)
     static const double s32_ttot[3] = { 1.1930e-01, 3.2060e-01, 1.1285e+00 };
     static const double s32_htot[3] = { 2.943883e-01, 9.614787e-02, 3.058103e-02 };
     static const unsigned s32_m[3] = { 1u, 10u, 100u };
-    static double y[1000], x[1001];
-    char path[512];
+    static double x[1001];
     size_t i;
     uint32_t terms;
     (void)state;
-    if (fnav_testdata_path("allan_reference/nbs14/nbs14_1000pt_frequency.txt", path, sizeof path) != 0) {
-        fnav_test_skip_notice("NBS14 1000-point set");
+    if (nbs14_1000_phase(x) != 0) {
         skip();
-    }
-    assert_int_equal(read_numbers(path, y, 1000), 1000);
-    x[0] = 0.0;
-    for (i = 0; i < 1000u; i++) {
-        x[i + 1u] = x[i] + y[i];
     }
     for (i = 0; i < sizeof gold / sizeof gold[0]; i++) {
         const unsigned m = gold[i].m;
