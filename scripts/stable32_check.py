@@ -19,7 +19,9 @@ Usage: /usr/bin/python3 scripts/stable32_check.py TABLE.csv [TABLE2.csv ...] STA
 Several tables are read as one (e.g. two `--m` runs of at most 160 tau).
 Exit status 1 when the deviation or a term count is off by more than --tol
 (default 1e-4, what Stable32's 5 printed digits allow), or a limit with the
-same alpha by more than --ci-tol (default 5e-4).
+same alpha by more than --ci-tol (default 5e-4: above 100 degrees of freedom
+Stable32's limits are those of confidence 0.68, up to 4.2e-4 from the
+harness's one-sigma ones; docs/allan.md, "Confidence intervals").
 
 Example (the run quoted in docs/allan.md, allantools' tests/ocxo files):
   bin/harness allan --series ocxo_frequency.txt --rate 1 --fractional 1e7 --no-sim --quiet --out t.csv
