@@ -24,6 +24,14 @@ adds a constant v m/s^2 to f_i instead (an accelerometer bias the filter did
 not start with, e.g. "by:0.1"): whether a bias the filter has to separate from
 a tilt could make the climb.
 
+With --gsens TERMS, the gyro gets a g-sensitivity instead: w_i += k f_j for
+each TERM "ij:k" (k in rad/s per m/s^2; 1.78e-4 is 0.1 deg/s per g, the
+figure MEMS gyro datasheets typically give; "none" and "+" as for --accel).
+In stance f is about g along the sole's normal, so the term is mostly a
+constant gyro bias there, which the alignment and the bias states take; in
+the swing it follows the foot's specific force, and a term on the pitch axis
+turns that into a pitch error during the swing.
+
 With --fit, the rotation (a rotation vector, three angles) that minimises the
 first-update NIS is searched instead (Nelder-Mead from zero, 0.05 deg): what
 the innovations alone would calibrate. With --rotvec X,Y,Z that rotation is
@@ -32,6 +40,7 @@ applied as it is (e.g. one walk's fit on the other walk).
 Usage (from the repository root, after `make`; about 15 s per angle and log):
   /usr/bin/python3 scripts/misalign_check.py ../shared/data/xio_ngimu_gait/short_walk.csv [--axis y]
       [--angles=-1.5,-1,-0.5,0,0.5,1] [--fit] [--rotvec=X,Y,Z] [--accel=none,zx:-0.03,by:0.1,...]
+      [--gsens=none,yx:1.78e-4,...]
 """
 import argparse
 import json
@@ -60,6 +69,24 @@ def run(args):
     if r.returncode != 0:
         sys.exit("harness %s failed: %s" % (args[0], r.stderr.strip()))
     return r.stdout
+
+
+def gsens_matrix(terms):
+    """The g-sensitivity matrix of "ij:k[+ij:k...]" (gyro i from specific force j,
+    rad/s per m/s^2); zero for "none"."""
+    g = np.zeros((3, 3))
+    if terms == "none":
+        return g
+    for term in terms.split("+"):
+        ij, _, val = term.partition(":")
+        try:
+            v = float(val)
+        except ValueError:
+            v = None
+        if v is None or len(ij) != 2 or ij[0] not in "xyz" or ij[1] not in "xyz":
+            sys.exit("bad --gsens term %r (want e.g. yx:1.78e-4)" % term)
+        g["xyz".index(ij[0]), "xyz".index(ij[1])] += v
+    return g
 
 
 def cross_matrix(terms):
@@ -92,11 +119,16 @@ def main():
     ap.add_argument("--fit", action="store_true", help="search the rotation that minimises the first-update NIS")
     ap.add_argument("--rotvec", default="", help="apply this rotation vector, deg (X,Y,Z)")
     ap.add_argument("--accel", default="", help="accelerometer cross-axis or bias settings instead, e.g. none,zx:-0.03,by:0.1")
+    ap.add_argument("--gsens", default="", help="gyro g-sensitivity settings instead, rad/s per m/s^2, e.g. none,yx:1.78e-4")
     a = ap.parse_args()
+    if a.accel and a.gsens:
+        sys.exit("--accel and --gsens are separate runs")
     angles = [float(x) for x in a.angles.split(",")]
     accel = [(terms, cross_matrix(terms)) for terms in a.accel.split(",")] if a.accel else []
-    print("log, " + ("accelerometer cross-axis terms" if a.accel else "gyro rotation") + ": horizontal / 3-D closure (m), height change (m, up), first-update NIS"
-          + ("" if a.fit or a.rotvec or a.accel else " (about sensor %s, deg)" % a.axis))
+    gsens = [(terms, gsens_matrix(terms)) for terms in a.gsens.split(",")] if a.gsens else []
+    what = "accelerometer cross-axis terms" if a.accel else ("gyro g-sensitivity" if a.gsens else "gyro rotation")
+    print("log, " + what + ": horizontal / 3-D closure (m), height change (m, up), first-update NIS"
+          + ("" if a.fit or a.rotvec or a.accel or a.gsens else " (about sensor %s, deg)" % a.axis))
     with tempfile.TemporaryDirectory() as tmp:
         for log in a.logs:
             base = os.path.join(tmp, "base.csv")
@@ -106,9 +138,9 @@ def main():
             gyr = np.column_stack([d[c] for c in ("gx", "gy", "gz")])
             name = os.path.basename(log)
 
-            def evaluate(m, closure, ka=(np.eye(3), np.zeros(3))):
+            def evaluate(m, closure, ka=(np.eye(3), np.zeros(3)), gs=np.zeros((3, 3))):
                 path = os.path.join(tmp, "rot.csv")
-                np.savetxt(path, np.column_stack([d["t"], acc @ ka[0].T + ka[1], gyr @ m.T]), delimiter=",",
+                np.savetxt(path, np.column_stack([d["t"], acc @ ka[0].T + ka[1], gyr @ m.T + acc @ gs.T]), delimiter=",",
                            header="t,ax,ay,az,gx,gy,gz", comments="", fmt="%.9g")
                 out = run(["simgap", path, "--closed"] + FAST)
                 m_nis = re.search(r"nis_first\s+real\s+(\S+)", out)
@@ -125,7 +157,10 @@ def main():
                       r["return_error_3d_m"], r["vertical_drift_m"], nis))
                 sys.stdout.flush()
 
-            if accel:
+            if gsens:
+                for terms, gs in gsens:
+                    show("gsens %s" % terms, *evaluate(np.eye(3), True, gs=gs))
+            elif accel:
                 for terms, ka in accel:
                     show("accel %s" % terms, *evaluate(np.eye(3), True, ka))
             elif a.fit:
