@@ -71,20 +71,27 @@ def run(args):
     return r.stdout
 
 
+def terms_of(terms, opt, example):
+    """(ij, value) for each "ij:value" of "a+b+..."; none for "none"."""
+    if terms == "none":
+        return []
+    out = []
+    for term in terms.split("+"):
+        ij, _, val = term.partition(":")
+        try:
+            out.append((ij, float(val)))
+        except ValueError:
+            sys.exit("bad %s term %r (want e.g. %s)" % (opt, term, example))
+    return out
+
+
 def gsens_matrix(terms):
     """The g-sensitivity matrix of "ij:k[+ij:k...]" (gyro i from specific force j,
     rad/s per m/s^2); zero for "none"."""
     g = np.zeros((3, 3))
-    if terms == "none":
-        return g
-    for term in terms.split("+"):
-        ij, _, val = term.partition(":")
-        try:
-            v = float(val)
-        except ValueError:
-            v = None
-        if v is None or len(ij) != 2 or ij[0] not in "xyz" or ij[1] not in "xyz":
-            sys.exit("bad --gsens term %r (want e.g. yx:1.78e-4)" % term)
+    for ij, v in terms_of(terms, "--gsens", "yx:1.78e-4"):
+        if len(ij) != 2 or ij[0] not in "xyz" or ij[1] not in "xyz":
+            sys.exit("bad --gsens term %r (want e.g. yx:1.78e-4)" % ("%s:%g" % (ij, v)))
         g["xyz".index(ij[0]), "xyz".index(ij[1])] += v
     return g
 
@@ -94,20 +101,13 @@ def cross_matrix(terms):
     offset of the bias terms "bi:v" (m/s^2); (I, 0) for "none"."""
     k = np.eye(3)
     b = np.zeros(3)
-    if terms == "none":
-        return k, b
-    for term in terms.split("+"):
-        ij, _, val = term.partition(":")
-        try:
-            v = float(val)
-        except ValueError:
-            v = None
-        if v is not None and len(ij) == 2 and ij[0] == "b" and ij[1] in "xyz":
+    for ij, v in terms_of(terms, "--accel", "zx:-0.03 or by:0.1"):
+        if len(ij) == 2 and ij[0] == "b" and ij[1] in "xyz":
             b["xyz".index(ij[1])] += v
-            continue
-        if v is None or len(ij) != 2 or ij[0] not in "xyz" or ij[1] not in "xyz" or ij[0] == ij[1]:
-            sys.exit("bad --accel term %r (want e.g. zx:-0.03 or by:0.1)" % term)
-        k["xyz".index(ij[0]), "xyz".index(ij[1])] += v
+        elif len(ij) != 2 or ij[0] not in "xyz" or ij[1] not in "xyz" or ij[0] == ij[1]:
+            sys.exit("bad --accel term %r (want e.g. zx:-0.03 or by:0.1)" % ("%s:%g" % (ij, v)))
+        else:
+            k["xyz".index(ij[0]), "xyz".index(ij[1])] += v
     return k, b
 
 
