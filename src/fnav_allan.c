@@ -630,9 +630,17 @@ static double pvar_r(const double *q, uint32_t len, double t, int alpha)
     return r;
 }
 
+/* Tap k of the PVAR filter of length 2 mp: (mp - 1) / 2 - k on the first
+ * half, its negative (of k - mp) on the second. */
+static double pvar_tap(uint32_t k, uint32_t mp)
+{
+    const double c = 0.5 * (double)(mp - 1u) - (double)(k % mp);
+    return k < mp ? c : -c;
+}
+
 double fnav_allan_edf_pvar(int alpha, uint32_t m_u, uint32_t n_phase)
 {
-    double tap[2u * EDF_PVAR_MMAX] = { 0.0 }, q[2u * EDF_PVAR_MMAX] = { 0.0 };
+    double q[2u * EDF_PVAR_MMAX] = { 0.0 };
     const uint32_t mp = m_u > EDF_PVAR_MMAX ? EDF_PVAR_MMAX : m_u, len = 2u * mp;
     double M, J, step, r0, sum, r;
     uint32_t k, i, j, jn;
@@ -642,13 +650,9 @@ double fnav_allan_edf_pvar(int alpha, uint32_t m_u, uint32_t n_phase)
     if (m_u == 1u) {
         return fnav_allan_edf_var(alpha, 2, 0, 1u, n_phase, 1);
     }
-    for (k = 0; k < len; k++) {
-        const double c = 0.5 * (double)(mp - 1u) - (double)(k % mp);
-        tap[k] = k < mp ? c : -c;
-    }
     for (k = 0; k < len; k++) { /* q starts at zero */
         for (i = 0; i + k < len; i++) {
-            q[k] += tap[i] * tap[i + k];
+            q[k] += pvar_tap(i, mp) * pvar_tap(i + k, mp);
         }
     }
     M = (double)(n_phase - 2u * m_u);

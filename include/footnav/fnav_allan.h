@@ -264,8 +264,8 @@ double fnav_allan_edf_var(int alpha, int d, int modified, uint32_t m, uint32_t n
  * Exact up to m = 64; above, the filter of m = 64 with lags scaled by
  * 64 / m (the large-m limit). m = 1: PVAR is the overlapping Allan variance
  * and so is the EDF. Checked against simulation (docs/allan.md). Double
- * arithmetic and 2 KB of stack (the taps and their autocorrelation): for
- * the host, not for an ISR; the firmware does not link it.
+ * arithmetic and 1.1 KB of stack (the taps' autocorrelation): for the
+ * host, not for an ISR; the firmware does not link it.
  * @param alpha   power-law noise exponent, -2..+2
  * @return the EDF, or a negative value when it is undefined.
  */
