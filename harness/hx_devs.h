@@ -88,7 +88,7 @@ double hx_dev_var_record(hx_dev_t k, const double *x, size_t n, uint32_t m, uint
 uint64_t hx_dev_work(hx_dev_t k, size_t n, uint32_t m);
 
 /** Factor from the deviation of hx_dev_var_record() to the one printed:
- *  tau / sqrt(3) for TDEV (tau = m / rate_hz, s), 1 otherwise. */
+ *  tau / sqrt(3) for TDEV and TTOTDEV (tau = m / rate_hz, s), 1 otherwise. */
 double hx_dev_scale(hx_dev_t k, uint32_t m, double rate_hz);
 
 /**

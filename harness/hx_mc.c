@@ -3,7 +3,6 @@
 
 #include "hx_allan_ident.h"
 
-#include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -30,9 +30,23 @@ with n - 2m + 1 terms against SigmaTheta's values (allan_reference/nbs14).
 Usage: /usr/bin/python3 scripts/pvar_edf.py [--greenhall] [--mc R] [--nbs14-10] [--terms DATA_DIR]
 """
 import math
+import os
 import sys
 
 import numpy as np
+
+# NIST's 10-point NBS14 fractional frequencies (SP 1065 p. 107)
+NBS14_10 = [892.0, 809.0, 823.0, 798.0, 671.0, 644.0, 883.0, 903.0, 677.0]
+
+
+def phase(y):
+    """The phase record x_0 = 0, x_k = y_0 + .. + y_{k-1} of frequencies y."""
+    return np.concatenate([[0.0], np.cumsum(y)])
+
+
+def nbs14_1000_phase(data_dir):
+    """The NBS14 1000-point set (allan_reference/nbs14 under data_dir) as its phase record."""
+    return phase(np.loadtxt(os.path.join(data_dir, "allan_reference", "nbs14", "nbs14_1000pt_frequency.txt")))
 
 
 def sw(t, alpha):
@@ -121,12 +135,11 @@ def main():
                 print("%+d %3d %4d  %7.2f  %7.2f" % (alpha, m, n, 2.0 * v.mean() ** 2 / v.var(),
                                                      edf(pvar_taps(m), m, n - 2 * m, alpha)))
     if "--nbs14-10" in args:
-        y = [892.0, 809.0, 823.0, 798.0, 671.0, 644.0, 883.0, 903.0, 677.0]  # SP 1065 p. 107
-        x = np.concatenate([[0.0], np.cumsum(y)])
+        x = phase(NBS14_10)
         print("NBS14 10-point PDEV at m = 2: %.10g" % math.sqrt(pvar_record(x, 2)))
     if "--terms" in args:
         d = args[args.index("--terms") + 1] + "/allan_reference/nbs14/"
-        x = np.concatenate([[0.0], np.cumsum(np.loadtxt(d + "nbs14_1000pt_frequency.txt"))])
+        x = nbs14_1000_phase(args[args.index("--terms") + 1])
         n = len(x)
         print("m  PDEV/SigmaTheta - 1 with n - 2m terms, with n - 2m + 1")
         rows = [l.split(",") for l in open(d + "nbs14_1000pt_pdev_expected.csv") if l[:1].isdigit()]

@@ -18,6 +18,8 @@ import sys
 
 import numpy as np
 
+from pvar_edf import nbs14_1000_phase
+
 
 def theo1(x, m):
     """THEO1 deviation at even averaging factor m (tau0 = 1)."""
@@ -34,8 +36,7 @@ def main():
     data = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
                                                               "..", "shared", "data")
     ref = os.path.join(data, "allan_reference", "nbs14")
-    y = np.loadtxt(os.path.join(ref, "nbs14_1000pt_frequency.txt"), comments="#")
-    x = np.concatenate([[0.0], np.cumsum(y)])
+    x = nbs14_1000_phase(data)
     expected = None
     for line in open(os.path.join(ref, "nbs14_1000pt_expected.csv")):
         if line.startswith("THEO1"):

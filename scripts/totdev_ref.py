@@ -35,7 +35,7 @@ import os
 
 import numpy as np
 
-from pvar_edf import simulate  # power-law phase records: white PM, white FM, random-walk FM
+from pvar_edf import NBS14_10, nbs14_1000_phase, phase, simulate  # simulate: white PM, white FM, random-walk FM records
 
 
 def window_terms(v, m):
@@ -79,9 +79,7 @@ TABLE8 = {2: (1.90, 2.10), 1: (1.20, 1.40), 0: (1.10, 1.20), -1: (0.85, 0.50), -
 
 
 def golden(data_dir):
-    base = os.path.join(data_dir, "allan_reference", "nbs14")
-    y = np.loadtxt(os.path.join(base, "nbs14_1000pt_frequency.txt"))
-    x = np.concatenate(([0.0], np.cumsum(y)))
+    x = nbs14_1000_phase(data_dir)
     print("# NBS14 1000-point set: m, MTOTDEV, HTOTDEV (no bias correction)")
     for m in (1, 2, 3, 5, 8, 10, 16, 33, 64, 100, 128, 256, 333):
         print("%d,%.17g,%.17g" % (m, np.sqrt(mtotvar(x, m)), np.sqrt(htotvar(x, m))))
@@ -95,8 +93,7 @@ def golden(data_dir):
             else:
                 got = np.sqrt(mtotvar(x, m)) * (m / np.sqrt(3.0) if name == "TTOTDEV" else 1.0)
             print("%s m=%d: %.6g against %.6g (%+.1e)" % (name, m, got, w, got / w - 1.0))
-    y10 = np.array([892.0, 809.0, 823.0, 798.0, 671.0, 644.0, 883.0, 903.0, 677.0])
-    x10 = np.concatenate(([0.0], np.cumsum(y10)))
+    x10 = phase(NBS14_10)
     for m, wm, wt, wh in ((1, 64.509, 37.244, 70.80607), (2, 64.794, 74.818, 91.16396)):
         print("NBS14 10-point m=%d: MTOTDEV %.6g (%.6g), TTOTDEV %.6g (%.6g), HTOTDEV corrected %.7g (%.7g)"
               % (m, np.sqrt(mtotvar(x10, m)), wm, np.sqrt(mtotvar(x10, m)) * m / np.sqrt(3.0), wt,

@@ -69,9 +69,10 @@ static struct {
  * switch at 100 degrees of freedom is tested, not assumed. */
 static void s32_check_ci(double dev, double edf, double lo_ref, double hi_ref)
 {
-    const double miss = s32_ci_miss(dev, edf, s32_conf(edf), lo_ref, hi_ref);
-    const double other = s32_ci_miss(dev, edf, edf > 100.0 ? S32_CONF : 0.68, lo_ref, hi_ref);
-    const int k = edf > 100.0 ? 0 : 1;
+    const double conf = s32_conf(edf);
+    const int k = conf == S32_CONF ? 1 : 0;
+    const double miss = s32_ci_miss(dev, edf, conf, lo_ref, hi_ref);
+    const double other = s32_ci_miss(dev, edf, k == 0 ? S32_CONF : 0.68, lo_ref, hi_ref);
     FNAV_ASSERT_CLOSE(miss, 0.0, S32_CI_TOL, 0.0);
     assert_true(miss < other);
     if (s32_stat[k].n++ == 0u) {
