@@ -277,12 +277,18 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
                     vt[1] = -sz * tk->vel[0] + cz * tk->vel[1];
                     vt[2] = tk->vel[2];
                     qmul(qz, tk->q, qt);
-                    /* q_true = dq (x) q_est: attitude error about the n axes */
-                    qc[0] = est.q_nb[0];
-                    qc[1] = -est.q_nb[1];
-                    qc[2] = -est.q_nb[2];
-                    qc[3] = -est.q_nb[3];
-                    qmul(qt, qc, dq);
+                    /* Every error is estimate minus truth, the attitude's
+                     * too: q_est = dq (x) q_true, dq = exp(e_att) about the
+                     * n axes. The filter perturbs its sigma points as
+                     * truth = dq(a) (x) estimate and v + dv alike, so P holds
+                     * the covariance of one sign for all states; an attitude
+                     * error of the other sign would flip every attitude
+                     * cross-covariance in the joint NEES. */
+                    qc[0] = qt[0];
+                    qc[1] = -qt[1];
+                    qc[2] = -qt[2];
+                    qc[3] = -qt[3];
+                    qmul(est.q_nb, qc, dq);
                     rotvec(dq, e);
                     for (j = 0; j < 3; j++) {
                         e[3 + j] = est.vel_mps[j] - vt[j];

@@ -40,7 +40,10 @@ typedef struct {
     double gyro_bias_rps[3];
     double accel_bias_mps2[3];
     /** Error covariance, order: attitude error about the n axes (rad),
-     *  velocity, position, gyro bias, accel bias. */
+     *  velocity, position, gyro bias, accel bias; of the error truth minus
+     *  estimate (truth = exp(a) (x) q_nb, v + dv, ...) or, the same matrix,
+     *  estimate minus truth with q_nb = exp(a) (x) truth: one sign for every
+     *  state, as the filter's sigma points. */
     double P[15][15];
 } hx_mc_est_t;
 

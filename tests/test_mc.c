@@ -64,7 +64,14 @@ static void factor(double t, double A[15][15])
         A[12 + i][12 + i] = 2e-2;
     }
     A[7][6] = 0.8 * sp; /* correlated horizontal position */
-    A[0][2] = 0.0;
+    /* Attitude errors drive velocity and position errors, as in a filter
+     * (a tilt makes a velocity error, a heading error a cross-track one):
+     * cross-covariances the joint ("all") NEES reads with their sign. */
+    for (i = 0; i < 3; i++) {
+        A[3 + i][i] = 0.04;
+    }
+    A[6][2] = 0.5 * sp;
+    A[7][2] = -0.5 * sp;
 }
 
 static int o_push(void *ctx, const fnav_sample_t *s)
@@ -102,24 +109,28 @@ static int o_push(void *ctx, const fnav_sample_t *s)
             e->P[i][j] = v * o->scale;
         }
     }
-    /* truth in the filter frame (rotated by -yaw0), plus the error */
+    /* The estimate is the truth in the filter frame (rotated by -yaw0) less
+     * the error d, drawn as the filter's sigma points perturb its state:
+     * truth = exp(d_att) (x) q_est, v_true = v_est + d_v, ... (fnav_ukf.c,
+     * apply_att). One sign for every state, so the cross-covariances of P
+     * hold; hx_mc must recover them as such. */
     cz = cos(o->yaw0);
     sz = sin(o->yaw0);
     qz[0] = cos(0.5 * o->yaw0);
     qz[1] = qz[2] = 0.0;
     qz[3] = -sin(0.5 * o->yaw0);
     qmul(qz, t.q_nb, qf);
-    e->pos_m[0] = cz * t.pos_m[0] + sz * t.pos_m[1] + d[6];
-    e->pos_m[1] = -sz * t.pos_m[0] + cz * t.pos_m[1] + d[7];
-    e->pos_m[2] = t.pos_m[2] + d[8];
-    e->vel_mps[0] = cz * t.vel_mps[0] + sz * t.vel_mps[1] + d[3];
-    e->vel_mps[1] = -sz * t.vel_mps[0] + cz * t.vel_mps[1] + d[4];
-    e->vel_mps[2] = t.vel_mps[2] + d[5];
+    e->pos_m[0] = cz * t.pos_m[0] + sz * t.pos_m[1] - d[6];
+    e->pos_m[1] = -sz * t.pos_m[0] + cz * t.pos_m[1] - d[7];
+    e->pos_m[2] = t.pos_m[2] - d[8];
+    e->vel_mps[0] = cz * t.vel_mps[0] + sz * t.vel_mps[1] - d[3];
+    e->vel_mps[1] = -sz * t.vel_mps[0] + cz * t.vel_mps[1] - d[4];
+    e->vel_mps[2] = t.vel_mps[2] - d[5];
     for (i = 0; i < 3; i++) {
-        e->gyro_bias_rps[i] = d[9 + i];
-        e->accel_bias_mps2[i] = d[12 + i];
+        e->gyro_bias_rps[i] = -d[9 + i];
+        e->accel_bias_mps2[i] = -d[12 + i];
     }
-    /* q_true = dq (x) q_est with dq = exp(d_att): q_est = dq^-1 (x) q_true */
+    /* q_est = exp(-d_att) (x) q_true */
     ang = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     dq[0] = cos(0.5 * ang);
     for (i = 0; i < 3; i++) {
