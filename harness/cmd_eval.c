@@ -354,10 +354,13 @@ typedef struct {
 
 /* Per-stride horizontal error in the truth's frame, which is the initial
  * heading frame of the IMU (as footnav's n frame: x along the initial
- * heading): both start at the first stride position. */
+ * heading): both start at the first stride position, so the first stride
+ * is the reference, its error zero by construction, and the statistics
+ * count the strides after it. The path runs up to the last stride with an
+ * estimate. */
 static int stride_errors(const hx_traj_t *t, const gcp_t *g, stride_res_t *r)
 {
-    double e[GCP_MAX], se2 = 0.0;
+    double e[GCP_MAX], se2 = 0.0, path = 0.0;
     double x0, y0;
     int i, n = 0;
     long i0 = g->idx[0];
@@ -367,9 +370,10 @@ static int stride_errors(const hx_traj_t *t, const gcp_t *g, stride_res_t *r)
     x0 = (double)t->f[i0].pos_m[0];
     y0 = (double)t->f[i0].pos_m[1];
     r->path = 0.0;
-    for (i = 0; i < g->n; i++) {
+    for (i = 1; i < g->n; i++) {
         long k = g->idx[i];
         double dx, dy;
+        path += hypot(g->x[i] - g->x[i - 1], g->y[i] - g->y[i - 1]);
         if (k < 0 || (size_t)k >= t->n) {
             continue;
         }
@@ -378,16 +382,14 @@ static int stride_errors(const hx_traj_t *t, const gcp_t *g, stride_res_t *r)
         e[n] = sqrt(dx * dx + dy * dy);
         se2 += e[n] * e[n];
         r->final_err = e[n];
+        r->path = path;
         n++;
-        if (i > 0) {
-            r->path += hypot(g->x[i] - g->x[i - 1], g->y[i] - g->y[i - 1]);
-        }
     }
     r->strides = n;
     r->rms = n > 0 ? sqrt(se2 / n) : (double)NAN;
     r->stride_err_med = hx_median(e, n);
     r->final_pct = r->path > 0.0 ? 100.0 * r->final_err / r->path : (double)NAN;
-    return n > 1 ? 0 : -1;
+    return n > 0 ? 0 : -1;
 }
 
 typedef struct {
@@ -584,6 +586,8 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
 
 typedef struct {
     int expected, detected, missed, spurious, trials, files; /* files: events files found */
+    int both_feet; /* expert swings left out: the other foot's expert swing overlaps them */
+    int off_time;  /* missed although a detected swing overlaps: its events IPOL_TOL or more away */
     double fo_med, fs_med, fo_p90, fs_p90, fo_bias, fs_bias;
     int n_fo, n_fs;
 } ipol_t;
@@ -665,37 +669,27 @@ static int read_events(const char *path, long ev[][2], int max, const char *key,
     return k;
 }
 
-/* Row of the first sample whose packet counter (relative to the first
- * sample's) reaches c: the experts' indices count packets, rows skip the
- * dropped ones. */
-static long row_of(const uint32_t *seq, size_t n, long c)
+/* Packet index (the experts' unit: packets since the file's first one) of
+ * a time from the log: the reader stamps a sample counter / rate, so a time
+ * after dropped packets still counts them. */
+static long pkt_of_time(const hx_log_t *log, int64_t t_ns)
 {
-    size_t i;
-    for (i = 0; i < n; i++) {
-        if ((long)(seq[i] - seq[0]) >= c) {
-            return (long)i;
-        }
-    }
-    return (long)n;
+    return (long)llround((double)t_ns * log->meta.rate_hz * 1e-9) - (long)log->seq[0];
 }
 
-static long row_of_time(const int64_t *t, size_t n, int64_t tn)
-{
-    size_t lo = 0, hi = n;
-    while (lo < hi) {
-        size_t mid = (lo + hi) / 2;
-        if (t[mid] < tn) {
-            lo = mid + 1;
-        } else {
-            hi = mid;
-        }
-    }
-    return (long)lo;
-}
+/* Largest |event error| for an expert swing to count as detected, samples. */
+#define IPOL_TOL 50
 
 static int overlaps(long a0, long a1, long b0, long b1)
 {
     return a0 < b1 && a1 > b0;
+}
+
+/* v with one decimal, or "-" when there is none (no event to time). */
+static const char *fmt_1f(char *buf, size_t size, double v)
+{
+    snprintf(buf, size, isfinite(v) ? "%.1f" : "-", v);
+    return buf;
 }
 
 static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
@@ -714,10 +708,10 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
     }
     for (i = 0; i < n; i++) {
         for (foot = 0; foot < 2; foot++) {
-            static long evs[256][2], sw[1024][2];
+            static long evs[256][2], oevs[256][2], sw[1024][2];
             static long fo[1024], fs[1024];
-            long tb[2], ub[2], rtb[2], rub[2];
-            int ne, nsw = 0, nfo = 0, nfs = 0, k, j, exp_n = 0, det_n = 0, miss = 0, spur_n = 0;
+            long tb[2], ub[2], otb[2], oub[2];
+            int ne, noe, nsw = 0, nfo = 0, nfs = 0, k, j, exp_n = 0, det_n = 0, miss = 0, spur_n = 0;
             static int used[1024];
             hx_log_t log;
             char err[320];
@@ -732,6 +726,12 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             snprintf(path, sizeof path, "%s/%.*s_%s.txt", dir, (int)(l - 5), names[i], foot ? "rf" : "lf");
             snprintf(nm, sizeof nm, "%.*s | %s", (int)(l - 5), names[i], foot ? "right" : "left");
             ne = read_events(jpath, evs, 256, foot ? "RightFootEvents" : "LeftFootEvents", tb, ub, err, sizeof err);
+            /* the other foot's swings, to find annotations with both feet in the air */
+            noe = ne < 0 ? 0 : read_events(jpath, oevs, 256, foot ? "LeftFootEvents" : "RightFootEvents", otb, oub,
+                                            note, sizeof note);
+            if (noe < 0) {
+                noe = 0;
+            }
             if (ne < 0) {
                 fail(ev, jpath, note, sizeof note, err);
             } else if (hx_log_load(&log, path, HX_FMT_AUTO, 0.0, err, sizeof err) < 0) {
@@ -772,40 +772,47 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                 }
                 while ((ps = fnav_stance_pop(&st, &o)) == FNAV_OK) {
                     if ((o.events & FNAV_STANCE_EV_STRIDE) && nsw < 1024) {
-                        sw[nsw][0] = row_of_time(log.t_ns, log.n, o.swing_t0_ns);
-                        sw[nsw][1] = row_of_time(log.t_ns, log.n, o.swing_t1_ns);
+                        sw[nsw][0] = pkt_of_time(&log, o.swing_t0_ns);
+                        sw[nsw][1] = pkt_of_time(&log, o.swing_t1_ns);
                         nsw++;
                     }
                     if ((o.events & FNAV_STANCE_EV_FOOT_OFF) && nfo < 1024) {
-                        fo[nfo++] = row_of_time(log.t_ns, log.n, o.fo_t_ns);
+                        fo[nfo++] = pkt_of_time(&log, o.fo_t_ns);
                     }
                     if ((o.events & FNAV_STANCE_EV_FOOT_STRIKE) && nfs < 1024) {
-                        fs[nfs++] = row_of_time(log.t_ns, log.n, o.fs_t_ns);
+                        fs[nfs++] = pkt_of_time(&log, o.fs_t_ns);
                     }
                 }
                 (void)ps;
             }
-            rtb[0] = row_of(log.seq, log.n, tb[0]);
-            rtb[1] = row_of(log.seq, log.n, tb[1]);
-            rub[0] = row_of(log.seq, log.n, ub[0]);
-            rub[1] = row_of(log.seq, log.n, ub[1]);
-            /* Evaluated: the expert swings inside the trial and clear of the
-             * U-turn (the experts annotate the turn only partly). A detected
-             * swing counts when it overlaps an evaluated expert swing (a
-             * match), or else when its middle is inside the trial, outside the
-             * U-turn, and it overlaps no excluded expert swing (spurious). */
+            /* Everything in packets since the file's first (the experts'
+             * unit; the log's rows skip dropped packets). Evaluated: the
+             * expert swings inside the trial and clear of the U-turn (the
+             * experts annotate the turn only partly), and not overlapping
+             * an expert swing of the other foot (both feet in the air: no
+             * walking stride has that, so the annotation is not reliable
+             * there). An evaluated expert swing is detected when a detected
+             * swing overlaps it and the nearest reported foot-off and
+             * foot-strike both lie within IPOL_TOL samples of its ends;
+             * otherwise it is missed. A detected swing that detects none
+             * counts as spurious when its middle is inside the trial,
+             * outside the U-turn, and it overlaps no excluded expert swing. */
             for (k = 0; k < nsw; k++) {
                 used[k] = 0;
             }
             for (j = 0; j < ne; j++) {
-                long s0 = row_of(log.seq, log.n, evs[j][0]), s1 = row_of(log.seq, log.n, evs[j][1]);
-                int hit = -1;
-                if (overlaps(s0, s1, rub[0], rub[1]) || s0 < rtb[0] - 5 || s1 > rtb[1] + 5) {
+                long s0 = evs[j][0], s1 = evs[j][1], bfo = -1, bfs = -1;
+                int hit = -1, q, both = 0;
+                for (q = 0; q < noe; q++) {
+                    both = both || overlaps(oevs[q][0], oevs[q][1], s0, s1);
+                }
+                if (overlaps(s0, s1, ub[0], ub[1]) || s0 < tb[0] - 5 || s1 > tb[1] + 5 || both) {
                     for (k = 0; k < nsw; k++) {
                         if (overlaps(sw[k][0], sw[k][1], s0, s1)) {
                             used[k] = 2; /* belongs to an excluded expert swing */
                         }
                     }
+                    out->both_feet += both && !(overlaps(s0, s1, ub[0], ub[1]) || s0 < tb[0] - 5 || s1 > tb[1] + 5);
                     continue;
                 }
                 exp_n++;
@@ -815,48 +822,47 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                         break;
                     }
                 }
-                if (hit < 0) {
+                /* nearest reported events to the expert's foot-off / strike */
+                for (q = 0; q < nfo; q++) {
+                    if (bfo < 0 || labs(fo[q] - s0) < labs(bfo - s0)) {
+                        bfo = fo[q];
+                    }
+                }
+                for (q = 0; q < nfs; q++) {
+                    if (bfs < 0 || labs(fs[q] - s1) < labs(bfs - s1)) {
+                        bfs = fs[q];
+                    }
+                }
+                if (hit < 0 || bfo < 0 || bfs < 0 || labs(bfo - s0) >= IPOL_TOL || labs(bfs - s1) >= IPOL_TOL) {
+                    out->off_time += hit >= 0;
                     miss++;
                     continue;
                 }
                 used[hit] = 1;
                 det_n++;
-                /* nearest reported events to the expert's foot-off / strike */
-                {
-                    long best = -1, b2 = -1;
-                    int q;
-                    for (q = 0; q < nfo; q++) {
-                        if (best < 0 || labs(fo[q] - s0) < labs(best - s0)) {
-                            best = fo[q];
-                        }
-                    }
-                    for (q = 0; q < nfs; q++) {
-                        if (b2 < 0 || labs(fs[q] - s1) < labs(b2 - s1)) {
-                            b2 = fs[q];
-                        }
-                    }
-                    if (best >= 0 && labs(best - s0) < 50 && out->n_fo < 4096 && trial_fo < 256) {
-                        fo_e[out->n_fo] = (double)(best - s0);
-                        fo_a[out->n_fo++] = fabs((double)(best - s0));
-                        tfo[trial_fo++] = fabs((double)(best - s0));
-                    }
-                    if (b2 >= 0 && labs(b2 - s1) < 50 && out->n_fs < 4096 && trial_fs < 256) {
-                        fs_e[out->n_fs] = (double)(b2 - s1);
-                        fs_a[out->n_fs++] = fabs((double)(b2 - s1));
-                        tfs[trial_fs++] = fabs((double)(b2 - s1));
-                    }
+                if (out->n_fo < 4096 && trial_fo < 256) {
+                    fo_e[out->n_fo] = (double)(bfo - s0);
+                    fo_a[out->n_fo++] = fabs((double)(bfo - s0));
+                    tfo[trial_fo++] = fabs((double)(bfo - s0));
+                }
+                if (out->n_fs < 4096 && trial_fs < 256) {
+                    fs_e[out->n_fs] = (double)(bfs - s1);
+                    fs_a[out->n_fs++] = fabs((double)(bfs - s1));
+                    tfs[trial_fs++] = fabs((double)(bfs - s1));
                 }
             }
             for (k = 0; k < nsw; k++) {
                 long mid = (sw[k][0] + sw[k][1]) / 2;
-                if (used[k] == 0 && !(mid >= rub[0] && mid < rub[1]) && mid > rtb[0] - 5 && mid < rtb[1] + 5) {
+                if (used[k] == 0 && !(mid >= ub[0] && mid < ub[1]) && mid > tb[0] - 5 && mid < tb[1] + 5) {
                     det_n++;
                     spur_n++;
                 }
             }
             if (write) {
-                fprintf(ev->md, "| %s | %d | %d | %d | %d | %.1f | %.1f |  |\n", nm, exp_n, det_n, miss, spur_n,
-                        hx_median(tfo, trial_fo), hx_median(tfs, trial_fs));
+                char m1[32], m2[32];
+                fprintf(ev->md, "| %s | %d | %d | %d | %d | %s | %s |  |\n", nm, exp_n, det_n, miss, spur_n,
+                        fmt_1f(m1, sizeof m1, hx_median(tfo, trial_fo)),
+                        fmt_1f(m2, sizeof m2, hx_median(tfs, trial_fs)));
             }
             out->expected += exp_n;
             out->detected += det_n;
@@ -1164,19 +1170,25 @@ int hx_cmd_eval(int argc, char **argv)
 
     fprintf(ev.md, "## ipol_gait_xsens: stance detection and gait events against the experts\n\n"
                    "Strides of the straight walking phases (inside the trial, clear of the U-turn, which the "
-                   "experts annotate only partly). A detected swing matches an expert swing when they overlap. "
-                   "Event errors in samples at 100 Hz: foot-off (FO) against the start, foot-strike (FS) against "
-                   "the end of the expert swing.\n\n");
+                   "experts annotate only partly), leaving out expert swings that overlap an expert swing of the "
+                   "other foot (both feet in the air, which no walking stride has). An expert swing is detected "
+                   "when a detected swing overlaps it and the nearest foot-off and foot-strike lie within %d "
+                   "samples of its ends. Event errors in samples at 100 Hz (packets, dropped ones counted): "
+                   "foot-off (FO) against the start, foot-strike (FS) against the end of the expert swing.\n\n",
+            IPOL_TOL);
     ipol(&ev, &ev.cfg, 1, &ip);
     if (ip.trials == 0) {
         fprintf(ev.md, ip.files > 0 ? "\nNo trial in `%s/ipol_gait_xsens` gave a result (table).\n\n"
                                     : "\nNo trials found in `%s/ipol_gait_xsens`.\n\n",
                 ev.data);
     } else {
-        fprintf(ev.md, "\n%d trials and feet: %d expert strides, %d detected, %d missed, %d spurious (target: none "
-                       "missed or spurious: %s). Event timing: median |FO error| %.1f samples (bias %+.1f, 90th percentile "
+        fprintf(ev.md, "\n%d trials and feet: %d expert strides, %d detected, %d missed (%d of them overlapped by a "
+                       "detected swing whose events are %d samples or more away), %d spurious (target: none "
+                       "missed or spurious: %s); %d expert swings left out for overlapping the other foot's. Event "
+                       "timing: median |FO error| %.1f samples (bias %+.1f, 90th percentile "
                        "%.1f), median |FS error| %.1f samples (bias %+.1f, 90th percentile %.1f) (target <= 2: %s).\n\n",
-                ip.trials, ip.expected, ip.detected, ip.missed, ip.spurious, met(ip.missed == 0 && ip.spurious == 0),
+                ip.trials, ip.expected, ip.detected, ip.missed, ip.off_time, IPOL_TOL, ip.spurious,
+                met(ip.missed == 0 && ip.spurious == 0), ip.both_feet,
                 ip.fo_med, ip.fo_bias, ip.fo_p90, ip.fs_med, ip.fs_bias, ip.fs_p90,
                 met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
     }

@@ -293,6 +293,11 @@ if [ -n "$D" ]; then
         if grep -q "$s" "$T/results.md"; then pass "results.md has $s"; else fail "results.md lacks $s"; fi
     done
     if head -5 "$T/results.md" | grep -q "harness eval"; then pass "results.md names its command"; else fail "results.md command"; fi
+    # the first footprint is the reference (error 0 by construction): the
+    # statistics count the strides after it
+    n=$(($(wc -l < "$D/pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_31_strides_gcp.csv") - 2))
+    if grep -q "^| SensorConnectData_31 | $n |" "$T/results.md"; then pass "footprints: strides after the reference ($n)"; else
+        fail "footprint stride count: $(grep '^| SensorConnectData_31' "$T/results.md")"; fi
     # a data directory holding only part of the sets, no MANIFEST.md, and an
     # xio walk under another name: evaluated on what is there, the rest "no data"
     mkdir -p "$T/part/xio_ngimu_gait"
@@ -346,6 +351,37 @@ if [ -n "$D" ]; then
         pass "results.md and the JSON say the results are incomplete"; else fail "failure count not reported"; fi
     bad=$(md_bad_rows "$T/bad.md")
     if [ -z "$bad" ]; then pass "not-run rows keep the tables well formed"; else fail "rows with a wrong cell count: $bad"; fi
+    # ipol scoring (trial 1-1 alone): the reference row, then three edits
+    ipol_dir() { mkdir -p "$T/$1/ipol_gait_xsens"; cp "$D/ipol_gait_xsens/1-1"* "$T/$1/ipol_gait_xsens/"; }
+    ipol_row() { "$H" eval --no-experiments --data "$T/$1" --out "$T/$1.md" > /dev/null 2>&1; grep "^| 1-1 | $2 |" "$T/$1.md"; }
+    ipol_dir ip0
+    ref=$(ipol_row ip0 left)
+    if [ "$ref" = "| 1-1 | left | 15 | 15 | 0 | 0 | 2.0 | 1.0 |  |" ]; then pass "ipol 1-1 left: reference row"; else fail "ipol 1-1 left: $ref"; fi
+    # the packet just before each left expert swing dropped from the log:
+    # timing errors count packets, so they do not shrink by the dropped one
+    # (in rows the foot-off median read 1.0)
+    ipol_dir ip1
+    fo=$(tr -d ' ' < "$D/ipol_gait_xsens/1-1.json" | sed 's/.*"LeftFootEvents":\[\[//; s/\]\].*//; s/\],\[/\n/g' | cut -d, -f1)
+    awk -F'\t' -v drop="$(echo $fo)" 'BEGIN { n = split(drop, d, " "); for (i = 1; i <= n; i++) x[d[i] - 1] = 1 }
+        NR <= 2 || !(($1 + 0) in x)' "$D/ipol_gait_xsens/1-1_lf.txt" > "$T/ip1/ipol_gait_xsens/1-1_lf.txt"
+    row=$(ipol_row ip1 left)
+    if [ "$(wc -l < "$T/ip1/ipol_gait_xsens/1-1_lf.txt")" -lt "$(wc -l < "$D/ipol_gait_xsens/1-1_lf.txt")" ] && [ "$row" = "$ref" ]; then
+        pass "ipol: event errors in packets across dropped packets"; else fail "ipol dropped packets: $row"; fi
+    # a right swing stretched over a left one: both feet in the air, both left out
+    ipol_dir ip2
+    sed 's/\[584, 629\]/[560, 629]/' "$D/ipol_gait_xsens/1-1.json" > "$T/ip2/ipol_gait_xsens/1-1.json"
+    if [ "$(ipol_row ip2 left)" = "| 1-1 | left | 14 | 14 | 0 | 0 | 2.0 | 1.0 |  |" ] && grep -q "2 expert swings left out" "$T/ip2.md"; then
+        pass "ipol: expert swings with both feet in the air are left out"; else fail "ipol both feet: $(ipol_row ip2 left)"; fi
+    # a left expert swing moved 59 packets later (the right foot's events
+    # removed): the detected swing still overlaps it but its foot-off lies 50
+    # packets away, so it is missed (and that swing spurious), not detected
+    ipol_dir ip3
+    sed 's/\[641, 687\]/[700, 745]/; s/"RightFootEvents": \[\[.*\]\]/"RightFootEvents": []/' "$D/ipol_gait_xsens/1-1.json" \
+        > "$T/ip3/ipol_gait_xsens/1-1.json"
+    if [ "$(ipol_row ip3 left)" = "| 1-1 | left | 15 | 15 | 1 | 1 | 2.0 | 1.0 |  |" ] &&
+        grep -q "1 missed (1 of them overlapped by a detected swing" "$T/ip3.md" &&
+        grep -q "^| 1-1 | right | 0 | 17 | 0 | 17 | - | - |" "$T/ip3.md"; then
+        pass "ipol: an overlap with events beyond the tolerance is a miss; no events print -"; else fail "ipol tolerance: $(grep '^| 1-1' "$T/ip3.md")"; fi
 else
     echo "skip shared-data checks (no ../shared/data; set FNAV_DATA_DIR)"
 fi
