@@ -662,16 +662,32 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
 
 size_t hx_nav_stance_mids(const hx_traj_t *t, size_t *idx, size_t max)
 {
+    /* A segmented stance phase (FNAV_FRAME_SEG_STANCE) begins min_stance_s
+     * after the detector's stance and ends min_swing_s after it (the
+     * segmentation's hysteresis), so its middle lies late, and a first phase
+     * cut short by the alignment can have its middle in the next swing. The
+     * mid-point is therefore the middle of the detector's stance within each
+     * segmented phase: from the start of the detector's stance run the phase
+     * began in (not before the first aligned frame) to the phase's last
+     * detector stance frame. */
+    const unsigned aligned = FNAV_FRAME_ALIGNED, det = FNAV_FRAME_STANCE;
     size_t i, n = 0, start = 0;
     int in = 0;
     for (i = 0; i <= t->n; i++) {
-        int st = i < t->n && (t->f[i].flags & FNAV_FRAME_ALIGNED) && (t->f[i].flags & FNAV_FRAME_SEG_STANCE);
+        int st = i < t->n && (t->f[i].flags & aligned) && (t->f[i].flags & FNAV_FRAME_SEG_STANCE);
         if (st && !in) {
             start = i;
             in = 1;
         } else if (!st && in) {
+            size_t a = start, b = i - 1;
+            while (a > 0 && (t->f[a - 1].flags & aligned) && (t->f[a - 1].flags & det)) {
+                a--;
+            }
+            while (b > start && !(t->f[b].flags & det)) {
+                b--;
+            }
             if (n < max) {
-                idx[n++] = (start + i - 1) / 2;
+                idx[n++] = (a + b) / 2;
             }
             in = 0;
         }

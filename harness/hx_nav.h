@@ -153,8 +153,9 @@ int hx_nav_little_motion(const hx_nav_summary_t *s);
 /** Compute the summary of a trajectory. */
 void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s);
 
-/** Stance mid-points of a trajectory (frame indices); returns their number
- *  (at most max). */
+/** Stance mid-points of a trajectory (frame indices): one per segmented
+ *  stance phase, the middle of the detector's stance in it (aligned frames
+ *  only); returns their number (at most max). */
 size_t hx_nav_stance_mids(const hx_traj_t *t, size_t *idx, size_t max);
 
 /** Print the summary as text. */

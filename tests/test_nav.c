@@ -544,6 +544,35 @@ static void test_sizes(void **state)
  * amplitude (within 1 %), an 80 Hz sine (above the new Nyquist rate, it
  * would alias to 20 Hz) is removed (below 1 %), duplicates are dropped and
  * counted, and upsampling is refused. */
+/* The summary's stance mid-points: the middle of the detector's stance in
+ * each segmented phase, not of the segmented phase (which lags the detector
+ * by the segmentation's hysteresis) and not before the alignment. */
+static void test_stance_mids(void **state)
+{
+    static fnav_nav_frame_t fr[400];
+    hx_traj_t t;
+    size_t mid[4], n, i;
+    (void)state;
+    memset(fr, 0, sizeof fr);
+    memset(&t, 0, sizeof t);
+    for (i = 0; i < 400; i++) {
+        fr[i].t_ns = (int64_t)i * 5000000;
+        fr[i].flags |= (i < 100 || (i >= 200 && i < 300)) ? FNAV_FRAME_STANCE : 0u; /* detector */
+        fr[i].flags |= ((i >= 10 && i < 150) || (i >= 210 && i < 350)) ? FNAV_FRAME_SEG_STANCE : 0u;
+        fr[i].flags |= i >= 90 ? FNAV_FRAME_ALIGNED : 0u;
+    }
+    fr[250].flags &= ~FNAV_FRAME_STANCE; /* a one-frame flicker inside a stance changes nothing */
+    t.n = 400;
+    t.f = fr;
+    n = hx_nav_stance_mids(&t, mid, 4);
+    assert_int_equal(n, 2);
+    /* first phase: aligned from 90, the detector's stance ends at 99; the
+     * segmented phase's middle, (90 + 149) / 2 = 119, lies in the swing */
+    assert_int_equal(mid[0], 94);
+    /* second: the detector's run 200..299 (the phase began at 210) */
+    assert_int_equal(mid[1], 249);
+}
+
 static void test_resampler(void **state)
 {
     hx_log_t in, out;
@@ -762,6 +791,7 @@ int main(void)
         cmocka_unit_test(test_realign),
         cmocka_unit_test(test_realign_still_frame),
         cmocka_unit_test(test_sizes),
+        cmocka_unit_test(test_stance_mids),
         cmocka_unit_test(test_resampler),
         cmocka_unit_test(test_golden_replays),
         cmocka_unit_test(test_float_vs_double),
