@@ -127,6 +127,7 @@ int hx_sim_run(const hx_sim_config_t *cfg, hx_sim_sink_fn sink, void *ctx, char 
         half = (long)K * M;
     }
     n_next = mean ? -(long)M : (pick ? 0 : -half);
+    fnav_imuerr_signal_index(&e, (int32_t)n_next); /* the tone's phase is phase_rad at t = 0 */
     if (mean) {
         gen(&g, n_next++, 0.0, prev_end); /* the start of the first interval */
     }

@@ -599,6 +599,16 @@ static fnav_real_t clip(fnav_real_t x, fnav_real_t r)
     return fnav_clamp(x, -r, r);
 }
 
+void fnav_imuerr_signal_index(fnav_imuerr_t *e, int32_t n)
+{
+    int c;
+    FNAV_ASSERT(e != NULL);
+    for (c = 0; c < FNAV_IMUERR_NCH; c++) {
+        fnav_real_t ph = e->cfg.vibration.phase_rad[c] + e->vib_dphi[c] * (fnav_real_t)n;
+        e->vib_phase[c] = ph - TWO_PI * fnav_floor(ph / TWO_PI);
+    }
+}
+
 void fnav_imuerr_signal(fnav_imuerr_t *e, const fnav_real_t f_b[3], const fnav_real_t w_b[3],
                         fnav_real_t y[FNAV_IMUERR_NCH])
 {
@@ -641,8 +651,9 @@ void fnav_imuerr_sensor(fnav_imuerr_t *e, fnav_real_t y[FNAV_IMUERR_NCH])
     fnav_real_t t_s, g;
     int c, i;
     FNAV_ASSERT(e != NULL && y != NULL);
-    e->k++;
+    /* the k-th output sample (from 0) is the log's sample at t = k dt */
     t_s = (fnav_real_t)e->k * e->dt_s;
+    e->k++;
     if (e->cfg.mask[FNAV_EFFECT_THERMAL] != 0u) {
         /* first-order warm-up T(t) = t0 + rise (1 - exp(-t/tau)) */
         e->temp_c = e->cfg.thermal.t0_c - e->cfg.thermal.rise_c * fnav_expm1_(-t_s / e->cfg.thermal.tau_s);

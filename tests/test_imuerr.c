@@ -595,7 +595,7 @@ static void test_ramp_and_thermal(void **state)
     assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
     run_const(&e, n, 4, y, NULL);
     for (i = 0; i < n; i += 997) {
-        FNAV_ASSERT_CLOSE(y[i], R * (double)(i + 1) / rate, 1e-9, 1e-5);
+        FNAV_ASSERT_CLOSE(y[i], R * (double)i / rate, 1e-9, 1e-5); /* b = R t, t = 0 at the first sample */
     }
     /* Allan: R tau / sqrt(2), slope +1, exactly */
     for (m = 1; m <= n / 4; m *= 4) {
@@ -613,7 +613,7 @@ static void test_ramp_and_thermal(void **state)
     assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
     for (i = 0; i < n; i++) {
         fnav_sample_t s;
-        double t = (double)(i + 1) / rate, T = 20.0 + 12.0 * (1.0 - exp(-t / 300.0));
+        double t = (double)i / rate, T = 20.0 + 12.0 * (1.0 - exp(-t / 300.0));
         memset(&s, 0, sizeof s);
         s.accel_mps2[2] = FNAV_R(-9.80665);
         assert_int_equal(fnav_imuerr_apply(&e, &s), FNAV_OK);

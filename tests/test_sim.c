@@ -201,6 +201,55 @@ static void test_alias_effect_folds_a_tone(void **state)
     hx_motion_free(m);
 }
 
+/* The vibration tone's phase at the output's t = 0 is phase_rad, whatever
+ * the internal rate and the decimation: least squares of the measured minus
+ * the true signal on sin and cos at the tone's frequency. The interval mean
+ * lags by half a sample, -pi f / f_s; the FIR and point sampling do not lag. */
+static double tone_phase(const ticks_t *s, int ch, double f)
+{
+    double ss = 0.0, sc = 0.0, cc = 0.0, ys = 0.0, yc = 0.0, det, a, b;
+    size_t i;
+    for (i = 0; i < s->n; i++) {
+        double t = (double)s->t[i].truth.t_s, si = sin(2.0 * PI * f * t), co = cos(2.0 * PI * f * t);
+        double y = (double)s->t[i].meas.accel_mps2[ch] - s->t[i].truth.f_b[ch];
+        ss += si * si;
+        sc += si * co;
+        cc += co * co;
+        ys += y * si;
+        yc += y * co;
+    }
+    det = ss * cc - sc * sc;
+    a = (ys * cc - yc * sc) / det; /* A cos(phi) */
+    b = (yc * ss - ys * sc) / det; /* A sin(phi) */
+    return atan2(b, a);
+}
+
+static void test_vibration_phase_at_t0(void **state)
+{
+    hx_motion_t *m = motion("stand:4", -1.0, 0.0);
+    static const uint32_t over[3] = { 10u, 1u, 10u }; /* the default at 200 Hz, point sampling, the default */
+    static const hx_decim_t dec[3] = { HX_DECIM_FIR, HX_DECIM_FIR, HX_DECIM_MEAN };
+    const double f = 37.0, phi = 0.7, fs = 200.0;
+    ticks_t s = { 0, 0, NULL };
+    char err[256];
+    int k;
+    (void)state;
+    for (k = 0; k < 3; k++) {
+        fnav_imuerr_config_t e = ideal(fs, over[k]);
+        double got, want = phi - (dec[k] == HX_DECIM_MEAN ? PI * f / fs : 0.0);
+        assert_int_equal(hx_effect_parse(&e, "vibration:ch=ax:amp=0.5:freq_hz=37:phase_rad=0.7", err, sizeof err), 0);
+        g_decim = dec[k];
+        run(m, &e, 0.0, &s);
+        got = tone_phase(&s, 0, f);
+        fprintf(stderr, "tone phase at t = 0: %.5f rad (expected %.5f; oversample %u, %s)\n", got, want, over[k],
+                dec[k] == HX_DECIM_MEAN ? "mean" : "fir");
+        FNAV_ASSERT_CLOSE(got, want, 1e-3, 0.0);
+    }
+    g_decim = HX_DECIM_FIR;
+    free(s.t);
+    hx_motion_free(m);
+}
+
 /* Paper section II in miniature: a walk with sharp heel strikes sampled at
  * 100 Hz. Filtered samples keep the integral of the specific force (the
  * velocity change over each stride); point samples without a filter lose
@@ -578,6 +627,7 @@ int main(void)
         cmocka_unit_test(test_point_sampling_is_the_truth),
         cmocka_unit_test(test_antialias_filter_passes_the_band),
         cmocka_unit_test(test_alias_effect_folds_a_tone),
+        cmocka_unit_test(test_vibration_phase_at_t0),
         cmocka_unit_test(test_impacts_alias_without_filter),
         cmocka_unit_test(test_noise_level_and_determinism),
         cmocka_unit_test(test_timing_effects_reach_the_stamps),

@@ -293,6 +293,15 @@ void fnav_imuerr_signal(fnav_imuerr_t *e, const fnav_real_t f_b[3], const fnav_r
                         fnav_real_t y[FNAV_IMUERR_NCH]);
 
 /**
+ * Index of the internal sample the next fnav_imuerr_signal() call is for,
+ * counted from the output's t = 0 (negative for the past an anti-alias
+ * filter needs; fnav_imuerr_init() sets 0). Only the vibration tone
+ * depends on it: its phase is phase_rad at index 0, whatever the
+ * oversampling and the filter.
+ */
+void fnav_imuerr_signal_index(fnav_imuerr_t *e, int32_t n);
+
+/**
  * Sensor stage, once per output sample (period dt_s), in place: advances
  * every bias process one step, adds the bias and the white noise, clips at
  * full scale and quantises.
