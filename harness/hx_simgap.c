@@ -587,8 +587,42 @@ static int fold_ends(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     sg_cmp_t cc;
     double tr, tmn, tsd;
     int k;
-    if (sg_fit_model(tm, c->baseline.mean, with, nwith, &c->ev, tmax, &f) != 0) {
+    if (!cand_eligible(cd->id, &c->ev_mid, c->cmp[SG_FULL].z_crit)) {
+        /* the middle holds no line, no step or no lattice of its own: no
+         * evidence from this fold (its fit must not borrow the ends'
+         * evidence, which this fold tests on) */
+        *z = 0.0;
+        *dG = 0.0;
+        *zg = 0.0;
+        *dL = 0.0;
+        return 0;
+    }
+    if (sg_fit_model(tm, c->baseline.mean, with, nwith, &c->ev_mid, tmax, &f) != 0) {
         return -1;
+    }
+    if (cd->id != FNAV_EFFECT_QUANT && cd->id != FNAV_EFFECT_VIBRATION) {
+        /* The first fold chose to simulate the candidate because the ends
+         * support it, and this fold tests on the ends: under no effect that
+         * choice leans this fold's test towards the candidate. So this fold
+         * counts only when the middle supports the candidate by the same
+         * rule (objective lower by SG_DQ_TEST; a lattice or a line is
+         * simulated on its own evidence, which cand_eligible above took
+         * from the middle); then the two folds' choices agree and the lean
+         * is confined to candidates both parts favour. */
+        sg_fit_t fc0;
+        double dq, dq_drift;
+        if (sg_fit_model(tm, c->baseline.mean, with, nwith - 1, &c->ev_mid, tmax, &fc0) != 0) {
+            return -1;
+        }
+        dq = (fc0.Q + fc0.Q_time) - (f.Q + f.Q_time);
+        dq_drift = (fc0.Q + fc0.Q_time_drift) - (f.Q + f.Q_time_drift);
+        if (!((dq_drift > dq ? dq_drift : dq) > SG_DQ_TEST)) {
+            *z = 0.0;
+            *dG = 0.0;
+            *zg = 0.0;
+            *dL = 0.0;
+            return 0;
+        }
     }
     k = sg_model_find(&f.model, cd->id);
     if (k >= 0 && (cd->id == FNAV_EFFECT_FLICKER || cd->id == FNAV_EFFECT_RRW) && !(f.model.e[k].p[0] > 0.0) &&
@@ -618,7 +652,7 @@ static int fold_ends(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     if (twinset_run(&f.model, ch, fc, &r->segs, c->q_full, S, seed, r->pl[ch], &ts) != 0) {
         return -1;
     }
-    if (param_var(r, ch, &f.model, with, nwith, &c->ev, tmax, SG_HOLD, &ts) != 0) {
+    if (param_var(r, ch, &f.model, with, nwith, &c->ev_mid, tmax, SG_HOLD, &ts) != 0) {
         twinset_free(&ts);
         return -1;
     }
@@ -1067,6 +1101,9 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             continue;
         }
         sg_evidence(x, &r->segs, r->rate_hz, c->q_full, &c->ev);
+        if (r->segs.sandwich) {
+            sg_evidence_seg(x, &r->segs, SG_HOLD, r->rate_hz, c->q_full, &c->ev_mid);
+        }
         tmax = fit_tmax(r, ch);
         if (sg_fit_model(&tfit, mean, NULL, 0, &c->ev, tmax, &bf) != 0) {
             snprintf(err, err_size, "baseline fit failed on channel %s", sg_channel_name(ch));

@@ -479,6 +479,10 @@ double sg_model_lnstat(const sg_chmodel_t *mdl, const sg_point_t *p, double rate
  *  its first block, which starts at sample 0; steps in every block; the
  *  slope over all of it). */
 void sg_evidence(const double *x, const sg_segs_t *segs, double rate_hz, double q_hint, sg_evidence_t *ev);
+/** The same on segment g (SG_FIT or SG_HOLD): the second fold, fitted on
+ *  the middle, takes its evidence from the middle (a line's phase is
+ *  referred back to sample 0 of the log). */
+void sg_evidence_seg(const double *x, const sg_segs_t *segs, int g, double rate_hz, double q_hint, sg_evidence_t *ev);
 
 /* ------------------------------------------------------------ diagnosis */
 
@@ -553,7 +557,8 @@ typedef struct {
     int active;               /**< channel present and analysed */
     sg_chmodel_t baseline;    /**< fitted baseline */
     sg_chmodel_t final;       /**< baseline + selected effects, refitted */
-    sg_evidence_t ev;
+    sg_evidence_t ev;         /**< evidence of the fit segment */
+    sg_evidence_t ev_mid;     /**< of the held-out segment (sandwich split: the second fold's fit) */
     double q_full, q_full_z;  /**< lattice on the whole log */
     sg_cmp_t cmp[SG_NSEG];    /**< baseline vs real */
     sg_cmp_t cmp_final[SG_NSEG]; /**< final model vs real */

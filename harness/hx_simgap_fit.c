@@ -1424,6 +1424,11 @@ static void find_steps(const double *x, size_t n, sg_evidence_t *ev)
 
 void sg_evidence(const double *x, const sg_segs_t *segs, double rate_hz, double q_hint, sg_evidence_t *ev)
 {
+    sg_evidence_seg(x, segs, SG_FIT, rate_hz, q_hint, ev);
+}
+
+void sg_evidence_seg(const double *x, const sg_segs_t *segs, int g, double rate_hz, double q_hint, sg_evidence_t *ev)
+{
     double st = 0.0, sx = 0.0, stt = 0.0, stx = 0.0, cnt = 0.0;
     int b, ns = 0, nm = 0;
     double s2 = 0.0, cmin = 0.0;
@@ -1432,27 +1437,33 @@ void sg_evidence(const double *x, const sg_segs_t *segs, double rate_hz, double 
     ev->q_z = 0.0;
     if (q_hint > 0.0) {
         double zs = 0.0;
-        for (b = 0; b < segs->nb[SG_FIT]; b++) {
-            zs += sg_lattice_z(x + segs->start[SG_FIT][b], (size_t)segs->n[SG_FIT][b], q_hint);
+        for (b = 0; b < segs->nb[g]; b++) {
+            zs += sg_lattice_z(x + segs->start[g][b], (size_t)segs->n[g][b], q_hint);
         }
-        ev->q_z = zs / sqrt((double)segs->nb[SG_FIT]);
+        ev->q_z = zs / sqrt((double)segs->nb[g]);
     }
-    /* lines: the first block starts at sample 0, so its phase is the log's */
-    find_tone(x + segs->start[SG_FIT][0], (size_t)segs->n[SG_FIT][0], rate_hz, ev);
-    for (b = 0; b < segs->nb[SG_FIT]; b++) {
+    /* lines in the first block; the phase is referred back from the
+     * block's first sample to the log's (the fit segment's first block
+     * starts at sample 0) */
+    find_tone(x + segs->start[g][0], (size_t)segs->n[g][0], rate_hz, ev);
+    if (ev->tone_hz > 0.0 && segs->start[g][0] > 0) {
+        double ph = ev->tone_phase - 2.0 * M_PI * ev->tone_hz * (double)segs->start[g][0] / rate_hz;
+        ev->tone_phase = ph - 2.0 * M_PI * floor(ph / (2.0 * M_PI));
+    }
+    for (b = 0; b < segs->nb[g]; b++) {
         sg_evidence_t e2;
         long k;
         memset(&e2, 0, sizeof e2);
-        find_steps(x + segs->start[SG_FIT][b], (size_t)segs->n[SG_FIT][b], &e2);
+        find_steps(x + segs->start[g][b], (size_t)segs->n[g][b], &e2);
         ns += e2.nsteps;
         s2 += e2.step_rms * e2.step_rms * (double)e2.nsteps;
         if (e2.step_min > 0.0) {
             cmin += e2.step_min;
             nm++;
         }
-        ev->span_s += (double)segs->n[SG_FIT][b] / rate_hz;
-        for (k = 0; k < segs->n[SG_FIT][b]; k++) {
-            long i = segs->start[SG_FIT][b] + k;
+        ev->span_s += (double)segs->n[g][b] / rate_hz;
+        for (k = 0; k < segs->n[g][b]; k++) {
+            long i = segs->start[g][b] + k;
             double t = (double)i / rate_hz, v = x[i] - x[0];
             st += t;
             sx += v;

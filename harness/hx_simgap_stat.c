@@ -706,6 +706,20 @@ static int gap_point(const sg_point_t *p)
     return !(p->dom == SG_TIME && p->kind == SG_TIME_LEVEL);
 }
 
+/* The normal score of a Student t statistic with df degrees of freedom:
+ * Phi^-1 of its tail probability, sign kept; beyond the double range of
+ * the tail (|t| past about 1e10 for df 15) the t itself, already far past
+ * any critical value. */
+static double t_to_normal(double t, double df)
+{
+    double q = gsl_cdf_tdist_Q(fabs(t), df), zn;
+    if (!(q > 0.0) || !isfinite(t)) {
+        return t;
+    }
+    zn = gsl_cdf_ugaussian_Qinv(q);
+    return t < 0.0 ? -zn : zn;
+}
+
 /* z of every point of `real` against the twin rows `rows` (nr of them),
  * and the aggregate. The fitted model's parameter uncertainty is a
  * low-rank covariance U U^T, U = the S refit shifts / sqrt(S - 1): the
@@ -817,6 +831,14 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
     }
     for (j = 0; j < n; j++) {
         double zz = dev[j] / sqrt(D[j]);
+        if (!(vt[j] > 0.0) && nr >= 3) {
+            /* a variance from the twins alone: the deviation over its
+             * estimate is Student's t with nr - 1 degrees of freedom, not
+             * normal, so it is mapped to the normal score of the same tail
+             * probability (with 16 twins a t of 4.14, the normal quantile
+             * of the Bonferroni level, has a tail 25 times the normal's) */
+            zz = t_to_normal(zz, (double)(nr - 1));
+        }
         if (z != NULL) {
             z[j] = zz;
         }

@@ -223,5 +223,28 @@ expect_exit 0 "simgap-validate: a random walk that looks like a ramp" "$H" simga
     --only 36 --quiet --json "$T/v36.json"
 json "$T/v36.json" 'len(j["results"]) == 1 and j["results"][0]["truth"] == "rrw" and j["results"][0]["answer"] == "rrw" and j["results"][0]["held_out_shrink"] >= 0.7' &&
     pass "validate: a random walk that tilts the blocks is rrw, not ramp" || fail "case 36: $(cat "$T/pyerr"; cat "$T/out")"
+# a line only in the ends (the sandwich split's fit segment), none in the
+# middle: neither fold may confirm it. The second fold fits on the middle,
+# so it must take the line's evidence from the middle (which has none), not
+# the ends' it is tested on; borrowing it, a 13 Hz tone fitted on the ends
+# "explained" the ends' own gap and the answer was partly-explained
+"$PY" - "$T/te.csv" <<'PY' || fail "tone-in-the-ends log"
+import sys
+import numpy as np
+fs, n = 100.0, 60001
+rng = np.random.default_rng(3)
+t = np.arange(n) / fs
+x = np.array([0, 0, 9.80665, 0, 0, 0]) + rng.standard_normal((n, 6)) * np.array([1e-3] * 3 + [1e-4] * 3) * np.sqrt(fs)
+a = (n * 6 // 10) // 2
+b = n - (n * 6 // 10 - a)
+on = np.ones(n)
+on[a:b] = 0.0
+x[:, 5] += 3e-4 * np.sin(2 * np.pi * 13.0 * t + 0.3) * on
+np.savetxt(sys.argv[1], np.column_stack([t, x]), fmt=['%.4f'] + ['%.9g'] * 6, delimiter=',', header='t,ax,ay,az,gx,gy,gz', comments='')
+PY
+expect_exit 0 "static log with a line in the ends only" "$H" simgap "$T/te.csv" --static --quiet --json "$T/te.json"
+json "$T/te.json" 'j["verdict"]["answer"] not in ("explained", "partly-explained") and j["verdict"]["effects"] == []' &&
+    pass "a line in the fit segment only is not confirmed by either fold" || fail "tone in the ends: $(cat "$T/pyerr"; "$PY" -c 'import json,sys; print(json.load(open(sys.argv[1]))["verdict"])' "$T/te.json")"
+
 if [ "$fails" -ne 0 ]; then echo "test_simgap.sh: $fails failure(s)"; exit 1; fi
 echo "test_simgap.sh: all passed"
