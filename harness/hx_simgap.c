@@ -566,6 +566,16 @@ static double fit_tmax(const sg_result_t *r, int ch)
     return t / 4.0;
 }
 
+/* A fold without evidence for the candidate: its scores and gains are 0. */
+static int no_evidence(double *z, double *dG, double *zg, double *dL)
+{
+    *z = 0.0;
+    *dG = 0.0;
+    *zg = 0.0;
+    *dL = 0.0;
+    return 0;
+}
+
 /* The second fold of a sandwich split: the candidate model (current
  * effects plus one, ids `with`) fitted on the middle (table tm; a walk's K
  * by the likelihood of the middle's samples of x) and tested
@@ -591,11 +601,7 @@ static int fold_ends(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
         /* the middle holds no line, no step or no lattice of its own: no
          * evidence from this fold (its fit must not borrow the ends'
          * evidence, which this fold tests on) */
-        *z = 0.0;
-        *dG = 0.0;
-        *zg = 0.0;
-        *dL = 0.0;
-        return 0;
+        return no_evidence(z, dG, zg, dL);
     }
     if (sg_fit_model(tm, c->baseline.mean, with, nwith, &c->ev_mid, tmax, &f) != 0) {
         return -1;
@@ -617,11 +623,7 @@ static int fold_ends(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
         dq = (fc0.Q + fc0.Q_time) - (f.Q + f.Q_time);
         dq_drift = (fc0.Q + fc0.Q_time_drift) - (f.Q + f.Q_time_drift);
         if (!((dq_drift > dq ? dq_drift : dq) > SG_DQ_TEST)) {
-            *z = 0.0;
-            *dG = 0.0;
-            *zg = 0.0;
-            *dL = 0.0;
-            return 0;
+            return no_evidence(z, dG, zg, dL);
         }
     }
     k = sg_model_find(&f.model, cd->id);
@@ -643,11 +645,7 @@ static int fold_ends(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     }
     if (k < 0 || !(f.model.e[k].p[mag_index(cd->id)] != 0.0)) {
         /* the middle shows none of it: no evidence from this fold */
-        *z = 0.0;
-        *dG = 0.0;
-        *zg = 0.0;
-        *dL = 0.0;
-        return 0;
+        return no_evidence(z, dG, zg, dL);
     }
     if (twinset_run(&f.model, ch, fc, &r->segs, c->q_full, S, seed, r->pl[ch], &ts) != 0) {
         return -1;
