@@ -13,7 +13,7 @@
  *
  * Memory: fixed by FNAV_WELCH_MAX_NFFT (fnav_config.h), independent of the
  * log length; sizeof(fnav_welch_t) is about 5 * MAX_NFFT reals (float:
- * 20.6 KB for the default 1024, about 5.2 KB for 256; set MAX_NFFT 64 on a
+ * about 82 KB for the default 4096, 20.6 KB for 1024, 5.2 KB for 256; set MAX_NFFT 64 on a
  * sensor that only needs the paper's 64-sample segments: 1.4 KB). Push costs O(1); every
  * hop samples one real FFT of nfft points (no allocation, no recursion).
  */
