@@ -714,7 +714,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             int ne, noe, nsw = 0, nfo = 0, nfs = 0, k, j, exp_n = 0, det_n = 0, miss = 0, spur_n = 0;
             static int used[1024];
             hx_log_t log;
-            char err[320];
+            char err[320], oerr[320];
             fnav_stance_t st;
             fnav_stance_config_t sc = cfg->stance;
             fnav_stance_out_t o;
@@ -728,7 +728,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             ne = read_events(jpath, evs, 256, foot ? "RightFootEvents" : "LeftFootEvents", tb, ub, err, sizeof err);
             /* the other foot's swings, to find annotations with both feet in the air */
             noe = ne < 0 ? 0 : read_events(jpath, oevs, 256, foot ? "LeftFootEvents" : "RightFootEvents", otb, oub,
-                                            note, sizeof note);
+                                            oerr, sizeof oerr);
             if (noe < 0) {
                 noe = 0;
             }
@@ -803,16 +803,17 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             for (j = 0; j < ne; j++) {
                 long s0 = evs[j][0], s1 = evs[j][1], bfo = -1, bfs = -1;
                 int hit = -1, q, both = 0;
+                const int outside = overlaps(s0, s1, ub[0], ub[1]) || s0 < tb[0] - 5 || s1 > tb[1] + 5;
                 for (q = 0; q < noe; q++) {
                     both = both || overlaps(oevs[q][0], oevs[q][1], s0, s1);
                 }
-                if (overlaps(s0, s1, ub[0], ub[1]) || s0 < tb[0] - 5 || s1 > tb[1] + 5 || both) {
+                if (outside || both) {
                     for (k = 0; k < nsw; k++) {
                         if (overlaps(sw[k][0], sw[k][1], s0, s1)) {
                             used[k] = 2; /* belongs to an excluded expert swing */
                         }
                     }
-                    out->both_feet += both && !(overlaps(s0, s1, ub[0], ub[1]) || s0 < tb[0] - 5 || s1 > tb[1] + 5);
+                    out->both_feet += !outside;
                     continue;
                 }
                 exp_n++;
