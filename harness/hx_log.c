@@ -78,6 +78,7 @@ struct hx_reader {
     int64_t gx2_ticks;
     long gx2_last_dt;
     double gx2_prev_host;
+    double gx2_prev_nr;
     long gx2_bridged;
 
     /* bin */
@@ -611,20 +612,25 @@ static int setup_text(hx_reader_t *r, double rate_hz)
 /* GX2: the sensor's timer counts at 19.6608 MHz but the logger restarts it
  * about once a second; inside a run the tick difference is the true period.
  * A difference that is not positive or differs from the last good one by
- * more than half bridges with the last good period (docs/log-format.md). */
+ * more than half bridges with the last good period (docs/log-format.md).
+ * The packet number Nr says how many periods the difference spans: a jump
+ * of k (k - 1 packets lost) expects k periods, and a restart across it is
+ * bridged with k of them. */
 #define GX2_TICK_HZ 19660800L
-static int64_t gx2_time(hx_reader_t *r, double counter, double host_s)
+#define GX2_MAX_LOST 1000 /* a larger jump of Nr is taken for a restart of the count, one period */
+static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr)
 {
     if (!r->have_prev) {
         r->gx2_ticks = 0;
     } else {
-        double d = counter - r->prev_counter;
-        if (d > 0.0 && d < GX2_TICK_HZ / 10 &&
-            (r->gx2_last_dt == 0 || labs((long)d - r->gx2_last_dt) < r->gx2_last_dt / 2)) {
-            r->gx2_last_dt = (long)d;
+        double d = counter - r->prev_counter, dn = nr - r->gx2_prev_nr;
+        const long k = (dn >= 1.0 && dn <= (double)GX2_MAX_LOST) ? (long)dn : 1;
+        if (d > 0.0 && d < (double)(GX2_TICK_HZ / 10) * (double)k &&
+            (r->gx2_last_dt == 0 || labs((long)d - k * r->gx2_last_dt) < r->gx2_last_dt / 2)) {
+            r->gx2_last_dt = (long)d / k;
             r->gx2_ticks += (long)d;
         } else if (r->gx2_last_dt > 0) {
-            r->gx2_ticks += r->gx2_last_dt;
+            r->gx2_ticks += k * r->gx2_last_dt;
             r->gx2_bridged++;
         } else {
             double dh = host_s - r->gx2_prev_host;
@@ -637,6 +643,7 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s)
     }
     r->prev_counter = counter;
     r->gx2_prev_host = host_s;
+    r->gx2_prev_nr = nr;
     return (r->gx2_ticks * 1000000000LL) / GX2_TICK_HZ;
 }
 
@@ -768,7 +775,7 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
             set_err(r, "%s:%ld: Nr or counter is not a 32-bit count", r->path, r->stats.lines);
             return FNAV_E_FORMAT;
         }
-        t_ns = gx2_time(r, tv, host);
+        t_ns = gx2_time(r, tv, host, aux);
         s->seq = (uint32_t)aux;
         s->flags |= FNAV_SAMPLE_HAS_SEQ;
         break;

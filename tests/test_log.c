@@ -584,6 +584,52 @@ static void test_importer_units(void **state)
     }
 }
 
+/* GX2 time across lost packets: Nr jumps by k, the sensor timer by k
+ * periods, and the interval must be k periods, also when the timer restarts
+ * across the loss (bridged with k periods, not one). A written file in the
+ * format of openshoe_gx2: Nr 1-10, 14-20 (11-13 lost, timer running), 21,
+ * 23-25 (22 lost and the timer restarted between 21 and 23). */
+static void test_gx2_lost_packets(void **state)
+{
+    const long period = 78720;
+    hx_log_t log;
+    char err[320], p[256];
+    FILE *f;
+    long nr, counter = 130516848;
+    size_t k;
+    (void)state;
+    tmp_path(p, sizeof p, "_data_inert.txt");
+    f = fopen(p, "w");
+    assert_non_null(f);
+    fprintf(f, "\r\nInertial data.\r\n\r\nHeader:      a_x [g]:      a_y [g]:      a_z [g]: ar_x [rad/s]: ar_y [rad/s]: "
+               "ar_z [rad/s]:      Counter: Checksum:     Nr:   Filtered ts[s]: Unfiltered ts[s]:      Pred. ts[s]: "
+               "Freq. [Hz]:      m_x [G]:      m_y [G]:      m_z [G]:\r\n");
+    for (nr = 1; nr <= 25; nr++) {
+        if (nr > 1) {
+            counter += period;
+        }
+        if (nr == 23) {
+            counter = 1000; /* the logger restarted the sensor timer */
+        }
+        if ((nr >= 11 && nr <= 13) || nr == 22) {
+            continue; /* lost */
+        }
+        fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %ld    0x15fd       %ld %.6f %.6f %.6f  250.000001   -0.12299968   -0.01066045   -0.46057537 \r\n",
+                counter, nr, 1274434048.5 + 0.004 * (double)nr, 1274434048.5 + 0.004 * (double)nr,
+                1274434048.504 + 0.004 * (double)nr);
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.meta.format, HX_FMT_GX2);
+    assert_int_equal(log.n, 21);
+    for (k = 1; k < log.n; k++) {
+        const int64_t want = (int64_t)(log.seq[k] - log.seq[k - 1]) * period * 1000000000LL / 19660800LL;
+        assert_true(llabs(log.t_ns[k] - log.t_ns[k - 1] - want) <= 1);
+    }
+    hx_log_free(&log);
+    remove(p);
+}
+
 /* Importer -> .bin -> CSV -> read: every value equals the importer's value
  * rounded to float32, every time stamp is exact. */
 static void test_roundtrip_all_formats(void **state)
@@ -711,6 +757,7 @@ int main(void)
         cmocka_unit_test(test_bad_rate),
         cmocka_unit_test(test_importers),
         cmocka_unit_test(test_importer_units),
+        cmocka_unit_test(test_gx2_lost_packets),
         cmocka_unit_test(test_roundtrip_all_formats),
         cmocka_unit_test(test_killed_writer),
         cmocka_unit_test(test_format_names),
