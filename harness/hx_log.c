@@ -65,6 +65,9 @@ struct hx_reader {
     char delim;                 /* ',' '\t' ';' or ' ' (any whitespace) */
     int col_t, col_a[3], col_g[3], col_temp, col_aux;
     int ncols_needed;
+    int nfields;                /* fields of the line last split */
+    double ctr_wrap;            /* ipol: 65536 per wrap of the 16-bit packet counter so far */
+    double ctr_prev;            /* ipol: the last raw counter */
     double acc_scale, gyr_scale;
     time_mode_t time_mode;
     double rate_hz;
@@ -332,9 +335,42 @@ static int blank(const char *s)
 
 /* ------------------------------------------------------------ detection */
 
+/* The first line of text in out: lower case, without spaces, tabs kept as
+ * separators, quotes and carriage returns dropped. */
+static void squeeze_line(const char *text, char *out, size_t size)
+{
+    size_t k = 0;
+    for (; *text != '\0' && *text != '\n' && k + 1 < size; text++) {
+        if (*text == ' ' || *text == '"' || *text == '\'' || *text == '\r') {
+            continue;
+        }
+        out[k++] = (char)tolower((unsigned char)*text);
+    }
+    out[k] = '\0';
+}
+
+/* Whether the squeezed header line holds the field name (separated by
+ * commas, tabs or semicolons). */
+static int has_field(const char *head, const char *name)
+{
+    const size_t n = strlen(name);
+    const char *p = head;
+    while (*p != '\0') {
+        const char *e = p;
+        while (*e != '\0' && *e != ',' && *e != '\t' && *e != ';') {
+            e++;
+        }
+        if ((size_t)(e - p) == n && strncmp(p, name, n) == 0) {
+            return 1;
+        }
+        p = *e != '\0' ? e + 1 : e;
+    }
+    return 0;
+}
+
 static hx_format_t detect(const unsigned char *b, size_t n)
 {
-    char text[600];
+    char text[600], head[600];
     size_t m;
     if (n >= 4 && memcmp(b, HX_BIN_MAGIC, 4) == 0) {
         return HX_FMT_BIN;
@@ -349,23 +385,34 @@ static hx_format_t detect(const unsigned char *b, size_t n)
     if (strstr(text, "Inertial data") != NULL || strstr(text, "a_x [g]") != NULL) {
         return HX_FMT_GX2;
     }
-    if (strncmp(text, "Time (s),Gyroscope X (deg/s)", 28) == 0) {
-        return HX_FMT_NGIMU;
-    }
-    if (strncmp(text, "t_s,ax_mps2", 11) == 0) {
-        return HX_FMT_PYSHOE;
-    }
-    if (strncmp(text, "Acquisition frequency", 21) == 0) {
-        return HX_FMT_IPOL;
-    }
-    if (strncmp(text, "gyro_x_dps,gyro_y_dps", 21) == 0) {
-        return HX_FMT_ADIS;
-    }
-    if (strncmp(text, "sample,f_x_mps2", 15) == 0) {
-        return HX_FMT_SQUARE2;
-    }
-    if (strncmp(text, "t,", 2) == 0 || strncmp(text, "t ,", 3) == 0) {
-        return HX_FMT_CSV;
+    {
+        /* The first non-blank line, lower case, without spaces and quotes:
+         * a header is known by the names it holds, in any order, with a
+         * leading index column, ", " or tabs between them */
+        char *h = text;
+        while (*h == '\n' || *h == '\r' || *h == ' ' || *h == '\t') {
+            h++;
+        }
+        memmove(text, h, strlen(h) + 1);
+        squeeze_line(text, head, sizeof head);
+        if (strncmp(head, "acquisitionfrequency", 20) == 0) {
+            return HX_FMT_IPOL;
+        }
+        if (has_field(head, "time(s)") && has_field(head, "gyroscopex(deg/s)") && has_field(head, "accelerometerx(g)")) {
+            return HX_FMT_NGIMU;
+        }
+        if (has_field(head, "t_s") && has_field(head, "ax_mps2") && has_field(head, "gx_radps")) {
+            return HX_FMT_PYSHOE;
+        }
+        if (has_field(head, "gyro_x_dps") && has_field(head, "acc_x_g")) {
+            return HX_FMT_ADIS;
+        }
+        if (has_field(head, "sample") && has_field(head, "f_x_mps2") && has_field(head, "w_x_radps")) {
+            return HX_FMT_SQUARE2;
+        }
+        if (has_field(head, "t")) {
+            return HX_FMT_CSV;
+        }
     }
     {
         /* headerless: six comma-separated numbers -> OpenShoe 820 Hz */
@@ -550,7 +597,23 @@ static int setup_text(hx_reader_t *r, double rate_hz)
             set_err(r, "%s: empty file", r->path);
             return -1;
         }
-        if (sscanf(r->line, "Acquisition frequency: %lf", &fs) != 1 || !(fs > 0.0 && fs < 1.0e6)) {
+        {
+            /* "Acquisition frequency: 100 Hz", in any case, spaces around */
+            const char *c = strchr(r->line, ':');
+            char lead[32];
+            size_t k = 0;
+            const char *q;
+            for (q = r->line; c != NULL && q < c && k + 1 < sizeof lead; q++) {
+                if (*q != ' ' && *q != '\t') {
+                    lead[k++] = (char)tolower((unsigned char)*q);
+                }
+            }
+            lead[k] = '\0';
+            if (c == NULL || strcmp(lead, "acquisitionfrequency") != 0 || sscanf(c + 1, "%lf", &fs) != 1) {
+                fs = 0.0;
+            }
+        }
+        if (!(fs > 0.0 && fs < 1.0e6)) {
             set_err(r, "%s:1: expected 'Acquisition frequency: N Hz'", r->path);
             return -1;
         }
@@ -678,6 +741,15 @@ static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
                      r->stats.lines);
             return FNAV_END;
         }
+        if (r->nfields <= r->ncols_needed) {
+            /* it parsed, but it ends in a value the reader uses, which the
+             * cut may have shortened (8.448539 read as 8): one sample is
+             * dropped rather than a wrong one read */
+            r->cut_lines++;
+            add_warn(r, "%s:%ld: last line has no newline and ends in a value the reader uses, which may be cut "
+                        "(recording cut off mid-write); ignored", r->path, r->stats.lines);
+            return FNAV_END;
+        }
         return st;
     }
     return next_text_fields(r, s);
@@ -690,6 +762,7 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     double v[6], tv = 0.0, aux = 0.0;
     int64_t t_ns = 0;
     n = split(r->line, r->delim, f, HX_MAX_COLS);
+    r->nfields = n;
     if (r->meta.format == HX_FMT_GX2) {
         if (n == 0 || strncmp(f[0], "0x", 2) != 0) {
             set_err(r, "%s:%ld: not a GX2 data line", r->path, r->stats.lines);
@@ -755,6 +828,16 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
             set_err(r, "%s:%ld: counter ('%.20s') is not a non-negative number", r->path, r->stats.lines,
                     f[r->col_t]);
             return FNAV_E_FORMAT;
+        }
+        if (r->meta.format == HX_FMT_IPOL && tv < 65536.0) {
+            /* the Xsens packet counter has 16 bits: a drop by more than half
+             * its range is a wrap, counted on (a counter already past 16 bits
+             * is taken as it is) */
+            if (r->have_prev && tv < r->ctr_prev - 32768.0) {
+                r->ctr_wrap += 65536.0;
+            }
+            r->ctr_prev = tv;
+            tv += r->ctr_wrap;
         }
         if (tv != floor(tv) || secs_to_ns(tv / r->rate_hz, &t_ns) != 0) {
             set_err(r, "%s:%ld: counter ('%.20s') is not a whole number in range", r->path, r->stats.lines,
