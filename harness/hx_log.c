@@ -599,17 +599,9 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         }
         {
             /* "Acquisition frequency: 100 Hz", in any case, spaces around */
-            const char *c = strchr(r->line, ':');
-            char lead[32];
-            size_t k = 0;
-            const char *q;
-            for (q = r->line; c != NULL && q < c && k + 1 < sizeof lead; q++) {
-                if (*q != ' ' && *q != '\t') {
-                    lead[k++] = (char)tolower((unsigned char)*q);
-                }
-            }
-            lead[k] = '\0';
-            if (c == NULL || strcmp(lead, "acquisitionfrequency") != 0 || sscanf(c + 1, "%lf", &fs) != 1) {
+            char head[64];
+            squeeze_line(r->line, head, sizeof head);
+            if (strncmp(head, "acquisitionfrequency:", 21) != 0 || sscanf(head + 21, "%lf", &fs) != 1) {
                 fs = 0.0;
             }
         }

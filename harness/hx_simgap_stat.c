@@ -708,7 +708,7 @@ static int gap_point(const sg_point_t *p)
 
 /* The normal score of a Student t statistic with df degrees of freedom:
  * Phi^-1 of its tail probability, sign kept; beyond the double range of
- * the tail (|t| past about 1e10 for df 15) the t itself, already far past
+ * the tail (|t| past about 1e21 for df 15) the t itself, already far past
  * any critical value. */
 static double t_to_normal(double t, double df)
 {
