@@ -16,7 +16,8 @@ it, and tuning it on the closure would be tuning to the log.
 
 With --accel TERMS, the gyro is left as it is and the accelerometer gets
 cross-axis terms instead: f_i += k f_j for each TERM "ij:k" (e.g. "zx:-0.03"
-adds 3 % of f_x to f_z; several joined by "+"; "none" for the baseline; a
+adds 3 % of f_x to f_z; "xx:0.01" with i = j is a scale-factor error of
++1 % on f_x; several joined by "+"; "none" for the baseline; a
 comma-separated list of settings). A rotation of either triad is the
 antisymmetric part of such a coupling; a single term like zx also has a
 symmetric (non-orthogonality) part, which no rotation covers. A TERM "bi:v"
@@ -104,7 +105,7 @@ def cross_matrix(terms):
     for ij, v in terms_of(terms, "--accel", "zx:-0.03 or by:0.1"):
         if len(ij) == 2 and ij[0] == "b" and ij[1] in "xyz":
             b["xyz".index(ij[1])] += v
-        elif len(ij) != 2 or ij[0] not in "xyz" or ij[1] not in "xyz" or ij[0] == ij[1]:
+        elif len(ij) != 2 or ij[0] not in "xyz" or ij[1] not in "xyz":
             sys.exit("bad --accel term %r (want e.g. zx:-0.03 or by:0.1)" % ("%s:%g" % (ij, v)))
         else:
             k["xyz".index(ij[0]), "xyz".index(ij[1])] += v
