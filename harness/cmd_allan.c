@@ -1187,13 +1187,13 @@ static int write_profile(const run_t *R, const char *path, const char *name)
              * whole curve (typically a bias correlation time longer than a
              * tenth of the record). Write the conservative first-order
              * Gauss-Markov bound from the curve's minimum: the AR(1) Allan
-             * deviation peaks at 0.618 sigma near tau = 1.89 T, so T =
-             * t_min / 1.89 and sigma = ADEV_min / 0.618 put the model's bump
+             * deviation peaks at 0.6174 sigma at tau = 1.893 T (docs/allan.md),
+             * so T = t_min / 1.89 and sigma = ADEV_min / 0.6174 put the model's bump
              * on the lowest measured point, an upper bound for the bias. */
             memset(&m, 0, sizeof m);
             m.white = (double)ch->id.paper.sigma_v;
             m.gm_tau_s = (double)ch->id.paper.t_bs_s / 1.89;
-            m.gm_sigma = (double)ch->id.paper.bs / 0.6183;
+            m.gm_sigma = (double)ch->id.paper.bs / 0.6174;
             fallback[k] = 1;
             nfallback++;
             hx_warn(CMD, "%s: the AR(1) bias of %s is not identifiable within the record (longest tau %.3g s, "
