@@ -250,7 +250,7 @@ int hx_cmd_info(int argc, char **argv)
         printf("axes        %s\n", log.meta.axes);
     }
     printf("samples     %zu%s\n", log.n, log.meta.has_temp ? " (with temperature)" : "");
-    printf("rate        %.3f Hz (%s)\n", in.rate_hz, log.meta.rate_nominal ? "nominal" : "from median interval");
+    printf("rate        %.3f Hz (%s)\n", in.rate_hz, log.meta.rate_nominal ? "nominal" : "from the time stamps");
     printf("duration    %.3f s\n", in.duration_s);
     printf("interval    median %.3f ms, min %.3f ms, max %.3f ms\n", 1e3 * in.dt_med_s, 1e3 * in.dt_min_s,
            1e3 * in.dt_max_s);

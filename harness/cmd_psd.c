@@ -474,7 +474,7 @@ int hx_cmd_psd(int argc, char **argv)
         exit_code = HX_EXIT_DATA;
     }
     rate = log.meta.rate_hz;
-    if (!(rate > 0.0) && log.n > 1) {
+    if (!(rate > 0.0) && log.n > 1 && log.t_ns[log.n - 1] > log.t_ns[0]) {
         rate = 1e9 * (double)(log.n - 1) / (double)(log.t_ns[log.n - 1] - log.t_ns[0]);
     }
     if (!(rate > 0.0) || log.n < (size_t)nfft) {
@@ -484,7 +484,10 @@ int hx_cmd_psd(int argc, char **argv)
                      (unsigned)nfft);
         } else {
             hx_error(CMD, "%s: %s", a.pos[0],
-                     rate > 0.0 ? "fewer samples than one segment" : "sample rate unknown; give --input-rate");
+                     rate > 0.0 ? "fewer samples than one segment"
+                                : (log.n > 1 && log.t_ns[log.n - 1] == log.t_ns[0]
+                                       ? "sample rate unknown: every time stamp is the same"
+                                       : "sample rate unknown; give --input-rate"));
         }
         hx_log_free(&log);
         return HX_EXIT_DATA;

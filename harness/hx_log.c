@@ -229,7 +229,7 @@ static int parse_time_ns(const char *s, int64_t *out)
     while (isdigit((unsigned char)*p)) {
         ip = ip * 10 + (*p - '0');
         if (ip > 9000000000LL) {
-            return -1; /* beyond 9e9 s: int64 ns would overflow */
+            return -3; /* beyond 9e9 s: int64 ns would overflow */
         }
         p++;
         digits++;
@@ -252,7 +252,7 @@ static int parse_time_ns(const char *s, int64_t *out)
             return rc;
         }
         if (v > 9.0e9 || v < -9.0e9) {
-            return -1;
+            return -3;
         }
         *out = (int64_t)(v * 1.0e9 + (v >= 0.0 ? 0.5 : -0.5));
         return 0;
@@ -263,18 +263,6 @@ static int parse_time_ns(const char *s, int64_t *out)
     }
     *out = (ip * 1000000000LL + fp) * (neg ? -1 : 1);
     return 0;
-}
-
-static int lower_eq(const char *a, const char *b)
-{
-    while (*a != '\0' && *b != '\0') {
-        if (tolower((unsigned char)*a) != tolower((unsigned char)*b)) {
-            return 0;
-        }
-        a++;
-        b++;
-    }
-    return *a == *b;
 }
 
 /* Seconds to ns with a range check (|t| < 9.2e9 s keeps int64 ns exact enough). */
@@ -316,7 +304,11 @@ static int read_line(hx_reader_t *r)
     }
     r->last_line_open = (n == 0 || r->line[n - 1] != '\n');
     if (n == sizeof r->line - 1 && r->line[n - 1] != '\n' && !gzeof(r->gz)) {
-        set_err(r, "%s:%ld: line longer than %d characters", r->path, r->stats.lines, HX_LINE_MAX - 1);
+        const char *cr = strchr(r->line, '\r');
+        set_err(r, "%s:%ld: line longer than %d characters%s", r->path, r->stats.lines, HX_LINE_MAX - 1,
+                cr != NULL && cr[1] != '\n' ? " (its lines end in a carriage return alone, the old Mac OS "
+                                              "convention: convert them, e.g. tr '\\r' '\\n')"
+                                            : "");
         return -1;
     }
     return 1;
@@ -331,6 +323,17 @@ static int blank(const char *s)
         s++;
     }
     return 1;
+}
+
+/* A comment line of the plain CSV format: '#' first (after blanks), as
+ * numpy's savetxt writes its header ("# t,ax,...") and other tools their
+ * notes. */
+static int comment(const char *s)
+{
+    while (*s == ' ' || *s == '\t') {
+        s++;
+    }
+    return *s == '#';
 }
 
 /* ------------------------------------------------------------ detection */
@@ -390,8 +393,23 @@ static hx_format_t detect(const unsigned char *b, size_t n)
          * a header is known by the names it holds, in any order, with a
          * leading index column, ", " or tabs between them */
         char *h = text;
-        while (*h == '\n' || *h == '\r' || *h == ' ' || *h == '\t') {
-            h++;
+        for (;;) {
+            while (*h == '\n' || *h == '\r' || *h == ' ' || *h == '\t') {
+                h++;
+            }
+            if (*h != '#') {
+                break;
+            }
+            /* a commented header ("# t,ax,...", numpy's savetxt) is the
+             * plain format's; other comment lines are skipped */
+            squeeze_line(h + 1, head, sizeof head);
+            if (has_field(head, "t")) {
+                return HX_FMT_CSV;
+            }
+            h = strchr(h, '\n');
+            if (h == NULL) {
+                return HX_FMT_CSV;
+            }
         }
         memmove(text, h, strlen(h) + 1);
         squeeze_line(text, head, sizeof head);
@@ -439,11 +457,33 @@ static hx_format_t detect(const unsigned char *b, size_t n)
 
 /* ------------------------------------------------------------ text setup */
 
+/* Equal but for case, spaces, quotes and carriage returns ("Time(s)" is
+ * "Time (s)"), as detection compares names (squeeze_line). */
+static int squeezed_eq(const char *a, const char *b)
+{
+    for (;;) {
+        while (*a == ' ' || *a == '"' || *a == '\'' || *a == '\r') {
+            a++;
+        }
+        while (*b == ' ' || *b == '"' || *b == '\'' || *b == '\r') {
+            b++;
+        }
+        if (*a == '\0' || *b == '\0') {
+            return *a == *b;
+        }
+        if (tolower((unsigned char)*a) != tolower((unsigned char)*b)) {
+            return 0;
+        }
+        a++;
+        b++;
+    }
+}
+
 static int find_col(char **f, int n, const char *name)
 {
     int i;
     for (i = 0; i < n; i++) {
-        if (lower_eq(f[i], name)) {
+        if (squeezed_eq(f[i], name)) {
             return i;
         }
     }
@@ -455,7 +495,7 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
     char *f[HX_MAX_COLS];
     int n, i, rc;
     static const char *const what[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
-    do {
+    for (;;) {
         rc = read_line(r);
         if (rc <= 0) {
             if (rc == 0) {
@@ -463,10 +503,29 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
             }
             return -1;
         }
-    } while (blank(r->line));
-    if (r->meta.format == HX_FMT_CSV && strchr(r->line, ',') == NULL) {
-        /* the interchange format is comma-separated; a spreadsheet's
-         * tab- or semicolon-separated export is read the same way */
+        if (blank(r->line)) {
+            continue;
+        }
+        if (r->meta.format == HX_FMT_CSV && comment(r->line)) {
+            /* "# t,ax,...": the header behind the comment sign; any other
+             * comment line before the header is skipped */
+            char head[600];
+            char *h = strchr(r->line, '#') + 1;
+            squeeze_line(h, head, sizeof head);
+            if (!has_field(head, "t")) {
+                continue;
+            }
+            while (*h == ' ' || *h == '\t') {
+                h++;
+            }
+            memmove(r->line, h, strlen(h) + 1);
+        }
+        break;
+    }
+    if (r->delim == ',' && strchr(r->line, ',') == NULL) {
+        /* the interchange format and the comma-separated foreign ones: a
+         * spreadsheet's tab- or semicolon-separated export is read the same
+         * way (detection accepts those separators too) */
         if (strchr(r->line, '\t') != NULL) {
             r->delim = '\t';
         } else if (strchr(r->line, ';') != NULL) {
@@ -715,7 +774,7 @@ static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
         if (rc == 0) {
             return FNAV_END;
         }
-        if (!blank(r->line)) {
+        if (!blank(r->line) && !(r->meta.format == HX_FMT_CSV && comment(r->line))) {
             break;
         }
     }
@@ -801,7 +860,10 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         int prc = parse_time_ns(f[r->col_t], &t_ns);
         if (prc != 0) {
             set_err(r, "%s:%ld: time ('%.20s') is %s", r->path, r->stats.lines, f[r->col_t],
-                    prc == -2 ? "NaN or Inf" : "not a number");
+                    prc == -2   ? "NaN or Inf"
+                    : prc == -3 ? "beyond 9e9 s (the time column is in seconds; Unix time in milliseconds or "
+                                  "nanoseconds must be divided by 1e3 or 1e9)"
+                                : "not a number");
             return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
         }
         s->seq = (uint32_t)r->index;
@@ -1136,6 +1198,76 @@ static int cmp_i64(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+double hx_stamp_rate_hz(const int64_t *t_ns, size_t n)
+{
+    enum { K = 16 };
+    int64_t *v, *d, *srt, q = 0;
+    size_t i, m = 0, w, used = 0;
+    double t1, thr, sum = 0.0, rate;
+    if (t_ns == NULL || n < 2u) {
+        return 0.0;
+    }
+    v = (int64_t *)malloc(3u * n * sizeof *v);
+    if (v == NULL) {
+        return 0.0;
+    }
+    d = v + n;
+    srt = d + n;
+    /* the strictly increasing stamps (duplicates and steps back dropped),
+     * their intervals, and the intervals' greatest common divisor: the
+     * stamps' resolution (1 ms for stamps printed to three decimals) */
+    for (i = 0; i < n; i++) {
+        if (m == 0u || t_ns[i] > v[m - 1u]) {
+            v[m++] = t_ns[i];
+        }
+    }
+    if (m < 2u) {
+        free(v);
+        return 0.0;
+    }
+    for (i = 0; i + 1u < m; i++) {
+        int64_t a = v[i + 1u] - v[i], b = q;
+        d[i] = a;
+        while (b != 0) { /* Euclid */
+            const int64_t r = a % b;
+            a = b;
+            b = r;
+        }
+        q = a;
+    }
+    memcpy(srt, d, (m - 1u) * sizeof *srt);
+    qsort(srt, m - 1u, sizeof srt[0], cmp_i64);
+    t1 = (double)srt[(m - 1u) / 2u];
+    if (1000.0 * (double)q <= t1) {
+        /* the stamps resolve the period: the median interval, which no
+         * jitter outlier or gap moves */
+        free(v);
+        return 1.0e9 / t1;
+    }
+    /* Coarse stamps: the median interval is one of the few values they can
+     * show. A first period from the median of spans of K intervals (a span
+     * carries the stamps' rounding once, not K times), then the mean of the
+     * intervals that are not gaps: rounding errors cancel in the sum, and a
+     * lost sample (two periods, give or take the resolution) is left out. */
+    if (m >= 3u * K + 1u) {
+        for (w = 0; (w + 1u) * K < m; w++) {
+            srt[w] = v[(w + 1u) * K] - v[w * K];
+        }
+        qsort(srt, w, sizeof srt[0], cmp_i64);
+        t1 = (double)srt[w / 2u] / (double)K;
+    }
+    thr = 1.5 * t1 + (double)q;
+    for (i = 0; i + 1u < m; i++) {
+        if ((double)d[i] <= thr) {
+            sum += (double)d[i];
+            used++;
+        }
+    }
+    rate = used > 0u ? 1.0e9 * (double)used / sum : 1.0e9 / t1;
+    free(v);
+    return rate;
+}
+
 hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, char *err, size_t err_size)
 {
     hx_reader_t *r = open_raw(path, fmt, rate_hz, err, err_size);
@@ -1143,29 +1275,25 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, c
         return NULL;
     }
     if (r->meta.rate_hz <= 0.0) {
-        /* time-stamped text without a nominal rate: estimate from the median
-         * interval of the first samples (a separate pass over the start) */
+        /* time-stamped text without a nominal rate: estimate from the
+         * stamps of the first samples (a separate pass over the start) */
         char e2[64];
         hx_reader_t *p = open_raw(path, r->meta.format, rate_hz, e2, sizeof e2);
         if (p != NULL) {
             enum { N = 4096 };
-            static int64_t dts[N];
-            int n = 0;
-            fnav_sample_t s, prev;
-            int have = 0;
+            static int64_t ts[N];
+            size_t n = 0;
+            fnav_sample_t s;
             memset(&s, 0, sizeof s);
-            memset(&prev, 0, sizeof prev);
             while (n < N && next_text(p, &s) == FNAV_OK) {
-                if (have && s.t_ns > prev.t_ns) {
-                    dts[n++] = s.t_ns - prev.t_ns;
-                }
-                prev = s;
-                have = 1;
+                ts[n++] = s.t_ns;
             }
-            if (n > 0) {
-                qsort(dts, (size_t)n, sizeof dts[0], cmp_i64);
-                r->meta.rate_hz = 1.0e9 / (double)dts[n / 2];
-                r->meta.rate_nominal = 0;
+            {
+                const double est = hx_stamp_rate_hz(ts, n);
+                if (est > 0.0) {
+                    r->meta.rate_hz = est;
+                    r->meta.rate_nominal = 0;
+                }
             }
             hx_reader_close(p);
         }

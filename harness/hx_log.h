@@ -130,6 +130,16 @@ typedef struct {
     char warnings[512];
 } hx_log_t;
 
+/** Sampling rate (Hz) of n time stamps (ns), on the strictly increasing
+ *  stamps (duplicates and steps back dropped). When the stamps resolve the
+ *  period (their resolution, the intervals' greatest common divisor, is at
+ *  most 1/1000 of the median interval): 1 / the median interval. Coarser
+ *  stamps (a 398 Hz log printed to the millisecond reads 2 and 3 ms, whose
+ *  median gives 333 or 500 Hz): a first period T1 from the median of spans
+ *  of 16 intervals / 16, then the mean of the intervals up to 1.5 T1 + the
+ *  resolution (lost samples left out). 0 when no two stamps increase. */
+double hx_stamp_rate_hz(const int64_t *t_ns, size_t n);
+
 /** Read a whole log. Returns 0 when every sample was read, 1 when an
  *  error stopped reading after some samples (log->n of them are valid and
  *  log->error says why), -1 when nothing could be read (err filled). */

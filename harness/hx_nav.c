@@ -710,6 +710,19 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
     if (t->n > 0) {
         s->duration_s = 1e-9 * (double)(t->f[t->n - 1].t_ns - t->f[0].t_ns);
     }
+    s->aligned_at_s = s->before_align_s = (double)NAN;
+    if (first < t->n) {
+        /* the detector's motion before the first aligned frame: walking
+         * that is not navigated (the alignment's result may be a renewal,
+         * so its still period does not say where the first one began) */
+        s->aligned_at_s = 1e-9 * (double)(t->f[first].t_ns - t->f[0].t_ns);
+        s->before_align_s = 0.0;
+        for (i = 0; i < first; i++) {
+            if (!(t->f[i].flags & FNAV_FRAME_STANCE)) {
+                s->before_align_s += 1e-9 * (double)(t->f[i + 1].t_ns - t->f[i].t_ns);
+            }
+        }
+    }
     if (first >= t->n) {
         /* never aligned: no position, so no return-to-start figure (null in
          * the JSON, as other figures that cannot be computed) */
@@ -799,7 +812,7 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     if (st->realigned > 0u) {
         fprintf(f, " (renewed %u time%s before the first stride)", st->realigned, st->realigned == 1u ? "" : "s");
     }
-    fprintf(f, "\n");
+    fprintf(f, "; aligned %.2f s into the log\n", s->aligned_at_s);
     fprintf(f, "distance          %.2f m step-to-step (%.2f m horizontal), %.2f m integrated\n", s->path_m,
             s->path_h_m, s->integrated_path_m);
     if (isfinite(s->end_h_pct) && isfinite(s->end_3d_pct)) {
@@ -823,6 +836,11 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                    "a still log, or motion too gentle for the foot-tuned detector (docs/navigation.md, \"Stance "
                    "detector\")\n",
                 100.0 * s->stance_fraction, s->strides, s->duration_s);
+    }
+    if (s->before_align_s > HX_NAV_LATE_ALIGN_S) {
+        fprintf(f, "note              the detector saw %.1f s of motion before the alignment (%.2f s into the log): that "
+                   "part of the walk is not navigated (the log starts while moving?)\n",
+                s->before_align_s, s->aligned_at_s);
     }
     if (t->axes.problem) {
         fprintf(f, "axes              MISMATCH: swings end at %.2f m/s as recorded, %.2f m/s with the gyro read as %s "
@@ -874,6 +892,8 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddNumberToObject(root, "strides", (double)s->strides);
     cJSON_AddNumberToObject(root, "stance_phases", (double)s->stance_phases);
     cJSON_AddItemToObject(root, "stance_fraction", num(s->stance_fraction));
+    cJSON_AddItemToObject(root, "aligned_at_s", num(s->aligned_at_s));
+    cJSON_AddItemToObject(root, "before_alignment_s", num(s->before_align_s));
     {
         cJSON *ax = cJSON_CreateObject();
         int checked = t->axes.best_map[0] != '\0';

@@ -143,7 +143,13 @@ typedef struct {
     long strides;             /**< completed swings */
     long stance_phases;       /**< stance phases (segmented) */
     double stance_fraction;   /**< share of frames with the ZUPT flag */
+    double aligned_at_s;      /**< first aligned frame after the first frame, s (NaN: never aligned) */
+    double before_align_s;    /**< frames before it the detector called motion (not navigated), s */
 } hx_nav_summary_t;
+
+/** A log that starts moving: more motion than this before the alignment is
+ *  noted in the summary (that part of the walk is not navigated). */
+#define HX_NAV_LATE_ALIGN_S 1.0
 
 /** True when a log of more than 10 s shows almost no motion: over 90 % of
  *  its frames in stance and fewer than three strides (a still log, or

@@ -33,67 +33,12 @@ sg_opts_t sg_opts_default(void)
 
 double sg_log_rate(const hx_log_t *log)
 {
-    size_t n = log->n, k, m = 0;
-    int64_t *dt;
     double r;
     if (log->meta.rate_hz > 0.0 && log->meta.rate_nominal) {
         return log->meta.rate_hz;
     }
-    if (n < 3) {
-        return log->meta.rate_hz;
-    }
-    dt = (int64_t *)malloc(n * sizeof *dt);
-    if (dt == NULL) {
-        return log->meta.rate_hz;
-    }
-    for (k = 1; k < n; k++) {
-        if (log->t_ns[k] > log->t_ns[k - 1]) {
-            dt[m++] = log->t_ns[k] - log->t_ns[k - 1];
-        }
-    }
-    if (m == 0) {
-        free(dt);
-        return log->meta.rate_hz;
-    }
-    /* median by partial selection sort would be enough; a full sort is simple */
-    {
-        size_t i, j;
-        /* insertion into a histogram-free median: quickselect */
-        size_t lo = 0, hi = m - 1, kk = m / 2;
-        while (lo < hi) {
-            int64_t piv = dt[(lo + hi) / 2], t;
-            i = lo;
-            j = hi;
-            while (i <= j) {
-                while (dt[i] < piv) {
-                    i++;
-                }
-                while (dt[j] > piv) {
-                    j--;
-                }
-                if (i <= j) {
-                    t = dt[i];
-                    dt[i] = dt[j];
-                    dt[j] = t;
-                    i++;
-                    if (j == 0) {
-                        break;
-                    }
-                    j--;
-                }
-            }
-            if (kk <= j) {
-                hi = j;
-            } else if (kk >= i) {
-                lo = i;
-            } else {
-                break;
-            }
-        }
-        r = 1e9 / (double)dt[kk];
-    }
-    free(dt);
-    return r;
+    r = hx_stamp_rate_hz(log->t_ns, log->n);
+    return r > 0.0 ? r : log->meta.rate_hz;
 }
 
 int sg_detect_domain(const hx_log_t *log, double rate_hz)

@@ -631,7 +631,7 @@ void sg_result_free(sg_result_t *r);
 /** Static or walk: stillness over the whole log (1 static, 2 walk). */
 int sg_detect_domain(const hx_log_t *log, double rate_hz);
 
-/** Nominal rate of a log (meta, else median interval). */
+/** Nominal rate of a log (meta, else hx_stamp_rate_hz of its stamps). */
 double sg_log_rate(const hx_log_t *log);
 
 /** One effect with its parameters as text ("quant (lsb ..., plain rounding)"). */

@@ -97,6 +97,13 @@ expect_err "record #1000 at byte 48192 has 10 of 48 bytes.*; before it: .*record
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n5000000000,0,0,9.8,0,0,0\n' >"$T/farfuture.csv"
 expect_exit 1 "a time beyond 2^62 ns" "$H" info "$T/farfuture.csv"
 expect_err "farfuture.csv:3: time 5e+09 s is beyond 2^62 ns" "a time whose differences would overflow is refused with its line"
+printf 't,ax,ay,az,gx,gy,gz\n1700000000000.000,0,0,9.8,0,0,0\n' >"$T/unixms.csv"
+expect_exit 1 "Unix time in milliseconds" "$H" info "$T/unixms.csv"
+expect_err "unixms.csv:2: time ('1700000000000.000') is beyond 9e9 s (the time column is in seconds" \
+    "a time in milliseconds is named as such (was: not a number)"
+awk 'BEGIN { printf "t,ax,ay,az,gx,gy,gz\r"; for (i = 0; i < 600; i++) printf "%.2f,0,0,9.8,0,0,0\r", i / 100 }' >"$T/cr.csv"
+expect_exit 1 "lines ending in CR alone" "$H" info "$T/cr.csv"
+expect_err "line longer than 4095 characters (its lines end in a carriage return alone" "CR-only line ends are named"
 printf 'not a log at all\n' >"$T/junk.bin"
 expect_exit 1 "junk input" "$H" info "$T/junk.bin"
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0.01,0,0,-9.8,0,0,0\n0.005,0,0,-9.8,0,0,0\n' >"$T/back.csv"

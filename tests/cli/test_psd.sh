@@ -34,6 +34,13 @@ expect_exit 3 "unwritable output" "$H" psd "$T/tone.csv" --out /nonexistent/dir/
 awk -F, 'NR == 102 { $5 = "1e30" } { print }' OFS=, "$T/tone.csv" >"$T/huge.csv"
 expect_exit 1 "a sample beyond float range" "$H" psd "$T/huge.csv"
 expect_err "huge.csv:102: column 5 (.1e30.) is beyond" "the out-of-range value is named with its line and column"
+{ echo t,ax,ay,az,gx,gy,gz; i=0; while [ $i -lt 300 ]; do echo 5,0.1,0.2,9.8,0.01,0.02,0.03; i=$((i + 1)); done; } > "$T/same.csv"
+expect_exit 1 "time stamps that never advance" "$H" psd "$T/same.csv"
+expect_err "sample rate unknown: every time stamp is the same" "says why there is no rate (was: nfft 64 at inf Hz)"
+# stamps printed to the millisecond at about 398 Hz (2 and 3 ms intervals): the rate from the stamps, not 333 or 500 Hz
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) printf "%.3f,%.4f,0,9.81,0,0,%.4f\n", i / 398.3, sin(i), cos(i) }' > "$T/ms.csv"
+expect_exit 0 "stamps rounded to the millisecond" "$H" psd "$T/ms.csv" --json "$T/ms.json"
+expect_out_re "398\.[0-9]+ Hz" "the rate is read from the spans of the stamps"
 
 O=$(data openshoe_c_820hz/OpenShoeDataSet.txt)
 if [ -n "$O" ]; then

@@ -382,6 +382,19 @@ if [ -n "$D" ]; then
         grep -q "1 missed (1 of them overlapped by a detected swing" "$T/ip3.md" &&
         grep -q "^| 1-1 | right | 0 | 17 | 0 | 17 | - | - |" "$T/ip3.md"; then
         pass "ipol: an overlap with events beyond the tolerance is a miss; no events print -"; else fail "ipol tolerance: $(grep '^| 1-1' "$T/ip3.md")"; fi
+    # a log that starts mid-walk (ipol trial 1-1, left foot, from 9.7 s): the
+    # alignment waits for a still period, and the summary says how much
+    # walking came before it (not navigated)
+    "$H" convert "$D/ipol_gait_xsens/1-1_lf.txt" "$T/ip_full.csv" 2>/dev/null
+    awk -F, 'NR == 1 || $1 >= 9.7' "$T/ip_full.csv" > "$T/ip_mid.csv"
+    expect_exit 0 "a log that starts mid-walk" "$H" replay "$T/ip_mid.csv" --json "$T/ip_mid.json"
+    expect_out "the detector saw [0-9.]* s of motion before the alignment" "the summary notes the walking before the alignment"
+    if /usr/bin/env python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if j['before_alignment_s'] > 1 and j['aligned_at_s'] >= j['before_alignment_s'] else 1)" "$T/ip_mid.json"; then
+        pass "before_alignment_s in the JSON"; else fail "before_alignment_s: $(grep -o '"before_alignment_s":[^,]*' "$T/ip_mid.json")"; fi
+    expect_exit 0 "the whole trial" "$H" replay "$T/ip_full.csv" --json "$T/ip_full.json"
+    if /usr/bin/env python3 -c "import json,sys; sys.exit(0 if json.load(open(sys.argv[1]))['before_alignment_s'] == 0 else 1)" "$T/ip_full.json"; then
+        pass "no motion before the alignment of a log that starts still"; else
+        fail "whole trial: $(grep -o '"before_alignment_s":[^,]*' "$T/ip_full.json")"; fi
 else
     echo "skip shared-data checks (no ../shared/data; set FNAV_DATA_DIR)"
 fi
