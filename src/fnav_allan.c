@@ -159,12 +159,16 @@ static void recentre(fnav_allan_t *a, uint32_t n)
     const uint32_t last = FNAV_ALLAN_RING0 - 1u;
     const fnav_real_t mean = (a->ring0[last] - a->ring0[0]) / (fnav_real_t)last;
     fnav_real_t ss = FNAV_R(0.0), y0, delta;
-    uint32_t i;
-    for (i = 1; i <= last; i++) {
+    uint32_t i, k = 0;
+    /* the spread from every 8th sample of the ring (or every one of a ring
+     * under 64): enough to compare an offset with, at an eighth of the cost */
+    const uint32_t st = FNAV_ALLAN_RING0 >= 64u ? 8u : 1u;
+    for (i = st; i <= last; i += st) {
         const fnav_real_t e = (a->ring0[i] - a->ring0[i - 1u]) - mean;
         ss += e * e;
+        k++;
     }
-    if (!(mean * mean * (fnav_real_t)last > ss)) {
+    if (!(mean * mean * (fnav_real_t)k > ss)) {
         return;
     }
     y0 = a->y0 + mean;
