@@ -1256,7 +1256,14 @@ double hx_stamp_rate_hz(const int64_t *t_ns, size_t n)
         qsort(srt, w, sizeof srt[0], cmp_i64);
         t1 = (double)srt[w / 2u] / (double)K;
     }
-    thr = 1.5 * t1 + (double)q;
+    /* a period that is a whole number of resolutions (stamps from a sample
+     * counter, k / rate, or exact ones rounded at a multiple of the period)
+     * has exact intervals: a gap is anything over 1.5 periods. Otherwise an
+     * interval of one period reads up to a resolution longer. */
+    thr = 1.5 * t1;
+    if (fabs(t1 / (double)q - floor(t1 / (double)q + 0.5)) > 0.05) {
+        thr += (double)q;
+    }
     for (i = 0; i + 1u < m; i++) {
         if ((double)d[i] <= thr) {
             sum += (double)d[i];

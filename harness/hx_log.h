@@ -136,8 +136,10 @@ typedef struct {
  *  most 1/1000 of the median interval): 1 / the median interval. Coarser
  *  stamps (a 398 Hz log printed to the millisecond reads 2 and 3 ms, whose
  *  median gives 333 or 500 Hz): a first period T1 from the median of spans
- *  of 16 intervals / 16, then the mean of the intervals up to 1.5 T1 + the
- *  resolution (lost samples left out). 0 when no two stamps increase. */
+ *  of 16 intervals / 16, then the mean of the intervals up to 1.5 T1 (+ the
+ *  resolution unless T1 is a whole number of resolutions, as with stamps
+ *  from a sample counter): lost samples left out. 0 when no two stamps
+ *  increase. */
 double hx_stamp_rate_hz(const int64_t *t_ns, size_t n);
 
 /** Read a whole log. Returns 0 when every sample was read, 1 when an

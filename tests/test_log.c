@@ -758,6 +758,19 @@ static void test_stamp_rate(void **state)
         stamps(t, N, rates[j], 0.01, 1);
         FNAV_ASSERT_CLOSE(hx_stamp_rate_hz(t, N), rates[j], 0.0, 1e-2);
     }
+    {
+        /* stamps from a sample counter (k / 100 Hz) with 1 % lost samples:
+         * exactly 100 Hz (the lost ones are gaps, not rounding) */
+        uint64_t r = 3u;
+        int64_t c = 0;
+        size_t k;
+        for (k = 0; k < N; k++) {
+            r = 6364136223846793005u * r + 1442695040888963407u;
+            c += ((r >> 40) < 167772u) ? 2 : 1;
+            t[k] = c * 10000000;
+        }
+        assert_true(hx_stamp_rate_hz(t, N) == 100.0);
+    }
     assert_true(hx_stamp_rate_hz(same, 3) == 0.0);
     assert_true(hx_stamp_rate_hz(same, 1) == 0.0);
 }
