@@ -1198,12 +1198,15 @@ static int cmp_i64(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-double hx_stamp_rate_hz(const int64_t *t_ns, size_t n)
+double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)
 {
     enum { K = 16 };
     int64_t *v, *d, *srt, q = 0;
     size_t i, m = 0, w, used = 0;
     double t1, thr, sum = 0.0, rate;
+    if (coarse != NULL) {
+        *coarse = 0;
+    }
     if (t_ns == NULL || n < 2u) {
         return 0.0;
     }
@@ -1243,6 +1246,9 @@ double hx_stamp_rate_hz(const int64_t *t_ns, size_t n)
          * jitter outlier or gap moves */
         free(v);
         return 1.0e9 / t1;
+    }
+    if (coarse != NULL) {
+        *coarse = 1;
     }
     /* Coarse stamps: the median interval is one of the few values they can
      * show. A first period from the median of spans of K intervals (a span
@@ -1296,10 +1302,12 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, c
                 ts[n++] = s.t_ns;
             }
             {
-                const double est = hx_stamp_rate_hz(ts, n);
+                int coarse;
+                const double est = hx_stamp_rate_hz(ts, n, &coarse);
                 if (est > 0.0) {
                     r->meta.rate_hz = est;
                     r->meta.rate_nominal = 0;
+                    r->meta.rate_coarse = coarse;
                 }
             }
             hx_reader_close(p);

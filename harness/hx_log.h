@@ -39,6 +39,7 @@ typedef struct {
     hx_format_t format;     /**< format actually read */
     double rate_hz;         /**< nominal sample rate, Hz (0 if unknown) */
     int rate_nominal;       /**< 1: rate from the source; 0: estimated from time stamps */
+    int rate_coarse;        /**< estimated from stamps too coarse for their median interval (hx_stamp_rate_hz) */
     int has_temp;           /**< samples carry temperature */
     int has_seq;            /**< samples carry a sensor record counter */
     char sensor[32];        /**< sensor name, e.g. "x-io NGIMU" */
@@ -139,8 +140,8 @@ typedef struct {
  *  of 16 intervals / 16, then the mean of the intervals up to 1.5 T1 (+ the
  *  resolution unless T1 is a whole number of resolutions, as with stamps
  *  from a sample counter): lost samples left out. 0 when no two stamps
- *  increase. */
-double hx_stamp_rate_hz(const int64_t *t_ns, size_t n);
+ *  increase. *coarse (may be NULL) is set to 1 when the stamps were coarse. */
+double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse);
 
 /** Read a whole log. Returns 0 when every sample was read, 1 when an
  *  error stopped reading after some samples (log->n of them are valid and

@@ -569,10 +569,6 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     if (traj != NULL) {
         memset(traj, 0, sizeof *traj);
     }
-    if (fnav_nav_init(&nav, cfg) != FNAV_OK) {
-        snprintf(err, err_size, "navigation configuration rejected (check --param values)");
-        return -1;
-    }
     if (rate_hz > 0.0) {
         long dups = 0;
         double fs = 0.0;
@@ -598,6 +594,23 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     } else {
         r = hx_reader_open(path, fmt, in_rate, err, err_size);
         if (r == NULL) {
+            return -1;
+        }
+    }
+    {
+        /* Stamps too coarse for a median interval (a 398 Hz log printed to
+         * the millisecond reads 2 and 3 ms): the detector's own estimate
+         * from its first intervals would be 20 % off, so it gets the
+         * reader's, from the spans of the first 4096 stamps. Other logs keep
+         * the detector's estimate, as firmware would. */
+        fnav_nav_config_t c = *cfg;
+        if (r != NULL && !(c.stance.rate_hz > FNAV_R(0.0)) && hx_reader_meta(r)->rate_coarse) {
+            c.stance.rate_hz = (fnav_real_t)hx_reader_meta(r)->rate_hz;
+        }
+        if (fnav_nav_init(&nav, &c) != FNAV_OK) {
+            snprintf(err, err_size, "navigation configuration rejected (check --param values)");
+            hx_reader_close(r);
+            hx_log_free(&res);
             return -1;
         }
     }

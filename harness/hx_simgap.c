@@ -37,7 +37,7 @@ double sg_log_rate(const hx_log_t *log)
     if (log->meta.rate_hz > 0.0 && log->meta.rate_nominal) {
         return log->meta.rate_hz;
     }
-    r = hx_stamp_rate_hz(log->t_ns, log->n);
+    r = hx_stamp_rate_hz(log->t_ns, log->n, NULL);
     return r > 0.0 ? r : log->meta.rate_hz;
 }
 

@@ -15,6 +15,13 @@ expect_exit 0 "replay --help" "$H" replay --help
 expect_exit 2 "replay without LOG" "$H" replay
 expect_exit 2 "bad --bias-model" "$H" replay vectors/walk.bin --bias-model maybe
 expect_err "must be ar1 or off" "--bias-model error names the choices"
+# the bundled walk (398 Hz) with its stamps printed to the millisecond: the
+# detector gets the rate from the stamps' spans, not 333 Hz from the median of
+# intervals that read 2 and 3 ms
+"$H" convert vectors/walk.bin "$T/walk_full.csv" 2>/dev/null
+awk -F, 'NR == 1 { print; next } { $1 = sprintf("%.3f", $1); print }' OFS=, "$T/walk_full.csv" > "$T/walk_ms.csv"
+expect_exit 0 "a walk stamped to the millisecond" "$H" replay "$T/walk_ms.csv"
+expect_out_re "^rate +398\.[0-9] Hz" "the detector's rate from coarse stamps"
 expect_exit 2 "bad --detector" "$H" replay vectors/walk.bin --detector psychic
 expect_exit 2 "unknown --param" "$H" replay vectors/walk.bin --param nope=1
 expect_err "unknown key 'nope'" "--param error names the key"
