@@ -666,7 +666,8 @@ int hx_motion_scenario(const char *name, const hx_motion_config_t *cfg, double d
         snprintf(script, size, "stand:%g,walk:5,elevator:8,walk:5,turn:180,walk:5,elevator:-8,walk:5,stand:%g",
                  still, still);
     } else if (strcmp(name, "loop") == 0) {
-        /* a square walked counter-clockwise, back to the start */
+        /* a square walked clockwise seen from above (right turns: positive
+         * yaw, NED), back to the start */
         double T = (D > 0.0 ? D : 90.0) - 2.0 * still - 12.0;
         double side = (T > 8.0 ? T : 8.0) * walk_v / 4.0;
         snprintf(script, size, "stand:%g,walk:%.3f,turn:90,walk:%.3f,turn:90,walk:%.3f,turn:90,home,stand:%g", still,

@@ -384,6 +384,12 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
             nav->stats.time_jumps++;
             nav->health |= FNAV_HEALTH_TIME_JUMP;
             dt = nominal; /* the motion inside the jump is unknown */
+            if (!nav->aligned || nav->renewing) {
+                /* and so is the stillness: a still period being collected
+                 * for the alignment starts again after the jump (as a
+                 * renewal's does), or it would count the jump as still time */
+                fnav_align_renew_start(&nav->align);
+            }
         } else if (dt > FNAV_R(1.5) * nominal) {
             nav->stats.gaps++;
             nav->health |= FNAV_HEALTH_GAP;

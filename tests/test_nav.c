@@ -478,6 +478,46 @@ static void test_realign(void **state)
     }
 }
 
+/* A time jump inside a still period ends it: the motion, and so the
+ * stillness, inside the jump is unknown. 0.3 s still, a 6 s jump, then 6 s
+ * still at 200 Hz: the alignment is the 5 s (max_still_s) after the jump,
+ * not 6.3 s "still" completed at the first sample after it from 61 samples
+ * (as before 2026-11-27, found by a review). */
+static void test_align_time_jump(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    double first_aligned_s = -1.0;
+    long k;
+    (void)state;
+    c.stance.rate_hz = FNAV_R(200.0);
+    c.realign_min_s = FNAV_R(0.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    for (k = 0; k < 60 + 1200; k++) {
+        fnav_sample_t s = still(k);
+        if (k >= 60) {
+            s.t_ns += (int64_t)6000000000; /* the jump, between samples 59 and 60 */
+        }
+        assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+        while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+            if ((fr.flags & FNAV_FRAME_ALIGNED) != 0u && first_aligned_s < 0.0) {
+                first_aligned_s = 1e-9 * (double)fr.t_ns;
+            }
+        }
+    }
+    fnav_nav_finish(&nav);
+    while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+        if ((fr.flags & FNAV_FRAME_ALIGNED) != 0u && first_aligned_s < 0.0) {
+            first_aligned_s = 1e-9 * (double)fr.t_ns;
+        }
+    }
+    assert_true(nav.aligned);
+    assert_int_equal(nav.stats.time_jumps, 1u);
+    assert_true((double)nav.align.result.duration_s > 4.9 && (double)nav.align.result.duration_s <= 5.0 + 1e-6);
+    assert_true(first_aligned_s > 6.3 + 4.9);
+}
+
 /* A renewal on a still frame: a foot that stands 11 s. The alignment
  * completes at 5 s (max_still_s) and the renewal's still period, starting
  * at the next sample, reaches max_still_s about 5 s later while the foot
@@ -789,6 +829,7 @@ int main(void)
         cmocka_unit_test(test_settle_onsets),
         cmocka_unit_test(test_settle_not_at_alignment),
         cmocka_unit_test(test_realign),
+        cmocka_unit_test(test_align_time_jump),
         cmocka_unit_test(test_realign_still_frame),
         cmocka_unit_test(test_sizes),
         cmocka_unit_test(test_stance_mids),

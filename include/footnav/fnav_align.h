@@ -135,8 +135,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_samp
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_finish(fnav_align_t *al);
 
-/** Start measuring again after the alignment (the renewal, below); the
- *  alignment result is kept. */
+/** Start measuring again: after the alignment (the renewal, below), or
+ *  when a time jump interrupts a still period before it (fnav_nav). The
+ *  alignment result, if any, is kept. */
 void fnav_align_renew_start(fnav_align_t *al);
 
 /**

@@ -25,8 +25,10 @@
  * until FNAV_END.
  *
  * The window and the durations are set in seconds and converted with the
- * sample rate (configured, or estimated from the first 32 intervals), so the
- * detector behaves the same at 100 Hz and at 820 Hz.
+ * sample rate (configured, or the median of the first FNAV_STANCE_RATE_PROBE
+ * intervals, fewer when FNAV_STANCE_MAX_WINDOW is smaller; stamps too coarse
+ * for a median interval need the rate configured), so the detector behaves
+ * the same at 100 Hz and at 820 Hz.
  *
  * Adaptive threshold (docs/navigation.md): running or jogging keeps the foot
  * from coming fully to rest, and the statistic's minimum in each stance rises
@@ -36,7 +38,8 @@
  * FNAV_STANCE_FLOOR_BLOCKS blocks) and uses gamma' = clamp(10^(F + margin),
  * gamma, adapt_max_ratio * gamma) for the next sample: for walking the floor
  * sits decades below the configured gamma and nothing changes; when the
- * stance minima rise, the threshold follows them one window later.
+ * stance minima rise, the threshold follows them one window later (so the
+ * first running stances after a transition are missed: docs/navigation.md).
  *
  * Not ISR-safe by itself (one object per caller); no allocation.
  */
@@ -99,7 +102,7 @@ extern const fnav_stance_config_t fnav_stance_config_default;
 /** fnav_stance_out_t.events: foot-strike time fs_t_ns was determined. */
 #define FNAV_STANCE_EV_FOOT_STRIKE 0x4u
 
-/** One decision, for the sample it carries (h samples behind the input). */
+/** One decision, for the sample it carries (h + L samples behind the input). */
 typedef struct {
     fnav_sample_t sample; /**< the sample this decision is for */
     fnav_real_t stat;     /**< test statistic T (SHOE) or normalised RMS (THRESHOLD) */
