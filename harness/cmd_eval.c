@@ -350,6 +350,7 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
 typedef struct {
     double stride_err_med, final_err, path, final_pct, rms;
     int strides;
+    int skipped; /* strides whose sample lies outside the trajectory */
 } stride_res_t;
 
 /* Per-stride horizontal error in the truth's frame, which is the initial
@@ -370,11 +371,13 @@ static int stride_errors(const hx_traj_t *t, const gcp_t *g, stride_res_t *r)
     x0 = (double)t->f[i0].pos_m[0];
     y0 = (double)t->f[i0].pos_m[1];
     r->path = 0.0;
+    r->skipped = 0;
     for (i = 1; i < g->n; i++) {
         long k = g->idx[i];
         double dx, dy;
         path += hypot(g->x[i] - g->x[i - 1], g->y[i] - g->y[i - 1]);
         if (k < 0 || (size_t)k >= t->n) {
+            r->skipped++;
             continue;
         }
         dx = ((double)t->f[k].pos_m[0] - x0) - (g->x[i] - g->x[0]);
@@ -439,6 +442,12 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
             in = t.in_rate_hz;
             for (l = 0; l < (size_t)g.n; l++) {
                 g.idx[l] = (long)llround((double)g.idx[l] * rate_hz / in);
+                if (g.idx[l] == (long)t.n && t.n > 0) {
+                    /* the walk's last sample (where every truth file puts
+                     * its last stride) rounds one past the last resampled
+                     * frame: it is that frame, not a stride to drop */
+                    g.idx[l] = (long)t.n - 1;
+                }
             }
         } else if (replay(ev, path, cfg, 0.0, write, &t, &s, note, sizeof note) != 0) {
             not_run_row(ev, write, nm, 6, note);
@@ -448,6 +457,10 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
             no_strides(ev, path, note, sizeof note);
             not_run_row(ev, write, nm, 6, note);
         } else {
+            if (r.skipped > 0 && note[0] == '\0') {
+                snprintf(note, sizeof note, "%d stride%s outside the log not scored", r.skipped,
+                         r.skipped == 1 ? "" : "s");
+            }
             if (write) {
                 fprintf(ev->md, "| %s | %d | %.1f | %.3f | %.3f | %.3f | %.2f | %s |\n", nm, r.strides, r.path,
                         r.stride_err_med, r.rms, r.final_err, r.final_pct, note);
@@ -587,6 +600,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
 typedef struct {
     int expected, detected, missed, spurious, trials, files; /* files: events files found */
     int both_feet; /* expert swings left out: the other foot's expert swing overlaps them */
+    int strict_missed, strict_spurious; /* with those swings kept */
     int off_time;  /* missed although a detected swing overlaps: its events IPOL_TOL or more away */
     double fo_med, fs_med, fo_p90, fs_p90, fo_bias, fs_bias;
     int n_fo, n_fs;
@@ -692,6 +706,86 @@ static const char *fmt_1f(char *buf, size_t size, double v)
     return buf;
 }
 
+/* Counts of one trial and foot's matching. */
+typedef struct {
+    int exp_n, det_n, miss, spur, both, off_time;
+} ipol_match_t;
+
+/* Everything in packets since the file's first (the experts' unit; the
+ * log's rows skip dropped packets). Evaluated: the expert swings evs inside
+ * the trial tb and clear of the U-turn ub (the experts annotate the turn
+ * only partly), and, unless keep_both, not overlapping an expert swing of
+ * the other foot oevs (both feet in the air: no walking stride has that, so
+ * the annotation is not reliable there). An evaluated expert swing is
+ * detected when a detected swing sw overlaps it and the nearest reported
+ * foot-off fo and foot-strike fs both lie within IPOL_TOL samples of its
+ * ends; otherwise it is missed. A detected swing that detects none counts
+ * as spurious when its middle is inside the trial, outside the U-turn, and
+ * it overlaps no excluded expert swing. found[j] gets expert swing j's
+ * reported foot-off and foot-strike when it was detected, else -1. */
+static void ipol_match(const long (*evs)[2], int ne, const long (*oevs)[2], int noe, const long (*sw)[2], int nsw,
+                       const long *fo, int nfo, const long *fs, int nfs, const long tb[2], const long ub[2],
+                       int keep_both, int *used, long (*found)[2], ipol_match_t *m)
+{
+    int j, k, q;
+    memset(m, 0, sizeof *m);
+    for (k = 0; k < nsw; k++) {
+        used[k] = 0;
+    }
+    for (j = 0; j < ne; j++) {
+        long s0 = evs[j][0], s1 = evs[j][1], bfo = -1, bfs = -1;
+        int hit = -1, both = 0;
+        const int outside = overlaps(s0, s1, ub[0], ub[1]) || s0 < tb[0] - 5 || s1 > tb[1] + 5;
+        found[j][0] = found[j][1] = -1;
+        for (q = 0; q < noe && !keep_both; q++) {
+            both = both || overlaps(oevs[q][0], oevs[q][1], s0, s1);
+        }
+        if (outside || both) {
+            for (k = 0; k < nsw; k++) {
+                if (overlaps(sw[k][0], sw[k][1], s0, s1)) {
+                    used[k] = 2; /* belongs to an excluded expert swing */
+                }
+            }
+            m->both += !outside;
+            continue;
+        }
+        m->exp_n++;
+        for (k = 0; k < nsw; k++) {
+            if (used[k] != 1 && overlaps(sw[k][0], sw[k][1], s0, s1)) {
+                hit = k;
+                break;
+            }
+        }
+        /* nearest reported events to the expert's foot-off / strike */
+        for (q = 0; q < nfo; q++) {
+            if (bfo < 0 || labs(fo[q] - s0) < labs(bfo - s0)) {
+                bfo = fo[q];
+            }
+        }
+        for (q = 0; q < nfs; q++) {
+            if (bfs < 0 || labs(fs[q] - s1) < labs(bfs - s1)) {
+                bfs = fs[q];
+            }
+        }
+        if (hit < 0 || bfo < 0 || bfs < 0 || labs(bfo - s0) >= IPOL_TOL || labs(bfs - s1) >= IPOL_TOL) {
+            m->off_time += hit >= 0;
+            m->miss++;
+            continue;
+        }
+        used[hit] = 1;
+        m->det_n++;
+        found[j][0] = bfo;
+        found[j][1] = bfs;
+    }
+    for (k = 0; k < nsw; k++) {
+        long mid = (sw[k][0] + sw[k][1]) / 2;
+        if (used[k] == 0 && !(mid >= ub[0] && mid < ub[1]) && mid > tb[0] - 5 && mid < tb[1] + 5) {
+            m->det_n++;
+            m->spur++;
+        }
+    }
+}
+
 static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
 {
     char dir[600], names[MAXF][160], path[800], jpath[800], note[200], nm[200];
@@ -711,7 +805,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             static long evs[256][2], oevs[256][2], sw[1024][2];
             static long fo[1024], fs[1024];
             long tb[2], ub[2], otb[2], oub[2];
-            int ne, noe, nsw = 0, nfo = 0, nfs = 0, k, j, exp_n = 0, det_n = 0, miss = 0, spur_n = 0;
+            int ne, noe, nsw = 0, nfo = 0, nfs = 0, j, exp_n = 0, det_n = 0, miss = 0, spur_n = 0;
             static int used[1024];
             hx_log_t log;
             char err[320], oerr[320];
@@ -785,78 +879,36 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                 }
                 (void)ps;
             }
-            /* Everything in packets since the file's first (the experts'
-             * unit; the log's rows skip dropped packets). Evaluated: the
-             * expert swings inside the trial and clear of the U-turn (the
-             * experts annotate the turn only partly), and not overlapping
-             * an expert swing of the other foot (both feet in the air: no
-             * walking stride has that, so the annotation is not reliable
-             * there). An evaluated expert swing is detected when a detected
-             * swing overlaps it and the nearest reported foot-off and
-             * foot-strike both lie within IPOL_TOL samples of its ends;
-             * otherwise it is missed. A detected swing that detects none
-             * counts as spurious when its middle is inside the trial,
-             * outside the U-turn, and it overlaps no excluded expert swing. */
-            for (k = 0; k < nsw; k++) {
-                used[k] = 0;
-            }
-            for (j = 0; j < ne; j++) {
-                long s0 = evs[j][0], s1 = evs[j][1], bfo = -1, bfs = -1;
-                int hit = -1, q, both = 0;
-                const int outside = overlaps(s0, s1, ub[0], ub[1]) || s0 < tb[0] - 5 || s1 > tb[1] + 5;
-                for (q = 0; q < noe; q++) {
-                    both = both || overlaps(oevs[q][0], oevs[q][1], s0, s1);
-                }
-                if (outside || both) {
-                    for (k = 0; k < nsw; k++) {
-                        if (overlaps(sw[k][0], sw[k][1], s0, s1)) {
-                            used[k] = 2; /* belongs to an excluded expert swing */
-                        }
+            {
+                static long found[256][2];
+                ipol_match_t m, ms;
+                ipol_match((const long (*)[2])evs, ne, (const long (*)[2])oevs, noe, (const long (*)[2])sw, nsw, fo,
+                           nfo, fs, nfs, tb, ub, 1, used, found, &ms);
+                out->strict_missed += ms.miss;
+                out->strict_spurious += ms.spur;
+                ipol_match((const long (*)[2])evs, ne, (const long (*)[2])oevs, noe, (const long (*)[2])sw, nsw, fo,
+                           nfo, fs, nfs, tb, ub, 0, used, found, &m);
+                exp_n = m.exp_n;
+                det_n = m.det_n;
+                miss = m.miss;
+                spur_n = m.spur;
+                out->both_feet += m.both;
+                out->off_time += m.off_time;
+                for (j = 0; j < ne; j++) {
+                    const long bfo = found[j][0], bfs = found[j][1];
+                    if (bfo < 0) {
+                        continue;
                     }
-                    out->both_feet += !outside;
-                    continue;
-                }
-                exp_n++;
-                for (k = 0; k < nsw; k++) {
-                    if (used[k] != 1 && overlaps(sw[k][0], sw[k][1], s0, s1)) {
-                        hit = k;
-                        break;
+                    if (out->n_fo < 4096 && trial_fo < 256) {
+                        fo_e[out->n_fo] = (double)(bfo - evs[j][0]);
+                        fo_a[out->n_fo++] = fabs((double)(bfo - evs[j][0]));
+                        tfo[trial_fo++] = fabs((double)(bfo - evs[j][0]));
                     }
-                }
-                /* nearest reported events to the expert's foot-off / strike */
-                for (q = 0; q < nfo; q++) {
-                    if (bfo < 0 || labs(fo[q] - s0) < labs(bfo - s0)) {
-                        bfo = fo[q];
+                    if (out->n_fs < 4096 && trial_fs < 256) {
+                        fs_e[out->n_fs] = (double)(bfs - evs[j][1]);
+                        fs_a[out->n_fs++] = fabs((double)(bfs - evs[j][1]));
+                        tfs[trial_fs++] = fabs((double)(bfs - evs[j][1]));
                     }
-                }
-                for (q = 0; q < nfs; q++) {
-                    if (bfs < 0 || labs(fs[q] - s1) < labs(bfs - s1)) {
-                        bfs = fs[q];
-                    }
-                }
-                if (hit < 0 || bfo < 0 || bfs < 0 || labs(bfo - s0) >= IPOL_TOL || labs(bfs - s1) >= IPOL_TOL) {
-                    out->off_time += hit >= 0;
-                    miss++;
-                    continue;
-                }
-                used[hit] = 1;
-                det_n++;
-                if (out->n_fo < 4096 && trial_fo < 256) {
-                    fo_e[out->n_fo] = (double)(bfo - s0);
-                    fo_a[out->n_fo++] = fabs((double)(bfo - s0));
-                    tfo[trial_fo++] = fabs((double)(bfo - s0));
-                }
-                if (out->n_fs < 4096 && trial_fs < 256) {
-                    fs_e[out->n_fs] = (double)(bfs - s1);
-                    fs_a[out->n_fs++] = fabs((double)(bfs - s1));
-                    tfs[trial_fs++] = fabs((double)(bfs - s1));
-                }
-            }
-            for (k = 0; k < nsw; k++) {
-                long mid = (sw[k][0] + sw[k][1]) / 2;
-                if (used[k] == 0 && !(mid >= ub[0] && mid < ub[1]) && mid > tb[0] - 5 && mid < tb[1] + 5) {
-                    det_n++;
-                    spur_n++;
                 }
             }
             if (write) {
@@ -1185,11 +1237,12 @@ int hx_cmd_eval(int argc, char **argv)
     } else {
         fprintf(ev.md, "\n%d trials and feet: %d expert strides, %d detected, %d missed (%d of them overlapped by a "
                        "detected swing whose events are %d samples or more away), %d spurious (target: none "
-                       "missed or spurious: %s); %d expert swings left out for overlapping the other foot's. Event "
+                       "missed or spurious: %s); %d expert swings left out for overlapping the other foot's "
+                       "(with them kept: %d missed, %d spurious). Event "
                        "timing: median |FO error| %.1f samples (bias %+.1f, 90th percentile "
                        "%.1f), median |FS error| %.1f samples (bias %+.1f, 90th percentile %.1f) (target <= 2: %s).\n\n",
                 ip.trials, ip.expected, ip.detected, ip.missed, ip.off_time, IPOL_TOL, ip.spurious,
-                met(ip.missed == 0 && ip.spurious == 0), ip.both_feet,
+                met(ip.missed == 0 && ip.spurious == 0), ip.both_feet, ip.strict_missed, ip.strict_spurious,
                 ip.fo_med, ip.fo_bias, ip.fo_p90, ip.fs_med, ip.fs_bias, ip.fs_p90,
                 met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
     }
@@ -1342,7 +1395,8 @@ int hx_cmd_eval(int argc, char **argv)
         fprintf(ev.md, "| xio long 3-D < 421 mm | %s | %s |\n", fmt_mm(v, sizeof v, xl),
                 target(isfinite(xl), xl < 0.421));
         if (ip.trials > 0) {
-            snprintf(v, sizeof v, "%d missed, %d spurious", ip.missed, ip.spurious);
+            snprintf(v, sizeof v, "%d missed, %d spurious (%d and %d with the %d both-feet swings kept)", ip.missed,
+                     ip.spurious, ip.strict_missed, ip.strict_spurious, ip.both_feet);
         } else {
             snprintf(v, sizeof v, "-");
         }
@@ -1381,6 +1435,8 @@ int hx_cmd_eval(int argc, char **argv)
         /* the counts are 0 on no trials: null, as every absent figure */
         jnum(j, "ipol_missed", ip.trials > 0 ? (double)ip.missed : (double)NAN);
         jnum(j, "ipol_spurious", ip.trials > 0 ? (double)ip.spurious : (double)NAN);
+        jnum(j, "ipol_missed_strict", ip.trials > 0 ? (double)ip.strict_missed : (double)NAN);
+        jnum(j, "ipol_spurious_strict", ip.trials > 0 ? (double)ip.strict_spurious : (double)NAN);
         jnum(j, "ipol_fo_err_median", ip.trials > 0 ? ip.fo_med : (double)NAN);
         jnum(j, "ipol_fs_err_median", ip.trials > 0 ? ip.fs_med : (double)NAN);
         jnum(j, "failed_runs", (double)ev.failures);

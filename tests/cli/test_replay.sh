@@ -300,6 +300,12 @@ if [ -n "$D" ]; then
         if grep -q "$s" "$T/results.md"; then pass "results.md has $s"; else fail "results.md lacks $s"; fi
     done
     if head -5 "$T/results.md" | grep -q "harness eval"; then pass "results.md names its command"; else fail "results.md command"; fi
+    # ipol: the target is met with the expert swings that overlap the other
+    # foot's left out; with them kept the same run scores 2 missed, 2 spurious
+    # (both in the JSON and in the Targets row)
+    if /usr/bin/env python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if (j['ipol_missed'], j['ipol_spurious'], j['ipol_missed_strict'], j['ipol_spurious_strict']) == (0, 0, 2, 2) else 1)" "$T/e.json" &&
+        grep -q "^| ipol: no missed or spurious strides | 0 missed, 0 spurious (2 and 2 with the 4 both-feet swings kept) |" "$T/results.md"; then
+        pass "ipol: the strict count beside the judged one"; else fail "ipol strict: $(grep '^| ipol: no missed' "$T/results.md")"; fi
     # the first footprint is the reference (error 0 by construction): the
     # statistics count the strides after it
     n=$(($(wc -l < "$D/pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_31_strides_gcp.csv") - 2))
