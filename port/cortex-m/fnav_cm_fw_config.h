@@ -26,7 +26,10 @@
 #define FNAV_WELCH_MAX_NFFT 64
 
 /* Stance detector: windows up to 24 samples, the default 25 ms window up
- * to 960 Hz (the paper's lowest usable rates are 200-350 Hz). */
+ * to 960 Hz (the paper's lowest usable rates are 200-350 Hz). The ring also
+ * holds the look-ahead of min_zupt_s (half window + min_zupt_s * rate + 1
+ * samples must fit): above about 730 Hz the detector shortens min_zupt_s to
+ * what fits (fnav_stance.c set_rate). */
 #define FNAV_STANCE_MAX_WINDOW 24
 
 /* Foot-strike search history: 128 samples hold the default 0.3 s event
