@@ -73,6 +73,9 @@ typedef struct {
     fnav_wire_stats_t last_stats; /* to report what changed */
     uint32_t by_type[6];
     uint32_t bad_samples;         /* CRC-valid SAMPLE frames with NaN/Inf or out of range */
+    uint32_t repeated;            /* SAMPLE frames received twice (same frame seq and sample), skipped */
+    unsigned last_frame_seq;      /* frame seq of the last recorded sample */
+    uint32_t last_sample_seq;     /* its sample counter */
     uint32_t bad_info;            /* INFO frames with an impossible rate */
     int have_info, have_end, have_status;
     int restarted;                /* a sample went back in time: the sender restarted */
@@ -277,7 +280,17 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
              * arrival so that the recording stays readable to its end */
             st = fnav_sample_check(&s);
         }
-        if (st == FNAV_OK && L->samples > 0u && s.t_ns < L->t_last_ns) {
+        if (st == FNAV_OK && L->samples > 0u && (unsigned)f->seq == L->last_frame_seq && s.t_ns == L->t_last_ns &&
+            s.seq == L->last_sample_seq) {
+            /* the same frame again (a sender's or a link's repetition): one
+             * sample, not two with dt = 0 (a sensor's own duplicate comes in
+             * a frame of its own, with the next frame seq) */
+            char msg[120];
+            L->repeated++;
+            snprintf(msg, sizeof msg, "repeated frame: sample frame seq %u received twice; the copy skipped",
+                     (unsigned)f->seq);
+            warn_limited(L, msg);
+        } else if (st == FNAV_OK && L->samples > 0u && s.t_ns < L->t_last_ns) {
             /* what the .bin reader and the navigator refuse: the session
              * ends here, with the recording readable to this point */
             L->restarted = 1;
@@ -286,6 +299,8 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             L->restart_seq = (unsigned)f->seq;
         } else if (st == FNAV_OK) {
             on_sample(L, &s);
+            L->last_frame_seq = (unsigned)f->seq;
+            L->last_sample_seq = s.seq;
         } else {
             char msg[160];
             L->bad_samples++;
@@ -533,6 +548,9 @@ int hx_cmd_live(int argc, char **argv)
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
     sigaction(SIGHUP, &sa, NULL);
+    /* a closed reader of --out - (live ... | head) is a write error with a
+     * summary and a closed recording, not a silent death by SIGPIPE */
+    signal(SIGPIPE, SIG_IGN);
     fprintf(stderr, "harness live: reading %s at %ld baud\n", hx_serial_path(port), baud);
 
     t0 = hx_now_s();
@@ -615,6 +633,7 @@ int hx_cmd_live(int argc, char **argv)
         FILE *sum_out = (L.csv == stdout) ? stderr : stdout;
         double span = span_s(&L);
         uint32_t missing = L.have_end && L.end_count > L.samples ? L.end_count - L.samples : 0u;
+        uint32_t extra = L.have_end && L.samples > L.end_count ? L.samples - L.end_count : 0u;
         if (L.traj.aligned || (json_path != NULL && L.traj.n > 0)) {
             hx_nav_summary_t sum;
             hx_nav_summarize(&L.traj, &sum);
@@ -641,9 +660,9 @@ int hx_cmd_live(int argc, char **argv)
                (unsigned)L.by_type[FNAV_WIRE_NAV], (unsigned)L.by_type[FNAV_WIRE_STATUS],
                (unsigned)L.by_type[FNAV_WIRE_END], (unsigned)L.by_type[0]);
         fprintf(sum_out, "live: link: %u bad frames, %u lost frames in %u drops, %u bad samples, %u bytes skipped, "
-               "%u sequence restarts\n",
+               "%u sequence restarts, %u repeated sample frames skipped\n",
                (unsigned)s->bad_frames, (unsigned)s->lost, (unsigned)s->gaps, (unsigned)L.bad_samples,
-               (unsigned)s->skipped_bytes, (unsigned)s->resets);
+               (unsigned)s->skipped_bytes, (unsigned)s->resets, (unsigned)L.repeated);
         if (L.have_info) {
             fprintf(sum_out, "live: sender: %s, %.6g Hz%s\n", L.info.sensor[0] ? L.info.sensor : "(unnamed)",
                     L.info.rate_hz, (L.info.flags & FNAV_WIRE_INFO_RATE_NOMINAL) ? " nominal" : "");
@@ -682,11 +701,12 @@ int hx_cmd_live(int argc, char **argv)
             exit_code = HX_EXIT_IO;
         } else if (gone || timed_out || L.restarted) {
             exit_code = HX_EXIT_DATA;
-        } else if (s->lost > 0u || s->bad_frames > 0u || L.bad_samples > 0u || L.bad_info > 0u || missing > 0u) {
+        } else if (s->lost > 0u || s->bad_frames > 0u || L.bad_samples > 0u || L.bad_info > 0u || missing > 0u ||
+                   extra > 0u) {
             hx_error(CMD, "incomplete: %u frames lost, %u corrupt frames, %u bad samples, %u bad INFO frames, "
-                          "%u samples missing",
+                          "%u samples missing, %u more than the sender sent",
                      (unsigned)s->lost, (unsigned)s->bad_frames, (unsigned)L.bad_samples, (unsigned)L.bad_info,
-                     (unsigned)missing);
+                     (unsigned)missing, (unsigned)extra);
             exit_code = HX_EXIT_DATA;
         }
         if (timed_out) {

@@ -225,8 +225,9 @@ int hx_cmd_stream(int argc, char **argv)
     hx_progress_end(&prog);
     hx_serial_close(tx.port);
 
-    printf("stream: %u samples sent to %s in %.1f s%s%s\n", (unsigned)sent, a.pos[1], hx_now_s() - t_start,
-           (hangup > 0 && (long)i == hangup) ? " (hung up on purpose, no END frame)" : "",
+    printf("stream: %u samples %s %s in %.1f s%s%s\n", (unsigned)sent,
+           tx.failed ? "encoded (the port failed before all were written) for" : "sent to", a.pos[1],
+           hx_now_s() - t_start, (hangup > 0 && (long)i == hangup) ? " (hung up on purpose, no END frame)" : "",
            g_stop ? " (interrupted)" : "");
     if (tx.failed) {
         exit_code = HX_EXIT_IO;

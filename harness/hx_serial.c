@@ -3,6 +3,7 @@
 #include <errno.h>
 #include <limits.h>
 #include <poll.h>
+#include <sys/ioctl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -81,15 +82,21 @@ fail:
 }
 
 /* After a quiet period: has the port hung up or vanished? A pty whose other
- * end closed reports POLLHUP; an unplugged USB adapter also loses its node. */
+ * end closed reports POLLHUP; an unplugged USB adapter also loses its node.
+ * A tty hung up under a node that stays (a Bluetooth rfcomm link, a
+ * vhangup) reports POLLHUP with POLLIN, and its reads return 0 at once:
+ * with nothing left to read, that is a hang-up too (a review, 2026-11-27:
+ * live looped on it at full speed). */
 static int gone(hx_serial_t *s)
 {
     if (s->fd >= 0) {
         struct pollfd p;
+        int avail = 0;
         p.fd = s->fd;
         p.events = POLLIN;
         p.revents = 0;
-        if (poll(&p, 1, 0) > 0 && (p.revents & (POLLHUP | POLLERR | POLLNVAL)) && !(p.revents & POLLIN)) {
+        if (poll(&p, 1, 0) > 0 && (p.revents & (POLLHUP | POLLERR | POLLNVAL)) &&
+            (!(p.revents & POLLIN) || ioctl(s->fd, FIONREAD, &avail) != 0 || avail == 0)) {
             snprintf(s->err, sizeof s->err, "%.300s: the port hung up (the other end closed or the device went away)",
                      s->path);
             return 1;

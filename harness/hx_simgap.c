@@ -455,7 +455,11 @@ double sg_score_test(const sg_plist_t *pl, const double *real, const sg_cmp_t *c
     *t_mean = sum / (double)S;
     sd = sqrt((sum2 - sum * sum / (double)S) / (double)(S - 1));
     *t_sd = sd;
-    return sd > 0.0 ? (T - *t_mean) / sd : 0.0;
+    /* the real is a new draw against the mean and sd of S: (T - mean) /
+     * (sd sqrt(1 + 1/S)) is the statistic that follows Student's t with
+     * S - 1 degrees of freedom (without the factor the test rejected 1.27
+     * times as often as its level at S = 16: a review, 2026-11-27) */
+    return sd > 0.0 ? (T - *t_mean) / (sd * sqrt(1.0 + 1.0 / (double)S)) : 0.0;
 }
 
 /* The static effects the diagnosis can fit. */

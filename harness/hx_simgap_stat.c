@@ -1130,5 +1130,7 @@ double sg_lr_test(const sg_plist_t *pl, const double *real, const double *ta, co
     if (!(sd > 1e-2)) {
         sd = 1e-2;
     }
-    return (Dr - mean) / sd;
+    /* a new draw against the mean and sd of S: the t(S - 1) statistic needs
+     * sqrt(1 + 1/S) (as sg_score_test) */
+    return (Dr - mean) / (sd * sqrt(1.0 + 1.0 / (double)S));
 }

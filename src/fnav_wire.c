@@ -394,6 +394,9 @@ fnav_status_t fnav_wire_parse_sample(const fnav_wire_frame_t *f, fnav_sample_t *
         }
     }
     temp = get_f32(p + 37);
+    if ((p[12] & FNAV_SAMPLE_HAS_TEMP) != 0u && !fnav_isfinite((fnav_real_t)temp)) {
+        return FNAV_E_NANINF; /* a temperature the sample claims to have */
+    }
     s->t_ns = u64_to_i64(get_u64(p));
     s->seq = get_u32(p + 8);
     s->flags = p[12];

@@ -383,6 +383,20 @@ static void test_sample_nan(void **state)
     memset(&r, 0x5A, sizeof r);
     assert_int_equal(fnav_wire_parse_sample(&f, &r), FNAV_E_NANINF);
     assert_int_equal(r.seq, 0x5A5A5A5Au); /* unchanged */
+    /* the temperature: NaN is "none" without FNAV_SAMPLE_HAS_TEMP, an
+     * error with it (as the header says) */
+    s.gyro_rps[1] = FNAV_R(0.0);
+    s.temp_c = (fnav_real_t)NAN;
+    assert_int_equal(fnav_wire_encode_sample(buf, sizeof buf, 1u, &s), 51);
+    assert_int_equal(fnav_wire_decode(&d, buf, 51, &used, &f), FNAV_OK);
+    assert_int_equal(fnav_wire_parse_sample(&f, &r), FNAV_OK);
+    assert_true(r.temp_c != r.temp_c);
+    s.flags = FNAV_SAMPLE_HAS_TEMP;
+    assert_int_equal(fnav_wire_encode_sample(buf, sizeof buf, 2u, &s), 51);
+    assert_int_equal(fnav_wire_decode(&d, buf, 51, &used, &f), FNAV_OK);
+    memset(&r, 0x5A, sizeof r);
+    assert_int_equal(fnav_wire_parse_sample(&f, &r), FNAV_E_NANINF);
+    assert_int_equal(r.seq, 0x5A5A5A5Au);
 }
 
 /* An INFO rate that is not a number in [0, 1e6] Hz (the .bin header's

@@ -119,7 +119,7 @@ typedef struct {
     uint32_t unknown;        /**< CRC-valid frames of an unknown type */
 } fnav_wire_stats_t;
 
-/** Streaming decoder. Caller-owned; about 290 bytes. */
+/** Streaming decoder. Caller-owned; about 300 bytes (304 on x86-64). */
 typedef struct {
     uint8_t buf[FNAV_WIRE_MAX_FRAME]; /**< bytes of the frame being assembled */
     uint16_t fill;           /**< bytes held in buf */
@@ -194,8 +194,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_wire_decode(fnav_wire_decoder_t *d, const ui
 /** Sample of a SAMPLE frame, as sent (any finite float, any time; what a
  *  consumer accepts is its own policy: fnav_nav_push refuses values beyond
  *  FNAV_INPUT_MAX_ABS and times beyond FNAV_T_NS_MAX). @return FNAV_OK,
- *  FNAV_E_FORMAT (wrong type or length), FNAV_E_NANINF (a non-finite value;
- *  *s unchanged). */
+ *  FNAV_E_FORMAT (wrong type or length), FNAV_E_NANINF (a non-finite value:
+ *  of the temperature only when the flags say it has one, since a sample
+ *  without one carries NaN there; *s unchanged). */
 FNAV_WARN_UNUSED fnav_status_t fnav_wire_parse_sample(const fnav_wire_frame_t *f, fnav_sample_t *s);
 
 /** Navigation output of a NAV frame. @return FNAV_OK or FNAV_E_FORMAT. */

@@ -17,12 +17,15 @@ void FNAV_CM_Sample_IRQHandler(void)
 
 int main(void)
 {
-    fnav_cm_board_init();
+    /* the application (and its empty ring) first: the board enables the
+     * sample-ready interrupt, whose handler pushes into that ring, and
+     * fnav_cm_app_init must not run beside a push (fnav_cm_ring.h) */
     if (fnav_cm_app_init(&g_app, &fnav_cm_app_config_default) != FNAV_OK) {
         for (;;) {
             fnav_cm_idle(); /* a bad build-time configuration: nothing to run */
         }
     }
+    fnav_cm_board_init();
     (void)fnav_cm_app_announce(&g_app);
     for (;;) {
         (void)fnav_cm_app_poll(&g_app);

@@ -242,6 +242,12 @@ expect_rc "$LIVE_RC" 1 "live with a sample of 1e20 m/s^2"
 grep_in "$T/live.err" "sample frame seq 100 holds a value beyond 1e6" "the out-of-range sample is reported"
 reads_back rec_g.bin 299 "the recording without it reads back whole"
 
+live_case repeat rec_rep.bin 5
+expect_rc "$LIVE_RC" 0 "live when a sample frame arrives twice (the copy skipped; nothing lost)"
+grep_in "$T/live.err" "sample frame seq 101 received twice; the copy skipped" "the repetition is reported"
+grep_in "$T/live.out" "1 repeated sample frames skipped" "the summary counts it"
+reads_back rec_rep.bin 300 "the recording holds each sample once"
+
 live_case badrate rec_n.bin 5
 expect_rc "$LIVE_RC" 1 "live with an INFO frame whose rate is NaN"
 grep_in "$T/live.err" "bad INFO frame seq 0" "the bad INFO frame is reported"
@@ -252,6 +258,30 @@ expect_rc "$LIVE_RC" 1 "live from a sender of NAV frames only"
 grep_in "$T/live.out" "NAV frames but no SAMPLE frames" "live says why nothing is navigated"
 grep_in "$T/live.out" "nothing recorded" "live does not claim a recording"
 if [ -e "$T/rec_v.bin" ]; then fail "a recording was created without samples"; else pass "no empty recording left"; fi
+
+# --- the reader of --out - goes away (live ... | head): a write error (exit 3)
+# with the summary and a complete recording, not a death by SIGPIPE
+stop_link
+start_link
+( LD_PRELOAD=$SEAM timeout $LIMIT "$H" live "$A" --print-every 0 --record "$T/rec_p.bin" --out - --timeout 3 \
+    2>"$T/live.err"; echo $? >"$T/live.rc" ) | head -2 >/dev/null &
+PIPED=$!
+if ! wait_for 'grep -q "reading" "$T/live.err"' 200; then fail "live did not start"; fi
+stream vectors/walk.bin --speed 0
+wait "$PIPED"
+stop_link
+start_link # a fresh pair for the cases below
+expect_rc "$(cat "$T/live.rc")" 3 "live whose CSV reader went away"
+grep_in "$T/live.err" "recorded" "the summary still names the recording"
+timeout $LIMIT "$H" info "$T/rec_p.bin" >"$T/info.out" 2>&1
+expect_rc $? 0 "the recording is complete and closed"
+
+# --- the tty hangs up under a node that stays (rfcomm, vhangup): exit 1, samples kept
+if msg=$(timeout $LIMIT /usr/bin/python3 tests/cli/live_vhangup.py "$H" "$SEAM" "$T"); then
+    pass "live ends on a hang-up whose device node stays${msg:+ ($msg)}"
+else
+    fail "live on a hang-up: $msg"
+fi
 
 # --- nobody sends: --timeout ends the run
 start_live --timeout 1

@@ -49,6 +49,11 @@ def main():
         b += end(301, 300)
     elif case == 'badrate':
         b = info(math.nan) + samples(300) + end(301, 300)
+    elif case == 'repeat':
+        # frame 101 (sample 100) sent twice: the same frame seq and sample
+        fr = [frame(SAMPLE, k + 1, still(k)) for k in range(300)]
+        fr.insert(101, fr[100])
+        b = info(400.0) + b''.join(fr) + end(301, 300)
     elif case == 'navonly':
         b = info(400.0) + b''.join(
             frame(NAV, k + 1, nav_payload(k * DT_NS, k, 1, 0, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)))
