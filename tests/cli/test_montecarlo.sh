@@ -19,6 +19,28 @@ expect_err "detector must be shoe or threshold" "--detector error names the choi
 expect_exit 0 "montecarlo with outputs" "$H" montecarlo --motion "stand:5,walk:10,stand:2" --seeds 3 \
     --bias-model both --json "$T/mc.json" --csv "$T/mc.csv" --quiet
 if grep -q '"variants"' "$T/mc.json" && grep -q '"nees"' "$T/mc.json"; then pass "JSON has variants and NEES"; else fail "JSON content"; fi
+# the verdict is the per-bin test: consistent exactly when >= 80 % of the bins lie in their band
+if /usr/bin/env python3 - "$T/mc.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+n = 0
+def walk(o):
+    global n
+    if isinstance(o, dict):
+        if 'verdict' in o and 'fraction_in_band' in o:
+            f = o['fraction_in_band']
+            if f is not None and (o['verdict'] == 'consistent') != (f >= 0.8):
+                sys.exit('verdict %s with %s of the bins inside' % (o['verdict'], f))
+            n += 1
+        for v in o.values():
+            walk(v)
+    elif isinstance(o, list):
+        for v in o:
+            walk(v)
+walk(j)
+sys.exit(0 if n > 0 else 'no verdict in the JSON')
+PY
+then pass "NEES verdicts follow the per-bin rule"; else fail "NEES verdicts"; fi
 if head -1 "$T/mc.csv" | grep -q "^variant,t_s,odo_m,n,rms_h_m"; then pass "CSV header"; else fail "CSV header"; fi
 if grep -q "^off," "$T/mc.csv" && grep -q "^ar1," "$T/mc.csv"; then pass "both variants in the CSV"; else fail "variants in CSV"; fi
 expect_exit 3 "unwritable JSON" "$H" montecarlo --motion "stand:5,walk:3" --seeds 1 --quiet --json "$T/no/dir/x.json"
