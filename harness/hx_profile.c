@@ -140,6 +140,14 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
     if (p->name[0] == '\0') {
         snprintf(p->name, sizeof p->name, "file");
     }
+    if (fnav_profile_validate(p) != FNAV_OK) {
+        /* each value was positive in double; in the working precision one
+         * may not be (1e-60 is 0 in float): said here, not later as a
+         * rejected --param */
+        snprintf(err, err_size, "%s: a value is zero, negative or not finite in the %s build (out of its range)",
+                 path, FNAV_USE_DOUBLE ? "double" : "float");
+        return -1;
+    }
     return 0;
 }
 

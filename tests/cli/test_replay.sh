@@ -124,6 +124,11 @@ if grep -q '"aligned":.*true' "$T/pf.json"; then pass "profile file replay align
 printf 'format = footnav-profile 1\nrate_hz = 100\n' > "$T/bad.profile"
 expect_exit 2 "incomplete profile file" "$H" replay vectors/walk.bin --profile "$T/bad.profile"
 expect_err "bad.profile" "profile error names the file"
+# a value positive in the file but zero in float (1e-60): the reader says so,
+# not the core as a rejected --param
+sed 's/^\(gyro_noise[^=]*= *\).*/\11e-60 1e-60 1e-60/' "$T/p.profile" > "$T/tiny.profile"
+expect_exit 2 "a profile value below float range" "$H" replay vectors/walk.bin --profile "$T/tiny.profile"
+expect_err "tiny.profile: a value is zero, negative or not finite" "the profile file is named with the reason"
 
 # --- the mounting: the same walk with both triads turned by a fixed rotation
 # (pitch 90 deg: the sensor's x vertical, Euler's singular pose; z down; an
