@@ -356,9 +356,14 @@ static int plot_spectrogram(const char *dir, const hx_log_t *log, int c, uint32_
     fprintf(p.gp, "set title 'Spectrogram of %s (Hann %u, 50 %% overlap; Fig. 6): %s'\n", k_ch[c], (unsigned)nfft, src);
     fprintf(p.gp, "set xlabel 'time [s]'\nset ylabel 'frequency [Hz]'\nset cblabel 'PSD [dB re 1 %s^2/Hz]'\n",
             c < 3 ? "(m/s^2)" : "(rad/s)");
-    fprintf(p.gp, "set view map\nset palette rgbformulae 33,13,10\nset cbrange [*:*]\nunset grid\n");
+    /* stats first: with one column it reads the values as y and drops those
+     * outside the y range, which is the frequency axis [0, f_s/2] (every dB
+     * value of a static log is negative: no point left, STATS_max undefined,
+     * gnuplot failed and the command exited 3) */
+    fprintf(p.gp, "stats $s using 3 nooutput\n");
+    fprintf(p.gp, "set view map\nset palette rgbformulae 33,13,10\nunset grid\n");
     fprintf(p.gp, "set xrange [0:%.6g]\nset yrange [0:%.6g]\n", (double)log->n / rate, 0.5 * rate);
-    fprintf(p.gp, "stats $s using 3 nooutput\nset cbrange [STATS_max-80:STATS_max]\n");
+    fprintf(p.gp, "set cbrange [STATS_max-80:STATS_max]\n");
     fprintf(p.gp, "plot $s using 1:2:3 with image notitle\n");
     return hx_plot_close(&p, CMD);
 }

@@ -30,6 +30,15 @@ else
     fail "tone bandwidth"
 fi
 expect_exit 3 "unwritable output" "$H" psd "$T/tone.csv" --out /nonexistent/dir/p.csv
+# a static log: every PSD value below 1 unit^2/Hz, so every dB value of the spectrogram is negative;
+# gnuplot's one-column stats dropped them all (outside the frequency axis' range) and --plot exited 3
+awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 6000; i++)
+     printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 100.0, 0.05 * (rand() - 0.5), 0.05 * (rand() - 0.5),
+            9.81 + 0.05 * (rand() - 0.5), 0.007 * (rand() - 0.5), 0.007 * (rand() - 0.5), 0.007 * (rand() - 0.5) }' >"$T/static.csv"
+expect_exit 0 "static log, --plot --sensitivity" "$H" psd "$T/static.csv" --plot "$T/splots" --sensitivity
+for f in psd ccdf spectrogram sensitivity; do
+    [ -s "$T/splots/$f.png" ] && pass "static $f.png" || fail "static $f.png missing"
+done
 # a value beyond any sensor (and the core's input range): exit 1, the line and column named
 awk -F, 'NR == 102 { $5 = "1e30" } { print }' OFS=, "$T/tone.csv" >"$T/huge.csv"
 expect_exit 1 "a sample beyond float range" "$H" psd "$T/huge.csv"
