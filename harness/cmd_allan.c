@@ -1146,6 +1146,40 @@ static void base_name(const char *path, char *out, size_t n)
     }
 }
 
+/* Whether the fitted AR(1) part is identified by the measured curve: its
+ * bump (near 1.89 T) lies within the measured averaging times (a bump beyond
+ * the longest is a random walk in disguise, one below a sample is white
+ * noise in disguise), and somewhere in the fitted range it raises the
+ * model's ADEV above the white part alone by more than the fit's model-error
+ * floor (else the curve is white throughout and T and sigma are whatever
+ * the optimiser stopped at: a 1-minute log gave T = 8e-6 s, sigma = 1.3e-6
+ * m/s^2, a bias the filter would then never estimate). */
+static int ar1_identified(const run_t *R, const chan_t *ch, double tau_long_s)
+{
+    const hx_noise_model_t *f = &ch->id.fit;
+    hx_noise_model_t w = *f;
+    const double bump_s = 1.89 * f->gm_tau_s;
+    size_t j;
+    if (!ch->id.fit_ok || !(bump_s <= tau_long_s) || !(bump_s >= 1.0 / R->rate_hz)) {
+        return 0;
+    }
+    w.gm_sigma = 0.0;
+    for (j = 0; j < ch->nres; j++) {
+        const fnav_allan_result_t *r = &ch->res[j];
+        const double m = (double)r->tau;
+        double all, white;
+        if (r->terms < 2u || m > tau_max_samples(R) * (1.0 + 1e-9)) {
+            continue;
+        }
+        all = hx_noise_model_avar(f, R->rate_hz, m);
+        white = hx_noise_model_avar(&w, R->rate_hz, m);
+        if (all > white * (1.0 + hx_allan_fit_opts_default.model_floor) * (1.0 + hx_allan_fit_opts_default.model_floor)) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 static int write_profile(const run_t *R, const char *path, const char *name)
 {
     fnav_profile_t p;
@@ -1176,7 +1210,7 @@ static int write_profile(const run_t *R, const char *path, const char *name)
                 tau_long_s = (double)ch->res[j].tau / R->rate_hz;
             }
         }
-        if (ch->id.fit_ok && 1.89 * ch->id.fit.gm_tau_s <= tau_long_s) {
+        if (ar1_identified(R, ch, tau_long_s)) {
             m = ch->id.fit;
             fallback[k] = 0;
         } else if (!ch->id.paper_ok) {
@@ -1185,7 +1219,8 @@ static int write_profile(const run_t *R, const char *path, const char *name)
         } else {
             /* The AR(1) part is not identifiable: white noise dominates the
              * whole curve (typically a bias correlation time longer than a
-             * tenth of the record). Write the conservative first-order
+             * tenth of the record, or a record too short to leave the white
+             * part). Write the conservative first-order
              * Gauss-Markov bound from the curve's minimum: the AR(1) Allan
              * deviation peaks at 0.6174 sigma at tau = 1.893 T (docs/allan.md),
              * so T = t_min / 1.89 and sigma = ADEV_min / 0.6174 put the model's bump
