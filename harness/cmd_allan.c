@@ -99,6 +99,7 @@ typedef struct {
     double y0;       /* first sample, removed from the record (the variance ignores a constant) */
     hx_allan_ident_t id;
     int id_ok;
+    int constant;    /* every tau with terms has variance 0: a stuck or disconnected channel */
     /* --deviation: per deviation kind and grid point (display units; TDEV in unit s) */
     double dv[HX_DEV_COUNT][GRID_MAX], dv_lo[HX_DEV_COUNT][GRID_MAX], dv_hi[HX_DEV_COUNT][GRID_MAX];
     double dv_edf[HX_DEV_COUNT][GRID_MAX];
@@ -665,6 +666,24 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
         }
     }
     deviation_tables(R, ch);
+    /* a channel that never changes has Allan variance 0 at every tau: nothing
+     * to identify, and "too little data" would send the user looking at the
+     * record's length instead of the sensor */
+    ch->constant = 0;
+    for (i = 0; i < ch->nres; i++) {
+        if (ch->res[i].terms > 0u) {
+            if (!((double)ch->res[i].avar == 0.0)) {
+                ch->constant = 0;
+                break;
+            }
+            ch->constant = 1;
+        }
+    }
+    if (ch->constant) {
+        hx_warn(CMD, "%s: %s is constant over the whole record (Allan deviation 0 at every tau): a stuck, "
+                     "saturated or disconnected channel",
+                R->source, ch->name);
+    }
     o.with_quant = fit_extra;
     o.with_rrw = fit_extra;
     o.tau_max_s = tau_max_samples(R) / R->rate_hz;
@@ -821,7 +840,7 @@ static void print_params(const run_t *R)
                    (double)id->paper.tau_samples, (double)id->paper.sigma_bias, (double)id->paper.bs,
                    id->paper_quality.rms_log10, id->paper_quality.ratio_at_min);
         } else {
-            printf(" %-54s |", "n/a (1 s or the minimum not covered)");
+            printf(" %-54s |", ch->constant ? "n/a (constant channel)" : "n/a (1 s or the minimum not covered)");
         }
         if (ch->id_ok && id->fit_ok) {
             /* ADEV peak of the AR(1) alone (hx_allan_ident.h) */
@@ -833,7 +852,7 @@ static void print_params(const run_t *R)
             }
             printf("\n");
         } else {
-            printf(" n/a (fit failed)\n");
+            printf(" n/a (%s)\n", ch->constant ? "constant channel" : "fit failed");
         }
     }
     printf("\nOther readings of the paper's parameters (RMS log10 ADEV model/measured; model/measured at the minimum):\n"
@@ -1111,8 +1130,9 @@ static int write_plot(const run_t *R, const char *path)
         fprintf(p.gp, "set ylabel 'ADEV [%s]'\n", hx_gp_str(q, sizeof q, ch->unit));
         if (nm == 0) {
             /* nothing positive to draw on log axes: an empty panel that says so */
-            fprintf(p.gp, "set label 1 'not enough data' at graph 0.5,0.5 center\nset xrange [0.01:1]\n"
-                          "set yrange [0.01:1]\nplot 10 notitle\nunset label 1\nset autoscale\n");
+            fprintf(p.gp, "set label 1 '%s' at graph 0.5,0.5 center\nset xrange [0.01:1]\n"
+                          "set yrange [0.01:1]\nplot 10 notitle\nunset label 1\nset autoscale\n",
+                    ch->constant ? "constant channel (ADEV 0)" : "not enough data");
             continue;
         }
         fprintf(p.gp, "plot $m using 1:2:3:4 with yerrorbars pt 7 ps 0.5 lc rgb '#c00000' title 'measured (OADEV, "
@@ -1197,6 +1217,12 @@ static int write_profile(const run_t *R, const char *path, const char *name)
         const double si = 1.0 / ch->scale; /* display -> SI */
         const int k = ch->src;
         hx_noise_model_t m;
+        if (ch->constant) {
+            hx_error(CMD, "%s: %s is constant over the whole record (Allan deviation 0): no noise to identify; "
+                          "profile not written",
+                     path, ch->name);
+            return -2;
+        }
         if (!ch->id_ok || (!ch->id.fit_ok && !ch->id.paper_ok)) {
             hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
             return -2;

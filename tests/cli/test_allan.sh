@@ -44,6 +44,15 @@ expect_exit 3 "unwritable output" "$H" allan --series "$T/bad.txt" --rate 10 --n
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 10; i++) printf "%.2f,0.1,0.2,9.8,0.01,0.02,0.0%d\n", i / 100, i }' >"$T/tiny.csv"
 expect_exit 1 "too short for a profile" "$H" allan "$T/tiny.csv" --quiet --profile "$T/tiny.profile" --plot "$T/tiny.png"
 [ -s "$T/tiny.png" ] && [ ! -e "$T/tiny.profile" ] && pass "plot without profile" || fail "tiny outputs"
+# a stuck gyro in a 10-minute static log: named as constant, not "too little data" (nor "1 s not covered")
+awk 'BEGIN { srand(3); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 60000; i++)
+     printf "%.2f,%.5f,%.5f,%.5f,%.6f,0.001,%.6f\n", i / 100, 0.05 * (rand() - 0.5), 0.05 * (rand() - 0.5),
+            9.81 + 0.05 * (rand() - 0.5), 0.007 * (rand() - 0.5), 0.007 * (rand() - 0.5) }' >"$T/stuck.csv"
+expect_exit 1 "stuck channel: no profile" "$H" allan "$T/stuck.csv" --no-sim --profile "$T/stuck.profile"
+expect_err "stuck.csv: gy is constant over the whole record" "stuck channel named in a warning"
+expect_err "stuck.profile: gy is constant over the whole record (Allan deviation 0): no noise to identify" \
+    "stuck channel named as the reason for the missing profile"
+expect_out "Gyr y  deg/s  | n/a (constant channel)" "stuck channel in the parameter table"
 
 # Exact estimator against numpy (double, every tau, both estimators, term counts) on a 10 MHz
 # frequency counted to the mHz, as counters log it: the offset must not eat the float core's digits.
