@@ -534,6 +534,16 @@ int hx_cmd_psd(int argc, char **argv)
                  k_dc_names[dc_mode], (unsigned)res.nseg, res.df);
         print_result(title, &res, &bc);
     }
+    if (res.overall_fs > rate * (1.0 + 1e-9)) {
+        /* 2 x bandwidth never exceeds the rate; the rounding up did. The band
+         * reaches the Nyquist frequency (a static log's noise is white up to
+         * it), so the log cannot show where the signal ends. */
+        hx_warn(CMD, "the answer (%.0f Hz) is above the log's own rate (%.4g Hz): %.0f %% of the power reaches "
+                     "%.1f Hz, near the Nyquist frequency %.4g Hz, so this log cannot show where the band ends; "
+                     "read it as 'at least %.4g Hz' (or give --round 0)",
+                res.overall_fs, rate, 100.0 * thr, res.group_bw[0] > res.group_bw[1] ? res.group_bw[0] : res.group_bw[1],
+                0.5 * rate, rate);
+    }
 
     memset(have, 0, sizeof have);
     if (hx_flag(&a, "--sensitivity")) {
@@ -587,6 +597,7 @@ int hx_cmd_psd(int argc, char **argv)
         cJSON_AddNumberToObject(set, "threshold", thr);
         cJSON_AddNumberToObject(set, "round_hz", rnd);
         cJSON_AddItemToObject(root, "result", json_result(&res));
+        cJSON_AddBoolToObject(root, "fs_above_log_rate", res.overall_fs > rate * (1.0 + 1e-9));
         if (hx_flag(&a, "--sensitivity")) {
             cJSON *arr = cJSON_AddArrayToObject(root, "sensitivity");
             int d, k;

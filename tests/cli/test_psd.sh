@@ -39,6 +39,15 @@ expect_exit 0 "static log, --plot --sensitivity" "$H" psd "$T/static.csv" --plot
 for f in psd ccdf spectrogram sensitivity; do
     [ -s "$T/splots/$f.png" ] && pass "static $f.png" || fail "static $f.png missing"
 done
+# the same log at 10 Hz: white noise to the 5 Hz Nyquist frequency, 2 x 4.75 Hz rounded up to 50 Hz, above the
+# log's own rate: said, and marked in the JSON
+awk -F, 'NR == 1 { print; next } { $1 = sprintf("%.1f", (NR - 2) / 10.0); print }' OFS=, "$T/static.csv" >"$T/static10.csv"
+expect_exit 0 "static log at 10 Hz" "$H" psd "$T/static10.csv" --json "$T/s10.json"
+expect_err "is above the log's own rate (10 Hz)" "an answer above the log's rate is flagged"
+"$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_above_log_rate"] is True and d["result"]["fs_hz"] == 50, d' "$T/s10.json" &&
+    pass "JSON fs_above_log_rate" || fail "JSON fs_above_log_rate"
+"$PY" -c 'import json,sys; assert json.load(open(sys.argv[1]))["fs_above_log_rate"] is False' "$T/tone.json" &&
+    pass "JSON fs_above_log_rate false below the rate" || fail "fs_above_log_rate on the tone"
 # a value beyond any sensor (and the core's input range): exit 1, the line and column named
 awk -F, 'NR == 102 { $5 = "1e30" } { print }' OFS=, "$T/tone.csv" >"$T/huge.csv"
 expect_exit 1 "a sample beyond float range" "$H" psd "$T/huge.csv"
