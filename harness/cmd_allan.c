@@ -14,6 +14,7 @@
 #include "hx_cli.h"
 #include "hx_commands.h"
 #include "hx_devs.h"
+#include "hx_nav.h"
 #include "hx_profile.h"
 
 #define CMD "allan"
@@ -126,6 +127,10 @@ typedef struct {
     hx_dev_t dev[HX_DEV_COUNT]; /* --deviation, in the order given */
     int ndev;
     double max_work;         /* --max-work: window terms of one tau of an O(n m) deviation */
+    double acc_sum[3];       /* a log's specific force summed over the record (units check) */
+    double gyro_max;         /* a log's largest |rate| on any axis (units check) */
+    int units_bad;           /* the log is not in SI units (hx_units_problem; units_msg says why) */
+    char units_msg[320];
 } run_t;
 
 static const char k_exact_oom[] = "out of memory: --estimator exact keeps the whole record (8 bytes per sample "
@@ -409,6 +414,12 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
             }
         }
         t_prev = s.t_ns;
+        for (i = 0; i < 3; i++) {
+            R->acc_sum[i] += (double)s.accel_mps2[i];
+            if (fabs((double)s.gyro_rps[i]) > R->gyro_max) {
+                R->gyro_max = fabs((double)s.gyro_rps[i]);
+            }
+        }
         for (i = 0; i < R->nch; i++) {
             const int k = R->ch[i].src;
             const double v = k < 3 ? (double)s.accel_mps2[k] : (double)s.gyro_rps[k - 3];
@@ -450,6 +461,16 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
                  rc != 0 ? "too few samples before the error to know the sample rate"
                          : "sample rate unknown; give --rate");
         return -1;
+    }
+    if (R->n > 0u) {
+        /* A static log in g or deg/s reads without error and gives a profile
+         * 9.8 times too quiet or 57 times too noisy. At rest the mean specific
+         * force is gravity: the same marks as replay and info (docs/harness.md,
+         * "Units check"; not the rate: a static log may be slow). */
+        const double f[3] = { R->acc_sum[0] / (double)R->n, R->acc_sum[1] / (double)R->n,
+                              R->acc_sum[2] / (double)R->n };
+        R->units_bad = hx_units_problem(sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]), 9.80665, R->gyro_max, 0.0,
+                                        R->units_msg, sizeof R->units_msg);
     }
     return rc;
 }
@@ -1512,6 +1533,10 @@ int hx_cmd_allan(int argc, char **argv)
         exit_code = HX_EXIT_DATA;
     }
 
+    if (R->units_bad) {
+        hx_error(CMD, "%s: %s", path, R->units_msg);
+        exit_code = HX_EXIT_DATA;
+    }
     for (i = 0; i < R->nch; i++) {
         analyse_channel(R, &R->ch[i], hx_flag(&a, "--fit-extra"));
     }
@@ -1560,7 +1585,9 @@ int hx_cmd_allan(int argc, char **argv)
     if (hx_arg(&a, "--plot") != NULL && write_plot(R, hx_arg(&a, "--plot")) != 0) {
         exit_code = HX_EXIT_IO;
     }
-    if (hx_arg(&a, "--profile") != NULL) {
+    if (hx_arg(&a, "--profile") != NULL && R->units_bad) {
+        hx_error(CMD, "%s: the log is not in SI units (above); profile not written", hx_arg(&a, "--profile"));
+    } else if (hx_arg(&a, "--profile") != NULL) {
         if (hx_arg(&a, "--name") != NULL) {
             snprintf(name, sizeof name, "%s", hx_arg(&a, "--name"));
         } else {

@@ -53,6 +53,14 @@ expect_err "stuck.csv: gy is constant over the whole record" "stuck channel name
 expect_err "stuck.profile: gy is constant over the whole record (Allan deviation 0): no noise to identify" \
     "stuck channel named as the reason for the missing profile"
 expect_out "Gyr y  deg/s  | n/a (constant channel)" "stuck channel in the parameter table"
+# a static log whose accelerometers are in g: read without error, and its profile was 9.8 times too quiet;
+# now the units check of replay and info: error, exit 1, tables still written, no profile
+awk -F, 'NR == 1 { print; next } { $6 = 0.0005 * (NR % 7); for (k = 2; k <= 4; k++) $k = $k / 9.80665; print }' OFS=, \
+    "$T/stuck.csv" >"$T/in_g.csv"
+expect_exit 1 "static log in g" "$H" allan "$T/in_g.csv" --no-sim --quiet --out "$T/in_g_table.csv" --profile "$T/in_g.profile"
+expect_err "in_g.csv: the accelerometer reads |f| = 1.* but in g (multiply by 9.80665)" "a log in g is named"
+[ -s "$T/in_g_table.csv" ] && [ ! -e "$T/in_g.profile" ] && pass "log in g: table written, no profile" ||
+    fail "log in g: outputs"
 
 # Exact estimator against numpy (double, every tau, both estimators, term counts) on a 10 MHz
 # frequency counted to the mHz, as counters log it: the offset must not eat the float core's digits.
