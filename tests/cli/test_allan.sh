@@ -61,6 +61,13 @@ expect_exit 1 "static log in g" "$H" allan "$T/in_g.csv" --no-sim --quiet --out 
 expect_err "in_g.csv: the accelerometer reads |f| = 1.* but in g (multiply by 9.80665)" "a log in g is named"
 [ -s "$T/in_g_table.csv" ] && [ ! -e "$T/in_g.profile" ] && pass "log in g: table written, no profile" ||
     fail "log in g: outputs"
+# a record whose analysed range (here 50 %) outgrows the core's grid (2^20 samples), as 10 % of a 12-hour
+# 1 kHz log does: said, instead of a quality line "over tau <= 1.1e+03 s" that the table never reached
+awk 'BEGIN { for (i = 0; i < 2200000; i++) print (i * 7919) % 13 }' >"$T/long.txt"
+expect_exit 0 "a record longer than the grid" "$H" allan --series "$T/long.txt" --rate 1000 --estimator streaming \
+    --max-tau-frac 0.5 --no-sim --quiet
+expect_err "beyond the longest tau of the grid (1048576 samples = 1049 s" "the grid's end is named"
+rm -f "$T/long.txt"
 
 # Exact estimator against numpy (double, every tau, both estimators, term counts) on a 10 MHz
 # frequency counted to the mHz, as counters log it: the offset must not eat the float core's digits.
