@@ -32,7 +32,8 @@ static const hx_spec_t k_spec = {
     0, 0, k_opts
 };
 
-#define MAXF 64
+/* A file name in a data set folder (NAME_MAX is 255 on Linux). */
+typedef char ev_name_t[256];
 
 typedef struct {
     char data[512];
@@ -43,6 +44,42 @@ typedef struct {
     double total_runs;
     cJSON *json;
 } ev_t;
+
+/* calloc that ends eval on exhaustion (the lists grow with the data). */
+static void *ev_calloc(size_t n, size_t size)
+{
+    void *p = calloc(n > 0 ? n : 1, size);
+    if (p == NULL) {
+        hx_error("eval", "out of memory");
+        exit(HX_EXIT_DATA);
+    }
+    return p;
+}
+
+static void *ev_realloc(void *p, size_t n, size_t size)
+{
+    void *q = n <= (size_t)-1 / size ? realloc(p, n * size) : NULL;
+    if (q == NULL) {
+        hx_error("eval", "out of memory");
+        exit(HX_EXIT_DATA);
+    }
+    return q;
+}
+
+/* A growable list of numbers (the ipol event errors of every trial). */
+typedef struct {
+    double *v;
+    int n, cap;
+} ev_dvec_t;
+
+static void dvec_push(ev_dvec_t *d, double x)
+{
+    if (d->n == d->cap) {
+        d->cap = d->cap > 0 ? 2 * d->cap : 1024;
+        d->v = (double *)ev_realloc(d->v, (size_t)d->cap, sizeof *d->v);
+    }
+    d->v[d->n++] = x;
+}
 
 static double maxv(const double *v, int n)
 {
@@ -65,46 +102,44 @@ static double pct_rank(double *v, int n, double p)
     return v[k < 0 ? 0 : (k >= n ? n - 1 : k)];
 }
 
-/* Sorted file names in dir ending with suffix. */
-static int list_files(const char *dir, const char *suffix, char names[MAXF][160])
+/* A licence, source or readme file of a folder, not data. */
+static int doc_file(const char *name)
+{
+    return strncmp(name, "LICENSE", 7) == 0 || strncmp(name, "SOURCE", 6) == 0 || strncmp(name, "README", 6) == 0;
+}
+
+static int cmp_name(const void *a, const void *b)
+{
+    return strcmp((const char *)a, (const char *)b);
+}
+
+/* The walk files of a data set folder, sorted, however many (in *names,
+ * to free()): names ending in suffix, without the folder's licence, source
+ * and readme files. The count; 0 when dir cannot be read. */
+static int list_walks(const char *dir, const char *suffix, ev_name_t **names)
 {
     DIR *d = opendir(dir);
     struct dirent *e;
-    int n = 0, i, j;
-    size_t ls = strlen(suffix);
+    size_t n = 0, cap = 0, ls = strlen(suffix);
+    *names = NULL;
     if (d == NULL) {
         return 0;
     }
-    while ((e = readdir(d)) != NULL && n < MAXF) {
+    while ((e = readdir(d)) != NULL) {
         size_t l = strlen(e->d_name);
-        if (l > ls && l < 160 && strcmp(e->d_name + l - ls, suffix) == 0) {
-            memcpy(names[n++], e->d_name, l + 1); /* l < 160 checked above */
+        if (l > ls && l < sizeof **names && strcmp(e->d_name + l - ls, suffix) == 0 && !doc_file(e->d_name)) {
+            if (n == cap) {
+                cap = cap > 0 ? 2 * cap : 64;
+                *names = (ev_name_t *)ev_realloc(*names, cap, sizeof **names);
+            }
+            memcpy((*names)[n++], e->d_name, l + 1); /* l < 256 checked above */
         }
     }
     closedir(d);
-    for (i = 1; i < n; i++) {
-        for (j = i; j > 0 && strcmp(names[j - 1], names[j]) > 0; j--) {
-            char t[160];
-            memcpy(t, names[j], 160);
-            memcpy(names[j], names[j - 1], 160);
-            memcpy(names[j - 1], t, 160);
-        }
+    if (n > 1) {
+        qsort(*names, n, sizeof **names, cmp_name);
     }
-    return n;
-}
-
-/* The walk files of a data set folder: names ending in ext, without the
- * folder's licence, source and readme files. */
-static int list_walks(const char *dir, const char *ext, char names[MAXF][160])
-{
-    int n = list_files(dir, ext, names), i, k = 0;
-    for (i = 0; i < n; i++) {
-        if (strncmp(names[i], "LICENSE", 7) != 0 && strncmp(names[i], "SOURCE", 6) != 0 &&
-            strncmp(names[i], "README", 6) != 0) {
-            memmove(names[k++], names[i], 160);
-        }
-    }
-    return k;
+    return (int)n;
 }
 
 /* A reader's or replay's message without the file's path in front of it
@@ -226,11 +261,17 @@ typedef struct {
 static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fnav_nav_config_t *cfg, double rate_hz,
                         int write, closure_t *out)
 {
-    char dir[600], names[MAXF][160], path[1000], note[200], nm[100];
-    double h[MAXF], d3[MAXF], vz[MAXF], hm[MAXF], pm[MAXF];
+    char dir[600], path[1000], note[200], nm[256];
+    ev_name_t *names;
+    double *h, *d3, *vz, *hm, *pm;
     int n, i, k = 0;
     snprintf(dir, sizeof dir, "%s/%s", ev->data, sub);
-    n = list_files(dir, suffix, names);
+    n = list_walks(dir, suffix, &names);
+    h = (double *)ev_calloc(5 * (size_t)n, sizeof *h);
+    d3 = h + n;
+    vz = d3 + n;
+    hm = vz + n;
+    pm = hm + n;
     if (write) {
         fprintf(ev->md, "| walk | path (m) | horizontal (m) | horizontal (%%) | 3-D (m) | 3-D (%%) | "
                         "vertical (m) | heading change (deg) | strides | note |\n");
@@ -239,7 +280,7 @@ static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fna
     for (i = 0; i < n; i++) {
         hx_traj_t t;
         hx_nav_summary_t s;
-        snprintf(path, sizeof path, "%s/%.159s", dir, names[i]);
+        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
         fmt_name(nm, sizeof nm, names[i], suffix);
         if (replay(ev, path, cfg, rate_hz, write, &t, &s, note, sizeof note) != 0 ||
             no_closure(ev, path, &s, &t, note, sizeof note)) {
@@ -267,6 +308,8 @@ static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fna
     out->vert_med = hx_median(vz, k);
     out->h_m_med = hx_median(hm, k);
     out->path_med = hx_median(pm, k);
+    free(h);
+    free(names);
 }
 
 /* ------------------------------------------------------------ xio and other closed walks */
@@ -408,11 +451,15 @@ static void no_strides(ev_t *ev, const char *path, char *why, size_t why_size)
 
 static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, int write, fp_t *out)
 {
-    char dir[600], names[MAXF][160], path[800], gpath[800], note[200], msg[200], nm[100];
-    double fpct[MAXF], smed[MAXF], fm[MAXF], sum = 0.0;
+    char dir[600], path[900], gpath[900], note[200], msg[200], nm[256];
+    ev_name_t *names;
+    double *fpct, *smed, *fm, sum = 0.0;
     int n, i, k = 0;
     snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/own_3dmgx5_footprints", ev->data);
-    n = list_files(dir, "_imu.csv", names);
+    n = list_walks(dir, "_imu.csv", &names);
+    fpct = (double *)ev_calloc(3 * (size_t)n, sizeof *fpct);
+    smed = fpct + n;
+    fm = smed + n;
     if (write) {
         fprintf(ev->md, "| walk | strides | measured path (m) | median stride error (m) | RMS (m) | "
                         "final-stride error (m) | final (%% of path) | note |\n");
@@ -424,7 +471,7 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
         static gcp_t g;
         stride_res_t r;
         size_t l = strlen(names[i]);
-        snprintf(path, sizeof path, "%s/%.159s", dir, names[i]);
+        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
         snprintf(gpath, sizeof gpath, "%s/%.*s_strides_gcp.csv", dir, (int)(l - 8), names[i]);
         fmt_name(nm, sizeof nm, names[i], "_imu.csv");
         if (read_gcp(gpath, &g, msg, sizeof msg) != 0) {
@@ -479,6 +526,8 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
     out->final_pct_med = hx_median(fpct, k);
     out->stride_med = hx_median(smed, k);
     out->final_m_med = hx_median(fm, k);
+    free(fpct);
+    free(names);
 }
 
 /* Vicon: every stride of the trials against the motion-capture position at
@@ -528,11 +577,15 @@ typedef struct {
 
 static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *out)
 {
-    char dir[600], names[MAXF][160], path[800], gpath[800], note[200], msg[200], nm[100];
-    double med[MAXF], rms[MAXF], fin[MAXF];
+    char dir[600], path[900], gpath[900], note[200], msg[200], nm[256];
+    ev_name_t *names;
+    double *med, *rms, *fin;
     int n, i, k = 0, rc;
     snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/vicon_3dmgx3", ev->data);
-    n = list_files(dir, "_imu.csv", names);
+    n = list_walks(dir, "_imu.csv", &names);
+    med = (double *)ev_calloc(3 * (size_t)n, sizeof *med);
+    rms = med + n;
+    fin = rms + n;
     out->strides = 0;
     if (write) {
         fprintf(ev->md, "| trial | strides | median stride error (m) | RMS (m) | final (m) | note |\n");
@@ -546,7 +599,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         double *vx, *vy;
         size_t nv, l = strlen(names[i]);
         int j;
-        snprintf(path, sizeof path, "%s/%.159s", dir, names[i]);
+        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
         snprintf(gpath, sizeof gpath, "%s/%.*s_strides_gcp.csv", dir, (int)(l - 8), names[i]);
         fmt_name(nm, sizeof nm, names[i], "_imu.csv");
         rc = read_gcp(gpath, &g, msg, sizeof msg);
@@ -593,6 +646,8 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
     out->stride_med = hx_median(med, k);
     out->rms_med = hx_median(rms, k);
     out->final_med = hx_median(fin, k);
+    free(med);
+    free(names);
 }
 
 /* ------------------------------------------------------------ stance (IPOL) */
@@ -788,12 +843,15 @@ static void ipol_match(const long (*evs)[2], int ne, const long (*oevs)[2], int 
 
 static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
 {
-    char dir[600], names[MAXF][160], path[800], jpath[800], note[200], nm[200];
-    static double fo_e[4096], fs_e[4096], fo_a[4096], fs_a[4096];
+    char dir[600], path[900], jpath[900], note[200], nm[300];
+    ev_name_t *names;
+    ev_dvec_t fo_e = { NULL, 0, 0 }, fs_e = { NULL, 0, 0 }, fo_a = { NULL, 0, 0 }, fs_a = { NULL, 0, 0 };
+    long (*sw)[2] = NULL, *fo = NULL, *fs = NULL;
+    int *used = NULL, swcap = 0, focap = 0, fscap = 0;
     int n, i, foot;
     memset(out, 0, sizeof *out);
     snprintf(dir, sizeof dir, "%s/ipol_gait_xsens", ev->data);
-    n = list_files(dir, ".json", names);
+    n = list_walks(dir, ".json", &names);
     out->files = n;
     if (write) {
         fprintf(ev->md, "| trial | foot | expert strides | detected | missed | spurious | median \\|FO error\\| | "
@@ -802,11 +860,9 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
     }
     for (i = 0; i < n; i++) {
         for (foot = 0; foot < 2; foot++) {
-            static long evs[256][2], oevs[256][2], sw[1024][2];
-            static long fo[1024], fs[1024];
+            static long evs[256][2], oevs[256][2];
             long tb[2], ub[2], otb[2], oub[2];
             int ne, noe, nsw = 0, nfo = 0, nfs = 0, j, exp_n = 0, det_n = 0, miss = 0, spur_n = 0;
-            static int used[1024];
             hx_log_t log;
             char err[320], oerr[320];
             fnav_stance_t st;
@@ -816,7 +872,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             int trial_fo = 0, trial_fs = 0;
             double tfo[256], tfs[256];
             size_t l = strlen(names[i]);
-            snprintf(jpath, sizeof jpath, "%s/%.159s", dir, names[i]);
+            snprintf(jpath, sizeof jpath, "%s/%s", dir, names[i]);
             snprintf(path, sizeof path, "%s/%.*s_%s.txt", dir, (int)(l - 5), names[i], foot ? "rf" : "lf");
             snprintf(nm, sizeof nm, "%.*s | %s", (int)(l - 5), names[i], foot ? "right" : "left");
             ne = read_events(jpath, evs, 256, foot ? "RightFootEvents" : "LeftFootEvents", tb, ub, err, sizeof err);
@@ -865,15 +921,28 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                     fnav_stance_finish(&st);
                 }
                 while ((ps = fnav_stance_pop(&st, &o)) == FNAV_OK) {
-                    if ((o.events & FNAV_STANCE_EV_STRIDE) && nsw < 1024) {
+                    if (o.events & FNAV_STANCE_EV_STRIDE) {
+                        if (nsw == swcap) {
+                            swcap = swcap > 0 ? 2 * swcap : 256;
+                            sw = (long (*)[2])ev_realloc(sw, (size_t)swcap, sizeof *sw);
+                            used = (int *)ev_realloc(used, (size_t)swcap, sizeof *used);
+                        }
                         sw[nsw][0] = pkt_of_time(&log, o.swing_t0_ns);
                         sw[nsw][1] = pkt_of_time(&log, o.swing_t1_ns);
                         nsw++;
                     }
-                    if ((o.events & FNAV_STANCE_EV_FOOT_OFF) && nfo < 1024) {
+                    if (o.events & FNAV_STANCE_EV_FOOT_OFF) {
+                        if (nfo == focap) {
+                            focap = focap > 0 ? 2 * focap : 256;
+                            fo = (long *)ev_realloc(fo, (size_t)focap, sizeof *fo);
+                        }
                         fo[nfo++] = pkt_of_time(&log, o.fo_t_ns);
                     }
-                    if ((o.events & FNAV_STANCE_EV_FOOT_STRIKE) && nfs < 1024) {
+                    if (o.events & FNAV_STANCE_EV_FOOT_STRIKE) {
+                        if (nfs == fscap) {
+                            fscap = fscap > 0 ? 2 * fscap : 256;
+                            fs = (long *)ev_realloc(fs, (size_t)fscap, sizeof *fs);
+                        }
                         fs[nfs++] = pkt_of_time(&log, o.fs_t_ns);
                     }
                 }
@@ -899,16 +968,13 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                     if (bfo < 0) {
                         continue;
                     }
-                    if (out->n_fo < 4096 && trial_fo < 256) {
-                        fo_e[out->n_fo] = (double)(bfo - evs[j][0]);
-                        fo_a[out->n_fo++] = fabs((double)(bfo - evs[j][0]));
-                        tfo[trial_fo++] = fabs((double)(bfo - evs[j][0]));
-                    }
-                    if (out->n_fs < 4096 && trial_fs < 256) {
-                        fs_e[out->n_fs] = (double)(bfs - evs[j][1]);
-                        fs_a[out->n_fs++] = fabs((double)(bfs - evs[j][1]));
-                        tfs[trial_fs++] = fabs((double)(bfs - evs[j][1]));
-                    }
+                    /* ne <= 256 (read_events): tfo and tfs hold them all */
+                    dvec_push(&fo_e, (double)(bfo - evs[j][0]));
+                    dvec_push(&fo_a, fabs((double)(bfo - evs[j][0])));
+                    tfo[trial_fo++] = fabs((double)(bfo - evs[j][0]));
+                    dvec_push(&fs_e, (double)(bfs - evs[j][1]));
+                    dvec_push(&fs_a, fabs((double)(bfs - evs[j][1])));
+                    tfs[trial_fs++] = fabs((double)(bfs - evs[j][1]));
                 }
             }
             if (write) {
@@ -925,12 +991,23 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             hx_log_free(&log);
         }
     }
-    out->fo_bias = hx_median(fo_e, out->n_fo);
-    out->fs_bias = hx_median(fs_e, out->n_fs);
-    out->fo_p90 = pct_rank(fo_a, out->n_fo, 90.0);
-    out->fs_p90 = pct_rank(fs_a, out->n_fs, 90.0);
-    out->fo_med = hx_median(fo_a, out->n_fo);
-    out->fs_med = hx_median(fs_a, out->n_fs);
+    out->n_fo = fo_a.n;
+    out->n_fs = fs_a.n;
+    out->fo_bias = hx_median(fo_e.v, fo_e.n);
+    out->fs_bias = hx_median(fs_e.v, fs_e.n);
+    out->fo_p90 = pct_rank(fo_a.v, fo_a.n, 90.0);
+    out->fs_p90 = pct_rank(fs_a.v, fs_a.n, 90.0);
+    out->fo_med = hx_median(fo_a.v, fo_a.n);
+    out->fs_med = hx_median(fs_a.v, fs_a.n);
+    free(fo_e.v);
+    free(fs_e.v);
+    free(fo_a.v);
+    free(fs_a.v);
+    free(sw);
+    free(used);
+    free(fo);
+    free(fs);
+    free(names);
 }
 
 /* ------------------------------------------------------------ main */
@@ -972,8 +1049,9 @@ int hx_cmd_eval(int argc, char **argv)
     const char *out_path, *json_path, *data;
     closure_t gx2, gx2_off, gx2_ar1, gx2_200, gx2_100;
     double xs = (double)NAN, xl = (double)NAN; /* the vendor-figure walks' 3-D closure, m */
-    static char xio[MAXF][160], other[2 * MAXF][330];
-    double xio3[MAXF], other3[2 * MAXF], other_hz[2 * MAXF];
+    ev_name_t *xio;
+    char (*other)[300]; /* "set/name" */
+    double *xio3, *other3, *other_hz;
     int nxio, nother = 0;
     fp_t fp, fp_off, fp_ar1, fp_100;
     vicon_t vi;
@@ -1036,21 +1114,6 @@ int hx_cmd_eval(int argc, char **argv)
             closedir(d);
         }
     }
-    {
-        /* the closed walks without a file-name convention of their own */
-        static const char *const osets[2][2] = { { "openshoe_c_820hz", ".txt" }, { "openshoe_square2", ".csv" } };
-        char dir[700], names[MAXF][160];
-        int k, j, n;
-        snprintf(dir, sizeof dir, "%s/xio_ngimu_gait", ev.data);
-        nxio = list_walks(dir, ".csv", xio);
-        for (k = 0; k < 2; k++) {
-            snprintf(dir, sizeof dir, "%s/%s", ev.data, osets[k][0]);
-            n = list_walks(dir, osets[k][1], names);
-            for (j = 0; j < n; j++) {
-                snprintf(other[nother++], sizeof other[0], "%.40s/%.159s", osets[k][0], names[j]);
-            }
-        }
-    }
     out_path = hx_arg(&a, "--out");
     if (out_path == NULL) {
         out_path = "docs/results.md";
@@ -1064,22 +1127,50 @@ int hx_cmd_eval(int argc, char **argv)
         hx_error("eval", "cannot write %s", out_path);
         return HX_EXIT_IO;
     }
+    {
+        /* the closed walks without a file-name convention of their own */
+        static const char *const osets[2][2] = { { "openshoe_c_820hz", ".txt" }, { "openshoe_square2", ".csv" } };
+        char dir[700];
+        ev_name_t *names[2];
+        int k, j, n[2];
+        snprintf(dir, sizeof dir, "%s/xio_ngimu_gait", ev.data);
+        nxio = list_walks(dir, ".csv", &xio);
+        for (k = 0; k < 2; k++) {
+            snprintf(dir, sizeof dir, "%s/%s", ev.data, osets[k][0]);
+            n[k] = list_walks(dir, osets[k][1], &names[k]);
+        }
+        other = (char (*)[300])ev_calloc((size_t)(n[0] + n[1]), sizeof *other);
+        for (k = 0; k < 2; k++) {
+            for (j = 0; j < n[k]; j++) {
+                snprintf(other[nother++], sizeof other[0], "%.40s/%s", osets[k][0], names[k][j]);
+            }
+            free(names[k]);
+        }
+        xio3 = (double *)ev_calloc((size_t)nxio, sizeof *xio3);
+        other3 = (double *)ev_calloc(2 * (size_t)nother, sizeof *other3);
+        other_hz = other3 + nother;
+    }
     len += (size_t)snprintf(cmdline, sizeof cmdline, "./bin/harness eval");
     for (i = 0; i < argc && len < sizeof cmdline; i++) {
         len += (size_t)snprintf(cmdline + len, sizeof cmdline - len, " %s", argv[i]);
     }
     {
         /* progress: one run per walk or trial and configuration */
-        char dir[700], names[MAXF][160];
+        char dir[700];
+        ev_name_t *names;
         int ngx2, nfp, nvi, nip;
         snprintf(dir, sizeof dir, "%s/openshoe_gx2", ev.data);
-        ngx2 = list_files(dir, "_data_inert.txt", names);
+        ngx2 = list_walks(dir, "_data_inert.txt", &names);
+        free(names);
         snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/own_3dmgx5_footprints", ev.data);
-        nfp = list_files(dir, "_imu.csv", names);
+        nfp = list_walks(dir, "_imu.csv", &names);
+        free(names);
         snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/vicon_3dmgx3", ev.data);
-        nvi = list_files(dir, "_imu.csv", names);
+        nvi = list_walks(dir, "_imu.csv", &names);
+        free(names);
         snprintf(dir, sizeof dir, "%s/ipol_gait_xsens", ev.data);
-        nip = 2 * list_files(dir, ".json", names);
+        nip = 2 * list_walks(dir, ".json", &names);
+        free(names);
         ev.total_runs = ngx2 + nxio + nother + nfp + nvi + nip;
         if (exp) {
             ev.total_runs += 5 * (ngx2 + nfp + nvi + nxio) + 2 * (ngx2 + nxio + nother) + nfp;
@@ -1124,7 +1215,7 @@ int hx_cmd_eval(int argc, char **argv)
     if (nxio == 0) {
         fprintf(ev.md, "No walks found in `%s/xio_ngimu_gait`.\n\n", ev.data);
     } else {
-        char p[700], note[200];
+        char p[1000], note[200];
         fprintf(ev.md, "| walk | path (m) | horizontal (m) | 3-D (m) | 3-D (%%) | vertical (m) | vendor 3-D (m) | "
                        "duplicates | gaps | longest interval (ms) | result |\n");
         fprintf(ev.md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
@@ -1134,7 +1225,7 @@ int hx_cmd_eval(int argc, char **argv)
             double vendor = xio_vendor_m(xio[i]);
             char vs[32];
             xio3[i] = (double)NAN;
-            snprintf(p, sizeof p, "%s/xio_ngimu_gait/%.159s", ev.data, xio[i]);
+            snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, xio[i]);
             if (replay(&ev, p, &ev.cfg, 0.0, 1, &t, &s, note, sizeof note) != 0 ||
                 no_closure(&ev, p, &s, &t, note, sizeof note)) {
                 not_run_row(&ev, 1, xio[i], 9, note);
@@ -1258,7 +1349,7 @@ int hx_cmd_eval(int argc, char **argv)
             closure_t g[5];
             fp_t fpv[5];
             vicon_t vv[5];
-            static double x3[5][MAXF];
+            double *x3 = (double *)ev_calloc(5 * (size_t)nxio, sizeof *x3);
             int nv = 0, b, ok[5];
             fprintf(ev.md, "## Paper experiment 1: AR(1) bias model on vs off\n\n"
                            "Same walks and configuration except `--bias-model` and the profile: off, and the AR(1) "
@@ -1279,9 +1370,9 @@ int hx_cmd_eval(int argc, char **argv)
                 footprints(&ev, &cv, 0.0, 0, &fpv[b]);
                 vicon(&ev, &cv, 0, &vv[b]);
                 for (i = 0; i < nxio; i++) {
-                    char p[700];
-                    snprintf(p, sizeof p, "%s/xio_ngimu_gait/%.159s", ev.data, xio[i]);
-                    x3[b][i] = closure_3d_m(&ev, p, &cv, 0.0);
+                    char p[1000];
+                    snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, xio[i]);
+                    x3[b * nxio + i] = closure_3d_m(&ev, p, &cv, 0.0);
                 }
                 nv++;
             }
@@ -1319,11 +1410,12 @@ int hx_cmd_eval(int argc, char **argv)
             EV_ROW("footprints | mean final-stride error (% of path)", "%.2f", fpv[b].final_pct_mean);
             EV_ROW("vicon | median of the per-trial median stride errors (m)", "%.3f", vv[b].stride_med);
             for (i = 0; i < nxio; i++) {
-                char label[200];
-                snprintf(label, sizeof label, "xio %.159s | 3-D closure (m)", xio[i]);
-                EV_ROW(label, "%.3f", x3[b][i]);
+                char label[300];
+                snprintf(label, sizeof label, "xio %s | 3-D closure (m)", xio[i]);
+                EV_ROW(label, "%.3f", x3[b * nxio + i]);
             }
 #undef EV_ROW
+            free(x3);
             (void)gx2_ar1;
             (void)gx2_off;
             (void)fp_ar1;
@@ -1356,7 +1448,7 @@ int hx_cmd_eval(int argc, char **argv)
                 char p[1000];
                 double r3[3];
                 if (i < nxio) {
-                    snprintf(p, sizeof p, "%s/xio_ngimu_gait/%.159s", ev.data, xio[i]);
+                    snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, xio[i]);
                     r3[0] = xio3[i];
                 } else {
                     snprintf(p, sizeof p, "%s/%.300s", ev.data, other[i - nxio]);
@@ -1379,6 +1471,10 @@ int hx_cmd_eval(int argc, char **argv)
         }
         fprintf(ev.md, "\n");
     }
+    free(xio);
+    free(other);
+    free(xio3);
+    free(other3);
     fprintf(ev.md, "## Targets\n\n| target | measured | status |\n|---|---|---|\n");
     {
         char v[96];

@@ -1,0 +1,51 @@
+#!/bin/sh
+# CLI tests of `harness eval` on data directories laid out like the shared
+# data but holding more or other files (a holdout of the same kinds): every
+# walk is evaluated or named, none is dropped without a word.
+# $HARNESS is the harness binary (set by `make test-cli`).
+set -u
+H=${HARNESS:-bin/harness}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/lib.sh"
+. "$(dirname "$0")/datadir.sh"
+
+# a still log (no stride: a failed run of a judged set, quick to replay)
+still() {
+    awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3f,0.01,0.02,9.81,0.001,0,0\n", i / 200 }' > "$1"
+}
+
+# --- more walks than eval once had room for (64 per folder, the rest
+# dropped without a word and exit 0): every one gets its row
+mkdir -p "$T/many/openshoe_gx2"
+still "$T/still.csv"
+i=1
+while [ $i -le 70 ]; do
+    ln -s "$T/still.csv" "$T/many/openshoe_gx2/Measurement_2000_${i}_data_inert.txt"
+    i=$((i + 1))
+done
+expect_exit 1 "eval: 70 walks in a folder" "$H" eval --no-experiments --data "$T/many" --out "$T/many.md" --json "$T/many.json"
+rows=$(grep -c "^| Measurement_2000_[0-9]* | - |" "$T/many.md")
+if [ "$rows" -eq 70 ] && grep -q '"failed_runs":[[:space:]]*70' "$T/many.json"; then
+    pass "every one of 70 walks has its row and run"; else fail "70 walks: $rows rows, $(grep -o '"failed_runs":[^,]*' "$T/many.json")"; fi
+
+if [ -n "$D" ]; then
+    D=$(cd "$D" && pwd) # the symlinks below need an absolute target
+    # 70 ipol trials (trial 1-1 under other numbers): 140 rows, and the
+    # summary counts them all
+    mkdir -p "$T/ipmany/ipol_gait_xsens"
+    i=1
+    while [ $i -le 70 ]; do
+        for x in .json _lf.txt _rf.txt; do ln -s "$D/ipol_gait_xsens/1-1$x" "$T/ipmany/ipol_gait_xsens/9-$i$x"; done
+        i=$((i + 1))
+    done
+    expect_exit 0 "eval: 70 ipol trials" "$H" eval --no-experiments --data "$T/ipmany" --out "$T/ipmany.md"
+    rows=$(grep -c "^| 9-[0-9]* | \(left\|right\) | 15 \| 17 |" "$T/ipmany.md")
+    if [ "$rows" -eq 140 ] && grep -q "^140 trials and feet: 2240 expert strides" "$T/ipmany.md"; then
+        pass "every one of 70 ipol trials is scored"; else fail "70 ipol trials: $rows rows; $(grep 'trials and feet' "$T/ipmany.md" | cut -c1-60)"; fi
+else
+    echo "skip shared-data checks (no ../shared/data; set FNAV_DATA_DIR)"
+fi
+
+echo "test_eval_data: $fails failure(s)"
+[ "$fails" -eq 0 ]
