@@ -102,10 +102,19 @@ static double pct_rank(double *v, int n, double p)
     return v[k < 0 ? 0 : (k >= n ? n - 1 : k)];
 }
 
-/* A licence, source or readme file of a folder, not data. */
+/* A licence, source or readme file of a folder, not data: its name holds
+ * "licen" (LICENSE.md, ISC_license.txt, LICENCE) or "readme", or starts
+ * with "source", "copying" or "notice", in any case. */
 static int doc_file(const char *name)
 {
-    return strncmp(name, "LICENSE", 7) == 0 || strncmp(name, "SOURCE", 6) == 0 || strncmp(name, "README", 6) == 0;
+    char low[sizeof(ev_name_t)];
+    size_t i;
+    for (i = 0; name[i] != '\0' && i + 1 < sizeof low; i++) {
+        low[i] = (char)(name[i] >= 'A' && name[i] <= 'Z' ? name[i] - 'A' + 'a' : name[i]);
+    }
+    low[i] = '\0';
+    return strstr(low, "licen") != NULL || strstr(low, "readme") != NULL || strncmp(low, "source", 6) == 0 ||
+           strncmp(low, "copying", 7) == 0 || strncmp(low, "notice", 6) == 0;
 }
 
 static int cmp_name(const void *a, const void *b)

@@ -29,6 +29,18 @@ rows=$(grep -c "^| Measurement_2000_[0-9]* | - |" "$T/many.md")
 if [ "$rows" -eq 70 ] && grep -q '"failed_runs":[[:space:]]*70' "$T/many.json"; then
     pass "every one of 70 walks has its row and run"; else fail "70 walks: $rows rows, $(grep -o '"failed_runs":[^,]*' "$T/many.json")"; fi
 
+# licence and readme files whatever their case (the shared data has
+# ISC_license.txt and LICENSE_BSD-2.txt): not walks (replayed and failed, exit 1)
+mkdir -p "$T/docs/openshoe_c_820hz" "$T/docs/xio_ngimu_gait" "$T/docs/openshoe_gx2"
+still "$T/docs/openshoe_c_820hz/walk.txt"
+for f in readme.txt ISC_license.txt Licence.txt SOURCE.txt; do echo "not a walk" > "$T/docs/openshoe_c_820hz/$f"; done
+echo "a,b" > "$T/docs/xio_ngimu_gait/Readme.csv"
+echo "not a walk" > "$T/docs/openshoe_gx2/README_data_inert.txt"
+expect_exit 0 "eval: licence and readme files in any case" "$H" eval --no-experiments --data "$T/docs" --out "$T/docs.md"
+if grep -qi "readme\|licen\|SOURCE.txt" "$T/docs.md" "$T/err"; then fail "a licence or readme file taken for a walk: $(grep -i 'readme\|licen\|SOURCE' "$T/docs.md" "$T/err")";
+else pass "licence and readme files are not walks, whatever their case"; fi
+if grep -q "^| openshoe_c_820hz/walk.txt | " "$T/docs.md"; then pass "the walk beside them is evaluated"; else fail "walk beside the docs missing"; fi
+
 if [ -n "$D" ]; then
     D=$(cd "$D" && pwd) # the symlinks below need an absolute target
     # 70 ipol trials (trial 1-1 under other numbers): 140 rows, and the
