@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "hx_cli.h"
 #include "hx_commands.h"
@@ -122,33 +123,122 @@ static int cmp_name(const void *a, const void *b)
     return strcmp((const char *)a, (const char *)b);
 }
 
-/* The walk files of a data set folder, sorted, however many (in *names,
- * to free()): names ending in suffix, without the folder's licence, source
- * and readme files. The count; 0 when dir cannot be read. */
-static int list_walks(const char *dir, const char *suffix, ev_name_t **names)
+/* The suffix of nsuf in suf that name ends in (and is longer than), or -1. */
+static int suffix_of(const char *name, const char *const *suf, int nsuf)
+{
+    size_t l = strlen(name);
+    int k;
+    for (k = 0; k < nsuf; k++) {
+        size_t ls = strlen(suf[k]);
+        if (l > ls && strcmp(name + l - ls, suf[k]) == 0) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+/* The data files of a data set folder, sorted, however many (in *names, to
+ * free()): names ending in one of the nsuf suffixes suf, without the
+ * folder's licence, source and readme files. With stem, each name without
+ * its suffix, once (a walk's IMU log and truth files, found from any of
+ * them: a truth file without its log is a walk that failed, not one to
+ * pass over). The count; 0 when dir cannot be read. */
+static int list_data(const char *dir, const char *const *suf, int nsuf, int stem, ev_name_t **names)
 {
     DIR *d = opendir(dir);
     struct dirent *e;
-    size_t n = 0, cap = 0, ls = strlen(suffix);
+    size_t n = 0, cap = 0, i, k;
     *names = NULL;
     if (d == NULL) {
         return 0;
     }
     while ((e = readdir(d)) != NULL) {
         size_t l = strlen(e->d_name);
-        if (l > ls && l < sizeof **names && strcmp(e->d_name + l - ls, suffix) == 0 && !doc_file(e->d_name)) {
+        int j = suffix_of(e->d_name, suf, nsuf);
+        if (j >= 0 && l < sizeof **names && !doc_file(e->d_name)) {
             if (n == cap) {
                 cap = cap > 0 ? 2 * cap : 64;
                 *names = (ev_name_t *)ev_realloc(*names, cap, sizeof **names);
             }
-            memcpy((*names)[n++], e->d_name, l + 1); /* l < 256 checked above */
+            memcpy((*names)[n], e->d_name, l + 1); /* l < 256 checked above */
+            if (stem) {
+                (*names)[n][l - strlen(suf[j])] = '\0';
+            }
+            n++;
         }
     }
     closedir(d);
     if (n > 1) {
         qsort(*names, n, sizeof **names, cmp_name);
     }
-    return (int)n;
+    for (i = k = 0; i < n; i++) {
+        if (k == 0 || strcmp((*names)[k - 1], (*names)[i]) != 0) {
+            memmove((*names)[k++], (*names)[i], sizeof **names);
+        }
+    }
+    return (int)k;
+}
+
+/* The walk files of a data set folder: names ending in suffix (list_data). */
+static int list_walks(const char *dir, const char *suffix, ev_name_t **names)
+{
+    return list_data(dir, &suffix, 1, 0, names);
+}
+
+/* The files of a data set folder that eval does not read (no data file's
+ * suffix, not a licence, source or readme file, not hidden): each warned
+ * about and named under the section, so that a walk under an unexpected
+ * name is not passed over in silence. They do not fail the run. */
+static void unread_files(ev_t *ev, const char *sub, const char *const *suf, int nsuf)
+{
+    ev_name_t *names = NULL;
+    char dir[700];
+    DIR *d;
+    struct dirent *e;
+    size_t n = 0, cap = 0, i;
+    int k;
+    snprintf(dir, sizeof dir, "%s/%s", ev->data, sub);
+    d = opendir(dir);
+    if (d == NULL) {
+        return;
+    }
+    while ((e = readdir(d)) != NULL) {
+        char path[1000];
+        struct stat sb;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        if (e->d_name[0] == '.' || doc_file(e->d_name) || suffix_of(e->d_name, suf, nsuf) >= 0 ||
+            stat(path, &sb) != 0 || !S_ISREG(sb.st_mode) || strlen(e->d_name) >= sizeof *names) {
+            continue;
+        }
+        if (n == cap) {
+            cap = cap > 0 ? 2 * cap : 16;
+            names = (ev_name_t *)ev_realloc(names, cap, sizeof *names);
+        }
+        snprintf(names[n++], sizeof *names, "%s", e->d_name);
+    }
+    closedir(d);
+    if (n == 0) {
+        return;
+    }
+    qsort(names, n, sizeof *names, cmp_name);
+    fprintf(ev->md, "Not read (no name of this set's data files, `*");
+    for (k = 0; k < nsuf; k++) {
+        fprintf(ev->md, "%s%s", k > 0 ? "`, `*" : "", suf[k]);
+    }
+    fprintf(ev->md, "`):");
+    for (i = 0; i < n; i++) {
+        hx_warn("eval", "%s/%s: not read: no name of this set's data files", dir, names[i]);
+        fprintf(ev->md, "%s `%s`", i > 0 ? "," : "", names[i]);
+    }
+    fprintf(ev->md, ".\n\n");
+    free(names);
+}
+
+/* 1 when path names a regular file (or a link to one). */
+static int is_file(const char *path)
+{
+    struct stat sb;
+    return stat(path, &sb) == 0 && S_ISREG(sb.st_mode);
 }
 
 /* A reader's or replay's message without the file's path in front of it
@@ -259,6 +349,15 @@ static void fmt_name(char *out, size_t size, const char *name, const char *strip
     const char *p = strstr(name, strip);
     snprintf(out, size, "%.*s", p ? (int)(p - name) : (int)strlen(name), name);
 }
+
+/* The data files of the sets whose walks have more than one: the IMU log
+ * first. */
+static const char *const k_fp_files[3] = { "_imu.csv", "_strides_gcp.csv", "_gcp_wcf_measured.csv" };
+static const char *const k_vicon_files[2] = { "_imu.csv", "_strides_gcp.csv" };
+static const char *const k_ipol_files[3] = { ".json", "_lf.txt", "_rf.txt" };
+static const char *const k_gx2_files[1] = { "_data_inert.txt" };
+static const char *const k_csv_files[1] = { ".csv" };
+static const char *const k_txt_files[1] = { ".txt" };
 
 /* ------------------------------------------------------------ closure */
 
@@ -465,7 +564,7 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
     double *fpct, *smed, *fm, sum = 0.0;
     int n, i, k = 0;
     snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/own_3dmgx5_footprints", ev->data);
-    n = list_walks(dir, "_imu.csv", &names);
+    n = list_data(dir, k_fp_files, 3, 1, &names);
     fpct = (double *)ev_calloc(3 * (size_t)n, sizeof *fpct);
     smed = fpct + n;
     fm = smed + n;
@@ -479,11 +578,14 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
         hx_nav_summary_t s;
         static gcp_t g;
         stride_res_t r;
-        size_t l = strlen(names[i]);
-        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
-        snprintf(gpath, sizeof gpath, "%s/%.*s_strides_gcp.csv", dir, (int)(l - 8), names[i]);
-        fmt_name(nm, sizeof nm, names[i], "_imu.csv");
-        if (read_gcp(gpath, &g, msg, sizeof msg) != 0) {
+        size_t l;
+        snprintf(path, sizeof path, "%s/%s_imu.csv", dir, names[i]);
+        snprintf(gpath, sizeof gpath, "%s/%s_strides_gcp.csv", dir, names[i]);
+        snprintf(nm, sizeof nm, "%s", names[i]);
+        if (!is_file(path)) {
+            snprintf(msg, sizeof msg, "no IMU log %.160s_imu.csv", names[i]);
+        }
+        if (!is_file(path) || read_gcp(gpath, &g, msg, sizeof msg) != 0) {
             fail(ev, path, note, sizeof note, msg);
             not_run_row(ev, write, nm, 6, note);
             continue;
@@ -591,7 +693,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
     double *med, *rms, *fin;
     int n, i, k = 0, rc;
     snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/vicon_3dmgx3", ev->data);
-    n = list_walks(dir, "_imu.csv", &names);
+    n = list_data(dir, k_vicon_files, 2, 1, &names);
     med = (double *)ev_calloc(3 * (size_t)n, sizeof *med);
     rms = med + n;
     fin = rms + n;
@@ -606,12 +708,17 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         static gcp_t g;
         stride_res_t r;
         double *vx, *vy;
-        size_t nv, l = strlen(names[i]);
+        size_t nv;
         int j;
-        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
-        snprintf(gpath, sizeof gpath, "%s/%.*s_strides_gcp.csv", dir, (int)(l - 8), names[i]);
-        fmt_name(nm, sizeof nm, names[i], "_imu.csv");
-        rc = read_gcp(gpath, &g, msg, sizeof msg);
+        snprintf(path, sizeof path, "%s/%s_imu.csv", dir, names[i]);
+        snprintf(gpath, sizeof gpath, "%s/%s_strides_gcp.csv", dir, names[i]);
+        snprintf(nm, sizeof nm, "%s", names[i]);
+        if (!is_file(path)) {
+            snprintf(msg, sizeof msg, "no IMU log %.160s_imu.csv", names[i]);
+            rc = -1;
+        } else {
+            rc = read_gcp(gpath, &g, msg, sizeof msg);
+        }
         if (rc == 0 && read_vicon(path, &vx, &vy, &nv) != 0) {
             snprintf(msg, sizeof msg, "no motion-capture position columns");
             rc = -1;
@@ -860,7 +967,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
     int n, i, foot;
     memset(out, 0, sizeof *out);
     snprintf(dir, sizeof dir, "%s/ipol_gait_xsens", ev->data);
-    n = list_walks(dir, ".json", &names);
+    n = list_data(dir, k_ipol_files, 3, 1, &names);
     out->files = n;
     if (write) {
         fprintf(ev->md, "| trial | foot | expert strides | detected | missed | spurious | median \\|FO error\\| | "
@@ -880,10 +987,9 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             size_t r;
             int trial_fo = 0, trial_fs = 0;
             double tfo[256], tfs[256];
-            size_t l = strlen(names[i]);
-            snprintf(jpath, sizeof jpath, "%s/%s", dir, names[i]);
-            snprintf(path, sizeof path, "%s/%.*s_%s.txt", dir, (int)(l - 5), names[i], foot ? "rf" : "lf");
-            snprintf(nm, sizeof nm, "%.*s | %s", (int)(l - 5), names[i], foot ? "right" : "left");
+            snprintf(jpath, sizeof jpath, "%s/%s.json", dir, names[i]);
+            snprintf(path, sizeof path, "%s/%s_%s.txt", dir, names[i], foot ? "rf" : "lf");
+            snprintf(nm, sizeof nm, "%s | %s", names[i], foot ? "right" : "left");
             ne = read_events(jpath, evs, 256, foot ? "RightFootEvents" : "LeftFootEvents", tb, ub, err, sizeof err);
             /* the other foot's swings, to find annotations with both feet in the air */
             noe = ne < 0 ? 0 : read_events(jpath, oevs, 256, foot ? "LeftFootEvents" : "RightFootEvents", otb, oub,
@@ -893,6 +999,10 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             }
             if (ne < 0) {
                 fail(ev, jpath, note, sizeof note, err);
+            } else if (!is_file(path)) {
+                snprintf(err, sizeof err, "no IMU log %.160s_%s.txt", names[i], foot ? "rf" : "lf");
+                fail(ev, path, note, sizeof note, err);
+                ne = -1;
             } else if (hx_log_load(&log, path, HX_FMT_AUTO, 0.0, err, sizeof err) < 0) {
                 fail(ev, path, note, sizeof note, err);
                 ne = -1;
@@ -1172,13 +1282,13 @@ int hx_cmd_eval(int argc, char **argv)
         ngx2 = list_walks(dir, "_data_inert.txt", &names);
         free(names);
         snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/own_3dmgx5_footprints", ev.data);
-        nfp = list_walks(dir, "_imu.csv", &names);
+        nfp = list_data(dir, k_fp_files, 3, 1, &names);
         free(names);
         snprintf(dir, sizeof dir, "%s/pyshoe_vicon_llio/vicon_3dmgx3", ev.data);
-        nvi = list_walks(dir, "_imu.csv", &names);
+        nvi = list_data(dir, k_vicon_files, 2, 1, &names);
         free(names);
         snprintf(dir, sizeof dir, "%s/ipol_gait_xsens", ev.data);
-        nip = 2 * list_walks(dir, ".json", &names);
+        nip = 2 * list_data(dir, k_ipol_files, 3, 1, &names);
         free(names);
         ev.total_runs = ngx2 + nxio + nother + nfp + nvi + nip;
         if (exp) {
@@ -1219,6 +1329,7 @@ int hx_cmd_eval(int argc, char **argv)
                 gx2.h_pct_med, met(gx2.h_pct_med <= 0.35), gx2.d3_pct_med, met(gx2.d3_pct_med <= 0.6), gx2.d3_pct_max,
                 met(gx2.d3_pct_max <= 1.2), gx2.vert_med, gx2.path_med);
     }
+    unread_files(&ev, "openshoe_gx2", k_gx2_files, 1);
 
     fprintf(ev.md, "## xio_ngimu_gait: return to start (closed loops, ~400 Hz, irregular timing)\n\n");
     if (nxio == 0) {
@@ -1258,6 +1369,7 @@ int hx_cmd_eval(int argc, char **argv)
         fprintf(ev.md, "\nThe vendor's figures come from an offline method that uses future samples; footnav is "
                        "causal.\n\n");
     }
+    unread_files(&ev, "xio_ngimu_gait", k_csv_files, 1);
 
     fprintf(ev.md, "## Other closed walks (no measured truth)\n\n"
                    "Walks that the MANIFEST describes as returning to the start (from the sources' plots, not "
@@ -1293,6 +1405,8 @@ int hx_cmd_eval(int argc, char **argv)
         }
         fprintf(ev.md, "\n");
     }
+    unread_files(&ev, "openshoe_c_820hz", k_txt_files, 1);
+    unread_files(&ev, "openshoe_square2", k_csv_files, 1);
 
     fprintf(ev.md, "## pyshoe_vicon_llio / own_3dmgx5_footprints: per-stride error against measured footprints\n\n"
                    "Estimated position at each stride sample against the footprint measured with a ruler, both "
@@ -1308,6 +1422,7 @@ int hx_cmd_eval(int argc, char **argv)
                        "SHOE detector, 1.43 m median final error, 4.3 %% mean.\n\n",
                 fp.final_pct_med, met(fp.final_pct_med <= 2.0), fp.final_pct_mean, fp.final_m_med, fp.stride_med);
     }
+    unread_files(&ev, "pyshoe_vicon_llio/own_3dmgx5_footprints", k_fp_files, 3);
 
     fprintf(ev.md, "## pyshoe_vicon_llio / vicon_3dmgx3: per-stride error against motion capture\n\n");
     vicon(&ev, &ev.cfg, 1, &vi);
@@ -1320,6 +1435,7 @@ int hx_cmd_eval(int argc, char **argv)
                        "median final error %.3f m.\n\n",
                 vi.n, vi.strides, vi.stride_med, vi.rms_med, vi.final_med);
     }
+    unread_files(&ev, "pyshoe_vicon_llio/vicon_3dmgx3", k_vicon_files, 2);
 
     fprintf(ev.md, "## ipol_gait_xsens: stance detection and gait events against the experts\n\n"
                    "Strides of the straight walking phases (inside the trial, clear of the U-turn, which the "
@@ -1346,6 +1462,7 @@ int hx_cmd_eval(int argc, char **argv)
                 ip.fo_med, ip.fo_bias, ip.fo_p90, ip.fs_med, ip.fs_bias, ip.fs_p90,
                 met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
     }
+    unread_files(&ev, "ipol_gait_xsens", k_ipol_files, 3);
 
     if (exp) {
         fnav_nav_config_t c2 = ev.cfg;

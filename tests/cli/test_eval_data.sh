@@ -43,6 +43,38 @@ if grep -q "^| openshoe_c_820hz/walk.txt | " "$T/docs.md"; then pass "the walk b
 
 if [ -n "$D" ]; then
     D=$(cd "$D" && pwd) # the symlinks below need an absolute target
+    # a walk's truth without its IMU log, an ipol trial's logs without their
+    # events, a trial without one foot's log: failed runs with their rows (the
+    # first two were passed over without a word); a file under no name of
+    # the set: warned about and named under its section
+    mkdir -p "$T/orph/pyshoe_vicon_llio/own_3dmgx5_footprints" "$T/orph/pyshoe_vicon_llio/vicon_3dmgx3" \
+        "$T/orph/ipol_gait_xsens" "$T/orph/openshoe_gx2"
+    ln -s "$D/pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_31_strides_gcp.csv" \
+        "$T/orph/pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_44_strides_gcp.csv"
+    ln -s "$D/pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-22-03_strides_gcp.csv" \
+        "$T/orph/pyshoe_vicon_llio/vicon_3dmgx3/2018-01-01-10-00-00_strides_gcp.csv"
+    for f in lf rf; do ln -s "$D/ipol_gait_xsens/1-1_$f.txt" "$T/orph/ipol_gait_xsens/4-14_$f.txt"; done
+    ln -s "$D/ipol_gait_xsens/1-2.json" "$T/orph/ipol_gait_xsens/4-13.json"
+    ln -s "$D/ipol_gait_xsens/1-2_lf.txt" "$T/orph/ipol_gait_xsens/4-13_lf.txt"
+    ln -s "$D/openshoe_gx2/Measurement_100521_2_data_inert.txt" "$T/orph/openshoe_gx2/Measurement_100601_8_data_inert.TXT"
+    expect_exit 1 "eval: truth without its log, logs without their events" "$H" eval --no-experiments --data "$T/orph" --out "$T/orph.md" --json "$T/orph.json"
+    if grep -q "^| SensorConnectData_44 | - |.*| not run: no IMU log SensorConnectData_44_imu.csv |" "$T/orph.md" &&
+        grep -q "^| 2018-01-01-10-00-00 | - |.*| not run: no IMU log 2018-01-01-10-00-00_imu.csv |" "$T/orph.md"; then
+        pass "a truth file without its IMU log keeps a row"; else fail "truth without log: $(grep 'not run' "$T/orph.md")"; fi
+    if [ "$(grep -c "^| 4-14 | \(left\|right\) | - |.*| not run: cannot open 4-14.json |" "$T/orph.md")" -eq 2 ] &&
+        grep -q "^| 4-13 | right | - |.*| not run: no IMU log 4-13_rf.txt |" "$T/orph.md" &&
+        grep -q "^| 4-13 | left | 15 |" "$T/orph.md"; then
+        pass "ipol logs without their events, a trial without one foot: rows"; else fail "ipol orphans: $(grep '^| 4-1' "$T/orph.md")"; fi
+    if grep -q '"failed_runs":[[:space:]]*5' "$T/orph.json"; then pass "each counted as a failed run"; else
+        fail "orphans: $(grep -o '"failed_runs":[^,]*' "$T/orph.json")"; fi
+    expect_err "Measurement_100601_8_data_inert.TXT: not read" "a file under no name of its set is warned about"
+    if grep -q "^Not read (no name of this set's data files, \`\*_data_inert.txt\`): \`Measurement_100601_8_data_inert.TXT\`." "$T/orph.md"; then
+        pass "and named under its section"; else fail "unread file: $(grep 'Not read' "$T/orph.md")"; fi
+    bad=$(awk '/^\|/ { l = $0; gsub(/\\\|/, "", l); n = gsub(/\|/, "", l);
+                 if (!intab) { want = n; intab = 1 } else if (n != want) print FILENAME ":" FNR }
+         !/^\|/ { intab = 0 }' "$T/orph.md")
+    if [ -z "$bad" ]; then pass "tables well formed"; else fail "rows with a wrong cell count: $bad"; fi
+
     # 70 ipol trials (trial 1-1 under other numbers): 140 rows, and the
     # summary counts them all
     mkdir -p "$T/ipmany/ipol_gait_xsens"
