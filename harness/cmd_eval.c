@@ -458,6 +458,8 @@ typedef struct {
     int n;
     long idx[GCP_MAX];
     double x[GCP_MAX], y[GCP_MAX];
+    int bad; /* rows that are not strideIndex, _, x, y with finite numbers */
+    int cut; /* a last line without its newline (cut off), not read */
 } gcp_t;
 
 /* The strides of a _strides_gcp.csv truth file (strideIndex, ..., x, y);
@@ -466,29 +468,39 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
 {
     FILE *f = fopen(path, "r");
     char line[512];
-    g->n = 0;
+    long row = 0;
+    g->n = g->bad = g->cut = 0;
     if (f == NULL) {
         snprintf(why, why_size, "no truth file %.160s", strrchr(path, '/') ? strrchr(path, '/') + 1 : path);
         return -1;
     }
-    if (fgets(line, sizeof line, f) == NULL) {
-        fclose(f);
-        snprintf(why, why_size, "empty truth file");
-        return -1;
-    }
     while (fgets(line, sizeof line, f) != NULL) {
         double a, b, c, d;
-        if (sscanf(line, "%lf,%lf,%lf,%lf", &a, &b, &c, &d) == 4 && isfinite(a) && isfinite(c) && isfinite(d)) {
-            if (g->n == GCP_MAX) {
-                fclose(f);
-                snprintf(why, why_size, "truth file has more than %d strides", GCP_MAX);
-                return -1;
-            }
-            g->idx[g->n] = (long)llround(a);
-            g->x[g->n] = c;
-            g->y[g->n] = d;
-            g->n++;
+        int ok = sscanf(line, "%lf,%lf,%lf,%lf", &a, &b, &c, &d) == 4 && isfinite(a) && isfinite(c) && isfinite(d);
+        size_t k = strspn(line, " \t\r\n");
+        if (row++ == 0 && !ok) {
+            continue; /* the header (a file without one starts with its first stride) */
         }
+        if (strchr(line, '\n') == NULL && feof(f)) {
+            /* the last line without its newline: the file was cut off, and
+             * the cut may have shortened the y it ends in (-0.5529 read as
+             * -5.529): not read, as the log reader's last line */
+            g->cut = line[k] != '\0';
+            break;
+        }
+        if (!ok) {
+            g->bad += line[k] != '\0'; /* blank lines are no rows */
+            continue;
+        }
+        if (g->n == GCP_MAX) {
+            fclose(f);
+            snprintf(why, why_size, "truth file has more than %d strides", GCP_MAX);
+            return -1;
+        }
+        g->idx[g->n] = (long)llround(a);
+        g->x[g->n] = c;
+        g->y[g->n] = d;
+        g->n++;
     }
     fclose(f);
     if (g->n < 2) {
@@ -501,7 +513,8 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
 typedef struct {
     double stride_err_med, final_err, path, final_pct, rms;
     int strides;
-    int skipped; /* strides whose sample lies outside the trajectory */
+    int skipped;  /* strides whose sample lies outside the trajectory */
+    int no_truth; /* strides without a truth position (motion capture lost) */
 } stride_res_t;
 
 /* Per-stride horizontal error in the truth's frame, which is the initial
@@ -514,19 +527,29 @@ static int stride_errors(const hx_traj_t *t, const gcp_t *g, stride_res_t *r)
 {
     double e[GCP_MAX], se2 = 0.0, path = 0.0;
     double x0, y0;
-    int i, n = 0;
+    int i, n = 0, prev = 0;
     long i0 = g->idx[0];
-    if (i0 < 0 || (size_t)i0 >= t->n) {
+    r->path = 0.0;
+    r->skipped = r->no_truth = 0;
+    if (i0 < 0 || (size_t)i0 >= t->n || !isfinite(g->x[0]) || !isfinite(g->y[0])) {
         return -1;
     }
     x0 = (double)t->f[i0].pos_m[0];
     y0 = (double)t->f[i0].pos_m[1];
-    r->path = 0.0;
-    r->skipped = 0;
     for (i = 1; i < g->n; i++) {
         long k = g->idx[i];
         double dx, dy;
-        path += hypot(g->x[i] - g->x[i - 1], g->y[i] - g->y[i - 1]);
+        if (!isfinite(g->x[i]) || !isfinite(g->y[i])) {
+            /* the path runs from the stride before to the next with a position */
+            if (k < 0 || (size_t)k >= t->n) {
+                r->skipped++;
+            } else {
+                r->no_truth++;
+            }
+            continue;
+        }
+        path += hypot(g->x[i] - g->x[prev], g->y[i] - g->y[prev]);
+        prev = i;
         if (k < 0 || (size_t)k >= t->n) {
             r->skipped++;
             continue;
@@ -554,7 +577,37 @@ typedef struct {
 /* stride_errors' failure as a reason */
 static void no_strides(ev_t *ev, const char *path, char *why, size_t why_size)
 {
-    fail(ev, path, why, why_size, "fewer than 2 truth strides fall inside the replayed samples");
+    fail(ev, path, why, why_size, "fewer than 2 truth strides with a position fall inside the replayed samples");
+}
+
+/* Append "; what" (or "what" to an empty note). */
+static void note_add(char *note, size_t size, const char *what)
+{
+    size_t len = strlen(note);
+    snprintf(note + len, size - len, "%s%s", len > 0 ? "; " : "", what);
+}
+
+/* The strides a walk's figures leave out, and the truth rows not read, in
+ * its row's note. */
+static void stride_notes(char *note, size_t size, const gcp_t *g, const stride_res_t *r)
+{
+    char buf[120];
+    if (r->skipped > 0) {
+        snprintf(buf, sizeof buf, "%d stride%s outside the log not scored", r->skipped, r->skipped == 1 ? "" : "s");
+        note_add(note, size, buf);
+    }
+    if (r->no_truth > 0) {
+        snprintf(buf, sizeof buf, "%d stride%s without a truth position not scored", r->no_truth,
+                 r->no_truth == 1 ? "" : "s");
+        note_add(note, size, buf);
+    }
+    if (g->bad > 0) {
+        snprintf(buf, sizeof buf, "%d unreadable truth row%s ignored", g->bad, g->bad == 1 ? "" : "s");
+        note_add(note, size, buf);
+    }
+    if (g->cut) {
+        note_add(note, size, "truth's last line cut off (no newline): not read");
+    }
 }
 
 static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, int write, fp_t *out)
@@ -615,10 +668,7 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
             no_strides(ev, path, note, sizeof note);
             not_run_row(ev, write, nm, 6, note);
         } else {
-            if (r.skipped > 0 && note[0] == '\0') {
-                snprintf(note, sizeof note, "%d stride%s outside the log not scored", r.skipped,
-                         r.skipped == 1 ? "" : "s");
-            }
+            stride_notes(note, sizeof note, &g, &r);
             if (write) {
                 fprintf(ev->md, "| %s | %d | %.1f | %.3f | %.3f | %.3f | %.2f | %s |\n", nm, r.strides, r.path,
                         r.stride_err_med, r.rms, r.final_err, r.final_pct, note);
@@ -642,42 +692,54 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
 }
 
 /* Vicon: every stride of the trials against the motion-capture position at
- * the same sample (its frame is also the IMU's initial heading frame). */
+ * the same sample (its frame is also the IMU's initial heading frame). The
+ * position of every sample (columns 8 and 9), one entry per data row as the
+ * log reader counts them (blank and '#' lines are none), so that stride
+ * indices stay sample indices: NaN where a row has none (a lost marker) or
+ * is a last line without its newline (the cut may have shortened it). 0, or
+ * -1 when the file cannot be read or no row has a position. */
 static int read_vicon(const char *path, double **vx, double **vy, size_t *n)
 {
     FILE *f = fopen(path, "r");
     char line[512];
-    size_t cap = 0;
+    size_t cap = 0, have = 0;
+    int header = 1;
     *vx = *vy = NULL;
     *n = 0;
-    if (f == NULL || fgets(line, sizeof line, f) == NULL) {
-        if (f != NULL) {
-            fclose(f);
-        }
+    if (f == NULL) {
         return -1;
     }
     while (fgets(line, sizeof line, f) != NULL) {
         double v[9];
-        if (sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6], &v[7],
-                   &v[8]) != 9) {
+        const char *q = line + strspn(line, " \t");
+        int ok;
+        if (line[strspn(line, " \t\r\n\v\f")] == '\0' || *q == '#') {
             continue;
         }
-        if (*n == cap) {
-            size_t nc = cap ? cap * 2 : 4096;
-            double *a = (double *)realloc(*vx, nc * sizeof *a), *b = (double *)realloc(*vy, nc * sizeof *b);
-            if (a) *vx = a;
-            if (b) *vy = b;
-            if (!a || !b) {
-                fclose(f);
-                return -1;
-            }
-            cap = nc;
+        if (header) {
+            header = 0;
+            continue;
         }
-        (*vx)[*n] = v[7];
-        (*vy)[*n] = v[8];
+        ok = sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6],
+                    &v[7], &v[8]) == 9 &&
+             isfinite(v[7]) && isfinite(v[8]) && !(strchr(line, '\n') == NULL && feof(f));
+        if (*n == cap) {
+            cap = cap ? cap * 2 : 4096;
+            *vx = (double *)ev_realloc(*vx, cap, sizeof **vx);
+            *vy = (double *)ev_realloc(*vy, cap, sizeof **vy);
+        }
+        (*vx)[*n] = ok ? v[7] : (double)NAN;
+        (*vy)[*n] = ok ? v[8] : (double)NAN;
         (*n)++;
+        have += ok;
     }
     fclose(f);
+    if (have == 0) {
+        free(*vx);
+        free(*vy);
+        *vx = *vy = NULL;
+        return -1;
+    }
     return 0;
 }
 
@@ -730,10 +792,9 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         }
         /* truth = the motion capture at the stride samples */
         for (j = 0; j < g.n; j++) {
-            if (g.idx[j] >= 0 && (size_t)g.idx[j] < nv) {
-                g.x[j] = vx[g.idx[j]];
-                g.y[j] = vy[g.idx[j]];
-            }
+            const int in = g.idx[j] >= 0 && (size_t)g.idx[j] < nv;
+            g.x[j] = in ? vx[g.idx[j]] : (double)NAN;
+            g.y[j] = in ? vy[g.idx[j]] : (double)NAN;
         }
         free(vx);
         free(vy);
@@ -745,6 +806,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
             no_strides(ev, path, note, sizeof note);
             not_run_row(ev, write, nm, 4, note);
         } else {
+            stride_notes(note, sizeof note, &g, &r);
             if (write) {
                 fprintf(ev->md, "| %s | %d | %.3f | %.3f | %.3f | %s |\n", nm, r.strides, r.stride_err_med, r.rms,
                         r.final_err, note);

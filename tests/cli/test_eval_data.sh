@@ -75,6 +75,35 @@ if [ -n "$D" ]; then
          !/^\|/ { intab = 0 }' "$T/orph.md")
     if [ -z "$bad" ]; then pass "tables well formed"; else fail "rows with a wrong cell count: $bad"; fi
 
+    # truth files: footprint walk 31's truth cut off mid-line (its last y,
+    # -0.5529..., read as -5.529 gave a 5.3 m final error without a word) and
+    # without its header (its first stride, the reference, was taken for the
+    # header); a vicon trial whose motion capture is lost (NaN, an empty
+    # cell) at a stride, and one whose log is cut in half
+    FP="$D/pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_31"
+    VI="$D/pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-28-39"
+    P="$T/truth/pyshoe_vicon_llio/own_3dmgx5_footprints"; V="$T/truth/pyshoe_vicon_llio/vicon_3dmgx3"
+    mkdir -p "$P" "$V"
+    for w in cut nohead; do ln -s "${FP}_imu.csv" "$P/${w}_imu.csv"; done
+    head -c $(($(wc -c < "${FP}_strides_gcp.csv") - 20)) "${FP}_strides_gcp.csv" > "$P/cut_strides_gcp.csv"
+    tail -n +2 "${FP}_strides_gcp.csv" > "$P/nohead_strides_gcp.csv"
+    n=$(($(wc -l < "${FP}_strides_gcp.csv") - 2))
+    row=$(($(sed -n 6p "${VI}_strides_gcp.csv" | cut -d, -f1 | awk '{ printf "%d", $1 }') + 2)) # the 5th stride's line
+    awk -F, -v r=$row 'BEGIN { OFS = "," } NR == r { $8 = "nan" } { print }' "${VI}_imu.csv" > "$V/lost_imu.csv"
+    awk -F, -v r=$row 'BEGIN { OFS = "," } NR == r { $8 = ""; $9 = "" } { print }' "${VI}_imu.csv" > "$V/empty_imu.csv"
+    head -n $(($(wc -l < "${VI}_imu.csv") / 2)) "${VI}_imu.csv" > "$V/half_imu.csv"
+    for w in lost empty half; do ln -s "${VI}_strides_gcp.csv" "$V/${w}_strides_gcp.csv"; done
+    expect_exit 0 "eval: truth files cut, without header, motion capture lost" "$H" eval --no-experiments --data "$T/truth" --out "$T/truth.md"
+    if grep -q "^| cut | $((n - 1)) | .*| truth's last line cut off (no newline): not read |" "$T/truth.md"; then
+        pass "a truth file cut off mid-line: its last row not read, and noted"; else fail "cut truth: $(grep '^| cut' "$T/truth.md")"; fi
+    if grep -q "^| nohead | $n | " "$T/truth.md"; then pass "a truth file without a header keeps its first stride"; else
+        fail "headerless truth: $(grep '^| nohead' "$T/truth.md")"; fi
+    if grep -q "^| lost | [0-9]* | [0-9.]* | [0-9.]* | [0-9.]* | 1 stride without a truth position not scored |" "$T/truth.md" &&
+        grep -q "^| empty | [0-9]* | [0-9.]* | [0-9.]* | [0-9.]* | 1 stride without a truth position not scored |" "$T/truth.md"; then
+        pass "a stride without motion capture is left out and noted"; else fail "lost motion capture: $(grep '^| \(lost\|empty\)' "$T/truth.md")"; fi
+    if grep -q "^| half | [0-9]* |.*| [0-9]* strides outside the log not scored |" "$T/truth.md"; then
+        pass "vicon strides outside the log are noted"; else fail "vicon log cut: $(grep '^| half' "$T/truth.md")"; fi
+    if grep -qi "nan" "$T/truth.md"; then fail "nan in the results: $(grep -i '| nan\|nan |' "$T/truth.md")"; else pass "no nan in the figures"; fi
     # 70 ipol trials (trial 1-1 under other numbers): 140 rows, and the
     # summary counts them all
     mkdir -p "$T/ipmany/ipol_gait_xsens"
