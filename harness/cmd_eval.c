@@ -310,8 +310,14 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
         return -1;
     }
     if (rc == 1) {
-        /* e.g. a truncated last line: every sample before it was used */
+        /* e.g. a malformed line: every sample before it was used */
         snprintf(note, note_size, "input ends early (%.150s)", after_path(err, path, buf, sizeof buf));
+    }
+    if (t->cut_lines > 0) {
+        /* the reader's warning, in the row: the recording was cut off
+         * mid-write (a walk cut short is no closed loop) */
+        size_t len = strlen(note);
+        snprintf(note + len, note_size - len, "%slast line cut off mid-write: not read", len > 0 ? "; " : "");
     }
     if (!t->aligned) {
         /* no still period: no navigation to evaluate (its figures are NaN) */

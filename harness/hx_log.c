@@ -74,7 +74,6 @@ struct hx_reader {
     long index;
     int have_prev;
     int last_line_open;         /* the last line read had no newline (EOF) */
-    long cut_lines;             /* incomplete last lines ignored */
     int64_t prev_t_ns;
     double prev_counter;
     /* GX2 timer state */
@@ -787,7 +786,7 @@ static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
         st = next_text_fields(r, s);
         if (st != FNAV_OK) {
             r->err[0] = '\0';
-            r->cut_lines++;
+            r->stats.cut_lines++;
             add_warn(r, "%s:%ld: last line is incomplete (recording cut off mid-write); ignored", r->path,
                      r->stats.lines);
             return FNAV_END;
@@ -796,7 +795,7 @@ static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
             /* it parsed, but it ends in a value the reader uses, which the
              * cut may have shortened (8.448539 read as 8): one sample is
              * dropped rather than a wrong one read */
-            r->cut_lines++;
+            r->stats.cut_lines++;
             add_warn(r, "%s:%ld: last line has no newline and ends in a value the reader uses, which may be cut "
                         "(recording cut off mid-write); ignored", r->path, r->stats.lines);
             return FNAV_END;

@@ -54,6 +54,7 @@ typedef struct {
     long skipped_bytes;     /**< .bin bytes skipped while resynchronising */
     long lines;             /**< text lines consumed */
     int clean_end;          /**< .bin: END record seen with matching count */
+    long cut_lines;         /**< text: an incomplete last line ignored (cut off mid-write; 0 or 1) */
 } hx_read_stats_t;
 
 typedef struct hx_reader hx_reader_t;

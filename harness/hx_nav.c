@@ -584,6 +584,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             hx_log_free(&raw);
             return -1;
         }
+        if (traj != NULL) {
+            traj->cut_lines = raw.stats.cut_lines;
+        }
         hx_log_free(&raw);
         pc.mem = &res;
         pc.total = (double)res.n;
@@ -645,6 +648,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         traj->window = nav.stance.win;
         traj->align = nav.align.result;
         traj->aligned = nav.aligned;
+        if (r != NULL) {
+            traj->cut_lines = hx_reader_stats(r)->cut_lines;
+        }
         if (flags & HX_REPLAY_AXES) {
             hx_axes_finish(pc.axes, &traj->axes);
         } else {

@@ -104,6 +104,16 @@ if [ -n "$D" ]; then
     if grep -q "^| half | [0-9]* |.*| [0-9]* strides outside the log not scored |" "$T/truth.md"; then
         pass "vicon strides outside the log are noted"; else fail "vicon log cut: $(grep '^| half' "$T/truth.md")"; fi
     if grep -qi "nan" "$T/truth.md"; then fail "nan in the results: $(grep -i '| nan\|nan |' "$T/truth.md")"; else pass "no nan in the figures"; fi
+    # a walk cut off mid-line two thirds in (no closed loop): the reader's
+    # warning is in its row, not only on standard error
+    mkdir -p "$T/cutw/openshoe_gx2"
+    W="$D/openshoe_gx2/Measurement_100521_2_data_inert.txt"
+    head -c $(($(wc -c < "$W") * 2 / 3)) "$W" > "$T/cutw/openshoe_gx2/Measurement_100601_13_data_inert.txt"
+    ln -s "$W" "$T/cutw/openshoe_gx2/"
+    expect_exit 0 "eval: a walk cut off mid-line" "$H" eval --no-experiments --data "$T/cutw" --out "$T/cutw.md"
+    if grep -q "^| Measurement_100601_13 | [0-9].* | last line cut off mid-write: not read |" "$T/cutw.md" &&
+        grep -q "^| Measurement_100521_2 | [0-9].* |  |" "$T/cutw.md"; then
+        pass "a walk cut off mid-line is noted in its row"; else fail "cut walk: $(grep '^| Measurement' "$T/cutw.md")"; fi
     # 70 ipol trials (trial 1-1 under other numbers): 140 rows, and the
     # summary counts them all
     mkdir -p "$T/ipmany/ipol_gait_xsens"
