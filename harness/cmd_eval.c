@@ -1239,7 +1239,7 @@ int hx_cmd_eval(int argc, char **argv)
     ev_name_t *xio;
     char (*other)[300]; /* "set/name" */
     double *xio3, *other3, *other_hz;
-    int nxio, nother = 0;
+    int nxio, nother = 0, nother_set[2];
     fp_t fp, fp_off, fp_ar1, fp_100;
     vicon_t vi;
     ipol_t ip;
@@ -1325,6 +1325,7 @@ int hx_cmd_eval(int argc, char **argv)
         for (k = 0; k < 2; k++) {
             snprintf(dir, sizeof dir, "%s/%s", ev.data, osets[k][0]);
             n[k] = list_walks(dir, osets[k][1], &names[k]);
+            nother_set[k] = n[k];
         }
         other = (char (*)[300])ev_calloc((size_t)(n[0] + n[1]), sizeof *other);
         for (k = 0; k < 2; k++) {
@@ -1447,6 +1448,11 @@ int hx_cmd_eval(int argc, char **argv)
     if (nother == 0) {
         fprintf(ev.md, "No walks found in `%s/openshoe_c_820hz` or `%s/openshoe_square2`.\n\n", ev.data, ev.data);
     } else {
+        /* one of the two sets absent: said, as every other absent set */
+        if (nother_set[0] == 0 || nother_set[1] == 0) {
+            fprintf(ev.md, "No walks found in `%s/%s`.\n\n", ev.data,
+                    nother_set[0] == 0 ? "openshoe_c_820hz" : "openshoe_square2");
+        }
         char p[1000], note[200];
         fprintf(ev.md, "| walk | rate (Hz) | path (m) | horizontal (m) | 3-D (m) | 3-D (%%) | vertical (m) | "
                        "frames in stance (%%) | strides | note |\n");

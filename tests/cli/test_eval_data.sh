@@ -40,6 +40,8 @@ expect_exit 0 "eval: licence and readme files in any case" "$H" eval --no-experi
 if grep -qi "readme\|licen\|SOURCE.txt" "$T/docs.md" "$T/err"; then fail "a licence or readme file taken for a walk: $(grep -i 'readme\|licen\|SOURCE' "$T/docs.md" "$T/err")";
 else pass "licence and readme files are not walks, whatever their case"; fi
 if grep -q "^| openshoe_c_820hz/walk.txt | " "$T/docs.md"; then pass "the walk beside them is evaluated"; else fail "walk beside the docs missing"; fi
+if grep -q "^No walks found in \`$T/docs/openshoe_square2\`." "$T/docs.md"; then pass "the other closed set's absence is said"; else
+    fail "absent openshoe_square2 not named"; fi
 
 if [ -n "$D" ]; then
     D=$(cd "$D" && pwd) # the symlinks below need an absolute target
