@@ -41,6 +41,7 @@ typedef struct {
     fnav_nav_config_t cfg;
     FILE *md;
     int runs, failures;
+    int main_failures; /* failures of the main runs, before the experiments (each failed walk once) */
     hx_progress_t prog;
     double total_runs;
     cJSON *json;
@@ -1537,6 +1538,7 @@ int hx_cmd_eval(int argc, char **argv)
                 met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
     }
     unread_files(&ev, "ipol_gait_xsens", k_ipol_files, 3);
+    ev.main_failures = ev.failures;
 
     if (exp) {
         fnav_nav_config_t c2 = ev.cfg;
@@ -1706,11 +1708,15 @@ int hx_cmd_eval(int argc, char **argv)
         fprintf(ev.md, "| ipol: median event timing error <= 2 samples | %s | %s |\n", v,
                 target(ip.trials, ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
     }
-    if (ev.failures > 0) {
-        fprintf(ev.md, "\n**%d run(s) failed** (\"not run\" in the tables above, with the reason; the experiments' "
-                       "runs are in the warnings). The figures and targets leave them out: they are judged on "
-                       "incomplete data.\n",
-                ev.failures);
+    if (ev.main_failures > 0) {
+        fprintf(ev.md, "\n**%d run(s) failed** (\"not run\" in the tables above, with the reason). The figures and "
+                       "targets leave them out: they are judged on incomplete data.\n",
+                ev.main_failures);
+    }
+    if (ev.failures > ev.main_failures) {
+        fprintf(ev.md, "\n%d of the experiments' runs failed (the same walks repeated with other settings; named in "
+                       "the warnings).\n",
+                ev.failures - ev.main_failures);
     }
     hx_progress_end(&ev.prog);
     if (ev.md != stdout && fclose(ev.md) != 0) {
@@ -1735,7 +1741,8 @@ int hx_cmd_eval(int argc, char **argv)
         jnum(j, "ipol_spurious_strict", ip.trials > 0 ? (double)ip.strict_spurious : (double)NAN);
         jnum(j, "ipol_fo_err_median", ip.trials > 0 ? ip.fo_med : (double)NAN);
         jnum(j, "ipol_fs_err_median", ip.trials > 0 ? ip.fs_med : (double)NAN);
-        jnum(j, "failed_runs", (double)ev.failures);
+        jnum(j, "failed_runs", (double)ev.main_failures);
+        jnum(j, "failed_experiment_runs", exp ? (double)(ev.failures - ev.main_failures) : (double)NAN);
         rc = hx_write_json(json_path, j, err, sizeof err);
         cJSON_Delete(j);
         if (rc != 0) {
@@ -1744,7 +1751,8 @@ int hx_cmd_eval(int argc, char **argv)
         }
     }
     if (ev.failures > 0) {
-        hx_error("eval", "%d run(s) failed (see the warnings); results are incomplete", ev.failures);
+        hx_error("eval", "%d run(s) failed, and %d of the experiments' runs (see the warnings); results are incomplete",
+                 ev.main_failures, ev.failures - ev.main_failures);
         return HX_EXIT_DATA;
     }
     return HX_EXIT_OK;

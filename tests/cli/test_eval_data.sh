@@ -29,6 +29,17 @@ rows=$(grep -c "^| Measurement_2000_[0-9]* | - |" "$T/many.md")
 if [ "$rows" -eq 70 ] && grep -q '"failed_runs":[[:space:]]*70' "$T/many.json"; then
     pass "every one of 70 walks has its row and run"; else fail "70 walks: $rows rows, $(grep -o '"failed_runs":[^,]*' "$T/many.json")"; fi
 
+# --- with the experiments on, a bad walk is one failed run (its repeats
+# under the experiments' settings are counted apart: they were added to
+# failed_runs, up to eight per walk)
+mkdir -p "$T/exp/openshoe_gx2"
+ln -s "$T/still.csv" "$T/exp/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+expect_exit 1 "eval with experiments: one bad walk" "$H" eval --data "$T/exp" --out "$T/exp.md" --json "$T/exp.json"
+if grep -q '"failed_runs":[[:space:]]*1,' "$T/exp.json" && grep -q '"failed_experiment_runs":[[:space:]]*[1-9]' "$T/exp.json" \
+    && grep -q '\*\*1 run(s) failed\*\*' "$T/exp.md" && grep -q "of the experiments' runs failed" "$T/exp.md"; then
+    pass "a bad walk counts once; the experiments' repeats apart"
+else fail "experiments: $(grep -o '"failed[a-z_]*":[^,]*' "$T/exp.json")"; fi
+
 # licence and readme files whatever their case (the shared data has
 # ISC_license.txt and LICENSE_BSD-2.txt): not walks (replayed and failed, exit 1)
 mkdir -p "$T/docs/openshoe_c_820hz" "$T/docs/xio_ngimu_gait" "$T/docs/openshoe_gx2"
