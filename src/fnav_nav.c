@@ -193,9 +193,30 @@ static void start_filter(fnav_nav_t *nav)
     FNAV_ASSERT(st == FNAV_OK);
     (void)st;
     if (nav->have_hold) {
-        /* after a reset: continue from the last good position and heading
-         * (the alignment defines yaw 0; rotate it to the held heading) */
-        fnav_quat_t qz = fnav_quat_from_rotvec(fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), nav->hold_yaw_rad));
+        /* after a reset: continue from the last good position and heading.
+         * The alignment defines yaw 0; turn it about n's z by the psi that
+         * brings it closest to the held attitude, min ||Rz(psi) C_new -
+         * C_held||_F (Wahba's problem with the rotation restricted to the
+         * vertical axis): with M = C_held C_new^T, trace(Rz(psi)^T M) =
+         * cos(psi) (M00 + M11) + sin(psi) (M10 - M01) + M22, largest at
+         * psi = atan2(M10 - M01, M00 + M11). Equal to the held ZYX yaw
+         * when the tilts agree; unlike that yaw (the heading of b's x
+         * axis), it is defined for every mounting, also with b's x axis
+         * vertical, where yaw and roll split by the noise and holding the
+         * yaw turned the path by 87 and 110 deg at the two renewals of the
+         * xio short walk turned upright (a review,
+         * 2026-11-28; test_nav test_realign_x_vertical). */
+        fnav_mat3_t ch = fnav_quat_to_dcm(nav->hold_q_nb), cn = fnav_quat_to_dcm(nav->ukf.q_nb);
+        fnav_real_t m00 = FNAV_R(0.0), m11 = FNAV_R(0.0), m10 = FNAV_R(0.0), m01 = FNAV_R(0.0), psi;
+        fnav_quat_t qz;
+        for (i = 0; i < 3; i++) {
+            m00 += ch.m[0][i] * cn.m[0][i];
+            m11 += ch.m[1][i] * cn.m[1][i];
+            m10 += ch.m[1][i] * cn.m[0][i];
+            m01 += ch.m[0][i] * cn.m[1][i];
+        }
+        psi = fnav_atan2(m10 - m01, m00 + m11);
+        qz = fnav_quat_from_rotvec(fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), psi));
         nav->ukf.q_nb = fnav_quat_normalize(fnav_quat_mul(qz, nav->ukf.q_nb));
         nav->ukf.pos_m = nav->hold_pos_m;
         for (i = 0; i < 3; i++) {
@@ -226,7 +247,12 @@ static void hold_last_frame(fnav_nav_t *nav)
     }
     if (good) {
         nav->hold_pos_m = fnav_vec3(g->pos_m[0], g->pos_m[1], g->pos_m[2]);
-        nav->hold_yaw_rad = fnav_isfinite(g->euler_rad[2]) ? g->euler_rad[2] : FNAV_R(0.0);
+        /* the frame's attitude from its ZYX angles: near pitch +-90 deg
+         * roll and yaw each carry rounding / cos(pitch), but the attitude
+         * they give back does not (T&W eq. 3.47 is smooth in them) */
+        int att = fnav_isfinite(g->euler_rad[0]) && fnav_isfinite(g->euler_rad[1]) && fnav_isfinite(g->euler_rad[2]);
+        nav->hold_q_nb = att ? fnav_quat_from_euler(g->euler_rad[0], g->euler_rad[1], g->euler_rad[2])
+                              : fnav_quat_identity();
         for (i = 0; i < 3; i++) {
             nav->hold_pos_var_m2[i] = g->p_diag[FNAV_UKF_P + i];
         }
@@ -337,7 +363,9 @@ static void fill_frame(fnav_nav_t *nav, const fnav_stance_out_t *o, uint32_t fla
                 fr->pos_m[i] = nav->hold_pos_m.v[i];
                 fr->p_diag[FNAV_UKF_P + i] = nav->hold_pos_var_m2[i];
             }
-            fr->euler_rad[2] = nav->hold_yaw_rad;
+            const fnav_quat_t *q = &nav->hold_q_nb; /* its ZYX yaw (fnav_quat_to_euler) */
+            fr->euler_rad[2] = fnav_atan2(FNAV_R(2.0) * (q->q[0] * q->q[3] + q->q[1] * q->q[2]),
+                                          FNAV_R(1.0) - FNAV_R(2.0) * (q->q[2] * q->q[2] + q->q[3] * q->q[3]));
         }
     }
     sync_health(nav);

@@ -150,7 +150,7 @@ typedef struct {
     int renewing;           /**< aligned, no stride yet: still periods renew the alignment */
     int have_hold;          /**< a reset holds the last good position and heading */
     fnav_vec3_t hold_pos_m; /**< position carried over a reset, n frame, m */
-    fnav_real_t hold_yaw_rad; /**< heading carried over a reset, rad */
+    fnav_quat_t hold_q_nb;  /**< attitude carried over a reset: its heading is kept */
     fnav_real_t hold_pos_var_m2[3]; /**< position variance carried over a reset, m^2 */
 } fnav_nav_t;
 
