@@ -714,11 +714,27 @@ size_t hx_nav_stance_mids(const hx_traj_t *t, size_t *idx, size_t max)
     return n;
 }
 
+void hx_euler_dcm(const fnav_real_t e[3], double c[3][3])
+{
+    /* C_nb = Rz(yaw) Ry(pitch) Rx(roll) (Titterton & Weston eq. 3.47) */
+    double sr = sin((double)e[0]), cr = cos((double)e[0]), sp = sin((double)e[1]), cp = cos((double)e[1]),
+           sy = sin((double)e[2]), cy = cos((double)e[2]);
+    c[0][0] = cp * cy;
+    c[0][1] = sr * sp * cy - cr * sy;
+    c[0][2] = cr * sp * cy + sr * sy;
+    c[1][0] = cp * sy;
+    c[1][1] = sr * sp * sy + cr * cy;
+    c[1][2] = cr * sp * sy - sr * cy;
+    c[2][0] = -sp;
+    c[2][1] = sr * cp;
+    c[2][2] = cr * cp;
+}
+
 void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
 {
     size_t i, n, *mid;
     size_t first = t->n;
-    double yaw_prev = 0.0, yaw_acc = 0.0, zupt = 0.0;
+    double yaw_prev = 0.0, yaw_acc = 0.0, zupt = 0.0, ref_b[3];
     memset(s, 0, sizeof *s);
     for (i = 0; i < t->n; i++) {
         if (t->f[i].flags & FNAV_FRAME_ALIGNED) {
@@ -750,26 +766,54 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
         s->end_pos_m[0] = s->end_pos_m[1] = s->end_pos_m[2] = (double)NAN;
         return;
     }
-    for (i = first; i < t->n; i++) {
-        const fnav_nav_frame_t *f = &t->f[i];
-        double yaw = (double)f->euler_rad[2];
-        if (i > first) {
-            const fnav_nav_frame_t *g = &t->f[i - 1];
-            double dx = (double)f->pos_m[0] - (double)g->pos_m[0], dy = (double)f->pos_m[1] - (double)g->pos_m[1],
-                   dz = (double)f->pos_m[2] - (double)g->pos_m[2];
-            double dyaw = yaw - yaw_prev;
-            s->integrated_path_m += sqrt(dx * dx + dy * dy + dz * dz);
-            while (dyaw > M_PI) {
-                dyaw -= 2.0 * M_PI;
-            }
-            while (dyaw < -M_PI) {
-                dyaw += 2.0 * M_PI;
-            }
-            yaw_acc += dyaw;
+    {
+        /* The heading is that of a body-fixed vector level at the first
+         * aligned frame: n's x axis seen in b then (row 0 of C_nb). Not the
+         * Euler yaw, which is the heading of b's x axis and has none when
+         * that axis is vertical: a sensor mounted with x up or down, or
+         * tilted so that the swing pitches x through the vertical (the
+         * footprint walks' 3DM-GX5 sits at 37 deg and passes 89 deg), where
+         * yaw flips by up to 180 deg between frames and the unwrapping
+         * counted thousands of degrees. Frames in which the vector is
+         * steeper than 60 deg (horizontal part below 1/2) are skipped; the
+         * step across them is unwrapped to (-180, 180], more than a foot
+         * turns in one swing. */
+        double c[3][3];
+        int k, have = 0;
+        hx_euler_dcm(t->f[first].euler_rad, c);
+        for (k = 0; k < 3; k++) {
+            ref_b[k] = c[0][k];
         }
-        yaw_prev = yaw;
-        if (f->flags & FNAV_FRAME_ZUPT) {
-            zupt += 1.0;
+        for (i = first; i < t->n; i++) {
+            const fnav_nav_frame_t *f = &t->f[i];
+            double hx, hy;
+            if (i > first) {
+                const fnav_nav_frame_t *g = &t->f[i - 1];
+                double dx = (double)f->pos_m[0] - (double)g->pos_m[0], dy = (double)f->pos_m[1] - (double)g->pos_m[1],
+                       dz = (double)f->pos_m[2] - (double)g->pos_m[2];
+                s->integrated_path_m += sqrt(dx * dx + dy * dy + dz * dz);
+            }
+            hx_euler_dcm(f->euler_rad, c);
+            hx = c[0][0] * ref_b[0] + c[0][1] * ref_b[1] + c[0][2] * ref_b[2];
+            hy = c[1][0] * ref_b[0] + c[1][1] * ref_b[1] + c[1][2] * ref_b[2];
+            if (hx * hx + hy * hy >= 0.25) {
+                double yaw = atan2(hy, hx);
+                if (have) {
+                    double dyaw = yaw - yaw_prev;
+                    while (dyaw > M_PI) {
+                        dyaw -= 2.0 * M_PI;
+                    }
+                    while (dyaw <= -M_PI) {
+                        dyaw += 2.0 * M_PI;
+                    }
+                    yaw_acc += dyaw;
+                }
+                yaw_prev = yaw;
+                have = 1;
+            }
+            if (f->flags & FNAV_FRAME_ZUPT) {
+                zupt += 1.0;
+            }
         }
     }
     s->heading_change_deg = yaw_acc * 180.0 / M_PI;

@@ -129,6 +129,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
 
 /* ------------------------------------------------------------ summary */
 
+/** C_nb (double) of a frame's ZYX Euler angles (roll, pitch, yaw), rad. */
+void hx_euler_dcm(const fnav_real_t e[3], double c[3][3]);
+
 /** Summary figures of a trajectory (docs/harness.md lists the JSON keys). */
 typedef struct {
     double duration_s;        /**< first to last frame, s */
@@ -140,7 +143,7 @@ typedef struct {
     double end_h_m, end_3d_m; /**< return-to-start error, m */
     double end_h_pct, end_3d_pct; /**< the same in % of path_m */
     double vertical_m;        /**< height change start -> end (up positive), m */
-    double heading_change_deg; /**< unwrapped yaw change, deg */
+    double heading_change_deg; /**< unwrapped heading change of a body vector level at the alignment, deg */
     long strides;             /**< completed swings */
     long stance_phases;       /**< stance phases (segmented) */
     double stance_fraction;   /**< share of frames with the ZUPT flag */
