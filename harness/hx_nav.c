@@ -75,6 +75,7 @@ static const param_t k_params[] = {
     { "zaru", P_INT, 1.0, "zero-angular-rate updates 0/1" },
     { "zaru_sigma_dps", P_REAL, 3.14159265358979323846 / 180.0, "ZARU noise, deg/s" },
     { "zaru_gate", P_REAL, 1.0, "ZARU gate on the innovation's NIS, chi-square 3 dof (0: none)" },
+    { "zaru_after_s", P_REAL, 1.0, "ZARU only once a stance has lasted this long, s" },
     { "realign_min_s", P_REAL, 1.0, "renew the alignment on still periods this long before the first stride, s (0: off)" },
     { "tilt_sd_deg", P_REAL, 3.14159265358979323846 / 180.0, "initial roll/pitch sd, deg" },
     { "yaw_sd_deg", P_REAL, 3.14159265358979323846 / 180.0, "initial yaw sd, deg" },
@@ -118,6 +119,7 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     if (strcmp(key, "zaru") == 0) return &c->zaru;
     if (strcmp(key, "zaru_sigma_dps") == 0) return &c->zaru_sigma_rps;
     if (strcmp(key, "zaru_gate") == 0) return &c->zaru_gate;
+    if (strcmp(key, "zaru_after_s") == 0) return &c->zaru_after_s;
     if (strcmp(key, "realign_min_s") == 0) return &c->realign_min_s;
     if (strcmp(key, "tilt_sd_deg") == 0) return &c->tilt_sd_rad;
     if (strcmp(key, "yaw_sd_deg") == 0) return &c->yaw_sd_rad;
@@ -758,6 +760,30 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
             }
         }
     }
+    s->longest_stand_at_s = (double)NAN;
+    if (first < t->n) {
+        /* the longest stance run with motion before and after it, in the
+         * navigated frames: a stand in the middle of a walk */
+        int moved = 0, open = 0;
+        size_t run0 = first;
+        for (i = first; i < t->n; i++) {
+            const int stance = (t->f[i].flags & FNAV_FRAME_STANCE) != 0u;
+            if (stance && !open && moved) {
+                open = 1;
+                run0 = i;
+            } else if (!stance) {
+                if (open) {
+                    const double d = 1e-9 * (double)(t->f[i].t_ns - t->f[run0].t_ns);
+                    if (d > s->longest_stand_s) {
+                        s->longest_stand_s = d;
+                        s->longest_stand_at_s = 1e-9 * (double)(t->f[run0].t_ns - t->f[0].t_ns);
+                    }
+                    open = 0;
+                }
+                moved = 1;
+            }
+        }
+    }
     if (first >= t->n) {
         /* never aligned: no position, so no return-to-start figure (null in
          * the JSON, as other figures that cannot be computed) */
@@ -900,6 +926,12 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                    "detector\")\n",
                 100.0 * s->stance_fraction, s->strides, s->duration_s);
     }
+    if (s->longest_stand_s > HX_NAV_LONG_STAND_S && st->zarus == 0u && st->zaru_gated == 0u) {
+        fprintf(f, "note              the foot stood %.0f s between strides (from %.1f s): with ZUPTs only the heading "
+                   "drifts with the gyro bias there; --param zaru=1 --param zaru_after_s=1 holds it (docs/navigation.md, "
+                   "\"Zero-velocity update\")\n",
+                s->longest_stand_s, s->longest_stand_at_s);
+    }
     if (s->before_align_s > HX_NAV_LATE_ALIGN_S) {
         fprintf(f, "note              the detector saw %.1f s of motion before the alignment (%.2f s into the log): that "
                    "part of the walk is not navigated (the log starts while moving?)\n",
@@ -957,6 +989,7 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddItemToObject(root, "stance_fraction", num(s->stance_fraction));
     cJSON_AddItemToObject(root, "aligned_at_s", num(s->aligned_at_s));
     cJSON_AddItemToObject(root, "before_alignment_s", num(s->before_align_s));
+    cJSON_AddItemToObject(root, "longest_stand_s", num(s->longest_stand_s));
     {
         cJSON *ax = cJSON_CreateObject();
         int checked = t->axes.best_map[0] != '\0';

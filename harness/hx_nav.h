@@ -149,7 +149,14 @@ typedef struct {
     double stance_fraction;   /**< share of frames with the ZUPT flag */
     double aligned_at_s;      /**< first aligned frame after the first frame, s (NaN: never aligned) */
     double before_align_s;    /**< frames before it the detector called motion (not navigated), s */
+    double longest_stand_s;   /**< longest stance between two motions after the alignment, s (0: none) */
+    double longest_stand_at_s; /**< its start, s after the first frame (NaN: none) */
 } hx_nav_summary_t;
+
+/** A stand between strides longer than this is noted in the summary when
+ *  the ZARU is off: with ZUPTs only the heading drifts with the gyro bias
+ *  while the foot stands (docs/navigation.md, "Zero-velocity update"). */
+#define HX_NAV_LONG_STAND_S 10.0
 
 /** A log that starts moving: more motion than this before the alignment is
  *  noted in the summary (that part of the walk is not navigated). */

@@ -27,6 +27,7 @@ const fnav_nav_config_t fnav_nav_config_default = {
     0,                  /* zaru */
     FNAV_R(0.01),       /* zaru_sigma_rps */
     FNAV_R(11.34),      /* zaru_gate: chi-square, 3 dof, 99 % */
+    FNAV_R(0.0),        /* zaru_after_s */
     FNAV_R(3.0),        /* realign_min_s: docs/navigation.md, "Initial alignment" */
     FNAV_R(0.5) * D2R,  /* tilt_sd_rad */
     FNAV_R(0.001),      /* yaw_sd_rad */
@@ -93,7 +94,8 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
         cfg->diverge_undone == 0u || !(cfg->realign_min_s >= FNAV_R(0.0)) || !fnav_isfinite(cfg->realign_min_s) ||
         /* a still period ends at the alignment's max_still_s, so a longer
          * minimum would never renew */
-        cfg->realign_min_s > cfg->align.max_still_s) {
+        cfg->realign_min_s > cfg->align.max_still_s || !(cfg->zaru_after_s >= FNAV_R(0.0)) ||
+        !fnav_isfinite(cfg->zaru_after_s)) {
         return FNAV_E_CONFIG;
     }
     for (b = 0; b < sizeof *nav; b++) {
@@ -290,6 +292,7 @@ void fnav_nav_reset(fnav_nav_t *nav)
     }
     nav->aligned = 0;
     nav->undone_run = 0;
+    nav->stance_s = FNAV_R(0.0);
     st = fnav_align_init(&nav->align, &nav->align.cfg);
     FNAV_ASSERT(st == FNAV_OK); /* the configuration was accepted at init */
     (void)st;
@@ -457,6 +460,9 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
             fill_frame(nav, o, flags, fr);
             return;
         }
+        if (!o->stance) {
+            nav->stance_s = FNAV_R(0.0);
+        }
         if (o->stance) {
             if (nav->settle_pending) {
                 st = fnav_ukf_settle_start(&nav->ukf);
@@ -466,7 +472,8 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
             if (fnav_ukf_zupt(&nav->ukf, fnav_vec3_from(s->gyro_rps)) == FNAV_OK) {
                 flags |= FNAV_FRAME_ZUPT;
             }
-            if (nav->cfg.zaru) {
+            nav->stance_s += dt_used;
+            if (nav->cfg.zaru && nav->stance_s >= nav->cfg.zaru_after_s) {
                 st = fnav_ukf_zaru(&nav->ukf, fnav_vec3_from(s->gyro_rps));
                 (void)st;
             }

@@ -75,6 +75,13 @@ static void test_config(void **state)
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
     c.realign_min_s = c.align.max_still_s + FNAV_R(0.5);
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* the ZARU's standstill time: 0 or more, finite */
+    c = fnav_nav_config_default;
+    assert_true(c.zaru_after_s == FNAV_R(0.0));
+    c.zaru_after_s = FNAV_R(-0.1);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c.zaru_after_s = (fnav_real_t)INFINITY;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
 }
 
 /* One frame per accepted sample, in order; rejected samples change nothing;
@@ -308,6 +315,74 @@ static fnav_sample_t settle_walk(long k)
         swing(&s);
     }
     return s;
+}
+
+/* zaru_after_s: with the ZARU on, a stance gets zero-angular-rate updates
+ * only once it has lasted that long. Walking stances of 0.6 s get none at
+ * 1 s and every sample at 0; the closing stand gets them from 1 s into
+ * its stance, on every later sample. */
+static void test_zaru_after(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    const long n = 400 + 4 * 200 + 600;
+    const fnav_real_t after[2] = { FNAV_R(1.0), FNAV_R(0.0) };
+    long k;
+    int pass;
+    (void)state;
+    c.stance.rate_hz = FNAV_R(200.0);
+    c.zaru = 1;
+    for (pass = 0; pass < 2; pass++) {
+        uint32_t prev_count = 0u;
+        int64_t t_prev = 0;
+        double stance_s = 0.0, first_s = -1.0;
+        long walking_zarus = 0, final_zarus = 0, final_frames = 0;
+        c.zaru_after_s = after[pass];
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+        for (k = 0; k < n; k++) {
+            fnav_sample_t s = still(k);
+            long ph = k - 400;
+            if (ph >= 0 && ph < 4 * 200 && ph % 200 < 80) {
+                swing(&s);
+            }
+            assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+            while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+                const uint32_t count = nav.stats.zarus + nav.stats.zaru_gated;
+                const int stance = (fr.flags & FNAV_FRAME_STANCE) != 0u;
+                const int aligned = (fr.flags & FNAV_FRAME_ALIGNED) != 0u;
+                const int zaru = count != prev_count;
+                if (aligned && nav.stats.strides > 0u) {
+                    stance_s = stance ? stance_s + (double)(fr.t_ns - t_prev) * 1e-9 : 0.0;
+                    if ((long)fr.seq < 400 + 4 * 200) {
+                        walking_zarus += zaru;
+                    } else if (stance) {
+                        final_frames++;
+                        final_zarus += zaru;
+                        if (zaru && first_s < 0.0) {
+                            first_s = stance_s;
+                        }
+                    }
+                }
+                prev_count = count;
+                t_prev = fr.t_ns;
+            }
+        }
+        if (pass == 0) {
+            assert_int_equal(walking_zarus, 0);
+            /* from 1 s into the stand on (the stance's first frame counts
+             * no time of its own, hence a sample's tolerance) */
+            assert_true(first_s >= 1.0 - 0.0051 && first_s <= 1.0 + 0.0051);
+            /* the stand's stance began with the last stride's, 0.6 s
+             * (120 frames) before the frames counted here, so its first
+             * 0.4 s (about 80 frames) lack the ZARU */
+            assert_true(final_frames > 500);
+            assert_true(final_zarus >= final_frames - 85 && final_zarus <= final_frames - 75);
+        } else {
+            assert_true(walking_zarus > 100);
+            assert_int_equal(final_zarus, final_frames);
+        }
+    }
 }
 
 static void test_settle_onsets(void **state)
@@ -887,6 +962,7 @@ int main(void)
         cmocka_unit_test(test_timing),
         cmocka_unit_test(test_step),
         cmocka_unit_test(test_run_port),
+        cmocka_unit_test(test_zaru_after),
         cmocka_unit_test(test_settle_onsets),
         cmocka_unit_test(test_settle_not_at_alignment),
         cmocka_unit_test(test_realign),

@@ -88,6 +88,7 @@ typedef struct {
     int zaru;                          /**< 1: zero-angular-rate updates in stance */
     fnav_real_t zaru_sigma_rps;        /**< ZARU noise, rad/s */
     fnav_real_t zaru_gate;             /**< ZARU validation gate, chi-square 3 dof (fnav_ukf.h); 0: none */
+    fnav_real_t zaru_after_s;          /**< ZARU only once a stance has lasted this long, s (0: from its start) */
     fnav_real_t realign_min_s;         /**< until the first stride, every clean still period of at
                                             least this long renews the alignment; 0: off;
                                             at most align.max_still_s, where a period ends
@@ -147,6 +148,7 @@ typedef struct {
     uint32_t undone_run;    /**< consecutive undone filter steps */
     int prev_stance;        /**< the previous frame was decided stance */
     int settle_pending;     /**< a stance began: start the settling state at its first ZUPT */
+    fnav_real_t stance_s;   /**< time the current stance has lasted, s */
     int renewing;           /**< aligned, no stride yet: still periods renew the alignment */
     int have_hold;          /**< a reset holds the last good position and heading */
     fnav_vec3_t hold_pos_m; /**< position carried over a reset, n frame, m */

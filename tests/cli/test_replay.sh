@@ -447,6 +447,17 @@ if grep -q -- "--rate" "$T/out"; then fail "eval --help offers --rate, which it 
 expect_exit 2 "replay: an unknown option" "$H" replay vectors/walk.bin --bogus
 expect_err "harness replay: error: unknown option '--bogus'" "command-line errors use the error: prefix"
 
+# a 15 s stand between strides: noted with the ZARU remedy and measured in
+# the JSON; with the standstill ZARU on there is no note
+"$H" sim --motion stand:5,walk:12,stand:15,walk:12 --profile mtx --out "$T/stand.csv" >/dev/null 2>&1
+"$H" replay "$T/stand.csv" --json "$T/stand.json" > "$T/stand.out" 2>&1
+if grep -q "note .*stood 15 s between strides.*zaru_after_s=1" "$T/stand.out" \
+    && /usr/bin/env python3 -c "import json,sys; sys.exit(0 if 14.5 < json.load(open(sys.argv[1]))['longest_stand_s'] < 16.5 else 1)" "$T/stand.json"; then
+    pass "a long stand mid-walk is noted, longest_stand_s in the JSON"
+else fail "long stand: $(grep note "$T/stand.out"; grep -o '"longest_stand_s":[^,]*' "$T/stand.json")"; fi
+"$H" replay "$T/stand.csv" --param zaru=1 --param zaru_after_s=1 > "$T/stand2.out" 2>&1
+if grep -q "stood" "$T/stand2.out"; then fail "the stand is noted with the ZARU on"; else pass "no stand note with the standstill ZARU on"; fi
+
 if [ "$fails" -ne 0 ]; then
     echo "test_replay.sh: $fails failure(s)"
     exit 1
