@@ -973,9 +973,9 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
     /* Bonferroni over the channels and the four tests of each (G and max |z|,
      * whole log and held-out segment) */
     double alpha = o->alpha / (double)(SG_NCH * 4);
-    int ch, g, have_prof = 0;
+    int ch, g, have_prof = 0, nact = 0;
     hx_progress_t progs, *prog = o->quiet ? NULL : &progs;
-    double done = 0.0;
+    double done = 0.0, budget, share;
     fnav_profile_t prof;
     if (o->profile != NULL) {
         char e2[256];
@@ -991,24 +991,33 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
         snprintf(err, err_size, "out of memory");
         return -1;
     }
+    /* progress: a unit per channel for its features, then per channel a
+     * budget of its baseline and at most lattice + line + the prescreen's
+     * candidates per step, each simulated twice with the sandwich split's
+     * second fold; a channel that needs less jumps to the end of its share
+     * when it is done (an estimate of about four candidates per channel in
+     * all reached 100 % a third into a one-hour log's run) */
+    for (ch = 0; ch < SG_NCH; ch++) {
+        nact += !r->constant[ch];
+    }
+    budget = 1.0 + (double)o->max_steps * (double)(o->prescreen + 2) * (r->segs.sandwich ? 2.0 : 1.0);
     if (prog != NULL) {
-        /* a baseline and about four candidates per channel, each simulated
-         * twice with the sandwich split's second fold */
-        hx_progress_start(prog, "simgap", (double)SG_NCH * (1.0 + 4.0 * (r->segs.sandwich ? 2.0 : 1.0)));
+        hx_progress_start(prog, "simgap", (double)nact * (1.0 + budget));
     }
     r->confident = 1;
+    /* first every channel's features and whether the log supports a
+     * confident answer on it, so that a channel too short for one stops the
+     * attribution of every channel, not of those after it only */
     for (ch = 0; ch < SG_NCH; ch++) {
         sg_chres_t *c = &r->ch[ch];
         sg_table_t tfit, thold;
-        sg_fit_t bf;
-        double mean = 0.0, tmax;
-        twinset_t ts;
         size_t k;
+        if (r->constant[ch]) {
+            continue; /* nothing to test: not analysed (constant_channels) */
+        }
         for (k = 0; k < (size_t)r->n; k++) {
             x[k] = ch < 3 ? log->acc[k][ch] : log->gyr[k][ch - 3];
-            mean += x[k];
         }
-        mean /= (double)r->n;
         c->q_full = sg_lattice_step(x, r->n, &c->q_full_z);
         /* the lattice domain exists only where the values lie on one */
         if (!(c->q_full_z > gsl_cdf_ugaussian_Qinv(0.5 * alpha))) {
@@ -1044,8 +1053,34 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
         }
         if (tfit.n < 4) {
             r->confident = 0;
-            snprintf(r->why, sizeof r->why, "the fit segment has fewer than 4 Allan points");
+            snprintf(r->why, sizeof r->why, "the fit segment (%.1f s) has fewer than 4 Allan points (channel %s)",
+                     (double)r->segs.total[SG_FIT] / r->rate_hz, sg_channel_name(ch));
+        }
+        done += 1.0;
+        if (prog != NULL) {
+            hx_progress_update(prog, done);
+        }
+    }
+    for (ch = 0; ch < SG_NCH; ch++) {
+        sg_chres_t *c = &r->ch[ch];
+        sg_table_t tfit;
+        sg_fit_t bf;
+        double mean = 0.0, tmax;
+        twinset_t ts;
+        size_t k;
+        if (r->constant[ch]) {
             continue;
+        }
+        share = done + budget; /* where this channel's share of the progress ends */
+        for (k = 0; k < (size_t)r->n; k++) {
+            x[k] = ch < 3 ? log->acc[k][ch] : log->gyr[k][ch - 3];
+            mean += x[k];
+        }
+        mean /= (double)r->n;
+        sg_table_from(&r->pl[ch][SG_FIT], r->real[ch][SG_FIT], ch, r->rate_hz, &r->segs, SG_FIT, &tfit);
+        if (tfit.n < 4) {
+            done = share;
+            continue; /* not analysed; the log is not confident (above) */
         }
         sg_evidence(x, &r->segs, r->rate_hz, c->q_full, &c->ev);
         if (r->segs.sandwich) {
@@ -1139,6 +1174,10 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             c->within_noise = !c->gap_hold;
         }
         c->gap = c->gap_full || c->gap_hold || c->nsel > 0;
+        done = share;
+        if (prog != NULL) {
+            hx_progress_update(prog, done);
+        }
     }
     if (prog != NULL) {
         hx_progress_end(prog);
@@ -1235,6 +1274,43 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
     return 0;
 }
 
+/* A channel that holds one value over the whole log (a stuck output, or
+ * noise below the output's step) has no noise to compare with a twin: its
+ * Allan variance is zero at every tau. Said as such (a warning; the summary
+ * and the JSON's constant_channels[]), rather than as a log too short for
+ * its Allan points; a static log's other channels are diagnosed without it.
+ * Every channel constant: -1 with err set (nothing to diagnose). */
+static int constant_channels(const hx_log_t *log, const char *path, sg_result_t *r, char *err, size_t err_size)
+{
+    int ch, nconst = 0;
+    for (ch = 0; ch < SG_NCH; ch++) {
+        const double v0 = ch < 3 ? log->acc[0][ch] : log->gyr[0][ch - 3];
+        size_t k;
+        for (k = 1; k < log->n; k++) {
+            if ((ch < 3 ? log->acc[k][ch] : log->gyr[k][ch - 3]) != v0) {
+                break;
+            }
+        }
+        r->constant[ch] = k == log->n;
+        r->constant_value[ch] = v0;
+        nconst += r->constant[ch];
+    }
+    if (nconst == SG_NCH) {
+        snprintf(err, err_size, "every channel holds one value over the whole log (stuck, or not recorded): "
+                                "nothing to diagnose");
+        return -1;
+    }
+    for (ch = 0; ch < SG_NCH && !r->opts.quiet; ch++) {
+        if (r->constant[ch]) {
+            hx_warn("simgap", "%s: channel %s holds one value (%.6g %s) over the whole log: stuck, or its noise is "
+                              "below the output's step; %s",
+                    path, sg_channel_name(ch), r->constant_value[ch], sg_channel_unit(ch),
+                    r->domain == 1 ? "not analysed" : "the walk is navigated with it as it is");
+        }
+    }
+    return 0;
+}
+
 int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_result_t *r, char *err, size_t err_size)
 {
     double t0 = hx_now_s();
@@ -1262,6 +1338,9 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
     r->domain_detected = sg_detect_domain(log, r->rate_hz);
     r->domain = o->domain != 0 ? o->domain : r->domain_detected;
     if (units_of_log(log, path, r, err, err_size) != 0) {
+        return -1;
+    }
+    if (constant_channels(log, path, r, err, err_size) != 0) {
         return -1;
     }
     /* static logs: fit on both ends, held out the middle (a warm-up at the

@@ -603,6 +603,9 @@ typedef struct {
     int confident;
     char why[256];            /**< too short: why */
     double tau_span_dec[SG_NCH]; /**< decades of tau with a tight interval on the held-out segment */
+    int constant[SG_NCH];     /**< the channel holds one value over the whole log (stuck, or its noise
+                                   below the output's step): nothing to test; static logs: not analysed */
+    double constant_value[SG_NCH]; /**< ... that value, u */
     sg_chres_t ch[SG_NCH];
     sg_plist_t pl[SG_NCH][SG_NSEG];      /**< points per channel and segment */
     double *real[SG_NCH][SG_NSEG];       /**< real values */

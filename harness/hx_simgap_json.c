@@ -76,8 +76,9 @@ static cJSON *cmp_json(const sg_cmp_t *c)
     add_num(o, "max_abs_z", c->maxz);
     add_num(o, "z_crit", c->z_crit);
     cJSON_AddBoolToObject(o, "significant", c->significant);
+    /* the static domains, each present (null: no point of it) */
     for (k = 0; k < SG_NDOM; k++) {
-        if (c->G_dom[k] == c->G_dom[k]) {
+        if (k == SG_ALLAN || k == SG_PSD || k == SG_LATTICE || k == SG_TIME || c->G_dom[k] == c->G_dom[k]) {
             add_num(d, sg_domain_name(k), c->G_dom[k]);
         }
     }
@@ -146,9 +147,9 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
     pts = cJSON_AddObjectToObject(o, "points");
     for (k = 0; k < SG_NSEG; k++) {
         cJSON_AddItemToObject(g, k_seg[k], cmp_json(&c->cmp[k]));
-        if (c->cmp_final[k].z != NULL) {
-            cJSON_AddItemToObject(gf, k_seg[k], cmp_json(&c->cmp_final[k]));
-        }
+        /* without an attribution (a log too short for one) the final model
+         * is the baseline */
+        cJSON_AddItemToObject(gf, k_seg[k], cmp_json(c->cmp_final[k].z != NULL ? &c->cmp_final[k] : &c->cmp[k]));
         if (k != SG_FIT) {
             cJSON_AddItemToObject(pts, k_seg[k], points_json(&r->pl[ch][k], r->real[ch][k], &c->cmp[k]));
         }
@@ -289,9 +290,21 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
             cJSON_AddItemToArray(a, loc_json(&r->ploc[i]));
         }
     }
+    a = cJSON_AddArrayToObject(root, "constant_channels");
+    for (ch = 0; ch < SG_NCH; ch++) {
+        if (r->constant[ch]) {
+            cJSON *co = cJSON_CreateObject();
+            cJSON_AddStringToObject(co, "channel", sg_channel_name(ch));
+            add_num(co, "value", r->constant_value[ch]);
+            cJSON_AddItemToArray(a, co);
+        }
+    }
     a = cJSON_AddArrayToObject(root, "locations");
     for (i = 0; i < r->nloc; i++) {
         cJSON_AddItemToArray(a, loc_json(&r->loc[i]));
+    }
+    if (r->nav != NULL) {
+        sg_nav_locations_json((const sg_nav_t *)r->nav, a);
     }
     o = cJSON_AddObjectToObject(root, "timing");
     cJSON_AddBoolToObject(o, "has_stamps", r->tim.have);

@@ -1643,6 +1643,9 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                 L->dom = pl->p[j].dom;
                 L->ch = pl->p[j].ch;
                 L->kind = pl->p[j].kind;
+                if (L->dom == SG_NAV && L->kind == SG_NAV_AXIS) {
+                    L->ch = (int)pl->p[j].x; /* the n-frame axis, 0 1 2 */
+                }
                 L->seg = SG_FULL;
                 L->x_lo = pl->p[j].x_lo;
                 L->x_hi = pl->p[j].x_hi;
@@ -1928,6 +1931,12 @@ static const char *kind_name(int k)
     return (k >= 0 && k < SG_NAV_NKIND) ? nm[k] : "?";
 }
 
+/* The n-frame axis of an `axis` point or location, with its leading space. */
+static const char *axis_name(int a)
+{
+    return a == 0 ? " x" : (a == 1 ? " y" : " z");
+}
+
 static void cand_text(char *b, size_t n, const navcand_t *cd)
 {
     const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)cd->id);
@@ -1990,8 +1999,9 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
             fprintf(f, "  gap: lattice %s, step %.4g, %.1f sigma %s the twin\n", sg_channel_name(L->ch), L->x_lo,
                     fabs(L->peak_z), L->peak_z > 0 ? "above" : "below");
         } else {
-            fprintf(f, "  gap: navigation %s, t %.1f-%.1f s, %.1f sigma %s the twin\n", kind_name(L->kind), L->x_lo,
-                    L->x_hi, fabs(L->peak_z), L->peak_z > 0 ? "above" : "below");
+            fprintf(f, "  gap: navigation %s%s, t %.1f-%.1f s, %.1f sigma %s the twin\n", kind_name(L->kind),
+                    L->kind == SG_NAV_AXIS ? axis_name(L->ch) : "", L->x_lo, L->x_hi, fabs(L->peak_z),
+                    L->peak_z > 0 ? "above" : "below");
         }
     }
     if (nv->nsteps > 0) {
@@ -2055,13 +2065,11 @@ static cJSON *cand_json(const navcand_t *cd)
         cJSON_AddStringToObject(p, "channel", sg_channel_name(cd->ch[i]));
         cJSON_AddStringToObject(p, "param", info->params[cd->k[i]].name);
         add_num(p, "value", cd->val[i]);
-        if (cd->has_eq) {
-            add_num(p, "trajectory_value", cd->eq[i]);
-        }
+        add_num(p, "trajectory_value", cd->has_eq ? cd->eq[i] : (double)NAN); /* null: not a linear family */
         cJSON_AddItemToArray(a, p);
     }
-    if (cd->nalt > 0) {
-        /* parameters the stances cannot tell from the first one */
+    {
+        /* parameters the stances cannot tell from the first one (empty: none) */
         cJSON *alt = cJSON_AddArrayToObject(o, "indistinguishable");
         for (i = 0; i < cd->nalt; i++) {
             cJSON *p = cJSON_CreateObject();
@@ -2123,6 +2131,35 @@ void sg_nav_verdict_json(const sg_nav_t *nv, cJSON *arr)
             cJSON_AddItemToArray(pa, p);
         }
         cJSON_AddItemToArray(arr, o);
+    }
+}
+
+void sg_nav_locations_json(const sg_nav_t *nv, cJSON *arr)
+{
+    size_t k;
+    for (k = 0; k < nv->nloc; k++) {
+        const sg_loc_t *L = &nv->loc[k];
+        cJSON *lo = cJSON_CreateObject();
+        if (L->dom == SG_LATTICE) {
+            cJSON_AddStringToObject(lo, "channel", sg_channel_name(L->ch));
+        } else {
+            cJSON_AddNullToObject(lo, "channel");
+        }
+        cJSON_AddStringToObject(lo, "domain", sg_domain_name(L->dom));
+        if (L->dom == SG_NAV) {
+            cJSON_AddStringToObject(lo, "kind", kind_name(L->kind));
+            if (L->kind == SG_NAV_AXIS) {
+                cJSON_AddStringToObject(lo, "axis", axis_name(L->ch) + 1);
+            }
+        }
+        cJSON_AddStringToObject(lo, "segment", "full");
+        add_num(lo, "x_lo", L->x_lo);
+        add_num(lo, "x_hi", L->x_hi);
+        cJSON_AddStringToObject(lo, "x_unit", L->dom == SG_LATTICE ? "u" : "s");
+        add_num(lo, "peak_z", L->peak_z);
+        add_num(lo, "ratio", L->ratio);
+        cJSON_AddNumberToObject(lo, "points", L->npts);
+        cJSON_AddItemToArray(arr, lo);
     }
 }
 

@@ -28,6 +28,9 @@ void sg_nav_verdict_text(const sg_nav_t *nv, FILE *f, int *first);
 /** The walk domain's selected effects appended to a JSON array of
  *  {effect, domain, channels, params[]} objects. */
 void sg_nav_verdict_json(const sg_nav_t *nv, struct cJSON *arr);
+/** Append the walk's gap locations (navigation points and lattices beyond the
+ * critical z, whole log) to the JSON array `locations`. */
+void sg_nav_locations_json(const sg_nav_t *nv, struct cJSON *arr);
 /** Print the walk domain's part of the summary. */
 void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r);
 void sg_nav_free(sg_nav_t *nv);

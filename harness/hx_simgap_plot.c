@@ -67,7 +67,11 @@ static int plot_domain(const sg_result_t *r, const char *dir, const char *cmd, i
         char nm[16];
         snprintf(nm, sizeof nm, "d%d", ch);
         if (!r->ch[ch].active) {
-            fprintf(p.gp, "set title '%s: not analysed'\nplot 1/0 notitle\n", sg_channel_name(ch));
+            /* an empty panel (gnuplot refuses a plot without a valid point,
+             * and the png would not be written) */
+            fprintf(p.gp, "set title '%s: not analysed%s'\nunset logscale xy\nset xrange [0:1]\nset yrange [0:1]\n"
+                          "plot -1 notitle\nset autoscale xy\nset logscale xy\n",
+                    sg_channel_name(ch), r->constant[ch] ? " (one value over the whole log)" : "");
             continue;
         }
         block(p.gp, nm, r, ch, dom);
@@ -116,7 +120,9 @@ static void z_panel(FILE *gp, const sg_result_t *r, int dom, char tag, const cha
     }
     fprintf(gp, "plot ");
     for (ch = 0; ch < SG_NCH; ch++) {
-        fprintf(gp, "$%c%d using 1:2 with %s title '%s', ", tag, ch, style, sg_channel_name(ch));
+        if (r->ch[ch].active) { /* a channel not analysed has no point (a warning from gnuplot) */
+            fprintf(gp, "$%c%d using 1:2 with %s lc %d title '%s', ", tag, ch, style, ch + 1, sg_channel_name(ch));
+        }
     }
     fprintf(gp, "%.3f with lines dt 2 lc rgb 'black' notitle, %.3f with lines dt 2 lc rgb 'black' notitle\n", zc, -zc);
 }

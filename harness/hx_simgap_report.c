@@ -118,6 +118,9 @@ static void print_static(FILE *f, const sg_result_t *r)
         char w[128], a[128];
         int iw, ia;
         if (!c->active) {
+            if (!r->constant[ch]) {
+                fprintf(f, "  %s  not analysed: fewer than 4 Allan points on the fit segment\n", sg_channel_name(ch));
+            }
             continue;
         }
         iw = sg_model_find(&c->baseline, FNAV_EFFECT_WHITE);
@@ -313,6 +316,19 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
         fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first %.0f %%, held out the last %.0f %%\n",
                 r->path, r->domain == 1 ? "static" : "walk", r->n, r->rate_hz, r->duration_s, 100.0 * r->opts.fit_frac,
                 100.0 * (1.0 - r->opts.fit_frac));
+    }
+    if (r->opts.domain != 0 && r->domain != r->domain_detected) {
+        fprintf(f, "domain: %s as given (%s); the log looks like a %s (stillness test, docs/simgap.md \"Usage\")\n",
+                r->domain == 1 ? "static" : "walk", r->domain == 1 ? "--static" : "--walk",
+                r->domain_detected == 1 ? "static log" : "walk");
+    }
+    for (ch = 0; ch < SG_NCH; ch++) {
+        if (r->constant[ch]) {
+            fprintf(f, "%s holds one value (%.6g %s) over the whole log: stuck, or its noise below the output's step; "
+                       "%s\n",
+                    sg_channel_name(ch), r->constant_value[ch], sg_channel_unit(ch),
+                    r->domain == 1 ? "not analysed" : "navigated as it is, but its noise not tested");
+        }
     }
     if (!r->confident) {
         fprintf(f, "TOO SHORT for a confident answer: %s\n", r->why);
