@@ -582,11 +582,15 @@ typedef struct {
     double res_s;             /**< time-stamp resolution found */
     long n_dup[SG_NSEG], n_drop[SG_NSEG], n_int[SG_NSEG];
     double jit_sd[SG_NSEG];   /**< sd of interval - nominal over regular intervals, s */
+    double jit_kurt[SG_NSEG]; /**< their kurtosis (3 when too few): the log-variance tests' spread */
     double z[SG_NSEG][SG_TIM_NKIND];
     int significant;
     double dup_prob, drop_prob, stamp_s;   /**< fitted on the fit segment */
     double z_after[SG_TIM_NKIND];          /**< held-out z with the fitted effects */
     int sel[SG_TIM_NKIND];
+    double z_crit;                         /**< the held-out check's critical |z| (alpha / 3, two-sided) */
+    int open[SG_TIM_NKIND];                /**< selected, but |z_after| > z_crit: the held-out segment's
+                                                rate differs from the fit's (not stationary) */
     double first_t[SG_TIM_NKIND];          /**< time of the first event */
 } sg_timing_t;
 

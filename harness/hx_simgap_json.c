@@ -338,6 +338,7 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
                 add_num(e, "z_whole_log", r->tim.z[SG_FULL][k]);
                 add_num(e, "z_held_out_before", r->tim.z[SG_HOLD][k]);
                 add_num(e, "z_held_out_after", r->tim.z_after[k]);
+                cJSON_AddBoolToObject(e, "held_out_within_noise", !r->tim.open[k]);
                 add_num(e, "first_event_s", r->tim.first_t[k]);
                 cJSON_AddItemToArray(a, e);
             }

@@ -344,8 +344,11 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
                 r->tim.n_dup[SG_FULL], r->tim.n_drop[SG_FULL], r->tim.jit_sd[SG_FULL], r->tim.res_s);
         for (d = 0; d < SG_TIM_NKIND; d++) {
             if (r->tim.sel[d]) {
-                fprintf(f, "  %s: %.1f sigma above an ideal clock; held out after fitting: %+.1f sigma\n", nm[d],
-                        r->tim.z[SG_FULL][d], r->tim.z_after[d]);
+                fprintf(f, "  %s: %.1f sigma above an ideal clock; held out after fitting: %+.1f sigma%s\n", nm[d],
+                        r->tim.z[SG_FULL][d], r->tim.z_after[d],
+                        r->tim.open[d] ? " (beyond noise: the held-out segment's rate differs from the fit's, "
+                                         "not stationary)"
+                                       : "");
             }
         }
     }

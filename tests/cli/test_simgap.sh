@@ -43,6 +43,35 @@ json "$T/short.json" 'j["confident"] is False and j["verdict"]["answer"] == "too
 expect_exit 1 "held-out segment without points" "$H" simgap "$T/s3.csv" --quiet --seeds 3 --fit-frac 0.9
 expect_err "^harness simgap: error: .*too short for a confident answer" "no held-out point: too short, said"
 
+# time-stamp jitter whose spread grows through the log (5 -> 40 us) is
+# selected, but its rate fitted on the fit segment is refuted on the held-out
+# one: not stationary, so the verdict is not "explained" (a selected timing
+# effect never kept it from "explained" before); the same log with a steady
+# 20 us jitter is explained, its stamp_s within 10 %
+"$H" sim --motion stand:120 --rate 100 --profile mtx --seed 4 --out "$T/jt.csv" >/dev/null 2>&1 || fail "sim jitter base"
+for mode in ramp flat; do
+    "$PY" - "$T/jt.csv" "$T/jt_$mode.csv" "$mode" <<'PYEOF'
+import sys
+import numpy as np
+src, dst, mode = sys.argv[1:4]
+lines = open(src).read().splitlines()
+n = len(lines) - 1
+sd = np.linspace(5e-6, 40e-6, n) if mode == "ramp" else np.full(n, 20e-6)
+t = np.arange(n) * 0.01 + np.random.default_rng(7).normal(0.0, 1.0, n) * sd
+with open(dst, "w") as f:
+    f.write(lines[0] + "\n")
+    for k in range(n):
+        f.write("%.9f,%s\n" % (t[k], lines[k + 1].split(",", 1)[1]))
+PYEOF
+    "$H" simgap "$T/jt_$mode.csv" --seeds 6 --json "$T/jt_$mode.json" > "$T/jt_$mode.out" 2>&1
+done
+sel='[e for e in j["timing"]["selected"] if e["effect"] == "jitter"]'
+json "$T/jt_ramp.json" "len($sel) == 1 and $sel[0][\"held_out_within_noise\"] is False and j[\"verdict\"][\"answer\"] == \"partly-explained\"" &&
+    grep -q "jitter: .*beyond noise: .*not stationary" "$T/jt_ramp.out" &&
+    pass "jitter that grows: selected, refuted held out, partly explained" || fail "growing jitter: $(grep -E 'jitter|verdict' "$T/jt_ramp.out")"
+json "$T/jt_flat.json" "len($sel) == 1 and $sel[0][\"held_out_within_noise\"] is True and j[\"verdict\"][\"answer\"] == \"explained\" and abs($sel[0][\"params\"][\"stamp_s\"] / 20e-6 - 1) < 0.1" &&
+    pass "steady jitter: explained, stamp_s within 10 %" || fail "steady jitter: $(grep -E 'jitter|verdict' "$T/jt_flat.out") $(cat "$T/pyerr")"
+
 # logs without any noise (simulated with --profile none): the twins do not
 # vary, so no gap can be tested; a one-line error and exit 1, not SIGABRT
 "$H" sim --duration 30 --profile none --out "$T/nf.csv" >/dev/null 2>&1 || fail "sim noise-free walk"
