@@ -103,6 +103,8 @@ typedef struct {
     double w;                 /**< weight of the estimate when blocks are pooled (terms, segments) */
     int nblk;                 /**< independent blocks pooled (EDF adds up) */
     double x_blk;             /**< time domain level point: length of each of the two blocks, s */
+    int empty;                /**< no data behind it in the real log (a navigation window in
+                                   which no stance begins: a long stand): outside G, z 0 */
 } sg_point_t;
 
 /** A list of points. */

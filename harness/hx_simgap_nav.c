@@ -390,11 +390,13 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, i
             ax[c] += st[i].axis[c];
         }
     }
-#define ADD(KIND, X, XLO, XHI, VAL)                                                                                    \
+#define ADD(KIND, X, XLO, XHI, VAL) ADDE(KIND, X, XLO, XHI, VAL, 0)
+#define ADDE(KIND, X, XLO, XHI, VAL, EMPTY)                                                                            \
     do {                                                                                                               \
         vals[cnt++] = (VAL);                                                                                           \
         if (with_pl) {                                                                                                 \
             memset(&p, 0, sizeof p);                                                                                   \
+            p.empty = (EMPTY);                                                                                         \
             p.dom = SG_NAV;                                                                                            \
             p.ch = -1;                                                                                                 \
             p.kind = (KIND);                                                                                           \
@@ -425,7 +427,9 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, i
                 m++;
             }
         }
-        ADD(SG_NAV_WIN, 0.5 * (wa + wb), wa, wb, lnpos(m > 0 ? s / m : 0.0));
+        /* a window in which no stance begins (inside a long stand) has
+         * no first update to compare: a placeholder outside G */
+        ADDE(SG_NAV_WIN, 0.5 * (wa + wb), wa, wb, lnpos(m > 0 ? s / m : 0.0), m == 0);
     }
     if (drift && ns >= 2) {
         long i0 = (st[0].i0 + st[0].i1) / 2, i1 = (st[ns - 1].i0 + st[ns - 1].i1) / 2;
@@ -440,6 +444,7 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, i
         ADD(SG_NAV_DRIFT_V, 0.0, t0, t1, lnpos(0.0));
     }
 #undef ADD
+#undef ADDE
     free(st);
     return cnt;
 }
@@ -1987,6 +1992,11 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
         if (p->dom != SG_NAV) {
             continue;
         }
+        if (p->empty) {
+            fprintf(f, "    %-17s %-8s t %.1f-%.1f s: no stance begins in it (a stand), not compared\n",
+                    kind_name(p->kind), "", p->x_lo, p->x_hi);
+            continue;
+        }
         fprintf(f, "    %-17s %-8s real %-9.4g twin %-9.4g (sd %.3g) z %+.1f\n", kind_name(p->kind),
                 p->kind == SG_NAV_WIN ? "" : (p->kind == SG_NAV_AXIS ? (p->x == 0.0 ? "x" : p->x == 1.0 ? "y" : "z") : ""),
                 p->kind == SG_NAV_WHITE ? nv->real_v[SG_FULL][k] : exp(nv->real_v[SG_FULL][k]),
@@ -2213,10 +2223,11 @@ cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r)
             add_num(po, "x", p->x);
             add_num(po, "x_lo", p->x_lo);
             add_num(po, "x_hi", p->x_hi);
-            add_num(po, "real", nv->real_v[g][k]);
-            add_num(po, "twin", nv->cmp[g].twin_mean[k]);
-            add_num(po, "sd", nv->cmp[g].sd_tot[k]);
-            add_num(po, "z", nv->cmp[g].z[k]);
+            /* a placeholder (a window without a stance onset): null */
+            add_num(po, "real", p->empty ? (double)NAN : nv->real_v[g][k]);
+            add_num(po, "twin", p->empty ? (double)NAN : nv->cmp[g].twin_mean[k]);
+            add_num(po, "sd", p->empty ? (double)NAN : nv->cmp[g].sd_tot[k]);
+            add_num(po, "z", p->empty ? (double)NAN : nv->cmp[g].z[k]);
             cJSON_AddItemToArray(pts, po);
         }
     }

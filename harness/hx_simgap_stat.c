@@ -703,7 +703,7 @@ static int chol_solve(int k, double *A, double *b)
  * ramp fitted to noise win the likelihood ratio on a control). */
 static int gap_point(const sg_point_t *p)
 {
-    return !(p->dom == SG_TIME && p->kind == SG_TIME_LEVEL);
+    return !(p->dom == SG_TIME && p->kind == SG_TIME_LEVEL) && !p->empty;
 }
 
 /* The normal score of a Student t statistic with df degrees of freedom:

@@ -72,6 +72,17 @@ json "$T/jt_ramp.json" "len($sel) == 1 and $sel[0][\"held_out_within_noise\"] is
 json "$T/jt_flat.json" "len($sel) == 1 and $sel[0][\"held_out_within_noise\"] is True and j[\"verdict\"][\"answer\"] == \"explained\" and abs($sel[0][\"params\"][\"stamp_s\"] / 20e-6 - 1) < 0.1" &&
     pass "steady jitter: explained, stamp_s within 10 %" || fail "steady jitter: $(grep -E 'jitter|verdict' "$T/jt_flat.out") $(cat "$T/pyerr")"
 
+# a walk with a 40 s stand: the navigation windows in which no stance
+# begins carry no first update; they are placeholders outside G, said so
+# in the summary and null in the JSON (they were points of value 1e-30 with
+# z 0 that diluted G)
+"$H" sim --motion stand:5,walk:15,stand:40,walk:15 --profile mtx --seed 3 --out "$T/pw.csv" >/dev/null 2>&1 || fail "sim walk with a stand"
+"$H" simgap "$T/pw.csv" --seeds 6 --json "$T/pw.json" > "$T/pw.out" 2>&1
+n_empty=$(grep -c "window .*no stance begins in it (a stand), not compared" "$T/pw.out")
+json "$T/pw.json" 'sum(1 for p in j["navigation"]["gap"]["full"]["points"] if p["kind"] == "window" and p["real"] is None and p["z"] is None) == 3' &&
+    [ "$n_empty" -eq 3 ] && pass "windows inside a stand are not compared (summary and JSON)" ||
+    fail "stand windows: $n_empty in the summary; $(cat "$T/pyerr")"
+
 # logs without any noise (simulated with --profile none): the twins do not
 # vary, so no gap can be tested; a one-line error and exit 1, not SIGABRT
 "$H" sim --duration 30 --profile none --out "$T/nf.csv" >/dev/null 2>&1 || fail "sim noise-free walk"
