@@ -1011,6 +1011,8 @@ static void json_deviations(const run_t *R, const chan_t *ch, size_t k, cJSON *e
     }
 }
 
+static int ar1_resolved(const run_t *R, const chan_t *ch);
+
 static int write_json(const run_t *R, const char *path)
 {
     cJSON *root = cJSON_CreateObject(), *arr;
@@ -1056,6 +1058,9 @@ static int write_json(const run_t *R, const char *path)
             json_num(p, "gm_adev_peak", HX_GM_PEAK_RATIO * ch->id.fit.gm_sigma);
             json_quality(p, &ch->id.fit_quality);
         }
+        /* false: no fit, or the curve does not resolve its AR(1) part; a
+         * --profile then holds the bound from the Allan minimum */
+        cJSON_AddBoolToObject(p, "ar1_identified", ch->id_ok && ar1_resolved(R, ch));
         t = cJSON_AddArrayToObject(c, "table");
         for (k = 0; k < ch->nres; k++) {
             const fnav_allan_result_t *r = &ch->res[k];
@@ -1221,6 +1226,19 @@ static int ar1_identified(const run_t *R, const chan_t *ch, double tau_long_s)
     return 0;
 }
 
+/* ar1_identified with the channel's longest averaging time with data */
+static int ar1_resolved(const run_t *R, const chan_t *ch)
+{
+    double tau_long_s = 0.0;
+    size_t j;
+    for (j = 0; j < ch->nres; j++) {
+        if (ch->res[j].terms > 0) {
+            tau_long_s = (double)ch->res[j].tau / R->rate_hz;
+        }
+    }
+    return ar1_identified(R, ch, tau_long_s);
+}
+
 static int write_profile(const run_t *R, const char *path, const char *name)
 {
     fnav_profile_t p;
@@ -1257,7 +1275,7 @@ static int write_profile(const run_t *R, const char *path, const char *name)
                 tau_long_s = (double)ch->res[j].tau / R->rate_hz;
             }
         }
-        if (ar1_identified(R, ch, tau_long_s)) {
+        if (ar1_resolved(R, ch)) {
             m = ch->id.fit;
             fallback[k] = 0;
         } else if (!ch->id.paper_ok) {

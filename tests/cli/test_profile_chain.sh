@@ -12,11 +12,25 @@ trap 'rm -rf "$T"' EXIT
 
 "$H" sim --motion stand --duration 900 --rate 200 --profile mtx --seed 7 --out "$T/stand.bin" >/dev/null 2>"$T/err" \
     && pass "sim a 15-minute static MTx log" || { fail "sim"; cat "$T/err"; }
-"$H" allan "$T/stand.bin" --profile "$T/mtx.profile" >/dev/null 2>"$T/err"
+"$H" allan "$T/stand.bin" --profile "$T/mtx.profile" --json "$T/mtx.json" >/dev/null 2>"$T/err"
 st=$?
 if [ $st -eq 0 ] && [ -s "$T/mtx.profile" ]; then pass "allan writes a profile (exit 0)"; else fail "allan exit $st"; cat "$T/err"; fi
 if grep -q "not identifiable within the record" "$T/err"; then pass "bound fallback announced"; else fail "no fallback warning"; cat "$T/err"; fi
 if grep -q "^ident_bound_gyro = " "$T/mtx.profile"; then pass "bound channels marked in the profile"; else fail "ident_bound keys"; fi
+# the JSON says the same per channel (corrected.ar1_identified = not bound)
+if /usr/bin/python3 - "$T/mtx.profile" "$T/mtx.json" <<'PY'
+import json, sys
+kv = {}
+for line in open(sys.argv[1]):
+    if '=' in line and not line.startswith('#'):
+        k, v = line.split('=', 1)
+        kv[k.strip()] = v.split()
+bound = [int(x) for x in kv['ident_bound_accel'] + kv['ident_bound_gyro']]
+j = {c['name']: c for c in json.load(open(sys.argv[2]))['channels']}
+ident = [j[n]['corrected']['ar1_identified'] for n in ('ax', 'ay', 'az', 'gx', 'gy', 'gz')]
+sys.exit(0 if all(i == (b == 0) for i, b in zip(ident, bound)) and any(b == 1 for b in bound) else 1)
+PY
+then pass "the JSON's ar1_identified matches the profile's bound marks"; else fail "ar1_identified in the JSON"; fi
 # white-noise densities recovered within 10 % of the MTx table (deg/s/sqrt(Hz) -> rad/s: 2.6e-2 * pi/180 = 4.54e-4)
 if /usr/bin/python3 - "$T/mtx.profile" <<'PY'
 import sys, math
