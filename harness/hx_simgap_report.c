@@ -72,6 +72,10 @@ void sg_effect_text(char *b, size_t n, int ch, const sg_effect_t *e)
         snprintf(b, n, "white (%s)", u);
         break;
     case FNAV_EFFECT_AR1:
+        if (!(e->p[1] > 0.0)) {
+            snprintf(b, n, "ar1 (none: sigma 0)"); /* no bias process: its tau means nothing (null in the JSON) */
+            break;
+        }
         fmt_u(u2, sizeof u2, ch, e->p[1], "");
         snprintf(b, n, "ar1 (sigma %s, tau %.3g s)", u2, e->p[0]);
         break;

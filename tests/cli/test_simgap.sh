@@ -83,6 +83,13 @@ json "$T/pw.json" 'sum(1 for p in j["navigation"]["gap"]["full"]["points"] if p[
     [ "$n_empty" -eq 3 ] && pass "windows inside a stand are not compared (summary and JSON)" ||
     fail "stand windows: $n_empty in the summary; $(cat "$T/pyerr")"
 
+# white noise only: a baseline AR(1) fitted to sigma 0 is printed as none,
+# not with a tau (the JSON's is null)
+"$H" sim --motion stand:120 --rate 100 --profile mtx --effect ar1:off --seed 3 --out "$T/wn.csv" >/dev/null 2>&1 || fail "sim white only"
+"$H" simgap "$T/wn.csv" --seeds 6 > "$T/wn.out" 2>&1
+if grep -q "ar1 (none: sigma 0)" "$T/wn.out" && ! grep -q "ar1 (sigma 0 " "$T/wn.out"; then
+    pass "an AR(1) of sigma 0 is printed as none"; else fail "sigma-0 AR(1): $(grep 'ar1 (' "$T/wn.out" | head -3)"; fi
+
 # logs without any noise (simulated with --profile none): the twins do not
 # vary, so no gap can be tested; a one-line error and exit 1, not SIGABRT
 "$H" sim --duration 30 --profile none --out "$T/nf.csv" >/dev/null 2>&1 || fail "sim noise-free walk"
