@@ -130,7 +130,7 @@ typedef struct {
     double acc_sum[3];       /* a log's specific force summed over the record (units check) */
     double gyro_max;         /* a log's largest |rate| on any axis (units check) */
     int units_bad;           /* the log is not in SI units (hx_units_problem; units_msg says why) */
-    char units_msg[320];
+    char units_msg[768];
 } run_t;
 
 static const char k_exact_oom[] = "out of memory: --estimator exact keeps the whole record (8 bytes per sample "

@@ -38,7 +38,7 @@ typedef struct {
     double g_vec[3], g_mag, still_t_s, gyro_rest[3];
     int g_axis;
     int units_bad;     /* not SI units (hx_units_problem) */
-    char units[320];   /* why, and the remedy */
+    char units[768];   /* why, and the remedy */
 } info_t;
 
 /* Clipping at full scale leaves flat tops at the channel's extreme value,

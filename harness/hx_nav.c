@@ -414,6 +414,7 @@ typedef struct {
     long n_read;
     int sink_failed;
     double gyro_max_rps; /* largest |w| read: the units check */
+    double f_norm_sum;   /* sum of |f| read: the units check when no rest was found */
     hx_axes_t *axes;     /* the axes check (with traj), or NULL */
 } hx_port_ctx_t;
 
@@ -449,6 +450,9 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
         if (w2 > c->gyro_max_rps * c->gyro_max_rps) {
             c->gyro_max_rps = sqrt(w2);
         }
+        c->f_norm_sum += sqrt((double)s->accel_mps2[0] * (double)s->accel_mps2[0] +
+                              (double)s->accel_mps2[1] * (double)s->accel_mps2[1] +
+                              (double)s->accel_mps2[2] * (double)s->accel_mps2[2]);
         c->n_read++;
         if (c->axes != NULL) {
             hx_axes_sample(c->axes, s);
@@ -513,41 +517,72 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz, char *msg,
                      size_t msg_size)
 {
+    /* every mistake found is named (a log in g and deg/s names both) */
     double g = gravity_mps2;
+    size_t len = 0;
+    int n = 0;
+    msg[0] = '\0';
+#define HX_UNITS_ADD(...)                                                                                  \
+    do {                                                                                                   \
+        if (len < msg_size) {                                                                              \
+            int w_ = snprintf(msg + len, msg_size - len, "%s", n > 0 ? "; also " : "");                   \
+            len += w_ > 0 ? (size_t)w_ : 0u;                                                               \
+        }                                                                                                  \
+        if (len < msg_size) {                                                                              \
+            int w_ = snprintf(msg + len, msg_size - len, __VA_ARGS__);                                     \
+            len += w_ > 0 ? (size_t)w_ : 0u;                                                               \
+        }                                                                                                  \
+        n++;                                                                                               \
+    } while (0)
     if (f_rest_mps2 > 0.0 && fabs(f_rest_mps2 / g - 1.0) > HX_GRAVITY_TOL) {
-        snprintf(msg, msg_size,
-                 "the accelerometer reads |f| = %.4g at rest, where gravity is %.4g m/s^2: the log is not in m/s^2%s "
-                 "(docs/log-format.md)",
-                 f_rest_mps2, g,
-                 fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL ? " but in g (multiply by 9.80665)" : "");
-        return 1;
+        HX_UNITS_ADD("the accelerometer reads |f| = %.4g at rest, where gravity is %.4g m/s^2: the log is not in "
+                     "m/s^2%s",
+                     f_rest_mps2, g,
+                     fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL ? " but in g (multiply by 9.80665)" : "");
     }
     if (gyro_max_rps > HX_GYRO_MAX_RPS) {
-        snprintf(msg, msg_size,
-                 "the gyroscope reaches %.4g rad/s, beyond the range of any MEMS gyro (about %.0f rad/s = 4000 "
-                 "deg/s): the log is not in rad/s%s (docs/log-format.md)",
-                 gyro_max_rps, HX_GYRO_MAX_RPS,
-                 gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS ? " but probably in deg/s (multiply by pi/180)" : "");
-        return 1;
+        HX_UNITS_ADD("the gyroscope reaches %.4g rad/s, beyond the range of any MEMS gyro (about %.0f rad/s = 4000 "
+                     "deg/s): the log is not in rad/s%s",
+                     gyro_max_rps, HX_GYRO_MAX_RPS,
+                     gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS ? " but probably in deg/s (multiply by pi/180)"
+                                                                    : "");
     }
     if (rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ) {
-        snprintf(msg, msg_size,
-                 "the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the time "
-                 "stamps in seconds? (in milliseconds, divide by 1000; docs/log-format.md)",
-                 1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ);
-        return 1;
+        HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
+                     "time stamps in seconds? (in milliseconds, divide by 1000)",
+                     1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ);
     }
-    return 0;
+#undef HX_UNITS_ADD
+    if (n > 0 && len < msg_size) {
+        snprintf(msg + len, msg_size - len, " (docs/log-format.md)");
+    }
+    return n > 0;
 }
 
 /* 2 when the replayed log is not in SI units (err says why), else 0. */
-static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_rps, double in_rate_hz, char *err,
-                       size_t err_size)
+static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean,
+                       double in_rate_hz, char *err, size_t err_size)
 {
-    char msg[320];
-    double fn = nav->aligned ? (double)fnav_vec3_norm(nav->align.result.accel_mean_mps2) : 0.0;
-    if (hx_units_problem(fn, (double)nav->cfg.gravity_mps2, gyro_max_rps,
-                         in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz, msg, sizeof msg) != 0) {
+    char msg[768], acc[320] = "";
+    const double g = (double)nav->cfg.gravity_mps2;
+    const double fn = nav->aligned ? (double)fnav_vec3_norm(nav->align.result.accel_mean_mps2) : 0.0;
+    int bad;
+    if (!nav->aligned && f_norm_mean > 0.0 && f_norm_mean < 0.5 * g) {
+        /* no rest found (a gyro in deg/s hides every still period): the
+         * mean |f| of the whole log stands in, but only to reveal a log in
+         * g; a walk in m/s^2 averages g or more (its motion adds to |f|) */
+        snprintf(acc, sizeof acc,
+                 "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 averages %.4g or more: "
+                 "the log is probably in g (multiply by 9.80665)",
+                 f_norm_mean, g);
+    }
+    bad = hx_units_problem(fn, g, gyro_max_rps, in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz, msg,
+                           sizeof msg);
+    if (acc[0] != '\0') {
+        snprintf(err, err_size, "%s: %s%s%s", path, acc, bad ? "; also " : " (docs/log-format.md)", bad ? msg : "");
+        return 2;
+    }
+    if (bad) {
         snprintf(err, err_size, "%s: %s", path, msg);
         return 2;
     }
@@ -667,7 +702,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     hx_log_free(&res);
     if (rc == 0) {
         /* wrong units are also why a log never looks still */
-        int u = units_check(path, &nav, pc.gyro_max_rps, traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0,
+        int u = units_check(path, &nav, pc.gyro_max_rps, pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0, traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0,
                             err, err_size);
         rc = u != 0 ? u : rc;
     }

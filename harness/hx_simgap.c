@@ -1274,7 +1274,7 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
 {
     double *wm = (double *)malloc(log->n * sizeof *wm), *fm = (double *)malloc(log->n * sizeof *fm);
     double wmax = 0.0, wq;
-    char msg[320];
+    char msg[768];
     size_t k, nf = 0;
     int bad;
     if (wm == NULL || fm == NULL) {
