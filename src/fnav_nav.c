@@ -449,6 +449,9 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
             dt_used = FNAV_R(0.0); /* as at the first alignment */
         }
     }
+    if (!o->stance) {
+        nav->stance_s = FNAV_R(0.0); /* the ZARU's standstill clock */
+    }
     if (dt_used > FNAV_R(0.0)) {
         st = fnav_ukf_predict(&nav->ukf, fnav_vec3_from(s->gyro_rps), fnav_vec3_from(s->accel_mps2), dt_used);
         /* problems are counted in the UKF's health; a run of undone steps or
@@ -459,9 +462,6 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
             fnav_nav_reset(nav);
             fill_frame(nav, o, flags, fr);
             return;
-        }
-        if (!o->stance) {
-            nav->stance_s = FNAV_R(0.0);
         }
         if (o->stance) {
             if (nav->settle_pending) {
