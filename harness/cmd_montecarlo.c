@@ -27,9 +27,9 @@ static const hx_opt_t k_opts[] = {
     { "--param", "KEY=VALUE", "set a navigation parameter (list: harness replay --param help)", 1 },
     { "--bin", "S", "time bin of the growth curves, s (default 1)", 0 },
     { "--json", "FILE", "results as JSON (docs/results-sim.md)", 0 },
-    { "--csv", "FILE", "growth curves and NEES per bin and variant", 0 },
+    { "--csv", "FILE", "growth curves and NEES per bin and variant ('-' for standard output)", 0 },
     { "--plot", "PNG", "error growth with the predicted sd, and position NEES with its band", 0 },
-    { "--quiet", NULL, "no summary on standard output", 0 },
+    { "--quiet", NULL, "no summary on standard output (none either when --json or --csv is '-')", 0 },
     { NULL, NULL, NULL, 0 }
 };
 
@@ -303,7 +303,8 @@ static int write_json(const char *path, const hx_mc_result_t *r, const char *mot
 
 static int write_csv(const char *path, const hx_mc_result_t *r)
 {
-    FILE *f = fopen(path, "w");
+    const int to_stdout = strcmp(path, "-") == 0; /* '-': standard output, as --json */
+    FILE *f = to_stdout ? stdout : fopen(path, "w");
     int v, b, g, ok = 1;
     if (f == NULL) {
         return -1;
@@ -330,7 +331,7 @@ static int write_csv(const char *path, const hx_mc_result_t *r)
             }
         }
     }
-    if (fclose(f) != 0) {
+    if (to_stdout ? fflush(f) != 0 : fclose(f) != 0) {
         ok = 0;
     }
     return ok ? 0 : -1;
@@ -547,7 +548,9 @@ int hx_cmd_montecarlo(int argc, char **argv)
             return HX_EXIT_USAGE;
         }
         hx_progress_end(&pc.prog);
-        if (!hx_flag(&a, "--quiet")) {
+        /* an output to standard output ('-') takes it alone */
+        if (!hx_flag(&a, "--quiet") && !(json != NULL && strcmp(json, "-") == 0) &&
+            !(csv != NULL && strcmp(csv, "-") == 0)) {
             print_summary(&res, su.motion_name, (double)su.err.rate_hz, su.profile_name, fprof,
                           su.bias_eq6 && hx_arg(&a, "--filter-profile") == NULL);
         }

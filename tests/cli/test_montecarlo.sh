@@ -88,5 +88,15 @@ expect_exit 0 "replay the ideal loop" "$H" replay "$T/ideal.bin" --json "$T/idea
 if awk -F'[:,]' '/"return_error_3d_m"/ { exit !($2 + 0 < 0.01) }' "$T/ideal.json"; then
     pass "ideal loop: return-to-start below 1 cm"; else fail "ideal loop: $(grep return_error_3d_m "$T/ideal.json")"; fi
 
+# '-' sends the CSV to standard output, which then carries it alone (it
+# wrote a file named '-', and the summary mixed into a '-' JSON)
+HABS=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")
+( cd "$T" && "$HABS" montecarlo --seeds 2 --duration 10 --csv - > "$T/mc_stdout.csv" 2>/dev/null )
+if head -n 1 "$T/mc_stdout.csv" | grep -q "^variant,t_s," && [ ! -e "$T/-" ]; then
+    pass "montecarlo --csv -: the CSV alone on standard output"; else fail "--csv -: $(head -n 2 "$T/mc_stdout.csv")"; fi
+"$H" montecarlo --seeds 2 --duration 10 --json - > "$T/mc_stdout.json" 2>/dev/null
+if /usr/bin/env python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$T/mc_stdout.json"; then
+    pass "montecarlo --json -: valid JSON alone on standard output"; else fail "--json -: $(head -n 2 "$T/mc_stdout.json")"; fi
+
 if [ "$fails" -ne 0 ]; then echo "test_montecarlo.sh: $fails failure(s)"; exit 1; fi
 echo "test_montecarlo.sh: all passed"
