@@ -546,7 +546,9 @@ fnav_status_t fnav_nav_run(fnav_nav_t *nav, const fnav_port_t *port, long max_sa
         if (rd != FNAV_OK) {
             break;
         }
-        n++;
+        if (max_samples > 0) {
+            n++; /* counted only against a limit: a long is 32 bits on a Cortex-M */
+        }
         st = fnav_nav_push(nav, &s); /* rejected samples are counted in nav->stats */
         (void)st;
         while (fnav_nav_pop(nav, &fr) == FNAV_OK) {

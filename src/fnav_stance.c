@@ -9,6 +9,21 @@
 #define PROBE FNAV_STANCE_RATE_PROBE
 #endif
 
+/* Long runs. The sample counters (n_in, n_raw, n_out) are long, 32 bits on
+ * the Cortex-M4F: 2^31 samples are 24.9 days at 1 kHz, 6.2 days at 4 kHz.
+ * Every use of them is a difference of two of them or a slot modulo
+ * FNAV_STANCE_MAX_WINDOW or FNAV_STANCE_EVENT_BUF (and FNAV_STANCE_JERK_BLOCK,
+ * which divides the latter), so once n_out reaches REBASE_AT all three move
+ * back by REBASE_STEP, a multiple of both ring sizes below 2^29: every slot
+ * and difference stays, and the counters stay between 2^29 and 2^30 for
+ * ever (a review, 2026-11-28; test_stance test_counters_long_run). The run
+ * lengths saturate at RUN_MAX instead, above every duration in samples
+ * (round_pos() saturates at 1e9). */
+#define REBASE_PERIOD ((long)FNAV_STANCE_MAX_WINDOW * (long)FNAV_STANCE_EVENT_BUF)
+#define REBASE_STEP (((1L << 29) / REBASE_PERIOD) * REBASE_PERIOD)
+#define REBASE_AT (1L << 30)
+#define RUN_MAX 1000000001L
+
 const fnav_stance_config_t fnav_stance_config_default = {
     FNAV_DETECTOR_SHOE, /* detector */
     FNAV_R(0.0),        /* rate_hz: estimate */
@@ -301,7 +316,7 @@ static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
     st->have_prev = 1;
 
     if (o->stance == st->run_raw) {
-        st->run++;
+        st->run = st->run < RUN_MAX ? st->run + 1 : RUN_MAX;
     } else {
         st->run = 1;
         st->run_raw = o->stance;
@@ -428,8 +443,9 @@ fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
     out->stat = st->dq_stat[q];
     out->gamma = st->dq_gamma[q];
     out->raw_stance = st->dq_raw[q];
-    /* length of the raw stance run through i, looking ahead at most lag */
-    st->back = out->raw_stance ? st->back + 1 : 0;
+    /* length of the raw stance run through i, looking ahead at most lag
+     * (saturated: a foot at rest for days stays at rest) */
+    st->back = out->raw_stance ? (st->back < RUN_MAX ? st->back + 1 : RUN_MAX) : 0;
     fwd = 0;
     if (out->raw_stance) {
         for (k = i + 1; k < st->n_raw && k <= i + st->lag; k++) {
@@ -448,5 +464,10 @@ fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
     segment(st, out);
     st->prev_t_ns = out->sample.t_ns;
     st->n_out++;
+    if (st->n_out >= REBASE_AT) {
+        st->n_in -= REBASE_STEP;
+        st->n_raw -= REBASE_STEP;
+        st->n_out -= REBASE_STEP;
+    }
     return FNAV_OK;
 }

@@ -3,6 +3,7 @@
  * the delay and flush contract, stance/swing boundaries of a synthetic step,
  * rejection of a short mid-swing dip, the adaptive threshold, the threshold
  * detector, gait events at known samples, and the ring contract. */
+#include <limits.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -665,6 +666,118 @@ static void test_foot_strike_long_min_stance(void **state)
     }
 }
 
+/* A synthetic gait at 1 kHz for the long-run tests: 0.6 s still, 0.4 s of
+ * swing with a heel impact at its end, repeated. */
+static fnav_sample_t gait_sample(long k)
+{
+    const double rate = 1000.0, t = (double)k / rate, ph = fmod(t, 1.0);
+    double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+    if (ph >= 0.6) {
+        const double u = (ph - 0.6) / 0.4;
+        w[1] = 3.0 * sin(3.14159265358979 * u);
+        f[0] = 5.0 * sin(6.28318530717959 * u);
+        if (ph >= 0.99) {
+            f[2] = -60.0; /* the heel impact */
+        }
+    } else {
+        f[2] += 0.002 * sin((double)k * 1.3);
+        w[0] = 0.0005 * cos((double)k * 0.7);
+    }
+    return sample(k, rate, f, w);
+}
+
+/* Days of samples (a review, 2026-11-28): the sample counters are long,
+ * 32 bits on the Cortex-M4F, where 2^31 samples are 24.9 days at 1 kHz and
+ * 6.2 days at 4 kHz. Simulated here by moving every counter of a detector
+ * to a few thousand samples below LONG_MAX (a multiple of both ring sizes,
+ * so every slot stays where it was): its decisions must stay those of a
+ * detector that did not jump. Before the fix the counters overflowed
+ * (undefined behaviour; in practice the ring index went negative, pop
+ * answered FNAV_AGAIN for ever and push FNAV_E_STATE). */
+static void test_counters_long_run(void **state)
+{
+    static fnav_stance_t a, b;
+    /* a few thousand samples below LONG_MAX, and below 2^30 (where the
+     * fixed detector moves its counters back: the same decisions across) */
+    const long tops[2] = { LONG_MAX, 1L << 30 };
+    int pass;
+    (void)state;
+    for (pass = 0; pass < 2; pass++) {
+        fnav_stance_config_t c = fnav_stance_config_default;
+        const long period = (long)FNAV_STANCE_MAX_WINDOW * FNAV_STANCE_EVENT_BUF;
+        fnav_stance_out_t oa, ob;
+        long k, outs = 0, strides = 0;
+        c.rate_hz = FNAV_R(1000.0);
+        assert_int_equal(fnav_stance_init(&a, &c), FNAV_OK);
+        assert_int_equal(fnav_stance_init(&b, &c), FNAV_OK);
+        for (k = 0; k < 30000; k++) {
+            fnav_sample_t s = gait_sample(k);
+            if (k == 1000) {
+                const long jump = (tops[pass] / period - 1) * period - (b.n_out / period + 1) * period;
+                b.n_in += jump;
+                b.n_raw += jump;
+                b.n_out += jump;
+                assert_true(b.n_out >= tops[pass] - 3 * period);
+            }
+            assert_int_equal(fnav_stance_push(&a, &s), FNAV_OK);
+            assert_int_equal(fnav_stance_push(&b, &s), FNAV_OK);
+            for (;;) {
+                fnav_status_t ra = fnav_stance_pop(&a, &oa), rb = fnav_stance_pop(&b, &ob);
+                assert_int_equal(rb, ra);
+                if (ra != FNAV_OK) {
+                    break;
+                }
+                assert_true(oa.sample.t_ns == ob.sample.t_ns);
+                assert_int_equal(ob.raw_stance, oa.raw_stance);
+                assert_int_equal(ob.stance, oa.stance);
+                assert_int_equal(ob.segment_stance, oa.segment_stance);
+                assert_int_equal(ob.events, oa.events);
+                assert_true(ob.fo_t_ns == oa.fo_t_ns && ob.fs_t_ns == oa.fs_t_ns);
+                assert_true(ob.stat == oa.stat && ob.gamma == oa.gamma);
+                strides += (oa.events & FNAV_STANCE_EV_STRIDE) != 0u;
+                outs++;
+            }
+        }
+        assert_true(outs > 29900);
+        assert_true(strides >= 25); /* the gait was segmented (one stride a second) */
+        assert_true(b.n_out > 0 && b.n_in >= b.n_out);
+    }
+}
+
+/* The same for the run lengths: a foot at rest for 2^31 samples (simulated
+ * by moving the lengths of the current raw-stance run close to LONG_MAX)
+ * stays in stance; before the fix the run length overflowed and the
+ * confirmation (run >= min_zupt) turned the rest into motion. */
+static void test_rest_run_long(void **state)
+{
+    static fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+    fnav_stance_out_t o;
+    long k, still = 0, outs = 0;
+    (void)state;
+    c.rate_hz = FNAV_R(1000.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k < 3000; k++) {
+        fnav_sample_t s;
+        f[2] = -k_g + 0.002 * sin((double)k * 1.3);
+        w[0] = 0.0005 * cos((double)k * 0.7);
+        s = sample(k, 1000.0, f, w);
+        if (k == 1000) {
+            assert_true(st.back > 100 && st.run > 100); /* at rest since the start */
+            st.back = LONG_MAX - 500;
+            st.run = LONG_MAX - 500;
+        }
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            still += o.stance && o.segment_stance;
+            outs++;
+        }
+    }
+    assert_true(outs > 2900);
+    assert_int_equal(still, outs);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -681,6 +794,8 @@ int main(void)
         cmocka_unit_test(test_gait_events),
         cmocka_unit_test(test_foot_strike_reference),
         cmocka_unit_test(test_foot_strike_long_min_stance),
+        cmocka_unit_test(test_counters_long_run),
+        cmocka_unit_test(test_rest_run_long),
     };
     return cmocka_run_group_tests_name("stance", tests, NULL, NULL);
 }

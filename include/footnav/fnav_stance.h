@@ -123,7 +123,8 @@ typedef struct {
 typedef struct {
     fnav_stance_config_t cfg;
     fnav_sample_t ring[FNAV_STANCE_MAX_WINDOW]; /**< newest samples */
-    long n_in;          /**< samples pushed */
+    long n_in;          /**< samples pushed (the three counters move back together by a
+                             multiple of both rings from 2^30 on: a long run never overflows) */
     long n_raw;         /**< raw decisions made */
     long n_out;         /**< decisions returned */
     fnav_real_t dq_stat[FNAV_STANCE_MAX_WINDOW];  /**< raw decisions waiting for confirmation */
@@ -131,7 +132,7 @@ typedef struct {
     unsigned char dq_raw[FNAV_STANCE_MAX_WINDOW];
     int lag;            /**< confirmation look-ahead, samples (n_min_zupt - 1) */
     int n_min_zupt;     /**< shortest stance run, samples */
-    long back;          /**< raw stance run length ending at the last output */
+    long back;          /**< raw stance run length ending at the last output (saturates) */
     int win;            /**< window W, samples (odd), 0 until the rate is known */
     int half;           /**< h = (W - 1) / 2 */
     fnav_real_t rate_hz; /**< rate in use, Hz */
@@ -143,7 +144,7 @@ typedef struct {
     fnav_real_t margin_ratio; /**< 10^margin_dec */
     /* segmentation */
     int seg;            /**< 1 stance, 0 swing */
-    long run;           /**< length of the current run of raw decisions, samples */
+    long run;           /**< length of the current run of raw decisions, samples (saturates) */
     int run_raw;        /**< raw decision of that run */
     int64_t run_t0_ns;  /**< time of the first sample of the run */
     int64_t swing_t0_ns; /**< start of the current swing */
