@@ -376,7 +376,9 @@ fnav_status_t fnav_allan_push(fnav_allan_t *a, fnav_real_t y)
         return FNAV_E_RANGE; /* its squares would overflow the sums */
     }
     n = a->n;
-    if (n == UINT32_MAX) {
+    if (n >= UINT32_MAX - 1u) {
+        /* 2^32 - 2 samples: their 2^32 - 1 phase values are the most
+         * fnav_allan_result_t.n_phase holds */
         return FNAV_E_RANGE;
     }
     if (n == 0u) {

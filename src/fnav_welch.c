@@ -150,6 +150,11 @@ fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x)
     if (fnav_fabs(x) > (fnav_real_t)FNAV_INPUT_MAX_ABS) {
         return FNAV_E_RANGE; /* its square would overflow the periodogram */
     }
+    if (w->nsamples == UINT32_MAX) {
+        /* the counts are full: a further segment would wrap nseg (hop 1),
+         * and the GLOBAL mean needs the count of what gs sums */
+        return FNAV_E_RANGE;
+    }
     if (w->cfg.detrend == FNAV_DETREND_GLOBAL) {
         /* the first sample becomes a fixed shift (any constant cancels in
          * the global-mean correction) so that the sums stay small */
@@ -160,9 +165,7 @@ fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x)
     }
     w->ring[w->pos] = (x - w->cfg.offset) - w->shift;
     w->pos = (w->pos + 1u == n) ? 0u : w->pos + 1u;
-    if (w->nsamples != UINT32_MAX) {
-        w->nsamples++;
-    }
+    w->nsamples++;
     if (w->fill < n) {
         w->fill++;
         if (w->fill == n) {

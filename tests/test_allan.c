@@ -1498,6 +1498,33 @@ static void test_noise_id_edges(void **state)
     assert_string_equal(hx_noise_id_name(HX_NOISE_ID_B1_RN), "b1+rn");
 }
 
+/* The sample count's end (a review, 2026-11-28): 2^32 - 1 samples give
+ * 2^32 phase values, which n_phase (uint32_t) cannot hold: it read 0, and
+ * fnav_allan_edf() then called every estimate undefined. 12.4 days at
+ * 4 kHz. The count is moved to its end here (the ring contents do not
+ * matter for the counts); the push that would make it 2^32 - 1 is refused. */
+static void test_sample_count_end(void **state)
+{
+    static fnav_allan_t a;
+    fnav_allan_result_t r;
+    int i;
+    (void)state;
+    assert_int_equal(fnav_allan_init(&a, NULL), FNAV_OK);
+    for (i = 0; i < 100; i++) {
+        assert_int_equal(fnav_allan_push(&a, (fnav_real_t)(0.01 * (double)(i % 7))), FNAV_OK);
+    }
+    a.n = UINT32_MAX - 3u;
+    assert_int_equal(fnav_allan_push(&a, FNAV_R(0.02)), FNAV_OK);
+    assert_int_equal(fnav_allan_push(&a, FNAV_R(0.03)), FNAV_OK);
+    assert_int_equal(fnav_allan_push(&a, FNAV_R(0.04)), FNAV_E_RANGE);
+    assert_int_equal(fnav_allan_samples(&a), UINT32_MAX - 1u);
+    assert_int_equal(fnav_allan_get(&a, 0, &r), FNAV_OK);
+    assert_int_equal(r.tau, 1u);
+    assert_int_equal(r.n_phase, UINT32_MAX); /* samples + 1 */
+    assert_int_equal(r.terms, UINT32_MAX - 2u);
+    assert_true(fnav_allan_edf(0, r.lag, r.n_phase, 1) > 0.0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1537,6 +1564,7 @@ int main(void)
         cmocka_unit_test(test_edf_single_term),
         cmocka_unit_test(test_avar_record_ramp),
         cmocka_unit_test(test_noise_id_edges),
+        cmocka_unit_test(test_sample_count_end),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -527,6 +527,44 @@ static void test_global_long_offset_start(void **state)
     assert_true(fabs((double)p[2] / 2.0e-3 - 1.0) < 0.04);
 }
 
+/* The sample count's end (a review, 2026-11-28): with a hop of one sample
+ * the segment count reached 2^32 with the samples and wrapped to 0 (get then
+ * answered FNAV_E_STATE, and the GLOBAL mean divided a sum of every sample
+ * by a count that had stopped). 12.4 days at 4 kHz. The counts are moved
+ * to their end here, consistently (hop 1: nseg = nsamples - nfft + 1); the
+ * push that would make the count 2^32 is refused. */
+static void test_sample_count_end(void **state)
+{
+    static fnav_welch_t w;
+    fnav_welch_config_t c = fnav_welch_config_default;
+    fnav_real_t out[FNAV_WELCH_MAX_BINS];
+    int i, refused = 0;
+    (void)state;
+    c.nfft = 8u;
+    c.overlap = 7u;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_OK);
+    for (i = 0; i < 40; i++) {
+        assert_int_equal(fnav_welch_push(&w, (fnav_real_t)(0.1 * (double)(i % 5))), FNAV_OK);
+    }
+    w.nsamples = UINT32_MAX - 20u;
+    w.nseg = w.nsamples - c.nfft + 1u;
+    for (i = 0; i < 40; i++) {
+        fnav_status_t st = fnav_welch_push(&w, (fnav_real_t)(0.1 * (double)(i % 5)));
+        if (st == FNAV_E_RANGE) {
+            refused++;
+        } else {
+            assert_int_equal(st, FNAV_OK);
+        }
+    }
+    assert_int_equal(refused, 20);
+    assert_int_equal(w.nsamples, UINT32_MAX);
+    assert_int_equal(fnav_welch_segments(&w), UINT32_MAX - c.nfft + 1u);
+    assert_int_equal(fnav_welch_get(&w, out, FNAV_WELCH_MAX_BINS), FNAV_OK);
+    for (i = 0; i < 5; i++) {
+        assert_true(fnav_isfinite(out[i]) && out[i] >= FNAV_R(0.0));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -539,6 +577,7 @@ int main(void)
         cmocka_unit_test(test_offset),
         cmocka_unit_test(test_segment_mean_large_offset),
         cmocka_unit_test(test_global_long_offset_start),
+        cmocka_unit_test(test_sample_count_end),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -163,7 +163,8 @@ FNAV_WARN_UNUSED fnav_status_t fnav_allan_init(fnav_allan_t *a, const fnav_allan
  * @param y  the sample (any unit; rate, specific force, ...)
  * @return FNAV_OK; FNAV_E_NANINF for a NaN/Inf sample and FNAV_E_RANGE
  *         for |y| > FNAV_INPUT_MAX_ABS (both ignored, state unchanged), and
- *         FNAV_E_RANGE when 2^32 - 1 samples were already pushed.
+ *         FNAV_E_RANGE when 2^32 - 2 samples were already pushed (their
+ *         2^32 - 1 phase values are what fnav_allan_result_t.n_phase holds).
  * ISR-safe for distinct objects; bounded time.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_allan_push(fnav_allan_t *a, fnav_real_t y);

@@ -92,7 +92,7 @@ typedef struct {
     uint32_t fill;                             /**< samples in the ring (<= nfft) */
     uint32_t since;                            /**< samples since the last segment */
     uint32_t nseg;                             /**< segments averaged */
-    uint32_t nsamples;                         /**< samples pushed (saturates) */
+    uint32_t nsamples;                         /**< samples pushed (at most 2^32 - 1) */
 } fnav_welch_t;
 
 /**
@@ -109,7 +109,8 @@ FNAV_WARN_UNUSED fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch
  * Add one sample; completes a segment every (nfft - overlap) samples once
  * nfft samples were seen.
  * @return FNAV_OK; FNAV_E_NANINF for NaN/Inf, FNAV_E_RANGE for
- *         |x| > FNAV_INPUT_MAX_ABS (both ignored, state unchanged).
+ *         |x| > FNAV_INPUT_MAX_ABS and once 2^32 - 1 samples were pushed
+ *         (ignored, state unchanged).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x);
 
