@@ -95,7 +95,10 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
         /* a still period ends at the alignment's max_still_s, so a longer
          * minimum would never renew */
         cfg->realign_min_s > cfg->align.max_still_s || !(cfg->zaru_after_s >= FNAV_R(0.0)) ||
-        !fnav_isfinite(cfg->zaru_after_s)) {
+        !fnav_isfinite(cfg->zaru_after_s) ||
+        /* a time jump is longer than a gap (1.5 nominal intervals): below,
+         * every interval would be a jump and the alignment never completes */
+        (cfg->stance.rate_hz > FNAV_R(0.0) && !(cfg->max_gap_s * cfg->stance.rate_hz > FNAV_R(1.5)))) {
         return FNAV_E_CONFIG;
     }
     for (b = 0; b < sizeof *nav; b++) {
@@ -411,7 +414,9 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
         if (dt == FNAV_R(0.0)) {
             nav->stats.duplicates++;
             nav->health |= FNAV_HEALTH_DUPLICATE;
-        } else if (dt > nav->cfg.max_gap_s) {
+        } else if (dt > nav->cfg.max_gap_s && dt > FNAV_R(1.5) * nominal) {
+            /* (the second test for an estimated rate whose interval is
+             * above max_gap_s: init refuses that with a configured rate) */
             nav->stats.time_jumps++;
             nav->health |= FNAV_HEALTH_TIME_JUMP;
             dt = nominal; /* the motion inside the jump is unknown */

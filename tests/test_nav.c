@@ -954,6 +954,50 @@ static void test_float_vs_double(void **state)
             FNAV_USE_DOUBLE ? "64" : "32", n, 100.0 * worst);
 }
 
+/* A time jump must be longer than a gap (a review, 2026-11-28): with
+ * max_gap_s below the sample interval every interval was a time jump,
+ * integrated as one nominal interval and restarting the alignment's still
+ * period, so the navigator never aligned (a 20 Hz still log, max_gap_s 0.04:
+ * 0 of 400 frames aligned). Refused at init with a configured rate; with
+ * an estimated one an interval is a jump only beyond 1.5 nominal intervals
+ * too. */
+static void test_max_gap_below_interval(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    long k, aligned = 0;
+    (void)state;
+    c.max_gap_s = FNAV_R(0.04);
+    c.stance.rate_hz = FNAV_R(20.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c.stance.rate_hz = FNAV_R(40.0); /* 1.5 intervals: 0.0375 s */
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    c.stance.rate_hz = FNAV_R(0.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    for (k = 0; k < 400; k++) {
+        fnav_sample_t s = still(k);
+        s.t_ns = (int64_t)k * 50000000; /* 20 Hz */
+        assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+        while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+            aligned += (fr.flags & FNAV_FRAME_ALIGNED) != 0u;
+        }
+    }
+    assert_int_equal(nav.stats.time_jumps, 0u);
+    assert_int_equal(nav.stats.gaps, 0u);
+    assert_true(aligned > 250);
+    /* a real jump is still one */
+    {
+        fnav_sample_t s = still(400);
+        s.t_ns = (int64_t)399 * 50000000 + (int64_t)2000000000;
+        assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+        fnav_nav_finish(&nav);
+        while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+        }
+        assert_int_equal(nav.stats.time_jumps, 1u);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -963,6 +1007,7 @@ int main(void)
         cmocka_unit_test(test_step),
         cmocka_unit_test(test_run_port),
         cmocka_unit_test(test_zaru_after),
+        cmocka_unit_test(test_max_gap_below_interval),
         cmocka_unit_test(test_settle_onsets),
         cmocka_unit_test(test_settle_not_at_alignment),
         cmocka_unit_test(test_realign),

@@ -31,8 +31,9 @@
  * frame without propagation or update (a duplicate must not be counted as a
  * second measurement); an interval longer than 1.5 nominal intervals is
  * counted as a gap and integrated as it is; an interval longer than
- * max_gap_s is counted as a time jump and integrated as one nominal interval
- * (the motion inside it is unknown); time going backwards is rejected with
+ * max_gap_s (and than 1.5 nominal intervals: init refuses a max_gap_s below
+ * that with a configured rate) is counted as a time jump and integrated as
+ * one nominal interval (the motion inside it is unknown); time going backwards is rejected with
  * FNAV_E_TIME and the sample ignored. NaN/Inf samples are rejected with
  * FNAV_E_NANINF. Nothing of the state changes on a rejected sample.
  */
@@ -97,7 +98,9 @@ typedef struct {
     fnav_real_t yaw_sd_rad;            /**< initial yaw standard deviation, rad (yaw is defined 0) */
     fnav_real_t gyro_bias_sd_rps;      /**< initial sd of the AR(1) gyro bias states, rad/s */
     fnav_real_t accel_bias_sd_mps2;    /**< initial sd of the AR(1) accel bias states, m/s^2 */
-    fnav_real_t max_gap_s;             /**< intervals above this are time jumps, s */
+    fnav_real_t max_gap_s;             /**< intervals above this (and above 1.5 nominal intervals)
+                                            are time jumps, s; with stance.rate_hz set, init
+                                            refuses max_gap_s <= 1.5 / rate_hz */
     int closed_form;                   /**< UKF closed-form linear sigma points (1) */
     fnav_real_t diverge_speed_mps;     /**< |velocity| above this is divergence, m/s (default 30:
                                             beyond any foot, sprinting swing included) */
