@@ -28,7 +28,11 @@
  * sample rate (configured, or the median of the first FNAV_STANCE_RATE_PROBE
  * intervals, fewer when FNAV_STANCE_MAX_WINDOW is smaller; stamps too coarse
  * for a median interval need the rate configured), so the detector behaves
- * the same at 100 Hz and at 820 Hz.
+ * the same at 100 Hz and at 820 Hz. The ring holds h + L + 1 samples at
+ * most (FNAV_STANCE_MAX_WINDOW): above about 1.4 kHz with the default 64
+ * the window is cut to what fits and min_zupt_s to what is left (at 4 kHz:
+ * 63 samples, 15.75 ms, and 32 samples, 8 ms, not 25 and 20 ms;
+ * docs/navigation.md, "Stance detector").
  *
  * Adaptive threshold (docs/navigation.md): running or jogging keeps the foot
  * from coming fully to rest, and the statistic's minimum in each stance rises
