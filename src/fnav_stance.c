@@ -24,6 +24,11 @@
 #define REBASE_AT (1L << 30)
 #define RUN_MAX 1000000001L
 
+/* The foot-strike search's stamps are microseconds modulo 2^32 (71.6 min):
+ * a time jump of 2^31 us (35.8 min) or more clears the history before it
+ * (segment()). */
+#define JERK_SPAN_NS ((int64_t)2147483648 * 1000)
+
 const fnav_stance_config_t fnav_stance_config_default = {
     FNAV_DETECTOR_SHOE, /* detector */
     FNAV_R(0.0),        /* rate_hz: estimate */
@@ -300,6 +305,19 @@ static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
     fnav_real_t jerk = FNAV_R(0.0);
     if (st->have_prev) {
         jerk = fnav_vec3_norm(fnav_vec3_sub(fnav_vec3_from(f), fnav_vec3_from(st->prev_acc)));
+        if (o->sample.t_ns - st->prev_t_ns >= JERK_SPAN_NS) {
+            /* a time jump the history's microsecond stamps (modulo 2^32)
+             * cannot span: the foot-strike search must not look before it
+             * (the motion inside is unknown); -1 is below every jerk and
+             * every half maximum, so it is never the largest nor chosen */
+            int b;
+            for (b = 0; b < FNAV_STANCE_EVENT_BUF; b++) {
+                st->jerk[b] = -FNAV_R(1.0);
+            }
+            for (b = 0; b < FNAV_STANCE_EVENT_BUF / FNAV_STANCE_JERK_BLOCK; b++) {
+                st->jerk_bmax[b] = -FNAV_R(1.0);
+            }
+        }
     }
     {
         long slot = k % FNAV_STANCE_EVENT_BUF;
