@@ -700,6 +700,41 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         hx_reader_close(r);
     }
     hx_log_free(&res);
+    if (nav.stance.win > 0 && nav.stance.rate_hz > FNAV_R(0.0)) {
+        /* the detector's ring (FNAV_STANCE_MAX_WINDOW samples) cuts its
+         * window and minimum ZUPT run at high rates (docs/navigation.md,
+         * "Stance detector"): the decisions then differ from the configured
+         * durations, silently until said here */
+        const double fs = (double)nav.stance.rate_hz;
+        const double want_half = 0.5 * (double)cfg->stance.window_s * fs;
+        const int want_win = want_half < 1e6 ? 2 * (int)want_half + 1 : 2000001;
+        const double want_zupt = floor((double)cfg->stance.min_zupt_s * fs + 0.5);
+        /* the highest rate at which both fit: half window + minimum run +
+         * 1 <= ring (fnav_stance.c, set_rate), in whole hundreds of Hz */
+        const double span_s = 0.5 * (double)cfg->stance.window_s + (double)cfg->stance.min_zupt_s;
+        const double fs_max = span_s > 0.0 ? (double)(FNAV_STANCE_MAX_WINDOW - 1) / span_s : fs;
+        const double fs_fit = fs_max >= 100.0 ? 100.0 * floor(fs_max / 100.0) : fs_max;
+        const int cut_win = want_win > nav.stance.win && want_win >= 3;
+        const int cut_zupt = want_zupt > (double)nav.stance.n_min_zupt;
+        if (cut_win || cut_zupt) {
+            char what[200];
+            size_t n = 0;
+            what[0] = '\0';
+            if (cut_win) {
+                n += (size_t)snprintf(what, sizeof what, "its window to %.1f ms (of %.1f)",
+                                      1e3 * (double)nav.stance.win / fs, 1e3 * (double)cfg->stance.window_s);
+            }
+            if (cut_zupt && n < sizeof what) {
+                snprintf(what + n, sizeof what - n, "%sits minimum ZUPT run to %.1f ms (of %.1f)",
+                         cut_win ? " and " : "", 1e3 * (double)nav.stance.n_min_zupt / fs,
+                         1e3 * (double)cfg->stance.min_zupt_s);
+            }
+            hx_warn(cmd,
+                    "%s: at %.0f Hz the stance detector's ring of %d samples cuts %s: resample (--rate %.0f) or "
+                    "build with a larger FNAV_STANCE_MAX_WINDOW (docs/navigation.md, \"Stance detector\")",
+                    path, fs, FNAV_STANCE_MAX_WINDOW, what, fs_fit);
+        }
+    }
     if (rc == 0) {
         /* wrong units are also why a log never looks still */
         int u = units_check(path, &nav, pc.gyro_max_rps, pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0, traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0,

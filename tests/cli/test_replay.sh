@@ -463,6 +463,15 @@ else fail "long stand: $(grep note "$T/stand.out"; grep -o '"longest_stand_s":[^
 "$H" replay "$T/stand.csv" --param zaru=1 --param zaru_after_s=1 > "$T/stand2.out" 2>&1
 if grep -q "stood" "$T/stand2.out"; then fail "the stand is noted with the ZARU on"; else pass "no stand note with the standstill ZARU on"; fi
 
+# above about 1.9 kHz the detector's ring cuts its window and minimum ZUPT
+# run: said, with the rate that fits (silent before)
+"$H" sim --duration 12 --rate 4000 --profile mtx --out "$T/w4k.bin" >/dev/null 2>&1
+"$H" replay "$T/w4k.bin" > /dev/null 2> "$T/w4k.err"
+if grep -q "at 4000 Hz the stance detector's ring of [0-9]* samples cuts its window to 15.8 ms (of 25.0) and its minimum ZUPT run .*--rate 1900" "$T/w4k.err"; then
+    pass "a 4 kHz log: the cut detector window is said"; else fail "4 kHz: $(cat "$T/w4k.err")"; fi
+"$H" replay "$T/w4k.bin" --rate 1900 > /dev/null 2> "$T/w4k19.err"
+if grep -q "ring of .* cuts" "$T/w4k19.err"; then fail "the window still cut at the rate it names"; else pass "resampled to the rate it names: no cut"; fi
+
 if [ "$fails" -ne 0 ]; then
     echo "test_replay.sh: $fails failure(s)"
     exit 1
