@@ -567,6 +567,12 @@ static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_
     const double g = (double)nav->cfg.gravity_mps2;
     const double fn = nav->aligned ? (double)fnav_vec3_norm(nav->align.result.accel_mean_mps2) : 0.0;
     int bad;
+    if (!nav->aligned && !(f_norm_mean > 1e-6 * g)) {
+        /* no specific force at all: not a unit but a dead channel */
+        snprintf(err, err_size, "%s: the accelerometer reads %s throughout: disconnected, or its columns missing?",
+                 path, f_norm_mean > 0.0 ? "almost 0" : "0");
+        return 2;
+    }
     if (!nav->aligned && f_norm_mean > 0.0 && f_norm_mean < 0.5 * g) {
         /* no rest found (a gyro in deg/s hides every still period): the
          * mean |f| of the whole log stands in, but only to reveal a log in

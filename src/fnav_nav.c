@@ -477,7 +477,9 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
             if (fnav_ukf_zupt(&nav->ukf, fnav_vec3_from(s->gyro_rps)) == FNAV_OK) {
                 flags |= FNAV_FRAME_ZUPT;
             }
-            nav->stance_s += dt_used;
+            if (nav->stance_s < nav->cfg.zaru_after_s) {
+                nav->stance_s += dt_used; /* saturates: a float sum of hours would lose the samples */
+            }
             if (nav->cfg.zaru && nav->stance_s >= nav->cfg.zaru_after_s) {
                 st = fnav_ukf_zaru(&nav->ukf, fnav_vec3_from(s->gyro_rps));
                 (void)st;

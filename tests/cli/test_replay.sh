@@ -289,6 +289,11 @@ awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.7g,%.7g,%.7g\n", $1, $2
     vectors/nav/golden/gx2_walk2.csv > "$T/in_deg.csv"
 expect_exit 1 "gyroscope in deg/s" "$H" replay "$T/in_deg.csv" --quiet
 expect_err "probably in deg/s (multiply by pi/180)" "a log in deg/s is named as such"
+# an accelerometer that reads 0 throughout is named as dead, not as a walk
+# without a still period
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3f,0,0,0,0.001,0,0\n", i / 200 }' > "$T/zacc.csv"
+expect_exit 1 "accelerometer reading 0" "$H" replay "$T/zacc.csv" --quiet
+expect_err "the accelerometer reads 0 throughout: disconnected" "a dead accelerometer is named"
 # both mistakes at once: both are named (only the first was)
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5 * 57.29578, $6 * 57.29578, $7 * 57.29578 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_gdeg.csv"
