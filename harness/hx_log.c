@@ -65,6 +65,7 @@ struct hx_reader {
     char delim;                 /* ',' '\t' ';' or ' ' (any whitespace) */
     int col_t, col_a[3], col_g[3], col_temp, col_aux;
     int ncols_needed;
+    int missing_col;            /* setup_header: the column not found (0 t ... 6 gz), else -1 */
     int nfields;                /* fields of the line last split */
     double ctr_wrap;            /* ipol: 65536 per wrap of the 16-bit packet counter so far */
     double ctr_prev;            /* ipol: the last raw counter */
@@ -370,6 +371,82 @@ static int has_field(const char *head, const char *name)
     return 0;
 }
 
+/* The OpenShoe GX2 logger's preamble: a line that begins with "Inertial
+ * data", or the "Header:" line naming a_x [g]. A mention of either inside
+ * another line (a CSV's comment "# from a GX2 log, a_x [g] x 9.80665") is
+ * not one. */
+static int gx2_preamble(const char *text)
+{
+    const char *p = text;
+    while (*p != '\0') {
+        const char *e = strchr(p, '\n');
+        size_t len = e != NULL ? (size_t)(e - p) : strlen(p);
+        while (len > 0 && (*p == ' ' || *p == '\t' || *p == '\r')) {
+            p++;
+            len--;
+        }
+        if (len >= 13 && strncmp(p, "Inertial data", 13) == 0) {
+            return 1;
+        }
+        if (len >= 7 && strncmp(p, "Header:", 7) == 0) {
+            char line[600];
+            memcpy(line, p, len < sizeof line ? len : sizeof line - 1);
+            line[len < sizeof line ? len : sizeof line - 1] = '\0';
+            if (strstr(line, "a_x [g]") != NULL) {
+                return 1;
+            }
+        }
+        if (e == NULL) {
+            break;
+        }
+        p = e + 1;
+    }
+    return 0;
+}
+
+/* Whether the first line of text is n numbers (n in 1..HX_MAX_COLS) and
+ * nothing else, separated by commas, tabs, semicolons or blanks, a trailing
+ * separator allowed: the headerless OpenShoe 820 Hz file, also as a
+ * spreadsheet or MATLAB (save -ascii) writes it. */
+static int count_numbers(const char *text)
+{
+    int n = 0;
+    const char *p = text;
+    for (;;) {
+        char tok[64];
+        size_t k = 0;
+        double v;
+        while (*p == ',' || *p == ';' || *p == '\t' || *p == ' ' || *p == '\r') {
+            p++;
+        }
+        if (*p == '\0' || *p == '\n') {
+            return n;
+        }
+        while (*p != '\0' && *p != '\n' && *p != ',' && *p != ';' && *p != '\t' && *p != ' ' && *p != '\r') {
+            if (k + 1 >= sizeof tok) {
+                return -1;
+            }
+            tok[k++] = *p++;
+        }
+        tok[k] = '\0';
+        if (parse_num(tok, &v) != 0 || ++n > HX_MAX_COLS) {
+            return -1;
+        }
+    }
+}
+
+static int full_interchange_header(const char *head)
+{
+    static const char *const names[7] = { "t", "ax", "ay", "az", "gx", "gy", "gz" };
+    int i;
+    for (i = 0; i < 7; i++) {
+        if (!has_field(head, names[i])) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 static hx_format_t detect(const unsigned char *b, size_t n)
 {
     char text[600], head[600];
@@ -384,7 +461,7 @@ static hx_format_t detect(const unsigned char *b, size_t n)
     m = n < sizeof text - 1 ? n : sizeof text - 1;
     memcpy(text, b, m);
     text[m] = '\0';
-    if (strstr(text, "Inertial data") != NULL || strstr(text, "a_x [g]") != NULL) {
+    if (gx2_preamble(text)) {
         return HX_FMT_GX2;
     }
     {
@@ -415,6 +492,12 @@ static hx_format_t detect(const unsigned char *b, size_t n)
         if (strncmp(head, "acquisitionfrequency", 20) == 0) {
             return HX_FMT_IPOL;
         }
+        if (full_interchange_header(head)) {
+            /* every column of the interchange format: ours, even if it
+             * also carries a foreign format's names (a converted log that
+             * kept its source's columns) */
+            return HX_FMT_CSV;
+        }
         if (has_field(head, "time(s)") && has_field(head, "gyroscopex(deg/s)") && has_field(head, "accelerometerx(g)")) {
             return HX_FMT_NGIMU;
         }
@@ -431,25 +514,9 @@ static hx_format_t detect(const unsigned char *b, size_t n)
             return HX_FMT_CSV;
         }
     }
-    {
-        /* headerless: six comma-separated numbers -> OpenShoe 820 Hz */
-        char *nl = strchr(text, '\n');
-        int commas = 0;
-        const char *p;
-        if (nl != NULL) {
-            *nl = '\0';
-        }
-        for (p = text; *p != '\0'; p++) {
-            if (*p == ',') {
-                commas++;
-            } else if (!(isdigit((unsigned char)*p) || *p == '.' || *p == '-' || *p == '+' ||
-                         *p == 'e' || *p == 'E' || *p == '\r' || *p == ' ')) {
-                return HX_FMT_CSV; /* has a header of some kind */
-            }
-        }
-        if (commas == 5) {
-            return HX_FMT_OS820;
-        }
+    if (count_numbers(text) == 6) {
+        /* headerless: six numbers -> OpenShoe 820 Hz */
+        return HX_FMT_OS820;
     }
     return HX_FMT_CSV;
 }
@@ -521,21 +588,29 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
         }
         break;
     }
-    if (r->delim == ',' && strchr(r->line, ',') == NULL) {
+    if (strchr(r->line, r->delim) == NULL) {
         /* the interchange format and the comma-separated foreign ones: a
          * spreadsheet's tab- or semicolon-separated export is read the same
-         * way (detection accepts those separators too) */
-        if (strchr(r->line, '\t') != NULL) {
+         * way (detection accepts those separators too); the tab-separated
+         * ipol file also with commas, semicolons or blanks (its names have
+         * no spaces) */
+        if (strchr(r->line, ',') != NULL) {
+            r->delim = ',';
+        } else if (strchr(r->line, '\t') != NULL) {
             r->delim = '\t';
         } else if (strchr(r->line, ';') != NULL) {
             r->delim = ';';
+        } else if (r->meta.format == HX_FMT_IPOL) {
+            r->delim = ' ';
         }
     }
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     r->ncols_needed = 0;
+    r->missing_col = -1;
     for (i = 0; i < 8; i++) {
         int c = (names[i] != NULL) ? find_col(f, n, names[i]) : -1;
         if (c < 0 && names[i] != NULL && (i < 7) && (i > 0 || time_required)) {
+            r->missing_col = i;
             if (r->meta.format == HX_FMT_CSV) {
                 set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]", r->path,
                         r->stats.lines, names[i]);
@@ -583,6 +658,7 @@ static int setup_text(hx_reader_t *r, double rate_hz)
     r->gyr_scale = 1.0;
     r->col_temp = -1;
     r->col_aux = -1;
+    r->missing_col = -1;
     r->delim = ',';
     switch (m->format) {
     case HX_FMT_CSV: {
@@ -651,10 +727,13 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         static const char *const names[8] = { "PacketCounter", "Acc_X", "Acc_Y", "Acc_Z",
                                               "Gyr_X", "Gyr_Y", "Gyr_Z", NULL };
         double fs = 0.0;
-        if (read_line(r) <= 0) {
-            set_err(r, "%s: empty file", r->path);
-            return -1;
-        }
+        do {
+            /* blank lines before the first are skipped, as detection does */
+            if (read_line(r) <= 0) {
+                set_err(r, "%s: empty file", r->path);
+                return -1;
+            }
+        } while (blank(r->line));
         {
             /* "Acquisition frequency: 100 Hz", in any case, spaces around */
             char head[64];
@@ -664,7 +743,7 @@ static int setup_text(hx_reader_t *r, double rate_hz)
             }
         }
         if (!(fs > 0.0 && fs < 1.0e6)) {
-            set_err(r, "%s:1: expected 'Acquisition frequency: N Hz'", r->path);
+            set_err(r, "%s:%ld: expected 'Acquisition frequency: N Hz'", r->path, r->stats.lines);
             return -1;
         }
         r->time_mode = TIME_COUNTER;
@@ -680,6 +759,7 @@ static int setup_text(hx_reader_t *r, double rate_hz)
     }
     case HX_FMT_OS820:
         r->time_mode = TIME_INDEX;
+        r->delim = '\0'; /* chosen on the first line (next_text_fields) */
         r->rate_hz = rate_hz > 0.0 ? rate_hz : 820.0;
         set_cols(r, -1, 0, 3);
         copy_str(m->sensor, sizeof m->sensor, "OpenShoe (820 Hz)");
@@ -728,10 +808,13 @@ static int setup_text(hx_reader_t *r, double rate_hz)
  * more than half bridges with the last good period (docs/log-format.md).
  * The packet number Nr says how many periods the difference spans: a jump
  * of k (k - 1 packets lost) expects k periods, and a restart across it is
- * bridged with k of them. */
+ * bridged with k of them. A restart before any period was measured (the
+ * file's first interval) is bridged with k periods of the logger's own rate
+ * estimate (the Freq. column, within 4 % of the true rate from the first
+ * line), or without it with the host interval, which jitters 1-25 ms. */
 #define GX2_TICK_HZ 19660800L
 #define GX2_MAX_LOST 1000 /* a larger jump of Nr is taken for a restart of the count, one period */
-static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr)
+static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr, double freq_hz)
 {
     if (!r->have_prev) {
         r->gx2_ticks = 0;
@@ -747,7 +830,9 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr
             r->gx2_bridged++;
         } else {
             double dh = host_s - r->gx2_prev_host;
-            if (!(dh > 0.0 && dh < 0.1)) {
+            if (freq_hz > 10.0 && freq_hz < 10000.0) {
+                dh = (double)k / freq_hz;
+            } else if (!(dh > 0.0 && dh < 0.1)) {
                 dh = 1.0 / 250.0;
             }
             r->gx2_ticks += (int64_t)(dh * (double)GX2_TICK_HZ + 0.5);
@@ -811,6 +896,15 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     int n, i;
     double v[6], tv = 0.0, aux = 0.0;
     int64_t t_ns = 0;
+    if (r->delim == '\0') {
+        /* headerless OpenShoe 820 Hz: commas as in the data set, or tabs,
+         * semicolons or blanks (a spreadsheet's export, MATLAB's save
+         * -ascii), as detection accepts them */
+        r->delim = strchr(r->line, ',') != NULL    ? ','
+                   : strchr(r->line, '\t') != NULL ? '\t'
+                   : strchr(r->line, ';') != NULL  ? ';'
+                                                   : ' ';
+    }
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     r->nfields = n;
     if (r->meta.format == HX_FMT_GX2) {
@@ -901,7 +995,7 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         s->flags |= FNAV_SAMPLE_HAS_SEQ;
         break;
     case TIME_GX2: {
-        double host = 0.0;
+        double host = 0.0, freq = 0.0;
         if (parse_num(f[7], &tv) != 0 || parse_num(f[r->col_aux], &aux) != 0 ||
             parse_num(f[r->col_t], &host) != 0) {
             set_err(r, "%s:%ld: counter, Nr or time stamp is not a number", r->path, r->stats.lines);
@@ -911,7 +1005,10 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
             set_err(r, "%s:%ld: Nr or counter is not a 32-bit count", r->path, r->stats.lines);
             return FNAV_E_FORMAT;
         }
-        t_ns = gx2_time(r, tv, host, aux);
+        if (n <= 13 || parse_num(f[13], &freq) != 0) {
+            freq = 0.0; /* Freq. [Hz], used only before a period is measured */
+        }
+        t_ns = gx2_time(r, tv, host, aux, freq);
         s->seq = (uint32_t)aux;
         s->flags |= FNAV_SAMPLE_HAS_SEQ;
         break;
@@ -1136,7 +1233,7 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
 {
     hx_reader_t *r;
     unsigned char head[600];
-    int got;
+    int got, guessed = 0;
     if (rate_hz < 0.0 || rate_hz > 1.0e6 || rate_hz != rate_hz) {
         snprintf(err, err_size, "%s: sample rate %g Hz is not in (0, 1e6]", path, rate_hz);
         return NULL;
@@ -1170,6 +1267,7 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
     }
     if (fmt == HX_FMT_AUTO) {
         fmt = detect(head, (size_t)got);
+        guessed = 1;
     }
     if (gzrewind(r->gz) != 0) {
         snprintf(err, err_size, "%s: cannot rewind", path);
@@ -1180,7 +1278,16 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
     r->meta.format = fmt;
     copy_str(r->meta.source, sizeof r->meta.source, path);
     if (((fmt == HX_FMT_BIN) ? setup_bin(r) : setup_text(r, rate_hz)) != 0) {
-        snprintf(err, err_size, "%s", r->err);
+        if (!guessed || (fmt == HX_FMT_CSV && r->missing_col != 0)) {
+            /* given with --from, or our CSV known by its 't' column */
+            snprintf(err, err_size, "%s", r->err);
+        } else if (fmt == HX_FMT_CSV) {
+            snprintf(err, err_size, "%s (no importer's header recognised, read as footnav CSV; give --from FORMAT "
+                                    "for another format)", r->err);
+        } else {
+            snprintf(err, err_size, "%s (format %s detected from the content; give --from FORMAT if it is another)",
+                     r->err, hx_format_name(fmt));
+        }
         gzclose(r->gz);
         free(r);
         return NULL;

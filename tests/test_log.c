@@ -652,6 +652,44 @@ static void test_gx2_lost_packets(void **state)
     remove(p);
 }
 
+/* GX2: a timer restart on the file's first interval, before any period was
+ * measured, is bridged with the logger's own rate (Freq. [Hz], here 249.8)
+ * instead of the host stamps, which jitter to 25 ms (here 31.5 ms, the
+ * bridged interval until 2026-11-28: a false 31.5 ms gap). */
+static void test_gx2_first_restart(void **state)
+{
+    const long period = 78720;
+    hx_log_t log;
+    char err[320], p[256];
+    FILE *f;
+    long nr, counter = 130831728;
+    (void)state;
+    tmp_path(p, sizeof p, "_data_inert.txt");
+    f = fopen(p, "w");
+    assert_non_null(f);
+    fprintf(f, "\r\nInertial data.\r\n\r\nHeader:      a_x [g]:      a_y [g]:      a_z [g]: ar_x [rad/s]: ar_y [rad/s]: "
+               "ar_z [rad/s]:      Counter: Checksum:     Nr:   Filtered ts[s]: Unfiltered ts[s]:      Pred. ts[s]: "
+               "Freq. [Hz]:      m_x [G]:      m_y [G]:      m_z [G]:\r\n");
+    for (nr = 1; nr <= 10; nr++) {
+        const double host = 1274434048.5 + (nr == 1 ? 0.0 : 0.0315 + 0.004 * (double)(nr - 2));
+        if (nr == 2) {
+            counter = 6068; /* restarted */
+        } else if (nr > 2) {
+            counter += period;
+        }
+        fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %ld    0x15fd       %ld %.6f %.6f %.6f  249.800000   -0.12299968   -0.01066045   -0.46057537 \r\n",
+                counter, nr, host, host, host + 0.004);
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.meta.format, HX_FMT_GX2);
+    assert_int_equal(log.n, 10);
+    assert_true(llabs(log.t_ns[1] - log.t_ns[0] - (int64_t)llround(1e9 / 249.8)) <= 60); /* a tick: 51 ns */
+    assert_true(llabs(log.t_ns[2] - log.t_ns[1] - period * 1000000000LL / 19660800LL) <= 1);
+    hx_log_free(&log);
+    remove(p);
+}
+
 /* Format detection by the names a header holds, not its first bytes: the
  * shared data sets' headers with ", " between names, quotes, another
  * column order, a leading index column, a blank first line, and the ipol
@@ -692,6 +730,34 @@ static void test_detect_variants(void **state)
         { "# made by a script\n#\nt,ax,ay,az,gx,gy,gz\n0,0.5,0.2,9.8,0.1,0.2,0.3\n  # a note\n"
           "0.01,0.5,0.2,9.8,0.1,0.2,0.3\n",
           HX_FMT_CSV, 0.5, 0.3 },
+        /* the headerless OpenShoe 820 Hz file with a trailing comma, tabs,
+         * semicolons, or blanks and exponents (MATLAB's save -ascii): until
+         * 2026-11-28 only exactly five commas were it, the others failed
+         * with "header has no column 't'" */
+        { "0.5,-0.4,9.8,0.1,0.2,0.3,\r\n0.5,-0.4,9.8,0.1,0.2,0.3,\r\n", HX_FMT_OS820, 0.5, 0.3 },
+        { "0.5\t-0.4\t9.8\t0.1\t0.2\t0.3\n0.5\t-0.4\t9.8\t0.1\t0.2\t0.3\n", HX_FMT_OS820, 0.5, 0.3 },
+        { "0.5;-0.4;9.8;0.1;0.2;0.3\n0.5;-0.4;9.8;0.1;0.2;0.3\n", HX_FMT_OS820, 0.5, 0.3 },
+        { "   5.0000000e-01  -4.0000000e-01   9.8000000e+00   1.0000000e-01   2.0000000e-01   3.0000000e-01\n"
+          "   5.0000000e-01  -4.0000000e-01   9.8000000e+00   1.0000000e-01   2.0000000e-01   3.0000000e-01\n",
+          HX_FMT_OS820, 0.5, 0.3 },
+        /* ipol: a blank line before the first, and a comma-separated export
+         * (failed until 2026-11-28: "FILE:1: expected 'Acquisition
+         * frequency'", "header has no column 'PacketCounter'") */
+        { "\nAcquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+          "0.0\t0.5\t0.2\t9.8\t0.1\t0.2\t0.3\n1.0\t0.5\t0.2\t9.8\t0.1\t0.2\t0.3\n",
+          HX_FMT_IPOL, 0.5, 0.3 },
+        { "Acquisition frequency: 100 Hz\nPacketCounter,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z\n"
+          "0.0,0.5,0.2,9.8,0.1,0.2,0.3\n1.0,0.5,0.2,9.8,0.1,0.2,0.3\n",
+          HX_FMT_IPOL, 0.5, 0.3 },
+        /* the interchange format that mentions a GX2 in a comment, or keeps a
+         * foreign format's columns beside its own: ours (until 2026-11-28
+         * read as gx2, "no 'Header:' line found", and adis, "header has no
+         * column 'acc_y_g'") */
+        { "# converted from an OpenShoe GX2 log (a_x [g] x 9.80665)\nt,ax,ay,az,gx,gy,gz\n"
+          "0,0.5,0.2,9.8,0.1,0.2,0.3\n0.01,0.5,0.2,9.8,0.1,0.2,0.3\n",
+          HX_FMT_CSV, 0.5, 0.3 },
+        { "t,ax,ay,az,gx,gy,gz,acc_x_g,gyro_x_dps\n0,0.5,0.2,9.8,0.1,0.2,0.3,9,9\n0.01,0.5,0.2,9.8,0.1,0.2,0.3,9,9\n",
+          HX_FMT_CSV, 0.5, 0.3 },
     };
     size_t i;
     (void)state;
@@ -710,6 +776,33 @@ static void test_detect_variants(void **state)
         hx_log_free(&log);
         unlink(p);
     }
+}
+
+/* A header that detection takes for one format but that lacks a column:
+ * the error names the detected format and --from; with --from given it
+ * does not. */
+static void test_detect_wrong_hint(void **state)
+{
+    char p[256], err[320];
+    hx_log_t log;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Accelerometer X (g),Accelerometer Y (g),"
+                  "Accelerometer Z (g)\n0,1,2,3,4,5\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":1: header has no column 'Gyroscope Z (deg/s)'"));
+    assert_non_null(strstr(err, "format ngimu detected from the content; give --from FORMAT"));
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_NGIMU, 0.0, err, sizeof err), -1);
+    assert_null(strstr(err, "--from"));
+    write_text(p, "time,acc x,acc y,acc z,gyr x,gyr y,gyr z\n0,1,2,3,4,5,6\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":1: header has no column 't'"));
+    assert_non_null(strstr(err, "no importer's header recognised, read as footnav CSV; give --from FORMAT"));
+    write_text(p, "t,ax,ay,az,gx,gy\n0,1,2,3,4,5\n"); /* ours, known by its 't': no hint */
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":1: header has no column 'gz'; expected t,ax,ay,az,gx,gy,gz[,temp]"));
+    assert_null(strstr(err, "--from"));
+    unlink(p);
 }
 
 /* The rate of time-stamped logs (hx_stamp_rate_hz), at 398.3 and 820 Hz:
@@ -937,8 +1030,10 @@ int main(void)
         cmocka_unit_test(test_importers),
         cmocka_unit_test(test_importer_units),
         cmocka_unit_test(test_gx2_lost_packets),
+        cmocka_unit_test(test_gx2_first_restart),
         cmocka_unit_test(test_ipol_counter_wrap),
         cmocka_unit_test(test_detect_variants),
+        cmocka_unit_test(test_detect_wrong_hint),
         cmocka_unit_test(test_stamp_rate),
         cmocka_unit_test(test_roundtrip_all_formats),
         cmocka_unit_test(test_killed_writer),

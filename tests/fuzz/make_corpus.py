@@ -50,6 +50,19 @@ def main():
             b'-0.05,-0.3,0.7,-0.006,0,-1.015\n0.35,-0.3,0.45,-0.01,0,-1.018\n')
     put('log_reader', 'adis_synthetic', bytes([FMT['auto']]) + adis)
     put('log_reader', 'adis_synthetic_gz', bytes([FMT['auto'] | 0x40]) + gzip.compress(adis, mtime=0))
+    # separators of the headerless 820 Hz file and of the ipol file that
+    # detection and the readers accept (docs/log-format.md, Importers)
+    os820 = head('openshoe_c_820hz/OpenShoeDataSet.txt', 6)
+    put('log_reader', 'openshoe820_trailing_comma', bytes([FMT['auto']]) + os820.replace(b'\r\n', b',\r\n'))
+    put('log_reader', 'openshoe820_tabs', bytes([FMT['auto'] | 0x80]) + os820.replace(b',', b'\t'))
+    put('log_reader', 'openshoe820_blanks', bytes([FMT['openshoe820']]) + os820.replace(b',', b'  '))
+    put('log_reader', 'ipol_comma_blank_first', bytes([FMT['auto']]) +
+        b'\nAcquisition frequency: 100 Hz\n'
+        b'PacketCounter,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z\n'
+        b'0.0,5.0,0.4,8.9,-0.002,0.008,-0.017\n1.0,5.1,0.4,8.9,-0.010,0.008,-0.015\n')
+    # GX2 whose timer restarts on the first interval (bridged with Freq.)
+    gx2 = head('openshoe_gx2/Measurement_100521_2_data_inert.txt', 12).split(b'\r\n')
+    put('log_reader', 'gx2_first_restart', bytes([FMT['auto']]) + b'\r\n'.join(gx2[:5] + gx2[9:]))
     put('log_reader', 'csv_temp', bytes([FMT['csv']]) +
         b't,ax,ay,az,gx,gy,gz,temp\n0,0.1,0.2,-9.8,0.01,0.02,0.03,21.5\n0.005,0.1,0.2,-9.8,0.01,0.02,0.03,21.5\n')
     with open(os.path.join(ROOT, 'vectors', 'logformat', 'sample_v1.bin'), 'rb') as f:
