@@ -275,21 +275,36 @@ static int secs_to_ns(double t_s, int64_t *out)
     return 0;
 }
 
+/* A zlib error after reading (0 if none), said with its line: a gzip stream
+ * that ends early is a truncated .gz (an incomplete copy), not a recording
+ * cut off mid-write. */
+static int gz_failed(hx_reader_t *r, long line)
+{
+    int e;
+    const char *msg = gzerror(r->gz, &e);
+    if (e == Z_OK || e == Z_STREAM_END) {
+        return 0;
+    }
+    if (e == Z_BUF_ERROR) {
+        set_err(r, "%s:%ld: the gzip data ends early (a truncated .gz, e.g. an incomplete copy)", r->path, line);
+    } else {
+        set_err(r, "%s:%ld: read error (%s)", r->path, line, msg);
+    }
+    return 1;
+}
+
 /* Read one line; 1 ok, 0 EOF, -1 error (err set). */
 static int read_line(hx_reader_t *r)
 {
     size_t n;
     if (gzgets(r->gz, r->line, (int)sizeof r->line) == NULL) {
-        int e;
-        (void)gzerror(r->gz, &e);
-        if (e != Z_OK && e != Z_STREAM_END) {
-            set_err(r, "%s:%ld: read error (%s)", r->path, r->stats.lines + 1, gzerror(r->gz, &e));
-            return -1;
-        }
-        return 0;
+        return gz_failed(r, r->stats.lines + 1) ? -1 : 0;
     }
     r->stats.lines++;
     n = strlen(r->line);
+    if (n > 0 && r->line[n - 1] != '\n' && gzeof(r->gz) && gz_failed(r, r->stats.lines)) {
+        return -1; /* the last text before a truncated gzip stream's end */
+    }
     /* gzgets stops only at a newline, a full buffer or the end of the
      * file: a line shorter than that was cut by a NUL byte in the data */
     if (n == 0 || (n < sizeof r->line - 1 && r->line[n - 1] != '\n' && !gzeof(r->gz))) {

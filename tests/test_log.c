@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <zlib.h>
 
@@ -372,6 +373,40 @@ static void test_csv_gzip(void **state)
     assert_int_equal(r.n, 2);
     assert_int_equal(r.end, FNAV_END);
     assert_true(r.s[1].t_ns == 5000000);
+    unlink(p);
+}
+
+/* A .csv.gz cut short (an incomplete copy): every sample before the cut is
+ * kept and the reading ends in an error that says so. Until 2026-11-28 a
+ * cut inside a line passed as "last line is incomplete (recording cut off
+ * mid-write)", a warning with exit status 0, while a cut at a line's end
+ * was a "read error". */
+static void test_gz_truncated(void **state)
+{
+    char p[256], err[320];
+    hx_log_t log;
+    gzFile gz;
+    struct stat sb;
+    int k, rc;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv.gz");
+    gz = gzopen(p, "wb");
+    assert_non_null(gz);
+    gzprintf(gz, "gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g\n");
+    for (k = 0; k < 20000; k++) {
+        gzprintf(gz, "%.2f,%.2f,%.2f,%.5f,%.5f,%.5f\n", 0.05 * (k % 7), -0.3 + 0.05 * (k % 11), 0.45 + 0.05 * (k % 5),
+                 -0.00333 * (k % 3), 0.00333 * (k % 13), -1.01565 + 0.00333 * (k % 4));
+    }
+    assert_int_equal(gzclose(gz), Z_OK);
+    assert_int_equal(stat(p, &sb), 0);
+    assert_int_equal(truncate(p, sb.st_size / 2), 0);
+    rc = hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_int_equal(rc, 1);
+    assert_int_equal(log.meta.format, HX_FMT_ADIS);
+    assert_true(log.n > 1000 && log.n < 20000);
+    assert_non_null(strstr(log.error, "the gzip data ends early (a truncated .gz"));
+    assert_null(strstr(log.warnings, "cut off mid-write"));
+    hx_log_free(&log);
     unlink(p);
 }
 
@@ -1034,6 +1069,7 @@ int main(void)
         cmocka_unit_test(test_ipol_counter_wrap),
         cmocka_unit_test(test_detect_variants),
         cmocka_unit_test(test_detect_wrong_hint),
+        cmocka_unit_test(test_gz_truncated),
         cmocka_unit_test(test_stamp_rate),
         cmocka_unit_test(test_roundtrip_all_formats),
         cmocka_unit_test(test_killed_writer),
