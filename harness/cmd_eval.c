@@ -522,7 +522,13 @@ typedef struct {
     int strides;
     int skipped;  /* strides whose sample lies outside the trajectory */
     int no_truth; /* strides without a truth position (motion capture lost) */
+    double truth_end_gap_s; /* log time after the truth's last stride (0 when beyond the log) */
 } stride_res_t;
+
+/* A truth that ends this long before the log leaves the walk's end unscored:
+ * said in the row's note (the shared footprint truths end on the log's last
+ * sample) */
+#define TRUTH_END_GAP_NOTE_S 5.0
 
 /* Per-stride horizontal error in the truth's frame, which is the initial
  * heading frame of the IMU (as footnav's n frame: x along the initial
@@ -570,6 +576,10 @@ static int stride_errors(const hx_traj_t *t, const gcp_t *g, stride_res_t *r)
         n++;
     }
     r->strides = n;
+    r->truth_end_gap_s = 0.0;
+    if (g->n > 0 && t->n > 0 && g->idx[g->n - 1] >= 0 && (size_t)g->idx[g->n - 1] < t->n) {
+        r->truth_end_gap_s = 1e-9 * (double)(t->f[t->n - 1].t_ns - t->f[g->idx[g->n - 1]].t_ns);
+    }
     r->rms = n > 0 ? sqrt(se2 / n) : (double)NAN;
     r->stride_err_med = hx_median(e, n);
     r->final_pct = r->path > 0.0 ? 100.0 * r->final_err / r->path : (double)NAN;
@@ -614,6 +624,10 @@ static void stride_notes(char *note, size_t size, const gcp_t *g, const stride_r
     }
     if (g->cut) {
         note_add(note, size, "truth's last line cut off (no newline): not read");
+    }
+    if (r->truth_end_gap_s > TRUTH_END_GAP_NOTE_S) {
+        snprintf(buf, sizeof buf, "truth ends %.0f s before the log: its end not scored", r->truth_end_gap_s);
+        note_add(note, size, buf);
     }
 }
 

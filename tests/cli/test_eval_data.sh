@@ -97,9 +97,10 @@ if [ -n "$D" ]; then
     VI="$D/pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-28-39"
     P="$T/truth/pyshoe_vicon_llio/own_3dmgx5_footprints"; V="$T/truth/pyshoe_vicon_llio/vicon_3dmgx3"
     mkdir -p "$P" "$V"
-    for w in cut nohead; do ln -s "${FP}_imu.csv" "$P/${w}_imu.csv"; done
+    for w in cut nohead short; do ln -s "${FP}_imu.csv" "$P/${w}_imu.csv"; done
     head -c $(($(wc -c < "${FP}_strides_gcp.csv") - 20)) "${FP}_strides_gcp.csv" > "$P/cut_strides_gcp.csv"
     tail -n +2 "${FP}_strides_gcp.csv" > "$P/nohead_strides_gcp.csv"
+    head -n $(($(wc -l < "${FP}_strides_gcp.csv") / 2)) "${FP}_strides_gcp.csv" > "$P/short_strides_gcp.csv"
     n=$(($(wc -l < "${FP}_strides_gcp.csv") - 2))
     row=$(($(sed -n 6p "${VI}_strides_gcp.csv" | cut -d, -f1 | awk '{ printf "%d", $1 }') + 2)) # the 5th stride's line
     awk -F, -v r=$row 'BEGIN { OFS = "," } NR == r { $8 = "nan" } { print }' "${VI}_imu.csv" > "$V/lost_imu.csv"
@@ -111,6 +112,10 @@ if [ -n "$D" ]; then
         pass "a truth file cut off mid-line: its last row not read, and noted"; else fail "cut truth: $(grep '^| cut' "$T/truth.md")"; fi
     if grep -q "^| nohead | $n | " "$T/truth.md"; then pass "a truth file without a header keeps its first stride"; else
         fail "headerless truth: $(grep '^| nohead' "$T/truth.md")"; fi
+    # a truth that stops half way (complete lines): the unscored end is noted
+    if grep -q "^| short | .*| truth ends [0-9]* s before the log: its end not scored |" "$T/truth.md" &&
+        ! grep -q "^| nohead | .*truth ends" "$T/truth.md"; then
+        pass "a truth ending before the log is noted"; else fail "short truth: $(grep '^| short' "$T/truth.md")"; fi
     if grep -q "^| lost | [0-9]* | [0-9.]* | [0-9.]* | [0-9.]* | 1 stride without a truth position not scored |" "$T/truth.md" &&
         grep -q "^| empty | [0-9]* | [0-9.]* | [0-9.]* | [0-9.]* | 1 stride without a truth position not scored |" "$T/truth.md"; then
         pass "a stride without motion capture is left out and noted"; else fail "lost motion capture: $(grep '^| \(lost\|empty\)' "$T/truth.md")"; fi
