@@ -148,5 +148,25 @@ else
     echo "skip shared-data checks (no ../shared/data; set FNAV_DATA_DIR)"
 fi
 
+# --- the bias-model experiment compares pairs that differ only in the model
+# (until 2026-11-28 one "off" run, with the generic profile's white noise,
+# stood against every table), walk by walk with the spread and a sign test
+if [ -n "$D" ] && [ -f "$D/xio_ngimu_gait/short_walk.csv" ]; then
+    mkdir -p "$T/bx/xio_ngimu_gait"
+    ln -s "$(cd "$D" && pwd)/xio_ngimu_gait/short_walk.csv" "$T/bx/xio_ngimu_gait/short_walk.csv"
+    expect_exit 0 "eval with experiments on one xio walk" "$H" eval --data "$T/bx" --out "$T/bx.md"
+    if grep -q "| data set | figure | navchip off | navchip ar1 | mtx off | mtx ar1 | shimmer off | shimmer ar1 | generic MEMS off | generic MEMS ar1 |" "$T/bx.md"; then
+        pass "experiment 1: an off and an ar1 column per profile"; else fail "experiment 1 columns: $(grep '^| data set' "$T/bx.md" | head -1)"; fi
+    row=$(grep "^| xio short_walk.csv | 3-D closure (m) |" "$T/bx.md" | head -1)
+    mtxoff=$("$H" replay "$T/bx/xio_ngimu_gait/short_walk.csv" --bias-model off --profile mtx --json - --quiet 2>/dev/null |
+        sed -n 's/.*"return_error_3d_m":[[:space:]]*\([0-9.]*\).*/\1/p')
+    want=$(printf "%.3f" "$mtxoff")
+    got=$(echo "$row" | awk -F'|' '{ gsub(/ /, "", $6); print $6 }')
+    if [ "$got" = "$want" ]; then pass "mtx off = replay --bias-model off --profile mtx ($got m)"; else fail "mtx off column $got, replay $want ($row)"; fi
+    if grep -q "^| generic MEMS | xio 3-D closure (m) | 1 | [01] of 1 | [-+]0\.[0-9]* \[[-+]0\.[0-9]*, [-+]0\.[0-9]*\] | 1\.000 |" "$T/bx.md"; then
+        pass "experiment 1: paired per-walk differences with range and sign test"
+    else fail "experiment 1 paired row: $(grep '^| generic MEMS |' "$T/bx.md")"; fi
+fi
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]
