@@ -641,6 +641,14 @@ static void test_importer_units(void **state)
     }
 }
 
+/* The OpenShoe GX2 logger's preamble and header line, as its files have them. */
+static void write_gx2_header(FILE *f)
+{
+    fprintf(f, "\r\nInertial data.\r\n\r\nHeader:      a_x [g]:      a_y [g]:      a_z [g]: ar_x [rad/s]: ar_y [rad/s]: "
+               "ar_z [rad/s]:      Counter: Checksum:     Nr:   Filtered ts[s]: Unfiltered ts[s]:      Pred. ts[s]: "
+               "Freq. [Hz]:      m_x [G]:      m_y [G]:      m_z [G]:\r\n");
+}
+
 /* GX2 time across lost packets: Nr jumps by k, the sensor timer by k
  * periods, and the interval must be k periods, also when the timer restarts
  * across the loss (bridged with k periods, not one). A written file in the
@@ -658,9 +666,7 @@ static void test_gx2_lost_packets(void **state)
     tmp_path(p, sizeof p, "_data_inert.txt");
     f = fopen(p, "w");
     assert_non_null(f);
-    fprintf(f, "\r\nInertial data.\r\n\r\nHeader:      a_x [g]:      a_y [g]:      a_z [g]: ar_x [rad/s]: ar_y [rad/s]: "
-               "ar_z [rad/s]:      Counter: Checksum:     Nr:   Filtered ts[s]: Unfiltered ts[s]:      Pred. ts[s]: "
-               "Freq. [Hz]:      m_x [G]:      m_y [G]:      m_z [G]:\r\n");
+    write_gx2_header(f);
     for (nr = 1; nr <= 25; nr++) {
         if (nr > 1) {
             counter += period;
@@ -702,9 +708,7 @@ static void test_gx2_first_restart(void **state)
     tmp_path(p, sizeof p, "_data_inert.txt");
     f = fopen(p, "w");
     assert_non_null(f);
-    fprintf(f, "\r\nInertial data.\r\n\r\nHeader:      a_x [g]:      a_y [g]:      a_z [g]: ar_x [rad/s]: ar_y [rad/s]: "
-               "ar_z [rad/s]:      Counter: Checksum:     Nr:   Filtered ts[s]: Unfiltered ts[s]:      Pred. ts[s]: "
-               "Freq. [Hz]:      m_x [G]:      m_y [G]:      m_z [G]:\r\n");
+    write_gx2_header(f);
     for (nr = 1; nr <= 10; nr++) {
         const double host = 1274434048.5 + (nr == 1 ? 0.0 : 0.0315 + 0.004 * (double)(nr - 2));
         if (nr == 2) {
