@@ -70,6 +70,38 @@ typedef struct {
     uint32_t nseg;
 } result_t;
 
+/* What each DC mode removes, for the output's statement of its assumptions;
+ * %s is the segment high-pass's corner (about f_s / nfft). */
+static void dc_text(int mode, double df, char *buf, size_t n)
+{
+    switch (mode) {
+    case 0:
+        snprintf(buf, n, "each segment's mean removed (a high-pass near f_s/nfft = %.3g Hz: gravity, biases and the "
+                         "motion below it do not count)", df);
+        break;
+    case 1:
+        snprintf(buf, n, "each segment's least-squares line removed (a high-pass near f_s/nfft = %.3g Hz: gravity, "
+                         "biases and the motion below it do not count)", df);
+        break;
+    case 2:
+        snprintf(buf, n, "the record's mean removed (its constant part only: the mean gravity and bias; everything "
+                         "that varies counts)");
+        break;
+    case 3:
+        snprintf(buf, n, "nothing removed (gravity and the biases count as power at 0 Hz)");
+        break;
+    default:
+        snprintf(buf, n, "nothing removed, and the 0 Hz bin left out of the total");
+        break;
+    }
+}
+
+/* The band is flagged as reaching the Nyquist frequency when it ends in the
+ * top tenth of the log's band: there the power has not fallen off (white
+ * noise puts the threshold at threshold x Nyquist, 0.95 of it), so the log
+ * cannot show where the band ends. */
+#define NYQ_FRAC 0.9
+
 static int parse_dc(const char *s, setting_t *st)
 {
     int i;
@@ -160,8 +192,12 @@ static void print_result(const char *title, const result_t *r, const fnav_bandwi
     }
     printf("  accelerometers: bandwidth %.1f Hz -> %.0f Hz\n", r->group_bw[0], r->group_fs[0]);
     printf("  gyroscopes:     bandwidth %.1f Hz -> %.0f Hz\n", r->group_bw[1], r->group_fs[1]);
-    printf("  lowest usable sampling frequency: %.0f Hz (%s limit it; %.0f %% of the power, multiples of %g Hz)\n",
-           r->overall_fs, r->group_fs[0] >= r->group_fs[1] ? "the accelerometers" : "the gyroscopes",
+    /* a tie is said as one: on a static log both groups reach the Nyquist frequency alike */
+    printf("  lowest usable sampling frequency: %.0f Hz (%s; %.0f %% of the power, multiples of %g Hz)\n",
+           r->overall_fs,
+           r->group_fs[0] > r->group_fs[1]   ? "the accelerometers limit it"
+           : r->group_fs[0] < r->group_fs[1] ? "the gyroscopes limit it"
+                                             : "accelerometers and gyroscopes alike",
            100.0 * (double)bc->threshold, (double)bc->round_hz);
 }
 
@@ -410,7 +446,8 @@ int hx_cmd_psd(int argc, char **argv)
     fnav_bandwidth_config_t bc = fnav_bandwidth_config_default;
     static result_t res, sres;
     long nfft = 64, overlap = -1, spec_nfft = 256, bad_i = -1;
-    double thr = 0.95, rnd = 50.0, rate;
+    double thr = 0.95, rnd = 50.0, rate, bw_max;
+    int above_rate, at_nyquist;
     int rc, exit_code = HX_EXIT_OK, dc_mode = 0, c, spec_axis = -1, bad_c = -1;
     const char *s;
     double fs_tab[NDC][NSENS_NFFT];
@@ -526,15 +563,34 @@ int hx_cmd_psd(int argc, char **argv)
     printf("harness psd: %s (%s), %zu samples at %.4g Hz, %.2f s\n", a.pos[0], log.meta.sensor, log.n, rate,
            (double)log.n / rate);
     {
-        char title[256];
+        char title[1024], dct[256];
+        dc_text(dc_mode, res.df, dct, sizeof dct);
         snprintf(title, sizeof title,
-                 "Welch: %s window of %u samples%s, overlap %u, dc %s, %u segments, resolution %.3g Hz",
+                 "Welch: %s window of %u samples%s, overlap %u, dc %s, %u segments, resolution %.3g Hz\n"
+                 "Criterion (paper II.B): per axis, the band from 0 Hz holding %.0f %% of the total power of the "
+                 "one-sided PSD of the channel as logged (sensor axes);\n"
+                 "  DC: %s;\n"
+                 "  sampling frequency = 2 x band, rounded up to a multiple of %g Hz; a group needs its widest axis",
                  st.wc.window == FNAV_WINDOW_HAMMING ? "Hamming" : (st.wc.window == FNAV_WINDOW_HANN ? "Hann" : "rect"),
                  (unsigned)st.wc.nfft, st.wc.symmetric ? " (symmetric)" : "", (unsigned)st.wc.overlap,
-                 k_dc_names[dc_mode], (unsigned)res.nseg, res.df);
+                 k_dc_names[dc_mode], (unsigned)res.nseg, res.df, 100.0 * thr, dct, rnd);
         print_result(title, &res, &bc);
     }
-    if (res.overall_fs > rate * (1.0 + 1e-9)) {
+    bw_max = res.group_bw[0] > res.group_bw[1] ? res.group_bw[0] : res.group_bw[1];
+    above_rate = res.overall_fs > rate * (1.0 + 1e-9);
+    at_nyquist = above_rate || bw_max >= NYQ_FRAC * 0.5 * rate;
+    if (at_nyquist && !above_rate) {
+        /* the rounded answer is within the log's rate, but the band still ends
+         * at the top of what the log can show (a static log: white sensor
+         * noise to the Nyquist frequency; the answer is then the log's rate by
+         * construction, not a property of the motion) */
+        hx_warn(CMD, "%.0f %% of the power reaches %.1f Hz, %.0f %% of the Nyquist frequency %.4g Hz: the power does "
+                     "not fall off inside this log's band (white sensor noise does this, e.g. a static log, which "
+                     "measures the sensor, not motion), so the log cannot show where the band ends; read %.0f Hz as "
+                     "a lower bound set by the log's rate, not a measured requirement",
+                100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate), 0.5 * rate, res.overall_fs);
+    }
+    if (above_rate) {
         /* 2 x bandwidth never exceeds the rate; the rounding up did. The band
          * reaches the Nyquist frequency (a static log's noise is white up to
          * it), so the log cannot show where the signal ends. */
@@ -597,7 +653,8 @@ int hx_cmd_psd(int argc, char **argv)
         cJSON_AddNumberToObject(set, "threshold", thr);
         cJSON_AddNumberToObject(set, "round_hz", rnd);
         cJSON_AddItemToObject(root, "result", json_result(&res));
-        cJSON_AddBoolToObject(root, "fs_above_log_rate", res.overall_fs > rate * (1.0 + 1e-9));
+        cJSON_AddBoolToObject(root, "fs_above_log_rate", above_rate);
+        cJSON_AddBoolToObject(root, "band_at_nyquist", at_nyquist);
         if (hx_flag(&a, "--sensitivity")) {
             cJSON *arr = cJSON_AddArrayToObject(root, "sensitivity");
             int d, k;

@@ -39,14 +39,24 @@ expect_exit 0 "static log, --plot --sensitivity" "$H" psd "$T/static.csv" --plot
 for f in psd ccdf spectrogram sensitivity; do
     [ -s "$T/splots/$f.png" ] && pass "static $f.png" || fail "static $f.png missing"
 done
+# the same log at its own 100 Hz: white noise to the 50 Hz Nyquist frequency, 2 x 47.5 Hz rounds up to exactly the
+# log's rate, so fs_above_log_rate stays false; the answer was printed as a measured "100 Hz (the accelerometers
+# limit it)" without a word, though it is the log's rate by construction (a review, 2026-11-29)
+expect_exit 0 "static log at 100 Hz" "$H" psd "$T/static.csv" --json "$T/s100.json"
+expect_err "of the Nyquist frequency 50 Hz: the power does not fall off" "a band at the Nyquist frequency is flagged below the log's rate"
+expect_out "accelerometers and gyroscopes alike" "a tie between the groups is not called the accelerometers'"
+expect_out "DC: each segment's mean removed (a high-pass near f_s/nfft = 1.56 Hz" "the output states its DC treatment"
+expect_out "band from 0 Hz holding 95 % of the total power" "the output states its criterion"
+"$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["band_at_nyquist"] is True and d["fs_above_log_rate"] is False and d["result"]["fs_hz"] == 100, d' "$T/s100.json" &&
+    pass "JSON band_at_nyquist on a static log" || fail "JSON band_at_nyquist on a static log"
 # the same log at 10 Hz: white noise to the 5 Hz Nyquist frequency, 2 x 4.75 Hz rounded up to 50 Hz, above the
 # log's own rate: said, and marked in the JSON
 awk -F, 'NR == 1 { print; next } { $1 = sprintf("%.1f", (NR - 2) / 10.0); print }' OFS=, "$T/static.csv" >"$T/static10.csv"
 expect_exit 0 "static log at 10 Hz" "$H" psd "$T/static10.csv" --json "$T/s10.json"
 expect_err "is above the log's own rate (10 Hz)" "an answer above the log's rate is flagged"
-"$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_above_log_rate"] is True and d["result"]["fs_hz"] == 50, d' "$T/s10.json" &&
+"$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_above_log_rate"] is True and d["band_at_nyquist"] is True and d["result"]["fs_hz"] == 50, d' "$T/s10.json" &&
     pass "JSON fs_above_log_rate" || fail "JSON fs_above_log_rate"
-"$PY" -c 'import json,sys; assert json.load(open(sys.argv[1]))["fs_above_log_rate"] is False' "$T/tone.json" &&
+"$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_above_log_rate"] is False and d["band_at_nyquist"] is False' "$T/tone.json" &&
     pass "JSON fs_above_log_rate false below the rate" || fail "fs_above_log_rate on the tone"
 # a value beyond any sensor (and the core's input range): exit 1, the line and column named
 awk -F, 'NR == 102 { $5 = "1e30" } { print }' OFS=, "$T/tone.csv" >"$T/huge.csv"
@@ -72,7 +82,7 @@ if [ -n "$O" ]; then
     done
     grep -q "^  global    1024" "$T/out" && pass "sensitivity table" || fail "sensitivity table"
     expect_exit 0 "820 Hz walk, recommended" "$H" psd "$O" --input-rate 820 --dc global --nfft 256 --json "$T/g.json"
-    "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]; assert r["fs_hz"] == 300, r' "$T/g.json" &&
+    "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); r=d["result"]; assert r["fs_hz"] == 300 and d["band_at_nyquist"] is False, d' "$T/g.json" &&
         pass "recommended setting answer" || fail "recommended setting answer"
 else
     echo "SKIP 820 Hz walk tests (shared data not found; set FNAV_DATA_DIR)"
