@@ -914,7 +914,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
  * |z| > 2.5 of one sign holding a point beyond the critical z of the
  * comparison c, appended to loc (count *nloc, capacity cap). */
 static void locate_into(const sg_result_t *r, int ch, int seg, const sg_cmp_t *c, sg_loc_t *loc, size_t *nloc,
-                        size_t cap)
+                        size_t cap, size_t *dropped)
 {
     const sg_plist_t *pl = &r->pl[ch][seg];
     size_t j = 0;
@@ -932,7 +932,9 @@ static void locate_into(const sg_result_t *r, int ch, int seg, const sg_cmp_t *c
             }
             k++;
         }
-        if (fabs(c->z[best]) > c->z_crit && *nloc < cap) {
+        if (fabs(c->z[best]) > c->z_crit && *nloc >= cap) {
+            ++*dropped;
+        } else if (fabs(c->z[best]) > c->z_crit) {
             sg_loc_t *L = &loc[(*nloc)++];
             double d = r->real[ch][seg][best] - c->twin_mean[best];
             L->dom = pl->p[j].dom;
@@ -952,7 +954,8 @@ static void locate_into(const sg_result_t *r, int ch, int seg, const sg_cmp_t *c
 
 static void locate(sg_result_t *r, int ch, int seg)
 {
-    locate_into(r, ch, seg, &r->ch[ch].cmp[seg], r->loc, &r->nloc, sizeof r->loc / sizeof r->loc[0]);
+    locate_into(r, ch, seg, &r->ch[ch].cmp[seg], r->loc, &r->nloc, sizeof r->loc / sizeof r->loc[0],
+                &r->nloc_dropped);
 }
 
 /* The given profile's white + AR(1) model of channel ch (not fitted). */
@@ -1196,7 +1199,8 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             }
             twinset_free(&tp);
             c->have_prof = 1;
-            locate_into(r, ch, SG_FULL, &c->cmp_prof[SG_FULL], r->ploc, &r->nploc, sizeof r->ploc / sizeof r->ploc[0]);
+            locate_into(r, ch, SG_FULL, &c->cmp_prof[SG_FULL], r->ploc, &r->nploc, sizeof r->ploc / sizeof r->ploc[0],
+                        &r->nloc_dropped);
         }
         /* attribution on every channel: a candidate whose held-out gain is
          * significant reveals a gap the omnibus test is too blunt for */

@@ -624,11 +624,13 @@ typedef struct {
     int S;
     sg_timing_t tim;
     size_t nloc;
-    sg_loc_t loc[64];
+    sg_loc_t loc[512];        /**< whole log and held out, every channel (64 until 2026-11-28: the
+                                   last channels' were dropped without a word) */
+    size_t nloc_dropped;      /**< locations beyond the capacity: counted, said */
     char verdict[32];         /**< none, explained, partly-explained, unexplained, too-short */
     char prof_name[64];       /**< static logs with --profile: its name */
     size_t nploc;
-    sg_loc_t ploc[64];        /**< where the profile's model misses the log (whole log) */
+    sg_loc_t ploc[512];       /**< where the profile's model misses the log (whole log) */
     double elapsed_s;
     void *nav;                /**< walk-domain result (hx_simgap_nav.h) */
 } sg_result_t;

@@ -299,6 +299,7 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
             cJSON_AddItemToArray(a, co);
         }
     }
+    cJSON_AddNumberToObject(root, "locations_dropped", (double)r->nloc_dropped);
     a = cJSON_AddArrayToObject(root, "locations");
     for (i = 0; i < r->nloc; i++) {
         cJSON_AddItemToArray(a, loc_json(&r->loc[i]));

@@ -147,6 +147,10 @@ static void print_static(FILE *f, const sg_result_t *r)
     if (r->nloc > 0) {
         fprintf(f, "where (whole log, |z| beyond the critical %.2f):\n", r->ch[r->loc[0].ch].cmp[SG_FULL].z_crit);
     }
+    if (r->nloc_dropped > 0) {
+        fprintf(f, "  (%lu more locations beyond the %lu listed: not kept)\n", (unsigned long)r->nloc_dropped,
+                (unsigned long)(sizeof r->loc / sizeof r->loc[0]));
+    }
     for (k = 0; k < r->nloc; k++) {
         const sg_loc_t *L = &r->loc[k];
         range_text(b, sizeof b, L);

@@ -90,6 +90,16 @@ json "$T/pw.json" 'sum(1 for p in j["navigation"]["gap"]["full"]["points"] if p[
 if grep -q "ar1 (none: sigma 0)" "$T/wn.out" && ! grep -q "ar1 (sigma 0 " "$T/wn.out"; then
     pass "an AR(1) of sigma 0 is printed as none"; else fail "sigma-0 AR(1): $(grep 'ar1 (' "$T/wn.out" | head -3)"; fi
 
+# more than 64 gap locations (two tones, a ramp and a rate random walk on
+# every channel): every one is kept, the last channel's too (the first 64
+# were kept and the rest dropped without a word)
+"$H" sim --motion stand:300 --rate 100 --profile mtx --seed 2 --effect vibration:ch=ax+ay+az+gx+gy+gz:freq_hz=7 \
+    --effect vibration:ch=ax+ay+az+gx+gy+gz:freq_hz=23 --effect ramp:ch=ax+ay+az+gx+gy+gz \
+    --effect rrw:ch=ax+ay+az+gx+gy+gz --out "$T/many.csv" >/dev/null 2>&1 || fail "sim many gaps"
+"$H" simgap "$T/many.csv" --max-effects 0 --json "$T/many.json" > /dev/null 2>&1
+json "$T/many.json" 'len(j["locations"]) > 64 and j["locations_dropped"] == 0 and any(l["channel"] == "gz" for l in j["locations"])' &&
+    pass "more than 64 locations kept, the last channel's too" || fail "locations: $(cat "$T/pyerr")"
+
 # logs without any noise (simulated with --profile none): the twins do not
 # vary, so no gap can be tested; a one-line error and exit 1, not SIGABRT
 "$H" sim --duration 30 --profile none --out "$T/nf.csv" >/dev/null 2>&1 || fail "sim noise-free walk"
