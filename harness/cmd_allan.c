@@ -1226,8 +1226,10 @@ static int ar1_identified(const run_t *R, const chan_t *ch, double tau_long_s)
     return 0;
 }
 
-/* ar1_identified with the channel's longest averaging time with data */
-static int ar1_resolved(const run_t *R, const chan_t *ch)
+/* The channel's longest averaging time with data, s: it bounds what can be
+ * identified (an AR(1) whose bump, near 1.89 T, lies beyond it is a random
+ * walk in disguise, with an arbitrary sigma). */
+static double tau_long_of(const run_t *R, const chan_t *ch)
 {
     double tau_long_s = 0.0;
     size_t j;
@@ -1236,7 +1238,13 @@ static int ar1_resolved(const run_t *R, const chan_t *ch)
             tau_long_s = (double)ch->res[j].tau / R->rate_hz;
         }
     }
-    return ar1_identified(R, ch, tau_long_s);
+    return tau_long_s;
+}
+
+/* ar1_identified with the channel's longest averaging time with data */
+static int ar1_resolved(const run_t *R, const chan_t *ch)
+{
+    return ar1_identified(R, ch, tau_long_of(R, ch));
 }
 
 static int write_profile(const run_t *R, const char *path, const char *name)
@@ -1245,7 +1253,6 @@ static int write_profile(const run_t *R, const char *path, const char *name)
     char err[320], comment[1024], extra[2048];
     size_t len = 0;
     int i, have_q = 0, have_k = 0, nfallback = 0;
-    size_t j;
     double tau_long_s;
     double q[6], kk[6], pv[6], pt[6], ps[6], rms[6], fallback[6];
     memset(&p, 0, sizeof p);
@@ -1266,16 +1273,8 @@ static int write_profile(const run_t *R, const char *path, const char *name)
             hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
             return -2;
         }
-        /* the longest averaging time with data bounds what can be identified:
-         * an AR(1) whose bump (near 1.89 T) lies beyond it is a random walk
-         * in disguise, with an arbitrary sigma */
-        tau_long_s = 0.0;
-        for (j = 0; j < ch->nres; j++) {
-            if (ch->res[j].terms > 0) {
-                tau_long_s = (double)ch->res[j].tau / R->rate_hz;
-            }
-        }
-        if (ar1_resolved(R, ch)) {
+        tau_long_s = tau_long_of(R, ch);
+        if (ar1_identified(R, ch, tau_long_s)) {
             m = ch->id.fit;
             fallback[k] = 0;
         } else if (!ch->id.paper_ok) {
