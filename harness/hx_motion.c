@@ -152,7 +152,7 @@ hx_motion_config_t hx_motion_config_default(void)
 
 /* ------------------------------------------------------------ small math */
 
-static void dcm_from_euler(double roll, double pitch, double yaw, double C[3][3])
+void hx_dcm_from_euler(double roll, double pitch, double yaw, double C[3][3])
 {
     /* C_nb = Rz(yaw) Ry(pitch) Rx(roll) (Titterton & Weston eq. 3.47) */
     double cr = cos(roll), sr = sin(roll), cp = cos(pitch), sp = sin(pitch), cy = cos(yaw), sy = sin(yaw);
@@ -813,7 +813,7 @@ hx_motion_t *hx_motion_create(const hx_motion_config_t *cfg, const char *script,
     m->cfg = *cfg;
     m->err = err;
     m->err_size = err_size;
-    dcm_from_euler(cfg->mount_deg[0] * D2R, cfg->mount_deg[1] * D2R, cfg->mount_deg[2] * D2R, m->C_fs);
+    hx_dcm_from_euler(cfg->mount_deg[0] * D2R, cfg->mount_deg[1] * D2R, cfg->mount_deg[2] * D2R, m->C_fs);
     quat_from_euler(cfg->mount_deg[0] * D2R, cfg->mount_deg[1] * D2R, cfg->mount_deg[2] * D2R, m->q_fs);
     still_state(v, zero, 0.0);
     if (push(m, 0.0, v, HX_PHASE_STILL) != 0) {
@@ -1020,7 +1020,7 @@ void hx_motion_eval(const hx_motion_t *m, double t, hx_truth_t *o)
     }
     /* attitude of the foot and its body rates from the ZYX Euler rates
      * (Titterton & Weston eq. 3.52 inverted) */
-    dcm_from_euler(p[3][0], p[4][0], p[5][0], C_nf);
+    hx_dcm_from_euler(p[3][0], p[4][0], p[5][0], C_nf);
     sr = sin(p[3][0]);
     cr = cos(p[3][0]);
     sp = sin(p[4][0]);

@@ -133,4 +133,8 @@ void hx_motion_eval(const hx_motion_t *m, double t_s, hx_truth_t *out);
 /** Name of a phase. */
 const char *hx_phase_name(int phase);
 
+/** C_nb = Rz(yaw) Ry(pitch) Rx(roll) of ZYX Euler angles, rad (Titterton &
+ *  Weston eq. 3.47; the simulator's mounting and truth, the replay's heading). */
+void hx_dcm_from_euler(double roll, double pitch, double yaw, double C[3][3]);
+
 #endif /* HX_MOTION_H */

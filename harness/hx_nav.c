@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "fnav_port_linux.h"
+#include "hx_motion.h"
 #include "hx_profile.h"
 
 #ifndef M_PI
@@ -770,22 +771,6 @@ size_t hx_nav_stance_mids(const hx_traj_t *t, size_t *idx, size_t max)
     return n;
 }
 
-void hx_euler_dcm(const fnav_real_t e[3], double c[3][3])
-{
-    /* C_nb = Rz(yaw) Ry(pitch) Rx(roll) (Titterton & Weston eq. 3.47) */
-    double sr = sin((double)e[0]), cr = cos((double)e[0]), sp = sin((double)e[1]), cp = cos((double)e[1]),
-           sy = sin((double)e[2]), cy = cos((double)e[2]);
-    c[0][0] = cp * cy;
-    c[0][1] = sr * sp * cy - cr * sy;
-    c[0][2] = cr * sp * cy + sr * sy;
-    c[1][0] = cp * sy;
-    c[1][1] = sr * sp * sy + cr * cy;
-    c[1][2] = cr * sp * sy - sr * cy;
-    c[2][0] = -sp;
-    c[2][1] = sr * cp;
-    c[2][2] = cr * cp;
-}
-
 void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
 {
     size_t i, n, *mid;
@@ -860,7 +845,8 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
          * turns in one swing. */
         double c[3][3];
         int k, have = 0;
-        hx_euler_dcm(t->f[first].euler_rad, c);
+        hx_dcm_from_euler((double)t->f[first].euler_rad[0], (double)t->f[first].euler_rad[1],
+                          (double)t->f[first].euler_rad[2], c);
         for (k = 0; k < 3; k++) {
             ref_b[k] = c[0][k];
         }
@@ -873,7 +859,7 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
                        dz = (double)f->pos_m[2] - (double)g->pos_m[2];
                 s->integrated_path_m += sqrt(dx * dx + dy * dy + dz * dz);
             }
-            hx_euler_dcm(f->euler_rad, c);
+            hx_dcm_from_euler((double)f->euler_rad[0], (double)f->euler_rad[1], (double)f->euler_rad[2], c);
             hx = c[0][0] * ref_b[0] + c[0][1] * ref_b[1] + c[0][2] * ref_b[2];
             hy = c[1][0] * ref_b[0] + c[1][1] * ref_b[1] + c[1][2] * ref_b[2];
             if (hx * hx + hy * hy >= 0.25) {

@@ -129,8 +129,6 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
 
 /* ------------------------------------------------------------ summary */
 
-/** C_nb (double) of a frame's ZYX Euler angles (roll, pitch, yaw), rad. */
-void hx_euler_dcm(const fnav_real_t e[3], double c[3][3]);
 
 /** Summary figures of a trajectory (docs/harness.md lists the JSON keys). */
 typedef struct {
