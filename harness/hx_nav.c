@@ -685,22 +685,20 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         hx_reader_close(r);
     }
     hx_log_free(&res);
-    if (nav.stance.win > 0 && nav.stance.rate_hz > FNAV_R(0.0)) {
+    {
         /* the detector's ring (FNAV_STANCE_MAX_WINDOW samples) cuts its
          * window and minimum ZUPT run at high rates (docs/navigation.md,
          * "Stance detector"): the decisions then differ from the configured
          * durations, silently until said here */
+        const unsigned cut = fnav_stance_cut(&nav.stance);
+        const int cut_win = (cut & FNAV_STANCE_CUT_WINDOW) != 0u, cut_zupt = (cut & FNAV_STANCE_CUT_MIN_ZUPT) != 0u;
         const double fs = (double)nav.stance.rate_hz;
-        const double want_half = 0.5 * (double)cfg->stance.window_s * fs;
-        const int want_win = want_half < 1e6 ? 2 * (int)want_half + 1 : 2000001;
-        const double want_zupt = floor((double)cfg->stance.min_zupt_s * fs + 0.5);
-        /* the highest rate at which both fit: half window + minimum run +
-         * 1 <= ring (fnav_stance.c, set_rate), in whole hundreds of Hz */
+        /* the advice: the highest rate at which both fit, half window +
+         * minimum run + 1 <= ring (fnav_stance.c, set_rate), in whole
+         * hundreds of Hz */
         const double span_s = 0.5 * (double)cfg->stance.window_s + (double)cfg->stance.min_zupt_s;
         const double fs_max = span_s > 0.0 ? (double)(FNAV_STANCE_MAX_WINDOW - 1) / span_s : fs;
         const double fs_fit = fs_max >= 100.0 ? 100.0 * floor(fs_max / 100.0) : fs_max;
-        const int cut_win = want_win > nav.stance.win && want_win >= 3;
-        const int cut_zupt = want_zupt > (double)nav.stance.n_min_zupt;
         if (cut_win || cut_zupt) {
             char what[200];
             size_t n = 0;

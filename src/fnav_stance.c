@@ -90,15 +90,28 @@ static int round_pos(fnav_real_t x)
     return x < FNAV_R(1.0e9) ? (int)(x + FNAV_R(0.5)) : 1000000000;
 }
 
+/* The window the configuration asks for at a rate (odd, at least 3),
+ * before the ring's cap: FNAV_STANCE_MAX_WINDOW + 1 stands for any longer. */
+static int window_wanted(const fnav_stance_t *st, fnav_real_t rate_hz)
+{
+    const fnav_real_t half_w = FNAV_R(0.5) * st->cfg.window_s * rate_hz;
+    const int w = half_w < (fnav_real_t)FNAV_STANCE_MAX_WINDOW ? 2 * (int)half_w + 1 : FNAV_STANCE_MAX_WINDOW + 1;
+    return w < 3 ? 3 : w;
+}
+
+/* The shortest ZUPT run the configuration asks for at a rate, samples,
+ * before the ring's cap. */
+static int min_zupt_wanted(const fnav_stance_t *st, fnav_real_t rate_hz)
+{
+    const int n = round_pos(st->cfg.min_zupt_s * rate_hz);
+    return n < 1 ? 1 : n;
+}
+
 /* Window and durations from the rate. */
 static void set_rate(fnav_stance_t *st, fnav_real_t rate_hz)
 {
-    const fnav_real_t half_w = FNAV_R(0.5) * st->cfg.window_s * rate_hz;
-    int w = half_w < (fnav_real_t)FNAV_STANCE_MAX_WINDOW ? 2 * (int)half_w + 1 : FNAV_STANCE_MAX_WINDOW + 1;
+    int w = window_wanted(st, rate_hz);
     int n;
-    if (w < 3) {
-        w = 3;
-    }
     if (w > FNAV_STANCE_MAX_WINDOW) {
         w = FNAV_STANCE_MAX_WINDOW - ((FNAV_STANCE_MAX_WINDOW % 2) == 0 ? 1 : 0);
     }
@@ -109,8 +122,7 @@ static void set_rate(fnav_stance_t *st, fnav_real_t rate_hz)
     st->n_ev = n < 1 ? 1 : (n > FNAV_STANCE_EVENT_BUF - 1 ? FNAV_STANCE_EVENT_BUF - 1 : n);
     n = round_pos(st->cfg.min_stance_s * rate_hz);
     st->n_min_stance = n < 1 ? 1 : n;
-    n = round_pos(st->cfg.min_zupt_s * rate_hz);
-    st->n_min_zupt = n < 1 ? 1 : n;
+    st->n_min_zupt = min_zupt_wanted(st, rate_hz);
     st->lag = st->n_min_zupt - 1;
     if (st->half + st->lag + 2 > FNAV_STANCE_MAX_WINDOW) {
         st->lag = FNAV_STANCE_MAX_WINDOW - 2 - st->half;
@@ -488,4 +500,20 @@ fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
         st->n_out -= REBASE_STEP;
     }
     return FNAV_OK;
+}
+
+unsigned fnav_stance_cut(const fnav_stance_t *st)
+{
+    unsigned cut = 0u;
+    FNAV_ASSERT(st != NULL);
+    if (st->win == 0) {
+        return 0u; /* the rate is not known yet */
+    }
+    if (window_wanted(st, st->rate_hz) > st->win) {
+        cut |= FNAV_STANCE_CUT_WINDOW;
+    }
+    if (min_zupt_wanted(st, st->rate_hz) > st->n_min_zupt) {
+        cut |= FNAV_STANCE_CUT_MIN_ZUPT;
+    }
+    return cut;
 }

@@ -833,6 +833,28 @@ static void test_foot_strike_time_jump(void **state)
     }
 }
 
+/* fnav_stance_cut: 0 until the rate is known; at 200 Hz nothing is cut;
+ * at 2 kHz the shortest ZUPT run (19 of 20 ms: half window 25 + 40 + 1 > 64),
+ * at 4 kHz the window too (63 of 101 samples) with the default ring of 64 */
+static void test_cut_durations(void **state)
+{
+    static const double rates[3] = { 200.0, 2000.0, 4000.0 };
+    const unsigned want[3] = { 0u, FNAV_STANCE_CUT_MIN_ZUPT, FNAV_STANCE_CUT_WINDOW | FNAV_STANCE_CUT_MIN_ZUPT };
+    int r;
+    (void)state;
+    for (r = 0; r < 3; r++) {
+        fnav_stance_t st;
+        fnav_stance_config_t c = fnav_stance_config_default;
+        const double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+        fnav_sample_t s = sample(0, rates[r], f, w);
+        c.rate_hz = (fnav_real_t)rates[r];
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        assert_int_equal(fnav_stance_cut(&st), 0u);
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        assert_int_equal(fnav_stance_cut(&st), want[r]);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -852,6 +874,7 @@ int main(void)
         cmocka_unit_test(test_counters_long_run),
         cmocka_unit_test(test_rest_run_long),
         cmocka_unit_test(test_foot_strike_time_jump),
+        cmocka_unit_test(test_cut_durations),
     };
     return cmocka_run_group_tests_name("stance", tests, NULL, NULL);
 }

@@ -203,6 +203,14 @@ void fnav_stance_finish(fnav_stance_t *st);
 /** Samples the detector currently holds back (its delay), samples. */
 long fnav_stance_pending(const fnav_stance_t *st);
 
+#define FNAV_STANCE_CUT_WINDOW 0x1u   /**< the window is shorter than window_s */
+#define FNAV_STANCE_CUT_MIN_ZUPT 0x2u /**< the shortest ZUPT run is shorter than min_zupt_s */
+
+/** Which configured durations the ring (FNAV_STANCE_MAX_WINDOW samples) cut
+ *  at the rate in use (high rates: the comment at the top): FNAV_STANCE_CUT_*
+ *  bits, 0 while the rate is not known. */
+unsigned fnav_stance_cut(const fnav_stance_t *st);
+
 #ifdef __cplusplus
 }
 #endif
