@@ -292,6 +292,13 @@ static void not_run_row(const ev_t *ev, int write, const char *name, int ncol, c
     fprintf(ev->md, " not run: %s |\n", why);
 }
 
+/* Append "; what" (or "what" to an empty note). */
+static void note_add(char *note, size_t size, const char *what)
+{
+    size_t len = strlen(note);
+    snprintf(note + len, size - len, "%s%s", len > 0 ? "; " : "", what);
+}
+
 /* One replay; 0 ok (partial input accepted with a note), -1 failure (its
  * reason in note). axes: run the axes check (the tables' replays; the
  * experiments' repeat the same walks and would spend half of eval's time on
@@ -317,8 +324,7 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
     if (t->cut_lines > 0) {
         /* the reader's warning, in the row: the recording was cut off
          * mid-write (a walk cut short is no closed loop) */
-        size_t len = strlen(note);
-        snprintf(note + len, note_size - len, "%slast line cut off mid-write: not read", len > 0 ? "; " : "");
+        note_add(note, note_size, "last line cut off mid-write: not read");
     }
     if (!t->aligned) {
         /* no still period: no navigation to evaluate (its figures are NaN) */
@@ -328,9 +334,8 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
     }
     if (t->axes.problem) {
         /* a statistical verdict (hx_axes.h): noted in the walk's row, not a failure */
-        size_t len = strlen(note);
-        snprintf(note + len, note_size - len, "%sgyro axes do not match the accelerometer's (fits as %s)",
-                 len > 0 ? "; " : "", t->axes.best_map);
+        snprintf(buf, sizeof buf, "gyro axes do not match the accelerometer's (fits as %s)", t->axes.best_map);
+        note_add(note, note_size, buf);
     }
     hx_nav_summarize(t, s);
     return 0;
@@ -615,13 +620,6 @@ typedef struct {
 static void no_strides(ev_t *ev, const char *path, char *why, size_t why_size)
 {
     fail(ev, path, why, why_size, "fewer than 2 truth strides with a position fall inside the replayed samples");
-}
-
-/* Append "; what" (or "what" to an empty note). */
-static void note_add(char *note, size_t size, const char *what)
-{
-    size_t len = strlen(note);
-    snprintf(note + len, size - len, "%s%s", len > 0 ? "; " : "", what);
 }
 
 /* The strides a walk's figures leave out, and the truth rows not read, in
