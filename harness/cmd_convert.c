@@ -1,12 +1,16 @@
-/* harness convert: any readable format -> .bin or CSV, sample by sample. */
+/* harness convert: any readable format -> .bin or CSV, sample by sample
+ * (with --rate: the whole log resampled as replay --rate does). */
+#include <stdlib.h>
 #include <string.h>
 
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_nav.h"
 
 static const hx_opt_t k_opts[] = {
     HX_INPUT_OPTS,
     { "--to", "FORMAT", "output format: bin or csv (default: from OUT's extension, .bin -> bin)", 0 },
+    { "--rate", "HZ", "resample to HZ first, as replay --rate (anti-alias low-pass; docs/harness.md)", 0 },
     { NULL, NULL, NULL, 0 }
 };
 
@@ -19,6 +23,72 @@ static const hx_spec_t k_spec = {
     "status is 1.",
     2, 2, k_opts
 };
+
+/* convert --rate: the whole log loaded, resampled by the replay's resampler
+ * (hx_nav_resample) and written; a partial input is resampled and written,
+ * exit 1. */
+static int convert_resampled(const hx_args_t *a, hx_format_t to)
+{
+    hx_log_t raw, res;
+    hx_writer_t *w;
+    char err[320], *end;
+    const char *rs = hx_arg(a, "--rate");
+    const double rate = strtod(rs, &end);
+    long dups = 0, k;
+    double fs = 0.0;
+    int exit_code, lrc;
+    fnav_sample_t s;
+    if (end == rs || *end != '\0' || !(rate > 0.0)) {
+        hx_error("convert", "--rate must be a rate in Hz above 0, not '%s'", rs);
+        return HX_EXIT_USAGE;
+    }
+    lrc = hx_load_input("convert", a, a->pos[0], &raw);
+    if (lrc < 0) {
+        return HX_EXIT_DATA;
+    }
+    exit_code = lrc > 0 ? HX_EXIT_DATA : HX_EXIT_OK;
+    if (hx_nav_resample(&raw, rate, &res, &dups, &fs, err, sizeof err) != 0) {
+        hx_error("convert", "%s: %s", a->pos[0], err);
+        hx_log_free(&raw);
+        return HX_EXIT_DATA;
+    }
+    res.meta = raw.meta;
+    res.meta.rate_hz = rate;
+    res.meta.rate_nominal = 1;
+    res.meta.has_temp = 0; /* the resampler carries no temperature */
+    hx_log_free(&raw);
+    w = hx_writer_open(a->pos[1], to, &res.meta, 0, err, sizeof err);
+    if (w == NULL) {
+        hx_error("convert", "%s", err);
+        hx_log_free(&res);
+        return HX_EXIT_IO;
+    }
+    for (k = 0; k < (long)res.n; k++) {
+        int c;
+        memset(&s, 0, sizeof s);
+        s.t_ns = res.t_ns[k];
+        s.seq = res.seq[k];
+        for (c = 0; c < 3; c++) {
+            s.accel_mps2[c] = (fnav_real_t)res.acc[k][c];
+            s.gyro_rps[c] = (fnav_real_t)res.gyr[k][c];
+        }
+        if (hx_writer_write(w, &s) != FNAV_OK) {
+            hx_error("convert", "%s: write failed", a->pos[1]);
+            exit_code = HX_EXIT_IO;
+            break;
+        }
+    }
+    hx_log_free(&res);
+    if (hx_writer_close(w, err, sizeof err) != FNAV_OK) {
+        hx_error("convert", "%s", err);
+        exit_code = HX_EXIT_IO;
+    }
+    if (dups > 0) {
+        hx_warn("convert", "%s: %ld duplicated time stamp%s dropped before resampling", a->pos[0], dups,
+                dups == 1 ? "" : "s");
+    }
+    return exit_code;
+}
 
 int hx_cmd_convert(int argc, char **argv)
 {
@@ -52,6 +122,9 @@ int hx_cmd_convert(int argc, char **argv)
     if (hx_same_file(a.pos[0], a.pos[1])) {
         hx_error("convert", "%s: the output is the input (it would be overwritten while read)", a.pos[1]);
         return HX_EXIT_USAGE;
+    }
+    if (hx_arg(&a, "--rate") != NULL) {
+        return convert_resampled(&a, to);
     }
     r = hx_open_input("convert", &a, a.pos[0]);
     if (r == NULL) {

@@ -80,10 +80,10 @@ void hx_traj_free(hx_traj_t *t);
 /**
  * Resample a whole log to rate_hz (downsampling only): exact duplicate time
  * stamps are dropped, a Blackman-windowed sinc low-pass with cut-off 0.45 x
- * rate_hz (length about 41 x the rate ratio, unit DC gain, zero phase) is run
- * over the input as if it were uniform at its median rate, and the filtered
- * signal is interpolated linearly at t0 + k / rate_hz using the input's own
- * time stamps.
+ * rate_hz (length about 41 x the rate ratio, unit DC gain, zero phase) is
+ * evaluated directly at each output instant t0 + k / rate_hz, placed between
+ * the input's own time stamps as a fractional input index (the input taken
+ * as uniform at its median rate; renormalised at the edges).
  * @param dups     receives the number of dropped duplicates
  * @param in_rate  receives the input's median rate, Hz
  * @return 0, or -1 with err filled (too few samples, rate not below the

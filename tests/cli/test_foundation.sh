@@ -149,5 +149,15 @@ expect_err "empty.csv: empty file" "empty file said"
 expect_exit 3 "unwritable output" "$H" convert vectors/walk.bin /nonexistent-dir/x.bin
 expect_err "cannot create" "unwritable output said"
 
+# convert --rate: the replay's resampler, written; replaying it gives the
+# trajectory of replay --rate; a bad rate is a usage error
+expect_exit 0 "convert --rate 100" "$H" convert vectors/walk.bin "$T/r100.csv" --rate 100
+"$H" replay "$T/r100.csv" --json "$T/r100a.json" >/dev/null 2>&1
+"$H" replay vectors/walk.bin --rate 100 --json "$T/r100b.json" >/dev/null 2>&1
+if [ -s "$T/r100a.json" ] && [ "$(grep -E '"(return_error_3d_m|strides|distance_m)"' "$T/r100a.json")" = "$(grep -E '"(return_error_3d_m|strides|distance_m)"' "$T/r100b.json")" ]; then
+    pass "convert --rate then replay = replay --rate"; else fail "convert --rate: $(grep return_error_3d_m "$T/r100a.json" "$T/r100b.json")"; fi
+expect_exit 2 "convert --rate 0" "$H" convert vectors/walk.bin "$T/r0.csv" --rate 0
+expect_err "rate in Hz above 0" "bad --rate said"
+
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]
