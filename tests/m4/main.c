@@ -129,6 +129,11 @@ int main(void)
                 a1 = SYST_CVR;
                 if (fr.flags & FNAV_FRAME_ZUPT) {
                     s2 = fnav_ukf_zupt(&u2, w);
+#ifdef M4_ZARU
+                    /* with the zero-angular-rate update after it (--param
+                     * zaru=1; docs/navigation.md, "Zero-velocity update") */
+                    s2 = fnav_ukf_zaru(&u2, w);
+#endif
                 }
                 b1 = SYST_CVR;
                 (void)s2;

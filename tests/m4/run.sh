@@ -4,7 +4,8 @@
 # -icount shift=0, semihosting). Skips with a message when the tools are
 # missing. Usage: sh tests/m4/run.sh [extra CFLAGS: -O2, -DM4_BIASOFF (bias
 # model off; the default is on), -DM4_NOLEVER (no lever states),
-# -DM4_NOSETTLE (no landing settling state)]: the default
+# -DM4_NOSETTLE (no landing settling state), -DM4_ZARU (the stance step
+# with the ZARU after the ZUPT)]: the default
 # configuration has 18 states, -DM4_NOLEVER the paper's 15, -DM4_BIASOFF 12,
 # both 9. M4_MAIN and M4_UKF replace tests/m4/main.c and src/fnav_ukf.c
 # (tests/m4/profile.sh passes its instrumented copies).
