@@ -64,14 +64,7 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to)
         return HX_EXIT_IO;
     }
     for (k = 0; k < (long)res.n; k++) {
-        int c;
-        memset(&s, 0, sizeof s);
-        s.t_ns = res.t_ns[k];
-        s.seq = res.seq[k];
-        for (c = 0; c < 3; c++) {
-            s.accel_mps2[c] = (fnav_real_t)res.acc[k][c];
-            s.gyro_rps[c] = (fnav_real_t)res.gyr[k][c];
-        }
+        hx_log_sample(&res, (size_t)k, &s);
         if (hx_writer_write(w, &s) != FNAV_OK) {
             hx_error("convert", "%s: write failed", a->pos[1]);
             exit_code = HX_EXIT_IO;

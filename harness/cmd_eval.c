@@ -1135,14 +1135,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                 fnav_status_t ps;
                 if (r < log.n) {
                     fnav_sample_t s;
-                    int c;
-                    memset(&s, 0, sizeof s);
-                    s.t_ns = log.t_ns[r];
-                    s.seq = log.seq[r];
-                    for (c = 0; c < 3; c++) {
-                        s.accel_mps2[c] = (fnav_real_t)log.acc[r][c];
-                        s.gyro_rps[c] = (fnav_real_t)log.gyr[r][c];
-                    }
+                    hx_log_sample(&log, r, &s);
                     if (fnav_stance_push(&st, &s) != FNAV_OK) {
                         break;
                     }

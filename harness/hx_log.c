@@ -1741,6 +1741,18 @@ int hx_log_load(hx_log_t *log, const char *path, hx_format_t fmt, double rate_hz
     return st == FNAV_END ? 0 : 1;
 }
 
+void hx_log_sample(const hx_log_t *log, size_t i, fnav_sample_t *s)
+{
+    int c;
+    memset(s, 0, sizeof *s);
+    s->t_ns = log->t_ns[i];
+    s->seq = log->seq[i];
+    for (c = 0; c < 3; c++) {
+        s->accel_mps2[c] = (fnav_real_t)log->acc[i][c];
+        s->gyro_rps[c] = (fnav_real_t)log->gyr[i][c];
+    }
+}
+
 void hx_log_free(hx_log_t *log)
 {
     free(log->t_ns);

@@ -151,4 +151,8 @@ int hx_log_load(hx_log_t *log, const char *path, hx_format_t fmt, double rate_hz
                 char *err, size_t err_size);
 void hx_log_free(hx_log_t *log);
 
+/** Sample i of a loaded log as the core takes it (time, sequence, specific
+ *  force and rate; no temperature). */
+void hx_log_sample(const hx_log_t *log, size_t i, fnav_sample_t *s);
+
 #endif /* HX_LOG_H */

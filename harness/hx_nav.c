@@ -402,18 +402,10 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
     hx_port_ctx_t *c = (hx_port_ctx_t *)ctx;
     fnav_status_t st;
     if (c->mem != NULL) {
-        size_t i = c->mem_i;
-        int k;
-        if (i >= c->mem->n) {
+        if (c->mem_i >= c->mem->n) {
             return FNAV_END;
         }
-        memset(s, 0, sizeof *s);
-        s->t_ns = c->mem->t_ns[i];
-        s->seq = c->mem->seq[i];
-        for (k = 0; k < 3; k++) {
-            s->accel_mps2[k] = (fnav_real_t)c->mem->acc[i][k];
-            s->gyro_rps[k] = (fnav_real_t)c->mem->gyr[i][k];
-        }
+        hx_log_sample(c->mem, c->mem_i, s);
         c->mem_i++;
         if (!c->lctx.have_t0) {
             c->lctx.t0_ns = s->t_ns;
