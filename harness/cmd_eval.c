@@ -338,6 +338,12 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
         note_add(note, note_size, buf);
     }
     hx_nav_summarize(t, s);
+    if (s->rate_off_fraction > 0.0) {
+        /* replay's note: the detector keeps the first rate (docs/navigation.md, "Timing") */
+        snprintf(buf, sizeof buf, "sample rate changes to %.1f Hz from %.1f s (%.0f %% of the log off the detector's "
+                 "%.1f Hz)", s->rate_change_hz, s->rate_change_at_s, 100.0 * s->rate_off_fraction, t->rate_hz);
+        note_add(note, note_size, buf);
+    }
     return 0;
 }
 

@@ -761,6 +761,46 @@ size_t hx_nav_stance_mids(const hx_traj_t *t, size_t *idx, size_t max)
     return n;
 }
 
+/* The rate along the log, block by block of HX_NAV_RATE_BLOCK positive
+ * intervals (a shorter last block is judged when it holds at least half as
+ * many), against the detector's: the first block off by more than
+ * HX_NAV_RATE_TOL, its rate, and the share of the log in such blocks. */
+static void rate_check(const hx_traj_t *t, hx_nav_summary_t *s)
+{
+    int64_t d[HX_NAV_RATE_BLOCK];
+    size_t i, m = 0, b0 = 0;
+    double off_s = 0.0;
+    s->rate_change_at_s = s->rate_change_hz = (double)NAN;
+    s->rate_off_fraction = 0.0;
+    if (!(t->rate_hz > 0.0) || t->n < 2 || s->duration_s <= 0.0) {
+        return;
+    }
+    for (i = 1; i <= t->n; i++) {
+        if (i < t->n) {
+            const int64_t dt = t->f[i].t_ns - t->f[i - 1].t_ns;
+            if (dt > 0) {
+                d[m++] = dt;
+            }
+        }
+        if (m == HX_NAV_RATE_BLOCK || (i == t->n && 2 * m >= HX_NAV_RATE_BLOCK)) {
+            double rate;
+            qsort(d, m, sizeof d[0], cmp_i64);
+            rate = 1e9 / (double)d[m / 2];
+            if (fabs(rate / t->rate_hz - 1.0) > HX_NAV_RATE_TOL) {
+                const size_t b1 = i < t->n ? i : t->n - 1;
+                if (!isfinite(s->rate_change_at_s)) {
+                    s->rate_change_at_s = 1e-9 * (double)(t->f[b0].t_ns - t->f[0].t_ns);
+                    s->rate_change_hz = rate;
+                }
+                off_s += 1e-9 * (double)(t->f[b1].t_ns - t->f[b0].t_ns);
+            }
+            m = 0;
+            b0 = i < t->n ? i : b0;
+        }
+    }
+    s->rate_off_fraction = off_s / s->duration_s;
+}
+
 void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
 {
     size_t i, n, *mid;
@@ -776,6 +816,7 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
     if (t->n > 0) {
         s->duration_s = 1e-9 * (double)(t->f[t->n - 1].t_ns - t->f[0].t_ns);
     }
+    rate_check(t, s);
     s->aligned_at_s = s->before_align_s = (double)NAN;
     if (first < t->n) {
         /* the detector's motion before the first aligned frame: walking
@@ -962,6 +1003,12 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                    "\"Zero-velocity update\")\n",
                 s->longest_stand_s, s->longest_stand_at_s);
     }
+    if (s->rate_off_fraction > 0.0) {
+        fprintf(f, "note              the sample rate changes: %.1f Hz from %.1f s, %.0f %% of the log off the "
+                   "detector's %.1f Hz (taken once, from the first intervals): its window and durations are wrong in "
+                   "seconds there; split the log or resample it (--rate HZ) (docs/navigation.md, \"Timing\")\n",
+                s->rate_change_hz, s->rate_change_at_s, 100.0 * s->rate_off_fraction, t->rate_hz);
+    }
     if (s->before_align_s > HX_NAV_LATE_ALIGN_S) {
         fprintf(f, "note              the detector saw %.1f s of motion before the alignment (%.2f s into the log): that "
                    "part of the walk is not navigated (the log starts while moving?)\n",
@@ -1020,6 +1067,15 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddItemToObject(root, "aligned_at_s", num(s->aligned_at_s));
     cJSON_AddItemToObject(root, "before_alignment_s", num(s->before_align_s));
     cJSON_AddItemToObject(root, "longest_stand_s", num(s->longest_stand_s));
+    if (s->rate_off_fraction > 0.0) {
+        cJSON *chg = cJSON_CreateObject();
+        cJSON_AddItemToObject(chg, "at_s", num(s->rate_change_at_s));
+        cJSON_AddItemToObject(chg, "rate_hz", num(s->rate_change_hz));
+        cJSON_AddItemToObject(chg, "off_fraction", num(s->rate_off_fraction));
+        cJSON_AddItemToObject(root, "rate_change", chg);
+    } else {
+        cJSON_AddItemToObject(root, "rate_change", cJSON_CreateNull());
+    }
     {
         cJSON *ax = cJSON_CreateObject();
         int checked = t->axes.best_map[0] != '\0';

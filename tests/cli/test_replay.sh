@@ -468,6 +468,21 @@ else fail "long stand: $(grep note "$T/stand.out"; grep -o '"longest_stand_s":[^
 "$H" replay "$T/stand.csv" --param zaru=1 --param zaru_after_s=1 > "$T/stand2.out" 2>&1
 if grep -q "stood" "$T/stand2.out"; then fail "the stand is noted with the ZARU on"; else pass "no stand note with the standstill ZARU on"; fi
 
+# a rate that changes part way (not handled: the detector keeps the first
+# rate) is said, in the summary and the JSON, with where and how much; the
+# shared walks' jitter, gaps and dropped packets are not (checked by hand on
+# every walk of the shared data, 2026-11-28)
+awk -F, 'NR == 1 || NR < 4000 || NR % 2 == 0' "$T/walk_full.csv" > "$T/walk_rate2.csv"
+"$H" replay "$T/walk_rate2.csv" --json "$T/rate2.json" > "$T/rate2.out" 2>&1
+if grep -q "note .*sample rate changes: 199\.[0-9] Hz from 10\.[0-9] s, [0-9]* % of the log off the detector's 398\.[0-9] Hz.*--rate HZ" "$T/rate2.out" \
+    && /usr/bin/env python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['rate_change']; sys.exit(0 if 9.9 < r['at_s'] < 10.9 and 195 < r['rate_hz'] < 205 and 0.7 < r['off_fraction'] < 0.8 else 1)" "$T/rate2.json"; then
+    pass "a rate change part way is noted, rate_change in the JSON"
+else fail "rate change: $(grep note "$T/rate2.out"; grep -A3 '"rate_change"' "$T/rate2.json")"; fi
+"$H" replay vectors/walk.bin --json "$T/w0.json" >/dev/null 2>&1
+if grep -q '"rate_change":[[:space:]]*null' "$T/w0.json"; then
+    pass "a steady rate: rate_change null"
+else fail "rate_change on the bundled walk: $(grep -A3 '"rate_change"' "$T/w0.json")"; fi
+
 # above about 1.9 kHz the detector's ring cuts its window and minimum ZUPT
 # run: said, with the rate that fits (silent before)
 "$H" sim --duration 12 --rate 4000 --profile mtx --out "$T/w4k.bin" >/dev/null 2>&1
