@@ -1,17 +1,21 @@
 /* harness eval: every data set with ground truth in the shared data
  * directory through the navigation, figures written to docs/results.md
  * (docs/harness.md). */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include <cjson/cJSON.h>
 #include <dirent.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <errno.h>
+#include <limits.h>
 #include <sys/stat.h>
 
 #include "hx_cli.h"
 #include "hx_commands.h"
 #include "hx_nav.h"
 #include "hx_profile.h"
+#include "hx_evplot.h"
 
 static const hx_opt_t k_opts[] = {
     HX_NAV_OPTS(NULL),
@@ -19,6 +23,8 @@ static const hx_opt_t k_opts[] = {
     { "--out", "FILE", "results in Markdown (default docs/results.md; '-' for standard output)", 0 },
     { "--json", "FILE", "also write the headline figures as JSON", 0 },
     { "--no-experiments", NULL, "skip the paper's experiments (bias model, 100 vs 200 Hz)", 0 },
+    { "--plots", "DIR", "write the figures (PNG) here (default: img/ beside the --out file; none with --out -)", 0 },
+    { "--no-plots", NULL, "no figures", 0 },
     { NULL, NULL, NULL, 0 }
 };
 
@@ -45,6 +51,10 @@ typedef struct {
     hx_progress_t prog;
     double total_runs;
     cJSON *json;
+    int plots;            /* draw the figures (a directory and gnuplot are there) */
+    char plot_dir[600];   /* where they go */
+    char plot_link[600];  /* the same as results.md links it */
+    hx_evplot_set_t fig;  /* the walks of the section being written */
 } ev_t;
 
 /* calloc that ends eval on exhaustion (the lists grow with the data). */
@@ -434,6 +444,9 @@ static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fna
             fprintf(ev->md, "| %s | %.2f | %.3f | %.2f | %.3f | %.2f | %+.3f | %+.1f | %ld | %s |\n", nm, s.path_m,
                     s.end_h_m, s.end_h_pct, s.end_3d_m, s.end_3d_pct, s.vertical_m, s.heading_change_deg, s.strides,
                     note);
+            if (ev->plots) {
+                hx_evplot_add_path(&ev->fig, nm, &t);
+            }
         }
         if (wv != NULL) {
             wv[i] = s.end_h_pct;
@@ -719,6 +732,9 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
             if (write) {
                 fprintf(ev->md, "| %s | %d | %.1f | %.3f | %.3f | %.3f | %.2f | %s |\n", nm, r.strides, r.path,
                         r.stride_err_med, r.rms, r.final_err, r.final_pct, note);
+                if (ev->plots) {
+                    hx_evplot_add_strides(&ev->fig, nm, &t, g.idx, g.x, g.y, g.n);
+                }
             }
             if (wv != NULL) {
                 wv[i] = r.final_pct;
@@ -861,6 +877,9 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
             if (write) {
                 fprintf(ev->md, "| %s | %d | %.3f | %.3f | %.3f | %s |\n", nm, r.strides, r.stride_err_med, r.rms,
                         r.final_err, note);
+                if (ev->plots) {
+                    hx_evplot_add_strides(&ev->fig, nm, &t, g.idx, g.x, g.y, g.n);
+                }
             }
             if (wv != NULL) {
                 wv[i] = r.stride_err_med;
@@ -1317,6 +1336,82 @@ static void paired_row(ev_t *ev, const char *profile, const char *figure, const 
     free(d);
 }
 
+/* ------------------------------------------------------------ figures */
+
+/* The directory of a file path ("." for a bare name). */
+static void dir_of(const char *path, char *out, size_t size)
+{
+    const char *sl = strrchr(path, '/');
+    if (sl == NULL) {
+        snprintf(out, size, ".");
+    } else if (sl == path) {
+        snprintf(out, size, "/");
+    } else {
+        snprintf(out, size, "%.*s", (int)(sl - path), path);
+    }
+}
+
+/* `to` relative to the directory `from` (both existing): by their real
+ * paths, with "../" for each of from's components below the common part.
+ * 0, or -1 (then `to` as given). */
+static int rel_path(const char *from, const char *to, char *out, size_t size)
+{
+    char rf[PATH_MAX], rt[PATH_MAX];
+    size_t common = 0, i, len = 0;
+    if (realpath(from, rf) == NULL || realpath(to, rt) == NULL) {
+        snprintf(out, size, "%s", to);
+        return -1;
+    }
+    /* the common part ends at a '/' (or at the end of one of them) */
+    for (i = 0; rf[i] != '\0' && rf[i] == rt[i]; i++) {
+        if (rf[i] == '/') {
+            common = i;
+        }
+    }
+    if (rf[i] == '\0' && (rt[i] == '/' || rt[i] == '\0')) {
+        common = i;
+    } else if (rt[i] == '\0' && rf[i] == '/') {
+        common = i;
+    }
+    out[0] = '\0';
+    for (i = common; rf[i] != '\0'; i++) {
+        if (rf[i] == '/' && rf[i + 1] != '\0') {
+            len += (size_t)snprintf(out + len, len < size ? size - len : 0, "../");
+        }
+    }
+    if (strcmp(rf, "/") == 0 || rf[common] == '\0') {
+        /* from is a prefix of to: nothing to climb */
+        len = 0;
+        out[0] = '\0';
+    }
+    if (rt[common] == '/') {
+        common++;
+    }
+    snprintf(out + len, len < size ? size - len : 0, "%s", rt[common] != '\0' ? rt + common : ".");
+    if (len > 0 && rt[common] == '\0') {
+        out[len - 1] = '\0'; /* "../" alone: "..", the directory itself */
+    }
+    return 0;
+}
+
+/* Draw the walks collected for a section into PLOTS/eval-NAME.png (closed
+ * walks: paths and heights; strides: a panel per walk against the truth)
+ * and link it from results.md under its caption; the set is emptied. */
+static void figure(ev_t *ev, const char *name, int strides, const char *title, const char *caption)
+{
+    char png[700];
+    if (ev->plots && ev->fig.n > 0) {
+        snprintf(png, sizeof png, "%s/eval-%s.png", ev->plot_dir, name);
+        if ((strides ? hx_evplot_strides(&ev->fig, "eval", png, title)
+                     : hx_evplot_paths(&ev->fig, "eval", png, title)) == 0) {
+            fprintf(ev->md, "![%s](%s/eval-%s.png)\n\n%s\n\n", title, ev->plot_link, name, caption);
+        } else {
+            hx_warn("eval", "figure %s not drawn (the error above); results.md goes on without it", png);
+        }
+    }
+    hx_evplot_free(&ev->fig);
+}
+
 int hx_cmd_eval(int argc, char **argv)
 {
     hx_args_t a;
@@ -1399,6 +1494,33 @@ int hx_cmd_eval(int argc, char **argv)
     json_path = hx_arg(&a, "--json");
     if (json_path != NULL && strcmp(json_path, "-") != 0 && hx_check_writable("eval", json_path) != 0) {
         return HX_EXIT_IO; /* found out before the run, as for --out */
+    }
+    {
+        /* the figures: --plots DIR, else img/ beside the Markdown file */
+        const char *pd = hx_arg(&a, "--plots");
+        char md_dir[500];
+        if (pd != NULL && hx_flag(&a, "--no-plots")) {
+            hx_error("eval", "--plots and --no-plots together");
+            return HX_EXIT_USAGE;
+        }
+        dir_of(strcmp(out_path, "-") == 0 ? "./-" : out_path, md_dir, sizeof md_dir);
+        if (pd != NULL) {
+            snprintf(ev.plot_dir, sizeof ev.plot_dir, "%s", pd);
+        } else if (strcmp(out_path, "-") != 0 && !hx_flag(&a, "--no-plots")) {
+            snprintf(ev.plot_dir, sizeof ev.plot_dir, "%s/img", md_dir);
+        }
+        if (ev.plot_dir[0] != '\0') {
+            if (mkdir(ev.plot_dir, 0777) != 0 && errno != EEXIST) {
+                hx_error("eval", "cannot create the figures' directory %s (%s)", ev.plot_dir, strerror(errno));
+                return HX_EXIT_IO;
+            }
+            if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
+                hx_warn("eval", "no figures: gnuplot is not installed (apt-get install gnuplot-nox)");
+            } else {
+                ev.plots = 1;
+                rel_path(md_dir, ev.plot_dir, ev.plot_link, sizeof ev.plot_link);
+            }
+        }
     }
     ev.md = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
     if (ev.md == NULL) {
@@ -1489,6 +1611,9 @@ int hx_cmd_eval(int argc, char **argv)
                 gx2.h_pct_med, met(gx2.h_pct_med <= 0.35), gx2.d3_pct_med, met(gx2.d3_pct_med <= 0.6), gx2.d3_pct_max,
                 met(gx2.d3_pct_max <= 1.2), gx2.vert_med, gx2.path_med);
     }
+    figure(&ev, "gx2", 0, "openshoe_gx2: paths and heights",
+           "Each walk in its own navigation frame (x along the heading at the alignment), from the first aligned "
+           "frame; the height up, over time. A closed loop ends where it began.");
     unread_files(&ev, "openshoe_gx2", k_gx2_files, 1);
 
     fprintf(ev.md, "## xio_ngimu_gait: return to start (closed loops, ~400 Hz, irregular timing)\n\n");
@@ -1524,10 +1649,15 @@ int hx_cmd_eval(int argc, char **argv)
                     !isfinite(vendor) ? "no vendor figure"
                                       : (s.end_3d_m < vendor ? "better than vendor" : "**worse than vendor**"),
                     note[0] ? "; " : "", note);
+            if (ev.plots) {
+                hx_evplot_add_path(&ev.fig, xio[i], &t);
+            }
             hx_traj_free(&t);
         }
         fprintf(ev.md, "\nThe vendor's figures come from an offline method that uses future samples; footnav is "
                        "causal.\n\n");
+        figure(&ev, "xio", 0, "xio_ngimu_gait: paths and heights",
+               "As above. The climb of the height is the unmet xio target (docs/navigation.md, \"The xio walks\").");
     }
     unread_files(&ev, "xio_ngimu_gait", k_csv_files, 1);
 
@@ -1566,9 +1696,13 @@ int hx_cmd_eval(int argc, char **argv)
             fprintf(ev.md, "| %s | %.0f | %.2f | %.3f | %.3f | %.2f | %+.3f | %.1f | %ld | %s |\n", other[i],
                     t.rate_hz, s.path_m, s.end_h_m, s.end_3d_m, s.end_3d_pct, s.vertical_m,
                     100.0 * s.stance_fraction, s.strides, note);
+            if (ev.plots) {
+                hx_evplot_add_path(&ev.fig, other[i], &t);
+            }
             hx_traj_free(&t);
         }
         fprintf(ev.md, "\n");
+        figure(&ev, "other", 0, "other closed walks: paths and heights", "As above.");
     }
     unread_files(&ev, "openshoe_c_820hz", k_txt_files, 1);
     unread_files(&ev, "openshoe_square2", k_csv_files, 1);
@@ -1587,6 +1721,9 @@ int hx_cmd_eval(int argc, char **argv)
                        "SHOE detector, 1.43 m median final error, 4.3 %% mean.\n\n",
                 fp.final_pct_med, met(fp.final_pct_med <= 2.0), fp.final_pct_mean, fp.final_m_med, fp.stride_med);
     }
+    figure(&ev, "footprints", 1, "own_3dmgx5_footprints: estimate at each stride against the measured footprints",
+           "Per walk, in the initial-heading frame, both from the first stride: the estimated path (grey), the "
+           "estimate at each stride sample (red) and the footprint measured there (circles).");
     unread_files(&ev, "pyshoe_vicon_llio/own_3dmgx5_footprints", k_fp_files, 3);
 
     fprintf(ev.md, "## pyshoe_vicon_llio / vicon_3dmgx3: per-stride error against motion capture\n\n");
@@ -1600,6 +1737,8 @@ int hx_cmd_eval(int argc, char **argv)
                        "median final error %.3f m.\n\n",
                 vi.n, vi.strides, vi.stride_med, vi.rms_med, vi.final_med);
     }
+    figure(&ev, "vicon", 1, "vicon_3dmgx3: estimate at each stride against the motion capture",
+           "As the footprints, against the motion capture's position at each stride sample.");
     unread_files(&ev, "pyshoe_vicon_llio/vicon_3dmgx3", k_vicon_files, 2);
 
     fprintf(ev.md, "## ipol_gait_xsens: stance detection and gait events against the experts\n\n"

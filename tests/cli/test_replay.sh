@@ -330,6 +330,22 @@ if [ -n "$D" ]; then
         if grep -q "$s" "$T/results.md"; then pass "results.md has $s"; else fail "results.md lacks $s"; fi
     done
     if head -5 "$T/results.md" | grep -q "harness eval"; then pass "results.md names its command"; else fail "results.md command"; fi
+    # the figures: img/ beside results.md, each linked from it, a PNG
+    # (gnuplot is a dependency: scripts/bootstrap.sh)
+    ok=1
+    for f in gx2 xio other footprints vicon; do
+        if ! grep -q "^!\[.*\](img/eval-$f.png)" "$T/results.md" || ! head -c 8 "$T/img/eval-$f.png" | grep -q PNG; then ok=0; echo "  figure $f"; fi
+    done
+    if [ $ok -eq 1 ]; then pass "eval: five figures in img/ beside results.md, linked"; else fail "eval figures"; fi
+    mkdir -p "$T/figs/md"
+    expect_exit 0 "eval --plots DIR" "$H" eval --no-experiments --data "$D" --out "$T/figs/md/r.md" --plots "$T/figs/p"
+    if grep -q "(../p/eval-gx2.png)" "$T/figs/md/r.md" && [ -f "$T/figs/p/eval-vicon.png" ] && [ ! -d "$T/figs/md/img" ]; then
+        pass "eval --plots: the figures there, linked relative to results.md"; else fail "eval --plots: $(grep -o '(.*eval-gx2.png)' "$T/figs/md/r.md")"; fi
+    expect_exit 0 "eval --no-plots" "$H" eval --no-experiments --data "$D" --out "$T/figs/md/n.md" --no-plots
+    if grep -q "eval-gx2.png" "$T/figs/md/n.md" || [ -d "$T/figs/md/img" ]; then fail "--no-plots drew figures"; else pass "eval --no-plots: no figures, no links"; fi
+    expect_exit 2 "eval --plots with --no-plots" "$H" eval --data "$D" --plots "$T/x" --no-plots
+    expect_exit 3 "eval --plots in a directory that cannot be made" "$H" eval --no-experiments --data "$D" --out "$T/figs/md/z.md" --plots /nonexistent/dir/figs
+    expect_err "cannot create the figures' directory /nonexistent/dir/figs" "the figures' directory error names it"
     # ipol: the target is met with the expert swings that overlap the other
     # foot's left out; with them kept the same run scores 2 missed, 2 spurious
     # (both in the JSON and in the Targets row)
