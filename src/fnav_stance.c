@@ -216,7 +216,13 @@ static fnav_real_t statistic(const fnav_stance_t *st, long lo, long hi)
         for (j = lo; j <= hi; j++) {
             m = fnav_vec3_add(m, fnav_vec3_from(at(st, j)->accel_mps2));
         }
-        /* g times the unit vector of the mean specific force (Skog 2010, eq. 13) */
+        /* g times the unit vector of the mean specific force (Skog 2010, eq. 13).
+         * A zero mean (a sensor that outputs zeros) has no direction; then
+         * sum |f_j - g u|^2 = sum |f_j|^2 + W g^2 for every unit u, so any
+         * will do (the zero vector made T = 0: "at rest") */
+        if (!(fnav_vec3_dot(m, m) > FNAV_R(0.0))) {
+            m.v[2] = FNAV_R(1.0);
+        }
         gu = fnav_vec3_scale(fnav_vec3_normalize(m), c->gravity_mps2);
         for (j = lo; j <= hi; j++) {
             fnav_vec3_t e = fnav_vec3_sub(fnav_vec3_from(at(st, j)->accel_mps2), gu);

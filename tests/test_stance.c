@@ -855,6 +855,39 @@ static void test_cut_durations(void **state)
     }
 }
 
+/* Zero specific force (an IMU that outputs zeros before its first
+ * conversion, a stuck bus read): |mean f| = 0 has no direction, and the
+ * statistic took g u = 0, so T = 0 and the detector called a dead sensor
+ * (or one in free fall) at rest whatever its threshold (a review). With a
+ * zero mean, sum |f_j - g u|^2 = sum |f_j|^2 + W g^2 for every unit u:
+ * T = g^2 / sigma_a^2 here, 9.6e5, above gamma. (The adaptive threshold's
+ * ceiling, 10 gamma = 1e6, still lets a long run of zeros through: off
+ * here.) */
+static void test_zero_specific_force(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    const double f[3] = { 0.0, 0.0, 0.0 }, w[3] = { 0.0, 0.0, 0.0 };
+    const double want = k_g * k_g / (0.01 * 0.01);
+    fnav_stance_out_t o;
+    long k, got = 0;
+    (void)state;
+    c.rate_hz = FNAV_R(200.0);
+    c.adaptive = 0;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k < 40; k++) {
+        fnav_sample_t s = sample(k, 200.0, f, w);
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            FNAV_ASSERT_CLOSE(o.stat, want, 0.0, 1e-5);
+            assert_int_equal(o.raw_stance, 0);
+            assert_int_equal(o.stance, 0);
+            got++;
+        }
+    }
+    assert_true(got > 30);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -875,6 +908,7 @@ int main(void)
         cmocka_unit_test(test_rest_run_long),
         cmocka_unit_test(test_foot_strike_time_jump),
         cmocka_unit_test(test_cut_durations),
+        cmocka_unit_test(test_zero_specific_force),
     };
     return cmocka_run_group_tests_name("stance", tests, NULL, NULL);
 }
