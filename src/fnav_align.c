@@ -133,11 +133,16 @@ static fnav_status_t period_result(const fnav_align_t *al, const fnav_align_peri
     return FNAV_OK;
 }
 
-static fnav_status_t complete(fnav_align_t *al, const fnav_align_period_t *p)
+/* Complete the alignment on the current period; a period with no gravity
+ * direction (mean specific force zero: FNAV_E_RANGE) is discarded, or the
+ * next still sample would complete on it together with the real samples. */
+static fnav_status_t complete(fnav_align_t *al)
 {
-    fnav_status_t st = period_result(al, p, &al->result);
+    fnav_status_t st = period_result(al, &al->cur, &al->result);
     if (st == FNAV_OK) {
         al->done = 1;
+    } else {
+        reset_period(&al->cur);
     }
     return st;
 }
@@ -233,7 +238,7 @@ fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_sample_t *s, int stil
     ratio_break = left_floor(al, c, still, stat, &lstat);
     if (!still || ratio_break) {
         if (c->n >= 2 && duration_s(c) >= al->cfg.min_still_s) {
-            return complete(al, c);
+            return complete(al);
         }
         end_short_period(al);
         if (!still && al->have_best) {
@@ -246,7 +251,7 @@ fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_sample_t *s, int stil
     }
     add_sample(c, s, lstat);
     if (duration_s(c) >= al->cfg.max_still_s) {
-        return complete(al, c);
+        return complete(al);
     }
     return FNAV_AGAIN;
 }
@@ -259,13 +264,13 @@ fnav_status_t fnav_align_finish(fnav_align_t *al)
     if (al->done) {
         return FNAV_OK;
     }
-    if (al->cur.n >= 2 && duration_s(&al->cur) >= al->cfg.min_still_s) {
-        return complete(al, &al->cur);
-    }
-    /* the quietest period of at least short_still_s, the current one
-     * included (nothing is discarded when none qualifies) */
-    if (better_short(al, &al->cur)) {
-        return complete(al, &al->cur);
+    /* the current period when long enough, else the quietest period of at
+     * least short_still_s, the current one included (nothing is discarded
+     * when none qualifies; a current one without a gravity direction does
+     * not qualify) */
+    if (((al->cur.n >= 2 && duration_s(&al->cur) >= al->cfg.min_still_s) || better_short(al, &al->cur)) &&
+        complete(al) == FNAV_OK) {
+        return FNAV_OK;
     }
     if (al->have_best) {
         al->done = 1;

@@ -386,6 +386,41 @@ static void test_gyro_bias_posterior(void **state)
     }
 }
 
+/* A still period whose mean specific force is exactly zero (a sensor that
+ * outputs zeros, which the adaptive SHOE threshold accepts as stance) has
+ * no gravity direction: FNAV_E_RANGE, and the period is discarded. It was
+ * kept (a review): the next still sample completed the alignment on the
+ * zeros and the real samples together, an accelerometer bias of -g x
+ * (zeros / all) along gravity (9.78 m/s^2 here). */
+static void test_zero_mean_period(void **state)
+{
+    fnav_align_t al;
+    fnav_align_config_t c = fnav_align_config_default;
+    long k;
+    fnav_status_t st = FNAV_AGAIN;
+    double fn;
+    (void)state;
+    c.max_still_s = FNAV_R(2.0);
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
+    for (k = 0; k < 401; k++) {
+        fnav_sample_t s;
+        memset(&s, 0, sizeof s);
+        s.t_ns = (int64_t)k * 5000000;
+        st = fnav_align_push(&al, &s, 1, FNAV_R(100.0));
+        assert_int_equal(st, k < 400 ? FNAV_AGAIN : FNAV_E_RANGE);
+    }
+    assert_int_equal(al.done, 0);
+    st = FNAV_AGAIN;
+    for (k = 401; k < 2000 && st == FNAV_AGAIN; k++) {
+        fnav_sample_t s = still_sample(k, 200.0, 0.002);
+        st = fnav_align_push(&al, &s, 1, FNAV_R(100.0));
+    }
+    assert_int_equal(st, FNAV_OK);
+    assert_int_equal((int)al.result.samples, 401); /* the real samples only */
+    fn = sqrt(0.1 * 0.1 + 0.2 * 0.2 + 9.81 * 9.81);
+    FNAV_ASSERT_CLOSE(fnav_vec3_norm(al.result.accel_bias_mps2), fn - k_g, 1e-4, 0.0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -397,6 +432,7 @@ int main(void)
         cmocka_unit_test(test_finish),
         cmocka_unit_test(test_short_period_fallback),
         cmocka_unit_test(test_gyro_bias_posterior),
+        cmocka_unit_test(test_zero_mean_period),
     };
     return cmocka_run_group_tests_name("align", tests, NULL, NULL);
 }

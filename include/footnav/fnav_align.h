@@ -119,7 +119,11 @@ FNAV_WARN_UNUSED fnav_status_t fnav_align_init(fnav_align_t *al, const fnav_alig
  * @param still   1 when the detector marks the foot at rest
  * @param stat    the detector's test statistic (> 0), or 0 to skip the ratio test
  * @return FNAV_AGAIN while aligning, FNAV_OK when the alignment completed
- *         with this call (result valid), FNAV_E_STATE once already done.
+ *         with this call (result valid), FNAV_E_STATE once already done,
+ *         FNAV_E_RANGE when the period that would have completed has a zero
+ *         mean specific force (no gravity direction: a sensor that outputs
+ *         zeros); that period is discarded and the next still sample starts
+ *         a new one.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_sample_t *sample, int still,
                                                 fnav_real_t stat);
@@ -131,7 +135,8 @@ FNAV_WARN_UNUSED fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_samp
  * short_still_s seen (the current one included), as fnav_align_push does
  * at the first motion.
  * @return FNAV_OK with the result (also when already done), FNAV_E_STATE
- *         when no period qualifies, FNAV_E_ARG for NULL.
+ *         when no period qualifies (a current period with a zero mean
+ *         specific force does not), FNAV_E_ARG for NULL.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_finish(fnav_align_t *al);
 
