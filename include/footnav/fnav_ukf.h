@@ -257,7 +257,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_
  * @param gyro_rps  raw angular rate of the sample (body), rad/s (used with the lever)
  * @return FNAV_OK; FNAV_E_STATE before start; FNAV_E_NANINF on a non-finite
  *         rate; FNAV_E_DECOMP when the innovation covariance is not positive
- *         (update skipped, counted).
+ *         (update skipped, counted in health.update_reject); FNAV_E_DIVERGED
+ *         when the correction or the new covariance would not be finite
+ *         (update undone, counted in health.diverged).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_zupt(fnav_ukf_t *f, fnav_vec3_t gyro_rps);
 
