@@ -482,7 +482,7 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
  * nonsense without any error of the reader: a log in g aligns on |f| = 1,
  * one in deg/s turns 57 times too fast, time in milliseconds makes 100 Hz
  * a 0.1 Hz log. Each leaves a mark no real foot-mounted IMU leaves. */
-#define HX_GRAVITY_TOL 0.25    /* |f| at rest within 25 % of gravity (a few % for any MEMS part) */
+#define HX_GRAVITY_TOL ((double)FNAV_ALIGN_GRAVITY_TOL) /* |f| at rest within 25 % of gravity (the core's alignment refuses more) */
 #define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
 #define HX_RATE_MIN_HZ 20.0    /* below this, no stance lasts more than a few samples */
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz, char *msg,
@@ -536,7 +536,10 @@ static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_
 {
     char msg[768], acc[320] = "";
     const double g = (double)nav->cfg.gravity_mps2;
-    const double fn = nav->aligned ? (double)fnav_vec3_norm(nav->align.result.accel_mean_mps2) : 0.0;
+    /* |f| at rest: the alignment's, or that of a still period it refused
+     * for being off gravity (FNAV_ALIGN_GRAVITY_TOL) */
+    const double fn = nav->aligned ? (double)fnav_vec3_norm(nav->align.result.accel_mean_mps2)
+                                   : (double)nav->align.refused_f_mps2;
     int bad;
     if (!nav->aligned && !(f_norm_mean > 1e-6 * g)) {
         /* no specific force at all: not a unit but a dead channel */
@@ -544,7 +547,7 @@ static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_
                  path, f_norm_mean > 0.0 ? "almost 0" : "0");
         return 2;
     }
-    if (!nav->aligned && f_norm_mean > 0.0 && f_norm_mean < 0.5 * g) {
+    if (!nav->aligned && fn == 0.0 && f_norm_mean > 0.0 && f_norm_mean < 0.5 * g) {
         /* no rest found (a gyro in deg/s hides every still period): the
          * mean |f| of the whole log stands in, but only to reveal a log in
          * g; a walk in m/s^2 averages g or more (its motion adds to |f|) */

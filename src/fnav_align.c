@@ -42,6 +42,7 @@ fnav_status_t fnav_align_init(fnav_align_t *al, const fnav_align_config_t *cfg)
     al->done = 0;
     al->have_best = 0;
     al->best_log_stat = FNAV_R(0.0);
+    al->refused_f_mps2 = FNAV_R(0.0);
     reset_period(&al->cur);
     return FNAV_OK;
 }
@@ -50,7 +51,7 @@ fnav_status_t fnav_align_from_means(fnav_vec3_t f, fnav_vec3_t w, fnav_real_t g,
 {
     fnav_real_t fn = fnav_vec3_norm(f);
     fnav_real_t roll, pitch;
-    if (!(fn > FNAV_R(0.0)) || !fnav_isfinite(fn)) {
+    if (!(fnav_fabs(fn - g) <= FNAV_ALIGN_GRAVITY_TOL * g)) { /* NaN, zero and not at rest on the Earth */
         return FNAV_E_RANGE;
     }
     /* f_b = C_bn (0, 0, -g) = -g (-sin p, sin r cos p, cos r cos p) */
@@ -133,16 +134,23 @@ static fnav_status_t period_result(const fnav_align_t *al, const fnav_align_peri
     return FNAV_OK;
 }
 
-/* Complete the alignment on the current period; a period with no gravity
- * direction (mean specific force zero: FNAV_E_RANGE) is discarded, or the
- * next still sample would complete on it together with the real samples. */
+/* A period refused for its mean |f| (FNAV_E_RANGE): said in
+ * refused_f_mps2, and discarded, or the next still sample would complete on
+ * it together with the real samples. */
+static void refuse(fnav_align_t *al, fnav_align_period_t *p)
+{
+    al->refused_f_mps2 = fnav_vec3_norm(fnav_vec3_add(p->a_ref, fnav_vec3_scale(p->sa, FNAV_R(1.0) / (fnav_real_t)p->n)));
+    reset_period(p);
+}
+
+/* Complete the alignment on the current period (FNAV_E_RANGE: refused). */
 static fnav_status_t complete(fnav_align_t *al)
 {
     fnav_status_t st = period_result(al, &al->cur, &al->result);
     if (st == FNAV_OK) {
         al->done = 1;
     } else {
-        reset_period(&al->cur);
+        refuse(al, &al->cur);
     }
     return st;
 }
@@ -164,7 +172,11 @@ static int better_short(const fnav_align_t *al, const fnav_align_period_t *p)
 static void end_short_period(fnav_align_t *al)
 {
     fnav_align_period_t *c = &al->cur;
-    if (better_short(al, c) && period_result(al, c, &al->result) == FNAV_OK) {
+    if (better_short(al, c)) {
+        if (period_result(al, c, &al->result) != FNAV_OK) {
+            refuse(al, c);
+            return;
+        }
         al->have_best = 1;
         al->best_log_stat = mean_log_stat(c);
     }

@@ -65,6 +65,14 @@ typedef struct {
 
 extern const fnav_align_config_t fnav_align_config_default;
 
+/** A still period whose mean |f| is off gravity by more than this fraction
+ *  is refused (FNAV_E_RANGE): no accelerometer at rest on the Earth reads
+ *  that (bias and scale errors of any MEMS part are a few %). It is zeros
+ *  from a sensor not yet running, a stuck channel, such samples averaged
+ *  with real ones, or a log not in m/s^2. The harness's units check uses
+ *  the same tolerance. */
+#define FNAV_ALIGN_GRAVITY_TOL FNAV_R(0.25)
+
 /** Blocks of the batch-means estimate of the gyro mean's uncertainty. */
 #define FNAV_ALIGN_BLOCKS 8
 
@@ -107,6 +115,7 @@ typedef struct {
     int have_best;                   /**< result holds the quietest earlier short period */
     fnav_real_t best_log_stat;       /**< its mean log10 statistic */
     fnav_align_result_t result;      /**< the alignment (with done), or the short-period candidate */
+    fnav_real_t refused_f_mps2;      /**< mean |f| of the last period refused for it (FNAV_ALIGN_GRAVITY_TOL), m/s^2; 0: none */
 } fnav_align_t;
 
 /** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (non-positive or non-finite
@@ -120,10 +129,12 @@ FNAV_WARN_UNUSED fnav_status_t fnav_align_init(fnav_align_t *al, const fnav_alig
  * @param stat    the detector's test statistic (> 0), or 0 to skip the ratio test
  * @return FNAV_AGAIN while aligning, FNAV_OK when the alignment completed
  *         with this call (result valid), FNAV_E_STATE once already done,
- *         FNAV_E_RANGE when the period that would have completed has a zero
- *         mean specific force (no gravity direction: a sensor that outputs
- *         zeros); that period is discarded and the next still sample starts
- *         a new one.
+ *         FNAV_E_RANGE when the period that would have completed has a mean
+ *         specific force off gravity by more than FNAV_ALIGN_GRAVITY_TOL
+ *         (zero: no gravity direction, a sensor that outputs zeros; or
+ *         zeros averaged with real samples; or not m/s^2); that period is
+ *         discarded (its |f| in refused_f_mps2) and the next still sample
+ *         starts a new one.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_sample_t *sample, int still,
                                                 fnav_real_t stat);
@@ -157,7 +168,8 @@ int fnav_align_renew(fnav_align_t *al, const fnav_sample_t *s, int still, fnav_r
                      fnav_align_result_t *out);
 
 /** Compute an alignment from a mean specific force, mean rate and gravity
- *  (the formulas of the file comment). FNAV_E_RANGE if |f| is zero. */
+ *  (the formulas of the file comment). FNAV_E_RANGE if |f| is not finite or
+ *  off gravity by more than FNAV_ALIGN_GRAVITY_TOL (zero among them). */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_from_means(fnav_vec3_t f_mean, fnav_vec3_t w_mean, fnav_real_t gravity_mps2,
                                                      fnav_align_result_t *out);
 

@@ -298,7 +298,7 @@ expect_err "the accelerometer reads 0 throughout: disconnected" "a dead accelero
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5 * 57.29578, $6 * 57.29578, $7 * 57.29578 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_gdeg.csv"
 expect_exit 1 "accelerometer in g and gyroscope in deg/s" "$H" replay "$T/in_gdeg.csv" --quiet
-expect_err "probably in g (multiply by 9.80665); also the gyroscope .*probably in deg/s" "both unit mistakes named"
+expect_err "in g (multiply by 9.80665); also the gyroscope .*probably in deg/s" "both unit mistakes named"
 expect_exit 0 "info on a log in deg/s" "$H" info "$T/in_deg.csv"
 expect_out "units       NOT SI: .*probably in deg/s" "info names the units too"
 expect_exit 0 "info on a log in SI units" "$H" info vectors/nav/golden/gx2_walk2.csv
