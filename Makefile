@@ -96,8 +96,14 @@ nm-check: $(LIB)
 check-suites: $(TEST_BINS)
 	@set -e; for t in $(TEST_BINS); do echo "== $$t"; $$t; done
 
+# With FNAV_REQUIRE_DATA=1 (CI) a CLI test that skips checks for want of the
+# shared data fails instead.
 test-cli: $(HARNESS)
-	@set -e; for t in tests/cli/test_*.sh; do echo "== $$t"; HARNESS=$(abspath $(HARNESS)) sh $$t; done
+	@set -e; mkdir -p $(BUILD); for t in tests/cli/test_*.sh; do echo "== $$t"; \
+	  HARNESS=$(abspath $(HARNESS)) sh $$t >$(BUILD)/cli-test.log 2>&1 || { cat $(BUILD)/cli-test.log; exit 1; }; \
+	  cat $(BUILD)/cli-test.log; \
+	  if [ "$${FNAV_REQUIRE_DATA:-}" = 1 ] && grep -i -E '^skip.*shared.data' $(BUILD)/cli-test.log; then \
+	    echo "$$t: shared data not found and FNAV_REQUIRE_DATA=1"; exit 1; fi; done
 
 test-double:
 	$(MAKE) BUILD=build/double HARNESS=build/double/harness FNAV_DEFS=-DFNAV_USE_DOUBLE=1 check-suites

@@ -45,6 +45,10 @@ int fnav_vector_path(const char *rel, char *buf, size_t size)
 
 void fnav_test_skip_notice(const char *what)
 {
+    const char *req = getenv("FNAV_REQUIRE_DATA");
+    if (req != NULL && strcmp(req, "1") == 0) {
+        fail_msg("%s: shared data not found and FNAV_REQUIRE_DATA=1 (set FNAV_DATA_DIR)", what);
+    }
     fprintf(stderr, "[  SKIP    ] %s (shared data not found; set FNAV_DATA_DIR)\n", what);
 }
 

@@ -18,7 +18,8 @@ int fnav_testdata_path(const char *rel, char *buf, size_t size);
  *  ($FNAV_VECTORS_DIR, else vectors/ in the working directory). 0 if it exists. */
 int fnav_vector_path(const char *rel, char *buf, size_t size);
 
-/** Print a visible skip notice (CMocka 1.1 skips silently otherwise). */
+/** Print a visible skip notice (CMocka 1.1 skips silently otherwise); with
+ *  FNAV_REQUIRE_DATA=1 in the environment (CI) fail the test instead. */
 void fnav_test_skip_notice(const char *what);
 
 /** |a - b| <= abs_tol + rel_tol * |b|, else fail the test with both values. */

@@ -16,7 +16,8 @@ reference within 0.1 % of the distance (float32 build) or 1e-9 relative
 --check tolerance: 1e-9 m absolute + 1e-9 relative (the float64 build is
 deterministic on one machine; a difference means the code changed and the
 reference must be regenerated with the reason in the commit message).
-Without the shared data the check is skipped (exit 0, with a message).
+Without the shared data the check is skipped (exit 0, with a message; exit 1
+with FNAV_REQUIRE_DATA=1, as in CI).
 """
 import glob
 import json
@@ -90,7 +91,7 @@ def main():
     d = data_dir()
     if d is None:
         print("gen_double_reference: shared data not found; skipped")
-        return 0
+        return 1 if os.environ.get("FNAV_REQUIRE_DATA") == "1" else 0
     rows = run(d)
     if "--check" not in sys.argv:
         write(rows)
