@@ -10,7 +10,8 @@
 static const hx_opt_t k_opts[] = {
     HX_INPUT_OPTS,
     { "--to", "FORMAT", "output format: bin or csv (default: from OUT's extension, .bin -> bin)", 0 },
-    { "--rate", "HZ", "resample to HZ first, as replay --rate (anti-alias low-pass; docs/harness.md)", 0 },
+    { "--rate", "HZ", "resample to HZ (1 to 100000, below the input's rate) first, as replay --rate (anti-alias "
+                      "low-pass; docs/harness.md)", 0 },
     { NULL, NULL, NULL, 0 }
 };
 
@@ -27,21 +28,15 @@ static const hx_spec_t k_spec = {
 /* convert --rate: the whole log loaded, resampled by the replay's resampler
  * (hx_nav_resample) and written; a partial input is resampled and written,
  * exit 1. */
-static int convert_resampled(const hx_args_t *a, hx_format_t to)
+static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate)
 {
     hx_log_t raw, res;
     hx_writer_t *w;
-    char err[320], *end;
-    const char *rs = hx_arg(a, "--rate");
-    const double rate = strtod(rs, &end);
+    char err[320];
     long dups = 0, k;
     double fs = 0.0;
     int exit_code, lrc;
     fnav_sample_t s;
-    if (end == rs || *end != '\0' || !(rate > 0.0)) {
-        hx_error("convert", "--rate must be a rate in Hz above 0, not '%s'", rs);
-        return HX_EXIT_USAGE;
-    }
     lrc = hx_load_input("convert", a, a->pos[0], &raw);
     if (lrc < 0) {
         return HX_EXIT_DATA;
@@ -96,10 +91,14 @@ int hx_cmd_convert(int argc, char **argv)
     int rc = hx_args_parse(&k_spec, argc, argv, &a);
     int exit_code = HX_EXIT_OK;
     hx_meta_t meta;
+    double rate = 0.0;
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
-    if (hx_check_input_opts("convert", &a) != 0) {
+    /* --rate: the range of replay --rate (hx_nav_opts_from_args); far below
+     * 1 Hz the resampler's filter half-length, 20 x input rate / rate, no
+     * longer fits an int (--rate 1e-9 wrote one NaN row and exit 0) */
+    if (hx_check_input_opts("convert", &a) != 0 || hx_arg_double(&a, "--rate", 1.0, 100000.0, &rate) != 0) {
         return HX_EXIT_USAGE;
     }
     to_name = hx_arg(&a, "--to");
@@ -117,7 +116,7 @@ int hx_cmd_convert(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     if (hx_arg(&a, "--rate") != NULL) {
-        return convert_resampled(&a, to);
+        return convert_resampled(&a, to, rate);
     }
     r = hx_open_input("convert", &a, a.pos[0]);
     if (r == NULL) {

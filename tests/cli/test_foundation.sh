@@ -157,7 +157,11 @@ expect_exit 0 "convert --rate 100" "$H" convert vectors/walk.bin "$T/r100.csv" -
 if [ -s "$T/r100a.json" ] && [ "$(grep -E '"(return_error_3d_m|strides|distance_m)"' "$T/r100a.json")" = "$(grep -E '"(return_error_3d_m|strides|distance_m)"' "$T/r100b.json")" ]; then
     pass "convert --rate then replay = replay --rate"; else fail "convert --rate: $(grep return_error_3d_m "$T/r100a.json" "$T/r100b.json")"; fi
 expect_exit 2 "convert --rate 0" "$H" convert vectors/walk.bin "$T/r0.csv" --rate 0
-expect_err "rate in Hz above 0" "bad --rate said"
+expect_err "is not a number in \[1, 100000\]" "bad --rate said, with replay's range"
+# a rate far below 1 Hz made a filter longer than an int (one NaN row, exit 0)
+expect_exit 2 "convert --rate 1e-9" "$H" convert vectors/walk.bin "$T/rtiny.csv" --rate 1e-9
+if [ -e "$T/rtiny.csv" ] && grep -qi nan "$T/rtiny.csv"; then fail "convert --rate 1e-9 wrote NaN"; else pass "convert --rate 1e-9 writes no NaN"; fi
+expect_exit 2 "convert --rate inf" "$H" convert vectors/walk.bin "$T/rinf.csv" --rate inf
 
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]
