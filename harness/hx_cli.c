@@ -348,20 +348,49 @@ int hx_same_file(const char *a, const char *b)
 
 FILE *hx_json_stdout = NULL;
 
+/* argv[*i] is option `name` with the value "-", as `name -` or `name=-`
+ * (hx_args_parse reads both); *i steps over a separate value. */
+static int opt_is_dash(char **argv, int argc, int *i, const char *name)
+{
+    const size_t len = strlen(name);
+    if (strncmp(argv[*i], name, len) != 0) {
+        return 0;
+    }
+    if (strcmp(argv[*i] + len, "=-") == 0) {
+        return 1;
+    }
+    if (argv[*i][len] == '\0' && *i + 1 < argc && strcmp(argv[*i + 1], "-") == 0) {
+        (*i)++;
+        return 1;
+    }
+    return 0;
+}
+
 int hx_json_stdout_claim(const char *cmd, int argc, char **argv)
 {
-    int i, json = 0, out = 0, fd;
-    for (i = 0; i + 1 < argc; i++) {
-        if (strcmp(argv[i + 1], "-") == 0) {
-            json |= strcmp(argv[i], "--json") == 0;
-            out |= strcmp(argv[i], "--out") == 0;
+    static const char *const k_other[] = { "--out", "--csv" }; /* options whose '-' is standard output too */
+    const char *other = NULL;
+    int i, k, json = 0, fd;
+    for (i = 0; i < argc; i++) {
+        if (strcmp(argv[i], "--") == 0) {
+            break; /* positional arguments only from here */
+        }
+        if (opt_is_dash(argv, argc, &i, "--json")) {
+            json = 1;
+            continue;
+        }
+        for (k = 0; k < (int)(sizeof k_other / sizeof k_other[0]); k++) {
+            if (opt_is_dash(argv, argc, &i, k_other[k])) {
+                other = k_other[k];
+                break;
+            }
         }
     }
     if (!json) {
         return 0;
     }
-    if (out) {
-        hx_error(cmd, "--json - and --out - cannot both write to standard output");
+    if (other != NULL) {
+        hx_error(cmd, "--json - and %s - cannot both write to standard output", other);
         return -1;
     }
     fflush(stdout);

@@ -154,10 +154,11 @@ int hx_check_writable(const char *cmd, const char *path);
  *  hx_json_stdout_claim (main.c) before a command runs; NULL when no
  *  option asked for it. */
 extern FILE *hx_json_stdout;
-/** When argv has `--json -`, standard output is kept for the JSON alone
- *  (hx_json_stdout) and what a command prints there goes to standard error
- *  instead, so that the JSON can be piped. 0, or -1 with the error printed
- *  when another option (`--out -`) wants standard output as well. */
+/** When argv has `--json -` (or `--json=-`), standard output is kept for
+ *  the JSON alone (hx_json_stdout) and what a command prints there goes to
+ *  standard error instead, so that the JSON can be piped. 0, or -1 with the
+ *  error printed when another option (`--out -`, `--csv -`) wants standard
+ *  output as well. */
 int hx_json_stdout_claim(const char *cmd, int argc, char **argv);
 struct cJSON;
 /** Write `root` as text (one trailing newline) to `path`, or to

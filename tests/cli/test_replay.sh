@@ -242,6 +242,21 @@ fi
 expect_exit 2 "--json - with --out -" "$H" replay vectors/walk.bin --out - --json -
 expect_err "cannot both write to standard output" "--json - and --out - refused"
 if [ -e ./- ]; then fail "a file named '-' was created"; rm -f ./-; else pass "no file named '-'"; fi
+# the parser takes --opt=VALUE as --opt VALUE: --json=- is --json - (it was
+# refused with "standard output not claimed", exit 3, after the summary had
+# gone to standard output), and --out=- collides with --json - as --out - does
+expect_exit 0 "info --json=-" "$H" info vectors/walk.bin --json=-
+if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['samples']==16539" "$T/out"; then
+    pass "info --json=- is the JSON alone"
+else
+    fail "info --json=-: $(head -c 200 "$T/out")"
+fi
+expect_exit 2 "--json=- with --out=-" "$H" replay vectors/walk.bin --out=- --json=-
+expect_err "cannot both write to standard output" "--json=- and --out=- refused"
+# montecarlo's --csv - writes to standard output too: with --json - it went
+# to standard error without a word
+expect_exit 2 "montecarlo --json - with --csv -" "$H" montecarlo --seeds 1 --duration 8 --json - --csv -
+expect_err "cannot both write to standard output" "--json - and --csv - refused"
 
 # --- a trajectory that cannot be written (a full disk): exit 3 with the
 # reason, to a file and to standard output
