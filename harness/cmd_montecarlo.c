@@ -494,6 +494,12 @@ int hx_cmd_montecarlo(int argc, char **argv)
             hx_error("montecarlo", "--bias-model is ar1, off or both, not '%s'", bm);
             return HX_EXIT_USAGE;
         }
+        /* the outputs are written after every run: find out now that they can be */
+        if ((json != NULL && strcmp(json, "-") != 0 && hx_check_writable("montecarlo", json) != 0) ||
+            (csv != NULL && strcmp(csv, "-") != 0 && hx_check_writable("montecarlo", csv) != 0) ||
+            (png != NULL && hx_plot_check("montecarlo", png) != 0)) {
+            return HX_EXIT_IO;
+        }
         if (fprof == NULL) {
             fprof = strcmp(su.profile_name, "none") == 0 ? "navchip" : su.profile_name;
         }

@@ -465,17 +465,22 @@ const char *hx_gp_str(char *buf, size_t size, const char *s)
     return buf;
 }
 
-int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h)
+int hx_plot_check(const char *cmd, const char *png_path)
 {
-    char q[1024];
-    memset(p, 0, sizeof *p);
     if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
         hx_error(cmd, "cannot draw %s: gnuplot is not installed (apt-get install gnuplot-nox)", png_path);
         return -1;
     }
+    return hx_check_writable(cmd, png_path);
+}
+
+int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h)
+{
+    char q[1024];
+    memset(p, 0, sizeof *p);
     /* gnuplot writes the image to its standard output when it cannot open
      * the file: find out first, and keep its output away from ours */
-    if (hx_check_writable(cmd, png_path) != 0) {
+    if (hx_plot_check(cmd, png_path) != 0) {
         return -1;
     }
     p->gp = popen("gnuplot >/dev/null", "w");

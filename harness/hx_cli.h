@@ -140,6 +140,9 @@ typedef struct {
  *  message printed when gnuplot is not installed or the PNG cannot be
  *  written. */
 int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h);
+/** 0 when gnuplot is installed and `png_path` can be written; -1 with the
+ *  error printed. For plots drawn only after long work. */
+int hx_plot_check(const char *cmd, const char *png_path);
 /** Finish; returns 0 when the PNG was written. */
 int hx_plot_close(hx_plot_t *p, const char *cmd);
 /** 1 when the two paths name one existing file (an output about to

@@ -44,6 +44,13 @@ then pass "NEES verdicts follow the per-bin rule"; else fail "NEES verdicts"; fi
 if head -1 "$T/mc.csv" | grep -q "^variant,t_s,odo_m,n,rms_h_m"; then pass "CSV header"; else fail "CSV header"; fi
 if grep -q "^off," "$T/mc.csv" && grep -q "^ar1," "$T/mc.csv"; then pass "both variants in the CSV"; else fail "variants in CSV"; fi
 expect_exit 3 "unwritable JSON" "$H" montecarlo --motion "stand:5,walk:3" --seeds 1 --quiet --json "$T/no/dir/x.json"
+# an output that cannot be written is refused before the runs, not after
+# them (20,000 seeds of a 10-minute walk: hours of work, then exit 3)
+for o in json csv plot; do
+    expect_exit 3 "unwritable --$o refused before the runs" timeout 20 "$H" montecarlo --duration 600 --seeds 20000 \
+        --quiet --$o "$T/no/dir/x.$o"
+    expect_err "no/dir/x.$o" "unwritable --$o is named"
+done
 
 # Acceptance: a simulated closed-loop walk replayed through `harness replay`
 # closes to within the filter's predicted uncertainty (3 sigma of the
