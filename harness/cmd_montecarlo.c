@@ -138,10 +138,23 @@ static const char *verdict(const cons_t *c)
 
 /* ------------------------------------------------------------ outputs */
 
+/* A figure of the summary right-aligned in `width` columns, or "-" where it
+ * is undefined (a bin before the alignment, a ratio of zeros). */
+static const char *col(char *buf, size_t size, int width, int prec, double v)
+{
+    if (isfinite(v)) {
+        snprintf(buf, size, "%*.*f", width, prec, v);
+    } else {
+        snprintf(buf, size, "%*s", width, "-");
+    }
+    return buf;
+}
+
 static void print_summary(const hx_mc_result_t *r, const char *motion, double rate, const char *profile,
                           const char *fprofile, int eq6)
 {
     int v, g, i;
+    char c1[32], c2[32], c3[32], c4[32];
     printf("montecarlo  %d seeds of '%s': %.1f s, %.1f m between footfalls, %g Hz\n", r->runs, motion, r->duration_s,
            r->distance_m, rate);
     printf("sensor      %s, filter %s (bias sigma: %s)\n", profile, fprofile, eq6 ? "eq. 6 reading" : "as given");
@@ -150,25 +163,30 @@ static void print_summary(const hx_mc_result_t *r, const char *motion, double ra
         stats_t h = stats_of(x->final_h_m, r->runs), z = stats_of(x->final_v_m, r->runs);
         stats_t p = stats_of(x->final_pred_h_m, r->runs), rm = stats_of(x->rms_h_m, r->runs);
         printf("\nvariant %s (%ld estimates compared, %d skipped as non-finite)\n", x->name, x->estimates, x->nonfinite);
-        printf("  final horizontal error   mean %.3f m (+- %.3f), median %.3f, 95%% %.3f, RMS %.3f = %.2f %% of "
-               "distance\n",
-               h.mean, 1.96 * h.sd / sqrt(h.n > 0 ? h.n : 1), h.median, h.p95, h.rms,
-               r->distance_m > 0.0 ? 100.0 * h.rms / r->distance_m : (double)NAN);
-        printf("  final vertical error     mean %.3f m, median %.3f, 95%% %.3f, RMS %.3f\n", z.mean, z.median, z.p95,
-               z.rms);
-        printf("  predicted horizontal sd  RMS over runs %.3f m (error RMS / predicted %.2f)\n", p.rms,
-               p.rms > 0.0 ? h.rms / p.rms : (double)NAN);
-        printf("  RMS horizontal error over each run: mean %.3f m\n", rm.mean);
-        printf("  growth     t [s]   dist [m]  RMS horiz [m]  pred sd [m]  RMS vert [m]  RMS yaw [deg]\n");
-        for (i = 0; i < 6; i++) {
-            int b = (int)((double)(i + 1) / 6.0 * x->nbins) - 1;
-            const hx_mc_bin_t *o;
-            if (b < 0) {
-                continue;
+        if (h.n == 0) {
+            printf("  final errors             none: no run has an aligned estimate at the end\n");
+        } else {
+            printf("  final horizontal error   mean %.3f m (+- %.3f), median %.3f, 95%% %.3f, RMS %.3f", h.mean,
+                   1.96 * h.sd / sqrt(h.n), h.median, h.p95, h.rms);
+            if (r->distance_m > 0.0) {
+                printf(" = %.2f %% of distance\n", 100.0 * h.rms / r->distance_m);
+            } else {
+                printf(" (no distance walked)\n");
             }
-            o = &x->bins[b];
-            printf("           %7.1f  %8.1f  %13.3f  %11.3f  %12.3f  %13.2f\n", o->t_s, o->odo_m, o->rms_h_m, o->pred_h_m,
-                   o->rms_v_m, o->rms_yaw_rad * 180.0 / 3.14159265358979323846);
+            printf("  final vertical error     mean %.3f m, median %.3f, 95%% %.3f, RMS %.3f\n", z.mean, z.median,
+                   z.p95, z.rms);
+            printf("  predicted horizontal sd  RMS over runs %.3f m (error RMS / predicted %s)\n", p.rms,
+                   col(c1, sizeof c1, 0, 2, p.rms > 0.0 ? h.rms / p.rms : (double)NAN));
+            printf("  RMS horizontal error over each run: mean %.3f m\n", rm.mean);
+        }
+        printf("  growth     t [s]   dist [m]  RMS horiz [m]  pred sd [m]  RMS vert [m]  RMS yaw [deg]\n");
+        /* six bins spread over the run (every bin when there are fewer) */
+        for (i = 0; i < 6 && i < x->nbins; i++) {
+            int b = x->nbins <= 6 ? i : (int)((double)(i + 1) / 6.0 * x->nbins) - 1;
+            const hx_mc_bin_t *o = &x->bins[b];
+            printf("           %7.1f  %8.1f  %s  %s  %s  %s\n", o->t_s, o->odo_m, col(c1, sizeof c1, 13, 3, o->rms_h_m),
+                   col(c2, sizeof c2, 11, 3, o->pred_h_m), col(c3, sizeof c3, 12, 3, o->rms_v_m),
+                   col(c4, sizeof c4, 13, 2, o->rms_yaw_rad * 180.0 / 3.14159265358979323846));
         }
         printf("  consistency (NEES averaged over runs; 95 %% band for %d runs)\n", r->runs);
         for (g = 0; g < HX_NEES_COUNT; g++) {
@@ -301,6 +319,17 @@ static int write_json(const char *path, const hx_mc_result_t *r, const char *mot
     return rc;
 }
 
+/* ",value", or "," alone where it is undefined (the JSON's null; allan's
+ * CSV leaves such fields empty too) */
+static void csv_num(FILE *f, double v)
+{
+    if (isfinite(v)) {
+        fprintf(f, ",%.6g", v);
+    } else {
+        fputc(',', f);
+    }
+}
+
 static int write_csv(const char *path, const hx_mc_result_t *r)
 {
     const int to_stdout = strcmp(path, "-") == 0; /* '-': standard output, as --json */
@@ -317,14 +346,20 @@ static int write_csv(const char *path, const hx_mc_result_t *r)
     for (v = 0; v < r->nvar; v++) {
         for (b = 0; b < r->var[v].nbins; b++) {
             const hx_mc_bin_t *q = &r->var[v].bins[b];
-            fprintf(f, "%s,%.3f,%.3f,%d,%.6g,%.6g,%.6g,%.6g,%.6g", r->var[v].name, q->t_s, q->odo_m, q->n, q->rms_h_m,
-                    q->pred_h_m, q->rms_v_m, q->pred_v_m, q->rms_yaw_rad);
+            fprintf(f, "%s,%.3f,%.3f,%d", r->var[v].name, q->t_s, q->odo_m, q->n);
+            csv_num(f, q->rms_h_m);
+            csv_num(f, q->pred_h_m);
+            csv_num(f, q->rms_v_m);
+            csv_num(f, q->pred_v_m);
+            csv_num(f, q->rms_yaw_rad);
             for (g = 0; g < HX_NEES_COUNT; g++) {
                 double lo = (double)NAN, hi = (double)NAN;
                 if (q->n_nees[g] > 0) {
                     hx_nees_band(q->n_nees[g], hx_nees_dim[g], 0.05, &lo, &hi);
                 }
-                fprintf(f, ",%.6g,%.6g,%.6g", q->nees[g], lo, hi);
+                csv_num(f, q->nees[g]);
+                csv_num(f, lo);
+                csv_num(f, hi);
             }
             if (fprintf(f, "\n") < 0) {
                 ok = 0;

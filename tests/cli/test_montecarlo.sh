@@ -43,6 +43,16 @@ PY
 then pass "NEES verdicts follow the per-bin rule"; else fail "NEES verdicts"; fi
 if head -1 "$T/mc.csv" | grep -q "^variant,t_s,odo_m,n,rms_h_m"; then pass "CSV header"; else fail "CSV header"; fi
 if grep -q "^off," "$T/mc.csv" && grep -q "^ar1," "$T/mc.csv"; then pass "both variants in the CSV"; else fail "variants in CSV"; fi
+# the bins before the alignment have no estimate: empty fields (as allan's
+# CSV), as the JSON has null; they were written as 'nan'
+if grep -qi 'nan' "$T/mc.csv"; then fail "NaN in the montecarlo CSV: $(grep -i -m1 nan "$T/mc.csv")"; else pass "no NaN in the CSV"; fi
+if grep -q '^ar1,1\.000,0\.000,0,,,,,,' "$T/mc.csv"; then pass "a bin without estimates has empty fields"; else fail "first bin: $(grep -m1 '^ar1,' "$T/mc.csv")"; fi
+# the summary: no NaN either (a standing 'walk' has no distance; bins before
+# the alignment), and a growth table of 3 bins shows each bin once
+expect_exit 0 "montecarlo of 3 s" "$H" montecarlo --duration 3 --seeds 2
+if grep -qi 'nan' "$T/out"; then fail "NaN in the summary: $(grep -i -m1 nan "$T/out")"; else pass "no NaN in the summary"; fi
+rows=$(awk '/growth/ { g = 1; next } /consistency/ { g = 0 } g { print $1 }' "$T/out" | sort | uniq -d | head -n 1)
+if [ -z "$rows" ]; then pass "growth table: each bin once"; else fail "growth table repeats the bin at t = $rows s"; fi
 expect_exit 3 "unwritable JSON" "$H" montecarlo --motion "stand:5,walk:3" --seeds 1 --quiet --json "$T/no/dir/x.json"
 # an output that cannot be written is refused before the runs, not after
 # them (20,000 seeds of a 10-minute walk: hours of work, then exit 3)
