@@ -19,7 +19,7 @@
 
 static const hx_opt_t k_opts[] = {
     HX_SIM_OPTS,
-    { "--seeds", "N", "number of runs (seeds seed .. seed+N-1; default 50)", 0 },
+    { "--seeds", "N", "number of runs, 1 to 100000 (seeds seed .. seed+N-1; default 50)", 0 },
     { "--filter-profile", "NAME|FILE", "the filter's sensor profile, taken as given (default: --profile, read with --bias-sigma)", 0 },
     { "--bias-model", "MODEL", "filter bias model: ar1 (default), off, or both (paired, on the same samples)", 0 },
     { "--detector", "KIND", "stance detector: shoe (default) or threshold", 0 },
@@ -520,6 +520,10 @@ int hx_cmd_montecarlo(int argc, char **argv)
         int nvar, v, i, status = HX_EXIT_OK;
         if (hx_arg_double(&a, "--seeds", 1.0, 100000.0, &seeds) != 0 ||
             hx_arg_double(&a, "--bin", 0.01, 1e5, &bin) != 0) {
+            return HX_EXIT_USAGE;
+        }
+        if (seeds != floor(seeds)) {
+            hx_error("montecarlo", "--seeds takes a whole number of runs, not %g", seeds);
             return HX_EXIT_USAGE;
         }
         if (bm == NULL) {

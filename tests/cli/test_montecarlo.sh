@@ -53,6 +53,8 @@ expect_exit 0 "montecarlo of 3 s" "$H" montecarlo --duration 3 --seeds 2
 if grep -qi 'nan' "$T/out"; then fail "NaN in the summary: $(grep -i -m1 nan "$T/out")"; else pass "no NaN in the summary"; fi
 rows=$(awk '/growth/ { g = 1; next } /consistency/ { g = 0 } g { print $1 }' "$T/out" | sort | uniq -d | head -n 1)
 if [ -z "$rows" ]; then pass "growth table: each bin once"; else fail "growth table repeats the bin at t = $rows s"; fi
+expect_exit 2 "--seeds 2.5" "$H" montecarlo --seeds 2.5 --duration 5
+expect_err "whole number" "--seeds takes a whole number"
 expect_exit 3 "unwritable JSON" "$H" montecarlo --motion "stand:5,walk:3" --seeds 1 --quiet --json "$T/no/dir/x.json"
 # an output that cannot be written is refused before the runs, not after
 # them (20,000 seeds of a 10-minute walk: hours of work, then exit 3)
