@@ -500,13 +500,20 @@ int hx_cmd_live(int argc, char **argv)
     }
     if (plot_every > 0.0) {
         /* the plots are drawn in a child, whose failure nobody would see:
-         * find out now that the picture can be written */
-        if (hx_check_writable(CMD, plot_png) != 0) {
+         * find out now that gnuplot is there and the picture can be written */
+        if (hx_plot_check(CMD, plot_png) != 0) {
             return HX_EXIT_IO;
         }
     }
     out_path = hx_arg(&a, "--out");
     json_path = hx_arg(&a, "--json");
+    /* the recording is opened at the first sample (its header takes the
+     * INFO frame), the JSON written at the end: find out now, before the
+     * session, that both can be written */
+    if ((hx_arg(&a, "--record") != NULL && hx_check_writable(CMD, hx_arg(&a, "--record")) != 0) ||
+        (json_path != NULL && strcmp(json_path, "-") != 0 && hx_check_writable(CMD, json_path) != 0)) {
+        return HX_EXIT_IO;
+    }
 
     memset(&L, 0, sizeof L);
     fnav_wire_decoder_init(&L.dec);

@@ -115,6 +115,15 @@ timeout $LIMIT "$H" live /dev/null --rate 100 >/dev/null 2>"$T/err"; expect_rc $
 timeout $LIMIT "$H" live /dev/null --bias-model nope >/dev/null 2>"$T/err"; expect_rc $? 2 "live --bias-model nope"
 timeout $LIMIT "$H" live "$T/orig.csv" --baud 0 >/dev/null 2>&1; expect_rc $? 2 "live --baud 0"
 timeout $LIMIT "$H" stream "$T/nope.bin" /dev/null >/dev/null 2>&1; expect_rc $? 1 "stream of a missing log"
+# the recording and the JSON are written after the session has started (the
+# recording at the first sample, the JSON at its end): an output that cannot
+# be written is refused before the port is opened, not found when the walk
+# is under way or over (the error named the port, or came after the session)
+for o in record json; do
+    timeout $LIMIT "$H" live /dev/nonexistent-port --$o "$T/no/dir/x.$o" >/dev/null 2>"$T/err"
+    expect_rc $? 3 "live --$o into a missing directory"
+    grep_in "$T/err" "no/dir/x.$o" "the error names the --$o file, before the port"
+done
 
 start_link
 # the real libserialport path refuses a pty: this is why the seam exists
