@@ -184,7 +184,7 @@ int hx_cmd_sim(int argc, char **argv)
         hx_motion_eval(motion, sc.duration_s, &end);
         printf("motion      %s\n", motion_name);
         printf("duration    %.3f s, %d strides, %.2f m between footfalls, ends at (%.3f, %.3f, %.3f) m\n",
-               sc.duration_s, hx_motion_strides(motion), end.odo_m, end.pos_m[0], end.pos_m[1], end.pos_m[2]);
+               sc.duration_s, hx_motion_strides_until(motion, sc.duration_s), end.odo_m, end.pos_m[0], end.pos_m[1], end.pos_m[2]);
         printf("sampling    %g Hz, internal x%u (%s), seed %u\n", rate, fnav_imuerr_internal_factor(&sc.err),
                sc.err.mask[FNAV_EFFECT_ALIAS]              ? "picked, no anti-alias filter"
                : sc.decim == HX_DECIM_MEAN                 ? "interval means"

@@ -871,6 +871,15 @@ int hx_motion_strides(const hx_motion_t *m)
     return m->strides;
 }
 
+int hx_motion_strides_until(const hx_motion_t *m, double t)
+{
+    size_t i, n = 0;
+    for (i = 0; i < m->nland; i++) { /* one landing per stride, in time order */
+        n += m->land[i].t <= t;
+    }
+    return (int)n;
+}
+
 size_t hx_motion_nknots(const hx_motion_t *m)
 {
     return m->nk;

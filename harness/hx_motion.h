@@ -120,6 +120,9 @@ const char *hx_motion_scenario_list(void);
 double hx_motion_duration(const hx_motion_t *m);
 /** Number of footfalls (completed strides). */
 int hx_motion_strides(const hx_motion_t *m);
+/** Number of footfalls at or before time t, s (the strides of an output cut
+ *  by --duration). */
+int hx_motion_strides_until(const hx_motion_t *m, double t);
 
 /** Number of spline knots, and the time of knot i: between consecutive
  *  knots the truth is analytic (polynomial plus smooth ringing); at a knot

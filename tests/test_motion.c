@@ -378,6 +378,11 @@ static void test_stairs_and_elevator_heights(void **state)
     FNAV_ASSERT_CLOSE(o.pos_m[2], -12 * 0.17, 1e-9, 0.0);
     FNAV_ASSERT_CLOSE(o.pos_m[0], 12 * 0.28, 1e-9, 0.0);
     assert_int_equal(hx_motion_strides(m), 6);
+    /* the strides of a cut: none while standing, all at the end */
+    assert_int_equal(hx_motion_strides_until(m, 0.9), 0);
+    assert_true(hx_motion_strides_until(m, 0.5 * hx_motion_duration(m)) > 0);
+    assert_true(hx_motion_strides_until(m, 0.5 * hx_motion_duration(m)) < 6);
+    assert_int_equal(hx_motion_strides_until(m, hx_motion_duration(m)), 6);
     hx_motion_free(m);
     m = make("stand:1,stairs-down:7,stand:1", 0.0);
     hx_motion_eval(m, hx_motion_duration(m), &o);

@@ -51,6 +51,17 @@ expect_out "rate        100.000 Hz (nominal)" "nominal rate in the header"
 expect_out "gravity along -z" "gravity along -z at rest"
 expect_out_re "^samples     2001$" "info sample count"
 
+# --- the summary counts the strides of the output, not of the whole motion
+# (a 30 s cut of 'paper' said 154 strides, those of its 185 s)
+expect_exit 0 "sim walk cut before the first stride" "$H" sim --motion walk --duration 4 --out "$T/w4.bin"
+expect_out_re "^duration    4\.000 s, 0 strides, 0\.00 m between footfalls" "no stride within 4 s of standing"
+expect_exit 0 "sim paper cut at 30 s" "$H" sim --motion paper --duration 30 --out "$T/p30.bin"
+n30=$(sed -n 's/^duration .* s, \([0-9]*\) strides.*/\1/p' "$T/out")
+expect_exit 0 "sim paper whole" "$H" sim --motion paper --out "$T/p.bin"
+nall=$(sed -n 's/^duration .* s, \([0-9]*\) strides.*/\1/p' "$T/out")
+if [ -n "$n30" ] && [ -n "$nall" ] && [ "$n30" -gt 0 ] && [ "$n30" -lt "$nall" ]; then
+    pass "paper: $n30 strides in 30 s of $nall"; else fail "paper strides: $n30 in 30 s, $nall in all"; fi
+
 # --- CSV output and determinism
 expect_exit 0 "sim to CSV" "$H" sim --duration 5 --rate 200 --seed 7 --out "$T/a.csv"
 expect_exit 0 "same seed again" "$H" sim --duration 5 --rate 200 --seed 7 --out "$T/b.csv"
