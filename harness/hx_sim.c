@@ -573,6 +573,9 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
     if (s->err.oversample < 1u) {
         s->err.oversample = 1u;
     }
+    if (s->err.oversample > 1024u) {
+        s->err.oversample = 1024u; /* fnav_imuerr's limit: below 1.95 Hz the default stays under 2 kHz */
+    }
     s->profile_name = hx_arg(a, "--profile");
     if (s->profile_name == NULL) {
         s->profile_name = "navchip";

@@ -51,6 +51,12 @@ expect_out "rate        100.000 Hz (nominal)" "nominal rate in the header"
 expect_out "gravity along -z" "gravity along -z at rest"
 expect_out_re "^samples     2001$" "info sample count"
 
+# --rate 1 is in the option's range, but the default oversampling (2 kHz
+# internally: x2000) exceeded the error model's limit of 1024 and the run
+# was refused as "the effects are inconsistent"
+expect_exit 0 "sim --rate 1" "$H" sim --rate 1 --duration 20 --out "$T/r1.csv"
+expect_out "internal x1024" "--rate 1: the largest oversampling"
+
 # --- the summary counts the strides of the output, not of the whole motion
 # (a 30 s cut of 'paper' said 154 strides, those of its 185 s)
 expect_exit 0 "sim walk cut before the first stride" "$H" sim --motion walk --duration 4 --out "$T/w4.bin"
