@@ -1127,6 +1127,26 @@ int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_tr
     }
     fprintf(p.gp, "set multiplot layout 1,2 title '%s'\n", hx_gp_str(q, sizeof q, title));
     fprintf(p.gp, "set size ratio -1\nset xlabel 'east y (m)'\nset ylabel 'north x (m)'\n");
+    {
+        /* one span on both axes, centred on the path (start included): with
+         * equal units alone a straight walk became a strip a few pixels wide
+         * whose east tick labels ran into each other */
+        double lo[2] = { 0.0, 0.0 }, hi[2] = { 0.0, 0.0 }, span;
+        int k;
+        for (i = 0; i < t->n; i++) {
+            if (t->f[i].flags & FNAV_FRAME_ALIGNED) {
+                for (k = 0; k < 2; k++) {
+                    double v = (double)t->f[i].pos_m[1 - k];
+                    lo[k] = v < lo[k] ? v : lo[k];
+                    hi[k] = v > hi[k] ? v : hi[k];
+                }
+            }
+        }
+        span = hi[0] - lo[0] > hi[1] - lo[1] ? hi[0] - lo[0] : hi[1] - lo[1];
+        span = 1.1 * (span > 0.5 ? span : 0.5);
+        fprintf(p.gp, "set xrange [%.4f:%.4f]\nset yrange [%.4f:%.4f]\n", 0.5 * (lo[0] + hi[0] - span),
+                0.5 * (lo[0] + hi[0] + span), 0.5 * (lo[1] + hi[1] - span), 0.5 * (lo[1] + hi[1] + span));
+    }
     fprintf(p.gp, "plot '-' with lines lw 1 title 'path', '-' with points pt 7 ps 1 title 'start', "
                   "'-' with points pt 5 ps 1 title 'end'\n");
     for (i = 0; i < t->n; i++) {
@@ -1139,7 +1159,7 @@ int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_tr
         fprintf(p.gp, "%.4f %.4f\n", (double)t->f[t->n - 1].pos_m[1], (double)t->f[t->n - 1].pos_m[0]);
     }
     fprintf(p.gp, "e\n");
-    fprintf(p.gp, "set size noratio\nset xlabel 'time (s)'\nset ylabel 'height (m, up)'\n");
+    fprintf(p.gp, "set size noratio\nset autoscale xy\nset xlabel 'time (s)'\nset ylabel 'height (m, up)'\n");
     fprintf(p.gp, "plot '-' with lines lw 1 title 'height'\n");
     for (i = 0; i < t->n; i++) {
         if (t->f[i].flags & FNAV_FRAME_ALIGNED) {

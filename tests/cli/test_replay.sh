@@ -523,6 +523,28 @@ if grep -q "at 4000 Hz the stance detector's ring of [0-9]* samples cuts its win
 "$H" replay "$T/w4k.bin" --rate 1900 > /dev/null 2> "$T/w4k19.err"
 if grep -q "ring of .* cuts" "$T/w4k19.err"; then fail "the window still cut at the rate it names"; else pass "resampled to the rate it names: no cut"; fi
 
+# --- the 2-D path of replay --plot (and of live's plot) spans the same
+# distance on both axes: with equal units alone, a straight walk was a strip a
+# few pixels wide whose east tick labels overlapped. A stand-in gnuplot keeps
+# the script it is given.
+mkdir -p "$T/fakegp"
+cat >"$T/fakegp/gnuplot" <<'GP'
+#!/bin/sh
+cat >"$GP_SCRIPT"
+out=$(sed -n "s/^set output '\(.*\)'$/\1/p" "$GP_SCRIPT" | head -n 1)
+[ -n "$out" ] && : >"$out"
+exit 0
+GP
+chmod +x "$T/fakegp/gnuplot"
+"$H" sim --motion stand:5,walk:10,stand:3 --out "$T/straight.bin" >/dev/null 2>&1
+PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp.txt" "$H" replay "$T/straight.bin" --plot "$T/straight.png" --quiet >/dev/null 2>&1
+if awk '/^set [xy]range/ { r = $3; gsub(/[\[\]]/, "", r) } /^set xrange/ { split(r, x, ":") } /^set yrange/ { split(r, y, ":") }
+        END { sx = x[2] - x[1]; sy = y[2] - y[1]; exit !(sx > 0 && sy > 0 && sx - sy < 1e-3 && sy - sx < 1e-3 && sx > 10) }' "$T/gp.txt"; then
+    pass "path plot: equal spans on both axes for a straight walk"
+else
+    fail "path plot ranges: $(grep range "$T/gp.txt" | tr '\n' ' ')"
+fi
+
 if [ "$fails" -ne 0 ]; then
     echo "test_replay.sh: $fails failure(s)"
     exit 1
