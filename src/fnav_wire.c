@@ -1,4 +1,5 @@
 /* The footnav wire protocol (fnav_wire.h, docs/wire-protocol.md). */
+#include <float.h>
 #include <string.h>
 
 #include "footnav/fnav_wire.h"
@@ -52,6 +53,22 @@ static void put_f32(uint8_t *p, float v)
     uint32_t u;
     memcpy(&u, &v, sizeof u);
     put_u32(p, u);
+}
+
+/* An fnav_real_t as float32. In a double build a value beyond the float
+ * range is sent as the largest float of its sign (the plain cast is
+ * undefined behaviour there, C99 6.3.1.5; a review, 2026-11-28); NaN and
+ * infinities pass as they are. A float build sends the value itself. */
+static void put_real32(uint8_t *p, fnav_real_t x)
+{
+#if FNAV_USE_DOUBLE
+    if (x > (fnav_real_t)FLT_MAX && x <= (fnav_real_t)DBL_MAX) {
+        x = (fnav_real_t)FLT_MAX;
+    } else if (x < -(fnav_real_t)FLT_MAX && x >= -(fnav_real_t)DBL_MAX) {
+        x = -(fnav_real_t)FLT_MAX;
+    }
+#endif
+    put_f32(p, (float)x);
 }
 
 static void put_f64(uint8_t *p, double v)
@@ -172,10 +189,10 @@ size_t fnav_wire_encode_sample(uint8_t *out, size_t out_size, uint16_t seq, cons
     put_u32(p + 8, s->seq);
     p[12] = (uint8_t)(s->flags & 0xFFu);
     for (i = 0; i < 3; i++) {
-        put_f32(p + 13 + 4 * i, (float)s->accel_mps2[i]);
-        put_f32(p + 25 + 4 * i, (float)s->gyro_rps[i]);
+        put_real32(p + 13 + 4 * i, s->accel_mps2[i]);
+        put_real32(p + 25 + 4 * i, s->gyro_rps[i]);
     }
-    put_f32(p + 37, (float)s->temp_c);
+    put_real32(p + 37, s->temp_c);
     return fnav_wire_encode(out, out_size, FNAV_WIRE_SAMPLE, seq, p, FNAV_WIRE_SAMPLE_LEN);
 }
 
@@ -191,9 +208,9 @@ size_t fnav_wire_encode_nav(uint8_t *out, size_t out_size, uint16_t seq, const f
     p[12] = (uint8_t)(f->flags & 0xFFu);
     put_u32(p + 13, f->health);
     for (i = 0; i < 3; i++) {
-        put_f32(p + 17 + 4 * i, (float)f->pos_m[i]);
-        put_f32(p + 29 + 4 * i, (float)f->vel_mps[i]);
-        put_f32(p + 41 + 4 * i, (float)f->euler_rad[i]);
+        put_real32(p + 17 + 4 * i, f->pos_m[i]);
+        put_real32(p + 29 + 4 * i, f->vel_mps[i]);
+        put_real32(p + 41 + 4 * i, f->euler_rad[i]);
     }
     return fnav_wire_encode(out, out_size, FNAV_WIRE_NAV, seq, p, FNAV_WIRE_NAV_LEN);
 }

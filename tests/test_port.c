@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <cmocka.h>
 
@@ -84,6 +85,24 @@ static void test_linux_replay_port(void **state)
     }
     assert_int_equal(n, 6);
     fclose(out);
+    {
+        /* a level outside the enum is printed as an error (it indexed past
+         * the names: a review, 2026-11-28; ASan's global-buffer-overflow) */
+        FILE *cap = tmpfile();
+        int fd = dup(2);
+        assert_non_null(cap);
+        assert_true(fd >= 0);
+        fflush(stderr);
+        assert_true(dup2(fileno(cap), 2) >= 0);
+        fnav_port_log(&port, (fnav_log_level_t)7, "level seven");
+        fflush(stderr);
+        assert_true(dup2(fd, 2) >= 0);
+        close(fd);
+        rewind(cap);
+        assert_non_null(fgets(line, sizeof line, cap));
+        assert_string_equal(line, "error: level seven\n");
+        fclose(cap);
+    }
     hx_reader_close(r);
 }
 

@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <float.h>
 #include <string.h>
 #include <zlib.h>
 
@@ -367,6 +368,35 @@ static void test_roundtrip_and_sizes(void **state)
 }
 
 /* A CRC-valid sample with a NaN is reported, not delivered. */
+/* A double build's value beyond the float range is sent as the largest
+ * float of its sign (the cast itself would be undefined behaviour, C99
+ * 6.3.1.5; a review, 2026-11-28); in range it is the value rounded to
+ * float, as in a float build. */
+static void test_beyond_float_range(void **state)
+{
+    uint8_t buf[64];
+    fnav_sample_t s, r;
+    fnav_wire_decoder_t d;
+    fnav_wire_frame_t f;
+    size_t used;
+    (void)state;
+    memset(&s, 0, sizeof s);
+    s.accel_mps2[0] = (fnav_real_t)FLT_MAX;
+    s.accel_mps2[1] = -(fnav_real_t)FLT_MAX;
+    s.gyro_rps[2] = (fnav_real_t)1.5;
+#if FNAV_USE_DOUBLE
+    s.accel_mps2[0] = (fnav_real_t)1e300;
+    s.accel_mps2[1] = (fnav_real_t)-4e38;
+#endif
+    assert_int_equal(fnav_wire_encode_sample(buf, sizeof buf, 3u, &s), 51);
+    fnav_wire_decoder_init(&d);
+    assert_int_equal(fnav_wire_decode(&d, buf, 51, &used, &f), FNAV_OK);
+    assert_int_equal(fnav_wire_parse_sample(&f, &r), FNAV_OK);
+    assert_true(r.accel_mps2[0] == (fnav_real_t)FLT_MAX);
+    assert_true(r.accel_mps2[1] == -(fnav_real_t)FLT_MAX);
+    assert_true(r.gyro_rps[2] == (fnav_real_t)1.5);
+}
+
 static void test_sample_nan(void **state)
 {
     uint8_t buf[64];
@@ -539,6 +569,7 @@ int main(void)
         cmocka_unit_test(test_encode_golden),
         cmocka_unit_test(test_roundtrip_and_sizes),
         cmocka_unit_test(test_sample_nan),
+        cmocka_unit_test(test_beyond_float_range),
         cmocka_unit_test(test_info_rate),
         cmocka_unit_test(test_seq_accounting),
         cmocka_unit_test(test_garbage_fuzz),

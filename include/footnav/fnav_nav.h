@@ -104,7 +104,9 @@ typedef struct {
     int closed_form;                   /**< UKF closed-form linear sigma points (1) */
     fnav_real_t diverge_speed_mps;     /**< |velocity| above this is divergence, m/s (default 30:
                                             beyond any foot, sprinting swing included) */
-    uint32_t diverge_undone;           /**< this many consecutive undone steps is divergence (default 20) */
+    uint32_t diverge_undone;           /**< this many consecutive undone predictions is divergence (default 20;
+                                            an update undone, FNAV_E_DIVERGED of a ZUPT, is counted in the
+                                            health, not here: the prediction after it decides) */
 } fnav_nav_config_t;
 
 /** Defaults: profile "generic-mems" (fnav_profile.h) with the AR(1) bias
@@ -148,7 +150,7 @@ typedef struct {
     uint32_t health;        /**< FNAV_HEALTH_* bits */
     fnav_nav_stats_t stats;
     fnav_nav_frame_t last;  /**< newest frame */
-    uint32_t undone_run;    /**< consecutive undone filter steps */
+    uint32_t undone_run;    /**< consecutive undone predictions */
     int prev_stance;        /**< the previous frame was decided stance */
     int settle_pending;     /**< a stance began: start the settling state at its first ZUPT */
     fnav_real_t stance_s;   /**< time the current stance has lasted, s */
@@ -193,7 +195,7 @@ FNAV_WARN_UNUSED fnav_status_t fnav_nav_pop(fnav_nav_t *nav, fnav_nav_frame_t *f
  * keeping the last good position and heading (with their variances) so the
  * trajectory stays continuous; until then frames hold that position with the
  * ALIGNED flag clear. The navigator calls it itself when |velocity| exceeds
- * cfg.diverge_speed_mps or cfg.diverge_undone consecutive steps were undone;
+ * cfg.diverge_speed_mps or cfg.diverge_undone consecutive predictions were undone;
  * a caller may call it on its own evidence (e.g. an external position fix
  * disagreeing). Counted in stats.resets, FNAV_HEALTH_RESET in the frames.
  */

@@ -243,7 +243,10 @@ FNAV_WARN_UNUSED fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, f
  * @param dt_s        interval, s; 0 does nothing
  * @return FNAV_OK; FNAV_E_NANINF (input ignored); FNAV_E_TIME on dt < 0;
  *         FNAV_E_STATE before start; FNAV_E_DECOMP when the covariance had
- *         to be reset (step completed); FNAV_E_DIVERGED (step undone).
+ *         to be reset (step completed); FNAV_E_DIVERGED (step undone: the
+ *         state as before it; the covariance too, but for a jitter or reset
+ *         its factorisation needed before the step, which is kept and
+ *         counted in health.chol_jitter / chol_reset).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t accel_mps2,
                                                 fnav_real_t dt_s);

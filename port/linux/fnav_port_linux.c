@@ -83,7 +83,8 @@ static void linux_log(void *ctx, fnav_log_level_t level, const char *msg)
     if (level < c->min_level) {
         return;
     }
-    fprintf(stderr, "%s: %s\n", names[level], msg);
+    /* a level outside the enum (a caller's cast) is printed as an error */
+    fprintf(stderr, "%s: %s\n", (unsigned)level < 4u ? names[level] : "error", msg);
 }
 
 void fnav_linux_port_init(fnav_port_t *port, fnav_linux_port_ctx_t *ctx, hx_reader_t *reader, FILE *nav_csv)
