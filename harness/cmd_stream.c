@@ -43,8 +43,7 @@ static volatile sig_atomic_t g_stop;
 
 static void on_signal(int sig)
 {
-    (void)sig;
-    g_stop = 1;
+    g_stop = sig; /* the signal, for the exit status */
 }
 
 static void sleep_until(double t)
@@ -114,7 +113,7 @@ int hx_cmd_stream(int argc, char **argv)
         hx_arg_double(&a, "--rate", 1e-3, 1e6, &rate) != 0 || hx_arg_double(&a, "--speed", 0.0, 1e6, &speed) != 0 ||
         hx_arg_long(&a, "--inject-corrupt", 1, 1000000000L, &corrupt) != 0 ||
         hx_arg_long(&a, "--inject-drop", 1, 1000000000L, &drop) != 0 ||
-        hx_arg_long(&a, "--hangup-after", 0, 2000000000L, &hangup) != 0) {
+        hx_arg_long(&a, "--hangup-after", 1, 2000000000L, &hangup) != 0) {
         return HX_EXIT_USAGE;
     }
     if (hx_arg(&a, "--rate") != NULL && hx_arg(&a, "--speed") != NULL) {
@@ -231,6 +230,8 @@ int hx_cmd_stream(int argc, char **argv)
            g_stop ? " (interrupted)" : "");
     if (tx.failed) {
         exit_code = HX_EXIT_IO;
+    } else if (g_stop) {
+        exit_code = 128 + (int)g_stop; /* as the shell reports a command a signal ended: not all was sent */
     } else if (loaded == 1) {
         exit_code = HX_EXIT_DATA; /* the reader's error was printed by hx_load_input */
     }

@@ -115,6 +115,7 @@ timeout $LIMIT "$H" live /dev/null --rate 100 >/dev/null 2>"$T/err"; expect_rc $
 timeout $LIMIT "$H" live /dev/null --bias-model nope >/dev/null 2>"$T/err"; expect_rc $? 2 "live --bias-model nope"
 timeout $LIMIT "$H" live "$T/orig.csv" --baud 0 >/dev/null 2>&1; expect_rc $? 2 "live --baud 0"
 timeout $LIMIT "$H" stream "$T/nope.bin" /dev/null >/dev/null 2>&1; expect_rc $? 1 "stream of a missing log"
+timeout $LIMIT "$H" stream vectors/walk.bin /dev/null --hangup-after 0 >/dev/null 2>&1; expect_rc $? 2 "stream --hangup-after 0 (was taken for off)"
 # the recording and the JSON are written after the session has started (the
 # recording at the first sample, the JSON at its end): an output that cannot
 # be written is refused before the port is opened, not found when the walk
@@ -224,6 +225,22 @@ if [ "$k" -ge 300 ] && head -n $((k + 1)) "$T/orig.csv" | cmp -s - "$T/rec_k.csv
 else
     fail "the killed recording ($k samples) is not a prefix of the log"
 fi
+
+# --- the sender is interrupted: exit 130 and no END frame (exit 0 before,
+# as if the stream were complete)
+stop_link # the block above leaves its link up
+start_link
+start_live --record "$T/rec_i.bin" --timeout 60
+LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 4 >"$T/stream_i.out" 2>&1 &
+STREAM=$!
+wait_for '[ -f "$T/rec_i.bin" ] && [ "$(records "$T/rec_i.bin")" -ge 300 ]' 300
+kill -INT "$STREAM" 2>/dev/null
+wait "$STREAM"
+expect_rc $? 130 "stream interrupted by SIGINT"
+STREAM=""
+grep_in "$T/stream_i.out" "(interrupted)" "the interrupted stream says so"
+stop_link
+wait_live
 
 # --- misbehaving senders (tests/cli/wire_cases.py): whatever live records,
 # its own reader reads; what it refuses is reported and fails the run
