@@ -86,12 +86,17 @@ static void analyse(const hx_log_t *log, info_t *in)
         dt = (int64_t *)malloc((n - 1) * sizeof *dt);
     }
     if (dt != NULL) {
+        size_t nz = 0;
         for (i = 1; i < n; i++) {
             int64_t d = log->t_ns[i] - log->t_ns[i - 1];
             dt[nd++] = d;
+            nz += d <= 0;
         }
         qsort(dt, nd, sizeof *dt, cmp_i64);
-        in->dt_med_s = 1e-9 * (double)dt[nd / 2];
+        /* the median of the intervals that advance (duplicated stamps are
+         * counted apart: a log of mostly duplicates had a median of 0, and
+         * every real interval was a gap) */
+        in->dt_med_s = 1e-9 * (double)dt[nz < nd ? nz + (nd - nz) / 2 : nd / 2];
         in->dt_min_s = 1e-9 * (double)dt[0];
         in->dt_max_s = 1e-9 * (double)dt[nd - 1];
         free(dt);

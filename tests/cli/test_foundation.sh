@@ -20,6 +20,12 @@ expect_exit 0 "convert --help" "$H" convert --help
 expect_exit 2 "bad --input-rate" "$H" info vectors/walk.bin --input-rate -3
 expect_exit 2 "unknown --from" "$H" info vectors/walk.bin --from nope
 expect_err "unknown input format 'nope'" "--from error names the format"
+# a log of mostly duplicated stamps: the median interval is that of the
+# intervals that advance (it read 0 ms, and every real interval was a gap)
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.02,0,0,9.8,0,0,0\n' > "$T/dups.csv"
+expect_exit 0 "info on a log of mostly duplicates" "$H" info "$T/dups.csv"
+expect_out "interval    median 10.000 ms" "the median interval skips the duplicates"
+expect_out "gaps        0 " "no real interval is a gap"
 
 # --- the bundled example
 expect_exit 0 "info walk.bin" "$H" info vectors/walk.bin --json "$T/info.json"
