@@ -9,7 +9,7 @@
 
 static const hx_opt_t k_opts[] = {
     HX_INPUT_OPTS,
-    { "--to", "FORMAT", "output format: bin or csv (default: from OUT's extension, .bin -> bin)", 0 },
+    { "--to", "FORMAT", "output format: bin or csv (default: from OUT's extension, .bin in any case -> bin)", 0 },
     { "--rate", "HZ", "resample to HZ (1 to 100000, below the input's rate) first, as replay --rate (anti-alias "
                       "low-pass; docs/harness.md)", 0 },
     { NULL, NULL, NULL, 0 }

@@ -1528,10 +1528,20 @@ struct hx_writer {
     int failed;
 };
 
+/* 1 when s ends with suffix (lower case), in any case: OUT.BIN is a .bin
+ * (it was written as CSV; a review, 2026-11-28) */
 static int ends_with(const char *s, const char *suffix)
 {
-    size_t n = strlen(s), m = strlen(suffix);
-    return n >= m && strcmp(s + n - m, suffix) == 0;
+    size_t n = strlen(s), m = strlen(suffix), i;
+    if (n < m) {
+        return 0;
+    }
+    for (i = 0; i < m; i++) {
+        if (tolower((unsigned char)s[n - m + i]) != suffix[i]) {
+            return 0;
+        }
+    }
+    return 1;
 }
 
 hx_writer_t *hx_writer_open(const char *path, hx_format_t fmt, const hx_meta_t *meta, int sync_each, char *err,

@@ -41,6 +41,9 @@ fi
 expect_exit 0 "convert bin->csv" "$H" convert vectors/walk.bin "$T/a.csv"
 expect_exit 0 "convert csv->bin" "$H" convert "$T/a.csv" "$T/b.bin"
 expect_exit 0 "convert bin->csv (2)" "$H" convert "$T/b.bin" "$T/c.csv"
+# the extension in any case: OUT.BIN is a .bin (it was written as CSV)
+expect_exit 0 "convert csv->BIN" "$H" convert "$T/a.csv" "$T/B.BIN"
+if cmp -s "$T/b.bin" "$T/B.BIN"; then pass "OUT.BIN is written as .bin"; else fail "OUT.BIN is not the .bin"; fi
 if cmp -s "$T/a.csv" "$T/c.csv"; then pass "csv -> bin -> csv identical"; else fail "round trip changed values"; fi
 expect_exit 2 "convert onto its own input" "$H" convert "$T/a.csv" "$T/a.csv"
 if cmp -s "$T/a.csv" "$T/c.csv"; then pass "convert left its input intact"; else fail "convert overwrote its input"; fi
