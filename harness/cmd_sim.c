@@ -108,6 +108,11 @@ int hx_cmd_sim(int argc, char **argv)
         hx_usage(&k_spec, stderr);
         return HX_EXIT_USAGE;
     }
+    if (truth != NULL && strcmp(truth, "-") == 0) {
+        /* it created a file named '-' (a review, 2026-11-28) */
+        hx_error("sim", "--truth needs a file name ('-' is not standard output here: the summary goes there)");
+        return HX_EXIT_USAGE;
+    }
     if (truth != NULL && (strcmp(truth, out) == 0 || hx_same_file(truth, out))) {
         hx_error("sim", "--truth and --out name the same file");
         return HX_EXIT_USAGE;

@@ -37,6 +37,9 @@ expect_exit 0 "integrating sensor" "$H" sim --out "$T/m.bin" --duration 3 --rate
 expect_out "interval means" "summary names the decimation"
 expect_exit 3 "unwritable output" "$H" sim --out "$T/no/such/dir/x.bin" --duration 2
 expect_exit 3 "unwritable truth" "$H" sim --out "$T/x.bin" --truth "$T/no/such/dir/t.csv" --duration 2
+HA=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")
+(cd "$T" && "$HA" sim --out x2.bin --truth - --duration 2 >/dev/null 2>"$T/err"); rc=$?
+if [ $rc -eq 2 ] && [ ! -e "$T/-" ] && grep -q "needs a file name" "$T/err"; then pass "sim --truth - refused (it wrote a file named -)"; else fail "sim --truth -: exit $rc"; fi
 
 # --- a walk: .bin log, truth CSV, summary
 expect_exit 0 "sim walk 20 s" "$H" sim --motion walk --duration 20 --rate 100 --out "$T/w.bin" --truth "$T/t.csv"
