@@ -372,18 +372,22 @@ static int write_csv(const char *path, const hx_mc_result_t *r)
     return ok ? 0 : -1;
 }
 
-static int write_plot(const char *png, const hx_mc_result_t *r)
+static int write_plot(const char *png, const hx_mc_result_t *r, const char *motion, const char *profile)
 {
     hx_plot_t p;
     int v, b;
+    char q1[128], q2[256];
     if (hx_plot_open(&p, "montecarlo", png, 1100, 800) != 0) {
         return -1;
     }
-    fprintf(p.gp, "set multiplot layout 2,1\nset grid\nset key left top\n");
+    fprintf(p.gp, "set multiplot layout 2,1 title 'montecarlo: motion %s, profile %s, %d runs'\n",
+            hx_gp_str(q1, sizeof q1, motion), hx_gp_str(q2, sizeof q2, profile), r->runs);
+    fprintf(p.gp, "set grid\nset key left top\n");
     fprintf(p.gp, "set xlabel 'time [s]'\nset ylabel 'horizontal error [m]'\nplot ");
     for (v = 0; v < r->nvar; v++) {
-        fprintf(p.gp, "%s'-' w l lw 2 t 'RMS error, %s', '-' w l dt 2 t 'predicted sd, %s'", v ? ", " : "",
-                r->var[v].name, r->var[v].name);
+        /* a variant's error and predicted sd in one colour */
+        fprintf(p.gp, "%s'-' w l lw 2 lc %d t 'RMS error, %s', '-' w l dt 2 lc %d t 'predicted sd, %s'",
+                v ? ", " : "", v + 1, r->var[v].name, v + 1, r->var[v].name);
     }
     fprintf(p.gp, "\n");
     for (v = 0; v < r->nvar; v++) {
@@ -406,7 +410,7 @@ static int write_plot(const char *png, const hx_mc_result_t *r)
         fprintf(p.gp, "set ylabel 'position NEES (d = 3)'\nset logscale y\nset format y '%%g'\n");
         fprintf(p.gp, "plot %g w l lc rgb 'gray' t '95%% band, %d runs', %g w l lc rgb 'gray' notitle", lo, r->runs, hi);
         for (v = 0; v < r->nvar; v++) {
-            fprintf(p.gp, ", '-' w l lw 2 t 'average NEES, %s'", r->var[v].name);
+            fprintf(p.gp, ", '-' w l lw 2 lc %d t 'average NEES, %s'", v + 1, r->var[v].name);
         }
         fprintf(p.gp, "\n");
         for (v = 0; v < r->nvar; v++) {
@@ -607,7 +611,7 @@ int hx_cmd_montecarlo(int argc, char **argv)
             hx_error("montecarlo", "%s: cannot write (%s)", csv, strerror(errno));
             status = HX_EXIT_IO;
         }
-        if (png != NULL && write_plot(png, &res) != 0) {
+        if (png != NULL && write_plot(png, &res, su.motion_name, su.profile_name) != 0) {
             status = HX_EXIT_IO;
         }
         hx_mc_result_free(&res);

@@ -64,6 +64,19 @@ for o in json csv plot; do
     expect_err "no/dir/x.$o" "unwritable --$o is named"
 done
 
+# the plot names the motion, the profile and the runs, and draws a variant's
+# error and predicted sd in one colour (a stand-in gnuplot keeps the script)
+mkdir -p "$T/fakegp"
+printf '#!/bin/sh\ncat >"$GP_SCRIPT"\nout=$(sed -n "s/^set output '"'"'\\(.*\\)'"'"'$/\\1/p" "$GP_SCRIPT" | head -n 1)\n[ -n "$out" ] && : >"$out"\nexit 0\n' >"$T/fakegp/gnuplot"
+chmod +x "$T/fakegp/gnuplot"
+PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp.txt" "$H" montecarlo --motion "stand:5,walk:3" --seeds 2 --bias-model both \
+    --profile mtx --quiet --plot "$T/mc.png" >/dev/null 2>&1
+if grep -q "title 'montecarlo: motion stand:5,walk:3, profile mtx, 2 runs'" "$T/gp.txt" &&
+    grep -q "lc 1 t 'RMS error, ar1', '-' w l dt 2 lc 1 t 'predicted sd, ar1'" "$T/gp.txt" &&
+    grep -q "lc 2 t 'RMS error, off', '-' w l dt 2 lc 2 t 'predicted sd, off'" "$T/gp.txt"; then
+    pass "montecarlo plot: a title, and a colour per variant"
+else fail "montecarlo plot script: $(grep -E 'title|RMS' "$T/gp.txt" | head -3)"; fi
+
 # Acceptance: a simulated closed-loop walk replayed through `harness replay`
 # closes to within the filter's predicted uncertainty (3 sigma of the
 # horizontal position at the end). The check means something only when the
