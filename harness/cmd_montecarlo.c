@@ -492,10 +492,10 @@ typedef struct {
     hx_progress_t prog;
 } prog_ctx_t;
 
-static void on_progress(void *ctx, int done, int total)
+static void on_progress(void *ctx, double done, int total)
 {
     (void)total;
-    hx_progress_update(&((prog_ctx_t *)ctx)->prog, (double)done);
+    hx_progress_update(&((prog_ctx_t *)ctx)->prog, done);
 }
 
 int hx_cmd_montecarlo(int argc, char **argv)

@@ -155,6 +155,10 @@ typedef struct {
     int n;
 } mc_acc_t;
 
+/* The share of a run's time its simulation takes, for the progress (the
+ * rest is the variants' replays; about a fifth with one variant). */
+#define MC_SIM_SHARE 0.2
+
 int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_result_t *res,
               hx_mc_progress_fn progress, void *progress_ctx, char *err, size_t err_size)
 {
@@ -214,6 +218,9 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
             }
             goto out;
         }
+        if (progress != NULL) {
+            progress(progress_ctx, r + MC_SIM_SHARE, cfg->runs);
+        }
         if (r == 0) {
             res->distance_m = buf.t[buf.n - 1].odo;
             for (b = 0; b < nbins; b++) {
@@ -250,6 +257,11 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
                 goto out;
             }
             for (i = 0; i <= buf.n; i++) {
+                if (progress != NULL && (i & 4095u) == 4095u) {
+                    progress(progress_ctx,
+                             r + MC_SIM_SHARE + (1.0 - MC_SIM_SHARE) * (v + (double)i / (double)(buf.n + 1)) / nvar,
+                             cfg->runs);
+                }
                 if (i < buf.n) {
                     for (k = 0; k < buf.t[i].count; k++) {
                         if (nav->push(nav->ctx, &buf.t[i].meas) != 0) {

@@ -106,8 +106,10 @@ typedef struct {
     double bin_s;          /**< bin width of the growth curves, s (default 1) */
 } hx_mc_config_t;
 
-/** Progress callback (runs done, total). */
-typedef void (*hx_mc_progress_fn)(void *ctx, int done, int total);
+/** Progress callback: runs done, with the fraction of the run under way
+ *  (its simulation, then each variant's replay, reported every 4,096
+ *  samples: a single long run shows progress too), and the total. */
+typedef void (*hx_mc_progress_fn)(void *ctx, double done, int total);
 
 /**
  * Run the Monte Carlo.

@@ -275,6 +275,63 @@ static void test_band(void **state)
     FNAV_ASSERT_CLOSE(hi, 3.72, 0.01, 0.0);
 }
 
+/* Progress within a run: its simulation, then each variant's replay every
+ * 4,096 samples, increasing, below the next whole run (a review,
+ * 2026-11-28: one long run reported nothing until it ended). */
+typedef struct {
+    int calls, within, order_ok;
+    double last;
+} prog_rec_t;
+
+static void rec_progress(void *ctx, double done, int total)
+{
+    prog_rec_t *p = (prog_rec_t *)ctx;
+    p->order_ok = p->order_ok && done >= p->last && done <= (double)total;
+    p->within += done > 0.0 && done < 1.0;
+    p->last = done;
+    p->calls++;
+}
+
+static void test_progress_within_run(void **state)
+{
+    char err[256];
+    hx_motion_config_t mc = hx_motion_config_default();
+    hx_motion_t *m;
+    hx_mc_config_t cfg;
+    hx_mc_result_t res;
+    oracle_t o;
+    hx_mc_nav_t navs[2];
+    prog_rec_t pr = { 0, 0, 1, 0.0 };
+    (void)state;
+    m = hx_motion_create(&mc, "stand:2,walk:200:90,stand:1", 0.0, err, sizeof err);
+    assert_non_null(m);
+    memset(&o, 0, sizeof o);
+    o.m = m;
+    o.scale = 1.0;
+    navs[0] = make_nav("a", &o);
+    navs[1] = make_nav("b", &o);
+    memset(&cfg, 0, sizeof cfg);
+    cfg.sim.motion = m;
+    cfg.sim.err = fnav_imuerr_config_default;
+    cfg.sim.err.rate_hz = (fnav_real_t)50.0;
+    cfg.sim.err.oversample = 1u;
+    cfg.sim.err.seed = 5u;
+    cfg.sim.decim = HX_DECIM_FIR;
+    cfg.runs = 1;
+    cfg.bin_s = 1.0;
+    assert_int_equal(hx_mc_run(&cfg, navs, 2, &res, rec_progress, &pr, err, sizeof err), 0);
+    assert_true(pr.order_ok);
+    {
+        /* the simulation, then one report per 4,096 samples per variant */
+        const int per_var = (int)((hx_sim_ticks(&cfg.sim) + 1u) / 4096u);
+        assert_true(per_var >= 1);
+        assert_int_equal(pr.within, 1 + 2 * per_var);
+    }
+    assert_true(pr.last == 1.0);
+    hx_mc_result_free(&res);
+    hx_motion_free(m);
+}
+
 static void test_bad_config(void **state)
 {
     hx_mc_config_t cfg;
@@ -297,6 +354,7 @@ int main(void)
         cmocka_unit_test(test_filter_frame),
         cmocka_unit_test(test_drops_and_duplicates),
         cmocka_unit_test(test_bad_config),
+        cmocka_unit_test(test_progress_within_run),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
