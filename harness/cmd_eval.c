@@ -55,6 +55,7 @@ typedef struct {
     char plot_dir[600];   /* where they go */
     char plot_link[600];  /* the same as results.md links it */
     hx_evplot_set_t fig;  /* the walks of the section being written */
+    int ipol_fig;         /* eval-ipol.png was drawn (linked after the section's summary) */
 } ev_t;
 
 /* calloc that ends eval on exhaustion (the lists grow with the data). */
@@ -1238,6 +1239,17 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             hx_log_free(&log);
         }
     }
+    if (write && ev->plots && (fo_e.n > 0 || fs_e.n > 0)) {
+        char png[700];
+        snprintf(png, sizeof png, "%s/eval-ipol.png", ev->plot_dir);
+        if (hx_evplot_hist2("eval", png, "ipol_gait_xsens: gait-event timing error, detector - experts",
+                            "error (samples at 100 Hz; the ends gather beyond +-10)", fo_e.v, fo_e.n,
+                            "foot-off (FO)", fs_e.v, fs_e.n, "foot-strike (FS)", 10) == 0) {
+            ev->ipol_fig = 1;
+        } else {
+            hx_warn("eval", "figure %s not drawn (the error above); results.md goes on without it", png);
+        }
+    }
     out->n_fo = fo_a.n;
     out->n_fs = fs_a.n;
     out->fo_bias = hx_median(fo_e.v, fo_e.n);
@@ -1765,6 +1777,11 @@ int hx_cmd_eval(int argc, char **argv)
                 met(ip.missed == 0 && ip.spurious == 0), ip.both_feet, ip.strict_missed, ip.strict_spurious,
                 ip.fo_med, ip.fo_bias, ip.fo_p90, ip.fs_med, ip.fs_bias, ip.fs_p90,
                 met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
+    }
+    if (ev.ipol_fig) {
+        fprintf(ev.md, "![ipol_gait_xsens: gait-event timing error](%s/eval-ipol.png)\n\nEvery matched event's "
+                       "signed error (detector minus experts), foot-off and foot-strike, in samples at 100 Hz.\n\n",
+                ev.plot_link);
     }
     unread_files(&ev, "ipol_gait_xsens", k_ipol_files, 3);
     ev.main_failures = ev.failures;

@@ -247,6 +247,48 @@ int hx_evplot_strides(const hx_evplot_set_t *s, const char *cmd, const char *png
     return hx_plot_close(&p, cmd);
 }
 
+/* Counts of the rounded values of v in -clip..clip (the ends gather the
+ * values beyond). */
+static void counts(const double *v, int n, int clip, int *c)
+{
+    int i;
+    for (i = 0; i <= 2 * clip; i++) {
+        c[i] = 0;
+    }
+    for (i = 0; i < n; i++) {
+        double x = v[i] < -clip ? -clip : (v[i] > clip ? clip : v[i]);
+        c[(int)lround(x) + clip]++;
+    }
+}
+
+int hx_evplot_hist2(const char *cmd, const char *png, const char *title, const char *xlabel, const double *a,
+                    int na, const char *la, const double *b, int nb, const char *lb, int clip)
+{
+    hx_plot_t p;
+    char q[256];
+    int c[2 * 64 + 1], k, h;
+    const double *v[2] = { a, b };
+    const int nv[2] = { na, nb };
+    const char *lab[2] = { la, lb };
+    if (clip < 1 || clip > 64 || hx_plot_open(&p, cmd, png, 1100, 420) != 0) {
+        return -1;
+    }
+    fprintf(p.gp, "set multiplot layout 1,2 title '%s'\n", hx_gp_str(q, sizeof q, title));
+    fprintf(p.gp, "set style fill solid 0.6\nset boxwidth 0.8\nunset key\nset ylabel 'count'\n");
+    fprintf(p.gp, "set xrange [%d:%d]\n", -clip - 1, clip + 1);
+    for (h = 0; h < 2; h++) {
+        fprintf(p.gp, "set title '%s (%d)'\nset xlabel '%s'\n", hx_gp_str(q, sizeof q, lab[h]), nv[h], xlabel);
+        fprintf(p.gp, "plot '-' with boxes lc rgb 'steelblue'\n");
+        counts(v[h], nv[h], clip, c);
+        for (k = 0; k <= 2 * clip; k++) {
+            fprintf(p.gp, "%d %d\n", k - clip, c[k]);
+        }
+        fprintf(p.gp, "e\n");
+    }
+    fprintf(p.gp, "unset multiplot\n");
+    return hx_plot_close(&p, cmd);
+}
+
 void hx_evplot_free(hx_evplot_set_t *s)
 {
     int i;

@@ -57,6 +57,12 @@ int hx_evplot_paths(const hx_evplot_set_t *s, const char *cmd, const char *png, 
  *  stride and the truth. 0, or -1 with the error printed. */
 int hx_evplot_strides(const hx_evplot_set_t *s, const char *cmd, const char *png, const char *title);
 
+/** Draw two histograms of integer errors side by side (counts per value,
+ *  values beyond +-clip gathered at the ends): e.g. the gait events'
+ *  timing errors in samples. 0, or -1 with the error printed. */
+int hx_evplot_hist2(const char *cmd, const char *png, const char *title, const char *xlabel, const double *a,
+                    int na, const char *la, const double *b, int nb, const char *lb, int clip);
+
 /** Free the set (it can be filled again). */
 void hx_evplot_free(hx_evplot_set_t *s);
 

@@ -348,10 +348,10 @@ if [ -n "$D" ]; then
     # the figures: img/ beside results.md, each linked from it, a PNG
     # (gnuplot is a dependency: scripts/bootstrap.sh)
     ok=1
-    for f in gx2 xio other footprints vicon; do
+    for f in gx2 xio other footprints vicon ipol; do
         if ! grep -q "^!\[.*\](img/eval-$f.png)" "$T/results.md" || ! head -c 8 "$T/img/eval-$f.png" | grep -q PNG; then ok=0; echo "  figure $f"; fi
     done
-    if [ $ok -eq 1 ]; then pass "eval: five figures in img/ beside results.md, linked"; else fail "eval figures"; fi
+    if [ $ok -eq 1 ]; then pass "eval: six figures in img/ beside results.md, linked"; else fail "eval figures"; fi
     mkdir -p "$T/figs/md"
     expect_exit 0 "eval --plots DIR" "$H" eval --no-experiments --data "$D" --out "$T/figs/md/r.md" --plots "$T/figs/p"
     if grep -q "(../p/eval-gx2.png)" "$T/figs/md/r.md" && [ -f "$T/figs/p/eval-vicon.png" ] && [ ! -d "$T/figs/md/img" ]; then
