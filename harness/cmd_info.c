@@ -31,6 +31,7 @@ static int cmp_i64(const void *a, const void *b)
 
 typedef struct {
     double rate_hz, dt_med_s, dt_min_s, dt_max_s, duration_s;
+    double rate_chg_at_s, rate_chg_hz, rate_off; /* hx_rate_changes */
     long gaps, dups, drops, backwards;
     double max_gap_s;
     long sat[6];
@@ -120,6 +121,8 @@ static void analyse(const hx_log_t *log, info_t *in)
         }
     }
     in->duration_s = n > 0 ? 1e-9 * (double)(log->t_ns[n - 1] - log->t_ns[0]) : 0.0;
+    in->rate_off = hx_rate_changes(log->t_ns, n, sizeof log->t_ns[0], in->rate_hz, &in->rate_chg_at_s,
+                                   &in->rate_chg_hz);
     for (c = 0; c < 6; c++) {
         in->sat[c] = saturation(log, c, &in->peak[c]);
     }
@@ -196,6 +199,14 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     cJSON_AddNumberToObject(j, "max_gap_s", in->max_gap_s);
     cJSON_AddNumberToObject(j, "duplicates", (double)in->dups);
     cJSON_AddNumberToObject(j, "counter_drops", (double)in->drops);
+    if (in->rate_off > 0.0) {
+        cJSON *chg = cJSON_AddObjectToObject(j, "rate_change");
+        cJSON_AddNumberToObject(chg, "at_s", in->rate_chg_at_s);
+        cJSON_AddNumberToObject(chg, "rate_hz", in->rate_chg_hz);
+        cJSON_AddNumberToObject(chg, "off_fraction", in->rate_off);
+    } else {
+        cJSON_AddNullToObject(j, "rate_change");
+    }
     arr = cJSON_AddObjectToObject(j, "saturated_samples");
     for (c = 0; c < 6; c++) {
         cJSON_AddNumberToObject(arr, ch[c], (double)in->sat[c]);
@@ -261,6 +272,11 @@ int hx_cmd_info(int argc, char **argv)
            1e3 * in.dt_max_s);
     printf("gaps        %ld (> 1.5 intervals; longest %.1f ms)\n", in.gaps, 1e3 * in.max_gap_s);
     printf("duplicates  %ld (time stamp repeated, dt = 0)\n", in.dups);
+    if (in.rate_off > 0.0) {
+        printf("rate change %.1f Hz from %.1f s, %.0f %% of the log off %.1f Hz (replay's detector keeps the first "
+               "rate: docs/navigation.md, \"Timing\")\n",
+               in.rate_chg_hz, in.rate_chg_at_s, 100.0 * in.rate_off, in.rate_hz);
+    }
     if (log.meta.has_seq) {
         printf("drops       %ld (missing sensor counter values)\n", in.drops);
     }

@@ -1319,6 +1319,59 @@ static int cmp_i64(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+double hx_rate_changes(const int64_t *t_ns, size_t n, size_t stride, double rate_hz, double *at_s, double *rate_off)
+{
+#define STAMP(i) (*(const int64_t *)(const void *)((const char *)t_ns + (i) * stride))
+    int64_t d[HX_RATE_BLOCK], q = 0;
+    size_t i, m = 0, b0 = 0;
+    double off_s = 0.0, dur;
+    *at_s = *rate_off = (double)NAN;
+    if (!(rate_hz > 0.0) || n < 2) {
+        return 0.0;
+    }
+    dur = 1e-9 * (double)(STAMP(n - 1) - STAMP(0));
+    if (!(dur > 0.0)) {
+        return 0.0;
+    }
+    for (i = 1; i <= n; i++) {
+        if (i < n) {
+            const int64_t dt = STAMP(i) - STAMP(i - 1);
+            if (dt > 0) {
+                int64_t x = dt, y = q;
+                while (y != 0) { /* the stamps' resolution: gcd of the intervals */
+                    const int64_t r = x % y;
+                    x = y;
+                    y = r;
+                }
+                q = x;
+                d[m++] = dt;
+            }
+        }
+        if (m == HX_RATE_BLOCK || (i == n && 2 * m >= HX_RATE_BLOCK)) {
+            double med, rate;
+            qsort(d, m, sizeof d[0], cmp_i64);
+            med = (double)d[m / 2];
+            rate = 1e9 / med;
+            /* off by more than the tolerance, and by a resolution of the
+             * stamps or more (a 398 Hz log stamped to the millisecond reads
+             * 2 and 3 ms) */
+            if (fabs(rate / rate_hz - 1.0) > HX_RATE_TOL && fabs(med - 1e9 / rate_hz) >= (double)q) {
+                const size_t b1 = i < n ? i : n - 1;
+                if (!isfinite(*at_s)) {
+                    *at_s = 1e-9 * (double)(STAMP(b0) - STAMP(0));
+                    *rate_off = rate;
+                }
+                off_s += 1e-9 * (double)(STAMP(b1) - STAMP(b0));
+            }
+            m = 0;
+            q = 0;
+            b0 = i < n ? i : b0;
+        }
+    }
+    return off_s / dur;
+#undef STAMP
+}
+
 double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)
 {
     enum { K = 16 };

@@ -144,6 +144,29 @@ typedef struct {
  *  increase. *coarse (may be NULL) is set to 1 when the stamps were coarse. */
 double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse);
 
+/** The rate along a log is judged in blocks of this many positive
+ *  intervals; a block whose rate is off the expected one by more than
+ *  HX_RATE_TOL is a rate change (docs/navigation.md, "Timing"). */
+#define HX_RATE_BLOCK 200
+#define HX_RATE_TOL 0.2
+
+/**
+ * Where the sample rate of a log leaves rate_hz: each block of
+ * HX_RATE_BLOCK positive intervals (a shorter last block when it holds at
+ * least half as many) gives a rate from its median interval (jitter, time
+ * jumps and lost samples up to half of the block leave it alone; more is
+ * a lower rate in effect); a block is off when its rate is off by more than
+ * HX_RATE_TOL and its median interval by a resolution of the stamps or
+ * more (the gcd of its intervals: a 398 Hz log stamped to the millisecond
+ * reads 2 and 3 ms). The stamps are read at t_ns, t_ns + stride bytes, ...
+ * (n of them).
+ * @param at_s      the first block off by more than HX_RATE_TOL: its start,
+ *                  s after the first stamp (NaN: none)
+ * @param rate_off  that block's rate, Hz (NaN: none)
+ * @return the share of the duration in such blocks (0: the rate holds)
+ */
+double hx_rate_changes(const int64_t *t_ns, size_t n, size_t stride, double rate_hz, double *at_s, double *rate_off);
+
 /** Read a whole log. Returns 0 when every sample was read, 1 when an
  *  error stopped reading after some samples (log->n of them are valid and
  *  log->error says why), -1 when nothing could be read (err filled). */

@@ -764,44 +764,11 @@ size_t hx_nav_stance_mids(const hx_traj_t *t, size_t *idx, size_t max)
     return n;
 }
 
-/* The rate along the log, block by block of HX_NAV_RATE_BLOCK positive
- * intervals (a shorter last block is judged when it holds at least half as
- * many), against the detector's: the first block off by more than
- * HX_NAV_RATE_TOL, its rate, and the share of the log in such blocks. */
+/* The rate along the log against the detector's (hx_rate_changes). */
 static void rate_check(const hx_traj_t *t, hx_nav_summary_t *s)
 {
-    int64_t d[HX_NAV_RATE_BLOCK];
-    size_t i, m = 0, b0 = 0;
-    double off_s = 0.0;
-    s->rate_change_at_s = s->rate_change_hz = (double)NAN;
-    s->rate_off_fraction = 0.0;
-    if (!(t->rate_hz > 0.0) || t->n < 2 || s->duration_s <= 0.0) {
-        return;
-    }
-    for (i = 1; i <= t->n; i++) {
-        if (i < t->n) {
-            const int64_t dt = t->f[i].t_ns - t->f[i - 1].t_ns;
-            if (dt > 0) {
-                d[m++] = dt;
-            }
-        }
-        if (m == HX_NAV_RATE_BLOCK || (i == t->n && 2 * m >= HX_NAV_RATE_BLOCK)) {
-            double rate;
-            qsort(d, m, sizeof d[0], cmp_i64);
-            rate = 1e9 / (double)d[m / 2];
-            if (fabs(rate / t->rate_hz - 1.0) > HX_NAV_RATE_TOL) {
-                const size_t b1 = i < t->n ? i : t->n - 1;
-                if (!isfinite(s->rate_change_at_s)) {
-                    s->rate_change_at_s = 1e-9 * (double)(t->f[b0].t_ns - t->f[0].t_ns);
-                    s->rate_change_hz = rate;
-                }
-                off_s += 1e-9 * (double)(t->f[b1].t_ns - t->f[b0].t_ns);
-            }
-            m = 0;
-            b0 = i < t->n ? i : b0;
-        }
-    }
-    s->rate_off_fraction = off_s / s->duration_s;
+    s->rate_off_fraction = hx_rate_changes(t->n > 0 ? &t->f[0].t_ns : NULL, t->n, sizeof t->f[0], t->rate_hz,
+                                           &s->rate_change_at_s, &s->rate_change_hz);
 }
 
 void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)

@@ -150,19 +150,12 @@ typedef struct {
     double longest_stand_s;   /**< longest stance between two motions after the alignment, s (0: none) */
     double longest_stand_at_s; /**< its start, s after the first frame (NaN: none) */
     double rate_change_at_s;  /**< first block of intervals whose rate is off the detector's, s after the first frame (NaN: none) */
-    double rate_change_hz;    /**< that block's rate (median interval), Hz (NaN: none) */
+    double rate_change_hz;    /**< that block's rate, Hz (NaN: none) */
     double rate_off_fraction; /**< share of the log's duration in such blocks (0: none) */
 } hx_nav_summary_t;
 
-/** The sample rate along a log against the detector's, which takes it once
- *  from the first intervals (docs/navigation.md, "Timing"): the positive
- *  intervals in blocks of this many, each block's rate from its median
- *  interval (dropped samples and jitter leave a median alone). */
-#define HX_NAV_RATE_BLOCK 200
-
-/** A block whose rate is off the detector's by more than this fraction is
- *  a rate change (summary note, JSON `rate_change`). */
-#define HX_NAV_RATE_TOL 0.2
+/* (the sample rate along the log against the detector's, which takes it
+ * once from the first intervals: hx_rate_changes, hx_log.h) */
 
 /** A stand between strides longer than this is noted in the summary when
  *  the ZARU is off: with ZUPTs only the heading drifts with the gyro bias

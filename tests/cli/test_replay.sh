@@ -22,6 +22,8 @@ expect_err "must be ar1 or off" "--bias-model error names the choices"
 awk -F, 'NR == 1 { print; next } { $1 = sprintf("%.3f", $1); print }' OFS=, "$T/walk_full.csv" > "$T/walk_ms.csv"
 expect_exit 0 "a walk stamped to the millisecond" "$H" replay "$T/walk_ms.csv"
 expect_out_re "^rate +398\.[0-9] Hz" "the detector's rate from coarse stamps"
+if grep -q "sample rate changes" "$T/out"; then fail "coarse stamps (2 and 3 ms) taken for a rate change"; else
+    pass "coarse stamps are no rate change"; fi
 expect_exit 2 "bad --detector" "$H" replay vectors/walk.bin --detector psychic
 expect_exit 2 "unknown --param" "$H" replay vectors/walk.bin --param nope=1
 expect_err "unknown key 'nope'" "--param error names the key"
@@ -509,6 +511,10 @@ if grep -q "note .*sample rate changes: 199\.[0-9] Hz from 10\.[0-9] s, [0-9]* %
     && /usr/bin/env python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['rate_change']; sys.exit(0 if 9.9 < r['at_s'] < 10.9 and 195 < r['rate_hz'] < 205 and 0.7 < r['off_fraction'] < 0.8 else 1)" "$T/rate2.json"; then
     pass "a rate change part way is noted, rate_change in the JSON"
 else fail "rate change: $(grep note "$T/rate2.out"; grep -A3 '"rate_change"' "$T/rate2.json")"; fi
+"$H" info "$T/walk_rate2.csv" --json "$T/ri.json" >"$T/ri.out" 2>&1
+if grep -q "^rate change 199\.[0-9] Hz from 10\.[0-9] s, 7[0-9] % of the log off 398\.[0-9] Hz" "$T/ri.out" &&
+    /usr/bin/env python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['rate_change']; sys.exit(0 if 195 < r['rate_hz'] < 205 else 1)" "$T/ri.json"; then
+    pass "info names the rate change too"; else fail "info rate change: $(grep rate "$T/ri.out")"; fi
 "$H" replay vectors/walk.bin --json "$T/w0.json" >/dev/null 2>&1
 if grep -q '"rate_change":[[:space:]]*null' "$T/w0.json"; then
     pass "a steady rate: rate_change null"
