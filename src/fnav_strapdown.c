@@ -173,6 +173,7 @@ fnav_status_t fnav_strapdown_step(const fnav_strapdown_config_t *cfg, fnav_strap
                                   fnav_real_t dt_s)
 {
     fnav_strapdown_incr_t inc;
+    fnav_strapdown_state_t y;
     FNAV_ASSERT(cfg != NULL && x != NULL);
     if (!fnav_vec3_isfinite(gyro_rps) || !fnav_vec3_isfinite(accel_mps2) || !fnav_isfinite(dt_s)) {
         return FNAV_E_NANINF;
@@ -181,7 +182,15 @@ fnav_status_t fnav_strapdown_step(const fnav_strapdown_config_t *cfg, fnav_strap
         return FNAV_E_TIME;
     }
     fnav_strapdown_increments(cfg, hist, gyro_rps, accel_mps2, dt_s, &inc);
-    fnav_strapdown_propagate(cfg, x, &inc, fnav_vec3_zero(), fnav_vec3_zero());
+    y = *x;
+    fnav_strapdown_propagate(cfg, &y, &inc, fnav_vec3_zero(), fnav_vec3_zero());
+    /* finite readings and dt can still overflow (dt of 1e30 s: a review,
+     * 2026-11-28, found FNAV_OK with an infinite state) */
+    if (!fnav_vec3_isfinite(y.vel_mps) || !fnav_vec3_isfinite(y.pos_m) ||
+        !fnav_isfinite(y.q_nb.q[0] + y.q_nb.q[1] + y.q_nb.q[2] + y.q_nb.q[3])) {
+        return FNAV_E_RANGE;
+    }
+    *x = y;
     if (hist != NULL) {
         fnav_strapdown_hist_push(hist, &inc);
     }

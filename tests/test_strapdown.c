@@ -387,7 +387,8 @@ static void test_quat_exp_large(void **state)
     }
 }
 
-/* NaN and negative dt are rejected and leave the state as it was. */
+/* NaN, negative dt and an overflowing step are rejected and leave the state
+ * as it was. */
 static void test_bad_input(void **state)
 {
     fnav_strapdown_state_t x = state_at(fnav_quat_identity());
@@ -405,6 +406,11 @@ static void test_bad_input(void **state)
     assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, fnav_vec3_zero(), fnav_vec3_zero(),
                                          FNAV_R(-0.01)),
                      FNAV_E_TIME);
+    /* finite readings and dt that overflow the state: refused, nothing
+     * changed (it returned FNAV_OK with an infinite state: a review) */
+    assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, fnav_vec3_zero(),
+                                         fnav_vec3(FNAV_R(1.0e3), FNAV_R(0.0), FNAV_R(0.0)), fnav_sqrt(FNAV_REAL_MAX)),
+                     FNAV_E_RANGE);
     assert_memory_equal(&x, &x0, sizeof x);
     assert_int_equal(h.valid, 0);
     /* dt = 0 is a valid no-op */
