@@ -207,13 +207,17 @@ start_link
 LD_PRELOAD=$SEAM "$H" live "$A" --print-every 0 --record "$T/rec_k.bin" --timeout 30 >/dev/null 2>"$T/live.err" &
 LIVE=$!
 wait_for 'grep -q "reading" "$T/live.err"' 200
-LD_PRELOAD=$SEAM timeout $LIMIT "$H" stream vectors/walk.bin "$B" --speed 4 >/dev/null 2>&1 &
+# (the sender is the harness itself, not a timeout around it, and is ended
+# with SIGKILL: a SIGTERM forwarded by timeout to an ASan build exiting
+# through LeakSanitizer once left both spinning, and the test waiting on
+# them, 2026-11-28; the cleanup trap kills it if the test dies first)
+LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 4 >/dev/null 2>&1 &
 STREAM=$!
 wait_for '[ -f "$T/rec_k.bin" ] && [ "$(records "$T/rec_k.bin")" -ge 300 ]' 300
 kill -9 "$LIVE" 2>/dev/null
 wait "$LIVE" 2>/dev/null
 LIVE=""
-kill "$STREAM" 2>/dev/null
+kill -9 "$STREAM" 2>/dev/null
 wait "$STREAM" 2>/dev/null
 STREAM=""
 timeout $LIMIT "$H" convert "$T/rec_k.bin" "$T/rec_k.csv" >/dev/null 2>"$T/err"
