@@ -71,6 +71,17 @@ json "$T/jt_ramp.json" "len($sel) == 1 and $sel[0][\"held_out_within_noise\"] is
     pass "jitter that grows: selected, refuted held out, partly explained" || fail "growing jitter: $(grep -E 'jitter|verdict' "$T/jt_ramp.out")"
 json "$T/jt_flat.json" "len($sel) == 1 and $sel[0][\"held_out_within_noise\"] is True and j[\"verdict\"][\"answer\"] == \"explained\" and abs($sel[0][\"params\"][\"stamp_s\"] / 20e-6 - 1) < 0.1" &&
     pass "steady jitter: explained, stamp_s within 10 %" || fail "steady jitter: $(grep -E 'jitter|verdict' "$T/jt_flat.out") $(cat "$T/pyerr")"
+# 500 samples dropped in one place in the held-out middle: the fit segment
+# has none, so the fitted rate is that of the ideal clock, and the held-out
+# count's z after fitting is the z before it (both Poisson, capped at 40);
+# it was 40 before and +2235.8 after, a normal approximation without the cap
+"$H" sim --motion stand:120 --rate 100 --profile mtx --seed 4 --out "$T/dr.csv" >/dev/null 2>&1 || fail "sim dropout base"
+awk 'NR < 5502 || NR > 6001' "$T/dr.csv" > "$T/dr5.csv"
+"$H" simgap "$T/dr5.csv" --seeds 6 --json "$T/dr5.json" > "$T/dr5.out" 2>&1
+sel='[e for e in j["timing"]["selected"] if e["effect"] == "dropout"]'
+json "$T/dr5.json" "len($sel) == 1 and $sel[0][\"params\"][\"prob\"] == 0 and $sel[0][\"z_held_out_before\"] == $sel[0][\"z_held_out_after\"] == 40 and $sel[0][\"held_out_within_noise\"] is False" &&
+    grep -q "dropped samples: 40.0 sigma above an ideal clock; held out after fitting: +40.0 sigma" "$T/dr5.out" &&
+    pass "drops in the held-out part only: the same z before and after a fit of rate 0" || fail "dropout z: $(grep -E 'dropped|verdict' "$T/dr5.out") $(cat "$T/pyerr")"
 
 # a walk with a 40 s stand: the navigation windows in which no stance
 # begins carry no first update; they are placeholders outside G, said so
