@@ -71,6 +71,16 @@ json "$T/jt_ramp.json" "len($sel) == 1 and $sel[0][\"held_out_within_noise\"] is
     pass "jitter that grows: selected, refuted held out, partly explained" || fail "growing jitter: $(grep -E 'jitter|verdict' "$T/jt_ramp.out")"
 json "$T/jt_flat.json" "len($sel) == 1 and $sel[0][\"held_out_within_noise\"] is True and j[\"verdict\"][\"answer\"] == \"explained\" and abs($sel[0][\"params\"][\"stamp_s\"] / 20e-6 - 1) < 0.1" &&
     pass "steady jitter: explained, stamp_s within 10 %" || fail "steady jitter: $(grep -E 'jitter|verdict' "$T/jt_flat.out") $(cat "$T/pyerr")"
+# an ideal 300 Hz clock whose stamps are written in milliseconds: every
+# interval is 3 or 4 ms (a third of them 4), spread sqrt(p (1 - p)) ms =
+# 0.471 ms with p = frac(3.333) — the rounding's, not jitter. Against the
+# average rounding res/sqrt(6) = 0.408 ms it was "jitter, 38.6 sigma" and
+# the verdict "explained: jitter (stamp_s 0.000167 s)" on a clean log
+"$H" sim --motion stand:120 --rate 300 --profile mtx --seed 4 --out "$T/ms.csv" >/dev/null 2>&1 || fail "sim 300 Hz"
+awk -F, 'BEGIN { OFS = "," } NR > 1 { $1 = sprintf("%.3f", $1) } { print }' "$T/ms.csv" > "$T/ms3.csv"
+"$H" simgap "$T/ms3.csv" --seeds 6 --json "$T/ms3.json" > "$T/ms3.out" 2>&1
+json "$T/ms3.json" 'j["timing"]["stamp_resolution_s"] == 0.001 and j["timing"]["selected"] == [] and not j["timing"]["significant"] and j["verdict"]["answer"] == "none"' &&
+    pass "stamps rounded to 1 ms at 300 Hz: no jitter" || fail "ms stamps at 300 Hz: $(grep -E 'jitter|verdict' "$T/ms3.out") $(cat "$T/pyerr")"
 # 500 samples dropped in one place in the held-out middle: the fit segment
 # has none, so the fitted rate is that of the ideal clock, and the held-out
 # count's z after fitting is the z before it (both Poisson, capped at 40);
