@@ -49,6 +49,27 @@ static void block(FILE *gp, const char *name, const sg_result_t *r, int ch, int 
     fprintf(gp, "EOD\n");
 }
 
+/* Points of domain dom on channel ch's whole log (a short log has no
+ * Welch band: at least 16 segments are needed). */
+static size_t n_points(const sg_result_t *r, int ch, int dom)
+{
+    const sg_plist_t *pl = &r->pl[ch][SG_FULL];
+    size_t j, n = 0;
+    for (j = 0; r->ch[ch].active && j < pl->n; j++) {
+        n += pl->p[j].dom == dom;
+    }
+    return n;
+}
+
+/* An empty panel with a title: gnuplot refuses a plot without a valid
+ * point (or a logarithmic axis without a range), and the png would not be
+ * written. */
+static void empty_panel(FILE *gp, const char *title)
+{
+    fprintf(gp, "set title '%s'\nunset logscale xy\nset xrange [0:1]\nset yrange [0:1]\n"
+                "plot -1 notitle\nset autoscale xy\n", title);
+}
+
 static int plot_domain(const sg_result_t *r, const char *dir, const char *cmd, int dom)
 {
     hx_plot_t p;
@@ -66,12 +87,14 @@ static int plot_domain(const sg_result_t *r, const char *dir, const char *cmd, i
     for (ch = 0; ch < SG_NCH; ch++) {
         char nm[16];
         snprintf(nm, sizeof nm, "d%d", ch);
-        if (!r->ch[ch].active) {
-            /* an empty panel (gnuplot refuses a plot without a valid point,
-             * and the png would not be written) */
-            fprintf(p.gp, "set title '%s: not analysed%s'\nunset logscale xy\nset xrange [0:1]\nset yrange [0:1]\n"
-                          "plot -1 notitle\nset autoscale xy\nset logscale xy\n",
-                    sg_channel_name(ch), r->constant[ch] ? " (one value over the whole log)" : "");
+        if (!r->ch[ch].active || n_points(r, ch, dom) == 0) {
+            char t[160];
+            snprintf(t, sizeof t, "%s: %s", sg_channel_name(ch),
+                     !r->ch[ch].active ? (r->constant[ch] ? "not analysed (one value over the whole log)"
+                                                          : "not analysed")
+                                       : (dom == SG_ALLAN ? "no Allan point" : "no Welch band (the log is too short)"));
+            empty_panel(p.gp, t);
+            fprintf(p.gp, "set logscale xy\n");
             continue;
         }
         block(p.gp, nm, r, ch, dom);
@@ -118,9 +141,22 @@ static void z_panel(FILE *gp, const sg_result_t *r, int dom, char tag, const cha
             zc = c->z_crit;
         }
     }
+    {
+        int any = 0;
+        for (ch = 0; ch < SG_NCH; ch++) {
+            any |= n_points(r, ch, dom) > 0;
+        }
+        if (!any) {
+            /* no point on any channel (no Welch band in a short log) */
+            empty_panel(gp, dom == SG_PSD    ? "PSD bands: none (the log is too short)"
+                            : dom == SG_TIME ? "time domain: none (the log is too short)"
+                                             : "Allan: none (the log is too short)");
+            return;
+        }
+    }
     fprintf(gp, "plot ");
     for (ch = 0; ch < SG_NCH; ch++) {
-        if (r->ch[ch].active) { /* a channel not analysed has no point (a warning from gnuplot) */
+        if (n_points(r, ch, dom) > 0) { /* a channel not analysed has no point (a warning from gnuplot) */
             fprintf(gp, "$%c%d using 1:2 with %s lc %d title '%s', ", tag, ch, style, ch + 1, sg_channel_name(ch));
         }
     }
@@ -139,7 +175,7 @@ static int plot_z(const sg_result_t *r, const char *dir, const char *cmd)
                   "critical |z|)'\nset logscale x\nset key outside right\nset ylabel 'z'\n");
     fprintf(p.gp, "set xlabel 'tau [s]'\nset title 'Allan'\n");
     z_panel(p.gp, r, SG_ALLAN, 'a', "linespoints pt 7 ps 0.5");
-    fprintf(p.gp, "set xlabel 'frequency [Hz]'\nset title 'PSD bands'\n");
+    fprintf(p.gp, "set logscale x\nset xlabel 'frequency [Hz]'\nset title 'PSD bands'\n");
     z_panel(p.gp, r, SG_PSD, 'p', "linespoints pt 7 ps 0.5");
     /* the time domain: per channel, the trend, curvature and steps points
      * of the whole log (one block), side by side */

@@ -37,6 +37,13 @@ grep -q "TOO SHORT" "$T/out" && pass "too short said in the summary" || fail "to
 expect_err "^harness simgap: error: .*short.csv: too short for a confident answer: .*decade" "too short said in one error line"
 json "$T/short.json" 'j["confident"] is False and j["verdict"]["answer"] == "too-short" and "decade" in j["too_short"]' &&
     pass "too short in the JSON" || fail "too short JSON: $(cat "$T/pyerr")"
+# ... and its plots are still written (Usage): 2 s hold no Welch band, and
+# the PSD panels without a point made gnuplot fail ("x range is invalid"),
+# exit 3 and no z.png
+expect_exit 1 "too short log with --plot" "$H" simgap "$T/short.csv" --quiet --seeds 6 --plot "$T/shortplot"
+[ -s "$T/shortplot/allan.png" ] && [ -s "$T/shortplot/psd.png" ] && [ -s "$T/shortplot/z.png" ] &&
+    ! grep -q "gnuplot\|invalid" "$T/err" && pass "too short: the three plots written, gnuplot quiet" ||
+    fail "too-short plots: $(ls "$T/shortplot"; grep -m3 "gnuplot\|invalid" "$T/err")"
 # a held-out part with no point to compare (0.3 s of a 3 s log): too short,
 # not a GSL abort on an undefined null distribution
 "$H" sim --motion stand:3 --rate 100 --profile mtx --seed 2 --out "$T/s3.csv" >/dev/null 2>&1 || fail "sim 3 s"
