@@ -555,6 +555,28 @@ static int mag_index(int id)
     return id == FNAV_EFFECT_JUMPS ? 1 : 0;
 }
 
+void sg_prune_zero(sg_chres_t *c)
+{
+    /* an effect accepted at one step can be refitted to nothing once later
+     * effects join (jumps at 0.00875 m/s^2, then 0 beside vibration and
+     * flicker: a review, 2026-11-28): it explains none of the final
+     * model's gap and is no answer */
+    int j, kept = 0;
+    for (j = 0; j < c->nsel; j++) {
+        const int m = sg_model_find(&c->final, c->sel_id[j]);
+        if (m >= 0 && c->final.e[m].p[mag_index(c->sel_id[j])] == 0.0) {
+            c->zero_id[c->nzero++] = c->sel_id[j];
+            continue;
+        }
+        c->sel_id[kept] = c->sel_id[j];
+        c->sel_expl[kept] = c->sel_expl[j];
+        c->sel_lo[kept] = c->sel_lo[j];
+        c->sel_hi[kept] = c->sel_hi[j];
+        kept++;
+    }
+    c->nsel = kept;
+}
+
 /* Which candidate effects have the evidence they need. */
 static int cand_eligible(int id, const sg_evidence_t *ev, double zc)
 {
@@ -941,6 +963,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             ccur[g] = bestcmp[g];
         }
     }
+    sg_prune_zero(c);
     c->within_noise = !ccur[SG_HOLD].significant;
     for (g = 0; g < SG_NSEG; g++) {
         c->cmp_final[g] = ccur[g];

@@ -569,6 +569,8 @@ typedef struct {
     int nsel;
     int sel_id[SG_MAX_STEPS];
     double sel_expl[SG_MAX_STEPS], sel_lo[SG_MAX_STEPS], sel_hi[SG_MAX_STEPS];
+    int nzero;                /**< effects accepted at a step whose magnitude the later refits set to 0 */
+    int zero_id[SG_MAX_STEPS]; /**< their ids (left out of the selection: the final model gives them nothing) */
     int within_noise;         /**< held-out gap of the final model within the null band */
     int gap_full;             /**< significant gap on the whole log with the baseline */
     int gap_hold;             /**< ... on the held-out segment */
@@ -577,6 +579,10 @@ typedef struct {
     sg_chmodel_t prof;        /**< the profile's white + AR(1) model of this channel (not fitted) */
     sg_cmp_t cmp_prof[SG_NSEG]; /**< profile model twins vs real (no parameter uncertainty: given) */
 } sg_chres_t;
+
+/** Leave out of a channel's selection the effects its final (refitted)
+ *  model gives a magnitude of exactly zero (into zero_id). */
+void sg_prune_zero(sg_chres_t *c);
 
 /** Timing-domain result. */
 typedef struct {

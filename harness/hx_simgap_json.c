@@ -204,6 +204,12 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
             cJSON_AddItemToArray(sel, so);
         }
     }
+    {
+        cJSON *zr = cJSON_AddArrayToObject(att, "refitted_to_zero");
+        for (i = 0; i < c->nzero; i++) {
+            cJSON_AddItemToArray(zr, cJSON_CreateString(fnav_imuerr_effect_info((fnav_effect_id_t)c->zero_id[i])->name));
+        }
+    }
     fm = cJSON_AddArrayToObject(att, "final_model");
     for (i = 0; i < c->final.n; i++) {
         cJSON_AddItemToArray(fm, effect_json(&c->final.e[i], ch));

@@ -242,6 +242,11 @@ static void print_static(FILE *f, const sg_result_t *r)
                 }
             }
         }
+        for (i = 0; i < c->nzero; i++) {
+            fprintf(f, "  %s: accepted at its step, then refitted to zero once the later effects joined: left out "
+                       "of the answer\n",
+                    fnav_imuerr_effect_info((fnav_effect_id_t)c->zero_id[i])->name);
+        }
         fprintf(f, "  -> %s\n", c->within_noise ? "remaining held-out gap within noise"
                                                  : "a significant held-out gap remains");
     }

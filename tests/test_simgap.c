@@ -898,6 +898,45 @@ static void test_jumps_rate_detection(void **state)
     assert_true(fabs((double)nfound / T - rate) / rate > 0.5);
 }
 
+/* An effect accepted at one step whose magnitude the later refits set to
+ * zero is left out of the answer (a review, 2026-11-28: "jumps (10 per
+ * hour, rms step 0 m/s^2) on ax (13 % of the held-out excess)"); the
+ * others keep their order and figures. */
+static void test_prune_zero(void **state)
+{
+    static sg_chres_t c;
+    sg_effect_t e;
+    (void)state;
+    memset(&c, 0, sizeof c);
+    memset(&e, 0, sizeof e);
+    e.id = FNAV_EFFECT_JUMPS;
+    e.p[0] = 10.0 / 3600.0; /* rate, per s */
+    e.p[1] = 0.0;           /* rms step: its magnitude */
+    assert_int_equal(sg_model_set(&c.final, &e), 0);
+    e.id = FNAV_EFFECT_VIBRATION;
+    e.p[0] = 0.00867; /* amplitude */
+    e.p[1] = 0.5661;
+    assert_int_equal(sg_model_set(&c.final, &e), 0);
+    e.id = FNAV_EFFECT_RAMP;
+    e.p[0] = -4.9e-7; /* a negative rate is a magnitude too */
+    e.p[1] = 0.0;
+    assert_int_equal(sg_model_set(&c.final, &e), 0);
+    c.nsel = 3;
+    c.sel_id[0] = FNAV_EFFECT_JUMPS;
+    c.sel_id[1] = FNAV_EFFECT_VIBRATION;
+    c.sel_id[2] = FNAV_EFFECT_RAMP;
+    c.sel_expl[0] = 0.13;
+    c.sel_expl[1] = 0.29;
+    c.sel_expl[2] = 0.04;
+    sg_prune_zero(&c);
+    assert_int_equal(c.nsel, 2);
+    assert_int_equal(c.sel_id[0], FNAV_EFFECT_VIBRATION);
+    assert_int_equal(c.sel_id[1], FNAV_EFFECT_RAMP);
+    assert_true(c.sel_expl[0] == 0.29 && c.sel_expl[1] == 0.04);
+    assert_int_equal(c.nzero, 1);
+    assert_int_equal(c.zero_id[0], FNAV_EFFECT_JUMPS);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -916,6 +955,7 @@ int main(void)
         cmocka_unit_test(test_rrw_ml_calibration),
         cmocka_unit_test(test_toeplitz_nll2),
         cmocka_unit_test(test_bm_fit),
+        cmocka_unit_test(test_prune_zero),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
