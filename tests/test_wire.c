@@ -367,7 +367,6 @@ static void test_roundtrip_and_sizes(void **state)
     assert_int_equal(fnav_wire_decode(&d, NULL, 1, &used, &f), FNAV_E_ARG);
 }
 
-/* A CRC-valid sample with a NaN is reported, not delivered. */
 /* A double build's value beyond the float range is sent as the largest
  * float of its sign (the cast itself would be undefined behaviour, C99
  * 6.3.1.5; a review, 2026-11-28); in range it is the value rounded to
@@ -397,6 +396,7 @@ static void test_beyond_float_range(void **state)
     assert_true(r.gyro_rps[2] == (fnav_real_t)1.5);
 }
 
+/* A CRC-valid sample with a NaN is reported, not delivered. */
 static void test_sample_nan(void **state)
 {
     uint8_t buf[64];
