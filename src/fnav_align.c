@@ -278,8 +278,8 @@ fnav_status_t fnav_align_finish(fnav_align_t *al)
     }
     /* the current period when long enough, else the quietest period of at
      * least short_still_s, the current one included (nothing is discarded
-     * when none qualifies; a current one without a gravity direction does
-     * not qualify) */
+     * when none qualifies; a current one off gravity, FNAV_ALIGN_GRAVITY_TOL,
+     * does not qualify) */
     if (((al->cur.n >= 2 && duration_s(&al->cur) >= al->cfg.min_still_s) || better_short(al, &al->cur)) &&
         complete(al) == FNAV_OK) {
         return FNAV_OK;

@@ -146,8 +146,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_align_push(fnav_align_t *al, const fnav_samp
  * short_still_s seen (the current one included), as fnav_align_push does
  * at the first motion.
  * @return FNAV_OK with the result (also when already done), FNAV_E_STATE
- *         when no period qualifies (a current period with a zero mean
- *         specific force does not), FNAV_E_ARG for NULL.
+ *         when no period qualifies (a current period whose mean |f| is off
+ *         gravity by more than FNAV_ALIGN_GRAVITY_TOL does not), FNAV_E_ARG
+ *         for NULL.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_finish(fnav_align_t *al);
 
