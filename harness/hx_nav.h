@@ -149,13 +149,10 @@ typedef struct {
     double before_align_s;    /**< frames before it the detector called motion (not navigated), s */
     double longest_stand_s;   /**< longest stance between two motions after the alignment, s (0: none) */
     double longest_stand_at_s; /**< its start, s after the first frame (NaN: none) */
-    double rate_change_at_s;  /**< first block of intervals whose rate is off the detector's, s after the first frame (NaN: none) */
+    double rate_change_at_s;  /**< first block of intervals whose rate is off the detector's (hx_rate_changes), s after the first frame (NaN: none) */
     double rate_change_hz;    /**< that block's rate, Hz (NaN: none) */
     double rate_off_fraction; /**< share of the log's duration in such blocks (0: none) */
 } hx_nav_summary_t;
-
-/* (the sample rate along the log against the detector's, which takes it
- * once from the first intervals: hx_rate_changes, hx_log.h) */
 
 /** A stand between strides longer than this is noted in the summary when
  *  the ZARU is off: with ZUPTs only the heading drifts with the gyro bias
