@@ -1020,6 +1020,44 @@ static void test_float_vs_double(void **state)
  * 0 of 400 frames aligned). Refused at init with a configured rate; with
  * an estimated one an interval is a jump only beyond 1.5 nominal intervals
  * too. */
+/* The stamps' range ends: -FNAV_T_NS_MAX and +FNAV_T_NS_MAX are both
+ * accepted, so their difference must fit int64_t (with 2^62 it was 2^63:
+ * signed overflow in the navigator, the detector and the alignment, and
+ * the jump read as a negative interval, neither counted nor seen; a
+ * review, 2026-11-28). The interval between them is one time jump of
+ * 2 FNAV_T_NS_MAX ns; one nanosecond beyond either end is refused. */
+static void test_stamp_range_ends(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_frame_t fr;
+    fnav_sample_t s;
+    int frames = 0;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    (void)state;
+    c.stance.rate_hz = FNAV_R(200.0); /* a gap is judged against the rate */
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    s = still(0);
+    s.t_ns = -FNAV_T_NS_MAX - 1;
+    assert_int_equal(fnav_nav_push(&nav, &s), FNAV_E_RANGE);
+    s.t_ns = -FNAV_T_NS_MAX; /* the two ends, one after the other */
+    assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+    s = still(1);
+    s.t_ns = FNAV_T_NS_MAX;
+    assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+    s = still(2);
+    s.t_ns = FNAV_T_NS_MAX;
+    s.t_ns++;
+    assert_int_equal(fnav_nav_push(&nav, &s), FNAV_E_RANGE);
+    fnav_nav_finish(&nav);
+    while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+        frames++;
+    }
+    assert_int_equal(frames, 2);
+    assert_int_equal(nav.stats.time_jumps, 1);
+    assert_true((double)nav.stats.max_gap_seen_s > 9.2e9); /* 2 (2^62 - 1) ns = 9.22e9 s */
+    assert_int_equal(nav.stats.range_inputs, 2);
+}
+
 static void test_max_gap_below_interval(void **state)
 {
     static fnav_nav_t nav;
@@ -1067,6 +1105,7 @@ int main(void)
         cmocka_unit_test(test_run_port),
         cmocka_unit_test(test_zaru_after),
         cmocka_unit_test(test_max_gap_below_interval),
+        cmocka_unit_test(test_stamp_range_ends),
         cmocka_unit_test(test_settle_onsets),
         cmocka_unit_test(test_settle_not_at_alignment),
         cmocka_unit_test(test_realign),

@@ -147,9 +147,10 @@ const char *fnav_status_str(fnav_status_t status);
 /** fnav_sample_t.flags: seq is a counter from the sensor (drops visible). */
 #define FNAV_SAMPLE_HAS_SEQ 0x2u
 
-/** Largest |t_ns| a sample may carry: 2^62 ns (146 years either side of
- *  the epoch), so that the difference of any two stamps fits int64_t. */
-#define FNAV_T_NS_MAX ((int64_t)1 << 62)
+/** Largest |t_ns| a sample may carry: 2^62 - 1 ns (146 years either side
+ *  of the epoch), so that the difference of any two stamps fits int64_t
+ *  (2 (2^62 - 1) < 2^63; with 2^62 itself, -2^62 then +2^62 overflowed). */
+#define FNAV_T_NS_MAX (((int64_t)1 << 62) - 1)
 
 /** One IMU sample in the sensor (body) frame b, SI units. */
 typedef struct {
