@@ -230,6 +230,13 @@ static void start_filter(fnav_nav_t *nav)
                 fnav_ukf_set_cov(&nav->ukf, FNAV_UKF_P + i, FNAV_UKF_P + i, v);
             }
         }
+        /* after a reset the heading keeps its variance too: the walk went
+         * on with it (a renewal holds none: before the first stride the
+         * heading is the frame's own definition, nothing was navigated) */
+        if (fnav_isfinite(nav->hold_yaw_var_rad2) &&
+            nav->hold_yaw_var_rad2 > fnav_ukf_cov(&nav->ukf, FNAV_UKF_A + 2, FNAV_UKF_A + 2)) {
+            fnav_ukf_set_cov(&nav->ukf, FNAV_UKF_A + 2, FNAV_UKF_A + 2, nav->hold_yaw_var_rad2);
+        }
         nav->have_hold = 0;
     }
     nav->undone_run = 0;
@@ -241,8 +248,8 @@ static void start_filter(fnav_nav_t *nav)
 
 /* Hold the last frame's position, heading and position variance for the
  * next start_filter (a reset, a renewed alignment), if that frame is a
- * good one. */
-static void hold_last_frame(fnav_nav_t *nav)
+ * good one; with keep_yaw_var (a reset) the heading's variance as well. */
+static void hold_last_frame(fnav_nav_t *nav, int keep_yaw_var)
 {
     const fnav_nav_frame_t *g = &nav->last;
     int good = (g->flags & FNAV_FRAME_ALIGNED) != 0u;
@@ -261,6 +268,7 @@ static void hold_last_frame(fnav_nav_t *nav)
         for (i = 0; i < 3; i++) {
             nav->hold_pos_var_m2[i] = g->p_diag[FNAV_UKF_P + i];
         }
+        nav->hold_yaw_var_rad2 = keep_yaw_var ? g->p_diag[2] : -FNAV_R(1.0); /* frame order: attitude first */
         nav->have_hold = 1;
     }
 }
@@ -279,7 +287,7 @@ static int renew_alignment(fnav_nav_t *nav, const fnav_stance_out_t *o)
                           &nav->align.result)) {
         return 0;
     }
-    hold_last_frame(nav); /* the state before this sample */
+    hold_last_frame(nav, 0); /* the state before this sample */
     start_filter(nav);
     nav->stats.realigned++;
     return 1;
@@ -291,7 +299,7 @@ void fnav_nav_reset(fnav_nav_t *nav)
     FNAV_ASSERT(nav != NULL);
     if (nav->aligned) {
         /* the state that triggered the reset is the diverged one */
-        hold_last_frame(nav);
+        hold_last_frame(nav, 1);
     }
     nav->aligned = 0;
     nav->undone_run = 0;
@@ -369,6 +377,7 @@ static void fill_frame(fnav_nav_t *nav, const fnav_stance_out_t *o, uint32_t fla
                 fr->pos_m[i] = nav->hold_pos_m.v[i];
                 fr->p_diag[FNAV_UKF_P + i] = nav->hold_pos_var_m2[i];
             }
+            fr->p_diag[2] = nav->hold_yaw_var_rad2 > FNAV_R(0.0) ? nav->hold_yaw_var_rad2 : FNAV_R(0.0);
             const fnav_quat_t *q = &nav->hold_q_nb; /* its ZYX yaw (fnav_quat_to_euler) */
             fr->euler_rad[2] = fnav_atan2(FNAV_R(2.0) * (q->q[0] * q->q[3] + q->q[1] * q->q[2]),
                                           FNAV_R(1.0) - FNAV_R(2.0) * (q->q[2] * q->q[2] + q->q[3] * q->q[3]));

@@ -134,6 +134,10 @@ static void test_divergence_reset(void **state)
     for (i = 0; i < 3; i++) {
         assert_true(held.p_diag[6 + i] > FNAV_R(1.0e-6));
     }
+    /* and so did its heading variance (attitude error about n's z), above
+     * the fresh alignment's yaw_sd^2 (1.28e-6 against 1e-6 rad^2) */
+    assert_true(held.p_diag[2] > FNAV_R(1.2) * g_nav.cfg.yaw_sd_rad * g_nav.cfg.yaw_sd_rad);
+    assert_true(r.last.p_diag[2] == held.p_diag[2]); /* frames while re-aligning hold it */
     /* while re-aligning, frames hold a position near where it was before the
      * acceleration began (the last good frame's) and are not ALIGNED */
     assert_false(r.last.flags & FNAV_FRAME_ALIGNED);
@@ -158,6 +162,13 @@ static void test_divergence_reset(void **state)
              * which the motion noise only adds to */
             assert_true(r.last.p_diag[6 + i] >= held.p_diag[6 + i]);
         }
+        /* the heading's variance likewise (before 2026-11-28 the
+         * re-aligned filter restarted it at yaw_sd^2, 3,650 times smaller
+         * in a review's case: a heading claimed better known after the
+         * divergence than before it); no ZUPT observes the heading while
+         * the foot stands still, so it does not shrink either */
+        assert_true(r.first_aligned.p_diag[2] == held.p_diag[2]);
+        assert_true(r.last.p_diag[2] >= held.p_diag[2]);
         FNAV_ASSERT_CLOSE(r.last.pos_m[0], hold.v[0], 0.05, 0.0);
         FNAV_ASSERT_CLOSE(r.last.pos_m[1], hold.v[1], 0.05, 0.0);
         assert_true(fnav_vec3_norm(fnav_vec3(r.last.vel_mps[0], r.last.vel_mps[1], r.last.vel_mps[2])) < FNAV_R(0.1));

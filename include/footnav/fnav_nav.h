@@ -159,6 +159,8 @@ typedef struct {
     fnav_vec3_t hold_pos_m; /**< position carried over a reset, n frame, m */
     fnav_quat_t hold_q_nb;  /**< attitude carried over a reset: its heading is kept */
     fnav_real_t hold_pos_var_m2[3]; /**< position variance carried over a reset, m^2 */
+    fnav_real_t hold_yaw_var_rad2;  /**< heading variance carried over a reset (attitude error
+                                         about n's z), rad^2; -1 after a renewal (none held) */
 } fnav_nav_t;
 
 /** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (profile or any module's
