@@ -26,8 +26,14 @@
 
 /* The foot-strike search's stamps are microseconds modulo 2^32 (71.6 min):
  * a time jump of 2^31 us (35.8 min) or more clears the history before it
- * (segment()). */
+ * (segment()). Shorter jumps are looked across; while the history holds an
+ * interval of JERK_LONG_NS or more, several of them may add up past 2^32
+ * us, and the search sums the stamps' differences one interval at a time
+ * (each below 2^31 us). Without such an interval the history spans less
+ * than FNAV_STANCE_EVENT_BUF x JERK_LONG_NS = 2^31 us, and the difference
+ * of two stamps modulo 2^32 is exact. */
 #define JERK_SPAN_NS ((int64_t)2147483648 * 1000)
+#define JERK_LONG_NS (JERK_SPAN_NS / FNAV_STANCE_EVENT_BUF)
 
 const fnav_stance_config_t fnav_stance_config_default = {
     FNAV_DETECTOR_SHOE, /* detector */
@@ -311,6 +317,16 @@ static int64_t foot_strike(const fnav_stance_t *st, long k0, int64_t t_now_ns, l
             k++;
         }
     }
+    if (st->jerk_long_left > 0) {
+        /* jumps in the history may span 2^32 us or more together (three of
+         * 30 min put the strike 71.6 min off; a review, 2026-11-28) */
+        int64_t span_us = 0;
+        for (k = kbest + 1; k <= k_now; k++) {
+            span_us += (int64_t)(uint32_t)(st->jerk_t_us[k % FNAV_STANCE_EVENT_BUF] -
+                                           st->jerk_t_us[(k - 1) % FNAV_STANCE_EVENT_BUF]);
+        }
+        return t_now_ns - span_us * 1000;
+    }
     return t_now_ns - (int64_t)(uint32_t)(t_us(t_now_ns) - st->jerk_t_us[kbest % FNAV_STANCE_EVENT_BUF]) * 1000;
 }
 
@@ -323,6 +339,11 @@ static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
     fnav_real_t jerk = FNAV_R(0.0);
     if (st->have_prev) {
         jerk = fnav_vec3_norm(fnav_vec3_sub(fnav_vec3_from(f), fnav_vec3_from(st->prev_acc)));
+        if (o->sample.t_ns - st->prev_t_ns >= JERK_LONG_NS) {
+            st->jerk_long_left = FNAV_STANCE_EVENT_BUF;
+        } else if (st->jerk_long_left > 0) {
+            st->jerk_long_left--;
+        }
         if (o->sample.t_ns - st->prev_t_ns >= JERK_SPAN_NS) {
             /* a time jump the history's microsecond stamps (modulo 2^32)
              * cannot span: the foot-strike search must not look before it
@@ -363,6 +384,12 @@ static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
             st->fo_open = 1;
             st->fo_max = fn;
             st->fo_t_ns = o->sample.t_ns;
+        } else {
+            /* the swing run ended within its event window: the search
+             * closes on what it saw (left open, the motion after a short
+             * pause took it over and foot-off came after foot-strike; a
+             * review, 2026-11-28) */
+            st->fo_open = 0;
         }
     }
     if (st->fo_open && !o->stance) {

@@ -527,6 +527,109 @@ static void test_gait_events(void **state)
     assert_int_equal(fs_at, 152);
 }
 
+/* A swing shorter than the foot-off window that ends in a pause shorter
+ * than min_stance_s (a stance confirmed for ZUPTs, not for a stride), then
+ * a little settling motion: the foot-off is the push-off peak of the swing,
+ * before the foot-strike. Until 2026-11-28 the search stayed open across
+ * the pause and the settling motion's run restarted it, so foot-off came
+ * at 0.830 s, after the foot-strike (a review). */
+static void test_foot_off_short_pause(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    fnav_stance_out_t o;
+    const double rate = 200.0;
+    long k, fo_at = -1, fs_at = -1;
+    int nfo = 0, nfs = 0;
+    (void)state;
+    c.rate_hz = (fnav_real_t)rate;
+    c.adaptive = 0;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k <= 500; k++) {
+        if (k < 500) {
+            double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+            fnav_sample_t s;
+            if (k >= 100 && k < 155) {
+                w[1] = 4.0; /* a 0.275 s swing (the window is 0.3 s) */
+            }
+            if (k == 105) {
+                f[2] = -30.0; /* push-off peak */
+            }
+            if (k >= 165 && k < 185) {
+                w[1] = 0.5; /* settling after a 50 ms pause */
+                f[2] = -12.0;
+            }
+            s = sample(k, rate, f, w);
+            assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        } else {
+            fnav_stance_finish(&st);
+        }
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            if (o.events & FNAV_STANCE_EV_FOOT_OFF) {
+                fo_at = (long)llround((double)o.fo_t_ns * rate * 1e-9);
+                nfo++;
+            }
+            if (o.events & FNAV_STANCE_EV_FOOT_STRIKE) {
+                fs_at = (long)llround((double)o.fs_t_ns * rate * 1e-9);
+                nfs++;
+            }
+        }
+    }
+    assert_int_equal(nfo, 1);
+    assert_int_equal(nfs, 1);
+    assert_int_equal(fo_at, 105);
+    assert_true(fs_at > fo_at);
+}
+
+/* Time jumps below the 35.8 min that clears the jerk history are looked
+ * across, but three of 30 min between the impact and the stance add up
+ * past the 71.6 min of the stamps' modulus: the strike must still be the
+ * impact's own time (it was 0.650 + 4294.967 s; a review, 2026-11-28). */
+static void test_foot_strike_jumps_add_up(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    fnav_stance_out_t o;
+    int64_t t = 0, t_impact = 0;
+    long k;
+    int strikes = 0;
+    (void)state;
+    c.rate_hz = FNAV_R(200.0);
+    c.adaptive = 0;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k <= 400; k++) {
+        if (k < 400) {
+            double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+            fnav_sample_t s;
+            if (k > 0) {
+                t += 5000000;
+            }
+            if (k == 141 || k == 151 || k == 161) {
+                t += (int64_t)1800 * 1000000000; /* 30 min */
+            }
+            if (k >= 100 && k < 180) {
+                w[0] = 5.0;
+            }
+            if (k == 130) {
+                f[0] = 30.0; /* the heel impact */
+                t_impact = t;
+            }
+            s = sample(k, 200.0, f, w);
+            s.t_ns = t;
+            assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        } else {
+            fnav_stance_finish(&st);
+        }
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            if (o.events & FNAV_STANCE_EV_FOOT_STRIKE) {
+                strikes++;
+                assert_true(o.fs_t_ns == t_impact);
+            }
+        }
+    }
+    assert_int_equal(strikes, 1);
+}
+
 /* The foot-strike search reads whole blocks of the jerk history through
  * their maxima: over many strides of random swings (window positions at
  * every phase of the blocks) it must give exactly the answer of the plain
@@ -902,6 +1005,8 @@ int main(void)
         cmocka_unit_test(test_threshold_detector),
         cmocka_unit_test(test_threshold_both_below),
         cmocka_unit_test(test_gait_events),
+        cmocka_unit_test(test_foot_off_short_pause),
+        cmocka_unit_test(test_foot_strike_jumps_add_up),
         cmocka_unit_test(test_foot_strike_reference),
         cmocka_unit_test(test_foot_strike_long_min_stance),
         cmocka_unit_test(test_counters_long_run),

@@ -109,7 +109,9 @@ extern const fnav_stance_config_t fnav_stance_config_default;
 /** One decision, for the sample it carries (h + L samples behind the input). */
 typedef struct {
     fnav_sample_t sample; /**< the sample this decision is for */
-    fnav_real_t stat;     /**< test statistic T (SHOE) or normalised RMS (THRESHOLD) */
+    fnav_real_t stat;     /**< test statistic T (SHOE); THRESHOLD: the larger of (RMS |w| /
+                               gyro_thresh)^2 and (RMS ||f| - g| / accel_thresh)^2, a mean
+                               square like T, stance below 1 */
     fnav_real_t gamma;    /**< threshold used for this sample */
     int raw_stance;       /**< 1: statistic below the threshold */
     int stance;           /**< 1: foot at rest (apply a zero-velocity update): raw stance in a
@@ -163,6 +165,8 @@ typedef struct {
     /* foot-strike search: jerk history of the newest decisions */
     fnav_real_t jerk[FNAV_STANCE_EVENT_BUF];     /**< |f_k - f_k-1|, m/s^2 */
     uint32_t jerk_t_us[FNAV_STANCE_EVENT_BUF];   /**< sample time, us modulo 2^32 */
+    int jerk_long_left; /**< decisions for which the history still holds an interval of
+                             2^31 us / FNAV_STANCE_EVENT_BUF or more (0: none) */
     fnav_real_t jerk_bmax[FNAV_STANCE_EVENT_BUF / FNAV_STANCE_JERK_BLOCK]; /**< largest jerk per block */
     int n_ev;           /**< event window, samples */
     int n_min_stance;   /**< shortest stance, samples */
