@@ -146,11 +146,11 @@ typedef struct {
     int have_prev;          /**< a sample was processed */
     int64_t t_prev_ns;      /**< time of the last processed sample */
     int have_in;
+    uint32_t undone_run;    /**< consecutive undone predictions (here: no padding before t_in_ns) */
     int64_t t_in_ns;        /**< time of the last accepted sample */
     uint32_t health;        /**< FNAV_HEALTH_* bits */
     fnav_nav_stats_t stats;
     fnav_nav_frame_t last;  /**< newest frame */
-    uint32_t undone_run;    /**< consecutive undone predictions */
     int prev_stance;        /**< the previous frame was decided stance */
     int settle_pending;     /**< a stance began: start the settling state at its first ZUPT */
     fnav_real_t stance_s;   /**< time the current stance has lasted, s */
