@@ -391,7 +391,8 @@ typedef struct {
     int progress;
     double total;
     long n_read;
-    int sink_failed;
+    int sink_failed;     /* the CSV sink refused a frame */
+    int traj_oom;        /* no memory to keep a frame */
     double gyro_max_rps; /* largest |w| read: the units check */
     double f_norm_sum;   /* sum of |f| read: the units check when no rest was found */
     hx_axes_t *axes;     /* the axes check (with traj), or NULL */
@@ -453,6 +454,7 @@ static fnav_status_t hx_write(void *ctx, const fnav_nav_frame_t *f)
             size_t nc = t->cap ? 2 * t->cap : 16384;
             fnav_nav_frame_t *p = (fnav_nav_frame_t *)realloc(t->f, nc * sizeof *p);
             if (p == NULL) {
+                c->traj_oom = 1;
                 return FNAV_E_IO;
             }
             t->f = p;
@@ -652,11 +654,18 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     if (pc.progress) {
         hx_progress_end(&pc.prog);
     }
-    if (st == FNAV_E_IO || pc.sink_failed) {
-        snprintf(err, err_size, "cannot write the trajectory");
+    if (pc.sink_failed || pc.traj_oom) {
+        snprintf(err, err_size, "%s", pc.sink_failed ? "cannot write the trajectory" : "out of memory keeping the trajectory");
         rc = -3;
-    } else if (st != FNAV_OK && r != NULL) {
-        snprintf(err, err_size, "%s", hx_reader_error(r));
+    } else if (st != FNAV_OK) {
+        /* the input stopped the run (FNAV_E_IO is the reader's too: a NUL
+         * block, an over-long line, a truncated .gz); until 2026-11-28 it was
+         * reported as the sink's failure, exit 3 and no line named (a review) */
+        if (r != NULL && hx_reader_error(r)[0] != '\0') {
+            snprintf(err, err_size, "%s", hx_reader_error(r));
+        } else {
+            snprintf(err, err_size, "%s: the replay stopped (status %d)", path, (int)st);
+        }
         rc = 1;
     }
     if (traj != NULL) {

@@ -277,6 +277,25 @@ expect_exit 1 "NaN in the input" "$H" replay "$T/bad.csv" --out "$T/bad_traj.csv
 expect_err "NaN" "NaN error names the problem"
 rows=$(($(wc -l < "$T/bad_traj.csv") - 1))
 if [ "$rows" -eq 2000 ]; then pass "every frame before the NaN written ($rows)"; else fail "frames before the NaN: $rows, expected 2000"; fi
+# the reader's own errors after the header (a NUL block, an over-long line,
+# a truncated .gz): named with file and line, exit 1, the frames before
+# written; until 2026-11-28 replay took them for the sink's failure ("cannot
+# write the trajectory", exit 3; a review)
+head -2001 vectors/nav/golden/gx2_walk2.csv > "$T/nul.csv"
+head -c 512 /dev/zero >> "$T/nul.csv"
+tail -n +2002 vectors/nav/golden/gx2_walk2.csv | head -100 >> "$T/nul.csv"
+expect_exit 1 "a NUL block in the middle" "$H" replay "$T/nul.csv" --out "$T/nul_traj.csv"
+expect_err "nul.csv:2002: a NUL byte" "the NUL block named with its line"
+rows=$(($(wc -l < "$T/nul_traj.csv") - 1))
+if [ "$rows" -eq 2000 ]; then pass "every frame before the NUL block written ($rows)"; else fail "frames before the NUL block: $rows, expected 2000"; fi
+head -2001 vectors/nav/golden/gx2_walk2.csv > "$T/longline.csv"
+awk 'BEGIN { s = "1"; for (i = 0; i < 5000; i++) s = s "0"; print s ",0,0,-9.8,0,0,0" }' >> "$T/longline.csv"
+expect_exit 1 "an over-long line in the middle" "$H" replay "$T/longline.csv" --quiet
+expect_err "longline.csv:2002: line longer than" "the over-long line named"
+head -3001 vectors/nav/golden/gx2_walk2.csv | gzip -c > "$T/whole.csv.gz"
+head -c $(($(wc -c < "$T/whole.csv.gz") / 2)) "$T/whole.csv.gz" > "$T/halfgz.csv.gz"
+expect_exit 1 "a truncated .gz" "$H" replay "$T/halfgz.csv.gz" --quiet
+expect_err "gzip data ends early" "the truncated .gz said so"
 # a log that never leaves its first stance: no path, so no percentage (not "nan %")
 head -400 vectors/nav/golden/gx2_walk2.csv > "$T/still.csv"
 expect_exit 0 "still log (no strides)" "$H" replay "$T/still.csv"
