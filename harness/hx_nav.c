@@ -1101,7 +1101,22 @@ int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_tr
     if (hx_plot_open(&p, cmd, png, 1200, 600) != 0) {
         return -1;
     }
+    size_t naligned = 0;
+    for (i = 0; i < t->n; i++) {
+        naligned += (t->f[i].flags & FNAV_FRAME_ALIGNED) != 0u;
+    }
     fprintf(p.gp, "set multiplot layout 1,2 title '%s'\n", hx_gp_str(q, sizeof q, title));
+    if (naligned == 0) {
+        /* nothing navigated (a log that never aligned, or an error before
+         * it): two empty panels that say so; gnuplot refuses a plot without
+         * a valid point, and the png was left half drawn with exit 3 (a
+         * review, 2026-11-28) */
+        fprintf(p.gp, "set xlabel 'east y (m)'\nset ylabel 'north x (m)'\nset xrange [-1:1]\nset yrange [-1:1]\n"
+                      "set title 'no aligned frame: nothing navigated'\nplot -2 notitle\n"
+                      "set xlabel 'time (s)'\nset ylabel 'height (m, up)'\nset title 'no aligned frame'\n"
+                      "plot -2 notitle\nunset multiplot\n");
+        return hx_plot_close(&p, cmd);
+    }
     fprintf(p.gp, "set size ratio -1\nset xlabel 'east y (m)'\nset ylabel 'north x (m)'\n");
     {
         /* one span on both axes, centred on the path (start included): with

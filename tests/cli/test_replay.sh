@@ -313,6 +313,12 @@ if grep -q "almost no motion" "$T/out"; then fail "a walk flagged as motionless"
 printf 't,ax,ay,az,gx,gy,gz\n0.0,0,0,-9.8,0,0,0\n' > "$T/tiny.csv"
 expect_exit 1 "too short to align" "$H" replay "$T/tiny.csv"
 expect_err "no still period" "alignment failure explained"
+# with --plot: two empty panels that say so, exit 1 as without it (gnuplot
+# refused the empty height panel: exit 3 and a half-drawn PNG; a review)
+if command -v gnuplot >/dev/null 2>&1; then
+    expect_exit 1 "too short to align, --plot" "$H" replay "$T/tiny.csv" --plot "$T/tiny.png"
+    if [ -s "$T/tiny.png" ] && ! grep -q "gnuplot" "$T/err"; then pass "the PNG of a log that never aligned"; else fail "no PNG or gnuplot complained"; cat "$T/err"; fi
+fi
 # a walk in the wrong units navigates into nonsense without a reader error:
 # each mistake is named with its remedy, exit 1, and the outputs are still
 # written (from the values as given)
