@@ -42,7 +42,7 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate)
         return HX_EXIT_DATA;
     }
     exit_code = lrc > 0 ? HX_EXIT_DATA : HX_EXIT_OK;
-    if (hx_nav_resample(&raw, rate, &res, &dups, &fs, err, sizeof err) != 0) {
+    if (hx_nav_resample(&raw, rate, (double)fnav_nav_config_default.max_gap_s, &res, &dups, &fs, err, sizeof err) != 0) {
         hx_error("convert", "%s: %s", a->pos[0], err);
         hx_log_free(&raw);
         return HX_EXIT_DATA;

@@ -252,13 +252,53 @@ static int cmp_i64(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-int hx_nav_resample(const hx_log_t *in, double rate_hz, hx_log_t *out, long *dups, double *in_rate, char *err,
-                    size_t err_size)
+/* One output sample at instant t from the kept input samples [a, b) of a
+ * segment without time jumps (kernel half length half, cut-off fc in
+ * cycles per input sample); *m is the segment's input sample at or before
+ * t, advanced as t grows. */
+static void resample_at(const hx_log_t *in, const size_t *keep, size_t a, size_t b, size_t *m, int64_t t, int half,
+                        double fc, double acc[3], double gyr[3])
 {
-    size_t n = 0, i, k, nout, m;
-    int64_t *dt;
-    double fs, fc;
-    int half, c;
+    double sa[3] = { 0, 0, 0 }, sg[3] = { 0, 0, 0 }, sw = 0.0, u;
+    long q, qlo, qhi;
+    int c;
+    while (*m + 1 < b && in->t_ns[keep[*m + 1]] <= t) {
+        (*m)++;
+    }
+    if (*m + 1 < b) {
+        u = (double)(t - in->t_ns[keep[*m]]) / (double)(in->t_ns[keep[*m + 1]] - in->t_ns[keep[*m]]);
+        u = (double)*m + (u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u)); /* fractional input index of t */
+    } else {
+        u = (double)*m; /* the segment's last sample (or its only one) */
+    }
+    qlo = (long)floor(u) - half;
+    qhi = (long)ceil(u) + half;
+    for (q = qlo < (long)a ? (long)a : qlo; q <= qhi && q < (long)b; q++) {
+        double x = (double)q - u, w;
+        if (fabs(x) >= (double)half) {
+            continue;
+        }
+        w = (fabs(x) < 1e-12 ? 2.0 * fc : sin(2.0 * M_PI * fc * x) / (M_PI * x)) *
+            (0.42 + 0.5 * cos(M_PI * x / half) + 0.08 * cos(2.0 * M_PI * x / half));
+        for (c = 0; c < 3; c++) {
+            sa[c] += w * in->acc[keep[q]][c];
+            sg[c] += w * in->gyr[keep[q]][c];
+        }
+        sw += w;
+    }
+    for (c = 0; c < 3; c++) {
+        acc[c] = sa[c] / sw; /* edges: renormalised partial window */
+        gyr[c] = sg[c] / sw;
+    }
+}
+
+int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log_t *out, long *dups,
+                    double *in_rate, char *err, size_t err_size)
+{
+    size_t n = 0, i, k, nout, a, b;
+    int64_t *dt, gap_ns;
+    double fs, fc, period_ns;
+    int half, pass;
     size_t *keep;
     memset(out, 0, sizeof *out);
     *dups = 0;
@@ -309,55 +349,49 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, hx_log_t *out, long *dup
      * 2026-11-28 the filter ran on the input samples and its output was
      * interpolated linearly at the new instants: a second, phase-dependent
      * low-pass that took 7 % off a 40 Hz tone at 250 -> 100 Hz and left a
-     * 9 % error (tests/test_nav.c, test_resampler). */
+     * 9 % error (tests/test_nav.c, test_resampler).
+     * A time jump (an interval above max_gap_s and 1.5 input periods, the
+     * navigator's own rule) splits the log into segments: the filter does
+     * not reach across it and the output grid starts again at the first
+     * sample after it, so the jump stays a jump. Until 2026-11-28 the grid
+     * ran through it, and a day's pause became 8.6 million made-up samples
+     * (a review). Smaller gaps of lost samples are closed up, as before. */
     fc = 0.45 * rate_hz / fs; /* cycles per input sample */
     half = (int)ceil(20.0 * fs / rate_hz);
-    {
-        int64_t t0 = in->t_ns[keep[0]], t1 = in->t_ns[keep[n - 1]];
-        double period_ns = 1e9 / rate_hz;
-        nout = (size_t)floor((double)(t1 - t0) / period_ns) + 1;
-        out->t_ns = (int64_t *)malloc(nout * sizeof *out->t_ns);
-        out->seq = (uint32_t *)malloc(nout * sizeof *out->seq);
-        out->acc = (double(*)[3])malloc(nout * sizeof *out->acc);
-        out->gyr = (double(*)[3])malloc(nout * sizeof *out->gyr);
-        out->temp = (double *)malloc(nout * sizeof *out->temp);
-        if (!out->t_ns || !out->seq || !out->acc || !out->gyr || !out->temp) {
-            hx_log_free(out);
-            free(keep);
-            snprintf(err, err_size, "out of memory");
-            return -1;
+    period_ns = 1e9 / rate_hz;
+    gap_ns = (int64_t)ceil(1e9 * (max_gap_s > 1.5 / fs ? max_gap_s : 1.5 / fs));
+    nout = 0;
+    for (pass = 0; pass < 2; pass++) {
+        k = 0;
+        for (a = 0; a < n; a = b) {
+            const int64_t t0 = in->t_ns[keep[a]];
+            size_t m = a, j, nseg;
+            for (b = a + 1; b < n && in->t_ns[keep[b]] - in->t_ns[keep[b - 1]] <= gap_ns; b++) {
+            }
+            nseg = (size_t)floor((double)(in->t_ns[keep[b - 1]] - t0) / period_ns) + 1;
+            if (pass == 0) {
+                nout += nseg;
+                continue;
+            }
+            for (j = 0; j < nseg; j++, k++) {
+                const int64_t t = t0 + (int64_t)llround((double)j * period_ns);
+                out->t_ns[k] = t;
+                out->seq[k] = (uint32_t)k;
+                out->temp[k] = (double)NAN;
+                resample_at(in, keep, a, b, &m, t, half, fc, out->acc[k], out->gyr[k]);
+            }
         }
-        m = 0;
-        for (k = 0; k < nout; k++) {
-            int64_t t = t0 + (int64_t)llround((double)k * period_ns);
-            double sa[3] = { 0, 0, 0 }, sg[3] = { 0, 0, 0 }, sw = 0.0, u;
-            long q, qlo, qhi;
-            while (m + 1 < n - 1 && in->t_ns[keep[m + 1]] <= t) {
-                m++;
-            }
-            u = (double)(t - in->t_ns[keep[m]]) / (double)(in->t_ns[keep[m + 1]] - in->t_ns[keep[m]]);
-            u = (double)m + (u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u)); /* fractional input index of t */
-            qlo = (long)floor(u) - half;
-            qhi = (long)ceil(u) + half;
-            for (q = qlo < 0 ? 0 : qlo; q <= qhi && q < (long)n; q++) {
-                double x = (double)q - u, w;
-                if (fabs(x) >= (double)half) {
-                    continue;
-                }
-                w = (fabs(x) < 1e-12 ? 2.0 * fc : sin(2.0 * M_PI * fc * x) / (M_PI * x)) *
-                    (0.42 + 0.5 * cos(M_PI * x / half) + 0.08 * cos(2.0 * M_PI * x / half));
-                for (c = 0; c < 3; c++) {
-                    sa[c] += w * in->acc[keep[q]][c];
-                    sg[c] += w * in->gyr[keep[q]][c];
-                }
-                sw += w;
-            }
-            out->t_ns[k] = t;
-            out->seq[k] = (uint32_t)k;
-            out->temp[k] = (double)NAN;
-            for (c = 0; c < 3; c++) {
-                out->acc[k][c] = sa[c] / sw; /* edges: renormalised partial window */
-                out->gyr[k][c] = sg[c] / sw;
+        if (pass == 0) {
+            out->t_ns = (int64_t *)malloc(nout * sizeof *out->t_ns);
+            out->seq = (uint32_t *)malloc(nout * sizeof *out->seq);
+            out->acc = (double(*)[3])malloc(nout * sizeof *out->acc);
+            out->gyr = (double(*)[3])malloc(nout * sizeof *out->gyr);
+            out->temp = (double *)malloc(nout * sizeof *out->temp);
+            if (!out->t_ns || !out->seq || !out->acc || !out->gyr || !out->temp) {
+                hx_log_free(out);
+                free(keep);
+                snprintf(err, err_size, "out of memory (%zu resampled samples)", nout);
+                return -1;
             }
         }
     }
@@ -599,7 +633,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             snprintf(err, err_size, "%s", raw.error);
             rc = 1;
         }
-        if (hx_nav_resample(&raw, rate_hz, &res, &dups, &fs, err, err_size) != 0) {
+        if (hx_nav_resample(&raw, rate_hz, (double)cfg->max_gap_s, &res, &dups, &fs, err, err_size) != 0) {
             hx_log_free(&raw);
             return -1;
         }

@@ -83,14 +83,17 @@ void hx_traj_free(hx_traj_t *t);
  * rate_hz (length about 41 x the rate ratio, unit DC gain, zero phase) is
  * evaluated directly at each output instant t0 + k / rate_hz, placed between
  * the input's own time stamps as a fractional input index (the input taken
- * as uniform at its median rate; renormalised at the edges).
+ * as uniform at its median rate; renormalised at the edges). An interval
+ * above max_gap_s (and 1.5 input periods) is a time jump: the filter does
+ * not reach across it and the grid starts again after it.
+ * @param max_gap_s the navigator's time-jump limit (fnav_nav_config_t)
  * @param dups     receives the number of dropped duplicates
  * @param in_rate  receives the input's median rate, Hz
  * @return 0, or -1 with err filled (too few samples, rate not below the
  *         input rate, memory). out is freed with hx_log_free().
  */
-int hx_nav_resample(const hx_log_t *in, double rate_hz, hx_log_t *out, long *dups, double *in_rate, char *err,
-                    size_t err_size);
+int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log_t *out, long *dups,
+                    double *in_rate, char *err, size_t err_size);
 
 /* ------------------------------------------------------------ replay */
 

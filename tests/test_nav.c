@@ -775,7 +775,7 @@ static void test_resampler(void **state)
     memmove(&in.acc[1001], &in.acc[1000], (n - 1000) * sizeof *in.acc);
     memmove(&in.gyr[1001], &in.gyr[1000], (n - 1000) * sizeof *in.gyr);
     in.n = n + 1;
-    assert_int_equal(hx_nav_resample(&in, 100.0, &out, &dups, &fs, err, sizeof err), 0);
+    assert_int_equal(hx_nav_resample(&in, 100.0, 0.5, &out, &dups, &fs, err, sizeof err), 0);
     assert_int_equal(dups, 1);
     FNAV_ASSERT_CLOSE(fs, 400.0, 0.0, 1e-9);
     FNAV_ASSERT_CLOSE((double)out.n, 1000.0, 1.0, 0.0);
@@ -794,8 +794,64 @@ static void test_resampler(void **state)
     FNAV_ASSERT_CLOSE(a10, 1.0, 1e-3, 0.0);
     assert_true(a80 < 1e-3);
     hx_log_free(&out);
-    assert_int_equal(hx_nav_resample(&in, 500.0, &out, &dups, &fs, err, sizeof err), -1);
+    assert_int_equal(hx_nav_resample(&in, 500.0, 0.5, &out, &dups, &fs, err, sizeof err), -1);
     assert_non_null(strstr(err, "only downsampling"));
+    hx_log_free(&in);
+}
+
+/* A time jump in the input (100 s without samples, above max_gap_s)
+ * splits the resampled log: no output instant falls inside it, the filter
+ * does not reach across it (a constant on each side comes out exactly), and
+ * the grid starts again at the first sample after it, so the navigator
+ * still sees one interval above max_gap_s. A gap of lost samples below
+ * max_gap_s (4 samples) is closed up as before: the grid runs through it.
+ * Until 2026-11-28 the grid ran through the jump too: 10,000 made-up
+ * samples here, and 8.6 million for a day's pause (a review). */
+static void test_resampler_time_jump(void **state)
+{
+    hx_log_t in, out;
+    size_t n = 4000, i, inside = 0;
+    long dups = 0;
+    double fs = 0.0;
+    int64_t t_after = 0, longest = 0;
+    char err[320];
+    (void)state;
+    memset(&in, 0, sizeof in);
+    in.t_ns = (int64_t *)calloc(n, sizeof *in.t_ns);
+    in.seq = (uint32_t *)calloc(n, sizeof *in.seq);
+    in.acc = (double(*)[3])calloc(n, sizeof *in.acc);
+    in.gyr = (double(*)[3])calloc(n, sizeof *in.gyr);
+    in.temp = (double *)calloc(n, sizeof *in.temp);
+    assert_true(in.t_ns && in.seq && in.acc && in.gyr && in.temp);
+    for (i = 0; i < n; i++) {
+        /* 400 Hz; samples 1000-1003 lost; 100 s pause after sample 2000 */
+        const size_t k = i < 1000 ? i : i + 4;
+        in.t_ns[i] = (int64_t)k * 2500000 + (i > 2000 ? (int64_t)100000000000 : 0);
+        in.acc[i][2] = i > 2000 ? -2.0 : -1.0;
+    }
+    t_after = in.t_ns[2001];
+    in.n = n;
+    assert_int_equal(hx_nav_resample(&in, 100.0, 0.5, &out, &dups, &fs, err, sizeof err), 0);
+    FNAV_ASSERT_CLOSE(fs, 400.0, 0.0, 1e-9);
+    /* 2001 samples and the 4 lost ones at 400 Hz, 0 .. 5.01 s: 502
+     * instants; then 1999 samples, 4.995 s: 500 instants from t_after */
+    assert_int_equal(out.n, 1002);
+    for (i = 0; i < out.n; i++) {
+        if (out.t_ns[i] > in.t_ns[2000] && out.t_ns[i] < t_after) {
+            inside++;
+        }
+        if (i > 0 && out.t_ns[i] - out.t_ns[i - 1] > longest) {
+            longest = out.t_ns[i] - out.t_ns[i - 1];
+        }
+        FNAV_ASSERT_CLOSE(out.acc[i][2], out.t_ns[i] >= t_after ? -2.0 : -1.0, 1e-12, 0.0);
+    }
+    assert_int_equal(inside, 0);
+    assert_true(out.t_ns[502] == t_after);
+    assert_true(longest > (int64_t)100000000000 - 10000000);
+    for (i = 1; i <= 501; i++) {
+        assert_true(out.t_ns[i] - out.t_ns[i - 1] == 10000000); /* the lost samples' gap closed up */
+    }
+    hx_log_free(&out);
     hx_log_free(&in);
 }
 
@@ -829,7 +885,7 @@ static void test_resampler_fractional(void **state)
         in.gyr[i][1] = 1.0; /* DC: unit gain */
     }
     in.n = n;
-    assert_int_equal(hx_nav_resample(&in, 100.0, &out, &dups, &fs, err, sizeof err), 0);
+    assert_int_equal(hx_nav_resample(&in, 100.0, 0.5, &out, &dups, &fs, err, sizeof err), 0);
     assert_int_equal(dups, 0);
     FNAV_ASSERT_CLOSE((double)out.n, 2000.0, 1.0, 0.0);
     /* away from the edges (the filter spans 101 input samples, 41 output) */
@@ -1116,6 +1172,7 @@ int main(void)
         cmocka_unit_test(test_stance_mids),
         cmocka_unit_test(test_resampler),
         cmocka_unit_test(test_resampler_fractional),
+        cmocka_unit_test(test_resampler_time_jump),
         cmocka_unit_test(test_golden_replays),
         cmocka_unit_test(test_float_vs_double),
     };

@@ -105,6 +105,12 @@ expect_exit 2 "replay --out onto its own log" "$H" replay "$T/self.bin" --out "$
 if cmp -s vectors/walk.bin "$T/self.bin"; then pass "the log is left intact"; else fail "replay overwrote its log"; fi
 expect_exit 0 "replay --rate 100" "$H" replay vectors/walk.bin --rate 100 --json "$T/r.json"
 expect_out "resampled" "summary reports the resampling"
+# a time jump (100 s) stays one under --rate: the resampler's grid starts
+# again after it instead of making up 10,000 samples across it (a review)
+awk -F, 'NR == 1 { print; next } NR > 8000 { $1 = $1 + 100 } { print }' OFS=, "$T/walk_full.csv" > "$T/walk_jump.csv"
+expect_exit 0 "--rate across a 100 s time jump" "$H" replay "$T/walk_jump.csv" --rate 100 --json "$T/jump.json"
+if /usr/bin/python3 -c "import json,sys; h=json.load(open(sys.argv[1]))['health']; sys.exit(0 if h['time_jumps']==1 else 1)" "$T/jump.json"; then
+    pass "the resampled log keeps its time jump"; else fail "time jump lost under --rate"; fi
 expect_exit 1 "--rate above the input rate" "$H" replay vectors/walk.bin --rate 2000
 expect_err "only downsampling" "rate error explains"
 expect_exit 0 "bias model off, threshold detector" "$H" replay vectors/walk.bin --bias-model off --detector threshold --quiet
