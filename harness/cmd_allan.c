@@ -1436,6 +1436,12 @@ int hx_cmd_allan(int argc, char **argv)
         hx_usage(&k_spec, stderr);
         return HX_EXIT_USAGE;
     }
+    {
+        static const char *const outs[] = { "--out", "--json", "--plot", "--profile", NULL };
+        if (hx_output_is_input(CMD, series != NULL ? series : a.pos[0], &a, outs)) {
+            return HX_EXIT_USAGE;
+        }
+    }
     R = (run_t *)calloc(1, sizeof *R);
     if (R == NULL) {
         hx_error(CMD, "out of memory");

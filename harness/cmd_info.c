@@ -254,6 +254,12 @@ int hx_cmd_info(int argc, char **argv)
     if (hx_check_input_opts("info", &a) != 0) {
         return HX_EXIT_USAGE;
     }
+    {
+        static const char *const outs[] = { "--json", NULL };
+        if (hx_output_is_input("info", a.pos[0], &a, outs)) {
+            return HX_EXIT_USAGE;
+        }
+    }
     rc = hx_load_input("info", &a, a.pos[0], &log);
     if (rc < 0) {
         return HX_EXIT_DATA;

@@ -508,6 +508,12 @@ int hx_cmd_psd(int argc, char **argv)
     bc.threshold = (fnav_real_t)thr;
     bc.round_hz = (fnav_real_t)rnd;
 
+    {
+        static const char *const outs[] = { "--out", "--json", "--plot", NULL };
+        if (hx_output_is_input(CMD, a.pos[0], &a, outs)) {
+            return HX_EXIT_USAGE;
+        }
+    }
     rc = hx_load_input(CMD, &a, a.pos[0], &log);
     if (rc < 0) {
         return HX_EXIT_DATA;

@@ -78,9 +78,11 @@ int hx_cmd_replay(int argc, char **argv)
         hx_error("replay", "%s: cannot read (%s)", a.pos[0], strerror(errno));
         return HX_EXIT_DATA;
     }
-    if (hx_same_file(a.pos[0], out_path) || hx_same_file(a.pos[0], json_path) || hx_same_file(a.pos[0], plot_path)) {
-        hx_error("replay", "%s: an output is the log itself (it would be overwritten)", a.pos[0]);
-        return HX_EXIT_USAGE;
+    {
+        static const char *const outs[] = { "--out", "--json", "--plot", NULL };
+        if (hx_output_is_input("replay", a.pos[0], &a, outs)) {
+            return HX_EXIT_USAGE;
+        }
     }
     if (out_path != NULL) {
         csv = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");

@@ -90,6 +90,12 @@ int hx_cmd_simgap(int argc, char **argv)
     json = hx_arg(&a, "--json");
     plot = hx_arg(&a, "--plot");
     path = a.pos[0];
+    {
+        static const char *const outs[] = { "--json", "--plot", NULL };
+        if (hx_output_is_input("simgap", path, &a, outs)) {
+            return HX_EXIT_USAGE;
+        }
+    }
     lr = hx_load_input("simgap", &a, path, &log);
     if (lr < 0) {
         return HX_EXIT_DATA;

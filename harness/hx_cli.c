@@ -346,6 +346,19 @@ int hx_same_file(const char *a, const char *b)
     return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
+int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, const char *const *outputs)
+{
+    int i;
+    for (i = 0; outputs[i] != NULL; i++) {
+        const char *out = hx_arg(a, outputs[i]);
+        if (hx_same_file(input, out)) {
+            hx_error(cmd, "%s: %s %s is the input itself (it would be overwritten)", input, outputs[i], out);
+            return 1;
+        }
+    }
+    return 0;
+}
+
 FILE *hx_json_stdout = NULL;
 
 /* argv[*i] is option `name` with the value "-", as `name -` or `name=-`

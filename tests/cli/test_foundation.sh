@@ -172,5 +172,21 @@ expect_exit 2 "convert --rate 1e-9" "$H" convert vectors/walk.bin "$T/rtiny.csv"
 if [ -e "$T/rtiny.csv" ] && grep -qi nan "$T/rtiny.csv"; then fail "convert --rate 1e-9 wrote NaN"; else pass "convert --rate 1e-9 writes no NaN"; fi
 expect_exit 2 "convert --rate inf" "$H" convert vectors/walk.bin "$T/rinf.csv" --rate inf
 
+# an output that names the input itself is refused before the input is read
+# (info, allan, psd and simgap overwrote the log after reading it; a review)
+"$H" convert vectors/walk.bin "$T/victim.csv" >/dev/null 2>&1
+cp "$T/victim.csv" "$T/victim0.csv"
+seq 1 100 > "$T/series.txt"
+cp "$T/series.txt" "$T/series0.txt"
+for args in "info $T/victim.csv --json $T/victim.csv" "allan $T/victim.csv --out $T/victim.csv" \
+    "allan --series $T/series.txt --rate 1 --json $T/series.txt" "psd $T/victim.csv --json $T/victim.csv" \
+    "simgap $T/victim.csv --json $T/victim.csv" "replay $T/victim.csv --plot $T/victim.csv"; do
+    # shellcheck disable=SC2086
+    expect_exit 2 "output = input: ${args%% *}" "$H" $args
+    expect_err "is the input itself" "output = input refused: ${args%% *}"
+done
+if cmp -s "$T/victim.csv" "$T/victim0.csv" && cmp -s "$T/series.txt" "$T/series0.txt"; then
+    pass "the inputs are intact"; else fail "an input was overwritten"; fi
+
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]
