@@ -1,4 +1,6 @@
 /* ./harness: the Linux reference tool of footnav. */
+#include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -44,6 +46,7 @@ int main(int argc, char **argv)
      * degenerate data must come back as a NaN or an error code that the
      * command checks and reports (exit 1), never as SIGABRT */
     gsl_set_error_handler_off();
+    signal(SIGPIPE, SIG_IGN); /* a closed pipe is a write error (below), as in live and stream */
     if (argc < 2) {
         usage(stderr);
         return HX_EXIT_USAGE;
@@ -54,10 +57,24 @@ int main(int argc, char **argv)
     }
     for (i = 0; i < sizeof k_commands / sizeof k_commands[0]; i++) {
         if (strcmp(argv[1], k_commands[i].name) == 0) {
+            int rc;
             if (hx_json_stdout_claim(k_commands[i].name, argc - 2, argv + 2) != 0) {
                 return HX_EXIT_USAGE;
             }
-            return k_commands[i].fn(argc - 2, argv + 2);
+            rc = k_commands[i].fn(argc - 2, argv + 2);
+            /* results printed to standard output count as an output: a
+             * full disk or a closed pipe is a write error (exit 3), not a
+             * success with the results lost (`info LOG > /dev/full` exited
+             * 0) nor a silent death by SIGPIPE before the other outputs
+             * were written (`replay LOG --out - --json S | head -1` lost
+             * S; a review, 2026-11-28) */
+            errno = 0;
+            if ((fflush(stdout) != 0 || ferror(stdout)) && (rc == HX_EXIT_OK || rc == HX_EXIT_DATA)) {
+                fprintf(stderr, "harness %s: error: cannot write standard output%s%s\n", k_commands[i].name,
+                        errno != 0 ? ": " : "", errno != 0 ? strerror(errno) : "");
+                rc = HX_EXIT_IO;
+            }
+            return rc;
         }
     }
     fprintf(stderr, "harness: error: unknown command '%s'\n", argv[1]);

@@ -273,7 +273,21 @@ if [ -w /dev/full ]; then
     expect_err "cannot write the trajectory" "a full disk is reported"
     "$H" replay vectors/walk.bin --out - >/dev/full 2>"$T/err"; rc=$?
     if [ "$rc" -eq 3 ] && grep -q "cannot write" "$T/err"; then pass "--out - to a full disk: exit 3"; else fail "--out - to a full disk: exit $rc"; cat "$T/err"; fi
+    # the results printed to standard output are an output too: the summary
+    # and info's figures lost to a full disk exited 0 (a review, 2026-11-28)
+    for cmd in "replay vectors/walk.bin" "info vectors/walk.bin"; do
+        # shellcheck disable=SC2086
+        "$H" $cmd >/dev/full 2>"$T/err"; rc=$?
+        if [ "$rc" -eq 3 ] && grep -q "cannot write standard output" "$T/err"; then pass "$cmd > /dev/full: exit 3"; else
+            fail "$cmd > /dev/full: exit $rc"; cat "$T/err"; fi
+    done
 fi
+# a closed pipe on standard output is a write error too (exit 3), not a
+# silent SIGPIPE that lost the JSON (`--out - | head -1`; a review)
+rm -f "$T/pipe.json"
+rc=$( { "$H" replay vectors/walk.bin --out - --json "$T/pipe.json" 2>"$T/err"; echo $? > "$T/rc"; } | head -1 >/dev/null; cat "$T/rc")
+if [ "$rc" -eq 3 ] && [ -s "$T/pipe.json" ] && grep -q "cannot write" "$T/err"; then pass "--out - into a closed pipe: exit 3, JSON written"; else
+    fail "--out - into a closed pipe: exit $rc"; cat "$T/err"; fi
 
 # --- bad input: a NaN in the middle; the frames before are written, exit 1
 head -2001 vectors/nav/golden/gx2_walk2.csv > "$T/bad.csv"
