@@ -877,6 +877,24 @@ static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
             break;
         }
     }
+    if (r->last_line_open && r->meta.format == HX_FMT_CSV && gzeof(r->gz)) {
+        /* Our own CSV: a last line without a newline is read (many tools
+         * write none), and an incomplete one is an error like any malformed
+         * line; but one that ends in a used value may have been cut inside
+         * it (-0.00245940452 read as -0.0024590001): dropped with a
+         * warning, as for the foreign formats below (it was read silently;
+         * a review, 2026-11-28) */
+        fnav_status_t st;
+        r->last_line_open = 0;
+        st = next_text_fields(r, s);
+        if (st == FNAV_OK && r->nfields <= r->ncols_needed) {
+            r->stats.cut_lines++;
+            add_warn(r, "%s:%ld: last line has no newline and ends in a value the reader uses, which may be cut "
+                        "(file cut off mid-write?); ignored", r->path, r->stats.lines);
+            return FNAV_END;
+        }
+        return st;
+    }
     if (r->last_line_open && r->meta.format != HX_FMT_CSV && gzeof(r->gz)) {
         /* The final line of a foreign recording has no newline: the file was
          * cut off mid-write. Parse it on a copy; if it is incomplete, ignore
