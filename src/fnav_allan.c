@@ -247,21 +247,26 @@ static inline fnav_real_t diff0(const fnav_allan_t *a, uint32_t e, uint32_t m)
 static fnav_real_t terms0(const fnav_allan_t *a, uint32_t m, uint32_t lo, uint32_t hi, uint32_t st)
 {
     fnav_real_t s = FNAV_R(0.0);
-    uint32_t e;
+    uint64_t e; /* e + st passes 2^32 near the count's end: no wrap back below hi */
     if (lo < 2u * m) {
         lo = 2u * m;
     }
     for (e = lo; e <= hi; e += st) {
-        const fnav_real_t d = diff0(a, e, m);
+        const fnav_real_t d = diff0(a, (uint32_t)e, m);
         s += d * d;
     }
     return s;
 }
 
-/* First multiple of m that is >= lo. */
+/* First multiple of m that is >= lo, or UINT32_MAX when it lies beyond
+ * (above every end index: the count stops at 2^32 - 2 samples). In 32 bits
+ * lo + m - 1 wrapped to a small number near the end, and the
+ * non-overlapping sums took in about 2^32 / m terms of stale ring values
+ * (13 times the variance), or never returned (a review, 2026-11-28). */
 static inline uint32_t next_multiple(uint32_t lo, uint32_t m)
 {
-    return ((lo + m - 1u) / m) * m;
+    const uint32_t r = lo % m, add = r == 0u ? 0u : m - r;
+    return lo > UINT32_MAX - add ? UINT32_MAX : lo + add;
 }
 
 /* The rare work of a push lives out of line so that the common push stays
@@ -304,7 +309,7 @@ static void block0(fnav_allan_t *a, uint32_t n)
             if (m == 1u) {
                 sn = so;
             } else {
-                for (k = next_multiple(e0, m) - e0; k < FNAV_ALLAN_BLOCK; k += m) {
+                for (k = (m - e0 % m) % m; k < FNAV_ALLAN_BLOCK; k += m) {
                     const fnav_real_t d = (x0[k] + x2[k]) - FNAV_R(2.0) * x1[k];
                     sn += d * d;
                 }
