@@ -450,6 +450,25 @@ static void test_nbs14_10_other_deviations(void **state)
  * is one degree of freedom for every d, filter and stride; undefined where
  * the variance diverges (alpha + 2 d <= 1) or no term exists; and the
  * Allan case is fnav_allan_edf(). */
+/* Greenhall & Riley's case 4 (unmodified, white PM, alpha = +2) has two
+ * forms: with K = ceil(r) <= d the terms share no phase sample and 1/edf =
+ * (1/M) sum over |k| < K of (1 - |k|/r) (C(2d, d+k) / C(2d, d))^2, the
+ * table's (1/M)(a0 - a1/r) only for K > d. On 3,000 phase values, OADEV
+ * (d = 2, S = m): m = 1024 gives M = 952, r = 0.93, K = 1, edf = M (a
+ * 20,000-record Monte Carlo gave 951.3; the table's form 1,096); m = 1280,
+ * M = 440 (Monte Carlo 432.4; the table's form gave -1, no interval);
+ * m = 768, M = 1464, r = 1.906, K = 2: 1464 / (1 + 2 (1 - 1/r) (4/6)^2).
+ * A review, 2026-11-28. */
+static void test_edf_white_pm_few_terms(void **state)
+{
+    const double r768 = 1464.0 / 768.0;
+    (void)state;
+    FNAV_ASSERT_CLOSE(fnav_allan_edf_var(2, 2, 0, 1024u, 3000u, 1), 952.0, 1e-9, 0.0);
+    FNAV_ASSERT_CLOSE(fnav_allan_edf_var(2, 2, 0, 1280u, 3000u, 1), 440.0, 1e-9, 0.0);
+    FNAV_ASSERT_CLOSE(fnav_allan_edf_var(2, 2, 0, 768u, 3000u, 1),
+                      1464.0 / (1.0 + 2.0 * (1.0 - 1.0 / r768) * (4.0 / 6.0) * (4.0 / 6.0)), 1e-9, 0.0);
+}
+
 static void test_edf_var_edges(void **state)
 {
     int alpha, d;
@@ -1589,6 +1608,7 @@ int main(void)
         cmocka_unit_test(test_nbs14_10_other_deviations),
         cmocka_unit_test(test_phasedat_other_deviations),
         cmocka_unit_test(test_edf_var_edges),
+        cmocka_unit_test(test_edf_white_pm_few_terms),
         cmocka_unit_test(test_pdev_nbs14),
         cmocka_unit_test(test_totdev_nbs14),
         cmocka_unit_test(test_totdev_edf),
