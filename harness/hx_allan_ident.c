@@ -604,12 +604,19 @@ int hx_allan_identify(const fnav_allan_result_t *r, size_t n, double rate_hz, co
 {
     const hx_allan_fit_opts_t *o = opts != NULL ? opts : &hx_allan_fit_opts_default;
     uint32_t tau_max = 0;
+    int paper_range = 1;
     memset(out, 0, sizeof *out);
     if (o->tau_max_s > 0.0) {
-        const double t = o->tau_max_s * rate_hz;
+        /* the same inclusive limit as the table, the noise regions and the
+         * fit (tau <= limit (1 + 1e-9)): truncated, a point at exactly 10 %
+         * of a record whose limit rounds just below it was left out of the
+         * minimum search, and a limit under one sample became 0, "no limit"
+         * (a review, 2026-11-28) */
+        const double t = floor(o->tau_max_s * rate_hz * (1.0 + 1e-9));
         tau_max = t >= 4294967295.0 ? UINT32_MAX : (uint32_t)t;
+        paper_range = t >= 1.0;
     }
-    if (fnav_allan_identify_paper(r, n, (fnav_real_t)rate_hz, tau_max, &out->paper) == FNAV_OK) {
+    if (paper_range && fnav_allan_identify_paper(r, n, (fnav_real_t)rate_hz, tau_max, &out->paper) == FNAV_OK) {
         out->paper_ok = 1;
         hx_noise_model_from_paper(&out->paper, rate_hz, &out->paper_model);
         hx_allan_quality(r, n, rate_hz, o->tau_max_s, &out->paper_model, &out->paper_quality);

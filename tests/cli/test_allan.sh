@@ -319,5 +319,21 @@ PYEOF
 else
     echo "SKIP ADIS16405 tests (shared data not found; set FNAV_DATA_DIR)"
 fi
+# the paper's identification takes tau <= 10 % of the record inclusively,
+# like the table: 17,920 white samples at 97.3 Hz put the 10 % point at
+# m = 1792 exactly, where the truncated limit (1791.99...) left it out and
+# the minimum fell on 1536; a limit below one sample is no identification,
+# not "no limit" (a review, 2026-11-28)
+"$PY" -c "
+import random
+r = random.Random(7)
+print('\\n'.join('%.6f' % (r.random() - 0.5) for _ in range(17920)))" > "$T/w17920.txt"
+expect_exit 0 "allan --series at 97.3 Hz" "$H" allan --series "$T/w17920.txt" --rate 97.3 --no-sim --json "$T/w17920.json"
+if "$PY" -c "import json,sys; p=json.load(open(sys.argv[1]))['channels'][0]['paper']; sys.exit(0 if abs(p['tau_samples'] - 1792) < 0.01 else 1)" "$T/w17920.json"; then
+    pass "the 10 % point is in the paper's minimum search"; else fail "the paper's tau is not the 10 % point"; fi
+expect_exit 0 "allan with a limit below one sample" "$H" allan --series "$T/w17920.txt" --rate 100 --max-tau-frac 0.00005 --no-sim --json "$T/wtiny.json"
+if "$PY" -c "import json,sys; p=json.load(open(sys.argv[1]))['channels'][0].get('paper'); sys.exit(0 if not p else 1)" "$T/wtiny.json"; then
+    pass "no paper identification below one sample"; else fail "a paper identification without a tau range"; fi
+
 if [ "$fails" -ne 0 ]; then echo "test_allan.sh: $fails failure(s)"; exit 1; fi
 echo "test_allan.sh: all passed"
