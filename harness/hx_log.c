@@ -1293,7 +1293,13 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         return NULL;
     }
     if (got == 0) {
-        snprintf(err, err_size, "%s: empty file", path);
+        /* nothing decompressed: an empty file, or a .gz cut inside its
+         * first block (it said "empty file"; a review, 2026-11-28) */
+        int e;
+        (void)gzerror(r->gz, &e);
+        snprintf(err, err_size, "%s: %s", path,
+                 e == Z_BUF_ERROR ? "the gzip data ends before any text (a truncated .gz, e.g. an incomplete copy)"
+                                  : "empty file");
         gzclose(r->gz);
         free(r);
         return NULL;

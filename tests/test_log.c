@@ -407,6 +407,12 @@ static void test_gz_truncated(void **state)
     assert_non_null(strstr(log.error, "the gzip data ends early (a truncated .gz"));
     assert_null(strstr(log.warnings, "cut off mid-write"));
     hx_log_free(&log);
+    /* cut inside the first block: nothing decompresses; said as a
+     * truncated .gz, not as an empty file (a review, 2026-11-28) */
+    assert_int_equal(truncate(p, 25), 0);
+    rc = hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_true(rc < 0);
+    assert_non_null(strstr(err, "the gzip data ends before any text (a truncated .gz"));
     unlink(p);
 }
 
