@@ -1652,9 +1652,18 @@ hx_writer_t *hx_writer_open(const char *path, hx_format_t fmt, const hx_meta_t *
         hx_bin_header_t h;
         memset(&h, 0, sizeof h);
         h.rate_hz = (meta != NULL) ? meta->rate_hz : 0.0;
+        if (!(h.rate_hz >= 0.0 && h.rate_hz <= 1.0e6)) {
+            /* a rate the reader refuses (stamps a thousand times too dense
+             * imply MHz) is stored as 0, "not known": the samples carry
+             * their own stamps, and the file stays readable (it was written,
+             * then refused by every command; a review, 2026-11-28) */
+            h.rate_hz = 0.0;
+        }
         h.flags = 0;
-        if (meta != NULL) {
+        if (meta != NULL && h.rate_hz > 0.0) {
             h.flags |= meta->rate_nominal ? HX_BIN_FLAG_RATE_NOMINAL : 0u;
+        }
+        if (meta != NULL) {
             h.flags |= meta->has_temp ? HX_BIN_FLAG_TEMP : 0u;
             h.flags |= meta->has_seq ? HX_BIN_FLAG_SEQ : 0u;
             copy_str(h.sensor, sizeof h.sensor, meta->sensor);

@@ -172,6 +172,14 @@ expect_exit 2 "convert --rate 1e-9" "$H" convert vectors/walk.bin "$T/rtiny.csv"
 if [ -e "$T/rtiny.csv" ] && grep -qi nan "$T/rtiny.csv"; then fail "convert --rate 1e-9 wrote NaN"; else pass "convert --rate 1e-9 writes no NaN"; fi
 expect_exit 2 "convert --rate inf" "$H" convert vectors/walk.bin "$T/rinf.csv" --rate inf
 
+# stamps implying a rate the .bin header cannot hold (4 MHz): the rate is
+# stored as unknown and the file stays readable (convert wrote it, then
+# every command refused it; a review, 2026-11-28)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.9f,0,0,-9.8,0,0,0\n", i * 2.5e-7 }' > "$T/fast.csv"
+expect_exit 0 "convert a 4 MHz log to .bin" "$H" convert "$T/fast.csv" "$T/fast.bin"
+expect_exit 0 "info on that .bin" "$H" info "$T/fast.bin"
+expect_out "samples     2000" "the 4 MHz .bin reads back whole"
+
 # an output that names the input itself is refused before the input is read
 # (info, allan, psd and simgap overwrote the log after reading it; a review)
 "$H" convert vectors/walk.bin "$T/victim.csv" >/dev/null 2>&1
