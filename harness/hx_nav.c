@@ -763,8 +763,17 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         rc = u != 0 ? u : rc;
     }
     if (rc == 0 && !nav.aligned) {
-        snprintf(err, err_size, "%s: no still period of %.2f s found for the initial alignment", path,
-                 (double)cfg->align.min_still_s);
+        if (nav.stats.samples > 1u && nav.stats.duplicates + 1u >= nav.stats.samples) {
+            /* every sample at one time: no interval to integrate or to
+             * measure stillness over (it said "no still period"; a review,
+             * 2026-11-28) */
+            snprintf(err, err_size, "%s: the time stamps never advance (all %lu samples at one time): is the time "
+                                    "column filled?",
+                     path, (unsigned long)nav.stats.samples);
+        } else {
+            snprintf(err, err_size, "%s: no still period of %.2f s found for the initial alignment", path,
+                     (double)cfg->align.min_still_s);
+        }
         rc = 1;
     }
     return rc;

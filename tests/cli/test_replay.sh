@@ -330,6 +330,11 @@ expect_exit 0 "12 s at rest" "$H" replay "$T/rest12.csv"
 expect_out "almost no motion detected" "a long log without motion is flagged in the summary"
 expect_exit 0 "a walk" "$H" replay vectors/walk.bin
 if grep -q "almost no motion" "$T/out"; then fail "a walk flagged as motionless"; else pass "a walk is not flagged as motionless"; fi
+# a time column that never advances (all zeros) is named as such, not as a
+# missing still period (a review, 2026-11-28)
+awk -F, 'NR == 1 { print; next } { $1 = 0; print }' OFS=, "$T/walk_full.csv" > "$T/t0.csv"
+expect_exit 1 "time stamps that never advance" "$H" replay "$T/t0.csv" --quiet
+expect_err "the time stamps never advance" "a constant time column named"
 printf 't,ax,ay,az,gx,gy,gz\n0.0,0,0,-9.8,0,0,0\n' > "$T/tiny.csv"
 expect_exit 1 "too short to align" "$H" replay "$T/tiny.csv"
 expect_err "no still period" "alignment failure explained"
