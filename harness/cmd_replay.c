@@ -84,6 +84,17 @@ int hx_cmd_replay(int argc, char **argv)
             return HX_EXIT_USAGE;
         }
     }
+    {
+        /* the header is checked before any output is opened: a log that
+         * cannot be read at all empties no earlier trajectory (it did, and
+         * left an earlier --json beside it; a review, 2026-11-28) */
+        hx_reader_t *probe = hx_reader_open(a.pos[0], fmt, in_rate, err, sizeof err);
+        if (probe == NULL) {
+            hx_error("replay", "%s", err);
+            return HX_EXIT_DATA;
+        }
+        hx_reader_close(probe);
+    }
     if (out_path != NULL) {
         csv = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
         if (csv == NULL) {

@@ -330,6 +330,13 @@ expect_exit 0 "12 s at rest" "$H" replay "$T/rest12.csv"
 expect_out "almost no motion detected" "a long log without motion is flagged in the summary"
 expect_exit 0 "a walk" "$H" replay vectors/walk.bin
 if grep -q "almost no motion" "$T/out"; then fail "a walk flagged as motionless"; else pass "a walk is not flagged as motionless"; fi
+# a log that cannot be read at all (a bad header) touches no output: an
+# earlier trajectory stays (it was emptied, and the earlier JSON left beside
+# it; a review, 2026-11-28)
+printf 'time,x,y\n1,2,3\n' > "$T/badhdr.csv"
+echo "earlier" > "$T/keep.csv"
+expect_exit 1 "a bad header" "$H" replay "$T/badhdr.csv" --out "$T/keep.csv" --quiet
+if [ "$(cat "$T/keep.csv")" = "earlier" ]; then pass "a bad header leaves an earlier --out alone"; else fail "a bad header emptied --out"; fi
 # a time column that never advances (all zeros) is named as such, not as a
 # missing still period (a review, 2026-11-28)
 awk -F, 'NR == 1 { print; next } { $1 = 0; print }' OFS=, "$T/walk_full.csv" > "$T/t0.csv"
