@@ -39,7 +39,7 @@ static char *trim(char *s)
 int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_size)
 {
     FILE *f = fopen(path, "r");
-    char line[512];
+    char line[514]; /* 511 characters (profile-format.md), CR LF and the terminator */
     int lineno = 0, have_magic = 0, have_rate = 0, have[6] = { 0, 0, 0, 0, 0, 0 };
     int i;
     if (f == NULL) {
@@ -50,10 +50,13 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
     while (fgets(line, sizeof line, f) != NULL) {
         char *eq, *key, *val;
         lineno++;
-        if (strchr(line, '\n') == NULL && !feof(f)) {
-            snprintf(err, err_size, "%s:%d: line too long", path, lineno);
-            fclose(f);
-            return -1;
+        {
+            size_t len = strcspn(line, "\r\n");
+            if ((strchr(line, '\n') == NULL && !feof(f)) || len > 511u) {
+                snprintf(err, err_size, "%s:%d: line too long (at most 511 characters)", path, lineno);
+                fclose(f);
+                return -1;
+            }
         }
         key = trim(line);
         if (*key == '\0' || *key == '#') {
@@ -68,6 +71,13 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
         *eq = '\0';
         key = trim(key);
         val = trim(eq + 1);
+        if ((strcmp(key, "format") == 0 && have_magic) || (strcmp(key, "rate_hz") == 0 && have_rate)) {
+            /* a required key given twice: which one was meant is not known
+             * (the last one won silently; a review, 2026-11-28) */
+            snprintf(err, err_size, "%s:%d: %s given twice", path, lineno, key);
+            fclose(f);
+            return -1;
+        }
         if (strcmp(key, "format") == 0) {
             if (strcmp(val, PROFILE_MAGIC) != 0) {
                 snprintf(err, err_size, "%s:%d: format '%s' not supported (expected '%s')", path, lineno, val,

@@ -195,6 +195,37 @@ static void test_file_round_trip(void **state)
     fclose(f);
     assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
     assert_non_null(strstr(err, ":3:"));
+    /* a required key given twice is refused (rate_hz and format were taken
+     * from their last line; a review, 2026-11-28) */
+    assert_int_equal(hx_profile_write(path, &a, "twice", err, sizeof err), 0);
+    f = fopen(path, "a");
+    assert_non_null(f);
+    fputs("rate_hz = 100\n", f);
+    fclose(f);
+    assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
+    assert_non_null(strstr(err, "rate_hz given twice"));
+    /* a line of 511 characters is allowed (profile-format.md), also with
+     * CR LF; 512 is too long (510 was the most until 2026-11-28) */
+    {
+        int len;
+        for (len = 511; len <= 512; len++) {
+            int crlf;
+            for (crlf = 0; crlf < 2; crlf++) {
+                int k;
+                assert_int_equal(hx_profile_write(path, &a, "long line", err, sizeof err), 0);
+                f = fopen(path, "a");
+                assert_non_null(f);
+                fputc('#', f);
+                for (k = 1; k < len; k++) {
+                    fputc('x', f);
+                }
+                fputs(crlf ? "\r\n" : "\n", f);
+                fclose(f);
+                assert_int_equal(hx_profile_read(path, &b, err, sizeof err), len <= 511 ? 0 : -1);
+            }
+        }
+        assert_non_null(strstr(err, "line too long"));
+    }
     remove(path);
     assert_int_equal(hx_profile_load("/nonexistent/dir/p.profile", &b, err, sizeof err), -1);
 }
