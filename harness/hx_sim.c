@@ -589,7 +589,9 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             hx_profile_bias_eq6(&s->profile);
         }
         if (fnav_imuerr_config_from_profile(&s->err, &s->profile) != FNAV_OK) {
-            hx_error(cmd, "profile %s is not valid", s->profile_name);
+            hx_error(cmd, "profile %s is not valid for the error model: a noise density, correlation time or bias sd "
+                          "outside the ranges of its white and ar1 effects (sim --list-effects)",
+                     s->profile_name);
             return -1;
         }
         s->has_profile = 1;

@@ -345,8 +345,10 @@ void fnav_imuerr_effect_reset(fnav_imuerr_config_t *cfg, fnav_effect_id_t id)
 
 static int in_range(const fnav_effect_param_t *p, fnav_real_t v)
 {
-    double d = (double)v;
-    return fnav_isfinite(v) && d >= p->lo && d <= p->hi;
+    /* against the bounds in the value's own precision: in float, 1e-9 and
+     * 1e-12 round below the double bounds of the same name, and the
+     * documented inclusive ends were refused (a review, 2026-11-28) */
+    return fnav_isfinite(v) && v >= (fnav_real_t)p->lo && v <= (fnav_real_t)p->hi;
 }
 
 fnav_status_t fnav_imuerr_param_set(fnav_imuerr_config_t *cfg, fnav_effect_id_t id, int param, uint32_t ch_mask,
@@ -401,6 +403,32 @@ fnav_status_t fnav_imuerr_config_from_profile(fnav_imuerr_config_t *cfg, const f
     }
     if (fnav_profile_validate(p) != FNAV_OK) {
         return FNAV_E_CONFIG;
+    }
+    {
+        /* the catalogue's ranges of white and ar1 (a correlation time under
+         * 1 ms passed here, then init refused it and the harness blamed
+         * --effect options never given; a review, 2026-11-28) */
+        fnav_imuerr_config_t t = *cfg;
+        int id, k, c;
+        for (i = 0; i < 3; i++) {
+            t.white.density[i] = p->accel_noise_mps2_rthz[i];
+            t.white.density[3 + i] = p->gyro_noise_rps_rthz[i];
+            t.ar1.tau_s[i] = p->accel_tau_s[i];
+            t.ar1.tau_s[3 + i] = p->gyro_tau_s[i];
+            t.ar1.sigma[i] = p->accel_bias_sigma_mps2[i];
+            t.ar1.sigma[3 + i] = p->gyro_bias_sigma_rps[i];
+        }
+        for (id = FNAV_EFFECT_WHITE; id <= FNAV_EFFECT_AR1; id++) {
+            const fnav_effect_info_t *info = &k_effects[id];
+            for (k = 0; k < info->nparams; k++) {
+                const fnav_real_t *v = param_cptr(&t, &info->params[k]);
+                for (c = 0; c < FNAV_IMUERR_NCH; c++) {
+                    if (!in_range(&info->params[k], v[c])) {
+                        return FNAV_E_CONFIG;
+                    }
+                }
+            }
+        }
     }
     for (i = 0; i < 3; i++) {
         cfg->white.density[i] = p->accel_noise_mps2_rthz[i];
