@@ -714,10 +714,18 @@ static int parse_leg(hx_motion_t *m, char *item)
         }
     }
     if (strcmp(name, "home") == 0) {
+        if (a1 != NULL) {
+            return fail(m, "home takes no value", a1);
+        }
         return home_leg(m);
     }
     if (a1 == NULL) {
         return fail(m, "motion script item needs a value (NAME:VALUE)", name);
+    }
+    if (a2 != NULL && (strcmp(name, "stand") == 0 || strcmp(name, "turn") == 0 || strcmp(name, "elevator") == 0)) {
+        /* only walk, run and the stairs take a second value: an extra one
+         * was ignored without a word (a review, 2026-11-28) */
+        return fail(m, "stand, turn and elevator take one value (NAME:VALUE)", a2);
     }
     if (strcmp(name, "stand") == 0) {
         if (!(x1 > 0.0) || x1 > 1e6) {
