@@ -87,6 +87,7 @@ typedef struct {
     int warnings;
     /* samples */
     uint32_t samples;
+    uint32_t recorded;            /* samples the recording took (it stops at a write error) */
     int64_t t_first_ns, t_last_ns;
     double acc_norm, gyr_norm;
     /* recording */
@@ -263,6 +264,8 @@ static void on_sample(live_t *L, const fnav_sample_t *s)
         if (hx_writer_write(L->rec, s) != FNAV_OK) {
             hx_error(CMD, "%s: write failed (%s); recording stopped", L->record_path, strerror(errno));
             L->rec_failed = 1;
+        } else {
+            L->recorded++;
         }
     }
 }
@@ -413,16 +416,22 @@ static void plot_async(live_t *L, const char *png)
         fprintf(p.gp, "set xlabel 't (s)'\nset ylabel '|a| (m/s^2)'\nset y2label '|w| (rad/s)'\n"
                       "set y2tics\nset ytics nomirror\n");
         fprintf(p.gp, "plot '-' using 1:2 with lines title '|a|', '-' using 1:2 axes x1y2 with lines title '|w|'\n");
-        for (i = 0; i < h->n; i++) {
-            size_t k = (h->head + h->cap - h->n + i) % h->cap;
-            fprintf(p.gp, "%.4f %.5g\n", h->t[k], h->a[k]);
+        {
+            /* the last PLOT_SECONDS of the history, as the title says (the
+             * history holds 20,000 samples: 50 s at 400 Hz were drawn; a
+             * review, 2026-11-28) */
+            const double t_from = h->n > 0 ? h->t[(h->head + h->cap - 1u) % h->cap] - PLOT_SECONDS : 0.0;
+            int col;
+            for (col = 0; col < 2; col++) {
+                for (i = 0; i < h->n; i++) {
+                    size_t k = (h->head + h->cap - h->n + i) % h->cap;
+                    if (h->t[k] >= t_from) {
+                        fprintf(p.gp, "%.4f %.5g\n", h->t[k], col == 0 ? h->a[k] : h->w[k]);
+                    }
+                }
+                fprintf(p.gp, "e\n");
+            }
         }
-        fprintf(p.gp, "e\n");
-        for (i = 0; i < h->n; i++) {
-            size_t k = (h->head + h->cap - h->n + i) % h->cap;
-            fprintf(p.gp, "%.4f %.5g\n", h->t[k], h->w[k]);
-        }
-        fprintf(p.gp, "e\n");
         if (hx_plot_close(&p, CMD) != 0 || rename(tmp, png) != 0) {
             _exit(3);
         }
@@ -641,7 +650,10 @@ int hx_cmd_live(int argc, char **argv)
         double span = span_s(&L);
         uint32_t missing = L.have_end && L.end_count > L.samples ? L.end_count - L.samples : 0u;
         uint32_t extra = L.have_end && L.samples > L.end_count ? L.samples - L.end_count : 0u;
-        if (L.traj.aligned || (json_path != NULL && L.traj.n > 0)) {
+        if (L.traj.aligned || json_path != NULL) {
+            /* --json is always written, as replay's: without a frame it was
+             * skipped, and an earlier run's file stayed beside the emptied
+             * --out (a review, 2026-11-28) */
             hx_nav_summary_t sum;
             hx_nav_summarize(&L.traj, &sum);
             if (L.traj.aligned) {
@@ -681,7 +693,9 @@ int hx_cmd_live(int argc, char **argv)
                     (unsigned)L.status.tx_dropped);
         }
         if (L.record_path != NULL && L.rec != NULL) {
-            fprintf(sum_out, "live: recorded %u samples to %s%s\n", (unsigned)L.samples, L.record_path,
+            /* what the file holds, not what was received (after a write
+             * error the rest of the read was counted too; a review) */
+            fprintf(sum_out, "live: recorded %u samples to %s%s\n", (unsigned)L.recorded, L.record_path,
                    L.rec_failed ? " (recording failed, see above)" : "");
         } else if (L.record_path != NULL) {
             fprintf(sum_out, "live: nothing recorded: no sample was received (%s not written)\n", L.record_path);
@@ -696,7 +710,12 @@ int hx_cmd_live(int argc, char **argv)
                    (unsigned)L.samples);
         } else if (gone) {
             fprintf(sum_out, "live: end: the port went away\n");
-            hx_error(CMD, "%s; the %u samples received before are recorded", gone_msg, (unsigned)L.samples);
+            if (L.record_path != NULL) {
+                hx_error(CMD, "%s; %u samples were received before it, %u recorded", gone_msg, (unsigned)L.samples,
+                         (unsigned)L.recorded);
+            } else {
+                hx_error(CMD, "%s; the %u samples received before it are navigated", gone_msg, (unsigned)L.samples);
+            }
         }
         if (L.restarted) {
             hx_error(CMD, "the sender restarted: time went back from %.6f s to %.6f s at sample frame seq %u; "

@@ -103,6 +103,7 @@ int hx_cmd_stream(int argc, char **argv)
     int exit_code = HX_EXIT_OK;
     size_t i;
     uint32_t sent = 0;
+    int end_queued = 0;
     hx_progress_t prog;
     struct sigaction sa;
 
@@ -216,10 +217,18 @@ int hx_cmd_stream(int argc, char **argv)
     }
     if (!tx.failed && !g_stop && !(hangup > 0 && (long)i == hangup)) {
         tx.n += fnav_wire_encode_end(tx_room(&tx), FNAV_WIRE_MAX_FRAME, tx.seq++, sent);
+        end_queued = 1;
     }
     if (tx_flush(&tx) == 0 && hx_serial_drain(tx.port) != 0) {
         hx_error(CMD, "%s", hx_serial_error(tx.port));
         tx.failed = 1;
+    }
+    if (end_queued && !tx.failed) {
+        /* every sample and the END frame went out: a signal that came while
+         * the last batch drained interrupted nothing (it exited 130 while
+         * the receiver had the END frame and every sample; a review,
+         * 2026-11-28) */
+        g_stop = 0;
     }
     hx_progress_end(&prog);
     hx_serial_close(tx.port);

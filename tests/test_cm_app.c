@@ -171,6 +171,32 @@ static void test_isr_to_frames(void **state)
     }
     assert_int_equal(rx.dec.stats.lost, 0);
     assert_int_equal(app.port_ctx.frames, 1 + 1000 + 10 + rx.by_type[FNAV_WIRE_NAV]);
+    assert_true((rx.info.flags & FNAV_WIRE_INFO_SEQ) != 0u);
+}
+
+/* Every second sample echoed: the INFO frame announces the SAMPLE stream's
+ * own rate (200 Hz) and no sensor counter, whose steps of 2 a receiver
+ * took for 1,999 lost samples in 4,000 (a review, 2026-11-28). */
+static void test_sample_every_info(void **state)
+{
+    static fnav_cm_app_t app;
+    static rx_t rx;
+    fnav_cm_app_config_t cfg = fnav_cm_app_config_default;
+    uint32_t i;
+    (void)state;
+    reset_board();
+    cfg.sample_every = 2;
+    assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_OK);
+    assert_int_equal(fnav_cm_app_announce(&app), FNAV_OK);
+    for (i = 0; i < 100; i++) {
+        fnav_cm_sample_isr(&app.port_ctx);
+        (void)fnav_cm_app_poll(&app);
+    }
+    receive(&rx);
+    assert_int_equal(rx.by_type[FNAV_WIRE_INFO], 1);
+    assert_true(rx.info.rate_hz == 200.0);
+    assert_true((rx.info.flags & FNAV_WIRE_INFO_SEQ) == 0u);
+    assert_int_equal(rx.by_type[FNAV_WIRE_SAMPLE], 50);
 }
 
 /* A main loop that falls behind: the ring keeps the oldest samples, counts
@@ -236,6 +262,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_config),
         cmocka_unit_test(test_isr_to_frames),
+        cmocka_unit_test(test_sample_every_info),
         cmocka_unit_test(test_ring_overrun),
         cmocka_unit_test(test_busy_link),
     };

@@ -313,11 +313,48 @@ else
     fail "live on a hang-up: $msg"
 fi
 
-# --- nobody sends: --timeout ends the run
-start_live --timeout 1
+# --- nobody sends: --timeout ends the run; --json is written all the same
+# (with no frame it was skipped, and an earlier run's file stayed beside the
+# emptied --out; a review, 2026-11-28)
+echo '{"stale": "an earlier run"}' >"$T/stale.json"
+start_live --timeout 1 --json "$T/stale.json"
 wait_live
 expect_rc "$LIVE_RC" 1 "live --timeout with no sender"
 grep_in "$T/live.err" "no valid frame for" "the timeout is explained"
+if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d.get('aligned') is False else 1)" "$T/stale.json"; then
+    pass "--json written without a frame (aligned false)"; else fail "--json not rewritten: $(cat "$T/stale.json")"; fi
+
+# --- a recording that cannot be written (a full disk): the summary counts
+# what the file holds, not what was received (it said 40 recorded)
+start_live --record /dev/full
+stream vectors/walk.bin --speed 0
+wait_live
+grep_in "$T/live.out" "recorded 0 samples" "a failed recording counts what it holds"
+
+# --- stream: an interrupt while the END frame drains interrupts nothing:
+# every sample and END reach the receiver, exit 0 (it exited 130; a review)
+stop_link
+start_link # a fresh pair: the stream above was not read to its end
+# 622 samples: the last write (78 samples and END, after four full 8 KB
+# batches) is the one the pty pair's buffers cannot take until live reads
+head -623 "$T/orig.csv" >"$T/short.csv"
+LD_PRELOAD=$SEAM timeout $LIMIT "$H" stream "$T/short.csv" "$B" --speed 0 >"$T/stream.out" 2>"$T/stream.err" &
+STREAM=$!
+sleep 1
+kill -INT "$STREAM" 2>/dev/null
+sleep 0.3
+start_live --timeout 5
+wait "$STREAM"
+STREAM_RC=$?
+STREAM=""
+wait_live
+if grep -q "END frame, the sender sent 622 samples, 622 received" "$T/live.out"; then
+    expect_rc "$STREAM_RC" 0 "stream interrupted while its END frame drained"
+else
+    # smaller pty buffers (another kernel) block an earlier batch: then the
+    # interrupt did stop the stream before END, and 130 is right
+    expect_rc "$STREAM_RC" 130 "stream interrupted before its END frame"
+fi
 stop_link
 
 if [ "$fails" -ne 0 ]; then
