@@ -1373,7 +1373,9 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
         snprintf(err, err_size, "%s", msg);
         return -1;
     }
-    if (bad && !r->opts.quiet) {
+    if (bad) {
+        /* a warning, shown under --quiet too (it hides the progress only;
+         * a review, 2026-11-28) */
         hx_warn("simgap", "%s: %s", path, msg);
     }
     return 0;
@@ -1405,7 +1407,7 @@ static int constant_channels(const hx_log_t *log, const char *path, sg_result_t 
                                 "nothing to diagnose");
         return -1;
     }
-    for (ch = 0; ch < SG_NCH && !r->opts.quiet; ch++) {
+    for (ch = 0; ch < SG_NCH; ch++) {
         if (r->constant[ch]) {
             hx_warn("simgap", "%s: channel %s holds one value (%.6g %s) over the whole log: stuck, or its noise is "
                               "below the output's step; %s",

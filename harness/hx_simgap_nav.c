@@ -1421,13 +1421,22 @@ static void stance_noise(const walk_t *w, const navrun_t *r, long a, long b, dou
 }
 
 /* Saturation: values at the channel's extreme repeated (flat tops). */
-static void find_saturation(const walk_t *w, long a, long b, double sat[SG_NCH], int nsat[SG_NCH])
+static void find_saturation(const walk_t *w, const int *constant, long a, long b, double sat[SG_NCH],
+                            int nsat[SG_NCH])
 {
     int c;
     long k;
     for (c = 0; c < SG_NCH; c++) {
         double mx = 0.0;
         int n = 0;
+        if (constant[c]) {
+            /* a stuck output is no clipping: every sample would be a "flat
+             * top" and the diagnosis answered saturation at its value (a
+             * review, 2026-11-28) */
+            sat[c] = 0.0;
+            nsat[c] = 0;
+            continue;
+        }
         for (k = a; k < b; k++) {
             double x = fabs(c < 3 ? w->acc[k][c] : w->gyr[k][c - 3]);
             mx = x > mx ? x : mx;
@@ -1528,7 +1537,8 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
         }
         free(x);
     }
-    find_saturation(&rw, r->segs.start[SG_FIT][0], r->segs.start[SG_FIT][0] + r->segs.n[SG_FIT][0], nv->sat, nv->nsat);
+    find_saturation(&rw, r->constant, r->segs.start[SG_FIT][0], r->segs.start[SG_FIT][0] + r->segs.n[SG_FIT][0],
+                    nv->sat, nv->nsat);
     /* the twin's truth */
     nv->mf = (double(*)[3])malloc(((size_t)r->n + 1) * sizeof *nv->mf);
     nv->mw = (double(*)[3])malloc(((size_t)r->n + 1) * sizeof *nv->mw);
@@ -1655,8 +1665,13 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                 L->x_lo = pl->p[j].x_lo;
                 L->x_hi = pl->p[j].x_hi;
                 L->peak_z = cc->z[j];
-                L->ratio = pl->p[j].kind == SG_NAV_WHITE ? nv->real_v[SG_FULL][j] - cc->twin_mean[j]
-                                                        : exp(nv->real_v[SG_FULL][j] - cc->twin_mean[j]);
+                /* the navigation statistics are logs (ratio real/twin) but
+                 * whiteness and the lattice's normal score are not (real -
+                 * twin, as for a static log; the lattice read exp(168) =
+                 * 2e78; a review, 2026-11-28) */
+                L->ratio = (L->dom == SG_NAV && pl->p[j].kind != SG_NAV_WHITE)
+                               ? exp(nv->real_v[SG_FULL][j] - cc->twin_mean[j])
+                               : nv->real_v[SG_FULL][j] - cc->twin_mean[j];
                 L->npts = 1;
             }
         }
@@ -1682,7 +1697,8 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
         st->G_hold_before = nv->cmp[SG_HOLD].G;
         st->G_fit_before = nv->cmp[SG_FIT].G;
         firsts_of(&nv->real, rw.t_ns, 0, r->n, fr);
-        find_saturation(&rw, r->segs.start[SG_HOLD][0], r->segs.start[SG_HOLD][0] + r->segs.n[SG_HOLD][0], sath, nsath);
+        find_saturation(&rw, r->constant, r->segs.start[SG_HOLD][0], r->segs.start[SG_HOLD][0] + r->segs.n[SG_HOLD][0],
+                        sath, nsath);
         for (f = 0; f < 3 && r->confident; f++) {
             navcand_t cd;
             if (!r->opts.quiet) {
@@ -1826,6 +1842,10 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
             int bi = -1, m2;
             memset(s2, 0, sizeof *s2);
             s2->selected = -1;
+            /* no twins are run before a later step: its held-out and fit G
+             * are not known (null in the JSON; they read 0; a review,
+             * 2026-11-28) */
+            s2->G_hold_before = s2->G_fit_before = (double)NAN;
             for (f = 0; f < 3; f++) {
                 navcand_t cd;
                 int used = 0;
@@ -2270,6 +2290,21 @@ int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const
     }
     ns = stances_of(&nv->real, 0, nv->n, st, MAX_ST);
     fprintf(p.gp, "set multiplot layout 2,1 title 'Zero-velocity-update innovations of the real walk'\n");
+    if (ns == 0) {
+        /* no stance, no update: two empty panels that say so (gnuplot
+         * refused the empty log axis, and the run exited 3 instead of the
+         * too-short answer's 1; a review, 2026-11-28) */
+        fprintf(p.gp, "set xrange [0:1]\nset yrange [0:1]\nset xlabel 't [s]'\nset ylabel 'NIS'\n"
+                      "set title 'NIS of the first update of each stance: no stance detected'\nplot -1 notitle\n"
+                      "set title 'mean NIS over each stance: no stance detected'\nplot -1 notitle\n"
+                      "unset multiplot\n");
+        free(st);
+        return hx_plot_close(&p, cmd);
+    }
+    /* one stance, or all at one time: a range around them (gnuplot warned
+     * of an empty x range) */
+    fprintf(p.gp, "set xrange [%.4f:%.4f]\n", (double)st[0].first / nv->rate_hz - 0.5,
+            (double)st[ns - 1].first / nv->rate_hz + 0.5);
     fprintf(p.gp, "$d << EOD\n");
     for (i = 0; i < ns; i++) {
         /* stance start time from the run's own sample index (uniform rate) */

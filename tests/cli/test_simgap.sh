@@ -271,6 +271,15 @@ if [ -n "$D" ] && [ -f "$D/xio_ngimu_gait/long_walk.csv" ]; then
         pass "only gy's lattice selected as quant" || fail "NGIMU lattices: $(cat "$T/pyerr")"
     json "$T/xl.json" 'any(c["effect"] == "quant" and c["selected"] and c["G_held_out"] < j["navigation"]["steps"][0]["G_held_out_before"] for c in j["navigation"]["steps"][0]["candidates"])' &&
         pass "gy's quantiser lowers the held-out navigation gap" || fail "NGIMU held-out gap: $(cat "$T/pyerr")"
+    # a walk's lattice location gives real - twin of its normal score, as a
+    # static log's does (it gave exp of it: 2e78 on the short walk; a review)
+    json "$T/xl.json" 'all(0 < l["ratio"] < 1e4 for l in j["locations"] if l["domain"] == "lattice") and any(l["domain"] == "lattice" for l in j["locations"])' &&
+        pass "a walk's lattice location: real - twin" || fail "walk lattice ratio: $(cat "$T/pyerr")"
+    # a later step of the walk's selection ran no twins before it: its
+    # held-out G is null, not 0 (a review)
+    expect_exit 0 "GX2 walk 2" "$H" simgap "$D/openshoe_gx2/Measurement_100521_2_data_inert.txt" --closed --quiet --seeds 4 --json "$T/g2.json"
+    json "$T/g2.json" 'len(j["navigation"]["steps"]) > 1 and j["navigation"]["steps"][0]["G_held_out_before"] > 0 and all(s["G_held_out_before"] is None for s in j["navigation"]["steps"][1:])' &&
+        pass "later walk steps: held-out G null" || fail "walk steps G: $(cat "$T/pyerr")"
 else
     echo "SKIP NGIMU lattice test (shared data not found; set FNAV_DATA_DIR)"
 fi
@@ -283,6 +292,18 @@ json "$T/w2.json" 'j["verdict"]["answer"] == "too-short" and "stances" in j["too
 # has domain_detected; a walk analysed as a static log is a user's choice)
 expect_exit 0 "short walk forced static" "$H" simgap "$T/w2.csv" --static --quiet --seeds 3
 expect_out "^domain: static as given (--static); the log looks like a walk" "forced domain said against the detected one"
+
+# a profile whose name holds a quote: the plots are written (it ended the
+# gnuplot string, exit 3, psd.png and z.png missing; a review, 2026-11-28)
+sed 's/^name = .*/name = Bob'"'"'s MEMS/' docs/profiles/generic-mems.profile > "$T/bob.profile"
+expect_exit 0 "a profile name with a quote, --plot" "$H" simgap "$T/m.csv" --quiet --seeds 4 --max-effects 0 --profile "$T/bob.profile" --plot "$T/bobp"
+[ -s "$T/bobp/allan.png" ] && [ -s "$T/bobp/psd.png" ] && [ -s "$T/bobp/z.png" ] && pass "plots with a quoted profile name" || fail "quoted profile plots: $(ls "$T/bobp" 2>&1)"
+# a walk without a stance (a spinning foot): too short, exit 1, and the
+# innovation plot says so instead of failing (exit 3; a review)
+"$H" sim --motion stand --duration 60 --profile mtx --out "$T/sp0.csv" >/dev/null 2>&1 || fail "sim for spin"
+awk -F, 'BEGIN { OFS = "," } NR == 1 { print; next } $1 < 30 { $7 = $7 + 3; print }' "$T/sp0.csv" > "$T/spin.csv"
+expect_exit 1 "a walk without a stance, --plot" "$H" simgap "$T/spin.csv" --walk --quiet --plot "$T/spinp"
+[ -s "$T/spinp/innovations.png" ] && pass "innovation plot without a stance" || fail "no innovation plot: $(ls "$T/spinp" 2>&1)"
 
 # a channel that holds one value over the whole log (stuck): said as such, not
 # as a log "too short" for its Allan points; the other channels are diagnosed
@@ -299,6 +320,15 @@ json "$T/stk.json" 'j["confident"] and j["constant_channels"] == [{"channel": "a
     pass "stuck channel: the others diagnosed and attributed" || fail "stuck channel JSON: $(cat "$T/pyerr")"
 [ -s "$T/stkplot/allan.png" ] && [ -s "$T/stkplot/psd.png" ] && [ -s "$T/stkplot/z.png" ] &&
     pass "stuck channel: plots written" || fail "stuck channel plots"
+# --quiet drops the progress, not the warnings (it hid this one; a review)
+expect_exit 0 "stuck ax, --quiet" "$H" simgap "$T/stk.csv" --quiet --seeds 3 --max-effects 0
+expect_err "channel ax holds one value" "stuck channel: warned under --quiet"
+# a stuck channel on a walk is no saturation (every sample its own extreme:
+# it was answered saturation at the stuck value; a review)
+awk -F, 'BEGIN { OFS = "," } NR > 1 { $5 = "0.002" } { print }' "$T/w.csv" > "$T/wstk.csv"
+expect_exit 0 "walk with a stuck gx" "$H" simgap "$T/wstk.csv" --quiet --seeds 4 --json "$T/wstk.json"
+json "$T/wstk.json" 'all(s["effect"] != "saturation" for s in j["navigation"]["selected"])' &&
+    pass "a stuck channel is not saturation" || fail "stuck walk channel: $(cat "$T/pyerr"; grep verdict "$T/out")"
 # progress (not a terminal: a line per tenth of the work, after the first
 # second): never backwards, and 100 % only at the end. It was reached a third
 # into a one-hour log's run and then stayed silent (the estimate counted four
