@@ -720,6 +720,18 @@ static void test_sizes(void **state)
  * amplitude (within 1 %), an 80 Hz sine (above the new Nyquist rate, it
  * would alias to 20 Hz) is removed (below 1 %), duplicates are dropped and
  * counted, and upsampling is refused. */
+/* An input log of n zeroed samples for the resampler's tests. */
+static void log_alloc(hx_log_t *in, size_t n)
+{
+    memset(in, 0, sizeof *in);
+    in->t_ns = (int64_t *)calloc(n, sizeof *in->t_ns);
+    in->seq = (uint32_t *)calloc(n, sizeof *in->seq);
+    in->acc = (double(*)[3])calloc(n, sizeof *in->acc);
+    in->gyr = (double(*)[3])calloc(n, sizeof *in->gyr);
+    in->temp = (double *)calloc(n, sizeof *in->temp);
+    assert_true(in->t_ns && in->seq && in->acc && in->gyr && in->temp);
+}
+
 /* The summary's stance mid-points: the middle of the detector's stance in
  * each segmented phase, not of the segmented phase (which lags the detector
  * by the segmentation's hysteresis) and not before the alignment. */
@@ -757,13 +769,7 @@ static void test_resampler(void **state)
     double fs = 0.0, a10 = 0.0, a80 = 0.0;
     char err[320];
     (void)state;
-    memset(&in, 0, sizeof in);
-    in.t_ns = (int64_t *)calloc(n + 1, sizeof *in.t_ns);
-    in.seq = (uint32_t *)calloc(n + 1, sizeof *in.seq);
-    in.acc = (double(*)[3])calloc(n + 1, sizeof *in.acc);
-    in.gyr = (double(*)[3])calloc(n + 1, sizeof *in.gyr);
-    in.temp = (double *)calloc(n + 1, sizeof *in.temp);
-    assert_true(in.t_ns && in.seq && in.acc && in.gyr && in.temp);
+    log_alloc(&in, n + 1);
     for (i = 0; i < n; i++) {
         double t = (double)i / 400.0;
         in.t_ns[i] = (int64_t)llround(t * 1e9);
@@ -816,13 +822,7 @@ static void test_resampler_time_jump(void **state)
     int64_t t_after = 0, longest = 0;
     char err[320];
     (void)state;
-    memset(&in, 0, sizeof in);
-    in.t_ns = (int64_t *)calloc(n, sizeof *in.t_ns);
-    in.seq = (uint32_t *)calloc(n, sizeof *in.seq);
-    in.acc = (double(*)[3])calloc(n, sizeof *in.acc);
-    in.gyr = (double(*)[3])calloc(n, sizeof *in.gyr);
-    in.temp = (double *)calloc(n, sizeof *in.temp);
-    assert_true(in.t_ns && in.seq && in.acc && in.gyr && in.temp);
+    log_alloc(&in, n);
     for (i = 0; i < n; i++) {
         /* 400 Hz; samples 1000-1003 lost; 100 s pause after sample 2000 */
         const size_t k = i < 1000 ? i : i + 4;
@@ -871,13 +871,7 @@ static void test_resampler_fractional(void **state)
     const double w = 2.0 * 3.14159265358979 * 30.0;
     char err[320];
     (void)state;
-    memset(&in, 0, sizeof in);
-    in.t_ns = (int64_t *)calloc(n, sizeof *in.t_ns);
-    in.seq = (uint32_t *)calloc(n, sizeof *in.seq);
-    in.acc = (double(*)[3])calloc(n, sizeof *in.acc);
-    in.gyr = (double(*)[3])calloc(n, sizeof *in.gyr);
-    in.temp = (double *)calloc(n, sizeof *in.temp);
-    assert_true(in.t_ns && in.seq && in.acc && in.gyr && in.temp);
+    log_alloc(&in, n);
     for (i = 0; i < n; i++) {
         double t = (double)i / 250.0;
         in.t_ns[i] = (int64_t)llround(t * 1e9);

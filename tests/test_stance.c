@@ -476,6 +476,28 @@ static void test_threshold_both_below(void **state)
     assert_int_equal(frames, 100);
 }
 
+/* Gait events popped from the detector: the last foot-off and foot-strike
+ * (as sample indices at `rate`) and how many of each. */
+typedef struct {
+    long fo_at, fs_at;
+    int nfo, nfs;
+} events_t;
+
+static void pop_events(fnav_stance_t *st, double rate, events_t *ev)
+{
+    fnav_stance_out_t o;
+    while (fnav_stance_pop(st, &o) == FNAV_OK) {
+        if (o.events & FNAV_STANCE_EV_FOOT_OFF) {
+            ev->fo_at = (long)llround((double)o.fo_t_ns * rate * 1e-9);
+            ev->nfo++;
+        }
+        if (o.events & FNAV_STANCE_EV_FOOT_STRIKE) {
+            ev->fs_at = (long)llround((double)o.fs_t_ns * rate * 1e-9);
+            ev->nfs++;
+        }
+    }
+}
+
 /* Gait events: a push-off peak of |f| at a known sample after the stance
  * ends is the foot-off; a jerk onset before the stance begins is the
  * foot-strike. */
@@ -483,10 +505,9 @@ static void test_gait_events(void **state)
 {
     fnav_stance_t st;
     fnav_stance_config_t c = fnav_stance_config_default;
-    fnav_stance_out_t o;
     const double rate = 100.0;
-    long k, n = 300, fo_at = -1, fs_at = -1;
-    int nfo = 0, nfs = 0;
+    long k, n = 300;
+    events_t ev = { -1, -1, 0, 0 };
     (void)state;
     c.rate_hz = (fnav_real_t)rate;
     assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
@@ -510,21 +531,12 @@ static void test_gait_events(void **state)
         } else {
             fnav_stance_finish(&st);
         }
-        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
-            if (o.events & FNAV_STANCE_EV_FOOT_OFF) {
-                fo_at = (long)llround((double)o.fo_t_ns * rate * 1e-9);
-                nfo++;
-            }
-            if (o.events & FNAV_STANCE_EV_FOOT_STRIKE) {
-                fs_at = (long)llround((double)o.fs_t_ns * rate * 1e-9);
-                nfs++;
-            }
-        }
+        pop_events(&st, rate, &ev);
     }
-    assert_int_equal(nfo, 1);
-    assert_int_equal(nfs, 1);
-    assert_int_equal(fo_at, 104);
-    assert_int_equal(fs_at, 152);
+    assert_int_equal(ev.nfo, 1);
+    assert_int_equal(ev.nfs, 1);
+    assert_int_equal(ev.fo_at, 104);
+    assert_int_equal(ev.fs_at, 152);
 }
 
 /* A swing shorter than the foot-off window that ends in a pause shorter
@@ -537,10 +549,9 @@ static void test_foot_off_short_pause(void **state)
 {
     fnav_stance_t st;
     fnav_stance_config_t c = fnav_stance_config_default;
-    fnav_stance_out_t o;
     const double rate = 200.0;
-    long k, fo_at = -1, fs_at = -1;
-    int nfo = 0, nfs = 0;
+    long k;
+    events_t ev = { -1, -1, 0, 0 };
     (void)state;
     c.rate_hz = (fnav_real_t)rate;
     c.adaptive = 0;
@@ -564,21 +575,12 @@ static void test_foot_off_short_pause(void **state)
         } else {
             fnav_stance_finish(&st);
         }
-        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
-            if (o.events & FNAV_STANCE_EV_FOOT_OFF) {
-                fo_at = (long)llround((double)o.fo_t_ns * rate * 1e-9);
-                nfo++;
-            }
-            if (o.events & FNAV_STANCE_EV_FOOT_STRIKE) {
-                fs_at = (long)llround((double)o.fs_t_ns * rate * 1e-9);
-                nfs++;
-            }
-        }
+        pop_events(&st, rate, &ev);
     }
-    assert_int_equal(nfo, 1);
-    assert_int_equal(nfs, 1);
-    assert_int_equal(fo_at, 105);
-    assert_true(fs_at > fo_at);
+    assert_int_equal(ev.nfo, 1);
+    assert_int_equal(ev.nfs, 1);
+    assert_int_equal(ev.fo_at, 105);
+    assert_true(ev.fs_at > ev.fo_at);
 }
 
 /* Time jumps below the 35.8 min that clears the jerk history are looked
