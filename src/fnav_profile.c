@@ -61,6 +61,7 @@ fnav_status_t fnav_profile_from_paper(fnav_profile_t *p, const char *name, doubl
                                       const fnav_profile_paper_row_t rows[6])
 {
     const double deg2rad = 3.14159265358979323846 / 180.0;
+    fnav_profile_t t;
     int i;
     if (p == NULL || name == NULL || rows == NULL || !(rate_hz > 0.0)) {
         return FNAV_E_ARG;
@@ -70,19 +71,24 @@ fnav_status_t fnav_profile_from_paper(fnav_profile_t *p, const char *name, doubl
             return FNAV_E_ARG;
         }
     }
-    copy_name(p->name, name);
-    p->rate_hz = (fnav_real_t)rate_hz;
+    copy_name(t.name, name);
+    t.rate_hz = (fnav_real_t)rate_hz;
     for (i = 0; i < 3; i++) {
-        p->accel_noise_mps2_rthz[i] = (fnav_real_t)rows[i].noise;
-        p->accel_tau_s[i] = (fnav_real_t)(rows[i].tau_samples / rate_hz); /* eq. (5) inverted */
-        p->accel_bias_sigma_mps2[i] = (fnav_real_t)rows[i].sigma_bias;
-        p->gyro_noise_rps_rthz[i] = (fnav_real_t)(rows[3 + i].noise * deg2rad);
-        p->gyro_tau_s[i] = (fnav_real_t)(rows[3 + i].tau_samples / rate_hz);
-        p->gyro_bias_sigma_rps[i] = (fnav_real_t)(rows[3 + i].sigma_bias * deg2rad);
+        t.accel_noise_mps2_rthz[i] = (fnav_real_t)rows[i].noise;
+        t.accel_tau_s[i] = (fnav_real_t)(rows[i].tau_samples / rate_hz); /* eq. (5) inverted */
+        t.accel_bias_sigma_mps2[i] = (fnav_real_t)rows[i].sigma_bias;
+        t.gyro_noise_rps_rthz[i] = (fnav_real_t)(rows[3 + i].noise * deg2rad);
+        t.gyro_tau_s[i] = (fnav_real_t)(rows[3 + i].tau_samples / rate_hz);
+        t.gyro_bias_sigma_rps[i] = (fnav_real_t)(rows[3 + i].sigma_bias * deg2rad);
     }
     /* the conversions can leave float's range (an infinite rate gives tau
-     * 0): the result must pass the same check as a profile file */
-    return fnav_profile_validate(p) == FNAV_OK ? FNAV_OK : FNAV_E_ARG;
+     * 0): the result must pass the same check as a profile file, and *p is
+     * written only then (bad data leaves it as it was) */
+    if (fnav_profile_validate(&t) != FNAV_OK) {
+        return FNAV_E_ARG;
+    }
+    *p = t;
+    return FNAV_OK;
 }
 
 fnav_status_t fnav_profile_builtin(fnav_profile_t *p, fnav_profile_id_t id)

@@ -154,6 +154,23 @@ static void test_validate(void **state)
     memcpy(rows, fnav_profile_paper_table(FNAV_PROFILE_NAVCHIP), sizeof rows);
     assert_int_equal(fnav_profile_from_paper(&p, "x", 0.0, rows), FNAV_E_ARG);
     assert_int_equal(fnav_profile_from_paper(&p, "x", (double)INFINITY, rows), FNAV_E_ARG);
+    /* a conversion that leaves the working precision's range (an infinite
+     * rate makes every tau 0; in float 1e39 Hz is an infinite rate and
+     * 1e-46 Hz a zero one) is refused and leaves the profile as it was
+     * (CONTRIBUTING: bad data leaves the object unchanged; it was half
+     * converted: name, rate and every value overwritten) */
+    {
+        static const double bad_rates[3] = { (double)INFINITY, FNAV_USE_DOUBLE ? (double)INFINITY : 1.0e39,
+                                             FNAV_USE_DOUBLE ? (double)INFINITY : 1.0e-46 };
+        int r;
+        for (r = 0; r < 3; r++) {
+            fnav_profile_t before;
+            assert_int_equal(fnav_profile_builtin(&p, FNAV_PROFILE_MTX), FNAV_OK);
+            before = p;
+            assert_int_equal(fnav_profile_from_paper(&p, "x", bad_rates[r], rows), FNAV_E_ARG);
+            assert_memory_equal(&p, &before, sizeof p);
+        }
+    }
     /* another identification rate: tau in samples scales with it */
     assert_int_equal(fnav_profile_from_paper(&p, "at100", 100.0, rows), FNAV_OK);
     FNAV_ASSERT_CLOSE(p.accel_tau_s[0], 2000.0 / 100.0, 0.0, REL);

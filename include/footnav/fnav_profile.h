@@ -81,7 +81,7 @@ const fnav_profile_paper_row_t *fnav_profile_paper_table(fnav_profile_id_t id);
  * Fill a profile from six paper-unit rows (acc x..z, gyr x..z).
  * @return FNAV_OK, or FNAV_E_ARG on NULL / non-positive values, and when
  *         the converted profile fails fnav_profile_validate (e.g. an
- *         infinite rate makes every tau 0).
+ *         infinite rate makes every tau 0); *p is written only on FNAV_OK.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_profile_from_paper(fnav_profile_t *p, const char *name, double rate_hz,
                                                        const fnav_profile_paper_row_t rows[6]);
