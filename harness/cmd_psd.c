@@ -471,6 +471,10 @@ int hx_cmd_psd(int argc, char **argv)
         hx_arg_long(&a, "--spec-nfft", 8, FNAV_WELCH_MAX_NFFT, &spec_nfft) != 0) {
         return HX_EXIT_USAGE;
     }
+    if ((spec_nfft & (spec_nfft - 1)) != 0) {
+        hx_error(CMD, "--spec-nfft must be a power of two in 8..%d", FNAV_WELCH_MAX_NFFT);
+        return HX_EXIT_USAGE;
+    }
     st.wc.nfft = (uint32_t)nfft;
     st.wc.overlap = overlap >= 0 ? (uint32_t)overlap : (uint32_t)nfft / 2u;
     if ((s = hx_arg(&a, "--window")) != NULL) {
@@ -708,8 +712,15 @@ int hx_cmd_psd(int argc, char **argv)
                     }
                 }
             }
+            /* a spectrogram needs one segment: gnuplot has nothing to draw otherwise */
+            const int spec = log.n >= (size_t)spec_nfft;
+            if (!spec) {
+                hx_warn(CMD, "fewer samples (%zu) than one spectrogram segment (--spec-nfft %ld): spectrogram.png not "
+                             "drawn",
+                        log.n, spec_nfft);
+            }
             if (plot_psd(s, &res, a.pos[0], &st) != 0 || plot_ccdf(s, &res, a.pos[0], &bc) != 0 ||
-                plot_spectrogram(s, &log, spec_axis, (uint32_t)spec_nfft, rate, a.pos[0]) != 0 ||
+                (spec && plot_spectrogram(s, &log, spec_axis, (uint32_t)spec_nfft, rate, a.pos[0]) != 0) ||
                 (hx_flag(&a, "--sensitivity") && plot_sensitivity(s, fs_tab, have, rate, a.pos[0]) != 0)) {
                 exit_code = HX_EXIT_IO;
             }

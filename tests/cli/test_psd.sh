@@ -17,6 +17,10 @@ expect_exit 1 "missing file" "$H" psd "$T/nope.csv"
 expect_exit 2 "nfft not a power of two" "$H" psd x.csv --nfft 48
 expect_exit 2 "unknown dc mode" "$H" psd x.csv --dc bogus
 expect_exit 2 "global with symmetric window" "$H" psd x.csv --dc global --symmetric
+# --spec-nfft is checked with the other options, before the input is read (a value that is no power of two was
+# refused only when the spectrogram was drawn, after the analysis and two plots: exit 3, an output failure)
+expect_exit 2 "spec-nfft not a power of two" "$H" psd x.csv --spec-nfft 100
+expect_err "spec-nfft must be a power of two" "the spectrogram's segment length is refused as a usage error"
 
 # a tiny CSV in the interchange format: a 100 Hz tone at 1000 Hz + gravity on z
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) { t = i / 1000.0; s = sin(6.283185307 * 100 * t);
@@ -30,6 +34,15 @@ else
     fail "tone bandwidth"
 fi
 expect_exit 3 "unwritable output" "$H" psd "$T/tone.csv" --out /nonexistent/dir/p.csv
+# a log shorter than the spectrogram's segment (100 samples, --nfft 64, the default --spec-nfft 256): no spectrogram
+# can be drawn; the other plots are, a warning says why it is missing (gnuplot got no data: its STATS_max was
+# undefined, a spectrogram.png was left behind and the command exited 3, an output failure)
+head -101 "$T/tone.csv" >"$T/short.csv"
+expect_exit 0 "log shorter than the spectrogram segment, --plot" "$H" psd "$T/short.csv" --plot "$T/shortplots"
+expect_err "fewer samples (100) than one spectrogram segment (--spec-nfft 256)" "the missing spectrogram is explained"
+[ -s "$T/shortplots/psd.png" ] && [ -s "$T/shortplots/ccdf.png" ] && pass "short log: psd.png, ccdf.png" ||
+    fail "short log: psd.png or ccdf.png missing"
+[ ! -e "$T/shortplots/spectrogram.png" ] && pass "short log: no spectrogram.png" || fail "short log: spectrogram.png written"
 # a static log: every PSD value below 1 unit^2/Hz, so every dB value of the spectrogram is negative;
 # gnuplot's one-column stats dropped them all (outside the frequency axis' range) and --plot exited 3
 awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 6000; i++)
