@@ -114,7 +114,7 @@ void fnav_fft_real_packed(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im)
     for (k = 1; k < m - k; k++) {
         const uint32_t q = m - k;
         const fnav_real_t ar = re[k], ai = im[k], br = re[q], bi = im[q];
-        /* E_k, O_k and E_q = conj E_k, O_q = -conj O_k */
+        /* E_k, O_k and E_q = conj E_k, O_q = conj O_k */
         const fnav_real_t er = FNAV_R(0.5) * (ar + br), ei = FNAV_R(0.5) * (ai - bi);
         const fnav_real_t or_ = FNAV_R(0.5) * (ai + bi), oi = FNAV_R(-0.5) * (ar - br);
         const fnav_real_t wr = f->cs[k], wi = -f->sn[k];   /* W^k */

@@ -100,8 +100,9 @@ typedef struct {
  * @param w    estimator (caller-owned)
  * @param cfg  configuration, or NULL for fnav_welch_config_default
  * @return FNAV_OK; FNAV_E_ARG for NULL w; FNAV_E_CONFIG for a bad nfft,
- *         overlap >= nfft, unknown window/detrend/scaling, rate <= 0, a
- *         non-finite offset, or FNAV_DETREND_GLOBAL with a symmetric window.
+ *         overlap >= nfft, unknown window/detrend/scaling, a rate not
+ *         positive and finite, an offset not finite or beyond
+ *         FNAV_INPUT_MAX_ABS, or FNAV_DETREND_GLOBAL with a symmetric window.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg);
 
@@ -166,7 +167,8 @@ typedef struct {
  * crosses the threshold (docs/psd.md).
  * @param ccdf  optional (may be NULL), n entries: complementary cumulative
  *              fraction 1 - C(f) at the upper edge of each bin
- * @return FNAV_OK; FNAV_E_ARG for NULL / n < 2 / df <= 0 / bad threshold;
+ * @return FNAV_OK; FNAV_E_ARG for NULL / n < 2 / df <= 0 / a threshold
+ *         outside (0, 1] / round_hz < 0 or NaN;
  *         FNAV_E_RANGE when the total power is not positive and finite.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_bandwidth(const fnav_real_t *psd, size_t n, fnav_real_t df_hz,
