@@ -93,6 +93,11 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     o.quiet = hx_flag(&a, "--quiet");
     json = hx_arg(&a, "--json");
     md = hx_arg(&a, "--markdown");
+    /* a run takes minutes: an output that cannot be written is said now */
+    if ((json != NULL && hx_check_writable("simgap-validate", json) != 0) ||
+        (md != NULL && hx_check_writable("simgap-validate", md) != 0)) {
+        return HX_EXIT_IO;
+    }
     cases = (sgv_case_t *)calloc((size_t)n, sizeof *cases);
     if (cases == NULL) {
         hx_error("simgap-validate", "out of memory");
