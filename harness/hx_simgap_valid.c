@@ -223,21 +223,39 @@ static double urand(fnav_rng_t *r)
     return (double)fnav_rng_uniform(r);
 }
 
-/* Set parameter k of effect id on the channels of mask. */
-static int setp(fnav_imuerr_config_t *c, int id, const char *name, uint32_t mask, double v)
+/* Set parameter k of effect id on the channels of mask; -1 with err
+ * filled when the simulator refuses the value (outside its range). */
+static int setk(fnav_imuerr_config_t *c, int id, int k, uint32_t mask, double v, char *err, size_t err_size)
 {
-    int k = fnav_imuerr_param_find((fnav_effect_id_t)id, name);
-    return (k < 0 || fnav_imuerr_param_set(c, (fnav_effect_id_t)id, k, mask, (fnav_real_t)v) != FNAV_OK) ? -1 : 0;
+    const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)id);
+    if (k < 0 || info == NULL || k >= info->nparams) {
+        snprintf(err, err_size, "no such parameter");
+        return -1;
+    }
+    if (fnav_imuerr_param_set(c, (fnav_effect_id_t)id, k, mask, (fnav_real_t)v) != FNAV_OK) {
+        snprintf(err, err_size, "%s.%s %g is outside the simulator's range [%g, %g]", info->name,
+                 info->params[k].name, v, info->params[k].lo, info->params[k].hi);
+        return -1;
+    }
+    return 0;
+}
+
+static int setp(fnav_imuerr_config_t *c, int id, const char *name, uint32_t mask, double v, char *err,
+                size_t err_size)
+{
+    return setk(c, id, fnav_imuerr_param_find((fnav_effect_id_t)id, name), mask, v, err, err_size);
 }
 
 /* Draw one static/timing case: configuration and truth. */
-static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t *cs, fnav_imuerr_config_t *cfg)
+static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t *cs, fnav_imuerr_config_t *cfg,
+                       char *err, size_t err_size)
 {
     fnav_profile_t prof;
     const double n = o->duration_s * o->rate_hz;
     const sgv_effect_t *E = type >= 0 ? &k_eff[type] : NULL;
     int ch;
     cs->profile = (int)(urand(rng) * 3.0) % 3;
+    snprintf(err, err_size, "the profile cannot be set up");
     if (fnav_profile_builtin(&prof, (fnav_profile_id_t)cs->profile) != FNAV_OK) {
         return -1;
     }
@@ -263,7 +281,8 @@ static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_
             for (ch = 0; ch < SG_NCH; ch++) {
                 cs->value[ch] = v;
             }
-            if (setp(cfg, E->id, "stamp_s", FNAV_CH_ALL, v) != 0 || setp(cfg, E->id, "sample_s", FNAV_CH_ALL, 0.0) != 0) {
+            if (setp(cfg, E->id, "stamp_s", FNAV_CH_ALL, v, err, err_size) != 0 ||
+                setp(cfg, E->id, "sample_s", FNAV_CH_ALL, 0.0, err, err_size) != 0) {
                 return -1;
             }
         } else {
@@ -272,10 +291,11 @@ static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_
             for (ch = 0; ch < SG_NCH; ch++) {
                 cs->value[ch] = v;
             }
-            if (setp(cfg, E->id, "prob", FNAV_CH_ALL, v) != 0) {
+            if (setp(cfg, E->id, "prob", FNAV_CH_ALL, v, err, err_size) != 0) {
                 return -1;
             }
         }
+        snprintf(err, err_size, "%s cannot be enabled", E->name);
         return fnav_imuerr_enable(cfg, (fnav_effect_id_t)E->id, FNAV_CH_ALL) == FNAV_OK ? 0 : -1;
     }
     /* channels: one, or a sensor's three */
@@ -328,6 +348,8 @@ static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_
                 v = thr * cs->mult;
             }
             if (!(thr > 0.0)) {
+                snprintf(err, err_size, "%s has no detectable magnitude on %s in %g s at %g Hz", E->name,
+                         sg_channel_name(ch), o->duration_s, o->rate_hz);
                 return -1;
             }
             if (E->id == FNAV_EFFECT_RAMP || E->id == FNAV_EFFECT_THERMAL) {
@@ -336,11 +358,12 @@ static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_
             cs->value[ch] = v;
             for (k = 0; k < info->nparams && k < SG_MAX_PAR; k++) {
                 double pv = (k == E->magp) ? v : e.p[k];
-                if (fnav_imuerr_param_set(cfg, (fnav_effect_id_t)E->id, k, 1u << ch, (fnav_real_t)pv) != FNAV_OK) {
+                if (setk(cfg, E->id, k, 1u << ch, pv, err, err_size) != 0) {
                     return -1;
                 }
             }
         }
+        snprintf(err, err_size, "%s cannot be enabled", E->name);
         return fnav_imuerr_enable(cfg, (fnav_effect_id_t)E->id, cs->mask) == FNAV_OK ? 0 : -1;
     }
 }
@@ -512,9 +535,20 @@ static int case_types(const sgv_opts_t *o, int *types)
     return ntypes;
 }
 
+/* The kind of case i: an entry of types (the kinds in turn from an offset
+ * the seed draws, so a run of fewer cases is a prefix of a longer one). */
+static int case_type(const sgv_opts_t *o, const int *types, int ntypes, int i)
+{
+    fnav_rng_t r0;
+    int off;
+    fnav_rng_seed(&r0, o->seed, 0x5a5au);
+    off = (int)(fnav_rng_u32(&r0) % (uint32_t)ntypes);
+    return types[(i + off) % ntypes];
+}
+
 int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size)
 {
-    int types[2 + NEFF], i;
+    int types[2 + NEFF], i, ntypes;
     if (o->effects != NULL) {
         const char *p = o->effects;
         for (;;) {
@@ -543,7 +577,7 @@ int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size)
             p = e + 1;
         }
     }
-    if (case_types(o, types) == 0) {
+    if ((ntypes = case_types(o, types)) == 0) {
         snprintf(err, err_size, "--effects %s draws no case%s (%s)", o->effects != NULL ? o->effects : "",
                  !o->walks ? " with --static-only" : (!o->statics ? " with --walk-only" : ""),
                  !o->walks ? "scale, misalign, gsens and saturation are walk effects"
@@ -554,23 +588,42 @@ int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size)
         snprintf(err, err_size, "--only %d must be below --cases %d (cases are numbered from 0)", o->only, o->cases);
         return -1;
     }
+    /* the static cases' draws, dry (no simulation: cheap), so that a
+     * magnitude the simulator refuses (--mag-range against a short log:
+     * a dropout probability above 1) is a usage error before the run, not
+     * the end of a run whose cases were lost; the walk cases' draws
+     * simulate the walk and are checked as they come */
+    for (i = 0; i < o->cases; i++) {
+        int type = case_type(o, types, ntypes, i);
+        fnav_rng_t rng;
+        sgv_case_t cs;
+        fnav_imuerr_config_t cfg;
+        char e2[256];
+        if ((o->only >= 0 && i != o->only) || type == -100 || (type >= 0 && k_eff[type].cls == SGV_MOTION)) {
+            continue;
+        }
+        memset(&cs, 0, sizeof cs);
+        fnav_rng_seed(&rng, o->seed, 0x10000u + (uint32_t)i);
+        if (draw_static(o, type, &rng, &cs, &cfg, e2, sizeof e2) != 0) {
+            snprintf(err, err_size, "case %d: %s at %.3g x its detectable threshold: %s (lower --mag-range, or "
+                     "lengthen --duration)", i, type >= 0 ? k_eff[type].name : "control", cs.mult, e2);
+            return -1;
+        }
+    }
     return 0;
 }
 
 int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t err_size)
 {
-    int types[2 + NEFF], ntypes, i, off;
-    fnav_rng_t r0;
+    int types[2 + NEFF], ntypes, i;
     ntypes = case_types(o, types);
     if (ntypes == 0) {
         snprintf(err, err_size, "no case kinds selected");
         return -1;
     }
-    fnav_rng_seed(&r0, o->seed, 0x5a5au);
-    off = (int)(fnav_rng_u32(&r0) % (uint32_t)ntypes);
     for (i = 0; i < o->cases; i++) {
         sgv_case_t *cs = &cases[i];
-        int type = types[(i + off) % ntypes];
+        int type = case_type(o, types, ntypes, i);
         fnav_rng_t rng;
         fnav_imuerr_config_t cfg;
         hx_log_t log;
@@ -593,8 +646,8 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
                 return -1;
             }
         } else {
-            if (draw_static(o, type, &rng, cs, &cfg) != 0) {
-                snprintf(err, err_size, "case %d: cannot draw a static case", i);
+            if (draw_static(o, type, &rng, cs, &cfg, e2, sizeof e2) != 0) {
+                snprintf(err, err_size, "case %d: cannot draw a static case: %s", i, e2);
                 return -1;
             }
             snprintf(script, sizeof script, "stand:%.0f", o->duration_s);

@@ -27,5 +27,25 @@ grep -q "^case" "$T/out" && fail "unwritable --markdown: the cases ran first" ||
     --json "$T/v.json" --markdown "$T/v.md"
 [ -s "$T/v.json" ] && [ -s "$T/v.md" ] && pass "JSON and Markdown written" || fail "outputs missing"
 
+# --mag-range: two finite numbers and nothing else
+expect_exit 2 "--mag-range with trailing text" "$H" simgap-validate --cases 1 $FAST --mag-range 1,10x
+expect_err "mag-range" "--mag-range with trailing text said"
+expect_exit 2 "--mag-range to infinity" "$H" simgap-validate --cases 1 $FAST --mag-range 1,inf
+expect_err "mag-range" "--mag-range to infinity said"
+# a magnitude beyond what the simulator accepts is a usage error that names
+# the case and the effect, before any case ran (it was exit 3, "cannot draw
+# a static case", after the cases before it had run, their results lost)
+expect_exit 2 "--mag-range beyond the simulator's range" "$H" simgap-validate --cases 3 $FAST --effects control,ramp \
+    --mag-range 1e6,1e6
+expect_err "mag-range .1e6,1e6.: wants LO,HI" "a magnitude range beyond 1000 said"
+grep -q "^case" "$T/out" && fail "magnitude beyond range: cases ran first" || pass "magnitude beyond range: said before any case ran"
+# ... and one the simulator refuses on these logs (a dropout probability of
+# 1000 x 10 events in 3000 samples): a usage error before the run, naming the
+# case and the parameter (it was exit 3 after the cases before it had run)
+expect_exit 2 "--mag-range the simulator refuses" "$H" simgap-validate --cases 3 $FAST --effects control,dropout \
+    --mag-range 1000,1000
+expect_err "case [0-9]*: dropout at .*dropout.prob .* outside the simulator's range" "the case, effect and parameter named"
+grep -q "^case" "$T/out" && fail "refused magnitude: cases ran first" || pass "refused magnitude: said before any case ran"
+
 if [ "$fails" -ne 0 ]; then echo "test_simgap_validate.sh: $fails failure(s)"; exit 1; fi
 echo "test_simgap_validate.sh: all passed"
