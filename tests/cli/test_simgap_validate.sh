@@ -46,6 +46,28 @@ expect_exit 2 "--mag-range the simulator refuses" "$H" simgap-validate --cases 3
     --mag-range 1000,1000
 expect_err "case [0-9]*: dropout at .*dropout.prob .* outside the simulator's range" "the case, effect and parameter named"
 grep -q "^case" "$T/out" && fail "refused magnitude: cases ran first" || pass "refused magnitude: said before any case ran"
+# a log too short for a confident answer is no false alarm: 10 s at 10 Hz
+# gives "too-short" on every control (it was "static 4/4 false alarms
+# (100.0 %)" and the target "no")
+expect_exit 0 "controls on logs too short" "$H" simgap-validate --cases 4 --effects control --static-only \
+    --duration 10 --rate 10 --seeds 3 --json "$T/ts.json"
+json "$T/ts.json" 'all(r["verdict"] == "too-short" for r in j["results"])' && pass "the short controls are too-short" ||
+    fail "short controls: $(cat "$T/out")"
+expect_out "static 0/0 false alarms.*4 too short" "too-short controls are not counted as false alarms"
+grep -q "false alarms on controls.*no" "$T/out" && fail "the false-alarm target failed on too-short controls" ||
+    pass "no false-alarm target failed on too-short controls"
+# --only K runs one case: the summary counts one case, not --cases N
+expect_exit 0 "--only one case" "$H" simgap-validate --cases 8 --only 6 $FAST --json "$T/o.json" --markdown "$T/o.md"
+expect_out "^simgap-validate: 1 case (case 6 of 8; seed 1)" "--only: one case said"
+json "$T/o.json" 'j["cases"] == 1 and len(j["results"]) == 1 and j["only"] == 6' && pass "--only: JSON counts one case" ||
+    fail "--only JSON: $(cat "$T/pyerr")"
+grep -q -- "--only 6" "$T/o.md" && grep -q "1 case in" "$T/o.md" && pass "--only: the Markdown's command and count" ||
+    fail "--only Markdown: $(grep '^Run' "$T/o.md")"
+# the Markdown's command reproduces the run: the walks' rate is in it
+expect_exit 0 "walk rate in the command" "$H" simgap-validate --cases 8 --only 7 --walk-only --walk-duration 20 \
+    --walk-rate 100 --seeds 3 --quiet --markdown "$T/w.md"
+grep -q -- "--walk-only" "$T/w.md" && grep -q -- "--walk-rate 100" "$T/w.md" && pass "--walk-rate in the Markdown's command" ||
+    fail "Markdown command: $(grep '^Run' "$T/w.md")"
 
 if [ "$fails" -ne 0 ]; then echo "test_simgap_validate.sh: $fails failure(s)"; exit 1; fi
 echo "test_simgap_validate.sh: all passed"
