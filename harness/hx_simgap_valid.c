@@ -725,7 +725,9 @@ static void wilson(int k, int n, double *lo, double *hi)
 
 typedef struct {
     int n, det, top1, loc_exact, pe_n, pe_ok, sh_n, sh_ok;
-    double jac, pe_med_v[1024], sh_med_v[1024];
+    double jac;
+    double *pe_med_v, *sh_med_v; /* room for every case (NULL: no medians); until 2026-11-28
+                                  * 1024 each, so a larger class's medians were its first cases' */
     int npe, nsh;
 } agg_t;
 
@@ -739,14 +741,14 @@ static void agg_add(agg_t *a, const sgv_case_t *c)
     if (c->perr == c->perr) {
         a->pe_n++;
         a->pe_ok += c->perr <= 0.25;
-        if (a->npe < 1024) {
+        if (a->pe_med_v != NULL) {
             a->pe_med_v[a->npe++] = c->perr;
         }
     }
     if (c->shrink == c->shrink) {
         a->sh_n++;
         a->sh_ok += c->shrink >= 0.70;
-        if (a->nsh < 1024) {
+        if (a->sh_med_v != NULL) {
             a->sh_med_v[a->nsh++] = c->shrink;
         }
     }
@@ -755,14 +757,20 @@ static void agg_add(agg_t *a, const sgv_case_t *c)
 void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, int md, double elapsed_s)
 {
     agg_t *cls = (agg_t *)calloc(SGV_NCLASS, sizeof *cls), *bins = (agg_t *)calloc(3 * SGV_NCLASS, sizeof *bins);
+    double *medv = (double *)malloc((size_t)(n > 0 ? n : 1) * 2 * SGV_NCLASS * sizeof *medv);
     int i, j, k, nctrl = 0, fa = 0, nctrl_w = 0, fa_w = 0, short_s = 0, short_w = 0, nrun = 0;
     int conf[NEFF + 1][NEFF + 2];
     double lo, hi;
     const char *sep = md ? " | " : "  ";
-    if (cls == NULL || bins == NULL) {
+    if (cls == NULL || bins == NULL || medv == NULL) {
         free(cls);
         free(bins);
+        free(medv);
         return;
+    }
+    for (k = 0; k < SGV_NCLASS; k++) {
+        cls[k].pe_med_v = medv + (size_t)(2 * k) * (size_t)(n > 0 ? n : 1);
+        cls[k].sh_med_v = medv + (size_t)(2 * k + 1) * (size_t)(n > 0 ? n : 1);
     }
     memset(conf, 0, sizeof conf);
     for (i = 0; i < n; i++) {
@@ -1001,6 +1009,7 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
     }
     free(cls);
     free(bins);
+    free(medv);
 }
 
 int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *cases, int n, double elapsed_s)
