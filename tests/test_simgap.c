@@ -977,6 +977,41 @@ static void test_report_medians_all_cases(void **state)
     free(c);
 }
 
+/* The summary's top-1 by magnitude: quant's and jitter's multiples are not
+ * drawn from --mag-range (committed run: quant at 508x, jitter at 41x), so
+ * the last column holds everything from 4x up; it was labelled 4-10x. */
+static void test_report_magnitude_bins(void **state)
+{
+    sgv_case_t c[2];
+    sgv_opts_t o = sgv_opts_default();
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f;
+    int i;
+    (void)state;
+    memset(c, 0, sizeof c);
+    for (i = 0; i < 2; i++) {
+        c[i].truth = c[i].pred = 0; /* quant */
+        c[i].cls = SGV_STATIC;
+        c[i].mask = 8u;
+        c[i].detected = 1;
+        c[i].jaccard = 1.0;
+        c[i].perr = c[i].shrink = 0.0;
+        snprintf(c[i].verdict, sizeof c[i].verdict, "explained");
+    }
+    c[0].mult = 508.07;
+    c[1].mult = 5.0;
+    o.cases = 2;
+    f = open_memstream(&buf, &len);
+    assert_non_null(f);
+    sgv_report(f, &o, c, 2, 1, 1.0);
+    fclose(f);
+    assert_null(strstr(buf, "4-10x"));
+    assert_non_null(strstr(buf, "| class | 1-2x | 2-4x | >= 4x |"));
+    assert_non_null(strstr(buf, "0/0   |   0/0   |   2/2"));
+    free(buf);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -997,6 +1032,7 @@ int main(void)
         cmocka_unit_test(test_bm_fit),
         cmocka_unit_test(test_prune_zero),
         cmocka_unit_test(test_report_medians_all_cases),
+        cmocka_unit_test(test_report_magnitude_bins),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
