@@ -19,7 +19,7 @@ static const hx_opt_t k_opts[] = {
     { "--static-only", NULL, "static-domain and timing cases only", 0 },
     { "--walk-only", NULL, "motion-domain (walk) cases only", 0 },
     { "--seeds", "N", "twins per model in the diagnosis (default 16)", 0 },
-    { "--mag-range", "LO,HI", "magnitudes as multiples of the detectable threshold (default 1,10)", 0 },
+    { "--mag-range", "LO,HI", "magnitudes as multiples of the detectable threshold (default 1,10; 0.001 <= LO <= HI <= 1000)", 0 },
     { "--json", "FILE", "every case and its score as JSON", 0 },
     { "--markdown", "FILE", "the summary as Markdown (docs/simgap-validation.md)", 0 },
     { "--verbose", NULL, "print the diagnosis of every case", 0 },
@@ -64,9 +64,17 @@ int hx_cmd_simgap_validate(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     mr = hx_arg(&a, "--mag-range");
-    if (mr != NULL && (sscanf(mr, "%lf,%lf", &o.mag_lo, &o.mag_hi) != 2 || !(o.mag_lo > 0.0) || !(o.mag_hi >= o.mag_lo))) {
-        hx_error("simgap-validate", "--mag-range wants LO,HI with 0 < LO <= HI");
-        return HX_EXIT_USAGE;
+    if (mr != NULL) {
+        /* two numbers and nothing else (sscanf took "1,10x" and "1,inf") */
+        char *e1, *e2;
+        o.mag_lo = strtod(mr, &e1);
+        o.mag_hi = e1 != mr && *e1 == ',' ? strtod(e1 + 1, &e2) : (double)NAN;
+        if (e1 == mr || *e1 != ',' || e2 == e1 + 1 || *e2 != '\0' || !(o.mag_lo >= SGV_MAG_MIN) ||
+            !(o.mag_hi >= o.mag_lo) || !(o.mag_hi <= SGV_MAG_MAX)) {
+            hx_error("simgap-validate", "--mag-range '%s': wants LO,HI with %g <= LO <= HI <= %g", mr, SGV_MAG_MIN,
+                     SGV_MAG_MAX);
+            return HX_EXIT_USAGE;
+        }
     }
     if (hx_flag(&a, "--static-only") && hx_flag(&a, "--walk-only")) {
         hx_error("simgap-validate", "--static-only and --walk-only exclude each other");
@@ -93,6 +101,11 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     o.quiet = hx_flag(&a, "--quiet");
     json = hx_arg(&a, "--json");
     md = hx_arg(&a, "--markdown");
+    /* a run takes minutes: an output that cannot be written is said now */
+    if ((json != NULL && hx_check_writable("simgap-validate", json) != 0) ||
+        (md != NULL && hx_check_writable("simgap-validate", md) != 0)) {
+        return HX_EXIT_IO;
+    }
     cases = (sgv_case_t *)calloc((size_t)n, sizeof *cases);
     if (cases == NULL) {
         hx_error("simgap-validate", "out of memory");

@@ -223,21 +223,39 @@ static double urand(fnav_rng_t *r)
     return (double)fnav_rng_uniform(r);
 }
 
-/* Set parameter k of effect id on the channels of mask. */
-static int setp(fnav_imuerr_config_t *c, int id, const char *name, uint32_t mask, double v)
+/* Set parameter k of effect id on the channels of mask; -1 with err
+ * filled when the simulator refuses the value (outside its range). */
+static int setk(fnav_imuerr_config_t *c, int id, int k, uint32_t mask, double v, char *err, size_t err_size)
 {
-    int k = fnav_imuerr_param_find((fnav_effect_id_t)id, name);
-    return (k < 0 || fnav_imuerr_param_set(c, (fnav_effect_id_t)id, k, mask, (fnav_real_t)v) != FNAV_OK) ? -1 : 0;
+    const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)id);
+    if (k < 0 || info == NULL || k >= info->nparams) {
+        snprintf(err, err_size, "no such parameter");
+        return -1;
+    }
+    if (fnav_imuerr_param_set(c, (fnav_effect_id_t)id, k, mask, (fnav_real_t)v) != FNAV_OK) {
+        snprintf(err, err_size, "%s.%s %g is outside the simulator's range [%g, %g]", info->name,
+                 info->params[k].name, v, info->params[k].lo, info->params[k].hi);
+        return -1;
+    }
+    return 0;
+}
+
+static int setp(fnav_imuerr_config_t *c, int id, const char *name, uint32_t mask, double v, char *err,
+                size_t err_size)
+{
+    return setk(c, id, fnav_imuerr_param_find((fnav_effect_id_t)id, name), mask, v, err, err_size);
 }
 
 /* Draw one static/timing case: configuration and truth. */
-static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t *cs, fnav_imuerr_config_t *cfg)
+static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t *cs, fnav_imuerr_config_t *cfg,
+                       char *err, size_t err_size)
 {
     fnav_profile_t prof;
     const double n = o->duration_s * o->rate_hz;
     const sgv_effect_t *E = type >= 0 ? &k_eff[type] : NULL;
     int ch;
     cs->profile = (int)(urand(rng) * 3.0) % 3;
+    snprintf(err, err_size, "the profile cannot be set up");
     if (fnav_profile_builtin(&prof, (fnav_profile_id_t)cs->profile) != FNAV_OK) {
         return -1;
     }
@@ -263,7 +281,8 @@ static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_
             for (ch = 0; ch < SG_NCH; ch++) {
                 cs->value[ch] = v;
             }
-            if (setp(cfg, E->id, "stamp_s", FNAV_CH_ALL, v) != 0 || setp(cfg, E->id, "sample_s", FNAV_CH_ALL, 0.0) != 0) {
+            if (setp(cfg, E->id, "stamp_s", FNAV_CH_ALL, v, err, err_size) != 0 ||
+                setp(cfg, E->id, "sample_s", FNAV_CH_ALL, 0.0, err, err_size) != 0) {
                 return -1;
             }
         } else {
@@ -272,10 +291,11 @@ static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_
             for (ch = 0; ch < SG_NCH; ch++) {
                 cs->value[ch] = v;
             }
-            if (setp(cfg, E->id, "prob", FNAV_CH_ALL, v) != 0) {
+            if (setp(cfg, E->id, "prob", FNAV_CH_ALL, v, err, err_size) != 0) {
                 return -1;
             }
         }
+        snprintf(err, err_size, "%s cannot be enabled", E->name);
         return fnav_imuerr_enable(cfg, (fnav_effect_id_t)E->id, FNAV_CH_ALL) == FNAV_OK ? 0 : -1;
     }
     /* channels: one, or a sensor's three */
@@ -328,6 +348,8 @@ static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_
                 v = thr * cs->mult;
             }
             if (!(thr > 0.0)) {
+                snprintf(err, err_size, "%s has no detectable magnitude on %s in %g s at %g Hz", E->name,
+                         sg_channel_name(ch), o->duration_s, o->rate_hz);
                 return -1;
             }
             if (E->id == FNAV_EFFECT_RAMP || E->id == FNAV_EFFECT_THERMAL) {
@@ -336,11 +358,12 @@ static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_
             cs->value[ch] = v;
             for (k = 0; k < info->nparams && k < SG_MAX_PAR; k++) {
                 double pv = (k == E->magp) ? v : e.p[k];
-                if (fnav_imuerr_param_set(cfg, (fnav_effect_id_t)E->id, k, 1u << ch, (fnav_real_t)pv) != FNAV_OK) {
+                if (setk(cfg, E->id, k, 1u << ch, pv, err, err_size) != 0) {
                     return -1;
                 }
             }
         }
+        snprintf(err, err_size, "%s cannot be enabled", E->name);
         return fnav_imuerr_enable(cfg, (fnav_effect_id_t)E->id, cs->mask) == FNAV_OK ? 0 : -1;
     }
 }
@@ -405,7 +428,9 @@ static void score(const sg_result_t *r, sgv_case_t *cs)
         }
     }
     cs->pred = best;
-    cs->detected = strcmp(r->verdict, "none") != 0;
+    /* a gap claimed: "too-short" is no answer, neither a detection nor,
+     * on a control, a false alarm */
+    cs->detected = strcmp(r->verdict, "none") != 0 && strcmp(r->verdict, "too-short") != 0;
     snprintf(cs->verdict, sizeof cs->verdict, "%s", r->verdict);
     /* location */
     if (cs->truth >= 0 && k_eff[cs->truth].cls == SGV_TIMING) {
@@ -512,9 +537,20 @@ static int case_types(const sgv_opts_t *o, int *types)
     return ntypes;
 }
 
+/* The kind of case i: an entry of types (the kinds in turn from an offset
+ * the seed draws, so a run of fewer cases is a prefix of a longer one). */
+static int case_type(const sgv_opts_t *o, const int *types, int ntypes, int i)
+{
+    fnav_rng_t r0;
+    int off;
+    fnav_rng_seed(&r0, o->seed, 0x5a5au);
+    off = (int)(fnav_rng_u32(&r0) % (uint32_t)ntypes);
+    return types[(i + off) % ntypes];
+}
+
 int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size)
 {
-    int types[2 + NEFF], i;
+    int types[2 + NEFF], i, ntypes;
     if (o->effects != NULL) {
         const char *p = o->effects;
         for (;;) {
@@ -543,7 +579,7 @@ int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size)
             p = e + 1;
         }
     }
-    if (case_types(o, types) == 0) {
+    if ((ntypes = case_types(o, types)) == 0) {
         snprintf(err, err_size, "--effects %s draws no case%s (%s)", o->effects != NULL ? o->effects : "",
                  !o->walks ? " with --static-only" : (!o->statics ? " with --walk-only" : ""),
                  !o->walks ? "scale, misalign, gsens and saturation are walk effects"
@@ -554,23 +590,42 @@ int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size)
         snprintf(err, err_size, "--only %d must be below --cases %d (cases are numbered from 0)", o->only, o->cases);
         return -1;
     }
+    /* the static cases' draws, dry (no simulation: cheap), so that a
+     * magnitude the simulator refuses (--mag-range against a short log:
+     * a dropout probability above 1) is a usage error before the run, not
+     * the end of a run whose cases were lost; the walk cases' draws
+     * simulate the walk and are checked as they come */
+    for (i = 0; i < o->cases; i++) {
+        int type = case_type(o, types, ntypes, i);
+        fnav_rng_t rng;
+        sgv_case_t cs;
+        fnav_imuerr_config_t cfg;
+        char e2[256];
+        if ((o->only >= 0 && i != o->only) || type == -100 || (type >= 0 && k_eff[type].cls == SGV_MOTION)) {
+            continue;
+        }
+        memset(&cs, 0, sizeof cs);
+        fnav_rng_seed(&rng, o->seed, 0x10000u + (uint32_t)i);
+        if (draw_static(o, type, &rng, &cs, &cfg, e2, sizeof e2) != 0) {
+            snprintf(err, err_size, "case %d: %s at %.3g x its detectable threshold: %s (lower --mag-range, or "
+                     "lengthen --duration)", i, type >= 0 ? k_eff[type].name : "control", cs.mult, e2);
+            return -1;
+        }
+    }
     return 0;
 }
 
 int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t err_size)
 {
-    int types[2 + NEFF], ntypes, i, off;
-    fnav_rng_t r0;
+    int types[2 + NEFF], ntypes, i;
     ntypes = case_types(o, types);
     if (ntypes == 0) {
         snprintf(err, err_size, "no case kinds selected");
         return -1;
     }
-    fnav_rng_seed(&r0, o->seed, 0x5a5au);
-    off = (int)(fnav_rng_u32(&r0) % (uint32_t)ntypes);
     for (i = 0; i < o->cases; i++) {
         sgv_case_t *cs = &cases[i];
-        int type = types[(i + off) % ntypes];
+        int type = case_type(o, types, ntypes, i);
         fnav_rng_t rng;
         fnav_imuerr_config_t cfg;
         hx_log_t log;
@@ -593,8 +648,8 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
                 return -1;
             }
         } else {
-            if (draw_static(o, type, &rng, cs, &cfg) != 0) {
-                snprintf(err, err_size, "case %d: cannot draw a static case", i);
+            if (draw_static(o, type, &rng, cs, &cfg, e2, sizeof e2) != 0) {
+                snprintf(err, err_size, "case %d: cannot draw a static case: %s", i, e2);
                 return -1;
             }
             snprintf(script, sizeof script, "stand:%.0f", o->duration_s);
@@ -670,7 +725,9 @@ static void wilson(int k, int n, double *lo, double *hi)
 
 typedef struct {
     int n, det, top1, loc_exact, pe_n, pe_ok, sh_n, sh_ok;
-    double jac, pe_med_v[1024], sh_med_v[1024];
+    double jac;
+    double *pe_med_v, *sh_med_v; /* room for every case (NULL: no medians); until 2026-11-28
+                                  * 1024 each, so a larger class's medians were its first cases' */
     int npe, nsh;
 } agg_t;
 
@@ -684,14 +741,14 @@ static void agg_add(agg_t *a, const sgv_case_t *c)
     if (c->perr == c->perr) {
         a->pe_n++;
         a->pe_ok += c->perr <= 0.25;
-        if (a->npe < 1024) {
+        if (a->pe_med_v != NULL) {
             a->pe_med_v[a->npe++] = c->perr;
         }
     }
     if (c->shrink == c->shrink) {
         a->sh_n++;
         a->sh_ok += c->shrink >= 0.70;
-        if (a->nsh < 1024) {
+        if (a->sh_med_v != NULL) {
             a->sh_med_v[a->nsh++] = c->shrink;
         }
     }
@@ -700,14 +757,20 @@ static void agg_add(agg_t *a, const sgv_case_t *c)
 void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, int md, double elapsed_s)
 {
     agg_t *cls = (agg_t *)calloc(SGV_NCLASS, sizeof *cls), *bins = (agg_t *)calloc(3 * SGV_NCLASS, sizeof *bins);
-    int i, j, k, nctrl = 0, fa = 0, nctrl_w = 0, fa_w = 0;
+    double *medv = (double *)malloc((size_t)(n > 0 ? n : 1) * 2 * SGV_NCLASS * sizeof *medv);
+    int i, j, k, nctrl = 0, fa = 0, nctrl_w = 0, fa_w = 0, short_s = 0, short_w = 0, nrun = 0;
     int conf[NEFF + 1][NEFF + 2];
     double lo, hi;
     const char *sep = md ? " | " : "  ";
-    if (cls == NULL || bins == NULL) {
+    if (cls == NULL || bins == NULL || medv == NULL) {
         free(cls);
         free(bins);
+        free(medv);
         return;
+    }
+    for (k = 0; k < SGV_NCLASS; k++) {
+        cls[k].pe_med_v = medv + (size_t)(2 * k) * (size_t)(n > 0 ? n : 1);
+        cls[k].sh_med_v = medv + (size_t)(2 * k + 1) * (size_t)(n > 0 ? n : 1);
     }
     memset(conf, 0, sizeof conf);
     for (i = 0; i < n; i++) {
@@ -717,6 +780,13 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
             continue; /* not run (--only) */
         }
         conf[row][col]++;
+        nrun++;
+        if (c->truth < 0 && strcmp(c->verdict, "too-short") == 0) {
+            /* no answer: not in the false-alarm rate, counted apart */
+            short_w += c->walk;
+            short_s += !c->walk;
+            continue;
+        }
         if (c->truth < 0) {
             if (c->walk) {
                 nctrl_w++;
@@ -737,18 +807,27 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
         fprintf(f, "# Sim-to-real gap diagnosis: validation on withheld effects\n\n"
                    "Generated by `make simgap-validation` (do not edit by hand); the method, the targets' reading and "
                    "the discussion of this run are in docs/simgap.md.\n\n");
-        fprintf(f, "Run: `bin/harness simgap-validate --cases %d --seed %u --duration %g --rate %g --walk-duration %g --seeds %d --mag-range %g,%g%s%s%s%s`; "
-                   "%d cases in %.0f s (%.1f s per case, one core of the shared machine).\n\n",
-                o->cases, o->seed, o->duration_s, o->rate_hz, o->walk_duration_s, o->seeds, o->mag_lo, o->mag_hi, o->walks ? "" : " --static-only",
-                o->statics ? "" : " --walk-only", o->effects != NULL ? " --effects " : "",
-                o->effects != NULL ? o->effects : "", n, elapsed_s, n > 0 ? elapsed_s / (double)n : 0.0);
+        char onl[32] = "";
+        if (o->only >= 0) {
+            snprintf(onl, sizeof onl, " --only %d", o->only);
+        }
+        fprintf(f, "Run: `bin/harness simgap-validate --cases %d --seed %u --duration %g --rate %g --walk-duration %g --walk-rate %g --seeds %d --mag-range %g,%g%s%s%s%s%s`; "
+                   "%d case%s in %.0f s (%.1f s per case, one core of the shared machine).\n\n",
+                o->cases, o->seed, o->duration_s, o->rate_hz, o->walk_duration_s, o->walk_rate_hz, o->seeds, o->mag_lo,
+                o->mag_hi, o->walks ? "" : " --static-only", o->statics ? "" : " --walk-only",
+                o->effects != NULL ? " --effects " : "", o->effects != NULL ? o->effects : "", onl, nrun,
+                nrun == 1 ? "" : "s", elapsed_s, nrun > 0 ? elapsed_s / (double)nrun : 0.0);
         fprintf(f, "| class | cases | detected | top-1 (95 %% interval) | location exact / mean Jaccard | parameter within 25 %% "
                    "(median error) | held-out shrink >= 70 %% (median) |\n| --- | --- | --- | --- | --- | --- | --- |\n");
     } else {
-        fprintf(f, "\nsimgap-validate: %d cases (seed %u): static logs of %g s at %g Hz, walks of %g s at %g Hz; magnitudes "
+        char onl[48] = "";
+        if (o->only >= 0) {
+            snprintf(onl, sizeof onl, "case %d of %d; ", o->only, o->cases);
+        }
+        fprintf(f, "\nsimgap-validate: %d case%s (%sseed %u): static logs of %g s at %g Hz, walks of %g s at %g Hz; magnitudes "
                    "%g-%g x the documented detectable threshold (log-uniform); %.0f s (%.1f s per case)\n",
-                n, o->seed, o->duration_s, o->rate_hz, o->walk_duration_s, o->walk_rate_hz, o->mag_lo, o->mag_hi,
-                elapsed_s, n > 0 ? elapsed_s / (double)n : 0.0);
+                nrun, nrun == 1 ? "" : "s", onl, o->seed, o->duration_s, o->rate_hz, o->walk_duration_s, o->walk_rate_hz,
+                o->mag_lo, o->mag_hi, elapsed_s, nrun > 0 ? elapsed_s / (double)nrun : 0.0);
         fprintf(f, "class    cases  detected  top-1 (95 %% interval)        location exact/Jaccard  param <= 25 %% (median)   "
                    "shrink >= 70 %% (median)\n");
     }
@@ -768,22 +847,43 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
     } else {
         fprintf(f, "controls: ");
     }
-    if (nctrl > 0) {
-        wilson(fa, nctrl, &lo, &hi);
-        fprintf(f, "static %d/%d false alarms (%.1f %%, 95 %%: %.1f..%.1f %%)", fa, nctrl, 100.0 * fa / nctrl, 100.0 * lo,
-                100.0 * hi);
+    if (nctrl + short_s > 0) {
+        if (nctrl > 0) {
+            wilson(fa, nctrl, &lo, &hi);
+            fprintf(f, "static %d/%d false alarms (%.1f %%, 95 %%: %.1f..%.1f %%)", fa, nctrl, 100.0 * fa / nctrl,
+                    100.0 * lo, 100.0 * hi);
+        } else {
+            fprintf(f, "static 0/0 false alarms");
+        }
+        if (short_s > 0) {
+            fprintf(f, " (and %d too short for an answer, not counted)", short_s);
+        }
     }
-    if (nctrl_w > 0) {
-        wilson(fa_w, nctrl_w, &lo, &hi);
-        fprintf(f, "%swalk %d/%d false alarms (%.1f %%, 95 %%: %.1f..%.1f %%)", nctrl > 0 ? "; " : "", fa_w, nctrl_w,
-                100.0 * fa_w / nctrl_w, 100.0 * lo, 100.0 * hi);
+    if (nctrl_w + short_w > 0) {
+        fprintf(f, "%s", nctrl + short_s > 0 ? "; " : "");
+        if (nctrl_w > 0) {
+            wilson(fa_w, nctrl_w, &lo, &hi);
+            fprintf(f, "walk %d/%d false alarms (%.1f %%, 95 %%: %.1f..%.1f %%)", fa_w, nctrl_w,
+                    100.0 * fa_w / nctrl_w, 100.0 * lo, 100.0 * hi);
+        } else {
+            fprintf(f, "walk 0/0 false alarms");
+        }
+        if (short_w > 0) {
+            fprintf(f, " (and %d too short for an answer, not counted)", short_w);
+        }
+    }
+    if (nctrl + short_s + nctrl_w + short_w == 0) {
+        fprintf(f, "none drawn");
     }
     fprintf(f, "%s\n", md ? ".\n" : "");
     /* by magnitude */
     if (md) {
-        fprintf(f, "Top-1 by magnitude (multiple of the detectable threshold):\n\n| class | 1-2x | 2-4x | 4-10x |\n| --- | --- | --- | --- |\n");
+        /* the last column is open: quant's and jitter's multiples are not
+         * drawn from --mag-range (hundreds of times; it said 4-10x) */
+        fprintf(f, "Top-1 by magnitude (multiple of the detectable threshold; quant: of 30 ulp, jitter: of 0.1 us):\n\n"
+                   "| class | 1-2x | 2-4x | >= 4x |\n| --- | --- | --- | --- |\n");
     } else {
-        fprintf(f, "top-1 by magnitude:       1-2x          2-4x          4-10x\n");
+        fprintf(f, "top-1 by magnitude:       1-2x          2-4x          >= 4x\n");
     }
     for (k = 0; k < SGV_NCLASS; k++) {
         if (cls[k].n == 0) {
@@ -912,18 +1012,27 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
     }
     free(cls);
     free(bins);
+    free(medv);
 }
 
 int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *cases, int n, double elapsed_s)
 {
     cJSON *root = cJSON_CreateObject(), *arr;
     char err[256];
-    int i, ch, rc;
+    int i, ch, rc, nrun = 0;
     if (root == NULL) {
         return -1;
     }
     cJSON_AddStringToObject(root, "schema", "footnav-simgap-validate/1");
-    cJSON_AddNumberToObject(root, "cases", n);
+    for (i = 0; i < n; i++) {
+        nrun += cases[i].truth != -1000;
+    }
+    cJSON_AddNumberToObject(root, "cases", nrun);
+    if (o->only >= 0) {
+        cJSON_AddNumberToObject(root, "only", o->only);
+    } else {
+        cJSON_AddNullToObject(root, "only");
+    }
     cJSON_AddNumberToObject(root, "seed", o->seed);
     cJSON_AddNumberToObject(root, "duration_s", o->duration_s);
     cJSON_AddNumberToObject(root, "rate_hz", o->rate_hz);
@@ -942,6 +1051,7 @@ int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *case
         o2 = cJSON_CreateObject();
         v = cJSON_CreateArray();
         chs = cJSON_CreateArray();
+        cJSON_AddNumberToObject(o2, "case", i);
         cJSON_AddStringToObject(o2, "truth", c->truth >= 0 ? k_eff[c->truth].name : "control");
         cJSON_AddStringToObject(o2, "class", c->truth >= 0 ? k_cls[k_eff[c->truth].cls] : "control");
         cJSON_AddBoolToObject(o2, "walk", c->walk);

@@ -50,6 +50,13 @@ double sgv_detect_threshold(const sg_effect_t *e, int magp, double N, double sig
 int sgv_simulate(const char *script, const fnav_imuerr_config_t *cfg, int point, hx_log_t *log, char *err,
                  size_t err_size);
 
+/** Bounds of --mag-range (multiples of the detectable threshold): beyond
+ *  1000 (a million times the threshold's excess Allan variance) an effect
+ *  no longer tests detection, and a ramp at 1e6 x gave a static log whose
+ *  accelerometer read 5921 m/s^2; below 0.001 no effect shows at all. */
+#define SGV_MAG_MIN 1e-3
+#define SGV_MAG_MAX 1e3
+
 /** Options of a validation run. */
 typedef struct {
     int cases;

@@ -1,0 +1,73 @@
+#!/bin/sh
+# CLI tests of `harness simgap-validate`'s options, outputs and statistics
+# (run by make test and make sanitize with $HARNESS set; docs/simgap.md,
+# "Validation"). Short, coarse runs: they check the command, not the
+# diagnosis (tests/cli/test_simgap.sh).
+set -u
+H=${HARNESS:-bin/harness}
+PY=${PYTHON:-/usr/bin/python3}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/lib.sh"
+json() { # json FILE PYTHON-EXPRESSION-ON-j: passes when it is true
+    "$PY" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' "$1" "$2" 2>"$T/pyerr"
+}
+# small static cases: 60 s at 50 Hz, 3 twins
+FAST="--static-only --duration 60 --rate 50 --seeds 3"
+
+# an output that cannot be written is said before the run, not after it
+# (a full run takes 13 minutes)
+expect_exit 3 "unwritable --json: exit 3" "$H" simgap-validate --cases 2 $FAST --json "$T/no/such/dir/v.json"
+expect_err "cannot write $T/no/such/dir/v.json" "unwritable --json named"
+grep -q "^case" "$T/out" && fail "unwritable --json: the cases ran first" || pass "unwritable --json: said before any case ran"
+expect_exit 3 "unwritable --markdown: exit 3" "$H" simgap-validate --cases 2 $FAST --markdown "$T/no/such/dir/v.md"
+expect_err "cannot write $T/no/such/dir/v.md" "unwritable --markdown named"
+grep -q "^case" "$T/out" && fail "unwritable --markdown: the cases ran first" || pass "unwritable --markdown: said before any case ran"
+[ ! -e "$T/v.json" ] && expect_exit 0 "writable outputs still written" "$H" simgap-validate --cases 1 $FAST --quiet \
+    --json "$T/v.json" --markdown "$T/v.md"
+[ -s "$T/v.json" ] && [ -s "$T/v.md" ] && pass "JSON and Markdown written" || fail "outputs missing"
+
+# --mag-range: two finite numbers and nothing else
+expect_exit 2 "--mag-range with trailing text" "$H" simgap-validate --cases 1 $FAST --mag-range 1,10x
+expect_err "mag-range" "--mag-range with trailing text said"
+expect_exit 2 "--mag-range to infinity" "$H" simgap-validate --cases 1 $FAST --mag-range 1,inf
+expect_err "mag-range" "--mag-range to infinity said"
+# a magnitude beyond what the simulator accepts is a usage error that names
+# the case and the effect, before any case ran (it was exit 3, "cannot draw
+# a static case", after the cases before it had run, their results lost)
+expect_exit 2 "--mag-range beyond the simulator's range" "$H" simgap-validate --cases 3 $FAST --effects control,ramp \
+    --mag-range 1e6,1e6
+expect_err "mag-range .1e6,1e6.: wants LO,HI" "a magnitude range beyond 1000 said"
+grep -q "^case" "$T/out" && fail "magnitude beyond range: cases ran first" || pass "magnitude beyond range: said before any case ran"
+# ... and one the simulator refuses on these logs (a dropout probability of
+# 1000 x 10 events in 3000 samples): a usage error before the run, naming the
+# case and the parameter (it was exit 3 after the cases before it had run)
+expect_exit 2 "--mag-range the simulator refuses" "$H" simgap-validate --cases 3 $FAST --effects control,dropout \
+    --mag-range 1000,1000
+expect_err "case [0-9]*: dropout at .*dropout.prob .* outside the simulator's range" "the case, effect and parameter named"
+grep -q "^case" "$T/out" && fail "refused magnitude: cases ran first" || pass "refused magnitude: said before any case ran"
+# a log too short for a confident answer is no false alarm: 10 s at 10 Hz
+# gives "too-short" on every control (it was "static 4/4 false alarms
+# (100.0 %)" and the target "no")
+expect_exit 0 "controls on logs too short" "$H" simgap-validate --cases 4 --effects control --static-only \
+    --duration 10 --rate 10 --seeds 3 --json "$T/ts.json"
+json "$T/ts.json" 'all(r["verdict"] == "too-short" for r in j["results"])' && pass "the short controls are too-short" ||
+    fail "short controls: $(cat "$T/out")"
+expect_out "static 0/0 false alarms.*4 too short" "too-short controls are not counted as false alarms"
+grep -q "false alarms on controls.*no" "$T/out" && fail "the false-alarm target failed on too-short controls" ||
+    pass "no false-alarm target failed on too-short controls"
+# --only K runs one case: the summary counts one case, not --cases N
+expect_exit 0 "--only one case" "$H" simgap-validate --cases 8 --only 6 $FAST --json "$T/o.json" --markdown "$T/o.md"
+expect_out "^simgap-validate: 1 case (case 6 of 8; seed 1)" "--only: one case said"
+json "$T/o.json" 'j["cases"] == 1 and len(j["results"]) == 1 and j["only"] == 6' && pass "--only: JSON counts one case" ||
+    fail "--only JSON: $(cat "$T/pyerr")"
+grep -q -- "--only 6" "$T/o.md" && grep -q "1 case in" "$T/o.md" && pass "--only: the Markdown's command and count" ||
+    fail "--only Markdown: $(grep '^Run' "$T/o.md")"
+# the Markdown's command reproduces the run: the walks' rate is in it
+expect_exit 0 "walk rate in the command" "$H" simgap-validate --cases 8 --only 7 --walk-only --walk-duration 20 \
+    --walk-rate 100 --seeds 3 --quiet --markdown "$T/w.md"
+grep -q -- "--walk-only" "$T/w.md" && grep -q -- "--walk-rate 100" "$T/w.md" && pass "--walk-rate in the Markdown's command" ||
+    fail "Markdown command: $(grep '^Run' "$T/w.md")"
+
+if [ "$fails" -ne 0 ]; then echo "test_simgap_validate.sh: $fails failure(s)"; exit 1; fi
+echo "test_simgap_validate.sh: all passed"
