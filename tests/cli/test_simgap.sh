@@ -148,6 +148,15 @@ head -c 50000 "$(dirname "$0")/../../vectors/walk.bin" > "$T/trunc.bin"
 expect_exit 1 "truncated .bin" "$H" simgap "$T/trunc.bin" --quiet --seeds 3
 expect_err "^harness simgap: error: .*trunc.bin: truncated" "truncated .bin: error line"
 
+# a static log above 1 kHz whose AR(1) time is near the catalogue's 1 ms:
+# the baseline fit's time grid began at one sample (0.25 ms), the fitted
+# 0.9995 ms was refused by the simulator and every twin failed ("twin
+# simulation failed on channel ax", exit 1; a review)
+"$H" sim --motion stand:30 --rate 4000 --profile mtx --effect ar1:tau_s=0.001:sigma=0.05 --seed 3 --out "$T/hr.csv" >/dev/null 2>&1 || fail "sim 4 kHz"
+expect_exit 0 "static log at 4 kHz with an AR(1) of 1 ms" "$H" simgap "$T/hr.csv" --static --quiet --seeds 6 --json "$T/hr.json"
+json "$T/hr.json" 'all(c["baseline"]["ar1_tau_s"] >= 0.001 and c["baseline"]["ar1_sigma"] > 0.04 for c in j["channels"])' &&
+    pass "4 kHz: the AR(1) fitted within the catalogue" || fail "4 kHz AR(1): $(cat "$T/pyerr")"
+
 # a static CSV (t,ax,ay,az,gx,gy,gz, SI) of 600 s at 100 Hz, MTx noise, gyro z
 # rounded to 0.001 rad/s: found on gz (lattice), attributed to quant with the
 # right LSB, the held-out gap explained, no other channel flagged
