@@ -1067,6 +1067,26 @@ static int real_features(const double *x, const sg_segs_t *segs, const sg_feat_c
     return 0;
 }
 
+/* Whether x holds one value over each block of segment g (no Allan point
+ * there; *v the first block's value). */
+static int seg_one_value(const double *x, const sg_segs_t *segs, int g, double *v)
+{
+    int b;
+    long k;
+    if (segs->nb[g] < 1 || segs->n[g][0] < 1) {
+        return 0;
+    }
+    *v = x[segs->start[g][0]];
+    for (b = 0; b < segs->nb[g]; b++) {
+        for (k = segs->start[g][b] + 1; k < segs->start[g][b] + segs->n[g][b]; k++) {
+            if (x[k] != x[segs->start[g][b]]) {
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
 static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_t err_size)
 {
     const sg_opts_t *o = &r->opts;
@@ -1121,6 +1141,23 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
         for (k = 0; k < (size_t)r->n; k++) {
             x[k] = ch < 3 ? log->acc[k][ch] : log->gyr[k][ch - 3];
         }
+        /* one value over the fit or the held-out segment: nothing to fit
+         * or to test there, which is not a log too short (until 2026-11-28
+         * it was answered "fewer than 4 Allan points" or "within +-25 % over
+         * only 0 decades", and stopped the attribution of every channel) */
+        for (g = SG_FIT; g <= SG_HOLD && !r->seg_constant[ch]; g++) {
+            if (seg_one_value(x, &r->segs, g, &r->seg_constant_value[ch])) {
+                r->seg_constant[ch] = g;
+            }
+        }
+        if (r->seg_constant[ch]) {
+            hx_warn("simgap", "%s: channel %s does not vary within the %s segment (%.6g %s at its start): stuck "
+                              "there, or its noise is below the output's step; not analysed",
+                    r->path, sg_channel_name(ch), r->seg_constant[ch] == SG_FIT ? "fit" : "held-out",
+                    r->seg_constant_value[ch], sg_channel_unit(ch));
+            done += 1.0 + budget;
+            continue;
+        }
         c->q_full = sg_lattice_step(x, r->n, &c->q_full_z);
         /* the lattice domain exists only where the values lie on one */
         if (!(c->q_full_z > gsl_cdf_ugaussian_Qinv(0.5 * alpha))) {
@@ -1164,6 +1201,14 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             hx_progress_update(prog, done);
         }
     }
+    for (ch = 0; ch < SG_NCH && (r->constant[ch] || r->seg_constant[ch]); ch++) {
+    }
+    if (ch == SG_NCH) {
+        snprintf(err, err_size, "no channel varies over both the fit and the held-out segment (stuck, or noise "
+                                "below the output's step): nothing to diagnose");
+        free(x);
+        return -1;
+    }
     for (ch = 0; ch < SG_NCH; ch++) {
         sg_chres_t *c = &r->ch[ch];
         sg_table_t tfit;
@@ -1171,7 +1216,7 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
         double mean = 0.0, tmax;
         twinset_t ts;
         size_t k;
-        if (r->constant[ch]) {
+        if (r->constant[ch] || r->seg_constant[ch]) {
             continue;
         }
         share = done + budget; /* where this channel's share of the progress ends */
@@ -1302,6 +1347,10 @@ static void verdict(sg_result_t *r)
     for (ch = 0; ch < SG_NCH; ch++) {
         const sg_chres_t *c = &r->ch[ch];
         if (!c->active) {
+            /* a channel stuck over one segment only: a gap no twin of the
+             * catalogue reproduces */
+            gaps += r->seg_constant[ch] != 0;
+            open += r->seg_constant[ch] != 0;
             continue;
         }
         if (c->gap) {

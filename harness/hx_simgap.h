@@ -618,6 +618,10 @@ typedef struct {
     int constant[SG_NCH];     /**< the channel holds one value over the whole log (stuck, or its noise
                                    below the output's step): nothing to test; static logs: not analysed */
     double constant_value[SG_NCH]; /**< ... that value, u */
+    int seg_constant[SG_NCH]; /**< static logs: SG_FIT or SG_HOLD when the channel, not constant over the
+                                   whole log, holds one value over that segment (nothing to fit or to
+                                   test there): not analysed, the other channels are; 0 otherwise */
+    double seg_constant_value[SG_NCH]; /**< ... that value, u */
     sg_chres_t ch[SG_NCH];
     sg_plist_t pl[SG_NCH][SG_NSEG];      /**< points per channel and segment */
     double *real[SG_NCH][SG_NSEG];       /**< real values */

@@ -1053,8 +1053,19 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
             s.free_[ir] = 0;
         }
     }
-    /* AR(1) correlation time grid: from one sample to tmax */
+    /* AR(1) correlation time grid: from one sample to tmax, within the
+     * catalogue's range (its 1 ms is above one sample beyond 1 kHz: a
+     * shorter fitted time made every twin fail) */
     tmin_s = 1.0 / t->rate_hz;
+    {
+        const fnav_effect_info_t *ai = fnav_imuerr_effect_info(FNAV_EFFECT_AR1);
+        if (ai != NULL && tmin_s < ai->params[0].lo) {
+            tmin_s = ai->params[0].lo;
+        }
+        if (ai != NULL && tmax_s > ai->params[0].hi) {
+            tmax_s = ai->params[0].hi;
+        }
+    }
     if (!(tmax_s > tmin_s)) {
         tmax_s = 2.0 * tmin_s;
     }

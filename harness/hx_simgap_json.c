@@ -305,6 +305,16 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
             cJSON_AddItemToArray(a, co);
         }
     }
+    a = cJSON_AddArrayToObject(root, "constant_segments");
+    for (ch = 0; ch < SG_NCH; ch++) {
+        if (r->seg_constant[ch]) {
+            cJSON *co = cJSON_CreateObject();
+            cJSON_AddStringToObject(co, "channel", sg_channel_name(ch));
+            cJSON_AddStringToObject(co, "segment", r->seg_constant[ch] == SG_FIT ? "fit" : "held_out");
+            add_num(co, "value", r->seg_constant_value[ch]);
+            cJSON_AddItemToArray(a, co);
+        }
+    }
     cJSON_AddNumberToObject(root, "locations_dropped", (double)r->nloc_dropped);
     a = cJSON_AddArrayToObject(root, "locations");
     for (i = 0; i < r->nloc; i++) {

@@ -90,8 +90,11 @@ static int plot_domain(const sg_result_t *r, const char *dir, const char *cmd, i
         if (!r->ch[ch].active || n_points(r, ch, dom) == 0) {
             char t[160];
             snprintf(t, sizeof t, "%s: %s", sg_channel_name(ch),
-                     !r->ch[ch].active ? (r->constant[ch] ? "not analysed (one value over the whole log)"
-                                                          : "not analysed")
+                     !r->ch[ch].active ? (r->constant[ch]                 ? "not analysed (one value over the whole log)"
+                                          : r->seg_constant[ch] == SG_FIT ? "not analysed (no variation within the fit segment)"
+                                          : r->seg_constant[ch] == SG_HOLD
+                                              ? "not analysed (no variation within the held-out segment)"
+                                              : "not analysed")
                                        : (dom == SG_ALLAN ? "no Allan point" : "no Welch band (the log is too short)"));
             empty_panel(p.gp, t);
             fprintf(p.gp, "set logscale xy\n");

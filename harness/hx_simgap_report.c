@@ -122,7 +122,10 @@ static void print_static(FILE *f, const sg_result_t *r)
         char w[128], a[128];
         int iw, ia;
         if (!c->active) {
-            if (!r->constant[ch]) {
+            if (r->seg_constant[ch]) {
+                fprintf(f, "  %s  not analysed: does not vary within the %s segment\n", sg_channel_name(ch),
+                        r->seg_constant[ch] == SG_FIT ? "fit" : "held-out");
+            } else if (!r->constant[ch]) {
                 fprintf(f, "  %s  not analysed: fewer than 4 Allan points on the fit segment\n", sg_channel_name(ch));
             }
             continue;
@@ -355,6 +358,12 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
                        "%s\n",
                     sg_channel_name(ch), r->constant_value[ch], sg_channel_unit(ch),
                     r->domain == 1 ? "not analysed" : "navigated as it is, but its noise not tested");
+        }
+        if (r->seg_constant[ch]) {
+            fprintf(f, "%s does not vary within the %s segment (%.6g %s at its start): stuck there, or its "
+                       "noise below the output's step; not analysed\n",
+                    sg_channel_name(ch), r->seg_constant[ch] == SG_FIT ? "fit" : "held-out",
+                    r->seg_constant_value[ch], sg_channel_unit(ch));
         }
     }
     if (!r->confident) {

@@ -898,6 +898,43 @@ static void test_jumps_rate_detection(void **state)
     assert_true(fabs((double)nfound / T - rate) / rate > 0.5);
 }
 
+/* The fitted baseline must be one the simulator can run: the AR(1) time
+ * grid started at one sample, 1 / f_s, below the catalogue's 1 ms for a log
+ * above 1 kHz, and a fitted time under 1 ms made every twin fail (`harness
+ * simgap` on a 4 kHz static log with an AR(1) of 1 ms: "twin simulation
+ * failed on channel ax", exit 1; a review). An exact table of white noise
+ * plus an AR(1) of 0.5 ms at 4 kHz: the fit keeps a simulatable time. */
+static void test_fit_ar1_in_catalogue(void **state)
+{
+    const double fs = 4000.0, T = 60.0;
+    const fnav_effect_info_t *info = fnav_imuerr_effect_info(FNAV_EFFECT_AR1);
+    sg_chmodel_t m;
+    sg_effect_t e;
+    sg_table_t tb;
+    sg_evidence_t ev;
+    sg_fit_t f;
+    fnav_imuerr_config_t cfg;
+    fnav_imuerr_t sim;
+    int k;
+    (void)state;
+    memset(&e, 0, sizeof e);
+    e.id = FNAV_EFFECT_AR1;
+    e.p[0] = 5e-4; /* tau, s: two samples */
+    e.p[1] = 0.05; /* sigma, far above the white noise's 1e-3 * sqrt(4000) / 10 */
+    white_plus_table(&e, fs, T, 14, &m, &tb);
+    for (k = 0; k < (int)tb.n; k++) {
+        tb.w[k] = 1.0 / (SG_FIT_FLOOR * SG_FIT_FLOOR); /* the short-tau points of a minute at 4 kHz */
+    }
+    memset(&ev, 0, sizeof ev);
+    assert_int_equal(sg_fit_model(&tb, 0.0, NULL, 0, &ev, 1.0, &f), 0);
+    k = sg_model_find(&f.model, FNAV_EFFECT_AR1);
+    assert_true(k >= 0);
+    assert_true(f.model.e[k].p[1] > 0.0); /* the AR(1) is kept: it carries most of the variance */
+    assert_true(f.model.e[k].p[0] >= info->params[0].lo);
+    assert_int_equal(sg_model_imuerr(&f.model, fs, 1u, &cfg), 0);
+    assert_int_equal(fnav_imuerr_init(&sim, &cfg), FNAV_OK);
+}
+
 /* An effect accepted at one step whose magnitude the later refits set to
  * zero is left out of the answer (a review, 2026-11-28: "jumps (10 per
  * hour, rms step 0 m/s^2) on ax (13 % of the held-out excess)"); the
@@ -1033,6 +1070,7 @@ int main(void)
         cmocka_unit_test(test_prune_zero),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),
+        cmocka_unit_test(test_fit_ar1_in_catalogue),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -148,6 +148,15 @@ head -c 50000 "$(dirname "$0")/../../vectors/walk.bin" > "$T/trunc.bin"
 expect_exit 1 "truncated .bin" "$H" simgap "$T/trunc.bin" --quiet --seeds 3
 expect_err "^harness simgap: error: .*trunc.bin: truncated" "truncated .bin: error line"
 
+# a static log above 1 kHz whose AR(1) time is near the catalogue's 1 ms:
+# the baseline fit's time grid began at one sample (0.25 ms), the fitted
+# 0.9995 ms was refused by the simulator and every twin failed ("twin
+# simulation failed on channel ax", exit 1; a review)
+"$H" sim --motion stand:30 --rate 4000 --profile mtx --effect ar1:tau_s=0.001:sigma=0.05 --seed 3 --out "$T/hr.csv" >/dev/null 2>&1 || fail "sim 4 kHz"
+expect_exit 0 "static log at 4 kHz with an AR(1) of 1 ms" "$H" simgap "$T/hr.csv" --static --quiet --seeds 6 --json "$T/hr.json"
+json "$T/hr.json" 'all(c["baseline"]["ar1_tau_s"] >= 0.001 and c["baseline"]["ar1_sigma"] > 0.04 for c in j["channels"])' &&
+    pass "4 kHz: the AR(1) fitted within the catalogue" || fail "4 kHz AR(1): $(cat "$T/pyerr")"
+
 # a static CSV (t,ax,ay,az,gx,gy,gz, SI) of 600 s at 100 Hz, MTx noise, gyro z
 # rounded to 0.001 rad/s: found on gz (lattice), attributed to quant with the
 # right LSB, the held-out gap explained, no other channel flagged
@@ -358,6 +367,29 @@ fi
 awk -F, 'BEGIN { OFS = "," } NR > 1 { $2 = "0"; $3 = "0"; $4 = "9.8"; $5 = "0"; $6 = "0"; $7 = "0" } { print }' "$T/st.csv" > "$T/stk6.csv"
 expect_exit 1 "every channel constant" "$H" simgap "$T/stk6.csv" --quiet --seeds 3
 expect_err "^harness simgap: error: .*every channel holds one value" "every channel constant: said why"
+# a channel that does not vary within one segment only (stuck over the
+# held-out middle; or over each of the fit segment's ends, at two values) has
+# nothing to fit or to test there: it is said as such, not analysed, counted
+# as a gap no catalogue effect explains, and the other channels are
+# diagnosed. It made the whole log "too short" ("within +-25 % over only
+# 0.00 decades", "fewer than 4 Allan points (channel ax)"), exit 1, with no
+# attribution on any channel (a review). Samples 3600-8400 are the middle.
+awk -F, 'BEGIN { OFS = "," } NR > 1 && NR - 2 >= 3598 && NR - 2 < 8404 { $2 = "0.25" } { print }' "$T/st.csv" > "$T/stm.csv"
+expect_exit 0 "ax stuck over the held-out middle" "$H" simgap "$T/stm.csv" --quiet --seeds 6 --json "$T/stm.json" --plot "$T/stmplot"
+expect_err "^harness simgap: warning: .*channel ax does not vary within the held-out segment (0.25 m/s^2" "stuck middle: warned"
+grep -q "TOO SHORT" "$T/out" && fail "stuck middle called too short" || pass "stuck middle: not called too short"
+json "$T/stm.json" 'j["confident"] and j["constant_channels"] == [] and j["constant_segments"] == [{"channel": "ax", "segment": "held_out", "value": 0.25}] and [c["analysed"] for c in j["channels"]] == [False] + [True] * 5 and all(len(c["attribution"]["steps"]) > 0 for c in j["channels"][1:]) and j["verdict"]["answer"] == "unexplained"' &&
+    pass "stuck middle: the others diagnosed, the stuck part a gap" || fail "stuck middle JSON: $(cat "$T/pyerr")"
+[ -s "$T/stmplot/allan.png" ] && [ -s "$T/stmplot/psd.png" ] && [ -s "$T/stmplot/z.png" ] &&
+    pass "stuck middle: plots written" || fail "stuck middle plots"
+awk -F, 'BEGIN { OFS = "," } NR > 1 && NR - 2 < 3602 { $2 = "0.25" } NR > 1 && NR - 2 >= 8399 { $2 = "0.26" } { print }' "$T/st.csv" > "$T/ste.csv"
+expect_exit 0 "ax stuck over each of the fit segment's ends" "$H" simgap "$T/ste.csv" --quiet --seeds 6 --json "$T/ste.json"
+expect_out "^ax does not vary within the fit segment (0.25 m/s^2 at its start)" "stuck ends: said in the summary"
+json "$T/ste.json" 'j["confident"] and j["constant_segments"] == [{"channel": "ax", "segment": "fit", "value": 0.25}] and [c["analysed"] for c in j["channels"]] == [False] + [True] * 5' &&
+    pass "stuck ends: not analysed, the others are" || fail "stuck ends JSON: $(cat "$T/pyerr")"
+awk -F, 'BEGIN { OFS = "," } NR > 1 && NR - 2 >= 3598 && NR - 2 < 8404 { $2 = $3 = $4 = $5 = $6 = $7 = "0.5" } { print }' "$T/st.csv" > "$T/stm6.csv"
+expect_exit 1 "every channel stuck over the middle" "$H" simgap "$T/stm6.csv" --static --quiet --seeds 3
+expect_err "^harness simgap: error: .*no channel varies over both the fit and the held-out segment" "every channel stuck over the middle: said why"
 # the JSON schema of docs/simgap.md: every documented key present, null where
 # it cannot be computed (G_per_domain's domains without points; a too-short
 # log's final model is its baseline)
