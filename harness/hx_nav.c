@@ -555,9 +555,33 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
                                                                     : "");
     }
     if (rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ) {
-        HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
-                     "time stamps in seconds? (in milliseconds, divide by 1000)",
-                     1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ);
+        /* the unit that makes the rate one a foot-mounted IMU has (20 Hz to
+         * 100 kHz): 2.5 ms read as 2.5 s (ms), as 2511 s (us), as 2.5e6 s
+         * (ns); until 2026-11-28 the remedy always named milliseconds */
+        static const struct {
+            double scale;
+            const char *name, *div;
+        } k_units[] = { { 1e3, "milliseconds", "1000" }, { 1e6, "microseconds", "1e6" },
+                        { 1e9, "nanoseconds", "1e9" } };
+        const char *name = NULL, *div = NULL;
+        size_t u;
+        for (u = 0; u < sizeof k_units / sizeof k_units[0]; u++) {
+            const double r_u = rate_hz * k_units[u].scale;
+            if (r_u >= HX_RATE_MIN_HZ && r_u <= 1e5) {
+                name = k_units[u].name;
+                div = k_units[u].div;
+                break;
+            }
+        }
+        if (name != NULL) {
+            HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
+                         "time stamps in seconds? (they look like %s: divide by %s)",
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, name, div);
+        } else {
+            HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
+                         "time stamps in seconds? (in milliseconds, divide by 1000)",
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ);
+        }
     }
 #undef HX_UNITS_ADD
     if (n > 0 && len < msg_size) {

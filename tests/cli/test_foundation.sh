@@ -109,6 +109,8 @@ expect_err "record #1000 at byte 48192 has 10 of 48 bytes.*; before it: .*record
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n5000000000,0,0,9.8,0,0,0\n' >"$T/farfuture.csv"
 expect_exit 1 "a time beyond 2^62 ns" "$H" info "$T/farfuture.csv"
 expect_err "farfuture.csv:3: time 5e+09 s is beyond 2^62 ns" "a time whose differences would overflow is refused with its line"
+expect_err "is the time column in seconds? (in milliseconds, microseconds or nanoseconds, divide by 1000, 1e6 or 1e9)" \
+    "such a time names the likely unit mistake (time stamps in ns pass 2^62 ns after 4.6 s)"
 printf 't,ax,ay,az,gx,gy,gz\n1700000000000.000,0,0,9.8,0,0,0\n' >"$T/unixms.csv"
 expect_exit 1 "Unix time in milliseconds" "$H" info "$T/unixms.csv"
 expect_err "unixms.csv:2: time ('1700000000000.000') is beyond 9e9 s (the time column is in seconds" \

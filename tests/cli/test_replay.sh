@@ -383,6 +383,17 @@ expect_exit 1 "time in milliseconds" "$H" replay "$T/in_ms.csv" --out "$T/in_ms_
 expect_err "are the time stamps in seconds" "time stamps in ms are named as such"
 rows=$(($(wc -l < "$T/in_ms_traj.csv") - 1))
 [ "$rows" -gt 1000 ] && pass "trajectory written for a log in ms ($rows frames)" || fail "trajectory of a log in ms: $rows frames"
+expect_err "they look like milliseconds: divide by 1000" "the remedy names milliseconds"
+# stamps in microseconds or nanoseconds: the remedy named milliseconds for both (2.5 ms read as 2511 s:
+# "in milliseconds, divide by 1000", which left them 2.5 s apart)
+awk -F, 'NR == 1 { print; next } { printf "%.0f,%s,%s,%s,%s,%s,%s\n", $1 * 1e6, $2, $3, $4, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_us.csv"
+expect_exit 1 "time in microseconds" "$H" replay "$T/in_us.csv" --quiet
+expect_err "they look like microseconds: divide by 1e6" "time stamps in us are named as such"
+awk -F, 'NR == 1 { print; next } NR < 400 { printf "%.0f,%s,%s,%s,%s,%s,%s\n", $1 * 1e9, $2, $3, $4, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_ns.csv"
+expect_exit 1 "time in nanoseconds" "$H" replay "$T/in_ns.csv" --quiet
+expect_err "they look like nanoseconds: divide by 1e9" "time stamps in ns are named as such"
 
 # Rows of the Markdown tables in FILE... whose cell count differs from their
 # header's (an unescaped | in a header or a note breaks a table), as FILE:LINE.
