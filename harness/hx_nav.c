@@ -1218,6 +1218,29 @@ int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_tr
     }
     fprintf(p.gp, "e\n");
     fprintf(p.gp, "set size noratio\nset autoscale xy\nset xlabel 'time (s)'\nset ylabel 'height (m, up)'\n");
+    {
+        /* a still log's height is one value (a short log's time too): gnuplot
+         * printed "Warning: empty y range" on standard error; at least 0.1 m
+         * and 1 s are spanned */
+        double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
+        const double min_span[2] = { 1.0, 0.1 };
+        int k;
+        for (i = 0; i < t->n; i++) {
+            if (t->f[i].flags & FNAV_FRAME_ALIGNED) {
+                const double v[2] = { 1e-9 * (double)(t->f[i].t_ns - t->f[0].t_ns), -(double)t->f[i].pos_m[2] };
+                for (k = 0; k < 2; k++) {
+                    lo[k] = v[k] < lo[k] ? v[k] : lo[k];
+                    hi[k] = v[k] > hi[k] ? v[k] : hi[k];
+                }
+            }
+        }
+        for (k = 0; k < 2; k++) {
+            if (lo[k] <= hi[k] && hi[k] - lo[k] < min_span[k]) {
+                fprintf(p.gp, "set %crange [%.4f:%.4f]\n", k == 0 ? 'x' : 'y', 0.5 * (lo[k] + hi[k] - min_span[k]),
+                        0.5 * (lo[k] + hi[k] + min_span[k]));
+            }
+        }
+    }
     fprintf(p.gp, "plot '-' with lines lw 1 title 'height'\n");
     for (i = 0; i < t->n; i++) {
         if (t->f[i].flags & FNAV_FRAME_ALIGNED) {
