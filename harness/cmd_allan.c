@@ -131,7 +131,23 @@ typedef struct {
     double gyro_max;         /* a log's largest |rate| on any axis (units check) */
     int units_bad;           /* the log is not in SI units (hx_units_problem; units_msg says why) */
     char units_msg[768];
+    /* motion check: one-second windows of the log (sums for the spread of
+     * the rate and of |f| within each) */
+    double win_sum[4], win_sq[4]; /* gx, gy, gz, |f| */
+    uint32_t win_fill, win_len;
+    long win_n, win_moving;
+    double win_first_moving_s;
+    int moving;              /* over HX_ALLAN_MOVING_FRAC of the windows move: not a static log */
 } run_t;
+
+/* A window moves when within its second the rate spreads by more than
+ * 0.25 rad/s RMS (14 deg/s; a gyro at rest spreads by hundredths) or |f|
+ * by more than 0.5 m/s^2 RMS (at rest: hundredths; a foot's swing: metres
+ * per second squared). A log with over 10 % of such windows is no static
+ * log (a walk: 45-85 %). */
+#define HX_ALLAN_MOVING_GYRO_RPS 0.25
+#define HX_ALLAN_MOVING_F_MPS2 0.5
+#define HX_ALLAN_MOVING_FRAC 0.10
 
 static const char k_exact_oom[] = "out of memory: --estimator exact keeps the whole record (8 bytes per sample "
                                   "and channel); use --estimator streaming";
@@ -378,6 +394,44 @@ static int parse_deviations(run_t *R, const char *list)
     return 0;
 }
 
+/* Collect one sample into the motion check's current one-second window. */
+static void motion_push(run_t *R, const fnav_sample_t *s)
+{
+    const double v[4] = { (double)s->gyro_rps[0], (double)s->gyro_rps[1], (double)s->gyro_rps[2],
+                          sqrt((double)s->accel_mps2[0] * (double)s->accel_mps2[0] +
+                               (double)s->accel_mps2[1] * (double)s->accel_mps2[1] +
+                               (double)s->accel_mps2[2] * (double)s->accel_mps2[2]) };
+    int i;
+    if (R->win_len == 0u) {
+        if (!(R->rate_hz > 0.0)) {
+            return; /* rate not known yet (the first sample of a log without a nominal rate) */
+        }
+        R->win_len = R->rate_hz < 2.0 ? 2u : R->rate_hz > 1e6 ? 1000000u : (uint32_t)(R->rate_hz + 0.5);
+    }
+    for (i = 0; i < 4; i++) {
+        R->win_sum[i] += v[i];
+        R->win_sq[i] += v[i] * v[i];
+    }
+    if (++R->win_fill == R->win_len) {
+        const double n = (double)R->win_fill;
+        double var[4];
+        for (i = 0; i < 4; i++) {
+            const double m = R->win_sum[i] / n;
+            var[i] = R->win_sq[i] / n - m * m;
+            var[i] = var[i] > 0.0 ? var[i] : 0.0;
+            R->win_sum[i] = R->win_sq[i] = 0.0;
+        }
+        if (sqrt(var[0] + var[1] + var[2]) > HX_ALLAN_MOVING_GYRO_RPS || sqrt(var[3]) > HX_ALLAN_MOVING_F_MPS2) {
+            if (R->win_moving == 0) {
+                R->win_first_moving_s = (double)R->win_n * (double)R->win_len / R->rate_hz;
+            }
+            R->win_moving++;
+        }
+        R->win_n++;
+        R->win_fill = 0u;
+    }
+}
+
 static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_opt)
 {
     hx_reader_t *r = hx_open_input(CMD, a, path);
@@ -414,6 +468,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
             }
         }
         t_prev = s.t_ns;
+        motion_push(R, &s);
         for (i = 0; i < 3; i++) {
             R->acc_sum[i] += (double)s.accel_mps2[i];
             if (fabs((double)s.gyro_rps[i]) > R->gyro_max) {
@@ -469,8 +524,14 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
          * "Units check"; not the rate: a static log may be slow). */
         const double f[3] = { R->acc_sum[0] / (double)R->n, R->acc_sum[1] / (double)R->n,
                               R->acc_sum[2] / (double)R->n };
-        R->units_bad = hx_units_problem(sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]), 9.80665, R->gyro_max, 0.0,
-                                        R->units_msg, sizeof R->units_msg);
+        /* A log that moves (a walk given as a static log) has no rest: its
+         * mean specific force is no gravity, and was named as a unit
+         * mistake ("|f| = 13.58 at rest ... not in m/s^2" for a walk in
+         * m/s^2). The motion is named instead; the gyro's range still
+         * tells deg/s. */
+        R->moving = R->win_n > 0 && (double)R->win_moving > HX_ALLAN_MOVING_FRAC * (double)R->win_n;
+        R->units_bad = hx_units_problem(R->moving ? 0.0 : sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]), 9.80665,
+                                        R->gyro_max, 0.0, R->units_msg, sizeof R->units_msg);
     }
     return rc;
 }
@@ -1565,6 +1626,23 @@ int hx_cmd_allan(int argc, char **argv)
                 path, 100.0 * R->tau_max_frac, tau_max_samples(R) / R->rate_hz, (unsigned long)R->grid[R->ngrid - 1u],
                 (double)R->grid[R->ngrid - 1u] / R->rate_hz);
     }
+    if (R->moving) {
+        hx_error(CMD,
+                 "%s: the log moves: in %ld of its %ld one-second windows the rate spreads by more than %g rad/s "
+                 "RMS or |f| by more than %g m/s^2 (the first at %.0f s): not a static log (a walk?); the Allan "
+                 "variance and its bias model describe a sensor at rest (a gyro in deg/s at rest also reads so: "
+                 "multiply by pi/180) (docs/allan.md, \"Command\")",
+                 path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2,
+                 R->win_first_moving_s);
+        exit_code = HX_EXIT_DATA;
+    } else if (R->win_moving > 0) {
+        hx_warn(CMD,
+                "%s: %ld of %ld one-second windows move (the rate spreads by more than %g rad/s RMS or |f| by more "
+                "than %g m/s^2; the first at %.0f s): the Allan variance includes that motion; cut the log to its "
+                "still part",
+                path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2,
+                R->win_first_moving_s);
+    }
     if (R->units_bad) {
         hx_error(CMD, "%s: %s", path, R->units_msg);
         exit_code = HX_EXIT_DATA;
@@ -1617,8 +1695,9 @@ int hx_cmd_allan(int argc, char **argv)
     if (hx_arg(&a, "--plot") != NULL && write_plot(R, hx_arg(&a, "--plot")) != 0) {
         exit_code = HX_EXIT_IO;
     }
-    if (hx_arg(&a, "--profile") != NULL && R->units_bad) {
-        hx_error(CMD, "%s: the log is not in SI units (above); profile not written", hx_arg(&a, "--profile"));
+    if (hx_arg(&a, "--profile") != NULL && (R->units_bad || R->moving)) {
+        hx_error(CMD, "%s: the log %s (above); profile not written", hx_arg(&a, "--profile"),
+                 R->moving ? "is not static" : "is not in SI units");
     } else if (hx_arg(&a, "--profile") != NULL) {
         if (hx_arg(&a, "--name") != NULL) {
             snprintf(name, sizeof name, "%s", hx_arg(&a, "--name"));

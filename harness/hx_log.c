@@ -1048,7 +1048,11 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     }
     }
     if (t_ns > FNAV_T_NS_MAX || t_ns < -FNAV_T_NS_MAX) {
-        set_err(r, "%s:%ld: time %.6g s is beyond 2^62 ns (146 years)", r->path, r->stats.lines, (double)t_ns * 1e-9);
+        /* time in ms, us or ns read as seconds: Unix time in ms is 1.7e12 "s"
+         * (until 2026-11-28 the message named no cause) */
+        set_err(r, "%s:%ld: time %.6g s is beyond 2^62 ns (146 years): is the time column in seconds? (in "
+                   "milliseconds, microseconds or nanoseconds, divide by 1000, 1e6 or 1e9)",
+                r->path, r->stats.lines, (double)t_ns * 1e-9);
         return FNAV_E_RANGE;
     }
     if (r->have_prev && t_ns < r->prev_t_ns) {

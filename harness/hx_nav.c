@@ -555,9 +555,33 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
                                                                     : "");
     }
     if (rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ) {
-        HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
-                     "time stamps in seconds? (in milliseconds, divide by 1000)",
-                     1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ);
+        /* the unit that makes the rate one a foot-mounted IMU has (20 Hz to
+         * 100 kHz): 2.5 ms read as 2.5 s (ms), as 2511 s (us), as 2.5e6 s
+         * (ns); until 2026-11-28 the remedy always named milliseconds */
+        static const struct {
+            double scale;
+            const char *name, *div;
+        } k_units[] = { { 1e3, "milliseconds", "1000" }, { 1e6, "microseconds", "1e6" },
+                        { 1e9, "nanoseconds", "1e9" } };
+        const char *name = NULL, *div = NULL;
+        size_t u;
+        for (u = 0; u < sizeof k_units / sizeof k_units[0]; u++) {
+            const double r_u = rate_hz * k_units[u].scale;
+            if (r_u >= HX_RATE_MIN_HZ && r_u <= 1e5) {
+                name = k_units[u].name;
+                div = k_units[u].div;
+                break;
+            }
+        }
+        if (name != NULL) {
+            HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
+                         "time stamps in seconds? (they look like %s: divide by %s)",
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, name, div);
+        } else {
+            HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
+                         "time stamps in seconds? (in milliseconds, divide by 1000)",
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ);
+        }
     }
 #undef HX_UNITS_ADD
     if (n > 0 && len < msg_size) {
@@ -1194,6 +1218,29 @@ int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_tr
     }
     fprintf(p.gp, "e\n");
     fprintf(p.gp, "set size noratio\nset autoscale xy\nset xlabel 'time (s)'\nset ylabel 'height (m, up)'\n");
+    {
+        /* a still log's height is one value (a short log's time too): gnuplot
+         * printed "Warning: empty y range" on standard error; at least 0.1 m
+         * and 1 s are spanned */
+        double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
+        const double min_span[2] = { 1.0, 0.1 };
+        int k;
+        for (i = 0; i < t->n; i++) {
+            if (t->f[i].flags & FNAV_FRAME_ALIGNED) {
+                const double v[2] = { 1e-9 * (double)(t->f[i].t_ns - t->f[0].t_ns), -(double)t->f[i].pos_m[2] };
+                for (k = 0; k < 2; k++) {
+                    lo[k] = v[k] < lo[k] ? v[k] : lo[k];
+                    hi[k] = v[k] > hi[k] ? v[k] : hi[k];
+                }
+            }
+        }
+        for (k = 0; k < 2; k++) {
+            if (lo[k] <= hi[k] && hi[k] - lo[k] < min_span[k]) {
+                fprintf(p.gp, "set %crange [%.4f:%.4f]\n", k == 0 ? 'x' : 'y', 0.5 * (lo[k] + hi[k] - min_span[k]),
+                        0.5 * (lo[k] + hi[k] + min_span[k]));
+            }
+        }
+    }
     fprintf(p.gp, "plot '-' with lines lw 1 title 'height'\n");
     for (i = 0; i < t->n; i++) {
         if (t->f[i].flags & FNAV_FRAME_ALIGNED) {

@@ -2327,6 +2327,22 @@ int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const
                       "'twins (mean)', 3 with lines dt 2 lc rgb 'black' title 'chi2_3 mean'\n",
                 tw);
     }
+    {
+        /* one stance (a still log read as a walk), or equal means: one value
+         * on the log axis, and gnuplot warned "empty y range" on standard
+         * error, --quiet or not; a factor 2 either side of it */
+        double lo = HUGE_VAL, hi = 0.0;
+        for (i = 0; i < ns; i++) {
+            const double v = st[i].nupd > 0 ? st[i].nis_sum / st[i].nupd : 0.0;
+            if (v > 0.0) {
+                lo = v < lo ? v : lo;
+                hi = v > hi ? v : hi;
+            }
+        }
+        if (hi > 0.0 && hi < 1.01 * lo) {
+            fprintf(p.gp, "set yrange [%.6g:%.6g]\n", 0.5 * lo, 2.0 * hi);
+        }
+    }
     fprintf(p.gp, "set title 'mean NIS over each stance'\nplot $d using 1:3 with impulses lw 2 title 'real'\n");
     fprintf(p.gp, "unset multiplot\n");
     free(st);

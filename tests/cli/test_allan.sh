@@ -276,6 +276,40 @@ expect_exit 2 "--m not ascending" "$H" allan --series "$T/f.txt" --rate 1 --m 10
 expect_exit 2 "--m not a number" "$H" allan --series "$T/f.txt" --rate 1 --m 1,x
 expect_exit 2 "--m with the streaming estimator" "$H" allan --series "$T/f.txt" --rate 1 --estimator streaming --m 4
 
+# a walk given to allan (the sealed data hold walks and static logs): its mean specific force is no gravity,
+# and a walk in m/s^2 was named as a unit mistake ("|f| = 13.58 at rest ... not in m/s^2"), or, as the bundled
+# walk, gave a profile refusal "identified parameters not all positive and finite" and, without --profile,
+# exit 0; now the motion is named, exit 1, the tables still written, no profile
+expect_exit 1 "a walk is no static log" "$H" allan vectors/walk.bin --no-sim --quiet --out "$T/walk_t.csv" \
+    --profile "$T/walk.profile"
+expect_err "walk.bin: the log moves: in 19 of its 41 one-second windows" "the walk's motion is named"
+expect_err "walk.profile: the log is not static (above); profile not written" "no profile from a walk"
+[ -s "$T/walk_t.csv" ] && [ ! -e "$T/walk.profile" ] && pass "walk: table written, no profile" || fail "walk: outputs"
+expect_exit 1 "a walk without --profile" "$H" allan vectors/walk.bin --no-sim --quiet
+G2=$(data openshoe_gx2/Measurement_100521_2_data_inert.txt)
+if [ -n "$G2" ]; then
+    expect_exit 1 "a GX2 walk (m/s^2 after import)" "$H" allan "$G2" --no-sim --quiet
+    expect_err "the log moves" "the GX2 walk's motion is named"
+    if grep -q "not in m/s^2" "$T/err"; then fail "a walk in m/s^2 named as a unit mistake"; else
+        pass "no unit mistake named for a walk in m/s^2"; fi
+fi
+# a static log handled for 3 s of its 120: a warning naming the motion, the status unchanged (0)
+awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 12000; i++) { m = (i >= 5000 && i < 5300) ? 1 : 0;
+     printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 100, 0.05 * (rand() - 0.5) + m * 3 * sin(i / 5),
+            0.05 * (rand() - 0.5), 9.81 + 0.05 * (rand() - 0.5), 0.007 * (rand() - 0.5) + m * 2 * cos(i / 7),
+            0.007 * (rand() - 0.5), 0.007 * (rand() - 0.5) } }' >"$T/handled.csv"
+expect_exit 0 "a static log with 3 s handled" "$H" allan "$T/handled.csv" --no-sim --quiet
+expect_err "handled.csv: 3 of 120 one-second windows move" "the handled seconds are warned about"
+expect_err "the first at 50 s" "the first moving second is named"
+# a static log with its gyro in deg/s (noise 0.35 deg/s RMS per axis, as the ADIS logs' 0.66 "rad/s" RMS over the
+# three axes): it stays below 70 rad/s, but its noise spreads by more than 0.25 rad/s RMS
+awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 6000; i++)
+     printf "%.2f,%.5f,%.5f,%.5f,%.4f,%.4f,%.4f\n", i / 100, 0.05 * (rand() - 0.5), 0.05 * (rand() - 0.5),
+            9.81 + 0.05 * (rand() - 0.5), 1.2 * (rand() - 0.5), 1.2 * (rand() - 0.5), 0.3 + 1.2 * (rand() - 0.5) }' \
+    >"$T/dps.csv"
+expect_exit 1 "a static gyro in deg/s" "$H" allan "$T/dps.csv" --no-sim --quiet
+expect_err "a gyro in deg/s at rest also reads so" "deg/s named as a cause"
+
 A=$(data adis16405_static/adis16405_imu1_100Hz.csv.gz)
 if [ -n "$A" ]; then
     expect_exit 0 "ADIS log, all outputs" "$H" allan "$A" --sim-samples 100000 --quiet --profile "$T/a.profile" \

@@ -79,9 +79,12 @@ fi
 awk -F, 'NR == 1 { print "Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Gyroscope Z (deg/s),Accelerometer X (g),Accelerometer Y (g),Accelerometer Z (g)"; next }
     NR <= 8000 { printf "%.9f,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f\n", $1, $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665 }' "$T/a.csv" >"$T/ngimu.csv"
 head -c $(($(wc -c <"$T/ngimu.csv") - 30)) "$T/ngimu.csv" >"$T/cut.csv"
+# allan gets the still first 12.5 s (a walk is no static log for it: exit 1 since 2026-11-28)
+mkdir -p "$T/still" && head -n 5000 "$T/ngimu.csv" | head -c -30 >"$T/still/cut.csv"
 for c in info convert allan psd replay; do
     case $c in
     convert) expect_exit 0 "$c of a CSV cut mid-line" "$H" convert "$T/cut.csv" "$T/cut.bin" ;;
+    allan) expect_exit 0 "$c of a CSV cut mid-line" "$H" allan "$T/still/cut.csv" ;;
     *) expect_exit 0 "$c of a CSV cut mid-line" "$H" "$c" "$T/cut.csv" ;;
     esac
     expect_err "cut.csv:[0-9]*: last line is incomplete (recording cut off mid-write); ignored" "$c warns of the cut-off last line"
@@ -106,6 +109,8 @@ expect_err "record #1000 at byte 48192 has 10 of 48 bytes.*; before it: .*record
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n5000000000,0,0,9.8,0,0,0\n' >"$T/farfuture.csv"
 expect_exit 1 "a time beyond 2^62 ns" "$H" info "$T/farfuture.csv"
 expect_err "farfuture.csv:3: time 5e+09 s is beyond 2^62 ns" "a time whose differences would overflow is refused with its line"
+expect_err "is the time column in seconds? (in milliseconds, microseconds or nanoseconds, divide by 1000, 1e6 or 1e9)" \
+    "such a time names the likely unit mistake (time stamps in ns pass 2^62 ns after 4.6 s)"
 printf 't,ax,ay,az,gx,gy,gz\n1700000000000.000,0,0,9.8,0,0,0\n' >"$T/unixms.csv"
 expect_exit 1 "Unix time in milliseconds" "$H" info "$T/unixms.csv"
 expect_err "unixms.csv:2: time ('1700000000000.000') is beyond 9e9 s (the time column is in seconds" \

@@ -78,6 +78,15 @@ expect_err "return-to-start" "summary on stderr when the CSV is on stdout"
 if command -v gnuplot >/dev/null 2>&1; then
     expect_exit 0 "replay --plot" "$H" replay vectors/walk.bin --plot "$T/p.png" --quiet
     if [ -s "$T/p.png" ]; then pass "PNG written"; else fail "PNG missing"; fi
+    # a still 3 s log: its height (and the aligned frames' time) is one value, and gnuplot printed
+    # "Warning: empty y range [-0:-0], adjusting to [-1:1]" on standard error; now spanned, stderr clean
+    awk 'BEGIN { srand(11); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 300; i++)
+         printf "%.2f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f\n", i / 100, 0.02 * (rand() - 0.5), 0.02 * (rand() - 0.5),
+                9.81 + 0.02 * (rand() - 0.5), 0.002 * (rand() - 0.5), 0.002 * (rand() - 0.5), 0.002 * (rand() - 0.5) }' \
+        >"$T/still3.csv"
+    expect_exit 0 "replay --plot of a still 3 s log" "$H" replay "$T/still3.csv" --plot "$T/still3.png" --quiet
+    if [ -s "$T/still3.png" ] && ! grep -q . "$T/err"; then pass "still log plotted without gnuplot warnings"; else
+        fail "still log plot: $(head -c 200 "$T/err")"; fi
     # an unwritable PNG: exit 3 before any gnuplot, nothing on stdout
     expect_exit 3 "unwritable --plot" "$H" replay vectors/walk.bin --plot /nonexistent/dir/p.png --quiet
     if [ ! -s "$T/out" ]; then pass "no image on standard output"; else fail "unwritable --plot wrote $(wc -c < "$T/out") bytes to stdout"; fi
@@ -383,6 +392,17 @@ expect_exit 1 "time in milliseconds" "$H" replay "$T/in_ms.csv" --out "$T/in_ms_
 expect_err "are the time stamps in seconds" "time stamps in ms are named as such"
 rows=$(($(wc -l < "$T/in_ms_traj.csv") - 1))
 [ "$rows" -gt 1000 ] && pass "trajectory written for a log in ms ($rows frames)" || fail "trajectory of a log in ms: $rows frames"
+expect_err "they look like milliseconds: divide by 1000" "the remedy names milliseconds"
+# stamps in microseconds or nanoseconds: the remedy named milliseconds for both (2.5 ms read as 2511 s:
+# "in milliseconds, divide by 1000", which left them 2.5 s apart)
+awk -F, 'NR == 1 { print; next } { printf "%.0f,%s,%s,%s,%s,%s,%s\n", $1 * 1e6, $2, $3, $4, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_us.csv"
+expect_exit 1 "time in microseconds" "$H" replay "$T/in_us.csv" --quiet
+expect_err "they look like microseconds: divide by 1e6" "time stamps in us are named as such"
+awk -F, 'NR == 1 { print; next } NR < 400 { printf "%.0f,%s,%s,%s,%s,%s,%s\n", $1 * 1e9, $2, $3, $4, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_ns.csv"
+expect_exit 1 "time in nanoseconds" "$H" replay "$T/in_ns.csv" --quiet
+expect_err "they look like nanoseconds: divide by 1e9" "time stamps in ns are named as such"
 
 # Rows of the Markdown tables in FILE... whose cell count differs from their
 # header's (an unescaped | in a header or a note breaks a table), as FILE:LINE.

@@ -49,6 +49,15 @@ expect_exit 1 "too short log with --plot" "$H" simgap "$T/short.csv" --quiet --s
 "$H" sim --motion stand:3 --rate 100 --profile mtx --seed 2 --out "$T/s3.csv" >/dev/null 2>&1 || fail "sim 3 s"
 expect_exit 1 "held-out segment without points" "$H" simgap "$T/s3.csv" --quiet --seeds 3 --fit-frac 0.9
 expect_err "^harness simgap: error: .*too short for a confident answer" "no held-out point: too short, said"
+# a still log read as a walk (--walk): one stance, so the innovations plot's panel of mean NIS held one value,
+# and gnuplot printed "Warning: empty y range [0.0172028:0.0172028], ..." on standard error despite --quiet
+if command -v gnuplot >/dev/null 2>&1; then
+    "$H" sim --motion stand:20 --rate 100 --profile mtx --seed 2 --out "$T/s20.csv" >/dev/null 2>&1 || fail "sim 20 s"
+    mkdir -p "$T/s20plots"
+    expect_exit 1 "a still log as a walk: too short" "$H" simgap "$T/s20.csv" --walk --quiet --seeds 3 --plot "$T/s20plots"
+    if [ -s "$T/s20plots/innovations.png" ] && ! grep -q "empty . range" "$T/err"; then
+        pass "one stance plotted without gnuplot warnings"; else fail "one-stance plot: $(grep -i warn "$T/err" | head -2)"; fi
+fi
 
 # time-stamp jitter whose spread grows through the log (5 -> 40 us) is
 # selected, but its rate fitted on the fit segment is refuted on the held-out
