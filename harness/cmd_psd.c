@@ -253,11 +253,27 @@ static cJSON *json_result(const result_t *r)
             cJSON_AddNumberToObject(a, "fs_rounded_hz", (double)r->bw[c].fs_rounded_hz);
         }
     }
-    cJSON_AddNumberToObject(o, "accel_bandwidth_hz", r->group_bw[0]);
-    cJSON_AddNumberToObject(o, "accel_fs_hz", r->group_fs[0]);
-    cJSON_AddNumberToObject(o, "gyro_bandwidth_hz", r->group_bw[1]);
-    cJSON_AddNumberToObject(o, "gyro_fs_hz", r->group_fs[1]);
-    cJSON_AddNumberToObject(o, "fs_hz", r->overall_fs);
+    {
+        /* a group with no power on any axis has no band: null, not 0 */
+        static const char *const bw_key[2] = { "accel_bandwidth_hz", "gyro_bandwidth_hz" };
+        static const char *const fs_key[2] = { "accel_fs_hz", "gyro_fs_hz" };
+        int g, any = 0;
+        for (g = 0; g < 2; g++) {
+            if (r->ok[3 * g] || r->ok[3 * g + 1] || r->ok[3 * g + 2]) {
+                cJSON_AddNumberToObject(o, bw_key[g], r->group_bw[g]);
+                cJSON_AddNumberToObject(o, fs_key[g], r->group_fs[g]);
+                any = 1;
+            } else {
+                cJSON_AddNullToObject(o, bw_key[g]);
+                cJSON_AddNullToObject(o, fs_key[g]);
+            }
+        }
+        if (any) {
+            cJSON_AddNumberToObject(o, "fs_hz", r->overall_fs);
+        } else {
+            cJSON_AddNullToObject(o, "fs_hz");
+        }
+    }
     cJSON_AddNumberToObject(o, "segments", (double)r->nseg);
     cJSON_AddNumberToObject(o, "resolution_hz", r->df);
     return o;
@@ -585,6 +601,23 @@ int hx_cmd_psd(int argc, char **argv)
                  (unsigned)st.wc.nfft, st.wc.symmetric ? " (symmetric)" : "", (unsigned)st.wc.overlap,
                  k_dc_names[dc_mode], (unsigned)res.nseg, res.df, 100.0 * thr, dct, rnd);
         print_result(title, &res, &bc);
+    }
+    {
+        /* a group whose every axis is constant after the DC treatment has no
+         * band: its 0 Hz is no answer, and with both groups so there is none */
+        int g, none[2];
+        for (g = 0; g < 2; g++) {
+            none[g] = !res.ok[3 * g] && !res.ok[3 * g + 1] && !res.ok[3 * g + 2];
+        }
+        if (none[0] && none[1]) {
+            hx_error(CMD, "%s: no channel has power once the DC is treated (dc %s): every channel is constant, so "
+                          "no sampling frequency can be read (the 0 Hz above is no answer)",
+                     a.pos[0], k_dc_names[dc_mode]);
+            exit_code = HX_EXIT_DATA;
+        } else if (none[0] || none[1]) {
+            hx_warn(CMD, "no %s axis has power once the DC is treated: the answer comes from the %s alone",
+                    none[0] ? "accelerometer" : "gyroscope", none[0] ? "gyroscopes" : "accelerometers");
+        }
     }
     bw_max = res.group_bw[0] > res.group_bw[1] ? res.group_bw[0] : res.group_bw[1];
     above_rate = res.overall_fs > rate * (1.0 + 1e-9);

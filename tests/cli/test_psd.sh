@@ -34,6 +34,27 @@ else
     fail "tone bandwidth"
 fi
 expect_exit 3 "unwritable output" "$H" psd "$T/tone.csv" --out /nonexistent/dir/p.csv
+# every channel constant: no band anywhere, so no answer (it printed 'lowest usable sampling frequency: 0 Hz' with
+# fs_hz 0 and exit 0); the tables are still written and the JSON's answer is null
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3f,0.1,0.2,9.81,0.01,0,0\n", i / 1000.0 }' \
+    >"$T/const.csv"
+expect_exit 1 "every channel constant" "$H" psd "$T/const.csv" --json "$T/const.json" --out "$T/const_psd.csv"
+expect_err "no channel has power once the DC is treated" "no power on any channel is said, not 0 Hz"
+if "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]; assert r["fs_hz"] is None and r["gyro_fs_hz"] is None and r["accel_fs_hz"] is None, r' "$T/const.json" && [ -s "$T/const_psd.csv" ]; then
+    pass "constant log: fs_hz null, PSD table written"
+else
+    fail "constant log: fs_hz not null or PSD table missing"
+fi
+# the gyroscopes constant, the accelerometers not: the answer is the accelerometers', with a warning
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) { t = i / 1000.0; s = sin(6.283185307 * 100 * t);
+     printf "%.6f,%.6f,%.6f,%.6f,0,0,0\n", t, s, s, -9.81 + s } }' >"$T/gconst.csv"
+expect_exit 0 "constant gyroscopes" "$H" psd "$T/gconst.csv" --json "$T/gconst.json" --dc global
+expect_err "no gyroscope axis has power" "a group without power is said"
+if "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]; assert r["gyro_fs_hz"] is None and r["fs_hz"] == r["accel_fs_hz"] == 250, r' "$T/gconst.json"; then
+    pass "constant gyroscopes: gyro_fs_hz null, answer from the accelerometers"
+else
+    fail "constant gyroscopes: JSON"
+fi
 # a log shorter than the spectrogram's segment (100 samples, --nfft 64, the default --spec-nfft 256): no spectrogram
 # can be drawn; the other plots are, a warning says why it is missing (gnuplot got no data: its STATS_max was
 # undefined, a spectrogram.png was left behind and the command exited 3, an output failure)
