@@ -571,6 +571,30 @@ static int find_col(char **f, int n, const char *name)
     return -1;
 }
 
+/* every field a number: the line is data, not a header */
+static int all_numeric(char **f, int n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        char *end;
+        const char *s = f[i];
+        while (*s == ' ' || *s == '\t') {
+            s++;
+        }
+        (void)strtod(s, &end);
+        if (end == s) {
+            return 0;
+        }
+        while (*end == ' ' || *end == '\t' || *end == '\r' || *end == '\n') {
+            end++;
+        }
+        if (*end != '\0') {
+            return 0;
+        }
+    }
+    return n > 0;
+}
+
 static int setup_header(hx_reader_t *r, const char *const names[8], int time_required)
 {
     char *f[HX_MAX_COLS];
@@ -626,7 +650,11 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
         int c = (names[i] != NULL) ? find_col(f, n, names[i]) : -1;
         if (c < 0 && names[i] != NULL && (i < 7) && (i > 0 || time_required)) {
             r->missing_col = i;
-            if (r->meta.format == HX_FMT_CSV) {
+            if (all_numeric(f, n)) {
+                set_err(r, "%s:%ld: the first line is data, not a header: a %s log starts with its header (%s)",
+                        r->path, r->stats.lines, hx_format_name(r->meta.format),
+                        r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "see docs/log-format.md");
+            } else if (r->meta.format == HX_FMT_CSV) {
                 set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]", r->path,
                         r->stats.lines, names[i]);
             } else {

@@ -857,6 +857,11 @@ static void test_detect_wrong_hint(void **state)
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ":1: header has no column 'gz'; expected t,ax,ay,az,gx,gy,gz[,temp]"));
     assert_null(strstr(err, "--from"));
+    /* no header at all: the first line is data (it was "header has no column 't'") */
+    write_text(p, "0.0025,0.1,-0.2,9.81,0.01,0.02,-0.03\n0.005,0.1,-0.2,9.81,0.01,0.02,-0.03\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":1: the first line is data, not a header"));
+    assert_non_null(strstr(err, "t,ax,ay,az,gx,gy,gz[,temp]"));
     unlink(p);
 }
 
