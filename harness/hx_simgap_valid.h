@@ -57,6 +57,12 @@ int sgv_simulate(const char *script, const fnav_imuerr_config_t *cfg, int point,
 #define SGV_MAG_MIN 1e-3
 #define SGV_MAG_MAX 1e3
 
+/** Most samples of a static case (--duration x --rate): 2e7 is 27.8 h at
+ *  200 Hz, 20 times the ADIS16405 logs' million; a case holds its log,
+ *  the twins and the Allan tables in memory, and 1e11 (the options' own
+ *  ends) ran for ever instead of failing. */
+#define SGV_MAX_STATIC_SAMPLES 2e7
+
 /** Options of a validation run. */
 typedef struct {
     int cases;

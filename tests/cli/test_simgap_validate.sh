@@ -69,5 +69,9 @@ expect_exit 0 "walk rate in the command" "$H" simgap-validate --cases 8 --only 7
 grep -q -- "--walk-only" "$T/w.md" && grep -q -- "--walk-rate 100" "$T/w.md" && pass "--walk-rate in the Markdown's command" ||
     fail "Markdown command: $(grep '^Run' "$T/w.md")"
 
+# a static case too big to hold (1e11 samples: it ran for ever) is a usage error; walk-only runs ignore the static size
+expect_exit 2 "static case of 1e11 samples" "$H" simgap-validate --cases 1 --duration 1e6 --rate 1e5
+expect_err "samples per static case; at most 20000000" "the static case's size is bounded and said"
+
 if [ "$fails" -ne 0 ]; then echo "test_simgap_validate.sh: $fails failure(s)"; exit 1; fi
 echo "test_simgap_validate.sh: all passed"
