@@ -26,6 +26,16 @@ printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n
 expect_exit 0 "info on a log of mostly duplicates" "$H" info "$T/dups.csv"
 expect_out "interval    median 10.000 ms" "the median interval skips the duplicates"
 expect_out "gaps        0 " "no real interval is a gap"
+# an 820 Hz log stamped to the millisecond reads 1 and 2 ms: its median is
+# 1 ms, and every 2 ms interval (a fifth of them, no sample lost) was a gap;
+# a gap is judged against the rate's period and the stamps' resolution, as
+# for the rate (hx_stamp_rate_hz): three samples dropped (5 ms) are one
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 4100; k++) printf "%.3f,0,0,9.8,0,0,0\n", k / 820.0 }' > "$T/ms820.csv"
+expect_exit 0 "info on an 820 Hz log stamped to the ms" "$H" info "$T/ms820.csv"
+expect_out "gaps        0 " "1 and 2 ms stamps of an 820 Hz log are no gaps"
+awk 'NR < 2002 || NR > 2004' "$T/ms820.csv" > "$T/ms820drop.csv"
+expect_exit 0 "info on it with three samples dropped" "$H" info "$T/ms820drop.csv"
+expect_out "gaps        1 (> 1.5 intervals; longest 5.0 ms)" "the dropped samples are the one gap"
 
 # --- the bundled example
 expect_exit 0 "info walk.bin" "$H" info vectors/walk.bin --json "$T/info.json"
