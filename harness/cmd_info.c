@@ -247,8 +247,12 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     cJSON_AddItemToObject(j, "gravity_at_rest_mps2", cJSON_CreateDoubleArray(in->g_vec, 3));
     cJSON_AddNumberToObject(j, "gravity_magnitude_mps2", in->g_mag);
     {
-        char axis[3] = { in->g_vec[in->g_axis] >= 0.0 ? '+' : '-', (char)('x' + in->g_axis), '\0' };
-        cJSON_AddStringToObject(j, "gravity_axis", axis);
+        /* the accelerometer reads the specific force, which points up at
+         * rest: gravity lies along the other sign (frames.md) */
+        char up[3] = { in->g_vec[in->g_axis] >= 0.0 ? '+' : '-', (char)('x' + in->g_axis), '\0' };
+        char down[3] = { in->g_vec[in->g_axis] >= 0.0 ? '-' : '+', (char)('x' + in->g_axis), '\0' };
+        cJSON_AddStringToObject(j, "gravity_axis", down);
+        cJSON_AddStringToObject(j, "up_axis", up);
     }
     cJSON_AddItemToObject(j, "gyro_at_rest_rps", cJSON_CreateDoubleArray(in->gyro_rest, 3));
     if (in->units_bad) {
@@ -322,9 +326,11 @@ int hx_cmd_info(int argc, char **argv)
     printf("\npeak        |a| %.2f %.2f %.2f g, |w| %.1f %.1f %.1f deg/s\n", in.peak[0] / 9.80665,
            in.peak[1] / 9.80665, in.peak[2] / 9.80665, in.peak[3] * 57.29577951308232, in.peak[4] * 57.29577951308232,
            in.peak[5] * 57.29577951308232);
-    printf("at rest     gravity along %c%c, |f| = %.4f m/s^2 (%.4f g), f = (%.4f, %.4f, %.4f) m/s^2 at t = %.1f s\n",
-           in.g_vec[in.g_axis] >= 0.0 ? '+' : '-', 'x' + in.g_axis, in.g_mag, in.g_mag / 9.80665, in.g_vec[0],
-           in.g_vec[1], in.g_vec[2], in.still_t_s);
+    /* f at rest is the specific force, -g: it points up, gravity down */
+    printf("at rest     gravity along %c%c (%c%c up), |f| = %.4f m/s^2 (%.4f g), f = (%.4f, %.4f, %.4f) m/s^2 at t = "
+           "%.1f s\n",
+           in.g_vec[in.g_axis] >= 0.0 ? '-' : '+', 'x' + in.g_axis, in.g_vec[in.g_axis] >= 0.0 ? '+' : '-',
+           'x' + in.g_axis, in.g_mag, in.g_mag / 9.80665, in.g_vec[0], in.g_vec[1], in.g_vec[2], in.still_t_s);
     printf("            gyro (%.5f, %.5f, %.5f) rad/s\n", in.gyro_rest[0], in.gyro_rest[1], in.gyro_rest[2]);
     if (in.units_bad) {
         printf("units       NOT SI: %s\n", in.units);

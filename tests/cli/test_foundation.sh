@@ -39,9 +39,12 @@ expect_out "gaps        1 (> 1.5 intervals; longest 5.0 ms)" "the dropped sample
 
 # --- the bundled example
 expect_exit 0 "info walk.bin" "$H" info vectors/walk.bin --json "$T/info.json"
+# the accelerometer at rest reads the specific force, which points up: +z up
+# means gravity along -z (it said "gravity along +z" until 2026-11-28)
+expect_out "at rest     gravity along -z (+z up)" "gravity points down, against the specific force"
 expect_out "samples     16539" "walk.bin sample count"
 expect_out "duplicates  205" "walk.bin duplicates (MANIFEST: 205)"
-if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['samples']==16539 and d['duplicates']==205 and d['gravity_axis']=='+z'" "$T/info.json"; then
+if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['samples']==16539 and d['duplicates']==205 and d['gravity_axis']=='-z' and d['up_axis']=='+z'" "$T/info.json"; then
     pass "info --json is valid and consistent"
 else
     fail "info --json"

@@ -66,7 +66,7 @@ if head -1 "$T/t.csv" | grep -q "^t,seq,count,px,py,pz,vx,vy,vz,qw,qx,qy,qz,roll
     pass "truth header"; else fail "truth header"; head -1 "$T/t.csv"; fi
 expect_exit 0 "info reads the simulated log" "$H" info "$T/w.bin"
 expect_out "rate        100.000 Hz (nominal)" "nominal rate in the header"
-expect_out "gravity along -z" "gravity along -z at rest"
+expect_out "gravity along +z (-z up)" "the simulated foot (z down, frames.md): gravity along +z at rest"
 expect_out_re "^samples     2001$" "info sample count"
 
 # --rate 1 is in the option's range, but the default oversampling (2 kHz
