@@ -143,9 +143,10 @@ FNAV_WARN_UNUSED fnav_status_t fnav_strapdown_step(const fnav_strapdown_config_t
                                                    fnav_strapdown_hist_t *hist, fnav_vec3_t gyro_rps,
                                                    fnav_vec3_t accel_mps2, fnav_real_t dt_s);
 
-/** Quaternion of a small or large rotation vector without trigonometric
- *  calls below 0.2 rad (a 6th-order series, truncation below 2.5e-13), exact
- *  (fnav_quat_from_rotvec) above. */
+/** Quaternion of a rotation vector without trigonometric calls: below
+ *  0.2 rad a 6th-order series (truncation below 2.5e-13); above, the angle
+ *  wrapped to (-pi, pi], halved until below 0.2 rad (at most 4 times), the
+ *  series, then squared back. NaN or Inf give the identity. */
 fnav_quat_t fnav_strapdown_quat_exp(fnav_vec3_t phi);
 
 #ifdef __cplusplus
