@@ -430,6 +430,9 @@ typedef struct {
     double gyro_max_rps; /* largest |w| read: the units check */
     double f_norm_sum;   /* sum of |f| read: the units check when no rest was found */
     hx_axes_t *axes;     /* the axes check (with traj), or NULL */
+    int64_t t_last_ns;   /* the last sample's stamp (with have_t_last) */
+    int have_t_last;
+    int64_t stamp_res_ns; /* the stamps' resolution: gcd of the intervals that advance (0: none yet) */
 } hx_port_ctx_t;
 
 static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
@@ -460,6 +463,17 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
                               (double)s->accel_mps2[1] * (double)s->accel_mps2[1] +
                               (double)s->accel_mps2[2] * (double)s->accel_mps2[2]);
         c->n_read++;
+        if (c->have_t_last && s->t_ns > c->t_last_ns) {
+            int64_t a = s->t_ns - c->t_last_ns, b = c->stamp_res_ns;
+            while (b != 0) { /* Euclid */
+                const int64_t r = a % b;
+                a = b;
+                b = r;
+            }
+            c->stamp_res_ns = a;
+        }
+        c->t_last_ns = s->t_ns;
+        c->have_t_last = 1;
         if (c->axes != NULL) {
             hx_axes_sample(c->axes, s);
         }
@@ -734,6 +748,13 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         traj->aligned = nav.aligned;
         if (r != NULL) {
             traj->cut_lines = hx_reader_stats(r)->cut_lines;
+            if (hx_reader_meta(r)->rate_coarse && pc.stamp_res_ns > 0 && traj->rate_hz > 0.0) {
+                /* an interval of one period reads up to the next whole
+                 * number of stamp steps: above 1.5 periods it counts as a gap */
+                const double per = 1e9 / traj->rate_hz, q = (double)pc.stamp_res_ns, k = per / q;
+                const double longest = (fabs(k - floor(k + 0.5)) <= 0.05 ? floor(k + 0.5) : ceil(k)) * q;
+                traj->stamps_coarse = longest > 1.5 * per;
+            }
         }
         if (flags & HX_REPLAY_AXES) {
             hx_axes_finish(pc.axes, &traj->axes);
@@ -1069,6 +1090,15 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     }
     fprintf(f, "timing            %u duplicates (dt = 0), %u gaps, %u time jumps, longest interval %.1f ms\n",
             st->duplicates, st->gaps, st->time_jumps, 1e3 * (double)st->max_gap_seen_s);
+    if (t->stamps_coarse && st->gaps > 0u) {
+        /* an 820 Hz log stamped to the millisecond reads 1 and 2 ms: the
+         * navigator counts every 2 ms interval as a gap (it integrates each
+         * sample's own dt, so the sum of the intervals is right) */
+        fprintf(f, "                  (the time stamps are coarser than the %.4g Hz sample period, so single "
+                   "intervals that read two stamp steps count as gaps although no sample is lost; bin/harness "
+                   "info counts the lost ones)\n",
+                t->rate_hz);
+    }
     fprintf(f, "health            %u NaN/Inf rejected, %u out of range rejected, %u backwards rejected, %u jitter, "
                "%u covariance resets, %u undone, %u updates rejected, %u covariance guard, %u divergence resets\n",
             st->nan_inputs, st->range_inputs, st->time_back, st->chol_jitter, st->chol_reset, st->diverged, st->update_reject,

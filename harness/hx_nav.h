@@ -68,6 +68,7 @@ typedef struct {
     double in_rate_hz;           /**< input rate before resampling (0 if not resampled) */
     long resample_dropped_dups;  /**< duplicates dropped by the resampler */
     long cut_lines;              /**< the log's incomplete last line ignored (hx_read_stats_t) */
+    int stamps_coarse;           /**< the stamps are so coarse that an interval of one period can read over 1.5 periods (a gap) */
     fnav_align_result_t align;   /**< alignment result */
     int aligned;
     hx_axes_result_t axes;       /**< the axes check (hx_axes.h) */

@@ -24,6 +24,14 @@ expect_exit 0 "a walk stamped to the millisecond" "$H" replay "$T/walk_ms.csv"
 expect_out_re "^rate +398\.[0-9] Hz" "the detector's rate from coarse stamps"
 if grep -q "sample rate changes" "$T/out"; then fail "coarse stamps (2 and 3 ms) taken for a rate change"; else
     pass "coarse stamps are no rate change"; fi
+grep -q "coarser than the" "$T/out" && fail "a note on coarse stamps without a gap counted" ||
+    pass "no coarse-stamp note when no interval counts as a gap"
+# the same samples on a time axis of half the length (796 Hz, 1.256 ms) printed to the millisecond: intervals of
+# 1 and 2 ms, and the navigator counts each 2 ms one as a gap (above 1.5 periods) although none is lost; the summary
+# says so (it printed thousands of gaps without a word)
+awk -F, 'NR == 1 { print; next } { $1 = sprintf("%.3f", $1 / 2); print }' OFS=, "$T/walk_full.csv" > "$T/walk_half_ms.csv"
+expect_exit 0 "796 Hz stamped to the millisecond" "$H" replay "$T/walk_half_ms.csv"
+expect_out "count as gaps although no sample is lost" "gaps from coarse stamps are explained"
 expect_exit 2 "bad --detector" "$H" replay vectors/walk.bin --detector psychic
 expect_exit 2 "unknown --param" "$H" replay vectors/walk.bin --param nope=1
 expect_err "unknown key 'nope'" "--param error names the key"
