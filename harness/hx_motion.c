@@ -727,6 +727,12 @@ static int parse_leg(hx_motion_t *m, char *item)
          * was ignored without a word (a review, 2026-11-28) */
         return fail(m, "stand, turn and elevator take one value (NAME:VALUE)", a2);
     }
+    if (a2 != NULL && fabs(x2) > 3600.0) {
+        /* the turn of a walk, run or stairs leg, bounded as a turn item's:
+         * 1e300 deg wrote infinite and NaN gyro samples (a review,
+         * 2026-11-29) */
+        return fail(m, "the turn of a leg must be within +-3600 deg", a2);
+    }
     if (strcmp(name, "stand") == 0) {
         if (!(x1 > 0.0) || x1 > 1e6) {
             return fail(m, "stand needs a duration in (0, 1e6] s", a1);
