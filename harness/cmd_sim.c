@@ -133,6 +133,15 @@ int hx_cmd_sim(int argc, char **argv)
     }
     sc.motion = motion;
     sc.duration_s = dur > 0.0 ? dur : hx_motion_duration(motion);
+    if (sc.duration_s * rate >= 4294967295.0) {
+        /* the record counter and the error model's step count are 32-bit
+         * (--duration 1e6 --rate 1e5 asked for 1e11 ticks, a log of
+         * terabytes, and would have wrapped them) */
+        hx_error("sim", "%.6g s at %.6g Hz is %.3g samples; at most 2^32 - 1 (shorten --duration or lower --rate)",
+                 sc.duration_s, rate, sc.duration_s * rate);
+        hx_motion_free(motion);
+        return HX_EXIT_USAGE;
+    }
 
     memset(&meta, 0, sizeof meta);
     meta.format = HX_FMT_AUTO;

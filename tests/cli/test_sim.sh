@@ -57,6 +57,10 @@ expect_exit 2 "sample jitter through the filter" "$H" sim --out "$T/x.bin" --eff
 expect_err "sample_s" "sample jitter error explains"
 expect_exit 2 "bad --decimation" "$H" sim --out "$T/x.bin" --decimation cubic
 expect_err "fir or mean" "decimation error lists the kinds"
+# more samples than the 32-bit record counter holds (1e11 were asked for and the run began)
+expect_exit 2 "1e11 samples" "$H" sim --out "$T/big.bin" --motion stand:10 --duration 1e6 --rate 1e5
+expect_err "at most 2^32 - 1" "the sample count's bound is said"
+[ ! -e "$T/big.bin" ] && pass "no output begun for a refused size" || fail "an output begun for a refused size"
 expect_exit 0 "integrating sensor" "$H" sim --out "$T/m.bin" --duration 3 --rate 100 --decimation mean
 expect_out "interval means" "summary names the decimation"
 expect_exit 3 "unwritable output" "$H" sim --out "$T/no/such/dir/x.bin" --duration 2
