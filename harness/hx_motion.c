@@ -730,7 +730,7 @@ static int parse_leg(hx_motion_t *m, char *item)
     if (a2 != NULL && fabs(x2) > 3600.0) {
         /* the turn of a walk, run or stairs leg, bounded as a turn item's:
          * 1e300 deg wrote infinite and NaN gyro samples (a review,
-         * 2026-11-29) */
+         * 2026-11-28) */
         return fail(m, "the turn of a leg must be within +-3600 deg", a2);
     }
     if (strcmp(name, "stand") == 0) {

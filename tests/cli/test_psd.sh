@@ -75,7 +75,7 @@ for f in psd ccdf spectrogram sensitivity; do
 done
 # the same log at its own 100 Hz: white noise to the 50 Hz Nyquist frequency, 2 x 47.5 Hz rounds up to exactly the
 # log's rate, so fs_above_log_rate stays false; the answer was printed as a measured "100 Hz (the accelerometers
-# limit it)" without a word, though it is the log's rate by construction (a review, 2026-11-29)
+# limit it)" without a word, though it is the log's rate by construction (a review, 2026-11-28)
 expect_exit 0 "static log at 100 Hz" "$H" psd "$T/static.csv" --json "$T/s100.json"
 expect_err "of the Nyquist frequency 50 Hz: the power does not fall off" "a band at the Nyquist frequency is flagged below the log's rate"
 expect_out "accelerometers and gyroscopes alike" "a tie between the groups is not called the accelerometers'"

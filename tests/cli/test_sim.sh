@@ -33,7 +33,7 @@ for m in stand:5:99 stand:2,turn:90:45 stand:2,elevator:3:9 stand:2,home:77; do
 done
 # the turn of a walk, run or stairs leg has the bound of a turn item: a
 # turn of 1e300 deg wrote a log of infinite and NaN gyro samples (1e9 deg:
-# 7e7 rad/s) with exit 0 until 2026-11-29 (a review)
+# 7e7 rad/s) with exit 0 until 2026-11-28 (a review)
 for m in walk:1.4:1e300 run:5:-1e9 stairs-up:2:1e300 stairs-down:4:3601; do
     expect_exit 2 "motion leg turning too far ($m)" "$H" sim --out "$T/x.csv" --motion "stand:1,$m"
     expect_err "within +-3600 deg" "the bound on the turn is named ($m)"
