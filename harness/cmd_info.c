@@ -95,13 +95,7 @@ static void analyse(const hx_log_t *log, info_t *in)
             dt[nd++] = d;
             nz += d <= 0;
             if (d > 0) {
-                int64_t a = d, b = res;
-                while (b != 0) { /* Euclid */
-                    const int64_t r = a % b;
-                    a = b;
-                    b = r;
-                }
-                res = a;
+                res = hx_gcd_i64(d, res);
             }
         }
         qsort(dt, nd, sizeof *dt, cmp_i64);

@@ -1393,13 +1393,7 @@ double hx_rate_changes(const int64_t *t_ns, size_t n, size_t stride, double rate
         if (i < n) {
             const int64_t dt = STAMP(i) - STAMP(i - 1);
             if (dt > 0) {
-                int64_t x = dt, y = q;
-                while (y != 0) { /* the stamps' resolution: gcd of the intervals */
-                    const int64_t r = x % y;
-                    x = y;
-                    y = r;
-                }
-                q = x;
+                q = hx_gcd_i64(dt, q); /* the stamps' resolution */
                 d[m++] = dt;
             }
         }
@@ -1426,6 +1420,16 @@ double hx_rate_changes(const int64_t *t_ns, size_t n, size_t stride, double rate
     }
     return off_s / dur;
 #undef STAMP
+}
+
+int64_t hx_gcd_i64(int64_t a, int64_t b)
+{
+    while (b != 0) {
+        const int64_t r = a % b;
+        a = b;
+        b = r;
+    }
+    return a;
 }
 
 double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)
@@ -1459,14 +1463,8 @@ double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)
         return 0.0;
     }
     for (i = 0; i + 1u < m; i++) {
-        int64_t a = v[i + 1u] - v[i], b = q;
-        d[i] = a;
-        while (b != 0) { /* Euclid */
-            const int64_t r = a % b;
-            a = b;
-            b = r;
-        }
-        q = a;
+        d[i] = v[i + 1u] - v[i];
+        q = hx_gcd_i64(d[i], q);
     }
     memcpy(srt, d, (m - 1u) * sizeof *srt);
     qsort(srt, m - 1u, sizeof srt[0], cmp_i64);

@@ -144,6 +144,11 @@ typedef struct {
  *  increase. *coarse (may be NULL) is set to 1 when the stamps were coarse. */
 double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse);
 
+/** Greatest common divisor of a >= 0 and b >= 0 (Euclid); gcd(a, 0) = a.
+ *  Folded over the positive intervals of time stamps it gives their
+ *  resolution. */
+int64_t hx_gcd_i64(int64_t a, int64_t b);
+
 /** The rate along a log is judged in blocks of this many positive
  *  intervals; a block whose rate is off the expected one by more than
  *  HX_RATE_TOL is a rate change (docs/navigation.md, "Timing"). */

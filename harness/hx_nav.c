@@ -464,13 +464,7 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
                               (double)s->accel_mps2[2] * (double)s->accel_mps2[2]);
         c->n_read++;
         if (c->have_t_last && s->t_ns > c->t_last_ns) {
-            int64_t a = s->t_ns - c->t_last_ns, b = c->stamp_res_ns;
-            while (b != 0) { /* Euclid */
-                const int64_t r = a % b;
-                a = b;
-                b = r;
-            }
-            c->stamp_res_ns = a;
+            c->stamp_res_ns = hx_gcd_i64(s->t_ns - c->t_last_ns, c->stamp_res_ns);
         }
         c->t_last_ns = s->t_ns;
         c->have_t_last = 1;

@@ -18,3 +18,6 @@ expect_out() { # pattern description: checks $T/out
 expect_out_re() { # extended-regex description: checks $T/out (anchor with ^ and $ for a whole line)
     if grep -q -E -- "$1" "$T/out"; then pass "$2"; else fail "$2: stdout lacks /$1/"; cat "$T/out"; fi
 }
+json() { # json FILE PYTHON-EXPRESSION-ON-j: passes when it is true (uses $PY, /usr/bin/python3 if unset)
+    "${PY:-/usr/bin/python3}" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' "$1" "$2" 2>"$T/pyerr"
+}

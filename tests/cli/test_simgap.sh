@@ -8,9 +8,6 @@ PY=${PYTHON:-/usr/bin/python3}
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 . "$(dirname "$0")/lib.sh"
-json() { # json FILE PYTHON-EXPRESSION-ON-j: passes when it is true
-    "$PY" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' "$1" "$2" 2>"$T/pyerr"
-}
 
 # usage and input errors
 expect_exit 2 "no input" "$H" simgap

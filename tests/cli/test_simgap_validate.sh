@@ -9,9 +9,6 @@ PY=${PYTHON:-/usr/bin/python3}
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 . "$(dirname "$0")/lib.sh"
-json() { # json FILE PYTHON-EXPRESSION-ON-j: passes when it is true
-    "$PY" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' "$1" "$2" 2>"$T/pyerr"
-}
 # small static cases: 60 s at 50 Hz, 3 twins
 FAST="--static-only --duration 60 --rate 50 --seeds 3"
 
