@@ -10,6 +10,7 @@
 #ifndef HX_SIMGAP_VALID_H
 #define HX_SIMGAP_VALID_H
 
+#include <signal.h>
 #include <stdio.h>
 
 #include "footnav/fnav_profile.h"
@@ -79,9 +80,15 @@ typedef struct {
     int verbose;            /**< print the diagnosis of every case */
     int only;               /**< run only this case index (-1: all) */
     const char *effects;    /**< comma-separated effect names to draw (NULL: all), "control" for controls */
+    /** Non-zero: stop before the next case (a signal handler sets it; NULL:
+     *  never). The cases already run keep their scores. */
+    const volatile sig_atomic_t *stop;
 } sgv_opts_t;
 
 sgv_opts_t sgv_opts_default(void);
+
+/** truth of a case that was not run (--only, a stop, a failure). */
+#define SGV_NOT_RUN (-1000)
 
 /** One scored case. */
 typedef struct {
@@ -109,8 +116,11 @@ typedef struct {
  *  usage error). */
 int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size);
 
-/** Run the validation; prints progress lines to `f` (NULL: silent). 0, -1
- *  with err filled. cases receives o->cases entries (caller allocated). */
+/** Run the validation; prints progress lines to `f` (NULL: silent). cases
+ *  receives o->cases entries (caller allocated); a case not run (--only, a
+ *  stop, a failure) has truth SGV_NOT_RUN and is left out of the report.
+ *  0 every case run; 1 stopped by *o->stop; -1 a case failed, err filled
+ *  (the cases before it keep their scores: report them). */
 int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t err_size);
 
 /** The summary: confusion matrix, rates, errors, targets (text, or

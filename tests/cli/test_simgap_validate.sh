@@ -70,5 +70,23 @@ grep -q -- "--walk-only" "$T/w.md" && grep -q -- "--walk-rate 100" "$T/w.md" && 
 expect_exit 2 "static case of 1e11 samples" "$H" simgap-validate --cases 1 --duration 1e6 --rate 1e5
 expect_err "samples per static case; at most 20000000" "the static case's size is bounded and said"
 
+# Ctrl-C stops the run before its next case and reports and writes the
+# cases run (they were lost: a full run takes 13 minutes); exit 130
+"$H" simgap-validate --cases 40 $FAST --json "$T/i.json" --markdown "$T/i.md" >"$T/out" 2>"$T/err" &
+pid=$!
+k=0
+while ! grep -q "^case" "$T/out" 2>/dev/null && [ $k -lt 600 ]; do sleep 0.1; k=$((k + 1)); done
+kill -INT $pid
+wait $pid
+rc=$?
+[ $rc -eq 130 ] && pass "interrupted run: exit 130" || fail "interrupted run: exit $rc, $(cat "$T/err")"
+expect_err "interrupted: the report covers the cases run" "interruption said"
+grep -q "^simgap-validate: [0-9]* cases* (INCOMPLETE" "$T/out" && pass "the summary says incomplete" ||
+    fail "summary: $(grep '^simgap-validate' "$T/out")"
+json "$T/i.json" 'j["complete"] is False and 1 <= j["cases"] < 40 and len(j["results"]) == j["cases"]' &&
+    pass "interrupted run: JSON of the cases run, complete false" || fail "interrupted JSON: $(cat "$T/pyerr")"
+grep -q "incomplete" "$T/i.md" && pass "interrupted run: the Markdown says incomplete" || fail "Markdown: $(grep '^Run' "$T/i.md")"
+json "$T/o.json" 'j["complete"] is True' && pass "a full --only run: complete true" || fail "--only complete: $(cat "$T/pyerr")"
+
 if [ "$fails" -ne 0 ]; then echo "test_simgap_validate.sh: $fails failure(s)"; exit 1; fi
 echo "test_simgap_validate.sh: all passed"
