@@ -1242,14 +1242,30 @@ static int write_plot(const run_t *R, const char *path)
     return hx_plot_close(&p, CMD);
 }
 
+/* Whether a profile name is one line of printable text. */
+static int name_printable(const char *s)
+{
+    for (; *s != '\0'; s++) {
+        if ((unsigned char)*s < 0x20u || *s == 0x7f) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 static void base_name(const char *path, char *out, size_t n)
 {
     const char *s = strrchr(path, '/');
-    char *dot;
+    char *dot, *c;
     snprintf(out, n, "%s", s != NULL ? s + 1 : path);
     dot = strchr(out, '.');
     if (dot != NULL) {
         *dot = '\0';
+    }
+    for (c = out; *c != '\0'; c++) {
+        if ((unsigned char)*c < 0x20u || *c == 0x7f) {
+            *c = '_'; /* the name is one line of the profile */
+        }
     }
 }
 
@@ -1507,6 +1523,12 @@ int hx_cmd_allan(int argc, char **argv)
         if (hx_output_is_input(CMD, series != NULL ? series : a.pos[0], &a, outs)) {
             return HX_EXIT_USAGE;
         }
+    }
+    if (hx_arg(&a, "--name") != NULL && !name_printable(hx_arg(&a, "--name"))) {
+        /* the profile's "name = ..." line: a line break in it wrote keys of
+         * its own (a second rate_hz), and the profile could not be read */
+        hx_error(CMD, "--name must be printable text on one line (no control characters)");
+        return HX_EXIT_USAGE;
     }
     R = (run_t *)calloc(1, sizeof *R);
     if (R == NULL) {

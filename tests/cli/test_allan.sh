@@ -272,6 +272,12 @@ else
 fi
 expect_exit 2 "--deviation with the streaming estimator" "$H" allan vectors/walk.bin --deviation mdev
 expect_exit 2 "unknown --deviation" "$H" allan --series "$T/f.txt" --rate 1 --deviation xdev
+# a --name with a line break wrote a profile line of its own (a second rate_hz): exit 0, and no command
+# could read the profile; refused before anything is read
+expect_exit 2 "--name with a line break" "$H" allan vectors/walk.bin --no-sim --profile "$T/nl.profile" \
+    --name "$(printf 'x\nrate_hz = 5')"
+expect_err "--name must be printable text on one line" "the --name refusal says why"
+[ ! -e "$T/nl.profile" ] && pass "no profile from a --name with a line break" || fail "--name line break: profile written"
 expect_exit 2 "--m not ascending" "$H" allan --series "$T/f.txt" --rate 1 --m 10,5
 expect_exit 2 "--m not a number" "$H" allan --series "$T/f.txt" --rate 1 --m 1,x
 expect_exit 2 "--m with the streaming estimator" "$H" allan --series "$T/f.txt" --rate 1 --estimator streaming --m 4
