@@ -1087,7 +1087,13 @@ static int write_json(const run_t *R, const char *path)
     cJSON_AddNumberToObject(root, "tau_max_s", tau_max_samples(R) / R->rate_hz);
     cJSON_AddNumberToObject(root, "confidence", R->conf);
     cJSON_AddStringToObject(root, "estimator", R->exact ? "exact" : "streaming");
-    cJSON_AddNumberToObject(root, "estimator_bytes_per_channel", (double)sizeof(fnav_allan_t));
+    if (R->exact) {
+        /* no streaming estimator runs: the channel's record instead (8 bytes per phase value) */
+        cJSON_AddNullToObject(root, "estimator_bytes_per_channel");
+    } else {
+        /* every estimator of the channel, as the screen's header says (two at 4 tau per octave) */
+        cJSON_AddNumberToObject(root, "estimator_bytes_per_channel", (double)(sizeof(fnav_allan_t) * (size_t)R->nchunk));
+    }
     if (R->f0 > 0.0) {
         cJSON_AddNumberToObject(root, "fractional_f0", R->f0);
     }

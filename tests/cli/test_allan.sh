@@ -272,6 +272,16 @@ else
 fi
 expect_exit 2 "--deviation with the streaming estimator" "$H" allan vectors/walk.bin --deviation mdev
 expect_exit 2 "unknown --deviation" "$H" allan --series "$T/f.txt" --rate 1 --deviation xdev
+# the JSON's estimator size is the screen's (two estimators per channel at 4 tau per octave; it gave one's
+# size), and null with the exact estimator, which runs none (it gave the streaming size)
+expect_exit 0 "streaming estimator size" "$H" allan --series "$T/f.txt" --rate 1 --estimator streaming --no-sim \
+    --json "$T/sz.json"
+SZ=$(sed -n 's/.*streaming estimator, \([0-9]*\) bytes per channel.*/\1/p' "$T/out")
+json "$T/sz.json" "j['estimator_bytes_per_channel'] == $SZ" && pass "JSON estimator size = the screen's ($SZ)" ||
+    fail "JSON estimator size differs from the screen's $SZ"
+expect_exit 0 "exact estimator size" "$H" allan --series "$T/f.txt" --rate 1 --no-sim --quiet --json "$T/sz.json"
+json "$T/sz.json" "j['estimator_bytes_per_channel'] is None" && pass "no streaming size with the exact estimator" ||
+    fail "a streaming size with the exact estimator"
 # a --name with a line break wrote a profile line of its own (a second rate_hz): exit 0, and no command
 # could read the profile; refused before anything is read
 expect_exit 2 "--name with a line break" "$H" allan vectors/walk.bin --no-sim --profile "$T/nl.profile" \
