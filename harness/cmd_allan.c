@@ -902,6 +902,8 @@ static void print_table(const run_t *R, const chan_t *ch)
     print_deviations(R, ch);
 }
 
+static int ar1_resolved(const run_t *R, const chan_t *ch);
+
 static void print_params(const run_t *R)
 {
     int i;
@@ -925,12 +927,19 @@ static void print_params(const run_t *R)
             printf(" %-54s |", ch->constant ? "n/a (constant channel)" : "n/a (1 s or the minimum not covered)");
         }
         if (ch->id_ok && id->fit_ok) {
-            /* ADEV peak of the AR(1) alone (hx_allan_ident.h) */
-            printf(" %10.3g %9.0f %10.3g %10.3g %5.2f %6.3f", id->fit.white, id->fit.gm_tau_s * R->rate_hz,
-                   id->fit.gm_sigma, HX_GM_PEAK_RATIO * id->fit.gm_sigma, id->fit_quality.rms_log10,
-                   id->fit_quality.ratio_at_min);
+            const double tau_samples = id->fit.gm_tau_s * R->rate_hz;
+            /* ADEV peak of the AR(1) alone (hx_allan_ident.h); a tau of a
+             * fit the curve does not resolve can be any size (1.2e8 samples
+             * on 10 s of white noise), %.0f would push the columns aside */
+            printf(tau_samples < 1e9 ? " %10.3g %9.0f" : " %10.3g %9.3g", id->fit.white, tau_samples);
+            printf(" %10.3g %10.3g %5.2f %6.3f", id->fit.gm_sigma, HX_GM_PEAK_RATIO * id->fit.gm_sigma,
+                   id->fit_quality.rms_log10, id->fit_quality.ratio_at_min);
             if (id->fit.quant > 0.0 || id->fit.rrw > 0.0) {
                 printf("  Q %.3g K %.3g", id->fit.quant, id->fit.rrw);
+            }
+            if (!ar1_resolved(R, ch)) {
+                /* the JSON's ar1_identified = false: not the bias a profile takes */
+                printf("  AR(1) not resolved by the curve");
             }
             printf("\n");
         } else {
@@ -1072,7 +1081,6 @@ static void json_deviations(const run_t *R, const chan_t *ch, size_t k, cJSON *e
     }
 }
 
-static int ar1_resolved(const run_t *R, const chan_t *ch);
 
 static int write_json(const run_t *R, const char *path)
 {
