@@ -440,12 +440,14 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     hx_progress_t pr;
     int64_t t_prev = 0;
     long irregular = 0;
+    double stamp_rate; /* the rate the stamps are checked against: the log's own, not an overriding --rate */
     int i, rc = 0;
     if (r == NULL) {
         return -1;
     }
     snprintf(R->sensor, sizeof R->sensor, "%s", hx_reader_meta(r)->sensor);
     R->rate_hz = rate_opt > 0.0 ? rate_opt : hx_reader_meta(r)->rate_hz;
+    stamp_rate = hx_reader_meta(r)->rate_hz;
     hx_progress_start(&pr, "allan: reading", 1.0);
     while ((st = hx_reader_next(r, &s)) == FNAV_OK) {
         if (R->n == UINT32_MAX) {
@@ -461,9 +463,15 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
                 R->rate_hz = 1e9 / (double)(s.t_ns - t_prev);
             }
         }
-        if (R->n > 0 && R->rate_hz > 0.0) {
+        if (!(stamp_rate > 0.0) && R->n > 0 && s.t_ns > t_prev) {
+            stamp_rate = 1e9 / (double)(s.t_ns - t_prev);
+        }
+        if (R->n > 0 && stamp_rate > 0.0) {
+            /* uniformity of the stamps themselves: against an overriding
+             * --rate every interval of a uniform log "differed" (999,999 of
+             * the ADIS log at --rate 400, said as non-uniform sampling) */
             const double dt = 1e-9 * (double)(s.t_ns - t_prev);
-            if (fabs(dt * R->rate_hz - 1.0) > 0.1) {
+            if (fabs(dt * stamp_rate - 1.0) > 0.1) {
                 irregular++;
             }
         }
@@ -509,6 +517,9 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         hx_warn(CMD, "%ld intervals differ from 1/rate by more than 10 %%: the Allan variance assumes uniform "
                      "sampling",
                 irregular);
+    }
+    if (rate_opt > 0.0 && stamp_rate > 0.0 && fabs(rate_opt / stamp_rate - 1.0) > 1e-3) {
+        hx_warn(CMD, "%s: analysed at --rate %g Hz; the log's own rate is %g Hz", path, rate_opt, stamp_rate);
     }
     hx_reader_close(r);
     if (R->rate_hz <= 0.0) {

@@ -316,6 +316,13 @@ print(bad, marked)
 sys.exit(1 if bad or marked == 0 else 0)
 PYEOF
 then pass "unresolved fits marked in the parameter table, columns kept"; else fail "unresolved fits in the table"; fi
+# --rate over a uniform 100 Hz log: every interval was counted as irregular against the new rate ("999 intervals
+# differ from 1/rate ...: the Allan variance assumes uniform sampling"); the stamps are checked against their own
+# rate, and the override is said
+expect_exit 0 "a log at an overriding --rate" "$H" allan "$T/w10s.csv" --rate 400 --no-sim --quiet
+expect_err "analysed at --rate 400 Hz; the log's own rate is 100 Hz" "the overriding rate is said"
+if grep -q "intervals differ" "$T/err"; then fail "a uniform log called irregular at --rate 400"; else
+    pass "a uniform log is not called irregular at --rate 400"; fi
 # a --name with a line break wrote a profile line of its own (a second rate_hz): exit 0, and no command
 # could read the profile; refused before anything is read
 expect_exit 2 "--name with a line break" "$H" allan vectors/walk.bin --no-sim --profile "$T/nl.profile" \
