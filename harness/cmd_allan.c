@@ -4,6 +4,7 @@
  * plot and profile (docs/allan.md). */
 #include <cjson/cJSON.h>
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -101,6 +102,10 @@ typedef struct {
     hx_allan_ident_t id;
     int id_ok;
     int constant;    /* every tau with terms has variance 0: a stuck or disconnected channel */
+    double v_first;  /* the first value pushed, and whether a later one differed from it */
+    int varied;
+    double avar_least; /* least positive Allan variance (display units; the exact one in double); INFINITY: none */
+    int underflow;     /* avar_least is below the float build's normal range: digits lost */
     /* --deviation: per deviation kind and grid point (display units; TDEV in unit s) */
     double dv[HX_DEV_COUNT][GRID_MAX], dv_lo[HX_DEV_COUNT][GRID_MAX], dv_hi[HX_DEV_COUNT][GRID_MAX];
     double dv_edf[HX_DEV_COUNT][GRID_MAX];
@@ -282,6 +287,11 @@ static int record(chan_t *ch, double v)
 static int push_all(run_t *R, chan_t *ch, double v)
 {
     int c;
+    if (R->n == 0u) {
+        ch->v_first = v;
+    } else if (v != ch->v_first) {
+        ch->varied = 1;
+    }
     if (R->exact) {
         return isfinite(v) && fabs(v) <= FNAV_INPUT_MAX_ABS ? record(ch, v) : -1;
     }
@@ -701,6 +711,9 @@ static void exact_table(const run_t *R, chan_t *ch)
         r->terms_nonoverlap = terms_n;
         r->avar = (fnav_real_t)(ao * ch->scale * ch->scale);
         r->avar_nonoverlap = (fnav_real_t)(an * ch->scale * ch->scale);
+        if (terms > 0u && ao > 0.0 && ao * ch->scale * ch->scale < ch->avar_least) {
+            ch->avar_least = ao * ch->scale * ch->scale;
+        }
     }
 }
 
@@ -735,10 +748,16 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
 {
     size_t i;
     hx_allan_fit_opts_t o = hx_allan_fit_opts_default;
+    ch->avar_least = INFINITY;
     if (R->exact) {
         exact_table(R, ch);
     } else {
         collect(R, ch, ch->est, ch->res);
+        for (i = 0; i < ch->nres; i++) {
+            if (ch->res[i].terms > 0u && (double)ch->res[i].avar > 0.0 && (double)ch->res[i].avar < ch->avar_least) {
+                ch->avar_least = (double)ch->res[i].avar;
+            }
+        }
     }
     fnav_allan_slopes(ch->res, ch->nres, ch->slope);
     for (i = 0; i < ch->nres; i++) {
@@ -772,7 +791,24 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
             ch->constant = 1;
         }
     }
-    if (ch->constant) {
+    /* (an exact 0 at one tau is no underflow: a few terms of quantised
+     * data can cancel; in the float core a varying channel whose every
+     * variance is 0 is one) */
+    if (sizeof(fnav_real_t) < sizeof(double) && ch->varied &&
+        (ch->avar_least < (double)FLT_MIN || (!R->exact && isinf(ch->avar_least)))) {
+        /* below the float's normal range a variance keeps fewer digits
+         * (white noise of 1e-22 in a series: 4.6 % off at m = 2), and one
+         * that underflows to 0 read as a constant channel; the double build
+         * has no such limit */
+        ch->underflow = 1;
+        ch->constant = 0;
+    }
+    if (ch->underflow) {
+        hx_error(CMD, "%s: %s: an Allan variance of %.3g %s^2 is below the float build's range (%.3g): its "
+                      "digits are lost; scale the values up (a power of ten, with --unit) or use the double build "
+                      "(FNAV_USE_DOUBLE=1)",
+                 R->source, ch->name, isinf(ch->avar_least) ? 0.0 : ch->avar_least, ch->unit, (double)FLT_MIN);
+    } else if (ch->constant) {
         hx_warn(CMD, "%s: %s is constant over the whole record (Allan deviation 0 at every tau): a stuck, "
                      "saturated or disconnected channel",
                 R->source, ch->name);
@@ -1701,6 +1737,9 @@ int hx_cmd_allan(int argc, char **argv)
     }
     for (i = 0; i < R->nch; i++) {
         analyse_channel(R, &R->ch[i], hx_flag(&a, "--fit-extra"));
+        if (R->ch[i].underflow) {
+            exit_code = HX_EXIT_DATA;
+        }
     }
     if (!hx_flag(&a, "--no-sim") && !grid_streamable(R)) {
         hx_warn(CMD, "simulation check skipped: it runs the streaming estimator, which cannot track every --m");

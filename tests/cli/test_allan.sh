@@ -323,6 +323,20 @@ expect_exit 0 "a log at an overriding --rate" "$H" allan "$T/w10s.csv" --rate 40
 expect_err "analysed at --rate 400 Hz; the log's own rate is 100 Hz" "the overriding rate is said"
 if grep -q "intervals differ" "$T/err"; then fail "a uniform log called irregular at --rate 400"; else
     pass "a uniform log is not called irregular at --rate 400"; fi
+# white noise of 1e-22 (a series in a tiny unit): its Allan variances (1e-44) lie below the float build's
+# normal range, and were printed with lost digits (4.6 % off at m = 2 against the same series x 1e22), or, at
+# 1e-26 in the streaming core, underflowed to 0 and were called a constant channel; now an error, exit 1.
+# Not an exact 0 of a few terms of quantised data (1, 2, 1, 2, ...: 0 at m = 2)
+"$PY" -c "
+import random
+r = random.Random(3)
+print('\n'.join('%.6e' % (1e-22 * r.gauss(0, 1)) for _ in range(5000)))" >"$T/tiny22.txt"
+for e in exact streaming; do
+    expect_exit 1 "a series of 1e-22, $e" "$H" allan --series "$T/tiny22.txt" --rate 1 --estimator $e --no-sim --quiet
+    expect_err "tiny22.txt: series: an Allan variance of .* is below the float build's range" "underflow said, $e"
+done
+printf '1\n2\n1\n2\n1\n2\n1\n2\n1\n2\n' >"$T/alt.txt"
+expect_exit 0 "an exact 0 of quantised data is no underflow" "$H" allan --series "$T/alt.txt" --rate 1 --no-sim --quiet
 # a --name with a line break wrote a profile line of its own (a second rate_hz): exit 0, and no command
 # could read the profile; refused before anything is read
 expect_exit 2 "--name with a line break" "$H" allan vectors/walk.bin --no-sim --profile "$T/nl.profile" \
