@@ -4,6 +4,7 @@
  * plot and profile (docs/allan.md). */
 #include <cjson/cJSON.h>
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -101,6 +102,10 @@ typedef struct {
     hx_allan_ident_t id;
     int id_ok;
     int constant;    /* every tau with terms has variance 0: a stuck or disconnected channel */
+    double v_first;  /* the first value pushed, and whether a later one differed from it */
+    int varied;
+    double avar_least; /* least positive Allan variance (display units; the exact one in double); INFINITY: none */
+    int underflow;     /* avar_least is below the float build's normal range: digits lost */
     /* --deviation: per deviation kind and grid point (display units; TDEV in unit s) */
     double dv[HX_DEV_COUNT][GRID_MAX], dv_lo[HX_DEV_COUNT][GRID_MAX], dv_hi[HX_DEV_COUNT][GRID_MAX];
     double dv_edf[HX_DEV_COUNT][GRID_MAX];
@@ -282,6 +287,11 @@ static int record(chan_t *ch, double v)
 static int push_all(run_t *R, chan_t *ch, double v)
 {
     int c;
+    if (R->n == 0u) {
+        ch->v_first = v;
+    } else if (v != ch->v_first) {
+        ch->varied = 1;
+    }
     if (R->exact) {
         return isfinite(v) && fabs(v) <= FNAV_INPUT_MAX_ABS ? record(ch, v) : -1;
     }
@@ -440,12 +450,14 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     hx_progress_t pr;
     int64_t t_prev = 0;
     long irregular = 0;
+    double stamp_rate; /* the rate the stamps are checked against: the log's own, not an overriding --rate */
     int i, rc = 0;
     if (r == NULL) {
         return -1;
     }
     snprintf(R->sensor, sizeof R->sensor, "%s", hx_reader_meta(r)->sensor);
     R->rate_hz = rate_opt > 0.0 ? rate_opt : hx_reader_meta(r)->rate_hz;
+    stamp_rate = hx_reader_meta(r)->rate_hz;
     hx_progress_start(&pr, "allan: reading", 1.0);
     while ((st = hx_reader_next(r, &s)) == FNAV_OK) {
         if (R->n == UINT32_MAX) {
@@ -461,9 +473,15 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
                 R->rate_hz = 1e9 / (double)(s.t_ns - t_prev);
             }
         }
-        if (R->n > 0 && R->rate_hz > 0.0) {
+        if (!(stamp_rate > 0.0) && R->n > 0 && s.t_ns > t_prev) {
+            stamp_rate = 1e9 / (double)(s.t_ns - t_prev);
+        }
+        if (R->n > 0 && stamp_rate > 0.0) {
+            /* uniformity of the stamps themselves: against an overriding
+             * --rate every interval of a uniform log "differed" (999,999 of
+             * the ADIS log at --rate 400, said as non-uniform sampling) */
             const double dt = 1e-9 * (double)(s.t_ns - t_prev);
-            if (fabs(dt * R->rate_hz - 1.0) > 0.1) {
+            if (fabs(dt * stamp_rate - 1.0) > 0.1) {
                 irregular++;
             }
         }
@@ -509,6 +527,9 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         hx_warn(CMD, "%ld intervals differ from 1/rate by more than 10 %%: the Allan variance assumes uniform "
                      "sampling",
                 irregular);
+    }
+    if (rate_opt > 0.0 && stamp_rate > 0.0 && fabs(rate_opt / stamp_rate - 1.0) > 1e-3) {
+        hx_warn(CMD, "%s: analysed at --rate %g Hz; the log's own rate is %g Hz", path, rate_opt, stamp_rate);
     }
     hx_reader_close(r);
     if (R->rate_hz <= 0.0) {
@@ -690,6 +711,9 @@ static void exact_table(const run_t *R, chan_t *ch)
         r->terms_nonoverlap = terms_n;
         r->avar = (fnav_real_t)(ao * ch->scale * ch->scale);
         r->avar_nonoverlap = (fnav_real_t)(an * ch->scale * ch->scale);
+        if (terms > 0u && ao > 0.0 && ao * ch->scale * ch->scale < ch->avar_least) {
+            ch->avar_least = ao * ch->scale * ch->scale;
+        }
     }
 }
 
@@ -724,10 +748,16 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
 {
     size_t i;
     hx_allan_fit_opts_t o = hx_allan_fit_opts_default;
+    ch->avar_least = INFINITY;
     if (R->exact) {
         exact_table(R, ch);
     } else {
         collect(R, ch, ch->est, ch->res);
+        for (i = 0; i < ch->nres; i++) {
+            if (ch->res[i].terms > 0u && (double)ch->res[i].avar > 0.0 && (double)ch->res[i].avar < ch->avar_least) {
+                ch->avar_least = (double)ch->res[i].avar;
+            }
+        }
     }
     fnav_allan_slopes(ch->res, ch->nres, ch->slope);
     for (i = 0; i < ch->nres; i++) {
@@ -761,7 +791,24 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
             ch->constant = 1;
         }
     }
-    if (ch->constant) {
+    /* (an exact 0 at one tau is no underflow: a few terms of quantised
+     * data can cancel; in the float core a varying channel whose every
+     * variance is 0 is one) */
+    if (sizeof(fnav_real_t) < sizeof(double) && ch->varied &&
+        (ch->avar_least < (double)FLT_MIN || (!R->exact && isinf(ch->avar_least)))) {
+        /* below the float's normal range a variance keeps fewer digits
+         * (white noise of 1e-22 in a series: 4.6 % off at m = 2), and one
+         * that underflows to 0 read as a constant channel; the double build
+         * has no such limit */
+        ch->underflow = 1;
+        ch->constant = 0;
+    }
+    if (ch->underflow) {
+        hx_error(CMD, "%s: %s: an Allan variance of %.3g %s^2 is below the float build's range (%.3g): its "
+                      "digits are lost; scale the values up (a power of ten, with --unit) or use the double build "
+                      "(FNAV_USE_DOUBLE=1)",
+                 R->source, ch->name, isinf(ch->avar_least) ? 0.0 : ch->avar_least, ch->unit, (double)FLT_MIN);
+    } else if (ch->constant) {
         hx_warn(CMD, "%s: %s is constant over the whole record (Allan deviation 0 at every tau): a stuck, "
                      "saturated or disconnected channel",
                 R->source, ch->name);
@@ -902,6 +949,8 @@ static void print_table(const run_t *R, const chan_t *ch)
     print_deviations(R, ch);
 }
 
+static int ar1_resolved(const run_t *R, const chan_t *ch);
+
 static void print_params(const run_t *R)
 {
     int i;
@@ -925,12 +974,19 @@ static void print_params(const run_t *R)
             printf(" %-54s |", ch->constant ? "n/a (constant channel)" : "n/a (1 s or the minimum not covered)");
         }
         if (ch->id_ok && id->fit_ok) {
-            /* ADEV peak of the AR(1) alone (hx_allan_ident.h) */
-            printf(" %10.3g %9.0f %10.3g %10.3g %5.2f %6.3f", id->fit.white, id->fit.gm_tau_s * R->rate_hz,
-                   id->fit.gm_sigma, HX_GM_PEAK_RATIO * id->fit.gm_sigma, id->fit_quality.rms_log10,
-                   id->fit_quality.ratio_at_min);
+            const double tau_samples = id->fit.gm_tau_s * R->rate_hz;
+            /* ADEV peak of the AR(1) alone (hx_allan_ident.h); a tau of a
+             * fit the curve does not resolve can be any size (1.2e8 samples
+             * on 10 s of white noise), %.0f would push the columns aside */
+            printf(tau_samples < 1e9 ? " %10.3g %9.0f" : " %10.3g %9.3g", id->fit.white, tau_samples);
+            printf(" %10.3g %10.3g %5.2f %6.3f", id->fit.gm_sigma, HX_GM_PEAK_RATIO * id->fit.gm_sigma,
+                   id->fit_quality.rms_log10, id->fit_quality.ratio_at_min);
             if (id->fit.quant > 0.0 || id->fit.rrw > 0.0) {
                 printf("  Q %.3g K %.3g", id->fit.quant, id->fit.rrw);
+            }
+            if (!ar1_resolved(R, ch)) {
+                /* the JSON's ar1_identified = false: not the bias a profile takes */
+                printf("  AR(1) not resolved by the curve");
             }
             printf("\n");
         } else {
@@ -1072,7 +1128,6 @@ static void json_deviations(const run_t *R, const chan_t *ch, size_t k, cJSON *e
     }
 }
 
-static int ar1_resolved(const run_t *R, const chan_t *ch);
 
 static int write_json(const run_t *R, const char *path)
 {
@@ -1087,7 +1142,13 @@ static int write_json(const run_t *R, const char *path)
     cJSON_AddNumberToObject(root, "tau_max_s", tau_max_samples(R) / R->rate_hz);
     cJSON_AddNumberToObject(root, "confidence", R->conf);
     cJSON_AddStringToObject(root, "estimator", R->exact ? "exact" : "streaming");
-    cJSON_AddNumberToObject(root, "estimator_bytes_per_channel", (double)sizeof(fnav_allan_t));
+    if (R->exact) {
+        /* no streaming estimator runs: the channel's record instead (8 bytes per phase value) */
+        cJSON_AddNullToObject(root, "estimator_bytes_per_channel");
+    } else {
+        /* every estimator of the channel, as the screen's header says (two at 4 tau per octave) */
+        cJSON_AddNumberToObject(root, "estimator_bytes_per_channel", (double)(sizeof(fnav_allan_t) * (size_t)R->nchunk));
+    }
     if (R->f0 > 0.0) {
         cJSON_AddNumberToObject(root, "fractional_f0", R->f0);
     }
@@ -1242,14 +1303,30 @@ static int write_plot(const run_t *R, const char *path)
     return hx_plot_close(&p, CMD);
 }
 
+/* Whether a profile name is one line of printable text. */
+static int name_printable(const char *s)
+{
+    for (; *s != '\0'; s++) {
+        if ((unsigned char)*s < 0x20u || *s == 0x7f) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 static void base_name(const char *path, char *out, size_t n)
 {
     const char *s = strrchr(path, '/');
-    char *dot;
+    char *dot, *c;
     snprintf(out, n, "%s", s != NULL ? s + 1 : path);
     dot = strchr(out, '.');
     if (dot != NULL) {
         *dot = '\0';
+    }
+    for (c = out; *c != '\0'; c++) {
+        if ((unsigned char)*c < 0x20u || *c == 0x7f) {
+            *c = '_'; /* the name is one line of the profile */
+        }
     }
 }
 
@@ -1264,27 +1341,32 @@ static void base_name(const char *path, char *out, size_t n)
 static int ar1_identified(const run_t *R, const chan_t *ch, double tau_long_s)
 {
     const hx_noise_model_t *f = &ch->id.fit;
-    hx_noise_model_t w = *f;
+    hx_noise_model_t w = *f, nw = *f;
     const double bump_s = 1.89 * f->gm_tau_s;
+    const double fl2 = (1.0 + hx_allan_fit_opts_default.model_floor) * (1.0 + hx_allan_fit_opts_default.model_floor);
+    int ar1_seen = 0, white_seen = 0;
     size_t j;
     if (!ch->id.fit_ok || !(bump_s <= tau_long_s) || !(bump_s >= 1.0 / R->rate_hz)) {
         return 0;
     }
-    w.gm_sigma = 0.0;
+    w.gm_sigma = 0.0; /* the model without its AR(1) part */
+    nw.white = 0.0;   /* the model without its white part */
     for (j = 0; j < ch->nres; j++) {
         const fnav_allan_result_t *r = &ch->res[j];
         const double m = (double)r->tau;
-        double all, white;
+        double all;
         if (r->terms < 2u || m > tau_max_samples(R) * (1.0 + 1e-9)) {
             continue;
         }
         all = hx_noise_model_avar(f, R->rate_hz, m);
-        white = hx_noise_model_avar(&w, R->rate_hz, m);
-        if (all > white * (1.0 + hx_allan_fit_opts_default.model_floor) * (1.0 + hx_allan_fit_opts_default.model_floor)) {
-            return 1;
-        }
+        ar1_seen |= all > hx_noise_model_avar(&w, R->rate_hz, m) * fl2;
+        /* the white part too must show somewhere: a fit that traded it for
+         * an AR(1) of about a sample (10 s of ADIS16405 log 1: ay white
+         * 5.2e-9 m/s^2/sqrt(Hz), T = 0.0078 s) is white noise in disguise,
+         * not an identified bias (a review, 2026-11-29) */
+        white_seen |= all > hx_noise_model_avar(&nw, R->rate_hz, m) * fl2;
     }
-    return 0;
+    return ar1_seen && white_seen;
 }
 
 /* The channel's longest averaging time with data, s: it bounds what can be
@@ -1503,6 +1585,12 @@ int hx_cmd_allan(int argc, char **argv)
             return HX_EXIT_USAGE;
         }
     }
+    if (hx_arg(&a, "--name") != NULL && !name_printable(hx_arg(&a, "--name"))) {
+        /* the profile's "name = ..." line: a line break in it wrote keys of
+         * its own (a second rate_hz), and the profile could not be read */
+        hx_error(CMD, "--name must be printable text on one line (no control characters)");
+        return HX_EXIT_USAGE;
+    }
     R = (run_t *)calloc(1, sizeof *R);
     if (R == NULL) {
         hx_error(CMD, "out of memory");
@@ -1649,6 +1737,9 @@ int hx_cmd_allan(int argc, char **argv)
     }
     for (i = 0; i < R->nch; i++) {
         analyse_channel(R, &R->ch[i], hx_flag(&a, "--fit-extra"));
+        if (R->ch[i].underflow) {
+            exit_code = HX_EXIT_DATA;
+        }
     }
     if (!hx_flag(&a, "--no-sim") && !grid_streamable(R)) {
         hx_warn(CMD, "simulation check skipped: it runs the streaming estimator, which cannot track every --m");
