@@ -310,8 +310,8 @@ static void note_add(char *note, size_t size, const char *what)
     snprintf(note + len, size - len, "%s%s", len > 0 ? "; " : "", what);
 }
 
-/* One replay; 0 ok (partial input accepted with a note), -1 failure (its
- * reason in note). axes: run the axes check (the tables' replays; the
+/* One replay; 0 ok (a cut-off last line accepted with a note), -1 failure
+ * (its reason in note). axes: run the axes check (the tables' replays; the
  * experiments' repeat the same walks and would spend half of eval's time on
  * it). */
 static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, double rate_hz, int axes, hx_traj_t *t,
@@ -329,8 +329,19 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
         return -1;
     }
     if (rc == 1) {
-        /* e.g. a malformed line: every sample before it was used */
-        snprintf(note, note_size, "input ends early (%.150s)", after_path(err, path, buf, sizeof buf));
+        /* a line the reader could not take (malformed, NaN, ...) stopped
+         * the walk: only the part before it was navigated, and its figures
+         * (a closure of a walk read to a third, a final-stride error of a
+         * stride in the middle) are not the walk's. A failed run, as a log
+         * that cannot be read at all (until 2026-11-29 a note in the row
+         * only: no warning, exit 0, and the part judged against the
+         * targets; a review) */
+        char why[300];
+        snprintf(why, sizeof why, "input ends early (%.150s): the walk was read only in part",
+                 after_path(err, path, buf, sizeof buf));
+        fail(ev, path, note, note_size, why);
+        hx_traj_free(t);
+        return -1;
     }
     if (t->cut_lines > 0) {
         /* the reader's warning, in the row: the recording was cut off

@@ -132,6 +132,17 @@ if [ -n "$D" ]; then
     if grep -q "^| Measurement_100601_13 | [0-9].* | last line cut off mid-write: not read |" "$T/cutw.md" &&
         grep -q "^| Measurement_100521_2 | [0-9].* |  |" "$T/cutw.md"; then
         pass "a walk cut off mid-line is noted in its row"; else fail "cut walk: $(grep '^| Measurement' "$T/cutw.md")"; fi
+    # a walk whose line 8000 is not data (half way): the reader stops there.
+    # Until 2026-11-29 a note in the row only, no warning, exit 0, and the
+    # half walk's closure (26.6 %) judged against the targets
+    mkdir -p "$T/badl/openshoe_gx2"
+    awk 'NR == 8000 { $2 = "abc" } { print }' "$W" > "$T/badl/openshoe_gx2/Measurement_100601_14_data_inert.txt"
+    ln -s "$W" "$T/badl/openshoe_gx2/"
+    expect_exit 1 "eval: a walk with a malformed line half way" "$H" eval --no-experiments --data "$T/badl" --out "$T/badl.md" --json "$T/badl.json"
+    expect_err "Measurement_100601_14_data_inert.txt: input ends early (line 8000: " "the walk's bad line is warned about, with its number"
+    if grep -q "^| Measurement_100601_14 | - |.*| not run: input ends early (line 8000: .*read only in part |" "$T/badl.md" &&
+        grep -q "^| Measurement_100521_2 | [0-9].* |  |" "$T/badl.md" && json "$T/badl.json" 'j["failed_runs"] == 1'; then
+        pass "a walk read only in part is a failed run, the other walk is judged"; else fail "bad line: $(grep '^| Measurement' "$T/badl.md")"; fi
     # 70 ipol trials (trial 1-1 under other numbers): 140 rows, and the
     # summary counts them all
     mkdir -p "$T/ipmany/ipol_gait_xsens"
