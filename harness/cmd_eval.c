@@ -1027,6 +1027,7 @@ static const char *fmt_1f(char *buf, size_t size, double v)
 /* Counts of one trial and foot's matching. */
 typedef struct {
     int exp_n, det_n, miss, spur, both, off_time;
+    int beyond; /* expert swings past the log's last packet (a log cut short): not evaluated */
 } ipol_match_t;
 
 /* Everything in packets since the file's first (the experts' unit; the
@@ -1039,11 +1040,14 @@ typedef struct {
  * foot-off fo and foot-strike fs both lie within IPOL_TOL samples of its
  * ends; otherwise it is missed. A detected swing that detects none counts
  * as spurious when its middle is inside the trial, outside the U-turn, and
- * it overlaps no excluded expert swing. found[j] gets expert swing j's
- * reported foot-off and foot-strike when it was detected, else -1. */
+ * it overlaps no excluded expert swing. An expert swing that would be
+ * evaluated but ends after the log's last packet `last` (a log cut short:
+ * no detector could find it) is left out too and counted in m->beyond.
+ * found[j] gets expert swing j's reported foot-off and foot-strike when it
+ * was detected, else -1. */
 static void ipol_match(const long (*evs)[2], int ne, const long (*oevs)[2], int noe, const long (*sw)[2], int nsw,
                        const long *fo, int nfo, const long *fs, int nfs, const long tb[2], const long ub[2],
-                       int keep_both, int *used, long (*found)[2], ipol_match_t *m)
+                       long last, int keep_both, int *used, long (*found)[2], ipol_match_t *m)
 {
     int j, k, q;
     memset(m, 0, sizeof *m);
@@ -1058,13 +1062,14 @@ static void ipol_match(const long (*evs)[2], int ne, const long (*oevs)[2], int 
         for (q = 0; q < noe && !keep_both; q++) {
             both = both || overlaps(oevs[q][0], oevs[q][1], s0, s1);
         }
-        if (outside || both) {
+        if (outside || both || s1 > last) {
             for (k = 0; k < nsw; k++) {
                 if (overlaps(sw[k][0], sw[k][1], s0, s1)) {
                     used[k] = 2; /* belongs to an excluded expert swing */
                 }
             }
-            m->both += !outside;
+            m->both += !outside && both;
+            m->beyond += !outside && !both;
             continue;
         }
         m->exp_n++;
@@ -1125,7 +1130,8 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
         for (foot = 0; foot < 2; foot++) {
             static long evs[256][2], oevs[256][2];
             long tb[2], ub[2], otb[2], oub[2];
-            int ne, noe, nsw = 0, nfo = 0, nfs = 0, j, exp_n = 0, det_n = 0, miss = 0, spur_n = 0;
+            int ne, noe, nsw = 0, nfo = 0, nfs = 0, j, exp_n = 0, det_n = 0, miss = 0, spur_n = 0, lrc = 0;
+            long last;
             hx_log_t log;
             char err[320], oerr[320];
             fnav_stance_t st;
@@ -1150,8 +1156,19 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                 snprintf(err, sizeof err, "no IMU log %.160s_%s.txt", names[i], foot ? "rf" : "lf");
                 fail(ev, path, note, sizeof note, err);
                 ne = -1;
-            } else if (hx_log_load(&log, path, HX_FMT_AUTO, 0.0, err, sizeof err) < 0) {
+            } else if ((lrc = hx_log_load(&log, path, HX_FMT_AUTO, 0.0, err, sizeof err)) < 0) {
                 fail(ev, path, note, sizeof note, err);
+                ne = -1;
+            } else if (lrc > 0 || log.n == 0) {
+                /* a line the reader could not take stopped the log: the
+                 * expert swings after it would read as missed strides, the
+                 * detector blamed for the data (until 2026-11-29 without a
+                 * word, exit 0; a review) */
+                char buf[400], why[400];
+                snprintf(why, sizeof why, "input ends early (%.150s): the foot's log was read only in part",
+                         log.n == 0 ? "no sample" : after_path(log.error, path, buf, sizeof buf));
+                fail(ev, path, note, sizeof note, why);
+                hx_log_free(&log);
                 ne = -1;
             }
             if (ne < 0) {
@@ -1160,6 +1177,12 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             }
             ev->runs++;
             hx_progress_update(&ev->prog, (double)ev->runs);
+            hx_print_warnings("eval", log.warnings); /* a cut-off last line (noted in the row) */
+            note[0] = '\0';
+            if (log.stats.cut_lines > 0) {
+                note_add(note, sizeof note, "last line cut off mid-write: not read");
+            }
+            last = pkt_of_time(&log, log.t_ns[log.n - 1]);
             sc.gravity_mps2 = cfg->gravity_mps2;
             if (fnav_stance_init(&st, &sc) != FNAV_OK) {
                 fail(ev, path, note, sizeof note, "the stance detector refused its configuration");
@@ -1211,17 +1234,23 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                 static long found[256][2];
                 ipol_match_t m, ms;
                 ipol_match((const long (*)[2])evs, ne, (const long (*)[2])oevs, noe, (const long (*)[2])sw, nsw, fo,
-                           nfo, fs, nfs, tb, ub, 1, used, found, &ms);
+                           nfo, fs, nfs, tb, ub, last, 1, used, found, &ms);
                 out->strict_missed += ms.miss;
                 out->strict_spurious += ms.spur;
                 ipol_match((const long (*)[2])evs, ne, (const long (*)[2])oevs, noe, (const long (*)[2])sw, nsw, fo,
-                           nfo, fs, nfs, tb, ub, 0, used, found, &m);
+                           nfo, fs, nfs, tb, ub, last, 0, used, found, &m);
                 exp_n = m.exp_n;
                 det_n = m.det_n;
                 miss = m.miss;
                 spur_n = m.spur;
                 out->both_feet += m.both;
                 out->off_time += m.off_time;
+                if (m.beyond > 0) {
+                    char buf[120];
+                    snprintf(buf, sizeof buf, "%d expert swing%s after the log's end not evaluated", m.beyond,
+                             m.beyond == 1 ? "" : "s");
+                    note_add(note, sizeof note, buf);
+                }
                 for (j = 0; j < ne; j++) {
                     const long bfo = found[j][0], bfs = found[j][1];
                     if (bfo < 0) {
@@ -1238,9 +1267,9 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             }
             if (write) {
                 char m1[32], m2[32];
-                fprintf(ev->md, "| %s | %d | %d | %d | %d | %s | %s |  |\n", nm, exp_n, det_n, miss, spur_n,
+                fprintf(ev->md, "| %s | %d | %d | %d | %d | %s | %s | %s |\n", nm, exp_n, det_n, miss, spur_n,
                         fmt_1f(m1, sizeof m1, hx_median(tfo, trial_fo)),
-                        fmt_1f(m2, sizeof m2, hx_median(tfs, trial_fs)));
+                        fmt_1f(m2, sizeof m2, hx_median(tfs, trial_fs)), note);
             }
             out->expected += exp_n;
             out->detected += det_n;

@@ -155,6 +155,23 @@ if [ -n "$D" ]; then
     rows=$(grep -c "^| 9-[0-9]* | \(left\|right\) | 15 \| 17 |" "$T/ipmany.md")
     if [ "$rows" -eq 140 ] && grep -q "^140 trials and feet: 2240 expert strides" "$T/ipmany.md"; then
         pass "every one of 70 ipol trials is scored"; else fail "70 ipol trials: $rows rows; $(grep 'trials and feet' "$T/ipmany.md" | cut -c1-60)"; fi
+    # an ipol foot's log with a malformed line half way, the other foot's
+    # cut off mid-line half way: until 2026-11-29 both read up to there
+    # without a word (no warning, no note, exit 0) and the expert strides
+    # after it counted as missed (8 and 8: the detector blamed for the data)
+    mkdir -p "$T/ipbad/ipol_gait_xsens"
+    ln -s "$D/ipol_gait_xsens/1-1.json" "$T/ipbad/ipol_gait_xsens/1-1.json"
+    awk 'BEGIN { FS = OFS = "\t" } NR == 1500 { $2 = "abc" } { print }' "$D/ipol_gait_xsens/1-1_lf.txt" > "$T/ipbad/ipol_gait_xsens/1-1_lf.txt"
+    R="$D/ipol_gait_xsens/1-1_rf.txt"
+    head -c $(($(wc -c < "$R") / 2)) "$R" > "$T/ipbad/ipol_gait_xsens/1-1_rf.txt"
+    expect_exit 1 "eval: ipol logs with a bad line, cut off" "$H" eval --no-experiments --data "$T/ipbad" --out "$T/ipbad.md" --json "$T/ipbad.json"
+    expect_err "1-1_lf.txt: input ends early (line 1500: " "the ipol log's bad line is warned about, with its number"
+    expect_err "1-1_rf.txt:[0-9]*: last line is incomplete" "the cut ipol log is warned about"
+    if grep -q "^| 1-1 | left | - |.*| not run: input ends early (line 1500: .*read only in part |" "$T/ipbad.md" &&
+        grep -q "^| 1-1 | right | [0-9]* | [0-9]* | 0 | 0 | .*| last line cut off mid-write: not read; [1-9][0-9]* expert swings after the log's end not evaluated |" "$T/ipbad.md" &&
+        json "$T/ipbad.json" 'j["failed_runs"] == 1 and j["ipol_missed"] == 0'; then
+        pass "a bad ipol log is a failed run; a cut one leaves the swings after its end out, noted"
+    else fail "ipol bad logs: $(grep '^| 1-1' "$T/ipbad.md")"; fi
 else
     echo "skip shared-data checks (no ../shared/data; set FNAV_DATA_DIR)"
 fi
