@@ -1333,6 +1333,27 @@ static const char *fmt_pct(char *buf, size_t size, double v)
     return buf;
 }
 
+/* v in the printf format fmt (one double), or "-" when there is none (a
+ * failed run: "nan" in a table until 2026-11-29). */
+static const char *fmt_v(char *buf, size_t size, const char *fmt, double v)
+{
+    if (isfinite(v)) {
+        snprintf(buf, size, fmt, v);
+    } else {
+        snprintf(buf, size, "-");
+    }
+    return buf;
+}
+
+/* A row of the rate experiment: label (its first two cells) and three
+ * figures, native, 200 and 100 Hz, in fmt ("-" for none). */
+static void row3(FILE *md, const char *label, const char *fmt, double a, double b, double c)
+{
+    char s1[40], s2[40], s3[40];
+    fprintf(md, "| %s | %s | %s | %s |\n", label, fmt_v(s1, sizeof s1, fmt, a), fmt_v(s2, sizeof s2, fmt, b),
+            fmt_v(s3, sizeof s3, fmt, c));
+}
+
 static const char *fmt_mm(char *buf, size_t size, double v_m)
 {
     snprintf(buf, size, isfinite(v_m) ? "%.0f mm" : "-", 1e3 * v_m);
@@ -1957,19 +1978,20 @@ int hx_cmd_eval(int argc, char **argv)
         footprints(&ev, &c2, 100.0, 0, &fp_100, &fp_100_walk);
         fprintf(ev.md, "| data set | figure | native | 200 Hz | 100 Hz |\n|---|---|---:|---:|---:|\n");
         if (gx2.n > 0) {
-            fprintf(ev.md, "| openshoe_gx2 (250 Hz) | median horizontal closure (%%) | %.2f | %.2f | %.2f |\n",
-                    gx2.h_pct_med, gx2_200.h_pct_med, gx2_100.h_pct_med);
-            fprintf(ev.md, "| openshoe_gx2 (250 Hz) | median 3-D closure (%%) | %.2f | %.2f | %.2f |\n", gx2.d3_pct_med,
-                    gx2_200.d3_pct_med, gx2_100.d3_pct_med);
-            fprintf(ev.md, "| openshoe_gx2 (250 Hz) | median vertical (m) | %+.3f | %+.3f | %+.3f |\n", gx2.vert_med,
-                    gx2_200.vert_med, gx2_100.vert_med);
+            row3(ev.md, "openshoe_gx2 (250 Hz) | median horizontal closure (%)", "%.2f", gx2.h_pct_med,
+                 gx2_200.h_pct_med, gx2_100.h_pct_med);
+            row3(ev.md, "openshoe_gx2 (250 Hz) | median 3-D closure (%)", "%.2f", gx2.d3_pct_med,
+                 gx2_200.d3_pct_med, gx2_100.d3_pct_med);
+            row3(ev.md, "openshoe_gx2 (250 Hz) | median vertical (m)", "%+.3f", gx2.vert_med, gx2_200.vert_med,
+                 gx2_100.vert_med);
         }
         if (fp.n > 0) {
-            fprintf(ev.md, "| footprints (200 Hz) | median final-stride error (%%) | %.2f | %.2f | %.2f |\n",
-                    fp.final_pct_med, fp.final_pct_med, fp_100.final_pct_med);
+            row3(ev.md, "footprints (200 Hz) | median final-stride error (%)", "%.2f", fp.final_pct_med,
+                 fp.final_pct_med, fp_100.final_pct_med);
         }
         {
             const double rates[2] = { 200.0, 100.0 };
+            char label[400];
             int k;
             for (i = 0; i < nxio + nother; i++) {
                 char p[1000];
@@ -1988,12 +2010,12 @@ int hx_cmd_eval(int argc, char **argv)
                     r3[k + 1] = closure_3d_m(&ev, p, &c2, rates[k]);
                 }
                 if (i < nxio) {
-                    fprintf(ev.md, "| xio %s (~400 Hz) | 3-D closure (m) | %.3f | %.3f | %.3f |\n", xio[i], r3[0],
-                            r3[1], r3[2]);
+                    snprintf(label, sizeof label, "xio %s (~400 Hz) | 3-D closure (m)", xio[i]);
                 } else {
-                    fprintf(ev.md, "| %s (%.0f Hz) | 3-D closure (m) | %.3f | %.3f | %.3f |\n", other[i - nxio],
-                            other_hz[i - nxio], r3[0], r3[1], r3[2]);
+                    snprintf(label, sizeof label, "%s (%.0f Hz) | 3-D closure (m)", other[i - nxio],
+                             other_hz[i - nxio]);
                 }
+                row3(ev.md, label, "%.3f", r3[0], r3[1], r3[2]);
             }
         }
         fprintf(ev.md, "\nWalk by walk: the difference 100 Hz - 200 Hz of each walk's figure (positive: 200 Hz is "

@@ -39,6 +39,13 @@ if grep -q '"failed_runs":[[:space:]]*1,' "$T/exp.json" && grep -q '"failed_expe
     && grep -q '\*\*1 run(s) failed\*\*' "$T/exp.md" && grep -q "of the experiments' runs failed" "$T/exp.md"; then
     pass "a bad walk counts once; the experiments' repeats apart"
 else fail "experiments: $(grep -o '"failed[a-z_]*":[^,]*' "$T/exp.json")"; fi
+# the rate experiment's row of a walk that failed: dashes, as every table
+# (until 2026-11-29 "nan | nan | nan")
+mkdir -p "$T/expx/xio_ngimu_gait"
+ln -s "$T/still.csv" "$T/expx/xio_ngimu_gait/short_walk.csv"
+expect_exit 1 "eval with experiments: one failed xio walk" "$H" eval --data "$T/expx" --out "$T/expx.md" --no-plots
+if grep -q "^| xio short_walk.csv (~400 Hz) | 3-D closure (m) | - | - | - |$" "$T/expx.md" && ! grep -qi "nan" "$T/expx.md"; then
+    pass "a failed walk's experiment rows read '-', no nan"; else fail "failed walk in the experiments: $(grep -i 'nan' "$T/expx.md")"; fi
 
 # licence and readme files whatever their case (the shared data has
 # ISC_license.txt and LICENSE_BSD-2.txt): not walks (replayed and failed, exit 1)
