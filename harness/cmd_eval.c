@@ -924,11 +924,17 @@ typedef struct {
     int n_fo, n_fs;
 } ipol_t;
 
-/* A JSON pair of numbers [x, y] into v; 0, or -1 when p is not one. */
+/* A JSON pair of sample indices [x, y] (whole numbers, 0 <= x <= y) into
+ * v; 0, or -1 when p is not one (an unknown value, NaN in the file, is
+ * null here: until 2026-11-29 it was read as 0, so that [NaN, 574] was a
+ * swing from the file's first packet and [527, NaN] one that ends before it
+ * starts, a missed stride). */
 static int json_pair(const cJSON *p, long v[2])
 {
     const cJSON *x = cJSON_GetArrayItem(p, 0), *y = cJSON_GetArrayItem(p, 1);
-    if (!cJSON_IsArray(p) || !cJSON_IsNumber(x) || !cJSON_IsNumber(y)) {
+    if (!cJSON_IsArray(p) || cJSON_GetArraySize(p) != 2 || !cJSON_IsNumber(x) || !cJSON_IsNumber(y) ||
+        !(x->valuedouble >= 0.0 && x->valuedouble <= y->valuedouble && y->valuedouble <= 1e9) ||
+        x->valuedouble != floor(x->valuedouble) || y->valuedouble != floor(y->valuedouble)) {
         return -1;
     }
     v[0] = (long)x->valuedouble;
@@ -943,9 +949,10 @@ static int read_events(const char *path, long ev[][2], int max, const char *key,
                        size_t why_size)
 {
     FILE *f = fopen(path, "rb");
-    char *buf, *q;
+    char *buf, *q, *js;
     long size;
-    cJSON *root, *a;
+    size_t i0, o;
+    cJSON *root, *a, *u;
     int k = 0, i, n;
     if (f == NULL) {
         snprintf(why, why_size, "cannot open %.160s", strrchr(path, '/') ? strrchr(path, '/') + 1 : path);
@@ -959,12 +966,27 @@ static int read_events(const char *path, long ev[][2], int max, const char *key,
     }
     buf[fread(buf, 1, (size_t)size, f)] = '\0';
     fclose(f);
-    /* the data set writes NaN for unknown values, which JSON does not have */
-    for (q = buf; (q = strstr(q, "NaN")) != NULL;) {
-        memcpy(q, "0.0", 3);
+    /* the data set writes NaN for unknown values (the subjects' weight),
+     * which JSON does not have: null, an unknown, which no pair of sample
+     * indices is */
+    js = (char *)malloc(2 * (size_t)size + 1);
+    if (js == NULL) {
+        free(buf);
+        snprintf(why, why_size, "out of memory reading the events file");
+        return -1;
     }
-    root = cJSON_Parse(buf);
+    for (i0 = o = 0, q = buf; (q = strstr(q, "NaN")) != NULL; q += 3) {
+        const size_t at = (size_t)(q - buf);
+        memcpy(js + o, buf + i0, at - i0);
+        o += at - i0;
+        memcpy(js + o, "null", 4);
+        o += 4;
+        i0 = at + 3;
+    }
+    snprintf(js + o, 2 * (size_t)size + 1 - o, "%s", buf + i0);
     free(buf);
+    root = cJSON_Parse(js);
+    free(js);
     if (root == NULL) {
         snprintf(why, why_size, "the events file is not valid JSON");
         return -1;
@@ -974,8 +996,15 @@ static int read_events(const char *path, long ev[][2], int max, const char *key,
         snprintf(why, why_size, "the events file has no TrialBoundaries pair");
         return -1;
     }
-    if (json_pair(cJSON_GetObjectItem(root, "UTurnBoundaries"), ub) != 0) {
+    u = cJSON_GetObjectItem(root, "UTurnBoundaries");
+    if (u == NULL) {
         ub[0] = ub[1] = 0; /* a trial without a U-turn: an empty range */
+    } else if (json_pair(u, ub) != 0) {
+        /* unknown (NaN) or not a pair: the turn's strides, which the
+         * experts annotate only partly, would be judged as walking */
+        cJSON_Delete(root);
+        snprintf(why, why_size, "the events file's UTurnBoundaries is not a pair of sample indices");
+        return -1;
     }
     a = cJSON_GetObjectItem(root, key);
     if (!cJSON_IsArray(a)) {
@@ -1147,11 +1176,15 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             /* the other foot's swings, to find annotations with both feet in the air */
             noe = ne < 0 ? 0 : read_events(jpath, oevs, 256, foot ? "LeftFootEvents" : "RightFootEvents", otb, oub,
                                             oerr, sizeof oerr);
-            if (noe < 0) {
-                noe = 0;
-            }
             if (ne < 0) {
                 fail(ev, jpath, note, sizeof note, err);
+            } else if (noe < 0) {
+                /* the other foot's swings decide which of this foot's are
+                 * evaluated (both feet in the air): without them the
+                 * evaluation is not the one described (until 2026-11-29 it
+                 * went on as if the other foot never left the ground) */
+                fail(ev, jpath, note, sizeof note, oerr);
+                ne = -1;
             } else if (!is_file(path)) {
                 snprintf(err, sizeof err, "no IMU log %.160s_%s.txt", names[i], foot ? "rf" : "lf");
                 fail(ev, path, note, sizeof note, err);

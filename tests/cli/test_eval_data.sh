@@ -179,6 +179,21 @@ if [ -n "$D" ]; then
         json "$T/ipbad.json" 'j["failed_runs"] == 1 and j["ipol_missed"] == 0'; then
         pass "a bad ipol log is a failed run; a cut one leaves the swings after its end out, noted"
     else fail "ipol bad logs: $(grep '^| 1-1' "$T/ipbad.md")"; fi
+    # an unknown (NaN) expert event or U-turn boundary: until 2026-11-29 read
+    # as 0, so that [641, NaN] was a missed stride, [NaN, 2580] of the right
+    # foot a swing over the whole trial that left every left swing out
+    # ("0 expert strides", exit 0), and a NaN U-turn none (its strides judged)
+    mkdir -p "$T/ipnan/ipol_gait_xsens"
+    for t in 1-1 1-2 1-4; do for f in lf rf; do ln -s "$D/ipol_gait_xsens/${t}_$f.txt" "$T/ipnan/ipol_gait_xsens/"; done; done
+    sed 's/\[641, 687\]/[641, NaN]/' "$D/ipol_gait_xsens/1-1.json" > "$T/ipnan/ipol_gait_xsens/1-1.json"
+    sed 's/"UTurnBoundaries": \[[0-9]*, [0-9]*\]/"UTurnBoundaries": [NaN, NaN]/' "$D/ipol_gait_xsens/1-2.json" > "$T/ipnan/ipol_gait_xsens/1-2.json"
+    sed 's/\[[0-9]*, 2580\]\]}$/[NaN, 2580]]}/' "$D/ipol_gait_xsens/1-4.json" > "$T/ipnan/ipol_gait_xsens/1-4.json"
+    expect_exit 1 "eval: NaN in ipol events files" "$H" eval --no-experiments --data "$T/ipnan" --out "$T/ipnan.md" --json "$T/ipnan.json"
+    if [ "$(grep -c "^| 1-1 | \(left\|right\) | - |.*| not run: LeftFootEvents\[1\] is not a pair of sample indices |" "$T/ipnan.md")" -eq 2 ] &&
+        [ "$(grep -c "^| 1-2 | \(left\|right\) | - |.*| not run: the events file's UTurnBoundaries is not a pair of sample indices |" "$T/ipnan.md")" -eq 2 ] &&
+        [ "$(grep -c "^| 1-4 | \(left\|right\) | - |.*| not run: RightFootEvents\[[0-9]*\] is not a pair of sample indices |" "$T/ipnan.md")" -eq 2 ] &&
+        json "$T/ipnan.json" 'j["failed_runs"] == 6'; then
+        pass "an unknown event or U-turn boundary fails its trial, named"; else fail "ipol NaN: $(grep '^| 1-' "$T/ipnan.md")"; fi
 else
     echo "skip shared-data checks (no ../shared/data; set FNAV_DATA_DIR)"
 fi
