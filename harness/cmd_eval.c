@@ -1891,8 +1891,13 @@ int hx_cmd_eval(int argc, char **argv)
              * profile's white noise, stood for every table) */
 #define EV_NP 4
 #define EV_NC (2 * EV_NP)
-            static const char *const prof[EV_NP] = { "navchip", "mtx", "shimmer",
-                                                     "docs/profiles/generic-mems.profile" };
+            /* the built-in generic-mems is docs/profiles/generic-mems.profile
+             * value for value (tests/test_profile.c); by its name, so that
+             * eval run outside the repository root keeps the default's pair
+             * (the file's path is relative: until 2026-11-29 the column pair
+             * was dropped there with a warning, exit 0, the text still
+             * calling the last columns the default's; a review) */
+            static const char *const prof[EV_NP] = { "navchip", "mtx", "shimmer", "generic-mems" };
             static const char *const pname[EV_NP] = { "navchip", "mtx", "shimmer", "generic MEMS" };
             closure_t g[EV_NC];
             fp_t fpv[EV_NC];

@@ -207,6 +207,15 @@ if [ -n "$D" ] && [ -f "$D/xio_ngimu_gait/short_walk.csv" ]; then
     expect_exit 0 "eval with experiments on one xio walk" "$H" eval --data "$T/bx" --out "$T/bx.md"
     if grep -q "| data set | figure | navchip off | navchip ar1 | mtx off | mtx ar1 | shimmer off | shimmer ar1 | generic MEMS off | generic MEMS ar1 |" "$T/bx.md"; then
         pass "experiment 1: an off and an ar1 column per profile"; else fail "experiment 1 columns: $(grep '^| data set' "$T/bx.md" | head -1)"; fi
+    # run outside the repository root: the default's pair is kept (the
+    # generic profile was read from docs/profiles/ by a relative path, and
+    # its two columns were dropped with a warning only)
+    HA=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")
+    (cd "$T" && "$HA" eval --data "$T/bx" --out "$T/bx2.md" --no-plots > /dev/null 2> "$T/bx2.err")
+    if grep -q "| generic MEMS off | generic MEMS ar1 |$" "$T/bx2.md" && ! grep -q "cannot open profile" "$T/bx2.err" &&
+        [ "$(grep '^| xio short_walk.csv | 3-D closure (m) |' "$T/bx2.md")" = "$(grep '^| xio short_walk.csv | 3-D closure (m) |' "$T/bx.md")" ]; then
+        pass "experiment 1 outside the repository root: the same columns and figures"
+    else fail "experiment 1 from $T: $(grep '^| data set' "$T/bx2.md" | head -1) $(cat "$T/bx2.err" | grep warn)"; fi
     row=$(grep "^| xio short_walk.csv | 3-D closure (m) |" "$T/bx.md" | head -1)
     mtxoff=$("$H" replay "$T/bx/xio_ngimu_gait/short_walk.csv" --bias-model off --profile mtx --json - --quiet 2>/dev/null |
         sed -n 's/.*"return_error_3d_m":[[:space:]]*\([0-9.]*\).*/\1/p')
