@@ -1628,11 +1628,6 @@ int hx_cmd_eval(int argc, char **argv)
             }
         }
     }
-    ev.md = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
-    if (ev.md == NULL) {
-        hx_error("eval", "cannot write %s", out_path);
-        return HX_EXIT_IO;
-    }
     {
         /* the closed walks without a file-name convention of their own */
         static const char *const osets[2][2] = { { "openshoe_c_820hz", ".txt" }, { "openshoe_square2", ".csv" } };
@@ -1679,12 +1674,31 @@ int hx_cmd_eval(int argc, char **argv)
         nip = 2 * list_data(dir, k_ipol_files, 3, 1, &names);
         free(names);
         ev.total_runs = ngx2 + nxio + nother + nfp + nvi + nip;
+        if (ev.total_runs == 0) {
+            /* a MANIFEST.md or data set folders, but not one walk in them
+             * (a copy not synced, a wrong directory): nothing to run on,
+             * said before results.md is touched (until 2026-11-29 it was
+             * overwritten with "no data" in every section, exit 0; a
+             * review) */
+            hx_error("eval", "no walk or trial in any data set folder of %s: nothing to evaluate", ev.data);
+            free(xio);
+            free(other);
+            free(xio3);
+            free(other3);
+            return HX_EXIT_UNAVAIL;
+        }
         if (exp) {
             ev.total_runs += 8 * (ngx2 + nfp + nvi + nxio) + 2 * (ngx2 + nxio + nother) + nfp;
         }
-        if (ev.total_runs < 1) {
-            ev.total_runs = 1;
-        }
+    }
+    ev.md = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
+    if (ev.md == NULL) {
+        hx_error("eval", "cannot write %s", out_path);
+        free(xio);
+        free(other);
+        free(xio3);
+        free(other3);
+        return HX_EXIT_IO;
     }
     hx_progress_start(&ev.prog, "eval", ev.total_runs);
     off = ev.cfg;

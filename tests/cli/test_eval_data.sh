@@ -47,6 +47,16 @@ expect_exit 1 "eval with experiments: one failed xio walk" "$H" eval --data "$T/
 if grep -q "^| xio short_walk.csv (~400 Hz) | 3-D closure (m) | - | - | - |$" "$T/expx.md" && ! grep -qi "nan" "$T/expx.md"; then
     pass "a failed walk's experiment rows read '-', no nan"; else fail "failed walk in the experiments: $(grep -i 'nan' "$T/expx.md")"; fi
 
+# a data directory with its MANIFEST.md and set folders but not one walk
+# (a copy not synced): nothing to run on, exit 4, the results file left as
+# it was (it was overwritten with "no data" everywhere, exit 0)
+mkdir -p "$T/nowalk/openshoe_gx2" "$T/nowalk/ipol_gait_xsens"
+echo "# Real data for footnav" > "$T/nowalk/MANIFEST.md"
+echo "kept" > "$T/nowalk.md"
+expect_exit 4 "eval: set folders without a walk" "$H" eval --no-experiments --data "$T/nowalk" --out "$T/nowalk.md"
+expect_err "no walk or trial in any data set folder of $T/nowalk" "no walk: said"
+if [ "$(cat "$T/nowalk.md")" = "kept" ]; then pass "no walk: the results file is not touched"; else fail "no walk: results file overwritten"; fi
+
 # licence and readme files whatever their case (the shared data has
 # ISC_license.txt and LICENSE_BSD-2.txt): not walks (replayed and failed, exit 1)
 mkdir -p "$T/docs/openshoe_c_820hz" "$T/docs/xio_ngimu_gait" "$T/docs/openshoe_gx2"
