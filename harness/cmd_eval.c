@@ -1030,12 +1030,22 @@ static int read_events(const char *path, long ev[][2], int max, const char *key,
     return k;
 }
 
-/* Packet index (the experts' unit: packets since the file's first one) of
- * a time from the log: the reader stamps a sample counter / rate, so a time
- * after dropped packets still counts them. */
+/* Packet index (the experts' unit: the PacketCounter, 16-bit wraps counted
+ * on) of a time from the log: the reader stamps a sample counter / rate, so
+ * a time after dropped packets still counts them. The counter itself, not
+ * packets since the file's first: it is the time base the Awinda station
+ * gives every sensor of a recording, and one TrialBoundaries pair serves
+ * both feet, whose files start at different counters when their first
+ * packets were lost (1-2: left 0, right 1; 3-3: left 2, right 0). Until
+ * 2026-11-29 each file's first counter was subtracted, which moved the
+ * events of the six files not starting at 0 earlier by one or two packets:
+ * their foot-off errors then had a median of -3 packets against -1 for the
+ * other 22 (subject 1's three such files at -3 each, its nine others
+ * between -2 and -1), their foot-strike errors 0 against +1; with the
+ * counter both groups agree (-1 and +1; a review). */
 static long pkt_of_time(const hx_log_t *log, int64_t t_ns)
 {
-    return (long)llround((double)t_ns * log->meta.rate_hz * 1e-9) - (long)log->seq[0];
+    return (long)llround((double)t_ns * log->meta.rate_hz * 1e-9);
 }
 
 /* Largest |event error| for an expert swing to count as detected, samples. */
@@ -1059,8 +1069,8 @@ typedef struct {
     int beyond; /* expert swings past the log's last packet (a log cut short): not evaluated */
 } ipol_match_t;
 
-/* Everything in packets since the file's first (the experts' unit; the
- * log's rows skip dropped packets). Evaluated: the expert swings evs inside
+/* Everything in packets (the experts' unit, the PacketCounter; the log's
+ * rows skip dropped packets). Evaluated: the expert swings evs inside
  * the trial tb and clear of the U-turn ub (the experts annotate the turn
  * only partly), and, unless keep_both, not overlapping an expert swing of
  * the other foot oevs (both feet in the air: no walking stride has that, so

@@ -189,6 +189,17 @@ if [ -n "$D" ]; then
         json "$T/ipbad.json" 'j["failed_runs"] == 1 and j["ipol_missed"] == 0'; then
         pass "a bad ipol log is a failed run; a cut one leaves the swings after its end out, noted"
     else fail "ipol bad logs: $(grep '^| 1-1' "$T/ipbad.md")"; fi
+    # the experts' indices are PacketCounter values (one TrialBoundaries pair
+    # for both feet, whose files start at different counters): a left foot
+    # log whose first 3 packets were lost (starting at counter 3) scores as
+    # the whole one; counted from the file's first packet its events moved 3
+    # packets early and the row read 4.0 and 2.0
+    mkdir -p "$T/ipfirst/ipol_gait_xsens"
+    for x in .json _rf.txt; do ln -s "$D/ipol_gait_xsens/1-1$x" "$T/ipfirst/ipol_gait_xsens/"; done
+    awk 'NR < 3 || NR > 5' "$D/ipol_gait_xsens/1-1_lf.txt" > "$T/ipfirst/ipol_gait_xsens/1-1_lf.txt"
+    expect_exit 0 "eval: an ipol log whose first packets were lost" "$H" eval --no-experiments --data "$T/ipfirst" --out "$T/ipfirst.md"
+    if grep -q "^| 1-1 | left | 15 | 15 | 0 | 0 | 2.0 | 1.0 |  |$" "$T/ipfirst.md"; then
+        pass "ipol: events in counter values, not packets since the file's first"; else fail "ipol first packets lost: $(grep '^| 1-1 | left' "$T/ipfirst.md")"; fi
     # an unknown (NaN) expert event or U-turn boundary: until 2026-11-29 read
     # as 0, so that [641, NaN] was a missed stride, [NaN, 2580] of the right
     # foot a swing over the whole trial that left every left swing out
