@@ -1103,8 +1103,14 @@ static void ipol_match(const long (*evs)[2], int ne, const long (*oevs)[2], int 
         }
         if (outside || both || s1 > last) {
             for (k = 0; k < nsw; k++) {
-                if (overlaps(sw[k][0], sw[k][1], s0, s1)) {
-                    used[k] = 2; /* belongs to an excluded expert swing */
+                if (used[k] == 0 && overlaps(sw[k][0], sw[k][1], s0, s1)) {
+                    /* belongs to an excluded expert swing (not spurious);
+                     * one that already detected an evaluated swing keeps
+                     * that mark, else a later evaluated swing took it again:
+                     * one detected swing over three expert swings, the
+                     * middle one left out, counted as two detections
+                     * (until 2026-11-29; a review) */
+                    used[k] = 2;
                 }
             }
             m->both += !outside && both;

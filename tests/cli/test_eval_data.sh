@@ -200,6 +200,18 @@ if [ -n "$D" ]; then
     expect_exit 0 "eval: an ipol log whose first packets were lost" "$H" eval --no-experiments --data "$T/ipfirst" --out "$T/ipfirst.md"
     if grep -q "^| 1-1 | left | 15 | 15 | 0 | 0 | 2.0 | 1.0 |  |$" "$T/ipfirst.md"; then
         pass "ipol: events in counter values, not packets since the file's first"; else fail "ipol first packets lost: $(grep '^| 1-1 | left' "$T/ipfirst.md")"; fi
+    # several expert swings close together: 1-1's left swing [641, 687]
+    # annotated as three, the middle one with the right foot in the air too
+    # (left out). The one detected swing there detects one of them: it was
+    # counted twice (16 detected, 0 missed), since leaving the middle one
+    # out cleared the mark that the first had taken it
+    mkdir -p "$T/ipdbl/ipol_gait_xsens"
+    for f in lf rf; do ln -s "$D/ipol_gait_xsens/1-1_$f.txt" "$T/ipdbl/ipol_gait_xsens/"; done
+    sed 's/\[641, 687\]/[641, 660], [661, 665], [666, 687]/; s/"RightFootEvents": \[/"RightFootEvents": [[661, 665], /' \
+        "$D/ipol_gait_xsens/1-1.json" > "$T/ipdbl/ipol_gait_xsens/1-1.json"
+    expect_exit 0 "eval: expert swings close together" "$H" eval --no-experiments --data "$T/ipdbl" --out "$T/ipdbl.md"
+    if grep -q "^| 1-1 | left | 16 | 15 | 1 | 0 | " "$T/ipdbl.md"; then
+        pass "ipol: a detected swing detects one expert swing, not two"; else fail "ipol double match: $(grep '^| 1-1 | left' "$T/ipdbl.md")"; fi
     # an unknown (NaN) expert event or U-turn boundary: until 2026-11-29 read
     # as 0, so that [641, NaN] was a missed stride, [NaN, 2580] of the right
     # foot a swing over the whole trial that left every left swing out
