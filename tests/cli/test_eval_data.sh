@@ -39,6 +39,23 @@ if grep -q '"failed_runs":[[:space:]]*1,' "$T/exp.json" && grep -q '"failed_expe
     && grep -q '\*\*1 run(s) failed\*\*' "$T/exp.md" && grep -q "of the experiments' runs failed" "$T/exp.md"; then
     pass "a bad walk counts once; the experiments' repeats apart"
 else fail "experiments: $(grep -o '"failed[a-z_]*":[^,]*' "$T/exp.json")"; fi
+# the rate experiment's row of a walk that failed: dashes, as every table
+# (until 2026-11-29 "nan | nan | nan")
+mkdir -p "$T/expx/xio_ngimu_gait"
+ln -s "$T/still.csv" "$T/expx/xio_ngimu_gait/short_walk.csv"
+expect_exit 1 "eval with experiments: one failed xio walk" "$H" eval --data "$T/expx" --out "$T/expx.md" --no-plots
+if grep -q "^| xio short_walk.csv (~400 Hz) | 3-D closure (m) | - | - | - |$" "$T/expx.md" && ! grep -qi "nan" "$T/expx.md"; then
+    pass "a failed walk's experiment rows read '-', no nan"; else fail "failed walk in the experiments: $(grep -i 'nan' "$T/expx.md")"; fi
+
+# a data directory with its MANIFEST.md and set folders but not one walk
+# (a copy not synced): nothing to run on, exit 4, the results file left as
+# it was (it was overwritten with "no data" everywhere, exit 0)
+mkdir -p "$T/nowalk/openshoe_gx2" "$T/nowalk/ipol_gait_xsens"
+echo "# Real data for footnav" > "$T/nowalk/MANIFEST.md"
+echo "kept" > "$T/nowalk.md"
+expect_exit 4 "eval: set folders without a walk" "$H" eval --no-experiments --data "$T/nowalk" --out "$T/nowalk.md"
+expect_err "no walk or trial in any data set folder of $T/nowalk" "no walk: said"
+if [ "$(cat "$T/nowalk.md")" = "kept" ]; then pass "no walk: the results file is not touched"; else fail "no walk: results file overwritten"; fi
 
 # licence and readme files whatever their case (the shared data has
 # ISC_license.txt and LICENSE_BSD-2.txt): not walks (replayed and failed, exit 1)
@@ -132,6 +149,17 @@ if [ -n "$D" ]; then
     if grep -q "^| Measurement_100601_13 | [0-9].* | last line cut off mid-write: not read |" "$T/cutw.md" &&
         grep -q "^| Measurement_100521_2 | [0-9].* |  |" "$T/cutw.md"; then
         pass "a walk cut off mid-line is noted in its row"; else fail "cut walk: $(grep '^| Measurement' "$T/cutw.md")"; fi
+    # a walk whose line 8000 is not data (half way): the reader stops there.
+    # Until 2026-11-29 a note in the row only, no warning, exit 0, and the
+    # half walk's closure (26.6 %) judged against the targets
+    mkdir -p "$T/badl/openshoe_gx2"
+    awk 'NR == 8000 { $2 = "abc" } { print }' "$W" > "$T/badl/openshoe_gx2/Measurement_100601_14_data_inert.txt"
+    ln -s "$W" "$T/badl/openshoe_gx2/"
+    expect_exit 1 "eval: a walk with a malformed line half way" "$H" eval --no-experiments --data "$T/badl" --out "$T/badl.md" --json "$T/badl.json"
+    expect_err "Measurement_100601_14_data_inert.txt: input ends early (line 8000: " "the walk's bad line is warned about, with its number"
+    if grep -q "^| Measurement_100601_14 | - |.*| not run: input ends early (line 8000: .*read only in part |" "$T/badl.md" &&
+        grep -q "^| Measurement_100521_2 | [0-9].* |  |" "$T/badl.md" && json "$T/badl.json" 'j["failed_runs"] == 1'; then
+        pass "a walk read only in part is a failed run, the other walk is judged"; else fail "bad line: $(grep '^| Measurement' "$T/badl.md")"; fi
     # 70 ipol trials (trial 1-1 under other numbers): 140 rows, and the
     # summary counts them all
     mkdir -p "$T/ipmany/ipol_gait_xsens"
@@ -144,6 +172,61 @@ if [ -n "$D" ]; then
     rows=$(grep -c "^| 9-[0-9]* | \(left\|right\) | 15 \| 17 |" "$T/ipmany.md")
     if [ "$rows" -eq 140 ] && grep -q "^140 trials and feet: 2240 expert strides" "$T/ipmany.md"; then
         pass "every one of 70 ipol trials is scored"; else fail "70 ipol trials: $rows rows; $(grep 'trials and feet' "$T/ipmany.md" | cut -c1-60)"; fi
+    # an ipol foot's log with a malformed line half way, the other foot's
+    # cut off mid-line half way: until 2026-11-29 both read up to there
+    # without a word (no warning, no note, exit 0) and the expert strides
+    # after it counted as missed (8 and 8: the detector blamed for the data)
+    mkdir -p "$T/ipbad/ipol_gait_xsens"
+    ln -s "$D/ipol_gait_xsens/1-1.json" "$T/ipbad/ipol_gait_xsens/1-1.json"
+    awk 'BEGIN { FS = OFS = "\t" } NR == 1500 { $2 = "abc" } { print }' "$D/ipol_gait_xsens/1-1_lf.txt" > "$T/ipbad/ipol_gait_xsens/1-1_lf.txt"
+    R="$D/ipol_gait_xsens/1-1_rf.txt"
+    head -c $(($(wc -c < "$R") / 2)) "$R" > "$T/ipbad/ipol_gait_xsens/1-1_rf.txt"
+    expect_exit 1 "eval: ipol logs with a bad line, cut off" "$H" eval --no-experiments --data "$T/ipbad" --out "$T/ipbad.md" --json "$T/ipbad.json"
+    expect_err "1-1_lf.txt: input ends early (line 1500: " "the ipol log's bad line is warned about, with its number"
+    expect_err "1-1_rf.txt:[0-9]*: last line is incomplete" "the cut ipol log is warned about"
+    if grep -q "^| 1-1 | left | - |.*| not run: input ends early (line 1500: .*read only in part |" "$T/ipbad.md" &&
+        grep -q "^| 1-1 | right | [0-9]* | [0-9]* | 0 | 0 | .*| last line cut off mid-write: not read; [1-9][0-9]* expert swings after the log's end not evaluated |" "$T/ipbad.md" &&
+        json "$T/ipbad.json" 'j["failed_runs"] == 1 and j["ipol_missed"] == 0'; then
+        pass "a bad ipol log is a failed run; a cut one leaves the swings after its end out, noted"
+    else fail "ipol bad logs: $(grep '^| 1-1' "$T/ipbad.md")"; fi
+    # the experts' indices are PacketCounter values (one TrialBoundaries pair
+    # for both feet, whose files start at different counters): a left foot
+    # log whose first 3 packets were lost (starting at counter 3) scores as
+    # the whole one; counted from the file's first packet its events moved 3
+    # packets early and the row read 4.0 and 2.0
+    mkdir -p "$T/ipfirst/ipol_gait_xsens"
+    for x in .json _rf.txt; do ln -s "$D/ipol_gait_xsens/1-1$x" "$T/ipfirst/ipol_gait_xsens/"; done
+    awk 'NR < 3 || NR > 5' "$D/ipol_gait_xsens/1-1_lf.txt" > "$T/ipfirst/ipol_gait_xsens/1-1_lf.txt"
+    expect_exit 0 "eval: an ipol log whose first packets were lost" "$H" eval --no-experiments --data "$T/ipfirst" --out "$T/ipfirst.md"
+    if grep -q "^| 1-1 | left | 15 | 15 | 0 | 0 | 2.0 | 1.0 |  |$" "$T/ipfirst.md"; then
+        pass "ipol: events in counter values, not packets since the file's first"; else fail "ipol first packets lost: $(grep '^| 1-1 | left' "$T/ipfirst.md")"; fi
+    # several expert swings close together: 1-1's left swing [641, 687]
+    # annotated as three, the middle one with the right foot in the air too
+    # (left out). The one detected swing there detects one of them: it was
+    # counted twice (16 detected, 0 missed), since leaving the middle one
+    # out cleared the mark that the first had taken it
+    mkdir -p "$T/ipdbl/ipol_gait_xsens"
+    for f in lf rf; do ln -s "$D/ipol_gait_xsens/1-1_$f.txt" "$T/ipdbl/ipol_gait_xsens/"; done
+    sed 's/\[641, 687\]/[641, 660], [661, 665], [666, 687]/; s/"RightFootEvents": \[/"RightFootEvents": [[661, 665], /' \
+        "$D/ipol_gait_xsens/1-1.json" > "$T/ipdbl/ipol_gait_xsens/1-1.json"
+    expect_exit 0 "eval: expert swings close together" "$H" eval --no-experiments --data "$T/ipdbl" --out "$T/ipdbl.md"
+    if grep -q "^| 1-1 | left | 16 | 15 | 1 | 0 | " "$T/ipdbl.md"; then
+        pass "ipol: a detected swing detects one expert swing, not two"; else fail "ipol double match: $(grep '^| 1-1 | left' "$T/ipdbl.md")"; fi
+    # an unknown (NaN) expert event or U-turn boundary: until 2026-11-29 read
+    # as 0, so that [641, NaN] was a missed stride, [NaN, 2580] of the right
+    # foot a swing over the whole trial that left every left swing out
+    # ("0 expert strides", exit 0), and a NaN U-turn none (its strides judged)
+    mkdir -p "$T/ipnan/ipol_gait_xsens"
+    for t in 1-1 1-2 1-4; do for f in lf rf; do ln -s "$D/ipol_gait_xsens/${t}_$f.txt" "$T/ipnan/ipol_gait_xsens/"; done; done
+    sed 's/\[641, 687\]/[641, NaN]/' "$D/ipol_gait_xsens/1-1.json" > "$T/ipnan/ipol_gait_xsens/1-1.json"
+    sed 's/"UTurnBoundaries": \[[0-9]*, [0-9]*\]/"UTurnBoundaries": [NaN, NaN]/' "$D/ipol_gait_xsens/1-2.json" > "$T/ipnan/ipol_gait_xsens/1-2.json"
+    sed 's/\[[0-9]*, 2580\]\]}$/[NaN, 2580]]}/' "$D/ipol_gait_xsens/1-4.json" > "$T/ipnan/ipol_gait_xsens/1-4.json"
+    expect_exit 1 "eval: NaN in ipol events files" "$H" eval --no-experiments --data "$T/ipnan" --out "$T/ipnan.md" --json "$T/ipnan.json"
+    if [ "$(grep -c "^| 1-1 | \(left\|right\) | - |.*| not run: LeftFootEvents\[1\] is not a pair of sample indices |" "$T/ipnan.md")" -eq 2 ] &&
+        [ "$(grep -c "^| 1-2 | \(left\|right\) | - |.*| not run: the events file's UTurnBoundaries is not a pair of sample indices |" "$T/ipnan.md")" -eq 2 ] &&
+        [ "$(grep -c "^| 1-4 | \(left\|right\) | - |.*| not run: RightFootEvents\[[0-9]*\] is not a pair of sample indices |" "$T/ipnan.md")" -eq 2 ] &&
+        json "$T/ipnan.json" 'j["failed_runs"] == 6'; then
+        pass "an unknown event or U-turn boundary fails its trial, named"; else fail "ipol NaN: $(grep '^| 1-' "$T/ipnan.md")"; fi
 else
     echo "skip shared-data checks (no ../shared/data; set FNAV_DATA_DIR)"
 fi
@@ -157,6 +240,15 @@ if [ -n "$D" ] && [ -f "$D/xio_ngimu_gait/short_walk.csv" ]; then
     expect_exit 0 "eval with experiments on one xio walk" "$H" eval --data "$T/bx" --out "$T/bx.md"
     if grep -q "| data set | figure | navchip off | navchip ar1 | mtx off | mtx ar1 | shimmer off | shimmer ar1 | generic MEMS off | generic MEMS ar1 |" "$T/bx.md"; then
         pass "experiment 1: an off and an ar1 column per profile"; else fail "experiment 1 columns: $(grep '^| data set' "$T/bx.md" | head -1)"; fi
+    # run outside the repository root: the default's pair is kept (the
+    # generic profile was read from docs/profiles/ by a relative path, and
+    # its two columns were dropped with a warning only)
+    HA=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")
+    (cd "$T" && "$HA" eval --data "$T/bx" --out "$T/bx2.md" --no-plots > /dev/null 2> "$T/bx2.err")
+    if grep -q "| generic MEMS off | generic MEMS ar1 |$" "$T/bx2.md" && ! grep -q "cannot open profile" "$T/bx2.err" &&
+        [ "$(grep '^| xio short_walk.csv | 3-D closure (m) |' "$T/bx2.md")" = "$(grep '^| xio short_walk.csv | 3-D closure (m) |' "$T/bx.md")" ]; then
+        pass "experiment 1 outside the repository root: the same columns and figures"
+    else fail "experiment 1 from $T: $(grep '^| data set' "$T/bx2.md" | head -1) $(cat "$T/bx2.err" | grep warn)"; fi
     row=$(grep "^| xio short_walk.csv | 3-D closure (m) |" "$T/bx.md" | head -1)
     mtxoff=$("$H" replay "$T/bx/xio_ngimu_gait/short_walk.csv" --bias-model off --profile mtx --json - --quiet 2>/dev/null |
         sed -n 's/.*"return_error_3d_m":[[:space:]]*\([0-9.]*\).*/\1/p')
