@@ -259,12 +259,12 @@ static void hold_last_frame(fnav_nav_t *nav, int keep_yaw_var)
     }
     if (good) {
         nav->hold_pos_m = fnav_vec3(g->pos_m[0], g->pos_m[1], g->pos_m[2]);
-        /* the frame's attitude from its ZYX angles: near pitch +-90 deg
-         * roll and yaw each carry rounding / cos(pitch), but the attitude
-         * they give back does not (T&W eq. 3.47 is smooth in them) */
-        int att = fnav_isfinite(g->euler_rad[0]) && fnav_isfinite(g->euler_rad[1]) && fnav_isfinite(g->euler_rad[2]);
-        nav->hold_q_nb = att ? fnav_quat_from_euler(g->euler_rad[0], g->euler_rad[1], g->euler_rad[2])
-                              : fnav_quat_identity();
+        /* the frame's attitude as the filter had it, not rebuilt from its
+         * ZYX angles: near pitch +-90 deg roll and yaw each carry the
+         * quaternion's rounding / cos(pitch), and so does the attitude
+         * they give back (in float32 1.2 deg off at 0.001 deg from 90, 10
+         * deg at 1e-4, any heading at 90: a review, 2026-11-29) */
+        nav->hold_q_nb = nav->last_q_nb;
         for (i = 0; i < 3; i++) {
             nav->hold_pos_var_m2[i] = g->p_diag[FNAV_UKF_P + i];
         }
@@ -354,6 +354,7 @@ static void fill_frame(fnav_nav_t *nav, const fnav_stance_out_t *o, uint32_t fla
         const fnav_ukf_t *u = &nav->ukf;
         fnav_vec3_t e = fnav_ukf_euler(u);
         fr->flags |= FNAV_FRAME_ALIGNED;
+        nav->last_q_nb = u->q_nb; /* this frame becomes nav->last (fnav_nav_pop) */
         for (i = 0; i < 3; i++) {
             fr->pos_m[i] = u->pos_m.v[i];
             fr->vel_mps[i] = u->vel_mps.v[i];

@@ -151,6 +151,7 @@ typedef struct {
     uint32_t health;        /**< FNAV_HEALTH_* bits */
     fnav_nav_stats_t stats;
     fnav_nav_frame_t last;  /**< newest frame */
+    fnav_quat_t last_q_nb;  /**< its attitude, when it is aligned (its Euler angles lose it near pitch +-90 deg) */
     int prev_stance;        /**< the previous frame was decided stance */
     int settle_pending;     /**< a stance began: start the settling state at its first ZUPT */
     fnav_real_t stance_s;   /**< time the current stance has lasted, s */
