@@ -231,8 +231,9 @@ static void start_filter(fnav_nav_t *nav)
             }
         }
         /* after a reset the heading keeps its variance too: the walk went
-         * on with it (a renewal holds none: before the first stride the
-         * heading is the frame's own definition, nothing was navigated) */
+         * on with it (a renewal holds none, unless a reset came before it:
+         * before the first stride the heading is the frame's own
+         * definition, nothing was navigated) */
         if (fnav_isfinite(nav->hold_yaw_var_rad2) &&
             nav->hold_yaw_var_rad2 > fnav_ukf_cov(&nav->ukf, FNAV_UKF_A + 2, FNAV_UKF_A + 2)) {
             fnav_ukf_set_cov(&nav->ukf, FNAV_UKF_A + 2, FNAV_UKF_A + 2, nav->hold_yaw_var_rad2);
@@ -287,7 +288,13 @@ static int renew_alignment(fnav_nav_t *nav, const fnav_stance_out_t *o)
                           &nav->align.result)) {
         return 0;
     }
-    hold_last_frame(nav, 0); /* the state before this sample */
+    /* the state before this sample; its heading variance only after a
+     * divergence reset, when the heading was navigated (the walk went on
+     * from the last good frame): before the first stride of a log it is
+     * the frame's own definition. Until 2026-11-29 (a review) a renewal
+     * in the stand after a reset restarted it at yaw_sd^2 too, undoing
+     * the reset's hold (test_nav_robust test_reset_then_renewal). */
+    hold_last_frame(nav, nav->stats.resets > 0u);
     start_filter(nav);
     nav->stats.realigned++;
     return 1;
