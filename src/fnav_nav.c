@@ -260,12 +260,12 @@ static void hold_last_frame(fnav_nav_t *nav, int keep_yaw_var)
     }
     if (good) {
         nav->hold_pos_m = fnav_vec3(g->pos_m[0], g->pos_m[1], g->pos_m[2]);
-        /* the frame's attitude as the filter had it, not rebuilt from its
-         * ZYX angles: near pitch +-90 deg roll and yaw each carry the
-         * quaternion's rounding / cos(pitch), and so does the attitude
+        /* the frame's attitude as the filter had it is already in
+         * hold_q_nb (fill_frame keeps it there while aligned), not rebuilt
+         * from its ZYX angles: near pitch +-90 deg roll and yaw each carry
+         * the quaternion's rounding / cos(pitch), and so does the attitude
          * they give back (in float32 1.2 deg off at 0.001 deg from 90, 10
          * deg at 1e-4, any heading at 90: a review, 2026-11-29) */
-        nav->hold_q_nb = nav->last_q_nb;
         for (i = 0; i < 3; i++) {
             nav->hold_pos_var_m2[i] = g->p_diag[FNAV_UKF_P + i];
         }
@@ -361,7 +361,10 @@ static void fill_frame(fnav_nav_t *nav, const fnav_stance_out_t *o, uint32_t fla
         const fnav_ukf_t *u = &nav->ukf;
         fnav_vec3_t e = fnav_ukf_euler(u);
         fr->flags |= FNAV_FRAME_ALIGNED;
-        nav->last_q_nb = u->q_nb; /* this frame becomes nav->last (fnav_nav_pop) */
+        /* this frame becomes nav->last (fnav_nav_pop); its attitude for
+         * hold_last_frame, in the hold (unused while aligned: no extra RAM,
+         * the firmware image has 8 bytes to spare) */
+        nav->hold_q_nb = u->q_nb;
         for (i = 0; i < 3; i++) {
             fr->pos_m[i] = u->pos_m.v[i];
             fr->vel_mps[i] = u->vel_mps.v[i];

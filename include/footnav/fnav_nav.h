@@ -151,14 +151,15 @@ typedef struct {
     uint32_t health;        /**< FNAV_HEALTH_* bits */
     fnav_nav_stats_t stats;
     fnav_nav_frame_t last;  /**< newest frame */
-    fnav_quat_t last_q_nb;  /**< its attitude, when it is aligned (its Euler angles lose it near pitch +-90 deg) */
     int prev_stance;        /**< the previous frame was decided stance */
     int settle_pending;     /**< a stance began: start the settling state at its first ZUPT */
     fnav_real_t stance_s;   /**< time the current stance has lasted, s */
     int renewing;           /**< aligned, no stride yet: still periods renew the alignment */
     int have_hold;          /**< a reset holds the last good position and heading */
     fnav_vec3_t hold_pos_m; /**< position carried over a reset, n frame, m */
-    fnav_quat_t hold_q_nb;  /**< attitude carried over a reset: its heading is kept */
+    fnav_quat_t hold_q_nb;  /**< attitude of the newest aligned frame, carried over a reset or a
+                                 renewal (its heading is kept; the frame's Euler angles lose it
+                                 near pitch +-90 deg) */
     fnav_real_t hold_pos_var_m2[3]; /**< position variance carried over a reset, m^2 */
     fnav_real_t hold_yaw_var_rad2;  /**< heading variance carried over a reset (attitude error
                                          about n's z), rad^2; -1 after a renewal (none held) */
