@@ -241,6 +241,10 @@ static void start_filter(fnav_nav_t *nav)
         nav->have_hold = 0;
     }
     nav->undone_run = 0;
+    /* a landing seen before this start (a reset between a stance onset and
+     * its first ZUPT) was the old filter's: the new one starts in a still
+     * period (test_nav test_settle_pending_reset) */
+    nav->settle_pending = 0;
     nav->aligned = 1;
     /* the walker may stand on: keep measuring the still periods */
     nav->renewing = nav->cfg.realign_min_s > FNAV_R(0.0);

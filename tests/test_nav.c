@@ -444,6 +444,55 @@ static void test_settle_onsets(void **state)
     }
 }
 
+/* A reset between a stance onset and its first ZUPT (a caller's
+ * fnav_nav_reset after the onset's frame, whose duplicated stamp postponed
+ * the ZUPT, as in test_settle_onsets) drops the pending settling start: the
+ * landing belongs to the filter that was reset, and the re-aligned filter's
+ * first ZUPT is a still period's, not a landing's. Until 2026-11-29 (found
+ * by a review) the pending start survived the reset and the re-alignment,
+ * and the settling state started at the re-aligned filter's first ZUPT. */
+static void test_settle_pending_reset(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    long k, third = -1, realigned_frames = 0;
+    int pass, onsets, prev_stance, reset_done = 0;
+    (void)state;
+    c.stance.rate_hz = FNAV_R(200.0);
+    for (pass = 0; pass < 2; pass++) {
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+        onsets = 0;
+        prev_stance = 1;
+        for (k = 0; k < 1000 + 1400; k++) {
+            fnav_sample_t s = k < 1000 ? settle_walk(k) : still(k);
+            if (pass == 1 && k == third) {
+                s.t_ns = settle_walk(k - 1).t_ns; /* dt = 0: the onset's ZUPT waits */
+            }
+            assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+            while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+                int stance = (fr.flags & FNAV_FRAME_STANCE) != 0u;
+                if (pass == 0 && (fr.flags & FNAV_FRAME_ALIGNED) != 0u && stance && !prev_stance && ++onsets == 3) {
+                    third = (long)fr.seq;
+                }
+                if (pass == 1 && (long)fr.seq == third) {
+                    assert_true(nav.settle_pending);
+                    fnav_nav_reset(&nav);
+                    reset_done = 1;
+                }
+                if (pass == 1 && reset_done && (fr.flags & FNAV_FRAME_ALIGNED) != 0u) {
+                    realigned_frames++;
+                    assert_false(nav.ukf.settle_on);
+                }
+                prev_stance = stance;
+            }
+        }
+        assert_true(third > 800);
+    }
+    assert_int_equal(nav.stats.resets, 1u);
+    assert_true(realigned_frames > 100);
+}
+
 /* An alignment that ends while the foot still stands (7 s still against the
  * alignment's 5 s at most) starts no settling state: the first one starts
  * at the landing after the following swing. */
@@ -1197,6 +1246,7 @@ int main(void)
         cmocka_unit_test(test_stamp_range_ends),
         cmocka_unit_test(test_settle_onsets),
         cmocka_unit_test(test_settle_not_at_alignment),
+        cmocka_unit_test(test_settle_pending_reset),
         cmocka_unit_test(test_realign),
         cmocka_unit_test(test_realign_x_vertical),
         cmocka_unit_test(test_realign_near_lock),
