@@ -162,7 +162,8 @@ typedef struct {
                                  near pitch +-90 deg) */
     fnav_real_t hold_pos_var_m2[3]; /**< position variance carried over a reset, m^2 */
     fnav_real_t hold_yaw_var_rad2;  /**< heading variance carried over a reset (attitude error
-                                         about n's z), rad^2; -1 after a renewal (none held) */
+                                         about n's z), rad^2; -1 after a renewal with no reset
+                                         before it (none held) */
 } fnav_nav_t;
 
 /** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (profile or any module's
