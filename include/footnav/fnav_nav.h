@@ -157,10 +157,13 @@ typedef struct {
     int renewing;           /**< aligned, no stride yet: still periods renew the alignment */
     int have_hold;          /**< a reset holds the last good position and heading */
     fnav_vec3_t hold_pos_m; /**< position carried over a reset, n frame, m */
-    fnav_quat_t hold_q_nb;  /**< attitude carried over a reset: its heading is kept */
+    fnav_quat_t hold_q_nb;  /**< attitude of the newest aligned frame, carried over a reset or a
+                                 renewal (its heading is kept; the frame's Euler angles lose it
+                                 near pitch +-90 deg) */
     fnav_real_t hold_pos_var_m2[3]; /**< position variance carried over a reset, m^2 */
     fnav_real_t hold_yaw_var_rad2;  /**< heading variance carried over a reset (attitude error
-                                         about n's z), rad^2; -1 after a renewal (none held) */
+                                         about n's z), rad^2; -1 after a renewal with no reset
+                                         before it (none held) */
 } fnav_nav_t;
 
 /** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (profile or any module's
