@@ -498,7 +498,8 @@ int hx_cmd_live(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     if (fnav_nav_init(&nav, &ncfg) != FNAV_OK) {
-        hx_error(CMD, "navigation configuration rejected (check --param values)");
+        hx_nav_init_error(&ncfg, "", nopt.nparams > 0 ? " (check the --param values)" : "", err, sizeof err);
+        hx_error(CMD, "%s", err);
         return HX_EXIT_USAGE;
     }
     if (hx_arg(&a, "--plot") != NULL) {

@@ -238,10 +238,26 @@ int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, siz
         cfg->stance.rate_hz = (fnav_real_t)o->rate_hz;
     }
     if (fnav_nav_init(&probe, cfg) != FNAV_OK) {
-        snprintf(err, err_size, "navigation configuration rejected by the core (a --param value out of range)");
+        hx_nav_init_error(cfg, " (--rate)", o->nparams > 0 ? " (a --param value out of range)" : "", err, err_size);
         return -1;
     }
     return 0;
+}
+
+void hx_nav_init_error(const fnav_nav_config_t *cfg, const char *rate_src, const char *other, char *err, size_t err_size)
+{
+    double rate = (double)cfg->stance.rate_hz, gap = (double)cfg->max_gap_s;
+    if (rate > 0.0 && gap > 0.0 && !(gap * rate > 1.5)) {
+        /* fnav_nav_init's rule: a time jump (max_gap_s) must be longer than
+         * a gap of 1.5 intervals. Stamps of 10 s resolution gave a rate of
+         * 2.9 Hz here and "check --param values" with no --param given. */
+        snprintf(err, err_size,
+                 "a sample rate of %.3g Hz%s is too low to navigate: an interval over max_gap_s = %g s counts as a "
+                 "time jump, so the rate must be above %.3g Hz",
+                 rate, rate_src, gap, 1.5 / gap);
+    } else {
+        snprintf(err, err_size, "navigation configuration rejected by the core%s", other);
+    }
 }
 
 /* ------------------------------------------------------------ resampler */
@@ -696,7 +712,11 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             c.stance.rate_hz = (fnav_real_t)hx_reader_meta(r)->rate_hz;
         }
         if (fnav_nav_init(&nav, &c) != FNAV_OK) {
-            snprintf(err, err_size, "navigation configuration rejected (check --param values)");
+            hx_nav_init_error(&c,
+                              cfg->stance.rate_hz > FNAV_R(0.0)
+                                  ? ""
+                                  : " (estimated from the log's time stamps, too coarse to give the interval)",
+                              "", err, err_size);
             hx_reader_close(r);
             hx_log_free(&res);
             return -1;

@@ -46,6 +46,11 @@ typedef struct {
  *  error (printed). */
 int hx_nav_opts_from_args(const char *cmd, const hx_args_t *a, hx_nav_opts_t *o);
 
+/** Why fnav_nav_init refused cfg, in err: a rate too low for max_gap_s
+ *  (rate_src says where the rate came from, e.g. " (--rate)"), else the
+ *  core's refusal followed by `other`. */
+void hx_nav_init_error(const fnav_nav_config_t *cfg, const char *rate_src, const char *other, char *err, size_t err_size);
+
 /** Build a navigation configuration. 0 ok; -1 with err filled. */
 int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, size_t err_size);
 

@@ -638,6 +638,16 @@ else
     fail "path plot ranges: $(grep range "$T/gp.txt" | tr '\n' ' ')"
 fi
 
+# --- a rate too low to navigate says so, not "check --param values" with no
+# --param given (stamps of 10 s resolution; --rate 1)
+"$H" sim --motion stand:5,walk:10 --rate 100 --out "$T/lr.csv" >/dev/null 2>&1
+awk -F, 'NR == 1 { print; next } { $1 = sprintf("%.0f", int($1 / 10) * 10); print }' OFS=, "$T/lr.csv" >"$T/lr10.csv"
+expect_exit 1 "stamps of 10 s resolution" "$H" replay "$T/lr10.csv"
+expect_err "estimated from the log's time stamps.*is too low to navigate" "too coarse stamps: the rate and its source said"
+grep -q "check --param" "$T/err" && fail "no --param given, yet 'check --param'" || pass "no --param blamed"
+expect_exit 2 "--rate 1" "$H" replay vectors/walk.bin --rate 1
+expect_err "a sample rate of 1 Hz (--rate) is too low to navigate.*above 3 Hz" "--rate too low: said with the bound"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_replay.sh: $fails failure(s)"
     exit 1
