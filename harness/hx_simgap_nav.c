@@ -410,13 +410,20 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, i
             }                                                                                                          \
         }                                                                                                              \
     } while (0)
-    ADD(SG_NAV_NIS_FIRST, 0.0, t0, t1, lnpos(ns > 0 ? sf / ns : 0.0));
-    ADD(SG_NAV_NIS_ALL, 0.0, t0, t1, lnpos(nu > 0 ? sa / nu : 0.0));
+    /* a segment without a stance (a short walk's held-out part, a foot that
+     * never stands still) has no innovation to compare: its points are
+     * placeholders outside G, as an empty window's. They were the constant
+     * ln 1e-30 in the real and every twin, so the comparison read as twins
+     * that do not vary and the walk was refused as "a noise-free log?"
+     * instead of too short (a review) */
+    ADDE(SG_NAV_NIS_FIRST, 0.0, t0, t1, lnpos(ns > 0 ? sf / ns : 0.0), ns == 0);
+    ADDE(SG_NAV_NIS_ALL, 0.0, t0, t1, lnpos(nu > 0 ? sa / nu : 0.0), ns == 0);
     for (c = 0; c < 3; c++) {
-        ADD(SG_NAV_AXIS, (double)c, t0, t1, lnpos(ns > 0 ? ax[c] / ns : 0.0));
+        ADDE(SG_NAV_AXIS, (double)c, t0, t1, lnpos(ns > 0 ? ax[c] / ns : 0.0), ns == 0);
     }
-    ADD(SG_NAV_WHITE, 0.0, t0, t1, es > 0.0 ? en / es : 0.0);
-    ADD(SG_NAV_RESID, 0.0, t0, t1, 0.5 * lnpos(ns > 0 ? vr / ns : 0.0));
+    /* lag 1 needs two consecutive updates in a stance */
+    ADDE(SG_NAV_WHITE, 0.0, t0, t1, es > 0.0 ? en / es : 0.0, !(nu - (double)ns > 0.0));
+    ADDE(SG_NAV_RESID, 0.0, t0, t1, 0.5 * lnpos(ns > 0 ? vr / ns : 0.0), ns == 0);
     for (w = 0; w < nwin; w++) {
         double wa = t0 + (t1 - t0) * w / nwin, wb = t0 + (t1 - t0) * (w + 1) / nwin, s = 0.0;
         int m = 0;
@@ -440,8 +447,9 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, i
         ADD(SG_NAV_DRIFT_H, 0.0, t0, t1, 0.5 * lnpos(d[0] * d[0] + d[1] * d[1]));
         ADD(SG_NAV_DRIFT_V, 0.0, t0, t1, lnpos(fabs(d[2])));
     } else if (drift) {
-        ADD(SG_NAV_DRIFT_H, 0.0, t0, t1, lnpos(0.0));
-        ADD(SG_NAV_DRIFT_V, 0.0, t0, t1, lnpos(0.0));
+        /* the drift runs from the first stance to the last */
+        ADDE(SG_NAV_DRIFT_H, 0.0, t0, t1, lnpos(0.0), 1);
+        ADDE(SG_NAV_DRIFT_V, 0.0, t0, t1, lnpos(0.0), 1);
     }
 #undef ADD
 #undef ADDE
@@ -1457,6 +1465,20 @@ static void find_saturation(const walk_t *w, const int *constant, long a, long b
     }
 }
 
+/* Why a navigation comparison is undefined: twins without noise because the
+ * fit segment has no stance to measure it in are not "a noise-free log". */
+static const char *nav_cmp_why(const sg_nav_t *nv, const sg_cmp_t *cc)
+{
+    int c, quiet = !nv->from_profile;
+    for (c = 0; c < SG_NCH; c++) {
+        quiet &= nv->white[c] == 0.0;
+    }
+    if (cc->undefined == SG_CMP_FLAT && quiet && nv->nst[SG_FIT] == 0) {
+        return "the twins have no noise: it is measured in the fit segment's stances, and it has none";
+    }
+    return sg_cmp_why(cc);
+}
+
 int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_size)
 {
     sg_nav_t *nv = (sg_nav_t *)calloc(1, sizeof *nv);
@@ -1619,13 +1641,18 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                     break;
                 }
             }
-            if (g < SG_NSEG) {
+            if (g < SG_NSEG && (r->confident || nv->nst[SG_FIT] > 0 || nv->from_profile)) {
                 /* nothing to test the walk against (a noise-free log, or
                  * statistics out of range): an input the diagnosis cannot
-                 * answer, said as such */
+                 * answer, said as such. But a walk too short for lack of
+                 * stances is said to be too short: with no stance in the
+                 * fit segment the twins get no noise (it is measured in the
+                 * stances) and did not vary, and a foot that never stood
+                 * still was refused as "a noise-free log?" with no summary
+                 * or JSON (a review) */
                 int c2, g2;
                 snprintf(err, err_size, "the navigation gap of the walk cannot be tested: %s",
-                         sg_cmp_why(&cc[conv][g]));
+                         nav_cmp_why(nv, &cc[conv][g]));
                 for (c2 = 0; c2 <= conv; c2++) {
                     for (g2 = 0; g2 < SG_NSEG; g2++) {
                         free(tv[c2][g2]);
@@ -1658,7 +1685,8 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
         size_t j;
         for (j = 0; j < pl->n && nv->nloc < 32; j++) {
             const sg_cmp_t *cc = &nv->cmp[SG_FULL];
-            if (fabs(cc->z[j]) > cc->z_crit) {
+            /* an undefined comparison (a walk too short for one) locates nothing */
+            if (!cc->undefined && fabs(cc->z[j]) > cc->z_crit) {
                 sg_loc_t *L = &nv->loc[nv->nloc++];
                 L->dom = pl->p[j].dom;
                 L->ch = pl->p[j].ch;
@@ -2009,6 +2037,10 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
     }
     for (i = 0; i < SG_NSEG; i++) {
         static const char *const nm[SG_NSEG] = { "whole walk", "fit", "held out" };
+        if (nv->cmp[i].undefined) { /* it printed "crit nan" */
+            fprintf(f, "  %-10s not tested: %s\n", nm[i], nav_cmp_why(nv, &nv->cmp[i]));
+            continue;
+        }
         fprintf(f, "  %-10s G %.3g (null %.2g, crit %.2g, max |z| %.1f)%s\n", nm[i], nv->cmp[i].G, nv->cmp[i].null_mean,
                 nv->cmp[i].G_crit, nv->cmp[i].maxz, nv->cmp[i].significant ? " SIGNIFICANT" : "");
     }
@@ -2018,8 +2050,12 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
             continue;
         }
         if (p->empty) {
-            fprintf(f, "    %-17s %-8s t %.1f-%.1f s: no stance begins in it (a stand), not compared\n",
-                    kind_name(p->kind), "", p->x_lo, p->x_hi);
+            fprintf(f, "    %-17s %-8s t %.1f-%.1f s: %s, not compared\n", kind_name(p->kind),
+                    p->kind == SG_NAV_AXIS ? (p->x == 0.0 ? "x" : p->x == 1.0 ? "y" : "z") : "", p->x_lo, p->x_hi,
+                    p->kind == SG_NAV_WIN      ? "no stance begins in it (a stand)"
+                    : p->kind == SG_NAV_WHITE  ? "no stance with two consecutive updates"
+                    : (p->kind == SG_NAV_DRIFT_H || p->kind == SG_NAV_DRIFT_V) ? "fewer than two stances"
+                                               : "no stance");
             continue;
         }
         fprintf(f, "    %-17s %-8s real %-9.4g twin %-9.4g (sd %.3g) z %+.1f\n", kind_name(p->kind),

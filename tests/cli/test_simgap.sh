@@ -317,8 +317,24 @@ expect_exit 0 "a profile name with a quote, --plot" "$H" simgap "$T/m.csv" --qui
 # innovation plot says so instead of failing (exit 3; a review)
 "$H" sim --motion stand --duration 60 --profile mtx --out "$T/sp0.csv" >/dev/null 2>&1 || fail "sim for spin"
 awk -F, 'BEGIN { OFS = "," } NR == 1 { print; next } $1 < 30 { $7 = $7 + 3; print }' "$T/sp0.csv" > "$T/spin.csv"
-expect_exit 1 "a walk without a stance, --plot" "$H" simgap "$T/spin.csv" --walk --quiet --plot "$T/spinp"
+expect_exit 1 "a walk without a stance, --plot" "$H" simgap "$T/spin.csv" --walk --quiet --plot "$T/spinp" --json "$T/spin.json"
 [ -s "$T/spinp/innovations.png" ] && pass "innovation plot without a stance" || fail "no innovation plot: $(ls "$T/spinp" 2>&1)"
+# ... and said to be too short; its navigation points are not compared
+# (there is no innovation: they were ln 1e-30, located as nis_first 30 sigma
+# below the twin, ratio 1e-23; with fewer seeds, and without a stance in the
+# fit segment the twins get no noise, the walk was refused as "the twins do
+# not vary (... a noise-free log?)" with no summary or JSON; a review)
+expect_err "^harness simgap: error: .*spin.csv: too short for a confident answer: the held-out segment has 0 stances" "a walk without a stance: too short, said"
+json "$T/spin.json" 'j["verdict"]["answer"] == "too-short" and j["navigation"]["stances_full"] == 0 and all(l["domain"] != "nav" for l in j["locations"])' &&
+    pass "a walk without a stance: no navigation point located" || fail "no-stance JSON: $(cat "$T/pyerr")"
+# a walk of a few strides whose fit segment holds no stance (6 s; the
+# alignment takes the first seconds): its points were the constant ln 1e-30
+# in the real and every twin, and the walk was refused in the same way
+"$H" sim --motion walk --duration 6 --rate 200 --profile mtx --seed 2 --out "$T/w6.csv" >/dev/null 2>&1 || fail "sim 6 s walk"
+expect_exit 1 "a walk of a few strides" "$H" simgap "$T/w6.csv" --quiet --seeds 4 --json "$T/w6.json"
+expect_err "^harness simgap: error: .*w6.csv: too short for a confident answer" "a walk of a few strides: too short, said"
+json "$T/w6.json" '(n := j["navigation"])["stances_fit"] == 0 and n["gap"]["fit"]["G_crit"] is None and all(p["z"] is None for p in n["gap"]["fit"]["points"])' &&
+    pass "a walk of a few strides: the fit segment's points not compared" || fail "few strides JSON: $(cat "$T/pyerr")"
 
 # a channel that holds one value over the whole log (stuck): said as such, not
 # as a log "too short" for its Allan points; the other channels are diagnosed
