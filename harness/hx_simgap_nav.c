@@ -512,6 +512,7 @@ typedef struct {
 struct sg_nav {
     navrun_t real;
     long n;
+    double *t_s;                 /* time of every sample since the first, s */
     double rate_hz;
     int nst[SG_NSEG];
     double white[SG_NCH];        /* baseline white densities, u/sqrt(Hz) */
@@ -1495,6 +1496,17 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
     r->nav = nv;
     nv->n = r->n;
     nv->rate_hz = r->rate_hz;
+    nv->t_s = (double *)malloc(((size_t)r->n + 1) * sizeof *nv->t_s);
+    if (nv->t_s == NULL) {
+        snprintf(err, err_size, "out of memory");
+        return -1;
+    }
+    {
+        long k;
+        for (k = 0; k < (long)r->n; k++) {
+            nv->t_s[k] = (double)(log->t_ns[k] - log->t_ns[0]) * 1e-9;
+        }
+    }
     nv->closed = r->opts.closed;
     memset(&no, 0, sizeof no);
     /* the filter of the configuration this domain was validated with
@@ -1971,6 +1983,7 @@ void sg_nav_free(sg_nav_t *nv)
     free(nv->if_);
     free(nv->iw);
     free(nv->tp);
+    free(nv->t_s);
     for (g = 0; g < SG_NSEG; g++) {
         sg_plist_free(&nv->pl[g]);
         free(nv->real_v[g]);
@@ -2344,12 +2357,13 @@ int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const
     }
     /* one stance, or all at one time: a range around them (gnuplot warned
      * of an empty x range) */
-    fprintf(p.gp, "set xrange [%.4f:%.4f]\n", (double)st[0].first / nv->rate_hz - 0.5,
-            (double)st[ns - 1].first / nv->rate_hz + 0.5);
+    fprintf(p.gp, "set xrange [%.4f:%.4f]\n", nv->t_s[st[0].first] - 0.5, nv->t_s[st[ns - 1].first] + 0.5);
     fprintf(p.gp, "$d << EOD\n");
     for (i = 0; i < ns; i++) {
-        /* stance start time from the run's own sample index (uniform rate) */
-        fprintf(p.gp, "%.4f %.6g %.6g\n", (double)st[i].first / nv->rate_hz, st[i].nis_first,
+        /* the stance's start time (it was the sample index over the mean
+         * rate: after a 5 s gap every later stance was drawn 5 s early,
+         * apart from the summary's windows; a review) */
+        fprintf(p.gp, "%.4f %.6g %.6g\n", nv->t_s[st[i].first], st[i].nis_first,
                 st[i].nupd > 0 ? st[i].nis_sum / st[i].nupd : 0.0);
     }
     fprintf(p.gp, "EOD\n");
