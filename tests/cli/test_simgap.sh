@@ -302,6 +302,9 @@ fi
 expect_exit 1 "short walk" "$H" simgap "$T/w2.csv" --quiet --seeds 4 --json "$T/w2.json"
 json "$T/w2.json" 'j["verdict"]["answer"] == "too-short" and "stances" in j["too_short"]' &&
     pass "short walk: too few stances said" || fail "short walk JSON: $(cat "$T/pyerr")"
+# the mean first-update NIS of 10 stances (chi2_30 / 30) is known to 0.560 -
+# 1.566 at 95 % (scipy chi2.ppf), not to +-50 % as it said (a review)
+expect_err "of fewer than 10 is not known to -44 % / +57 % (95 %)" "short walk: the interval of 10 stances"
 
 # the domain forced against the detection is said in the summary (the JSON
 # has domain_detected; a walk analysed as a static log is a user's choice)
