@@ -2076,11 +2076,14 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
                                                : "no stance");
             continue;
         }
-        fprintf(f, "    %-17s %-8s real %-9.4g twin %-9.4g (sd %.3g) z %+.1f\n", kind_name(p->kind),
+        /* the sd is z's denominator, of the log of the statistic but for
+         * whiteness: printed next to the statistic itself as "sd 0.08" it
+         * read as 0.64 +- 0.08 NIS for a spread of 8 % (a review) */
+        fprintf(f, "    %-17s %-8s real %-9.4g twin %-9.4g (%s %.3g) z %+.1f\n", kind_name(p->kind),
                 p->kind == SG_NAV_WIN ? "" : (p->kind == SG_NAV_AXIS ? (p->x == 0.0 ? "x" : p->x == 1.0 ? "y" : "z") : ""),
                 p->kind == SG_NAV_WHITE ? nv->real_v[SG_FULL][k] : exp(nv->real_v[SG_FULL][k]),
                 p->kind == SG_NAV_WHITE ? nv->cmp[SG_FULL].twin_mean[k] : exp(nv->cmp[SG_FULL].twin_mean[k]),
-                nv->cmp[SG_FULL].sd_tot[k], nv->cmp[SG_FULL].z[k]);
+                p->kind == SG_NAV_WHITE ? "sd" : "sd of ln", nv->cmp[SG_FULL].sd_tot[k], nv->cmp[SG_FULL].z[k]);
     }
     for (k = 0; k < nv->nloc; k++) {
         const sg_loc_t *L = &nv->loc[k];

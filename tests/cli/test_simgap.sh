@@ -452,6 +452,11 @@ json "$T/ws.json" 'len(j["locations"]) == sum(1 for l in open(sys.argv[1].replac
     pass "walk: locations in the JSON as in the summary" || fail "walk locations: $(cat "$T/pyerr")"
 json "$T/ws.json" 'all(isinstance(c["indistinguishable"], list) and all("trajectory_value" in p for p in c["params"]) for st in j["navigation"]["steps"] for c in st["candidates"])' &&
     pass "walk: candidates' documented keys present" || fail "walk candidate keys: $(cat "$T/pyerr")"
+# the summary's spread of a navigation point is that of its log (z's
+# denominator), said as such: "twin 0.6416 (sd 0.0815)" read as +-0.08 NIS
+# for a spread of 8 % (a review); whiteness is no log
+grep -q "^    nis_first .*(sd of ln [0-9.e+-]*) z" "$T/ws.out" && grep -q "^    whiteness .*(sd [0-9.e+-]*) z" "$T/ws.out" &&
+    pass "walk summary: the spread of the log said as such" || fail "walk summary sd: $(grep -E 'nis_first|whiteness' "$T/ws.out")"
 
 # --closed on a closed loop (the truth ends where it started) with a 2 % az
 # scale error: the real filter pulls its position back at every stance, and
