@@ -1391,6 +1391,12 @@ done:
 
 /* ------------------------------------------------------------ diagnosis */
 
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
 /* Baseline white noise from the stances of the fit segment: the robust
  * spread of first differences between consecutive stance samples. */
 static void stance_noise(const walk_t *w, const navrun_t *r, long a, long b, double fs, double white[SG_NCH])
@@ -1413,21 +1419,10 @@ static void stance_noise(const walk_t *w, const navrun_t *r, long a, long b, dou
             }
         }
         if (m > 10) {
-            long i, j;
-            /* median by selection (partial insertion is enough for a rank) */
-            for (i = 0; i <= m / 2; i++) {
-                long mn = i;
-                for (j = i + 1; j < m; j++) {
-                    if (d[j] < d[mn]) {
-                        mn = j;
-                    }
-                }
-                if (mn != i) {
-                    double t = d[i];
-                    d[i] = d[mn];
-                    d[mn] = t;
-                }
-            }
+            /* the median by sorting: the selection sort it was is quadratic,
+             * and a walk with a 10-minute stand spent most of its time here
+             * (a review) */
+            qsort(d, (size_t)m, sizeof *d, cmp_double);
             /* MAD of a difference of two white samples: 0.6745 sqrt(2) sigma */
             white[c] = d[m / 2] / (0.6745 * sqrt(2.0)) / sqrt(fs);
         }
