@@ -298,6 +298,21 @@ if [ -n "$D" ] && [ -f "$D/xio_ngimu_gait/long_walk.csv" ]; then
 else
     echo "SKIP NGIMU lattice test (shared data not found; set FNAV_DATA_DIR)"
 fi
+# stances are counted as the data set marks them: the stance detector
+# flickers at some landings, and the pieces of one stance (0.03 s apart,
+# swings 0.8-0.9 s) counted as two. The vicon walk 11-22-03's stride file
+# (the source's own stance marks) has 23 stances, 9 from the held-out
+# segment's start (t >= 19.48 s): too short; the pieces made 25 and 10 and a
+# confident answer (a review)
+V="$D/pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-22-03"
+if [ -n "$D" ] && [ -f "${V}_imu.csv" ]; then
+    cp "${V}_strides_gcp.csv" "$T/vs.csv"
+    expect_exit 1 "vicon walk with a split stance" "$H" simgap "${V}_imu.csv" --quiet --seeds 3 --json "$T/vc.json"
+    json "$T/vc.json" '(n := j["navigation"])["stances_full"] == sum(1 for l in open(sys.argv[1].replace("vc.json", "vs.csv"))) - 1 == 23 and n["stances_held_out"] == 9 and j["verdict"]["answer"] == "too-short"' &&
+        pass "stances counted as the data set's stride marks" || fail "vicon stances: $(cat "$T/pyerr")"
+else
+    echo "SKIP vicon stance count test (shared data not found; set FNAV_DATA_DIR)"
+fi
 "$H" sim --motion walk --duration 12 --rate 100 --profile mtx --seed 5 --out "$T/w2.csv" >/dev/null 2>&1 || fail "sim short walk"
 expect_exit 1 "short walk" "$H" simgap "$T/w2.csv" --quiet --seeds 4 --json "$T/w2.json"
 json "$T/w2.json" 'j["verdict"]["answer"] == "too-short" and "stances" in j["too_short"]' &&
