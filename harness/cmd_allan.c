@@ -1484,6 +1484,9 @@ int hx_cmd_allan(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    if (hx_check_input_opts(CMD, &a) != 0) {
+        return HX_EXIT_USAGE;
+    }
     series = hx_arg(&a, "--series");
     if (hx_flag(&a, "--paper-tables")) {
         if (series != NULL || a.npos > 0) {

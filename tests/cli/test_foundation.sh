@@ -20,6 +20,13 @@ expect_exit 0 "convert --help" "$H" convert --help
 expect_exit 2 "bad --input-rate" "$H" info vectors/walk.bin --input-rate -3
 expect_exit 2 "unknown --from" "$H" info vectors/walk.bin --from nope
 expect_err "unknown input format 'nope'" "--from error names the format"
+# the same for every command that reads a log (docs/harness.md, "Conventions":
+# a bad command line is exit 2; allan and psd read the log first and exited 1)
+for c in info replay allan psd simgap; do
+    expect_exit 2 "$c: unknown --from" "$H" $c vectors/walk.bin --from nope
+    expect_exit 2 "$c: bad --input-rate" "$H" $c vectors/walk.bin --input-rate abc
+done
+expect_exit 2 "convert: unknown --from" "$H" convert vectors/walk.bin "$T/c.csv" --from nope
 # a log of mostly duplicated stamps: the median interval is that of the
 # intervals that advance (it read 0 ms, and every real interval was a gap)
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.02,0,0,9.8,0,0,0\n' > "$T/dups.csv"
