@@ -182,6 +182,16 @@ expect_exit 1 "empty file" "$H" info "$T/empty.csv"
 expect_err "empty.csv: empty file" "empty file said"
 expect_exit 3 "unwritable output" "$H" convert vectors/walk.bin /nonexistent-dir/x.bin
 expect_err "cannot create" "unwritable output said"
+# a write that fails midway (a full disk, a closed pipe) is one error line
+# with its reason: convert printed "write failed" and then, on closing,
+# "write failed (No space left on device)" for the same failure
+if [ -w /dev/full ]; then
+    for o in "" "--rate 100"; do
+        expect_exit 3 "convert $o to a full disk" "$H" convert vectors/walk.bin /dev/full --to bin $o
+        if [ "$(grep -c 'error:' "$T/err")" -eq 1 ] && grep -q "write failed (No space left on device)" "$T/err"; then
+            pass "convert $o: one error line with the reason"; else fail "convert $o: the write error said twice or without its reason"; cat "$T/err"; fi
+    done
+fi
 
 # convert --rate: the replay's resampler, written; replaying it gives the
 # trajectory of replay --rate; a bad rate is a usage error
