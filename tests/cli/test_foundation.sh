@@ -230,6 +230,17 @@ for args in "info $T/victim.csv --json $T/victim.csv" "allan $T/victim.csv --out
 done
 if cmp -s "$T/victim.csv" "$T/victim0.csv" && cmp -s "$T/series.txt" "$T/series0.txt"; then
     pass "the inputs are intact"; else fail "an input was overwritten"; fi
+# two outputs on one file: the later replaced the earlier, exit 0
+# (`replay LOG --out r.txt --json r.txt` left the JSON alone); /dev/null
+# twice still discards both
+for args in "replay vectors/walk.bin --quiet --out $T/two.txt --json $T/two.txt" \
+    "allan --series $T/series.txt --rate 1 --out $T/two.txt --json $T/two.txt" "psd vectors/walk.bin --out $T/two.txt --json $T/two.txt" \
+    "montecarlo --duration 5 --seeds 1 --quiet --json $T/two.txt --csv $T/two.txt"; do
+    # shellcheck disable=SC2086
+    expect_exit 2 "two outputs on one file: ${args%% *}" "$H" $args
+    expect_err "name the same file" "two outputs on one file refused: ${args%% *}"
+done
+expect_exit 0 "replay --out /dev/null --json /dev/null" "$H" replay vectors/walk.bin --quiet --out /dev/null --json /dev/null
 
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]
