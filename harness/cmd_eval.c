@@ -1456,6 +1456,12 @@ int hx_cmd_eval(int argc, char **argv)
         hx_error("eval", "--rate is not used by eval (it runs the rate experiment itself)");
         return HX_EXIT_USAGE;
     }
+    {
+        static const char *const outs[] = { "--out", "--json", NULL };
+        if (hx_output_is_input("eval", NULL, &a, outs)) {
+            return HX_EXIT_USAGE;
+        }
+    }
     memset(&ev, 0, sizeof ev);
     if (hx_nav_config(&o, &ev.cfg, err, sizeof err) != 0) {
         hx_error("eval", "%s", err);

@@ -235,7 +235,8 @@ if cmp -s "$T/victim.csv" "$T/victim0.csv" && cmp -s "$T/series.txt" "$T/series0
 # twice still discards both
 for args in "replay vectors/walk.bin --quiet --out $T/two.txt --json $T/two.txt" \
     "allan --series $T/series.txt --rate 1 --out $T/two.txt --json $T/two.txt" "psd vectors/walk.bin --out $T/two.txt --json $T/two.txt" \
-    "montecarlo --duration 5 --seeds 1 --quiet --json $T/two.txt --csv $T/two.txt"; do
+    "montecarlo --duration 5 --seeds 1 --quiet --json $T/two.txt --csv $T/two.txt" \
+    "eval --no-experiments --out $T/two.txt --json $T/two.txt" "live /dev/null --record $T/two.txt --out $T/two.txt"; do
     # shellcheck disable=SC2086
     expect_exit 2 "two outputs on one file: ${args%% *}" "$H" $args
     expect_err "name the same file" "two outputs on one file refused: ${args%% *}"
