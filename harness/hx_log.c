@@ -1389,11 +1389,21 @@ double hx_rate_changes(const int64_t *t_ns, size_t n, size_t stride, double rate
     if (!(dur > 0.0)) {
         return 0.0;
     }
+    /* the stamps' resolution: the gcd of the whole log's intervals. A
+     * block's own gcd is no resolution when its stamps are exact (from a
+     * sample counter): 200 intervals of 20 ms have a gcd of 20 ms, so a log
+     * whose exact stamps went from 10 to 20 ms was never "off by a
+     * resolution" and its rate change went unreported */
+    for (i = 1; i < n; i++) {
+        const int64_t dt = STAMP(i) - STAMP(i - 1);
+        if (dt > 0) {
+            q = hx_gcd_i64(dt, q);
+        }
+    }
     for (i = 1; i <= n; i++) {
         if (i < n) {
             const int64_t dt = STAMP(i) - STAMP(i - 1);
             if (dt > 0) {
-                q = hx_gcd_i64(dt, q); /* the stamps' resolution */
                 d[m++] = dt;
             }
         }
@@ -1414,7 +1424,6 @@ double hx_rate_changes(const int64_t *t_ns, size_t n, size_t stride, double rate
                 off_s += 1e-9 * (double)(STAMP(b1) - STAMP(b0));
             }
             m = 0;
-            q = 0;
             b0 = i < n ? i : b0;
         }
     }

@@ -43,6 +43,14 @@ expect_out "gaps        0 " "1 and 2 ms stamps of an 820 Hz log are no gaps"
 awk 'NR < 2002 || NR > 2004' "$T/ms820.csv" > "$T/ms820drop.csv"
 expect_exit 0 "info on it with three samples dropped" "$H" info "$T/ms820drop.csv"
 expect_out "gaps        1 (> 1.5 intervals; longest 5.0 ms)" "the dropped samples are the one gap"
+# exact stamps (a sample counter's) that go from 10 to 20 ms: a rate change
+# (JSON rate_change, docs/harness.md); a block of 200 intervals of exactly
+# 20 ms was taken for stamps of 20 ms resolution, never off by one, and the
+# change went unreported (rate_change null, 999 "gaps")
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; t = 0; for (k = 0; k < 3000; k++) { printf "%.6f,0.01,0,9.8,0,0.001,0\n", t; t += (k < 2000 ? 0.01 : 0.02) } }' > "$T/halved.csv"
+expect_exit 0 "info on a log whose rate halves" "$H" info "$T/halved.csv" --json "$T/halved.json"
+json "$T/halved.json" 'j["rate_change"] is not None and abs(j["rate_change"]["at_s"] - 20) < 0.01 and abs(j["rate_change"]["rate_hz"] - 50) < 0.01' &&
+    pass "the halved rate is reported at 20 s" || fail "halved rate: rate_change $(grep -A3 rate_change "$T/halved.json" | tr -d '\n\t')"
 
 # --- the bundled example
 expect_exit 0 "info walk.bin" "$H" info vectors/walk.bin --json "$T/info.json"
