@@ -109,10 +109,13 @@ awk -F, 'NR == 1 { print "Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Gyros
 head -c $(($(wc -c <"$T/ngimu.csv") - 30)) "$T/ngimu.csv" >"$T/cut.csv"
 # allan gets the still first 12.5 s (a walk is no static log for it: exit 1 since 2026-11-28)
 mkdir -p "$T/still" && head -n 5000 "$T/ngimu.csv" | head -c -30 >"$T/still/cut.csv"
-for c in info convert allan psd replay; do
+# replay --rate too (it loads the whole log to resample it, and dropped the
+# reader's warnings)
+for c in info convert allan psd replay replay-rate; do
     case $c in
     convert) expect_exit 0 "$c of a CSV cut mid-line" "$H" convert "$T/cut.csv" "$T/cut.bin" ;;
     allan) expect_exit 0 "$c of a CSV cut mid-line" "$H" allan "$T/still/cut.csv" ;;
+    replay-rate) expect_exit 0 "$c of a CSV cut mid-line" "$H" replay "$T/cut.csv" --rate 100 ;;
     *) expect_exit 0 "$c of a CSV cut mid-line" "$H" "$c" "$T/cut.csv" ;;
     esac
     expect_err "cut.csv:[0-9]*: last line is incomplete (recording cut off mid-write); ignored" "$c warns of the cut-off last line"
