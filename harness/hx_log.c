@@ -1363,8 +1363,13 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         free(r);
         return NULL;
     }
-    if (fmt == HX_FMT_BIN && rate_hz > 0.0) {
-        r->meta.rate_hz = rate_hz;
+    if (rate_hz > 0.0 && (fmt == HX_FMT_BIN || r->time_mode == TIME_COLUMN_S || r->time_mode == TIME_GX2)) {
+        /* --input-rate gives the rate of an input without time stamps
+         * (docs/harness.md). It used to replace a .bin's header rate, which
+         * every analysis then used against the stamps (`psd walk.bin
+         * --input-rate 100` analysed the 398 Hz walk as 100 Hz), while a
+         * time-stamped text log ignored it without a word */
+        add_warn(r, "%s: --input-rate ignored: the %s format has time stamps", path, hx_format_name(fmt));
     }
     return r;
 }

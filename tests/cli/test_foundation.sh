@@ -27,6 +27,15 @@ for c in info replay allan psd simgap; do
     expect_exit 2 "$c: bad --input-rate" "$H" $c vectors/walk.bin --input-rate abc
 done
 expect_exit 2 "convert: unknown --from" "$H" convert vectors/walk.bin "$T/c.csv" --from nope
+# --input-rate gives the rate of a log without time stamps: on a .bin it
+# replaced the header's rate, and psd analysed the 398 Hz walk as 100 Hz
+# (150 Hz answered 50 Hz); now it is ignored with a warning, as on a
+# time-stamped text log, where it was ignored without one
+"$H" psd vectors/walk.bin --json "$T/psd0.json" >/dev/null 2>&1
+expect_exit 0 "psd of a .bin with --input-rate" "$H" psd vectors/walk.bin --input-rate 100 --json "$T/psd1.json"
+expect_err "input-rate ignored: the bin format has time stamps" "--input-rate on a .bin is said to be ignored"
+json "$T/psd1.json" "j['rate_hz'] == json.load(open('$T/psd0.json'))['rate_hz'] and j['result']['fs_hz'] == json.load(open('$T/psd0.json'))['result']['fs_hz']" &&
+    pass "--input-rate leaves a .bin's rate and answer alone" || fail "--input-rate changed a .bin's rate: $(grep -m1 rate_hz "$T/psd1.json")"
 # a log of mostly duplicated stamps: the median interval is that of the
 # intervals that advance (it read 0 ms, and every real interval was a gap)
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.02,0,0,9.8,0,0,0\n' > "$T/dups.csv"
