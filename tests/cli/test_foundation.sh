@@ -27,6 +27,9 @@ for c in info replay allan psd simgap; do
     expect_exit 2 "$c: bad --input-rate" "$H" $c vectors/walk.bin --input-rate abc
 done
 expect_exit 2 "convert: unknown --from" "$H" convert vectors/walk.bin "$T/c.csv" --from nope
+# a command-line error is said before eval looks for its data (it exited 4,
+# "no shared data", and the usage error came only once the data were there)
+expect_exit 2 "eval --plots with --no-plots, without data" "$H" eval --data "$T/nodata" --plots "$T/x" --no-plots
 # --input-rate gives the rate of a log without time stamps: on a .bin it
 # replaced the header's rate, and psd analysed the 398 Hz walk as 100 Hz
 # (150 Hz answered 50 Hz); now it is ignored with a warning, as on a
