@@ -78,6 +78,14 @@ int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
                     hx_error(spec->name, "option %s needs a value (%s)", spec->opts[k].name, spec->opts[k].metavar);
                     return -1;
                 }
+                if (*v == '\0') {
+                    /* `--json ""` or `--json=`: an empty file name reached
+                     * fopen, "cannot write  (No such file or directory)",
+                     * exit 3 */
+                    hx_error(spec->name, "option %s needs a value (%s), not an empty one", spec->opts[k].name,
+                             spec->opts[k].metavar);
+                    return -1;
+                }
             } else if (eq != NULL) {
                 hx_error(spec->name, "option %s takes no value", spec->opts[k].name);
                 return -1;

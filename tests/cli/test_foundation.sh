@@ -15,6 +15,11 @@ expect_exit 2 "unknown command" "$H" frobnicate
 expect_err "unknown command 'frobnicate'" "unknown command is named"
 expect_exit 2 "info without LOG" "$H" info
 expect_exit 2 "unknown option" "$H" info vectors/walk.bin --bogus
+# an empty option value is a usage error (--json "" reached fopen: "cannot
+# write  (No such file or directory)", exit 3)
+expect_exit 2 "empty --json" "$H" info vectors/walk.bin --json ""
+expect_err "option --json needs a value (FILE), not an empty one" "empty value named"
+expect_exit 2 "empty --out=" "$H" replay vectors/walk.bin --quiet --out=
 expect_exit 0 "info --help" "$H" info --help
 expect_exit 0 "convert --help" "$H" convert --help
 expect_exit 2 "bad --input-rate" "$H" info vectors/walk.bin --input-rate -3
