@@ -1566,11 +1566,25 @@ int hx_cmd_allan(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    if (hx_check_input_opts(CMD, &a) != 0) {
+        return HX_EXIT_USAGE;
+    }
     series = hx_arg(&a, "--series");
     if (hx_flag(&a, "--paper-tables")) {
+        int k;
         if (series != NULL || a.npos > 0) {
             hx_error(CMD, "--paper-tables takes no input");
             return HX_EXIT_USAGE;
+        }
+        /* it prints one table to standard output and reads no option: an
+         * option given with it (--json FILE, --out FILE) was ignored, exit 0
+         * with no file written */
+        for (k = 0; k_opts[k].name != NULL; k++) {
+            if (a.count[k] > 0 && strcmp(k_opts[k].name, "--paper-tables") != 0) {
+                hx_error(CMD, "--paper-tables prints its table to standard output and takes no other option (%s)",
+                         k_opts[k].name);
+                return HX_EXIT_USAGE;
+            }
         }
         return paper_tables();
     }

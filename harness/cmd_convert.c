@@ -61,8 +61,7 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate)
     for (k = 0; k < (long)res.n; k++) {
         hx_log_sample(&res, (size_t)k, &s);
         if (hx_writer_write(w, &s) != FNAV_OK) {
-            hx_error("convert", "%s: write failed", a->pos[1]);
-            exit_code = HX_EXIT_IO;
+            exit_code = HX_EXIT_IO; /* hx_writer_close below names the error, with its reason */
             break;
         }
     }
@@ -131,8 +130,7 @@ int hx_cmd_convert(int argc, char **argv)
     }
     while ((st = hx_reader_next(r, &s)) == FNAV_OK) {
         if (hx_writer_write(w, &s) != FNAV_OK) {
-            hx_error("convert", "%s: write failed", a.pos[1]);
-            exit_code = HX_EXIT_IO;
+            exit_code = HX_EXIT_IO; /* hx_writer_close below names the error, with its reason */
             break;
         }
     }

@@ -1566,6 +1566,18 @@ int hx_cmd_eval(int argc, char **argv)
         hx_error("eval", "--rate is not used by eval (it runs the rate experiment itself)");
         return HX_EXIT_USAGE;
     }
+    {
+        static const char *const outs[] = { "--out", "--json", NULL };
+        if (hx_output_is_input("eval", NULL, &a, outs)) {
+            return HX_EXIT_USAGE;
+        }
+    }
+    if (hx_arg(&a, "--plots") != NULL && hx_flag(&a, "--no-plots")) {
+        /* a command-line error, said before the data are looked for (exit
+         * 2, not 4 without them) */
+        hx_error("eval", "--plots and --no-plots together");
+        return HX_EXIT_USAGE;
+    }
     memset(&ev, 0, sizeof ev);
     if (hx_nav_config(&o, &ev.cfg, err, sizeof err) != 0) {
         hx_error("eval", "%s", err);
@@ -1621,10 +1633,6 @@ int hx_cmd_eval(int argc, char **argv)
         /* the figures: --plots DIR, else img/ beside the Markdown file */
         const char *pd = hx_arg(&a, "--plots");
         char md_dir[500];
-        if (pd != NULL && hx_flag(&a, "--no-plots")) {
-            hx_error("eval", "--plots and --no-plots together");
-            return HX_EXIT_USAGE;
-        }
         dir_of(strcmp(out_path, "-") == 0 ? "./-" : out_path, md_dir, sizeof md_dir);
         if (pd != NULL) {
             snprintf(ev.plot_dir, sizeof ev.plot_dir, "%s", pd);

@@ -502,6 +502,12 @@ int hx_cmd_live(int argc, char **argv)
         hx_error(CMD, "%s", err);
         return HX_EXIT_USAGE;
     }
+    {
+        static const char *const outs[] = { "--record", "--out", "--json", "--plot", NULL };
+        if (hx_output_is_input(CMD, NULL, &a, outs)) {
+            return HX_EXIT_USAGE;
+        }
+    }
     if (hx_arg(&a, "--plot") != NULL) {
         plot_png = hx_arg(&a, "--plot");
         if (plot_every <= 0.0) {

@@ -537,6 +537,12 @@ int hx_cmd_montecarlo(int argc, char **argv)
             hx_error("montecarlo", "--bias-model is ar1, off or both, not '%s'", bm);
             return HX_EXIT_USAGE;
         }
+        {
+            static const char *const outs[] = { "--json", "--csv", "--plot", NULL };
+            if (hx_output_is_input("montecarlo", NULL, &a, outs)) {
+                return HX_EXIT_USAGE;
+            }
+        }
         /* the outputs are written after every run: find out now that they can be */
         if ((json != NULL && strcmp(json, "-") != 0 && hx_check_writable("montecarlo", json) != 0) ||
             (csv != NULL && strcmp(csv, "-") != 0 && hx_check_writable("montecarlo", csv) != 0) ||

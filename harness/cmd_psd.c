@@ -474,6 +474,9 @@ int hx_cmd_psd(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    if (hx_check_input_opts(CMD, &a) != 0) {
+        return HX_EXIT_USAGE;
+    }
     st.wc = fnav_welch_config_default;
     st.exclude_dc = 0;
     if (hx_arg_long(&a, "--nfft", 8, FNAV_WELCH_MAX_NFFT, &nfft) != 0 || (nfft & (nfft - 1)) != 0) {

@@ -78,6 +78,14 @@ int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
                     hx_error(spec->name, "option %s needs a value (%s)", spec->opts[k].name, spec->opts[k].metavar);
                     return -1;
                 }
+                if (*v == '\0') {
+                    /* `--json ""` or `--json=`: an empty file name reached
+                     * fopen, "cannot write  (No such file or directory)",
+                     * exit 3 */
+                    hx_error(spec->name, "option %s needs a value (%s), not an empty one", spec->opts[k].name,
+                             spec->opts[k].metavar);
+                    return -1;
+                }
             } else if (eq != NULL) {
                 hx_error(spec->name, "option %s takes no value", spec->opts[k].name);
                 return -1;
@@ -348,12 +356,30 @@ int hx_same_file(const char *a, const char *b)
 
 int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, const char *const *outputs)
 {
-    int i;
+    int i, j;
     for (i = 0; outputs[i] != NULL; i++) {
         const char *out = hx_arg(a, outputs[i]);
         if (hx_same_file(input, out)) {
             hx_error(cmd, "%s: %s %s is the input itself (it would be overwritten)", input, outputs[i], out);
             return 1;
+        }
+    }
+    /* two outputs on one file: the later one replaced the earlier without
+     * a word (`replay LOG --out r.txt --json r.txt` left only the JSON,
+     * exit 0) */
+    for (i = 0; outputs[i] != NULL; i++) {
+        const char *oi = hx_arg(a, outputs[i]);
+        for (j = i + 1; oi != NULL && outputs[j] != NULL; j++) {
+            const char *oj = hx_arg(a, outputs[j]);
+            struct stat st;
+            if (stat(oi, &st) == 0 && !S_ISREG(st.st_mode)) {
+                break; /* /dev/null twice discards both; a directory fails on its own */
+            }
+            if (oj != NULL && (strcmp(oi, oj) == 0 || hx_same_file(oi, oj))) {
+                hx_error(cmd, "%s %s and %s %s name the same file (one would overwrite the other)", outputs[i], oi,
+                         outputs[j], oj);
+                return 1;
+            }
         }
     }
     return 0;

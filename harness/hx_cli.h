@@ -150,8 +150,9 @@ int hx_plot_close(hx_plot_t *p, const char *cmd);
 int hx_same_file(const char *a, const char *b);
 /** 1, after an error naming it, when one of the output options `outputs`
  *  (NULL-terminated, e.g. "--json") given in `a` names the input file
- *  itself (it would be overwritten, after the input was read); else 0. The
- *  caller exits HX_EXIT_USAGE before opening anything. */
+ *  itself (it would be overwritten, after the input was read; `input` may
+ *  be NULL), or two of them name one file; else 0. The caller exits
+ *  HX_EXIT_USAGE before opening anything. */
 int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, const char *const *outputs);
 /** 0 when `path` can be opened for writing (an existing file is left as
  *  it is, none is left behind); -1 with the error printed. For outputs

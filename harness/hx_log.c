@@ -1363,8 +1363,13 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         free(r);
         return NULL;
     }
-    if (fmt == HX_FMT_BIN && rate_hz > 0.0) {
-        r->meta.rate_hz = rate_hz;
+    if (rate_hz > 0.0 && (fmt == HX_FMT_BIN || r->time_mode == TIME_COLUMN_S || r->time_mode == TIME_GX2)) {
+        /* --input-rate gives the rate of an input without time stamps
+         * (docs/harness.md). It used to replace a .bin's header rate, which
+         * every analysis then used against the stamps (`psd walk.bin
+         * --input-rate 100` analysed the 398 Hz walk as 100 Hz), while a
+         * time-stamped text log ignored it without a word */
+        add_warn(r, "%s: --input-rate ignored: the %s format has time stamps", path, hx_format_name(fmt));
     }
     return r;
 }
@@ -1389,11 +1394,21 @@ double hx_rate_changes(const int64_t *t_ns, size_t n, size_t stride, double rate
     if (!(dur > 0.0)) {
         return 0.0;
     }
+    /* the stamps' resolution: the gcd of the whole log's intervals. A
+     * block's own gcd is no resolution when its stamps are exact (from a
+     * sample counter): 200 intervals of 20 ms have a gcd of 20 ms, so a log
+     * whose exact stamps went from 10 to 20 ms was never "off by a
+     * resolution" and its rate change went unreported */
+    for (i = 1; i < n; i++) {
+        const int64_t dt = STAMP(i) - STAMP(i - 1);
+        if (dt > 0) {
+            q = hx_gcd_i64(dt, q);
+        }
+    }
     for (i = 1; i <= n; i++) {
         if (i < n) {
             const int64_t dt = STAMP(i) - STAMP(i - 1);
             if (dt > 0) {
-                q = hx_gcd_i64(dt, q); /* the stamps' resolution */
                 d[m++] = dt;
             }
         }
@@ -1414,7 +1429,6 @@ double hx_rate_changes(const int64_t *t_ns, size_t n, size_t stride, double rate
                 off_s += 1e-9 * (double)(STAMP(b1) - STAMP(b0));
             }
             m = 0;
-            q = 0;
             b0 = i < n ? i : b0;
         }
     }

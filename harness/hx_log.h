@@ -162,8 +162,8 @@ int64_t hx_gcd_i64(int64_t a, int64_t b);
  * jumps and lost samples up to half of the block leave it alone; more is
  * a lower rate in effect); a block is off when its rate is off by more than
  * HX_RATE_TOL and its median interval by a resolution of the stamps or
- * more (the gcd of its intervals: a 398 Hz log stamped to the millisecond
- * reads 2 and 3 ms). The stamps are read at t_ns, t_ns + stride bytes, ...
+ * more (the gcd of the log's intervals: a 398 Hz log stamped to the
+ * millisecond reads 2 and 3 ms). The stamps are read at t_ns, t_ns + stride bytes, ...
  * (n of them).
  * @param at_s      the first block off by more than HX_RATE_TOL: its start,
  *                  s after the first stamp (NaN: none)

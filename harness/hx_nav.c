@@ -677,6 +677,10 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         if (lrc < 0) {
             return -1;
         }
+        /* the reader's warnings (assumed rates, cut-off lines, a GX2 timer
+         * bridged), as the unresampled replay prints them below; they were
+         * dropped here */
+        hx_print_warnings(cmd, raw.warnings);
         if (lrc > 0) {
             snprintf(err, err_size, "%s", raw.error);
             rc = 1;

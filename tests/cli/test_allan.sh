@@ -32,6 +32,10 @@ expect_exit 1 "series line longer than the reader's buffer" "$H" allan --series 
 expect_err "long.txt:1: line longer than" "the long line is named"
 expect_exit 0 "paper tables" "$H" allan --paper-tables
 grep -q "NavChip (IV)" "$T/out" && pass "paper tables list NavChip" || fail "paper tables output"
+# --paper-tables reads no option: --json FILE was ignored (exit 0, no file)
+expect_exit 2 "paper tables with --json" "$H" allan --paper-tables --json "$T/pt.json"
+expect_err "takes no other option (--json)" "paper tables name the option they do not take"
+[ ! -e "$T/pt.json" ] && pass "paper tables wrote no JSON" || fail "paper tables wrote a JSON"
 
 # a series with a bad line: the numbers before it are analysed, outputs written, exit 1
 awk 'BEGIN { s = 1; for (i = 0; i < 3000; i++) { s = (s * 1103515245 + 12345) % 2147483648; print s / 2147483648.0 } print "oops" }' >"$T/bad.txt"

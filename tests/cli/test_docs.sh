@@ -74,6 +74,8 @@ check_keys "psd --json" "$T/psd.json" psd.md
     fail "sim a static log for allan"
 expect_exit 0 "allan --json" "$H" allan "$T/stand.bin" --channels gx,gy --fit-extra --json "$T/allan.json"
 check_keys "allan --json" "$T/allan.json" allan.md
+expect_exit 0 "montecarlo --json" "$H" montecarlo --duration 10 --seeds 2 --bias-model both --quiet --json "$T/mc.json"
+check_keys "montecarlo --json" "$T/mc.json" simulator.md
 
 if [ "$fails" -ne 0 ]; then echo "test_docs.sh: $fails failure(s)"; exit 1; fi
 echo "test_docs.sh: all passed"

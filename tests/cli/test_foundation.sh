@@ -15,11 +15,35 @@ expect_exit 2 "unknown command" "$H" frobnicate
 expect_err "unknown command 'frobnicate'" "unknown command is named"
 expect_exit 2 "info without LOG" "$H" info
 expect_exit 2 "unknown option" "$H" info vectors/walk.bin --bogus
+# an empty option value is a usage error (--json "" reached fopen: "cannot
+# write  (No such file or directory)", exit 3)
+expect_exit 2 "empty --json" "$H" info vectors/walk.bin --json ""
+expect_err "option --json needs a value (FILE), not an empty one" "empty value named"
+expect_exit 2 "empty --out=" "$H" replay vectors/walk.bin --quiet --out=
 expect_exit 0 "info --help" "$H" info --help
 expect_exit 0 "convert --help" "$H" convert --help
 expect_exit 2 "bad --input-rate" "$H" info vectors/walk.bin --input-rate -3
 expect_exit 2 "unknown --from" "$H" info vectors/walk.bin --from nope
 expect_err "unknown input format 'nope'" "--from error names the format"
+# the same for every command that reads a log (docs/harness.md, "Conventions":
+# a bad command line is exit 2; allan and psd read the log first and exited 1)
+for c in info replay allan psd simgap; do
+    expect_exit 2 "$c: unknown --from" "$H" $c vectors/walk.bin --from nope
+    expect_exit 2 "$c: bad --input-rate" "$H" $c vectors/walk.bin --input-rate abc
+done
+expect_exit 2 "convert: unknown --from" "$H" convert vectors/walk.bin "$T/c.csv" --from nope
+# a command-line error is said before eval looks for its data (it exited 4,
+# "no shared data", and the usage error came only once the data were there)
+expect_exit 2 "eval --plots with --no-plots, without data" "$H" eval --data "$T/nodata" --plots "$T/x" --no-plots
+# --input-rate gives the rate of a log without time stamps: on a .bin it
+# replaced the header's rate, and psd analysed the 398 Hz walk as 100 Hz
+# (150 Hz answered 50 Hz); now it is ignored with a warning, as on a
+# time-stamped text log, where it was ignored without one
+"$H" psd vectors/walk.bin --json "$T/psd0.json" >/dev/null 2>&1
+expect_exit 0 "psd of a .bin with --input-rate" "$H" psd vectors/walk.bin --input-rate 100 --json "$T/psd1.json"
+expect_err "input-rate ignored: the bin format has time stamps" "--input-rate on a .bin is said to be ignored"
+json "$T/psd1.json" "j['rate_hz'] == json.load(open('$T/psd0.json'))['rate_hz'] and j['result']['fs_hz'] == json.load(open('$T/psd0.json'))['result']['fs_hz']" &&
+    pass "--input-rate leaves a .bin's rate and answer alone" || fail "--input-rate changed a .bin's rate: $(grep -m1 rate_hz "$T/psd1.json")"
 # a log of mostly duplicated stamps: the median interval is that of the
 # intervals that advance (it read 0 ms, and every real interval was a gap)
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.02,0,0,9.8,0,0,0\n' > "$T/dups.csv"
@@ -36,6 +60,14 @@ expect_out "gaps        0 " "1 and 2 ms stamps of an 820 Hz log are no gaps"
 awk 'NR < 2002 || NR > 2004' "$T/ms820.csv" > "$T/ms820drop.csv"
 expect_exit 0 "info on it with three samples dropped" "$H" info "$T/ms820drop.csv"
 expect_out "gaps        1 (> 1.5 intervals; longest 5.0 ms)" "the dropped samples are the one gap"
+# exact stamps (a sample counter's) that go from 10 to 20 ms: a rate change
+# (JSON rate_change, docs/harness.md); a block of 200 intervals of exactly
+# 20 ms was taken for stamps of 20 ms resolution, never off by one, and the
+# change went unreported (rate_change null, 999 "gaps")
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; t = 0; for (k = 0; k < 3000; k++) { printf "%.6f,0.01,0,9.8,0,0.001,0\n", t; t += (k < 2000 ? 0.01 : 0.02) } }' > "$T/halved.csv"
+expect_exit 0 "info on a log whose rate halves" "$H" info "$T/halved.csv" --json "$T/halved.json"
+json "$T/halved.json" 'j["rate_change"] is not None and abs(j["rate_change"]["at_s"] - 20) < 0.01 and abs(j["rate_change"]["rate_hz"] - 50) < 0.01' &&
+    pass "the halved rate is reported at 20 s" || fail "halved rate: rate_change $(grep -A3 rate_change "$T/halved.json" | tr -d '\n\t')"
 
 # --- the bundled example
 expect_exit 0 "info walk.bin" "$H" info vectors/walk.bin --json "$T/info.json"
@@ -94,10 +126,13 @@ awk -F, 'NR == 1 { print "Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Gyros
 head -c $(($(wc -c <"$T/ngimu.csv") - 30)) "$T/ngimu.csv" >"$T/cut.csv"
 # allan gets the still first 12.5 s (a walk is no static log for it: exit 1 since 2026-11-28)
 mkdir -p "$T/still" && head -n 5000 "$T/ngimu.csv" | head -c -30 >"$T/still/cut.csv"
-for c in info convert allan psd replay; do
+# replay --rate too (it loads the whole log to resample it, and dropped the
+# reader's warnings)
+for c in info convert allan psd replay replay-rate; do
     case $c in
     convert) expect_exit 0 "$c of a CSV cut mid-line" "$H" convert "$T/cut.csv" "$T/cut.bin" ;;
     allan) expect_exit 0 "$c of a CSV cut mid-line" "$H" allan "$T/still/cut.csv" ;;
+    replay-rate) expect_exit 0 "$c of a CSV cut mid-line" "$H" replay "$T/cut.csv" --rate 100 ;;
     *) expect_exit 0 "$c of a CSV cut mid-line" "$H" "$c" "$T/cut.csv" ;;
     esac
     expect_err "cut.csv:[0-9]*: last line is incomplete (recording cut off mid-write); ignored" "$c warns of the cut-off last line"
@@ -175,6 +210,16 @@ expect_exit 1 "empty file" "$H" info "$T/empty.csv"
 expect_err "empty.csv: empty file" "empty file said"
 expect_exit 3 "unwritable output" "$H" convert vectors/walk.bin /nonexistent-dir/x.bin
 expect_err "cannot create" "unwritable output said"
+# a write that fails midway (a full disk, a closed pipe) is one error line
+# with its reason: convert printed "write failed" and then, on closing,
+# "write failed (No space left on device)" for the same failure
+if [ -w /dev/full ]; then
+    for o in "" "--rate 100"; do
+        expect_exit 3 "convert $o to a full disk" "$H" convert vectors/walk.bin /dev/full --to bin $o
+        if [ "$(grep -c 'error:' "$T/err")" -eq 1 ] && grep -q "write failed (No space left on device)" "$T/err"; then
+            pass "convert $o: one error line with the reason"; else fail "convert $o: the write error said twice or without its reason"; cat "$T/err"; fi
+    done
+fi
 
 # convert --rate: the replay's resampler, written; replaying it gives the
 # trajectory of replay --rate; a bad rate is a usage error
@@ -213,6 +258,18 @@ for args in "info $T/victim.csv --json $T/victim.csv" "allan $T/victim.csv --out
 done
 if cmp -s "$T/victim.csv" "$T/victim0.csv" && cmp -s "$T/series.txt" "$T/series0.txt"; then
     pass "the inputs are intact"; else fail "an input was overwritten"; fi
+# two outputs on one file: the later replaced the earlier, exit 0
+# (`replay LOG --out r.txt --json r.txt` left the JSON alone); /dev/null
+# twice still discards both
+for args in "replay vectors/walk.bin --quiet --out $T/two.txt --json $T/two.txt" \
+    "allan --series $T/series.txt --rate 1 --out $T/two.txt --json $T/two.txt" "psd vectors/walk.bin --out $T/two.txt --json $T/two.txt" \
+    "montecarlo --duration 5 --seeds 1 --quiet --json $T/two.txt --csv $T/two.txt" \
+    "eval --no-experiments --out $T/two.txt --json $T/two.txt" "live /dev/null --record $T/two.txt --out $T/two.txt"; do
+    # shellcheck disable=SC2086
+    expect_exit 2 "two outputs on one file: ${args%% *}" "$H" $args
+    expect_err "name the same file" "two outputs on one file refused: ${args%% *}"
+done
+expect_exit 0 "replay --out /dev/null --json /dev/null" "$H" replay vectors/walk.bin --quiet --out /dev/null --json /dev/null
 
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]
