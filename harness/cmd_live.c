@@ -23,6 +23,10 @@
 
 #define CMD "live"
 #define READ_TIMEOUT_MS 100u
+/* A line quiet this long has no frame in flight: the decoder gives out the
+ * frames it holds behind an incomplete candidate (fnav_wire_decode_flush;
+ * a frame takes 1 ms at 460800 baud). */
+#define IDLE_FLUSH_S 1.0
 #define MAX_WARNINGS 20
 #define PLOT_SECONDS 10.0
 
@@ -341,6 +345,19 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
     }
 }
 
+/* The line went quiet or the session ends: no byte will complete the
+ * candidate frame the decoder holds, so the frames behind it (a truncated
+ * frame followed by END, the sender then silent) are taken now; they waited
+ * for bytes that never came (live missed the END frame and ran on until
+ * --timeout or for ever; a review, 2026-11-29). */
+static void flush_link(live_t *L)
+{
+    fnav_wire_frame_t f;
+    while (!L->have_end && !L->restarted && !L->rec_failed && fnav_wire_decode_flush(&L->dec, &f) == FNAV_OK) {
+        on_frame(L, &f);
+    }
+}
+
 static double span_s(const live_t *L)
 {
     return L->samples > 1u ? (double)(L->t_last_ns - L->t_first_ns) * 1e-9 : 0.0;
@@ -464,7 +481,9 @@ int hx_cmd_live(int argc, char **argv)
     fnav_nav_config_t ncfg;
     long baud = 460800;
     double plot_every = 0.0, timeout = 0.0, print_every = 1.0;
-    double t_last_frame, t_next_print, t_next_plot, t0;
+    double t_last_frame, t_last_byte, t_next_print, t_next_plot, t0;
+    /* quiet time before held frames are flushed: shorter than --timeout */
+    double idle_flush_s;
     const char *plot_png = "live.png", *out_path, *json_path;
     char err[600], gone_msg[600] = "";
     int rc, exit_code = HX_EXIT_OK, gone = 0, timed_out = 0, tty = isatty(fileno(stderr));
@@ -569,8 +588,10 @@ int hx_cmd_live(int argc, char **argv)
     signal(SIGPIPE, SIG_IGN);
     fprintf(stderr, "harness live: reading %s at %ld baud\n", hx_serial_path(port), baud);
 
+    idle_flush_s = (timeout > 0.0 && timeout < 2.0 * IDLE_FLUSH_S) ? 0.5 * timeout : IDLE_FLUSH_S;
     t0 = hx_now_s();
     t_last_frame = t0;
+    t_last_byte = t0;
     t_next_print = t0 + print_every;
     t_next_plot = t0 + plot_every;
     while (!g_stop && !L.have_end && !L.rec_failed && !L.restarted) {
@@ -599,6 +620,15 @@ int hx_cmd_live(int argc, char **argv)
             }
         }
         now = hx_now_s();
+        if (n > 0) {
+            t_last_byte = now;
+        } else if (L.dec.fill > 0u && now - t_last_byte >= idle_flush_s) {
+            uint32_t frames_before = L.dec.stats.frames;
+            flush_link(&L);
+            if (L.dec.stats.frames != frames_before) {
+                t_last_frame = now;
+            }
+        }
         if (timeout > 0.0 && now - t_last_frame > timeout) {
             timed_out = 1;
             break;
@@ -612,6 +642,9 @@ int hx_cmd_live(int argc, char **argv)
             t_next_plot = now + plot_every;
         }
     }
+    /* the frames still held behind an incomplete one (Ctrl-C, a hang-up or
+     * --timeout came before the line was quiet for idle_flush_s) */
+    flush_link(&L);
     if (tty && print_every > 0.0) {
         fputc('\n', stderr);
     }

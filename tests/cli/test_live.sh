@@ -289,6 +289,13 @@ grep_in "$T/live.out" "NAV frames but no SAMPLE frames" "live says why nothing i
 grep_in "$T/live.out" "nothing recorded" "live does not claim a recording"
 if [ -e "$T/rec_v.bin" ]; then fail "a recording was created without samples"; else pass "no empty recording left"; fi
 
+live_case truncend rec_t.bin 5
+expect_rc "$LIVE_RC" 1 "live when the last sample frame is cut short before END"
+grep_in "$T/live.out" "END frame, the sender sent 300 samples, 299 received" "the END frame behind the cut frame is read (it was held until --timeout)"
+grep_in "$T/live.out" "1 bad frames, 1 lost frames in 1 drops" "the cut frame is counted"
+if grep -q "no valid frame" "$T/live.err"; then fail "live waited for --timeout: $(cat "$T/live.err")"; else pass "live ends at the END frame, not at --timeout"; fi
+reads_back rec_t.bin 299 "the recording holds the 299 whole samples"
+
 # --- the reader of --out - goes away (live ... | head): a write error (exit 3)
 # with the summary and a complete recording, not a death by SIGPIPE
 stop_link
