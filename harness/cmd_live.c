@@ -363,12 +363,34 @@ static double span_s(const live_t *L)
     return L->samples > 1u ? (double)(L->t_last_ns - L->t_first_ns) * 1e-9 : 0.0;
 }
 
+/* What came in while no sample did: for the status line and the end of a
+ * run without samples (it read "aligning (keep the foot still)" with nothing
+ * received, or with bytes at a wrong baud rate; a review, 2026-11-29). */
+static void describe_nothing(const live_t *L, char *out, size_t size)
+{
+    const fnav_wire_stats_t *s = &L->dec.stats;
+    unsigned long bytes = (unsigned long)s->skipped_bytes + (unsigned long)L->dec.fill;
+    if (L->by_type[FNAV_WIRE_SAMPLE] > 0u) {
+        snprintf(out, size, "the %u SAMPLE frames were all refused", (unsigned)L->by_type[FNAV_WIRE_SAMPLE]);
+    } else if (s->frames > 0u) {
+        snprintf(out, size, "no SAMPLE frame among %u valid frames", (unsigned)s->frames);
+    } else if (bytes > 0u) {
+        snprintf(out, size, "%lu bytes received, no valid frame (wrong --baud, or not a footnav sender?)", bytes);
+    } else {
+        snprintf(out, size, "nothing received");
+    }
+}
+
 static void print_status(const live_t *L, int tty)
 {
     const fnav_wire_stats_t *s = &L->dec.stats;
     double span = span_s(L);
     char nav[160];
-    if (L->have_frame && (L->last.flags & FNAV_FRAME_ALIGNED)) {
+    if (L->samples == 0u) {
+        char what[120];
+        describe_nothing(L, what, sizeof what);
+        snprintf(nav, sizeof nav, "waiting: %s", what);
+    } else if (L->have_frame && (L->last.flags & FNAV_FRAME_ALIGNED)) {
         snprintf(nav, sizeof nav, "x %.2f y %.2f z %.2f m, yaw %.0f deg, %s, %u strides",
                  (double)L->last.pos_m[0], (double)L->last.pos_m[1], (double)L->last.pos_m[2],
                  (double)L->last.euler_rad[2] * 57.29577951308232,
@@ -769,7 +791,19 @@ int hx_cmd_live(int argc, char **argv)
             exit_code = HX_EXIT_DATA;
         }
         if (timed_out) {
-            hx_error(CMD, "no valid frame for %.1f s (--timeout); giving up", timeout);
+            char what[120] = "";
+            if (L.samples == 0u) {
+                describe_nothing(&L, what, sizeof what);
+            }
+            hx_error(CMD, "no valid frame for %.1f s (--timeout); giving up%s%s", timeout, what[0] ? ": " : "",
+                     what);
+        } else if (L.samples == 0u && exit_code == HX_EXIT_OK) {
+            /* nothing to navigate or record is not a complete stream, as
+             * replay of an empty log exits 1 (Ctrl-C exited 0 here; a review) */
+            char what[120];
+            describe_nothing(&L, what, sizeof what);
+            hx_error(CMD, "no sample received from %s: %s", a.pos[0], what);
+            exit_code = HX_EXIT_DATA;
         }
     }
     live_free(&L);

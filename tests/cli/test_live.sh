@@ -327,9 +327,27 @@ echo '{"stale": "an earlier run"}' >"$T/stale.json"
 start_live --timeout 1 --json "$T/stale.json"
 wait_live
 expect_rc "$LIVE_RC" 1 "live --timeout with no sender"
-grep_in "$T/live.err" "no valid frame for" "the timeout is explained"
+grep_in "$T/live.err" "no valid frame for 1.0 s (--timeout); giving up: nothing received" "the timeout is explained"
 if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d.get('aligned') is False else 1)" "$T/stale.json"; then
     pass "--json written without a frame (aligned false)"; else fail "--json not rewritten: $(cat "$T/stale.json")"; fi
+
+# --- bytes that never make a frame (a wrong baud rate), ended by SIGTERM:
+# exit 1 and messages that say what arrived (it exited 0 as if complete, and
+# the status line read "aligning (keep the foot still)"; a review, 2026-11-29)
+stop_link
+start_link
+LD_PRELOAD=$SEAM "$H" live "$A" --print-every 0.2 >"$T/live.out" 2>"$T/live.err" &
+LIVE=$!
+wait_for 'grep -q "reading" "$T/live.err"' 200
+# 40 times the bytes 0..255: never A5 followed by 5A
+/usr/bin/python3 -c "import sys; sys.stdout.buffer.write(bytes(range(256)) * 40)" >"$T/garbage.bin"
+timeout 30 cat "$T/garbage.bin" >"$B"
+wait_for 'grep -q "10240 bytes received" "$T/live.err"' 100
+kill -TERM "$LIVE" 2>/dev/null
+wait_live
+expect_rc "$LIVE_RC" 1 "live ended by SIGTERM without a sample"
+grep_in "$T/live.err" "waiting: 10240 bytes received, no valid frame (wrong --baud" "the status line says bytes came but no frame"
+grep_in "$T/live.err" "no sample received from $A: 10240 bytes received" "the end says no sample was received"
 
 # --- a recording that cannot be written (a full disk): the summary counts
 # what the file holds, not what was received (it said 40 recorded)
