@@ -164,7 +164,7 @@ int hx_cmd_stream(int argc, char **argv)
                      (log.meta.has_temp ? FNAV_WIRE_INFO_TEMP : 0u) | (log.meta.has_seq ? FNAV_WIRE_INFO_SEQ : 0u);
         snprintf(info.sensor, sizeof info.sensor, "%s", log.meta.sensor);
         snprintf(info.axes, sizeof info.axes, "%s", log.meta.axes);
-        tx.n += fnav_wire_encode_info(tx_room(&tx), FNAV_WIRE_MAX_FRAME, tx.seq++, &info);
+        tx.n += fnav_wire_encode_info(tx_room(&tx), FNAV_WIRE_MAX_FRAME, tx.seq++, &info); /* empty: no flush */
     }
 
     hx_progress_start(&prog, "harness stream", (double)log.n);
@@ -216,7 +216,12 @@ int hx_cmd_stream(int argc, char **argv)
         hx_progress_update(&prog, (double)(i + 1));
     }
     if (!tx.failed && !g_stop && !(hangup > 0 && (long)i == hangup)) {
-        tx.n += fnav_wire_encode_end(tx_room(&tx), FNAV_WIRE_MAX_FRAME, tx.seq++, sent);
+        /* tx_room() may flush the batch and reset tx.n: called in a statement
+         * of its own, since in `tx.n += encode(tx_room(&tx), ...)` C99 leaves
+         * open whether tx.n is read before the call (then the END frame went
+         * out with the batch already sent; gcc and clang read it after) */
+        uint8_t *end_at = tx_room(&tx);
+        tx.n += fnav_wire_encode_end(end_at, FNAV_WIRE_MAX_FRAME, tx.seq++, sent);
         end_queued = 1;
     }
     if (tx_flush(&tx) == 0 && hx_serial_drain(tx.port) != 0) {
