@@ -78,6 +78,9 @@ typedef struct {
     uint32_t by_type[6];
     uint32_t bad_samples;         /* CRC-valid SAMPLE frames with NaN/Inf or out of range */
     uint32_t repeated;            /* SAMPLE frames received twice (same frame seq and sample), skipped */
+    uint32_t seq_repeats;         /* frames whose seq repeats the previous one's (the decoder counts a restart) */
+    unsigned prev_frame_seq;      /* seq of the last valid frame */
+    int have_prev_frame;
     unsigned last_frame_seq;      /* frame seq of the last recorded sample */
     uint32_t last_sample_seq;     /* its sample counter */
     uint32_t bad_info;            /* INFO frames with an impossible rate */
@@ -198,10 +201,23 @@ static void report_link(live_t *L, const fnav_wire_frame_t *f)
         warn_limited(L, msg);
     }
     if (s->resets != L->last_stats.resets) {
-        snprintf(msg, sizeof msg, "restart: the frame sequence went back to %u (sender reset?)", (unsigned)f->seq);
-        warn_limited(L, msg);
+        if (L->have_prev_frame && (unsigned)f->seq == L->prev_frame_seq) {
+            /* the previous frame again (a link's repetition), not a restart:
+             * a SAMPLE frame's copy is reported where it is skipped (it was
+             * also reported as "restart ... (sender reset?)"; a review) */
+            L->seq_repeats++;
+            if (f->type != FNAV_WIRE_SAMPLE) {
+                snprintf(msg, sizeof msg, "repeated frame: frame seq %u received twice", (unsigned)f->seq);
+                warn_limited(L, msg);
+            }
+        } else {
+            snprintf(msg, sizeof msg, "restart: the frame sequence went back to %u (sender reset?)", (unsigned)f->seq);
+            warn_limited(L, msg);
+        }
     }
     L->last_stats = *s;
+    L->prev_frame_seq = (unsigned)f->seq;
+    L->have_prev_frame = 1;
 }
 
 static int open_recording(live_t *L)
@@ -736,7 +752,7 @@ int hx_cmd_live(int argc, char **argv)
         fprintf(sum_out, "live: link: %u bad frames, %u lost frames in %u drops, %u bad samples, %u bytes skipped, "
                "%u sequence restarts, %u repeated sample frames skipped\n",
                (unsigned)s->bad_frames, (unsigned)s->lost, (unsigned)s->gaps, (unsigned)L.bad_samples,
-               (unsigned)s->skipped_bytes, (unsigned)s->resets, (unsigned)L.repeated);
+               (unsigned)s->skipped_bytes, (unsigned)(s->resets - L.seq_repeats), (unsigned)L.repeated);
         if (L.have_info) {
             fprintf(sum_out, "live: sender: %s, %.6g Hz%s\n", L.info.sensor[0] ? L.info.sensor : "(unnamed)",
                     L.info.rate_hz, (L.info.flags & FNAV_WIRE_INFO_RATE_NOMINAL) ? " nominal" : "");

@@ -275,7 +275,8 @@ reads_back rec_g.bin 299 "the recording without it reads back whole"
 live_case repeat rec_rep.bin 5
 expect_rc "$LIVE_RC" 0 "live when a sample frame arrives twice (the copy skipped; nothing lost)"
 grep_in "$T/live.err" "sample frame seq 101 received twice; the copy skipped" "the repetition is reported"
-grep_in "$T/live.out" "1 repeated sample frames skipped" "the summary counts it"
+grep_in "$T/live.out" "0 sequence restarts, 1 repeated sample frames skipped" "the summary counts it, as a repetition and not a restart"
+if grep -q "restart:" "$T/live.err"; then fail "the repetition is reported as a sender restart"; cat "$T/live.err"; else pass "no restart reported for a repeated frame"; fi
 reads_back rec_rep.bin 300 "the recording holds each sample once"
 
 live_case badrate rec_n.bin 5
