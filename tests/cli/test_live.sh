@@ -357,6 +357,24 @@ stream vectors/walk.bin --speed 0
 wait_live
 grep_in "$T/live.out" "recorded 0 samples" "a failed recording counts what it holds"
 
+# --- stream interrupted while a write waits on a port nobody reads: it
+# stops at once with 143 (it waited out the 10 s write timeout, then exited
+# 3, as libserialport resumes an interrupted write; a review, 2026-11-29)
+stop_link
+start_link
+LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 0 >"$T/stream.out" 2>"$T/stream.err" &
+STREAM=$!
+sleep 1
+t0=$(date +%s)
+kill -TERM "$STREAM" 2>/dev/null
+wait "$STREAM"
+STREAM_RC=$?
+STREAM=""
+dt=$(($(date +%s) - t0))
+expect_rc "$STREAM_RC" 143 "stream stopped by SIGTERM while its write is blocked"
+if [ "$dt" -le 5 ]; then pass "it stopped within $dt s"; else fail "it took $dt s to stop"; fi
+grep_in "$T/stream.out" "the interrupt cut the write" "stream says the batch was cut"
+
 # --- stream: an interrupt while the END frame drains interrupts nothing:
 # every sample and END reach the receiver, exit 0 (it exited 130; a review)
 stop_link
