@@ -112,7 +112,7 @@ int hx_cmd_stream(int argc, char **argv)
     int rc = hx_args_parse(&k_spec, argc, argv, &a), loaded;
     int exit_code = HX_EXIT_OK;
     size_t i;
-    uint32_t sent = 0;
+    uint32_t sent = 0, left_out = 0; /* samples encoded (END's count); of them never written (--inject-drop) */
     int end_queued = 0;
     hx_progress_t prog;
     struct sigaction sa;
@@ -217,6 +217,7 @@ int hx_cmd_stream(int argc, char **argv)
         k = fnav_wire_encode_sample(f, FNAV_WIRE_MAX_FRAME, tx.seq++, &s);
         sent++;
         if (drop > 0 && sent % (uint32_t)drop == 0u) {
+            left_out++;
             continue; /* never sent: the receiver sees the seq gap */
         }
         if (corrupt > 0 && sent % (uint32_t)corrupt == 0u) {
@@ -248,12 +249,22 @@ int hx_cmd_stream(int argc, char **argv)
     hx_progress_end(&prog);
     hx_serial_close(tx.port);
 
-    printf("stream: %u samples %s %s in %.1f s%s%s\n", (unsigned)sent,
-           tx.failed ? "encoded (the port failed before all were written) for"
-                     : (tx.cut ? "encoded (the interrupt cut the write of the last batch) for" : "sent to"),
-           a.pos[1],
-           hx_now_s() - t_start, (hangup > 0 && (long)i == hangup) ? " (hung up on purpose, no END frame)" : "",
-           g_stop ? " (interrupted)" : "");
+    {
+        /* the samples left out on purpose are counted in END (the receiver
+         * sees them missing) but never written: said so (it printed "N
+         * samples sent" with all N left out; a review, 2026-11-29) */
+        char dropped[96] = "";
+        if (left_out > 0u) {
+            snprintf(dropped, sizeof dropped, " (%u of them left out by --inject-drop, %u written)",
+                     (unsigned)left_out, (unsigned)(sent - left_out));
+        }
+        printf("stream: %u samples %s %s%s in %.1f s%s%s\n", (unsigned)sent,
+               tx.failed ? "encoded (the port failed before all were written) for"
+                         : (tx.cut ? "encoded (the interrupt cut the write of the last batch) for" : "sent to"),
+               a.pos[1], dropped, hx_now_s() - t_start,
+               (hangup > 0 && (long)i == hangup) ? " (hung up on purpose, no END frame)" : "",
+               g_stop ? " (interrupted)" : "");
+    }
     if (tx.failed) {
         exit_code = HX_EXIT_IO;
     } else if (g_stop) {

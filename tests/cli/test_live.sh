@@ -187,6 +187,7 @@ expect_rc "$LIVE_RC" 1 "live with dropped frames"
 grep_in "$T/live.out" "0 bad frames, $DROP lost frames in $DROP drops" "every drop counted"
 grep_in "$T/live.err" "drop: 1 frame(s) lost before frame seq 501" "the first drop is reported with its sequence number"
 grep_in "$T/live.out" "the sender sent $N samples, $((N - DROP)) received" "END count shows the missing samples"
+grep_in "$T/stream.out" "$N samples sent to $B ($DROP of them left out by --inject-drop, $((N - DROP)) written)" "stream says how many it left out"
 
 # --- the port disappears mid-stream: clean end, recording intact
 start_live --record "$T/rec_h.bin" --timeout 60
