@@ -51,9 +51,9 @@ static const hx_spec_t k_spec = {
     "frames are skipped and counted; a gap in the frame sequence numbers is\n"
     "reported as a drop. The run ends at the sender's END frame, on Ctrl-C, or\n"
     "when the port disappears (the recording stays intact in every case).\n"
-    "Exit status: 0 complete, 1 samples were lost (drops, bad frames) or the\n"
-    "port went away, 2 usage, 3 the port or the recording could not be opened\n"
-    "or written.",
+    "Exit status: 0 complete, 1 samples were lost (drops, bad frames), none\n"
+    "arrived, or the port went away, 2 usage, 3 the port or the recording could\n"
+    "not be opened or written.",
     1, 1, k_opts
 };
 
