@@ -61,8 +61,7 @@ static volatile sig_atomic_t g_stop;
 
 static void on_signal(int sig)
 {
-    (void)sig;
-    g_stop = 1;
+    g_stop = sig; /* named in the summary */
 }
 
 /* Recent signal magnitudes for the plot (a ring of PLOT_SECONDS). */
@@ -779,6 +778,13 @@ int hx_cmd_live(int argc, char **argv)
         if (L.have_end) {
             fprintf(sum_out, "live: end: END frame, the sender sent %u samples, %u received\n", (unsigned)L.end_count,
                    (unsigned)L.samples);
+        } else if (g_stop) {
+            /* how the run ended, as for END and a vanished port (nothing
+             * said it; a review, 2026-11-29) */
+            fprintf(sum_out, "live: end: stopped by %s\n",
+                    g_stop == SIGINT ? "SIGINT (Ctrl-C)" : (g_stop == SIGTERM ? "SIGTERM" : "SIGHUP"));
+        } else if (timed_out) {
+            fprintf(sum_out, "live: end: no valid frame for %.1f s (--timeout)\n", timeout);
         } else if (gone) {
             fprintf(sum_out, "live: end: the port went away\n");
             if (L.record_path != NULL) {

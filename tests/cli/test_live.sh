@@ -330,6 +330,7 @@ start_live --timeout 1 --json "$T/stale.json"
 wait_live
 expect_rc "$LIVE_RC" 1 "live --timeout with no sender"
 grep_in "$T/live.err" "no valid frame for 1.0 s (--timeout); giving up: nothing received" "the timeout is explained"
+grep_in "$T/live.out" "live: end: no valid frame for 1.0 s (--timeout)" "the summary says how the run ended"
 if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d.get('aligned') is False else 1)" "$T/stale.json"; then
     pass "--json written without a frame (aligned false)"; else fail "--json not rewritten: $(cat "$T/stale.json")"; fi
 
@@ -350,6 +351,7 @@ wait_live
 expect_rc "$LIVE_RC" 1 "live ended by SIGTERM without a sample"
 grep_in "$T/live.err" "waiting: 10240 bytes received, no valid frame (wrong --baud" "the status line says bytes came but no frame"
 grep_in "$T/live.err" "no sample received from $A: 10240 bytes received" "the end says no sample was received"
+grep_in "$T/live.out" "live: end: stopped by SIGTERM" "the summary says how the run ended"
 
 # --- a recording that cannot be written (a full disk): the summary counts
 # what the file holds, not what was received (it said 40 recorded)
