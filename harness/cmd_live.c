@@ -83,6 +83,11 @@ typedef struct {
     unsigned last_frame_seq;      /* frame seq of the last recorded sample */
     uint32_t last_sample_seq;     /* its sample counter */
     uint32_t bad_info;            /* INFO frames with an impossible rate */
+    /* samples the sender lost (its ring overran): gaps in the sensor's own
+     * counter that the link's losses do not explain (a lower bound) */
+    uint32_t sensor_missing, sensor_gaps;
+    uint32_t lost_at_last, bad_at_last; /* link counters at the last accepted sample */
+    int have_sensor_seq;          /* the last accepted sample carried the sensor's counter */
     int have_info, have_end, have_status;
     int restarted;                /* a sample went back in time: the sender restarted */
     double restart_from_s, restart_to_s;
@@ -289,6 +294,34 @@ static void on_sample(live_t *L, const fnav_sample_t *s)
     }
 }
 
+/* A jump of the sensor's own counter (INFO bit 2 and the sample's
+ * FNAV_SAMPLE_HAS_SEQ) beyond what the link lost since the last sample
+ * (frames lost, samples refused) is a loss on the sender: reported and
+ * counted (live was silent about it; a review, 2026-11-29). Frames of other
+ * types lost on the link are counted as samples, so this is a lower bound. */
+static void sensor_counter(live_t *L, const fnav_sample_t *s)
+{
+    const int counted = L->have_info && (L->info.flags & FNAV_WIRE_INFO_SEQ) != 0u &&
+                        (s->flags & FNAV_SAMPLE_HAS_SEQ) != 0u;
+    if (counted && L->have_sensor_seq) {
+        const uint32_t step = s->seq - L->last_sample_seq;
+        const uint32_t link = (L->dec.stats.lost - L->lost_at_last) + (L->bad_samples - L->bad_at_last);
+        if (step > 1u && step < 0x80000000u && step - 1u > link) {
+            char msg[160];
+            L->sensor_missing += step - 1u - link;
+            L->sensor_gaps++;
+            snprintf(msg, sizeof msg,
+                     "sensor drop: %lu sample(s) missing by the sensor's counter before sample seq %lu (lost on "
+                     "the sender, not on the link)",
+                     (unsigned long)(step - 1u - link), (unsigned long)s->seq);
+            warn_limited(L, msg);
+        }
+    }
+    L->have_sensor_seq = counted;
+    L->lost_at_last = L->dec.stats.lost;
+    L->bad_at_last = L->bad_samples;
+}
+
 static void on_frame(live_t *L, const fnav_wire_frame_t *f)
 {
     report_link(L, f);
@@ -320,6 +353,7 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             L->restart_to_s = (double)s.t_ns * 1e-9;
             L->restart_seq = (unsigned)f->seq;
         } else if (st == FNAV_OK) {
+            sensor_counter(L, &s);
             on_sample(L, &s);
             L->last_frame_seq = (unsigned)f->seq;
             L->last_sample_seq = s.seq;
@@ -752,6 +786,11 @@ int hx_cmd_live(int argc, char **argv)
                "%u sequence restarts, %u repeated sample frames skipped\n",
                (unsigned)s->bad_frames, (unsigned)s->lost, (unsigned)s->gaps, (unsigned)L.bad_samples,
                (unsigned)s->skipped_bytes, (unsigned)(s->resets - L.seq_repeats), (unsigned)L.repeated);
+        if (L.sensor_missing > 0u) {
+            fprintf(sum_out, "live: sensor: %u samples missing by the sensor's counter in %u gaps (lost on the "
+                             "sender, not on the link)\n",
+                    (unsigned)L.sensor_missing, (unsigned)L.sensor_gaps);
+        }
         if (L.have_info) {
             fprintf(sum_out, "live: sender: %s, %.6g Hz%s\n", L.info.sensor[0] ? L.info.sensor : "(unnamed)",
                     L.info.rate_hz, (L.info.flags & FNAV_WIRE_INFO_RATE_NOMINAL) ? " nominal" : "");

@@ -298,6 +298,12 @@ grep_in "$T/live.out" "1 bad frames, 1 lost frames in 1 drops" "the cut frame is
 if grep -q "no valid frame" "$T/live.err"; then fail "live waited for --timeout: $(cat "$T/live.err")"; else pass "live ends at the END frame, not at --timeout"; fi
 reads_back rec_t.bin 299 "the recording holds the 299 whole samples"
 
+live_case sensordrop rec_sd.bin 5
+expect_rc "$LIVE_RC" 1 "live with a frame lost on the link and samples lost on the sender"
+grep_in "$T/live.err" "sensor drop: 5 sample(s) missing by the sensor's counter before sample seq 155" "the sender's own drop is reported"
+if grep -q "sensor drop:.*before sample seq 101" "$T/live.err"; then fail "a link drop reported as the sender's"; else pass "the link drop is not taken for the sender's"; fi
+grep_in "$T/live.out" "live: sensor: 5 samples missing by the sensor's counter in 1 gaps" "the summary counts the sender's drop"
+
 # --- the reader of --out - goes away (live ... | head): a write error (exit 3)
 # with the summary and a complete recording, not a death by SIGPIPE
 stop_link
