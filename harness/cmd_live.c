@@ -23,6 +23,10 @@
 
 #define CMD "live"
 #define READ_TIMEOUT_MS 100u
+/* A line quiet this long has no frame in flight: the decoder gives out the
+ * frames it holds behind an incomplete candidate (fnav_wire_decode_flush;
+ * a frame takes 1 ms at 460800 baud). */
+#define IDLE_FLUSH_S 1.0
 #define MAX_WARNINGS 20
 #define PLOT_SECONDS 10.0
 
@@ -47,9 +51,9 @@ static const hx_spec_t k_spec = {
     "frames are skipped and counted; a gap in the frame sequence numbers is\n"
     "reported as a drop. The run ends at the sender's END frame, on Ctrl-C, or\n"
     "when the port disappears (the recording stays intact in every case).\n"
-    "Exit status: 0 complete, 1 samples were lost (drops, bad frames) or the\n"
-    "port went away, 2 usage, 3 the port or the recording could not be opened\n"
-    "or written.",
+    "Exit status: 0 complete, 1 samples were lost (drops, bad frames), none\n"
+    "arrived, or the port went away, 2 usage, 3 the port or the recording could\n"
+    "not be opened or written.",
     1, 1, k_opts
 };
 
@@ -57,8 +61,7 @@ static volatile sig_atomic_t g_stop;
 
 static void on_signal(int sig)
 {
-    (void)sig;
-    g_stop = 1;
+    g_stop = sig; /* named in the summary */
 }
 
 /* Recent signal magnitudes for the plot (a ring of PLOT_SECONDS). */
@@ -74,9 +77,17 @@ typedef struct {
     uint32_t by_type[6];
     uint32_t bad_samples;         /* CRC-valid SAMPLE frames with NaN/Inf or out of range */
     uint32_t repeated;            /* SAMPLE frames received twice (same frame seq and sample), skipped */
+    uint32_t seq_repeats;         /* frames whose seq repeats the previous one's (the decoder counts a restart) */
+    unsigned prev_frame_seq;      /* seq of the last valid frame */
+    int have_prev_frame;
     unsigned last_frame_seq;      /* frame seq of the last recorded sample */
     uint32_t last_sample_seq;     /* its sample counter */
     uint32_t bad_info;            /* INFO frames with an impossible rate */
+    /* samples the sender lost (its ring overran): gaps in the sensor's own
+     * counter that the link's losses do not explain (a lower bound) */
+    uint32_t sensor_missing, sensor_gaps;
+    uint32_t lost_at_last, bad_at_last; /* link counters at the last accepted sample */
+    int have_sensor_seq;          /* the last accepted sample carried the sensor's counter */
     int have_info, have_end, have_status;
     int restarted;                /* a sample went back in time: the sender restarted */
     double restart_from_s, restart_to_s;
@@ -194,10 +205,23 @@ static void report_link(live_t *L, const fnav_wire_frame_t *f)
         warn_limited(L, msg);
     }
     if (s->resets != L->last_stats.resets) {
-        snprintf(msg, sizeof msg, "restart: the frame sequence went back to %u (sender reset?)", (unsigned)f->seq);
-        warn_limited(L, msg);
+        if (L->have_prev_frame && (unsigned)f->seq == L->prev_frame_seq) {
+            /* the previous frame again (a link's repetition), not a restart:
+             * a SAMPLE frame's copy is reported where it is skipped (it was
+             * also reported as "restart ... (sender reset?)"; a review) */
+            L->seq_repeats++;
+            if (f->type != FNAV_WIRE_SAMPLE) {
+                snprintf(msg, sizeof msg, "repeated frame: frame seq %u received twice", (unsigned)f->seq);
+                warn_limited(L, msg);
+            }
+        } else {
+            snprintf(msg, sizeof msg, "restart: the frame sequence went back to %u (sender reset?)", (unsigned)f->seq);
+            warn_limited(L, msg);
+        }
     }
     L->last_stats = *s;
+    L->prev_frame_seq = (unsigned)f->seq;
+    L->have_prev_frame = 1;
 }
 
 static int open_recording(live_t *L)
@@ -270,6 +294,34 @@ static void on_sample(live_t *L, const fnav_sample_t *s)
     }
 }
 
+/* A jump of the sensor's own counter (INFO bit 2 and the sample's
+ * FNAV_SAMPLE_HAS_SEQ) beyond what the link lost since the last sample
+ * (frames lost, samples refused) is a loss on the sender: reported and
+ * counted (live was silent about it; a review, 2026-11-29). Frames of other
+ * types lost on the link are counted as samples, so this is a lower bound. */
+static void sensor_counter(live_t *L, const fnav_sample_t *s)
+{
+    const int counted = L->have_info && (L->info.flags & FNAV_WIRE_INFO_SEQ) != 0u &&
+                        (s->flags & FNAV_SAMPLE_HAS_SEQ) != 0u;
+    if (counted && L->have_sensor_seq) {
+        const uint32_t step = s->seq - L->last_sample_seq;
+        const uint32_t link = (L->dec.stats.lost - L->lost_at_last) + (L->bad_samples - L->bad_at_last);
+        if (step > 1u && step < 0x80000000u && step - 1u > link) {
+            char msg[160];
+            L->sensor_missing += step - 1u - link;
+            L->sensor_gaps++;
+            snprintf(msg, sizeof msg,
+                     "sensor drop: %lu sample(s) missing by the sensor's counter before sample seq %lu (lost on "
+                     "the sender, not on the link)",
+                     (unsigned long)(step - 1u - link), (unsigned long)s->seq);
+            warn_limited(L, msg);
+        }
+    }
+    L->have_sensor_seq = counted;
+    L->lost_at_last = L->dec.stats.lost;
+    L->bad_at_last = L->bad_samples;
+}
+
 static void on_frame(live_t *L, const fnav_wire_frame_t *f)
 {
     report_link(L, f);
@@ -301,6 +353,7 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
             L->restart_to_s = (double)s.t_ns * 1e-9;
             L->restart_seq = (unsigned)f->seq;
         } else if (st == FNAV_OK) {
+            sensor_counter(L, &s);
             on_sample(L, &s);
             L->last_frame_seq = (unsigned)f->seq;
             L->last_sample_seq = s.seq;
@@ -341,9 +394,40 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
     }
 }
 
+/* The line went quiet or the session ends: no byte will complete the
+ * candidate frame the decoder holds, so the frames behind it (a truncated
+ * frame followed by END, the sender then silent) are taken now; they waited
+ * for bytes that never came (live missed the END frame and ran on until
+ * --timeout or for ever; a review, 2026-11-29). */
+static void flush_link(live_t *L)
+{
+    fnav_wire_frame_t f;
+    while (!L->have_end && !L->restarted && !L->rec_failed && fnav_wire_decode_flush(&L->dec, &f) == FNAV_OK) {
+        on_frame(L, &f);
+    }
+}
+
 static double span_s(const live_t *L)
 {
     return L->samples > 1u ? (double)(L->t_last_ns - L->t_first_ns) * 1e-9 : 0.0;
+}
+
+/* What came in while no sample did: for the status line and the end of a
+ * run without samples (it read "aligning (keep the foot still)" with nothing
+ * received, or with bytes at a wrong baud rate; a review, 2026-11-29). */
+static void describe_nothing(const live_t *L, char *out, size_t size)
+{
+    const fnav_wire_stats_t *s = &L->dec.stats;
+    unsigned long bytes = (unsigned long)s->skipped_bytes + (unsigned long)L->dec.fill;
+    if (L->by_type[FNAV_WIRE_SAMPLE] > 0u) {
+        snprintf(out, size, "the %u SAMPLE frames were all refused", (unsigned)L->by_type[FNAV_WIRE_SAMPLE]);
+    } else if (s->frames > 0u) {
+        snprintf(out, size, "no SAMPLE frame among %u valid frames", (unsigned)s->frames);
+    } else if (bytes > 0u) {
+        snprintf(out, size, "%lu bytes received, no valid frame (wrong --baud, or not a footnav sender?)", bytes);
+    } else {
+        snprintf(out, size, "nothing received");
+    }
 }
 
 static void print_status(const live_t *L, int tty)
@@ -351,7 +435,11 @@ static void print_status(const live_t *L, int tty)
     const fnav_wire_stats_t *s = &L->dec.stats;
     double span = span_s(L);
     char nav[160];
-    if (L->have_frame && (L->last.flags & FNAV_FRAME_ALIGNED)) {
+    if (L->samples == 0u) {
+        char what[120];
+        describe_nothing(L, what, sizeof what);
+        snprintf(nav, sizeof nav, "waiting: %s", what);
+    } else if (L->have_frame && (L->last.flags & FNAV_FRAME_ALIGNED)) {
         snprintf(nav, sizeof nav, "x %.2f y %.2f z %.2f m, yaw %.0f deg, %s, %u strides",
                  (double)L->last.pos_m[0], (double)L->last.pos_m[1], (double)L->last.pos_m[2],
                  (double)L->last.euler_rad[2] * 57.29577951308232,
@@ -464,7 +552,9 @@ int hx_cmd_live(int argc, char **argv)
     fnav_nav_config_t ncfg;
     long baud = 460800;
     double plot_every = 0.0, timeout = 0.0, print_every = 1.0;
-    double t_last_frame, t_next_print, t_next_plot, t0;
+    double t_last_frame, t_last_byte, t_next_print, t_next_plot, t0;
+    /* quiet time before held frames are flushed: shorter than --timeout */
+    double idle_flush_s;
     const char *plot_png = "live.png", *out_path, *json_path;
     char err[600], gone_msg[600] = "";
     int rc, exit_code = HX_EXIT_OK, gone = 0, timed_out = 0, tty = isatty(fileno(stderr));
@@ -576,8 +666,10 @@ int hx_cmd_live(int argc, char **argv)
     signal(SIGPIPE, SIG_IGN);
     fprintf(stderr, "harness live: reading %s at %ld baud\n", hx_serial_path(port), baud);
 
+    idle_flush_s = (timeout > 0.0 && timeout < 2.0 * IDLE_FLUSH_S) ? 0.5 * timeout : IDLE_FLUSH_S;
     t0 = hx_now_s();
     t_last_frame = t0;
+    t_last_byte = t0;
     t_next_print = t0 + print_every;
     t_next_plot = t0 + plot_every;
     while (!g_stop && !L.have_end && !L.rec_failed && !L.restarted) {
@@ -606,6 +698,15 @@ int hx_cmd_live(int argc, char **argv)
             }
         }
         now = hx_now_s();
+        if (n > 0) {
+            t_last_byte = now;
+        } else if (L.dec.fill > 0u && now - t_last_byte >= idle_flush_s) {
+            uint32_t frames_before = L.dec.stats.frames;
+            flush_link(&L);
+            if (L.dec.stats.frames != frames_before) {
+                t_last_frame = now;
+            }
+        }
         if (timeout > 0.0 && now - t_last_frame > timeout) {
             timed_out = 1;
             break;
@@ -619,6 +720,9 @@ int hx_cmd_live(int argc, char **argv)
             t_next_plot = now + plot_every;
         }
     }
+    /* the frames still held behind an incomplete one (Ctrl-C, a hang-up or
+     * --timeout came before the line was quiet for idle_flush_s) */
+    flush_link(&L);
     if (tty && print_every > 0.0) {
         fputc('\n', stderr);
     }
@@ -688,7 +792,12 @@ int hx_cmd_live(int argc, char **argv)
         fprintf(sum_out, "live: link: %u bad frames, %u lost frames in %u drops, %u bad samples, %u bytes skipped, "
                "%u sequence restarts, %u repeated sample frames skipped\n",
                (unsigned)s->bad_frames, (unsigned)s->lost, (unsigned)s->gaps, (unsigned)L.bad_samples,
-               (unsigned)s->skipped_bytes, (unsigned)s->resets, (unsigned)L.repeated);
+               (unsigned)s->skipped_bytes, (unsigned)(s->resets - L.seq_repeats), (unsigned)L.repeated);
+        if (L.sensor_missing > 0u) {
+            fprintf(sum_out, "live: sensor: %u samples missing by the sensor's counter in %u gaps (lost on the "
+                             "sender, not on the link)\n",
+                    (unsigned)L.sensor_missing, (unsigned)L.sensor_gaps);
+        }
         if (L.have_info) {
             fprintf(sum_out, "live: sender: %s, %.6g Hz%s\n", L.info.sensor[0] ? L.info.sensor : "(unnamed)",
                     L.info.rate_hz, (L.info.flags & FNAV_WIRE_INFO_RATE_NOMINAL) ? " nominal" : "");
@@ -715,6 +824,13 @@ int hx_cmd_live(int argc, char **argv)
         if (L.have_end) {
             fprintf(sum_out, "live: end: END frame, the sender sent %u samples, %u received\n", (unsigned)L.end_count,
                    (unsigned)L.samples);
+        } else if (g_stop) {
+            /* how the run ended, as for END and a vanished port (nothing
+             * said it; a review, 2026-11-29) */
+            fprintf(sum_out, "live: end: stopped by %s\n",
+                    g_stop == SIGINT ? "SIGINT (Ctrl-C)" : (g_stop == SIGTERM ? "SIGTERM" : "SIGHUP"));
+        } else if (timed_out) {
+            fprintf(sum_out, "live: end: no valid frame for %.1f s (--timeout)\n", timeout);
         } else if (gone) {
             fprintf(sum_out, "live: end: the port went away\n");
             if (L.record_path != NULL) {
@@ -743,7 +859,19 @@ int hx_cmd_live(int argc, char **argv)
             exit_code = HX_EXIT_DATA;
         }
         if (timed_out) {
-            hx_error(CMD, "no valid frame for %.1f s (--timeout); giving up", timeout);
+            char what[120] = "";
+            if (L.samples == 0u) {
+                describe_nothing(&L, what, sizeof what);
+            }
+            hx_error(CMD, "no valid frame for %.1f s (--timeout); giving up%s%s", timeout, what[0] ? ": " : "",
+                     what);
+        } else if (L.samples == 0u && exit_code == HX_EXIT_OK) {
+            /* nothing to navigate or record is not a complete stream, as
+             * replay of an empty log exits 1 (Ctrl-C exited 0 here; a review) */
+            char what[120];
+            describe_nothing(&L, what, sizeof what);
+            hx_error(CMD, "no sample received from %s: %s", a.pos[0], what);
+            exit_code = HX_EXIT_DATA;
         }
     }
     live_free(&L);

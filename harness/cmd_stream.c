@@ -39,10 +39,13 @@ static const hx_spec_t k_spec = {
     2, 2, k_opts
 };
 
-static volatile sig_atomic_t g_stop;
+static volatile sig_atomic_t g_stop, g_abort;
 
 static void on_signal(int sig)
 {
+    if (g_stop) {
+        g_abort = 1; /* a second signal: stop writing what is already queued */
+    }
     g_stop = sig; /* the signal, for the exit status */
 }
 
@@ -68,25 +71,32 @@ typedef struct {
     size_t n;
     uint16_t seq;
     int failed;
+    int cut;                 /* a write was stopped by a signal: that batch was not all sent */
 } tx_t;
 
-static int tx_flush(tx_t *tx)
+/* Write the batch. *stop ends a write that the port does not take (a
+ * receiver that does not read): g_stop while samples are being sent, g_abort
+ * (a second signal) for the last batch, which a first signal does not cut. */
+static int tx_flush(tx_t *tx, const volatile sig_atomic_t *stop)
 {
-    if (tx->n > 0u && !tx->failed) {
-        if (hx_serial_write(tx->port, tx->buf, tx->n, WRITE_TIMEOUT_MS) != 0) {
+    if (tx->n > 0u && !tx->failed && !tx->cut) {
+        int r = hx_serial_write(tx->port, tx->buf, tx->n, WRITE_TIMEOUT_MS, stop);
+        if (r < 0) {
             hx_error(CMD, "%s", hx_serial_error(tx->port));
             tx->failed = 1;
+        } else if (r > 0) {
+            tx->cut = 1;
         }
     }
     tx->n = 0u;
-    return tx->failed ? -1 : 0;
+    return (tx->failed || tx->cut) ? -1 : 0;
 }
 
-/* Room for one more frame of the largest size. */
-static uint8_t *tx_room(tx_t *tx)
+/* Room for one more frame of the largest size (stop: as tx_flush's). */
+static uint8_t *tx_room(tx_t *tx, const volatile sig_atomic_t *stop)
 {
     if (sizeof tx->buf - tx->n < FNAV_WIRE_MAX_FRAME) {
-        (void)tx_flush(tx);
+        (void)tx_flush(tx, stop);
     }
     return tx->buf + tx->n;
 }
@@ -102,7 +112,7 @@ int hx_cmd_stream(int argc, char **argv)
     int rc = hx_args_parse(&k_spec, argc, argv, &a), loaded;
     int exit_code = HX_EXIT_OK;
     size_t i;
-    uint32_t sent = 0;
+    uint32_t sent = 0, left_out = 0; /* samples encoded (END's count); of them never written (--inject-drop) */
     int end_queued = 0;
     hx_progress_t prog;
     struct sigaction sa;
@@ -164,12 +174,12 @@ int hx_cmd_stream(int argc, char **argv)
                      (log.meta.has_temp ? FNAV_WIRE_INFO_TEMP : 0u) | (log.meta.has_seq ? FNAV_WIRE_INFO_SEQ : 0u);
         snprintf(info.sensor, sizeof info.sensor, "%s", log.meta.sensor);
         snprintf(info.axes, sizeof info.axes, "%s", log.meta.axes);
-        tx.n += fnav_wire_encode_info(tx_room(&tx), FNAV_WIRE_MAX_FRAME, tx.seq++, &info);
+        tx.n += fnav_wire_encode_info(tx_room(&tx, &g_stop), FNAV_WIRE_MAX_FRAME, tx.seq++, &info); /* empty: no flush */
     }
 
     hx_progress_start(&prog, "harness stream", (double)log.n);
     t_start = hx_now_s();
-    for (i = 0; i < log.n && !g_stop && !tx.failed; i++) {
+    for (i = 0; i < log.n && !g_stop && !tx.failed && !tx.cut; i++) {
         fnav_sample_t s;
         double due;
         uint8_t *f;
@@ -186,7 +196,7 @@ int hx_cmd_stream(int argc, char **argv)
             due = 0.0;
         }
         if (due > hx_now_s() + 5e-4) {
-            if (tx_flush(&tx) != 0) {
+            if (tx_flush(&tx, &g_stop) != 0) {
                 break;
             }
             sleep_until(due);
@@ -203,10 +213,11 @@ int hx_cmd_stream(int argc, char **argv)
             s.temp_c = (fnav_real_t)log.temp[i];
             s.flags |= FNAV_SAMPLE_HAS_TEMP;
         }
-        f = tx_room(&tx);
+        f = tx_room(&tx, &g_stop);
         k = fnav_wire_encode_sample(f, FNAV_WIRE_MAX_FRAME, tx.seq++, &s);
         sent++;
         if (drop > 0 && sent % (uint32_t)drop == 0u) {
+            left_out++;
             continue; /* never sent: the receiver sees the seq gap */
         }
         if (corrupt > 0 && sent % (uint32_t)corrupt == 0u) {
@@ -215,15 +226,20 @@ int hx_cmd_stream(int argc, char **argv)
         tx.n += k;
         hx_progress_update(&prog, (double)(i + 1));
     }
-    if (!tx.failed && !g_stop && !(hangup > 0 && (long)i == hangup)) {
-        tx.n += fnav_wire_encode_end(tx_room(&tx), FNAV_WIRE_MAX_FRAME, tx.seq++, sent);
+    if (!tx.failed && !tx.cut && !g_stop && !(hangup > 0 && (long)i == hangup)) {
+        /* tx_room() may flush the batch and reset tx.n: called in a statement
+         * of its own, since in `tx.n += encode(tx_room(&tx), ...)` C99 leaves
+         * open whether tx.n is read before the call (then the END frame went
+         * out with the batch already sent; gcc and clang read it after) */
+        uint8_t *end_at = tx_room(&tx, &g_abort); /* every sample is encoded: the last batches */
+        tx.n += fnav_wire_encode_end(end_at, FNAV_WIRE_MAX_FRAME, tx.seq++, sent);
         end_queued = 1;
     }
-    if (tx_flush(&tx) == 0 && hx_serial_drain(tx.port) != 0) {
+    if (tx_flush(&tx, &g_abort) == 0 && hx_serial_drain(tx.port) != 0) {
         hx_error(CMD, "%s", hx_serial_error(tx.port));
         tx.failed = 1;
     }
-    if (end_queued && !tx.failed) {
+    if (end_queued && !tx.failed && !tx.cut) {
         /* every sample and the END frame went out: a signal that came while
          * the last batch drained interrupted nothing (it exited 130 while
          * the receiver had the END frame and every sample; a review,
@@ -233,10 +249,22 @@ int hx_cmd_stream(int argc, char **argv)
     hx_progress_end(&prog);
     hx_serial_close(tx.port);
 
-    printf("stream: %u samples %s %s in %.1f s%s%s\n", (unsigned)sent,
-           tx.failed ? "encoded (the port failed before all were written) for" : "sent to", a.pos[1],
-           hx_now_s() - t_start, (hangup > 0 && (long)i == hangup) ? " (hung up on purpose, no END frame)" : "",
-           g_stop ? " (interrupted)" : "");
+    {
+        /* the samples left out on purpose are counted in END (the receiver
+         * sees them missing) but never written: said so (it printed "N
+         * samples sent" with all N left out; a review, 2026-11-29) */
+        char dropped[96] = "";
+        if (left_out > 0u) {
+            snprintf(dropped, sizeof dropped, " (%u of them left out by --inject-drop, %u written)",
+                     (unsigned)left_out, (unsigned)(sent - left_out));
+        }
+        printf("stream: %u samples %s %s%s in %.1f s%s%s\n", (unsigned)sent,
+               tx.failed ? "encoded (the port failed before all were written) for"
+                         : (tx.cut ? "encoded (the interrupt cut the write of the last batch) for" : "sent to"),
+               a.pos[1], dropped, hx_now_s() - t_start,
+               (hangup > 0 && (long)i == hangup) ? " (hung up on purpose, no END frame)" : "",
+               g_stop ? " (interrupted)" : "");
+    }
     if (tx.failed) {
         exit_code = HX_EXIT_IO;
     } else if (g_stop) {

@@ -122,17 +122,36 @@ long hx_serial_read(hx_serial_t *s, void *buf, size_t size, unsigned timeout_ms)
     return gone(s) ? HX_SERIAL_GONE : 0L;
 }
 
-int hx_serial_write(hx_serial_t *s, const void *buf, size_t n, unsigned timeout_ms)
+int hx_serial_write(hx_serial_t *s, const void *buf, size_t n, unsigned timeout_ms, const volatile sig_atomic_t *stop)
 {
-    enum sp_return r = sp_blocking_write(s->port, buf, n, timeout_ms);
-    if (r < 0) {
-        set_err(s, "write failed (port gone?)");
-        return -1;
-    }
-    if ((size_t)r != n) {
-        snprintf(s->err, sizeof s->err, "%.300s: write timed out after %u ms (%d of %zu bytes sent; nobody reading?)",
-                 s->path, timeout_ms, (int)r, n);
-        return -1;
+    const unsigned char *p = (const unsigned char *)buf;
+    size_t off = 0;
+    unsigned idle_ms = 0;
+    while (off < n) {
+        /* a slice, not the whole timeout: a write blocked on a port nobody
+         * reads held off Ctrl-C until the 10 s timeout (a review, 2026-11-29) */
+        const unsigned slice = timeout_ms - idle_ms < 100u ? timeout_ms - idle_ms : 100u;
+        enum sp_return r;
+        if (stop != NULL && *stop) {
+            return 1;
+        }
+        r = sp_blocking_write(s->port, p + off, n - off, slice);
+        if (r < 0) {
+            set_err(s, "write failed (port gone?)");
+            return -1;
+        }
+        if (r > 0) {
+            off += (size_t)r;
+            idle_ms = 0;
+        } else {
+            idle_ms += slice;
+            if (idle_ms >= timeout_ms) {
+                snprintf(s->err, sizeof s->err,
+                         "%.300s: the port took no data for %u ms (%zu of %zu bytes sent; nobody reading?)", s->path,
+                         timeout_ms, off, n);
+                return -1;
+            }
+        }
     }
     return 0;
 }

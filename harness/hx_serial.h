@@ -17,6 +17,7 @@
 #ifndef HX_SERIAL_H
 #define HX_SERIAL_H
 
+#include <signal.h>
 #include <stddef.h>
 
 typedef struct hx_serial hx_serial_t;
@@ -42,9 +43,13 @@ hx_serial_t *hx_serial_open(const char *path, int baud, int mode, char *err, siz
  *  has hung up or disappeared (message in hx_serial_error()). */
 long hx_serial_read(hx_serial_t *s, void *buf, size_t size, unsigned timeout_ms);
 
-/** Write all n bytes, waiting up to timeout_ms in total.
- *  @return 0, or -1 on a timeout or a vanished port (hx_serial_error()). */
-int hx_serial_write(hx_serial_t *s, const void *buf, size_t n, unsigned timeout_ms);
+/** Write all n bytes, giving up when the port takes no byte for timeout_ms,
+ *  or when *stop (a signal handler's flag; NULL: none) is set: libserialport
+ *  resumes a write a signal interrupts, so the wait is cut into 100 ms
+ *  slices and the flag looked at between them.
+ *  @return 0; 1 stopped by *stop (the bytes before were written); -1 on a
+ *  timeout or a vanished port (hx_serial_error()). */
+int hx_serial_write(hx_serial_t *s, const void *buf, size_t n, unsigned timeout_ms, const volatile sig_atomic_t *stop);
 
 /** Wait until everything written has left the port. 0 or -1. */
 int hx_serial_drain(hx_serial_t *s);

@@ -392,6 +392,35 @@ fnav_status_t fnav_wire_decode(fnav_wire_decoder_t *d, const uint8_t *in, size_t
     }
 }
 
+fnav_status_t fnav_wire_decode_flush(fnav_wire_decoder_t *d, fnav_wire_frame_t *frame)
+{
+    if (d == NULL || frame == NULL) {
+        return FNAV_E_ARG;
+    }
+    for (;;) {
+        size_t used;
+        fnav_status_t st = fnav_wire_decode(d, NULL, 0u, &used, frame);
+        if (st != FNAV_AGAIN) {
+            return st; /* a whole frame held behind the rejected candidate */
+        }
+        if (d->fill == 0u) {
+            return FNAV_AGAIN;
+        }
+        /* buf[0] starts a candidate no byte will complete: a lone first
+         * sync byte is skipped as any other; a sync word with a partial
+         * header or frame is a truncated frame, corrupt over the extent it
+         * announced (or what arrived of it), then the search goes on one
+         * byte further, as after a failed CRC */
+        if (d->fill < 2u) {
+            skip_byte(d);
+        } else if (d->fill < FNAV_WIRE_HEADER_SIZE) {
+            reject(d, d->fill);
+        } else {
+            reject(d, (uint16_t)FNAV_WIRE_FRAME_SIZE((size_t)d->buf[3]));
+        }
+    }
+}
+
 /* ------------------------------------------------------------- parsing */
 
 fnav_status_t fnav_wire_parse_sample(const fnav_wire_frame_t *f, fnav_sample_t *s)

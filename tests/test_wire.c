@@ -560,6 +560,176 @@ static void test_garbage_fuzz(void **state)
     assert_int_equal(d.stats.skipped_bytes + frame_bytes + d.fill, n + 400u);
 }
 
+/* Take every frame fnav_wire_decode_flush() gives out; returns their number
+ * and the type of the last one. */
+static int flush_all(fnav_wire_decoder_t *d, uint8_t *last_type)
+{
+    int n = 0;
+    fnav_wire_frame_t f;
+    fnav_status_t st;
+    while ((st = fnav_wire_decode_flush(d, &f)) == FNAV_OK) {
+        *last_type = f.type;
+        n++;
+    }
+    assert_int_equal(st, FNAV_AGAIN);
+    assert_int_equal(d->fill, 0);
+    return n;
+}
+
+/* The end of a stream: the frames behind a candidate no byte will complete
+ * (a truncated frame, a partial header, a false sync word announcing a long
+ * frame) come out of fnav_wire_decode_flush(); fnav_wire_decode() held them
+ * until the candidate's extent had arrived, that is for ever when the sender
+ * had stopped (harness live waited for an END frame it had received). */
+static void test_flush_end_of_stream(void **state)
+{
+    uint8_t buf[1024], t = 0;
+    fnav_wire_decoder_t d;
+    fnav_wire_frame_t f;
+    fnav_sample_t s;
+    size_t n, k, used;
+    (void)state;
+    memset(&s, 0, sizeof s);
+
+    /* a SAMPLE frame cut after 20 bytes, then the END frame (14 bytes): the
+     * cut frame announces 51 bytes and holds the END frame */
+    n = fnav_wire_encode_sample(buf, sizeof buf, 7, &s);
+    assert_int_equal(n, 51);
+    n = 20;
+    n += fnav_wire_encode_end(buf + n, sizeof buf - n, 8, 1);
+    fnav_wire_decoder_init(&d);
+    assert_int_equal(fnav_wire_decode(&d, buf, n, &used, &f), FNAV_AGAIN);
+    assert_int_equal(used, n);
+    assert_int_equal(d.fill, n);
+    assert_int_equal(flush_all(&d, &t), 1);
+    assert_int_equal(t, FNAV_WIRE_END);
+    assert_int_equal(d.stats.bad_frames, 1);
+    assert_int_equal(d.stats.skipped_bytes, 20);
+    assert_int_equal(d.stats.frames, 1);
+    assert_int_equal(fnav_wire_decode_flush(&d, &f), FNAV_AGAIN); /* empty: nothing more */
+    assert_int_equal(d.stats.bad_frames, 1);
+    /* the decoder goes on: the next frame is delivered, the cut one is a drop */
+    k = fnav_wire_encode_end(buf, sizeof buf, 10, 2);
+    assert_int_equal(fnav_wire_decode(&d, buf, k, &used, &f), FNAV_OK);
+    assert_int_equal(f.seq, 10);
+    assert_int_equal(d.stats.lost, 1);
+    assert_int_equal(d.stats.gaps, 1);
+
+    /* a sync word with a partial header: a truncated frame */
+    fnav_wire_decoder_init(&d);
+    buf[0] = FNAV_WIRE_SYNC0;
+    buf[1] = FNAV_WIRE_SYNC1;
+    buf[2] = FNAV_WIRE_SAMPLE;
+    assert_int_equal(fnav_wire_decode(&d, buf, 3, &used, &f), FNAV_AGAIN);
+    assert_int_equal(flush_all(&d, &t), 0);
+    assert_int_equal(d.stats.bad_frames, 1);
+    assert_int_equal(d.stats.skipped_bytes, 3);
+
+    /* a lone first sync byte is a skipped byte, not a frame */
+    fnav_wire_decoder_init(&d);
+    assert_int_equal(fnav_wire_decode(&d, buf, 1, &used, &f), FNAV_AGAIN);
+    assert_int_equal(flush_all(&d, &t), 0);
+    assert_int_equal(d.stats.bad_frames, 0);
+    assert_int_equal(d.stats.skipped_bytes, 1);
+
+    /* a false sync word announcing a 255-byte frame of an unknown type, then
+     * three whole frames (93 bytes < 265): all three come out, the false
+     * candidate counts once */
+    fnav_wire_decoder_init(&d);
+    buf[0] = FNAV_WIRE_SYNC0;
+    buf[1] = FNAV_WIRE_SYNC1;
+    buf[2] = 0x80u;
+    buf[3] = 0xFFu;
+    buf[4] = 0u;
+    buf[5] = 0u;
+    n = 6;
+    n += fnav_wire_encode_sample(buf + n, sizeof buf - n, 1, &s);
+    n += fnav_wire_encode_end(buf + n, sizeof buf - n, 2, 1);
+    n += fnav_wire_encode_end(buf + n, sizeof buf - n, 3, 1);
+    assert_int_equal(fnav_wire_decode(&d, buf, n, &used, &f), FNAV_AGAIN);
+    assert_int_equal(d.stats.frames, 0);
+    assert_int_equal(flush_all(&d, &t), 3);
+    assert_int_equal(d.stats.frames, 3);
+    assert_int_equal(d.stats.bad_frames, 1);
+    assert_int_equal(d.stats.skipped_bytes, 6);
+    assert_int_equal(d.stats.lost, 0);
+
+    /* a frame left undelivered by the caller comes out of the flush first */
+    fnav_wire_decoder_init(&d);
+    n = fnav_wire_encode_end(buf, sizeof buf, 1, 0);
+    n += fnav_wire_encode_end(buf + n, sizeof buf - n, 2, 0);
+    assert_int_equal(fnav_wire_decode(&d, buf, n, &used, &f), FNAV_OK);
+    assert_int_equal(fnav_wire_decode(&d, buf + used, n - used, &used, &f), FNAV_OK);
+    assert_int_equal(flush_all(&d, &t), 0); /* the second was taken; nothing else */
+    assert_int_equal(d.stats.frames, 2);
+
+    assert_int_equal(fnav_wire_decode_flush(NULL, &f), FNAV_E_ARG);
+    assert_int_equal(fnav_wire_decode_flush(&d, NULL), FNAV_E_ARG);
+}
+
+/* Flushes at random points of a damaged stream (a receiver's idle timer
+ * firing at any byte): every frame whole before the flush point is
+ * delivered, the decoder is empty after each flush, and every byte fed is
+ * skipped or delivered. */
+static void test_flush_random(void **state)
+{
+    static uint8_t stream[60000];
+    fnav_wire_decoder_t d;
+    fnav_sample_t s;
+    size_t n = 0, pos = 0;
+    uint32_t sent = 0, got = 0, delivered_bytes = 0, flushes = 0;
+    (void)state;
+    srand(4711);
+    memset(&s, 0, sizeof s);
+    while (n + 400 < sizeof stream) {
+        uint32_t g = (uint32_t)(rand() % 8), j;
+        size_t k;
+        for (j = 0; j < g; j++) {
+            int r = rand() % 4;
+            stream[n++] = (uint8_t)(r == 0 ? 0xA5 : (r == 1 ? 0x5A : rand() & 0xFF));
+        }
+        s.seq = sent;
+        k = fnav_wire_encode_sample(stream + n, sizeof stream - n, (uint16_t)sent, &s);
+        if (rand() % 10 == 0) {
+            k = (size_t)(1 + rand() % 50); /* cut short */
+        }
+        n += k;
+        sent++;
+    }
+    fnav_wire_decoder_init(&d);
+    while (pos < n) {
+        size_t k = (size_t)(1 + rand() % 200), p2 = 0, used;
+        fnav_wire_frame_t f;
+        if (k > n - pos) {
+            k = n - pos;
+        }
+        for (;;) {
+            fnav_status_t st = fnav_wire_decode(&d, stream + pos + p2, k - p2, &used, &f);
+            p2 += used;
+            if (st == FNAV_AGAIN) {
+                break;
+            }
+            got++;
+            delivered_bytes += FNAV_WIRE_FRAME_SIZE((uint32_t)f.len);
+        }
+        pos += k;
+        if (rand() % 4 == 0 || pos == n) {
+            fnav_status_t st;
+            while ((st = fnav_wire_decode_flush(&d, &f)) == FNAV_OK) {
+                got++;
+                delivered_bytes += FNAV_WIRE_FRAME_SIZE((uint32_t)f.len);
+            }
+            assert_int_equal(st, FNAV_AGAIN);
+            assert_int_equal(d.fill, 0);
+            flushes++;
+        }
+    }
+    assert_true(flushes > 10);
+    assert_true(got > 0);
+    assert_int_equal(d.stats.frames, got);
+    assert_int_equal(d.stats.skipped_bytes + delivered_bytes, n);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -573,6 +743,8 @@ int main(void)
         cmocka_unit_test(test_info_rate),
         cmocka_unit_test(test_seq_accounting),
         cmocka_unit_test(test_garbage_fuzz),
+        cmocka_unit_test(test_flush_end_of_stream),
+        cmocka_unit_test(test_flush_random),
     };
     return cmocka_run_group_tests_name("wire", tests, NULL, NULL);
 }

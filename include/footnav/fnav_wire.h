@@ -191,6 +191,28 @@ void fnav_wire_decoder_init(fnav_wire_decoder_t *d);
 FNAV_WARN_UNUSED fnav_status_t fnav_wire_decode(fnav_wire_decoder_t *d, const uint8_t *in, size_t n, size_t *used,
                                                 fnav_wire_frame_t *frame);
 
+/**
+ * The stream ended, or paused longer than a sender ever pauses inside a
+ * frame: the candidate frame being assembled will not be completed. Reject
+ * it (a truncated frame: counted once, as by fnav_wire_decode(), a lone first
+ * sync byte only skipped) and take out the frames held behind it, which
+ * fnav_wire_decode() would deliver only once the candidate's announced extent
+ * (up to FNAV_WIRE_MAX_FRAME bytes) had arrived: at the end of a stream,
+ * never (an END frame behind a truncated frame was not seen).
+ *
+ * Call it until it returns FNAV_AGAIN; the decoder is then empty (every
+ * byte fed was skipped or delivered) and goes on with fnav_wire_decode().
+ * A frame cut by a pause longer than the receiver waited is lost (counted as
+ * corrupt), so a receiver calls this after an idle time far longer than a
+ * frame takes on its link, or at the end of a stream.
+ *
+ * @param d      decoder
+ * @param frame  receives the frame on FNAV_OK (valid until the next call
+ *               on d, as from fnav_wire_decode())
+ * @return FNAV_OK (a frame), FNAV_AGAIN (the decoder is empty), FNAV_E_ARG
+ */
+FNAV_WARN_UNUSED fnav_status_t fnav_wire_decode_flush(fnav_wire_decoder_t *d, fnav_wire_frame_t *frame);
+
 /** Sample of a SAMPLE frame, as sent (any finite float, any time; what a
  *  consumer accepts is its own policy: fnav_nav_push refuses values beyond
  *  FNAV_INPUT_MAX_ABS and times beyond FNAV_T_NS_MAX). @return FNAV_OK,

@@ -187,6 +187,7 @@ expect_rc "$LIVE_RC" 1 "live with dropped frames"
 grep_in "$T/live.out" "0 bad frames, $DROP lost frames in $DROP drops" "every drop counted"
 grep_in "$T/live.err" "drop: 1 frame(s) lost before frame seq 501" "the first drop is reported with its sequence number"
 grep_in "$T/live.out" "the sender sent $N samples, $((N - DROP)) received" "END count shows the missing samples"
+grep_in "$T/stream.out" "$N samples sent to $B ($DROP of them left out by --inject-drop, $((N - DROP)) written)" "stream says how many it left out"
 
 # --- the port disappears mid-stream: clean end, recording intact
 start_live --record "$T/rec_h.bin" --timeout 60
@@ -275,7 +276,8 @@ reads_back rec_g.bin 299 "the recording without it reads back whole"
 live_case repeat rec_rep.bin 5
 expect_rc "$LIVE_RC" 0 "live when a sample frame arrives twice (the copy skipped; nothing lost)"
 grep_in "$T/live.err" "sample frame seq 101 received twice; the copy skipped" "the repetition is reported"
-grep_in "$T/live.out" "1 repeated sample frames skipped" "the summary counts it"
+grep_in "$T/live.out" "0 sequence restarts, 1 repeated sample frames skipped" "the summary counts it, as a repetition and not a restart"
+if grep -q "restart:" "$T/live.err"; then fail "the repetition is reported as a sender restart"; cat "$T/live.err"; else pass "no restart reported for a repeated frame"; fi
 reads_back rec_rep.bin 300 "the recording holds each sample once"
 
 live_case badrate rec_n.bin 5
@@ -288,6 +290,19 @@ expect_rc "$LIVE_RC" 1 "live from a sender of NAV frames only"
 grep_in "$T/live.out" "NAV frames but no SAMPLE frames" "live says why nothing is navigated"
 grep_in "$T/live.out" "nothing recorded" "live does not claim a recording"
 if [ -e "$T/rec_v.bin" ]; then fail "a recording was created without samples"; else pass "no empty recording left"; fi
+
+live_case truncend rec_t.bin 5
+expect_rc "$LIVE_RC" 1 "live when the last sample frame is cut short before END"
+grep_in "$T/live.out" "END frame, the sender sent 300 samples, 299 received" "the END frame behind the cut frame is read (it was held until --timeout)"
+grep_in "$T/live.out" "1 bad frames, 1 lost frames in 1 drops" "the cut frame is counted"
+if grep -q "no valid frame" "$T/live.err"; then fail "live waited for --timeout: $(cat "$T/live.err")"; else pass "live ends at the END frame, not at --timeout"; fi
+reads_back rec_t.bin 299 "the recording holds the 299 whole samples"
+
+live_case sensordrop rec_sd.bin 5
+expect_rc "$LIVE_RC" 1 "live with a frame lost on the link and samples lost on the sender"
+grep_in "$T/live.err" "sensor drop: 5 sample(s) missing by the sensor's counter before sample seq 155" "the sender's own drop is reported"
+if grep -q "sensor drop:.*before sample seq 101" "$T/live.err"; then fail "a link drop reported as the sender's"; else pass "the link drop is not taken for the sender's"; fi
+grep_in "$T/live.out" "live: sensor: 5 samples missing by the sensor's counter in 1 gaps" "the summary counts the sender's drop"
 
 # --- the reader of --out - goes away (live ... | head): a write error (exit 3)
 # with the summary and a complete recording, not a death by SIGPIPE
@@ -320,9 +335,29 @@ echo '{"stale": "an earlier run"}' >"$T/stale.json"
 start_live --timeout 1 --json "$T/stale.json"
 wait_live
 expect_rc "$LIVE_RC" 1 "live --timeout with no sender"
-grep_in "$T/live.err" "no valid frame for" "the timeout is explained"
+grep_in "$T/live.err" "no valid frame for 1.0 s (--timeout); giving up: nothing received" "the timeout is explained"
+grep_in "$T/live.out" "live: end: no valid frame for 1.0 s (--timeout)" "the summary says how the run ended"
 if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d.get('aligned') is False else 1)" "$T/stale.json"; then
     pass "--json written without a frame (aligned false)"; else fail "--json not rewritten: $(cat "$T/stale.json")"; fi
+
+# --- bytes that never make a frame (a wrong baud rate), ended by SIGTERM:
+# exit 1 and messages that say what arrived (it exited 0 as if complete, and
+# the status line read "aligning (keep the foot still)"; a review, 2026-11-29)
+stop_link
+start_link
+LD_PRELOAD=$SEAM "$H" live "$A" --print-every 0.2 >"$T/live.out" 2>"$T/live.err" &
+LIVE=$!
+wait_for 'grep -q "reading" "$T/live.err"' 200
+# 40 times the bytes 0..255: never A5 followed by 5A
+/usr/bin/python3 -c "import sys; sys.stdout.buffer.write(bytes(range(256)) * 40)" >"$T/garbage.bin"
+timeout 30 cat "$T/garbage.bin" >"$B"
+wait_for 'grep -q "10240 bytes received" "$T/live.err"' 100
+kill -TERM "$LIVE" 2>/dev/null
+wait_live
+expect_rc "$LIVE_RC" 1 "live ended by SIGTERM without a sample"
+grep_in "$T/live.err" "waiting: 10240 bytes received, no valid frame (wrong --baud" "the status line says bytes came but no frame"
+grep_in "$T/live.err" "no sample received from $A: 10240 bytes received" "the end says no sample was received"
+grep_in "$T/live.out" "live: end: stopped by SIGTERM" "the summary says how the run ended"
 
 # --- a recording that cannot be written (a full disk): the summary counts
 # what the file holds, not what was received (it said 40 recorded)
@@ -330,6 +365,24 @@ start_live --record /dev/full
 stream vectors/walk.bin --speed 0
 wait_live
 grep_in "$T/live.out" "recorded 0 samples" "a failed recording counts what it holds"
+
+# --- stream interrupted while a write waits on a port nobody reads: it
+# stops at once with 143 (it waited out the 10 s write timeout, then exited
+# 3, as libserialport resumes an interrupted write; a review, 2026-11-29)
+stop_link
+start_link
+LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 0 >"$T/stream.out" 2>"$T/stream.err" &
+STREAM=$!
+sleep 1
+t0=$(date +%s)
+kill -TERM "$STREAM" 2>/dev/null
+wait "$STREAM"
+STREAM_RC=$?
+STREAM=""
+dt=$(($(date +%s) - t0))
+expect_rc "$STREAM_RC" 143 "stream stopped by SIGTERM while its write is blocked"
+if [ "$dt" -le 5 ]; then pass "it stopped within $dt s"; else fail "it took $dt s to stop"; fi
+grep_in "$T/stream.out" "the interrupt cut the write" "stream says the batch was cut"
 
 # --- stream: an interrupt while the END frame drains interrupts nothing:
 # every sample and END reach the receiver, exit 0 (it exited 130; a review)

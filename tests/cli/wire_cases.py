@@ -7,6 +7,10 @@ usage: wire_cases.py CASE OUT
   range     300 samples, the 100th with an acceleration of 1e20 m/s^2
   badrate   an INFO frame whose rate is NaN, then 300 samples and an END
   navonly   an INFO frame and 300 NAV frames (an on-sensor filter's output)
+  truncend  300 samples, the last one cut after 20 of its 51 bytes (bytes lost
+            on the line), then the END frame, then silence
+  sensordrop 300 samples whose sensor counter skips 5 values after sample
+            149 (lost on the sender), and sample frame 101 lost on the link
 """
 import math
 import os
@@ -58,6 +62,18 @@ def main():
         b = info(400.0) + b''.join(
             frame(NAV, k + 1, nav_payload(k * DT_NS, k, 1, 0, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)))
             for k in range(300))
+    elif case == 'truncend':
+        # the cut frame announces 51 bytes; the END frame (14) is all that follows
+        fr = [frame(SAMPLE, k + 1, still(k)) for k in range(300)]
+        fr[-1] = fr[-1][:20]
+        b = info(400.0) + b''.join(fr) + end(301, 300)
+    elif case == 'sensordrop':
+        fr = []
+        for k in range(300):
+            c = k if k < 150 else k + 5  # the sensor's counter: 150..154 never sent
+            fr.append(frame(SAMPLE, k + 1, sample_payload(k * DT_NS, c, 2, (0.0, 0.0, 9.81), (0.0, 0.0, 0.0), 0.0)))
+        del fr[100]  # frame seq 101 (counter 100) lost on the link: not the sensor's drop
+        b = info(400.0) + b''.join(fr) + end(301, 300)
     else:
         sys.exit('unknown case ' + case)
     with open(out, 'wb') as f:

@@ -2,7 +2,8 @@
  * parser. The first input byte sets the chunk size the stream is fed in
  * (1..256 bytes), so resynchronisation across chunk boundaries is covered;
  * the rest is the received byte stream. Checks the decoder's invariants:
- * every byte fed is consumed, skipped, delivered or still buffered. */
+ * every byte fed is consumed, skipped, delivered or still buffered; after
+ * fnav_wire_decode_flush() (the end of the stream) nothing is buffered. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -57,6 +58,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     if (d.fill > FNAV_WIRE_MAX_FRAME || (size_t)d.stats.skipped_bytes + delivered + d.fill != size) {
         abort();
+    }
+    {
+        fnav_wire_frame_t f;
+        fnav_status_t st;
+        while ((st = fnav_wire_decode_flush(&d, &f)) == FNAV_OK) {
+            delivered += FNAV_WIRE_FRAME_SIZE((size_t)f.len);
+        }
+        if (st != FNAV_AGAIN || d.fill != 0u || (size_t)d.stats.skipped_bytes + delivered != size) {
+            abort();
+        }
     }
     return 0;
 }
