@@ -108,6 +108,7 @@ int hx_cmd_replay(int argc, char **argv)
     }
     rc = hx_nav_replay("replay", a.pos[0], fmt, in_rate, &cfg, o.rate_hz, csv, &traj, HX_REPLAY_PROGRESS | HX_REPLAY_AXES,
                        err, sizeof err);
+    traj.input_complete = 1;
     if (csv != NULL && (csv == stdout ? fflush(csv) != 0 || ferror(csv) : fclose(csv) != 0) && rc >= 0) {
         snprintf(err, sizeof err, "cannot write %s", strcmp(out_path, "-") == 0 ? "standard output" : out_path);
         rc = -3;
@@ -123,6 +124,8 @@ int hx_cmd_replay(int argc, char **argv)
     } else if (rc == 1) {
         hx_error("replay", "%s (frames before it were written)", err);
         exit_code = HX_EXIT_DATA;
+        traj.input_complete = 0;
+        snprintf(traj.input_error, sizeof traj.input_error, "%s", err);
     } else if (rc == 2) {
         hx_error("replay", "%s; outputs were still written, computed from the values as given", err);
         exit_code = HX_EXIT_DATA;

@@ -1140,6 +1140,14 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddItemToObject(root, "input_rate_hz", num(t->in_rate_hz > 0.0 ? t->in_rate_hz : t->rate_hz));
     cJSON_AddNumberToObject(root, "window_samples", t->window);
     cJSON_AddBoolToObject(root, "aligned", t->aligned);
+    if (t->input_complete >= 0) {
+        /* as info's and psd's: a log cut short shows in the JSON, not only
+         * in the exit status (a review, 2026-11-29) */
+        cJSON_AddBoolToObject(root, "complete", t->input_complete);
+        if (!t->input_complete) {
+            cJSON_AddStringToObject(root, "error", t->input_error);
+        }
+    }
     cJSON_AddItemToObject(root, "duration_s", num(s->duration_s));
     cJSON_AddItemToObject(root, "distance_m", num(s->path_m));
     cJSON_AddItemToObject(root, "distance_horizontal_m", num(s->path_h_m));

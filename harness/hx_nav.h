@@ -77,6 +77,10 @@ typedef struct {
     fnav_align_result_t align;   /**< alignment result */
     int aligned;
     hx_axes_result_t axes;       /**< the axes check (hx_axes.h) */
+    /** replay: 1 when the input was read to its end, 0 when it stopped at
+     *  an error (input_error); -1 not said (live): no JSON keys */
+    int input_complete;
+    char input_error[512];
 } hx_traj_t;
 
 void hx_traj_free(hx_traj_t *t);

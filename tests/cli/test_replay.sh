@@ -638,6 +638,17 @@ else
     fail "path plot ranges: $(grep range "$T/gp.txt" | tr '\n' ' ')"
 fi
 
+# --- a log that stops at a bad line says so in the JSON too (complete,
+# error), as info's and psd's: only the exit status said it
+"$H" sim --motion stand:5,walk:10 --rate 100 --out "$T/cl.csv" >/dev/null 2>&1
+awk -F, 'NR == 900 { $2 = "abc" } { print }' OFS=, "$T/cl.csv" >"$T/cl_bad.csv"
+expect_exit 1 "a bad line half way" "$H" replay "$T/cl_bad.csv" --quiet --json "$T/cl_bad.json"
+json "$T/cl_bad.json" 'j["complete"] is False and "cl_bad.csv:900:" in j["error"]' &&
+    pass "JSON: complete false, the error with its line" || fail "cut JSON: $(cat "$T/pyerr")"
+expect_exit 0 "a whole log" "$H" replay "$T/cl.csv" --quiet --json "$T/cl.json"
+json "$T/cl.json" 'j["complete"] is True and "error" not in j' && pass "JSON: complete true, no error" ||
+    fail "whole JSON: $(cat "$T/pyerr")"
+
 # --- a rate too low to navigate says so, not "check --param values" with no
 # --param given (stamps of 10 s resolution; --rate 1)
 "$H" sim --motion stand:5,walk:10 --rate 100 --out "$T/lr.csv" >/dev/null 2>&1
