@@ -1558,9 +1558,9 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
         const double dof = 3.0 * NAV_MIN_HOLD;
         r->confident = 0;
         snprintf(r->why, sizeof r->why,
-                 "the held-out segment has %d stances with zero-velocity updates; the mean innovation of fewer than "
+                 "the held-out segment has %d stance%s with zero-velocity updates; the mean innovation of fewer than "
                  "%d is not known to -%.0f %% / +%.0f %% (95 %%)",
-                 nv->nst[SG_HOLD], NAV_MIN_HOLD, 100.0 * (1.0 - gsl_cdf_chisq_Pinv(0.025, dof) / dof),
+                 nv->nst[SG_HOLD], nv->nst[SG_HOLD] == 1 ? "" : "s", NAV_MIN_HOLD, 100.0 * (1.0 - gsl_cdf_chisq_Pinv(0.025, dof) / dof),
                  100.0 * (gsl_cdf_chisq_Pinv(0.975, dof) / dof - 1.0));
     }
     /* baseline noise */
@@ -2070,7 +2070,8 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
     size_t k;
     char b[256];
     (void)r;
-    fprintf(f, "navigation: %d stances (fit %d, held out %d); twin noise %s:", nv->nst[SG_FULL], nv->nst[SG_FIT],
+    fprintf(f, "navigation: %d stance%s (fit %d, held out %d); twin noise %s:", nv->nst[SG_FULL],
+            nv->nst[SG_FULL] == 1 ? "" : "s", nv->nst[SG_FIT],
             nv->nst[SG_HOLD], nv->from_profile ? "from the profile" : "from the stances (white)");
     for (c = 0; c < SG_NCH; c++) {
         fprintf(f, " %s %.3g", sg_channel_name(c), nv->white[c]);

@@ -315,7 +315,7 @@ else
 fi
 "$H" sim --motion walk --duration 12 --rate 100 --profile mtx --seed 5 --out "$T/w2.csv" >/dev/null 2>&1 || fail "sim short walk"
 expect_exit 1 "short walk" "$H" simgap "$T/w2.csv" --quiet --seeds 4 --json "$T/w2.json"
-json "$T/w2.json" 'j["verdict"]["answer"] == "too-short" and "stances" in j["too_short"]' &&
+json "$T/w2.json" 'j["verdict"]["answer"] == "too-short" and "stance" in j["too_short"]' &&
     pass "short walk: too few stances said" || fail "short walk JSON: $(cat "$T/pyerr")"
 # the mean first-update NIS of 10 stances (chi2_30 / 30) is known to 0.560 -
 # 1.566 at 95 % (scipy chi2.ppf), not to +-50 % as it said (a review)
@@ -535,6 +535,11 @@ PY
 expect_exit 0 "static log with a line in the ends only" "$H" simgap "$T/te.csv" --static --quiet --json "$T/te.json"
 json "$T/te.json" 'j["verdict"]["answer"] not in ("explained", "partly-explained") and j["verdict"]["effects"] == []' &&
     pass "a line in the fit segment only is not confirmed by either fold" || fail "tone in the ends: $(cat "$T/pyerr"; "$PY" -c 'import json,sys; print(json.load(open(sys.argv[1]))["verdict"])' "$T/te.json")"
+
+# one held-out stance is "1 stance", not "1 stances"
+"$H" sim --motion stand:5,walk:2,stand:3 --rate 100 --out "$T/one.csv" >/dev/null 2>&1 || fail "sim one stance"
+expect_exit 1 "one held-out stance" "$H" simgap "$T/one.csv" --walk --seeds 3 --json "$T/one.json"
+expect_err "has 1 stance with zero-velocity updates" "one stance in the singular"
 
 if [ "$fails" -ne 0 ]; then echo "test_simgap.sh: $fails failure(s)"; exit 1; fi
 echo "test_simgap.sh: all passed"
