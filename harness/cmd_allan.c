@@ -1303,11 +1303,17 @@ static int write_plot(const run_t *R, const char *path)
     return hx_plot_close(&p, CMD);
 }
 
+/* A control character, which would break the profile's one-line name. */
+static int is_control(char c)
+{
+    return (unsigned char)c < 0x20u || c == 0x7f;
+}
+
 /* Whether a profile name is one line of printable text. */
 static int name_printable(const char *s)
 {
     for (; *s != '\0'; s++) {
-        if ((unsigned char)*s < 0x20u || *s == 0x7f) {
+        if (is_control(*s)) {
             return 0;
         }
     }
@@ -1324,7 +1330,7 @@ static void base_name(const char *path, char *out, size_t n)
         *dot = '\0';
     }
     for (c = out; *c != '\0'; c++) {
-        if ((unsigned char)*c < 0x20u || *c == 0x7f) {
+        if (is_control(*c)) {
             *c = '_'; /* the name is one line of the profile */
         }
     }

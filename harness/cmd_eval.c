@@ -1057,10 +1057,21 @@ static int overlaps(long a0, long a1, long b0, long b1)
 }
 
 /* v with one decimal, or "-" when there is none (no event to time). */
+/* v in the printf format fmt (one double), or "-" when there is none (a
+ * failed run: "nan" in a table until 2026-11-29). */
+static const char *fmt_v(char *buf, size_t size, const char *fmt, double v)
+{
+    if (isfinite(v)) {
+        snprintf(buf, size, fmt, v);
+    } else {
+        snprintf(buf, size, "-");
+    }
+    return buf;
+}
+
 static const char *fmt_1f(char *buf, size_t size, double v)
 {
-    snprintf(buf, size, isfinite(v) ? "%.1f" : "-", v);
-    return buf;
+    return fmt_v(buf, size, "%.1f", v);
 }
 
 /* Counts of one trial and foot's matching. */
@@ -1378,20 +1389,7 @@ static const char *target(int have_data, int ok)
 
 static const char *fmt_pct(char *buf, size_t size, double v)
 {
-    snprintf(buf, size, isfinite(v) ? "%.2f %%" : "-", v);
-    return buf;
-}
-
-/* v in the printf format fmt (one double), or "-" when there is none (a
- * failed run: "nan" in a table until 2026-11-29). */
-static const char *fmt_v(char *buf, size_t size, const char *fmt, double v)
-{
-    if (isfinite(v)) {
-        snprintf(buf, size, fmt, v);
-    } else {
-        snprintf(buf, size, "-");
-    }
-    return buf;
+    return fmt_v(buf, size, "%.2f %%", v);
 }
 
 /* A row of the rate experiment: label (its first two cells) and three

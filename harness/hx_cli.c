@@ -369,12 +369,12 @@ int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, c
      * exit 0) */
     for (i = 0; outputs[i] != NULL; i++) {
         const char *oi = hx_arg(a, outputs[i]);
-        for (j = i + 1; oi != NULL && outputs[j] != NULL; j++) {
+        struct stat st;
+        if (oi == NULL || (stat(oi, &st) == 0 && !S_ISREG(st.st_mode))) {
+            continue; /* /dev/null twice discards both; a directory fails on its own */
+        }
+        for (j = i + 1; outputs[j] != NULL; j++) {
             const char *oj = hx_arg(a, outputs[j]);
-            struct stat st;
-            if (stat(oi, &st) == 0 && !S_ISREG(st.st_mode)) {
-                break; /* /dev/null twice discards both; a directory fails on its own */
-            }
             if (oj != NULL && (strcmp(oi, oj) == 0 || hx_same_file(oi, oj))) {
                 hx_error(cmd, "%s %s and %s %s name the same file (one would overwrite the other)", outputs[i], oi,
                          outputs[j], oj);

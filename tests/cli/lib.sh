@@ -21,3 +21,14 @@ expect_out_re() { # extended-regex description: checks $T/out (anchor with ^ and
 json() { # json FILE PYTHON-EXPRESSION-ON-j: passes when it is true (uses $PY, /usr/bin/python3 if unset)
     "${PY:-/usr/bin/python3}" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' "$1" "$2" 2>"$T/pyerr"
 }
+fake_gnuplot() { # DIR: a stand-in gnuplot there that keeps its script in $GP_SCRIPT and creates the output file
+    mkdir -p "$1"
+    cat >"$1/gnuplot" <<'GP'
+#!/bin/sh
+cat >"$GP_SCRIPT"
+out=$(sed -n "s/^set output '\(.*\)'$/\1/p" "$GP_SCRIPT" | head -n 1)
+[ -n "$out" ] && : >"$out"
+exit 0
+GP
+    chmod +x "$1/gnuplot"
+}

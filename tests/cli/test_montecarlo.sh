@@ -66,9 +66,7 @@ done
 
 # the plot names the motion, the profile and the runs, and draws a variant's
 # error and predicted sd in one colour (a stand-in gnuplot keeps the script)
-mkdir -p "$T/fakegp"
-printf '#!/bin/sh\ncat >"$GP_SCRIPT"\nout=$(sed -n "s/^set output '"'"'\\(.*\\)'"'"'$/\\1/p" "$GP_SCRIPT" | head -n 1)\n[ -n "$out" ] && : >"$out"\nexit 0\n' >"$T/fakegp/gnuplot"
-chmod +x "$T/fakegp/gnuplot"
+fake_gnuplot "$T/fakegp"
 PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp.txt" "$H" montecarlo --motion "stand:5,walk:3" --seeds 2 --bias-model both \
     --profile mtx --quiet --plot "$T/mc.png" >/dev/null 2>&1
 if grep -q "title 'montecarlo: motion stand:5,walk:3, profile mtx, 2 runs'" "$T/gp.txt" &&

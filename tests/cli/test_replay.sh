@@ -620,15 +620,7 @@ if grep -q "ring of .* cuts" "$T/w4k19.err"; then fail "the window still cut at 
 # distance on both axes: with equal units alone, a straight walk was a strip a
 # few pixels wide whose east tick labels overlapped. A stand-in gnuplot keeps
 # the script it is given.
-mkdir -p "$T/fakegp"
-cat >"$T/fakegp/gnuplot" <<'GP'
-#!/bin/sh
-cat >"$GP_SCRIPT"
-out=$(sed -n "s/^set output '\(.*\)'$/\1/p" "$GP_SCRIPT" | head -n 1)
-[ -n "$out" ] && : >"$out"
-exit 0
-GP
-chmod +x "$T/fakegp/gnuplot"
+fake_gnuplot "$T/fakegp"
 "$H" sim --motion stand:5,walk:10,stand:3 --out "$T/straight.bin" >/dev/null 2>&1
 PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp.txt" "$H" replay "$T/straight.bin" --plot "$T/straight.png" --quiet >/dev/null 2>&1
 if awk '/^set [xy]range/ { r = $3; gsub(/[\[\]]/, "", r) } /^set xrange/ { split(r, x, ":") } /^set yrange/ { split(r, y, ":") }

@@ -352,9 +352,7 @@ json "$T/spin.json" 'j["verdict"]["answer"] == "too-short" and j["navigation"]["
 # JSON has a stance begin; a review). A stand-in gnuplot keeps the script.
 "$H" sim --motion walk --duration 40 --rate 100 --profile mtx --seed 4 --out "$T/wg0.csv" >/dev/null 2>&1 || fail "sim walk for a gap"
 awk -F, 'NR == 1 || $1 < 15 || $1 >= 20' "$T/wg0.csv" > "$T/wgap.csv"
-mkdir -p "$T/fakegp"
-printf '#!/bin/sh\ncat >"$GP_SCRIPT"\nout=$(sed -n "s/^set output '"'"'\\(.*\\)'"'"'$/\\1/p" "$GP_SCRIPT" | head -n 1)\n[ -n "$out" ] && : >"$out"\nexit 0\n' >"$T/fakegp/gnuplot"
-chmod +x "$T/fakegp/gnuplot"
+fake_gnuplot "$T/fakegp"
 PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp.txt" "$H" simgap "$T/wgap.csv" --quiet --seeds 3 --json "$T/wgap.json" --plot "$T/wgapp" >/dev/null 2>&1
 sed -n '/^\$d << EOD/,/^EOD/p' "$T/gp.txt" | sed '1d;$d' | cut -d' ' -f1 > "$T/wgap.t"
 json "$T/wgap.json" '(w := [p for p in j["navigation"]["gap"]["full"]["points"] if p["kind"] == "window"][-1])["real"] is not None and max(float(x) for x in open(sys.argv[1].replace(".json", ".t"))) >= w["x_lo"]' &&
