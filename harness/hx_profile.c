@@ -36,10 +36,40 @@ static char *trim(char *s)
     return s;
 }
 
+/* One line of f into line[size] without its newline. Returns its length,
+ * or READ_EOF at the end of the file, READ_LONG when it does not fit,
+ * READ_NUL on a NUL byte (not a text file: with fgets it showed as "line too
+ * long"), READ_ERROR when reading failed (a directory read as a file was
+ * "not a footnav profile"; a review, 2026-11-29). */
+enum { READ_EOF = -1, READ_LONG = -2, READ_NUL = -3, READ_ERROR = -4 };
+static long read_line(FILE *f, char *line, size_t size)
+{
+    size_t n = 0;
+    int c;
+    while ((c = getc(f)) != EOF && c != '\n') {
+        if (c == '\0') {
+            return READ_NUL;
+        }
+        if (n + 1u >= size) {
+            return READ_LONG;
+        }
+        line[n++] = (char)c;
+    }
+    if (ferror(f)) {
+        return READ_ERROR;
+    }
+    if (c == EOF && n == 0u) {
+        return READ_EOF;
+    }
+    line[n] = '\0';
+    return (long)n;
+}
+
 int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_size)
 {
     FILE *f = fopen(path, "r");
-    char line[514]; /* 511 characters (profile-format.md), CR LF and the terminator */
+    char line[513]; /* 511 characters (profile-format.md), a CR and the terminator */
+    long len;
     int lineno = 0, have_magic = 0, have_rate = 0, have[6] = { 0, 0, 0, 0, 0, 0 };
     int i;
     if (f == NULL) {
@@ -47,16 +77,24 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
         return -1;
     }
     memset(p, 0, sizeof *p);
-    while (fgets(line, sizeof line, f) != NULL) {
+    while ((len = read_line(f, line, sizeof line)) != READ_EOF) {
         char *eq, *key, *val;
         lineno++;
-        {
-            size_t len = strcspn(line, "\r\n");
-            if ((strchr(line, '\n') == NULL && !feof(f)) || len > 511u) {
-                snprintf(err, err_size, "%s:%d: line too long (at most 511 characters)", path, lineno);
-                fclose(f);
-                return -1;
-            }
+        if (len == READ_ERROR) {
+            snprintf(err, err_size, "%s: cannot read profile (%s)", path, strerror(errno));
+            fclose(f);
+            return -1;
+        }
+        if (len == READ_NUL) {
+            snprintf(err, err_size, "%s:%d: NUL byte: not a text file (a profile is 'key = value' lines)", path,
+                     lineno);
+            fclose(f);
+            return -1;
+        }
+        if (len == READ_LONG || (len > 511 && line[len - 1] != '\r')) {
+            snprintf(err, err_size, "%s:%d: line too long (at most 511 characters)", path, lineno);
+            fclose(f);
+            return -1;
         }
         key = trim(line);
         if (*key == '\0' || *key == '#') {

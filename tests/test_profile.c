@@ -243,8 +243,24 @@ static void test_file_round_trip(void **state)
         }
         assert_non_null(strstr(err, "line too long"));
     }
+    /* a NUL byte (a binary file given as the profile, e.g. a .bin log)
+     * says so; it was reported as "line too long" (a review, 2026-11-29) */
+    f = fopen(path, "wb");
+    assert_non_null(f);
+    fputs("format = footnav-profile 1\nrate_hz = 200\n", f);
+    fputc('\0', f);
+    fputs("accel_tau_s = 1 1 1\n", f);
+    fclose(f);
+    assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":3: NUL byte"));
+    assert_null(strstr(err, "too long"));
     remove(path);
     assert_int_equal(hx_profile_load("/nonexistent/dir/p.profile", &b, err, sizeof err), -1);
+    /* a directory opens but cannot be read: a read error, not "not a
+     * footnav profile (no 'format' line)" (a review, 2026-11-29) */
+    assert_int_equal(hx_profile_read("/tmp/", &b, err, sizeof err), -1);
+    assert_non_null(strstr(err, "cannot read profile"));
+    assert_null(strstr(err, "not a footnav profile"));
 }
 
 /* The built-in generic MEMS profile (the navigation's default) is the file
