@@ -101,6 +101,21 @@ else
     fail "fw_size.sh did not fail over budget"; cat "$T/out"
 fi
 
+# docs/firmware.md's "RAM by object" rows add up to its total (they did
+# not: 16 bytes more, from the SysTick base's 28 bytes, which is 16, and the
+# application's 224, which is 220; a review, 2026-11-29)
+awk '/^RAM by object/ { on = 1; next }
+     on && /^\| \*\*total\*\*/ { t = $0; gsub(/[^0-9]/, "", t); total = t; on = 0; next }
+     on && /^\| / && !/^\| (object|---)/ { n = split($0, c, "|"); v = c[n - 1]; gsub(/[ ,]/, "", v);
+         k = split(v, p, "+"); for (i = 1; i <= k; i++) sum += p[i] }
+     END { printf "%d %d\n", sum, total }' docs/firmware.md >"$T/ramsum"
+read -r RSUM RTOTAL <"$T/ramsum"
+if [ "$RTOTAL" -gt 0 ] && [ "$RSUM" -eq "$RTOTAL" ]; then
+    pass "docs/firmware.md RAM by object: the rows add up to the total ($RTOTAL bytes)"
+else
+    fail "docs/firmware.md RAM by object: rows sum to $RSUM bytes, the total says $RTOTAL"
+fi
+
 if [ "$fails" -ne 0 ]; then
     echo "test_firmware_tools.sh: $fails failure(s)"
     exit 1
