@@ -116,6 +116,37 @@ else
     fail "docs/firmware.md RAM by object: rows sum to $RSUM bytes, the total says $RTOTAL"
 fi
 
+# docs/firmware.md's object sizes against sizeof on the target (nm -S of a
+# probe object), with the firmware's options and with the harness defaults
+# (the filter's 11,016 bytes with the defaults was stale: 11,632; a review,
+# 2026-11-29)
+cat >"$T/sz.c" <<'EOF'
+#include "footnav/fnav_nav.h"
+#include "footnav/fnav_allan.h"
+#include "footnav/fnav_welch.h"
+char sz_nav[sizeof(fnav_nav_t)];
+char sz_allan[sizeof(fnav_allan_t)];
+char sz_welch[sizeof(fnav_welch_t)];
+EOF
+sizes() { # extra-flags: prints "nav allan welch" in bytes
+    $CC $ARCH -std=c99 -Iinclude -Iport/cortex-m $1 -c "$T/sz.c" -o "$T/sz.o" || return 1
+    arm-none-eabi-nm -S "$T/sz.o" | while read -r _ z _ n; do echo "$n $((0x$z))"; done |
+        awk '{ v[$1] = $2 } END { printf "%d %d %d\n", v["sz_nav"], v["sz_allan"], v["sz_welch"] }'
+}
+comma() { printf '%s' "$1" | sed -e :a -e 's/\([0-9]\)\([0-9]\{3\}\)\($\|,\)/\1,\2\3/;ta'; }
+sizes '-DFNAV_CONFIG_FILE="fnav_cm_fw_config.h"' >"$T/fwsz" || fail "cannot compile the size probe"
+sizes "" >"$T/hxsz" || fail "cannot compile the size probe (defaults)"
+read -r FN FA FW <"$T/fwsz"
+read -r HN HA HW <"$T/hxsz"
+for want in "| $(comma "$FN") |" "| $(comma $((6 * FA))) |" "| $(comma $((3 * FW))) |" \
+    "need $(comma "$HN") bytes for the" "$(comma "$HA") per Allan channel"; do
+    if grep -q -F -- "$want" docs/firmware.md; then
+        pass "docs/firmware.md has the size '$want' (sizeof on the target)"
+    else
+        fail "docs/firmware.md lacks '$want' (sizeof on the target)"
+    fi
+done
+
 if [ "$fails" -ne 0 ]; then
     echo "test_firmware_tools.sh: $fails failure(s)"
     exit 1
