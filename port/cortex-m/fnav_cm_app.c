@@ -76,7 +76,9 @@ void fnav_cm_app_process(fnav_cm_app_t *app, const fnav_sample_t *s)
     st = fnav_cm_est_nav(&app->est, s, &app->frame);
     FNAV_CM_PROF_END(FNAV_CM_PROF_NAV);
     FNAV_CM_PROF_NOTE(FNAV_CM_PROF_NAV, (st == FNAV_OK) ? app->frame.flags : FNAV_CM_PROF_TAG_NO_OUTPUT);
-    if (st == FNAV_OK) {
+    /* every frame the sample released is an output (the app used to count
+     * one per sample and drop the rest: a review, 2026-11-29) */
+    while (st == FNAV_OK) {
         app->nav_outputs++;
         if (app->cfg.nav_every != 0u && app->nav_outputs % app->cfg.nav_every == 0u) {
             FNAV_CM_PROF_BEGIN(FNAV_CM_PROF_TX_NAV);
@@ -85,9 +87,9 @@ void fnav_cm_app_process(fnav_cm_app_t *app, const fnav_sample_t *s)
             }
             FNAV_CM_PROF_END(FNAV_CM_PROF_TX_NAV);
         }
-    } else {
-        count_error(app, st);
+        st = fnav_cm_est_nav_next(&app->est, &app->frame);
     }
+    count_error(app, st);
 
     FNAV_CM_PROF_BEGIN(FNAV_CM_PROF_ALLAN);
     st = fnav_cm_est_allan(&app->est, s);

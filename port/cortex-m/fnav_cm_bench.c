@@ -700,6 +700,22 @@ int main(void)
         fnav_cm_sh_puts("bench: error: the stream is not complete and intact\n");
         status = 1;
     }
+#if FNAV_CM_WITH_NAV
+    /* every frame the filter released is an output and, at nav_every 1, a
+     * NAV frame (the app once sent one per sample and dropped the frames a
+     * sample released together: a review, 2026-11-29) */
+    if (g_app.nav_outputs != g_app.est.nav.stats.frames || g_sink.frames[FNAV_WIRE_NAV] != g_app.nav_outputs) {
+        fnav_cm_line_str(&l, "bench: error: the filter released ");
+        fnav_cm_line_u64(&l, g_app.est.nav.stats.frames);
+        fnav_cm_line_str(&l, " frames, the app counted ");
+        fnav_cm_line_u64(&l, g_app.nav_outputs);
+        fnav_cm_line_str(&l, " outputs and sent ");
+        fnav_cm_line_u64(&l, g_sink.frames[FNAV_WIRE_NAV]);
+        fnav_cm_line_str(&l, " NAV frames");
+        fnav_cm_line_end(&l);
+        status = 1;
+    }
+#endif
     fnav_cm_sh_puts(status == 0 ? "bench: ok\n" : "bench: FAILED\n");
     fnav_cm_sh_exit(status);
     return status;

@@ -71,9 +71,28 @@ FNAV_CM_NOIPA fnav_status_t fnav_cm_est_nav(fnav_cm_est_t *e, const fnav_sample_
 {
     e->samples++;
 #if FNAV_CM_WITH_NAV
-    return fnav_nav_step(&e->nav, s, out);
+    {
+        fnav_status_t st = fnav_nav_push(&e->nav, s);
+        if (st != FNAV_OK) {
+            return st;
+        }
+        /* the first frame this sample released; fnav_cm_est_nav_next pops
+         * the others (fnav_nav_step kept only the newest of them) */
+        return (fnav_nav_pop(&e->nav, out) == FNAV_OK) ? FNAV_OK : FNAV_AGAIN;
+    }
 #else
     (void)s;
+    (void)out;
+    return FNAV_E_UNSUPPORTED;
+#endif
+}
+
+FNAV_CM_NOIPA fnav_status_t fnav_cm_est_nav_next(fnav_cm_est_t *e, fnav_nav_frame_t *out)
+{
+#if FNAV_CM_WITH_NAV
+    return (fnav_nav_pop(&e->nav, out) == FNAV_OK) ? FNAV_OK : FNAV_AGAIN;
+#else
+    (void)e;
     (void)out;
     return FNAV_E_UNSUPPORTED;
 #endif

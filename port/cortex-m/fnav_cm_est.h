@@ -46,11 +46,20 @@ typedef struct {
  *  @return FNAV_OK or the first failing init's status. */
 FNAV_WARN_UNUSED fnav_status_t fnav_cm_est_init(fnav_cm_est_t *e, fnav_real_t rate_hz, fnav_real_t nav_rate_hz);
 
-/** One navigation step: strapdown prediction, stance detection and, in
- *  stance, the zero-velocity update. @return FNAV_OK with *out filled,
- *  FNAV_AGAIN while aligning (no output), FNAV_E_UNSUPPORTED when not
- *  built, or the filter's failure status. */
+/** One navigation step: stance detection, strapdown prediction and, in
+ *  stance, the zero-velocity update. Pushes the sample and pops the first
+ *  frame it released. @return FNAV_OK with *out filled, FNAV_AGAIN when no
+ *  frame is due yet (the detector's window filling, its rate being
+ *  estimated), FNAV_E_UNSUPPORTED when not built, or the sample's rejection
+ *  status (fnav_nav_push). */
 fnav_status_t fnav_cm_est_nav(fnav_cm_est_t *e, const fnav_sample_t *s, fnav_nav_frame_t *out);
+
+/** The next frame released by the same sample: one sample can release
+ *  several (with the detector's rate estimated, the first 33 samples'
+ *  frames come out together). Call until it answers FNAV_AGAIN.
+ *  @return FNAV_OK with *out filled, FNAV_AGAIN when none is left,
+ *  FNAV_E_UNSUPPORTED when not built. */
+fnav_status_t fnav_cm_est_nav_next(fnav_cm_est_t *e, fnav_nav_frame_t *out);
 
 /** Push a sample into the Allan estimators. */
 fnav_status_t fnav_cm_est_allan(fnav_cm_est_t *e, const fnav_sample_t *s);

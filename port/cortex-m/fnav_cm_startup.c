@@ -11,7 +11,7 @@ extern uint32_t _sdata[];  /* .data in RAM */
 extern uint32_t _edata[];
 extern uint32_t _sbss[];
 extern uint32_t _ebss[];
-extern uint32_t _estack[]; /* initial stack pointer: top of RAM */
+extern uint32_t _estack[]; /* initial stack pointer: the top of the stack reserve the linker script places after .bss */
 
 int main(void);
 void Reset_Handler(void);

@@ -3,7 +3,7 @@
 # SysTick marks between the parts of fnav_ukf_predict and the update (an
 # instrumented copy written by tests/m4/profile.py; src/ is not touched),
 # built and run by tests/m4/run.sh. Mean instructions per call of each part
-# over 3,000 gx2 samples, after run.sh's own figures. Usage: sh
+# over 2,998 gx2 samples, after run.sh's own figures. Usage: sh
 # tests/m4/profile.sh [the flags of tests/m4/run.sh: -DM4_NOLEVER,
 # -DM4_BIASOFF].
 set -u
