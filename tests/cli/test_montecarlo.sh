@@ -53,6 +53,14 @@ expect_exit 0 "montecarlo of 3 s" "$H" montecarlo --duration 3 --seeds 2
 if grep -qi 'nan' "$T/out"; then fail "NaN in the summary: $(grep -i -m1 nan "$T/out")"; else pass "no NaN in the summary"; fi
 rows=$(awk '/growth/ { g = 1; next } /consistency/ { g = 0 } g { print $1 }' "$T/out" | sort | uniq -d | head -n 1)
 if [ -z "$rows" ]; then pass "growth table: each bin once"; else fail "growth table repeats the bin at t = $rows s"; fi
+# a motion that starts walking aligns at the first stance, 1.43 m on: the
+# filter's origin is there, and the truth is taken from there too (every
+# error carried that first stride, 1.43 m against a predicted sd of 0.04 m)
+expect_exit 0 "montecarlo of a walk from the first tick" "$H" montecarlo --motion walk:20 --seeds 2 --quiet \
+    --json "$T/walk20.json"
+if json "$T/walk20.json" 'all(h < 3 * p for v in j["variants"] for h, p in zip(v["final_h_m"], v["final_pred_h_m"]))'
+then pass "walk from the first tick: final errors within 3 predicted sd"
+else fail "walk from the first tick: $(grep -A3 '"final_h_m"' "$T/walk20.json" | tr -d '\n\t')"; fi
 expect_exit 2 "--seeds 2.5" "$H" montecarlo --seeds 2.5 --duration 5
 expect_err "whole number" "--seeds takes a whole number"
 expect_exit 3 "unwritable JSON" "$H" montecarlo --motion "stand:5,walk:3" --seeds 1 --quiet --json "$T/no/dir/x.json"
