@@ -3,6 +3,7 @@
  * (NEES against its chi-square band). docs/results-sim.md. */
 #include <cjson/cJSON.h>
 #include <errno.h>
+#include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -48,9 +49,11 @@ static const hx_spec_t k_spec = {
 /* ------------------------------------------------------------ statistics */
 
 
+/* Statistics of the finite values of x; NaN where undefined (no value;
+ * the sd and the interval of one value). */
 typedef struct {
     int n;
-    double mean, sd, rms, median, p95, max;
+    double mean, sd, ci95, rms, median, p95, max;
 } stats_t;
 
 static stats_t stats_of(const double *x, int n)
@@ -59,6 +62,7 @@ static stats_t stats_of(const double *x, int n)
     double *v = (double *)malloc((size_t)(n > 0 ? n : 1) * sizeof *v);
     int i, k = 0;
     memset(&s, 0, sizeof s);
+    s.mean = s.sd = s.ci95 = s.rms = s.median = s.p95 = s.max = (double)NAN;
     if (v == NULL) {
         return s;
     }
@@ -77,7 +81,13 @@ static stats_t stats_of(const double *x, int n)
         }
         s.mean = sum / k;
         s.rms = sqrt(sq / k);
-        s.sd = k > 1 ? sqrt((sq - sum * sum / k) / (k - 1)) : 0.0;
+        if (k > 1) {
+            s.sd = sqrt((sq - sum * sum / k) / (k - 1));
+            /* half-width of the mean's 95 % interval: Student's t with
+             * k - 1 degrees of freedom (1.96, the normal's, made 3 runs'
+             * interval less than half as wide as it is) */
+            s.ci95 = gsl_cdf_tdist_Pinv(0.975, (double)(k - 1)) * s.sd / sqrt((double)k);
+        }
         s.median = (k % 2) ? v[k / 2] : 0.5 * (v[k / 2 - 1] + v[k / 2]);
         s.p95 = v[(int)ceil(0.95 * k) - 1];
         s.max = v[k - 1];
@@ -150,6 +160,17 @@ static const char *col(char *buf, size_t size, int width, int prec, double v)
     return buf;
 }
 
+/* The 95 % interval of a mean: "+- 0.012", or why there is none. */
+static const char *ci_text(char *buf, size_t size, const stats_t *s)
+{
+    if (isfinite(s->ci95)) {
+        snprintf(buf, size, "+- %.3f", s->ci95);
+    } else {
+        snprintf(buf, size, "no interval: %s", s->n == 1 ? "one run" : "no run");
+    }
+    return buf;
+}
+
 static void print_summary(const hx_mc_result_t *r, const char *motion, double rate, const char *profile,
                           const char *fprofile, int eq6)
 {
@@ -166,8 +187,8 @@ static void print_summary(const hx_mc_result_t *r, const char *motion, double ra
         if (h.n == 0) {
             printf("  final errors             none: no run has an aligned estimate at the end\n");
         } else {
-            printf("  final horizontal error   mean %.3f m (+- %.3f), median %.3f, 95%% %.3f, RMS %.3f", h.mean,
-                   1.96 * h.sd / sqrt(h.n), h.median, h.p95, h.rms);
+            printf("  final horizontal error   mean %.3f m (%s), median %.3f, 95%% %.3f, RMS %.3f", h.mean,
+                   ci_text(c1, sizeof c1, &h), h.median, h.p95, h.rms);
             if (r->distance_m > 0.0) {
                 printf(" = %.2f %% of distance\n", 100.0 * h.rms / r->distance_m);
             } else {
@@ -214,10 +235,16 @@ static void print_summary(const hx_mc_result_t *r, const char *motion, double ra
             }
             s = stats_of(d, r->runs);
             sv = stats_of(dv, r->runs);
-            printf("\npaired (%s - %s, same samples): final horizontal error %+.3f m +- %.3f (95 %%), vertical %+.3f m "
-                   "+- %.3f; %s better in %d of %d runs\n",
-                   r->var[1].name, r->var[0].name, s.mean, 1.96 * s.sd / sqrt(s.n > 0 ? s.n : 1), sv.mean,
-                   1.96 * sv.sd / sqrt(sv.n > 0 ? sv.n : 1), r->var[0].name, better, r->runs);
+            if (s.n == 0) {
+                printf("\npaired (%s - %s, same samples): none, no run has a final estimate in both\n", r->var[1].name,
+                       r->var[0].name);
+            } else {
+                /* over the runs with a final estimate in both */
+                printf("\npaired (%s - %s, same samples, 95 %% intervals): final horizontal error %+.3f m (%s), "
+                       "vertical %+.3f m (%s); %s better in %d of %d runs\n",
+                       r->var[1].name, r->var[0].name, s.mean, ci_text(c1, sizeof c1, &s), sv.mean,
+                       ci_text(c2, sizeof c2, &sv), r->var[0].name, better, s.n);
+            }
         }
         free(d);
         free(dv);

@@ -61,6 +61,22 @@ expect_exit 0 "montecarlo of a walk from the first tick" "$H" montecarlo --motio
 if json "$T/walk20.json" 'all(h < 3 * p for v in j["variants"] for h, p in zip(v["final_h_m"], v["final_pred_h_m"]))'
 then pass "walk from the first tick: final errors within 3 predicted sd"
 else fail "walk from the first tick: $(grep -A3 '"final_h_m"' "$T/walk20.json" | tr -d '\n\t')"; fi
+# the mean's 95 % interval is Student's (1.96, the normal quantile, made
+# 3 runs' interval 2.2 times too narrow), and one run has none (it printed
+# +- 0.000); figures that no run defines are null in the JSON (they were 0)
+expect_exit 0 "montecarlo of 3 runs" "$H" montecarlo --seeds 3 --duration 20 --profile mtx --json "$T/ci3.json"
+ci=$(sed -n 's/.*final horizontal error   mean [0-9.]* m (+- \([0-9.]*\)).*/\1/p' "$T/out" | head -n 1)
+if [ -n "$ci" ] && json "$T/ci3.json" "abs(__import__('scipy.stats').stats.t.ppf(0.975, 2) * __import__('statistics').stdev(j['variants'][0]['final_h_m']) / 3 ** 0.5 - $ci) <= 0.0005"
+then pass "3 runs: the interval of the mean is Student's ($ci m)"; else fail "3 runs: interval '$ci' m: $(grep 'final horizontal' "$T/out")"; fi
+expect_exit 0 "montecarlo of 1 run, both" "$H" montecarlo --seeds 1 --duration 20 --bias-model both
+if grep -q '+- 0\.000' "$T/out"; then fail "1 run: an interval of zero width: $(grep -m1 -- '+- 0.000' "$T/out")"
+else pass "1 run: no interval of zero width"; fi
+expect_out "mean [0-9.]* m (no interval: one run)" "1 run: the summary says why there is no interval"
+expect_exit 0 "montecarlo without an aligned estimate" "$H" montecarlo --seeds 2 --duration 0.001 --bias-model both \
+    --json "$T/none.json"
+expect_out "paired (off - ar1, same samples): none, no run has a final estimate in both" "no final estimate: no paired figures"
+if json "$T/none.json" 'all(v[k] is None for v in j["variants"] for k in ("final_h_mean_m", "final_h_rms_m", "final_h_median_m", "final_h_p95_m", "final_v_rms_m", "final_v_median_m"))'
+then pass "no final estimate: the final statistics are null"; else fail "no final estimate: $(grep -m2 final_h_ "$T/none.json")"; fi
 expect_exit 2 "--seeds 2.5" "$H" montecarlo --seeds 2.5 --duration 5
 expect_err "whole number" "--seeds takes a whole number"
 expect_exit 3 "unwritable JSON" "$H" montecarlo --motion "stand:5,walk:3" --seeds 1 --quiet --json "$T/no/dir/x.json"
