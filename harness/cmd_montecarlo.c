@@ -213,8 +213,8 @@ static void print_summary(const hx_mc_result_t *r, const char *motion, double ra
         for (g = 0; g < HX_NEES_COUNT; g++) {
             cons_t c = consistency(x, g, r->runs);
             if (c.bins == 0) {
-                printf("    %-5s d=%-2d  no positive definite covariance (states off)\n", hx_nees_name[g],
-                       hx_nees_dim[g]);
+                printf("    %-5s d=%-2d  no NEES: %s\n", hx_nees_name[g], hx_nees_dim[g],
+                       x->estimates > 0 ? "no positive definite covariance (states off)" : "no aligned estimate");
                 continue;
             }
             printf("    %-5s d=%-2d  time-average %7.2f  band [%.2f, %.2f]  %3.0f %% of bins inside (%d above, %d "
@@ -310,7 +310,11 @@ static int write_json(const char *path, const hx_mc_result_t *r, const char *mot
             cJSON_AddNumberToObject(cg, "dim", hx_nees_dim[g]);
             add_num(cg, "time_average", c.time_avg);
             add_num(cg, "fraction_in_band", c.frac_in);
-            cJSON_AddStringToObject(cg, "verdict", verdict(&c));
+            if (c.bins > 0) {
+                cJSON_AddStringToObject(cg, "verdict", verdict(&c));
+            } else {
+                cJSON_AddNullToObject(cg, "verdict"); /* no NEES: no verdict (it said over-confident) */
+            }
             add_num(cg, "band_lo", c.lo);
             add_num(cg, "band_hi", c.hi);
             cJSON_AddItemToObject(cons, hx_nees_name[g], cg);

@@ -41,6 +41,10 @@ walk(j)
 sys.exit(0 if n > 0 else 'no verdict in the JSON')
 PY
 then pass "NEES verdicts follow the per-bin rule"; else fail "NEES verdicts"; fi
+# a group without NEES (the biases without the bias model) has no verdict
+# (it was 'over-confident', the fallback of an undefined fraction in band)
+if json "$T/mc.json" '[v["nees"][g]["verdict"] for v in j["variants"] if v["name"] == "off" for g in ("bias", "all")] == [None, None]'
+then pass "no NEES, no verdict"; else fail "verdict without NEES: $(grep -m3 verdict "$T/mc.json" | tr -d '\n\t')"; fi
 if head -1 "$T/mc.csv" | grep -q "^variant,t_s,odo_m,n,rms_h_m"; then pass "CSV header"; else fail "CSV header"; fi
 if grep -q "^off," "$T/mc.csv" && grep -q "^ar1," "$T/mc.csv"; then pass "both variants in the CSV"; else fail "variants in CSV"; fi
 # the bins before the alignment have no estimate: empty fields (as allan's
@@ -75,6 +79,7 @@ expect_out "mean [0-9.]* m (no interval: one run)" "1 run: the summary says why 
 expect_exit 0 "montecarlo without an aligned estimate" "$H" montecarlo --seeds 2 --duration 0.001 --bias-model both \
     --json "$T/none.json"
 expect_out "paired (off - ar1, same samples): none, no run has a final estimate in both" "no final estimate: no paired figures"
+expect_out "pos   d=3   no NEES: no aligned estimate" "no aligned estimate: the summary says so (not 'states off')"
 if json "$T/none.json" 'all(v[k] is None for v in j["variants"] for k in ("final_h_mean_m", "final_h_rms_m", "final_h_median_m", "final_h_p95_m", "final_v_rms_m", "final_v_median_m"))'
 then pass "no final estimate: the final statistics are null"; else fail "no final estimate: $(grep -m2 final_h_ "$T/none.json")"; fi
 expect_exit 2 "--seeds 2.5" "$H" montecarlo --seeds 2.5 --duration 5
