@@ -82,6 +82,18 @@ expect_out "paired (off - ar1, same samples): none, no run has a final estimate 
 expect_out "pos   d=3   no NEES: no aligned estimate" "no aligned estimate: the summary says so (not 'states off')"
 if json "$T/none.json" 'all(v[k] is None for v in j["variants"] for k in ("final_h_mean_m", "final_h_rms_m", "final_h_median_m", "final_h_p95_m", "final_v_rms_m", "final_v_median_m"))'
 then pass "no final estimate: the final statistics are null"; else fail "no final estimate: $(grep -m2 final_h_ "$T/none.json")"; fi
+# a profile file is an input: an output onto it is refused (the CSV
+# replaced it, exit 0)
+for o in json csv plot; do
+    for p in profile filter-profile; do
+        cp "$(dirname "$0")/../../docs/profiles/generic-mems.profile" "$T/in.profile"
+        cp "$T/in.profile" "$T/in.copy"
+        expect_exit 2 "--$o onto the --$p file" "$H" montecarlo --seeds 1 --duration 5 --quiet --$p "$T/in.profile" \
+            --$o "$T/in.profile"
+        if cmp -s "$T/in.profile" "$T/in.copy"; then pass "--$o onto the --$p file: the profile is kept"
+        else fail "--$o onto the --$p file: the profile was overwritten"; fi
+    done
+done
 expect_exit 2 "--seeds 2.5" "$H" montecarlo --seeds 2.5 --duration 5
 expect_err "whole number" "--seeds takes a whole number"
 expect_exit 3 "unwritable JSON" "$H" montecarlo --motion "stand:5,walk:3" --seeds 1 --quiet --json "$T/no/dir/x.json"
