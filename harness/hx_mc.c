@@ -313,8 +313,13 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
                         e[9 + j] = est.gyro_bias_rps[j] - tk->bias[3 + j];
                         e[12 + j] = est.accel_bias_mps2[j] - tk->bias[j];
                     }
+                    /* a non-finite covariance is skipped too (hx_mc.h): it
+                     * made the bin's predicted sd NaN for every run */
                     for (j = 0; j < 15; j++) {
                         ok = ok && isfinite(e[j]);
+                        for (g = 0; g < 15; g++) {
+                            ok = ok && isfinite(est.P[j][g]);
+                        }
                     }
                     if (!ok) {
                         x->nonfinite++;

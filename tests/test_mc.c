@@ -21,6 +21,7 @@
 typedef struct {
     const hx_motion_t *m;
     double scale;        /* reported covariance = true covariance * scale */
+    uint32_t nan_seq;    /* a NaN in P of the estimate of this sample (0: none) */
     fnav_rng_t rng;
     double align_s;      /* no valid estimate before this time, s */
     double yaw0, p0[3];  /* the frame: heading and position at the alignment */
@@ -120,6 +121,9 @@ static int o_push(void *ctx, const fnav_sample_t *s)
             }
             e->P[i][j] = v * o->scale;
         }
+    }
+    if (o->nan_seq != 0u && s->seq == o->nan_seq) {
+        e->P[6][6] = (double)NAN;
     }
     /* The estimate is the truth in the filter frame (rotated by -yaw0) less
      * the error d, drawn as the filter's sigma points perturb its state:
@@ -374,6 +378,47 @@ static void test_progress_within_run(void **state)
     hx_motion_free(m);
 }
 
+/* An estimate whose covariance is not finite is skipped and counted, as
+ * one with a non-finite value (a NaN predicted sd made its bin's RMS of
+ * the predicted sd NaN, for every run). */
+static void test_nonfinite_covariance(void **state)
+{
+    char err[256];
+    hx_motion_config_t mc = hx_motion_config_default();
+    hx_motion_t *m;
+    hx_mc_config_t cfg;
+    hx_mc_result_t res;
+    oracle_t o;
+    hx_mc_nav_t nav;
+    int b;
+    (void)state;
+    m = hx_motion_create(&mc, "stand:2,walk:10,stand:1", 0.0, err, sizeof err);
+    assert_non_null(m);
+    memset(&o, 0, sizeof o);
+    o.m = m;
+    o.scale = 1.0;
+    o.nan_seq = 300u; /* 6 s at 50 Hz: the last estimate of the bin ending at 6 s */
+    nav = make_nav("nan", &o);
+    memset(&cfg, 0, sizeof cfg);
+    cfg.sim.motion = m;
+    cfg.sim.err = fnav_imuerr_config_default;
+    cfg.sim.err.rate_hz = (fnav_real_t)50.0;
+    cfg.sim.err.oversample = 1u;
+    cfg.sim.err.seed = 5u;
+    cfg.sim.decim = HX_DECIM_FIR;
+    cfg.runs = 3;
+    cfg.bin_s = 1.0;
+    assert_int_equal(hx_mc_run(&cfg, &nav, 1, &res, NULL, NULL, err, sizeof err), 0);
+    assert_int_equal(res.var[0].nonfinite, 3);
+    for (b = 0; b < res.var[0].nbins; b++) {
+        assert_int_equal(res.var[0].bins[b].n, 3);
+        assert_true(isfinite(res.var[0].bins[b].pred_h_m));
+        assert_true(isfinite(res.var[0].bins[b].rms_h_m));
+    }
+    hx_mc_result_free(&res);
+    hx_motion_free(m);
+}
+
 static void test_bad_config(void **state)
 {
     hx_mc_config_t cfg;
@@ -396,6 +441,7 @@ int main(void)
         cmocka_unit_test(test_filter_frame),
         cmocka_unit_test(test_late_alignment),
         cmocka_unit_test(test_drops_and_duplicates),
+        cmocka_unit_test(test_nonfinite_covariance),
         cmocka_unit_test(test_bad_config),
         cmocka_unit_test(test_progress_within_run),
     };
