@@ -25,7 +25,7 @@ static const hx_opt_t k_opts[] = {
     { "--bias-model", "MODEL", "filter bias model: ar1 (default), off, or both (paired, on the same samples)", 0 },
     { "--detector", "KIND", "stance detector: shoe (default) or threshold", 0 },
     { "--samples", "KIND", "what the filter takes a sample for: instant or mean (default: what --decimation makes)", 0 },
-    { "--param", "KEY=VALUE", "set a navigation parameter (list: harness replay --param help)", 1 },
+    { "--param", "KEY=VALUE", "set a navigation parameter (list: --param help)", 1 },
     { "--bin", "S", "time bin of the growth curves, s (default 1)", 0 },
     { "--json", "FILE", "results as JSON (docs/results-sim.md)", 0 },
     { "--csv", "FILE", "growth curves and NEES per bin and variant ('-' for standard output)", 0 },
@@ -533,7 +533,12 @@ int hx_cmd_montecarlo(int argc, char **argv)
 {
     hx_args_t a;
     hx_sim_setup_t su;
-    int pr = hx_args_parse(&k_spec, argc, argv, &a);
+    int pr;
+    /* as replay and live (the unknown-key error points at it) */
+    if (hx_nav_param_help_requested(argc, argv)) {
+        return HX_EXIT_OK;
+    }
+    pr = hx_args_parse(&k_spec, argc, argv, &a);
     if (pr != 0) {
         return pr > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }

@@ -12,6 +12,12 @@ expect_exit 0 "montecarlo --help" "$H" montecarlo --help
 expect_exit 2 "bad effect" "$H" montecarlo --effect wobble
 "$H" montecarlo --seeds 1 --duration 8 --quiet >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" -eq 0 ]; then pass "montecarlo small run (exit 0)"; else fail "montecarlo small run: exit $rc"; cat "$T/err"; fi
+# --param help lists the keys, as replay's (the unknown-key error points
+# at it; montecarlo took 'help' for a malformed KEY=VALUE, exit 2)
+expect_exit 2 "unknown --param key" "$H" montecarlo --param nokey=1 --seeds 1 --duration 2
+expect_err "list: --param help" "unknown --param key: the error points at --param help"
+expect_exit 0 "montecarlo --param help" "$H" montecarlo --param help
+expect_out "^  gamma " "montecarlo --param help lists the keys"
 expect_exit 2 "bad --bias-model" "$H" montecarlo --bias-model maybe
 expect_exit 2 "sim: --truth onto --out" "$H" sim --out "$T/same.csv" --truth "$T/same.csv" --duration 5
 expect_exit 2 "bad --detector" "$H" montecarlo --detector psychic --seeds 1 --duration 10
