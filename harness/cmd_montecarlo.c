@@ -663,7 +663,8 @@ int hx_cmd_montecarlo(int argc, char **argv)
             status = HX_EXIT_IO;
         }
         if (csv != NULL && write_csv(csv, &res) != 0) {
-            hx_error("montecarlo", "%s: cannot write (%s)", csv, strerror(errno));
+            hx_error("montecarlo", "%s: cannot write (%s)", strcmp(csv, "-") == 0 ? "standard output" : csv,
+                     strerror(errno));
             status = HX_EXIT_IO;
         }
         if (png != NULL && write_plot(png, &res, su.motion_name, su.profile_name) != 0) {

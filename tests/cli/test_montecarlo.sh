@@ -175,5 +175,11 @@ if head -n 1 "$T/mc_stdout.csv" | grep -q "^variant,t_s," && [ ! -e "$T/-" ]; th
 if /usr/bin/env python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$T/mc_stdout.json"; then
     pass "montecarlo --json -: valid JSON alone on standard output"; else fail "--json -: $(head -n 2 "$T/mc_stdout.json")"; fi
 
+# a CSV on a full standard output: exit 3, and the message names standard
+# output (it said '-: cannot write')
+"$H" montecarlo --seeds 1 --duration 3 --csv - >/dev/full 2>"$T/err"; rc=$?
+if [ "$rc" -eq 3 ]; then pass "--csv - on a full disk (exit 3)"; else fail "--csv - on a full disk: exit $rc"; fi
+expect_err "standard output: cannot write" "--csv - on a full disk names standard output"
+
 if [ "$fails" -ne 0 ]; then echo "test_montecarlo.sh: $fails failure(s)"; exit 1; fi
 echo "test_montecarlo.sh: all passed"
