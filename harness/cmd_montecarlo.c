@@ -3,6 +3,7 @@
  * (NEES against its chi-square band). docs/results-sim.md. */
 #include <cjson/cJSON.h>
 #include <errno.h>
+#include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,7 +25,7 @@ static const hx_opt_t k_opts[] = {
     { "--bias-model", "MODEL", "filter bias model: ar1 (default), off, or both (paired, on the same samples)", 0 },
     { "--detector", "KIND", "stance detector: shoe (default) or threshold", 0 },
     { "--samples", "KIND", "what the filter takes a sample for: instant or mean (default: what --decimation makes)", 0 },
-    { "--param", "KEY=VALUE", "set a navigation parameter (list: harness replay --param help)", 1 },
+    { "--param", "KEY=VALUE", "set a navigation parameter (list: --param help)", 1 },
     { "--bin", "S", "time bin of the growth curves, s (default 1)", 0 },
     { "--json", "FILE", "results as JSON (docs/results-sim.md)", 0 },
     { "--csv", "FILE", "growth curves and NEES per bin and variant ('-' for standard output)", 0 },
@@ -48,9 +49,11 @@ static const hx_spec_t k_spec = {
 /* ------------------------------------------------------------ statistics */
 
 
+/* Statistics of the finite values of x; NaN where undefined (no value;
+ * the sd and the interval of one value). */
 typedef struct {
     int n;
-    double mean, sd, rms, median, p95, max;
+    double mean, sd, ci95, rms, median, p95, max;
 } stats_t;
 
 static stats_t stats_of(const double *x, int n)
@@ -59,6 +62,7 @@ static stats_t stats_of(const double *x, int n)
     double *v = (double *)malloc((size_t)(n > 0 ? n : 1) * sizeof *v);
     int i, k = 0;
     memset(&s, 0, sizeof s);
+    s.mean = s.sd = s.ci95 = s.rms = s.median = s.p95 = s.max = (double)NAN;
     if (v == NULL) {
         return s;
     }
@@ -77,7 +81,13 @@ static stats_t stats_of(const double *x, int n)
         }
         s.mean = sum / k;
         s.rms = sqrt(sq / k);
-        s.sd = k > 1 ? sqrt((sq - sum * sum / k) / (k - 1)) : 0.0;
+        if (k > 1) {
+            s.sd = sqrt((sq - sum * sum / k) / (k - 1));
+            /* half-width of the mean's 95 % interval: Student's t with
+             * k - 1 degrees of freedom (1.96, the normal's, made 3 runs'
+             * interval less than half as wide as it is) */
+            s.ci95 = gsl_cdf_tdist_Pinv(0.975, (double)(k - 1)) * s.sd / sqrt((double)k);
+        }
         s.median = (k % 2) ? v[k / 2] : 0.5 * (v[k / 2 - 1] + v[k / 2]);
         s.p95 = v[(int)ceil(0.95 * k) - 1];
         s.max = v[k - 1];
@@ -150,6 +160,17 @@ static const char *col(char *buf, size_t size, int width, int prec, double v)
     return buf;
 }
 
+/* The 95 % interval of a mean: "+- 0.012", or why there is none. */
+static const char *ci_text(char *buf, size_t size, const stats_t *s)
+{
+    if (isfinite(s->ci95)) {
+        snprintf(buf, size, "+- %.3f", s->ci95);
+    } else {
+        snprintf(buf, size, "no interval: %s", s->n == 1 ? "one run" : "no run");
+    }
+    return buf;
+}
+
 static void print_summary(const hx_mc_result_t *r, const char *motion, double rate, const char *profile,
                           const char *fprofile, int eq6)
 {
@@ -166,8 +187,8 @@ static void print_summary(const hx_mc_result_t *r, const char *motion, double ra
         if (h.n == 0) {
             printf("  final errors             none: no run has an aligned estimate at the end\n");
         } else {
-            printf("  final horizontal error   mean %.3f m (+- %.3f), median %.3f, 95%% %.3f, RMS %.3f", h.mean,
-                   1.96 * h.sd / sqrt(h.n), h.median, h.p95, h.rms);
+            printf("  final horizontal error   mean %.3f m (%s), median %.3f, 95%% %.3f, RMS %.3f", h.mean,
+                   ci_text(c1, sizeof c1, &h), h.median, h.p95, h.rms);
             if (r->distance_m > 0.0) {
                 printf(" = %.2f %% of distance\n", 100.0 * h.rms / r->distance_m);
             } else {
@@ -192,8 +213,8 @@ static void print_summary(const hx_mc_result_t *r, const char *motion, double ra
         for (g = 0; g < HX_NEES_COUNT; g++) {
             cons_t c = consistency(x, g, r->runs);
             if (c.bins == 0) {
-                printf("    %-5s d=%-2d  no positive definite covariance (states off)\n", hx_nees_name[g],
-                       hx_nees_dim[g]);
+                printf("    %-5s d=%-2d  no NEES: %s\n", hx_nees_name[g], hx_nees_dim[g],
+                       x->estimates > 0 ? "no positive definite covariance (states off)" : "no aligned estimate");
                 continue;
             }
             printf("    %-5s d=%-2d  time-average %7.2f  band [%.2f, %.2f]  %3.0f %% of bins inside (%d above, %d "
@@ -214,10 +235,16 @@ static void print_summary(const hx_mc_result_t *r, const char *motion, double ra
             }
             s = stats_of(d, r->runs);
             sv = stats_of(dv, r->runs);
-            printf("\npaired (%s - %s, same samples): final horizontal error %+.3f m +- %.3f (95 %%), vertical %+.3f m "
-                   "+- %.3f; %s better in %d of %d runs\n",
-                   r->var[1].name, r->var[0].name, s.mean, 1.96 * s.sd / sqrt(s.n > 0 ? s.n : 1), sv.mean,
-                   1.96 * sv.sd / sqrt(sv.n > 0 ? sv.n : 1), r->var[0].name, better, r->runs);
+            if (s.n == 0) {
+                printf("\npaired (%s - %s, same samples): none, no run has a final estimate in both\n", r->var[1].name,
+                       r->var[0].name);
+            } else {
+                /* over the runs with a final estimate in both */
+                printf("\npaired (%s - %s, same samples, 95 %% intervals): final horizontal error %+.3f m (%s), "
+                       "vertical %+.3f m (%s); %s better in %d of %d runs\n",
+                       r->var[1].name, r->var[0].name, s.mean, ci_text(c1, sizeof c1, &s), sv.mean,
+                       ci_text(c2, sizeof c2, &sv), r->var[0].name, better, s.n);
+            }
         }
         free(d);
         free(dv);
@@ -283,7 +310,11 @@ static int write_json(const char *path, const hx_mc_result_t *r, const char *mot
             cJSON_AddNumberToObject(cg, "dim", hx_nees_dim[g]);
             add_num(cg, "time_average", c.time_avg);
             add_num(cg, "fraction_in_band", c.frac_in);
-            cJSON_AddStringToObject(cg, "verdict", verdict(&c));
+            if (c.bins > 0) {
+                cJSON_AddStringToObject(cg, "verdict", verdict(&c));
+            } else {
+                cJSON_AddNullToObject(cg, "verdict"); /* no NEES: no verdict (it said over-confident) */
+            }
             add_num(cg, "band_lo", c.lo);
             add_num(cg, "band_hi", c.hi);
             cJSON_AddItemToObject(cons, hx_nees_name[g], cg);
@@ -502,7 +533,12 @@ int hx_cmd_montecarlo(int argc, char **argv)
 {
     hx_args_t a;
     hx_sim_setup_t su;
-    int pr = hx_args_parse(&k_spec, argc, argv, &a);
+    int pr;
+    /* as replay and live (the unknown-key error points at it) */
+    if (hx_nav_param_help_requested(argc, argv)) {
+        return HX_EXIT_OK;
+    }
+    pr = hx_args_parse(&k_spec, argc, argv, &a);
     if (pr != 0) {
         return pr > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
@@ -539,8 +575,21 @@ int hx_cmd_montecarlo(int argc, char **argv)
         }
         {
             static const char *const outs[] = { "--json", "--csv", "--plot", NULL };
+            /* a profile file is an input: an output onto it replaced it
+             * after it was read, exit 0 (a review, 2026-11-29) */
+            const char *ins[2];
+            int k;
+            fnav_profile_t tmp;
+            ins[0] = hx_arg(&a, "--profile");
+            ins[1] = fprof;
             if (hx_output_is_input("montecarlo", NULL, &a, outs)) {
                 return HX_EXIT_USAGE;
+            }
+            for (k = 0; k < 2; k++) {
+                if (ins[k] != NULL && fnav_profile_by_name(&tmp, ins[k]) != FNAV_OK &&
+                    hx_output_is_input("montecarlo", ins[k], &a, outs)) {
+                    return HX_EXIT_USAGE;
+                }
             }
         }
         /* the outputs are written after every run: find out now that they can be */
@@ -614,7 +663,8 @@ int hx_cmd_montecarlo(int argc, char **argv)
             status = HX_EXIT_IO;
         }
         if (csv != NULL && write_csv(csv, &res) != 0) {
-            hx_error("montecarlo", "%s: cannot write (%s)", csv, strerror(errno));
+            hx_error("montecarlo", "%s: cannot write (%s)", strcmp(csv, "-") == 0 ? "standard output" : csv,
+                     strerror(errno));
             status = HX_EXIT_IO;
         }
         if (png != NULL && write_plot(png, &res, su.motion_name, su.profile_name) != 0) {

@@ -208,7 +208,6 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
         }
     }
     for (r = 0; r < cfg->runs; r++) {
-        double yaw0, cz, sz, qz[4];
         sc = cfg->sim;
         sc.err.seed = cfg->sim.err.seed + (uint32_t)r;
         buf.n = 0;
@@ -231,26 +230,15 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
                 }
             }
         }
-        /* the filter's frame: x along the sensor's initial heading */
-        {
-            const double *q = buf.t[0].q;
-            yaw0 = atan2(2.0 * (q[0] * q[3] + q[1] * q[2]), 1.0 - 2.0 * (q[2] * q[2] + q[3] * q[3]));
-        }
-        cz = cos(yaw0);
-        sz = sin(yaw0);
-        qz[0] = cos(0.5 * yaw0);
-        qz[1] = 0.0;
-        qz[2] = 0.0;
-        qz[3] = -sin(0.5 * yaw0);
         for (v = 0; v < nvar; v++) {
             hx_mc_nav_t *nav = &navs[v];
             hx_mc_var_t *x = &res->var[v];
             hx_mc_est_t est;
             size_t i;
             uint32_t k;
-            double sum_h2 = 0.0;
+            double sum_h2 = 0.0, p0[3] = { 0.0, 0.0, 0.0 }, cz = 1.0, sz = 0.0, qz[4] = { 1.0, 0.0, 0.0, 0.0 };
             long nest = 0;
-            int have_final = 0, finishing = 0;
+            int have_final = 0, finishing = 0, have_frame = 0;
             memset(slots, 0, (size_t)nbins * sizeof *slots);
             if (nav->start(nav->ctx, rate, r) != 0) {
                 snprintf(err, err_size, "montecarlo: navigator %s failed to start", nav->name);
@@ -282,9 +270,26 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
                         continue;
                     }
                     tk = &buf.t[est.seq];
-                    pt[0] = cz * tk->pos[0] + sz * tk->pos[1];
-                    pt[1] = -sz * tk->pos[0] + cz * tk->pos[1];
-                    pt[2] = tk->pos[2];
+                    if (!have_frame) {
+                        /* The filter's frame: origin where the sensor was at
+                         * the alignment, x along its heading then (yaw 0 at
+                         * the alignment), i.e. at the navigator's first
+                         * aligned estimate. Not the truth's first tick: a
+                         * motion that starts walking aligns at a later
+                         * stance (walk:20, 1.43 m on), and every error
+                         * carried that offset (a review, 2026-11-29). */
+                        const double *q = tk->q;
+                        double yaw0 = atan2(2.0 * (q[0] * q[3] + q[1] * q[2]), 1.0 - 2.0 * (q[2] * q[2] + q[3] * q[3]));
+                        cz = cos(yaw0);
+                        sz = sin(yaw0);
+                        qz[0] = cos(0.5 * yaw0);
+                        qz[3] = -sin(0.5 * yaw0);
+                        memcpy(p0, tk->pos, sizeof p0);
+                        have_frame = 1;
+                    }
+                    pt[0] = cz * (tk->pos[0] - p0[0]) + sz * (tk->pos[1] - p0[1]);
+                    pt[1] = -sz * (tk->pos[0] - p0[0]) + cz * (tk->pos[1] - p0[1]);
+                    pt[2] = tk->pos[2] - p0[2];
                     vt[0] = cz * tk->vel[0] + sz * tk->vel[1];
                     vt[1] = -sz * tk->vel[0] + cz * tk->vel[1];
                     vt[2] = tk->vel[2];
@@ -308,8 +313,13 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
                         e[9 + j] = est.gyro_bias_rps[j] - tk->bias[3 + j];
                         e[12 + j] = est.accel_bias_mps2[j] - tk->bias[j];
                     }
+                    /* a non-finite covariance is skipped too (hx_mc.h): it
+                     * made the bin's predicted sd NaN for every run */
                     for (j = 0; j < 15; j++) {
                         ok = ok && isfinite(e[j]);
+                        for (g = 0; g < 15; g++) {
+                            ok = ok && isfinite(est.P[j][g]);
+                        }
                     }
                     if (!ok) {
                         x->nonfinite++;

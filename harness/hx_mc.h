@@ -34,7 +34,8 @@ extern const char *const hx_nees_name[HX_NEES_COUNT];
 typedef struct {
     uint32_t seq;        /**< counter of the sample it belongs to */
     int valid;           /**< 0 before alignment: ignored */
-    double pos_m[3];     /**< navigation frame of the filter (x along the sensor's initial heading, z down) */
+    double pos_m[3];     /**< navigation frame of the filter (origin where the sensor was at the first
+                              valid estimate, x along its heading then, z down) */
     double vel_mps[3];
     double q_nb[4];
     double gyro_bias_rps[3];

@@ -12,6 +12,12 @@ expect_exit 0 "montecarlo --help" "$H" montecarlo --help
 expect_exit 2 "bad effect" "$H" montecarlo --effect wobble
 "$H" montecarlo --seeds 1 --duration 8 --quiet >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" -eq 0 ]; then pass "montecarlo small run (exit 0)"; else fail "montecarlo small run: exit $rc"; cat "$T/err"; fi
+# --param help lists the keys, as replay's (the unknown-key error points
+# at it; montecarlo took 'help' for a malformed KEY=VALUE, exit 2)
+expect_exit 2 "unknown --param key" "$H" montecarlo --param nokey=1 --seeds 1 --duration 2
+expect_err "list: --param help" "unknown --param key: the error points at --param help"
+expect_exit 0 "montecarlo --param help" "$H" montecarlo --param help
+expect_out "^  gamma " "montecarlo --param help lists the keys"
 expect_exit 2 "bad --bias-model" "$H" montecarlo --bias-model maybe
 expect_exit 2 "sim: --truth onto --out" "$H" sim --out "$T/same.csv" --truth "$T/same.csv" --duration 5
 expect_exit 2 "bad --detector" "$H" montecarlo --detector psychic --seeds 1 --duration 10
@@ -41,6 +47,10 @@ walk(j)
 sys.exit(0 if n > 0 else 'no verdict in the JSON')
 PY
 then pass "NEES verdicts follow the per-bin rule"; else fail "NEES verdicts"; fi
+# a group without NEES (the biases without the bias model) has no verdict
+# (it was 'over-confident', the fallback of an undefined fraction in band)
+if json "$T/mc.json" '[v["nees"][g]["verdict"] for v in j["variants"] if v["name"] == "off" for g in ("bias", "all")] == [None, None]'
+then pass "no NEES, no verdict"; else fail "verdict without NEES: $(grep -m3 verdict "$T/mc.json" | tr -d '\n\t')"; fi
 if head -1 "$T/mc.csv" | grep -q "^variant,t_s,odo_m,n,rms_h_m"; then pass "CSV header"; else fail "CSV header"; fi
 if grep -q "^off," "$T/mc.csv" && grep -q "^ar1," "$T/mc.csv"; then pass "both variants in the CSV"; else fail "variants in CSV"; fi
 # the bins before the alignment have no estimate: empty fields (as allan's
@@ -53,6 +63,43 @@ expect_exit 0 "montecarlo of 3 s" "$H" montecarlo --duration 3 --seeds 2
 if grep -qi 'nan' "$T/out"; then fail "NaN in the summary: $(grep -i -m1 nan "$T/out")"; else pass "no NaN in the summary"; fi
 rows=$(awk '/growth/ { g = 1; next } /consistency/ { g = 0 } g { print $1 }' "$T/out" | sort | uniq -d | head -n 1)
 if [ -z "$rows" ]; then pass "growth table: each bin once"; else fail "growth table repeats the bin at t = $rows s"; fi
+# a motion that starts walking aligns at the first stance, 1.43 m on: the
+# filter's origin is there, and the truth is taken from there too (every
+# error carried that first stride, 1.43 m against a predicted sd of 0.04 m)
+expect_exit 0 "montecarlo of a walk from the first tick" "$H" montecarlo --motion walk:20 --seeds 2 --quiet \
+    --json "$T/walk20.json"
+if json "$T/walk20.json" 'all(h < 3 * p for v in j["variants"] for h, p in zip(v["final_h_m"], v["final_pred_h_m"]))'
+then pass "walk from the first tick: final errors within 3 predicted sd"
+else fail "walk from the first tick: $(grep -A3 '"final_h_m"' "$T/walk20.json" | tr -d '\n\t')"; fi
+# the mean's 95 % interval is Student's (1.96, the normal quantile, made
+# 3 runs' interval 2.2 times too narrow), and one run has none (it printed
+# +- 0.000); figures that no run defines are null in the JSON (they were 0)
+expect_exit 0 "montecarlo of 3 runs" "$H" montecarlo --seeds 3 --duration 20 --profile mtx --json "$T/ci3.json"
+ci=$(sed -n 's/.*final horizontal error   mean [0-9.]* m (+- \([0-9.]*\)).*/\1/p' "$T/out" | head -n 1)
+if [ -n "$ci" ] && json "$T/ci3.json" "abs(__import__('scipy.stats').stats.t.ppf(0.975, 2) * __import__('statistics').stdev(j['variants'][0]['final_h_m']) / 3 ** 0.5 - $ci) <= 0.0005"
+then pass "3 runs: the interval of the mean is Student's ($ci m)"; else fail "3 runs: interval '$ci' m: $(grep 'final horizontal' "$T/out")"; fi
+expect_exit 0 "montecarlo of 1 run, both" "$H" montecarlo --seeds 1 --duration 20 --bias-model both
+if grep -q '+- 0\.000' "$T/out"; then fail "1 run: an interval of zero width: $(grep -m1 -- '+- 0.000' "$T/out")"
+else pass "1 run: no interval of zero width"; fi
+expect_out "mean [0-9.]* m (no interval: one run)" "1 run: the summary says why there is no interval"
+expect_exit 0 "montecarlo without an aligned estimate" "$H" montecarlo --seeds 2 --duration 0.001 --bias-model both \
+    --json "$T/none.json"
+expect_out "paired (off - ar1, same samples): none, no run has a final estimate in both" "no final estimate: no paired figures"
+expect_out "pos   d=3   no NEES: no aligned estimate" "no aligned estimate: the summary says so (not 'states off')"
+if json "$T/none.json" 'all(v[k] is None for v in j["variants"] for k in ("final_h_mean_m", "final_h_rms_m", "final_h_median_m", "final_h_p95_m", "final_v_rms_m", "final_v_median_m"))'
+then pass "no final estimate: the final statistics are null"; else fail "no final estimate: $(grep -m2 final_h_ "$T/none.json")"; fi
+# a profile file is an input: an output onto it is refused (the CSV
+# replaced it, exit 0)
+for o in json csv plot; do
+    for p in profile filter-profile; do
+        cp "$(dirname "$0")/../../docs/profiles/generic-mems.profile" "$T/in.profile"
+        cp "$T/in.profile" "$T/in.copy"
+        expect_exit 2 "--$o onto the --$p file" "$H" montecarlo --seeds 1 --duration 5 --quiet --$p "$T/in.profile" \
+            --$o "$T/in.profile"
+        if cmp -s "$T/in.profile" "$T/in.copy"; then pass "--$o onto the --$p file: the profile is kept"
+        else fail "--$o onto the --$p file: the profile was overwritten"; fi
+    done
+done
 expect_exit 2 "--seeds 2.5" "$H" montecarlo --seeds 2.5 --duration 5
 expect_err "whole number" "--seeds takes a whole number"
 expect_exit 3 "unwritable JSON" "$H" montecarlo --motion "stand:5,walk:3" --seeds 1 --quiet --json "$T/no/dir/x.json"
@@ -127,6 +174,12 @@ if head -n 1 "$T/mc_stdout.csv" | grep -q "^variant,t_s," && [ ! -e "$T/-" ]; th
 "$H" montecarlo --seeds 2 --duration 10 --json - > "$T/mc_stdout.json" 2>/dev/null
 if /usr/bin/env python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$T/mc_stdout.json"; then
     pass "montecarlo --json -: valid JSON alone on standard output"; else fail "--json -: $(head -n 2 "$T/mc_stdout.json")"; fi
+
+# a CSV on a full standard output: exit 3, and the message names standard
+# output (it said '-: cannot write')
+"$H" montecarlo --seeds 1 --duration 3 --csv - >/dev/full 2>"$T/err"; rc=$?
+if [ "$rc" -eq 3 ]; then pass "--csv - on a full disk (exit 3)"; else fail "--csv - on a full disk: exit $rc"; fi
+expect_err "standard output: cannot write" "--csv - on a full disk names standard output"
 
 if [ "$fails" -ne 0 ]; then echo "test_montecarlo.sh: $fails failure(s)"; exit 1; fi
 echo "test_montecarlo.sh: all passed"
