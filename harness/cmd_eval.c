@@ -1566,7 +1566,7 @@ int hx_cmd_eval(int argc, char **argv)
     }
     {
         static const char *const outs[] = { "--out", "--json", NULL };
-        if (hx_output_is_input("eval", NULL, &a, outs)) {
+        if (hx_output_is_input("eval", NULL, &a, outs) || hx_profile_is_output("eval", o.profile, &a, outs)) {
             return HX_EXIT_USAGE;
         }
     }

@@ -20,6 +20,7 @@
 #include "hx_commands.h"
 #include "hx_nav.h"
 #include "hx_serial.h"
+#include "hx_profile.h"
 
 #define CMD "live"
 #define READ_TIMEOUT_MS 100u
@@ -594,7 +595,7 @@ int hx_cmd_live(int argc, char **argv)
     }
     {
         static const char *const outs[] = { "--record", "--out", "--json", "--plot", NULL };
-        if (hx_output_is_input(CMD, NULL, &a, outs)) {
+        if (hx_output_is_input(CMD, NULL, &a, outs) || hx_profile_is_output(CMD, nopt.profile, &a, outs)) {
             return HX_EXIT_USAGE;
         }
     }

@@ -577,19 +577,10 @@ int hx_cmd_montecarlo(int argc, char **argv)
             static const char *const outs[] = { "--json", "--csv", "--plot", NULL };
             /* a profile file is an input: an output onto it replaced it
              * after it was read, exit 0 (a review, 2026-11-29) */
-            const char *ins[2];
-            int k;
-            fnav_profile_t tmp;
-            ins[0] = hx_arg(&a, "--profile");
-            ins[1] = fprof;
-            if (hx_output_is_input("montecarlo", NULL, &a, outs)) {
+            if (hx_output_is_input("montecarlo", NULL, &a, outs) ||
+                hx_profile_is_output("montecarlo", hx_arg(&a, "--profile"), &a, outs) ||
+                hx_profile_is_output("montecarlo", fprof, &a, outs)) {
                 return HX_EXIT_USAGE;
-            }
-            for (k = 0; k < 2; k++) {
-                if (ins[k] != NULL && fnav_profile_by_name(&tmp, ins[k]) != FNAV_OK &&
-                    hx_output_is_input("montecarlo", ins[k], &a, outs)) {
-                    return HX_EXIT_USAGE;
-                }
             }
         }
         /* the outputs are written after every run: find out now that they can be */

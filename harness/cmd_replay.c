@@ -8,6 +8,7 @@
 #include "hx_cli.h"
 #include "hx_commands.h"
 #include "hx_nav.h"
+#include "hx_profile.h"
 
 static const hx_opt_t k_opts[] = {
     HX_INPUT_OPTS,
@@ -80,7 +81,7 @@ int hx_cmd_replay(int argc, char **argv)
     }
     {
         static const char *const outs[] = { "--out", "--json", "--plot", NULL };
-        if (hx_output_is_input("replay", a.pos[0], &a, outs)) {
+        if (hx_output_is_input("replay", a.pos[0], &a, outs) || hx_profile_is_output("replay", o.profile, &a, outs)) {
             return HX_EXIT_USAGE;
         }
     }

@@ -120,6 +120,14 @@ int hx_cmd_sim(int argc, char **argv)
     if (hx_sim_setup_from_args("sim", &a, &su) != 0) {
         return HX_EXIT_USAGE;
     }
+    {
+        /* a profile file is an input (a review, 2026-11-29: --out onto it
+         * replaced it, exit 0) */
+        static const char *const outs[] = { "--out", "--truth", NULL };
+        if (hx_profile_is_output("sim", su.profile_name, &a, outs)) {
+            return HX_EXIT_USAGE;
+        }
+    }
     sc.err = su.err;
     sc.decim = su.decim;
     rate = (double)su.err.rate_hz;

@@ -92,7 +92,7 @@ int hx_cmd_simgap(int argc, char **argv)
     path = a.pos[0];
     {
         static const char *const outs[] = { "--json", "--plot", NULL };
-        if (hx_output_is_input("simgap", path, &a, outs)) {
+        if (hx_output_is_input("simgap", path, &a, outs) || hx_profile_is_output("simgap", o.profile, &a, outs)) {
             return HX_EXIT_USAGE;
         }
     }

@@ -250,3 +250,12 @@ int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size
     }
     return hx_profile_read(name_or_path, p, err, err_size);
 }
+
+int hx_profile_is_output(const char *cmd, const char *name_or_path, const hx_args_t *a, const char *const *outs)
+{
+    fnav_profile_t tmp;
+    if (name_or_path == NULL || fnav_profile_by_name(&tmp, name_or_path) == FNAV_OK) {
+        return 0;
+    }
+    return hx_output_is_input(cmd, name_or_path, a, outs);
+}

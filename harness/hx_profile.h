@@ -8,6 +8,7 @@
 
 #include <stddef.h>
 #include "footnav/fnav_profile.h"
+#include "hx_cli.h"
 
 /** Read a profile file. 0 on success; -1 with a one-line "FILE:LINE: ..."
  *  message in err. Unknown keys are ignored (room for extra information). */
@@ -25,5 +26,11 @@ int hx_profile_write_extra(const char *path, const fnav_profile_t *p, const char
 
 /** A built-in name ("navchip", "mtx", "shimmer") or a file path. */
 int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size_t err_size);
+
+/** A profile given as a file is an input: 1 (with the error printed) when
+ *  one of the output options @p outs (NULL-terminated) names that file,
+ *  which would replace the profile after it was read; 0 otherwise, and for
+ *  a built-in name or NULL. */
+int hx_profile_is_output(const char *cmd, const char *name_or_path, const hx_args_t *a, const char *const *outs);
 
 #endif /* HX_PROFILE_H */

@@ -46,6 +46,24 @@ expect_exit 2 "bad --rate" "$H" replay vectors/walk.bin --rate -5
 expect_exit 2 "config rejected by the core" "$H" replay vectors/walk.bin --param window_s=-1 --quiet
 expect_err "rejected" "rejected configuration explained"
 expect_exit 1 "missing log" "$H" replay /nonexistent/log.csv
+# a profile file is an input: an output onto it replaced it after it was read,
+# exit 0 (a review, 2026-11-29; montecarlo's the same day)
+cp docs/profiles/generic-mems.profile "$T/prof_keep.txt"
+profile_kept() { # description command...: exit 2 naming the clash, the profile file unchanged
+    d=$1
+    shift
+    cp "$T/prof_keep.txt" "$T/prof.txt"
+    expect_exit 2 "$d" "$@"
+    expect_err "is the input itself" "$d: the clash is named"
+    if cmp -s "$T/prof.txt" "$T/prof_keep.txt"; then pass "$d: the profile file is kept"; else
+        fail "$d: the profile file was overwritten"; fi
+}
+profile_kept "replay --out onto the --profile file" "$H" replay vectors/walk.bin --profile "$T/prof.txt" --out "$T/prof.txt"
+profile_kept "live --json onto the --profile file" "$H" live /dev/null --profile "$T/prof.txt" --json "$T/prof.txt"
+profile_kept "sim --out onto the --profile file" "$H" sim --profile "$T/prof.txt" --out "$T/prof.txt" --duration 1
+profile_kept "sim --truth onto the --profile file" "$H" sim --profile "$T/prof.txt" --out "$T/sim.csv" --truth "$T/prof.txt" --duration 1
+profile_kept "simgap --json onto the --profile file" "$H" simgap vectors/walk.bin --profile "$T/prof.txt" --json "$T/prof.txt"
+profile_kept "eval --out onto the --profile file" "$H" eval --profile "$T/prof.txt" --out "$T/prof.txt"
 
 # --- the bundled walk (x-io short walk, duplicates and gaps)
 expect_exit 0 "replay walk.bin" "$H" replay vectors/walk.bin --out "$T/traj.csv" --json "$T/s.json"
