@@ -885,7 +885,9 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr
     r->prev_counter = counter;
     r->gx2_prev_host = host_s;
     r->gx2_prev_nr = nr;
-    return (r->gx2_ticks * 1000000000LL) / GX2_TICK_HZ;
+    /* whole seconds apart: ticks x 1e9 leaves int64 after 469 s (a longer
+     * log read "time goes backwards" there; a review, 2026-11-29) */
+    return (r->gx2_ticks / GX2_TICK_HZ) * 1000000000LL + ((r->gx2_ticks % GX2_TICK_HZ) * 1000000000LL) / GX2_TICK_HZ;
 }
 
 static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s);

@@ -745,6 +745,38 @@ static void test_gx2_first_restart(void **state)
     remove(p);
 }
 
+/* GX2 time past 469 s: ticks x 1e9 overflowed int64 there (19.6608 MHz), and
+ * a longer log stopped with "time goes backwards". 9,600 samples 50 ms
+ * apart (983,040 ticks; the 32-bit timer wraps twice, bridged with the
+ * period) end at 479.95 s exactly. */
+static void test_gx2_long(void **state)
+{
+    const long period = 983040;
+    hx_log_t log;
+    char err[320], p[256];
+    FILE *f;
+    long nr;
+    unsigned long counter = 1000;
+    (void)state;
+    tmp_path(p, sizeof p, "_data_inert.txt");
+    f = fopen(p, "w");
+    assert_non_null(f);
+    write_gx2_header(f);
+    for (nr = 1; nr <= 9600; nr++) {
+        const double host = 1274434048.5 + 0.05 * (double)nr;
+        fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %lu    0x15fd       %ld %.6f %.6f %.6f  20.000000   -0.12299968   -0.01066045   -0.46057537 \r\n",
+                counter, nr, host, host, host + 0.05);
+        counter = (counter + (unsigned long)period) & 0xFFFFFFFFUL;
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.meta.format, HX_FMT_GX2);
+    assert_int_equal(log.n, 9600);
+    assert_true(log.t_ns[log.n - 1] == 9599LL * 50000000LL);
+    hx_log_free(&log);
+    remove(p);
+}
+
 /* Format detection by the names a header holds, not its first bytes: the
  * shared data sets' headers with ", " between names, quotes, another
  * column order, a leading index column, a blank first line, and the ipol
@@ -1092,6 +1124,7 @@ int main(void)
         cmocka_unit_test(test_importer_units),
         cmocka_unit_test(test_gx2_lost_packets),
         cmocka_unit_test(test_gx2_first_restart),
+        cmocka_unit_test(test_gx2_long),
         cmocka_unit_test(test_ipol_counter_wrap),
         cmocka_unit_test(test_detect_variants),
         cmocka_unit_test(test_detect_wrong_hint),
