@@ -1207,6 +1207,10 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                     in_range &= fabs((double)rec.acc[k]) <= FNAV_INPUT_MAX_ABS &&
                                 fabs((double)rec.gyr[k]) <= FNAV_INPUT_MAX_ABS;
                 }
+                /* a valid temperature too, as the CSV reader checks it (a
+                 * NaN one was delivered and written into a CSV that the
+                 * CSV reader refuses; a review, 2026-11-29) */
+                finite &= !(rec.flags & HX_BIN_REC_TEMP) || isfinite(rec.temp);
                 if (!finite) {
                     set_err(r, "%s: record #%ld at byte %lld: NaN or Inf in a sample", r->path, r->record_slot,
                             r->offset);

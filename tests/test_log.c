@@ -291,6 +291,14 @@ static void test_bin_nan_record(void **state)
     rec.gyr[1] = nan;
     hx_bin_record_encode(&rec, b + HX_BIN_HEADER_SIZE + 4 * HX_BIN_RECORD_SIZE);
     expect_bin(b, g_golden_n, 1, 4, FNAV_E_NANINF, "NaN");
+    /* a NaN temperature (flagged valid) likewise: it was delivered, and
+     * convert wrote "nan" into a CSV that the CSV reader refuses */
+    memcpy(b, g_golden, g_golden_n);
+    assert_int_equal(hx_bin_record_decode(b + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE, &rec), 0);
+    assert_true((rec.flags & HX_BIN_REC_TEMP) != 0);
+    rec.temp = nan;
+    hx_bin_record_encode(&rec, b + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE);
+    expect_bin(b, g_golden_n, 1, 2, FNAV_E_NANINF, "NaN");
 }
 
 /* ------------------------------------------------------------ bad CSV */
