@@ -1536,8 +1536,10 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, c
         return NULL;
     }
     if (r->meta.rate_hz <= 0.0) {
-        /* time-stamped text without a nominal rate: estimate from the
-         * stamps of the first samples (a separate pass over the start) */
+        /* time stamps without a nominal rate (text, or a .bin whose header
+         * gives 0, "unknown"): estimate from the stamps of the first samples
+         * (a separate pass over the start; a .bin was read as text here,
+         * which gave nothing: a review, 2026-11-29) */
         char e2[64];
         hx_reader_t *p = open_raw(path, r->meta.format, rate_hz, e2, sizeof e2);
         if (p != NULL) {
@@ -1546,7 +1548,7 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, c
             size_t n = 0;
             fnav_sample_t s;
             memset(&s, 0, sizeof s);
-            while (n < N && next_text(p, &s) == FNAV_OK) {
+            while (n < N && (p->meta.format == HX_FMT_BIN ? next_bin(p, &s) : next_text(p, &s)) == FNAV_OK) {
                 ts[n++] = s.t_ns;
             }
             {

@@ -1064,6 +1064,40 @@ static void test_roundtrip_all_formats(void **state)
     }
 }
 
+/* A .bin whose header gives no rate (0, "unknown", as live records when the
+ * device names none) gets the rate of its time stamps, as a time-stamped
+ * text log does: the estimate read the .bin as text and gave nothing, and
+ * allan, for one, fell back on the first interval alone. 1,000 samples
+ * at 5 ms with a 1 ms jitter on every fourth interval: median 5 ms. */
+static void test_bin_rate_unknown(void **state)
+{
+    char p[256], err[320];
+    hx_writer_t *w;
+    hx_reader_t *r;
+    hx_meta_t m;
+    fnav_sample_t s;
+    int i;
+    (void)state;
+    tmp_path(p, sizeof p, ".bin");
+    memset(&m, 0, sizeof m);
+    memset(&s, 0, sizeof s);
+    w = hx_writer_open(p, HX_FMT_BIN, &m, 0, err, sizeof err);
+    assert_non_null(w);
+    for (i = 0; i < 1000; i++) {
+        s.t_ns = (int64_t)i * 5000000 + (i % 4 == 1 ? 1000000 : 0);
+        s.accel_mps2[2] = FNAV_R(9.81);
+        assert_int_equal(hx_writer_write(w, &s), FNAV_OK);
+    }
+    assert_int_equal(hx_writer_close(w, err, sizeof err), FNAV_OK);
+    r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_non_null(r);
+    assert_int_equal(hx_reader_meta(r)->format, HX_FMT_BIN);
+    assert_true(fabs(hx_reader_meta(r)->rate_hz - 200.0) < 1e-9);
+    assert_int_equal(hx_reader_meta(r)->rate_nominal, 0);
+    hx_reader_close(r);
+    unlink(p);
+}
+
 /* A recording killed mid-write (no end record, partial last record) still
  * yields every complete record. */
 static void test_killed_writer(void **state)
@@ -1140,6 +1174,7 @@ int main(void)
         cmocka_unit_test(test_stamp_rate),
         cmocka_unit_test(test_roundtrip_all_formats),
         cmocka_unit_test(test_killed_writer),
+        cmocka_unit_test(test_bin_rate_unknown),
         cmocka_unit_test(test_format_names),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);
