@@ -1008,6 +1008,13 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
                     prc == -2 ? "NaN or Inf" : "not a number");
             return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
         }
+        if (fabs(tc) > FNAV_INPUT_MAX_ABS) {
+            /* 1e40 became an Inf float, written by convert as "inf" or into
+             * a .bin record that its reader refuses (a review, 2026-11-29) */
+            set_err(r, "%s:%ld: temperature ('%.20s') is beyond %g degC (no sensor reads that)", r->path,
+                    r->stats.lines, f[r->col_temp], FNAV_INPUT_MAX_ABS);
+            return FNAV_E_RANGE;
+        }
         s->temp_c = (fnav_real_t)tc;
         s->flags |= FNAV_SAMPLE_HAS_TEMP;
     }

@@ -336,6 +336,11 @@ static void test_csv_malformed(void **state)
                "backwards");
     expect_csv("t,ax,ay,az,gx,gy,gz\nzero,1,2,3,4,5,6\n", 1, 0, FNAV_E_FORMAT, "time");
     expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,1e999\n", 1, 0, FNAV_E_NANINF, ":2:");
+    /* a temperature beyond float32 became Inf, which convert wrote as "inf"
+     * (a CSV the reader refuses) or into a .bin record the .bin reader
+     * refuses: refused at its line, as a value beyond 1e6 */
+    expect_csv("t,ax,ay,az,gx,gy,gz,temp\n0,1,2,3,4,5,6,20\n0.01,1,2,3,4,5,6,1e40\n", 1, 1, FNAV_E_RANGE,
+               ":3: temperature");
 }
 
 static void test_csv_flexible(void **state)
