@@ -201,8 +201,8 @@ static int parse_num(const char *s, double *out)
 {
     char *end;
     double v;
-    if (*s == '\0') {
-        return -1;
+    if (*s == '\0' || strpbrk(s, "xX") != NULL) {
+        return -1; /* C's hexadecimal notation, which strtod reads (0x10 as 16), is no decimal number */
     }
     errno = 0;
     v = strtod(s, &end);

@@ -335,6 +335,11 @@ static void test_csv_malformed(void **state)
     expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.02,1,2,3,4,5,6\n0.01,1,2,3,4,5,6\n", 1, 2, FNAV_E_TIME,
                "backwards");
     expect_csv("t,ax,ay,az,gx,gy,gz\nzero,1,2,3,4,5,6\n", 1, 0, FNAV_E_FORMAT, "time");
+    /* C's hexadecimal notation is no decimal number: strtod read 0x10 as 16
+     * (a logger's hex field in a wrong column passed as a value) */
+    expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.01,0x10,2,3,4,5,6\n", 1, 1, FNAV_E_FORMAT,
+               ":3: column 2 ('0x10') is not a number");
+    expect_csv("t,ax,ay,az,gx,gy,gz\n0x1,1,2,3,4,5,6\n", 1, 0, FNAV_E_FORMAT, ":2: time");
     expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,1e999\n", 1, 0, FNAV_E_NANINF, ":2:");
     /* a temperature beyond float32 became Inf, which convert wrote as "inf"
      * (a CSV the reader refuses) or into a .bin record the .bin reader
