@@ -367,11 +367,24 @@ static void test_csv_flexible(void **state)
     assert_true(m.has_temp);
     assert_int_equal(r.end, FNAV_END);
     assert_int_equal(r.n, 3);
-    assert_true(r.s[2].t_ns == 10000000 || r.s[2].t_ns == 10000001); /* 9-digit rounding of 1e-2 + 5e-10 */
+    assert_true(r.s[2].t_ns == 10000001); /* 1e-2 + 5e-10 to the nearest ns, half up */
     assert_true((float)r.s[2].accel_mps2[0] == 4.0f);
     assert_true((float)r.s[2].gyro_rps[2] == 0.6f);
     assert_true((float)r.s[2].temp_c == 21.0f);
     assert_true(r.s[0].t_ns == r.s[1].t_ns);
+    unlink(p);
+    /* more than nine decimals round to the nearest ns, as the same number in
+     * exponent notation does (they were cut: 1.9999999996 read 1 ns short
+     * of 1.9999999996e0) */
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n0.0000000014,1,2,3,4,5,6\n0.0000000016,1,2,3,4,5,6\n"
+                  "1.9999999996,1,2,3,4,5,6\n1.9999999996e0,1,2,3,4,5,6\n");
+    assert_int_equal(read_all(p, HX_FMT_CSV, 0.0, &r, NULL), 0);
+    assert_int_equal(r.end, FNAV_END);
+    assert_int_equal(r.n, 4);
+    assert_true(r.s[0].t_ns == 1);
+    assert_true(r.s[1].t_ns == 2);
+    assert_true(r.s[2].t_ns == 2000000000LL);
+    assert_true(r.s[3].t_ns == 2000000000LL);
     unlink(p);
 }
 
