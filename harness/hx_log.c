@@ -89,6 +89,7 @@ struct hx_reader {
     size_t pos, len;
     long long offset;           /* file offset of buf[pos] */
     int eof;
+    int gz_cut;                 /* the gzip data ended early (a truncated .bin.gz) */
     long record_slot;           /* index of the next record slot */
 };
 
@@ -1125,10 +1126,19 @@ static int bin_fill(hx_reader_t *r, size_t need)
             r->pos = 0;
         }
         got = gzread(r->gz, r->buf + r->len, (unsigned)(sizeof r->buf - r->len));
-        if (got < 0) {
+        if (got <= 0) {
             int e;
-            set_err(r, "%s: read error (%s)", r->path, gzerror(r->gz, &e));
-            return -1;
+            const char *msg = gzerror(r->gz, &e);
+            if (e == Z_BUF_ERROR) {
+                /* a .bin.gz cut short: the records before the cut are
+                 * delivered, then said as a truncated .gz, not as a
+                 * recording cut off mid-record (a review, 2026-11-29) */
+                r->gz_cut = 1;
+                got = 0;
+            } else if (got < 0) {
+                set_err(r, "%s: read error (%s)", r->path, msg);
+                return -1;
+            }
         }
         if (got == 0) {
             r->eof = 1;
@@ -1178,6 +1188,12 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
         }
         if (rc == 0) {
             size_t left = r->len - r->pos;
+            if (r->gz_cut) {
+                set_err(r, "%s: the gzip data ends early (a truncated .gz, e.g. an incomplete copy) after %ld "
+                           "complete records", r->path, r->stats.records);
+                r->pos = r->len;
+                return FNAV_E_TRUNCATED;
+            }
             if (left > 0) {
                 set_err(r, "%s: truncated: record #%ld at byte %lld has %zu of %d bytes (%ld complete records read)",
                         r->path, r->record_slot, r->offset, left, HX_BIN_RECORD_SIZE, r->stats.records);

@@ -445,6 +445,52 @@ static void test_gz_truncated(void **state)
     assert_true(rc < 0);
     assert_non_null(strstr(err, "the gzip data ends before any text (a truncated .gz"));
     unlink(p);
+    /* a .bin.gz cut short: said as a truncated .gz, not as a recording cut
+     * off mid-record or never closed (bytes of the uncompressed data) */
+    {
+        hx_writer_t *w;
+        hx_meta_t m;
+        fnav_sample_t s;
+        tmp_path(p, sizeof p, ".bin");
+        memset(&m, 0, sizeof m);
+        m.rate_hz = 100.0;
+        memset(&s, 0, sizeof s);
+        w = hx_writer_open(p, HX_FMT_BIN, &m, 0, err, sizeof err);
+        assert_non_null(w);
+        for (k = 0; k < 20000; k++) {
+            s.t_ns = (int64_t)k * 10000000;
+            s.accel_mps2[0] = (fnav_real_t)(0.01 * (k % 17));
+            s.accel_mps2[2] = (fnav_real_t)(9.81 + 0.001 * (k % 29));
+            s.gyro_rps[1] = (fnav_real_t)(0.001 * (k % 13));
+            assert_int_equal(hx_writer_write(w, &s), FNAV_OK);
+        }
+        assert_int_equal(hx_writer_close(w, err, sizeof err), FNAV_OK);
+        {
+            unsigned char *buf = (unsigned char *)malloc(2000000);
+            size_t n;
+            char pz[256];
+            assert_non_null(buf);
+            n = read_file(p, buf, 2000000);
+            unlink(p);
+            tmp_path(pz, sizeof pz, ".bin.gz");
+            gz = gzopen(pz, "wb");
+            assert_non_null(gz);
+            assert_int_equal(gzwrite(gz, buf, (unsigned)n), (int)n);
+            assert_int_equal(gzclose(gz), Z_OK);
+            free(buf);
+            assert_int_equal(stat(pz, &sb), 0);
+            assert_int_equal(truncate(pz, sb.st_size / 2), 0);
+            rc = hx_log_load(&log, pz, HX_FMT_AUTO, 0.0, err, sizeof err);
+            assert_int_equal(rc, 1);
+            assert_int_equal(log.meta.format, HX_FMT_BIN);
+            assert_true(log.n > 1000 && log.n < 20000);
+            if (strstr(log.error, "the gzip data ends early (a truncated .gz") == NULL) {
+                fail_msg("'%s' does not name the truncated .gz", log.error);
+            }
+            hx_log_free(&log);
+            unlink(pz);
+        }
+    }
 }
 
 /* Reads the foreign recording at p to its end: it must be of format fmt,
