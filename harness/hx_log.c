@@ -867,6 +867,10 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr
 {
     if (!r->have_prev) {
         r->gx2_ticks = 0;
+    } else if (counter == r->prev_counter && nr == r->gx2_prev_nr) {
+        /* the same packet written again: a duplicate (dt = 0), as in every
+         * other format; it was bridged as a restart, one period on, which
+         * hid it and shifted the rest of the log (a review, 2026-11-29) */
     } else {
         double d = counter - r->prev_counter, dn = nr - r->gx2_prev_nr;
         const long k = (dn >= 1.0 && dn <= (double)GX2_MAX_LOST) ? (long)dn : 1;

@@ -822,6 +822,45 @@ static void test_gx2_first_restart(void **state)
     remove(p);
 }
 
+/* GX2: a packet written twice (same Nr, same timer value) is a duplicate,
+ * dt = 0, as in every other format; it was bridged as a timer restart, one
+ * period later, which hid it and shifted every later sample by a period. */
+static void test_gx2_repeated_packet(void **state)
+{
+    const long period = 78720;
+    hx_log_t log;
+    char err[320], p[256];
+    FILE *f;
+    long nr, counter = 130516848;
+    size_t k;
+    (void)state;
+    tmp_path(p, sizeof p, "_data_inert.txt");
+    f = fopen(p, "w");
+    assert_non_null(f);
+    write_gx2_header(f);
+    for (nr = 1; nr <= 10; nr++) {
+        int rep;
+        for (rep = 0; rep < (nr == 5 ? 2 : 1); rep++) {
+            fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %ld    0x15fd       %ld %.6f %.6f %.6f  250.000001   -0.12299968   -0.01066045   -0.46057537 \r\n",
+                    counter, nr, 1274434048.5 + 0.004 * (double)nr, 1274434048.5 + 0.004 * (double)nr,
+                    1274434048.504 + 0.004 * (double)nr);
+        }
+        counter += period;
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.meta.format, HX_FMT_GX2);
+    assert_int_equal(log.n, 11);
+    assert_true(log.t_ns[5] == log.t_ns[4]); /* the repeat */
+    for (k = 0; k < log.n; k++) {
+        const int64_t want = (int64_t)(log.seq[k] - 1u) * period * 1000000000LL / 19660800LL;
+        assert_true(log.t_ns[k] == want);
+    }
+    assert_null(strstr(log.warnings, "restarted"));
+    hx_log_free(&log);
+    remove(p);
+}
+
 /* GX2 time past 469 s: ticks x 1e9 overflowed int64 there (19.6608 MHz), and
  * a longer log stopped with "time goes backwards". 9,600 samples 50 ms
  * apart (983,040 ticks; the 32-bit timer wraps twice, bridged with the
@@ -1236,6 +1275,7 @@ int main(void)
         cmocka_unit_test(test_gx2_lost_packets),
         cmocka_unit_test(test_gx2_first_restart),
         cmocka_unit_test(test_gx2_long),
+        cmocka_unit_test(test_gx2_repeated_packet),
         cmocka_unit_test(test_ipol_counter_wrap),
         cmocka_unit_test(test_detect_variants),
         cmocka_unit_test(test_detect_wrong_hint),
