@@ -604,7 +604,7 @@ static int all_numeric(char **f, int n)
 static int setup_header(hx_reader_t *r, const char *const names[8], int time_required)
 {
     char *f[HX_MAX_COLS];
-    int n, i, rc;
+    int n, i, rc, total;
     static const char *const what[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
     for (;;) {
         rc = read_line(r);
@@ -649,6 +649,14 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
             r->delim = ' ';
         }
     }
+    {
+        /* the header's own count of fields: split keeps HX_MAX_COLS */
+        const char *q;
+        total = 1;
+        for (q = r->line; r->delim != ' ' && *q != '\0'; q++) {
+            total += *q == r->delim;
+        }
+    }
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     r->ncols_needed = 0;
     r->missing_col = -1;
@@ -656,7 +664,13 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
         int c = (names[i] != NULL) ? find_col(f, n, names[i]) : -1;
         if (c < 0 && names[i] != NULL && (i < 7) && (i > 0 || time_required)) {
             r->missing_col = i;
-            if (all_numeric(f, n)) {
+            if (total > HX_MAX_COLS) {
+                /* the column may be there, past the ones read (it said "header
+                 * has no column 'gx'" of a header that had it; a review,
+                 * 2026-11-29) */
+                set_err(r, "%s:%ld: header has %d columns; only the first %d are read, and '%s' is not among them",
+                        r->path, r->stats.lines, total, HX_MAX_COLS, names[i]);
+            } else if (all_numeric(f, n)) {
                 set_err(r, "%s:%ld: the first line is data, not a header: a %s log starts with its header (%s)",
                         r->path, r->stats.lines, hx_format_name(r->meta.format),
                         r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "see docs/log-format.md");

@@ -326,6 +326,20 @@ static void test_csv_malformed(void **state)
 {
     (void)state;
     expect_csv("", 0, 0, FNAV_END, "empty");
+    {
+        /* 'gx' in column 65 of 67, past the 64 read: said so, not "no column" */
+        char text[1024];
+        size_t k, m = 0;
+        for (k = 0; k < 60; k++) {
+            m += (size_t)snprintf(text + m, sizeof text - m, "c%zu,", k);
+        }
+        m += (size_t)snprintf(text + m, sizeof text - m, "t,ax,ay,az,gx,gy,gz\n");
+        for (k = 0; k < 66; k++) {
+            m += (size_t)snprintf(text + m, sizeof text - m, "0,");
+        }
+        snprintf(text + m, sizeof text - m, "0\n");
+        expect_csv(text, 0, 0, FNAV_END, "header has 67 columns; only the first 64 are read, and 'gx' is not among them");
+    }
     expect_csv("t,ax,ay,az,gx,gy\n0,1,2,3,4,5\n", 0, 0, FNAV_END, "no column 'gz'");
     expect_csv("t,ax,ay,az,gx,gy,gz\n", 1, 0, FNAV_E_FORMAT, "no samples");
     expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.01,1,2,x3,4,5,6\n", 1, 1, FNAV_E_FORMAT, ":3:");
