@@ -51,6 +51,8 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate)
     res.meta.rate_hz = rate;
     res.meta.rate_nominal = 1;
     res.meta.has_temp = 0; /* the resampler carries no temperature */
+    res.meta.has_seq = 0;  /* nor the sensor's counter: its seq is a running index (the .bin said "the
+                              sensor's own counter", and info counted no drops; a review, 2026-11-29) */
     hx_log_free(&raw);
     w = hx_writer_open(a->pos[1], to, &res.meta, 0, err, sizeof err);
     if (w == NULL) {

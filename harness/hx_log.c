@@ -89,6 +89,7 @@ struct hx_reader {
     size_t pos, len;
     long long offset;           /* file offset of buf[pos] */
     int eof;
+    int gz_cut;                 /* the gzip data ended early (a truncated .bin.gz) */
     long record_slot;           /* index of the next record slot */
 };
 
@@ -201,8 +202,8 @@ static int parse_num(const char *s, double *out)
 {
     char *end;
     double v;
-    if (*s == '\0') {
-        return -1;
+    if (*s == '\0' || strpbrk(s, "xX") != NULL) {
+        return -1; /* C's hexadecimal notation, which strtod reads (0x10 as 16), is no decimal number */
     }
     errno = 0;
     v = strtod(s, &end);
@@ -220,7 +221,7 @@ static int parse_num(const char *s, double *out)
 static int parse_time_ns(const char *s, int64_t *out)
 {
     const char *p = s;
-    int neg = 0, digits = 0, frac = 0;
+    int neg = 0, digits = 0, frac = 0, extra = 0, up = 0;
     int64_t ip = 0, fp = 0;
     if (*p == '+' || *p == '-') {
         neg = (*p == '-');
@@ -240,6 +241,11 @@ static int parse_time_ns(const char *s, int64_t *out)
             if (frac < 9) {
                 fp = fp * 10 + (*p - '0');
                 frac++;
+            } else if (extra++ == 0) {
+                /* the tenth decimal rounds to the nearest ns, as strtod's
+                 * path below does (it was cut off: 1.9999999996 read 1 ns
+                 * short of 1.9999999996e0; a review, 2026-11-29) */
+                up = *p >= '5';
             }
             p++;
             digits++;
@@ -261,7 +267,7 @@ static int parse_time_ns(const char *s, int64_t *out)
         fp *= 10;
         frac++;
     }
-    *out = (ip * 1000000000LL + fp) * (neg ? -1 : 1);
+    *out = (ip * 1000000000LL + fp + up) * (neg ? -1 : 1);
     return 0;
 }
 
@@ -598,7 +604,7 @@ static int all_numeric(char **f, int n)
 static int setup_header(hx_reader_t *r, const char *const names[8], int time_required)
 {
     char *f[HX_MAX_COLS];
-    int n, i, rc;
+    int n, i, rc, total;
     static const char *const what[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
     for (;;) {
         rc = read_line(r);
@@ -643,6 +649,14 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
             r->delim = ' ';
         }
     }
+    {
+        /* the header's own count of fields: split keeps HX_MAX_COLS */
+        const char *q;
+        total = 1;
+        for (q = r->line; r->delim != ' ' && *q != '\0'; q++) {
+            total += *q == r->delim;
+        }
+    }
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     r->ncols_needed = 0;
     r->missing_col = -1;
@@ -650,7 +664,13 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
         int c = (names[i] != NULL) ? find_col(f, n, names[i]) : -1;
         if (c < 0 && names[i] != NULL && (i < 7) && (i > 0 || time_required)) {
             r->missing_col = i;
-            if (all_numeric(f, n)) {
+            if (total > HX_MAX_COLS) {
+                /* the column may be there, past the ones read (it said "header
+                 * has no column 'gx'" of a header that had it; a review,
+                 * 2026-11-29) */
+                set_err(r, "%s:%ld: header has %d columns; only the first %d are read, and '%s' is not among them",
+                        r->path, r->stats.lines, total, HX_MAX_COLS, names[i]);
+            } else if (all_numeric(f, n)) {
                 set_err(r, "%s:%ld: the first line is data, not a header: a %s log starts with its header (%s)",
                         r->path, r->stats.lines, hx_format_name(r->meta.format),
                         r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "see docs/log-format.md");
@@ -861,6 +881,10 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr
 {
     if (!r->have_prev) {
         r->gx2_ticks = 0;
+    } else if (counter == r->prev_counter && nr == r->gx2_prev_nr) {
+        /* the same packet written again: a duplicate (dt = 0), as in every
+         * other format; it was bridged as a restart, one period on, which
+         * hid it and shifted the rest of the log (a review, 2026-11-29) */
     } else {
         double d = counter - r->prev_counter, dn = nr - r->gx2_prev_nr;
         const long k = (dn >= 1.0 && dn <= (double)GX2_MAX_LOST) ? (long)dn : 1;
@@ -885,7 +909,9 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr
     r->prev_counter = counter;
     r->gx2_prev_host = host_s;
     r->gx2_prev_nr = nr;
-    return (r->gx2_ticks * 1000000000LL) / GX2_TICK_HZ;
+    /* whole seconds apart: ticks x 1e9 leaves int64 after 469 s (a longer
+     * log read "time goes backwards" there; a review, 2026-11-29) */
+    return (r->gx2_ticks / GX2_TICK_HZ) * 1000000000LL + ((r->gx2_ticks % GX2_TICK_HZ) * 1000000000LL) / GX2_TICK_HZ;
 }
 
 static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s);
@@ -1006,6 +1032,13 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
                     prc == -2 ? "NaN or Inf" : "not a number");
             return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
         }
+        if (fabs(tc) > FNAV_INPUT_MAX_ABS) {
+            /* 1e40 became an Inf float, written by convert as "inf" or into
+             * a .bin record that its reader refuses (a review, 2026-11-29) */
+            set_err(r, "%s:%ld: temperature ('%.20s') is beyond %g degC (no sensor reads that)", r->path,
+                    r->stats.lines, f[r->col_temp], FNAV_INPUT_MAX_ABS);
+            return FNAV_E_RANGE;
+        }
         s->temp_c = (fnav_real_t)tc;
         s->flags |= FNAV_SAMPLE_HAS_TEMP;
     }
@@ -1111,10 +1144,19 @@ static int bin_fill(hx_reader_t *r, size_t need)
             r->pos = 0;
         }
         got = gzread(r->gz, r->buf + r->len, (unsigned)(sizeof r->buf - r->len));
-        if (got < 0) {
+        if (got <= 0) {
             int e;
-            set_err(r, "%s: read error (%s)", r->path, gzerror(r->gz, &e));
-            return -1;
+            const char *msg = gzerror(r->gz, &e);
+            if (e == Z_BUF_ERROR) {
+                /* a .bin.gz cut short: the records before the cut are
+                 * delivered, then said as a truncated .gz, not as a
+                 * recording cut off mid-record (a review, 2026-11-29) */
+                r->gz_cut = 1;
+                got = 0;
+            } else if (got < 0) {
+                set_err(r, "%s: read error (%s)", r->path, msg);
+                return -1;
+            }
         }
         if (got == 0) {
             r->eof = 1;
@@ -1164,6 +1206,12 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
         }
         if (rc == 0) {
             size_t left = r->len - r->pos;
+            if (r->gz_cut) {
+                set_err(r, "%s: the gzip data ends early (a truncated .gz, e.g. an incomplete copy) after %ld "
+                           "complete records", r->path, r->stats.records);
+                r->pos = r->len;
+                return FNAV_E_TRUNCATED;
+            }
             if (left > 0) {
                 set_err(r, "%s: truncated: record #%ld at byte %lld has %zu of %d bytes (%ld complete records read)",
                         r->path, r->record_slot, r->offset, left, HX_BIN_RECORD_SIZE, r->stats.records);
@@ -1205,6 +1253,10 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                     in_range &= fabs((double)rec.acc[k]) <= FNAV_INPUT_MAX_ABS &&
                                 fabs((double)rec.gyr[k]) <= FNAV_INPUT_MAX_ABS;
                 }
+                /* a valid temperature too, as the CSV reader checks it (a
+                 * NaN one was delivered and written into a CSV that the
+                 * CSV reader refuses; a review, 2026-11-29) */
+                finite &= !(rec.flags & HX_BIN_REC_TEMP) || isfinite(rec.temp);
                 if (!finite) {
                     set_err(r, "%s: record #%ld at byte %lld: NaN or Inf in a sample", r->path, r->record_slot,
                             r->offset);
@@ -1530,8 +1582,10 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, c
         return NULL;
     }
     if (r->meta.rate_hz <= 0.0) {
-        /* time-stamped text without a nominal rate: estimate from the
-         * stamps of the first samples (a separate pass over the start) */
+        /* time stamps without a nominal rate (text, or a .bin whose header
+         * gives 0, "unknown"): estimate from the stamps of the first samples
+         * (a separate pass over the start; a .bin was read as text here,
+         * which gave nothing: a review, 2026-11-29) */
         char e2[64];
         hx_reader_t *p = open_raw(path, r->meta.format, rate_hz, e2, sizeof e2);
         if (p != NULL) {
@@ -1540,7 +1594,7 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, c
             size_t n = 0;
             fnav_sample_t s;
             memset(&s, 0, sizeof s);
-            while (n < N && next_text(p, &s) == FNAV_OK) {
+            while (n < N && (p->meta.format == HX_FMT_BIN ? next_bin(p, &s) : next_text(p, &s)) == FNAV_OK) {
                 ts[n++] = s.t_ns;
             }
             {

@@ -291,6 +291,14 @@ static void test_bin_nan_record(void **state)
     rec.gyr[1] = nan;
     hx_bin_record_encode(&rec, b + HX_BIN_HEADER_SIZE + 4 * HX_BIN_RECORD_SIZE);
     expect_bin(b, g_golden_n, 1, 4, FNAV_E_NANINF, "NaN");
+    /* a NaN temperature (flagged valid) likewise: it was delivered, and
+     * convert wrote "nan" into a CSV that the CSV reader refuses */
+    memcpy(b, g_golden, g_golden_n);
+    assert_int_equal(hx_bin_record_decode(b + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE, &rec), 0);
+    assert_true((rec.flags & HX_BIN_REC_TEMP) != 0);
+    rec.temp = nan;
+    hx_bin_record_encode(&rec, b + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE);
+    expect_bin(b, g_golden_n, 1, 2, FNAV_E_NANINF, "NaN");
 }
 
 /* ------------------------------------------------------------ bad CSV */
@@ -318,6 +326,20 @@ static void test_csv_malformed(void **state)
 {
     (void)state;
     expect_csv("", 0, 0, FNAV_END, "empty");
+    {
+        /* 'gx' in column 65 of 67, past the 64 read: said so, not "no column" */
+        char text[1024];
+        size_t k, m = 0;
+        for (k = 0; k < 60; k++) {
+            m += (size_t)snprintf(text + m, sizeof text - m, "c%zu,", k);
+        }
+        m += (size_t)snprintf(text + m, sizeof text - m, "t,ax,ay,az,gx,gy,gz\n");
+        for (k = 0; k < 66; k++) {
+            m += (size_t)snprintf(text + m, sizeof text - m, "0,");
+        }
+        snprintf(text + m, sizeof text - m, "0\n");
+        expect_csv(text, 0, 0, FNAV_END, "header has 67 columns; only the first 64 are read, and 'gx' is not among them");
+    }
     expect_csv("t,ax,ay,az,gx,gy\n0,1,2,3,4,5\n", 0, 0, FNAV_END, "no column 'gz'");
     expect_csv("t,ax,ay,az,gx,gy,gz\n", 1, 0, FNAV_E_FORMAT, "no samples");
     expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.01,1,2,x3,4,5,6\n", 1, 1, FNAV_E_FORMAT, ":3:");
@@ -327,7 +349,17 @@ static void test_csv_malformed(void **state)
     expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.02,1,2,3,4,5,6\n0.01,1,2,3,4,5,6\n", 1, 2, FNAV_E_TIME,
                "backwards");
     expect_csv("t,ax,ay,az,gx,gy,gz\nzero,1,2,3,4,5,6\n", 1, 0, FNAV_E_FORMAT, "time");
+    /* C's hexadecimal notation is no decimal number: strtod read 0x10 as 16
+     * (a logger's hex field in a wrong column passed as a value) */
+    expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.01,0x10,2,3,4,5,6\n", 1, 1, FNAV_E_FORMAT,
+               ":3: column 2 ('0x10') is not a number");
+    expect_csv("t,ax,ay,az,gx,gy,gz\n0x1,1,2,3,4,5,6\n", 1, 0, FNAV_E_FORMAT, ":2: time");
     expect_csv("t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,1e999\n", 1, 0, FNAV_E_NANINF, ":2:");
+    /* a temperature beyond float32 became Inf, which convert wrote as "inf"
+     * (a CSV the reader refuses) or into a .bin record the .bin reader
+     * refuses: refused at its line, as a value beyond 1e6 */
+    expect_csv("t,ax,ay,az,gx,gy,gz,temp\n0,1,2,3,4,5,6,20\n0.01,1,2,3,4,5,6,1e40\n", 1, 1, FNAV_E_RANGE,
+               ":3: temperature");
 }
 
 static void test_csv_flexible(void **state)
@@ -349,11 +381,24 @@ static void test_csv_flexible(void **state)
     assert_true(m.has_temp);
     assert_int_equal(r.end, FNAV_END);
     assert_int_equal(r.n, 3);
-    assert_true(r.s[2].t_ns == 10000000 || r.s[2].t_ns == 10000001); /* 9-digit rounding of 1e-2 + 5e-10 */
+    assert_true(r.s[2].t_ns == 10000001); /* 1e-2 + 5e-10 to the nearest ns, half up */
     assert_true((float)r.s[2].accel_mps2[0] == 4.0f);
     assert_true((float)r.s[2].gyro_rps[2] == 0.6f);
     assert_true((float)r.s[2].temp_c == 21.0f);
     assert_true(r.s[0].t_ns == r.s[1].t_ns);
+    unlink(p);
+    /* more than nine decimals round to the nearest ns, as the same number in
+     * exponent notation does (they were cut: 1.9999999996 read 1 ns short
+     * of 1.9999999996e0) */
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n0.0000000014,1,2,3,4,5,6\n0.0000000016,1,2,3,4,5,6\n"
+                  "1.9999999996,1,2,3,4,5,6\n1.9999999996e0,1,2,3,4,5,6\n");
+    assert_int_equal(read_all(p, HX_FMT_CSV, 0.0, &r, NULL), 0);
+    assert_int_equal(r.end, FNAV_END);
+    assert_int_equal(r.n, 4);
+    assert_true(r.s[0].t_ns == 1);
+    assert_true(r.s[1].t_ns == 2);
+    assert_true(r.s[2].t_ns == 2000000000LL);
+    assert_true(r.s[3].t_ns == 2000000000LL);
     unlink(p);
 }
 
@@ -414,6 +459,52 @@ static void test_gz_truncated(void **state)
     assert_true(rc < 0);
     assert_non_null(strstr(err, "the gzip data ends before any text (a truncated .gz"));
     unlink(p);
+    /* a .bin.gz cut short: said as a truncated .gz, not as a recording cut
+     * off mid-record or never closed (bytes of the uncompressed data) */
+    {
+        hx_writer_t *w;
+        hx_meta_t m;
+        fnav_sample_t s;
+        tmp_path(p, sizeof p, ".bin");
+        memset(&m, 0, sizeof m);
+        m.rate_hz = 100.0;
+        memset(&s, 0, sizeof s);
+        w = hx_writer_open(p, HX_FMT_BIN, &m, 0, err, sizeof err);
+        assert_non_null(w);
+        for (k = 0; k < 20000; k++) {
+            s.t_ns = (int64_t)k * 10000000;
+            s.accel_mps2[0] = (fnav_real_t)(0.01 * (k % 17));
+            s.accel_mps2[2] = (fnav_real_t)(9.81 + 0.001 * (k % 29));
+            s.gyro_rps[1] = (fnav_real_t)(0.001 * (k % 13));
+            assert_int_equal(hx_writer_write(w, &s), FNAV_OK);
+        }
+        assert_int_equal(hx_writer_close(w, err, sizeof err), FNAV_OK);
+        {
+            unsigned char *buf = (unsigned char *)malloc(2000000);
+            size_t n;
+            char pz[256];
+            assert_non_null(buf);
+            n = read_file(p, buf, 2000000);
+            unlink(p);
+            tmp_path(pz, sizeof pz, ".bin.gz");
+            gz = gzopen(pz, "wb");
+            assert_non_null(gz);
+            assert_int_equal(gzwrite(gz, buf, (unsigned)n), (int)n);
+            assert_int_equal(gzclose(gz), Z_OK);
+            free(buf);
+            assert_int_equal(stat(pz, &sb), 0);
+            assert_int_equal(truncate(pz, sb.st_size / 2), 0);
+            rc = hx_log_load(&log, pz, HX_FMT_AUTO, 0.0, err, sizeof err);
+            assert_int_equal(rc, 1);
+            assert_int_equal(log.meta.format, HX_FMT_BIN);
+            assert_true(log.n > 1000 && log.n < 20000);
+            if (strstr(log.error, "the gzip data ends early (a truncated .gz") == NULL) {
+                fail_msg("'%s' does not name the truncated .gz", log.error);
+            }
+            hx_log_free(&log);
+            unlink(pz);
+        }
+    }
 }
 
 /* Reads the foreign recording at p to its end: it must be of format fmt,
@@ -745,6 +836,77 @@ static void test_gx2_first_restart(void **state)
     remove(p);
 }
 
+/* GX2: a packet written twice (same Nr, same timer value) is a duplicate,
+ * dt = 0, as in every other format; it was bridged as a timer restart, one
+ * period later, which hid it and shifted every later sample by a period. */
+static void test_gx2_repeated_packet(void **state)
+{
+    const long period = 78720;
+    hx_log_t log;
+    char err[320], p[256];
+    FILE *f;
+    long nr, counter = 130516848;
+    size_t k;
+    (void)state;
+    tmp_path(p, sizeof p, "_data_inert.txt");
+    f = fopen(p, "w");
+    assert_non_null(f);
+    write_gx2_header(f);
+    for (nr = 1; nr <= 10; nr++) {
+        int rep;
+        for (rep = 0; rep < (nr == 5 ? 2 : 1); rep++) {
+            fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %ld    0x15fd       %ld %.6f %.6f %.6f  250.000001   -0.12299968   -0.01066045   -0.46057537 \r\n",
+                    counter, nr, 1274434048.5 + 0.004 * (double)nr, 1274434048.5 + 0.004 * (double)nr,
+                    1274434048.504 + 0.004 * (double)nr);
+        }
+        counter += period;
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.meta.format, HX_FMT_GX2);
+    assert_int_equal(log.n, 11);
+    assert_true(log.t_ns[5] == log.t_ns[4]); /* the repeat */
+    for (k = 0; k < log.n; k++) {
+        const int64_t want = (int64_t)(log.seq[k] - 1u) * period * 1000000000LL / 19660800LL;
+        assert_true(log.t_ns[k] == want);
+    }
+    assert_null(strstr(log.warnings, "restarted"));
+    hx_log_free(&log);
+    remove(p);
+}
+
+/* GX2 time past 469 s: ticks x 1e9 overflowed int64 there (19.6608 MHz), and
+ * a longer log stopped with "time goes backwards". 9,600 samples 50 ms
+ * apart (983,040 ticks; the 32-bit timer wraps twice, bridged with the
+ * period) end at 479.95 s exactly. */
+static void test_gx2_long(void **state)
+{
+    const long period = 983040;
+    hx_log_t log;
+    char err[320], p[256];
+    FILE *f;
+    long nr;
+    unsigned long counter = 1000;
+    (void)state;
+    tmp_path(p, sizeof p, "_data_inert.txt");
+    f = fopen(p, "w");
+    assert_non_null(f);
+    write_gx2_header(f);
+    for (nr = 1; nr <= 9600; nr++) {
+        const double host = 1274434048.5 + 0.05 * (double)nr;
+        fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %lu    0x15fd       %ld %.6f %.6f %.6f  20.000000   -0.12299968   -0.01066045   -0.46057537 \r\n",
+                counter, nr, host, host, host + 0.05);
+        counter = (counter + (unsigned long)period) & 0xFFFFFFFFUL;
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.meta.format, HX_FMT_GX2);
+    assert_int_equal(log.n, 9600);
+    assert_true(log.t_ns[log.n - 1] == 9599LL * 50000000LL);
+    hx_log_free(&log);
+    remove(p);
+}
+
 /* Format detection by the names a header holds, not its first bytes: the
  * shared data sets' headers with ", " between names, quotes, another
  * column order, a leading index column, a blank first line, and the ipol
@@ -1024,6 +1186,40 @@ static void test_roundtrip_all_formats(void **state)
     }
 }
 
+/* A .bin whose header gives no rate (0, "unknown", as live records when the
+ * device names none) gets the rate of its time stamps, as a time-stamped
+ * text log does: the estimate read the .bin as text and gave nothing, and
+ * allan, for one, fell back on the first interval alone. 1,000 samples
+ * at 5 ms with a 1 ms jitter on every fourth interval: median 5 ms. */
+static void test_bin_rate_unknown(void **state)
+{
+    char p[256], err[320];
+    hx_writer_t *w;
+    hx_reader_t *r;
+    hx_meta_t m;
+    fnav_sample_t s;
+    int i;
+    (void)state;
+    tmp_path(p, sizeof p, ".bin");
+    memset(&m, 0, sizeof m);
+    memset(&s, 0, sizeof s);
+    w = hx_writer_open(p, HX_FMT_BIN, &m, 0, err, sizeof err);
+    assert_non_null(w);
+    for (i = 0; i < 1000; i++) {
+        s.t_ns = (int64_t)i * 5000000 + (i % 4 == 1 ? 1000000 : 0);
+        s.accel_mps2[2] = FNAV_R(9.81);
+        assert_int_equal(hx_writer_write(w, &s), FNAV_OK);
+    }
+    assert_int_equal(hx_writer_close(w, err, sizeof err), FNAV_OK);
+    r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_non_null(r);
+    assert_int_equal(hx_reader_meta(r)->format, HX_FMT_BIN);
+    assert_true(fabs(hx_reader_meta(r)->rate_hz - 200.0) < 1e-9);
+    assert_int_equal(hx_reader_meta(r)->rate_nominal, 0);
+    hx_reader_close(r);
+    unlink(p);
+}
+
 /* A recording killed mid-write (no end record, partial last record) still
  * yields every complete record. */
 static void test_killed_writer(void **state)
@@ -1092,6 +1288,8 @@ int main(void)
         cmocka_unit_test(test_importer_units),
         cmocka_unit_test(test_gx2_lost_packets),
         cmocka_unit_test(test_gx2_first_restart),
+        cmocka_unit_test(test_gx2_long),
+        cmocka_unit_test(test_gx2_repeated_packet),
         cmocka_unit_test(test_ipol_counter_wrap),
         cmocka_unit_test(test_detect_variants),
         cmocka_unit_test(test_detect_wrong_hint),
@@ -1099,6 +1297,7 @@ int main(void)
         cmocka_unit_test(test_stamp_rate),
         cmocka_unit_test(test_roundtrip_all_formats),
         cmocka_unit_test(test_killed_writer),
+        cmocka_unit_test(test_bin_rate_unknown),
         cmocka_unit_test(test_format_names),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);

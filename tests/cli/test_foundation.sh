@@ -234,6 +234,16 @@ expect_err "is not a number in \[1, 100000\]" "bad --rate said, with replay's ra
 expect_exit 2 "convert --rate 1e-9" "$H" convert vectors/walk.bin "$T/rtiny.csv" --rate 1e-9
 if [ -e "$T/rtiny.csv" ] && grep -qi nan "$T/rtiny.csv"; then fail "convert --rate 1e-9 wrote NaN"; else pass "convert --rate 1e-9 writes no NaN"; fi
 expect_exit 2 "convert --rate inf" "$H" convert vectors/walk.bin "$T/rinf.csv" --rate inf
+# the resampled samples carry a running index, not the sensor's counter: the
+# .bin was flagged "seq is the sensor's own counter", and info read 0 counter
+# drops from a log whose counter had lost 10 packets
+awk 'BEGIN { print "Acquisition frequency: 100 Hz"; print "PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z";
+    for (k = 0; k < 1000; k++) if (k < 500 || k >= 510) printf "%d\t0.1\t0\t9.8\t0.001\t0\t0\n", k }' > "$T/drops.txt"
+expect_exit 0 "info on a counter log with 10 drops" "$H" info "$T/drops.txt"
+expect_out "drops       10 " "the 10 lost packets are counted"
+expect_exit 0 "convert it --rate 50 to .bin" "$H" convert "$T/drops.txt" "$T/drops50.bin" --rate 50
+expect_exit 0 "info on the resampled .bin" "$H" info "$T/drops50.bin"
+if grep -q "^drops" "$T/out"; then fail "the resampled .bin claims a sensor counter: $(grep '^drops' "$T/out")"; else pass "the resampled .bin claims no sensor counter"; fi
 
 # stamps implying a rate the .bin header cannot hold (4 MHz): the rate is
 # stored as unknown and the file stays readable (convert wrote it, then
