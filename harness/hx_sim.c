@@ -532,6 +532,19 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
                 w->stride_m = 120.0 * sp / w->cadence_spm;
             }
         }
+        /* the derived figure keeps the range of its own option (--speed 10
+         * --cadence 20 walked 50 m strides, --speed 5 --stride 0.5 was
+         * refused as "gait fractions leave no time to swing"; a review) */
+        if (w->cadence_spm < 20.0 || w->cadence_spm > 300.0) {
+            hx_error(cmd, "--speed %g with a stride of %g m makes a cadence of %.4g steps/min, outside [20, 300]", sp,
+                     w->stride_m, w->cadence_spm);
+            return -1;
+        }
+        if (w->stride_m < 0.05 || w->stride_m > 5.0) {
+            hx_error(cmd, "--speed %g at %g steps/min makes a stride of %.4g m, outside [0.05, 5]", sp, w->cadence_spm,
+                     w->stride_m);
+            return -1;
+        }
     }
     v = 0.0;
     if (hx_arg_double(a, "--impact-ms", 0.5, 200.0, &v) != 0) {
@@ -564,6 +577,14 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         return -1;
     }
     s->bias_eq6 = bs != NULL && strcmp(bs, "eq6") == 0;
+    {
+        const char *d = hx_arg(a, "--decimation");
+        if (d != NULL && strcmp(d, "fir") != 0 && strcmp(d, "mean") != 0) {
+            hx_error(cmd, "--decimation is fir or mean, not '%s'", d);
+            return -1;
+        }
+        s->decim = (d != NULL && strcmp(d, "mean") == 0) ? HX_DECIM_MEAN : HX_DECIM_FIR;
+    }
 
     /* sensor model: profile baseline, then the effects in order */
     s->err = fnav_imuerr_config_default;
@@ -610,14 +631,41 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             return -1;
         }
     }
-    /* a tone in the filter's stop band never reaches the output */
-    if (s->err.mask[FNAV_EFFECT_VIBRATION] != 0u && s->err.mask[FNAV_EFFECT_ALIAS] == 0u &&
-        fnav_imuerr_internal_factor(&s->err) > 1u) {
-        for (i = 0; i < 6; i++) {
-            if ((s->err.mask[FNAV_EFFECT_VIBRATION] & (1u << i)) && (double)s->err.vibration.freq_hz[i] > 0.41 * rate) {
+    {
+        /* the chain of hx_sim_run: picking with alias or without
+         * oversampling, else the interval mean or the anti-alias FIR */
+        int alias = s->err.mask[FNAV_EFFECT_ALIAS] != 0u, mean = s->decim == HX_DECIM_MEAN && !alias;
+        int pick = !mean && (alias || fnav_imuerr_internal_factor(&s->err) == 1u);
+        /* sampling-instant jitter: refused here, before any output is
+         * begun (hx_sim_run refused it after the log was created), with the
+         * advice that fits the decimation (--oversample 1 was advised to a
+         * --decimation mean run that had it; a review) */
+        if (!pick && s->err.mask[FNAV_EFFECT_JITTER] != 0u && s->err.jitter.sample_s > FNAV_R(0.0)) {
+            hx_error(cmd, "sampling-instant jitter (jitter:sample_s) needs point sampling: %s",
+                     mean ? "interval means (--decimation mean) average over the interval; use --decimation fir "
+                            "with --oversample 1, or the alias effect"
+                          : "--oversample 1 or the alias effect");
+            return -1;
+        }
+        for (i = 0; i < 6 && s->err.mask[FNAV_EFFECT_VIBRATION] != 0u && !pick; i++) {
+            double f = (double)s->err.vibration.freq_hz[i];
+            if ((s->err.mask[FNAV_EFFECT_VIBRATION] & (1u << i)) == 0u) {
+                continue;
+            }
+            if (!mean && f > 0.41 * rate) {
+                /* a tone in the filter's stop band never reaches the output */
                 hx_warn(cmd, "vibration at %g Hz lies above the anti-alias pass band (%.0f Hz at %g Hz): filtered "
                              "out; add --effect alias to fold it into the output band",
-                        (double)s->err.vibration.freq_hz[i], 0.41 * rate, rate);
+                        f, 0.41 * rate, rate);
+                break;
+            }
+            if (mean && f > 0.5 * rate) {
+                /* the interval mean is no anti-alias filter: it passes the
+                 * tone attenuated and folded (the warning said "filtered
+                 * out" for it; a review) */
+                hx_warn(cmd, "vibration at %g Hz lies above the output's Nyquist frequency (%g Hz at %g Hz): the "
+                             "interval means (--decimation mean) attenuate it and fold it to %g Hz",
+                        f, 0.5 * rate, rate, fabs(f - rate * floor(f / rate + 0.5)));
                 break;
             }
         }
@@ -625,14 +673,6 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
     s->motion_name = hx_arg(a, "--motion");
     if (s->motion_name == NULL) {
         s->motion_name = "walk";
-    }
-    {
-        const char *d = hx_arg(a, "--decimation");
-        if (d != NULL && strcmp(d, "fir") != 0 && strcmp(d, "mean") != 0) {
-            hx_error(cmd, "--decimation is fir or mean, not '%s'", d);
-            return -1;
-        }
-        s->decim = (d != NULL && strcmp(d, "mean") == 0) ? HX_DECIM_MEAN : HX_DECIM_FIR;
     }
     return 0;
 }

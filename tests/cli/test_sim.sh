@@ -55,6 +55,31 @@ expect_exit 2 "bad rate" "$H" sim --out "$T/x.bin" --rate -5
 expect_exit 2 "three gait figures" "$H" sim --out "$T/x.bin" --speed 1 --cadence 100 --stride 1
 expect_exit 2 "sample jitter through the filter" "$H" sim --out "$T/x.bin" --effect jitter:sample_s=1e-4
 expect_err "sample_s" "sample jitter error explains"
+# refused before any output is begun (a header-only log was left behind),
+# with advice that fits --decimation mean (it advised the --oversample 1
+# the run had; a review)
+[ ! -e "$T/x.bin" ] && pass "no log left by the sample jitter refusal" || fail "sample jitter refusal left a log"
+expect_exit 2 "sample jitter with interval means" "$H" sim --out "$T/xm.bin" --oversample 1 --decimation mean \
+    --effect jitter:sample_s=1e-4
+expect_err "use --decimation fir with --oversample 1" "sample jitter with means: the advice names --decimation"
+[ ! -e "$T/xm.bin" ] && pass "no log left (means)" || fail "sample jitter refusal left a log (means)"
+expect_exit 0 "sample jitter with point samples" "$H" sim --out "$T/xp.csv" --duration 1 --oversample 1 \
+    --effect jitter:sample_s=1e-4
+# a tone above the output band: the FIR removes it, the interval mean only
+# attenuates and folds it (the warning said "filtered out" for both)
+expect_exit 0 "tone above the band, interval means" "$H" sim --out "$T/vm.csv" --duration 1 --decimation mean \
+    --effect vibration:ch=ay:freq_hz=150
+expect_err "fold it to 50 Hz" "the mean's warning says the tone folds"
+if grep -q "filtered out" "$T/err"; then fail "the mean's warning says filtered out"; else pass "no 'filtered out' for means"; fi
+expect_exit 0 "tone above the band, FIR" "$H" sim --out "$T/vf.csv" --duration 1 --effect vibration:ch=ay:freq_hz=150
+expect_err "filtered out" "the FIR's warning says filtered out"
+# a gait figure derived from --speed keeps its option's range (50 m strides
+# were walked; a cadence of 1200 /min was blamed on the gait fractions)
+expect_exit 2 "derived stride out of range" "$H" sim --out "$T/x.csv" --duration 5 --speed 10 --cadence 20
+expect_err "makes a stride of 60 m, outside" "the derived stride is named"
+expect_exit 2 "derived cadence out of range" "$H" sim --out "$T/x.csv" --duration 5 --speed 5 --stride 0.5
+expect_err "makes a cadence of 1200 steps/min, outside" "the derived cadence is named"
+expect_exit 0 "derived gait in range" "$H" sim --out "$T/x.csv" --duration 5 --speed 1.5 --stride 1.5
 expect_exit 2 "bad --decimation" "$H" sim --out "$T/x.bin" --decimation cubic
 expect_err "fir or mean" "decimation error lists the kinds"
 # more samples than the 32-bit record counter holds (1e11 were asked for and the run began)
