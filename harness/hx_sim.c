@@ -343,6 +343,20 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
                     pm &= ~(1u << c);
                 }
             }
+            if (pm == 0u && v != 0.0) {
+                /* every channel given is the parameter's own axis: the value
+                 * was dropped and the run went on (a review) */
+                snprintf(err, err_size, "effect misalign: %s is the own axis of the %c channels (a%c, g%c: that is "
+                         "the scale effect); give it for the other channels", tok[i], 'x' + axis, 'x' + axis,
+                         'x' + axis);
+                return -1;
+            }
+        }
+        if ((info->params[k].flags & FNAV_PARAM_INTEGER) && v != floor(v)) {
+            /* refused later by fnav_imuerr_init as "the effects are
+             * inconsistent (e.g. ...)", which did not name it (a review) */
+            snprintf(err, err_size, "effect %s: %s needs a whole number, got '%s'", info->name, tok[i], eq + 1);
+            return -1;
         }
         if (fnav_imuerr_param_set(cfg, id, k, pm, (fnav_real_t)v) != FNAV_OK) {
             snprintf(err, err_size, "effect %s: %s = %g is outside [%g, %g] (%s)", info->name, tok[i], v,
