@@ -26,6 +26,15 @@ expect_err "outside" "range error"
 expect_exit 2 "unknown motion" "$H" sim --out "$T/x.bin" --motion fly
 expect_err "unknown motion 'fly'" "unknown motion is named"
 expect_exit 2 "bad motion script" "$H" sim --out "$T/x.bin" --motion stand:5,walk:abc
+# a script without items was one second of standing with exit 0 (a review)
+for m in , ,,; do
+    expect_exit 2 "empty motion script '$m'" "$H" sim --out "$T/x.bin" --motion "$m"
+    expect_err "empty motion script" "the empty script is named ('$m')"
+done
+# a built-in scenario sized past an item's range names the scenario, not a
+# distance never given ("walk/run needs a distance in (0, 1e5] m: 128320.500")
+expect_exit 2 "walk scenario too long" "$H" sim --out "$T/x.bin" --duration 1e5
+expect_err "motion 'walk' sized to 100000 s: walk/run needs a distance" "the scenario and its duration are named"
 # an extra value where the item takes none or one is refused (ignored until
 # 2026-11-28; a review)
 for m in stand:5:99 stand:2,turn:90:45 stand:2,elevator:3:9 stand:2,home:77; do
