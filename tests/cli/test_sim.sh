@@ -152,6 +152,11 @@ expect_exit 0 "dropout + duplicate" "$H" sim --duration 20 --rate 100 --out "$T/
 expect_exit 0 "info on drops" "$H" info "$T/d.bin"
 if grep -Eq "^drops +[1-9]" "$T/out"; then pass "drops visible in the counter"; else fail "no drops"; cat "$T/out"; fi
 if grep -Eq "^duplicates +[1-9]" "$T/out"; then pass "duplicates visible"; else fail "no duplicates"; cat "$T/out"; fi
+# the summary's peaks are those of the log: every sample dropped, none
+# (they counted the dropped samples; a review)
+expect_exit 0 "every sample dropped" "$H" sim --duration 2 --rate 100 --out "$T/d0.csv" --effect dropout:prob=1
+expect_out_re "^samples     0 written" "no sample written"
+expect_out_re "^peaks       \|f\| 0\.0 m/s\^2 \(0\.0 g\), \|w\| 0\.00 rad/s" "no peak from dropped samples"
 expect_exit 0 "saturation at 4 g" "$H" sim --motion run --duration 15 --rate 200 --out "$T/s.bin" \
     --effect saturation:ch=acc:range=39.2266
 expect_exit 0 "info on clipping" "$H" info "$T/s.bin"
