@@ -566,8 +566,30 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
     }
     if (v > 0.0) {
         hx_motion_config_t *m = &s->motion_cfg;
+        const hx_gait_t *gs[5];
+        const char *const gn[5] = { "walk", "run", "stairs up", "stairs down", "turn" };
+        char caps[160];
+        size_t len = 0;
         m->walk.impact_s = m->run.impact_s = m->stairs_up.impact_s = m->stairs_down.impact_s = m->turn.impact_s =
             v * 1e-3;
+        gs[0] = &m->walk;
+        gs[1] = &m->run;
+        gs[2] = &m->stairs_up;
+        gs[3] = &m->stairs_down;
+        gs[4] = &m->turn;
+        caps[0] = '\0';
+        for (i = 0; i < 5; i++) {
+            /* hx_motion's stride() lands in at most 30 % of the swing: a
+             * longer --impact-ms was shortened without a word (a review) */
+            double sw = (1.0 - gs[i]->still_frac - gs[i]->heeloff_frac - gs[i]->slap_frac) * 120.0 / gs[i]->cadence_spm;
+            if (v * 1e-3 > 0.3 * sw && len < sizeof caps) {
+                len += (size_t)snprintf(caps + len, sizeof caps - len, "%s%s %.0f ms", len ? ", " : "", gn[i],
+                                        0.3 * sw * 1e3);
+            }
+        }
+        if (len > 0) {
+            hx_warn(cmd, "--impact-ms %g is longer than 30 %% of a swing, the longest landing: %s", v, caps);
+        }
     }
     v = -1.0;
     if (hx_arg_double(a, "--ring-scale", 0.0, 100.0, &v) != 0) {

@@ -82,6 +82,12 @@ expect_err "fold it to 50 Hz" "the mean's warning says the tone folds"
 if grep -q "filtered out" "$T/err"; then fail "the mean's warning says filtered out"; else pass "no 'filtered out' for means"; fi
 expect_exit 0 "tone above the band, FIR" "$H" sim --out "$T/vf.csv" --duration 1 --effect vibration:ch=ay:freq_hz=150
 expect_err "filtered out" "the FIR's warning says filtered out"
+# a landing takes at most 30 % of the swing: a longer --impact-ms is said
+# (it was shortened without a word; a review)
+expect_exit 0 "long impact" "$H" sim --out "$T/x.csv" --duration 1 --impact-ms 160
+expect_err "longer than 30 % of a swing, the longest landing: walk 137 ms, run 152 ms" "the cap is named"
+expect_exit 0 "calibrated impact" "$H" sim --out "$T/x.csv" --duration 1 --impact-ms 7
+if grep -q "longer than 30 %" "$T/err"; then fail "a 7 ms impact warned"; else pass "no warning at 7 ms"; fi
 # a gait figure derived from --speed keeps its option's range (50 m strides
 # were walked; a cadence of 1200 /min was blamed on the gait fractions)
 expect_exit 2 "derived stride out of range" "$H" sim --out "$T/x.csv" --duration 5 --speed 10 --cadence 20
