@@ -278,6 +278,11 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
         snprintf(err, err_size, "empty effect specification");
         return -1;
     }
+    if (t != NULL) {
+        /* the fields past the 32nd were dropped without a word (a review) */
+        snprintf(err, err_size, "effect specification with more than %d fields: %.40s...", ntok, spec);
+        return -1;
+    }
     id = fnav_imuerr_effect_find(tok[0]);
     info = fnav_imuerr_effect_info(id);
     if (info == NULL) {

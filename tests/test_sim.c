@@ -624,6 +624,21 @@ static void test_effect_specs(void **state)
             assert_null(strchr(err, '\n'));
         }
     }
+    /* fields past the 32nd were dropped, a bad one among them unseen (a review) */
+    {
+        char spec[512];
+        size_t len = (size_t)snprintf(spec, sizeof spec, "white");
+        int k;
+        for (k = 0; k < 32; k++) {
+            len += (size_t)snprintf(spec + len, sizeof spec - len, ":density=1e-3");
+        }
+        snprintf(spec + len, sizeof spec - len, ":nope=1");
+        err[0] = '\0';
+        assert_int_equal(hx_effect_parse(&e, spec, err, sizeof err), -1);
+        assert_true(strlen(err) > 10);
+        spec[len] = '\0'; /* 33 fields: white and 32 parameters */
+        assert_int_equal(hx_effect_parse(&e, spec, err, sizeof err), -1);
+    }
 }
 
 int main(void)
