@@ -10,6 +10,7 @@ trap 'rm -rf "$T"' EXIT
 
 # --- usage and bad input: one-line errors, exit 2 (3 for outputs)
 expect_exit 0 "sim --help" "$H" sim --help
+expect_out "stand, walk, run and loop are sized to it" "--help: which motions --duration sizes (it said all built-ins; stairs, elevator, paper and mixed are cut)"
 expect_exit 2 "sim without --out" "$H" sim
 expect_err "--out LOG is required" "missing --out is named"
 expect_exit 0 "sim --list-effects" "$H" sim --list-effects
