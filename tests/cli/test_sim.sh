@@ -83,6 +83,14 @@ expect_err "fold it to 50 Hz" "the mean's warning says the tone folds"
 if grep -q "filtered out" "$T/err"; then fail "the mean's warning says filtered out"; else pass "no 'filtered out' for means"; fi
 expect_exit 0 "tone above the band, FIR" "$H" sim --out "$T/vf.csv" --duration 1 --effect vibration:ch=ay:freq_hz=150
 expect_err "filtered out" "the FIR's warning says filtered out"
+# in the filter's transition band (0.41-0.59 f_s) a tone passes attenuated:
+# 90 Hz at 200 Hz at 91 % (measured on the log), 110 Hz at 9 % folded to 90 Hz
+# (both were called "filtered out"; a review)
+expect_exit 0 "tone in the transition band" "$H" sim --out "$T/vf.csv" --duration 1 --effect vibration:ch=ay:freq_hz=90
+expect_err "passes at 91.1 % of its amplitude" "the transition band's gain is said"
+if grep -q "filtered out" "$T/err"; then fail "90 Hz at 200 Hz called filtered out"; else pass "90 Hz not called filtered out"; fi
+expect_exit 0 "tone folding from the transition band" "$H" sim --out "$T/vf.csv" --duration 1 --effect vibration:ch=ay:freq_hz=110
+expect_err "passes at 8.9 % of its amplitude, folded to 90 Hz" "the fold is said"
 # a landing takes at most 30 % of the swing: a longer --impact-ms is said
 # (it was shortened without a word; a review)
 expect_exit 0 "long impact" "$H" sim --out "$T/x.csv" --duration 1 --impact-ms 160
