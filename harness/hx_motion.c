@@ -798,6 +798,7 @@ hx_motion_t *hx_motion_create(const hx_motion_config_t *cfg, const char *script,
     char buf[2048], *save = NULL, *item;
     double v[NCOORD][3], zero[3] = { 0.0, 0.0, 0.0 };
     size_t i;
+    int scenario = 0, items = 0;
     if (cfg == NULL || script == NULL) {
         snprintf(err, err_size, "internal: no motion configuration");
         return NULL;
@@ -808,6 +809,7 @@ hx_motion_t *hx_motion_create(const hx_motion_config_t *cfg, const char *script,
                      script, hx_motion_scenario_list());
             return NULL;
         }
+        scenario = 1;
     } else if (strlen(script) >= sizeof buf) {
         snprintf(err, err_size, "motion script too long (max %zu characters)", sizeof buf - 1);
         return NULL;
@@ -839,10 +841,29 @@ hx_motion_t *hx_motion_create(const hx_motion_config_t *cfg, const char *script,
             item++;
         }
         if (parse_leg(m, item) != 0) {
+            if (scenario) {
+                /* the item is the scenario's, sized to the duration: say so
+                 * (--duration 1e5 blamed "walk/run needs a distance in
+                 * (0, 1e5] m: 128320.500", a distance never given; a review) */
+                char why[256];
+                snprintf(why, sizeof why, "%s", err);
+                if (duration_s > 0.0) {
+                    snprintf(err, err_size, "motion '%s' sized to %g s: %s", script, duration_s, why);
+                } else {
+                    snprintf(err, err_size, "motion '%s': %s", script, why);
+                }
+            }
             hx_motion_free(m);
             return NULL;
         }
         m->leg++;
+        items++;
+    }
+    if (items == 0) {
+        /* "," or ",," made one second of standing with exit 0 (a review) */
+        snprintf(err, err_size, "empty motion script '%s' (items such as stand:5,walk:20)", script);
+        hx_motion_free(m);
+        return NULL;
     }
     if (m->nk < 2 && add_still(m, 1.0, HX_PHASE_STILL) != 0) {
         hx_motion_free(m);

@@ -100,7 +100,7 @@ typedef struct hx_motion hx_motion_t;
  *   turn:DEG | elevator:METRES (positive up) | home
  * (`home` turns to face the start and walks there in a straight line), or
  * a built-in scenario name (hx_motion_scenario). `duration_s` > 0 makes the
- * built-ins `walk`, `run`, `stand`, `stairs` and `loop` last about that
+ * built-ins `walk`, `run`, `stand` and `loop` last about that
  * long; scripts keep their own length.
  * @return the motion, or NULL with a one-line message in err.
  */

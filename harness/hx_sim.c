@@ -278,6 +278,11 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
         snprintf(err, err_size, "empty effect specification");
         return -1;
     }
+    if (t != NULL) {
+        /* the fields past the 32nd were dropped without a word (a review) */
+        snprintf(err, err_size, "effect specification with more than %d fields: %.40s...", ntok, spec);
+        return -1;
+    }
     id = fnav_imuerr_effect_find(tok[0]);
     info = fnav_imuerr_effect_info(id);
     if (info == NULL) {
@@ -343,6 +348,20 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
                     pm &= ~(1u << c);
                 }
             }
+            if (pm == 0u && v != 0.0) {
+                /* every channel given is the parameter's own axis: the value
+                 * was dropped and the run went on (a review) */
+                snprintf(err, err_size, "effect misalign: %s is the own axis of the %c channels (a%c, g%c: that is "
+                         "the scale effect); give it for the other channels", tok[i], 'x' + axis, 'x' + axis,
+                         'x' + axis);
+                return -1;
+            }
+        }
+        if ((info->params[k].flags & FNAV_PARAM_INTEGER) && v != floor(v)) {
+            /* refused later by fnav_imuerr_init as "the effects are
+             * inconsistent (e.g. ...)", which did not name it (a review) */
+            snprintf(err, err_size, "effect %s: %s needs a whole number, got '%s'", info->name, tok[i], eq + 1);
+            return -1;
         }
         if (fnav_imuerr_param_set(cfg, id, k, pm, (fnav_real_t)v) != FNAV_OK) {
             snprintf(err, err_size, "effect %s: %s = %g is outside [%g, %g] (%s)", info->name, tok[i], v,
@@ -532,6 +551,19 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
                 w->stride_m = 120.0 * sp / w->cadence_spm;
             }
         }
+        /* the derived figure keeps the range of its own option (--speed 10
+         * --cadence 20 walked 50 m strides, --speed 5 --stride 0.5 was
+         * refused as "gait fractions leave no time to swing"; a review) */
+        if (w->cadence_spm < 20.0 || w->cadence_spm > 300.0) {
+            hx_error(cmd, "--speed %g with a stride of %g m makes a cadence of %.4g steps/min, outside [20, 300]", sp,
+                     w->stride_m, w->cadence_spm);
+            return -1;
+        }
+        if (w->stride_m < 0.05 || w->stride_m > 5.0) {
+            hx_error(cmd, "--speed %g at %g steps/min makes a stride of %.4g m, outside [0.05, 5]", sp, w->cadence_spm,
+                     w->stride_m);
+            return -1;
+        }
     }
     v = 0.0;
     if (hx_arg_double(a, "--impact-ms", 0.5, 200.0, &v) != 0) {
@@ -539,8 +571,30 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
     }
     if (v > 0.0) {
         hx_motion_config_t *m = &s->motion_cfg;
+        const hx_gait_t *gs[5];
+        const char *const gn[5] = { "walk", "run", "stairs up", "stairs down", "turn" };
+        char caps[160];
+        size_t len = 0;
         m->walk.impact_s = m->run.impact_s = m->stairs_up.impact_s = m->stairs_down.impact_s = m->turn.impact_s =
             v * 1e-3;
+        gs[0] = &m->walk;
+        gs[1] = &m->run;
+        gs[2] = &m->stairs_up;
+        gs[3] = &m->stairs_down;
+        gs[4] = &m->turn;
+        caps[0] = '\0';
+        for (i = 0; i < 5; i++) {
+            /* hx_motion's stride() lands in at most 30 % of the swing: a
+             * longer --impact-ms was shortened without a word (a review) */
+            double sw = (1.0 - gs[i]->still_frac - gs[i]->heeloff_frac - gs[i]->slap_frac) * 120.0 / gs[i]->cadence_spm;
+            if (v * 1e-3 > 0.3 * sw && len < sizeof caps) {
+                len += (size_t)snprintf(caps + len, sizeof caps - len, "%s%s %.0f ms", len ? ", " : "", gn[i],
+                                        0.3 * sw * 1e3);
+            }
+        }
+        if (len > 0) {
+            hx_warn(cmd, "--impact-ms %g is longer than 30 %% of a swing, the longest landing: %s", v, caps);
+        }
     }
     v = -1.0;
     if (hx_arg_double(a, "--ring-scale", 0.0, 100.0, &v) != 0) {
@@ -564,6 +618,14 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         return -1;
     }
     s->bias_eq6 = bs != NULL && strcmp(bs, "eq6") == 0;
+    {
+        const char *d = hx_arg(a, "--decimation");
+        if (d != NULL && strcmp(d, "fir") != 0 && strcmp(d, "mean") != 0) {
+            hx_error(cmd, "--decimation is fir or mean, not '%s'", d);
+            return -1;
+        }
+        s->decim = (d != NULL && strcmp(d, "mean") == 0) ? HX_DECIM_MEAN : HX_DECIM_FIR;
+    }
 
     /* sensor model: profile baseline, then the effects in order */
     s->err = fnav_imuerr_config_default;
@@ -610,14 +672,64 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             return -1;
         }
     }
-    /* a tone in the filter's stop band never reaches the output */
-    if (s->err.mask[FNAV_EFFECT_VIBRATION] != 0u && s->err.mask[FNAV_EFFECT_ALIAS] == 0u &&
-        fnav_imuerr_internal_factor(&s->err) > 1u) {
-        for (i = 0; i < 6; i++) {
-            if ((s->err.mask[FNAV_EFFECT_VIBRATION] & (1u << i)) && (double)s->err.vibration.freq_hz[i] > 0.41 * rate) {
-                hx_warn(cmd, "vibration at %g Hz lies above the anti-alias pass band (%.0f Hz at %g Hz): filtered "
-                             "out; add --effect alias to fold it into the output band",
-                        (double)s->err.vibration.freq_hz[i], 0.41 * rate, rate);
+    {
+        /* the chain of hx_sim_run: picking with alias or without
+         * oversampling, else the interval mean or the anti-alias FIR */
+        int alias = s->err.mask[FNAV_EFFECT_ALIAS] != 0u, mean = s->decim == HX_DECIM_MEAN && !alias;
+        int pick = !mean && (alias || fnav_imuerr_internal_factor(&s->err) == 1u);
+        /* sampling-instant jitter: refused here, before any output is
+         * begun (hx_sim_run refused it after the log was created), with the
+         * advice that fits the decimation (--oversample 1 was advised to a
+         * --decimation mean run that had it; a review) */
+        if (!pick && s->err.mask[FNAV_EFFECT_JITTER] != 0u && s->err.jitter.sample_s > FNAV_R(0.0)) {
+            hx_error(cmd, "sampling-instant jitter (jitter:sample_s) needs point sampling: %s",
+                     mean ? "interval means (--decimation mean) average over the interval; use --decimation fir "
+                            "with --oversample 1, or the alias effect"
+                          : "--oversample 1 or the alias effect");
+            return -1;
+        }
+        for (i = 0; i < 6 && s->err.mask[FNAV_EFFECT_VIBRATION] != 0u && !pick; i++) {
+            double f = (double)s->err.vibration.freq_hz[i];
+            if ((s->err.mask[FNAV_EFFECT_VIBRATION] & (1u << i)) == 0u) {
+                continue;
+            }
+            if (!mean && f > 0.41 * rate) {
+                /* a tone in the filter's stop band never reaches the output;
+                 * one in its transition band (0.41-0.59 f_s) passes
+                 * attenuated, folded above f_s / 2 (the warning said
+                 * "filtered out" for both: 90 Hz at 200 Hz passes at 91 %;
+                 * a review) */
+                int M = (int)fnav_imuerr_internal_factor(&s->err), L, n;
+                double *h = fir_design(M, HX_SIM_FIR_HALF, &L), gain = 0.0;
+                if (h != NULL) {
+                    for (n = 0; n < L; n++) {
+                        gain += h[n] * cos(2.0 * PI * f / (rate * M) * (double)(n - (L - 1) / 2));
+                    }
+                    free(h);
+                }
+                gain = fabs(gain);
+                if (gain < 1e-3) {
+                    hx_warn(cmd, "vibration at %g Hz lies above the anti-alias pass band (%.0f Hz at %g Hz): filtered "
+                                 "out; add --effect alias to fold it into the output band",
+                            f, 0.41 * rate, rate);
+                } else {
+                    char fold[64] = "";
+                    if (f > 0.5 * rate) {
+                        snprintf(fold, sizeof fold, ", folded to %.4g Hz", fabs(f - rate * floor(f / rate + 0.5)));
+                    }
+                    hx_warn(cmd, "vibration at %g Hz lies in the anti-alias filter's transition band (%.0f-%.0f Hz at "
+                                 "%g Hz): it passes at %.1f %% of its amplitude%s",
+                            f, 0.41 * rate, 0.59 * rate, rate, 100.0 * gain, fold);
+                }
+                break;
+            }
+            if (mean && f > 0.5 * rate) {
+                /* the interval mean is no anti-alias filter: it passes the
+                 * tone attenuated and folded (the warning said "filtered
+                 * out" for it; a review) */
+                hx_warn(cmd, "vibration at %g Hz lies above the output's Nyquist frequency (%g Hz at %g Hz): the "
+                             "interval means (--decimation mean) attenuate it and fold it to %g Hz",
+                        f, 0.5 * rate, rate, fabs(f - rate * floor(f / rate + 0.5)));
                 break;
             }
         }
@@ -625,14 +737,6 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
     s->motion_name = hx_arg(a, "--motion");
     if (s->motion_name == NULL) {
         s->motion_name = "walk";
-    }
-    {
-        const char *d = hx_arg(a, "--decimation");
-        if (d != NULL && strcmp(d, "fir") != 0 && strcmp(d, "mean") != 0) {
-            hx_error(cmd, "--decimation is fir or mean, not '%s'", d);
-            return -1;
-        }
-        s->decim = (d != NULL && strcmp(d, "mean") == 0) ? HX_DECIM_MEAN : HX_DECIM_FIR;
     }
     return 0;
 }

@@ -87,7 +87,8 @@ size_t hx_effect_format(const fnav_imuerr_config_t *cfg, fnav_effect_id_t id, ch
 #define HX_SIM_OPTS                                                                                             \
     { "--motion", "NAME|SCRIPT", "walk (default), run, stairs, elevator, stand, loop, paper, mixed, or a "     \
                                  "script such as stand:5,walk:20:90,stairs-up:12,home", 0 },                   \
-    { "--duration", "S", "length of the output in seconds (built-in motions are sized to it)", 0 },            \
+    { "--duration", "S", "length of the output in seconds (stand, walk, run and loop are sized to it; other "   \
+                         "motions are cut short or end standing)", 0 },                                  \
     { "--rate", "HZ", "output sample rate (default 200)", 0 },                                                  \
     { "--profile", "NAME|FILE", "sensor noise: navchip (default), mtx, shimmer, generic-mems, a profile file, or none", 0 },  \
     { "--bias-sigma", "READING", "paper Tables' sigma_bias: given (default, eq. 4: stationary sd) or eq6 "     \

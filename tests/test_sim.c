@@ -570,6 +570,7 @@ static void test_effect_specs(void **state)
     FNAV_ASSERT_CLOSE(e.quant.lsb[5], 1.0653e-3, 0.0, 1e-6);
     assert_int_equal(hx_effect_parse(&e, "quant:ch=az:lsb=0.01", err, sizeof err), 0);
     assert_int_equal(e.mask[FNAV_EFFECT_QUANT], FNAV_CH_GYRO | FNAV_CH_AZ);
+    assert_int_equal(hx_effect_parse(&e, "misalign:ch=ax:from_x=0:from_y=0.01", err, sizeof err), 0); /* own axis 0: as formatted */
     assert_int_equal(hx_effect_parse(&e, "misalign:ch=all:from_y=0.01", err, sizeof err), 0);
     FNAV_ASSERT_CLOSE(e.misalign.from_y[1], 0.0, 0.0, 0.0); /* own axis left alone */
     FNAV_ASSERT_CLOSE(e.misalign.from_y[0], 0.01, 0.0, 1e-6);
@@ -610,7 +611,11 @@ static void test_effect_specs(void **state)
     /* bad specifications: one-line messages */
     {
         const char *bad[] = { "nope", "quant:lsb", "quant:lsb=abc", "quant:size=1", "quant:ch=xx:lsb=1",
-                              "quant:lsb=-1", "gsens:ch=acc", "", "dropout:prob=2" };
+                              "quant:lsb=-1", "gsens:ch=acc", "", "dropout:prob=2",
+                              /* a value only for the own axis was dropped with exit 0, a non-whole
+                               * integer was blamed on other effects by init (a review) */
+                              "misalign:ch=ax:from_x=0.1", "misalign:ch=ay+gy:from_y=0.02", "quant:shaped=0.5",
+                              "alias:factor=2.5" };
         size_t i;
         for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
             err[0] = '\0';
@@ -618,6 +623,21 @@ static void test_effect_specs(void **state)
             assert_true(strlen(err) > 10);
             assert_null(strchr(err, '\n'));
         }
+    }
+    /* fields past the 32nd were dropped, a bad one among them unseen (a review) */
+    {
+        char spec[512];
+        size_t len = (size_t)snprintf(spec, sizeof spec, "white");
+        int k;
+        for (k = 0; k < 32; k++) {
+            len += (size_t)snprintf(spec + len, sizeof spec - len, ":density=1e-3");
+        }
+        snprintf(spec + len, sizeof spec - len, ":nope=1");
+        err[0] = '\0';
+        assert_int_equal(hx_effect_parse(&e, spec, err, sizeof err), -1);
+        assert_true(strlen(err) > 10);
+        spec[len] = '\0'; /* 33 fields: white and 32 parameters */
+        assert_int_equal(hx_effect_parse(&e, spec, err, sizeof err), -1);
     }
 }
 

@@ -10,6 +10,7 @@ trap 'rm -rf "$T"' EXIT
 
 # --- usage and bad input: one-line errors, exit 2 (3 for outputs)
 expect_exit 0 "sim --help" "$H" sim --help
+expect_out "stand, walk, run and loop are sized to it" "--help: which motions --duration sizes (it said all built-ins; stairs, elevator, paper and mixed are cut)"
 expect_exit 2 "sim without --out" "$H" sim
 expect_err "--out LOG is required" "missing --out is named"
 expect_exit 0 "sim --list-effects" "$H" sim --list-effects
@@ -26,6 +27,15 @@ expect_err "outside" "range error"
 expect_exit 2 "unknown motion" "$H" sim --out "$T/x.bin" --motion fly
 expect_err "unknown motion 'fly'" "unknown motion is named"
 expect_exit 2 "bad motion script" "$H" sim --out "$T/x.bin" --motion stand:5,walk:abc
+# a script without items was one second of standing with exit 0 (a review)
+for m in , ,,; do
+    expect_exit 2 "empty motion script '$m'" "$H" sim --out "$T/x.bin" --motion "$m"
+    expect_err "empty motion script" "the empty script is named ('$m')"
+done
+# a built-in scenario sized past an item's range names the scenario, not a
+# distance never given ("walk/run needs a distance in (0, 1e5] m: 128320.500")
+expect_exit 2 "walk scenario too long" "$H" sim --out "$T/x.bin" --duration 1e5
+expect_err "motion 'walk' sized to 100000 s: walk/run needs a distance" "the scenario and its duration are named"
 # an extra value where the item takes none or one is refused (ignored until
 # 2026-11-28; a review)
 for m in stand:5:99 stand:2,turn:90:45 stand:2,elevator:3:9 stand:2,home:77; do
@@ -55,6 +65,45 @@ expect_exit 2 "bad rate" "$H" sim --out "$T/x.bin" --rate -5
 expect_exit 2 "three gait figures" "$H" sim --out "$T/x.bin" --speed 1 --cadence 100 --stride 1
 expect_exit 2 "sample jitter through the filter" "$H" sim --out "$T/x.bin" --effect jitter:sample_s=1e-4
 expect_err "sample_s" "sample jitter error explains"
+# refused before any output is begun (a header-only log was left behind),
+# with advice that fits --decimation mean (it advised the --oversample 1
+# the run had; a review)
+[ ! -e "$T/x.bin" ] && pass "no log left by the sample jitter refusal" || fail "sample jitter refusal left a log"
+expect_exit 2 "sample jitter with interval means" "$H" sim --out "$T/xm.bin" --oversample 1 --decimation mean \
+    --effect jitter:sample_s=1e-4
+expect_err "use --decimation fir with --oversample 1" "sample jitter with means: the advice names --decimation"
+[ ! -e "$T/xm.bin" ] && pass "no log left (means)" || fail "sample jitter refusal left a log (means)"
+expect_exit 0 "sample jitter with point samples" "$H" sim --out "$T/xp.csv" --duration 1 --oversample 1 \
+    --effect jitter:sample_s=1e-4
+# a tone above the output band: the FIR removes it, the interval mean only
+# attenuates and folds it (the warning said "filtered out" for both)
+expect_exit 0 "tone above the band, interval means" "$H" sim --out "$T/vm.csv" --duration 1 --decimation mean \
+    --effect vibration:ch=ay:freq_hz=150
+expect_err "fold it to 50 Hz" "the mean's warning says the tone folds"
+if grep -q "filtered out" "$T/err"; then fail "the mean's warning says filtered out"; else pass "no 'filtered out' for means"; fi
+expect_exit 0 "tone above the band, FIR" "$H" sim --out "$T/vf.csv" --duration 1 --effect vibration:ch=ay:freq_hz=150
+expect_err "filtered out" "the FIR's warning says filtered out"
+# in the filter's transition band (0.41-0.59 f_s) a tone passes attenuated:
+# 90 Hz at 200 Hz at 91 % (measured on the log), 110 Hz at 9 % folded to 90 Hz
+# (both were called "filtered out"; a review)
+expect_exit 0 "tone in the transition band" "$H" sim --out "$T/vf.csv" --duration 1 --effect vibration:ch=ay:freq_hz=90
+expect_err "passes at 91.1 % of its amplitude" "the transition band's gain is said"
+if grep -q "filtered out" "$T/err"; then fail "90 Hz at 200 Hz called filtered out"; else pass "90 Hz not called filtered out"; fi
+expect_exit 0 "tone folding from the transition band" "$H" sim --out "$T/vf.csv" --duration 1 --effect vibration:ch=ay:freq_hz=110
+expect_err "passes at 8.9 % of its amplitude, folded to 90 Hz" "the fold is said"
+# a landing takes at most 30 % of the swing: a longer --impact-ms is said
+# (it was shortened without a word; a review)
+expect_exit 0 "long impact" "$H" sim --out "$T/x.csv" --duration 1 --impact-ms 160
+expect_err "longer than 30 % of a swing, the longest landing: walk 137 ms, run 152 ms" "the cap is named"
+expect_exit 0 "calibrated impact" "$H" sim --out "$T/x.csv" --duration 1 --impact-ms 7
+if grep -q "longer than 30 %" "$T/err"; then fail "a 7 ms impact warned"; else pass "no warning at 7 ms"; fi
+# a gait figure derived from --speed keeps its option's range (50 m strides
+# were walked; a cadence of 1200 /min was blamed on the gait fractions)
+expect_exit 2 "derived stride out of range" "$H" sim --out "$T/x.csv" --duration 5 --speed 10 --cadence 20
+expect_err "makes a stride of 60 m, outside" "the derived stride is named"
+expect_exit 2 "derived cadence out of range" "$H" sim --out "$T/x.csv" --duration 5 --speed 5 --stride 0.5
+expect_err "makes a cadence of 1200 steps/min, outside" "the derived cadence is named"
+expect_exit 0 "derived gait in range" "$H" sim --out "$T/x.csv" --duration 5 --speed 1.5 --stride 1.5
 expect_exit 2 "bad --decimation" "$H" sim --out "$T/x.bin" --decimation cubic
 expect_err "fir or mean" "decimation error lists the kinds"
 # more samples than the 32-bit record counter holds (1e11 were asked for and the run began)
@@ -118,6 +167,11 @@ expect_exit 0 "dropout + duplicate" "$H" sim --duration 20 --rate 100 --out "$T/
 expect_exit 0 "info on drops" "$H" info "$T/d.bin"
 if grep -Eq "^drops +[1-9]" "$T/out"; then pass "drops visible in the counter"; else fail "no drops"; cat "$T/out"; fi
 if grep -Eq "^duplicates +[1-9]" "$T/out"; then pass "duplicates visible"; else fail "no duplicates"; cat "$T/out"; fi
+# the summary's peaks are those of the log: every sample dropped, none
+# (they counted the dropped samples; a review)
+expect_exit 0 "every sample dropped" "$H" sim --duration 2 --rate 100 --out "$T/d0.csv" --effect dropout:prob=1
+expect_out_re "^samples     0 written" "no sample written"
+expect_out_re "^peaks       \|f\| 0\.0 m/s\^2 \(0\.0 g\), \|w\| 0\.00 rad/s" "no peak from dropped samples"
 expect_exit 0 "saturation at 4 g" "$H" sim --motion run --duration 15 --rate 200 --out "$T/s.bin" \
     --effect saturation:ch=acc:range=39.2266
 expect_exit 0 "info on clipping" "$H" info "$T/s.bin"
