@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 const int hx_nees_dim[HX_NEES_COUNT] = { 3, 3, 3, 6, 15 };
 const char *const hx_nees_name[HX_NEES_COUNT] = { "pos", "vel", "att", "bias", "all" };
@@ -206,6 +207,30 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
             snprintf(err, err_size, "out of memory");
             goto out;
         }
+    }
+    {
+        /* a run's samples are held for the pairing with the truth: refuse,
+         * before simulating anything, a run that cannot fit in this
+         * machine's memory (standing 1e6 s at 200 Hz, 38 GB, simulated
+         * for minutes and grew to about 16 GB before "out of memory"; a
+         * review, 2026-11-29), then take the whole buffer at once */
+        double need = (double)nt * (double)sizeof(mc_tick_t);
+        long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+        double have = (pages > 0 && page > 0) ? (double)pages * (double)page : 0.0;
+        if ((have > 0.0 && need > have) || need > (double)SIZE_MAX) {
+            snprintf(err, err_size,
+                     "%.0f samples (%.6g s at %.6g Hz) are %.1f GB of samples and truth to hold, more than this "
+                     "machine's %.1f GB of memory: shorten --duration or lower --rate",
+                     (double)nt, res->duration_s, rate, need / 1e9, have / 1e9);
+            goto out;
+        }
+        buf.t = (mc_tick_t *)malloc((size_t)nt * sizeof *buf.t);
+        if (buf.t == NULL) {
+            snprintf(err, err_size, "out of memory: %.0f samples are %.1f GB of samples and truth to hold",
+                     (double)nt, need / 1e9);
+            goto out;
+        }
+        buf.cap = nt;
     }
     for (r = 0; r < cfg->runs; r++) {
         sc = cfg->sim;

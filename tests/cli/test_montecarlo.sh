@@ -181,5 +181,12 @@ if /usr/bin/env python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$T/m
 if [ "$rc" -eq 3 ]; then pass "--csv - on a full disk (exit 3)"; else fail "--csv - on a full disk: exit $rc"; fi
 expect_err "standard output: cannot write" "--csv - on a full disk names standard output"
 
+# a run whose samples cannot fit in memory is refused before it starts,
+# naming the size (standing 1e6 s at 200 Hz, 38 GB, simulated for minutes and
+# grew to about 16 GB before "out of memory"; the MC review, 2026-11-29)
+timeout 20 "$H" montecarlo --seeds 1 --motion stand --duration 1e6 --rate 200 >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" -eq 2 ]; then pass "a run larger than the memory (exit 2 at once)"; else fail "a run larger than the memory: exit $rc"; fi
+expect_err "GB of samples" "the size of the run is named"
+
 if [ "$fails" -ne 0 ]; then echo "test_montecarlo.sh: $fails failure(s)"; exit 1; fi
 echo "test_montecarlo.sh: all passed"
