@@ -377,7 +377,8 @@ static int write_csv(const char *path, const hx_mc_result_t *r)
     for (v = 0; v < r->nvar; v++) {
         for (b = 0; b < r->var[v].nbins; b++) {
             const hx_mc_bin_t *q = &r->var[v].bins[b];
-            fprintf(f, "%s,%.3f,%.3f,%d", r->var[v].name, q->t_s, q->odo_m, q->n);
+            /* t_s as exact as the bin (three decimals printed --bin 0.0125's 0.0125 as 0.013) */
+            fprintf(f, "%s,%.6f,%.3f,%d", r->var[v].name, q->t_s, q->odo_m, q->n);
             csv_num(f, q->rms_h_m);
             csv_num(f, q->pred_h_m);
             csv_num(f, q->rms_v_m);
@@ -623,6 +624,12 @@ int hx_cmd_montecarlo(int argc, char **argv)
             navs[v].push = ad_push;
             navs[v].pop = ad_pop;
             navs[v].finish = ad_finish;
+        }
+        if ((double)su.err.seed + seeds - 1.0 > 4294967295.0) {
+            /* the seeds seed .. seed + N - 1 wrapped past 2^32 - 1 to 0 */
+            hx_error("montecarlo", "--seed %lu with --seeds %.0f runs past the last seed, 4294967295",
+                     (unsigned long)su.err.seed, seeds);
+            return HX_EXIT_USAGE;
         }
         motion = hx_motion_create(&su.motion_cfg, su.motion_name, su.duration_s, err, sizeof err);
         if (motion == NULL) {

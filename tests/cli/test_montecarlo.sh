@@ -56,7 +56,7 @@ if grep -q "^off," "$T/mc.csv" && grep -q "^ar1," "$T/mc.csv"; then pass "both v
 # the bins before the alignment have no estimate: empty fields (as allan's
 # CSV), as the JSON has null; they were written as 'nan'
 if grep -qi 'nan' "$T/mc.csv"; then fail "NaN in the montecarlo CSV: $(grep -i -m1 nan "$T/mc.csv")"; else pass "no NaN in the CSV"; fi
-if grep -q '^ar1,1\.000,0\.000,0,,,,,,' "$T/mc.csv"; then pass "a bin without estimates has empty fields"; else fail "first bin: $(grep -m1 '^ar1,' "$T/mc.csv")"; fi
+if grep -q '^ar1,1\.000000,0\.000,0,,,,,,' "$T/mc.csv"; then pass "a bin without estimates has empty fields"; else fail "first bin: $(grep -m1 '^ar1,' "$T/mc.csv")"; fi
 # the summary: no NaN either (a standing 'walk' has no distance; bins before
 # the alignment), and a growth table of 3 bins shows each bin once
 expect_exit 0 "montecarlo of 3 s" "$H" montecarlo --duration 3 --seeds 2
@@ -180,6 +180,15 @@ if /usr/bin/env python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$T/m
 "$H" montecarlo --seeds 1 --duration 3 --csv - >/dev/full 2>"$T/err"; rc=$?
 if [ "$rc" -eq 3 ]; then pass "--csv - on a full disk (exit 3)"; else fail "--csv - on a full disk: exit $rc"; fi
 expect_err "standard output: cannot write" "--csv - on a full disk names standard output"
+
+# the CSV's bin times as exact as the bin (--bin 0.0125 printed 0.013,
+# 0.025, 0.038: three decimals; the MC review, 2026-11-29)
+expect_exit 0 "--bin 0.0125" "$H" montecarlo --seeds 1 --duration 2 --bin 0.0125 --csv "$T/fine.csv" --quiet
+if awk -F, 'NR == 2 { ok = ($2 + 0 == 0.0125) } END { exit !ok }' "$T/fine.csv"; then
+    pass "the first bin ends at 0.0125 s"; else fail "first bin: $(sed -n 2p "$T/fine.csv" | cut -d, -f1-3)"; fi
+# seeds past 2^32 - 1 wrapped to 0 without a word
+expect_exit 2 "--seed 4294967295 --seeds 2" "$H" montecarlo --seed 4294967295 --seeds 2 --duration 2
+expect_err "4294967295" "the seed range is named"
 
 # a run whose samples cannot fit in memory is refused before it starts,
 # naming the size (standing 1e6 s at 200 Hz, 38 GB, simulated for minutes and
