@@ -548,18 +548,24 @@ int hx_cmd_psd(int argc, char **argv)
     if (!(rate > 0.0) && log.n > 1 && log.t_ns[log.n - 1] > log.t_ns[0]) {
         rate = 1e9 * (double)(log.n - 1) / (double)(log.t_ns[log.n - 1] - log.t_ns[0]);
     }
-    if (!(rate > 0.0) || log.n < (size_t)nfft) {
+    /* too short first: one stamped sample has no rate either, and no
+     * --input-rate gives it one (a stamped format ignores the option) */
+    if (log.n < (size_t)nfft) {
         if (rc > 0) {
             /* the input's error is the cause, not a missing option */
             hx_error(CMD, "%s (the %zu samples before it are fewer than one %u-sample segment)", log.error, log.n,
                      (unsigned)nfft);
         } else {
-            hx_error(CMD, "%s: %s", a.pos[0],
-                     rate > 0.0 ? "fewer samples than one segment"
-                                : (log.n > 1 && log.t_ns[log.n - 1] == log.t_ns[0]
-                                       ? "sample rate unknown: every time stamp is the same"
-                                       : "sample rate unknown; give --input-rate"));
+            hx_error(CMD, "%s: %zu samples, fewer than one %u-sample segment", a.pos[0], log.n, (unsigned)nfft);
         }
+        hx_log_free(&log);
+        return HX_EXIT_DATA;
+    }
+    if (!(rate > 0.0)) {
+        /* a bad line after these samples was warned when it was read */
+        hx_error(CMD, "%s: %s", a.pos[0],
+                 log.n > 1 && log.t_ns[log.n - 1] == log.t_ns[0] ? "sample rate unknown: every time stamp is the same"
+                                                                 : "sample rate unknown; give --input-rate");
         hx_log_free(&log);
         return HX_EXIT_DATA;
     }

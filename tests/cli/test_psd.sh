@@ -99,6 +99,20 @@ expect_err "huge.csv:102: column 5 (.1e30.) is beyond" "the out-of-range value i
 { echo t,ax,ay,az,gx,gy,gz; i=0; while [ $i -lt 300 ]; do echo 5,0.1,0.2,9.8,0.01,0.02,0.03; i=$((i + 1)); done; } > "$T/same.csv"
 expect_exit 1 "time stamps that never advance" "$H" psd "$T/same.csv"
 expect_err "sample rate unknown: every time stamp is the same" "says why there is no rate (was: nfft 64 at inf Hz)"
+# the same stamps, then a bad line: the cause is still the rate (it said 'the 300 samples before it are fewer than one
+# 64-sample segment', which is false)
+{ cat "$T/same.csv"; echo 5,x,1,1,1,1,1; } >"$T/samebad.csv"
+expect_exit 1 "time stamps that never advance, then a bad line" "$H" psd "$T/samebad.csv"
+expect_err "sample rate unknown: every time stamp is the same" "a bad line after stamps that never advance: the rate is named"
+! grep -q "fewer than one" "$T/err" && pass "300 samples are not called fewer than one 64-sample segment" ||
+    fail "300 samples called fewer than one 64-sample segment"
+# one stamped sample: too short, not a rate to give (it said 'sample rate unknown; give --input-rate', an option the
+# stamped CSV ignores)
+head -2 "$T/same.csv" >"$T/one.csv"
+expect_exit 1 "one stamped sample" "$H" psd "$T/one.csv" --input-rate 100
+expect_err "1 samples, fewer than one 64-sample segment" "one sample: too short for a segment"
+! grep -q "give --input-rate" "$T/err" && pass "one stamped sample: no advice to give --input-rate" ||
+    fail "one stamped sample: told to give --input-rate"
 # stamps printed to the millisecond at about 398 Hz (2 and 3 ms intervals): the rate from the stamps, not 333 or 500 Hz
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) printf "%.3f,%.4f,0,9.81,0,0,%.4f\n", i / 398.3, sin(i), cos(i) }' > "$T/ms.csv"
 expect_exit 0 "stamps rounded to the millisecond" "$H" psd "$T/ms.csv" --json "$T/ms.json"
