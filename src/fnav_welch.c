@@ -292,7 +292,7 @@ fnav_status_t fnav_welch_bandwidth(const fnav_real_t *psd, size_t n, fnav_real_t
     size_t k;
     int found = 0;
     if (psd == NULL || out == NULL || n < 2u || !(df_hz > FNAV_R(0.0)) || !(c->threshold > FNAV_R(0.0)) ||
-        !(c->threshold <= FNAV_R(1.0)) || !(c->round_hz >= FNAV_R(0.0))) {
+        !(c->threshold <= FNAV_R(1.0)) || !(c->round_hz >= FNAV_R(0.0)) || !fnav_isfinite(c->round_hz)) {
         return FNAV_E_ARG;
     }
     for (k = k0; k < n; k++) {

@@ -390,6 +390,16 @@ static void test_bandwidth_analytic(void **state)
     c.threshold = FNAV_R(1.5);
     assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_E_ARG);
     assert_int_equal(fnav_welch_bandwidth(NULL, 33, df, NULL, &out, NULL), FNAV_E_ARG);
+    /* a rounding step that is not finite (a review, 2026-11-29): +Inf passed
+     * the check (>= 0) and the rounded frequency came out NaN with FNAV_OK */
+    p[5] = FNAV_R(1.0);
+    c = fnav_bandwidth_config_default;
+    c.round_hz = (fnav_real_t)INFINITY;
+    assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_E_ARG);
+    c.round_hz = (fnav_real_t)NAN;
+    assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_E_ARG);
+    c.round_hz = FNAV_R(50.0);
+    assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_OK);
 }
 
 static void test_config_and_bad_input(void **state)
