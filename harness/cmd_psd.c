@@ -28,7 +28,7 @@ static const hx_opt_t k_opts[] = {
                       "linear, global (the record's mean), none, exclude (none, and the DC bin left out "
                       "of the total)", 0 },
     { "--threshold", "F", "fraction of the total power the band must hold (default 0.95)", 0 },
-    { "--round", "HZ", "round the sampling frequency up to a multiple of this (default 50)", 0 },
+    { "--round", "HZ", "round the sampling frequency up to a multiple of this (default 50; 0: not rounded)", 0 },
     { "--sensitivity", NULL, "also tabulate the answer for segments of 64..1024 samples x every DC mode", 0 },
     { "--spec-nfft", "N", "spectrogram segment length (default 256)", 0 },
     { "--spec-axis", "CH", "spectrogram channel: ax..gz (default: the accelerometer axis along gravity)", 0 },
@@ -179,7 +179,15 @@ static int analyse(const hx_log_t *log, const setting_t *st, const fnav_bandwidt
 
 static void print_result(const char *title, const result_t *r, const fnav_bandwidth_config_t *bc)
 {
+    const int rounded = bc->round_hz > FNAV_R(0.0);
+    char rnd[64];
     int c;
+    /* --round 0 said "multiples of 0 Hz" */
+    if (rounded) {
+        snprintf(rnd, sizeof rnd, "multiples of %g Hz", (double)bc->round_hz);
+    } else {
+        snprintf(rnd, sizeof rnd, "not rounded");
+    }
     printf("%s\n", title);
     printf("  %-5s %14s %12s %10s %10s\n", "axis", "total_power", "bandwidth_Hz", "2xBW_Hz", "fs_Hz");
     for (c = 0; c < 6; c++) {
@@ -190,15 +198,15 @@ static void print_result(const char *title, const result_t *r, const fnav_bandwi
         printf("  %-5s %14.6g %12.1f %10.1f %10.0f\n", k_ch[c], (double)r->bw[c].total, (double)r->bw[c].bandwidth_hz,
                (double)r->bw[c].fs_hz, (double)r->bw[c].fs_rounded_hz);
     }
-    printf("  accelerometers: bandwidth %.1f Hz -> %.0f Hz\n", r->group_bw[0], r->group_fs[0]);
-    printf("  gyroscopes:     bandwidth %.1f Hz -> %.0f Hz\n", r->group_bw[1], r->group_fs[1]);
+    printf("  accelerometers: bandwidth %.1f Hz -> %.*f Hz\n", r->group_bw[0], rounded ? 0 : 1, r->group_fs[0]);
+    printf("  gyroscopes:     bandwidth %.1f Hz -> %.*f Hz\n", r->group_bw[1], rounded ? 0 : 1, r->group_fs[1]);
     /* a tie is said as one: on a static log both groups reach the Nyquist frequency alike */
-    printf("  lowest usable sampling frequency: %.0f Hz (%s; %.0f %% of the power, multiples of %g Hz)\n",
+    printf("  lowest usable sampling frequency: %.*f Hz (%s; %.0f %% of the power, %s)\n", rounded ? 0 : 1,
            r->overall_fs,
            r->group_fs[0] > r->group_fs[1]   ? "the accelerometers limit it"
            : r->group_fs[0] < r->group_fs[1] ? "the gyroscopes limit it"
                                              : "accelerometers and gyroscopes alike",
-           100.0 * (double)bc->threshold, (double)bc->round_hz);
+           100.0 * (double)bc->threshold, rnd);
 }
 
 /* ------------------------------------------------------------ outputs */
@@ -598,17 +606,22 @@ int hx_cmd_psd(int argc, char **argv)
     printf("harness psd: %s (%s), %zu samples at %.4g Hz, %.2f s\n", a.pos[0], log.meta.sensor, log.n, rate,
            (double)log.n / rate);
     {
-        char title[1024], dct[256];
+        char title[1024], dct[256], rndt[64];
         dc_text(dc_mode, res.df, dct, sizeof dct);
+        if (bc.round_hz > FNAV_R(0.0)) {
+            snprintf(rndt, sizeof rndt, "rounded up to a multiple of %g Hz", (double)bc.round_hz);
+        } else {
+            snprintf(rndt, sizeof rndt, "not rounded (--round 0)");
+        }
         snprintf(title, sizeof title,
                  "Welch: %s window of %u samples%s, overlap %u, dc %s, %u segments, resolution %.3g Hz\n"
                  "Criterion (paper II.B): per axis, the band from 0 Hz holding %.0f %% of the total power of the "
                  "one-sided PSD of the channel as logged (sensor axes);\n"
                  "  DC: %s;\n"
-                 "  sampling frequency = 2 x band, rounded up to a multiple of %g Hz; a group needs its widest axis",
+                 "  sampling frequency = 2 x band, %s; a group needs its widest axis",
                  st.wc.window == FNAV_WINDOW_HAMMING ? "Hamming" : (st.wc.window == FNAV_WINDOW_HANN ? "Hann" : "rect"),
                  (unsigned)st.wc.nfft, st.wc.symmetric ? " (symmetric)" : "", (unsigned)st.wc.overlap,
-                 k_dc_names[dc_mode], (unsigned)res.nseg, res.df, 100.0 * thr, dct, rnd);
+                 k_dc_names[dc_mode], (unsigned)res.nseg, res.df, 100.0 * thr, dct, rndt);
         print_result(title, &res, &bc);
     }
     {

@@ -34,6 +34,14 @@ else
     fail "tone bandwidth"
 fi
 expect_exit 3 "unwritable output" "$H" psd "$T/tone.csv" --out /nonexistent/dir/p.csv
+# --round 0: the answer is 2 x bandwidth itself; the output said "rounded up to a multiple of 0 Hz" and "multiples of
+# 0 Hz", and printed the answer to the hertz
+expect_exit 0 "tone, --round 0" "$H" psd "$T/tone.csv" --round 0 --json "$T/r0.json"
+expect_out "sampling frequency = 2 x band, not rounded (--round 0)" "--round 0: the criterion says it does not round"
+! grep -q "of 0 Hz" "$T/out" && pass "--round 0: no 'multiple(s) of 0 Hz'" || fail "--round 0: 'multiple(s) of 0 Hz' printed"
+F=$("$PY" -c 'import json,sys; print("%.1f" % json.load(open(sys.argv[1]))["result"]["fs_hz"])' "$T/r0.json")
+expect_out "lowest usable sampling frequency: $F Hz (accelerometers and gyroscopes alike; 95 % of the power, not rounded)" \
+    "--round 0: the answer printed as the JSON's, to 0.1 Hz"
 # every channel constant: no band anywhere, so no answer (it printed 'lowest usable sampling frequency: 0 Hz' with
 # fs_hz 0 and exit 0); the tables are still written and the JSON's answer is null
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3f,0.1,0.2,9.81,0.01,0,0\n", i / 1000.0 }' \
