@@ -401,6 +401,12 @@ static void test_bandwidth_analytic(void **state)
     assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_E_ARG);
     c.round_hz = FNAV_R(50.0);
     assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_OK);
+    /* a step so fine that fs / step overflows float (harness psd --round
+     * 1e-40 printed fs_Hz inf): a step that small rounds nothing */
+    c.round_hz = (fnav_real_t)1e-37;
+    assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_OK);
+    assert_true(fnav_isfinite(out.fs_rounded_hz));
+    FNAV_ASSERT_CLOSE(out.fs_rounded_hz, out.fs_hz, 0.0, 1e-6);
 }
 
 static void test_config_and_bad_input(void **state)
