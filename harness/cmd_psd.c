@@ -287,9 +287,12 @@ static cJSON *json_result(const result_t *r)
     return o;
 }
 
-static void block(FILE *gp, const char *name, const result_t *r, int c, int ccdf)
+/* One channel's data block; returns the number of points written (a PSD
+ * point only where it is positive: the axis is logarithmic). */
+static int block(FILE *gp, const char *name, const result_t *r, int c, int ccdf)
 {
     uint32_t k;
+    int npts = 0;
     fprintf(gp, "$%s << EOD\n", name);
     for (k = 0; k < r->nbins; k++) {
         const double v = ccdf ? (double)r->ccdf[c][k] : (double)r->psd[c][k];
@@ -300,8 +303,10 @@ static void block(FILE *gp, const char *name, const result_t *r, int c, int ccdf
             continue;
         }
         fprintf(gp, "%.6g %.6g\n", f, v);
+        npts++;
     }
     fprintf(gp, "EOD\n");
+    return npts;
 }
 
 static int plot_psd(const char *dir, const result_t *r, const char *src, const setting_t *st)
@@ -320,16 +325,29 @@ static int plot_psd(const char *dir, const result_t *r, const char *src, const s
             src);
     fprintf(p.gp, "set logscale y\nset format y '%%.0e'\nset xlabel 'frequency [Hz]'\n");
     for (g = 0; g < 2; g++) {
+        int npts[3], n = 0;
         for (c = 3 * g; c < 3 * g + 3; c++) {
             char nm[16];
             snprintf(nm, sizeof nm, "d%d", c);
-            block(p.gp, nm, r, c, 0);
+            npts[c - 3 * g] = block(p.gp, nm, r, c, 0);
         }
         fprintf(p.gp, "set title '%s'\nset ylabel '%s'\n", g == 0 ? "accelerometers (Fig. 3)" : "gyroscopes",
                 g == 0 ? "PSD [(m/s^2)^2/Hz]" : "PSD [(rad/s)^2/Hz]");
-        fprintf(p.gp, "plot $d%d using 1:2 with lines lw 1.5 title '%s', $d%d using 1:2 with lines lw 1.5 title '%s', "
-                      "$d%d using 1:2 with lines lw 1.5 title '%s'\n",
-                3 * g, k_ch[3 * g], 3 * g + 1, k_ch[3 * g + 1], 3 * g + 2, k_ch[3 * g + 2]);
+        /* only the axes with points: a group without power on any axis (a
+         * constant channel, e.g. gyroscopes logged as zeros) gave gnuplot
+         * nothing to plot, and psd.png failed with exit 3 */
+        for (c = 3 * g; c < 3 * g + 3; c++) {
+            if (npts[c - 3 * g] > 0) {
+                fprintf(p.gp, "%s$d%d using 1:2 with lines lw 1.5 title '%s'", n++ ? ", " : "plot ", c, k_ch[c]);
+            }
+        }
+        if (n > 0) {
+            fprintf(p.gp, "\n");
+        } else {
+            fprintf(p.gp, "set xrange [0:%.6g]\nset yrange [1e-6:1]\nset label 1 'no power on any axis' at graph 0.5,0.5 "
+                          "center\nplot 1/0 notitle\nunset label 1\nset autoscale\n",
+                    (double)(r->nbins - 1u) * r->df);
+        }
     }
     fprintf(p.gp, "unset multiplot\n");
     return hx_plot_close(&p, CMD);

@@ -63,6 +63,16 @@ if "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]; assert r
 else
     fail "constant gyroscopes: JSON"
 fi
+# the plots of such logs: gnuplot got no point for the gyroscopes' (or any) PSD panel, psd.png failed and exit 3, and
+# ccdf.png and spectrogram.png were not drawn (docs/psd.md: the tables and plots are still written)
+expect_exit 0 "constant gyroscopes, --plot" "$H" psd "$T/gconst.csv" --dc global --plot "$T/gcplots"
+for f in psd ccdf spectrogram; do
+    [ -s "$T/gcplots/$f.png" ] && pass "constant gyroscopes: $f.png" || fail "constant gyroscopes: $f.png missing"
+done
+expect_exit 1 "every channel constant, --plot" "$H" psd "$T/const.csv" --plot "$T/cplots"
+for f in psd ccdf spectrogram; do
+    [ -s "$T/cplots/$f.png" ] && pass "every channel constant: $f.png" || fail "every channel constant: $f.png missing"
+done
 # a log shorter than the spectrogram's segment (100 samples, --nfft 64, the default --spec-nfft 256): no spectrogram
 # can be drawn; the other plots are, a warning says why it is missing (gnuplot got no data: its STATS_max was
 # undefined, a spectrogram.png was left behind and the command exited 3, an output failure)
