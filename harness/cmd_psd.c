@@ -596,11 +596,24 @@ int hx_cmd_psd(int argc, char **argv)
         return HX_EXIT_DATA;
     }
     {
-        /* Welch assumes uniform sampling: say how far the time stamps are from it */
+        /* Welch assumes uniform sampling: say how far the time stamps are
+         * from it. Stamps coarser than the period (a 398 Hz log printed to
+         * the millisecond reads 2 and 3 ms) may differ by their resolution,
+         * the intervals' gcd: every interval of such a uniform log was
+         * counted as irregular. */
         size_t i;
         long irregular = 0;
+        int64_t res_ns = 0;
+        if (log.meta.rate_coarse) {
+            for (i = 1; i < log.n; i++) {
+                if (log.t_ns[i] > log.t_ns[i - 1]) {
+                    res_ns = hx_gcd_i64(log.t_ns[i] - log.t_ns[i - 1], res_ns);
+                }
+            }
+        }
         for (i = 1; i < log.n; i++) {
-            if (fabs(1e-9 * (double)(log.t_ns[i] - log.t_ns[i - 1]) * rate - 1.0) > 0.1) {
+            const double dt = 1e-9 * (double)(log.t_ns[i] - log.t_ns[i - 1]);
+            if (fabs(dt - 1.0 / rate) > 0.1 / rate + 1e-9 * (double)res_ns) {
                 irregular++;
             }
         }

@@ -135,6 +135,14 @@ expect_err "1 samples, fewer than one 64-sample segment" "one sample: too short 
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) printf "%.3f,%.4f,0,9.81,0,0,%.4f\n", i / 398.3, sin(i), cos(i) }' > "$T/ms.csv"
 expect_exit 0 "stamps rounded to the millisecond" "$H" psd "$T/ms.csv" --json "$T/ms.json"
 expect_out_re "398\.[0-9]+ Hz" "the rate is read from the spans of the stamps"
+# those samples are uniform: only their stamps are rounded (to 1 ms, of a 2.5 ms period); it warned '2999 of 2999
+# intervals differ from 1/398.3 s by more than 10 %: Welch assumes uniform sampling'
+! grep -q "intervals differ" "$T/err" && pass "millisecond stamps of uniform samples: no irregular-sampling warning" ||
+    fail "millisecond stamps of uniform samples called irregular: $(cat "$T/err")"
+# the same stamps with 30 samples lost (one every 100 rows): those 30 intervals are irregular
+awk 'NR == 1 || (NR - 1) % 100 != 50' "$T/ms.csv" >"$T/msgap.csv"
+expect_exit 0 "millisecond stamps with lost samples" "$H" psd "$T/msgap.csv"
+expect_err "30 of 2969 intervals differ" "lost samples under millisecond stamps are counted"
 
 O=$(data openshoe_c_820hz/OpenShoeDataSet.txt)
 if [ -n "$O" ]; then
