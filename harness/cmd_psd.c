@@ -181,7 +181,7 @@ static void print_result(const char *title, const result_t *r, const fnav_bandwi
 {
     const int rounded = bc->round_hz > FNAV_R(0.0);
     char rnd[64];
-    int c;
+    int c, g, none = 0;
     /* --round 0 said "multiples of 0 Hz" */
     if (rounded) {
         snprintf(rnd, sizeof rnd, "multiples of %g Hz", (double)bc->round_hz);
@@ -198,8 +198,20 @@ static void print_result(const char *title, const result_t *r, const fnav_bandwi
         printf("  %-5s %14.6g %12.1f %10.1f %10.0f\n", k_ch[c], (double)r->bw[c].total, (double)r->bw[c].bandwidth_hz,
                (double)r->bw[c].fs_hz, (double)r->bw[c].fs_rounded_hz);
     }
-    printf("  accelerometers: bandwidth %.1f Hz -> %.*f Hz\n", r->group_bw[0], rounded ? 0 : 1, r->group_fs[0]);
-    printf("  gyroscopes:     bandwidth %.1f Hz -> %.*f Hz\n", r->group_bw[1], rounded ? 0 : 1, r->group_fs[1]);
+    /* a group without power on any axis has no band: it said "bandwidth 0.0 Hz -> 0 Hz" */
+    for (g = 0; g < 2; g++) {
+        if (!r->ok[3 * g] && !r->ok[3 * g + 1] && !r->ok[3 * g + 2]) {
+            printf("  %-15s no power on any axis (left out)\n", g == 0 ? "accelerometers:" : "gyroscopes:");
+            none++;
+        } else {
+            printf("  %-15s bandwidth %.1f Hz -> %.*f Hz\n", g == 0 ? "accelerometers:" : "gyroscopes:",
+                   r->group_bw[g], rounded ? 0 : 1, r->group_fs[g]);
+        }
+    }
+    if (none == 2) {
+        printf("  lowest usable sampling frequency: none (no channel has power)\n");
+        return;
+    }
     /* a tie is said as one: on a static log both groups reach the Nyquist frequency alike */
     printf("  lowest usable sampling frequency: %.*f Hz (%s; %.0f %% of the power, %s)\n", rounded ? 0 : 1,
            r->overall_fs,
@@ -664,7 +676,7 @@ int hx_cmd_psd(int argc, char **argv)
         }
         if (none[0] && none[1]) {
             hx_error(CMD, "%s: no channel has power once the DC is treated (dc %s): every channel is constant, so "
-                          "no sampling frequency can be read (the 0 Hz above is no answer)",
+                          "no sampling frequency can be read",
                      a.pos[0], k_dc_names[dc_mode]);
             exit_code = HX_EXIT_DATA;
         } else if (none[0] || none[1]) {

@@ -48,6 +48,10 @@ awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3
     >"$T/const.csv"
 expect_exit 1 "every channel constant" "$H" psd "$T/const.csv" --json "$T/const.json" --out "$T/const_psd.csv"
 expect_err "no channel has power once the DC is treated" "no power on any channel is said, not 0 Hz"
+# the summary said 'lowest usable sampling frequency: 0 Hz (accelerometers and gyroscopes alike ...)' and each group
+# 'bandwidth 0.0 Hz -> 0 Hz', which the error then had to take back
+expect_out "lowest usable sampling frequency: none (no channel has power)" "constant log: the summary gives no answer"
+! grep -q -- "-> 0 Hz" "$T/out" && pass "constant log: no group said to need 0 Hz" || fail "constant log: a group needs 0 Hz"
 if "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]; assert r["fs_hz"] is None and r["gyro_fs_hz"] is None and r["accel_fs_hz"] is None, r' "$T/const.json" && [ -s "$T/const_psd.csv" ]; then
     pass "constant log: fs_hz null, PSD table written"
 else
@@ -58,6 +62,7 @@ awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) { t = i / 1
      printf "%.6f,%.6f,%.6f,%.6f,0,0,0\n", t, s, s, -9.81 + s } }' >"$T/gconst.csv"
 expect_exit 0 "constant gyroscopes" "$H" psd "$T/gconst.csv" --json "$T/gconst.json" --dc global
 expect_err "no gyroscope axis has power" "a group without power is said"
+expect_out "gyroscopes:     no power on any axis (left out)" "constant gyroscopes: their summary line says so, not '-> 0 Hz'"
 if "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]; assert r["gyro_fs_hz"] is None and r["fs_hz"] == r["accel_fs_hz"] == 250, r' "$T/gconst.json"; then
     pass "constant gyroscopes: gyro_fs_hz null, answer from the accelerometers"
 else
