@@ -698,7 +698,16 @@ int hx_cmd_psd(int argc, char **argv)
                      "a lower bound set by the log's rate, not a measured requirement",
                 100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate), 0.5 * rate, res.overall_fs);
     }
-    if (above_rate) {
+    if (above_rate && bw_max < NYQ_FRAC * 0.5 * rate) {
+        /* the rounding step alone (--round above the rate, or a low-rate
+         * log): the band itself ends well inside the log's (this said it was
+         * "near the Nyquist frequency" for a 115 Hz band of a 1000 Hz log) */
+        hx_warn(CMD, "the answer (%.0f Hz) is above the log's own rate (%.4g Hz) only through the rounding to "
+                     "multiples of %g Hz: %.0f %% of the power lies below %.1f Hz, %.0f %% of the Nyquist frequency, "
+                     "and 2 x that is %.1f Hz (--round 0 gives it)",
+                res.overall_fs, rate, (double)bc.round_hz, 100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate),
+                2.0 * bw_max);
+    } else if (above_rate) {
         /* 2 x bandwidth never exceeds the rate; the rounding up did. The band
          * reaches the Nyquist frequency (a static log's noise is white up to
          * it), so the log cannot show where the signal ends. */

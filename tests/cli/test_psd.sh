@@ -113,6 +113,13 @@ expect_exit 0 "static log at 10 Hz" "$H" psd "$T/static10.csv" --json "$T/s10.js
 expect_err "is above the log's own rate (10 Hz)" "an answer above the log's rate is flagged"
 "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_above_log_rate"] is True and d["band_at_nyquist"] is True and d["result"]["fs_hz"] == 50, d' "$T/s10.json" &&
     pass "JSON fs_above_log_rate" || fail "JSON fs_above_log_rate"
+# a rounding step above the rate (--round 2000 on the 1000 Hz tone, band 115 Hz): the answer exceeds the rate through
+# the rounding alone; it was said to be because 95 % of the power 'reaches 115.4 Hz, near the Nyquist frequency 500 Hz'
+expect_exit 0 "tone, --round 2000" "$H" psd "$T/tone.csv" --round 2000
+expect_err "is above the log's own rate (1000 Hz) only through the rounding to multiples of 2000 Hz" \
+    "an answer above the rate by the rounding alone is said so"
+! grep -q "near the Nyquist" "$T/err" && pass "--round 2000: a 115 Hz band is not called near the 500 Hz Nyquist frequency" ||
+    fail "--round 2000: a 115 Hz band called near the Nyquist frequency"
 "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_above_log_rate"] is False and d["band_at_nyquist"] is False' "$T/tone.json" &&
     pass "JSON fs_above_log_rate false below the rate" || fail "fs_above_log_rate on the tone"
 # a value beyond any sensor (and the core's input range): exit 1, the line and column named
