@@ -156,7 +156,8 @@ typedef struct {
     fnav_real_t total;          /**< total power, unit^2 (sum of P_k df) */
     fnav_real_t bandwidth_hz;   /**< smallest f with cumulative power >= threshold * total */
     fnav_real_t fs_hz;          /**< 2 * bandwidth (Nyquist) */
-    fnav_real_t fs_rounded_hz;  /**< fs rounded up to a multiple of round_hz */
+    fnav_real_t fs_rounded_hz;  /**< fs rounded up to a multiple of round_hz (fs itself when round_hz is 0,
+                                     or so small that fs / round_hz overflows) */
 } fnav_bandwidth_t;
 
 /**
