@@ -388,14 +388,23 @@ static int plot_ccdf(const char *dir, const result_t *r, const char *src, const 
                         (double)r->bw[c].bandwidth_hz, c - 3 * g + 1);
             }
         }
-        fprintf(p.gp, "set title '%s (Fig. 4): bandwidths %.0f, %.0f, %.0f Hz'\n",
-                g == 0 ? "accelerometers" : "gyroscopes", (double)r->bw[3 * g].bandwidth_hz,
-                (double)r->bw[3 * g + 1].bandwidth_hz, (double)r->bw[3 * g + 2].bandwidth_hz);
-        fprintf(p.gp, "plot $c%d using 1:2 with lines lw 1.5 lc 1 title '%s', $c%d using 1:2 with lines lw 1.5 lc 2 "
-                      "title '%s', $c%d using 1:2 with lines lw 1.5 lc 3 title '%s', %.4g with lines dt 2 lc rgb "
-                      "'black' title 'threshold'\n",
-                3 * g, k_ch[3 * g], 3 * g + 1, k_ch[3 * g + 1], 3 * g + 2, k_ch[3 * g + 2],
-                1.0 - (double)bc->threshold);
+        /* an axis without power has no band and no CCDF: it was titled 0 Hz
+         * and drawn as a flat line at 0 */
+        fprintf(p.gp, "set title '%s (Fig. 4): bandwidths", g == 0 ? "accelerometers" : "gyroscopes");
+        for (c = 3 * g; c < 3 * g + 3; c++) {
+            if (r->ok[c]) {
+                fprintf(p.gp, "%s %.0f", c > 3 * g ? "," : "", (double)r->bw[c].bandwidth_hz);
+            } else {
+                fprintf(p.gp, "%s no power", c > 3 * g ? "," : "");
+            }
+        }
+        fprintf(p.gp, "%s'\nplot ", r->ok[3 * g] || r->ok[3 * g + 1] || r->ok[3 * g + 2] ? " Hz" : "");
+        for (c = 3 * g; c < 3 * g + 3; c++) {
+            if (r->ok[c]) {
+                fprintf(p.gp, "$c%d using 1:2 with lines lw 1.5 lc %d title '%s', ", c, c - 3 * g + 1, k_ch[c]);
+            }
+        }
+        fprintf(p.gp, "%.4g with lines dt 2 lc rgb 'black' title 'threshold'\n", 1.0 - (double)bc->threshold);
     }
     fprintf(p.gp, "unset multiplot\n");
     return hx_plot_close(&p, CMD);

@@ -74,6 +74,15 @@ expect_exit 0 "constant gyroscopes, --plot" "$H" psd "$T/gconst.csv" --dc global
 for f in psd ccdf spectrogram; do
     [ -s "$T/gcplots/$f.png" ] && pass "constant gyroscopes: $f.png" || fail "constant gyroscopes: $f.png missing"
 done
+# the CCDF panel of such a group: its title said 'bandwidths 0, 0, 0 Hz' and a flat line at 0 stood for each axis (all
+# the power below 0 Hz); the script is read through a stand-in gnuplot (the spectrogram left out, so the CCDF's is last)
+fake_gnuplot "$T/fakegp"
+PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/ccdf.gp" "$H" psd "$T/gconst.csv" --dc global --plot "$T/gcfake" --spec-nfft 4096 \
+    >/dev/null 2>&1
+grep -q "gyroscopes (Fig. 4): bandwidths no power" "$T/ccdf.gp" && ! grep -q "bandwidths 0, 0, 0 Hz" "$T/ccdf.gp" &&
+    ! grep -q '\$c3 using' "$T/ccdf.gp" && grep -q '\$c0 using' "$T/ccdf.gp" &&
+    pass "constant gyroscopes: CCDF panel says no power, draws no gyroscope line" ||
+    fail "constant gyroscopes: CCDF panel shows 0 Hz bands or flat lines"
 expect_exit 1 "every channel constant, --plot" "$H" psd "$T/const.csv" --plot "$T/cplots"
 for f in psd ccdf spectrogram; do
     [ -s "$T/cplots/$f.png" ] && pass "every channel constant: $f.png" || fail "every channel constant: $f.png missing"
