@@ -746,13 +746,35 @@ int hx_cmd_psd(int argc, char **argv)
                 if (ss.wc.nfft > FNAV_WELCH_MAX_NFFT || (size_t)ss.wc.nfft > log.n || analyse(&log, &ss, &bc, &sres, &bad_i, &bad_c) != 0) {
                     continue;
                 }
-                have[k] = 1;
-                fs_tab[d][k] = sres.overall_fs;
-                printf("  %-8s %5u %7.3g %7.1f %7.1f %7.1f %7.1f %7.1f %7.1f %7.0f %7.0f %7.0f\n", k_dc_names[d],
-                       (unsigned)ss.wc.nfft, sres.df, (double)sres.bw[0].bandwidth_hz, (double)sres.bw[1].bandwidth_hz,
-                       (double)sres.bw[2].bandwidth_hz, (double)sres.bw[3].bandwidth_hz,
-                       (double)sres.bw[4].bandwidth_hz, (double)sres.bw[5].bandwidth_hz, sres.group_fs[0],
-                       sres.group_fs[1], sres.overall_fs);
+                {
+                    /* an axis or group without power has no band: '-' (it
+                     * printed 0.0 and 0 Hz; with no power anywhere the row's
+                     * answer was 0 Hz, also in the JSON) */
+                    int g, gok[2];
+                    have[k] = 1;
+                    printf("  %-8s %5u %7.3g", k_dc_names[d], (unsigned)ss.wc.nfft, sres.df);
+                    for (c = 0; c < 6; c++) {
+                        if (sres.ok[c]) {
+                            printf(" %7.1f", (double)sres.bw[c].bandwidth_hz);
+                        } else {
+                            printf(" %7s", "-");
+                        }
+                    }
+                    for (g = 0; g < 2; g++) {
+                        gok[g] = sres.ok[3 * g] || sres.ok[3 * g + 1] || sres.ok[3 * g + 2];
+                        if (gok[g]) {
+                            printf(" %7.0f", sres.group_fs[g]);
+                        } else {
+                            printf(" %7s", "-");
+                        }
+                    }
+                    if (gok[0] || gok[1]) {
+                        fs_tab[d][k] = sres.overall_fs;
+                        printf(" %7.0f\n", sres.overall_fs);
+                    } else {
+                        printf(" %7s\n", "-");
+                    }
+                }
             }
         }
     }

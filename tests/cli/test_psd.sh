@@ -57,12 +57,24 @@ if "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]; assert r
 else
     fail "constant log: fs_hz not null or PSD table missing"
 fi
+# the sensitivity table of that log: every row said 0.0 Hz per axis and 0 Hz as the answer, and the JSON's sensitivity
+# entries fs_hz 0 (the main answer is null); an axis or group without power is '-', and no entry has no answer
+expect_exit 1 "every channel constant, --sensitivity" "$H" psd "$T/const.csv" --sensitivity --json "$T/csens.json"
+! grep -E -q "^  (segment|linear|global|none|exclude) .* 0(\.0)? " "$T/out" &&
+    grep -E -q "^  segment     64 +[0-9.]+ +- +- +- +- +- +- +- +- +-$" "$T/out" &&
+    pass "constant log: sensitivity rows without 0 Hz answers" || fail "constant log: sensitivity rows give 0 Hz"
+json "$T/csens.json" 'j["sensitivity"] and all(e["dc"] in ("none", "exclude") and e["fs_hz"] > 0 for e in j["sensitivity"])' &&
+    pass "constant log: no sensitivity entry without an answer (none and exclude keep the constant's power)" ||
+    fail "constant log: sensitivity entries with fs_hz 0"
 # the gyroscopes constant, the accelerometers not: the answer is the accelerometers', with a warning
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) { t = i / 1000.0; s = sin(6.283185307 * 100 * t);
      printf "%.6f,%.6f,%.6f,%.6f,0,0,0\n", t, s, s, -9.81 + s } }' >"$T/gconst.csv"
 expect_exit 0 "constant gyroscopes" "$H" psd "$T/gconst.csv" --json "$T/gconst.json" --dc global
 expect_err "no gyroscope axis has power" "a group without power is said"
 expect_out "gyroscopes:     no power on any axis (left out)" "constant gyroscopes: their summary line says so, not '-> 0 Hz'"
+expect_exit 0 "constant gyroscopes, --sensitivity" "$H" psd "$T/gconst.csv" --dc global --sensitivity
+grep -E -q "^  global +64 +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +- +- +- +250 +- +250$" "$T/out" &&
+    pass "constant gyroscopes: their sensitivity columns are '-'" || fail "constant gyroscopes: sensitivity columns"
 if "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]; assert r["gyro_fs_hz"] is None and r["fs_hz"] == r["accel_fs_hz"] == 250, r' "$T/gconst.json"; then
     pass "constant gyroscopes: gyro_fs_hz null, answer from the accelerometers"
 else
