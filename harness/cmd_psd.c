@@ -28,7 +28,7 @@ static const hx_opt_t k_opts[] = {
                       "linear, global (the record's mean), none, exclude (none, and the DC bin left out "
                       "of the total)", 0 },
     { "--threshold", "F", "fraction of the total power the band must hold (default 0.95)", 0 },
-    { "--round", "HZ", "round the sampling frequency up to a multiple of this (default 50)", 0 },
+    { "--round", "HZ", "round the sampling frequency up to a multiple of this (default 50; 0: not rounded)", 0 },
     { "--sensitivity", NULL, "also tabulate the answer for segments of 64..1024 samples x every DC mode", 0 },
     { "--spec-nfft", "N", "spectrogram segment length (default 256)", 0 },
     { "--spec-axis", "CH", "spectrogram channel: ax..gz (default: the accelerometer axis along gravity)", 0 },
@@ -179,7 +179,15 @@ static int analyse(const hx_log_t *log, const setting_t *st, const fnav_bandwidt
 
 static void print_result(const char *title, const result_t *r, const fnav_bandwidth_config_t *bc)
 {
-    int c;
+    const int rounded = bc->round_hz > FNAV_R(0.0);
+    char rnd[64];
+    int c, g, none = 0;
+    /* --round 0 said "multiples of 0 Hz" */
+    if (rounded) {
+        snprintf(rnd, sizeof rnd, "multiples of %g Hz", (double)bc->round_hz);
+    } else {
+        snprintf(rnd, sizeof rnd, "not rounded");
+    }
     printf("%s\n", title);
     printf("  %-5s %14s %12s %10s %10s\n", "axis", "total_power", "bandwidth_Hz", "2xBW_Hz", "fs_Hz");
     for (c = 0; c < 6; c++) {
@@ -190,15 +198,27 @@ static void print_result(const char *title, const result_t *r, const fnav_bandwi
         printf("  %-5s %14.6g %12.1f %10.1f %10.0f\n", k_ch[c], (double)r->bw[c].total, (double)r->bw[c].bandwidth_hz,
                (double)r->bw[c].fs_hz, (double)r->bw[c].fs_rounded_hz);
     }
-    printf("  accelerometers: bandwidth %.1f Hz -> %.0f Hz\n", r->group_bw[0], r->group_fs[0]);
-    printf("  gyroscopes:     bandwidth %.1f Hz -> %.0f Hz\n", r->group_bw[1], r->group_fs[1]);
+    /* a group without power on any axis has no band: it said "bandwidth 0.0 Hz -> 0 Hz" */
+    for (g = 0; g < 2; g++) {
+        if (!r->ok[3 * g] && !r->ok[3 * g + 1] && !r->ok[3 * g + 2]) {
+            printf("  %-15s no power on any axis (left out)\n", g == 0 ? "accelerometers:" : "gyroscopes:");
+            none++;
+        } else {
+            printf("  %-15s bandwidth %.1f Hz -> %.*f Hz\n", g == 0 ? "accelerometers:" : "gyroscopes:",
+                   r->group_bw[g], rounded ? 0 : 1, r->group_fs[g]);
+        }
+    }
+    if (none == 2) {
+        printf("  lowest usable sampling frequency: none (no channel has power)\n");
+        return;
+    }
     /* a tie is said as one: on a static log both groups reach the Nyquist frequency alike */
-    printf("  lowest usable sampling frequency: %.0f Hz (%s; %.0f %% of the power, multiples of %g Hz)\n",
+    printf("  lowest usable sampling frequency: %.*f Hz (%s; %.0f %% of the power, %s)\n", rounded ? 0 : 1,
            r->overall_fs,
            r->group_fs[0] > r->group_fs[1]   ? "the accelerometers limit it"
            : r->group_fs[0] < r->group_fs[1] ? "the gyroscopes limit it"
                                              : "accelerometers and gyroscopes alike",
-           100.0 * (double)bc->threshold, (double)bc->round_hz);
+           100.0 * (double)bc->threshold, rnd);
 }
 
 /* ------------------------------------------------------------ outputs */
@@ -279,9 +299,12 @@ static cJSON *json_result(const result_t *r)
     return o;
 }
 
-static void block(FILE *gp, const char *name, const result_t *r, int c, int ccdf)
+/* One channel's data block; returns the number of points written (a PSD
+ * point only where it is positive: the axis is logarithmic). */
+static int block(FILE *gp, const char *name, const result_t *r, int c, int ccdf)
 {
     uint32_t k;
+    int npts = 0;
     fprintf(gp, "$%s << EOD\n", name);
     for (k = 0; k < r->nbins; k++) {
         const double v = ccdf ? (double)r->ccdf[c][k] : (double)r->psd[c][k];
@@ -292,8 +315,10 @@ static void block(FILE *gp, const char *name, const result_t *r, int c, int ccdf
             continue;
         }
         fprintf(gp, "%.6g %.6g\n", f, v);
+        npts++;
     }
     fprintf(gp, "EOD\n");
+    return npts;
 }
 
 static int plot_psd(const char *dir, const result_t *r, const char *src, const setting_t *st)
@@ -312,16 +337,29 @@ static int plot_psd(const char *dir, const result_t *r, const char *src, const s
             src);
     fprintf(p.gp, "set logscale y\nset format y '%%.0e'\nset xlabel 'frequency [Hz]'\n");
     for (g = 0; g < 2; g++) {
+        int npts[3], n = 0;
         for (c = 3 * g; c < 3 * g + 3; c++) {
             char nm[16];
             snprintf(nm, sizeof nm, "d%d", c);
-            block(p.gp, nm, r, c, 0);
+            npts[c - 3 * g] = block(p.gp, nm, r, c, 0);
         }
         fprintf(p.gp, "set title '%s'\nset ylabel '%s'\n", g == 0 ? "accelerometers (Fig. 3)" : "gyroscopes",
                 g == 0 ? "PSD [(m/s^2)^2/Hz]" : "PSD [(rad/s)^2/Hz]");
-        fprintf(p.gp, "plot $d%d using 1:2 with lines lw 1.5 title '%s', $d%d using 1:2 with lines lw 1.5 title '%s', "
-                      "$d%d using 1:2 with lines lw 1.5 title '%s'\n",
-                3 * g, k_ch[3 * g], 3 * g + 1, k_ch[3 * g + 1], 3 * g + 2, k_ch[3 * g + 2]);
+        /* only the axes with points: a group without power on any axis (a
+         * constant channel, e.g. gyroscopes logged as zeros) gave gnuplot
+         * nothing to plot, and psd.png failed with exit 3 */
+        for (c = 3 * g; c < 3 * g + 3; c++) {
+            if (npts[c - 3 * g] > 0) {
+                fprintf(p.gp, "%s$d%d using 1:2 with lines lw 1.5 title '%s'", n++ ? ", " : "plot ", c, k_ch[c]);
+            }
+        }
+        if (n > 0) {
+            fprintf(p.gp, "\n");
+        } else {
+            fprintf(p.gp, "set xrange [0:%.6g]\nset yrange [1e-6:1]\nset label 1 'no power on any axis' at graph 0.5,0.5 "
+                          "center\nplot 1/0 notitle\nunset label 1\nset autoscale\n",
+                    (double)(r->nbins - 1u) * r->df);
+        }
     }
     fprintf(p.gp, "unset multiplot\n");
     return hx_plot_close(&p, CMD);
@@ -350,14 +388,23 @@ static int plot_ccdf(const char *dir, const result_t *r, const char *src, const 
                         (double)r->bw[c].bandwidth_hz, c - 3 * g + 1);
             }
         }
-        fprintf(p.gp, "set title '%s (Fig. 4): bandwidths %.0f, %.0f, %.0f Hz'\n",
-                g == 0 ? "accelerometers" : "gyroscopes", (double)r->bw[3 * g].bandwidth_hz,
-                (double)r->bw[3 * g + 1].bandwidth_hz, (double)r->bw[3 * g + 2].bandwidth_hz);
-        fprintf(p.gp, "plot $c%d using 1:2 with lines lw 1.5 lc 1 title '%s', $c%d using 1:2 with lines lw 1.5 lc 2 "
-                      "title '%s', $c%d using 1:2 with lines lw 1.5 lc 3 title '%s', %.4g with lines dt 2 lc rgb "
-                      "'black' title 'threshold'\n",
-                3 * g, k_ch[3 * g], 3 * g + 1, k_ch[3 * g + 1], 3 * g + 2, k_ch[3 * g + 2],
-                1.0 - (double)bc->threshold);
+        /* an axis without power has no band and no CCDF: it was titled 0 Hz
+         * and drawn as a flat line at 0 */
+        fprintf(p.gp, "set title '%s (Fig. 4): bandwidths", g == 0 ? "accelerometers" : "gyroscopes");
+        for (c = 3 * g; c < 3 * g + 3; c++) {
+            if (r->ok[c]) {
+                fprintf(p.gp, "%s %.0f", c > 3 * g ? "," : "", (double)r->bw[c].bandwidth_hz);
+            } else {
+                fprintf(p.gp, "%s no power", c > 3 * g ? "," : "");
+            }
+        }
+        fprintf(p.gp, "%s'\nplot ", r->ok[3 * g] || r->ok[3 * g + 1] || r->ok[3 * g + 2] ? " Hz" : "");
+        for (c = 3 * g; c < 3 * g + 3; c++) {
+            if (r->ok[c]) {
+                fprintf(p.gp, "$c%d using 1:2 with lines lw 1.5 lc %d title '%s', ", c, c - 3 * g + 1, k_ch[c]);
+            }
+        }
+        fprintf(p.gp, "%.4g with lines dt 2 lc rgb 'black' title 'threshold'\n", 1.0 - (double)bc->threshold);
     }
     fprintf(p.gp, "unset multiplot\n");
     return hx_plot_close(&p, CMD);
@@ -548,27 +595,46 @@ int hx_cmd_psd(int argc, char **argv)
     if (!(rate > 0.0) && log.n > 1 && log.t_ns[log.n - 1] > log.t_ns[0]) {
         rate = 1e9 * (double)(log.n - 1) / (double)(log.t_ns[log.n - 1] - log.t_ns[0]);
     }
-    if (!(rate > 0.0) || log.n < (size_t)nfft) {
+    /* too short first: one stamped sample has no rate either, and no
+     * --input-rate gives it one (a stamped format ignores the option) */
+    if (log.n < (size_t)nfft) {
         if (rc > 0) {
             /* the input's error is the cause, not a missing option */
             hx_error(CMD, "%s (the %zu samples before it are fewer than one %u-sample segment)", log.error, log.n,
                      (unsigned)nfft);
         } else {
-            hx_error(CMD, "%s: %s", a.pos[0],
-                     rate > 0.0 ? "fewer samples than one segment"
-                                : (log.n > 1 && log.t_ns[log.n - 1] == log.t_ns[0]
-                                       ? "sample rate unknown: every time stamp is the same"
-                                       : "sample rate unknown; give --input-rate"));
+            hx_error(CMD, "%s: %zu samples, fewer than one %u-sample segment", a.pos[0], log.n, (unsigned)nfft);
         }
         hx_log_free(&log);
         return HX_EXIT_DATA;
     }
+    if (!(rate > 0.0)) {
+        /* a bad line after these samples was warned when it was read */
+        hx_error(CMD, "%s: %s", a.pos[0],
+                 log.n > 1 && log.t_ns[log.n - 1] == log.t_ns[0] ? "sample rate unknown: every time stamp is the same"
+                                                                 : "sample rate unknown; give --input-rate");
+        hx_log_free(&log);
+        return HX_EXIT_DATA;
+    }
     {
-        /* Welch assumes uniform sampling: say how far the time stamps are from it */
+        /* Welch assumes uniform sampling: say how far the time stamps are
+         * from it. Stamps coarser than the period (a 398 Hz log printed to
+         * the millisecond reads 2 and 3 ms) may differ by their resolution,
+         * the intervals' gcd: every interval of such a uniform log was
+         * counted as irregular. */
         size_t i;
         long irregular = 0;
+        int64_t res_ns = 0;
+        if (log.meta.rate_coarse) {
+            for (i = 1; i < log.n; i++) {
+                if (log.t_ns[i] > log.t_ns[i - 1]) {
+                    res_ns = hx_gcd_i64(log.t_ns[i] - log.t_ns[i - 1], res_ns);
+                }
+            }
+        }
         for (i = 1; i < log.n; i++) {
-            if (fabs(1e-9 * (double)(log.t_ns[i] - log.t_ns[i - 1]) * rate - 1.0) > 0.1) {
+            const double dt = 1e-9 * (double)(log.t_ns[i] - log.t_ns[i - 1]);
+            if (fabs(dt - 1.0 / rate) > 0.1 / rate + 1e-9 * (double)res_ns) {
                 irregular++;
             }
         }
@@ -592,17 +658,22 @@ int hx_cmd_psd(int argc, char **argv)
     printf("harness psd: %s (%s), %zu samples at %.4g Hz, %.2f s\n", a.pos[0], log.meta.sensor, log.n, rate,
            (double)log.n / rate);
     {
-        char title[1024], dct[256];
+        char title[1024], dct[256], rndt[64];
         dc_text(dc_mode, res.df, dct, sizeof dct);
+        if (bc.round_hz > FNAV_R(0.0)) {
+            snprintf(rndt, sizeof rndt, "rounded up to a multiple of %g Hz", (double)bc.round_hz);
+        } else {
+            snprintf(rndt, sizeof rndt, "not rounded (--round 0)");
+        }
         snprintf(title, sizeof title,
                  "Welch: %s window of %u samples%s, overlap %u, dc %s, %u segments, resolution %.3g Hz\n"
                  "Criterion (paper II.B): per axis, the band from 0 Hz holding %.0f %% of the total power of the "
                  "one-sided PSD of the channel as logged (sensor axes);\n"
                  "  DC: %s;\n"
-                 "  sampling frequency = 2 x band, rounded up to a multiple of %g Hz; a group needs its widest axis",
+                 "  sampling frequency = 2 x band, %s; a group needs its widest axis",
                  st.wc.window == FNAV_WINDOW_HAMMING ? "Hamming" : (st.wc.window == FNAV_WINDOW_HANN ? "Hann" : "rect"),
                  (unsigned)st.wc.nfft, st.wc.symmetric ? " (symmetric)" : "", (unsigned)st.wc.overlap,
-                 k_dc_names[dc_mode], (unsigned)res.nseg, res.df, 100.0 * thr, dct, rnd);
+                 k_dc_names[dc_mode], (unsigned)res.nseg, res.df, 100.0 * thr, dct, rndt);
         print_result(title, &res, &bc);
     }
     {
@@ -614,7 +685,7 @@ int hx_cmd_psd(int argc, char **argv)
         }
         if (none[0] && none[1]) {
             hx_error(CMD, "%s: no channel has power once the DC is treated (dc %s): every channel is constant, so "
-                          "no sampling frequency can be read (the 0 Hz above is no answer)",
+                          "no sampling frequency can be read",
                      a.pos[0], k_dc_names[dc_mode]);
             exit_code = HX_EXIT_DATA;
         } else if (none[0] || none[1]) {
@@ -636,7 +707,16 @@ int hx_cmd_psd(int argc, char **argv)
                      "a lower bound set by the log's rate, not a measured requirement",
                 100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate), 0.5 * rate, res.overall_fs);
     }
-    if (above_rate) {
+    if (above_rate && bw_max < NYQ_FRAC * 0.5 * rate) {
+        /* the rounding step alone (--round above the rate, or a low-rate
+         * log): the band itself ends well inside the log's (this said it was
+         * "near the Nyquist frequency" for a 115 Hz band of a 1000 Hz log) */
+        hx_warn(CMD, "the answer (%.0f Hz) is above the log's own rate (%.4g Hz) only through the rounding to "
+                     "multiples of %g Hz: %.0f %% of the power lies below %.1f Hz, %.0f %% of the Nyquist frequency, "
+                     "and 2 x that is %.1f Hz (--round 0 gives it)",
+                res.overall_fs, rate, (double)bc.round_hz, 100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate),
+                2.0 * bw_max);
+    } else if (above_rate) {
         /* 2 x bandwidth never exceeds the rate; the rounding up did. The band
          * reaches the Nyquist frequency (a static log's noise is white up to
          * it), so the log cannot show where the signal ends. */
@@ -666,13 +746,35 @@ int hx_cmd_psd(int argc, char **argv)
                 if (ss.wc.nfft > FNAV_WELCH_MAX_NFFT || (size_t)ss.wc.nfft > log.n || analyse(&log, &ss, &bc, &sres, &bad_i, &bad_c) != 0) {
                     continue;
                 }
-                have[k] = 1;
-                fs_tab[d][k] = sres.overall_fs;
-                printf("  %-8s %5u %7.3g %7.1f %7.1f %7.1f %7.1f %7.1f %7.1f %7.0f %7.0f %7.0f\n", k_dc_names[d],
-                       (unsigned)ss.wc.nfft, sres.df, (double)sres.bw[0].bandwidth_hz, (double)sres.bw[1].bandwidth_hz,
-                       (double)sres.bw[2].bandwidth_hz, (double)sres.bw[3].bandwidth_hz,
-                       (double)sres.bw[4].bandwidth_hz, (double)sres.bw[5].bandwidth_hz, sres.group_fs[0],
-                       sres.group_fs[1], sres.overall_fs);
+                {
+                    /* an axis or group without power has no band: '-' (it
+                     * printed 0.0 and 0 Hz; with no power anywhere the row's
+                     * answer was 0 Hz, also in the JSON) */
+                    int g, gok[2];
+                    have[k] = 1;
+                    printf("  %-8s %5u %7.3g", k_dc_names[d], (unsigned)ss.wc.nfft, sres.df);
+                    for (c = 0; c < 6; c++) {
+                        if (sres.ok[c]) {
+                            printf(" %7.1f", (double)sres.bw[c].bandwidth_hz);
+                        } else {
+                            printf(" %7s", "-");
+                        }
+                    }
+                    for (g = 0; g < 2; g++) {
+                        gok[g] = sres.ok[3 * g] || sres.ok[3 * g + 1] || sres.ok[3 * g + 2];
+                        if (gok[g]) {
+                            printf(" %7.0f", sres.group_fs[g]);
+                        } else {
+                            printf(" %7s", "-");
+                        }
+                    }
+                    if (gok[0] || gok[1]) {
+                        fs_tab[d][k] = sres.overall_fs;
+                        printf(" %7.0f\n", sres.overall_fs);
+                    } else {
+                        printf(" %7s\n", "-");
+                    }
+                }
             }
         }
     }

@@ -292,7 +292,7 @@ fnav_status_t fnav_welch_bandwidth(const fnav_real_t *psd, size_t n, fnav_real_t
     size_t k;
     int found = 0;
     if (psd == NULL || out == NULL || n < 2u || !(df_hz > FNAV_R(0.0)) || !(c->threshold > FNAV_R(0.0)) ||
-        !(c->threshold <= FNAV_R(1.0)) || !(c->round_hz >= FNAV_R(0.0))) {
+        !(c->threshold <= FNAV_R(1.0)) || !(c->round_hz >= FNAV_R(0.0)) || !fnav_isfinite(c->round_hz)) {
         return FNAV_E_ARG;
     }
     for (k = k0; k < n; k++) {
@@ -323,6 +323,13 @@ fnav_status_t fnav_welch_bandwidth(const fnav_real_t *psd, size_t n, fnav_real_t
         }
     }
     out->fs_hz = FNAV_R(2.0) * out->bandwidth_hz;
-    out->fs_rounded_hz = c->round_hz > FNAV_R(0.0) ? fnav_ceil(out->fs_hz / c->round_hz) * c->round_hz : out->fs_hz;
+    out->fs_rounded_hz = out->fs_hz;
+    if (c->round_hz > FNAV_R(0.0)) {
+        /* a step so small that the quotient overflows rounds nothing (it gave Inf) */
+        const fnav_real_t q = out->fs_hz / c->round_hz;
+        if (fnav_isfinite(q)) {
+            out->fs_rounded_hz = fnav_ceil(q) * c->round_hz;
+        }
+    }
     return FNAV_OK;
 }

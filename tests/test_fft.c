@@ -13,8 +13,9 @@
 #include "support/fnav_testdata.h"
 
 /* Error bound relative to the largest bin: radix-2 rounding grows as
- * eps log2(N); measured worst 4.8e-8 (float) and 4.6e-17 (double) on the
- * real transforms of random data with a DC part, N = 4..1024. */
+ * eps log2(N); measured worst 4.8e-8 (float) and 1.5e-16 (double) on the
+ * real transforms of random data with a DC part, N = 4..4096 (printed by
+ * test_real_vs_dft). */
 #if FNAV_USE_DOUBLE
 #define FFT_TOL 1e-14
 #else
@@ -85,6 +86,7 @@ static void test_real_vs_dft(void **state)
     static fnav_real_t re[FNAV_FFT_MAX_N / 2 + 1], im[FNAV_FFT_MAX_N / 2 + 1];
     uint64_t s = 7;
     uint32_t n;
+    double worst = 0.0;
     (void)state;
     for (n = 4; n <= FNAV_FFT_MAX_N; n *= 2) {
         size_t k;
@@ -110,7 +112,11 @@ static void test_real_vs_dft(void **state)
         }
         assert_true(err <= FFT_TOL * peak);
         assert_true(im[0] == FNAV_R(0.0) && im[n / 2] == FNAV_R(0.0));
+        worst = err / peak > worst ? err / peak : worst;
     }
+    /* the figure docs/psd.md quotes */
+    fprintf(stderr, "[  INFO    ] %s build: worst real-transform error %.2g of the largest bin, N = 4..%u\n",
+            FNAV_USE_DOUBLE ? "double" : "float", worst, (unsigned)FNAV_FFT_MAX_N);
 }
 
 /* A pure tone lands in one bin with amplitude n/2 (analytic). */

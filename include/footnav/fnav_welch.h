@@ -156,7 +156,8 @@ typedef struct {
     fnav_real_t total;          /**< total power, unit^2 (sum of P_k df) */
     fnav_real_t bandwidth_hz;   /**< smallest f with cumulative power >= threshold * total */
     fnav_real_t fs_hz;          /**< 2 * bandwidth (Nyquist) */
-    fnav_real_t fs_rounded_hz;  /**< fs rounded up to a multiple of round_hz */
+    fnav_real_t fs_rounded_hz;  /**< fs rounded up to a multiple of round_hz (fs itself when round_hz is 0,
+                                     or so small that fs / round_hz overflows) */
 } fnav_bandwidth_t;
 
 /**
@@ -168,7 +169,7 @@ typedef struct {
  * @param ccdf  optional (may be NULL), n entries: complementary cumulative
  *              fraction 1 - C(f) at the upper edge of each bin
  * @return FNAV_OK; FNAV_E_ARG for NULL / n < 2 / df <= 0 / a threshold
- *         outside (0, 1] / round_hz < 0 or NaN;
+ *         outside (0, 1] / round_hz < 0 or not finite;
  *         FNAV_E_RANGE when the total power is not positive and finite.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_bandwidth(const fnav_real_t *psd, size_t n, fnav_real_t df_hz,

@@ -34,27 +34,71 @@ else
     fail "tone bandwidth"
 fi
 expect_exit 3 "unwritable output" "$H" psd "$T/tone.csv" --out /nonexistent/dir/p.csv
+# --round 0: the answer is 2 x bandwidth itself; the output said "rounded up to a multiple of 0 Hz" and "multiples of
+# 0 Hz", and printed the answer to the hertz
+expect_exit 0 "tone, --round 0" "$H" psd "$T/tone.csv" --round 0 --json "$T/r0.json"
+expect_out "sampling frequency = 2 x band, not rounded (--round 0)" "--round 0: the criterion says it does not round"
+! grep -q "of 0 Hz" "$T/out" && pass "--round 0: no 'multiple(s) of 0 Hz'" || fail "--round 0: 'multiple(s) of 0 Hz' printed"
+F=$("$PY" -c 'import json,sys; print("%.1f" % json.load(open(sys.argv[1]))["result"]["fs_hz"])' "$T/r0.json")
+expect_out "lowest usable sampling frequency: $F Hz (accelerometers and gyroscopes alike; 95 % of the power, not rounded)" \
+    "--round 0: the answer printed as the JSON's, to 0.1 Hz"
 # every channel constant: no band anywhere, so no answer (it printed 'lowest usable sampling frequency: 0 Hz' with
 # fs_hz 0 and exit 0); the tables are still written and the JSON's answer is null
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3f,0.1,0.2,9.81,0.01,0,0\n", i / 1000.0 }' \
     >"$T/const.csv"
 expect_exit 1 "every channel constant" "$H" psd "$T/const.csv" --json "$T/const.json" --out "$T/const_psd.csv"
 expect_err "no channel has power once the DC is treated" "no power on any channel is said, not 0 Hz"
+# the summary said 'lowest usable sampling frequency: 0 Hz (accelerometers and gyroscopes alike ...)' and each group
+# 'bandwidth 0.0 Hz -> 0 Hz', which the error then had to take back
+expect_out "lowest usable sampling frequency: none (no channel has power)" "constant log: the summary gives no answer"
+! grep -q -- "-> 0 Hz" "$T/out" && pass "constant log: no group said to need 0 Hz" || fail "constant log: a group needs 0 Hz"
 if "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]; assert r["fs_hz"] is None and r["gyro_fs_hz"] is None and r["accel_fs_hz"] is None, r' "$T/const.json" && [ -s "$T/const_psd.csv" ]; then
     pass "constant log: fs_hz null, PSD table written"
 else
     fail "constant log: fs_hz not null or PSD table missing"
 fi
+# the sensitivity table of that log: every row said 0.0 Hz per axis and 0 Hz as the answer, and the JSON's sensitivity
+# entries fs_hz 0 (the main answer is null); an axis or group without power is '-', and no entry has no answer
+expect_exit 1 "every channel constant, --sensitivity" "$H" psd "$T/const.csv" --sensitivity --json "$T/csens.json"
+! grep -E -q "^  (segment|linear|global|none|exclude) .* 0(\.0)? " "$T/out" &&
+    grep -E -q "^  segment     64 +[0-9.]+ +- +- +- +- +- +- +- +- +-$" "$T/out" &&
+    pass "constant log: sensitivity rows without 0 Hz answers" || fail "constant log: sensitivity rows give 0 Hz"
+json "$T/csens.json" 'j["sensitivity"] and all(e["dc"] in ("none", "exclude") and e["fs_hz"] > 0 for e in j["sensitivity"])' &&
+    pass "constant log: no sensitivity entry without an answer (none and exclude keep the constant's power)" ||
+    fail "constant log: sensitivity entries with fs_hz 0"
 # the gyroscopes constant, the accelerometers not: the answer is the accelerometers', with a warning
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) { t = i / 1000.0; s = sin(6.283185307 * 100 * t);
      printf "%.6f,%.6f,%.6f,%.6f,0,0,0\n", t, s, s, -9.81 + s } }' >"$T/gconst.csv"
 expect_exit 0 "constant gyroscopes" "$H" psd "$T/gconst.csv" --json "$T/gconst.json" --dc global
 expect_err "no gyroscope axis has power" "a group without power is said"
+expect_out "gyroscopes:     no power on any axis (left out)" "constant gyroscopes: their summary line says so, not '-> 0 Hz'"
+expect_exit 0 "constant gyroscopes, --sensitivity" "$H" psd "$T/gconst.csv" --dc global --sensitivity
+grep -E -q "^  global +64 +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +- +- +- +250 +- +250$" "$T/out" &&
+    pass "constant gyroscopes: their sensitivity columns are '-'" || fail "constant gyroscopes: sensitivity columns"
 if "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]; assert r["gyro_fs_hz"] is None and r["fs_hz"] == r["accel_fs_hz"] == 250, r' "$T/gconst.json"; then
     pass "constant gyroscopes: gyro_fs_hz null, answer from the accelerometers"
 else
     fail "constant gyroscopes: JSON"
 fi
+# the plots of such logs: gnuplot got no point for the gyroscopes' (or any) PSD panel, psd.png failed and exit 3, and
+# ccdf.png and spectrogram.png were not drawn (docs/psd.md: the tables and plots are still written)
+expect_exit 0 "constant gyroscopes, --plot" "$H" psd "$T/gconst.csv" --dc global --plot "$T/gcplots"
+for f in psd ccdf spectrogram; do
+    [ -s "$T/gcplots/$f.png" ] && pass "constant gyroscopes: $f.png" || fail "constant gyroscopes: $f.png missing"
+done
+# the CCDF panel of such a group: its title said 'bandwidths 0, 0, 0 Hz' and a flat line at 0 stood for each axis (all
+# the power below 0 Hz); the script is read through a stand-in gnuplot (the spectrogram left out, so the CCDF's is last)
+fake_gnuplot "$T/fakegp"
+PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/ccdf.gp" "$H" psd "$T/gconst.csv" --dc global --plot "$T/gcfake" --spec-nfft 4096 \
+    >/dev/null 2>&1
+grep -q "gyroscopes (Fig. 4): bandwidths no power" "$T/ccdf.gp" && ! grep -q "bandwidths 0, 0, 0 Hz" "$T/ccdf.gp" &&
+    ! grep -q '\$c3 using' "$T/ccdf.gp" && grep -q '\$c0 using' "$T/ccdf.gp" &&
+    pass "constant gyroscopes: CCDF panel says no power, draws no gyroscope line" ||
+    fail "constant gyroscopes: CCDF panel shows 0 Hz bands or flat lines"
+expect_exit 1 "every channel constant, --plot" "$H" psd "$T/const.csv" --plot "$T/cplots"
+for f in psd ccdf spectrogram; do
+    [ -s "$T/cplots/$f.png" ] && pass "every channel constant: $f.png" || fail "every channel constant: $f.png missing"
+done
 # a log shorter than the spectrogram's segment (100 samples, --nfft 64, the default --spec-nfft 256): no spectrogram
 # can be drawn; the other plots are, a warning says why it is missing (gnuplot got no data: its STATS_max was
 # undefined, a spectrogram.png was left behind and the command exited 3, an output failure)
@@ -90,6 +134,13 @@ expect_exit 0 "static log at 10 Hz" "$H" psd "$T/static10.csv" --json "$T/s10.js
 expect_err "is above the log's own rate (10 Hz)" "an answer above the log's rate is flagged"
 "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_above_log_rate"] is True and d["band_at_nyquist"] is True and d["result"]["fs_hz"] == 50, d' "$T/s10.json" &&
     pass "JSON fs_above_log_rate" || fail "JSON fs_above_log_rate"
+# a rounding step above the rate (--round 2000 on the 1000 Hz tone, band 115 Hz): the answer exceeds the rate through
+# the rounding alone; it was said to be because 95 % of the power 'reaches 115.4 Hz, near the Nyquist frequency 500 Hz'
+expect_exit 0 "tone, --round 2000" "$H" psd "$T/tone.csv" --round 2000
+expect_err "is above the log's own rate (1000 Hz) only through the rounding to multiples of 2000 Hz" \
+    "an answer above the rate by the rounding alone is said so"
+! grep -q "near the Nyquist" "$T/err" && pass "--round 2000: a 115 Hz band is not called near the 500 Hz Nyquist frequency" ||
+    fail "--round 2000: a 115 Hz band called near the Nyquist frequency"
 "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_above_log_rate"] is False and d["band_at_nyquist"] is False' "$T/tone.json" &&
     pass "JSON fs_above_log_rate false below the rate" || fail "fs_above_log_rate on the tone"
 # a value beyond any sensor (and the core's input range): exit 1, the line and column named
@@ -99,10 +150,32 @@ expect_err "huge.csv:102: column 5 (.1e30.) is beyond" "the out-of-range value i
 { echo t,ax,ay,az,gx,gy,gz; i=0; while [ $i -lt 300 ]; do echo 5,0.1,0.2,9.8,0.01,0.02,0.03; i=$((i + 1)); done; } > "$T/same.csv"
 expect_exit 1 "time stamps that never advance" "$H" psd "$T/same.csv"
 expect_err "sample rate unknown: every time stamp is the same" "says why there is no rate (was: nfft 64 at inf Hz)"
+# the same stamps, then a bad line: the cause is still the rate (it said 'the 300 samples before it are fewer than one
+# 64-sample segment', which is false)
+{ cat "$T/same.csv"; echo 5,x,1,1,1,1,1; } >"$T/samebad.csv"
+expect_exit 1 "time stamps that never advance, then a bad line" "$H" psd "$T/samebad.csv"
+expect_err "sample rate unknown: every time stamp is the same" "a bad line after stamps that never advance: the rate is named"
+! grep -q "fewer than one" "$T/err" && pass "300 samples are not called fewer than one 64-sample segment" ||
+    fail "300 samples called fewer than one 64-sample segment"
+# one stamped sample: too short, not a rate to give (it said 'sample rate unknown; give --input-rate', an option the
+# stamped CSV ignores)
+head -2 "$T/same.csv" >"$T/one.csv"
+expect_exit 1 "one stamped sample" "$H" psd "$T/one.csv" --input-rate 100
+expect_err "1 samples, fewer than one 64-sample segment" "one sample: too short for a segment"
+! grep -q "give --input-rate" "$T/err" && pass "one stamped sample: no advice to give --input-rate" ||
+    fail "one stamped sample: told to give --input-rate"
 # stamps printed to the millisecond at about 398 Hz (2 and 3 ms intervals): the rate from the stamps, not 333 or 500 Hz
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) printf "%.3f,%.4f,0,9.81,0,0,%.4f\n", i / 398.3, sin(i), cos(i) }' > "$T/ms.csv"
 expect_exit 0 "stamps rounded to the millisecond" "$H" psd "$T/ms.csv" --json "$T/ms.json"
 expect_out_re "398\.[0-9]+ Hz" "the rate is read from the spans of the stamps"
+# those samples are uniform: only their stamps are rounded (to 1 ms, of a 2.5 ms period); it warned '2999 of 2999
+# intervals differ from 1/398.3 s by more than 10 %: Welch assumes uniform sampling'
+! grep -q "intervals differ" "$T/err" && pass "millisecond stamps of uniform samples: no irregular-sampling warning" ||
+    fail "millisecond stamps of uniform samples called irregular: $(cat "$T/err")"
+# the same stamps with 30 samples lost (one every 100 rows): those 30 intervals are irregular
+awk 'NR == 1 || (NR - 1) % 100 != 50' "$T/ms.csv" >"$T/msgap.csv"
+expect_exit 0 "millisecond stamps with lost samples" "$H" psd "$T/msgap.csv"
+expect_err "30 of 2969 intervals differ" "lost samples under millisecond stamps are counted"
 
 O=$(data openshoe_c_820hz/OpenShoeDataSet.txt)
 if [ -n "$O" ]; then
