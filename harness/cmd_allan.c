@@ -449,6 +449,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     fnav_status_t st;
     hx_progress_t pr;
     int64_t t_prev = 0;
+    int64_t res_ns = 0; /* the stamps' resolution so far: the gcd of the intervals that advance */
     long irregular = 0;
     double stamp_rate; /* the rate the stamps are checked against: the log's own, not an overriding --rate */
     int i, rc = 0;
@@ -476,12 +477,19 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         if (!(stamp_rate > 0.0) && R->n > 0 && s.t_ns > t_prev) {
             stamp_rate = 1e9 / (double)(s.t_ns - t_prev);
         }
+        if (R->n > 0 && s.t_ns > t_prev && hx_reader_meta(r)->rate_coarse) {
+            res_ns = hx_gcd_i64(s.t_ns - t_prev, res_ns);
+        }
         if (R->n > 0 && stamp_rate > 0.0) {
             /* uniformity of the stamps themselves: against an overriding
              * --rate every interval of a uniform log "differed" (999,999 of
-             * the ADIS log at --rate 400, said as non-uniform sampling) */
+             * the ADIS log at --rate 400, said as non-uniform sampling).
+             * Stamps coarser than the period (398 Hz printed to the
+             * millisecond reads 2 and 3 ms) may differ by their resolution
+             * as well: every interval of such a uniform log was counted (as
+             * psd's, 2026-11-29; the gcd so far is never below the final one) */
             const double dt = 1e-9 * (double)(s.t_ns - t_prev);
-            if (fabs(dt * stamp_rate - 1.0) > 0.1) {
+            if (fabs(dt - 1.0 / stamp_rate) > 0.1 / stamp_rate + 1e-9 * (double)res_ns) {
                 irregular++;
             }
         }
