@@ -1493,6 +1493,15 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
     r->duration_s = (double)r->n / r->rate_hz;
     r->domain_detected = sg_detect_domain(log, r->rate_hz);
     r->domain = o->domain != 0 ? o->domain : r->domain_detected;
+    /* an option of the other domain has no effect: said, not dropped
+     * silently (shown under --quiet too, as the other warnings) */
+    if (r->domain == 1 && o->closed) {
+        hx_warn("simgap", "%s: --closed is for walks (the drift check); ignored on a static log", path);
+    }
+    if (r->domain == 2 && o->contiguous) {
+        hx_warn("simgap", "%s: --contiguous is for static logs (a walk is always split contiguously); ignored on a walk",
+                path);
+    }
     if (units_of_log(log, path, r, err, err_size) != 0) {
         return -1;
     }
