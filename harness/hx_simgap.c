@@ -1000,7 +1000,11 @@ static void locate_into(const sg_result_t *r, int ch, int seg, const sg_cmp_t *c
             ++*dropped;
         } else if (fabs(c->z[best]) > c->z_crit) {
             sg_loc_t *L = &loc[(*nloc)++];
-            double d = r->real[ch][seg][best] - c->twin_mean[best];
+            /* the deviation behind z (after the parameter-uncertainty
+             * correction), so that the ratio agrees with z's sign: the raw
+             * real - twin mean printed "34.9 sigma below the twin (ADEV
+             * x1.11)" on a vibration log (a review, 2026-11-29) */
+            double d = c->dev[best];
             L->dom = pl->p[j].dom;
             L->ch = ch;
             L->seg = seg;
