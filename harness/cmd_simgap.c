@@ -100,6 +100,18 @@ int hx_cmd_simgap(int argc, char **argv)
     if (lr < 0) {
         return HX_EXIT_DATA;
     }
+    /* a static log's held-out score and likelihood-ratio tests leave one
+     * twin out of each null and need 4 twins: with 3 every effect scored
+     * 0 sigma and a plain tone was answered "unexplained", exit 0 (a
+     * review, 2026-11-29); walks, and static logs without an attribution,
+     * work with 3 */
+    if (o.seeds < 4 && o.max_steps > 0 && log.n >= 16 &&
+        (o.domain == 1 || (o.domain == 0 && sg_detect_domain(&log, sg_log_rate(&log)) == 1))) {
+        hx_error("simgap", "--seeds %d is too few for a static log: the held-out tests of an effect need at least 4 "
+                           "twins (or --max-effects 0)", o.seeds);
+        hx_log_free(&log);
+        return HX_EXIT_USAGE;
+    }
     r = (sg_result_t *)calloc(1, sizeof *r);
     if (r == NULL) {
         hx_log_free(&log);

@@ -1000,7 +1000,11 @@ static void locate_into(const sg_result_t *r, int ch, int seg, const sg_cmp_t *c
             ++*dropped;
         } else if (fabs(c->z[best]) > c->z_crit) {
             sg_loc_t *L = &loc[(*nloc)++];
-            double d = r->real[ch][seg][best] - c->twin_mean[best];
+            /* the deviation behind z (after the parameter-uncertainty
+             * correction), so that the ratio agrees with z's sign: the raw
+             * real - twin mean printed "34.9 sigma below the twin (ADEV
+             * x1.11)" on a vibration log (a review, 2026-11-29) */
+            double d = c->dev[best];
             L->dom = pl->p[j].dom;
             L->ch = ch;
             L->seg = seg;
@@ -1493,6 +1497,15 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
     r->duration_s = (double)r->n / r->rate_hz;
     r->domain_detected = sg_detect_domain(log, r->rate_hz);
     r->domain = o->domain != 0 ? o->domain : r->domain_detected;
+    /* an option of the other domain has no effect: said, not dropped
+     * silently (shown under --quiet too, as the other warnings) */
+    if (r->domain == 1 && o->closed) {
+        hx_warn("simgap", "%s: --closed is for walks (the drift check); ignored on a static log", path);
+    }
+    if (r->domain == 2 && o->contiguous) {
+        hx_warn("simgap", "%s: --contiguous is for static logs (a walk is always split contiguously); ignored on a walk",
+                path);
+    }
     if (units_of_log(log, path, r, err, err_size) != 0) {
         return -1;
     }

@@ -190,6 +190,9 @@ typedef struct {
     double *z;                /**< z-score per point */
     double *twin_mean, *twin_sd; /**< mean and spread of the twins per point */
     double *sd_tot;           /**< denominator of z */
+    double *dev;              /**< deviation behind z: real - twin mean - the part the fitted
+                               *   parameters' uncertainty explains (the Woodbury correction);
+                               *   real - twin mean without refit shifts. Of z's sign */
     double G;                 /**< aggregate gap: mean over domains of mean min(z^2, SG_ZCAP^2) */
     double G_dom[SG_NDOM];    /**< per domain (NaN when the domain has no point) */
     double maxz;              /**< largest |z| */

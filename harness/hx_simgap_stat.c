@@ -600,6 +600,7 @@ void sg_cmp_free(sg_cmp_t *c)
     free(c->twin_mean);
     free(c->twin_sd);
     free(c->sd_tot);
+    free(c->dev);
     free(c->G_null);
     memset(c, 0, sizeof *c);
 }
@@ -730,7 +731,7 @@ static double t_to_normal(double t, double df)
  * diagonal vx is added to D instead. */
 static double zscores(const sg_plist_t *pl, const double *real, const double *twin, const int *rows, int nr,
                       const double *vx, const double *shift, int S, double *z, double *mean_out, double *sd_out,
-                      double *sdt_out, double *G_dom, double *maxz, int *imax, double *lnD_out)
+                      double *sdt_out, double *dev_out, double *G_dom, double *maxz, int *imax, double *lnD_out)
 {
     size_t j, n = pl->n;
     double gsum[SG_NDOM], lsum[SG_NDOM], G = 0.0, L = 0.0;
@@ -831,6 +832,9 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
     }
     for (j = 0; j < n; j++) {
         double zz = dev[j] / sqrt(D[j]);
+        if (dev_out != NULL) {
+            dev_out[j] = dev[j]; /* the residual behind z: its sign is z's */
+        }
         if (!(vt[j] > 0.0) && nr >= 3) {
             /* a variance from the twins alone: the deviation over its
              * estimate is Student's t with nr - 1 degrees of freedom, not
@@ -949,10 +953,11 @@ int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int
     out->twin_mean = (double *)calloc(n + 1, sizeof(double));
     out->twin_sd = (double *)calloc(n + 1, sizeof(double));
     out->sd_tot = (double *)calloc(n + 1, sizeof(double));
+    out->dev = (double *)calloc(n + 1, sizeof(double));
     out->G_null = (double *)calloc((size_t)S + 1, sizeof(double));
     rows = (int *)malloc(((size_t)S + 1) * sizeof *rows);
     pseudo = (double *)malloc((n + 1) * sizeof *pseudo);
-    if (out->z == NULL || out->twin_mean == NULL || out->twin_sd == NULL || out->sd_tot == NULL ||
+    if (out->z == NULL || out->twin_mean == NULL || out->twin_sd == NULL || out->sd_tot == NULL || out->dev == NULL ||
         out->G_null == NULL || rows == NULL || pseudo == NULL || S < 2) {
         free(rows);
         free(pseudo);
@@ -962,7 +967,7 @@ int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int
     for (s = 0; s < S; s++) {
         rows[s] = s;
     }
-    out->G = zscores(pl, real, twin, rows, S, vx, shift, S, out->z, out->twin_mean, out->twin_sd, out->sd_tot, out->G_dom,
+    out->G = zscores(pl, real, twin, rows, S, vx, shift, S, out->z, out->twin_mean, out->twin_sd, out->sd_tot, out->dev, out->G_dom,
                      &out->maxz, &out->imax, NULL);
     /* null: each twin in turn as the real, the others as twins; the twin
      * taken as real carries the error of a model refitted to it (shift), as
@@ -977,7 +982,7 @@ int sg_compare(const sg_plist_t *pl, const double *real, const double *twin, int
         for (j = 0; j < n; j++) {
             pseudo[j] = twin[(size_t)s * n + j] - (shift != NULL ? shift[(size_t)s * n + j] : 0.0);
         }
-        out->G_null[s] = zscores(pl, pseudo, twin, rows, m, vx, shift, S, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
+        out->G_null[s] = zscores(pl, pseudo, twin, rows, m, vx, shift, S, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
         sum += out->G_null[s];
         sum2 += out->G_null[s] * out->G_null[s];
     }
@@ -1069,7 +1074,7 @@ const char *sg_cmp_why(const sg_cmp_t *c)
 double sg_gap_resampled(const sg_plist_t *pl, const double *real, const double *twin, int S, const int *idx, int S2,
                         const double *vx, const double *shift)
 {
-    return zscores(pl, real, twin, idx, S2, vx, shift, S, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
+    return zscores(pl, real, twin, idx, S2, vx, shift, S, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
 }
 
 /* The Gaussian deviance of a real (or pseudo-real) against twin rows: G plus
@@ -1078,7 +1083,7 @@ static double deviance(const sg_plist_t *pl, const double *real, const double *t
                        const double *vx, const double *shift, int S)
 {
     double lnD = 0.0;
-    double G = zscores(pl, real, twin, rows, nr, vx, shift, S, NULL, NULL, NULL, NULL, NULL, NULL, NULL, &lnD);
+    double G = zscores(pl, real, twin, rows, nr, vx, shift, S, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, &lnD);
     return G + lnD;
 }
 
