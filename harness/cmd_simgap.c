@@ -1,9 +1,11 @@
 /* harness simgap: where a real log and its simulated twin disagree, which
  * effect of the simulator's catalogue explains it and how far the gap
  * shrinks on held-out data (docs/simgap.md). */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "hx_cli.h"
 #include "hx_commands.h"
@@ -94,6 +96,22 @@ int hx_cmd_simgap(int argc, char **argv)
         static const char *const outs[] = { "--json", "--plot", NULL };
         if (hx_output_is_input("simgap", path, &a, outs) || hx_profile_is_output("simgap", o.profile, &a, outs)) {
             return HX_EXIT_USAGE;
+        }
+    }
+    /* the outputs are written after the diagnosis (minutes on a long log):
+     * find out now that they can be (a review, 2026-11-29) */
+    if (json != NULL && strcmp(json, "-") != 0 && hx_check_writable("simgap", json) != 0) {
+        return HX_EXIT_IO;
+    }
+    if (plot != NULL) {
+        char png[4200];
+        if (mkdir(plot, 0777) != 0 && errno != EEXIST) {
+            hx_error("simgap", "cannot create %s: %s", plot, strerror(errno));
+            return HX_EXIT_IO;
+        }
+        snprintf(png, sizeof png, "%s/z.png", plot);
+        if (hx_plot_check("simgap", png) != 0) {
+            return HX_EXIT_IO;
         }
     }
     lr = hx_load_input("simgap", &a, path, &log);

@@ -34,6 +34,12 @@ grep -q "TOO SHORT" "$T/out" && pass "too short said in the summary" || fail "to
 expect_err "^harness simgap: error: .*short.csv: too short for a confident answer: .*decade" "too short said in one error line"
 json "$T/short.json" 'j["confident"] is False and j["verdict"]["answer"] == "too-short" and "decade" in j["too_short"]' &&
     pass "too short in the JSON" || fail "too short JSON: $(cat "$T/pyerr")"
+# an output that cannot be written fails before the diagnosis, not after it
+# (it took the whole run, minutes on a long log, then exit 3; the simgap review, 2026-11-29)
+expect_exit 3 "--json into a missing directory" "$H" simgap "$T/short.csv" --json "$T/nodir/x.json"
+[ ! -s "$T/out" ] && pass "--json unwritable: refused before the diagnosis" || fail "--json unwritable: diagnosed first"
+expect_exit 3 "--plot that cannot be created" "$H" simgap "$T/short.csv" --plot "$T/nodir/plots"
+[ ! -s "$T/out" ] && pass "--plot unwritable: refused before the diagnosis" || fail "--plot unwritable: diagnosed first"
 # ... and its plots are still written (Usage): 2 s hold no Welch band, and
 # the PSD panels without a point made gnuplot fail ("x range is invalid"),
 # exit 3 and no z.png
