@@ -66,6 +66,16 @@ expect_exit 0 "walk rate in the command" "$H" simgap-validate --cases 8 --only 7
 grep -q -- "--walk-only" "$T/w.md" && grep -q -- "--walk-rate 100" "$T/w.md" && pass "--walk-rate in the Markdown's command" ||
     fail "Markdown command: $(grep '^Run' "$T/w.md")"
 
+# a walk effect beyond half the simulator's range is set at that bound, and
+# its multiple is the one set: a misalignment clipped to 0.5 said 1000 x, and
+# a negative scale factor was clipped to -5 (the range is -0.9..10), refused,
+# and the run ended at case 2 with "cannot draw a walk case" (exit 3)
+expect_exit 0 "walk effects at 1000 x: every case drawn" "$H" simgap-validate --walk-only --effects scale,misalign,gsens \
+    --mag-range 1000,1000 --cases 3 --walk-duration 20 --seeds 3 --quiet --json "$T/wc.json"
+json "$T/wc.json" 'j["cases"] == 3 and all(r["multiple_of_threshold"] < 1000 for r in j["results"]
+    if abs(r["values"][0]) >= 0.45)' && pass "a clipped walk magnitude's multiple is the one set" ||
+    fail "clipped walk magnitudes: $(cat "$T/pyerr") $(cat "$T/out")"
+
 # a static case too big to hold (1e11 samples: it ran for ever) is a usage error; walk-only runs ignore the static size
 expect_exit 2 "static case of 1e11 samples" "$H" simgap-validate --cases 1 --duration 1e6 --rate 1e5
 expect_err "samples per static case; at most 20000000" "the static case's size is bounded and said"
