@@ -53,6 +53,17 @@ json "$T/ts.json" 'all(r["verdict"] == "too-short" for r in j["results"])' && pa
 expect_out "static 0/0 false alarms.*4 too short" "too-short controls are not counted as false alarms"
 grep -q "false alarms on controls.*no" "$T/out" && fail "the false-alarm target failed on too-short controls" ||
     pass "no false-alarm target failed on too-short controls"
+# ... and a case of an effect answered too-short is no identification: no
+# effect, no place, no parameter (walks of 20 s at 50 Hz are all too short;
+# case 7, saturation, was scored top-1, located exactly, parameter 0 off)
+expect_exit 0 "walks too short" "$H" simgap-validate --walk-only --cases 10 --walk-duration 20 --walk-rate 50 \
+    --seeds 3 --json "$T/wts.json"
+json "$T/wts.json" 'len(j["results"]) == 10 and all(r["verdict"] == "too-short" for r in j["results"])' &&
+    pass "the short walks are too-short" || fail "short walks: $(cat "$T/out")"
+json "$T/wts.json" 'all(r["answer"] == "none" and r["location_jaccard"] == 0 and r["param_rel_error"] is None
+    for r in j["results"])' && pass "a too-short effect case is no answer" || fail "too-short scored: $(cat "$T/out")"
+expect_out_re "^motion +8 +0/8 +0/8 += +0\.0 % .* 0/8 +/ 0\.00 +0/0 " "too-short effect cases: no top-1, location or parameter in the summary"
+
 # --only K runs one case: the summary counts one case, not --cases N
 expect_exit 0 "--only one case" "$H" simgap-validate --cases 8 --only 6 $FAST --json "$T/o.json" --markdown "$T/o.md"
 expect_out "^simgap-validate: 1 case (case 6 of 8; seed 1)" "--only: one case said"
