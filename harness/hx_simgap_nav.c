@@ -2640,10 +2640,15 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
         thr = sqrt(25.0 * disp / sjj);
         v = thr * cs->mult * ((double)fnav_rng_uniform(rng) < 0.5 ? -1.0 : 1.0);
         {
+            /* at most half the simulator's range on the drawn sign (scale's
+             * is -0.9..10: a negative draw was clipped at -5, refused, and
+             * the run ended with "cannot draw a walk case"); the multiple is
+             * then what was set (it said 1000 x for a clipped 0.5) */
             const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)E[type].id);
-            double hi = info->params[k].hi;
-            if (fabs(v) > 0.5 * hi) {
-                v = v > 0.0 ? 0.5 * hi : -0.5 * hi;
+            double lim = 0.5 * (v > 0.0 ? (double)info->params[k].hi : -(double)info->params[k].lo);
+            if (fabs(v) > lim) {
+                v = v > 0.0 ? lim : -lim;
+                cs->mult = lim / thr;
             }
         }
         cs->mask = 1u << ch;

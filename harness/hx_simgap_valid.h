@@ -103,7 +103,8 @@ typedef struct {
     int detected;           /**< verdict is not "none" */
     uint32_t flagged;       /**< channels with a significant gap */
     int timing_flagged;
-    double jaccard;         /**< |flagged & mask| / |flagged | mask| (timing: 1 when flagged) */
+    double jaccard;         /**< |flagged & mask| / |flagged | mask| (timing: 1 when the timing test flags
+                             *   the log and no channel, else 0) */
     double perr;            /**< median relative error of the magnitude over the channels (NaN) */
     double shrink;          /**< median held-out excess explained by the right effect (NaN) */
     char verdict[32];

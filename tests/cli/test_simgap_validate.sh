@@ -53,6 +53,17 @@ json "$T/ts.json" 'all(r["verdict"] == "too-short" for r in j["results"])' && pa
 expect_out "static 0/0 false alarms.*4 too short" "too-short controls are not counted as false alarms"
 grep -q "false alarms on controls.*no" "$T/out" && fail "the false-alarm target failed on too-short controls" ||
     pass "no false-alarm target failed on too-short controls"
+# ... and a case of an effect answered too-short is no identification: no
+# effect, no place, no parameter (walks of 20 s at 50 Hz are all too short;
+# case 7, saturation, was scored top-1, located exactly, parameter 0 off)
+expect_exit 0 "walks too short" "$H" simgap-validate --walk-only --cases 10 --walk-duration 20 --walk-rate 50 \
+    --seeds 3 --json "$T/wts.json"
+json "$T/wts.json" 'len(j["results"]) == 10 and all(r["verdict"] == "too-short" for r in j["results"])' &&
+    pass "the short walks are too-short" || fail "short walks: $(cat "$T/out")"
+json "$T/wts.json" 'all(r["answer"] == "none" and r["location_jaccard"] == 0 and r["param_rel_error"] is None
+    for r in j["results"])' && pass "a too-short effect case is no answer" || fail "too-short scored: $(cat "$T/out")"
+expect_out_re "^motion +8 +0/8 +0/8 += +0\.0 % .* 0/8 +/ 0\.00 +0/0 " "too-short effect cases: no top-1, location or parameter in the summary"
+
 # --only K runs one case: the summary counts one case, not --cases N
 expect_exit 0 "--only one case" "$H" simgap-validate --cases 8 --only 6 $FAST --json "$T/o.json" --markdown "$T/o.md"
 expect_out "^simgap-validate: 1 case (case 6 of 8; seed 1)" "--only: one case said"
@@ -65,6 +76,16 @@ expect_exit 0 "walk rate in the command" "$H" simgap-validate --cases 8 --only 7
     --walk-rate 100 --seeds 3 --quiet --markdown "$T/w.md"
 grep -q -- "--walk-only" "$T/w.md" && grep -q -- "--walk-rate 100" "$T/w.md" && pass "--walk-rate in the Markdown's command" ||
     fail "Markdown command: $(grep '^Run' "$T/w.md")"
+
+# a walk effect beyond half the simulator's range is set at that bound, and
+# its multiple is the one set: a misalignment clipped to 0.5 said 1000 x, and
+# a negative scale factor was clipped to -5 (the range is -0.9..10), refused,
+# and the run ended at case 2 with "cannot draw a walk case" (exit 3)
+expect_exit 0 "walk effects at 1000 x: every case drawn" "$H" simgap-validate --walk-only --effects scale,misalign,gsens \
+    --mag-range 1000,1000 --cases 3 --walk-duration 20 --seeds 3 --quiet --json "$T/wc.json"
+json "$T/wc.json" 'j["cases"] == 3 and all(r["multiple_of_threshold"] < 1000 for r in j["results"]
+    if abs(r["values"][0]) >= 0.45)' && pass "a clipped walk magnitude's multiple is the one set" ||
+    fail "clipped walk magnitudes: $(cat "$T/pyerr") $(cat "$T/out")"
 
 # a static case too big to hold (1e11 samples: it ran for ever) is a usage error; walk-only runs ignore the static size
 expect_exit 2 "static case of 1e11 samples" "$H" simgap-validate --cases 1 --duration 1e6 --rate 1e5
