@@ -867,11 +867,18 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
         if (a->n == 0) {
             continue;
         }
+        char pe_med[16] = "-", sh_med[16] = "-"; /* no case to take a median of: '-' (it printed nan) */
         wilson(a->top1, a->n, &lo, &hi);
-        fprintf(f, "%s%-7s%s%5d%s%4d/%-4d%s%3d/%-3d = %5.1f %% (%4.1f..%5.1f %%)%s%3d/%-3d / %.2f%s%3d/%-3d (%.2f)%s%3d/%-3d (%.2f)%s\n",
+        if (a->npe > 0) {
+            snprintf(pe_med, sizeof pe_med, "%.2f", hx_median(a->pe_med_v, a->npe));
+        }
+        if (a->nsh > 0) {
+            snprintf(sh_med, sizeof sh_med, "%.2f", hx_median(a->sh_med_v, a->nsh));
+        }
+        fprintf(f, "%s%-7s%s%5d%s%4d/%-4d%s%3d/%-3d = %5.1f %% (%4.1f..%5.1f %%)%s%3d/%-3d / %.2f%s%3d/%-3d (%s)%s%3d/%-3d (%s)%s\n",
                 md ? "| " : "", k_cls[k], sep, a->n, sep, a->det, a->n, sep, a->top1, a->n, 100.0 * a->top1 / a->n,
-                100.0 * lo, 100.0 * hi, sep, a->loc_exact, a->n, a->jac / a->n, sep, a->pe_ok, a->pe_n,
-                hx_median(a->pe_med_v, a->npe), sep, a->sh_ok, a->sh_n, hx_median(a->sh_med_v, a->nsh), md ? " |" : "");
+                100.0 * lo, 100.0 * hi, sep, a->loc_exact, a->n, a->jac / a->n, sep, a->pe_ok, a->pe_n, pe_med, sep,
+                a->sh_ok, a->sh_n, sh_med, md ? " |" : "");
     }
     if (md) {
         fprintf(f, "\nControls (no effect): ");

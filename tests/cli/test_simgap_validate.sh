@@ -9,8 +9,13 @@ PY=${PYTHON:-/usr/bin/python3}
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 . "$(dirname "$0")/lib.sh"
-# small static cases: 60 s at 50 Hz, 3 twins
-FAST="--static-only --duration 60 --rate 50 --seeds 3"
+# small static cases: 60 s at 50 Hz, 4 twins
+FAST="--static-only --duration 60 --rate 50 --seeds 4"
+
+# a static case's held-out tests need 4 twins: with 3 no effect could ever be
+# accepted (simgap refuses it since the simgap review; the validation took it)
+expect_exit 2 "static cases with 3 twins" "$H" simgap-validate --cases 1 --static-only --duration 60 --rate 50 --seeds 3
+expect_err "at least 4" "static cases with 3 twins: the minimum said"
 
 # an output that cannot be written is said before the run, not after it
 # (a full run takes 13 minutes)
@@ -47,7 +52,7 @@ grep -q "^case" "$T/out" && fail "refused magnitude: cases ran first" || pass "r
 # gives "too-short" on every control (it was "static 4/4 false alarms
 # (100.0 %)" and the target "no")
 expect_exit 0 "controls on logs too short" "$H" simgap-validate --cases 4 --effects control --static-only \
-    --duration 10 --rate 10 --seeds 3 --json "$T/ts.json"
+    --duration 10 --rate 10 --seeds 4 --json "$T/ts.json"
 json "$T/ts.json" 'all(r["verdict"] == "too-short" for r in j["results"])' && pass "the short controls are too-short" ||
     fail "short controls: $(cat "$T/out")"
 expect_out "static 0/0 false alarms.*4 too short" "too-short controls are not counted as false alarms"
@@ -62,7 +67,7 @@ json "$T/wts.json" 'len(j["results"]) == 10 and all(r["verdict"] == "too-short" 
     pass "the short walks are too-short" || fail "short walks: $(cat "$T/out")"
 json "$T/wts.json" 'all(r["answer"] == "none" and r["location_jaccard"] == 0 and r["param_rel_error"] is None
     for r in j["results"])' && pass "a too-short effect case is no answer" || fail "too-short scored: $(cat "$T/out")"
-expect_out_re "^motion +8 +0/8 +0/8 += +0\.0 % .* 0/8 +/ 0\.00 +0/0 " "too-short effect cases: no top-1, location or parameter in the summary"
+expect_out_re "^motion +8 +0/8 +0/8 += +0\.0 % .* 0/8 +/ 0\.00 +0/0 +\(-\) +0/0 +\(-\)$" "too-short effect cases: no top-1, location or parameter in the summary ('-' for no median: it printed nan)"
 
 # --only K runs one case: the summary counts one case, not --cases N
 expect_exit 0 "--only one case" "$H" simgap-validate --cases 8 --only 6 $FAST --json "$T/o.json" --markdown "$T/o.md"
