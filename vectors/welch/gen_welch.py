@@ -168,22 +168,42 @@ def compare(old, new):
     return None
 
 
+OS8_SRC = os.path.join(HERE, "..", "..", "..", "shared", "data", "openshoe_c_820hz", "OpenShoeDataSet.txt")
+
+
+def os820_text():
+    rows = open(OS8_SRC).read().splitlines()[10000:18192]
+    return ("# OpenShoe 820 Hz walk (CC BY 4.0, data OpenShoe ISC): f_z [m/s^2], rows 10001-18192\n"
+            + "".join(r.split(",")[2].strip() + "\n" for r in rows))
+
+
+def synth_text():
+    return ("# synthetic: 9.81 + 0.7 sin(0.0377 k) + 0.2 sin(1.3 k + 0.4) + (u - 0.5), u from a 64-bit LCG\n"
+            + "".join("%.17g\n" % v for v in synth()))
+
+
 def main():
     if "--write-os820" in sys.argv:
-        src = os.path.join(HERE, "..", "..", "..", "shared", "data", "openshoe_c_820hz", "OpenShoeDataSet.txt")
-        rows = open(src).read().splitlines()[10000:18192]
         with open(OS8, "w") as f:
-            f.write("# OpenShoe 820 Hz walk (CC BY 4.0, data OpenShoe ISC): f_z [m/s^2], rows 10001-18192\n")
-            for r in rows:
-                f.write(r.split(",")[2].strip() + "\n")
+            f.write(os820_text())
     if "--write-synth" in sys.argv or not os.path.exists(SYN):
         with open(SYN, "w") as f:
-            f.write("# synthetic: 9.81 + 0.7 sin(0.0377 k) + 0.2 sin(1.3 k + 0.4) + (u - 0.5), u from a 64-bit LCG\n")
-            for v in synth():
-                f.write("%.17g\n" % v)
+            f.write(synth_text())
     lines, last = generate()
     if "--check" in sys.argv:
         status = 0
+        # the inputs too: an input edited and the expected values regenerated
+        # from it would otherwise pass
+        inputs = [(SYN, synth_text())]
+        if os.path.exists(OS8_SRC):
+            inputs.append((OS8, os820_text()))
+        else:
+            print("gen_welch: %s not found; the OpenShoe excerpt is not compared with its source" % OS8_SRC)
+        for path, text in inputs:
+            if not os.path.exists(path) or open(path).read() != text:
+                print("gen_welch: %s differs from its source (regenerate: gen_welch.py --write-synth --write-os820)"
+                      % os.path.basename(path))
+                status = 1
         for path, new in ((OUT, lines), (OUT_LAST, last)):
             err = compare(open(path).readlines(), new) if os.path.exists(path) else "missing"
             if err:

@@ -1,0 +1,48 @@
+#!/bin/sh
+# scripts/check_vectors.sh (make vectors-check) on a scratch copy of the
+# Welch vectors: it passes on the committed files, fails with what to do when
+# a vector or an input no longer matches its generator, and fails (not
+# passes) when it finds no generator at all. Needs /usr/bin/python3 with
+# numpy/scipy; the committed tree is never touched.
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+. tests/cli/lib.sh
+ROOT=$PWD
+PY=${PY:-/usr/bin/python3}
+if ! "$PY" -c 'import numpy, scipy' 2>/dev/null; then
+    echo "skip: $PY lacks numpy/scipy"
+    exit 0
+fi
+mkdir -p "$T/x/vectors" "$T/x/scripts" "$T/empty"
+cp -R vectors/welch "$T/x/vectors/"
+cp scripts/check_vectors.sh "$T/x/scripts/"
+# gen_welch.py finds the OpenShoe source at ../../../shared/data from its folder
+[ -d "$ROOT/../shared/data" ] && ln -s "$ROOT/../shared" "$T/shared"
+
+expect_exit 1 "no generator found: a failure" sh -c "cd '$T/empty' && PYTHON='$PY' sh '$ROOT/scripts/check_vectors.sh'"
+expect_out "no generators" "no generators: said"
+
+expect_exit 0 "committed Welch vectors pass" sh -c "cd '$T/x' && PYTHON='$PY' sh scripts/check_vectors.sh"
+
+# one digit of an expected value changed
+cp "$T/x/vectors/welch/welch_expected.csv" "$T/keep.csv"
+sed '5s/^2,3/2,4/' "$T/keep.csv" >"$T/x/vectors/welch/welch_expected.csv"
+cmp -s "$T/keep.csv" "$T/x/vectors/welch/welch_expected.csv" && fail "the mutation changed nothing"
+expect_exit 1 "an edited expected value fails" sh -c "cd '$T/x' && PYTHON='$PY' sh scripts/check_vectors.sh"
+expect_out "welch_expected.csv: value differs" "the changed file named"
+expect_out "commit the new vector with the reason" "what to do said"
+cp "$T/keep.csv" "$T/x/vectors/welch/welch_expected.csv"
+
+# an input edited and the expected values regenerated from it: the input
+# no longer comes from its generator
+sed '100s/^9/8/' vectors/welch/welch_input_synth.txt >"$T/x/vectors/welch/welch_input_synth.txt"
+cmp -s vectors/welch/welch_input_synth.txt "$T/x/vectors/welch/welch_input_synth.txt" && fail "the mutation changed nothing"
+"$PY" "$T/x/vectors/welch/gen_welch.py" >/dev/null 2>&1
+expect_exit 1 "an edited input with regenerated expectations fails" sh -c "cd '$T/x' && PYTHON='$PY' sh scripts/check_vectors.sh"
+expect_out "welch_input_synth.txt differs from its source" "the edited input named"
+
+if [ "$fails" -ne 0 ]; then
+    echo "test_vectors.sh: $fails failure(s)"
+    exit 1
+fi
+echo "test_vectors.sh: all passed"
