@@ -358,7 +358,7 @@ static size_t phasedat_phase(double *x, size_t max)
  * Stable32 printed limits (the octave runs), the limits from hx_dev_edf()
  * with Stable32's own alpha, so that the EDF is checked apart from the
  * noise identification. */
-static void check_dev_table(const char *rel, hx_dev_t k)
+static void check_dev_table(const char *rel, hx_dev_t k, int octave)
 {
     static s32_row_t rows[200];
     static double x[1100];
@@ -381,8 +381,9 @@ static void check_dev_table(const char *rel, hx_dev_t k)
             nlim++;
         }
     }
-    /* the octave files carry limits on every row, the all-tau files none */
-    assert_true(nlim == 0u || nlim == n);
+    /* the octave files carry limits on every row, the all-tau files none
+     * (an octave table read without its limits would skip every CI check) */
+    assert_int_equal(nlim, octave ? n : 0u);
 }
 
 static void test_phasedat_other_deviations(void **state)
@@ -399,9 +400,9 @@ static void test_phasedat_other_deviations(void **state)
     (void)state;
     for (i = 0; i < sizeof t / sizeof t[0]; i++) {
         snprintf(rel, sizeof rel, "allan_reference/phasedat/phase_dat_%s.txt", t[i].name);
-        check_dev_table(rel, t[i].k);
+        check_dev_table(rel, t[i].k, 0);
         snprintf(rel, sizeof rel, "allan_reference/phasedat/phase_dat_%s_octave.txt", t[i].name);
-        check_dev_table(rel, t[i].k);
+        check_dev_table(rel, t[i].k, 1);
     }
     s32_print_stat();
 }
