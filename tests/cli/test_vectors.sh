@@ -41,6 +41,29 @@ cmp -s vectors/welch/welch_input_synth.txt "$T/x/vectors/welch/welch_input_synth
 expect_exit 1 "an edited input with regenerated expectations fails" sh -c "cd '$T/x' && PYTHON='$PY' sh scripts/check_vectors.sh"
 expect_out "welch_input_synth.txt differs from its source" "the edited input named"
 
+# every copied piece of real data names its licence file, and the file is there
+# (vectors/README.md: the rows naming a licence; vectors/nav/README.md)
+cat >"$T/lic.py" <<'PYEOF'
+import os, re, sys
+bad = 0
+for readme in ("vectors/README.md", "vectors/nav/README.md"):
+    base = os.path.dirname(readme)
+    text = open(readme).read()
+    units = [l for l in text.splitlines() if l.startswith("| `")] if readme == "vectors/README.md" \
+        else re.split(r"\n(?=- )", text.split("Sources and licences")[1])[1:]
+    for u in units:
+        if not re.search(r"\b(MIT|ISC|BSD|CC BY)", u):
+            continue
+        files = re.findall(r"`([^` ]*LICENSE[^` ]*)`", u)
+        if not files:
+            print("%s: no licence file named in: %s" % (readme, u[:90])); bad += 1
+        for f in files:
+            if not os.path.isfile(os.path.join(base, f)):
+                print("%s: %s missing" % (readme, f)); bad += 1
+sys.exit(1 if bad else 0)
+PYEOF
+expect_exit 0 "each real-data excerpt names a licence file that exists" "$PY" "$T/lic.py"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_vectors.sh: $fails failure(s)"
     exit 1
