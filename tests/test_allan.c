@@ -1307,7 +1307,11 @@ static void test_fit_recovers_model(void **state)
 }
 
 /* Simulated white + AR(1): the fit of the streaming table lands close to the
- * simulated parameters (statistical tolerance). */
+ * simulated parameters (statistical tolerance). Spread of the fit's relative
+ * errors over 30 seeds (1..29 and 42): white sd 0.0027 (max 0.0065),
+ * gm_sigma sd 0.042 (max 0.091), gm_tau sd 0.17 (max 0.47), rms_log10 at
+ * most 0.043; seed 42: +0.12 %, -6.3 %, -6.6 %. The simulator's own
+ * statistics are checked tightly by test_sim_statistics. */
 static void test_fit_simulated(void **state)
 {
     hx_noise_model_t truth = { 0.01, 0.004, 20.0, 0.0, 0.0 };
