@@ -41,6 +41,14 @@ cmp -s vectors/welch/welch_input_synth.txt "$T/x/vectors/welch/welch_input_synth
 expect_exit 1 "an edited input with regenerated expectations fails" sh -c "cd '$T/x' && PYTHON='$PY' sh scripts/check_vectors.sh"
 expect_out "welch_input_synth.txt differs from its source" "the edited input named"
 
+# without the shared data the OpenShoe excerpt cannot be compared: a note,
+# and a failure where the data are required (FNAV_REQUIRE_DATA=1, as in CI)
+mkdir -p "$T/nodata/x/vectors"
+cp -R vectors/welch "$T/nodata/x/vectors/"
+expect_exit 0 "no shared data: passes" "$PY" "$T/nodata/x/vectors/welch/gen_welch.py" --check
+expect_out "not compared with its source" "no shared data: said"
+expect_exit 1 "no shared data with FNAV_REQUIRE_DATA=1: fails" env FNAV_REQUIRE_DATA=1 "$PY" "$T/nodata/x/vectors/welch/gen_welch.py" --check
+
 # every copied piece of real data names its licence file, and the file is there
 # (vectors/README.md: the rows naming a licence; vectors/nav/README.md)
 cat >"$T/lic.py" <<'PYEOF'
