@@ -168,7 +168,17 @@ def compare(old, new):
     return None
 
 
-OS8_SRC = os.path.join(HERE, "..", "..", "..", "shared", "data", "openshoe_c_820hz", "OpenShoeDataSet.txt")
+def data_dir():
+    """The shared data, where the tests look for it (tests/support/fnav_testdata.c,
+    gen_double_reference.py): $FNAV_DATA_DIR, ../shared/data, /work/shared/data."""
+    root = os.path.join(HERE, "..", "..")
+    for d in (os.environ.get("FNAV_DATA_DIR", ""), os.path.join(root, "..", "shared", "data"), "/work/shared/data"):
+        if d and os.path.isfile(os.path.join(d, "MANIFEST.md")):
+            return os.path.abspath(d)
+    return "(shared data not found)"
+
+
+OS8_SRC = os.path.join(data_dir(), "openshoe_c_820hz", "OpenShoeDataSet.txt")
 
 
 def os820_text():
