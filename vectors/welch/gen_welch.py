@@ -22,8 +22,12 @@ same scaling, one-sided), seg the last segment that fits (start
 whole input (the samples pushed so far). Same line format as
 welch_expected.csv, without band lines.
 
---check regenerates and compares with the committed files (relative 1e-12).
---write-os820 re-extracts the real-data excerpt (needs ../shared/data).
+--check regenerates and compares with the committed files (relative 1e-12),
+and the two inputs with their sources (exact): the synthetic series with its
+generator, the OpenShoe excerpt with the shared data (when found; required
+under FNAV_REQUIRE_DATA=1).
+--write-os820 re-extracts the real-data excerpt (needs the shared data:
+$FNAV_DATA_DIR, ../shared/data or /work/shared/data).
 """
 import os
 import sys
