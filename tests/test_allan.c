@@ -1523,8 +1523,10 @@ static void test_noise_id_edges(void **state)
     assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 200u, &alpha, &how), 0);
     assert_int_equal(alpha, 2);
     assert_int_equal(how, HX_NOISE_ID_B1_RN);
+    alpha = 99;
     assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1u, &alpha, &how), 0);
     assert_int_equal(how, HX_NOISE_ID_ACF);
+    assert_int_equal(alpha, 2); /* the lag-1 ACF method names white phase too */
     assert_string_equal(hx_noise_id_name(HX_NOISE_ID_B1_RN), "b1+rn");
 }
 
