@@ -17,5 +17,11 @@ for g in vectors/*/gen_*.py; do
         status=1
     fi
 done
-[ "$found" -eq 1 ] || echo "vectors-check: no generators"
+[ "$found" -eq 1 ] || { echo "vectors-check: no generators (run from the repository root)"; status=1; }
+if [ "$status" -ne 0 ]; then
+    echo "vectors-check: a committed vector no longer matches its generator. If a vector file was" \
+        "edited by hand, restore it (git checkout -- vectors/); if the reference computation or the code" \
+        "it describes changed on purpose, rerun the generator without --check ($PY <script>) and commit" \
+        "the new vector with the reason in the commit message."
+fi
 exit $status

@@ -358,7 +358,7 @@ static size_t phasedat_phase(double *x, size_t max)
  * Stable32 printed limits (the octave runs), the limits from hx_dev_edf()
  * with Stable32's own alpha, so that the EDF is checked apart from the
  * noise identification. */
-static void check_dev_table(const char *rel, hx_dev_t k)
+static void check_dev_table(const char *rel, hx_dev_t k, int octave)
 {
     static s32_row_t rows[200];
     static double x[1100];
@@ -381,8 +381,9 @@ static void check_dev_table(const char *rel, hx_dev_t k)
             nlim++;
         }
     }
-    /* the octave files carry limits on every row, the all-tau files none */
-    assert_true(nlim == 0u || nlim == n);
+    /* the octave files carry limits on every row, the all-tau files none
+     * (an octave table read without its limits would skip every CI check) */
+    assert_int_equal(nlim, octave ? n : 0u);
 }
 
 static void test_phasedat_other_deviations(void **state)
@@ -399,9 +400,9 @@ static void test_phasedat_other_deviations(void **state)
     (void)state;
     for (i = 0; i < sizeof t / sizeof t[0]; i++) {
         snprintf(rel, sizeof rel, "allan_reference/phasedat/phase_dat_%s.txt", t[i].name);
-        check_dev_table(rel, t[i].k);
+        check_dev_table(rel, t[i].k, 0);
         snprintf(rel, sizeof rel, "allan_reference/phasedat/phase_dat_%s_octave.txt", t[i].name);
-        check_dev_table(rel, t[i].k);
+        check_dev_table(rel, t[i].k, 1);
     }
     s32_print_stat();
 }
@@ -1306,7 +1307,11 @@ static void test_fit_recovers_model(void **state)
 }
 
 /* Simulated white + AR(1): the fit of the streaming table lands close to the
- * simulated parameters (statistical tolerance). */
+ * simulated parameters (statistical tolerance). Spread of the fit's relative
+ * errors over 30 seeds (1..29 and 42): white sd 0.0027 (max 0.0065),
+ * gm_sigma sd 0.042 (max 0.091), gm_tau sd 0.17 (max 0.47), rms_log10 at
+ * most 0.043; seed 42: +0.12 %, -6.3 %, -6.6 %. The simulator's own
+ * statistics are checked tightly by test_sim_statistics. */
 static void test_fit_simulated(void **state)
 {
     hx_noise_model_t truth = { 0.01, 0.004, 20.0, 0.0, 0.0 };
@@ -1518,8 +1523,10 @@ static void test_noise_id_edges(void **state)
     assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 200u, &alpha, &how), 0);
     assert_int_equal(alpha, 2);
     assert_int_equal(how, HX_NOISE_ID_B1_RN);
+    alpha = 99;
     assert_int_equal(hx_allan_noise_id_acf(x, 4001u, 1u, &alpha, &how), 0);
     assert_int_equal(how, HX_NOISE_ID_ACF);
+    assert_int_equal(alpha, 2); /* the lag-1 ACF method names white phase too */
     assert_string_equal(hx_noise_id_name(HX_NOISE_ID_B1_RN), "b1+rn");
 }
 

@@ -22,8 +22,12 @@ same scaling, one-sided), seg the last segment that fits (start
 whole input (the samples pushed so far). Same line format as
 welch_expected.csv, without band lines.
 
---check regenerates and compares with the committed files (relative 1e-12).
---write-os820 re-extracts the real-data excerpt (needs ../shared/data).
+--check regenerates and compares with the committed files (relative 1e-12),
+and the two inputs with their sources (exact): the synthetic series with its
+generator, the OpenShoe excerpt with the shared data (when found; required
+under FNAV_REQUIRE_DATA=1).
+--write-os820 re-extracts the real-data excerpt (needs the shared data:
+$FNAV_DATA_DIR, ../shared/data or /work/shared/data).
 """
 import os
 import sys
@@ -168,22 +172,54 @@ def compare(old, new):
     return None
 
 
+def data_dir():
+    """The shared data, where the tests look for it (tests/support/fnav_testdata.c,
+    gen_double_reference.py): $FNAV_DATA_DIR, ../shared/data, /work/shared/data."""
+    root = os.path.join(HERE, "..", "..")
+    for d in (os.environ.get("FNAV_DATA_DIR", ""), os.path.join(root, "..", "shared", "data"), "/work/shared/data"):
+        if d and os.path.isfile(os.path.join(d, "MANIFEST.md")):
+            return os.path.abspath(d)
+    return "(shared data not found)"
+
+
+OS8_SRC = os.path.join(data_dir(), "openshoe_c_820hz", "OpenShoeDataSet.txt")
+
+
+def os820_text():
+    rows = open(OS8_SRC).read().splitlines()[10000:18192]
+    return ("# OpenShoe 820 Hz walk (CC BY 4.0, data OpenShoe ISC): f_z [m/s^2], rows 10001-18192\n"
+            + "".join(r.split(",")[2].strip() + "\n" for r in rows))
+
+
+def synth_text():
+    return ("# synthetic: 9.81 + 0.7 sin(0.0377 k) + 0.2 sin(1.3 k + 0.4) + (u - 0.5), u from a 64-bit LCG\n"
+            + "".join("%.17g\n" % v for v in synth()))
+
+
 def main():
     if "--write-os820" in sys.argv:
-        src = os.path.join(HERE, "..", "..", "..", "shared", "data", "openshoe_c_820hz", "OpenShoeDataSet.txt")
-        rows = open(src).read().splitlines()[10000:18192]
         with open(OS8, "w") as f:
-            f.write("# OpenShoe 820 Hz walk (CC BY 4.0, data OpenShoe ISC): f_z [m/s^2], rows 10001-18192\n")
-            for r in rows:
-                f.write(r.split(",")[2].strip() + "\n")
+            f.write(os820_text())
     if "--write-synth" in sys.argv or not os.path.exists(SYN):
         with open(SYN, "w") as f:
-            f.write("# synthetic: 9.81 + 0.7 sin(0.0377 k) + 0.2 sin(1.3 k + 0.4) + (u - 0.5), u from a 64-bit LCG\n")
-            for v in synth():
-                f.write("%.17g\n" % v)
+            f.write(synth_text())
     lines, last = generate()
     if "--check" in sys.argv:
         status = 0
+        # the inputs too: an input edited and the expected values regenerated
+        # from it would otherwise pass
+        inputs = [(SYN, synth_text())]
+        if os.path.exists(OS8_SRC):
+            inputs.append((OS8, os820_text()))
+        else:
+            print("gen_welch: %s not found; the OpenShoe excerpt is not compared with its source" % OS8_SRC)
+            if os.environ.get("FNAV_REQUIRE_DATA") == "1":  # as gen_double_reference.py: CI has the data
+                status = 1
+        for path, text in inputs:
+            if not os.path.exists(path) or open(path).read() != text:
+                print("gen_welch: %s differs from its source (regenerate: gen_welch.py --write-synth --write-os820)"
+                      % os.path.basename(path))
+                status = 1
         for path, new in ((OUT, lines), (OUT_LAST, last)):
             err = compare(open(path).readlines(), new) if os.path.exists(path) else "missing"
             if err:
