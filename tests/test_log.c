@@ -756,6 +756,14 @@ static void write_gx2_header(FILE *f)
                "Freq. [Hz]:      m_x [G]:      m_y [G]:      m_z [G]:\r\n");
 }
 
+/* One GX2 record: sensor timer, packet number, host stamps (filtered and
+ * unfiltered host, predicted), the logger's rate estimate. */
+static void write_gx2_record(FILE *f, unsigned long counter, long nr, double host, double pred, const char *freq)
+{
+    fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %lu    0x15fd       %ld %.6f %.6f %.6f  %s   -0.12299968   -0.01066045   -0.46057537 \r\n",
+            counter, nr, host, host, pred, freq);
+}
+
 /* GX2 time across lost packets: Nr jumps by k, the sensor timer by k
  * periods, and the interval must be k periods, also when the timer restarts
  * across the loss (bridged with k periods, not one). A written file in the
@@ -784,9 +792,8 @@ static void test_gx2_lost_packets(void **state)
         if ((nr >= 11 && nr <= 13) || nr == 22) {
             continue; /* lost */
         }
-        fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %ld    0x15fd       %ld %.6f %.6f %.6f  250.000001   -0.12299968   -0.01066045   -0.46057537 \r\n",
-                counter, nr, 1274434048.5 + 0.004 * (double)nr, 1274434048.5 + 0.004 * (double)nr,
-                1274434048.504 + 0.004 * (double)nr);
+        write_gx2_record(f, (unsigned long)counter, nr, 1274434048.5 + 0.004 * (double)nr,
+                         1274434048.504 + 0.004 * (double)nr, "250.000001");
     }
     assert_int_equal(fclose(f), 0);
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
@@ -823,8 +830,7 @@ static void test_gx2_first_restart(void **state)
         } else if (nr > 2) {
             counter += period;
         }
-        fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %ld    0x15fd       %ld %.6f %.6f %.6f  249.800000   -0.12299968   -0.01066045   -0.46057537 \r\n",
-                counter, nr, host, host, host + 0.004);
+        write_gx2_record(f, (unsigned long)counter, nr, host, host + 0.004, "249.800000");
     }
     assert_int_equal(fclose(f), 0);
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
@@ -855,9 +861,8 @@ static void test_gx2_repeated_packet(void **state)
     for (nr = 1; nr <= 10; nr++) {
         int rep;
         for (rep = 0; rep < (nr == 5 ? 2 : 1); rep++) {
-            fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %ld    0x15fd       %ld %.6f %.6f %.6f  250.000001   -0.12299968   -0.01066045   -0.46057537 \r\n",
-                    counter, nr, 1274434048.5 + 0.004 * (double)nr, 1274434048.5 + 0.004 * (double)nr,
-                    1274434048.504 + 0.004 * (double)nr);
+            write_gx2_record(f, (unsigned long)counter, nr, 1274434048.5 + 0.004 * (double)nr,
+                             1274434048.504 + 0.004 * (double)nr, "250.000001");
         }
         counter += period;
     }
@@ -894,8 +899,7 @@ static void test_gx2_long(void **state)
     write_gx2_header(f);
     for (nr = 1; nr <= 9600; nr++) {
         const double host = 1274434048.5 + 0.05 * (double)nr;
-        fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %lu    0x15fd       %ld %.6f %.6f %.6f  20.000000   -0.12299968   -0.01066045   -0.46057537 \r\n",
-                counter, nr, host, host, host + 0.05);
+        write_gx2_record(f, counter, nr, host, host + 0.05, "20.000000");
         counter = (counter + (unsigned long)period) & 0xFFFFFFFFUL;
     }
     assert_int_equal(fclose(f), 0);

@@ -173,6 +173,21 @@ static void o_finish(void *ctx)
     (void)ctx;
 }
 
+/* The runs' common simulation: the motion at 50 Hz, point samples, seed 5,
+ * 1 s bins. */
+static void mc_config_50hz(hx_mc_config_t *cfg, hx_motion_t *m, int runs)
+{
+    memset(cfg, 0, sizeof *cfg);
+    cfg->sim.motion = m;
+    cfg->sim.err = fnav_imuerr_config_default;
+    cfg->sim.err.rate_hz = (fnav_real_t)50.0;
+    cfg->sim.err.oversample = 1u;
+    cfg->sim.err.seed = 5u;
+    cfg->sim.decim = HX_DECIM_FIR;
+    cfg->runs = runs;
+    cfg->bin_s = 1.0;
+}
+
 static hx_mc_nav_t make_nav(const char *name, oracle_t *o)
 {
     hx_mc_nav_t n;
@@ -208,18 +223,10 @@ static void run_oracles_on(const char *script, double dist_m, double align_s, do
     good.align_s = over.align_s = align_s;
     navs[0] = make_nav("consistent", &good);
     navs[1] = make_nav("overconfident", &over);
-    cfg.sim.motion = m;
-    cfg.sim.err = fnav_imuerr_config_default;
-    cfg.sim.err.rate_hz = (fnav_real_t)50.0;
-    cfg.sim.err.oversample = 1u;
-    cfg.sim.err.seed = 5u;
-    cfg.sim.duration_s = 0.0;
-    cfg.sim.decim = HX_DECIM_FIR;
+    mc_config_50hz(&cfg, m, 50);
     if (effect != NULL) {
         assert_int_equal(hx_effect_parse(&cfg.sim.err, effect, err, sizeof err), 0);
     }
-    cfg.runs = 50;
-    cfg.bin_s = 1.0;
     assert_int_equal(hx_mc_run(&cfg, navs, 2, &res, NULL, NULL, err, sizeof err), 0);
     assert_int_equal(res.nvar, 2);
     assert_int_equal(res.runs, 50);
@@ -356,15 +363,7 @@ static void test_progress_within_run(void **state)
     o.scale = 1.0;
     navs[0] = make_nav("a", &o);
     navs[1] = make_nav("b", &o);
-    memset(&cfg, 0, sizeof cfg);
-    cfg.sim.motion = m;
-    cfg.sim.err = fnav_imuerr_config_default;
-    cfg.sim.err.rate_hz = (fnav_real_t)50.0;
-    cfg.sim.err.oversample = 1u;
-    cfg.sim.err.seed = 5u;
-    cfg.sim.decim = HX_DECIM_FIR;
-    cfg.runs = 1;
-    cfg.bin_s = 1.0;
+    mc_config_50hz(&cfg, m, 1);
     assert_int_equal(hx_mc_run(&cfg, navs, 2, &res, rec_progress, &pr, err, sizeof err), 0);
     assert_true(pr.order_ok);
     {
@@ -399,15 +398,7 @@ static void test_nonfinite_covariance(void **state)
     o.scale = 1.0;
     o.nan_seq = 300u; /* 6 s at 50 Hz: the last estimate of the bin ending at 6 s */
     nav = make_nav("nan", &o);
-    memset(&cfg, 0, sizeof cfg);
-    cfg.sim.motion = m;
-    cfg.sim.err = fnav_imuerr_config_default;
-    cfg.sim.err.rate_hz = (fnav_real_t)50.0;
-    cfg.sim.err.oversample = 1u;
-    cfg.sim.err.seed = 5u;
-    cfg.sim.decim = HX_DECIM_FIR;
-    cfg.runs = 3;
-    cfg.bin_s = 1.0;
+    mc_config_50hz(&cfg, m, 3);
     assert_int_equal(hx_mc_run(&cfg, &nav, 1, &res, NULL, NULL, err, sizeof err), 0);
     assert_int_equal(res.var[0].nonfinite, 3);
     for (b = 0; b < res.var[0].nbins; b++) {
