@@ -147,6 +147,13 @@ for want in "| $(comma "$FN") |" "| $(comma $((6 * FA))) |" "| $(comma $((3 * FW
     fi
 done
 
+# tests/support/stack_usage.py (make bench's stack figure): a root it cannot
+# find is an error, exit 1 (it printed "not found" and exited 0; the vectors review)
+mkdir -p "$T/noci"
+"$PY" tests/support/stack_usage.py "$T/noci" fnav_nav_step >"$T/out" 2>"$T/err"; rc=$?
+if [ "$rc" -eq 1 ]; then pass "stack_usage.py: an unknown root fails (exit 1)"; else fail "stack_usage.py unknown root: exit $rc"; fi
+expect_err "fnav_nav_step: not found" "stack_usage.py: the unknown root named"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_firmware_tools.sh: $fails failure(s)"
     exit 1

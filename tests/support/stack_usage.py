@@ -58,15 +58,20 @@ def main():
             ext = int(a.split("=", 1)[1])
     d, roots = args[0], args[1:]
     frames, edges, names = parse(d)
+    missing = 0
     for r in roots:
         if r not in frames:
-            print("%s: not found" % r)
+            # an error, not a line among the figures (it exited 0)
+            sys.stderr.write("%s: not found in %s/*.ci (build them with make firmware)\n" % (r, d))
+            missing += 1
             continue
         total, chain = worst(r, frames, edges, ext, {}, frozenset())
         print("%s: worst-case stack %d bytes (external functions counted as %d bytes each)" % (r, total, ext))
         for n in chain:
             f = frames.get(n)
             print("    %-28s %s" % (names.get(n, n), "%d" % f if f is not None else "extern (%d)" % ext))
+    if missing:
+        sys.exit(1)
 
 
 if __name__ == "__main__":
