@@ -756,6 +756,17 @@ static void write_gx2_header(FILE *f)
                "Freq. [Hz]:      m_x [G]:      m_y [G]:      m_z [G]:\r\n");
 }
 
+/* A new GX2 file (its name ends as the data set's do) with the header written. */
+static FILE *open_gx2(char *p, size_t size)
+{
+    FILE *f;
+    tmp_path(p, size, "_data_inert.txt");
+    f = fopen(p, "w");
+    assert_non_null(f);
+    write_gx2_header(f);
+    return f;
+}
+
 /* One GX2 record: sensor timer, packet number, host stamps (filtered and
  * unfiltered host, predicted), the logger's rate estimate. */
 static void write_gx2_record(FILE *f, unsigned long counter, long nr, double host, double pred, const char *freq)
@@ -778,10 +789,7 @@ static void test_gx2_lost_packets(void **state)
     long nr, counter = 130516848;
     size_t k;
     (void)state;
-    tmp_path(p, sizeof p, "_data_inert.txt");
-    f = fopen(p, "w");
-    assert_non_null(f);
-    write_gx2_header(f);
+    f = open_gx2(p, sizeof p);
     for (nr = 1; nr <= 25; nr++) {
         if (nr > 1) {
             counter += period;
@@ -819,10 +827,7 @@ static void test_gx2_first_restart(void **state)
     FILE *f;
     long nr, counter = 130831728;
     (void)state;
-    tmp_path(p, sizeof p, "_data_inert.txt");
-    f = fopen(p, "w");
-    assert_non_null(f);
-    write_gx2_header(f);
+    f = open_gx2(p, sizeof p);
     for (nr = 1; nr <= 10; nr++) {
         const double host = 1274434048.5 + (nr == 1 ? 0.0 : 0.0315 + 0.004 * (double)(nr - 2));
         if (nr == 2) {
@@ -854,10 +859,7 @@ static void test_gx2_repeated_packet(void **state)
     long nr, counter = 130516848;
     size_t k;
     (void)state;
-    tmp_path(p, sizeof p, "_data_inert.txt");
-    f = fopen(p, "w");
-    assert_non_null(f);
-    write_gx2_header(f);
+    f = open_gx2(p, sizeof p);
     for (nr = 1; nr <= 10; nr++) {
         int rep;
         for (rep = 0; rep < (nr == 5 ? 2 : 1); rep++) {
@@ -893,10 +895,7 @@ static void test_gx2_long(void **state)
     long nr;
     unsigned long counter = 1000;
     (void)state;
-    tmp_path(p, sizeof p, "_data_inert.txt");
-    f = fopen(p, "w");
-    assert_non_null(f);
-    write_gx2_header(f);
+    f = open_gx2(p, sizeof p);
     for (nr = 1; nr <= 9600; nr++) {
         const double host = 1274434048.5 + 0.05 * (double)nr;
         write_gx2_record(f, counter, nr, host, host + 0.05, "20.000000");
