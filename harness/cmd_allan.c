@@ -488,10 +488,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
              * millisecond reads 2 and 3 ms) may differ by their resolution
              * as well: every interval of such a uniform log was counted (as
              * psd's, 2026-11-29; the gcd so far is never below the final one) */
-            const double dt = 1e-9 * (double)(s.t_ns - t_prev);
-            if (fabs(dt - 1.0 / stamp_rate) > 0.1 / stamp_rate + 1e-9 * (double)res_ns) {
-                irregular++;
-            }
+            irregular += hx_interval_irregular(s.t_ns - t_prev, stamp_rate, res_ns);
         }
         t_prev = s.t_ns;
         motion_push(R, &s);

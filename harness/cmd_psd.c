@@ -633,10 +633,7 @@ int hx_cmd_psd(int argc, char **argv)
             }
         }
         for (i = 1; i < log.n; i++) {
-            const double dt = 1e-9 * (double)(log.t_ns[i] - log.t_ns[i - 1]);
-            if (fabs(dt - 1.0 / rate) > 0.1 / rate + 1e-9 * (double)res_ns) {
-                irregular++;
-            }
+            irregular += hx_interval_irregular(log.t_ns[i] - log.t_ns[i - 1], rate, res_ns);
         }
         if (irregular > 0) {
             hx_warn(CMD, "%ld of %zu intervals differ from 1/%.4g s by more than 10 %%: Welch assumes uniform "

@@ -1498,6 +1498,12 @@ int64_t hx_gcd_i64(int64_t a, int64_t b)
     return a;
 }
 
+int hx_interval_irregular(int64_t dt_ns, double rate_hz, int64_t res_ns)
+{
+    const double dt = 1e-9 * (double)dt_ns;
+    return fabs(dt - 1.0 / rate_hz) > 0.1 / rate_hz + 1e-9 * (double)res_ns;
+}
+
 double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)
 {
     enum { K = 16 };
