@@ -309,6 +309,13 @@ static void pivot(double th, double rx, double rz, double d0[2], double d1[2], d
     d2[1] = rx * s - rz * c;
 }
 
+double hx_gait_max_impact_s(const hx_gait_t *g)
+{
+    const double T = 120.0 / g->cadence_spm;
+    /* as stride() computes the swing, to the last bit */
+    return 0.3 * (T - g->heeloff_frac * T - g->slap_frac * T - g->still_frac * T);
+}
+
 /* One stride of the sensor foot from the current still state: horizontal
  * displacement (dx, dy) in n, height change dz (n, down positive), heading
  * change dpsi; ps scales the pitch angles (turning on the spot). */
@@ -332,7 +339,7 @@ static int stride(hx_motion_t *m, const hx_gait_t *g, double dx, double dy, doub
     if (!(T_sw > 0.05)) {
         return fail(m, "gait fractions leave no time to swing", NULL);
     }
-    T_imp = g->impact_s < 0.3 * T_sw ? g->impact_s : 0.3 * T_sw;
+    T_imp = g->impact_s < hx_gait_max_impact_s(g) ? g->impact_s : hx_gait_max_impact_s(g);
     tb = t0 + T_ho;
     ts = tb + T_sw;
     td = ts - T_imp;

@@ -64,6 +64,10 @@ typedef struct {
  *  stairs 0.17 m x 0.28 m, elevator 1.5 m/s, g = 9.80665 m/s^2. */
 hx_motion_config_t hx_motion_config_default(void);
 
+/** The longest landing a gait's stride takes, s: 30 % of its swing time;
+ *  a longer impact_s is capped there. */
+double hx_gait_max_impact_s(const hx_gait_t *g);
+
 /** Phase of the sensor foot. */
 typedef enum {
     HX_PHASE_STILL = 0,  /**< foot flat and at rest on its support */

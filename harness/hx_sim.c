@@ -585,12 +585,12 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         gs[4] = &m->turn;
         caps[0] = '\0';
         for (i = 0; i < 5; i++) {
-            /* hx_motion's stride() lands in at most 30 % of the swing: a
+            /* a stride lands in at most 30 % of the swing (hx_gait_max_impact_s): a
              * longer --impact-ms was shortened without a word (a review) */
-            double sw = (1.0 - gs[i]->still_frac - gs[i]->heeloff_frac - gs[i]->slap_frac) * 120.0 / gs[i]->cadence_spm;
-            if (v * 1e-3 > 0.3 * sw && len < sizeof caps) {
+            const double cap_s = hx_gait_max_impact_s(gs[i]);
+            if (v * 1e-3 > cap_s && len < sizeof caps) {
                 len += (size_t)snprintf(caps + len, sizeof caps - len, "%s%s %.0f ms", len ? ", " : "", gn[i],
-                                        0.3 * sw * 1e3);
+                                        cap_s * 1e3);
             }
         }
         if (len > 0) {
