@@ -339,7 +339,8 @@ static int stride(hx_motion_t *m, const hx_gait_t *g, double dx, double dy, doub
     if (!(T_sw > 0.05)) {
         return fail(m, "gait fractions leave no time to swing", NULL);
     }
-    T_imp = g->impact_s < hx_gait_max_impact_s(g) ? g->impact_s : hx_gait_max_impact_s(g);
+    T_imp = hx_gait_max_impact_s(g);
+    T_imp = g->impact_s < T_imp ? g->impact_s : T_imp;
     tb = t0 + T_ho;
     ts = tb + T_sw;
     td = ts - T_imp;
