@@ -83,6 +83,36 @@ sys.exit(1 if bad else 0)
 PYEOF
 expect_exit 0 "each real-data excerpt names a licence file that exists" "$PY" "$T/lic.py"
 
+# vectors/nav/make_golden.sh in a scratch tree (a stub Makefile, both
+# harnesses the one under test): without the shared data it stops, exit 1,
+# and leaves no golden input behind (it used to write an empty one, which
+# later runs kept); with the data an empty input is made again, and the
+# inputs and float outputs it makes are the committed ones
+if [ -n "${HARNESS:-}" ] && [ -x "$HARNESS" ]; then
+    mkdir -p "$T/g/vectors/nav" "$T/g/bin" "$T/g/build/double"
+    cp vectors/nav/make_golden.sh "$T/g/vectors/nav/"
+    printf 'bin/harness:\nbuild/double/harness:\n' >"$T/g/Makefile"
+    ln -s "$HARNESS" "$T/g/bin/harness"
+    ln -s "$HARNESS" "$T/g/build/double/harness"
+    expect_exit 1 "make_golden.sh without the shared data fails" \
+        env FNAV_DATA_DIR="$T/nowhere" sh "$T/g/vectors/nav/make_golden.sh"
+    expect_err "set FNAV_DATA_DIR" "what to do said"
+    if [ -e "$T/g/vectors/nav/golden/gx2_walk2.csv" ]; then fail "an empty golden input was left behind"; else pass "no golden input left behind"; fi
+    if [ -n "$SRC" ]; then
+        : >"$T/g/vectors/nav/golden/gx2_walk2.csv"
+        expect_exit 0 "make_golden.sh with the shared data" \
+            env FNAV_DATA_DIR="$(dirname "$(dirname "$SRC")")" sh "$T/g/vectors/nav/make_golden.sh"
+        for f in gx2_walk2.csv xio_short.csv square2.csv gx2_walk2_traj_float.csv xio_short_traj_float.csv square2_traj_float.csv; do
+            if cmp -s "vectors/nav/golden/$f" "$T/g/vectors/nav/golden/$f"; then pass "make_golden.sh remakes $f as committed"
+            else fail "make_golden.sh made a different $f"; fi
+        done
+    else
+        echo "skip: shared data not found (make_golden.sh with the data)"
+    fi
+else
+    echo "skip: no HARNESS (make_golden.sh)"
+fi
+
 if [ "$fails" -ne 0 ]; then
     echo "test_vectors.sh: $fails failure(s)"
     exit 1
