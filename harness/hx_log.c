@@ -1024,7 +1024,9 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
             }
         }
     }
-    if (r->col_temp >= 0) {
+    if (r->col_temp >= 0 && f[r->col_temp][0] != '\0') {
+        /* an empty field is a sample without a temperature (convert writes
+         * one for a .bin record whose temperature is not valid) */
         double tc;
         int prc = parse_num(f[r->col_temp], &tc);
         if (prc != 0) {
@@ -1833,7 +1835,11 @@ fnav_status_t hx_writer_write(hx_writer_t *w, const fnav_sample_t *s)
         put_f32(w->f, (float)s->gyro_rps[1]);
         put_f32(w->f, (float)s->gyro_rps[2]);
         if (w->has_temp) {
-            put_f32(w->f, (s->flags & FNAV_SAMPLE_HAS_TEMP) ? (float)s->temp_c : 0.0f);
+            if (s->flags & FNAV_SAMPLE_HAS_TEMP) {
+                put_f32(w->f, (float)s->temp_c);
+            } else {
+                fputc(',', w->f); /* no temperature: an empty field, not 0 degC */
+            }
         }
         if (fputc('\n', w->f) == EOF) {
             w->failed = 1;

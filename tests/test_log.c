@@ -402,6 +402,68 @@ static void test_csv_flexible(void **state)
     unlink(p);
 }
 
+/* A sample without a temperature in a log that has them (a .bin record
+ * whose temperature is not valid) is written to CSV as an empty field and
+ * read back without one; it was written as 0 degC, a temperature it never
+ * had. CSV -> .bin -> CSV keeps it. */
+static void test_csv_missing_temp(void **state)
+{
+    char pc[256], pb[256], pc2[256], err[320];
+    unsigned char t1[1024], t2[1024];
+    size_t n1, n2;
+    readall_t r;
+    hx_meta_t m;
+    hx_writer_t *w;
+    int i;
+    (void)state;
+    tmp_path(pc, sizeof pc, ".csv");
+    tmp_path(pb, sizeof pb, ".bin");
+    tmp_path(pc2, sizeof pc2, ".csv");
+    write_text(pc, "t,ax,ay,az,gx,gy,gz,temp\n"
+                   "0.000000000,1,2,3,4,5,6,20.5\n"
+                   "0.010000000,1,2,3,4,5,6,\n"
+                   "0.020000000,1,2,3,4,5,6,21\n");
+    assert_int_equal(read_all(pc, HX_FMT_CSV, 0.0, &r, &m), 0);
+    assert_int_equal(r.end, FNAV_END);
+    assert_int_equal(r.n, 3);
+    assert_true(m.has_temp);
+    assert_true(r.s[0].flags & FNAV_SAMPLE_HAS_TEMP);
+    assert_false(r.s[1].flags & FNAV_SAMPLE_HAS_TEMP);
+    assert_true(r.s[2].flags & FNAV_SAMPLE_HAS_TEMP);
+    assert_true((float)r.s[2].temp_c == 21.0f);
+    /* to .bin: the record's temperature flag is clear */
+    w = hx_writer_open(pb, HX_FMT_AUTO, &m, 0, err, sizeof err);
+    assert_non_null(w);
+    for (i = 0; i < r.n; i++) {
+        assert_int_equal(hx_writer_write(w, &r.s[i]), FNAV_OK);
+    }
+    assert_int_equal(hx_writer_close(w, err, sizeof err), FNAV_OK);
+    assert_int_equal(read_all(pb, HX_FMT_AUTO, 0.0, &r, &m), 0);
+    assert_int_equal(r.n, 3);
+    assert_false(r.s[1].flags & FNAV_SAMPLE_HAS_TEMP);
+    assert_true(r.s[0].flags & FNAV_SAMPLE_HAS_TEMP);
+    /* and back to CSV: the same text, the missing temperature an empty field */
+    w = hx_writer_open(pc2, HX_FMT_AUTO, &m, 0, err, sizeof err);
+    assert_non_null(w);
+    for (i = 0; i < r.n; i++) {
+        assert_int_equal(hx_writer_write(w, &r.s[i]), FNAV_OK);
+    }
+    assert_int_equal(hx_writer_close(w, err, sizeof err), FNAV_OK);
+    n1 = read_file(pc, t1, sizeof t1);
+    n2 = read_file(pc2, t2, sizeof t2);
+    assert_int_equal(n1, n2);
+    assert_memory_equal(t1, t2, n1);
+    /* a blank temperature among spaces is missing too; text still is an error */
+    write_text(pc, "t,ax,ay,az,gx,gy,gz,temp\n0,1,2,3,4,5,6, \n0.01,1,2,3,4,5,6,warm\n");
+    assert_int_equal(read_all(pc, HX_FMT_CSV, 0.0, &r, NULL), 0);
+    assert_int_equal(r.n, 1);
+    assert_false(r.s[0].flags & FNAV_SAMPLE_HAS_TEMP);
+    assert_int_equal(r.end, FNAV_E_FORMAT);
+    unlink(pc);
+    unlink(pb);
+    unlink(pc2);
+}
+
 static void test_csv_gzip(void **state)
 {
     char p[256];
@@ -1283,6 +1345,7 @@ int main(void)
         cmocka_unit_test(test_bin_nan_record),
         cmocka_unit_test(test_csv_malformed),
         cmocka_unit_test(test_csv_flexible),
+        cmocka_unit_test(test_csv_missing_temp),
         cmocka_unit_test(test_csv_gzip),
         cmocka_unit_test(test_cut_last_line),
         cmocka_unit_test(test_counter_ranges),
