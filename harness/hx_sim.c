@@ -658,6 +658,10 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             return -1;
         }
         s->has_profile = 1;
+    } else if (s->bias_eq6) {
+        /* eq6 rereads a profile's bias sd; the ideal sensor has none (the
+         * option was dropped without a word; a review) */
+        hx_warn(cmd, "--bias-sigma eq6 rereads a profile's bias sd; --profile none has no bias model: ignored");
     }
     for (i = 0; i < hx_arg_count(a, "--effect"); i++) {
         if (hx_effect_parse(&s->err, hx_arg_at(a, "--effect", i), err, sizeof err) != 0) {

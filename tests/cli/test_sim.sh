@@ -97,6 +97,12 @@ expect_exit 0 "long impact" "$H" sim --out "$T/x.csv" --duration 1 --impact-ms 1
 expect_err "longer than 30 % of a swing, the longest landing: walk 137 ms, run 152 ms" "the cap is named"
 expect_exit 0 "calibrated impact" "$H" sim --out "$T/x.csv" --duration 1 --impact-ms 7
 if grep -q "longer than 30 %" "$T/err"; then fail "a 7 ms impact warned"; else pass "no warning at 7 ms"; fi
+# --bias-sigma eq6 rereads a profile's bias sd: with --profile none (no bias
+# model) it is said to be ignored, not dropped without a word
+expect_exit 0 "eq6 on the ideal sensor" "$H" sim --out "$T/x.csv" --duration 1 --profile none --bias-sigma eq6
+expect_err "no bias model: ignored" "eq6 without a profile said"
+expect_exit 0 "eq6 on a profile" "$H" sim --out "$T/x.csv" --duration 1 --profile mtx --bias-sigma eq6
+if grep -q "ignored" "$T/err"; then fail "eq6 with a profile warned"; else pass "eq6 with a profile: no warning"; fi
 # a gait figure derived from --speed keeps its option's range (50 m strides
 # were walked; a cadence of 1200 /min was blamed on the gait fractions)
 expect_exit 2 "derived stride out of range" "$H" sim --out "$T/x.csv" --duration 5 --speed 10 --cadence 20
