@@ -2492,7 +2492,7 @@ void sg_nav_truth_errors(const sg_nav_t *nv, int id, uint32_t mask, const double
 
 /* First-update innovations of a simulated walk through the default filter. */
 static int sim_firsts(const char *script, const fnav_imuerr_config_t *cfg, const fnav_nav_config_t *nc, firsts_t *f,
-                      double peak[SG_NCH])
+                      double peak[SG_NCH], char *why, size_t why_size)
 {
     hx_log_t L;
     walk_t w;
@@ -2501,6 +2501,7 @@ static int sim_firsts(const char *script, const fnav_imuerr_config_t *cfg, const
     int c;
     long k;
     if (sgv_simulate(script, cfg, 0, &L, err, sizeof err) != 0) {
+        snprintf(why, why_size, "simulating the walk: %s", err);
         return -1;
     }
     w.n = (long)L.n;
@@ -2517,6 +2518,7 @@ static int sim_firsts(const char *script, const fnav_imuerr_config_t *cfg, const
         }
     }
     if (nav_run(&w, nc, &run) != 0) {
+        snprintf(why, why_size, "the filter could not run on the simulated walk");
         hx_log_free(&L);
         return -1;
     }
@@ -2527,7 +2529,7 @@ static int sim_firsts(const char *script, const fnav_imuerr_config_t *cfg, const
 }
 
 int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t *cs, fnav_imuerr_config_t *cfg,
-                     char *script, size_t script_size)
+                     char *script, size_t script_size, char *why, size_t why_size)
 {
     const sgv_effect_t *E;
     int n, c, i;
@@ -2543,18 +2545,25 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
      * settling state */
     nc.bias_model = FNAV_BIAS_OFF;
     nc.settle = 0;
+    snprintf(why, why_size, "unknown reason");
     if (fnav_profile_builtin(&nc.profile, FNAV_PROFILE_NAVCHIP) != FNAV_OK) {
+        snprintf(why, why_size, "the built-in NavChip profile is not available");
         return -1;
     }
     cs->profile = (int)((double)fnav_rng_uniform(rng) * 3.0) % 3;
-    if (fnav_profile_builtin(&prof, (fnav_profile_id_t)cs->profile) != FNAV_OK ||
-        hx_motion_scenario("loop", &mc, o->walk_duration_s, script, script_size) != 0) {
+    if (fnav_profile_builtin(&prof, (fnav_profile_id_t)cs->profile) != FNAV_OK) {
+        snprintf(why, why_size, "built-in profile %d is not available", cs->profile);
+        return -1;
+    }
+    if (hx_motion_scenario("loop", &mc, o->walk_duration_s, script, script_size) != 0) {
+        snprintf(why, why_size, "no loop walk of %g s (--walk-duration)", o->walk_duration_s);
         return -1;
     }
     *cfg = fnav_imuerr_config_default;
     cfg->rate_hz = (fnav_real_t)o->walk_rate_hz;
     cfg->seed = fnav_rng_u32(rng);
     if (fnav_imuerr_config_from_profile(cfg, &prof) != FNAV_OK) {
+        snprintf(why, why_size, "profile %d is not valid for the error model at %g Hz", cs->profile, o->walk_rate_hz);
         return -1;
     }
     cs->cls = SGV_MOTION;
@@ -2568,7 +2577,11 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
     f0 = (firsts_t *)malloc(sizeof *f0);
     f1 = (firsts_t *)malloc(sizeof *f1);
     f2 = (firsts_t *)malloc(sizeof *f2);
-    if (f0 == NULL || f1 == NULL || f2 == NULL || sim_firsts(script, &clean, &nc, f0, peak) != 0) {
+    if (f0 == NULL || f1 == NULL || f2 == NULL) {
+        snprintf(why, why_size, "out of memory");
+        goto done;
+    }
+    if (sim_firsts(script, &clean, &nc, f0, peak, why, why_size) != 0) {
         goto done;
     }
     if (E[type].id == FNAV_EFFECT_SATURATION) {
@@ -2580,6 +2593,8 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
         cs->mult = 1.0 / frac;
         if (fnav_imuerr_param_set(cfg, FNAV_EFFECT_SATURATION, 0, 1u << c, (fnav_real_t)cs->value[c]) != FNAV_OK ||
             fnav_imuerr_enable(cfg, FNAV_EFFECT_SATURATION, 1u << c) != FNAV_OK) {
+            snprintf(why, why_size, "a full scale of %g on channel %d is outside the saturation effect's range",
+                     cs->value[c], c);
             goto done;
         }
         rc = 0;
@@ -2610,8 +2625,12 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
         cd.ch[0] = ch;
         cd.k[0] = k;
         cd.val[0] = delta;
-        if (apply_cand(&pert, &cd) != 0 || sim_firsts(script, &pert, &nc, f2, NULL) != 0 ||
-            sim_firsts(script, cfg, &nc, f1, NULL) != 0) {
+        if (apply_cand(&pert, &cd) != 0) {
+            snprintf(why, why_size, "the probe magnitude %g is outside the %s effect's range", delta, E[type].name);
+            goto done;
+        }
+        if (sim_firsts(script, &pert, &nc, f2, NULL, why, why_size) != 0 ||
+            sim_firsts(script, cfg, &nc, f1, NULL, why, why_size) != 0) {
             goto done;
         }
         for (i = 0; i < f0->n; i++) {
@@ -2633,6 +2652,12 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
             nmatch++;
         }
         if (nmatch < 5 || !(sjj > 0.0)) {
+            if (nmatch < 5) {
+                snprintf(why, why_size, "%d zero-velocity updates of the simulated walk could be matched, 5 needed to "
+                                        "size the effect (a longer or faster walk: --walk-duration, --walk-rate)", nmatch);
+            } else {
+                snprintf(why, why_size, "the %s effect does not change this walk's innovations", E[type].name);
+            }
             goto done;
         }
         disp /= 3.0 * nmatch;
@@ -2660,6 +2685,7 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
             }
         }
         if (apply_cand(cfg, &cd) != 0) {
+            snprintf(why, why_size, "the drawn magnitude %g is outside the %s effect's range", v, E[type].name);
             goto done;
         }
         rc = 0;

@@ -665,8 +665,8 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
         cs->walk = (type == -100) || (type >= 0 && k_eff[type].cls == SGV_MOTION);
         cs->truth = type >= 0 ? type : -1;
         if (cs->walk) {
-            if (sg_nav_draw_case(o, type >= 0 ? type : -1, &rng, cs, &cfg, script, sizeof script) != 0) {
-                snprintf(err, err_size, "case %d: cannot draw a walk case", i);
+            if (sg_nav_draw_case(o, type >= 0 ? type : -1, &rng, cs, &cfg, script, sizeof script, e2, sizeof e2) != 0) {
+                snprintf(err, err_size, "case %d: cannot draw a walk case: %s", i, e2);
                 cs->truth = SGV_NOT_RUN;
                 return -1;
             }

@@ -98,12 +98,37 @@ static void test_match_swing(void **state)
     /* the plain nearest-in-time rule would have paired 4.4 and 4.5 with 4.515 */
 }
 
+/* A walk case that cannot be drawn says why: the validation stopped with
+ * "case N: cannot draw a walk case" and nothing more. A walk at 1 Hz has
+ * too few zero-velocity updates to size an effect on. */
+static void test_draw_case_reason(void **state)
+{
+    sgv_opts_t o = sgv_opts_default();
+    int n, t;
+    const sgv_effect_t *E = sgv_effects(&n);
+    fnav_rng_t rng;
+    sgv_case_t cs;
+    fnav_imuerr_config_t cfg;
+    char script[1024], why[256] = "";
+    (void)state;
+    for (t = 0; t < n && E[t].cls != SGV_MOTION; t++) {
+    }
+    assert_true(t < n);
+    o.walk_duration_s = 20.0;
+    o.walk_rate_hz = 1.0;
+    fnav_rng_seed(&rng, 1u, 7u);
+    memset(&cs, 0, sizeof cs);
+    assert_int_equal(sg_nav_draw_case(&o, t, &rng, &cs, &cfg, script, sizeof script, why, sizeof why), -1);
+    assert_non_null(strstr(why, "zero-velocity updates of the simulated walk could be matched, 5 needed"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_lin_to_sensor_analytic),
         cmocka_unit_test(test_lin_to_sensor_inverse),
         cmocka_unit_test(test_match_swing),
+        cmocka_unit_test(test_draw_case_reason),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
