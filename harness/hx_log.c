@@ -1637,7 +1637,9 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
         return FNAV_OK;
     }
     r->finished = 1;
-    if (st == FNAV_END && r->meta.format == HX_FMT_GX2 && r->gx2_bridged > 0) {
+    if (r->meta.format == HX_FMT_GX2 && r->gx2_bridged > 0) {
+        /* also when the log stops at an error: the samples before it were
+         * bridged all the same (the warning was lost then; a review) */
         add_warn(r, "%s: sensor timer restarted %ld times; bridged with the last measured period", r->path,
                  r->gx2_bridged);
     }

@@ -877,6 +877,33 @@ static void test_gx2_lost_packets(void **state)
     remove(p);
 }
 
+/* GX2: the timer-restart warning is kept when the log then stops at a bad
+ * line (the samples before it were bridged all the same); it was added only
+ * at a clean end, so a log cut by an error lost it. */
+static void test_gx2_restart_then_error(void **state)
+{
+    const long period = 78720;
+    hx_log_t log;
+    char err[320], p[256];
+    FILE *f;
+    long nr, counter = 130516848;
+    (void)state;
+    f = open_gx2(p, sizeof p);
+    for (nr = 1; nr <= 10; nr++) {
+        counter = nr == 6 ? 1000 : counter + period; /* restarted at 6 */
+        write_gx2_record(f, (unsigned long)counter, nr, 1274434048.5 + 0.004 * (double)nr,
+                         1274434048.504 + 0.004 * (double)nr, "250.000001");
+    }
+    fputs("   0xcb   garbage\r\n", f);
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1); /* samples, then an error */
+    assert_int_equal(log.n, 10);
+    assert_true(log.status != FNAV_END);
+    assert_non_null(strstr(log.warnings, "sensor timer restarted 1 times"));
+    hx_log_free(&log);
+    remove(p);
+}
+
 /* GX2: a timer restart on the file's first interval, before any period was
  * measured, is bridged with the logger's own rate (Freq. [Hz], here 249.8)
  * instead of the host stamps, which jitter to 25 ms (here 31.5 ms, the
@@ -1353,6 +1380,7 @@ int main(void)
         cmocka_unit_test(test_importers),
         cmocka_unit_test(test_importer_units),
         cmocka_unit_test(test_gx2_lost_packets),
+        cmocka_unit_test(test_gx2_restart_then_error),
         cmocka_unit_test(test_gx2_first_restart),
         cmocka_unit_test(test_gx2_long),
         cmocka_unit_test(test_gx2_repeated_packet),
