@@ -1752,7 +1752,7 @@ int hx_cmd_allan(int argc, char **argv)
         hx_warn(CMD,
                 "%s: %ld of %ld one-second windows move (the rate spreads by more than %g rad/s RMS or |f| by more "
                 "than %g m/s^2; the first at %.0f s): the Allan variance includes that motion; cut the log to its "
-                "still part",
+                "still part (harness convert LOG OUT --start S --end S)",
                 path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2,
                 R->win_first_moving_s);
     }

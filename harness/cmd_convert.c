@@ -1,5 +1,7 @@
 /* harness convert: any readable format -> .bin or CSV, sample by sample
  * (with --rate: the whole log resampled as replay --rate does). */
+#include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -12,8 +14,47 @@ static const hx_opt_t k_opts[] = {
     { "--to", "FORMAT", "output format: bin or csv (default: from OUT's extension, .bin in any case -> bin)", 0 },
     { "--rate", "HZ", "resample to HZ (1 to 100000, below the input's rate) first, as replay --rate (anti-alias "
                       "low-pass; docs/harness.md)", 0 },
+    { "--start", "S", "keep only the samples from S seconds after the input's first (default 0)", 0 },
+    { "--end", "S", "keep only the samples up to S seconds after the input's first (default: to the end)", 0 },
     { NULL, NULL, NULL, 0 }
 };
+
+/* --start / --end: a window in seconds after the input's first sample, as
+ * the commands report times (allan's "cut the log to its still part" had
+ * no tool to cut with; a review, 2026-11-29). */
+typedef struct {
+    int64_t start_ns, end_ns; /* end_ns < 0: to the end */
+    int64_t t0_ns;
+    int have_t0;
+    long kept;
+} window_t;
+
+static int in_window(window_t *wd, int64_t t_ns)
+{
+    int64_t dt;
+    if (!wd->have_t0) {
+        wd->t0_ns = t_ns;
+        wd->have_t0 = 1;
+    }
+    dt = t_ns - wd->t0_ns;
+    if (dt < wd->start_ns || (wd->end_ns >= 0 && dt > wd->end_ns)) {
+        return 0;
+    }
+    wd->kept++;
+    return 1;
+}
+
+/* The window has no sample: said, exit 1 (the output is valid and empty). */
+static int window_empty(const window_t *wd, const hx_args_t *a)
+{
+    if (wd->kept > 0 || !wd->have_t0) {
+        return 0;
+    }
+    hx_error("convert", "%s: no sample between %s and %s s after the first", a->pos[0],
+             hx_arg(a, "--start") != NULL ? hx_arg(a, "--start") : "0",
+             hx_arg(a, "--end") != NULL ? hx_arg(a, "--end") : "the end");
+    return 1;
+}
 
 static const hx_spec_t k_spec = {
     "convert", "IN OUT [options]",
@@ -28,7 +69,7 @@ static const hx_spec_t k_spec = {
 /* convert --rate: the whole log loaded, resampled by the replay's resampler
  * (hx_nav_resample) and written; a partial input is resampled and written,
  * exit 1. */
-static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate)
+static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, window_t *wd)
 {
     hx_log_t raw, res;
     hx_writer_t *w;
@@ -53,6 +94,10 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate)
     res.meta.has_temp = 0; /* the resampler carries no temperature */
     res.meta.has_seq = 0;  /* nor the sensor's counter: its seq is a running index (the .bin said "the
                               sensor's own counter", and info counted no drops; a review, 2026-11-29) */
+    if (raw.n > 0) {
+        (void)in_window(wd, raw.t_ns[0]); /* the window counts from the input's first sample */
+        wd->kept = 0;
+    }
     hx_log_free(&raw);
     w = hx_writer_open(a->pos[1], to, &res.meta, 0, err, sizeof err);
     if (w == NULL) {
@@ -62,6 +107,9 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate)
     }
     for (k = 0; k < (long)res.n; k++) {
         hx_log_sample(&res, (size_t)k, &s);
+        if (!in_window(wd, s.t_ns)) {
+            continue;
+        }
         if (hx_writer_write(w, &s) != FNAV_OK) {
             exit_code = HX_EXIT_IO; /* hx_writer_close below names the error, with its reason */
             break;
@@ -75,6 +123,9 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate)
     if (dups > 0) {
         hx_warn("convert", "%s: %ld duplicated time stamp%s dropped before resampling", a->pos[0], dups,
                 dups == 1 ? "" : "s");
+    }
+    if (exit_code == HX_EXIT_OK && window_empty(wd, a)) {
+        exit_code = HX_EXIT_DATA;
     }
     return exit_code;
 }
@@ -92,10 +143,22 @@ int hx_cmd_convert(int argc, char **argv)
     int rc = hx_args_parse(&k_spec, argc, argv, &a);
     int exit_code = HX_EXIT_OK;
     hx_meta_t meta;
-    double rate = 0.0;
+    double rate = 0.0, start_s = 0.0, end_s = -1.0;
+    window_t wd;
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    /* 1e9 s (32 years) keeps the window in int64 nanoseconds */
+    if (hx_arg_double(&a, "--start", 0.0, 1e9, &start_s) != 0 || hx_arg_double(&a, "--end", 0.0, 1e9, &end_s) != 0) {
+        return HX_EXIT_USAGE;
+    }
+    if (hx_arg(&a, "--end") != NULL && end_s < start_s) {
+        hx_error("convert", "--end %g is before --start %g", end_s, start_s);
+        return HX_EXIT_USAGE;
+    }
+    memset(&wd, 0, sizeof wd);
+    wd.start_ns = (int64_t)llround(start_s * 1e9);
+    wd.end_ns = hx_arg(&a, "--end") != NULL ? (int64_t)llround(end_s * 1e9) : -1;
     /* --rate: the range of replay --rate (hx_nav_opts_from_args); far below
      * 1 Hz the resampler's filter half-length, 20 x input rate / rate, no
      * longer fits an int (--rate 1e-9 wrote one NaN row and exit 0) */
@@ -117,7 +180,7 @@ int hx_cmd_convert(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     if (hx_arg(&a, "--rate") != NULL) {
-        return convert_resampled(&a, to, rate);
+        return convert_resampled(&a, to, rate, &wd);
     }
     r = hx_open_input("convert", &a, a.pos[0]);
     if (r == NULL) {
@@ -131,6 +194,13 @@ int hx_cmd_convert(int argc, char **argv)
         return HX_EXIT_IO;
     }
     while ((st = hx_reader_next(r, &s)) == FNAV_OK) {
+        if (!in_window(&wd, s.t_ns)) {
+            if (wd.end_ns >= 0 && s.t_ns - wd.t0_ns > wd.end_ns) {
+                st = FNAV_END; /* past the window: the rest is not read */
+                break;
+            }
+            continue;
+        }
         if (hx_writer_write(w, &s) != FNAV_OK) {
             exit_code = HX_EXIT_IO; /* hx_writer_close below names the error, with its reason */
             break;
@@ -148,5 +218,8 @@ int hx_cmd_convert(int argc, char **argv)
     }
     hx_print_warnings("convert", hx_reader_take_warnings(r)); /* a cut-off last line is found at the end */
     hx_reader_close(r);
+    if (exit_code == HX_EXIT_OK && window_empty(&wd, &a)) {
+        exit_code = HX_EXIT_DATA;
+    }
     return exit_code;
 }

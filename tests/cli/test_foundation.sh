@@ -90,6 +90,26 @@ expect_exit 0 "convert bin->csv (2)" "$H" convert "$T/b.bin" "$T/c.csv"
 expect_exit 0 "convert csv->BIN" "$H" convert "$T/a.csv" "$T/B.BIN"
 if cmp -s "$T/b.bin" "$T/B.BIN"; then pass "OUT.BIN is written as .bin"; else fail "OUT.BIN is not the .bin"; fi
 if cmp -s "$T/a.csv" "$T/c.csv"; then pass "csv -> bin -> csv identical"; else fail "round trip changed values"; fi
+# --start / --end keep the samples from S to E seconds after the input's
+# first (allan's "cut the log to its still part" had no tool to cut with);
+# the rows are those awk selects from the whole conversion
+expect_exit 0 "convert --start --end" "$H" convert vectors/walk.bin "$T/win.csv" --start 2.0013 --end 5.0007
+awk -F, 'NR == 1 { print; next } NR == 2 { t0 = $1 } { d = $1 - t0; if (d >= 2.0013 && d <= 5.0007) print }' \
+    "$T/a.csv" >"$T/win_awk.csv"
+if [ "$(wc -l <"$T/win.csv")" -gt 100 ] && cmp -s "$T/win.csv" "$T/win_awk.csv"; then pass "the window's rows are awk's"
+else fail "convert --start/--end rows differ from awk's ($(wc -l <"$T/win.csv") vs $(wc -l <"$T/win_awk.csv"))"; fi
+expect_exit 0 "convert --rate with a window" "$H" convert vectors/walk.bin "$T/winr.csv" --rate 100 --start 2.0013 --end 5.0007
+expect_exit 0 "convert --rate whole" "$H" convert vectors/walk.bin "$T/allr.csv" --rate 100
+T0=$(sed -n 2p "$T/a.csv" | cut -d, -f1)
+awk -F, -v t0="$T0" 'NR == 1 { print; next } { d = $1 - t0; if (d >= 2.0013 && d <= 5.0007) print }' \
+    "$T/allr.csv" >"$T/winr_awk.csv"
+if [ "$(wc -l <"$T/winr.csv")" -gt 100 ] && cmp -s "$T/winr.csv" "$T/winr_awk.csv"; then pass "the resampled window counts from the input's first sample"
+else fail "convert --rate --start/--end rows differ from awk's"; fi
+expect_exit 2 "--end before --start" "$H" convert vectors/walk.bin "$T/w.csv" --start 3 --end 2
+expect_err "--end 2 is before --start 3" "the order is named"
+expect_exit 2 "negative --start" "$H" convert vectors/walk.bin "$T/w.csv" --start -1
+expect_exit 1 "a window past the end" "$H" convert vectors/walk.bin "$T/w.csv" --start 100000
+expect_err "no sample between 100000 and the end s after the first" "the empty window is said"
 expect_exit 2 "convert onto its own input" "$H" convert "$T/a.csv" "$T/a.csv"
 if cmp -s "$T/a.csv" "$T/c.csv"; then pass "convert left its input intact"; else fail "convert overwrote its input"; fi
 { head -200 "$T/a.csv"; head -c 600 /dev/zero; echo; sed -n 201,400p "$T/a.csv"; } > "$T/nul.csv"
