@@ -360,6 +360,12 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
         note_add(note, note_size, buf);
     }
     hx_nav_summarize(t, s);
+    if (s->before_align_s > HX_NAV_LATE_ALIGN_S) {
+        /* replay's note: a log that starts moving; its start is not in the
+         * figures (said in the row since 2026-11-29) */
+        snprintf(buf, sizeof buf, "%.1f s of motion before the alignment: not navigated", s->before_align_s);
+        note_add(note, note_size, buf);
+    }
     if (s->rate_off_fraction > 0.0) {
         /* replay's note: the detector keeps the first rate (docs/navigation.md, "Timing") */
         snprintf(buf, sizeof buf, "sample rate changes to %.1f Hz from %.1f s (%.0f %% of the log off the detector's "
