@@ -360,6 +360,12 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
         note_add(note, note_size, buf);
     }
     hx_nav_summarize(t, s);
+    if (s->before_align_s > HX_NAV_LATE_ALIGN_S) {
+        /* replay's note: a log that starts moving; its start is not in the
+         * figures (said in the row since 2026-11-29) */
+        snprintf(buf, sizeof buf, "%.1f s of motion before the alignment: not navigated", s->before_align_s);
+        note_add(note, note_size, buf);
+    }
     if (s->rate_off_fraction > 0.0) {
         /* replay's note: the detector keeps the first rate (docs/navigation.md, "Timing") */
         snprintf(buf, sizeof buf, "sample rate changes to %.1f Hz from %.1f s (%.0f %% of the log off the detector's "
@@ -579,6 +585,7 @@ typedef struct {
     int skipped;  /* strides whose sample lies outside the trajectory */
     int no_truth; /* strides without a truth position (motion capture lost) */
     double truth_end_gap_s; /* log time after the truth's last stride (0 when beyond the log) */
+    int pre_align; /* truth strides (the reference included) before the alignment with a step between */
 } stride_res_t;
 
 /* A truth that ends this long before the log leaves the walk's end unscored:
@@ -592,6 +599,26 @@ typedef struct {
  * is the reference, its error zero by construction, and the statistics
  * count the strides after it. The path runs up to the last stride with an
  * estimate. */
+/* Whether the frame at sample k was navigated: aligned, or before the
+ * alignment but in the still period it ended (no frame out of stance between
+ * k and the first aligned frame, so the foot stood where the navigation
+ * starts). A truth stride before that, with a step between (a log that
+ * starts walking: the filter aligns in a later stance), has no estimate: its
+ * frames hold position 0, and it is scored against the aligned start. */
+static int navigated(const hx_traj_t *t, size_t k)
+{
+    size_t j;
+    for (j = k; j < t->n; j++) {
+        if (t->f[j].flags & FNAV_FRAME_ALIGNED) {
+            return 1;
+        }
+        if (!(t->f[j].flags & FNAV_FRAME_STANCE)) {
+            return 0;
+        }
+    }
+    return 0;
+}
+
 static int stride_errors(const hx_traj_t *t, const gcp_t *g, stride_res_t *r)
 {
     double e[GCP_MAX], se2 = 0.0, path = 0.0;
@@ -599,9 +626,16 @@ static int stride_errors(const hx_traj_t *t, const gcp_t *g, stride_res_t *r)
     int i, n = 0, prev = 0;
     long i0 = g->idx[0];
     r->path = 0.0;
-    r->skipped = r->no_truth = 0;
+    r->skipped = r->no_truth = r->pre_align = 0;
     if (i0 < 0 || (size_t)i0 >= t->n || !isfinite(g->x[0]) || !isfinite(g->y[0])) {
         return -1;
+    }
+    for (i = 0; i < g->n; i++) {
+        /* the truth strides (with a sample in the log) the filter did not
+         * navigate, for the row's note; scored as before */
+        if (g->idx[i] >= 0 && (size_t)g->idx[i] < t->n && !navigated(t, (size_t)g->idx[i])) {
+            r->pre_align++;
+        }
     }
     x0 = (double)t->f[i0].pos_m[0];
     y0 = (double)t->f[i0].pos_m[1];
@@ -673,6 +707,12 @@ static void stride_notes(char *note, size_t size, const gcp_t *g, const stride_r
     }
     if (g->cut) {
         note_add(note, size, "truth's last line cut off (no newline): not read");
+    }
+    if (r->pre_align > 0) {
+        snprintf(buf, sizeof buf,
+                 "%d truth stride%s before the alignment, a step between (log starts walking): not navigated",
+                 r->pre_align, r->pre_align == 1 ? "" : "s");
+        note_add(note, size, buf);
     }
     if (r->truth_end_gap_s > TRUTH_END_GAP_NOTE_S) {
         snprintf(buf, sizeof buf, "truth ends %.0f s before the log: its end not scored", r->truth_end_gap_s);

@@ -771,6 +771,13 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         }
         copy_str(m->sensor, sizeof m->sensor, "ADIS16405");
         copy_str(m->axes, sizeof m->axes, "sensor axes; z down at rest");
+        if (!(rate_hz > 0.0)) {
+            /* no time stamps: a log of another rate would be read at 100 Hz
+             * without a word (the OpenShoe 820 Hz reader warned, this one
+             * did not; the unseen review, 2026-11-29) */
+            add_warn(r, "%s: no time stamps; assuming the ADIS16405 data set rate of 100 Hz (give --input-rate)",
+                     r->path);
+        }
         break;
     }
     case HX_FMT_SQUARE2: {

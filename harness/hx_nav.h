@@ -173,8 +173,13 @@ typedef struct {
 #define HX_NAV_LONG_STAND_S 10.0
 
 /** A log that starts moving: more motion than this before the alignment is
- *  noted in the summary (that part of the walk is not navigated). */
-#define HX_NAV_LATE_ALIGN_S 1.0
+ *  noted in the summary and in eval's row (that part of the walk is not
+ *  navigated). A confirmed swing's worth (min_swing_s's default): a log that
+ *  starts in a swing aligns on the next stance, after less than a second of
+ *  motion (0.36 s for openshoe_gx2 walk 2 cut 0.5 s into its first swing),
+ *  which the 1 s of this limit until 2026-11-29 let pass without a word
+ *  (the unseen review); every shared log has none. */
+#define HX_NAV_LATE_ALIGN_S 0.25
 
 /** True when a log of more than 10 s shows almost no motion: over 90 % of
  *  its frames in stance and fewer than three strides (a still log, or

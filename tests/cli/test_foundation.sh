@@ -137,6 +137,16 @@ else
     echo "SKIP shared data sets (not found; set FNAV_DATA_DIR)"
 fi
 
+# --- an importer without time stamps says which rate it assumed (docs/robustness.md):
+# an ADIS16405 log (index / 100 Hz) of another rate would otherwise be read at
+# 100 Hz without a word (the unseen review: the OpenShoe 820 Hz reader warned, the ADIS one did not)
+awk 'BEGIN { print "gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g"; for (k = 0; k < 400; k++) print "0.05,-0.3,0.7,-0.0067,0,-1.0157" }' >"$T/adis.csv"
+expect_exit 0 "info on an ADIS16405 log" "$H" info "$T/adis.csv"
+expect_err "no time stamps; assuming the ADIS16405 data set rate of 100 Hz (give --input-rate)" "the ADIS rate is said to be assumed"
+expect_exit 0 "info on an ADIS16405 log with --input-rate" "$H" info "$T/adis.csv" --input-rate 200
+if grep -q "assuming" "$T/err"; then fail "--input-rate given: no assumption to warn about"; else pass "--input-rate given: no warning"; fi
+expect_out "200.000 Hz (nominal)" "--input-rate sets the ADIS rate"
+
 # --- a foreign recording cut off mid-line (docs/log-format.md: its last line
 # is ignored with a warning): every reader warns, the streaming ones (convert,
 # allan) included, which only meet the cut at the end of the file. The first

@@ -572,6 +572,20 @@ if [ -n "$D" ]; then
     expect_out "the detector saw [0-9.]* s of motion before the alignment" "the summary notes the walking before the alignment"
     if /usr/bin/env python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if j['before_alignment_s'] > 1 and j['aligned_at_s'] >= j['before_alignment_s'] else 1)" "$T/ip_mid.json"; then
         pass "before_alignment_s in the JSON"; else fail "before_alignment_s: $(grep -o '"before_alignment_s":[^,]*' "$T/ip_mid.json")"; fi
+    # a log that starts in a swing (openshoe_gx2 walk 2 from 0.5 s after its
+    # first swing began, 2.92 s): the filter aligns on the next stance, after
+    # 0.36 s of motion, which the 1 s limit of the note let pass: the closure
+    # went from 0.65 % to 2.49 % without a word (the unseen review). The
+    # summary says so, and eval's row
+    "$H" convert "$D/openshoe_gx2/Measurement_100521_2_data_inert.txt" "$T/gx2_full.csv" 2>/dev/null
+    awk -F, 'NR == 1 || $1 >= 3.42' "$T/gx2_full.csv" > "$T/gx2_swing.csv"
+    expect_exit 0 "a log that starts in a swing" "$H" replay "$T/gx2_swing.csv"
+    expect_out "note              the detector saw 0.[0-9] s of motion before the alignment" "a log that starts in a swing: noted"
+    mkdir -p "$T/swing/openshoe_gx2"
+    cp "$T/gx2_swing.csv" "$T/swing/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+    expect_exit 0 "eval: a walk that starts in a swing" "$H" eval --no-experiments --no-plots --data "$T/swing" --out "$T/swing.md"
+    if grep -q "^| Measurement_2000_1 | [0-9].* | 0.[0-9] s of motion before the alignment: not navigated |" "$T/swing.md"; then
+        pass "eval: a walk that starts in a swing is noted in its row"; else fail "eval swing start: $(grep '^| Measurement' "$T/swing.md")"; fi
     expect_exit 0 "the whole trial" "$H" replay "$T/ip_full.csv" --json "$T/ip_full.json"
     if /usr/bin/env python3 -c "import json,sys; sys.exit(0 if json.load(open(sys.argv[1]))['before_alignment_s'] == 0 else 1)" "$T/ip_full.json"; then
         pass "no motion before the alignment of a log that starts still"; else
