@@ -474,8 +474,22 @@ static fnav_real_t sd_max(int i)
  * variance above its maximum is clamped, its row and column scaled by the
  * same factor (the correlations are kept). Counted in health.cov_guard.
  * Nothing changes on a covariance within its limits. Off-diagonal entries
- * need no check: prediction and update reject non-finite results. */
-static void guard_cov(fnav_ukf_t *f)
+ * need no check: prediction and update reject non-finite results.
+ * After an update (r2 > 0, the measurement variance per axis, f->K its
+ * gain) a variance that rounding took to zero or below takes, instead of
+ * the maximum, its lower bound in exact arithmetic, (K R K^T)_ii =
+ * r2 |K_i|^2 (the Joseph form's (I - K H) P (I - K H)^T is positive
+ * semi-definite). In float32 a prior variance more than 1 / FLT_EPSILON
+ * times the measurement's (a velocity variance above 840 (m/s)^2 with the
+ * 0.01 m/s ZUPT, after minutes without a stance) makes S = P + r2 round to
+ * P, the gain 1 and the expanded Joseph form P - P - P + P = 0. With the
+ * maximum, every later update did the same (S = 1e4 + 1e-4 rounds to 1e4):
+ * the velocity variance stayed at 1e4 (m/s)^2 for the rest of the walk
+ * (the filter review, 2026-11-29; test_ukf test_zupt_after_long_swing).
+ * r2 = 0: the prediction (f->K holds its bias maps; guard_cov(), the
+ * branch folded away); inlined in the update, so that the prediction's
+ * code and cost stay as they were. */
+static inline FNAV_ALWAYS_INLINE void guard_cov_r2(fnav_ukf_t *f, fnav_real_t r2)
 {
     int n = f->n_act, i, j;
     for (i = 0; i < n; i++) {
@@ -484,11 +498,16 @@ static void guard_cov(fnav_ukf_t *f)
             continue; /* the normal case: one comparison pair per state */
         }
         if (!(v > FNAV_R(0.0))) { /* also NaN */
+            fnav_real_t lo = FNAV_R(0.0);
+            if (r2 > FNAV_R(0.0)) {
+                const fnav_real_t *k = f->K[i];
+                lo = r2 * (k[0] * k[0] + k[1] * k[1] + k[2] * k[2]);
+            }
             for (j = 0; j < n; j++) {
                 f->P[i][j] = FNAV_R(0.0);
                 f->P[j][i] = FNAV_R(0.0);
             }
-            f->P[i][i] = mx * mx;
+            f->P[i][i] = (lo > FNAV_R(0.0) && lo <= mx * mx) ? lo : mx * mx;
             f->Pxs[i] = FNAV_R(0.0);
         } else {
             fnav_real_t k = mx / fnav_sqrt(v);
@@ -501,6 +520,11 @@ static void guard_cov(fnav_ukf_t *f)
         }
         f->health.cov_guard++;
     }
+}
+
+static void guard_cov(fnav_ukf_t *f)
+{
+    guard_cov_r2(f, FNAV_R(0.0));
 }
 
 /* S (upper) = k sum_{j < nl} u_a,j u_b,j over the rows a, b < na (assigned:
@@ -1254,7 +1278,7 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
         settle_update(f, hp, (const fnav_real_t(*)[3])si, (const fnav_real_t(*)[3])s, y);
     }
     mirror_upper(f->P, Pn, n);
-    guard_cov(f);
+    guard_cov_r2(f, r2);
     for (i = 0; i < N; i++) {
         dxi[i] = f->pos[i] >= 0 ? dx[f->pos[i]] : FNAV_R(0.0);
     }

@@ -653,6 +653,63 @@ static void test_diverged(void **state)
     assert_memory_equal(&f.pos_m, &g.pos_m, sizeof f.pos_m);
 }
 
+/* A ZUPT after a long stretch without one: a velocity variance far above
+ * the ZUPT's, within the guard's limit (sd 100 m/s). The update's exact
+ * posterior variance is P r2 / (P + r2), about r2 (Joseph form:
+ * (I - K H) P (I - K H)^T + K R K^T >= K R K^T). In float32, once P / r2
+ * exceeds 1 / FLT_EPSILON (P above 840 (m/s)^2 with the 0.01 m/s ZUPT),
+ * P + r2 rounds to P, K to 1 and the expanded Joseph form to 0 or below:
+ * the guard then set the variance to its maximum, 1e4 (m/s)^2, and every
+ * later ZUPT did the same again (S = 1e4 + 1e-4 = 1e4 in float), so the
+ * velocity variance stayed at 1e4 for the rest of the walk (found by the
+ * filter review with a program of its own: the default navigator, 400 s
+ * of the turning foot of test_nav_robust's test_long_swing, then 20 s
+ * still, reported 1e4 through the 20 s of ZUPTs, the double build 1e-4 at
+ * the first). Without and with the lever and the settling (the
+ * navigator's configuration). */
+static void test_zupt_after_long_swing(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
+    const double r2 = 1.0e-4, pv = 2.5e3;
+    int cfg, step, i;
+    (void)state;
+    for (cfg = 0; cfg < 2; cfg++) {
+        c.lever = cfg;
+        c.settle = cfg;
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+        assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+        assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fz, FNAV_R(0.005)), FNAV_OK);
+        for (i = 0; i < 3; i++) {
+            fnav_ukf_set_cov(&f, FNAV_UKF_V + i, FNAV_UKF_V + i, (fnav_real_t)pv);
+        }
+        f.vel_mps = fnav_vec3(FNAV_R(3.0), FNAV_R(-2.0), FNAV_R(1.0));
+        if (cfg) {
+            assert_int_equal(fnav_ukf_settle_start(&f), FNAV_OK);
+        }
+        for (step = 0; step < 5; step++) {
+            if (step > 0) {
+                assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fz, FNAV_R(0.005)), FNAV_OK);
+            }
+            assert_int_equal(fnav_ukf_zupt(&f, fnav_vec3_zero()), FNAV_OK);
+            for (i = 0; i < 3; i++) {
+                double v = (double)fnav_ukf_cov(&f, FNAV_UKF_V + i, FNAV_UKF_V + i);
+                if (!(v > 0.0 && v <= 2.0 * r2 + (cfg && i == 2 ? 1.0e-3 : 0.0))) {
+                    fail_msg("lever %d, ZUPT %d: velocity variance %d is %g after the ZUPT (about %g expected)", cfg,
+                             step + 1, i, v, r2);
+                }
+            }
+        }
+        assert_true(fabs((double)f.vel_mps.v[0]) < 1e-3 && fabs((double)f.vel_mps.v[1]) < 1e-3);
+        {
+            double asym, piv = fnav_test_cov_spd(&f, &asym);
+            assert_true(piv > 0.0 && asym <= 1e-6);
+        }
+    }
+}
+
 /* A covariance that is not positive definite: the step recovers (jitter or
  * reset to the diagonal, counted, FNAV_E_DECOMP on a reset) and leaves a
  * symmetric positive definite covariance. */
@@ -682,7 +739,8 @@ static void test_covariance_guard(void **state)
     assert_true(f.health.cov_guard >= 1);
     FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_V + 1, FNAV_UKF_V + 1), 1.0e4, 0.0, 1e-5);
     assert_int_equal((int)f.health.chol_reset, 0); /* repaired before the factorisation */
-    /* position x far too large, correlated with velocity x: clamped to
+    
+/* position x far too large, correlated with velocity x: clamped to
      * (1e4 m)^2, the correlation coefficient unchanged */
     assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
     pvx = (double)fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_V);
@@ -1602,6 +1660,7 @@ int main(void)
         cmocka_unit_test(test_diverged),
         cmocka_unit_test(test_covariance_guard),
         cmocka_unit_test(test_covariance_recovery),
+        cmocka_unit_test(test_zupt_after_long_swing),
         cmocka_unit_test(test_nees_bias_off),
         cmocka_unit_test(test_nees_ar1),
         cmocka_unit_test(test_nees_settle),

@@ -94,7 +94,12 @@
  * the maximum; a larger one is clamped with its row and column scaled alike
  * (health.cov_guard counts both). Long stretches without any stance (no
  * update for minutes) otherwise let float32 rounding drive variances
- * negative.
+ * negative. An update's posterior variance that rounding takes to zero or
+ * below (float32, a prior variance more than 1 / FLT_EPSILON times the
+ * measurement's: the first ZUPT after minutes of swing) is instead set to
+ * its exact lower bound (K R K^T)_ii, its row and column cleared (counted
+ * in health.cov_guard too): the maximum would be what the next update
+ * rounds to zero again, for ever.
  */
 #ifndef FNAV_UKF_H
 #define FNAV_UKF_H
