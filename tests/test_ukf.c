@@ -653,6 +653,72 @@ static void test_diverged(void **state)
     assert_memory_equal(&f.pos_m, &g.pos_m, sizeof f.pos_m);
 }
 
+/* Standard deviations whose squares leave the range, and an attitude
+ * given at a scale whose squared norm does. An sd of 1e-25 (float32; 1e-170
+ * in double) is finite and positive, but its variance is 0: init and start
+ * accepted it, and the guard then turned that variance into its maximum
+ * (a 1e-25 m initial position sd became 10 km at the first prediction);
+ * one of 1e20 made it infinite. q_nb = (1e20, 0, 0, 1e20), the heading
+ * 90 deg given at a large scale, became the zero quaternion (its squared
+ * norm overflowed: FNAV_OK, and a filter with no attitude). Found by the
+ * filter review. Now: FNAV_E_CONFIG / FNAV_E_ARG for such an sd, the
+ * attitude normalised (scaled first), FNAV_E_ARG for a zero quaternion,
+ * the filter unchanged by a refused start. */
+static void test_squares_out_of_range(void **state)
+{
+    static fnav_ukf_t f, g;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+#if FNAV_USE_DOUBLE
+    const fnav_real_t tiny = 1.0e-170, huge = 1.0e160;
+#else
+    const fnav_real_t tiny = 1.0e-25f, huge = 1.0e20f;
+#endif
+    fnav_real_t *cf[] = { &c.zupt_sigma_mps, &c.zaru_sigma_rps, &c.lever_sd_m, &c.settle_sd_mps,
+                          &c.gyro_bias_sigma_rps[1], &c.accel_bias_sigma_mps2[2] };
+    fnav_real_t *sf[] = { &sd.att_rad[0], &sd.vel_mps, &sd.pos_m, &sd.gyro_bias_rps[2], &sd.accel_bias_mps2[1] };
+    size_t k;
+    int b;
+    (void)state;
+    assert_true(tiny * tiny == FNAV_R(0.0) && !fnav_isfinite(huge * huge));
+    for (k = 0; k < sizeof cf / sizeof cf[0]; k++) {
+        for (b = 0; b < 2; b++) {
+            c = fnav_ukf_config_default;
+            c.lever = 1;
+            c.settle = 1;
+            *cf[k] = b ? huge : tiny;
+            if (fnav_ukf_init(&f, &c) != FNAV_E_CONFIG) {
+                fail_msg("config value %d set to %g: accepted", (int)k, (double)*cf[k]);
+            }
+        }
+    }
+    c = fnav_ukf_config_default;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    g = f;
+    for (k = 0; k < sizeof sf / sizeof sf[0]; k++) {
+        for (b = 0; b < 2; b++) {
+            sd = sd_default();
+            *sf[k] = b ? huge : tiny;
+            if (fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd) != FNAV_E_ARG) {
+                fail_msg("initial sd %d set to %g: accepted", (int)k, (double)*sf[k]);
+            }
+            assert_memory_equal(&f, &g, sizeof f);
+        }
+    }
+    sd = sd_default();
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat(FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0)), fnav_vec3_zero(),
+                                    fnav_vec3_zero(), &sd),
+                     FNAV_E_ARG);
+    assert_memory_equal(&f, &g, sizeof f);
+    for (b = 0; b < 2; b++) {
+        const fnav_real_t s = b ? huge : tiny;
+        assert_int_equal(fnav_ukf_start(&f, fnav_quat(s, FNAV_R(0.0), FNAV_R(0.0), s), fnav_vec3_zero(), fnav_vec3_zero(), &sd),
+                         FNAV_OK);
+        assert_true(fabs((double)f.q_nb.q[0] - sqrt(0.5)) < 1e-6 && fabs((double)f.q_nb.q[3] - sqrt(0.5)) < 1e-6);
+        assert_true(f.q_nb.q[1] == FNAV_R(0.0) && f.q_nb.q[2] == FNAV_R(0.0));
+    }
+}
+
 /* Pitch through +-90 deg (a foot on a ladder, a sensor mounted upright):
  * the filter carries a quaternion and an attitude error in n (fnav_ukf.h),
  * so nothing in it is singular there; only the output's ZYX angles are.
@@ -1745,6 +1811,7 @@ int main(void)
         cmocka_unit_test(test_covariance_recovery),
         cmocka_unit_test(test_zupt_after_long_swing),
         cmocka_unit_test(test_pitch_through_90),
+        cmocka_unit_test(test_squares_out_of_range),
         cmocka_unit_test(test_nees_bias_off),
         cmocka_unit_test(test_nees_ar1),
         cmocka_unit_test(test_nees_settle),

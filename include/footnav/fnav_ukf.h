@@ -224,19 +224,25 @@ typedef struct {
  * fnav_ukf_start()).
  * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG on a bad value
  *         (negative or non-finite noise, non-positive tau/sigma with AR1,
- *         alpha <= 0, n + lambda <= 0, non-positive measurement noise).
+ *         alpha <= 0, n + lambda <= 0, non-positive measurement noise; a
+ *         standard deviation, measurement or bias sigma, lever or settling
+ *         sd, whose square is 0 or not finite: in float32 below about
+ *         1e-19 or above 1.8e19).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg);
 
 /**
  * Start navigating from an aligned state at the origin at rest.
- * @param q_nb     initial attitude
+ * @param q_nb     initial attitude, any non-zero scale (normalised)
  * @param bg_rps   gyro bias from the alignment, rad/s
  * @param ba_mps2  accel bias from the alignment, m/s^2
- * @param sd       initial standard deviations, every one finite and > 0 (the
- *                 bias ones are checked, then unused, with the model off)
- * @return FNAV_OK, FNAV_E_ARG (a NULL pointer or an sd not finite and
- *         positive), FNAV_E_NANINF on non-finite values.
+ * @param sd       initial standard deviations, every one finite and > 0 with
+ *                 a finite positive square (the bias ones are checked, then
+ *                 unused, with the model off)
+ * @return FNAV_OK, FNAV_E_ARG (a NULL pointer, an sd not finite and
+ *         positive or whose square is not, the zero quaternion),
+ *         FNAV_E_NANINF on non-finite values; the filter unchanged on a
+ *         failure.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps,
                                               fnav_vec3_t ba_mps2, const fnav_ukf_init_sd_t *sd);
