@@ -97,7 +97,7 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
         !sd_ok(cfg->gyro_bias_sd_rps) || !sd_ok(cfg->accel_bias_sd_mps2) || !(cfg->max_gap_s > FNAV_R(0.0)) ||
         !fnav_isfinite(cfg->max_gap_s) ||
         !(cfg->diverge_speed_mps > FNAV_R(0.0)) || !fnav_isfinite(cfg->diverge_speed_mps) ||
-        cfg->diverge_undone == 0u || !(cfg->realign_min_s >= FNAV_R(0.0)) || !fnav_isfinite(cfg->realign_min_s) ||
+        cfg->diverge_undone == 0u || (cfg->zaru != 0 && cfg->zaru != 1) || !(cfg->realign_min_s >= FNAV_R(0.0)) || !fnav_isfinite(cfg->realign_min_s) ||
         /* a still period ends at the alignment's max_still_s, so a longer
          * minimum would never renew */
         cfg->realign_min_s > cfg->align.max_still_s || !(cfg->zaru_after_s >= FNAV_R(0.0)) ||

@@ -108,7 +108,7 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
         !finite_pos(cfg->strapdown.gravity_mps2) || (cfg->lever != 0 && cfg->lever != 1) ||
         (cfg->strapdown.sample_type != FNAV_SAMPLE_INSTANT && cfg->strapdown.sample_type != FNAV_SAMPLE_MEAN) ||
         (cfg->lever && (!sd_ok(cfg->lever_sd_m) || !finite_nonneg(cfg->lever_rw_m_rts))) ||
-        (cfg->settle != 0 && cfg->settle != 1) ||
+        (cfg->settle != 0 && cfg->settle != 1) || (cfg->closed_form != 0 && cfg->closed_form != 1) ||
         (cfg->settle && (!sd_ok(cfg->settle_sd_mps) || !finite_pos(cfg->settle_tau_s))) ||
         !finite_nonneg(cfg->zaru_gate)) {
         return FNAV_E_CONFIG;

@@ -92,6 +92,16 @@ static void test_config(void **state)
     assert_true(nav.ukf.cfg.zaru_gate == FNAV_R(5.0));
     c.zaru_gate = FNAV_R(-1.0);
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* the flags zaru and closed_form are 0 or 1, as lever and settle (2
+     * and -1 were taken for 1; the filter review) */
+    c = fnav_nav_config_default;
+    c.zaru = 2;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c.zaru = -1;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c = fnav_nav_config_default;
+    c.closed_form = 2;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
     /* a renewal minimum longer than a still period can last (the
      * alignment's max_still_s ends it) would never renew: refused */
     c = fnav_nav_config_default;

@@ -94,6 +94,15 @@ static void test_config(void **state)
     c = fnav_ukf_config_default;
     c.kappa = FNAV_R(-20.0); /* n + lambda <= 0 */
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    /* closed_form is 0 or 1, as lever and settle (2 and -1 were taken for
+     * 1; the filter review) */
+    c = fnav_ukf_config_default;
+    c.closed_form = 2;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    c.closed_form = -1;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    c.closed_form = 0;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
     /* calls before start */
     c = fnav_ukf_config_default;
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);

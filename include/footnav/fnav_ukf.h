@@ -142,7 +142,8 @@ typedef struct {
     fnav_real_t alpha, beta, kappa;       /**< unscented transform (default 1, 2, 0) */
     fnav_real_t zupt_sigma_mps;           /**< ZUPT measurement noise, m/s (default 0.01) */
     fnav_real_t zaru_sigma_rps;           /**< ZARU measurement noise, rad/s (default 0.01) */
-    int closed_form;                      /**< 1 (default): closed-form linear sigma points */
+    int closed_form;                      /**< 1 (default): closed-form linear sigma points; 0: all
+                                               through the strapdown (other values refused) */
     int lever;                            /**< 1: estimate the pivot-to-IMU lever (default 0) */
     fnav_real_t lever_sd_m;               /**< initial lever sd per axis, m (default 0.1) */
     fnav_real_t lever_rw_m_rts;           /**< lever random walk, m/sqrt(s) (default 0.002) */
@@ -224,7 +225,8 @@ typedef struct {
  * fnav_ukf_start()).
  * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG on a bad value
  *         (negative or non-finite noise, non-positive tau/sigma with AR1,
- *         alpha <= 0, n + lambda <= 0, non-positive measurement noise; a
+ *         alpha <= 0, n + lambda <= 0, non-positive measurement noise,
+ *         lever, settle or closed_form other than 0 or 1; a
  *         standard deviation, measurement or bias sigma, lever or settling
  *         sd, whose square is 0 or not finite: in float32 below about
  *         1e-19 or above 1.8e19).
