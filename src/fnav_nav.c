@@ -39,6 +39,14 @@ const fnav_nav_config_t fnav_nav_config_default = {
     20u                 /* diverge_undone */
 };
 
+/* An initial standard deviation the filter takes (fnav_ukf_start): finite
+ * and positive, and so is its variance (fnav_ukf_start refuses an sd whose
+ * square is 0 or infinite, and start_filter asserts it starts). */
+static int sd_ok(fnav_real_t x)
+{
+    return fnav_isfinite(x) && x > FNAV_R(0.0) && fnav_isfinite(x * x) && x * x > FNAV_R(0.0);
+}
+
 static fnav_real_t rss(fnav_real_t a, fnav_real_t b)
 {
     return fnav_sqrt(a * a + b * b);
@@ -85,13 +93,11 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
     if (fnav_profile_validate(&cfg->profile) != FNAV_OK || !fnav_isfinite(cfg->gravity_mps2) ||
         !(cfg->gravity_mps2 > FNAV_R(0.0)) || !fnav_isfinite(cfg->accel_motion_noise_mps2_rthz) ||
         cfg->accel_motion_noise_mps2_rthz < FNAV_R(0.0) || !fnav_isfinite(cfg->gyro_motion_noise_rps_rthz) ||
-        cfg->gyro_motion_noise_rps_rthz < FNAV_R(0.0) || !(cfg->tilt_sd_rad > FNAV_R(0.0)) ||
-        !(cfg->yaw_sd_rad > FNAV_R(0.0)) || !(cfg->gyro_bias_sd_rps > FNAV_R(0.0)) ||
-        !(cfg->accel_bias_sd_mps2 > FNAV_R(0.0)) || !(cfg->max_gap_s > FNAV_R(0.0)) ||
-        !fnav_isfinite(cfg->tilt_sd_rad) || !fnav_isfinite(cfg->yaw_sd_rad) || !fnav_isfinite(cfg->gyro_bias_sd_rps) ||
-        !fnav_isfinite(cfg->accel_bias_sd_mps2) || !fnav_isfinite(cfg->max_gap_s) ||
+        cfg->gyro_motion_noise_rps_rthz < FNAV_R(0.0) || !sd_ok(cfg->tilt_sd_rad) || !sd_ok(cfg->yaw_sd_rad) ||
+        !sd_ok(cfg->gyro_bias_sd_rps) || !sd_ok(cfg->accel_bias_sd_mps2) || !(cfg->max_gap_s > FNAV_R(0.0)) ||
+        !fnav_isfinite(cfg->max_gap_s) ||
         !(cfg->diverge_speed_mps > FNAV_R(0.0)) || !fnav_isfinite(cfg->diverge_speed_mps) ||
-        cfg->diverge_undone == 0u || !(cfg->realign_min_s >= FNAV_R(0.0)) || !fnav_isfinite(cfg->realign_min_s) ||
+        cfg->diverge_undone == 0u || (cfg->zaru != 0 && cfg->zaru != 1) || !(cfg->realign_min_s >= FNAV_R(0.0)) || !fnav_isfinite(cfg->realign_min_s) ||
         /* a still period ends at the alignment's max_still_s, so a longer
          * minimum would never renew */
         cfg->realign_min_s > cfg->align.max_still_s || !(cfg->zaru_after_s >= FNAV_R(0.0)) ||

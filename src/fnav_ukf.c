@@ -39,6 +39,15 @@ static int finite_pos(fnav_real_t x)
     return fnav_isfinite(x) && x > FNAV_R(0.0);
 }
 
+/* A standard deviation whose variance is finite and positive as well (in
+ * float32 an sd below about 1e-19 has a variance of 0, one above 1.8e19 an
+ * infinite one: the guard then made either the maximum; the filter
+ * review). */
+static int sd_ok(fnav_real_t x)
+{
+    return finite_pos(x) && finite_pos(x * x);
+}
+
 fnav_quat_t fnav_ukf_grp_to_quat(fnav_vec3_t p)
 {
     /* Crassidis & Markley 2003, eq. (33) with a = 1, f = 4 */
@@ -90,17 +99,17 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
         }
         if (cfg->bias_model == FNAV_BIAS_AR1 &&
             (!finite_pos(cfg->gyro_tau_s[i]) || !finite_pos(cfg->accel_tau_s[i]) ||
-             !finite_pos(cfg->gyro_bias_sigma_rps[i]) || !finite_pos(cfg->accel_bias_sigma_mps2[i]))) {
+             !sd_ok(cfg->gyro_bias_sigma_rps[i]) || !sd_ok(cfg->accel_bias_sigma_mps2[i]))) {
             return FNAV_E_CONFIG;
         }
     }
     if (!finite_pos(cfg->alpha) || !fnav_isfinite(cfg->beta) || !fnav_isfinite(cfg->kappa) ||
-        !finite_pos(cfg->zupt_sigma_mps) || !finite_pos(cfg->zaru_sigma_rps) ||
+        !sd_ok(cfg->zupt_sigma_mps) || !sd_ok(cfg->zaru_sigma_rps) ||
         !finite_pos(cfg->strapdown.gravity_mps2) || (cfg->lever != 0 && cfg->lever != 1) ||
         (cfg->strapdown.sample_type != FNAV_SAMPLE_INSTANT && cfg->strapdown.sample_type != FNAV_SAMPLE_MEAN) ||
-        (cfg->lever && (!finite_pos(cfg->lever_sd_m) || !finite_nonneg(cfg->lever_rw_m_rts))) ||
-        (cfg->settle != 0 && cfg->settle != 1) ||
-        (cfg->settle && (!finite_pos(cfg->settle_sd_mps) || !finite_pos(cfg->settle_tau_s))) ||
+        (cfg->lever && (!sd_ok(cfg->lever_sd_m) || !finite_nonneg(cfg->lever_rw_m_rts))) ||
+        (cfg->settle != 0 && cfg->settle != 1) || (cfg->closed_form != 0 && cfg->closed_form != 1) ||
+        (cfg->settle && (!sd_ok(cfg->settle_sd_mps) || !finite_pos(cfg->settle_tau_s))) ||
         !finite_nonneg(cfg->zaru_gate)) {
         return FNAV_E_CONFIG;
     }
@@ -169,12 +178,31 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
         return FNAV_E_NANINF;
     }
     for (i = 0; i < 3; i++) {
-        if (!finite_pos(sd->att_rad[i]) || !finite_pos(sd->gyro_bias_rps[i]) || !finite_pos(sd->accel_bias_mps2[i])) {
+        if (!sd_ok(sd->att_rad[i]) || !sd_ok(sd->gyro_bias_rps[i]) || !sd_ok(sd->accel_bias_mps2[i])) {
             return FNAV_E_ARG;
         }
     }
-    if (!finite_pos(sd->vel_mps) || !finite_pos(sd->pos_m)) {
+    if (!sd_ok(sd->vel_mps) || !sd_ok(sd->pos_m)) {
         return FNAV_E_ARG;
+    }
+    {
+        /* a quaternion whose squared norm overflows or underflows is
+         * scaled by its largest component first (fnav_quat_normalize made
+         * (1e20, 0, 0, 1e20) the zero quaternion: the filter review); a
+         * unit one is normalised as it always was */
+        fnav_real_t n2 = q_nb.q[0] * q_nb.q[0] + q_nb.q[1] * q_nb.q[1] + q_nb.q[2] * q_nb.q[2] + q_nb.q[3] * q_nb.q[3];
+        if (!(n2 > FNAV_REAL_EPSILON) || !fnav_isfinite(n2)) {
+            fnav_real_t m = FNAV_R(0.0);
+            for (i = 0; i < 4; i++) {
+                m = fnav_fabs(q_nb.q[i]) > m ? fnav_fabs(q_nb.q[i]) : m;
+            }
+            if (!(m > FNAV_R(0.0))) {
+                return FNAV_E_ARG; /* the zero quaternion is no attitude */
+            }
+            for (i = 0; i < 4; i++) {
+                q_nb.q[i] /= m;
+            }
+        }
     }
     f->q_nb = fnav_quat_normalize(q_nb);
     f->vel_mps = fnav_vec3_zero();
@@ -474,8 +502,22 @@ static fnav_real_t sd_max(int i)
  * variance above its maximum is clamped, its row and column scaled by the
  * same factor (the correlations are kept). Counted in health.cov_guard.
  * Nothing changes on a covariance within its limits. Off-diagonal entries
- * need no check: prediction and update reject non-finite results. */
-static void guard_cov(fnav_ukf_t *f)
+ * need no check: prediction and update reject non-finite results.
+ * After an update (r2 > 0, the measurement variance per axis, f->K its
+ * gain) a variance that rounding took to zero or below takes, instead of
+ * the maximum, its lower bound in exact arithmetic, (K R K^T)_ii =
+ * r2 |K_i|^2 (the Joseph form's (I - K H) P (I - K H)^T is positive
+ * semi-definite). In float32 a prior variance more than 1 / FLT_EPSILON
+ * times the measurement's (a velocity variance above 840 (m/s)^2 with the
+ * 0.01 m/s ZUPT, after minutes without a stance) makes S = P + r2 round to
+ * P, the gain 1 and the expanded Joseph form P - P - P + P = 0. With the
+ * maximum, every later update did the same (S = 1e4 + 1e-4 rounds to 1e4):
+ * the velocity variance stayed at 1e4 (m/s)^2 for the rest of the walk
+ * (the filter review, 2026-11-29; test_ukf test_zupt_after_long_swing).
+ * r2 = 0: the prediction (f->K holds its bias maps; guard_cov(), the
+ * branch folded away); inlined in the update, so that the prediction's
+ * code and cost stay as they were. */
+static inline FNAV_ALWAYS_INLINE void guard_cov_r2(fnav_ukf_t *f, fnav_real_t r2)
 {
     int n = f->n_act, i, j;
     for (i = 0; i < n; i++) {
@@ -484,11 +526,16 @@ static void guard_cov(fnav_ukf_t *f)
             continue; /* the normal case: one comparison pair per state */
         }
         if (!(v > FNAV_R(0.0))) { /* also NaN */
+            fnav_real_t lo = FNAV_R(0.0);
+            if (r2 > FNAV_R(0.0)) {
+                const fnav_real_t *k = f->K[i];
+                lo = r2 * (k[0] * k[0] + k[1] * k[1] + k[2] * k[2]);
+            }
             for (j = 0; j < n; j++) {
                 f->P[i][j] = FNAV_R(0.0);
                 f->P[j][i] = FNAV_R(0.0);
             }
-            f->P[i][i] = mx * mx;
+            f->P[i][i] = (lo > FNAV_R(0.0) && lo <= mx * mx) ? lo : mx * mx;
             f->Pxs[i] = FNAV_R(0.0);
         } else {
             fnav_real_t k = mx / fnav_sqrt(v);
@@ -501,6 +548,11 @@ static void guard_cov(fnav_ukf_t *f)
         }
         f->health.cov_guard++;
     }
+}
+
+static void guard_cov(fnav_ukf_t *f)
+{
+    guard_cov_r2(f, FNAV_R(0.0));
 }
 
 /* S (upper) = k sum_{j < nl} u_a,j u_b,j over the rows a, b < na (assigned:
@@ -1254,7 +1306,7 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
         settle_update(f, hp, (const fnav_real_t(*)[3])si, (const fnav_real_t(*)[3])s, y);
     }
     mirror_upper(f->P, Pn, n);
-    guard_cov(f);
+    guard_cov_r2(f, r2);
     for (i = 0; i < N; i++) {
         dxi[i] = f->pos[i] >= 0 ? dx[f->pos[i]] : FNAV_R(0.0);
     }

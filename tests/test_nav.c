@@ -59,6 +59,30 @@ static void test_config(void **state)
     c = fnav_nav_config_default;
     c.zupt_sigma_mps = FNAV_R(0.0);
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    {
+        /* initial sds whose variance is 0 or infinite in this build: init
+         * accepted them and the filter started with that variance (the
+         * guard then made it the maximum: a tilt sd of 1e-25 rad became
+         * pi rad); fnav_ukf_start refuses them now, and start_filter
+         * asserts that it starts (the filter review) */
+#if FNAV_USE_DOUBLE
+        const fnav_real_t bad[2] = { 1.0e-170, 1.0e160 };
+#else
+        const fnav_real_t bad[2] = { 1.0e-25f, 1.0e20f };
+#endif
+        int k, b;
+        for (k = 0; k < 5; k++) {
+            for (b = 0; b < 2; b++) {
+                fnav_real_t *x[5] = { &c.tilt_sd_rad, &c.yaw_sd_rad, &c.gyro_bias_sd_rps, &c.accel_bias_sd_mps2,
+                                      &c.zupt_sigma_mps };
+                c = fnav_nav_config_default;
+                *x[k] = bad[b];
+                if (fnav_nav_init(&nav, &c) != FNAV_E_CONFIG) {
+                    fail_msg("initial sd %d = %g accepted", k, (double)bad[b]);
+                }
+            }
+        }
+    }
     /* the ZARU's gate reaches the filter; a negative one is refused */
     c = fnav_nav_config_default;
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
@@ -67,6 +91,16 @@ static void test_config(void **state)
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
     assert_true(nav.ukf.cfg.zaru_gate == FNAV_R(5.0));
     c.zaru_gate = FNAV_R(-1.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* the flags zaru and closed_form are 0 or 1, as lever and settle (2
+     * and -1 were taken for 1; the filter review) */
+    c = fnav_nav_config_default;
+    c.zaru = 2;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c.zaru = -1;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c = fnav_nav_config_default;
+    c.closed_form = 2;
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
     /* a renewal minimum longer than a still period can last (the
      * alignment's max_still_s ends it) would never renew: refused */

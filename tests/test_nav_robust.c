@@ -1,7 +1,7 @@
 /* Navigator health under abuse (issue: robustness): the divergence reset path,
  * and extreme but physical inputs - a 2000 deg/s spin, 16 g impacts, an hour
- * of stance, a long swing - never produce NaN and keep the covariance
- * symmetric positive definite. */
+ * of stance, a long swing, a stance after a swing of minutes - never
+ * produce NaN and keep the covariance symmetric positive definite. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -303,6 +303,22 @@ static void test_long_stance(void **state)
     assert_true(fabs((double)r.last.pos_m[0]) < 0.05 && fabs((double)r.last.pos_m[2]) < 0.05);
 }
 
+/* The specific force of a body turning at the constant rate w (body frame,
+ * rad/s) for t seconds without moving: gravity (0, 0, -g) in n seen from
+ * the body turned by the angle |w| t about k = w / |w|, R(k, -|w| t)
+ * applied to it (Rodrigues), in double. */
+static void turning_accel(const double w[3], double t, double a[3])
+{
+    const double g = 9.80665, wn = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    const double th = -wn * t, k[3] = { w[0] / wn, w[1] / wn, w[2] / wn };
+    const double v[3] = { 0.0, 0.0, -g }, kv = k[2] * v[2];
+    const double kxv[3] = { k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2], k[0] * v[1] - k[1] * v[0] };
+    int j;
+    for (j = 0; j < 3; j++) {
+        a[j] = v[j] * cos(th) + kxv[j] * sin(th) + k[j] * kv * (1.0 - cos(th));
+    }
+}
+
 /* A long swing: 30 s of motion without one stance; the uncertainty grows,
  * the covariance guard bounds it, nothing becomes NaN. The foot turns at
  * a constant body rate w about a fixed axis without moving (the
@@ -337,15 +353,10 @@ static void test_long_swing(void **state)
     for (i = 0; i < 200 * 30; i++) {
         /* gravity (0, 0, -g) in n seen from the body turned by the angle
          * |w| t about k = w / |w|: R(k, -|w| t) applied to it (Rodrigues) */
-        const double th = -wn * (double)i / 200.0, k[3] = { w[0] / wn, w[1] / wn, w[2] / wn };
-        const double v[3] = { 0.0, 0.0, -g }, kv = k[2] * v[2];
-        const double kxv[3] = { k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2], k[0] * v[1] - k[1] * v[0] };
         double a[3];
         long before = r.frames;
         int j;
-        for (j = 0; j < 3; j++) {
-            a[j] = v[j] * cos(th) + kxv[j] * sin(th) + k[j] * kv * (1.0 - cos(th));
-        }
+        turning_accel(w, (double)i / 200.0, a);
         push(&r, a, w);
         if (r.frames > before && (r.last.flags & FNAV_FRAME_ALIGNED) != 0u) {
             /* a frame of the swing: the alignment completes at the first
@@ -389,6 +400,50 @@ static void test_long_swing(void **state)
     check_cov_spd(&g_nav.ukf);
 }
 
+/* The stance after a swing of 400 s (the turning foot of test_long_swing,
+ * no stance, no ZUPT): the horizontal velocity variance has grown to about
+ * 2.5e3 (m/s)^2, above the default ZUPT's 1e-4 / FLT_EPSILON = 840, so in
+ * float32 the first ZUPT's posterior rounded to zero, the covariance guard
+ * set it to its maximum, 1e4, and every later ZUPT did the same: the
+ * frames of 10 s of stance reported 1e4 (m/s)^2 (found by the filter
+ * review; the double build 1e-4 at the first ZUPT, 1.3e-5 after 20 s).
+ * Now the velocity variance is that of a standing foot after the first
+ * ZUPTs in both builds, the covariance positive definite, no reset. */
+static void test_stance_after_long_swing(void **state)
+{
+    const double w[3] = { 2.0, -1.5, 1.8 };
+    run_t r;
+    long i;
+    int j;
+    (void)state;
+    init(&r, 200.0);
+    still(&r, 2.0);
+    for (i = 0; i < 200 * 400; i++) {
+        double a[3];
+        turning_accel(w, (double)i / 200.0, a);
+        push(&r, a, w);
+    }
+    assert_int_equal(g_nav.stats.zupts, 0u);
+    assert_true(r.last.p_diag[3] > FNAV_R(840.0) && r.last.p_diag[4] > FNAV_R(840.0));
+    {
+        double a[3];
+        const double w0[3] = { 0.0, 0.0, 0.0 };
+        turning_accel(w, 400.0, a); /* the pose the turn ended in */
+        for (i = 0; i < 200 * 10; i++) {
+            push(&r, a, w0);
+        }
+    }
+    assert_true(g_nav.stats.zupts > 1000u);
+    assert_int_equal(g_nav.stats.resets, 0u);
+    assert_true(r.last.flags & FNAV_FRAME_ZUPT);
+    for (j = 0; j < 3; j++) {
+        if (!(r.last.p_diag[3 + j] < FNAV_R(1.0e-3))) {
+            fail_msg("velocity variance %d after 10 s of stance: %g (m/s)^2", j, (double)r.last.p_diag[3 + j]);
+        }
+    }
+    check_cov_spd(&g_nav.ukf);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -398,6 +453,7 @@ int main(void)
         cmocka_unit_test(test_impacts_16g),
         cmocka_unit_test(test_long_stance),
         cmocka_unit_test(test_long_swing),
+        cmocka_unit_test(test_stance_after_long_swing),
     };
     return cmocka_run_group_tests_name("nav_robust", tests, NULL, NULL);
 }

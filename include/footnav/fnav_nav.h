@@ -86,7 +86,7 @@ typedef struct {
     int settle;                        /**< 1: the landing settling state (fnav_ukf.h) */
     fnav_real_t settle_sd_mps;         /**< settling sd at each stance onset, m/s */
     fnav_real_t settle_tau_s;          /**< settling time constant, s */
-    int zaru;                          /**< 1: zero-angular-rate updates in stance */
+    int zaru;                          /**< 1: zero-angular-rate updates in stance; 0: none (other values refused) */
     fnav_real_t zaru_sigma_rps;        /**< ZARU noise, rad/s */
     fnav_real_t zaru_gate;             /**< ZARU validation gate, chi-square 3 dof (fnav_ukf.h); 0: none */
     fnav_real_t zaru_after_s;          /**< ZARU only once a stance has lasted this long, s (0: from its start) */
@@ -101,7 +101,7 @@ typedef struct {
     fnav_real_t max_gap_s;             /**< intervals above this (and above 1.5 nominal intervals)
                                             are time jumps, s; with stance.rate_hz set, init
                                             refuses max_gap_s <= 1.5 / rate_hz */
-    int closed_form;                   /**< UKF closed-form linear sigma points (1) */
+    int closed_form;                   /**< UKF closed-form linear sigma points (1) or not (0) */
     fnav_real_t diverge_speed_mps;     /**< |velocity| above this is divergence, m/s (default 30:
                                             beyond any foot, sprinting swing included) */
     uint32_t diverge_undone;           /**< this many consecutive undone predictions is divergence (default 20;

@@ -94,7 +94,12 @@
  * the maximum; a larger one is clamped with its row and column scaled alike
  * (health.cov_guard counts both). Long stretches without any stance (no
  * update for minutes) otherwise let float32 rounding drive variances
- * negative.
+ * negative. An update's posterior variance that rounding takes to zero or
+ * below (float32, a prior variance more than 1 / FLT_EPSILON times the
+ * measurement's: the first ZUPT after minutes of swing) is instead set to
+ * its exact lower bound (K R K^T)_ii, its row and column cleared (counted
+ * in health.cov_guard too): the maximum would be what the next update
+ * rounds to zero again, for ever.
  */
 #ifndef FNAV_UKF_H
 #define FNAV_UKF_H
@@ -137,7 +142,8 @@ typedef struct {
     fnav_real_t alpha, beta, kappa;       /**< unscented transform (default 1, 2, 0) */
     fnav_real_t zupt_sigma_mps;           /**< ZUPT measurement noise, m/s (default 0.01) */
     fnav_real_t zaru_sigma_rps;           /**< ZARU measurement noise, rad/s (default 0.01) */
-    int closed_form;                      /**< 1 (default): closed-form linear sigma points */
+    int closed_form;                      /**< 1 (default): closed-form linear sigma points; 0: all
+                                               through the strapdown (other values refused) */
     int lever;                            /**< 1: estimate the pivot-to-IMU lever (default 0) */
     fnav_real_t lever_sd_m;               /**< initial lever sd per axis, m (default 0.1) */
     fnav_real_t lever_rw_m_rts;           /**< lever random walk, m/sqrt(s) (default 0.002) */
@@ -219,19 +225,26 @@ typedef struct {
  * fnav_ukf_start()).
  * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG on a bad value
  *         (negative or non-finite noise, non-positive tau/sigma with AR1,
- *         alpha <= 0, n + lambda <= 0, non-positive measurement noise).
+ *         alpha <= 0, n + lambda <= 0, non-positive measurement noise,
+ *         lever, settle or closed_form other than 0 or 1; a
+ *         standard deviation, measurement or bias sigma, lever or settling
+ *         sd, whose square is 0 or not finite: in float32 below about
+ *         1e-19 or above 1.8e19).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg);
 
 /**
  * Start navigating from an aligned state at the origin at rest.
- * @param q_nb     initial attitude
+ * @param q_nb     initial attitude, any non-zero scale (normalised)
  * @param bg_rps   gyro bias from the alignment, rad/s
  * @param ba_mps2  accel bias from the alignment, m/s^2
- * @param sd       initial standard deviations, every one finite and > 0 (the
- *                 bias ones are checked, then unused, with the model off)
- * @return FNAV_OK, FNAV_E_ARG (a NULL pointer or an sd not finite and
- *         positive), FNAV_E_NANINF on non-finite values.
+ * @param sd       initial standard deviations, every one finite and > 0 with
+ *                 a finite positive square (the bias ones are checked, then
+ *                 unused, with the model off)
+ * @return FNAV_OK, FNAV_E_ARG (a NULL pointer, an sd not finite and
+ *         positive or whose square is not, the zero quaternion),
+ *         FNAV_E_NANINF on non-finite values; the filter unchanged on a
+ *         failure.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps,
                                               fnav_vec3_t ba_mps2, const fnav_ukf_init_sd_t *sd);
