@@ -1480,6 +1480,12 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
     }
     memset(r, 0, sizeof *r);
     snprintf(r->path, sizeof r->path, "%s", path != NULL ? path : "");
+    /* a log cut at a bad line or record is diagnosed on the samples before
+     * it; the JSON says so (complete, error) as replay's and psd's do */
+    r->complete = log->status == FNAV_END;
+    if (!r->complete) {
+        snprintf(r->input_error, sizeof r->input_error, "%s", log->error);
+    }
     r->opts = *o;
     if (r->opts.seeds < 3) {
         r->opts.seeds = 3;

@@ -245,6 +245,10 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
         return -1;
     }
     cJSON_AddStringToObject(root, "schema", "footnav-simgap/1");
+    cJSON_AddBoolToObject(root, "complete", r->complete);
+    if (!r->complete) {
+        cJSON_AddStringToObject(root, "error", r->input_error);
+    }
     o = cJSON_AddObjectToObject(root, "log");
     cJSON_AddStringToObject(o, "path", r->path);
     cJSON_AddNumberToObject(o, "samples", (double)r->n);

@@ -175,6 +175,11 @@ expect_err "^harness simgap: error: " "noise-free still log as a walk: an error 
 expect_exit 1 "CSV with text at line 302" "$H" simgap "$T/tx2.csv" --quiet --seeds 4 --json "$T/tx2.json"
 expect_err "^harness simgap: error: .*tx2.csv:302: " "text in the CSV: error line with FILE:LINE"
 [ -s "$T/tx2.json" ] && pass "text in the CSV: JSON still written" || fail "text in the CSV: no JSON"
+# the JSON says the input stopped early, as replay's, info's and psd's do
+# (it had no key for it: a log cut at a bad line read as a whole one; the
+# sgreport review, 2026-11-29)
+json "$T/tx2.json" 'j["complete"] is False and "tx2.csv:302" in j["error"] and j["log"]["samples"] == 300' &&
+    pass "text in the CSV: JSON complete false, error names FILE:LINE" || fail "text in the CSV: JSON complete/error: $(cat "$T/pyerr")"
 head -c 50000 "$(dirname "$0")/../../vectors/walk.bin" > "$T/trunc.bin"
 expect_exit 1 "truncated .bin" "$H" simgap "$T/trunc.bin" --quiet --seeds 4
 expect_err "^harness simgap: error: .*trunc.bin: truncated" "truncated .bin: error line"
@@ -196,7 +201,7 @@ json "$T/hr.json" 'all(c["baseline"]["ar1_tau_s"] >= 0.001 and c["baseline"]["ar
 head -n 1 "$T/q.csv" | grep -q '^t,ax,ay,az,gx,gy,gz$' && pass "CSV input header" || fail "CSV header"
 expect_exit 0 "static log with quantisation" "$H" simgap "$T/q.csv" --quiet --seeds 8 --json "$T/q.json" --plot "$T/qp"
 grep -q "^verdict: explained: quant" "$T/out" && pass "summary names quant" || fail "summary: $(grep verdict "$T/out")"
-json "$T/q.json" 'j["schema"] == "footnav-simgap/1" and j["log"]["domain"] == "static" and j["log"]["domain_from"] == "detected"' &&
+json "$T/q.json" 'j["schema"] == "footnav-simgap/1" and j["log"]["domain"] == "static" and j["log"]["domain_from"] == "detected" and j["complete"] is True and "error" not in j' &&
     pass "JSON schema and domain" || fail "JSON schema/domain: $(cat "$T/pyerr")"
 json "$T/q.json" 'j["verdict"]["answer"] == "explained" and j["verdict"]["unconfirmed"] == [] and j["effects"][0]["effect"] == "quant" and j["effects"][0]["rank"] == 1 and [c["channel"] for c in j["effects"][0]["channels"]] == ["gz"]' &&
     pass "quant ranked first, on gz only" || fail "ranked effects: $(cat "$T/pyerr")"
