@@ -379,7 +379,16 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
             for (k = 0; k < c->nsteps; k++) {
                 if (c->step[k].selected >= 0) {
                     const sg_cand_t *cd = &c->step[k].cand[c->step[k].selected];
-                    int found = 0;
+                    int found = 0, kept = 0;
+                    /* an effect refitted to zero (sg_prune_zero) is no
+                     * answer here either: it was ranked, with no channel
+                     * (the sgreport review, 2026-11-29) */
+                    for (e2 = 0; e2 < c->nsel; e2++) {
+                        kept |= c->sel_id[e2] == cd->id;
+                    }
+                    if (!kept) {
+                        continue;
+                    }
                     for (e2 = 0; e2 < ne; e2++) {
                         found |= ids[e2] == cd->id;
                     }

@@ -12,8 +12,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <cjson/cJSON.h>
 #include <cmocka.h>
 #include <gsl/gsl_linalg.h>
+#include <unistd.h>
 
 #include "footnav/fnav_profile.h"
 #include "hx_simgap.h"
@@ -974,6 +976,129 @@ static void test_prune_zero(void **state)
     assert_int_equal(c.zero_id[0], FNAV_EFFECT_JUMPS);
 }
 
+/* ------------------------------------------------------------ reports */
+
+/* A static result by hand: channel ax analysed with a baseline of white
+ * noise and an AR(1) of sigma 0 (none), and two effects accepted in turn,
+ * jumps (held-out gap reduction 5) then vibration (3), the jumps refitted
+ * to a magnitude of 0 once the vibration joined (sg_prune_zero). The other
+ * channels are not analysed. Freed with free(). */
+static sg_result_t *hand_result(void)
+{
+    sg_result_t *r = (sg_result_t *)calloc(1, sizeof *r);
+    sg_chres_t *c;
+    sg_effect_t w, a, j, v;
+    assert_non_null(r);
+    snprintf(r->path, sizeof r->path, "hand.csv");
+    r->complete = 1;
+    r->domain = r->domain_detected = 1;
+    r->rate_hz = 100.0;
+    r->n = 60000;
+    r->duration_s = 600.0;
+    r->confident = 1;
+    r->S = 8;
+    r->opts = sg_opts_default();
+    snprintf(r->verdict, sizeof r->verdict, "explained");
+    memset(&w, 0, sizeof w);
+    w.id = FNAV_EFFECT_WHITE;
+    w.p[0] = 0.003;
+    a = w;
+    a.id = FNAV_EFFECT_AR1;
+    a.p[0] = 1.0; /* tau_s: meaningless without a sigma */
+    a.p[1] = 0.0; /* sigma */
+    j = w;
+    j.id = FNAV_EFFECT_JUMPS;
+    j.p[0] = 10.0 / 3600.0;
+    j.p[1] = 0.00875;
+    v = w;
+    v.id = FNAV_EFFECT_VIBRATION;
+    v.p[0] = 0.0096;
+    v.p[1] = 0.56;
+    c = &r->ch[0];
+    c->active = 1;
+    assert_int_equal(sg_model_set(&c->baseline, &w), 0);
+    assert_int_equal(sg_model_set(&c->baseline, &a), 0);
+    c->final = c->baseline;
+    j.p[1] = 0.0; /* the final refit's rms step */
+    assert_int_equal(sg_model_set(&c->final, &j), 0);
+    assert_int_equal(sg_model_set(&c->final, &v), 0);
+    j.p[1] = 0.00875; /* as fitted at its step */
+    c->nsteps = 2;
+    c->step[0].ncand = 1;
+    c->step[0].selected = 0;
+    c->step[0].cand[0].id = FNAV_EFFECT_JUMPS;
+    c->step[0].cand[0].eff = j;
+    c->step[0].cand[0].simulated = 1;
+    c->step[0].cand[0].dG_rank = 5.0;
+    c->step[1].ncand = 1;
+    c->step[1].selected = 0;
+    c->step[1].cand[0].id = FNAV_EFFECT_VIBRATION;
+    c->step[1].cand[0].eff = v;
+    c->step[1].cand[0].simulated = 1;
+    c->step[1].cand[0].dG_rank = 3.0;
+    c->nsel = 2;
+    c->sel_id[0] = FNAV_EFFECT_JUMPS;
+    c->sel_id[1] = FNAV_EFFECT_VIBRATION;
+    c->sel_expl[0] = c->sel_lo[0] = c->sel_hi[0] = 0.13;
+    c->sel_expl[1] = c->sel_lo[1] = c->sel_hi[1] = 0.29;
+    c->within_noise = 1;
+    sg_prune_zero(c);
+    return r;
+}
+
+/* sg_write_json's document of r, parsed (cJSON_Delete it). */
+static cJSON *json_of(const sg_result_t *r)
+{
+    char path[] = "/tmp/test_simgap_jsonXXXXXX", err[256], *txt;
+    int fd = mkstemp(path);
+    long len;
+    FILE *f;
+    cJSON *j;
+    assert_true(fd >= 0);
+    close(fd);
+    assert_int_equal(sg_write_json(r, path, err, sizeof err), 0);
+    f = fopen(path, "rb");
+    assert_non_null(f);
+    assert_int_equal(fseek(f, 0, SEEK_END), 0);
+    len = ftell(f);
+    assert_true(len > 0);
+    rewind(f);
+    txt = (char *)malloc((size_t)len + 1);
+    assert_non_null(txt);
+    assert_int_equal(fread(txt, 1, (size_t)len, f), (size_t)len);
+    txt[len] = '\0';
+    fclose(f);
+    remove(path);
+    j = cJSON_Parse(txt);
+    free(txt);
+    assert_non_null(j);
+    return j;
+}
+
+/* An effect accepted at its step and refitted to zero is no answer: the
+ * JSON's ranked effects[] leaves it out as the verdict and selected[] do.
+ * Until 2026-11-29 effects[] ranked it first (rank 1, its step's gap
+ * reduction 5) with an empty channels[] (the sgreport review). */
+static void test_json_effects_leave_out_refitted_to_zero(void **state)
+{
+    sg_result_t *r = hand_result();
+    cJSON *j, *e, *ve;
+    (void)state;
+    assert_int_equal(r->ch[0].nsel, 1);
+    j = json_of(r);
+    e = cJSON_GetObjectItem(j, "effects");
+    assert_int_equal(cJSON_GetArraySize(e), 1);
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(e, 0), "effect")->valuestring, "vibration");
+    assert_int_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(e, 0), "rank")->valueint, 1);
+    assert_true(cJSON_GetObjectItem(cJSON_GetArrayItem(e, 0), "held_out_gap_reduction")->valuedouble == 3.0);
+    assert_int_equal(cJSON_GetArraySize(cJSON_GetObjectItem(cJSON_GetArrayItem(e, 0), "channels")), 1);
+    ve = cJSON_GetObjectItem(cJSON_GetObjectItem(j, "verdict"), "effects");
+    assert_int_equal(cJSON_GetArraySize(ve), 1);
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(ve, 0), "effect")->valuestring, "vibration");
+    cJSON_Delete(j);
+    free(r);
+}
+
 /* The validation's summary over many cases: the medians of the parameter
  * error and of the shrink are those of every case (they were taken over a
  * class's first 1024 cases only). 1000 static cases with error 0.01 and
@@ -1068,6 +1193,7 @@ int main(void)
         cmocka_unit_test(test_toeplitz_nll2),
         cmocka_unit_test(test_bm_fit),
         cmocka_unit_test(test_prune_zero),
+        cmocka_unit_test(test_json_effects_leave_out_refitted_to_zero),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),
         cmocka_unit_test(test_fit_ar1_in_catalogue),
