@@ -49,8 +49,11 @@ static cJSON *effect_json(const sg_effect_t *e, int ch)
     cJSON_AddStringToObject(o, "effect", info != NULL ? info->name : "?");
     for (k = 0; info != NULL && k < info->nparams && k < SG_MAX_PAR; k++) {
         const char *unit = info->params[k].unit;
-        add_num(p, info->params[k].name, e->p[k]);
-        add_num(se, info->params[k].name, e->se[k]);
+        /* an AR(1) of sigma 0 is no bias process: its tau means nothing
+         * (null, as the baseline's ar1_tau_s; the sgreport review) */
+        const int void_tau = e->id == FNAV_EFFECT_AR1 && k == 0 && !(e->p[1] > 0.0);
+        add_num(p, info->params[k].name, void_tau ? (double)NAN : e->p[k]);
+        add_num(se, info->params[k].name, void_tau ? (double)NAN : e->se[k]);
         if (strncmp(unit, "u", 1) == 0) {
             char b[48];
             snprintf(b, sizeof b, "%s%s", sg_channel_unit(ch), unit + 1);

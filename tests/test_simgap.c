@@ -1099,6 +1099,33 @@ static void test_json_effects_leave_out_refitted_to_zero(void **state)
     free(r);
 }
 
+/* An AR(1) of sigma 0 is no bias process: its tau means nothing and is
+ * null wherever the JSON gives it, as the baseline's ar1_tau_s and the
+ * summary's "ar1 (none: sigma 0)" say. Until 2026-11-29 final_model[] gave
+ * it as a number (1 s) beside the baseline's null (the sgreport review, on
+ * two minutes of ADIS unit 1, gz). */
+static void test_json_ar1_tau_null_without_sigma(void **state)
+{
+    sg_result_t *r = hand_result();
+    cJSON *j, *ch, *fm, *p = NULL;
+    int i;
+    (void)state;
+    j = json_of(r);
+    ch = cJSON_GetArrayItem(cJSON_GetObjectItem(j, "channels"), 0);
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(cJSON_GetObjectItem(ch, "baseline"), "ar1_tau_s")));
+    fm = cJSON_GetObjectItem(cJSON_GetObjectItem(ch, "attribution"), "final_model");
+    for (i = 0; i < cJSON_GetArraySize(fm); i++) {
+        if (strcmp(cJSON_GetObjectItem(cJSON_GetArrayItem(fm, i), "effect")->valuestring, "ar1") == 0) {
+            p = cJSON_GetArrayItem(fm, i);
+        }
+    }
+    assert_non_null(p);
+    assert_true(cJSON_GetObjectItem(cJSON_GetObjectItem(p, "params"), "sigma")->valuedouble == 0.0);
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(cJSON_GetObjectItem(p, "params"), "tau_s")));
+    cJSON_Delete(j);
+    free(r);
+}
+
 /* The validation's summary over many cases: the medians of the parameter
  * error and of the shrink are those of every case (they were taken over a
  * class's first 1024 cases only). 1000 static cases with error 0.01 and
@@ -1194,6 +1221,7 @@ int main(void)
         cmocka_unit_test(test_bm_fit),
         cmocka_unit_test(test_prune_zero),
         cmocka_unit_test(test_json_effects_leave_out_refitted_to_zero),
+        cmocka_unit_test(test_json_ar1_tau_null_without_sigma),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),
         cmocka_unit_test(test_fit_ar1_in_catalogue),
