@@ -428,6 +428,13 @@ static int cmp_all(const sg_plist_t pl[SG_NSEG], double *const real[SG_NSEG], co
     return 0;
 }
 
+double sg_fit_explained(double G_before, double null_mean, double G_after)
+{
+    /* no excess, no fraction of it (0 until 2026-11-29: "explains
+     * nothing"; the sgreport review) */
+    return (G_before - null_mean) > 0.0 ? (G_before - G_after) / (G_before - null_mean) : (double)NAN;
+}
+
 /* Explained fraction of the held-out excess gap by going from twins a to
  * twins b (paired seeds), with a bootstrap over the seeds (68 % interval). */
 void sg_explained(const sg_plist_t *pl, const double *real, const double *ta, const double *va, const double *sa,
@@ -890,9 +897,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
                           ts.vx[SG_HOLD], ts.sh[SG_HOLD], S,
                           ccur[SG_HOLD].null_mean, ccur[SG_HOLD].null_sd,
                           &cd->expl_hold, &cd->expl_lo, &cd->expl_hi, seed + (uint32_t)cd->id);
-                cd->expl_fit = (ccur[SG_FIT].G - ccur[SG_FIT].null_mean) > 0.0
-                                   ? (ccur[SG_FIT].G - cc[SG_FIT].G) / (ccur[SG_FIT].G - ccur[SG_FIT].null_mean)
-                                   : 0.0;
+                cd->expl_fit = sg_fit_explained(ccur[SG_FIT].G, ccur[SG_FIT].null_mean, cc[SG_FIT].G);
                 cd->z_delta = sg_score_test(&pls[SG_HOLD], rv[SG_HOLD], &ccur[SG_HOLD], cur.v[SG_HOLD], cur.sh[SG_HOLD],
                                          ts.v[SG_HOLD], S, &cd->t_hold, &cd->t_null_mean, &cd->t_null_sd);
                 cd->zg_mid = sg_lr_test(&pls[SG_HOLD], rv[SG_HOLD], cur.v[SG_HOLD], cur.vx[SG_HOLD], cur.sh[SG_HOLD],

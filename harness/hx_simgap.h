@@ -583,6 +583,12 @@ typedef struct {
     sg_cmp_t cmp_prof[SG_NSEG]; /**< profile model twins vs real (no parameter uncertainty: given) */
 } sg_chres_t;
 
+/** Fraction of the fit segment's excess gap (G_before - null_mean) that a
+ *  candidate removes (G_before - G_after) / (G_before - null_mean); NaN
+ *  where the fit segment has no excess (G_before <= null_mean): undefined,
+ *  as the held-out fraction is (null in the JSON). */
+double sg_fit_explained(double G_before, double null_mean, double G_after);
+
 /** Leave out of a channel's selection the effects its final (refitted)
  *  model gives a magnitude of exactly zero (into zero_id). */
 void sg_prune_zero(sg_chres_t *c);

@@ -1126,6 +1126,21 @@ static void test_json_ar1_tau_null_without_sigma(void **state)
     free(r);
 }
 
+/* The fit segment's explained fraction (the JSON's explained_fit) is
+ * undefined without an excess on the fit segment, as the held-out one is:
+ * null, not 0 ("explains nothing"), which is what a candidate that moves
+ * G_fit from 0.9 to 0.5 under a null mean of 1 was given until 2026-11-29
+ * (the sgreport review). */
+static void test_fit_explained_undefined_without_excess(void **state)
+{
+    (void)state;
+    assert_true(fabs(sg_fit_explained(7.0, 1.0, 4.0) - 0.5) < 1e-15);
+    assert_true(fabs(sg_fit_explained(7.0, 1.0, 10.0) + 0.5) < 1e-15);
+    assert_true(isnan(sg_fit_explained(0.9, 1.0, 0.5)));
+    assert_true(isnan(sg_fit_explained(1.0, 1.0, 0.5)));
+    assert_true(isnan(sg_fit_explained((double)NAN, 1.0, 0.5)));
+}
+
 /* The validation's summary over many cases: the medians of the parameter
  * error and of the shrink are those of every case (they were taken over a
  * class's first 1024 cases only). 1000 static cases with error 0.01 and
@@ -1222,6 +1237,7 @@ int main(void)
         cmocka_unit_test(test_prune_zero),
         cmocka_unit_test(test_json_effects_leave_out_refitted_to_zero),
         cmocka_unit_test(test_json_ar1_tau_null_without_sigma),
+        cmocka_unit_test(test_fit_explained_undefined_without_excess),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),
         cmocka_unit_test(test_fit_ar1_in_catalogue),
