@@ -363,7 +363,9 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
                 add_num(e, "z_held_out_before", r->tim.z[SG_HOLD][k]);
                 add_num(e, "z_held_out_after", r->tim.z_after[k]);
                 cJSON_AddBoolToObject(e, "held_out_within_noise", !r->tim.open[k]);
-                add_num(e, "first_event_s", r->tim.first_t[k]);
+                /* a jitter has no first event (it read 0, the zeroed
+                 * field, until 2026-11-29; the sgreport review) */
+                add_num(e, "first_event_s", k == SG_TIM_JITTER ? (double)NAN : r->tim.first_t[k]);
                 cJSON_AddItemToArray(a, e);
             }
         }

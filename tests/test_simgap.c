@@ -1180,6 +1180,42 @@ static void test_summary_later_step_fraction_of_what_is_left(void **state)
     free(r);
 }
 
+/* A jitter has no first event: timing.selected[]'s first_event_s is null
+ * for it, a time for a duplicate or a dropout. Until 2026-11-29 it was 0
+ * (the zeroed field), which read as an event at the log's first sample
+ * (the NGIMU short walk: first_event_s 0 for jitter; the sgreport review). */
+static void test_json_jitter_has_no_first_event(void **state)
+{
+    sg_result_t *r = hand_result();
+    cJSON *j, *sel;
+    int i, seen = 0;
+    (void)state;
+    r->tim.have = 1;
+    r->tim.significant = 1;
+    r->tim.sel[SG_TIM_DROP] = r->tim.sel[SG_TIM_JITTER] = 1;
+    r->tim.first_t[SG_TIM_DUP] = (double)NAN;
+    r->tim.first_t[SG_TIM_DROP] = 12.5;
+    r->tim.stamp_s = 2e-7;
+    j = json_of(r);
+    sel = cJSON_GetObjectItem(cJSON_GetObjectItem(j, "timing"), "selected");
+    assert_int_equal(cJSON_GetArraySize(sel), 2);
+    for (i = 0; i < 2; i++) {
+        const cJSON *e = cJSON_GetArrayItem(sel, i);
+        const char *name = cJSON_GetObjectItem(e, "effect")->valuestring;
+        if (strcmp(name, "jitter") == 0) {
+            assert_true(cJSON_IsNull(cJSON_GetObjectItem(e, "first_event_s")));
+            seen |= 1;
+        } else {
+            assert_string_equal(name, "dropout");
+            assert_true(cJSON_GetObjectItem(e, "first_event_s")->valuedouble == 12.5);
+            seen |= 2;
+        }
+    }
+    assert_int_equal(seen, 3);
+    cJSON_Delete(j);
+    free(r);
+}
+
 /* The validation's summary over many cases: the medians of the parameter
  * error and of the shrink are those of every case (they were taken over a
  * class's first 1024 cases only). 1000 static cases with error 0.01 and
@@ -1278,6 +1314,7 @@ int main(void)
         cmocka_unit_test(test_json_ar1_tau_null_without_sigma),
         cmocka_unit_test(test_fit_explained_undefined_without_excess),
         cmocka_unit_test(test_summary_later_step_fraction_of_what_is_left),
+        cmocka_unit_test(test_json_jitter_has_no_first_event),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),
         cmocka_unit_test(test_fit_ar1_in_catalogue),
