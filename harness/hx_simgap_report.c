@@ -420,8 +420,8 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
                                 sel_step(&r->ch[ch], r->ch[ch].sel_id[i]) > 0
                                     ? " left by the effects accepted before it" : "");
                     } else {
-                        fprintf(f, "%s %s on %s (no excess in the held-out middle to explain)", first ? ":" : ";",
-                                b, sg_channel_name(ch));
+                        fprintf(f, "%s %s on %s (no excess in the held-out %s to explain)", first ? ":" : ";", b,
+                                sg_channel_name(ch), r->segs.sandwich ? "middle" : "segment");
                     }
                     first = 0;
                 }

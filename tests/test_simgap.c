@@ -1216,6 +1216,29 @@ static void test_json_jitter_has_no_first_event(void **state)
     free(r);
 }
 
+/* An accepted effect without a held-out excess to explain is said against
+ * the split used: the held-out middle of a sandwich split, the held-out
+ * segment (the log's last part) of a contiguous one. Until 2026-11-29 the
+ * verdict said "the held-out middle" under --contiguous too (the sgreport
+ * review). */
+static void test_summary_no_excess_names_the_split(void **state)
+{
+    sg_result_t *r = hand_result();
+    char *txt;
+    (void)state;
+    r->ch[0].sel_expl[0] = (double)NAN;
+    r->segs.sandwich = 1;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "on ax (no excess in the held-out middle to explain)"));
+    free(txt);
+    r->segs.sandwich = 0;
+    r->opts.contiguous = 1;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "on ax (no excess in the held-out segment to explain)"));
+    free(txt);
+    free(r);
+}
+
 /* The validation's summary over many cases: the medians of the parameter
  * error and of the shrink are those of every case (they were taken over a
  * class's first 1024 cases only). 1000 static cases with error 0.01 and
@@ -1315,6 +1338,7 @@ int main(void)
         cmocka_unit_test(test_fit_explained_undefined_without_excess),
         cmocka_unit_test(test_summary_later_step_fraction_of_what_is_left),
         cmocka_unit_test(test_json_jitter_has_no_first_event),
+        cmocka_unit_test(test_summary_no_excess_names_the_split),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),
         cmocka_unit_test(test_fit_ar1_in_catalogue),
