@@ -35,6 +35,14 @@ static void fmt_u(char *b, size_t n, int ch, double v, const char *suffix)
     }
 }
 
+/* A fraction in percent for "%.0f": within half a percent of zero it is 0,
+ * where printf wrote "-0" (the sgreport review). */
+static double pct(double f)
+{
+    const double v = 100.0 * f;
+    return fabs(v) <= 0.5 ? 0.0 : v;
+}
+
 void sg_effect_text(char *b, size_t n, int ch, const sg_effect_t *e)
 {
     char u[96], u2[96];
@@ -231,7 +239,7 @@ static void print_static(FILE *f, const sg_result_t *r)
                     char ex[96];
                     if (cd->expl_hold == cd->expl_hold) {
                         snprintf(ex, sizeof ex, "explains %.0f %% of the excess (68 %%: %.0f..%.0f %%)",
-                                 100.0 * cd->expl_hold, 100.0 * cd->expl_lo, 100.0 * cd->expl_hi);
+                                 pct(cd->expl_hold), pct(cd->expl_lo), pct(cd->expl_hi));
                     } else {
                         snprintf(ex, sizeof ex, "no held-out excess to explain");
                     }
@@ -416,7 +424,7 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
                          * "99 %" then "68 % of the held-out excess" on one
                          * channel read as 167 % (the sgreport review) */
                         fprintf(f, "%s %s on %s (%.0f %% of the held-out excess%s)", first ? ":" : ";", b,
-                                sg_channel_name(ch), 100.0 * r->ch[ch].sel_expl[i],
+                                sg_channel_name(ch), pct(r->ch[ch].sel_expl[i]),
                                 sel_step(&r->ch[ch], r->ch[ch].sel_id[i]) > 0
                                     ? " left by the effects accepted before it" : "");
                     } else {

@@ -1239,6 +1239,27 @@ static void test_summary_no_excess_names_the_split(void **state)
     free(r);
 }
 
+/* A fraction within half a percent of zero is printed as 0 %, not -0 %: a
+ * candidate that explains -0.1 % of the held-out excess (68 %: -0.4 to
+ * 0.2 %) read "explains -0 % of the excess (68 %: -0..0 %)" until
+ * 2026-11-29 (two minutes of ADIS unit 1; the sgreport review). */
+static void test_summary_no_negative_zero_percent(void **state)
+{
+    sg_result_t *r = hand_result();
+    sg_cand_t *cd = &r->ch[0].step[0].cand[0];
+    char *txt;
+    (void)state;
+    cd->expl_hold = -0.001;
+    cd->expl_lo = -0.004;
+    cd->expl_hi = 0.002;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "explains 0 % of the excess (68 %: 0..0 %)"));
+    assert_null(strstr(txt, "-0 %"));
+    assert_null(strstr(txt, "-0.."));
+    free(txt);
+    free(r);
+}
+
 /* The validation's summary over many cases: the medians of the parameter
  * error and of the shrink are those of every case (they were taken over a
  * class's first 1024 cases only). 1000 static cases with error 0.01 and
@@ -1339,6 +1360,7 @@ int main(void)
         cmocka_unit_test(test_summary_later_step_fraction_of_what_is_left),
         cmocka_unit_test(test_json_jitter_has_no_first_event),
         cmocka_unit_test(test_summary_no_excess_names_the_split),
+        cmocka_unit_test(test_summary_no_negative_zero_percent),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),
         cmocka_unit_test(test_fit_ar1_in_catalogue),
