@@ -227,7 +227,10 @@ static void print_static(FILE *f, const sg_result_t *r)
         if (c->nsteps == 0) {
             /* --max-effects 0 (this line could not be reached: the test
              * above skipped the channel first; a review, 2026-11-28) */
-            fprintf(f, "  not attempted%s\n", r->opts.max_steps == 0 ? " (--max-effects 0)" : "");
+            /* and a log too short for a confident answer, which said a
+             * bare "not attempted" (the sgreport review) */
+            fprintf(f, "  not attempted%s\n", r->opts.max_steps == 0 ? " (--max-effects 0)"
+                                               : (!r->confident ? " (too short for a confident answer)" : ""));
         }
         for (i = 0; i < c->nsteps; i++) {
             const sg_step_t *st = &c->step[i];

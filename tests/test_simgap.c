@@ -1260,6 +1260,33 @@ static void test_summary_no_negative_zero_percent(void **state)
     free(r);
 }
 
+/* A channel with a gap but no attribution says why: --max-effects 0, or a
+ * log too short for a confident answer, where it said a bare "not
+ * attempted" until 2026-11-29 (two seconds of ADIS unit 1, every channel;
+ * the sgreport review). */
+static void test_summary_not_attempted_says_why(void **state)
+{
+    sg_result_t *r = hand_result();
+    char *txt;
+    (void)state;
+    r->ch[0].nsteps = 0;
+    r->ch[0].nsel = 0;
+    r->ch[0].nzero = 0;
+    r->ch[0].gap = 1;
+    r->confident = 0;
+    snprintf(r->why, sizeof r->why, "too short");
+    snprintf(r->verdict, sizeof r->verdict, "too-short");
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "  not attempted (too short for a confident answer)\n"));
+    free(txt);
+    r->confident = 1;
+    r->opts.max_steps = 0;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "  not attempted (--max-effects 0)\n"));
+    free(txt);
+    free(r);
+}
+
 /* The validation's summary over many cases: the medians of the parameter
  * error and of the shrink are those of every case (they were taken over a
  * class's first 1024 cases only). 1000 static cases with error 0.01 and
@@ -1361,6 +1388,7 @@ int main(void)
         cmocka_unit_test(test_json_jitter_has_no_first_event),
         cmocka_unit_test(test_summary_no_excess_names_the_split),
         cmocka_unit_test(test_summary_no_negative_zero_percent),
+        cmocka_unit_test(test_summary_not_attempted_says_why),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),
         cmocka_unit_test(test_fit_ar1_in_catalogue),
