@@ -144,7 +144,11 @@ static void print_static(FILE *f, const sg_result_t *r)
         sg_effect_text(a, sizeof a, ch, &c->baseline.e[ia]);
         fprintf(f, "  %s  %s, %s\n", sg_channel_name(ch), w, a);
     }
-    fprintf(f, "gap of the baseline twin (%d seeds; G = mean z^2, about 1 when the twin explains the data):\n", r->S);
+    /* G as computed (section 3), not "mean z^2", which a reader of the
+     * JSON's points got otherwise (the sgreport review) */
+    fprintf(f, "gap of the baseline twin (%d seeds; G = mean over the domains of their mean z^2 (|z| capped at %g), "
+               "about 1 when the twin explains the data):\n",
+            r->S, SG_ZCAP);
     for (ch = 0; ch < SG_NCH; ch++) {
         const sg_chres_t *c = &r->ch[ch];
         if (!c->active) {

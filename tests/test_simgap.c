@@ -1287,6 +1287,25 @@ static void test_summary_not_attempted_says_why(void **state)
     free(r);
 }
 
+/* The summary's definition of G is the one computed (docs/simgap.md,
+ * section 3): the mean over the domains of each domain's mean of z^2 capped
+ * at SG_ZCAP^2, not the mean z^2 over the points, which it said until
+ * 2026-11-29 (two minutes of ADIS unit 1, ax: G 411.5, mean z^2 of the
+ * JSON's points 380.5, their domain mean of capped z^2 411.5, numpy; the
+ * sgreport review). */
+static void test_summary_defines_g_as_computed(void **state)
+{
+    sg_result_t *r = hand_result();
+    char *txt;
+    (void)state;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "; G = mean over the domains of their mean z^2 (|z| capped at 40), about 1 when "
+                                "the twin explains the data):\n"));
+    assert_null(strstr(txt, "G = mean z^2,"));
+    free(txt);
+    free(r);
+}
+
 /* The validation's summary over many cases: the medians of the parameter
  * error and of the shrink are those of every case (they were taken over a
  * class's first 1024 cases only). 1000 static cases with error 0.01 and
@@ -1389,6 +1408,7 @@ int main(void)
         cmocka_unit_test(test_summary_no_excess_names_the_split),
         cmocka_unit_test(test_summary_no_negative_zero_percent),
         cmocka_unit_test(test_summary_not_attempted_says_why),
+        cmocka_unit_test(test_summary_defines_g_as_computed),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),
         cmocka_unit_test(test_fit_ar1_in_catalogue),
