@@ -517,7 +517,8 @@ typedef struct {
     int dom, ch, kind, seg;
     double x_lo, x_hi;        /**< tau (s), frequency (Hz) or time (s) range */
     double peak_z;            /**< signed z at the peak */
-    double ratio;             /**< real / twin at the peak (deviation for Allan, PSD, values) */
+    double ratio;             /**< at the peak: real / twin of the deviation (Allan) or amplitude (PSD);
+                                   real - twin for the time domain and the lattice score */
     int npts;
 } sg_loc_t;
 

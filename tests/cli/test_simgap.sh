@@ -209,6 +209,11 @@ json "$T/q.json" 'abs(j["effects"][0]["channels"][0]["params"]["lsb"] / 0.001 - 
     pass "LSB within 1 %, held-out gap explained >= 70 %" || fail "quant parameters: $(cat "$T/pyerr")"
 json "$T/q.json" '[c["channel"] for c in j["channels"] if c["gap_significant"]] == ["gz"] and any(l["channel"] == "gz" and l["domain"] == "lattice" for l in j["locations"])' &&
     pass "gap located on gz, lattice domain" || fail "locations: $(cat "$T/pyerr")"
+# a lattice location's ratio is real - twin of the lattice score, as for the
+# time domain (docs/simgap.md called it real/twin until 2026-11-29; the
+# sgreport review)
+json "$T/q.json" 'len([l for l in j["locations"] if l["domain"] == "lattice"]) >= 1 and all(abs(l["ratio"] - (p["real"] - p["twin"])) < 1e-6 * (1 + abs(l["ratio"])) for l in j["locations"] if l["domain"] == "lattice" for c in j["channels"] if c["channel"] == l["channel"] for p in c["points"]["full"] if p["domain"] == "lattice")' &&
+    pass "lattice location: ratio is real - twin" || fail "lattice location ratio: $(cat "$T/pyerr")"
 json "$T/q.json" 'all(c["attribution"]["within_noise"] for c in j["channels"])' &&
     pass "remaining gap within noise on every channel" || fail "within noise: $(cat "$T/pyerr")"
 json "$T/q.json" 'j["split"]["method"].startswith("sandwich") and all(abs(cd["z"] - (cd["z_held_out_middle"] + cd["z_held_out_ends"]) / 2 ** 0.5) < 1e-6 * (1 + abs(cd["z"])) for c in j["channels"] for s in c["attribution"]["steps"] for cd in s["candidates"] if cd["simulated"] and cd["z_held_out_ends"] is not None) and any(cd["effect"] == "quant" and cd["selected"] and cd["z_held_out_ends"] is not None and cd["z_held_out_middle"] > 0 and cd["z_held_out_ends"] > 0 for s in j["channels"][5]["attribution"]["steps"] for cd in s["candidates"])' &&
