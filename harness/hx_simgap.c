@@ -1526,6 +1526,27 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
     /* static logs: fit on both ends, held out the middle (a warm-up at the
      * start and the late behaviour are in both); walks: the first part */
     sg_segs_split(r->n, r->opts.fit_frac, r->domain == 1 && !r->opts.contiguous, &r->segs);
+    /* the blocks' times from the log's stamps, as the navigation points and
+     * the timing's first events are: start / rate put a walk's held-out
+     * segment 10 s early after a 10 s gap in the samples (the sgreport
+     * review) */
+    {
+        int g, b;
+        for (g = 0; g < SG_NSEG; g++) {
+            for (b = 0; b < r->segs.nb[g]; b++) {
+                const long a = r->segs.start[g][b], e = a + r->segs.n[g][b];
+                if (log->t_ns != NULL) {
+                    r->seg_start_s[g][b] = (double)(log->t_ns[a] - log->t_ns[0]) * 1e-9;
+                    r->seg_end_s[g][b] = e < (long)log->n ? (double)(log->t_ns[e] - log->t_ns[0]) * 1e-9
+                                                          : (double)(log->t_ns[log->n - 1] - log->t_ns[0]) * 1e-9 +
+                                                                1.0 / r->rate_hz;
+                } else {
+                    r->seg_start_s[g][b] = (double)a / r->rate_hz;
+                    r->seg_end_s[g][b] = (double)e / r->rate_hz;
+                }
+            }
+        }
+    }
     timing_analyse(log, r->rate_hz, &r->segs, r->opts.alpha, &r->tim);
     if (r->domain == 1) {
         rc = diagnose_static(log, r, err, err_size);

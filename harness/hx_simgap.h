@@ -623,6 +623,8 @@ typedef struct {
     long n;
     double duration_s;
     sg_segs_t segs;
+    double seg_start_s[SG_NSEG][SG_MAX_BLK]; /**< each block's first sample, s from the log's first (its stamps) */
+    double seg_end_s[SG_NSEG][SG_MAX_BLK];   /**< ... the sample after its last (the last's + 1/rate at the log's end) */
     sg_opts_t opts;
     int confident;
     char why[256];            /**< too short: why */

@@ -268,8 +268,8 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
         int b;
         for (b = 0; b < r->segs.nb[k]; b++) {
             cJSON *bo = cJSON_CreateObject();
-            add_num(bo, "start_s", (double)r->segs.start[k][b] / r->rate_hz);
-            add_num(bo, "end_s", (double)(r->segs.start[k][b] + r->segs.n[k][b]) / r->rate_hz);
+            add_num(bo, "start_s", r->seg_start_s[k][b]);
+            add_num(bo, "end_s", r->seg_end_s[k][b]);
             cJSON_AddNumberToObject(bo, "samples", (double)r->segs.n[k][b]);
             cJSON_AddItemToArray(s, bo);
         }
