@@ -468,7 +468,12 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
             }
             uo = cJSON_CreateObject();
             cJSON_AddStringToObject(uo, "channel", sg_channel_name(ch));
-            cJSON_AddStringToObject(uo, "reason", why == SG_UNCONF_NOT_HELD_OUT ? "not-held-out" : "no-effect");
+            /* not-tried: no effect of the catalogue was tried (--max-effects
+             * 0), as the summary says; it read no-effect, "a held-out gap no
+             * candidate reduces" (the sgreport review) */
+            cJSON_AddStringToObject(uo, "reason", why == SG_UNCONF_NOT_HELD_OUT
+                                                      ? "not-held-out"
+                                                      : (r->ch[ch].nsteps == 0 ? "not-tried" : "no-effect"));
             if (why == SG_UNCONF_NOT_HELD_OUT && lead != NULL) {
                 cJSON *lo = effect_json(&lead->eff, ch);
                 add_num(lo, "fit_dq", lead->dQ_fit);

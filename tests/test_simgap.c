@@ -1306,6 +1306,39 @@ static void test_summary_defines_g_as_computed(void **state)
     free(r);
 }
 
+/* A held-out gap on a channel where no effect was tried (--max-effects 0)
+ * is said as such in the JSON too: verdict.unconfirmed[]'s reason is
+ * "not-tried", where the summary says "no effect of the catalogue was
+ * tried"; until 2026-11-29 it was "no-effect", documented as a gap that no
+ * candidate reduces (two minutes of ADIS unit 1 with --max-effects 0; the
+ * sgreport review). */
+static void test_json_unconfirmed_not_tried(void **state)
+{
+    sg_result_t *r = hand_result();
+    sg_chres_t *c = &r->ch[0];
+    cJSON *j, *u;
+    (void)state;
+    c->nsteps = c->nsel = c->nzero = 0;
+    c->gap = c->gap_hold = c->gap_full = 1;
+    c->within_noise = 0;
+    r->opts.max_steps = 0;
+    snprintf(r->verdict, sizeof r->verdict, "unexplained");
+    j = json_of(r);
+    u = cJSON_GetObjectItem(cJSON_GetObjectItem(j, "verdict"), "unconfirmed");
+    assert_int_equal(cJSON_GetArraySize(u), 1);
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(u, 0), "channel")->valuestring, "ax");
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(u, 0), "reason")->valuestring, "not-tried");
+    cJSON_Delete(j);
+    /* with candidates tried and none accepted: no-effect, as before */
+    c->nsteps = 1;
+    c->step[0].selected = -1;
+    j = json_of(r);
+    u = cJSON_GetObjectItem(cJSON_GetObjectItem(j, "verdict"), "unconfirmed");
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(u, 0), "reason")->valuestring, "no-effect");
+    cJSON_Delete(j);
+    free(r);
+}
+
 /* The validation's summary over many cases: the medians of the parameter
  * error and of the shrink are those of every case (they were taken over a
  * class's first 1024 cases only). 1000 static cases with error 0.01 and
@@ -1409,6 +1442,7 @@ int main(void)
         cmocka_unit_test(test_summary_no_negative_zero_percent),
         cmocka_unit_test(test_summary_not_attempted_says_why),
         cmocka_unit_test(test_summary_defines_g_as_computed),
+        cmocka_unit_test(test_json_unconfirmed_not_tried),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),
         cmocka_unit_test(test_fit_ar1_in_catalogue),
