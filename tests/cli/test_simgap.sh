@@ -300,6 +300,10 @@ awk -F, 'NR == 1 || $1 < 15 || $1 >= 25' "$T/w.csv" > "$T/wgap.csv"
 "$H" simgap "$T/wgap.csv" --quiet --seeds 3 --json "$T/wgap.json" >/dev/null 2>&1
 json "$T/wgap.json" 'j["split"]["held_out"][0]["samples"] == 1201 and abs(j["split"]["held_out"][0]["start_s"] - 28.0) < 1e-6 and j["split"]["fit"][0]["end_s"] == j["split"]["held_out"][0]["start_s"] and abs(j["split"]["held_out"][0]["end_s"] - 40.01) < 1e-6' &&
     pass "walk with a gap: the split's times are the stamps'" || fail "split times: $(cat "$T/pyerr")"
+# and its duration is the stamps' span plus a period (n / rate said 30.01 s
+# until 2026-11-29, in the JSON and the summary's first line; the sgreport review)
+json "$T/wgap.json" 'abs(j["log"]["duration_s"] - 40.01) < 1e-6 and j["log"]["samples"] == 3001' &&
+    pass "walk with a gap: its duration from the stamps" || fail "duration: $(cat "$T/pyerr")"
 # an option of the other domain is said to be ignored, not dropped silently
 # (--contiguous on a walk, --closed on a static log; a review, 2026-11-29)
 expect_exit 0 "walk with --contiguous" "$H" simgap "$T/w.csv" --quiet --seeds 3 --contiguous
