@@ -365,13 +365,15 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
     debug_points(f, r);
     int ch, i, d;
     char b[256];
+    /* %.3g: --fit-frac 0.25 read "the first and last 12 %, held out the
+     * middle 75 %" with %.0f (the sgreport review) */
     if (r->segs.sandwich) {
-        fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first and last %.0f %%, held out the "
-                   "middle %.0f %%\n",
+        fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first and last %.3g %%, held out the "
+                   "middle %.3g %%\n",
                 r->path, r->domain == 1 ? "static" : "walk", r->n, r->rate_hz, r->duration_s,
                 50.0 * r->opts.fit_frac, 100.0 * (1.0 - r->opts.fit_frac));
     } else {
-        fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first %.0f %%, held out the last %.0f %%\n",
+        fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first %.3g %%, held out the last %.3g %%\n",
                 r->path, r->domain == 1 ? "static" : "walk", r->n, r->rate_hz, r->duration_s, 100.0 * r->opts.fit_frac,
                 100.0 * (1.0 - r->opts.fit_frac));
     }

@@ -1339,6 +1339,31 @@ static void test_json_unconfirmed_not_tried(void **state)
     free(r);
 }
 
+/* The summary's split percentages are not rounded apart: --fit-frac 0.25
+ * read "fit on the first and last 12 %, held out the middle 75 %", 99 %
+ * of the log, until 2026-11-29 (the sgreport review). */
+static void test_summary_split_percentages_add_up(void **state)
+{
+    sg_result_t *r = hand_result();
+    char *txt;
+    (void)state;
+    r->segs.sandwich = 1;
+    r->opts.fit_frac = 0.25;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "fit on the first and last 12.5 %, held out the middle 75 %\n"));
+    free(txt);
+    r->opts.fit_frac = 0.6;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "fit on the first and last 30 %, held out the middle 40 %\n"));
+    free(txt);
+    r->segs.sandwich = 0;
+    r->opts.fit_frac = 0.333;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "fit on the first 33.3 %, held out the last 66.7 %\n"));
+    free(txt);
+    free(r);
+}
+
 /* The validation's summary over many cases: the medians of the parameter
  * error and of the shrink are those of every case (they were taken over a
  * class's first 1024 cases only). 1000 static cases with error 0.01 and
@@ -1443,6 +1468,7 @@ int main(void)
         cmocka_unit_test(test_summary_not_attempted_says_why),
         cmocka_unit_test(test_summary_defines_g_as_computed),
         cmocka_unit_test(test_json_unconfirmed_not_tried),
+        cmocka_unit_test(test_summary_split_percentages_add_up),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),
         cmocka_unit_test(test_fit_ar1_in_catalogue),
