@@ -428,6 +428,13 @@ static int cmp_all(const sg_plist_t pl[SG_NSEG], double *const real[SG_NSEG], co
     return 0;
 }
 
+double sg_fit_explained(double G_before, double null_mean, double G_after)
+{
+    /* no excess, no fraction of it (0 until 2026-11-29: "explains
+     * nothing"; the sgreport review) */
+    return (G_before - null_mean) > 0.0 ? (G_before - G_after) / (G_before - null_mean) : (double)NAN;
+}
+
 /* Explained fraction of the held-out excess gap by going from twins a to
  * twins b (paired seeds), with a bootstrap over the seeds (68 % interval). */
 void sg_explained(const sg_plist_t *pl, const double *real, const double *ta, const double *va, const double *sa,
@@ -890,9 +897,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
                           ts.vx[SG_HOLD], ts.sh[SG_HOLD], S,
                           ccur[SG_HOLD].null_mean, ccur[SG_HOLD].null_sd,
                           &cd->expl_hold, &cd->expl_lo, &cd->expl_hi, seed + (uint32_t)cd->id);
-                cd->expl_fit = (ccur[SG_FIT].G - ccur[SG_FIT].null_mean) > 0.0
-                                   ? (ccur[SG_FIT].G - cc[SG_FIT].G) / (ccur[SG_FIT].G - ccur[SG_FIT].null_mean)
-                                   : 0.0;
+                cd->expl_fit = sg_fit_explained(ccur[SG_FIT].G, ccur[SG_FIT].null_mean, cc[SG_FIT].G);
                 cd->z_delta = sg_score_test(&pls[SG_HOLD], rv[SG_HOLD], &ccur[SG_HOLD], cur.v[SG_HOLD], cur.sh[SG_HOLD],
                                          ts.v[SG_HOLD], S, &cd->t_hold, &cd->t_null_mean, &cd->t_null_sd);
                 cd->zg_mid = sg_lr_test(&pls[SG_HOLD], rv[SG_HOLD], cur.v[SG_HOLD], cur.vx[SG_HOLD], cur.sh[SG_HOLD],
@@ -1480,6 +1485,12 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
     }
     memset(r, 0, sizeof *r);
     snprintf(r->path, sizeof r->path, "%s", path != NULL ? path : "");
+    /* a log cut at a bad line or record is diagnosed on the samples before
+     * it; the JSON says so (complete, error) as replay's and psd's do */
+    r->complete = log->status == FNAV_END;
+    if (!r->complete) {
+        snprintf(r->input_error, sizeof r->input_error, "%s", log->error);
+    }
     r->opts = *o;
     if (r->opts.seeds < 3) {
         r->opts.seeds = 3;
@@ -1494,7 +1505,11 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
         snprintf(err, err_size, "the log has %zu samples and no usable rate", log->n);
         return -1;
     }
-    r->duration_s = (double)r->n / r->rate_hz;
+    /* the stamps' span plus one period (n / rate on a regular log): n / rate
+     * alone said 50 s for a 60 s walk with 10 s of samples missing (the
+     * sgreport review) */
+    r->duration_s = log->t_ns != NULL ? (double)(log->t_ns[log->n - 1] - log->t_ns[0]) * 1e-9 + 1.0 / r->rate_hz
+                                      : (double)r->n / r->rate_hz;
     r->domain_detected = sg_detect_domain(log, r->rate_hz);
     r->domain = o->domain != 0 ? o->domain : r->domain_detected;
     /* an option of the other domain has no effect: said, not dropped
@@ -1515,6 +1530,27 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
     /* static logs: fit on both ends, held out the middle (a warm-up at the
      * start and the late behaviour are in both); walks: the first part */
     sg_segs_split(r->n, r->opts.fit_frac, r->domain == 1 && !r->opts.contiguous, &r->segs);
+    /* the blocks' times from the log's stamps, as the navigation points and
+     * the timing's first events are: start / rate put a walk's held-out
+     * segment 10 s early after a 10 s gap in the samples (the sgreport
+     * review) */
+    {
+        int g, b;
+        for (g = 0; g < SG_NSEG; g++) {
+            for (b = 0; b < r->segs.nb[g]; b++) {
+                const long a = r->segs.start[g][b], e = a + r->segs.n[g][b];
+                if (log->t_ns != NULL) {
+                    r->seg_start_s[g][b] = (double)(log->t_ns[a] - log->t_ns[0]) * 1e-9;
+                    r->seg_end_s[g][b] = e < (long)log->n ? (double)(log->t_ns[e] - log->t_ns[0]) * 1e-9
+                                                          : (double)(log->t_ns[log->n - 1] - log->t_ns[0]) * 1e-9 +
+                                                                1.0 / r->rate_hz;
+                } else {
+                    r->seg_start_s[g][b] = (double)a / r->rate_hz;
+                    r->seg_end_s[g][b] = (double)e / r->rate_hz;
+                }
+            }
+        }
+    }
     timing_analyse(log, r->rate_hz, &r->segs, r->opts.alpha, &r->tim);
     if (r->domain == 1) {
         rc = diagnose_static(log, r, err, err_size);

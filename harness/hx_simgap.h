@@ -517,7 +517,8 @@ typedef struct {
     int dom, ch, kind, seg;
     double x_lo, x_hi;        /**< tau (s), frequency (Hz) or time (s) range */
     double peak_z;            /**< signed z at the peak */
-    double ratio;             /**< real / twin at the peak (deviation for Allan, PSD, values) */
+    double ratio;             /**< at the peak: real / twin of the deviation (Allan) or amplitude (PSD);
+                                   real - twin for the time domain and the lattice score */
     int npts;
 } sg_loc_t;
 
@@ -583,6 +584,12 @@ typedef struct {
     sg_cmp_t cmp_prof[SG_NSEG]; /**< profile model twins vs real (no parameter uncertainty: given) */
 } sg_chres_t;
 
+/** Fraction of the fit segment's excess gap (G_before - null_mean) that a
+ *  candidate removes (G_before - G_after) / (G_before - null_mean); NaN
+ *  where the fit segment has no excess (G_before <= null_mean): undefined,
+ *  as the held-out fraction is (null in the JSON). */
+double sg_fit_explained(double G_before, double null_mean, double G_after);
+
 /** Leave out of a channel's selection the effects its final (refitted)
  *  model gives a magnitude of exactly zero (into zero_id). */
 void sg_prune_zero(sg_chres_t *c);
@@ -608,12 +615,16 @@ typedef struct {
 /** Whole result. */
 typedef struct {
     char path[512];
+    int complete;             /**< the log was read to its end (else input_error says where it stopped) */
+    char input_error[320];    /**< the reader's error when not complete: the diagnosis covers the samples before it */
     int domain;               /**< 1 static, 2 walk */
     int domain_detected;
     double rate_hz;
     long n;
     double duration_s;
     sg_segs_t segs;
+    double seg_start_s[SG_NSEG][SG_MAX_BLK]; /**< each block's first sample, s from the log's first (its stamps) */
+    double seg_end_s[SG_NSEG][SG_MAX_BLK];   /**< ... the sample after its last (the last's + 1/rate at the log's end) */
     sg_opts_t opts;
     int confident;
     char why[256];            /**< too short: why */

@@ -49,8 +49,11 @@ static cJSON *effect_json(const sg_effect_t *e, int ch)
     cJSON_AddStringToObject(o, "effect", info != NULL ? info->name : "?");
     for (k = 0; info != NULL && k < info->nparams && k < SG_MAX_PAR; k++) {
         const char *unit = info->params[k].unit;
-        add_num(p, info->params[k].name, e->p[k]);
-        add_num(se, info->params[k].name, e->se[k]);
+        /* an AR(1) of sigma 0 is no bias process: its tau means nothing
+         * (null, as the baseline's ar1_tau_s; the sgreport review) */
+        const int void_tau = e->id == FNAV_EFFECT_AR1 && k == 0 && !(e->p[1] > 0.0);
+        add_num(p, info->params[k].name, void_tau ? (double)NAN : e->p[k]);
+        add_num(se, info->params[k].name, void_tau ? (double)NAN : e->se[k]);
         if (strncmp(unit, "u", 1) == 0) {
             char b[48];
             snprintf(b, sizeof b, "%s%s", sg_channel_unit(ch), unit + 1);
@@ -245,6 +248,10 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
         return -1;
     }
     cJSON_AddStringToObject(root, "schema", "footnav-simgap/1");
+    cJSON_AddBoolToObject(root, "complete", r->complete);
+    if (!r->complete) {
+        cJSON_AddStringToObject(root, "error", r->input_error);
+    }
     o = cJSON_AddObjectToObject(root, "log");
     cJSON_AddStringToObject(o, "path", r->path);
     cJSON_AddNumberToObject(o, "samples", (double)r->n);
@@ -261,8 +268,8 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
         int b;
         for (b = 0; b < r->segs.nb[k]; b++) {
             cJSON *bo = cJSON_CreateObject();
-            add_num(bo, "start_s", (double)r->segs.start[k][b] / r->rate_hz);
-            add_num(bo, "end_s", (double)(r->segs.start[k][b] + r->segs.n[k][b]) / r->rate_hz);
+            add_num(bo, "start_s", r->seg_start_s[k][b]);
+            add_num(bo, "end_s", r->seg_end_s[k][b]);
             cJSON_AddNumberToObject(bo, "samples", (double)r->segs.n[k][b]);
             cJSON_AddItemToArray(s, bo);
         }
@@ -356,7 +363,9 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
                 add_num(e, "z_held_out_before", r->tim.z[SG_HOLD][k]);
                 add_num(e, "z_held_out_after", r->tim.z_after[k]);
                 cJSON_AddBoolToObject(e, "held_out_within_noise", !r->tim.open[k]);
-                add_num(e, "first_event_s", r->tim.first_t[k]);
+                /* a jitter has no first event (it read 0, the zeroed
+                 * field, until 2026-11-29; the sgreport review) */
+                add_num(e, "first_event_s", k == SG_TIM_JITTER ? (double)NAN : r->tim.first_t[k]);
                 cJSON_AddItemToArray(a, e);
             }
         }
@@ -375,7 +384,16 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
             for (k = 0; k < c->nsteps; k++) {
                 if (c->step[k].selected >= 0) {
                     const sg_cand_t *cd = &c->step[k].cand[c->step[k].selected];
-                    int found = 0;
+                    int found = 0, kept = 0;
+                    /* an effect refitted to zero (sg_prune_zero) is no
+                     * answer here either: it was ranked, with no channel
+                     * (the sgreport review, 2026-11-29) */
+                    for (e2 = 0; e2 < c->nsel; e2++) {
+                        kept |= c->sel_id[e2] == cd->id;
+                    }
+                    if (!kept) {
+                        continue;
+                    }
                     for (e2 = 0; e2 < ne; e2++) {
                         found |= ids[e2] == cd->id;
                     }
@@ -450,7 +468,12 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
             }
             uo = cJSON_CreateObject();
             cJSON_AddStringToObject(uo, "channel", sg_channel_name(ch));
-            cJSON_AddStringToObject(uo, "reason", why == SG_UNCONF_NOT_HELD_OUT ? "not-held-out" : "no-effect");
+            /* not-tried: no effect of the catalogue was tried (--max-effects
+             * 0), as the summary says; it read no-effect, "a held-out gap no
+             * candidate reduces" (the sgreport review) */
+            cJSON_AddStringToObject(uo, "reason", why == SG_UNCONF_NOT_HELD_OUT
+                                                      ? "not-held-out"
+                                                      : (r->ch[ch].nsteps == 0 ? "not-tried" : "no-effect"));
             if (why == SG_UNCONF_NOT_HELD_OUT && lead != NULL) {
                 cJSON *lo = effect_json(&lead->eff, ch);
                 add_num(lo, "fit_dq", lead->dQ_fit);

@@ -35,6 +35,14 @@ static void fmt_u(char *b, size_t n, int ch, double v, const char *suffix)
     }
 }
 
+/* A fraction in percent for "%.0f": within half a percent of zero it is 0,
+ * where printf wrote "-0" (the sgreport review). */
+static double pct(double f)
+{
+    const double v = 100.0 * f;
+    return fabs(v) <= 0.5 ? 0.0 : v;
+}
+
 void sg_effect_text(char *b, size_t n, int ch, const sg_effect_t *e)
 {
     char u[96], u2[96];
@@ -136,7 +144,11 @@ static void print_static(FILE *f, const sg_result_t *r)
         sg_effect_text(a, sizeof a, ch, &c->baseline.e[ia]);
         fprintf(f, "  %s  %s, %s\n", sg_channel_name(ch), w, a);
     }
-    fprintf(f, "gap of the baseline twin (%d seeds; G = mean z^2, about 1 when the twin explains the data):\n", r->S);
+    /* G as computed (section 3), not "mean z^2", which a reader of the
+     * JSON's points got otherwise (the sgreport review) */
+    fprintf(f, "gap of the baseline twin (%d seeds; G = mean over the domains of their mean z^2 (|z| capped at %g), "
+               "about 1 when the twin explains the data):\n",
+            r->S, SG_ZCAP);
     for (ch = 0; ch < SG_NCH; ch++) {
         const sg_chres_t *c = &r->ch[ch];
         if (!c->active) {
@@ -219,7 +231,10 @@ static void print_static(FILE *f, const sg_result_t *r)
         if (c->nsteps == 0) {
             /* --max-effects 0 (this line could not be reached: the test
              * above skipped the channel first; a review, 2026-11-28) */
-            fprintf(f, "  not attempted%s\n", r->opts.max_steps == 0 ? " (--max-effects 0)" : "");
+            /* and a log too short for a confident answer, which said a
+             * bare "not attempted" (the sgreport review) */
+            fprintf(f, "  not attempted%s\n", r->opts.max_steps == 0 ? " (--max-effects 0)"
+                                               : (!r->confident ? " (too short for a confident answer)" : ""));
         }
         for (i = 0; i < c->nsteps; i++) {
             const sg_step_t *st = &c->step[i];
@@ -231,7 +246,7 @@ static void print_static(FILE *f, const sg_result_t *r)
                     char ex[96];
                     if (cd->expl_hold == cd->expl_hold) {
                         snprintf(ex, sizeof ex, "explains %.0f %% of the excess (68 %%: %.0f..%.0f %%)",
-                                 100.0 * cd->expl_hold, 100.0 * cd->expl_lo, 100.0 * cd->expl_hi);
+                                 pct(cd->expl_hold), pct(cd->expl_lo), pct(cd->expl_hi));
                     } else {
                         snprintf(ex, sizeof ex, "no held-out excess to explain");
                     }
@@ -332,18 +347,33 @@ static void print_unconfirmed(FILE *f, const sg_result_t *r)
     }
 }
 
+/* The forward-selection step (0-based) at which effect id was accepted on
+ * channel c, or -1. */
+static int sel_step(const sg_chres_t *c, int id)
+{
+    int k;
+    for (k = 0; k < c->nsteps; k++) {
+        if (c->step[k].selected >= 0 && c->step[k].cand[c->step[k].selected].id == id) {
+            return k;
+        }
+    }
+    return -1;
+}
+
 void sg_print_summary(FILE *f, const sg_result_t *r)
 {
     debug_points(f, r);
     int ch, i, d;
     char b[256];
+    /* %.3g: --fit-frac 0.25 read "the first and last 12 %, held out the
+     * middle 75 %" with %.0f (the sgreport review) */
     if (r->segs.sandwich) {
-        fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first and last %.0f %%, held out the "
-                   "middle %.0f %%\n",
+        fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first and last %.3g %%, held out the "
+                   "middle %.3g %%\n",
                 r->path, r->domain == 1 ? "static" : "walk", r->n, r->rate_hz, r->duration_s,
                 50.0 * r->opts.fit_frac, 100.0 * (1.0 - r->opts.fit_frac));
     } else {
-        fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first %.0f %%, held out the last %.0f %%\n",
+        fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first %.3g %%, held out the last %.3g %%\n",
                 r->path, r->domain == 1 ? "static" : "walk", r->n, r->rate_hz, r->duration_s, 100.0 * r->opts.fit_frac,
                 100.0 * (1.0 - r->opts.fit_frac));
     }
@@ -398,11 +428,17 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
                 if (k >= 0) {
                     sg_effect_text(b, sizeof b, ch, &m->e[k]);
                     if (r->ch[ch].sel_expl[i] == r->ch[ch].sel_expl[i]) {
-                        fprintf(f, "%s %s on %s (%.0f %% of the held-out excess)", first ? ":" : ";", b,
-                                sg_channel_name(ch), 100.0 * r->ch[ch].sel_expl[i]);
+                        /* an effect accepted after others explains a share
+                         * of the excess they left, not of the baseline's:
+                         * "99 %" then "68 % of the held-out excess" on one
+                         * channel read as 167 % (the sgreport review) */
+                        fprintf(f, "%s %s on %s (%.0f %% of the held-out excess%s)", first ? ":" : ";", b,
+                                sg_channel_name(ch), pct(r->ch[ch].sel_expl[i]),
+                                sel_step(&r->ch[ch], r->ch[ch].sel_id[i]) > 0
+                                    ? " left by the effects accepted before it" : "");
                     } else {
-                        fprintf(f, "%s %s on %s (no excess in the held-out middle to explain)", first ? ":" : ";",
-                                b, sg_channel_name(ch));
+                        fprintf(f, "%s %s on %s (no excess in the held-out %s to explain)", first ? ":" : ";", b,
+                                sg_channel_name(ch), r->segs.sandwich ? "middle" : "segment");
                     }
                     first = 0;
                 }

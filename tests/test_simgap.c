@@ -12,8 +12,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <cjson/cJSON.h>
 #include <cmocka.h>
 #include <gsl/gsl_linalg.h>
+#include <unistd.h>
 
 #include "footnav/fnav_profile.h"
 #include "hx_simgap.h"
@@ -974,6 +976,394 @@ static void test_prune_zero(void **state)
     assert_int_equal(c.zero_id[0], FNAV_EFFECT_JUMPS);
 }
 
+/* ------------------------------------------------------------ reports */
+
+/* A static result by hand: channel ax analysed with a baseline of white
+ * noise and an AR(1) of sigma 0 (none), and two effects accepted in turn,
+ * jumps (held-out gap reduction 5) then vibration (3), the jumps refitted
+ * to a magnitude of 0 once the vibration joined (sg_prune_zero). The other
+ * channels are not analysed. Freed with free(). */
+static sg_result_t *hand_result(void)
+{
+    sg_result_t *r = (sg_result_t *)calloc(1, sizeof *r);
+    sg_chres_t *c;
+    sg_effect_t w, a, j, v;
+    assert_non_null(r);
+    snprintf(r->path, sizeof r->path, "hand.csv");
+    r->complete = 1;
+    r->domain = r->domain_detected = 1;
+    r->rate_hz = 100.0;
+    r->n = 60000;
+    r->duration_s = 600.0;
+    r->confident = 1;
+    r->S = 8;
+    r->opts = sg_opts_default();
+    snprintf(r->verdict, sizeof r->verdict, "explained");
+    memset(&w, 0, sizeof w);
+    w.id = FNAV_EFFECT_WHITE;
+    w.p[0] = 0.003;
+    a = w;
+    a.id = FNAV_EFFECT_AR1;
+    a.p[0] = 1.0; /* tau_s: meaningless without a sigma */
+    a.p[1] = 0.0; /* sigma */
+    j = w;
+    j.id = FNAV_EFFECT_JUMPS;
+    j.p[0] = 10.0 / 3600.0;
+    j.p[1] = 0.00875;
+    v = w;
+    v.id = FNAV_EFFECT_VIBRATION;
+    v.p[0] = 0.0096;
+    v.p[1] = 0.56;
+    c = &r->ch[0];
+    c->active = 1;
+    assert_int_equal(sg_model_set(&c->baseline, &w), 0);
+    assert_int_equal(sg_model_set(&c->baseline, &a), 0);
+    c->final = c->baseline;
+    j.p[1] = 0.0; /* the final refit's rms step */
+    assert_int_equal(sg_model_set(&c->final, &j), 0);
+    assert_int_equal(sg_model_set(&c->final, &v), 0);
+    j.p[1] = 0.00875; /* as fitted at its step */
+    c->nsteps = 2;
+    c->step[0].ncand = 1;
+    c->step[0].selected = 0;
+    c->step[0].cand[0].id = FNAV_EFFECT_JUMPS;
+    c->step[0].cand[0].eff = j;
+    c->step[0].cand[0].simulated = 1;
+    c->step[0].cand[0].dG_rank = 5.0;
+    c->step[1].ncand = 1;
+    c->step[1].selected = 0;
+    c->step[1].cand[0].id = FNAV_EFFECT_VIBRATION;
+    c->step[1].cand[0].eff = v;
+    c->step[1].cand[0].simulated = 1;
+    c->step[1].cand[0].dG_rank = 3.0;
+    c->nsel = 2;
+    c->sel_id[0] = FNAV_EFFECT_JUMPS;
+    c->sel_id[1] = FNAV_EFFECT_VIBRATION;
+    c->sel_expl[0] = c->sel_lo[0] = c->sel_hi[0] = 0.13;
+    c->sel_expl[1] = c->sel_lo[1] = c->sel_hi[1] = 0.29;
+    c->within_noise = 1;
+    sg_prune_zero(c);
+    return r;
+}
+
+/* sg_write_json's document of r, parsed (cJSON_Delete it). */
+static cJSON *json_of(const sg_result_t *r)
+{
+    char path[] = "/tmp/test_simgap_jsonXXXXXX", err[256], *txt;
+    int fd = mkstemp(path);
+    long len;
+    FILE *f;
+    cJSON *j;
+    assert_true(fd >= 0);
+    close(fd);
+    assert_int_equal(sg_write_json(r, path, err, sizeof err), 0);
+    f = fopen(path, "rb");
+    assert_non_null(f);
+    assert_int_equal(fseek(f, 0, SEEK_END), 0);
+    len = ftell(f);
+    assert_true(len > 0);
+    rewind(f);
+    txt = (char *)malloc((size_t)len + 1);
+    assert_non_null(txt);
+    assert_int_equal(fread(txt, 1, (size_t)len, f), (size_t)len);
+    txt[len] = '\0';
+    fclose(f);
+    remove(path);
+    j = cJSON_Parse(txt);
+    free(txt);
+    assert_non_null(j);
+    return j;
+}
+
+/* An effect accepted at its step and refitted to zero is no answer: the
+ * JSON's ranked effects[] leaves it out as the verdict and selected[] do.
+ * Until 2026-11-29 effects[] ranked it first (rank 1, its step's gap
+ * reduction 5) with an empty channels[] (the sgreport review). */
+static void test_json_effects_leave_out_refitted_to_zero(void **state)
+{
+    sg_result_t *r = hand_result();
+    cJSON *j, *e, *ve;
+    (void)state;
+    assert_int_equal(r->ch[0].nsel, 1);
+    j = json_of(r);
+    e = cJSON_GetObjectItem(j, "effects");
+    assert_int_equal(cJSON_GetArraySize(e), 1);
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(e, 0), "effect")->valuestring, "vibration");
+    assert_int_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(e, 0), "rank")->valueint, 1);
+    assert_true(cJSON_GetObjectItem(cJSON_GetArrayItem(e, 0), "held_out_gap_reduction")->valuedouble == 3.0);
+    assert_int_equal(cJSON_GetArraySize(cJSON_GetObjectItem(cJSON_GetArrayItem(e, 0), "channels")), 1);
+    ve = cJSON_GetObjectItem(cJSON_GetObjectItem(j, "verdict"), "effects");
+    assert_int_equal(cJSON_GetArraySize(ve), 1);
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(ve, 0), "effect")->valuestring, "vibration");
+    cJSON_Delete(j);
+    free(r);
+}
+
+/* An AR(1) of sigma 0 is no bias process: its tau means nothing and is
+ * null wherever the JSON gives it, as the baseline's ar1_tau_s and the
+ * summary's "ar1 (none: sigma 0)" say. Until 2026-11-29 final_model[] gave
+ * it as a number (1 s) beside the baseline's null (the sgreport review, on
+ * two minutes of ADIS unit 1, gz). */
+static void test_json_ar1_tau_null_without_sigma(void **state)
+{
+    sg_result_t *r = hand_result();
+    cJSON *j, *ch, *fm, *p = NULL;
+    int i;
+    (void)state;
+    j = json_of(r);
+    ch = cJSON_GetArrayItem(cJSON_GetObjectItem(j, "channels"), 0);
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(cJSON_GetObjectItem(ch, "baseline"), "ar1_tau_s")));
+    fm = cJSON_GetObjectItem(cJSON_GetObjectItem(ch, "attribution"), "final_model");
+    for (i = 0; i < cJSON_GetArraySize(fm); i++) {
+        if (strcmp(cJSON_GetObjectItem(cJSON_GetArrayItem(fm, i), "effect")->valuestring, "ar1") == 0) {
+            p = cJSON_GetArrayItem(fm, i);
+        }
+    }
+    assert_non_null(p);
+    assert_true(cJSON_GetObjectItem(cJSON_GetObjectItem(p, "params"), "sigma")->valuedouble == 0.0);
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(cJSON_GetObjectItem(p, "params"), "tau_s")));
+    cJSON_Delete(j);
+    free(r);
+}
+
+/* The fit segment's explained fraction (the JSON's explained_fit) is
+ * undefined without an excess on the fit segment, as the held-out one is:
+ * null, not 0 ("explains nothing"), which is what a candidate that moves
+ * G_fit from 0.9 to 0.5 under a null mean of 1 was given until 2026-11-29
+ * (the sgreport review). */
+static void test_fit_explained_undefined_without_excess(void **state)
+{
+    (void)state;
+    assert_true(fabs(sg_fit_explained(7.0, 1.0, 4.0) - 0.5) < 1e-15);
+    assert_true(fabs(sg_fit_explained(7.0, 1.0, 10.0) + 0.5) < 1e-15);
+    assert_true(isnan(sg_fit_explained(0.9, 1.0, 0.5)));
+    assert_true(isnan(sg_fit_explained(1.0, 1.0, 0.5)));
+    assert_true(isnan(sg_fit_explained((double)NAN, 1.0, 0.5)));
+}
+
+/* sg_print_summary's text of r (free() it). */
+static char *summary_of(const sg_result_t *r)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    assert_non_null(f);
+    sg_print_summary(f, r);
+    assert_int_equal(fclose(f), 0);
+    assert_non_null(buf);
+    return buf;
+}
+
+/* The verdict's explained fraction of an effect accepted at a later step is
+ * of the excess the earlier effects left, as docs/simgap-results.md says,
+ * not of the baseline's: on two minutes of ADIS unit 1 the summary read
+ * "quant ... on ax (99 % of the held-out excess); vibration ... on ax (68 %
+ * of the held-out excess)", 167 % of one excess (the sgreport review,
+ * 2026-11-29). Here vibration was accepted at step 2, after jumps. */
+static void test_summary_later_step_fraction_of_what_is_left(void **state)
+{
+    sg_result_t *r = hand_result();
+    char *txt;
+    (void)state;
+    r->ch[0].sel_expl[0] = 0.29;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "on ax (29 % of the held-out excess left by the effects accepted before it)"));
+    free(txt);
+    /* at the first step: of the whole excess, as before */
+    r->ch[0].step[0].selected = -1;
+    r->ch[0].step[1].cand[0].id = FNAV_EFFECT_VIBRATION;
+    r->ch[0].step[0] = r->ch[0].step[1];
+    r->ch[0].nsteps = 1;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "on ax (29 % of the held-out excess)"));
+    free(txt);
+    free(r);
+}
+
+/* A jitter has no first event: timing.selected[]'s first_event_s is null
+ * for it, a time for a duplicate or a dropout. Until 2026-11-29 it was 0
+ * (the zeroed field), which read as an event at the log's first sample
+ * (the NGIMU short walk: first_event_s 0 for jitter; the sgreport review). */
+static void test_json_jitter_has_no_first_event(void **state)
+{
+    sg_result_t *r = hand_result();
+    cJSON *j, *sel;
+    int i, seen = 0;
+    (void)state;
+    r->tim.have = 1;
+    r->tim.significant = 1;
+    r->tim.sel[SG_TIM_DROP] = r->tim.sel[SG_TIM_JITTER] = 1;
+    r->tim.first_t[SG_TIM_DUP] = (double)NAN;
+    r->tim.first_t[SG_TIM_DROP] = 12.5;
+    r->tim.stamp_s = 2e-7;
+    j = json_of(r);
+    sel = cJSON_GetObjectItem(cJSON_GetObjectItem(j, "timing"), "selected");
+    assert_int_equal(cJSON_GetArraySize(sel), 2);
+    for (i = 0; i < 2; i++) {
+        const cJSON *e = cJSON_GetArrayItem(sel, i);
+        const char *name = cJSON_GetObjectItem(e, "effect")->valuestring;
+        if (strcmp(name, "jitter") == 0) {
+            assert_true(cJSON_IsNull(cJSON_GetObjectItem(e, "first_event_s")));
+            seen |= 1;
+        } else {
+            assert_string_equal(name, "dropout");
+            assert_true(cJSON_GetObjectItem(e, "first_event_s")->valuedouble == 12.5);
+            seen |= 2;
+        }
+    }
+    assert_int_equal(seen, 3);
+    cJSON_Delete(j);
+    free(r);
+}
+
+/* An accepted effect without a held-out excess to explain is said against
+ * the split used: the held-out middle of a sandwich split, the held-out
+ * segment (the log's last part) of a contiguous one. Until 2026-11-29 the
+ * verdict said "the held-out middle" under --contiguous too (the sgreport
+ * review). */
+static void test_summary_no_excess_names_the_split(void **state)
+{
+    sg_result_t *r = hand_result();
+    char *txt;
+    (void)state;
+    r->ch[0].sel_expl[0] = (double)NAN;
+    r->segs.sandwich = 1;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "on ax (no excess in the held-out middle to explain)"));
+    free(txt);
+    r->segs.sandwich = 0;
+    r->opts.contiguous = 1;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "on ax (no excess in the held-out segment to explain)"));
+    free(txt);
+    free(r);
+}
+
+/* A fraction within half a percent of zero is printed as 0 %, not -0 %: a
+ * candidate that explains -0.1 % of the held-out excess (68 %: -0.4 to
+ * 0.2 %) read "explains -0 % of the excess (68 %: -0..0 %)" until
+ * 2026-11-29 (two minutes of ADIS unit 1; the sgreport review). */
+static void test_summary_no_negative_zero_percent(void **state)
+{
+    sg_result_t *r = hand_result();
+    sg_cand_t *cd = &r->ch[0].step[0].cand[0];
+    char *txt;
+    (void)state;
+    cd->expl_hold = -0.001;
+    cd->expl_lo = -0.004;
+    cd->expl_hi = 0.002;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "explains 0 % of the excess (68 %: 0..0 %)"));
+    assert_null(strstr(txt, "-0 %"));
+    assert_null(strstr(txt, "-0.."));
+    free(txt);
+    free(r);
+}
+
+/* A channel with a gap but no attribution says why: --max-effects 0, or a
+ * log too short for a confident answer, where it said a bare "not
+ * attempted" until 2026-11-29 (two seconds of ADIS unit 1, every channel;
+ * the sgreport review). */
+static void test_summary_not_attempted_says_why(void **state)
+{
+    sg_result_t *r = hand_result();
+    char *txt;
+    (void)state;
+    r->ch[0].nsteps = 0;
+    r->ch[0].nsel = 0;
+    r->ch[0].nzero = 0;
+    r->ch[0].gap = 1;
+    r->confident = 0;
+    snprintf(r->why, sizeof r->why, "too short");
+    snprintf(r->verdict, sizeof r->verdict, "too-short");
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "  not attempted (too short for a confident answer)\n"));
+    free(txt);
+    r->confident = 1;
+    r->opts.max_steps = 0;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "  not attempted (--max-effects 0)\n"));
+    free(txt);
+    free(r);
+}
+
+/* The summary's definition of G is the one computed (docs/simgap.md,
+ * section 3): the mean over the domains of each domain's mean of z^2 capped
+ * at SG_ZCAP^2, not the mean z^2 over the points, which it said until
+ * 2026-11-29 (two minutes of ADIS unit 1, ax: G 411.5, mean z^2 of the
+ * JSON's points 380.5, their domain mean of capped z^2 411.5, numpy; the
+ * sgreport review). */
+static void test_summary_defines_g_as_computed(void **state)
+{
+    sg_result_t *r = hand_result();
+    char *txt;
+    (void)state;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "; G = mean over the domains of their mean z^2 (|z| capped at 40), about 1 when "
+                                "the twin explains the data):\n"));
+    assert_null(strstr(txt, "G = mean z^2,"));
+    free(txt);
+    free(r);
+}
+
+/* A held-out gap on a channel where no effect was tried (--max-effects 0)
+ * is said as such in the JSON too: verdict.unconfirmed[]'s reason is
+ * "not-tried", where the summary says "no effect of the catalogue was
+ * tried"; until 2026-11-29 it was "no-effect", documented as a gap that no
+ * candidate reduces (two minutes of ADIS unit 1 with --max-effects 0; the
+ * sgreport review). */
+static void test_json_unconfirmed_not_tried(void **state)
+{
+    sg_result_t *r = hand_result();
+    sg_chres_t *c = &r->ch[0];
+    cJSON *j, *u;
+    (void)state;
+    c->nsteps = c->nsel = c->nzero = 0;
+    c->gap = c->gap_hold = c->gap_full = 1;
+    c->within_noise = 0;
+    r->opts.max_steps = 0;
+    snprintf(r->verdict, sizeof r->verdict, "unexplained");
+    j = json_of(r);
+    u = cJSON_GetObjectItem(cJSON_GetObjectItem(j, "verdict"), "unconfirmed");
+    assert_int_equal(cJSON_GetArraySize(u), 1);
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(u, 0), "channel")->valuestring, "ax");
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(u, 0), "reason")->valuestring, "not-tried");
+    cJSON_Delete(j);
+    /* with candidates tried and none accepted: no-effect, as before */
+    c->nsteps = 1;
+    c->step[0].selected = -1;
+    j = json_of(r);
+    u = cJSON_GetObjectItem(cJSON_GetObjectItem(j, "verdict"), "unconfirmed");
+    assert_string_equal(cJSON_GetObjectItem(cJSON_GetArrayItem(u, 0), "reason")->valuestring, "no-effect");
+    cJSON_Delete(j);
+    free(r);
+}
+
+/* The summary's split percentages are not rounded apart: --fit-frac 0.25
+ * read "fit on the first and last 12 %, held out the middle 75 %", 99 %
+ * of the log, until 2026-11-29 (the sgreport review). */
+static void test_summary_split_percentages_add_up(void **state)
+{
+    sg_result_t *r = hand_result();
+    char *txt;
+    (void)state;
+    r->segs.sandwich = 1;
+    r->opts.fit_frac = 0.25;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "fit on the first and last 12.5 %, held out the middle 75 %\n"));
+    free(txt);
+    r->opts.fit_frac = 0.6;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "fit on the first and last 30 %, held out the middle 40 %\n"));
+    free(txt);
+    r->segs.sandwich = 0;
+    r->opts.fit_frac = 0.333;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "fit on the first 33.3 %, held out the last 66.7 %\n"));
+    free(txt);
+    free(r);
+}
+
 /* The validation's summary over many cases: the medians of the parameter
  * error and of the shrink are those of every case (they were taken over a
  * class's first 1024 cases only). 1000 static cases with error 0.01 and
@@ -1068,6 +1458,17 @@ int main(void)
         cmocka_unit_test(test_toeplitz_nll2),
         cmocka_unit_test(test_bm_fit),
         cmocka_unit_test(test_prune_zero),
+        cmocka_unit_test(test_json_effects_leave_out_refitted_to_zero),
+        cmocka_unit_test(test_json_ar1_tau_null_without_sigma),
+        cmocka_unit_test(test_fit_explained_undefined_without_excess),
+        cmocka_unit_test(test_summary_later_step_fraction_of_what_is_left),
+        cmocka_unit_test(test_json_jitter_has_no_first_event),
+        cmocka_unit_test(test_summary_no_excess_names_the_split),
+        cmocka_unit_test(test_summary_no_negative_zero_percent),
+        cmocka_unit_test(test_summary_not_attempted_says_why),
+        cmocka_unit_test(test_summary_defines_g_as_computed),
+        cmocka_unit_test(test_json_unconfirmed_not_tried),
+        cmocka_unit_test(test_summary_split_percentages_add_up),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),
         cmocka_unit_test(test_fit_ar1_in_catalogue),

@@ -175,6 +175,11 @@ expect_err "^harness simgap: error: " "noise-free still log as a walk: an error 
 expect_exit 1 "CSV with text at line 302" "$H" simgap "$T/tx2.csv" --quiet --seeds 4 --json "$T/tx2.json"
 expect_err "^harness simgap: error: .*tx2.csv:302: " "text in the CSV: error line with FILE:LINE"
 [ -s "$T/tx2.json" ] && pass "text in the CSV: JSON still written" || fail "text in the CSV: no JSON"
+# the JSON says the input stopped early, as replay's, info's and psd's do
+# (it had no key for it: a log cut at a bad line read as a whole one; the
+# sgreport review, 2026-11-29)
+json "$T/tx2.json" 'j["complete"] is False and "tx2.csv:302" in j["error"] and j["log"]["samples"] == 300' &&
+    pass "text in the CSV: JSON complete false, error names FILE:LINE" || fail "text in the CSV: JSON complete/error: $(cat "$T/pyerr")"
 head -c 50000 "$(dirname "$0")/../../vectors/walk.bin" > "$T/trunc.bin"
 expect_exit 1 "truncated .bin" "$H" simgap "$T/trunc.bin" --quiet --seeds 4
 expect_err "^harness simgap: error: .*trunc.bin: truncated" "truncated .bin: error line"
@@ -196,7 +201,7 @@ json "$T/hr.json" 'all(c["baseline"]["ar1_tau_s"] >= 0.001 and c["baseline"]["ar
 head -n 1 "$T/q.csv" | grep -q '^t,ax,ay,az,gx,gy,gz$' && pass "CSV input header" || fail "CSV header"
 expect_exit 0 "static log with quantisation" "$H" simgap "$T/q.csv" --quiet --seeds 8 --json "$T/q.json" --plot "$T/qp"
 grep -q "^verdict: explained: quant" "$T/out" && pass "summary names quant" || fail "summary: $(grep verdict "$T/out")"
-json "$T/q.json" 'j["schema"] == "footnav-simgap/1" and j["log"]["domain"] == "static" and j["log"]["domain_from"] == "detected"' &&
+json "$T/q.json" 'j["schema"] == "footnav-simgap/1" and j["log"]["domain"] == "static" and j["log"]["domain_from"] == "detected" and j["complete"] is True and "error" not in j' &&
     pass "JSON schema and domain" || fail "JSON schema/domain: $(cat "$T/pyerr")"
 json "$T/q.json" 'j["verdict"]["answer"] == "explained" and j["verdict"]["unconfirmed"] == [] and j["effects"][0]["effect"] == "quant" and j["effects"][0]["rank"] == 1 and [c["channel"] for c in j["effects"][0]["channels"]] == ["gz"]' &&
     pass "quant ranked first, on gz only" || fail "ranked effects: $(cat "$T/pyerr")"
@@ -204,6 +209,11 @@ json "$T/q.json" 'abs(j["effects"][0]["channels"][0]["params"]["lsb"] / 0.001 - 
     pass "LSB within 1 %, held-out gap explained >= 70 %" || fail "quant parameters: $(cat "$T/pyerr")"
 json "$T/q.json" '[c["channel"] for c in j["channels"] if c["gap_significant"]] == ["gz"] and any(l["channel"] == "gz" and l["domain"] == "lattice" for l in j["locations"])' &&
     pass "gap located on gz, lattice domain" || fail "locations: $(cat "$T/pyerr")"
+# a lattice location's ratio is real - twin of the lattice score, as for the
+# time domain (docs/simgap.md called it real/twin until 2026-11-29; the
+# sgreport review)
+json "$T/q.json" 'len([l for l in j["locations"] if l["domain"] == "lattice"]) >= 1 and all(abs(l["ratio"] - (p["real"] - p["twin"])) < 1e-6 * (1 + abs(l["ratio"])) for l in j["locations"] if l["domain"] == "lattice" for c in j["channels"] if c["channel"] == l["channel"] for p in c["points"]["full"] if p["domain"] == "lattice")' &&
+    pass "lattice location: ratio is real - twin" || fail "lattice location ratio: $(cat "$T/pyerr")"
 json "$T/q.json" 'all(c["attribution"]["within_noise"] for c in j["channels"])' &&
     pass "remaining gap within noise on every channel" || fail "within noise: $(cat "$T/pyerr")"
 json "$T/q.json" 'j["split"]["method"].startswith("sandwich") and all(abs(cd["z"] - (cd["z_held_out_middle"] + cd["z_held_out_ends"]) / 2 ** 0.5) < 1e-6 * (1 + abs(cd["z"])) for c in j["channels"] for s in c["attribution"]["steps"] for cd in s["candidates"] if cd["simulated"] and cd["z_held_out_ends"] is not None) and any(cd["effect"] == "quant" and cd["selected"] and cd["z_held_out_ends"] is not None and cd["z_held_out_middle"] > 0 and cd["z_held_out_ends"] > 0 for s in j["channels"][5]["attribution"]["steps"] for cd in s["candidates"])' &&
@@ -282,6 +292,18 @@ expect_exit 0 "walk log" "$H" simgap "$T/w.csv" --quiet --seeds 6 --json "$T/w.j
 json "$T/w.json" 'j["log"]["domain"] == "walk" and j["log"]["domain_from"] == "detected" and j["navigation"]["stances_held_out"] >= 10 and "model_gap" in j["navigation"] and j["verdict"]["answer"] == "none"' &&
     pass "walk detected, navigation domain in the JSON, no sensor effect claimed" || fail "walk JSON: $(cat "$T/pyerr")"
 [ -s "$T/wp/innovations.png" ] && pass "innovation plot" || fail "innovation plot: $(ls "$T/wp" 2>&1)"
+# the split's blocks are timed by the log's stamps, as the navigation
+# windows are: with 15-25 s cut out, the held-out segment's first sample
+# (index 1800 of 3001) is at 28 s, where index / rate said 18 s until
+# 2026-11-29 (the sgreport review); too short a walk, but the JSON is written
+awk -F, 'NR == 1 || $1 < 15 || $1 >= 25' "$T/w.csv" > "$T/wgap.csv"
+"$H" simgap "$T/wgap.csv" --quiet --seeds 3 --json "$T/wgap.json" >/dev/null 2>&1
+json "$T/wgap.json" 'j["split"]["held_out"][0]["samples"] == 1201 and abs(j["split"]["held_out"][0]["start_s"] - 28.0) < 1e-6 and j["split"]["fit"][0]["end_s"] == j["split"]["held_out"][0]["start_s"] and abs(j["split"]["held_out"][0]["end_s"] - 40.01) < 1e-6' &&
+    pass "walk with a gap: the split's times are the stamps'" || fail "split times: $(cat "$T/pyerr")"
+# and its duration is the stamps' span plus a period (n / rate said 30.01 s
+# until 2026-11-29, in the JSON and the summary's first line; the sgreport review)
+json "$T/wgap.json" 'abs(j["log"]["duration_s"] - 40.01) < 1e-6 and j["log"]["samples"] == 3001' &&
+    pass "walk with a gap: its duration from the stamps" || fail "duration: $(cat "$T/pyerr")"
 # an option of the other domain is said to be ignored, not dropped silently
 # (--contiguous on a walk, --closed on a static log; a review, 2026-11-29)
 expect_exit 0 "walk with --contiguous" "$H" simgap "$T/w.csv" --quiet --seeds 3 --contiguous
