@@ -763,6 +763,7 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         static const char *const names[8] = { NULL, "acc_x_g", "acc_y_g", "acc_z_g",
                                               "gyro_x_dps", "gyro_y_dps", "gyro_z_dps", NULL };
         r->time_mode = TIME_INDEX;
+        m->stamps_made = 1;
         r->rate_hz = rate_hz > 0.0 ? rate_hz : 100.0;
         r->acc_scale = 9.80665;
         r->gyr_scale = 3.14159265358979323846 / 180.0;
@@ -829,6 +830,7 @@ static int setup_text(hx_reader_t *r, double rate_hz)
     }
     case HX_FMT_OS820:
         r->time_mode = TIME_INDEX;
+        m->stamps_made = 1;
         r->delim = '\0'; /* chosen on the first line (next_text_fields) */
         r->rate_hz = rate_hz > 0.0 ? rate_hz : 820.0;
         set_cols(r, -1, 0, 3);

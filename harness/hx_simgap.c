@@ -146,7 +146,10 @@ static void timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *seg
     double res = 1.0, s0_ns;
     memset(t, 0, sizeof *t);
     t->first_t[SG_TIM_DUP] = t->first_t[SG_TIM_DROP] = (double)NAN;
-    if (lg->n < 16 || lg->t_ns == NULL) {
+    if (lg->n < 16 || lg->t_ns == NULL || lg->meta.stamps_made) {
+        /* a format without stamps (ADIS16405, OpenShoe 820 Hz): the stamps
+         * are index / rate, with nothing to analyse (reported as a clean
+         * clock with a 0.01 s resolution; the sgreport review) */
         return;
     }
     /* resolution: the largest decade of ns that divides every stamp offset */
@@ -1552,6 +1555,7 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
         }
     }
     timing_analyse(log, r->rate_hz, &r->segs, r->opts.alpha, &r->tim);
+    r->stamps_made = log->meta.stamps_made;
     if (r->domain == 1) {
         rc = diagnose_static(log, r, err, err_size);
     } else {

@@ -647,6 +647,7 @@ typedef struct {
     double *sh_final[SG_NCH][SG_NSEG];   /**< ... final model */
     int S;
     sg_timing_t tim;
+    int stamps_made;           /**< the log's format has no time stamps (hx_meta_t.stamps_made): timing not analysed */
     size_t nloc;
     sg_loc_t loc[512];        /**< whole log and held out, every channel (64 until 2026-11-28: the
                                    last channels' were dropped without a word) */

@@ -332,6 +332,7 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
     }
     o = cJSON_AddObjectToObject(root, "timing");
     cJSON_AddBoolToObject(o, "has_stamps", r->tim.have);
+    cJSON_AddBoolToObject(o, "stamps_made_from_rate", r->stamps_made);
     if (r->tim.have) {
         static const char *const nm[SG_TIM_NKIND] = { "duplicate", "dropout", "jitter" };
         cJSON *cnt = cJSON_AddObjectToObject(o, "counts");

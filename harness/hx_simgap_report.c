@@ -404,6 +404,9 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
     } else if (r->nav != NULL) {
         sg_nav_print((const sg_nav_t *)r->nav, f, r);
     }
+    if (!r->tim.have && r->stamps_made) {
+        fprintf(f, "timing: the log has no time stamps (the format's are the line index / rate): not analysed\n");
+    }
     if (r->tim.have) {
         static const char *const nm[SG_TIM_NKIND] = { "duplicated samples", "dropped samples", "time-stamp jitter" };
         fprintf(f, "timing: %ld duplicated, %ld dropped, interval sd %.3g s (stamp resolution %.3g s)\n",

@@ -466,9 +466,15 @@ PY
 progress_ok "$T/err" && pass "stuck channel: progress reaches 100 % at the end" || fail "progress: $(grep '^simgap:' "$T/err" | tr '\n' ' ')"
 if [ -n "$D" ] && [ -f "$D/adis16405_static/adis16405_imu1_100Hz.csv.gz" ]; then
     gzip -dc "$D/adis16405_static/adis16405_imu1_100Hz.csv.gz" 2>/dev/null | head -n 12001 > "$T/adis2m.csv"
-    expect_exit 0 "two minutes of the ADIS16405" "$H" simgap "$T/adis2m.csv" --from adis
+    expect_exit 0 "two minutes of the ADIS16405" "$H" simgap "$T/adis2m.csv" --from adis --json "$T/adis2m.json"
     progress_ok "$T/err" && pass "ADIS16405, two minutes: progress reaches 100 % at the end" ||
         fail "progress on the ADIS16405: $(grep '^simgap:' "$T/err" | tr '\n' ' ')"
+    # the format has no time stamps (index / rate): no timing to analyse; the
+    # made stamps were reported as a clean clock of 0.01 s resolution
+    expect_out "^timing: the log has no time stamps" "ADIS16405: no timing, said"
+    grep -q "stamp resolution" "$T/out" && fail "ADIS16405: made stamps analysed" || pass "ADIS16405: made stamps not analysed"
+    json "$T/adis2m.json" 'j["timing"]["has_stamps"] is False and j["timing"]["stamps_made_from_rate"] is True' &&
+        pass "ADIS16405 JSON: no stamps" || fail "ADIS16405 JSON timing: $(cat "$T/pyerr")"
 else
     echo "SKIP the ADIS16405 progress test (shared data not found; set FNAV_DATA_DIR)"
 fi
@@ -488,6 +494,8 @@ expect_err "^harness simgap: warning: .*channel ax does not vary within the held
 grep -q "TOO SHORT" "$T/out" && fail "stuck middle called too short" || pass "stuck middle: not called too short"
 json "$T/stm.json" 'j["confident"] and j["constant_channels"] == [] and j["constant_segments"] == [{"channel": "ax", "segment": "held_out", "value": 0.25}] and [c["analysed"] for c in j["channels"]] == [False] + [True] * 5 and all(len(c["attribution"]["steps"]) > 0 for c in j["channels"][1:]) and j["verdict"]["answer"] == "unexplained"' &&
     pass "stuck middle: the others diagnosed, the stuck part a gap" || fail "stuck middle JSON: $(cat "$T/pyerr")"
+json "$T/stm.json" 'j["timing"]["has_stamps"] is True and j["timing"]["stamps_made_from_rate"] is False' &&
+    pass "a CSV's own stamps: analysed" || fail "a CSV's stamps: $(cat "$T/pyerr")"
 [ -s "$T/stmplot/allan.png" ] && [ -s "$T/stmplot/psd.png" ] && [ -s "$T/stmplot/z.png" ] &&
     pass "stuck middle: plots written" || fail "stuck middle plots"
 awk -F, 'BEGIN { OFS = "," } NR > 1 && NR - 2 < 3602 { $2 = "0.25" } NR > 1 && NR - 2 >= 8399 { $2 = "0.26" } { print }' "$T/st.csv" > "$T/ste.csv"
