@@ -854,9 +854,13 @@ int hx_cmd_psd(int argc, char **argv)
                              "drawn",
                         log.n, spec_nfft);
             }
-            if (plot_psd(s, &res, a.pos[0], &st) != 0 || plot_ccdf(s, &res, a.pos[0], &bc) != 0 ||
-                (spec && plot_spectrogram(s, &log, spec_axis, (uint32_t)spec_nfft, rate, a.pos[0]) != 0) ||
-                (hx_flag(&a, "--sensitivity") && plot_sensitivity(s, fs_tab, have, rate, a.pos[0]) != 0)) {
+            /* the input's name goes into the titles as a gnuplot string (a
+             * quote in it ended the string: no plot; the plots review) */
+            char src[1024];
+            hx_gp_str(src, sizeof src, a.pos[0]);
+            if (plot_psd(s, &res, src, &st) != 0 || plot_ccdf(s, &res, src, &bc) != 0 ||
+                (spec && plot_spectrogram(s, &log, spec_axis, (uint32_t)spec_nfft, rate, src) != 0) ||
+                (hx_flag(&a, "--sensitivity") && plot_sensitivity(s, fs_tab, have, rate, src) != 0)) {
                 exit_code = HX_EXIT_IO;
             }
         }

@@ -108,6 +108,14 @@ expect_err "fewer samples (100) than one spectrogram segment (--spec-nfft 256)" 
 [ -s "$T/shortplots/psd.png" ] && [ -s "$T/shortplots/ccdf.png" ] && pass "short log: psd.png, ccdf.png" ||
     fail "short log: psd.png or ccdf.png missing"
 [ ! -e "$T/shortplots/spectrogram.png" ] && pass "short log: no spectrogram.png" || fail "short log: spectrogram.png written"
+# an input whose name has a quote: it went into the plots' titles unescaped, ended gnuplot's string, and --plot
+# exited 3 with psd.png drawn from a broken script and no ccdf.png (found by the plots review)
+cp "$T/tone.csv" "$T/it's.csv"
+expect_exit 0 "input named with a quote, --plot --sensitivity" "$H" psd "$T/it's.csv" --plot "$T/qplots" --sensitivity
+for f in psd ccdf spectrogram sensitivity; do
+    [ -s "$T/qplots/$f.png" ] && pass "quoted input: $f.png" || fail "quoted input: $f.png missing"
+done
+! grep -q "gnuplot>" "$T/err" && pass "quoted input: no gnuplot error" || fail "quoted input: gnuplot error"
 # a static log: every PSD value below 1 unit^2/Hz, so every dB value of the spectrogram is negative;
 # gnuplot's one-column stats dropped them all (outside the frequency axis' range) and --plot exited 3
 awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 6000; i++)
