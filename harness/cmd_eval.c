@@ -53,7 +53,7 @@ typedef struct {
     cJSON *json;
     int plots;            /* draw the figures (a directory and gnuplot are there) */
     char plot_dir[600];   /* where they go */
-    char plot_link[600];  /* the same as results.md links it */
+    char plot_link[1800]; /* the same as results.md links it (percent-encoded, md_link()) */
     hx_evplot_set_t fig;  /* the walks of the section being written */
     int ipol_fig;         /* eval-ipol.png was drawn (linked after the section's summary) */
 } ev_t;
@@ -1514,6 +1514,30 @@ static int rel_path(const char *from, const char *to, char *out, size_t size)
     return 0;
 }
 
+/* A relative path as a Markdown link destination: the bytes that end one
+ * or are not allowed in it (space and control characters, parentheses,
+ * angle brackets, backslash) and '%' itself percent-encoded ("my figs"
+ * was linked as written, which is no link: the figure was not shown). */
+static void md_link(const char *path, char *out, size_t size)
+{
+    static const char hex[] = "0123456789ABCDEF";
+    size_t o = 0;
+    for (; *path != '\0' && o + 1 < size; path++) {
+        const unsigned char c = (unsigned char)*path;
+        if (c <= 0x20u || c == 0x7fu || strchr("%()<>\\", (int)c) != NULL) {
+            if (o + 4 > size) {
+                break;
+            }
+            out[o++] = '%';
+            out[o++] = hex[c >> 4];
+            out[o++] = hex[c & 15u];
+        } else {
+            out[o++] = (char)c;
+        }
+    }
+    out[o] = '\0';
+}
+
 /* Draw the walks collected for a section into PLOTS/eval-NAME.png (closed
  * walks: paths and heights; strides: a panel per walk against the truth)
  * and link it from results.md under its caption; the set is emptied. */
@@ -1645,8 +1669,10 @@ int hx_cmd_eval(int argc, char **argv)
             if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
                 hx_warn("eval", "no figures: gnuplot is not installed (apt-get install gnuplot-nox)");
             } else {
+                char rel[600];
                 ev.plots = 1;
-                rel_path(md_dir, ev.plot_dir, ev.plot_link, sizeof ev.plot_link);
+                rel_path(md_dir, ev.plot_dir, rel, sizeof rel);
+                md_link(rel, ev.plot_link, sizeof ev.plot_link);
             }
         }
     }

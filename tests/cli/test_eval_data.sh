@@ -260,5 +260,18 @@ if [ -n "$D" ] && [ -f "$D/xio_ngimu_gait/short_walk.csv" ]; then
     else fail "experiment 1 paired row: $(grep '^| generic MEMS |' "$T/bx.md")"; fi
 fi
 
+# --- a figures' directory whose name has spaces and parentheses: results.md linked it as written, which is no
+# Markdown link (a destination ends at a space; the figure was not shown); it is percent-encoded (the plots review)
+if [ -n "$D" ]; then
+    mkdir -p "$T/sp/xio_ngimu_gait" "$T/sp md"
+    ln -s "$D/xio_ngimu_gait/short_walk.csv" "$T/sp/xio_ngimu_gait/short_walk.csv"
+    expect_exit 0 "eval --plots in a directory named with spaces" "$H" eval --no-experiments --data "$T/sp" \
+        --out "$T/sp md/r.md" --plots "$T/sp md/my figs (1)"
+    if grep -q '^!\[xio_ngimu_gait: paths and heights\](my%20figs%20%281%29/eval-xio.png)$' "$T/sp md/r.md" &&
+        head -c 8 "$T/sp md/my figs (1)/eval-xio.png" | grep -q PNG; then
+        pass "eval: a figure in a directory with spaces is drawn and linked percent-encoded"
+    else fail "eval: figure link $(grep -o '^!\[.*' "$T/sp md/r.md")"; fi
+fi
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]
