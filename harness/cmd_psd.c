@@ -324,7 +324,7 @@ static int block(FILE *gp, const char *name, const result_t *r, int c, int ccdf)
 static int plot_psd(const char *dir, const result_t *r, const char *src, const setting_t *st)
 {
     hx_plot_t p;
-    char path[600];
+    char path[HX_PLOT_PATH_SIZE];
     int g, c;
     snprintf(path, sizeof path, "%s/psd.png", dir);
     if (hx_plot_open(&p, CMD, path, 900, 700) != 0) {
@@ -368,7 +368,7 @@ static int plot_psd(const char *dir, const result_t *r, const char *src, const s
 static int plot_ccdf(const char *dir, const result_t *r, const char *src, const fnav_bandwidth_config_t *bc)
 {
     hx_plot_t p;
-    char path[600];
+    char path[HX_PLOT_PATH_SIZE];
     int g, c;
     snprintf(path, sizeof path, "%s/ccdf.png", dir);
     if (hx_plot_open(&p, CMD, path, 900, 700) != 0) {
@@ -417,7 +417,7 @@ static int plot_spectrogram(const char *dir, const hx_log_t *log, int c, uint32_
     static fnav_real_t col[FNAV_WELCH_MAX_BINS];
     fnav_welch_config_t cfg = fnav_welch_config_default;
     hx_plot_t p;
-    char path[600];
+    char path[HX_PLOT_PATH_SIZE];
     size_t i;
     uint32_t seen = 0, k, nb;
     cfg.nfft = nfft;
@@ -471,7 +471,7 @@ static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], con
                             const char *src)
 {
     hx_plot_t p;
-    char path[600];
+    char path[HX_PLOT_PATH_SIZE];
     int d, k;
     snprintf(path, sizeof path, "%s/sensitivity.png", dir);
     if (hx_plot_open(&p, CMD, path, 800, 500) != 0) {

@@ -515,8 +515,16 @@ int hx_plot_check(const char *cmd, const char *png_path)
 
 int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h)
 {
-    char q[1024];
+    /* the path as a gnuplot string: a quote doubles (a path was cut to 511
+     * bytes here and to 1023 in the string: gnuplot wrote another file, or
+     * this one and the check below looked for the cut name; the plots
+     * review) */
+    char q[2 * HX_PLOT_PATH_SIZE];
     memset(p, 0, sizeof *p);
+    if (strlen(png_path) >= sizeof p->path) {
+        hx_error(cmd, "cannot write %.80s...: the path is longer than %d bytes", png_path, HX_PLOT_PATH_SIZE - 1);
+        return -1;
+    }
     /* gnuplot writes the image to its standard output when it cannot open
      * the file: find out first, and keep its output away from ours */
     if (hx_plot_check(cmd, png_path) != 0) {

@@ -116,6 +116,15 @@ for f in psd ccdf spectrogram sensitivity; do
     [ -s "$T/qplots/$f.png" ] && pass "quoted input: $f.png" || fail "quoted input: $f.png missing"
 done
 ! grep -q "gnuplot>" "$T/err" && pass "quoted input: no gnuplot error" || fail "quoted input: gnuplot error"
+# a --plot directory with a long name (720 bytes, well under PATH_MAX): each picture's path was cut to 600 bytes by
+# psd and to 511 by the plot session, which then looked for the cut name: "gnuplot failed to write" and exit 3 with
+# psd.png drawn, and no other plot (found by the plots review)
+L=$T/$(printf '%0200d' 0)/$(printf '%0200d' 0)/$(printf '%0200d' 0)/$(printf '%0100d' 0)
+mkdir -p "$L"
+expect_exit 0 "a --plot directory with a 720-byte name" "$H" psd "$T/tone.csv" --plot "$L/p" --sensitivity
+for f in psd ccdf spectrogram sensitivity; do
+    [ -s "$L/p/$f.png" ] && pass "long directory: $f.png" || fail "long directory: $f.png missing"
+done
 # a static log: every PSD value below 1 unit^2/Hz, so every dB value of the spectrogram is negative;
 # gnuplot's one-column stats dropped them all (outside the frequency axis' range) and --plot exited 3
 awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 6000; i++)
