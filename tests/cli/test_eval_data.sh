@@ -273,5 +273,25 @@ if [ -n "$D" ]; then
     else fail "eval: figure link $(grep -o '^!\[.*' "$T/sp md/r.md")"; fi
 fi
 
+# --- the strides' figure: its title and key were one line wider than a picture of three panels (the footprints'
+# figure cut both ends off, "circles: the truth there" among them) and far wider than one panel's; each line of the
+# title fits the picture, at 6 px a character (a stand-in gnuplot keeps the script; the plots review)
+if [ -n "$D" ]; then
+    P="$T/one/pyshoe_vicon_llio/own_3dmgx5_footprints"
+    mkdir -p "$P"
+    for f in imu strides_gcp; do
+        ln -s "$D/pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_31_$f.csv" "$P/SensorConnectData_31_$f.csv"
+    done
+    fake_gnuplot "$T/fakegp"
+    PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/strides.gp" "$H" eval --no-experiments --data "$T/one" --out "$T/one.md" \
+        >/dev/null 2>&1
+    if awk '/^set terminal/ { split($5, wh, ","); w = wh[1] }
+            /^set multiplot/ { t = $0; sub(/^[^\x27]*\x27/, "", t); sub(/\x27$/, "", t); n = split(t, line, /\x27\."\\n"\.\x27/)
+                               for (i = 1; i <= n; i++) { if (6 * length(line[i]) > w) bad = 1 }; seen = 1 }
+            END { exit !(seen && w > 0 && !bad) }' "$T/strides.gp"; then
+        pass "eval strides figure: each title line fits the picture"
+    else fail "eval strides figure: title wider than the picture: $(grep -E '^set (terminal|multiplot)' "$T/strides.gp")"; fi
+fi
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]
