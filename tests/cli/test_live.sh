@@ -166,6 +166,22 @@ if command -v gnuplot >/dev/null 2>&1; then
     if [ -s "$T/live.png" ]; then pass "--plot-every drew $T/live.png"; else fail "--plot-every drew nothing"; fi
 fi
 
+# --- a gnuplot that fails: the last picture, drawn at the end, is an output that was not written; its child's exit
+# status was not looked at, and live exited 0 with no live.png (found by the plots review); no temporary is left
+mkdir -p "$T/badgp"
+printf '#!/bin/sh\ncat >/dev/null\necho "gnuplot: cannot draw" >&2\nexit 1\n' >"$T/badgp/gnuplot"
+chmod +x "$T/badgp/gnuplot"
+OLDPATH=$PATH
+PATH="$T/badgp:$PATH"
+start_live --timeout 30 --plot "$T/bad.png"
+PATH=$OLDPATH
+stream vectors/walk.bin --speed 40
+wait_live
+expect_rc "$LIVE_RC" 3 "live whose last picture gnuplot fails to draw"
+grep_in "$T/live.err" "bad.png was not drawn" "the error names the picture"
+[ ! -e "$T/bad.png" ] && [ ! -e "$T/bad.png.tmp.png" ] && pass "no picture, no temporary left" ||
+    fail "a picture or its temporary left: $(ls "$T" | grep bad.png)"
+
 # --- corrupt frames: skipped, counted, reported; the rest recorded
 start_live --record "$T/rec_c.bin" --timeout 30
 stream vectors/walk.bin --speed 40 --inject-corrupt 1000
