@@ -52,8 +52,8 @@ typedef struct {
     double total_runs;
     cJSON *json;
     int plots;            /* draw the figures (a directory and gnuplot are there) */
-    char plot_dir[600];   /* where they go */
-    char plot_link[1800]; /* the same as results.md links it (percent-encoded, md_link()) */
+    char plot_dir[HX_PLOT_PATH_SIZE - 32]; /* where they go (room for "/eval-NAME.png" after it) */
+    char plot_link[3 * HX_PLOT_PATH_SIZE]; /* the same as results.md links it (percent-encoded, md_link()) */
     hx_evplot_set_t fig;  /* the walks of the section being written */
     int ipol_fig;         /* eval-ipol.png was drawn (linked after the section's summary) */
 } ev_t;
@@ -1340,7 +1340,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
         }
     }
     if (write && ev->plots && (fo_e.n > 0 || fs_e.n > 0)) {
-        char png[700];
+        char png[HX_PLOT_PATH_SIZE];
         snprintf(png, sizeof png, "%s/eval-ipol.png", ev->plot_dir);
         if (hx_evplot_hist2("eval", png, "ipol_gait_xsens: gait-event timing error, detector - experts",
                             "error (samples at 100 Hz; the ends gather beyond +-10)", fo_e.v, fo_e.n,
@@ -1543,7 +1543,7 @@ static void md_link(const char *path, char *out, size_t size)
  * and link it from results.md under its caption; the set is emptied. */
 static void figure(ev_t *ev, const char *name, int strides, const char *title, const char *caption)
 {
-    char png[700];
+    char png[HX_PLOT_PATH_SIZE];
     if (ev->plots && ev->fig.n > 0) {
         snprintf(png, sizeof png, "%s/eval-%s.png", ev->plot_dir, name);
         if ((strides ? hx_evplot_strides(&ev->fig, "eval", png, title)
@@ -1654,12 +1654,19 @@ int hx_cmd_eval(int argc, char **argv)
     {
         /* the figures: --plots DIR, else img/ beside the Markdown file */
         const char *pd = hx_arg(&a, "--plots");
-        char md_dir[500];
+        char md_dir[HX_PLOT_PATH_SIZE];
+        int dlen = 0;
         dir_of(strcmp(out_path, "-") == 0 ? "./-" : out_path, md_dir, sizeof md_dir);
         if (pd != NULL) {
-            snprintf(ev.plot_dir, sizeof ev.plot_dir, "%s", pd);
+            dlen = snprintf(ev.plot_dir, sizeof ev.plot_dir, "%s", pd);
         } else if (strcmp(out_path, "-") != 0 && !hx_flag(&a, "--no-plots")) {
-            snprintf(ev.plot_dir, sizeof ev.plot_dir, "%s/img", md_dir);
+            dlen = snprintf(ev.plot_dir, sizeof ev.plot_dir, "%s/img", md_dir);
+        }
+        if (dlen < 0 || (size_t)dlen >= sizeof ev.plot_dir) {
+            /* a cut name is another directory (the plots review) */
+            hx_error("eval", "the figures' directory %.80s... is longer than %d bytes", ev.plot_dir,
+                     (int)sizeof ev.plot_dir - 1);
+            return HX_EXIT_IO;
         }
         if (ev.plot_dir[0] != '\0') {
             if (mkdir(ev.plot_dir, 0777) != 0 && errno != EEXIST) {
@@ -1669,7 +1676,7 @@ int hx_cmd_eval(int argc, char **argv)
             if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
                 hx_warn("eval", "no figures: gnuplot is not installed (apt-get install gnuplot-nox)");
             } else {
-                char rel[600];
+                char rel[HX_PLOT_PATH_SIZE];
                 ev.plots = 1;
                 rel_path(md_dir, ev.plot_dir, rel, sizeof rel);
                 md_link(rel, ev.plot_link, sizeof ev.plot_link);

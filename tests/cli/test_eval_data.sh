@@ -271,6 +271,15 @@ if [ -n "$D" ]; then
         head -c 8 "$T/sp md/my figs (1)/eval-xio.png" | grep -q PNG; then
         pass "eval: a figure in a directory with spaces is drawn and linked percent-encoded"
     else fail "eval: figure link $(grep -o '^!\[.*' "$T/sp md/r.md")"; fi
+    # and one whose name is long (720 bytes, under PATH_MAX): it was cut to 599 bytes, and the figures went into a
+    # directory of the cut name (the plots review)
+    L=$T/$(printf '%0200d' 0)/$(printf '%0200d' 0)/$(printf '%0200d' 0)
+    mkdir -p "$L"
+    expect_exit 0 "eval --plots in a directory with a long name" "$H" eval --no-experiments --data "$T/sp" \
+        --out "$L/r.md" --plots "$L/$(printf '%0100d' 0)"
+    head -c 8 "$L/$(printf '%0100d' 0)/eval-xio.png" 2>/dev/null | grep -q PNG &&
+        grep -q "^!\[xio_ngimu_gait: paths and heights\]($(printf '%0100d' 0)/eval-xio.png)$" "$L/r.md" &&
+        pass "eval: the figure in the long directory, linked" || fail "eval: figure of a long --plots: $(ls "$L")"
 fi
 
 # --- the strides' figure: its title and key were one line wider than a picture of three panels (the footprints'
