@@ -491,9 +491,38 @@ static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], con
     fprintf(p.gp, "EOD\n");
     fprintf(p.gp, "set title 'Lowest usable sampling frequency vs Welch segment (%g Hz log): %s'\n", rate, src);
     fprintf(p.gp, "set logscale x 2\nset xlabel 'segment length [samples]'\nset ylabel 'sampling frequency [Hz]'\n");
-    fprintf(p.gp, "set key top right\nplot ");
-    for (d = 0; d < NDC; d++) {
-        fprintf(p.gp, "%s$t using 1:%d with linespoints lw 2 title 'dc %s'", d ? ", " : "", d + 2, k_dc_names[d]);
+    {
+        /* only the DC treatments with an answer; none at all (a log of
+         * zeros) failed the plot, exit 3, and one value everywhere (a
+         * constant log: 50 Hz) made gnuplot warn "empty y range" (the
+         * plots review) */
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        int n = 0, nd[NDC];
+        for (d = 0; d < NDC; d++) {
+            nd[d] = 0;
+            for (k = 0; k < NSENS_NFFT; k++) {
+                if (have[k] && isfinite(fs_tab[d][k])) {
+                    nd[d]++;
+                    lo = fmin(lo, fs_tab[d][k]);
+                    hi = fmax(hi, fs_tab[d][k]);
+                }
+            }
+        }
+        if (hi < lo) {
+            fprintf(p.gp, "set yrange [0:1]\nset label 1 'no answer: no channel has power under any DC treatment' at "
+                          "graph 0.5,0.5 center\nplot $t using 1:(-1) notitle\n");
+            return hx_plot_close(&p, CMD);
+        }
+        if (hi - lo <= 1e-9 * hi) {
+            fprintf(p.gp, "set yrange [0:%.6g]\n", 2.0 * hi);
+        }
+        fprintf(p.gp, "set key top right\nplot ");
+        for (d = 0; d < NDC; d++) {
+            if (nd[d] > 0) {
+                fprintf(p.gp, "%s$t using 1:%d with linespoints lw 2 title 'dc %s'", n++ ? ", " : "", d + 2,
+                        k_dc_names[d]);
+            }
+        }
     }
     fprintf(p.gp, "\n");
     return hx_plot_close(&p, CMD);

@@ -99,6 +99,18 @@ expect_exit 1 "every channel constant, --plot" "$H" psd "$T/const.csv" --plot "$
 for f in psd ccdf spectrogram; do
     [ -s "$T/cplots/$f.png" ] && pass "every channel constant: $f.png" || fail "every channel constant: $f.png missing"
 done
+# the sensitivity plot of such logs: one value on every row (50 Hz) made gnuplot warn "empty y range" on standard
+# error, and a log of zeros, no value at all, failed it ("all points y value undefined") with exit 3 instead of 1
+# (found by the plots review)
+expect_exit 1 "every channel constant, --plot --sensitivity" "$H" psd "$T/const.csv" --plot "$T/csplots" --sensitivity
+[ -s "$T/csplots/sensitivity.png" ] && ! grep -qi "warning: empty\|gnuplot" "$T/err" &&
+    pass "constant log: sensitivity.png without a gnuplot warning" || fail "constant log sensitivity: $(cat "$T/err")"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3f,0,0,0,0,0,0\n", i / 1000.0 }' >"$T/zero.csv"
+expect_exit 1 "a log of zeros, --plot --sensitivity" "$H" psd "$T/zero.csv" --plot "$T/zplots" --sensitivity
+for f in psd ccdf spectrogram sensitivity; do
+    [ -s "$T/zplots/$f.png" ] && pass "log of zeros: $f.png" || fail "log of zeros: $f.png missing"
+done
+! grep -qi "gnuplot\|undefined" "$T/err" && pass "log of zeros: no gnuplot error" || fail "log of zeros: $(cat "$T/err")"
 # a log shorter than the spectrogram's segment (100 samples, --nfft 64, the default --spec-nfft 256): no spectrogram
 # can be drawn; the other plots are, a warning says why it is missing (gnuplot got no data: its STATS_max was
 # undefined, a spectrogram.png was left behind and the command exited 3, an output failure)
