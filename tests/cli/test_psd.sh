@@ -128,6 +128,14 @@ for f in psd ccdf spectrogram sensitivity; do
     [ -s "$T/qplots/$f.png" ] && pass "quoted input: $f.png" || fail "quoted input: $f.png missing"
 done
 ! grep -q "gnuplot>" "$T/err" && pass "quoted input: no gnuplot error" || fail "quoted input: gnuplot error"
+# a --plot directory whose name has a line break (and a tab, a backslash, a double quote): gnuplot's string took the
+# break for a space, wrote "a b/psd.png" elsewhere or nowhere, and --plot exited 3 (found by the plots review)
+NLD="$T/a
+b	c\\d\"e"
+expect_exit 0 "a --plot directory named with a line break" "$H" psd "$T/tone.csv" --plot "$NLD"
+for f in psd ccdf spectrogram; do
+    [ -s "$NLD/$f.png" ] && pass "line-break directory: $f.png" || fail "line-break directory: $f.png missing"
+done
 # a --plot directory with a long name (720 bytes, well under PATH_MAX): each picture's path was cut to 600 bytes by
 # psd and to 511 by the plot session, which then looked for the cut name: "gnuplot failed to write" and exit 3 with
 # psd.png drawn, and no other plot (found by the plots review)
