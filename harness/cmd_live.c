@@ -474,6 +474,11 @@ static int moved(const hx_traj_t *t)
 static void plot_async(live_t *L, const char *png)
 {
     pid_t pid;
+    if (L->hist.n == 0u) {
+        /* nothing received yet: gnuplot got empty data, and its errors ran
+         * down standard error at every redraw (the plots review) */
+        return;
+    }
     if (L->plot_pid > 0) {
         if (waitpid(L->plot_pid, NULL, WNOHANG) == 0) {
             return; /* the previous plot is still being drawn */

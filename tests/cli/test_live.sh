@@ -347,6 +347,15 @@ fi
 # --- nobody sends: --timeout ends the run; --json is written all the same
 # (with no frame it was skipped, and an earlier run's file stayed beside the
 # emptied --out; a review, 2026-11-28)
+# with --plot-every and no sample yet: each redraw gave gnuplot empty data, whose errors ran down standard error
+# every S seconds (found by the plots review)
+if command -v gnuplot >/dev/null 2>&1; then
+    start_live --timeout 1.5 --plot-every 0.2 --plot "$T/idle.png"
+    wait_live
+    expect_rc "$LIVE_RC" 1 "live --plot-every with no sender"
+    if grep -qi "gnuplot\|no data\|warning" "$T/live.err"; then fail "no sender, --plot-every: $(grep -i -m3 "gnuplot\|no data\|warning" "$T/live.err")"
+    else pass "no sender, --plot-every: no gnuplot message"; fi
+fi
 echo '{"stale": "an earlier run"}' >"$T/stale.json"
 start_live --timeout 1 --json "$T/stale.json"
 wait_live
