@@ -876,12 +876,19 @@ int hx_cmd_psd(int argc, char **argv)
                     }
                 }
             }
-            /* a spectrogram needs one segment: gnuplot has nothing to draw otherwise */
-            const int spec = log.n >= (size_t)spec_nfft;
-            if (!spec) {
+            /* a spectrogram needs two segments (50 % overlap): gnuplot has
+             * nothing to draw with none, and draws nothing of an image one
+             * column wide (a blank spectrogram.png; the plots review) */
+            const size_t two = (size_t)spec_nfft + (size_t)spec_nfft / 2u;
+            const int spec = log.n >= two;
+            if (log.n < (size_t)spec_nfft) {
                 hx_warn(CMD, "fewer samples (%zu) than one spectrogram segment (--spec-nfft %ld): spectrogram.png not "
                              "drawn",
                         log.n, spec_nfft);
+            } else if (!spec) {
+                hx_warn(CMD, "one spectrogram segment (%zu samples, --spec-nfft %ld needs %zu for two): spectrogram.png "
+                             "not drawn",
+                        log.n, spec_nfft, two);
             }
             /* the input's name goes into the titles as a gnuplot string (a
              * quote in it ended the string: no plot; the plots review) */
