@@ -52,8 +52,8 @@ typedef struct {
     double total_runs;
     cJSON *json;
     int plots;            /* draw the figures (a directory and gnuplot are there) */
-    char plot_dir[600];   /* where they go */
-    char plot_link[600];  /* the same as results.md links it */
+    char plot_dir[HX_PLOT_PATH_SIZE - 32]; /* where they go (room for "/eval-NAME.png" after it) */
+    char plot_link[3 * HX_PLOT_PATH_SIZE]; /* the same as results.md links it (percent-encoded, md_link()) */
     hx_evplot_set_t fig;  /* the walks of the section being written */
     int ipol_fig;         /* eval-ipol.png was drawn (linked after the section's summary) */
 } ev_t;
@@ -1380,7 +1380,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
         }
     }
     if (write && ev->plots && (fo_e.n > 0 || fs_e.n > 0)) {
-        char png[700];
+        char png[HX_PLOT_PATH_SIZE];
         snprintf(png, sizeof png, "%s/eval-ipol.png", ev->plot_dir);
         if (hx_evplot_hist2("eval", png, "ipol_gait_xsens: gait-event timing error, detector - experts",
                             "error (samples at 100 Hz; the ends gather beyond +-10)", fo_e.v, fo_e.n,
@@ -1554,12 +1554,36 @@ static int rel_path(const char *from, const char *to, char *out, size_t size)
     return 0;
 }
 
+/* A relative path as a Markdown link destination: the bytes that end one
+ * or are not allowed in it (space and control characters, parentheses,
+ * angle brackets, backslash) and '%' itself percent-encoded ("my figs"
+ * was linked as written, which is no link: the figure was not shown). */
+static void md_link(const char *path, char *out, size_t size)
+{
+    static const char hex[] = "0123456789ABCDEF";
+    size_t o = 0;
+    for (; *path != '\0' && o + 1 < size; path++) {
+        const unsigned char c = (unsigned char)*path;
+        if (c <= 0x20u || c == 0x7fu || strchr("%()<>\\", (int)c) != NULL) {
+            if (o + 4 > size) {
+                break;
+            }
+            out[o++] = '%';
+            out[o++] = hex[c >> 4];
+            out[o++] = hex[c & 15u];
+        } else {
+            out[o++] = (char)c;
+        }
+    }
+    out[o] = '\0';
+}
+
 /* Draw the walks collected for a section into PLOTS/eval-NAME.png (closed
  * walks: paths and heights; strides: a panel per walk against the truth)
  * and link it from results.md under its caption; the set is emptied. */
 static void figure(ev_t *ev, const char *name, int strides, const char *title, const char *caption)
 {
-    char png[700];
+    char png[HX_PLOT_PATH_SIZE];
     if (ev->plots && ev->fig.n > 0) {
         snprintf(png, sizeof png, "%s/eval-%s.png", ev->plot_dir, name);
         if ((strides ? hx_evplot_strides(&ev->fig, "eval", png, title)
@@ -1670,12 +1694,19 @@ int hx_cmd_eval(int argc, char **argv)
     {
         /* the figures: --plots DIR, else img/ beside the Markdown file */
         const char *pd = hx_arg(&a, "--plots");
-        char md_dir[500];
+        char md_dir[HX_PLOT_PATH_SIZE];
+        int dlen = 0;
         dir_of(strcmp(out_path, "-") == 0 ? "./-" : out_path, md_dir, sizeof md_dir);
         if (pd != NULL) {
-            snprintf(ev.plot_dir, sizeof ev.plot_dir, "%s", pd);
+            dlen = snprintf(ev.plot_dir, sizeof ev.plot_dir, "%s", pd);
         } else if (strcmp(out_path, "-") != 0 && !hx_flag(&a, "--no-plots")) {
-            snprintf(ev.plot_dir, sizeof ev.plot_dir, "%s/img", md_dir);
+            dlen = snprintf(ev.plot_dir, sizeof ev.plot_dir, "%s/img", md_dir);
+        }
+        if (dlen < 0 || (size_t)dlen >= sizeof ev.plot_dir) {
+            /* a cut name is another directory (the plots review) */
+            hx_error("eval", "the figures' directory %.80s... is longer than %d bytes", ev.plot_dir,
+                     (int)sizeof ev.plot_dir - 1);
+            return HX_EXIT_IO;
         }
         if (ev.plot_dir[0] != '\0') {
             if (mkdir(ev.plot_dir, 0777) != 0 && errno != EEXIST) {
@@ -1685,8 +1716,10 @@ int hx_cmd_eval(int argc, char **argv)
             if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
                 hx_warn("eval", "no figures: gnuplot is not installed (apt-get install gnuplot-nox)");
             } else {
+                char rel[HX_PLOT_PATH_SIZE];
                 ev.plots = 1;
-                rel_path(md_dir, ev.plot_dir, ev.plot_link, sizeof ev.plot_link);
+                rel_path(md_dir, ev.plot_dir, rel, sizeof rel);
+                md_link(rel, ev.plot_link, sizeof ev.plot_link);
             }
         }
     }

@@ -119,6 +119,7 @@ typedef struct {
     /* plot */
     hist_t hist;
     pid_t plot_pid;
+    int plot_failed;              /* the last picture, drawn at the end, was not written */
 } live_t;
 
 /* One navigation output: to the CSV (through the Linux port's writer, as
@@ -473,6 +474,11 @@ static int moved(const hx_traj_t *t)
 static void plot_async(live_t *L, const char *png)
 {
     pid_t pid;
+    if (L->hist.n == 0u) {
+        /* nothing received yet: gnuplot got empty data, and its errors ran
+         * down standard error at every redraw (the plots review) */
+        return;
+    }
     if (L->plot_pid > 0) {
         if (waitpid(L->plot_pid, NULL, WNOHANG) == 0) {
             return; /* the previous plot is still being drawn */
@@ -495,7 +501,11 @@ static void plot_async(live_t *L, const char *png)
             char title[160];
             snprintf(title, sizeof title, "harness live: %u samples, bad %u lost %u", (unsigned)L->samples,
                      (unsigned)L->dec.stats.bad_frames, (unsigned)L->dec.stats.lost);
-            _exit((hx_nav_plot(CMD, tmp, title, &L->traj) == 0 && rename(tmp, png) == 0) ? 0 : 3);
+            if (hx_nav_plot(CMD, tmp, title, &L->traj) == 0 && rename(tmp, png) == 0) {
+                _exit(0);
+            }
+            remove(tmp); /* a picture gnuplot failed to finish, if any */
+            _exit(3);
         }
         if (hx_plot_open(&p, CMD, tmp, 900, 500) != 0) {
             _exit(3);
@@ -522,6 +532,7 @@ static void plot_async(live_t *L, const char *png)
             }
         }
         if (hx_plot_close(&p, CMD) != 0 || rename(tmp, png) != 0) {
+            remove(tmp);
             _exit(3);
         }
         _exit(0);
@@ -751,10 +762,16 @@ int hx_cmd_live(int argc, char **argv)
         L.plot_pid = 0;
     }
     if (plot_every > 0.0 && L.hist.n > 0u) {
-        plot_async(&L, plot_png); /* the final picture */
-        if (L.plot_pid > 0) {
-            waitpid(L.plot_pid, NULL, 0);
+        /* the final picture is an output like the others: its child's exit
+         * status was not looked at, and a picture gnuplot failed to draw
+         * exited 0 (the plots review) */
+        int st = 0;
+        plot_async(&L, plot_png);
+        if (L.plot_pid <= 0 || waitpid(L.plot_pid, &st, 0) < 0 || !WIFEXITED(st) || WEXITSTATUS(st) != 0) {
+            hx_error(CMD, "the last picture %s was not drawn (the error above)", plot_png);
+            L.plot_failed = 1;
         }
+        L.plot_pid = 0;
     }
 
     {
@@ -848,7 +865,7 @@ int hx_cmd_live(int argc, char **argv)
                           "for the new session)",
                      L.restart_from_s, L.restart_to_s, L.restart_seq, (unsigned)L.samples);
         }
-        if (L.rec_failed || L.csv_failed) {
+        if (L.rec_failed || L.csv_failed || L.plot_failed) {
             exit_code = HX_EXIT_IO;
         } else if (gone || timed_out || L.restarted) {
             exit_code = HX_EXIT_DATA;

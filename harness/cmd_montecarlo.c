@@ -404,56 +404,116 @@ static int write_csv(const char *path, const hx_mc_result_t *r)
     return ok ? 0 : -1;
 }
 
+/* Points of a variant's curve: what (0 RMS error, 1 predicted sd, 2
+ * average position NEES, positive only: a log axis). */
+static double curve_value(const hx_mc_result_t *r, int v, int b, int what)
+{
+    const double x = what == 0 ? r->var[v].bins[b].rms_h_m
+                     : what == 1 ? r->var[v].bins[b].pred_h_m
+                                 : r->var[v].bins[b].nees[HX_NEES_POS];
+    return isfinite(x) && (what < 2 || x > 0.0) ? x : (double)NAN;
+}
+
+static int curve_points(const hx_mc_result_t *r, int v, int what)
+{
+    int b, n = 0;
+    for (b = 0; b < r->var[v].nbins; b++) {
+        n += isfinite(curve_value(r, v, b, what));
+    }
+    return n;
+}
+
+/* The '-' data of the curves with points, in the order of their plot
+ * entries. */
+static void curve_data(FILE *gp, const hx_mc_result_t *r, int what0, int what1)
+{
+    int v, w, b;
+    for (v = 0; v < r->nvar; v++) {
+        for (w = what0; w <= what1; w++) {
+            if (curve_points(r, v, w) == 0) {
+                continue;
+            }
+            for (b = 0; b < r->var[v].nbins; b++) {
+                const double x = curve_value(r, v, b, w);
+                if (isfinite(x)) {
+                    fprintf(gp, "%g %g\n", r->var[v].bins[b].t_s, x);
+                }
+            }
+            fprintf(gp, "e\n");
+        }
+    }
+}
+
 static int write_plot(const char *png, const hx_mc_result_t *r, const char *motion, const char *profile)
 {
     hx_plot_t p;
-    int v, b;
+    int v, b, w, n;
+    double t0 = HUGE_VAL, t1 = -HUGE_VAL;
     char q1[128], q2[256];
     if (hx_plot_open(&p, "montecarlo", png, 1100, 800) != 0) {
         return -1;
     }
+    /* the time span of every point: runs too short to align have none
+     * (gnuplot refused the plot, the picture was left half drawn and the
+     * run exited 3), one growth bin is one time (gnuplot warned "empty x
+     * range" on standard error); the plots review */
+    for (v = 0; v < r->nvar; v++) {
+        for (b = 0; b < r->var[v].nbins; b++) {
+            for (w = 0; w < 3; w++) {
+                if (isfinite(curve_value(r, v, b, w))) {
+                    t0 = fmin(t0, r->var[v].bins[b].t_s);
+                    t1 = fmax(t1, r->var[v].bins[b].t_s);
+                }
+            }
+        }
+    }
     fprintf(p.gp, "set multiplot layout 2,1 title 'montecarlo: motion %s, profile %s, %d runs'\n",
             hx_gp_str(q1, sizeof q1, motion), hx_gp_str(q2, sizeof q2, profile), r->runs);
     fprintf(p.gp, "set grid\nset key left top\n");
-    fprintf(p.gp, "set xlabel 'time [s]'\nset ylabel 'horizontal error [m]'\nplot ");
-    for (v = 0; v < r->nvar; v++) {
-        /* a variant's error and predicted sd in one colour */
-        fprintf(p.gp, "%s'-' w l lw 2 lc %d t 'RMS error, %s', '-' w l dt 2 lc %d t 'predicted sd, %s'",
-                v ? ", " : "", v + 1, r->var[v].name, v + 1, r->var[v].name);
+    if (t0 > t1) {
+        fprintf(p.gp, "set xrange [0:1]\n");
+    } else if (t1 - t0 < 1e-9) {
+        fprintf(p.gp, "set xrange [%g:%g]\n", t0 - 0.5, t1 + 0.5);
     }
-    fprintf(p.gp, "\n");
-    for (v = 0; v < r->nvar; v++) {
-        for (b = 0; b < r->var[v].nbins; b++) {
-            if (isfinite(r->var[v].bins[b].rms_h_m)) {
-                fprintf(p.gp, "%g %g\n", r->var[v].bins[b].t_s, r->var[v].bins[b].rms_h_m);
+    fprintf(p.gp, "set xlabel 'time [s]'\nset ylabel 'horizontal error [m]'\n");
+    for (v = 0, n = 0; v < r->nvar; v++) {
+        n += curve_points(r, v, 0) + curve_points(r, v, 1);
+    }
+    if (n == 0) {
+        fprintf(p.gp, "set yrange [0:1]\nset label 1 'no aligned estimate in any run' at graph 0.5,0.5 center\n"
+                      "plot -1 notitle\nunset label 1\nset autoscale y\n");
+    } else {
+        fprintf(p.gp, "plot ");
+        for (v = 0, n = 0; v < r->nvar; v++) {
+            /* a variant's error and predicted sd in one colour */
+            if (curve_points(r, v, 0) > 0) {
+                fprintf(p.gp, "%s'-' w l lw 2 lc %d t 'RMS error, %s'", n++ ? ", " : "", v + 1, r->var[v].name);
+            }
+            if (curve_points(r, v, 1) > 0) {
+                fprintf(p.gp, "%s'-' w l dt 2 lc %d t 'predicted sd, %s'", n++ ? ", " : "", v + 1, r->var[v].name);
             }
         }
-        fprintf(p.gp, "e\n");
-        for (b = 0; b < r->var[v].nbins; b++) {
-            if (isfinite(r->var[v].bins[b].pred_h_m)) {
-                fprintf(p.gp, "%g %g\n", r->var[v].bins[b].t_s, r->var[v].bins[b].pred_h_m);
-            }
-        }
-        fprintf(p.gp, "e\n");
+        fprintf(p.gp, "\n");
+        curve_data(p.gp, r, 0, 1);
     }
     {
         double lo, hi;
         hx_nees_band(r->runs, 3, 0.05, &lo, &hi);
         fprintf(p.gp, "set ylabel 'position NEES (d = 3)'\nset logscale y\nset format y '%%g'\n");
+        for (v = 0, n = 0; v < r->nvar; v++) {
+            n += curve_points(r, v, 2);
+        }
+        if (n == 0) {
+            fprintf(p.gp, "set label 1 'no NEES: no aligned estimate' at graph 0.5,0.5 center\n");
+        }
         fprintf(p.gp, "plot %g w l lc rgb 'gray' t '95%% band, %d runs', %g w l lc rgb 'gray' notitle", lo, r->runs, hi);
         for (v = 0; v < r->nvar; v++) {
-            fprintf(p.gp, ", '-' w l lw 2 lc %d t 'average NEES, %s'", v + 1, r->var[v].name);
+            if (curve_points(r, v, 2) > 0) {
+                fprintf(p.gp, ", '-' w l lw 2 lc %d t 'average NEES, %s'", v + 1, r->var[v].name);
+            }
         }
         fprintf(p.gp, "\n");
-        for (v = 0; v < r->nvar; v++) {
-            for (b = 0; b < r->var[v].nbins; b++) {
-                double x = r->var[v].bins[b].nees[HX_NEES_POS];
-                if (isfinite(x) && x > 0.0) {
-                    fprintf(p.gp, "%g %g\n", r->var[v].bins[b].t_s, x);
-                }
-            }
-            fprintf(p.gp, "e\n");
-        }
+        curve_data(p.gp, r, 2, 2);
     }
     fprintf(p.gp, "unset multiplot\n");
     return hx_plot_close(&p, "montecarlo");

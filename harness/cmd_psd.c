@@ -324,7 +324,7 @@ static int block(FILE *gp, const char *name, const result_t *r, int c, int ccdf)
 static int plot_psd(const char *dir, const result_t *r, const char *src, const setting_t *st)
 {
     hx_plot_t p;
-    char path[600];
+    char path[HX_PLOT_PATH_SIZE];
     int g, c;
     snprintf(path, sizeof path, "%s/psd.png", dir);
     if (hx_plot_open(&p, CMD, path, 900, 700) != 0) {
@@ -368,7 +368,7 @@ static int plot_psd(const char *dir, const result_t *r, const char *src, const s
 static int plot_ccdf(const char *dir, const result_t *r, const char *src, const fnav_bandwidth_config_t *bc)
 {
     hx_plot_t p;
-    char path[600];
+    char path[HX_PLOT_PATH_SIZE];
     int g, c;
     snprintf(path, sizeof path, "%s/ccdf.png", dir);
     if (hx_plot_open(&p, CMD, path, 900, 700) != 0) {
@@ -417,7 +417,7 @@ static int plot_spectrogram(const char *dir, const hx_log_t *log, int c, uint32_
     static fnav_real_t col[FNAV_WELCH_MAX_BINS];
     fnav_welch_config_t cfg = fnav_welch_config_default;
     hx_plot_t p;
-    char path[600];
+    char path[HX_PLOT_PATH_SIZE];
     size_t i;
     uint32_t seen = 0, k, nb;
     cfg.nfft = nfft;
@@ -471,7 +471,7 @@ static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], con
                             const char *src)
 {
     hx_plot_t p;
-    char path[600];
+    char path[HX_PLOT_PATH_SIZE];
     int d, k;
     snprintf(path, sizeof path, "%s/sensitivity.png", dir);
     if (hx_plot_open(&p, CMD, path, 800, 500) != 0) {
@@ -491,9 +491,38 @@ static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], con
     fprintf(p.gp, "EOD\n");
     fprintf(p.gp, "set title 'Lowest usable sampling frequency vs Welch segment (%g Hz log): %s'\n", rate, src);
     fprintf(p.gp, "set logscale x 2\nset xlabel 'segment length [samples]'\nset ylabel 'sampling frequency [Hz]'\n");
-    fprintf(p.gp, "set key top right\nplot ");
-    for (d = 0; d < NDC; d++) {
-        fprintf(p.gp, "%s$t using 1:%d with linespoints lw 2 title 'dc %s'", d ? ", " : "", d + 2, k_dc_names[d]);
+    {
+        /* only the DC treatments with an answer; none at all (a log of
+         * zeros) failed the plot, exit 3, and one value everywhere (a
+         * constant log: 50 Hz) made gnuplot warn "empty y range" (the
+         * plots review) */
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        int n = 0, nd[NDC];
+        for (d = 0; d < NDC; d++) {
+            nd[d] = 0;
+            for (k = 0; k < NSENS_NFFT; k++) {
+                if (have[k] && isfinite(fs_tab[d][k])) {
+                    nd[d]++;
+                    lo = fmin(lo, fs_tab[d][k]);
+                    hi = fmax(hi, fs_tab[d][k]);
+                }
+            }
+        }
+        if (hi < lo) {
+            fprintf(p.gp, "set yrange [0:1]\nset label 1 'no answer: no channel has power under any DC treatment' at "
+                          "graph 0.5,0.5 center\nplot $t using 1:(-1) notitle\n");
+            return hx_plot_close(&p, CMD);
+        }
+        if (hi - lo <= 1e-9 * hi) {
+            fprintf(p.gp, "set yrange [0:%.6g]\n", 2.0 * hi);
+        }
+        fprintf(p.gp, "set key top right\nplot ");
+        for (d = 0; d < NDC; d++) {
+            if (nd[d] > 0) {
+                fprintf(p.gp, "%s$t using 1:%d with linespoints lw 2 title 'dc %s'", n++ ? ", " : "", d + 2,
+                        k_dc_names[d]);
+            }
+        }
     }
     fprintf(p.gp, "\n");
     return hx_plot_close(&p, CMD);
@@ -847,16 +876,27 @@ int hx_cmd_psd(int argc, char **argv)
                     }
                 }
             }
-            /* a spectrogram needs one segment: gnuplot has nothing to draw otherwise */
-            const int spec = log.n >= (size_t)spec_nfft;
-            if (!spec) {
+            /* a spectrogram needs two segments (50 % overlap): gnuplot has
+             * nothing to draw with none, and draws nothing of an image one
+             * column wide (a blank spectrogram.png; the plots review) */
+            const size_t two = (size_t)spec_nfft + (size_t)spec_nfft / 2u;
+            const int spec = log.n >= two;
+            if (log.n < (size_t)spec_nfft) {
                 hx_warn(CMD, "fewer samples (%zu) than one spectrogram segment (--spec-nfft %ld): spectrogram.png not "
                              "drawn",
                         log.n, spec_nfft);
+            } else if (!spec) {
+                hx_warn(CMD, "one spectrogram segment (%zu samples, --spec-nfft %ld needs %zu for two): spectrogram.png "
+                             "not drawn",
+                        log.n, spec_nfft, two);
             }
-            if (plot_psd(s, &res, a.pos[0], &st) != 0 || plot_ccdf(s, &res, a.pos[0], &bc) != 0 ||
-                (spec && plot_spectrogram(s, &log, spec_axis, (uint32_t)spec_nfft, rate, a.pos[0]) != 0) ||
-                (hx_flag(&a, "--sensitivity") && plot_sensitivity(s, fs_tab, have, rate, a.pos[0]) != 0)) {
+            /* the input's name goes into the titles as a gnuplot string (a
+             * quote in it ended the string: no plot; the plots review) */
+            char src[1024];
+            hx_gp_str(src, sizeof src, a.pos[0]);
+            if (plot_psd(s, &res, src, &st) != 0 || plot_ccdf(s, &res, src, &bc) != 0 ||
+                (spec && plot_spectrogram(s, &log, spec_axis, (uint32_t)spec_nfft, rate, src) != 0) ||
+                (hx_flag(&a, "--sensitivity") && plot_sensitivity(s, fs_tab, have, rate, src) != 0)) {
                 exit_code = HX_EXIT_IO;
             }
         }

@@ -515,8 +515,16 @@ int hx_plot_check(const char *cmd, const char *png_path)
 
 int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h)
 {
-    char q[1024];
+    /* the path as a gnuplot string: a quote doubles (a path was cut to 511
+     * bytes here and to 1023 in the string: gnuplot wrote another file, or
+     * this one and the check below looked for the cut name; the plots
+     * review) */
+    char q[2 * HX_PLOT_PATH_SIZE];
     memset(p, 0, sizeof *p);
+    if (strlen(png_path) >= sizeof p->path) {
+        hx_error(cmd, "cannot write %.80s...: the path is longer than %d bytes", png_path, HX_PLOT_PATH_SIZE - 1);
+        return -1;
+    }
     /* gnuplot writes the image to its standard output when it cannot open
      * the file: find out first, and keep its output away from ours */
     if (hx_plot_check(cmd, png_path) != 0) {
@@ -529,7 +537,28 @@ int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int
     }
     snprintf(p->path, sizeof p->path, "%s", png_path);
     fprintf(p->gp, "set terminal pngcairo size %d,%d noenhanced font 'sans,10'\n", w, h);
-    fprintf(p->gp, "set output '%s'\n", hx_gp_str(q, sizeof q, png_path));
+    if (strpbrk(png_path, "\001\002\003\004\005\006\007\010\011\012\013\014\015\016\017\020\021\022\023\024\025\026"
+                          "\027\030\031\032\033\034\035\036\037\177") != NULL) {
+        /* a control character (a line break) has no place in a quoted
+         * string, which took it for a space: another file was written, and
+         * the check below failed (the plots review); a double-quoted one
+         * with octal escapes names the file exactly */
+        const char *c;
+        fprintf(p->gp, "set output \"");
+        for (c = png_path; *c != '\0'; c++) {
+            const unsigned char u = (unsigned char)*c;
+            if (u < 0x20u || u == 0x7fu) {
+                fprintf(p->gp, "\\%03o", (unsigned)u);
+            } else if (u == '\\' || u == '"') {
+                fprintf(p->gp, "\\%c", (int)u);
+            } else {
+                fputc((int)u, p->gp);
+            }
+        }
+        fprintf(p->gp, "\"\n");
+    } else {
+        fprintf(p->gp, "set output '%s'\n", hx_gp_str(q, sizeof q, png_path));
+    }
     fprintf(p->gp, "set grid\n");
     return 0;
 }

@@ -130,15 +130,19 @@ double hx_median(double *v, int n);
 
 /* ------------------------------------------------------------ plots */
 
+/** Room for a plot's path: any path the system can open (PATH_MAX 4096)
+ *  and a file name added to a directory of that length. */
+#define HX_PLOT_PATH_SIZE 4400
+
 /** A gnuplot session writing one PNG. */
 typedef struct {
     FILE *gp;
-    char path[512];
+    char path[HX_PLOT_PATH_SIZE];
 } hx_plot_t;
 
 /** Start gnuplot for a PNG of w x h pixels. Returns 0, or -1 with a
  *  message printed when gnuplot is not installed or the PNG cannot be
- *  written. */
+ *  written (a path of HX_PLOT_PATH_SIZE bytes or more included). */
 int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h);
 /** 0 when gnuplot is installed and `png_path` can be written; -1 with the
  *  error printed. For plots drawn only after long work. */

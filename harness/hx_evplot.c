@@ -173,6 +173,10 @@ int hx_evplot_paths(const hx_evplot_set_t *s, const char *cmd, const char *png, 
     return hx_plot_close(&p, cmd);
 }
 
+/* What the strides' panels show (the second line of their title). */
+static const char k_strides_key[] = "(grey: estimated path; red dots: the estimate at each stride; circles: the truth "
+                                    "there)";
+
 /* Widen the ranges lo..hi (east, north) to a point. */
 static void widen(double lo[2], double hi[2], double e, double n)
 {
@@ -193,12 +197,19 @@ int hx_evplot_strides(const hx_evplot_set_t *s, const char *cmd, const char *png
     }
     cols = (int)ceil(sqrt((double)s->n));
     rows = (s->n + cols - 1) / cols;
-    if (hx_plot_open(&p, cmd, png, 320 * cols, 320 * rows + 40) != 0) {
-        return -1;
+    /* the title and the key on two lines, the picture at least as wide as
+     * the longer (about 6 px a character): on one line, 3 panels wide, the
+     * footprints' figure cut both ends off, the key's "circles: the truth"
+     * among them (the plots review) */
+    {
+        const size_t len = strlen(title) > strlen(k_strides_key) ? strlen(title) : strlen(k_strides_key);
+        const int w = 320 * cols > 7 * (int)len + 40 ? 320 * cols : 7 * (int)len + 40;
+        if (hx_plot_open(&p, cmd, png, w, 320 * rows + 60) != 0) {
+            return -1;
+        }
     }
-    fprintf(p.gp, "set multiplot layout %d,%d title '%s (grey: estimated path; red dots: the estimate at each "
-                  "stride; circles: the truth there)'\n",
-            rows, cols, hx_gp_str(q, sizeof q, title));
+    fprintf(p.gp, "set multiplot layout %d,%d title '%s'.\"\\n\".'%s'\n", rows, cols, hx_gp_str(q, sizeof q, title),
+            k_strides_key);
     fprintf(p.gp, "set size ratio -1\nunset key\nset xlabel 'east y (m)' font ',8'\n"
                   "set ylabel 'north x (m)' font ',8'\nset tics font ',8'\n");
     for (i = 0; i < s->n; i++) {

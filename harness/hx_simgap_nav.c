@@ -2377,7 +2377,7 @@ cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r)
 int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const char *cmd)
 {
     hx_plot_t p;
-    char path[600];
+    char path[HX_PLOT_PATH_SIZE];
     stance_t *st = (stance_t *)malloc(MAX_ST * sizeof *st);
     int ns, i;
     (void)r;

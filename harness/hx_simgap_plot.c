@@ -73,7 +73,7 @@ static void empty_panel(FILE *gp, const char *title)
 static int plot_domain(const sg_result_t *r, const char *dir, const char *cmd, int dom)
 {
     hx_plot_t p;
-    char path[600];
+    char path[HX_PLOT_PATH_SIZE];
     int ch;
     snprintf(path, sizeof path, "%s/%s.png", dir, dom == SG_ALLAN ? "allan" : "psd");
     if (hx_plot_open(&p, cmd, path, 1200, 800) != 0) {
@@ -172,7 +172,7 @@ static void z_panel(FILE *gp, const sg_result_t *r, int dom, char tag, const cha
 static int plot_z(const sg_result_t *r, const char *dir, const char *cmd)
 {
     hx_plot_t p;
-    char path[600];
+    char path[HX_PLOT_PATH_SIZE];
     snprintf(path, sizeof path, "%s/z.png", dir);
     if (hx_plot_open(&p, cmd, path, 1200, 1000) != 0) {
         return -1;

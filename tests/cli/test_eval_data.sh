@@ -279,5 +279,47 @@ if [ -n "$D" ] && [ -f "$D/xio_ngimu_gait/short_walk.csv" ]; then
     else fail "experiment 1 paired row: $(grep '^| generic MEMS |' "$T/bx.md")"; fi
 fi
 
+# --- a figures' directory whose name has spaces and parentheses: results.md linked it as written, which is no
+# Markdown link (a destination ends at a space; the figure was not shown); it is percent-encoded (the plots review)
+if [ -n "$D" ]; then
+    mkdir -p "$T/sp/xio_ngimu_gait" "$T/sp md"
+    ln -s "$D/xio_ngimu_gait/short_walk.csv" "$T/sp/xio_ngimu_gait/short_walk.csv"
+    expect_exit 0 "eval --plots in a directory named with spaces" "$H" eval --no-experiments --data "$T/sp" \
+        --out "$T/sp md/r.md" --plots "$T/sp md/my figs (1)"
+    if grep -q '^!\[xio_ngimu_gait: paths and heights\](my%20figs%20%281%29/eval-xio.png)$' "$T/sp md/r.md" &&
+        head -c 8 "$T/sp md/my figs (1)/eval-xio.png" | grep -q PNG; then
+        pass "eval: a figure in a directory with spaces is drawn and linked percent-encoded"
+    else fail "eval: figure link $(grep -o '^!\[.*' "$T/sp md/r.md")"; fi
+    # and one whose name is long (720 bytes, under PATH_MAX): it was cut to 599 bytes, and the figures went into a
+    # directory of the cut name (the plots review)
+    L=$T/$(printf '%0200d' 0)/$(printf '%0200d' 0)/$(printf '%0200d' 0)
+    mkdir -p "$L"
+    expect_exit 0 "eval --plots in a directory with a long name" "$H" eval --no-experiments --data "$T/sp" \
+        --out "$L/r.md" --plots "$L/$(printf '%0100d' 0)"
+    head -c 8 "$L/$(printf '%0100d' 0)/eval-xio.png" 2>/dev/null | grep -q PNG &&
+        grep -q "^!\[xio_ngimu_gait: paths and heights\]($(printf '%0100d' 0)/eval-xio.png)$" "$L/r.md" &&
+        pass "eval: the figure in the long directory, linked" || fail "eval: figure of a long --plots: $(ls "$L")"
+fi
+
+# --- the strides' figure: its title and key were one line wider than a picture of three panels (the footprints'
+# figure cut both ends off, "circles: the truth there" among them) and far wider than one panel's; each line of the
+# title fits the picture, at 6 px a character (a stand-in gnuplot keeps the script; the plots review)
+if [ -n "$D" ]; then
+    P="$T/one/pyshoe_vicon_llio/own_3dmgx5_footprints"
+    mkdir -p "$P"
+    for f in imu strides_gcp; do
+        ln -s "$D/pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_31_$f.csv" "$P/SensorConnectData_31_$f.csv"
+    done
+    fake_gnuplot "$T/fakegp"
+    PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/strides.gp" "$H" eval --no-experiments --data "$T/one" --out "$T/one.md" \
+        >/dev/null 2>&1
+    if awk '/^set terminal/ { split($5, wh, ","); w = wh[1] }
+            /^set multiplot/ { t = $0; sub(/^[^\x27]*\x27/, "", t); sub(/\x27$/, "", t); n = split(t, line, /\x27\."\\n"\.\x27/)
+                               for (i = 1; i <= n; i++) { if (6 * length(line[i]) > w) bad = 1 }; seen = 1 }
+            END { exit !(seen && w > 0 && !bad) }' "$T/strides.gp"; then
+        pass "eval strides figure: each title line fits the picture"
+    else fail "eval strides figure: title wider than the picture: $(grep -E '^set (terminal|multiplot)' "$T/strides.gp")"; fi
+fi
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]

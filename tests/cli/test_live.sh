@@ -166,6 +166,22 @@ if command -v gnuplot >/dev/null 2>&1; then
     if [ -s "$T/live.png" ]; then pass "--plot-every drew $T/live.png"; else fail "--plot-every drew nothing"; fi
 fi
 
+# --- a gnuplot that fails: the last picture, drawn at the end, is an output that was not written; its child's exit
+# status was not looked at, and live exited 0 with no live.png (found by the plots review); no temporary is left
+mkdir -p "$T/badgp"
+printf '#!/bin/sh\ncat >/dev/null\necho "gnuplot: cannot draw" >&2\nexit 1\n' >"$T/badgp/gnuplot"
+chmod +x "$T/badgp/gnuplot"
+OLDPATH=$PATH
+PATH="$T/badgp:$PATH"
+start_live --timeout 30 --plot "$T/bad.png"
+PATH=$OLDPATH
+stream vectors/walk.bin --speed 40
+wait_live
+expect_rc "$LIVE_RC" 3 "live whose last picture gnuplot fails to draw"
+grep_in "$T/live.err" "bad.png was not drawn" "the error names the picture"
+[ ! -e "$T/bad.png" ] && [ ! -e "$T/bad.png.tmp.png" ] && pass "no picture, no temporary left" ||
+    fail "a picture or its temporary left: $(ls "$T" | grep bad.png)"
+
 # --- corrupt frames: skipped, counted, reported; the rest recorded
 start_live --record "$T/rec_c.bin" --timeout 30
 stream vectors/walk.bin --speed 40 --inject-corrupt 1000
@@ -331,6 +347,15 @@ fi
 # --- nobody sends: --timeout ends the run; --json is written all the same
 # (with no frame it was skipped, and an earlier run's file stayed beside the
 # emptied --out; a review, 2026-11-28)
+# with --plot-every and no sample yet: each redraw gave gnuplot empty data, whose errors ran down standard error
+# every S seconds (found by the plots review)
+if command -v gnuplot >/dev/null 2>&1; then
+    start_live --timeout 1.5 --plot-every 0.2 --plot "$T/idle.png"
+    wait_live
+    expect_rc "$LIVE_RC" 1 "live --plot-every with no sender"
+    if grep -qi "gnuplot\|no data\|warning" "$T/live.err"; then fail "no sender, --plot-every: $(grep -i -m3 "gnuplot\|no data\|warning" "$T/live.err")"
+    else pass "no sender, --plot-every: no gnuplot message"; fi
+fi
 echo '{"stale": "an earlier run"}' >"$T/stale.json"
 start_live --timeout 1 --json "$T/stale.json"
 wait_live

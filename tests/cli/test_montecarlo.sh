@@ -88,6 +88,19 @@ expect_out "paired (off - ar1, same samples): none, no run has a final estimate 
 expect_out "pos   d=3   no NEES: no aligned estimate" "no aligned estimate: the summary says so (not 'states off')"
 if json "$T/none.json" 'all(v[k] is None for v in j["variants"] for k in ("final_h_mean_m", "final_h_rms_m", "final_h_median_m", "final_h_p95_m", "final_v_rms_m", "final_v_median_m"))'
 then pass "no final estimate: the final statistics are null"; else fail "no final estimate: $(grep -m2 final_h_ "$T/none.json")"; fi
+# the plot of such runs: gnuplot got no point ("x range is invalid"), the picture was left half drawn and --plot
+# exited 3 where the run without it exits 0; and runs with one growth bin made gnuplot warn "empty x range" on
+# standard error (found by the plots review): panels that say so, and a range around the one bin
+if command -v gnuplot >/dev/null 2>&1; then
+    expect_exit 0 "montecarlo --plot without an aligned estimate" "$H" montecarlo --seeds 2 --duration 0.2 \
+        --bias-model both --quiet --plot "$T/none.png"
+    [ -s "$T/none.png" ] && ! grep -qi "warning\|gnuplot\|invalid" "$T/err" &&
+        pass "no aligned estimate: the picture drawn, no gnuplot message" || fail "no aligned estimate: $(cat "$T/err")"
+    expect_exit 0 "montecarlo --plot with one growth bin" "$H" montecarlo --seeds 2 --duration 1 --rate 100 --quiet \
+        --plot "$T/one.png"
+    [ -s "$T/one.png" ] && ! grep -qi "warning\|gnuplot" "$T/err" && pass "one growth bin: no gnuplot warning" ||
+        fail "one growth bin: $(cat "$T/err")"
+fi
 # a profile file is an input: an output onto it is refused (the CSV
 # replaced it, exit 0)
 for o in json csv plot; do

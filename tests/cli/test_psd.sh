@@ -99,6 +99,18 @@ expect_exit 1 "every channel constant, --plot" "$H" psd "$T/const.csv" --plot "$
 for f in psd ccdf spectrogram; do
     [ -s "$T/cplots/$f.png" ] && pass "every channel constant: $f.png" || fail "every channel constant: $f.png missing"
 done
+# the sensitivity plot of such logs: one value on every row (50 Hz) made gnuplot warn "empty y range" on standard
+# error, and a log of zeros, no value at all, failed it ("all points y value undefined") with exit 3 instead of 1
+# (found by the plots review)
+expect_exit 1 "every channel constant, --plot --sensitivity" "$H" psd "$T/const.csv" --plot "$T/csplots" --sensitivity
+[ -s "$T/csplots/sensitivity.png" ] && ! grep -qi "warning: empty\|gnuplot" "$T/err" &&
+    pass "constant log: sensitivity.png without a gnuplot warning" || fail "constant log sensitivity: $(cat "$T/err")"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3f,0,0,0,0,0,0\n", i / 1000.0 }' >"$T/zero.csv"
+expect_exit 1 "a log of zeros, --plot --sensitivity" "$H" psd "$T/zero.csv" --plot "$T/zplots" --sensitivity
+for f in psd ccdf spectrogram sensitivity; do
+    [ -s "$T/zplots/$f.png" ] && pass "log of zeros: $f.png" || fail "log of zeros: $f.png missing"
+done
+! grep -qi "gnuplot\|undefined" "$T/err" && pass "log of zeros: no gnuplot error" || fail "log of zeros: $(cat "$T/err")"
 # a log shorter than the spectrogram's segment (100 samples, --nfft 64, the default --spec-nfft 256): no spectrogram
 # can be drawn; the other plots are, a warning says why it is missing (gnuplot got no data: its STATS_max was
 # undefined, a spectrogram.png was left behind and the command exited 3, an output failure)
@@ -108,6 +120,38 @@ expect_err "fewer samples (100) than one spectrogram segment (--spec-nfft 256)" 
 [ -s "$T/shortplots/psd.png" ] && [ -s "$T/shortplots/ccdf.png" ] && pass "short log: psd.png, ccdf.png" ||
     fail "short log: psd.png or ccdf.png missing"
 [ ! -e "$T/shortplots/spectrogram.png" ] && pass "short log: no spectrogram.png" || fail "short log: spectrogram.png written"
+# an input whose name has a quote: it went into the plots' titles unescaped, ended gnuplot's string, and --plot
+# exited 3 with psd.png drawn from a broken script and no ccdf.png (found by the plots review)
+cp "$T/tone.csv" "$T/it's.csv"
+expect_exit 0 "input named with a quote, --plot --sensitivity" "$H" psd "$T/it's.csv" --plot "$T/qplots" --sensitivity
+for f in psd ccdf spectrogram sensitivity; do
+    [ -s "$T/qplots/$f.png" ] && pass "quoted input: $f.png" || fail "quoted input: $f.png missing"
+done
+! grep -q "gnuplot>" "$T/err" && pass "quoted input: no gnuplot error" || fail "quoted input: gnuplot error"
+# a --plot directory whose name has a line break (and a tab, a backslash, a double quote): gnuplot's string took the
+# break for a space, wrote "a b/psd.png" elsewhere or nowhere, and --plot exited 3 (found by the plots review)
+NLD="$T/a
+b	c\\d\"e"
+expect_exit 0 "a --plot directory named with a line break" "$H" psd "$T/tone.csv" --plot "$NLD"
+for f in psd ccdf spectrogram; do
+    [ -s "$NLD/$f.png" ] && pass "line-break directory: $f.png" || fail "line-break directory: $f.png missing"
+done
+# a --plot directory with a long name (720 bytes, well under PATH_MAX): each picture's path was cut to 600 bytes by
+# psd and to 511 by the plot session, which then looked for the cut name: "gnuplot failed to write" and exit 3 with
+# psd.png drawn, and no other plot (found by the plots review)
+L=$T/$(printf '%0200d' 0)/$(printf '%0200d' 0)/$(printf '%0200d' 0)/$(printf '%0100d' 0)
+mkdir -p "$L"
+expect_exit 0 "a --plot directory with a 720-byte name" "$H" psd "$T/tone.csv" --plot "$L/p" --sensitivity
+for f in psd ccdf spectrogram sensitivity; do
+    [ -s "$L/p/$f.png" ] && pass "long directory: $f.png" || fail "long directory: $f.png missing"
+done
+# a log of one spectrogram segment (300 samples, --spec-nfft 256: the next needs 384): gnuplot's image of one column
+# is nothing, and a blank spectrogram.png was written without a word (found by the plots review); not drawn, said
+head -301 "$T/tone.csv" >"$T/oneseg.csv"
+expect_exit 0 "log of one spectrogram segment, --plot" "$H" psd "$T/oneseg.csv" --plot "$T/oneplots"
+expect_err "one spectrogram segment (300 samples, --spec-nfft 256 needs 384 for two)" "the missing spectrogram is explained"
+[ -s "$T/oneplots/psd.png" ] && [ ! -e "$T/oneplots/spectrogram.png" ] && pass "one segment: psd.png, no blank spectrogram.png" ||
+    fail "one segment: $(ls "$T/oneplots")"
 # a static log: every PSD value below 1 unit^2/Hz, so every dB value of the spectrogram is negative;
 # gnuplot's one-column stats dropped them all (outside the frequency axis' range) and --plot exited 3
 awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 6000; i++)
