@@ -19,6 +19,28 @@ expect_err "0 or 1" "--param switch error says what it takes"
 expect_exit 0 "--param zaru=1 accepted" "$H" replay vectors/walk.bin --quiet --param zaru=1
 expect_exit 0 "--param lever=0 accepted" "$H" replay vectors/walk.bin --quiet --param lever=0
 
+# --- `harness help CMD` is CMD's help (it printed the list of commands, and
+# `harness help nosuch` exited 0)
+expect_exit 0 "harness help" "$H" help
+expect_out "^commands:" "harness help lists the commands"
+expect_exit 0 "harness help replay" "$H" help replay
+expect_out "^usage: harness replay LOG" "harness help replay is replay's help"
+expect_out "^  --param KEY=VALUE" "harness help replay lists replay's options"
+expect_exit 0 "harness --help info" "$H" --help info
+expect_out "^usage: harness info LOG" "harness --help info is info's help"
+expect_exit 2 "harness help of an unknown command" "$H" help nosuch
+expect_err "unknown command 'nosuch'" "harness help nosuch names the command"
+if [ -s "$T/out" ]; then fail "harness help nosuch wrote to standard output"; else pass "harness help nosuch: nothing on standard output"; fi
+expect_exit 2 "harness help with two commands" "$H" help info replay
+# the list of commands on a full disk is a write error, as every command's
+# output is (it exited 0)
+if [ -w /dev/full ]; then
+    "$H" --help >/dev/full 2>"$T/err"; rc=$?
+    [ "$rc" -eq 3 ] && pass "harness --help >/dev/full exits 3" || fail "harness --help >/dev/full: exit $rc, expected 3"
+    "$H" help info >/dev/full 2>"$T/err"; rc=$?
+    [ "$rc" -eq 3 ] && pass "harness help info >/dev/full exits 3" || fail "harness help info >/dev/full: exit $rc, expected 3"
+fi
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
