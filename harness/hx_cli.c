@@ -152,17 +152,48 @@ int hx_flag(const hx_args_t *a, const char *name)
     return a->count[find(a, name)] > 0;
 }
 
+/* strtod alone took '0x10' as 16, ' 5' as 5 (but not '5 '), 'nan' and
+ * 'inf'; the log readers refuse all of them */
+int hx_scan_number(const char *s, const char **end, double *v)
+{
+    const char *p = s;
+    char *e;
+    double x;
+    if (*p == '+' || *p == '-') {
+        p++;
+    }
+    if (!((*p >= '0' && *p <= '9') || (*p == '.' && p[1] >= '0' && p[1] <= '9')) ||
+        (p[0] == '0' && (p[1] == 'x' || p[1] == 'X'))) {
+        return -1;
+    }
+    x = strtod(s, &e);
+    if (e == s || !isfinite(x)) {
+        return -1;
+    }
+    *v = x;
+    *end = e;
+    return 0;
+}
+
+int hx_parse_number(const char *s, double *v)
+{
+    const char *end;
+    double x;
+    if (hx_scan_number(s, &end, &x) != 0 || *end != '\0') {
+        return -1;
+    }
+    *v = x;
+    return 0;
+}
+
 int hx_arg_double(const hx_args_t *a, const char *name, double lo, double hi, double *out)
 {
     const char *s = hx_arg(a, name);
-    char *end;
-    double v;
+    double v = 0.0;
     if (s == NULL) {
         return 0;
     }
-    errno = 0;
-    v = strtod(s, &end);
-    if (end == s || *end != '\0' || v != v || v < lo || v > hi) {
+    if (hx_parse_number(s, &v) != 0 || v < lo || v > hi) {
         hx_error(a->spec->name, "%s '%s' is not a number in [%g, %g]", name, s, lo, hi);
         return -1;
     }
@@ -180,7 +211,8 @@ int hx_arg_long(const hx_args_t *a, const char *name, long lo, long hi, long *ou
     }
     errno = 0;
     v = strtol(s, &end, 10);
-    if (end == s || *end != '\0' || errno != 0 || v < lo || v > hi) {
+    if (!((s[0] >= '0' && s[0] <= '9') || ((s[0] == '-' || s[0] == '+') && s[1] >= '0' && s[1] <= '9')) ||
+        end == s || *end != '\0' || errno != 0 || v < lo || v > hi) {
         hx_error(a->spec->name, "%s '%s' is not an integer in [%ld, %ld]", name, s, lo, hi);
         return -1;
     }

@@ -311,9 +311,9 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
         }
     }
     for (i = 1; i < ntok; i++) {
-        char *eq = strchr(tok[i], '='), *end;
+        char *eq = strchr(tok[i], '=');
         int k;
-        double v;
+        double v = 0.0;
         uint32_t pm = mask;
         if (strncmp(tok[i], "ch=", 3) == 0) {
             continue;
@@ -336,8 +336,7 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
             }
             return -1;
         }
-        v = strtod(eq + 1, &end);
-        if (end == eq + 1 || *end != '\0' || !isfinite(v)) {
+        if (hx_parse_number(eq + 1, &v) != 0) {
             snprintf(err, err_size, "effect %s: %s needs a number, got '%s'", info->name, tok[i], eq + 1);
             return -1;
         }
@@ -491,11 +490,10 @@ void hx_profile_bias_eq6(fnav_profile_t *p)
 
 static int parse_triple(const char *s, double v[3])
 {
-    char *end;
+    const char *end;
     int i;
     for (i = 0; i < 3; i++) {
-        v[i] = strtod(s, &end);
-        if (end == s || !isfinite(v[i])) {
+        if (hx_scan_number(s, &end, &v[i]) != 0) {
             return -1;
         }
         s = end;

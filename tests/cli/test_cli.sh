@@ -41,6 +41,40 @@ if [ -w /dev/full ]; then
     [ "$rc" -eq 3 ] && pass "harness help info >/dev/full exits 3" || fail "harness help info >/dev/full: exit $rc, expected 3"
 fi
 
+# --- numbers on the command line are decimal, finite and the whole value,
+# read alike by every option (hx_parse_number): strtod took a hexadecimal
+# '0x10' as 16 and skipped leading blanks (' 5' passed, '5 ' did not), while
+# the log readers refuse both; each refusal is a usage error naming the option
+S="$T/s.bin"
+for v in 0x10 " 50" "	50" nan inf 1e999 5x "" -5 0; do
+    expect_exit 2 "convert --rate '$v' refused" "$H" convert vectors/walk.bin "$T/c.bin" --rate "$v"
+    expect_err "--rate" "convert --rate '$v': the error names the option"
+done
+expect_exit 2 "psd --nfft ' 64' refused" "$H" psd vectors/walk.bin --nfft " 64" --json "$T/p.json"
+expect_err "--nfft ' 64' is not an integer" "psd --nfft ' 64': the error names the option"
+expect_exit 2 "psd --nfft 99999999999999999999 refused" "$H" psd vectors/walk.bin --nfft 99999999999999999999
+expect_exit 2 "sim --duration 0x2 refused" "$H" sim --out "$S" --duration 0x2
+expect_err "--duration '0x2' is not a number" "sim --duration 0x2: the error names the option"
+expect_exit 2 "--param gamma=0x1p17 refused" "$H" replay vectors/walk.bin --quiet --param gamma=0x1p17
+expect_err "gamma" "--param gamma=0x1p17: the error names the key"
+expect_exit 2 "--param 'gamma= 1e5' refused" "$H" replay vectors/walk.bin --quiet --param "gamma= 1e5"
+expect_exit 2 "sim --effect offset:value=0x1 refused" "$H" sim --out "$S" --duration 2 --effect offset:value=0x1
+expect_err "value" "sim --effect offset:value=0x1: the error names the parameter"
+expect_exit 2 "sim --mount 0x1,0,0 refused" "$H" sim --out "$S" --duration 2 --mount 0x1,0,0
+expect_exit 2 "sim --mount '1, 0,0' refused" "$H" sim --out "$S" --duration 2 --mount "1, 0,0"
+expect_err "--mount" "sim --mount: the error names the option"
+expect_exit 2 "sim --motion stand:0x2 refused" "$H" sim --out "$S" --motion stand:0x2
+expect_exit 2 "sim --motion 'stand: 2' refused" "$H" sim --out "$S" --motion "stand: 2"
+expect_exit 2 "simgap-validate --mag-range 0x1,10 refused" "$H" simgap-validate --mag-range 0x1,10 --cases 1 --only 1
+expect_err "--mag-range '0x1,10'" "--mag-range 0x1,10: the error names the option"
+expect_exit 2 "simgap-validate --mag-range '1, 10' refused" "$H" simgap-validate --mag-range "1, 10" --cases 1 --only 1
+expect_err "--mag-range '1, 10'" "--mag-range '1, 10': the error names the option"
+# what stays accepted: signs, a point, an exponent, -0 where 0 is allowed
+expect_exit 0 "convert --rate +1e2" "$H" convert vectors/walk.bin "$T/c.bin" --rate +1e2
+expect_exit 0 "convert --rate 100." "$H" convert vectors/walk.bin "$T/c.bin" --rate 100.
+expect_exit 0 "sim --duration .5 --mount -1.5,0,2e0 --motion stand:0.5" "$H" sim --out "$S" --duration .5 --mount -1.5,0,2e0 --motion stand:0.5
+expect_exit 0 "--param gamma=1.5E5" "$H" replay vectors/walk.bin --quiet --param gamma=1.5E5
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
