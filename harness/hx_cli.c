@@ -194,7 +194,7 @@ int hx_arg_double(const hx_args_t *a, const char *name, double lo, double hi, do
         return 0;
     }
     if (hx_parse_number(s, &v) != 0 || v < lo || v > hi) {
-        hx_error(a->spec->name, "%s '%s' is not a number in [%g, %g]", name, s, lo, hi);
+        hx_error(a->spec->name, "%s '%s' is not a number in [%.10g, %.10g]", name, s, lo, hi);
         return -1;
     }
     *out = v;

@@ -75,6 +75,13 @@ expect_exit 0 "convert --rate 100." "$H" convert vectors/walk.bin "$T/c.bin" --r
 expect_exit 0 "sim --duration .5 --mount -1.5,0,2e0 --motion stand:0.5" "$H" sim --out "$S" --duration .5 --mount -1.5,0,2e0 --motion stand:0.5
 expect_exit 0 "--param gamma=1.5E5" "$H" replay vectors/walk.bin --quiet --param gamma=1.5E5
 
+# --- a range in an error is printed exactly: "--seed '4294967296' is not a
+# number in [0, 4.29497e+09]" read as if the value were inside it
+expect_exit 2 "sim --seed 4294967296 refused" "$H" sim --out "$T/s.bin" --seed 4294967296
+expect_err "--seed '4294967296' is not a number in \[0, 4294967295\]" "the --seed range is printed exactly"
+expect_exit 2 "live --timeout 0.01 refused" "$H" live /dev/null --timeout 0.01
+expect_err "--timeout '0.01' is not a number in \[0.1, 1000000\]" "the --timeout range is printed exactly"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
