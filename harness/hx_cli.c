@@ -43,6 +43,26 @@ void hx_usage(const hx_spec_t *spec, FILE *f)
     fprintf(f, "  %-22s %s\n", "--help", "show this help");
 }
 
+/* The name of positional argument `k` (0-based) in a usage such as
+ * "LOG PORT [options]": its k-th word of capitals before the options, or "". */
+static void missing_name(const char *usage, int k, char *out, size_t size)
+{
+    const char *p = usage;
+    out[0] = '\0';
+    while (p != NULL && *p != '\0') {
+        size_t n = strspn(p, "ABCDEFGHIJKLMNOPQRSTUVWXYZ_");
+        if (n == 0 || (p[n] != ' ' && p[n] != '\0')) {
+            return; /* "[options]", "--series", "|": the positional words are over */
+        }
+        if (k-- == 0) {
+            snprintf(out, size, "%.*s", (int)n, p);
+            return;
+        }
+        p += n;
+        p += strspn(p, " ");
+    }
+}
+
 int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
 {
     int i;
@@ -113,7 +133,9 @@ int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
         a->pos[a->npos++] = s;
     }
     if (a->npos < spec->min_pos) {
-        hx_error(spec->name, "missing argument");
+        char what[32];
+        missing_name(spec->usage, a->npos, what, sizeof what);
+        hx_error(spec->name, "missing argument%s%s", what[0] != '\0' ? " " : "", what);
         hx_usage(spec, stderr);
         return -1;
     }

@@ -82,6 +82,15 @@ expect_err "--seed '4294967296' is not a number in \[0, 4294967295\]" "the --see
 expect_exit 2 "live --timeout 0.01 refused" "$H" live /dev/null --timeout 0.01
 expect_err "--timeout '0.01' is not a number in \[0.1, 1000000\]" "the --timeout range is printed exactly"
 
+# --- a missing positional argument is named ("missing argument" alone left
+# the reader to count them against the usage)
+expect_exit 2 "info without LOG" "$H" info
+expect_err "error: missing argument LOG" "info: the missing LOG is named"
+expect_exit 2 "stream without PORT" "$H" stream vectors/walk.bin
+expect_err "error: missing argument PORT" "stream: the missing PORT is named"
+expect_exit 2 "convert without OUT" "$H" convert vectors/walk.bin
+expect_err "error: missing argument OUT" "convert: the missing OUT is named"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
