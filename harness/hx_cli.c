@@ -38,6 +38,12 @@ void hx_usage(const hx_spec_t *spec, FILE *f)
         }
         snprintf(left, sizeof left, "%s%s%s", spec->opts[i].name, spec->opts[i].metavar ? " " : "",
                  spec->opts[i].metavar ? spec->opts[i].metavar : "");
+        if (strlen(left) > 22) {
+            /* a name and value wider than the column stand on their own
+             * line ("--filter-profile NAME|FILE the filter's ..." ran together) */
+            fprintf(f, "  %s\n", left);
+            left[0] = '\0';
+        }
         fprintf(f, "  %-22s %s%s\n", left, spec->opts[i].help, spec->opts[i].repeat ? " (repeatable)" : "");
     }
     fprintf(f, "  %-22s %s\n", "--help", "show this help");

@@ -91,6 +91,13 @@ expect_err "error: missing argument PORT" "stream: the missing PORT is named"
 expect_exit 2 "convert without OUT" "$H" convert vectors/walk.bin
 expect_err "error: missing argument OUT" "convert: the missing OUT is named"
 
+# --- an option whose name and value are wider than the usage's column has its
+# help on the next line ("--filter-profile NAME|FILE the filter's sensor
+# profile" ran the value into the help)
+expect_exit 0 "montecarlo --help" "$H" montecarlo --help
+expect_out_re "^  --filter-profile NAME\|FILE$" "a wide option stands on its own line"
+expect_out_re "^ {25}the filter's sensor profile" "its help follows on the next line, in the column"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
