@@ -98,6 +98,18 @@ expect_exit 0 "montecarlo --help" "$H" montecarlo --help
 expect_out_re "^  --filter-profile NAME\|FILE$" "a wide option stands on its own line"
 expect_out_re "^ {25}the filter's sensor profile" "its help follows on the next line, in the column"
 
+# --- info's rate of a time-stamped text log is estimated from the stamps of
+# its first 4,096 samples, as every command's (hx_reader_open), while the
+# interval line is of the whole log: docs/harness.md said 1 / the median
+# interval, and pyshoe's 2017-11-22-11-22-03_imu.csv reads "rate 200.000 Hz"
+# beside "median 4.998 ms" (its first 4,096 intervals have a median of 5.000 ms)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; t = 0; for (k = 0; k < 9100; k++) { printf "%.6f,0,0,9.8,0,0,0\n", t; t += (k < 4100 ? 0.010 : 0.010002) } }' > "$T/r.csv"
+expect_exit 0 "info on a log whose interval grows by 2 us after 4,100 samples" "$H" info "$T/r.csv"
+expect_out "^rate        100.000 Hz (from the time stamps)" "the rate is of the first 4,096 samples"
+expect_out "^interval    median 10.002 ms" "the interval line is of the whole log"
+grep -q "first 4,096 samples" docs/harness.md && pass "docs/harness.md says the rate is of the first 4,096 samples" ||
+    fail "docs/harness.md does not say that info's rate comes from the first 4,096 samples"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
