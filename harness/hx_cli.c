@@ -447,50 +447,56 @@ int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, c
 
 FILE *hx_json_stdout = NULL;
 
-/* argv[*i] is option `name` with the value "-", as `name -` or `name=-`
- * (hx_args_parse reads both); *i steps over a separate value. */
-static int opt_is_dash(char **argv, int argc, int *i, const char *name)
+/* argv[*i] is option `name`, as `name VALUE` or `name=VALUE` (hx_args_parse
+ * reads both): 1 with *val set (NULL when a separate value is missing) and
+ * *i on the last word used; else 0. */
+static int opt_value(char **argv, int argc, int *i, const char *name, const char **val)
 {
     const size_t len = strlen(name);
     if (strncmp(argv[*i], name, len) != 0) {
         return 0;
     }
-    if (strcmp(argv[*i] + len, "=-") == 0) {
+    if (argv[*i][len] == '=') {
+        *val = argv[*i] + len + 1;
         return 1;
     }
-    if (argv[*i][len] == '\0' && *i + 1 < argc && strcmp(argv[*i + 1], "-") == 0) {
-        (*i)++;
-        return 1;
+    if (argv[*i][len] != '\0') {
+        return 0;
     }
-    return 0;
+    *val = *i + 1 < argc ? argv[++*i] : NULL;
+    return 1;
 }
 
 int hx_json_stdout_claim(const char *cmd, int argc, char **argv)
 {
     static const char *const k_other[] = { "--out", "--csv" }; /* options whose '-' is standard output too */
-    const char *other = NULL;
-    int i, k, json = 0, fd;
+    const char *json = NULL, *other[2] = { NULL, NULL }, *v;
+    int i, k, fd;
     for (i = 0; i < argc; i++) {
         if (strcmp(argv[i], "--") == 0) {
             break; /* positional arguments only from here */
         }
-        if (opt_is_dash(argv, argc, &i, "--json")) {
-            json = 1;
+        /* the last value of each counts, as for hx_arg(): `--json - --json F`
+         * sent the command's text to standard error and the JSON to F */
+        if (opt_value(argv, argc, &i, "--json", &v)) {
+            json = v;
             continue;
         }
-        for (k = 0; k < (int)(sizeof k_other / sizeof k_other[0]); k++) {
-            if (opt_is_dash(argv, argc, &i, k_other[k])) {
-                other = k_other[k];
+        for (k = 0; k < 2; k++) {
+            if (opt_value(argv, argc, &i, k_other[k], &v)) {
+                other[k] = v;
                 break;
             }
         }
     }
-    if (!json) {
+    if (json == NULL || strcmp(json, "-") != 0) {
         return 0;
     }
-    if (other != NULL) {
-        hx_error(cmd, "--json - and %s - cannot both write to standard output", other);
-        return -1;
+    for (k = 0; k < 2; k++) {
+        if (other[k] != NULL && strcmp(other[k], "-") == 0) {
+            hx_error(cmd, "--json - and %s - cannot both write to standard output", k_other[k]);
+            return -1;
+        }
     }
     fflush(stdout);
     fd = dup(STDOUT_FILENO);

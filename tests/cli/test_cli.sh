@@ -110,6 +110,21 @@ expect_out "^interval    median 10.002 ms" "the interval line is of the whole lo
 grep -q "first 4,096 samples" docs/harness.md && pass "docs/harness.md says the rate is of the first 4,096 samples" ||
     fail "docs/harness.md does not say that info's rate comes from the first 4,096 samples"
 
+# --- a repeated option takes its last value, and so does `--json -`'s claim
+# on standard output: `info LOG --json - --json F` wrote the JSON to F and
+# info's text to standard error, leaving standard output empty; `replay LOG
+# --out - --out F --json -` was refused as two outputs on standard output
+expect_exit 0 "info --json - --json FILE" "$H" info vectors/walk.bin --json - --json "$T/i.json"
+expect_out "^samples     16539" "info's text stays on standard output when a later --json names a file"
+json "$T/i.json" "j['samples'] == 16539" && pass "the JSON goes to the last --json" || fail "the last --json FILE was not written"
+expect_exit 0 "info --json FILE --json -" "$H" info vectors/walk.bin --json "$T/i2.json" --json -
+json "$T/out" "j['samples'] == 16539" && pass "the last --json - writes the JSON alone on standard output" || fail "standard output is not the JSON alone: $(head -c 80 "$T/out")"
+expect_exit 0 "replay --out - --out FILE --json -" "$H" replay vectors/walk.bin --quiet --out - --out "$T/t.csv" --json -
+json "$T/out" "'return_error_3d_m' in j" && pass "replay's JSON alone on standard output, the trajectory in the later --out" || fail "replay --out - --out F --json -: $(head -c 80 "$T/out")"
+expect_exit 2 "replay --out F --out - --json -" "$H" replay vectors/walk.bin --quiet --out "$T/t.csv" --out - --json -
+expect_err "cannot both write to standard output" "two outputs on standard output are still refused"
+expect_exit 2 "replay --out - --json=-" "$H" replay vectors/walk.bin --quiet --out=- --json=-
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
