@@ -125,6 +125,15 @@ expect_exit 2 "replay --out F --out - --json -" "$H" replay vectors/walk.bin --q
 expect_err "cannot both write to standard output" "two outputs on standard output are still refused"
 expect_exit 2 "replay --out - --json=-" "$H" replay vectors/walk.bin --quiet --out=- --json=-
 
+# --- replay checks --from and --input-rate as every command that reads a log
+# (hx_check_input_opts): it took --from auto, which the others refuse, and
+# worded the error its own way
+for c in info replay psd allan simgap; do
+    expect_exit 2 "$c --from auto refused" "$H" $c vectors/walk.bin --from auto
+    expect_err "unknown input format 'auto' (known: bin, csv" "$c --from auto: the shared message"
+    expect_exit 2 "$c --input-rate 0x10 refused" "$H" $c vectors/walk.bin --input-rate 0x10
+done
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
