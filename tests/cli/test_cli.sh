@@ -134,6 +134,11 @@ for c in info replay psd allan simgap; do
     expect_exit 2 "$c --input-rate 0x10 refused" "$H" $c vectors/walk.bin --input-rate 0x10
 done
 
+# --- stream's --help lists every exit status (it left out 130 / 143, Ctrl-C /
+# SIGTERM before the END frame, docs/harness.md "stream")
+expect_exit 0 "stream --help" "$H" stream --help
+expect_out "130 (143) interrupted" "stream --help names the status of an interrupted stream"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
