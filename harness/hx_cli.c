@@ -248,6 +248,21 @@ int hx_arg_long(const hx_args_t *a, const char *name, long lo, long hi, long *ou
     return 0;
 }
 
+int hx_arg_whole(const hx_args_t *a, const char *name, double lo, double hi, double *out)
+{
+    const char *s = hx_arg(a, name);
+    double v = 0.0;
+    if (s == NULL) {
+        return 0;
+    }
+    if (hx_parse_number(s, &v) != 0 || v < lo || v > hi || v != floor(v)) {
+        hx_error(a->spec->name, "%s '%s' is not a whole number in [%.10g, %.10g]", name, s, lo, hi);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
 void hx_error(const char *cmd, const char *fmt, ...)
 {
     va_list ap;

@@ -72,6 +72,10 @@ int hx_parse_number(const char *s, double *v);
  *  (message printed). Range checked against [lo, hi]. */
 int hx_arg_double(const hx_args_t *a, const char *name, double lo, double hi, double *out);
 int hx_arg_long(const hx_args_t *a, const char *name, long lo, long hi, long *out);
+/** A count or seed beyond long's range: a whole number (1e3 is one) in
+ *  [lo, hi], as a double; 0 ok (default kept when absent), -1 with the
+ *  error printed. */
+int hx_arg_whole(const hx_args_t *a, const char *name, double lo, double hi, double *out);
 
 /** Print the usage of a command to a stream. */
 void hx_usage(const hx_spec_t *spec, FILE *f);

@@ -516,12 +516,8 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
     memset(s, 0, sizeof *s);
     s->motion_cfg = hx_motion_config_default();
     if (hx_arg_double(a, "--rate", 1.0, 100000.0, &rate) != 0 || hx_arg_double(a, "--duration", 1e-3, 1e6, &dur) != 0 ||
-        hx_arg_double(a, "--oversample", 1.0, 1024.0, &over) != 0 ||
-        hx_arg_double(a, "--seed", 0.0, 4294967295.0, &seed) != 0) {
-        return -1;
-    }
-    if (over != floor(over) || seed != floor(seed)) {
-        hx_error(cmd, "--oversample and --seed take whole numbers");
+        hx_arg_whole(a, "--oversample", 1.0, 1024.0, &over) != 0 ||
+        hx_arg_whole(a, "--seed", 0.0, 4294967295.0, &seed) != 0) {
         return -1;
     }
     s->duration_s = dur;

@@ -78,7 +78,7 @@ expect_exit 0 "--param gamma=1.5E5" "$H" replay vectors/walk.bin --quiet --param
 # --- a range in an error is printed exactly: "--seed '4294967296' is not a
 # number in [0, 4.29497e+09]" read as if the value were inside it
 expect_exit 2 "sim --seed 4294967296 refused" "$H" sim --out "$T/s.bin" --seed 4294967296
-expect_err "--seed '4294967296' is not a number in \[0, 4294967295\]" "the --seed range is printed exactly"
+expect_err "--seed '4294967296' is not a [a-z ]*number in \[0, 4294967295\]" "the --seed range is printed exactly"
 expect_exit 2 "live --timeout 0.01 refused" "$H" live /dev/null --timeout 0.01
 expect_err "--timeout '0.01' is not a number in \[0.1, 1000000\]" "the --timeout range is printed exactly"
 
@@ -138,6 +138,22 @@ done
 # SIGTERM before the END frame, docs/harness.md "stream")
 expect_exit 0 "stream --help" "$H" stream --help
 expect_out "130 (143) interrupted" "stream --help names the status of an interrupted stream"
+
+# --- counts and seeds are whole numbers everywhere (hx_arg_whole): allan cut
+# --seed 1.5 to 1 and --sim-samples 100.5 to 100 without a word, while sim
+# and montecarlo refused the same values
+printf '1\n2\n3\n4\n5\n6\n7\n8\n9\n10\n' > "$T/ten.txt"
+expect_exit 2 "allan --seed 1.5 refused" "$H" allan --series "$T/ten.txt" --rate 1 --seed 1.5
+expect_err "--seed '1.5' is not a whole number in \[0, 4294967295\]" "allan --seed 1.5: the error names the option"
+expect_exit 2 "allan --sim-samples 100.5 refused" "$H" allan --series "$T/ten.txt" --rate 1 --sim-samples 100.5
+expect_err "--sim-samples '100.5' is not a whole number" "allan --sim-samples 100.5: the error names the option"
+expect_exit 2 "sim --seed 1.5 refused" "$H" sim --out "$T/s.bin" --duration 1 --seed 1.5
+expect_err "--seed '1.5' is not a whole number" "sim --seed 1.5: the error names the option"
+expect_exit 2 "sim --oversample 2.5 refused" "$H" sim --out "$T/s.bin" --duration 1 --oversample 2.5
+expect_err "--oversample '2.5' is not a whole number" "sim --oversample 2.5: the error names the option"
+expect_exit 2 "montecarlo --seeds 2.5 refused" "$H" montecarlo --seeds 2.5 --duration 2
+expect_err "--seeds '2.5' is not a whole number" "montecarlo --seeds 2.5: the error names the option"
+expect_exit 0 "sim --seed 1e3 (a whole number)" "$H" sim --out "$T/s.bin" --duration 1 --seed 1e3
 
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
