@@ -82,7 +82,11 @@ int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
             continue;
         }
         if (!only_pos && (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0)) {
-            hx_usage(spec, stdout);
+            /* beside `--json -`, standard output is kept in hx_json_stdout
+             * (the help went to standard error) */
+            FILE *out = hx_json_stdout != NULL ? hx_json_stdout : stdout;
+            hx_usage(spec, out);
+            fflush(out); /* a write error on stdout is main()'s to report (exit 3) */
             return 1;
         }
         if (!only_pos && s[0] == '-' && s[1] == '-') {

@@ -155,6 +155,11 @@ expect_exit 2 "montecarlo --seeds 2.5 refused" "$H" montecarlo --seeds 2.5 --dur
 expect_err "--seeds '2.5' is not a whole number" "montecarlo --seeds 2.5: the error names the option"
 expect_exit 0 "sim --seed 1e3 (a whole number)" "$H" sim --out "$T/s.bin" --duration 1 --seed 1e3
 
+# --- --help goes to standard output even beside `--json -` (which had already
+# turned standard output over to the JSON and sent the help to standard error)
+expect_exit 0 "info --json - --help" "$H" info vectors/walk.bin --json - --help
+expect_out "^usage: harness info LOG" "the help is on standard output beside --json -"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
