@@ -74,6 +74,7 @@ expect_exit 0 "convert --rate +1e2" "$H" convert vectors/walk.bin "$T/c.bin" --r
 expect_exit 0 "convert --rate 100." "$H" convert vectors/walk.bin "$T/c.bin" --rate 100.
 expect_exit 0 "sim --duration .5 --mount -1.5,0,2e0 --motion stand:0.5" "$H" sim --out "$S" --duration .5 --mount -1.5,0,2e0 --motion stand:0.5
 expect_exit 0 "--param gamma=1.5E5" "$H" replay vectors/walk.bin --quiet --param gamma=1.5E5
+expect_exit 0 "sim --ring-scale -0" "$H" sim --out "$S" --duration 1 --ring-scale -0
 
 # --- a range in an error is printed exactly: "--seed '4294967296' is not a
 # number in [0, 4.29497e+09]" read as if the value were inside it
