@@ -1626,8 +1626,8 @@ int hx_cmd_allan(int argc, char **argv)
     R->conf = 0.682689492137086; /* one sigma, erf(1 / sqrt(2)): Stable32's "0.683" (docs/allan.md) */
     if (hx_arg_double(&a, "--rate", 1e-9, 1e9, &rate_opt) != 0 || hx_arg_long(&a, "--per-octave", 1, 4, &per_octave) != 0 ||
         hx_arg_double(&a, "--max-tau-frac", 1e-6, 0.5, &R->tau_max_frac) != 0 ||
-        hx_arg_double(&a, "--seed", 0.0, 4294967295.0, &seed_d) != 0 ||
-        hx_arg_double(&a, "--sim-samples", 16.0, 4294967295.0, &nsim_d) != 0 ||
+        hx_arg_whole(&a, "--seed", 0.0, 4294967295.0, &seed_d) != 0 ||
+        hx_arg_whole(&a, "--sim-samples", 16.0, 4294967295.0, &nsim_d) != 0 ||
         hx_arg_double(&a, "--conf", 0.01, 0.999, &R->conf) != 0 ||
         hx_arg_double(&a, "--max-work", 1.0, 1e18, &R->max_work) != 0 || hx_arg_long(&a, "--column", 1, 1000, &column) != 0) {
         free(R);

@@ -619,12 +619,8 @@ int hx_cmd_montecarlo(int argc, char **argv)
         const char *json = hx_arg(&a, "--json"), *csv = hx_arg(&a, "--csv"), *png = hx_arg(&a, "--plot");
         double seeds = 50.0, bin = 1.0;
         int nvar, v, i, status = HX_EXIT_OK;
-        if (hx_arg_double(&a, "--seeds", 1.0, 100000.0, &seeds) != 0 ||
+        if (hx_arg_whole(&a, "--seeds", 1.0, 100000.0, &seeds) != 0 ||
             hx_arg_double(&a, "--bin", 0.01, 1e5, &bin) != 0) {
-            return HX_EXIT_USAGE;
-        }
-        if (seeds != floor(seeds)) {
-            hx_error("montecarlo", "--seeds takes a whole number of runs, not %g", seeds);
             return HX_EXIT_USAGE;
         }
         if (bm == NULL) {

@@ -56,16 +56,14 @@ int hx_cmd_replay(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    /* the checks of every command that reads a log (replay took --from
+     * auto, which they refuse) */
+    if (hx_check_input_opts("replay", &a) != 0 || hx_arg_double(&a, "--input-rate", 1e-3, 1e6, &in_rate) != 0) {
+        return HX_EXIT_USAGE;
+    }
     from = hx_arg(&a, "--from");
     if (from != NULL) {
         fmt = hx_format_from_name(from);
-        if (fmt == HX_FMT_COUNT) {
-            hx_error("replay", "unknown --from format '%s' (%s)", from, hx_format_list());
-            return HX_EXIT_USAGE;
-        }
-    }
-    if (hx_arg_double(&a, "--input-rate", 0.001, 1e6, &in_rate) != 0) {
-        return HX_EXIT_USAGE;
     }
     if (hx_nav_config(&o, &cfg, err, sizeof err) != 0) {
         hx_error("replay", "%s", err);

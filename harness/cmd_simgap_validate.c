@@ -84,11 +84,9 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     mr = hx_arg(&a, "--mag-range");
     if (mr != NULL) {
         /* two numbers and nothing else (sscanf took "1,10x" and "1,inf") */
-        char *e1, *e2;
-        o.mag_lo = strtod(mr, &e1);
-        o.mag_hi = e1 != mr && *e1 == ',' ? strtod(e1 + 1, &e2) : (double)NAN;
-        if (e1 == mr || *e1 != ',' || e2 == e1 + 1 || *e2 != '\0' || !(o.mag_lo >= SGV_MAG_MIN) ||
-            !(o.mag_hi >= o.mag_lo) || !(o.mag_hi <= SGV_MAG_MAX)) {
+        const char *e1 = mr;
+        if (hx_scan_number(mr, &e1, &o.mag_lo) != 0 || *e1 != ',' || hx_parse_number(e1 + 1, &o.mag_hi) != 0 ||
+            !(o.mag_lo >= SGV_MAG_MIN) || !(o.mag_hi >= o.mag_lo) || !(o.mag_hi <= SGV_MAG_MAX)) {
             hx_error("simgap-validate", "--mag-range '%s': wants LO,HI with %g <= LO <= HI <= %g", mr, SGV_MAG_MIN,
                      SGV_MAG_MAX);
             return HX_EXIT_USAGE;

@@ -35,7 +35,8 @@ static const hx_spec_t k_spec = {
     "The other end is `harness live PORT`. The --inject-* and --hangup-after\n"
     "options damage the stream on purpose to test a receiver.\n"
     "Exit status: 0 sent, 1 the log was bad (every sample before the error was\n"
-    "sent), 2 usage, 3 the port could not be opened or stopped accepting data.",
+    "sent), 2 usage, 3 the port could not be opened or stopped accepting data,\n"
+    "130 (143) interrupted by Ctrl-C (SIGTERM) before the END frame.",
     2, 2, k_opts
 };
 

@@ -38,9 +38,35 @@ void hx_usage(const hx_spec_t *spec, FILE *f)
         }
         snprintf(left, sizeof left, "%s%s%s", spec->opts[i].name, spec->opts[i].metavar ? " " : "",
                  spec->opts[i].metavar ? spec->opts[i].metavar : "");
+        if (strlen(left) > 22) {
+            /* a name and value wider than the column stand on their own
+             * line ("--filter-profile NAME|FILE the filter's ..." ran together) */
+            fprintf(f, "  %s\n", left);
+            left[0] = '\0';
+        }
         fprintf(f, "  %-22s %s%s\n", left, spec->opts[i].help, spec->opts[i].repeat ? " (repeatable)" : "");
     }
     fprintf(f, "  %-22s %s\n", "--help", "show this help");
+}
+
+/* The name of positional argument `k` (0-based) in a usage such as
+ * "LOG PORT [options]": its k-th word of capitals before the options, or "". */
+static void missing_name(const char *usage, int k, char *out, size_t size)
+{
+    const char *p = usage;
+    out[0] = '\0';
+    while (p != NULL && *p != '\0') {
+        size_t n = strspn(p, "ABCDEFGHIJKLMNOPQRSTUVWXYZ_");
+        if (n == 0 || (p[n] != ' ' && p[n] != '\0')) {
+            return; /* "[options]", "--series", "|": the positional words are over */
+        }
+        if (k-- == 0) {
+            snprintf(out, size, "%.*s", (int)n, p);
+            return;
+        }
+        p += n;
+        p += strspn(p, " ");
+    }
 }
 
 int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
@@ -56,7 +82,11 @@ int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
             continue;
         }
         if (!only_pos && (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0)) {
-            hx_usage(spec, stdout);
+            /* beside `--json -`, standard output is kept in hx_json_stdout
+             * (the help went to standard error) */
+            FILE *out = hx_json_stdout != NULL ? hx_json_stdout : stdout;
+            hx_usage(spec, out);
+            fflush(out); /* a write error on stdout is main()'s to report (exit 3) */
             return 1;
         }
         if (!only_pos && s[0] == '-' && s[1] == '-') {
@@ -113,7 +143,9 @@ int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
         a->pos[a->npos++] = s;
     }
     if (a->npos < spec->min_pos) {
-        hx_error(spec->name, "missing argument");
+        char what[32];
+        missing_name(spec->usage, a->npos, what, sizeof what);
+        hx_error(spec->name, "missing argument%s%s", what[0] != '\0' ? " " : "", what);
         hx_usage(spec, stderr);
         return -1;
     }
@@ -152,18 +184,49 @@ int hx_flag(const hx_args_t *a, const char *name)
     return a->count[find(a, name)] > 0;
 }
 
+/* strtod alone took '0x10' as 16, ' 5' as 5 (but not '5 '), 'nan' and
+ * 'inf'; the log readers refuse all of them */
+int hx_scan_number(const char *s, const char **end, double *v)
+{
+    const char *p = s;
+    char *e;
+    double x;
+    if (*p == '+' || *p == '-') {
+        p++;
+    }
+    if (!((*p >= '0' && *p <= '9') || (*p == '.' && p[1] >= '0' && p[1] <= '9')) ||
+        (p[0] == '0' && (p[1] == 'x' || p[1] == 'X'))) {
+        return -1;
+    }
+    x = strtod(s, &e);
+    if (e == s || !isfinite(x)) {
+        return -1;
+    }
+    *v = x;
+    *end = e;
+    return 0;
+}
+
+int hx_parse_number(const char *s, double *v)
+{
+    const char *end;
+    double x;
+    if (hx_scan_number(s, &end, &x) != 0 || *end != '\0') {
+        return -1;
+    }
+    *v = x;
+    return 0;
+}
+
 int hx_arg_double(const hx_args_t *a, const char *name, double lo, double hi, double *out)
 {
     const char *s = hx_arg(a, name);
-    char *end;
-    double v;
+    double v = 0.0;
     if (s == NULL) {
         return 0;
     }
-    errno = 0;
-    v = strtod(s, &end);
-    if (end == s || *end != '\0' || v != v || v < lo || v > hi) {
-        hx_error(a->spec->name, "%s '%s' is not a number in [%g, %g]", name, s, lo, hi);
+    if (hx_parse_number(s, &v) != 0 || v < lo || v > hi) {
+        hx_error(a->spec->name, "%s '%s' is not a number in [%.10g, %.10g]", name, s, lo, hi);
         return -1;
     }
     *out = v;
@@ -180,8 +243,24 @@ int hx_arg_long(const hx_args_t *a, const char *name, long lo, long hi, long *ou
     }
     errno = 0;
     v = strtol(s, &end, 10);
-    if (end == s || *end != '\0' || errno != 0 || v < lo || v > hi) {
+    if (!((s[0] >= '0' && s[0] <= '9') || ((s[0] == '-' || s[0] == '+') && s[1] >= '0' && s[1] <= '9')) ||
+        end == s || *end != '\0' || errno != 0 || v < lo || v > hi) {
         hx_error(a->spec->name, "%s '%s' is not an integer in [%ld, %ld]", name, s, lo, hi);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+int hx_arg_whole(const hx_args_t *a, const char *name, double lo, double hi, double *out)
+{
+    const char *s = hx_arg(a, name);
+    double v = 0.0;
+    if (s == NULL) {
+        return 0;
+    }
+    if (hx_parse_number(s, &v) != 0 || v < lo || v > hi || v != floor(v)) {
+        hx_error(a->spec->name, "%s '%s' is not a whole number in [%.10g, %.10g]", name, s, lo, hi);
         return -1;
     }
     *out = v;
@@ -387,50 +466,56 @@ int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, c
 
 FILE *hx_json_stdout = NULL;
 
-/* argv[*i] is option `name` with the value "-", as `name -` or `name=-`
- * (hx_args_parse reads both); *i steps over a separate value. */
-static int opt_is_dash(char **argv, int argc, int *i, const char *name)
+/* argv[*i] is option `name`, as `name VALUE` or `name=VALUE` (hx_args_parse
+ * reads both): 1 with *val set (NULL when a separate value is missing) and
+ * *i on the last word used; else 0. */
+static int opt_value(char **argv, int argc, int *i, const char *name, const char **val)
 {
     const size_t len = strlen(name);
     if (strncmp(argv[*i], name, len) != 0) {
         return 0;
     }
-    if (strcmp(argv[*i] + len, "=-") == 0) {
+    if (argv[*i][len] == '=') {
+        *val = argv[*i] + len + 1;
         return 1;
     }
-    if (argv[*i][len] == '\0' && *i + 1 < argc && strcmp(argv[*i + 1], "-") == 0) {
-        (*i)++;
-        return 1;
+    if (argv[*i][len] != '\0') {
+        return 0;
     }
-    return 0;
+    *val = *i + 1 < argc ? argv[++*i] : NULL;
+    return 1;
 }
 
 int hx_json_stdout_claim(const char *cmd, int argc, char **argv)
 {
     static const char *const k_other[] = { "--out", "--csv" }; /* options whose '-' is standard output too */
-    const char *other = NULL;
-    int i, k, json = 0, fd;
+    const char *json = NULL, *other[2] = { NULL, NULL }, *v;
+    int i, k, fd;
     for (i = 0; i < argc; i++) {
         if (strcmp(argv[i], "--") == 0) {
             break; /* positional arguments only from here */
         }
-        if (opt_is_dash(argv, argc, &i, "--json")) {
-            json = 1;
+        /* the last value of each counts, as for hx_arg(): `--json - --json F`
+         * sent the command's text to standard error and the JSON to F */
+        if (opt_value(argv, argc, &i, "--json", &v)) {
+            json = v;
             continue;
         }
-        for (k = 0; k < (int)(sizeof k_other / sizeof k_other[0]); k++) {
-            if (opt_is_dash(argv, argc, &i, k_other[k])) {
-                other = k_other[k];
+        for (k = 0; k < 2; k++) {
+            if (opt_value(argv, argc, &i, k_other[k], &v)) {
+                other[k] = v;
                 break;
             }
         }
     }
-    if (!json) {
+    if (json == NULL || strcmp(json, "-") != 0) {
         return 0;
     }
-    if (other != NULL) {
-        hx_error(cmd, "--json - and %s - cannot both write to standard output", other);
-        return -1;
+    for (k = 0; k < 2; k++) {
+        if (other[k] != NULL && strcmp(other[k], "-") == 0) {
+            hx_error(cmd, "--json - and %s - cannot both write to standard output", k_other[k]);
+            return -1;
+        }
     }
     fflush(stdout);
     fd = dup(STDOUT_FILENO);

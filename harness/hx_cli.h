@@ -60,10 +60,22 @@ int hx_arg_count(const hx_args_t *a, const char *name);
 const char *hx_arg_at(const hx_args_t *a, const char *name, int i);
 /** Flag given? */
 int hx_flag(const hx_args_t *a, const char *name);
+/** Read a number as the command line takes it at the start of `s`: decimal
+ *  (optional sign, digits with an optional point, optional exponent), finite;
+ *  no leading blank, no hexadecimal, no nan or inf, as the log readers.
+ *  0 with *v and *end (just after it) set, -1 when no such number starts
+ *  there. Every option and option list that holds numbers reads them so. */
+int hx_scan_number(const char *s, const char **end, double *v);
+/** The whole of `s` is such a number: 0 with *v set, else -1. */
+int hx_parse_number(const char *s, double *v);
 /** Numeric option: 0 ok (default kept when absent), -1 on a bad number
  *  (message printed). Range checked against [lo, hi]. */
 int hx_arg_double(const hx_args_t *a, const char *name, double lo, double hi, double *out);
 int hx_arg_long(const hx_args_t *a, const char *name, long lo, long hi, long *out);
+/** A count or seed beyond long's range: a whole number (1e3 is one) in
+ *  [lo, hi], as a double; 0 ok (default kept when absent), -1 with the
+ *  error printed. */
+int hx_arg_whole(const hx_args_t *a, const char *name, double lo, double hi, double *out);
 
 /** Print the usage of a command to a stream. */
 void hx_usage(const hx_spec_t *spec, FILE *f);

@@ -1,5 +1,6 @@
 /* Foot motion generator with exact truth (see hx_motion.h, docs/simulator.md). */
 #include "hx_motion.h"
+#include "hx_cli.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -701,7 +702,7 @@ int hx_motion_scenario(const char *name, const hx_motion_config_t *cfg, double d
 
 static int parse_leg(hx_motion_t *m, char *item)
 {
-    char *name = item, *a1 = NULL, *a2 = NULL, *end;
+    char *name = item, *a1 = NULL, *a2 = NULL;
     double x1 = 0.0, x2 = 0.0;
     a1 = strchr(item, ':');
     if (a1 != NULL) {
@@ -710,13 +711,11 @@ static int parse_leg(hx_motion_t *m, char *item)
         if (a2 != NULL) {
             *a2++ = '\0';
         }
-        x1 = strtod(a1, &end);
-        if (end == a1 || *end != '\0' || !isfinite(x1)) {
+        if (hx_parse_number(a1, &x1) != 0) {
             return fail(m, "bad number in motion script", a1);
         }
         if (a2 != NULL) {
-            x2 = strtod(a2, &end);
-            if (end == a2 || *end != '\0' || !isfinite(x2)) {
+            if (hx_parse_number(a2, &x2) != 0) {
                 return fail(m, "bad number in motion script", a2);
             }
         }

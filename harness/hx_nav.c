@@ -165,8 +165,7 @@ static int set_param(fnav_nav_config_t *c, const char *kv, char *err, size_t err
 {
     char key[64];
     const char *eq = strchr(kv, '=');
-    char *end;
-    double v;
+    double v = 0.0;
     int i;
     void *p;
     if (eq == NULL || (size_t)(eq - kv) >= sizeof key) {
@@ -175,8 +174,7 @@ static int set_param(fnav_nav_config_t *c, const char *kv, char *err, size_t err
     }
     memcpy(key, kv, (size_t)(eq - kv));
     key[eq - kv] = '\0';
-    v = strtod(eq + 1, &end);
-    if (end == eq + 1 || *end != '\0' || !isfinite(v)) {
+    if (hx_parse_number(eq + 1, &v) != 0) {
         snprintf(err, err_size, "--param %s: '%s' is not a number", key, eq + 1);
         return -1;
     }
@@ -191,6 +189,12 @@ static int set_param(fnav_nav_config_t *c, const char *kv, char *err, size_t err
         return -1;
     }
     if (k_params[i].type == P_INT) {
+        /* every integer key is a 0/1 switch: zaru=0.5 was cast to 0 (off),
+         * zaru=-1 or 2 to on, zaru=1e20 was an undefined conversion */
+        if (v != 0.0 && v != 1.0) {
+            snprintf(err, err_size, "--param %s is a switch: 0 or 1, not '%s'", key, eq + 1);
+            return -1;
+        }
         *(int *)p = (int)v;
     } else {
         *(fnav_real_t *)p = (fnav_real_t)(v * k_params[i].scale);

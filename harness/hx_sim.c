@@ -311,9 +311,9 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
         }
     }
     for (i = 1; i < ntok; i++) {
-        char *eq = strchr(tok[i], '='), *end;
+        char *eq = strchr(tok[i], '=');
         int k;
-        double v;
+        double v = 0.0;
         uint32_t pm = mask;
         if (strncmp(tok[i], "ch=", 3) == 0) {
             continue;
@@ -336,8 +336,7 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
             }
             return -1;
         }
-        v = strtod(eq + 1, &end);
-        if (end == eq + 1 || *end != '\0' || !isfinite(v)) {
+        if (hx_parse_number(eq + 1, &v) != 0) {
             snprintf(err, err_size, "effect %s: %s needs a number, got '%s'", info->name, tok[i], eq + 1);
             return -1;
         }
@@ -491,11 +490,10 @@ void hx_profile_bias_eq6(fnav_profile_t *p)
 
 static int parse_triple(const char *s, double v[3])
 {
-    char *end;
+    const char *end;
     int i;
     for (i = 0; i < 3; i++) {
-        v[i] = strtod(s, &end);
-        if (end == s || !isfinite(v[i])) {
+        if (hx_scan_number(s, &end, &v[i]) != 0) {
             return -1;
         }
         s = end;
@@ -518,12 +516,8 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
     memset(s, 0, sizeof *s);
     s->motion_cfg = hx_motion_config_default();
     if (hx_arg_double(a, "--rate", 1.0, 100000.0, &rate) != 0 || hx_arg_double(a, "--duration", 1e-3, 1e6, &dur) != 0 ||
-        hx_arg_double(a, "--oversample", 1.0, 1024.0, &over) != 0 ||
-        hx_arg_double(a, "--seed", 0.0, 4294967295.0, &seed) != 0) {
-        return -1;
-    }
-    if (over != floor(over) || seed != floor(seed)) {
-        hx_error(cmd, "--oversample and --seed take whole numbers");
+        hx_arg_whole(a, "--oversample", 1.0, 1024.0, &over) != 0 ||
+        hx_arg_whole(a, "--seed", 0.0, 4294967295.0, &seed) != 0) {
         return -1;
     }
     s->duration_s = dur;

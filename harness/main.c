@@ -39,9 +39,37 @@ static void usage(FILE *f)
     }
 }
 
-int main(int argc, char **argv)
+/* Results printed to standard output count as an output: a full disk or a
+ * closed pipe is a write error (exit 3), not a success with the results
+ * lost (`info LOG > /dev/full` exited 0) nor a silent death by SIGPIPE
+ * before the other outputs were written (`replay LOG --out - --json S |
+ * head -1` lost S; a review, 2026-11-28). `who` is "info", or NULL for the
+ * harness's own usage. */
+static int flush_stdout(const char *who, int rc)
+{
+    errno = 0;
+    if ((fflush(stdout) != 0 || ferror(stdout)) && (rc == HX_EXIT_OK || rc == HX_EXIT_DATA)) {
+        fprintf(stderr, "harness%s%s: error: cannot write standard output%s%s\n", who != NULL ? " " : "",
+                who != NULL ? who : "", errno != 0 ? ": " : "", errno != 0 ? strerror(errno) : "");
+        rc = HX_EXIT_IO;
+    }
+    return rc;
+}
+
+static const command_t *find_command(const char *name)
 {
     size_t i;
+    for (i = 0; i < sizeof k_commands / sizeof k_commands[0]; i++) {
+        if (strcmp(name, k_commands[i].name) == 0) {
+            return &k_commands[i];
+        }
+    }
+    return NULL;
+}
+
+int main(int argc, char **argv)
+{
+    const command_t *c;
     /* GSL's default error handler aborts the process: a domain error on
      * degenerate data must come back as a NaN or an error code that the
      * command checks and reports (exit 1), never as SIGABRT */
@@ -52,32 +80,34 @@ int main(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
-        usage(stdout);
-        return HX_EXIT_OK;
-    }
-    for (i = 0; i < sizeof k_commands / sizeof k_commands[0]; i++) {
-        if (strcmp(argv[1], k_commands[i].name) == 0) {
-            int rc;
-            if (hx_json_stdout_claim(k_commands[i].name, argc - 2, argv + 2) != 0) {
-                return HX_EXIT_USAGE;
-            }
-            rc = k_commands[i].fn(argc - 2, argv + 2);
-            /* results printed to standard output count as an output: a
-             * full disk or a closed pipe is a write error (exit 3), not a
-             * success with the results lost (`info LOG > /dev/full` exited
-             * 0) nor a silent death by SIGPIPE before the other outputs
-             * were written (`replay LOG --out - --json S | head -1` lost
-             * S; a review, 2026-11-28) */
-            errno = 0;
-            if ((fflush(stdout) != 0 || ferror(stdout)) && (rc == HX_EXIT_OK || rc == HX_EXIT_DATA)) {
-                fprintf(stderr, "harness %s: error: cannot write standard output%s%s\n", k_commands[i].name,
-                        errno != 0 ? ": " : "", errno != 0 ? strerror(errno) : "");
-                rc = HX_EXIT_IO;
-            }
-            return rc;
+        static char help_opt[] = "--help";
+        char *help_argv[] = { help_opt, NULL };
+        if (argc == 2) {
+            usage(stdout);
+            return flush_stdout(NULL, HX_EXIT_OK);
         }
+        /* `harness help CMD` is `harness CMD --help` (it printed the list of
+         * commands, and `harness help nosuch` exited 0) */
+        c = argc == 3 ? find_command(argv[2]) : NULL;
+        if (c != NULL) {
+            return flush_stdout(c->name, c->fn(1, help_argv));
+        }
+        if (argc == 3) {
+            fprintf(stderr, "harness: error: unknown command '%s'\n", argv[2]);
+        } else {
+            fprintf(stderr, "harness: error: %s takes one command, not %d\n", argv[1], argc - 2);
+        }
+        usage(stderr);
+        return HX_EXIT_USAGE;
     }
-    fprintf(stderr, "harness: error: unknown command '%s'\n", argv[1]);
-    usage(stderr);
-    return HX_EXIT_USAGE;
+    c = find_command(argv[1]);
+    if (c == NULL) {
+        fprintf(stderr, "harness: error: unknown command '%s'\n", argv[1]);
+        usage(stderr);
+        return HX_EXIT_USAGE;
+    }
+    if (hx_json_stdout_claim(c->name, argc - 2, argv + 2) != 0) {
+        return HX_EXIT_USAGE;
+    }
+    return flush_stdout(c->name, c->fn(argc - 2, argv + 2));
 }

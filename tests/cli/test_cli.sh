@@ -1,0 +1,168 @@
+#!/bin/sh
+# CLI tests of the command line itself: option and number parsing shared by
+# every command (harness/hx_cli.c, hx_nav.c's --param), and `harness help`.
+# $HARNESS is the harness binary (set by `make test-cli`).
+set -u
+H=${HARNESS:-bin/harness}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/lib.sh"
+
+# --- --param switches (adaptive, lever, settle, zaru, closed_form) are 0 or 1:
+# zaru=0.5 was cast to int and turned the ZARU off, zaru=-1 or 2 turned it on,
+# zaru=1e20 was an undefined double-to-int conversion, all with exit 0
+for v in 0.5 -1 2 1e20; do
+    expect_exit 2 "--param zaru=$v refused" "$H" replay vectors/walk.bin --quiet --param "zaru=$v"
+    expect_err "zaru" "--param zaru=$v: the error names the key"
+done
+expect_err "0 or 1" "--param switch error says what it takes"
+expect_exit 0 "--param zaru=1 accepted" "$H" replay vectors/walk.bin --quiet --param zaru=1
+expect_exit 0 "--param lever=0 accepted" "$H" replay vectors/walk.bin --quiet --param lever=0
+
+# --- `harness help CMD` is CMD's help (it printed the list of commands, and
+# `harness help nosuch` exited 0)
+expect_exit 0 "harness help" "$H" help
+expect_out "^commands:" "harness help lists the commands"
+expect_exit 0 "harness help replay" "$H" help replay
+expect_out "^usage: harness replay LOG" "harness help replay is replay's help"
+expect_out "^  --param KEY=VALUE" "harness help replay lists replay's options"
+expect_exit 0 "harness --help info" "$H" --help info
+expect_out "^usage: harness info LOG" "harness --help info is info's help"
+expect_exit 2 "harness help of an unknown command" "$H" help nosuch
+expect_err "unknown command 'nosuch'" "harness help nosuch names the command"
+if [ -s "$T/out" ]; then fail "harness help nosuch wrote to standard output"; else pass "harness help nosuch: nothing on standard output"; fi
+expect_exit 2 "harness help with two commands" "$H" help info replay
+# the list of commands on a full disk is a write error, as every command's
+# output is (it exited 0)
+if [ -w /dev/full ]; then
+    "$H" --help >/dev/full 2>"$T/err"; rc=$?
+    [ "$rc" -eq 3 ] && pass "harness --help >/dev/full exits 3" || fail "harness --help >/dev/full: exit $rc, expected 3"
+    "$H" help info >/dev/full 2>"$T/err"; rc=$?
+    [ "$rc" -eq 3 ] && pass "harness help info >/dev/full exits 3" || fail "harness help info >/dev/full: exit $rc, expected 3"
+fi
+
+# --- numbers on the command line are decimal, finite and the whole value,
+# read alike by every option (hx_parse_number): strtod took a hexadecimal
+# '0x10' as 16 and skipped leading blanks (' 5' passed, '5 ' did not), while
+# the log readers refuse both; each refusal is a usage error naming the option
+S="$T/s.bin"
+for v in 0x10 " 50" "	50" nan inf 1e999 5x "" -5 0; do
+    expect_exit 2 "convert --rate '$v' refused" "$H" convert vectors/walk.bin "$T/c.bin" --rate "$v"
+    expect_err "--rate" "convert --rate '$v': the error names the option"
+done
+expect_exit 2 "psd --nfft ' 64' refused" "$H" psd vectors/walk.bin --nfft " 64" --json "$T/p.json"
+expect_err "--nfft ' 64' is not an integer" "psd --nfft ' 64': the error names the option"
+expect_exit 2 "psd --nfft 99999999999999999999 refused" "$H" psd vectors/walk.bin --nfft 99999999999999999999
+expect_exit 2 "sim --duration 0x2 refused" "$H" sim --out "$S" --duration 0x2
+expect_err "--duration '0x2' is not a number" "sim --duration 0x2: the error names the option"
+expect_exit 2 "--param gamma=0x1p17 refused" "$H" replay vectors/walk.bin --quiet --param gamma=0x1p17
+expect_err "gamma" "--param gamma=0x1p17: the error names the key"
+expect_exit 2 "--param 'gamma= 1e5' refused" "$H" replay vectors/walk.bin --quiet --param "gamma= 1e5"
+expect_exit 2 "sim --effect offset:value=0x1 refused" "$H" sim --out "$S" --duration 2 --effect offset:value=0x1
+expect_err "value" "sim --effect offset:value=0x1: the error names the parameter"
+expect_exit 2 "sim --mount 0x1,0,0 refused" "$H" sim --out "$S" --duration 2 --mount 0x1,0,0
+expect_exit 2 "sim --mount '1, 0,0' refused" "$H" sim --out "$S" --duration 2 --mount "1, 0,0"
+expect_err "--mount" "sim --mount: the error names the option"
+expect_exit 2 "sim --motion stand:0x2 refused" "$H" sim --out "$S" --motion stand:0x2
+expect_exit 2 "sim --motion 'stand: 2' refused" "$H" sim --out "$S" --motion "stand: 2"
+expect_exit 2 "simgap-validate --mag-range 0x1,10 refused" "$H" simgap-validate --mag-range 0x1,10 --cases 1 --only 1
+expect_err "--mag-range '0x1,10'" "--mag-range 0x1,10: the error names the option"
+expect_exit 2 "simgap-validate --mag-range '1, 10' refused" "$H" simgap-validate --mag-range "1, 10" --cases 1 --only 1
+expect_err "--mag-range '1, 10'" "--mag-range '1, 10': the error names the option"
+# what stays accepted: signs, a point, an exponent, -0 where 0 is allowed
+expect_exit 0 "convert --rate +1e2" "$H" convert vectors/walk.bin "$T/c.bin" --rate +1e2
+expect_exit 0 "convert --rate 100." "$H" convert vectors/walk.bin "$T/c.bin" --rate 100.
+expect_exit 0 "sim --duration .5 --mount -1.5,0,2e0 --motion stand:0.5" "$H" sim --out "$S" --duration .5 --mount -1.5,0,2e0 --motion stand:0.5
+expect_exit 0 "--param gamma=1.5E5" "$H" replay vectors/walk.bin --quiet --param gamma=1.5E5
+expect_exit 0 "sim --ring-scale -0" "$H" sim --out "$S" --duration 1 --ring-scale -0
+
+# --- a range in an error is printed exactly: "--seed '4294967296' is not a
+# number in [0, 4.29497e+09]" read as if the value were inside it
+expect_exit 2 "sim --seed 4294967296 refused" "$H" sim --out "$T/s.bin" --seed 4294967296
+expect_err "--seed '4294967296' is not a [a-z ]*number in \[0, 4294967295\]" "the --seed range is printed exactly"
+expect_exit 2 "live --timeout 0.01 refused" "$H" live /dev/null --timeout 0.01
+expect_err "--timeout '0.01' is not a number in \[0.1, 1000000\]" "the --timeout range is printed exactly"
+
+# --- a missing positional argument is named ("missing argument" alone left
+# the reader to count them against the usage)
+expect_exit 2 "info without LOG" "$H" info
+expect_err "error: missing argument LOG" "info: the missing LOG is named"
+expect_exit 2 "stream without PORT" "$H" stream vectors/walk.bin
+expect_err "error: missing argument PORT" "stream: the missing PORT is named"
+expect_exit 2 "convert without OUT" "$H" convert vectors/walk.bin
+expect_err "error: missing argument OUT" "convert: the missing OUT is named"
+
+# --- an option whose name and value are wider than the usage's column has its
+# help on the next line ("--filter-profile NAME|FILE the filter's sensor
+# profile" ran the value into the help)
+expect_exit 0 "montecarlo --help" "$H" montecarlo --help
+expect_out_re "^  --filter-profile NAME\|FILE$" "a wide option stands on its own line"
+expect_out_re "^ {25}the filter's sensor profile" "its help follows on the next line, in the column"
+
+# --- info's rate of a time-stamped text log is estimated from the stamps of
+# its first 4,096 samples, as every command's (hx_reader_open), while the
+# interval line is of the whole log: docs/harness.md said 1 / the median
+# interval, and pyshoe's 2017-11-22-11-22-03_imu.csv reads "rate 200.000 Hz"
+# beside "median 4.998 ms" (its first 4,096 intervals have a median of 5.000 ms)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; t = 0; for (k = 0; k < 9100; k++) { printf "%.6f,0,0,9.8,0,0,0\n", t; t += (k < 4100 ? 0.010 : 0.010002) } }' > "$T/r.csv"
+expect_exit 0 "info on a log whose interval grows by 2 us after 4,100 samples" "$H" info "$T/r.csv"
+expect_out "^rate        100.000 Hz (from the time stamps)" "the rate is of the first 4,096 samples"
+expect_out "^interval    median 10.002 ms" "the interval line is of the whole log"
+grep -q "first 4,096 samples" docs/harness.md && pass "docs/harness.md says the rate is of the first 4,096 samples" ||
+    fail "docs/harness.md does not say that info's rate comes from the first 4,096 samples"
+
+# --- a repeated option takes its last value, and so does `--json -`'s claim
+# on standard output: `info LOG --json - --json F` wrote the JSON to F and
+# info's text to standard error, leaving standard output empty; `replay LOG
+# --out - --out F --json -` was refused as two outputs on standard output
+expect_exit 0 "info --json - --json FILE" "$H" info vectors/walk.bin --json - --json "$T/i.json"
+expect_out "^samples     16539" "info's text stays on standard output when a later --json names a file"
+json "$T/i.json" "j['samples'] == 16539" && pass "the JSON goes to the last --json" || fail "the last --json FILE was not written"
+expect_exit 0 "info --json FILE --json -" "$H" info vectors/walk.bin --json "$T/i2.json" --json -
+json "$T/out" "j['samples'] == 16539" && pass "the last --json - writes the JSON alone on standard output" || fail "standard output is not the JSON alone: $(head -c 80 "$T/out")"
+expect_exit 0 "replay --out - --out FILE --json -" "$H" replay vectors/walk.bin --quiet --out - --out "$T/t.csv" --json -
+json "$T/out" "'return_error_3d_m' in j" && pass "replay's JSON alone on standard output, the trajectory in the later --out" || fail "replay --out - --out F --json -: $(head -c 80 "$T/out")"
+expect_exit 2 "replay --out F --out - --json -" "$H" replay vectors/walk.bin --quiet --out "$T/t.csv" --out - --json -
+expect_err "cannot both write to standard output" "two outputs on standard output are still refused"
+expect_exit 2 "replay --out - --json=-" "$H" replay vectors/walk.bin --quiet --out=- --json=-
+
+# --- replay checks --from and --input-rate as every command that reads a log
+# (hx_check_input_opts): it took --from auto, which the others refuse, and
+# worded the error its own way
+for c in info replay psd allan simgap; do
+    expect_exit 2 "$c --from auto refused" "$H" $c vectors/walk.bin --from auto
+    expect_err "unknown input format 'auto' (known: bin, csv" "$c --from auto: the shared message"
+    expect_exit 2 "$c --input-rate 0x10 refused" "$H" $c vectors/walk.bin --input-rate 0x10
+done
+
+# --- stream's --help lists every exit status (it left out 130 / 143, Ctrl-C /
+# SIGTERM before the END frame, docs/harness.md "stream")
+expect_exit 0 "stream --help" "$H" stream --help
+expect_out "130 (143) interrupted" "stream --help names the status of an interrupted stream"
+
+# --- counts and seeds are whole numbers everywhere (hx_arg_whole): allan cut
+# --seed 1.5 to 1 and --sim-samples 100.5 to 100 without a word, while sim
+# and montecarlo refused the same values
+printf '1\n2\n3\n4\n5\n6\n7\n8\n9\n10\n' > "$T/ten.txt"
+expect_exit 2 "allan --seed 1.5 refused" "$H" allan --series "$T/ten.txt" --rate 1 --seed 1.5
+expect_err "--seed '1.5' is not a whole number in \[0, 4294967295\]" "allan --seed 1.5: the error names the option"
+expect_exit 2 "allan --sim-samples 100.5 refused" "$H" allan --series "$T/ten.txt" --rate 1 --sim-samples 100.5
+expect_err "--sim-samples '100.5' is not a whole number" "allan --sim-samples 100.5: the error names the option"
+expect_exit 2 "sim --seed 1.5 refused" "$H" sim --out "$T/s.bin" --duration 1 --seed 1.5
+expect_err "--seed '1.5' is not a whole number" "sim --seed 1.5: the error names the option"
+expect_exit 2 "sim --oversample 2.5 refused" "$H" sim --out "$T/s.bin" --duration 1 --oversample 2.5
+expect_err "--oversample '2.5' is not a whole number" "sim --oversample 2.5: the error names the option"
+expect_exit 2 "montecarlo --seeds 2.5 refused" "$H" montecarlo --seeds 2.5 --duration 2
+expect_err "--seeds '2.5' is not a whole number" "montecarlo --seeds 2.5: the error names the option"
+expect_exit 0 "sim --seed 1e3 (a whole number)" "$H" sim --out "$T/s.bin" --duration 1 --seed 1e3
+
+# --- --help goes to standard output even beside `--json -` (which had already
+# turned standard output over to the JSON and sent the help to standard error)
+expect_exit 0 "info --json - --help" "$H" info vectors/walk.bin --json - --help
+expect_out "^usage: harness info LOG" "the help is on standard output beside --json -"
+
+if [ "$fails" -ne 0 ]; then
+    echo "test_cli.sh: $fails failure(s)"
+    exit 1
+fi
+echo "test_cli.sh: all passed"
