@@ -524,6 +524,13 @@ int hx_allan_fit(const fnav_allan_result_t *r, size_t n, double rate_hz, const h
             if (subset & 2) {
                 comp[nc++] = 3;
             }
+            if ((size_t)nc + 1u >= d.n) {
+                /* the amplitudes and T need more points than parameters:
+                 * 4 points took the four-term solve (exact, RMS 0) and then
+                 * GSL's Levenberg-Marquardt failed on 5 parameters from 4
+                 * residuals (its error handler: abort() unless turned off) */
+                continue;
+            }
             chi = linear_stage(&d, T, comp, nc, amp);
             if (chi < best) {
                 best = chi;

@@ -1306,6 +1306,38 @@ static void test_fit_recovers_model(void **state)
     assert_int_equal(hx_allan_fit(r, 3, fs, &o, &fit, &q), -1);
 }
 
+/* More parameters than points: with the quantisation and random-walk terms
+ * (four amplitudes and T) a table of 4 usable points took the four-term
+ * stage-1 solve, exact and with RMS 0, and then asked GSL's Levenberg-
+ * Marquardt for 5 parameters from 4 residuals, which calls the GSL error
+ * handler (abort() unless a caller turned it off; the harness had, so it
+ * silently kept the stage-1 solve: 5 parameters of 4 points). A subset is
+ * now fitted only with more points than parameters; here white + AR(1). */
+static void test_fit_more_params_than_points(void **state)
+{
+    hx_noise_model_t truth = { 0.01, 0.05, 0.02, 2e-4, 1.0 }, fit;
+    hx_allan_quality_t q;
+    hx_allan_fit_opts_t o = hx_allan_fit_opts_default;
+    fnav_allan_result_t r[FNAV_ALLAN_MAX_POINTS];
+    const double fs = 100.0;
+    size_t n = analytic_table(&truth, fs, 100000u, r), k;
+    int nterms;
+    (void)state;
+    assert_true(n > 6);
+    o.with_quant = 1;
+    o.with_rrw = 1;
+    for (k = 4; k <= 6; k++) {
+        const int rc = hx_allan_fit(r, k, fs, &o, &fit, &q);
+        if (rc != 0) {
+            continue;
+        }
+        nterms = (fit.white > 0.0) + (fit.gm_sigma > 0.0) + (fit.quant > 0.0) + (fit.rrw > 0.0);
+        /* amplitudes and T: fewer than the points */
+        assert_true((size_t)nterms + 1u < k);
+        assert_int_equal(q.npoints, (int)k);
+    }
+}
+
 /* Simulated white + AR(1): the fit of the streaming table lands close to the
  * simulated parameters (statistical tolerance). Spread of the fit's relative
  * errors over 30 seeds (1..29 and 42): white sd 0.0027 (max 0.0065),
@@ -1639,6 +1671,7 @@ int main(void)
         cmocka_unit_test(test_model_avar_exact),
         cmocka_unit_test(test_gm_peak),
         cmocka_unit_test(test_fit_recovers_model),
+        cmocka_unit_test(test_fit_more_params_than_points),
         cmocka_unit_test(test_fit_simulated),
         cmocka_unit_test(test_sim_statistics),
         cmocka_unit_test(test_paper_tables_builtin),
