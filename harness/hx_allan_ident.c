@@ -578,8 +578,12 @@ int hx_allan_fit(const fnav_allan_result_t *r, size_t n, double rate_hz, const h
             if (st == GSL_SUCCESS || st == GSL_EMAXITER || st == GSL_ENOPROG) {
                 const gsl_vector *p = gsl_multifit_nlinear_position(w);
                 int finite = 1;
+                /* the parameters themselves, not only their logs: exp() of a
+                 * finite log overflowed (white noise with one wild point:
+                 * Q, sigma and T infinite, RMS NaN, reported as a fit) */
                 for (k = 0; k < (int)np; k++) {
-                    finite = finite && isfinite(gsl_vector_get(p, (size_t)k));
+                    const double v = exp(gsl_vector_get(p, (size_t)k));
+                    finite = finite && isfinite(v);
                 }
                 if (finite) {
                     for (k = 0; k < best_nc; k++) {
