@@ -822,6 +822,28 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
     o.with_rrw = fit_extra;
     o.tau_max_s = tau_max_samples(R) / R->rate_hz;
     ch->id_ok = hx_allan_identify(ch->res, ch->nres, R->rate_hz, &o, &ch->id) == 0;
+    if (ch->id_ok && ch->id.paper_ok) {
+        /* the paper's BS is "the minimum" (III.C.2); a curve still falling
+         * at the end of the analysed range, or rising from its first tau,
+         * has none there, and its end point was printed as a bias stability
+         * without a word (white noise: BS at 983 s of a 10^4 s record) */
+        size_t first = ch->nres, last = ch->nres;
+        for (i = 0; i < ch->nres; i++) {
+            const fnav_allan_result_t *r = &ch->res[i];
+            if (r->terms > 0u && isfinite((double)r->avar) && (double)r->avar > 0.0 &&
+                (double)r->tau <= tau_max_samples(R) * (1.0 + 1e-9)) {
+                first = first == ch->nres ? i : first;
+                last = i;
+            }
+        }
+        if (first < last && (ch->id.paper.i_min == last || ch->id.paper.i_min == first)) {
+            hx_warn(CMD, "%s: %s: the Allan deviation has no minimum within tau <= %.3g s (it %s): the paper's BS and "
+                         "tau (III.C) are read at the %s tau, %.3g s, not at a bias stability",
+                     R->source, ch->name, tau_max_samples(R) / R->rate_hz,
+                     ch->id.paper.i_min == last ? "still falls at the end" : "rises from the first tau on",
+                     ch->id.paper.i_min == last ? "longest" : "shortest", (double)ch->id.paper.t_bs_s);
+        }
+    }
 }
 
 /* Simulate a model through estimators with the same grid (Fig. 7 check). */

@@ -353,6 +353,31 @@ expect_exit 0 "white + Gauss-Markov series (T = 5 s)" "$H" allan --series "$T/gm
     --no-sim --quiet --json "$T/gm.json"
 json "$T/gm.json" "j['channels'][0]['corrected']['ar1_identified'] and 2.5 < j['channels'][0]['corrected']['tau_s'] < 10" &&
     pass "a resolved Gauss-Markov bias is identified" || fail "the Gauss-Markov bias (T = 5 s) is not identified"
+# The paper's BS is the curve's minimum; a curve still falling at 10 % of the record (white noise) or rising
+# from its first tau (a random walk) has none there, and the end point was printed as the bias stability
+# without a word. Now a warning says so; a curve with a minimum inside (white + random walk, minimum near
+# sqrt(3) N / K = 2 s of a 200 s record) gets none.
+"$PY" -c "
+import random, sys
+r = random.Random(4)
+w, rw, wk, b, bk = [], [], [], 0.0, 0.0
+for i in range(20000):
+    b += 0.1 * r.gauss(0, 1)
+    bk += 0.00087 * r.gauss(0, 1)
+    w.append(0.1 * r.gauss(0, 1))
+    rw.append(b)
+    wk.append(0.1 * r.gauss(0, 1) + bk)
+for name, v in (('white', w), ('walk', rw), ('whitewalk', wk)):
+    open(sys.argv[1] + '/' + name + '.txt', 'w').write(''.join('%.9g\n' % x for x in v))" "$T"
+expect_exit 0 "white noise series" "$H" allan --series "$T/white.txt" --rate 100 --no-sim --quiet
+expect_err "series: the Allan deviation has no minimum within tau <= 20 s (it still falls at the end): the paper's BS and tau (III.C) are read at the longest tau" \
+    "a curve without a minimum: the paper's BS is said to be the longest tau"
+expect_exit 0 "random-walk series" "$H" allan --series "$T/walk.txt" --rate 100 --no-sim --quiet
+expect_err "(it rises from the first tau on): the paper's BS and tau (III.C) are read at the shortest tau, 0.01 s" \
+    "a rising curve: the paper's BS is said to be the shortest tau"
+expect_exit 0 "white + random-walk series" "$H" allan --series "$T/whitewalk.txt" --rate 100 --no-sim --quiet
+if grep -q "no minimum" "$T/err"; then fail "a curve with a minimum warned as without: $(cat "$T/err")"; else
+    pass "a curve with a minimum inside: no warning"; fi
 # --rate over a uniform 100 Hz log: every interval was counted as irregular against the new rate ("999 intervals
 # differ from 1/rate ...: the Allan variance assumes uniform sampling"); the stamps are checked against their own
 # rate, and the override is said
