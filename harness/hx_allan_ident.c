@@ -524,6 +524,13 @@ int hx_allan_fit(const fnav_allan_result_t *r, size_t n, double rate_hz, const h
             if (subset & 2) {
                 comp[nc++] = 3;
             }
+            if ((size_t)nc + 1u >= d.n) {
+                /* the amplitudes and T need more points than parameters:
+                 * 4 points took the four-term solve (exact, RMS 0) and then
+                 * GSL's Levenberg-Marquardt failed on 5 parameters from 4
+                 * residuals (its error handler: abort() unless turned off) */
+                continue;
+            }
             chi = linear_stage(&d, T, comp, nc, amp);
             if (chi < best) {
                 best = chi;
@@ -571,8 +578,12 @@ int hx_allan_fit(const fnav_allan_result_t *r, size_t n, double rate_hz, const h
             if (st == GSL_SUCCESS || st == GSL_EMAXITER || st == GSL_ENOPROG) {
                 const gsl_vector *p = gsl_multifit_nlinear_position(w);
                 int finite = 1;
+                /* the parameters themselves, not only their logs: exp() of a
+                 * finite log overflowed (white noise with one wild point:
+                 * Q, sigma and T infinite, RMS NaN, reported as a fit) */
                 for (k = 0; k < (int)np; k++) {
-                    finite = finite && isfinite(gsl_vector_get(p, (size_t)k));
+                    const double v = exp(gsl_vector_get(p, (size_t)k));
+                    finite = finite && isfinite(v);
                 }
                 if (finite) {
                     for (k = 0; k < best_nc; k++) {

@@ -85,7 +85,9 @@ double hx_noise_model_avar(const hx_noise_model_t *mdl, double rate_hz, double m
  * least squares for the squared amplitudes; stage 2: Levenberg-Marquardt
  * (GSL) on log ADEV over log parameters from the best stage-1 point.
  * Weight of a point 1/sqrt(1/(2 EDF) + floor^2), EDF by Greenhall with the
- * noise type from the local slope.
+ * noise type from the local slope. A set of terms is tried only with more
+ * points than parameters (its amplitudes and T): 4 points fit white + AR(1)
+ * only, 5 add Q or K, 6 both.
  * @return 0, or -1 when fewer than 4 usable points or the fit fails.
  */
 int hx_allan_fit(const fnav_allan_result_t *r, size_t n, double rate_hz, const hx_allan_fit_opts_t *opts,

@@ -1306,6 +1306,77 @@ static void test_fit_recovers_model(void **state)
     assert_int_equal(hx_allan_fit(r, 3, fs, &o, &fit, &q), -1);
 }
 
+/* More parameters than points: with the quantisation and random-walk terms
+ * (four amplitudes and T) a table of 4 usable points took the four-term
+ * stage-1 solve, exact and with RMS 0, and then asked GSL's Levenberg-
+ * Marquardt for 5 parameters from 4 residuals, which calls the GSL error
+ * handler (abort() unless a caller turned it off; the harness had, so it
+ * silently kept the stage-1 solve: 5 parameters of 4 points). A subset is
+ * now fitted only with more points than parameters; here white + AR(1). */
+static void test_fit_more_params_than_points(void **state)
+{
+    hx_noise_model_t truth = { 0.01, 0.05, 0.02, 2e-4, 1.0 }, fit;
+    hx_allan_quality_t q;
+    hx_allan_fit_opts_t o = hx_allan_fit_opts_default;
+    fnav_allan_result_t r[FNAV_ALLAN_MAX_POINTS];
+    const double fs = 100.0;
+    size_t n = analytic_table(&truth, fs, 100000u, r), k;
+    int nterms;
+    (void)state;
+    assert_true(n > 6);
+    o.with_quant = 1;
+    o.with_rrw = 1;
+    for (k = 4; k <= 6; k++) {
+        const int rc = hx_allan_fit(r, k, fs, &o, &fit, &q);
+        if (rc != 0) {
+            continue;
+        }
+        nterms = (fit.white > 0.0) + (fit.gm_sigma > 0.0) + (fit.quant > 0.0) + (fit.rrw > 0.0);
+        /* amplitudes and T: fewer than the points */
+        assert_true((size_t)nterms + 1u < k);
+        assert_int_equal(q.npoints, (int)k);
+    }
+}
+
+/* A fit reported as done must be finite: white noise at 100 Hz with one
+ * wild point (m = 8, 900x its neighbours) and the extra terms drove
+ * Levenberg-Marquardt to log parameters whose exp() overflowed: Q and sigma
+ * infinite, T infinite, RMS NaN, and a return of 0 (a randomised table
+ * driver found it, the ident review). A non-finite step result now keeps
+ * the stage-1 solution. */
+static void test_fit_finite(void **state)
+{
+    static const uint32_t taus[7] = { 1, 2, 3, 4, 6, 8, 12 };
+    static const double avars[7] = { 0.0100000082, 0.005000012, 0.00333335018, 0.00250002206, 0.00166669907,
+                                     1.10629368, 0.000833397266 };
+    static fnav_allan_t a;
+    fnav_allan_result_t r[7];
+    hx_noise_model_t fit;
+    hx_allan_quality_t q;
+    hx_allan_fit_opts_t o = hx_allan_fit_opts_default;
+    size_t i, j, n = 0;
+    (void)state;
+    assert_int_equal(fnav_allan_init(&a, NULL), FNAV_OK);
+    a.n = 1000000u; /* term counts of 10^6 samples */
+    for (i = 0; i < fnav_allan_count(&a) && n < 7; i++) {
+        fnav_allan_result_t e;
+        assert_int_equal(fnav_allan_get(&a, i, &e), FNAV_OK);
+        for (j = 0; j < 7; j++) {
+            if (e.tau == taus[j]) {
+                e.avar = (fnav_real_t)avars[j];
+                r[n++] = e;
+            }
+        }
+    }
+    assert_int_equal(n, 7);
+    o.with_quant = o.with_rrw = 1;
+    o.tau_max_s = 300.0;
+    if (hx_allan_fit(r, n, 100.0, &o, &fit, &q) == 0) {
+        assert_true(isfinite(fit.white) && isfinite(fit.gm_sigma) && isfinite(fit.gm_tau_s));
+        assert_true(isfinite(fit.quant) && isfinite(fit.rrw) && isfinite(q.rms_log10));
+    }
+}
+
 /* Simulated white + AR(1): the fit of the streaming table lands close to the
  * simulated parameters (statistical tolerance). Spread of the fit's relative
  * errors over 30 seeds (1..29 and 42): white sd 0.0027 (max 0.0065),
@@ -1639,6 +1710,8 @@ int main(void)
         cmocka_unit_test(test_model_avar_exact),
         cmocka_unit_test(test_gm_peak),
         cmocka_unit_test(test_fit_recovers_model),
+        cmocka_unit_test(test_fit_more_params_than_points),
+        cmocka_unit_test(test_fit_finite),
         cmocka_unit_test(test_fit_simulated),
         cmocka_unit_test(test_sim_statistics),
         cmocka_unit_test(test_paper_tables_builtin),
