@@ -29,7 +29,7 @@ static const hx_opt_t k_opts[] = {
     { "--series", "FILE", "analyse one column of numbers (any unit) instead of a log", 0 },
     { "--phase", NULL, "the series is a phase (integral): analyse its differences x rate", 0 },
     { "--rate", "HZ", "sample rate (needed with --series; overrides a log's rate)", 0 },
-    { "--unit", "TEXT", "unit of a series, for labels (default 'u')", 0 },
+    { "--unit", "TEXT", "unit of a series, for labels (default 'u'; a log's are m/s^2 and deg/s)", 0 },
     { "--column", "N", "take the N-th number of each line of a series (columns split by blanks or a comma; "
                        "default: one number per line)", 0 },
     { "--fractional", "F0", "the series is a frequency around F0 (e.g. Hz): analyse (f - F0) / F0, the fractional "
@@ -1697,6 +1697,13 @@ int hx_cmd_allan(int argc, char **argv)
     }
     if (series == NULL && (hx_flag(&a, "--phase") || hx_arg(&a, "--column") != NULL)) {
         hx_error(CMD, "--phase and --column apply to --series only");
+        free(R);
+        return HX_EXIT_USAGE;
+    }
+    if (series == NULL && hx_arg(&a, "--unit") != NULL) {
+        /* a log's channels are in m/s^2 and deg/s: the unit was ignored
+         * without a word, exit 0 (the cli review, 2026-11-29) */
+        hx_error(CMD, "--unit applies to --series only (a log's channels are in m/s^2 and deg/s)");
         free(R);
         return HX_EXIT_USAGE;
     }

@@ -57,6 +57,10 @@ expect_err "stuck.csv: gy is constant over the whole record" "stuck channel name
 expect_err "stuck.profile: gy is constant over the whole record (Allan deviation 0): no noise to identify" \
     "stuck channel named as the reason for the missing profile"
 expect_out "Gyr y  deg/s  | n/a (constant channel)" "stuck channel in the parameter table"
+# --unit labels a series; a log's channels are in m/s^2 and deg/s whatever it says: until 2026-11-29 it was
+# ignored without a word, exit 0 (found by the cli review); now refused as --phase and --column are
+expect_exit 2 "--unit with a log" "$H" allan "$T/stuck.csv" --channels gx --no-sim --quiet --unit g
+expect_err "--unit applies to --series only" "--unit with a log explained"
 # a static log whose accelerometers are in g: read without error, and its profile was 9.8 times too quiet;
 # now the units check of replay and info: error, exit 1, tables still written, no profile
 awk -F, 'NR == 1 { print; next } { $6 = 0.0005 * (NR % 7); for (k = 2; k <= 4; k++) $k = $k / 9.80665; print }' OFS=, \
