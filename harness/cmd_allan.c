@@ -179,31 +179,82 @@ static int grid_streamable(const run_t *R)
     return 1;
 }
 
+/* A list option (--m, --channels, --deviation): its comma-separated
+ * elements as strings in buf, a copy of the list. */
+#define LIST_MAX GRID_MAX
+typedef struct {
+    char buf[2048];
+    const char *el[LIST_MAX];
+    int n;
+} list_t;
+
+/* Split a list option's value into L, refusing an empty element (a comma
+ * at either end, or two together) and an element given twice, the option
+ * named: until 2026-11-29 --m 1,10, and --channels ax, ran as if the
+ * comma were not there and --deviation mdev,mdev as mdev, while
+ * --channels ax,ax was refused (the cli review). 0, or -1 with the error
+ * printed (a usage error). */
+static int split_list(const char *opt, const char *list, list_t *L)
+{
+    const size_t len = strlen(list);
+    char *p = L->buf;
+    int j;
+    L->n = 0;
+    if (len >= sizeof L->buf) {
+        hx_error(CMD, "%s: list longer than %u characters", opt, (unsigned)(sizeof L->buf - 1u));
+        return -1;
+    }
+    memcpy(L->buf, list, len + 1u);
+    for (;;) {
+        char *comma = strchr(p, ',');
+        if (comma != NULL) {
+            *comma = '\0';
+        }
+        if (*p == '\0') {
+            hx_error(CMD, "%s: an empty element in '%s' (a comma at the start or end, or two together)", opt, list);
+            return -1;
+        }
+        for (j = 0; j < L->n; j++) {
+            if (strcmp(L->el[j], p) == 0) {
+                hx_error(CMD, "%s: '%s' given twice", opt, p);
+                return -1;
+            }
+        }
+        if (L->n == LIST_MAX) {
+            hx_error(CMD, "%s: more than %d elements", opt, LIST_MAX);
+            return -1;
+        }
+        L->el[L->n++] = p;
+        if (comma == NULL) {
+            return 0;
+        }
+        p = comma + 1;
+    }
+}
+
 /* --m LIST: the averaging factors, strictly ascending, at most GRID_MAX. */
 static int parse_m_list(run_t *R, const char *list)
 {
-    const char *p = list;
+    list_t L;
+    int i;
     R->ngrid = 0;
-    while (*p != '\0') {
+    if (split_list("--m", list, &L) != 0) {
+        return -1;
+    }
+    for (i = 0; i < L.n; i++) {
+        const char *p = L.el[i];
         char *end;
         unsigned long v;
-        if (*p < '0' || *p > '9') {
+        if (*p < '0' || *p > '9' || R->ngrid == GRID_MAX) {
             break;
         }
         v = strtoul(p, &end, 10);
-        if (end == p || v == 0ul || v > 4294967295ul || (R->ngrid > 0 && v <= R->grid[R->ngrid - 1u]) ||
-            R->ngrid == GRID_MAX) {
+        if (*end != '\0' || v == 0ul || v > 4294967295ul || (R->ngrid > 0 && v <= R->grid[R->ngrid - 1u])) {
             break;
         }
         R->grid[R->ngrid++] = (uint32_t)v;
-        p = end;
-        if (*p == ',') {
-            p++;
-        } else if (*p != '\0') {
-            break;
-        }
     }
-    if (*p != '\0' || R->ngrid == 0) {
+    if (i < L.n || R->ngrid == 0) {
         hx_error(CMD, "--m must be positive whole numbers separated by commas, strictly ascending, at most %d",
                  GRID_MAX);
         return -1;
@@ -325,11 +376,14 @@ static void collect(run_t *R, chan_t *ch, fnav_allan_t *const *est, fnav_allan_r
 
 static int parse_channels(run_t *R, const char *list)
 {
-    char buf[128], *tok, *save = NULL;
-    int i;
-    snprintf(buf, sizeof buf, "%s", list != NULL ? list : "ax,ay,az,gx,gy,gz");
+    list_t L;
+    int i, j;
     R->nch = 0;
-    for (tok = strtok_r(buf, ",", &save); tok != NULL; tok = strtok_r(NULL, ",", &save)) {
+    if (split_list("--channels", list != NULL ? list : "ax,ay,az,gx,gy,gz", &L) != 0) {
+        return -1;
+    }
+    for (j = 0; j < L.n; j++) {
+        const char *tok = L.el[j];
         int found = -1;
         for (i = 0; i < 6; i++) {
             if (strcmp(tok, k_ch[i].name) == 0) {
@@ -340,12 +394,6 @@ static int parse_channels(run_t *R, const char *list)
             hx_error(CMD, "--channels: '%s' is not one of ax, ay, az, gx, gy, gz", tok);
             return -1;
         }
-        for (i = 0; i < R->nch; i++) {
-            if (R->ch[i].src == found) {
-                hx_error(CMD, "--channels: '%s' given twice", tok);
-                return -1;
-            }
-        }
         R->ch[R->nch].src = found;
         R->ch[R->nch].name = k_ch[found].name;
         R->ch[R->nch].label = k_ch[found].label;
@@ -353,18 +401,13 @@ static int parse_channels(run_t *R, const char *list)
         R->ch[R->nch].scale = k_ch[found].gyro ? RAD2DEG : 1.0;
         R->nch++;
     }
-    if (R->nch == 0) {
-        hx_error(CMD, "--channels: no channel named (a comma-separated list of ax, ay, az, gx, gy, gz)");
-        return -1;
-    }
     return 0;
 }
 
-/* Returns 0 complete, 1 partial (error printed), -1 nothing usable. */
 /* --deviation LIST: names separated by commas, or "all". */
 static int parse_deviations(run_t *R, const char *list)
 {
-    char buf[128], *tok, *save = NULL;
+    list_t L;
     int i;
     if (!R->exact) {
         hx_error(CMD, "--deviation needs --estimator exact (the streaming estimator computes the Allan deviation "
@@ -377,28 +420,18 @@ static int parse_deviations(run_t *R, const char *list)
         }
         return 0;
     }
-    if (strlen(list) >= sizeof buf) {
-        hx_error(CMD, "--deviation: list too long");
+    if (split_list("--deviation", list, &L) != 0) {
         return -1;
     }
-    memcpy(buf, list, strlen(list) + 1u);
-    for (tok = strtok_r(buf, ",", &save); tok != NULL; tok = strtok_r(NULL, ",", &save)) {
+    for (i = 0; i < L.n; i++) {
         hx_dev_t k;
-        if (hx_dev_parse(tok, &k) != 0) {
+        if (hx_dev_parse(L.el[i], &k) != 0) {
             hx_error(CMD, "--deviation: unknown '%s' (mdev, tdev, hdev, ohdev, totdev, pdev, mtotdev, ttotdev, "
-                          "htotdev or all)", tok);
+                          "htotdev or all)", L.el[i]);
             return -1;
         }
-        if (k == HX_DEV_ADEV || k == HX_DEV_OADEV) {
-            continue; /* always in the table */
-        }
-        for (i = 0; i < R->ndev; i++) {
-            if (R->dev[i] == k) {
-                break;
-            }
-        }
-        if (i == R->ndev) {
-            R->dev[R->ndev++] = k;
+        if (k != HX_DEV_ADEV && k != HX_DEV_OADEV) { /* those two are always in the table */
+            R->dev[R->ndev++] = k; /* each kind once: split_list refused a name given twice */
         }
     }
     return 0;
