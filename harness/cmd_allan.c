@@ -729,6 +729,22 @@ static double tau_max_samples(const run_t *R)
     return R->tau_max_frac * (double)R->n;
 }
 
+/* The fewest samples whose record has an Allan point in range (in_range()):
+ * the grid's shortest tau within --max-tau-frac of the record, with a term
+ * (n + 1 phase points >= 2 m + 1). */
+static double samples_needed(const run_t *R)
+{
+    const double m0 = (double)R->grid[0];
+    double n = floor(m0 / R->tau_max_frac) - 1.0;
+    if (n < 2.0 * m0) {
+        n = 2.0 * m0;
+    }
+    while (!(m0 <= R->tau_max_frac * n * (1.0 + 1e-9))) {
+        n += 1.0;
+    }
+    return n;
+}
+
 /* --estimator exact: every tau of the grid from the channel's whole record,
  * in double, in the streaming estimator's result rows (display units). */
 static void exact_table(const run_t *R, chan_t *ch)
@@ -1808,6 +1824,17 @@ int hx_cmd_allan(int argc, char **argv)
         if (input_rc >= 0) {
             hx_error(CMD, "%s: fewer than 2 samples", path);
         }
+        free_run(R);
+        free(R);
+        return HX_EXIT_DATA;
+    }
+    if ((double)R->n < samples_needed(R)) {
+        /* no tau in range: every table was empty and every value n/a, exit
+         * 0 (2 samples; the ident review, 2026-11-29) */
+        hx_error(CMD, "%s: %lu samples are too few for any Allan point: the shortest tau (%lu sample%s) needs at "
+                      "least %.0f samples (tau up to %g of the record, --max-tau-frac)",
+                 path, (unsigned long)R->n, (unsigned long)R->grid[0], R->grid[0] == 1u ? "" : "s",
+                 samples_needed(R), R->tau_max_frac);
         free_run(R);
         free(R);
         return HX_EXIT_DATA;

@@ -1377,6 +1377,28 @@ static void test_fit_finite(void **state)
     }
 }
 
+/* A limit of the analysed tau under one sample is no paper identification,
+ * not "no limit" (a review, 2026-11-28); `harness allan` now refuses such a
+ * record before identifying (too few samples for any Allan point), so the
+ * guard is checked here. */
+static void test_identify_limit_below_one_sample(void **state)
+{
+    hx_noise_model_t truth = { 0.004, 0.002, 30.0, 0.0, 0.0 };
+    hx_allan_ident_t id;
+    hx_allan_fit_opts_t o = hx_allan_fit_opts_default;
+    fnav_allan_result_t r[FNAV_ALLAN_MAX_POINTS];
+    const double fs = 100.0;
+    size_t n = analytic_table(&truth, fs, 2000000u, r);
+    (void)state;
+    o.tau_max_s = 0.5 / fs;
+    (void)hx_allan_identify(r, n, fs, &o, &id);
+    assert_false(id.paper_ok);
+    assert_false(id.fit_ok);
+    o.tau_max_s = 2000.0;
+    assert_int_equal(hx_allan_identify(r, n, fs, &o, &id), 0);
+    assert_true(id.paper_ok);
+}
+
 /* Simulated white + AR(1): the fit of the streaming table lands close to the
  * simulated parameters (statistical tolerance). Spread of the fit's relative
  * errors over 30 seeds (1..29 and 42): white sd 0.0027 (max 0.0065),
@@ -1710,6 +1732,7 @@ int main(void)
         cmocka_unit_test(test_model_avar_exact),
         cmocka_unit_test(test_gm_peak),
         cmocka_unit_test(test_fit_recovers_model),
+        cmocka_unit_test(test_identify_limit_below_one_sample),
         cmocka_unit_test(test_fit_more_params_than_points),
         cmocka_unit_test(test_fit_finite),
         cmocka_unit_test(test_fit_simulated),

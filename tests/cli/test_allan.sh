@@ -48,6 +48,22 @@ expect_exit 3 "unwritable output" "$H" allan --series "$T/bad.txt" --rate 10 --n
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 10; i++) printf "%.2f,0.1,0.2,9.8,0.01,0.02,0.0%d\n", i / 100, i }' >"$T/tiny.csv"
 expect_exit 1 "too short for a profile" "$H" allan "$T/tiny.csv" --quiet --profile "$T/tiny.profile" --plot "$T/tiny.png"
 [ -s "$T/tiny.png" ] && [ ! -e "$T/tiny.profile" ] && pass "plot without profile" || fail "tiny outputs"
+# a log too short for any Allan point (the shortest tau, 1 sample, beyond 10 % of 2 samples): until 2026-11-29
+# exit 0 with empty tables and every value n/a (exit 1 only with --profile; found by the ident review); now an
+# error naming the samples it needs, as a record of under 2 samples is, exit 1, no output written
+head -n 3 "$T/tiny.csv" >"$T/two.csv"
+expect_exit 1 "a 2-sample log" "$H" allan "$T/two.csv" --no-sim --out "$T/two_table.csv"
+expect_err "two.csv: 2 samples are too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
+    "the samples a short log needs are named"
+[ ! -e "$T/two_table.csv" ] && pass "no table from a 2-sample log" || fail "2-sample log: table written"
+head -n 10 "$T/tiny.csv" >"$T/nine.csv"
+expect_exit 1 "a 9-sample log" "$H" allan "$T/nine.csv" --no-sim --quiet
+expect_err "needs at least 10 samples (tau up to 0.1 of the record, --max-tau-frac)" "9 samples are too few"
+expect_exit 0 "a 2-sample log at --max-tau-frac 0.5" "$H" allan "$T/two.csv" --no-sim --quiet --max-tau-frac 0.5
+printf '1\n2\n4\n3\n5\n' >"$T/five.txt"
+expect_exit 1 "a 5-sample series with --m 2,4" "$H" allan --series "$T/five.txt" --rate 1 --no-sim --quiet --m 2,4
+expect_err "five.txt: 5 samples are too few for any Allan point: the shortest tau (2 samples) needs at least 20 " \
+    "the samples a short series needs are named"
 # a stuck gyro in a 10-minute static log: named as constant, not "too little data" (nor "1 s not covered")
 awk 'BEGIN { srand(3); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 60000; i++)
      printf "%.2f,%.5f,%.5f,%.5f,%.6f,0.001,%.6f\n", i / 100, 0.05 * (rand() - 0.5), 0.05 * (rand() - 0.5),
@@ -546,7 +562,9 @@ fi
 # like the table: 17,920 white samples at 97.3 Hz put the 10 % point at
 # m = 1792 exactly, where the truncated limit (1791.99...) left it out and
 # the minimum fell on 1536; a limit below one sample is no identification,
-# not "no limit" (a review, 2026-11-28)
+# not "no limit" (a review, 2026-11-28); since 2026-11-29 no Allan point at
+# all, an error naming the samples needed, and no JSON (test_allan.c
+# test_identify_limit_below_one_sample keeps the identification's guard)
 "$PY" -c "
 import random
 r = random.Random(7)
@@ -554,9 +572,10 @@ print('\\n'.join('%.6f' % (r.random() - 0.5) for _ in range(17920)))" > "$T/w179
 expect_exit 0 "allan --series at 97.3 Hz" "$H" allan --series "$T/w17920.txt" --rate 97.3 --no-sim --json "$T/w17920.json"
 if "$PY" -c "import json,sys; p=json.load(open(sys.argv[1]))['channels'][0]['paper']; sys.exit(0 if abs(p['tau_samples'] - 1792) < 0.01 else 1)" "$T/w17920.json"; then
     pass "the 10 % point is in the paper's minimum search"; else fail "the paper's tau is not the 10 % point"; fi
-expect_exit 0 "allan with a limit below one sample" "$H" allan --series "$T/w17920.txt" --rate 100 --max-tau-frac 0.00005 --no-sim --json "$T/wtiny.json"
-if "$PY" -c "import json,sys; p=json.load(open(sys.argv[1]))['channels'][0].get('paper'); sys.exit(0 if not p else 1)" "$T/wtiny.json"; then
-    pass "no paper identification below one sample"; else fail "a paper identification without a tau range"; fi
+expect_exit 1 "allan with a limit below one sample" "$H" allan --series "$T/w17920.txt" --rate 100 --max-tau-frac 0.00005 --no-sim --json "$T/wtiny.json"
+expect_err "17920 samples are too few for any Allan point: the shortest tau (1 sample) needs at least 20000 samples" \
+    "a limit below one sample is said"
+[ ! -e "$T/wtiny.json" ] && pass "no paper identification below one sample" || fail "a JSON without a tau range"
 
 if [ "$fails" -ne 0 ]; then echo "test_allan.sh: $fails failure(s)"; exit 1; fi
 echo "test_allan.sh: all passed"
