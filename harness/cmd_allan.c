@@ -1538,7 +1538,9 @@ static int write_profile(const run_t *R, const char *path, const char *name)
              * Gauss-Markov bound from the curve's minimum: the AR(1) Allan
              * deviation peaks at 0.6174 sigma at tau = 1.893 T (docs/allan.md),
              * so T = t_min / 1.89 and sigma = ADEV_min / 0.6174 put the model's bump
-             * on the lowest measured point, an upper bound for the bias. */
+             * on the lowest measured point. No upper bound for the bias in
+             * general: a pure Gauss-Markov channel (T = 1 s, sigma 0.004, no
+             * white noise, 10^4 s) gets T = 520 s, sigma 2.4e-4 (docs/allan.md). */
             memset(&m, 0, sizeof m);
             m.white = (double)ch->id.paper.sigma_v;
             m.gm_tau_s = (double)ch->id.paper.t_bs_s / 1.89;
@@ -1546,7 +1548,7 @@ static int write_profile(const run_t *R, const char *path, const char *name)
             fallback[k] = 1;
             nfallback++;
             hx_warn(CMD, "%s: the AR(1) bias of %s is not identifiable within the record (longest tau %.3g s, "
-                         "Allan minimum at %.3g s); the profile holds the upper bound T = %.3g s, sigma = %.3g %s "
+                         "Allan minimum at %.3g s); the profile holds the bound T = %.3g s, sigma = %.3g %s "
                          "from that minimum",
                     path, ch->name, tau_long_s, (double)ch->id.paper.t_bs_s, m.gm_tau_s, m.gm_sigma, ch->unit);
         }
@@ -1592,7 +1594,7 @@ static int write_profile(const run_t *R, const char *path, const char *name)
         ADD3("gyro_rrw_rps_rts", kk, 3);
     }
     if (nfallback > 0) {
-        /* 1 where the AR(1) part is the Allan-minimum upper bound, not a fit */
+        /* 1 where the AR(1) part is the Allan-minimum bound, not a fit */
         ADD3("ident_bound_accel", fallback, 0);
         ADD3("ident_bound_gyro", fallback, 3);
     }

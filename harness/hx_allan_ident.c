@@ -423,8 +423,9 @@ static void model_set(hx_noise_model_t *mdl, int k, double amp2)
 }
 
 /* Stage 1 at a fixed T: weighted linear least squares for the squared
- * amplitudes of the components in mask (relative AVAR residuals). Returns
- * the residual sum of squares, or INFINITY when an amplitude is not positive. */
+ * amplitudes of the components in mask (relative AVAR residuals),
+ * unconstrained (no NNLS). Returns the residual sum of squares, or
+ * INFINITY when an amplitude is not positive: that T is discarded. */
 static double linear_stage(const fit_data_t *d, double T, const int *comp, int nc, double *amp2)
 {
     gsl_matrix *X = gsl_matrix_alloc(d->n, (size_t)nc), *cov = gsl_matrix_alloc((size_t)nc, (size_t)nc);
