@@ -155,6 +155,13 @@ fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample)
     if (nav == NULL || sample == NULL) {
         return FNAV_E_ARG;
     }
+    if (nav->stance.finished) {
+        /* the input has ended: a call in the wrong state, whatever the
+         * sample (a firmware loop that keeps pushing learns it from this
+         * status, not from a sensor status); nothing counted, the stats
+         * and health of the finished run stay as they were (fnav_nav.h) */
+        return FNAV_E_STATE;
+    }
     st = fnav_sample_check(sample);
     if (st == FNAV_E_NANINF) {
         nav->stats.nan_inputs++;

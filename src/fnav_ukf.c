@@ -115,7 +115,11 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
     }
     n = 9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0);
     lambda = cfg->alpha * cfg->alpha * ((fnav_real_t)n + cfg->kappa) - (fnav_real_t)n;
-    if (!((fnav_real_t)n + lambda > FNAV_R(0.0))) {
+    /* n + lambda > 0: the pair weights Wi are positive; beta >= alpha^2,
+     * formed as fnav_ukf_predict forms it: the predicted covariance S +
+     * (beta - alpha^2) m m^T is a sum of positive semi-definite terms
+     * (fnav_ukf.h) */
+    if (!((fnav_real_t)n + lambda > FNAV_R(0.0)) || !(cfg->beta - cfg->alpha * cfg->alpha >= FNAV_R(0.0))) {
         return FNAV_E_CONFIG;
     }
     for (b = 0; b < sizeof *f; b++) {

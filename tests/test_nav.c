@@ -187,6 +187,57 @@ static void test_stream_contract(void **state)
     assert_true(fabs((double)fr.euler_rad[0]) < 1e-3 && fabs((double)fr.euler_rad[1]) < 1e-3);
 }
 
+/* After fnav_nav_finish a push is a call in the wrong state, whatever the
+ * sample: FNAV_E_STATE for a good sample and equally for a NaN, an
+ * out-of-range value or stamp and a stamp going backwards, with nothing
+ * counted and the navigator unchanged byte for byte (fnav_nav.h). Until
+ * 2026-11-29 (the filter review) the bad samples returned their own
+ * rejection status and were counted in stats and health after the end. */
+static void test_push_after_finish(void **state)
+{
+    static fnav_nav_t nav, copy;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    fnav_sample_t s;
+    long k;
+    (void)state;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    for (k = 0; k < 100; k++) {
+        s = still(k);
+        assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+        while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+        }
+    }
+    fnav_nav_finish(&nav);
+    copy = nav;
+    s = still(100);
+    assert_int_equal(fnav_nav_push(&nav, &s), FNAV_E_STATE);
+    s.gyro_rps[0] = (fnav_real_t)NAN;
+    assert_int_equal(fnav_nav_push(&nav, &s), FNAV_E_STATE);
+    s = still(100);
+    s.accel_mps2[2] = FNAV_R(2.0e6);
+    assert_int_equal(fnav_nav_push(&nav, &s), FNAV_E_STATE);
+    s = still(100);
+    s.t_ns = FNAV_T_NS_MAX + 1;
+    assert_int_equal(fnav_nav_push(&nav, &s), FNAV_E_STATE);
+    s = still(10); /* backwards */
+    assert_int_equal(fnav_nav_push(&nav, &s), FNAV_E_STATE);
+    s.accel_mps2[0] = (fnav_real_t)INFINITY;
+    assert_int_equal(fnav_nav_step(&nav, &s, &fr), FNAV_E_STATE);
+    assert_int_equal(nav.stats.nan_inputs, 0);
+    assert_int_equal(nav.stats.range_inputs, 0);
+    assert_int_equal(nav.stats.time_back, 0);
+    assert_int_equal(nav.health & (FNAV_HEALTH_NANINF | FNAV_HEALTH_RANGE | FNAV_HEALTH_TIME_BACK), 0u);
+    assert_memory_equal(&nav, &copy, sizeof nav);
+    /* the frames held back by the detector are still all there */
+    k = 0;
+    while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+        k++;
+    }
+    assert_int_equal(k, 5);
+    assert_int_equal(nav.stats.frames, 100);
+}
+
 /* Duplicates (dt = 0), gaps (> 1.5 intervals), time jumps (> max_gap_s).
  * The motion inside a time jump is unknown: its frame is propagated over
  * the nominal interval 1 / rate, not over the 1.005 s of the stamps. The
@@ -1298,6 +1349,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_config),
         cmocka_unit_test(test_stream_contract),
+        cmocka_unit_test(test_push_after_finish),
         cmocka_unit_test(test_timing),
         cmocka_unit_test(test_step),
         cmocka_unit_test(test_run_port),

@@ -452,6 +452,97 @@ static void test_unscented_second_order(void **state)
     FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_V + 1, FNAV_UKF_V + 2), cov_yz, 300.0 * EPS * var_y, 0.0);
 }
 
+/* One prediction of test_unscented_second_order's case (a level body at
+ * rest, attitude sd 0.2 rad about x, the bias model and the noise off) with
+ * the given weights; cfg.beta set after init where asked, as an init that
+ * accepted it would have. */
+static void predict_weights(fnav_ukf_t *f, double alpha, double beta, int beta_after_init)
+{
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    int i;
+    c.bias_model = FNAV_BIAS_OFF;
+    c.alpha = (fnav_real_t)alpha;
+    if (!beta_after_init) {
+        c.beta = (fnav_real_t)beta;
+    }
+    for (i = 0; i < 3; i++) {
+        c.accel_noise_mps2_rthz[i] = FNAV_R(0.0);
+        c.gyro_noise_rps_rthz[i] = FNAV_R(0.0);
+        sd.att_rad[i] = FNAV_R(1.0e-9);
+        sd.gyro_bias_rps[i] = FNAV_R(1.0e-9);
+        sd.accel_bias_mps2[i] = FNAV_R(1.0e-9);
+    }
+    sd.att_rad[0] = FNAV_R(0.2);
+    sd.vel_mps = FNAV_R(1.0e-3);
+    assert_int_equal(fnav_ukf_init(f, &c), FNAV_OK);
+    if (beta_after_init) {
+        f->cfg.beta = (fnav_real_t)beta;
+    }
+    assert_int_equal(fnav_ukf_start(f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    assert_int_equal(fnav_ukf_predict(f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g),
+                                      FNAV_R(0.01)),
+                     FNAV_OK);
+}
+
+/* The unscented weights. The predicted covariance is S + (beta - alpha^2)
+ * m m^T with S = sum_i Wi D_i D_i^T (fnav_ukf.c); with n + lambda > 0 (Wi >
+ * 0) every term is positive semi-definite exactly when beta >= alpha^2, and
+ * init refuses the rest (FNAV_E_CONFIG). Until 2026-11-29 (the filter
+ * review) any finite beta was accepted: beta = -10 with alpha = 1 made the
+ * vertical velocity variance of one prediction negative here, and the guard
+ * reset it to its maximum (1e4 (m/s)^2 instead of 3.6e-5). The default
+ * weights are unchanged. A small alpha keeps every term's sign: W0c (about
+ * -1e6 at alpha = 1e-3) multiplies nothing in this form, and the covariance
+ * stays positive definite. */
+static void test_weights_psd(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    static const double refused[][3] = { { 1.0, 0.999, 0.0 }, { 1.0, -10.0, 0.0 }, { 1.5, 2.0, 0.0 },
+                                         { 2.0, 3.99, 0.0 }, { 0.5, 0.2, 3.0 } };
+    static const double accepted[][3] = { { 1.0, 1.0, 0.0 }, { 0.5, 0.25, 0.0 }, { 1.4, 2.0, 0.0 },
+                                          { 1.0e-3, 2.0, 0.0 }, { 0.5, 0.25, 3.0 } };
+    double asym;
+    size_t k;
+    (void)state;
+    /* the defaults: accepted, the weights as they were (n = 15) */
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(f.n_act, 15);
+    assert_true(f.gamma == fnav_sqrt(FNAV_R(15.0)));
+    assert_true(f.w0m == FNAV_R(0.0) && f.w0c == FNAV_R(2.0) && f.wi == FNAV_R(0.5) / FNAV_R(15.0));
+    for (k = 0; k < sizeof refused / sizeof refused[0]; k++) {
+        c = fnav_ukf_config_default;
+        c.alpha = (fnav_real_t)refused[k][0];
+        c.beta = (fnav_real_t)refused[k][1];
+        c.kappa = (fnav_real_t)refused[k][2];
+        if (fnav_ukf_init(&f, &c) != FNAV_E_CONFIG) {
+            fail_msg("alpha %g beta %g kappa %g: accepted", refused[k][0], refused[k][1], refused[k][2]);
+        }
+    }
+    for (k = 0; k < sizeof accepted / sizeof accepted[0]; k++) {
+        c = fnav_ukf_config_default;
+        c.alpha = (fnav_real_t)accepted[k][0];
+        c.beta = (fnav_real_t)accepted[k][1];
+        c.kappa = (fnav_real_t)accepted[k][2];
+        if (fnav_ukf_init(&f, &c) != FNAV_OK) {
+            fail_msg("alpha %g beta %g kappa %g: refused", accepted[k][0], accepted[k][1], accepted[k][2]);
+        }
+    }
+    /* why: beta below alpha^2, as the old init took it */
+    predict_weights(&f, 1.0, 2.0, 0);
+    assert_int_equal(f.health.cov_guard, 0);
+    assert_true(fnav_test_cov_spd(&f, &asym) > 0.0);
+    predict_weights(&f, 1.0, -10.0, 1);
+    assert_int_equal(f.health.cov_guard, 1);
+    /* a small alpha: negative W0c, the covariance still positive definite */
+    predict_weights(&f, 1.0e-3, 2.0, 0);
+    assert_true(f.w0c < FNAV_R(-1.0e5));
+    assert_int_equal(f.health.cov_guard, 0);
+    assert_true(fnav_test_cov_spd(&f, &asym) > 0.0);
+}
+
+
 /* The lever's random walk: without updates the lever is constant (r' = r,
  * no other state feeds it), so each prediction adds lever_rw^2 dt to its
  * variance: P_r = lever_sd^2 + k lever_rw^2 dt after k steps, exactly but
@@ -1811,6 +1902,7 @@ int main(void)
         cmocka_unit_test(test_ar1_decay),
         cmocka_unit_test(test_rotated_accel_noise),
         cmocka_unit_test(test_unscented_second_order),
+        cmocka_unit_test(test_weights_psd),
         cmocka_unit_test(test_lever_random_walk),
         cmocka_unit_test(test_zupt_update),
         cmocka_unit_test(test_lever_measurement),

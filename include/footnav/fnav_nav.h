@@ -175,8 +175,10 @@ FNAV_WARN_UNUSED fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_con
  * @return FNAV_OK; FNAV_E_NANINF, FNAV_E_RANGE (a value beyond
  *         FNAV_INPUT_MAX_ABS, a glitch no sensor reads, or a stamp beyond
  *         FNAV_T_NS_MAX) or FNAV_E_TIME: sample rejected (counted, state
- *         unchanged); FNAV_E_STATE after fnav_nav_finish() or when
- *         frames were not popped.
+ *         unchanged); FNAV_E_STATE after fnav_nav_finish(), checked before
+ *         the sample, whatever it holds: nothing counted, the navigator
+ *         unchanged; FNAV_E_STATE also for a good sample when frames were
+ *         not popped (a bad one is rejected and counted as above).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample);
 

@@ -78,8 +78,16 @@
  * velocity, position, gyro bias, accelerometer bias.
  *
  * Numerics (float32): P is kept symmetric (only the upper triangle is
- * computed, then mirrored); the weights (alpha = 1, beta = 2, kappa = 0) make
- * every term of the predicted covariance positive semi-definite; updates use
+ * computed, then mirrored); the predicted covariance, referenced to the
+ * propagated centre, is S + (beta - alpha^2) m m^T + Q with S = sum_i Wi D_i
+ * D_i^T (fnav_ukf.c): every term is positive semi-definite for every
+ * configuration init accepts (n + lambda > 0, so Wi > 0, and beta >=
+ * alpha^2; the defaults alpha = 1, beta = 2, kappa = 0 among them), whatever
+ * kappa and the sign of W0c, which this form never multiplies (W0c is about
+ * -1e6 at alpha = 1e-3, tested). A small alpha keeps the signs; it puts
+ * the sigma points at gamma = alpha sqrt(n + kappa) standard deviations,
+ * so the rounding of each point's image weighs more (in the mean by Wi =
+ * 1 / (2 alpha^2 (n + kappa))); updates use
  * the Joseph form, expanded as P - K H P - P H^T K^T + K S K^T (valid for any
  * gain, symmetric term by term). A Cholesky pivot that is not positive triggers the defined
  * recovery: add jitter (1e-6 of each variance) and retry; if that also fails,
@@ -139,7 +147,7 @@ typedef struct {
     fnav_real_t gyro_bias_sigma_rps[3];   /**< gyro bias stationary std (paper sigma_bias), rad/s */
     fnav_real_t accel_bias_sigma_mps2[3]; /**< accel bias stationary std, m/s^2 */
     fnav_strapdown_config_t strapdown;    /**< gravity, coning */
-    fnav_real_t alpha, beta, kappa;       /**< unscented transform (default 1, 2, 0) */
+    fnav_real_t alpha, beta, kappa;       /**< unscented transform (default 1, 2, 0; beta >= alpha^2) */
     fnav_real_t zupt_sigma_mps;           /**< ZUPT measurement noise, m/s (default 0.01) */
     fnav_real_t zaru_sigma_rps;           /**< ZARU measurement noise, rad/s (default 0.01) */
     int closed_form;                      /**< 1 (default): closed-form linear sigma points; 0: all
@@ -225,7 +233,9 @@ typedef struct {
  * fnav_ukf_start()).
  * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG on a bad value
  *         (negative or non-finite noise, non-positive tau/sigma with AR1,
- *         alpha <= 0, n + lambda <= 0, non-positive measurement noise,
+ *         alpha <= 0, n + lambda <= 0, beta < alpha^2 (a predicted
+ *         covariance term that is not positive semi-definite), non-positive
+ *         measurement noise,
  *         lever, settle or closed_form other than 0 or 1; a
  *         standard deviation, measurement or bias sigma, lever or settling
  *         sd, whose square is 0 or not finite: in float32 below about
