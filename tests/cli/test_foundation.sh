@@ -146,6 +146,14 @@ expect_err "no time stamps; assuming the ADIS16405 data set rate of 100 Hz (give
 expect_exit 0 "info on an ADIS16405 log with --input-rate" "$H" info "$T/adis.csv" --input-rate 200
 if grep -q "assuming" "$T/err"; then fail "--input-rate given: no assumption to warn about"; else pass "--input-rate given: no warning"; fi
 expect_out "200.000 Hz (nominal)" "--input-rate sets the ADIS rate"
+# the square2 reader (a sample counter, no time) assumed its 100 Hz without a
+# word as well (the unseen review, after the ADIS fix)
+awk 'BEGIN { print "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps,q0,q1,q2,q3"; for (k = 0; k < 400; k++) print k ",-0.07,0,-9.82,0.001,-0.002,-0.001,1,0,0,0" }' >"$T/square2.csv"
+expect_exit 0 "info on a square2 log" "$H" info "$T/square2.csv"
+expect_err "no time stamps; assuming the ZUPT-aided-INS square2 data set rate of 100 Hz (give --input-rate)" "the square2 rate is said to be assumed"
+expect_exit 0 "info on a square2 log with --input-rate" "$H" info "$T/square2.csv" --input-rate 200
+if grep -q "assuming" "$T/err"; then fail "square2 --input-rate given: no assumption to warn about"; else pass "square2 --input-rate given: no warning"; fi
+expect_out "200.000 Hz (nominal)" "--input-rate sets the square2 rate"
 
 # --- a foreign recording cut off mid-line (docs/log-format.md: its last line
 # is ignored with a warning): every reader warns, the streaming ones (convert,
