@@ -50,6 +50,16 @@ printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n
 expect_exit 0 "info on a log of mostly duplicates" "$H" info "$T/dups.csv"
 expect_out "interval    median 10.000 ms" "the median interval skips the duplicates"
 expect_out "gaps        0 " "no real interval is a gap"
+# one sample has no interval, so no rate: it printed "rate 0.000 Hz (from the
+# time stamps)" and "interval median 0.000 ms" (the cli review); a log whose
+# stamps are all the same has no rate either
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n' > "$T/one.csv"
+expect_exit 0 "info on a one-sample log" "$H" info "$T/one.csv"
+expect_out "^rate        none (one sample gives no rate)$" "one sample: no rate, said"
+expect_out "^interval    none (one sample)$" "one sample: no interval, said"
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0,0,0,-9.8,0,0,0\n' > "$T/onestamp.csv"
+expect_exit 0 "info on a log of one time stamp" "$H" info "$T/onestamp.csv"
+expect_out "^rate        none (every time stamp is the same)$" "one time stamp: no rate, said"
 # an 820 Hz log stamped to the millisecond reads 1 and 2 ms: its median is
 # 1 ms, and every 2 ms interval (a fifth of them, no sample lost) was a gap;
 # a gap is judged against the rate's period and the stamps' resolution, as
