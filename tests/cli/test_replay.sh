@@ -647,6 +647,21 @@ if grep -q "at 4000 Hz the stance detector's ring of [0-9]* samples cuts its win
     pass "a 4 kHz log: the cut detector window is said"; else fail "4 kHz: $(cat "$T/w4k.err")"; fi
 "$H" replay "$T/w4k.bin" --rate 1900 > /dev/null 2> "$T/w4k19.err"
 if grep -q "ring of .* cuts" "$T/w4k19.err"; then fail "the window still cut at the rate it names"; else pass "resampled to the rate it names: no cut"; fi
+# the advice never names a rate --rate refuses (1 to 100000 Hz) or one that
+# still cuts: a window no rate fits advised "--rate 0" (the cli review), and
+# a long window, which alone caps the rate at 64 / window_s, "--rate 62"
+# (half window plus minimum run only), still cut at 62 Hz
+"$H" replay vectors/walk.bin --param window_s=1e30 > /dev/null 2> "$T/wbig.err"
+if grep -q "ring of .* cuts" "$T/wbig.err" && ! grep -q -- "--rate [0-9]" "$T/wbig.err" &&
+    grep -q "no rate --rate accepts fits them: shorten window_s or min_zupt_s (--param)" "$T/wbig.err"; then
+    pass "window_s=1e30: the cut said, no rate named"; else fail "window_s=1e30: $(cat "$T/wbig.err")"; fi
+"$H" replay vectors/walk.bin --param window_s=2 > /dev/null 2> "$T/w2s.err"
+r2=$(sed -n 's/.*resample (--rate \([0-9]*\)).*/\1/p' "$T/w2s.err")
+if [ -n "$r2" ] && [ "$r2" -ge 1 ]; then
+    "$H" replay vectors/walk.bin --param window_s=2 --rate "$r2" > /dev/null 2> "$T/w2r.err"
+    if grep -q "ring of .* cuts" "$T/w2r.err"; then fail "window_s=2: still cut at the rate it names ($r2 Hz)"
+    else pass "window_s=2: resampled to the rate it names ($r2 Hz), no cut"; fi
+else fail "window_s=2: no rate named: $(cat "$T/w2s.err")"; fi
 
 # --- the 2-D path of replay --plot (and of live's plot) spans the same
 # distance on both axes: with equal units alone, a straight walk was a strip a
