@@ -676,6 +676,21 @@ if awk '/^set [xy]range/ { r = $3; gsub(/[\[\]]/, "", r) } /^set xrange/ { split
 else
     fail "path plot ranges: $(grep range "$T/gp.txt" | tr '\n' ' ')"
 fi
+# gnuplot failing partway left its half-drawn PNG behind beside "failed to
+# write" (the plots review): the file it started is removed, and said; a file
+# that was there before and that gnuplot never opened is left alone
+fake_gnuplot_fail "$T/failgp"
+rm -f "$T/half.png"
+expect_exit 3 "gnuplot fails partway" env PATH="$T/failgp:$PATH" "$H" replay "$T/straight.bin" --plot "$T/half.png" --quiet
+expect_err "gnuplot failed to write $T/half.png; the partial file was removed" "the partial picture's removal is said"
+if [ -e "$T/half.png" ]; then fail "a half-drawn PNG was left behind"; else pass "no half-drawn PNG left behind"; fi
+echo "an older picture" >"$T/old.png"
+expect_exit 3 "gnuplot fails before its output" env GP_TOUCH=0 PATH="$T/failgp:$PATH" "$H" replay "$T/straight.bin" --plot "$T/old.png" --quiet
+if [ "$(cat "$T/old.png" 2>/dev/null)" = "an older picture" ] && ! grep -q "removed" "$T/err"; then
+    pass "a file gnuplot never opened is left as it was"; else fail "the older picture was touched: $(cat "$T/err")"; fi
+expect_exit 3 "gnuplot fails partway over an older picture" env PATH="$T/failgp:$PATH" "$H" replay "$T/straight.bin" --plot "$T/old.png" --quiet
+if [ ! -e "$T/old.png" ] && grep -q "the partial file was removed" "$T/err"; then
+    pass "an older picture gnuplot began to overwrite is removed, said"; else fail "overwritten picture: $(cat "$T/err")"; fi
 
 # --- a log that stops at a bad line says so in the JSON too (complete,
 # error), as info's and psd's: only the exit status said it
