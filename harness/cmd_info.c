@@ -299,10 +299,20 @@ int hx_cmd_info(int argc, char **argv)
         printf("axes        %s\n", log.meta.axes);
     }
     printf("samples     %zu%s\n", log.n, log.meta.has_temp ? " (with temperature)" : "");
-    printf("rate        %.3f Hz (%s)\n", in.rate_hz, log.meta.rate_nominal ? "nominal" : "from the time stamps");
+    if (log.meta.rate_nominal || in.rate_hz > 0.0) {
+        printf("rate        %.3f Hz (%s)\n", in.rate_hz, log.meta.rate_nominal ? "nominal" : "from the time stamps");
+    } else {
+        /* no interval that advances, no rate: "0.000 Hz (from the time
+         * stamps)" until 2026-11-29 (the cli review) */
+        printf("rate        none (%s)\n", log.n < 2 ? "one sample gives no rate" : "every time stamp is the same");
+    }
     printf("duration    %.3f s\n", in.duration_s);
-    printf("interval    median %.3f ms, min %.3f ms, max %.3f ms\n", 1e3 * in.dt_med_s, 1e3 * in.dt_min_s,
-           1e3 * in.dt_max_s);
+    if (log.n < 2) {
+        printf("interval    none (one sample)\n");
+    } else {
+        printf("interval    median %.3f ms, min %.3f ms, max %.3f ms\n", 1e3 * in.dt_med_s, 1e3 * in.dt_min_s,
+               1e3 * in.dt_max_s);
+    }
     printf("gaps        %ld (> 1.5 intervals; longest %.1f ms)\n", in.gaps, 1e3 * in.max_gap_s);
     printf("duplicates  %ld (time stamp repeated, dt = 0)\n", in.dups);
     if (in.rate_off > 0.0) {

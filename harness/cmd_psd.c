@@ -439,7 +439,12 @@ static int plot_spectrogram(const char *dir, const hx_log_t *log, int c, uint32_
             break;
         }
         if (fnav_welch_segments(&w) > seen) {
-            const double t = ((double)i - 0.5 * (double)nfft) / rate; /* segment centre */
+            /* the segment's centre: samples i - nfft + 1 .. i under a
+             * periodic Hann window, which is 0 at the first and symmetric
+             * about the first + nfft / 2, scipy.signal.spectrogram's t
+             * (i - nfft / 2 until 2026-11-29, a sample early; the plots
+             * review; tests/cli/test_psd.sh) */
+            const double t = ((double)i + 1.0 - 0.5 * (double)nfft) / rate;
             seen = fnav_welch_segments(&w);
             if (fnav_welch_last(&w, col, FNAV_WELCH_MAX_BINS) != FNAV_OK) {
                 continue;

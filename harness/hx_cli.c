@@ -598,6 +598,24 @@ int hx_plot_check(const char *cmd, const char *png_path)
     return hx_check_writable(cmd, png_path);
 }
 
+/* What tells a file apart from the same path rewritten: device, inode,
+ * size, modification and status change times; 0 when it exists. */
+static int file_sig(const char *path, long long sig[7])
+{
+    struct stat st;
+    if (stat(path, &st) != 0) {
+        return -1;
+    }
+    sig[0] = (long long)st.st_dev;
+    sig[1] = (long long)st.st_ino;
+    sig[2] = (long long)st.st_size;
+    sig[3] = (long long)st.st_mtim.tv_sec;
+    sig[4] = (long long)st.st_mtim.tv_nsec;
+    sig[5] = (long long)st.st_ctim.tv_sec;
+    sig[6] = (long long)st.st_ctim.tv_nsec;
+    return 0;
+}
+
 int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h)
 {
     /* the path as a gnuplot string: a quote doubles (a path was cut to 511
@@ -615,6 +633,9 @@ int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int
     if (hx_plot_check(cmd, png_path) != 0) {
         return -1;
     }
+    /* a file already there is gnuplot's to overwrite, not to remove when
+     * gnuplot fails before it opens it (hx_plot_close) */
+    p->existed = file_sig(png_path, p->before) == 0;
     p->gp = popen("gnuplot >/dev/null", "w");
     if (p->gp == NULL) {
         hx_error(cmd, "cannot start gnuplot (%s)", strerror(errno));
@@ -658,7 +679,26 @@ int hx_plot_close(hx_plot_t *p, const char *cmd)
     rc = pclose(p->gp);
     p->gp = NULL;
     if (rc != 0 || access(p->path, F_OK) != 0) {
-        hx_error(cmd, "gnuplot failed to write %s", p->path);
+        /* gnuplot failed partway: a half-drawn picture is no result, and
+         * was left behind (the plots review). Removed when this session
+         * started it: new, or changed since hx_plot_open (gnuplot's set
+         * output truncates the file in place); a file gnuplot never opened
+         * (it failed before its set output) stays as it was. */
+        long long now[7];
+        int i, changed = 0;
+        if (file_sig(p->path, now) == 0) {
+            for (i = 0; i < 7; i++) {
+                changed |= !p->existed || now[i] != p->before[i];
+            }
+        }
+        if (changed && remove(p->path) == 0) {
+            hx_error(cmd, "gnuplot failed to write %s; the partial file was removed", p->path);
+        } else if (changed) {
+            hx_error(cmd, "gnuplot failed to write %s; the partial file could not be removed (%s)", p->path,
+                     strerror(errno));
+        } else {
+            hx_error(cmd, "gnuplot failed to write %s", p->path);
+        }
         return -1;
     }
     return 0;

@@ -150,6 +150,8 @@ double hx_median(double *v, int n);
 typedef struct {
     FILE *gp;
     char path[HX_PLOT_PATH_SIZE];
+    int existed;            /**< the file was there before gnuplot started */
+    long long before[7];    /**< and its device, inode, size, mtime and ctime then */
 } hx_plot_t;
 
 /** Start gnuplot for a PNG of w x h pixels. Returns 0, or -1 with a
@@ -159,7 +161,9 @@ int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int
 /** 0 when gnuplot is installed and `png_path` can be written; -1 with the
  *  error printed. For plots drawn only after long work. */
 int hx_plot_check(const char *cmd, const char *png_path);
-/** Finish; returns 0 when the PNG was written. */
+/** Finish; returns 0 when the PNG was written. When gnuplot failed, the
+ *  file it started in this session (one that was not there, or one that was
+ *  and has changed since hx_plot_open) is removed, and the error says so. */
 int hx_plot_close(hx_plot_t *p, const char *cmd);
 /** 1 when the two paths name one existing file (an output about to
  *  overwrite the input), else 0. */

@@ -792,6 +792,13 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         m->has_seq = 1;
         copy_str(m->sensor, sizeof m->sensor, "ZUPT-aided-INS square2");
         copy_str(m->axes, sizeof m->axes, "sensor axes; z down at rest");
+        if (!(rate_hz > 0.0)) {
+            /* a sample counter, no time: a log of another rate would be
+             * read at 100 Hz without a word, as ADIS16405 logs were (the
+             * unseen review, 2026-11-29) */
+            add_warn(r, "%s: no time stamps; assuming the ZUPT-aided-INS square2 data set rate of 100 Hz (give --input-rate)",
+                     r->path);
+        }
         break;
     }
     case HX_FMT_IPOL: {

@@ -264,6 +264,62 @@ void hx_nav_init_error(const fnav_nav_config_t *cfg, const char *rate_src, const
     }
 }
 
+/* Whether the stance detector fits its configured window and minimum ZUPT
+ * run into its ring at rate_hz, asked of the core itself (a probe given the
+ * rate and one sample; fnav_stance.c, set_rate), and whether the navigation
+ * takes that rate (max_gap_s: fnav_nav_init). */
+static int stance_fits(const fnav_nav_config_t *cfg, double rate_hz)
+{
+    static fnav_stance_t probe;
+    fnav_stance_config_t c = cfg->stance;
+    fnav_sample_t s0;
+    memset(&s0, 0, sizeof s0);
+    c.rate_hz = (fnav_real_t)rate_hz;
+    if (!((double)cfg->max_gap_s * rate_hz > 1.5) || fnav_stance_init(&probe, &c) != FNAV_OK ||
+        fnav_stance_push(&probe, &s0) != FNAV_OK) {
+        return 0;
+    }
+    return fnav_stance_cut(&probe) == 0u;
+}
+
+/* The rate to advise when the ring cuts the detector's durations at fs_hz:
+ * the highest at which both fit, in whole hundreds of Hz from 100 Hz up and
+ * whole Hz below, within replay --rate's range (1 Hz up, below fs_hz: it only
+ * downsamples); 0 when none does. The ring holds the window W and half
+ * window + minimum run + 1 (fnav_stance.c, set_rate), so the rate is at most
+ * MAX / window_s and (MAX - 1) / (window_s / 2 + min_zupt_s); the search
+ * starts there and steps down to a rate the core accepts. Until 2026-11-29
+ * the second bound alone was advised, rounded to the nearest Hz below 100
+ * Hz: "--rate 0" for window_s = 1e30, "--rate 62" (still cut) for
+ * window_s = 2 (the cli review). */
+static double stance_fit_rate(const fnav_nav_config_t *cfg, double fs_hz)
+{
+    const double w_s = (double)cfg->stance.window_s, z_s = (double)cfg->stance.min_zupt_s;
+    double r = fs_hz, step;
+    int k;
+    if (w_s > 0.0 && (double)FNAV_STANCE_MAX_WINDOW / w_s < r) {
+        r = (double)FNAV_STANCE_MAX_WINDOW / w_s;
+    }
+    if (0.5 * w_s + z_s > 0.0 && (double)(FNAV_STANCE_MAX_WINDOW - 1) / (0.5 * w_s + z_s) < r) {
+        r = (double)(FNAV_STANCE_MAX_WINDOW - 1) / (0.5 * w_s + z_s);
+    }
+    for (k = 0; k < 200; k++) {
+        step = r >= 100.0 ? 100.0 : 1.0;
+        r = step * floor(r / step);
+        if (r >= fs_hz) {
+            r -= step;
+        }
+        if (!(r >= 1.0)) {
+            return 0.0;
+        }
+        if (stance_fits(cfg, r)) {
+            return r;
+        }
+        r -= step;
+    }
+    return 0.0;
+}
+
 /* ------------------------------------------------------------ resampler */
 
 static int cmp_i64(const void *a, const void *b)
@@ -798,14 +854,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         const unsigned cut = fnav_stance_cut(&nav.stance);
         const int cut_win = (cut & FNAV_STANCE_CUT_WINDOW) != 0u, cut_zupt = (cut & FNAV_STANCE_CUT_MIN_ZUPT) != 0u;
         const double fs = (double)nav.stance.rate_hz;
-        /* the advice: the highest rate at which both fit, half window +
-         * minimum run + 1 <= ring (fnav_stance.c, set_rate), in whole
-         * hundreds of Hz */
-        const double span_s = 0.5 * (double)cfg->stance.window_s + (double)cfg->stance.min_zupt_s;
-        const double fs_max = span_s > 0.0 ? (double)(FNAV_STANCE_MAX_WINDOW - 1) / span_s : fs;
-        const double fs_fit = fs_max >= 100.0 ? 100.0 * floor(fs_max / 100.0) : fs_max;
         if (cut_win || cut_zupt) {
-            char what[200];
+            char what[200], advice[200];
+            const double fs_fit = stance_fit_rate(cfg, fs);
             size_t n = 0;
             what[0] = '\0';
             if (cut_win) {
@@ -817,10 +868,16 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                          cut_win ? " and " : "", 1e3 * (double)nav.stance.n_min_zupt / fs,
                          1e3 * (double)cfg->stance.min_zupt_s);
             }
+            if (fs_fit > 0.0) {
+                snprintf(advice, sizeof advice, "resample (--rate %.0f)", fs_fit);
+            } else {
+                snprintf(advice, sizeof advice,
+                         "no rate --rate accepts fits them: shorten window_s or min_zupt_s (--param)");
+            }
             hx_warn(cmd,
-                    "%s: at %.0f Hz the stance detector's ring of %d samples cuts %s: resample (--rate %.0f) or "
-                    "build with a larger FNAV_STANCE_MAX_WINDOW (docs/navigation.md, \"Stance detector\")",
-                    path, fs, FNAV_STANCE_MAX_WINDOW, what, fs_fit);
+                    "%s: at %.0f Hz the stance detector's ring of %d samples cuts %s: %s or build with a larger "
+                    "FNAV_STANCE_MAX_WINDOW (docs/navigation.md, \"Stance detector\")",
+                    path, fs, FNAV_STANCE_MAX_WINDOW, what, advice);
         }
     }
     if (rc == 0) {

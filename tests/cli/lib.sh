@@ -32,3 +32,15 @@ exit 0
 GP
     chmod +x "$1/gnuplot"
 }
+fake_gnuplot_fail() { # DIR: a stand-in gnuplot that fails partway: it reads its script, starts the output file
+    # (a PNG signature, no image; GP_TOUCH=0: leaves it alone, as a gnuplot failing before its set output) and exits 1
+    mkdir -p "$1"
+    cat >"$1/gnuplot" <<'GP'
+#!/bin/sh
+s=$(cat)
+out=$(printf '%s\n' "$s" | sed -n "s/^set output '\(.*\)'$/\1/p" | head -n 1)
+[ "${GP_TOUCH:-1}" = 1 ] && [ -n "$out" ] && printf '\211PNG\r\n' >"$out"
+exit 1
+GP
+    chmod +x "$1/gnuplot"
+}

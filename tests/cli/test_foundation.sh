@@ -50,6 +50,16 @@ printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n
 expect_exit 0 "info on a log of mostly duplicates" "$H" info "$T/dups.csv"
 expect_out "interval    median 10.000 ms" "the median interval skips the duplicates"
 expect_out "gaps        0 " "no real interval is a gap"
+# one sample has no interval, so no rate: it printed "rate 0.000 Hz (from the
+# time stamps)" and "interval median 0.000 ms" (the cli review); a log whose
+# stamps are all the same has no rate either
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n' > "$T/one.csv"
+expect_exit 0 "info on a one-sample log" "$H" info "$T/one.csv"
+expect_out "^rate        none (one sample gives no rate)$" "one sample: no rate, said"
+expect_out "^interval    none (one sample)$" "one sample: no interval, said"
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0,0,0,-9.8,0,0,0\n' > "$T/onestamp.csv"
+expect_exit 0 "info on a log of one time stamp" "$H" info "$T/onestamp.csv"
+expect_out "^rate        none (every time stamp is the same)$" "one time stamp: no rate, said"
 # an 820 Hz log stamped to the millisecond reads 1 and 2 ms: its median is
 # 1 ms, and every 2 ms interval (a fifth of them, no sample lost) was a gap;
 # a gap is judged against the rate's period and the stamps' resolution, as
@@ -146,6 +156,14 @@ expect_err "no time stamps; assuming the ADIS16405 data set rate of 100 Hz (give
 expect_exit 0 "info on an ADIS16405 log with --input-rate" "$H" info "$T/adis.csv" --input-rate 200
 if grep -q "assuming" "$T/err"; then fail "--input-rate given: no assumption to warn about"; else pass "--input-rate given: no warning"; fi
 expect_out "200.000 Hz (nominal)" "--input-rate sets the ADIS rate"
+# the square2 reader (a sample counter, no time) assumed its 100 Hz without a
+# word as well (the unseen review, after the ADIS fix)
+awk 'BEGIN { print "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps,q0,q1,q2,q3"; for (k = 0; k < 400; k++) print k ",-0.07,0,-9.82,0.001,-0.002,-0.001,1,0,0,0" }' >"$T/square2.csv"
+expect_exit 0 "info on a square2 log" "$H" info "$T/square2.csv"
+expect_err "no time stamps; assuming the ZUPT-aided-INS square2 data set rate of 100 Hz (give --input-rate)" "the square2 rate is said to be assumed"
+expect_exit 0 "info on a square2 log with --input-rate" "$H" info "$T/square2.csv" --input-rate 200
+if grep -q "assuming" "$T/err"; then fail "square2 --input-rate given: no assumption to warn about"; else pass "square2 --input-rate given: no warning"; fi
+expect_out "200.000 Hz (nominal)" "--input-rate sets the square2 rate"
 
 # --- a foreign recording cut off mid-line (docs/log-format.md: its last line
 # is ignored with a warning): every reader warns, the streaming ones (convert,

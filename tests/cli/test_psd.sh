@@ -95,6 +95,39 @@ grep -q "gyroscopes (Fig. 4): bandwidths no power" "$T/ccdf.gp" && ! grep -q "ba
     ! grep -q '\$c3 using' "$T/ccdf.gp" && grep -q '\$c0 using' "$T/ccdf.gp" &&
     pass "constant gyroscopes: CCDF panel says no power, draws no gyroscope line" ||
     fail "constant gyroscopes: CCDF panel shows 0 Hz bands or flat lines"
+# the spectrogram's segment times against scipy.signal.spectrogram's t (Hann
+# 16, 50 %, on ax: a chirp of growing amplitude, so a column under another
+# segment's time shows in its dB too): every time was a sample early, the
+# centre taken as the last sample - nfft / 2 (the plots review); the
+# periodic Hann window's centre, scipy's t, is the first sample + nfft / 2
+awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 200; k++) { t = k / 100.0
+    printf "%.6f,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f\n", t, (1 + t) * sin(2 * 3.141592653589793 * (2 * t + 2 * t * t)) + 0.01 * (rand() - 0.5),
+        0.01 * (rand() - 0.5), -9.8 + 0.01 * (rand() - 0.5), 0.001 * (rand() - 0.5), 0.001 * (rand() - 0.5), 0.001 * (rand() - 0.5) } }' >"$T/chirp.csv"
+fake_gnuplot "$T/fakegp"
+expect_exit 0 "a chirp, --plot with a stand-in gnuplot" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/spec.gp" \
+    "$H" psd "$T/chirp.csv" --plot "$T/chirpplots" --spec-nfft 16 --spec-axis ax
+if "$PY" -c 'import scipy' 2>/dev/null; then
+    if "$PY" - "$T/chirp.csv" "$T/spec.gp" >"$T/pyout" 2>&1 <<'PYEOF'
+import sys
+import numpy as np
+from scipy.signal import spectrogram
+d = np.loadtxt(sys.argv[1], delimiter=",", skiprows=1)
+f, t, S = spectrogram(d[:, 1], fs=100.0, window="hann", nperseg=16, noverlap=8)
+lines = open(sys.argv[2]).read().split("$s << EOD\n")[1].split("EOD\n")[0].split("\n")
+rows = np.array([[float(v) for v in l.split()] for l in lines if l.strip()])
+ts = np.unique(rows[:, 0])
+assert len(ts) == len(t), (len(ts), len(t))
+assert np.allclose(ts, t, rtol=0, atol=1e-6), (ts[:4], t[:4])
+for j, tj in enumerate(t):
+    r = rows[np.abs(rows[:, 0] - tj) < 1e-6]
+    assert np.allclose(r[:, 1], f, atol=1e-6)
+    assert np.allclose(r[:, 2], 10 * np.log10(S[:, j]), atol=0.02), (tj, r[:3, 2], 10 * np.log10(S[:3, j]))
+print("%d segments, first at %g s" % (len(t), t[0]))
+PYEOF
+    then pass "spectrogram times and dB as scipy's ($(cat "$T/pyout"))"; else fail "spectrogram against scipy: $(tail -n 3 "$T/pyout")"; fi
+else
+    echo "skip: no scipy in $PY (spectrogram times)"
+fi
 expect_exit 1 "every channel constant, --plot" "$H" psd "$T/const.csv" --plot "$T/cplots"
 for f in psd ccdf spectrogram; do
     [ -s "$T/cplots/$f.png" ] && pass "every channel constant: $f.png" || fail "every channel constant: $f.png missing"

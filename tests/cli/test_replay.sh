@@ -647,6 +647,21 @@ if grep -q "at 4000 Hz the stance detector's ring of [0-9]* samples cuts its win
     pass "a 4 kHz log: the cut detector window is said"; else fail "4 kHz: $(cat "$T/w4k.err")"; fi
 "$H" replay "$T/w4k.bin" --rate 1900 > /dev/null 2> "$T/w4k19.err"
 if grep -q "ring of .* cuts" "$T/w4k19.err"; then fail "the window still cut at the rate it names"; else pass "resampled to the rate it names: no cut"; fi
+# the advice never names a rate --rate refuses (1 to 100000 Hz) or one that
+# still cuts: a window no rate fits advised "--rate 0" (the cli review), and
+# a long window, which alone caps the rate at 64 / window_s, "--rate 62"
+# (half window plus minimum run only), still cut at 62 Hz
+"$H" replay vectors/walk.bin --param window_s=1e30 > /dev/null 2> "$T/wbig.err"
+if grep -q "ring of .* cuts" "$T/wbig.err" && ! grep -q -- "--rate [0-9]" "$T/wbig.err" &&
+    grep -q "no rate --rate accepts fits them: shorten window_s or min_zupt_s (--param)" "$T/wbig.err"; then
+    pass "window_s=1e30: the cut said, no rate named"; else fail "window_s=1e30: $(cat "$T/wbig.err")"; fi
+"$H" replay vectors/walk.bin --param window_s=2 > /dev/null 2> "$T/w2s.err"
+r2=$(sed -n 's/.*resample (--rate \([0-9]*\)).*/\1/p' "$T/w2s.err")
+if [ -n "$r2" ] && [ "$r2" -ge 1 ]; then
+    "$H" replay vectors/walk.bin --param window_s=2 --rate "$r2" > /dev/null 2> "$T/w2r.err"
+    if grep -q "ring of .* cuts" "$T/w2r.err"; then fail "window_s=2: still cut at the rate it names ($r2 Hz)"
+    else pass "window_s=2: resampled to the rate it names ($r2 Hz), no cut"; fi
+else fail "window_s=2: no rate named: $(cat "$T/w2s.err")"; fi
 
 # --- the 2-D path of replay --plot (and of live's plot) spans the same
 # distance on both axes: with equal units alone, a straight walk was a strip a
@@ -661,6 +676,21 @@ if awk '/^set [xy]range/ { r = $3; gsub(/[\[\]]/, "", r) } /^set xrange/ { split
 else
     fail "path plot ranges: $(grep range "$T/gp.txt" | tr '\n' ' ')"
 fi
+# gnuplot failing partway left its half-drawn PNG behind beside "failed to
+# write" (the plots review): the file it started is removed, and said; a file
+# that was there before and that gnuplot never opened is left alone
+fake_gnuplot_fail "$T/failgp"
+rm -f "$T/half.png"
+expect_exit 3 "gnuplot fails partway" env PATH="$T/failgp:$PATH" "$H" replay "$T/straight.bin" --plot "$T/half.png" --quiet
+expect_err "gnuplot failed to write $T/half.png; the partial file was removed" "the partial picture's removal is said"
+if [ -e "$T/half.png" ]; then fail "a half-drawn PNG was left behind"; else pass "no half-drawn PNG left behind"; fi
+echo "an older picture" >"$T/old.png"
+expect_exit 3 "gnuplot fails before its output" env GP_TOUCH=0 PATH="$T/failgp:$PATH" "$H" replay "$T/straight.bin" --plot "$T/old.png" --quiet
+if [ "$(cat "$T/old.png" 2>/dev/null)" = "an older picture" ] && ! grep -q "removed" "$T/err"; then
+    pass "a file gnuplot never opened is left as it was"; else fail "the older picture was touched: $(cat "$T/err")"; fi
+expect_exit 3 "gnuplot fails partway over an older picture" env PATH="$T/failgp:$PATH" "$H" replay "$T/straight.bin" --plot "$T/old.png" --quiet
+if [ ! -e "$T/old.png" ] && grep -q "the partial file was removed" "$T/err"; then
+    pass "an older picture gnuplot began to overwrite is removed, said"; else fail "overwritten picture: $(cat "$T/err")"; fi
 
 # --- a log that stops at a bad line says so in the JSON too (complete,
 # error), as info's and psd's: only the exit status said it
