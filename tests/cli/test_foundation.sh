@@ -149,21 +149,19 @@ fi
 
 # --- an importer without time stamps says which rate it assumed (docs/robustness.md):
 # an ADIS16405 log (index / 100 Hz) of another rate would otherwise be read at
-# 100 Hz without a word (the unseen review: the OpenShoe 820 Hz reader warned, the ADIS one did not)
+# 100 Hz without a word (the unseen review: the OpenShoe 820 Hz reader warned,
+# the ADIS one did not), and so was a square2 log (a sample counter, no time)
+assumed_rate() { # name file warning
+    expect_exit 0 "info on the $1 log" "$H" info "$2"
+    expect_err "$3" "the $1 rate is said to be assumed"
+    expect_exit 0 "info on the $1 log with --input-rate" "$H" info "$2" --input-rate 200
+    if grep -q "assuming" "$T/err"; then fail "$1 --input-rate given: no assumption to warn about"; else pass "$1 --input-rate given: no warning"; fi
+    expect_out "200.000 Hz (nominal)" "--input-rate sets the $1 rate"
+}
 awk 'BEGIN { print "gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g"; for (k = 0; k < 400; k++) print "0.05,-0.3,0.7,-0.0067,0,-1.0157" }' >"$T/adis.csv"
-expect_exit 0 "info on an ADIS16405 log" "$H" info "$T/adis.csv"
-expect_err "no time stamps; assuming the ADIS16405 data set rate of 100 Hz (give --input-rate)" "the ADIS rate is said to be assumed"
-expect_exit 0 "info on an ADIS16405 log with --input-rate" "$H" info "$T/adis.csv" --input-rate 200
-if grep -q "assuming" "$T/err"; then fail "--input-rate given: no assumption to warn about"; else pass "--input-rate given: no warning"; fi
-expect_out "200.000 Hz (nominal)" "--input-rate sets the ADIS rate"
-# the square2 reader (a sample counter, no time) assumed its 100 Hz without a
-# word as well (the unseen review, after the ADIS fix)
+assumed_rate ADIS16405 "$T/adis.csv" "no time stamps; assuming the ADIS16405 data set rate of 100 Hz (give --input-rate)"
 awk 'BEGIN { print "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps,q0,q1,q2,q3"; for (k = 0; k < 400; k++) print k ",-0.07,0,-9.82,0.001,-0.002,-0.001,1,0,0,0" }' >"$T/square2.csv"
-expect_exit 0 "info on a square2 log" "$H" info "$T/square2.csv"
-expect_err "no time stamps; assuming the ZUPT-aided-INS square2 data set rate of 100 Hz (give --input-rate)" "the square2 rate is said to be assumed"
-expect_exit 0 "info on a square2 log with --input-rate" "$H" info "$T/square2.csv" --input-rate 200
-if grep -q "assuming" "$T/err"; then fail "square2 --input-rate given: no assumption to warn about"; else pass "square2 --input-rate given: no warning"; fi
-expect_out "200.000 Hz (nominal)" "--input-rate sets the square2 rate"
+assumed_rate square2 "$T/square2.csv" "no time stamps; assuming the ZUPT-aided-INS square2 data set rate of 100 Hz (give --input-rate)"
 
 # --- a foreign recording cut off mid-line (docs/log-format.md: its last line
 # is ignored with a warning): every reader warns, the streaming ones (convert,
