@@ -485,6 +485,17 @@ static void predict_weights(fnav_ukf_t *f, double alpha, double beta, int beta_a
                      FNAV_OK);
 }
 
+/* fnav_ukf_init with the default configuration but the weights w =
+ * (alpha, beta, kappa). */
+static fnav_status_t init_weights(fnav_ukf_t *f, const double w[3])
+{
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    c.alpha = (fnav_real_t)w[0];
+    c.beta = (fnav_real_t)w[1];
+    c.kappa = (fnav_real_t)w[2];
+    return fnav_ukf_init(f, &c);
+}
+
 /* The unscented weights. The predicted covariance is S + (beta - alpha^2)
  * m m^T with S = sum_i Wi D_i D_i^T (fnav_ukf.c); with n + lambda > 0 (Wi >
  * 0) every term is positive semi-definite exactly when beta >= alpha^2, and
@@ -512,20 +523,12 @@ static void test_weights_psd(void **state)
     assert_true(f.gamma == fnav_sqrt(FNAV_R(15.0)));
     assert_true(f.w0m == FNAV_R(0.0) && f.w0c == FNAV_R(2.0) && f.wi == FNAV_R(0.5) / FNAV_R(15.0));
     for (k = 0; k < sizeof refused / sizeof refused[0]; k++) {
-        c = fnav_ukf_config_default;
-        c.alpha = (fnav_real_t)refused[k][0];
-        c.beta = (fnav_real_t)refused[k][1];
-        c.kappa = (fnav_real_t)refused[k][2];
-        if (fnav_ukf_init(&f, &c) != FNAV_E_CONFIG) {
+        if (init_weights(&f, refused[k]) != FNAV_E_CONFIG) {
             fail_msg("alpha %g beta %g kappa %g: accepted", refused[k][0], refused[k][1], refused[k][2]);
         }
     }
     for (k = 0; k < sizeof accepted / sizeof accepted[0]; k++) {
-        c = fnav_ukf_config_default;
-        c.alpha = (fnav_real_t)accepted[k][0];
-        c.beta = (fnav_real_t)accepted[k][1];
-        c.kappa = (fnav_real_t)accepted[k][2];
-        if (fnav_ukf_init(&f, &c) != FNAV_OK) {
+        if (init_weights(&f, accepted[k]) != FNAV_OK) {
             fail_msg("alpha %g beta %g kappa %g: refused", accepted[k][0], accepted[k][1], accepted[k][2]);
         }
     }
