@@ -379,6 +379,24 @@ static void test_rotated_accel_noise(void **state)
     }
 }
 
+/* The unscented second-order case: the bias model and the noise off, every
+ * initial sd negligible but the attitude's about x (s_rad) and the
+ * velocity's (sv_mps). */
+static void second_order_case(fnav_ukf_config_t *c, fnav_ukf_init_sd_t *sd, double s_rad, double sv_mps)
+{
+    int i;
+    c->bias_model = FNAV_BIAS_OFF;
+    for (i = 0; i < 3; i++) {
+        c->accel_noise_mps2_rthz[i] = FNAV_R(0.0);
+        c->gyro_noise_rps_rthz[i] = FNAV_R(0.0);
+        sd->att_rad[i] = FNAV_R(1.0e-9);
+        sd->gyro_bias_rps[i] = FNAV_R(1.0e-9);
+        sd->accel_bias_mps2[i] = FNAV_R(1.0e-9);
+    }
+    sd->att_rad[0] = (fnav_real_t)s_rad;
+    sd->vel_mps = (fnav_real_t)sv_mps;
+}
+
 /* The unscented transform's second-order terms, against the textbook
  * transform computed here in double (Julier & Uhlmann; Wan & van der Merwe
  * 2000: sigma points x0 +- gamma sqrt(P) columns, gamma^2 = n + lambda,
@@ -404,18 +422,8 @@ static void test_unscented_second_order(void **state)
     fnav_ukf_init_sd_t sd = sd_default();
     const double s = 0.2, sv = 1e-3, dt = 0.01;
     double g, n, lambda, w0m, w0c, wi, gam, th, yz, yy, mean_z = 0.0, var_z, var_y, cov_yz;
-    int i;
     (void)state;
-    c.bias_model = FNAV_BIAS_OFF;
-    for (i = 0; i < 3; i++) {
-        c.accel_noise_mps2_rthz[i] = FNAV_R(0.0);
-        c.gyro_noise_rps_rthz[i] = FNAV_R(0.0);
-        sd.att_rad[i] = FNAV_R(1.0e-9);
-        sd.gyro_bias_rps[i] = FNAV_R(1.0e-9);
-        sd.accel_bias_mps2[i] = FNAV_R(1.0e-9);
-    }
-    sd.att_rad[0] = (fnav_real_t)s;
-    sd.vel_mps = (fnav_real_t)sv;
+    second_order_case(&c, &sd, s, sv);
     g = (double)c.strapdown.gravity_mps2;
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
     assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
@@ -460,21 +468,11 @@ static void predict_weights(fnav_ukf_t *f, double alpha, double beta, int beta_a
 {
     fnav_ukf_config_t c = fnav_ukf_config_default;
     fnav_ukf_init_sd_t sd = sd_default();
-    int i;
-    c.bias_model = FNAV_BIAS_OFF;
+    second_order_case(&c, &sd, 0.2, 1.0e-3);
     c.alpha = (fnav_real_t)alpha;
     if (!beta_after_init) {
         c.beta = (fnav_real_t)beta;
     }
-    for (i = 0; i < 3; i++) {
-        c.accel_noise_mps2_rthz[i] = FNAV_R(0.0);
-        c.gyro_noise_rps_rthz[i] = FNAV_R(0.0);
-        sd.att_rad[i] = FNAV_R(1.0e-9);
-        sd.gyro_bias_rps[i] = FNAV_R(1.0e-9);
-        sd.accel_bias_mps2[i] = FNAV_R(1.0e-9);
-    }
-    sd.att_rad[0] = FNAV_R(0.2);
-    sd.vel_mps = FNAV_R(1.0e-3);
     assert_int_equal(fnav_ukf_init(f, &c), FNAV_OK);
     if (beta_after_init) {
         f->cfg.beta = (fnav_real_t)beta;
