@@ -95,8 +95,8 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
     res.meta.has_seq = 0;  /* nor the sensor's counter: its seq is a running index (the .bin said "the
                               sensor's own counter", and info counted no drops; a review, 2026-11-29) */
     if (raw.n > 0) {
-        (void)in_window(wd, raw.t_ns[0]); /* the window counts from the input's first sample */
-        wd->kept = 0;
+        wd->t0_ns = raw.t_ns[0]; /* the window counts from the input's first sample */
+        wd->have_t0 = 1;
     }
     hx_log_free(&raw);
     w = hx_writer_open(a->pos[1], to, &res.meta, 0, err, sizeof err);
