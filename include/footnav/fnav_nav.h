@@ -9,15 +9,18 @@
  * @code
  *   fnav_nav_t nav;                 // 11.7 KB in float32 (9 KB with the firmware's options), no allocation
  *   fnav_nav_config_t cfg = fnav_nav_config_default;
- *   fnav_nav_init(&nav, &cfg);
+ *   if (fnav_nav_init(&nav, &cfg) != FNAV_OK) ...   // FNAV_E_CONFIG: a bad configuration
  *   for each sample s:
- *       fnav_nav_push(&nav, &s);            // FNAV_E_NANINF / _RANGE / _TIME: rejected, counted
+ *       st = fnav_nav_push(&nav, &s);       // FNAV_E_NANINF / _RANGE / _TIME: rejected, counted
  *       while (fnav_nav_pop(&nav, &frame) == FNAV_OK) write(frame);
  *   fnav_nav_finish(&nav);
  *   while (fnav_nav_pop(&nav, &frame) == FNAV_OK) write(frame);
  * @endcode
  * or fnav_nav_step(&nav, &s, &frame), which pushes one sample and returns the
- * newest frame (firmware that only wants the latest state).
+ * newest frame (firmware that only wants the latest state). The statuses
+ * are FNAV_WARN_UNUSED, which GCC does not let a (void) cast silence: keep
+ * them in a variable. A complete program over a port: docs/firmware.md,
+ * "Porting to a new board".
  *
  * Latency: the SHOE window is centred, so a sample's statistic is known h =
  * (W - 1) / 2 samples after it, and the stance decision also waits for the

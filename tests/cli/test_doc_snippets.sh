@@ -5,8 +5,12 @@
 # (x and y: one channel's samples each, n of them; return 0 on success, a
 # negative value on an error), compiled with the project's warning flags in
 # the float and the double build against the core sources and run on n =
-# 100,000 uniform samples in [-1, 1]. A block that is not meant to compile
-# must not be tagged c. Skipped visibly without a C compiler.
+# 100,000 uniform samples in [-1, 1]. A block with a main() is a whole
+# program (the port example of docs/firmware.md): compiled as it is and run
+# with a CSV log on standard input (t,ax,ay,az,gx,gy,gz with a header line:
+# 400 samples at 200 Hz of a sensor at rest, +z up); it must exit 0. A block
+# that is not meant to compile must not be tagged c. Skipped visibly
+# without a C compiler.
 set -u
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
@@ -75,6 +79,8 @@ int main(void)
 }
 EOF
 
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 400; k++) printf "%.3f,0.01,-0.02,9.81,0.001,0.002,-0.001\n", k / 200 }' >"$T/rest.csv"
+
 for build in float double; do
     defs=""
     [ "$build" = double ] && defs="-DFNAV_USE_DOUBLE=1"
@@ -86,10 +92,14 @@ for build in float double; do
     i=1
     while [ "$i" -le "$count" ]; do
         where=$(cat "$T/snip_$i.where")
-        cat "$T/wrap_head.h" "$T/snip_$i.c" "$T/wrap_tail.h" >"$T/$build/s$i.c"
+        if grep -q 'int main(' "$T/snip_$i.c"; then
+            cp "$T/snip_$i.c" "$T/$build/s$i.c"
+        else
+            cat "$T/wrap_head.h" "$T/snip_$i.c" "$T/wrap_tail.h" >"$T/$build/s$i.c"
+        fi
         # shellcheck disable=SC2086
         if "$CC" $WARN $defs -O1 -Iinclude -o "$T/$build/s$i" "$T/$build/s$i.c" "$T/$build"/*.o -lm >"$T/err" 2>&1; then
-            if "$T/$build/s$i" >"$T/out" 2>"$T/err"; then
+            if "$T/$build/s$i" <"$T/rest.csv" >"$T/out" 2>"$T/err"; then
                 pass "$where: the C example compiles and runs ($build)"
             else
                 fail "$where: the C example compiles but returns an error ($build)"; cat "$T/err"
