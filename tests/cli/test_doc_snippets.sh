@@ -16,12 +16,13 @@ T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 . "$(dirname "$0")/lib.sh"
 cd "$(dirname "$0")/../.." || exit 1
-CC=${CC:-cc}
-if ! command -v "$CC" >/dev/null 2>&1; then
+CC=${CC:-cc} # may hold words, e.g. "ccache gcc"
+# shellcheck disable=SC2086
+if ! command -v ${CC%% *} >/dev/null 2>&1; then
     echo "SKIP test_doc_snippets.sh: no C compiler ($CC) found"
     exit 0
 fi
-# the WARN flags of the Makefile
+# the WARN flags of the Makefile (keep the two in step)
 WARN="-std=c99 -pedantic -Wall -Wextra -Wmissing-prototypes -Wdouble-promotion -Wshadow -Wstrict-prototypes -Werror"
 
 # one file per block: $T/snip_N.c holds the block, $T/snip_N.where its file:line
@@ -86,7 +87,7 @@ for build in float double; do
     [ "$build" = double ] && defs="-DFNAV_USE_DOUBLE=1"
     mkdir -p "$T/$build"
     # shellcheck disable=SC2086
-    if ! (cd "$T/$build" && "$CC" $WARN $defs -O0 -I"$OLDPWD/include" -c "$OLDPWD"/src/*.c) >"$T/err" 2>&1; then
+    if ! (cd "$T/$build" && $CC $WARN $defs -O0 -I"$OLDPWD/include" -c "$OLDPWD"/src/*.c) >"$T/err" 2>&1; then
         fail "the core sources do not compile ($build)"; cat "$T/err"; continue
     fi
     i=1
@@ -98,7 +99,7 @@ for build in float double; do
             cat "$T/wrap_head.h" "$T/snip_$i.c" "$T/wrap_tail.h" >"$T/$build/s$i.c"
         fi
         # shellcheck disable=SC2086
-        if "$CC" $WARN $defs -O1 -Iinclude -o "$T/$build/s$i" "$T/$build/s$i.c" "$T/$build"/*.o -lm >"$T/err" 2>&1; then
+        if $CC $WARN $defs -O1 -Iinclude -o "$T/$build/s$i" "$T/$build/s$i.c" "$T/$build"/*.o -lm >"$T/err" 2>&1; then
             if "$T/$build/s$i" <"$T/rest.csv" >"$T/out" 2>"$T/err"; then
                 pass "$where: the C example compiles and runs ($build)"
             else
@@ -110,4 +111,5 @@ for build in float double; do
         i=$((i + 1))
     done
 done
-[ "$fails" -eq 0 ] || exit 1
+if [ "$fails" -ne 0 ]; then echo "test_doc_snippets.sh: $fails failure(s)"; exit 1; fi
+echo "test_doc_snippets.sh: all passed"
