@@ -186,6 +186,14 @@ static void end_short_period(fnav_align_t *al)
 static void add_sample(fnav_align_period_t *p, const fnav_sample_t *s, fnav_real_t lstat)
 {
     int i;
+    if (p->n >= FNAV_ALIGN_PERIOD_MAX) {
+        /* a period that long has stamps that do not advance (a sensor stuck
+         * on one stamp: its duration stays 0 and it never ends); its count,
+         * a long of 32 bits on the Cortex-M4F, overflowed after 2^31
+         * samples (a review, 2026-11-29; test_align test_stuck_stamp_period):
+         * start again with this sample */
+        reset_period(p);
+    }
     if (p->n == 0) {
         p->a_ref = fnav_vec3_from(s->accel_mps2);
         p->g_ref = fnav_vec3_from(s->gyro_rps);

@@ -111,6 +111,7 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
         p[b] = 0;
     }
     nav->cfg = *cfg;
+    nav->t_in_ns = INT64_MIN; /* no sample yet: none is behind it */
     sc = cfg->stance;
     sc.gravity_mps2 = cfg->gravity_mps2;
     ac = cfg->align;
@@ -173,7 +174,13 @@ fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample)
         nav->health |= FNAV_HEALTH_RANGE;
         return st;
     }
-    if (nav->have_in && sample->t_ns < nav->t_in_ns) {
+    if (sample->t_ns < nav->t_in_ns && nav->back_run + 1u < (uint32_t)FNAV_NAV_TIME_RESYNC) {
+        /* a run of FNAV_NAV_TIME_RESYNC samples behind the last accepted
+         * one is a new timeline (a corrupted stamp far ahead, a restarted
+         * timer), whose first sample is accepted below: until 2026-11-29
+         * one stamp 1 h ahead had every later sample rejected for the rest
+         * of the run (a review; test_nav test_time_glitch_forward) */
+        nav->back_run++;
         nav->stats.time_back++;
         nav->health |= FNAV_HEALTH_TIME_BACK;
         return FNAV_E_TIME;
@@ -182,7 +189,7 @@ fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample)
     if (st != FNAV_OK) {
         return st;
     }
-    nav->have_in = 1;
+    nav->back_run = 0;
     nav->t_in_ns = sample->t_ns;
     nav->stats.samples++;
     return FNAV_OK;
@@ -451,9 +458,11 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
         if (dt == FNAV_R(0.0)) {
             nav->stats.duplicates++;
             nav->health |= FNAV_HEALTH_DUPLICATE;
-        } else if (dt > nav->cfg.max_gap_s && dt > FNAV_R(1.5) * nominal) {
+        } else if (dt < FNAV_R(0.0) || (dt > nav->cfg.max_gap_s && dt > FNAV_R(1.5) * nominal)) {
             /* (the second test for an estimated rate whose interval is
-             * above max_gap_s: init refuses that with a configured rate) */
+             * above max_gap_s: init refuses that with a configured rate;
+             * a negative interval is the step back to a new timeline that
+             * fnav_nav_push accepted: as unknown as a jump forward) */
             nav->stats.time_jumps++;
             nav->health |= FNAV_HEALTH_TIME_JUMP;
             dt = nominal; /* the motion inside the jump is unknown */

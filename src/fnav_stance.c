@@ -347,9 +347,13 @@ static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
         } else if (st->jerk_long_left > 0) {
             st->jerk_long_left--;
         }
-        if (o->sample.t_ns - st->prev_t_ns >= JERK_SPAN_NS) {
+        if (o->sample.t_ns - st->prev_t_ns >= JERK_SPAN_NS || o->sample.t_ns < st->prev_t_ns) {
             /* a time jump the history's microsecond stamps (modulo 2^32)
-             * cannot span: the foot-strike search must not look before it
+             * cannot span, or a step back to a new timeline (fnav_nav_push
+             * takes one after FNAV_NAV_TIME_RESYNC samples behind; its
+             * stamps' differences with the old wrapped: a strike 3695 s
+             * early after a step back of 10 min, test_foot_strike_time_jump):
+             * the foot-strike search must not look before it
              * (the motion inside is unknown); -1 is below every jerk and
              * every half maximum, so it is never the largest nor chosen */
             int b;

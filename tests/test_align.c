@@ -421,6 +421,48 @@ static void test_zero_mean_period(void **state)
     FNAV_ASSERT_CLOSE(fnav_vec3_norm(al.result.accel_bias_mps2), fn - k_g, 1e-4, 0.0);
 }
 
+/* A sensor stuck on one time stamp (frozen, repeating its last sample) in a
+ * still period: the period's duration stays 0, so it never ends, and its
+ * sample count (a long: 32 bits on the Cortex-M4F) grew without bound, to a
+ * signed overflow after 2^31 samples (24.9 days at 1 kHz; a review of the
+ * core, 2026-11-29). A period now restarts at FNAV_ALIGN_PERIOD_MAX
+ * samples (the stamps say no time passed), so the count stays far inside
+ * 32 bits and the alignment completes on the real stillness that follows.
+ * The count is set near the end directly (2^30 pushes would take minutes). */
+static void test_stuck_stamp_period(void **state)
+{
+    fnav_align_t al;
+    fnav_align_config_t c = fnav_align_config_default;
+    fnav_status_t st = FNAV_AGAIN;
+    long k;
+    (void)state;
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
+    for (k = 0; k < 100; k++) {
+        fnav_sample_t s = still_sample(k, 200.0, 0.002);
+        s.t_ns = 1000000000; /* stuck */
+        assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_AGAIN);
+    }
+    assert_true(al.cur.n == 100);
+    al.cur.n = 2147483647L - 1L; /* a 32-bit long's largest, less one */
+    al.cur.sum_log_stat = (fnav_real_t)(2.0 * (double)al.cur.n); /* log10(100) each: no ratio break */
+    for (k = 100; k < 102; k++) {
+        fnav_sample_t s = still_sample(k, 200.0, 0.002);
+        s.t_ns = 1000000000;
+        assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_AGAIN);
+        assert_true(al.cur.n > 0 && al.cur.n <= 2147483647L);
+    }
+    assert_true(al.cur.n <= 2);
+    for (k = 102; k < 5000 && st == FNAV_AGAIN; k++) {
+        fnav_sample_t s = still_sample(k, 200.0, 0.002);
+        s.t_ns += 1000000000 - 510000000; /* on from the stuck stamp, 5 ms apart */
+        st = fnav_align_push(&al, &s, 1, FNAV_R(100.0));
+    }
+    assert_int_equal(st, FNAV_OK);
+    assert_true(al.result.samples > 990 && al.result.samples < 1010); /* max_still_s 5 s at 200 Hz */
+    FNAV_ASSERT_CLOSE(al.result.gyro_mean_rps.v[0], 0.004, 1e-4, 0.0);
+    FNAV_ASSERT_CLOSE(al.result.gyro_mean_rps.v[1], -0.002, 1e-6, 0.0);
+}
+
 /* A still period whose mean |f| is off gravity by more than 25 %
  * (FNAV_ALIGN_GRAVITY_TOL) is refused: 1 s of zeros (a sensor not yet
  * running) and 2 s of real stillness in one period average |f| = 2/3 of
@@ -481,6 +523,7 @@ int main(void)
         cmocka_unit_test(test_short_period_fallback),
         cmocka_unit_test(test_gyro_bias_posterior),
         cmocka_unit_test(test_zero_mean_period),
+        cmocka_unit_test(test_stuck_stamp_period),
         cmocka_unit_test(test_implausible_gravity),
     };
     return cmocka_run_group_tests_name("align", tests, NULL, NULL);

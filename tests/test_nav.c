@@ -161,10 +161,13 @@ static void test_stream_contract(void **state)
             nav.stats.range_inputs = copy.stats.range_inputs;
             nav.stats.time_back = copy.stats.time_back;
             nav.health = copy.health;
+            assert_int_equal(nav.back_run, 1u); /* the run behind, toward FNAV_NAV_TIME_RESYNC */
+            nav.back_run = copy.back_run;
             assert_memory_equal(&nav, &copy, sizeof nav);
             nav.stats.nan_inputs = 1;
             nav.stats.range_inputs = 2;
             nav.stats.time_back = 1;
+            nav.back_run = 1u; /* the next accepted sample ends the run */
             nav.health |= FNAV_HEALTH_NANINF | FNAV_HEALTH_RANGE | FNAV_HEALTH_TIME_BACK;
         }
     }
@@ -827,6 +830,62 @@ static void test_align_time_jump(void **state)
     assert_true(first_aligned_s > 6.3 + 4.9);
 }
 
+/* One corrupted time stamp far ahead (a bit flip in a sensor's own timer,
+ * here +1 h at sample 300 of a still foot at 200 Hz) must not end the run:
+ * until 2026-11-29 (the core review) every later sample was "going
+ * backwards" against it, rejected with FNAV_E_TIME, and the navigator
+ * produced no frame for the rest of the run (299 of 299 rejected). Now
+ * FNAV_NAV_TIME_RESYNC consecutive samples behind the last accepted one
+ * are a new timeline: the first FNAV_NAV_TIME_RESYNC - 1 are rejected and
+ * counted, the next is accepted, and the interval back to it is a time jump
+ * (integrated as one nominal interval), as the glitch's own was. A single
+ * sample behind is still rejected (test_stream_contract). */
+static void test_time_glitch_forward(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    long k, n = 1200, rejected = 0, frames = 0;
+    int64_t t_last = -1;
+    (void)state;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    for (k = 0; k < n; k++) {
+        fnav_sample_t s = still(k);
+        fnav_status_t st;
+        if (k == 300) {
+            s.t_ns += (int64_t)3600 * 1000000000;
+        }
+        st = fnav_nav_push(&nav, &s);
+        if (st == FNAV_E_TIME) {
+            rejected++;
+        } else {
+            assert_int_equal(st, FNAV_OK);
+        }
+        while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+            frames++;
+            t_last = fr.t_ns;
+        }
+    }
+    fnav_nav_finish(&nav);
+    while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+        frames++;
+        t_last = fr.t_ns;
+    }
+    assert_int_equal(rejected, (long)FNAV_NAV_TIME_RESYNC - 1);
+    assert_int_equal(nav.stats.time_back, FNAV_NAV_TIME_RESYNC - 1u);
+    assert_int_equal(frames, n - rejected);
+    assert_int_equal(nav.stats.frames, (uint32_t)(n - rejected));
+    assert_true(t_last == still(n - 1).t_ns);
+    assert_int_equal(nav.stats.time_jumps, 2u); /* forward to the glitch, back from it */
+    assert_true((nav.health & (FNAV_HEALTH_TIME_BACK | FNAV_HEALTH_TIME_JUMP)) ==
+                (FNAV_HEALTH_TIME_BACK | FNAV_HEALTH_TIME_JUMP));
+    /* the foot stood still throughout: aligned and at the origin */
+    assert_true(nav.aligned);
+    assert_true((fr.flags & FNAV_FRAME_ZUPT) != 0u);
+    assert_true(fabs((double)fr.pos_m[0]) < 1e-3 && fabs((double)fr.pos_m[1]) < 1e-3 &&
+                fabs((double)fr.pos_m[2]) < 1e-3);
+}
+
 /* A renewal on a still frame: a foot that stands 11 s. The alignment
  * completes at 5 s (max_still_s) and the renewal's still period, starting
  * at the next sample, reaches max_still_s about 5 s later while the foot
@@ -1363,6 +1422,7 @@ int main(void)
         cmocka_unit_test(test_realign_x_vertical),
         cmocka_unit_test(test_realign_near_lock),
         cmocka_unit_test(test_align_time_jump),
+        cmocka_unit_test(test_time_glitch_forward),
         cmocka_unit_test(test_realign_still_frame),
         cmocka_unit_test(test_sizes),
         cmocka_unit_test(test_stance_mids),

@@ -893,10 +893,16 @@ static void test_rest_run_long(void **state)
  * the jump, at most its first sample. A 10-minute jump changes nothing. */
 static void test_foot_strike_time_jump(void **state)
 {
-    static const double jumps_s[2] = { 600.0, 4400.0 };
+    /* the third, a step back of 10 min: the new timeline fnav_nav_push
+     * accepts after FNAV_NAV_TIME_RESYNC samples behind (a corrupted stamp
+     * far ahead, a restarted timer). Until 2026-11-29 (a review of the
+     * core) the search looked back across it and the strike came out
+     * 3695 s before the stance, the stamps' difference wrapped modulo
+     * 2^32 us; now a step back clears the history as a long jump does. */
+    static const double jumps_s[3] = { 600.0, 4400.0, -600.0 };
     int pass;
     (void)state;
-    for (pass = 0; pass < 2; pass++) {
+    for (pass = 0; pass < 3; pass++) {
         static fnav_stance_t st;
         fnav_stance_config_t c = fnav_stance_config_default;
         const int64_t jump_ns = (int64_t)(jumps_s[pass] * 1e9);
@@ -923,7 +929,7 @@ static void test_foot_strike_time_jump(void **state)
             }
             assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
             while (fnav_stance_pop(&st, &o) == FNAV_OK) {
-                if ((o.events & FNAV_STANCE_EV_FOOT_STRIKE) != 0u && o.sample.t_ns > jump_ns) {
+                if ((o.events & FNAV_STANCE_EV_FOOT_STRIKE) != 0u && o.sample.seq >= 299u) {
                     strikes++;
                     assert_true(o.fs_t_ns <= o.swing_t1_ns);
                     if (pass == 0) {

@@ -75,6 +75,10 @@ extern const fnav_align_config_t fnav_align_config_default;
 
 /** Blocks of the batch-means estimate of the gyro mean's uncertainty. */
 #define FNAV_ALIGN_BLOCKS 8
+/** Samples after which a still period starts again (its stamps cannot have
+ *  advanced: 2^30 samples are 74 h at 4 kHz, and max_still_s ends a period
+ *  long before); keeps the period's longs inside 32 bits. */
+#define FNAV_ALIGN_PERIOD_MAX (1L << 30)
 
 /** Result of an alignment. */
 typedef struct {

@@ -89,6 +89,16 @@
 #define FNAV_IMUERR_FLICKER_POLES 12
 #endif
 
+/** Consecutive samples stamped before the last accepted one after which the
+ *  navigator takes the timeline as restarted (fnav_nav_push): the first
+ *  FNAV_NAV_TIME_RESYNC - 1 are rejected (FNAV_E_TIME), the next is
+ *  accepted and the interval back to it is a time jump. Without it one
+ *  corrupted stamp far ahead made every later sample "backwards" for the
+ *  rest of the run. 16: 80 ms at 200 Hz, far longer than a glitch. */
+#ifndef FNAV_NAV_TIME_RESYNC
+#define FNAV_NAV_TIME_RESYNC 16
+#endif
+
 /** Largest sample magnitude the streaming Allan and Welch estimators accept
  *  (beyond it a push returns FNAV_E_RANGE and the sample is ignored). 1e6
  *  covers every inertial sensor in SI units with room to spare, and keeps

@@ -48,6 +48,10 @@
 #error "FNAV_IMUERR_FLICKER_POLES must be in 2..64"
 #endif
 
+#if (FNAV_NAV_TIME_RESYNC < 2) || (FNAV_NAV_TIME_RESYNC > 1000000)
+#error "FNAV_NAV_TIME_RESYNC must be in 2..1000000 (1 would accept every stamp going backwards)"
+#endif
+
 /* FNAV_INPUT_MAX_ABS is a floating constant, which neither the preprocessor
  * nor a C99 constant expression can compare; keep it in (0, 1e12]
  * (fnav_config.h). */

@@ -37,8 +37,12 @@
  * max_gap_s (and than 1.5 nominal intervals: init refuses a max_gap_s below
  * that with a configured rate) is counted as a time jump and integrated as
  * one nominal interval (the motion inside it is unknown); time going backwards is rejected with
- * FNAV_E_TIME and the sample ignored. NaN/Inf samples are rejected with
- * FNAV_E_NANINF. Nothing of the state changes on a rejected sample.
+ * FNAV_E_TIME and the sample ignored, unless FNAV_NAV_TIME_RESYNC (16)
+ * samples in a row are behind the last accepted one: the last of them is
+ * accepted as a new timeline (one corrupted stamp far ahead, a restarted
+ * sensor timer), and the interval back to it is a time jump. NaN/Inf samples are rejected with
+ * FNAV_E_NANINF. Nothing of the state changes on a rejected sample but
+ * the counters (stats, health, the run of samples behind).
  */
 #ifndef FNAV_NAV_H
 #define FNAV_NAV_H
@@ -148,9 +152,10 @@ typedef struct {
     int aligned;
     int have_prev;          /**< a sample was processed */
     int64_t t_prev_ns;      /**< time of the last processed sample */
-    int have_in;
+    uint32_t back_run;      /**< consecutive samples rejected for a stamp behind t_in_ns (FNAV_NAV_TIME_RESYNC;
+                                 in the place of a flag "a sample was accepted", which t_in_ns now says) */
     uint32_t undone_run;    /**< consecutive undone predictions (here: no padding before t_in_ns) */
-    int64_t t_in_ns;        /**< time of the last accepted sample */
+    int64_t t_in_ns;        /**< time of the last accepted sample; INT64_MIN before the first (no stamp is behind it) */
     uint32_t health;        /**< FNAV_HEALTH_* bits */
     fnav_nav_stats_t stats;
     fnav_nav_frame_t last;  /**< newest frame */
@@ -177,7 +182,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_con
  * Accept one sample (b frame, SI units).
  * @return FNAV_OK; FNAV_E_NANINF, FNAV_E_RANGE (a value beyond
  *         FNAV_INPUT_MAX_ABS, a glitch no sensor reads, or a stamp beyond
- *         FNAV_T_NS_MAX) or FNAV_E_TIME: sample rejected (counted, state
+ *         FNAV_T_NS_MAX) or FNAV_E_TIME (a stamp behind the last accepted
+ *         one, but the FNAV_NAV_TIME_RESYNC-th in a row, which is
+ *         accepted): sample rejected (counted, state
  *         unchanged); FNAV_E_STATE after fnav_nav_finish(), checked before
  *         the sample, whatever it holds: nothing counted, the navigator
  *         unchanged; FNAV_E_STATE also for a good sample when frames were

@@ -184,7 +184,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_stance_init(fnav_stance_t *st, const fnav_st
 
 /**
  * Store one sample. The caller checks it first (finite values, time not going
- * backwards); the sample is copied.
+ * backwards but at a new timeline, such as fnav_nav_push accepts after
+ * FNAV_NAV_TIME_RESYNC samples behind: the gait-event search does not look
+ * back across that step); the sample is copied.
  * @return FNAV_OK; FNAV_E_ARG on NULL; FNAV_E_STATE after fnav_stance_finish()
  *         or when the caller did not pop the due decisions (ring full).
  */
