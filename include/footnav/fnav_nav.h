@@ -31,8 +31,10 @@
  *
  * Timing: each sample's own dt is used. A repeated time stamp (dt = 0,
  * e.g. the duplicated rows of the NGIMU logs) is counted and produces a
- * frame without propagation or update (a duplicate must not be counted as a
- * second measurement); an interval longer than 1.5 nominal intervals is
+ * frame without propagation or update (the filter must not count a
+ * duplicate as a second measurement; the alignment's still-period means and
+ * the stance detector's window do take it, with the weight of one sample,
+ * which is what the committed NGIMU replays were made with); an interval longer than 1.5 nominal intervals is
  * counted as a gap and integrated as it is; an interval longer than
  * max_gap_s (and than 1.5 nominal intervals: init refuses a max_gap_s below
  * that with a configured rate) is counted as a time jump and integrated as
