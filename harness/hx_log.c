@@ -1519,7 +1519,18 @@ int64_t hx_gcd_i64(int64_t a, int64_t b)
 int hx_interval_irregular(int64_t dt_ns, double rate_hz, int64_t res_ns)
 {
     const double dt = 1e-9 * (double)dt_ns;
-    return fabs(dt - 1.0 / rate_hz) > 0.1 / rate_hz + 1e-9 * (double)res_ns;
+    double slack = 0.0;
+    if (res_ns > 0) {
+        /* a period that is a whole number of resolutions (100 Hz printed to
+         * 10 ms) reads exact intervals, as hx_stamp_rate_hz takes them: no
+         * slack. With it a lost sample (20 ms) was within 10 % + 10 ms of
+         * 10 ms, and a log that lost single samples was called uniform */
+        const double k = 1e9 / rate_hz / (double)res_ns;
+        if (fabs(k - floor(k + 0.5)) > 0.05) {
+            slack = 1e-9 * (double)res_ns;
+        }
+    }
+    return fabs(dt - 1.0 / rate_hz) > 0.1 / rate_hz + slack;
 }
 
 double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)

@@ -153,7 +153,9 @@ int64_t hx_gcd_i64(int64_t a, int64_t b);
 /** 1 when an interval of dt_ns is irregular at rate_hz: more than 10 % of a
  *  period off it, or, with stamps of resolution res_ns coarser than the
  *  period (0 for fine stamps), more than that plus the resolution (398 Hz
- *  printed to the millisecond reads 2 and 3 ms). The uniform-sampling
+ *  printed to the millisecond reads 2 and 3 ms) unless the period is a
+ *  whole number of resolutions (100 Hz printed to 10 ms: exact intervals,
+ *  as hx_stamp_rate_hz reads them). The uniform-sampling
  *  check of psd and allan. */
 int hx_interval_irregular(int64_t dt_ns, double rate_hz, int64_t res_ns);
 

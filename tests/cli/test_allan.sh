@@ -414,6 +414,12 @@ if grep -q "intervals differ" "$T/err"; then fail "millisecond stamps of uniform
 awk 'NR == 1 || (NR - 1) % 100 != 50' "$T/ms.csv" >"$T/msgap.csv"
 expect_exit 0 "allan on millisecond stamps with lost samples" "$H" allan "$T/msgap.csv" --no-sim --quiet
 expect_err "30 intervals differ" "lost samples under millisecond stamps are counted"
+# 100 Hz stamps printed to 10 ms (a whole number of resolutions per period: exact intervals) with 30 single samples
+# lost: each 20 ms interval was within 10 % + the 10 ms resolution of 10 ms, and the log was called uniform (no
+# warning); the static review, a 30-minute ADIS16405 cut with four gaps said "1 intervals differ"
+awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) if (i % 100 != 50) printf "%.2f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n", i / 100, (rand() - 0.5) / 50, (rand() - 0.5) / 50, 9.81 + (rand() - 0.5) / 50, (rand() - 0.5) / 500, (rand() - 0.5) / 500, (rand() - 0.5) / 500 }' > "$T/cs.csv"
+expect_exit 0 "allan on 10 ms stamps at 100 Hz with lost samples" "$H" allan "$T/cs.csv" --no-sim --quiet
+expect_err "30 intervals differ" "single lost samples under stamps of one period's resolution are counted"
 # white noise of 1e-22 (a series in a tiny unit): its Allan variances (1e-44) lie below the float build's
 # normal range, and were printed with lost digits (4.6 % off at m = 2 against the same series x 1e22), or, at
 # 1e-26 in the streaming core, underflowed to 0 and were called a constant channel; now an error, exit 1.
