@@ -557,6 +557,33 @@ static void disturbed_check(const run_t *R, const char *path)
     }
 }
 
+/* A static log may be slow, so its rate is no unit error (as replay's is);
+ * but one below 1 Hz that a time column in milliseconds, microseconds or
+ * nanoseconds explains (20 Hz to 100 kHz once divided) is warned about:
+ * 30 minutes of ADIS16405 log 1 with t in ms read as 0.1 Hz without a word,
+ * tau 1000 times and sigma_v 31.6 times too large (the static review). */
+static void slow_check(const char *path, double rate_hz)
+{
+    static const struct {
+        double scale;
+        const char *name, *div;
+    } k_units[] = { { 1e3, "milliseconds", "1000" }, { 1e6, "microseconds", "1e6" }, { 1e9, "nanoseconds", "1e9" } };
+    size_t u;
+    if (!(rate_hz > 0.0 && rate_hz < 1.0)) {
+        return;
+    }
+    for (u = 0; u < sizeof k_units / sizeof k_units[0]; u++) {
+        const double r_u = rate_hz * k_units[u].scale;
+        if (r_u >= 20.0 && r_u <= 1e5) {
+            hx_warn(CMD,
+                    "%s: the samples are %.4g s apart (%.3g Hz): are the time stamps in seconds? (they look like %s, "
+                    "a %.4g Hz log: divide by %s); tau, sigma_v and the profile are read at %.3g Hz",
+                    path, 1.0 / rate_hz, rate_hz, k_units[u].name, r_u, k_units[u].div, rate_hz);
+            return;
+        }
+    }
+}
+
 static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_opt)
 {
     hx_reader_t *r = hx_open_input(CMD, a, path);
@@ -673,6 +700,9 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         R->moving = R->win_n > 0 && (double)R->win_moving > HX_ALLAN_MOVING_FRAC * (double)R->win_n;
         R->units_bad = hx_units_problem(R->moving ? 0.0 : sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]), 9.80665,
                                         R->gyro_max, 0.0, R->units_msg, sizeof R->units_msg);
+        if (!(rate_opt > 0.0)) {
+            slow_check(path, R->rate_hz);
+        }
     }
     return rc;
 }
