@@ -564,23 +564,9 @@ static void disturbed_check(const run_t *R, const char *path)
  * tau 1000 times and sigma_v 31.6 times too large (the static review). */
 static void slow_check(const char *path, double rate_hz)
 {
-    static const struct {
-        double scale;
-        const char *name, *div;
-    } k_units[] = { { 1e3, "milliseconds", "1000" }, { 1e6, "microseconds", "1e6" }, { 1e9, "nanoseconds", "1e9" } };
-    size_t u;
-    if (!(rate_hz > 0.0 && rate_hz < 1.0)) {
-        return;
-    }
-    for (u = 0; u < sizeof k_units / sizeof k_units[0]; u++) {
-        const double r_u = rate_hz * k_units[u].scale;
-        if (r_u >= 20.0 && r_u <= 1e5) {
-            hx_warn(CMD,
-                    "%s: the samples are %.4g s apart (%.3g Hz): are the time stamps in seconds? (they look like %s, "
-                    "a %.4g Hz log: divide by %s); tau, sigma_v and the profile are read at %.3g Hz",
-                    path, 1.0 / rate_hz, rate_hz, k_units[u].name, r_u, k_units[u].div, rate_hz);
-            return;
-        }
+    char msg[320];
+    if (hx_time_unit_hint(rate_hz, msg, sizeof msg)) {
+        hx_warn(CMD, "%s: %s; tau, sigma_v and the profile are read at %.3g Hz", path, msg, rate_hz);
     }
 }
 
