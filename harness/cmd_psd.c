@@ -675,6 +675,14 @@ int hx_cmd_psd(int argc, char **argv)
                     irregular, log.n - 1, rate);
         }
     }
+    if (hx_arg(&a, "--input-rate") == NULL) {
+        /* a time column in milliseconds (100 Hz read as 0.1 Hz) was said
+         * only as an answer above the log's rate (the static review) */
+        char msg[320];
+        if (hx_time_unit_hint(rate, msg, sizeof msg)) {
+            hx_warn(CMD, "%s: %s; the frequencies are read at %.3g Hz", a.pos[0], msg, rate);
+        }
+    }
     st.wc.rate_hz = (fnav_real_t)rate;
     if (analyse(&log, &st, &bc, &res, &bad_i, &bad_c) != 0) {
         if (bad_i >= 0) {

@@ -153,9 +153,19 @@ int64_t hx_gcd_i64(int64_t a, int64_t b);
 /** 1 when an interval of dt_ns is irregular at rate_hz: more than 10 % of a
  *  period off it, or, with stamps of resolution res_ns coarser than the
  *  period (0 for fine stamps), more than that plus the resolution (398 Hz
- *  printed to the millisecond reads 2 and 3 ms). The uniform-sampling
+ *  printed to the millisecond reads 2 and 3 ms) unless the period is a
+ *  whole number of resolutions (100 Hz printed to 10 ms: exact intervals,
+ *  as hx_stamp_rate_hz reads them). The uniform-sampling
  *  check of psd and allan. */
 int hx_interval_irregular(int64_t dt_ns, double rate_hz, int64_t res_ns);
+
+/** The time unit a slow log's stamps look like: 1 when rate_hz is below
+ *  1 Hz and milliseconds, microseconds or nanoseconds make it 20 Hz to
+ *  100 kHz, with the question and the divisor in msg ("the samples are 10 s
+ *  apart (0.1 Hz): are the time stamps in seconds? (they look like
+ *  milliseconds, a 100 Hz log: divide by 1000)"), else 0. A static log may
+ *  be slow, so this is a warning of allan and psd, not a unit error. */
+int hx_time_unit_hint(double rate_hz, char *msg, size_t msg_size);
 
 /** The rate along a log is judged in blocks of this many positive
  *  intervals; a block whose rate is off the expected one by more than

@@ -414,6 +414,12 @@ if grep -q "intervals differ" "$T/err"; then fail "millisecond stamps of uniform
 awk 'NR == 1 || (NR - 1) % 100 != 50' "$T/ms.csv" >"$T/msgap.csv"
 expect_exit 0 "allan on millisecond stamps with lost samples" "$H" allan "$T/msgap.csv" --no-sim --quiet
 expect_err "30 intervals differ" "lost samples under millisecond stamps are counted"
+# 100 Hz stamps printed to 10 ms (a whole number of resolutions per period: exact intervals) with 30 single samples
+# lost: each 20 ms interval was within 10 % + the 10 ms resolution of 10 ms, and the log was called uniform (no
+# warning); the static review, a 30-minute ADIS16405 cut with four gaps said "1 intervals differ"
+awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) if (i % 100 != 50) printf "%.2f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n", i / 100, (rand() - 0.5) / 50, (rand() - 0.5) / 50, 9.81 + (rand() - 0.5) / 50, (rand() - 0.5) / 500, (rand() - 0.5) / 500, (rand() - 0.5) / 500 }' > "$T/cs.csv"
+expect_exit 0 "allan on 10 ms stamps at 100 Hz with lost samples" "$H" allan "$T/cs.csv" --no-sim --quiet
+expect_err "30 intervals differ" "single lost samples under stamps of one period's resolution are counted"
 # white noise of 1e-22 (a series in a tiny unit): its Allan variances (1e-44) lie below the float build's
 # normal range, and were printed with lost digits (4.6 % off at m = 2 against the same series x 1e22), or, at
 # 1e-26 in the streaming core, underflowed to 0 and were called a constant channel; now an error, exit 1.
@@ -483,6 +489,35 @@ awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 12000; i++) 
 expect_exit 0 "a static log with 3 s handled" "$H" allan "$T/handled.csv" --no-sim --quiet
 expect_err "handled.csv: 3 of 120 one-second windows move" "the handled seconds are warned about"
 expect_err "the first at 50 s" "the first moving second is named"
+# a static log touched once (0.5 s of 0.1 rad/s on gz, 0.2 m/s^2 on ax at 300 s of 600): below the moving marks, it
+# passed without a word, and on 30 minutes of ADIS16405 log 1 it was fitted as a gz bias of 0.096 deg/s with
+# T = 0.3 s (the static review); the window is now named as disturbed, the status unchanged (0). The same log
+# untouched: no such warning
+for touch in 1 0; do
+    awk -v touch=$touch 'BEGIN { srand(11); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 60000; i++) {
+         m = (touch && i >= 30000 && i < 30050) ? 1 : 0;
+         printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 100, 0.1 * (rand() - 0.5) + m * 0.2,
+                0.1 * (rand() - 0.5), 9.81 + 0.1 * (rand() - 0.5), 0.02 * (rand() - 0.5),
+                0.02 * (rand() - 0.5), 0.02 * (rand() - 0.5) + m * 0.1 } }' >"$T/touch$touch.csv"
+done
+expect_exit 0 "a static log touched for 0.5 s" "$H" allan "$T/touch1.csv" --no-sim --quiet
+expect_err "touch1.csv: 1 of 600 one-second windows are disturbed" "the touch is warned about"
+expect_err "the first at 300 s" "the touched second is named"
+expect_exit 0 "the same log untouched" "$H" allan "$T/touch0.csv" --no-sim --quiet
+if grep -q "disturbed" "$T/err"; then fail "an untouched white-noise log called disturbed: $(cat "$T/err")"; else
+    pass "an untouched log is not called disturbed"; fi
+# a static log whose time column is in milliseconds (100 Hz read as 0.1 Hz): no rate is a unit error for a static
+# log, which may be slow, but this one passed without a word, tau 1000 times and sigma_v 31.6 times too large (the
+# static review, 30 minutes of ADIS16405 log 1); now a warning with the remedy, the status unchanged (0); the same
+# log in seconds: no such warning
+awk '{ if (NR == 1) print; else { split($0, v, ","); v[1] = v[1] * 1000; out = v[1];
+       for (k = 2; k <= 7; k++) out = out "," v[k]; print out } }' "$T/touch0.csv" >"$T/touch_ms.csv"
+expect_exit 0 "a static log with its time in milliseconds" "$H" allan "$T/touch_ms.csv" --no-sim --quiet
+expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: divide by 1000)" \
+    "time in milliseconds is named"
+expect_exit 0 "the same log in seconds" "$H" allan "$T/touch0.csv" --no-sim --quiet
+if grep -q "apart" "$T/err"; then fail "a 100 Hz log in seconds asked about its time unit: $(cat "$T/err")"; else
+    pass "a 100 Hz log in seconds is not asked about its time unit"; fi
 # a static log with its gyro in deg/s (noise 0.35 deg/s RMS per axis, as the ADIS logs' 0.66 "rad/s" RMS over the
 # three axes): it stays below 70 rad/s, but its noise spreads by more than 0.25 rad/s RMS
 awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 6000; i++)

@@ -253,6 +253,17 @@ expect_out_re "398\.[0-9]+ Hz" "the rate is read from the spans of the stamps"
 awk 'NR == 1 || (NR - 1) % 100 != 50' "$T/ms.csv" >"$T/msgap.csv"
 expect_exit 0 "millisecond stamps with lost samples" "$H" psd "$T/msgap.csv"
 expect_err "30 of 2969 intervals differ" "lost samples under millisecond stamps are counted"
+# 100 Hz stamps printed to 10 ms (exact intervals: the period is one resolution) with 30 single samples lost: each
+# 20 ms interval was within 10 % + the 10 ms resolution of 10 ms, and no warning was given (the static review)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) if (i % 100 != 50) printf "%.2f,%.4f,0,9.81,0,0,%.4f\n", i / 100, sin(i), cos(i) }' > "$T/cs.csv"
+expect_exit 0 "10 ms stamps at 100 Hz with lost samples" "$H" psd "$T/cs.csv"
+expect_err "30 of 2969 intervals differ" "single lost samples under stamps of one period's resolution are counted"
+# the time column in milliseconds (100 Hz read as 0.1 Hz): only "the answer (50 Hz) is above the log's own rate
+# (0.1 Hz)" hinted at it (the static review); the unit and the divisor are now named, the status unchanged (0)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) printf "%d,%.4f,0,9.81,0,0,%.4f\n", i * 10, sin(i), cos(i) }' > "$T/tms.csv"
+expect_exit 0 "time stamps in milliseconds" "$H" psd "$T/tms.csv"
+expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: divide by 1000)" \
+    "time in milliseconds is named"
 
 O=$(data openshoe_c_820hz/OpenShoeDataSet.txt)
 if [ -n "$O" ]; then
