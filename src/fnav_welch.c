@@ -143,7 +143,11 @@ static void recentre(fnav_welch_t *w)
 
 fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x)
 {
-    const uint32_t n = w->cfg.nfft;
+    uint32_t n;
+    if (w == NULL) {
+        return FNAV_E_ARG;
+    }
+    n = w->cfg.nfft;
     if (!fnav_isfinite(x)) {
         return FNAV_E_NANINF;
     }

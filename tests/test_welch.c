@@ -416,6 +416,9 @@ static void test_config_and_bad_input(void **state)
     int i;
     (void)state;
     assert_int_equal(fnav_welch_init(NULL, NULL), FNAV_E_ARG);
+    /* push was the one welch entry point that dereferenced a NULL w (a core
+     * review, 2026-11-29): every other one returns FNAV_E_ARG */
+    assert_int_equal(fnav_welch_push(NULL, FNAV_R(1.0)), FNAV_E_ARG);
     c.nfft = 48;
     assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
     c.nfft = FNAV_WELCH_MAX_NFFT * 2u;

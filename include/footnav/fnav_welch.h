@@ -109,9 +109,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch
 /**
  * Add one sample; completes a segment every (nfft - overlap) samples once
  * nfft samples were seen.
- * @return FNAV_OK; FNAV_E_NANINF for NaN/Inf, FNAV_E_RANGE for
- *         |x| > FNAV_INPUT_MAX_ABS and once 2^32 - 1 samples were pushed
- *         (ignored, state unchanged).
+ * @return FNAV_OK; FNAV_E_ARG for NULL w; FNAV_E_NANINF for NaN/Inf,
+ *         FNAV_E_RANGE for |x| > FNAV_INPUT_MAX_ABS and once 2^32 - 1
+ *         samples were pushed (ignored, state unchanged).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x);
 
