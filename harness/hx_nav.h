@@ -176,7 +176,7 @@ typedef struct {
  *  noted in the summary and in eval's row (that part of the walk is not
  *  navigated). A confirmed swing's worth (min_swing_s's default): a log that
  *  starts in a swing aligns on the next stance, after less than a second of
- *  motion (0.36 s for openshoe_gx2 walk 2 cut 0.5 s into its first swing),
+ *  motion (0.40 s for openshoe_gx2 walk 2 cut 0.5 s into its first swing, the JSON's before_alignment_s 0.404),
  *  which the 1 s of this limit until 2026-11-29 let pass without a word
  *  (the unseen review); every shared log has none. */
 #define HX_NAV_LATE_ALIGN_S 0.25

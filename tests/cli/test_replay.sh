@@ -574,7 +574,7 @@ if [ -n "$D" ]; then
         pass "before_alignment_s in the JSON"; else fail "before_alignment_s: $(grep -o '"before_alignment_s":[^,]*' "$T/ip_mid.json")"; fi
     # a log that starts in a swing (openshoe_gx2 walk 2 from 0.5 s after its
     # first swing began, 2.92 s): the filter aligns on the next stance, after
-    # 0.36 s of motion, which the 1 s limit of the note let pass: the closure
+    # 0.40 s of motion (before_alignment_s 0.404), which the 1 s limit of the note let pass: the closure
     # went from 0.65 % to 2.49 % without a word (the unseen review). The
     # summary says so, and eval's row
     "$H" convert "$D/openshoe_gx2/Measurement_100521_2_data_inert.txt" "$T/gx2_full.csv" 2>/dev/null
