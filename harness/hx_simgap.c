@@ -1019,6 +1019,12 @@ static void locate_into(const sg_result_t *r, int ch, int seg, const sg_cmp_t *c
             L->kind = pl->p[j].dom == SG_TIME ? pl->p[j].kind : 0;
             L->x_lo = pl->p[j].x_lo;
             L->x_hi = pl->p[k - 1].x_hi;
+            if (L->dom == SG_TIME && L->kind == SG_TIME_STEP && pl->p[best].t_peak_hi > pl->p[best].t_peak_lo) {
+                /* a step or transient: where in the block it is (until
+                 * 2026-11-29 the block, "t 0-600 s" for 0.5 s at 300 s) */
+                L->x_lo = pl->p[best].t_peak_lo;
+                L->x_hi = pl->p[best].t_peak_hi;
+            }
             L->peak_z = c->z[best];
             /* Allan and PSD values are logs of variances: the ratio of deviations */
             L->ratio = (L->dom == SG_ALLAN || L->dom == SG_PSD) ? exp(0.5 * d) : d;

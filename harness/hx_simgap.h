@@ -105,6 +105,10 @@ typedef struct {
     double x_blk;             /**< time domain level point: length of each of the two blocks, s */
     int empty;                /**< no data behind it in the real log (a navigation window in
                                    which no stance begins: a long stand): outside G, z 0 */
+    double t_peak_lo, t_peak_hi; /**< time domain `steps` of the real: sub-blocks i-1 to i+1 around
+                                   its largest lag-2 difference d_i (a step inside sub-block i, a
+                                   transient shorter than a sub-block inside i-1 or i+1), s; where
+                                   the location reports it (0 elsewhere) */
 } sg_point_t;
 
 /** A list of points. */

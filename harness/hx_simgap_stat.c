@@ -186,11 +186,12 @@ void sg_acc_push(sg_acc_t *a, double x)
 
 /* The time-domain statistics of a block (SG_TIME_* order): trend (u/s),
  * curvature (u) and the step statistic. */
-static void time_stats(const sg_acc_t *a, double v[SG_TIME_NKIND])
+static void time_stats(const sg_acc_t *a, double v[SG_TIME_NKIND], int *peak)
 {
     double m[SG_TD_K], d[SG_TD_K], ad[SG_TD_K], med, mad, big = 0.0;
     const double span_s = (double)(a->n_expect - 1) / a->cfg.rate_hz;
     int i, nd = 0;
+    *peak = 1;
     v[SG_TIME_TREND] = a->s1q > 0.0 ? (a->s1 / a->s1q) * 2.0 / span_s : 0.0;
     v[SG_TIME_CURV] = a->s2q > 0.0 ? a->s2 / a->s2q : 0.0;
     for (i = 0; i < SG_TD_K; i++) {
@@ -205,7 +206,10 @@ static void time_stats(const sg_acc_t *a, double v[SG_TIME_NKIND])
     med = 0.5 * (ad[(nd - 1) / 2] + ad[nd / 2]);
     for (i = 0; i < nd; i++) {
         ad[i] = fabs(d[i] - med);
-        big = ad[i] > big ? ad[i] : big;
+        if (ad[i] > big) {
+            big = ad[i];
+            *peak = i + 1; /* d[i] = m[i + 2] - m[i] */
+        }
     }
     qsort(ad, (size_t)nd, sizeof *ad, hx_cmp_double);
     mad = 1.4826 * 0.5 * (ad[(nd - 1) / 2] + ad[nd / 2]);
@@ -354,8 +358,9 @@ long sg_acc_finish(sg_acc_t *a, int ch, sg_plist_t *pl, double *vals, size_t cap
     }
     if (a->td && a->n == a->n_expect) {
         double v[SG_TIME_NKIND];
+        int peak;
         int k;
-        time_stats(a, v);
+        time_stats(a, v, &peak);
         for (k = 0; k < SG_TIME_NKIND; k++) {
             if (cnt >= cap) {
                 return -1;
@@ -369,6 +374,14 @@ long sg_acc_finish(sg_acc_t *a, int ch, sg_plist_t *pl, double *vals, size_t cap
                 p.x_lo = a->t0_s;
                 p.x_hi = a->t0_s + (double)a->n_expect / fs;
                 p.x = 0.5 * (p.x_lo + p.x_hi);
+                if (k == SG_TIME_STEP) {
+                    /* where the largest lag-2 difference m(i+1) - m(i-1) is:
+                     * sub-blocks i-1 to i+1 (a sub-block holds samples
+                     * n K / n_expect = i) */
+                    const double sub_s = (double)a->n_expect / fs / (double)SG_TD_K;
+                    p.t_peak_lo = a->t0_s + (double)(peak - 1) * sub_s;
+                    p.t_peak_hi = a->t0_s + (double)(peak + 2) * sub_s;
+                }
                 p.m = (uint32_t)k;
                 p.w = 1.0;
                 p.nblk = 1; /* no theory: the twins' spread */

@@ -428,6 +428,81 @@ static void test_time_domain_model(void **state)
     FNAV_ASSERT_CLOSE(sg_model_lnstat(&m, &p, 100.0, 1, t0, t1), td_level, 0.0, 1e-3);
 }
 
+/* A transient or a step is located inside its block: the steps point of
+ * the real carries the sub-blocks around its largest lag-2 difference. A
+ * 0.5 s bump at 300 s of a 600 s log (someone touching the table; the
+ * sgbump review) was located "t 0-600 s", the whole block; it is now within
+ * three sub-blocks (56 s) that hold it (a transient across a sub-block
+ * boundary: the part in the sub-block whose mean moved most), and so is a
+ * step at 450 s. */
+typedef struct {
+    double fs, at, len, size;
+    fnav_rng_t rng;
+} td_bump_t;
+
+static double td_bump(long k, void *ctx)
+{
+    td_bump_t *s = (td_bump_t *)ctx;
+    const double t = (double)k / s->fs;
+    return 0.01 * (double)fnav_rng_gauss(&s->rng) + (t >= s->at && t < s->at + s->len ? s->size : 0.0);
+}
+
+static void steps_window(double at, double len, double size, double *lo, double *hi)
+{
+    const double fs = 100.0;
+    const long n = 60001;
+    sg_feat_cfg_t fc = sg_feat_cfg_default(fs);
+    sg_segs_t segs;
+    sg_segacc_t a;
+    sg_plist_t pl;
+    static double vals[512];
+    td_bump_t s;
+    long cnt, k, j;
+    int found = 0;
+    memset(&pl, 0, sizeof pl);
+    s.fs = fs;
+    s.at = at;
+    s.len = len;
+    s.size = size;
+    fnav_rng_seed(&s.rng, 7u, 1u);
+    sg_segs_split(n, 0.6, 1, &segs);
+    assert_int_equal(segs.nb[SG_FULL], 1);
+    assert_int_equal(sg_segacc_init(&a, &fc, &segs, SG_FULL, 0.0), 0);
+    for (k = 0; k < segs.n[SG_FULL][0]; k++) {
+        sg_segacc_push(&a, 0, td_bump(segs.start[SG_FULL][0] + k, &s));
+    }
+    cnt = sg_segacc_finish(&a, 3, &pl, vals, 512);
+    sg_segacc_free(&a);
+    assert_true(cnt > 0);
+    for (j = 0; j < cnt; j++) {
+        if (pl.p[j].dom == SG_TIME && pl.p[j].kind == SG_TIME_STEP) {
+            *lo = pl.p[j].t_peak_lo;
+            *hi = pl.p[j].t_peak_hi;
+            assert_true(vals[j] > log(20.0)); /* the step statistic sees it */
+            found = 1;
+        }
+    }
+    assert_true(found);
+    sg_plist_free(&pl);
+}
+
+static void test_time_steps_window(void **state)
+{
+    const double sub_s = 600.01 / (double)SG_TD_K;
+    double lo = 0.0, hi = 0.0;
+    (void)state;
+    steps_window(300.0, 0.5, 1.0, &lo, &hi);
+    /* the bump's first sample (300.00 s) is the last of sub-block 15, the
+     * other 49 are in sub-block 16 (from 300.005 s): the window holds the
+     * sub-block whose mean moved most, 263-319 s or 300-356 s by the noise
+     * (the float and double builds differ) */
+    assert_true(lo <= 300.0 + 0.01 && hi >= 300.5);
+    FNAV_ASSERT_CLOSE(hi - lo, 3.0 * sub_s, 1e-6, 0.0);
+    steps_window(450.0, 1e9, 0.1, &lo, &hi);
+    assert_true(lo <= 450.0 && hi >= 450.0);
+    FNAV_ASSERT_CLOSE(hi - lo, 3.0 * sub_s, 1e-6, 0.0);
+}
+
 /* The deterministic drifts are fitted on the blocks' trend and curvature:
  * a warm-up's amplitude and time constant and a ramp's signed rate come
  * back from the features of a noise-free log (the statistics are sample
@@ -1448,6 +1523,7 @@ int main(void)
         cmocka_unit_test(test_compare_twin_only_level),
         cmocka_unit_test(test_split_disjoint),
         cmocka_unit_test(test_time_domain_stats),
+        cmocka_unit_test(test_time_steps_window),
         cmocka_unit_test(test_time_domain_model),
         cmocka_unit_test(test_time_fit_drifts),
         cmocka_unit_test(test_jumps_rate_detection),
