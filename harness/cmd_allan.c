@@ -1124,10 +1124,11 @@ static void print_table(const run_t *R, const chan_t *ch)
 }
 
 static int ar1_resolved(const run_t *R, const chan_t *ch);
+static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m);
 
 static void print_params(const run_t *R)
 {
-    int i;
+    int i, nbound = 0;
     printf("\nBias model, units of the paper's Tables IV-VI (sigma_v in unit/sqrt(Hz), tau in samples at %g Hz,\n"
            "sigma_bias in unit; quality: RMS of log10 ADEV model/measured over tau <= %.3g s, and model/measured\n"
            "at the measured minimum):\n",
@@ -1160,12 +1161,32 @@ static void print_params(const run_t *R)
             }
             if (!ar1_resolved(R, ch)) {
                 /* the JSON's ar1_identified = false: not the bias a profile takes */
-                printf("  AR(1) not resolved by the curve");
+                printf("  AR(1) not resolved by the curve: see below");
             }
             printf("\n");
         } else {
             printf(" n/a (%s)\n", ch->constant ? "constant channel" : "fit failed");
         }
+    }
+    /* Where the fit's AR(1) is not identified its numbers are no noise model
+     * of the sensor (30 minutes of ADIS16405 log 1: gx sigma_v 0.0039
+     * deg/s/sqrt(Hz) against the 0.0408 the profile holds), yet they read as
+     * one: say so under the table, with the numbers a profile takes. */
+    for (i = 0; i < R->nch; i++) {
+        const chan_t *ch = &R->ch[i];
+        hx_noise_model_t m;
+        if (profile_model(R, ch, &m) != 1) {
+            continue;
+        }
+        if (nbound++ == 0) {
+            printf("AR(1) not identified (the JSON's ar1_identified false): the corrected sigma_v, tau and sigma_bias "
+                   "of these\nchannels are no model of the sensor. %s instead the paper's sigma_v (the ADEV at 1 "
+                   "s) and the\nGauss-Markov bound from the Allan minimum (T = t_BS / 1.89, sigma_bias = BS / "
+                   "0.6174; docs/allan.md):\n",
+                   R->is_series ? "A log's --profile would hold" : "--profile holds");
+        }
+        printf("%-6s %-6s | %s: sigma_v %.3g, tau %.0f samples (%.3g s), sigma_bias %.3g\n", ch->label, ch->unit,
+               R->is_series ? "bound" : "profile", m.white, m.gm_tau_s * R->rate_hz, m.gm_tau_s, m.gm_sigma);
     }
     printf("\nOther readings of the paper's parameters (RMS log10 ADEV model/measured; model/measured at the minimum):\n"
            "  drive:  sigma_bias taken as the std of the driving noise n_k (the Fig. 7 text), stationary std\n"
@@ -1357,6 +1378,18 @@ static int write_json(const run_t *R, const char *path)
         /* false: no fit, or the curve does not resolve its AR(1) part; a
          * --profile then holds the bound from the Allan minimum */
         cJSON_AddBoolToObject(p, "ar1_identified", ch->id_ok && ar1_resolved(R, ch));
+        /* the model a --profile takes: the fit, or where its AR(1) is not
+         * identified the bound from the Allan minimum (whose numbers the
+         * corrected object above does not hold); empty when there is none */
+        p = cJSON_AddObjectToObject(c, "profile");
+        {
+            hx_noise_model_t m;
+            const int bound = profile_model(R, ch, &m);
+            if (bound >= 0) {
+                cJSON_AddStringToObject(p, "basis", bound ? "bound" : "fit");
+                json_model(p, &m, R->rate_hz);
+            }
+        }
         t = cJSON_AddArrayToObject(c, "table");
         for (k = 0; k < ch->nres; k++) {
             const fnav_allan_result_t *r = &ch->res[k];
@@ -1595,12 +1628,49 @@ static int ar1_resolved(const run_t *R, const chan_t *ch)
     return ar1_identified(R, ch, tau_long_of(R, ch));
 }
 
+/* The noise model a --profile takes for one channel (docs/allan.md, "When
+ * the AR(1) part is not identifiable"), in the channel's display unit:
+ * returns 0 with the fit where its AR(1) part is identified, 1 with the
+ * bound from the Allan minimum where it is not (the fit's numbers are then
+ * no model of the sensor: 30 minutes of ADIS16405 log 1 fitted gx with
+ * sigma_v 0.0039 deg/s/sqrt(Hz), ten times below the 0.0408 the profile
+ * holds), -1 when there is neither (no fit or no paper identification).
+ * The table, the JSON and write_profile() all take it from here. */
+static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m)
+{
+    memset(m, 0, sizeof *m);
+    if (ch->constant || !ch->id_ok || (!ch->id.fit_ok && !ch->id.paper_ok)) {
+        return -1;
+    }
+    if (ar1_resolved(R, ch)) {
+        *m = ch->id.fit;
+        return 0;
+    }
+    if (!ch->id.paper_ok) {
+        return -1;
+    }
+    /* The AR(1) part is not identifiable: white noise dominates the
+     * whole curve (typically a bias correlation time longer than a
+     * tenth of the record, or a record too short to leave the white
+     * part). Take the conservative first-order
+     * Gauss-Markov bound from the curve's minimum: the AR(1) Allan
+     * deviation peaks at 0.6174 sigma at tau = 1.893 T (docs/allan.md),
+     * so T = t_min / 1.89 and sigma = ADEV_min / 0.6174 put the model's bump
+     * on the lowest measured point. No upper bound for the bias in
+     * general: a pure Gauss-Markov channel (T = 1 s, sigma 0.004, no
+     * white noise, 10^4 s) gets T = 520 s, sigma 2.4e-4 (docs/allan.md). */
+    m->white = (double)ch->id.paper.sigma_v;
+    m->gm_tau_s = (double)ch->id.paper.t_bs_s / 1.89;
+    m->gm_sigma = (double)ch->id.paper.bs / 0.6174;
+    return 1;
+}
+
 static int write_profile(const run_t *R, const char *path, const char *name)
 {
     fnav_profile_t p;
     char err[320], comment[1024], extra[2048];
     size_t len = 0;
-    int i, have_q = 0, have_k = 0, nfallback = 0;
+    int i, have_q = 0, have_k = 0, nfallback = 0, bound;
     double tau_long_s;
     double q[6], kk[6], pv[6], pt[6], ps[6], rms[6], fallback[6];
     memset(&p, 0, sizeof p);
@@ -1622,33 +1692,23 @@ static int write_profile(const run_t *R, const char *path, const char *name)
             return -2;
         }
         tau_long_s = tau_long_of(R, ch);
-        if (ar1_identified(R, ch, tau_long_s)) {
-            m = ch->id.fit;
-            fallback[k] = 0;
-        } else if (!ch->id.paper_ok) {
+        bound = profile_model(R, ch, &m);
+        if (bound < 0) {
             hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
             return -2;
-        } else {
-            /* The AR(1) part is not identifiable: white noise dominates the
-             * whole curve (typically a bias correlation time longer than a
-             * tenth of the record, or a record too short to leave the white
-             * part). Write the conservative first-order
-             * Gauss-Markov bound from the curve's minimum: the AR(1) Allan
-             * deviation peaks at 0.6174 sigma at tau = 1.893 T (docs/allan.md),
-             * so T = t_min / 1.89 and sigma = ADEV_min / 0.6174 put the model's bump
-             * on the lowest measured point. No upper bound for the bias in
-             * general: a pure Gauss-Markov channel (T = 1 s, sigma 0.004, no
-             * white noise, 10^4 s) gets T = 520 s, sigma 2.4e-4 (docs/allan.md). */
-            memset(&m, 0, sizeof m);
-            m.white = (double)ch->id.paper.sigma_v;
-            m.gm_tau_s = (double)ch->id.paper.t_bs_s / 1.89;
-            m.gm_sigma = (double)ch->id.paper.bs / 0.6174;
-            fallback[k] = 1;
+        }
+        fallback[k] = bound;
+        if (bound) {
+            char fitw[48] = "no fit";
             nfallback++;
+            if (ch->id.fit_ok) {
+                snprintf(fitw, sizeof fitw, "not the fit's %.3g", ch->id.fit.white);
+            }
             hx_warn(CMD, "%s: the AR(1) bias of %s is not identifiable within the record (longest tau %.3g s, "
-                         "Allan minimum at %.3g s); the profile holds the bound T = %.3g s, sigma = %.3g %s "
-                         "from that minimum",
-                    path, ch->name, tau_long_s, (double)ch->id.paper.t_bs_s, m.gm_tau_s, m.gm_sigma, ch->unit);
+                         "Allan minimum at %.3g s); the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV "
+                         "at 1 s; %s) and the bound T = %.3g s, sigma = %.3g %s from that minimum",
+                    path, ch->name, tau_long_s, (double)ch->id.paper.t_bs_s, m.white, ch->unit, fitw, m.gm_tau_s,
+                    m.gm_sigma, ch->unit);
         }
         if (k < 3) {
             p.accel_noise_mps2_rthz[k] = (fnav_real_t)(m.white * si);
