@@ -514,18 +514,21 @@ static int cmp_double(const void *x, const void *y)
  * and 0.2 m/s^2 for 0.5 s in 30 minutes of ADIS16405 log 1 (noise spread
  * 0.012 rad/s) stayed below the moving marks and was fitted, without a
  * word, as a gz bias of 0.096 deg/s with T = 0.3 s (the static review). */
-static void disturbed_check(const run_t *R, const char *path)
+/* The median window's rate and |f| spread (med[0], med[1]) for the
+ * disturbance check; -1 when there are too few windows, too short ones, or
+ * their spreads were not kept (out of memory). */
+static int spread_medians(const run_t *R, double med[2])
 {
-    double med[2], *v, first_s = 0.0;
-    long i, n = R->win_n, count = 0;
+    double *v;
+    long i, n = R->win_n;
     int k;
     if (n < HX_ALLAN_DISTURBED_MIN_WIN || R->win_len < HX_ALLAN_DISTURBED_MIN_LEN || (size_t)n > R->win_cap ||
         R->win_spread == NULL) {
-        return;
+        return -1;
     }
     v = (double *)malloc((size_t)n * sizeof *v);
     if (v == NULL) {
-        return;
+        return -1;
     }
     for (k = 0; k < 2; k++) {
         for (i = 0; i < n; i++) {
@@ -535,12 +538,33 @@ static void disturbed_check(const run_t *R, const char *path)
         med[k] = (n & 1) ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
     }
     free(v);
+    return 0;
+}
+
+/* Window i (0 <= i < win_n, spreads kept) moves (HX_ALLAN_MOVING_*). */
+static int window_moving(const run_t *R, long i)
+{
+    return R->win_spread[2 * i] > HX_ALLAN_MOVING_GYRO_RPS || R->win_spread[2 * i + 1] > HX_ALLAN_MOVING_F_MPS2;
+}
+
+/* Window i is disturbed: not moving, but its spread is over
+ * HX_ALLAN_DISTURBED_RATIO times the median window's (med). */
+static int window_disturbed(const run_t *R, long i, const double med[2])
+{
+    const double g = R->win_spread[2 * i], f = R->win_spread[2 * i + 1];
+    return !window_moving(R, i) && ((med[0] > 0.0 && g > HX_ALLAN_DISTURBED_RATIO * med[0]) ||
+                                    (med[1] > 0.0 && f > HX_ALLAN_DISTURBED_RATIO * med[1]));
+}
+
+static void disturbed_check(const run_t *R, const char *path)
+{
+    double med[2], first_s = 0.0;
+    long i, n = R->win_n, count = 0;
+    if (spread_medians(R, med) != 0) {
+        return;
+    }
     for (i = 0; i < n; i++) {
-        const double g = R->win_spread[2 * i], f = R->win_spread[2 * i + 1];
-        const int moving = g > HX_ALLAN_MOVING_GYRO_RPS || f > HX_ALLAN_MOVING_F_MPS2;
-        const int dist = (med[0] > 0.0 && g > HX_ALLAN_DISTURBED_RATIO * med[0]) ||
-                         (med[1] > 0.0 && f > HX_ALLAN_DISTURBED_RATIO * med[1]);
-        if (dist && !moving) {
+        if (window_disturbed(R, i, med)) {
             if (count == 0) {
                 first_s = (double)i * (double)R->win_len / R->rate_hz;
             }
@@ -1543,6 +1567,126 @@ static void base_name(const char *path, char *out, size_t n)
     }
 }
 
+/* The still part of a static log that moves in places (a few windows: it
+ * was handled at its start or end, or knocked): the longest run of windows
+ * that do not move, its ends moved inward past the disturbed windows next to
+ * a moving one (the tail of the handling), in whole seconds from the first
+ * sample, rounded inward: *start_s (0: from the first sample) and *end_s (0:
+ * to the last). *from_s and *to_s span the moving windows, the first's
+ * start to the last's end. -1 when the windows' spreads were not kept (out
+ * of memory) or no window is still. */
+static int still_part(const run_t *R, double *from_s, double *to_s, double *start_s, double *end_s)
+{
+    const double win_s = (double)R->win_len / R->rate_hz;
+    double med[2];
+    long i, run_a = 0, a = 0, b = 0, first = -1, last = -1;
+    int have_med;
+    if (R->win_spread == NULL || (size_t)R->win_n > R->win_cap || !(win_s > 0.0)) {
+        return -1;
+    }
+    have_med = spread_medians(R, med) == 0;
+    for (i = 0; i <= R->win_n; i++) {
+        if (i == R->win_n || window_moving(R, i)) {
+            if (i - run_a > b - a) {
+                a = run_a;
+                b = i;
+            }
+            run_a = i + 1;
+            if (i < R->win_n) {
+                first = first < 0 ? i : first;
+                last = i;
+            }
+        }
+    }
+    while (have_med && a > 0 && a < b && window_disturbed(R, a, med)) {
+        a++;
+    }
+    while (have_med && b < R->win_n && b > a && window_disturbed(R, b - 1, med)) {
+        b--;
+    }
+    if (first < 0 || b <= a) {
+        return -1;
+    }
+    *from_s = (double)first * win_s;
+    *to_s = (double)(last + 1) * win_s;
+    *start_s = a > 0 ? ceil((double)a * win_s - 1e-9) : 0.0;
+    *end_s = b < R->win_n ? floor((double)b * win_s + 1e-9) : 0.0;
+    return *end_s > 0.0 && !(*end_s > *start_s) ? -1 : 0;
+}
+
+/* path as one shell word (n >= 8): as it is when it holds only characters
+ * no shell reads, else in single quotes (a quote inside as '\''). */
+static void shell_word(const char *path, char *out, size_t n)
+{
+    size_t len = 0;
+    const char *c;
+    if (path[0] != '\0' &&
+        strspn(path, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./+,:=@%-") == strlen(path)) {
+        snprintf(out, n, "%s", path);
+        return;
+    }
+    out[len++] = '\'';
+    for (c = path; *c != '\0' && len + 6 < n; c++) {
+        if (*c == '\'') {
+            memcpy(out + len, "'\\''", 4);
+            len += 4;
+        } else {
+            out[len++] = *c;
+        }
+    }
+    out[len++] = '\'';
+    out[len] = '\0';
+}
+
+/* A static log that moves in some of its windows, fewer than
+ * HX_ALLAN_MOVING_FRAC of them (a log that starts with handling: the sensor
+ * picked up and put down). The Allan variance includes that motion, and a
+ * profile from it is no sensor's: 5 s of handling (1-2 m/s^2, 1 rad/s) at
+ * the start of 30 minutes of ADIS16405 log 1 raised the gx noise the
+ * profile held 14 times (0.555 against 0.0408 deg/s/sqrt(Hz)), with a
+ * warning that named only the first moving second and exit 0. The message
+ * names the span that moves and the command that cuts the log to its
+ * longest still part; with --profile (profile != 0) it is an error: no
+ * profile is written (the caller), the tables still are. */
+static void motion_report(const run_t *R, const char *path, int profile)
+{
+    double from_s = R->win_first_moving_s, to_s = 0.0, start_s = 0.0, end_s = 0.0;
+    char log[1100], out[300], base[256], cut[1500], span[96];
+    const int have = still_part(R, &from_s, &to_s, &start_s, &end_s) == 0;
+    if (have) {
+        size_t len;
+        shell_word(path, log, sizeof log);
+        base_name(path, base, sizeof base);
+        snprintf(cut, sizeof cut, "%s_still.csv", base);
+        shell_word(cut, out, sizeof out);
+        len = (size_t)snprintf(cut, sizeof cut, "bin/harness convert %s %s", log, out);
+        if (start_s > 0.0 && len < sizeof cut) {
+            len += (size_t)snprintf(cut + len, sizeof cut - len, " --start %.0f", start_s);
+        }
+        if (end_s > 0.0 && len < sizeof cut) {
+            snprintf(cut + len, sizeof cut - len, " --end %.0f", end_s);
+        }
+        snprintf(span, sizeof span, "from %.0f s to %.0f s", from_s, to_s);
+    } else {
+        snprintf(cut, sizeof cut, "bin/harness convert LOG OUT --start S --end S");
+        snprintf(span, sizeof span, "the first at %.0f s", from_s);
+    }
+    if (profile) {
+        hx_error(CMD,
+                 "%s: %ld of %ld one-second windows move (the rate spreads by more than %g rad/s RMS or |f| by more "
+                 "than %g m/s^2; %s): the Allan variance includes that motion, and a profile from it would hold a "
+                 "noise far above the sensor's, so none is written; cut the log to its still part (`%s`) and run "
+                 "allan on that (docs/allan.md, \"Command\")",
+                 path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2, span, cut);
+    } else {
+        hx_warn(CMD,
+                "%s: %ld of %ld one-second windows move (the rate spreads by more than %g rad/s RMS or |f| by more "
+                "than %g m/s^2; %s): the Allan variance and the parameters below include that motion (a --profile "
+                "would be refused); cut the log to its still part (`%s`)",
+                path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2, span, cut);
+    }
+}
+
 /* Whether the model (AVAR all at table entry r) exceeds the model without
  * one of its parts (null) by more than the measured point can tell: two
  * standard errors of its log ADEV, sqrt(1/(2 EDF) + floor^2) as in the fit's
@@ -2023,12 +2167,7 @@ int hx_cmd_allan(int argc, char **argv)
                  R->win_first_moving_s);
         exit_code = HX_EXIT_DATA;
     } else if (R->win_moving > 0) {
-        hx_warn(CMD,
-                "%s: %ld of %ld one-second windows move (the rate spreads by more than %g rad/s RMS or |f| by more "
-                "than %g m/s^2; the first at %.0f s): the Allan variance includes that motion; cut the log to its "
-                "still part (harness convert LOG OUT --start S --end S)",
-                path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2,
-                R->win_first_moving_s);
+        motion_report(R, path, hx_arg(&a, "--profile") != NULL);
     }
     if (!R->moving) {
         disturbed_check(R, path);
@@ -2088,9 +2227,10 @@ int hx_cmd_allan(int argc, char **argv)
     if (hx_arg(&a, "--plot") != NULL && write_plot(R, hx_arg(&a, "--plot")) != 0) {
         exit_code = HX_EXIT_IO;
     }
-    if (hx_arg(&a, "--profile") != NULL && (R->units_bad || R->moving)) {
+    if (hx_arg(&a, "--profile") != NULL && (R->units_bad || R->moving || R->win_moving > 0)) {
         hx_error(CMD, "%s: the log %s (above); profile not written", hx_arg(&a, "--profile"),
-                 R->moving ? "is not static" : "is not in SI units");
+                 R->moving ? "is not static" : R->units_bad ? "is not in SI units" : "moves in places");
+        exit_code = HX_EXIT_DATA;
     } else if (hx_arg(&a, "--profile") != NULL) {
         if (hx_arg(&a, "--name") != NULL) {
             snprintf(name, sizeof name, "%s", hx_arg(&a, "--name"));
