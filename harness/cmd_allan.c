@@ -77,7 +77,11 @@ static const hx_spec_t k_spec = {
     "simulated and run through the same estimator (the paper's Fig. 7 check).\n"
     "Parameters are printed in the units of the paper's Tables IV-VI (m/s^2,\n"
     "deg/s; tau in samples at the log's rate). --profile writes the corrected model\n"
-    "for `harness replay --profile` (docs/profile-format.md).",
+    "for `harness replay --profile` (docs/profile-format.md); where its AR(1) part\n"
+    "is not identified, the bound printed under the parameter table instead. It\n"
+    "needs a log at rest: one that moves, even for a second (handled at its start),\n"
+    "gets no profile, exit 1, and the message names the `harness convert` command\n"
+    "that cuts it to its still part.",
     0, 1, k_opts
 };
 
