@@ -77,7 +77,11 @@ static const hx_spec_t k_spec = {
     "simulated and run through the same estimator (the paper's Fig. 7 check).\n"
     "Parameters are printed in the units of the paper's Tables IV-VI (m/s^2,\n"
     "deg/s; tau in samples at the log's rate). --profile writes the corrected model\n"
-    "for `harness replay --profile` (docs/profile-format.md).",
+    "for `harness replay --profile` (docs/profile-format.md); where its AR(1) part\n"
+    "is not identified, the bound printed under the parameter table instead. It\n"
+    "needs a log at rest: one that moves, even for a second (handled at its start),\n"
+    "gets no profile, exit 1, and the message names the `harness convert` command\n"
+    "that cuts it to its still part.",
     0, 1, k_opts
 };
 
@@ -514,18 +518,21 @@ static int cmp_double(const void *x, const void *y)
  * and 0.2 m/s^2 for 0.5 s in 30 minutes of ADIS16405 log 1 (noise spread
  * 0.012 rad/s) stayed below the moving marks and was fitted, without a
  * word, as a gz bias of 0.096 deg/s with T = 0.3 s (the static review). */
-static void disturbed_check(const run_t *R, const char *path)
+/* The median window's rate and |f| spread (med[0], med[1]) for the
+ * disturbance check; -1 when there are too few windows, too short ones, or
+ * their spreads were not kept (out of memory). */
+static int spread_medians(const run_t *R, double med[2])
 {
-    double med[2], *v, first_s = 0.0;
-    long i, n = R->win_n, count = 0;
+    double *v;
+    long i, n = R->win_n;
     int k;
     if (n < HX_ALLAN_DISTURBED_MIN_WIN || R->win_len < HX_ALLAN_DISTURBED_MIN_LEN || (size_t)n > R->win_cap ||
         R->win_spread == NULL) {
-        return;
+        return -1;
     }
     v = (double *)malloc((size_t)n * sizeof *v);
     if (v == NULL) {
-        return;
+        return -1;
     }
     for (k = 0; k < 2; k++) {
         for (i = 0; i < n; i++) {
@@ -535,12 +542,33 @@ static void disturbed_check(const run_t *R, const char *path)
         med[k] = (n & 1) ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
     }
     free(v);
+    return 0;
+}
+
+/* Window i (0 <= i < win_n, spreads kept) moves (HX_ALLAN_MOVING_*). */
+static int window_moving(const run_t *R, long i)
+{
+    return R->win_spread[2 * i] > HX_ALLAN_MOVING_GYRO_RPS || R->win_spread[2 * i + 1] > HX_ALLAN_MOVING_F_MPS2;
+}
+
+/* Window i is disturbed: not moving, but its spread is over
+ * HX_ALLAN_DISTURBED_RATIO times the median window's (med). */
+static int window_disturbed(const run_t *R, long i, const double med[2])
+{
+    const double g = R->win_spread[2 * i], f = R->win_spread[2 * i + 1];
+    return !window_moving(R, i) && ((med[0] > 0.0 && g > HX_ALLAN_DISTURBED_RATIO * med[0]) ||
+                                    (med[1] > 0.0 && f > HX_ALLAN_DISTURBED_RATIO * med[1]));
+}
+
+static void disturbed_check(const run_t *R, const char *path)
+{
+    double med[2], first_s = 0.0;
+    long i, n = R->win_n, count = 0;
+    if (spread_medians(R, med) != 0) {
+        return;
+    }
     for (i = 0; i < n; i++) {
-        const double g = R->win_spread[2 * i], f = R->win_spread[2 * i + 1];
-        const int moving = g > HX_ALLAN_MOVING_GYRO_RPS || f > HX_ALLAN_MOVING_F_MPS2;
-        const int dist = (med[0] > 0.0 && g > HX_ALLAN_DISTURBED_RATIO * med[0]) ||
-                         (med[1] > 0.0 && f > HX_ALLAN_DISTURBED_RATIO * med[1]);
-        if (dist && !moving) {
+        if (window_disturbed(R, i, med)) {
             if (count == 0) {
                 first_s = (double)i * (double)R->win_len / R->rate_hz;
             }
@@ -1124,10 +1152,11 @@ static void print_table(const run_t *R, const chan_t *ch)
 }
 
 static int ar1_resolved(const run_t *R, const chan_t *ch);
+static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m);
 
 static void print_params(const run_t *R)
 {
-    int i;
+    int i, nbound = 0;
     printf("\nBias model, units of the paper's Tables IV-VI (sigma_v in unit/sqrt(Hz), tau in samples at %g Hz,\n"
            "sigma_bias in unit; quality: RMS of log10 ADEV model/measured over tau <= %.3g s, and model/measured\n"
            "at the measured minimum):\n",
@@ -1160,12 +1189,32 @@ static void print_params(const run_t *R)
             }
             if (!ar1_resolved(R, ch)) {
                 /* the JSON's ar1_identified = false: not the bias a profile takes */
-                printf("  AR(1) not resolved by the curve");
+                printf("  AR(1) not resolved by the curve: see below");
             }
             printf("\n");
         } else {
             printf(" n/a (%s)\n", ch->constant ? "constant channel" : "fit failed");
         }
+    }
+    /* Where the fit's AR(1) is not identified its numbers are no noise model
+     * of the sensor (30 minutes of ADIS16405 log 1: gx sigma_v 0.0039
+     * deg/s/sqrt(Hz) against the 0.0408 the profile holds), yet they read as
+     * one: say so under the table, with the numbers a profile takes. */
+    for (i = 0; i < R->nch; i++) {
+        const chan_t *ch = &R->ch[i];
+        hx_noise_model_t m;
+        if (profile_model(R, ch, &m) != 1) {
+            continue;
+        }
+        if (nbound++ == 0) {
+            printf("AR(1) not identified (the JSON's ar1_identified false): the corrected sigma_v, tau and sigma_bias "
+                   "of these\nchannels are no model of the sensor. %s instead the paper's sigma_v (the ADEV at 1 "
+                   "s) and the\nGauss-Markov bound from the Allan minimum (T = t_BS / 1.89, sigma_bias = BS / "
+                   "0.6174; docs/allan.md):\n",
+                   R->is_series ? "A log's --profile would hold" : "--profile holds");
+        }
+        printf("%-6s %-6s | %s: sigma_v %.3g, tau %.0f samples (%.3g s), sigma_bias %.3g\n", ch->label, ch->unit,
+               R->is_series ? "bound" : "profile", m.white, m.gm_tau_s * R->rate_hz, m.gm_tau_s, m.gm_sigma);
     }
     printf("\nOther readings of the paper's parameters (RMS log10 ADEV model/measured; model/measured at the minimum):\n"
            "  drive:  sigma_bias taken as the std of the driving noise n_k (the Fig. 7 text), stationary std\n"
@@ -1357,6 +1406,18 @@ static int write_json(const run_t *R, const char *path)
         /* false: no fit, or the curve does not resolve its AR(1) part; a
          * --profile then holds the bound from the Allan minimum */
         cJSON_AddBoolToObject(p, "ar1_identified", ch->id_ok && ar1_resolved(R, ch));
+        /* the model a --profile takes: the fit, or where its AR(1) is not
+         * identified the bound from the Allan minimum (whose numbers the
+         * corrected object above does not hold); empty when there is none */
+        p = cJSON_AddObjectToObject(c, "profile");
+        {
+            hx_noise_model_t m;
+            const int bound = profile_model(R, ch, &m);
+            if (bound >= 0) {
+                cJSON_AddStringToObject(p, "basis", bound ? "bound" : "fit");
+                json_model(p, &m, R->rate_hz);
+            }
+        }
         t = cJSON_AddArrayToObject(c, "table");
         for (k = 0; k < ch->nres; k++) {
             const fnav_allan_result_t *r = &ch->res[k];
@@ -1510,6 +1571,126 @@ static void base_name(const char *path, char *out, size_t n)
     }
 }
 
+/* The still part of a static log that moves in places (a few windows: it
+ * was handled at its start or end, or knocked): the longest run of windows
+ * that do not move, its ends moved inward past the disturbed windows next to
+ * a moving one (the tail of the handling), in whole seconds from the first
+ * sample, rounded inward: *start_s (0: from the first sample) and *end_s (0:
+ * to the last). *from_s and *to_s span the moving windows, the first's
+ * start to the last's end. -1 when the windows' spreads were not kept (out
+ * of memory) or no window is still. */
+static int still_part(const run_t *R, double *from_s, double *to_s, double *start_s, double *end_s)
+{
+    const double win_s = (double)R->win_len / R->rate_hz;
+    double med[2];
+    long i, run_a = 0, a = 0, b = 0, first = -1, last = -1;
+    int have_med;
+    if (R->win_spread == NULL || (size_t)R->win_n > R->win_cap || !(win_s > 0.0)) {
+        return -1;
+    }
+    have_med = spread_medians(R, med) == 0;
+    for (i = 0; i <= R->win_n; i++) {
+        if (i == R->win_n || window_moving(R, i)) {
+            if (i - run_a > b - a) {
+                a = run_a;
+                b = i;
+            }
+            run_a = i + 1;
+            if (i < R->win_n) {
+                first = first < 0 ? i : first;
+                last = i;
+            }
+        }
+    }
+    while (have_med && a > 0 && a < b && window_disturbed(R, a, med)) {
+        a++;
+    }
+    while (have_med && b < R->win_n && b > a && window_disturbed(R, b - 1, med)) {
+        b--;
+    }
+    if (first < 0 || b <= a) {
+        return -1;
+    }
+    *from_s = (double)first * win_s;
+    *to_s = (double)(last + 1) * win_s;
+    *start_s = a > 0 ? ceil((double)a * win_s - 1e-9) : 0.0;
+    *end_s = b < R->win_n ? floor((double)b * win_s + 1e-9) : 0.0;
+    return *end_s > 0.0 && !(*end_s > *start_s) ? -1 : 0;
+}
+
+/* path as one shell word (n >= 8): as it is when it holds only characters
+ * no shell reads, else in single quotes (a quote inside as '\''). */
+static void shell_word(const char *path, char *out, size_t n)
+{
+    size_t len = 0;
+    const char *c;
+    if (path[0] != '\0' &&
+        strspn(path, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./+,:=@%-") == strlen(path)) {
+        snprintf(out, n, "%s", path);
+        return;
+    }
+    out[len++] = '\'';
+    for (c = path; *c != '\0' && len + 6 < n; c++) {
+        if (*c == '\'') {
+            memcpy(out + len, "'\\''", 4);
+            len += 4;
+        } else {
+            out[len++] = *c;
+        }
+    }
+    out[len++] = '\'';
+    out[len] = '\0';
+}
+
+/* A static log that moves in some of its windows, fewer than
+ * HX_ALLAN_MOVING_FRAC of them (a log that starts with handling: the sensor
+ * picked up and put down). The Allan variance includes that motion, and a
+ * profile from it is no sensor's: 5 s of handling (1-2 m/s^2, 1 rad/s) at
+ * the start of 30 minutes of ADIS16405 log 1 raised the gx noise the
+ * profile held 14 times (0.555 against 0.0408 deg/s/sqrt(Hz)), with a
+ * warning that named only the first moving second and exit 0. The message
+ * names the span that moves and the command that cuts the log to its
+ * longest still part; with --profile (profile != 0) it is an error: no
+ * profile is written (the caller), the tables still are. */
+static void motion_report(const run_t *R, const char *path, int profile)
+{
+    double from_s = R->win_first_moving_s, to_s = 0.0, start_s = 0.0, end_s = 0.0;
+    char log[1100], out[300], base[256], cut[1500], span[96];
+    const int have = still_part(R, &from_s, &to_s, &start_s, &end_s) == 0;
+    if (have) {
+        size_t len;
+        shell_word(path, log, sizeof log);
+        base_name(path, base, sizeof base);
+        snprintf(cut, sizeof cut, "%s_still.csv", base);
+        shell_word(cut, out, sizeof out);
+        len = (size_t)snprintf(cut, sizeof cut, "bin/harness convert %s %s", log, out);
+        if (start_s > 0.0 && len < sizeof cut) {
+            len += (size_t)snprintf(cut + len, sizeof cut - len, " --start %.0f", start_s);
+        }
+        if (end_s > 0.0 && len < sizeof cut) {
+            snprintf(cut + len, sizeof cut - len, " --end %.0f", end_s);
+        }
+        snprintf(span, sizeof span, "from %.0f s to %.0f s", from_s, to_s);
+    } else {
+        snprintf(cut, sizeof cut, "bin/harness convert LOG OUT --start S --end S");
+        snprintf(span, sizeof span, "the first at %.0f s", from_s);
+    }
+    if (profile) {
+        hx_error(CMD,
+                 "%s: %ld of %ld one-second windows move (the rate spreads by more than %g rad/s RMS or |f| by more "
+                 "than %g m/s^2; %s): the Allan variance includes that motion, and a profile from it would hold a "
+                 "noise far above the sensor's, so none is written; cut the log to its still part (`%s`) and run "
+                 "allan on that (docs/allan.md, \"Command\")",
+                 path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2, span, cut);
+    } else {
+        hx_warn(CMD,
+                "%s: %ld of %ld one-second windows move (the rate spreads by more than %g rad/s RMS or |f| by more "
+                "than %g m/s^2; %s): the Allan variance and the parameters below include that motion (a --profile "
+                "would be refused); cut the log to its still part (`%s`)",
+                path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2, span, cut);
+    }
+}
+
 /* Whether the model (AVAR all at table entry r) exceeds the model without
  * one of its parts (null) by more than the measured point can tell: two
  * standard errors of its log ADEV, sqrt(1/(2 EDF) + floor^2) as in the fit's
@@ -1595,12 +1776,49 @@ static int ar1_resolved(const run_t *R, const chan_t *ch)
     return ar1_identified(R, ch, tau_long_of(R, ch));
 }
 
+/* The noise model a --profile takes for one channel (docs/allan.md, "When
+ * the AR(1) part is not identifiable"), in the channel's display unit:
+ * returns 0 with the fit where its AR(1) part is identified, 1 with the
+ * bound from the Allan minimum where it is not (the fit's numbers are then
+ * no model of the sensor: 30 minutes of ADIS16405 log 1 fitted gx with
+ * sigma_v 0.0039 deg/s/sqrt(Hz), ten times below the 0.0408 the profile
+ * holds), -1 when there is neither (no fit or no paper identification).
+ * The table, the JSON and write_profile() all take it from here. */
+static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m)
+{
+    memset(m, 0, sizeof *m);
+    if (ch->constant || !ch->id_ok || (!ch->id.fit_ok && !ch->id.paper_ok)) {
+        return -1;
+    }
+    if (ar1_resolved(R, ch)) {
+        *m = ch->id.fit;
+        return 0;
+    }
+    if (!ch->id.paper_ok) {
+        return -1;
+    }
+    /* The AR(1) part is not identifiable: white noise dominates the
+     * whole curve (typically a bias correlation time longer than a
+     * tenth of the record, or a record too short to leave the white
+     * part). Take the conservative first-order
+     * Gauss-Markov bound from the curve's minimum: the AR(1) Allan
+     * deviation peaks at 0.6174 sigma at tau = 1.893 T (docs/allan.md),
+     * so T = t_min / 1.89 and sigma = ADEV_min / 0.6174 put the model's bump
+     * on the lowest measured point. No upper bound for the bias in
+     * general: a pure Gauss-Markov channel (T = 1 s, sigma 0.004, no
+     * white noise, 10^4 s) gets T = 520 s, sigma 2.4e-4 (docs/allan.md). */
+    m->white = (double)ch->id.paper.sigma_v;
+    m->gm_tau_s = (double)ch->id.paper.t_bs_s / 1.89;
+    m->gm_sigma = (double)ch->id.paper.bs / 0.6174;
+    return 1;
+}
+
 static int write_profile(const run_t *R, const char *path, const char *name)
 {
     fnav_profile_t p;
     char err[320], comment[1024], extra[2048];
     size_t len = 0;
-    int i, have_q = 0, have_k = 0, nfallback = 0;
+    int i, have_q = 0, have_k = 0, nfallback = 0, bound;
     double tau_long_s;
     double q[6], kk[6], pv[6], pt[6], ps[6], rms[6], fallback[6];
     memset(&p, 0, sizeof p);
@@ -1622,33 +1840,23 @@ static int write_profile(const run_t *R, const char *path, const char *name)
             return -2;
         }
         tau_long_s = tau_long_of(R, ch);
-        if (ar1_identified(R, ch, tau_long_s)) {
-            m = ch->id.fit;
-            fallback[k] = 0;
-        } else if (!ch->id.paper_ok) {
+        bound = profile_model(R, ch, &m);
+        if (bound < 0) {
             hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
             return -2;
-        } else {
-            /* The AR(1) part is not identifiable: white noise dominates the
-             * whole curve (typically a bias correlation time longer than a
-             * tenth of the record, or a record too short to leave the white
-             * part). Write the conservative first-order
-             * Gauss-Markov bound from the curve's minimum: the AR(1) Allan
-             * deviation peaks at 0.6174 sigma at tau = 1.893 T (docs/allan.md),
-             * so T = t_min / 1.89 and sigma = ADEV_min / 0.6174 put the model's bump
-             * on the lowest measured point. No upper bound for the bias in
-             * general: a pure Gauss-Markov channel (T = 1 s, sigma 0.004, no
-             * white noise, 10^4 s) gets T = 520 s, sigma 2.4e-4 (docs/allan.md). */
-            memset(&m, 0, sizeof m);
-            m.white = (double)ch->id.paper.sigma_v;
-            m.gm_tau_s = (double)ch->id.paper.t_bs_s / 1.89;
-            m.gm_sigma = (double)ch->id.paper.bs / 0.6174;
-            fallback[k] = 1;
+        }
+        fallback[k] = bound;
+        if (bound) {
+            char fitw[48] = "no fit";
             nfallback++;
+            if (ch->id.fit_ok) {
+                snprintf(fitw, sizeof fitw, "not the fit's %.3g", ch->id.fit.white);
+            }
             hx_warn(CMD, "%s: the AR(1) bias of %s is not identifiable within the record (longest tau %.3g s, "
-                         "Allan minimum at %.3g s); the profile holds the bound T = %.3g s, sigma = %.3g %s "
-                         "from that minimum",
-                    path, ch->name, tau_long_s, (double)ch->id.paper.t_bs_s, m.gm_tau_s, m.gm_sigma, ch->unit);
+                         "Allan minimum at %.3g s); the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV "
+                         "at 1 s; %s) and the bound T = %.3g s, sigma = %.3g %s from that minimum",
+                    path, ch->name, tau_long_s, (double)ch->id.paper.t_bs_s, m.white, ch->unit, fitw, m.gm_tau_s,
+                    m.gm_sigma, ch->unit);
         }
         if (k < 3) {
             p.accel_noise_mps2_rthz[k] = (fnav_real_t)(m.white * si);
@@ -1963,12 +2171,7 @@ int hx_cmd_allan(int argc, char **argv)
                  R->win_first_moving_s);
         exit_code = HX_EXIT_DATA;
     } else if (R->win_moving > 0) {
-        hx_warn(CMD,
-                "%s: %ld of %ld one-second windows move (the rate spreads by more than %g rad/s RMS or |f| by more "
-                "than %g m/s^2; the first at %.0f s): the Allan variance includes that motion; cut the log to its "
-                "still part (harness convert LOG OUT --start S --end S)",
-                path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2,
-                R->win_first_moving_s);
+        motion_report(R, path, hx_arg(&a, "--profile") != NULL);
     }
     if (!R->moving) {
         disturbed_check(R, path);
@@ -2028,9 +2231,10 @@ int hx_cmd_allan(int argc, char **argv)
     if (hx_arg(&a, "--plot") != NULL && write_plot(R, hx_arg(&a, "--plot")) != 0) {
         exit_code = HX_EXIT_IO;
     }
-    if (hx_arg(&a, "--profile") != NULL && (R->units_bad || R->moving)) {
+    if (hx_arg(&a, "--profile") != NULL && (R->units_bad || R->moving || R->win_moving > 0)) {
         hx_error(CMD, "%s: the log %s (above); profile not written", hx_arg(&a, "--profile"),
-                 R->moving ? "is not static" : "is not in SI units");
+                 R->moving ? "is not static" : R->units_bad ? "is not in SI units" : "moves in places");
+        exit_code = HX_EXIT_DATA;
     } else if (hx_arg(&a, "--profile") != NULL) {
         if (hx_arg(&a, "--name") != NULL) {
             snprintf(name, sizeof name, "%s", hx_arg(&a, "--name"));

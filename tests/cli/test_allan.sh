@@ -340,6 +340,62 @@ print(bad, marked)
 sys.exit(1 if bad or marked == 0 else 0)
 PYEOF
 then pass "unresolved fits marked in the parameter table, columns kept"; else fail "unresolved fits in the table"; fi
+# ... and the numbers the profile holds for them were nowhere but in the profile: the table and the JSON gave the
+# fit's (30 minutes of ADIS16405 log 1: gx sigma_v 0.0039 deg/s/sqrt(Hz), the profile 0.0408) beside a mark or
+# ar1_identified false. Now a line under the table and the JSON's profile object give them, checked here against
+# the profile file itself (SI units), and identified channels get neither line nor other numbers
+expect_exit 0 "10 s of white noise, a profile" "$H" allan "$T/w10s.csv" --no-sim --quiet --json "$T/w10p.json" \
+    --profile "$T/w10s.profile"
+if "$PY" - "$T/out" "$T/w10p.json" "$T/w10s.profile" <<'PYEOF'
+import json, math, sys
+lab = {"ax": "Acc x", "ay": "Acc y", "az": "Acc z", "gx": "Gyr x", "gy": "Gyr y", "gz": "Gyr z"}
+lines = {}
+for l in open(sys.argv[1]):
+    if l[:5] in lab.values() and "| profile: " in l:
+        lines[l[:5]] = l
+prof = {}
+for l in open(sys.argv[3]):
+    if "=" in l and not l.startswith("#"):
+        k, v = l.split("=", 1)
+        prof[k.strip()] = v.split()
+bad, nbound = [], 0
+for i, c in enumerate(json.load(open(sys.argv[2]))["channels"]):
+    n, p = c["name"], c["profile"]
+    si = 1.0 if n[0] == "a" else math.pi / 180
+    pre = "accel" if n[0] == "a" else "gyro"
+    u = "mps2" if n[0] == "a" else "rps"
+    want = [float(prof["%s_noise_%s_rthz" % (pre, u)][i % 3]) / si, float(prof["%s_tau_s" % pre][i % 3]),
+            float(prof["%s_bias_sigma_%s" % (pre, u)][i % 3]) / si]
+    got = [p["sigma_v"], p["tau_s"], p["sigma_bias"]]
+    if any(abs(g - w) > 1e-5 * abs(w) for g, w in zip(got, want)):
+        bad.append((n, "json", got, want))
+    if p["basis"] != ("fit" if c["corrected"]["ar1_identified"] else "bound"):
+        bad.append((n, "basis", p["basis"]))
+    row = lines.get(lab[n])
+    if p["basis"] == "fit":
+        if row is not None:
+            bad.append((n, "a profile line for an identified channel", row))
+        continue
+    nbound += 1
+    if row is None:
+        bad.append((n, "no profile line"))
+        continue
+    f = row.split("profile:")[1].replace(",", " ").replace("(", " ").split()
+    shown = [float(f[1]), float(f[5]), float(f[8])]  # sigma_v X tau N samples (T s) sigma_bias Y
+    if any(abs(g - w) > 0.005 * abs(w) for g, w in zip(shown, want)):
+        bad.append((n, "table", shown, want))
+print(bad, nbound)
+sys.exit(1 if bad or nbound == 0 else 0)
+PYEOF
+then pass "what the profile holds for unresolved fits is in the table and the JSON"; else
+    fail "what the profile holds for unresolved fits"; fi
+F30=$(data adis16405_static/adis16405_imu1_100Hz.csv.gz)
+if [ -n "$F30" ]; then
+    "$H" convert "$F30" "$T/first30.csv" --end 1800 >/dev/null 2>&1 || fail "convert the first 30 minutes of log 1"
+    expect_exit 0 "30 minutes of ADIS16405 log 1" "$H" allan "$T/first30.csv" --no-sim --quiet
+    expect_out "^Gyr x  deg/s  | profile: sigma_v 0.0408, tau 4315 samples (43.2 s), sigma_bias 0.00917$" \
+        "log 1's gx: the white noise the profile holds (0.0408, not the fit's 0.0039) under the table"
+fi
 # White noise alone has no bias to identify, yet the fit's AR(1) was taken as resolved (ar1_identified true,
 # held by a profile as the bias) whenever it raised the model 5 % above the white part somewhere: in 26 of 100
 # records of 10 s to 1000 s (Gaussian, 100 Hz), since the measured ADEV there is uncertain by far more than 5 %
@@ -488,7 +544,51 @@ awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 12000; i++) 
             0.007 * (rand() - 0.5), 0.007 * (rand() - 0.5) } }' >"$T/handled.csv"
 expect_exit 0 "a static log with 3 s handled" "$H" allan "$T/handled.csv" --no-sim --quiet
 expect_err "handled.csv: 3 of 120 one-second windows move" "the handled seconds are warned about"
-expect_err "the first at 50 s" "the first moving second is named"
+expect_err "from 50 s to 53 s" "the moving span is named"
+expect_err "(\`bin/harness convert $T/handled.csv handled_still.csv --start 53\`)" \
+    "the command that cuts the log to its longest still part is named"
+# A static log that starts with handling (5 s of 1-2 m/s^2 and 1 rad/s, its last 0.4 s too weak to count as moving,
+# then 115 s at rest; white noise of 0.007/sqrt(12) rad/s per sample, 2.02e-4 rad/s/sqrt(Hz) at 100 Hz) gave a
+# warning naming the first moving second and a profile holding the motion, exit 0: on 30 minutes of ADIS16405 log 1
+# the gx noise 14 times the sensor's (0.555 against 0.0408 deg/s/sqrt(Hz)). Now --profile is refused, exit 1, the
+# tables still written; the warning names the span and the exact command, which cuts the handling and the weak tail
+# (a disturbed window) off, and the cut log gives the white noise within 15 %
+awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 12000; i++) {
+     m = i < 500 ? 1 : i < 540 ? 0.06 : 0;
+     printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 100, 0.05 * (rand() - 0.5) + m * 2 * sin(i / 15),
+            0.05 * (rand() - 0.5) + m * 1 * cos(i / 11), 9.81 + 0.05 * (rand() - 0.5),
+            0.007 * (rand() - 0.5) + m * 1.4 * sin(i / 9), 0.007 * (rand() - 0.5), 0.007 * (rand() - 0.5) + m * cos(i / 13) } }' \
+    >"$T/pickup.csv"
+expect_exit 1 "a log handled at its start, --profile" "$H" allan "$T/pickup.csv" --no-sim --quiet --out "$T/pickup_t.csv" \
+    --profile "$T/pickup.profile"
+expect_err "pickup.csv: 5 of 120 one-second windows move" "the handling is named"
+expect_err "from 0 s to 5 s" "the handled span is named"
+expect_err "a profile from it would hold a noise far above the sensor's, so none is written" "no profile from it, said"
+expect_err "pickup.profile: the log moves in places (above); profile not written" "the profile is refused"
+[ -s "$T/pickup_t.csv" ] && [ ! -e "$T/pickup.profile" ] && pass "handled log: table written, no profile" ||
+    fail "handled log: outputs"
+CUT=$(sed -n 's/.*(`\(bin\/harness convert [^`]*\)`).*/\1/p' "$T/err")
+if [ "$CUT" = "bin/harness convert $T/pickup.csv pickup_still.csv --start 6" ]; then
+    pass "the cut starts after the handling and its weak tail ($CUT)"; else fail "the cut command: '$CUT'"; fi
+expect_exit 0 "the cut command runs" sh -c "cd '$T' && '$H' ${CUT#bin/harness }"
+expect_exit 0 "a profile from the cut log" "$H" allan "$T/pickup_still.csv" --no-sim --quiet --profile "$T/still.profile"
+if "$PY" - "$T/still.profile" <<'PYEOF'
+import sys
+kv = dict((l.split("=", 1)[0].strip(), l.split("=", 1)[1].split()) for l in open(sys.argv[1]) if "=" in l and l[0] != "#")
+g = [float(x) for x in kv["gyro_noise_rps_rthz"]]
+ref = 0.007 / 12 ** 0.5 / 100 ** 0.5
+print(g, ref)
+sys.exit(0 if all(abs(x / ref - 1) < 0.15 for x in g) else 1)
+PYEOF
+then pass "the cut log's profile holds the white noise (2.02e-4 rad/s/sqrt(Hz))"; else fail "the cut log's profile"; fi
+# ... and handled at its end: the cut keeps the part before it (--end), without --profile a warning, exit 0
+awk 'BEGIN { srand(8); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 12000; i++) { m = i >= 11700 ? 1 : 0;
+     printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 100, 0.05 * (rand() - 0.5) + m * 2 * sin(i / 15),
+            0.05 * (rand() - 0.5), 9.81 + 0.05 * (rand() - 0.5), 0.007 * (rand() - 0.5) + m * 1.4 * sin(i / 9),
+            0.007 * (rand() - 0.5), 0.007 * (rand() - 0.5) } }' >"$T/putdown.csv"
+expect_exit 0 "a log handled at its end, no --profile" "$H" allan "$T/putdown.csv" --no-sim --quiet
+expect_err "(\`bin/harness convert $T/putdown.csv putdown_still.csv --end 117\`)" "the cut ends before the handling"
+expect_err "a --profile would be refused" "the warning says a profile would be refused"
 # a static log touched once (0.5 s of 0.1 rad/s on gz, 0.2 m/s^2 on ax at 300 s of 600): below the moving marks, it
 # passed without a word, and on 30 minutes of ADIS16405 log 1 it was fitted as a gz bias of 0.096 deg/s with
 # T = 0.3 s (the static review); the window is now named as disturbed, the status unchanged (0). The same log
