@@ -538,10 +538,16 @@ if [ -n "$G2" ]; then
         pass "no unit mistake named for a walk in m/s^2"; fi
 fi
 # a static log handled for 3 s of its 120: a warning naming the motion, the status unchanged (0)
-awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 12000; i++) { m = (i >= 5000 && i < 5300) ? 1 : 0;
-     printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 100, 0.05 * (rand() - 0.5) + m * 3 * sin(i / 5),
-            0.05 * (rand() - 0.5), 9.81 + 0.05 * (rand() - 0.5), 0.007 * (rand() - 0.5) + m * 2 * cos(i / 7),
-            0.007 * (rand() - 0.5), 0.007 * (rand() - 0.5) } }' >"$T/handled.csv"
+# still_log SEED N ACCEL_NOISE GYRO_NOISE MOTION AX AY GX GZ: a 100 Hz static log of N samples on stdout, uniform
+# noise of the given widths (m/s^2, rad/s), plus MOTION (an awk expression in the sample index i) times the awk
+# expressions AX, AY, GX, GZ added to those channels
+still_log() {
+    awk "BEGIN { srand($1); print \"t,ax,ay,az,gx,gy,gz\"; for (i = 0; i < $2; i++) { m = $5;
+         printf \"%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\\n\", i / 100, $3 * (rand() - 0.5) + m * ($6),
+                $3 * (rand() - 0.5) + m * ($7), 9.81 + $3 * (rand() - 0.5), $4 * (rand() - 0.5) + m * ($8),
+                $4 * (rand() - 0.5), $4 * (rand() - 0.5) + m * ($9) } }"
+}
+still_log 5 12000 0.05 0.007 '(i >= 5000 && i < 5300) ? 1 : 0' '3 * sin(i / 5)' 0 '2 * cos(i / 7)' 0 >"$T/handled.csv"
 expect_exit 0 "a static log with 3 s handled" "$H" allan "$T/handled.csv" --no-sim --quiet
 expect_err "handled.csv: 3 of 120 one-second windows move" "the handled seconds are warned about"
 expect_err "from 50 s to 53 s" "the moving span is named"
@@ -553,12 +559,8 @@ expect_err "(\`bin/harness convert $T/handled.csv handled_still.csv --start 53\`
 # the gx noise 14 times the sensor's (0.555 against 0.0408 deg/s/sqrt(Hz)). Now --profile is refused, exit 1, the
 # tables still written; the warning names the span and the exact command, which cuts the handling and the weak tail
 # (a disturbed window) off, and the cut log gives the white noise within 15 %
-awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 12000; i++) {
-     m = i < 500 ? 1 : i < 540 ? 0.06 : 0;
-     printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 100, 0.05 * (rand() - 0.5) + m * 2 * sin(i / 15),
-            0.05 * (rand() - 0.5) + m * 1 * cos(i / 11), 9.81 + 0.05 * (rand() - 0.5),
-            0.007 * (rand() - 0.5) + m * 1.4 * sin(i / 9), 0.007 * (rand() - 0.5), 0.007 * (rand() - 0.5) + m * cos(i / 13) } }' \
-    >"$T/pickup.csv"
+still_log 7 12000 0.05 0.007 'i < 500 ? 1 : i < 540 ? 0.06 : 0' '2 * sin(i / 15)' 'cos(i / 11)' '1.4 * sin(i / 9)' \
+    'cos(i / 13)' >"$T/pickup.csv"
 expect_exit 1 "a log handled at its start, --profile" "$H" allan "$T/pickup.csv" --no-sim --quiet --out "$T/pickup_t.csv" \
     --profile "$T/pickup.profile"
 expect_err "pickup.csv: 5 of 120 one-second windows move" "the handling is named"
@@ -582,10 +584,7 @@ sys.exit(0 if all(abs(x / ref - 1) < 0.15 for x in g) else 1)
 PYEOF
 then pass "the cut log's profile holds the white noise (2.02e-4 rad/s/sqrt(Hz))"; else fail "the cut log's profile"; fi
 # ... and handled at its end: the cut keeps the part before it (--end), without --profile a warning, exit 0
-awk 'BEGIN { srand(8); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 12000; i++) { m = i >= 11700 ? 1 : 0;
-     printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 100, 0.05 * (rand() - 0.5) + m * 2 * sin(i / 15),
-            0.05 * (rand() - 0.5), 9.81 + 0.05 * (rand() - 0.5), 0.007 * (rand() - 0.5) + m * 1.4 * sin(i / 9),
-            0.007 * (rand() - 0.5), 0.007 * (rand() - 0.5) } }' >"$T/putdown.csv"
+still_log 8 12000 0.05 0.007 'i >= 11700 ? 1 : 0' '2 * sin(i / 15)' 0 '1.4 * sin(i / 9)' 0 >"$T/putdown.csv"
 expect_exit 0 "a log handled at its end, no --profile" "$H" allan "$T/putdown.csv" --no-sim --quiet
 expect_err "(\`bin/harness convert $T/putdown.csv putdown_still.csv --end 117\`)" "the cut ends before the handling"
 expect_err "a --profile would be refused" "the warning says a profile would be refused"
@@ -594,11 +593,7 @@ expect_err "a --profile would be refused" "the warning says a profile would be r
 # T = 0.3 s (the static review); the window is now named as disturbed, the status unchanged (0). The same log
 # untouched: no such warning
 for touch in 1 0; do
-    awk -v touch=$touch 'BEGIN { srand(11); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 60000; i++) {
-         m = (touch && i >= 30000 && i < 30050) ? 1 : 0;
-         printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 100, 0.1 * (rand() - 0.5) + m * 0.2,
-                0.1 * (rand() - 0.5), 9.81 + 0.1 * (rand() - 0.5), 0.02 * (rand() - 0.5),
-                0.02 * (rand() - 0.5), 0.02 * (rand() - 0.5) + m * 0.1 } }' >"$T/touch$touch.csv"
+    still_log 11 60000 0.1 0.02 "($touch && i >= 30000 && i < 30050) ? 1 : 0" 0.2 0 0 0.1 >"$T/touch$touch.csv"
 done
 expect_exit 0 "a static log touched for 0.5 s" "$H" allan "$T/touch1.csv" --no-sim --quiet
 expect_err "touch1.csv: 1 of 600 one-second windows are disturbed" "the touch is warned about"
