@@ -229,11 +229,13 @@ static void test_step_boundaries(void **state)
     fnav_stance_out_t o;
     const double rate = 200.0;
     long k, n = 400, m0 = 150, m1 = 250; /* motion in [m0, m1) */
-    long run0 = -1, swing_run0 = -1, seg_off = -1, n_min_swing;
+    long run0 = -1, swing_run0 = -1, seg_off = -1, n_min_swing, n_min_stance, stance_run0 = -1, stride_at = -1;
     int strides = 0, prev_stance = 1;
     (void)state;
     n_min_swing = lround((double)c.min_swing_s * rate);
     assert_int_equal(n_min_swing, 50);
+    n_min_stance = lround((double)c.min_stance_s * rate);
+    assert_int_equal(n_min_stance, 10);
     c.rate_hz = (fnav_real_t)rate;
     assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
     for (k = 0; k <= n; k++) {
@@ -271,6 +273,9 @@ static void test_step_boundaries(void **state)
             if (!o.stance && prev_stance) {
                 run0 = j; /* a swing run starts */
             }
+            if (o.stance && !prev_stance) {
+                stance_run0 = j; /* a stance run starts */
+            }
             prev_stance = o.stance;
             if (j == m0) {
                 swing_run0 = run0; /* the run the motion is in */
@@ -280,6 +285,7 @@ static void test_step_boundaries(void **state)
             }
             if (o.events & FNAV_STANCE_EV_STRIDE) {
                 strides++;
+                stride_at = j;
             }
         }
     }
@@ -287,6 +293,10 @@ static void test_step_boundaries(void **state)
     assert_int_equal(st.strides, 1);
     assert_true(swing_run0 >= m0 - 2 && swing_run0 <= m0);
     assert_int_equal(seg_off, swing_run0 + n_min_swing - 1);
+    /* and a stance after min_stance_s (10 samples): the stride on the
+     * run's 10th sample, not the 11th */
+    assert_true(stance_run0 >= m1 && stance_run0 <= m1 + 2);
+    assert_int_equal(stride_at, stance_run0 + n_min_stance - 1);
 }
 
 /* A dip of the statistic below the threshold for fewer samples than
