@@ -486,6 +486,45 @@ static void test_threshold_both_below(void **state)
     assert_int_equal(frames, 100);
 }
 
+/* Stance when the statistic is below the threshold, T < gamma
+ * (docs/navigation.md "SHOE / GLRT"; the threshold detector's gamma is 1):
+ * a window whose gyro RMS equals its limit exactly is not at rest. With the
+ * limit 0.5 rad/s and a constant 0.5 rad/s about x, every term is exact in
+ * binary floating point: sum |w|^2 = W x 0.25 and W x 0.5^2, so T = 1.0 to
+ * the bit, and ||f| - g| = 0 (|f| = g exactly: the square root of a
+ * square) leaves the gyro ratio as the maximum. */
+static void test_threshold_at_limit(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    fnav_stance_out_t o;
+    double f[3] = { 0.0, 0.0, 0.0 }, w[3] = { 0.5, 0.0, 0.0 };
+    long k, frames = 0;
+    (void)state;
+    c.detector = FNAV_DETECTOR_THRESHOLD;
+    c.rate_hz = FNAV_R(100.0);
+    c.adaptive = 0;
+    c.gyro_thresh_rps = FNAV_R(0.5);
+    f[2] = -(double)c.gravity_mps2;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k <= 50; k++) {
+        if (k < 50) {
+            fnav_sample_t s = sample(k, 100.0, f, w);
+            assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        } else {
+            fnav_stance_finish(&st);
+        }
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            assert_true(o.stat == FNAV_R(1.0));
+            assert_true(o.gamma == FNAV_R(1.0));
+            assert_int_equal(o.raw_stance, 0);
+            assert_int_equal(o.stance, 0);
+            frames++;
+        }
+    }
+    assert_int_equal(frames, 50);
+}
+
 /* Gait events popped from the detector: the last foot-off and foot-strike
  * (as sample indices at `rate`) and how many of each. */
 typedef struct {
@@ -1022,6 +1061,7 @@ int main(void)
         cmocka_unit_test(test_adaptive_threshold),
         cmocka_unit_test(test_threshold_detector),
         cmocka_unit_test(test_threshold_both_below),
+        cmocka_unit_test(test_threshold_at_limit),
         cmocka_unit_test(test_gait_events),
         cmocka_unit_test(test_foot_off_short_pause),
         cmocka_unit_test(test_foot_strike_jumps_add_up),
