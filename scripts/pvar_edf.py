@@ -16,6 +16,10 @@ golden values of tests/test_allan.c and the figures in docs/allan.md
 - `--greenhall` prints the same computation for the overlapping Allan
   filter, which must reproduce Greenhall & Riley's own algorithm
   (fnav_allan_edf_var(alpha, 2, 0, m, n, 1)) wherever that sums exactly;
+- `--greenhall-table` the same exact computation for flicker phase noise
+  (alpha = 1) at points where Greenhall & Riley's algorithm uses its
+  approximation (J > 100 lags, r = M/m > 3: 1/edf = (a0 - a1/r) / (b^2 r),
+  b = b0 + b1 ln m, their case 3), which it must approach within a few %;
 - `--mc R` checks the model against simulation: R records of white phase,
   white FM and random-walk FM noise, the PVAR of each, and the EDF
   2 mean^2 / var of the R estimates (relative standard error about
@@ -27,7 +31,7 @@ with n - 2m + 1 terms against SigmaTheta's values (allan_reference/nbs14).
 `--nbs14-10` prints PDEV of NIST's 10-point set at m = 2 from the definition
 (no published value; at m = 1 PDEV is the overlapping ADEV, 91.22945).
 
-Usage: /usr/bin/python3 scripts/pvar_edf.py [--greenhall] [--mc R] [--nbs14-10] [--terms DATA_DIR]
+Usage: /usr/bin/python3 scripts/pvar_edf.py [--greenhall] [--greenhall-table] [--mc R] [--nbs14-10] [--terms DATA_DIR]
 """
 import math
 import os
@@ -125,6 +129,10 @@ def main():
         for alpha in (2, 1, 0, -1, -2):
             print(" ".join("%d/%d: %.10g" % (m, n, edf(avar_taps(m), m, n - 2 * m, alpha))
                            for m, n in POINTS[:4]), " alpha", alpha)
+    if "--greenhall-table" in args:
+        print("overlapping Allan filter, alpha 1, exact sum (compare fnav_allan_edf_var(1, 2, 0, m, n, 1)):")
+        print(" ".join("%d/%d: %.10g" % (m, n, edf(avar_taps(m), m, n - 2 * m, 1))
+                       for m, n in ((40, 1001), (64, 3001), (128, 4001))))
     if "--mc" in args:
         reps = int(args[args.index("--mc") + 1])
         rng = np.random.default_rng(1)
@@ -149,7 +157,7 @@ def main():
                 continue
             dev = [math.sqrt(pvar_record(x, m, k)) for k in (n - 2 * m, n - 2 * m + 1)]
             print("%3d  %+.1e  %+.1e" % (m, dev[0] / want - 1.0, dev[1] / want - 1.0))
-    if any(a in args for a in ("--greenhall", "--mc", "--nbs14-10", "--terms")):
+    if any(a in args for a in ("--greenhall", "--greenhall-table", "--mc", "--nbs14-10", "--terms")):
         return
     print("/* scripts/pvar_edf.py: PVAR EDF, rows alpha = 2 .. -2, columns (m, n_phase) =")
     print(" * " + ", ".join("(%d, %d)" % p for p in POINTS) + " */")

@@ -322,7 +322,7 @@ static double batch_means_se(const double *x, long n)
 
 static void test_gyro_bias_posterior(void **state)
 {
-    static double rates[150];
+    static double rates[400];
     fnav_align_t al;
     fnav_align_config_t c = fnav_align_config_default;
     const double rate = 200.0, b_true = 0.002, s0 = (double)c.gyro_bias_prior_sd_rps;
@@ -340,6 +340,7 @@ static void test_gyro_bias_posterior(void **state)
             u += (double)((seed >> 16) & 0x7fff) / 32768.0;
         }
         s.gyro_rps[1] = (fnav_real_t)(b_true + 0.005 * (u - 6.0));
+        rates[k] = (double)s.gyro_rps[1];
         assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_AGAIN);
     }
     {
@@ -351,6 +352,23 @@ static void test_gyro_bias_posterior(void **state)
         double k_shrink = s0 * s0 / (s0 * s0 + se * se);
         /* the standard error is of the white-noise order 0.005 / sqrt(400) */
         assert_true(se > 0.5 * 0.005 / 20.0 && se < 2.5 * 0.005 / 20.0);
+        {
+            /* and is it, recomputed here in double: the unbiased sample
+             * variance (divisor n - 1) over n, or the batch-means value
+             * where that is larger. A divisor n - 1 in the second place
+             * moves it by 1/(2 x 399) = 1.3e-3 relative; the float sums'
+             * rounding is far below 1e-4 */
+            double mean = 0.0, var = 0.0, se_white, se_bm;
+            for (k = 0; k < 400; k++) {
+                mean += rates[k] / 400.0;
+            }
+            for (k = 0; k < 400; k++) {
+                var += (rates[k] - mean) * (rates[k] - mean) / 399.0;
+            }
+            se_white = sqrt(var / 400.0);
+            se_bm = batch_means_se(rates, 400);
+            FNAV_ASSERT_CLOSE(se, se_white > se_bm ? se_white : se_bm, 0.0, 1e-4);
+        }
         assert_true(k_shrink > 0.99);
         FNAV_ASSERT_CLOSE(al.result.gyro_bias_rps.v[1], w * k_shrink, 0.0, 1e-5);
         FNAV_ASSERT_CLOSE(al.result.gyro_bias_sd_rps.v[1], s0 * se / sqrt(s0 * s0 + se * se), 0.0, 1e-5);

@@ -676,6 +676,25 @@ static void test_totdev_edf(void **state)
     assert_true(hx_dev_edf(HX_DEV_HTOTDEV, 0, 16u, 1001u) == hx_dev_edf(HX_DEV_OHDEV, 0, 16u, 1001u));
 }
 
+/* Flicker phase noise (alpha = 1) with more than 100 lags: Greenhall &
+ * Riley's algorithm switches from the exact basic sum to their case-3
+ * approximation 1/edf = (a0 - a1/r) / (b^2 r), b = b0 + b1 ln m. It must
+ * stay near the exact sum over all J = min(M, 3m) lags, which
+ * scripts/pvar_edf.py --greenhall-table computes in double from the
+ * filter's taps (no code shared with the C). The approximation is 1.9 %,
+ * 1.2 % and 0.6 % below it at these points; 3 % bounds that. A b with
+ * log10 m in place of ln m gives EDFs a third of these. */
+static void test_edf_flicker_pm_table(void **state)
+{
+    static const uint32_t pt[3][2] = { { 40u, 1001u }, { 64u, 3001u }, { 128u, 4001u } };
+    static const double exact[3] = { 107.5620414, 246.8457145, 204.7103324 };
+    int i;
+    (void)state;
+    for (i = 0; i < 3; i++) {
+        FNAV_ASSERT_CLOSE(fnav_allan_edf_var(1, 2, 0, pt[i][0], pt[i][1], 1), exact[i], 0.0, 0.03);
+    }
+}
+
 /* fnav_allan_edf_pvar() against scripts/pvar_edf.py (an independent double
  * computation at the full m): exact to m = 64, within 1e-3 above, where the
  * C code scales the filter of m = 64 (measured: 3.4e-4 at most). And the
@@ -1713,6 +1732,7 @@ int main(void)
         cmocka_unit_test(test_totdev_nbs14),
         cmocka_unit_test(test_totdev_edf),
         cmocka_unit_test(test_chi2_quantile_large),
+        cmocka_unit_test(test_edf_flicker_pm_table),
         cmocka_unit_test(test_pdev_edf),
         cmocka_unit_test(test_pdev_edf_simulated),
         cmocka_unit_test(test_phasedat_oadev_every_tau),

@@ -263,6 +263,14 @@ static void test_timing(void **state)
         if (k == 400) {
             shift += 10000000; /* a 15 ms interval: gap */
         }
+        if (k == 600) {
+            /* an 8 ms interval, 1.6 nominal ones: a gap (above 1.5,
+             * docs/navigation.md "Timing") */
+            shift += 3000000;
+        }
+        if (k == 800) {
+            shift += 2000000; /* a 7 ms interval, 1.4 nominal ones: no gap */
+        }
         if (k == 1200) {
             /* a 1 s interval: time jump, after the alignment (5 s of the
              * still foot: the alignment's max_still_s) */
@@ -296,7 +304,7 @@ static void test_timing(void **state)
     assert_true(jump_seen);
     assert_int_equal(frames, n + 2);
     assert_int_equal(nav.stats.duplicates, 2);
-    assert_int_equal(nav.stats.gaps, 1);
+    assert_int_equal(nav.stats.gaps, 2);
     assert_int_equal(nav.stats.time_jumps, 1);
     assert_true(fr.health & FNAV_HEALTH_DUPLICATE);
     assert_true(fr.health & FNAV_HEALTH_GAP);

@@ -105,6 +105,35 @@ static void still(run_t *r, double seconds)
     }
 }
 
+/* Divergence is diverge_undone (20) consecutive undone predictions
+ * (fnav_nav.h, docs/robustness.md): a good prediction ends the run. The
+ * navigator's input cannot easily produce an undone prediction (the
+ * covariance guard and the Cholesky reset repair a damaged covariance, the
+ * speed check resets an exploding state first), so the run of 19 is set
+ * here as if it had happened; one good step clears it, and 19 more set
+ * again, then a good step, do not reset the navigator. A run that the good
+ * steps did not clear (a hand-made mutant) passed every suite. */
+static void test_undone_run_cleared(void **state)
+{
+    static const double a[3] = { 0.0, 0.0, -9.80665 }, w[3] = { 0.0, 0.0, 0.0 };
+    run_t r;
+    int k;
+    (void)state;
+    init(&r, 200.0);
+    still(&r, 6.0);
+    assert_true(r.last.flags & FNAV_FRAME_ALIGNED);
+    assert_int_equal(g_nav.cfg.diverge_undone, 20u);
+    for (k = 0; k < 3; k++) {
+        long frames = r.frames;
+        g_nav.undone_run = 19u;
+        push(&r, a, w);
+        assert_int_equal(r.frames, frames + 1); /* one step, predicted */
+        assert_int_equal(g_nav.undone_run, 0u);
+    }
+    assert_int_equal(g_nav.stats.resets, 0u);
+    assert_true(r.last.flags & FNAV_FRAME_ALIGNED);
+}
+
 /* A physically impossible state (a foot at over 30 m/s) resets the
  * navigator; it re-aligns at the next still period and continues from the
  * last good position, so the trajectory stays continuous. */
@@ -448,6 +477,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_divergence_reset),
+        cmocka_unit_test(test_undone_run_cleared),
         cmocka_unit_test(test_reset_then_renewal),
         cmocka_unit_test(test_spin_2000dps),
         cmocka_unit_test(test_impacts_16g),

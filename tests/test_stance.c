@@ -229,11 +229,13 @@ static void test_step_boundaries(void **state)
     fnav_stance_out_t o;
     const double rate = 200.0;
     long k, n = 400, m0 = 150, m1 = 250; /* motion in [m0, m1) */
-    long run0 = -1, swing_run0 = -1, seg_off = -1, n_min_swing;
+    long run0 = -1, swing_run0 = -1, seg_off = -1, n_min_swing, n_min_stance, stance_run0 = -1, stride_at = -1;
     int strides = 0, prev_stance = 1;
     (void)state;
     n_min_swing = lround((double)c.min_swing_s * rate);
     assert_int_equal(n_min_swing, 50);
+    n_min_stance = lround((double)c.min_stance_s * rate);
+    assert_int_equal(n_min_stance, 10);
     c.rate_hz = (fnav_real_t)rate;
     assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
     for (k = 0; k <= n; k++) {
@@ -271,6 +273,9 @@ static void test_step_boundaries(void **state)
             if (!o.stance && prev_stance) {
                 run0 = j; /* a swing run starts */
             }
+            if (o.stance && !prev_stance) {
+                stance_run0 = j; /* a stance run starts */
+            }
             prev_stance = o.stance;
             if (j == m0) {
                 swing_run0 = run0; /* the run the motion is in */
@@ -280,6 +285,7 @@ static void test_step_boundaries(void **state)
             }
             if (o.events & FNAV_STANCE_EV_STRIDE) {
                 strides++;
+                stride_at = j;
             }
         }
     }
@@ -287,6 +293,10 @@ static void test_step_boundaries(void **state)
     assert_int_equal(st.strides, 1);
     assert_true(swing_run0 >= m0 - 2 && swing_run0 <= m0);
     assert_int_equal(seg_off, swing_run0 + n_min_swing - 1);
+    /* and a stance after min_stance_s (10 samples): the stride on the
+     * run's 10th sample, not the 11th */
+    assert_true(stance_run0 >= m1 && stance_run0 <= m1 + 2);
+    assert_int_equal(stride_at, stance_run0 + n_min_stance - 1);
 }
 
 /* A dip of the statistic below the threshold for fewer samples than
@@ -474,6 +484,45 @@ static void test_threshold_both_below(void **state)
         }
     }
     assert_int_equal(frames, 100);
+}
+
+/* Stance when the statistic is below the threshold, T < gamma
+ * (docs/navigation.md "SHOE / GLRT"; the threshold detector's gamma is 1):
+ * a window whose gyro RMS equals its limit exactly is not at rest. With the
+ * limit 0.5 rad/s and a constant 0.5 rad/s about x, every term is exact in
+ * binary floating point: sum |w|^2 = W x 0.25 and W x 0.5^2, so T = 1.0 to
+ * the bit, and ||f| - g| = 0 (|f| = g exactly: the square root of a
+ * square) leaves the gyro ratio as the maximum. */
+static void test_threshold_at_limit(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    fnav_stance_out_t o;
+    double f[3] = { 0.0, 0.0, 0.0 }, w[3] = { 0.5, 0.0, 0.0 };
+    long k, frames = 0;
+    (void)state;
+    c.detector = FNAV_DETECTOR_THRESHOLD;
+    c.rate_hz = FNAV_R(100.0);
+    c.adaptive = 0;
+    c.gyro_thresh_rps = FNAV_R(0.5);
+    f[2] = -(double)c.gravity_mps2;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k <= 50; k++) {
+        if (k < 50) {
+            fnav_sample_t s = sample(k, 100.0, f, w);
+            assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        } else {
+            fnav_stance_finish(&st);
+        }
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            assert_true(o.stat == FNAV_R(1.0));
+            assert_true(o.gamma == FNAV_R(1.0));
+            assert_int_equal(o.raw_stance, 0);
+            assert_int_equal(o.stance, 0);
+            frames++;
+        }
+    }
+    assert_int_equal(frames, 50);
 }
 
 /* Gait events popped from the detector: the last foot-off and foot-strike
@@ -1012,6 +1061,7 @@ int main(void)
         cmocka_unit_test(test_adaptive_threshold),
         cmocka_unit_test(test_threshold_detector),
         cmocka_unit_test(test_threshold_both_below),
+        cmocka_unit_test(test_threshold_at_limit),
         cmocka_unit_test(test_gait_events),
         cmocka_unit_test(test_foot_off_short_pause),
         cmocka_unit_test(test_foot_strike_jumps_add_up),
