@@ -344,5 +344,24 @@ if [ -n "$D" ]; then
     else fail "eval footprints against scripts/eval_stride_ref.py: $(cat "$T/ref")"; fi
 fi
 
+# --- the return-to-start table of the GX2 walks against
+# scripts/eval_closure_ref.py: 3-D = sqrt(horizontal^2 + vertical^2), each
+# % = 100 x error / path, vertical up positive as the trajectory's
+# -(z_end - z_start), the summary line the median (worst) of the rows. A 3-D
+# error without its height part, a vertical with the wrong sign and a
+# "median 3-D" taken of the horizontal % passed every test (the mutation
+# review, 2026-11-29)
+if [ -n "$D" ]; then
+    G="$T/gxref/openshoe_gx2"
+    mkdir -p "$G"
+    for w in 2 3 30 32; do ln -s "$D/openshoe_gx2/Measurement_100521_${w}_data_inert.txt" "$G/"; done
+    expect_exit 0 "eval: four GX2 walks" "$H" eval --no-experiments --no-plots --data "$T/gxref" --out "$T/gxref.md"
+    expect_exit 0 "replay: GX2 walk 2" "$H" replay "$G/Measurement_100521_2_data_inert.txt" --out "$T/g2.csv" --quiet
+    if /usr/bin/python3 "$(dirname "$0")/../../scripts/eval_closure_ref.py" "$T/gxref.md" "Measurement_100521_2=$T/g2.csv" \
+        >"$T/ref" 2>&1; then
+        pass "eval GX2 closure: 3-D, %, vertical sign and the summary's medians consistent"
+    else fail "eval GX2 closure against scripts/eval_closure_ref.py: $(cat "$T/ref")"; fi
+fi
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]
