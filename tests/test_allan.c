@@ -1517,6 +1517,35 @@ static void test_paper_tables_inconsistent(void **state)
     }
 }
 
+/* The three readings of the paper's identification (hx_allan_ident.h), each
+ * from its definition: EQ4 takes sigma_v as the density (ADEV at 1 s) and
+ * sigma_bias as the stationary sd; SAMPLE draws sigma_v as the per-sample
+ * std, density sigma_v / sqrt(f_s) (2e-2 / sqrt(200) = 1.41421e-3); DRIVE
+ * takes sigma_bias as the driving sd of eq. (4), stationary sd
+ * sigma_bias / sqrt(1 - c^2), c = e^(-1/tau): 1e-4 / sqrt(1 - e^(-2/400))
+ * = 1.41598e-3 (numpy). The SAMPLE density multiplied by sqrt(f_s) instead
+ * passed every test (the mutation review, 2026-11-29). */
+static void test_paper_readings(void **state)
+{
+    fnav_allan_paper_id_t id;
+    hx_noise_model_t m;
+    (void)state;
+    memset(&id, 0, sizeof id);
+    id.sigma_v = (fnav_real_t)2e-2;
+    id.sigma_bias = (fnav_real_t)1e-4;
+    id.tau_samples = (fnav_real_t)400.0;
+    hx_noise_model_paper_reading(&id, 200.0, HX_PAPER_EQ4, &m);
+    FNAV_ASSERT_CLOSE(m.white, 2e-2, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(m.gm_sigma, 1e-4, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(m.gm_tau_s, 2.0, 0.0, 1e-6);
+    hx_noise_model_paper_reading(&id, 200.0, HX_PAPER_SAMPLE, &m);
+    FNAV_ASSERT_CLOSE(m.white, 1.41421356e-3, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(m.gm_sigma, 1e-4, 0.0, 1e-6);
+    hx_noise_model_paper_reading(&id, 200.0, HX_PAPER_DRIVE, &m);
+    FNAV_ASSERT_CLOSE(m.white, 2e-2, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(m.gm_sigma, 1.41598e-3, 0.0, 1e-5);
+}
+
 static void test_profile_roundtrip(void **state)
 {
     fnav_profile_t p, q;
@@ -1765,6 +1794,7 @@ int main(void)
         cmocka_unit_test(test_noise_id_edges),
         cmocka_unit_test(test_sample_count_end),
         cmocka_unit_test(test_nonoverlap_count_end),
+        cmocka_unit_test(test_paper_readings),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

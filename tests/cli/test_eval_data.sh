@@ -321,5 +321,47 @@ if [ -n "$D" ]; then
     else fail "eval strides figure: title wider than the picture: $(grep -E '^set (terminal|multiplot)' "$T/strides.gp")"; fi
 fi
 
+# --- the figures of the per-stride table, from an independent computation:
+# scripts/eval_stride_ref.py recomputes with numpy, from the walk's truth and
+# the trajectory of `harness replay --out` (the same navigation), the strides,
+# the measured path (sum of the truth's stride-to-stride distances), the
+# median stride error (of 24: the mean of the middle two), the RMS, the final
+# error and its share of the path. No test compared these figures: the path
+# from the first stride instead of the one before, a truth y with the wrong
+# sign, the final % of the median error, a median of an even count that took
+# the upper middle value, all passed (the mutation review, 2026-11-29)
+if [ -n "$D" ]; then
+    P="$T/fpref/pyshoe_vicon_llio/own_3dmgx5_footprints"
+    mkdir -p "$P"
+    for f in imu strides_gcp; do
+        ln -s "$D/pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_34_$f.csv" "$P/SensorConnectData_34_$f.csv"
+    done
+    expect_exit 0 "eval: one footprint walk" "$H" eval --no-experiments --no-plots --data "$T/fpref" --out "$T/fpref.md"
+    expect_exit 0 "replay: the same walk" "$H" replay "$P/SensorConnectData_34_imu.csv" --out "$T/fp34.csv" --quiet
+    if /usr/bin/python3 "$(dirname "$0")/../../scripts/eval_stride_ref.py" "$T/fp34.csv" "$P/SensorConnectData_34_strides_gcp.csv" \
+        "$(grep '^| SensorConnectData_34 |' "$T/fpref.md")" >"$T/ref" 2>&1; then
+        pass "eval footprints: strides, path, median, RMS, final and final % as numpy computes them"
+    else fail "eval footprints against scripts/eval_stride_ref.py: $(cat "$T/ref")"; fi
+fi
+
+# --- the return-to-start table of the GX2 walks against
+# scripts/eval_closure_ref.py: 3-D = sqrt(horizontal^2 + vertical^2), each
+# % = 100 x error / path, vertical up positive as the trajectory's
+# -(z_end - z_start), the summary line the median (worst) of the rows. A 3-D
+# error without its height part, a vertical with the wrong sign and a
+# "median 3-D" taken of the horizontal % passed every test (the mutation
+# review, 2026-11-29)
+if [ -n "$D" ]; then
+    G="$T/gxref/openshoe_gx2"
+    mkdir -p "$G"
+    for w in 2 3 30 32; do ln -s "$D/openshoe_gx2/Measurement_100521_${w}_data_inert.txt" "$G/"; done
+    expect_exit 0 "eval: four GX2 walks" "$H" eval --no-experiments --no-plots --data "$T/gxref" --out "$T/gxref.md"
+    expect_exit 0 "replay: GX2 walk 2" "$H" replay "$G/Measurement_100521_2_data_inert.txt" --out "$T/g2.csv" --quiet
+    if /usr/bin/python3 "$(dirname "$0")/../../scripts/eval_closure_ref.py" "$T/gxref.md" "Measurement_100521_2=$T/g2.csv" \
+        >"$T/ref" 2>&1; then
+        pass "eval GX2 closure: 3-D, %, vertical sign and the summary's medians consistent"
+    else fail "eval GX2 closure against scripts/eval_closure_ref.py: $(cat "$T/ref")"; fi
+fi
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]

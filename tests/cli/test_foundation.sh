@@ -70,6 +70,15 @@ expect_out "gaps        0 " "1 and 2 ms stamps of an 820 Hz log are no gaps"
 awk 'NR < 2002 || NR > 2004' "$T/ms820.csv" > "$T/ms820drop.csv"
 expect_exit 0 "info on it with three samples dropped" "$H" info "$T/ms820drop.csv"
 expect_out "gaps        1 (> 1.5 intervals; longest 5.0 ms)" "the dropped samples are the one gap"
+# stamps that resolve the period (100 Hz, a microsecond of jitter): one sample lost is an interval of two periods,
+# 20 ms > 1.5 x 10 ms, one gap; a line written twice is one duplicate (dt = 0). No test had a gap against
+# the median interval: a gap threshold of 2.5 intervals, which hides every lost sample, passed (the mutation
+# review, 2026-11-29)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 1000; k++) if (k != 500) { printf "%.6f,0,0,9.8,0,0,0\n", k / 100.0 + (k % 3) * 1e-6
+     if (k == 700) printf "%.6f,0,0,9.8,0,0,0\n", k / 100.0 + (k % 3) * 1e-6 } }' > "$T/lost100.csv"
+expect_exit 0 "info on a 100 Hz log with a sample lost and one written twice" "$H" info "$T/lost100.csv"
+expect_out "gaps        1 (> 1.5 intervals; longest 20.0 ms)" "a lost sample of a 100 Hz log is the one gap"
+expect_out "duplicates  1 " "the line written twice is the one duplicate"
 # exact stamps (a sample counter's) that go from 10 to 20 ms: a rate change
 # (JSON rate_change, docs/harness.md); a block of 200 intervals of exactly
 # 20 ms was taken for stamps of 20 ms resolution, never off by one, and the

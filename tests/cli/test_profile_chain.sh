@@ -77,7 +77,7 @@ with open(sys.argv[1], "w") as f:
     for i in range(n):
         f.write("%.9f," % (i / fs) + ",".join("%.9g" % v for v in list(a[i]) + list(g[i])) + "\n")
 PY
-"$H" allan "$T/short.csv" --no-sim --quiet --profile "$T/short.profile" >/dev/null 2>"$T/err"
+"$H" allan "$T/short.csv" --no-sim --quiet --profile "$T/short.profile" --json "$T/short.json" >/dev/null 2>"$T/err"
 st=$?
 if [ $st -eq 0 ] && [ -s "$T/short.profile" ]; then pass "1-minute log: profile written"; else fail "1-minute log: exit $st"; cat "$T/err"; fi
 if grep -q "AR(1) bias of ax is not identifiable" "$T/err"; then pass "1-minute log: ax's unresolved AR(1) announced"; else fail "1-minute log: ax's fit kept"; cat "$T/err"; fi
@@ -99,5 +99,42 @@ ok &= kv['ident_bound_accel'][0] == '1' and float(kv['accel_tau_s'][0]) > 1.0
 sys.exit(0 if ok else 1)
 PY
 then pass "1-minute log: ax holds the bound from the minimum, no sub-sample AR(1) left"; else fail "1-minute log: profile"; cat "$T/short.profile"; fi
+# The bound's two numbers from the Allan minimum (t_BS, BS in the JSON's "paper" block): the AR(1) Allan
+# deviation of correlation time T and sd sigma peaks at tau = x T with height y sigma; the bound is
+# T = t_BS / x, sigma = BS / y. x and y here come from maximising the continuous AR(1) Allan variance
+# 2 sigma^2 T / tau [1 - T / (2 tau) (3 - 4 e^(-tau/T) + e^(-2 tau/T))] (IEEE Std 952-1997, C.8) with
+# scipy: x = 1.8926, y = 0.6174. A bound with T = t_BS (no 1.89) or sigma = BS / 0.664 passed every test
+# (the mutation review, 2026-11-29).
+if /usr/bin/python3 - "$T/short.profile" "$T/short.json" <<'PY'
+import json, math, sys
+import numpy as np
+from scipy.optimize import minimize_scalar
+def adev(u):  # u = tau / T, sigma = T = 1
+    return math.sqrt(2.0 / u * (1.0 - (3.0 - 4.0 * math.exp(-u) + math.exp(-2.0 * u)) / (2.0 * u)))
+r = minimize_scalar(lambda u: -adev(u), bounds=(0.5, 5.0), method="bounded", options={"xatol": 1e-9})
+x, y = r.x, adev(r.x)
+kv = {}
+for line in open(sys.argv[1]):
+    if '=' in line and not line.startswith('#'):
+        k, v = line.split('=', 1)
+        kv[k.strip()] = v.split()
+ch = {c['name']: c for c in json.load(open(sys.argv[2]))['channels']}
+ok, n = True, 0
+for g, names, si in (('accel', ('ax', 'ay', 'az'), 1.0), ('gyro', ('gx', 'gy', 'gz'), math.pi / 180.0)):
+    bound = [int(v) for v in kv['ident_bound_' + g]]
+    taus = [float(v) for v in kv[g + '_tau_s']]
+    sig = [float(v) for v in kv[g + ('_bias_sigma_mps2' if g == 'accel' else '_bias_sigma_rps')]]
+    for b, t, s, nm in zip(bound, taus, sig, names):
+        if b != 1:
+            continue
+        p = ch[nm]['paper']
+        n += 1
+        if abs(t * x / p['t_bs_s'] - 1.0) > 5e-3 or abs(s * y / (p['bs'] * si) - 1.0) > 5e-3:
+            print(nm, t, s, p['t_bs_s'] / x, p['bs'] * si / y)
+            ok = False
+sys.exit(0 if ok and n > 0 else 1)
+PY
+then pass "1-minute log: each bound is T = t_BS / 1.89, sigma = BS / 0.617 (the AR(1) Allan peak by scipy)"
+else fail "1-minute log: the bound's T or sigma against the AR(1) Allan peak"; fi
 echo "profile chain: $fails failure(s)"
 [ "$fails" -eq 0 ]

@@ -42,6 +42,17 @@ expect_out "sampling frequency = 2 x band, not rounded (--round 0)" "--round 0: 
 F=$("$PY" -c 'import json,sys; print("%.1f" % json.load(open(sys.argv[1]))["result"]["fs_hz"])' "$T/r0.json")
 expect_out "lowest usable sampling frequency: $F Hz (accelerometers and gyroscopes alike; 95 % of the power, not rounded)" \
     "--round 0: the answer printed as the JSON's, to 0.1 Hz"
+# and its value: Nyquist, twice the band (100 to 131.25 Hz, as above), so 200 to 262.5 Hz; each group's too. The
+# unrounded answer of one band (the factor 2 dropped) passed every test (the mutation review, 2026-11-29)
+if "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]
+for g in ("accel", "gyro"):
+    b, f = r[g + "_bandwidth_hz"], r[g + "_fs_hz"]
+    assert 100 < b < 131.25 and abs(f - 2 * b) < 1e-3 * b, (g, b, f)
+assert 200 < r["fs_hz"] < 262.5 and r["fs_hz"] == max(r["accel_fs_hz"], r["gyro_fs_hz"]), r' "$T/r0.json"; then
+    pass "--round 0: the answer is 2 x the band"
+else
+    fail "--round 0: the answer is not 2 x the band: $(cat "$T/r0.json" | tr -d '\n' | cut -c1-400)"
+fi
 # every channel constant: no band anywhere, so no answer (it printed 'lowest usable sampling frequency: 0 Hz' with
 # fs_hz 0 and exit 0); the tables are still written and the JSON's answer is null
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3f,0.1,0.2,9.81,0.01,0,0\n", i / 1000.0 }' \

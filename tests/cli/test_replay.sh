@@ -713,6 +713,22 @@ grep -q "check --param" "$T/err" && fail "no --param given, yet 'check --param'"
 expect_exit 2 "--rate 1" "$H" replay vectors/walk.bin --rate 1
 expect_err "a sample rate of 1 Hz (--rate) is too low to navigate.*above 3 Hz" "--rate too low: said with the bound"
 
+# --- the summary's figures on a climb whose answer is known: a simulated flight of 12 stairs of
+# 0.17 m x 0.28 m, two per stride (docs/simulator.md) leaves 6 stance phases, 5 step-to-step
+# intervals of 0.56 m forward and 0.34 m up: distance 5 x sqrt(0.56^2 + 0.34^2) = 3.276 m (2.80 m
+# horizontal), vertical +1.70 m (up positive), return-to-start 3.276 m in 3-D (100 % of the path: a
+# straight climb) and 2.80 m horizontal (85.5 % of the 3-D path). A distance without its height part,
+# a 3-D error without it, a vertical down positive and a horizontal % of the horizontal path passed
+# every replay test (the mutation review, 2026-11-29)
+"$H" sim --motion stairs-up:12 --seed 1 --out "$T/stairs.bin" >/dev/null 2>"$T/err" || { fail "sim stairs-up:12"; cat "$T/err"; }
+expect_exit 0 "replay a simulated flight of 12 stairs" "$H" replay "$T/stairs.bin" --json "$T/stairs.json" --quiet
+if json "$T/stairs.json" '(all(abs(j[k] / v - 1) < 0.02 for k, v in (("distance_m", 5 * (0.56**2 + 0.34**2) ** 0.5),
+        ("distance_horizontal_m", 2.80), ("vertical_drift_m", 1.70), ("return_error_3d_m", 5 * (0.56**2 + 0.34**2) ** 0.5),
+        ("return_error_h_m", 2.80), ("return_error_3d_pct", 100.0), ("return_error_h_pct", 100 * 0.56 / (0.56**2 + 0.34**2) ** 0.5)))
+        and j["strides"] == 6)'; then
+    pass "stairs: distance, vertical, return-to-start and strides as the stairs' geometry gives"
+else fail "stairs: summary $(grep -E '"(distance|return_error|vertical_drift)[a-z_0-9]*"|"strides"' "$T/stairs.json" | tr -d '\n\t')"; fi
+
 if [ "$fails" -ne 0 ]; then
     echo "test_replay.sh: $fails failure(s)"
     exit 1
