@@ -304,12 +304,17 @@ fi
 # --- the strides' figure: its title and key were one line wider than a picture of three panels (the footprints'
 # figure cut both ends off, "circles: the truth there" among them) and far wider than one panel's; each line of the
 # title fits the picture, at 6 px a character (a stand-in gnuplot keeps the script; the plots review)
-if [ -n "$D" ]; then
-    P="$T/one/pyshoe_vicon_llio/own_3dmgx5_footprints"
+# footprint_walk DIR N: DIR made a data directory that holds footprint walk N alone (its IMU log and
+# strides), linked from the shared data; P set to its footprints directory
+footprint_walk() {
+    P="$1/pyshoe_vicon_llio/own_3dmgx5_footprints"
     mkdir -p "$P"
     for f in imu strides_gcp; do
-        ln -s "$D/pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_31_$f.csv" "$P/SensorConnectData_31_$f.csv"
+        ln -s "$D/pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_$2_$f.csv" "$P/SensorConnectData_$2_$f.csv"
     done
+}
+if [ -n "$D" ]; then
+    footprint_walk "$T/one" 31
     fake_gnuplot "$T/fakegp"
     PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/strides.gp" "$H" eval --no-experiments --data "$T/one" --out "$T/one.md" \
         >/dev/null 2>&1
@@ -331,11 +336,7 @@ fi
 # sign, the final % of the median error, a median of an even count that took
 # the upper middle value, all passed (the mutation review, 2026-11-29)
 if [ -n "$D" ]; then
-    P="$T/fpref/pyshoe_vicon_llio/own_3dmgx5_footprints"
-    mkdir -p "$P"
-    for f in imu strides_gcp; do
-        ln -s "$D/pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_34_$f.csv" "$P/SensorConnectData_34_$f.csv"
-    done
+    footprint_walk "$T/fpref" 34
     expect_exit 0 "eval: one footprint walk" "$H" eval --no-experiments --no-plots --data "$T/fpref" --out "$T/fpref.md"
     expect_exit 0 "replay: the same walk" "$H" replay "$P/SensorConnectData_34_imu.csv" --out "$T/fp34.csv" --quiet
     if /usr/bin/python3 "$(dirname "$0")/../../scripts/eval_stride_ref.py" "$T/fp34.csv" "$P/SensorConnectData_34_strides_gcp.csv" \
