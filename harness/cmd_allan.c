@@ -506,12 +506,6 @@ static void motion_push(run_t *R, const fnav_sample_t *s)
     }
 }
 
-static int cmp_double(const void *x, const void *y)
-{
-    const double a = *(const double *)x, b = *(const double *)y;
-    return (a > b) - (a < b);
-}
-
 /* The disturbance check of a static log: warn about the windows whose rate
  * or |f| spreads by more than HX_ALLAN_DISTURBED_RATIO times the median
  * window's, those already counted as moving left out. A touch of 0.1 rad/s
@@ -538,8 +532,7 @@ static int spread_medians(const run_t *R, double med[2])
         for (i = 0; i < n; i++) {
             v[i] = R->win_spread[2 * i + k];
         }
-        qsort(v, (size_t)n, sizeof *v, cmp_double);
-        med[k] = (n & 1) ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+        med[k] = hx_median(v, (int)n);
     }
     free(v);
     return 0;
