@@ -59,21 +59,25 @@ int sg_detect_domain(const hx_log_t *log, double rate_hz)
         gm[k] /= (double)n;
     }
     fn /= (double)n;
-    /* one-second windows: moving when the rate departs from the log's mean
-     * by more than 1 rad/s or the specific force from its mean norm by more
-     * than 3 m/s^2 (a foot in swing does both many times a second) */
+    /* one-second windows: moving when within the window the rate departs
+     * from the log's mean by more than 1 rad/s and the specific force from
+     * its mean norm by more than 1 m/s^2 (a foot in swing does both many
+     * times a second). Both: until 2026-11-29 either one made a window
+     * move, and a static log with its gyro in deg/s (noise of tenths of a
+     * "rad/s", reaching 1 within every second) was a walk without a stance,
+     * "too short" for its stances (tests/cli/test_simgap.sh); every walk of
+     * the shared data still has 9-95 % of its windows moving */
     for (k = 0; k + w <= n; k += w) {
         size_t i;
-        int mv = 0;
-        for (i = k; i < k + w && !mv; i++) {
+        int mg = 0, mf = 0;
+        for (i = k; i < k + w && !(mg && mf); i++) {
             double a = log->gyr[i][0] - gm[0], b = log->gyr[i][1] - gm[1], c = log->gyr[i][2] - gm[2];
             double f = sqrt(log->acc[i][0] * log->acc[i][0] + log->acc[i][1] * log->acc[i][1] +
                             log->acc[i][2] * log->acc[i][2]);
-            if (a * a + b * b + c * c > 1.0 || fabs(f - fn) > 3.0) {
-                mv = 1;
-            }
+            mg |= a * a + b * b + c * c > 1.0;
+            mf |= fabs(f - fn) > 1.0;
         }
-        moving += (size_t)mv;
+        moving += (size_t)(mg && mf);
         nw++;
     }
     return (nw > 0 && (double)moving > 0.02 * (double)nw) ? 2 : 1;
@@ -1399,6 +1403,44 @@ static void verdict(sg_result_t *r)
     }
 }
 
+/* The median over the log's one-second windows of the gyro's spread, the
+ * RMS of the three rates about their window means (rad/s): hundredths at
+ * rest; above SG_STATIC_GYRO_SPREAD_RPS on a static log, a gyro in deg/s,
+ * as allan's motion check reads it (HX_ALLAN_MOVING_GYRO_RPS, cmd_allan.c).
+ * 0 for a log shorter than a window or out of memory (no verdict). */
+#define SG_STATIC_GYRO_SPREAD_RPS 0.25
+static double static_gyro_spread_rps(const hx_log_t *log, double rate_hz)
+{
+    const size_t w = (size_t)(rate_hz > 2.0 ? rate_hz : 2.0), nw = log->n / w;
+    double *sp, med;
+    size_t b;
+    if (nw == 0 || (sp = (double *)malloc(nw * sizeof *sp)) == NULL) {
+        return 0.0;
+    }
+    for (b = 0; b < nw; b++) {
+        double m[3] = { 0, 0, 0 }, v = 0.0;
+        size_t k;
+        int i;
+        for (k = b * w; k < (b + 1) * w; k++) {
+            for (i = 0; i < 3; i++) {
+                m[i] += log->gyr[k][i];
+            }
+        }
+        for (i = 0; i < 3; i++) {
+            m[i] /= (double)w;
+        }
+        for (k = b * w; k < (b + 1) * w; k++) {
+            for (i = 0; i < 3; i++) {
+                v += (log->gyr[k][i] - m[i]) * (log->gyr[k][i] - m[i]);
+            }
+        }
+        sp[b] = sqrt(v / (double)w);
+    }
+    med = hx_median(sp, (int)nw);
+    free(sp);
+    return med;
+}
+
 /* Units (docs/harness.md, "Units check"): the rest value of |f| is its
  * median over the tenth of the samples that rotate least (the stances of a
  * walk; any of a static log). A walk in other units would be navigated into
@@ -1436,6 +1478,17 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
     bad = hx_units_problem(fm[nf / 2], 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, msg, sizeof msg);
     free(wm);
     free(fm);
+    if (!bad && r->domain == 1) {
+        const double spread = static_gyro_spread_rps(log, r->rate_hz);
+        if (spread > SG_STATIC_GYRO_SPREAD_RPS) {
+            snprintf(msg, sizeof msg,
+                     "the gyroscope spreads by %.3g rad/s RMS within a second (the median one-second window) while "
+                     "the log is static, where a gyro at rest spreads by hundredths: the log is not in rad/s but "
+                     "probably in deg/s (multiply by pi/180) (docs/log-format.md)",
+                     spread);
+            bad = 1;
+        }
+    }
     if (bad && r->domain == 2) {
         snprintf(err, err_size, "%s", msg);
         return -1;

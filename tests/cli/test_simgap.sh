@@ -313,6 +313,19 @@ awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2
     "$T/w.csv" > "$T/wg.csv"
 expect_exit 1 "walk in g" "$H" simgap "$T/wg.csv" --quiet --seeds 4
 expect_err "not in m/s^2 but in g" "a walk in g is named as such"
+# a static log with its gyro in deg/s: its noise of tenths of a "rad/s"
+# reached 1 rad/s within every second, so it was detected as a walk without
+# a stance and answered "too short" for its stances (exit 1; found by the
+# generalisation check, 2026-11-29): now static, with a warning naming deg/s
+"$H" sim --motion stand:30 --rate 100 --profile mtx --seed 3 --out "$T/sd.csv" >/dev/null 2>&1 || fail "sim static for deg/s"
+awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.7g,%.7g,%.7g\n", $1, $2, $3, $4, $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232 }' \
+    "$T/sd.csv" > "$T/sdeg.csv"
+expect_exit 0 "static log with the gyro in deg/s" "$H" simgap "$T/sdeg.csv" --quiet --seeds 4 --max-effects 0 --json "$T/sdeg.json"
+json "$T/sdeg.json" 'j["log"]["domain_detected"] == "static" and j["verdict"]["answer"] != "too-short"' &&
+    pass "a static gyro in deg/s is detected as static" || fail "static deg/s domain: $(cat "$T/pyerr")"
+expect_err "spreads by 0.[0-9]* rad/s RMS .* probably in deg/s (multiply by pi/180)" "a static gyro in deg/s is named"
+expect_exit 0 "the same static log in rad/s" "$H" simgap "$T/sd.csv" --quiet --seeds 4 --max-effects 0
+if grep -q "deg/s" "$T/err"; then fail "a static gyro in rad/s named as deg/s"; else pass "no deg/s warning on a static gyro in rad/s"; fi
 # a walk on gyro lattices: the summary names the lattice as such, not as a
 # navigation point at t 0; every gyro's lattice is selected, not the top one's alone
 "$H" sim --motion walk --duration 40 --rate 100 --profile mtx --seed 4 --effect quant:ch=gyro:lsb=0.002 --out "$T/wq.csv" >/dev/null 2>&1 || fail "sim walk with quantisation"
