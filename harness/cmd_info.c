@@ -292,6 +292,15 @@ int hx_cmd_info(int argc, char **argv)
         return HX_EXIT_DATA;
     }
     analyse(&log, &in);
+    {
+        /* time stamps in milliseconds make a 100 Hz log 0.1 Hz: said as
+         * allan and psd say it (a warning: a static log may be slow), where
+         * until 2026-11-29 info printed the rate without a word */
+        char hint[256];
+        if (!log.meta.rate_nominal && hx_time_unit_hint(in.rate_hz, hint, sizeof hint)) {
+            hx_warn("info", "%s: %s", a.pos[0], hint);
+        }
+    }
     printf("file        %s\n", a.pos[0]);
     printf("format      %s\n", hx_format_name(log.meta.format));
     printf("sensor      %s\n", log.meta.sensor);

@@ -60,6 +60,15 @@ expect_out "^interval    none (one sample)$" "one sample: no interval, said"
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0,0,0,-9.8,0,0,0\n' > "$T/onestamp.csv"
 expect_exit 0 "info on a log of one time stamp" "$H" info "$T/onestamp.csv"
 expect_out "^rate        none (every time stamp is the same)$" "one time stamp: no rate, said"
+# a 100 Hz log with its time column in milliseconds reads 0.1 Hz: info
+# printed that rate without a word, where allan and psd name the unit (the
+# generalisation check, 2026-11-29); a warning, the status unchanged
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 300; k++) printf "%d,0,0,9.8,0,0,0\n", 10 * k }' > "$T/tms.csv"
+expect_exit 0 "info on a 100 Hz log stamped in milliseconds" "$H" info "$T/tms.csv"
+expect_err "tms.csv: the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: divide by 1000)" \
+    "info names time stamps in milliseconds"
+expect_exit 0 "info on a 100 Hz log in seconds" "$H" info "$T/dups.csv"
+if grep -q "look like" "$T/err"; then fail "a 100 Hz log in seconds questioned"; else pass "no unit question on a log in seconds"; fi
 # an 820 Hz log stamped to the millisecond reads 1 and 2 ms: its median is
 # 1 ms, and every 2 ms interval (a fifth of them, no sample lost) was a gap;
 # a gap is judged against the rate's period and the stamps' resolution, as
