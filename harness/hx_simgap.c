@@ -1498,6 +1498,13 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
          * a review, 2026-11-28) */
         hx_warn("simgap", "%s: %s", path, msg);
     }
+    /* a static log may be slow, but one below 1 Hz that a time column in
+     * milliseconds (us, ns) explains is named, as allan and psd name it:
+     * until 2026-11-29 the first minute of ADIS16405 log 1 with its time in
+     * ms was analysed at 0.1 Hz without a word (taus 1000 times too long) */
+    if (r->domain == 1 && !log->meta.rate_nominal && hx_time_unit_hint(r->rate_hz, msg, sizeof msg)) {
+        hx_warn("simgap", "%s: %s; the taus and frequencies are read at %.3g Hz", path, msg, r->rate_hz);
+    }
     return 0;
 }
 

@@ -326,6 +326,13 @@ json "$T/sdeg.json" 'j["log"]["domain_detected"] == "static" and j["verdict"]["a
 expect_err "spreads by 0.[0-9]* rad/s RMS .* probably in deg/s (multiply by pi/180)" "a static gyro in deg/s is named"
 expect_exit 0 "the same static log in rad/s" "$H" simgap "$T/sd.csv" --quiet --seeds 4 --max-effects 0
 if grep -q "deg/s" "$T/err"; then fail "a static gyro in rad/s named as deg/s"; else pass "no deg/s warning on a static gyro in rad/s"; fi
+# the same static log with its time column in milliseconds (100 Hz read as
+# 0.1 Hz): analysed at 0.1 Hz without a word until 2026-11-29, where allan
+# and psd name the unit; now a warning, the status unchanged
+awk -F, 'NR == 1 { print; next } { printf "%.6f,%s,%s,%s,%s,%s,%s\n", $1 * 1000, $2, $3, $4, $5, $6, $7 }' "$T/sd.csv" > "$T/sdms.csv"
+expect_exit 0 "static log with its time in milliseconds" "$H" simgap "$T/sdms.csv" --quiet --seeds 4 --max-effects 0
+expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: divide by 1000)" \
+    "a static log's time in milliseconds is named"
 # a walk on gyro lattices: the summary names the lattice as such, not as a
 # navigation point at t 0; every gyro's lattice is selected, not the top one's alone
 "$H" sim --motion walk --duration 40 --rate 100 --profile mtx --seed 4 --effect quant:ch=gyro:lsb=0.002 --out "$T/wq.csv" >/dev/null 2>&1 || fail "sim walk with quantisation"
