@@ -114,6 +114,7 @@ typedef struct {
     int csv_failed;
     hx_traj_t traj;
     hx_axes_t *axes;              /* the axes check, as replay's (NULL: out of memory, not checked) */
+    hx_sat_t sat;                 /* flat tops at the channels' extremes, as replay's */
     fnav_nav_frame_t last;
     int have_frame;
     /* plot */
@@ -157,6 +158,7 @@ static void nav_push(live_t *L, const fnav_sample_t *s)
     if (L->axes != NULL) {
         hx_axes_sample(L->axes, s);
     }
+    hx_sat_push(&L->sat, s);
     if (fnav_nav_push(L->nav, s) != FNAV_OK) {
         /* rejected (NaN, time backwards): counted in the filter's stats, as in replay */
     }
@@ -177,6 +179,12 @@ static void nav_finish(live_t *L)
     L->traj.window = L->nav->stance.win;
     L->traj.align = L->nav->align.result;
     L->traj.aligned = L->nav->aligned;
+    {
+        int ch;
+        for (ch = 0; ch < 6; ch++) {
+            L->traj.saturated[ch] = hx_sat_count(&L->sat, ch);
+        }
+    }
     hx_axes_finish(L->axes, &L->traj.axes);
     L->axes = NULL;
 }

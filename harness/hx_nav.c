@@ -482,6 +482,53 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
 
 /* ------------------------------------------------------------ replay */
 
+void hx_sat_push(hx_sat_t *st, const fnav_sample_t *s)
+{
+    int ch;
+    if (st->have && s->t_ns == st->t_last_ns) {
+        return; /* an exact duplicate row is not a plateau */
+    }
+    for (ch = 0; ch < 6; ch++) {
+        const double v = ch < 3 ? (double)s->accel_mps2[ch] : (double)s->gyro_rps[ch - 3];
+        if (!st->have || v > st->mx[ch]) {
+            st->mx[ch] = v;
+            st->cmx[ch] = 1;
+            st->rmx[ch] = 0;
+            st->runx[ch] = 1;
+        } else if (v == st->mx[ch]) {
+            st->cmx[ch]++;
+            if (++st->runx[ch] == 2) {
+                st->rmx[ch]++;
+            }
+        } else {
+            st->runx[ch] = 0;
+        }
+        if (!st->have || v < st->mn[ch]) {
+            st->mn[ch] = v;
+            st->cmn[ch] = 1;
+            st->rmn[ch] = 0;
+            st->runn[ch] = 1;
+        } else if (v == st->mn[ch]) {
+            st->cmn[ch]++;
+            if (++st->runn[ch] == 2) {
+                st->rmn[ch]++;
+            }
+        } else {
+            st->runn[ch] = 0;
+        }
+    }
+    st->t_last_ns = s->t_ns;
+    st->have = 1;
+}
+
+long hx_sat_count(const hx_sat_t *st, int ch)
+{
+    if (!st->have || ch < 0 || ch >= 6 || st->mx[ch] == st->mn[ch]) {
+        return 0; /* a constant channel is no clipping */
+    }
+    return st->rmx[ch] + st->rmn[ch] >= 2 ? st->cmx[ch] + st->cmn[ch] : 0;
+}
+
 void hx_traj_free(hx_traj_t *t)
 {
     free(t->f);
@@ -509,6 +556,7 @@ typedef struct {
     int64_t t_last_ns;   /* the last sample's stamp (with have_t_last) */
     int have_t_last;
     int64_t stamp_res_ns; /* the stamps' resolution: gcd of the intervals that advance (0: none yet) */
+    hx_sat_t sat;         /* flat tops of the input as read (a resampled log's: before resampling) */
 } hx_port_ctx_t;
 
 static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
@@ -528,6 +576,9 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
         st = FNAV_OK;
     } else {
         st = c->linux_port.read_sample(c->linux_port.ctx, s);
+        if (st == FNAV_OK) {
+            hx_sat_push(&c->sat, s);
+        }
     }
     if (st == FNAV_OK) {
         double w2 = (double)s->gyro_rps[0] * (double)s->gyro_rps[0] + (double)s->gyro_rps[1] * (double)s->gyro_rps[1] +
@@ -750,7 +801,14 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             return -1;
         }
         if (traj != NULL) {
+            size_t i;
             traj->cut_lines = raw.stats.cut_lines;
+            /* the flat tops of the input: the low-pass rounds them off */
+            for (i = 0; i < raw.n; i++) {
+                fnav_sample_t smp;
+                hx_log_sample(&raw, i, &smp);
+                hx_sat_push(&pc.sat, &smp);
+            }
         }
         hx_log_free(&raw);
         pc.mem = &res;
@@ -824,6 +882,12 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         traj->window = nav.stance.win;
         traj->align = nav.align.result;
         traj->aligned = nav.aligned;
+        {
+            int ch;
+            for (ch = 0; ch < 6; ch++) {
+                traj->saturated[ch] = hx_sat_count(&pc.sat, ch);
+            }
+        }
         if (r != NULL) {
             traj->cut_lines = hx_reader_stats(r)->cut_lines;
             if (hx_reader_meta(r)->rate_coarse && pc.stamp_res_ns > 0 && traj->rate_hz > 0.0) {
@@ -1149,6 +1213,26 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                    "\"Zero-velocity update\")\n",
                 s->longest_stand_s, s->longest_stand_at_s);
     }
+    {
+        static const char *const k_ch[6] = { "ax", "ay", "az", "gx", "gy", "gz" };
+        char list[160];
+        size_t used = 0;
+        int ch;
+        list[0] = '\0';
+        for (ch = 0; ch < 6; ch++) {
+            if (t->saturated[ch] > 0 && used < sizeof list) {
+                int k = snprintf(list + used, sizeof list - used, "%s%s %ld", used > 0 ? ", " : "", k_ch[ch],
+                                 t->saturated[ch]);
+                used += k > 0 ? (size_t)k : 0u;
+            }
+        }
+        if (list[0] != '\0') {
+            fprintf(f, "note              the input is clipped (flat tops at a channel's extreme; samples there: %s): "
+                       "the motion beyond the sensor's range is lost, and distance and heading with it; a wider range "
+                       "setting fixes it (bin/harness info, \"saturation\")\n",
+                    list);
+        }
+    }
     if (s->rate_off_fraction > 0.0) {
         fprintf(f, "note              the sample rate changes: %.1f Hz from %.1f s, %.0f %% of the log off the "
                    "detector's %.1f Hz (taken once, from the first intervals): its window and durations are wrong in "
@@ -1230,6 +1314,14 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddItemToObject(root, "aligned_at_s", num(s->aligned_at_s));
     cJSON_AddItemToObject(root, "before_alignment_s", num(s->before_align_s));
     cJSON_AddItemToObject(root, "longest_stand_s", num(s->longest_stand_s));
+    {
+        static const char *const k_ch[6] = { "ax", "ay", "az", "gx", "gy", "gz" };
+        cJSON *sat = cJSON_AddObjectToObject(root, "saturated_samples");
+        int ch;
+        for (ch = 0; ch < 6 && sat != NULL; ch++) {
+            cJSON_AddNumberToObject(sat, k_ch[ch], (double)t->saturated[ch]);
+        }
+    }
     if (s->rate_off_fraction > 0.0) {
         cJSON *chg = cJSON_CreateObject();
         cJSON_AddItemToObject(chg, "at_s", num(s->rate_change_at_s));

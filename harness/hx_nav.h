@@ -63,6 +63,25 @@ int hx_nav_param_help_requested(int argc, char **argv);
 
 /* ------------------------------------------------------------ trajectory */
 
+/** Flat tops at a channel's extremes, counted sample by sample as `info`
+ *  counts them on a whole log (docs/harness.md, "info", saturation): a
+ *  channel is saturated when at least two separate runs of two or more
+ *  samples with distinct stamps sit exactly at its maximum or minimum. */
+typedef struct {
+    double mx[6], mn[6];     /**< extremes so far (ax..az, gx..gz) */
+    long cmx[6], cmn[6];     /**< samples at them */
+    long rmx[6], rmn[6];     /**< runs of two or more at them */
+    long runx[6], runn[6];   /**< the current run's length at each */
+    int64_t t_last_ns;
+    int have;
+} hx_sat_t;
+
+/** Takes one sample; an exact duplicate of the last stamp is skipped. */
+void hx_sat_push(hx_sat_t *st, const fnav_sample_t *s);
+
+/** Samples at channel ch's extremes when it is saturated, else 0. */
+long hx_sat_count(const hx_sat_t *st, int ch);
+
 /** Frames of one replay, kept in memory. */
 typedef struct {
     size_t n, cap;
@@ -77,6 +96,7 @@ typedef struct {
     fnav_align_result_t align;   /**< alignment result */
     int aligned;
     hx_axes_result_t axes;       /**< the axes check (hx_axes.h) */
+    long saturated[6];           /**< samples at a clipped channel's extremes, ax..gz (hx_sat_count; the input before any resampling) */
     /** replay: 1 when the input was read to its end, 0 when it stopped at
      *  an error (input_error); -1 not said (live): no JSON keys */
     int input_complete;

@@ -228,6 +228,29 @@ PY
     ); then pass "$rot: the same path ($msg)"; else fail "$rot changed the path: $msg"; fi
 done
 
+# --- clipping: the bundled walk as a sensor of +-250 deg/s and +-2 g would
+# record it (flat tops at full scale). replay navigated it without a word
+# (info counts the flat tops; the generalisation check, 2026-11-29): the
+# summary names the clipped channels with info's counts, the JSON has them,
+# and the walk as recorded has none
+"$H" convert vectors/walk.bin "$T/unclipped.csv" 2>/dev/null || fail "convert for clipping"
+awk -F, 'BEGIN { OFS = ","; A = 2 * 9.80665; W = 250 * 3.14159265358979 / 180 }
+     NR == 1 { print; next }
+     { for (i = 2; i <= 4; i++) { if ($i > A) $i = A; if ($i < -A) $i = -A }
+       for (i = 5; i <= 7; i++) { if ($i > W) $i = W; if ($i < -W) $i = -W }
+       print }' "$T/unclipped.csv" > "$T/clipped.csv"
+expect_exit 0 "a clipped walk" "$H" replay "$T/clipped.csv" --json "$T/clip.json"
+expect_out "^note .*the input is clipped (flat tops at a channel's extreme; samples there: ax [1-9][0-9]*, .*gy [1-9]" "the clipping is named in the summary"
+"$H" info "$T/clipped.csv" --json "$T/clipinfo.json" >/dev/null 2>&1 || fail "info on the clipped walk"
+json "$T/clip.json" 'j["saturated_samples"] == json.load(open(sys.argv[1].replace("clip.json", "clipinfo.json")))["saturated_samples"] and j["saturated_samples"]["gy"] > 0' &&
+    pass "replay's clipped samples are info's" || fail "clipped samples: $(cat "$T/pyerr")"
+expect_exit 0 "the walk as recorded" "$H" replay "$T/unclipped.csv" --json "$T/unclip.json"
+if grep -q "input is clipped" "$T/out"; then fail "an unclipped walk named as clipped"; else pass "no clipping note on the walk as recorded"; fi
+json "$T/unclip.json" 'all(v == 0 for v in j["saturated_samples"].values())' &&
+    pass "no clipped samples in the walk as recorded" || fail "unclipped JSON: $(cat "$T/pyerr")"
+expect_exit 0 "a clipped walk resampled" "$H" replay "$T/clipped.csv" --rate 200
+expect_out "^note .*the input is clipped" "the clipping of a resampled log is named (judged before the low-pass)"
+
 # --- the axes check (docs/harness.md, "Axes check"): a gyro axis flipped or
 # two swapped against the accelerometer is named with its fix, a warning with
 # exit 0; the walk as recorded and the turned mountings above pass it
