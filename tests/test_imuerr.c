@@ -296,6 +296,13 @@ static void test_config_validation(void **state)
     c.flicker.tau_lo_s = FNAV_R(100.0);
     c.flicker.tau_hi_s = FNAV_R(10.0);
     assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_E_CONFIG);
+    /* an empty band too: ln r = 0 made every pole's variance B^2 ln r / pi
+     * zero, a flicker effect that adds nothing (a hand-made mutant accepted
+     * tau_lo_s == tau_hi_s and no test saw it) */
+    c.flicker.tau_hi_s = FNAV_R(100.0);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_E_CONFIG);
+    c.flicker.tau_hi_s = FNAV_R(100.5);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
 
     c = fnav_imuerr_config_default;
     c.mask[FNAV_EFFECT_ALIAS] = FNAV_CH_ALL;
