@@ -498,6 +498,18 @@ static void test_determinism_and_stream_independence(void **state)
     for (i = 0; i < n; i++) {
         FNAV_ASSERT_CLOSE(y2[i] - y1[i], (double)c.offset.value[4], 1e-6, 0.0);
     }
+    /* nor does the mask of another channel of the same effect: white noise
+     * on gy alone draws what gy draws with every channel on (the draws are
+     * made for every channel of an enabled effect; a hand-made mutant that
+     * drew only for the channels switched on passed every suite) */
+    c = base_cfg(100.0);
+    c.mask[FNAV_EFFECT_WHITE] = FNAV_CH_GY;
+    assert_int_equal(fnav_imuerr_init(&b, &c), FNAV_OK);
+    run_const(&b, n, 4, y2, NULL);
+    for (i = 0; i < n; i++) {
+        assert_true(y2[i] == y1[i]);
+    }
+    c.mask[FNAV_EFFECT_WHITE] = FNAV_CH_ALL;
     /* another seed gives another sequence */
     c.seed = 99u;
     assert_int_equal(fnav_imuerr_init(&b, &c), FNAV_OK);
@@ -791,6 +803,26 @@ static void test_jumps(void **state)
         double q = (1.0 - exp(-lam / rate)) * amp * amp;
         check_avar(oavar(y, n, m), avar_rw(m, q), edf_rw((double)n + 1.0, (double)m) / 9.0, "jumps", m);
     }
+    /* the steps are drawn once per output sample, at the output rate,
+     * whatever the internal rate of the signal stage: with oversample 10 a
+     * hand-made mutant drawing with the internal period (p = 1 - exp(-lambda
+     * dt / 10)) made a tenth of the steps, unseen at oversample 1. Poisson
+     * count of lambda T = 2000 steps in 1000 s, z = 4 bound. */
+    c.oversample = 10u;
+    c.jumps.rate_hz[1] = FNAV_R(2.0);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
+    run_const(&e, 100000, 1, y, b);
+    steps = 0.0;
+    for (i = 1; i < 100000; i++) {
+        steps += b[i] != b[i - 1];
+    }
+    FNAV_ASSERT_CLOSE(steps, 2000.0, Z_CI * sqrt(2000.0), 0.0);
+    /* at most one step per sample: lambda up to the rate (p = 1 - 1/e) */
+    c.oversample = 1u;
+    c.jumps.rate_hz[1] = (fnav_real_t)rate;
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
+    c.jumps.rate_hz[1] = (fnav_real_t)(1.5 * rate);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_E_CONFIG);
     free(y);
     free(b);
 }
