@@ -408,6 +408,49 @@ static void test_stairs_and_elevator_heights(void **state)
     hx_motion_free(m);
 }
 
+/* The script rules of docs/simulator.md that only counts show (hand-made
+ * mutants of hx_motion.c that broke them passed every suite, the end
+ * positions being right either way):
+ * - walk D in whole strides of D / round(D / nominal): walk:11 at 1.4 m is
+ *   round(7.86) = 8 strides (truncation made 7);
+ * - turn on the spot in strides of at most 45 degrees: 180 degrees in 4,
+ *   100 in 3 (90-degree strides made 2);
+ * - a short elevator ride (below the 3.375 m that cruising at 1.5 m/s
+ *   takes to reach and leave) peaks at the configured acceleration: its
+ *   speed is a cubic smooth step, peak acceleration 1.5 v_c / T_a with
+ *   v_c = sqrt(H a / 1.5), T_a = 1.5 v_c / a, i.e. a = 1 m/s^2 (plus the
+ *   0.05 m/s^2 motor vibration); a ride sized without the 1.5 overshot. */
+static void test_script_counts_and_short_ride(void **state)
+{
+    hx_motion_t *m = make("stand:1,walk:11,stand:1", 0.0);
+    hx_truth_t o;
+    double t, T, amax = 0.0, vmax = 0.0;
+    (void)state;
+    assert_int_equal(hx_motion_strides(m), 8);
+    hx_motion_eval(m, hx_motion_duration(m), &o);
+    FNAV_ASSERT_CLOSE(o.odo_m, 11.0, 1e-9, 0.0);
+    hx_motion_free(m);
+    m = make("stand:1,turn:180,stand:1", 0.0);
+    assert_int_equal(hx_motion_strides(m), 4);
+    hx_motion_free(m);
+    m = make("stand:1,turn:100,stand:1", 0.0);
+    assert_int_equal(hx_motion_strides(m), 3);
+    hx_motion_free(m);
+    m = make("stand:1,elevator:2,stand:1", 0.0);
+    T = hx_motion_duration(m);
+    for (t = 0.0; t < T; t += 1e-3) {
+        hx_motion_eval(m, t, &o);
+        amax = fmax(amax, fabs(o.acc_mps2[2]));
+        vmax = fmax(vmax, fabs(o.vel_mps[2]));
+    }
+    hx_motion_eval(m, T, &o);
+    FNAV_ASSERT_CLOSE(o.pos_m[2], -2.0, 1e-9, 0.0);
+    fprintf(stderr, "elevator 2 m: peak acceleration %.4f m/s^2, peak speed %.4f m/s\n", amax, vmax);
+    assert_true(amax <= 1.0 + 0.05 + 1e-6 && amax >= 1.0 - 0.05);
+    FNAV_ASSERT_CLOSE(vmax, sqrt(2.0 / 1.5), 1e-3, 0.0); /* + vibration 0.05 / (2 pi 150) */
+    hx_motion_free(m);
+}
+
 /* Peak deceleration of the landing 1.5 v / impact_s (cubic speed step), plus
  * ringing; power above 50 Hz grows when the impact gets sharper. */
 static double hf_fraction(const hx_motion_config_t *c, double *peak)
@@ -545,6 +588,7 @@ int main(void)
         cmocka_unit_test(test_no_quiet_window_in_motion),
         cmocka_unit_test(test_closed_loops_and_odometer),
         cmocka_unit_test(test_stairs_and_elevator_heights),
+        cmocka_unit_test(test_script_counts_and_short_ride),
         cmocka_unit_test(test_impact_sharpness),
         cmocka_unit_test(test_mounting),
         cmocka_unit_test(test_bad_scripts),
