@@ -419,7 +419,8 @@ static void test_stairs_and_elevator_heights(void **state)
  *   takes to reach and leave) peaks at the configured acceleration: its
  *   speed is a cubic smooth step, peak acceleration 1.5 v_c / T_a with
  *   v_c = sqrt(H a / 1.5), T_a = 1.5 v_c / a, i.e. a = 1 m/s^2 (plus the
- *   0.05 m/s^2 motor vibration); a ride sized without the 1.5 overshot. */
+ *   0.05 m/s^2 motor vibration); a ride sized without the 1.5 overshot;
+ * - the stride count of a cut agrees with the odometer (below). */
 static void test_script_counts_and_short_ride(void **state)
 {
     hx_motion_t *m = make("stand:1,walk:11,stand:1", 0.0);
@@ -435,6 +436,22 @@ static void test_script_counts_and_short_ride(void **state)
     hx_motion_free(m);
     m = make("stand:1,turn:100,stand:1", 0.0);
     assert_int_equal(hx_motion_strides(m), 3);
+    hx_motion_free(m);
+    /* the summary's stride count of a cut at t (hx_motion_strides_until)
+     * agrees with the odometer at t, also when t is a landing instant:
+     * walk:7 is 5 strides of 1.4 m, the odometer 1.4 m per landing up to
+     * and including t (a mutant counting only the landings before t passed;
+     * every knot time is tried, the landings among them) */
+    m = make("stand:1,walk:7,stand:1", 0.0);
+    {
+        size_t k;
+        for (k = 0; k < hx_motion_nknots(m); k++) {
+            double tk = hx_motion_knot_time(m, k);
+            hx_motion_eval(m, tk, &o);
+            FNAV_ASSERT_CLOSE(o.odo_m, 1.4 * hx_motion_strides_until(m, tk), 1e-9, 0.0);
+        }
+        assert_int_equal(hx_motion_strides_until(m, hx_motion_duration(m)), 5);
+    }
     hx_motion_free(m);
     m = make("stand:1,elevator:2,stand:1", 0.0);
     T = hx_motion_duration(m);
