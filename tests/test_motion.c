@@ -260,12 +260,15 @@ static void test_derivatives_match_finite_differences(void **state)
 
 /* ------------------------------------------------------------ scenarios */
 
-static void test_still_is_exactly_still(void **state)
+/* Walking and running: the running shoe rings (50 ms) longer than its slap
+ * lasts (6 % of 0.71 s, 42 ms), so the stance is still only once the
+ * ringing is over (a hand-made mutant that made it still at the end of the
+ * slap passed while only the walk was tried: its slap outlasts the ring). */
+static void still_is_exactly_still(const char *scenario)
 {
-    hx_motion_t *m = make("walk", 30.0);
+    hx_motion_t *m = make(scenario, 30.0);
     double T = hx_motion_duration(m), t;
     long still = 0, moving = 0;
-    (void)state;
     for (t = -1.0; t < T + 1.0; t += 1e-3) {
         hx_truth_t o;
         int j;
@@ -285,9 +288,16 @@ static void test_still_is_exactly_still(void **state)
             assert_true(o.phase != HX_PHASE_STILL || o.t_s < 0.0 || t > 0.0);
         }
     }
-    /* a 30 s walk is mostly strides: stance ~1/3 of each, plus 10 s standing */
+    /* 30 s are mostly strides: stance ~1/3 of each walking one, plus 10 s standing */
     assert_true(still > 5000 && moving > 10000);
     hx_motion_free(m);
+}
+
+static void test_still_is_exactly_still(void **state)
+{
+    (void)state;
+    still_is_exactly_still("walk");
+    still_is_exactly_still("run");
 }
 
 /* A stance detector looks at short windows of |w| and |f| - g. While the
