@@ -191,6 +191,15 @@ static void test_alias_effect_folds_a_tone(void **state)
     run(m, &e, 0.0, &s);
     a50 = goertzel(&s, 2, 50.0, 200.0);
     FNAV_ASSERT_CLOSE(a50, 0.5, 0.0, 0.01);
+    /* alias picks whatever --decimation says (hx_sim_setup_from_args: mean
+     * only without alias): the trapezoidal interval mean over the 10
+     * internal periods would pass |sum_k w_k e^(i 2 pi 150 k / 2000)| / 10
+     * = 0.29 of the tone (k = 0..10, w = 1/2 at the ends; numpy) (a mutant
+     * that let mean decimation override alias passed) */
+    g_decim = HX_DECIM_MEAN;
+    run(m, &e, 0.0, &s);
+    g_decim = HX_DECIM_FIR;
+    FNAV_ASSERT_CLOSE(goertzel(&s, 2, 50.0, 200.0), 0.5, 0.0, 0.01);
 
     e = ideal(200.0, 10);
     assert_int_equal(hx_effect_parse(&e, "vibration:ch=az:amp=0.5:freq_hz=30", err, sizeof err), 0);
@@ -653,6 +662,10 @@ static void test_effect_specs(void **state)
     assert_int_equal(hx_channels_parse("ax+gz"), FNAV_CH_AX | FNAV_CH_GZ);
     assert_int_equal(hx_channels_parse("ax+"), 0);
     assert_int_equal(hx_channels_parse("bx"), 0);
+    /* names are joined by '+': a mutant that accepted "axay" and "ax+gyz"
+     * (no separator, a trailing letter) passed */
+    assert_int_equal(hx_channels_parse("axay"), 0);
+    assert_int_equal(hx_channels_parse("ax+gyz"), 0);
     assert_int_equal(hx_effect_parse(&e, "quant:ch=gyro:lsb=1.0653e-3", err, sizeof err), 0);
     assert_int_equal(e.mask[FNAV_EFFECT_QUANT], FNAV_CH_GYRO);
     FNAV_ASSERT_CLOSE(e.quant.lsb[5], 1.0653e-3, 0.0, 1e-6);
