@@ -296,6 +296,13 @@ static void test_config_validation(void **state)
     c.flicker.tau_lo_s = FNAV_R(100.0);
     c.flicker.tau_hi_s = FNAV_R(10.0);
     assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_E_CONFIG);
+    /* an empty band too: ln r = 0 made every pole's variance B^2 ln r / pi
+     * zero, a flicker effect that adds nothing (a hand-made mutant accepted
+     * tau_lo_s == tau_hi_s and no test saw it) */
+    c.flicker.tau_hi_s = FNAV_R(100.0);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_E_CONFIG);
+    c.flicker.tau_hi_s = FNAV_R(100.5);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
 
     c = fnav_imuerr_config_default;
     c.mask[FNAV_EFFECT_ALIAS] = FNAV_CH_ALL;
@@ -422,6 +429,45 @@ static void test_ar1_equations(void **state)
     free(b);
 }
 
+/* The AR(1) state starts stationary, b_0 ~ N(0, sigma^2) (fnav_imuerr_init):
+ * across seeds the first output bias b_1 = c b_0 + n_1 has variance
+ * c^2 sigma^2 + sigma^2 (1 - c^2) = sigma^2. A start at b_0 = 0 (a hand-made
+ * mutant, the long single-seed runs above did not see it: n / (2 tau f_s)
+ * independent samples dilute a transient of one correlation time) gives
+ * sigma^2 (1 - c^2), 2e-4 sigma^2 here. 2000 seeds x 6 independent channels:
+ * the sample variance of 12000 zero-mean normals has relative se
+ * sqrt(2 / 12000) = 1.3 %, z = 4 gives 5.2 %. */
+static void test_ar1_stationary_start(void **state)
+{
+    const double rate = 100.0, tau = 100.0, sig = 0.01;
+    fnav_imuerr_config_t c = base_cfg(rate);
+    fnav_imuerr_t e;
+    const uint32_t nseed = 2000u;
+    uint32_t s;
+    double s2 = 0.0, n = 0.0;
+    int ch;
+    (void)state;
+    for (ch = 0; ch < 6; ch++) {
+        c.ar1.tau_s[ch] = (fnav_real_t)tau;
+        c.ar1.sigma[ch] = (fnav_real_t)sig;
+    }
+    c.mask[FNAV_EFFECT_AR1] = FNAV_CH_ALL;
+    for (s = 0; s < nseed; s++) {
+        fnav_real_t f[3] = { FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0) }, y[6], b[6];
+        c.seed = 7000u + s;
+        assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
+        fnav_imuerr_signal(&e, f, f, y);
+        fnav_imuerr_sensor(&e, y);
+        fnav_imuerr_bias(&e, b);
+        for (ch = 0; ch < 6; ch++) {
+            FNAV_ASSERT_CLOSE(y[ch], b[ch], 0.0, 0.0); /* no white noise: output = bias */
+            s2 += (double)b[ch] * (double)b[ch];
+            n += 1.0;
+        }
+    }
+    FNAV_ASSERT_CLOSE(s2 / n, sig * sig, 0.0, Z_CI * sqrt(2.0 / n));
+}
+
 /* ------------------------------------------------------------ effects */
 
 static void test_determinism_and_stream_independence(void **state)
@@ -452,6 +498,18 @@ static void test_determinism_and_stream_independence(void **state)
     for (i = 0; i < n; i++) {
         FNAV_ASSERT_CLOSE(y2[i] - y1[i], (double)c.offset.value[4], 1e-6, 0.0);
     }
+    /* nor does the mask of another channel of the same effect: white noise
+     * on gy alone draws what gy draws with every channel on (the draws are
+     * made for every channel of an enabled effect; a hand-made mutant that
+     * drew only for the channels switched on passed every suite) */
+    c = base_cfg(100.0);
+    c.mask[FNAV_EFFECT_WHITE] = FNAV_CH_GY;
+    assert_int_equal(fnav_imuerr_init(&b, &c), FNAV_OK);
+    run_const(&b, n, 4, y2, NULL);
+    for (i = 0; i < n; i++) {
+        assert_true(y2[i] == y1[i]);
+    }
+    c.mask[FNAV_EFFECT_WHITE] = FNAV_CH_ALL;
     /* another seed gives another sequence */
     c.seed = 99u;
     assert_int_equal(fnav_imuerr_init(&b, &c), FNAV_OK);
@@ -554,6 +612,44 @@ static void test_flicker(void **state)
         }
     }
     free(y);
+}
+
+/* The flicker poles start stationary too: each pole's state b_i,0 ~ N(0, v),
+ * v = B^2 ln r / pi, so that the first output's flicker bias, the sum of
+ * P independent poles, has variance P v over seeds. A start at 0 (a
+ * hand-made mutant that test_flicker's single long run did not see) gives
+ * about P v (1 - c_i^2), under 2 % of it here. 2000 seeds x 6 channels:
+ * relative se of the sample variance sqrt(2 / 12000) = 1.3 %, z = 4. */
+static void test_flicker_stationary_start(void **state)
+{
+    const double rate = 100.0, B = 1e-3, lo = 1.0, hi = 1e4;
+    fnav_imuerr_config_t c = base_cfg(rate);
+    fnav_imuerr_t e;
+    const double lnr = log(hi / lo) / (FNAV_IMUERR_FLICKER_POLES - 1);
+    const double var = FNAV_IMUERR_FLICKER_POLES * B * B * lnr / PI;
+    uint32_t s;
+    double s2 = 0.0, n = 0.0;
+    int ch;
+    (void)state;
+    for (ch = 0; ch < 6; ch++) {
+        c.flicker.b[ch] = (fnav_real_t)B;
+    }
+    c.flicker.tau_lo_s = (fnav_real_t)lo;
+    c.flicker.tau_hi_s = (fnav_real_t)hi;
+    c.mask[FNAV_EFFECT_FLICKER] = FNAV_CH_ALL;
+    for (s = 0; s < 2000u; s++) {
+        fnav_real_t f[3] = { FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0) }, y[6], b[6];
+        c.seed = 9000u + s;
+        assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
+        fnav_imuerr_signal(&e, f, f, y);
+        fnav_imuerr_sensor(&e, y);
+        fnav_imuerr_bias(&e, b);
+        for (ch = 0; ch < 6; ch++) {
+            s2 += (double)b[ch] * (double)b[ch];
+            n += 1.0;
+        }
+    }
+    FNAV_ASSERT_CLOSE(s2 / n, var, 0.0, Z_CI * sqrt(2.0 / n));
 }
 
 static void test_rate_random_walk(void **state)
@@ -707,6 +803,26 @@ static void test_jumps(void **state)
         double q = (1.0 - exp(-lam / rate)) * amp * amp;
         check_avar(oavar(y, n, m), avar_rw(m, q), edf_rw((double)n + 1.0, (double)m) / 9.0, "jumps", m);
     }
+    /* the steps are drawn once per output sample, at the output rate,
+     * whatever the internal rate of the signal stage: with oversample 10 a
+     * hand-made mutant drawing with the internal period (p = 1 - exp(-lambda
+     * dt / 10)) made a tenth of the steps, unseen at oversample 1. Poisson
+     * count of lambda T = 2000 steps in 1000 s, z = 4 bound. */
+    c.oversample = 10u;
+    c.jumps.rate_hz[1] = FNAV_R(2.0);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
+    run_const(&e, 100000, 1, y, b);
+    steps = 0.0;
+    for (i = 1; i < 100000; i++) {
+        steps += b[i] != b[i - 1];
+    }
+    FNAV_ASSERT_CLOSE(steps, 2000.0, Z_CI * sqrt(2000.0), 0.0);
+    /* at most one step per sample: lambda up to the rate (p = 1 - 1/e) */
+    c.oversample = 1u;
+    c.jumps.rate_hz[1] = (fnav_real_t)rate;
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
+    c.jumps.rate_hz[1] = (fnav_real_t)(1.5 * rate);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_E_CONFIG);
     free(y);
     free(b);
 }
@@ -873,6 +989,36 @@ static void test_timing(void **state)
     }
 }
 
+/* Dropout and duplication on the same tick: a dropped sample is not emitted
+ * twice (fnav_imuerr_tick duplicates only a sample that is kept). With both
+ * probabilities 0.5 the counts 0, 1, 2 have probabilities 0.5, 0.25, 0.25;
+ * duplicating regardless (a hand-made mutant, invisible at the 2 % and
+ * 0.5 % of test_timing) gives 0.5, 0.25 -> 0.25 of count 2 from the drops
+ * too: P(2) = 0.5. Binomial bounds, z = 4: n = 40000 gives an sd of
+ * sqrt(0.25 0.75 / n) = 0.0022 on a proportion. */
+static void test_dropout_before_duplicate(void **state)
+{
+    fnav_imuerr_config_t c = base_cfg(100.0);
+    fnav_imuerr_t e;
+    const size_t n = 40000;
+    size_t i, k[3] = { 0, 0, 0 };
+    (void)state;
+    c.mask[FNAV_EFFECT_DROPOUT] = FNAV_CH_ALL;
+    c.mask[FNAV_EFFECT_DUPLICATE] = FNAV_CH_ALL;
+    c.dropout.prob = FNAV_R(0.5);
+    c.duplicate.prob = FNAV_R(0.5);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
+    for (i = 0; i < n; i++) {
+        fnav_imuerr_tick_t t;
+        fnav_imuerr_tick(&e, &t);
+        assert_true(t.count <= 2u);
+        k[t.count]++;
+    }
+    FNAV_ASSERT_CLOSE((double)k[0] / (double)n, 0.5, Z_CI * sqrt(0.25 / (double)n), 0.0);
+    FNAV_ASSERT_CLOSE((double)k[1] / (double)n, 0.25, Z_CI * sqrt(0.1875 / (double)n), 0.0);
+    FNAV_ASSERT_CLOSE((double)k[2] / (double)n, 0.25, Z_CI * sqrt(0.1875 / (double)n), 0.0);
+}
+
 /* Without an anti-alias filter the white noise of M f_s folds into the
  * output band: per-sample variance N^2 M f_s. */
 static void test_alias_noise_folding(void **state)
@@ -907,9 +1053,11 @@ int main(void)
         cmocka_unit_test(test_profile_baseline),
         cmocka_unit_test(test_allan_white_plus_ar1),
         cmocka_unit_test(test_ar1_equations),
+        cmocka_unit_test(test_ar1_stationary_start),
         cmocka_unit_test(test_determinism_and_stream_independence),
         cmocka_unit_test(test_quantisation),
         cmocka_unit_test(test_flicker),
+        cmocka_unit_test(test_flicker_stationary_start),
         cmocka_unit_test(test_rate_random_walk),
         cmocka_unit_test(test_ramp_and_thermal),
         cmocka_unit_test(test_vibration),
@@ -917,6 +1065,7 @@ int main(void)
         cmocka_unit_test(test_deterministic_signal_effects),
         cmocka_unit_test(test_apply_rejects_nonfinite),
         cmocka_unit_test(test_timing),
+        cmocka_unit_test(test_dropout_before_duplicate),
         cmocka_unit_test(test_alias_noise_folding),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

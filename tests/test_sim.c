@@ -191,6 +191,15 @@ static void test_alias_effect_folds_a_tone(void **state)
     run(m, &e, 0.0, &s);
     a50 = goertzel(&s, 2, 50.0, 200.0);
     FNAV_ASSERT_CLOSE(a50, 0.5, 0.0, 0.01);
+    /* alias picks whatever --decimation says (hx_sim_setup_from_args: mean
+     * only without alias): the trapezoidal interval mean over the 10
+     * internal periods would pass |sum_k w_k e^(i 2 pi 150 k / 2000)| / 10
+     * = 0.29 of the tone (k = 0..10, w = 1/2 at the ends; numpy) (a mutant
+     * that let mean decimation override alias passed) */
+    g_decim = HX_DECIM_MEAN;
+    run(m, &e, 0.0, &s);
+    g_decim = HX_DECIM_FIR;
+    FNAV_ASSERT_CLOSE(goertzel(&s, 2, 50.0, 200.0), 0.5, 0.0, 0.01);
 
     e = ideal(200.0, 10);
     assert_int_equal(hx_effect_parse(&e, "vibration:ch=az:amp=0.5:freq_hz=30", err, sizeof err), 0);
@@ -380,6 +389,44 @@ static void test_timing_effects_reach_the_stamps(void **state)
     hx_motion_free(m);
 }
 
+/* Sampling-instant jitter (jitter:sample_s) with point sampling: sample j
+ * is the signal at t_j + dt_j, dt_j the tick's sample offset. The offsets
+ * are replayed from a model of the same configuration (the jitter stream
+ * is the tick's alone) and the truth evaluated there. test_timing_* used a
+ * standing foot, where the offset changes nothing: a hand-made mutant of
+ * hx_sim.c that sampled at t_j (the offset dropped) passed every suite. */
+static void test_sample_jitter_moves_the_instant(void **state)
+{
+    hx_motion_t *m = motion("stand:1,walk:6,stand:1", -1.0, 0.0);
+    fnav_imuerr_config_t e = ideal(200.0, 1);
+    fnav_imuerr_t rep;
+    ticks_t s = { 0, 0, NULL };
+    char err[256];
+    double moved = 0.0;
+    size_t i;
+    int c;
+    (void)state;
+    assert_int_equal(hx_effect_parse(&e, "jitter:stamp_s=0:sample_s=5e-4", err, sizeof err), 0);
+    run(m, &e, 0.0, &s);
+    assert_int_equal(fnav_imuerr_init(&rep, &e), FNAV_OK);
+    for (i = 0; i < s.n; i++) {
+        fnav_imuerr_tick_t tk;
+        hx_truth_t o;
+        fnav_imuerr_tick(&rep, &tk);
+        hx_motion_eval(m, s.t[i].t_s + (double)tk.sample_off_s, &o);
+        for (c = 0; c < 3; c++) {
+            FNAV_ASSERT_CLOSE(s.t[i].meas.accel_mps2[c], o.f_b[c], 1e-6, 1e-6); /* float */
+            FNAV_ASSERT_CLOSE(s.t[i].meas.gyro_rps[c], o.w_b[c], 1e-6, 1e-6);
+            moved = fmax(moved, fabs(o.f_b[c] - s.t[i].truth.f_b[c]));
+        }
+        assert_int_equal(s.t[i].meas.t_ns, (int64_t)llround((double)i / 200.0 * 1e9)); /* stamps untouched */
+    }
+    fprintf(stderr, "sample jitter 0.5 ms on a walk: up to %.3f m/s^2 from the nominal instant\n", moved);
+    assert_true(moved > 0.1); /* the offsets matter on this motion */
+    free(s.t);
+    hx_motion_free(m);
+}
+
 /* Sampled ideal signals at 1 kHz through a simple second-order strapdown
  * (midpoint rotation vector, trapezoidal velocity) stay on the trajectory:
  * stated tolerance 5 cm after a 20 m walk with soft impacts, the error of
@@ -554,6 +601,56 @@ static void test_mean_decimation(void **state)
     hx_motion_free(m);
 }
 
+/* --bias-sigma eq6 (docs/simulator.md, "The baseline"): the tables'
+ * sigma_bias read by the paper's eq. (6) is the Allan floor BS = sigma_bias
+ * sqrt(tau samples), tau samples = tau_s rate_hz, and the simulated
+ * Gauss-Markov process is the one whose Allan deviation peaks at BS.
+ * Checked against the continuous Gauss-Markov Allan variance (stationary
+ * sigma, correlation time tau): sigma^2 tau^2 / T^2 (2 T / tau - 3 +
+ * 4 e^(-T/tau) - e^(-2T/tau)), maximised over T on a grid: the peak is
+ * 0.61736 sigma at T = 1.893 tau (/usr/bin/python3 -c "import numpy as np;
+ * x = np.linspace(.01, 10, 200001); a = np.sqrt((2*x - 3 + 4*np.exp(-x) -
+ * np.exp(-2*x)) / x**2); print(a.max(), x[a.argmax()])"), so the code's
+ * 0.617 is within 0.06 %. A hand-made mutant taking tau in seconds (sqrt(tau_s)
+ * without the rate) passed every test. */
+static double gm_adev_peak(double sigma) /* the peak's value does not depend on tau, only its place */
+{
+    double best = 0.0, x;
+    for (x = 0.5; x < 5.0; x += 1e-4) {
+        double a = (2.0 * x - 3.0 + 4.0 * exp(-x) - exp(-2.0 * x)) / (x * x);
+        best = fmax(best, sigma * sqrt(a));
+    }
+    return best;
+}
+
+static void test_bias_sigma_eq6(void **state)
+{
+    const char *names[2] = { "navchip", "mtx" };
+    int k, i;
+    (void)state;
+    for (k = 0; k < 2; k++) {
+        fnav_profile_t p, q;
+        assert_int_equal(fnav_profile_by_name(&p, names[k]), FNAV_OK);
+        q = p;
+        hx_profile_bias_eq6(&q);
+        for (i = 0; i < 3; i++) {
+            double rate = (double)p.rate_hz;
+            double bs_a = (double)p.accel_bias_sigma_mps2[i] * sqrt((double)p.accel_tau_s[i] * rate);
+            double bs_g = (double)p.gyro_bias_sigma_rps[i] * sqrt((double)p.gyro_tau_s[i] * rate);
+            FNAV_ASSERT_CLOSE(gm_adev_peak((double)q.accel_bias_sigma_mps2[i]), bs_a, 0.0, 1e-3);
+            FNAV_ASSERT_CLOSE(gm_adev_peak((double)q.gyro_bias_sigma_rps[i]), bs_g, 0.0, 1e-3);
+            FNAV_ASSERT_CLOSE(q.accel_tau_s[i], p.accel_tau_s[i], 0.0, 0.0); /* only sigma is reread */
+        }
+    }
+    {
+        /* the text's example: NavChip accelerometer x, BS = 5.8e-4 m/s^2 */
+        fnav_profile_t p;
+        assert_int_equal(fnav_profile_by_name(&p, "navchip"), FNAV_OK);
+        hx_profile_bias_eq6(&p);
+        FNAV_ASSERT_CLOSE(0.61736 * (double)p.accel_bias_sigma_mps2[0], 5.8e-4, 0.0, 0.01);
+    }
+}
+
 static void test_effect_specs(void **state)
 {
     fnav_imuerr_config_t e = fnav_imuerr_config_default, back = fnav_imuerr_config_default;
@@ -565,6 +662,10 @@ static void test_effect_specs(void **state)
     assert_int_equal(hx_channels_parse("ax+gz"), FNAV_CH_AX | FNAV_CH_GZ);
     assert_int_equal(hx_channels_parse("ax+"), 0);
     assert_int_equal(hx_channels_parse("bx"), 0);
+    /* names are joined by '+': a mutant that accepted "axay" and "ax+gyz"
+     * (no separator, a trailing letter) passed */
+    assert_int_equal(hx_channels_parse("axay"), 0);
+    assert_int_equal(hx_channels_parse("ax+gyz"), 0);
     assert_int_equal(hx_effect_parse(&e, "quant:ch=gyro:lsb=1.0653e-3", err, sizeof err), 0);
     assert_int_equal(e.mask[FNAV_EFFECT_QUANT], FNAV_CH_GYRO);
     FNAV_ASSERT_CLOSE(e.quant.lsb[5], 1.0653e-3, 0.0, 1e-6);
@@ -651,9 +752,11 @@ int main(void)
         cmocka_unit_test(test_impacts_alias_without_filter),
         cmocka_unit_test(test_noise_level_and_determinism),
         cmocka_unit_test(test_timing_effects_reach_the_stamps),
+        cmocka_unit_test(test_sample_jitter_moves_the_instant),
         cmocka_unit_test(test_sampled_strapdown),
         cmocka_unit_test(test_motion_domain_signatures),
         cmocka_unit_test(test_mean_decimation),
+        cmocka_unit_test(test_bias_sigma_eq6),
         cmocka_unit_test(test_effect_specs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

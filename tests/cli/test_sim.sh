@@ -142,6 +142,23 @@ expect_out_re "^samples     2001$" "info sample count"
 # was refused as "the effects are inconsistent"
 expect_exit 0 "sim --rate 1" "$H" sim --rate 1 --duration 20 --out "$T/r1.csv"
 expect_out "internal x1024" "--rate 1: the largest oversampling"
+# the default is the smallest M with M x rate >= 2 kHz (docs/simulator.md):
+# 2000 / 300 = 6.67 -> 7, 2000 / 150 = 13.3 -> 14 (a mutant rounding down,
+# 1800 and 1950 Hz internally, passed every test: 200 and 100 Hz divide 2000)
+expect_exit 0 "sim --rate 300" "$H" sim --rate 300 --duration 1 --out "$T/r300.csv"
+expect_out "internal x7 " "--rate 300: internal x7 (2100 Hz)"
+expect_exit 0 "sim --rate 150" "$H" sim --rate 150 --duration 1 --out "$T/r150.csv"
+expect_out "internal x14 " "--rate 150: internal x14 (2100 Hz)"
+# --ring-scale reaches the walk's ringing: 1 is the default, 0 changes the
+# samples (a mutant that left the walking gait's ringing unscaled passed;
+# the run and stair gaits were scaled, the default motion is a walk)
+for k in 0 1; do
+    "$H" sim --motion stand:1,walk:3,stand:1 --profile none --rate 200 --ring-scale $k --out "$T/ring$k.csv" >/dev/null 2>&1 ||
+        fail "sim --ring-scale $k"
+done
+"$H" sim --motion stand:1,walk:3,stand:1 --profile none --rate 200 --out "$T/ringd.csv" >/dev/null 2>&1 || fail "sim ring default"
+if cmp -s "$T/ring1.csv" "$T/ringd.csv"; then pass "--ring-scale 1 is the default"; else fail "--ring-scale 1 differs from the default"; fi
+if cmp -s "$T/ring0.csv" "$T/ringd.csv"; then fail "--ring-scale 0 left the walk's ringing"; else pass "--ring-scale 0 changes the walk"; fi
 
 # --- the summary counts the strides of the output, not of the whole motion
 # (a 30 s cut of 'paper' said 154 strides, those of its 185 s)
