@@ -280,6 +280,132 @@ static void test_bin_corrupted(void **state)
     expect_bin(b, g_golden_n + 100, 1, 6, FNAV_E_CRC, "corrupted");
 }
 
+/* The golden file with its header's CRC made right again after a change
+ * (zlib's crc32, as the specification says). */
+static void golden_patched_header(unsigned char *b)
+{
+    uLong c = crc32(0L, b, 188);
+    b[188] = (unsigned char)(c & 0xffu);
+    b[189] = (unsigned char)((c >> 8) & 0xffu);
+    b[190] = (unsigned char)((c >> 16) & 0xffu);
+    b[191] = (unsigned char)((c >> 24) & 0xffu);
+}
+
+/* What a reader rejects in a header whose CRC is right (docs/log-format.md,
+ * "Header"): a version other than 1, a rate outside [0, 1e6], an
+ * unterminated text field, units other than the fixed string. Hand-made
+ * mutants dropping each of these checks (or taking version 0 for 1)
+ * passed every suite: the corrupted headers above all had a bad CRC, a
+ * version of 2 or a huge size. And the header's flags are read as they
+ * are: the golden file sets all three, so a reader taking any flag as set
+ * passed too. */
+static void test_bin_header_fields(void **state)
+{
+    static const struct {
+        unsigned bit;
+        size_t off; /* of the hx_meta_t field the bit sets */
+    } k_flags[3] = { { 0x1u, offsetof(hx_meta_t, rate_nominal) },
+                     { 0x2u, offsetof(hx_meta_t, has_temp) },
+                     { 0x4u, offsetof(hx_meta_t, has_seq) } };
+    unsigned char b[4096];
+    double rate;
+    char p[256];
+    readall_t r;
+    hx_meta_t m;
+    int i;
+    (void)state;
+    memcpy(b, g_golden, g_golden_n);
+    b[4] = 0;
+    golden_patched_header(b);
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, "unsupported version 0");
+    memcpy(b, g_golden, g_golden_n);
+    rate = 2.0e6;
+    memcpy(b + 16, &rate, 8); /* little-endian host, as the format */
+    golden_patched_header(b);
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, "not in [0, 1e6]");
+    memcpy(b, g_golden, g_golden_n);
+    rate = 1.0e6; /* the top of the range is in it */
+    memcpy(b + 16, &rate, 8);
+    golden_patched_header(b);
+    expect_bin(b, g_golden_n, 1, 6, FNAV_END, NULL);
+    memcpy(b, g_golden, g_golden_n);
+    memset(b + 80, 'x', 48); /* the axis note without its NUL */
+    golden_patched_header(b);
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, "text field not terminated");
+    memcpy(b, g_golden, g_golden_n);
+    memcpy(b + 56, "m/s^2 rad/s degC us", 20); /* time in microseconds */
+    golden_patched_header(b);
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, "units 'm/s^2 rad/s degC us' not supported");
+    for (i = 0; i < 3; i++) {
+        memcpy(b, g_golden, g_golden_n);
+        assert_true((b[12] & k_flags[i].bit) != 0);
+        b[12] = (unsigned char)(b[12] & ~k_flags[i].bit);
+        golden_patched_header(b);
+        tmp_path(p, sizeof p, ".bin");
+        write_file(p, b, g_golden_n);
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, &m), 0);
+        assert_int_equal(r.n, 6);
+        assert_int_equal(*(const int *)(const void *)((const char *)&m + k_flags[i].off), 0);
+        assert_int_equal(m.rate_nominal + m.has_temp + m.has_seq, 2);
+        unlink(p);
+    }
+}
+
+/* The END record's count against the records read (docs/log-format.md,
+ * "record count disagrees with END: reported at the end"): the golden
+ * END says 6; made 5 (its CRC made right), all six samples are delivered,
+ * then the mismatch. A mutant ignoring the count passed every suite. */
+static void test_bin_end_count(void **state)
+{
+    unsigned char b[4096], *end = b + HX_BIN_HEADER_SIZE + 6 * HX_BIN_RECORD_SIZE;
+    uLong c;
+    (void)state;
+    memcpy(b, g_golden, g_golden_n);
+    assert_int_equal(g_golden_n, HX_BIN_HEADER_SIZE + 7 * HX_BIN_RECORD_SIZE);
+    assert_int_equal(end[0] | (end[1] << 8), HX_BIN_REC_END);
+    assert_int_equal(end[4], 6);
+    end[4] = 5;
+    c = crc32(0L, end, 44);
+    end[44] = (unsigned char)(c & 0xffu);
+    end[45] = (unsigned char)((c >> 8) & 0xffu);
+    end[46] = (unsigned char)((c >> 16) & 0xffu);
+    end[47] = (unsigned char)((c >> 24) & 0xffu);
+    expect_bin(b, g_golden_n, 1, 6, FNAV_E_CRC, "end record counts 5 records but 6 were read");
+}
+
+/* Resynchronisation (docs/log-format.md, "corrupted record"): at the next
+ * slot when that slot is valid, else byte by byte; the skipped bytes are
+ * counted. A record damaged in place skips no byte; seven bytes inserted
+ * skip those seven. A mutant always scanning byte by byte (48 bytes
+ * skipped for the damaged record) passed every suite. */
+static void test_bin_resync_counts(void **state)
+{
+    unsigned char b[4096];
+    const size_t r2 = HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE;
+    char p[256], err[320];
+    hx_log_t log;
+    (void)state;
+    memcpy(b, g_golden, g_golden_n);
+    b[r2 + 20] ^= 0x40;
+    tmp_path(p, sizeof p, ".bin");
+    write_file(p, b, g_golden_n);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1);
+    assert_int_equal(log.n, 5);
+    assert_int_equal(log.stats.bad_records, 1);
+    assert_int_equal(log.stats.skipped_bytes, 0);
+    hx_log_free(&log);
+    memcpy(b, g_golden, r2);
+    memcpy(b + r2, "GARBAGE", 7);
+    memcpy(b + r2 + 7, g_golden + r2, g_golden_n - r2);
+    write_file(p, b, g_golden_n + 7);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1);
+    assert_int_equal(log.n, 6);
+    assert_int_equal(log.stats.bad_records, 1);
+    assert_int_equal(log.stats.skipped_bytes, 7);
+    hx_log_free(&log);
+    unlink(p);
+}
+
 static void test_bin_nan_record(void **state)
 {
     unsigned char b[4096];
@@ -1370,6 +1496,9 @@ int main(void)
         cmocka_unit_test(test_bin_truncated),
         cmocka_unit_test(test_bin_corrupted),
         cmocka_unit_test(test_bin_nan_record),
+        cmocka_unit_test(test_bin_header_fields),
+        cmocka_unit_test(test_bin_end_count),
+        cmocka_unit_test(test_bin_resync_counts),
         cmocka_unit_test(test_csv_malformed),
         cmocka_unit_test(test_csv_flexible),
         cmocka_unit_test(test_csv_missing_temp),
