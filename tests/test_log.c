@@ -936,6 +936,61 @@ static void test_importer_units(void **state)
     }
 }
 
+/* Every axis of the first sample of each walk, against its first data row
+ * as the file has it (columns found by name with Python's csv module;
+ * units and scale factors from ../shared/data/MANIFEST.md: g x 9.80665,
+ * deg/s x pi/180, the SI sets as they are). test_importer_units checks two
+ * axes of some formats and test_importers only gravity's size and z sign:
+ * hand-made mutants swapping the gyro's x and y columns of the pyshoe,
+ * ipol and OpenShoe 820 Hz importers passed every suite. */
+static void test_importer_first_rows(void **state)
+{
+    static const double g0 = 9.80665, d2r = 3.14159265358979323846 / 180.0;
+    static const struct {
+        const char *rel;
+        hx_format_t fmt;
+        double acc[3], acc_scale, gyr[3], gyr_scale;
+    } k_rows[] = {
+        /* t_s 0.000000: ax_mps2..gz_radps */
+        { "pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_31_imu.csv", HX_FMT_PYSHOE,
+          { 5.689716, 1.564783, -7.854842 }, 1.0, { 0.003722398, -0.002670883, 0.0052455 }, 1.0 },
+        /* sample 0: f_x_mps2..w_z_radps (the quaternion after them unused) */
+        { "openshoe_square2/square2_u.csv", HX_FMT_SQUARE2, { -0.073840446, -0.000314401199, -9.81912955 }, 1.0,
+          { 0.00148909, -0.00189885, -0.00106122 }, 1.0 },
+        /* PacketCounter 0.0: Acc_X..Gyr_Z (the magnetometer after them unused) */
+        { "ipol_gait_xsens/1-1_lf.txt", HX_FMT_IPOL, { 5.090554, 0.409101, 8.923938 }, 1.0,
+          { -0.002503, 0.008869, -0.017776 }, 1.0 },
+        /* line 1, no header: f_x f_y f_z [m/s^2], w_x w_y w_z [rad/s] */
+        { "openshoe_c_820hz/OpenShoeDataSet.txt", HX_FMT_OS820, { 0.19594386, -0.42454505, 9.86250782 }, 1.0,
+          { -0.00349064, -0.01745320, -0.02443448 }, 1.0 },
+        /* Time (s) 0: the gyroscope (deg/s) first, then the accelerometer (g) */
+        { "xio_ngimu_gait/short_walk.csv", HX_FMT_NGIMU, { -0.4937814, 0.2420433, 0.8312204 }, g0,
+          { -0.1428319, -0.7708032, -0.2320606 }, d2r },
+        /* Nr 1: a_x a_y a_z [g], ar_x ar_y ar_z [rad/s] */
+        { "openshoe_gx2/Measurement_100521_2_data_inert.txt", HX_FMT_GX2, { -0.10581776, 0.15830289, 0.99007481 },
+          g0, { 0.00535047, -0.01242570, 0.00101861 }, 1.0 },
+    };
+    size_t i;
+    int k;
+    (void)state;
+    for (i = 0; i < sizeof k_rows / sizeof k_rows[0]; i++) {
+        char p[512], err[320];
+        hx_log_t log;
+        if (fnav_testdata_path(k_rows[i].rel, p, sizeof p) != 0) {
+            fnav_test_skip_notice(k_rows[i].rel);
+            continue;
+        }
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        assert_int_equal(log.meta.format, k_rows[i].fmt);
+        for (k = 0; k < 3; k++) {
+            /* float32 samples: 1e-7 relative */
+            FNAV_ASSERT_CLOSE(log.acc[0][k], k_rows[i].acc[k] * k_rows[i].acc_scale, 1e-12, 1e-7);
+            FNAV_ASSERT_CLOSE(log.gyr[0][k], k_rows[i].gyr[k] * k_rows[i].gyr_scale, 1e-12, 1e-7);
+        }
+        hx_log_free(&log);
+    }
+}
+
 /* The OpenShoe GX2 logger's preamble and header line, as its files have them. */
 static void write_gx2_header(FILE *f)
 {
@@ -1508,6 +1563,7 @@ int main(void)
         cmocka_unit_test(test_bad_rate),
         cmocka_unit_test(test_importers),
         cmocka_unit_test(test_importer_units),
+        cmocka_unit_test(test_importer_first_rows),
         cmocka_unit_test(test_gx2_lost_packets),
         cmocka_unit_test(test_gx2_restart_then_error),
         cmocka_unit_test(test_gx2_first_restart),
