@@ -1152,6 +1152,79 @@ static void test_gx2_repeated_packet(void **state)
     remove(p);
 }
 
+/* GX2: a tick difference within half of the last good period is taken as
+ * it is, a larger one is a restart bridged with that period
+ * (docs/log-format.md, "GX2 time"). Intervals of 1.45 and 1.55 periods,
+ * Nr stepping by one: the first is kept (and becomes the period the next
+ * one, of one period, is compared with), the second bridged. A mutant
+ * allowing an eighth instead of a half passed every suite (the six real
+ * files vary by 0.3 %). */
+static void test_gx2_restart_tolerance(void **state)
+{
+    const long p = 78720;
+    static const double k_step[9] = { 1, 1, 1, 1, 1.45, 1, 1, 1.55, 1 };
+    hx_log_t log;
+    char err[320], path[256];
+    FILE *f;
+    long nr, counter = 130516848, ticks = 0;
+    (void)state;
+    f = open_gx2(path, sizeof path);
+    for (nr = 1; nr <= 10; nr++) {
+        if (nr > 1) {
+            counter += (long)(k_step[nr - 2] * (double)p + 0.5);
+        }
+        write_gx2_record(f, (unsigned long)counter, nr, 1274434048.5 + 0.004 * (double)nr,
+                         1274434048.504 + 0.004 * (double)nr, "250.000001");
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, path, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.n, 10);
+    for (nr = 2; nr <= 10; nr++) {
+        /* 114144 ticks kept; 122016 bridged with 78720 */
+        ticks += nr == 9 ? p : (long)(k_step[nr - 2] * (double)p + 0.5);
+        assert_true(log.t_ns[nr - 1] == (int64_t)ticks * 1000000000LL / 19660800LL);
+    }
+    assert_non_null(strstr(log.warnings, "sensor timer restarted 1 times"));
+    hx_log_free(&log);
+    remove(path);
+}
+
+/* GX2: a timer restart on the first interval across lost packets (Nr 1 to
+ * 4, two lost) is bridged with three periods of the logger's rate
+ * (Freq. [Hz] 250: 12 ms), as a restart across a loss later on is bridged
+ * with k measured periods. A mutant bridging one period (4 ms) passed every
+ * suite. */
+static void test_gx2_first_restart_lost(void **state)
+{
+    const long period = 78720;
+    hx_log_t log;
+    char err[320], p[256];
+    FILE *f;
+    long nr, counter = 130831728;
+    (void)state;
+    f = open_gx2(p, sizeof p);
+    for (nr = 1; nr <= 10; nr++) {
+        const double host = 1274434048.5 + 0.004 * (double)nr;
+        if (nr == 2 || nr == 3) {
+            continue; /* lost */
+        }
+        if (nr == 4) {
+            counter = 6068; /* restarted */
+        } else if (nr > 4) {
+            counter += period;
+        }
+        write_gx2_record(f, (unsigned long)counter, nr, host, host + 0.004, "250.000000");
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.n, 8);
+    assert_int_equal(log.seq[1], 4);
+    assert_true(llabs(log.t_ns[1] - log.t_ns[0] - 12000000LL) <= 60); /* a tick: 51 ns */
+    assert_true(llabs(log.t_ns[2] - log.t_ns[1] - period * 1000000000LL / 19660800LL) <= 1);
+    hx_log_free(&log);
+    remove(p);
+}
+
 /* GX2 time past 469 s: ticks x 1e9 overflowed int64 there (19.6608 MHz), and
  * a longer log stopped with "time goes backwards". 9,600 samples 50 ms
  * apart (983,040 ticks; the 32-bit timer wraps twice, bridged with the
@@ -1397,6 +1470,51 @@ static void test_ipol_counter_wrap(void **state)
     unlink(p);
 }
 
+/* ipol: the rate of line 1 gives the time of each packet count, and
+ * --input-rate overrides it (the file has a counter, no time stamps; the
+ * reader warns "ignored" only for time-stamped formats); a counter that
+ * drops by less than half its 16-bit range is no wrap but a step back in
+ * time, an error at its line. Hand-made mutants ignoring --input-rate for
+ * ipol and taking any drop for a wrap (65536 counts on, 655 s at 100 Hz)
+ * passed every suite. */
+static void test_ipol_rate_and_step_back(void **state)
+{
+    char p[256], err[320];
+    hx_log_t log;
+    FILE *f;
+    long c;
+    (void)state;
+    tmp_path(p, sizeof p, "_lf.txt");
+    f = fopen(p, "w");
+    assert_non_null(f);
+    fprintf(f, "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\tMag_X\tMag_Y\tMag_Z\n");
+    for (c = 10; c < 14; c++) {
+        fprintf(f, "%ld.0\t5.09\t0.41\t8.92\t-0.0025\t0.0089\t-0.0178\t-0.58\t-0.15\t-0.4\n", c);
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 50.0, err, sizeof err), 0);
+    assert_int_equal(log.meta.format, HX_FMT_IPOL);
+    assert_true(log.meta.rate_hz == 50.0);
+    assert_int_equal(log.n, 4);
+    assert_true(log.t_ns[0] == 200000000LL); /* count 10 at 50 Hz */
+    assert_true(log.t_ns[1] - log.t_ns[0] == 20000000LL);
+    assert_null(strstr(log.warnings, "ignored"));
+    hx_log_free(&log);
+    /* without it, 100 Hz from line 1; then 13 -> 11: back in time */
+    f = fopen(p, "a");
+    assert_non_null(f);
+    fprintf(f, "11.0\t5.09\t0.41\t8.92\t-0.0025\t0.0089\t-0.0178\t-0.58\t-0.15\t-0.4\n");
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1);
+    assert_true(log.meta.rate_hz == 100.0);
+    assert_int_equal(log.n, 4);
+    assert_true(log.t_ns[1] - log.t_ns[0] == 10000000LL);
+    assert_int_equal(log.status, FNAV_E_TIME);
+    assert_non_null(strstr(log.error, ":7: time goes backwards"));
+    hx_log_free(&log);
+    unlink(p);
+}
+
 /* Importer -> .bin -> CSV -> read: every value equals the importer's value
  * rounded to float32, every time stamp is exact. */
 static void test_roundtrip_all_formats(void **state)
@@ -1569,7 +1687,10 @@ int main(void)
         cmocka_unit_test(test_gx2_first_restart),
         cmocka_unit_test(test_gx2_long),
         cmocka_unit_test(test_gx2_repeated_packet),
+        cmocka_unit_test(test_gx2_restart_tolerance),
+        cmocka_unit_test(test_gx2_first_restart_lost),
         cmocka_unit_test(test_ipol_counter_wrap),
+        cmocka_unit_test(test_ipol_rate_and_step_back),
         cmocka_unit_test(test_detect_variants),
         cmocka_unit_test(test_detect_wrong_hint),
         cmocka_unit_test(test_gz_truncated),
