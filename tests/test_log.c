@@ -1225,6 +1225,50 @@ static void test_gx2_first_restart_lost(void **state)
     remove(p);
 }
 
+/* GX2: a last line without a newline, cut inside field 12 (the unfiltered
+ * host stamp, which the reader does not use), leaves every value the reader
+ * takes whole and is read, as docs/log-format.md ("Recordings cut off
+ * mid-write") says; one cut inside field 11 (the filtered host stamp, which
+ * it takes) is dropped with the warning. Until 2026-11-29 the reader
+ * required twelve fields and dropped the first kind too, as "ends in a
+ * value the reader uses" (found by a hand-made mutant of that count that
+ * passed every suite: no test had a 12-field last line; none of the six
+ * files has one, walks 31 and 32 end inside fields 10 and 7). */
+static void test_gx2_cut_last_line(void **state)
+{
+    const long period = 78720;
+    static const char *const k_cut[2] = { "1274434048.54", "1274434048.54 127443" };
+    char p[256];
+    int c;
+    (void)state;
+    for (c = 0; c < 2; c++) {
+        FILE *f = open_gx2(p, sizeof p);
+        long nr, counter = 130516848;
+        for (nr = 1; nr <= 3; nr++) {
+            write_gx2_record(f, (unsigned long)counter, nr, 1274434048.5 + 0.004 * (double)nr,
+                             1274434048.504 + 0.004 * (double)nr, "250.000001");
+            counter += period;
+        }
+        fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     "
+                   "%ld    0x15fd       4 %s", counter, k_cut[c]);
+        assert_int_equal(fclose(f), 0);
+        if (c == 0) {
+            expect_cut(p, HX_FMT_GX2, 3, ":8: last line"); /* 4 preamble lines, 3 records */
+        } else {
+            char err[320];
+            hx_log_t log;
+            assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+            assert_int_equal(log.n, 4);
+            assert_int_equal(log.seq[3], 4);
+            assert_true(log.t_ns[3] == 3LL * period * 1000000000LL / 19660800LL);
+            assert_int_equal(log.stats.cut_lines, 0);
+            assert_null(strstr(log.warnings, "last line"));
+            hx_log_free(&log);
+        }
+        remove(p);
+    }
+}
+
 /* GX2 time past 469 s: ticks x 1e9 overflowed int64 there (19.6608 MHz), and
  * a longer log stopped with "time goes backwards". 9,600 samples 50 ms
  * apart (983,040 ticks; the 32-bit timer wraps twice, bridged with the
@@ -1689,6 +1733,7 @@ int main(void)
         cmocka_unit_test(test_gx2_repeated_packet),
         cmocka_unit_test(test_gx2_restart_tolerance),
         cmocka_unit_test(test_gx2_first_restart_lost),
+        cmocka_unit_test(test_gx2_cut_last_line),
         cmocka_unit_test(test_ipol_counter_wrap),
         cmocka_unit_test(test_ipol_rate_and_step_back),
         cmocka_unit_test(test_detect_variants),
