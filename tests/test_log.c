@@ -274,6 +274,19 @@ static void test_bin_corrupted(void **state)
     memcpy(b + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE + 7, g_golden + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE,
            g_golden_n - HX_BIN_HEADER_SIZE - 2 * HX_BIN_RECORD_SIZE);
     expect_bin(b, g_golden_n + 7, 1, 6, FNAV_E_CRC, "corrupted");
+    /* a record of an unknown type with a right CRC: skipped, and said so
+     * (a mutant reading any type checked the CRC alone and called it a
+     * checksum mismatch) */
+    memcpy(b, g_golden, g_golden_n);
+    b[HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE] = 0x02; /* type 0xA502 */
+    {
+        uLong c = crc32(0L, b + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE, 44);
+        int k;
+        for (k = 0; k < 4; k++) {
+            b[HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE + 44 + k] = (unsigned char)((c >> (8 * k)) & 0xffu);
+        }
+    }
+    expect_bin(b, g_golden_n, 1, 5, FNAV_E_CRC, "record #2 at byte 288: unknown record type (corrupted); skipped");
     /* trailing garbage after the end record */
     memcpy(b, g_golden, g_golden_n);
     memset(b + g_golden_n, 0x55, 100);
@@ -1269,6 +1282,55 @@ static void test_gx2_cut_last_line(void **state)
     }
 }
 
+/* GX2 timer cases of docs/log-format.md ("GX2 time") that no test had; a
+ * hand-made mutant of each passed every suite:
+ * - the first interval's timer jumps 1e8 ticks (5 s) on, "an unrelated
+ *   base": bridged with the logger's rate (Freq. 250 Hz, 4 ms), not taken
+ *   (a mutant without the 0.1 s bound took it);
+ * - Nr jumps from 5 to 5000 with the timer one period on: a jump beyond
+ *   1000 is a restart of the count, one period (a mutant without the bound
+ *   bridged 4995 periods, 19.5 s);
+ * - the timer repeats with Nr one on: not the same packet written twice,
+ *   so a restart bridged with a period, not a duplicate (a mutant comparing
+ *   the timer alone made it dt = 0);
+ * - --input-rate on this time-stamped format is ignored with a warning (a
+ *   mutant left GX2 out of the warning). */
+static void test_gx2_timer_cases(void **state)
+{
+    const long p = 78720;
+    static const long k_nr[8] = { 1, 2, 3, 4, 5, 5000, 5001, 5002 };
+    /* ticks after the previous record; -1: the timer repeats */
+    static const long k_step[8] = { 0, 100000000, 78720, 78720, 78720, 78720, -1, 78720 };
+    /* the interval the reader must give, in ticks: 4 ms at 250 Hz is
+     * (int64)(0.004 x 19660800 + 0.5) = 78643 */
+    static const long k_dt[8] = { 0, 78643, 78720, 78720, 78720, 78720, 78720, 78720 };
+    hx_log_t log;
+    char err[320], path[256];
+    FILE *f;
+    long counter = 1000, ticks = 0;
+    int i;
+    (void)state;
+    f = open_gx2(path, sizeof path);
+    for (i = 0; i < 8; i++) {
+        counter += k_step[i] < 0 ? 0 : k_step[i];
+        write_gx2_record(f, (unsigned long)counter, k_nr[i], 1274434048.5 + 0.004 * (double)i,
+                         1274434048.504 + 0.004 * (double)i, "250.000000");
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, path, HX_FMT_AUTO, 100.0, err, sizeof err), 0);
+    assert_int_equal(log.n, 8);
+    for (i = 1; i < 8; i++) {
+        ticks += k_dt[i];
+        assert_true(log.t_ns[i] == (int64_t)ticks * 1000000000LL / 19660800LL);
+        assert_int_equal(log.seq[i], k_nr[i]);
+    }
+    assert_true(p == k_dt[2]);
+    assert_non_null(strstr(log.warnings, "sensor timer restarted 2 times"));
+    assert_non_null(strstr(log.warnings, "--input-rate ignored: the gx2 format has time stamps"));
+    hx_log_free(&log);
+    remove(path);
+}
+
 /* GX2 time past 469 s: ticks x 1e9 overflowed int64 there (19.6608 MHz), and
  * a longer log stopped with "time goes backwards". 9,600 samples 50 ms
  * apart (983,040 ticks; the 32-bit timer wraps twice, bridged with the
@@ -1586,6 +1648,33 @@ static void test_range_in_si_units(void **state)
     unlink(p);
 }
 
+/* Quotes around values are ignored as around names (docs/log-format.md,
+ * "CSV interchange"; spreadsheets quote every field), and an ipol rate
+ * beyond 1e6 Hz is refused at line 1 as one that is no number. Hand-made
+ * mutants keeping a leading quote and dropping the rate's bound passed
+ * every suite. */
+static void test_quoted_values_and_ipol_rate(void **state)
+{
+    char p[256];
+    readall_t r;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "\"t\",\"ax\",\"ay\",\"az\",\"gx\",\"gy\",\"gz\"\n\"0.5\",\"1\",\"2\",\"3\",\"4\",\"5\",\"-6.25\"\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.end, FNAV_END);
+    assert_int_equal(r.n, 1);
+    assert_true(r.s[0].t_ns == 500000000LL);
+    assert_true((float)r.s[0].accel_mps2[0] == 1.0f);
+    assert_true((float)r.s[0].gyro_rps[2] == -6.25f);
+    unlink(p);
+    tmp_path(p, sizeof p, "_lf.txt");
+    write_text(p, "Acquisition frequency: 2000000 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "0\t5.09\t0.41\t8.92\t-0.0025\t0.0089\t-0.0178\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    assert_non_null(strstr(r.err, ":1: expected 'Acquisition frequency: N Hz'"));
+    unlink(p);
+}
+
 /* Importer -> .bin -> CSV -> read: every value equals the importer's value
  * rounded to float32, every time stamp is exact. */
 static void test_roundtrip_all_formats(void **state)
@@ -1761,6 +1850,8 @@ int main(void)
         cmocka_unit_test(test_gx2_restart_tolerance),
         cmocka_unit_test(test_gx2_first_restart_lost),
         cmocka_unit_test(test_gx2_cut_last_line),
+        cmocka_unit_test(test_gx2_timer_cases),
+        cmocka_unit_test(test_quoted_values_and_ipol_rate),
         cmocka_unit_test(test_ipol_counter_wrap),
         cmocka_unit_test(test_ipol_rate_and_step_back),
         cmocka_unit_test(test_range_in_si_units),

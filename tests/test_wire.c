@@ -499,6 +499,55 @@ static void test_seq_accounting(void **state)
     assert_int_equal(d.stats.frames, 8);
 }
 
+/* Each parser refuses a frame of its type with another length (the table's
+ * lengths) or of another type, and leaves the output alone: the decoder
+ * never delivers such a frame, but a caller may build one. A mutant
+ * dropping the NAV parser's length check passed every suite. */
+static void test_parse_wrong_length(void **state)
+{
+    static const uint8_t k_len[5] = { FNAV_WIRE_SAMPLE_LEN, FNAV_WIRE_NAV_LEN, FNAV_WIRE_STATUS_LEN,
+                                      FNAV_WIRE_INFO_LEN, FNAV_WIRE_END_LEN };
+    static const uint8_t k_type[5] = { FNAV_WIRE_SAMPLE, FNAV_WIRE_NAV, FNAV_WIRE_STATUS, FNAV_WIRE_INFO,
+                                       FNAV_WIRE_END };
+    static uint8_t pay[255];
+    fnav_wire_frame_t f;
+    fnav_sample_t s;
+    fnav_wire_nav_t nav;
+    fnav_wire_status_t st;
+    fnav_wire_info_t info;
+    uint32_t count = 77u;
+    int i, d;
+    (void)state;
+    assert_int_equal(k_len[0], 41); /* docs/wire-protocol.md's table */
+    assert_int_equal(k_len[1], 53);
+    assert_int_equal(k_len[2], 20);
+    assert_int_equal(k_len[3], 92);
+    assert_int_equal(k_len[4], 4);
+    memset(pay, 0, sizeof pay);
+    f.seq = 1u;
+    f.payload = pay;
+    for (i = 0; i < 5; i++) {
+        for (d = -1; d <= 1; d += 2) {
+            fnav_status_t r[5];
+            f.type = k_type[i];
+            f.len = (uint8_t)(k_len[i] + d);
+            memset(&nav, 0x5A, sizeof nav);
+            r[0] = fnav_wire_parse_sample(&f, &s);
+            r[1] = fnav_wire_parse_nav(&f, &nav);
+            r[2] = fnav_wire_parse_status(&f, &st);
+            r[3] = fnav_wire_parse_info(&f, &info);
+            r[4] = fnav_wire_parse_end(&f, &count);
+            assert_int_equal(r[0], FNAV_E_FORMAT);
+            assert_int_equal(r[1], FNAV_E_FORMAT);
+            assert_int_equal(r[2], FNAV_E_FORMAT);
+            assert_int_equal(r[3], FNAV_E_FORMAT);
+            assert_int_equal(r[4], FNAV_E_FORMAT);
+            assert_int_equal(nav.seq, 0x5A5A5A5Au);
+            assert_int_equal(count, 77u);
+        }
+    }
+}
+
 /* The boundary of a drop (docs/wire-protocol.md, step 5): a forward jump
  * of k < 32768 frames is a gap of k lost frames, one of 32768 is a restart
  * ("a drop of 32768 frames or more in one gap is indistinguishable from a
@@ -835,6 +884,7 @@ int main(void)
         cmocka_unit_test(test_info_rate),
         cmocka_unit_test(test_seq_accounting),
         cmocka_unit_test(test_seq_gap_boundary),
+        cmocka_unit_test(test_parse_wrong_length),
         cmocka_unit_test(test_known_type_wrong_length),
         cmocka_unit_test(test_nested_candidate_counts_once),
         cmocka_unit_test(test_garbage_fuzz),
