@@ -1675,6 +1675,26 @@ static void test_quoted_values_and_ipol_rate(void **state)
     unlink(p);
 }
 
+/* Negative time stamps (a log timed from an event) are read exactly, as
+ * the writer writes them ("-%lld.%09lld"): -1.5 s, -1 ns, 0. A mutant
+ * dropping the sign of the exact decimal path passed every suite; it read
+ * the first two as positive and stopped with "time goes backwards". */
+static void test_csv_negative_time(void **state)
+{
+    char p[256];
+    readall_t r;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n-1.5,0,0,9.8,0,0,0\n-0.000000001,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.end, FNAV_END);
+    assert_int_equal(r.n, 3);
+    assert_true(r.s[0].t_ns == -1500000000LL);
+    assert_true(r.s[1].t_ns == -1LL);
+    assert_true(r.s[2].t_ns == 0);
+    unlink(p);
+}
+
 /* Importer -> .bin -> CSV -> read: every value equals the importer's value
  * rounded to float32, every time stamp is exact. */
 static void test_roundtrip_all_formats(void **state)
@@ -1852,6 +1872,7 @@ int main(void)
         cmocka_unit_test(test_gx2_cut_last_line),
         cmocka_unit_test(test_gx2_timer_cases),
         cmocka_unit_test(test_quoted_values_and_ipol_rate),
+        cmocka_unit_test(test_csv_negative_time),
         cmocka_unit_test(test_ipol_counter_wrap),
         cmocka_unit_test(test_ipol_rate_and_step_back),
         cmocka_unit_test(test_range_in_si_units),
