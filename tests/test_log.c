@@ -1538,6 +1538,21 @@ static void test_stamp_rate(void **state)
         }
         assert_true(hx_stamp_rate_hz(t, N, NULL) == 100.0);
     }
+    {
+        /* a 100.4 Hz log stamped to 0.1 ms (four decimals): the intervals
+         * read 9.9 or 10.0 ms, a resolution of a hundredth of the period.
+         * Their median is one of those two (101.0 or 100.0 Hz, 0.4 % off);
+         * stamps that coarse take the mean of the intervals, 100.4 Hz. A
+         * mutant taking the median down to a hundredth (not a thousandth)
+         * of the period passed every suite */
+        int coarse = 0;
+        size_t k;
+        for (k = 0; k < N; k++) {
+            t[k] = (int64_t)floor((double)k / 100.4 * 1e4 + 0.5) * 100000;
+        }
+        FNAV_ASSERT_CLOSE(hx_stamp_rate_hz(t, N, &coarse), 100.4, 0.0, 1e-4);
+        assert_int_equal(coarse, 1);
+    }
     assert_true(hx_stamp_rate_hz(same, 3, NULL) == 0.0);
     assert_true(hx_stamp_rate_hz(same, 1, NULL) == 0.0);
 }
