@@ -862,9 +862,13 @@ static int setup_text(hx_reader_t *r, double rate_hz)
                 return -1;
             }
         } while (strncmp(trim(r->line), "Header:", 7) != 0);
+        /* fields 0-10 are taken (the Freq. column 13 only when there, see
+         * TIME_GX2): a last line cut inside field 11 or later is read (it
+         * needed 12 fields and such a line was dropped, which
+         * docs/log-format.md says is read; a mutant of the count,
+         * 2026-11-29) */
         set_cols(r, 10, 1, 4);
         r->col_aux = 9; /* Nr */
-        r->ncols_needed = 12;
         m->has_seq = 1;
         copy_str(m->sensor, sizeof m->sensor, "MicroStrain 3DM-GX2");
         copy_str(m->axes, sizeof m->axes, "sensor axes; z up at rest");

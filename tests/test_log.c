@@ -274,10 +274,149 @@ static void test_bin_corrupted(void **state)
     memcpy(b + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE + 7, g_golden + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE,
            g_golden_n - HX_BIN_HEADER_SIZE - 2 * HX_BIN_RECORD_SIZE);
     expect_bin(b, g_golden_n + 7, 1, 6, FNAV_E_CRC, "corrupted");
+    /* a record of an unknown type with a right CRC: skipped, and said so
+     * (a mutant reading any type checked the CRC alone and called it a
+     * checksum mismatch) */
+    memcpy(b, g_golden, g_golden_n);
+    b[HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE] = 0x02; /* type 0xA502 */
+    {
+        uLong c = crc32(0L, b + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE, 44);
+        int k;
+        for (k = 0; k < 4; k++) {
+            b[HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE + 44 + k] = (unsigned char)((c >> (8 * k)) & 0xffu);
+        }
+    }
+    expect_bin(b, g_golden_n, 1, 5, FNAV_E_CRC, "record #2 at byte 288: unknown record type (corrupted); skipped");
     /* trailing garbage after the end record */
     memcpy(b, g_golden, g_golden_n);
     memset(b + g_golden_n, 0x55, 100);
     expect_bin(b, g_golden_n + 100, 1, 6, FNAV_E_CRC, "corrupted");
+}
+
+/* The golden file with its header's CRC made right again after a change
+ * (zlib's crc32, as the specification says). */
+static void golden_patched_header(unsigned char *b)
+{
+    uLong c = crc32(0L, b, 188);
+    b[188] = (unsigned char)(c & 0xffu);
+    b[189] = (unsigned char)((c >> 8) & 0xffu);
+    b[190] = (unsigned char)((c >> 16) & 0xffu);
+    b[191] = (unsigned char)((c >> 24) & 0xffu);
+}
+
+/* What a reader rejects in a header whose CRC is right (docs/log-format.md,
+ * "Header"): a version other than 1, a rate outside [0, 1e6], an
+ * unterminated text field, units other than the fixed string. Hand-made
+ * mutants dropping each of these checks (or taking version 0 for 1)
+ * passed every suite: the corrupted headers above all had a bad CRC, a
+ * version of 2 or a huge size. And the header's flags are read as they
+ * are: the golden file sets all three, so a reader taking any flag as set
+ * passed too. */
+static void test_bin_header_fields(void **state)
+{
+    static const struct {
+        unsigned bit;
+        size_t off; /* of the hx_meta_t field the bit sets */
+    } k_flags[3] = { { 0x1u, offsetof(hx_meta_t, rate_nominal) },
+                     { 0x2u, offsetof(hx_meta_t, has_temp) },
+                     { 0x4u, offsetof(hx_meta_t, has_seq) } };
+    unsigned char b[4096];
+    double rate;
+    char p[256];
+    readall_t r;
+    hx_meta_t m;
+    int i;
+    (void)state;
+    memcpy(b, g_golden, g_golden_n);
+    b[4] = 0;
+    golden_patched_header(b);
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, "unsupported version 0");
+    memcpy(b, g_golden, g_golden_n);
+    rate = 2.0e6;
+    memcpy(b + 16, &rate, 8); /* little-endian host, as the format */
+    golden_patched_header(b);
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, "not in [0, 1e6]");
+    memcpy(b, g_golden, g_golden_n);
+    rate = 1.0e6; /* the top of the range is in it */
+    memcpy(b + 16, &rate, 8);
+    golden_patched_header(b);
+    expect_bin(b, g_golden_n, 1, 6, FNAV_END, NULL);
+    memcpy(b, g_golden, g_golden_n);
+    memset(b + 80, 'x', 48); /* the axis note without its NUL */
+    golden_patched_header(b);
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, "text field not terminated");
+    memcpy(b, g_golden, g_golden_n);
+    memcpy(b + 56, "m/s^2 rad/s degC us", 20); /* time in microseconds */
+    golden_patched_header(b);
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, "units 'm/s^2 rad/s degC us' not supported");
+    for (i = 0; i < 3; i++) {
+        memcpy(b, g_golden, g_golden_n);
+        assert_true((b[12] & k_flags[i].bit) != 0);
+        b[12] = (unsigned char)(b[12] & ~k_flags[i].bit);
+        golden_patched_header(b);
+        tmp_path(p, sizeof p, ".bin");
+        write_file(p, b, g_golden_n);
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, &m), 0);
+        assert_int_equal(r.n, 6);
+        assert_int_equal(*(const int *)(const void *)((const char *)&m + k_flags[i].off), 0);
+        assert_int_equal(m.rate_nominal + m.has_temp + m.has_seq, 2);
+        unlink(p);
+    }
+}
+
+/* The END record's count against the records read (docs/log-format.md,
+ * "record count disagrees with END: reported at the end"): the golden
+ * END says 6; made 5 (its CRC made right), all six samples are delivered,
+ * then the mismatch. A mutant ignoring the count passed every suite. */
+static void test_bin_end_count(void **state)
+{
+    unsigned char b[4096], *end = b + HX_BIN_HEADER_SIZE + 6 * HX_BIN_RECORD_SIZE;
+    uLong c;
+    (void)state;
+    memcpy(b, g_golden, g_golden_n);
+    assert_int_equal(g_golden_n, HX_BIN_HEADER_SIZE + 7 * HX_BIN_RECORD_SIZE);
+    assert_int_equal(end[0] | (end[1] << 8), HX_BIN_REC_END);
+    assert_int_equal(end[4], 6);
+    end[4] = 5;
+    c = crc32(0L, end, 44);
+    end[44] = (unsigned char)(c & 0xffu);
+    end[45] = (unsigned char)((c >> 8) & 0xffu);
+    end[46] = (unsigned char)((c >> 16) & 0xffu);
+    end[47] = (unsigned char)((c >> 24) & 0xffu);
+    expect_bin(b, g_golden_n, 1, 6, FNAV_E_CRC, "end record counts 5 records but 6 were read");
+}
+
+/* Resynchronisation (docs/log-format.md, "corrupted record"): at the next
+ * slot when that slot is valid, else byte by byte; the skipped bytes are
+ * counted. A record damaged in place skips no byte; seven bytes inserted
+ * skip those seven. A mutant always scanning byte by byte (48 bytes
+ * skipped for the damaged record) passed every suite. */
+static void test_bin_resync_counts(void **state)
+{
+    unsigned char b[4096];
+    const size_t r2 = HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE;
+    char p[256], err[320];
+    hx_log_t log;
+    (void)state;
+    memcpy(b, g_golden, g_golden_n);
+    b[r2 + 20] ^= 0x40;
+    tmp_path(p, sizeof p, ".bin");
+    write_file(p, b, g_golden_n);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1);
+    assert_int_equal(log.n, 5);
+    assert_int_equal(log.stats.bad_records, 1);
+    assert_int_equal(log.stats.skipped_bytes, 0);
+    hx_log_free(&log);
+    memcpy(b, g_golden, r2);
+    memcpy(b + r2, "GARBAGE", 7);
+    memcpy(b + r2 + 7, g_golden + r2, g_golden_n - r2);
+    write_file(p, b, g_golden_n + 7);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1);
+    assert_int_equal(log.n, 6);
+    assert_int_equal(log.stats.bad_records, 1);
+    assert_int_equal(log.stats.skipped_bytes, 7);
+    hx_log_free(&log);
+    unlink(p);
 }
 
 static void test_bin_nan_record(void **state)
@@ -810,6 +949,61 @@ static void test_importer_units(void **state)
     }
 }
 
+/* Every axis of the first sample of each walk, against its first data row
+ * as the file has it (columns found by name with Python's csv module;
+ * units and scale factors from ../shared/data/MANIFEST.md: g x 9.80665,
+ * deg/s x pi/180, the SI sets as they are). test_importer_units checks two
+ * axes of some formats and test_importers only gravity's size and z sign:
+ * hand-made mutants swapping the gyro's x and y columns of the pyshoe,
+ * ipol and OpenShoe 820 Hz importers passed every suite. */
+static void test_importer_first_rows(void **state)
+{
+    static const double g0 = 9.80665, d2r = 3.14159265358979323846 / 180.0;
+    static const struct {
+        const char *rel;
+        hx_format_t fmt;
+        double acc[3], acc_scale, gyr[3], gyr_scale;
+    } k_rows[] = {
+        /* t_s 0.000000: ax_mps2..gz_radps */
+        { "pyshoe_vicon_llio/own_3dmgx5_footprints/SensorConnectData_31_imu.csv", HX_FMT_PYSHOE,
+          { 5.689716, 1.564783, -7.854842 }, 1.0, { 0.003722398, -0.002670883, 0.0052455 }, 1.0 },
+        /* sample 0: f_x_mps2..w_z_radps (the quaternion after them unused) */
+        { "openshoe_square2/square2_u.csv", HX_FMT_SQUARE2, { -0.073840446, -0.000314401199, -9.81912955 }, 1.0,
+          { 0.00148909, -0.00189885, -0.00106122 }, 1.0 },
+        /* PacketCounter 0.0: Acc_X..Gyr_Z (the magnetometer after them unused) */
+        { "ipol_gait_xsens/1-1_lf.txt", HX_FMT_IPOL, { 5.090554, 0.409101, 8.923938 }, 1.0,
+          { -0.002503, 0.008869, -0.017776 }, 1.0 },
+        /* line 1, no header: f_x f_y f_z [m/s^2], w_x w_y w_z [rad/s] */
+        { "openshoe_c_820hz/OpenShoeDataSet.txt", HX_FMT_OS820, { 0.19594386, -0.42454505, 9.86250782 }, 1.0,
+          { -0.00349064, -0.01745320, -0.02443448 }, 1.0 },
+        /* Time (s) 0: the gyroscope (deg/s) first, then the accelerometer (g) */
+        { "xio_ngimu_gait/short_walk.csv", HX_FMT_NGIMU, { -0.4937814, 0.2420433, 0.8312204 }, g0,
+          { -0.1428319, -0.7708032, -0.2320606 }, d2r },
+        /* Nr 1: a_x a_y a_z [g], ar_x ar_y ar_z [rad/s] */
+        { "openshoe_gx2/Measurement_100521_2_data_inert.txt", HX_FMT_GX2, { -0.10581776, 0.15830289, 0.99007481 },
+          g0, { 0.00535047, -0.01242570, 0.00101861 }, 1.0 },
+    };
+    size_t i;
+    int k;
+    (void)state;
+    for (i = 0; i < sizeof k_rows / sizeof k_rows[0]; i++) {
+        char p[512], err[320];
+        hx_log_t log;
+        if (fnav_testdata_path(k_rows[i].rel, p, sizeof p) != 0) {
+            fnav_test_skip_notice(k_rows[i].rel);
+            continue;
+        }
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        assert_int_equal(log.meta.format, k_rows[i].fmt);
+        for (k = 0; k < 3; k++) {
+            /* float32 samples: 1e-7 relative */
+            FNAV_ASSERT_CLOSE(log.acc[0][k], k_rows[i].acc[k] * k_rows[i].acc_scale, 1e-12, 1e-7);
+            FNAV_ASSERT_CLOSE(log.gyr[0][k], k_rows[i].gyr[k] * k_rows[i].gyr_scale, 1e-12, 1e-7);
+        }
+        hx_log_free(&log);
+    }
+}
+
 /* The OpenShoe GX2 logger's preamble and header line, as its files have them. */
 static void write_gx2_header(FILE *f)
 {
@@ -969,6 +1163,172 @@ static void test_gx2_repeated_packet(void **state)
     assert_null(strstr(log.warnings, "restarted"));
     hx_log_free(&log);
     remove(p);
+}
+
+/* GX2: a tick difference within half of the last good period is taken as
+ * it is, a larger one is a restart bridged with that period
+ * (docs/log-format.md, "GX2 time"). Intervals of 1.45 and 1.55 periods,
+ * Nr stepping by one: the first is kept (and becomes the period the next
+ * one, of one period, is compared with), the second bridged. A mutant
+ * allowing an eighth instead of a half passed every suite (the six real
+ * files vary by 0.3 %). */
+static void test_gx2_restart_tolerance(void **state)
+{
+    const long p = 78720;
+    static const double k_step[9] = { 1, 1, 1, 1, 1.45, 1, 1, 1.55, 1 };
+    hx_log_t log;
+    char err[320], path[256];
+    FILE *f;
+    long nr, counter = 130516848, ticks = 0;
+    (void)state;
+    f = open_gx2(path, sizeof path);
+    for (nr = 1; nr <= 10; nr++) {
+        if (nr > 1) {
+            counter += (long)(k_step[nr - 2] * (double)p + 0.5);
+        }
+        write_gx2_record(f, (unsigned long)counter, nr, 1274434048.5 + 0.004 * (double)nr,
+                         1274434048.504 + 0.004 * (double)nr, "250.000001");
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, path, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.n, 10);
+    for (nr = 2; nr <= 10; nr++) {
+        /* 114144 ticks kept; 122016 bridged with 78720 */
+        ticks += nr == 9 ? p : (long)(k_step[nr - 2] * (double)p + 0.5);
+        assert_true(log.t_ns[nr - 1] == (int64_t)ticks * 1000000000LL / 19660800LL);
+    }
+    assert_non_null(strstr(log.warnings, "sensor timer restarted 1 times"));
+    hx_log_free(&log);
+    remove(path);
+}
+
+/* GX2: a timer restart on the first interval across lost packets (Nr 1 to
+ * 4, two lost) is bridged with three periods of the logger's rate
+ * (Freq. [Hz] 250: 12 ms), as a restart across a loss later on is bridged
+ * with k measured periods. A mutant bridging one period (4 ms) passed every
+ * suite. */
+static void test_gx2_first_restart_lost(void **state)
+{
+    const long period = 78720;
+    hx_log_t log;
+    char err[320], p[256];
+    FILE *f;
+    long nr, counter = 130831728;
+    (void)state;
+    f = open_gx2(p, sizeof p);
+    for (nr = 1; nr <= 10; nr++) {
+        const double host = 1274434048.5 + 0.004 * (double)nr;
+        if (nr == 2 || nr == 3) {
+            continue; /* lost */
+        }
+        if (nr == 4) {
+            counter = 6068; /* restarted */
+        } else if (nr > 4) {
+            counter += period;
+        }
+        write_gx2_record(f, (unsigned long)counter, nr, host, host + 0.004, "250.000000");
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.n, 8);
+    assert_int_equal(log.seq[1], 4);
+    assert_true(llabs(log.t_ns[1] - log.t_ns[0] - 12000000LL) <= 60); /* a tick: 51 ns */
+    assert_true(llabs(log.t_ns[2] - log.t_ns[1] - period * 1000000000LL / 19660800LL) <= 1);
+    hx_log_free(&log);
+    remove(p);
+}
+
+/* GX2: a last line without a newline, cut inside field 12 (the unfiltered
+ * host stamp, which the reader does not use), leaves every value the reader
+ * takes whole and is read, as docs/log-format.md ("Recordings cut off
+ * mid-write") says; one cut inside field 11 (the filtered host stamp, which
+ * it takes) is dropped with the warning. Until 2026-11-29 the reader
+ * required twelve fields and dropped the first kind too, as "ends in a
+ * value the reader uses" (found by a hand-made mutant of that count that
+ * passed every suite: no test had a 12-field last line; none of the six
+ * files has one, walks 31 and 32 end inside fields 10 and 7). */
+static void test_gx2_cut_last_line(void **state)
+{
+    const long period = 78720;
+    static const char *const k_cut[2] = { "1274434048.54", "1274434048.54 127443" };
+    char p[256];
+    int c;
+    (void)state;
+    for (c = 0; c < 2; c++) {
+        FILE *f = open_gx2(p, sizeof p);
+        long nr, counter = 130516848;
+        for (nr = 1; nr <= 3; nr++) {
+            write_gx2_record(f, (unsigned long)counter, nr, 1274434048.5 + 0.004 * (double)nr,
+                             1274434048.504 + 0.004 * (double)nr, "250.000001");
+            counter += period;
+        }
+        fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     "
+                   "%ld    0x15fd       4 %s", counter, k_cut[c]);
+        assert_int_equal(fclose(f), 0);
+        if (c == 0) {
+            expect_cut(p, HX_FMT_GX2, 3, ":8: last line"); /* 4 preamble lines, 3 records */
+        } else {
+            char err[320];
+            hx_log_t log;
+            assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+            assert_int_equal(log.n, 4);
+            assert_int_equal(log.seq[3], 4);
+            assert_true(log.t_ns[3] == 3LL * period * 1000000000LL / 19660800LL);
+            assert_int_equal(log.stats.cut_lines, 0);
+            assert_null(strstr(log.warnings, "last line"));
+            hx_log_free(&log);
+        }
+        remove(p);
+    }
+}
+
+/* GX2 timer cases of docs/log-format.md ("GX2 time") that no test had; a
+ * hand-made mutant of each passed every suite:
+ * - the first interval's timer jumps 1e8 ticks (5 s) on, "an unrelated
+ *   base": bridged with the logger's rate (Freq. 250 Hz, 4 ms), not taken
+ *   (a mutant without the 0.1 s bound took it);
+ * - Nr jumps from 5 to 5000 with the timer one period on: a jump beyond
+ *   1000 is a restart of the count, one period (a mutant without the bound
+ *   bridged 4995 periods, 19.5 s);
+ * - the timer repeats with Nr one on: not the same packet written twice,
+ *   so a restart bridged with a period, not a duplicate (a mutant comparing
+ *   the timer alone made it dt = 0);
+ * - --input-rate on this time-stamped format is ignored with a warning (a
+ *   mutant left GX2 out of the warning). */
+static void test_gx2_timer_cases(void **state)
+{
+    const long p = 78720;
+    static const long k_nr[8] = { 1, 2, 3, 4, 5, 5000, 5001, 5002 };
+    /* ticks after the previous record; -1: the timer repeats */
+    static const long k_step[8] = { 0, 100000000, 78720, 78720, 78720, 78720, -1, 78720 };
+    /* the interval the reader must give, in ticks: 4 ms at 250 Hz is
+     * (int64)(0.004 x 19660800 + 0.5) = 78643 */
+    static const long k_dt[8] = { 0, 78643, 78720, 78720, 78720, 78720, 78720, 78720 };
+    hx_log_t log;
+    char err[320], path[256];
+    FILE *f;
+    long counter = 1000, ticks = 0;
+    int i;
+    (void)state;
+    f = open_gx2(path, sizeof path);
+    for (i = 0; i < 8; i++) {
+        counter += k_step[i] < 0 ? 0 : k_step[i];
+        write_gx2_record(f, (unsigned long)counter, k_nr[i], 1274434048.5 + 0.004 * (double)i,
+                         1274434048.504 + 0.004 * (double)i, "250.000000");
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, path, HX_FMT_AUTO, 100.0, err, sizeof err), 0);
+    assert_int_equal(log.n, 8);
+    for (i = 1; i < 8; i++) {
+        ticks += k_dt[i];
+        assert_true(log.t_ns[i] == (int64_t)ticks * 1000000000LL / 19660800LL);
+        assert_int_equal(log.seq[i], k_nr[i]);
+    }
+    assert_true(p == k_dt[2]);
+    assert_non_null(strstr(log.warnings, "sensor timer restarted 2 times"));
+    assert_non_null(strstr(log.warnings, "--input-rate ignored: the gx2 format has time stamps"));
+    hx_log_free(&log);
+    remove(path);
 }
 
 /* GX2 time past 469 s: ticks x 1e9 overflowed int64 there (19.6608 MHz), and
@@ -1178,6 +1538,21 @@ static void test_stamp_rate(void **state)
         }
         assert_true(hx_stamp_rate_hz(t, N, NULL) == 100.0);
     }
+    {
+        /* a 100.4 Hz log stamped to 0.1 ms (four decimals): the intervals
+         * read 9.9 or 10.0 ms, a resolution of a hundredth of the period.
+         * Their median is one of those two (101.0 or 100.0 Hz, 0.4 % off);
+         * stamps that coarse take the mean of the intervals, 100.4 Hz. A
+         * mutant taking the median down to a hundredth (not a thousandth)
+         * of the period passed every suite */
+        int coarse = 0;
+        size_t k;
+        for (k = 0; k < N; k++) {
+            t[k] = (int64_t)floor((double)k / 100.4 * 1e4 + 0.5) * 100000;
+        }
+        FNAV_ASSERT_CLOSE(hx_stamp_rate_hz(t, N, &coarse), 100.4, 0.0, 1e-4);
+        assert_int_equal(coarse, 1);
+    }
     assert_true(hx_stamp_rate_hz(same, 3, NULL) == 0.0);
     assert_true(hx_stamp_rate_hz(same, 1, NULL) == 0.0);
 }
@@ -1213,6 +1588,125 @@ static void test_ipol_counter_wrap(void **state)
         assert_true(log.t_ns[k] - log.t_ns[k - 1] == 10000000LL * (int64_t)d);
     }
     hx_log_free(&log);
+    unlink(p);
+}
+
+/* ipol: the rate of line 1 gives the time of each packet count, and
+ * --input-rate overrides it (the file has a counter, no time stamps; the
+ * reader warns "ignored" only for time-stamped formats); a counter that
+ * drops by less than half its 16-bit range is no wrap but a step back in
+ * time, an error at its line. Hand-made mutants ignoring --input-rate for
+ * ipol and taking any drop for a wrap (65536 counts on, 655 s at 100 Hz)
+ * passed every suite. */
+static void test_ipol_rate_and_step_back(void **state)
+{
+    char p[256], err[320];
+    hx_log_t log;
+    FILE *f;
+    long c;
+    (void)state;
+    tmp_path(p, sizeof p, "_lf.txt");
+    f = fopen(p, "w");
+    assert_non_null(f);
+    fprintf(f, "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\tMag_X\tMag_Y\tMag_Z\n");
+    for (c = 10; c < 14; c++) {
+        fprintf(f, "%ld.0\t5.09\t0.41\t8.92\t-0.0025\t0.0089\t-0.0178\t-0.58\t-0.15\t-0.4\n", c);
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 50.0, err, sizeof err), 0);
+    assert_int_equal(log.meta.format, HX_FMT_IPOL);
+    assert_true(log.meta.rate_hz == 50.0);
+    assert_int_equal(log.n, 4);
+    assert_true(log.t_ns[0] == 200000000LL); /* count 10 at 50 Hz */
+    assert_true(log.t_ns[1] - log.t_ns[0] == 20000000LL);
+    assert_null(strstr(log.warnings, "ignored"));
+    hx_log_free(&log);
+    /* without it, 100 Hz from line 1; then 13 -> 11: back in time */
+    f = fopen(p, "a");
+    assert_non_null(f);
+    fprintf(f, "11.0\t5.09\t0.41\t8.92\t-0.0025\t0.0089\t-0.0178\t-0.58\t-0.15\t-0.4\n");
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1);
+    assert_true(log.meta.rate_hz == 100.0);
+    assert_int_equal(log.n, 4);
+    assert_true(log.t_ns[1] - log.t_ns[0] == 10000000LL);
+    assert_int_equal(log.status, FNAV_E_TIME);
+    assert_non_null(strstr(log.error, ":7: time goes backwards"));
+    hx_log_free(&log);
+    unlink(p);
+}
+
+/* The reader's limit of 1e6 applies in SI units, after the importer's scale
+ * (docs/log-format.md: "a value ... beyond 1e6 in SI units"): in an NGIMU
+ * log 1.5e6 deg/s is 26,180 rad/s, read; 2e5 g is 1.96e6 m/s^2, refused at
+ * its line. A mutant comparing the raw value passed every suite. */
+static void test_range_in_si_units(void **state)
+{
+    static const char head[] = "Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Gyroscope Z (deg/s),"
+                               "Accelerometer X (g),Accelerometer Y (g),Accelerometer Z (g)\n";
+    char p[256], text[512];
+    readall_t r;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    snprintf(text, sizeof text, "%s0,1.5e6,0,0,0,0,1\n0.0025,0,0,0,0,0,1\n", head);
+    write_text(p, text);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.end, FNAV_END);
+    assert_int_equal(r.n, 2);
+    FNAV_ASSERT_CLOSE(r.s[0].gyro_rps[0], 1.5e6 * 3.14159265358979323846 / 180.0, 0.0, 1e-6);
+    snprintf(text, sizeof text, "%s0,0,0,0,0,0,1\n0.0025,0,0,0,2e5,0,1\n", head);
+    write_text(p, text);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.n, 1);
+    assert_int_equal(r.end, FNAV_E_RANGE);
+    assert_non_null(strstr(r.err, ":3: column 5 ('2e5') is beyond 1e+06 in SI units"));
+    unlink(p);
+}
+
+/* Quotes around values are ignored as around names (docs/log-format.md,
+ * "CSV interchange"; spreadsheets quote every field), and an ipol rate
+ * beyond 1e6 Hz is refused at line 1 as one that is no number. Hand-made
+ * mutants keeping a leading quote and dropping the rate's bound passed
+ * every suite. */
+static void test_quoted_values_and_ipol_rate(void **state)
+{
+    char p[256];
+    readall_t r;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "\"t\",\"ax\",\"ay\",\"az\",\"gx\",\"gy\",\"gz\"\n\"0.5\",\"1\",\"2\",\"3\",\"4\",\"5\",\"-6.25\"\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.end, FNAV_END);
+    assert_int_equal(r.n, 1);
+    assert_true(r.s[0].t_ns == 500000000LL);
+    assert_true((float)r.s[0].accel_mps2[0] == 1.0f);
+    assert_true((float)r.s[0].gyro_rps[2] == -6.25f);
+    unlink(p);
+    tmp_path(p, sizeof p, "_lf.txt");
+    write_text(p, "Acquisition frequency: 2000000 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "0\t5.09\t0.41\t8.92\t-0.0025\t0.0089\t-0.0178\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    assert_non_null(strstr(r.err, ":1: expected 'Acquisition frequency: N Hz'"));
+    unlink(p);
+}
+
+/* Negative time stamps (a log timed from an event) are read exactly, as
+ * the writer writes them ("-%lld.%09lld"): -1.5 s, -1 ns, 0. A mutant
+ * dropping the sign of the exact decimal path passed every suite; it read
+ * the first two as positive and stopped with "time goes backwards". */
+static void test_csv_negative_time(void **state)
+{
+    char p[256];
+    readall_t r;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n-1.5,0,0,9.8,0,0,0\n-0.000000001,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+    assert_int_equal(r.end, FNAV_END);
+    assert_int_equal(r.n, 3);
+    assert_true(r.s[0].t_ns == -1500000000LL);
+    assert_true(r.s[1].t_ns == -1LL);
+    assert_true(r.s[2].t_ns == 0);
     unlink(p);
 }
 
@@ -1370,6 +1864,9 @@ int main(void)
         cmocka_unit_test(test_bin_truncated),
         cmocka_unit_test(test_bin_corrupted),
         cmocka_unit_test(test_bin_nan_record),
+        cmocka_unit_test(test_bin_header_fields),
+        cmocka_unit_test(test_bin_end_count),
+        cmocka_unit_test(test_bin_resync_counts),
         cmocka_unit_test(test_csv_malformed),
         cmocka_unit_test(test_csv_flexible),
         cmocka_unit_test(test_csv_missing_temp),
@@ -1379,12 +1876,21 @@ int main(void)
         cmocka_unit_test(test_bad_rate),
         cmocka_unit_test(test_importers),
         cmocka_unit_test(test_importer_units),
+        cmocka_unit_test(test_importer_first_rows),
         cmocka_unit_test(test_gx2_lost_packets),
         cmocka_unit_test(test_gx2_restart_then_error),
         cmocka_unit_test(test_gx2_first_restart),
         cmocka_unit_test(test_gx2_long),
         cmocka_unit_test(test_gx2_repeated_packet),
+        cmocka_unit_test(test_gx2_restart_tolerance),
+        cmocka_unit_test(test_gx2_first_restart_lost),
+        cmocka_unit_test(test_gx2_cut_last_line),
+        cmocka_unit_test(test_gx2_timer_cases),
+        cmocka_unit_test(test_quoted_values_and_ipol_rate),
+        cmocka_unit_test(test_csv_negative_time),
         cmocka_unit_test(test_ipol_counter_wrap),
+        cmocka_unit_test(test_ipol_rate_and_step_back),
+        cmocka_unit_test(test_range_in_si_units),
         cmocka_unit_test(test_detect_variants),
         cmocka_unit_test(test_detect_wrong_hint),
         cmocka_unit_test(test_gz_truncated),

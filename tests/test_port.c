@@ -25,6 +25,15 @@ static void test_status_strings(void **state)
         assert_string_not_equal(t, "unknown status");
     }
     assert_string_equal(fnav_status_str((fnav_status_t)-99), "unknown status");
+    /* each status its own text: a mutant giving FNAV_E_CRC the text of
+     * FNAV_E_FORMAT ("malformed input") passed every suite, and a message
+     * would have named the wrong failure */
+    for (s = -14; s <= 2; s++) {
+        int u;
+        for (u = s + 1; u <= 2; u++) {
+            assert_string_not_equal(fnav_status_str((fnav_status_t)s), fnav_status_str((fnav_status_t)u));
+        }
+    }
 }
 
 static void test_port_helpers_null(void **state)

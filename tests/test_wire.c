@@ -465,6 +465,13 @@ static void test_info_rate(void **state)
     assert_int_equal(fnav_wire_decode(&d, buf, k, &used, &f), FNAV_OK);
     assert_int_equal(fnav_wire_parse_info(&f, &got), FNAV_OK);
     assert_true(got.rate_hz == 0.0);
+    /* the top of the range is in it, as in the .bin header ("[0, 1e6]"):
+     * a mutant refusing 1e6 itself passed every test */
+    info.rate_hz = 1.0e6;
+    k = fnav_wire_encode_info(buf, sizeof buf, 7u, &info);
+    assert_int_equal(fnav_wire_decode(&d, buf, k, &used, &f), FNAV_OK);
+    assert_int_equal(fnav_wire_parse_info(&f, &got), FNAV_OK);
+    assert_true(got.rate_hz == 1.0e6);
 }
 
 /* Sequence accounting across the 16-bit wrap, gaps and restarts. */
@@ -490,6 +497,135 @@ static void test_seq_accounting(void **state)
     assert_int_equal(d.stats.lost, 2);
     assert_int_equal(d.stats.resets, 2);
     assert_int_equal(d.stats.frames, 8);
+}
+
+/* Each parser refuses a frame of its type with another length (the table's
+ * lengths) or of another type, and leaves the output alone: the decoder
+ * never delivers such a frame, but a caller may build one. A mutant
+ * dropping the NAV parser's length check passed every suite. */
+static void test_parse_wrong_length(void **state)
+{
+    static const uint8_t k_len[5] = { FNAV_WIRE_SAMPLE_LEN, FNAV_WIRE_NAV_LEN, FNAV_WIRE_STATUS_LEN,
+                                      FNAV_WIRE_INFO_LEN, FNAV_WIRE_END_LEN };
+    static const uint8_t k_type[5] = { FNAV_WIRE_SAMPLE, FNAV_WIRE_NAV, FNAV_WIRE_STATUS, FNAV_WIRE_INFO,
+                                       FNAV_WIRE_END };
+    static uint8_t pay[255];
+    fnav_wire_frame_t f;
+    fnav_sample_t s;
+    fnav_wire_nav_t nav;
+    fnav_wire_status_t st;
+    fnav_wire_info_t info;
+    uint32_t count = 77u;
+    int i, d;
+    (void)state;
+    assert_int_equal(k_len[0], 41); /* docs/wire-protocol.md's table */
+    assert_int_equal(k_len[1], 53);
+    assert_int_equal(k_len[2], 20);
+    assert_int_equal(k_len[3], 92);
+    assert_int_equal(k_len[4], 4);
+    memset(pay, 0, sizeof pay);
+    f.seq = 1u;
+    f.payload = pay;
+    for (i = 0; i < 5; i++) {
+        for (d = -1; d <= 1; d += 2) {
+            fnav_status_t r[5];
+            f.type = k_type[i];
+            f.len = (uint8_t)(k_len[i] + d);
+            memset(&nav, 0x5A, sizeof nav);
+            r[0] = fnav_wire_parse_sample(&f, &s);
+            r[1] = fnav_wire_parse_nav(&f, &nav);
+            r[2] = fnav_wire_parse_status(&f, &st);
+            r[3] = fnav_wire_parse_info(&f, &info);
+            r[4] = fnav_wire_parse_end(&f, &count);
+            assert_int_equal(r[0], FNAV_E_FORMAT);
+            assert_int_equal(r[1], FNAV_E_FORMAT);
+            assert_int_equal(r[2], FNAV_E_FORMAT);
+            assert_int_equal(r[3], FNAV_E_FORMAT);
+            assert_int_equal(r[4], FNAV_E_FORMAT);
+            assert_int_equal(nav.seq, 0x5A5A5A5Au);
+            assert_int_equal(count, 77u);
+        }
+    }
+}
+
+/* The boundary of a drop (docs/wire-protocol.md, step 5): a forward jump
+ * of k < 32768 frames is a gap of k lost frames, one of 32768 is a restart
+ * ("a drop of 32768 frames or more in one gap is indistinguishable from a
+ * restart"). A mutant taking 32768 for a drop passed every test. */
+static void test_seq_gap_boundary(void **state)
+{
+    /* after 0, 32768 skips 32767 frames; after it, 1 (65537 mod 65536)
+     * skips 32768 */
+    static const uint16_t seqs[] = { 0, 32768, 1 };
+    uint8_t buf[32];
+    fnav_wire_decoder_t d;
+    fnav_wire_frame_t f;
+    size_t used, i;
+    (void)state;
+    fnav_wire_decoder_init(&d);
+    for (i = 0; i < sizeof seqs / sizeof seqs[0]; i++) {
+        size_t k = fnav_wire_encode_end(buf, sizeof buf, seqs[i], (uint32_t)i);
+        assert_int_equal(fnav_wire_decode(&d, buf, k, &used, &f), FNAV_OK);
+        assert_int_equal(f.seq, seqs[i]);
+    }
+    assert_int_equal(d.stats.gaps, 1);
+    assert_int_equal(d.stats.lost, 32767);
+    assert_int_equal(d.stats.resets, 1);
+}
+
+/* A known type announced with another length is corrupt (step 2), also
+ * when its CRC is right: a SAMPLE header saying 10 bytes, framed with a
+ * valid CRC by the generic encoder, then an END frame. The decoder must
+ * count one corrupt frame, skip its 20 bytes and deliver only END. Without
+ * the length check the SAMPLE frame was delivered as valid and every test
+ * passed (vectors/wire/corrupt.bin's wrong-length frame has a bad CRC too,
+ * which fails either way). */
+static void test_known_type_wrong_length(void **state)
+{
+    uint8_t buf[64], pay[10];
+    fnav_wire_decoder_t d;
+    fnav_wire_frame_t f;
+    size_t k, used;
+    (void)state;
+    memset(pay, 0x11, sizeof pay);
+    k = fnav_wire_encode(buf, sizeof buf, FNAV_WIRE_SAMPLE, 7u, pay, sizeof pay);
+    assert_int_equal(k, 20); /* CRC 0x593e9860 (zlib.crc32 of 01 0a 07 00 and ten 0x11): no sync word inside */
+    k += fnav_wire_encode_end(buf + k, sizeof buf - k, 8u, 3u);
+    fnav_wire_decoder_init(&d);
+    assert_int_equal(fnav_wire_decode(&d, buf, k, &used, &f), FNAV_OK);
+    assert_int_equal(f.type, FNAV_WIRE_END);
+    assert_int_equal(f.seq, 8);
+    assert_int_equal(used, k);
+    assert_int_equal(d.stats.frames, 1);
+    assert_int_equal(d.stats.bad_frames, 1);
+    assert_int_equal(d.stats.skipped_bytes, 20);
+    assert_int_equal(d.stats.unknown, 0);
+}
+
+/* One damaged frame counts once (step 4): a frame of an unknown type whose
+ * payload holds a sync word and a false header (a NAV type announcing 0
+ * bytes), its CRC broken, then an END frame. The false header starts
+ * inside the extent of the frame already counted, so it is not counted
+ * again: one corrupt frame, not two. A mutant forgetting the extent at
+ * each skipped byte counted both and passed every test. */
+static void test_nested_candidate_counts_once(void **state)
+{
+    static const uint8_t pay[8] = { 0x00, 0xA5, 0x5A, 0x02, 0x00, 0x00, 0x00, 0x00 };
+    uint8_t buf[64];
+    fnav_wire_decoder_t d;
+    fnav_wire_frame_t f;
+    size_t k, used;
+    (void)state;
+    k = fnav_wire_encode(buf, sizeof buf, 0x40, 1u, pay, sizeof pay);
+    assert_int_equal(k, 18);
+    buf[k - 1] ^= 0xFFu; /* the CRC's last byte */
+    k += fnav_wire_encode_end(buf + k, sizeof buf - k, 2u, 0u);
+    fnav_wire_decoder_init(&d);
+    assert_int_equal(fnav_wire_decode(&d, buf, k, &used, &f), FNAV_OK);
+    assert_int_equal(f.type, FNAV_WIRE_END);
+    assert_int_equal(d.stats.frames, 1);
+    assert_int_equal(d.stats.bad_frames, 1);
+    assert_int_equal(d.stats.skipped_bytes, 18);
 }
 
 /* Random garbage between frames: every frame is recovered, nothing is
@@ -747,6 +883,10 @@ int main(void)
         cmocka_unit_test(test_beyond_float_range),
         cmocka_unit_test(test_info_rate),
         cmocka_unit_test(test_seq_accounting),
+        cmocka_unit_test(test_seq_gap_boundary),
+        cmocka_unit_test(test_parse_wrong_length),
+        cmocka_unit_test(test_known_type_wrong_length),
+        cmocka_unit_test(test_nested_candidate_counts_once),
         cmocka_unit_test(test_garbage_fuzz),
         cmocka_unit_test(test_flush_end_of_stream),
         cmocka_unit_test(test_flush_random),
