@@ -382,7 +382,8 @@ static void test_compare_golden(void **state)
 
 /* sg_rayleigh_z against scipy's exact Phi^-1(1 - exp(-R)) (compare.csv):
  * to rounding up to R = 30, where the C code takes the tail probability
- * itself; beyond, the asymptotic z^2 = 2R - ln(4 pi R) leaves out the next
+ * itself (for R = 1e-20, where exp(-R) rounds to 1, it returned -inf: the
+ * tail was taken as Q(z) = exp(-R), not as Phi(z) = -expm1(-R)); beyond, the asymptotic z^2 = 2R - ln(4 pi R) leaves out the next
  * term of the tail's expansion Q(z) = phi(z)/z (1 - 1/z^2 + ...): its
  * error times z^2 is at most 0.25 for R from 30 to 700 (scipy), so
  * 0.5 / z^2 bounds it (ln(2 pi R) in place of ln(4 pi R) is 2.3 / z^2 off
@@ -397,7 +398,7 @@ static void test_rayleigh_golden(void **state)
     if (cg_load() != 0) {
         fail_msg("vectors/simgap/compare.csv not found");
     }
-    for (i = 0; i < 7; i++) {
+    for (i = 0; i < 9; i++) {
         const double R = cg("rayleigh_R", i), ze = cg("rayleigh_z", i);
         z = sg_rayleigh_z(R);
         if (R <= 30.0) {
@@ -410,7 +411,8 @@ static void test_rayleigh_golden(void **state)
     for (i = 0; i < 21; i++) {
         x[i] = 0.25 * (double)((i * 7) % 5 - 2);
     }
-    FNAV_ASSERT_CLOSE(sg_lattice_z(x, 21, 0.25), cg("rayleigh_z", 2), 1e-9, 1e-9);
+    assert_true(cg("rayleigh_R", 4) == 20.0);
+    FNAV_ASSERT_CLOSE(sg_lattice_z(x, 21, 0.25), cg("rayleigh_z", 4), 1e-9, 1e-9);
 }
 
 /* ------------------------------------------------------------ split */

@@ -57,7 +57,7 @@ POINTS = [
     (SG_LATTICE, 0, -1.0, 0),
 ]
 N = len(POINTS)
-RAYLEIGH_R = [0.5, 2.0, 20.0, 30.0, 40.0, 100.0, 400.0]
+RAYLEIGH_R = [1e-20, 1e-8, 0.5, 2.0, 20.0, 30.0, 40.0, 100.0, 400.0]
 
 
 def included(j):
@@ -236,10 +236,12 @@ def rows():
     out += [("real_c", j, real_c[j]) for j in range(N)]
     out += [("c_G", 0, c["G"]), ("c_maxz", 0, c["maxz"]), ("c_G_crit", 0, c["G_crit"]),
             ("c_z_crit", 0, c["z_crit"]), ("c_significant", 0, c["significant"])]
-    # sg_rayleigh_z: the exact normal score Phi^-1(1 - exp(-R)) (the C code's
-    # form up to R = 30, asymptotic beyond: tests/test_simgap.c bounds that)
+    # sg_rayleigh_z: the exact normal score Phi^-1(1 - exp(-R)), from the
+    # smaller of the two tails (no cancellation: 1 - exp(-R) is -expm1(-R));
+    # the C code is asymptotic beyond R = 30 (tests/test_simgap.c bounds that)
     for i, R in enumerate(RAYLEIGH_R):
-        out += [("rayleigh_R", i, R), ("rayleigh_z", i, stats.norm.isf(np.exp(-R)))]
+        z = stats.norm.isf(np.exp(-R)) if R > np.log(2.0) else stats.norm.ppf(-np.expm1(-R))
+        out += [("rayleigh_R", i, R), ("rayleigh_z", i, z)]
     z, drop = lr_test(real, twin, None, shift, tb, None, sb)
     out += [("lr_z", 0, z), ("lr_drop", 0, drop)]
     z, drop = lr_test(real, twin, vx, None, tb, vx, None)
