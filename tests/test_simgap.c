@@ -15,6 +15,7 @@
 #include <cjson/cJSON.h>
 #include <cmocka.h>
 #include <gsl/gsl_linalg.h>
+#include <gsl/gsl_sf_psi.h>
 #include <unistd.h>
 
 #include "footnav/fnav_profile.h"
@@ -188,6 +189,68 @@ static void test_model_psd_textbook(void **state)
         all.e[3] = g.e[0];
         FNAV_ASSERT_CLOSE(sg_model_lnstat(&all, &p, fs, 1, &t0, &t1), log((sw + sf + sk + sg) / nb), 1e-12, 0.0);
     }
+}
+
+/* The PSD points' degrees of freedom (welch_band_edf: overlap and leakage
+ * corrections, Percival & Walden 1993 sec. 6.17) against the spread they
+ * claim, by Monte Carlo: R = 200 logs of white noise, 8192 samples at
+ * 100 Hz; for each band the sample variance of ln PSD over the logs over
+ * trigamma(edf / 2), the variance of the ln of a chi-square estimate with
+ * edf degrees of freedom (docs/simgap.md, section 3). Each ratio has a
+ * relative standard error of about sqrt(2 / (R - 1)) = 0.10; the bands hold
+ * disjoint bins, so the mean ratio over P bands has about 0.10 / sqrt(P)
+ * (P is printed; 0.03 or less for P >= 11), and 0.15 is 5 of those plus
+ * the equivalent-EDF approximation's own error. An EDF half as large (the
+ * 2 of nu_bin dropped, a hand-made mutant of 2026-11-29 that passed every
+ * suite) puts the mean ratio near 0.5. */
+static void test_psd_edf_monte_carlo(void **state)
+{
+    enum { R = 200, N = 8192, CAP = 256 };
+    static double v[R][CAP];
+    double vals[CAP], ratio = 0.0;
+    sg_feat_cfg_t cfg = sg_feat_cfg_default(100.0);
+    sg_plist_t pl;
+    fnav_rng_t rng;
+    long cnt = 0;
+    int r, k, P = 0;
+    size_t j;
+    (void)state;
+    memset(&pl, 0, sizeof pl);
+    fnav_rng_seed(&rng, 29u, 11u);
+    for (r = 0; r < R; r++) {
+        sg_acc_t a;
+        assert_int_equal(sg_acc_init(&a, &cfg, N, 0.0), 0);
+        for (k = 0; k < N; k++) {
+            sg_acc_push(&a, (double)fnav_rng_gauss(&rng));
+        }
+        cnt = sg_acc_finish(&a, 0, r == 0 ? &pl : NULL, vals, CAP);
+        assert_true(cnt > 0);
+        memcpy(v[r], vals, (size_t)cnt * sizeof *vals);
+        sg_acc_free(&a);
+    }
+    assert_int_equal((long)pl.n, cnt);
+    for (j = 0; j < pl.n; j++) {
+        double m = 0.0, s2 = 0.0;
+        if (pl.p[j].dom != SG_PSD || !(pl.p[j].edf > 0.0)) {
+            continue;
+        }
+        for (r = 0; r < R; r++) {
+            m += v[r][j];
+        }
+        m /= R;
+        for (r = 0; r < R; r++) {
+            s2 += (v[r][j] - m) * (v[r][j] - m);
+        }
+        s2 /= R - 1;
+        ratio += s2 / gsl_sf_psi_1(0.5 * pl.p[j].edf);
+        P++;
+    }
+    assert_true(P >= 11);
+    ratio /= P;
+    fprintf(stderr, "PSD bands' ln variance over trigamma(edf/2), white noise: mean ratio %.3f over %d bands\n", ratio,
+            P);
+    assert_true(fabs(ratio - 1.0) < 0.15);
+    sg_plist_free(&pl);
 }
 
 /* ------------------------------------------------------------ lattice */
@@ -1869,6 +1932,7 @@ int main(void)
         cmocka_unit_test(test_thresholds_match_catalogue),
         cmocka_unit_test(test_model_avar_textbook),
         cmocka_unit_test(test_model_psd_textbook),
+        cmocka_unit_test(test_psd_edf_monte_carlo),
         cmocka_unit_test(test_lattice),
         cmocka_unit_test(test_rayleigh_golden),
         cmocka_unit_test(test_compare_twin_only_level),
