@@ -443,6 +443,54 @@ static void test_compare_golden(void **state)
     sg_plist_free(&pl);
 }
 
+/* sg_explained on compare.csv's inputs: the fraction of the excess,
+ * (Ga - Gb) / (Ga - null mean), against numpy (null mean 1, sd 1), and
+ * undefined (NaN, as its interval) where Ga lies within two null sd of the
+ * null mean (docs/simgap.md, section 4: "defined only where there is an
+ * excess (more than two null standard deviations)"): here 1.5 sd. The
+ * threshold read as one sd and the excess taken over Ga instead of
+ * Ga - null mean (hand-made mutants, 2026-11-29) passed every suite. */
+static void test_explained_golden(void **state)
+{
+    sg_plist_t pl;
+    double real[16], vx[16], tw[6 * 16], sh[6 * 16], twb[6 * 16], shb[6 * 16], f, lo, hi, Ga;
+    int n, S, j, i;
+    (void)state;
+    if (cg_load() != 0) {
+        fail_msg("vectors/simgap/compare.csv not found");
+    }
+    n = (int)cg("n", 0);
+    S = (int)cg("S", 0);
+    assert_true(n <= 16 && S <= 6);
+    memset(&pl, 0, sizeof pl);
+    for (j = 0; j < n; j++) {
+        sg_point_t p;
+        memset(&p, 0, sizeof p);
+        p.dom = (int)cg("pt_dom", j);
+        p.kind = (int)cg("pt_kind", j);
+        p.edf = cg("pt_edf", j);
+        p.empty = (int)cg("pt_empty", j);
+        p.nblk = 1;
+        p.x_hi = 1.0;
+        assert_int_equal(sg_plist_add(&pl, &p), 0);
+        real[j] = cg("real", j);
+        vx[j] = cg("vx", j);
+    }
+    for (i = 0; i < S * n; i++) {
+        tw[i] = cg("twin", i);
+        sh[i] = cg("shift", i);
+        twb[i] = cg("twin_b", i);
+        shb[i] = cg("shift_b", i);
+    }
+    sg_explained(&pl, real, tw, vx, sh, twb, vx, shb, S, 1.0, 1.0, &f, &lo, &hi, 7u);
+    FNAV_ASSERT_CLOSE(f, cg("expl_f", 0), 1e-12, 1e-7);
+    assert_true(lo <= hi);
+    Ga = cg("expl_Ga", 0);
+    sg_explained(&pl, real, tw, vx, sh, twb, vx, shb, S, Ga - 1.5, 1.0, &f, &lo, &hi, 7u);
+    assert_true(isnan(f) && isnan(lo) && isnan(hi));
+    sg_plist_free(&pl);
+}
+
 /* sg_rayleigh_z against scipy's exact Phi^-1(1 - exp(-R)) (compare.csv):
  * to rounding up to R = 30, where the C code takes the tail probability
  * itself (for R = 1e-20, where exp(-R) rounds to 1, it returned -inf: the
@@ -1937,6 +1985,7 @@ int main(void)
         cmocka_unit_test(test_rayleigh_golden),
         cmocka_unit_test(test_compare_twin_only_level),
         cmocka_unit_test(test_compare_golden),
+        cmocka_unit_test(test_explained_golden),
         cmocka_unit_test(test_split_disjoint),
         cmocka_unit_test(test_time_domain_stats),
         cmocka_unit_test(test_time_steps_window),

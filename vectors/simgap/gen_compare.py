@@ -242,6 +242,12 @@ def rows():
     for i, R in enumerate(RAYLEIGH_R):
         z = stats.norm.isf(np.exp(-R)) if R > np.log(2.0) else stats.norm.ppf(-np.expm1(-R))
         out += [("rayleigh_R", i, R), ("rayleigh_z", i, z)]
+    # sg_explained: the fraction of the excess (Ga - null mean) that going
+    # from twins a to twins b removes, (Ga - Gb) / (Ga - null mean), with a
+    # null mean of 1 and sd of 1 given (Ga is case b's G)
+    Ga = zscores(real, twin, list(range(S)), vx, shift)["G"]
+    Gb = zscores(real, tb, list(range(S)), vx, sb)["G"]
+    out += [("expl_Ga", 0, Ga), ("expl_Gb", 0, Gb), ("expl_f", 0, (Ga - Gb) / (Ga - 1.0))]
     z, drop = lr_test(real, twin, None, shift, tb, None, sb)
     out += [("lr_z", 0, z), ("lr_drop", 0, drop)]
     z, drop = lr_test(real, twin, vx, None, tb, vx, None)
