@@ -137,6 +137,18 @@ static void test_model_avar_textbook(void **state)
         if (m >= 16.0) {
             FNAV_ASSERT_CLOSE(sg_model_avar(&g, fs, m, 0.0, 3600.0), gm, 0.0, 2e-2);
         }
+        {
+            /* quantisation of lsb q: rounding errors white of variance
+             * q^2/12, AVAR q^2 / (12 m); noise-shaped (an integrating
+             * sensor), the angle's rounding Q = (q/fs)/sqrt(12) gives
+             * IEEE 952's 3 Q^2 / tau^2 = q^2 / (4 m^2). The white form as
+             * q^2 / (6 m) (a hand-made mutant, 2026-11-29) passed every
+             * suite */
+            const double q = 1e-3;
+            sg_chmodel_t qw = one_effect(FNAV_EFFECT_QUANT, q, 0.0), qs = one_effect(FNAV_EFFECT_QUANT, q, 1.0);
+            FNAV_ASSERT_CLOSE(sg_model_avar(&qw, fs, m, 0.0, 3600.0), q * q / (12.0 * m), 0.0, 1e-12);
+            FNAV_ASSERT_CLOSE(sg_model_avar(&qs, fs, m, 0.0, 3600.0), q * q / (4.0 * m * m), 0.0, 1e-12);
+        }
     }
 }
 
