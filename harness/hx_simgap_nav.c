@@ -481,6 +481,35 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, i
     return cnt;
 }
 
+long sg_nav_stance_points(long n, const int64_t *t_ns, const unsigned char *zupt, const double (*y)[3],
+                          const double (*S)[6], const double *nis, const double (*v)[3], const double (*p)[3],
+                          int nwin, int drift, double *vals, sg_plist_t *pl)
+{
+    navrun_t r;
+    long k, cnt;
+    if (n < 1 || nwin < 0) {
+        return -1;
+    }
+    memset(&r, 0, sizeof r);
+    r.n = n;
+    r.flag = (unsigned char *)calloc((size_t)n, 1);
+    if (r.flag == NULL) {
+        return -1;
+    }
+    for (k = 0; k < n; k++) {
+        r.flag[k] = zupt[k] ? FL_ZUPT : 0u;
+    }
+    /* read only: nav_points does not write the run */
+    r.y = (double(*)[3])y;
+    r.S = (double(*)[6])S;
+    r.nis = (double *)nis;
+    r.v = (double(*)[3])v;
+    r.p = (double(*)[3])p;
+    cnt = nav_points(&r, t_ns, 0, n, nwin, drift, NULL, pl != NULL, pl, vals);
+    free(r.flag);
+    return cnt;
+}
+
 /* Lattice point of channel ch over samples [a, b). */
 static double lattice_val(const walk_t *w, int ch, long a, long b, double q)
 {

@@ -70,4 +70,22 @@ int sg_nav_lin_to_sensor(const double B[6][6], double A[6][6]);
 int sg_nav_match_swing(const double *ta, const double *swa, int na, int i, const double *tb, const double *swb,
                        int nb);
 
+/**
+ * The navigation points of one segment (docs/simgap.md, section 3, `nav`)
+ * from a filter run given per sample, in their order: NIS of the first
+ * updates, of all updates, per axis (3), whiteness, residual velocity,
+ * nwin windows, and with drift the horizontal and vertical drift between
+ * the first and the last stance (a closed walk: truth zero). A stance is a
+ * run of updates with gaps of at most 2 samples.
+ * @param zupt  per sample: nonzero where the zero-velocity update ran
+ * @param y, S  its innovation and covariance (xx xy xz yy yz zz); nis its NIS
+ * @param v, p  posterior velocity and position
+ * @param vals  the points' values (out, at least 7 + nwin + 2)
+ * @param pl    the points (appended; NULL: values only)
+ * @return the number of points, -1 on bad arguments or memory failure.
+ */
+long sg_nav_stance_points(long n, const int64_t *t_ns, const unsigned char *zupt, const double (*y)[3],
+                          const double (*S)[6], const double *nis, const double (*v)[3], const double (*p)[3],
+                          int nwin, int drift, double *vals, sg_plist_t *pl);
+
 #endif /* HX_SIMGAP_NAV_H */

@@ -224,6 +224,12 @@ double sg_rayleigh_z(double R)
     if (R > 30.0) {
         return sqrt(2.0 * R - log(4.0 * M_PI * R));
     }
+    /* from the smaller tail: below R = ln 2, Phi(z) = 1 - exp(-R) is
+     * -expm1(-R) (exp(-R) rounds to 1 below R = 1.1e-16, and Q^-1(1) is
+     * -inf) */
+    if (R < 0.6931471805599453) { /* ln 2 */
+        return gsl_cdf_ugaussian_Pinv(-expm1(-R));
+    }
     return gsl_cdf_ugaussian_Qinv(exp(-R));
 }
 

@@ -15,6 +15,7 @@
 #include <cjson/cJSON.h>
 #include <cmocka.h>
 #include <gsl/gsl_linalg.h>
+#include <gsl/gsl_sf_psi.h>
 #include <unistd.h>
 
 #include "footnav/fnav_profile.h"
@@ -136,7 +137,132 @@ static void test_model_avar_textbook(void **state)
         if (m >= 16.0) {
             FNAV_ASSERT_CLOSE(sg_model_avar(&g, fs, m, 0.0, 3600.0), gm, 0.0, 2e-2);
         }
+        {
+            /* quantisation of lsb q: rounding errors white of variance
+             * q^2/12, AVAR q^2 / (12 m); noise-shaped (an integrating
+             * sensor), the angle's rounding Q = (q/fs)/sqrt(12) gives
+             * IEEE 952's 3 Q^2 / tau^2 = q^2 / (4 m^2). The white form as
+             * q^2 / (6 m) (a hand-made mutant, 2026-11-29) passed every
+             * suite */
+            const double q = 1e-3;
+            sg_chmodel_t qw = one_effect(FNAV_EFFECT_QUANT, q, 0.0), qs = one_effect(FNAV_EFFECT_QUANT, q, 1.0);
+            FNAV_ASSERT_CLOSE(sg_model_avar(&qw, fs, m, 0.0, 3600.0), q * q / (12.0 * m), 0.0, 1e-12);
+            FNAV_ASSERT_CLOSE(sg_model_avar(&qs, fs, m, 0.0, 3600.0), q * q / (4.0 * m * m), 0.0, 1e-12);
+        }
     }
+}
+
+/* The models' one-sided PSD (sg_model_lnstat of a spectral point: ln of the
+ * mean over its bins) against the forms that give the Allan variances
+ * above (IEEE Std 952-1997 Annex C, one-sided S(f) = h_a f^a with
+ * sigma^2(tau) = h_0 / (2 tau), 2 ln 2 h_-1, (2 pi^2 / 3) h_-2 tau):
+ * white 2 N^2, flicker B^2 / (pi f) (the Allan floor (2 ln 2 / pi) B^2, B
+ * the bias instability), rate random walk K^2 / (2 pi^2 f^2), Gauss-Markov
+ * 4 sigma^2 T / (1 + (2 pi f T)^2), each alone and summed, over 6 bins from
+ * bin 20 of 1024 at 100 Hz (f 1.95 to 2.44 Hz). A flicker PSD of
+ * B^2 / (2 pi f) (a hand-made mutant, 2026-11-29) passed every suite. */
+static void test_model_psd_textbook(void **state)
+{
+    const double fs = 100.0, N = 3e-3, B = 2e-4, K = 4e-4, sig = 5e-3, T = 0.3;
+    const unsigned m0 = 20u, nb = 6u, nfft = 1024u;
+    double sw = 0.0, sf = 0.0, sk = 0.0, sg = 0.0;
+    sg_chmodel_t all;
+    sg_point_t p;
+    unsigned k;
+    (void)state;
+    memset(&p, 0, sizeof p);
+    p.dom = SG_PSD;
+    p.m = m0;
+    p.lag = nb;
+    p.n_phase = nfft;
+    p.nblk = 1;
+    for (k = m0; k < m0 + nb; k++) {
+        const double f = (double)k * fs / (double)nfft, w = 2.0 * M_PI * f * T;
+        sw += 2.0 * N * N;
+        sf += B * B / (M_PI * f);
+        sk += K * K / (2.0 * M_PI * M_PI * f * f);
+        sg += 4.0 * sig * sig * T / (1.0 + w * w);
+    }
+    {
+        /* flicker over 1e-4 .. 1e4 s: the band lies four decades inside */
+        sg_chmodel_t w = one_effect(FNAV_EFFECT_WHITE, N, 0.0), f = one_effect(FNAV_EFFECT_FLICKER, B, 1e-4);
+        sg_chmodel_t r = one_effect(FNAV_EFFECT_RRW, K, 0.0), g = one_effect(FNAV_EFFECT_AR1, T, sig);
+        double t0 = 0.0, t1 = 600.0;
+        f.e[0].p[2] = 1e4;
+        FNAV_ASSERT_CLOSE(sg_model_lnstat(&w, &p, fs, 1, &t0, &t1), log(sw / nb), 1e-12, 0.0);
+        FNAV_ASSERT_CLOSE(sg_model_lnstat(&f, &p, fs, 1, &t0, &t1), log(sf / nb), 1e-12, 0.0);
+        FNAV_ASSERT_CLOSE(sg_model_lnstat(&r, &p, fs, 1, &t0, &t1), log(sk / nb), 1e-12, 0.0);
+        FNAV_ASSERT_CLOSE(sg_model_lnstat(&g, &p, fs, 1, &t0, &t1), log(sg / nb), 1e-12, 0.0);
+        memset(&all, 0, sizeof all);
+        all.n = 4;
+        all.e[0] = w.e[0];
+        all.e[1] = f.e[0];
+        all.e[2] = r.e[0];
+        all.e[3] = g.e[0];
+        FNAV_ASSERT_CLOSE(sg_model_lnstat(&all, &p, fs, 1, &t0, &t1), log((sw + sf + sk + sg) / nb), 1e-12, 0.0);
+    }
+}
+
+/* The PSD points' degrees of freedom (welch_band_edf: overlap and leakage
+ * corrections, Percival & Walden 1993 sec. 6.17) against the spread they
+ * claim, by Monte Carlo: R = 200 logs of white noise, 8192 samples at
+ * 100 Hz; for each band the sample variance of ln PSD over the logs over
+ * trigamma(edf / 2), the variance of the ln of a chi-square estimate with
+ * edf degrees of freedom (docs/simgap.md, section 3). Each ratio has a
+ * relative standard error of about sqrt(2 / (R - 1)) = 0.10; the bands hold
+ * disjoint bins, so the mean ratio over P bands has about 0.10 / sqrt(P)
+ * (P is printed; 0.03 or less for P >= 11), and 0.15 is 5 of those plus
+ * the equivalent-EDF approximation's own error. An EDF half as large (the
+ * 2 of nu_bin dropped, a hand-made mutant of 2026-11-29 that passed every
+ * suite) puts the mean ratio near 0.5. */
+static void test_psd_edf_monte_carlo(void **state)
+{
+    enum { R = 200, N = 8192, CAP = 256 };
+    static double v[R][CAP];
+    double vals[CAP], ratio = 0.0;
+    sg_feat_cfg_t cfg = sg_feat_cfg_default(100.0);
+    sg_plist_t pl;
+    fnav_rng_t rng;
+    long cnt = 0;
+    int r, k, P = 0;
+    size_t j;
+    (void)state;
+    memset(&pl, 0, sizeof pl);
+    fnav_rng_seed(&rng, 29u, 11u);
+    for (r = 0; r < R; r++) {
+        sg_acc_t a;
+        assert_int_equal(sg_acc_init(&a, &cfg, N, 0.0), 0);
+        for (k = 0; k < N; k++) {
+            sg_acc_push(&a, (double)fnav_rng_gauss(&rng));
+        }
+        cnt = sg_acc_finish(&a, 0, r == 0 ? &pl : NULL, vals, CAP);
+        assert_true(cnt > 0);
+        memcpy(v[r], vals, (size_t)cnt * sizeof *vals);
+        sg_acc_free(&a);
+    }
+    assert_int_equal((long)pl.n, cnt);
+    for (j = 0; j < pl.n; j++) {
+        double m = 0.0, s2 = 0.0;
+        if (pl.p[j].dom != SG_PSD || !(pl.p[j].edf > 0.0)) {
+            continue;
+        }
+        for (r = 0; r < R; r++) {
+            m += v[r][j];
+        }
+        m /= R;
+        for (r = 0; r < R; r++) {
+            s2 += (v[r][j] - m) * (v[r][j] - m);
+        }
+        s2 /= R - 1;
+        ratio += s2 / gsl_sf_psi_1(0.5 * pl.p[j].edf);
+        P++;
+    }
+    assert_true(P >= 11);
+    ratio /= P;
+    fprintf(stderr, "PSD bands' ln variance over trigamma(edf/2), white noise: mean ratio %.3f over %d bands\n", ratio,
+            P);
+    assert_true(fabs(ratio - 1.0) < 0.15);
+    sg_plist_free(&pl);
 }
 
 /* ------------------------------------------------------------ lattice */
@@ -164,6 +290,252 @@ static void test_lattice(void **state)
     assert_true(z > 100.0);
     step = sg_lattice_step(x, N, &z);
     assert_true(step == 0.0 || fabs(z) < 5.0);
+}
+
+/* ------------------------------------------------------------ gap statistics */
+
+/* vectors/simgap/compare.csv (vectors/simgap/gen_compare.py: numpy/scipy
+ * from the formulas of docs/simgap.md, section 3): key,index,value rows. */
+enum { CG_MAX = 1024 };
+static struct {
+    char key[24];
+    int idx;
+    double v;
+} cg_row[CG_MAX];
+static int cg_n;
+
+static int cg_load(void)
+{
+    char path[512], line[256];
+    FILE *f;
+    cg_n = 0;
+    if (fnav_vector_path("simgap/compare.csv", path, sizeof path) != 0 || (f = fopen(path, "r")) == NULL) {
+        return -1;
+    }
+    while (fgets(line, sizeof line, f) != NULL && cg_n < CG_MAX) {
+        char *c1 = strchr(line, ','), *c2;
+        if (line[0] == '#' || c1 == NULL || (c2 = strchr(c1 + 1, ',')) == NULL || (size_t)(c1 - line) >= 24) {
+            continue;
+        }
+        memcpy(cg_row[cg_n].key, line, (size_t)(c1 - line));
+        cg_row[cg_n].key[c1 - line] = '\0';
+        cg_row[cg_n].idx = atoi(c1 + 1);
+        cg_row[cg_n].v = strtod(c2 + 1, NULL);
+        cg_n++;
+    }
+    fclose(f);
+    return 0;
+}
+
+static double cg(const char *key, int idx)
+{
+    int i;
+    for (i = 0; i < cg_n; i++) {
+        if (cg_row[i].idx == idx && strcmp(cg_row[i].key, key) == 0) {
+            return cg_row[i].v;
+        }
+    }
+    fail_msg("compare.csv: no %s,%d", key, idx);
+    return (double)NAN;
+}
+
+/* Tolerances: the same double formulas in numpy give the same values to
+ * rounding (1e-9 relative); where a quantile enters (the Student t to
+ * normal map of the twin-only z, G_crit's chi-square, z_crit) the two
+ * libraries' special functions (GSL, scipy's cephes) agree to about 1e-9
+ * relative as well; 1e-7 is far inside any change a wrong formula makes
+ * (the nearest mutant moved a value by 4 %). */
+static void cg_check_cmp(const char *tag, const sg_cmp_t *c, int n, int S)
+{
+    char k[24];
+    int j, s, d;
+#define CGK(name) (snprintf(k, sizeof k, "%s_%s", tag, name), k)
+    for (j = 0; j < n; j++) {
+        FNAV_ASSERT_CLOSE(c->z[j], cg(CGK("z"), j), 1e-9, 1e-7);
+        FNAV_ASSERT_CLOSE(c->dev[j], cg(CGK("dev"), j), 1e-9, 1e-7);
+    }
+    for (s = 0; s < S; s++) {
+        FNAV_ASSERT_CLOSE(c->G_null[s], cg(CGK("G_null"), s), 1e-12, 1e-7);
+    }
+    for (d = 0; d < SG_NDOM; d++) {
+        if (d == SG_PSD || d == SG_LATTICE || d == SG_TIME) {
+            FNAV_ASSERT_CLOSE(c->G_dom[d], cg(CGK("G_dom"), d), 1e-12, 1e-7);
+        } else {
+            assert_true(isnan(c->G_dom[d])); /* no point of the domain */
+        }
+    }
+    FNAV_ASSERT_CLOSE(c->G, cg(CGK("G"), 0), 1e-12, 1e-7);
+    FNAV_ASSERT_CLOSE(c->maxz, cg(CGK("maxz"), 0), 1e-12, 1e-7);
+    assert_int_equal(c->imax, (int)cg(CGK("imax"), 0));
+    FNAV_ASSERT_CLOSE(c->null_mean, cg(CGK("null_mean"), 0), 1e-12, 1e-7);
+    FNAV_ASSERT_CLOSE(c->null_sd, cg(CGK("null_sd"), 0), 1e-12, 1e-7);
+    FNAV_ASSERT_CLOSE(c->G_crit, cg(CGK("G_crit"), 0), 1e-12, 1e-7);
+    FNAV_ASSERT_CLOSE(c->z_crit, cg(CGK("z_crit"), 0), 1e-12, 1e-7);
+    assert_int_equal(c->significant, (int)cg(CGK("significant"), 0));
+    assert_int_equal(c->undefined, 0);
+#undef CGK
+}
+
+/* sg_compare, sg_lr_test and sg_score_test against an independent numpy /
+ * scipy computation of docs/simgap.md's formulas on 12 points in three
+ * domains: PSD points with a chi-square theory variance (trigamma(edf/2))
+ * and a normal-score one, time-domain points whose variance comes from the
+ * twins alone (Student's t mapped to a normal score), a point beyond the
+ * z cap of 40, and a level and an empty point outside every statistic;
+ * 6 twins, with the fitted model's uncertainty as a diagonal (a) and as
+ * refit shifts (b, the Woodbury correction), and (c) a real significant by
+ * its max |z| alone (G below G_crit). Before it, sg_compare was tested only
+ * for its false-alarm rate on twin-only points (above): a hand-made
+ * mutation study (2026-11-29) found that dropping the two-sided factor of
+ * z_crit, the 2 of the scaled chi-square's k, the twins' n - 1 (of the
+ * points' spread and of the null G's), the 1 + 1/S of the twin-only
+ * variance, the t's degrees of freedom or the sign of its normal score,
+ * the trigamma's argument, the correlation term's factor 2 or its bias
+ * correction, G || max|z| read as &&, and the sqrt(1 + 1/S) of both tests
+ * passed every suite. The script asserts which branch of the null
+ * variance (the sample's, the correlation term's) each case takes. */
+static void test_compare_golden(void **state)
+{
+    sg_plist_t pl;
+    sg_cmp_t c;
+    double real[16], real_c[16], vx[16], tw[6 * 16], sh[6 * 16], twb[6 * 16], shb[6 * 16], drop, t, tm, ts, z;
+    int n, S, j, i;
+    (void)state;
+    if (cg_load() != 0) {
+        fail_msg("vectors/simgap/compare.csv not found");
+    }
+    n = (int)cg("n", 0);
+    S = (int)cg("S", 0);
+    assert_true(n <= 16 && S <= 6);
+    memset(&pl, 0, sizeof pl);
+    for (j = 0; j < n; j++) {
+        sg_point_t p;
+        memset(&p, 0, sizeof p);
+        p.dom = (int)cg("pt_dom", j);
+        p.kind = (int)cg("pt_kind", j);
+        p.edf = cg("pt_edf", j);
+        p.empty = (int)cg("pt_empty", j);
+        p.ch = 0;
+        p.nblk = 1;
+        p.x_hi = 1.0;
+        assert_int_equal(sg_plist_add(&pl, &p), 0);
+        real[j] = cg("real", j);
+        real_c[j] = cg("real_c", j);
+        vx[j] = cg("vx", j);
+    }
+    for (i = 0; i < S * n; i++) {
+        tw[i] = cg("twin", i);
+        sh[i] = cg("shift", i);
+        twb[i] = cg("twin_b", i);
+        shb[i] = cg("shift_b", i);
+    }
+    assert_int_equal(sg_compare(&pl, real, tw, S, vx, NULL, cg("alpha", 0), &c), 0);
+    cg_check_cmp("a", &c, n, S);
+    sg_cmp_free(&c);
+    assert_int_equal(sg_compare(&pl, real_c, tw, S, vx, NULL, cg("alpha", 0), &c), 0);
+    FNAV_ASSERT_CLOSE(c.G, cg("c_G", 0), 1e-12, 1e-7);
+    FNAV_ASSERT_CLOSE(c.maxz, cg("c_maxz", 0), 1e-12, 1e-7);
+    assert_true(c.G < c.G_crit && c.maxz > c.z_crit); /* the case is what it says */
+    assert_int_equal(c.significant, (int)cg("c_significant", 0));
+    sg_cmp_free(&c);
+    assert_int_equal(sg_compare(&pl, real, tw, S, vx, sh, cg("alpha", 0), &c), 0);
+    cg_check_cmp("b", &c, n, S);
+    z = sg_score_test(&pl, real, &c, tw, sh, twb, S, &t, &tm, &ts);
+    FNAV_ASSERT_CLOSE(t, cg("score_t", 0), 1e-12, 1e-9);
+    FNAV_ASSERT_CLOSE(tm, cg("score_t_mean", 0), 1e-12, 1e-9);
+    FNAV_ASSERT_CLOSE(ts, cg("score_t_sd", 0), 1e-12, 1e-9);
+    FNAV_ASSERT_CLOSE(z, cg("score_z", 0), 1e-12, 1e-9);
+    sg_cmp_free(&c);
+    z = sg_lr_test(&pl, real, tw, NULL, sh, twb, NULL, shb, S, &drop);
+    FNAV_ASSERT_CLOSE(drop, cg("lr_drop", 0), 1e-12, 1e-7);
+    FNAV_ASSERT_CLOSE(z, cg("lr_z", 0), 1e-12, 1e-7);
+    z = sg_lr_test(&pl, real, tw, vx, NULL, twb, vx, NULL, S, &drop);
+    FNAV_ASSERT_CLOSE(drop, cg("lr_vx_drop", 0), 1e-12, 1e-7);
+    FNAV_ASSERT_CLOSE(z, cg("lr_vx_z", 0), 1e-12, 1e-7);
+    sg_plist_free(&pl);
+}
+
+/* sg_explained on compare.csv's inputs: the fraction of the excess,
+ * (Ga - Gb) / (Ga - null mean), against numpy (null mean 1, sd 1), and
+ * undefined (NaN, as its interval) where Ga lies within two null sd of the
+ * null mean (docs/simgap.md, section 4: "defined only where there is an
+ * excess (more than two null standard deviations)"): here 1.5 sd. The
+ * threshold read as one sd and the excess taken over Ga instead of
+ * Ga - null mean (hand-made mutants, 2026-11-29) passed every suite. */
+static void test_explained_golden(void **state)
+{
+    sg_plist_t pl;
+    double real[16], vx[16], tw[6 * 16], sh[6 * 16], twb[6 * 16], shb[6 * 16], f, lo, hi, Ga;
+    int n, S, j, i;
+    (void)state;
+    if (cg_load() != 0) {
+        fail_msg("vectors/simgap/compare.csv not found");
+    }
+    n = (int)cg("n", 0);
+    S = (int)cg("S", 0);
+    assert_true(n <= 16 && S <= 6);
+    memset(&pl, 0, sizeof pl);
+    for (j = 0; j < n; j++) {
+        sg_point_t p;
+        memset(&p, 0, sizeof p);
+        p.dom = (int)cg("pt_dom", j);
+        p.kind = (int)cg("pt_kind", j);
+        p.edf = cg("pt_edf", j);
+        p.empty = (int)cg("pt_empty", j);
+        p.nblk = 1;
+        p.x_hi = 1.0;
+        assert_int_equal(sg_plist_add(&pl, &p), 0);
+        real[j] = cg("real", j);
+        vx[j] = cg("vx", j);
+    }
+    for (i = 0; i < S * n; i++) {
+        tw[i] = cg("twin", i);
+        sh[i] = cg("shift", i);
+        twb[i] = cg("twin_b", i);
+        shb[i] = cg("shift_b", i);
+    }
+    sg_explained(&pl, real, tw, vx, sh, twb, vx, shb, S, 1.0, 1.0, &f, &lo, &hi, 7u);
+    FNAV_ASSERT_CLOSE(f, cg("expl_f", 0), 1e-12, 1e-7);
+    assert_true(lo <= hi);
+    Ga = cg("expl_Ga", 0);
+    sg_explained(&pl, real, tw, vx, sh, twb, vx, shb, S, Ga - 1.5, 1.0, &f, &lo, &hi, 7u);
+    assert_true(isnan(f) && isnan(lo) && isnan(hi));
+    sg_plist_free(&pl);
+}
+
+/* sg_rayleigh_z against scipy's exact Phi^-1(1 - exp(-R)) (compare.csv):
+ * to rounding up to R = 30, where the C code takes the tail probability
+ * itself (for R = 1e-20, where exp(-R) rounds to 1, it returned -inf: the
+ * tail was taken as Q(z) = exp(-R), not as Phi(z) = -expm1(-R)); beyond, the asymptotic z^2 = 2R - ln(4 pi R) leaves out the next
+ * term of the tail's expansion Q(z) = phi(z)/z (1 - 1/z^2 + ...): its
+ * error times z^2 is at most 0.25 for R from 30 to 700 (scipy), so
+ * 0.5 / z^2 bounds it (ln(2 pi R) in place of ln(4 pi R) is 2.3 / z^2 off
+ * at least). And sg_lattice_z on exact lattices: 21 values on multiples of
+ * q have 20 differences of phase 0, R = |sum e^(i phase)|^2 / 20 = 20; and
+ * R <= 0 gives the floor -8 (hx_simgap.h). */
+static void test_rayleigh_golden(void **state)
+{
+    double x[21], z;
+    int i;
+    (void)state;
+    if (cg_load() != 0) {
+        fail_msg("vectors/simgap/compare.csv not found");
+    }
+    for (i = 0; i < 9; i++) {
+        const double R = cg("rayleigh_R", i), ze = cg("rayleigh_z", i);
+        z = sg_rayleigh_z(R);
+        if (R <= 30.0) {
+            FNAV_ASSERT_CLOSE(z, ze, 1e-9, 1e-9);
+        } else {
+            FNAV_ASSERT_CLOSE(z, ze, 0.5 / (ze * ze), 0.0);
+        }
+    }
+    assert_true(sg_rayleigh_z(0.0) == -8.0 && sg_rayleigh_z(-1.0) == -8.0);
+    for (i = 0; i < 21; i++) {
+        x[i] = 0.25 * (double)((i * 7) % 5 - 2);
+    }
+    assert_true(cg("rayleigh_R", 4) == 20.0);
+    FNAV_ASSERT_CLOSE(sg_lattice_z(x, 21, 0.25), cg("rayleigh_z", 4), 1e-9, 1e-9);
 }
 
 /* ------------------------------------------------------------ split */
@@ -237,12 +609,26 @@ static void test_split_disjoint(void **state)
         }
         for (k = 0; k < n; k++) {
             assert_true(use[k] != 0);
+            /* the block lookup agrees with the blocks (a sample just past
+             * a block was given to it with <= for <, a hand-made mutant
+             * that passed every suite) */
+            for (g = SG_FIT; g <= SG_HOLD; g++) {
+                assert_int_equal(sg_segs_block(&s, g, k) >= 0, use[k] == g);
+            }
         }
-        assert_true(labs(nfit - (long)(0.6 * (double)n)) <= 1);
+        /* floor(0.6 n) = 60000 samples exactly (the ends 30000 each: the
+         * first and the last 30 %); with the second end one sample
+         * shorter (a hand-made mutant, 2026-11-29) the fit segment held
+         * 59999 and the old bound |nfit - 0.6 n| <= 1 passed it */
+        assert_int_equal(nfit, 60000);
+        assert_int_equal(s.total[SG_FIT], 60000);
+        assert_int_equal(s.total[SG_HOLD], n - 60000);
         if (sandwich) {
             assert_int_equal(use[0], SG_FIT);
             assert_int_equal(use[n - 1], SG_FIT);
             assert_int_equal(use[n / 2], SG_HOLD);
+            assert_int_equal(s.n[SG_FIT][0], 30000);
+            assert_int_equal(s.n[SG_FIT][1], 30000);
         }
     }
 }
@@ -1201,6 +1587,92 @@ static void test_json_ar1_tau_null_without_sigma(void **state)
     free(r);
 }
 
+/* Each number of a comparison, a point and the baseline lands under its
+ * own key of docs/simgap.md's schema ("JSON"): cmp {G, G_null_mean,
+ * G_null_sd, G_crit, max_abs_z, z_crit, significant, G_per_domain},
+ * points[] {real, twin, twin_sd, sd, z}, baseline {white_density(_se),
+ * ar1_sigma(_se), ar1_tau_s(_se)}, each given a distinct value. No test
+ * read G_null_sd, max_abs_z, twin_sd or the baseline's standard errors:
+ * the null mean written as G_null_sd, the total sd as twin_sd, max_abs_z
+ * renamed and the AR(1) time's se written as sigma's (hand-made mutants,
+ * 2026-11-29) passed every suite. */
+static void test_json_cmp_point_baseline_keys(void **state)
+{
+    sg_result_t *r = hand_result();
+    sg_chres_t *c = &r->ch[0];
+    sg_cmp_t *h = &c->cmp[SG_HOLD];
+    sg_point_t p;
+    double real = 12.5, tm = 8.5, tsd = 9.5, sdt = 10.5, z = 11.5, dev = 1.0;
+    cJSON *j, *ch, *g, *pt, *b;
+    int iw, ia, d;
+    (void)state;
+    h->G = 1.5;
+    h->null_mean = 2.5;
+    h->null_sd = 3.5;
+    h->G_crit = 4.5;
+    h->maxz = 5.5;
+    h->z_crit = 6.5;
+    h->significant = 1;
+    for (d = 0; d < SG_NDOM; d++) {
+        h->G_dom[d] = (double)NAN;
+    }
+    h->G_dom[SG_PSD] = 7.5;
+    h->n = 1;
+    h->z = &z;
+    h->twin_mean = &tm;
+    h->twin_sd = &tsd;
+    h->sd_tot = &sdt;
+    h->dev = &dev;
+    memset(&p, 0, sizeof p);
+    p.dom = SG_PSD;
+    p.x = 2.0;
+    p.x_lo = 1.5;
+    p.x_hi = 2.5;
+    p.nblk = 1;
+    assert_int_equal(sg_plist_add(&r->pl[0][SG_HOLD], &p), 0);
+    r->real[0][SG_HOLD] = &real;
+    iw = sg_model_find(&c->baseline, FNAV_EFFECT_WHITE);
+    ia = sg_model_find(&c->baseline, FNAV_EFFECT_AR1);
+    assert_true(iw >= 0 && ia >= 0);
+    c->baseline.e[iw].se[0] = 1e-4;
+    c->baseline.e[ia].p[0] = 2.0;  /* tau_s */
+    c->baseline.e[ia].p[1] = 0.004; /* sigma */
+    c->baseline.e[ia].se[0] = 0.3;
+    c->baseline.e[ia].se[1] = 5e-4;
+    j = json_of(r);
+    ch = cJSON_GetArrayItem(cJSON_GetObjectItem(j, "channels"), 0);
+    g = cJSON_GetObjectItem(cJSON_GetObjectItem(ch, "gap"), "held_out");
+    assert_non_null(g);
+    assert_true(cJSON_GetObjectItem(g, "G")->valuedouble == 1.5);
+    assert_true(cJSON_GetObjectItem(g, "G_null_mean")->valuedouble == 2.5);
+    assert_true(cJSON_GetObjectItem(g, "G_null_sd")->valuedouble == 3.5);
+    assert_true(cJSON_GetObjectItem(g, "G_crit")->valuedouble == 4.5);
+    assert_true(cJSON_GetObjectItem(g, "max_abs_z")->valuedouble == 5.5);
+    assert_true(cJSON_GetObjectItem(g, "z_crit")->valuedouble == 6.5);
+    assert_true(cJSON_IsTrue(cJSON_GetObjectItem(g, "significant")));
+    assert_true(cJSON_GetObjectItem(cJSON_GetObjectItem(g, "G_per_domain"), "psd")->valuedouble == 7.5);
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(cJSON_GetObjectItem(g, "G_per_domain"), "allan")));
+    pt = cJSON_GetArrayItem(cJSON_GetObjectItem(cJSON_GetObjectItem(ch, "points"), "held_out"), 0);
+    assert_non_null(pt);
+    assert_string_equal(cJSON_GetObjectItem(pt, "domain")->valuestring, "psd");
+    assert_true(cJSON_GetObjectItem(pt, "x_lo")->valuedouble == 1.5 && cJSON_GetObjectItem(pt, "x_hi")->valuedouble == 2.5);
+    assert_true(cJSON_GetObjectItem(pt, "real")->valuedouble == 12.5);
+    assert_true(cJSON_GetObjectItem(pt, "twin")->valuedouble == 8.5);
+    assert_true(cJSON_GetObjectItem(pt, "twin_sd")->valuedouble == 9.5);
+    assert_true(cJSON_GetObjectItem(pt, "sd")->valuedouble == 10.5);
+    assert_true(cJSON_GetObjectItem(pt, "z")->valuedouble == 11.5);
+    b = cJSON_GetObjectItem(ch, "baseline");
+    assert_true(cJSON_GetObjectItem(b, "white_density")->valuedouble == 0.003);
+    assert_true(cJSON_GetObjectItem(b, "white_density_se")->valuedouble == 1e-4);
+    assert_true(cJSON_GetObjectItem(b, "ar1_sigma")->valuedouble == 0.004);
+    assert_true(cJSON_GetObjectItem(b, "ar1_sigma_se")->valuedouble == 5e-4);
+    assert_true(cJSON_GetObjectItem(b, "ar1_tau_s")->valuedouble == 2.0);
+    assert_true(cJSON_GetObjectItem(b, "ar1_tau_s_se")->valuedouble == 0.3);
+    cJSON_Delete(j);
+    sg_plist_free(&r->pl[0][SG_HOLD]);
+    free(r);
+}
+
 /* The fit segment's explained fraction (the JSON's explained_fit) is
  * undefined without an excess on the fit segment, as the held-out one is:
  * null, not 0 ("explains nothing"), which is what a candidate that moves
@@ -1519,8 +1991,13 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_thresholds_match_catalogue),
         cmocka_unit_test(test_model_avar_textbook),
+        cmocka_unit_test(test_model_psd_textbook),
+        cmocka_unit_test(test_psd_edf_monte_carlo),
         cmocka_unit_test(test_lattice),
+        cmocka_unit_test(test_rayleigh_golden),
         cmocka_unit_test(test_compare_twin_only_level),
+        cmocka_unit_test(test_compare_golden),
+        cmocka_unit_test(test_explained_golden),
         cmocka_unit_test(test_split_disjoint),
         cmocka_unit_test(test_time_domain_stats),
         cmocka_unit_test(test_time_steps_window),
@@ -1536,6 +2013,7 @@ int main(void)
         cmocka_unit_test(test_prune_zero),
         cmocka_unit_test(test_json_effects_leave_out_refitted_to_zero),
         cmocka_unit_test(test_json_ar1_tau_null_without_sigma),
+        cmocka_unit_test(test_json_cmp_point_baseline_keys),
         cmocka_unit_test(test_fit_explained_undefined_without_excess),
         cmocka_unit_test(test_summary_later_step_fraction_of_what_is_left),
         cmocka_unit_test(test_json_jitter_has_no_first_event),

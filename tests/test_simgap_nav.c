@@ -1,12 +1,13 @@
 /* Tests of the walk domain's building blocks of the sim-to-real gap
  * diagnosis (harness/hx_simgap_nav.h, docs/simgap.md "Walks"): the sensor's
- * linear error from the one fitted on the filter's trajectory, and the
- * matching of real and twin stances. End-to-end walk diagnoses are in
+ * linear error from the one fitted on the filter's trajectory, the
+ * matching of real and twin stances, and the navigation points of a run. End-to-end walk diagnoses are in
  * tests/cli/test_simgap.sh. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -122,6 +123,101 @@ static void test_draw_case_reason(void **state)
     assert_non_null(strstr(why, "zero-velocity updates of the simulated walk could be matched, 5 needed"));
 }
 
+/* The navigation points of a hand-made filter run (sg_nav_stance_points),
+ * against values worked out by hand from docs/simgap.md's definitions.
+ * 60 samples at 100 Hz; updates at 5, 6, 7, 9 (one stance: gaps of up to 2
+ * samples join), 20-22 and 40-41: three stances, nine updates. The
+ * innovations' covariance is diag(1, 4, 9) except at sample 5, S = L L^T
+ * with L = [2 0 0; 1 2 0; 1 1 3], y = L (1, 1, 1), so that every normalised
+ * innovation e = L^-1 y is a vector of small integers:
+ *   stance 1: e (1,1,1) (1,0,0) (0,1,0) (1,1,1), sum e_k.e_k+1 2, sum |e|^2 8
+ *   stance 2: e (2,0,0) (2,1,0) (0,0,1):               4, 10
+ *   stance 3: e (0,1,1) (0,-1,-1):                     -2, 4
+ * whiteness 4/22; NIS of the first updates 3, 2, 5 (mean 10/3), of all
+ * 18/9 = 2; first innovation squared over its variance per axis: x
+ * (1 + 4 + 0)/3, y (9/5 + 0 + 1)/3, z (25/11 + 0 + 1)/3; speeds at
+ * mid-stance (samples 7, 21, 40) 0.1, 0.2, 0.3, RMS sqrt(0.14/3); two
+ * windows of 0.295 s: first NIS 3 and 2 in the first, 5 in the second;
+ * the drift from mid-stance 7 to 40 (3, 4, 2): horizontal 5, vertical 2.
+ * Until 2026-11-29 no unit test reached these statistics: a whiteness
+ * without the z component, the residual velocity's ln without the 1/2 of
+ * the RMS, stances split at a gap of 2 samples, the wrong sign in the
+ * whitening, the off-diagonal covariance read as the y and z variances,
+ * the mean NIS over stances instead of updates, the drift's vertical from
+ * the y axis and the residual speed at the stance's first sample
+ * (hand-made mutants) were caught, if at all, only by the 4-minute CLI
+ * walk tests. */
+static void test_stance_points(void **state)
+{
+    enum { N = 60 };
+    static int64_t t[N];
+    static unsigned char zupt[N];
+    static double y[N][3], S[N][6], nis[N], v[N][3], p[N][3];
+    static const int upd[] = { 5, 6, 7, 9, 20, 21, 22, 40, 41 };
+    static const double ey[9][3] = { { 2, 3, 5 }, { 1, 0, 0 }, { 0, 2, 0 }, { 1, 2, 3 }, { 2, 0, 0 },
+                                     { 2, 2, 0 }, { 0, 0, 3 }, { 0, 2, 3 }, { 0, -2, -3 } };
+    static const double en[9] = { 3, 1, 1, 3, 2, 1, 1, 5, 1 };
+    double vals[16];
+    sg_plist_t pl;
+    long cnt;
+    int i, k;
+    (void)state;
+    memset(&pl, 0, sizeof pl);
+    for (k = 0; k < N; k++) {
+        t[k] = (int64_t)k * 10000000;
+    }
+    for (i = 0; i < 9; i++) {
+        k = upd[i];
+        zupt[k] = 1;
+        memcpy(y[k], ey[i], sizeof y[k]);
+        S[k][0] = 1.0;
+        S[k][3] = 4.0;
+        S[k][5] = 9.0;
+        nis[k] = en[i];
+    }
+    /* L = [2 0 0; 1 2 0; 1 1 3]: S = L L^T = [4 2 2; 2 5 3; 2 3 11] */
+    S[5][0] = 4.0;
+    S[5][1] = 2.0;
+    S[5][2] = 2.0;
+    S[5][3] = 5.0;
+    S[5][4] = 3.0;
+    S[5][5] = 11.0;
+    v[7][0] = 0.1;
+    v[21][1] = 0.2;
+    v[40][2] = 0.3;
+    p[7][0] = p[7][1] = p[7][2] = 1.0;
+    p[40][0] = 4.0;
+    p[40][1] = 5.0;
+    p[40][2] = 3.0;
+    cnt = sg_nav_stance_points(N, t, zupt, (const double(*)[3])y, (const double(*)[6])S, nis,
+                               (const double(*)[3])v, (const double(*)[3])p, 2, 1, vals, &pl);
+    assert_int_equal(cnt, 11);
+    assert_int_equal((int)pl.n, 11);
+    FNAV_ASSERT_CLOSE(vals[0], log(10.0 / 3.0), 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(vals[1], log(2.0), 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(vals[2], log(5.0 / 3.0), 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(vals[3], log(2.8 / 3.0), 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(vals[4], log(12.0 / 11.0), 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(vals[5], 4.0 / 22.0, 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(vals[6], 0.5 * log(0.14 / 3.0), 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(vals[7], log(2.5), 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(vals[8], log(5.0), 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(vals[9], log(5.0), 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(vals[10], log(2.0), 1e-12, 0.0);
+    for (i = 0; i < 11; i++) {
+        static const int kind[11] = { SG_NAV_NIS_FIRST, SG_NAV_NIS_ALL, SG_NAV_AXIS, SG_NAV_AXIS, SG_NAV_AXIS,
+                                      SG_NAV_WHITE, SG_NAV_RESID, SG_NAV_WIN, SG_NAV_WIN, SG_NAV_DRIFT_H,
+                                      SG_NAV_DRIFT_V };
+        assert_int_equal(pl.p[i].dom, SG_NAV);
+        assert_int_equal(pl.p[i].kind, kind[i]);
+        assert_int_equal(pl.p[i].empty, 0);
+    }
+    /* the windows: [0, 0.295) and [0.295, 0.59) s */
+    FNAV_ASSERT_CLOSE(pl.p[7].x_hi, 0.295, 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(pl.p[8].x_lo, 0.295, 1e-12, 0.0);
+    sg_plist_free(&pl);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -129,6 +225,7 @@ int main(void)
         cmocka_unit_test(test_lin_to_sensor_inverse),
         cmocka_unit_test(test_match_swing),
         cmocka_unit_test(test_draw_case_reason),
+        cmocka_unit_test(test_stance_points),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

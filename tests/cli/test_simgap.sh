@@ -216,6 +216,12 @@ json "$T/q.json" 'len([l for l in j["locations"] if l["domain"] == "lattice"]) >
     pass "lattice location: ratio is real - twin" || fail "lattice location ratio: $(cat "$T/pyerr")"
 json "$T/q.json" 'all(c["attribution"]["within_noise"] for c in j["channels"])' &&
     pass "remaining gap within noise on every channel" || fail "within noise: $(cat "$T/pyerr")"
+# the forward selection stops once the held-out gap is within noise
+# (docs/simgap.md, "Stopping rule" (a)): gz, explained by quant at its first
+# step, has no second one (with the rule read from the third step on, a
+# hand-made mutant of 2026-11-29, gz had two and every test passed)
+json "$T/q.json" 'j["channels"][5]["channel"] == "gz" and len(j["channels"][5]["attribution"]["steps"]) == 1' &&
+    pass "no step after the held-out gap is explained" || fail "steps after within noise: $(cat "$T/pyerr")"
 json "$T/q.json" 'j["split"]["method"].startswith("sandwich") and all(abs(cd["z"] - (cd["z_held_out_middle"] + cd["z_held_out_ends"]) / 2 ** 0.5) < 1e-6 * (1 + abs(cd["z"])) for c in j["channels"] for s in c["attribution"]["steps"] for cd in s["candidates"] if cd["simulated"] and cd["z_held_out_ends"] is not None) and any(cd["effect"] == "quant" and cd["selected"] and cd["z_held_out_ends"] is not None and cd["z_held_out_middle"] > 0 and cd["z_held_out_ends"] > 0 for s in j["channels"][5]["attribution"]["steps"] for cd in s["candidates"])' &&
     pass "both folds scored: z combines middle and ends, quant significant on both" || fail "two folds: $(cat "$T/pyerr")"
 json "$T/q.json" 'all(sorted(p["kind"] for p in c["points"]["held_out"] if p["domain"] == "time") == ["curvature", "steps", "trend"] for c in j["channels"]) and all(cd["z_lr"] is not None and abs(cd["z_lr"] - (cd["z_lr_held_out_middle"] + cd["z_lr_held_out_ends"]) / 2 ** 0.5) < 1e-6 * (1 + abs(cd["z_lr"])) for c in j["channels"] for s in c["attribution"]["steps"] for cd in s["candidates"] if cd["simulated"] and cd["z_lr_held_out_ends"] is not None)' &&
