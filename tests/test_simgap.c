@@ -376,6 +376,46 @@ static void cg_check_cmp(const char *tag, const sg_cmp_t *c, int n, int S)
 #undef CGK
 }
 
+/* compare.csv's points, the real's values (real_c may be NULL) and the
+ * twins' values and shifts (both fits), as the two golden tests read them.
+ * Returns n; *S_out gets the twin count. */
+static int cg_case(sg_plist_t *pl, double *real, double *real_c, double *vx, double *tw, double *sh, double *twb,
+                   double *shb, int *S_out)
+{
+    int n, S, j, i;
+    if (cg_load() != 0) {
+        fail_msg("vectors/simgap/compare.csv not found");
+    }
+    n = (int)cg("n", 0);
+    S = (int)cg("S", 0);
+    assert_true(n <= 16 && S <= 6);
+    memset(pl, 0, sizeof *pl);
+    for (j = 0; j < n; j++) {
+        sg_point_t p;
+        memset(&p, 0, sizeof p);
+        p.dom = (int)cg("pt_dom", j);
+        p.kind = (int)cg("pt_kind", j);
+        p.edf = cg("pt_edf", j);
+        p.empty = (int)cg("pt_empty", j);
+        p.nblk = 1;
+        p.x_hi = 1.0;
+        assert_int_equal(sg_plist_add(pl, &p), 0);
+        real[j] = cg("real", j);
+        if (real_c != NULL) {
+            real_c[j] = cg("real_c", j);
+        }
+        vx[j] = cg("vx", j);
+    }
+    for (i = 0; i < S * n; i++) {
+        tw[i] = cg("twin", i);
+        sh[i] = cg("shift", i);
+        twb[i] = cg("twin_b", i);
+        shb[i] = cg("shift_b", i);
+    }
+    *S_out = S;
+    return n;
+}
+
 /* sg_compare, sg_lr_test and sg_score_test against an independent numpy /
  * scipy computation of docs/simgap.md's formulas on 12 points in three
  * domains: PSD points with a chi-square theory variance (trigamma(edf/2))
@@ -399,36 +439,9 @@ static void test_compare_golden(void **state)
     sg_plist_t pl;
     sg_cmp_t c;
     double real[16], real_c[16], vx[16], tw[6 * 16], sh[6 * 16], twb[6 * 16], shb[6 * 16], drop, t, tm, ts, z;
-    int n, S, j, i;
+    int n, S;
     (void)state;
-    if (cg_load() != 0) {
-        fail_msg("vectors/simgap/compare.csv not found");
-    }
-    n = (int)cg("n", 0);
-    S = (int)cg("S", 0);
-    assert_true(n <= 16 && S <= 6);
-    memset(&pl, 0, sizeof pl);
-    for (j = 0; j < n; j++) {
-        sg_point_t p;
-        memset(&p, 0, sizeof p);
-        p.dom = (int)cg("pt_dom", j);
-        p.kind = (int)cg("pt_kind", j);
-        p.edf = cg("pt_edf", j);
-        p.empty = (int)cg("pt_empty", j);
-        p.ch = 0;
-        p.nblk = 1;
-        p.x_hi = 1.0;
-        assert_int_equal(sg_plist_add(&pl, &p), 0);
-        real[j] = cg("real", j);
-        real_c[j] = cg("real_c", j);
-        vx[j] = cg("vx", j);
-    }
-    for (i = 0; i < S * n; i++) {
-        tw[i] = cg("twin", i);
-        sh[i] = cg("shift", i);
-        twb[i] = cg("twin_b", i);
-        shb[i] = cg("shift_b", i);
-    }
+    n = cg_case(&pl, real, real_c, vx, tw, sh, twb, shb, &S);
     assert_int_equal(sg_compare(&pl, real, tw, S, vx, NULL, cg("alpha", 0), &c), 0);
     cg_check_cmp("a", &c, n, S);
     sg_cmp_free(&c);
@@ -466,34 +479,9 @@ static void test_explained_golden(void **state)
 {
     sg_plist_t pl;
     double real[16], vx[16], tw[6 * 16], sh[6 * 16], twb[6 * 16], shb[6 * 16], f, lo, hi, Ga;
-    int n, S, j, i;
+    int S;
     (void)state;
-    if (cg_load() != 0) {
-        fail_msg("vectors/simgap/compare.csv not found");
-    }
-    n = (int)cg("n", 0);
-    S = (int)cg("S", 0);
-    assert_true(n <= 16 && S <= 6);
-    memset(&pl, 0, sizeof pl);
-    for (j = 0; j < n; j++) {
-        sg_point_t p;
-        memset(&p, 0, sizeof p);
-        p.dom = (int)cg("pt_dom", j);
-        p.kind = (int)cg("pt_kind", j);
-        p.edf = cg("pt_edf", j);
-        p.empty = (int)cg("pt_empty", j);
-        p.nblk = 1;
-        p.x_hi = 1.0;
-        assert_int_equal(sg_plist_add(&pl, &p), 0);
-        real[j] = cg("real", j);
-        vx[j] = cg("vx", j);
-    }
-    for (i = 0; i < S * n; i++) {
-        tw[i] = cg("twin", i);
-        sh[i] = cg("shift", i);
-        twb[i] = cg("twin_b", i);
-        shb[i] = cg("shift_b", i);
-    }
+    (void)cg_case(&pl, real, NULL, vx, tw, sh, twb, shb, &S);
     sg_explained(&pl, real, tw, vx, sh, twb, vx, shb, S, 1.0, 1.0, &f, &lo, &hi, 7u);
     FNAV_ASSERT_CLOSE(f, cg("expl_f", 0), 1e-12, 1e-7);
     assert_true(lo <= hi);
