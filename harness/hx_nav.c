@@ -879,6 +879,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     if (traj != NULL) {
         traj->stats = nav.stats;
         traj->rate_hz = (double)nav.stance.rate_hz;
+        traj->max_gap_s = (double)nav.cfg.max_gap_s;
         traj->window = nav.stance.win;
         traj->align = nav.align.result;
         traj->aligned = nav.aligned;
@@ -1040,6 +1041,25 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
             }
         }
     }
+    if (first < t->n && t->rate_hz > 0.0) {
+        /* lost samples in motion (HX_NAV_LONG_GAP_S): an interval with an
+         * end out of the detector's stance, a time jump (integrated as one
+         * period) left out */
+        const double per = 1.0 / t->rate_hz;
+        for (i = first + 1; i < t->n; i++) {
+            const double dt = 1e-9 * (double)(t->f[i].t_ns - t->f[i - 1].t_ns);
+            if (!(dt > 0.0) || (t->max_gap_s > 0.0 && dt > t->max_gap_s && dt > 1.5 * per) ||
+                ((t->f[i].flags & FNAV_FRAME_STANCE) && (t->f[i - 1].flags & FNAV_FRAME_STANCE))) {
+                continue;
+            }
+            s->motion_s += dt;
+            if (dt > 1.5 * per && dt > HX_NAV_LONG_GAP_S) {
+                s->gap_lost_s += dt - per;
+                s->long_gaps++;
+                s->longest_motion_gap_s = dt > s->longest_motion_gap_s ? dt : s->longest_motion_gap_s;
+            }
+        }
+    }
     s->longest_stand_at_s = (double)NAN;
     if (first < t->n) {
         /* the longest stance run with motion before and after it, in the
@@ -1157,6 +1177,11 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
     }
 }
 
+int hx_nav_gappy(const hx_nav_summary_t *s)
+{
+    return s->motion_s > 0.0 && s->gap_lost_s >= HX_NAV_GAP_LOST_FRACTION * s->motion_s;
+}
+
 int hx_nav_little_motion(const hx_nav_summary_t *s)
 {
     return s->duration_s > 10.0 && s->stance_fraction > 0.9 && s->strides < 3;
@@ -1238,6 +1263,13 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                    "detector's %.1f Hz (taken once, from the first intervals): its window and durations are wrong in "
                    "seconds there; split the log or resample it (--rate HZ) (docs/navigation.md, \"Timing\")\n",
                 s->rate_change_hz, s->rate_change_at_s, 100.0 * s->rate_off_fraction, t->rate_hz);
+    }
+    if (hx_nav_gappy(s)) {
+        fprintf(f, "note              %.1f %% of the time in motion is lost in %ld gaps longer than %.0f ms (longest "
+                   "%.1f ms): the strapdown interpolates across each from the readings at its ends, so the motion "
+                   "inside is not measured and position and heading are unreliable (docs/harness.md, \"replay\")\n",
+                100.0 * s->gap_lost_s / s->motion_s, s->long_gaps, 1e3 * HX_NAV_LONG_GAP_S,
+                1e3 * s->longest_motion_gap_s);
     }
     if (s->before_align_s > HX_NAV_LATE_ALIGN_S) {
         fprintf(f, "note              the detector saw %.1f s of motion before the alignment (%.2f s into the log): that "
@@ -1321,6 +1353,17 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
         for (ch = 0; ch < 6 && sat != NULL; ch++) {
             cJSON_AddNumberToObject(sat, k_ch[ch], (double)t->saturated[ch]);
         }
+    }
+    {
+        /* lost samples in motion (HX_NAV_LONG_GAP_S) */
+        cJSON *g = cJSON_CreateObject();
+        cJSON_AddItemToObject(g, "motion_s", num(s->motion_s));
+        cJSON_AddItemToObject(g, "lost_s", num(s->gap_lost_s));
+        cJSON_AddItemToObject(g, "lost_fraction", num(s->motion_s > 0.0 ? s->gap_lost_s / s->motion_s : (double)NAN));
+        cJSON_AddNumberToObject(g, "gaps", (double)s->long_gaps);
+        cJSON_AddItemToObject(g, "longest_s", num(s->longest_motion_gap_s));
+        cJSON_AddBoolToObject(g, "unreliable", hx_nav_gappy(s));
+        cJSON_AddItemToObject(root, "motion_gaps", g);
     }
     if (s->rate_off_fraction > 0.0) {
         cJSON *chg = cJSON_CreateObject();
