@@ -413,7 +413,9 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
     *in_rate = fs;
     if (!(rate_hz < fs * 0.999)) {
         free(keep);
-        snprintf(err, err_size, "--rate %g Hz is not below the input rate %.1f Hz (only downsampling)", rate_hz, fs);
+        snprintf(err, err_size, "--rate %g Hz is not below the input rate %.1f Hz (1 / its median interval; only "
+                                "downsampling)",
+                 rate_hz, fs);
         return -1;
     }
     /* Blackman-windowed sinc low-pass at 0.45 x the new rate, about 41
@@ -550,7 +552,7 @@ typedef struct {
     long n_read;
     int sink_failed;     /* the CSV sink refused a frame */
     int traj_oom;        /* no memory to keep a frame */
-    double gyro_max_rps; /* largest |w| read: the units check */
+    double gyro_max_rps; /* largest |w| on one axis: the units check (a range is per axis) */
     double f_norm_sum;   /* sum of |f| read: the units check when no rest was found */
     hx_axes_t *axes;     /* the axes check (with traj), or NULL */
     int64_t t_last_ns;   /* the last sample's stamp (with have_t_last) */
@@ -581,10 +583,14 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
         }
     }
     if (st == FNAV_OK) {
-        double w2 = (double)s->gyro_rps[0] * (double)s->gyro_rps[0] + (double)s->gyro_rps[1] * (double)s->gyro_rps[1] +
-                    (double)s->gyro_rps[2] * (double)s->gyro_rps[2];
-        if (w2 > c->gyro_max_rps * c->gyro_max_rps) {
-            c->gyro_max_rps = sqrt(w2);
+        /* the largest single axis, as info's peak line and its units check:
+         * a gyro's range is per axis, and replay took the vector's magnitude
+         * (454.7 against info's 438.8 for one log in deg/s; the
+         * generalisation review, 2026-11-29) */
+        int k;
+        for (k = 0; k < 3; k++) {
+            const double w = fabs((double)s->gyro_rps[k]);
+            c->gyro_max_rps = w > c->gyro_max_rps ? w : c->gyro_max_rps;
         }
         c->f_norm_sum += sqrt((double)s->accel_mps2[0] * (double)s->accel_mps2[0] +
                               (double)s->accel_mps2[1] * (double)s->accel_mps2[1] +
@@ -683,8 +689,8 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
                      fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL ? " but in g (multiply by 9.80665)" : "");
     }
     if (gyro_max_rps > HX_GYRO_MAX_RPS) {
-        HX_UNITS_ADD("the gyroscope reaches %.4g rad/s, beyond the range of any MEMS gyro (about %.0f rad/s = 4000 "
-                     "deg/s): the log is not in rad/s%s",
+        HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis (its largest |w| on a single axis), beyond the "
+                     "range of any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): the log is not in rad/s%s",
                      gyro_max_rps, HX_GYRO_MAX_RPS,
                      gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS ? " but probably in deg/s (multiply by pi/180)"
                                                                     : "");
@@ -879,6 +885,22 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     if (traj != NULL) {
         traj->stats = nav.stats;
         traj->rate_hz = (double)nav.stance.rate_hz;
+        /* three rates can be printed for one log (the generalisation
+         * review: 199.44 Hz here, 200.0 Hz by info, 200.1 Hz by --rate's
+         * error, for a vicon trial): the line says which this is */
+        if (rate_hz > 0.0) {
+            snprintf(traj->rate_src, sizeof traj->rate_src, "resampled");
+        } else if (cfg->stance.rate_hz > FNAV_R(0.0)) {
+            snprintf(traj->rate_src, sizeof traj->rate_src, "configured");
+        } else if (r != NULL && hx_reader_meta(r)->rate_coarse) {
+            snprintf(traj->rate_src, sizeof traj->rate_src,
+                     "from the time stamps of the first 4,096 samples, too coarse for the detector's estimate");
+        } else {
+            snprintf(traj->rate_src, sizeof traj->rate_src,
+                     "the stance detector's estimate: 1 / the median of its first %d intervals",
+                     FNAV_STANCE_MAX_WINDOW - 1 < FNAV_STANCE_RATE_PROBE ? FNAV_STANCE_MAX_WINDOW - 1
+                                                                         : FNAV_STANCE_RATE_PROBE); /* fnav_stance.c's PROBE */
+        }
         traj->max_gap_s = (double)nav.cfg.max_gap_s;
         traj->window = nav.stance.win;
         traj->align = nav.align.result;
@@ -1192,10 +1214,11 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     const fnav_nav_stats_t *st = &t->stats;
     fprintf(f, "log               %s\n", path);
     if (t->in_rate_hz > 0.0) {
-        fprintf(f, "resampled         %.1f Hz -> %.1f Hz (%ld duplicate time stamps dropped)\n", t->in_rate_hz,
+        fprintf(f, "resampled         %.1f Hz (1 / the median interval) -> %.1f Hz (%ld duplicate time stamps dropped)\n", t->in_rate_hz,
                 t->rate_hz, t->resample_dropped_dups);
     }
-    fprintf(f, "rate              %.1f Hz, detector window %d samples\n", t->rate_hz, t->window);
+    fprintf(f, "rate              %.1f Hz%s%s%s, detector window %d samples\n", t->rate_hz, t->rate_src[0] ? " (" : "",
+            t->rate_src, t->rate_src[0] ? ")" : "", t->window);
     fprintf(f, "duration          %.2f s, %u samples, %u frames\n", s->duration_s, st->samples, st->frames);
     if (!t->aligned) {
         fprintf(f, "alignment         NOT ALIGNED (no still period)\n");

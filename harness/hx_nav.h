@@ -93,6 +93,7 @@ typedef struct {
     long resample_dropped_dups;  /**< duplicates dropped by the resampler */
     long cut_lines;              /**< the log's incomplete last line ignored (hx_read_stats_t) */
     int stamps_coarse;           /**< the stamps are so coarse that an interval of one period can read over 1.5 periods (a gap) */
+    char rate_src[128];          /**< where rate_hz came from, for the summary's rate line ("": not said) */
     double max_gap_s;            /**< the navigator's time-jump limit (fnav_nav_config_t; 0: not known, no interval is a jump) */
     fnav_align_result_t align;   /**< alignment result */
     int aligned;
