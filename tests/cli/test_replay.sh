@@ -452,6 +452,19 @@ expect_err "the time stamps never advance" "a constant time column named"
 printf 't,ax,ay,az,gx,gy,gz\n0.0,0,0,-9.8,0,0,0\n' > "$T/tiny.csv"
 expect_exit 1 "too short to align" "$H" replay "$T/tiny.csv"
 expect_err "no still period" "alignment failure explained"
+# the message says what the alignment requires and what was found: a still
+# log of 0.15 s fails, one of 0.30 s aligns (on align_short_s), so "no still
+# period of 0.50 s" (align_min_s), which it said, was untrue (the
+# generalisation review, 2026-11-29)
+for n in 30 61; do
+    awk -v n=$n 'BEGIN { srand(3); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < n; i++)
+        printf "%.3f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 200, 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5),
+            -9.8 + 0.01 * (rand() - 0.5), 0.001 * (rand() - 0.5), 0.001 * (rand() - 0.5), 0.001 * (rand() - 0.5) }' > "$T/still$n.csv"
+done
+expect_exit 1 "0.15 s still: too short to align" "$H" replay "$T/still30.csv" --quiet
+expect_err "no still period of 0.20 s or more found for the initial alignment (align_short_s; it takes the first of 0.50 s, align_min_s, else the quietest of 0.20 s or more before the foot moves): the stance detector's longest still run lasted 0.15 s (frames before" "the alignment failure says what is required and what was found"
+expect_exit 0 "0.30 s still aligns" "$H" replay "$T/still61.csv"
+expect_out_re "^alignment +0\.2[0-9] s still" "a still period under align_min_s but over align_short_s aligns"
 # with --plot: two empty panels that say so, exit 1 as without it (gnuplot
 # refused the empty height panel: exit 3 and a half-drawn PNG; a review)
 if command -v gnuplot >/dev/null 2>&1; then
