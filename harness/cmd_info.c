@@ -309,7 +309,14 @@ int hx_cmd_info(int argc, char **argv)
     }
     printf("samples     %zu%s\n", log.n, log.meta.has_temp ? " (with temperature)" : "");
     if (log.meta.rate_nominal || in.rate_hz > 0.0) {
-        printf("rate        %.3f Hz (%s)\n", in.rate_hz, log.meta.rate_nominal ? "nominal" : "from the time stamps");
+        /* which stamps, and how: replay's detector and --rate take other
+         * estimates (199.44 and 200.1 Hz for a vicon trial that reads 200.000
+         * here; the generalisation review, 2026-11-29) */
+        printf("rate        %.3f Hz (%s)\n", in.rate_hz,
+               log.meta.rate_nominal ? "nominal"
+               : log.meta.rate_hz <= 0.0 ? "from the time stamps: 1 / the median interval"
+               : log.meta.rate_coarse ? "from the time stamps of the first 4,096 samples: their mean interval without gaps"
+                                      : "from the time stamps of the first 4,096 samples: 1 / their median interval");
     } else {
         /* no interval that advances, no rate: "0.000 Hz (from the time
          * stamps)" until 2026-11-29 (the cli review) */

@@ -176,6 +176,7 @@ static void nav_finish(live_t *L)
     }
     L->traj.stats = L->nav->stats;
     L->traj.rate_hz = (double)L->nav->stance.rate_hz;
+    L->traj.max_gap_s = (double)L->nav->cfg.max_gap_s;
     L->traj.window = L->nav->stance.win;
     L->traj.align = L->nav->align.result;
     L->traj.aligned = L->nav->aligned;

@@ -413,7 +413,9 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
     *in_rate = fs;
     if (!(rate_hz < fs * 0.999)) {
         free(keep);
-        snprintf(err, err_size, "--rate %g Hz is not below the input rate %.1f Hz (only downsampling)", rate_hz, fs);
+        snprintf(err, err_size, "--rate %g Hz is not below the input rate %.1f Hz (1 / its median interval; only "
+                                "downsampling)",
+                 rate_hz, fs);
         return -1;
     }
     /* Blackman-windowed sinc low-pass at 0.45 x the new rate, about 41
@@ -550,7 +552,7 @@ typedef struct {
     long n_read;
     int sink_failed;     /* the CSV sink refused a frame */
     int traj_oom;        /* no memory to keep a frame */
-    double gyro_max_rps; /* largest |w| read: the units check */
+    double gyro_max_rps; /* largest |w| on one axis: the units check (a range is per axis) */
     double f_norm_sum;   /* sum of |f| read: the units check when no rest was found */
     hx_axes_t *axes;     /* the axes check (with traj), or NULL */
     int64_t t_last_ns;   /* the last sample's stamp (with have_t_last) */
@@ -581,10 +583,14 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
         }
     }
     if (st == FNAV_OK) {
-        double w2 = (double)s->gyro_rps[0] * (double)s->gyro_rps[0] + (double)s->gyro_rps[1] * (double)s->gyro_rps[1] +
-                    (double)s->gyro_rps[2] * (double)s->gyro_rps[2];
-        if (w2 > c->gyro_max_rps * c->gyro_max_rps) {
-            c->gyro_max_rps = sqrt(w2);
+        /* the largest single axis, as info's peak line and its units check:
+         * a gyro's range is per axis, and replay took the vector's magnitude
+         * (454.7 against info's 438.8 for one log in deg/s; the
+         * generalisation review, 2026-11-29) */
+        int k;
+        for (k = 0; k < 3; k++) {
+            const double w = fabs((double)s->gyro_rps[k]);
+            c->gyro_max_rps = w > c->gyro_max_rps ? w : c->gyro_max_rps;
         }
         c->f_norm_sum += sqrt((double)s->accel_mps2[0] * (double)s->accel_mps2[0] +
                               (double)s->accel_mps2[1] * (double)s->accel_mps2[1] +
@@ -683,8 +689,8 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
                      fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL ? " but in g (multiply by 9.80665)" : "");
     }
     if (gyro_max_rps > HX_GYRO_MAX_RPS) {
-        HX_UNITS_ADD("the gyroscope reaches %.4g rad/s, beyond the range of any MEMS gyro (about %.0f rad/s = 4000 "
-                     "deg/s): the log is not in rad/s%s",
+        HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis (its largest |w| on a single axis), beyond the "
+                     "range of any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): the log is not in rad/s%s",
                      gyro_max_rps, HX_GYRO_MAX_RPS,
                      gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS ? " but probably in deg/s (multiply by pi/180)"
                                                                     : "");
@@ -879,6 +885,23 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     if (traj != NULL) {
         traj->stats = nav.stats;
         traj->rate_hz = (double)nav.stance.rate_hz;
+        /* three rates can be printed for one log (the generalisation
+         * review: 199.44 Hz here, 200.0 Hz by info, 200.1 Hz by --rate's
+         * error, for a vicon trial): the line says which this is */
+        if (rate_hz > 0.0) {
+            snprintf(traj->rate_src, sizeof traj->rate_src, "resampled");
+        } else if (cfg->stance.rate_hz > FNAV_R(0.0)) {
+            snprintf(traj->rate_src, sizeof traj->rate_src, "configured");
+        } else if (r != NULL && hx_reader_meta(r)->rate_coarse) {
+            snprintf(traj->rate_src, sizeof traj->rate_src,
+                     "from the time stamps of the first 4,096 samples, too coarse for the detector's estimate");
+        } else {
+            snprintf(traj->rate_src, sizeof traj->rate_src,
+                     "the stance detector's estimate: 1 / the median of its first %d intervals",
+                     FNAV_STANCE_MAX_WINDOW - 1 < FNAV_STANCE_RATE_PROBE ? FNAV_STANCE_MAX_WINDOW - 1
+                                                                         : FNAV_STANCE_RATE_PROBE); /* fnav_stance.c's PROBE */
+        }
+        traj->max_gap_s = (double)nav.cfg.max_gap_s;
         traj->window = nav.stance.win;
         traj->align = nav.align.result;
         traj->aligned = nav.aligned;
@@ -959,8 +982,44 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                                     "column filled?",
                      path, (unsigned long)nav.stats.samples);
         } else {
-            snprintf(err, err_size, "%s: no still period of %.2f s found for the initial alignment", path,
-                     (double)cfg->align.min_still_s);
+            /* what the alignment requires: the first still period of
+             * align_min_s, or, when the foot moves before one, the quietest
+             * of align_short_s or more (fnav_align.c); it said "no still
+             * period of 0.50 s" (align_min_s), although 0.3 s still aligns
+             * (the generalisation review, 2026-11-29). What was found: the
+             * detector's longest still run (the alignment's periods lie in
+             * such runs) */
+            double longest = 0.0;
+            if (traj != NULL) {
+                size_t i, run0 = 0;
+                int open = 0;
+                for (i = 0; i < traj->n; i++) {
+                    if (traj->f[i].flags & FNAV_FRAME_STANCE) {
+                        const double d = 1e-9 * (double)(traj->f[i].t_ns - traj->f[open ? run0 : i].t_ns);
+                        run0 = open ? run0 : i;
+                        open = 1;
+                        longest = d > longest ? d : longest;
+                    } else {
+                        open = 0;
+                    }
+                }
+            }
+            snprintf(err, err_size,
+                     "%s: no still period of %.2f s or more found for the initial alignment (align_short_s; it takes "
+                     "the first of %.2f s, align_min_s, else the quietest of %.2f s or more before the foot moves)",
+                     path, (double)cfg->align.short_still_s, (double)cfg->align.min_still_s,
+                     (double)cfg->align.short_still_s);
+            if (traj != NULL) {
+                /* a run that long can still give the alignment less: its
+                 * noise-floor test or a time jump cuts it, and a log that
+                 * ends still is aligned on what reached the alignment before
+                 * the detector's held-back samples (fnav_nav_finish) */
+                const size_t len = strlen(err);
+                snprintf(err + len, err_size - len, ": the stance detector's longest still run lasted %.2f s%s", longest,
+                         longest >= (double)cfg->align.short_still_s
+                             ? ", cut shorter for the alignment (its noise-floor test, a time jump, or the log's end)"
+                             : "");
+            }
         }
         rc = 1;
     }
@@ -1037,6 +1096,25 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
         for (i = 0; i < first; i++) {
             if (!(t->f[i].flags & FNAV_FRAME_STANCE)) {
                 s->before_align_s += 1e-9 * (double)(t->f[i + 1].t_ns - t->f[i].t_ns);
+            }
+        }
+    }
+    if (first < t->n && t->rate_hz > 0.0) {
+        /* lost samples in motion (HX_NAV_LONG_GAP_S): an interval with an
+         * end out of the detector's stance, a time jump (integrated as one
+         * period) left out */
+        const double per = 1.0 / t->rate_hz;
+        for (i = first + 1; i < t->n; i++) {
+            const double dt = 1e-9 * (double)(t->f[i].t_ns - t->f[i - 1].t_ns);
+            if (!(dt > 0.0) || (t->max_gap_s > 0.0 && dt > t->max_gap_s && dt > 1.5 * per) ||
+                ((t->f[i].flags & FNAV_FRAME_STANCE) && (t->f[i - 1].flags & FNAV_FRAME_STANCE))) {
+                continue;
+            }
+            s->motion_s += dt;
+            if (dt > 1.5 * per && dt > HX_NAV_LONG_GAP_S) {
+                s->gap_lost_s += dt - per;
+                s->long_gaps++;
+                s->longest_motion_gap_s = dt > s->longest_motion_gap_s ? dt : s->longest_motion_gap_s;
             }
         }
     }
@@ -1157,6 +1235,11 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
     }
 }
 
+int hx_nav_gappy(const hx_nav_summary_t *s)
+{
+    return s->motion_s > 0.0 && s->gap_lost_s >= HX_NAV_GAP_LOST_FRACTION * s->motion_s;
+}
+
 int hx_nav_little_motion(const hx_nav_summary_t *s)
 {
     return s->duration_s > 10.0 && s->stance_fraction > 0.9 && s->strides < 3;
@@ -1167,13 +1250,14 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     const fnav_nav_stats_t *st = &t->stats;
     fprintf(f, "log               %s\n", path);
     if (t->in_rate_hz > 0.0) {
-        fprintf(f, "resampled         %.1f Hz -> %.1f Hz (%ld duplicate time stamps dropped)\n", t->in_rate_hz,
+        fprintf(f, "resampled         %.1f Hz (1 / the median interval) -> %.1f Hz (%ld duplicate time stamps dropped)\n", t->in_rate_hz,
                 t->rate_hz, t->resample_dropped_dups);
     }
-    fprintf(f, "rate              %.1f Hz, detector window %d samples\n", t->rate_hz, t->window);
+    fprintf(f, "rate              %.1f Hz%s%s%s, detector window %d samples\n", t->rate_hz, t->rate_src[0] ? " (" : "",
+            t->rate_src, t->rate_src[0] ? ")" : "", t->window);
     fprintf(f, "duration          %.2f s, %u samples, %u frames\n", s->duration_s, st->samples, st->frames);
     if (!t->aligned) {
-        fprintf(f, "alignment         NOT ALIGNED (no still period)\n");
+        fprintf(f, "alignment         NOT ALIGNED (no still period long enough: the error above says what was found)\n");
         return;
     }
     fprintf(f, "alignment         %.2f s still: roll %.2f deg, pitch %.2f deg, |f| %.4f m/s^2",
@@ -1238,6 +1322,13 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                    "detector's %.1f Hz (taken once, from the first intervals): its window and durations are wrong in "
                    "seconds there; split the log or resample it (--rate HZ) (docs/navigation.md, \"Timing\")\n",
                 s->rate_change_hz, s->rate_change_at_s, 100.0 * s->rate_off_fraction, t->rate_hz);
+    }
+    if (hx_nav_gappy(s)) {
+        fprintf(f, "note              %.1f %% of the time in motion is lost in %ld gaps longer than %.0f ms (longest "
+                   "%.1f ms): the strapdown interpolates across each from the readings at its ends, so the motion "
+                   "inside is not measured and position and heading are unreliable (docs/harness.md, \"replay\")\n",
+                100.0 * s->gap_lost_s / s->motion_s, s->long_gaps, 1e3 * HX_NAV_LONG_GAP_S,
+                1e3 * s->longest_motion_gap_s);
     }
     if (s->before_align_s > HX_NAV_LATE_ALIGN_S) {
         fprintf(f, "note              the detector saw %.1f s of motion before the alignment (%.2f s into the log): that "
@@ -1321,6 +1412,17 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
         for (ch = 0; ch < 6 && sat != NULL; ch++) {
             cJSON_AddNumberToObject(sat, k_ch[ch], (double)t->saturated[ch]);
         }
+    }
+    {
+        /* lost samples in motion (HX_NAV_LONG_GAP_S) */
+        cJSON *g = cJSON_CreateObject();
+        cJSON_AddItemToObject(g, "motion_s", num(s->motion_s));
+        cJSON_AddItemToObject(g, "lost_s", num(s->gap_lost_s));
+        cJSON_AddItemToObject(g, "lost_fraction", num(s->motion_s > 0.0 ? s->gap_lost_s / s->motion_s : (double)NAN));
+        cJSON_AddNumberToObject(g, "gaps", (double)s->long_gaps);
+        cJSON_AddItemToObject(g, "longest_s", num(s->longest_motion_gap_s));
+        cJSON_AddBoolToObject(g, "unreliable", hx_nav_gappy(s));
+        cJSON_AddItemToObject(root, "motion_gaps", g);
     }
     if (s->rate_off_fraction > 0.0) {
         cJSON *chg = cJSON_CreateObject();

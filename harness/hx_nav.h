@@ -93,6 +93,8 @@ typedef struct {
     long resample_dropped_dups;  /**< duplicates dropped by the resampler */
     long cut_lines;              /**< the log's incomplete last line ignored (hx_read_stats_t) */
     int stamps_coarse;           /**< the stamps are so coarse that an interval of one period can read over 1.5 periods (a gap) */
+    char rate_src[128];          /**< where rate_hz came from, for the summary's rate line ("": not said) */
+    double max_gap_s;            /**< the navigator's time-jump limit (fnav_nav_config_t; 0: not known, no interval is a jump) */
     fnav_align_result_t align;   /**< alignment result */
     int aligned;
     hx_axes_result_t axes;       /**< the axes check (hx_axes.h) */
@@ -185,7 +187,30 @@ typedef struct {
     double rate_change_at_s;  /**< first block of intervals whose rate is off the detector's (hx_rate_changes), s after the first frame (NaN: none) */
     double rate_change_hz;    /**< that block's rate, Hz (NaN: none) */
     double rate_off_fraction; /**< share of the log's duration in such blocks (0: none) */
+    double motion_s;          /**< navigated time in motion: intervals after the alignment with an end out of the detector's stance, time jumps left out, s */
+    double gap_lost_s;        /**< the time lost in those intervals that are long gaps (HX_NAV_LONG_GAP_S): each one's excess over the detector's period, s */
+    long long_gaps;           /**< their number */
+    double longest_motion_gap_s; /**< the longest of them, s (0: none) */
 } hx_nav_summary_t;
+
+/** Lost samples in motion: the strapdown integrates a gap by interpolating
+ *  between the readings at its ends, so the motion inside is not measured.
+ *  A gap longer than HX_NAV_LONG_GAP_S during motion is a "long gap"; when
+ *  the time they lose reaches HX_NAV_GAP_LOST_FRACTION of the motion time,
+ *  the summary notes that position and heading are unreliable. Found on
+ *  openshoe_gx2 walk 2 with samples deleted (the generalisation review,
+ *  2026-11-29; five phases of each pattern, closure of the intact walk
+ *  0.53 m): holes of 12 ms (3 samples) losing 4 % of the time left the
+ *  median closure at 0.53 m, holes of 24 ms losing 0.6 % at 0.59 m, but
+ *  holes of 50 ms losing 1.2 % moved it to 0.88 m (up to 1.36) and every
+ *  300 ms (17 %) to 2.4 m (up to 3.7). The xio walks lose 1.1 and 1.5 %
+ *  in gaps of at most 17.6 ms: no note (docs/harness.md, "replay"). */
+#define HX_NAV_LONG_GAP_S 0.020
+#define HX_NAV_GAP_LOST_FRACTION 0.01
+
+/** True when the long gaps in motion lose HX_NAV_GAP_LOST_FRACTION of the
+ *  motion time or more (the summary's note, the JSON's `motion_gaps.unreliable`). */
+int hx_nav_gappy(const hx_nav_summary_t *s);
 
 /** A stand between strides longer than this is noted in the summary when
  *  the ZARU is off: with ZUPTs only the heading drifts with the gyro bias

@@ -140,6 +140,14 @@ expect_exit 2 "replay --out onto its own log" "$H" replay "$T/self.bin" --out "$
 if cmp -s vectors/walk.bin "$T/self.bin"; then pass "the log is left intact"; else fail "replay overwrote its log"; fi
 expect_exit 0 "replay --rate 100" "$H" replay vectors/walk.bin --rate 100 --json "$T/r.json"
 expect_out "resampled" "summary reports the resampling"
+# each rate line says which rate it is: a vicon trial read 199.44 Hz here
+# (the detector's first 32 intervals), 200.0 Hz by info (the first 4,096
+# samples) and 200.1 Hz by --rate (the whole log's median), unexplained (the
+# generalisation review, 2026-11-29)
+expect_out_re "^resampled +398\.[0-9] Hz \(1 / the median interval\) -> 100\.0 Hz" "the input rate of --rate is named the median's"
+expect_out_re "^rate +100\.0 Hz \(resampled\), detector window" "the resampled rate is named"
+expect_exit 0 "replay walk.bin, rate line" "$H" replay vectors/walk.bin
+expect_out_re "^rate +398\.[0-9] Hz \(the stance detector's estimate: 1 / the median of its first 32 intervals\), detector window" "the detector's rate is named as its estimate"
 # a time jump (100 s) stays one under --rate: the resampler's grid starts
 # again after it instead of making up 10,000 samples across it (a review)
 awk -F, 'NR == 1 { print; next } NR > 8000 { $1 = $1 + 100 } { print }' OFS=, "$T/walk_full.csv" > "$T/walk_jump.csv"
@@ -148,6 +156,7 @@ if /usr/bin/python3 -c "import json,sys; h=json.load(open(sys.argv[1]))['health'
     pass "the resampled log keeps its time jump"; else fail "time jump lost under --rate"; fi
 expect_exit 1 "--rate above the input rate" "$H" replay vectors/walk.bin --rate 2000
 expect_err "only downsampling" "rate error explains"
+expect_err "input rate 398.[0-9] Hz (1 / its median interval; only downsampling)" "the input rate in the error is named the median's"
 expect_exit 0 "bias model off, threshold detector" "$H" replay vectors/walk.bin --bias-model off --detector threshold --quiet
 expect_exit 0 "built-in profile mtx" "$H" replay vectors/walk.bin --profile mtx --quiet
 cat > "$T/p.profile" <<'PROF'
@@ -250,6 +259,46 @@ json "$T/unclip.json" 'all(v == 0 for v in j["saturated_samples"].values())' &&
     pass "no clipped samples in the walk as recorded" || fail "unclipped JSON: $(cat "$T/pyerr")"
 expect_exit 0 "a clipped walk resampled" "$H" replay "$T/clipped.csv" --rate 200
 expect_out "^note .*the input is clipped" "the clipping of a resampled log is named (judged before the low-pass)"
+
+# --- lost samples in motion: the bundled walk with a 50 ms hole every 300 ms
+# (rows deleted) closes at 1.31 m against 0.36 m and the summary said nothing
+# but "289 gaps" (openshoe_gx2 walk 2 so: 0.53 m -> 2.56 m; the generalisation
+# review, 2026-11-29). The note (HX_NAV_LONG_GAP_S, HX_NAV_GAP_LOST_FRACTION)
+# and motion_gaps in the JSON, its share checked against a recount in python
+# from the trajectory CSV; the walk as recorded (xio short: 1.5 % of its time
+# lost in gaps of at most 12.6 ms) and 12 ms holes at the same spacing have
+# no note
+awk -F, 'NR == 1 || ($1 + 0.1) % 0.3 >= 0.05' "$T/unclipped.csv" > "$T/gappy.csv"
+expect_exit 0 "a walk with 50 ms holes" "$H" replay "$T/gappy.csv" --json "$T/gappy.json" --out "$T/gappy_t.csv"
+expect_out_re "^note +1[0-9]\.[0-9] % of the time in motion is lost in [0-9]+ gaps longer than 20 ms \(longest 5[0-9]\.[0-9] ms\): .*position and heading are unreliable" "lost samples in motion are noted"
+json "$T/gappy.json" 'j["motion_gaps"]["unreliable"] is True and 0.15 < j["motion_gaps"]["lost_fraction"] < 0.2' &&
+    pass "motion_gaps in the JSON" || fail "motion_gaps: $(cat "$T/pyerr")"
+# the recount: intervals after the first aligned frame (aligned_at_s) with
+# an end out of stance; lost = the excess over one period of each above 1.5
+# periods and 20 ms
+if /usr/bin/python3 - "$T/gappy_t.csv" "$T/gappy.json" 2>"$T/pyerr" <<'PYEOF'
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+j = json.load(open(sys.argv[2]))
+per = 1.0 / j["rate_hz"]
+first = next(i for i, r in enumerate(rows) if float(r["t"]) >= j["aligned_at_s"] - 1e-6)
+motion = lost = 0.0
+for a, b in zip(rows[first:], rows[first + 1:]):
+    dt = float(b["t"]) - float(a["t"])
+    if dt <= 0 or (a["stance"] == "1" and b["stance"] == "1"):
+        continue
+    motion += dt
+    if dt > 1.5 * per and dt > 0.020:
+        lost += dt - per
+g = j["motion_gaps"]
+sys.exit(0 if abs(g["motion_s"] - motion) < 0.05 and abs(g["lost_s"] - lost) < 0.01 else 1)
+PYEOF
+then pass "motion_gaps agree with a recount"; else fail "motion_gaps recount: $(cat "$T/pyerr")"; fi
+awk -F, 'NR == 1 || ($1 + 0.1) % 0.3 >= 0.012' "$T/unclipped.csv" > "$T/gappy12.csv"
+expect_exit 0 "a walk with 12 ms holes" "$H" replay "$T/gappy12.csv"
+if grep -q "of the time in motion is lost" "$T/out"; then fail "12 ms holes noted as unreliable"; else pass "no note for 12 ms holes"; fi
+json "$T/unclip.json" 'j["motion_gaps"]["unreliable"] is False and j["motion_gaps"]["gaps"] == 0' &&
+    pass "the walk as recorded: no long gap in motion" || fail "walk motion_gaps: $(cat "$T/pyerr")"
 
 # --- the axes check (docs/harness.md, "Axes check"): a gyro axis flipped or
 # two swapped against the accelerometer is named with its fix, a warning with
@@ -403,6 +452,19 @@ expect_err "the time stamps never advance" "a constant time column named"
 printf 't,ax,ay,az,gx,gy,gz\n0.0,0,0,-9.8,0,0,0\n' > "$T/tiny.csv"
 expect_exit 1 "too short to align" "$H" replay "$T/tiny.csv"
 expect_err "no still period" "alignment failure explained"
+# the message says what the alignment requires and what was found: a still
+# log of 0.15 s fails, one of 0.30 s aligns (on align_short_s), so "no still
+# period of 0.50 s" (align_min_s), which it said, was untrue (the
+# generalisation review, 2026-11-29)
+for n in 30 61; do
+    awk -v n=$n 'BEGIN { srand(3); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < n; i++)
+        printf "%.3f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 200, 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5),
+            -9.8 + 0.01 * (rand() - 0.5), 0.001 * (rand() - 0.5), 0.001 * (rand() - 0.5), 0.001 * (rand() - 0.5) }' > "$T/still$n.csv"
+done
+expect_exit 1 "0.15 s still: too short to align" "$H" replay "$T/still30.csv" --quiet
+expect_err "no still period of 0.20 s or more found for the initial alignment (align_short_s; it takes the first of 0.50 s, align_min_s, else the quietest of 0.20 s or more before the foot moves): the stance detector's longest still run lasted 0.15 s (frames before" "the alignment failure says what is required and what was found"
+expect_exit 0 "0.30 s still aligns" "$H" replay "$T/still61.csv"
+expect_out_re "^alignment +0\.2[0-9] s still" "a still period under align_min_s but over align_short_s aligns"
 # with --plot: two empty panels that say so, exit 1 as without it (gnuplot
 # refused the empty height panel: exit 3 and a half-drawn PNG; a review)
 if command -v gnuplot >/dev/null 2>&1; then
@@ -433,6 +495,16 @@ expect_exit 1 "accelerometer in g and gyroscope in deg/s" "$H" replay "$T/in_gde
 expect_err "in g (multiply by 9.80665); also the gyroscope .*probably in deg/s" "both unit mistakes named"
 expect_exit 0 "info on a log in deg/s" "$H" info "$T/in_deg.csv"
 expect_out "units       NOT SI: .*probably in deg/s" "info names the units too"
+# one figure for one log: replay said 454.7 rad/s (the vector's magnitude),
+# info 438.8 (the largest axis; the generalisation review, 2026-11-29). Both
+# take the largest single axis (a range is per axis) and say so; awk's
+# max over the gyro columns is the reference
+w_ref=$(awk -F, 'NR > 1 { for (i = 5; i <= 7; i++) { v = $i < 0 ? -$i : $i; if (v > m) m = v } } END { printf "%.4g", m }' "$T/in_deg.csv")
+"$H" replay "$T/in_deg.csv" --quiet 2> "$T/deg_replay.err"
+if grep -q "the gyroscope reaches $w_ref rad/s on one axis (its largest |w| on a single axis)" "$T/deg_replay.err" &&
+    grep -q "the gyroscope reaches $w_ref rad/s on one axis" "$T/out"; then
+    pass "replay and info give the same gyro peak ($w_ref rad/s, one axis)"; else
+    fail "gyro peak: replay '$(cat "$T/deg_replay.err")', info '$(grep units "$T/out")', reference $w_ref"; fi
 expect_exit 0 "info on a log in SI units" "$H" info vectors/nav/golden/gx2_walk2.csv
 if grep -q "NOT SI" "$T/out"; then fail "an SI log flagged by info"; else pass "an SI log is not flagged by info"; fi
 awk -F, 'NR == 1 { print; next } { printf "%.3f,%s,%s,%s,%s,%s,%s\n", $1 * 1000, $2, $3, $4, $5, $6, $7 }' \
