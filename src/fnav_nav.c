@@ -482,12 +482,19 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
     dt_used = dt;
 
     if (!nav->aligned) {
-        if (fnav_align_push(&nav->align, s, o->stance, o->stat) != FNAV_OK) {
+        /* after the input's end (fnav_nav_finish), each sample the detector
+         * held back goes to the alignment, which then completes as soon as
+         * its still period qualifies (fnav_align_finish): until 2026-11-29
+         * (a review) only fnav_nav_finish tried, before these samples, and
+         * a log whose still period reached align_short_s with them did not
+         * align (test_nav test_align_at_end) */
+        if (fnav_align_push(&nav->align, s, o->stance, o->stat) != FNAV_OK &&
+            !(nav->stance.finished && fnav_align_finish(&nav->align) == FNAV_OK)) {
             fill_frame(nav, o, flags, fr);
             return;
         }
         start_filter(nav);
-        /* aligned on the still samples before this one: if the foot moves at
+        /* aligned on the still samples up to this one: if the foot moves at
          * this sample its interval is navigated, otherwise navigation starts
          * with the next interval */
         if (o->stance) {
@@ -559,8 +566,9 @@ void fnav_nav_finish(fnav_nav_t *nav)
 {
     FNAV_ASSERT(nav != NULL);
     fnav_stance_finish(&nav->stance);
-    /* the input ended while the foot was still: align on that period, so
-     * that the frames still held back are navigated */
+    /* the input ended while the foot was still: align on that period if it
+     * qualifies, so that the frames still held back are navigated; if not,
+     * those frames' samples may still complete it (process) */
     if (!nav->aligned && fnav_align_finish(&nav->align) == FNAV_OK) {
         start_filter(nav);
     }

@@ -848,6 +848,108 @@ static void test_align_time_jump(void **state)
  * counted, the next is accepted, and the interval back to it is a time jump
  * (integrated as one nominal interval), as the glitch's own was. A single
  * sample behind is still rejected (test_stream_contract). */
+/* A log whose only still period is at its very end: 1 s of swing, then a
+ * still tail of n samples at 200 Hz. Run to FNAV_END; *pre is the length of
+ * the trailing still run (the detector's stance frames) popped before
+ * fnav_nav_finish, *run its whole length, *first_aligned its position (0
+ * based) of the first aligned frame (-1: none), *zupts the aligned frames
+ * with a ZUPT; returns the last frame. */
+static fnav_nav_frame_t end_still_run(fnav_nav_t *nav, long n, long *pre, long *run, long *first_aligned,
+                                      long *zupts)
+{
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    long k;
+    int finished = 0;
+    memset(&fr, 0, sizeof fr);
+    c.stance.rate_hz = FNAV_R(200.0);
+    assert_int_equal(fnav_nav_init(nav, &c), FNAV_OK);
+    *pre = *run = *zupts = 0;
+    *first_aligned = -1;
+    for (k = 0; k <= 200 + n; k++) {
+        fnav_status_t st;
+        if (k < 200 + n) {
+            fnav_sample_t s = still(k);
+            if (k < 200) {
+                swing(&s);
+            }
+            assert_int_equal(fnav_nav_push(nav, &s), FNAV_OK);
+        } else {
+            fnav_nav_finish(nav);
+            finished = 1;
+        }
+        while ((st = fnav_nav_pop(nav, &fr)) == FNAV_OK) {
+            *run = (fr.flags & FNAV_FRAME_STANCE) ? *run + 1 : 0;
+            *pre = finished ? *pre : *run;
+            if ((fr.flags & FNAV_FRAME_ALIGNED) && *first_aligned < 0) {
+                *first_aligned = *run - 1;
+            }
+            *zupts += (fr.flags & FNAV_FRAME_ZUPT) != 0u;
+        }
+        assert_int_equal(st, finished ? FNAV_END : FNAV_AGAIN);
+    }
+    return fr;
+}
+
+/* The end of the input completes the alignment on the still period it ends
+ * in (fnav_nav_finish). Until 2026-11-29 (a review) it did so before the
+ * samples the detector holds back (h + lag = 5 at 200 Hz) had reached the
+ * alignment: a log ending with 44 still samples (0.215 s, align_short_s is
+ * 0.2 s), the only still period, did not align, its alignment having seen
+ * 40 of them (0.195 s). Now the held-back samples go on to the alignment,
+ * which completes at the first with which its still period qualifies (the
+ * frames after it are navigated, as after an alignment at max_still_s).
+ * With enough stillness before the held-back samples (48) the alignment is
+ * as it was: on the samples before them, all held-back frames navigated;
+ * with 38 (0.185 s) nothing aligns. */
+static void test_align_at_end(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_frame_t fr;
+    long pre, run, first, zupts;
+    const long held = 5; /* h 2 + lag 3 with the defaults at 200 Hz (fnav_nav.h, "Latency") */
+    (void)state;
+    fr = end_still_run(&nav, 44, &pre, &run, &first, &zupts);
+    assert_int_equal(run - pre, held);
+    assert_true(nav.aligned);
+    assert_int_equal(nav.health & FNAV_HEALTH_NOT_ALIGNED, 0u);
+    assert_true(fr.flags & FNAV_FRAME_ALIGNED);
+    /* completed at the first sample at which the period reached
+     * align_short_s, a held-back one, which it took in: that frame is
+     * neither predicted nor updated, the later ones are. The period's
+     * duration as fnav_align.c forms it, with one sample fewer, falls short
+     * (41 samples, 0.2 s, in float64; in float32 40 intervals of 5 ms come
+     * out below 0.2f, and it takes 42) */
+    assert_true(first >= pre && first < run);
+    assert_int_equal(nav.align.result.samples, first + 1);
+    assert_true(nav.align.result.duration_s >= nav.cfg.align.short_still_s);
+    assert_true((fnav_real_t)((int64_t)(first - 1) * 5000000) * FNAV_R(1.0e-9) < nav.cfg.align.short_still_s);
+    assert_int_equal(zupts, run - first - 1);
+    assert_true(zupts > 0);
+    /* aligned on the still tail (with the swing's last sample, which the
+     * detector's window marks as stance: a mean ax of about 1/42 m/s^2,
+     * pitch 0.0024 rad), not on the swing (ax 1 m/s^2, pitch 0.1 rad) */
+    assert_true(fabs((double)nav.align.result.euler_rad.v[0]) < 1e-3 &&
+                fabs((double)nav.align.result.euler_rad.v[1]) < 0.01);
+
+    /* enough before the held-back samples: aligned at fnav_nav_finish on
+     * those popped before it, every held-back frame navigated */
+    fr = end_still_run(&nav, 48, &pre, &run, &first, &zupts);
+    assert_int_equal(run - pre, held);
+    assert_true(nav.aligned);
+    assert_int_equal(nav.align.result.samples, pre);
+    assert_int_equal(first, pre);
+    assert_int_equal(zupts, held);
+
+    /* too short even with the held-back samples: not aligned */
+    fr = end_still_run(&nav, 38, &pre, &run, &first, &zupts);
+    assert_int_equal(run - pre, held);
+    assert_false(nav.aligned);
+    assert_true(nav.health & FNAV_HEALTH_NOT_ALIGNED);
+    assert_int_equal(first, -1);
+    assert_false(fr.flags & FNAV_FRAME_ALIGNED);
+}
+
 static void test_time_glitch_forward(void **state)
 {
     static fnav_nav_t nav;
@@ -1430,6 +1532,7 @@ int main(void)
         cmocka_unit_test(test_realign_x_vertical),
         cmocka_unit_test(test_realign_near_lock),
         cmocka_unit_test(test_align_time_jump),
+        cmocka_unit_test(test_align_at_end),
         cmocka_unit_test(test_time_glitch_forward),
         cmocka_unit_test(test_realign_still_frame),
         cmocka_unit_test(test_sizes),

@@ -221,7 +221,14 @@ FNAV_WARN_UNUSED fnav_status_t fnav_nav_pop(fnav_nav_t *nav, fnav_nav_frame_t *f
 void fnav_nav_reset(fnav_nav_t *nav);
 
 /** End of input: the frames held back by the detector become due. If the
- *  input ended before an alignment, aligns on what was still, if enough. */
+ *  input ended before an alignment, aligns on what was still, if enough
+ *  (fnav_align_finish): at once on the samples popped so far when they
+ *  qualify, and the held-back frames are navigated; else the held-back
+ *  samples go on to the alignment as their frames are popped, and it
+ *  completes on the first with which the still period qualifies (that frame
+ *  aligned, neither predicted nor updated; the later ones navigated, as
+ *  after an alignment at max_still_s). Still not aligned when
+ *  fnav_nav_pop returns FNAV_END: FNAV_HEALTH_NOT_ALIGNED in nav->health. */
 void fnav_nav_finish(fnav_nav_t *nav);
 
 /**
