@@ -1011,13 +1011,13 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                      (double)cfg->align.short_still_s);
             if (traj != NULL) {
                 /* a run that long can still give the alignment less: its
-                 * noise-floor test or a time jump cuts it, and a log that
-                 * ends still is aligned on what reached the alignment before
-                 * the detector's held-back samples (fnav_nav_finish) */
+                 * noise-floor test or a time jump cuts it (a log that ends
+                 * still is no longer cut: the detector's held-back samples
+                 * reach the alignment since 2026-11-29, fnav_nav_finish) */
                 const size_t len = strlen(err);
                 snprintf(err + len, err_size - len, ": the stance detector's longest still run lasted %.2f s%s", longest,
                          longest >= (double)cfg->align.short_still_s
-                             ? ", cut shorter for the alignment (its noise-floor test, a time jump, or the log's end)"
+                             ? ", cut shorter for the alignment (its noise-floor test or a time jump)"
                              : "");
             }
         }
