@@ -491,6 +491,73 @@ static void test_explained_golden(void **state)
     sg_plist_free(&pl);
 }
 
+/* The Allan points' theory variance (docs/simgap.md, section 3: "Allan:
+ * Greenhall/NIST EDF of the overlapping estimator for the twin's noise
+ * type") takes the noise type from the slope of the twins' mean curve: the
+ * slope of log ADEV, half that of ln AVAR over ln tau. Three points
+ * (m = 4, 8, 16 at 100 Hz, 401 phase values, one block) on a twin mean of
+ * ln AVAR slope -1 (white FM, ADEV slope -1/2), 0 (flicker FM), +0.4
+ * (ADEV +0.2: flicker FM) and +1 (random-walk FM, ADEV +1/2), the twins'
+ * own spread negligible (1e-4), so sd_tot^2 = trigamma(edf / 2) of the
+ * type's overlapping-Allan EDF. The EDFs are Greenhall & Riley's basic sum
+ * computed independently in double precision by scripts/pvar_edf.py
+ * (edf(avar_taps(m), m, 401 - 2m, alpha)), exact at these m. Taking the
+ * ln AVAR slope as the ADEV slope (a hand-made mutant of 2026-11-29 that
+ * passed every suite) reads white FM as white PM (edf 200 for 65 at m = 8)
+ * and the +0.4 curve as a random walk (45 for 56). */
+static void test_allan_theory_var_noise_type(void **state)
+{
+    static const double slope[4] = {-1.0, 0.0, 0.4, 1.0};
+    /* pvar_edf.py, alpha = 0, -1, -1, -2; columns m = 4, 8, 16 */
+    static const double edf[4][3] = {{121.5102235, 65.29173919, 33.3410238},
+                                     {112.0467585, 56.31911676, 27.47995519},
+                                     {112.0467585, 56.31911676, 27.47995519},
+                                     {90.06271013, 44.76053838, 21.68113396}};
+    static const uint32_t m[3] = {4u, 8u, 16u};
+    enum { S = 8 };
+    sg_plist_t pl;
+    double real[3], tw[S * 3];
+    int c, j, s;
+    (void)state;
+    memset(&pl, 0, sizeof pl);
+    for (j = 0; j < 3; j++) {
+        sg_point_t p;
+        memset(&p, 0, sizeof p);
+        p.dom = SG_ALLAN;
+        p.ch = 0;
+        p.x = p.x_lo = p.x_hi = (double)m[j] / 100.0;
+        p.m = p.lag = m[j];
+        p.n_phase = 401u;
+        p.nblk = 1;
+        p.w = 1.0;
+        assert_int_equal(sg_plist_add(&pl, &p), 0);
+    }
+    for (c = 0; c < 4; c++) {
+        sg_cmp_t cmp;
+        for (j = 0; j < 3; j++) {
+            const double mu = slope[c] * log(pl.p[j].x);
+            real[j] = mu;
+            for (s = 0; s < S; s++) {
+                tw[s * 3 + j] = mu + 1e-4 * (double)(s - S / 2);
+            }
+        }
+        assert_int_equal(sg_compare(&pl, real, tw, S, NULL, NULL, 0.05, &cmp), 0);
+        for (j = 0; j < 3; j++) {
+            double v = 0.0, mean = 0.0;
+            for (s = 0; s < S; s++) {
+                mean += tw[s * 3 + j] / S;
+            }
+            for (s = 0; s < S; s++) {
+                v += (tw[s * 3 + j] - mean) * (tw[s * 3 + j] - mean) / (S - 1);
+            }
+            /* D = var / S + max(var, v_theory), docs/simgap.md section 3 */
+            FNAV_ASSERT_CLOSE(cmp.sd_tot[j] * cmp.sd_tot[j], v / S + gsl_sf_psi_1(0.5 * edf[c][j]), 0.0, 1e-6);
+        }
+        sg_cmp_free(&cmp);
+    }
+    sg_plist_free(&pl);
+}
+
 /* sg_rayleigh_z against scipy's exact Phi^-1(1 - exp(-R)) (compare.csv):
  * to rounding up to R = 30, where the C code takes the tail probability
  * itself (for R = 1e-20, where exp(-R) rounds to 1, it returned -inf: the
@@ -1985,6 +2052,7 @@ int main(void)
         cmocka_unit_test(test_rayleigh_golden),
         cmocka_unit_test(test_compare_twin_only_level),
         cmocka_unit_test(test_compare_golden),
+        cmocka_unit_test(test_allan_theory_var_noise_type),
         cmocka_unit_test(test_explained_golden),
         cmocka_unit_test(test_split_disjoint),
         cmocka_unit_test(test_time_domain_stats),
