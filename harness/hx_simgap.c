@@ -732,6 +732,20 @@ static int fold_ends(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     return 0;
 }
 
+double sg_accept_zcrit(double alpha, int seeds)
+{
+    /* each simulated candidate is two tests (score and likelihood ratio, either
+     * may accept): Bonferroni over the two, the channels and
+     * about five candidates each; the null's spread comes from S twins, so
+     * the quantile is Student's with S - 1 degrees of freedom */
+    return gsl_cdf_tdist_Qinv(alpha / (double)(SG_NCH * 5 * 2), (double)(seeds - 1));
+}
+
+int sg_cand_accepted(const sg_cand_t *cd, double zacc)
+{
+    return (cd->z_delta > zacc || cd->z_gap > zacc) && !(cd->expl_lo <= 0.0);
+}
+
 /* Forward selection on one channel. */
 static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_t *fc, const sg_table_t *tab,
                      double alpha, hx_progress_t *prog, double *pdone)
@@ -743,11 +757,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     sg_cmp_t ccur[SG_NSEG];
     int with[SG_MAX_EFF], nwith = 0, step, g, i;
     double zc = c->cmp[SG_FULL].z_crit;
-    /* each simulated candidate is two tests (score and likelihood ratio, either
-     * may accept): Bonferroni over the two, the channels and
-     * about five candidates each; the null's spread comes from S twins, so
-     * the quantile is Student's with S - 1 degrees of freedom */
-    const double zacc = gsl_cdf_tdist_Qinv(r->opts.alpha / (double)(SG_NCH * 5 * 2), (double)(r->opts.seeds - 1));
+    const double zacc = sg_accept_zcrit(r->opts.alpha, r->opts.seeds);
     const double tmax = fit_tmax(r, ch);
     uint32_t seed = o->seed + 1000u * (uint32_t)ch;
     memset(&cur, 0, sizeof cur);
@@ -938,7 +948,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             }
             /* accepted only with a held-out gain beyond what twins without
              * the effect show (z_delta) and beyond the seed noise */
-            if (cd->dL_rank > bestdL && (cd->z_delta > zacc || cd->z_gap > zacc) && !(cd->expl_lo <= 0.0)) {
+            if (cd->dL_rank > bestdL && sg_cand_accepted(cd, zacc)) {
                 if (best >= 0) {
                     twinset_free(&bestset);
                     for (g = 0; g < SG_NSEG; g++) {

@@ -554,6 +554,19 @@ typedef struct {
                                    better than a ramp (chi-square_1 at 1 %); not simulated, the ramp stands for it */
 } sg_cand_t;
 
+/** Critical z of a candidate's acceptance tests (docs/simgap.md, section 4,
+ *  step 5): Student's t^-1(1 - alpha / (6 * 5 * 2), seeds - 1), Bonferroni
+ *  over the six channels, about five candidates and the two tests (score
+ *  and likelihood ratio), the null's spread from `seeds` twins. */
+double sg_accept_zcrit(double alpha, int seeds);
+
+/** Whether candidate cd passes the acceptance test at the critical z zacc
+ *  (sg_accept_zcrit): its score test's z (z_delta) or its likelihood-ratio
+ *  test's (z_gap) beyond zacc, and the lower end of the 68 % interval of
+ *  its explained fraction (expl_lo) above 0 where the fraction is defined
+ *  (NaN, no held-out excess: accepted on its z alone). 1 or 0. */
+int sg_cand_accepted(const sg_cand_t *cd, double zacc);
+
 /** One forward-selection step of a channel. */
 typedef struct {
     int ncand;

@@ -558,6 +558,47 @@ static void test_allan_theory_var_noise_type(void **state)
     sg_plist_free(&pl);
 }
 
+/* The acceptance test of a candidate (docs/simgap.md, section 4, step 5):
+ * z > t^-1(1 - alpha / (6 * 5 * 2), S - 1) for the score or the
+ * likelihood-ratio test, and the lower end of the explained fraction's
+ * 68 % interval above 0 where the held-out data hold an excess (NaN: on
+ * its z alone). The critical values are scipy's stats.t.isf(0.05 / 60,
+ * S - 1): 3.821973398 at S = 16, 4.944470404 at S = 8 (with a Bonferroni
+ * factor of 30, 3.4837 and 4.3553). Candidates built by hand sit 0.2 on
+ * either side of it. Bonferroni over the channels and candidates only
+ * (the two tests left out) and the explained-fraction condition dropped
+ * (hand-made mutants A01 and A03 of 2026-11-29) passed every suite. */
+static void test_accept_rule(void **state)
+{
+    sg_cand_t cd;
+    double zc;
+    (void)state;
+    FNAV_ASSERT_CLOSE(sg_accept_zcrit(0.05, 16), 3.821973398, 0.0, 1e-8);
+    FNAV_ASSERT_CLOSE(sg_accept_zcrit(0.05, 8), 4.944470404, 0.0, 1e-8);
+    zc = sg_accept_zcrit(0.05, 16);
+    memset(&cd, 0, sizeof cd);
+    cd.expl_lo = (double)NAN; /* no held-out excess: on its z alone */
+    cd.z_delta = zc + 0.2;
+    cd.z_gap = zc - 0.2;
+    assert_true(sg_cand_accepted(&cd, zc));
+    cd.z_delta = zc - 0.2;
+    cd.z_gap = zc + 0.2;
+    assert_true(sg_cand_accepted(&cd, zc)); /* either test accepts */
+    cd.z_gap = zc - 0.2;
+    assert_false(sg_cand_accepted(&cd, zc));
+    cd.z_delta = 3.6; /* between the factors 30 and 60 at S = 16 */
+    cd.z_gap = 0.0;
+    assert_false(sg_cand_accepted(&cd, zc));
+    /* the explained fraction's lower end: above 0, not at or below */
+    cd.z_delta = cd.z_gap = zc + 1.0;
+    cd.expl_lo = 0.3;
+    assert_true(sg_cand_accepted(&cd, zc));
+    cd.expl_lo = -0.1;
+    assert_false(sg_cand_accepted(&cd, zc));
+    cd.expl_lo = 0.0;
+    assert_false(sg_cand_accepted(&cd, zc));
+}
+
 /* sg_rayleigh_z against scipy's exact Phi^-1(1 - exp(-R)) (compare.csv):
  * to rounding up to R = 30, where the C code takes the tail probability
  * itself (for R = 1e-20, where exp(-R) rounds to 1, it returned -inf: the
@@ -2053,6 +2094,7 @@ int main(void)
         cmocka_unit_test(test_compare_twin_only_level),
         cmocka_unit_test(test_compare_golden),
         cmocka_unit_test(test_allan_theory_var_noise_type),
+        cmocka_unit_test(test_accept_rule),
         cmocka_unit_test(test_explained_golden),
         cmocka_unit_test(test_split_disjoint),
         cmocka_unit_test(test_time_domain_stats),
