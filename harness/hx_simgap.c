@@ -142,7 +142,7 @@ static double logvar_se(double kurt, long n)
     return sqrt((kurt - 1.0) / (double)(n - 1));
 }
 
-static void timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, double alpha, sg_timing_t *t)
+void sg_timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, double alpha, sg_timing_t *t)
 {
     const double T = 1e9 / rate;
     int g, d;
@@ -1630,7 +1630,7 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
             }
         }
     }
-    timing_analyse(log, r->rate_hz, &r->segs, r->opts.alpha, &r->tim);
+    sg_timing_analyse(log, r->rate_hz, &r->segs, r->opts.alpha, &r->tim);
     r->stamps_made = log->meta.stamps_made;
     if (r->domain == 1) {
         rc = diagnose_static(log, r, err, err_size);

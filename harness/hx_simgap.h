@@ -629,6 +629,15 @@ typedef struct {
     double first_t[SG_TIM_NKIND];          /**< time of the first event */
 } sg_timing_t;
 
+/** The timing domain of a log with stamps of its own (docs/simgap.md,
+ *  section 4, "Timing domain"), its segments segs, at the family-wise
+ *  level alpha: counts and z-scores per segment, the effects selected
+ *  (whole-log z beyond the one-sided critical value of the family of
+ *  three, Phi^-1(1 - alpha / 3)), their rates fitted on the fit segment and
+ *  the held-out check (|z| beyond Phi^-1(1 - alpha / 6)). A log without
+ *  stamps of its own or with fewer than 16 samples: t->have 0. */
+void sg_timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, double alpha, sg_timing_t *t);
+
 /** Whole result. */
 typedef struct {
     char path[512];

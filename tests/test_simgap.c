@@ -599,6 +599,63 @@ static void test_accept_rule(void **state)
     assert_false(sg_cand_accepted(&cd, zc));
 }
 
+/* The timing domain's decisions (docs/simgap.md, section 4, "Timing
+ * domain"): an effect is selected when its whole-log z lies beyond the
+ * one-sided critical value of the family of three (duplicates, drops,
+ * jitter), Phi^-1(1 - alpha / 3) = 2.128 at alpha = 0.05, and a selected
+ * one is checked on the held-out segment against the two-sided
+ * Phi^-1(1 - alpha / 6) = 2.394 (scipy's norm.isf). A 100 Hz log of 2000
+ * samples stamped on the 10 ms grid (no jitter) with one sample written
+ * twice has a duplicate z of 1.657 (the Poisson tail P(X >= 1) at the
+ * ideal clock's 0.05, scipy's norm.isf(poisson.sf(0, 0.05))): not
+ * selected, where alpha itself (a hand-made mutant, A07 of 2026-11-29,
+ * that passed every suite) reads 1.645 and selected it; two such samples
+ * have z 3.033 and are selected. */
+static void tim_log(hx_log_t *lg, int64_t *t, long n, const long *dup, int ndup)
+{
+    long k;
+    int d;
+    memset(lg, 0, sizeof *lg);
+    for (k = 0; k < n; k++) {
+        t[k] = k * 10000000LL;
+        for (d = 0; d < ndup; d++) {
+            if (k >= dup[d]) {
+                t[k] -= 10000000LL; /* sample dup[d] repeats the stamp before it */
+            }
+        }
+    }
+    lg->n = (size_t)n;
+    lg->t_ns = t;
+}
+
+static void test_timing_thresholds(void **state)
+{
+    enum { N = 2000 };
+    static int64_t t[N];
+    static const long dup[2] = {700, 1300};
+    hx_log_t lg;
+    sg_segs_t segs;
+    sg_timing_t tm;
+    (void)state;
+    sg_segs_split(N, 0.4, 1, &segs);
+    tim_log(&lg, t, N, dup, 1);
+    sg_timing_analyse(&lg, 100.0, &segs, 0.05, &tm);
+    assert_true(tm.have);
+    assert_int_equal(tm.n_dup[SG_FULL], 1);
+    assert_int_equal(tm.n_drop[SG_FULL], 0);
+    FNAV_ASSERT_CLOSE(tm.z[SG_FULL][SG_TIM_DUP], 1.656892797, 0.0, 1e-8);
+    assert_false(tm.sel[SG_TIM_DUP]);
+    assert_false(tm.significant);
+    FNAV_ASSERT_CLOSE(tm.z_crit, 2.3939798, 0.0, 1e-7);
+    tim_log(&lg, t, N, dup, 2);
+    sg_timing_analyse(&lg, 100.0, &segs, 0.05, &tm);
+    assert_int_equal(tm.n_dup[SG_FULL], 2);
+    FNAV_ASSERT_CLOSE(tm.z[SG_FULL][SG_TIM_DUP], 3.033392495, 0.0, 1e-8);
+    assert_true(tm.sel[SG_TIM_DUP]);
+    assert_true(tm.significant);
+    assert_false(tm.sel[SG_TIM_DROP] || tm.sel[SG_TIM_JITTER]);
+}
+
 /* sg_rayleigh_z against scipy's exact Phi^-1(1 - exp(-R)) (compare.csv):
  * to rounding up to R = 30, where the C code takes the tail probability
  * itself (for R = 1e-20, where exp(-R) rounds to 1, it returned -inf: the
@@ -2095,6 +2152,7 @@ int main(void)
         cmocka_unit_test(test_compare_golden),
         cmocka_unit_test(test_allan_theory_var_noise_type),
         cmocka_unit_test(test_accept_rule),
+        cmocka_unit_test(test_timing_thresholds),
         cmocka_unit_test(test_explained_golden),
         cmocka_unit_test(test_split_disjoint),
         cmocka_unit_test(test_time_domain_stats),
