@@ -656,6 +656,54 @@ static void test_timing_thresholds(void **state)
     assert_false(tm.sel[SG_TIM_DROP] || tm.sel[SG_TIM_JITTER]);
 }
 
+/* The special estimators' evidence on a sandwich split's fit segment (two
+ * blocks; docs/simgap.md, section 4, step 1). The lattice score of the
+ * segment is the blocks' normal scores combined as Stouffer's
+ * (z_1 + z_2) / sqrt 2, N(0, 1) for continuous values as each block's is,
+ * so that the candidate's threshold (q_z beyond the point test's z_crit)
+ * keeps its level; the plain sum (a hand-made mutant, F04 of 2026-11-29,
+ * that passed every suite) has variance 2. Here values on a 0.01 lattice
+ * with noise of 0.2 steps, each block's score from sg_lattice_z
+ * (test_rayleigh_golden). The line: A sin(2 pi f t + phi), the simulator's
+ * vibration (src/fnav_imuerr.c), with A = 0.01, f = 12.3 Hz (off the FFT
+ * grid), phi = 1 rad and white noise of 1e-4 at 100 Hz is reported as its
+ * frequency, amplitude and phase at sample 0; the amplitude read as
+ * sqrt of the Hann-normalised power without its factor 2 (F03, the same
+ * round) reported A / 2. */
+static void test_evidence_lattice_and_line(void **state)
+{
+    enum { N = 20000 };
+    static double x[N];
+    const double q = 0.01, A = 0.01, f = 12.3, phi = 1.0;
+    sg_segs_t segs;
+    sg_evidence_t ev;
+    fnav_rng_t rng;
+    double z0, z1;
+    long k, lev = 0;
+    (void)state;
+    sg_segs_split(N, 0.4, 1, &segs);
+    assert_int_equal(segs.nb[SG_FIT], 2);
+    fnav_rng_seed(&rng, 41u, 3u);
+    for (k = 0; k < N; k++) {
+        lev += (long)floor(3.0 * (double)fnav_rng_uniform(&rng)) - 1;
+        x[k] = q * (double)lev + 0.2 * q * (double)fnav_rng_gauss(&rng);
+    }
+    z0 = sg_lattice_z(x + segs.start[SG_FIT][0], (size_t)segs.n[SG_FIT][0], q);
+    z1 = sg_lattice_z(x + segs.start[SG_FIT][1], (size_t)segs.n[SG_FIT][1], q);
+    assert_true(z0 > 3.0 && z1 > 3.0);
+    sg_evidence_seg(x, &segs, SG_FIT, 100.0, q, &ev);
+    FNAV_ASSERT_CLOSE(ev.q_z, (z0 + z1) / sqrt(2.0), 0.0, 1e-12);
+    for (k = 0; k < N; k++) {
+        x[k] = A * sin(2.0 * M_PI * f * (double)k / 100.0 + phi) + 1e-4 * (double)fnav_rng_gauss(&rng);
+    }
+    sg_evidence_seg(x, &segs, SG_FIT, 100.0, 0.0, &ev);
+    fprintf(stderr, "line: %.6f Hz, amplitude %.6g, phase %.4f rad, score %.1f\n", ev.tone_hz, ev.tone_amp,
+            ev.tone_phase, ev.tone_score);
+    FNAV_ASSERT_CLOSE(ev.tone_hz, f, 1e-3, 0.0);
+    FNAV_ASSERT_CLOSE(ev.tone_amp, A, 0.0, 0.01);
+    FNAV_ASSERT_CLOSE(ev.tone_phase, phi, 0.01, 0.0);
+}
+
 /* sg_rayleigh_z against scipy's exact Phi^-1(1 - exp(-R)) (compare.csv):
  * to rounding up to R = 30, where the C code takes the tail probability
  * itself (for R = 1e-20, where exp(-R) rounds to 1, it returned -inf: the
@@ -2153,6 +2201,7 @@ int main(void)
         cmocka_unit_test(test_allan_theory_var_noise_type),
         cmocka_unit_test(test_accept_rule),
         cmocka_unit_test(test_timing_thresholds),
+        cmocka_unit_test(test_evidence_lattice_and_line),
         cmocka_unit_test(test_explained_golden),
         cmocka_unit_test(test_split_disjoint),
         cmocka_unit_test(test_time_domain_stats),
