@@ -996,13 +996,9 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     return 0;
 }
 
-/* Locations: runs of consecutive points of one channel and domain with
- * |z| > 2.5 of one sign holding a point beyond the critical z of the
- * comparison c, appended to loc (count *nloc, capacity cap). */
-static void locate_into(const sg_result_t *r, int ch, int seg, const sg_cmp_t *c, sg_loc_t *loc, size_t *nloc,
-                        size_t cap, size_t *dropped)
+void sg_locate_into(const sg_plist_t *pl, int ch, int seg, const sg_cmp_t *c, sg_loc_t *loc, size_t *nloc,
+                    size_t cap, size_t *dropped)
 {
-    const sg_plist_t *pl = &r->pl[ch][seg];
     size_t j = 0;
     while (j < pl->n) {
         size_t k = j, best = j;
@@ -1050,7 +1046,7 @@ static void locate_into(const sg_result_t *r, int ch, int seg, const sg_cmp_t *c
 
 static void locate(sg_result_t *r, int ch, int seg)
 {
-    locate_into(r, ch, seg, &r->ch[ch].cmp[seg], r->loc, &r->nloc, sizeof r->loc / sizeof r->loc[0],
+    sg_locate_into(&r->pl[ch][seg], ch, seg, &r->ch[ch].cmp[seg], r->loc, &r->nloc, sizeof r->loc / sizeof r->loc[0],
                 &r->nloc_dropped);
 }
 
@@ -1340,7 +1336,7 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             }
             twinset_free(&tp);
             c->have_prof = 1;
-            locate_into(r, ch, SG_FULL, &c->cmp_prof[SG_FULL], r->ploc, &r->nploc, sizeof r->ploc / sizeof r->ploc[0],
+            sg_locate_into(&r->pl[ch][SG_FULL], ch, SG_FULL, &c->cmp_prof[SG_FULL], r->ploc, &r->nploc, sizeof r->ploc / sizeof r->ploc[0],
                         &r->nloc_dropped);
         }
         /* attribution on every channel: a candidate whose held-out gain is

@@ -526,6 +526,14 @@ typedef struct {
     int npts;
 } sg_loc_t;
 
+/** Locations (docs/simgap.md, section 3, "Locations"): runs of consecutive
+ *  points of list pl (channel ch, segment seg) and one domain (and, in the
+ *  time domain, one kind) with |z| > 2.5 of one sign that hold a point
+ *  beyond the critical z of the comparison c, appended to loc (count
+ *  *nloc, capacity cap; those beyond it counted in *dropped). */
+void sg_locate_into(const sg_plist_t *pl, int ch, int seg, const sg_cmp_t *c, sg_loc_t *loc, size_t *nloc,
+                    size_t cap, size_t *dropped);
+
 /** One candidate tried in a step. */
 typedef struct {
     int id;

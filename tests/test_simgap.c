@@ -704,6 +704,54 @@ static void test_evidence_lattice_and_line(void **state)
     FNAV_ASSERT_CLOSE(ev.tone_phase, phi, 0.01, 0.0);
 }
 
+/* Locations (docs/simgap.md, section 3): runs of consecutive points of one
+ * channel and domain with |z| > 2.5 of one sign that contain a point
+ * beyond z_crit. Hand-made z's on eight Allan points (tau 1-8 s) against
+ * z_crit 4: 0.5, 2.0, 3.0, 6.0, 2.8, 1.8 | -3.0, -3.5. The first run is
+ * points 3-5 (tau 3-5 s, peak +6, ADEV ratio exp(dev / 2)); 1.8 ends it
+ * and 2.0 is outside; the negative run has no point beyond z_crit and is
+ * no location. Runs extended over |z| > 1.5 (a hand-made mutant, A08 of
+ * 2026-11-29, that passed every suite) gave tau 3-6 s. */
+static void test_locate_runs(void **state)
+{
+    static double z[8] = {0.5, 2.0, 3.0, 6.0, 2.8, 1.8, -3.0, -3.5};
+    sg_plist_t pl;
+    sg_cmp_t c;
+    sg_loc_t loc[4];
+    double dev[8];
+    size_t nloc = 0, dropped = 0;
+    int j;
+    (void)state;
+    memset(&pl, 0, sizeof pl);
+    memset(&c, 0, sizeof c);
+    for (j = 0; j < 8; j++) {
+        sg_point_t p;
+        memset(&p, 0, sizeof p);
+        p.dom = SG_ALLAN;
+        p.ch = 5;
+        p.x = p.x_lo = p.x_hi = (double)(j + 1);
+        p.nblk = 1;
+        assert_int_equal(sg_plist_add(&pl, &p), 0);
+        dev[j] = 0.1 * z[j];
+    }
+    c.n = 8;
+    c.z = z;
+    c.dev = dev;
+    c.z_crit = 4.0;
+    sg_locate_into(&pl, 5, SG_HOLD, &c, loc, &nloc, 4, &dropped);
+    assert_int_equal((int)nloc, 1);
+    assert_int_equal((int)dropped, 0);
+    assert_int_equal(loc[0].dom, SG_ALLAN);
+    assert_int_equal(loc[0].ch, 5);
+    assert_int_equal(loc[0].seg, SG_HOLD);
+    assert_int_equal(loc[0].npts, 3);
+    FNAV_ASSERT_CLOSE(loc[0].x_lo, 3.0, 0.0, 0.0);
+    FNAV_ASSERT_CLOSE(loc[0].x_hi, 5.0, 0.0, 0.0);
+    FNAV_ASSERT_CLOSE(loc[0].peak_z, 6.0, 0.0, 0.0);
+    FNAV_ASSERT_CLOSE(loc[0].ratio, exp(0.5 * 0.6), 0.0, 1e-12);
+    sg_plist_free(&pl);
+}
+
 /* sg_rayleigh_z against scipy's exact Phi^-1(1 - exp(-R)) (compare.csv):
  * to rounding up to R = 30, where the C code takes the tail probability
  * itself (for R = 1e-20, where exp(-R) rounds to 1, it returned -inf: the
@@ -2202,6 +2250,7 @@ int main(void)
         cmocka_unit_test(test_accept_rule),
         cmocka_unit_test(test_timing_thresholds),
         cmocka_unit_test(test_evidence_lattice_and_line),
+        cmocka_unit_test(test_locate_runs),
         cmocka_unit_test(test_explained_golden),
         cmocka_unit_test(test_split_disjoint),
         cmocka_unit_test(test_time_domain_stats),
