@@ -1174,7 +1174,7 @@ static void test_time_steps_window(void **state)
  * a warm-up's amplitude and time constant and a ramp's signed rate come
  * back from the features of a noise-free log (the statistics are sample
  * sums, the model's expectation a quadrature: they agree to 1e-3). */
-static void fit_drift_on(const sg_chmodel_t *truth, const int *with, int nwith, sg_fit_t *f)
+static void drift_table(const sg_chmodel_t *truth, sg_table_t *tb)
 {
     const double fs = 100.0;
     const long n = 300000;
@@ -1182,13 +1182,10 @@ static void fit_drift_on(const sg_chmodel_t *truth, const int *with, int nwith, 
     sg_segs_t segs;
     sg_segacc_t a;
     sg_plist_t pl;
-    sg_table_t tb;
-    sg_evidence_t ev;
     static double vals[1024];
     long cnt, k;
     int b;
     memset(&pl, 0, sizeof pl);
-    memset(&ev, 0, sizeof ev);
     sg_segs_split(n, 0.6, 1, &segs);
     assert_int_equal(sg_segacc_init(&a, &fc, &segs, SG_FIT, 0.0), 0);
     for (b = 0; b < segs.nb[SG_FIT]; b++) {
@@ -1201,10 +1198,18 @@ static void fit_drift_on(const sg_chmodel_t *truth, const int *with, int nwith, 
     cnt = sg_segacc_finish(&a, 3, &pl, vals, 1024);
     sg_segacc_free(&a);
     assert_true(cnt > 0);
-    sg_table_from(&pl, vals, 3, fs, &segs, SG_FIT, &tb);
-    assert_int_equal(tb.nt, 5); /* trend and curvature of both blocks, their level difference */
-    assert_int_equal(sg_fit_model(&tb, 0.0, with, nwith, &ev, 10.0, f), 0);
+    sg_table_from(&pl, vals, 3, fs, &segs, SG_FIT, tb);
+    assert_int_equal(tb->nt, 5); /* trend and curvature of both blocks, their level difference */
     sg_plist_free(&pl);
+}
+
+static void fit_drift_on(const sg_chmodel_t *truth, const int *with, int nwith, sg_fit_t *f)
+{
+    sg_table_t tb;
+    sg_evidence_t ev;
+    memset(&ev, 0, sizeof ev);
+    drift_table(truth, &tb);
+    assert_int_equal(sg_fit_model(&tb, 0.0, with, nwith, &ev, 10.0, f), 0);
 }
 
 static void test_time_fit_drifts(void **state)
@@ -1238,6 +1243,51 @@ static void test_time_fit_drifts(void **state)
     k = sg_model_find(&f.model, FNAV_EFFECT_RAMP);
     assert_true(k >= 0);
     FNAV_ASSERT_CLOSE(f.model.e[k].p[0], -3e-7, 0.0, 1e-3);
+}
+
+/* The warm-up's standard error (hx_simgap_fit.c time_fit): the data fix
+ * the amplitude A = coef x rise, the model holds coef = A / rise, so its
+ * standard error is A's over rise. With the time points' weights absolute
+ * (tw_twins: 1 / variances, here 1 / (0.1 y)^2 for the warm-up of
+ * test_time_fit_drifts) and T at its fitted value, A is a one-parameter
+ * weighted least squares, whose relative standard error is
+ * 1 / sqrt(sum w yhat^2) (se^2 = 1 / sum w x^2, yhat = A x); the fitted
+ * values are the data to the pseudo-noise, so 1 / sqrt(sum w y^2) = 1 /
+ * sqrt(5 x 100) = 0.0447 within 1 %. The error of A left undivided (a
+ * hand-made mutant, F06 of 2026-11-29, that passed every suite) is 10
+ * times that (the catalogue's rise of 10). */
+static void test_time_fit_thermal_se(void **state)
+{
+    sg_chmodel_t m;
+    sg_effect_t e;
+    sg_table_t tb;
+    sg_evidence_t ev;
+    sg_fit_t f;
+    int with[1] = {FNAV_EFFECT_THERMAL}, k;
+    double swy2 = 0.0;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    memset(&e, 0, sizeof e);
+    memset(&ev, 0, sizeof ev);
+    e.id = FNAV_EFFECT_THERMAL;
+    e.p[0] = -2e-4;
+    e.p[1] = 10.0;
+    e.p[2] = 500.0;
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    drift_table(&m, &tb);
+    tb.tw_twins = 1;
+    for (k = 0; k < tb.nt; k++) {
+        tb.tw[k] = 1.0 / (0.01 * tb.ty[k] * tb.ty[k]);
+        swy2 += tb.tw[k] * tb.ty[k] * tb.ty[k];
+    }
+    assert_int_equal(sg_fit_model(&tb, 0.0, with, 1, &ev, 10.0, &f), 0);
+    k = sg_model_find(&f.model, FNAV_EFFECT_THERMAL);
+    assert_true(k >= 0);
+    FNAV_ASSERT_CLOSE(f.model.e[k].p[1], 10.0, 0.0, 0.0);
+    FNAV_ASSERT_CLOSE(f.model.e[k].p[0], -2e-4, 0.0, 1e-2);
+    fprintf(stderr, "warm-up coef %.6g, se %.4g, relative %.5f against 1 / sqrt(sum w y^2) = %.5f\n",
+            f.model.e[k].p[0], f.model.e[k].se[0], f.model.e[k].se[0] / fabs(f.model.e[k].p[0]), 1.0 / sqrt(swy2));
+    FNAV_ASSERT_CLOSE(f.model.e[k].se[0] / fabs(f.model.e[k].p[0]), 1.0 / sqrt(swy2), 0.0, 0.01);
 }
 
 /* The spread a random drift gives the time points (the prescreen's
@@ -2289,6 +2339,7 @@ int main(void)
         cmocka_unit_test(test_time_steps_window),
         cmocka_unit_test(test_time_domain_model),
         cmocka_unit_test(test_time_fit_drifts),
+        cmocka_unit_test(test_time_fit_thermal_se),
         cmocka_unit_test(test_jumps_rate_detection),
         cmocka_unit_test(test_time_var_rrw),
         cmocka_unit_test(test_time_deviance),
