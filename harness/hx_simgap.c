@@ -1047,7 +1047,7 @@ void sg_locate_into(const sg_plist_t *pl, int ch, int seg, const sg_cmp_t *c, sg
 static void locate(sg_result_t *r, int ch, int seg)
 {
     sg_locate_into(&r->pl[ch][seg], ch, seg, &r->ch[ch].cmp[seg], r->loc, &r->nloc, sizeof r->loc / sizeof r->loc[0],
-                &r->nloc_dropped);
+                   &r->nloc_dropped);
 }
 
 /* The given profile's white + AR(1) model of channel ch (not fitted). */
@@ -1336,8 +1336,8 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             }
             twinset_free(&tp);
             c->have_prof = 1;
-            sg_locate_into(&r->pl[ch][SG_FULL], ch, SG_FULL, &c->cmp_prof[SG_FULL], r->ploc, &r->nploc, sizeof r->ploc / sizeof r->ploc[0],
-                        &r->nloc_dropped);
+            sg_locate_into(&r->pl[ch][SG_FULL], ch, SG_FULL, &c->cmp_prof[SG_FULL], r->ploc, &r->nploc,
+                           sizeof r->ploc / sizeof r->ploc[0], &r->nloc_dropped);
         }
         /* attribution on every channel: a candidate whose held-out gain is
          * significant reveals a gap the omnibus test is too blunt for */
