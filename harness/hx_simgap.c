@@ -142,7 +142,7 @@ static double logvar_se(double kurt, long n)
     return sqrt((kurt - 1.0) / (double)(n - 1));
 }
 
-static void timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, double alpha, sg_timing_t *t)
+void sg_timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, double alpha, sg_timing_t *t)
 {
     const double T = 1e9 / rate;
     int g, d;
@@ -732,6 +732,20 @@ static int fold_ends(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     return 0;
 }
 
+double sg_accept_zcrit(double alpha, int seeds)
+{
+    /* each simulated candidate is two tests (score and likelihood ratio, either
+     * may accept): Bonferroni over the two, the channels and
+     * about five candidates each; the null's spread comes from S twins, so
+     * the quantile is Student's with S - 1 degrees of freedom */
+    return gsl_cdf_tdist_Qinv(alpha / (double)(SG_NCH * 5 * 2), (double)(seeds - 1));
+}
+
+int sg_cand_accepted(const sg_cand_t *cd, double zacc)
+{
+    return (cd->z_delta > zacc || cd->z_gap > zacc) && !(cd->expl_lo <= 0.0);
+}
+
 /* Forward selection on one channel. */
 static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_t *fc, const sg_table_t *tab,
                      double alpha, hx_progress_t *prog, double *pdone)
@@ -743,11 +757,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     sg_cmp_t ccur[SG_NSEG];
     int with[SG_MAX_EFF], nwith = 0, step, g, i;
     double zc = c->cmp[SG_FULL].z_crit;
-    /* each simulated candidate is two tests (score and likelihood ratio, either
-     * may accept): Bonferroni over the two, the channels and
-     * about five candidates each; the null's spread comes from S twins, so
-     * the quantile is Student's with S - 1 degrees of freedom */
-    const double zacc = gsl_cdf_tdist_Qinv(r->opts.alpha / (double)(SG_NCH * 5 * 2), (double)(r->opts.seeds - 1));
+    const double zacc = sg_accept_zcrit(r->opts.alpha, r->opts.seeds);
     const double tmax = fit_tmax(r, ch);
     uint32_t seed = o->seed + 1000u * (uint32_t)ch;
     memset(&cur, 0, sizeof cur);
@@ -938,7 +948,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             }
             /* accepted only with a held-out gain beyond what twins without
              * the effect show (z_delta) and beyond the seed noise */
-            if (cd->dL_rank > bestdL && (cd->z_delta > zacc || cd->z_gap > zacc) && !(cd->expl_lo <= 0.0)) {
+            if (cd->dL_rank > bestdL && sg_cand_accepted(cd, zacc)) {
                 if (best >= 0) {
                     twinset_free(&bestset);
                     for (g = 0; g < SG_NSEG; g++) {
@@ -986,13 +996,9 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     return 0;
 }
 
-/* Locations: runs of consecutive points of one channel and domain with
- * |z| > 2.5 of one sign holding a point beyond the critical z of the
- * comparison c, appended to loc (count *nloc, capacity cap). */
-static void locate_into(const sg_result_t *r, int ch, int seg, const sg_cmp_t *c, sg_loc_t *loc, size_t *nloc,
-                        size_t cap, size_t *dropped)
+void sg_locate_into(const sg_plist_t *pl, int ch, int seg, const sg_cmp_t *c, sg_loc_t *loc, size_t *nloc,
+                    size_t cap, size_t *dropped)
 {
-    const sg_plist_t *pl = &r->pl[ch][seg];
     size_t j = 0;
     while (j < pl->n) {
         size_t k = j, best = j;
@@ -1040,8 +1046,8 @@ static void locate_into(const sg_result_t *r, int ch, int seg, const sg_cmp_t *c
 
 static void locate(sg_result_t *r, int ch, int seg)
 {
-    locate_into(r, ch, seg, &r->ch[ch].cmp[seg], r->loc, &r->nloc, sizeof r->loc / sizeof r->loc[0],
-                &r->nloc_dropped);
+    sg_locate_into(&r->pl[ch][seg], ch, seg, &r->ch[ch].cmp[seg], r->loc, &r->nloc, sizeof r->loc / sizeof r->loc[0],
+                   &r->nloc_dropped);
 }
 
 /* The given profile's white + AR(1) model of channel ch (not fitted). */
@@ -1330,8 +1336,8 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             }
             twinset_free(&tp);
             c->have_prof = 1;
-            locate_into(r, ch, SG_FULL, &c->cmp_prof[SG_FULL], r->ploc, &r->nploc, sizeof r->ploc / sizeof r->ploc[0],
-                        &r->nloc_dropped);
+            sg_locate_into(&r->pl[ch][SG_FULL], ch, SG_FULL, &c->cmp_prof[SG_FULL], r->ploc, &r->nploc,
+                           sizeof r->ploc / sizeof r->ploc[0], &r->nloc_dropped);
         }
         /* attribution on every channel: a candidate whose held-out gain is
          * significant reveals a gap the omnibus test is too blunt for */
@@ -1620,7 +1626,7 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
             }
         }
     }
-    timing_analyse(log, r->rate_hz, &r->segs, r->opts.alpha, &r->tim);
+    sg_timing_analyse(log, r->rate_hz, &r->segs, r->opts.alpha, &r->tim);
     r->stamps_made = log->meta.stamps_made;
     if (r->domain == 1) {
         rc = diagnose_static(log, r, err, err_size);

@@ -526,6 +526,14 @@ typedef struct {
     int npts;
 } sg_loc_t;
 
+/** Locations (docs/simgap.md, section 3, "Locations"): runs of consecutive
+ *  points of list pl (channel ch, segment seg) and one domain (and, in the
+ *  time domain, one kind) with |z| > 2.5 of one sign that hold a point
+ *  beyond the critical z of the comparison c, appended to loc (count
+ *  *nloc, capacity cap; those beyond it counted in *dropped). */
+void sg_locate_into(const sg_plist_t *pl, int ch, int seg, const sg_cmp_t *c, sg_loc_t *loc, size_t *nloc,
+                    size_t cap, size_t *dropped);
+
 /** One candidate tried in a step. */
 typedef struct {
     int id;
@@ -553,6 +561,19 @@ typedef struct {
     int nested;               /**< thermal only: its warm-up fits the fit segment's time points no
                                    better than a ramp (chi-square_1 at 1 %); not simulated, the ramp stands for it */
 } sg_cand_t;
+
+/** Critical z of a candidate's acceptance tests (docs/simgap.md, section 4,
+ *  step 5): Student's t^-1(1 - alpha / (6 * 5 * 2), seeds - 1), Bonferroni
+ *  over the six channels, about five candidates and the two tests (score
+ *  and likelihood ratio), the null's spread from `seeds` twins. */
+double sg_accept_zcrit(double alpha, int seeds);
+
+/** Whether candidate cd passes the acceptance test at the critical z zacc
+ *  (sg_accept_zcrit): its score test's z (z_delta) or its likelihood-ratio
+ *  test's (z_gap) beyond zacc, and the lower end of the 68 % interval of
+ *  its explained fraction (expl_lo) above 0 where the fraction is defined
+ *  (NaN, no held-out excess: accepted on its z alone). 1 or 0. */
+int sg_cand_accepted(const sg_cand_t *cd, double zacc);
 
 /** One forward-selection step of a channel. */
 typedef struct {
@@ -615,6 +636,15 @@ typedef struct {
                                                 rate differs from the fit's (not stationary) */
     double first_t[SG_TIM_NKIND];          /**< time of the first event */
 } sg_timing_t;
+
+/** The timing domain of a log with stamps of its own (docs/simgap.md,
+ *  section 4, "Timing domain"), its segments segs, at the family-wise
+ *  level alpha: counts and z-scores per segment, the effects selected
+ *  (whole-log z beyond the one-sided critical value of the family of
+ *  three, Phi^-1(1 - alpha / 3)), their rates fitted on the fit segment and
+ *  the held-out check (|z| beyond Phi^-1(1 - alpha / 6)). A log without
+ *  stamps of its own or with fewer than 16 samples: t->have 0. */
+void sg_timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, double alpha, sg_timing_t *t);
 
 /** Whole result. */
 typedef struct {

@@ -485,9 +485,302 @@ static void test_explained_golden(void **state)
     sg_explained(&pl, real, tw, vx, sh, twb, vx, shb, S, 1.0, 1.0, &f, &lo, &hi, 7u);
     FNAV_ASSERT_CLOSE(f, cg("expl_f", 0), 1e-12, 1e-7);
     assert_true(lo <= hi);
+    {
+        /* the 68 % interval: about 16 % of the 200 bootstrap fractions
+         * lie below lo and 16 % above hi. The resamples of the twin seeds
+         * are drawn with sg_explained's own generator (its LCG, seed 7),
+         * the percentiles counted here (without ties exactly floor(0.16
+         * (nb - 1)) lie below lo; 0.03 leaves room for ties among the
+         * 462 distinct resamples of 6 seeds); a lower end at the 5th percentile
+         * (a hand-made mutant, A06 of 2026-11-29) passed every suite */
+        uint32_t st = 7u * 2654435761u + 12345u;
+        int idx[6], b, k, nb = 0, below = 0, above = 0;
+        assert_true(S <= 6);
+        for (b = 0; b < 200; b++) {
+            double ga, gb;
+            for (k = 0; k < S; k++) {
+                st = st * 1664525u + 1013904223u;
+                idx[k] = (int)((st >> 8) % (uint32_t)S);
+            }
+            ga = sg_gap_resampled(&pl, real, tw, S, idx, S, vx, sh);
+            gb = sg_gap_resampled(&pl, real, twb, S, idx, S, vx, shb);
+            if (ga - 1.0 > 0.0) {
+                const double fr = (ga - gb) / (ga - 1.0);
+                nb++;
+                below += fr < lo;
+                above += fr > hi;
+            }
+        }
+        fprintf(stderr, "explained fraction %.3f, 68 %% interval %.3f-%.3f: %d of %d resamples below, %d above\n", f,
+                lo, hi, below, nb, above);
+        assert_true(nb >= 100);
+        assert_true(fabs((double)below / (double)nb - 0.16) < 0.03);
+        assert_true(fabs((double)above / (double)nb - 0.16) < 0.03);
+    }
     Ga = cg("expl_Ga", 0);
     sg_explained(&pl, real, tw, vx, sh, twb, vx, shb, S, Ga - 1.5, 1.0, &f, &lo, &hi, 7u);
     assert_true(isnan(f) && isnan(lo) && isnan(hi));
+    sg_plist_free(&pl);
+}
+
+/* The Allan points' theory variance (docs/simgap.md, section 3: "Allan:
+ * Greenhall/NIST EDF of the overlapping estimator for the twin's noise
+ * type") takes the noise type from the slope of the twins' mean curve: the
+ * slope of log ADEV, half that of ln AVAR over ln tau. Three points
+ * (m = 4, 8, 16 at 100 Hz, 401 phase values, one block) on a twin mean of
+ * ln AVAR slope -1 (white FM, ADEV slope -1/2), 0 (flicker FM), +0.4
+ * (ADEV +0.2: flicker FM) and +1 (random-walk FM, ADEV +1/2), the twins'
+ * own spread negligible (1e-4), so sd_tot^2 = trigamma(edf / 2) of the
+ * type's overlapping-Allan EDF. The EDFs are Greenhall & Riley's basic sum
+ * computed independently in double precision by scripts/pvar_edf.py
+ * (edf(avar_taps(m), m, 401 - 2m, alpha)), exact at these m. Taking the
+ * ln AVAR slope as the ADEV slope (a hand-made mutant of 2026-11-29 that
+ * passed every suite) reads white FM as white PM (edf 200 for 65 at m = 8)
+ * and the +0.4 curve as a random walk (45 for 56). */
+static void test_allan_theory_var_noise_type(void **state)
+{
+    static const double slope[4] = {-1.0, 0.0, 0.4, 1.0};
+    /* pvar_edf.py, alpha = 0, -1, -1, -2; columns m = 4, 8, 16 */
+    static const double edf[4][3] = {{121.5102235, 65.29173919, 33.3410238},
+                                     {112.0467585, 56.31911676, 27.47995519},
+                                     {112.0467585, 56.31911676, 27.47995519},
+                                     {90.06271013, 44.76053838, 21.68113396}};
+    static const uint32_t m[3] = {4u, 8u, 16u};
+    enum { S = 8 };
+    sg_plist_t pl;
+    double real[3], tw[S * 3];
+    int c, j, s;
+    (void)state;
+    memset(&pl, 0, sizeof pl);
+    for (j = 0; j < 3; j++) {
+        sg_point_t p;
+        memset(&p, 0, sizeof p);
+        p.dom = SG_ALLAN;
+        p.ch = 0;
+        p.x = p.x_lo = p.x_hi = (double)m[j] / 100.0;
+        p.m = p.lag = m[j];
+        p.n_phase = 401u;
+        p.nblk = 1;
+        p.w = 1.0;
+        assert_int_equal(sg_plist_add(&pl, &p), 0);
+    }
+    for (c = 0; c < 4; c++) {
+        sg_cmp_t cmp;
+        for (j = 0; j < 3; j++) {
+            const double mu = slope[c] * log(pl.p[j].x);
+            real[j] = mu;
+            for (s = 0; s < S; s++) {
+                tw[s * 3 + j] = mu + 1e-4 * (double)(s - S / 2);
+            }
+        }
+        assert_int_equal(sg_compare(&pl, real, tw, S, NULL, NULL, 0.05, &cmp), 0);
+        for (j = 0; j < 3; j++) {
+            double v = 0.0, mean = 0.0;
+            for (s = 0; s < S; s++) {
+                mean += tw[s * 3 + j] / S;
+            }
+            for (s = 0; s < S; s++) {
+                v += (tw[s * 3 + j] - mean) * (tw[s * 3 + j] - mean) / (S - 1);
+            }
+            /* D = var / S + max(var, v_theory), docs/simgap.md section 3 */
+            FNAV_ASSERT_CLOSE(cmp.sd_tot[j] * cmp.sd_tot[j], v / S + gsl_sf_psi_1(0.5 * edf[c][j]), 0.0, 1e-6);
+        }
+        sg_cmp_free(&cmp);
+    }
+    sg_plist_free(&pl);
+}
+
+/* The acceptance test of a candidate (docs/simgap.md, section 4, step 5):
+ * z > t^-1(1 - alpha / (6 * 5 * 2), S - 1) for the score or the
+ * likelihood-ratio test, and the lower end of the explained fraction's
+ * 68 % interval above 0 where the held-out data hold an excess (NaN: on
+ * its z alone). The critical values are scipy's stats.t.isf(0.05 / 60,
+ * S - 1): 3.821973398 at S = 16, 4.944470404 at S = 8 (with a Bonferroni
+ * factor of 30, 3.4837 and 4.3553). Candidates built by hand sit 0.2 on
+ * either side of it. Bonferroni over the channels and candidates only
+ * (the two tests left out) and the explained-fraction condition dropped
+ * (hand-made mutants A01 and A03 of 2026-11-29) passed every suite. */
+static void test_accept_rule(void **state)
+{
+    sg_cand_t cd;
+    double zc;
+    (void)state;
+    FNAV_ASSERT_CLOSE(sg_accept_zcrit(0.05, 16), 3.821973398, 0.0, 1e-8);
+    FNAV_ASSERT_CLOSE(sg_accept_zcrit(0.05, 8), 4.944470404, 0.0, 1e-8);
+    zc = sg_accept_zcrit(0.05, 16);
+    memset(&cd, 0, sizeof cd);
+    cd.expl_lo = (double)NAN; /* no held-out excess: on its z alone */
+    cd.z_delta = zc + 0.2;
+    cd.z_gap = zc - 0.2;
+    assert_true(sg_cand_accepted(&cd, zc));
+    cd.z_delta = zc - 0.2;
+    cd.z_gap = zc + 0.2;
+    assert_true(sg_cand_accepted(&cd, zc)); /* either test accepts */
+    cd.z_gap = zc - 0.2;
+    assert_false(sg_cand_accepted(&cd, zc));
+    cd.z_delta = 3.6; /* between the factors 30 and 60 at S = 16 */
+    cd.z_gap = 0.0;
+    assert_false(sg_cand_accepted(&cd, zc));
+    /* the explained fraction's lower end: above 0, not at or below */
+    cd.z_delta = cd.z_gap = zc + 1.0;
+    cd.expl_lo = 0.3;
+    assert_true(sg_cand_accepted(&cd, zc));
+    cd.expl_lo = -0.1;
+    assert_false(sg_cand_accepted(&cd, zc));
+    cd.expl_lo = 0.0;
+    assert_false(sg_cand_accepted(&cd, zc));
+}
+
+/* The timing domain's decisions (docs/simgap.md, section 4, "Timing
+ * domain"): an effect is selected when its whole-log z lies beyond the
+ * one-sided critical value of the family of three (duplicates, drops,
+ * jitter), Phi^-1(1 - alpha / 3) = 2.128 at alpha = 0.05, and a selected
+ * one is checked on the held-out segment against the two-sided
+ * Phi^-1(1 - alpha / 6) = 2.394 (scipy's norm.isf). A 100 Hz log of 2000
+ * samples stamped on the 10 ms grid (no jitter) with one sample written
+ * twice has a duplicate z of 1.657 (the Poisson tail P(X >= 1) at the
+ * ideal clock's 0.05, scipy's norm.isf(poisson.sf(0, 0.05))): not
+ * selected, where alpha itself (a hand-made mutant, A07 of 2026-11-29,
+ * that passed every suite) reads 1.645 and selected it; two such samples
+ * have z 3.033 and are selected. */
+static void tim_log(hx_log_t *lg, int64_t *t, long n, const long *dup, int ndup)
+{
+    long k;
+    int d;
+    memset(lg, 0, sizeof *lg);
+    for (k = 0; k < n; k++) {
+        t[k] = k * 10000000LL;
+        for (d = 0; d < ndup; d++) {
+            if (k >= dup[d]) {
+                t[k] -= 10000000LL; /* sample dup[d] repeats the stamp before it */
+            }
+        }
+    }
+    lg->n = (size_t)n;
+    lg->t_ns = t;
+}
+
+static void test_timing_thresholds(void **state)
+{
+    enum { N = 2000 };
+    static int64_t t[N];
+    static const long dup[2] = {700, 1300};
+    hx_log_t lg;
+    sg_segs_t segs;
+    sg_timing_t tm;
+    (void)state;
+    sg_segs_split(N, 0.4, 1, &segs);
+    tim_log(&lg, t, N, dup, 1);
+    sg_timing_analyse(&lg, 100.0, &segs, 0.05, &tm);
+    assert_true(tm.have);
+    assert_int_equal(tm.n_dup[SG_FULL], 1);
+    assert_int_equal(tm.n_drop[SG_FULL], 0);
+    FNAV_ASSERT_CLOSE(tm.z[SG_FULL][SG_TIM_DUP], 1.656892797, 0.0, 1e-8);
+    assert_false(tm.sel[SG_TIM_DUP]);
+    assert_false(tm.significant);
+    FNAV_ASSERT_CLOSE(tm.z_crit, 2.3939798, 0.0, 1e-7);
+    tim_log(&lg, t, N, dup, 2);
+    sg_timing_analyse(&lg, 100.0, &segs, 0.05, &tm);
+    assert_int_equal(tm.n_dup[SG_FULL], 2);
+    FNAV_ASSERT_CLOSE(tm.z[SG_FULL][SG_TIM_DUP], 3.033392495, 0.0, 1e-8);
+    assert_true(tm.sel[SG_TIM_DUP]);
+    assert_true(tm.significant);
+    assert_false(tm.sel[SG_TIM_DROP] || tm.sel[SG_TIM_JITTER]);
+}
+
+/* The special estimators' evidence on a sandwich split's fit segment (two
+ * blocks; docs/simgap.md, section 4, step 1). The lattice score of the
+ * segment is the blocks' normal scores combined as Stouffer's
+ * (z_1 + z_2) / sqrt 2, N(0, 1) for continuous values as each block's is,
+ * so that the candidate's threshold (q_z beyond the point test's z_crit)
+ * keeps its level; the plain sum (a hand-made mutant, F04 of 2026-11-29,
+ * that passed every suite) has variance 2. Here values on a 0.01 lattice
+ * with noise of 0.2 steps, each block's score from sg_lattice_z
+ * (test_rayleigh_golden). The line: A sin(2 pi f t + phi), the simulator's
+ * vibration (src/fnav_imuerr.c), with A = 0.01, f = 12.3 Hz (off the FFT
+ * grid), phi = 1 rad and white noise of 1e-4 at 100 Hz is reported as its
+ * frequency, amplitude and phase at sample 0; the amplitude read as
+ * sqrt of the Hann-normalised power without its factor 2 (F03, the same
+ * round) reported A / 2. */
+static void test_evidence_lattice_and_line(void **state)
+{
+    enum { N = 20000 };
+    static double x[N];
+    const double q = 0.01, A = 0.01, f = 12.3, phi = 1.0;
+    sg_segs_t segs;
+    sg_evidence_t ev;
+    fnav_rng_t rng;
+    double z0, z1;
+    long k, lev = 0;
+    (void)state;
+    sg_segs_split(N, 0.4, 1, &segs);
+    assert_int_equal(segs.nb[SG_FIT], 2);
+    fnav_rng_seed(&rng, 41u, 3u);
+    for (k = 0; k < N; k++) {
+        lev += (long)floor(3.0 * (double)fnav_rng_uniform(&rng)) - 1;
+        x[k] = q * (double)lev + 0.2 * q * (double)fnav_rng_gauss(&rng);
+    }
+    z0 = sg_lattice_z(x + segs.start[SG_FIT][0], (size_t)segs.n[SG_FIT][0], q);
+    z1 = sg_lattice_z(x + segs.start[SG_FIT][1], (size_t)segs.n[SG_FIT][1], q);
+    assert_true(z0 > 3.0 && z1 > 3.0);
+    sg_evidence_seg(x, &segs, SG_FIT, 100.0, q, &ev);
+    FNAV_ASSERT_CLOSE(ev.q_z, (z0 + z1) / sqrt(2.0), 0.0, 1e-12);
+    for (k = 0; k < N; k++) {
+        x[k] = A * sin(2.0 * M_PI * f * (double)k / 100.0 + phi) + 1e-4 * (double)fnav_rng_gauss(&rng);
+    }
+    sg_evidence_seg(x, &segs, SG_FIT, 100.0, 0.0, &ev);
+    fprintf(stderr, "line: %.6f Hz, amplitude %.6g, phase %.4f rad, score %.1f\n", ev.tone_hz, ev.tone_amp,
+            ev.tone_phase, ev.tone_score);
+    FNAV_ASSERT_CLOSE(ev.tone_hz, f, 1e-3, 0.0);
+    FNAV_ASSERT_CLOSE(ev.tone_amp, A, 0.0, 0.01);
+    FNAV_ASSERT_CLOSE(ev.tone_phase, phi, 0.01, 0.0);
+}
+
+/* Locations (docs/simgap.md, section 3): runs of consecutive points of one
+ * channel and domain with |z| > 2.5 of one sign that contain a point
+ * beyond z_crit. Hand-made z's on eight Allan points (tau 1-8 s) against
+ * z_crit 4: 0.5, 2.0, 3.0, 6.0, 2.8, 1.8 | -3.0, -3.5. The first run is
+ * points 3-5 (tau 3-5 s, peak +6, ADEV ratio exp(dev / 2)); 1.8 ends it
+ * and 2.0 is outside; the negative run has no point beyond z_crit and is
+ * no location. Runs extended over |z| > 1.5 (a hand-made mutant, A08 of
+ * 2026-11-29, that passed every suite) gave tau 3-6 s. */
+static void test_locate_runs(void **state)
+{
+    static double z[8] = {0.5, 2.0, 3.0, 6.0, 2.8, 1.8, -3.0, -3.5};
+    sg_plist_t pl;
+    sg_cmp_t c;
+    sg_loc_t loc[4];
+    double dev[8];
+    size_t nloc = 0, dropped = 0;
+    int j;
+    (void)state;
+    memset(&pl, 0, sizeof pl);
+    memset(&c, 0, sizeof c);
+    for (j = 0; j < 8; j++) {
+        sg_point_t p;
+        memset(&p, 0, sizeof p);
+        p.dom = SG_ALLAN;
+        p.ch = 5;
+        p.x = p.x_lo = p.x_hi = (double)(j + 1);
+        p.nblk = 1;
+        assert_int_equal(sg_plist_add(&pl, &p), 0);
+        dev[j] = 0.1 * z[j];
+    }
+    c.n = 8;
+    c.z = z;
+    c.dev = dev;
+    c.z_crit = 4.0;
+    sg_locate_into(&pl, 5, SG_HOLD, &c, loc, &nloc, 4, &dropped);
+    assert_int_equal((int)nloc, 1);
+    assert_int_equal((int)dropped, 0);
+    assert_int_equal(loc[0].dom, SG_ALLAN);
+    assert_int_equal(loc[0].ch, 5);
+    assert_int_equal(loc[0].seg, SG_HOLD);
+    assert_int_equal(loc[0].npts, 3);
+    FNAV_ASSERT_CLOSE(loc[0].x_lo, 3.0, 0.0, 0.0);
+    FNAV_ASSERT_CLOSE(loc[0].x_hi, 5.0, 0.0, 0.0);
+    FNAV_ASSERT_CLOSE(loc[0].peak_z, 6.0, 0.0, 0.0);
+    FNAV_ASSERT_CLOSE(loc[0].ratio, exp(0.5 * 0.6), 0.0, 1e-12);
     sg_plist_free(&pl);
 }
 
@@ -881,7 +1174,7 @@ static void test_time_steps_window(void **state)
  * a warm-up's amplitude and time constant and a ramp's signed rate come
  * back from the features of a noise-free log (the statistics are sample
  * sums, the model's expectation a quadrature: they agree to 1e-3). */
-static void fit_drift_on(const sg_chmodel_t *truth, const int *with, int nwith, sg_fit_t *f)
+static void drift_table(const sg_chmodel_t *truth, sg_table_t *tb)
 {
     const double fs = 100.0;
     const long n = 300000;
@@ -889,13 +1182,10 @@ static void fit_drift_on(const sg_chmodel_t *truth, const int *with, int nwith, 
     sg_segs_t segs;
     sg_segacc_t a;
     sg_plist_t pl;
-    sg_table_t tb;
-    sg_evidence_t ev;
     static double vals[1024];
     long cnt, k;
     int b;
     memset(&pl, 0, sizeof pl);
-    memset(&ev, 0, sizeof ev);
     sg_segs_split(n, 0.6, 1, &segs);
     assert_int_equal(sg_segacc_init(&a, &fc, &segs, SG_FIT, 0.0), 0);
     for (b = 0; b < segs.nb[SG_FIT]; b++) {
@@ -908,10 +1198,18 @@ static void fit_drift_on(const sg_chmodel_t *truth, const int *with, int nwith, 
     cnt = sg_segacc_finish(&a, 3, &pl, vals, 1024);
     sg_segacc_free(&a);
     assert_true(cnt > 0);
-    sg_table_from(&pl, vals, 3, fs, &segs, SG_FIT, &tb);
-    assert_int_equal(tb.nt, 5); /* trend and curvature of both blocks, their level difference */
-    assert_int_equal(sg_fit_model(&tb, 0.0, with, nwith, &ev, 10.0, f), 0);
+    sg_table_from(&pl, vals, 3, fs, &segs, SG_FIT, tb);
+    assert_int_equal(tb->nt, 5); /* trend and curvature of both blocks, their level difference */
     sg_plist_free(&pl);
+}
+
+static void fit_drift_on(const sg_chmodel_t *truth, const int *with, int nwith, sg_fit_t *f)
+{
+    sg_table_t tb;
+    sg_evidence_t ev;
+    memset(&ev, 0, sizeof ev);
+    drift_table(truth, &tb);
+    assert_int_equal(sg_fit_model(&tb, 0.0, with, nwith, &ev, 10.0, f), 0);
 }
 
 static void test_time_fit_drifts(void **state)
@@ -945,6 +1243,51 @@ static void test_time_fit_drifts(void **state)
     k = sg_model_find(&f.model, FNAV_EFFECT_RAMP);
     assert_true(k >= 0);
     FNAV_ASSERT_CLOSE(f.model.e[k].p[0], -3e-7, 0.0, 1e-3);
+}
+
+/* The warm-up's standard error (hx_simgap_fit.c time_fit): the data fix
+ * the amplitude A = coef x rise, the model holds coef = A / rise, so its
+ * standard error is A's over rise. With the time points' weights absolute
+ * (tw_twins: 1 / variances, here 1 / (0.1 y)^2 for the warm-up of
+ * test_time_fit_drifts) and T at its fitted value, A is a one-parameter
+ * weighted least squares, whose relative standard error is
+ * 1 / sqrt(sum w yhat^2) (se^2 = 1 / sum w x^2, yhat = A x); the fitted
+ * values are the data to the pseudo-noise, so 1 / sqrt(sum w y^2) = 1 /
+ * sqrt(5 x 100) = 0.0447 within 1 %. The error of A left undivided (a
+ * hand-made mutant, F06 of 2026-11-29, that passed every suite) is 10
+ * times that (the catalogue's rise of 10). */
+static void test_time_fit_thermal_se(void **state)
+{
+    sg_chmodel_t m;
+    sg_effect_t e;
+    sg_table_t tb;
+    sg_evidence_t ev;
+    sg_fit_t f;
+    int with[1] = {FNAV_EFFECT_THERMAL}, k;
+    double swy2 = 0.0;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    memset(&e, 0, sizeof e);
+    memset(&ev, 0, sizeof ev);
+    e.id = FNAV_EFFECT_THERMAL;
+    e.p[0] = -2e-4;
+    e.p[1] = 10.0;
+    e.p[2] = 500.0;
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    drift_table(&m, &tb);
+    tb.tw_twins = 1;
+    for (k = 0; k < tb.nt; k++) {
+        tb.tw[k] = 1.0 / (0.01 * tb.ty[k] * tb.ty[k]);
+        swy2 += tb.tw[k] * tb.ty[k] * tb.ty[k];
+    }
+    assert_int_equal(sg_fit_model(&tb, 0.0, with, 1, &ev, 10.0, &f), 0);
+    k = sg_model_find(&f.model, FNAV_EFFECT_THERMAL);
+    assert_true(k >= 0);
+    FNAV_ASSERT_CLOSE(f.model.e[k].p[1], 10.0, 0.0, 0.0);
+    FNAV_ASSERT_CLOSE(f.model.e[k].p[0], -2e-4, 0.0, 1e-2);
+    fprintf(stderr, "warm-up coef %.6g, se %.4g, relative %.5f against 1 / sqrt(sum w y^2) = %.5f\n",
+            f.model.e[k].p[0], f.model.e[k].se[0], f.model.e[k].se[0] / fabs(f.model.e[k].p[0]), 1.0 / sqrt(swy2));
+    FNAV_ASSERT_CLOSE(f.model.e[k].se[0] / fabs(f.model.e[k].p[0]), 1.0 / sqrt(swy2), 0.0, 0.01);
 }
 
 /* The spread a random drift gives the time points (the prescreen's
@@ -1985,12 +2328,18 @@ int main(void)
         cmocka_unit_test(test_rayleigh_golden),
         cmocka_unit_test(test_compare_twin_only_level),
         cmocka_unit_test(test_compare_golden),
+        cmocka_unit_test(test_allan_theory_var_noise_type),
+        cmocka_unit_test(test_accept_rule),
+        cmocka_unit_test(test_timing_thresholds),
+        cmocka_unit_test(test_evidence_lattice_and_line),
+        cmocka_unit_test(test_locate_runs),
         cmocka_unit_test(test_explained_golden),
         cmocka_unit_test(test_split_disjoint),
         cmocka_unit_test(test_time_domain_stats),
         cmocka_unit_test(test_time_steps_window),
         cmocka_unit_test(test_time_domain_model),
         cmocka_unit_test(test_time_fit_drifts),
+        cmocka_unit_test(test_time_fit_thermal_se),
         cmocka_unit_test(test_jumps_rate_detection),
         cmocka_unit_test(test_time_var_rrw),
         cmocka_unit_test(test_time_deviance),
