@@ -671,6 +671,15 @@ static void test_totdev_edf(void **state)
     FNAV_ASSERT_CLOSE(hx_dev_edf(HX_DEV_MTOTDEV, 0, 10u, 1001u), 1.10 * 100.1 - 1.20, 0.0, 1e-12);
     FNAV_ASSERT_CLOSE(hx_dev_edf(HX_DEV_TTOTDEV, -2, 10u, 1001u), 0.75 * 100.1 - 0.31, 0.0, 1e-12);
     assert_true(hx_dev_edf(HX_DEV_MTOTDEV, -3, 10u, 1001u) < 0.0);
+    /* TOTDEV: SP 1065 Table 7, edf = b n / m - c for white, flicker and
+     * random-walk FM (b, c = 1.50, 0; 1.17, 0.22; 0.93, 0.36); above alpha 0
+     * the overlapping AVAR's. A hand-made mutant dropping the flicker row's
+     * c passed every suite (fails here, checked) */
+    FNAV_ASSERT_CLOSE(hx_dev_edf(HX_DEV_TOTDEV, 0, 10u, 1001u), 1.50 * 100.1, 0.0, 1e-12);
+    FNAV_ASSERT_CLOSE(hx_dev_edf(HX_DEV_TOTDEV, -1, 10u, 1001u), 1.17 * 100.1 - 0.22, 0.0, 1e-12);
+    FNAV_ASSERT_CLOSE(hx_dev_edf(HX_DEV_TOTDEV, -2, 10u, 1001u), 0.93 * 100.1 - 0.36, 0.0, 1e-12);
+    assert_true(hx_dev_edf(HX_DEV_TOTDEV, 1, 10u, 1001u) == fnav_allan_edf_var(1, 2, 0, 10u, 1001u, 1));
+    assert_true(hx_dev_edf(HX_DEV_TOTDEV, -3, 10u, 1001u) < 0.0);
     assert_true(hx_dev_edf(HX_DEV_MTOTDEV, 0, 0u, 1001u) < 0.0);
     assert_true(hx_dev_edf(HX_DEV_HTOTDEV, -4, 16u, 1001u) == hx_dev_edf(HX_DEV_OHDEV, -4, 16u, 1001u));
     assert_true(hx_dev_edf(HX_DEV_HTOTDEV, 0, 16u, 1001u) == hx_dev_edf(HX_DEV_OHDEV, 0, 16u, 1001u));
