@@ -20,6 +20,14 @@ golden values of tests/test_allan.c and the figures in docs/allan.md
   (alpha = 1) at points where Greenhall & Riley's algorithm uses its
   approximation (J > 100 lags, r = M/m > 3: 1/edf = (a0 - a1/r) / (b^2 r),
   b = b0 + b1 ln m, their case 3), which it must approach within a few %;
+- `--greenhall-fm-table` the same for the table of their case 2 (large m,
+  1/edf = (a0 - a1/r) / r) at r = M/m just above d + 1, where a1 matters
+  most: flicker FM with the Allan filter (d = 2), white FM with the
+  overlapping Hadamard filter (1, -3, 3, -1 at lags 0, m, 2m, 3m; d = 3,
+  4m lags);
+- `--greenhall-mod-table` the same for their table 1 (modified, case 1,
+  1/edf = (a0 - a1/r) / r) with the modified Allan filter (the Allan taps
+  convolved with m ones) at r just above 3;
 - `--mc R` checks the model against simulation: R records of white phase,
   white FM and random-walk FM noise, the PVAR of each, and the EDF
   2 mean^2 / var of the R estimates (relative standard error about
@@ -31,7 +39,7 @@ with n - 2m + 1 terms against SigmaTheta's values (allan_reference/nbs14).
 `--nbs14-10` prints PDEV of NIST's 10-point set at m = 2 from the definition
 (no published value; at m = 1 PDEV is the overlapping ADEV, 91.22945).
 
-Usage: /usr/bin/python3 scripts/pvar_edf.py [--greenhall] [--greenhall-table] [--mc R] [--nbs14-10] [--terms DATA_DIR]
+Usage: /usr/bin/python3 scripts/pvar_edf.py [--greenhall] [--greenhall-table] [--greenhall-fm-table] [--greenhall-mod-table] [--mc R] [--nbs14-10] [--terms DATA_DIR]
 """
 import math
 import os
@@ -78,15 +86,26 @@ def pvar_taps(m):
     return np.concatenate([c, -c])
 
 
+def hvar_taps(m):
+    w = np.zeros(3 * m + 1)
+    w[0], w[m], w[2 * m], w[3 * m] = 1.0, -3.0, 3.0, -1.0
+    return w
+
+
+def mvar_taps(m):
+    """The modified Allan filter: m second differences of lag m summed (3m taps)."""
+    return np.convolve(avar_taps(m), np.ones(m))
+
+
 def avar_taps(m):
     w = np.zeros(2 * m + 1)
     w[0], w[m], w[2 * m] = 1.0, -2.0, 1.0
     return w
 
 
-def edf(taps, m, M, alpha):
+def edf(taps, m, M, alpha, lags=3):
     L = len(taps)
-    J = int(min(M, 3 * m))
+    J = int(min(M, lags * m))
     q = np.correlate(taps, taps, "full")  # lags -(L - 1) .. L - 1
     t0 = -(L - 1)
     g = np.array([gacv(float(t), alpha) for t in range(t0, J + L)])  # gacv at t0 ..
@@ -133,6 +152,19 @@ def main():
         print("overlapping Allan filter, alpha 1, exact sum (compare fnav_allan_edf_var(1, 2, 0, m, n, 1)):")
         print(" ".join("%d/%d: %.10g" % (m, n, edf(avar_taps(m), m, n - 2 * m, 1))
                        for m, n in ((40, 1001), (64, 3001), (128, 4001))))
+    if "--greenhall-fm-table" in args:
+        # r = M/m just above d + 1, where a1/r matters most
+        print("overlapping Allan filter, alpha -1, exact sum (compare fnav_allan_edf_var(-1, 2, 0, m, n, 1)):")
+        print(" ".join("%d/%d: %.10g" % (m, n, edf(avar_taps(m), m, n - 2 * m, -1))
+                       for m, n in ((40, 206), (64, 332), (128, 648), (40, 600))))
+        print("overlapping Hadamard filter, alpha 0, exact sum to 4m lags (compare fnav_allan_edf_var(0, 3, 0, m, n, 1)):")
+        print(" ".join("%d/%d: %.10g" % (m, n, edf(hvar_taps(m), m, n - 3 * m, 0, 4))
+                       for m, n in ((40, 330), (64, 527), (128, 1050))))
+    if "--greenhall-mod-table" in args:
+        print("modified Allan filter, exact sum (compare fnav_allan_edf_var(alpha, 2, 1, m, n, 1)):")
+        for alpha in (2, 0, -2):
+            print(" ".join("%d/%d: %.10g" % (m, n, edf(mvar_taps(m), m, n - 3 * m + 1, alpha))
+                           for m, n in ((40, 250), (64, 400), (128, 800))), " alpha", alpha)
     if "--mc" in args:
         reps = int(args[args.index("--mc") + 1])
         rng = np.random.default_rng(1)
@@ -157,7 +189,7 @@ def main():
                 continue
             dev = [math.sqrt(pvar_record(x, m, k)) for k in (n - 2 * m, n - 2 * m + 1)]
             print("%3d  %+.1e  %+.1e" % (m, dev[0] / want - 1.0, dev[1] / want - 1.0))
-    if any(a in args for a in ("--greenhall", "--greenhall-table", "--mc", "--nbs14-10", "--terms")):
+    if any(a in args for a in ("--greenhall", "--greenhall-table", "--greenhall-fm-table", "--greenhall-mod-table", "--mc", "--nbs14-10", "--terms")):
         return
     print("/* scripts/pvar_edf.py: PVAR EDF, rows alpha = 2 .. -2, columns (m, n_phase) =")
     print(" * " + ", ".join("(%d, %d)" % p for p in POINTS) + " */")

@@ -671,6 +671,15 @@ static void test_totdev_edf(void **state)
     FNAV_ASSERT_CLOSE(hx_dev_edf(HX_DEV_MTOTDEV, 0, 10u, 1001u), 1.10 * 100.1 - 1.20, 0.0, 1e-12);
     FNAV_ASSERT_CLOSE(hx_dev_edf(HX_DEV_TTOTDEV, -2, 10u, 1001u), 0.75 * 100.1 - 0.31, 0.0, 1e-12);
     assert_true(hx_dev_edf(HX_DEV_MTOTDEV, -3, 10u, 1001u) < 0.0);
+    /* TOTDEV: SP 1065 Table 7, edf = b n / m - c for white, flicker and
+     * random-walk FM (b, c = 1.50, 0; 1.17, 0.22; 0.93, 0.36); above alpha 0
+     * the overlapping AVAR's. A hand-made mutant dropping the flicker row's
+     * c passed every suite (fails here, checked) */
+    FNAV_ASSERT_CLOSE(hx_dev_edf(HX_DEV_TOTDEV, 0, 10u, 1001u), 1.50 * 100.1, 0.0, 1e-12);
+    FNAV_ASSERT_CLOSE(hx_dev_edf(HX_DEV_TOTDEV, -1, 10u, 1001u), 1.17 * 100.1 - 0.22, 0.0, 1e-12);
+    FNAV_ASSERT_CLOSE(hx_dev_edf(HX_DEV_TOTDEV, -2, 10u, 1001u), 0.93 * 100.1 - 0.36, 0.0, 1e-12);
+    assert_true(hx_dev_edf(HX_DEV_TOTDEV, 1, 10u, 1001u) == fnav_allan_edf_var(1, 2, 0, 10u, 1001u, 1));
+    assert_true(hx_dev_edf(HX_DEV_TOTDEV, -3, 10u, 1001u) < 0.0);
     assert_true(hx_dev_edf(HX_DEV_MTOTDEV, 0, 0u, 1001u) < 0.0);
     assert_true(hx_dev_edf(HX_DEV_HTOTDEV, -4, 16u, 1001u) == hx_dev_edf(HX_DEV_OHDEV, -4, 16u, 1001u));
     assert_true(hx_dev_edf(HX_DEV_HTOTDEV, 0, 16u, 1001u) == hx_dev_edf(HX_DEV_OHDEV, 0, 16u, 1001u));
@@ -692,6 +701,55 @@ static void test_edf_flicker_pm_table(void **state)
     (void)state;
     for (i = 0; i < 3; i++) {
         FNAV_ASSERT_CLOSE(fnav_allan_edf_var(1, 2, 0, pt[i][0], pt[i][1], 1), exact[i], 0.0, 0.03);
+    }
+}
+
+/* Greenhall & Riley's case 2 (unmodified, alpha <= 0, J > 100 lags, r =
+ * M/m > d + 1): 1/edf = (a0 - a1/r) / r from their table 2, against the exact
+ * basic sum over all lags that scripts/pvar_edf.py --greenhall-fm-table
+ * computes from the filter's taps (no code shared with the C), at r just
+ * above d + 1 where a1 weighs most. Flicker FM with the Allan filter (d = 2):
+ * the table is 0.13 % from the sum at most here, asserted at 1 %; white FM
+ * with the overlapping Hadamard filter (d = 3): 2.7 %, 1.7 %, 0.9 %,
+ * asserted at 4 %. A hand-made mutant of the flicker FM row (a1 0.375 ->
+ * 0.575: +9.5 %) passed every suite and fails here (checked); one of the
+ * white FM d = 3 row (a1 0.5 -> 0.05: -11 %) fails here and in Stable32's
+ * HDEV intervals (test_phasedat_other_deviations). */
+static void test_edf_case2_table(void **state)
+{
+    static const uint32_t fm[4][2] = { { 40u, 206u }, { 64u, 332u }, { 128u, 648u }, { 40u, 600u } };
+    static const double fm_exact[4] = { 4.292301738, 4.337218509, 4.195650285, 15.77540115 };
+    static const uint32_t hd[3][2] = { { 40u, 330u }, { 64u, 527u }, { 128u, 1050u } };
+    static const double hd_exact[3] = { 7.48648413, 7.542237221, 7.567343772 };
+    int i;
+    (void)state;
+    for (i = 0; i < 4; i++) {
+        FNAV_ASSERT_CLOSE(fnav_allan_edf_var(-1, 2, 0, fm[i][0], fm[i][1], 1), fm_exact[i], 0.0, 0.01);
+    }
+    for (i = 0; i < 3; i++) {
+        FNAV_ASSERT_CLOSE(fnav_allan_edf_var(0, 3, 0, hd[i][0], hd[i][1], 1), hd_exact[i], 0.0, 0.04);
+    }
+}
+
+/* Greenhall & Riley's case 1 (modified: MDEV, TDEV) above 100 lags with
+ * r = M/m > 3: 1/edf = (a0 - a1/r) / r from their table 1, against the
+ * exact basic sum for the modified Allan filter (the Allan taps convolved
+ * with m ones) from scripts/pvar_edf.py --greenhall-mod-table. The table is
+ * within 0.1 % of it here (measured), asserted at 1 %. Hand-made mutants of
+ * a1 (white PM 0.5 -> 0.05: +18 %; random-walk FM 0.535 -> 0.353: -4.6 %)
+ * passed every suite and fail here (checked). */
+static void test_edf_modified_table(void **state)
+{
+    static const uint32_t pt[3][2] = { { 40u, 250u }, { 64u, 400u }, { 128u, 800u } };
+    static const double exact[3][3] = { { 5.23380511, 5.225709189, 5.217823017 },
+                                        { 3.862128278, 3.853579243, 3.846426253 },
+                                        { 2.875951018, 2.868949704, 2.863098798 } };
+    int a, i;
+    (void)state;
+    for (a = 0; a < 3; a++) {
+        for (i = 0; i < 3; i++) {
+            FNAV_ASSERT_CLOSE(fnav_allan_edf_var(2 - 2 * a, 2, 1, pt[i][0], pt[i][1], 1), exact[a][i], 0.0, 0.01);
+        }
     }
 }
 
@@ -1137,6 +1195,23 @@ static void test_noise_from_slope(void **state)
     assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(1.1)), FNAV_ALLAN_NOISE_RAMP);
     assert_int_equal(fnav_allan_noise_from_slope((fnav_real_t)NAN), FNAV_ALLAN_NOISE_UNKNOWN);
     assert_int_equal(fnav_allan_noise_alpha(FNAV_ALLAN_NOISE_FLICKER), -1);
+    /* the nearest of the power-law slopes -1, -1/2, 0, +1/2 (docs/allan.md):
+     * the boundaries sit half way, at -3/4, -1/4, +1/4 and +3/4. A hand-made
+     * mutant moving -1/4 to -0.35 passed every suite (fails here, checked) */
+    assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(-0.8)), FNAV_ALLAN_NOISE_QUANT);
+    assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(-0.7)), FNAV_ALLAN_NOISE_WHITE);
+    assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(-0.3)), FNAV_ALLAN_NOISE_WHITE);
+    assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(-0.2)), FNAV_ALLAN_NOISE_FLICKER);
+    assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(0.2)), FNAV_ALLAN_NOISE_FLICKER);
+    assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(0.3)), FNAV_ALLAN_NOISE_RRW);
+    assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(0.7)), FNAV_ALLAN_NOISE_RRW);
+    assert_int_equal(fnav_allan_noise_from_slope(FNAV_R(0.8)), FNAV_ALLAN_NOISE_RAMP);
+    /* S_y ~ f^alpha (SP 1065 table 1): white phase +2, white FM 0, flicker
+     * FM -1, random-walk FM -2; a mutant giving quantisation alpha = 1
+     * passed every suite (fails here, checked) */
+    assert_int_equal(fnav_allan_noise_alpha(FNAV_ALLAN_NOISE_QUANT), 2);
+    assert_int_equal(fnav_allan_noise_alpha(FNAV_ALLAN_NOISE_WHITE), 0);
+    assert_int_equal(fnav_allan_noise_alpha(FNAV_ALLAN_NOISE_RRW), -2);
     assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_RRW), "rate-random-walk");
 }
 
@@ -1464,6 +1539,48 @@ static void test_sim_statistics(void **state)
     assert_int_equal(hx_noise_sim_init(&s, &m, 100.0, 3), -1);
 }
 
+/* The simulator's quantisation and rate-random-walk terms against the model
+ * they simulate (docs/allan.md, "Fit"): AVAR = 3 Q^2 f_s^2 / m^2 and
+ * K^2 (2 m^2 + 1) / (6 m f_s), exact for the discrete processes (e_k =
+ * (x_k - x_{k-1}) f_s with x_k ~ N(0, Q^2); a walk of step K / sqrt(f_s)).
+ * Overlapping AVAR of 400,000 samples: measured +0.20 %, +0.40 %
+ * (quantisation, m = 1, 4) and +0.03 % (RRW, m = 10); asserted at 5 %. Hand-made
+ * mutants scaling either step by f_s (off by 1e4) passed every suite (only
+ * white + AR(1) was simulated here) and fail now (checked). */
+static void test_sim_quant_rrw(void **state)
+{
+    const double fs = 100.0, Q = 1e-3, K = 1e-2;
+    const size_t n = 400000;
+    double *x = (double *)malloc((n + 1u) * sizeof *x);
+    int kind;
+    (void)state;
+    assert_non_null(x);
+    for (kind = 0; kind < 2; kind++) {
+        hx_noise_model_t m = { 0.0, 0.0, 0.0, 0.0, 0.0 };
+        hx_noise_sim_t s;
+        uint32_t terms;
+        size_t k;
+        if (kind == 0) {
+            m.quant = Q;
+        } else {
+            m.rrw = K;
+        }
+        assert_int_equal(hx_noise_sim_init(&s, &m, fs, 11u + (unsigned long)kind), 0);
+        x[0] = 0.0;
+        for (k = 0; k < n; k++) {
+            x[k + 1u] = x[k] + hx_noise_sim_next(&s);
+        }
+        hx_noise_sim_free(&s);
+        if (kind == 0) {
+            FNAV_ASSERT_CLOSE(hx_allan_avar_record(x, n + 1u, 1u, 1, &terms), 3.0 * Q * Q * fs * fs, 0.0, 0.05);
+            FNAV_ASSERT_CLOSE(hx_allan_avar_record(x, n + 1u, 4u, 1, &terms), 3.0 * Q * Q * fs * fs / 16.0, 0.0, 0.05);
+        } else {
+            FNAV_ASSERT_CLOSE(hx_allan_avar_record(x, n + 1u, 10u, 1, &terms), K * K * 201.0 / (60.0 * fs), 0.0, 0.05);
+        }
+    }
+    free(x);
+}
+
 /* ------------------------------------------------------------ paper tables, profiles */
 
 /* The built-in profiles are the paper's Tables IV-VI (a few cells checked
@@ -1748,6 +1865,61 @@ static void test_nonoverlap_count_end(void **state)
     }
 }
 
+/* Level-0 tau of 241 .. 255 samples (2 tau + FNAV_ALLAN_BLOCK > RING0: too
+ * long for the block sums, so push_rare() adds their terms one push at a
+ * time) against the textbook sums on a long double phase: the default grid
+ * has no such tau, and a hand-made mutant taking the non-overlapping terms at
+ * end indices n % m == 1 instead of 0 for them passed every suite (fails
+ * here, checked). */
+#if FNAV_USE_DOUBLE
+#define LATE_TOL 1e-9
+#else
+#define LATE_TOL 1e-4
+#endif
+
+static void test_late_level0_points(void **state)
+{
+    static const uint32_t tau[4] = { 100u, 241u, 250u, 255u };
+    static fnav_allan_t a;
+    static long double x[3001];
+    const fnav_allan_config_t cfg = { tau, 4 };
+    const size_t n = 3000;
+    size_t i, k;
+    (void)state;
+    assert_true(2u * tau[1] + FNAV_ALLAN_BLOCK > FNAV_ALLAN_RING0); /* the late case */
+    assert_true(2u * tau[0] + FNAV_ALLAN_BLOCK <= FNAV_ALLAN_RING0);
+    assert_int_equal(fnav_allan_init(&a, &cfg), FNAV_OK);
+    g_xs = 88172645463325252ull;
+    x[0] = 0.0L;
+    for (i = 0; i < n; i++) {
+        const fnav_real_t y = (fnav_real_t)xs_uniform();
+        assert_int_equal(fnav_allan_push(&a, y), FNAV_OK);
+        x[i + 1u] = x[i] + (long double)y;
+    }
+    for (k = 0; k < 4; k++) {
+        const size_t m = tau[k];
+        long double so = 0.0L, sn = 0.0L;
+        size_t to = 0, tn = 0;
+        fnav_allan_result_t r;
+        for (i = 0; i + 2u * m <= n; i++) {
+            const long double d = x[i + 2u * m] - 2.0L * x[i + m] + x[i];
+            so += d * d;
+            to++;
+            if (i % m == 0u) {
+                sn += d * d;
+                tn++;
+            }
+        }
+        assert_int_equal(fnav_allan_get(&a, k, &r), FNAV_OK);
+        assert_int_equal(r.level, 0);
+        assert_int_equal(r.terms, to);
+        assert_int_equal(r.terms_nonoverlap, tn);
+        FNAV_ASSERT_CLOSE(r.avar, (double)(so / (2.0L * (long double)(m * m) * (long double)to)), 0.0, LATE_TOL);
+        FNAV_ASSERT_CLOSE(r.avar_nonoverlap, (double)(sn / (2.0L * (long double)(m * m) * (long double)tn)), 0.0,
+                          LATE_TOL);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1775,7 +1947,11 @@ int main(void)
         cmocka_unit_test(test_config_errors),
         cmocka_unit_test(test_bad_samples_leave_state),
         cmocka_unit_test(test_grid),
+        cmocka_unit_test(test_edf_case2_table),
+        cmocka_unit_test(test_edf_modified_table),
+        cmocka_unit_test(test_sim_quant_rrw),
         cmocka_unit_test(test_noise_from_slope),
+        cmocka_unit_test(test_late_level0_points),
         cmocka_unit_test(test_noise_types_simulated),
         cmocka_unit_test(test_paper_identification_arithmetic),
         cmocka_unit_test(test_model_avar_exact),

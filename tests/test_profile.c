@@ -221,6 +221,35 @@ static void test_file_round_trip(void **state)
     fclose(f);
     assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
     assert_non_null(strstr(err, "rate_hz given twice"));
+    /* a noise key given twice too, and rate_hz above 1e6 Hz
+     * (profile-format.md: (0, 1e6]); 1e6 itself is taken. A rate written
+     * at full float precision reads back exactly (%.9g: 9 digits carry any
+     * float). Hand-made mutants dropping the twice check for noise keys, the
+     * 1e6 bound or writing rate_hz with 4 digits passed every suite (fail
+     * here, checked) */
+    assert_int_equal(hx_profile_write(path, &a, "twice", err, sizeof err), 0);
+    f = fopen(path, "a");
+    assert_non_null(f);
+    fputs("gyro_tau_s = 1 1 1\n", f);
+    fclose(f);
+    assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
+    assert_non_null(strstr(err, "gyro_tau_s given twice"));
+    {
+        static const double rates[3] = { 1e6, 1.0000001e6, 2e6 };
+        int k;
+        for (k = 0; k < 3; k++) {
+            fnav_profile_t c = a;
+            c.rate_hz = (fnav_real_t)rates[k];
+            assert_int_equal(hx_profile_write(path, &c, "rate", err, sizeof err), 0);
+            assert_int_equal(hx_profile_read(path, &b, err, sizeof err), k == 0 ? 0 : -1);
+        }
+        assert_non_null(strstr(err, "rate_hz"));
+        a.rate_hz = FNAV_R(199.123459);
+        assert_int_equal(hx_profile_write(path, &a, "rate", err, sizeof err), 0);
+        assert_int_equal(hx_profile_read(path, &b, err, sizeof err), 0);
+        assert_true(b.rate_hz == a.rate_hz);
+        a.rate_hz = FNAV_R(200.0);
+    }
     /* a line of 511 characters is allowed (profile-format.md), also with
      * CR LF; 512 is too long (510 was the most until 2026-11-28) */
     {

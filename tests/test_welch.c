@@ -370,6 +370,15 @@ static void test_bandwidth_analytic(void **state)
     FNAV_ASSERT_CLOSE(out.total, 4.0 * 12.8125, 0.0, 1e-6);
     FNAV_ASSERT_CLOSE(ccdf[8], 1.0, 0.0, 1e-6);
     FNAV_ASSERT_CLOSE(ccdf[9], 0.0, 1e-6, 0.0);
+    /* a tone in the Nyquist bin: that bin ends at fmax (31.5 df .. 32 df),
+     * so 95 % of it is reached at 31.5 df + 0.95 * df / 2. A hand-made
+     * mutant giving the last bin a whole width (to 32.5 df, beyond fmax)
+     * passed every suite (fails here, checked) */
+    p[9] = FNAV_R(0.0);
+    p[32] = FNAV_R(4.0);
+    assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_OK);
+    FNAV_ASSERT_CLOSE(out.bandwidth_hz, (31.5 + 0.95 * 0.5) * 12.8125, 0.0, 1e-6);
+    p[32] = FNAV_R(0.0);
     /* equal tones in bins 2 and 20: the crossing is 90 % into bin 20 */
     p[9] = FNAV_R(0.0);
     p[2] = FNAV_R(1.0);
