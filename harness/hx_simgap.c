@@ -746,6 +746,11 @@ int sg_cand_accepted(const sg_cand_t *cd, double zacc)
     return (cd->z_delta > zacc || cd->z_gap > zacc) && !(cd->expl_lo <= 0.0);
 }
 
+int sg_selection_stops(int step, int held_significant)
+{
+    return step > 0 && !held_significant;
+}
+
 /* Forward selection on one channel. */
 static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_t *fc, const sg_table_t *tab,
                      double alpha, hx_progress_t *prog, double *pdone)
@@ -793,7 +798,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
         st->selected = -1;
         st->G_hold_before = ccur[SG_HOLD].G;
         st->G_fit_before = ccur[SG_FIT].G;
-        if (step > 0 && !ccur[SG_HOLD].significant) {
+        if (sg_selection_stops(step, ccur[SG_HOLD].significant)) {
             break;
         }
         (void)zacc;

@@ -575,6 +575,14 @@ double sg_accept_zcrit(double alpha, int seeds);
  *  (NaN, no held-out excess: accepted on its z alone). 1 or 0. */
 int sg_cand_accepted(const sg_cand_t *cd, double zacc);
 
+/** Stopping rule (a) of the forward selection (docs/simgap.md, section 4,
+ *  "Stopping rule"): 1 when a step has been taken (step > 0) and the
+ *  current model's held-out gap is no longer significant
+ *  (held_significant 0), else 0. The first step (step 0) is always tried:
+ *  a candidate's held-out tests over both folds may confirm an effect
+ *  whose middle shows no excess (accepted on its z alone). */
+int sg_selection_stops(int step, int held_significant);
+
 /** One forward-selection step of a channel. */
 typedef struct {
     int ncand;

@@ -631,6 +631,25 @@ static void test_accept_rule(void **state)
     assert_false(sg_cand_accepted(&cd, zc));
 }
 
+/* The forward selection's stopping rule (docs/simgap.md, section 4,
+ * "Stopping rule", (a)): it stops once a step has been taken and the
+ * current model's held-out gap is no longer significant (within the 1 -
+ * alpha band of the twin-vs-twin null). The first step is tried whatever
+ * the baseline's held-out gap: a candidate's held-out tests over both
+ * folds may confirm an effect whose middle shows no excess (step 5,
+ * accepted on its z alone). Stopping only from the second step on
+ * (hand-made mutant A02 of 2026-11-29, step > 1) passed every suite. */
+static void test_selection_stops(void **state)
+{
+    (void)state;
+    assert_int_equal(sg_selection_stops(0, 0), 0); /* baseline within noise: still tried */
+    assert_int_equal(sg_selection_stops(0, 1), 0);
+    assert_int_equal(sg_selection_stops(1, 0), 1); /* one effect taken, gap gone: stop */
+    assert_int_equal(sg_selection_stops(1, 1), 0);
+    assert_int_equal(sg_selection_stops(2, 0), 1);
+    assert_int_equal(sg_selection_stops(2, 1), 0);
+}
+
 /* The timing domain's decisions (docs/simgap.md, section 4, "Timing
  * domain"): an effect is selected when its whole-log z lies beyond the
  * one-sided critical value of the family of three (duplicates, drops,
@@ -2330,6 +2349,7 @@ int main(void)
         cmocka_unit_test(test_compare_golden),
         cmocka_unit_test(test_allan_theory_var_noise_type),
         cmocka_unit_test(test_accept_rule),
+        cmocka_unit_test(test_selection_stops),
         cmocka_unit_test(test_timing_thresholds),
         cmocka_unit_test(test_evidence_lattice_and_line),
         cmocka_unit_test(test_locate_runs),
