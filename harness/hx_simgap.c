@@ -751,6 +751,12 @@ int sg_selection_stops(int step, int held_significant)
     return step > 0 && !held_significant;
 }
 
+int sg_thermal_nested(double q_ramp, double q_thermal)
+{
+    const double qr = q_ramp, qt = q_thermal;
+    return qr == qr && qt == qt && qr - qt < gsl_cdf_chisq_Qinv(0.01, 1.0);
+}
+
 /* Forward selection on one channel. */
 static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_t *fc, const sg_table_t *tab,
                      double alpha, hx_progress_t *prog, double *pdone)
@@ -814,10 +820,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
          * segment's trends, curvatures and level do not need the curvature
          * (the warm-up's fit beats the ramp's by less than chi-square_1 at
          * 1 %), the warm-up is not simulated: the ramp stands for it */
-        {
-            const double qr = sg_time_fit_q(tab, 0), qt = sg_time_fit_q(tab, 1);
-            th_nested = qr == qr && qt == qt && qr - qt < gsl_cdf_chisq_Qinv(0.01, 1.0);
-        }
+        th_nested = sg_thermal_nested(sg_time_fit_q(tab, 0), sg_time_fit_q(tab, 1));
         /* fit every eligible candidate on the fit segment */
         for (i = 0; i < N_STATIC_CANDS; i++) {
             int id = k_static_cands[i], w2[SG_MAX_EFF];

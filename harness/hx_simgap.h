@@ -583,6 +583,13 @@ int sg_cand_accepted(const sg_cand_t *cd, double zacc);
  *  whose middle shows no excess (accepted on its z alone). */
 int sg_selection_stops(int step, int held_significant);
 
+/** Parsimony between nested drifts (docs/simgap.md, section 4): 1 when the
+ *  warm-up's time fit (q_thermal, sg_time_fit_q(tab, 1)) beats the ramp's
+ *  (q_ramp, sg_time_fit_q(tab, 0)) by less than chi-square_1 at 1 %
+ *  (6.63): thermal is not simulated, the ramp stands for it. 0 when either
+ *  q is NaN. */
+int sg_thermal_nested(double q_ramp, double q_thermal);
+
 /** One forward-selection step of a channel. */
 typedef struct {
     int ncand;

@@ -650,6 +650,26 @@ static void test_selection_stops(void **state)
     assert_int_equal(sg_selection_stops(2, 1), 0);
 }
 
+/* Parsimony between nested drifts (docs/simgap.md, section 4): a warm-up
+ * is a ramp plus curvature, and when its time fit beats the ramp's on the
+ * fit segment by less than chi-square_1 at 1 % -- scipy's
+ * stats.chi2.isf(0.01, 1) = 6.634896601021217 -- thermal is not simulated
+ * (nested). Differences 0.005 either side of it, one well inside, a
+ * warm-up fitting worse than the ramp, and NaN (no time fit: not nested).
+ * The quantile at 50 % instead of 1 % (chi2.isf(0.5, 1) = 0.45494; mutant
+ * A10 of 2026-11-29) was caught only by the CLI's ramp case. */
+static void test_thermal_nested(void **state)
+{
+    (void)state;
+    assert_int_equal(sg_thermal_nested(106.63, 100.0), 1);
+    assert_int_equal(sg_thermal_nested(106.64, 100.0), 0);
+    assert_int_equal(sg_thermal_nested(100.3, 100.0), 1);
+    assert_int_equal(sg_thermal_nested(100.0, 100.3), 1); /* warm-up fits worse */
+    assert_int_equal(sg_thermal_nested(150.0, 100.0), 0);  /* curvature resolved */
+    assert_int_equal(sg_thermal_nested((double)NAN, 100.0), 0);
+    assert_int_equal(sg_thermal_nested(100.0, (double)NAN), 0);
+}
+
 /* The timing domain's decisions (docs/simgap.md, section 4, "Timing
  * domain"): an effect is selected when its whole-log z lies beyond the
  * one-sided critical value of the family of three (duplicates, drops,
@@ -2350,6 +2370,7 @@ int main(void)
         cmocka_unit_test(test_allan_theory_var_noise_type),
         cmocka_unit_test(test_accept_rule),
         cmocka_unit_test(test_selection_stops),
+        cmocka_unit_test(test_thermal_nested),
         cmocka_unit_test(test_timing_thresholds),
         cmocka_unit_test(test_evidence_lattice_and_line),
         cmocka_unit_test(test_locate_runs),
