@@ -757,6 +757,17 @@ int sg_thermal_nested(double q_ramp, double q_thermal)
     return qr == qr && qt == qt && qr - qt < gsl_cdf_chisq_Qinv(0.01, 1.0);
 }
 
+void sg_cand_fold2(sg_cand_t *cd, double zb, double dGb, double zgb, double dLb)
+{
+    cd->z_ends = zb;
+    cd->dG_ends = dGb;
+    cd->zg_ends = zgb;
+    cd->dL_ends = dLb;
+    cd->dL_rank += dLb;
+    cd->z_delta = (cd->z_mid + zb) / sqrt(2.0);
+    cd->z_gap = (cd->zg_mid + zgb) / sqrt(2.0);
+}
+
 /* Forward selection on one channel. */
 static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_t *fc, const sg_table_t *tab,
                      double alpha, hx_progress_t *prog, double *pdone)
@@ -939,13 +950,7 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
                 double zb = 0.0, dGb = 0.0, zgb = 0.0, dLb = 0.0;
                 if (fold_ends(r, ch, x, fc, &tabm, w2, nwith + 1, tmax, alpha, seed, &cur, ccur, cd, &zb, &dGb, &zgb,
                               &dLb) == 0) {
-                    cd->z_ends = zb;
-                    cd->dG_ends = dGb;
-                    cd->zg_ends = zgb;
-                    cd->dL_ends = dLb;
-                    cd->dL_rank += dLb;
-                    cd->z_delta = (cd->z_mid + zb) / sqrt(2.0);
-                    cd->z_gap = (cd->zg_mid + zgb) / sqrt(2.0);
+                    sg_cand_fold2(cd, zb, dGb, zgb, dLb);
                     dG += dGb;
                 }
             }

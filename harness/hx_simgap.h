@@ -590,6 +590,13 @@ int sg_selection_stops(int step, int held_significant);
  *  q is NaN. */
 int sg_thermal_nested(double q_ramp, double q_thermal);
 
+/** Enters the second fold's results into candidate cd (docs/simgap.md,
+ *  section 4, steps 4-5): z_ends, dG_ends, zg_ends, dL_ends; dL_rank gains
+ *  dLb; z_delta and z_gap become the Stouffer combinations
+ *  (z_mid + zb) / sqrt(2) and (zg_mid + zgb) / sqrt(2). cd's z_mid, zg_mid
+ *  and dL_rank hold fold 1's values on entry. */
+void sg_cand_fold2(sg_cand_t *cd, double zb, double dGb, double zgb, double dLb);
+
 /** One forward-selection step of a channel. */
 typedef struct {
     int ncand;

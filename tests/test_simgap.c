@@ -670,6 +670,47 @@ static void test_thermal_nested(void **state)
     assert_int_equal(sg_thermal_nested(100.0, (double)NAN), 0);
 }
 
+/* The second fold enters a candidate (docs/simgap.md, section 4, steps 4-5):
+ * each test's two fold z are combined as (z_middle + z_ends) / sqrt(2)
+ * (Stouffer: two standard normal z give a standard normal sum over
+ * sqrt(2), so the combined z keeps the critical value of one test), the
+ * deviance drops ranking the accepted ones are summed. Expected values
+ * analytic: (1 + 2) / sqrt(2) = 2.1213203435596424, (1.5 - 0.5) / sqrt(2)
+ * = 0.7071067811865475; and two folds at 2.9 each, neither beyond
+ * sg_accept_zcrit(0.05, 16) = 3.822, combine to 5.8 / sqrt(2) =
+ * 4.1012193308819755, which is accepted. The mean (z_middle + z_ends) / 2
+ * for the score test (mutant A09 of 2026-11-29) passed the unit suite. */
+static void test_cand_fold2(void **state)
+{
+    sg_cand_t cd;
+    (void)state;
+    memset(&cd, 0, sizeof cd);
+    cd.z_mid = cd.z_delta = 1.0;
+    cd.zg_mid = cd.z_gap = 1.5;
+    cd.dL_mid = cd.dL_rank = 10.0;
+    cd.dG_hold = 7.0;
+    cd.expl_lo = (double)NAN;
+    sg_cand_fold2(&cd, 2.0, 3.0, -0.5, 4.0);
+    FNAV_ASSERT_CLOSE(cd.z_delta, 2.1213203435596424, 0.0, 1e-14);
+    FNAV_ASSERT_CLOSE(cd.z_gap, 0.7071067811865475, 0.0, 1e-14);
+    assert_true(cd.z_ends == 2.0);
+    assert_true(cd.dG_ends == 3.0);
+    assert_true(cd.zg_ends == -0.5);
+    assert_true(cd.dL_ends == 4.0);
+    assert_true(cd.dL_rank == 14.0);
+    assert_true(cd.z_mid == 1.0); /* fold 1's values kept */
+    assert_true(cd.zg_mid == 1.5);
+    assert_true(cd.dL_mid == 10.0);
+    assert_true(cd.dG_hold == 7.0);
+    cd.z_mid = 2.9;
+    cd.zg_mid = 0.0;
+    cd.dL_rank = 10.0;
+    sg_cand_fold2(&cd, 2.9, 0.0, 0.0, 0.0);
+    FNAV_ASSERT_CLOSE(cd.z_delta, 4.1012193308819755, 0.0, 1e-14);
+    assert_true(cd.z_gap == 0.0);
+    assert_true(sg_cand_accepted(&cd, sg_accept_zcrit(0.05, 16)));
+}
+
 /* The timing domain's decisions (docs/simgap.md, section 4, "Timing
  * domain"): an effect is selected when its whole-log z lies beyond the
  * one-sided critical value of the family of three (duplicates, drops,
@@ -2371,6 +2412,7 @@ int main(void)
         cmocka_unit_test(test_accept_rule),
         cmocka_unit_test(test_selection_stops),
         cmocka_unit_test(test_thermal_nested),
+        cmocka_unit_test(test_cand_fold2),
         cmocka_unit_test(test_timing_thresholds),
         cmocka_unit_test(test_evidence_lattice_and_line),
         cmocka_unit_test(test_locate_runs),
