@@ -433,6 +433,23 @@ expect_rc "$STREAM_RC" 143 "stream stopped by SIGTERM while its write is blocked
 if [ "$dt" -le 5 ]; then pass "it stopped within $dt s"; else fail "it took $dt s to stop"; fi
 grep_in "$T/stream.out" "the interrupt cut the write" "stream says the batch was cut"
 
+# --- hx_serial_write on a slow but steady reader (4 KB every 200 ms once the
+# pty is full: each pause shorter than the 500 ms timeout, the whole longer)
+# completes, and on a reader that reads nothing gives up after the timeout
+# (tests/cli/serial_write_slow.c, built here against harness/hx_serial.c; a
+# mutant that never restarted the timer after progress gave up after 1.1 s
+# and passed every other case, checked)
+if ${CC:-cc} -std=c99 -Wall -D_POSIX_C_SOURCE=200809L -Iharness -o "$T/serial_write_slow" \
+    tests/cli/serial_write_slow.c harness/hx_serial.c -lserialport 2>"$T/cc.err"; then
+    if msg=$(LD_PRELOAD=$SEAM timeout $LIMIT "$T/serial_write_slow"); then
+        pass "a write to a slow but steady reader completes; to a silent one it times out"
+    else
+        fail "hx_serial_write's idle timer: $msg"
+    fi
+else
+    fail "cannot build tests/cli/serial_write_slow.c: $(cat "$T/cc.err")"
+fi
+
 # --- stream: an interrupt while the END frame drains interrupts nothing:
 # every sample and END reach the receiver, exit 0 (it exited 130; a review)
 stop_link
