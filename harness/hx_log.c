@@ -894,7 +894,9 @@ static int setup_text(hx_reader_t *r, double rate_hz)
  * bridged with k of them. A restart before any period was measured (the
  * file's first interval) is bridged with k periods of the logger's own rate
  * estimate (the Freq. column, within 4 % of the true rate from the first
- * line), or without it with the host interval, which jitters 1-25 ms. */
+ * line), or without it with the host interval (the filtered stamps, index
+ * 10: the unfiltered ones, index 11, jitter ten times more), which jitters
+ * 1-25 ms. */
 #define GX2_TICK_HZ 19660800L
 #define GX2_MAX_LOST 1000 /* a larger jump of Nr is taken for a restart of the count, one period */
 static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr, double freq_hz)

@@ -86,7 +86,14 @@ fail:
  * A tty hung up under a node that stays (a Bluetooth rfcomm link, a
  * vhangup) reports POLLHUP with POLLIN, and its reads return 0 at once:
  * with nothing left to read, that is a hang-up too (a review, 2026-11-27:
- * live looped on it at full speed). */
+ * live looped on it at full speed).
+ * The "nothing left" test (FIONREAD) changes nothing on a port opened by
+ * path, checked 2026-11-29: on a tty hung up (vhangup, the pty master
+ * closed, a USB or rfcomm hang-up) FIONREAD fails with EIO and the kernel
+ * has discarded the pending bytes (reads return 0); only a pty master whose
+ * slave closed reports POLLHUP with POLLIN and bytes still readable, and
+ * that cannot be opened by name. Mutants of it survive every test for that
+ * reason; it stays for a driver that reports POLLHUP before hanging up. */
 static int gone(hx_serial_t *s)
 {
     if (s->fd >= 0) {

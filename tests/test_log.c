@@ -1238,6 +1238,42 @@ static void test_gx2_first_restart_lost(void **state)
     remove(p);
 }
 
+/* GX2: without a Freq. value (lines that end after the Pred. ts column), a
+ * timer restart on the first interval is bridged with the interval of the
+ * filtered host stamps (column 10, 6 ms here), not the unfiltered ones
+ * (column 11, 9 ms) nor the predicted ones (column 12, 5 ms): the logger's
+ * filter takes out most of the USB jitter (docs/log-format.md, "GX2 time"). */
+static void test_gx2_first_restart_host_column(void **state)
+{
+    const long period = 78720;
+    hx_log_t log;
+    char err[320], p[256];
+    FILE *f;
+    long nr, counter = 130831728;
+    (void)state;
+    f = open_gx2(p, sizeof p);
+    for (nr = 1; nr <= 6; nr++) {
+        const double k = (double)(nr - 1);
+        if (nr == 2) {
+            counter = 6068; /* restarted */
+        } else if (nr > 2) {
+            counter += period;
+        }
+        fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %lu    0x15fd       %ld %.6f %.6f %.6f\r\n",
+                (unsigned long)counter, nr, 1274434048.5 + 0.006 * k, 1274434048.5 + 0.009 * k,
+                1274434048.504 + 0.005 * k);
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.meta.format, HX_FMT_GX2);
+    assert_int_equal(log.n, 6);
+    /* the stamps are written to 1 us, and a double holds them to 0.24 us */
+    assert_true(llabs(log.t_ns[1] - log.t_ns[0] - 6000000LL) <= 1000);
+    assert_true(llabs(log.t_ns[2] - log.t_ns[1] - period * 1000000000LL / 19660800LL) <= 1);
+    hx_log_free(&log);
+    remove(p);
+}
+
 /* GX2: a last line without a newline, cut inside field 12 (the unfiltered
  * host stamp, which the reader does not use), leaves every value the reader
  * takes whole and is read, as docs/log-format.md ("Recordings cut off
@@ -1884,6 +1920,7 @@ int main(void)
         cmocka_unit_test(test_gx2_repeated_packet),
         cmocka_unit_test(test_gx2_restart_tolerance),
         cmocka_unit_test(test_gx2_first_restart_lost),
+        cmocka_unit_test(test_gx2_first_restart_host_column),
         cmocka_unit_test(test_gx2_cut_last_line),
         cmocka_unit_test(test_gx2_timer_cases),
         cmocka_unit_test(test_quoted_values_and_ipol_rate),

@@ -320,6 +320,30 @@ grep_in "$T/live.err" "sensor drop: 5 sample(s) missing by the sensor's counter 
 if grep -q "sensor drop:.*before sample seq 101" "$T/live.err"; then fail "a link drop reported as the sender's"; else pass "the link drop is not taken for the sender's"; fi
 grep_in "$T/live.out" "live: sensor: 5 samples missing by the sensor's counter in 1 gaps" "the summary counts the sender's drop"
 
+# --- a slow but steady sender: one sample frame every 80 ms for 2 s, each
+# gap shorter than --timeout 0.5 and the whole longer: live keeps going (the
+# timer restarts at every frame; a mutant of cmd_live.c that never restarts
+# it stopped at 0.5 s with 6 samples, checked), then stops at the timeout once the sender
+# goes quiet (it holds the port open 1.5 s more: a close is a hang-up)
+stop_link
+start_link
+start_live --timeout 0.5
+/usr/bin/python3 -c "
+import os, sys, time
+sys.path.insert(0, 'tests/cli')
+from wire_cases import info, still, frame, SAMPLE
+fd = os.open(sys.argv[1], os.O_WRONLY | os.O_NOCTTY)
+os.write(fd, info(400.0))
+for k in range(25):
+    os.write(fd, frame(SAMPLE, 1 + k, still(k)))
+    time.sleep(0.08)
+time.sleep(1.5)
+os.close(fd)" "$B" || fail "the slow sender failed"
+wait_live
+expect_rc "$LIVE_RC" 1 "live whose slow sender goes quiet (no END)"
+grep_in "$T/live.out" "live: $A: 25 samples over" "every one of the 25 slow samples is received"
+grep_in "$T/live.out" "live: end: no valid frame for 0.5 s (--timeout)" "the run ends at the timeout once the sender is quiet"
+
 # --- the reader of --out - goes away (live ... | head): a write error (exit 3)
 # with the summary and a complete recording, not a death by SIGPIPE
 stop_link
@@ -408,6 +432,23 @@ dt=$(($(date +%s) - t0))
 expect_rc "$STREAM_RC" 143 "stream stopped by SIGTERM while its write is blocked"
 if [ "$dt" -le 5 ]; then pass "it stopped within $dt s"; else fail "it took $dt s to stop"; fi
 grep_in "$T/stream.out" "the interrupt cut the write" "stream says the batch was cut"
+
+# --- hx_serial_write on a slow but steady reader (4 KB every 200 ms once the
+# pty is full: each pause shorter than the 500 ms timeout, the whole longer)
+# completes, and on a reader that reads nothing gives up after the timeout
+# (tests/cli/serial_write_slow.c, built here against harness/hx_serial.c; a
+# mutant that never restarted the timer after progress gave up after 1.1 s
+# and passed every other case, checked)
+if ${CC:-cc} -std=c99 -Wall -D_POSIX_C_SOURCE=200809L -Iharness -o "$T/serial_write_slow" \
+    tests/cli/serial_write_slow.c harness/hx_serial.c -lserialport 2>"$T/cc.err"; then
+    if msg=$(LD_PRELOAD=$SEAM timeout $LIMIT "$T/serial_write_slow"); then
+        pass "a write to a slow but steady reader completes; to a silent one it times out"
+    else
+        fail "hx_serial_write's idle timer: $msg"
+    fi
+else
+    fail "cannot build tests/cli/serial_write_slow.c: $(cat "$T/cc.err")"
+fi
 
 # --- stream: an interrupt while the END frame drains interrupts nothing:
 # every sample and END reach the receiver, exit 0 (it exited 130; a review)
