@@ -133,6 +133,17 @@ awk -F, -v t0="$T0" 'NR == 1 { print; next } { d = $1 - t0; if (d >= 2.0013 && d
     "$T/allr.csv" >"$T/winr_awk.csv"
 if [ "$(wc -l <"$T/winr.csv")" -gt 100 ] && cmp -s "$T/winr.csv" "$T/winr_awk.csv"; then pass "the resampled window counts from the input's first sample"
 else fail "convert --rate --start/--end rows differ from awk's"; fi
+# both ends are included: a 100 Hz log whose window edges fall on samples
+# (t = 0.02 .. 0.05 s: the 4 rows with t = 2, 3, 4, 5 x 10 ms, counted by
+# hand); a window of one instant keeps its one sample, exit 0 (the edges
+# were only tested between samples, so `>=` for `>` at --end survived)
+{ echo "t,ax,ay,az,gx,gy,gz"; for i in 0 1 2 3 4 5 6 7 8 9; do echo "1.0$i,$i,0,9.8,0,0,0"; done; } >"$T/edge.csv"
+expect_exit 0 "convert a window with edges on samples" "$H" convert "$T/edge.csv" "$T/edge_w.csv" --start 0.02 --end 0.05
+if [ "$(cut -d, -f2 "$T/edge_w.csv" | tr '\n' ' ')" = "ax 2 3 4 5 " ]; then pass "the window includes both its edge samples"
+else fail "window 0.02..0.05 kept ax = $(cut -d, -f2 "$T/edge_w.csv" | tr '\n' ' ')"; fi
+expect_exit 0 "convert a window of one instant" "$H" convert "$T/edge.csv" "$T/edge_1.csv" --start 0.07 --end 0.07
+if [ "$(cut -d, -f2 "$T/edge_1.csv" | tr '\n' ' ')" = "ax 7 " ]; then pass "a one-instant window keeps its sample"
+else fail "window 0.07..0.07 kept ax = $(cut -d, -f2 "$T/edge_1.csv" | tr '\n' ' ')"; fi
 expect_exit 2 "--end before --start" "$H" convert vectors/walk.bin "$T/w.csv" --start 3 --end 2
 expect_err "--end 2 is before --start 3" "the order is named"
 expect_exit 2 "negative --start" "$H" convert vectors/walk.bin "$T/w.csv" --start -1
