@@ -303,6 +303,13 @@ expect_exit 0 "convert --rate 100" "$H" convert vectors/walk.bin "$T/r100.csv" -
 "$H" replay vectors/walk.bin --rate 100 --json "$T/r100b.json" >/dev/null 2>&1
 if [ -s "$T/r100a.json" ] && [ "$(grep -E '"(return_error_3d_m|strides|distance_m)"' "$T/r100a.json")" = "$(grep -E '"(return_error_3d_m|strides|distance_m)"' "$T/r100b.json")" ]; then
     pass "convert --rate then replay = replay --rate"; else fail "convert --rate: $(grep return_error_3d_m "$T/r100a.json" "$T/r100b.json")"; fi
+# the resampled values against scipy's independent chain (the upsampled
+# firwin low-pass of scripts/resample_check.py) within the bounds that
+# docs/harness.md states: a cut-off of 0.5 x the new rate instead of 0.45,
+# or a kernel half as long, kept every other check here passing
+if HARNESS="$H" /usr/bin/python3 "$(dirname "$0")/../../scripts/resample_check.py" --max 0.0008 0.003 \
+    vectors/walk.bin 50 vectors/walk.bin 100 >"$T/rchk" 2>&1; then pass "convert --rate matches scipy's low-pass"
+else fail "convert --rate differs from scipy's low-pass: $(cat "$T/rchk")"; fi
 expect_exit 2 "convert --rate 0" "$H" convert vectors/walk.bin "$T/r0.csv" --rate 0
 expect_err "is not a number in \[1, 100000\]" "bad --rate said, with replay's range"
 # a rate far below 1 Hz made a filter longer than an int (one NaN row, exit 0)
