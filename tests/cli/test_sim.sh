@@ -124,6 +124,12 @@ HA=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")
 (cd "$T" && "$HA" sim --out x2.bin --truth - --duration 2 >/dev/null 2>"$T/err"); rc=$?
 if [ $rc -eq 2 ] && [ ! -e "$T/-" ] && grep -q "needs a file name" "$T/err"; then pass "sim --truth - refused (it wrote a file named -)"; else fail "sim --truth -: exit $rc"; fi
 
+# the same file under two spellings (x3.bin, ./x3.bin), not there before:
+# refused, exit 2 (stat could not tell before the log existed, and the
+# truth CSV was written into the .bin, exit 0)
+(cd "$T" && "$HA" sim --out x3.bin --truth ./x3.bin --duration 2 >/dev/null 2>"$T/err"); rc=$?
+if [ $rc -eq 2 ] && grep -q "name the same file" "$T/err"; then pass "sim --truth ./F --out F refused"; else fail "sim --truth ./x3.bin --out x3.bin: exit $rc"; fi
+
 # --- a walk: .bin log, truth CSV, summary
 expect_exit 0 "sim walk 20 s" "$H" sim --motion walk --duration 20 --rate 100 --out "$T/w.bin" --truth "$T/t.csv"
 expect_out_re "^samples     2001 written" "2001 samples at 100 Hz over 20 s"
