@@ -169,6 +169,15 @@ int hx_cmd_sim(int argc, char **argv)
         hx_motion_free(motion);
         return HX_EXIT_IO;
     }
+    if (truth != NULL && hx_same_file(truth, out)) {
+        /* the same file under another name (--out x.bin --truth ./x.bin):
+         * only now that the log exists can stat tell (the truth CSV was
+         * written into the .bin, exit 0; a mutant test, 2026-11-29) */
+        hx_error("sim", "--truth and --out name the same file");
+        hx_writer_close(ctx.w, err, sizeof err);
+        hx_motion_free(motion);
+        return HX_EXIT_USAGE;
+    }
     if (truth != NULL) {
         ctx.truth_path = truth;
         ctx.truth = fopen(truth, "w");

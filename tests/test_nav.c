@@ -1513,6 +1513,69 @@ static void test_max_gap_below_interval(void **state)
     }
 }
 
+/* ------------------------------------------------------------ summary notes */
+
+/* hx_sat: a channel is saturated with at least two runs of two or more
+ * samples at its extreme (hx_nav.h, docs/harness.md "info"); one run is a
+ * natural maximum. A run of two at +5 at t = 1,2 ms and one at 5,6 ms:
+ * 4 samples at the maximum and 1 at the minimum (-1), the count of both
+ * extremes (hx_sat_count) 5, counted by hand; without the second run, 0. */
+static void test_sat_two_runs(void **state)
+{
+    static const double k_one[] = { -1.0, 5.0, 5.0, 1.0, 2.0, 1.0, 0.0 };
+    static const double k_two[] = { -1.0, 5.0, 5.0, 1.0, 2.0, 5.0, 5.0, 0.0 };
+    hx_sat_t st;
+    fnav_sample_t s;
+    size_t k;
+    (void)state;
+    memset(&st, 0, sizeof st);
+    memset(&s, 0, sizeof s);
+    for (k = 0; k < sizeof k_one / sizeof k_one[0]; k++) {
+        s.t_ns = (int64_t)k * 1000000;
+        s.accel_mps2[0] = (fnav_real_t)k_one[k];
+        hx_sat_push(&st, &s);
+    }
+    assert_int_equal(hx_sat_count(&st, 0), 0);
+    memset(&st, 0, sizeof st);
+    for (k = 0; k < sizeof k_two / sizeof k_two[0]; k++) {
+        s.t_ns = (int64_t)k * 1000000;
+        s.accel_mps2[0] = (fnav_real_t)k_two[k];
+        hx_sat_push(&st, &s);
+    }
+    assert_int_equal(hx_sat_count(&st, 0), 5);
+}
+
+/* The notes' thresholds at their edges as hx_nav.h words them: "little
+ * motion" is more than 10 s, over 90 % in stance and fewer than three
+ * strides; "gappy" is a loss that reaches 1 % of the motion time (1 s of
+ * 100 s exactly: 0.01 x 100.0 rounds to 1.0). */
+static void test_note_thresholds(void **state)
+{
+    hx_nav_summary_t s;
+    (void)state;
+    memset(&s, 0, sizeof s);
+    s.duration_s = 60.0;
+    s.stance_fraction = 0.95;
+    s.strides = 2;
+    assert_true(hx_nav_little_motion(&s));
+    s.strides = 3;
+    assert_false(hx_nav_little_motion(&s));
+    s.strides = 2;
+    s.duration_s = 10.0;
+    assert_false(hx_nav_little_motion(&s));
+    s.duration_s = 60.0;
+    s.stance_fraction = 0.9;
+    assert_false(hx_nav_little_motion(&s));
+    s.motion_s = 100.0;
+    s.gap_lost_s = 1.0;
+    assert_true(hx_nav_gappy(&s));
+    s.gap_lost_s = 0.999;
+    assert_false(hx_nav_gappy(&s));
+    s.motion_s = 0.0;
+    s.gap_lost_s = 1.0;
+    assert_false(hx_nav_gappy(&s));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1540,6 +1603,8 @@ int main(void)
         cmocka_unit_test(test_resampler),
         cmocka_unit_test(test_resampler_fractional),
         cmocka_unit_test(test_resampler_time_jump),
+        cmocka_unit_test(test_sat_two_runs),
+        cmocka_unit_test(test_note_thresholds),
         cmocka_unit_test(test_golden_replays),
         cmocka_unit_test(test_float_vs_double),
     };

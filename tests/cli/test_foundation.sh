@@ -133,6 +133,17 @@ awk -F, -v t0="$T0" 'NR == 1 { print; next } { d = $1 - t0; if (d >= 2.0013 && d
     "$T/allr.csv" >"$T/winr_awk.csv"
 if [ "$(wc -l <"$T/winr.csv")" -gt 100 ] && cmp -s "$T/winr.csv" "$T/winr_awk.csv"; then pass "the resampled window counts from the input's first sample"
 else fail "convert --rate --start/--end rows differ from awk's"; fi
+# both ends are included: a 100 Hz log whose window edges fall on samples
+# (t = 0.02 .. 0.05 s: the 4 rows with t = 2, 3, 4, 5 x 10 ms, counted by
+# hand); a window of one instant keeps its one sample, exit 0 (the edges
+# were only tested between samples, so `>=` for `>` at --end survived)
+{ echo "t,ax,ay,az,gx,gy,gz"; for i in 0 1 2 3 4 5 6 7 8 9; do echo "1.0$i,$i,0,9.8,0,0,0"; done; } >"$T/edge.csv"
+expect_exit 0 "convert a window with edges on samples" "$H" convert "$T/edge.csv" "$T/edge_w.csv" --start 0.02 --end 0.05
+if [ "$(cut -d, -f2 "$T/edge_w.csv" | tr '\n' ' ')" = "ax 2 3 4 5 " ]; then pass "the window includes both its edge samples"
+else fail "window 0.02..0.05 kept ax = $(cut -d, -f2 "$T/edge_w.csv" | tr '\n' ' ')"; fi
+expect_exit 0 "convert a window of one instant" "$H" convert "$T/edge.csv" "$T/edge_1.csv" --start 0.07 --end 0.07
+if [ "$(cut -d, -f2 "$T/edge_1.csv" | tr '\n' ' ')" = "ax 7 " ]; then pass "a one-instant window keeps its sample"
+else fail "window 0.07..0.07 kept ax = $(cut -d, -f2 "$T/edge_1.csv" | tr '\n' ' ')"; fi
 expect_exit 2 "--end before --start" "$H" convert vectors/walk.bin "$T/w.csv" --start 3 --end 2
 expect_err "--end 2 is before --start 3" "the order is named"
 expect_exit 2 "negative --start" "$H" convert vectors/walk.bin "$T/w.csv" --start -1
@@ -292,6 +303,13 @@ expect_exit 0 "convert --rate 100" "$H" convert vectors/walk.bin "$T/r100.csv" -
 "$H" replay vectors/walk.bin --rate 100 --json "$T/r100b.json" >/dev/null 2>&1
 if [ -s "$T/r100a.json" ] && [ "$(grep -E '"(return_error_3d_m|strides|distance_m)"' "$T/r100a.json")" = "$(grep -E '"(return_error_3d_m|strides|distance_m)"' "$T/r100b.json")" ]; then
     pass "convert --rate then replay = replay --rate"; else fail "convert --rate: $(grep return_error_3d_m "$T/r100a.json" "$T/r100b.json")"; fi
+# the resampled values against scipy's independent chain (the upsampled
+# firwin low-pass of scripts/resample_check.py) within the bounds that
+# docs/harness.md states: a cut-off of 0.5 x the new rate instead of 0.45,
+# or a kernel half as long, kept every other check here passing
+if HARNESS="$H" /usr/bin/python3 "$(dirname "$0")/../../scripts/resample_check.py" --max 0.0008 0.003 \
+    vectors/walk.bin 50 vectors/walk.bin 100 >"$T/rchk" 2>&1; then pass "convert --rate matches scipy's low-pass"
+else fail "convert --rate differs from scipy's low-pass: $(cat "$T/rchk")"; fi
 expect_exit 2 "convert --rate 0" "$H" convert vectors/walk.bin "$T/r0.csv" --rate 0
 expect_err "is not a number in \[1, 100000\]" "bad --rate said, with replay's range"
 # a rate far below 1 Hz made a filter longer than an int (one NaN row, exit 0)

@@ -124,6 +124,12 @@ HA=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")
 (cd "$T" && "$HA" sim --out x2.bin --truth - --duration 2 >/dev/null 2>"$T/err"); rc=$?
 if [ $rc -eq 2 ] && [ ! -e "$T/-" ] && grep -q "needs a file name" "$T/err"; then pass "sim --truth - refused (it wrote a file named -)"; else fail "sim --truth -: exit $rc"; fi
 
+# the same file under two spellings (x3.bin, ./x3.bin), not there before:
+# refused, exit 2 (stat could not tell before the log existed, and the
+# truth CSV was written into the .bin, exit 0)
+(cd "$T" && "$HA" sim --out x3.bin --truth ./x3.bin --duration 2 >/dev/null 2>"$T/err"); rc=$?
+if [ $rc -eq 2 ] && grep -q "name the same file" "$T/err"; then pass "sim --truth ./F --out F refused"; else fail "sim --truth ./x3.bin --out x3.bin: exit $rc"; fi
+
 # --- a walk: .bin log, truth CSV, summary
 expect_exit 0 "sim walk 20 s" "$H" sim --motion walk --duration 20 --rate 100 --out "$T/w.bin" --truth "$T/t.csv"
 expect_out_re "^samples     2001 written" "2001 samples at 100 Hz over 20 s"
@@ -187,9 +193,16 @@ if [ "$n" -eq 102 ]; then pass "CSV on stdout rows"; else fail "stdout rows $n, 
 # --- effects that `harness info` sees
 expect_exit 0 "dropout + duplicate" "$H" sim --duration 20 --rate 100 --out "$T/d.bin" \
     --effect dropout:prob=0.05 --effect duplicate:prob=0.05
+# the summary's counts: written = ticks - dropped + duplicated, and the
+# dropped and duplicated are what info finds in the log (a mutant counting
+# single ticks as duplicated passed every check here)
+SIMN=$(sed -n 's/^samples *\([0-9]*\) written (\([0-9]*\) ticks, \([0-9]*\) dropped, \([0-9]*\) duplicated)$/\1 \2 \3 \4/p' "$T/out")
 expect_exit 0 "info on drops" "$H" info "$T/d.bin"
 if grep -Eq "^drops +[1-9]" "$T/out"; then pass "drops visible in the counter"; else fail "no drops"; cat "$T/out"; fi
 if grep -Eq "^duplicates +[1-9]" "$T/out"; then pass "duplicates visible"; else fail "no duplicates"; cat "$T/out"; fi
+set -- $SIMN
+if [ $# -eq 4 ] && [ "$1" -eq $(($2 - $3 + $4)) ] && grep -Eq "^drops +$3 " "$T/out" && grep -Eq "^duplicates +$4 " "$T/out"
+then pass "sim's written, dropped and duplicated counts agree with info's"; else fail "sim counts '$SIMN' vs info: $(grep -E '^(drops|duplicates)' "$T/out")"; fi
 # the summary's peaks are those of the log: every sample dropped, none
 # (they counted the dropped samples; a review)
 expect_exit 0 "every sample dropped" "$H" sim --duration 2 --rate 100 --out "$T/d0.csv" --effect dropout:prob=1
