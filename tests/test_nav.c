@@ -1520,29 +1520,29 @@ static void test_max_gap_below_interval(void **state)
  * natural maximum. A run of two at +5 at t = 1,2 ms and one at 5,6 ms:
  * 4 samples at the maximum and 1 at the minimum (-1), the count of both
  * extremes (hx_sat_count) 5, counted by hand; without the second run, 0. */
+/* hx_sat_count of channel ax after the values v at 1 ms steps */
+static long sat_count_of(const double *v, size_t n)
+{
+    hx_sat_t st;
+    fnav_sample_t s;
+    size_t k;
+    memset(&st, 0, sizeof st);
+    memset(&s, 0, sizeof s);
+    for (k = 0; k < n; k++) {
+        s.t_ns = (int64_t)k * 1000000;
+        s.accel_mps2[0] = (fnav_real_t)v[k];
+        hx_sat_push(&st, &s);
+    }
+    return hx_sat_count(&st, 0);
+}
+
 static void test_sat_two_runs(void **state)
 {
     static const double k_one[] = { -1.0, 5.0, 5.0, 1.0, 2.0, 1.0, 0.0 };
     static const double k_two[] = { -1.0, 5.0, 5.0, 1.0, 2.0, 5.0, 5.0, 0.0 };
-    hx_sat_t st;
-    fnav_sample_t s;
-    size_t k;
     (void)state;
-    memset(&st, 0, sizeof st);
-    memset(&s, 0, sizeof s);
-    for (k = 0; k < sizeof k_one / sizeof k_one[0]; k++) {
-        s.t_ns = (int64_t)k * 1000000;
-        s.accel_mps2[0] = (fnav_real_t)k_one[k];
-        hx_sat_push(&st, &s);
-    }
-    assert_int_equal(hx_sat_count(&st, 0), 0);
-    memset(&st, 0, sizeof st);
-    for (k = 0; k < sizeof k_two / sizeof k_two[0]; k++) {
-        s.t_ns = (int64_t)k * 1000000;
-        s.accel_mps2[0] = (fnav_real_t)k_two[k];
-        hx_sat_push(&st, &s);
-    }
-    assert_int_equal(hx_sat_count(&st, 0), 5);
+    assert_int_equal(sat_count_of(k_one, sizeof k_one / sizeof k_one[0]), 0);
+    assert_int_equal(sat_count_of(k_two, sizeof k_two / sizeof k_two[0]), 5);
 }
 
 /* The notes' thresholds at their edges as hx_nav.h words them: "little
