@@ -43,37 +43,32 @@ typedef struct {
 } info_t;
 
 /* Clipping at full scale leaves flat tops at the channel's extreme value,
- * again at every impact; a natural maximum is one event. A channel counts as
- * saturated when at least two separate runs of two or more samples (with
- * distinct time stamps) sit exactly at its maximum or minimum; the number of
- * samples at that extreme is returned. */
-static long saturation(const hx_log_t *log, int ch, double *peak)
+ * again at every impact; a natural maximum is one event. The rule (two
+ * separate runs of two or more samples with distinct stamps exactly at a
+ * channel's maximum or minimum) is replay's hx_sat_t, fed the samples as
+ * replay reads them, so that the two commands give the same counts; the
+ * peaks are the log's own values. */
+static void saturation(const hx_log_t *log, long sat[6], double peak[6])
 {
+    hx_sat_t st;
     size_t i;
-    double mx = -INFINITY, mn = INFINITY;
-    long count = 0, runs = 0, run = 0;
-    for (i = 0; i < log->n; i++) {
-        double v = ch < 3 ? log->acc[i][ch] : log->gyr[i][ch - 3];
-        mx = v > mx ? v : mx;
-        mn = v < mn ? v : mn;
+    int c;
+    memset(&st, 0, sizeof st);
+    for (c = 0; c < 6; c++) {
+        peak[c] = 0.0;
     }
-    *peak = fabs(mx) > fabs(mn) ? fabs(mx) : fabs(mn);
     for (i = 0; i < log->n; i++) {
-        double v = ch < 3 ? log->acc[i][ch] : log->gyr[i][ch - 3];
-        if (i > 0 && log->t_ns[i] == log->t_ns[i - 1]) {
-            continue; /* an exact duplicate row is not a plateau */
-        }
-        if (v == mx || v == mn) {
-            count++;
-            run++;
-            if (run == 2) {
-                runs++;
-            }
-        } else {
-            run = 0;
+        fnav_sample_t s;
+        hx_log_sample(log, i, &s);
+        hx_sat_push(&st, &s);
+        for (c = 0; c < 6; c++) {
+            const double v = fabs(c < 3 ? log->acc[i][c] : log->gyr[i][c - 3]);
+            peak[c] = v > peak[c] ? v : peak[c];
         }
     }
-    return runs >= 2 ? count : 0;
+    for (c = 0; c < 6; c++) {
+        sat[c] = hx_sat_count(&st, c);
+    }
 }
 
 static void analyse(const hx_log_t *log, info_t *in)
@@ -146,9 +141,7 @@ static void analyse(const hx_log_t *log, info_t *in)
     in->duration_s = n > 0 ? 1e-9 * (double)(log->t_ns[n - 1] - log->t_ns[0]) : 0.0;
     in->rate_off = hx_rate_changes(log->t_ns, n, sizeof log->t_ns[0], in->rate_hz, &in->rate_chg_at_s,
                                    &in->rate_chg_hz);
-    for (c = 0; c < 6; c++) {
-        in->sat[c] = saturation(log, c, &in->peak[c]);
-    }
+    saturation(log, in->sat, in->peak);
     /* stillest window of about one second: least gyro energy + accel variance */
     {
         size_t w = (size_t)(in->rate_hz > 0.0 ? in->rate_hz : 100.0);

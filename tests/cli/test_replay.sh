@@ -257,6 +257,17 @@ expect_exit 0 "the walk as recorded" "$H" replay "$T/unclipped.csv" --json "$T/u
 if grep -q "input is clipped" "$T/out"; then fail "an unclipped walk named as clipped"; else pass "no clipping note on the walk as recorded"; fi
 json "$T/unclip.json" 'all(v == 0 for v in j["saturated_samples"].values())' &&
     pass "no clipped samples in the walk as recorded" || fail "unclipped JSON: $(cat "$T/pyerr")"
+# a plateau at a channel's maximum straight after one at its minimum (a
+# swing through the whole range in one sample) is two runs: info counted the
+# four samples as one run at "an extreme" and said unclipped while replay,
+# counting each extreme apart, said clipped (the same rule was written twice;
+# info now feeds replay's hx_sat_t, the final reread of 2026-11-29)
+awk -F, 'BEGIN { OFS = "," } NR >= 502 && NR <= 503 { $7 = 20 } NR >= 504 && NR <= 505 { $7 = -20 } { print }' \
+    "$T/unclipped.csv" > "$T/swing.csv"
+"$H" info "$T/swing.csv" --json "$T/swinginfo.json" >/dev/null 2>&1 || fail "info on the swing walk"
+expect_exit 0 "the swing walk" "$H" replay "$T/swing.csv" --json "$T/swing.json"
+json "$T/swing.json" 'j["saturated_samples"] == json.load(open(sys.argv[1].replace("swing.json", "swinginfo.json")))["saturated_samples"] and j["saturated_samples"]["gz"] == 4' &&
+    pass "info and replay agree on adjacent plateaus" || fail "adjacent plateaus: $(cat "$T/pyerr")"
 expect_exit 0 "a clipped walk resampled" "$H" replay "$T/clipped.csv" --rate 200
 expect_out "^note .*the input is clipped" "the clipping of a resampled log is named (judged before the low-pass)"
 
