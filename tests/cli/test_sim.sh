@@ -132,6 +132,17 @@ if [ -w /dev/full ]; then
     expect_err "/dev/full: write failed" "the log's failed write is said"
     [ -s "$T/out" ] && fail "a summary after the log write failed: $(head -1 "$T/out")" ||
         pass "no summary after the log write failed"
+    # one error line with the reason, as convert's: a .bin log (whose
+    # record write fails in the run) said "write failed" and then, on
+    # closing, "write failed (No space left on device)"; the truth CSV said
+    # no reason
+    ln -s /dev/full "$T/full.bin"
+    for o in "--out $T/full.bin" "--out $T/x.bin --truth /dev/full"; do
+        # shellcheck disable=SC2086
+        expect_exit 3 "sim $o" "$H" sim $o --duration 2
+        if [ "$(grep -c 'error:' "$T/err")" -eq 1 ] && grep -q "write failed (No space left on device)" "$T/err"; then
+            pass "sim $o: one error line with the reason"; else fail "sim $o: the write error said twice or without its reason"; cat "$T/err"; fi
+    done
 fi
 HA=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")
 (cd "$T" && "$HA" sim --out x2.bin --truth - --duration 2 >/dev/null 2>"$T/err"); rc=$?
