@@ -1686,6 +1686,50 @@ static void test_health_keys(void **state)
     hx_traj_free(&t);
 }
 
+/* A long gap in motion is one longer than HX_NAV_LONG_GAP_S (docs/harness.md,
+ * "replay": "gaps longer than 20 ms"): an interval of exactly 20 ms is not
+ * one, 1 ns more is. The stamps are whole nanoseconds and 1e-9 x 20,000,000
+ * is 0.020 exactly in double, so the edge is sharp. Frames at 400 Hz, all
+ * aligned and in motion, with one interval of 20 ms or 20 ms + 1 ns among
+ * them (>= in place of > passed every test: the mutation round, 2026-11-29). */
+static void test_long_gap_edge(void **state)
+{
+    static const int64_t k_gap_ns[2] = { 20000000, 20000001 };
+    int g;
+    (void)state;
+    for (g = 0; g < 2; g++) {
+        hx_traj_t t;
+        hx_nav_summary_t s;
+        size_t i;
+        int64_t tn = 0;
+        memset(&t, 0, sizeof t);
+        t.n = t.cap = 800;
+        t.f = (fnav_nav_frame_t *)calloc(t.cap, sizeof *t.f);
+        assert_non_null(t.f);
+        t.rate_hz = 400.0;
+        t.max_gap_s = 0.5;
+        t.aligned = 1;
+        for (i = 0; i < t.n; i++) {
+            t.f[i].t_ns = tn;
+            t.f[i].seq = (uint32_t)i;
+            t.f[i].flags = FNAV_FRAME_ALIGNED; /* no stance: every interval is motion */
+            tn += i == 400 ? k_gap_ns[g] : 2500000;
+        }
+        hx_nav_summarize(&t, &s);
+        assert_true(fabs(s.motion_s - (798 * 0.0025 + 1e-9 * (double)k_gap_ns[g])) < 1e-12);
+        if (g == 0) {
+            assert_int_equal(s.long_gaps, 0);
+            assert_true(s.gap_lost_s == 0.0);
+            assert_true(s.longest_motion_gap_s == 0.0);
+        } else {
+            assert_int_equal(s.long_gaps, 1);
+            assert_true(fabs(s.gap_lost_s - (0.020000001 - 0.0025)) < 1e-12);
+            assert_true(s.longest_motion_gap_s == 1e-9 * 20000001.0);
+        }
+        hx_traj_free(&t);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1716,6 +1760,7 @@ int main(void)
         cmocka_unit_test(test_sat_two_runs),
         cmocka_unit_test(test_note_thresholds),
         cmocka_unit_test(test_health_keys),
+        cmocka_unit_test(test_long_gap_edge),
         cmocka_unit_test(test_golden_replays),
         cmocka_unit_test(test_float_vs_double),
     };
