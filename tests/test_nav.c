@@ -1597,9 +1597,11 @@ static char *slurp(const char *path)
 /* The health counters of replay's and eval's JSON and summary, each under
  * its own name: one NaN and two out-of-range samples (a value, a stamp)
  * pushed into a still run give nan_rejected 1 and range_rejected 2. No log
- * reaches them through a reader (each refuses NaN and out-of-range values
- * and stamps, and live's receiver skips them before the navigator): the
- * two keys swapped passed every test (the mutation round, 2026-11-29). */
+ * brings a NaN to the navigator (each reader refuses NaN and out-of-range
+ * values and stamps, and live's receiver skips them), and an out-of-range
+ * value only through replay --rate, whose low-pass overshoots a swing
+ * between -1e6 and 1e6: the two keys swapped passed every test (the
+ * mutation round, 2026-11-29). */
 static void test_health_keys(void **state)
 {
     static fnav_nav_t nav;
