@@ -126,12 +126,12 @@ expect_exit 3 "unwritable truth" "$H" sim --out "$T/x.bin" --truth "$T/no/such/d
 if [ -w /dev/full ]; then
     expect_exit 3 "truth CSV onto a full disk" "$H" sim --out "$T/x.bin" --truth /dev/full --duration 2
     expect_err "/dev/full: write failed" "the truth file's failed write is said"
-    [ -s "$T/out" ] && fail "a summary after the truth write failed: $(head -1 "$T/out")" ||
-        pass "no summary after the truth write failed"
+    if [ -s "$T/out" ]; then fail "a summary after the truth write failed: $(head -1 "$T/out")"; else
+        pass "no summary after the truth write failed"; fi
     expect_exit 3 "log onto a full disk" "$H" sim --out /dev/full --duration 2
     expect_err "/dev/full: write failed" "the log's failed write is said"
-    [ -s "$T/out" ] && fail "a summary after the log write failed: $(head -1 "$T/out")" ||
-        pass "no summary after the log write failed"
+    if [ -s "$T/out" ]; then fail "a summary after the log write failed: $(head -1 "$T/out")"; else
+        pass "no summary after the log write failed"; fi
     # one error line with the reason, as convert's: a .bin log (whose
     # record write fails in the run) said "write failed" and then, on
     # closing, "write failed (No space left on device)"; the truth CSV said
