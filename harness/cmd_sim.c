@@ -34,7 +34,8 @@ typedef struct {
     hx_writer_t *w;
     FILE *truth;
     const char *truth_path;
-    int write_error;
+    int write_error;     /* 1 the log, 2 the truth CSV */
+    int truth_errno;     /* errno of the truth CSV's failed write */
     size_t written, dropped, dups, ticks, total;
     double peak_f, peak_w;
     hx_progress_t prog;
@@ -72,6 +73,7 @@ static int sink(void *vctx, const hx_sim_tick_t *tk)
                         tk->bias[2], tk->bias[3], tk->bias[4], tk->bias[5]);
         if (r < 0) {
             s->write_error = 2;
+            s->truth_errno = errno;
             return 1;
         }
     }
@@ -197,15 +199,20 @@ int hx_cmd_sim(int argc, char **argv)
     if (rc < 0) {
         hx_error("sim", "%s", err);
         status = HX_EXIT_USAGE;
-    } else if (ctx.write_error) {
-        hx_error("sim", "%s: write failed", ctx.write_error == 1 ? out : truth);
+    } else if (ctx.write_error == 1) {
+        status = HX_EXIT_IO; /* hx_writer_close below names the error, with its reason */
+    } else if (ctx.write_error == 2) {
+        /* one line with the reason, as convert's (the log's failure was
+         * said twice, the truth CSV's without a reason; the mutation
+         * round, 2026-11-29) */
+        hx_error("sim", "%s: write failed (%s)", truth, strerror(ctx.truth_errno));
         status = HX_EXIT_IO;
     }
     if (hx_writer_close(ctx.w, err, sizeof err) != FNAV_OK) {
         hx_error("sim", "%s", err);
         status = HX_EXIT_IO;
     }
-    if (ctx.truth != NULL && fclose(ctx.truth) != 0) {
+    if (ctx.truth != NULL && fclose(ctx.truth) != 0 && ctx.write_error != 2) {
         hx_error("sim", "%s: write failed (%s)", truth, strerror(errno));
         status = HX_EXIT_IO;
     }

@@ -195,7 +195,8 @@ typedef struct {
 
 /** Lost samples in motion: the strapdown integrates a gap by interpolating
  *  between the readings at its ends, so the motion inside is not measured.
- *  A gap longer than HX_NAV_LONG_GAP_S during motion is a "long gap"; when
+ *  A gap longer than HX_NAV_LONG_GAP_S during motion is a "long gap" (one of
+ *  exactly 20 ms is none: test_nav test_long_gap_edge); when
  *  the time they lose reaches HX_NAV_GAP_LOST_FRACTION of the motion time,
  *  the summary notes that position and heading are unreliable. Found on
  *  openshoe_gx2 walk 2 with samples deleted (the generalisation review,

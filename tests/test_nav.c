@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include <cmocka.h>
+#include <cjson/cJSON.h>
 
 #include "footnav/fnav_nav.h"
 #include "fnav_testdata.h"
@@ -1576,6 +1577,161 @@ static void test_note_thresholds(void **state)
     assert_false(hx_nav_gappy(&s));
 }
 
+/* The whole of a file into a NUL-terminated buffer (free it), NULL if unreadable. */
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf = NULL;
+    long n;
+    if (f == NULL) {
+        return NULL;
+    }
+    if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0 &&
+        (buf = (char *)malloc((size_t)n + 1)) != NULL) {
+        buf[fread(buf, 1, (size_t)n, f)] = '\0';
+    }
+    fclose(f);
+    return buf;
+}
+
+/* The health counters of replay's and eval's JSON and summary, each under
+ * its own name: one NaN and two out-of-range samples (a value, a stamp)
+ * pushed into a still run give nan_rejected 1 and range_rejected 2. No log
+ * brings a NaN to the navigator (each reader refuses NaN and out-of-range
+ * values and stamps, and live's receiver skips them), and an out-of-range
+ * value only through replay --rate, whose low-pass overshoots a swing
+ * between -1e6 and 1e6: the two keys swapped passed every test (the
+ * mutation round, 2026-11-29). */
+static void test_health_keys(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_nav_frame_t fr;
+    hx_traj_t t;
+    hx_nav_summary_t s;
+    fnav_sample_t bad;
+    char json_path[] = "/tmp/fnav_health_XXXXXX", txt_path[] = "/tmp/fnav_health_txt_XXXXXX", err[256];
+    char *text;
+    cJSON *root, *h;
+    FILE *f;
+    long k;
+    int fd;
+    (void)state;
+    memset(&t, 0, sizeof t);
+    t.input_complete = -1; /* not said: no complete/error keys */
+    t.cap = 400;
+    t.f = (fnav_nav_frame_t *)malloc(t.cap * sizeof *t.f);
+    assert_non_null(t.f);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    for (k = 0; k < 300; k++) {
+        fnav_sample_t smp = still(k);
+        if (k == 150) {
+            bad = still(k);
+            bad.gyro_rps[0] = (fnav_real_t)NAN;
+            assert_int_equal(fnav_nav_push(&nav, &bad), FNAV_E_NANINF);
+            bad = still(k);
+            bad.accel_mps2[2] = FNAV_R(2.0e6);
+            assert_int_equal(fnav_nav_push(&nav, &bad), FNAV_E_RANGE);
+            bad = still(k);
+            bad.t_ns = FNAV_T_NS_MAX + 1;
+            assert_int_equal(fnav_nav_push(&nav, &bad), FNAV_E_RANGE);
+        }
+        assert_int_equal(fnav_nav_push(&nav, &smp), FNAV_OK);
+        while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+            assert_true(t.n < t.cap);
+            t.f[t.n++] = fr;
+        }
+    }
+    fnav_nav_finish(&nav);
+    while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
+        assert_true(t.n < t.cap);
+        t.f[t.n++] = fr;
+    }
+    t.stats = nav.stats;
+    t.rate_hz = (double)nav.stance.rate_hz;
+    t.aligned = nav.aligned;
+    hx_nav_summarize(&t, &s);
+
+    fd = mkstemp(json_path);
+    assert_true(fd >= 0);
+    f = fdopen(fd, "w"); /* hx_nav_write_json writes it by name */
+    assert_non_null(f);
+    fclose(f);
+    assert_int_equal(hx_nav_write_json(json_path, "still.csv", "test", &t, &s, err, sizeof err), 0);
+    text = slurp(json_path);
+    remove(json_path);
+    assert_non_null(text);
+    root = cJSON_Parse(text);
+    free(text);
+    assert_non_null(root);
+    h = cJSON_GetObjectItemCaseSensitive(root, "health");
+    assert_non_null(h);
+    assert_true(cJSON_IsNumber(cJSON_GetObjectItemCaseSensitive(h, "nan_rejected")));
+    assert_true(cJSON_IsNumber(cJSON_GetObjectItemCaseSensitive(h, "range_rejected")));
+    assert_int_equal(cJSON_GetObjectItemCaseSensitive(h, "nan_rejected")->valueint, 1);
+    assert_int_equal(cJSON_GetObjectItemCaseSensitive(h, "range_rejected")->valueint, 2);
+    cJSON_Delete(root);
+
+    fd = mkstemp(txt_path);
+    assert_true(fd >= 0);
+    f = fdopen(fd, "w");
+    assert_non_null(f);
+    hx_nav_print_summary(f, "still.csv", &t, &s);
+    fclose(f);
+    text = slurp(txt_path);
+    remove(txt_path);
+    assert_non_null(text);
+    if (strstr(text, "1 NaN/Inf rejected, 2 out of range rejected") == NULL) {
+        fail_msg("the summary's health line does not say 1 NaN/Inf and 2 out of range rejected:\n%s", text);
+    }
+    free(text);
+    hx_traj_free(&t);
+}
+
+/* A long gap in motion is one longer than HX_NAV_LONG_GAP_S (docs/harness.md,
+ * "replay": "gaps longer than 20 ms"): an interval of exactly 20 ms is not
+ * one, 1 ns more is. The stamps are whole nanoseconds and 1e-9 x 20,000,000
+ * is 0.020 exactly in double, so the edge is sharp. Frames at 400 Hz, all
+ * aligned and in motion, with one interval of 20 ms or 20 ms + 1 ns among
+ * them (>= in place of > passed every test: the mutation round, 2026-11-29). */
+static void test_long_gap_edge(void **state)
+{
+    static const int64_t k_gap_ns[2] = { 20000000, 20000001 };
+    int g;
+    (void)state;
+    for (g = 0; g < 2; g++) {
+        hx_traj_t t;
+        hx_nav_summary_t s;
+        size_t i;
+        int64_t tn = 0;
+        memset(&t, 0, sizeof t);
+        t.n = t.cap = 800;
+        t.f = (fnav_nav_frame_t *)calloc(t.cap, sizeof *t.f);
+        assert_non_null(t.f);
+        t.rate_hz = 400.0;
+        t.max_gap_s = 0.5;
+        t.aligned = 1;
+        for (i = 0; i < t.n; i++) {
+            t.f[i].t_ns = tn;
+            t.f[i].seq = (uint32_t)i;
+            t.f[i].flags = FNAV_FRAME_ALIGNED; /* no stance: every interval is motion */
+            tn += i == 400 ? k_gap_ns[g] : 2500000;
+        }
+        hx_nav_summarize(&t, &s);
+        assert_true(fabs(s.motion_s - (798 * 0.0025 + 1e-9 * (double)k_gap_ns[g])) < 1e-12);
+        if (g == 0) {
+            assert_int_equal(s.long_gaps, 0);
+            assert_true(s.gap_lost_s == 0.0);
+            assert_true(s.longest_motion_gap_s == 0.0);
+        } else {
+            assert_int_equal(s.long_gaps, 1);
+            assert_true(fabs(s.gap_lost_s - (0.020000001 - 0.0025)) < 1e-12);
+            assert_true(s.longest_motion_gap_s == 1e-9 * 20000001.0);
+        }
+        hx_traj_free(&t);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1605,6 +1761,8 @@ int main(void)
         cmocka_unit_test(test_resampler_time_jump),
         cmocka_unit_test(test_sat_two_runs),
         cmocka_unit_test(test_note_thresholds),
+        cmocka_unit_test(test_health_keys),
+        cmocka_unit_test(test_long_gap_edge),
         cmocka_unit_test(test_golden_replays),
         cmocka_unit_test(test_float_vs_double),
     };

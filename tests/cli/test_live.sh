@@ -205,6 +205,18 @@ grep_in "$T/live.err" "drop: 1 frame(s) lost before frame seq 501" "the first dr
 grep_in "$T/live.out" "the sender sent $N samples, $((N - DROP)) received" "END count shows the missing samples"
 grep_in "$T/stream.out" "$N samples sent to $B ($DROP of them left out by --inject-drop, $((N - DROP)) written)" "stream says how many it left out"
 
+# --- a log with a bad line partway: every sample before it is sent, END
+# counts them, and the exit is 1 with the line named (a mutant that exited 0
+# here passed every case above; the mutation round of 2026-11-29)
+{ head -501 "$T/orig.csv"; echo "1.0,x,0,0,0,0,0"; tail -n +502 "$T/orig.csv"; } >"$T/bad_mid.csv"
+start_live --record "$T/rec_b.bin" --timeout 30
+stream "$T/bad_mid.csv" --speed 40
+wait_live
+expect_rc "$STREAM_RC" 1 "stream of a log with a bad line partway"
+grep_in "$T/stream.err" "bad_mid.csv:502" "the stream's warning names the bad line"
+grep_in "$T/stream.out" "^stream: 500 samples sent to $B" "stream sent the 500 samples before the bad line"
+grep_in "$T/live.out" "END frame, the sender sent 500 samples, 500 received" "live received them all, and END"
+
 # --- the port disappears mid-stream: clean end, recording intact
 start_live --record "$T/rec_h.bin" --timeout 60
 stream vectors/walk.bin --speed 40 --hangup-after 1000

@@ -313,6 +313,24 @@ then pass "motion_gaps agree with a recount"; else fail "motion_gaps recount: $(
 awk -F, 'NR == 1 || ($1 + 0.1) % 0.3 >= 0.012' "$T/unclipped.csv" > "$T/gappy12.csv"
 expect_exit 0 "a walk with 12 ms holes" "$H" replay "$T/gappy12.csv"
 if grep -q "of the time in motion is lost" "$T/out"; then fail "12 ms holes noted as unreliable"; else pass "no note for 12 ms holes"; fi
+# the edge: a long gap is one longer than 20 ms, and a hole of exactly 20 ms
+# is none. The walk on an exact 400 Hz grid (whole nanoseconds) with 7 rows
+# deleted every 120 (intervals of 20.0 ms, 6 % of the motion time lost) has
+# no note and no long gap; with 8 (22.5 ms) the note (>= in place of > passed
+# every case; the mutation round, 2026-11-29; test_nav's test_long_gap_edge
+# pins the nanosecond)
+for k in 7 8; do
+    awk -F, -v K=$k 'BEGIN { OFS = "," } NR == 1 { print; next }
+        { r = NR - 2; if (r % 120 >= 60 && r % 120 < 60 + K) next; $1 = sprintf("%.9f", r * 0.0025); print }' \
+        "$T/unclipped.csv" > "$T/holes$k.csv"
+done
+expect_exit 0 "a 400 Hz walk with 20.0 ms holes" "$H" replay "$T/holes7.csv" --json "$T/holes7.json"
+if grep -q "of the time in motion is lost" "$T/out"; then fail "holes of exactly 20 ms noted as longer than 20 ms"; else
+    pass "no note for holes of exactly 20 ms"; fi
+json "$T/holes7.json" 'j["motion_gaps"]["gaps"] == 0 and j["motion_gaps"]["lost_s"] == 0 and j["health"]["longest_interval_s"] > 0.0199' &&
+    pass "holes of exactly 20 ms: no long gap in motion_gaps" || fail "20 ms holes motion_gaps: $(cat "$T/pyerr")"
+expect_exit 0 "a 400 Hz walk with 22.5 ms holes" "$H" replay "$T/holes8.csv"
+expect_out_re "^note +[0-9.]+ % of the time in motion is lost in [0-9]+ gaps longer than 20 ms \(longest 22\.5 ms\)" "22.5 ms holes are noted"
 json "$T/unclip.json" 'j["motion_gaps"]["unreliable"] is False and j["motion_gaps"]["gaps"] == 0' &&
     pass "the walk as recorded: no long gap in motion" || fail "walk motion_gaps: $(cat "$T/pyerr")"
 

@@ -120,6 +120,30 @@ expect_exit 0 "integrating sensor" "$H" sim --out "$T/m.bin" --duration 3 --rate
 expect_out "interval means" "summary names the decimation"
 expect_exit 3 "unwritable output" "$H" sim --out "$T/no/such/dir/x.bin" --duration 2
 expect_exit 3 "unwritable truth" "$H" sim --out "$T/x.bin" --truth "$T/no/such/dir/t.csv" --duration 2
+# an output that fails while the run writes it (a full disk): exit 3, the
+# file named, no summary (a mutant that exited 0 on a failed truth write,
+# summary printed, passed every case above; the mutation round of 2026-11-29)
+if [ -w /dev/full ]; then
+    expect_exit 3 "truth CSV onto a full disk" "$H" sim --out "$T/x.bin" --truth /dev/full --duration 2
+    expect_err "/dev/full: write failed" "the truth file's failed write is said"
+    if [ -s "$T/out" ]; then fail "a summary after the truth write failed: $(head -1 "$T/out")"; else
+        pass "no summary after the truth write failed"; fi
+    expect_exit 3 "log onto a full disk" "$H" sim --out /dev/full --duration 2
+    expect_err "/dev/full: write failed" "the log's failed write is said"
+    if [ -s "$T/out" ]; then fail "a summary after the log write failed: $(head -1 "$T/out")"; else
+        pass "no summary after the log write failed"; fi
+    # one error line with the reason, as convert's: a .bin log (whose
+    # record write fails in the run) said "write failed" and then, on
+    # closing, "write failed (No space left on device)"; the truth CSV said
+    # no reason
+    ln -s /dev/full "$T/full.bin"
+    for o in "--out $T/full.bin" "--out $T/x.bin --truth /dev/full"; do
+        # shellcheck disable=SC2086
+        expect_exit 3 "sim $o" "$H" sim $o --duration 2
+        if [ "$(grep -c 'error:' "$T/err")" -eq 1 ] && grep -q "write failed (No space left on device)" "$T/err"; then
+            pass "sim $o: one error line with the reason"; else fail "sim $o: the write error said twice or without its reason"; cat "$T/err"; fi
+    done
+fi
 HA=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")
 (cd "$T" && "$HA" sim --out x2.bin --truth - --duration 2 >/dev/null 2>"$T/err"); rc=$?
 if [ $rc -eq 2 ] && [ ! -e "$T/-" ] && grep -q "needs a file name" "$T/err"; then pass "sim --truth - refused (it wrote a file named -)"; else fail "sim --truth -: exit $rc"; fi
