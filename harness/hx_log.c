@@ -1631,10 +1631,25 @@ double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)
     if (fabs(t1 / (double)q - floor(t1 / (double)q + 0.5)) > 0.05) {
         thr += (double)q;
     }
-    for (i = 0; i + 1u < m; i++) {
-        if ((double)d[i] <= thr) {
-            sum += (double)d[i];
-            used++;
+    {
+        int64_t lo = INT64_MAX, hi = 0;
+        for (i = 0; i + 1u < m; i++) {
+            if ((double)d[i] <= thr) {
+                sum += (double)d[i];
+                used++;
+                lo = d[i] < lo ? d[i] : lo;
+                hi = d[i] > hi ? d[i] : hi;
+            }
+        }
+        if (used > 0u && lo == hi && m == n && coarse != NULL) {
+            /* every interval that is no gap the same and no stamp repeated
+             * (a sample counter's k / rate, lost samples as gaps): the
+             * stamps show no rounding and the median interval, the
+             * detector's own estimate, is exact; until 2026-11-29 replay
+             * said such a grid was "too coarse for the detector's
+             * estimate" (test_stamp_rate). Repeated stamps (10 s stamps on
+             * a 100 Hz log) hide the samples' own times: coarse. */
+            *coarse = 0;
         }
     }
     rate = used > 0u ? 1.0e9 * (double)used / sum : 1.0e9 / t1;

@@ -1563,16 +1563,35 @@ static void test_stamp_rate(void **state)
     }
     {
         /* stamps from a sample counter (k / 100 Hz) with 1 % lost samples:
-         * exactly 100 Hz (the lost ones are gaps, not rounding) */
+         * exactly 100 Hz (the lost ones are gaps, not rounding), and not
+         * coarse: every interval is a whole number of the median one, which
+         * the detector's own median estimate reads exactly (replay said
+         * such a grid was "too coarse for the detector's estimate": the
+         * stamps' resolution, the intervals' gcd, is the period itself;
+         * the mutation round of 2026-11-29) */
         uint64_t r = 3u;
         int64_t c = 0;
+        int coarse = 1;
         size_t k;
         for (k = 0; k < N; k++) {
             r = 6364136223846793005u * r + 1442695040888963407u;
             c += ((r >> 40) < 167772u) ? 2 : 1;
             t[k] = c * 10000000;
         }
-        assert_true(hx_stamp_rate_hz(t, N, NULL) == 100.0);
+        assert_true(hx_stamp_rate_hz(t, N, &coarse) == 100.0);
+        assert_int_equal(coarse, 0);
+        /* one interval that is no whole number of periods (10 ms read as
+         * 11): coarse, as a 100 Hz log stamped to the millisecond whose
+         * clock runs slow */
+        t[N / 2] += 1000000;
+        (void)hx_stamp_rate_hz(t, N, &coarse);
+        assert_int_equal(coarse, 1);
+        /* a repeated stamp on the grid: the stamps hide a sample's own
+         * time (10 s stamps on a 100 Hz log repeat): coarse */
+        t[N / 2] -= 1000000;
+        t[N / 2] = t[N / 2 - 1];
+        (void)hx_stamp_rate_hz(t, N, &coarse);
+        assert_int_equal(coarse, 1);
     }
     {
         /* a 100.4 Hz log stamped to 0.1 ms (four decimals): the intervals

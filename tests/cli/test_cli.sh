@@ -106,9 +106,11 @@ expect_out_re "^ {25}the filter's sensor profile" "its help follows on the next 
 # beside "median 4.998 ms" (its first 4,096 intervals have a median of 5.000 ms)
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; t = 0; for (k = 0; k < 9100; k++) { printf "%.6f,0,0,9.8,0,0,0\n", t; t += (k < 4100 ? 0.010 : 0.010002) } }' > "$T/r.csv"
 expect_exit 0 "info on a log whose interval grows by 2 us after 4,100 samples" "$H" info "$T/r.csv"
-# (stamps exact to the period: no finer than it, so hx_stamp_rate_hz takes
-# the mean of the intervals that are not gaps, and the line says so)
-expect_out "^rate        100.000 Hz (from the time stamps of the first 4,096 samples: their mean interval without gaps)$" "the rate is of the first 4,096 samples, and the line says so"
+# (stamps exact to the period, every interval the same: a grid, whose median
+# interval is exact, and the line says so; until 2026-11-29 stamps no finer
+# than the period were all "coarse", and the line said "their mean interval
+# without gaps", the same 100 Hz)
+expect_out "^rate        100.000 Hz (from the time stamps of the first 4,096 samples: 1 / their median interval)$" "the rate is of the first 4,096 samples, and the line says so"
 expect_out "^interval    median 10.002 ms" "the interval line is of the whole log"
 grep -q "first 4,096 samples" docs/harness.md && pass "docs/harness.md says the rate is of the first 4,096 samples" ||
     fail "docs/harness.md does not say that info's rate comes from the first 4,096 samples"
