@@ -19,6 +19,7 @@
 #include "hx_simgap_nav.h"
 
 #include <gsl/gsl_cdf.h>
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -383,6 +384,27 @@ static int stances_counted(const navrun_t *r, const int64_t *t_ns, long a, long 
 #define NAV_WIN_SEG 3
 #define MAX_ST 4096
 
+/* Every stance of [a, b) in a list of the size it needs (free() it), with
+ * their number in *ns; NULL when out of memory. A list of MAX_ST stances
+ * dropped those after it without a word: a 90-minute walk has about 4,900
+ * (the scale review, 2026-11-29). */
+static stance_t *stances_all(const navrun_t *r, long a, long b, int *ns)
+{
+    int cap = MAX_ST;
+    for (;;) {
+        stance_t *st = (stance_t *)malloc((size_t)cap * sizeof *st);
+        if (st == NULL) {
+            return NULL;
+        }
+        *ns = stances_of(r, a, b, st, cap);
+        if (*ns < cap || cap > INT_MAX / 2) {
+            return st;
+        }
+        free(st); /* full: there may be more */
+        cap *= 2;
+    }
+}
+
 static double lnpos(double v)
 {
     return log(v > 1e-30 ? v : 1e-30);
@@ -393,8 +415,8 @@ static double lnpos(double v)
 static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, int nwin, int drift,
                        const double (*truth_p)[3], int with_pl, sg_plist_t *pl, double *vals)
 {
-    stance_t *st = (stance_t *)malloc(MAX_ST * sizeof *st);
     int ns, i, w, c;
+    stance_t *st = stances_all(r, a, b, &ns);
     long cnt = 0;
     double sf = 0.0, sa = 0.0, nu = 0.0, en = 0.0, es = 0.0, vr = 0.0, ax[3] = { 0, 0, 0 };
     double t0 = (double)(t_ns[a] - t_ns[0]) * 1e-9, t1 = (double)(t_ns[b - 1] - t_ns[0]) * 1e-9;
@@ -402,7 +424,6 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, i
     if (st == NULL) {
         return -1;
     }
-    ns = stances_of(r, a, b, st, MAX_ST);
     for (i = 0; i < ns; i++) {
         sf += st[i].nis_first;
         sa += st[i].nis_sum;
@@ -2407,8 +2428,8 @@ int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const
 {
     hx_plot_t p;
     char path[HX_PLOT_PATH_SIZE];
-    stance_t *st = (stance_t *)malloc(MAX_ST * sizeof *st);
     int ns, i;
+    stance_t *st = stances_all(&nv->real, 0, nv->n, &ns);
     (void)r;
     if (st == NULL) {
         return -1;
@@ -2418,7 +2439,6 @@ int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const
         free(st);
         return -1;
     }
-    ns = stances_of(&nv->real, 0, nv->n, st, MAX_ST);
     fprintf(p.gp, "set multiplot layout 2,1 title 'Zero-velocity-update innovations of the real walk'\n");
     if (ns == 0) {
         /* no stance, no update: two empty panels that say so (gnuplot
