@@ -8,12 +8,12 @@
 #   sh scripts/scale_bench.sh [DIR]     # scratch directory (default: a new
 #                                       # one under /tmp, removed at the end)
 #
-# About 3 GB of scratch and 20 minutes on the shared two-core machine. Every
+# About 1 GB of scratch and 8 minutes on the shared two-core machine. Every
 # run is niced and stopped after SCALE_TIMEOUT seconds (default 600; the
 # table then says "timeout"). SCALE_QUICK=1 runs only the 1-hour static log
 # and the 30-minute walk; SCALE_BIG=1 adds a day at 400 Hz (34.6 million
-# samples, 1.7 GB .bin, 3.5 GB as CSV; about 10 more minutes and 5 GB of
-# memory for replay). Run from the repository root after `make`.
+# samples, 1.7 GB .bin and 3.5 GB as CSV at once; about 7 more minutes and
+# 5 GB of memory for replay). Run from the repository root after `make`.
 set -u
 H=${HARNESS:-$(pwd)/bin/harness}
 TO=${SCALE_TIMEOUT:-600}
