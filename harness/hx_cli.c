@@ -344,16 +344,27 @@ hx_reader_t *hx_open_input(const char *cmd, const hx_args_t *a, const char *path
     return r;
 }
 
+static void load_progress(void *ctx, double frac)
+{
+    hx_progress_update((hx_progress_t *)ctx, frac);
+}
+
 int hx_load_input(const char *cmd, const hx_args_t *a, const char *path, hx_log_t *log)
 {
     hx_format_t fmt;
     double rate;
-    char err[320];
+    char err[320], label[48];
+    hx_progress_t pr;
     int rc;
     if (input_options(cmd, a, &fmt, &rate) != 0) {
         return -1;
     }
-    rc = hx_log_load(log, path, fmt, rate, err, sizeof err);
+    /* the reading of a long log shows progress (a day at 100 Hz took
+     * `info` 2.3 s without a word; the scale review, 2026-11-29) */
+    snprintf(label, sizeof label, "%s: reading", cmd);
+    hx_progress_start(&pr, label, 1.0);
+    rc = hx_log_load_progress(log, path, fmt, rate, load_progress, &pr, err, sizeof err);
+    hx_progress_end(&pr);
     if (rc < 0) {
         hx_error(cmd, "%s", err);
         return -1;

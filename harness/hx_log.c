@@ -1967,6 +1967,12 @@ fnav_status_t hx_writer_close(hx_writer_t *w, char *err, size_t err_size)
 
 int hx_log_load(hx_log_t *log, const char *path, hx_format_t fmt, double rate_hz, char *err, size_t err_size)
 {
+    return hx_log_load_progress(log, path, fmt, rate_hz, NULL, NULL, err, err_size);
+}
+
+int hx_log_load_progress(hx_log_t *log, const char *path, hx_format_t fmt, double rate_hz,
+                         void (*progress)(void *ctx, double frac), void *ctx, char *err, size_t err_size)
+{
     hx_reader_t *r;
     size_t cap = 0;
     fnav_sample_t s;
@@ -2007,6 +2013,15 @@ int hx_log_load(hx_log_t *log, const char *path, hx_format_t fmt, double rate_hz
         log->gyr[log->n][2] = (double)s.gyro_rps[2];
         log->temp[log->n] = (s.flags & FNAV_SAMPLE_HAS_TEMP) ? (double)s.temp_c : (double)NAN;
         log->n++;
+        if (progress != NULL && (log->n & 65535u) == 0u) {
+            const double f = hx_reader_progress(r);
+            if (f >= 0.0) {
+                progress(ctx, f);
+            }
+        }
+    }
+    if (progress != NULL) {
+        progress(ctx, 1.0);
     }
     log->status = st;
     log->stats = *hx_reader_stats(r);

@@ -19,6 +19,7 @@
 #include "hx_simgap_nav.h"
 
 #include <gsl/gsl_cdf.h>
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -383,6 +384,27 @@ static int stances_counted(const navrun_t *r, const int64_t *t_ns, long a, long 
 #define NAV_WIN_SEG 3
 #define MAX_ST 4096
 
+/* Every stance of [a, b) in a list of the size it needs (free() it), with
+ * their number in *ns; NULL when out of memory. A list of MAX_ST stances
+ * dropped those after it without a word: a 90-minute walk has about 4,900
+ * (the scale review, 2026-11-29). */
+static stance_t *stances_all(const navrun_t *r, long a, long b, int *ns)
+{
+    int cap = MAX_ST;
+    for (;;) {
+        stance_t *st = (stance_t *)malloc((size_t)cap * sizeof *st);
+        if (st == NULL) {
+            return NULL;
+        }
+        *ns = stances_of(r, a, b, st, cap);
+        if (*ns < cap || cap > INT_MAX / 2) {
+            return st;
+        }
+        free(st); /* full: there may be more */
+        cap *= 2;
+    }
+}
+
 static double lnpos(double v)
 {
     return log(v > 1e-30 ? v : 1e-30);
@@ -393,8 +415,8 @@ static double lnpos(double v)
 static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, int nwin, int drift,
                        const double (*truth_p)[3], int with_pl, sg_plist_t *pl, double *vals)
 {
-    stance_t *st = (stance_t *)malloc(MAX_ST * sizeof *st);
     int ns, i, w, c;
+    stance_t *st = stances_all(r, a, b, &ns);
     long cnt = 0;
     double sf = 0.0, sa = 0.0, nu = 0.0, en = 0.0, es = 0.0, vr = 0.0, ax[3] = { 0, 0, 0 };
     double t0 = (double)(t_ns[a] - t_ns[0]) * 1e-9, t1 = (double)(t_ns[b - 1] - t_ns[0]) * 1e-9;
@@ -402,7 +424,6 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, i
     if (st == NULL) {
         return -1;
     }
-    ns = stances_of(r, a, b, st, MAX_ST);
     for (i = 0; i < ns; i++) {
         sf += st[i].nis_first;
         sa += st[i].nis_sum;
@@ -1034,24 +1055,45 @@ static int run_twins(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *rw
 /* ------------------------------------------------------------ fitting */
 
 /* First-update innovations of the stances of [a, b) of a run (3 per stance)
- * with their covariance and start times. */
+ * with their covariance and start times; all zero before the first
+ * firsts_of, freed by firsts_free. (They were arrays of MAX_ST: the
+ * stances after the 4,096th were dropped without a word, the held-out
+ * ones of a 90-minute walk among them; the scale review, 2026-11-29.) */
 typedef struct {
     int n;
-    double t[MAX_ST];
-    double swing[MAX_ST]; /* time since the previous stance's last update (s; the start of the run for the first) */
-    double y[MAX_ST][3];
-    double S[MAX_ST][6];
+    double *t;
+    double *swing; /* time since the previous stance's last update (s; the start of the run for the first) */
+    double (*y)[3];
+    double (*S)[6];
 } firsts_t;
 
-static void firsts_of(const navrun_t *r, const int64_t *t_ns, long a, long b, firsts_t *f)
+static void firsts_free(firsts_t *f)
 {
-    stance_t *st = (stance_t *)malloc(MAX_ST * sizeof *st);
+    free(f->t);
+    free(f->swing);
+    free(f->y);
+    free(f->S);
+    memset(f, 0, sizeof *f);
+}
+
+/* 0, or -1 when out of memory (f then empty). */
+static int firsts_of(const navrun_t *r, const int64_t *t_ns, long a, long b, firsts_t *f)
+{
     int i, ns;
-    f->n = 0;
+    stance_t *st = stances_all(r, a, b, &ns);
+    firsts_free(f);
     if (st == NULL) {
-        return;
+        return -1;
     }
-    ns = stances_of(r, a, b, st, MAX_ST);
+    f->t = (double *)malloc(((size_t)ns + 1) * sizeof *f->t);
+    f->swing = (double *)malloc(((size_t)ns + 1) * sizeof *f->swing);
+    f->y = (double(*)[3])malloc(((size_t)ns + 1) * sizeof *f->y);
+    f->S = (double(*)[6])malloc(((size_t)ns + 1) * sizeof *f->S);
+    if (f->t == NULL || f->swing == NULL || f->y == NULL || f->S == NULL) {
+        firsts_free(f);
+        free(st);
+        return -1;
+    }
     for (i = 0; i < ns; i++) {
         f->t[f->n] = (double)(t_ns[st[i].first] - t_ns[0]) * 1e-9;
         f->swing[f->n] = (double)(t_ns[st[i].first] - t_ns[i > 0 ? st[i - 1].i1 : a]) * 1e-9;
@@ -1060,6 +1102,35 @@ static void firsts_of(const navrun_t *r, const int64_t *t_ns, long a, long b, fi
         f->n++;
     }
     free(st);
+    return 0;
+}
+
+long sg_nav_stance_starts(long n, const int64_t *t_ns, const unsigned char *zupt, double *t, long max)
+{
+    navrun_t r;
+    firsts_t *f = (firsts_t *)calloc(1, sizeof *f);
+    long k, cnt;
+    if (n < 1 || f == NULL || navrun_alloc(&r, n) != 0) {
+        free(f);
+        return -1;
+    }
+    for (k = 0; k < n; k++) {
+        r.flag[k] = zupt[k] ? FL_ZUPT : 0u;
+        r.S[k][0] = r.S[k][3] = r.S[k][5] = 1.0;
+    }
+    if (firsts_of(&r, t_ns, 0, n, f) != 0) {
+        navrun_free(&r);
+        free(f);
+        return -1;
+    }
+    cnt = f->n;
+    for (k = 0; k < cnt && k < max; k++) {
+        t[k] = f->t[k];
+    }
+    navrun_free(&r);
+    firsts_free(f);
+    free(f);
+    return cnt;
 }
 
 /* The stance of b nearest in time to stance i of a (within 0.15 s), or -1. */
@@ -1127,7 +1198,12 @@ static int clean_run(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *rw
         free(tw.gyr);
         return -1;
     }
-    firsts_of(&run, tw.t_ns, segs->start[SG_FULL][0], segs->start[SG_FULL][0] + segs->n[SG_FULL][0], f);
+    if (firsts_of(&run, tw.t_ns, segs->start[SG_FULL][0], segs->start[SG_FULL][0] + segs->n[SG_FULL][0], f) != 0) {
+        navrun_free(&run);
+        free(tw.acc);
+        free(tw.gyr);
+        return -1;
+    }
     navrun_free(&run);
     free(tw.acc);
     free(tw.gyr);
@@ -1176,10 +1252,11 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
 {
     int ch[24], kk[24], np = family_params(id, ch, kk), p, i, a, b;
     double delta = id == FNAV_EFFECT_GSENS ? 1e-3 : 1e-2;
-    firsts_t *base = (firsts_t *)malloc(sizeof *base), *pert = (firsts_t *)malloc(sizeof *pert);
-    double (*J)[MAX_ST][3] = (double(*)[MAX_ST][3])calloc((size_t)np + 1, sizeof *J);
-    double (*r)[3] = (double(*)[3])calloc(MAX_ST, sizeof *r), (*W)[3][3] = (double(*)[3][3])calloc(MAX_ST, sizeof *W);
-    int *mi = (int *)calloc(MAX_ST, sizeof *mi), sel[24], nsel = 0, ok = -1, *hold = (int *)calloc(MAX_ST, sizeof *hold);
+    const size_t nf = (size_t)fr->n + 1; /* J[p * nf + i]: parameter p, stance i */
+    firsts_t *base = (firsts_t *)calloc(1, sizeof *base), *pert = (firsts_t *)calloc(1, sizeof *pert);
+    double (*J)[3] = (double(*)[3])calloc(((size_t)np + 1) * nf, sizeof *J);
+    double (*r)[3] = (double(*)[3])calloc(nf, sizeof *r), (*W)[3][3] = (double(*)[3][3])calloc(nf, sizeof *W);
+    int *mi = (int *)calloc(nf, sizeof *mi), sel[24], nsel = 0, ok = -1, *hold = (int *)calloc(nf, sizeof *hold);
     double disp = 0.0, Q0 = 0.0, Qh0 = 0.0;
     int nm = 0, nh = 0;
     memset(out, 0, sizeof *out);
@@ -1242,7 +1319,7 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
         for (i = 0; i < fr->n; i++) {
             int j = mi[i] >= 0 ? match_swing(base, mi[i], pert) : -1;
             for (a = 0; a < 3; a++) {
-                J[p][i][a] = j >= 0 ? (pert->y[j][a] - base->y[mi[i]][a]) / delta : 0.0;
+                J[(size_t)p * nf + i][a] = j >= 0 ? (pert->y[j][a] - base->y[mi[i]][a]) / delta : 0.0;
             }
         }
     }
@@ -1274,9 +1351,9 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
                     for (s1 = 0; s1 < ns; s1++) {
                         for (a = 0; a < 3; a++) {
                             for (b = 0; b < 3; b++) {
-                                v[s1] += J[idx[s1]][i][a] * W[i][a][b] * r[i][b];
+                                v[s1] += J[(size_t)idx[s1] * nf + i][a] * W[i][a][b] * r[i][b];
                                 for (s2 = 0; s2 < ns; s2++) {
-                                    M[s1][s2] += J[idx[s1]][i][a] * W[i][a][b] * J[idx[s2]][i][b];
+                                    M[s1][s2] += J[(size_t)idx[s1] * nf + i][a] * W[i][a][b] * J[(size_t)idx[s2] * nf + i][b];
                                 }
                             }
                         }
@@ -1326,7 +1403,7 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
                     for (a = 0; a < 3; a++) {
                         e[a] = r[i][a];
                         for (s1 = 0; s1 < ns; s1++) {
-                            e[a] -= J[idx[s1]][i][a] * th[s1];
+                            e[a] -= J[(size_t)idx[s1] * nf + i][a] * th[s1];
                         }
                     }
                     for (a = 0; a < 3; a++) {
@@ -1406,7 +1483,7 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
                 }
                 for (m = 0; m < nsel; m++) {
                     for (a = 0; a < 3; a++) {
-                        pr[a] += J[sel[m]][i][a] * out->eq[m];
+                        pr[a] += J[(size_t)sel[m] * nf + i][a] * out->eq[m];
                     }
                 }
                 for (a = 0; a < 3; a++) {
@@ -1431,6 +1508,12 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
     }
     ok = 0;
 done:
+    if (base != NULL) {
+        firsts_free(base);
+    }
+    if (pert != NULL) {
+        firsts_free(pert);
+    }
     free(base);
     free(pert);
     free(J);
@@ -1797,7 +1880,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
      * by their evidence on both segments; then twins of the selected effect
      * for the held-out navigation gap before and after */
     {
-        firsts_t *fr = (firsts_t *)malloc(sizeof *fr);
+        firsts_t *fr = (firsts_t *)calloc(1, sizeof *fr);
         const double zacc = gsl_cdf_ugaussian_Qinv(r->opts.alpha / (double)(3 + 2 * SG_NCH));
         const double t_split = (double)(rw.t_ns[r->segs.start[SG_HOLD][0]] - rw.t_ns[0]) * 1e-9;
         navstep_t *st = &nv->step[0];
@@ -1812,7 +1895,10 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
         st->selected = -1;
         st->G_hold_before = nv->cmp[SG_HOLD].G;
         st->G_fit_before = nv->cmp[SG_FIT].G;
-        firsts_of(&nv->real, rw.t_ns, 0, r->n, fr);
+        if (firsts_of(&nv->real, rw.t_ns, 0, r->n, fr) != 0) {
+            free(fr);
+            return -1;
+        }
         find_saturation(&rw, r->constant, r->segs.start[SG_HOLD][0], r->segs.start[SG_HOLD][0] + r->segs.n[SG_HOLD][0],
                         sath, nsath);
         for (f = 0; f < 3 && r->confident; f++) {
@@ -2029,6 +2115,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
         }
         nv->model_gap = nv->gap;
         nv->gap = nv->nsel > 0;
+        firsts_free(fr);
         free(fr);
     }
     return 0;
@@ -2407,8 +2494,8 @@ int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const
 {
     hx_plot_t p;
     char path[HX_PLOT_PATH_SIZE];
-    stance_t *st = (stance_t *)malloc(MAX_ST * sizeof *st);
     int ns, i;
+    stance_t *st = stances_all(&nv->real, 0, nv->n, &ns);
     (void)r;
     if (st == NULL) {
         return -1;
@@ -2418,7 +2505,6 @@ int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const
         free(st);
         return -1;
     }
-    ns = stances_of(&nv->real, 0, nv->n, st, MAX_ST);
     fprintf(p.gp, "set multiplot layout 2,1 title 'Zero-velocity-update innovations of the real walk'\n");
     if (ns == 0) {
         /* no stance, no update: two empty panels that say so (gnuplot
@@ -2551,7 +2637,12 @@ static int sim_firsts(const char *script, const fnav_imuerr_config_t *cfg, const
         hx_log_free(&L);
         return -1;
     }
-    firsts_of(&run, w.t_ns, 0, w.n, f);
+    if (firsts_of(&run, w.t_ns, 0, w.n, f) != 0) {
+        snprintf(why, why_size, "out of memory");
+        navrun_free(&run);
+        hx_log_free(&L);
+        return -1;
+    }
     navrun_free(&run);
     hx_log_free(&L);
     return 0;
@@ -2603,9 +2694,9 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
     clean = *cfg;
     clean.mask[FNAV_EFFECT_WHITE] = 0u;
     clean.mask[FNAV_EFFECT_AR1] = 0u;
-    f0 = (firsts_t *)malloc(sizeof *f0);
-    f1 = (firsts_t *)malloc(sizeof *f1);
-    f2 = (firsts_t *)malloc(sizeof *f2);
+    f0 = (firsts_t *)calloc(1, sizeof *f0);
+    f1 = (firsts_t *)calloc(1, sizeof *f1);
+    f2 = (firsts_t *)calloc(1, sizeof *f2);
     if (f0 == NULL || f1 == NULL || f2 == NULL) {
         snprintf(why, why_size, "out of memory");
         goto done;
@@ -2720,6 +2811,15 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
         rc = 0;
     }
 done:
+    if (f0 != NULL) {
+        firsts_free(f0);
+    }
+    if (f1 != NULL) {
+        firsts_free(f1);
+    }
+    if (f2 != NULL) {
+        firsts_free(f2);
+    }
     free(f0);
     free(f1);
     free(f2);

@@ -88,4 +88,13 @@ long sg_nav_stance_points(long n, const int64_t *t_ns, const unsigned char *zupt
                           const double (*S)[6], const double *nis, const double (*v)[3], const double (*p)[3],
                           int nwin, int drift, double *vals, sg_plist_t *pl);
 
+/**
+ * The start times (s after t_ns[0]) of the stances of a filter run given by
+ * its update flags, as the fit of the motion effects takes them (one per
+ * stance, at its first update; a stance as in sg_nav_stance_points).
+ * @param t    receives the first min(count, max) times
+ * @return the number of stances, -1 on bad arguments or memory failure.
+ */
+long sg_nav_stance_starts(long n, const int64_t *t_ns, const unsigned char *zupt, double *t, long max);
+
 #endif /* HX_SIMGAP_NAV_H */

@@ -218,6 +218,70 @@ static void test_stance_points(void **state)
     sg_plist_free(&pl);
 }
 
+/* A long walk: more stances than the 4,096 the stance list once held. 5,000
+ * one-update stances 5 samples apart at 100 Hz (250 s); every first NIS 1
+ * but the last stance's, 1001 (mean 1.2), the last at (3, 4, 0) m from the
+ * first (horizontal drift 5 m), ten windows of 25 s. Until 2026-11-29 the
+ * stances after the 4,096th were dropped without a word: the mean NIS read
+ * 1, the drift ran to stance 4,096 and the last window (stances 4,500 on)
+ * was an empty placeholder (a 90-minute walk at a normal cadence has about
+ * 4,900; the scale review). */
+static void test_stance_points_many(void **state)
+{
+    enum { NS = 5000, GAP = 5, N = NS * GAP, NWIN = 10 };
+    static int64_t t[N];
+    static unsigned char zupt[N];
+    static double y[N][3], S[N][6], nis[N], v[N][3], p[N][3];
+    double vals[8 + NWIN + 2];
+    sg_plist_t pl;
+    long cnt;
+    int k;
+    (void)state;
+    memset(&pl, 0, sizeof pl);
+    for (k = 0; k < N; k++) {
+        t[k] = (int64_t)k * 10000000;
+        S[k][0] = S[k][3] = S[k][5] = 1.0;
+        if (k % GAP == 0) {
+            zupt[k] = 1;
+            nis[k] = 1.0;
+        }
+    }
+    nis[(NS - 1) * GAP] = 1001.0;
+    p[(NS - 1) * GAP][0] = 3.0;
+    p[(NS - 1) * GAP][1] = 4.0;
+    cnt = sg_nav_stance_points(N, t, zupt, (const double(*)[3])y, (const double(*)[6])S, nis,
+                               (const double(*)[3])v, (const double(*)[3])p, NWIN, 1, vals, &pl);
+    assert_int_equal(cnt, 7 + NWIN + 2);
+    FNAV_ASSERT_CLOSE(vals[0], log(1.2), 1e-12, 0.0);
+    assert_int_equal(pl.p[7 + NWIN - 1].kind, SG_NAV_WIN);
+    assert_int_equal(pl.p[7 + NWIN - 1].empty, 0);
+    FNAV_ASSERT_CLOSE(vals[7 + NWIN - 1], log((499.0 + 1001.0) / 500.0), 1e-12, 0.0);
+    assert_int_equal(pl.p[7 + NWIN].kind, SG_NAV_DRIFT_H);
+    FNAV_ASSERT_CLOSE(vals[7 + NWIN], log(5.0), 1e-12, 0.0);
+    sg_plist_free(&pl);
+}
+
+/* The stances the fit of the motion effects takes (sg_nav_stance_starts)
+ * on the 5,000-stance run of test_stance_points_many: every one. Until
+ * 2026-11-29 they were arrays of 4,096, and the later stances (on a
+ * 90-minute walk a third of the held-out ones) were left out of the fit
+ * and its held-out test without a word (the scale review). */
+static void test_stance_starts_many(void **state)
+{
+    enum { NS = 5000, GAP = 5, N = NS * GAP };
+    static int64_t t[N];
+    static unsigned char zupt[N];
+    static double ts[NS];
+    int k;
+    (void)state;
+    for (k = 0; k < N; k++) {
+        t[k] = (int64_t)k * 10000000;
+        zupt[k] = k % GAP == 0;
+    }
+    assert_int_equal(sg_nav_stance_starts(N, t, zupt, ts, NS), NS);
+    FNAV_ASSERT_CLOSE(ts[NS - 1], 0.01 * (NS - 1) * GAP, 1e-9, 0.0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -226,6 +290,8 @@ int main(void)
         cmocka_unit_test(test_match_swing),
         cmocka_unit_test(test_draw_case_reason),
         cmocka_unit_test(test_stance_points),
+        cmocka_unit_test(test_stance_points_many),
+        cmocka_unit_test(test_stance_starts_many),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -165,6 +165,16 @@ expect_exit 0 "sim --seed 1e3 (a whole number)" "$H" sim --out "$T/s.bin" --dura
 expect_exit 0 "info --json - --help" "$H" info vectors/walk.bin --json - --help
 expect_out "^usage: harness info LOG" "the help is on standard output beside --json -"
 
+# --- a long conversion shows progress on standard error (the scale review,
+# 2026-11-29: a day at 100 Hz took 11 s to CSV without a word). A reader that
+# waits 2 s before it drains standard output holds convert past the 1 s after
+# which progress appears, however fast the machine; 200,000 samples.
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 200000; i++) printf "%.2f,0.01,0.02,-9.81,0.001,0.002,0.003\n", i / 100 }' >"$T/long.csv"
+"$H" convert "$T/long.csv" - 2>"$T/err" | (sleep 2; cat >/dev/null)
+expect_err "^convert: *[0-9]* % (" "convert of a long log: progress on standard error"
+expect_err "^convert: done in" "convert of a long log: the progress ends with the time taken"
+rm -f "$T/long.csv"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
