@@ -362,9 +362,16 @@ int hx_load_input(const char *cmd, const hx_args_t *a, const char *path, hx_log_
     /* the reading of a long log shows progress (a day at 100 Hz took
      * `info` 2.3 s without a word; the scale review, 2026-11-29) */
     snprintf(label, sizeof label, "%s: reading", cmd);
-    hx_progress_start(&pr, label, 1.0);
-    rc = hx_log_load_progress(log, path, fmt, rate, load_progress, &pr, err, sizeof err);
-    hx_progress_end(&pr);
+    {
+        /* a command's --quiet ("no progress indicator": simgap's) holds for
+         * the reading too (it printed "simgap: reading: 10 %" under
+         * --quiet; the review of 2026-11-29) */
+        const int k = opt_index(a->spec, "--quiet", strlen("--quiet"));
+        const int quiet = k >= 0 && a->count[k] > 0;
+        hx_progress_start(&pr, label, 1.0);
+        rc = hx_log_load_progress(log, path, fmt, rate, quiet ? NULL : load_progress, &pr, err, sizeof err);
+        hx_progress_end(&pr); /* prints only what was shown */
+    }
     if (rc < 0) {
         hx_error(cmd, "%s", err);
         return -1;

@@ -624,5 +624,34 @@ json "$T/te.json" 'j["verdict"]["answer"] not in ("explained", "partly-explained
 expect_exit 1 "one held-out stance" "$H" simgap "$T/one.csv" --walk --seeds 3 --json "$T/one.json"
 expect_err "has 1 stance with zero-velocity updates" "one stance in the singular"
 
+# --- --quiet ("no progress indicator") holds for the reading of the log too:
+# it printed "simgap: reading: 52 %" (the review of 2026-11-29). The run is
+# stopped 0.1 s in, while it reads 2 M lines, for 1.3 s of wall time, after
+# which progress would show; a stuck log then exits at once. Without
+# --quiet the same run shows the progress (the control: a machine that reads
+# the log in under 0.1 s cannot show either, and says so).
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000000; i++) printf "%.2f,0.01,0.02,-9.81,0.001,0.002,0.003\n", i / 100 }' >"$T/big.csv"
+held_run() { # ERRFILE ARGS...: simgap on big.csv, stopped 0.1 s in for 1.3 s
+    e=$1
+    shift
+    "$H" simgap "$T/big.csv" "$@" --json "$T/big.json" >/dev/null 2>"$e" &
+    p=$!
+    sleep 0.1
+    kill -STOP "$p" 2>/dev/null
+    sleep 1.3
+    kill -CONT "$p" 2>/dev/null
+    wait "$p" 2>/dev/null
+}
+held_run "$T/loud.err"
+held_run "$T/quiet.err" --quiet
+if ! grep -q "^simgap: reading: *[0-9]* %" "$T/loud.err"; then
+    echo "note: the 2 M-line log was read in under 0.1 s: --quiet's reading not checked"
+elif grep -q "reading" "$T/quiet.err"; then
+    fail "simgap --quiet printed the reading's progress: $(head -n 2 "$T/quiet.err")"
+else
+    pass "simgap --quiet: no progress while reading (shown without it)"
+fi
+rm -f "$T/big.csv"
+
 if [ "$fails" -ne 0 ]; then echo "test_simgap.sh: $fails failure(s)"; exit 1; fi
 echo "test_simgap.sh: all passed"
