@@ -531,6 +531,29 @@ typedef struct {
     int cut; /* a last line without its newline (cut off), not read */
 } gcp_t;
 
+/* The n numbers of a truth row, separated by commas, blanks around them
+ * allowed: 0, or -1 for anything else. sscanf's "%lf,%lf,%lf,%lf" took the
+ * number before junk in a field (a y of 6"x"02e-01 as 6, a stride index of
+ * 2.685e as 3) and read a row of five fields shifted (its timestamp as x);
+ * the mutation sweep of 2026-11-29 scored a walk against a footprint 2e16 m
+ * away that way, exit 0. */
+static int truth_row(const char *line, double *v, int n)
+{
+    const char *p = line;
+    int i;
+    for (i = 0; i < n; i++) {
+        p += strspn(p, " \t");
+        if (hx_scan_number(p, &p, &v[i]) != 0) {
+            return -1;
+        }
+        p += strspn(p, " \t");
+        if (i + 1 < n && *p++ != ',') {
+            return -1;
+        }
+    }
+    return p[strspn(p, " \t\r\n")] == '\0' ? 0 : -1;
+}
+
 /* The strides of a _strides_gcp.csv truth file (strideIndex, ..., x, y);
  * 0, or -1 with the reason in why. */
 static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
@@ -544,9 +567,18 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
         return -1;
     }
     while (fgets(line, sizeof line, f) != NULL) {
-        double a, b, c, d;
-        int ok = sscanf(line, "%lf,%lf,%lf,%lf", &a, &b, &c, &d) == 4 && isfinite(a) && isfinite(c) && isfinite(d);
+        double v[4];
+        int ok = truth_row(line, v, 4) == 0;
         size_t k = strspn(line, " \t\r\n");
+        if (strchr(line, '\n') == NULL && !feof(f)) {
+            /* a line longer than the buffer (no truth row is) is one
+             * unreadable row: each 511 characters of it were a row, and the
+             * tail of 1.1e+03x000...0,5.7,-4.0,-0.2 a stride at sample 0 */
+            int c;
+            while ((c = getc(f)) != EOF && c != '\n') {
+            }
+            ok = 0;
+        }
         if (row++ == 0 && !ok) {
             continue; /* the header (a file without one starts with its first stride) */
         }
@@ -566,9 +598,9 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
             snprintf(why, why_size, "truth file has more than %d strides", GCP_MAX);
             return -1;
         }
-        g->idx[g->n] = (long)llround(a);
-        g->x[g->n] = c;
-        g->y[g->n] = d;
+        g->idx[g->n] = (long)llround(v[0]);
+        g->x[g->n] = v[2];
+        g->y[g->n] = v[3];
         g->n++;
     }
     fclose(f);

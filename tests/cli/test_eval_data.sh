@@ -139,6 +139,23 @@ if [ -n "$D" ]; then
     if grep -q "^| half | [0-9]* |.*| [0-9]* strides outside the log not scored |" "$T/truth.md"; then
         pass "vicon strides outside the log are noted"; else fail "vicon log cut: $(grep '^| half' "$T/truth.md")"; fi
     if grep -qi "nan" "$T/truth.md"; then fail "nan in the results: $(grep -i '| nan\|nan |' "$T/truth.md")"; else pass "no nan in the figures"; fi
+    # truth rows with junk in a field (the mutation sweep of 2026-11-29): a
+    # y followed by text, a stride index cut to "1.5e", a row split into five
+    # fields ("8.,9.27e+00": its timestamp read as x, x as y). sscanf took
+    # what came before the junk: here a path of 84.1 m for 47.9 and an RMS
+    # of 3.55 m for 0.44, without a word; in the sweep a footprint 2e16 m
+    # away (path 39579392000000320.0 m, final 0.00 %, exit 0). They are
+    # unreadable rows. So is a line of 600 characters (its index followed by
+    # x and 600 zeros), which was read 511 characters at a time: one
+    # unreadable row and its tail a stride at sample 0
+    J="$T/junk/pyshoe_vicon_llio/own_3dmgx5_footprints"
+    mkdir -p "$J"
+    ln -s "${FP}_imu.csv" "$J/junk_imu.csv"
+    awk -F, 'BEGIN { OFS = "," } NR == 4 { $4 = $4 "\"x\"" } NR == 6 { $1 = "1.5e" } NR == 8 { $2 = "8.," $2 }
+             NR == 10 { $1 = $1 "x" sprintf("%0600d", 0) } { print }' "${FP}_strides_gcp.csv" > "$J/junk_strides_gcp.csv"
+    expect_exit 0 "eval: truth rows with junk in a field" "$H" eval --no-experiments --no-plots --data "$T/junk" --out "$T/junk.md"
+    if grep -q "^| junk | $((n - 4)) | 4[0-9]\.[0-9] | .*| 4 unreadable truth rows ignored |" "$T/junk.md"; then
+        pass "truth rows with junk in a field are unreadable rows, noted"; else fail "junk truth: $(grep '^| junk' "$T/junk.md")"; fi
     # a vicon trial that starts walking (its first 0.25 s cut off: 0.1 s of
     # stillness before the first stride, too little to align on): the filter
     # aligns in a later stance, the strides before are not navigated and were
