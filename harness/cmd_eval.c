@@ -568,7 +568,11 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
     }
     while (fgets(line, sizeof line, f) != NULL) {
         double v[4];
-        int ok = truth_row(line, v, 4) == 0;
+        /* a position beyond FNAV_INPUT_MAX_ABS (1e6 m, the log readers'
+         * bound on any value in SI units) is no footprint: x of -7e42 made
+         * a path of 1.4e43 m and a final error of 0.00 % (mutation sweep,
+         * 2026-11-29) */
+        int ok = truth_row(line, v, 4) == 0 && fabs(v[2]) <= FNAV_INPUT_MAX_ABS && fabs(v[3]) <= FNAV_INPUT_MAX_ABS;
         size_t k = strspn(line, " \t\r\n");
         if (strchr(line, '\n') == NULL && !feof(f)) {
             /* a line longer than the buffer (no truth row is) is one

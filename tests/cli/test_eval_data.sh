@@ -147,14 +147,16 @@ if [ -n "$D" ]; then
     # away (path 39579392000000320.0 m, final 0.00 %, exit 0). They are
     # unreadable rows. So is a line of 600 characters (its index followed by
     # x and 600 zeros), which was read 511 characters at a time: one
-    # unreadable row and its tail a stride at sample 0
+    # unreadable row and its tail a stride at sample 0; and an x of -7e42 m
+    # (in the sweep a path of 1.4e43 m, final 0.00 %)
     J="$T/junk/pyshoe_vicon_llio/own_3dmgx5_footprints"
     mkdir -p "$J"
     ln -s "${FP}_imu.csv" "$J/junk_imu.csv"
     awk -F, 'BEGIN { OFS = "," } NR == 4 { $4 = $4 "\"x\"" } NR == 6 { $1 = "1.5e" } NR == 8 { $2 = "8.," $2 }
-             NR == 10 { $1 = $1 "x" sprintf("%0600d", 0) } { print }' "${FP}_strides_gcp.csv" > "$J/junk_strides_gcp.csv"
+             NR == 10 { $1 = $1 "x" sprintf("%0600d", 0) } NR == 12 { $3 = "-7e42" } { print }' \
+        "${FP}_strides_gcp.csv" > "$J/junk_strides_gcp.csv"
     expect_exit 0 "eval: truth rows with junk in a field" "$H" eval --no-experiments --no-plots --data "$T/junk" --out "$T/junk.md"
-    if grep -q "^| junk | $((n - 4)) | 4[0-9]\.[0-9] | .*| 4 unreadable truth rows ignored |" "$T/junk.md"; then
+    if grep -q "^| junk | $((n - 5)) | 4[0-9]\.[0-9] | .*| 5 unreadable truth rows ignored |" "$T/junk.md"; then
         pass "truth rows with junk in a field are unreadable rows, noted"; else fail "junk truth: $(grep '^| junk' "$T/junk.md")"; fi
     # a vicon trial that starts walking (its first 0.25 s cut off: 0.1 s of
     # stillness before the first stride, too little to align on): the filter
