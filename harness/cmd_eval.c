@@ -866,7 +866,17 @@ static int read_vicon(const char *path, double **vx, double **vy, size_t *n)
     while (fgets(line, sizeof line, f) != NULL) {
         double v[9];
         const char *q = line + strspn(line, " \t");
-        int ok;
+        int ok, long_line = 0;
+        if (strchr(line, '\n') == NULL && !feof(f)) {
+            /* a line longer than the buffer is one row, without a position:
+             * each 511 characters of it were a row, and every stride after
+             * it took the position of the sample before (mutation sweep,
+             * 2026-11-29) */
+            int c;
+            while ((c = getc(f)) != EOF && c != '\n') {
+            }
+            long_line = 1;
+        }
         if (line[strspn(line, " \t\r\n\v\f")] == '\0' || *q == '#') {
             continue;
         }
@@ -874,9 +884,10 @@ static int read_vicon(const char *path, double **vx, double **vy, size_t *n)
             header = 0;
             continue;
         }
-        ok = sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6],
-                    &v[7], &v[8]) == 9 &&
-             isfinite(v[7]) && isfinite(v[8]) && !(strchr(line, '\n') == NULL && feof(f));
+        /* nine numbers, as read_gcp's rows (sscanf took 1.04 of a y of
+         * 1.04xyz) */
+        ok = !long_line && truth_row(line, v, 9) == 0 && fabs(v[7]) <= FNAV_INPUT_MAX_ABS &&
+             fabs(v[8]) <= FNAV_INPUT_MAX_ABS && !(strchr(line, '\n') == NULL && feof(f));
         if (*n == cap) {
             cap = cap ? cap * 2 : 4096;
             *vx = (double *)ev_realloc(*vx, cap, sizeof **vx);

@@ -158,6 +158,24 @@ if [ -n "$D" ]; then
     expect_exit 0 "eval: truth rows with junk in a field" "$H" eval --no-experiments --no-plots --data "$T/junk" --out "$T/junk.md"
     if grep -q "^| junk | $((n - 5)) | 4[0-9]\.[0-9] | .*| 5 unreadable truth rows ignored |" "$T/junk.md"; then
         pass "truth rows with junk in a field are unreadable rows, noted"; else fail "junk truth: $(grep '^| junk' "$T/junk.md")"; fi
+    # the vicon positions in the IMU file, read as the truth rows: a y of
+    # 1.04xyz at the 5th stride was read as 1.04; a line of 600 characters
+    # (an x followed by 600 ']') just before it was two rows, so that the 5th
+    # stride took the position of the row before and every later one too
+    # (the mutation sweep of 2026-11-29): one row without a position
+    VJ="$T/vjunk/pyshoe_vicon_llio/vicon_3dmgx3"
+    mkdir -p "$VJ"
+    awk -F, -v r=$row 'BEGIN { OFS = "," } NR == r { $9 = $9 "xyz" } { print }' "${VI}_imu.csv" > "$VJ/yjunk_imu.csv"
+    awk -F, -v r=$((row - 1)) 'BEGIN { OFS = "," } NR == r { $8 = $8 sprintf("%600s", "") } { gsub(/ /, "]"); print }' \
+        "${VI}_imu.csv" > "$VJ/long_imu.csv"
+    ln -s "${VI}_imu.csv" "$VJ/plain_imu.csv"
+    for w in yjunk long plain; do ln -s "${VI}_strides_gcp.csv" "$VJ/${w}_strides_gcp.csv"; done
+    expect_exit 0 "eval: vicon positions with junk, a long line" "$H" eval --no-experiments --no-plots --data "$T/vjunk" --out "$T/vjunk.md"
+    plain=$(grep '^| plain | ' "$T/vjunk.md" | cut -d'|' -f3-)
+    if grep -q "^| yjunk | [0-9]* | [0-9.]* | [0-9.]* | [0-9.]* | 1 stride without a truth position not scored |" "$T/vjunk.md" &&
+        [ -n "$plain" ] && [ "$(grep '^| long | ' "$T/vjunk.md" | cut -d'|' -f3-)" = "$plain" ]; then
+        pass "vicon positions: junk after a y is no position, a long line one row"
+    else fail "vicon junk: $(grep '^| \(yjunk\|long\) ' "$T/vjunk.md")"; fi
     # a vicon trial that starts walking (its first 0.25 s cut off: 0.1 s of
     # stillness before the first stride, too little to align on): the filter
     # aligns in a later stance, the strides before are not navigated and were
