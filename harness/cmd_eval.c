@@ -554,6 +554,22 @@ static int truth_row(const char *line, double *v, int n)
     return p[strspn(p, " \t\r\n")] == '\0' ? 0 : -1;
 }
 
+/* 1 when fgets filled line (size bytes) without reaching the end of the
+ * line, whose rest is then skipped: a long line is one row. Not the missing
+ * newline alone, which a NUL byte in the line also gives: the next line would
+ * go with it. */
+static int skip_long_line(FILE *f, const char *line, size_t size)
+{
+    const size_t len = strlen(line);
+    int c;
+    if (len + 1u < size || line[len - 1u] == '\n') {
+        return 0;
+    }
+    while ((c = getc(f)) != EOF && c != '\n') {
+    }
+    return 1;
+}
+
 /* The strides of a _strides_gcp.csv truth file (strideIndex, ..., x, y);
  * 0, or -1 with the reason in why. */
 static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
@@ -574,13 +590,10 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
          * 2026-11-29) */
         int ok = truth_row(line, v, 4) == 0 && fabs(v[2]) <= FNAV_INPUT_MAX_ABS && fabs(v[3]) <= FNAV_INPUT_MAX_ABS;
         size_t k = strspn(line, " \t\r\n");
-        if (strchr(line, '\n') == NULL && !feof(f)) {
+        if (skip_long_line(f, line, sizeof line)) {
             /* a line longer than the buffer (no truth row is) is one
              * unreadable row: each 511 characters of it were a row, and the
              * tail of 1.1e+03x000...0,5.7,-4.0,-0.2 a stride at sample 0 */
-            int c;
-            while ((c = getc(f)) != EOF && c != '\n') {
-            }
             ok = 0;
         }
         if (row++ == 0 && !ok) {
@@ -866,17 +879,12 @@ static int read_vicon(const char *path, double **vx, double **vy, size_t *n)
     while (fgets(line, sizeof line, f) != NULL) {
         double v[9];
         const char *q = line + strspn(line, " \t");
-        int ok, long_line = 0;
-        if (strchr(line, '\n') == NULL && !feof(f)) {
-            /* a line longer than the buffer is one row, without a position:
-             * each 511 characters of it were a row, and every stride after
-             * it took the position of the sample before (mutation sweep,
-             * 2026-11-29) */
-            int c;
-            while ((c = getc(f)) != EOF && c != '\n') {
-            }
-            long_line = 1;
-        }
+        /* a line longer than the buffer is one row, without a position:
+         * each 511 characters of it were a row, and every stride after it
+         * took the position of the sample before (mutation sweep,
+         * 2026-11-29) */
+        const int long_line = skip_long_line(f, line, sizeof line);
+        int ok;
         if (line[strspn(line, " \t\r\n\v\f")] == '\0' || *q == '#') {
             continue;
         }

@@ -158,6 +158,14 @@ if [ -n "$D" ]; then
     expect_exit 0 "eval: truth rows with junk in a field" "$H" eval --no-experiments --no-plots --data "$T/junk" --out "$T/junk.md"
     if grep -q "^| junk | $((n - 5)) | 4[0-9]\.[0-9] | .*| 5 unreadable truth rows ignored |" "$T/junk.md"; then
         pass "truth rows with junk in a field are unreadable rows, noted"; else fail "junk truth: $(grep '^| junk' "$T/junk.md")"; fi
+    # a NUL byte inside a row is no long line: the row after it was taken
+    # for the rest of a long one and lost without a word (ccf646e's first
+    # test of a long line, the missing newline, which a NUL also gives)
+    ln -s "${FP}_imu.csv" "$J/nul_imu.csv"
+    awk 'NR == 4 { printf "%s%cjunk\n", $0, 0; next } { print }' "${FP}_strides_gcp.csv" > "$J/nul_strides_gcp.csv"
+    expect_exit 0 "eval: a truth row with a NUL byte" "$H" eval --no-experiments --no-plots --data "$T/junk" --out "$T/junk.md"
+    if grep -Eq "^\| nul \| ($n \| 47\.9 \| .* \|  \||$((n - 1)) \| 47\.9 \| .* \| 1 unreadable truth row ignored \|)$" "$T/junk.md"; then
+        pass "a truth row with a NUL byte takes no other row with it"; else fail "NUL truth: $(grep '^| nul' "$T/junk.md")"; fi
     # the vicon positions in the IMU file, read as the truth rows: a y of
     # 1.04xyz at the 5th stride was read as 1.04; a line of 600 characters
     # (an x followed by 600 ']') just before it was two rows, so that the 5th
