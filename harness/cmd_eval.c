@@ -531,6 +531,45 @@ typedef struct {
     int cut; /* a last line without its newline (cut off), not read */
 } gcp_t;
 
+/* The n numbers of a truth row, separated by commas, blanks around them
+ * allowed: 0, or -1 for anything else. sscanf's "%lf,%lf,%lf,%lf" took the
+ * number before junk in a field (a y of 6"x"02e-01 as 6, a stride index of
+ * 2.685e as 3) and read a row of five fields shifted (its timestamp as x);
+ * the mutation sweep of 2026-11-29 scored a walk against a footprint 2e16 m
+ * away that way, exit 0. */
+static int truth_row(const char *line, double *v, int n)
+{
+    const char *p = line;
+    int i;
+    for (i = 0; i < n; i++) {
+        p += strspn(p, " \t");
+        if (hx_scan_number(p, &p, &v[i]) != 0) {
+            return -1;
+        }
+        p += strspn(p, " \t");
+        if (i + 1 < n && *p++ != ',') {
+            return -1;
+        }
+    }
+    return p[strspn(p, " \t\r\n")] == '\0' ? 0 : -1;
+}
+
+/* 1 when fgets filled line (size bytes) without reaching the end of the
+ * line, whose rest is then skipped: a long line is one row. Not the missing
+ * newline alone, which a NUL byte in the line also gives: the next line would
+ * go with it. */
+static int skip_long_line(FILE *f, const char *line, size_t size)
+{
+    const size_t len = strlen(line);
+    int c;
+    if (len + 1u < size || line[len - 1u] == '\n') {
+        return 0;
+    }
+    while ((c = getc(f)) != EOF && c != '\n') {
+    }
+    return 1;
+}
+
 /* The strides of a _strides_gcp.csv truth file (strideIndex, ..., x, y);
  * 0, or -1 with the reason in why. */
 static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
@@ -544,9 +583,19 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
         return -1;
     }
     while (fgets(line, sizeof line, f) != NULL) {
-        double a, b, c, d;
-        int ok = sscanf(line, "%lf,%lf,%lf,%lf", &a, &b, &c, &d) == 4 && isfinite(a) && isfinite(c) && isfinite(d);
+        double v[4];
+        /* a position beyond FNAV_INPUT_MAX_ABS (1e6 m, the log readers'
+         * bound on any value in SI units) is no footprint: x of -7e42 made
+         * a path of 1.4e43 m and a final error of 0.00 % (mutation sweep,
+         * 2026-11-29) */
+        int ok = truth_row(line, v, 4) == 0 && fabs(v[2]) <= FNAV_INPUT_MAX_ABS && fabs(v[3]) <= FNAV_INPUT_MAX_ABS;
         size_t k = strspn(line, " \t\r\n");
+        if (skip_long_line(f, line, sizeof line)) {
+            /* a line longer than the buffer (no truth row is) is one
+             * unreadable row: each 511 characters of it were a row, and the
+             * tail of 1.1e+03x000...0,5.7,-4.0,-0.2 a stride at sample 0 */
+            ok = 0;
+        }
         if (row++ == 0 && !ok) {
             continue; /* the header (a file without one starts with its first stride) */
         }
@@ -566,9 +615,9 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
             snprintf(why, why_size, "truth file has more than %d strides", GCP_MAX);
             return -1;
         }
-        g->idx[g->n] = (long)llround(a);
-        g->x[g->n] = c;
-        g->y[g->n] = d;
+        g->idx[g->n] = (long)llround(v[0]);
+        g->x[g->n] = v[2];
+        g->y[g->n] = v[3];
         g->n++;
     }
     fclose(f);
@@ -830,6 +879,11 @@ static int read_vicon(const char *path, double **vx, double **vy, size_t *n)
     while (fgets(line, sizeof line, f) != NULL) {
         double v[9];
         const char *q = line + strspn(line, " \t");
+        /* a line longer than the buffer is one row, without a position:
+         * each 511 characters of it were a row, and every stride after it
+         * took the position of the sample before (mutation sweep,
+         * 2026-11-29) */
+        const int long_line = skip_long_line(f, line, sizeof line);
         int ok;
         if (line[strspn(line, " \t\r\n\v\f")] == '\0' || *q == '#') {
             continue;
@@ -838,9 +892,10 @@ static int read_vicon(const char *path, double **vx, double **vy, size_t *n)
             header = 0;
             continue;
         }
-        ok = sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6],
-                    &v[7], &v[8]) == 9 &&
-             isfinite(v[7]) && isfinite(v[8]) && !(strchr(line, '\n') == NULL && feof(f));
+        /* nine numbers, as read_gcp's rows (sscanf took 1.04 of a y of
+         * 1.04xyz) */
+        ok = !long_line && truth_row(line, v, 9) == 0 && fabs(v[7]) <= FNAV_INPUT_MAX_ABS &&
+             fabs(v[8]) <= FNAV_INPUT_MAX_ABS && !(strchr(line, '\n') == NULL && feof(f));
         if (*n == cap) {
             cap = cap ? cap * 2 : 4096;
             *vx = (double *)ev_realloc(*vx, cap, sizeof **vx);

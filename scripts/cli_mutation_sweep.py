@@ -13,7 +13,10 @@ walk) is mutated and `eval --no-experiments` runs on it.
 
 A case fails when the harness exits with a status other than 0, 1 or 2 (a
 signal, an abort), reports an ASan/UBSan error, or runs over the time limit
-(120 s; eval 300 s). Failing cases are kept under --out.
+(120 s; eval 300 s). Failing cases are kept under --out; --keep keeps every
+case (its input and the command's outputs, e.g. eval's r.md), and --log FILE
+writes one JSON line per case (command, mutation, exit status, the end of its
+standard error), to read what the passing cases said.
 
 Build the sanitized harness first (from the repository root):
   make BUILD=build/san HARNESS=build/san/harness OPT="-O1 -g" \\
@@ -24,6 +27,7 @@ Build the sanitized harness first (from the repository root):
 import argparse
 import glob
 import gzip
+import json
 import os
 import random
 import shutil
@@ -160,6 +164,17 @@ def failed(rc, err):
     return rc not in (0, 1, 2) or b"Sanitizer" in err or b"runtime error" in err
 
 
+def record(a, d, argv, what, rc, err):
+    """--log's line for one case; the case's directory is removed unless it
+    failed or --keep"""
+    if a.log:
+        with open(a.log, "a") as f:
+            f.write(json.dumps({"case": os.path.basename(d), "argv": argv, "mutation": what, "exit": rc,
+                                "stderr": err.decode(errors="replace")[-2000:]}) + "\n")
+    if not failed(rc, err) and not a.keep:
+        shutil.rmtree(d)
+
+
 def sweep_commands(a, rng):
     srcs = sources(a.data)
     bad = 0
@@ -179,8 +194,7 @@ def sweep_commands(a, rng):
             bad += 1
             print("FAIL case %d: %s %s (%s): exit %s\n  %s" % (c, cmd[0], name, what, rc,
                   err.decode(errors="replace")[-600:].replace("\n", "\n  ")), flush=True)
-        else:
-            shutil.rmtree(d)
+        record(a, d, argv, "%s: %s" % (name, what), rc, err)
     return bad
 
 
@@ -222,13 +236,13 @@ def sweep_eval(a, rng):
             blob[i:i] = rng.choice(JSON_TOKENS) * rng.randrange(1, 3000)
         with open(p, "wb") as f:
             f.write(bytes(blob))
-        rc, err = run([a.harness, "eval", "--no-experiments", "--data", d, "--out", d + "/r.md"], 300)
+        argv = [a.harness, "eval", "--no-experiments", "--data", d, "--out", d + "/r.md"]
+        rc, err = run(argv, 300)
         if failed(rc, err):
             bad += 1
             print("FAIL case %d: eval, %s mutated (kind %d): exit %s\n  %s" % (c, t, k, rc,
                   err.decode(errors="replace")[-600:].replace("\n", "\n  ")), flush=True)
-        else:
-            shutil.rmtree(d)
+        record(a, d, argv, "%s (kind %d)" % (t, k), rc, err)
     return bad
 
 
@@ -240,6 +254,8 @@ def main():
     ap.add_argument("--cases", type=int, default=300)
     ap.add_argument("--eval", action="store_true", help="mutate an eval data directory's files instead")
     ap.add_argument("--out", default=None, help="scratch and failing cases (default /tmp/fnav-sweep-SEED)")
+    ap.add_argument("--keep", action="store_true", help="keep every case's directory, not only the failing ones")
+    ap.add_argument("--log", default=None, help="append one JSON line per case (command, mutation, exit, stderr)")
     a = ap.parse_args()
     if not os.access(a.harness, os.X_OK):
         sys.exit("no harness at %s (build the sanitized one: see the docstring)" % a.harness)

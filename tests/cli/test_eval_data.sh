@@ -139,6 +139,51 @@ if [ -n "$D" ]; then
     if grep -q "^| half | [0-9]* |.*| [0-9]* strides outside the log not scored |" "$T/truth.md"; then
         pass "vicon strides outside the log are noted"; else fail "vicon log cut: $(grep '^| half' "$T/truth.md")"; fi
     if grep -qi "nan" "$T/truth.md"; then fail "nan in the results: $(grep -i '| nan\|nan |' "$T/truth.md")"; else pass "no nan in the figures"; fi
+    # truth rows with junk in a field (the mutation sweep of 2026-11-29): a
+    # y followed by text, a stride index cut to "1.5e", a row split into five
+    # fields ("8.,9.27e+00": its timestamp read as x, x as y). sscanf took
+    # what came before the junk: here a path of 84.1 m for 47.9 and an RMS
+    # of 3.55 m for 0.44, without a word; in the sweep a footprint 2e16 m
+    # away (path 39579392000000320.0 m, final 0.00 %, exit 0). They are
+    # unreadable rows. So is a line of 600 characters (its index followed by
+    # x and 600 zeros), which was read 511 characters at a time: one
+    # unreadable row and its tail a stride at sample 0; and an x of -7e42 m
+    # (in the sweep a path of 1.4e43 m, final 0.00 %)
+    J="$T/junk/pyshoe_vicon_llio/own_3dmgx5_footprints"
+    mkdir -p "$J"
+    ln -s "${FP}_imu.csv" "$J/junk_imu.csv"
+    awk -F, 'BEGIN { OFS = "," } NR == 4 { $4 = $4 "\"x\"" } NR == 6 { $1 = "1.5e" } NR == 8 { $2 = "8.," $2 }
+             NR == 10 { $1 = $1 "x" sprintf("%0600d", 0) } NR == 12 { $3 = "-7e42" } { print }' \
+        "${FP}_strides_gcp.csv" > "$J/junk_strides_gcp.csv"
+    expect_exit 0 "eval: truth rows with junk in a field" "$H" eval --no-experiments --no-plots --data "$T/junk" --out "$T/junk.md"
+    if grep -q "^| junk | $((n - 5)) | 4[0-9]\.[0-9] | .*| 5 unreadable truth rows ignored |" "$T/junk.md"; then
+        pass "truth rows with junk in a field are unreadable rows, noted"; else fail "junk truth: $(grep '^| junk' "$T/junk.md")"; fi
+    # a NUL byte inside a row is no long line: the row after it was taken
+    # for the rest of a long one and lost without a word (ccf646e's first
+    # test of a long line, the missing newline, which a NUL also gives)
+    ln -s "${FP}_imu.csv" "$J/nul_imu.csv"
+    awk 'NR == 4 { printf "%s%cjunk\n", $0, 0; next } { print }' "${FP}_strides_gcp.csv" > "$J/nul_strides_gcp.csv"
+    expect_exit 0 "eval: a truth row with a NUL byte" "$H" eval --no-experiments --no-plots --data "$T/junk" --out "$T/junk.md"
+    if grep -Eq "^\| nul \| ($n \| 47\.9 \| .* \|  \||$((n - 1)) \| 47\.9 \| .* \| 1 unreadable truth row ignored \|)$" "$T/junk.md"; then
+        pass "a truth row with a NUL byte takes no other row with it"; else fail "NUL truth: $(grep '^| nul' "$T/junk.md")"; fi
+    # the vicon positions in the IMU file, read as the truth rows: a y of
+    # 1.04xyz at the 5th stride was read as 1.04; a line of 600 characters
+    # (an x followed by 600 ']') just before it was two rows, so that the 5th
+    # stride took the position of the row before and every later one too
+    # (the mutation sweep of 2026-11-29): one row without a position
+    VJ="$T/vjunk/pyshoe_vicon_llio/vicon_3dmgx3"
+    mkdir -p "$VJ"
+    awk -F, -v r=$row 'BEGIN { OFS = "," } NR == r { $9 = $9 "xyz" } { print }' "${VI}_imu.csv" > "$VJ/yjunk_imu.csv"
+    awk -F, -v r=$((row - 1)) 'BEGIN { OFS = "," } NR == r { $8 = $8 sprintf("%600s", "") } { gsub(/ /, "]"); print }' \
+        "${VI}_imu.csv" > "$VJ/long_imu.csv"
+    ln -s "${VI}_imu.csv" "$VJ/plain_imu.csv"
+    for w in yjunk long plain; do ln -s "${VI}_strides_gcp.csv" "$VJ/${w}_strides_gcp.csv"; done
+    expect_exit 0 "eval: vicon positions with junk, a long line" "$H" eval --no-experiments --no-plots --data "$T/vjunk" --out "$T/vjunk.md"
+    plain=$(grep '^| plain | ' "$T/vjunk.md" | cut -d'|' -f3-)
+    if grep -q "^| yjunk | [0-9]* | [0-9.]* | [0-9.]* | [0-9.]* | 1 stride without a truth position not scored |" "$T/vjunk.md" &&
+        [ -n "$plain" ] && [ "$(grep '^| long | ' "$T/vjunk.md" | cut -d'|' -f3-)" = "$plain" ]; then
+        pass "vicon positions: junk after a y is no position, a long line one row"
+    else fail "vicon junk: $(grep '^| \(yjunk\|long\) ' "$T/vjunk.md")"; fi
     # a vicon trial that starts walking (its first 0.25 s cut off: 0.1 s of
     # stillness before the first stride, too little to align on): the filter
     # aligns in a later stance, the strides before are not navigated and were
