@@ -67,6 +67,10 @@ struct hx_reader {
     int ncols_needed;
     int missing_col;            /* setup_header: the column not found (0 t ... 6 gz), else -1 */
     int nfields;                /* fields of the line last split */
+    int hdr_fields;             /* fields of the header line (at most HX_MAX_COLS); 0: no header */
+    int last_line;              /* next_text_fields is parsing a last line without a newline */
+    long short_rows;            /* data rows with fewer fields than the header */
+    long short_first;           /* the line of the first of them */
     double ctr_wrap;            /* ipol: 65536 per wrap of the 16-bit packet counter so far */
     double ctr_prev;            /* ipol: the last raw counter */
     double acc_scale, gyr_scale;
@@ -658,6 +662,7 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
         }
     }
     n = split(r->line, r->delim, f, HX_MAX_COLS);
+    r->hdr_fields = r->delim == ' ' || total > HX_MAX_COLS ? n : total;
     r->ncols_needed = 0;
     r->missing_col = -1;
     for (i = 0; i < 8; i++) {
@@ -962,6 +967,7 @@ static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
          * a review, 2026-11-28) */
         fnav_status_t st;
         r->last_line_open = 0;
+        r->last_line = 1;
         st = next_text_fields(r, s);
         if (st == FNAV_OK && r->nfields <= r->ncols_needed) {
             r->stats.cut_lines++;
@@ -977,6 +983,7 @@ static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
          * it with a warning (docs/log-format.md) instead of failing. */
         fnav_status_t st;
         r->last_line_open = 0;
+        r->last_line = 1;
         st = next_text_fields(r, s);
         if (st != FNAV_OK) {
             r->err[0] = '\0';
@@ -1026,6 +1033,16 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         set_err(r, "%s:%ld: %d column%s, expected at least %d", r->path, r->stats.lines, n,
                 n == 1 ? "" : "s", r->ncols_needed);
         return FNAV_E_FORMAT;
+    }
+    if (n < r->hdr_fields && !r->last_line) {
+        /* enough fields for the columns used, fewer than the header names:
+         * a field lost inside the row shifts the values after it (az read
+         * from gx), which nothing can tell from trailing fields left off;
+         * counted and warned at the end (it was read silently; the
+         * mutation sweep of 2026-11-29). A cut last line is the cut's. */
+        if (r->short_rows++ == 0) {
+            r->short_first = r->stats.lines;
+        }
     }
     for (i = 0; i < 3; i++) {
         int c;
@@ -1716,6 +1733,11 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
          * bridged all the same (the warning was lost then; a review) */
         add_warn(r, "%s: sensor timer restarted %ld times; bridged with the last measured period", r->path,
                  r->gx2_bridged);
+    }
+    if (r->short_rows > 0) {
+        add_warn(r, "%s:%ld: %ld row%s with fewer fields than the header's %d (the first here): where a field was "
+                    "lost inside a row, the values after it were read from the wrong columns",
+                 r->path, r->short_first, r->short_rows, r->short_rows == 1 ? "" : "s", r->hdr_fields);
     }
     if (st == FNAV_END && r->stats.records == 0) {
         set_err(r, "%s: no samples", r->path);

@@ -1691,6 +1691,51 @@ static void test_ipol_rate_and_step_back(void **state)
     unlink(p);
 }
 
+/* A row with the columns the reader uses but fewer fields than the header
+ * names: a field lost inside it shifts the values after it (Acc_Y lost: az
+ * read from Gyr_X), which nothing can tell from trailing fields left off.
+ * Read, as before, but counted and warned with the first such line (it was
+ * read silently; the mutation sweep of 2026-11-29); a file without one,
+ * and a cut last line that lost its trailing fields, have no warning. */
+static void test_short_rows_warned(void **state)
+{
+    static const char row[] = "%ld.0\t5.09\t0.41\t8.92\t-0.0025\t0.0089\t-0.0178\t-0.58\t-0.15\t-0.4\n";
+    char p[256], err[320];
+    hx_log_t log;
+    FILE *f;
+    long c;
+    int pass;
+    (void)state;
+    tmp_path(p, sizeof p, "_lf.txt");
+    for (pass = 0; pass < 3; pass++) {
+        f = fopen(p, "w");
+        assert_non_null(f);
+        fprintf(f, "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\tMag_X\tMag_Y\tMag_Z\n");
+        for (c = 0; c < 20; c++) {
+            if (pass == 0 && (c == 5 || c == 9)) {
+                fprintf(f, "%ld.0\t5.09\t8.92\t-0.0025\t0.0089\t-0.0178\t-0.58\t-0.15\t-0.4\n", c); /* Acc_Y lost */
+            } else {
+                fprintf(f, row, c);
+            }
+        }
+        if (pass == 2) {
+            fprintf(f, "20.0\t5.09\t0.41\t8.92\t-0.0025\t0.0089\t-0.0178\t-0.58"); /* cut: no newline */
+        }
+        assert_int_equal(fclose(f), 0);
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        assert_int_equal(log.meta.format, HX_FMT_IPOL);
+        assert_int_equal(log.n, pass == 2 ? 21 : 20);
+        if (pass == 0) {
+            assert_true(fabs(log.acc[5][2] + 0.0025) < 1e-7); /* the shift the warning is about */
+            assert_non_null(strstr(log.warnings, "_lf.txt:8: 2 rows with fewer fields than the header's 10"));
+        } else {
+            assert_null(strstr(log.warnings, "fewer fields"));
+        }
+        hx_log_free(&log);
+    }
+    unlink(p);
+}
+
 /* The reader's limit of 1e6 applies in SI units, after the importer's scale
  * (docs/log-format.md: "a value ... beyond 1e6 in SI units"): in an NGIMU
  * log 1.5e6 deg/s is 26,180 rad/s, read; 2e5 g is 1.96e6 m/s^2, refused at
@@ -2000,6 +2045,7 @@ int main(void)
         cmocka_unit_test(test_csv_negative_time),
         cmocka_unit_test(test_ipol_counter_wrap),
         cmocka_unit_test(test_ipol_rate_and_step_back),
+        cmocka_unit_test(test_short_rows_warned),
         cmocka_unit_test(test_range_in_si_units),
         cmocka_unit_test(test_detect_variants),
         cmocka_unit_test(test_detect_wrong_hint),
