@@ -2042,8 +2042,8 @@ int hx_log_load_progress(hx_log_t *log, const char *path, hx_format_t fmt, doubl
             }
         }
     }
-    if (progress != NULL) {
-        progress(ctx, 1.0);
+    if (progress != NULL && st == FNAV_END) {
+        progress(ctx, 1.0); /* a log that stops at an error ends where it stopped */
     }
     log->status = st;
     log->stats = *hx_reader_stats(r);

@@ -196,8 +196,9 @@ double hx_rate_changes(const int64_t *t_ns, size_t n, size_t stride, double rate
 int hx_log_load(hx_log_t *log, const char *path, hx_format_t fmt, double rate_hz,
                 char *err, size_t err_size);
 /** hx_log_load that reports progress(ctx, fraction of the input read, 0..1;
- *  hx_reader_progress) every 65,536 samples and 1 at the end (progress
- *  NULL: none), for a progress indicator on long logs. */
+ *  hx_reader_progress) every 65,536 samples and 1 at the end of a
+ *  complete read (a log that stops at an error ends where it stopped;
+ *  progress NULL: none), for a progress indicator on long logs. */
 int hx_log_load_progress(hx_log_t *log, const char *path, hx_format_t fmt, double rate_hz,
                          void (*progress)(void *ctx, double frac), void *ctx, char *err, size_t err_size);
 void hx_log_free(hx_log_t *log);
