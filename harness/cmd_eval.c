@@ -1927,7 +1927,7 @@ int hx_cmd_eval(int argc, char **argv)
         fprintf(ev.md, "\nThe vendor's figures come from an offline method that uses future samples; footnav is "
                        "causal.\n\n");
         figure(&ev, "xio", 0, "xio_ngimu_gait: paths and heights",
-               "As above. The climb of the height is the unmet xio target (docs/navigation.md, \"The xio walks\").");
+               "As above. The climb of the height is the unmet xio target (docs/xio-climb.md, \"The xio walks\").");
     }
     unread_files(&ev, "xio_ngimu_gait", k_csv_files, 1);
 
