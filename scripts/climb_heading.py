@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Does a walk's height change per stride depend on the walking direction?
-(docs/navigation.md, "Round 6: the climb does not depend on the direction").
+(docs/xio-climb.md, "Round 6: the climb is the same in every direction").
 
 For each log, runs `bin/harness replay LOG --out CSV` (extra replay options
 after `--`) and takes the stance mid-points as results.md does (the middle

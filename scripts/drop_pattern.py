@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Give a log the x-io NGIMU's lost-sample pattern (docs/navigation.md,
+"""Give a log the x-io NGIMU's lost-sample pattern (docs/xio-climb.md,
 "Round 6"): in the xio_ngimu_gait logs a lost sample is almost always
 followed by the next sample written twice (same time stamp, same values).
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Would a gyro-to-accelerometer misalignment explain a walk's vertical drift?
-(docs/navigation.md, "Round 5: one-parameter knobs that close the xio climb").
+(docs/xio-climb.md, "Round 5: one-parameter knobs that close the xio climb").
 
 The gyro triad is rotated against the accelerometer's by a small angle about
 one sensor axis (what a misalignment between the two triads would undo), the

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Where the x-io vendor's closure comes from (docs/navigation.md, "Round 4").
+"""Where the x-io vendor's closure comes from (docs/xio-climb.md, "Round 4").
 
 The vendor's published 82 mm / 421 mm on xio_ngimu_gait come from an offline
 pipeline (its README and gait_tracking.py, described here in words): an AHRS
