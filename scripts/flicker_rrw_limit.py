@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Can flicker and a rate random walk be told apart near threshold?
-(docs/simgap.md, "Validation": what would help next.)
+(docs/simgap.md, "Validation"; what would help next: docs/simgap-history.md.)
 
 The validation's static case on the Shimmer accelerometer (white N 6.0e-3
 m/s^2/sqrt(Hz); detectable B 8.0e-4 m/s^2 and K 7.15e-5 m/s^2/sqrt(s),
