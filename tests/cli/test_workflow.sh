@@ -2,6 +2,8 @@
 # docs/workflow.md runs as written: every ```sh block of the guide, in
 # order, in a scratch directory whose bin/harness is $HARNESS (set by
 # `make test-cli`), each under `sh -e`; any block that exits non-zero fails.
+# The directory holds nothing else of the repository: a block that reads
+# another of its files (vectors/walk.bin) must not be tagged sh.
 # Then every line of the guide's ```text blocks (its quoted output; a line
 # "..." marks a cut) must be a whole line of what the blocks printed,
 # standard output and standard error together, blanks squeezed. The guide
@@ -61,20 +63,21 @@ while [ "$i" -le "$count" ]; do
     (cd "$T/w" && PATH="$PATH:$T/gp" sh -e "$T/blk_$i.sh") >>"$T/all" 2>&1
     rc=$?
     if [ "$rc" -ne 0 ]; then
-        fail "$where: the block exits $rc"
+        fail "$where: the block exits $rc (what it printed last:)"
         tail -n 20 "$T/all"
-        break
+        echo "test_workflow.sh: $fails failure(s)"
+        exit 1
     fi
     i=$((i + 1))
 done
 end=$(date +%s)
-[ "$i" -gt "$count" ] && pass "the $count sh blocks of docs/workflow.md run (exit 0; $((end - start)) s)"
+pass "the $count sh blocks of docs/workflow.md run (exit 0; $((end - start)) s)"
 
 # the outputs the guide names exist and are not empty
 # (a PNG drawn by the stand-in gnuplot is empty)
 for f in static.bin walk.bin mysensor.profile walk_traj.csv walk.json walk.csv allan.png walk.png psd/psd.png; do
-    case "$f" in *.png) test=-e ;; *) test=-s ;; esac
-    if [ "$test" "$T/w/out/workflow/$f" ]; then pass "out/workflow/$f written"
+    p=$T/w/out/workflow/$f
+    if case "$f" in *.png) [ -e "$p" ] ;; *) [ -s "$p" ] ;; esac; then pass "out/workflow/$f written"
     else fail "out/workflow/$f missing or empty"; fi
 done
 [ -n "${WORKFLOW_OUT:-}" ] && cp "$T/all" "$WORKFLOW_OUT"
