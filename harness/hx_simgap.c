@@ -591,6 +591,13 @@ void sg_prune_zero(sg_chres_t *c)
     c->nsel = kept;
 }
 
+int sg_ar1_at_max(const sg_chres_t *c)
+{
+    const int ia = sg_model_find(&c->baseline, FNAV_EFFECT_AR1);
+    return c->active && ia >= 0 && c->baseline.e[ia].p[1] > 0.0 && c->ar1_tau_max_s > 0.0 &&
+           c->baseline.e[ia].p[0] >= 0.999 * c->ar1_tau_max_s;
+}
+
 /* Which candidate effects have the evidence they need. */
 static int cand_eligible(int id, const sg_evidence_t *ev, double zc)
 {
@@ -1276,6 +1283,7 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             sg_evidence_seg(x, &r->segs, SG_HOLD, r->rate_hz, c->q_full, &c->ev_mid);
         }
         tmax = fit_tmax(r, ch);
+        c->ar1_tau_max_s = tmax;
         if (sg_fit_model(&tfit, mean, NULL, 0, &c->ev, tmax, &bf) != 0) {
             snprintf(err, err_size, "baseline fit failed on channel %s", sg_channel_name(ch));
             free(x);

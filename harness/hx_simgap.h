@@ -610,6 +610,8 @@ typedef struct {
     int active;               /**< channel present and analysed */
     sg_chmodel_t baseline;    /**< fitted baseline */
     sg_chmodel_t final;       /**< baseline + selected effects, refitted */
+    double ar1_tau_max_s;     /**< longest AR(1) time the baseline may take: a quarter of the longest Allan
+                               *   tau analysed on both segments (section 1 of docs/simgap.md) */
     sg_evidence_t ev;         /**< evidence of the fit segment */
     sg_evidence_t ev_mid;     /**< of the held-out segment (sandwich split: the second fold's fit) */
     double q_full, q_full_z;  /**< lattice on the whole log */
@@ -636,6 +638,11 @@ typedef struct {
  *  where the fit segment has no excess (G_before <= null_mean): undefined,
  *  as the held-out fraction is (null in the JSON). */
 double sg_fit_explained(double G_before, double null_mean, double G_after);
+
+/** 1 when the channel's baseline has an AR(1) bias whose correlation time
+ *  is at its bound ar1_tau_max_s (within 0.1 %): the log cannot tell a
+ *  longer one, which looks like a random walk over the record. */
+int sg_ar1_at_max(const sg_chres_t *c);
 
 /** Leave out of a channel's selection the effects its final (refitted)
  *  model gives a magnitude of exactly zero (into zero_id). */

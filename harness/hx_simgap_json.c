@@ -137,6 +137,8 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
         add_num(b, "ar1_sigma_se", c->baseline.e[ia].se[1]);
         add_num(b, "ar1_tau_s", c->baseline.e[ia].p[1] > 0.0 ? c->baseline.e[ia].p[0] : (double)NAN);
         add_num(b, "ar1_tau_s_se", c->baseline.e[ia].se[0]);
+        add_num(b, "ar1_tau_max_s", c->ar1_tau_max_s);
+        cJSON_AddBoolToObject(b, "ar1_tau_at_max", sg_ar1_at_max(c));
     }
     if (c->q_full > 0.0) {
         cJSON *l = cJSON_AddObjectToObject(o, "lattice");

@@ -121,7 +121,7 @@ static void range_text(char *b, size_t n, const sg_loc_t *L)
 
 static void print_static(FILE *f, const sg_result_t *r)
 {
-    int ch, i;
+    int ch, i, at_max = 0;
     size_t k;
     char b[256];
     fprintf(f, "baseline (white + AR(1) per channel, fitted on the fit segment):\n");
@@ -142,7 +142,16 @@ static void print_static(FILE *f, const sg_result_t *r)
         ia = sg_model_find(&c->baseline, FNAV_EFFECT_AR1);
         sg_effect_text(w, sizeof w, ch, &c->baseline.e[iw]);
         sg_effect_text(a, sizeof a, ch, &c->baseline.e[ia]);
-        fprintf(f, "  %s  %s, %s\n", sg_channel_name(ch), w, a);
+        at_max += sg_ar1_at_max(c);
+        fprintf(f, "  %s  %s, %s%s\n", sg_channel_name(ch), w, a,
+                sg_ar1_at_max(c) ? ", tau at the longest this log resolves" : "");
+    }
+    if (at_max > 0) {
+        /* a bias correlated longer than the record can show looks like a
+         * random walk over it: the catalogue's rrw, flicker or ramp stand
+         * in for it below (docs/simgap.md, section 1) */
+        fprintf(f, "  (tau at the longest this log resolves: a quarter of the longest Allan tau analysed; a longer\n"
+                   "   correlation looks like a random walk over the record, and rrw, flicker or ramp stand in for it)\n");
     }
     /* G as computed (section 3), not "mean z^2", which a reader of the
      * JSON's points got otherwise (the sgreport review) */
