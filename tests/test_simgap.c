@@ -2002,7 +2002,8 @@ static void test_json_ar1_tau_null_without_sigma(void **state)
  * own key of docs/simgap.md's schema ("JSON"): cmp {G, G_null_mean,
  * G_null_sd, G_crit, max_abs_z, z_crit, significant, G_per_domain},
  * points[] {real, twin, twin_sd, sd, z}, baseline {white_density(_se),
- * ar1_sigma(_se), ar1_tau_s(_se)}, each given a distinct value. No test
+ * ar1_sigma(_se), ar1_tau_s(_se), ar1_tau_max_s, ar1_tau_at_max}, each
+ * given a distinct value. No test
  * read G_null_sd, max_abs_z, twin_sd or the baseline's standard errors:
  * the null mean written as G_null_sd, the total sd as twin_sd, max_abs_z
  * renamed and the AR(1) time's se written as sigma's (hand-made mutants,
@@ -2079,7 +2080,23 @@ static void test_json_cmp_point_baseline_keys(void **state)
     assert_true(cJSON_GetObjectItem(b, "ar1_sigma_se")->valuedouble == 5e-4);
     assert_true(cJSON_GetObjectItem(b, "ar1_tau_s")->valuedouble == 2.0);
     assert_true(cJSON_GetObjectItem(b, "ar1_tau_s_se")->valuedouble == 0.3);
+    assert_true(cJSON_GetObjectItem(b, "ar1_tau_max_s")->valuedouble == 0.0);
+    assert_true(cJSON_IsFalse(cJSON_GetObjectItem(b, "ar1_tau_at_max")));
     cJSON_Delete(j);
+    /* at the bound (within 0.1 %) the JSON says so, with the bound */
+    c->ar1_tau_max_s = 2.0;
+    j = json_of(r);
+    b = cJSON_GetObjectItem(cJSON_GetArrayItem(cJSON_GetObjectItem(j, "channels"), 0), "baseline");
+    assert_true(cJSON_GetObjectItem(b, "ar1_tau_max_s")->valuedouble == 2.0);
+    assert_true(cJSON_IsTrue(cJSON_GetObjectItem(b, "ar1_tau_at_max")));
+    cJSON_Delete(j);
+    c->baseline.e[ia].p[0] = 1.9985; /* 0.99925 of the bound */
+    assert_int_equal(sg_ar1_at_max(c), 1);
+    c->baseline.e[ia].p[0] = 1.997; /* 0.9985 */
+    assert_int_equal(sg_ar1_at_max(c), 0);
+    c->baseline.e[ia].p[0] = 2.0;
+    c->baseline.e[ia].p[1] = 0.0; /* no bias process: its tau is at no bound */
+    assert_int_equal(sg_ar1_at_max(c), 0);
     sg_plist_free(&r->pl[0][SG_HOLD]);
     free(r);
 }
