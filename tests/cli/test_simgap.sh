@@ -143,6 +143,15 @@ n_empty=$(grep -c "window .*no stance begins in it (a stand), not compared" "$T/
 json "$T/pw.json" 'sum(1 for p in j["navigation"]["gap"]["full"]["points"] if p["kind"] == "window" and p["real"] is None and p["z"] is None) == 3' &&
     [ "$n_empty" -eq 3 ] && pass "windows inside a stand are not compared (summary and JSON)" ||
     fail "stand windows: $n_empty in the summary; $(cat "$T/pyerr")"
+# each compared window names its time span (six rows read alike), and a
+# stance across the fit/held-out split, counted in both segments, is said
+# so (23 stances, fit 12, held out 12 read as one gained; a user review)
+grep -q "^    window            t 0.0-11.5 s    real " "$T/pw.out" && grep -q "^    window            t 57.5-69.0 s   real " "$T/pw.out" &&
+    grep -q "^    window            t 23.0-34.5 s: no stance begins in it (a stand), not compared" "$T/pw.out" &&
+    json "$T/pw.json" 'j["navigation"]["stances_fit"] + j["navigation"]["stances_held_out"] == j["navigation"]["stances_full"] + 1' &&
+    grep -q "^navigation: 23 stances (fit 12, held out 12; the stance across the split in both); " "$T/pw.out" &&
+    pass "windows named by their time span; the stance across the split said" ||
+    fail "window labels / stance counts: $(grep -E 'navigation:|window' "$T/pw.out")"
 
 # white noise only: a baseline AR(1) fitted to sigma 0 is printed as none,
 # not with a tau (the JSON's is null)
