@@ -282,8 +282,16 @@ static void print_static(FILE *f, const sg_result_t *r)
                        "of the answer\n",
                     fnav_imuerr_effect_info((fnav_effect_id_t)c->zero_id[i])->name);
         }
-        fprintf(f, "  -> %s\n", c->within_noise ? "remaining held-out gap within noise"
-                                                 : "a significant held-out gap remains");
+        if (c->within_noise) {
+            fprintf(f, "  -> remaining held-out gap within noise\n");
+        } else {
+            /* which test: with G below its critical value the gap is one
+             * point's |z|, which the line did not show ("G 2.38 -> 1.57"
+             * then "a significant held-out gap remains": a user review) */
+            const sg_cmp_t *h = &c->cmp_final[SG_HOLD];
+            fprintf(f, "  -> a significant held-out gap remains (G %.3g, critical %.3g; max |z| %.2f, critical %.2f)\n",
+                    h->G, h->G_crit, h->maxz, h->z_crit);
+        }
     }
 }
 

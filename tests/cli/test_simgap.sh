@@ -153,6 +153,16 @@ grep -q "^    window            t 0.0-11.5 s    real " "$T/pw.out" && grep -q "^
     pass "windows named by their time span; the stance across the split said" ||
     fail "window labels / stance counts: $(grep -E 'navigation:|window' "$T/pw.out")"
 
+# a held-out gap left (no effect tried): the arrow line gives G and max |z|
+# with their critical values, the final comparison's, as the JSON has them
+# (it said only "a significant held-out gap remains", also where G was
+# below its critical value and one point's |z| made it: a user review)
+"$H" sim --motion stand:600 --rate 100 --profile mtx --effect quant:ch=gz:lsb=0.001 --seed 3 --out "$T/qg.csv" >/dev/null 2>&1 || fail "sim lattice"
+"$H" simgap "$T/qg.csv" --seeds 6 --max-effects 0 --quiet --json "$T/qg.json" > "$T/qg.out" 2>&1
+line=$(grep "^  -> a significant held-out gap remains (" "$T/qg.out")
+json "$T/qg.json" "$(printf '%s' "$line" | sed -n 's/.*(G \([0-9.e+-]*\), critical \([0-9.e+-]*\); max |z| \([0-9.e+-]*\), critical \([0-9.e+-]*\))$/[\1, \2, \3, \4]/p') == (lambda h: [float('%.3g' % h['G']), float('%.3g' % h['G_crit']), round(h['max_abs_z'], 2), round(h['z_crit'], 2)])([c for c in j['channels'] if c['channel'] == 'gz'][0]['gap_final']['held_out'])" &&
+    pass "a remaining held-out gap names G, max |z| and their critical values" || fail "remaining gap line: $line $(cat "$T/pyerr")"
+
 # white noise only: a baseline AR(1) fitted to sigma 0 is printed as none,
 # not with a tau (the JSON's is null)
 "$H" sim --motion stand:120 --rate 100 --profile mtx --effect ar1:off --seed 3 --out "$T/wn.csv" >/dev/null 2>&1 || fail "sim white only"
