@@ -214,7 +214,14 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     cJSON_AddNumberToObject(j, "gaps", (double)in->gaps);
     cJSON_AddNumberToObject(j, "max_gap_s", in->max_gap_s);
     cJSON_AddNumberToObject(j, "duplicates", (double)in->dups);
-    cJSON_AddNumberToObject(j, "counter_drops", (double)in->drops);
+    /* null, as the text leaves its drops line out, when the format has no
+     * sensor counter: a 0 read "no drops" where none can be counted (a user
+     * review) */
+    if (log->meta.has_seq) {
+        cJSON_AddNumberToObject(j, "counter_drops", (double)in->drops);
+    } else {
+        cJSON_AddNullToObject(j, "counter_drops");
+    }
     if (in->rate_off > 0.0) {
         cJSON *chg = cJSON_AddObjectToObject(j, "rate_change");
         cJSON_AddNumberToObject(chg, "at_s", in->rate_chg_at_s);

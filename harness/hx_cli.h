@@ -106,7 +106,8 @@ int hx_check_input_opts(const char *cmd, const hx_args_t *a);
 /** Open the input of a command using --from and --input-rate. Prints the
  *  error and returns NULL on failure; prints reader warnings. */
 hx_reader_t *hx_open_input(const char *cmd, const hx_args_t *a, const char *path);
-/** Print newline-separated warnings, one "warning:" line each. */
+/** Print newline-separated warnings, one "warning:" line each; a line
+ *  that starts with "note: " is printed as a "note:" line. */
 void hx_print_warnings(const char *cmd, const char *w);
 /** Load a whole input using --from and --input-rate. Returns 0 complete,
  *  1 partial (error printed as a warning now; caller exits HX_EXIT_DATA

@@ -118,19 +118,35 @@ static void set_err(hx_reader_t *r, const char *fmt, ...)
              (int)sizeof r->err / 2 - 16, old);
 }
 
-static void add_warn(hx_reader_t *r, const char *fmt, ...)
+/* one line of the reader's messages; a note (routine, nothing to act on)
+ * starts with "note: " and hx_print_warnings prints it as one */
+static void add_line(hx_reader_t *r, const char *prefix, const char *fmt, va_list ap)
 {
-    va_list ap;
     size_t used = strlen(r->warn);
-    if (used + 2 >= sizeof r->warn) {
+    if (used + 2 + strlen(prefix) >= sizeof r->warn) {
         return;
     }
     if (used > 0) {
         r->warn[used++] = '\n';
         r->warn[used] = '\0';
     }
-    va_start(ap, fmt);
+    used += (size_t)snprintf(r->warn + used, sizeof r->warn - used, "%s", prefix);
     vsnprintf(r->warn + used, sizeof r->warn - used, fmt, ap);
+}
+
+static void add_warn(hx_reader_t *r, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    add_line(r, "", fmt, ap);
+    va_end(ap);
+}
+
+static void add_note(hx_reader_t *r, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    add_line(r, "note: ", fmt, ap);
     va_end(ap);
 }
 
@@ -1730,9 +1746,14 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
     r->finished = 1;
     if (r->meta.format == HX_FMT_GX2 && r->gx2_bridged > 0) {
         /* also when the log stops at an error: the samples before it were
-         * bridged all the same (the warning was lost then; a review) */
-        add_warn(r, "%s: sensor timer restarted %ld times; bridged with the last measured period", r->path,
-                 r->gx2_bridged);
+         * bridged all the same (the message was lost then; a review). A
+         * note, not a warning: the logger restarts the timer about once a
+         * second and the bridge is exact to a tick (docs/log-format.md,
+         * "GX2 time"); every GX2 log warned of it (a user review) */
+        add_note(r,
+                 "%s: the sensor's timer restarted %ld time%s (normal for the 3DM-GX2, about once a second); each "
+                 "restart bridged with the measured period (docs/log-format.md, GX2 time)",
+                 r->path, r->gx2_bridged, r->gx2_bridged == 1 ? "" : "s");
     }
     if (r->short_rows > 0) {
         add_warn(r, "%s:%ld: %ld row%s with fewer fields than the header's %d (the first here): where a field was "

@@ -87,7 +87,9 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s);
  *  "FILE: record N: text". Empty string when there was none. */
 const char *hx_reader_error(const hx_reader_t *r);
 
-/** Warnings collected so far (e.g. "assuming 820 Hz"), newline-separated. */
+/** Warnings collected so far (e.g. "assuming 820 Hz"), newline-separated;
+ *  a line that starts with "note: " is a note (routine, e.g. a GX2 timer
+ *  restart bridged), which hx_print_warnings prints as one. */
 const char *hx_reader_warnings(const hx_reader_t *r);
 /** The warnings added since the last call (all of them the first time),
  *  newline-separated; for printing each warning once, as it appears. */

@@ -412,10 +412,22 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
     free(dt);
     *in_rate = fs;
     if (!(rate_hz < fs * 0.999)) {
+        /* a rate within 0.1 % of the input's leaves nothing to decimate
+         * (the vicon trials' 200.080 Hz median refused --rate 200 as "not
+         * below the input rate 200.1 Hz", a user review); the advised bound
+         * is rounded down so that every rate below it is accepted */
+        const double below = floor(fs * 0.999 * 1000.0) / 1000.0;
         free(keep);
-        snprintf(err, err_size, "--rate %g Hz is not below the input rate %.1f Hz (1 / its median interval; only "
-                                "downsampling)",
-                 rate_hz, fs);
+        if (rate_hz >= fs) {
+            snprintf(err, err_size, "--rate %g Hz is not below the input rate %.3f Hz (1 / its median interval; only "
+                                    "downsampling): leave --rate out, or give a rate below %.3f Hz",
+                     rate_hz, fs, below);
+        } else {
+            snprintf(err, err_size, "--rate %g Hz is within 0.1 %% of the input rate %.3f Hz (1 / its median interval): "
+                                    "nothing to decimate (only downsampling); leave --rate out, or give a rate below "
+                                    "%.3f Hz",
+                     rate_hz, fs, below);
+        }
         return -1;
     }
     /* Blackman-windowed sinc low-pass at 0.45 x the new rate, about 41

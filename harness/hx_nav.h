@@ -121,8 +121,8 @@ void hx_traj_free(hx_traj_t *t);
  * @param max_gap_s the navigator's time-jump limit (fnav_nav_config_t)
  * @param dups     receives the number of dropped duplicates
  * @param in_rate  receives the input's median rate, Hz
- * @return 0, or -1 with err filled (too few samples, rate not below the
- *         input rate, memory). out is freed with hx_log_free().
+ * @return 0, or -1 with err filled (too few samples, rate not below 0.999 x
+ *         the input rate, memory). out is freed with hx_log_free().
  */
 int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log_t *out, long *dups,
                     double *in_rate, char *err, size_t err_size);

@@ -115,6 +115,20 @@ expect_out "^interval    median 10.002 ms" "the interval line is of the whole lo
 grep -q "first 4,096 samples" docs/harness.md && pass "docs/harness.md says the rate is of the first 4,096 samples" ||
     fail "docs/harness.md does not say that info's rate comes from the first 4,096 samples"
 
+# --- info --json's counter_drops is null for a log without a sensor counter
+# (the text leaves its drops line out): it wrote 0, "no drops", for the xio,
+# OpenShoe 820 Hz and footprint logs (a user review); a square2 log counts
+# its samples, and three missing counter values are 3
+awk 'BEGIN { print "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps"; for (k = 0; k < 1000; k++) if (k < 500 || k > 502) printf "%d,0,0,-9.8,0,0,0\n", k }' > "$T/sq.csv"
+expect_exit 0 "info --json, a log with a counter" "$H" info "$T/sq.csv" --json "$T/sq.json"
+expect_out "^drops       3 (missing sensor counter values)$" "the text counts the drops"
+json "$T/sq.json" "j['counter_drops'] == 3" && pass "counter_drops is the number of missing counter values" ||
+    fail "counter_drops with a counter: $(grep -o '"counter_drops":[^,]*' "$T/sq.json")"
+expect_exit 0 "info --json, a log without a counter" "$H" info "$T/r.csv" --json "$T/nc.json"
+grep -q "^drops" "$T/out" && fail "a drops line without a counter" || pass "no drops line without a counter"
+json "$T/nc.json" "'counter_drops' in j and j['counter_drops'] is None" && pass "counter_drops is null without a counter" ||
+    fail "counter_drops without a counter: $(grep -o '"counter_drops":[^,]*' "$T/nc.json")"
+
 # --- a repeated option takes its last value, and so does `--json -`'s claim
 # on standard output: `info LOG --json - --json F` wrote the JSON to F and
 # info's text to standard error, leaving standard output empty; `replay LOG
