@@ -1256,8 +1256,24 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     fprintf(f, "rate              %.1f Hz%s%s%s, detector window %d samples\n", t->rate_hz, t->rate_src[0] ? " (" : "",
             t->rate_src, t->rate_src[0] ? ")" : "", t->window);
     fprintf(f, "duration          %.2f s, %u samples, %u frames\n", s->duration_s, st->samples, st->frames);
+    if (t->input_complete == 0) {
+        /* the run stopped early: at a bad line of the log, or at the
+         * trajectory output (a closed pipe, a full disk) */
+        if (t->output_failed) {
+            fprintf(f, "stopped           after %u samples: %s (the error above); every figure covers those samples\n",
+                    st->samples, t->input_error);
+        } else {
+            fprintf(f, "stopped           after %u samples, at the input error above; every figure covers those "
+                       "samples\n",
+                    st->samples);
+        }
+    }
     if (!t->aligned) {
-        fprintf(f, "alignment         NOT ALIGNED (no still period long enough: the error above says what was found)\n");
+        if (t->input_complete == 0) {
+            fprintf(f, "alignment         NOT ALIGNED (the run stopped before a still period long enough was found)\n");
+        } else {
+            fprintf(f, "alignment         NOT ALIGNED (no still period long enough: the error above says what was found)\n");
+        }
         return;
     }
     fprintf(f, "alignment         %.2f s still: roll %.2f deg, pitch %.2f deg, |f| %.4f m/s^2",

@@ -99,10 +99,14 @@ typedef struct {
     int aligned;
     hx_axes_result_t axes;       /**< the axes check (hx_axes.h) */
     long saturated[6];           /**< samples at a clipped channel's extremes, ax..gz (hx_sat_count; the input before any resampling) */
-    /** replay: 1 when the input was read to its end, 0 when it stopped at
-     *  an error (input_error); -1 not said (live): no JSON keys */
+    /** replay: 1 when the input was read to its end, 0 when the run
+     *  stopped at an error of the input or of the trajectory output
+     *  (input_error); -1 not said (live): no JSON keys */
     int input_complete;
     char input_error[512];
+    /** replay: 1 when the run stopped because the trajectory output could
+     *  not be written (input_complete is then 0 and input_error says so) */
+    int output_failed;
 } hx_traj_t;
 
 void hx_traj_free(hx_traj_t *t);

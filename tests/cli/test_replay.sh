@@ -429,6 +429,24 @@ rm -f "$T/pipe.json"
 rc=$( { "$H" replay vectors/walk.bin --out - --json "$T/pipe.json" 2>"$T/err"; echo $? > "$T/rc"; } | head -1 >/dev/null; cat "$T/rc")
 if [ "$rc" -eq 3 ] && [ -s "$T/pipe.json" ] && grep -q "cannot write" "$T/err"; then pass "--out - into a closed pipe: exit 3, JSON written"; else
     fail "--out - into a closed pipe: exit $rc"; cat "$T/err"; fi
+# the run stops there: the summary and the JSON say so, and the alignment
+# line does not blame the still period (it printed "NOT ALIGNED (no still
+# period long enough: the error above says what was found)" and the JSON
+# "complete": true; a review, 2026-11-29)
+n=$(sed -n 's/^stopped  *after \([0-9][0-9]*\) samples: cannot write the trajectory to standard output (the error above); every figure covers those samples$/\1/p' "$T/err")
+if [ -n "$n" ] && grep -q "^duration .*, $n samples," "$T/err"; then pass "closed pipe: the summary says the run stopped after $n samples"; else
+    fail "closed pipe: no stopped line"; cat "$T/err"; fi
+if grep -q "no still period" "$T/err"; then fail "closed pipe: the still period is blamed"; else pass "closed pipe: no still period blamed"; fi
+grep -q "^alignment  *NOT ALIGNED (the run stopped before a still period long enough was found)$" "$T/err" &&
+    pass "closed pipe: the alignment line says the run stopped" || fail "closed pipe: alignment line: $(grep alignment "$T/err")"
+json "$T/pipe.json" "j['complete'] is False and j['error'] == 'cannot write the trajectory to standard output' and j['health']['samples'] == ${n:-0}" &&
+    pass "closed pipe: JSON complete false, the error, the samples run" || fail "closed pipe JSON: $(head -c 400 "$T/pipe.json")"
+if [ -w /dev/full ]; then
+    expect_exit 3 "--out to a full disk, with --json" "$H" replay vectors/walk.bin --out /dev/full --json "$T/full.json"
+    expect_out_re "^stopped +after [0-9]+ samples: cannot write the trajectory to /dev/full " "full disk: the summary says the run stopped"
+    json "$T/full.json" "j['complete'] is False and j['error'] == 'cannot write the trajectory to /dev/full'" &&
+        pass "full disk: JSON complete false, the error" || fail "full disk JSON: $(head -c 400 "$T/full.json")"
+fi
 
 # --- bad input: a NaN in the middle; the frames before are written, exit 1
 head -2001 vectors/nav/golden/gx2_walk2.csv > "$T/bad.csv"
@@ -843,6 +861,8 @@ awk -F, 'NR == 900 { $2 = "abc" } { print }' OFS=, "$T/cl.csv" >"$T/cl_bad.csv"
 expect_exit 1 "a bad line half way" "$H" replay "$T/cl_bad.csv" --quiet --json "$T/cl_bad.json"
 json "$T/cl_bad.json" 'j["complete"] is False and "cl_bad.csv:900:" in j["error"]' &&
     pass "JSON: complete false, the error with its line" || fail "cut JSON: $(cat "$T/pyerr")"
+expect_exit 1 "a bad line half way, the summary" "$H" replay "$T/cl_bad.csv"
+expect_out "^stopped  *after 898 samples, at the input error above; every figure covers those samples$" "cut log: the summary says where the run stopped"
 expect_exit 0 "a whole log" "$H" replay "$T/cl.csv" --quiet --json "$T/cl.json"
 json "$T/cl.json" 'j["complete"] is True and "error" not in j' && pass "JSON: complete true, no error" ||
     fail "whole JSON: $(cat "$T/pyerr")"
