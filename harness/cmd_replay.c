@@ -108,6 +108,7 @@ int hx_cmd_replay(int argc, char **argv)
     rc = hx_nav_replay("replay", a.pos[0], fmt, in_rate, &cfg, o.rate_hz, csv, &traj, HX_REPLAY_PROGRESS | HX_REPLAY_AXES,
                        err, sizeof err);
     traj.input_complete = 1;
+    hx_traj_set_config(&traj, &o, &cfg);
     if (rc == -3) {
         /* the sink (or the memory for the frames) failed during the run,
          * which stopped there: the figures cover the samples before it, as

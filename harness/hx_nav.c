@@ -537,6 +537,42 @@ void hx_traj_free(hx_traj_t *t)
     memset(t, 0, sizeof *t);
 }
 
+void hx_traj_set_config(hx_traj_t *t, const hx_nav_opts_t *o, const fnav_nav_config_t *cfg)
+{
+    fnav_profile_t tmp;
+    size_t used = 0;
+    int i;
+    t->have_config = 1;
+    t->config = *cfg;
+    t->profile_file[0] = '\0';
+    if (o->profile != NULL && fnav_profile_by_name(&tmp, o->profile) != FNAV_OK) {
+        snprintf(t->profile_file, sizeof t->profile_file, "%s", o->profile);
+    }
+    t->params[0] = '\0';
+    for (i = 0; i < o->nparams && used < sizeof t->params; i++) {
+        int k = snprintf(t->params + used, sizeof t->params - used, "%s%s", i > 0 ? ", " : "", o->params[i]);
+        used += k > 0 ? (size_t)k : 0u;
+    }
+}
+
+void hx_nav_config_text(const hx_traj_t *t, char *buf, size_t size)
+{
+    const fnav_nav_config_t *c = &t->config;
+    size_t used;
+    int k;
+    k = snprintf(buf, size, "profile %s%s%s%s, bias model %s, detector %s%s, samples %s, lever %s, settling %s, ZARU %s",
+                 c->profile.name, t->profile_file[0] ? " (file " : "", t->profile_file, t->profile_file[0] ? ")" : "",
+                 c->bias_model == FNAV_BIAS_OFF ? "off" : "ar1",
+                 c->stance.detector == FNAV_DETECTOR_THRESHOLD ? "threshold" : "shoe",
+                 c->stance.adaptive ? " (adaptive threshold)" : " (fixed threshold)",
+                 c->sample_type == FNAV_SAMPLE_MEAN ? "mean" : "instant", c->lever ? "on" : "off",
+                 c->settle ? "on" : "off", c->zaru ? "on" : "off");
+    used = k > 0 ? (size_t)k : 0u;
+    if (t->params[0] != '\0' && used < size) {
+        snprintf(buf + used, size - used, "; parameters overridden: %s", t->params);
+    }
+}
+
 /* The harness port: the Linux port's CSV sink plus frame collection, and a
  * source that is either the Linux port's reader or a resampled log in
  * memory; progress is updated from the source. */
@@ -1249,6 +1285,11 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
 {
     const fnav_nav_stats_t *st = &t->stats;
     fprintf(f, "log               %s\n", path);
+    if (t->have_config) {
+        char cfg[1024];
+        hx_nav_config_text(t, cfg, sizeof cfg);
+        fprintf(f, "config            %s\n", cfg);
+    }
     if (t->in_rate_hz > 0.0) {
         fprintf(f, "resampled         %.1f Hz (1 / the median interval) -> %.1f Hz (%ld duplicate time stamps dropped)\n", t->in_rate_hz,
                 t->rate_hz, t->resample_dropped_dups);
@@ -1391,6 +1432,33 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddItemToObject(root, "rate_hz", num(t->rate_hz));
     cJSON_AddItemToObject(root, "input_rate_hz", num(t->in_rate_hz > 0.0 ? t->in_rate_hz : t->rate_hz));
     cJSON_AddNumberToObject(root, "window_samples", t->window);
+    if (t->have_config) {
+        /* the configuration that ran, as the summary's config line (only
+         * `command` named it; a review, 2026-11-29) */
+        const fnav_nav_config_t *c = &t->config;
+        cJSON *pa = cJSON_CreateArray();
+        const char *p = t->params;
+        cJSON_AddStringToObject(root, "profile", c->profile.name);
+        cJSON_AddItemToObject(root, "profile_file", t->profile_file[0] ? cJSON_CreateString(t->profile_file)
+                                                                       : cJSON_CreateNull());
+        cJSON_AddStringToObject(root, "bias_model", c->bias_model == FNAV_BIAS_OFF ? "off" : "ar1");
+        cJSON_AddStringToObject(root, "detector", c->stance.detector == FNAV_DETECTOR_THRESHOLD ? "threshold" : "shoe");
+        cJSON_AddBoolToObject(root, "adaptive_threshold", c->stance.adaptive);
+        cJSON_AddStringToObject(root, "samples", c->sample_type == FNAV_SAMPLE_MEAN ? "mean" : "instant");
+        cJSON_AddBoolToObject(root, "lever", c->lever);
+        cJSON_AddBoolToObject(root, "settling", c->settle);
+        cJSON_AddBoolToObject(root, "zaru", c->zaru);
+        while (*p != '\0') { /* the overrides, as t->params keeps them: ", " between */
+            const char *e = strstr(p, ", ");
+            size_t n = e != NULL ? (size_t)(e - p) : strlen(p);
+            char one[256];
+            snprintf(one, sizeof one, "%.*s", (int)(n < sizeof one ? n : sizeof one - 1), p);
+            cJSON_AddItemToArray(pa, cJSON_CreateString(one));
+            p += n;
+            p += *p != '\0' ? 2 : 0;
+        }
+        cJSON_AddItemToObject(root, "params", pa);
+    }
     cJSON_AddBoolToObject(root, "aligned", t->aligned);
     if (t->input_complete >= 0) {
         /* as info's and psd's: a log cut short shows in the JSON, not only

@@ -107,9 +107,24 @@ typedef struct {
     /** replay: 1 when the run stopped because the trajectory output could
      *  not be written (input_complete is then 0 and input_error says so) */
     int output_failed;
+    /** the configuration that ran, for the summary's `config` line and the
+     *  JSON's keys (hx_traj_set_config; have_config 0: not said, no line) */
+    int have_config;
+    fnav_nav_config_t config;
+    char profile_file[256];      /**< --profile's file ("": a built-in profile) */
+    char params[512];            /**< the --param overrides as given, ", " between ("": none) */
 } hx_traj_t;
 
 void hx_traj_free(hx_traj_t *t);
+
+/** Record the configuration that ran in t (after hx_nav_replay, which
+ *  clears t): the profile, bias model, detector and switches of cfg, and
+ *  from o the profile file and the --param overrides. */
+void hx_traj_set_config(hx_traj_t *t, const hx_nav_opts_t *o, const fnav_nav_config_t *cfg);
+
+/** The configuration's description as the summary's `config` line prints
+ *  it, without the label ("profile generic-mems, bias model ar1, ..."). */
+void hx_nav_config_text(const hx_traj_t *t, char *buf, size_t size);
 
 /* ------------------------------------------------------------ resampler */
 

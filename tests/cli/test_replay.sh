@@ -81,6 +81,21 @@ if /usr/bin/python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exi
 else
     fail "JSON health content"
 fi
+# the configuration that ran, in the summary and the JSON (only the JSON's
+# command named it; a review, 2026-11-29)
+if [ "$(sed -n 2p "$T/out")" = "config            profile generic-mems, bias model ar1, detector shoe (adaptive threshold), samples instant, lever on, settling on, ZARU off" ]; then
+    pass "summary: the default configuration on the line after the log"; else fail "config line: $(sed -n 2p "$T/out")"; fi
+json "$T/s.json" "j['profile'] == 'generic-mems' and j['profile_file'] is None and j['bias_model'] == 'ar1' and j['detector'] == 'shoe' and j['adaptive_threshold'] is True and j['samples'] == 'instant' and j['lever'] is True and j['settling'] is True and j['zaru'] is False and j['params'] == []" &&
+    pass "JSON: the default configuration" || fail "JSON configuration: $(cat "$T/pyerr")"
+expect_exit 0 "replay with options" "$H" replay vectors/walk.bin --profile mtx --bias-model off --detector threshold --samples mean --param zaru=1 --param adaptive=0 --param settle=0 --json "$T/cfg.json"
+expect_out "^config            profile mtx, bias model off, detector threshold (fixed threshold), samples mean, lever on, settling off, ZARU on; parameters overridden: zaru=1, adaptive=0, settle=0$" "summary: the options' configuration"
+json "$T/cfg.json" "j['profile'] == 'mtx' and j['profile_file'] is None and j['bias_model'] == 'off' and j['detector'] == 'threshold' and j['adaptive_threshold'] is False and j['samples'] == 'mean' and j['lever'] is True and j['settling'] is False and j['zaru'] is True and j['params'] == ['zaru=1', 'adaptive=0', 'settle=0']" &&
+    pass "JSON: the options' configuration" || fail "JSON options' configuration: $(cat "$T/pyerr")"
+sed 's/^name = .*/name = mysensor/' docs/profiles/generic-mems.profile > "$T/my.profile"
+expect_exit 0 "replay with a profile file" "$H" replay vectors/walk.bin --profile "$T/my.profile" --param lever=0 --json "$T/pf.json"
+expect_out "^config            profile mysensor (file $T/my.profile), bias model ar1, detector shoe (adaptive threshold), samples instant, lever off, settling on, ZARU off; parameters overridden: lever=0$" "summary: a profile file's name and path"
+json "$T/pf.json" "j['profile'] == 'mysensor' and j['profile_file'] == '$T/my.profile' and j['lever'] is False and j['params'] == ['lever=0']" &&
+    pass "JSON: a profile file's name and path" || fail "JSON profile file: $(cat "$T/pyerr")"
 # the ZARU's validation gate (docs/navigation.md, "Zero-velocity update"):
 # on a real walk, whose stance rolls, it skips readings and keeps the ZARU
 # from wrecking the closure that the ungated ZARU ruins
