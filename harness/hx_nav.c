@@ -1337,18 +1337,21 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
             s->end_pos_m[2]);
     fprintf(f, "vertical drift    %+.3f m (height change, up positive)\n", s->vertical_m);
     fprintf(f, "heading change    %+.1f deg\n", s->heading_change_deg);
-    fprintf(f, "stance            %ld strides, %ld stance phases, %.1f %% of frames with ZUPT\n", s->strides,
-            s->stance_phases, 100.0 * s->stance_fraction);
+    fprintf(f, "stance            %ld stride%s, %ld stance phase%s, %.1f %% of frames with ZUPT\n", s->strides,
+            s->strides == 1 ? "" : "s", s->stance_phases, s->stance_phases == 1 ? "" : "s", 100.0 * s->stance_fraction);
     if (st->zarus > 0u || st->zaru_gated > 0u) {
         fprintf(f, "ZARU              %u applied, %u skipped by the gate (the foot turned)\n", st->zarus, st->zaru_gated);
     }
     if (hx_nav_little_motion(s)) {
-        fprintf(f, "note              almost no motion detected (%.0f %% of frames in stance, %ld strides in %.0f s): "
+        fprintf(f, "note              almost no motion detected (%.0f %% of frames in stance, %ld stride%s in %.0f s): "
                    "a still log, or motion too gentle for the foot-tuned detector (docs/navigation.md, \"Stance "
                    "detector\")\n",
-                100.0 * s->stance_fraction, s->strides, s->duration_s);
+                100.0 * s->stance_fraction, s->strides, s->strides == 1 ? "" : "s", s->duration_s);
     }
-    if (s->longest_stand_s > HX_NAV_LONG_STAND_S && st->zarus == 0u && st->zaru_gated == 0u) {
+    if (s->longest_stand_s > HX_NAV_LONG_STAND_S && st->zarus == 0u && st->zaru_gated == 0u && s->strides >= 2) {
+        /* "between strides" needs two of them: with 0 strides and 1 stance
+         * phase the note contradicted the stance line (the threshold
+         * detector on openshoe_square2; a review, 2026-11-29) */
         fprintf(f, "note              the foot stood %.0f s between strides (from %.1f s): with ZUPTs only the heading "
                    "drifts with the gyro bias there; --param zaru=1 --param zaru_after_s=1 holds it (docs/navigation.md, "
                    "\"Zero-velocity update\")\n",
@@ -1381,11 +1384,11 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                 s->rate_change_hz, s->rate_change_at_s, 100.0 * s->rate_off_fraction, t->rate_hz);
     }
     if (hx_nav_gappy(s)) {
-        fprintf(f, "note              %.1f %% of the time in motion is lost in %ld gaps longer than %.0f ms (longest "
+        fprintf(f, "note              %.1f %% of the time in motion is lost in %ld gap%s longer than %.0f ms (longest "
                    "%.1f ms): the strapdown interpolates across each from the readings at its ends, so the motion "
                    "inside is not measured and position and heading are unreliable (docs/harness.md, \"replay\")\n",
-                100.0 * s->gap_lost_s / s->motion_s, s->long_gaps, 1e3 * HX_NAV_LONG_GAP_S,
-                1e3 * s->longest_motion_gap_s);
+                100.0 * s->gap_lost_s / s->motion_s, s->long_gaps, s->long_gaps == 1 ? "" : "s",
+                1e3 * HX_NAV_LONG_GAP_S, 1e3 * s->longest_motion_gap_s);
     }
     if (s->before_align_s > HX_NAV_LATE_ALIGN_S) {
         fprintf(f, "note              the detector saw %.1f s of motion before the alignment (%.2f s into the log): that "

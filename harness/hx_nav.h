@@ -233,7 +233,7 @@ typedef struct {
 int hx_nav_gappy(const hx_nav_summary_t *s);
 
 /** A stand between strides longer than this is noted in the summary when
- *  the ZARU is off: with ZUPTs only the heading drifts with the gyro bias
+ *  the ZARU is off and there are two strides or more: with ZUPTs only the heading drifts with the gyro bias
  *  while the foot stands (docs/navigation.md, "Zero-velocity update"). */
 #define HX_NAV_LONG_STAND_S 10.0
 

@@ -495,6 +495,24 @@ head -400 vectors/nav/golden/gx2_walk2.csv > "$T/still.csv"
 expect_exit 0 "still log (no strides)" "$H" replay "$T/still.csv"
 expect_out "no step-to-step path for a percentage" "summary without a path says so"
 if grep -q "nan %" "$T/out"; then fail "summary of a still log prints nan"; else pass "no nan in the summary of a still log"; fi
+expect_out "^stance            0 strides, 1 stance phase, 100.0 % of frames with ZUPT$" "still log: the count nouns agree (1 stance phase)"
+# a stand of 12 s after one stride, the log cut 0.6 s into the next walk:
+# "1 stride", and no note of a stand "between strides" (it printed "0
+# strides, 1 stance phases" and that note on openshoe_square2 with the
+# threshold detector; a review, 2026-11-29); cut 1.3 s in, with two
+# strides, the note is printed
+"$H" sim --motion stand:5,walk:1.5,stand:12,walk:1.5,stand:2 --rate 100 --out "$T/stand.csv" >/dev/null 2>&1
+awk -F, 'NR == 1 || $1 < 18.3' "$T/stand.csv" > "$T/stand1.csv"
+awk -F, 'NR == 1 || $1 < 19.0' "$T/stand.csv" > "$T/stand2.csv"
+expect_exit 0 "a stand after one stride" "$H" replay "$T/stand1.csv" --json "$T/stand1.json"
+expect_out "^stance            1 stride, 2 stance phases, " "one stride: '1 stride'"
+expect_out "1 stride in 18 s" "one stride: '1 stride' in the little-motion note"
+if grep -q "between strides" "$T/out"; then fail "one stride: a stand 'between strides' noted"; else pass "one stride: no stand between strides noted"; fi
+json "$T/stand1.json" "j['strides'] == 1 and j['longest_stand_s'] > 12" && pass "one stride: the JSON keeps the stand (12 s)" ||
+    fail "one stride JSON: $(cat "$T/pyerr")"
+expect_exit 0 "a stand between two strides" "$H" replay "$T/stand2.csv"
+expect_out "^stance            2 strides, 3 stance phases, " "two strides: plural"
+expect_out "^note              the foot stood 12 s between strides (from 5.7 s)" "two strides: the stand between them noted"
 # 12 s of a sensor at rest (deterministic noise): the summary says that it saw no motion
 awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz";
              for (k = 0; k < 1200; k++) printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", k / 100.0,
