@@ -1337,7 +1337,9 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
             s->end_pos_m[2]);
     fprintf(f, "vertical drift    %+.3f m (height change, up positive)\n", s->vertical_m);
     fprintf(f, "heading change    %+.1f deg\n", s->heading_change_deg);
-    fprintf(f, "stance            %ld stride%s, %ld stance phase%s, %.1f %% of frames with ZUPT\n", s->strides,
+    /* stance_fraction's share is of the frames from the alignment on, not
+     * of the whole log ("of frames" read as the log's; a review, 2026-11-29) */
+    fprintf(f, "stance            %ld stride%s, %ld stance phase%s, %.1f %% of aligned frames with ZUPT\n", s->strides,
             s->strides == 1 ? "" : "s", s->stance_phases, s->stance_phases == 1 ? "" : "s", 100.0 * s->stance_fraction);
     if (st->zarus > 0u || st->zaru_gated > 0u) {
         fprintf(f, "ZARU              %u applied, %u skipped by the gate (the foot turned)\n", st->zarus, st->zaru_gated);

@@ -198,7 +198,7 @@ typedef struct {
     double heading_change_deg; /**< unwrapped heading change of a body vector level at the alignment, deg */
     long strides;             /**< completed swings */
     long stance_phases;       /**< stance phases (segmented) */
-    double stance_fraction;   /**< share of frames with the ZUPT flag */
+    double stance_fraction;   /**< share of the frames from the first aligned one on with the ZUPT flag (the aligned frames, unless a divergence reset left some unaligned) */
     double aligned_at_s;      /**< first aligned frame after the first frame, s (NaN: never aligned) */
     double before_align_s;    /**< frames before it the detector called motion (not navigated), s */
     double longest_stand_s;   /**< longest stance between two motions after the alignment, s (0: none) */
