@@ -157,8 +157,12 @@ int hx_cmd_replay(int argc, char **argv)
         hx_error("replay", "%s", err);
         exit_code = HX_EXIT_IO;
     }
-    if (plot_path != NULL && hx_nav_plot("replay", plot_path, a.pos[0], &traj) != 0) {
-        exit_code = HX_EXIT_IO;
+    if (plot_path != NULL) {
+        char title[1024];
+        hx_nav_plot_title(&traj, a.pos[0], o.rate_hz, title, sizeof title);
+        if (hx_nav_plot("replay", plot_path, title, &traj) != 0) {
+            exit_code = HX_EXIT_IO;
+        }
     }
     hx_traj_free(&traj);
     return exit_code;

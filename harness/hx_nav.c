@@ -555,6 +555,59 @@ void hx_traj_set_config(hx_traj_t *t, const hx_nav_opts_t *o, const fnav_nav_con
     }
 }
 
+void hx_nav_plot_title(const hx_traj_t *t, const char *path, double rate_hz, char *buf, size_t size)
+{
+    /* plots of one log with --rate 100 or --detector threshold had the same
+     * title, the path alone (a review, 2026-11-29) */
+    char opt[600];
+    size_t used = 0;
+    int k;
+    opt[0] = '\0';
+    if (rate_hz > 0.0) {
+        k = snprintf(opt + used, sizeof opt - used, ", --rate %g", rate_hz);
+        used += k > 0 ? (size_t)k : 0u;
+    }
+    if (t->have_config) {
+        const fnav_nav_config_t *c = &t->config;
+        if (used < sizeof opt && (t->profile_file[0] != '\0' ||
+                                  strcmp(c->profile.name, fnav_nav_config_default.profile.name) != 0)) {
+            k = snprintf(opt + used, sizeof opt - used, ", --profile %s",
+                         t->profile_file[0] != '\0' ? t->profile_file : c->profile.name);
+            used += k > 0 ? (size_t)k : 0u;
+        }
+        if (used < sizeof opt && c->bias_model != fnav_nav_config_default.bias_model) {
+            k = snprintf(opt + used, sizeof opt - used, ", --bias-model %s", c->bias_model == FNAV_BIAS_OFF ? "off" : "ar1");
+            used += k > 0 ? (size_t)k : 0u;
+        }
+        if (used < sizeof opt && c->stance.detector != fnav_nav_config_default.stance.detector) {
+            k = snprintf(opt + used, sizeof opt - used, ", --detector %s",
+                         c->stance.detector == FNAV_DETECTOR_THRESHOLD ? "threshold" : "shoe");
+            used += k > 0 ? (size_t)k : 0u;
+        }
+        if (used < sizeof opt && c->sample_type != fnav_nav_config_default.sample_type) {
+            k = snprintf(opt + used, sizeof opt - used, ", --samples %s", c->sample_type == FNAV_SAMPLE_MEAN ? "mean" : "instant");
+            used += k > 0 ? (size_t)k : 0u;
+        }
+        if (used < sizeof opt && t->params[0] != '\0') {
+            /* t->params is "k=v, k=v": each one after its --param */
+            const char *p = t->params;
+            while (*p != '\0' && used < sizeof opt) {
+                const char *e = strstr(p, ", ");
+                const size_t n = e != NULL ? (size_t)(e - p) : strlen(p);
+                k = snprintf(opt + used, sizeof opt - used, ", --param %.*s", (int)n, p);
+                used += k > 0 ? (size_t)k : 0u;
+                p += n;
+                p += *p != '\0' ? 2 : 0;
+            }
+        }
+    }
+    if (opt[0] != '\0') {
+        snprintf(buf, size, "%s (%s)", path, opt + 2);
+    } else {
+        snprintf(buf, size, "%s", path);
+    }
+}
+
 void hx_nav_config_text(const hx_traj_t *t, char *buf, size_t size)
 {
     const fnav_nav_config_t *c = &t->config;
@@ -1564,7 +1617,7 @@ int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_tr
 {
     hx_plot_t p;
     size_t i;
-    char q[512];
+    char q[2048]; /* the title, its quotes doubled */
     if (hx_plot_open(&p, cmd, png, 1200, 600) != 0) {
         return -1;
     }

@@ -122,6 +122,13 @@ void hx_traj_free(hx_traj_t *t);
  *  from o the profile file and the --param overrides. */
 void hx_traj_set_config(hx_traj_t *t, const hx_nav_opts_t *o, const fnav_nav_config_t *cfg);
 
+/** The replay PNG's title: the log's path, then in brackets the options
+ *  that differ from the defaults as they would be typed (`--rate HZ`,
+ *  `--profile`, `--bias-model`, `--detector`, `--samples`, each `--param`),
+ *  from t's configuration (hx_traj_set_config) and rate_hz (--rate, 0:
+ *  none); the path alone when every option is the default. */
+void hx_nav_plot_title(const hx_traj_t *t, const char *path, double rate_hz, char *buf, size_t size);
+
 /** The configuration's description as the summary's `config` line prints
  *  it, without the label ("profile generic-mems, bias model ar1, ..."). */
 void hx_nav_config_text(const hx_traj_t *t, char *buf, size_t size);

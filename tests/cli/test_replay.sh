@@ -886,6 +886,19 @@ if awk '/^set [xy]range/ { r = $3; gsub(/[\[\]]/, "", r) } /^set xrange/ { split
 else
     fail "path plot ranges: $(grep range "$T/gp.txt" | tr '\n' ' ')"
 fi
+# the title names the options that differ from the defaults: plots of one
+# log with --rate 100 or --detector threshold had the same title, the path
+# (a review, 2026-11-29)
+if grep -q -x "set multiplot layout 1,2 title '$T/straight.bin'" "$T/gp.txt"; then pass "plot title: the path alone with the defaults"; else
+    fail "plot title (defaults): $(grep multiplot "$T/gp.txt" | head -1)"; fi
+PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp2.txt" "$H" replay "$T/straight.bin" --rate 100 --detector threshold --bias-model off \
+    --profile mtx --samples mean --param zaru=1 --param settle=0 --plot "$T/straight2.png" --quiet >/dev/null 2>&1
+if grep -q -x "set multiplot layout 1,2 title '$T/straight.bin (--rate 100, --profile mtx, --bias-model off, --detector threshold, --samples mean, --param zaru=1, --param settle=0)'" "$T/gp2.txt"; then
+    pass "plot title: the non-default options"; else fail "plot title (options): $(grep multiplot "$T/gp2.txt" | head -1)"; fi
+PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp3.txt" "$H" replay "$T/straight.bin" --profile generic-mems --detector shoe --bias-model ar1 \
+    --samples instant --plot "$T/straight3.png" --quiet >/dev/null 2>&1
+if grep -q -x "set multiplot layout 1,2 title '$T/straight.bin'" "$T/gp3.txt"; then pass "plot title: defaults given explicitly are left out"; else
+    fail "plot title (explicit defaults): $(grep multiplot "$T/gp3.txt" | head -1)"; fi
 # gnuplot failing partway left its half-drawn PNG behind beside "failed to
 # write" (the plots review): the file it started is removed, and said; a file
 # that was there before and that gnuplot never opened is left alone
