@@ -644,6 +644,7 @@ int hx_cmd_live(int argc, char **argv)
 
     memset(&L, 0, sizeof L);
     L.traj.input_complete = -1; /* its JSON counts lost frames instead */
+    hx_traj_set_config(&L.traj, &nopt, &ncfg); /* the summary's config line, as replay's */
     fnav_wire_decoder_init(&L.dec);
     L.nav = &nav;
     L.axes = hx_axes_new(); /* NULL: out of memory, not checked */

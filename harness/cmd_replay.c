@@ -108,6 +108,21 @@ int hx_cmd_replay(int argc, char **argv)
     rc = hx_nav_replay("replay", a.pos[0], fmt, in_rate, &cfg, o.rate_hz, csv, &traj, HX_REPLAY_PROGRESS | HX_REPLAY_AXES,
                        err, sizeof err);
     traj.input_complete = 1;
+    hx_traj_set_config(&traj, &o, &cfg);
+    if (rc == -3) {
+        /* the sink (or the memory for the frames) failed during the run,
+         * which stopped there: the figures cover the samples before it, as
+         * a log cut at a bad line (it printed "NOT ALIGNED (no still period
+         * long enough ...)" and "complete": true for `--out - | head -2`; a
+         * review, 2026-11-29) */
+        if (csv != NULL && strcmp(err, "cannot write the trajectory") == 0) {
+            snprintf(err, sizeof err, "cannot write the trajectory to %s",
+                     strcmp(out_path, "-") == 0 ? "standard output" : out_path);
+        }
+        traj.input_complete = 0;
+        traj.output_failed = 1;
+        snprintf(traj.input_error, sizeof traj.input_error, "%s", err);
+    }
     if (csv != NULL && (csv == stdout ? fflush(csv) != 0 || ferror(csv) : fclose(csv) != 0) && rc >= 0) {
         snprintf(err, sizeof err, "cannot write %s", strcmp(out_path, "-") == 0 ? "standard output" : out_path);
         rc = -3;
@@ -142,8 +157,12 @@ int hx_cmd_replay(int argc, char **argv)
         hx_error("replay", "%s", err);
         exit_code = HX_EXIT_IO;
     }
-    if (plot_path != NULL && hx_nav_plot("replay", plot_path, a.pos[0], &traj) != 0) {
-        exit_code = HX_EXIT_IO;
+    if (plot_path != NULL) {
+        char title[1024];
+        hx_nav_plot_title(&traj, a.pos[0], o.rate_hz, title, sizeof title);
+        if (hx_nav_plot("replay", plot_path, title, &traj) != 0) {
+            exit_code = HX_EXIT_IO;
+        }
     }
     hx_traj_free(&traj);
     return exit_code;

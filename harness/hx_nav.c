@@ -549,6 +549,95 @@ void hx_traj_free(hx_traj_t *t)
     memset(t, 0, sizeof *t);
 }
 
+void hx_traj_set_config(hx_traj_t *t, const hx_nav_opts_t *o, const fnav_nav_config_t *cfg)
+{
+    fnav_profile_t tmp;
+    size_t used = 0;
+    int i;
+    t->have_config = 1;
+    t->config = *cfg;
+    t->profile_file[0] = '\0';
+    if (o->profile != NULL && fnav_profile_by_name(&tmp, o->profile) != FNAV_OK) {
+        snprintf(t->profile_file, sizeof t->profile_file, "%s", o->profile);
+    }
+    t->params[0] = '\0';
+    for (i = 0; i < o->nparams && used < sizeof t->params; i++) {
+        int k = snprintf(t->params + used, sizeof t->params - used, "%s%s", i > 0 ? ", " : "", o->params[i]);
+        used += k > 0 ? (size_t)k : 0u;
+    }
+}
+
+void hx_nav_plot_title(const hx_traj_t *t, const char *path, double rate_hz, char *buf, size_t size)
+{
+    /* plots of one log with --rate 100 or --detector threshold had the same
+     * title, the path alone (a review, 2026-11-29) */
+    char opt[600];
+    size_t used = 0;
+    int k;
+    opt[0] = '\0';
+    if (rate_hz > 0.0) {
+        k = snprintf(opt + used, sizeof opt - used, ", --rate %g", rate_hz);
+        used += k > 0 ? (size_t)k : 0u;
+    }
+    if (t->have_config) {
+        const fnav_nav_config_t *c = &t->config;
+        if (used < sizeof opt && (t->profile_file[0] != '\0' ||
+                                  strcmp(c->profile.name, fnav_nav_config_default.profile.name) != 0)) {
+            k = snprintf(opt + used, sizeof opt - used, ", --profile %s",
+                         t->profile_file[0] != '\0' ? t->profile_file : c->profile.name);
+            used += k > 0 ? (size_t)k : 0u;
+        }
+        if (used < sizeof opt && c->bias_model != fnav_nav_config_default.bias_model) {
+            k = snprintf(opt + used, sizeof opt - used, ", --bias-model %s", c->bias_model == FNAV_BIAS_OFF ? "off" : "ar1");
+            used += k > 0 ? (size_t)k : 0u;
+        }
+        if (used < sizeof opt && c->stance.detector != fnav_nav_config_default.stance.detector) {
+            k = snprintf(opt + used, sizeof opt - used, ", --detector %s",
+                         c->stance.detector == FNAV_DETECTOR_THRESHOLD ? "threshold" : "shoe");
+            used += k > 0 ? (size_t)k : 0u;
+        }
+        if (used < sizeof opt && c->sample_type != fnav_nav_config_default.sample_type) {
+            k = snprintf(opt + used, sizeof opt - used, ", --samples %s", c->sample_type == FNAV_SAMPLE_MEAN ? "mean" : "instant");
+            used += k > 0 ? (size_t)k : 0u;
+        }
+        if (used < sizeof opt && t->params[0] != '\0') {
+            /* t->params is "k=v, k=v": each one after its --param */
+            const char *p = t->params;
+            while (*p != '\0' && used < sizeof opt) {
+                const char *e = strstr(p, ", ");
+                const size_t n = e != NULL ? (size_t)(e - p) : strlen(p);
+                k = snprintf(opt + used, sizeof opt - used, ", --param %.*s", (int)n, p);
+                used += k > 0 ? (size_t)k : 0u;
+                p += n;
+                p += *p != '\0' ? 2 : 0;
+            }
+        }
+    }
+    if (opt[0] != '\0') {
+        snprintf(buf, size, "%s (%s)", path, opt + 2);
+    } else {
+        snprintf(buf, size, "%s", path);
+    }
+}
+
+void hx_nav_config_text(const hx_traj_t *t, char *buf, size_t size)
+{
+    const fnav_nav_config_t *c = &t->config;
+    size_t used;
+    int k;
+    k = snprintf(buf, size, "profile %s%s%s%s, bias model %s, detector %s%s, samples %s, lever %s, settling %s, ZARU %s",
+                 c->profile.name, t->profile_file[0] ? " (file " : "", t->profile_file, t->profile_file[0] ? ")" : "",
+                 c->bias_model == FNAV_BIAS_OFF ? "off" : "ar1",
+                 c->stance.detector == FNAV_DETECTOR_THRESHOLD ? "threshold" : "shoe",
+                 c->stance.adaptive ? " (adaptive threshold)" : " (fixed threshold)",
+                 c->sample_type == FNAV_SAMPLE_MEAN ? "mean" : "instant", c->lever ? "on" : "off",
+                 c->settle ? "on" : "off", c->zaru ? "on" : "off");
+    used = k > 0 ? (size_t)k : 0u;
+    if (t->params[0] != '\0' && used < size) {
+        snprintf(buf + used, size - used, "; parameters overridden: %s", t->params);
+    }
+}
+
 /* The harness port: the Linux port's CSV sink plus frame collection, and a
  * source that is either the Linux port's reader or a resampled log in
  * memory; progress is updated from the source. */
@@ -1261,6 +1350,11 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
 {
     const fnav_nav_stats_t *st = &t->stats;
     fprintf(f, "log               %s\n", path);
+    if (t->have_config) {
+        char cfg[1024];
+        hx_nav_config_text(t, cfg, sizeof cfg);
+        fprintf(f, "config            %s\n", cfg);
+    }
     if (t->in_rate_hz > 0.0) {
         fprintf(f, "resampled         %.1f Hz (1 / the median interval) -> %.1f Hz (%ld duplicate time stamps dropped)\n", t->in_rate_hz,
                 t->rate_hz, t->resample_dropped_dups);
@@ -1268,8 +1362,24 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     fprintf(f, "rate              %.1f Hz%s%s%s, detector window %d samples\n", t->rate_hz, t->rate_src[0] ? " (" : "",
             t->rate_src, t->rate_src[0] ? ")" : "", t->window);
     fprintf(f, "duration          %.2f s, %u samples, %u frames\n", s->duration_s, st->samples, st->frames);
+    if (t->input_complete == 0) {
+        /* the run stopped early: at a bad line of the log, or at the
+         * trajectory output (a closed pipe, a full disk) */
+        if (t->output_failed) {
+            fprintf(f, "stopped           after %u samples: %s (the error above); every figure covers those samples\n",
+                    st->samples, t->input_error);
+        } else {
+            fprintf(f, "stopped           after %u samples, at the input error above; every figure covers those "
+                       "samples\n",
+                    st->samples);
+        }
+    }
     if (!t->aligned) {
-        fprintf(f, "alignment         NOT ALIGNED (no still period long enough: the error above says what was found)\n");
+        if (t->input_complete == 0) {
+            fprintf(f, "alignment         NOT ALIGNED (the run stopped before a still period long enough was found)\n");
+        } else {
+            fprintf(f, "alignment         NOT ALIGNED (no still period long enough: the error above says what was found)\n");
+        }
         return;
     }
     fprintf(f, "alignment         %.2f s still: roll %.2f deg, pitch %.2f deg, |f| %.4f m/s^2",
@@ -1292,18 +1402,23 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
             s->end_pos_m[2]);
     fprintf(f, "vertical drift    %+.3f m (height change, up positive)\n", s->vertical_m);
     fprintf(f, "heading change    %+.1f deg\n", s->heading_change_deg);
-    fprintf(f, "stance            %ld strides, %ld stance phases, %.1f %% of frames with ZUPT\n", s->strides,
-            s->stance_phases, 100.0 * s->stance_fraction);
+    /* stance_fraction's share is of the frames from the alignment on, not
+     * of the whole log ("of frames" read as the log's; a review, 2026-11-29) */
+    fprintf(f, "stance            %ld stride%s, %ld stance phase%s, %.1f %% of aligned frames with ZUPT\n", s->strides,
+            s->strides == 1 ? "" : "s", s->stance_phases, s->stance_phases == 1 ? "" : "s", 100.0 * s->stance_fraction);
     if (st->zarus > 0u || st->zaru_gated > 0u) {
         fprintf(f, "ZARU              %u applied, %u skipped by the gate (the foot turned)\n", st->zarus, st->zaru_gated);
     }
     if (hx_nav_little_motion(s)) {
-        fprintf(f, "note              almost no motion detected (%.0f %% of frames in stance, %ld strides in %.0f s): "
+        fprintf(f, "note              almost no motion detected (%.0f %% of frames in stance, %ld stride%s in %.0f s): "
                    "a still log, or motion too gentle for the foot-tuned detector (docs/navigation.md, \"Stance "
                    "detector\")\n",
-                100.0 * s->stance_fraction, s->strides, s->duration_s);
+                100.0 * s->stance_fraction, s->strides, s->strides == 1 ? "" : "s", s->duration_s);
     }
-    if (s->longest_stand_s > HX_NAV_LONG_STAND_S && st->zarus == 0u && st->zaru_gated == 0u) {
+    if (s->longest_stand_s > HX_NAV_LONG_STAND_S && st->zarus == 0u && st->zaru_gated == 0u && s->strides >= 2) {
+        /* "between strides" needs two of them: with 0 strides and 1 stance
+         * phase the note contradicted the stance line (the threshold
+         * detector on openshoe_square2; a review, 2026-11-29) */
         fprintf(f, "note              the foot stood %.0f s between strides (from %.1f s): with ZUPTs only the heading "
                    "drifts with the gyro bias there; --param zaru=1 --param zaru_after_s=1 holds it (docs/navigation.md, "
                    "\"Zero-velocity update\")\n",
@@ -1336,11 +1451,11 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                 s->rate_change_hz, s->rate_change_at_s, 100.0 * s->rate_off_fraction, t->rate_hz);
     }
     if (hx_nav_gappy(s)) {
-        fprintf(f, "note              %.1f %% of the time in motion is lost in %ld gaps longer than %.0f ms (longest "
+        fprintf(f, "note              %.1f %% of the time in motion is lost in %ld gap%s longer than %.0f ms (longest "
                    "%.1f ms): the strapdown interpolates across each from the readings at its ends, so the motion "
                    "inside is not measured and position and heading are unreliable (docs/harness.md, \"replay\")\n",
-                100.0 * s->gap_lost_s / s->motion_s, s->long_gaps, 1e3 * HX_NAV_LONG_GAP_S,
-                1e3 * s->longest_motion_gap_s);
+                100.0 * s->gap_lost_s / s->motion_s, s->long_gaps, s->long_gaps == 1 ? "" : "s",
+                1e3 * HX_NAV_LONG_GAP_S, 1e3 * s->longest_motion_gap_s);
     }
     if (s->before_align_s > HX_NAV_LATE_ALIGN_S) {
         fprintf(f, "note              the detector saw %.1f s of motion before the alignment (%.2f s into the log): that "
@@ -1387,6 +1502,33 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddItemToObject(root, "rate_hz", num(t->rate_hz));
     cJSON_AddItemToObject(root, "input_rate_hz", num(t->in_rate_hz > 0.0 ? t->in_rate_hz : t->rate_hz));
     cJSON_AddNumberToObject(root, "window_samples", t->window);
+    if (t->have_config) {
+        /* the configuration that ran, as the summary's config line (only
+         * `command` named it; a review, 2026-11-29) */
+        const fnav_nav_config_t *c = &t->config;
+        cJSON *pa = cJSON_CreateArray();
+        const char *p = t->params;
+        cJSON_AddStringToObject(root, "profile", c->profile.name);
+        cJSON_AddItemToObject(root, "profile_file", t->profile_file[0] ? cJSON_CreateString(t->profile_file)
+                                                                       : cJSON_CreateNull());
+        cJSON_AddStringToObject(root, "bias_model", c->bias_model == FNAV_BIAS_OFF ? "off" : "ar1");
+        cJSON_AddStringToObject(root, "detector", c->stance.detector == FNAV_DETECTOR_THRESHOLD ? "threshold" : "shoe");
+        cJSON_AddBoolToObject(root, "adaptive_threshold", c->stance.adaptive);
+        cJSON_AddStringToObject(root, "samples", c->sample_type == FNAV_SAMPLE_MEAN ? "mean" : "instant");
+        cJSON_AddBoolToObject(root, "lever", c->lever);
+        cJSON_AddBoolToObject(root, "settling", c->settle);
+        cJSON_AddBoolToObject(root, "zaru", c->zaru);
+        while (*p != '\0') { /* the overrides, as t->params keeps them: ", " between */
+            const char *e = strstr(p, ", ");
+            size_t n = e != NULL ? (size_t)(e - p) : strlen(p);
+            char one[256];
+            snprintf(one, sizeof one, "%.*s", (int)(n < sizeof one ? n : sizeof one - 1), p);
+            cJSON_AddItemToArray(pa, cJSON_CreateString(one));
+            p += n;
+            p += *p != '\0' ? 2 : 0;
+        }
+        cJSON_AddItemToObject(root, "params", pa);
+    }
     cJSON_AddBoolToObject(root, "aligned", t->aligned);
     if (t->input_complete >= 0) {
         /* as info's and psd's: a log cut short shows in the JSON, not only
@@ -1487,7 +1629,7 @@ int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_tr
 {
     hx_plot_t p;
     size_t i;
-    char q[512];
+    char q[2048]; /* the title, its quotes doubled */
     if (hx_plot_open(&p, cmd, png, 1200, 600) != 0) {
         return -1;
     }

@@ -99,13 +99,39 @@ typedef struct {
     int aligned;
     hx_axes_result_t axes;       /**< the axes check (hx_axes.h) */
     long saturated[6];           /**< samples at a clipped channel's extremes, ax..gz (hx_sat_count; the input before any resampling) */
-    /** replay: 1 when the input was read to its end, 0 when it stopped at
-     *  an error (input_error); -1 not said (live): no JSON keys */
+    /** replay: 1 when the input was read to its end, 0 when the run
+     *  stopped at an error of the input or of the trajectory output
+     *  (input_error); -1 not said (live): no JSON keys */
     int input_complete;
     char input_error[512];
+    /** replay: 1 when the run stopped because the trajectory output could
+     *  not be written (input_complete is then 0 and input_error says so) */
+    int output_failed;
+    /** the configuration that ran, for the summary's `config` line and the
+     *  JSON's keys (hx_traj_set_config; have_config 0: not said, no line) */
+    int have_config;
+    fnav_nav_config_t config;
+    char profile_file[256];      /**< --profile's file ("": a built-in profile) */
+    char params[512];            /**< the --param overrides as given, ", " between ("": none) */
 } hx_traj_t;
 
 void hx_traj_free(hx_traj_t *t);
+
+/** Record the configuration that ran in t (after hx_nav_replay, which
+ *  clears t): the profile, bias model, detector and switches of cfg, and
+ *  from o the profile file and the --param overrides. */
+void hx_traj_set_config(hx_traj_t *t, const hx_nav_opts_t *o, const fnav_nav_config_t *cfg);
+
+/** The replay PNG's title: the log's path, then in brackets the options
+ *  that differ from the defaults as they would be typed (`--rate HZ`,
+ *  `--profile`, `--bias-model`, `--detector`, `--samples`, each `--param`),
+ *  from t's configuration (hx_traj_set_config) and rate_hz (--rate, 0:
+ *  none); the path alone when every option is the default. */
+void hx_nav_plot_title(const hx_traj_t *t, const char *path, double rate_hz, char *buf, size_t size);
+
+/** The configuration's description as the summary's `config` line prints
+ *  it, without the label ("profile generic-mems, bias model ar1, ..."). */
+void hx_nav_config_text(const hx_traj_t *t, char *buf, size_t size);
 
 /* ------------------------------------------------------------ resampler */
 
@@ -179,7 +205,7 @@ typedef struct {
     double heading_change_deg; /**< unwrapped heading change of a body vector level at the alignment, deg */
     long strides;             /**< completed swings */
     long stance_phases;       /**< stance phases (segmented) */
-    double stance_fraction;   /**< share of frames with the ZUPT flag */
+    double stance_fraction;   /**< share of the frames from the first aligned one on with the ZUPT flag (the aligned frames, unless a divergence reset left some unaligned) */
     double aligned_at_s;      /**< first aligned frame after the first frame, s (NaN: never aligned) */
     double before_align_s;    /**< frames before it the detector called motion (not navigated), s */
     double longest_stand_s;   /**< longest stance between two motions after the alignment, s (0: none) */
@@ -214,7 +240,7 @@ typedef struct {
 int hx_nav_gappy(const hx_nav_summary_t *s);
 
 /** A stand between strides longer than this is noted in the summary when
- *  the ZARU is off: with ZUPTs only the heading drifts with the gyro bias
+ *  the ZARU is off and there are two strides or more: with ZUPTs only the heading drifts with the gyro bias
  *  while the foot stands (docs/navigation.md, "Zero-velocity update"). */
 #define HX_NAV_LONG_STAND_S 10.0
 

@@ -81,6 +81,36 @@ if /usr/bin/python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exi
 else
     fail "JSON health content"
 fi
+# the ZUPT share is of the aligned frames (from the first aligned frame on:
+# 14,555 of the 16,539 rows), not of the log's frames, and the summary says
+# so (it said "63.3 % of frames with ZUPT", 55.7 % of the log's; a review,
+# 2026-11-29)
+expect_out "^stance            16 strides, 17 stance phases, 63.3 % of aligned frames with ZUPT$" "summary: the ZUPT share is of the aligned frames"
+if "${PY:-/usr/bin/python3}" -c '
+import csv, json, sys
+j = json.load(open(sys.argv[1]))
+rows = list(csv.DictReader(open(sys.argv[2])))
+al = [r for r in rows if float(r["t"]) >= j["aligned_at_s"] - 5e-7]
+share_al = sum(int(r["zupt"]) for r in al) / len(al)
+share_all = sum(int(r["zupt"]) for r in rows) / len(rows)
+sys.exit(0 if len(al) == 14555 and abs(share_al - j["stance_fraction"]) < 1e-9 and abs(share_all - 0.5567) < 1e-4 else 1)' "$T/s.json" "$T/traj.csv"; then
+    pass "JSON stance_fraction: the ZUPT rows' share of the aligned rows (0.6326), not of all rows (0.5567)"; else
+    fail "stance_fraction is not the aligned rows' share"; fi
+# the configuration that ran, in the summary and the JSON (only the JSON's
+# command named it; a review, 2026-11-29)
+if [ "$(sed -n 2p "$T/out")" = "config            profile generic-mems, bias model ar1, detector shoe (adaptive threshold), samples instant, lever on, settling on, ZARU off" ]; then
+    pass "summary: the default configuration on the line after the log"; else fail "config line: $(sed -n 2p "$T/out")"; fi
+json "$T/s.json" "j['profile'] == 'generic-mems' and j['profile_file'] is None and j['bias_model'] == 'ar1' and j['detector'] == 'shoe' and j['adaptive_threshold'] is True and j['samples'] == 'instant' and j['lever'] is True and j['settling'] is True and j['zaru'] is False and j['params'] == []" &&
+    pass "JSON: the default configuration" || fail "JSON configuration: $(cat "$T/pyerr")"
+expect_exit 0 "replay with options" "$H" replay vectors/walk.bin --profile mtx --bias-model off --detector threshold --samples mean --param zaru=1 --param adaptive=0 --param settle=0 --json "$T/cfg.json"
+expect_out "^config            profile mtx, bias model off, detector threshold (fixed threshold), samples mean, lever on, settling off, ZARU on; parameters overridden: zaru=1, adaptive=0, settle=0$" "summary: the options' configuration"
+json "$T/cfg.json" "j['profile'] == 'mtx' and j['profile_file'] is None and j['bias_model'] == 'off' and j['detector'] == 'threshold' and j['adaptive_threshold'] is False and j['samples'] == 'mean' and j['lever'] is True and j['settling'] is False and j['zaru'] is True and j['params'] == ['zaru=1', 'adaptive=0', 'settle=0']" &&
+    pass "JSON: the options' configuration" || fail "JSON options' configuration: $(cat "$T/pyerr")"
+sed 's/^name = .*/name = mysensor/' docs/profiles/generic-mems.profile > "$T/my.profile"
+expect_exit 0 "replay with a profile file" "$H" replay vectors/walk.bin --profile "$T/my.profile" --param lever=0 --json "$T/pf.json"
+expect_out "^config            profile mysensor (file $T/my.profile), bias model ar1, detector shoe (adaptive threshold), samples instant, lever off, settling on, ZARU off; parameters overridden: lever=0$" "summary: a profile file's name and path"
+json "$T/pf.json" "j['profile'] == 'mysensor' and j['profile_file'] == '$T/my.profile' and j['lever'] is False and j['params'] == ['lever=0']" &&
+    pass "JSON: a profile file's name and path" || fail "JSON profile file: $(cat "$T/pyerr")"
 # the ZARU's validation gate (docs/navigation.md, "Zero-velocity update"):
 # on a real walk, whose stance rolls, it skips readings and keeps the ZARU
 # from wrecking the closure that the ungated ZARU ruins
@@ -447,6 +477,24 @@ rm -f "$T/pipe.json"
 rc=$( { "$H" replay vectors/walk.bin --out - --json "$T/pipe.json" 2>"$T/err"; echo $? > "$T/rc"; } | head -1 >/dev/null; cat "$T/rc")
 if [ "$rc" -eq 3 ] && [ -s "$T/pipe.json" ] && grep -q "cannot write" "$T/err"; then pass "--out - into a closed pipe: exit 3, JSON written"; else
     fail "--out - into a closed pipe: exit $rc"; cat "$T/err"; fi
+# the run stops there: the summary and the JSON say so, and the alignment
+# line does not blame the still period (it printed "NOT ALIGNED (no still
+# period long enough: the error above says what was found)" and the JSON
+# "complete": true; a review, 2026-11-29)
+n=$(sed -n 's/^stopped  *after \([0-9][0-9]*\) samples: cannot write the trajectory to standard output (the error above); every figure covers those samples$/\1/p' "$T/err")
+if [ -n "$n" ] && grep -q "^duration .*, $n samples," "$T/err"; then pass "closed pipe: the summary says the run stopped after $n samples"; else
+    fail "closed pipe: no stopped line"; cat "$T/err"; fi
+if grep -q "no still period" "$T/err"; then fail "closed pipe: the still period is blamed"; else pass "closed pipe: no still period blamed"; fi
+grep -q "^alignment  *NOT ALIGNED (the run stopped before a still period long enough was found)$" "$T/err" &&
+    pass "closed pipe: the alignment line says the run stopped" || fail "closed pipe: alignment line: $(grep alignment "$T/err")"
+json "$T/pipe.json" "j['complete'] is False and j['error'] == 'cannot write the trajectory to standard output' and j['health']['samples'] == ${n:-0}" &&
+    pass "closed pipe: JSON complete false, the error, the samples run" || fail "closed pipe JSON: $(head -c 400 "$T/pipe.json")"
+if [ -w /dev/full ]; then
+    expect_exit 3 "--out to a full disk, with --json" "$H" replay vectors/walk.bin --out /dev/full --json "$T/full.json"
+    expect_out_re "^stopped +after [0-9]+ samples: cannot write the trajectory to /dev/full " "full disk: the summary says the run stopped"
+    json "$T/full.json" "j['complete'] is False and j['error'] == 'cannot write the trajectory to /dev/full'" &&
+        pass "full disk: JSON complete false, the error" || fail "full disk JSON: $(head -c 400 "$T/full.json")"
+fi
 
 # --- bad input: a NaN in the middle; the frames before are written, exit 1
 head -2001 vectors/nav/golden/gx2_walk2.csv > "$T/bad.csv"
@@ -480,6 +528,24 @@ head -400 vectors/nav/golden/gx2_walk2.csv > "$T/still.csv"
 expect_exit 0 "still log (no strides)" "$H" replay "$T/still.csv"
 expect_out "no step-to-step path for a percentage" "summary without a path says so"
 if grep -q "nan %" "$T/out"; then fail "summary of a still log prints nan"; else pass "no nan in the summary of a still log"; fi
+expect_out "^stance            0 strides, 1 stance phase, 100.0 % of aligned frames with ZUPT$" "still log: the count nouns agree (1 stance phase)"
+# a stand of 12 s after one stride, the log cut 0.6 s into the next walk:
+# "1 stride", and no note of a stand "between strides" (it printed "0
+# strides, 1 stance phases" and that note on openshoe_square2 with the
+# threshold detector; a review, 2026-11-29); cut 1.3 s in, with two
+# strides, the note is printed
+"$H" sim --motion stand:5,walk:1.5,stand:12,walk:1.5,stand:2 --rate 100 --out "$T/stand.csv" >/dev/null 2>&1
+awk -F, 'NR == 1 || $1 < 18.3' "$T/stand.csv" > "$T/stand1.csv"
+awk -F, 'NR == 1 || $1 < 19.0' "$T/stand.csv" > "$T/stand2.csv"
+expect_exit 0 "a stand after one stride" "$H" replay "$T/stand1.csv" --json "$T/stand1.json"
+expect_out "^stance            1 stride, 2 stance phases, " "one stride: '1 stride'"
+expect_out "1 stride in 18 s" "one stride: '1 stride' in the little-motion note"
+if grep -q "between strides" "$T/out"; then fail "one stride: a stand 'between strides' noted"; else pass "one stride: no stand between strides noted"; fi
+json "$T/stand1.json" "j['strides'] == 1 and j['longest_stand_s'] > 12" && pass "one stride: the JSON keeps the stand (12 s)" ||
+    fail "one stride JSON: $(cat "$T/pyerr")"
+expect_exit 0 "a stand between two strides" "$H" replay "$T/stand2.csv"
+expect_out "^stance            2 strides, 3 stance phases, " "two strides: plural"
+expect_out "^note              the foot stood 12 s between strides (from 5.7 s)" "two strides: the stand between them noted"
 # 12 s of a sensor at rest (deterministic noise): the summary says that it saw no motion
 awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz";
              for (k = 0; k < 1200; k++) printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", k / 100.0,
@@ -838,6 +904,19 @@ if awk '/^set [xy]range/ { r = $3; gsub(/[\[\]]/, "", r) } /^set xrange/ { split
 else
     fail "path plot ranges: $(grep range "$T/gp.txt" | tr '\n' ' ')"
 fi
+# the title names the options that differ from the defaults: plots of one
+# log with --rate 100 or --detector threshold had the same title, the path
+# (a review, 2026-11-29)
+if grep -q -x "set multiplot layout 1,2 title '$T/straight.bin'" "$T/gp.txt"; then pass "plot title: the path alone with the defaults"; else
+    fail "plot title (defaults): $(grep multiplot "$T/gp.txt" | head -1)"; fi
+PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp2.txt" "$H" replay "$T/straight.bin" --rate 100 --detector threshold --bias-model off \
+    --profile mtx --samples mean --param zaru=1 --param settle=0 --plot "$T/straight2.png" --quiet >/dev/null 2>&1
+if grep -q -x "set multiplot layout 1,2 title '$T/straight.bin (--rate 100, --profile mtx, --bias-model off, --detector threshold, --samples mean, --param zaru=1, --param settle=0)'" "$T/gp2.txt"; then
+    pass "plot title: the non-default options"; else fail "plot title (options): $(grep multiplot "$T/gp2.txt" | head -1)"; fi
+PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp3.txt" "$H" replay "$T/straight.bin" --profile generic-mems --detector shoe --bias-model ar1 \
+    --samples instant --plot "$T/straight3.png" --quiet >/dev/null 2>&1
+if grep -q -x "set multiplot layout 1,2 title '$T/straight.bin'" "$T/gp3.txt"; then pass "plot title: defaults given explicitly are left out"; else
+    fail "plot title (explicit defaults): $(grep multiplot "$T/gp3.txt" | head -1)"; fi
 # gnuplot failing partway left its half-drawn PNG behind beside "failed to
 # write" (the plots review): the file it started is removed, and said; a file
 # that was there before and that gnuplot never opened is left alone
@@ -861,6 +940,8 @@ awk -F, 'NR == 900 { $2 = "abc" } { print }' OFS=, "$T/cl.csv" >"$T/cl_bad.csv"
 expect_exit 1 "a bad line half way" "$H" replay "$T/cl_bad.csv" --quiet --json "$T/cl_bad.json"
 json "$T/cl_bad.json" 'j["complete"] is False and "cl_bad.csv:900:" in j["error"]' &&
     pass "JSON: complete false, the error with its line" || fail "cut JSON: $(cat "$T/pyerr")"
+expect_exit 1 "a bad line half way, the summary" "$H" replay "$T/cl_bad.csv"
+expect_out "^stopped  *after 898 samples, at the input error above; every figure covers those samples$" "cut log: the summary says where the run stopped"
 expect_exit 0 "a whole log" "$H" replay "$T/cl.csv" --quiet --json "$T/cl.json"
 json "$T/cl.json" 'j["complete"] is True and "error" not in j' && pass "JSON: complete true, no error" ||
     fail "whole JSON: $(cat "$T/pyerr")"
