@@ -1145,6 +1145,7 @@ static void print_table(const run_t *R, const chan_t *ch)
 }
 
 static int ar1_resolved(const run_t *R, const chan_t *ch);
+static int ar1_too_short(const run_t *R, const chan_t *ch);
 static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m);
 
 static void print_params(const run_t *R)
@@ -1182,7 +1183,12 @@ static void print_params(const run_t *R)
             }
             if (!ar1_resolved(R, ch)) {
                 /* the JSON's ar1_identified = false: not the bias a profile takes */
-                printf("  AR(1) not resolved by the curve: see below");
+                if (ar1_too_short(R, ch)) {
+                    printf("  AR(1) not resolved by the curve (T below the %.0f-sample floor): see below",
+                           ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / HX_GM_PEAK_TAU));
+                } else {
+                    printf("  AR(1) not resolved by the curve: see below");
+                }
             }
             printf("\n");
         } else {
@@ -1725,7 +1731,11 @@ static int ar1_identified(const run_t *R, const chan_t *ch, double tau_long_s)
     const double bump_s = 1.89 * f->gm_tau_s;
     int ar1_seen = 0, white_seen = 0;
     size_t j;
-    if (!ch->id.fit_ok || !(bump_s <= tau_long_s) || !(bump_s >= 1.0 / R->rate_hz)) {
+    /* a bump within two decades of one sample is the sensor's own filtering,
+     * not a bias (HX_ALLAN_AR1_MIN_BUMP_SAMPLES): 10 minutes of ADIS16405
+     * log 1 fitted gx with T = 1 sample and a white noise of 0.0279
+     * deg/s/sqrt(Hz) for the log's 0.040 (a user review, 2026-11-29) */
+    if (!ch->id.fit_ok || !(bump_s <= tau_long_s) || !(bump_s * R->rate_hz >= HX_ALLAN_AR1_MIN_BUMP_SAMPLES)) {
         return 0;
     }
     w.gm_sigma = 0.0; /* the model without its AR(1) part */
@@ -1767,6 +1777,16 @@ static double tau_long_of(const run_t *R, const chan_t *ch)
 static int ar1_resolved(const run_t *R, const chan_t *ch)
 {
     return ar1_identified(R, ch, tau_long_of(R, ch));
+}
+
+/* Whether the fit's AR(1) is refused for its correlation time: its bump
+ * lies from one sample up to HX_ALLAN_AR1_MIN_BUMP_SAMPLES, where the
+ * sensor's own filtering shapes the curve (a bump under one sample is
+ * white noise in disguise, refused as unresolved). */
+static int ar1_too_short(const run_t *R, const chan_t *ch)
+{
+    const double bump = HX_GM_PEAK_TAU * ch->id.fit.gm_tau_s * R->rate_hz;
+    return ch->id.fit_ok && ch->id.fit.gm_sigma > 0.0 && bump >= 1.0 && bump < HX_ALLAN_AR1_MIN_BUMP_SAMPLES;
 }
 
 /* The noise model a --profile takes for one channel (docs/allan.md, "When
@@ -1845,11 +1865,22 @@ static int write_profile(const run_t *R, const char *path, const char *name)
             if (ch->id.fit_ok) {
                 snprintf(fitw, sizeof fitw, "not the fit's %.3g", ch->id.fit.white);
             }
+            if (ar1_too_short(R, ch)) {
+                hx_warn(CMD, "%s: the fit's AR(1) of %s has T = %.3g s (%.3g samples), under the floor of %.0f "
+                             "samples (%.3g s), the taus where the sensor's own filtering shapes the Allan curve: "
+                             "not a bias the profile takes (docs/allan.md); the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV at 1 s; "
+                             "%s) and the bound T = %.3g s, sigma = %.3g %s from the Allan minimum at %.3g s",
+                        path, ch->name, ch->id.fit.gm_tau_s, ch->id.fit.gm_tau_s * R->rate_hz,
+                        ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / HX_GM_PEAK_TAU),
+                        HX_ALLAN_AR1_MIN_BUMP_SAMPLES / HX_GM_PEAK_TAU / R->rate_hz, m.white, ch->unit, fitw,
+                        m.gm_tau_s, m.gm_sigma, ch->unit, (double)ch->id.paper.t_bs_s);
+            } else {
             hx_warn(CMD, "%s: the AR(1) bias of %s is not identifiable within the record (longest tau %.3g s, "
                          "Allan minimum at %.3g s); the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV "
                          "at 1 s; %s) and the bound T = %.3g s, sigma = %.3g %s from that minimum",
                     path, ch->name, tau_long_s, (double)ch->id.paper.t_bs_s, m.white, ch->unit, fitw, m.gm_tau_s,
                     m.gm_sigma, ch->unit);
+            }
         }
         if (k < 3) {
             p.accel_noise_mps2_rthz[k] = (fnav_real_t)(m.white * si);
