@@ -1155,27 +1155,31 @@ static void print_params(const run_t *R)
            "sigma_bias in unit; quality: RMS of log10 ADEV model/measured over tau <= %.3g s, and model/measured\n"
            "at the measured minimum):\n",
            R->rate_hz, tau_max_samples(R) / R->rate_hz);
-    printf("%-6s %-6s | %-54s | %-54s\n", "", "", "paper III.C as written (eqs. 5-6, sigma_bias per eq. 4)",
+    /* tau is in samples, as in the paper's tables, and the column says so:
+     * right after tables whose tau_s is in seconds, "tau 1" read as 1 s
+     * (a user review, 2026-11-29) */
+    printf("%-6s %-6s | %-57s | %-57s\n", "", "", "paper III.C as written (eqs. 5-6, sigma_bias per eq. 4)",
            "corrected: LSQ fit of white + AR(1) Allan variance");
-    printf("%-6s %-6s | %10s %9s %10s %10s %5s %6s | %10s %9s %10s %10s %5s %6s\n", "chan", "unit", "sigma_v", "tau",
-           "sigma_bias", "BS", "rms", "@min", "sigma_v", "tau", "sigma_bias", "peak", "rms", "@min");
+    printf("%-6s %-6s | %10s %12s %10s %10s %5s %6s | %10s %12s %10s %10s %5s %6s\n", "chan", "unit", "sigma_v",
+           "tau[samples]", "sigma_bias", "BS", "rms", "@min", "sigma_v", "tau[samples]", "sigma_bias", "peak", "rms",
+           "@min");
     for (i = 0; i < R->nch; i++) {
         const chan_t *ch = &R->ch[i];
         const hx_allan_ident_t *id = &ch->id;
         printf("%-6s %-6s |", ch->label, ch->unit);
         if (ch->id_ok && id->paper_ok) {
-            printf(" %10.3g %9.0f %10.3g %10.3g %5.2f %6.3f |", (double)id->paper.sigma_v,
+            printf(" %10.3g %12.0f %10.3g %10.3g %5.2f %6.3f |", (double)id->paper.sigma_v,
                    (double)id->paper.tau_samples, (double)id->paper.sigma_bias, (double)id->paper.bs,
                    id->paper_quality.rms_log10, id->paper_quality.ratio_at_min);
         } else {
-            printf(" %-54s |", ch->constant ? "n/a (constant channel)" : "n/a (1 s or the minimum not covered)");
+            printf(" %-57s |", ch->constant ? "n/a (constant channel)" : "n/a (1 s or the minimum not covered)");
         }
         if (ch->id_ok && id->fit_ok) {
             const double tau_samples = id->fit.gm_tau_s * R->rate_hz;
             /* ADEV peak of the AR(1) alone (hx_allan_ident.h); a tau of a
              * fit the curve does not resolve can be any size (1.2e8 samples
              * on 10 s of white noise), %.0f would push the columns aside */
-            printf(tau_samples < 1e9 ? " %10.3g %9.0f" : " %10.3g %9.3g", id->fit.white, tau_samples);
+            printf(tau_samples < 1e9 ? " %10.3g %12.0f" : " %10.3g %12.3g", id->fit.white, tau_samples);
             printf(" %10.3g %10.3g %5.2f %6.3f", id->fit.gm_sigma, HX_GM_PEAK_RATIO * id->fit.gm_sigma,
                    id->fit_quality.rms_log10, id->fit_quality.ratio_at_min);
             if (id->fit.quant > 0.0 || id->fit.rrw > 0.0) {

@@ -340,6 +340,10 @@ print(bad, marked)
 sys.exit(1 if bad or marked == 0 else 0)
 PYEOF
 then pass "unresolved fits marked in the parameter table, columns kept"; else fail "unresolved fits in the table"; fi
+# the parameter table's tau is in samples, as in the paper's tables, right after tables whose tau_s is in seconds:
+# its header said "tau", and `tau 1` read as 1 s (a user review, 2026-11-29); both halves now say tau[samples]
+expect_out "^chan   unit   |    sigma_v tau\[samples\] sigma_bias         BS   rms   @min |    sigma_v tau\[samples\] sigma_bias       peak   rms   @min$" \
+    "the parameter table's tau columns say they are in samples"
 # ... and the numbers the profile holds for them were nowhere but in the profile: the table and the JSON gave the
 # fit's (30 minutes of ADIS16405 log 1: gx sigma_v 0.0039 deg/s/sqrt(Hz), the profile 0.0408) beside a mark or
 # ar1_identified false. Now a line under the table and the JSON's profile object give them, checked here against
