@@ -48,8 +48,9 @@ static const hx_opt_t k_opts[] = {
                      "--estimator exact)", 0 },
     { "--channels", "LIST", "channels of a log to analyse, e.g. gx,gy,gz (default ax,ay,az,gx,gy,gz)", 0 },
     { "--per-octave", "N", "tau points per octave: 1, 2 or 4 (default 4)", 0 },
-    { "--max-tau-frac", "F", "largest tau identified, tabulated and plotted, as a fraction of the "
-                             "record (default 0.1, the paper's 10 %)", 0 },
+    { "--max-tau-frac", "F", "largest tau identified, printed and plotted, as a fraction of the record "
+                             "(default 0.1, the paper's 10 %); --out and --json tabulate every tau with terms, "
+                             "beyond it too", 0 },
     { "--fit-extra", NULL, "corrected fit also with quantisation and rate random walk terms", 0 },
     { "--no-sim", NULL, "skip the simulation check (paper Fig. 7)", 0 },
     { "--sim-samples", "N", "samples per simulation (default: as many as the input)", 0 },

@@ -344,6 +344,14 @@ then pass "unresolved fits marked in the parameter table, columns kept"; else fa
 # its header said "tau", and `tau 1` read as 1 s (a user review, 2026-11-29); both halves now say tau[samples]
 expect_out "^chan   unit   |    sigma_v tau\[samples\] sigma_bias         BS   rms   @min |    sigma_v tau\[samples\] sigma_bias       peak   rms   @min$" \
     "the parameter table's tau columns say they are in samples"
+# --help said --max-tau-frac bounds the tau "identified, tabulated and plotted", yet --out and --json tabulate every
+# tau with terms, beyond it (the whole ADIS16405 log 1: to 4587.52 s with 2 terms for tau_max_s 1000; the allantools
+# check above relies on them); the help now says so, and the JSON does go beyond tau_max_s
+json "$T/w10s.json" "max(r['tau_s'] for r in j['channels'][0]['table']) > 2 * j['tau_max_s']" &&
+    pass "the JSON tabulates tau beyond tau_max_s" || fail "the JSON stops at tau_max_s"
+expect_exit 0 "allan --help" "$H" allan --help
+expect_out "largest tau identified, printed and plotted, as a fraction of the record (default 0.1, the paper's 10 %); --out and --json tabulate every tau with terms, beyond it too" \
+    "--help says what --out and --json tabulate beyond --max-tau-frac"
 # ... and the numbers the profile holds for them were nowhere but in the profile: the table and the JSON gave the
 # fit's (30 minutes of ADIS16405 log 1: gx sigma_v 0.0039 deg/s/sqrt(Hz), the profile 0.0408) beside a mark or
 # ar1_identified false. Now a line under the table and the JSON's profile object give them, checked here against
