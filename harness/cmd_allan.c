@@ -1831,6 +1831,41 @@ static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m)
     return 1;
 }
 
+/* Why the fit's AR(1) is not what the profile takes (ar1_resolved() false),
+ * naming the test that failed and the limit it used: "longest tau 287 s"
+ * beside a table that said "tau <= 60 s" left the reader to guess which
+ * limit the identification keeps to (a user review, 2026-11-29). */
+static void ar1_refusal(const run_t *R, const chan_t *ch, double tau_long_s, char *why, size_t n)
+{
+    const double fit_s = tau_max_samples(R) / R->rate_hz, bump_s = HX_GM_PEAK_TAU * ch->id.fit.gm_tau_s;
+    if (ar1_too_short(R, ch)) {
+        snprintf(why, n, "the fit's AR(1) of %s has T = %.3g s (%.3g samples), under the floor of %.0f samples "
+                         "(%.3g s), the taus where the sensor's own filtering shapes the Allan curve: not a bias the "
+                         "profile takes (docs/allan.md)",
+                 ch->name, ch->id.fit.gm_tau_s, ch->id.fit.gm_tau_s * R->rate_hz,
+                 ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / HX_GM_PEAK_TAU),
+                 HX_ALLAN_AR1_MIN_BUMP_SAMPLES / HX_GM_PEAK_TAU / R->rate_hz);
+    } else if (!ch->id.fit_ok) {
+        snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (no fit within the fitted "
+                         "range, tau <= %.3g s, --max-tau-frac)",
+                 ch->name, fit_s);
+    } else if (bump_s > tau_long_s) {
+        snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (the fit's bump, 1.89 T = "
+                         "%.3g s, lies beyond the longest tau with data, %.3g s; the fit itself uses tau <= %.3g s, "
+                         "--max-tau-frac)",
+                 ch->name, bump_s, tau_long_s, fit_s);
+    } else if (bump_s * R->rate_hz < 1.0) {
+        snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (the fit's T, %.3g s, is "
+                         "under a sample)",
+                 ch->name, ch->id.fit.gm_tau_s);
+    } else {
+        snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (the fit's AR(1) part, or "
+                         "its white part, rises above the rest of the model by no more than the measurement's "
+                         "spread at every tau <= %.3g s, the fitted range of --max-tau-frac)",
+                 ch->name, fit_s);
+    }
+}
+
 static int write_profile(const run_t *R, const char *path, const char *name)
 {
     fnav_profile_t p;
@@ -1865,27 +1900,16 @@ static int write_profile(const run_t *R, const char *path, const char *name)
         }
         fallback[k] = bound;
         if (bound) {
-            char fitw[48] = "no fit";
+            char fitw[48] = "no fit", why[400];
             nfallback++;
             if (ch->id.fit_ok) {
                 snprintf(fitw, sizeof fitw, "not the fit's %.3g", ch->id.fit.white);
             }
-            if (ar1_too_short(R, ch)) {
-                hx_warn(CMD, "%s: the fit's AR(1) of %s has T = %.3g s (%.3g samples), under the floor of %.0f "
-                             "samples (%.3g s), the taus where the sensor's own filtering shapes the Allan curve: "
-                             "not a bias the profile takes (docs/allan.md); the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV at 1 s; "
-                             "%s) and the bound T = %.3g s, sigma = %.3g %s from the Allan minimum at %.3g s",
-                        path, ch->name, ch->id.fit.gm_tau_s, ch->id.fit.gm_tau_s * R->rate_hz,
-                        ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / HX_GM_PEAK_TAU),
-                        HX_ALLAN_AR1_MIN_BUMP_SAMPLES / HX_GM_PEAK_TAU / R->rate_hz, m.white, ch->unit, fitw,
-                        m.gm_tau_s, m.gm_sigma, ch->unit, (double)ch->id.paper.t_bs_s);
-            } else {
-            hx_warn(CMD, "%s: the AR(1) bias of %s is not identifiable within the record (longest tau %.3g s, "
-                         "Allan minimum at %.3g s); the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV "
-                         "at 1 s; %s) and the bound T = %.3g s, sigma = %.3g %s from that minimum",
-                    path, ch->name, tau_long_s, (double)ch->id.paper.t_bs_s, m.white, ch->unit, fitw, m.gm_tau_s,
-                    m.gm_sigma, ch->unit);
-            }
+            ar1_refusal(R, ch, tau_long_s, why, sizeof why);
+            hx_warn(CMD, "%s: %s; the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV at 1 s; %s) and the "
+                         "bound T = %.3g s, sigma = %.3g %s from the Allan minimum at %.3g s",
+                    path, why, m.white, ch->unit, fitw, m.gm_tau_s, m.gm_sigma, ch->unit,
+                    (double)ch->id.paper.t_bs_s);
         }
         if (k < 3) {
             p.accel_noise_mps2_rthz[k] = (fnav_real_t)(m.white * si);
