@@ -1214,7 +1214,7 @@ static void print_params(const run_t *R)
             printf("AR(1) not identified (the JSON's ar1_identified false): the corrected sigma_v, tau and sigma_bias "
                    "of these\nchannels are no model of the sensor. %s instead the paper's sigma_v (the ADEV at 1 "
                    "s) and the\nGauss-Markov bound from the Allan minimum (T = t_BS / 1.89, sigma_bias = BS / "
-                   "0.6174; docs/allan.md):\n",
+                   "0.6174: the true T may be longer; docs/allan.md):\n",
                    R->is_series ? "A log's --profile would hold" : "--profile holds");
         }
         printf("%-6s %-6s | %s: sigma_v %.3g, tau %.0f samples (%.3g s), sigma_bias %.3g\n", ch->label, ch->unit,
@@ -1906,8 +1906,13 @@ static int write_profile(const run_t *R, const char *path, const char *name)
                 snprintf(fitw, sizeof fitw, "not the fit's %.3g", ch->id.fit.white);
             }
             ar1_refusal(R, ch, tau_long_s, why, sizeof why);
+            /* which way it bounds: "bound T = 173 s" on a channel whose T is
+             * 720 s read as an upper bound (a user review, 2026-11-29); it is
+             * the AR(1) whose bump sits on the minimum, no bound on sigma */
             hx_warn(CMD, "%s: %s; the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV at 1 s; %s) and the "
-                         "bound T = %.3g s, sigma = %.3g %s from the Allan minimum at %.3g s",
+                         "Gauss-Markov bound T = %.3g s, sigma = %.3g %s, whose Allan bump sits on the minimum at "
+                         "%.3g s (T from the minimum's position: the true T may be longer; no upper bound on the "
+                         "bias, docs/allan.md)",
                     path, why, m.white, ch->unit, fitw, m.gm_tau_s, m.gm_sigma, ch->unit,
                     (double)ch->id.paper.t_bs_s);
         }
