@@ -141,6 +141,7 @@ typedef struct {
     double gyro_max;         /* a log's largest |rate| on any axis (units check) */
     int units_bad;           /* the log is not in SI units (hx_units_problem; units_msg says why) */
     char units_msg[768];
+    int time_unit_warned;    /* slow_check() warned that the time stamps look like ms, us or ns */
     /* motion check: one-second windows of the log (sums for the spread of
      * the rate and of |f| within each) */
     double win_sum[4], win_sq[4]; /* gx, gy, gz, |f| */
@@ -584,12 +585,14 @@ static void disturbed_check(const run_t *R, const char *path)
  * nanoseconds explains (20 Hz to 100 kHz once divided) is warned about:
  * 30 minutes of ADIS16405 log 1 with t in ms read as 0.1 Hz without a word,
  * tau 1000 times and sigma_v 31.6 times too large (the static review). */
-static void slow_check(const char *path, double rate_hz)
+static int slow_check(const char *path, double rate_hz)
 {
     char msg[320];
     if (hx_time_unit_hint(rate_hz, msg, sizeof msg)) {
         hx_warn(CMD, "%s: %s; tau, sigma_v and the profile are read at %.3g Hz", path, msg, rate_hz);
+        return 1;
     }
+    return 0;
 }
 
 static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_opt)
@@ -709,7 +712,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         R->units_bad = hx_units_problem(R->moving ? 0.0 : sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]), 9.80665,
                                         R->gyro_max, 0.0, R->units_msg, sizeof R->units_msg);
         if (!(rate_opt > 0.0)) {
-            slow_check(path, R->rate_hz);
+            R->time_unit_warned = slow_check(path, R->rate_hz);
         }
     }
     return rc;
@@ -1831,6 +1834,24 @@ static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m)
     return 1;
 }
 
+/* The error for a channel with no identification at all. After the
+ * time-unit warning (stamps in ms read as 0.1 Hz) that is the likely cause:
+ * below 1 Hz the shortest tau is past the 1 s the white noise is read at,
+ * and "too little data?" sent the user to the record's length (a user
+ * review, 2026-11-29). */
+static void no_identification(const run_t *R, const char *path, const chan_t *ch)
+{
+    if (R->time_unit_warned) {
+        hx_error(CMD, "%s: no identification for %s, most likely because of the time stamps' unit (the warning "
+                      "above): read at %.3g Hz, the shortest tau, %.3g s, lies past the 1 s the white noise is read "
+                      "at; convert the time column to seconds (or give --rate) and run allan again; profile not "
+                      "written",
+                 path, ch->name, R->rate_hz, 1.0 / R->rate_hz);
+    } else {
+        hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
+    }
+}
+
 /* Why the fit's AR(1) is not what the profile takes (ar1_resolved() false),
  * naming the test that failed and the limit it used: "longest tau 287 s"
  * beside a table that said "tau <= 60 s" left the reader to guess which
@@ -1889,13 +1910,13 @@ static int write_profile(const run_t *R, const char *path, const char *name)
             return -2;
         }
         if (!ch->id_ok || (!ch->id.fit_ok && !ch->id.paper_ok)) {
-            hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
+            no_identification(R, path, ch);
             return -2;
         }
         tau_long_s = tau_long_of(R, ch);
         bound = profile_model(R, ch, &m);
         if (bound < 0) {
-            hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
+            no_identification(R, path, ch);
             return -2;
         }
         fallback[k] = bound;

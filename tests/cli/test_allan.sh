@@ -697,6 +697,14 @@ awk '{ if (NR == 1) print; else { split($0, v, ","); v[1] = v[1] * 1000; out = v
 expect_exit 0 "a static log with its time in milliseconds" "$H" allan "$T/touch_ms.csv" --no-sim --quiet
 expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: divide by 1000)" \
     "time in milliseconds is named"
+# ... and with --profile the warning was followed by "no identification for ax (too little data?)", sending the user
+# to the record's length; the error now names the time unit as the likely cause (a user review, 2026-11-29)
+expect_exit 1 "a static log with its time in milliseconds, a profile" "$H" allan "$T/touch_ms.csv" --no-sim --quiet \
+    --profile "$T/touch_ms.profile"
+expect_err "touch_ms.profile: no identification for ax, most likely because of the time stamps' unit (the warning above): read at 0.1 Hz, the shortest tau, 10 s, lies past the 1 s the white noise is read at; convert the time column to seconds (or give --rate) and run allan again; profile not written" \
+    "the profile error names the time unit as the likely cause"
+if grep -q "too little data" "$T/err"; then fail "the time-unit case still blames too little data"; else
+    pass "the time-unit case does not blame too little data"; fi
 expect_exit 0 "the same log in seconds" "$H" allan "$T/touch0.csv" --no-sim --quiet
 if grep -q "apart" "$T/err"; then fail "a 100 Hz log in seconds asked about its time unit: $(cat "$T/err")"; else
     pass "a 100 Hz log in seconds is not asked about its time unit"; fi
