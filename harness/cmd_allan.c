@@ -1193,7 +1193,7 @@ static void print_params(const run_t *R)
                 /* the JSON's ar1_identified = false: not the bias a profile takes */
                 if (ar1_too_short(R, ch)) {
                     printf("  AR(1) not resolved by the curve (T below the %.0f-sample floor): see below",
-                           ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / HX_GM_PEAK_TAU));
+                           ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / 1.89));
                 } else {
                     printf("  AR(1) not resolved by the curve: see below");
                 }
@@ -1793,7 +1793,7 @@ static int ar1_resolved(const run_t *R, const chan_t *ch)
  * white noise in disguise, refused as unresolved). */
 static int ar1_too_short(const run_t *R, const chan_t *ch)
 {
-    const double bump = HX_GM_PEAK_TAU * ch->id.fit.gm_tau_s * R->rate_hz;
+    const double bump = 1.89 * ch->id.fit.gm_tau_s * R->rate_hz; /* as ar1_identified() */
     return ch->id.fit_ok && ch->id.fit.gm_sigma > 0.0 && bump >= 1.0 && bump < HX_ALLAN_AR1_MIN_BUMP_SAMPLES;
 }
 
@@ -1858,14 +1858,13 @@ static void no_identification(const run_t *R, const char *path, const chan_t *ch
  * limit the identification keeps to (a user review, 2026-11-29). */
 static void ar1_refusal(const run_t *R, const chan_t *ch, double tau_long_s, char *why, size_t n)
 {
-    const double fit_s = tau_max_samples(R) / R->rate_hz, bump_s = HX_GM_PEAK_TAU * ch->id.fit.gm_tau_s;
+    const double fit_s = tau_max_samples(R) / R->rate_hz, bump_s = 1.89 * ch->id.fit.gm_tau_s;
     if (ar1_too_short(R, ch)) {
         snprintf(why, n, "the fit's AR(1) of %s has T = %.3g s (%.3g samples), under the floor of %.0f samples "
                          "(%.3g s), the taus where the sensor's own filtering shapes the Allan curve: not a bias the "
                          "profile takes (docs/allan.md)",
                  ch->name, ch->id.fit.gm_tau_s, ch->id.fit.gm_tau_s * R->rate_hz,
-                 ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / HX_GM_PEAK_TAU),
-                 HX_ALLAN_AR1_MIN_BUMP_SAMPLES / HX_GM_PEAK_TAU / R->rate_hz);
+                 ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / 1.89), HX_ALLAN_AR1_MIN_BUMP_SAMPLES / 1.89 / R->rate_hz);
     } else if (!ch->id.fit_ok) {
         snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (no fit within the fitted "
                          "range, tau <= %.3g s, --max-tau-frac)",
