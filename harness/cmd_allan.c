@@ -48,8 +48,9 @@ static const hx_opt_t k_opts[] = {
                      "--estimator exact)", 0 },
     { "--channels", "LIST", "channels of a log to analyse, e.g. gx,gy,gz (default ax,ay,az,gx,gy,gz)", 0 },
     { "--per-octave", "N", "tau points per octave: 1, 2 or 4 (default 4)", 0 },
-    { "--max-tau-frac", "F", "largest tau identified, tabulated and plotted, as a fraction of the "
-                             "record (default 0.1, the paper's 10 %)", 0 },
+    { "--max-tau-frac", "F", "largest tau identified, printed and plotted, as a fraction of the record "
+                             "(default 0.1, the paper's 10 %); --out and --json tabulate every tau with terms, "
+                             "beyond it too", 0 },
     { "--fit-extra", NULL, "corrected fit also with quantisation and rate random walk terms", 0 },
     { "--no-sim", NULL, "skip the simulation check (paper Fig. 7)", 0 },
     { "--sim-samples", "N", "samples per simulation (default: as many as the input)", 0 },
@@ -140,6 +141,7 @@ typedef struct {
     double gyro_max;         /* a log's largest |rate| on any axis (units check) */
     int units_bad;           /* the log is not in SI units (hx_units_problem; units_msg says why) */
     char units_msg[768];
+    int time_unit_warned;    /* slow_check() warned that the time stamps look like ms, us or ns */
     /* motion check: one-second windows of the log (sums for the spread of
      * the rate and of |f| within each) */
     double win_sum[4], win_sq[4]; /* gx, gy, gz, |f| */
@@ -583,12 +585,14 @@ static void disturbed_check(const run_t *R, const char *path)
  * nanoseconds explains (20 Hz to 100 kHz once divided) is warned about:
  * 30 minutes of ADIS16405 log 1 with t in ms read as 0.1 Hz without a word,
  * tau 1000 times and sigma_v 31.6 times too large (the static review). */
-static void slow_check(const char *path, double rate_hz)
+static int slow_check(const char *path, double rate_hz)
 {
     char msg[320];
     if (hx_time_unit_hint(rate_hz, msg, sizeof msg)) {
         hx_warn(CMD, "%s: %s; tau, sigma_v and the profile are read at %.3g Hz", path, msg, rate_hz);
+        return 1;
     }
+    return 0;
 }
 
 static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_opt)
@@ -708,7 +712,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         R->units_bad = hx_units_problem(R->moving ? 0.0 : sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]), 9.80665,
                                         R->gyro_max, 0.0, R->units_msg, sizeof R->units_msg);
         if (!(rate_opt > 0.0)) {
-            slow_check(path, R->rate_hz);
+            R->time_unit_warned = slow_check(path, R->rate_hz);
         }
     }
     return rc;
@@ -1145,6 +1149,7 @@ static void print_table(const run_t *R, const chan_t *ch)
 }
 
 static int ar1_resolved(const run_t *R, const chan_t *ch);
+static int ar1_too_short(const run_t *R, const chan_t *ch);
 static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m);
 
 static void print_params(const run_t *R)
@@ -1154,27 +1159,31 @@ static void print_params(const run_t *R)
            "sigma_bias in unit; quality: RMS of log10 ADEV model/measured over tau <= %.3g s, and model/measured\n"
            "at the measured minimum):\n",
            R->rate_hz, tau_max_samples(R) / R->rate_hz);
-    printf("%-6s %-6s | %-54s | %-54s\n", "", "", "paper III.C as written (eqs. 5-6, sigma_bias per eq. 4)",
+    /* tau is in samples, as in the paper's tables, and the column says so:
+     * right after tables whose tau_s is in seconds, "tau 1" read as 1 s
+     * (a user review, 2026-11-29) */
+    printf("%-6s %-6s | %-57s | %-57s\n", "", "", "paper III.C as written (eqs. 5-6, sigma_bias per eq. 4)",
            "corrected: LSQ fit of white + AR(1) Allan variance");
-    printf("%-6s %-6s | %10s %9s %10s %10s %5s %6s | %10s %9s %10s %10s %5s %6s\n", "chan", "unit", "sigma_v", "tau",
-           "sigma_bias", "BS", "rms", "@min", "sigma_v", "tau", "sigma_bias", "peak", "rms", "@min");
+    printf("%-6s %-6s | %10s %12s %10s %10s %5s %6s | %10s %12s %10s %10s %5s %6s\n", "chan", "unit", "sigma_v",
+           "tau[samples]", "sigma_bias", "BS", "rms", "@min", "sigma_v", "tau[samples]", "sigma_bias", "peak", "rms",
+           "@min");
     for (i = 0; i < R->nch; i++) {
         const chan_t *ch = &R->ch[i];
         const hx_allan_ident_t *id = &ch->id;
         printf("%-6s %-6s |", ch->label, ch->unit);
         if (ch->id_ok && id->paper_ok) {
-            printf(" %10.3g %9.0f %10.3g %10.3g %5.2f %6.3f |", (double)id->paper.sigma_v,
+            printf(" %10.3g %12.0f %10.3g %10.3g %5.2f %6.3f |", (double)id->paper.sigma_v,
                    (double)id->paper.tau_samples, (double)id->paper.sigma_bias, (double)id->paper.bs,
                    id->paper_quality.rms_log10, id->paper_quality.ratio_at_min);
         } else {
-            printf(" %-54s |", ch->constant ? "n/a (constant channel)" : "n/a (1 s or the minimum not covered)");
+            printf(" %-57s |", ch->constant ? "n/a (constant channel)" : "n/a (1 s or the minimum not covered)");
         }
         if (ch->id_ok && id->fit_ok) {
             const double tau_samples = id->fit.gm_tau_s * R->rate_hz;
             /* ADEV peak of the AR(1) alone (hx_allan_ident.h); a tau of a
              * fit the curve does not resolve can be any size (1.2e8 samples
              * on 10 s of white noise), %.0f would push the columns aside */
-            printf(tau_samples < 1e9 ? " %10.3g %9.0f" : " %10.3g %9.3g", id->fit.white, tau_samples);
+            printf(tau_samples < 1e9 ? " %10.3g %12.0f" : " %10.3g %12.3g", id->fit.white, tau_samples);
             printf(" %10.3g %10.3g %5.2f %6.3f", id->fit.gm_sigma, HX_GM_PEAK_RATIO * id->fit.gm_sigma,
                    id->fit_quality.rms_log10, id->fit_quality.ratio_at_min);
             if (id->fit.quant > 0.0 || id->fit.rrw > 0.0) {
@@ -1182,7 +1191,12 @@ static void print_params(const run_t *R)
             }
             if (!ar1_resolved(R, ch)) {
                 /* the JSON's ar1_identified = false: not the bias a profile takes */
-                printf("  AR(1) not resolved by the curve: see below");
+                if (ar1_too_short(R, ch)) {
+                    printf("  AR(1) not resolved by the curve (T below the %.0f-sample floor): see below",
+                           ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / 1.89));
+                } else {
+                    printf("  AR(1) not resolved by the curve: see below");
+                }
             }
             printf("\n");
         } else {
@@ -1203,7 +1217,7 @@ static void print_params(const run_t *R)
             printf("AR(1) not identified (the JSON's ar1_identified false): the corrected sigma_v, tau and sigma_bias "
                    "of these\nchannels are no model of the sensor. %s instead the paper's sigma_v (the ADEV at 1 "
                    "s) and the\nGauss-Markov bound from the Allan minimum (T = t_BS / 1.89, sigma_bias = BS / "
-                   "0.6174; docs/allan.md):\n",
+                   "0.6174: the true T may be longer; docs/allan.md):\n",
                    R->is_series ? "A log's --profile would hold" : "--profile holds");
         }
         printf("%-6s %-6s | %s: sigma_v %.3g, tau %.0f samples (%.3g s), sigma_bias %.3g\n", ch->label, ch->unit,
@@ -1725,7 +1739,11 @@ static int ar1_identified(const run_t *R, const chan_t *ch, double tau_long_s)
     const double bump_s = 1.89 * f->gm_tau_s;
     int ar1_seen = 0, white_seen = 0;
     size_t j;
-    if (!ch->id.fit_ok || !(bump_s <= tau_long_s) || !(bump_s >= 1.0 / R->rate_hz)) {
+    /* a bump within two decades of one sample is the sensor's own filtering,
+     * not a bias (HX_ALLAN_AR1_MIN_BUMP_SAMPLES): 10 minutes of ADIS16405
+     * log 1 fitted gx with T = 1 sample and a white noise of 0.0279
+     * deg/s/sqrt(Hz) for the log's 0.040 (a user review, 2026-11-29) */
+    if (!ch->id.fit_ok || !(bump_s <= tau_long_s) || !(bump_s * R->rate_hz >= HX_ALLAN_AR1_MIN_BUMP_SAMPLES)) {
         return 0;
     }
     w.gm_sigma = 0.0; /* the model without its AR(1) part */
@@ -1769,6 +1787,16 @@ static int ar1_resolved(const run_t *R, const chan_t *ch)
     return ar1_identified(R, ch, tau_long_of(R, ch));
 }
 
+/* Whether the fit's AR(1) is refused for its correlation time: its bump
+ * lies from one sample up to HX_ALLAN_AR1_MIN_BUMP_SAMPLES, where the
+ * sensor's own filtering shapes the curve (a bump under one sample is
+ * white noise in disguise, refused as unresolved). */
+static int ar1_too_short(const run_t *R, const chan_t *ch)
+{
+    const double bump = 1.89 * ch->id.fit.gm_tau_s * R->rate_hz; /* as ar1_identified() */
+    return ch->id.fit_ok && ch->id.fit.gm_sigma > 0.0 && bump >= 1.0 && bump < HX_ALLAN_AR1_MIN_BUMP_SAMPLES;
+}
+
 /* The noise model a --profile takes for one channel (docs/allan.md, "When
  * the AR(1) part is not identifiable"), in the channel's display unit:
  * returns 0 with the fit where its AR(1) part is identified, 1 with the
@@ -1806,6 +1834,58 @@ static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m)
     return 1;
 }
 
+/* The error for a channel with no identification at all. After the
+ * time-unit warning (stamps in ms read as 0.1 Hz) that is the likely cause:
+ * below 1 Hz the shortest tau is past the 1 s the white noise is read at,
+ * and "too little data?" sent the user to the record's length (a user
+ * review, 2026-11-29). */
+static void no_identification(const run_t *R, const char *path, const chan_t *ch)
+{
+    if (R->time_unit_warned) {
+        hx_error(CMD, "%s: no identification for %s, most likely because of the time stamps' unit (the warning "
+                      "above): read at %.3g Hz, the shortest tau, %.3g s, lies past the 1 s the white noise is read "
+                      "at; convert the time column to seconds (or give --rate) and run allan again; profile not "
+                      "written",
+                 path, ch->name, R->rate_hz, 1.0 / R->rate_hz);
+    } else {
+        hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
+    }
+}
+
+/* Why the fit's AR(1) is not what the profile takes (ar1_resolved() false),
+ * naming the test that failed and the limit it used: "longest tau 287 s"
+ * beside a table that said "tau <= 60 s" left the reader to guess which
+ * limit the identification keeps to (a user review, 2026-11-29). */
+static void ar1_refusal(const run_t *R, const chan_t *ch, double tau_long_s, char *why, size_t n)
+{
+    const double fit_s = tau_max_samples(R) / R->rate_hz, bump_s = 1.89 * ch->id.fit.gm_tau_s;
+    if (ar1_too_short(R, ch)) {
+        snprintf(why, n, "the fit's AR(1) of %s has T = %.3g s (%.3g samples), under the floor of %.0f samples "
+                         "(%.3g s), the taus where the sensor's own filtering shapes the Allan curve: not a bias the "
+                         "profile takes (docs/allan.md)",
+                 ch->name, ch->id.fit.gm_tau_s, ch->id.fit.gm_tau_s * R->rate_hz,
+                 ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / 1.89), HX_ALLAN_AR1_MIN_BUMP_SAMPLES / 1.89 / R->rate_hz);
+    } else if (!ch->id.fit_ok) {
+        snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (no fit within the fitted "
+                         "range, tau <= %.3g s, --max-tau-frac)",
+                 ch->name, fit_s);
+    } else if (bump_s > tau_long_s) {
+        snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (the fit's bump, 1.89 T = "
+                         "%.3g s, lies beyond the longest tau with data, %.3g s; the fit itself uses tau <= %.3g s, "
+                         "--max-tau-frac)",
+                 ch->name, bump_s, tau_long_s, fit_s);
+    } else if (bump_s * R->rate_hz < 1.0) {
+        snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (the fit's T, %.3g s, is "
+                         "under a sample)",
+                 ch->name, ch->id.fit.gm_tau_s);
+    } else {
+        snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (the fit's AR(1) part, or "
+                         "its white part, rises above the rest of the model by no more than the measurement's "
+                         "spread at every tau <= %.3g s, the fitted range of --max-tau-frac)",
+                 ch->name, fit_s);
+    }
+}
+
 static int write_profile(const run_t *R, const char *path, const char *name)
 {
     fnav_profile_t p;
@@ -1829,27 +1909,32 @@ static int write_profile(const run_t *R, const char *path, const char *name)
             return -2;
         }
         if (!ch->id_ok || (!ch->id.fit_ok && !ch->id.paper_ok)) {
-            hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
+            no_identification(R, path, ch);
             return -2;
         }
         tau_long_s = tau_long_of(R, ch);
         bound = profile_model(R, ch, &m);
         if (bound < 0) {
-            hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
+            no_identification(R, path, ch);
             return -2;
         }
         fallback[k] = bound;
         if (bound) {
-            char fitw[48] = "no fit";
+            char fitw[48] = "no fit", why[400];
             nfallback++;
             if (ch->id.fit_ok) {
                 snprintf(fitw, sizeof fitw, "not the fit's %.3g", ch->id.fit.white);
             }
-            hx_warn(CMD, "%s: the AR(1) bias of %s is not identifiable within the record (longest tau %.3g s, "
-                         "Allan minimum at %.3g s); the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV "
-                         "at 1 s; %s) and the bound T = %.3g s, sigma = %.3g %s from that minimum",
-                    path, ch->name, tau_long_s, (double)ch->id.paper.t_bs_s, m.white, ch->unit, fitw, m.gm_tau_s,
-                    m.gm_sigma, ch->unit);
+            ar1_refusal(R, ch, tau_long_s, why, sizeof why);
+            /* which way it bounds: "bound T = 173 s" on a channel whose T is
+             * 720 s read as an upper bound (a user review, 2026-11-29); it is
+             * the AR(1) whose bump sits on the minimum, no bound on sigma */
+            hx_warn(CMD, "%s: %s; the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV at 1 s; %s) and the "
+                         "Gauss-Markov bound T = %.3g s, sigma = %.3g %s, whose Allan bump sits on the minimum at "
+                         "%.3g s (T from the minimum's position: the true T may be longer; no upper bound on the "
+                         "bias, docs/allan.md)",
+                    path, why, m.white, ch->unit, fitw, m.gm_tau_s, m.gm_sigma, ch->unit,
+                    (double)ch->id.paper.t_bs_s);
         }
         if (k < 3) {
             p.accel_noise_mps2_rthz[k] = (fnav_real_t)(m.white * si);

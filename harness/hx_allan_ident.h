@@ -131,6 +131,16 @@ void hx_noise_model_from_paper(const fnav_allan_paper_id_t *id, double rate_hz, 
 #define HX_GM_PEAK_RATIO 0.6174
 #define HX_GM_PEAK_TAU 1.893
 
+/** Shortest AR(1) bump (1.89 T), in samples, that `harness allan` takes as a
+ *  bias: two decades above the shortest tau (one sample). A correlation time
+ *  of a few samples is the shape of the sensor's own filtering (anti-alias
+ *  low-pass, decimation averaging: white noise through it falls below the
+ *  white line over the first decade of tau), which white + AR(1) fits as a
+ *  "bias" of T = 1-3 samples that takes part of the white noise; a bump must
+ *  clear that decade by another to be told from it (docs/allan.md, "When the
+ *  AR(1) part is not identifiable"). T >= 100 / 1.89 = 53 samples. */
+#define HX_ALLAN_AR1_MIN_BUMP_SAMPLES 100.0
+
 /**
  * Confidence interval of a deviation with edf degrees of freedom (chi-square,
  * NIST SP 1065 eq. 45). conf e.g. 0.683. @return 0, or -1 when edf <= 0.

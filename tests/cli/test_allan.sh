@@ -340,6 +340,18 @@ print(bad, marked)
 sys.exit(1 if bad or marked == 0 else 0)
 PYEOF
 then pass "unresolved fits marked in the parameter table, columns kept"; else fail "unresolved fits in the table"; fi
+# the parameter table's tau is in samples, as in the paper's tables, right after tables whose tau_s is in seconds:
+# its header said "tau", and `tau 1` read as 1 s (a user review, 2026-11-29); both halves now say tau[samples]
+expect_out "^chan   unit   |    sigma_v tau\[samples\] sigma_bias         BS   rms   @min |    sigma_v tau\[samples\] sigma_bias       peak   rms   @min$" \
+    "the parameter table's tau columns say they are in samples"
+# --help said --max-tau-frac bounds the tau "identified, tabulated and plotted", yet --out and --json tabulate every
+# tau with terms, beyond it (the whole ADIS16405 log 1: to 4587.52 s with 2 terms for tau_max_s 1000; the allantools
+# check above relies on them); the help now says so, and the JSON does go beyond tau_max_s
+json "$T/w10s.json" "max(r['tau_s'] for r in j['channels'][0]['table']) > 2 * j['tau_max_s']" &&
+    pass "the JSON tabulates tau beyond tau_max_s" || fail "the JSON stops at tau_max_s"
+expect_exit 0 "allan --help" "$H" allan --help
+expect_out "largest tau identified, printed and plotted, as a fraction of the record (default 0.1, the paper's 10 %); --out and --json tabulate every tau with terms, beyond it too" \
+    "--help says what --out and --json tabulate beyond --max-tau-frac"
 # ... and the numbers the profile holds for them were nowhere but in the profile: the table and the JSON gave the
 # fit's (30 minutes of ADIS16405 log 1: gx sigma_v 0.0039 deg/s/sqrt(Hz), the profile 0.0408) beside a mark or
 # ar1_identified false. Now a line under the table and the JSON's profile object give them, checked here against
@@ -389,6 +401,21 @@ sys.exit(1 if bad or nbound == 0 else 0)
 PYEOF
 then pass "what the profile holds for unresolved fits is in the table and the JSON"; else
     fail "what the profile holds for unresolved fits"; fi
+# the warning for such a channel named "longest tau 287 s" beside a table that said "tau <= 60 s" (10 minutes of
+# ADIS16405 log 1), leaving the reader to guess which limit the identification keeps to (a user review,
+# 2026-11-29): it now says which test failed and names the limit it used, the fitted range's too
+expect_err "the AR(1) bias of gz is not identifiable within the record (the fit's bump, 1.89 T = .* s, lies beyond the longest tau with data, 4.48 s; the fit itself uses tau <= 1 s, --max-tau-frac); the profile holds" \
+    "an AR(1) bump beyond the record: both limits named"
+expect_err "the AR(1) bias of ax is not identifiable within the record (the fit's AR(1) part, or its white part, rises above the rest of the model by no more than the measurement's spread at every tau <= 1 s, the fitted range of --max-tau-frac); " \
+    "an AR(1) the curve does not show: the fitted range named"
+expect_err "the AR(1) bias of gx is not identifiable within the record (no fit within the fitted range, tau <= 1 s, --max-tau-frac); " \
+    "no fit: the fitted range named"
+# "the bound T = 173 s, sigma = 0.00384 deg/s" on a channel whose T is 720 s read as an upper bound; the bound is
+# the AR(1) whose bump sits on the Allan minimum, and the warning and the table's note now say which way it goes
+expect_err "and the Gauss-Markov bound T = .*, whose Allan bump sits on the minimum at 0.96 s (T from the minimum's position: the true T may be longer; no upper bound on the bias, docs/allan.md)" \
+    "the bound's warning says which way it bounds"
+expect_out "Gauss-Markov bound from the Allan minimum (T = t_BS / 1.89, sigma_bias = BS / 0.6174: the true T may be longer; docs/allan.md):" \
+    "the table's note says which way the bound goes"
 F30=$(data adis16405_static/adis16405_imu1_100Hz.csv.gz)
 if [ -n "$F30" ]; then
     "$H" convert "$F30" "$T/first30.csv" --end 1800 >/dev/null 2>&1 || fail "convert the first 30 minutes of log 1"
@@ -429,6 +456,66 @@ expect_exit 0 "white + Gauss-Markov series (T = 5 s)" "$H" allan --series "$T/gm
     --no-sim --quiet --json "$T/gm.json"
 json "$T/gm.json" "j['channels'][0]['corrected']['ar1_identified'] and 2.5 < j['channels'][0]['corrected']['tau_s'] < 10" &&
     pass "a resolved Gauss-Markov bias is identified" || fail "the Gauss-Markov bias (T = 5 s) is not identified"
+# A sensor's own filtering (anti-alias low-pass, decimation averaging) bends the Allan curve below the white line
+# over the first taus, and white + AR(1) fitted it as a bias of T = 1-3 samples that took part of the white noise
+# into the profile (10 minutes of ADIS16405 log 1: gx T = 0.0107 s, white 0.0279 deg/s/sqrt(Hz) for the log's
+# 0.040; a user review, 2026-11-29). Now an AR(1) whose bump (1.89 T) lies under 100 samples is refused and the
+# channel gets the white noise of the ADEV at 1 s. 600 s at 100 Hz of white noise, half of it through a 4-sample
+# moving average (low-frequency density 0.005 m/s^2/sqrt(Hz), 0.0005 rad/s/sqrt(Hz), as the filter keeps the DC
+# gain): the fit gave T = 1 sample and a white noise about 36 % low on every channel.
+"$PY" -c "
+import math, random, sys
+r = random.Random(3)
+sd, mean, L = [0.05] * 3 + [0.005] * 3, [0, 0, 9.81, 0, 0, 0], 4
+h = [[r.gauss(0, 1) for _ in range(L)] for _ in range(6)]
+with open(sys.argv[1], 'w') as f:
+    f.write('t,ax,ay,az,gx,gy,gz\n')
+    for i in range(60000):
+        row = []
+        for c in range(6):
+            h[c].pop(0)
+            h[c].append(r.gauss(0, 1))
+            row.append(mean[c] + sd[c] * (math.sqrt(0.5) * r.gauss(0, 1) + math.sqrt(0.5) * sum(h[c]) / L))
+        f.write('%.2f,%s\n' % (i / 100, ','.join('%.7g' % v for v in row)))" "$T/filt.csv"
+expect_exit 0 "white noise through a short filter, a profile" "$H" allan "$T/filt.csv" --no-sim --quiet \
+    --profile "$T/filt.profile"
+expect_err "the fit's AR(1) of gx has T = " "a short AR(1) is said to be refused"
+expect_out "AR(1) not resolved by the curve (T below the 53-sample floor): see below" \
+    "a short AR(1) is marked in the table"
+prof_ok() { # PROFILE WHITE_ACCEL WHITE_GYRO TOL: every white noise within TOL of its value, no tau under 0.528 s
+    "$PY" - "$@" <<'PYEOF'
+import sys
+p = {}
+for l in open(sys.argv[1]):
+    if "=" in l and not l.startswith("#"):
+        k, v = l.split("=", 1)
+        if k.strip().endswith(("_rthz", "_tau_s")) and not k.startswith("paper"):
+            p[k.strip()] = [float(x) for x in v.split()]
+wa, wg, tol = float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4])
+bad = [("accel white", x) for x in p["accel_noise_mps2_rthz"] if abs(x / wa - 1) > tol]
+bad += [("gyro white", x) for x in p["gyro_noise_rps_rthz"] if abs(x / wg - 1) > tol]
+bad += [("tau", x) for x in p["accel_tau_s"] + p["gyro_tau_s"] if x < 100 / 1.893 / 100]
+print(bad)
+sys.exit(1 if bad else 0)
+PYEOF
+}
+prof_ok "$T/filt.profile" 0.005 0.0005 0.1 >"$T/pyout" && pass "filtered white noise: the profile holds its white noise, no bias of a few samples" ||
+    fail "filtered white noise: profile $(cat "$T/pyout")"
+if [ -n "$F30" ]; then
+    "$H" convert "$F30" "$T/a10.csv" --end 600 >/dev/null 2>&1 || fail "convert the first 10 minutes of log 1"
+    expect_exit 0 "10 minutes of ADIS16405 log 1, a profile" "$H" allan "$T/a10.csv" --no-sim --quiet \
+        --profile "$T/a10.profile"
+    # the whole log's white noise (results-allan.md): gyros 0.040-0.043 deg/s/sqrt(Hz) (7.0e-4-7.5e-4 rad/s)
+    prof_ok "$T/a10.profile" 0.0055 0.00072 0.35 >"$T/pyout" && "$PY" - "$T/a10.profile" <<'PYEOF' &&
+import sys
+g = [float(x) for l in open(sys.argv[1]) if l.startswith("gyro_noise_rps_rthz") for x in l.split("=")[1].split()]
+sys.exit(0 if len(g) == 3 and min(g) > 6.6e-4 else 1)
+PYEOF
+    pass "10 minutes of log 1: no bias of a few samples, gyro white noise above 0.038 deg/s/sqrt(Hz)" ||
+        fail "10 minutes of log 1: profile $(cat "$T/pyout"; grep -E 'noise|tau_s' "$T/a10.profile")"
+else
+    echo "skip 10 minutes of ADIS16405 log 1 (no shared data)"
+fi
 # The paper's BS is the curve's minimum; a curve still falling at 10 % of the record (white noise) or rising
 # from its first tau (a random walk) has none there, and the end point was printed as the bias stability
 # without a word. Now a warning says so; a curve with a minimum inside (white + random walk, minimum near
@@ -610,6 +697,14 @@ awk '{ if (NR == 1) print; else { split($0, v, ","); v[1] = v[1] * 1000; out = v
 expect_exit 0 "a static log with its time in milliseconds" "$H" allan "$T/touch_ms.csv" --no-sim --quiet
 expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: divide by 1000)" \
     "time in milliseconds is named"
+# ... and with --profile the warning was followed by "no identification for ax (too little data?)", sending the user
+# to the record's length; the error now names the time unit as the likely cause (a user review, 2026-11-29)
+expect_exit 1 "a static log with its time in milliseconds, a profile" "$H" allan "$T/touch_ms.csv" --no-sim --quiet \
+    --profile "$T/touch_ms.profile"
+expect_err "touch_ms.profile: no identification for ax, most likely because of the time stamps' unit (the warning above): read at 0.1 Hz, the shortest tau, 10 s, lies past the 1 s the white noise is read at; convert the time column to seconds (or give --rate) and run allan again; profile not written" \
+    "the profile error names the time unit as the likely cause"
+if grep -q "too little data" "$T/err"; then fail "the time-unit case still blames too little data"; else
+    pass "the time-unit case does not blame too little data"; fi
 expect_exit 0 "the same log in seconds" "$H" allan "$T/touch0.csv" --no-sim --quiet
 if grep -q "apart" "$T/err"; then fail "a 100 Hz log in seconds asked about its time unit: $(cat "$T/err")"; else
     pass "a 100 Hz log in seconds is not asked about its time unit"; fi
