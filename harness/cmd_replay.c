@@ -115,7 +115,7 @@ int hx_cmd_replay(int argc, char **argv)
          * a log cut at a bad line (it printed "NOT ALIGNED (no still period
          * long enough ...)" and "complete": true for `--out - | head -2`; a
          * review, 2026-11-29) */
-        if (csv != NULL && strcmp(err, "cannot write the trajectory") == 0) {
+        if (csv != NULL && ferror(csv)) { /* the sink's write failed, not the memory */
             snprintf(err, sizeof err, "cannot write the trajectory to %s",
                      strcmp(out_path, "-") == 0 ? "standard output" : out_path);
         }

@@ -552,7 +552,6 @@ void hx_traj_free(hx_traj_t *t)
 void hx_traj_set_config(hx_traj_t *t, const hx_nav_opts_t *o, const fnav_nav_config_t *cfg)
 {
     fnav_profile_t tmp;
-    size_t used = 0;
     int i;
     t->have_config = 1;
     t->config = *cfg;
@@ -560,11 +559,26 @@ void hx_traj_set_config(hx_traj_t *t, const hx_nav_opts_t *o, const fnav_nav_con
     if (o->profile != NULL && fnav_profile_by_name(&tmp, o->profile) != FNAV_OK) {
         snprintf(t->profile_file, sizeof t->profile_file, "%s", o->profile);
     }
-    t->params[0] = '\0';
-    for (i = 0; i < o->nparams && used < sizeof t->params; i++) {
-        int k = snprintf(t->params + used, sizeof t->params - used, "%s%s", i > 0 ? ", " : "", o->params[i]);
-        used += k > 0 ? (size_t)k : 0u;
+    t->nparams = 0;
+    for (i = 0; i < o->nparams && i < HX_MAX_REPEAT; i++) {
+        snprintf(t->params[t->nparams++], sizeof t->params[0], "%s", o->params[i]);
     }
+}
+
+/* The names the options take, for the config line, the plot title and the JSON. */
+static const char *bias_model_name(const fnav_nav_config_t *c)
+{
+    return c->bias_model == FNAV_BIAS_OFF ? "off" : "ar1";
+}
+
+static const char *detector_name(const fnav_nav_config_t *c)
+{
+    return c->stance.detector == FNAV_DETECTOR_THRESHOLD ? "threshold" : "shoe";
+}
+
+static const char *samples_name(const fnav_nav_config_t *c)
+{
+    return c->sample_type == FNAV_SAMPLE_MEAN ? "mean" : "instant";
 }
 
 void hx_nav_plot_title(const hx_traj_t *t, const char *path, double rate_hz, char *buf, size_t size)
@@ -587,30 +601,22 @@ void hx_nav_plot_title(const hx_traj_t *t, const char *path, double rate_hz, cha
                          t->profile_file[0] != '\0' ? t->profile_file : c->profile.name);
             used += k > 0 ? (size_t)k : 0u;
         }
+        int i;
         if (used < sizeof opt && c->bias_model != fnav_nav_config_default.bias_model) {
-            k = snprintf(opt + used, sizeof opt - used, ", --bias-model %s", c->bias_model == FNAV_BIAS_OFF ? "off" : "ar1");
+            k = snprintf(opt + used, sizeof opt - used, ", --bias-model %s", bias_model_name(c));
             used += k > 0 ? (size_t)k : 0u;
         }
         if (used < sizeof opt && c->stance.detector != fnav_nav_config_default.stance.detector) {
-            k = snprintf(opt + used, sizeof opt - used, ", --detector %s",
-                         c->stance.detector == FNAV_DETECTOR_THRESHOLD ? "threshold" : "shoe");
+            k = snprintf(opt + used, sizeof opt - used, ", --detector %s", detector_name(c));
             used += k > 0 ? (size_t)k : 0u;
         }
         if (used < sizeof opt && c->sample_type != fnav_nav_config_default.sample_type) {
-            k = snprintf(opt + used, sizeof opt - used, ", --samples %s", c->sample_type == FNAV_SAMPLE_MEAN ? "mean" : "instant");
+            k = snprintf(opt + used, sizeof opt - used, ", --samples %s", samples_name(c));
             used += k > 0 ? (size_t)k : 0u;
         }
-        if (used < sizeof opt && t->params[0] != '\0') {
-            /* t->params is "k=v, k=v": each one after its --param */
-            const char *p = t->params;
-            while (*p != '\0' && used < sizeof opt) {
-                const char *e = strstr(p, ", ");
-                const size_t n = e != NULL ? (size_t)(e - p) : strlen(p);
-                k = snprintf(opt + used, sizeof opt - used, ", --param %.*s", (int)n, p);
-                used += k > 0 ? (size_t)k : 0u;
-                p += n;
-                p += *p != '\0' ? 2 : 0;
-            }
+        for (i = 0; i < t->nparams && used < sizeof opt; i++) {
+            k = snprintf(opt + used, sizeof opt - used, ", --param %s", t->params[i]);
+            used += k > 0 ? (size_t)k : 0u;
         }
     }
     if (opt[0] != '\0') {
@@ -624,17 +630,15 @@ void hx_nav_config_text(const hx_traj_t *t, char *buf, size_t size)
 {
     const fnav_nav_config_t *c = &t->config;
     size_t used;
-    int k;
+    int k, i;
     k = snprintf(buf, size, "profile %s%s%s%s, bias model %s, detector %s%s, samples %s, lever %s, settling %s, ZARU %s",
                  c->profile.name, t->profile_file[0] ? " (file " : "", t->profile_file, t->profile_file[0] ? ")" : "",
-                 c->bias_model == FNAV_BIAS_OFF ? "off" : "ar1",
-                 c->stance.detector == FNAV_DETECTOR_THRESHOLD ? "threshold" : "shoe",
-                 c->stance.adaptive ? " (adaptive threshold)" : " (fixed threshold)",
-                 c->sample_type == FNAV_SAMPLE_MEAN ? "mean" : "instant", c->lever ? "on" : "off",
-                 c->settle ? "on" : "off", c->zaru ? "on" : "off");
+                 bias_model_name(c), detector_name(c), c->stance.adaptive ? " (adaptive threshold)" : " (fixed threshold)",
+                 samples_name(c), c->lever ? "on" : "off", c->settle ? "on" : "off", c->zaru ? "on" : "off");
     used = k > 0 ? (size_t)k : 0u;
-    if (t->params[0] != '\0' && used < size) {
-        snprintf(buf + used, size - used, "; parameters overridden: %s", t->params);
+    for (i = 0; i < t->nparams && used < size; i++) {
+        k = snprintf(buf + used, size - used, "%s%s", i == 0 ? "; parameters overridden: " : ", ", t->params[i]);
+        used += k > 0 ? (size_t)k : 0u;
     }
 }
 
@@ -1507,25 +1511,19 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
          * `command` named it; a review, 2026-11-29) */
         const fnav_nav_config_t *c = &t->config;
         cJSON *pa = cJSON_CreateArray();
-        const char *p = t->params;
+        int i;
         cJSON_AddStringToObject(root, "profile", c->profile.name);
         cJSON_AddItemToObject(root, "profile_file", t->profile_file[0] ? cJSON_CreateString(t->profile_file)
                                                                        : cJSON_CreateNull());
-        cJSON_AddStringToObject(root, "bias_model", c->bias_model == FNAV_BIAS_OFF ? "off" : "ar1");
-        cJSON_AddStringToObject(root, "detector", c->stance.detector == FNAV_DETECTOR_THRESHOLD ? "threshold" : "shoe");
+        cJSON_AddStringToObject(root, "bias_model", bias_model_name(c));
+        cJSON_AddStringToObject(root, "detector", detector_name(c));
         cJSON_AddBoolToObject(root, "adaptive_threshold", c->stance.adaptive);
-        cJSON_AddStringToObject(root, "samples", c->sample_type == FNAV_SAMPLE_MEAN ? "mean" : "instant");
+        cJSON_AddStringToObject(root, "samples", samples_name(c));
         cJSON_AddBoolToObject(root, "lever", c->lever);
         cJSON_AddBoolToObject(root, "settling", c->settle);
         cJSON_AddBoolToObject(root, "zaru", c->zaru);
-        while (*p != '\0') { /* the overrides, as t->params keeps them: ", " between */
-            const char *e = strstr(p, ", ");
-            size_t n = e != NULL ? (size_t)(e - p) : strlen(p);
-            char one[256];
-            snprintf(one, sizeof one, "%.*s", (int)(n < sizeof one ? n : sizeof one - 1), p);
-            cJSON_AddItemToArray(pa, cJSON_CreateString(one));
-            p += n;
-            p += *p != '\0' ? 2 : 0;
+        for (i = 0; i < t->nparams; i++) {
+            cJSON_AddItemToArray(pa, cJSON_CreateString(t->params[i]));
         }
         cJSON_AddItemToObject(root, "params", pa);
     }

@@ -112,7 +112,8 @@ typedef struct {
     int have_config;
     fnav_nav_config_t config;
     char profile_file[256];      /**< --profile's file ("": a built-in profile) */
-    char params[512];            /**< the --param overrides as given, ", " between ("": none) */
+    char params[HX_MAX_REPEAT][128]; /**< the --param overrides as given (KEY=VALUE) */
+    int nparams;
 } hx_traj_t;
 
 void hx_traj_free(hx_traj_t *t);
