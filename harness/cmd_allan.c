@@ -1150,6 +1150,13 @@ static void print_table(const run_t *R, const chan_t *ch)
 
 static int ar1_resolved(const run_t *R, const chan_t *ch);
 static int ar1_too_short(const run_t *R, const chan_t *ch);
+
+/* The floor on the AR(1) correlation time, in samples, as the table and
+ * the warning name it (HX_ALLAN_AR1_MIN_BUMP_SAMPLES / 1.89, rounded up) */
+static double ar1_floor_samples(void)
+{
+    return ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / 1.89);
+}
 static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m);
 
 static void print_params(const run_t *R)
@@ -1193,7 +1200,7 @@ static void print_params(const run_t *R)
                 /* the JSON's ar1_identified = false: not the bias a profile takes */
                 if (ar1_too_short(R, ch)) {
                     printf("  AR(1) not resolved by the curve (T below the %.0f-sample floor): see below",
-                           ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / 1.89));
+                           ar1_floor_samples());
                 } else {
                     printf("  AR(1) not resolved by the curve: see below");
                 }
@@ -1864,7 +1871,7 @@ static void ar1_refusal(const run_t *R, const chan_t *ch, double tau_long_s, cha
                          "(%.3g s), the taus where the sensor's own filtering shapes the Allan curve: not a bias the "
                          "profile takes (docs/allan.md)",
                  ch->name, ch->id.fit.gm_tau_s, ch->id.fit.gm_tau_s * R->rate_hz,
-                 ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / 1.89), HX_ALLAN_AR1_MIN_BUMP_SAMPLES / 1.89 / R->rate_hz);
+                 ar1_floor_samples(), ar1_floor_samples() / R->rate_hz);
     } else if (!ch->id.fit_ok) {
         snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (no fit within the fitted "
                          "range, tau <= %.3g s, --max-tau-frac)",
