@@ -1473,8 +1473,9 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     } else {
         fprintf(f, "axes              %s\n", t->axes.msg);
     }
-    fprintf(f, "timing            %u duplicates (dt = 0), %u gaps, %u time jumps, longest interval %.1f ms\n",
-            st->duplicates, st->gaps, st->time_jumps, 1e3 * (double)st->max_gap_seen_s);
+    fprintf(f, "timing            %u duplicate%s (dt = 0), %u gap%s, %u time jump%s, longest interval %.1f ms\n",
+            st->duplicates, st->duplicates == 1u ? "" : "s", st->gaps, st->gaps == 1u ? "" : "s", st->time_jumps,
+            st->time_jumps == 1u ? "" : "s", 1e3 * (double)st->max_gap_seen_s);
     if (t->stamps_coarse && st->gaps > 0u) {
         /* an 820 Hz log stamped to the millisecond reads 1 and 2 ms: the
          * navigator counts every 2 ms interval as a gap (it integrates each
@@ -1485,9 +1486,10 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                 t->rate_hz);
     }
     fprintf(f, "health            %u NaN/Inf rejected, %u out of range rejected, %u backwards rejected, %u jitter, "
-               "%u covariance resets, %u undone, %u updates rejected, %u covariance guard, %u divergence resets\n",
-            st->nan_inputs, st->range_inputs, st->time_back, st->chol_jitter, st->chol_reset, st->diverged, st->update_reject,
-            st->cov_guard, st->resets);
+               "%u covariance reset%s, %u undone, %u update%s rejected, %u covariance guard, %u divergence reset%s\n",
+            st->nan_inputs, st->range_inputs, st->time_back, st->chol_jitter, st->chol_reset, st->chol_reset == 1u ? "" : "s",
+            st->diverged, st->update_reject, st->update_reject == 1u ? "" : "s", st->cov_guard, st->resets,
+            st->resets == 1u ? "" : "s");
 }
 
 static cJSON *num(double v)

@@ -543,6 +543,12 @@ expect_out "1 stride in 18 s" "one stride: '1 stride' in the little-motion note"
 if grep -q "between strides" "$T/out"; then fail "one stride: a stand 'between strides' noted"; else pass "one stride: no stand between strides noted"; fi
 json "$T/stand1.json" "j['strides'] == 1 and j['longest_stand_s'] > 12" && pass "one stride: the JSON keeps the stand (12 s)" ||
     fail "one stride JSON: $(cat "$T/pyerr")"
+# one duplicated row, one row left out and one interval of 2 s: the timing
+# line counts them in the singular ("1 gaps, 1 time jumps" before; 2026-11-30)
+awk -F, 'NR == 1 { print; next } NR == 301 { print } NR == 601 { next } NR > 1001 { $1 += 2 } { print }' OFS=, \
+    "$T/stand.csv" > "$T/stand_t1.csv"
+expect_exit 0 "one duplicate, one gap, one time jump" "$H" replay "$T/stand_t1.csv"
+expect_out "^timing            1 duplicate (dt = 0), 1 gap, 1 time jump, longest interval 20" "the timing line's singular nouns"
 expect_exit 0 "a stand between two strides" "$H" replay "$T/stand2.csv"
 expect_out "^stance            2 strides, 3 stance phases, " "two strides: plural"
 expect_out "^note              the foot stood 12 s between strides (from 5.7 s)" "two strides: the stand between them noted"
