@@ -94,6 +94,7 @@ typedef struct {
     fnav_allan_result_t res[GRID_MAX];
     fnav_real_t slope[GRID_MAX];
     fnav_allan_noise_t noise[GRID_MAX];
+    unsigned char periodic[GRID_MAX]; /* the slope's -1 is a periodic term's fall (hx_allan_mark_periodic) */
     int alpha[GRID_MAX];      /* power-law exponent behind the EDF */
     hx_noise_id_t alpha_from[GRID_MAX]; /* how alpha was found: from the data (exact) or the slope */
     double edf[GRID_MAX], lo[GRID_MAX], hi[GRID_MAX];
@@ -938,12 +939,21 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
     }
     fnav_allan_slopes(ch->res, ch->nres, ch->slope);
     for (i = 0; i < ch->nres; i++) {
-        const fnav_allan_result_t *r = &ch->res[i];
         ch->noise[i] = fnav_allan_noise_from_slope(ch->slope[i]);
+    }
+    hx_allan_mark_periodic(ch->noise, ch->nres, ch->periodic);
+    for (i = 0; i < ch->nres; i++) {
+        const fnav_allan_result_t *r = &ch->res[i];
         ch->alpha[i] = fnav_allan_noise_alpha(ch->noise[i]);
         ch->alpha_from[i] = HX_NOISE_ID_SLOPE;
+        if (ch->periodic[i]) {
+            /* no power law: the EDF of the noise beneath, read at the tau before (a periodic
+             * term is only marked after one) */
+            ch->alpha[i] = ch->alpha[i - 1];
+            ch->alpha_from[i] = HX_NOISE_ID_HELD;
+        }
         if (R->exact && hx_allan_noise_id_acf(ch->x, ch->nx, r->tau, &ch->alpha[i], &ch->alpha_from[i]) != 0) {
-            ch->alpha_from[i] = HX_NOISE_ID_SLOPE; /* alpha keeps the slope's */
+            ch->alpha_from[i] = ch->periodic[i] ? HX_NOISE_ID_HELD : HX_NOISE_ID_SLOPE; /* alpha kept */
         }
         ch->edf[i] = hx_allan_point_edf_alpha(r, ch->alpha[i], 1);
         ch->edf_n[i] = hx_allan_point_edf_alpha(r, ch->alpha[i], 0);
@@ -1067,6 +1077,12 @@ static const char *fmt_g(char *b, size_t n, double v)
     return hx_fmt_g(b, n, v);
 }
 
+/* the noise type the slope reads at tau i, "periodic" where it is a periodic term's fall */
+static const char *noise_name(const chan_t *ch, size_t i)
+{
+    return ch->periodic[i] ? "periodic" : fnav_allan_noise_name(ch->noise[i]);
+}
+
 static int in_range(const run_t *R, const fnav_allan_result_t *r)
 {
     return r->terms > 0u && (double)r->tau <= tau_max_samples(R) * (1.0 + 1e-9);
@@ -1082,10 +1098,11 @@ static void print_regions(const run_t *R, const chan_t *ch)
             i++;
             continue;
         }
-        while (j + 1 < ch->nres && in_range(R, &ch->res[j + 1]) && ch->noise[j + 1] == ch->noise[i]) {
+        while (j + 1 < ch->nres && in_range(R, &ch->res[j + 1]) && ch->noise[j + 1] == ch->noise[i] &&
+               ch->periodic[j + 1] == ch->periodic[i]) {
             j++;
         }
-        printf(" %s %.3g-%.3g s;", fnav_allan_noise_name(ch->noise[i]), (double)ch->res[i].tau / R->rate_hz,
+        printf(" %s %.3g-%.3g s;", noise_name(ch, i), (double)ch->res[i].tau / R->rate_hz,
                (double)ch->res[j].tau / R->rate_hz);
         i = j + 1;
     }
@@ -1141,8 +1158,9 @@ static void print_table(const run_t *R, const chan_t *ch)
                (unsigned long)r->tau, fmt_g(b1, sizeof b1, sqrt((double)r->avar)), fmt_g(b2, sizeof b2, ch->lo[i]),
                fmt_g(b3, sizeof b3, ch->hi[i]), (unsigned long)r->terms,
                fmt_g(b4, sizeof b4, sqrt((double)r->avar_nonoverlap)), (unsigned long)r->terms_nonoverlap,
-               (double)ch->slope[i], ch->alpha[i], ch->alpha_from[i] != HX_NOISE_ID_SLOPE ? "a" : "s",
-               fnav_allan_noise_name(ch->noise[i]));
+               (double)ch->slope[i], ch->alpha[i],
+               ch->alpha_from[i] == HX_NOISE_ID_SLOPE ? "s" : ch->alpha_from[i] == HX_NOISE_ID_HELD ? "h" : "a",
+               noise_name(ch, i));
     }
     print_regions(R, ch);
     print_deviations(R, ch);
@@ -1303,7 +1321,7 @@ static int write_csv(const run_t *R, const char *path)
                     fmt_g(b[3], 32, ch->hi[k]), fmt_g(b[4], 32, ch->edf[k]), (unsigned long)r->terms,
                     fmt_g(b[5], 32, sqrt((double)r->avar_nonoverlap)), fmt_g(b[6], 32, ch->lo_n[k]),
                     fmt_g(b[7], 32, ch->hi_n[k]), fmt_g(b[8], 32, ch->edf_n[k]), (unsigned long)r->terms_nonoverlap,
-                    fmt_g(b[9], 32, (double)ch->slope[k]), fnav_allan_noise_name(ch->noise[k]),
+                    fmt_g(b[9], 32, (double)ch->slope[k]), noise_name(ch, k),
                     fmt_g(b[10], 32, ch->have_sim_paper ? sqrt((double)ch->sim_paper[k].avar) : (double)NAN),
                     fmt_g(b[11], 32, ch->have_sim_fit ? sqrt((double)ch->sim_fit[k].avar) : (double)NAN),
                     fmt_g(b[12], 32, mp), fmt_g(b[13], 32, mf), ch->alpha[k], hx_noise_id_name(ch->alpha_from[k]));
@@ -1451,7 +1469,7 @@ static int write_json(const run_t *R, const char *path)
             json_num(e, "adev", sqrt((double)r->avar_nonoverlap));
             cJSON_AddNumberToObject(e, "terms_n", (double)r->terms_nonoverlap);
             json_num(e, "slope", (double)ch->slope[k]);
-            cJSON_AddStringToObject(e, "noise", fnav_allan_noise_name(ch->noise[k]));
+            cJSON_AddStringToObject(e, "noise", noise_name(ch, k));
             cJSON_AddNumberToObject(e, "alpha", (double)ch->alpha[k]);
             cJSON_AddStringToObject(e, "alpha_from", hx_noise_id_name(ch->alpha_from[k]));
             if (ch->have_sim_paper) {

@@ -197,8 +197,20 @@ static double b1_theory(double N, double mu)
 
 const char *hx_noise_id_name(hx_noise_id_t how)
 {
-    static const char *const names[] = { "slope", "acf", "b1", "b1+rn" };
+    static const char *const names[] = { "slope", "acf", "b1", "b1+rn", "held" };
     return (unsigned)how < sizeof names / sizeof names[0] ? names[how] : "?";
+}
+
+void hx_allan_mark_periodic(const fnav_allan_noise_t *noise, size_t n, unsigned char *periodic)
+{
+    int freq_seen = 0; /* a shorter tau read frequency noise */
+    size_t i;
+    for (i = 0; i < n; i++) {
+        periodic[i] = (unsigned char)(freq_seen && noise[i] == FNAV_ALLAN_NOISE_QUANT);
+        if (noise[i] != FNAV_ALLAN_NOISE_QUANT && noise[i] != FNAV_ALLAN_NOISE_UNKNOWN) {
+            freq_seen = 1;
+        }
+    }
 }
 
 /* R(m) = MVAR / AVAR of the record against its expected values for white

@@ -181,11 +181,28 @@ typedef enum {
     HX_NOISE_ID_SLOPE = 0, /**< from the slope of log ADEV (no identification from the data) */
     HX_NOISE_ID_ACF,       /**< lag-1 autocorrelation */
     HX_NOISE_ID_B1,        /**< Barnes' B1 ratio */
-    HX_NOISE_ID_B1_RN      /**< B1, then MVAR / AVAR to tell white from flicker phase noise */
+    HX_NOISE_ID_B1_RN,     /**< B1, then MVAR / AVAR to tell white from flicker phase noise */
+    HX_NOISE_ID_HELD       /**< the slope's at the tau before: this tau's slope is a periodic term's fall */
 } hx_noise_id_t;
 
-/** "slope", "acf", "b1" or "b1+rn". */
+/** "slope", "acf", "b1", "b1+rn" or "held". */
 const char *hx_noise_id_name(hx_noise_id_t how);
+
+/**
+ * Marks the tau where the slope of log ADEV reads phase noise (slope about
+ * -1, FNAV_ALLAN_NOISE_QUANT) after a shorter tau read frequency noise
+ * (white, flicker, rate random walk or ramp). Power-law noises add in Allan
+ * variance and phase noise falls fastest with tau (as 1/tau), so where it
+ * does not dominate a tau it cannot dominate any longer one: a fall that
+ * steep there is a periodic term's past its peak (IEEE Std 952-1997, annex
+ * C: sinusoidal noise, ADEV ~ sin^2(pi f0 tau) / (pi f0 tau)), not
+ * quantisation, and an EDF of phase noise there is far too large.
+ *
+ * @param noise     the slope's noise type per tau, shortest tau first
+ * @param n         number of tau
+ * @param periodic  out: 1 at a marked tau, else 0
+ */
+void hx_allan_mark_periodic(const fnav_allan_noise_t *noise, size_t n, unsigned char *periodic);
 
 /**
  * Power-law noise exponent alpha (S_y(f) ~ f^alpha) at averaging factor m
