@@ -21,7 +21,7 @@
 static const hx_opt_t k_opts[] = {
     HX_SIM_OPTS,
     { "--seeds", "N", "number of runs, 1 to 100000 (seeds seed .. seed+N-1; default 50)", 0 },
-    { "--filter-profile", "NAME|FILE", "the filter's sensor profile, taken as given (default: --profile, read with --bias-sigma)", 0 },
+    { "--filter-profile", "NAME|FILE", "the filter's sensor profile, taken as given (default: --profile, read with --bias-sigma; navchip for --profile none)", 0 },
     { "--bias-model", "MODEL", "filter bias model: ar1 (default), off, or both (paired, on the same samples)", 0 },
     { "--detector", "KIND", "stance detector: shoe (default) or threshold", 0 },
     { "--samples", "KIND", "what the filter takes a sample for: instant or mean (default: what --decimation makes)", 0 },
@@ -694,6 +694,7 @@ int hx_cmd_montecarlo(int argc, char **argv)
             hx_error("montecarlo", "%s", err);
             return HX_EXIT_USAGE;
         }
+        hx_sim_warn_cut("montecarlo", motion, su.motion_name, su.duration_s);
         mc.sim.motion = motion;
         mc.sim.err = su.err;
         mc.sim.decim = su.decim;

@@ -132,15 +132,20 @@ then pass "no final estimate: the final statistics are null"; else fail "no fina
 # exited 3 where the run without it exits 0; and runs with one growth bin made gnuplot warn "empty x range" on
 # standard error (found by the plots review): panels that say so, and a range around the one bin
 if command -v gnuplot >/dev/null 2>&1; then
-    expect_exit 0 "montecarlo --plot without an aligned estimate" "$H" montecarlo --seeds 2 --duration 0.2 \
+    expect_exit 0 "montecarlo --plot without an aligned estimate" "$H" montecarlo --motion stand --seeds 2 --duration 0.2 \
         --bias-model both --quiet --plot "$T/none.png"
     [ -s "$T/none.png" ] && ! grep -qi "warning\|gnuplot\|invalid" "$T/err" &&
         pass "no aligned estimate: the picture drawn, no gnuplot message" || fail "no aligned estimate: $(cat "$T/err")"
-    expect_exit 0 "montecarlo --plot with one growth bin" "$H" montecarlo --seeds 2 --duration 1 --rate 100 --quiet \
+    expect_exit 0 "montecarlo --plot with one growth bin" "$H" montecarlo --motion stand --seeds 2 --duration 1 --rate 100 --quiet \
         --plot "$T/one.png"
     [ -s "$T/one.png" ] && ! grep -qi "warning\|gnuplot" "$T/err" && pass "one growth bin: no gnuplot warning" ||
         fail "one growth bin: $(cat "$T/err")"
 fi
+# (--motion stand: the default walk's first 5 s, the same samples, without
+# the warning of a walk cut short, which says the run has no stride:)
+expect_exit 0 "montecarlo of a walk cut at 4 s" "$H" montecarlo --seeds 1 --duration 4 --quiet
+expect_err "warning: --duration 4 cuts the motion 'walk' (12.2 s) short: the output ends after 0 of its 2 strides" \
+    "montecarlo: a walk cut before its first stride is said"
 # a profile file is an input: an output onto it is refused (the CSV
 # replaced it, exit 0)
 for o in json csv plot; do
