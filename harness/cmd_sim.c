@@ -243,8 +243,10 @@ int hx_cmd_sim(int argc, char **argv)
         }
         fprintf(so, "samples     %zu written (%zu ticks, %zu dropped, %zu duplicated)\n", ctx.written, ctx.ticks,
                     ctx.dropped, ctx.dups);
-        fprintf(so, "peaks       |f| %.1f m/s^2 (%.1f g), |w| %.2f rad/s (%.0f deg/s)\n", ctx.peak_f, ctx.peak_f / 9.80665,
-                    ctx.peak_w, ctx.peak_w * 180.0 / 3.14159265358979323846);
+        /* the largest |reading| of any one axis, what a sensor's range must
+         * hold; '|f|' read as the norm (a review, 2026-11-30) */
+        fprintf(so, "peaks       largest on one axis: f %.1f m/s^2 (%.1f g), w %.2f rad/s (%.0f deg/s)\n", ctx.peak_f,
+                    ctx.peak_f / 9.80665, ctx.peak_w, ctx.peak_w * 180.0 / 3.14159265358979323846);
         fprintf(so, "log         %s\n", out);
         if (truth != NULL) {
             fprintf(so, "truth       %s\n", truth);

@@ -278,7 +278,13 @@ then pass "sim's written, dropped and duplicated counts agree with info's"; else
 # (they counted the dropped samples; a review)
 expect_exit 0 "every sample dropped" "$H" sim --duration 2 --rate 100 --out "$T/d0.csv" --effect dropout:prob=1
 expect_out_re "^samples     0 written" "no sample written"
-expect_out_re "^peaks       \|f\| 0\.0 m/s\^2 \(0\.0 g\), \|w\| 0\.00 rad/s" "no peak from dropped samples"
+expect_out_re "^peaks       largest on one axis: f 0\.0 m/s\^2 \(0\.0 g\), w 0\.00 rad/s" "no peak from dropped samples"
+# the peaks are the largest reading of any one axis (what a sensor's range
+# must hold), not the norm that '|f|' and '|w|' read as: a static log
+# (f = (0, 0, -g)) peaks at g, and the label says which (a review, 2026-11-30)
+expect_exit 0 "peaks of a static log" "$H" sim --motion stand --duration 1 --profile none --mount 0,45,0 --out "$T/pk.csv"
+expect_out_re "^peaks       largest on one axis: f 6\.9 m/s\^2 \(0\.7 g\), w 0\.00 rad/s" \
+    "peaks: the largest axis (g cos 45 deg = 6.9 m/s^2 at a 45 deg pitch mount), said so"
 expect_exit 0 "saturation at 4 g" "$H" sim --motion run --duration 15 --rate 200 --out "$T/s.bin" \
     --effect saturation:ch=acc:range=39.2266
 expect_exit 0 "info on clipping" "$H" info "$T/s.bin"
