@@ -1,6 +1,6 @@
 /* harness montecarlo: N seeds of a simulated motion through the navigation
  * filter; error growth with time and distance and the filter's consistency
- * (NEES against its chi-square band). docs/results-sim.md. */
+ * (NEES against its chi-square band). docs/simulator.md, "Monte Carlo"; docs/results-sim.md. */
 #include <cjson/cJSON.h>
 #include <errno.h>
 #include <gsl/gsl_cdf.h>
@@ -21,13 +21,13 @@
 static const hx_opt_t k_opts[] = {
     HX_SIM_OPTS,
     { "--seeds", "N", "number of runs, 1 to 100000 (seeds seed .. seed+N-1; default 50)", 0 },
-    { "--filter-profile", "NAME|FILE", "the filter's sensor profile, taken as given (default: --profile, read with --bias-sigma)", 0 },
+    { "--filter-profile", "NAME|FILE", "the filter's sensor profile, taken as given (default: --profile, read with --bias-sigma; navchip for --profile none)", 0 },
     { "--bias-model", "MODEL", "filter bias model: ar1 (default), off, or both (paired, on the same samples)", 0 },
     { "--detector", "KIND", "stance detector: shoe (default) or threshold", 0 },
     { "--samples", "KIND", "what the filter takes a sample for: instant or mean (default: what --decimation makes)", 0 },
     { "--param", "KEY=VALUE", "set a navigation parameter (list: --param help)", 1 },
     { "--bin", "S", "time bin of the growth curves, s (default 1)", 0 },
-    { "--json", "FILE", "results as JSON (docs/results-sim.md)", 0 },
+    { "--json", "FILE", "results as JSON (keys: docs/simulator.md, \"Monte Carlo\"; '-' for standard output)", 0 },
     { "--csv", "FILE", "growth curves and NEES per bin and variant ('-' for standard output)", 0 },
     { "--plot", "PNG", "error growth with the predicted sd, and position NEES with its band", 0 },
     { "--quiet", NULL, "no summary on standard output (none either when --json or --csv is '-')", 0 },
@@ -143,7 +143,9 @@ static const char *verdict(const cons_t *c)
     if (c->frac_in >= MC_CONSISTENT_FRAC) {
         return "consistent";
     }
-    return c->above >= c->below ? "over-confident" : "pessimistic";
+    /* as many bins above as below is neither (a tie was called
+     * over-confident, which docs/simulator.md defines as more above) */
+    return c->above > c->below ? "over-confident" : (c->below > c->above ? "pessimistic" : "inconsistent");
 }
 
 /* ------------------------------------------------------------ outputs */
@@ -692,6 +694,7 @@ int hx_cmd_montecarlo(int argc, char **argv)
             hx_error("montecarlo", "%s", err);
             return HX_EXIT_USAGE;
         }
+        hx_sim_warn_cut("montecarlo", motion, su.motion_name, su.duration_s);
         mc.sim.motion = motion;
         mc.sim.err = su.err;
         mc.sim.decim = su.decim;

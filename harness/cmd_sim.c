@@ -154,6 +154,8 @@ int hx_cmd_sim(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
 
+    hx_sim_warn_cut("sim", motion, motion_name, dur);
+
     memset(&meta, 0, sizeof meta);
     meta.format = HX_FMT_AUTO;
     meta.rate_hz = rate;
@@ -216,33 +218,38 @@ int hx_cmd_sim(int argc, char **argv)
         hx_error("sim", "%s: write failed (%s)", truth, strerror(errno));
         status = HX_EXIT_IO;
     }
-    if (status == HX_EXIT_OK && strcmp(out, "-") != 0) {
+    if (status == HX_EXIT_OK) {
+        /* with the log on standard output (--out -) the summary goes to
+         * standard error, as replay's (it was dropped; a review, 2026-11-30) */
+        FILE *so = strcmp(out, "-") == 0 ? stderr : stdout;
         hx_truth_t end;
         char spec[1024];
         int id;
         hx_motion_eval(motion, sc.duration_s, &end);
-        printf("motion      %s\n", motion_name);
-        printf("duration    %.3f s, %d strides, %.2f m between footfalls, ends at (%.3f, %.3f, %.3f) m\n",
-               sc.duration_s, hx_motion_strides_until(motion, sc.duration_s), end.odo_m, end.pos_m[0], end.pos_m[1], end.pos_m[2]);
-        printf("sampling    %g Hz, internal x%u (%s), seed %u\n", rate, fnav_imuerr_internal_factor(&sc.err),
-               sc.err.mask[FNAV_EFFECT_ALIAS]              ? "picked, no anti-alias filter"
-               : sc.decim == HX_DECIM_MEAN                 ? "interval means"
-               : fnav_imuerr_internal_factor(&sc.err) > 1u ? "anti-alias FIR"
-                                                             : "point samples",
-               sc.err.seed);
-        printf("profile     %s\n", profile);
+        fprintf(so, "motion      %s\n", motion_name);
+        fprintf(so, "duration    %.3f s, %d strides, %.2f m between footfalls, ends at (%.3f, %.3f, %.3f) m\n",
+                    sc.duration_s, hx_motion_strides_until(motion, sc.duration_s), end.odo_m, end.pos_m[0], end.pos_m[1], end.pos_m[2]);
+        fprintf(so, "sampling    %g Hz, internal x%u (%s), seed %u\n", rate, fnav_imuerr_internal_factor(&sc.err),
+                    sc.err.mask[FNAV_EFFECT_ALIAS]              ? "picked, no anti-alias filter"
+                    : sc.decim == HX_DECIM_MEAN                 ? "interval means"
+                    : fnav_imuerr_internal_factor(&sc.err) > 1u ? "anti-alias FIR"
+                                                                  : "point samples",
+                    sc.err.seed);
+        fprintf(so, "profile     %s\n", profile);
         for (id = 0; id < (int)FNAV_EFFECT_COUNT; id++) {
             if (hx_effect_format(&sc.err, (fnav_effect_id_t)id, spec, sizeof spec) > 0) {
-                printf("effect      %s\n", spec);
+                fprintf(so, "effect      %s\n", spec);
             }
         }
-        printf("samples     %zu written (%zu ticks, %zu dropped, %zu duplicated)\n", ctx.written, ctx.ticks,
-               ctx.dropped, ctx.dups);
-        printf("peaks       |f| %.1f m/s^2 (%.1f g), |w| %.2f rad/s (%.0f deg/s)\n", ctx.peak_f, ctx.peak_f / 9.80665,
-               ctx.peak_w, ctx.peak_w * 180.0 / 3.14159265358979323846);
-        printf("log         %s\n", out);
+        fprintf(so, "samples     %zu written (%zu ticks, %zu dropped, %zu duplicated)\n", ctx.written, ctx.ticks,
+                    ctx.dropped, ctx.dups);
+        /* the largest |reading| of any one axis, what a sensor's range must
+         * hold; '|f|' read as the norm (a review, 2026-11-30) */
+        fprintf(so, "peaks       largest on one axis: f %.1f m/s^2 (%.1f g), w %.2f rad/s (%.0f deg/s)\n", ctx.peak_f,
+                    ctx.peak_f / 9.80665, ctx.peak_w, ctx.peak_w * 180.0 / 3.14159265358979323846);
+        fprintf(so, "log         %s\n", out);
         if (truth != NULL) {
-            printf("truth       %s\n", truth);
+            fprintf(so, "truth       %s\n", truth);
         }
     }
     hx_motion_free(motion);

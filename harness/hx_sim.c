@@ -388,6 +388,23 @@ static int same_params(const fnav_imuerr_config_t *cfg, fnav_effect_id_t id, int
     return 1;
 }
 
+/* The shortest decimal that reads back as v (%.9g printed the float 0.05
+ * as 0.0500000007 and the MTx density 8.9e-4 as 0.000890000025; a review,
+ * 2026-11-30): what parses back to the same fnav_real_t is the same value. */
+static void shortest(char *out, size_t size, fnav_real_t v)
+{
+    const double a = fabs((double)v);
+    /* at least the integer digits, so that 210 is not 2.1e+02 */
+    int p, d = a >= 1.0 && a < 1e17 ? (int)floor(log10(a)) + 1 : 1;
+    for (p = d; p < 17; p++) {
+        snprintf(out, size, "%.*g", p, (double)v);
+        if ((fnav_real_t)strtod(out, NULL) == v) {
+            return;
+        }
+    }
+    snprintf(out, size, "%.17g", (double)v);
+}
+
 size_t hx_effect_format(const fnav_imuerr_config_t *cfg, fnav_effect_id_t id, char *buf, size_t size)
 {
     const fnav_effect_info_t *info = fnav_imuerr_effect_info(id);
@@ -444,7 +461,9 @@ size_t hx_effect_format(const fnav_imuerr_config_t *cfg, fnav_effect_id_t id, ch
             }
         }
         for (k = 0; k < info->nparams; k++) {
-            APPEND(":%s=%.9g", info->params[k].name, (double)fnav_imuerr_param_get(cfg, id, k, c0));
+            char v[40];
+            shortest(v, sizeof v, fnav_imuerr_param_get(cfg, id, k, c0));
+            APPEND(":%s=%s", info->params[k].name, v);
         }
 #undef APPEND
     }
@@ -485,6 +504,30 @@ void hx_profile_bias_eq6(fnav_profile_t *p)
                                                     sqrt((double)p->accel_tau_s[i] * (double)p->rate_hz) / 0.617);
         p->gyro_bias_sigma_rps[i] = (fnav_real_t)((double)p->gyro_bias_sigma_rps[i] *
                                                   sqrt((double)p->gyro_tau_s[i] * (double)p->rate_hz) / 0.617);
+    }
+}
+
+void hx_sim_warn_cut(const char *cmd, const hx_motion_t *m, const char *name, double duration_s)
+{
+    hx_truth_t at, end;
+    double full = hx_motion_duration(m), moved = 0.0;
+    int n, total = hx_motion_strides(m), i;
+    if (!(duration_s > 0.0) || duration_s >= full) {
+        return;
+    }
+    hx_motion_eval(m, duration_s, &at);
+    hx_motion_eval(m, full, &end);
+    n = hx_motion_strides_until(m, duration_s);
+    for (i = 0; i < 3; i++) {
+        moved += (end.pos_m[i] - at.pos_m[i]) * (end.pos_m[i] - at.pos_m[i]);
+    }
+    /* a 'walk' of 4 s was 4 s of standing and a 'loop' of 20 s ended 1.2 m
+     * from its start without a word (a review, 2026-11-30); the sized
+     * scenarios' last standing, cut by their whole strides, is no cut */
+    if (n < total || sqrt(moved) > 1e-6 || fabs(remainder(end.euler_rad[2] - at.euler_rad[2], 6.283185307179586)) > 1e-9) {
+        hx_warn(cmd, "--duration %g cuts the motion '%s' (%.1f s) short: the output ends after %d of its %d strides, "
+                     "%.2f m from where the motion ends%s",
+                duration_s, name, full, n, total, sqrt(moved), n == 0 ? " (no stride at all)" : "");
     }
 }
 
@@ -643,6 +686,16 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             return -1;
         }
         if (s->bias_eq6) {
+            fnav_profile_t builtin;
+            if (fnav_profile_by_name(&builtin, s->profile_name) != FNAV_OK) {
+                /* a file's bias sd is most likely a stationary sd already
+                 * (allan --profile writes one), which eq6 multiplies by
+                 * sqrt(tau rate) / 0.617 without a word (a review, 2026-11-30) */
+                hx_warn(cmd, "--bias-sigma eq6 rereads the bias sd of the profile file %s as the paper Tables' "
+                             "sigma_bias (eq. 6: x sqrt(tau_s rate_hz) / 0.617); a profile from `harness allan "
+                             "--profile` holds the stationary sd already: leave eq6 out for it (docs/simulator.md)",
+                        s->profile_name);
+            }
             hx_profile_bias_eq6(&s->profile);
         }
         if (fnav_imuerr_config_from_profile(&s->err, &s->profile) != FNAV_OK) {

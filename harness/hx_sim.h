@@ -77,7 +77,8 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
 /** The specification of an enabled effect as text that hx_effect_parse
  *  reads back to the same configuration: one space-separated
  *  "NAME:ch=..:P=V..." per group of channels with identical parameters
- *  (%.9g). Empty for an effect that is off. Returns the length needed. */
+ *  (each value the shortest decimal that reads back to it). Empty for an
+ *  effect that is off. Returns the length needed. */
 size_t hx_effect_format(const fnav_imuerr_config_t *cfg, fnav_effect_id_t id, char *buf, size_t size);
 
 /* ------------------------------------------------------------ options */
@@ -88,7 +89,8 @@ size_t hx_effect_format(const fnav_imuerr_config_t *cfg, fnav_effect_id_t id, ch
     { "--motion", "NAME|SCRIPT", "walk (default), run, stairs, elevator, stand, loop, paper, mixed, or a "     \
                                  "script such as stand:5,walk:20:90,stairs-up:12,home", 0 },                   \
     { "--duration", "S", "length of the output in seconds (stand, walk, run and loop are sized to it; other "   \
-                         "motions are cut short or end standing)", 0 },                                  \
+                         "motions are cut short or end standing; default: the motion's own length, stand, walk " \
+                         "and run sized to 60 s and loop to 90 s, in whole strides)", 0 },                      \
     { "--rate", "HZ", "output sample rate (default 200)", 0 },                                                  \
     { "--profile", "NAME|FILE", "sensor noise: navchip (default), mtx, shimmer, generic-mems, a profile file, or none", 0 },  \
     { "--bias-sigma", "READING", "paper Tables' sigma_bias: given (default, eq. 4: stationary sd) or eq6 "     \
@@ -127,6 +129,11 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
  *  is BS = sigma_bias sqrt(tau / T_s) and a Gauss-Markov process with that
  *  floor has a stationary sd of BS / 0.617 (docs/simulator.md). */
 void hx_profile_bias_eq6(fnav_profile_t *p);
+
+/** Warn (as @p cmd) when @p duration_s (> 0) ends the output before the
+ *  motion @p m (named @p name) is done: a stride, a turn or a ride still to
+ *  come. Cutting the final standing short is no cut. */
+void hx_sim_warn_cut(const char *cmd, const hx_motion_t *m, const char *name, double duration_s);
 
 /** Channel mask of a channel list ("gyro", "ax+gz"); 0 when invalid. */
 uint32_t hx_channels_parse(const char *s);

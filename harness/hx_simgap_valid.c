@@ -632,6 +632,17 @@ int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size)
     return 0;
 }
 
+/* A figure in `width` columns with `prec` decimals, or "-" where it is
+ * undefined (NaN). */
+static void fig(char *buf, size_t size, int width, int prec, double v)
+{
+    if (v == v) {
+        snprintf(buf, size, "%*.*f", width, prec, v);
+    } else {
+        snprintf(buf, size, "%*s", width, "-");
+    }
+}
+
 int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t err_size)
 {
     int types[2 + NEFF], ntypes, i;
@@ -707,7 +718,7 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
         score(res, cs);
         cs->elapsed_s = hx_now_s() - t0;
         if (f != NULL) {
-            char mk[32];
+            char mk[32], mu[24], lo[24], pe[24], sh[24];
             int ch, m = 0;
             for (ch = 0; ch < SG_NCH; ch++) {
                 if ((cs->mask >> ch) & 1u) {
@@ -717,11 +728,19 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
             if (m == 0) {
                 snprintf(mk, sizeof mk, "-");
             }
-            fprintf(f, "case %3d  %-6s %-8s %-13s on %-9s x%-6.2f -> %-13s %-17s loc %.2f perr %6.2f shrink %6.2f (%.1f s)\n",
+            /* '-' where a figure is undefined, as the Markdown: no parameter
+             * error or shrink without the right effect (it printed nan), and
+             * a control has no effect, so no multiple of a threshold and no
+             * place (it printed the unused draw, x1.83, and loc 0.00) */
+            fig(mu, sizeof mu, 0, 2, cs->truth >= 0 ? cs->mult : (double)NAN);
+            fig(lo, sizeof lo, 0, 2, cs->truth >= 0 ? cs->jaccard : (double)NAN);
+            fig(pe, sizeof pe, 6, 2, cs->perr);
+            fig(sh, sizeof sh, 6, 2, cs->shrink);
+            fprintf(f, "case %3d  %-6s %-8s %-13s on %-9s x%-6s -> %-13s %-17s loc %-4s perr %s shrink %s (%.1f s)\n",
                     i, cs->walk ? "walk" : "static", k_prof[cs->profile % 3],
-                    cs->truth >= 0 ? k_eff[cs->truth].name : "control", mk, cs->mult,
-                    cs->pred >= 0 ? k_eff[cs->pred].name : (cs->pred == -1 ? "none" : "other"), cs->verdict,
-                    cs->jaccard, cs->perr, cs->shrink, cs->elapsed_s);
+                    cs->truth >= 0 ? k_eff[cs->truth].name : "control", mk, mu,
+                    cs->pred >= 0 ? k_eff[cs->pred].name : (cs->pred == -1 ? "none" : "other"), cs->verdict, lo, pe,
+                    sh, cs->elapsed_s);
             fflush(f);
         }
         hx_log_free(&log);
@@ -732,6 +751,13 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
 }
 
 /* ------------------------------------------------------------ report */
+
+/* The width of a confusion-matrix column: its name's, at least 3. */
+static int conf_width(const char *name)
+{
+    int w = (int)strlen(name);
+    return w > 3 ? w : 3;
+}
 
 /* Wilson score interval of k of n (95 %). */
 static void wilson(int k, int n, double *lo, double *hi)
@@ -786,6 +812,7 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
     agg_t *cls = (agg_t *)calloc(SGV_NCLASS, sizeof *cls), *bins = (agg_t *)calloc(3 * SGV_NCLASS, sizeof *bins);
     double *medv = (double *)malloc((size_t)(n > 0 ? n : 1) * 2 * SGV_NCLASS * sizeof *medv);
     int i, j, k, nctrl = 0, fa = 0, nctrl_w = 0, fa_w = 0, short_s = 0, short_w = 0, nrun = 0, incomplete;
+    int short_cls[SGV_NCLASS] = { 0, 0, 0 }, nshort = 0; /* effect cases answered too-short, per class */
     int conf[NEFF + 1][NEFF + 2];
     double lo, hi;
     const char *sep = md ? " | " : "  ";
@@ -825,6 +852,10 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
             continue;
         }
         agg_add(&cls[k_eff[c->truth].cls], c);
+        if (strcmp(c->verdict, "too-short") == 0) {
+            short_cls[k_eff[c->truth].cls]++;
+            nshort++;
+        }
         {
             int b = c->mult < 2.0 ? 0 : (c->mult < 4.0 ? 1 : 2);
             agg_add(&bins[3 * k_eff[c->truth].cls + b], c);
@@ -880,6 +911,18 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
                 100.0 * lo, 100.0 * hi, sep, a->loc_exact, a->n, a->jac / a->n, sep, a->pe_ok, a->pe_n, pe_med, sep,
                 a->sh_ok, a->sh_n, sh_med, md ? " |" : "");
     }
+    if (nshort > 0) {
+        /* a class's 0/8 with every case too short said nothing of why in
+         * the summary (a review, 2026-11-30) */
+        fprintf(f, "%s", md ? "\nToo short for an answer: " : "too short for an answer: ");
+        for (k = 0, j = 0; k < SGV_NCLASS; k++) {
+            if (short_cls[k] > 0) {
+                fprintf(f, "%s%s %d of %d", j++ ? ", " : "", k_cls[k], short_cls[k], cls[k].n);
+            }
+        }
+        fprintf(f, " (scored as misses: no top-1, location or parameter; docs/simgap.md, \"Too short\")%s\n",
+                md ? "." : "");
+    }
     if (md) {
         fprintf(f, "\nControls (no effect): ");
     } else {
@@ -921,7 +964,10 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
         fprintf(f, "Top-1 by magnitude (multiple of the detectable threshold; quant: of 30 ulp, jitter: of 0.1 us):\n\n"
                    "| class | 1-2x | 2-4x | >= 4x |\n| --- | --- | --- | --- |\n");
     } else {
-        fprintf(f, "top-1 by magnitude:       1-2x          2-4x          >= 4x\n");
+        /* the counts under their column's name (the names stood 14
+         * columns to the right of the counts; a review, 2026-11-30) */
+        fprintf(f, "top-1 by magnitude (multiple of the detectable threshold; quant: of 30 ulp, jitter: of 0.1 us):\n"
+                   "  %-8s  %7s  %7s  %7s\n", "", "1-2x", "2-4x", ">= 4x");
     }
     for (k = 0; k < SGV_NCLASS; k++) {
         if (cls[k].n == 0) {
@@ -930,7 +976,13 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
         fprintf(f, "%s%-8s", md ? "| " : "  ", k_cls[k]);
         for (j = 0; j < 3; j++) {
             agg_t *a = &bins[3 * k + j];
-            fprintf(f, "%s%3d/%-3d%s", sep, a->top1, a->n, a->n > 0 ? "" : "");
+            if (md) {
+                fprintf(f, "%s%3d/%-3d", sep, a->top1, a->n);
+            } else {
+                char kn[24];
+                snprintf(kn, sizeof kn, "%d/%d", a->top1, a->n);
+                fprintf(f, "%s%7s", sep, kn);
+            }
         }
         fprintf(f, "%s\n", md ? " |" : "");
     }
@@ -946,11 +998,15 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
         }
         fprintf(f, " |\n");
     } else {
-        fprintf(f, "confusion (rows truth, columns answer): none");
+        /* each count under its column's name, right-aligned to it (the
+         * names ran on the title line, the counts 4 characters apart; a
+         * review, 2026-11-30) */
+        fprintf(f, "confusion (rows: the withheld effect; columns: the diagnosis's top-ranked effect):\n  %-13s %4s",
+                "", "none");
         for (j = 0; j < NEFF; j++) {
-            fprintf(f, " %s", k_eff[j].name);
+            fprintf(f, " %*s", conf_width(k_eff[j].name), k_eff[j].name);
         }
-        fprintf(f, " other\n");
+        fprintf(f, " %5s\n", "other");
     }
     for (i = 0; i <= NEFF; i++) {
         int tot = 0;
@@ -968,7 +1024,7 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
                     fprintf(f, "%d", conf[i][j]);
                 }
             } else {
-                fprintf(f, " %3d", conf[i][j]);
+                fprintf(f, " %*d", j == 0 ? 4 : (j == NEFF + 1 ? 5 : conf_width(k_eff[j - 1].name)), conf[i][j]);
             }
         }
         fprintf(f, "%s\n", md ? " |" : "");
@@ -1019,7 +1075,7 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
                    "parameter error | shrink | time (s) |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
         for (i = 0; i < n; i++) {
             const sgv_case_t *c = &cases[i];
-            char mk[32];
+            char mk[32], mu[24], loc[24];
             int ch, m = 0;
             if (c->truth == SGV_NOT_RUN) {
                 continue;
@@ -1032,9 +1088,13 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
             if (m == 0) {
                 snprintf(mk, sizeof mk, "-");
             }
-            fprintf(f, "| %d | %s | %s | %s | %s | %.2f | %s | %s | %.2f | ", i, c->walk ? "walk" : "static",
-                    k_prof[c->profile % 3], c->truth >= 0 ? k_eff[c->truth].name : "control", mk, c->mult,
-                    c->pred >= 0 ? k_eff[c->pred].name : (c->pred == -1 ? "none" : "other"), c->verdict, c->jaccard);
+            /* a control has no effect: no multiple of a threshold, no
+             * place (it showed the unused draw and a location of 0.00) */
+            fig(mu, sizeof mu, 0, 2, c->truth >= 0 ? c->mult : (double)NAN);
+            fig(loc, sizeof loc, 0, 2, c->truth >= 0 ? c->jaccard : (double)NAN);
+            fprintf(f, "| %d | %s | %s | %s | %s | %s | %s | %s | %s | ", i, c->walk ? "walk" : "static",
+                    k_prof[c->profile % 3], c->truth >= 0 ? k_eff[c->truth].name : "control", mk, mu,
+                    c->pred >= 0 ? k_eff[c->pred].name : (c->pred == -1 ? "none" : "other"), c->verdict, loc);
             if (c->perr == c->perr) {
                 fprintf(f, "%.3f | ", c->perr);
             } else {

@@ -9,6 +9,12 @@ trap 'rm -rf "$T"' EXIT
 . "$(dirname "$0")/lib.sh"
 
 expect_exit 0 "montecarlo --help" "$H" montecarlo --help
+# the document --json's help names holds the JSON's keys (it named
+# docs/results-sim.md, which has none of them; they are in docs/simulator.md,
+# "Monte Carlo"; a review, 2026-11-30)
+doc=$(sed -n 's/^  --json .*\(docs\/[a-z-]*\.md\).*/\1/p' "$T/out")
+if [ -n "$doc" ] && grep -q '`final_h_rms_m`' "$(dirname "$0")/../../$doc" && grep -q '`variants' "$(dirname "$0")/../../$doc"
+then pass "--json's help names the document with its keys ($doc)"; else fail "--json's help names '$doc', without the keys"; fi
 expect_exit 2 "bad effect" "$H" montecarlo --effect wobble
 "$H" montecarlo --seeds 1 --duration 8 --quiet >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" -eq 0 ]; then pass "montecarlo small run (exit 0)"; else fail "montecarlo small run: exit $rc"; cat "$T/err"; fi
@@ -47,6 +53,40 @@ walk(j)
 sys.exit(0 if n > 0 else 'no verdict in the JSON')
 PY
 then pass "NEES verdicts follow the per-bin rule"; else fail "NEES verdicts"; fi
+# ... and its direction: over-confident with more bins above the band than
+# below, pessimistic with more below, 'inconsistent' with as many (a tie was
+# called over-confident, which docs/simulator.md defines as more above; 3 mtx
+# runs of 20 s put the attitude of the 'off' variant 3 above and 3 below; a
+# review, 2026-11-30). The bins and their bands from the CSV.
+expect_exit 0 "montecarlo for the verdict's direction" "$H" montecarlo --seeds 3 --duration 20 --profile mtx \
+    --bias-model both --quiet --json "$T/dir.json" --csv "$T/dir.csv"
+if /usr/bin/python3 - "$T/dir.json" "$T/dir.csv" <<'PY'
+import csv, json, sys
+j = json.load(open(sys.argv[1]))
+rows = list(csv.DictReader(open(sys.argv[2])))
+ties = 0
+for v in j['variants']:
+    for g, c in v['nees'].items():
+        if c['verdict'] is None:
+            continue
+        above = below = inside = 0
+        for r in rows:
+            if r['variant'] != v['name'] or r['nees_' + g] == '':
+                continue
+            x, lo, hi = float(r['nees_' + g]), float(r['lo_' + g]), float(r['hi_' + g])
+            above += x > hi
+            below += x < lo
+            inside += lo <= x <= hi
+        n = above + below + inside
+        want = ('consistent' if inside >= 0.8 * n else 'over-confident' if above > below
+                else 'pessimistic' if below > above else 'inconsistent')
+        ties += above == below and inside < 0.8 * n
+        if c['verdict'] != want:
+            sys.exit('%s %s: verdict %s with %d above, %d below, %d inside' % (v['name'], g, c['verdict'], above, below, inside))
+if ties == 0:
+    print('(no tie in this run: the tie rule is not exercised)')
+PY
+then pass "NEES verdicts: the direction follows the bins above and below"; else fail "NEES verdict direction"; fi
 # a group without NEES (the biases without the bias model) has no verdict
 # (it was 'over-confident', the fallback of an undefined fraction in band)
 if json "$T/mc.json" '[v["nees"][g]["verdict"] for v in j["variants"] if v["name"] == "off" for g in ("bias", "all")] == [None, None]'
@@ -92,15 +132,20 @@ then pass "no final estimate: the final statistics are null"; else fail "no fina
 # exited 3 where the run without it exits 0; and runs with one growth bin made gnuplot warn "empty x range" on
 # standard error (found by the plots review): panels that say so, and a range around the one bin
 if command -v gnuplot >/dev/null 2>&1; then
-    expect_exit 0 "montecarlo --plot without an aligned estimate" "$H" montecarlo --seeds 2 --duration 0.2 \
+    expect_exit 0 "montecarlo --plot without an aligned estimate" "$H" montecarlo --motion stand --seeds 2 --duration 0.2 \
         --bias-model both --quiet --plot "$T/none.png"
     [ -s "$T/none.png" ] && ! grep -qi "warning\|gnuplot\|invalid" "$T/err" &&
         pass "no aligned estimate: the picture drawn, no gnuplot message" || fail "no aligned estimate: $(cat "$T/err")"
-    expect_exit 0 "montecarlo --plot with one growth bin" "$H" montecarlo --seeds 2 --duration 1 --rate 100 --quiet \
+    expect_exit 0 "montecarlo --plot with one growth bin" "$H" montecarlo --motion stand --seeds 2 --duration 1 --rate 100 --quiet \
         --plot "$T/one.png"
     [ -s "$T/one.png" ] && ! grep -qi "warning\|gnuplot" "$T/err" && pass "one growth bin: no gnuplot warning" ||
         fail "one growth bin: $(cat "$T/err")"
 fi
+# (--motion stand: the default walk's first 5 s, the same samples, without
+# the warning of a walk cut short, which says the run has no stride:)
+expect_exit 0 "montecarlo of a walk cut at 4 s" "$H" montecarlo --seeds 1 --duration 4 --quiet
+expect_err "warning: --duration 4 cuts the motion 'walk' (12.2 s) short: the output ends after 0 of its 2 strides" \
+    "montecarlo: a walk cut before its first stride is said"
 # a profile file is an input: an output onto it is refused (the CSV
 # replaced it, exit 0)
 for o in json csv plot; do

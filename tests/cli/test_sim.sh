@@ -103,6 +103,12 @@ expect_exit 0 "eq6 on the ideal sensor" "$H" sim --out "$T/x.csv" --duration 1 -
 expect_err "no bias model: ignored" "eq6 without a profile said"
 expect_exit 0 "eq6 on a profile" "$H" sim --out "$T/x.csv" --duration 1 --profile mtx --bias-sigma eq6
 if grep -q "ignored" "$T/err"; then fail "eq6 with a profile warned"; else pass "eq6 with a profile: no warning"; fi
+# ... and on a profile file it is said: a file's bias sd is most likely the
+# stationary sd of `allan --profile`, which eq6 made 50-600 times larger
+# without a word (a review, 2026-11-30)
+expect_exit 0 "eq6 on a profile file" "$H" sim --out "$T/x.csv" --duration 1 --bias-sigma eq6 \
+    --profile "$(dirname "$0")/../../docs/profiles/generic-mems.profile"
+expect_err "warning: --bias-sigma eq6 rereads the bias sd of the profile file" "eq6 on a profile file is said"
 # a gait figure derived from --speed keeps its option's range (50 m strides
 # were walked; a cadence of 1200 /min was blamed on the gait fractions)
 expect_exit 2 "derived stride out of range" "$H" sim --out "$T/x.csv" --duration 5 --speed 10 --cadence 20
@@ -190,6 +196,30 @@ done
 if cmp -s "$T/ring1.csv" "$T/ringd.csv"; then pass "--ring-scale 1 is the default"; else fail "--ring-scale 1 differs from the default"; fi
 if cmp -s "$T/ring0.csv" "$T/ringd.csv"; then fail "--ring-scale 0 left the walk's ringing"; else pass "--ring-scale 0 changes the walk"; fi
 
+# --- a --duration that cuts the motion before its last stride (or ride) is
+# said: a 'walk' of 4 s is 4 s of standing, a 'loop' of 20 s ends 1.2 m from
+# its start, which the document says it ends at (both silent; a review,
+# 2026-11-30); a walk whose last standing is shortened, or a script
+# lengthened by standing, is not cut
+for c in "walk 4" "loop 20" "paper 30" "stand:1,elevator:3 3"; do
+    set -- $c
+    expect_exit 0 "sim $1 cut at $2 s" "$H" sim --motion "$1" --duration "$2" --out "$T/cut.bin"
+    expect_err "warning: --duration $2 cuts the motion '$1'" "the cut of '$1' at $2 s is said"
+done
+for c in "walk 60" "walk 30" "loop 90" "stand:1,walk:3 20"; do
+    set -- $c
+    expect_exit 0 "sim $1 for $2 s" "$H" sim --motion "$1" --duration "$2" --out "$T/cut.bin"
+    if grep -q "cuts the motion" "$T/err"; then fail "'$1' for $2 s called cut: $(cat "$T/err")"; else pass "'$1' for $2 s: no cut said"; fi
+done
+# the defaults of --duration are in the help, and are what runs
+expect_exit 0 "sim --help" "$H" sim --help
+expect_out "default: the motion's own length, stand, walk and run sized to 60 s and loop to 90 s, in whole strides" \
+    "--help gives --duration's defaults"
+expect_exit 0 "sim loop, default duration" "$H" sim --motion loop --rate 50 --out "$T/loop.bin"
+expect_out_re "^duration    (8[5-9]|9[0-5])\.[0-9]+ s" "the default loop lasts about 90 s"
+expect_exit 0 "sim walk, default duration" "$H" sim --rate 50 --out "$T/walk.bin"
+expect_out_re "^duration    (5[5-9]|6[0-5])\.[0-9]+ s" "the default walk lasts about 60 s"
+
 # --- the summary counts the strides of the output, not of the whole motion
 # (a 30 s cut of 'paper' said 154 strides, those of its 185 s)
 expect_exit 0 "sim walk cut before the first stride" "$H" sim --motion walk --duration 4 --out "$T/w4.bin"
@@ -213,6 +243,23 @@ if [ "$n" -eq 1002 ]; then pass "CSV rows"; else fail "CSV rows $n, expected 100
 expect_exit 0 "CSV on stdout" "$H" sim --duration 1 --rate 100 --out -
 n=$(wc -l <"$T/out")
 if [ "$n" -eq 102 ]; then pass "CSV on stdout rows"; else fail "stdout rows $n, expected 102"; fi
+# ... and the summary on standard error, as replay's with --out - (it was
+# dropped: no word of the profile, effects or samples; a review, 2026-11-30)
+expect_err "^samples     101 written" "--out -: the summary on standard error"
+if grep -q "^samples" "$T/out"; then fail "--out -: the summary in the CSV"; else pass "--out -: the CSV alone on standard output"; fi
+
+# --- the summary's effect lines give the values as set, not their float
+# rounding (0.05 was printed 0.0500000007, the MTx density 0.00089
+# 0.000890000025; a review, 2026-11-30), and still parse back to them
+expect_exit 0 "effect values in the summary" "$H" sim --out "$T/x.csv" --duration 1 --profile mtx \
+    --effect offset:value=0.05 --effect quant:ch=gyro:lsb=1.0653e-3
+expect_out_re "^effect      offset:ch=all:value=0\.05$" "offset 0.05 printed as given"
+expect_out "white:ch=ax:density=0.00089 " "the MTx density printed as tabulated"
+expect_out "quant:ch=gyro:lsb=0.0010653:shaped=0" "the quantisation step printed as given"
+spec=$(sed -n 's/^effect      \(offset:.*\)$/\1/p' "$T/out")
+expect_exit 0 "the printed effect run again" "$H" sim --out "$T/y.csv" --duration 1 --profile mtx --effect "$spec" \
+    --effect quant:ch=gyro:lsb=1.0653e-3
+if cmp -s "$T/x.csv" "$T/y.csv"; then pass "the printed effect is the one set"; else fail "'$spec' gives another log"; fi
 
 # --- effects that `harness info` sees
 expect_exit 0 "dropout + duplicate" "$H" sim --duration 20 --rate 100 --out "$T/d.bin" \
@@ -231,7 +278,13 @@ then pass "sim's written, dropped and duplicated counts agree with info's"; else
 # (they counted the dropped samples; a review)
 expect_exit 0 "every sample dropped" "$H" sim --duration 2 --rate 100 --out "$T/d0.csv" --effect dropout:prob=1
 expect_out_re "^samples     0 written" "no sample written"
-expect_out_re "^peaks       \|f\| 0\.0 m/s\^2 \(0\.0 g\), \|w\| 0\.00 rad/s" "no peak from dropped samples"
+expect_out_re "^peaks       largest on one axis: f 0\.0 m/s\^2 \(0\.0 g\), w 0\.00 rad/s" "no peak from dropped samples"
+# the peaks are the largest reading of any one axis (what a sensor's range
+# must hold), not the norm that '|f|' and '|w|' read as: a static log
+# (f = (0, 0, -g)) peaks at g, and the label says which (a review, 2026-11-30)
+expect_exit 0 "peaks of a static log" "$H" sim --motion stand --duration 1 --profile none --mount 0,45,0 --out "$T/pk.csv"
+expect_out_re "^peaks       largest on one axis: f 6\.9 m/s\^2 \(0\.7 g\), w 0\.00 rad/s" \
+    "peaks: the largest axis (g cos 45 deg = 6.9 m/s^2 at a 45 deg pitch mount), said so"
 expect_exit 0 "saturation at 4 g" "$H" sim --motion run --duration 15 --rate 200 --out "$T/s.bin" \
     --effect saturation:ch=acc:range=39.2266
 expect_exit 0 "info on clipping" "$H" info "$T/s.bin"

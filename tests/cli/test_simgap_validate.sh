@@ -68,6 +68,64 @@ json "$T/wts.json" 'len(j["results"]) == 10 and all(r["verdict"] == "too-short" 
 json "$T/wts.json" 'all(r["answer"] == "none" and r["location_jaccard"] == 0 and r["param_rel_error"] is None
     for r in j["results"])' && pass "a too-short effect case is no answer" || fail "too-short scored: $(cat "$T/out")"
 expect_out_re "^motion +8 +0/8 +0/8 += +0\.0 % .* 0/8 +/ 0\.00 +0/0 +\(-\) +0/0 +\(-\)$" "too-short effect cases: no top-1, location or parameter in the summary ('-' for no median: it printed nan)"
+# ... and the summary says why (0/8 with every case line saying too-short,
+# and the target "no", without a word on it in the summary; a review,
+# 2026-11-30), in the Markdown too
+expect_out "^too short for an answer: motion 8 of 8 (scored as misses: no top-1, location or parameter" \
+    "too-short effect cases are counted in the summary"
+expect_exit 0 "walks too short, Markdown" "$H" simgap-validate --walk-only --cases 3 --walk-duration 20 --walk-rate 50 \
+    --seeds 3 --quiet --markdown "$T/wts.md"
+grep -q "^Too short for an answer: motion 3 of 3 (scored as misses" "$T/wts.md" &&
+    pass "too-short effect cases are counted in the Markdown" || fail "Markdown: $(grep -i 'short' "$T/wts.md")"
+
+# the terminal summary reads as a table: each count of the confusion matrix
+# and of the top-1 by magnitude under its column's name (the names ran on
+# one line after the title, the counts 4 characters apart: the 1 of a
+# misalign row stood under 'jumps'), no 'nan' for a case without a
+# parameter or shrink, and a control has no multiple of a threshold or
+# location ('x1.83' and 'loc 0.00': it has no effect to locate; a review,
+# 2026-11-30)
+expect_exit 0 "a control and a line" "$H" simgap-validate --cases 2 --effects control,vibration $FAST \
+    --markdown "$T/cv.md"
+if "$PY" - "$T/out" <<'PY'
+import re, sys
+lines = open(sys.argv[1]).read().split('\n')
+names = ['none', 'quant', 'quant_shaped', 'flicker', 'rrw', 'ramp', 'thermal', 'vibration', 'jumps', 'jitter',
+         'dropout', 'duplicate', 'scale', 'misalign', 'gsens', 'saturation', 'other']
+def ends(line, cols):
+    e, at = [], 0
+    for c in cols:
+        m = re.compile(r'(?<!\S)' + re.escape(c) + r'(?!\S)').search(line, at)
+        if m is None:
+            sys.exit('no column %s in %r' % (c, line))
+        e.append(m.end())
+        at = m.end()
+    return e
+def check(title, cols):
+    i = [k for k, l in enumerate(lines) if all(re.search(r'(?<!\S)%s(?!\S)' % re.escape(c), l) for c in cols)]
+    if not i:
+        sys.exit('no header for ' + title)
+    want = ends(lines[i[0]], cols)
+    rows = 0
+    for l in lines[i[0] + 1:]:
+        if not l.startswith('  ') or not re.search(r'\d', l):
+            break
+        got = [m.end() for m in re.finditer(r'\S+', l)][1:]
+        if got != want:
+            sys.exit('%s: %r: ends %s, header %s' % (title, l, got, want))
+        rows += 1
+    if rows == 0:
+        sys.exit('no rows under ' + title)
+check('confusion', names)
+check('by magnitude', ['1-2x', '2-4x', '>=4x'] if '>=4x' in open(sys.argv[1]).read() else ['1-2x', '2-4x', '4x'])
+PY
+then pass "confusion matrix and top-1 by magnitude: counts under their columns"
+else fail "summary columns: $(cat "$T/out")"; fi
+if grep -q "nan" "$T/out"; then fail "nan in the summary: $(grep nan "$T/out")"; else pass "no nan in the summary"; fi
+expect_out_re "^case +1 +static +[a-z]+ +control +on - +x- +-> none .* loc - +perr +- +shrink +- " \
+    "a control's line: no multiple, no location"
+grep -q "^| 1 | static | [a-z]* | control | - | - | none | [a-z-]* | - | - | - |" "$T/cv.md" &&
+    pass "a control's Markdown row: no multiple, no location" || fail "control row: $(grep '| control |' "$T/cv.md")"
 
 # --only K runs one case: the summary counts one case, not --cases N
 expect_exit 0 "--only one case" "$H" simgap-validate --cases 8 --only 6 $FAST --json "$T/o.json" --markdown "$T/o.md"
