@@ -411,6 +411,7 @@ void hx_progress_update(hx_progress_t *p, double done)
 {
     double now, frac;
     int decile;
+    char left[48] = "";
     now = hx_now_s();
     if (now - p->t_start < 1.0) {
         return;
@@ -419,11 +420,16 @@ void hx_progress_update(hx_progress_t *p, double done)
     if (frac > 1.0) {
         frac = 1.0;
     }
+    /* the time left at the rate so far, once 5 % and 2 s of it give a rate to go by */
+    if (frac >= 0.05 && frac < 1.0 && now - p->t_start >= 2.0) {
+        (void)snprintf(left, sizeof left, ", about %.0f s left", (now - p->t_start) * (1.0 - frac) / frac);
+    }
     if (p->tty) {
         if (now - p->t_last < 0.2 && p->shown) {
             return;
         }
-        fprintf(stderr, "\r%s: %3.0f %% (%.1f s)", p->label, 100.0 * frac, now - p->t_start);
+        /* the trailing blanks clear a longer line drawn before */
+        fprintf(stderr, "\r%s: %3.0f %% (%.1f s%s)   ", p->label, 100.0 * frac, now - p->t_start, left);
         fflush(stderr);
     } else {
         decile = (int)(frac * 10.0);
@@ -431,7 +437,7 @@ void hx_progress_update(hx_progress_t *p, double done)
             return;
         }
         p->last_decile = decile;
-        fprintf(stderr, "%s: %3.0f %% (%.1f s)\n", p->label, 100.0 * frac, now - p->t_start);
+        fprintf(stderr, "%s: %3.0f %% (%.1f s%s)\n", p->label, 100.0 * frac, now - p->t_start, left);
     }
     p->shown = 1;
     p->t_last = now;
@@ -440,7 +446,9 @@ void hx_progress_update(hx_progress_t *p, double done)
 void hx_progress_end(hx_progress_t *p)
 {
     if (p->shown) {
-        fprintf(stderr, "%s%s: done in %.1f s\n", p->tty ? "\r" : "", p->label, hx_now_s() - p->t_start);
+        /* on a terminal the blanks clear the rest of the longer progress line */
+        fprintf(stderr, "%s%s: done in %.1f s%s\n", p->tty ? "\r" : "", p->label, hx_now_s() - p->t_start,
+                p->tty ? "                        " : "");
     }
 }
 
