@@ -645,7 +645,7 @@ static void fig(char *buf, size_t size, int width, int prec, double v)
 
 int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t err_size)
 {
-    int types[2 + NEFF], ntypes, i;
+    int types[2 + NEFF], ntypes, i, told_short[2]; /* a too-short case of the static, walk domain explained */
     ntypes = case_types(o, types);
     if (ntypes == 0) {
         snprintf(err, err_size, "no case kinds selected");
@@ -654,6 +654,7 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
     for (i = 0; i < o->cases; i++) {
         cases[i].truth = SGV_NOT_RUN; /* until scored */
     }
+    told_short[0] = told_short[1] = 0;
     for (i = 0; i < o->cases; i++) {
         sgv_case_t *cs = &cases[i];
         int type = case_type(o, types, ntypes, i);
@@ -741,6 +742,13 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
                     cs->truth >= 0 ? k_eff[cs->truth].name : "control", mk, mu,
                     cs->pred >= 0 ? k_eff[cs->pred].name : (cs->pred == -1 ? "none" : "other"), cs->verdict, lo, pe,
                     sh, cs->elapsed_s);
+            /* why, at the first too-short case of each domain: a run of them
+             * said so only in the summary at its end (a review, 2026-11-30) */
+            if (strcmp(cs->verdict, "too-short") == 0 && !told_short[cs->walk ? 1 : 0]) {
+                told_short[cs->walk ? 1 : 0] = 1;
+                fprintf(f, "          too short for an answer: %s (a longer %s gives one)\n", res->why,
+                        cs->walk ? "--walk-duration" : "--duration");
+            }
             fflush(f);
         }
         hx_log_free(&log);

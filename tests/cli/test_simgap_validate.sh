@@ -65,6 +65,10 @@ expect_exit 0 "walks too short" "$H" simgap-validate --walk-only --cases 10 --wa
     --seeds 3 --json "$T/wts.json"
 json "$T/wts.json" 'len(j["results"]) == 10 and all(r["verdict"] == "too-short" for r in j["results"])' &&
     pass "the short walks are too-short" || fail "short walks: $(cat "$T/out")"
+# ... said why at the first such case, once (only the summary at the end
+# said so; a review, 2026-11-30)
+[ "$(grep -c "^ *too short for an answer: the held-out segment has .* stance.* (a longer --walk-duration gives one)$" "$T/out")" = 1 ] &&
+    pass "the first too-short walk says why, once" || fail "too-short walks: no reason at the first: $(head -3 "$T/out")"
 json "$T/wts.json" 'all(r["answer"] == "none" and r["location_jaccard"] == 0 and r["param_rel_error"] is None
     for r in j["results"])' && pass "a too-short effect case is no answer" || fail "too-short scored: $(cat "$T/out")"
 expect_out_re "^motion +8 +0/8 +0/8 += +0\.0 % .* 0/8 +/ 0\.00 +0/0 +\(-\) +0/0 +\(-\)$" "too-short effect cases: no top-1, location or parameter in the summary ('-' for no median: it printed nan)"
