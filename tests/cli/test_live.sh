@@ -111,6 +111,10 @@ timeout $LIMIT "$H" live --help >/dev/null 2>&1; expect_rc $? 0 "live --help"
 timeout $LIMIT "$H" live /dev/nonexistent-port >/dev/null 2>"$T/err"; expect_rc $? 3 "live on a missing port"
 grep_in "$T/err" "nonexistent-port" "the error names the port"
 timeout $LIMIT "$H" live /dev/null >/dev/null 2>"$T/err"; expect_rc $? 3 "live on /dev/null (not a serial port)"
+# (it said "/dev/null: not a serial port libserialport knows (no /sys/class/tty
+# entry): No such file or directory", of a file that exists; the live review)
+if grep -q "No such file" "$T/err"; then fail "the error on /dev/null says it does not exist: $(cat "$T/err")"; else pass "the error on /dev/null does not say it is missing"; fi
+grep_in "$T/err" "no /sys/class/tty/null" "the error names the sysfs entry libserialport looks for"
 timeout $LIMIT "$H" live /dev/null --rate 100 >/dev/null 2>"$T/err"; expect_rc $? 2 "live --rate (resampling needs the whole log)"
 timeout $LIMIT "$H" live /dev/null --bias-model nope >/dev/null 2>"$T/err"; expect_rc $? 2 "live --bias-model nope"
 timeout $LIMIT "$H" live "$T/orig.csv" --baud 0 >/dev/null 2>&1; expect_rc $? 2 "live --baud 0"
@@ -129,6 +133,12 @@ done
 start_link
 # the real libserialport path refuses a pty: this is why the seam exists
 timeout $LIMIT "$H" live "$A" >/dev/null 2>"$T/err"; expect_rc $? 3 "live on a pty without the seam"
+# by the link socat made, as a user following the docs types it: the error
+# names that path and says what to do (it named /dev/pts/N only, with "No such
+# file or directory" and no word of the seam; the live review, 2026-11-30)
+timeout $LIMIT "$H" live "$T/a" >/dev/null 2>"$T/err"; expect_rc $? 3 "live on a pty's link without the seam"
+grep_in "$T/err" "$T/a ($A)" "the error names the path given and the device"
+grep_in "$T/err" "pseudo-terminal.*tests/cli/pty_seam.c" "the error says a pty needs the seam"
 
 # --- a real walk, streamed and received: the recording is the log and the
 # live trajectory is the replay's, to the last digit
