@@ -29,6 +29,10 @@
  * a frame takes 1 ms at 460800 baud). */
 #define IDLE_FLUSH_S 1.0
 #define MAX_WARNINGS 20
+/* A status line says how long no frame has come once it is this long: a
+ * sender that stopped with the port still open (a pty whose writer went, a
+ * sensor that hung) looked like a steady one (the live review, 2026-11-30) */
+#define QUIET_NOTE_S 1.0
 #define PLOT_SECONDS 10.0
 
 static const hx_opt_t k_opts[] = {
@@ -117,17 +121,34 @@ typedef struct {
     hx_sat_t sat;                 /* flat tops at the channels' extremes, as replay's */
     fnav_nav_frame_t last;
     int have_frame;
+    /* standard error */
+    int tty;                      /* a terminal: the status line is redrawn in place */
+    int status_open;              /* a status line drawn without its newline */
+    int status_len;               /* its length, to blank what a shorter one leaves */
     /* plot */
     hist_t hist;
     pid_t plot_pid;
     int plot_failed;              /* the last picture, drawn at the end, was not written */
 } live_t;
 
+/* Before a message on standard error: a status line redrawn in place has no
+ * newline yet, and a warning was written after it, on the same line (the
+ * live review, 2026-11-30; tests/cli/live_tty.py) */
+static void end_status_line(live_t *L)
+{
+    if (L->status_open) {
+        fputc('\n', stderr);
+        L->status_open = 0;
+        L->status_len = 0;
+    }
+}
+
 /* One navigation output: to the CSV (through the Linux port's writer, as
  * replay) and into the trajectory kept for the summary and the plot. */
 static void on_nav_frame(live_t *L, const fnav_nav_frame_t *f)
 {
     if (L->csv != NULL && !L->csv_failed && fnav_port_write_nav(&L->lport, f) != FNAV_OK) {
+        end_status_line(L);
         hx_error(CMD, "cannot write the trajectory CSV; it stops here");
         L->csv_failed = 1;
     }
@@ -192,6 +213,9 @@ static void nav_finish(live_t *L)
 
 static void warn_limited(live_t *L, const char *msg)
 {
+    if (L->warnings <= MAX_WARNINGS) {
+        end_status_line(L);
+    }
     if (L->warnings < MAX_WARNINGS) {
         hx_warn(CMD, "%s", msg);
     } else if (L->warnings == MAX_WARNINGS) {
@@ -293,10 +317,14 @@ static void on_sample(live_t *L, const fnav_sample_t *s)
     hist_push(&L->hist, (double)(s->t_ns - L->t_first_ns) * 1e-9, L->acc_norm, L->gyr_norm);
     nav_push(L, s);
     if (L->record_path != NULL && !L->rec_failed) {
+        if (L->rec == NULL) {
+            end_status_line(L);
+        }
         if (L->rec == NULL && open_recording(L) != 0) {
             return;
         }
         if (hx_writer_write(L->rec, s) != FNAV_OK) {
+            end_status_line(L);
             hx_error(CMD, "%s: write failed (%s); recording stopped", L->record_path, strerror(errno));
             L->rec_failed = 1;
         } else {
@@ -441,11 +469,12 @@ static void describe_nothing(const live_t *L, char *out, size_t size)
     }
 }
 
-static void print_status(const live_t *L, int tty)
+static void print_status(live_t *L, double quiet_s)
 {
     const fnav_wire_stats_t *s = &L->dec.stats;
     double span = span_s(L);
-    char nav[160];
+    char nav[160], line[400];
+    int n;
     if (L->samples == 0u) {
         char what[120];
         describe_nothing(L, what, sizeof what);
@@ -454,13 +483,31 @@ static void print_status(const live_t *L, int tty)
         snprintf(nav, sizeof nav, "x %.2f y %.2f z %.2f m, yaw %.0f deg, %s, %u strides",
                  (double)L->last.pos_m[0], (double)L->last.pos_m[1], (double)L->last.pos_m[2],
                  (double)L->last.euler_rad[2] * 57.29577951308232,
-                 (L->last.flags & FNAV_FRAME_STANCE) ? "stance" : "swing ", (unsigned)L->nav->stats.strides);
+                 (L->last.flags & FNAV_FRAME_STANCE) ? "stance" : "swing", (unsigned)L->nav->stats.strides);
     } else {
         snprintf(nav, sizeof nav, "aligning (keep the foot still)");
     }
-    fprintf(stderr, "%slive: %.1f s, %u samples | %s | bad %u lost %u%s", tty ? "\r" : "", span,
-            (unsigned)L->samples, nav, (unsigned)(s->bad_frames + L->bad_samples), (unsigned)s->lost,
-            tty ? "   " : "\n");
+    /* what each number is: the time was the sensor's, not the wall's, and
+     * "bad 0 lost 0" named no unit (the live review, 2026-11-30) */
+    n = snprintf(line, sizeof line, "live: sensor time %.1f s, %u samples | %s | bad frames %u, lost frames %u", span,
+                 (unsigned)L->samples, nav, (unsigned)(s->bad_frames + L->bad_samples), (unsigned)s->lost);
+    if (quiet_s >= QUIET_NOTE_S && n > 0 && (size_t)n < sizeof line) {
+        n += snprintf(line + n, sizeof line - (size_t)n, " | no frame for %.0f s", quiet_s);
+    }
+    if (n < 0) {
+        return;
+    }
+    if ((size_t)n >= sizeof line) {
+        n = (int)sizeof line - 1;
+    }
+    if (L->tty) {
+        /* redrawn in place: spaces over what a longer line before left */
+        fprintf(stderr, "\r%s%*s", line, L->status_len > n ? L->status_len - n : 0, "");
+        L->status_len = n;
+        L->status_open = 1;
+    } else {
+        fprintf(stderr, "%s\n", line);
+    }
     fflush(stderr);
 }
 
@@ -578,7 +625,7 @@ int hx_cmd_live(int argc, char **argv)
     double idle_flush_s;
     const char *plot_png = "live.png", *out_path, *json_path;
     char err[600], gone_msg[600] = "";
-    int rc, exit_code = HX_EXIT_OK, gone = 0, timed_out = 0, tty = isatty(fileno(stderr));
+    int rc, exit_code = HX_EXIT_OK, gone = 0, timed_out = 0;
     struct sigaction sa;
 
     if (hx_nav_param_help_requested(argc, argv)) {
@@ -643,6 +690,7 @@ int hx_cmd_live(int argc, char **argv)
     }
 
     memset(&L, 0, sizeof L);
+    L.tty = isatty(fileno(stderr));
     L.traj.input_complete = -1; /* its JSON counts lost frames instead */
     hx_traj_set_config(&L.traj, &nopt, &ncfg); /* the summary's config line, as replay's */
     fnav_wire_decoder_init(&L.dec);
@@ -735,7 +783,7 @@ int hx_cmd_live(int argc, char **argv)
             break;
         }
         if (print_every > 0.0 && now >= t_next_print) {
-            print_status(&L, tty);
+            print_status(&L, now - t_last_frame);
             t_next_print = now + print_every;
         }
         if (plot_every > 0.0 && now >= t_next_plot) {
@@ -746,9 +794,7 @@ int hx_cmd_live(int argc, char **argv)
     /* the frames still held behind an incomplete one (Ctrl-C, a hang-up or
      * --timeout came before the line was quiet for idle_flush_s) */
     flush_link(&L);
-    if (tty && print_every > 0.0) {
-        fputc('\n', stderr);
-    }
+    end_status_line(&L);
     hx_serial_close(port);
 
     /* the recording first: it must be complete whatever happens below */

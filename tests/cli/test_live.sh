@@ -342,6 +342,24 @@ grep_in "$T/live.err" "sensor drop: 5 sample(s) missing by the sensor's counter 
 if grep -q "sensor drop:.*before sample seq 101" "$T/live.err"; then fail "a link drop reported as the sender's"; else pass "the link drop is not taken for the sender's"; fi
 grep_in "$T/live.out" "live: sensor: 5 samples missing by the sensor's counter in 1 gaps" "the summary counts the sender's drop"
 
+# --- the sender goes quiet with the port still open (stream killed, socat
+# still up, so no hang-up): the status line said the same thing every
+# second, for ever, as if all were well (the live review); it says how long
+# no frame has come (--timeout only ends the test)
+stop_link
+start_link
+start_live --print-every 0.25 --timeout 2
+/usr/bin/python3 -c "
+import os, sys
+sys.path.insert(0, 'tests/cli')
+from wire_cases import info, still, frame, SAMPLE
+fd = os.open(sys.argv[1], os.O_WRONLY | os.O_NOCTTY)
+os.write(fd, info(400.0) + b''.join(frame(SAMPLE, 1 + k, still(k)) for k in range(100)))
+os.close(fd)" "$B" || fail "the quiet sender failed"
+wait_live
+grep_in "$T/live.err" "live: sensor time 0.2 s, 100 samples | .* | no frame for 1 s" "the status line says no frame has come for 1 s"
+grep_in "$T/live.err" "bad frames 0, lost frames 0" "the status line names its counters"
+
 # --- a slow but steady sender: one sample frame every 80 ms for 2 s, each
 # gap shorter than --timeout 0.5 and the whole longer: live keeps going (the
 # timer restarts at every frame; a mutant of cmd_live.c that never restarts
@@ -388,6 +406,13 @@ if msg=$(timeout $LIMIT /usr/bin/python3 tests/cli/live_vhangup.py "$H" "$SEAM" 
     pass "live ends on a hang-up whose device node stays${msg:+ ($msg)}"
 else
     fail "live on a hang-up: $msg"
+fi
+
+# --- standard error on a terminal: a warning starts a line of its own
+if msg=$(timeout $LIMIT /usr/bin/python3 tests/cli/live_tty.py "$H" "$SEAM" "$T"); then
+    pass "on a terminal, a warning does not share the status line"
+else
+    fail "live on a terminal: $msg"
 fi
 
 # --- nobody sends: --timeout ends the run; --json is written all the same
