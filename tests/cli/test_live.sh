@@ -168,6 +168,30 @@ else
     fail "live --json differs from replay --json"
 fi
 grep_in "$T/live.out" "$N samples over" "live counts every sample"
+# the JSON says whether the stream was complete and what the link did (it had
+# neither: a run with lost frames wrote the JSON of a clean one, and
+# "command" was "harness live" without its options; the live review)
+if /usr/bin/python3 -c "
+import json, sys
+d = json.load(open(sys.argv[1])); l = d.get('link') or {}
+ok = (d.get('complete') is True and 'error' not in d and '--record' in d.get('command', '')
+      and l.get('end') == 'END frame' and l.get('samples') == int(sys.argv[2]) and l.get('recorded') == int(sys.argv[2])
+      and l.get('end_count') == int(sys.argv[2]) and l.get('bad_frames') == 0 and l.get('lost_frames') == 0)
+sys.exit(0 if ok else 1)" "$T/live.json" "$N"; then
+    pass "live --json: complete, the full command, and the link counters"
+else
+    fail "live --json lacks complete / command / link: $(head -c 400 "$T/live.json")"
+fi
+# (test_docs.sh checks the other commands' keys; live's needs the pty pair)
+if missing=$(/usr/bin/python3 -c "
+import json, sys
+doc = open('docs/harness.md').read()
+print(' '.join(k for k in json.load(open(sys.argv[1])).get('link', {}) if '\`%s\`' % k not in doc))" "$T/live.json") &&
+    [ -z "$missing" ]; then
+    pass "every key of live's link object is in docs/harness.md"
+else
+    fail "docs/harness.md lacks live's link keys: $missing"
+fi
 grep_in "$T/live.out" "END frame, the sender sent $N samples, $N received" "END frame count matches"
 grep_in "$T/live.out" "0 bad frames, 0 lost frames" "no link errors on a clean stream"
 "$H" convert "$T/rec.bin" "$T/rec.csv" >/dev/null 2>"$T/err"
@@ -193,11 +217,21 @@ grep_in "$T/live.err" "bad.png was not drawn" "the error names the picture"
     fail "a picture or its temporary left: $(ls "$T" | grep bad.png)"
 
 # --- corrupt frames: skipped, counted, reported; the rest recorded
-start_live --record "$T/rec_c.bin" --timeout 30
+start_live --record "$T/rec_c.bin" --timeout 30 --json "$T/live_c.json"
 stream vectors/walk.bin --speed 40 --inject-corrupt 1000
 wait_live
 BAD=$((N / 1000))
 expect_rc "$LIVE_RC" 1 "live with corrupt frames (incomplete data)"
+if /usr/bin/python3 -c "
+import json, sys
+d = json.load(open(sys.argv[1])); l = d.get('link') or {}; n = int(sys.argv[2])
+ok = (d.get('complete') is False and 'corrupt' in d.get('error', '') and l.get('bad_frames') == n
+      and l.get('lost_frames') == n and l.get('noise_frames') == 0)
+sys.exit(0 if ok else 1)" "$T/live_c.json" "$BAD"; then
+    pass "live --json of a damaged stream: complete false, the error and the counts"
+else
+    fail "live --json of a damaged stream: $(head -c 400 "$T/live_c.json")"
+fi
 grep_in "$T/live.out" "$BAD bad frames, $BAD lost frames in $BAD drops" "every corrupt frame counted and reported as a drop"
 grep_in "$T/live.err" "bad frame:" "corrupt frames are reported as they happen"
 "$H" convert "$T/rec_c.bin" "$T/rec_c.csv" >/dev/null 2>&1
@@ -341,6 +375,49 @@ expect_rc "$LIVE_RC" 1 "live with a frame lost on the link and samples lost on t
 grep_in "$T/live.err" "sensor drop: 5 sample(s) missing by the sensor's counter before sample seq 155" "the sender's own drop is reported"
 if grep -q "sensor drop:.*before sample seq 101" "$T/live.err"; then fail "a link drop reported as the sender's"; else pass "the link drop is not taken for the sender's"; fi
 grep_in "$T/live.out" "live: sensor: 5 samples missing by the sensor's counter in 1 gaps" "the summary counts the sender's drop"
+
+# line noise between intact frames (a false sync word): corrupt candidates,
+# but the sequence numbers show no frame lost and END counts every sample;
+# it exited 1 with "incomplete: 0 frames lost, 2 corrupt frames, ... 0 samples
+# missing" (the live review, 2026-11-30)
+live_case noise rec_z.bin 5
+expect_rc "$LIVE_RC" 0 "live with line noise between intact frames (nothing lost)"
+grep_in "$T/live.err" "bad frame: 1 corrupt frame(s) skipped before frame seq 101; no frame lost (noise on the line)" "the noise is reported as such"
+grep_in "$T/live.out" "2 bad frames (2 of them noise between intact frames), 0 lost frames" "the summary counts it apart"
+if grep -q "incomplete" "$T/live.err"; then fail "a complete stream called incomplete: $(grep incomplete "$T/live.err")"; else pass "no 'incomplete' for a complete stream"; fi
+reads_back rec_z.bin 300 "the recording holds every sample"
+
+# --- Ctrl-C while a frame is on its way (a real UART delivers a frame in
+# pieces, so a stop lands inside one about half of the time at 400 Hz): the
+# piece is not a corrupt frame, and the run exits 0 as a stop between frames
+# does (it exited 1, "incomplete: 0 frames lost, 1 corrupt frames"; the live
+# review). The sender drips the piece a byte at a time, so the line is never
+# quiet long enough for the decoder to give it up before the signal.
+stop_link
+start_link
+start_live --record "$T/rec_cut.bin"
+/usr/bin/python3 -c "
+import os, sys, time
+sys.path.insert(0, 'tests/cli')
+from wire_cases import info, still, frame, SAMPLE
+fd = os.open(sys.argv[1], os.O_WRONLY | os.O_NOCTTY)
+os.write(fd, info(400.0) + b''.join(frame(SAMPLE, 1 + k, still(k)) for k in range(300)))
+for c in frame(SAMPLE, 301, still(300))[:30]:
+    os.write(fd, bytes([c]))
+    time.sleep(0.2)
+time.sleep(2)
+os.close(fd)" "$B" &
+DRIP=$!
+wait_for '[ -f "$T/rec_cut.bin" ] && [ "$(records "$T/rec_cut.bin")" -ge 300 ]' 100
+sleep 0.5
+kill -INT "$LIVE" 2>/dev/null
+wait_live
+kill "$DRIP" 2>/dev/null
+wait "$DRIP" 2>/dev/null
+expect_rc "$LIVE_RC" 0 "live stopped by Ctrl-C inside a frame, nothing lost"
+grep_in "$T/live.out" "live: link: 0 bad frames, 0 lost frames" "the piece of a frame is not counted as a corrupt frame"
+grep_in "$T/live.out" "live: end: stopped by SIGINT (Ctrl-C); the frame arriving then was cut" "the summary says a frame was cut by the stop"
+reads_back rec_cut.bin 300 "the recording holds the 300 whole samples"
 
 # --- the sender goes quiet with the port still open (stream killed, socat
 # still up, so no hang-up): the status line said the same thing every
