@@ -275,6 +275,25 @@ timeout $LIMIT "$H" info "$T/rec_h.bin" >"$T/info.out" 2>&1
 expect_rc $? 0 "the recording is complete and closed (END record written)"
 grep_in "$T/info.out" "samples     1000" "the recording holds the 1000 samples"
 
+# --- the link goes away under stream (socat killed): exit 3 with the error,
+# and no "done in 2.0 s" after it as if the log had gone out (the live
+# review, 2026-11-30)
+start_link
+start_live --timeout 30
+LD_PRELOAD=$SEAM timeout $LIMIT "$H" stream vectors/walk.bin "$B" --speed 4 >"$T/stream.out" 2>"$T/stream.err" &
+STREAM=$!
+sleep 1.6 # the progress shows after 1 s
+stop_link
+wait "$STREAM"
+STREAM_RC=$?
+STREAM=""
+wait_live
+expect_rc "$STREAM_RC" 3 "stream when the link goes away"
+grep_in "$T/stream.err" "write failed" "stream says the write failed"
+grep_in "$T/stream.err" "harness stream: .* %" "the progress was showing"
+if grep -q "done in" "$T/stream.err"; then fail "stream says done after the port failed: $(cat "$T/stream.err")"; else pass "no 'done' after the port failed"; fi
+grep_in "$T/stream.out" "the port failed before all were written" "the summary says the port failed"
+
 # --- the receiver is killed: every record written so far stays readable
 start_link
 LD_PRELOAD=$SEAM "$H" live "$A" --print-every 0 --record "$T/rec_k.bin" --timeout 30 >/dev/null 2>"$T/live.err" &
