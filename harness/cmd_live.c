@@ -15,6 +15,8 @@
 #include <unistd.h>
 
 #include "fnav_port_linux.h"
+#include <cjson/cJSON.h>
+
 #include "footnav/fnav_wire.h"
 #include "hx_cli.h"
 #include "hx_commands.h"
@@ -29,6 +31,10 @@
  * a frame takes 1 ms at 460800 baud). */
 #define IDLE_FLUSH_S 1.0
 #define MAX_WARNINGS 20
+/* A status line says how long no frame has come once it is this long: a
+ * sender that stopped with the port still open (a pty whose writer went, a
+ * sensor that hung) looked like a steady one (the live review, 2026-11-30) */
+#define QUIET_NOTE_S 1.0
 #define PLOT_SECONDS 10.0
 
 static const hx_opt_t k_opts[] = {
@@ -39,7 +45,7 @@ static const hx_opt_t k_opts[] = {
     { "--timeout", "S", "give up when no valid frame arrives for S seconds (default: wait forever)", 0 },
     { "--print-every", "S", "status line period, s (default 1; 0: only the summary)", 0 },
     { "--out", "FILE", "trajectory CSV, the columns of `harness replay --out` ('-': standard output)", 0 },
-    { "--json", "FILE", "summary as JSON, the keys of `harness replay --json`", 0 },
+    { "--json", "FILE", "summary as JSON, the keys of `harness replay --json` and the link's counters", 0 },
     HX_NAV_OPTS(NULL),
     { NULL, NULL, NULL, 0 }
 };
@@ -52,9 +58,10 @@ static const hx_spec_t k_spec = {
     "frames are skipped and counted; a gap in the frame sequence numbers is\n"
     "reported as a drop. The run ends at the sender's END frame, on Ctrl-C, or\n"
     "when the port disappears (the recording stays intact in every case).\n"
-    "Exit status: 0 complete, 1 samples were lost (drops, bad frames), none\n"
-    "arrived, or the port went away, 2 usage, 3 the port or the recording could\n"
-    "not be opened or written.",
+    "Exit status: 0 complete (END and every sample, or Ctrl-C with no frame\n"
+    "lost), 1 samples were lost (drops, bad frames), none arrived, or the port\n"
+    "went away, 2 usage, 3 the port or the recording could not be opened or\n"
+    "written.",
     1, 1, k_opts
 };
 
@@ -77,6 +84,9 @@ typedef struct {
     fnav_wire_stats_t last_stats; /* to report what changed */
     uint32_t by_type[6];
     uint32_t bad_samples;         /* CRC-valid SAMPLE frames with NaN/Inf or out of range */
+    uint32_t noise;               /* corrupt candidates between two valid frames whose sequence numbers
+                                   * follow on: line noise, no frame lost */
+    uint32_t cut;                 /* the candidate the stop (a signal) cut short: a frame on its way */
     uint32_t repeated;            /* SAMPLE frames received twice (same frame seq and sample), skipped */
     uint32_t seq_repeats;         /* frames whose seq repeats the previous one's (the decoder counts a restart) */
     unsigned prev_frame_seq;      /* seq of the last valid frame */
@@ -117,17 +127,34 @@ typedef struct {
     hx_sat_t sat;                 /* flat tops at the channels' extremes, as replay's */
     fnav_nav_frame_t last;
     int have_frame;
+    /* standard error */
+    int tty;                      /* a terminal: the status line is redrawn in place */
+    int status_open;              /* a status line drawn without its newline */
+    int status_len;               /* its length, to blank what a shorter one leaves */
     /* plot */
     hist_t hist;
     pid_t plot_pid;
     int plot_failed;              /* the last picture, drawn at the end, was not written */
 } live_t;
 
+/* Before a message on standard error: a status line redrawn in place has no
+ * newline yet, and a warning was written after it, on the same line (the
+ * live review, 2026-11-30; tests/cli/live_tty.py) */
+static void end_status_line(live_t *L)
+{
+    if (L->status_open) {
+        fputc('\n', stderr);
+        L->status_open = 0;
+        L->status_len = 0;
+    }
+}
+
 /* One navigation output: to the CSV (through the Linux port's writer, as
  * replay) and into the trajectory kept for the summary and the plot. */
 static void on_nav_frame(live_t *L, const fnav_nav_frame_t *f)
 {
     if (L->csv != NULL && !L->csv_failed && fnav_port_write_nav(&L->lport, f) != FNAV_OK) {
+        end_status_line(L);
         hx_error(CMD, "cannot write the trajectory CSV; it stops here");
         L->csv_failed = 1;
     }
@@ -192,6 +219,9 @@ static void nav_finish(live_t *L)
 
 static void warn_limited(live_t *L, const char *msg)
 {
+    if (L->warnings <= MAX_WARNINGS) {
+        end_status_line(L);
+    }
     if (L->warnings < MAX_WARNINGS) {
         hx_warn(CMD, "%s", msg);
     } else if (L->warnings == MAX_WARNINGS) {
@@ -206,8 +236,18 @@ static void report_link(live_t *L, const fnav_wire_frame_t *f)
     const fnav_wire_stats_t *s = &L->dec.stats;
     char msg[160];
     if (s->bad_frames != L->last_stats.bad_frames) {
-        snprintf(msg, sizeof msg, "bad frame: %lu corrupt frame(s) skipped before frame seq %u",
-                 (unsigned long)(s->bad_frames - L->last_stats.bad_frames), (unsigned)f->seq);
+        /* this frame's sequence number follows the previous valid frame's:
+         * no frame was lost, the corrupt candidates were bytes between two
+         * frames (noise on the line, a false sync word), not data. They
+         * made the run exit 1, "incomplete" with nothing missing (the live
+         * review, 2026-11-30). A damaged frame always leaves a gap. */
+        const uint32_t bad = s->bad_frames - L->last_stats.bad_frames;
+        const int noise = L->have_prev_frame && s->lost == L->last_stats.lost && s->resets == L->last_stats.resets;
+        if (noise) {
+            L->noise += bad;
+        }
+        snprintf(msg, sizeof msg, "bad frame: %lu corrupt frame(s) skipped before frame seq %u%s", (unsigned long)bad,
+                 (unsigned)f->seq, noise ? "; no frame lost (noise on the line)" : "");
         warn_limited(L, msg);
     }
     if (s->lost != L->last_stats.lost) {
@@ -293,10 +333,14 @@ static void on_sample(live_t *L, const fnav_sample_t *s)
     hist_push(&L->hist, (double)(s->t_ns - L->t_first_ns) * 1e-9, L->acc_norm, L->gyr_norm);
     nav_push(L, s);
     if (L->record_path != NULL && !L->rec_failed) {
+        if (L->rec == NULL) {
+            end_status_line(L);
+        }
         if (L->rec == NULL && open_recording(L) != 0) {
             return;
         }
         if (hx_writer_write(L->rec, s) != FNAV_OK) {
+            end_status_line(L);
             hx_error(CMD, "%s: write failed (%s); recording stopped", L->record_path, strerror(errno));
             L->rec_failed = 1;
         } else {
@@ -410,11 +454,20 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
  * frame followed by END, the sender then silent) are taken now; they waited
  * for bytes that never came (live missed the END frame and ran on until
  * --timeout or for ever; a review, 2026-11-29). */
-static void flush_link(live_t *L)
+static void flush_link(live_t *L, int at_stop)
 {
     fnav_wire_frame_t f;
+    uint32_t bad = L->dec.stats.bad_frames;
     while (!L->have_end && !L->restarted && !L->rec_failed && fnav_wire_decode_flush(&L->dec, &f) == FNAV_OK) {
         on_frame(L, &f);
+        bad = L->dec.stats.bad_frames;
+    }
+    if (at_stop) {
+        /* the candidate after the last frame, cut by a Ctrl-C: a frame on
+         * its way when the user stopped (on a UART a frame arrives in
+         * pieces, so about half the stops land in one at 400 Hz), not a
+         * corrupt one; it made the run exit 1 (the live review, 2026-11-30) */
+        L->cut = L->dec.stats.bad_frames - bad;
     }
 }
 
@@ -441,11 +494,12 @@ static void describe_nothing(const live_t *L, char *out, size_t size)
     }
 }
 
-static void print_status(const live_t *L, int tty)
+static void print_status(live_t *L, double quiet_s)
 {
     const fnav_wire_stats_t *s = &L->dec.stats;
     double span = span_s(L);
-    char nav[160];
+    char nav[160], line[400];
+    int n;
     if (L->samples == 0u) {
         char what[120];
         describe_nothing(L, what, sizeof what);
@@ -454,13 +508,31 @@ static void print_status(const live_t *L, int tty)
         snprintf(nav, sizeof nav, "x %.2f y %.2f z %.2f m, yaw %.0f deg, %s, %u strides",
                  (double)L->last.pos_m[0], (double)L->last.pos_m[1], (double)L->last.pos_m[2],
                  (double)L->last.euler_rad[2] * 57.29577951308232,
-                 (L->last.flags & FNAV_FRAME_STANCE) ? "stance" : "swing ", (unsigned)L->nav->stats.strides);
+                 (L->last.flags & FNAV_FRAME_STANCE) ? "stance" : "swing", (unsigned)L->nav->stats.strides);
     } else {
         snprintf(nav, sizeof nav, "aligning (keep the foot still)");
     }
-    fprintf(stderr, "%slive: %.1f s, %u samples | %s | bad %u lost %u%s", tty ? "\r" : "", span,
-            (unsigned)L->samples, nav, (unsigned)(s->bad_frames + L->bad_samples), (unsigned)s->lost,
-            tty ? "   " : "\n");
+    /* what each number is: the time was the sensor's, not the wall's, and
+     * "bad 0 lost 0" named no unit (the live review, 2026-11-30) */
+    n = snprintf(line, sizeof line, "live: sensor time %.1f s, %u samples | %s | bad frames %u, lost frames %u", span,
+                 (unsigned)L->samples, nav, (unsigned)(s->bad_frames + L->bad_samples), (unsigned)s->lost);
+    if (quiet_s >= QUIET_NOTE_S && n > 0 && (size_t)n < sizeof line) {
+        n += snprintf(line + n, sizeof line - (size_t)n, " | no frame for %.0f s", quiet_s);
+    }
+    if (n < 0) {
+        return;
+    }
+    if ((size_t)n >= sizeof line) {
+        n = (int)sizeof line - 1;
+    }
+    if (L->tty) {
+        /* redrawn in place: spaces over what a longer line before left */
+        fprintf(stderr, "\r%s%*s", line, L->status_len > n ? L->status_len - n : 0, "");
+        L->status_len = n;
+        L->status_open = 1;
+    } else {
+        fprintf(stderr, "%s\n", line);
+    }
     fflush(stderr);
 }
 
@@ -578,7 +650,9 @@ int hx_cmd_live(int argc, char **argv)
     double idle_flush_s;
     const char *plot_png = "live.png", *out_path, *json_path;
     char err[600], gone_msg[600] = "";
-    int rc, exit_code = HX_EXIT_OK, gone = 0, timed_out = 0, tty = isatty(fileno(stderr));
+    int rc, exit_code = HX_EXIT_OK, gone = 0, timed_out = 0;
+    char cmdline[1024], why[700] = "", port_path[4096];
+    size_t cmdlen;
     struct sigaction sa;
 
     if (hx_nav_param_help_requested(argc, argv)) {
@@ -643,7 +717,11 @@ int hx_cmd_live(int argc, char **argv)
     }
 
     memset(&L, 0, sizeof L);
-    L.traj.input_complete = -1; /* its JSON counts lost frames instead */
+    L.tty = isatty(fileno(stderr));
+    cmdlen = (size_t)snprintf(cmdline, sizeof cmdline, "harness live");
+    for (rc = 0; rc < argc && cmdlen < sizeof cmdline; rc++) {
+        cmdlen += (size_t)snprintf(cmdline + cmdlen, sizeof cmdline - cmdlen, " %s", argv[rc]);
+    }
     hx_traj_set_config(&L.traj, &nopt, &ncfg); /* the summary's config line, as replay's */
     fnav_wire_decoder_init(&L.dec);
     L.nav = &nav;
@@ -725,7 +803,7 @@ int hx_cmd_live(int argc, char **argv)
             t_last_byte = now;
         } else if (L.dec.fill > 0u && now - t_last_byte >= idle_flush_s) {
             uint32_t frames_before = L.dec.stats.frames;
-            flush_link(&L);
+            flush_link(&L, 0);
             if (L.dec.stats.frames != frames_before) {
                 t_last_frame = now;
             }
@@ -735,7 +813,7 @@ int hx_cmd_live(int argc, char **argv)
             break;
         }
         if (print_every > 0.0 && now >= t_next_print) {
-            print_status(&L, tty);
+            print_status(&L, now - t_last_frame);
             t_next_print = now + print_every;
         }
         if (plot_every > 0.0 && now >= t_next_plot) {
@@ -745,10 +823,9 @@ int hx_cmd_live(int argc, char **argv)
     }
     /* the frames still held behind an incomplete one (Ctrl-C, a hang-up or
      * --timeout came before the line was quiet for idle_flush_s) */
-    flush_link(&L);
-    if (tty && print_every > 0.0) {
-        fputc('\n', stderr);
-    }
+    flush_link(&L, g_stop && !gone && !timed_out);
+    end_status_line(&L);
+    snprintf(port_path, sizeof port_path, "%s", hx_serial_path(port));
     hx_serial_close(port);
 
     /* the recording first: it must be complete whatever happens below */
@@ -790,6 +867,44 @@ int hx_cmd_live(int argc, char **argv)
         double span = span_s(&L);
         uint32_t missing = L.have_end && L.end_count > L.samples ? L.end_count - L.samples : 0u;
         uint32_t extra = L.have_end && L.samples > L.end_count ? L.samples - L.end_count : 0u;
+        /* corrupt frames that may have held data: not the noise between two
+         * frames in sequence, nor the frame a Ctrl-C cut */
+        uint32_t bad_frames = s->bad_frames - L.noise - L.cut;
+        const char *end_how = L.have_end ? "END frame"
+                              : g_stop   ? (g_stop == SIGINT ? "SIGINT" : (g_stop == SIGTERM ? "SIGTERM" : "SIGHUP"))
+                              : timed_out ? "timeout"
+                              : gone      ? "port gone"
+                              : L.restarted ? "sender restarted"
+                              : L.rec_failed ? "recording failed"
+                                             : "unknown";
+        char what[120] = "";
+        if (L.samples == 0u) {
+            describe_nothing(&L, what, sizeof what);
+        }
+        /* the verdict on the data, before the JSON that states it (live's
+         * JSON had neither "complete" nor a link counter: a run with lost
+         * frames wrote the JSON of a clean one; the live review, 2026-11-30) */
+        if (gone) {
+            snprintf(why, sizeof why, "%s", gone_msg);
+        } else if (timed_out) {
+            snprintf(why, sizeof why, "no valid frame for %.1f s (--timeout)%s%s", timeout, what[0] ? ": " : "", what);
+        } else if (L.restarted) {
+            snprintf(why, sizeof why, "the sender restarted: time went back from %.6f s to %.6f s at sample frame seq %u",
+                     L.restart_from_s, L.restart_to_s, L.restart_seq);
+        } else if (L.rec_failed && !L.have_end && !g_stop) {
+            snprintf(why, sizeof why, "the recording failed; the run stopped there");
+        } else if (s->lost > 0u || bad_frames > 0u || L.bad_samples > 0u || L.bad_info > 0u || missing > 0u ||
+                   extra > 0u) {
+            snprintf(why, sizeof why,
+                     "incomplete: %u frames lost, %u corrupt frames, %u bad samples, %u bad INFO frames, "
+                     "%u samples missing, %u more than the sender sent",
+                     (unsigned)s->lost, (unsigned)bad_frames, (unsigned)L.bad_samples, (unsigned)L.bad_info,
+                     (unsigned)missing, (unsigned)extra);
+        } else if (L.samples == 0u) {
+            snprintf(why, sizeof why, "no sample received from %s: %s", a.pos[0], what);
+        }
+        L.traj.input_complete = why[0] == '\0';
+        snprintf(L.traj.input_error, sizeof L.traj.input_error, "%.500s", why);
         if (L.traj.aligned || json_path != NULL) {
             /* --json is always written, as replay's: without a frame it was
              * skipped, and an earlier run's file stayed beside the emptied
@@ -803,10 +918,33 @@ int hx_cmd_live(int argc, char **argv)
                 hx_nav_print_summary(sum_out, a.pos[0], &L.traj, &sum);
             }
             /* as replay's: written unaligned too ("aligned": false) */
-            if (json_path != NULL &&
-                hx_nav_write_json(json_path, a.pos[0], "harness live", &L.traj, &sum, err, sizeof err) != 0) {
-                hx_error(CMD, "%s", err);
-                L.csv_failed = 1;
+            if (json_path != NULL) {
+                cJSON *x = cJSON_CreateObject(), *link = cJSON_CreateObject();
+                cJSON_AddStringToObject(link, "port", port_path);
+                cJSON_AddStringToObject(link, "end", end_how);
+                cJSON_AddNumberToObject(link, "samples", (double)L.samples);
+                cJSON_AddItemToObject(link, "recorded", L.record_path != NULL ? cJSON_CreateNumber((double)L.recorded)
+                                                                               : cJSON_CreateNull());
+                cJSON_AddItemToObject(link, "end_count", L.have_end ? cJSON_CreateNumber((double)L.end_count)
+                                                                     : cJSON_CreateNull());
+                cJSON_AddNumberToObject(link, "frames", (double)s->frames);
+                cJSON_AddNumberToObject(link, "bad_frames", (double)(s->bad_frames - L.cut));
+                cJSON_AddNumberToObject(link, "noise_frames", (double)L.noise);
+                cJSON_AddNumberToObject(link, "cut_frames", (double)L.cut);
+                cJSON_AddNumberToObject(link, "lost_frames", (double)s->lost);
+                cJSON_AddNumberToObject(link, "drops", (double)s->gaps);
+                cJSON_AddNumberToObject(link, "bad_samples", (double)L.bad_samples);
+                cJSON_AddNumberToObject(link, "bad_info", (double)L.bad_info);
+                cJSON_AddNumberToObject(link, "skipped_bytes", (double)s->skipped_bytes);
+                cJSON_AddNumberToObject(link, "sequence_restarts", (double)(s->resets - L.seq_repeats));
+                cJSON_AddNumberToObject(link, "repeated_samples", (double)L.repeated);
+                cJSON_AddNumberToObject(link, "sensor_missing", (double)L.sensor_missing);
+                cJSON_AddNumberToObject(link, "wall_s", hx_now_s() - t0);
+                cJSON_AddItemToObject(x, "link", link);
+                if (hx_nav_write_json(json_path, a.pos[0], cmdline, &L.traj, &sum, x, err, sizeof err) != 0) {
+                    hx_error(CMD, "%s", err);
+                    L.csv_failed = 1;
+                }
             }
         }
         if (!L.traj.aligned && L.samples > 0u) {
@@ -818,10 +956,17 @@ int hx_cmd_live(int argc, char **argv)
                (unsigned)s->frames, (unsigned)L.by_type[FNAV_WIRE_INFO], (unsigned)L.by_type[FNAV_WIRE_SAMPLE],
                (unsigned)L.by_type[FNAV_WIRE_NAV], (unsigned)L.by_type[FNAV_WIRE_STATUS],
                (unsigned)L.by_type[FNAV_WIRE_END], (unsigned)L.by_type[0]);
-        fprintf(sum_out, "live: link: %u bad frames, %u lost frames in %u drops, %u bad samples, %u bytes skipped, "
-               "%u sequence restarts, %u repeated sample frames skipped\n",
-               (unsigned)s->bad_frames, (unsigned)s->lost, (unsigned)s->gaps, (unsigned)L.bad_samples,
-               (unsigned)s->skipped_bytes, (unsigned)(s->resets - L.seq_repeats), (unsigned)L.repeated);
+        {
+            char noise[80] = "";
+            if (L.noise > 0u) {
+                snprintf(noise, sizeof noise, " (%u of them noise between intact frames)", (unsigned)L.noise);
+            }
+            fprintf(sum_out, "live: link: %u bad frames%s, %u lost frames in %u drops, %u bad samples, %u bytes skipped, "
+                   "%u sequence restarts, %u repeated sample frames skipped\n",
+                   (unsigned)(s->bad_frames - L.cut), noise, (unsigned)s->lost, (unsigned)s->gaps,
+                   (unsigned)L.bad_samples, (unsigned)s->skipped_bytes, (unsigned)(s->resets - L.seq_repeats),
+                   (unsigned)L.repeated);
+        }
         if (L.sensor_missing > 0u) {
             fprintf(sum_out, "live: sensor: %u samples missing by the sensor's counter in %u gaps (lost on the "
                              "sender, not on the link)\n",
@@ -856,8 +1001,9 @@ int hx_cmd_live(int argc, char **argv)
         } else if (g_stop) {
             /* how the run ended, as for END and a vanished port (nothing
              * said it; a review, 2026-11-29) */
-            fprintf(sum_out, "live: end: stopped by %s\n",
-                    g_stop == SIGINT ? "SIGINT (Ctrl-C)" : (g_stop == SIGTERM ? "SIGTERM" : "SIGHUP"));
+            fprintf(sum_out, "live: end: stopped by %s%s\n",
+                    g_stop == SIGINT ? "SIGINT (Ctrl-C)" : (g_stop == SIGTERM ? "SIGTERM" : "SIGHUP"),
+                    L.cut > 0u ? "; the frame arriving then was cut (not counted as corrupt)" : "");
         } else if (timed_out) {
             fprintf(sum_out, "live: end: no valid frame for %.1f s (--timeout)\n", timeout);
         } else if (gone) {
@@ -870,35 +1016,24 @@ int hx_cmd_live(int argc, char **argv)
             }
         }
         if (L.restarted) {
-            hx_error(CMD, "the sender restarted: time went back from %.6f s to %.6f s at sample frame seq %u; "
-                          "stopped there (the %u samples before it are recorded and navigated; run live again "
+            hx_error(CMD, "%s; stopped there (the %u samples before it are recorded and navigated; run live again "
                           "for the new session)",
-                     L.restart_from_s, L.restart_to_s, L.restart_seq, (unsigned)L.samples);
+                     why, (unsigned)L.samples);
         }
         if (L.rec_failed || L.csv_failed || L.plot_failed) {
             exit_code = HX_EXIT_IO;
         } else if (gone || timed_out || L.restarted) {
             exit_code = HX_EXIT_DATA;
-        } else if (s->lost > 0u || s->bad_frames > 0u || L.bad_samples > 0u || L.bad_info > 0u || missing > 0u ||
-                   extra > 0u) {
-            hx_error(CMD, "incomplete: %u frames lost, %u corrupt frames, %u bad samples, %u bad INFO frames, "
-                          "%u samples missing, %u more than the sender sent",
-                     (unsigned)s->lost, (unsigned)s->bad_frames, (unsigned)L.bad_samples, (unsigned)L.bad_info,
-                     (unsigned)missing, (unsigned)extra);
+        } else if (why[0] != '\0') {
+            hx_error(CMD, "%s", why); /* incomplete: ..., or no sample received */
             exit_code = HX_EXIT_DATA;
         }
         if (timed_out) {
-            char what[120] = "";
-            if (L.samples == 0u) {
-                describe_nothing(&L, what, sizeof what);
-            }
             hx_error(CMD, "no valid frame for %.1f s (--timeout); giving up%s%s", timeout, what[0] ? ": " : "",
                      what);
         } else if (L.samples == 0u && exit_code == HX_EXIT_OK) {
             /* nothing to navigate or record is not a complete stream, as
              * replay of an empty log exits 1 (Ctrl-C exited 0 here; a review) */
-            char what[120];
-            describe_nothing(&L, what, sizeof what);
             hx_error(CMD, "no sample received from %s: %s", a.pos[0], what);
             exit_code = HX_EXIT_DATA;
         }

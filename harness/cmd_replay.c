@@ -153,7 +153,7 @@ int hx_cmd_replay(int argc, char **argv)
     if (!hx_flag(&a, "--quiet")) {
         hx_nav_print_summary(csv == stdout ? stderr : stdout, a.pos[0], &traj, &sum);
     }
-    if (json_path != NULL && hx_nav_write_json(json_path, a.pos[0], cmdline, &traj, &sum, err, sizeof err) != 0) {
+    if (json_path != NULL && hx_nav_write_json(json_path, a.pos[0], cmdline, &traj, &sum, NULL, err, sizeof err) != 0) {
         hx_error("replay", "%s", err);
         exit_code = HX_EXIT_IO;
     }

@@ -247,7 +247,16 @@ int hx_cmd_stream(int argc, char **argv)
          * 2026-11-28) */
         g_stop = 0;
     }
-    hx_progress_end(&prog);
+    if (tx.failed || tx.cut || g_stop) {
+        /* not "done in 1.6 s" after the port's error, as if the log had
+         * gone out (the live review, 2026-11-30): the line redrawn in place
+         * is ended, and the summary below says what was sent */
+        if (prog.shown && prog.tty) {
+            fputc('\n', stderr);
+        }
+    } else {
+        hx_progress_end(&prog);
+    }
     hx_serial_close(tx.port);
 
     {

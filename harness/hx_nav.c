@@ -1498,7 +1498,7 @@ static cJSON *num(double v)
 }
 
 int hx_nav_write_json(const char *json_path, const char *log_path, const char *command, const hx_traj_t *t,
-                      const hx_nav_summary_t *s, char *err, size_t err_size)
+                      const hx_nav_summary_t *s, struct cJSON *extra, char *err, size_t err_size)
 {
     cJSON *root = cJSON_CreateObject(), *h = cJSON_CreateObject(), *arr;
     const fnav_nav_stats_t *st = &t->stats;
@@ -1620,6 +1620,13 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddNumberToObject(h, "divergence_resets", st->resets);
     cJSON_AddNumberToObject(h, "health_bits", t->n > 0 ? (double)t->f[t->n - 1].health : 0.0);
     cJSON_AddItemToObject(root, "health", h);
+    if (extra != NULL) {
+        while (extra->child != NULL) {
+            cJSON *item = cJSON_DetachItemViaPointer(extra, extra->child);
+            cJSON_AddItemToObject(root, item->string, item); /* the key string is copied */
+        }
+        cJSON_Delete(extra);
+    }
     rc = hx_write_json(json_path, root, err, err_size);
     cJSON_Delete(root);
     return rc;

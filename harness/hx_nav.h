@@ -270,9 +270,13 @@ size_t hx_nav_stance_mids(const hx_traj_t *t, size_t *idx, size_t max);
 /** Print the summary as text. */
 void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const hx_nav_summary_t *s);
 
-/** Write the summary as JSON (keys in docs/harness.md). 0 ok, -1 failure. */
+struct cJSON;
+
+/** Write the summary as JSON (keys in docs/harness.md). extra: an object
+ *  whose items are added at the end (live's "link"), taken over and freed
+ *  in every case; NULL for none. 0 ok, -1 failure. */
 int hx_nav_write_json(const char *json_path, const char *log_path, const char *command, const hx_traj_t *t,
-                      const hx_nav_summary_t *s, char *err, size_t err_size);
+                      const hx_nav_summary_t *s, struct cJSON *extra, char *err, size_t err_size);
 
 /** Plot the 2-D path and the height over time. 0 ok, -1 failure (printed). */
 int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_traj_t *t);

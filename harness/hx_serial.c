@@ -4,6 +4,7 @@
 #include <limits.h>
 #include <poll.h>
 #include <sys/ioctl.h>
+#include <sys/stat.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,8 +49,31 @@ hx_serial_t *hx_serial_open(const char *path, int baud, int mode, char *err, siz
         return NULL;
     }
     if (sp_get_port_by_name(s->path, &s->port) != SP_OK) {
-        set_err(s, "not a serial port libserialport knows (no /sys/class/tty entry)");
-        snprintf(err, err_size, "%s", s->err);
+        /* what the port is, by the name the user gave (and the device it
+         * leads to): libserialport's own message was the errno of its sysfs
+         * lookup, "No such file or directory" for /dev/null or a pty that
+         * exists, and a pty had no word of the seam (the live review,
+         * 2026-11-30) */
+        struct stat st;
+        const char *base = strrchr(s->path, '/');
+        char name[PATH_MAX + 8];
+        if (strcmp(path, s->path) != 0) {
+            snprintf(name, sizeof name, "%.2000s (%.2000s)", path, s->path);
+        } else {
+            snprintf(name, sizeof name, "%.4000s", path);
+        }
+        if (stat(s->path, &st) == 0 && !S_ISCHR(st.st_mode)) {
+            snprintf(err, err_size, "%.500s: not a serial port (not a character device)", name);
+        } else if (strncmp(s->path, "/dev/pts/", 9) == 0) {
+            snprintf(err, err_size,
+                     "%.500s: a pseudo-terminal, which libserialport refuses (no /sys/class/tty entry, no modem "
+                     "lines); for a desk test preload tests/cli/pty_seam.c (docs/wire-protocol.md, \"Testing "
+                     "without a sensor\")",
+                     name);
+        } else {
+            snprintf(err, err_size, "%.500s: not a serial port libserialport knows (no /sys/class/tty/%.100s entry)",
+                     name, base != NULL ? base + 1 : s->path);
+        }
         free(s);
         return NULL;
     }

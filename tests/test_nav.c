@@ -1657,7 +1657,7 @@ static void test_health_keys(void **state)
     f = fdopen(fd, "w"); /* hx_nav_write_json writes it by name */
     assert_non_null(f);
     fclose(f);
-    assert_int_equal(hx_nav_write_json(json_path, "still.csv", "test", &t, &s, err, sizeof err), 0);
+    assert_int_equal(hx_nav_write_json(json_path, "still.csv", "test", &t, &s, NULL, err, sizeof err), 0);
     text = slurp(json_path);
     remove(json_path);
     assert_non_null(text);

@@ -111,6 +111,10 @@ timeout $LIMIT "$H" live --help >/dev/null 2>&1; expect_rc $? 0 "live --help"
 timeout $LIMIT "$H" live /dev/nonexistent-port >/dev/null 2>"$T/err"; expect_rc $? 3 "live on a missing port"
 grep_in "$T/err" "nonexistent-port" "the error names the port"
 timeout $LIMIT "$H" live /dev/null >/dev/null 2>"$T/err"; expect_rc $? 3 "live on /dev/null (not a serial port)"
+# (it said "/dev/null: not a serial port libserialport knows (no /sys/class/tty
+# entry): No such file or directory", of a file that exists; the live review)
+if grep -q "No such file" "$T/err"; then fail "the error on /dev/null says it does not exist: $(cat "$T/err")"; else pass "the error on /dev/null does not say it is missing"; fi
+grep_in "$T/err" "no /sys/class/tty/null" "the error names the sysfs entry libserialport looks for"
 timeout $LIMIT "$H" live /dev/null --rate 100 >/dev/null 2>"$T/err"; expect_rc $? 2 "live --rate (resampling needs the whole log)"
 timeout $LIMIT "$H" live /dev/null --bias-model nope >/dev/null 2>"$T/err"; expect_rc $? 2 "live --bias-model nope"
 timeout $LIMIT "$H" live "$T/orig.csv" --baud 0 >/dev/null 2>&1; expect_rc $? 2 "live --baud 0"
@@ -129,6 +133,12 @@ done
 start_link
 # the real libserialport path refuses a pty: this is why the seam exists
 timeout $LIMIT "$H" live "$A" >/dev/null 2>"$T/err"; expect_rc $? 3 "live on a pty without the seam"
+# by the link socat made, as a user following the docs types it: the error
+# names that path and says what to do (it named /dev/pts/N only, with "No such
+# file or directory" and no word of the seam; the live review, 2026-11-30)
+timeout $LIMIT "$H" live "$T/a" >/dev/null 2>"$T/err"; expect_rc $? 3 "live on a pty's link without the seam"
+grep_in "$T/err" "$T/a ($A)" "the error names the path given and the device"
+grep_in "$T/err" "pseudo-terminal.*tests/cli/pty_seam.c" "the error says a pty needs the seam"
 
 # --- a real walk, streamed and received: the recording is the log and the
 # live trajectory is the replay's, to the last digit
@@ -158,6 +168,30 @@ else
     fail "live --json differs from replay --json"
 fi
 grep_in "$T/live.out" "$N samples over" "live counts every sample"
+# the JSON says whether the stream was complete and what the link did (it had
+# neither: a run with lost frames wrote the JSON of a clean one, and
+# "command" was "harness live" without its options; the live review)
+if /usr/bin/python3 -c "
+import json, sys
+d = json.load(open(sys.argv[1])); l = d.get('link') or {}
+ok = (d.get('complete') is True and 'error' not in d and '--record' in d.get('command', '')
+      and l.get('end') == 'END frame' and l.get('samples') == int(sys.argv[2]) and l.get('recorded') == int(sys.argv[2])
+      and l.get('end_count') == int(sys.argv[2]) and l.get('bad_frames') == 0 and l.get('lost_frames') == 0)
+sys.exit(0 if ok else 1)" "$T/live.json" "$N"; then
+    pass "live --json: complete, the full command, and the link counters"
+else
+    fail "live --json lacks complete / command / link: $(head -c 400 "$T/live.json")"
+fi
+# (test_docs.sh checks the other commands' keys; live's needs the pty pair)
+if missing=$(/usr/bin/python3 -c "
+import json, sys
+doc = open('docs/harness.md').read()
+print(' '.join(k for k in json.load(open(sys.argv[1])).get('link', {}) if '\`%s\`' % k not in doc))" "$T/live.json") &&
+    [ -z "$missing" ]; then
+    pass "every key of live's link object is in docs/harness.md"
+else
+    fail "docs/harness.md lacks live's link keys: $missing"
+fi
 grep_in "$T/live.out" "END frame, the sender sent $N samples, $N received" "END frame count matches"
 grep_in "$T/live.out" "0 bad frames, 0 lost frames" "no link errors on a clean stream"
 "$H" convert "$T/rec.bin" "$T/rec.csv" >/dev/null 2>"$T/err"
@@ -183,11 +217,21 @@ grep_in "$T/live.err" "bad.png was not drawn" "the error names the picture"
     fail "a picture or its temporary left: $(ls "$T" | grep bad.png)"
 
 # --- corrupt frames: skipped, counted, reported; the rest recorded
-start_live --record "$T/rec_c.bin" --timeout 30
+start_live --record "$T/rec_c.bin" --timeout 30 --json "$T/live_c.json"
 stream vectors/walk.bin --speed 40 --inject-corrupt 1000
 wait_live
 BAD=$((N / 1000))
 expect_rc "$LIVE_RC" 1 "live with corrupt frames (incomplete data)"
+if /usr/bin/python3 -c "
+import json, sys
+d = json.load(open(sys.argv[1])); l = d.get('link') or {}; n = int(sys.argv[2])
+ok = (d.get('complete') is False and 'corrupt' in d.get('error', '') and l.get('bad_frames') == n
+      and l.get('lost_frames') == n and l.get('noise_frames') == 0)
+sys.exit(0 if ok else 1)" "$T/live_c.json" "$BAD"; then
+    pass "live --json of a damaged stream: complete false, the error and the counts"
+else
+    fail "live --json of a damaged stream: $(head -c 400 "$T/live_c.json")"
+fi
 grep_in "$T/live.out" "$BAD bad frames, $BAD lost frames in $BAD drops" "every corrupt frame counted and reported as a drop"
 grep_in "$T/live.err" "bad frame:" "corrupt frames are reported as they happen"
 "$H" convert "$T/rec_c.bin" "$T/rec_c.csv" >/dev/null 2>&1
@@ -230,6 +274,25 @@ grep_in "$T/live.out" "recorded 1000 samples" "the summary names the recorded sa
 timeout $LIMIT "$H" info "$T/rec_h.bin" >"$T/info.out" 2>&1
 expect_rc $? 0 "the recording is complete and closed (END record written)"
 grep_in "$T/info.out" "samples     1000" "the recording holds the 1000 samples"
+
+# --- the link goes away under stream (socat killed): exit 3 with the error,
+# and no "done in 2.0 s" after it as if the log had gone out (the live
+# review, 2026-11-30)
+start_link
+start_live --timeout 30
+LD_PRELOAD=$SEAM timeout $LIMIT "$H" stream vectors/walk.bin "$B" --speed 4 >"$T/stream.out" 2>"$T/stream.err" &
+STREAM=$!
+sleep 1.6 # the progress shows after 1 s
+stop_link
+wait "$STREAM"
+STREAM_RC=$?
+STREAM=""
+wait_live
+expect_rc "$STREAM_RC" 3 "stream when the link goes away"
+grep_in "$T/stream.err" "write failed" "stream says the write failed"
+grep_in "$T/stream.err" "harness stream: .* %" "the progress was showing"
+if grep -q "done in" "$T/stream.err"; then fail "stream says done after the port failed: $(cat "$T/stream.err")"; else pass "no 'done' after the port failed"; fi
+grep_in "$T/stream.out" "the port failed before all were written" "the summary says the port failed"
 
 # --- the receiver is killed: every record written so far stays readable
 start_link
@@ -332,6 +395,67 @@ grep_in "$T/live.err" "sensor drop: 5 sample(s) missing by the sensor's counter 
 if grep -q "sensor drop:.*before sample seq 101" "$T/live.err"; then fail "a link drop reported as the sender's"; else pass "the link drop is not taken for the sender's"; fi
 grep_in "$T/live.out" "live: sensor: 5 samples missing by the sensor's counter in 1 gaps" "the summary counts the sender's drop"
 
+# line noise between intact frames (a false sync word): corrupt candidates,
+# but the sequence numbers show no frame lost and END counts every sample;
+# it exited 1 with "incomplete: 0 frames lost, 2 corrupt frames, ... 0 samples
+# missing" (the live review, 2026-11-30)
+live_case noise rec_z.bin 5
+expect_rc "$LIVE_RC" 0 "live with line noise between intact frames (nothing lost)"
+grep_in "$T/live.err" "bad frame: 1 corrupt frame(s) skipped before frame seq 101; no frame lost (noise on the line)" "the noise is reported as such"
+grep_in "$T/live.out" "2 bad frames (2 of them noise between intact frames), 0 lost frames" "the summary counts it apart"
+if grep -q "incomplete" "$T/live.err"; then fail "a complete stream called incomplete: $(grep incomplete "$T/live.err")"; else pass "no 'incomplete' for a complete stream"; fi
+reads_back rec_z.bin 300 "the recording holds every sample"
+
+# --- Ctrl-C while a frame is on its way (a real UART delivers a frame in
+# pieces, so a stop lands inside one about half of the time at 400 Hz): the
+# piece is not a corrupt frame, and the run exits 0 as a stop between frames
+# does (it exited 1, "incomplete: 0 frames lost, 1 corrupt frames"; the live
+# review). The sender drips the piece a byte at a time, so the line is never
+# quiet long enough for the decoder to give it up before the signal.
+stop_link
+start_link
+start_live --record "$T/rec_cut.bin"
+/usr/bin/python3 -c "
+import os, sys, time
+sys.path.insert(0, 'tests/cli')
+from wire_cases import info, still, frame, SAMPLE
+fd = os.open(sys.argv[1], os.O_WRONLY | os.O_NOCTTY)
+os.write(fd, info(400.0) + b''.join(frame(SAMPLE, 1 + k, still(k)) for k in range(300)))
+for c in frame(SAMPLE, 301, still(300))[:30]:
+    os.write(fd, bytes([c]))
+    time.sleep(0.2)
+time.sleep(2)
+os.close(fd)" "$B" &
+DRIP=$!
+wait_for '[ -f "$T/rec_cut.bin" ] && [ "$(records "$T/rec_cut.bin")" -ge 300 ]' 100
+sleep 0.5
+kill -INT "$LIVE" 2>/dev/null
+wait_live
+kill "$DRIP" 2>/dev/null
+wait "$DRIP" 2>/dev/null
+expect_rc "$LIVE_RC" 0 "live stopped by Ctrl-C inside a frame, nothing lost"
+grep_in "$T/live.out" "live: link: 0 bad frames, 0 lost frames" "the piece of a frame is not counted as a corrupt frame"
+grep_in "$T/live.out" "live: end: stopped by SIGINT (Ctrl-C); the frame arriving then was cut" "the summary says a frame was cut by the stop"
+reads_back rec_cut.bin 300 "the recording holds the 300 whole samples"
+
+# --- the sender goes quiet with the port still open (stream killed, socat
+# still up, so no hang-up): the status line said the same thing every
+# second, for ever, as if all were well (the live review); it says how long
+# no frame has come (--timeout only ends the test)
+stop_link
+start_link
+start_live --print-every 0.25 --timeout 2
+/usr/bin/python3 -c "
+import os, sys
+sys.path.insert(0, 'tests/cli')
+from wire_cases import info, still, frame, SAMPLE
+fd = os.open(sys.argv[1], os.O_WRONLY | os.O_NOCTTY)
+os.write(fd, info(400.0) + b''.join(frame(SAMPLE, 1 + k, still(k)) for k in range(100)))
+os.close(fd)" "$B" || fail "the quiet sender failed"
+wait_live
+grep_in "$T/live.err" "live: sensor time 0.2 s, 100 samples | .* | no frame for 1 s" "the status line says no frame has come for 1 s"
+grep_in "$T/live.err" "bad frames 0, lost frames 0" "the status line names its counters"
+
 # --- a slow but steady sender: one sample frame every 80 ms for 2 s, each
 # gap shorter than --timeout 0.5 and the whole longer: live keeps going (the
 # timer restarts at every frame; a mutant of cmd_live.c that never restarts
@@ -378,6 +502,13 @@ if msg=$(timeout $LIMIT /usr/bin/python3 tests/cli/live_vhangup.py "$H" "$SEAM" 
     pass "live ends on a hang-up whose device node stays${msg:+ ($msg)}"
 else
     fail "live on a hang-up: $msg"
+fi
+
+# --- standard error on a terminal: a warning starts a line of its own
+if msg=$(timeout $LIMIT /usr/bin/python3 tests/cli/live_tty.py "$H" "$SEAM" "$T"); then
+    pass "on a terminal, a warning does not share the status line"
+else
+    fail "live on a terminal: $msg"
 fi
 
 # --- nobody sends: --timeout ends the run; --json is written all the same

@@ -11,6 +11,10 @@ usage: wire_cases.py CASE OUT
             on the line), then the END frame, then silence
   sensordrop 300 samples whose sensor counter skips 5 values after sample
             149 (lost on the sender), and sample frame 101 lost on the link
+  noise     300 samples and an END, with line noise between frames 100 and
+            101 and between 200 and 201: a false sync word announcing a
+            SAMPLE frame, then 20 zero bytes (two corrupt candidates, no frame
+            lost)
 """
 import math
 import os
@@ -73,6 +77,12 @@ def main():
             c = k if k < 150 else k + 5  # the sensor's counter: 150..154 never sent
             fr.append(frame(SAMPLE, k + 1, sample_payload(k * DT_NS, c, 2, (0.0, 0.0, 9.81), (0.0, 0.0, 0.0), 0.0)))
         del fr[100]  # frame seq 101 (counter 100) lost on the link: not the sensor's drop
+        b = info(400.0) + b''.join(fr) + end(301, 300)
+    elif case == 'noise':
+        junk = b'\xa5\x5a' + bytes([SAMPLE, 41]) + bytes(20)
+        fr = [frame(SAMPLE, k + 1, still(k)) for k in range(300)]
+        fr.insert(200, junk)
+        fr.insert(100, junk)
         b = info(400.0) + b''.join(fr) + end(301, 300)
     else:
         sys.exit('unknown case ' + case)
