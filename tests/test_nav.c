@@ -396,6 +396,114 @@ static void test_run_port(void **state)
     assert_memory_equal(fa, fb, sizeof fa);
 }
 
+/* Misuse by an integrator (docs/robustness.md, "core entry points"): a
+ * navigator never initialised (static storage is zeroed), or whose init
+ * failed, is refused with FNAV_E_STATE by every call that returns a status,
+ * and finish / reset leave it alone; a push, pop or step on it returned
+ * FNAV_OK or FNAV_AGAIN and stepped a detector with a zeroed configuration,
+ * and fnav_nav_run read the whole source (a review by a firmware
+ * integrator, 2026-11-30). */
+static long g_reads;
+static fnav_status_t counting_read(void *ctx, fnav_sample_t *s)
+{
+    (void)ctx;
+    if (g_reads >= 50) {
+        return FNAV_END;
+    }
+    *s = still(g_reads);
+    g_reads++;
+    return FNAV_OK;
+}
+
+static void check_refused(fnav_nav_t *nav)
+{
+    static fnav_nav_t copy;
+    fnav_nav_frame_t fr;
+    fnav_sample_t s = still(0);
+    fnav_port_t port;
+    memset(&port, 0, sizeof port);
+    port.read_sample = counting_read;
+    copy = *nav;
+    assert_int_equal(fnav_nav_push(nav, &s), FNAV_E_STATE);
+    assert_int_equal(fnav_nav_pop(nav, &fr), FNAV_E_STATE);
+    assert_int_equal(fnav_nav_step(nav, &s, &fr), FNAV_E_STATE);
+    g_reads = 0;
+    assert_int_equal(fnav_nav_run(nav, &port, 0), FNAV_E_STATE);
+    assert_int_equal(g_reads, 0); /* nothing read from the source */
+    fnav_nav_finish(nav);
+    fnav_nav_reset(nav);
+    assert_memory_equal(nav, &copy, sizeof copy);
+    assert_int_equal(fnav_nav_push(nav, &s), FNAV_E_STATE);
+}
+
+static void test_not_initialised(void **state)
+{
+    static fnav_nav_t nav; /* zeroed, as static storage is */
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_sample_t s = still(0);
+    (void)state;
+    check_refused(&nav);
+    /* a failed init leaves it not initialised: a configuration the
+     * navigator refuses itself, and one a module refuses (the detector) */
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+    c.gravity_mps2 = FNAV_R(0.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    check_refused(&nav);
+    c = fnav_nav_config_default;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    c.stance.window_s = FNAV_R(-0.1);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    check_refused(&nav);
+    /* and a good init after it starts over */
+    c = fnav_nav_config_default;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
+    assert_int_equal(nav.stats.samples, 1u);
+}
+
+/* fnav_nav_step without a frame to write: FNAV_E_ARG, the sample not taken.
+ * It returned FNAV_AGAIN and took each sample until the detector's ring
+ * was full of frames it could not pop, then FNAV_E_STATE for ever (a review
+ * by a firmware integrator, 2026-11-30). */
+static void test_step_null_frame(void **state)
+{
+    static fnav_nav_t nav, copy;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    long k;
+    (void)state;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    copy = nav;
+    for (k = 0; k < 100; k++) {
+        fnav_sample_t s = still(k);
+        assert_int_equal(fnav_nav_step(&nav, &s, NULL), FNAV_E_ARG);
+    }
+    assert_memory_equal(&nav, &copy, sizeof nav);
+}
+
+/* fnav_nav_run on a navigator whose input has ended (a second run without
+ * a new init): FNAV_E_STATE before reading anything. It read the whole
+ * source, every push refused and ignored, and returned FNAV_OK with no
+ * frame written (a review by a firmware integrator, 2026-11-30). */
+static void test_run_after_finish(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_port_t port;
+    (void)state;
+    memset(&port, 0, sizeof port);
+    port.read_sample = counting_read;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    g_reads = 0;
+    assert_int_equal(fnav_nav_run(&nav, &port, 0), FNAV_OK);
+    assert_int_equal(g_reads, 50);
+    assert_int_equal(nav.stats.frames, 50u);
+    g_reads = 0;
+    assert_int_equal(fnav_nav_run(&nav, &port, 0), FNAV_E_STATE);
+    assert_int_equal(g_reads, 0);
+    assert_int_equal(nav.stats.frames, 50u);
+}
+
 /* The landing settling state (fnav_ukf.h) starts at the first ZUPT of every
  * stance. A synthetic walk: still 2 s, then three 0.4 s bursts of motion,
  * each followed by 0.6 s still, at 200 Hz. A first pass finds the sample the
@@ -1741,6 +1849,9 @@ int main(void)
         cmocka_unit_test(test_timing),
         cmocka_unit_test(test_step),
         cmocka_unit_test(test_run_port),
+        cmocka_unit_test(test_not_initialised),
+        cmocka_unit_test(test_step_null_frame),
+        cmocka_unit_test(test_run_after_finish),
         cmocka_unit_test(test_zaru_after),
         cmocka_unit_test(test_max_gap_below_interval),
         cmocka_unit_test(test_stamp_range_ends),
