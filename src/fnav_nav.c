@@ -79,17 +79,32 @@ static void ukf_config_from(const fnav_nav_config_t *c, fnav_ukf_config_t *u)
     u->settle_tau_s = c->settle_tau_s;
 }
 
-fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
+/* Every byte of the navigator to 0: the state of static storage, which
+ * nav_ready() tells from an initialised one. */
+static void nav_zero(fnav_nav_t *nav)
+{
+    unsigned char *p = (unsigned char *)nav;
+    size_t b;
+    for (b = 0; b < sizeof *nav; b++) {
+        p[b] = 0;
+    }
+}
+
+/* Initialised by a successful fnav_nav_init, which requires the gravity
+ * positive: it is 0 in a zeroed object (static storage, a failed init),
+ * and a NaN there fails the test too. An automatic object never
+ * initialised holds whatever was on the stack: not detectable (fnav_nav.h). */
+static int nav_ready(const fnav_nav_t *nav)
+{
+    return nav->cfg.gravity_mps2 > FNAV_R(0.0);
+}
+
+static fnav_status_t nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
 {
     fnav_stance_config_t sc;
     fnav_align_config_t ac;
     fnav_ukf_config_t uc;
     fnav_status_t st;
-    size_t b;
-    unsigned char *p = (unsigned char *)nav;
-    if (nav == NULL || cfg == NULL) {
-        return FNAV_E_ARG;
-    }
     if (fnav_profile_validate(&cfg->profile) != FNAV_OK || !fnav_isfinite(cfg->gravity_mps2) ||
         !(cfg->gravity_mps2 > FNAV_R(0.0)) || !fnav_isfinite(cfg->accel_motion_noise_mps2_rthz) ||
         cfg->accel_motion_noise_mps2_rthz < FNAV_R(0.0) || !fnav_isfinite(cfg->gyro_motion_noise_rps_rthz) ||
@@ -107,9 +122,7 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
         (cfg->stance.rate_hz > FNAV_R(0.0) && !(cfg->max_gap_s * cfg->stance.rate_hz > FNAV_R(1.5)))) {
         return FNAV_E_CONFIG;
     }
-    for (b = 0; b < sizeof *nav; b++) {
-        p[b] = 0;
-    }
+    nav_zero(nav);
     nav->cfg = *cfg;
     nav->t_in_ns = INT64_MIN; /* no sample yet: none is behind it */
     sc = cfg->stance;
@@ -126,6 +139,22 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
         return st;
     }
     return fnav_ukf_init(&nav->ukf, &uc);
+}
+
+fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
+{
+    fnav_status_t st;
+    if (nav == NULL || cfg == NULL) {
+        return FNAV_E_ARG;
+    }
+    st = nav_init(nav, cfg);
+    if (st != FNAV_OK) {
+        /* not initialised, whatever it was before: every later call says
+         * FNAV_E_STATE instead of running a half-configured navigator (a
+         * module's refusal came after the configuration was copied) */
+        nav_zero(nav);
+    }
+    return st;
 }
 
 fnav_status_t fnav_sample_check(const fnav_sample_t *s)
@@ -156,8 +185,9 @@ fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample)
     if (nav == NULL || sample == NULL) {
         return FNAV_E_ARG;
     }
-    if (nav->stance.finished) {
-        /* the input has ended: a call in the wrong state, whatever the
+    if (!nav_ready(nav) || nav->stance.finished) {
+        /* not initialised (test_nav test_not_initialised), or the input
+         * has ended: a call in the wrong state, whatever the
          * sample (a firmware loop that keeps pushing learns it from this
          * status, not from a sensor status); nothing counted, the stats
          * and health of the finished run stay as they were (fnav_nav.h) */
@@ -328,6 +358,9 @@ void fnav_nav_reset(fnav_nav_t *nav)
 {
     fnav_status_t st;
     FNAV_ASSERT(nav != NULL);
+    if (!nav_ready(nav)) {
+        return; /* not initialised: the next call says FNAV_E_STATE */
+    }
     if (nav->aligned) {
         /* the state that triggered the reset is the diverged one */
         hold_last_frame(nav, 1);
@@ -551,6 +584,11 @@ fnav_status_t fnav_nav_pop(fnav_nav_t *nav, fnav_nav_frame_t *frame)
     }
     st = fnav_stance_pop(&nav->stance, &o);
     if (st != FNAV_OK) {
+        if (!nav_ready(nav)) {
+            /* never initialised: its zeroed detector has nothing to pop
+             * (the test is here, off the path of every frame) */
+            return FNAV_E_STATE;
+        }
         if (st == FNAV_END && !nav->aligned) {
             nav->health |= FNAV_HEALTH_NOT_ALIGNED;
         }
@@ -565,6 +603,9 @@ fnav_status_t fnav_nav_pop(fnav_nav_t *nav, fnav_nav_frame_t *frame)
 void fnav_nav_finish(fnav_nav_t *nav)
 {
     FNAV_ASSERT(nav != NULL);
+    if (!nav_ready(nav)) {
+        return; /* not initialised: the next call says FNAV_E_STATE */
+    }
     fnav_stance_finish(&nav->stance);
     /* the input ended while the foot was still: align on that period if it
      * qualifies, so that the frames still held back are navigated; if not,
@@ -576,8 +617,12 @@ void fnav_nav_finish(fnav_nav_t *nav)
 
 fnav_status_t fnav_nav_step(fnav_nav_t *nav, const fnav_sample_t *sample, fnav_nav_frame_t *frame)
 {
-    fnav_status_t st = fnav_nav_push(nav, sample);
+    fnav_status_t st;
     int got = 0;
+    if (frame == NULL) {
+        return FNAV_E_ARG; /* before the push: the sample is not taken */
+    }
+    st = fnav_nav_push(nav, sample);
     if (st != FNAV_OK) {
         return st;
     }
@@ -595,6 +640,11 @@ fnav_status_t fnav_nav_run(fnav_nav_t *nav, const fnav_port_t *port, long max_sa
     long n = 0;
     if (nav == NULL || port == NULL) {
         return FNAV_E_ARG;
+    }
+    if (!nav_ready(nav) || nav->stance.finished) {
+        /* not initialised, or its input has ended: every push would be
+         * refused, so nothing is read */
+        return FNAV_E_STATE;
     }
     for (;;) {
         if (max_samples > 0 && n >= max_samples) {

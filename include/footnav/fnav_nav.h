@@ -1,13 +1,15 @@
 /**
  * @file fnav_nav.h
  * @brief Foot-mounted navigation, one object stepped once per sample: stance
- *        detection, initial alignment, 15-state UKF with zero-velocity
- *        updates. The same calls run in `harness replay`, in firmware and in
- *        the simulator's Monte Carlo.
+ *        detection, initial alignment, UKF with zero-velocity updates (the
+ *        paper's 15 states; 18 with the default lever states). The same
+ *        calls run in `harness replay`, in firmware and in the simulator's
+ *        Monte Carlo.
  *
  * Use:
  * @code
- *   fnav_nav_t nav;                 // 11.7 KB in float32 (9 KB with the firmware's options), no allocation
+ *   static fnav_nav_t nav;          // 11.7 KB in float32 (9 KB with the firmware's options), no allocation:
+ *                                   // static, not on a small stack
  *   fnav_nav_config_t cfg = fnav_nav_config_default;
  *   if (fnav_nav_init(&nav, &cfg) != FNAV_OK) ...   // FNAV_E_CONFIG: a bad configuration
  *   for each sample s:
@@ -21,6 +23,32 @@
  * are FNAV_WARN_UNUSED, which GCC does not let a (void) cast silence: keep
  * them in a variable. A complete program over a port: docs/firmware.md,
  * "Porting to a new board".
+ *
+ * Ownership and context: the caller owns the navigator (fixed size, no
+ * allocation, no pointer kept to anything of the caller's: the
+ * configuration is copied by fnav_nav_init, a sample by fnav_nav_push, a
+ * port is used only during fnav_nav_run). Not reentrant and not ISR-safe:
+ * one navigator per thread of control; a sample-ready interrupt hands its
+ * samples over through a queue (port/cortex-m: a lock-free ring) to the
+ * loop that pushes and pops. The calls that return a status refuse a NULL
+ * pointer with FNAV_E_ARG; fnav_nav_finish and fnav_nav_reset assert it
+ * (FNAV_ASSERT, a programmer error). A navigator never initialised (static
+ * storage is zeroed) or whose fnav_nav_init failed is refused with
+ * FNAV_E_STATE by every call that returns a status (finish and reset do
+ * nothing); an automatic one never initialised holds whatever was on the
+ * stack, which no check can tell from a navigator: initialise it first.
+ *
+ * Units are not checked: the core refuses only what no sensor reads
+ * (NaN/Inf, FNAV_INPUT_MAX_ABS, stamps going back) and navigates the rest
+ * as SI. Accelerations in g never align (the alignment refuses a still
+ * period off gravity by more than FNAV_ALIGN_GRAVITY_TOL: frames without
+ * FNAV_FRAME_ALIGNED, the |f| it refused in nav.align.refused_f_mps2);
+ * rates in deg/s align (a foot at rest barely turns) but turn the foot 57
+ * times too fast: a nonsense track, usually divergence resets
+ * (FNAV_HEALTH_RESET); stamps in ms make the rate estimate
+ * (nav.stance.rate_hz) 1000 times too low. Convert in the port's
+ * read_sample; `harness replay` checks these marks after a run
+ * (docs/firmware.md, "Porting to a new board").
  *
  * Latency: the SHOE window is centred, so a sample's statistic is known h =
  * (W - 1) / 2 samples after it, and the stance decision also waits for the
@@ -176,14 +204,20 @@ typedef struct {
                                          before it (none held) */
 } fnav_nav_t;
 
-/** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (profile or any module's
- *          configuration invalid). */
+/** Initialise, or start over: every earlier state and counter is
+ *  dropped, so a second call resets the navigator. *cfg is copied (it need
+ *  not outlive the call).
+ *  @return FNAV_OK, FNAV_E_ARG (NULL), FNAV_E_CONFIG (profile or any
+ *          module's configuration invalid); on a failure *nav is left
+ *          zeroed, not initialised (the other calls say FNAV_E_STATE). */
 FNAV_WARN_UNUSED fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg);
 
 /**
- * Accept one sample (b frame, SI units).
- * @return FNAV_OK; FNAV_E_NANINF, FNAV_E_RANGE (a value beyond
- *         FNAV_INPUT_MAX_ABS, a glitch no sensor reads, or a stamp beyond
+ * Accept one sample (b frame, SI units: m/s^2, rad/s, ns; not checked,
+ * see the file comment).
+ * @return FNAV_OK; FNAV_E_ARG for NULL; FNAV_E_STATE for a navigator not
+ *         initialised (nothing counted); FNAV_E_NANINF, FNAV_E_RANGE (a
+ *         value beyond FNAV_INPUT_MAX_ABS, a glitch no sensor reads, or a stamp beyond
  *         FNAV_T_NS_MAX) or FNAV_E_TIME (a stamp behind the last accepted
  *         one, but the FNAV_NAV_TIME_RESYNC-th in a row, which is
  *         accepted): sample rejected (counted, state
@@ -203,8 +237,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_sample_check(const fnav_sample_t *s);
 /**
  * Next navigation frame.
  * @return FNAV_OK with *frame; FNAV_AGAIN when none is due; FNAV_END after
- *         fnav_nav_finish() when all frames were returned. A filter problem
- *         in this step (covariance reset, undone step) is reported in
+ *         fnav_nav_finish() when all frames were returned; FNAV_E_ARG for
+ *         NULL; FNAV_E_STATE for a navigator not initialised. A filter
+ *         problem in this step (covariance reset, undone step) is reported in
  *         frame->health and the counters, not as a status.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_nav_pop(fnav_nav_t *nav, fnav_nav_frame_t *frame);
@@ -217,11 +252,13 @@ FNAV_WARN_UNUSED fnav_status_t fnav_nav_pop(fnav_nav_t *nav, fnav_nav_frame_t *f
  * cfg.diverge_speed_mps or cfg.diverge_undone consecutive predictions were undone;
  * a caller may call it on its own evidence (e.g. an external position fix
  * disagreeing). Counted in stats.resets, FNAV_HEALTH_RESET in the frames.
+ * Does nothing to a navigator not initialised.
  */
 void fnav_nav_reset(fnav_nav_t *nav);
 
-/** End of input: the frames held back by the detector become due. If the
- *  input ended before an alignment, aligns on what was still, if enough
+/** End of input (does nothing to a navigator not initialised): the frames
+ *  held back by the detector become due. If the input ended before an
+ *  alignment, aligns on what was still, if enough
  *  (fnav_align_finish): at once on the samples popped so far when they
  *  qualify, and the held-back frames are navigated; else the held-back
  *  samples go on to the alignment as their frames are popped, and it
@@ -233,8 +270,13 @@ void fnav_nav_finish(fnav_nav_t *nav);
 
 /**
  * Push one sample and process every due frame; *frame receives the newest.
+ * When one sample releases several frames (with the rate estimated,
+ * stance.rate_hz = 0, the 33rd sample releases the first ones: 28 at 200
+ * Hz, 21 at 400 Hz) the earlier ones are processed and counted
+ * (stats.frames) but not returned: push and pop to see every frame.
  * @return FNAV_OK with *frame; FNAV_AGAIN when no frame is due yet; the
- *         rejection statuses of fnav_nav_push().
+ *         statuses of fnav_nav_push() (FNAV_E_ARG also for a NULL frame,
+ *         checked before the sample, which is then not taken).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_nav_step(fnav_nav_t *nav, const fnav_sample_t *sample, fnav_nav_frame_t *frame);
 
@@ -244,7 +286,10 @@ FNAV_WARN_UNUSED fnav_status_t fnav_nav_step(fnav_nav_t *nav, const fnav_sample_
  * @param max_samples  stop after this many samples (0: no limit)
  * @return FNAV_OK at the end of the source; the source's negative status
  *         (after flushing every frame) on a read error; FNAV_E_IO when the
- *         sink fails. Rejected samples are counted, not fatal.
+ *         sink fails; FNAV_E_ARG for NULL; FNAV_E_STATE, before reading
+ *         anything, for a navigator not initialised or already finished (a
+ *         second run needs fnav_nav_init first). Rejected samples are
+ *         counted, not fatal.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_nav_run(fnav_nav_t *nav, const fnav_port_t *port, long max_samples);
 

@@ -36,7 +36,11 @@ typedef enum {
 #define FNAV_FRAME_ALIGNED 0x4u
 
 /** One navigation output, as written to a port's sink. Navigation frame n
- *  is local-level, x along the initial heading, z down (docs/frames.md). */
+ *  is local-level, x along the initial heading, z down (docs/frames.md).
+ *  Without FNAV_FRAME_ALIGNED (before the alignment, or re-aligning after a
+ *  divergence reset) there is no estimate: every real field is 0, except
+ *  after a reset the held position, its variance, the yaw and its variance
+ *  (fnav_nav_reset in fnav_nav.h). */
 typedef struct {
     int64_t t_ns;                    /**< time of the sample this output follows, ns */
     uint32_t seq;                    /**< sequence number of that sample */

@@ -21,8 +21,8 @@
 #define FNAV_ALLAN_MAX_POINTS 21
 
 /* Welch: the paper's 64-sample Hamming segments are all the sensor runs
- * (the harness keeps 1024 for its segment-length study): 1,392 bytes per
- * channel instead of 20.6 KB. */
+ * (the harness keeps the default 4096 for its segment-length study): 1,404
+ * bytes per channel in float32 instead of 82 KB (docs/firmware.md). */
 #define FNAV_WELCH_MAX_NFFT 64
 
 /* Stance detector: windows up to 24 samples, the default 25 ms window up

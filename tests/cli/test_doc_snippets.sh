@@ -8,7 +8,8 @@
 # 100,000 uniform samples in [-1, 1]. A block with a main() is a whole
 # program (the port example of docs/firmware.md): compiled as it is and run
 # with a CSV log on standard input (t,ax,ay,az,gx,gy,gz with a header line:
-# 400 samples at 200 Hz of a sensor at rest, +z up); it must exit 0. A block
+# 400 samples at 200 Hz of a sensor at rest, +z up); it must exit 0, and
+# with arm-none-eabi-gcc it must also build for the Cortex-M4F. A block
 # that is not meant to compile must not be tagged c. Skipped visibly
 # without a C compiler.
 set -u
@@ -111,5 +112,27 @@ for build in float double; do
         i=$((i + 1))
     done
 done
+# A whole program also builds for the Cortex-M4F as docs/firmware.md ("In
+# your own build") says: the core and the program with the firmware's
+# architecture flags, newlib-nano and its I/O stubs (nosys), linked.
+ARM_CC=${ARM_CC:-arm-none-eabi-gcc}
+if command -v "$ARM_CC" >/dev/null 2>&1; then
+    i=1
+    while [ "$i" -le "$count" ]; do
+        where=$(cat "$T/snip_$i.where")
+        if grep -q 'int main(' "$T/snip_$i.c"; then
+            # shellcheck disable=SC2086
+            if "$ARM_CC" -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard -Os $WARN -Iinclude \
+                --specs=nano.specs --specs=nosys.specs -o "$T/arm_s$i.elf" "$T/snip_$i.c" src/*.c -lm >"$T/err" 2>&1; then
+                pass "$where: the C program builds for the Cortex-M4F"
+            else
+                fail "$where: the C program does not build for the Cortex-M4F"; cat "$T/err"
+            fi
+        fi
+        i=$((i + 1))
+    done
+else
+    echo "SKIP test_doc_snippets.sh: no $ARM_CC, the Cortex-M4F build of the programs not checked"
+fi
 if [ "$fails" -ne 0 ]; then echo "test_doc_snippets.sh: $fails failure(s)"; exit 1; fi
 echo "test_doc_snippets.sh: all passed"
