@@ -407,11 +407,25 @@ void hx_progress_start(hx_progress_t *p, const char *label, double total)
     p->last_decile = 0;
 }
 
+int hx_progress_text(char *buf, size_t size, const char *label, double frac, double elapsed_s)
+{
+    char left[48] = "";
+    /* floored, so that a line never says more than is done: rounded, 9.6 %
+     * printed "10 %" and the decile's line after it "10 %" again (a review,
+     * 2026-11-30), and 99.6 % "100 %" before the end */
+    const int pct = frac >= 1.0 ? 100 : frac > 0.0 ? (int)(100.0 * frac) : 0;
+    /* the time left at the rate so far, once 5 % and 2 s of it give a rate to go by */
+    if (frac >= 0.05 && frac < 1.0 && elapsed_s >= 2.0) {
+        (void)snprintf(left, sizeof left, ", about %.0f s left", elapsed_s * (1.0 - frac) / frac);
+    }
+    return snprintf(buf, size, "%s: %3d %% (%.1f s%s)", label, pct, elapsed_s, left);
+}
+
 void hx_progress_update(hx_progress_t *p, double done)
 {
     double now, frac;
     int decile;
-    char left[48] = "";
+    char line[256];
     now = hx_now_s();
     if (now - p->t_start < 1.0) {
         return;
@@ -420,16 +434,13 @@ void hx_progress_update(hx_progress_t *p, double done)
     if (frac > 1.0) {
         frac = 1.0;
     }
-    /* the time left at the rate so far, once 5 % and 2 s of it give a rate to go by */
-    if (frac >= 0.05 && frac < 1.0 && now - p->t_start >= 2.0) {
-        (void)snprintf(left, sizeof left, ", about %.0f s left", (now - p->t_start) * (1.0 - frac) / frac);
-    }
     if (p->tty) {
         if (now - p->t_last < 0.2 && p->shown) {
             return;
         }
+        (void)hx_progress_text(line, sizeof line, p->label, frac, now - p->t_start);
         /* the trailing blanks clear a longer line drawn before */
-        fprintf(stderr, "\r%s: %3.0f %% (%.1f s%s)   ", p->label, 100.0 * frac, now - p->t_start, left);
+        fprintf(stderr, "\r%s   ", line);
         fflush(stderr);
     } else {
         decile = (int)(frac * 10.0);
@@ -437,7 +448,8 @@ void hx_progress_update(hx_progress_t *p, double done)
             return;
         }
         p->last_decile = decile;
-        fprintf(stderr, "%s: %3.0f %% (%.1f s%s)\n", p->label, 100.0 * frac, now - p->t_start, left);
+        (void)hx_progress_text(line, sizeof line, p->label, frac, now - p->t_start);
+        fprintf(stderr, "%s\n", line);
     }
     p->shown = 1;
     p->t_last = now;

@@ -130,6 +130,9 @@ typedef struct {
 } hx_progress_t;
 
 void hx_progress_start(hx_progress_t *p, const char *label, double total);
+/** The progress line for a fraction done after elapsed_s: "LABEL:  42 % (3.1 s, about 4 s left)", the
+ *  percentage floored, the time left (at the rate so far) from 5 % and 2 s on; snprintf's return. */
+int hx_progress_text(char *buf, size_t size, const char *label, double frac, double elapsed_s);
 void hx_progress_update(hx_progress_t *p, double done);
 void hx_progress_end(hx_progress_t *p);
 /** Seconds since an arbitrary origin (monotonic). */
