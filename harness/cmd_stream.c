@@ -251,9 +251,7 @@ int hx_cmd_stream(int argc, char **argv)
         /* not "done in 1.6 s" after the port's error, as if the log had
          * gone out (the live review, 2026-11-30): the line redrawn in place
          * is ended, and the summary below says what was sent */
-        if (prog.shown && prog.tty) {
-            fputc('\n', stderr);
-        }
+        hx_progress_stop(&prog);
     } else {
         hx_progress_end(&prog);
     }

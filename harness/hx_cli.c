@@ -267,9 +267,24 @@ int hx_arg_whole(const hx_args_t *a, const char *name, double lo, double hi, dou
     return 0;
 }
 
+/* A progress line redrawn in place on a terminal ends without a newline:
+ * an error or a warning that comes while one is drawn starts a line of its
+ * own (it was written after it, on the same line: stream's "write failed"
+ * after "harness stream:  41 % (1.6 s)"; the live review, 2026-11-30). */
+static int g_progress_open;
+
+static void progress_line_break(void)
+{
+    if (g_progress_open) {
+        fputc('\n', stderr);
+        g_progress_open = 0;
+    }
+}
+
 void hx_error(const char *cmd, const char *fmt, ...)
 {
     va_list ap;
+    progress_line_break();
     fprintf(stderr, "harness %s: error: ", cmd);
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
@@ -280,6 +295,7 @@ void hx_error(const char *cmd, const char *fmt, ...)
 void hx_warn(const char *cmd, const char *fmt, ...)
 {
     va_list ap;
+    progress_line_break();
     fprintf(stderr, "harness %s: warning: ", cmd);
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
@@ -442,6 +458,7 @@ void hx_progress_update(hx_progress_t *p, double done)
         /* the trailing blanks clear a longer line drawn before */
         fprintf(stderr, "\r%s   ", line);
         fflush(stderr);
+        g_progress_open = 1;
     } else {
         decile = (int)(frac * 10.0);
         if (decile <= p->last_decile && p->shown) {
@@ -455,8 +472,15 @@ void hx_progress_update(hx_progress_t *p, double done)
     p->t_last = now;
 }
 
+void hx_progress_stop(hx_progress_t *p)
+{
+    (void)p;
+    progress_line_break();
+}
+
 void hx_progress_end(hx_progress_t *p)
 {
+    g_progress_open = 0; /* the line below ends it */
     if (p->shown) {
         /* on a terminal the blanks clear the rest of the longer progress line */
         fprintf(stderr, "%s%s: done in %.1f s%s\n", p->tty ? "\r" : "", p->label, hx_now_s() - p->t_start,

@@ -135,6 +135,10 @@ void hx_progress_start(hx_progress_t *p, const char *label, double total);
 int hx_progress_text(char *buf, size_t size, const char *label, double frac, double elapsed_s);
 void hx_progress_update(hx_progress_t *p, double done);
 void hx_progress_end(hx_progress_t *p);
+/** Work stopped (an error): a progress line still open on a terminal is
+ *  ended with a newline, without "done in". hx_error and hx_warn do the
+ *  same before their message. */
+void hx_progress_stop(hx_progress_t *p);
 /** Seconds since an arbitrary origin (monotonic). */
 double hx_now_s(void);
 

@@ -293,6 +293,25 @@ grep_in "$T/stream.err" "write failed" "stream says the write failed"
 grep_in "$T/stream.err" "harness stream: .* %" "the progress was showing"
 if grep -q "done in" "$T/stream.err"; then fail "stream says done after the port failed: $(cat "$T/stream.err")"; else pass "no 'done' after the port failed"; fi
 grep_in "$T/stream.out" "the port failed before all were written" "the summary says the port failed"
+# ... and with standard error on a terminal (script(1) gives it one), the
+# error starts a line of its own: it was written after the progress line
+# redrawn in place, "harness stream:  41 % (1.6 s)   harness stream: error:
+# write failed" (the live review, 2026-11-30)
+if command -v script >/dev/null 2>&1; then
+    start_link
+    start_live --timeout 30
+    timeout $LIMIT script -q -e -c "LD_PRELOAD=\"$SEAM\" \"$H\" stream vectors/walk.bin \"$B\" --speed 4 >\"$T/stream_tty.out\"" \
+        "$T/stream_tty.txt" >/dev/null 2>&1 </dev/null &
+    STREAM=$!
+    sleep 1.6
+    stop_link
+    wait "$STREAM"
+    STREAM=""
+    wait_live
+    tr '\r' '\n' <"$T/stream_tty.txt" >"$T/stream_tty.lines"
+    grep_in "$T/stream_tty.lines" "harness stream: .* %" "on a terminal: the progress was showing"
+    grep_in "$T/stream_tty.lines" "^harness stream: error: .*write failed" "on a terminal: the error starts its line"
+fi
 
 # --- the receiver is killed: every record written so far stays readable
 start_link
