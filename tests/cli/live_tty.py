@@ -16,7 +16,7 @@ import time
 import tty
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from wire_cases import info, still, frame, end, sample_payload, SAMPLE, DT_NS  # noqa: E402
+from wire_cases import info, still, frame, end, sample_payload, wait_or_kill, SAMPLE, DT_NS  # noqa: E402
 
 
 def main():
@@ -52,12 +52,8 @@ def main():
     os.write(m, frame(SAMPLE, 101, nan))  # a warning: "bad sample"
     time.sleep(0.4)
     os.write(m, b''.join(frame(SAMPLE, 1 + k, still(k)) for k in range(101, 200)) + end(201, 200))
-    try:
-        rc = p.wait(timeout=30)
-    except subprocess.TimeoutExpired:
-        p.kill()
-        p.wait()
-        print("live still running 30 s after the END frame")
+    rc = wait_or_kill(p, "the END frame")
+    if rc is None:
         return 1
     reader.join(timeout=5)
     text = got.decode("utf-8", "replace")

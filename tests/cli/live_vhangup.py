@@ -14,7 +14,7 @@ import time
 import tty
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from wire_cases import info, samples  # noqa: E402
+from wire_cases import info, samples, wait_or_kill  # noqa: E402
 
 TIOCVHANGUP = 0x5437
 
@@ -40,12 +40,8 @@ def main():
             p.kill()
             p.wait()
             return 0
-        try:
-            rc = p.wait(timeout=30)
-        except subprocess.TimeoutExpired:
-            p.kill()
-            p.wait()
-            print("live still running 30 s after the hang-up")
+        rc = wait_or_kill(p, "the hang-up")
+        if rc is None:
             return 1
     err = open(os.path.join(out, "vh.err")).read()
     text = open(os.path.join(out, "vh.out")).read()

@@ -19,6 +19,7 @@ usage: wire_cases.py CASE OUT
 import math
 import os
 import struct
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'vectors', 'wire'))
@@ -41,6 +42,18 @@ def samples(n, seq0=1, t0_ns=0):
 
 def end(seq, count):
     return frame(END, seq & 0xffff, struct.pack('<I', count))
+
+
+def wait_or_kill(p, after):
+    """The exit status of process p within 30 s, else None: p killed, and
+    'live still running 30 s after AFTER' printed (the scripts' reason)."""
+    try:
+        return p.wait(timeout=30)
+    except subprocess.TimeoutExpired:
+        p.kill()
+        p.wait()
+        print("live still running 30 s after %s" % after)
+        return None
 
 
 def main():
