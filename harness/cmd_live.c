@@ -94,6 +94,8 @@ typedef struct {
     unsigned last_frame_seq;      /* frame seq of the last recorded sample */
     uint32_t last_sample_seq;     /* its sample counter */
     uint32_t bad_info;            /* INFO frames with an impossible rate */
+    long baud;                    /* --baud */
+    int told_baud;                /* the INFO rate's need of baud was said */
     /* samples the sender lost (its ring overran): gaps in the sensor's own
      * counter that the link's losses do not explain (a lower bound) */
     uint32_t sensor_missing, sensor_gaps;
@@ -424,8 +426,20 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
     case FNAV_WIRE_INFO: {
         fnav_wire_info_t info;
         if (fnav_wire_parse_info(f, &info) == FNAV_OK) {
+            /* 10 bits per byte on an 8N1 line, as stream's check: a real
+             * UART at a lower rate falls behind, losing frames (stream warned,
+             * live did not; the live review, 2026-11-30) */
+            const double need_bps = (double)info.rate_hz * (double)FNAV_WIRE_FRAME_SIZE(FNAV_WIRE_SAMPLE_LEN) * 10.0;
             L->info = info;
             L->have_info = 1;
+            if (need_bps > (double)L->baud && !L->told_baud) {
+                char msg[200];
+                L->told_baud = 1;
+                snprintf(msg, sizeof msg, "the sender's %.0f samples/s need %.0f baud; at %ld baud a real UART falls "
+                         "behind and frames are lost (a pty does not care; --baud)", (double)info.rate_hz, need_bps,
+                         L->baud);
+                warn_limited(L, msg);
+            }
         } else {
             char msg[120];
             L->bad_info++;
@@ -727,6 +741,7 @@ int hx_cmd_live(int argc, char **argv)
     L.nav = &nav;
     L.axes = hx_axes_new(); /* NULL: out of memory, not checked */
     L.record_path = hx_arg(&a, "--record");
+    L.baud = baud;
     if (plot_every > 0.0) {
         L.hist.cap = 20000u;
         L.hist.t = calloc(L.hist.cap, sizeof(double));

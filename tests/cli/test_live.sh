@@ -390,6 +390,20 @@ grep_in "$T/live.out" "0 sequence restarts, 1 repeated sample frames skipped" "t
 if grep -q "restart:" "$T/live.err"; then fail "the repetition is reported as a sender restart"; cat "$T/live.err"; else pass "no restart reported for a repeated frame"; fi
 reads_back rec_rep.bin 300 "the recording holds each sample once"
 
+# an INFO rate that --baud cannot carry is said, as stream says it (400
+# samples/s of 51-byte frames need 204,000 baud; live said nothing; the live
+# review, 2026-11-30); once, and not at the default 460800
+stop_link
+start_link
+start_live --timeout 5 --baud 115200
+/usr/bin/python3 tests/cli/wire_cases.py restart "$T/case.bin" || fail "wire_cases.py restart"
+timeout 30 cat "$T/case.bin" >"$B"
+wait_live
+grep_in "$T/live.err" "warning: the sender's 400 samples/s need 204000 baud; at 115200 baud" "live says the rate needs more than --baud"
+[ "$(grep -c "samples/s need" "$T/live.err")" = 1 ] && pass "said once (two INFO frames)" ||
+    fail "the baud warning: $(grep -c "samples/s need" "$T/live.err") times"
+live_case restart rec_r2.bin 5
+if grep -q "samples/s need" "$T/live.err"; then fail "a baud warning at the default 460800"; else pass "no baud warning at 460800"; fi
 live_case badrate rec_n.bin 5
 expect_rc "$LIVE_RC" 1 "live with an INFO frame whose rate is NaN"
 grep_in "$T/live.err" "bad INFO frame seq 0" "the bad INFO frame is reported"
