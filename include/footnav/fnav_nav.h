@@ -206,7 +206,8 @@ typedef struct {
 
 /** Initialise, or start over: every earlier state and counter is
  *  dropped, so a second call resets the navigator. *cfg is copied (it need
- *  not outlive the call).
+ *  not outlive the call); it may be the navigator's own, &nav->cfg, to
+ *  start over with the same configuration.
  *  @return FNAV_OK, FNAV_E_ARG (NULL), FNAV_E_CONFIG (profile or any
  *          module's configuration invalid); on a failure *nav is left
  *          zeroed, not initialised (the other calls say FNAV_E_STATE). */
