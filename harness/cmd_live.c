@@ -918,8 +918,11 @@ int hx_cmd_live(int argc, char **argv)
         } else if (L.samples == 0u) {
             snprintf(why, sizeof why, "no sample received from %s: %s", a.pos[0], what);
         }
-        L.traj.input_complete = why[0] == '\0';
-        snprintf(L.traj.input_error, sizeof L.traj.input_error, "%.500s", why);
+        /* not said in the text summary (-1): its replay-style "stopped after N
+         * samples, at the input error above" is not live's case (a run that
+         * lost frames went on to its END frame, and the error comes below);
+         * live's own "live: end:" line says how the run ended */
+        L.traj.input_complete = -1;
         if (L.traj.aligned || json_path != NULL) {
             /* --json is always written, as replay's: without a frame it was
              * skipped, and an earlier run's file stayed beside the emptied
@@ -935,6 +938,8 @@ int hx_cmd_live(int argc, char **argv)
             /* as replay's: written unaligned too ("aligned": false) */
             if (json_path != NULL) {
                 cJSON *x = cJSON_CreateObject(), *link = cJSON_CreateObject();
+                L.traj.input_complete = why[0] == '\0';
+                snprintf(L.traj.input_error, sizeof L.traj.input_error, "%.500s", why);
                 cJSON_AddStringToObject(link, "port", port_path);
                 cJSON_AddStringToObject(link, "end", end_how);
                 cJSON_AddNumberToObject(link, "samples", (double)L.samples);

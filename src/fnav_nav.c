@@ -80,13 +80,17 @@ static void ukf_config_from(const fnav_nav_config_t *c, fnav_ukf_config_t *u)
 }
 
 /* Every byte of the navigator to 0: the state of static storage, which
- * nav_ready() tells from an initialised one. */
-static void nav_zero(fnav_nav_t *nav)
+ * nav_ready() tells from an initialised one; but its configuration when
+ * keep_cfg (a restart with it: fnav_nav_init(&nav, &nav.cfg)). */
+static void nav_zero(fnav_nav_t *nav, int keep_cfg)
 {
     unsigned char *p = (unsigned char *)nav;
+    const size_t c0 = offsetof(fnav_nav_t, cfg), c1 = c0 + sizeof nav->cfg;
     size_t b;
     for (b = 0; b < sizeof *nav; b++) {
-        p[b] = 0;
+        if (!keep_cfg || b < c0 || b >= c1) {
+            p[b] = 0;
+        }
     }
 }
 
@@ -122,8 +126,12 @@ static fnav_status_t nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
         (cfg->stance.rate_hz > FNAV_R(0.0) && !(cfg->max_gap_s * cfg->stance.rate_hz > FNAV_R(1.5)))) {
         return FNAV_E_CONFIG;
     }
-    nav_zero(nav);
-    nav->cfg = *cfg;
+    /* *cfg may be the navigator's own configuration (a restart with it):
+     * it was zeroed here before it was read, and the init refused it */
+    nav_zero(nav, cfg == &nav->cfg);
+    if (cfg != &nav->cfg) {
+        nav->cfg = *cfg;
+    }
     nav->t_in_ns = INT64_MIN; /* no sample yet: none is behind it */
     sc = cfg->stance;
     sc.gravity_mps2 = cfg->gravity_mps2;
@@ -152,7 +160,7 @@ fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
         /* not initialised, whatever it was before: every later call says
          * FNAV_E_STATE instead of running a half-configured navigator (a
          * module's refusal came after the configuration was copied) */
-        nav_zero(nav);
+        nav_zero(nav, 0);
     }
     return st;
 }

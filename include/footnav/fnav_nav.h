@@ -206,10 +206,11 @@ typedef struct {
 
 /** Initialise, or start over: every earlier state and counter is
  *  dropped, so a second call resets the navigator. *cfg is copied (it need
- *  not outlive the call).
- *  @return FNAV_OK, FNAV_E_ARG (NULL), FNAV_E_CONFIG (profile or any
- *          module's configuration invalid); on a failure *nav is left
- *          zeroed, not initialised (the other calls say FNAV_E_STATE). */
+ *  not outlive the call); it may be the navigator's own, &nav->cfg, to
+ *  start over with the same configuration.
+ *  @return FNAV_OK, FNAV_E_ARG (NULL; *nav untouched), FNAV_E_CONFIG
+ *          (profile or any module's configuration invalid; *nav is left
+ *          zeroed, not initialised: the other calls say FNAV_E_STATE). */
 FNAV_WARN_UNUSED fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg);
 
 /**

@@ -233,6 +233,11 @@ else
     fail "live --json of a damaged stream: $(head -c 400 "$T/live_c.json")"
 fi
 grep_in "$T/live.out" "$BAD bad frames, $BAD lost frames in $BAD drops" "every corrupt frame counted and reported as a drop"
+# the run went on to the END frame: the summary has no replay-style
+# "stopped after N samples, at the input error above" line (live's JSON
+# verdict, 2026-11-30, put it there for every incomplete run, before an
+# error printed below it)
+if grep -q "^stopped " "$T/live.out"; then fail "live's summary says it stopped: $(grep "^stopped " "$T/live.out")"; else pass "live's summary does not say the run stopped at an input error"; fi
 grep_in "$T/live.err" "bad frame:" "corrupt frames are reported as they happen"
 "$H" convert "$T/rec_c.bin" "$T/rec_c.csv" >/dev/null 2>&1
 got=$(($(wc -l <"$T/rec_c.csv") - 1))
