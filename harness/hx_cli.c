@@ -429,7 +429,7 @@ int hx_progress_text(char *buf, size_t size, const char *label, double frac, dou
     /* floored, so that a line never says more than is done: rounded, 9.6 %
      * printed "10 %" and the decile's line after it "10 %" again (a review,
      * 2026-11-30), and 99.6 % "100 %" before the end */
-    const int pct = frac >= 1.0 ? 100 : frac > 0.0 ? (int)(100.0 * frac) : 0;
+    const int pct = frac >= 1.0 ? 100 : frac > 0.0 ? (int)(100.0 * frac + 1e-9) : 0; /* 0.29: 28.999... */
     /* the time left at the rate so far, once 5 % and 2 s of it give a rate to go by */
     if (frac >= 0.05 && frac < 1.0 && elapsed_s >= 2.0) {
         (void)snprintf(left, sizeof left, ", about %.0f s left", elapsed_s * (1.0 - frac) / frac);

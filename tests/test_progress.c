@@ -28,6 +28,7 @@ static void test_floored(void **state)
     expect_line(0.996, 1.9, "convert:  99 % (1.9 s)");
     expect_line(1.0, 1.9, "convert: 100 % (1.9 s)");
     expect_line(0.0, 1.0, "convert:   0 % (1.0 s)");
+    expect_line(29.0 / 100.0, 1.0, "convert:  29 % (1.0 s)"); /* 100 * 0.29 is 28.999999999999996 in double */
 }
 
 /* the time left is elapsed * (1 - f) / f, from 5 % and 2 s on, and not at
