@@ -1669,7 +1669,6 @@ int hx_cmd_eval(int argc, char **argv)
     vicon_t vi;
     ipol_t ip;
     int rc, i, exp = 1;
-    size_t len = 0;
     fnav_nav_config_t off, ar1;
     rc = hx_args_parse(&k_spec, argc, argv, &a);
     if (rc != 0) {
@@ -1802,10 +1801,7 @@ int hx_cmd_eval(int argc, char **argv)
         other3 = (double *)ev_calloc(2 * (size_t)nother, sizeof *other3);
         other_hz = other3 + nother;
     }
-    len += (size_t)snprintf(cmdline, sizeof cmdline, "./bin/harness eval");
-    for (i = 0; i < argc && len < sizeof cmdline; i++) {
-        len += (size_t)snprintf(cmdline + len, sizeof cmdline - len, " %s", argv[i]);
-    }
+    hx_command_line(cmdline, sizeof cmdline, "./bin/harness eval", argc, argv);
     {
         /* progress: one run per walk or trial and configuration */
         char dir[700];

@@ -131,7 +131,6 @@ typedef struct {
     int have_frame;
     /* standard error */
     int tty;                      /* a terminal: the status line is redrawn in place */
-    int status_open;              /* a status line drawn without its newline */
     int status_len;               /* its length, to blank what a shorter one leaves */
     /* plot */
     hist_t hist;
@@ -144,11 +143,8 @@ typedef struct {
  * live review, 2026-11-30; tests/cli/live_tty.py) */
 static void end_status_line(live_t *L)
 {
-    if (L->status_open) {
-        fputc('\n', stderr);
-        L->status_open = 0;
-        L->status_len = 0;
-    }
+    hx_line_break(); /* the flag hx_error and hx_warn test too */
+    L->status_len = 0;
 }
 
 /* One navigation output: to the CSV (through the Linux port's writer, as
@@ -543,7 +539,7 @@ static void print_status(live_t *L, double quiet_s)
         /* redrawn in place: spaces over what a longer line before left */
         fprintf(stderr, "\r%s%*s", line, L->status_len > n ? L->status_len - n : 0, "");
         L->status_len = n;
-        L->status_open = 1;
+        hx_line_open();
     } else {
         fprintf(stderr, "%s\n", line);
     }
@@ -666,7 +662,6 @@ int hx_cmd_live(int argc, char **argv)
     char err[600], gone_msg[600] = "";
     int rc, exit_code = HX_EXIT_OK, gone = 0, timed_out = 0;
     char cmdline[1024], why[700] = "", port_path[4096];
-    size_t cmdlen;
     struct sigaction sa;
 
     if (hx_nav_param_help_requested(argc, argv)) {
@@ -732,10 +727,7 @@ int hx_cmd_live(int argc, char **argv)
 
     memset(&L, 0, sizeof L);
     L.tty = isatty(fileno(stderr));
-    cmdlen = (size_t)snprintf(cmdline, sizeof cmdline, "harness live");
-    for (rc = 0; rc < argc && cmdlen < sizeof cmdline; rc++) {
-        cmdlen += (size_t)snprintf(cmdline + cmdlen, sizeof cmdline - cmdlen, " %s", argv[rc]);
-    }
+    hx_command_line(cmdline, sizeof cmdline, "harness live", argc, argv);
     hx_traj_set_config(&L.traj, &nopt, &ncfg); /* the summary's config line, as replay's */
     fnav_wire_decoder_init(&L.dec);
     L.nav = &nav;

@@ -43,8 +43,7 @@ int hx_cmd_replay(int argc, char **argv)
     const char *out_path, *json_path, *plot_path, *from;
     FILE *csv = NULL;
     char err[400], cmdline[1024];
-    int rc, exit_code = HX_EXIT_OK, i;
-    size_t len = 0;
+    int rc, exit_code = HX_EXIT_OK;
     if (hx_nav_param_help_requested(argc, argv)) {
         return HX_EXIT_OK;
     }
@@ -101,10 +100,7 @@ int hx_cmd_replay(int argc, char **argv)
             return HX_EXIT_IO;
         }
     }
-    len += (size_t)snprintf(cmdline, sizeof cmdline, "harness replay");
-    for (i = 0; i < argc && len < sizeof cmdline; i++) {
-        len += (size_t)snprintf(cmdline + len, sizeof cmdline - len, " %s", argv[i]);
-    }
+    hx_command_line(cmdline, sizeof cmdline, "harness replay", argc, argv);
     rc = hx_nav_replay("replay", a.pos[0], fmt, in_rate, &cfg, o.rate_hz, csv, &traj, HX_REPLAY_PROGRESS | HX_REPLAY_AXES,
                        err, sizeof err);
     traj.input_complete = 1;

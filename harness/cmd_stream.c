@@ -251,7 +251,7 @@ int hx_cmd_stream(int argc, char **argv)
         /* not "done in 1.6 s" after the port's error, as if the log had
          * gone out (the live review, 2026-11-30): the line redrawn in place
          * is ended, and the summary below says what was sent */
-        hx_progress_stop(&prog);
+        hx_line_break();
     } else {
         hx_progress_end(&prog);
     }

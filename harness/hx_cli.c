@@ -267,24 +267,30 @@ int hx_arg_whole(const hx_args_t *a, const char *name, double lo, double hi, dou
     return 0;
 }
 
-/* A progress line redrawn in place on a terminal ends without a newline:
- * an error or a warning that comes while one is drawn starts a line of its
- * own (it was written after it, on the same line: stream's "write failed"
- * after "harness stream:  41 % (1.6 s)"; the live review, 2026-11-30). */
-static int g_progress_open;
+/* A progress or status line redrawn in place on a terminal ends without a
+ * newline: an error or a warning that comes while one is drawn starts a
+ * line of its own (it was written after it, on the same line: stream's
+ * "write failed" after "harness stream:  41 % (1.6 s)", live's warnings
+ * after its status line; the live review, 2026-11-30). One flag for both. */
+static int g_line_open;
 
-static void progress_line_break(void)
+void hx_line_open(void)
 {
-    if (g_progress_open) {
+    g_line_open = 1;
+}
+
+void hx_line_break(void)
+{
+    if (g_line_open) {
         fputc('\n', stderr);
-        g_progress_open = 0;
+        g_line_open = 0;
     }
 }
 
 void hx_error(const char *cmd, const char *fmt, ...)
 {
     va_list ap;
-    progress_line_break();
+    hx_line_break();
     fprintf(stderr, "harness %s: error: ", cmd);
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
@@ -295,7 +301,7 @@ void hx_error(const char *cmd, const char *fmt, ...)
 void hx_warn(const char *cmd, const char *fmt, ...)
 {
     va_list ap;
-    progress_line_break();
+    hx_line_break();
     fprintf(stderr, "harness %s: warning: ", cmd);
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
@@ -458,7 +464,7 @@ void hx_progress_update(hx_progress_t *p, double done)
         /* the trailing blanks clear a longer line drawn before */
         fprintf(stderr, "\r%s   ", line);
         fflush(stderr);
-        g_progress_open = 1;
+        hx_line_open();
     } else {
         decile = (int)(frac * 10.0);
         if (decile <= p->last_decile && p->shown) {
@@ -472,15 +478,9 @@ void hx_progress_update(hx_progress_t *p, double done)
     p->t_last = now;
 }
 
-void hx_progress_stop(hx_progress_t *p)
-{
-    (void)p;
-    progress_line_break();
-}
-
 void hx_progress_end(hx_progress_t *p)
 {
-    g_progress_open = 0; /* the line below ends it */
+    g_line_open = 0; /* the line below ends it */
     if (p->shown) {
         /* on a terminal the blanks clear the rest of the longer progress line */
         fprintf(stderr, "%s%s: done in %.1f s%s\n", p->tty ? "\r" : "", p->label, hx_now_s() - p->t_start,
@@ -778,6 +778,15 @@ const char *hx_fmt_g(char *buf, size_t size, double v)
         snprintf(buf, size, "null");
     }
     return buf;
+}
+
+void hx_command_line(char *buf, size_t size, const char *prefix, int argc, char **argv)
+{
+    size_t len = (size_t)snprintf(buf, size, "%s", prefix);
+    int i;
+    for (i = 0; i < argc && len < size; i++) {
+        len += (size_t)snprintf(buf + len, size - len, " %s", argv[i]);
+    }
 }
 
 int hx_cmp_double(const void *a, const void *b)

@@ -135,10 +135,13 @@ void hx_progress_start(hx_progress_t *p, const char *label, double total);
 int hx_progress_text(char *buf, size_t size, const char *label, double frac, double elapsed_s);
 void hx_progress_update(hx_progress_t *p, double done);
 void hx_progress_end(hx_progress_t *p);
-/** Work stopped (an error): a progress line still open on a terminal is
- *  ended with a newline, without "done in". hx_error and hx_warn do the
- *  same before their message. */
-void hx_progress_stop(hx_progress_t *p);
+/** A line drawn in place on standard error (a progress or status line on a
+ *  terminal, no newline yet): hx_line_break() ends it. */
+void hx_line_open(void);
+/** End with a newline a line hx_line_open() left open (nothing when none
+ *  is): before other output, or when work stops without "done in".
+ *  hx_error and hx_warn call it first. */
+void hx_line_break(void);
 /** Seconds since an arbitrary origin (monotonic). */
 double hx_now_s(void);
 
@@ -209,5 +212,9 @@ const char *hx_gp_str(char *buf, size_t size, const char *s);
 
 /** Format a double for JSON/text (finite or "null"). */
 const char *hx_fmt_g(char *buf, size_t size, double v);
+/** The command line as run, for a JSON's `command` or a results page:
+ *  prefix ("harness replay"), then each of argv[0..argc) after a space;
+ *  cut at size. */
+void hx_command_line(char *buf, size_t size, const char *prefix, int argc, char **argv);
 
 #endif /* HX_CLI_H */

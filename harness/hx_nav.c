@@ -595,13 +595,13 @@ void hx_nav_plot_title(const hx_traj_t *t, const char *path, double rate_hz, cha
     }
     if (t->have_config) {
         const fnav_nav_config_t *c = &t->config;
+        int i;
         if (used < sizeof opt && (t->profile_file[0] != '\0' ||
                                   strcmp(c->profile.name, fnav_nav_config_default.profile.name) != 0)) {
             k = snprintf(opt + used, sizeof opt - used, ", --profile %s",
                          t->profile_file[0] != '\0' ? t->profile_file : c->profile.name);
             used += k > 0 ? (size_t)k : 0u;
         }
-        int i;
         if (used < sizeof opt && c->bias_model != fnav_nav_config_default.bias_model) {
             k = snprintf(opt + used, sizeof opt - used, ", --bias-model %s", bias_model_name(c));
             used += k > 0 ? (size_t)k : 0u;
