@@ -1,9 +1,12 @@
 #!/bin/sh
 # The documentation against the harness: every option of each command's
-# --help is named in that command's document, and every key the JSON outputs
-# write (replay, info, psd, allan) is named in theirs. A review found the
-# allan JSON's fit keys documented under names the code never wrote and most
-# psd and allan keys undocumented (2026-11-28).
+# --help is named in that command's document, and every option of a
+# synopsis in docs/harness.md is in that command's --help; every key the
+# JSON outputs write (replay, info, eval with the shared data, psd, allan,
+# montecarlo) is named in theirs; every relative link, anchor and section
+# reference of the docs resolves. A review found the allan JSON's fit keys
+# documented under names the code never wrote and most psd and allan keys
+# undocumented (2026-11-28).
 # $HARNESS is the harness binary (set by `make test-cli`).
 set -u
 H=${HARNESS:-bin/harness}
@@ -89,6 +92,15 @@ check_keys "psd --json" "$T/psd.json" psd.md
     fail "sim a static log for allan"
 expect_exit 0 "allan --json" "$H" allan "$T/stand.bin" --channels gx,gy --fit-extra --json "$T/allan.json"
 check_keys "allan --json" "$T/allan.json" allan.md
+# eval needs the shared data (tests/cli/datadir.sh): its headline keys, from
+# the main runs alone (--no-experiments; failed_experiment_runs is then null)
+. "$(dirname "$0")/datadir.sh"
+if [ -n "$D" ]; then
+    expect_exit 0 "eval --json" "$H" eval --data "$D" --no-experiments --no-plots --out "$T/results.md" --json "$T/eval.json"
+    check_keys "eval --json" "$T/eval.json" harness.md
+else
+    echo "SKIP test_docs.sh: no shared data, eval's JSON keys not checked"
+fi
 expect_exit 0 "montecarlo --json" "$H" montecarlo --duration 10 --seeds 2 --bias-model both --quiet --json "$T/mc.json"
 check_keys "montecarlo --json" "$T/mc.json" simulator.md
 
