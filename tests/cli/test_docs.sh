@@ -1,9 +1,12 @@
 #!/bin/sh
 # The documentation against the harness: every option of each command's
-# --help is named in that command's document, and every key the JSON outputs
-# write (replay, info, psd, allan) is named in theirs. A review found the
-# allan JSON's fit keys documented under names the code never wrote and most
-# psd and allan keys undocumented (2026-11-28).
+# --help is named in that command's document, and every option of a
+# synopsis in docs/harness.md is in that command's --help; every key the
+# JSON outputs write (replay, info, eval with the shared data, psd, allan,
+# montecarlo) is named in theirs; every relative link, anchor and section
+# reference of the docs resolves. A review found the allan JSON's fit keys
+# documented under names the code never wrote and most psd and allan keys
+# undocumented (2026-11-28).
 # $HARNESS is the harness binary (set by `make test-cli`).
 set -u
 H=${HARNESS:-bin/harness}
@@ -38,6 +41,21 @@ montecarlo simulator.md
 simgap simgap.md
 simgap-validate simgap.md
 EOF
+
+# --- and back: every option of a command's synopsis in docs/harness.md (the
+# first code block of its section, ## `CMD`) is in that command's --help
+for cmd in info convert replay eval stream live; do
+    "$H" "$cmd" --help >"$T/help" 2>&1
+    awk -v h="## \`$cmd\`" '$0 == h { s = 1; next } s && /^## / { exit }
+        s && /^```/ { if (b) exit; b = 1; next } s && b' "$DOCS/harness.md" >"$T/syn"
+    if [ ! -s "$T/syn" ]; then fail "$cmd: no synopsis block under ## \`$cmd\` in docs/harness.md"; continue; fi
+    extra=""
+    for o in $(grep -o -e '--[a-z][a-z0-9-]*' "$T/syn" | sort -u); do
+        grep -q -e "^ *$o\([^a-z0-9-]\|\$\)" "$T/help" || extra="$extra $o"
+    done
+    if [ -z "$extra" ]; then pass "$cmd: every option of its synopsis in docs/harness.md is in --help"
+    else fail "$cmd: docs/harness.md's synopsis names options --help lacks:$extra"; fi
+done
 
 # --- JSON keys: every key written, at any depth, is named in the document
 json_keys() { # JSON file -> one key per line
@@ -74,8 +92,94 @@ check_keys "psd --json" "$T/psd.json" psd.md
     fail "sim a static log for allan"
 expect_exit 0 "allan --json" "$H" allan "$T/stand.bin" --channels gx,gy --fit-extra --json "$T/allan.json"
 check_keys "allan --json" "$T/allan.json" allan.md
+# eval needs the shared data (tests/cli/datadir.sh): its headline keys, from
+# the main runs alone (--no-experiments; failed_experiment_runs is then null)
+. "$(dirname "$0")/datadir.sh"
+if [ -n "$D" ]; then
+    expect_exit 0 "eval --json" "$H" eval --data "$D" --no-experiments --no-plots --out "$T/results.md" --json "$T/eval.json"
+    check_keys "eval --json" "$T/eval.json" harness.md
+else
+    echo "SKIP test_docs.sh: no shared data, eval's JSON keys not checked"
+fi
 expect_exit 0 "montecarlo --json" "$H" montecarlo --duration 10 --seeds 2 --bias-model both --quiet --json "$T/mc.json"
 check_keys "montecarlo --json" "$T/mc.json" simulator.md
+
+# --- links and section references: every relative Markdown link of README.md,
+# CONTRIBUTING.md and docs/*.md names a file that exists, and its #anchor a
+# heading of that file (GitHub's slugs); every reference in prose to a
+# section of another document, `X.md, "Heading"` (also `X.md "Heading"`,
+# `[X.md](X.md), "Heading"`, across a line break), names a heading or a bold
+# paragraph label (**Units check.**) of X.md that begins with that text.
+# Outside code blocks and inline code. The docs audit of 2026-11-30 found
+# none broken; nothing checked them before.
+ROOT=$(cd "$DOCS/.." && pwd)
+if (cd "$ROOT" && /usr/bin/python3 - README.md CONTRIBUTING.md docs/*.md) >"$T/links" 2>&1 <<'PY'
+import os, re, sys
+
+def norm(s):
+    return re.sub(r'\s+', ' ', re.sub(r'[`"*]', '', s)).strip().rstrip('.:').lower()
+
+def slug(h):  # GitHub's anchor of a heading
+    h = re.sub(r'\[([^\]]*)\]\([^)]*\)', r'\1', h.replace('`', '')).strip().lower()
+    return ''.join(c for c in h if c.isalnum() or c in ' -_').replace(' ', '-')
+
+def prose(path):  # the lines outside fenced code blocks, numbered
+    fence = False
+    for no, line in enumerate(open(path, encoding='utf-8'), 1):
+        if line.startswith('```'):
+            fence = not fence
+            continue
+        if not fence:
+            yield no, line
+
+cache = {}
+def targets(path):  # (anchors, heading and bold-label texts) of a document
+    if path not in cache:
+        anchors, labels, seen, text = set(), [], {}, []
+        for _, line in prose(path):
+            m = re.match(r'#{1,6}\s+(.*?)\s*#*\s*$', line)
+            if m:
+                s = slug(m.group(1))
+                n = seen.get(s, 0)
+                seen[s] = n + 1
+                anchors.add(s if n == 0 else '%s-%d' % (s, n))
+                labels.append(norm(m.group(1)))
+            anchors.update(re.findall(r'<a\s+(?:name|id)="([^"]+)"', line))
+            text.append(line)
+        for m in re.finditer(r'(?:^|\n)\s*(?:[*-]\s+)?\*\*(.+?)\*\*', ''.join(text), re.S):
+            labels.append(norm(m.group(1)))
+        cache[path] = (anchors, labels)
+    return cache[path]
+
+bad = 0
+for f in sys.argv[1:]:
+    lines = []
+    for no, line in prose(f):
+        line = re.sub(r'`[^`]*`', lambda m: m.group(0) if re.fullmatch(r'`[\w./-]+\.md`', m.group(0)) else '``', line)
+        lines.append(line)
+        for m in re.finditer(r'\]\(([^)\s]+)(?:\s+"[^"]*")?\)', line):
+            t = m.group(1)
+            if re.match(r'[a-z][a-z0-9+.-]*:', t):
+                continue  # http:, mailto:
+            p, _, frag = t.partition('#')
+            tgt = os.path.normpath(os.path.join(os.path.dirname(f), p)) if p else f
+            if not os.path.exists(tgt):
+                print('%s:%d: link %s: no such file' % (f, no, t)); bad += 1
+            elif frag and tgt.endswith('.md') and frag not in targets(tgt)[0]:
+                print('%s:%d: link %s: no heading #%s in %s' % (f, no, t, frag, tgt)); bad += 1
+    flat = re.sub(r'\s*\n\s*', ' ', ''.join(lines))
+    for m in re.finditer(r'([\w./-]+\.md)[`)\]]*,? *\(?"([^"]+)"', flat):
+        name, h = m.group(1), m.group(2)
+        cands = [os.path.join(os.path.dirname(f), name), os.path.join('docs', os.path.basename(name)), name]
+        tgt = next((c for c in cands if os.path.exists(c)), None)
+        if tgt is None:
+            print('%s: %s, "%s": no such file' % (f, name, h)); bad += 1
+        elif not any(x.startswith(norm(h)) for x in targets(tgt)[1]):
+            print('%s: %s, "%s": no such heading or bold label in %s' % (f, name, h, tgt)); bad += 1
+sys.exit(1 if bad else 0)
+PY
+then pass "every relative link, anchor and section reference of the docs resolves"
+else fail "broken links or section references:"; cat "$T/links"; fi
 
 if [ "$fails" -ne 0 ]; then echo "test_docs.sh: $fails failure(s)"; exit 1; fi
 echo "test_docs.sh: all passed"
