@@ -22,12 +22,14 @@ static const hx_opt_t k_opts[] = {
 
 static const hx_spec_t k_spec = {
     "replay", "LOG [options]",
-    "Replay a log through footnav's navigation (stance detector, alignment,\n"
-    "15-state UKF with zero-velocity updates) sample by sample through the\n"
-    "port layer, write the trajectory, print a summary: duration, distance\n"
-    "(step-to-step through stance mid-points), return-to-start error, vertical\n"
-    "drift, heading change, strides, timing and health counters. On bad input\n"
-    "every frame before the error is written and the exit status is 1.",
+    "Replay a log through footnav's navigation (stance detector, alignment, UKF\n"
+    "with zero-velocity updates: the paper's 15 states and, by default, 3 for\n"
+    "the lever of the rolling foot; --param lever=0 leaves them out) sample by\n"
+    "sample through the port layer, write the trajectory, print a summary:\n"
+    "duration, distance (step-to-step through stance mid-points),\n"
+    "return-to-start error, vertical drift, heading change, strides, timing and\n"
+    "health counters. On bad input every frame before the error is written and\n"
+    "the exit status is 1.",
     1, 1, k_opts
 };
 
