@@ -42,6 +42,20 @@ awk 'BEGIN { s = 1; for (i = 0; i < 3000; i++) { s = (s * 1103515245 + 12345) % 
 expect_exit 1 "bad line in series" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --out "$T/bad.csv"
 grep -q "bad.txt:3001: not a number" "$T/err" && pass "bad line reported with its number" || fail "bad line message"
 [ "$(grep -c '^series,' "$T/bad.csv")" -gt 10 ] && pass "table written before the error" || fail "table before error"
+# --json says so, as info's, replay's, psd's and simgap's: complete false and
+# the reader's error (it had neither; the JSON review, 2026-11-30), and a log
+# read to its end complete true without an error
+expect_exit 1 "bad line in series, --json" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --quiet --json "$T/bad.json"
+json "$T/bad.json" 'j["complete"] is False and j["error"].endswith("bad.txt:3001: not a number") and j["samples"] == 3000' &&
+    pass "--json of a series cut by a bad line: complete false, the error" || fail "bad line --json: $(head -c 200 "$T/bad.json")"
+head -c 40000 vectors/walk.bin >"$T/cut.bin"
+expect_exit 1 "a .bin log cut mid-record, --json" "$H" allan "$T/cut.bin" --no-sim --quiet --json "$T/cut.json"
+json "$T/cut.json" 'j["complete"] is False and "truncated: record #829" in j["error"] and j["samples"] == 829' &&
+    pass "--json of a cut log: complete false, the reader's error" || fail "cut log --json: $(head -c 200 "$T/cut.json")"
+head -2000 "$T/bad.txt" >"$T/good.txt"
+expect_exit 0 "a whole series, --json" "$H" allan --series "$T/good.txt" --rate 10 --no-sim --quiet --json "$T/good.json"
+json "$T/good.json" 'j["complete"] is True and "error" not in j' && pass "--json of a whole series: complete true, no error" ||
+    fail "whole series --json: $(head -c 200 "$T/good.json")"
 expect_exit 3 "unwritable output" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --quiet --out /nonexistent/dir/t.csv
 
 # a log too short for an identification: tables and plot still written, no profile, exit 1
