@@ -1300,14 +1300,14 @@ static int write_csv(const run_t *R, const char *path)
     FILE *f = fopen(path, "w");
     int i;
     size_t k;
-    char b[16][32];
+    char b[16][32], line[4096];
     if (f == NULL) {
         hx_error(CMD, "%s: cannot create (%s)", path, strerror(errno));
         return -1;
     }
     fprintf(f, "# harness allan: %s, %lu samples at %g Hz; %s estimator; ADEV in the channel's unit; CI at %g "
                "confidence (Greenhall EDF)\n",
-            R->source, (unsigned long)R->n, R->rate_hz, R->exact ? "exact" : "streaming", R->conf);
+            hx_line_str(line, sizeof line, R->source), (unsigned long)R->n, R->rate_hz, R->exact ? "exact" : "streaming", R->conf);
     fprintf(f, "channel,unit,tau_s,m,level,stride,oadev,oadev_lo,oadev_hi,edf,terms,adev,adev_lo,adev_hi,edf_n,"
                "terms_n,slope,noise,sim_paper,sim_fit,model_paper,model_fit,alpha,alpha_from");
     for (i = 0; i < R->ndev; i++) {
@@ -2141,6 +2141,14 @@ int hx_cmd_allan(int argc, char **argv)
         /* the profile's "name = ..." line: a line break in it wrote keys of
          * its own (a second rate_hz), and the profile could not be read */
         hx_error(CMD, "--name must be printable text on one line (no control characters)");
+        return HX_EXIT_USAGE;
+    }
+    if (hx_arg(&a, "--unit") != NULL &&
+        (!name_printable(hx_arg(&a, "--unit")) || strpbrk(hx_arg(&a, "--unit"), ",\"") != NULL)) {
+        /* a field of every row of the --out CSV: a comma split it (rows one
+         * column wider than the header; the JSON review, 2026-11-30) */
+        hx_error(CMD, "--unit must be printable text on one line without a comma or a double quote (it is a field "
+                      "of the --out CSV)");
         return HX_EXIT_USAGE;
     }
     R = (run_t *)calloc(1, sizeof *R);

@@ -728,6 +728,19 @@ const char *hx_gp_str(char *buf, size_t size, const char *s)
     return buf;
 }
 
+const char *hx_line_str(char *buf, size_t size, const char *s)
+{
+    size_t o = 0;
+    if (size == 0) {
+        return buf;
+    }
+    for (; *s != '\0' && o + 1 < size; s++) {
+        buf[o++] = ((unsigned char)*s < 0x20u || *s == 0x7f) ? '?' : *s;
+    }
+    buf[o] = '\0';
+    return buf;
+}
+
 int hx_plot_check(const char *cmd, const char *png_path)
 {
     if (system("command -v gnuplot >/dev/null 2>&1") != 0) {

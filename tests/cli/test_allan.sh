@@ -877,5 +877,23 @@ rows = [r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswi
 sys.exit(0 if all(r['noise'] == 'quantisation' and r['alpha'] == '2' for r in rows[:8]) else 1)" "$T/wpm.csv"; then
     pass "white phase noise still reads quantisation"; else fail "white phase noise not read as quantisation"; fi
 
+# --- the --out CSV's first line, a comment naming the log, stays one line
+# when the log's name holds a line break (the rest of the name began a line
+# of its own, read as the header; the JSON review, 2026-11-30)
+NL=$(printf 'new\nline.bin')
+cp vectors/walk.bin "$T/$NL"
+c=allan; first=channel
+"$H" $c "$T/$NL" --no-sim --quiet --out "$T/nl_$c.csv" >/dev/null 2>&1
+if "${PY:-/usr/bin/python3}" -c 'import csv, sys
+rows = list(csv.reader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+sys.exit(0 if len(rows) > 2 and rows[0][0] == sys.argv[2] and all(len(r) == len(rows[0]) for r in rows) else 1)' "$T/nl_$c.csv" "$first" 2>"$T/pyerr"; then
+    pass "$c --out of a log whose name holds a line break: one comment line, every row as wide as the header"
+else fail "$c --out with a line break in the log's name: $(head -c 200 "$T/nl_$c.csv")"; fi
+rm -f "$T/$NL"
+# --unit is a field of every row of the CSV: a comma in it split the field
+# (`--unit a,b` gave rows one column wider than the header)
+expect_exit 2 "--unit with a comma" "$H" allan --series "$T/good.txt" --rate 10 --unit "a,b" --no-sim --quiet --out "$T/ub.csv"
+expect_err "--unit must be" "the error says what --unit may hold"
+
 if [ "$fails" -ne 0 ]; then echo "test_allan.sh: $fails failure(s)"; exit 1; fi
 echo "test_allan.sh: all passed"

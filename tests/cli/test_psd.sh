@@ -332,5 +332,19 @@ PYEOF
 else
     echo "SKIP ADIS16405 Welch test (shared data not found; set FNAV_DATA_DIR)"
 fi
+# --- the --out CSV's first line, a comment naming the log, stays one line
+# when the log's name holds a line break (the rest of the name began a line
+# of its own, read as the header; the JSON review, 2026-11-30)
+NL=$(printf 'new\nline.bin')
+cp vectors/walk.bin "$T/$NL"
+c=psd; first=freq_hz
+"$H" $c "$T/$NL" --out "$T/nl_$c.csv" >/dev/null 2>&1
+if "${PY:-/usr/bin/python3}" -c 'import csv, sys
+rows = list(csv.reader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+sys.exit(0 if len(rows) > 2 and rows[0][0] == sys.argv[2] and all(len(r) == len(rows[0]) for r in rows) else 1)' "$T/nl_$c.csv" "$first" 2>"$T/pyerr"; then
+    pass "$c --out of a log whose name holds a line break: one comment line, every row as wide as the header"
+else fail "$c --out with a line break in the log's name: $(head -c 200 "$T/nl_$c.csv")"; fi
+rm -f "$T/$NL"
+
 if [ "$fails" -ne 0 ]; then echo "test_psd.sh: $fails failure(s)"; exit 1; fi
 echo "test_psd.sh: all passed"
