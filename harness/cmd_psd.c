@@ -866,6 +866,12 @@ int hx_cmd_psd(int argc, char **argv)
             }
         }
         cJSON_AddBoolToObject(root, "complete", log.status == FNAV_END);
+        if (log.status != FNAV_END) {
+            /* the reader's message, as info's, replay's, allan's and
+             * simgap's `error` (it had `complete` only; the JSON review,
+             * 2026-11-30) */
+            cJSON_AddStringToObject(root, "error", log.error);
+        }
         if (hx_write_json(hx_arg(&a, "--json"), root, err, sizeof err) != 0) {
             hx_error(CMD, "%s", err);
             exit_code = HX_EXIT_IO;
