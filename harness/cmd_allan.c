@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <float.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -152,7 +153,20 @@ typedef struct {
     double *win_spread;      /* every window's rate and |f| spread (RMS), in pairs: the disturbance check */
     size_t win_cap;          /* windows win_spread holds room for */
     int moving;              /* over HX_ALLAN_MOVING_FRAC of the windows move: not a static log */
+    char input_error[512];   /* the error that stopped the input ("": read to its end; input_fail) */
 } run_t;
+
+/* An error of the input that stops the reading: said, and kept for the
+ * JSON's `error` (it had no `complete` nor `error`; the JSON review,
+ * 2026-11-30) */
+static void input_fail(run_t *R, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(R->input_error, sizeof R->input_error, fmt, ap);
+    va_end(ap);
+    hx_error(CMD, "%s", R->input_error);
+}
 
 /* A window moves when within its second the rate spreads by more than
  * 0.25 rad/s RMS (14 deg/s; a gyro at rest spreads by hundredths) or |f|
@@ -657,12 +671,12 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
             const double v = k < 3 ? (double)s.accel_mps2[k] : (double)s.gyro_rps[k - 3];
             const int pr_rc = push_all(R, &R->ch[i], v);
             if (pr_rc == -2) {
-                hx_error(CMD, "%s: sample %lu: %s", path, (unsigned long)R->n + 1u, k_exact_oom);
+                input_fail(R, "%s: sample %lu: %s", path, (unsigned long)R->n + 1u, k_exact_oom);
                 rc = 1;
                 break;
             }
             if (pr_rc != 0) {
-                hx_error(CMD, "%s: sample %lu: channel %s is not finite (or beyond the float range)", path, (unsigned long)R->n + 1u,
+                input_fail(R, "%s: sample %lu: channel %s is not finite (or beyond the float range)", path, (unsigned long)R->n + 1u,
                          R->ch[i].name);
                 rc = 1;
                 break;
@@ -679,7 +693,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     hx_progress_end(&pr);
     hx_print_warnings(CMD, hx_reader_take_warnings(r)); /* a cut-off last line is found at the end */
     if (rc == 0 && st != FNAV_OK && st != FNAV_END) {
-        hx_error(CMD, "%s", hx_reader_error(r));
+        input_fail(R, "%s", hx_reader_error(r));
         rc = 1;
     }
     if (irregular > 0) {
@@ -731,9 +745,9 @@ static int push_series(run_t *R, const char *path, long lineno, double y, double
     }
     prc = push_all(R, &R->ch[0], y - *first);
     if (prc == -2) {
-        hx_error(CMD, "%s:%ld: %s", path, lineno, k_exact_oom);
+        input_fail(R, "%s:%ld: %s", path, lineno, k_exact_oom);
     } else if (prc != 0) {
-        hx_error(CMD, "%s:%ld: %g differs from the first value, %g, by more than the estimator's input range (%g)",
+        input_fail(R, "%s:%ld: %g differs from the first value, %g, by more than the estimator's input range (%g)",
                  path, lineno, y, *first, FNAV_INPUT_MAX_ABS);
     }
     return prc;
@@ -773,7 +787,7 @@ static int read_series(run_t *R, const char *path, int phase, long column)
         lineno++;
         if (strchr(line, '\n') == NULL && !feof(f)) {
             /* a longer line would be read in pieces, each taken for a line */
-            hx_error(CMD, "%s:%ld: line longer than %d characters", path, lineno,
+            input_fail(R, "%s:%ld: line longer than %d characters", path, lineno,
                      (int)sizeof line - 2);
             rc = 1;
             break;
@@ -797,9 +811,9 @@ static int read_series(run_t *R, const char *path, int phase, long column)
                 continue;
             }
             if (*p == '\0' || *p == '\n' || *p == '\r') {
-                hx_error(CMD, "%s:%ld: no column %ld", path, lineno, column);
+                input_fail(R, "%s:%ld: no column %ld", path, lineno, column);
             } else {
-                hx_error(CMD, "%s:%ld: not a number", path, lineno);
+                input_fail(R, "%s:%ld: not a number", path, lineno);
             }
             rc = 1;
             break;
@@ -808,12 +822,12 @@ static int read_series(run_t *R, const char *path, int phase, long column)
             end++;
         }
         if (column == 0 && *end != '\0') {
-            hx_error(CMD, "%s:%ld: expected one number per line (--column N takes one of several)", path, lineno);
+            input_fail(R, "%s:%ld: expected one number per line (--column N takes one of several)", path, lineno);
             rc = 1;
             break;
         }
         if (!isfinite(v)) {
-            hx_error(CMD, "%s:%ld: not a finite number", path, lineno);
+            input_fail(R, "%s:%ld: not a finite number", path, lineno);
             rc = 1;
             break;
         }
@@ -1286,14 +1300,14 @@ static int write_csv(const run_t *R, const char *path)
     FILE *f = fopen(path, "w");
     int i;
     size_t k;
-    char b[16][32];
+    char b[16][32], line[4096];
     if (f == NULL) {
         hx_error(CMD, "%s: cannot create (%s)", path, strerror(errno));
         return -1;
     }
     fprintf(f, "# harness allan: %s, %lu samples at %g Hz; %s estimator; ADEV in the channel's unit; CI at %g "
                "confidence (Greenhall EDF)\n",
-            R->source, (unsigned long)R->n, R->rate_hz, R->exact ? "exact" : "streaming", R->conf);
+            hx_line_str(line, sizeof line, R->source), (unsigned long)R->n, R->rate_hz, R->exact ? "exact" : "streaming", R->conf);
     fprintf(f, "channel,unit,tau_s,m,level,stride,oadev,oadev_lo,oadev_hi,edf,terms,adev,adev_lo,adev_hi,edf_n,"
                "terms_n,slope,noise,sim_paper,sim_fit,model_paper,model_fit,alpha,alpha_from");
     for (i = 0; i < R->ndev; i++) {
@@ -1406,6 +1420,12 @@ static int write_json(const run_t *R, const char *path)
     }
     if (R->f0 > 0.0) {
         cJSON_AddNumberToObject(root, "fractional_f0", R->f0);
+    }
+    /* as info's, replay's, psd's and simgap's: false when the input
+     * stopped at an error, the tables covering the samples before it */
+    cJSON_AddBoolToObject(root, "complete", R->input_error[0] == '\0');
+    if (R->input_error[0] != '\0') {
+        cJSON_AddStringToObject(root, "error", R->input_error);
     }
     arr = cJSON_AddArrayToObject(root, "channels");
     for (i = 0; i < R->nch; i++) {
@@ -2121,6 +2141,14 @@ int hx_cmd_allan(int argc, char **argv)
         /* the profile's "name = ..." line: a line break in it wrote keys of
          * its own (a second rate_hz), and the profile could not be read */
         hx_error(CMD, "--name must be printable text on one line (no control characters)");
+        return HX_EXIT_USAGE;
+    }
+    if (hx_arg(&a, "--unit") != NULL &&
+        (!name_printable(hx_arg(&a, "--unit")) || strpbrk(hx_arg(&a, "--unit"), ",\"") != NULL)) {
+        /* a field of every row of the --out CSV: a comma split it (rows one
+         * column wider than the header; the JSON review, 2026-11-30) */
+        hx_error(CMD, "--unit must be printable text on one line without a comma or a double quote (it is a field "
+                      "of the --out CSV)");
         return HX_EXIT_USAGE;
     }
     R = (run_t *)calloc(1, sizeof *R);

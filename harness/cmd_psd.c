@@ -233,13 +233,14 @@ static int write_csv(const char *path, const result_t *r, const char *src)
     FILE *f = fopen(path, "w");
     uint32_t k;
     int c;
+    char line[4096];
     if (f == NULL) {
         hx_error(CMD, "%s: cannot create (%s)", path, strerror(errno));
         return -1;
     }
     fprintf(f, "# harness psd: %s; one-sided Welch PSD (accel (m/s^2)^2/Hz, gyro (rad/s)^2/Hz) and CCDF "
                "(1 - cumulative power fraction at the bin's upper edge)\n",
-            src);
+            hx_line_str(line, sizeof line, src));
     fprintf(f, "freq_hz");
     for (c = 0; c < 6; c++) {
         fprintf(f, ",psd_%s", k_ch[c]);
@@ -865,6 +866,12 @@ int hx_cmd_psd(int argc, char **argv)
             }
         }
         cJSON_AddBoolToObject(root, "complete", log.status == FNAV_END);
+        if (log.status != FNAV_END) {
+            /* the reader's message, as info's, replay's, allan's and
+             * simgap's `error` (it had `complete` only; the JSON review,
+             * 2026-11-30) */
+            cJSON_AddStringToObject(root, "error", log.error);
+        }
         if (hx_write_json(hx_arg(&a, "--json"), root, err, sizeof err) != 0) {
             hx_error(CMD, "%s", err);
             exit_code = HX_EXIT_IO;

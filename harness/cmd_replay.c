@@ -141,6 +141,11 @@ int hx_cmd_replay(int argc, char **argv)
     } else if (rc == 2) {
         hx_error("replay", "%s; outputs were still written, computed from the values as given", err);
         exit_code = HX_EXIT_DATA;
+    } else if (rc == 3) {
+        /* read to its end, never aligned: every frame was written and the
+         * input is complete (docs/harness.md, "replay") */
+        hx_error("replay", "%s", err);
+        exit_code = HX_EXIT_DATA;
     }
     if (rc != 2 && traj.axes.problem) {
         /* a statistical verdict, not a physical impossibility like the

@@ -66,7 +66,7 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     hx_args_t a;
     sgv_opts_t o = sgv_opts_default();
     sgv_case_t *cases;
-    char err[512];
+    char err[512], why[600];
     long n = o.cases, seed = (long)o.seed, seeds = o.seeds;
     const char *json, *md, *mr;
     double t0;
@@ -146,16 +146,20 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     t0 = hx_now_s();
     rc = sgv_run(&o, cases, o.quiet ? NULL : stdout, err, sizeof err);
     t0 = hx_now_s() - t0;
+    why[0] = '\0';
     if (rc < 0) {
         /* the cases before the failure are reported and written below */
         hx_error("simgap-validate", "%s; the report covers the cases run before it", err);
+        snprintf(why, sizeof why, "%s", err);
         status = HX_EXIT_IO;
     } else if (rc > 0) {
         hx_warn("simgap-validate", "interrupted: the report covers the cases run before the signal");
+        snprintf(why, sizeof why, "interrupted by %s: the report covers the cases run before the signal",
+                 g_stop == SIGTERM ? "SIGTERM" : "SIGINT");
         status = 128 + (int)g_stop; /* as the shell reports a command a signal ended */
     }
     sgv_report(stdout, &o, cases, (int)n, 0, t0);
-    if (json != NULL && sgv_write_json(json, &o, cases, (int)n, t0) != 0) {
+    if (json != NULL && sgv_write_json(json, &o, cases, (int)n, t0, why[0] != '\0' ? why : NULL) != 0) {
         status = HX_EXIT_IO;
     }
     if (md != NULL) {

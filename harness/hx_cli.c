@@ -593,12 +593,85 @@ int hx_json_stdout_claim(const char *cmd, int argc, char **argv)
     return 0;
 }
 
+/* The length of the well-formed UTF-8 sequence at s (Unicode 3-7: no
+ * overlong form, no surrogate, nothing above U+10FFFF), 0 when it is none. */
+static size_t utf8_len(const unsigned char *s)
+{
+    const unsigned c = s[0];
+    unsigned lo = 0x80u, hi = 0xBFu;
+    size_t n, i;
+    if (c < 0x80u) {
+        return 1;
+    }
+    if (c >= 0xC2u && c <= 0xDFu) {
+        n = 2;
+    } else if (c >= 0xE0u && c <= 0xEFu) {
+        n = 3;
+        lo = c == 0xE0u ? 0xA0u : 0x80u;
+        hi = c == 0xEDu ? 0x9Fu : 0xBFu;
+    } else if (c >= 0xF0u && c <= 0xF4u) {
+        n = 4;
+        lo = c == 0xF0u ? 0x90u : 0x80u;
+        hi = c == 0xF4u ? 0x8Fu : 0xBFu;
+    } else {
+        return 0;
+    }
+    for (i = 1; i < n; i++) {
+        if (s[i] < (i == 1 ? lo : 0x80u) || s[i] > (i == 1 ? hi : 0xBFu)) {
+            return 0;
+        }
+    }
+    return n;
+}
+
+/* JSON text is UTF-8 (RFC 8259), but cJSON copies a string's bytes as they
+ * are: a file name in Latin-1 made the whole file unreadable to a strict
+ * reader (the JSON review, 2026-11-30). Each byte outside a well-formed
+ * sequence, which can only be inside a string, becomes \ufffd, the
+ * replacement character. txt itself when it is clean; NULL: out of memory. */
+static char *json_utf8(char *txt)
+{
+    const unsigned char *s = (const unsigned char *)txt;
+    size_t i = 0, bad = 0, len = strlen(txt), o = 0, k;
+    char *out;
+    while (i < len) {
+        k = utf8_len(s + i);
+        bad += k == 0;
+        i += k == 0 ? 1 : k;
+    }
+    if (bad == 0) {
+        return txt;
+    }
+    out = malloc(len + 5 * bad + 1);
+    if (out == NULL) {
+        return NULL;
+    }
+    for (i = 0; i < len;) {
+        k = utf8_len(s + i);
+        if (k == 0) {
+            memcpy(out + o, "\\ufffd", 6);
+            o += 6;
+            i++;
+        } else {
+            memcpy(out + o, txt + i, k);
+            o += k;
+            i += k;
+        }
+    }
+    out[o] = '\0';
+    return out;
+}
+
 int hx_write_json(const char *path, const struct cJSON *root, char *err, size_t err_size)
 {
     const int to_stdout = strcmp(path, "-") == 0;
-    char *txt = cJSON_Print(root);
+    char *txt = cJSON_Print(root), *clean;
     FILE *f;
     int ok;
+    if (txt != NULL && (clean = json_utf8(txt)) != txt) {
+        free(txt);
+        txt = clean;
+    }
     if (txt == NULL) {
         snprintf(err, err_size, "%s: out of memory", path);
         return -1;
@@ -650,6 +723,19 @@ const char *hx_gp_str(char *buf, size_t size, const char *s)
             buf[o++] = '\'';
         }
         buf[o++] = (*s == '\n' || *s == '\r') ? ' ' : *s;
+    }
+    buf[o] = '\0';
+    return buf;
+}
+
+const char *hx_line_str(char *buf, size_t size, const char *s)
+{
+    size_t o = 0;
+    if (size == 0) {
+        return buf;
+    }
+    for (; *s != '\0' && o + 1 < size; s++) {
+        buf[o++] = ((unsigned char)*s < 0x20u || *s == 0x7f) ? '?' : *s;
     }
     buf[o] = '\0';
     return buf;

@@ -210,6 +210,11 @@ int hx_write_json(const char *path, const struct cJSON *root, char *err, size_t 
  *  path, a file name, a unit) goes through it, so that it stays text. */
 const char *hx_gp_str(char *buf, size_t size, const char *s);
 
+/** `s` as one line of text, each control character (a line break, a tab)
+ *  a '?', cut to fit `buf`; returns buf. For a path in a comment line of a
+ *  CSV (`# harness psd: PATH; ...`), which a line break split in two. */
+const char *hx_line_str(char *buf, size_t size, const char *s);
+
 /** Format a double for JSON/text (finite or "null"). */
 const char *hx_fmt_g(char *buf, size_t size, double v);
 /** The command line as run, for a JSON's `command` or a results page:

@@ -1126,7 +1126,11 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                              : "");
             }
         }
-        rc = 1;
+        /* read to its end: not a run stopped early (it returned 1, and replay
+         * said "stopped after N samples, at the input error above", its JSON
+         * "complete": false; eval "input ends early"; the JSON review,
+         * 2026-11-30) */
+        rc = 3;
     }
     return rc;
 }

@@ -183,8 +183,10 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
  * @return 0 complete; 1 the input had an error after some samples (frames up
  *         to it are valid, err says why); 2 complete, but the input is
  *         not in SI units (|f| at rest far from gravity, a rate beyond any
- *         MEMS gyro, samples more than 1/20 s apart; err says which);
- *         -1 nothing could be replayed; -3 the CSV sink failed.
+ *         MEMS gyro, samples more than 1/20 s apart; err says which); 3
+ *         complete, but the filter never aligned (no still period, or time
+ *         stamps that never advance; err says which); -1 nothing could be
+ *         replayed; -3 the CSV sink failed.
  */
 int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_rate, const fnav_nav_config_t *cfg,
                   double rate_hz, FILE *csv, hx_traj_t *traj, unsigned flags, char *err, size_t err_size);

@@ -1121,11 +1121,12 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
     free(medv);
 }
 
-int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *cases, int n, double elapsed_s)
+int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *cases, int n, double elapsed_s,
+                   const char *error)
 {
     cJSON *root = cJSON_CreateObject(), *arr;
     char err[256];
-    int i, ch, rc, nrun = 0;
+    int i, ch, rc, nrun = 0, complete;
     if (root == NULL) {
         return -1;
     }
@@ -1134,7 +1135,13 @@ int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *case
         nrun += cases[i].truth != SGV_NOT_RUN;
     }
     cJSON_AddNumberToObject(root, "cases", nrun);
-    cJSON_AddBoolToObject(root, "complete", o->only >= 0 ? nrun == 1 : nrun == n);
+    complete = o->only >= 0 ? nrun == 1 : nrun == n;
+    cJSON_AddBoolToObject(root, "complete", complete);
+    if (error != NULL && !complete) {
+        /* why the run stopped early, as the other commands' `error` (it had
+         * complete false alone; the JSON review, 2026-11-30) */
+        cJSON_AddStringToObject(root, "error", error);
+    }
     if (o->only >= 0) {
         cJSON_AddNumberToObject(root, "only", o->only);
     } else {

@@ -128,7 +128,9 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
  *  Markdown when md != 0). */
 void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, int md, double elapsed_s);
 
-/** JSON of the run. 0, -1 on failure. */
-int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *cases, int n, double elapsed_s);
+/** JSON of the run; `error` why it stopped early (NULL: it did not). 0, -1
+ *  on failure. */
+int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *cases, int n, double elapsed_s,
+                   const char *error);
 
 #endif /* HX_SIMGAP_VALID_H */

@@ -42,6 +42,20 @@ awk 'BEGIN { s = 1; for (i = 0; i < 3000; i++) { s = (s * 1103515245 + 12345) % 
 expect_exit 1 "bad line in series" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --out "$T/bad.csv"
 grep -q "bad.txt:3001: not a number" "$T/err" && pass "bad line reported with its number" || fail "bad line message"
 [ "$(grep -c '^series,' "$T/bad.csv")" -gt 10 ] && pass "table written before the error" || fail "table before error"
+# --json says so, as info's, replay's, psd's and simgap's: complete false and
+# the reader's error (it had neither; the JSON review, 2026-11-30), and a log
+# read to its end complete true without an error
+expect_exit 1 "bad line in series, --json" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --quiet --json "$T/bad.json"
+json "$T/bad.json" 'j["complete"] is False and j["error"].endswith("bad.txt:3001: not a number") and j["samples"] == 3000' &&
+    pass "--json of a series cut by a bad line: complete false, the error" || fail "bad line --json: $(head -c 200 "$T/bad.json")"
+head -c 40000 vectors/walk.bin >"$T/cut.bin"
+expect_exit 1 "a .bin log cut mid-record, --json" "$H" allan "$T/cut.bin" --no-sim --quiet --json "$T/cut.json"
+json "$T/cut.json" 'j["complete"] is False and "truncated: record #829" in j["error"] and j["samples"] == 829' &&
+    pass "--json of a cut log: complete false, the reader's error" || fail "cut log --json: $(head -c 200 "$T/cut.json")"
+head -2000 "$T/bad.txt" >"$T/good.txt"
+expect_exit 0 "a whole series, --json" "$H" allan --series "$T/good.txt" --rate 10 --no-sim --quiet --json "$T/good.json"
+json "$T/good.json" 'j["complete"] is True and "error" not in j' && pass "--json of a whole series: complete true, no error" ||
+    fail "whole series --json: $(head -c 200 "$T/good.json")"
 expect_exit 3 "unwritable output" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --quiet --out /nonexistent/dir/t.csv
 
 # a log too short for an identification: tables and plot still written, no profile, exit 1
@@ -862,6 +876,24 @@ import csv, sys
 rows = [r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith('#'))]
 sys.exit(0 if all(r['noise'] == 'quantisation' and r['alpha'] == '2' for r in rows[:8]) else 1)" "$T/wpm.csv"; then
     pass "white phase noise still reads quantisation"; else fail "white phase noise not read as quantisation"; fi
+
+# --- the --out CSV's first line, a comment naming the log, stays one line
+# when the log's name holds a line break (the rest of the name began a line
+# of its own, read as the header; the JSON review, 2026-11-30)
+NL=$(printf 'new\nline.bin')
+cp vectors/walk.bin "$T/$NL"
+c=allan; first=channel
+"$H" $c "$T/$NL" --no-sim --quiet --out "$T/nl_$c.csv" >/dev/null 2>&1
+if "${PY:-/usr/bin/python3}" -c 'import csv, sys
+rows = list(csv.reader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+sys.exit(0 if len(rows) > 2 and rows[0][0] == sys.argv[2] and all(len(r) == len(rows[0]) for r in rows) else 1)' "$T/nl_$c.csv" "$first" 2>"$T/pyerr"; then
+    pass "$c --out of a log whose name holds a line break: one comment line, every row as wide as the header"
+else fail "$c --out with a line break in the log's name: $(head -c 200 "$T/nl_$c.csv")"; fi
+rm -f "$T/$NL"
+# --unit is a field of every row of the CSV: a comma in it split the field
+# (`--unit a,b` gave rows one column wider than the header)
+expect_exit 2 "--unit with a comma" "$H" allan --series "$T/good.txt" --rate 10 --unit "a,b" --no-sim --quiet --out "$T/ub.csv"
+expect_err "--unit must be" "the error says what --unit may hold"
 
 if [ "$fails" -ne 0 ]; then echo "test_allan.sh: $fails failure(s)"; exit 1; fi
 echo "test_allan.sh: all passed"

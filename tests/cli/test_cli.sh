@@ -174,6 +174,24 @@ expect_exit 2 "montecarlo --seeds 2.5 refused" "$H" montecarlo --seeds 2.5 --dur
 expect_err "--seeds '2.5' is not a whole number" "montecarlo --seeds 2.5: the error names the option"
 expect_exit 0 "sim --seed 1e3 (a whole number)" "$H" sim --out "$T/s.bin" --duration 1 --seed 1e3
 
+# --- a JSON file is UTF-8 text (RFC 8259) whatever the bytes of a file name
+# in it: a Latin-1 byte (0xe9) is the replacement character U+FFFD, a
+# quote, a backslash and a UTF-8 'ü' are kept as they are. The byte went
+# through as it was, and a strict reader refused replay's JSON ("'utf-8'
+# codec can't decode byte 0xe9"; the JSON review, 2026-11-30)
+NAME=$(printf 'w\351lk"\\\303\274.bin')
+cp vectors/walk.bin "$T/$NAME"
+for c in replay psd; do
+    expect_exit 0 "$c --json of a log whose name is not UTF-8" "$H" $c "$T/$NAME" --json "$T/u8_$c.json"
+    if "${PY:-/usr/bin/python3}" -c 'import json, sys
+j = json.loads(open(sys.argv[1], "rb").read().decode("utf-8"))
+p = j.get("log", j.get("source"))
+sys.exit(0 if p.endswith("/w\ufffdlk\"\\\u00fc.bin") else 1)' "$T/u8_$c.json" 2>"$T/pyerr"; then
+        pass "$c --json: UTF-8, the Latin-1 byte replaced, the rest of the name kept"
+    else fail "$c --json with a Latin-1 file name: $(cat "$T/pyerr") $(head -c 120 "$T/u8_$c.json")"; fi
+done
+rm -f "$T/$NAME"
+
 # --- --help goes to standard output even beside `--json -` (which had already
 # turned standard output over to the JSON and sent the help to standard error)
 expect_exit 0 "info --json - --help" "$H" info vectors/walk.bin --json - --help

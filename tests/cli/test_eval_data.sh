@@ -29,6 +29,20 @@ rows=$(grep -c "^| Measurement_2000_[0-9]* | - |" "$T/many.md")
 if [ "$rows" -eq 70 ] && grep -q '"failed_runs":[[:space:]]*70' "$T/many.json"; then
     pass "every one of 70 walks has its row and run"; else fail "70 walks: $rows rows, $(grep -o '"failed_runs":[^,]*' "$T/many.json")"; fi
 
+# --- a walk read to its end on which the filter never aligned (it moves
+# throughout) is a failed run for that reason: its row said "input ends early
+# (... no still period ...): the walk was read only in part" (the JSON
+# review, 2026-11-30)
+mkdir -p "$T/noal/openshoe_gx2"
+awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++)
+    printf "%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", i / 200, 4 * (rand() - 0.5), 4 * (rand() - 0.5),
+        9.81 + 4 * (rand() - 0.5), 5 + rand() - 0.5, 3 + rand() - 0.5, rand() - 0.5 }' \
+    > "$T/noal/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+expect_exit 1 "eval: a walk that never aligns" "$H" eval --no-experiments --no-plots --data "$T/noal" --out "$T/noal.md" --json "$T/noal.json"
+if grep -q "^| Measurement_2000_1 | - |.*| not run: the filter never aligned (no still period at the start) |" "$T/noal.md" &&
+    ! grep -q "read only in part" "$T/noal.md" && json "$T/noal.json" 'j["failed_runs"] == 1'; then
+    pass "a walk that never aligned is a failed run, named as such"; else fail "never aligned: $(grep '^| Measurement' "$T/noal.md")"; fi
+
 # --- with the experiments on, a bad walk is one failed run (its repeats
 # under the experiments' settings are counted apart: they were added to
 # failed_runs, up to eight per walk)

@@ -332,5 +332,31 @@ PYEOF
 else
     echo "SKIP ADIS16405 Welch test (shared data not found; set FNAV_DATA_DIR)"
 fi
+# --- --json of a log cut by a bad line: complete false and the reader's
+# error, as info's, replay's, allan's and simgap's (psd's had complete
+# without error; the JSON review, 2026-11-30); a whole log complete true
+awk 'BEGIN { srand(2); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) { g = (i == 1500) ? "nan" : sprintf("%.5f", 0.01 * (rand() - 0.5));
+    printf "%.3f,%.4f,0.05,9.81,%s,0.001,0\n", i / 200, 0.01 * (rand() - 0.5), g } }' >"$T/nanrow.csv"
+expect_exit 1 "psd of a log with a NaN half way, --json" "$H" psd "$T/nanrow.csv" --json "$T/nanrow.json"
+json "$T/nanrow.json" 'j["complete"] is False and j["error"].endswith("nanrow.csv:1502: column 5 (\x27nan\x27) is NaN or Inf") and j["samples"] == 1500' &&
+    pass "psd --json of a cut log: complete false, the reader's error" || fail "psd --json of a cut log: $(tr -d '\n\t' <"$T/nanrow.json" | tail -c 300)"
+expect_exit 0 "psd of a whole log, --json" "$H" psd vectors/walk.bin --json "$T/whole.json"
+json "$T/whole.json" 'j["complete"] is True and "error" not in j' && pass "psd --json of a whole log: complete true, no error" ||
+    fail "psd --json of a whole log: $(tr -d '\n\t' <"$T/whole.json" | tail -c 200)"
+
+# --- the --out CSV's first line, a comment naming the log, stays one line
+# when the log's name holds a line break (the rest of the name began a line
+# of its own, read as the header; the JSON review, 2026-11-30)
+NL=$(printf 'new\nline.bin')
+cp vectors/walk.bin "$T/$NL"
+c=psd; first=freq_hz
+"$H" $c "$T/$NL" --out "$T/nl_$c.csv" >/dev/null 2>&1
+if "${PY:-/usr/bin/python3}" -c 'import csv, sys
+rows = list(csv.reader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+sys.exit(0 if len(rows) > 2 and rows[0][0] == sys.argv[2] and all(len(r) == len(rows[0]) for r in rows) else 1)' "$T/nl_$c.csv" "$first" 2>"$T/pyerr"; then
+    pass "$c --out of a log whose name holds a line break: one comment line, every row as wide as the header"
+else fail "$c --out with a line break in the log's name: $(head -c 200 "$T/nl_$c.csv")"; fi
+rm -f "$T/$NL"
+
 if [ "$fails" -ne 0 ]; then echo "test_psd.sh: $fails failure(s)"; exit 1; fi
 echo "test_psd.sh: all passed"

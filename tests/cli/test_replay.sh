@@ -586,7 +586,23 @@ for n in 30 61; do
             -9.8 + 0.01 * (rand() - 0.5), 0.001 * (rand() - 0.5), 0.001 * (rand() - 0.5), 0.001 * (rand() - 0.5) }' > "$T/still$n.csv"
 done
 expect_exit 1 "0.15 s still: too short to align" "$H" replay "$T/still30.csv" --quiet
-expect_err "no still period of 0.20 s or more found for the initial alignment (align_short_s; it takes the first of 0.50 s, align_min_s, else the quietest of 0.20 s or more before the foot moves): the stance detector's longest still run lasted 0.15 s (frames before" "the alignment failure says what is required and what was found"
+expect_err "no still period of 0.20 s or more found for the initial alignment (align_short_s; it takes the first of 0.50 s, align_min_s, else the quietest of 0.20 s or more before the foot moves): the stance detector's longest still run lasted 0.15 s" "the alignment failure says what is required and what was found"
+# a log read to its end that never aligns did not stop early: the summary
+# said "stopped after 4000 samples, at the input error above" and "NOT
+# ALIGNED (the run stopped before a still period long enough was found)",
+# the error "(frames before it were written)", and the JSON "complete":
+# false with the alignment's message as the reader's error; eval called the
+# walk "input ends early ...: read only in part" (the JSON review, 2026-11-30)
+awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++)
+    printf "%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", i / 200, 4 * (rand() - 0.5), 4 * (rand() - 0.5),
+        9.81 + 4 * (rand() - 0.5), 5 + rand() - 0.5, 3 + rand() - 0.5, rand() - 0.5 }' > "$T/moving.csv"
+expect_exit 1 "a log that moves throughout never aligns" "$H" replay "$T/moving.csv" --json "$T/moving.json"
+expect_err "moving.csv: no still period of 0.20 s or more found" "the missing still period is the error"
+if grep -q "frames before it were written" "$T/err"; then fail "never aligned: the error says the run stopped: $(cat "$T/err")"; else pass "never aligned: the error does not say the run stopped"; fi
+expect_out_re "^alignment +NOT ALIGNED \(no still period long enough: the error above says what was found\)$" "never aligned: the alignment line says no still period was found"
+if grep -q "^stopped" "$T/out"; then fail "never aligned: a 'stopped' line: $(grep '^stopped' "$T/out")"; else pass "never aligned: no 'stopped' line (the log was read to its end)"; fi
+if json "$T/moving.json" 'j["aligned"] is False and j["complete"] is True and "error" not in j and j["health"]["samples"] == 4000'; then
+    pass "never aligned: the JSON says aligned false, complete true (read to its end)"; else fail "never aligned JSON: $(tr -d '\n\t' < "$T/moving.json" | head -c 300)"; fi
 expect_exit 0 "0.30 s still aligns" "$H" replay "$T/still61.csv"
 expect_out_re "^alignment +0\.2[0-9] s still" "a still period under align_min_s but over align_short_s aligns"
 # the only still period at the log's very end: 1 s of swing, then 44 still

@@ -173,8 +173,13 @@ grep -q "^simgap-validate: [0-9]* cases* (INCOMPLETE" "$T/out" && pass "the summ
     fail "summary: $(grep '^simgap-validate' "$T/out")"
 json "$T/i.json" 'j["complete"] is False and 1 <= j["cases"] < 40 and len(j["results"]) == j["cases"]' &&
     pass "interrupted run: JSON of the cases run, complete false" || fail "interrupted JSON: $(cat "$T/pyerr")"
+# and why, in `error` as the other commands' JSON (it had complete false
+# alone; the JSON review, 2026-11-30)
+json "$T/i.json" 'j["error"].startswith("interrupted by SIGINT")' && pass "interrupted run: the JSON's error names the signal" ||
+    fail "interrupted JSON's error: $(tr -d '\n\t' <"$T/i.json" | head -c 300)"
 grep -q "incomplete" "$T/i.md" && pass "interrupted run: the Markdown says incomplete" || fail "Markdown: $(grep '^Run' "$T/i.md")"
-json "$T/o.json" 'j["complete"] is True' && pass "a full --only run: complete true" || fail "--only complete: $(cat "$T/pyerr")"
+json "$T/o.json" 'j["complete"] is True and "error" not in j' && pass "a full --only run: complete true, no error" ||
+    fail "--only complete: $(tr -d '\n\t' <"$T/o.json" | head -c 300)"
 
 if [ "$fails" -ne 0 ]; then echo "test_simgap_validate.sh: $fails failure(s)"; exit 1; fi
 echo "test_simgap_validate.sh: all passed"
