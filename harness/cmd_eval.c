@@ -343,6 +343,17 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
         hx_traj_free(t);
         return -1;
     }
+    if (rc == 3) {
+        /* read to its end, never aligned: replay's reason (no still period,
+         * or time stamps that never advance), which the row gave as "no
+         * still period at the start" for both (the JSON review's merge,
+         * 2026-11-30) */
+        char why[300];
+        snprintf(why, sizeof why, "the filter never aligned: %.250s", after_path(err, path, buf, sizeof buf));
+        fail(ev, path, note, note_size, why);
+        hx_traj_free(t);
+        return -1;
+    }
     if (t->cut_lines > 0) {
         /* the reader's warning, in the row: the recording was cut off
          * mid-write (a walk cut short is no closed loop) */

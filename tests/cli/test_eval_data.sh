@@ -39,9 +39,18 @@ awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++)
         9.81 + 4 * (rand() - 0.5), 5 + rand() - 0.5, 3 + rand() - 0.5, rand() - 0.5 }' \
     > "$T/noal/openshoe_gx2/Measurement_2000_1_data_inert.txt"
 expect_exit 1 "eval: a walk that never aligns" "$H" eval --no-experiments --no-plots --data "$T/noal" --out "$T/noal.md" --json "$T/noal.json"
-if grep -q "^| Measurement_2000_1 | - |.*| not run: the filter never aligned (no still period at the start) |" "$T/noal.md" &&
+if grep -q "^| Measurement_2000_1 | - |.*| not run: the filter never aligned: no still period of [0-9.]* s or more found" "$T/noal.md" &&
     ! grep -q "read only in part" "$T/noal.md" && json "$T/noal.json" 'j["failed_runs"] == 1'; then
     pass "a walk that never aligned is a failed run, named as such"; else fail "never aligned: $(grep '^| Measurement' "$T/noal.md")"; fi
+# ... and why it never aligned, as replay says it: a time column that never
+# advances was named "no still period at the start" (the JSON review's
+# merge, 2026-11-30)
+mkdir -p "$T/t0/openshoe_gx2"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) print "0,0.01,0.02,9.81,0.001,0.002,0.003" }' \
+    > "$T/t0/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+expect_exit 1 "eval: a walk whose time stamps never advance" "$H" eval --no-experiments --no-plots --data "$T/t0" --out "$T/t0.md"
+if grep -q "^| Measurement_2000_1 | - |.*| not run: the filter never aligned: the time stamps never advance" "$T/t0.md"; then
+    pass "a walk whose time stamps never advance: the reason in its row"; else fail "time stamps: $(grep '^| Measurement' "$T/t0.md")"; fi
 
 # --- with the experiments on, a bad walk is one failed run (its repeats
 # under the experiments' settings are counted apart: they were added to
