@@ -95,6 +95,12 @@ int hx_cmd_replay(int argc, char **argv)
         }
         hx_reader_close(probe);
     }
+    /* the JSON and the PNG are written after the whole log: find out now
+     * that they can be (it ran the log first; the JSON review, 2026-11-30) */
+    if ((json_path != NULL && strcmp(json_path, "-") != 0 && hx_check_writable("replay", json_path) != 0) ||
+        (plot_path != NULL && hx_plot_check("replay", plot_path) != 0)) {
+        return HX_EXIT_IO;
+    }
     if (out_path != NULL) {
         csv = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
         if (csv == NULL) {

@@ -152,6 +152,14 @@ if command -v gnuplot >/dev/null 2>&1; then
     (cd "$T" && "$HA" replay "$WB" --plot "q'; system('touch PWNED'); print '.png" --quiet) >/dev/null 2>&1
     if [ ! -e "$T/PWNED" ] && [ -s "$T/q'; system('touch PWNED'); print '.png" ]; then pass "a quote in the --plot path is text to gnuplot"; else fail "plot path reached gnuplot as a command"; fi
 fi
+# an unwritable --json: refused before the log is navigated (it ran the whole
+# log, printed the summary and wrote --out, then exited 3 at the JSON; the
+# JSON review, 2026-11-30), as montecarlo, simgap and eval check theirs
+echo keep > "$T/keep_out.csv"
+expect_exit 3 "unwritable --json" "$H" replay vectors/walk.bin --json /nonexistent/dir/s.json --out "$T/keep_out.csv"
+expect_err "cannot write /nonexistent/dir/s.json" "unwritable --json named"
+if [ ! -s "$T/out" ] && [ "$(cat "$T/keep_out.csv")" = "keep" ]; then pass "unwritable --json: checked before the run (no summary, --out untouched)"
+else fail "unwritable --json: the log was run first ($(wc -l < "$T/out") lines on stdout, --out $(wc -l < "$T/keep_out.csv") lines)"; fi
 echo keep > "$T/existing.csv"
 expect_exit 1 "a missing log" "$H" replay "$T/missing.csv" --out "$T/existing.csv"
 if [ "$(cat "$T/existing.csv")" = "keep" ]; then pass "a missing log leaves an existing --out alone"; else fail "a missing log emptied --out"; fi
