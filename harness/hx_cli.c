@@ -868,10 +868,30 @@ const char *hx_fmt_g(char *buf, size_t size, double v)
 
 void hx_command_line(char *buf, size_t size, const char *prefix, int argc, char **argv)
 {
+    /* characters a POSIX shell takes as they are; an argument with any
+     * other (a space, a quote, $, *) or none is single-quoted, a ' in it
+     * written '\'' (joined bare, "--out a b.csv" read back as two
+     * arguments; the JSON review, 2026-11-30) */
+    static const char k_plain[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./:=,+@%^-";
     size_t len = (size_t)snprintf(buf, size, "%s", prefix);
     int i;
     for (i = 0; i < argc && len < size; i++) {
-        len += (size_t)snprintf(buf + len, size - len, " %s", argv[i]);
+        const char *s = argv[i];
+        if (*s != '\0' && strspn(s, k_plain) == strlen(s)) {
+            len += (size_t)snprintf(buf + len, size - len, " %s", s);
+            continue;
+        }
+        len += (size_t)snprintf(buf + len, size - len, " '");
+        for (; *s != '\0' && len < size; s++) {
+            if (*s == '\'') {
+                len += (size_t)snprintf(buf + len, size - len, "'\\''");
+            } else {
+                len += (size_t)snprintf(buf + len, size - len, "%c", *s);
+            }
+        }
+        if (len < size) {
+            len += (size_t)snprintf(buf + len, size - len, "'");
+        }
     }
 }
 

@@ -218,8 +218,9 @@ const char *hx_line_str(char *buf, size_t size, const char *s);
 /** Format a double for JSON/text (finite or "null"). */
 const char *hx_fmt_g(char *buf, size_t size, double v);
 /** The command line as run, for a JSON's `command` or a results page:
- *  prefix ("harness replay"), then each of argv[0..argc) after a space;
- *  cut at size. */
+ *  prefix ("harness replay"), then each of argv[0..argc) after a space,
+ *  single-quoted as a POSIX shell reads it back when it holds anything but
+ *  letters, digits and _./:=,+@%^- (or is empty); cut at size. */
 void hx_command_line(char *buf, size_t size, const char *prefix, int argc, char **argv);
 
 #endif /* HX_CLI_H */

@@ -160,6 +160,12 @@ expect_exit 3 "unwritable --json" "$H" replay vectors/walk.bin --json /nonexiste
 expect_err "cannot write /nonexistent/dir/s.json" "unwritable --json named"
 if [ ! -s "$T/out" ] && [ "$(cat "$T/keep_out.csv")" = "keep" ]; then pass "unwritable --json: checked before the run (no summary, --out untouched)"
 else fail "unwritable --json: the log was run first ($(wc -l < "$T/out") lines on stdout, --out $(wc -l < "$T/keep_out.csv") lines)"; fi
+# the JSON's command is one a shell reads back as given: an argument with a
+# space or a quote is quoted (joined with spaces, "--out a b.csv" read as two
+# arguments; the JSON review, 2026-11-30)
+expect_exit 0 "replay, an --out with a space and a quote" "$H" replay vectors/walk.bin --quiet --out "$T/a b'c.csv" --json "$T/cmd.json"
+if json "$T/cmd.json" "__import__('shlex').split(j['command'])[2:] == ['vectors/walk.bin', '--quiet', '--out', '$T/a b\\'c.csv', '--json', '$T/cmd.json']"; then
+    pass "JSON command: quoted as a shell reads it"; else fail "JSON command: $(grep '"command"' "$T/cmd.json")"; fi
 echo keep > "$T/existing.csv"
 expect_exit 1 "a missing log" "$H" replay "$T/missing.csv" --out "$T/existing.csv"
 if [ "$(cat "$T/existing.csv")" = "keep" ]; then pass "a missing log leaves an existing --out alone"; else fail "a missing log emptied --out"; fi
