@@ -1061,6 +1061,17 @@ L2=$(sim_stride "$T/sw2.txt")
 expect_exit 0 "replay --strides (slow walk)" "$H" replay "$T/sw2.bin" --strides "$T/sw2_strides.csv" --json "$T/sw2.json" --quiet
 if strides_ok "$T/sw2_strides.csv" "$T/sw2.json" "$L2" 80 "$(awk -v l="$L2" 'BEGIN { print 0.02 * l }')" 1.0 >"$T/py" 2>&1
 then pass "--strides slow walk: $(cat "$T/py")"; else fail "--strides slow walk (stride $L2 m, 80 /min): $(cat "$T/py")"; fi
+# the events come from a second detector fed the samples the navigator took: it stays in step with
+# the navigator's frames through duplicated stamps (dt = 0: a frame each, the NGIMU logs) and resampling
+"$H" convert "$T/sw0.bin" "$T/sw0.csv" >/dev/null 2>&1 || fail "convert the noise-free walk"
+awk 'NR > 1 && NR % 50 == 0 { print } { print }' "$T/sw0.csv" > "$T/sw0_dup.csv"
+expect_exit 0 "replay --strides with duplicated stamps" "$H" replay "$T/sw0_dup.csv" --strides "$T/sw0_dup_strides.csv" --json "$T/sw0_dup.json" --quiet
+if strides_ok "$T/sw0_dup_strides.csv" "$T/sw0_dup.json" "$L0" 100 0.014 0.5 >"$T/py" 2>&1; then pass "--strides through duplicated stamps: $(cat "$T/py")"
+else fail "--strides through duplicated stamps: $(cat "$T/py") $(cat "$T/err")"; fi
+expect_exit 0 "replay --strides --rate 100" "$H" replay "$T/sw0.bin" --rate 100 --strides "$T/sw0_r_strides.csv" --json "$T/sw0_r.json" --quiet
+# (at 100 Hz an event falls on a 10 ms sample: one sample of 1.2 s is 0.83 /min)
+if strides_ok "$T/sw0_r_strides.csv" "$T/sw0_r.json" "$L0" 100 0.014 0.9 >"$T/py" 2>&1; then pass "--strides resampled: $(cat "$T/py")"
+else fail "--strides resampled: $(cat "$T/py") $(cat "$T/err")"; fi
 # standard output: the rows alone there, the summary on standard error
 expect_exit 0 "--strides -" "$H" replay "$T/sw0.bin" --strides -
 if cmp -s "$T/out" "$T/sw0_strides.csv"; then pass "--strides - writes the rows of --strides FILE on stdout"; else fail "--strides - on stdout"; fi
