@@ -16,6 +16,7 @@ static const hx_opt_t k_opts[] = {
     { "--out", "FILE", "trajectory CSV (time, position, velocity, attitude, biases, flags, covariance)", 0 },
     { "--json", "FILE", "summary as JSON (keys in docs/harness.md)", 0 },
     { "--plot", "FILE", "PNG of the 2-D path and of the height over time", 0 },
+    { "--strides", "FILE", "stride CSV: gait events, stride time, cadence, length, height and heading change, clearance per stride", 0 },
     { "--quiet", NULL, "no summary on standard output", 0 },
     { NULL, NULL, NULL, 0 }
 };
@@ -42,8 +43,8 @@ int hx_cmd_replay(int argc, char **argv)
     hx_nav_summary_t sum;
     hx_format_t fmt = HX_FMT_AUTO;
     double in_rate = 0.0;
-    const char *out_path, *json_path, *plot_path, *from;
-    FILE *csv = NULL;
+    const char *out_path, *json_path, *plot_path, *strides_path, *from;
+    FILE *csv = NULL, *summary_to;
     char err[400], cmdline[1024];
     int rc, exit_code = HX_EXIT_OK;
     if (hx_nav_param_help_requested(argc, argv)) {
@@ -73,13 +74,21 @@ int hx_cmd_replay(int argc, char **argv)
     out_path = hx_arg(&a, "--out");
     json_path = hx_arg(&a, "--json");
     plot_path = hx_arg(&a, "--plot");
+    strides_path = hx_arg(&a, "--strides");
     if (access(a.pos[0], R_OK) != 0) {
         /* before any output is opened (and an existing one emptied) */
         hx_error("replay", "%s: cannot read (%s)", a.pos[0], strerror(errno));
         return HX_EXIT_DATA;
     }
     {
-        static const char *const outs[] = { "--out", "--json", "--plot", NULL };
+        static const char *const outs[] = { "--out", "--json", "--plot", "--strides", NULL };
+        /* both on standard output (--json - with either is refused before
+         * the command runs, hx_json_stdout_claim): said before the check of
+         * one file named twice, which takes two '-' for one file */
+        if (out_path != NULL && strides_path != NULL && strcmp(out_path, "-") == 0 && strcmp(strides_path, "-") == 0) {
+            hx_error("replay", "--out - and --strides - cannot both write to standard output");
+            return HX_EXIT_USAGE;
+        }
         if (hx_output_is_input("replay", a.pos[0], &a, outs) || hx_profile_is_output("replay", o.profile, &a, outs)) {
             return HX_EXIT_USAGE;
         }
@@ -98,6 +107,7 @@ int hx_cmd_replay(int argc, char **argv)
     /* the JSON and the PNG are written after the whole log: find out now
      * that they can be (it ran the log first; the JSON review, 2026-11-30) */
     if ((json_path != NULL && strcmp(json_path, "-") != 0 && hx_check_writable("replay", json_path) != 0) ||
+        (strides_path != NULL && strcmp(strides_path, "-") != 0 && hx_check_writable("replay", strides_path) != 0) ||
         (plot_path != NULL && hx_plot_check("replay", plot_path) != 0)) {
         return HX_EXIT_IO;
     }
@@ -109,8 +119,9 @@ int hx_cmd_replay(int argc, char **argv)
         }
     }
     hx_command_line(cmdline, sizeof cmdline, "harness replay", argc, argv);
-    rc = hx_nav_replay("replay", a.pos[0], fmt, in_rate, &cfg, o.rate_hz, csv, &traj, HX_REPLAY_PROGRESS | HX_REPLAY_AXES,
-                       err, sizeof err);
+    rc = hx_nav_replay("replay", a.pos[0], fmt, in_rate, &cfg, o.rate_hz, csv, &traj,
+                       HX_REPLAY_PROGRESS | HX_REPLAY_AXES | (strides_path != NULL ? HX_REPLAY_EVENTS : 0u), err,
+                       sizeof err);
     traj.input_complete = 1;
     hx_traj_set_config(&traj, &o, &cfg);
     if (rc == -3) {
@@ -159,8 +170,26 @@ int hx_cmd_replay(int argc, char **argv)
         hx_warn("replay", "%s: %s; outputs were computed from the axes as recorded", a.pos[0], traj.axes.msg);
     }
     hx_nav_summarize(&traj, &sum);
+    /* standard output holds the rows of `--out -` or `--strides -` alone */
+    summary_to = csv == stdout || (strides_path != NULL && strcmp(strides_path, "-") == 0) ? stderr : stdout;
     if (!hx_flag(&a, "--quiet")) {
-        hx_nav_print_summary(csv == stdout ? stderr : stdout, a.pos[0], &traj, &sum);
+        hx_nav_print_summary(summary_to, a.pos[0], &traj, &sum);
+    }
+    if (strides_path != NULL) {
+        /* after the run: a stride's length needs the stance after it */
+        const int to_stdout = strcmp(strides_path, "-") == 0;
+        FILE *sf = to_stdout ? stdout : fopen(strides_path, "w");
+        int bad = sf == NULL || hx_nav_write_strides(sf, &traj) != 0;
+        if (sf != NULL && (to_stdout ? fflush(sf) != 0 || ferror(sf) : fclose(sf) != 0)) {
+            bad = 1;
+        }
+        if (bad) {
+            hx_error("replay", "cannot write the strides to %s%s", to_stdout ? "standard output" : strides_path,
+                     traj.events ? ""
+                                 : " (the detector's events were not kept: out of memory, or its outputs "
+                                   "disagreed with the navigator's frames)");
+            exit_code = HX_EXIT_IO;
+        }
     }
     if (json_path != NULL && hx_nav_write_json(json_path, a.pos[0], cmdline, &traj, &sum, NULL, err, sizeof err) != 0) {
         hx_error("replay", "%s", err);

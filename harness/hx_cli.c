@@ -554,8 +554,8 @@ static int opt_value(char **argv, int argc, int *i, const char *name, const char
 
 int hx_json_stdout_claim(const char *cmd, int argc, char **argv)
 {
-    static const char *const k_other[] = { "--out", "--csv" }; /* options whose '-' is standard output too */
-    const char *json = NULL, *other[2] = { NULL, NULL }, *v;
+    static const char *const k_other[] = { "--out", "--csv", "--strides" }; /* options whose '-' is standard output too */
+    const char *json = NULL, *other[3] = { NULL, NULL, NULL }, *v;
     int i, k, fd;
     for (i = 0; i < argc; i++) {
         if (strcmp(argv[i], "--") == 0) {
@@ -567,7 +567,7 @@ int hx_json_stdout_claim(const char *cmd, int argc, char **argv)
             json = v;
             continue;
         }
-        for (k = 0; k < 2; k++) {
+        for (k = 0; k < 3; k++) {
             if (opt_value(argv, argc, &i, k_other[k], &v)) {
                 other[k] = v;
                 break;
@@ -577,7 +577,7 @@ int hx_json_stdout_claim(const char *cmd, int argc, char **argv)
     if (json == NULL || strcmp(json, "-") != 0) {
         return 0;
     }
-    for (k = 0; k < 2; k++) {
+    for (k = 0; k < 3; k++) {
         if (other[k] != NULL && strcmp(other[k], "-") == 0) {
             hx_error(cmd, "--json - and %s - cannot both write to standard output", k_other[k]);
             return -1;

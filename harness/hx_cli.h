@@ -197,7 +197,7 @@ extern FILE *hx_json_stdout;
 /** When argv has `--json -` (or `--json=-`), standard output is kept for
  *  the JSON alone (hx_json_stdout) and what a command prints there goes to
  *  standard error instead, so that the JSON can be piped. 0, or -1 with the
- *  error printed when another option (`--out -`, `--csv -`) wants standard
+ *  error printed when another option (`--out -`, `--csv -`, `--strides -`) wants standard
  *  output as well. */
 int hx_json_stdout_claim(const char *cmd, int argc, char **argv);
 struct cJSON;

@@ -546,6 +546,7 @@ long hx_sat_count(const hx_sat_t *st, int ch)
 void hx_traj_free(hx_traj_t *t)
 {
     free(t->f);
+    free(t->ev);
     memset(t, 0, sizeof *t);
 }
 
@@ -664,12 +665,79 @@ typedef struct {
     int have_t_last;
     int64_t stamp_res_ns; /* the stamps' resolution: gcd of the intervals that advance (0: none yet) */
     hx_sat_t sat;         /* flat tops of the input as read (a resampled log's: before resampling) */
+    /* HX_REPLAY_EVENTS: a second detector, initialised with the navigator's
+     * detector's configuration and fed the samples the navigator accepted
+     * (its stats.samples counts them), so that it raises the same outputs
+     * in the same order, one per frame: their gait events go to traj->ev */
+    fnav_stance_t *ev;
+    const fnav_nav_t *nav;
+    fnav_sample_t ev_last; /* the sample read last, not yet given to ev */
+    int ev_have_last;
+    uint32_t ev_pushed;    /* samples given to ev */
+    int ev_bad;            /* ev disagreed with a frame, or no memory: no events */
+    int ev_fo;             /* the swing's foot-off, waiting for its stride */
+    int64_t ev_fo_t_ns;
 } hx_port_ctx_t;
+
+/* Give ev the last sample read once the navigator has accepted it. */
+static void ev_sync(hx_port_ctx_t *c)
+{
+    if (c->ev != NULL && c->ev_have_last && c->nav->stats.samples != c->ev_pushed) {
+        c->ev_have_last = 0;
+        c->ev_pushed = c->nav->stats.samples;
+        if (fnav_stance_push(c->ev, &c->ev_last) != FNAV_OK) {
+            c->ev_bad = 1;
+        }
+    }
+}
+
+/* ev's output for frame f (the navigator's detector raised the same with
+ * it): the events into t->ev. */
+static void ev_frame(hx_port_ctx_t *c, const fnav_nav_frame_t *f)
+{
+    hx_traj_t *t = c->traj;
+    fnav_stance_out_t o;
+    ev_sync(c);
+    if (c->nav->stance.finished && !c->ev->finished) {
+        fnav_stance_finish(c->ev);
+    }
+    if (fnav_stance_pop(c->ev, &o) != FNAV_OK || o.sample.t_ns != f->t_ns ||
+        ((o.events & FNAV_STANCE_EV_STRIDE) != 0) != ((f->flags & FNAV_FRAME_STRIDE) != 0)) {
+        c->ev_bad = 1;
+        return;
+    }
+    if (o.events & FNAV_STANCE_EV_FOOT_OFF) {
+        c->ev_fo = 1;
+        c->ev_fo_t_ns = o.fo_t_ns;
+    }
+    if (o.events & FNAV_STANCE_EV_STRIDE) {
+        hx_stride_ev_t *e;
+        if (t->nev == t->ev_cap) {
+            size_t nc = t->ev_cap ? 2 * t->ev_cap : 256;
+            hx_stride_ev_t *p = (hx_stride_ev_t *)realloc(t->ev, nc * sizeof *p);
+            if (p == NULL) {
+                c->ev_bad = 1;
+                return;
+            }
+            t->ev = p;
+            t->ev_cap = nc;
+        }
+        e = &t->ev[t->nev++];
+        e->frame = t->n - 1; /* hx_write kept f first */
+        e->have_fo = c->ev_fo;
+        e->fo_t_ns = c->ev_fo_t_ns;
+        e->fs_t_ns = o.fs_t_ns;
+        e->swing_t0_ns = o.swing_t0_ns;
+        e->swing_t1_ns = o.swing_t1_ns;
+        c->ev_fo = 0;
+    }
+}
 
 static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
 {
     hx_port_ctx_t *c = (hx_port_ctx_t *)ctx;
     fnav_status_t st;
+    ev_sync(c); /* the sample before this one, if the navigator took it */
     if (c->mem != NULL) {
         if (c->mem_i >= c->mem->n) {
             return FNAV_END;
@@ -706,6 +774,10 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
         }
         c->t_last_ns = s->t_ns;
         c->have_t_last = 1;
+        if (c->ev != NULL) {
+            c->ev_last = *s;
+            c->ev_have_last = 1;
+        }
         if (c->axes != NULL) {
             hx_axes_sample(c->axes, s);
         }
@@ -741,6 +813,9 @@ static fnav_status_t hx_write(void *ctx, const fnav_nav_frame_t *f)
             t->cap = nc;
         }
         t->f[t->n++] = *f;
+        if (c->ev != NULL && !c->ev_bad) {
+            ev_frame(c, f);
+        }
     }
     if (c->axes != NULL) {
         hx_axes_frame(c->axes, f);
@@ -960,6 +1035,15 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     if (traj != NULL && (flags & HX_REPLAY_AXES)) {
         pc.axes = hx_axes_new(); /* NULL: out of memory, not checked */
     }
+    if (traj != NULL && (flags & HX_REPLAY_EVENTS)) {
+        /* the navigator's detector's own configuration (its rate and gravity
+         * as the navigator set them), before any sample */
+        pc.nav = &nav;
+        pc.ev = (fnav_stance_t *)malloc(sizeof *pc.ev);
+        if (pc.ev == NULL || fnav_stance_init(pc.ev, &nav.stance.cfg) != FNAV_OK) {
+            pc.ev_bad = 1; /* no events: the caller says so */
+        }
+    }
     pc.progress = (flags & HX_REPLAY_PROGRESS) != 0;
     port.ctx = &pc;
     port.read_sample = hx_read;
@@ -1026,6 +1110,10 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                 traj->stamps_coarse = longest > 1.5 * per;
             }
         }
+        traj->t0_ns = pc.lctx.t0_ns;
+        /* every frame kept has had its detector output (a run stopped by
+         * the sink or the memory may have dropped the last frames') */
+        traj->events = pc.ev != NULL && !pc.ev_bad;
         if (flags & HX_REPLAY_AXES) {
             hx_axes_finish(pc.axes, &traj->axes);
         } else {
@@ -1038,6 +1126,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         hx_reader_close(r);
     }
     hx_log_free(&res);
+    free(pc.ev);
     {
         /* the detector's ring (FNAV_STANCE_MAX_WINDOW samples) cuts its
          * window and minimum ZUPT run at high rates (docs/navigation.md,
@@ -1139,6 +1228,11 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
 
 size_t hx_nav_stance_mids(const hx_traj_t *t, size_t *idx, size_t max)
 {
+    return hx_nav_stance_phases(t, idx, NULL, max);
+}
+
+size_t hx_nav_stance_phases(const hx_traj_t *t, size_t *idx, size_t *start_out, size_t max)
+{
     /* A segmented stance phase (FNAV_FRAME_SEG_STANCE) begins min_stance_s
      * after the detector's stance and ends min_swing_s after it (the
      * segmentation's hysteresis), so its middle lies late, and a first phase
@@ -1164,6 +1258,9 @@ size_t hx_nav_stance_mids(const hx_traj_t *t, size_t *idx, size_t max)
                 b--;
             }
             if (n < max) {
+                if (start_out != NULL) {
+                    start_out[n] = start;
+                }
                 idx[n++] = (a + b) / 2;
             }
             in = 0;
@@ -1177,6 +1274,40 @@ static void rate_check(const hx_traj_t *t, hx_nav_summary_t *s)
 {
     s->rate_off_fraction = hx_rate_changes(t->n > 0 ? &t->f[0].t_ns : NULL, t->n, sizeof t->f[0], t->rate_hz,
                                            &s->rate_change_at_s, &s->rate_change_hz);
+}
+
+/* The heading is that of a body-fixed vector level at the first aligned
+ * frame: n's x axis seen in b then (row 0 of C_nb). Not the Euler yaw,
+ * which is the heading of b's x axis and has none when that axis is
+ * vertical: a sensor mounted with x up or down, or tilted so that the swing
+ * pitches x through the vertical (the footprint walks' 3DM-GX5 sits at 37
+ * deg and passes 89 deg), where yaw flips by up to 180 deg between frames
+ * and the unwrapping counted thousands of degrees. Frames in which the
+ * vector is steeper than 60 deg (horizontal part below 1/2) have none
+ * (heading_of returns 0); the summary unwraps the step across them to
+ * (-180, 180], more than a foot turns in one swing. */
+static void heading_ref(const hx_traj_t *t, size_t first, double ref_b[3])
+{
+    double c[3][3];
+    int k;
+    hx_dcm_from_euler((double)t->f[first].euler_rad[0], (double)t->f[first].euler_rad[1],
+                      (double)t->f[first].euler_rad[2], c);
+    for (k = 0; k < 3; k++) {
+        ref_b[k] = c[0][k];
+    }
+}
+
+static int heading_of(const double ref_b[3], const fnav_nav_frame_t *f, double *yaw)
+{
+    double c[3][3], hx, hy;
+    hx_dcm_from_euler((double)f->euler_rad[0], (double)f->euler_rad[1], (double)f->euler_rad[2], c);
+    hx = c[0][0] * ref_b[0] + c[0][1] * ref_b[1] + c[0][2] * ref_b[2];
+    hy = c[1][0] * ref_b[0] + c[1][1] * ref_b[1] + c[1][2] * ref_b[2];
+    if (hx * hx + hy * hy < 0.25) {
+        return 0;
+    }
+    *yaw = atan2(hy, hx);
+    return 1;
 }
 
 void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
@@ -1260,38 +1391,18 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
         return;
     }
     {
-        /* The heading is that of a body-fixed vector level at the first
-         * aligned frame: n's x axis seen in b then (row 0 of C_nb). Not the
-         * Euler yaw, which is the heading of b's x axis and has none when
-         * that axis is vertical: a sensor mounted with x up or down, or
-         * tilted so that the swing pitches x through the vertical (the
-         * footprint walks' 3DM-GX5 sits at 37 deg and passes 89 deg), where
-         * yaw flips by up to 180 deg between frames and the unwrapping
-         * counted thousands of degrees. Frames in which the vector is
-         * steeper than 60 deg (horizontal part below 1/2) are skipped; the
-         * step across them is unwrapped to (-180, 180], more than a foot
-         * turns in one swing. */
-        double c[3][3];
-        int k, have = 0;
-        hx_dcm_from_euler((double)t->f[first].euler_rad[0], (double)t->f[first].euler_rad[1],
-                          (double)t->f[first].euler_rad[2], c);
-        for (k = 0; k < 3; k++) {
-            ref_b[k] = c[0][k];
-        }
+        int have = 0;
+        heading_ref(t, first, ref_b);
         for (i = first; i < t->n; i++) {
             const fnav_nav_frame_t *f = &t->f[i];
-            double hx, hy;
+            double yaw;
             if (i > first) {
                 const fnav_nav_frame_t *g = &t->f[i - 1];
                 double dx = (double)f->pos_m[0] - (double)g->pos_m[0], dy = (double)f->pos_m[1] - (double)g->pos_m[1],
                        dz = (double)f->pos_m[2] - (double)g->pos_m[2];
                 s->integrated_path_m += sqrt(dx * dx + dy * dy + dz * dz);
             }
-            hx_dcm_from_euler((double)f->euler_rad[0], (double)f->euler_rad[1], (double)f->euler_rad[2], c);
-            hx = c[0][0] * ref_b[0] + c[0][1] * ref_b[1] + c[0][2] * ref_b[2];
-            hy = c[1][0] * ref_b[0] + c[1][1] * ref_b[1] + c[1][2] * ref_b[2];
-            if (hx * hx + hy * hy >= 0.25) {
-                double yaw = atan2(hy, hx);
+            if (heading_of(ref_b, f, &yaw)) {
                 if (have) {
                     double dyaw = yaw - yaw_prev;
                     while (dyaw > M_PI) {
@@ -1342,6 +1453,107 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
         s->end_h_pct = s->path_m > 0.0 ? 100.0 * s->end_h_m / s->path_m : (double)NAN;
         s->end_3d_pct = s->path_m > 0.0 ? 100.0 * s->end_3d_m / s->path_m : (double)NAN;
     }
+}
+
+/* ",%.Nf" of v, or "," alone when v is not defined (NaN) */
+static void stride_field(FILE *f, int prec, double v)
+{
+    if (isfinite(v)) {
+        fprintf(f, ",%.*f", prec, v);
+    } else {
+        fputc(',', f);
+    }
+}
+
+int hx_nav_write_strides(FILE *f, const hx_traj_t *t)
+{
+    size_t *mid = NULL, *start = NULL, n = 0, p = 0, k, i, first = 0;
+    double ref_b[3] = { 1.0, 0.0, 0.0 }, fs_prev = (double)NAN;
+    if (!t->events) {
+        return -1;
+    }
+    while (first < t->n && !(t->f[first].flags & FNAV_FRAME_ALIGNED)) {
+        first++;
+    }
+    if (first < t->n) {
+        mid = (size_t *)malloc((t->n + 1) * sizeof *mid);
+        start = (size_t *)malloc((t->n + 1) * sizeof *start);
+        if (mid == NULL || start == NULL) {
+            free(mid);
+            free(start);
+            return -1;
+        }
+        /* the stance mid-points of the summary's distance */
+        n = hx_nav_stance_phases(t, mid, start, t->n + 1);
+        heading_ref(t, first, ref_b);
+    }
+    fprintf(f, "stride,foot_off_s,foot_strike_s,swing_start_s,swing_end_s,swing_s,stride_time_s,cadence_spm,"
+               "length_m,height_change_m,heading_change_deg,clearance_m\n");
+    for (k = 0; k < t->nev; k++) {
+        const hx_stride_ev_t *e = &t->ev[k];
+        const double fo = e->have_fo ? 1e-9 * (double)(e->fo_t_ns - t->t0_ns) : (double)NAN;
+        const double fs = 1e-9 * (double)(e->fs_t_ns - t->t0_ns);
+        double len = (double)NAN, dh = (double)NAN, dpsi = (double)NAN, clear = (double)NAN;
+        /* the stance phase this swing ended begins at its frame; the one
+         * before it began the swing, with every frame between navigated */
+        while (p < n && start[p] < e->frame) {
+            p++;
+        }
+        if (p > 0 && p < n && start[p] == e->frame) {
+            for (i = start[p - 1]; i <= e->frame && (t->f[i].flags & FNAV_FRAME_ALIGNED); i++) {
+            }
+            if (i > e->frame) {
+                const fnav_nav_frame_t *a = &t->f[mid[p - 1]], *b = &t->f[mid[p]];
+                const double dx = (double)b->pos_m[0] - (double)a->pos_m[0];
+                const double dy = (double)b->pos_m[1] - (double)a->pos_m[1];
+                const double dz = (double)b->pos_m[2] - (double)a->pos_m[2], l2 = dx * dx + dy * dy;
+                double ya, yb;
+                len = sqrt(l2);
+                dh = 0.0 - dz; /* n is z down */
+                if (heading_of(ref_b, a, &ya) && heading_of(ref_b, b, &yb)) {
+                    double d = yb - ya;
+                    while (d > M_PI) {
+                        d -= 2.0 * M_PI;
+                    }
+                    while (d <= -M_PI) {
+                        d += 2.0 * M_PI;
+                    }
+                    dpsi = d * 180.0 / M_PI;
+                }
+                /* the height above the line from a to b, at the point of the
+                 * line the frame's horizontal position projects to */
+                for (i = mid[p - 1]; i <= mid[p]; i++) {
+                    const fnav_nav_frame_t *g = &t->f[i];
+                    if (g->t_ns >= e->swing_t0_ns && g->t_ns < e->swing_t1_ns) {
+                        double u = l2 > 0.0 ? (((double)g->pos_m[0] - (double)a->pos_m[0]) * dx +
+                                               ((double)g->pos_m[1] - (double)a->pos_m[1]) * dy) / l2
+                                            : 0.0;
+                        double h;
+                        u = u < 0.0 ? 0.0 : u > 1.0 ? 1.0 : u;
+                        h = ((double)a->pos_m[2] + u * dz) - (double)g->pos_m[2];
+                        clear = isfinite(clear) && clear >= h ? clear : h;
+                    }
+                }
+            }
+        }
+        fprintf(f, "%lu", (unsigned long)(k + 1));
+        stride_field(f, 6, fo);
+        stride_field(f, 6, fs);
+        stride_field(f, 6, 1e-9 * (double)(e->swing_t0_ns - t->t0_ns));
+        stride_field(f, 6, 1e-9 * (double)(e->swing_t1_ns - t->t0_ns));
+        stride_field(f, 6, fs - fo);
+        stride_field(f, 6, fs - fs_prev);
+        stride_field(f, 3, 120.0 / (fs - fs_prev));
+        stride_field(f, 4, len);
+        stride_field(f, 4, dh);
+        stride_field(f, 2, dpsi);
+        stride_field(f, 4, clear);
+        fputc('\n', f);
+        fs_prev = fs;
+    }
+    free(mid);
+    free(start);
+    return ferror(f) ? -1 : 0;
 }
 
 int hx_nav_gappy(const hx_nav_summary_t *s)

@@ -82,10 +82,29 @@ void hx_sat_push(hx_sat_t *st, const fnav_sample_t *s);
 /** Samples at channel ch's extremes when it is saturated, else 0. */
 long hx_sat_count(const hx_sat_t *st, int ch);
 
+/** One completed stride of the stance detector (FNAV_STANCE_EV_STRIDE)
+ *  with its gait events, as the navigator's own detector raised them
+ *  (fnav_stance.h; kept with HX_REPLAY_EVENTS). */
+typedef struct {
+    size_t frame;        /**< the frame that ended the swing (FNAV_FRAME_STRIDE) */
+    int have_fo;         /**< the swing's FNAV_STANCE_EV_FOOT_OFF was raised */
+    int64_t fo_t_ns;     /**< foot-off (with have_fo), ns */
+    int64_t fs_t_ns;     /**< foot-strike, ns */
+    int64_t swing_t0_ns; /**< the detector's first sample of the swing, ns */
+    int64_t swing_t1_ns; /**< the first sample of the stance that ended it, ns */
+} hx_stride_ev_t;
+
 /** Frames of one replay, kept in memory. */
 typedef struct {
     size_t n, cap;
     fnav_nav_frame_t *f;
+    int64_t t0_ns;               /**< the first sample's stamp: the trajectory CSV's t = 0 */
+    /** with HX_REPLAY_EVENTS: every stride of the frames kept, in order
+     *  (events 1; 0: not kept, or the detector that gives them disagreed with
+     *  the navigator's frames, which does not happen) */
+    hx_stride_ev_t *ev;
+    size_t nev, ev_cap;
+    int events;
     fnav_nav_stats_t stats;      /**< navigator counters at the end */
     double rate_hz;              /**< detector rate */
     int window;                  /**< detector window, samples */
@@ -165,6 +184,9 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
 
 #define HX_REPLAY_PROGRESS 0x1u /**< hx_nav_replay: progress indicator */
 #define HX_REPLAY_AXES 0x2u     /**< hx_nav_replay: the axes check (48 integrations per swing sample) */
+#define HX_REPLAY_EVENTS 0x4u   /**< hx_nav_replay: keep the strides' gait events in traj->ev (a second
+                                     fnav_stance_t fed the samples the navigator accepted, whose outputs
+                                     are checked against its frames: fnav_nav_frame_t has no event times) */
 
 /**
  * Replay one log through the Linux port into a navigator, sample by sample.
@@ -268,6 +290,15 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s);
  *  stance phase, the middle of the detector's stance in it (aligned frames
  *  only); returns their number (at most max). */
 size_t hx_nav_stance_mids(const hx_traj_t *t, size_t *idx, size_t max);
+
+/** The same with start[i] (may be NULL): the first frame of the segmented
+ *  stance phase of idx[i]. */
+size_t hx_nav_stance_phases(const hx_traj_t *t, size_t *idx, size_t *start, size_t max);
+
+/** Write the stride CSV (docs/harness.md, "replay", "Stride CSV") of a
+ *  trajectory replayed with HX_REPLAY_EVENTS: one row per stride. 0 ok, -1
+ *  when t has no events or a write failed. */
+int hx_nav_write_strides(FILE *f, const hx_traj_t *t);
 
 /** Print the summary as text. */
 void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const hx_nav_summary_t *s);

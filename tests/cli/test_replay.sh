@@ -1008,6 +1008,92 @@ if json "$T/stairs.json" '(all(abs(j[k] / v - 1) < 0.02 for k, v in (("distance_
     pass "stairs: distance, vertical, return-to-start and strides as the stairs' geometry gives"
 else fail "stairs: summary $(grep -E '"(distance|return_error|vertical_drift)[a-z_0-9]*"|"strides"' "$T/stairs.json" | tr -d '\n\t')"; fi
 
+# --- --strides: one row per completed stride of the sensor foot (docs/harness.md, "replay", "Stride CSV")
+# strides_ok CSV JSON LENGTH_M CADENCE_SPM LEN_TOL_M CAD_TOL_SPM: the columns, one row per stride of the
+# summary, increasing times, foot-off before foot-strike, and the medians of length_m and cadence_spm
+strides_ok() {
+    "${PY:-/usr/bin/python3}" - "$@" <<'PYEOF'
+import csv, json, statistics, sys
+path, jpath, want_len, want_cad, tol_len, tol_cad = sys.argv[1], sys.argv[2], *map(float, sys.argv[3:7])
+cols = ["stride", "foot_off_s", "foot_strike_s", "swing_start_s", "swing_end_s", "swing_s", "stride_time_s",
+        "cadence_spm", "length_m", "height_change_m", "heading_change_deg", "clearance_m"]
+rows = list(csv.reader(open(path)))
+if rows[0] != cols: sys.exit("header %s" % rows[0])
+rows = [dict(zip(cols, r)) for r in rows[1:]]
+n = json.load(open(jpath))["strides"]
+if len(rows) != n: sys.exit("%d rows, summary strides %d" % (len(rows), n))
+if [int(r["stride"]) for r in rows] != list(range(1, n + 1)): sys.exit("stride numbers")
+f = lambda r, k: float(r[k]) if r[k] != "" else None
+for a, b in zip(rows, rows[1:]):
+    for k in ("foot_off_s", "foot_strike_s", "swing_start_s", "swing_end_s"):
+        if not f(a, k) < f(b, k): sys.exit("%s not increasing at stride %s" % (k, b["stride"]))
+for r in rows:
+    if not f(r, "foot_off_s") < f(r, "foot_strike_s"): sys.exit("foot-off not before foot-strike in stride " + r["stride"])
+    if not f(r, "swing_start_s") < f(r, "swing_end_s"): sys.exit("swing start not before its end in stride " + r["stride"])
+if rows[0]["stride_time_s"] != "" or rows[0]["cadence_spm"] != "": sys.exit("the first stride has a stride time")
+lens = [f(r, "length_m") for r in rows if r["length_m"] != ""]
+cads = [f(r, "cadence_spm") for r in rows if r["cadence_spm"] != ""]
+ml, mc = statistics.median(lens), statistics.median(cads)
+print("median length %.4f m (want %.4f), cadence %.3f /min (want %.1f), %d rows" % (ml, want_len, mc, want_cad, n))
+sys.exit(0 if abs(ml - want_len) <= tol_len and abs(mc - want_cad) <= tol_cad else 1)
+PYEOF
+}
+# sim_stride LOG-SUMMARY: the simulated stride, the sim's distance between footfalls / its strides (the walk is
+# D = 20 s x speed in whole strides, stride = D / round(D / --stride): 23.33 m / 17 = 1.3725 m for --stride 1.4;
+# the cadence is kept, every stride lasts 120 / cadence s)
+sim_stride() { sed -n 's/^duration .* s, \([0-9]*\) strides, \([0-9.]*\) m between footfalls.*/\2 \1/p' "$1" | awk '{ printf "%.5f", $1 / $2 }'; }
+# Tolerances. Cadence: the foot-strike is an event on a sample, 5 ms at 200 Hz, so a stride time is within one
+# sample of 1.2 s noise-free (100 +- 0.42 /min: 0.5) and, with the sensor noise moving the jerk onset by a sample
+# more, 2 samples (+-0.84: 1.0). Length: noise-free, both stance mid-points are flat-foot still phases, so the
+# sensor moves exactly the sim's stride and only the navigation's own error remains (1 %, 14 mm); with the
+# default navchip noise 2 % (the navigation's distance error over one stride, not accumulated: the stride is a
+# difference of two positions one swing apart).
+"$H" sim --motion walk --duration 30 --stride 1.4 --cadence 100 --profile none --out "$T/sw0.bin" >"$T/sw0.txt" 2>&1 ||
+    { fail "sim walk --profile none"; cat "$T/sw0.txt"; }
+L0=$(sim_stride "$T/sw0.txt")
+expect_exit 0 "replay --strides (noise-free walk)" "$H" replay "$T/sw0.bin" --strides "$T/sw0_strides.csv" --json "$T/sw0.json" --quiet
+if strides_ok "$T/sw0_strides.csv" "$T/sw0.json" "$L0" 100 0.014 0.5 >"$T/py" 2>&1; then pass "--strides noise-free: $(cat "$T/py")"
+else fail "--strides noise-free (stride $L0 m, 100 /min): $(cat "$T/py")"; fi
+"$H" sim --motion walk --duration 30 --stride 1.4 --cadence 100 --out "$T/sw1.bin" >"$T/sw1.txt" 2>&1 ||
+    { fail "sim walk (navchip noise)"; cat "$T/sw1.txt"; }
+L1=$(sim_stride "$T/sw1.txt")
+expect_exit 0 "replay --strides (walk with noise)" "$H" replay "$T/sw1.bin" --strides "$T/sw1_strides.csv" --json "$T/sw1.json" --quiet
+if strides_ok "$T/sw1_strides.csv" "$T/sw1.json" "$L1" 100 "$(awk -v l="$L1" 'BEGIN { print 0.02 * l }')" 1.0 >"$T/py" 2>&1
+then pass "--strides with noise: $(cat "$T/py")"; else fail "--strides with noise (stride $L1 m, 100 /min): $(cat "$T/py")"; fi
+# a slower walk: short strides at a lower cadence (0.9 m at 80 /min, 0.6 m/s), 1.5 s strides
+"$H" sim --motion walk --duration 30 --stride 0.9 --cadence 80 --seed 3 --out "$T/sw2.bin" >"$T/sw2.txt" 2>&1 ||
+    { fail "sim slow walk"; cat "$T/sw2.txt"; }
+L2=$(sim_stride "$T/sw2.txt")
+expect_exit 0 "replay --strides (slow walk)" "$H" replay "$T/sw2.bin" --strides "$T/sw2_strides.csv" --json "$T/sw2.json" --quiet
+if strides_ok "$T/sw2_strides.csv" "$T/sw2.json" "$L2" 80 "$(awk -v l="$L2" 'BEGIN { print 0.02 * l }')" 1.0 >"$T/py" 2>&1
+then pass "--strides slow walk: $(cat "$T/py")"; else fail "--strides slow walk (stride $L2 m, 80 /min): $(cat "$T/py")"; fi
+# the events come from a second detector fed the samples the navigator took: it stays in step with
+# the navigator's frames through duplicated stamps (dt = 0: a frame each, the NGIMU logs) and resampling
+"$H" convert "$T/sw0.bin" "$T/sw0.csv" >/dev/null 2>&1 || fail "convert the noise-free walk"
+awk 'NR > 1 && NR % 50 == 0 { print } { print }' "$T/sw0.csv" > "$T/sw0_dup.csv"
+expect_exit 0 "replay --strides with duplicated stamps" "$H" replay "$T/sw0_dup.csv" --strides "$T/sw0_dup_strides.csv" --json "$T/sw0_dup.json" --quiet
+if strides_ok "$T/sw0_dup_strides.csv" "$T/sw0_dup.json" "$L0" 100 0.014 0.5 >"$T/py" 2>&1; then pass "--strides through duplicated stamps: $(cat "$T/py")"
+else fail "--strides through duplicated stamps: $(cat "$T/py") $(cat "$T/err")"; fi
+expect_exit 0 "replay --strides --rate 100" "$H" replay "$T/sw0.bin" --rate 100 --strides "$T/sw0_r_strides.csv" --json "$T/sw0_r.json" --quiet
+# (at 100 Hz an event falls on a 10 ms sample: one sample of 1.2 s is 0.83 /min)
+if strides_ok "$T/sw0_r_strides.csv" "$T/sw0_r.json" "$L0" 100 0.014 0.9 >"$T/py" 2>&1; then pass "--strides resampled: $(cat "$T/py")"
+else fail "--strides resampled: $(cat "$T/py") $(cat "$T/err")"; fi
+# standard output: the rows alone there, the summary on standard error
+expect_exit 0 "--strides -" "$H" replay "$T/sw0.bin" --strides -
+if cmp -s "$T/out" "$T/sw0_strides.csv"; then pass "--strides - writes the rows of --strides FILE on stdout"; else fail "--strides - on stdout"; fi
+expect_err "^stance  *[0-9]* strides" "--strides -: the summary is on stderr"
+# clashes, refused before anything is opened; an unwritable file before the run
+expect_exit 2 "--strides - with --out -" "$H" replay "$T/sw0.bin" --out - --strides -
+expect_err "cannot both write to standard output" "--strides - and --out - refused"
+expect_exit 2 "--strides - with --json -" "$H" replay "$T/sw0.bin" --json - --strides -
+expect_err "cannot both write to standard output" "--strides - and --json - refused"
+expect_exit 2 "--strides onto --out" "$H" replay "$T/sw0.bin" --out "$T/same.csv" --strides "$T/same.csv"
+expect_err "name the same file" "--strides and --out on one file refused"
+expect_exit 2 "--strides onto the log" "$H" replay "$T/sw0.bin" --strides "$T/sw0.bin"
+expect_err "is the input itself" "--strides onto the log refused"
+expect_exit 3 "unwritable --strides" "$H" replay "$T/sw0.bin" --strides /nonexistent/dir/s.csv
+if [ ! -s "$T/out" ]; then pass "unwritable --strides: refused before the run"; else fail "unwritable --strides: the log was run first"; fi
+
 if [ "$fails" -ne 0 ]; then
     echo "test_replay.sh: $fails failure(s)"
     exit 1
