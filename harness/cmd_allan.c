@@ -58,7 +58,7 @@ static const hx_opt_t k_opts[] = {
     { "--conf", "P", "confidence of the intervals (default 0.682689 = erf(1/sqrt(2)), one sigma, Stable32's "
                      "0.683)", 0 },
     { "--name", "TEXT", "profile name (default: from the file name)", 0 },
-    { "--out", "FILE", "table of every channel and tau (CSV)", 0 },
+    { "--out", "FILE", "table of every channel and tau (CSV; '-': standard output, the text then on standard error)", 0 },
     { "--json", "FILE", "parameters, quality and tables (JSON)", 0 },
     { "--plot", "FILE", "Allan deviation plot (PNG): measured with confidence bars, simulated", 0 },
     { "--profile", "FILE", "write the corrected identification as a footnav profile", 0 },
@@ -1283,7 +1283,7 @@ static void csv_deviations(const run_t *R, const chan_t *ch, size_t k, FILE *f)
 
 static int write_csv(const run_t *R, const char *path)
 {
-    FILE *f = fopen(path, "w");
+    FILE *f = hx_out_open(path); /* "-": standard output (hx_json_stdout_claim) */
     int i;
     size_t k;
     char b[16][32];
@@ -1328,8 +1328,8 @@ static int write_csv(const run_t *R, const char *path)
             csv_deviations(R, ch, k, f);
         }
     }
-    if (fclose(f) != 0) {
-        hx_error(CMD, "%s: write failed", path);
+    if (hx_out_close(f) != 0) {
+        hx_error(CMD, "%s: write failed", strcmp(path, "-") == 0 ? "standard output" : path);
         return -1;
     }
     return 0;

@@ -32,7 +32,7 @@ static const hx_opt_t k_opts[] = {
     { "--sensitivity", NULL, "also tabulate the answer for segments of 64..1024 samples x every DC mode", 0 },
     { "--spec-nfft", "N", "spectrogram segment length (default 256)", 0 },
     { "--spec-axis", "CH", "spectrogram channel: ax..gz (default: the accelerometer axis along gravity)", 0 },
-    { "--out", "FILE", "PSD and CCDF of every axis (CSV)", 0 },
+    { "--out", "FILE", "PSD and CCDF of every axis (CSV; '-': standard output, the text then on standard error)", 0 },
     { "--json", "FILE", "settings, per-axis and overall answers, sensitivity (JSON)", 0 },
     { "--plot", "DIR", "psd.png (Fig. 3), ccdf.png (Fig. 4), spectrogram.png (Fig. 6), sensitivity.png", 0 },
     { NULL, NULL, NULL, 0 }
@@ -230,7 +230,7 @@ static void print_result(const char *title, const result_t *r, const fnav_bandwi
 
 static int write_csv(const char *path, const result_t *r, const char *src)
 {
-    FILE *f = fopen(path, "w");
+    FILE *f = hx_out_open(path); /* "-": standard output (hx_json_stdout_claim) */
     uint32_t k;
     int c;
     if (f == NULL) {
@@ -258,8 +258,8 @@ static int write_csv(const char *path, const result_t *r, const char *src)
         }
         fprintf(f, "\n");
     }
-    if (fclose(f) != 0) {
-        hx_error(CMD, "%s: write failed", path);
+    if (hx_out_close(f) != 0) {
+        hx_error(CMD, "%s: write failed", strcmp(path, "-") == 0 ? "standard output" : path);
         return -1;
     }
     return 0;
