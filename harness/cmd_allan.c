@@ -1496,6 +1496,10 @@ static int plot_block(FILE *gp, const char *name, const run_t *R, const chan_t *
 {
     size_t k;
     int np = 0;
+    hx_noise_model_t bound;
+    /* what 4: the Gauss-Markov bound a profile holds where the fit's AR(1)
+     * is not resolved (profile_model() 1) */
+    const int bound_ok = what == 4 && profile_model(R, ch, &bound) == 1;
     fprintf(gp, "$%s << EOD\n", name);
     for (k = 0; k < ch->nres; k++) {
         const fnav_allan_result_t *r = &ch->res[k];
@@ -1517,6 +1521,9 @@ static int plot_block(FILE *gp, const char *name, const run_t *R, const chan_t *
             np++;
         } else if (what == 3 && ch->id_ok && ch->id.fit_ok) {
             fprintf(gp, "%.6g %.6g\n", t, sqrt(hx_noise_model_avar(&ch->id.fit, R->rate_hz, (double)r->tau)));
+            np++;
+        } else if (what == 4 && bound_ok) {
+            fprintf(gp, "%.6g %.6g\n", t, sqrt(hx_noise_model_avar(&bound, R->rate_hz, (double)r->tau)));
             np++;
         }
     }
@@ -1541,6 +1548,12 @@ static int write_plot(const run_t *R, const char *path)
         const int nsp = plot_block(p.gp, "sp", R, ch, 1);
         const int nsf = plot_block(p.gp, "sf", R, ch, 2);
         const int naf = plot_block(p.gp, "af", R, ch, 3);
+        const int npb = plot_block(p.gp, "pb", R, ch, 4);
+        /* an unresolved fit is no model of the sensor: the legend says so,
+         * and the bound the profile holds instead is drawn (the plot drew
+         * such a fit as the corrected model and left the bound out; a user
+         * review, 2026-11-30) */
+        const char *unres = npb > 0 ? " (unresolved)" : "";
         fprintf(p.gp, "set title '%s'\n", hx_gp_str(q, sizeof q, ch->label));
         fprintf(p.gp, "set ylabel 'ADEV [%s]'\n", hx_gp_str(q, sizeof q, ch->unit));
         if (nm == 0) {
@@ -1559,10 +1572,15 @@ static int write_plot(const run_t *R, const char *path)
         }
         if (nsf > 0) {
             fprintf(p.gp, ", $sf using 1:2 with linespoints lw 1.5 pt 4 ps 0.5 lc rgb '#008000' title 'simulated, "
-                          "corrected id.'");
+                          "corrected id.%s'",
+                    unres);
         }
         if (naf > 0) {
-            fprintf(p.gp, ", $af using 1:2 with lines dt 2 lc rgb '#404040' title 'corrected model (analytic)'");
+            fprintf(p.gp, ", $af using 1:2 with lines dt 2 lc rgb '#404040' title 'corrected model (analytic%s)'",
+                    npb > 0 ? ", unresolved" : "");
+        }
+        if (npb > 0) {
+            fprintf(p.gp, ", $pb using 1:2 with lines lw 2 lc rgb '#e08000' title 'profile: GM bound (analytic)'");
         }
         fprintf(p.gp, "\n");
     }

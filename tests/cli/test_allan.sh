@@ -416,6 +416,22 @@ expect_err "and the Gauss-Markov bound T = .*, whose Allan bump sits on the mini
     "the bound's warning says which way it bounds"
 expect_out "Gauss-Markov bound from the Allan minimum (T = t_BS / 1.89, sigma_bias = BS / 0.6174: the true T may be longer; docs/allan.md):" \
     "the table's note says which way the bound goes"
+# the plot drew an unresolved channel's fit as "simulated, corrected id." and "corrected model (analytic)", the
+# legend of a resolved one, and not the bound the profile holds instead (30 minutes of ADIS16405 log 1: gx's
+# fit, white 0.0039 deg/s/sqrt(Hz), drawn as the corrected model; a user review, 2026-11-30). Now such a fit is
+# marked in the legend and the bound is drawn, once per unresolved channel (the script through a stand-in gnuplot)
+fake_gnuplot "$T/fakegp"
+expect_exit 0 "10 s of white noise, --plot" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/w10s.gp" "$H" allan \
+    "$T/w10s.csv" --quiet --json "$T/w10g.json" --plot "$T/w10s.png"
+nb=$("$PY" -c 'import json, sys; print(sum(c["profile"].get("basis") == "bound" for c in json.load(open(sys.argv[1]))["channels"]))' "$T/w10g.json")
+[ "$nb" -gt 0 ] && [ "$(grep -c "title 'profile: GM bound (analytic)'" "$T/w10s.gp")" -eq "$nb" ] &&
+    pass "the plot draws the bound of each of the $nb unresolved channels" ||
+    fail "bound curves: $(grep -c 'Gauss-Markov bound' "$T/w10s.gp") drawn for $nb unresolved channels"
+# (every channel is unresolved here: no fit may go unmarked; a channel with no fit at all draws none)
+[ "$nb" -eq 6 ] && grep -q "title 'corrected model (analytic, unresolved)'" "$T/w10s.gp" &&
+    grep -q "title 'simulated, corrected id. (unresolved)'" "$T/w10s.gp" &&
+    ! grep -q "title 'corrected model (analytic)'\|title 'simulated, corrected id.'" "$T/w10s.gp" &&
+    pass "the plot marks the unresolved fits" || fail "unresolved fits unmarked: $(grep -o "title '[^']*'" "$T/w10s.gp" | sort | uniq -c)"
 F30=$(data adis16405_static/adis16405_imu1_100Hz.csv.gz)
 if [ -n "$F30" ]; then
     "$H" convert "$F30" "$T/first30.csv" --end 1800 >/dev/null 2>&1 || fail "convert the first 30 minutes of log 1"
