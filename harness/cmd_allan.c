@@ -1882,6 +1882,20 @@ static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m)
  * below 1 Hz the shortest tau is past the 1 s the white noise is read at,
  * and "too little data?" sent the user to the record's length (a user
  * review, 2026-11-29). */
+/* The samples the paper's white noise, the ADEV at 1 s, needs: twice the
+ * first grid tau at or above 1 s (a level-0 term needs 2 m + 1 phase
+ * values); 0 when the grid ends below 1 s. */
+static double one_s_needs(const run_t *R)
+{
+    size_t i;
+    for (i = 0; i < R->ngrid; i++) {
+        if ((double)R->grid[i] >= R->rate_hz) {
+            return 2.0 * (double)R->grid[i];
+        }
+    }
+    return 0.0;
+}
+
 static void no_identification(const run_t *R, const char *path, const chan_t *ch)
 {
     if (R->time_unit_warned) {
@@ -1890,6 +1904,15 @@ static void no_identification(const run_t *R, const char *path, const chan_t *ch
                       "at; convert the time column to seconds (or give --rate) and run allan again; profile not "
                       "written",
                  path, ch->name, R->rate_hz, 1.0 / R->rate_hz);
+    } else if (one_s_needs(R) > (double)R->n) {
+        /* "(too little data?)" left the user to guess how much is enough (a
+         * user review, 2026-11-30) */
+        const double m1 = one_s_needs(R) / 2.0;
+        hx_error(CMD, "%s: no identification for %s: the record, %.3g s (%lu samples), is too short: the white noise "
+                      "is read at tau = 1 s, whose Allan point (%.3g s, m = %.0f) needs %.0f samples (%.3g s); record "
+                      "%.3g s or more, far longer for the bias (docs/workflow.md); profile not written",
+                 path, ch->name, (double)R->n / R->rate_hz, (unsigned long)R->n, m1 / R->rate_hz, m1, 2.0 * m1,
+                 2.0 * m1 / R->rate_hz, 1.0 / R->tau_max_frac);
     } else {
         hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
     }
@@ -2019,6 +2042,17 @@ static int write_profile(const run_t *R, const char *path, const char *name)
     if (have_k) {
         ADD3("accel_rrw_mps2_rts", kk, 0);
         ADD3("gyro_rrw_rps_rts", kk, 3);
+    }
+    if (nfallback > 0 && R->rate_hz > tau_max_samples(R) * (1.0 + 1e-9)) {
+        /* the bound's white noise, the ADEV at 1 s, lies beyond the tenth
+         * of the record the identification keeps to: a 5 s log wrote a
+         * profile from an Allan point of EDF 4, exit 0, without a word (a
+         * user review, 2026-11-30) */
+        hx_warn(CMD, "%s: the white noise of %d channel%s (the bound's, above) is the ADEV at 1 s, beyond the longest "
+                     "tau the identification keeps to, %.3g s (--max-tau-frac of the %.3g-s record): it rests on a "
+                     "few averages; record %.3g s or more, far longer for the bias (docs/workflow.md)",
+                path, nfallback, nfallback == 1 ? "" : "s", tau_max_samples(R) / R->rate_hz,
+                (double)R->n / R->rate_hz, 1.0 / R->tau_max_frac);
     }
     if (nfallback > 0) {
         /* 1 where the AR(1) part is the Allan-minimum bound, not a fit */

@@ -48,6 +48,23 @@ expect_exit 3 "unwritable output" "$H" allan --series "$T/bad.txt" --rate 10 --n
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 10; i++) printf "%.2f,0.1,0.2,9.8,0.01,0.02,0.0%d\n", i / 100, i }' >"$T/tiny.csv"
 expect_exit 1 "too short for a profile" "$H" allan "$T/tiny.csv" --quiet --profile "$T/tiny.profile" --plot "$T/tiny.png"
 [ -s "$T/tiny.png" ] && [ ! -e "$T/tiny.profile" ] && pass "plot without profile" || fail "tiny outputs"
+# half a second of noise: "no identification for ax (too little data?)" left the user to guess how much is enough;
+# the error now names the record's length and the length the white noise, read at 1 s, needs (a user review,
+# 2026-11-30). 5 s gave a profile, exit 0, its white noise the ADEV at 1 s, a tau beyond the tenth of the record
+# the identification otherwise keeps to (--max-tau-frac), from a few averages (EDF 4.4 at 0.96 s): said now
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; s = 1; for (i = 0; i < 500; i++) { s = (s * 1103515245 + 12345) % 2147483648; r = s / 2147483648.0 - 0.5; printf "%.2f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f\n", i / 100, r / 50, -r / 40, -9.81 + r / 30, r / 1000, -r / 900, r / 800 } }' >"$T/five.csv"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; s = 7; for (i = 0; i < 1001; i++) { s = (s * 1103515245 + 12345) % 2147483648; r = s / 2147483648.0 - 0.5; printf "%.2f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f\n", i / 100, r / 50, -r / 40, -9.81 + r / 30, r / 1000, -r / 900, r / 800 } }' >"$T/ten.csv"
+head -n 52 "$T/five.csv" >"$T/half.csv"
+expect_exit 1 "0.5 s: too short for a profile" "$H" allan "$T/half.csv" --no-sim --quiet --profile "$T/half.profile"
+expect_err "half.profile: no identification for ax: the record, 0.51 s (51 samples), is too short: the white noise is read at tau = 1 s, whose Allan point (1.12 s, m = 112) needs 224 samples (2.24 s); record 10 s or more, far longer for the bias (docs/workflow.md); profile not written" \
+    "a too-short log: the error names the length it needs"
+[ ! -e "$T/half.profile" ] && pass "0.5 s: no profile" || fail "0.5 s: a profile was written"
+expect_exit 0 "5 s: a profile" "$H" allan "$T/five.csv" --no-sim --quiet --profile "$T/five.profile"
+expect_err "five.profile: the white noise of 6 channels (the bound's, above) is the ADEV at 1 s, beyond the longest tau the identification keeps to, 0.5 s (--max-tau-frac of the 5-s record): it rests on a few averages; record 10 s or more, far longer for the bias (docs/workflow.md)" \
+    "a 5 s log: the profile's white noise beyond the identified range is said"
+expect_exit 0 "10 s: a profile" "$H" allan "$T/ten.csv" --no-sim --quiet --profile "$T/ten.profile"
+grep -q "beyond the longest tau the identification keeps to" "$T/err" && fail "10 s: the short-record warning" ||
+    pass "10 s: 1 s within the identified range, no short-record warning"
 # a log too short for any Allan point (the shortest tau, 1 sample, beyond 10 % of 2 samples): until 2026-11-29
 # exit 0 with empty tables and every value n/a (exit 1 only with --profile; found by the ident review); now an
 # error naming the samples it needs, as a record of under 2 samples is, exit 1, no output written
