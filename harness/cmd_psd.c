@@ -637,12 +637,25 @@ int hx_cmd_psd(int argc, char **argv)
     /* too short first: one stamped sample has no rate either, and no
      * --input-rate gives it one (a stamped format ignores the option) */
     if (log.n < (size_t)nfft) {
+        /* what to do: the segment length that fits (a user review,
+         * 2026-11-30); --nfft's least is 8 */
+        char fix[96];
+        unsigned fit = 8u;
+        while ((size_t)fit * 2u <= log.n) {
+            fit *= 2u;
+        }
+        if (log.n >= 8u) {
+            snprintf(fix, sizeof fix, "give --nfft %u or less (a power of two)", fit);
+        } else {
+            snprintf(fix, sizeof fix, "a Welch segment needs at least 8 samples (--nfft 8)");
+        }
         if (rc > 0) {
             /* the input's error is the cause, not a missing option */
             hx_error(CMD, "%s (the %zu samples before it are fewer than one %u-sample segment)", log.error, log.n,
                      (unsigned)nfft);
         } else {
-            hx_error(CMD, "%s: %zu samples, fewer than one %u-sample segment", a.pos[0], log.n, (unsigned)nfft);
+            hx_error(CMD, "%s: %zu samples, fewer than one %u-sample segment; %s", a.pos[0], log.n, (unsigned)nfft,
+                     fix);
         }
         hx_log_free(&log);
         return HX_EXIT_DATA;

@@ -262,6 +262,12 @@ expect_err "sample rate unknown: every time stamp is the same" "a bad line after
 head -2 "$T/same.csv" >"$T/one.csv"
 expect_exit 1 "one stamped sample" "$H" psd "$T/one.csv" --input-rate 100
 expect_err "1 samples, fewer than one 64-sample segment" "one sample: too short for a segment"
+expect_err "fewer than one 64-sample segment; a Welch segment needs at least 8 samples" "one sample: the least a segment needs"
+# 1001 samples with --nfft 4096: the error said what is missing, not what to do (a user review, 2026-11-30)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 1001; i++) printf "%.3f,%.4f,0,9.81,0,0,%.4f\n", i / 100, sin(i), cos(i) }' > "$T/k1.csv"
+expect_exit 1 "1001 samples, --nfft 4096" "$H" psd "$T/k1.csv" --nfft 4096
+expect_err "k1.csv: 1001 samples, fewer than one 4096-sample segment; give --nfft 512 or less (a power of two)" \
+    "a log shorter than a segment: the --nfft that fits is named"
 ! grep -q "give --input-rate" "$T/err" && pass "one stamped sample: no advice to give --input-rate" ||
     fail "one stamped sample: told to give --input-rate"
 # stamps printed to the millisecond at about 398 Hz (2 and 3 ms intervals): the rate from the stamps, not 333 or 500 Hz
