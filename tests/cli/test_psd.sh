@@ -129,6 +129,10 @@ awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 200; k++) { 
 fake_gnuplot "$T/fakegp"
 expect_exit 0 "a chirp, --plot with a stand-in gnuplot" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/spec.gp" \
     "$H" psd "$T/chirp.csv" --plot "$T/chirpplots" --spec-nfft 16 --spec-axis ax
+# the colour bar's label sat on its tick labels ("-10", "-20" under "PSD [dB re 1 (m/s^2)^2/Hz]" on the 820 Hz walk;
+# a user review, 2026-11-30): it is moved out past them
+grep -q "^set cblabel 'PSD \[dB re 1 (m/s^2)^2/Hz\]' offset 2.5,0$" "$T/spec.gp" &&
+    pass "the spectrogram's colour-bar label is offset from its tick labels" || fail "cblabel: $(grep cblabel "$T/spec.gp")"
 if "$PY" -c 'import scipy' 2>/dev/null; then
     if "$PY" - "$T/chirp.csv" "$T/spec.gp" >"$T/pyout" 2>&1 <<'PYEOF'
 import sys
