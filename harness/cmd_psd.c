@@ -484,7 +484,9 @@ static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], con
     char path[HX_PLOT_PATH_SIZE];
     int d, k;
     snprintf(path, sizeof path, "%s/sensitivity.png", dir);
-    if (hx_plot_open(&p, CMD, path, 800, 500) != 0) {
+    /* 900 wide as psd.png and ccdf.png: at 800 the title ran past the
+     * right edge on the shared data's paths (a user review, 2026-11-30) */
+    if (hx_plot_open(&p, CMD, path, 900, 500) != 0) {
         return -1;
     }
     fprintf(p.gp, "$t << EOD\n");
@@ -525,6 +527,10 @@ static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], con
         }
         if (hi - lo <= 1e-9 * hi) {
             fprintf(p.gp, "set yrange [0:%.6g]\n", 2.0 * hi);
+        } else {
+            /* a margin above and below: the lines at the lowest and highest
+             * answer ran along the frame, where they could not be seen */
+            fprintf(p.gp, "set offsets 0, 0, graph 0.05, graph 0.05\n");
         }
         fprintf(p.gp, "set key top right\nplot ");
         for (d = 0; d < NDC; d++) {
