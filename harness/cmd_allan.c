@@ -2212,6 +2212,22 @@ int hx_cmd_allan(int argc, char **argv)
         free(R);
         return HX_EXIT_USAGE;
     }
+    if (series != NULL) {
+        /* the log's options were ignored with a series without a word, exit
+         * 0 (`--series F --channels gx`; a user review, 2026-11-30), as
+         * --unit with a log was */
+        static const char *const log_only[] = { "--channels", "--from", "--input-rate", "--name", NULL };
+        int k;
+        for (k = 0; log_only[k] != NULL; k++) {
+            if (hx_arg(&a, log_only[k]) != NULL) {
+                hx_error(CMD, "%s applies to a log, not a --series (%s)", log_only[k],
+                         strcmp(log_only[k], "--name") == 0 ? "it names a profile, which a series does not give"
+                                                             : "one column of numbers at --rate HZ");
+                free(R);
+                return HX_EXIT_USAGE;
+            }
+        }
+    }
     if (series == NULL && hx_arg(&a, "--unit") != NULL) {
         /* a log's channels are in m/s^2 and deg/s: the unit was ignored
          * without a word, exit 0 (the cli review, 2026-11-29) */

@@ -22,6 +22,13 @@ expect_exit 1 "series value beyond the input range" "$H" allan --series "$T/big.
 expect_err "big.txt:2: 1e+30 differs from the first value, 1, by more than" "the rejected value is named with its line"
 expect_exit 2 "--fractional with --phase" "$H" allan --series "$T/big.txt" --rate 1 --phase --fractional 1e7
 expect_exit 2 "--fractional of a log" "$H" allan vectors/walk.bin --fractional 1e7
+# the log's options with a series were ignored without a word, exit 0 (`--series F --channels gx` analysed the
+# series; a user review, 2026-11-30), as --unit with a log was until 2026-11-29
+printf "1\n2\n3\n4\n5\n6\n7\n8\n9\n10\n11\n12\n" > "$T/twelve.txt"
+for o in "--channels gx" "--from csv" "--input-rate 50" "--name foo"; do
+    expect_exit 2 "--series with $o" "$H" allan --series "$T/twelve.txt" --rate 1 --no-sim --quiet $o
+    expect_err "${o%% *} applies to a log, not a --series" "--series with $o: the option is named"
+done
 expect_exit 2 "bad --estimator" "$H" allan --series "$T/big.txt" --rate 1 --estimator fast
 expect_exit 2 "empty --channels" "$H" allan vectors/walk.bin --channels ,
 expect_err "--channels: an empty element in ','" "empty --channels explained"
