@@ -620,6 +620,13 @@ int hx_cmd_psd(int argc, char **argv)
             return HX_EXIT_USAGE;
         }
     }
+    if (hx_arg(&a, "--plot") == NULL && (hx_arg(&a, "--spec-axis") != NULL || hx_arg(&a, "--spec-nfft") != NULL)) {
+        /* they shape spectrogram.png only: without --plot they were
+         * ignored, exit 0 (a user review, 2026-11-30) */
+        hx_error(CMD, "%s sets the spectrogram of --plot DIR (spectrogram.png): give --plot DIR",
+                 hx_arg(&a, "--spec-axis") != NULL ? "--spec-axis" : "--spec-nfft");
+        return HX_EXIT_USAGE;
+    }
     bc.threshold = (fnav_real_t)thr;
     bc.round_hz = (fnav_real_t)rnd;
 

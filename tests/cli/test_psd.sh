@@ -141,6 +141,11 @@ grep -q "^set title 'Lowest usable sampling frequency" "$T/sens.gp" && grep -q "
     grep -q "^set offsets 0, 0, graph 0.05, graph 0.05$" "$T/sens.gp" &&
     pass "sensitivity.png: 900 wide, a margin above and below its lines" ||
     fail "sensitivity.png: $(grep -E 'size|offsets' "$T/sens.gp")"
+# the spectrogram's options without --plot were ignored, exit 0 (a user review, 2026-11-30)
+expect_exit 2 "--spec-axis without --plot" "$H" psd "$T/sens.csv" --spec-axis gx
+expect_err "--spec-axis sets the spectrogram of --plot DIR (spectrogram.png): give --plot DIR" "--spec-axis without --plot: named"
+expect_exit 2 "--spec-nfft without --plot" "$H" psd "$T/sens.csv" --spec-nfft 128
+expect_err "--spec-nfft sets the spectrogram of --plot DIR" "--spec-nfft without --plot: named"
 # the colour bar's label sat on its tick labels ("-10", "-20" under "PSD [dB re 1 (m/s^2)^2/Hz]" on the 820 Hz walk;
 # a user review, 2026-11-30): it is moved out past them
 grep -q "^set cblabel 'PSD \[dB re 1 (m/s^2)^2/Hz\]' offset 2.5,0$" "$T/spec.gp" &&
