@@ -298,6 +298,8 @@ void hx_error(const char *cmd, const char *fmt, ...)
     fputc('\n', stderr);
 }
 
+const char *hx_cmd_name = "harness";
+
 void hx_warn(const char *cmd, const char *fmt, ...)
 {
     va_list ap;

@@ -87,6 +87,9 @@ void hx_error(const char *cmd, const char *fmt, ...)
 #endif
     ;
 /** "harness CMD: warning: ..." on stderr. */
+/** The running command's name, for messages of shared code that is not
+ *  given one (set by main.c; "harness" before). */
+extern const char *hx_cmd_name;
 void hx_warn(const char *cmd, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
