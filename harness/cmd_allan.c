@@ -1580,7 +1580,9 @@ static int write_plot(const run_t *R, const char *path)
                     npb > 0 ? ", unresolved" : "");
         }
         if (npb > 0) {
-            fprintf(p.gp, ", $pb using 1:2 with lines lw 2 lc rgb '#e08000' title 'profile: GM bound (analytic)'");
+            /* a series has no profile: the table's line says "bound" */
+            fprintf(p.gp, ", $pb using 1:2 with lines lw 2 lc rgb '#e08000' title '%sGM bound (analytic)'",
+                    R->is_series ? "" : "profile: ");
         }
         fprintf(p.gp, "\n");
     }

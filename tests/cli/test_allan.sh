@@ -451,6 +451,19 @@ nb=$("$PY" -c 'import json, sys; print(sum(c["profile"].get("basis") == "bound" 
 [ "$nb" -gt 0 ] && [ "$(grep -c "title 'profile: GM bound (analytic)'" "$T/w10s.gp")" -eq "$nb" ] &&
     pass "the plot draws the bound of each of the $nb unresolved channels" ||
     fail "bound curves: $(grep -c 'Gauss-Markov bound' "$T/w10s.gp") drawn for $nb unresolved channels"
+# a series has no profile: its bound is drawn as the table's line calls it, "bound", not "profile: ..."
+"$PY" -c "
+import random
+r = random.Random(5)
+print('\\n'.join('%.6f' % r.gauss(0, 1) for _ in range(3000)))" >"$T/wser.txt"
+expect_exit 0 "a white series, --plot" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/wser.gp" "$H" allan --series "$T/wser.txt" \
+    --rate 100 --quiet --json "$T/wser.json" --plot "$T/wser.png"
+if json "$T/wser.json" "j['channels'][0]['profile'].get('basis') == 'bound'"; then
+    grep -q "title 'GM bound (analytic)'" "$T/wser.gp" && ! grep -q "title 'profile:" "$T/wser.gp" &&
+        pass "a series' bound is not called a profile on the plot" || fail "series bound: $(grep -o "title '[^']*'" "$T/wser.gp")"
+else
+    fail "the white series' AR(1) was resolved: no bound to draw"
+fi
 # (every channel is unresolved here: no fit may go unmarked; a channel with no fit at all draws none)
 [ "$nb" -eq 6 ] && grep -q "title 'corrected model (analytic, unresolved)'" "$T/w10s.gp" &&
     grep -q "title 'simulated, corrected id. (unresolved)'" "$T/w10s.gp" &&
