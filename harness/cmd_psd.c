@@ -532,7 +532,7 @@ static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], con
              * answer ran along the frame, where they could not be seen */
             fprintf(p.gp, "set offsets 0, 0, graph 0.05, graph 0.05\n");
         }
-        fprintf(p.gp, "set key top right\nplot ");
+        fprintf(p.gp, "set key outside right top\nplot "); /* beside the axes: inside, it sat on the lines (a user review, 2026-11-30) */
         for (d = 0; d < NDC; d++) {
             if (nd[d] > 0) {
                 fprintf(p.gp, "%s$t using 1:%d with linespoints lw 2 title 'dc %s'", n++ ? ", " : "", d + 2,

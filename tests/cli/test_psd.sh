@@ -131,15 +131,16 @@ expect_exit 0 "a chirp, --plot with a stand-in gnuplot" env PATH="$T/fakegp:$PAT
     "$H" psd "$T/chirp.csv" --plot "$T/chirpplots" --spec-nfft 16 --spec-axis ax
 # the sensitivity plot: 800 pixels wide, its title ran past the right edge on the shared data's paths, and the
 # lines at the lowest and highest answer ran along the frame (a user review, 2026-11-30): 900 wide as psd.png, a
-# margin above and below (the last script the stand-in kept is the sensitivity plot's)
+# margin above and below, and the key beside the axes, where no line runs through it (the last script the
+# stand-in kept is the sensitivity plot's)
 awk 'BEGIN { srand(3); print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 3000; k++) { t = k / 200.0
     printf "%.6f,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f\n", t, sin(2 * 3.141592653589793 * 5 * t) + 0.3 * (rand() - 0.5), 0.1 * (rand() - 0.5),
         -9.8 + 0.5 * (rand() - 0.5), 0.5 * sin(2 * 3.141592653589793 * 2 * t), 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5) } }' >"$T/sens.csv"
 expect_exit 0 "--sensitivity --plot with a stand-in gnuplot" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/sens.gp" \
     "$H" psd "$T/sens.csv" --plot "$T/sensplots" --sensitivity --round 1
 grep -q "^set title 'Lowest usable sampling frequency" "$T/sens.gp" && grep -q "size 900,500" "$T/sens.gp" &&
-    grep -q "^set offsets 0, 0, graph 0.05, graph 0.05$" "$T/sens.gp" &&
-    pass "sensitivity.png: 900 wide, a margin above and below its lines" ||
+    grep -q "^set offsets 0, 0, graph 0.05, graph 0.05$" "$T/sens.gp" && grep -q "^set key outside right top$" "$T/sens.gp" &&
+    pass "sensitivity.png: 900 wide, a margin above and below its lines, the key beside the axes" ||
     fail "sensitivity.png: $(grep -E 'size|offsets' "$T/sens.gp")"
 # the spectrogram's options without --plot were ignored, exit 0 (a user review, 2026-11-30)
 expect_exit 2 "--spec-axis without --plot" "$H" psd "$T/sens.csv" --spec-axis gx
