@@ -132,6 +132,7 @@ static int analyse(const hx_log_t *log, const setting_t *st, const fnav_bandwidt
     static fnav_welch_t w[6];
     size_t i;
     int c, g;
+    hx_progress_t pr;
     memset(r, 0, sizeof *r);
     *bad_i = -1;
     *bad_c = -1;
@@ -140,15 +141,24 @@ static int analyse(const hx_log_t *log, const setting_t *st, const fnav_bandwidt
             return -1;
         }
     }
+    /* a transform every nfft - overlap samples: with --overlap nfft - 1 a
+     * long log is minutes of work, which said nothing (a user review,
+     * 2026-11-30); silent under a second as every progress line */
+    hx_progress_start(&pr, "psd: Welch", (double)log->n);
     for (i = 0; i < log->n; i++) {
         for (c = 0; c < 6; c++) {
             if (fnav_welch_push(&w[c], (fnav_real_t)chan(log, i, c)) != FNAV_OK) {
                 *bad_i = (long)i;
                 *bad_c = c;
+                hx_progress_end(&pr);
                 return -1;
             }
         }
+        if ((i & 1023u) == 0u) {
+            hx_progress_update(&pr, (double)i);
+        }
     }
+    hx_progress_end(&pr);
     r->nbins = fnav_welch_bins(&w[0]);
     r->df = (double)st->wc.rate_hz / (double)st->wc.nfft;
     r->nseg = fnav_welch_segments(&w[0]);

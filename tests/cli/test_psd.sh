@@ -147,6 +147,12 @@ expect_exit 2 "--spec-axis without --plot" "$H" psd "$T/sens.csv" --spec-axis gx
 expect_err "--spec-axis sets the spectrogram of --plot DIR (spectrogram.png): give --plot DIR" "--spec-axis without --plot: named"
 expect_exit 2 "--spec-nfft without --plot" "$H" psd "$T/sens.csv" --spec-nfft 128
 expect_err "--spec-nfft sets the spectrogram of --plot DIR" "--spec-nfft without --plot: named"
+# the Welch work itself showed no progress: --nfft 4096 --overlap 4095 on a 1,000,000-sample static log is a
+# transform per sample, minutes without a word once "psd: reading" ended (a user review, 2026-11-30); 20,000
+# samples take about 3 s here: the progress lines (one per 10 % off a terminal) name the work
+awk 'BEGIN { srand(9); print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 20000; k++) printf "%.4f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", k / 100.0, rand() - 0.5, rand() - 0.5, -9.8 + rand() - 0.5, 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5) }' >"$T/long.csv"
+expect_exit 0 "--nfft 4096 --overlap 4095 on 20,000 samples" "$H" psd "$T/long.csv" --nfft 4096 --overlap 4095
+grep -q "^psd: Welch: *[0-9]* %" "$T/err" && pass "the Welch work shows progress" || fail "no Welch progress: $(head -c 300 "$T/err")"
 # the colour bar's label sat on its tick labels ("-10", "-20" under "PSD [dB re 1 (m/s^2)^2/Hz]" on the 820 Hz walk;
 # a user review, 2026-11-30): it is moved out past them
 grep -q "^set cblabel 'PSD \[dB re 1 (m/s^2)^2/Hz\]' offset 2.5,0$" "$T/spec.gp" &&
