@@ -59,7 +59,7 @@ static const hx_opt_t k_opts[] = {
     { "--conf", "P", "confidence of the intervals (default 0.682689 = erf(1/sqrt(2)), one sigma, Stable32's "
                      "0.683)", 0 },
     { "--name", "TEXT", "profile name (default: from the file name)", 0 },
-    { "--out", "FILE", "table of every channel and tau (CSV)", 0 },
+    { "--out", "FILE", "table of every channel and tau (CSV; '-': standard output, the text then on standard error)", 0 },
     { "--json", "FILE", "parameters, quality and tables (JSON)", 0 },
     { "--plot", "FILE", "Allan deviation plot (PNG): measured with confidence bars, simulated", 0 },
     { "--profile", "FILE", "write the corrected identification as a footnav profile", 0 },
@@ -1297,7 +1297,7 @@ static void csv_deviations(const run_t *R, const chan_t *ch, size_t k, FILE *f)
 
 static int write_csv(const run_t *R, const char *path)
 {
-    FILE *f = fopen(path, "w");
+    FILE *f = hx_out_open(path); /* "-": standard output (hx_json_stdout_claim) */
     int i;
     size_t k;
     char b[16][32], line[4096];
@@ -1342,8 +1342,8 @@ static int write_csv(const run_t *R, const char *path)
             csv_deviations(R, ch, k, f);
         }
     }
-    if (fclose(f) != 0) {
-        hx_error(CMD, "%s: write failed", path);
+    if (hx_out_close(f) != 0) {
+        hx_error(CMD, "%s: write failed", strcmp(path, "-") == 0 ? "standard output" : path);
         return -1;
     }
     return 0;
@@ -1516,6 +1516,10 @@ static int plot_block(FILE *gp, const char *name, const run_t *R, const chan_t *
 {
     size_t k;
     int np = 0;
+    hx_noise_model_t bound;
+    /* what 4: the Gauss-Markov bound a profile holds where the fit's AR(1)
+     * is not resolved (profile_model() 1) */
+    const int bound_ok = what == 4 && profile_model(R, ch, &bound) == 1;
     fprintf(gp, "$%s << EOD\n", name);
     for (k = 0; k < ch->nres; k++) {
         const fnav_allan_result_t *r = &ch->res[k];
@@ -1537,6 +1541,9 @@ static int plot_block(FILE *gp, const char *name, const run_t *R, const chan_t *
             np++;
         } else if (what == 3 && ch->id_ok && ch->id.fit_ok) {
             fprintf(gp, "%.6g %.6g\n", t, sqrt(hx_noise_model_avar(&ch->id.fit, R->rate_hz, (double)r->tau)));
+            np++;
+        } else if (what == 4 && bound_ok) {
+            fprintf(gp, "%.6g %.6g\n", t, sqrt(hx_noise_model_avar(&bound, R->rate_hz, (double)r->tau)));
             np++;
         }
     }
@@ -1561,6 +1568,12 @@ static int write_plot(const run_t *R, const char *path)
         const int nsp = plot_block(p.gp, "sp", R, ch, 1);
         const int nsf = plot_block(p.gp, "sf", R, ch, 2);
         const int naf = plot_block(p.gp, "af", R, ch, 3);
+        const int npb = plot_block(p.gp, "pb", R, ch, 4);
+        /* an unresolved fit is no model of the sensor: the legend says so,
+         * and the bound the profile holds instead is drawn (the plot drew
+         * such a fit as the corrected model and left the bound out; a user
+         * review, 2026-11-30) */
+        const char *unres = npb > 0 ? " (unresolved)" : "";
         fprintf(p.gp, "set title '%s'\n", hx_gp_str(q, sizeof q, ch->label));
         fprintf(p.gp, "set ylabel 'ADEV [%s]'\n", hx_gp_str(q, sizeof q, ch->unit));
         if (nm == 0) {
@@ -1579,10 +1592,17 @@ static int write_plot(const run_t *R, const char *path)
         }
         if (nsf > 0) {
             fprintf(p.gp, ", $sf using 1:2 with linespoints lw 1.5 pt 4 ps 0.5 lc rgb '#008000' title 'simulated, "
-                          "corrected id.'");
+                          "corrected id.%s'",
+                    unres);
         }
         if (naf > 0) {
-            fprintf(p.gp, ", $af using 1:2 with lines dt 2 lc rgb '#404040' title 'corrected model (analytic)'");
+            fprintf(p.gp, ", $af using 1:2 with lines dt 2 lc rgb '#404040' title 'corrected model (analytic%s)'",
+                    npb > 0 ? ", unresolved" : "");
+        }
+        if (npb > 0) {
+            /* a series has no profile: the table's line says "bound" */
+            fprintf(p.gp, ", $pb using 1:2 with lines lw 2 lc rgb '#e08000' title '%sGM bound (analytic)'",
+                    R->is_series ? "" : "profile: ");
         }
         fprintf(p.gp, "\n");
     }
@@ -1884,6 +1904,20 @@ static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m)
  * below 1 Hz the shortest tau is past the 1 s the white noise is read at,
  * and "too little data?" sent the user to the record's length (a user
  * review, 2026-11-29). */
+/* The samples the paper's white noise, the ADEV at 1 s, needs: twice the
+ * first grid tau at or above 1 s (a level-0 term needs 2 m + 1 phase
+ * values); 0 when the grid ends below 1 s. */
+static double one_s_needs(const run_t *R)
+{
+    size_t i;
+    for (i = 0; i < R->ngrid; i++) {
+        if ((double)R->grid[i] >= R->rate_hz) {
+            return 2.0 * (double)R->grid[i];
+        }
+    }
+    return 0.0;
+}
+
 static void no_identification(const run_t *R, const char *path, const chan_t *ch)
 {
     if (R->time_unit_warned) {
@@ -1892,6 +1926,15 @@ static void no_identification(const run_t *R, const char *path, const chan_t *ch
                       "at; convert the time column to seconds (or give --rate) and run allan again; profile not "
                       "written",
                  path, ch->name, R->rate_hz, 1.0 / R->rate_hz);
+    } else if (one_s_needs(R) > (double)R->n) {
+        /* "(too little data?)" left the user to guess how much is enough (a
+         * user review, 2026-11-30) */
+        const double m1 = one_s_needs(R) / 2.0;
+        hx_error(CMD, "%s: no identification for %s: the record, %.3g s (%lu samples), is too short: the white noise "
+                      "is read at tau = 1 s, whose Allan point (%.3g s, m = %.0f) needs %.0f samples (%.3g s); record "
+                      "%.3g s or more, far longer for the bias (docs/workflow.md); profile not written",
+                 path, ch->name, (double)R->n / R->rate_hz, (unsigned long)R->n, m1 / R->rate_hz, m1, 2.0 * m1,
+                 2.0 * m1 / R->rate_hz, 1.0 / R->tau_max_frac);
     } else {
         hx_error(CMD, "%s: no identification for %s (too little data?); profile not written", path, ch->name);
     }
@@ -2021,6 +2064,17 @@ static int write_profile(const run_t *R, const char *path, const char *name)
     if (have_k) {
         ADD3("accel_rrw_mps2_rts", kk, 0);
         ADD3("gyro_rrw_rps_rts", kk, 3);
+    }
+    if (nfallback > 0 && R->rate_hz > tau_max_samples(R) * (1.0 + 1e-9)) {
+        /* the bound's white noise, the ADEV at 1 s, lies beyond the tenth
+         * of the record the identification keeps to: a 5 s log wrote a
+         * profile from an Allan point of EDF 4, exit 0, without a word (a
+         * user review, 2026-11-30) */
+        hx_warn(CMD, "%s: the white noise of %d channel%s (the bound's, above) is the ADEV at 1 s, beyond the longest "
+                     "tau the identification keeps to, %.3g s (--max-tau-frac of the %.3g-s record): it rests on a "
+                     "few averages; record %.3g s or more, far longer for the bias (docs/workflow.md)",
+                path, nfallback, nfallback == 1 ? "" : "s", tau_max_samples(R) / R->rate_hz,
+                (double)R->n / R->rate_hz, 1.0 / R->tau_max_frac);
     }
     if (nfallback > 0) {
         /* 1 where the AR(1) part is the Allan-minimum bound, not a fit */
@@ -2187,6 +2241,22 @@ int hx_cmd_allan(int argc, char **argv)
         hx_error(CMD, "--phase and --column apply to --series only");
         free(R);
         return HX_EXIT_USAGE;
+    }
+    if (series != NULL) {
+        /* the log's options were ignored with a series without a word, exit
+         * 0 (`--series F --channels gx`; a user review, 2026-11-30), as
+         * --unit with a log was */
+        static const char *const log_only[] = { "--channels", "--from", "--input-rate", "--name", NULL };
+        int k;
+        for (k = 0; log_only[k] != NULL; k++) {
+            if (hx_arg(&a, log_only[k]) != NULL) {
+                hx_error(CMD, "%s applies to a log, not a --series (%s)", log_only[k],
+                         strcmp(log_only[k], "--name") == 0 ? "it names a profile, which a series does not give"
+                                                             : "one column of numbers at --rate HZ");
+                free(R);
+                return HX_EXIT_USAGE;
+            }
+        }
     }
     if (series == NULL && hx_arg(&a, "--unit") != NULL) {
         /* a log's channels are in m/s^2 and deg/s: the unit was ignored

@@ -32,7 +32,7 @@ static const hx_opt_t k_opts[] = {
     { "--sensitivity", NULL, "also tabulate the answer for segments of 64..1024 samples x every DC mode", 0 },
     { "--spec-nfft", "N", "spectrogram segment length (default 256)", 0 },
     { "--spec-axis", "CH", "spectrogram channel: ax..gz (default: the accelerometer axis along gravity)", 0 },
-    { "--out", "FILE", "PSD and CCDF of every axis (CSV)", 0 },
+    { "--out", "FILE", "PSD and CCDF of every axis (CSV; '-': standard output, the text then on standard error)", 0 },
     { "--json", "FILE", "settings, per-axis and overall answers, sensitivity (JSON)", 0 },
     { "--plot", "DIR", "psd.png (Fig. 3), ccdf.png (Fig. 4), spectrogram.png (Fig. 6), sensitivity.png", 0 },
     { NULL, NULL, NULL, 0 }
@@ -132,6 +132,7 @@ static int analyse(const hx_log_t *log, const setting_t *st, const fnav_bandwidt
     static fnav_welch_t w[6];
     size_t i;
     int c, g;
+    hx_progress_t pr;
     memset(r, 0, sizeof *r);
     *bad_i = -1;
     *bad_c = -1;
@@ -140,15 +141,24 @@ static int analyse(const hx_log_t *log, const setting_t *st, const fnav_bandwidt
             return -1;
         }
     }
+    /* a transform every nfft - overlap samples: with --overlap nfft - 1 a
+     * long log is minutes of work, which said nothing (a user review,
+     * 2026-11-30); silent under a second as every progress line */
+    hx_progress_start(&pr, "psd: Welch", (double)log->n);
     for (i = 0; i < log->n; i++) {
         for (c = 0; c < 6; c++) {
             if (fnav_welch_push(&w[c], (fnav_real_t)chan(log, i, c)) != FNAV_OK) {
                 *bad_i = (long)i;
                 *bad_c = c;
+                hx_progress_end(&pr);
                 return -1;
             }
         }
+        if ((i & 1023u) == 0u) {
+            hx_progress_update(&pr, (double)i);
+        }
     }
+    hx_progress_end(&pr);
     r->nbins = fnav_welch_bins(&w[0]);
     r->df = (double)st->wc.rate_hz / (double)st->wc.nfft;
     r->nseg = fnav_welch_segments(&w[0]);
@@ -230,7 +240,7 @@ static void print_result(const char *title, const result_t *r, const fnav_bandwi
 
 static int write_csv(const char *path, const result_t *r, const char *src)
 {
-    FILE *f = fopen(path, "w");
+    FILE *f = hx_out_open(path); /* "-": standard output (hx_json_stdout_claim) */
     uint32_t k;
     int c;
     char line[4096];
@@ -259,8 +269,8 @@ static int write_csv(const char *path, const result_t *r, const char *src)
         }
         fprintf(f, "\n");
     }
-    if (fclose(f) != 0) {
-        hx_error(CMD, "%s: write failed", path);
+    if (hx_out_close(f) != 0) {
+        hx_error(CMD, "%s: write failed", strcmp(path, "-") == 0 ? "standard output" : path);
         return -1;
     }
     return 0;
@@ -464,7 +474,7 @@ static int plot_spectrogram(const char *dir, const hx_log_t *log, int c, uint32_
     }
     fprintf(p.gp, "EOD\n");
     fprintf(p.gp, "set title 'Spectrogram of %s (Hann %u, 50 %% overlap; Fig. 6): %s'\n", k_ch[c], (unsigned)nfft, src);
-    fprintf(p.gp, "set xlabel 'time [s]'\nset ylabel 'frequency [Hz]'\nset cblabel 'PSD [dB re 1 %s^2/Hz]'\n",
+    fprintf(p.gp, "set xlabel 'time [s]'\nset ylabel 'frequency [Hz]'\nset cblabel 'PSD [dB re 1 %s^2/Hz]' offset 2.5,0\n",
             c < 3 ? "(m/s^2)" : "(rad/s)");
     /* stats first: with one column it reads the values as y and drops those
      * outside the y range, which is the frequency axis [0, f_s/2] (every dB
@@ -485,7 +495,9 @@ static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], con
     char path[HX_PLOT_PATH_SIZE];
     int d, k;
     snprintf(path, sizeof path, "%s/sensitivity.png", dir);
-    if (hx_plot_open(&p, CMD, path, 800, 500) != 0) {
+    /* 900 wide as psd.png and ccdf.png: at 800 the title ran past the
+     * right edge on the shared data's paths (a user review, 2026-11-30) */
+    if (hx_plot_open(&p, CMD, path, 900, 500) != 0) {
         return -1;
     }
     fprintf(p.gp, "$t << EOD\n");
@@ -526,8 +538,12 @@ static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], con
         }
         if (hi - lo <= 1e-9 * hi) {
             fprintf(p.gp, "set yrange [0:%.6g]\n", 2.0 * hi);
+        } else {
+            /* a margin above and below: the lines at the lowest and highest
+             * answer ran along the frame, where they could not be seen */
+            fprintf(p.gp, "set offsets 0, 0, graph 0.05, graph 0.05\n");
         }
-        fprintf(p.gp, "set key top right\nplot ");
+        fprintf(p.gp, "set key outside right top\nplot "); /* beside the axes: inside, it sat on the lines (a user review, 2026-11-30) */
         for (d = 0; d < NDC; d++) {
             if (nd[d] > 0) {
                 fprintf(p.gp, "%s$t using 1:%d with linespoints lw 2 title 'dc %s'", n++ ? ", " : "", d + 2,
@@ -615,6 +631,13 @@ int hx_cmd_psd(int argc, char **argv)
             return HX_EXIT_USAGE;
         }
     }
+    if (hx_arg(&a, "--plot") == NULL && (hx_arg(&a, "--spec-axis") != NULL || hx_arg(&a, "--spec-nfft") != NULL)) {
+        /* they shape spectrogram.png only: without --plot they were
+         * ignored, exit 0 (a user review, 2026-11-30) */
+        hx_error(CMD, "%s sets the spectrogram of --plot DIR (spectrogram.png): give --plot DIR",
+                 hx_arg(&a, "--spec-axis") != NULL ? "--spec-axis" : "--spec-nfft");
+        return HX_EXIT_USAGE;
+    }
     bc.threshold = (fnav_real_t)thr;
     bc.round_hz = (fnav_real_t)rnd;
 
@@ -638,12 +661,25 @@ int hx_cmd_psd(int argc, char **argv)
     /* too short first: one stamped sample has no rate either, and no
      * --input-rate gives it one (a stamped format ignores the option) */
     if (log.n < (size_t)nfft) {
+        /* what to do: the segment length that fits (a user review,
+         * 2026-11-30); --nfft's least is 8 */
+        char fix[96];
+        unsigned fit = 8u;
+        while ((size_t)fit * 2u <= log.n) {
+            fit *= 2u;
+        }
+        if (log.n >= 8u) {
+            snprintf(fix, sizeof fix, "give --nfft %u or less (a power of two)", fit);
+        } else {
+            snprintf(fix, sizeof fix, "a Welch segment needs at least 8 samples (--nfft 8)");
+        }
         if (rc > 0) {
             /* the input's error is the cause, not a missing option */
             hx_error(CMD, "%s (the %zu samples before it are fewer than one %u-sample segment)", log.error, log.n,
                      (unsigned)nfft);
         } else {
-            hx_error(CMD, "%s: %zu samples, fewer than one %u-sample segment", a.pos[0], log.n, (unsigned)nfft);
+            hx_error(CMD, "%s: %zu samples, fewer than one %u-sample segment; %s", a.pos[0], log.n, (unsigned)nfft,
+                     fix);
         }
         hx_log_free(&log);
         return HX_EXIT_DATA;

@@ -298,6 +298,8 @@ void hx_error(const char *cmd, const char *fmt, ...)
     fputc('\n', stderr);
 }
 
+const char *hx_cmd_name = "harness";
+
 void hx_warn(const char *cmd, const char *fmt, ...)
 {
     va_list ap;
@@ -575,9 +577,16 @@ int hx_json_stdout_claim(const char *cmd, int argc, char **argv)
         }
     }
     if (json == NULL || strcmp(json, "-") != 0) {
-        return 0;
+        /* allan's and psd's --out - is standard output as well, the CSV
+         * alone there and their text on standard error, as with --json -;
+         * it wrote a file named '-' (a user review, 2026-11-30). replay,
+         * live and eval send their own text aside for their --out -. */
+        if (other[0] == NULL || strcmp(other[0], "-") != 0 ||
+            (strcmp(cmd, "allan") != 0 && strcmp(cmd, "psd") != 0)) {
+            return 0;
+        }
     }
-    for (k = 0; k < 3; k++) {
+    for (k = 0; json != NULL && strcmp(json, "-") == 0 && k < 3; k++) {
         if (other[k] != NULL && strcmp(other[k], "-") == 0) {
             hx_error(cmd, "--json - and %s - cannot both write to standard output", k_other[k]);
             return -1;
@@ -587,7 +596,8 @@ int hx_json_stdout_claim(const char *cmd, int argc, char **argv)
     fd = dup(STDOUT_FILENO);
     hx_json_stdout = fd >= 0 ? fdopen(fd, "w") : NULL;
     if (hx_json_stdout == NULL || dup2(STDERR_FILENO, STDOUT_FILENO) < 0) {
-        hx_error(cmd, "--json -: cannot set up standard output (%s)", strerror(errno));
+        hx_error(cmd, "%s -: cannot set up standard output (%s)", json != NULL && strcmp(json, "-") == 0 ? "--json" : "--out",
+                 strerror(errno));
         return -1;
     }
     return 0;
@@ -660,6 +670,24 @@ static char *json_utf8(char *txt)
     }
     out[o] = '\0';
     return out;
+}
+
+FILE *hx_out_open(const char *path)
+{
+    if (strcmp(path, "-") == 0) {
+        if (hx_json_stdout == NULL) {
+            errno = EBADF;
+        }
+        return hx_json_stdout;
+    }
+    return fopen(path, "w");
+}
+
+int hx_out_close(FILE *f)
+{
+    const int failed = ferror(f);
+    const int r = f == hx_json_stdout ? fflush(f) : fclose(f);
+    return r != 0 || failed ? EOF : 0;
 }
 
 int hx_write_json(const char *path, const struct cJSON *root, char *err, size_t err_size)

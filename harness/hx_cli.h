@@ -87,6 +87,9 @@ void hx_error(const char *cmd, const char *fmt, ...)
 #endif
     ;
 /** "harness CMD: warning: ..." on stderr. */
+/** The running command's name, for messages of shared code that is not
+ *  given one (set by main.c; "harness" before). */
+extern const char *hx_cmd_name;
 void hx_warn(const char *cmd, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
@@ -190,16 +193,23 @@ int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, c
  *  written only after long work, or by a child process. */
 int hx_check_writable(const char *cmd, const char *path);
 
-/** Where `--json -` writes: the process's standard output, kept aside by
- *  hx_json_stdout_claim (main.c) before a command runs; NULL when no
- *  option asked for it. */
+/** Where `--json -` (and allan's and psd's `--out -`) writes: the
+ *  process's standard output, kept aside by hx_json_stdout_claim (main.c)
+ *  before a command runs; NULL when no option asked for it. */
 extern FILE *hx_json_stdout;
 /** When argv has `--json -` (or `--json=-`), standard output is kept for
  *  the JSON alone (hx_json_stdout) and what a command prints there goes to
  *  standard error instead, so that the JSON can be piped. 0, or -1 with the
  *  error printed when another option (`--out -`, `--csv -`, `--strides -`) wants standard
- *  output as well. */
+ *  output as well. `allan` and `psd` claim it the same way for `--out -`
+ *  alone (their CSV, written with hx_out_open). */
 int hx_json_stdout_claim(const char *cmd, int argc, char **argv);
+/** `path` opened for writing, or hx_json_stdout when it is "-" (claimed
+ *  by hx_json_stdout_claim); NULL on failure. Close with hx_out_close. */
+FILE *hx_out_open(const char *path);
+/** Closes what hx_out_open returned (standard output is only flushed);
+ *  0, or EOF on a write error. */
+int hx_out_close(FILE *f);
 struct cJSON;
 /** Write `root` as text (one trailing newline) to `path`, or to
  *  hx_json_stdout when `path` is "-". 0, or -1 with the reason in err. */

@@ -238,8 +238,47 @@ int hx_profile_write_extra(const char *path, const fnav_profile_t *p, const char
     return 0;
 }
 
+int hx_profile_implausible(const fnav_profile_t *p, char *msg, size_t n)
+{
+    const double pi = 3.14159265358979323846, g = 9.80665;
+    int i;
+    for (i = 0; i < 3; i++) {
+        const double wn = (double)p->gyro_noise_rps_rthz[i], an = (double)p->accel_noise_mps2_rthz[i];
+        const double wb = (double)p->gyro_bias_sigma_rps[i], ab = (double)p->accel_bias_sigma_mps2[i];
+        if (wn > pi / 180.0) {
+            snprintf(msg, n, "gyro_noise_rps_rthz %g is %.3g deg/s/sqrt(Hz), above any IMU's (1 deg/s/sqrt(Hz)): in "
+                             "deg/s/sqrt(Hz)? the key is in rad/s/sqrt(Hz) (x pi/180 = %.3g)",
+                     wn, wn * 180.0 / pi, wn * pi / 180.0);
+            return 1;
+        }
+        if (an > 0.01 * g) {
+            snprintf(msg, n, "accel_noise_mps2_rthz %g is %.3g mg/sqrt(Hz), above any IMU's (10 mg/sqrt(Hz)): in "
+                             "mg/sqrt(Hz)? the key is in m/s^2/sqrt(Hz) (x 0.00980665 = %.3g)",
+                     an, 1e3 * an / g, an * g / 1e3);
+            return 1;
+        }
+        if (wb > 10.0 * pi / 180.0) {
+            snprintf(msg, n, "gyro_bias_sigma_rps %g is %.3g deg/s, above any IMU's in-run bias (10 deg/s): in deg/s? "
+                             "the key is in rad/s (x pi/180 = %.3g)",
+                     wb, wb * 180.0 / pi, wb * pi / 180.0);
+            return 1;
+        }
+        if (ab > 0.1 * g) {
+            snprintf(msg, n, "accel_bias_sigma_mps2 %g is %.3g g, above any IMU's in-run bias (0.1 g): in mg? the key "
+                             "is in m/s^2 (x 0.00980665 = %.3g)",
+                     ab, ab / g, ab * g / 1e3);
+            return 1;
+        }
+    }
+    return 0;
+}
+
 int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size_t err_size)
 {
+    /* the file warned about last: a command that loads its profile once
+     * per run (montecarlo) says it once */
+    static char warned[512];
+    char msg[320];
     if (fnav_profile_by_name(p, name_or_path) == FNAV_OK) {
         return 0;
     }
@@ -248,7 +287,18 @@ int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size
                  name_or_path);
         return -1;
     }
-    return hx_profile_read(name_or_path, p, err, err_size);
+    if (hx_profile_read(name_or_path, p, err, err_size) != 0) {
+        return -1;
+    }
+    /* a file edited by hand in the wrong unit (a gyro noise in
+     * deg/s/sqrt(Hz)) was taken without a word: replay on the bundled walk
+     * ended 0.33 m from its start instead of 0.04 m (a user review,
+     * 2026-11-30). Valid, so a warning; the run goes on. */
+    if (hx_profile_implausible(p, msg, sizeof msg) && strcmp(warned, name_or_path) != 0) {
+        hx_warn(hx_cmd_name, "%s: %s", name_or_path, msg);
+        snprintf(warned, sizeof warned, "%s", name_or_path);
+    }
+    return 0;
 }
 
 int hx_profile_is_output(const char *cmd, const char *name_or_path, const hx_args_t *a, const char *const *outs)

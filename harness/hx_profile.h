@@ -24,7 +24,16 @@ int hx_profile_write(const char *path, const fnav_profile_t *p, const char *comm
 int hx_profile_write_extra(const char *path, const fnav_profile_t *p, const char *comment, const char *extra,
                            char *err, size_t err_size);
 
-/** A built-in name ("navchip", "mtx", "shimmer") or a file path. */
+/** 1 with @p msg filled (the key, its value, the unit it most likely is
+ *  in) when a value lies beyond any IMU's in its key's unit: a gyro noise
+ *  above 1 deg/s/sqrt(Hz), an accelerometer noise above 10 mg/sqrt(Hz), a
+ *  gyro bias sd above 10 deg/s, an accelerometer bias sd above 0.1 g
+ *  (docs/profile-format.md); else 0. */
+int hx_profile_implausible(const fnav_profile_t *p, char *msg, size_t n);
+
+/** A built-in name ("navchip", "mtx", "shimmer") or a file path; a file
+ *  with a value hx_profile_implausible() flags gets a warning (once per
+ *  file in a run), and is loaded. */
 int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size_t err_size);
 
 /** A profile given as a file is an input: 1 (with the error printed) when

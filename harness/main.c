@@ -106,6 +106,7 @@ int main(int argc, char **argv)
         usage(stderr);
         return HX_EXIT_USAGE;
     }
+    hx_cmd_name = c->name;
     if (hx_json_stdout_claim(c->name, argc - 2, argv + 2) != 0) {
         return HX_EXIT_USAGE;
     }

@@ -22,6 +22,13 @@ expect_exit 1 "series value beyond the input range" "$H" allan --series "$T/big.
 expect_err "big.txt:2: 1e+30 differs from the first value, 1, by more than" "the rejected value is named with its line"
 expect_exit 2 "--fractional with --phase" "$H" allan --series "$T/big.txt" --rate 1 --phase --fractional 1e7
 expect_exit 2 "--fractional of a log" "$H" allan vectors/walk.bin --fractional 1e7
+# the log's options with a series were ignored without a word, exit 0 (`--series F --channels gx` analysed the
+# series; a user review, 2026-11-30), as --unit with a log was until 2026-11-29
+printf "1\n2\n3\n4\n5\n6\n7\n8\n9\n10\n11\n12\n" > "$T/twelve.txt"
+for o in "--channels gx" "--from csv" "--input-rate 50" "--name foo"; do
+    expect_exit 2 "--series with $o" "$H" allan --series "$T/twelve.txt" --rate 1 --no-sim --quiet $o
+    expect_err "${o%% *} applies to a log, not a --series" "--series with $o: the option is named"
+done
 expect_exit 2 "bad --estimator" "$H" allan --series "$T/big.txt" --rate 1 --estimator fast
 expect_exit 2 "empty --channels" "$H" allan vectors/walk.bin --channels ,
 expect_err "--channels: an empty element in ','" "empty --channels explained"
@@ -62,6 +69,23 @@ expect_exit 3 "unwritable output" "$H" allan --series "$T/bad.txt" --rate 10 --n
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 10; i++) printf "%.2f,0.1,0.2,9.8,0.01,0.02,0.0%d\n", i / 100, i }' >"$T/tiny.csv"
 expect_exit 1 "too short for a profile" "$H" allan "$T/tiny.csv" --quiet --profile "$T/tiny.profile" --plot "$T/tiny.png"
 [ -s "$T/tiny.png" ] && [ ! -e "$T/tiny.profile" ] && pass "plot without profile" || fail "tiny outputs"
+# half a second of noise: "no identification for ax (too little data?)" left the user to guess how much is enough;
+# the error now names the record's length and the length the white noise, read at 1 s, needs (a user review,
+# 2026-11-30). 5 s gave a profile, exit 0, its white noise the ADEV at 1 s, a tau beyond the tenth of the record
+# the identification otherwise keeps to (--max-tau-frac), from a few averages (EDF 4.4 at 0.96 s): said now
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; s = 1; for (i = 0; i < 500; i++) { s = (s * 1103515245 + 12345) % 2147483648; r = s / 2147483648.0 - 0.5; printf "%.2f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f\n", i / 100, r / 50, -r / 40, -9.81 + r / 30, r / 1000, -r / 900, r / 800 } }' >"$T/five.csv"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; s = 7; for (i = 0; i < 1001; i++) { s = (s * 1103515245 + 12345) % 2147483648; r = s / 2147483648.0 - 0.5; printf "%.2f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f\n", i / 100, r / 50, -r / 40, -9.81 + r / 30, r / 1000, -r / 900, r / 800 } }' >"$T/ten.csv"
+head -n 52 "$T/five.csv" >"$T/half.csv"
+expect_exit 1 "0.5 s: too short for a profile" "$H" allan "$T/half.csv" --no-sim --quiet --profile "$T/half.profile"
+expect_err "half.profile: no identification for ax: the record, 0.51 s (51 samples), is too short: the white noise is read at tau = 1 s, whose Allan point (1.12 s, m = 112) needs 224 samples (2.24 s); record 10 s or more, far longer for the bias (docs/workflow.md); profile not written" \
+    "a too-short log: the error names the length it needs"
+[ ! -e "$T/half.profile" ] && pass "0.5 s: no profile" || fail "0.5 s: a profile was written"
+expect_exit 0 "5 s: a profile" "$H" allan "$T/five.csv" --no-sim --quiet --profile "$T/five.profile"
+expect_err "five.profile: the white noise of 6 channels (the bound's, above) is the ADEV at 1 s, beyond the longest tau the identification keeps to, 0.5 s (--max-tau-frac of the 5-s record): it rests on a few averages; record 10 s or more, far longer for the bias (docs/workflow.md)" \
+    "a 5 s log: the profile's white noise beyond the identified range is said"
+expect_exit 0 "10 s: a profile" "$H" allan "$T/ten.csv" --no-sim --quiet --profile "$T/ten.profile"
+grep -q "beyond the longest tau the identification keeps to" "$T/err" && fail "10 s: the short-record warning" ||
+    pass "10 s: 1 s within the identified range, no short-record warning"
 # a log too short for any Allan point (the shortest tau, 1 sample, beyond 10 % of 2 samples): until 2026-11-29
 # exit 0 with empty tables and every value n/a (exit 1 only with --profile; found by the ident review); now an
 # error naming the samples it needs, as a record of under 2 samples is, exit 1, no output written
@@ -430,6 +454,35 @@ expect_err "and the Gauss-Markov bound T = .*, whose Allan bump sits on the mini
     "the bound's warning says which way it bounds"
 expect_out "Gauss-Markov bound from the Allan minimum (T = t_BS / 1.89, sigma_bias = BS / 0.6174: the true T may be longer; docs/allan.md):" \
     "the table's note says which way the bound goes"
+# the plot drew an unresolved channel's fit as "simulated, corrected id." and "corrected model (analytic)", the
+# legend of a resolved one, and not the bound the profile holds instead (30 minutes of ADIS16405 log 1: gx's
+# fit, white 0.0039 deg/s/sqrt(Hz), drawn as the corrected model; a user review, 2026-11-30). Now such a fit is
+# marked in the legend and the bound is drawn, once per unresolved channel (the script through a stand-in gnuplot)
+fake_gnuplot "$T/fakegp"
+expect_exit 0 "10 s of white noise, --plot" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/w10s.gp" "$H" allan \
+    "$T/w10s.csv" --quiet --json "$T/w10g.json" --plot "$T/w10s.png"
+nb=$("$PY" -c 'import json, sys; print(sum(c["profile"].get("basis") == "bound" for c in json.load(open(sys.argv[1]))["channels"]))' "$T/w10g.json")
+[ "$nb" -gt 0 ] && [ "$(grep -c "title 'profile: GM bound (analytic)'" "$T/w10s.gp")" -eq "$nb" ] &&
+    pass "the plot draws the bound of each of the $nb unresolved channels" ||
+    fail "bound curves: $(grep -c 'Gauss-Markov bound' "$T/w10s.gp") drawn for $nb unresolved channels"
+# a series has no profile: its bound is drawn as the table's line calls it, "bound", not "profile: ..."
+"$PY" -c "
+import random
+r = random.Random(5)
+print('\\n'.join('%.6f' % r.gauss(0, 1) for _ in range(3000)))" >"$T/wser.txt"
+expect_exit 0 "a white series, --plot" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/wser.gp" "$H" allan --series "$T/wser.txt" \
+    --rate 100 --quiet --json "$T/wser.json" --plot "$T/wser.png"
+if json "$T/wser.json" "j['channels'][0]['profile'].get('basis') == 'bound'"; then
+    grep -q "title 'GM bound (analytic)'" "$T/wser.gp" && ! grep -q "title 'profile:" "$T/wser.gp" &&
+        pass "a series' bound is not called a profile on the plot" || fail "series bound: $(grep -o "title '[^']*'" "$T/wser.gp")"
+else
+    fail "the white series' AR(1) was resolved: no bound to draw"
+fi
+# (every channel is unresolved here: no fit may go unmarked; a channel with no fit at all draws none)
+[ "$nb" -eq 6 ] && grep -q "title 'corrected model (analytic, unresolved)'" "$T/w10s.gp" &&
+    grep -q "title 'simulated, corrected id. (unresolved)'" "$T/w10s.gp" &&
+    ! grep -q "title 'corrected model (analytic)'\|title 'simulated, corrected id.'" "$T/w10s.gp" &&
+    pass "the plot marks the unresolved fits" || fail "unresolved fits unmarked: $(grep -o "title '[^']*'" "$T/w10s.gp" | sort | uniq -c)"
 F30=$(data adis16405_static/adis16405_imu1_100Hz.csv.gz)
 if [ -n "$F30" ]; then
     "$H" convert "$F30" "$T/first30.csv" --end 1800 >/dev/null 2>&1 || fail "convert the first 30 minutes of log 1"

@@ -144,6 +144,24 @@ expect_exit 2 "replay --out F --out - --json -" "$H" replay vectors/walk.bin --q
 expect_err "cannot both write to standard output" "two outputs on standard output are still refused"
 expect_exit 2 "replay --out - --json=-" "$H" replay vectors/walk.bin --quiet --out=- --json=-
 
+# --- allan's and psd's `--out -` is standard output, as replay's, live's and
+# eval's: it wrote a file named '-' in the current directory, and the table
+# went to standard output, while `--out - --json -` was refused as two
+# outputs on standard output (a user review, 2026-11-30)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; s = 1; for (i = 0; i < 3000; i++) { s = (s * 1103515245 + 12345) % 2147483648; r = s / 2147483648.0 - 0.5; printf "%.2f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f\n", i / 100, r / 50, -r / 40, -9.81 + r / 30, r / 1000, -r / 900, r / 800 } }' >"$T/still.csv"
+for c in allan psd; do
+    rm -f ./-
+    opts=""
+    [ "$c" = allan ] && opts="--no-sim --quiet"
+    expect_exit 0 "$c --out -" "$H" $c "$T/still.csv" $opts --out -
+    [ ! -e ./- ] && pass "$c --out - writes no file named '-'" || { fail "$c --out - wrote a file named '-'"; rm -f ./-; }
+    expect_out_re "^(channel,unit,tau_s|freq_hz,psd_ax)," "$c --out -: the CSV's header on standard output"
+    grep -v '^#' "$T/out" | grep -v -q ',' && fail "$c --out -: text beside the CSV on standard output: $(grep -v '^#' "$T/out" | grep -v ',' | head -n 2)" ||
+        pass "$c --out -: the CSV alone on standard output"
+    expect_exit 2 "$c --out - --json -" "$H" $c "$T/still.csv" $opts --out - --json -
+    expect_err "cannot both write to standard output" "$c: two outputs on standard output refused"
+done
+
 # --- replay checks --from and --input-rate as every command that reads a log
 # (hx_check_input_opts): it took --from auto, which the others refuse, and
 # worded the error its own way

@@ -136,5 +136,23 @@ sys.exit(0 if ok and n > 0 else 1)
 PY
 then pass "1-minute log: each bound is T = t_BS / 1.89, sigma = BS / 0.617 (the AR(1) Allan peak by scipy)"
 else fail "1-minute log: the bound's T or sigma against the AR(1) Allan peak"; fi
+# a profile edited by hand in the wrong unit (the gyro noise in deg/s/sqrt(Hz), the accelerometer bias in mg) was
+# taken without a word: replay on the bundled walk ended 0.33 m from its start instead of 0.04 m, health all 0
+# (a user review, 2026-11-30). A value no IMU has in the key's unit is now a warning naming the key and the unit
+# it most likely is in; the run goes on (the value is valid); every command that loads a profile says it once
+cp docs/profiles/generic-mems.profile "$T/hand.profile"
+sed -i 's/^gyro_noise_rps_rthz = .*/gyro_noise_rps_rthz = 0.0396 0.0422 0.039/' "$T/hand.profile"
+expect_exit 0 "replay with a gyro noise in deg/s/sqrt(Hz)" "$H" replay vectors/walk.bin --quiet --profile "$T/hand.profile"
+expect_err "warning: $T/hand.profile: gyro_noise_rps_rthz 0.0396 is 2.27 deg/s/sqrt(Hz), above any IMU's (1 deg/s/sqrt(Hz)): in deg/s/sqrt(Hz)? the key is in rad/s/sqrt(Hz) (x pi/180 = 0.000691)" \
+    "a gyro noise in deg/s/sqrt(Hz): warned with the likely unit"
+[ "$(grep -c "above any IMU's" "$T/err")" -eq 1 ] && pass "one warning per profile" || fail "warnings: $(cat "$T/err")"
+cp docs/profiles/generic-mems.profile "$T/hand2.profile"
+sed -i 's/^accel_bias_sigma_mps2 = .*/accel_bias_sigma_mps2 = 5 5 8/' "$T/hand2.profile"
+expect_exit 0 "montecarlo with an accelerometer bias in mg" "$H" montecarlo --seeds 2 --duration 10 --quiet --profile "$T/hand2.profile"
+expect_err "warning: $T/hand2.profile: accel_bias_sigma_mps2 5 is 0.51 g, above any IMU's in-run bias (0.1 g): in mg? the key is in m/s^2 (x 0.00980665 = 0.049)" \
+    "an accelerometer bias in mg: warned with the likely unit"
+[ "$(grep -c "above any IMU's" "$T/err")" -eq 1 ] && pass "montecarlo: one warning for its profile" || fail "montecarlo warnings: $(grep -c "above any IMU's" "$T/err")"
+expect_exit 0 "replay with the generic profile file" "$H" replay vectors/walk.bin --quiet --profile docs/profiles/generic-mems.profile
+! grep -q "above any IMU's" "$T/err" && pass "a plausible profile: no warning" || fail "generic-mems.profile warned: $(cat "$T/err")"
 echo "profile chain: $fails failure(s)"
 [ "$fails" -eq 0 ]

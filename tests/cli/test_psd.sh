@@ -129,6 +129,34 @@ awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 200; k++) { 
 fake_gnuplot "$T/fakegp"
 expect_exit 0 "a chirp, --plot with a stand-in gnuplot" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/spec.gp" \
     "$H" psd "$T/chirp.csv" --plot "$T/chirpplots" --spec-nfft 16 --spec-axis ax
+# the sensitivity plot: 800 pixels wide, its title ran past the right edge on the shared data's paths, and the
+# lines at the lowest and highest answer ran along the frame (a user review, 2026-11-30): 900 wide as psd.png, a
+# margin above and below, and the key beside the axes, where no line runs through it (the last script the
+# stand-in kept is the sensitivity plot's)
+awk 'BEGIN { srand(3); print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 3000; k++) { t = k / 200.0
+    printf "%.6f,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f\n", t, sin(2 * 3.141592653589793 * 5 * t) + 0.3 * (rand() - 0.5), 0.1 * (rand() - 0.5),
+        -9.8 + 0.5 * (rand() - 0.5), 0.5 * sin(2 * 3.141592653589793 * 2 * t), 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5) } }' >"$T/sens.csv"
+expect_exit 0 "--sensitivity --plot with a stand-in gnuplot" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/sens.gp" \
+    "$H" psd "$T/sens.csv" --plot "$T/sensplots" --sensitivity --round 1
+grep -q "^set title 'Lowest usable sampling frequency" "$T/sens.gp" && grep -q "size 900,500" "$T/sens.gp" &&
+    grep -q "^set offsets 0, 0, graph 0.05, graph 0.05$" "$T/sens.gp" && grep -q "^set key outside right top$" "$T/sens.gp" &&
+    pass "sensitivity.png: 900 wide, a margin above and below its lines, the key beside the axes" ||
+    fail "sensitivity.png: $(grep -E 'size|offsets' "$T/sens.gp")"
+# the spectrogram's options without --plot were ignored, exit 0 (a user review, 2026-11-30)
+expect_exit 2 "--spec-axis without --plot" "$H" psd "$T/sens.csv" --spec-axis gx
+expect_err "--spec-axis sets the spectrogram of --plot DIR (spectrogram.png): give --plot DIR" "--spec-axis without --plot: named"
+expect_exit 2 "--spec-nfft without --plot" "$H" psd "$T/sens.csv" --spec-nfft 128
+expect_err "--spec-nfft sets the spectrogram of --plot DIR" "--spec-nfft without --plot: named"
+# the Welch work itself showed no progress: --nfft 4096 --overlap 4095 on a 1,000,000-sample static log is a
+# transform per sample, minutes without a word once "psd: reading" ended (a user review, 2026-11-30); 20,000
+# samples take about 3 s here: the progress lines (one per 10 % off a terminal) name the work
+awk 'BEGIN { srand(9); print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 20000; k++) printf "%.4f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", k / 100.0, rand() - 0.5, rand() - 0.5, -9.8 + rand() - 0.5, 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5) }' >"$T/long.csv"
+expect_exit 0 "--nfft 4096 --overlap 4095 on 20,000 samples" "$H" psd "$T/long.csv" --nfft 4096 --overlap 4095
+grep -q "^psd: Welch: *[0-9]* %" "$T/err" && pass "the Welch work shows progress" || fail "no Welch progress: $(head -c 300 "$T/err")"
+# the colour bar's label sat on its tick labels ("-10", "-20" under "PSD [dB re 1 (m/s^2)^2/Hz]" on the 820 Hz walk;
+# a user review, 2026-11-30): it is moved out past them
+grep -q "^set cblabel 'PSD \[dB re 1 (m/s^2)^2/Hz\]' offset 2.5,0$" "$T/spec.gp" &&
+    pass "the spectrogram's colour-bar label is offset from its tick labels" || fail "cblabel: $(grep cblabel "$T/spec.gp")"
 if "$PY" -c 'import scipy' 2>/dev/null; then
     if "$PY" - "$T/chirp.csv" "$T/spec.gp" >"$T/pyout" 2>&1 <<'PYEOF'
 import sys
@@ -262,6 +290,12 @@ expect_err "sample rate unknown: every time stamp is the same" "a bad line after
 head -2 "$T/same.csv" >"$T/one.csv"
 expect_exit 1 "one stamped sample" "$H" psd "$T/one.csv" --input-rate 100
 expect_err "1 samples, fewer than one 64-sample segment" "one sample: too short for a segment"
+expect_err "fewer than one 64-sample segment; a Welch segment needs at least 8 samples" "one sample: the least a segment needs"
+# 1001 samples with --nfft 4096: the error said what is missing, not what to do (a user review, 2026-11-30)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 1001; i++) printf "%.3f,%.4f,0,9.81,0,0,%.4f\n", i / 100, sin(i), cos(i) }' > "$T/k1.csv"
+expect_exit 1 "1001 samples, --nfft 4096" "$H" psd "$T/k1.csv" --nfft 4096
+expect_err "k1.csv: 1001 samples, fewer than one 4096-sample segment; give --nfft 512 or less (a power of two)" \
+    "a log shorter than a segment: the --nfft that fits is named"
 ! grep -q "give --input-rate" "$T/err" && pass "one stamped sample: no advice to give --input-rate" ||
     fail "one stamped sample: told to give --input-rate"
 # stamps printed to the millisecond at about 398 Hz (2 and 3 ms intervals): the rate from the stamps, not 333 or 500 Hz
