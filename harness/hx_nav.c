@@ -950,6 +950,14 @@ static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_
     return 0;
 }
 
+/* Every sample the navigator took at one time: no interval to integrate or
+ * to measure stillness over, so no alignment (the replay's error and the
+ * summary's alignment line both name it). */
+static int stamps_never_advance(const fnav_nav_stats_t *st)
+{
+    return st->samples > 1u && st->duplicates + 1u >= st->samples;
+}
+
 int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_rate, const fnav_nav_config_t *cfg,
                   double rate_hz, FILE *csv, hx_traj_t *traj, unsigned flags, char *err, size_t err_size)
 {
@@ -1168,7 +1176,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         rc = u != 0 ? u : rc;
     }
     if (rc == 0 && !nav.aligned) {
-        if (nav.stats.samples > 1u && nav.stats.duplicates + 1u >= nav.stats.samples) {
+        if (stamps_never_advance(&nav.stats)) {
             /* every sample at one time: no interval to integrate or to
              * measure stillness over (it said "no still period"; a review,
              * 2026-11-28) */
@@ -1597,6 +1605,10 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     if (!t->aligned) {
         if (t->input_complete == 0) {
             fprintf(f, "alignment         NOT ALIGNED (the run stopped before a still period long enough was found)\n");
+        } else if (stamps_never_advance(st)) {
+            /* it said "no still period long enough" under an error naming
+             * the stamps (review of 2026-11-30) */
+            fprintf(f, "alignment         NOT ALIGNED (the time stamps never advance: the error above)\n");
         } else {
             fprintf(f, "alignment         NOT ALIGNED (no still period long enough: the error above says what was found)\n");
         }

@@ -587,6 +587,11 @@ if [ "$(cat "$T/keep.csv")" = "earlier" ]; then pass "a bad header leaves an ear
 awk -F, 'NR == 1 { print; next } { $1 = 0; print }' OFS=, "$T/walk_full.csv" > "$T/t0.csv"
 expect_exit 1 "time stamps that never advance" "$H" replay "$T/t0.csv" --quiet
 expect_err "the time stamps never advance" "a constant time column named"
+# ... and the summary's alignment line agrees with that error: it said "NOT
+# ALIGNED (no still period long enough: the error above says what was found)"
+# under an error that names the time stamps (review of 2026-11-30)
+expect_exit 1 "time stamps that never advance, with the summary" "$H" replay "$T/t0.csv"
+expect_out_re "^alignment +NOT ALIGNED \(the time stamps never advance: the error above\)$" "never advancing stamps: the alignment line names them"
 printf 't,ax,ay,az,gx,gy,gz\n0.0,0,0,-9.8,0,0,0\n' > "$T/tiny.csv"
 expect_exit 1 "too short to align" "$H" replay "$T/tiny.csv"
 expect_err "no still period" "alignment failure explained"
