@@ -2187,8 +2187,14 @@ int hx_cmd_allan(int argc, char **argv)
     }
     {
         static const char *const outs[] = { "--out", "--json", "--plot", "--profile", NULL };
+        static const char *const files[] = { "--out", "--json", "--profile", NULL }, *const pngs[] = { "--plot", NULL };
         if (hx_output_is_input(CMD, series != NULL ? series : a.pos[0], &a, outs)) {
             return HX_EXIT_USAGE;
+        }
+        /* written after the whole record: checked now (they were found
+         * unwritable at the end, after minutes on a long log; 2026-11-30) */
+        if (hx_check_outputs(CMD, &a, files, pngs) != 0) {
+            return HX_EXIT_IO;
         }
     }
     if (hx_arg(&a, "--name") != NULL && !name_printable(hx_arg(&a, "--name"))) {

@@ -643,8 +643,27 @@ int hx_cmd_psd(int argc, char **argv)
 
     {
         static const char *const outs[] = { "--out", "--json", "--plot", NULL };
+        static const char *const files[] = { "--out", "--json", NULL };
+        const char *dir = hx_arg(&a, "--plot");
+        struct stat sb;
+        char png[HX_PLOT_PATH_SIZE];
         if (hx_output_is_input(CMD, a.pos[0], &a, outs)) {
             return HX_EXIT_USAGE;
+        }
+        /* written after the Welch work: checked now, the plots' directory
+         * made (they were found unwritable at the end; 2026-11-30) */
+        if (hx_check_outputs(CMD, &a, files, NULL) != 0) {
+            return HX_EXIT_IO;
+        }
+        if (dir != NULL) {
+            if (stat(dir, &sb) != 0 && mkdir(dir, 0777) != 0) {
+                hx_error(CMD, "%s: cannot create directory (%s)", dir, strerror(errno));
+                return HX_EXIT_IO;
+            }
+            snprintf(png, sizeof png, "%s/psd.png", dir);
+            if (hx_plot_check(CMD, png) != 0) {
+                return HX_EXIT_IO;
+            }
         }
     }
     rc = hx_load_input(CMD, &a, a.pos[0], &log);

@@ -106,10 +106,11 @@ int hx_cmd_replay(int argc, char **argv)
     }
     /* the JSON and the PNG are written after the whole log: find out now
      * that they can be (it ran the log first; the JSON review, 2026-11-30) */
-    if ((json_path != NULL && strcmp(json_path, "-") != 0 && hx_check_writable("replay", json_path) != 0) ||
-        (strides_path != NULL && strcmp(strides_path, "-") != 0 && hx_check_writable("replay", strides_path) != 0) ||
-        (plot_path != NULL && hx_plot_check("replay", plot_path) != 0)) {
-        return HX_EXIT_IO;
+    {
+        static const char *const files[] = { "--json", "--strides", NULL }, *const pngs[] = { "--plot", NULL };
+        if (hx_check_outputs("replay", &a, files, pngs) != 0) {
+            return HX_EXIT_IO;
+        }
     }
     if (out_path != NULL) {
         csv = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");

@@ -735,6 +735,22 @@ int hx_check_writable(const char *cmd, const char *path)
     return 0;
 }
 
+int hx_check_outputs(const char *cmd, const hx_args_t *a, const char *const *files, const char *const *pngs)
+{
+    const char *v;
+    for (; files != NULL && *files != NULL; files++) {
+        if ((v = hx_arg(a, *files)) != NULL && strcmp(v, "-") != 0 && hx_check_writable(cmd, v) != 0) {
+            return -1;
+        }
+    }
+    for (; pngs != NULL && *pngs != NULL; pngs++) {
+        if ((v = hx_arg(a, *pngs)) != NULL && hx_plot_check(cmd, v) != 0) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
 /* ------------------------------------------------------------ plots */
 
 const char *hx_gp_str(char *buf, size_t size, const char *s)

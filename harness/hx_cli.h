@@ -192,6 +192,12 @@ int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, c
  *  it is, none is left behind); -1 with the error printed. For outputs
  *  written only after long work, or by a child process. */
 int hx_check_writable(const char *cmd, const char *path);
+/** hx_check_writable for each option of `files` (NULL-ended) given in `a`
+ *  with a file name ("-", standard output, is not checked), and
+ *  hx_plot_check for each of `pngs`: the outputs a command writes after its
+ *  work, checked before it. 0, or -1 with the error printed (exit
+ *  HX_EXIT_IO). */
+int hx_check_outputs(const char *cmd, const hx_args_t *a, const char *const *files, const char *const *pngs);
 
 /** Where `--json -` (and allan's and psd's `--out -`) writes: the
  *  process's standard output, kept aside by hx_json_stdout_claim (main.c)

@@ -64,6 +64,12 @@ expect_exit 0 "a whole series, --json" "$H" allan --series "$T/good.txt" --rate 
 json "$T/good.json" 'j["complete"] is True and "error" not in j' && pass "--json of a whole series: complete true, no error" ||
     fail "whole series --json: $(head -c 200 "$T/good.json")"
 expect_exit 3 "unwritable output" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --quiet --out /nonexistent/dir/t.csv
+# every output is checked before the log is read: an unwritable one is exit 3 with no table printed (they were
+# found at the end, after minutes of work on a long log; 2026-11-30)
+for o in --out --json --plot --profile; do
+    expect_exit 3 "unwritable $o, before the work" "$H" allan vectors/walk.bin --no-sim $o /nonexistent/dir/t.x
+    if [ ! -s "$T/out" ]; then pass "unwritable $o: nothing computed first"; else fail "unwritable $o: the tables were printed first"; fi
+done
 
 # a log too short for an identification: tables and plot still written, no profile, exit 1
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 10; i++) printf "%.2f,0.1,0.2,9.8,0.01,0.02,0.0%d\n", i / 100, i }' >"$T/tiny.csv"

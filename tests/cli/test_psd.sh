@@ -46,6 +46,12 @@ expect_exit 0 "tone, --dc linear" "$H" psd "$T/tone.csv" --dc linear
 grep -q "is recommended" "$T/out" && fail "--dc linear: the pointer is for the paper's setting only" ||
     pass "--dc linear: no pointer"
 expect_exit 3 "unwritable output" "$H" psd "$T/tone.csv" --out /nonexistent/dir/p.csv
+# every output is checked before the Welch work: an unwritable one is exit 3 with nothing printed (found at the
+# end, after the work; 2026-11-30)
+for o in "--out /nonexistent/dir/p.csv" "--json /nonexistent/dir/p.json" "--plot /nonexistent/dir/pd"; do
+    expect_exit 3 "unwritable ${o%% *}, before the work" "$H" psd "$T/tone.csv" $o
+    if [ ! -s "$T/out" ]; then pass "unwritable ${o%% *}: nothing computed first"; else fail "unwritable ${o%% *}: the tables were printed first"; fi
+done
 # --round 0: the answer is 2 x bandwidth itself; the output said "rounded up to a multiple of 0 Hz" and "multiples of
 # 0 Hz", and printed the answer to the hertz
 expect_exit 0 "tone, --round 0" "$H" psd "$T/tone.csv" --round 0 --json "$T/r0.json"
