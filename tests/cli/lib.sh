@@ -21,6 +21,11 @@ expect_out_re() { # extended-regex description: checks $T/out (anchor with ^ and
 json() { # json FILE PYTHON-EXPRESSION-ON-j: passes when it is true (uses $PY, /usr/bin/python3 if unset)
     "${PY:-/usr/bin/python3}" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if eval(sys.argv[2]) else 1)' "$1" "$2" 2>"$T/pyerr"
 }
+csv_rect() { # csv_rect FILE FIRST: passes when FILE, past its '#' lines, is a header starting FIRST and >= 2 rows each as wide
+    "${PY:-/usr/bin/python3}" -c 'import csv, sys
+rows = list(csv.reader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+sys.exit(0 if len(rows) > 2 and rows[0][0] == sys.argv[2] and all(len(r) == len(rows[0]) for r in rows) else 1)' "$1" "$2" 2>"$T/pyerr"
+}
 fake_gnuplot() { # DIR: a stand-in gnuplot there that keeps its script in $GP_SCRIPT and creates the output file
     mkdir -p "$1"
     cat >"$1/gnuplot" <<'GP'

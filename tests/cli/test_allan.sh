@@ -943,9 +943,7 @@ NL=$(printf 'new\nline.bin')
 cp vectors/walk.bin "$T/$NL"
 c=allan; first=channel
 "$H" $c "$T/$NL" --no-sim --quiet --out "$T/nl_$c.csv" >/dev/null 2>&1
-if "${PY:-/usr/bin/python3}" -c 'import csv, sys
-rows = list(csv.reader(l for l in open(sys.argv[1]) if not l.startswith("#")))
-sys.exit(0 if len(rows) > 2 and rows[0][0] == sys.argv[2] and all(len(r) == len(rows[0]) for r in rows) else 1)' "$T/nl_$c.csv" "$first" 2>"$T/pyerr"; then
+if csv_rect "$T/nl_$c.csv" "$first"; then
     pass "$c --out of a log whose name holds a line break: one comment line, every row as wide as the header"
 else fail "$c --out with a line break in the log's name: $(head -c 200 "$T/nl_$c.csv")"; fi
 rm -f "$T/$NL"
