@@ -133,6 +133,7 @@ typedef struct {
     double conf;
     const char *source;
     char sensor[64];
+    char sensor_text[80]; /* the text header's: the sensor, or "FORMAT log" when the log names none */
     int is_series;
     int exact;               /* --estimator exact */
     double f0;               /* --fractional: nominal value, 0 if not given */
@@ -625,6 +626,13 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         return -1;
     }
     snprintf(R->sensor, sizeof R->sensor, "%s", hx_reader_meta(r)->sensor);
+    /* a log whose format names no sensor (a CSV's "unknown"): the header
+     * names the format, as info does ("(unknown)" before) */
+    if (R->sensor[0] == '\0' || strcmp(R->sensor, "unknown") == 0) {
+        snprintf(R->sensor_text, sizeof R->sensor_text, "%s log", hx_format_name(hx_reader_meta(r)->format));
+    } else {
+        snprintf(R->sensor_text, sizeof R->sensor_text, "%s", R->sensor);
+    }
     R->rate_hz = rate_opt > 0.0 ? rate_opt : hx_reader_meta(r)->rate_hz;
     stamp_rate = hx_reader_meta(r)->rate_hz;
     hx_progress_start(&pr, "allan: reading", 1.0);
@@ -936,6 +944,19 @@ static void deviation_tables(const run_t *R, chan_t *ch)
     }
 }
 
+/* A time in seconds for the text output: 3 significant digits, but a
+ * whole number from 1000 s on ("1200 s", where %.3g printed "1.2e+03 s"
+ * on a long record; a sensor-characterisation review, 2026-11-30). */
+static const char *fmt_s(char *b, size_t n, double v)
+{
+    if (isfinite(v) && fabs(v) >= 999.5 && fabs(v) < 1e15) {
+        snprintf(b, n, "%.0f", v);
+    } else {
+        snprintf(b, n, "%.3g", v);
+    }
+    return b;
+}
+
 static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
 {
     size_t i;
@@ -1033,11 +1054,13 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
             }
         }
         if (first < last && (ch->id.paper.i_min == last || ch->id.paper.i_min == first)) {
-            hx_warn(CMD, "%s: %s: the Allan deviation has no minimum within tau <= %.3g s (it %s): the paper's BS and "
-                         "tau (III.C) are read at the %s tau, %.3g s, not at a bias stability",
-                     R->source, ch->name, tau_max_samples(R) / R->rate_hz,
+            char b1[32], b2[32];
+            hx_warn(CMD, "%s: %s: the Allan deviation has no minimum within tau <= %s s (it %s): the paper's BS and "
+                         "tau (III.C) are read at the %s tau, %s s, not at a bias stability",
+                     R->source, ch->name, fmt_s(b1, sizeof b1, tau_max_samples(R) / R->rate_hz),
                      ch->id.paper.i_min == last ? "still falls at the end" : "rises from the first tau on",
-                     ch->id.paper.i_min == last ? "longest" : "shortest", (double)ch->id.paper.t_bs_s);
+                     ch->id.paper.i_min == last ? "longest" : "shortest",
+                     fmt_s(b2, sizeof b2, (double)ch->id.paper.t_bs_s));
         }
     }
 }
@@ -1105,6 +1128,8 @@ static int in_range(const run_t *R, const fnav_allan_result_t *r)
 static void print_regions(const run_t *R, const chan_t *ch)
 {
     size_t i = 0;
+    int nreg = 0;
+    char b1[32], b2[32];
     printf("  noise types:");
     while (i < ch->nres) {
         size_t j = i;
@@ -1116,11 +1141,13 @@ static void print_regions(const run_t *R, const chan_t *ch)
                ch->periodic[j + 1] == ch->periodic[i]) {
             j++;
         }
-        printf(" %s %.3g-%.3g s;", noise_name(ch, i), (double)ch->res[i].tau / R->rate_hz,
-               (double)ch->res[j].tau / R->rate_hz);
+        /* "; " between the ranges, none after the last (it ended the line) */
+        printf("%s %s %s-%s s", nreg++ > 0 ? ";" : "", noise_name(ch, i),
+               fmt_s(b1, sizeof b1, (double)ch->res[i].tau / R->rate_hz),
+               fmt_s(b2, sizeof b2, (double)ch->res[j].tau / R->rate_hz));
         i = j + 1;
     }
-    printf("\n");
+    printf("%s\n", nreg == 0 ? " none" : "");
 }
 
 /* --deviation: one table per deviation at the octave tau, laid out as
@@ -1193,11 +1220,12 @@ static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m);
 
 static void print_params(const run_t *R)
 {
-    int i, nbound = 0;
+    int i, nbound = 0, nother = 0;
+    char b1[32];
     printf("\nBias model, units of the paper's Tables IV-VI (sigma_v in unit/sqrt(Hz), tau in samples at %g Hz,\n"
-           "sigma_bias in unit; quality: RMS of log10 ADEV model/measured over tau <= %.3g s, and model/measured\n"
+           "sigma_bias in unit; quality: RMS of log10 ADEV model/measured over tau <= %s s, and model/measured\n"
            "at the measured minimum):\n",
-           R->rate_hz, tau_max_samples(R) / R->rate_hz);
+           R->rate_hz, fmt_s(b1, sizeof b1, tau_max_samples(R) / R->rate_hz));
     /* tau is in samples, as in the paper's tables, and the column says so:
      * right after tables whose tau_s is in seconds, "tau 1" read as 1 s
      * (a user review, 2026-11-29) */
@@ -1259,8 +1287,17 @@ static void print_params(const run_t *R)
                    "0.6174: the true T may be longer; docs/allan.md):\n",
                    R->is_series ? "A log's --profile would hold" : "--profile holds");
         }
-        printf("%-6s %-6s | %s: sigma_v %.3g, tau %.0f samples (%.3g s), sigma_bias %.3g\n", ch->label, ch->unit,
-               R->is_series ? "bound" : "profile", m.white, m.gm_tau_s * R->rate_hz, m.gm_tau_s, m.gm_sigma);
+        printf("%-6s %-6s | %s: sigma_v %.3g, tau %.0f samples (%s s), sigma_bias %.3g\n", ch->label, ch->unit,
+               R->is_series ? "bound" : "profile", m.white, m.gm_tau_s * R->rate_hz, fmt_s(b1, sizeof b1, m.gm_tau_s),
+               m.gm_sigma);
+    }
+    for (i = 0; i < R->nch; i++) {
+        nother += R->ch[i].id_ok && R->ch[i].id.paper_ok;
+    }
+    if (nother == 0) {
+        /* the header and no row, on a record too short or a constant series */
+        printf("\nOther readings of the paper's parameters: none (no channel has the paper's reading, above)\n");
+        return;
     }
     printf("\nOther readings of the paper's parameters (RMS log10 ADEV model/measured; model/measured at the minimum):\n"
            "  drive:  sigma_bias taken as the std of the driving noise n_k (the Fig. 7 text), stationary std\n"
@@ -2312,6 +2349,7 @@ int hx_cmd_allan(int argc, char **argv)
         R->rate_hz = rate_opt;
         path = series;
         snprintf(R->sensor, sizeof R->sensor, "series");
+        snprintf(R->sensor_text, sizeof R->sensor_text, "series");
     } else {
         path = a.pos[0];
         if (parse_channels(R, hx_arg(&a, "--channels")) != 0) {
@@ -2415,7 +2453,7 @@ int hx_cmd_allan(int argc, char **argv)
     }
 
     if (!hx_flag(&a, "--quiet")) {
-        printf("harness allan: %s (%s), %lu samples at %g Hz, %d tau points, ", R->source, R->sensor,
+        printf("harness allan: %s (%s), %lu samples at %g Hz, %d tau points, ", R->source, R->sensor_text,
                (unsigned long)R->n, R->rate_hz, (int)R->ngrid);
         if (R->exact) {
             printf("exact estimator (the whole record in double, fully overlapping at every tau)\n");

@@ -952,5 +952,35 @@ rm -f "$T/$NL"
 expect_exit 2 "--unit with a comma" "$H" allan --series "$T/good.txt" --rate 10 --unit "a,b" --no-sim --quiet --out "$T/ub.csv"
 expect_err "--unit must be" "the error says what --unit may hold"
 
+# --- the text output's cosmetics (a sensor-characterisation review, 2026-11-30): a long record's tau
+# in plain seconds ("tau <= 1e+03 s" before), the noise-types line without a stray ';', a CSV log's
+# header naming its format (it said "(unknown)"), and no empty "Other readings" table
+awk 'BEGIN { s = 1; for (i = 0; i < 12000; i++) { s = (s * 1103515245 + 12345) % 2147483648; print s / 2147483648.0 } }' \
+    >"$T/w12k.txt"
+expect_exit 0 "a 12,000-s white series" "$H" allan --series "$T/w12k.txt" --rate 1 --no-sim
+expect_out "tau <= 1200 s" "a tau over 1000 s in plain seconds"
+if grep -E 'tau <=|noise types' "$T/out" | grep -q 'e+0'; then fail "a tau in e-notation: $(grep -E 'e\+0' "$T/out" | head -2)"
+else pass "no tau in e-notation"; fi
+expect_out_re "^  noise types: .*[0-9] s$" "the noise-types line ends with its last range"
+if grep -q '^  noise types:.*;$' "$T/out"; then fail "the noise-types line ends with ';'"; else pass "no stray ';'"; fi
+printf 't,ax,ay,az,gx,gy,gz\n' >"$T/csvlog.csv"
+awk 'BEGIN { srand(5); for (i = 0; i < 200; i++) printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 100,
+     0.05 * (rand() - 0.5), 0.05 * (rand() - 0.5), 9.81 + 0.05 * (rand() - 0.5), 0.007 * (rand() - 0.5),
+     0.007 * (rand() - 0.5), 0.007 * (rand() - 0.5) }' >>"$T/csvlog.csv"
+expect_exit 0 "a 2-s CSV log" "$H" allan "$T/csvlog.csv" --no-sim --channels gx
+expect_out "csvlog.csv (csv log)" "a CSV log's header names its format"
+if grep -q '(unknown)' "$T/out"; then fail "the header says (unknown)"; else pass "no (unknown) in the header"; fi
+# 2 s is too short for the paper's reading (its tau <= 0.2 s does not reach 1 s): no row, so no table, one line why
+if grep -q '^chan   |    drive rms' "$T/out"; then fail "an empty Other readings table: $(tail -3 "$T/out")"
+else pass "no empty Other readings table on a short log"; fi
+expect_out "Other readings of the paper's parameters: none (no channel has the paper's reading" \
+    "a short log: one line says why there are no other readings"
+awk 'BEGIN { for (i = 0; i < 3000; i++) print 5 }' >"$T/const.txt"
+expect_exit 0 "a constant series" "$H" allan --series "$T/const.txt" --rate 10 --no-sim
+if grep -q '^chan   |    drive rms' "$T/out"; then fail "an empty Other readings table on a constant series"
+else pass "no empty Other readings table on a constant series"; fi
+expect_out "Other readings of the paper's parameters: none" "a constant series: one line says why"
+expect_out_re "^  noise types: none$" "a constant series: the noise-types line says none"
+
 if [ "$fails" -ne 0 ]; then echo "test_allan.sh: $fails failure(s)"; exit 1; fi
 echo "test_allan.sh: all passed"
