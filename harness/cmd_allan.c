@@ -782,6 +782,9 @@ static int read_series(run_t *R, const char *path, int phase, long column)
     FILE *f = fopen(path, "r");
     char line[1024];
     long lineno = 0;
+    /* blank lines after the first number: pending until a number follows
+     * (those at the file's end stay silent), then counted in blanks */
+    long pending = 0, pending_first = 0, blanks = 0, blank_first = 0;
     int data_lines = 0, rc = 0, have_prev = 0, have_first = 0;
     double prev = 0.0, first = 0.0;
     if (f == NULL) {
@@ -804,7 +807,15 @@ static int read_series(run_t *R, const char *path, int phase, long column)
             p++;
         }
         if (*p == '\0' || *p == '\n' || *p == '\r' || *p == '#') {
+            if (*p != '#' && data_lines == 1 && pending++ == 0) {
+                pending_first = lineno;
+            }
             continue;
+        }
+        if (pending > 0) {
+            blank_first = blanks == 0 ? pending_first : blank_first;
+            blanks += pending;
+            pending = 0;
         }
         for (k = 1;; k++) {
             v = strtod(p, &end);
@@ -859,6 +870,14 @@ static int read_series(run_t *R, const char *path, int phase, long column)
         }
     }
     fclose(f);
+    if (blanks > 0) {
+        /* a blank line is no sample: if one stood for a missing value,
+         * every later value is one sample early (a sensor-characterisation
+         * review, 2026-11-30: they were skipped without a word) */
+        hx_warn(CMD, "%s: %ld blank line%s among the numbers (the first at line %ld) %s skipped, not read as "
+                     "samples: if one stands for a missing value, every later value is one sample early",
+                path, blanks, blanks == 1 ? "" : "s", blank_first, blanks == 1 ? "is" : "are");
+    }
     if (R->n == 0) {
         if (rc == 0) {
             hx_error(CMD, "%s: no numbers", path);

@@ -982,5 +982,21 @@ else pass "no empty Other readings table on a constant series"; fi
 expect_out "Other readings of the paper's parameters: none" "a constant series: one line says why"
 expect_out_re "^  noise types: none$" "a constant series: the noise-types line says none"
 
+# --- a blank line inside a series was skipped without a word: if it stood for a missing sample, every
+# later value is one sample early (a sensor-characterisation review, 2026-11-30). Now one warning with
+# the count and the first line; blank lines before the first number and after the last stay silent
+{ printf '\n\n'; head -n 100 "$T/w12k.txt"; printf '\n'; sed -n 101,200p "$T/w12k.txt"; printf ' \t\n';
+  sed -n 201,3000p "$T/w12k.txt"; printf '\n\n'; } >"$T/blanks.txt"
+expect_exit 0 "a series with blank lines inside" "$H" allan --series "$T/blanks.txt" --rate 1 --no-sim --quiet
+expect_err "blanks.txt: 2 blank lines among the numbers (the first at line 103) are skipped" \
+    "blank lines inside a series: counted, the first named"
+[ "$(grep -c 'blank line' "$T/err")" -eq 1 ] && pass "one warning for the blank lines" ||
+    fail "blank-line warnings: $(grep -c 'blank line' "$T/err")"
+{ printf '\n# a comment\n'; head -n 3000 "$T/w12k.txt"; printf '\n\n'; } >"$T/edges.txt"
+expect_exit 0 "a series with blank lines before and after its numbers" "$H" allan --series "$T/edges.txt" --rate 1 \
+    --no-sim --quiet
+if grep -q 'blank line' "$T/err"; then fail "blank lines at the ends warned: $(cat "$T/err")"
+else pass "blank lines before the first number and after the last: silent"; fi
+
 if [ "$fails" -ne 0 ]; then echo "test_allan.sh: $fails failure(s)"; exit 1; fi
 echo "test_allan.sh: all passed"
