@@ -2003,6 +2003,7 @@ static void no_identification(const run_t *R, const char *path, const chan_t *ch
 static void ar1_refusal(const run_t *R, const chan_t *ch, double tau_long_s, char *why, size_t n)
 {
     const double fit_s = tau_max_samples(R) / R->rate_hz, bump_s = 1.89 * ch->id.fit.gm_tau_s;
+    char b1[32], b2[32], b3[32];
     if (ar1_too_short(R, ch)) {
         snprintf(why, n, "the fit's AR(1) of %s has T = %.3g s (%.3g samples), under the floor of %.0f samples "
                          "(%.3g s), the taus where the sensor's own filtering shapes the Allan curve: not a bias the "
@@ -2011,13 +2012,14 @@ static void ar1_refusal(const run_t *R, const chan_t *ch, double tau_long_s, cha
                  ar1_floor_samples(), ar1_floor_samples() / R->rate_hz);
     } else if (!ch->id.fit_ok) {
         snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (no fit within the fitted "
-                         "range, tau <= %.3g s, --max-tau-frac)",
-                 ch->name, fit_s);
+                         "range, tau <= %s s, --max-tau-frac)",
+                 ch->name, fmt_s(b1, sizeof b1, fit_s));
     } else if (bump_s > tau_long_s) {
         snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (the fit's bump, 1.89 T = "
-                         "%.3g s, lies beyond the longest tau with data, %.3g s; the fit itself uses tau <= %.3g s, "
+                         "%s s, lies beyond the longest tau with data, %s s; the fit itself uses tau <= %s s, "
                          "--max-tau-frac)",
-                 ch->name, bump_s, tau_long_s, fit_s);
+                 ch->name, fmt_s(b1, sizeof b1, bump_s), fmt_s(b2, sizeof b2, tau_long_s),
+                 fmt_s(b3, sizeof b3, fit_s));
     } else if (bump_s * R->rate_hz < 1.0) {
         snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (the fit's T, %.3g s, is "
                          "under a sample)",
@@ -2025,8 +2027,8 @@ static void ar1_refusal(const run_t *R, const chan_t *ch, double tau_long_s, cha
     } else {
         snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (the fit's AR(1) part, or "
                          "its white part, rises above the rest of the model by no more than the measurement's "
-                         "spread at every tau <= %.3g s, the fitted range of --max-tau-frac)",
-                 ch->name, fit_s);
+                         "spread at every tau <= %s s, the fitted range of --max-tau-frac)",
+                 ch->name, fmt_s(b1, sizeof b1, fit_s));
     }
 }
 
@@ -2064,7 +2066,7 @@ static int write_profile(const run_t *R, const char *path, const char *name)
         }
         fallback[k] = bound;
         if (bound) {
-            char fitw[48] = "no fit", why[400];
+            char fitw[48] = "no fit", why[400], tb[32], mb[32];
             nfallback++;
             if (ch->id.fit_ok) {
                 snprintf(fitw, sizeof fitw, "not the fit's %.3g", ch->id.fit.white);
@@ -2074,11 +2076,11 @@ static int write_profile(const run_t *R, const char *path, const char *name)
              * 720 s read as an upper bound (a user review, 2026-11-29); it is
              * the AR(1) whose bump sits on the minimum, no bound on sigma */
             hx_warn(CMD, "%s: %s; the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV at 1 s; %s) and the "
-                         "Gauss-Markov bound T = %.3g s, sigma = %.3g %s, whose Allan bump sits on the minimum at "
-                         "%.3g s (T from the minimum's position: the true T may be longer; no upper bound on the "
+                         "Gauss-Markov bound T = %s s, sigma = %.3g %s, whose Allan bump sits on the minimum at "
+                         "%s s (T from the minimum's position: the true T may be longer; no upper bound on the "
                          "bias, docs/allan.md)",
-                    path, why, m.white, ch->unit, fitw, m.gm_tau_s, m.gm_sigma, ch->unit,
-                    (double)ch->id.paper.t_bs_s);
+                    path, why, m.white, ch->unit, fitw, fmt_s(tb, sizeof tb, m.gm_tau_s), m.gm_sigma, ch->unit,
+                    fmt_s(mb, sizeof mb, (double)ch->id.paper.t_bs_s));
         }
         if (k < 3) {
             p.accel_noise_mps2_rthz[k] = (fnav_real_t)(m.white * si);

@@ -963,6 +963,16 @@ if grep -E 'tau <=|noise types' "$T/out" | grep -q 'e+0'; then fail "a tau in e-
 else pass "no tau in e-notation"; fi
 expect_out_re "^  noise types: .*[0-9] s$" "the noise-types line ends with its last range"
 if grep -q '^  noise types:.*;$' "$T/out"; then fail "the noise-types line ends with ';'"; else pass "no stray ';'"; fi
+# the same in the profile's warnings on a 12,000-s log: "tau <= 1.2e+03 s", "longest tau with data, 5.12e+03 s"
+awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 24000; i++)
+     printf "%.1f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 2, 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5),
+            9.81 + 0.01 * (rand() - 0.5), 0.002 * (rand() - 0.5), 0.002 * (rand() - 0.5), 0.002 * (rand() - 0.5) }' \
+    >"$T/long2.csv"
+expect_exit 0 "a 12,000-s static log, --profile" "$H" allan "$T/long2.csv" --no-sim --quiet --profile "$T/long2.profile"
+expect_err "tau <= 1200 s" "the profile's warnings: the fitted range in plain seconds"
+if grep -E -q '(tau <=|data,|minimum at) [0-9.]+e\+0' "$T/err"; then
+    fail "a tau in e-notation in the warnings: $(grep -E -o '(tau <=|data,|minimum at) [0-9.]+e\+0[0-9]' "$T/err" | head -3)"
+else pass "no tau in e-notation in the profile's warnings"; fi
 printf 't,ax,ay,az,gx,gy,gz\n' >"$T/csvlog.csv"
 awk 'BEGIN { srand(5); for (i = 0; i < 200; i++) printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 100,
      0.05 * (rand() - 0.5), 0.05 * (rand() - 0.5), 9.81 + 0.05 * (rand() - 0.5), 0.007 * (rand() - 0.5),
