@@ -133,6 +133,7 @@ typedef struct {
     double conf;
     const char *source;
     char sensor[64];
+    char sensor_text[80]; /* the text header's: the sensor, or "FORMAT log" when the log names none */
     int is_series;
     int exact;               /* --estimator exact */
     double f0;               /* --fractional: nominal value, 0 if not given */
@@ -625,6 +626,13 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         return -1;
     }
     snprintf(R->sensor, sizeof R->sensor, "%s", hx_reader_meta(r)->sensor);
+    /* a log whose format names no sensor (a CSV's "unknown"): the header
+     * names the format, as info does ("(unknown)" before) */
+    if (R->sensor[0] == '\0' || strcmp(R->sensor, "unknown") == 0) {
+        snprintf(R->sensor_text, sizeof R->sensor_text, "%s log", hx_format_name(hx_reader_meta(r)->format));
+    } else {
+        snprintf(R->sensor_text, sizeof R->sensor_text, "%s", R->sensor);
+    }
     R->rate_hz = rate_opt > 0.0 ? rate_opt : hx_reader_meta(r)->rate_hz;
     stamp_rate = hx_reader_meta(r)->rate_hz;
     hx_progress_start(&pr, "allan: reading", 1.0);
@@ -774,6 +782,9 @@ static int read_series(run_t *R, const char *path, int phase, long column)
     FILE *f = fopen(path, "r");
     char line[1024];
     long lineno = 0;
+    /* blank lines after the first number: pending until a number follows
+     * (those at the file's end stay silent), then counted in blanks */
+    long pending = 0, pending_first = 0, blanks = 0, blank_first = 0;
     int data_lines = 0, rc = 0, have_prev = 0, have_first = 0;
     double prev = 0.0, first = 0.0;
     if (f == NULL) {
@@ -796,7 +807,15 @@ static int read_series(run_t *R, const char *path, int phase, long column)
             p++;
         }
         if (*p == '\0' || *p == '\n' || *p == '\r' || *p == '#') {
+            if (*p != '#' && data_lines == 1 && pending++ == 0) {
+                pending_first = lineno;
+            }
             continue;
+        }
+        if (pending > 0) {
+            blank_first = blanks == 0 ? pending_first : blank_first;
+            blanks += pending;
+            pending = 0;
         }
         for (k = 1;; k++) {
             v = strtod(p, &end);
@@ -851,6 +870,14 @@ static int read_series(run_t *R, const char *path, int phase, long column)
         }
     }
     fclose(f);
+    if (blanks > 0) {
+        /* a blank line is no sample: if one stood for a missing value,
+         * every later value is one sample early (a sensor-characterisation
+         * review, 2026-11-30: they were skipped without a word) */
+        hx_warn(CMD, "%s: %ld blank line%s among the numbers (the first at line %ld) %s skipped, not read as "
+                     "samples: if one stands for a missing value, every later value is one sample early",
+                path, blanks, blanks == 1 ? "" : "s", blank_first, blanks == 1 ? "is" : "are");
+    }
     if (R->n == 0) {
         if (rc == 0) {
             hx_error(CMD, "%s: no numbers", path);
@@ -934,6 +961,19 @@ static void deviation_tables(const run_t *R, chan_t *ch)
             }
         }
     }
+}
+
+/* A time in seconds for the text output: 3 significant digits, but a
+ * whole number from 1000 s on ("1200 s", where %.3g printed "1.2e+03 s"
+ * on a long record; a sensor-characterisation review, 2026-11-30). */
+static const char *fmt_s(char *b, size_t n, double v)
+{
+    if (isfinite(v) && fabs(v) >= 999.5 && fabs(v) < 1e15) {
+        snprintf(b, n, "%.0f", v);
+    } else {
+        snprintf(b, n, "%.3g", v);
+    }
+    return b;
 }
 
 static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
@@ -1033,11 +1073,13 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
             }
         }
         if (first < last && (ch->id.paper.i_min == last || ch->id.paper.i_min == first)) {
-            hx_warn(CMD, "%s: %s: the Allan deviation has no minimum within tau <= %.3g s (it %s): the paper's BS and "
-                         "tau (III.C) are read at the %s tau, %.3g s, not at a bias stability",
-                     R->source, ch->name, tau_max_samples(R) / R->rate_hz,
+            char b1[32], b2[32];
+            hx_warn(CMD, "%s: %s: the Allan deviation has no minimum within tau <= %s s (it %s): the paper's BS and "
+                         "tau (III.C) are read at the %s tau, %s s, not at a bias stability",
+                     R->source, ch->name, fmt_s(b1, sizeof b1, tau_max_samples(R) / R->rate_hz),
                      ch->id.paper.i_min == last ? "still falls at the end" : "rises from the first tau on",
-                     ch->id.paper.i_min == last ? "longest" : "shortest", (double)ch->id.paper.t_bs_s);
+                     ch->id.paper.i_min == last ? "longest" : "shortest",
+                     fmt_s(b2, sizeof b2, (double)ch->id.paper.t_bs_s));
         }
     }
 }
@@ -1105,6 +1147,8 @@ static int in_range(const run_t *R, const fnav_allan_result_t *r)
 static void print_regions(const run_t *R, const chan_t *ch)
 {
     size_t i = 0;
+    int nreg = 0;
+    char b1[32], b2[32];
     printf("  noise types:");
     while (i < ch->nres) {
         size_t j = i;
@@ -1116,11 +1160,13 @@ static void print_regions(const run_t *R, const chan_t *ch)
                ch->periodic[j + 1] == ch->periodic[i]) {
             j++;
         }
-        printf(" %s %.3g-%.3g s;", noise_name(ch, i), (double)ch->res[i].tau / R->rate_hz,
-               (double)ch->res[j].tau / R->rate_hz);
+        /* "; " between the ranges, none after the last (it ended the line) */
+        printf("%s %s %s-%s s", nreg++ > 0 ? ";" : "", noise_name(ch, i),
+               fmt_s(b1, sizeof b1, (double)ch->res[i].tau / R->rate_hz),
+               fmt_s(b2, sizeof b2, (double)ch->res[j].tau / R->rate_hz));
         i = j + 1;
     }
-    printf("\n");
+    printf("%s\n", nreg == 0 ? " none" : "");
 }
 
 /* --deviation: one table per deviation at the octave tau, laid out as
@@ -1193,11 +1239,12 @@ static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m);
 
 static void print_params(const run_t *R)
 {
-    int i, nbound = 0;
+    int i, nbound = 0, nother = 0;
+    char b1[32];
     printf("\nBias model, units of the paper's Tables IV-VI (sigma_v in unit/sqrt(Hz), tau in samples at %g Hz,\n"
-           "sigma_bias in unit; quality: RMS of log10 ADEV model/measured over tau <= %.3g s, and model/measured\n"
+           "sigma_bias in unit; quality: RMS of log10 ADEV model/measured over tau <= %s s, and model/measured\n"
            "at the measured minimum):\n",
-           R->rate_hz, tau_max_samples(R) / R->rate_hz);
+           R->rate_hz, fmt_s(b1, sizeof b1, tau_max_samples(R) / R->rate_hz));
     /* tau is in samples, as in the paper's tables, and the column says so:
      * right after tables whose tau_s is in seconds, "tau 1" read as 1 s
      * (a user review, 2026-11-29) */
@@ -1259,8 +1306,17 @@ static void print_params(const run_t *R)
                    "0.6174: the true T may be longer; docs/allan.md):\n",
                    R->is_series ? "A log's --profile would hold" : "--profile holds");
         }
-        printf("%-6s %-6s | %s: sigma_v %.3g, tau %.0f samples (%.3g s), sigma_bias %.3g\n", ch->label, ch->unit,
-               R->is_series ? "bound" : "profile", m.white, m.gm_tau_s * R->rate_hz, m.gm_tau_s, m.gm_sigma);
+        printf("%-6s %-6s | %s: sigma_v %.3g, tau %.0f samples (%s s), sigma_bias %.3g\n", ch->label, ch->unit,
+               R->is_series ? "bound" : "profile", m.white, m.gm_tau_s * R->rate_hz, fmt_s(b1, sizeof b1, m.gm_tau_s),
+               m.gm_sigma);
+    }
+    for (i = 0; i < R->nch; i++) {
+        nother += R->ch[i].id_ok && R->ch[i].id.paper_ok;
+    }
+    if (nother == 0) {
+        /* the header and no row, on a record too short or a constant series */
+        printf("\nOther readings of the paper's parameters: none (no channel has the paper's reading, above)\n");
+        return;
     }
     printf("\nOther readings of the paper's parameters (RMS log10 ADEV model/measured; model/measured at the minimum):\n"
            "  drive:  sigma_bias taken as the std of the driving noise n_k (the Fig. 7 text), stationary std\n"
@@ -1947,6 +2003,7 @@ static void no_identification(const run_t *R, const char *path, const chan_t *ch
 static void ar1_refusal(const run_t *R, const chan_t *ch, double tau_long_s, char *why, size_t n)
 {
     const double fit_s = tau_max_samples(R) / R->rate_hz, bump_s = 1.89 * ch->id.fit.gm_tau_s;
+    char b1[32], b2[32], b3[32];
     if (ar1_too_short(R, ch)) {
         snprintf(why, n, "the fit's AR(1) of %s has T = %.3g s (%.3g samples), under the floor of %.0f samples "
                          "(%.3g s), the taus where the sensor's own filtering shapes the Allan curve: not a bias the "
@@ -1955,13 +2012,14 @@ static void ar1_refusal(const run_t *R, const chan_t *ch, double tau_long_s, cha
                  ar1_floor_samples(), ar1_floor_samples() / R->rate_hz);
     } else if (!ch->id.fit_ok) {
         snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (no fit within the fitted "
-                         "range, tau <= %.3g s, --max-tau-frac)",
-                 ch->name, fit_s);
+                         "range, tau <= %s s, --max-tau-frac)",
+                 ch->name, fmt_s(b1, sizeof b1, fit_s));
     } else if (bump_s > tau_long_s) {
         snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (the fit's bump, 1.89 T = "
-                         "%.3g s, lies beyond the longest tau with data, %.3g s; the fit itself uses tau <= %.3g s, "
+                         "%s s, lies beyond the longest tau with data, %s s; the fit itself uses tau <= %s s, "
                          "--max-tau-frac)",
-                 ch->name, bump_s, tau_long_s, fit_s);
+                 ch->name, fmt_s(b1, sizeof b1, bump_s), fmt_s(b2, sizeof b2, tau_long_s),
+                 fmt_s(b3, sizeof b3, fit_s));
     } else if (bump_s * R->rate_hz < 1.0) {
         snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (the fit's T, %.3g s, is "
                          "under a sample)",
@@ -1969,8 +2027,8 @@ static void ar1_refusal(const run_t *R, const chan_t *ch, double tau_long_s, cha
     } else {
         snprintf(why, n, "the AR(1) bias of %s is not identifiable within the record (the fit's AR(1) part, or "
                          "its white part, rises above the rest of the model by no more than the measurement's "
-                         "spread at every tau <= %.3g s, the fitted range of --max-tau-frac)",
-                 ch->name, fit_s);
+                         "spread at every tau <= %s s, the fitted range of --max-tau-frac)",
+                 ch->name, fmt_s(b1, sizeof b1, fit_s));
     }
 }
 
@@ -2008,7 +2066,7 @@ static int write_profile(const run_t *R, const char *path, const char *name)
         }
         fallback[k] = bound;
         if (bound) {
-            char fitw[48] = "no fit", why[400];
+            char fitw[48] = "no fit", why[400], tb[32], mb[32];
             nfallback++;
             if (ch->id.fit_ok) {
                 snprintf(fitw, sizeof fitw, "not the fit's %.3g", ch->id.fit.white);
@@ -2018,11 +2076,11 @@ static int write_profile(const run_t *R, const char *path, const char *name)
              * 720 s read as an upper bound (a user review, 2026-11-29); it is
              * the AR(1) whose bump sits on the minimum, no bound on sigma */
             hx_warn(CMD, "%s: %s; the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV at 1 s; %s) and the "
-                         "Gauss-Markov bound T = %.3g s, sigma = %.3g %s, whose Allan bump sits on the minimum at "
-                         "%.3g s (T from the minimum's position: the true T may be longer; no upper bound on the "
+                         "Gauss-Markov bound T = %s s, sigma = %.3g %s, whose Allan bump sits on the minimum at "
+                         "%s s (T from the minimum's position: the true T may be longer; no upper bound on the "
                          "bias, docs/allan.md)",
-                    path, why, m.white, ch->unit, fitw, m.gm_tau_s, m.gm_sigma, ch->unit,
-                    (double)ch->id.paper.t_bs_s);
+                    path, why, m.white, ch->unit, fitw, fmt_s(tb, sizeof tb, m.gm_tau_s), m.gm_sigma, ch->unit,
+                    fmt_s(mb, sizeof mb, (double)ch->id.paper.t_bs_s));
         }
         if (k < 3) {
             p.accel_noise_mps2_rthz[k] = (fnav_real_t)(m.white * si);
@@ -2312,6 +2370,7 @@ int hx_cmd_allan(int argc, char **argv)
         R->rate_hz = rate_opt;
         path = series;
         snprintf(R->sensor, sizeof R->sensor, "series");
+        snprintf(R->sensor_text, sizeof R->sensor_text, "series");
     } else {
         path = a.pos[0];
         if (parse_channels(R, hx_arg(&a, "--channels")) != 0) {
@@ -2415,7 +2474,7 @@ int hx_cmd_allan(int argc, char **argv)
     }
 
     if (!hx_flag(&a, "--quiet")) {
-        printf("harness allan: %s (%s), %lu samples at %g Hz, %d tau points, ", R->source, R->sensor,
+        printf("harness allan: %s (%s), %lu samples at %g Hz, %d tau points, ", R->source, R->sensor_text,
                (unsigned long)R->n, R->rate_hz, (int)R->ngrid);
         if (R->exact) {
             printf("exact estimator (the whole record in double, fully overlapping at every tau)\n");

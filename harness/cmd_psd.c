@@ -316,14 +316,16 @@ static cJSON *json_result(const result_t *r)
 }
 
 /* One channel's data block; returns the number of points written (a PSD
- * point only where it is positive: the axis is logarithmic). */
-static int block(FILE *gp, const char *name, const result_t *r, int c, int ccdf)
+ * point only where it is positive: the axis is logarithmic; a CCDF point
+ * under ybot, 0 past the last power, at ybot, the bottom of its
+ * logarithmic axis, so the curve is seen to fall off it). */
+static int block(FILE *gp, const char *name, const result_t *r, int c, int ccdf, double ybot)
 {
     uint32_t k;
     int npts = 0;
     fprintf(gp, "$%s << EOD\n", name);
     for (k = 0; k < r->nbins; k++) {
-        const double v = ccdf ? (double)r->ccdf[c][k] : (double)r->psd[c][k];
+        const double v = ccdf ? fmax((double)r->ccdf[c][k], ybot) : (double)r->psd[c][k];
         /* CCDF at the bin's upper edge; PSD at the bin centre */
         const double f = ccdf ? ((k + 1u == r->nbins) ? (double)k * r->df : ((double)k + 0.5) * r->df)
                               : (double)k * r->df;
@@ -357,7 +359,7 @@ static int plot_psd(const char *dir, const result_t *r, const char *src, const s
         for (c = 3 * g; c < 3 * g + 3; c++) {
             char nm[16];
             snprintf(nm, sizeof nm, "d%d", c);
-            npts[c - 3 * g] = block(p.gp, nm, r, c, 0);
+            npts[c - 3 * g] = block(p.gp, nm, r, c, 0, 0.0);
         }
         fprintf(p.gp, "set title '%s'\nset ylabel '%s'\n", g == 0 ? "accelerometers (Fig. 3)" : "gyroscopes",
                 g == 0 ? "PSD [(m/s^2)^2/Hz]" : "PSD [(rad/s)^2/Hz]");
@@ -386,22 +388,33 @@ static int plot_ccdf(const char *dir, const result_t *r, const char *src, const 
     hx_plot_t p;
     char path[HX_PLOT_PATH_SIZE];
     int g, c;
+    /* a logarithmic y axis: on 0..1 the threshold's crossing (1 - 0.95 =
+     * 0.05) sat in the bottom 5 % of the panel (a sensor-characterisation
+     * review, 2026-11-30); its floor is 1e-3, or a decade under the
+     * threshold line where that is lower (--threshold 0.9999: 1e-5;
+     * --threshold 1: no line, the floor 1e-3) */
+    const double line = 1.0 - (double)bc->threshold;
+    const double ybot = line > 0.0 && line / 10.0 < 1e-3 ? line / 10.0 : 1e-3;
     snprintf(path, sizeof path, "%s/ccdf.png", dir);
     if (hx_plot_open(&p, CMD, path, 900, 700) != 0) {
         return -1;
     }
     fprintf(p.gp, "set multiplot layout 2,1 title 'CCDF of the power (threshold %.0f %%): %s'\n",
             100.0 * (double)bc->threshold, src);
-    fprintf(p.gp, "set xlabel 'frequency [Hz]'\nset ylabel '1 - cumulative power fraction'\nset yrange [0:1]\n");
+    fprintf(p.gp, "set xlabel 'frequency [Hz]'\nset ylabel '1 - cumulative power fraction'\nset logscale y\n"
+                  "set format y '%%g'\nset yrange [%.6g:1]\n",
+            ybot);
     for (g = 0; g < 2; g++) {
+        const int any = r->ok[3 * g] || r->ok[3 * g + 1] || r->ok[3 * g + 2];
         fprintf(p.gp, "unset arrow\n");
         for (c = 3 * g; c < 3 * g + 3; c++) {
             char nm[16];
             snprintf(nm, sizeof nm, "c%d", c);
-            block(p.gp, nm, r, c, 1);
+            block(p.gp, nm, r, c, 1, ybot);
             if (r->ok[c]) {
-                fprintf(p.gp, "set arrow from %.4g,0 to %.4g,1 nohead dt 3 lc %d\n", (double)r->bw[c].bandwidth_hz,
-                        (double)r->bw[c].bandwidth_hz, c - 3 * g + 1);
+                /* the panel's bottom to its top: y = 0 is off a log axis */
+                fprintf(p.gp, "set arrow from first %.4g, graph 0 to first %.4g, graph 1 nohead dt 3 lc %d\n",
+                        (double)r->bw[c].bandwidth_hz, (double)r->bw[c].bandwidth_hz, c - 3 * g + 1);
             }
         }
         /* an axis without power has no band and no CCDF: it was titled 0 Hz
@@ -414,13 +427,27 @@ static int plot_ccdf(const char *dir, const result_t *r, const char *src, const 
                 fprintf(p.gp, "%s no power", c > 3 * g ? "," : "");
             }
         }
-        fprintf(p.gp, "%s'\nplot ", r->ok[3 * g] || r->ok[3 * g + 1] || r->ok[3 * g + 2] ? " Hz" : "");
+        fprintf(p.gp, "%s'\n", any ? " Hz" : "");
+        if (!any) {
+            /* no curve: the x axis was gnuplot's -10..10; the log's band
+             * instead, and the panel says why it is empty, as psd.png's */
+            fprintf(p.gp, "set xrange [0:%.6g]\nset label 1 'no power on any axis' at graph 0.5,0.5 center\n",
+                    (double)(r->nbins - 1u) * r->df);
+        }
+        fprintf(p.gp, "plot ");
         for (c = 3 * g; c < 3 * g + 3; c++) {
             if (r->ok[c]) {
                 fprintf(p.gp, "$c%d using 1:2 with lines lw 1.5 lc %d title '%s', ", c, c - 3 * g + 1, k_ch[c]);
             }
         }
-        fprintf(p.gp, "%.4g with lines dt 2 lc rgb 'black' title 'threshold'\n", 1.0 - (double)bc->threshold);
+        if (line > 0.0) {
+            fprintf(p.gp, "%.4g with lines dt 2 lc rgb 'black' title 'threshold'\n", line);
+        } else {
+            fprintf(p.gp, "1/0 notitle\n"); /* --threshold 1: the line would be at 0 */
+        }
+        if (!any) {
+            fprintf(p.gp, "unset label 1\nset autoscale x\n");
+        }
     }
     fprintf(p.gp, "unset multiplot\n");
     return hx_plot_close(&p, CMD);

@@ -952,5 +952,61 @@ rm -f "$T/$NL"
 expect_exit 2 "--unit with a comma" "$H" allan --series "$T/good.txt" --rate 10 --unit "a,b" --no-sim --quiet --out "$T/ub.csv"
 expect_err "--unit must be" "the error says what --unit may hold"
 
+# --- the text output's cosmetics (a sensor-characterisation review, 2026-11-30): a long record's tau
+# in plain seconds ("tau <= 1e+03 s" before), the noise-types line without a stray ';', a CSV log's
+# header naming its format (it said "(unknown)"), and no empty "Other readings" table
+awk 'BEGIN { s = 1; for (i = 0; i < 12000; i++) { s = (s * 1103515245 + 12345) % 2147483648; print s / 2147483648.0 } }' \
+    >"$T/w12k.txt"
+expect_exit 0 "a 12,000-s white series" "$H" allan --series "$T/w12k.txt" --rate 1 --no-sim
+expect_out "tau <= 1200 s" "a tau over 1000 s in plain seconds"
+if grep -E 'tau <=|noise types' "$T/out" | grep -q 'e+0'; then fail "a tau in e-notation: $(grep -E 'e\+0' "$T/out" | head -2)"
+else pass "no tau in e-notation"; fi
+expect_out_re "^  noise types: .*[0-9] s$" "the noise-types line ends with its last range"
+if grep -q '^  noise types:.*;$' "$T/out"; then fail "the noise-types line ends with ';'"; else pass "no stray ';'"; fi
+# the same in the profile's warnings on a 12,000-s log: "tau <= 1.2e+03 s", "longest tau with data, 5.12e+03 s"
+awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 24000; i++)
+     printf "%.1f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 2, 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5),
+            9.81 + 0.01 * (rand() - 0.5), 0.002 * (rand() - 0.5), 0.002 * (rand() - 0.5), 0.002 * (rand() - 0.5) }' \
+    >"$T/long2.csv"
+expect_exit 0 "a 12,000-s static log, --profile" "$H" allan "$T/long2.csv" --no-sim --quiet --profile "$T/long2.profile"
+expect_err "tau <= 1200 s" "the profile's warnings: the fitted range in plain seconds"
+if grep -E -q '(tau <=|data,|minimum at) [0-9.]+e\+0' "$T/err"; then
+    fail "a tau in e-notation in the warnings: $(grep -E -o '(tau <=|data,|minimum at) [0-9.]+e\+0[0-9]' "$T/err" | head -3)"
+else pass "no tau in e-notation in the profile's warnings"; fi
+printf 't,ax,ay,az,gx,gy,gz\n' >"$T/csvlog.csv"
+awk 'BEGIN { srand(5); for (i = 0; i < 200; i++) printf "%.2f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 100,
+     0.05 * (rand() - 0.5), 0.05 * (rand() - 0.5), 9.81 + 0.05 * (rand() - 0.5), 0.007 * (rand() - 0.5),
+     0.007 * (rand() - 0.5), 0.007 * (rand() - 0.5) }' >>"$T/csvlog.csv"
+expect_exit 0 "a 2-s CSV log" "$H" allan "$T/csvlog.csv" --no-sim --channels gx
+expect_out "csvlog.csv (csv log)" "a CSV log's header names its format"
+if grep -q '(unknown)' "$T/out"; then fail "the header says (unknown)"; else pass "no (unknown) in the header"; fi
+# 2 s is too short for the paper's reading (its tau <= 0.2 s does not reach 1 s): no row, so no table, one line why
+if grep -q '^chan   |    drive rms' "$T/out"; then fail "an empty Other readings table: $(tail -3 "$T/out")"
+else pass "no empty Other readings table on a short log"; fi
+expect_out "Other readings of the paper's parameters: none (no channel has the paper's reading" \
+    "a short log: one line says why there are no other readings"
+awk 'BEGIN { for (i = 0; i < 3000; i++) print 5 }' >"$T/const.txt"
+expect_exit 0 "a constant series" "$H" allan --series "$T/const.txt" --rate 10 --no-sim
+if grep -q '^chan   |    drive rms' "$T/out"; then fail "an empty Other readings table on a constant series"
+else pass "no empty Other readings table on a constant series"; fi
+expect_out "Other readings of the paper's parameters: none" "a constant series: one line says why"
+expect_out_re "^  noise types: none$" "a constant series: the noise-types line says none"
+
+# --- a blank line inside a series was skipped without a word: if it stood for a missing sample, every
+# later value is one sample early (a sensor-characterisation review, 2026-11-30). Now one warning with
+# the count and the first line; blank lines before the first number and after the last stay silent
+{ printf '\n\n'; head -n 100 "$T/w12k.txt"; printf '\n'; sed -n 101,200p "$T/w12k.txt"; printf ' \t\n';
+  sed -n 201,3000p "$T/w12k.txt"; printf '\n\n'; } >"$T/blanks.txt"
+expect_exit 0 "a series with blank lines inside" "$H" allan --series "$T/blanks.txt" --rate 1 --no-sim --quiet
+expect_err "blanks.txt: 2 blank lines among the numbers (the first at line 103) are skipped" \
+    "blank lines inside a series: counted, the first named"
+[ "$(grep -c 'blank line' "$T/err")" -eq 1 ] && pass "one warning for the blank lines" ||
+    fail "blank-line warnings: $(grep -c 'blank line' "$T/err")"
+{ printf '\n# a comment\n'; head -n 3000 "$T/w12k.txt"; printf '\n\n'; } >"$T/edges.txt"
+expect_exit 0 "a series with blank lines before and after its numbers" "$H" allan --series "$T/edges.txt" --rate 1 \
+    --no-sim --quiet
+if grep -q 'blank line' "$T/err"; then fail "blank lines at the ends warned: $(cat "$T/err")"
+else pass "blank lines before the first number and after the last: silent"; fi
+
 if [ "$fails" -ne 0 ]; then echo "test_allan.sh: $fails failure(s)"; exit 1; fi
 echo "test_allan.sh: all passed"

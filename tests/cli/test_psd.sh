@@ -124,6 +124,30 @@ grep -q "gyroscopes (Fig. 4): bandwidths no power" "$T/ccdf.gp" && ! grep -q "ba
     ! grep -q '\$c3 using' "$T/ccdf.gp" && grep -q '\$c0 using' "$T/ccdf.gp" &&
     pass "constant gyroscopes: CCDF panel says no power, draws no gyroscope line" ||
     fail "constant gyroscopes: CCDF panel shows 0 Hz bands or flat lines"
+# the CCDF's y axis was linear, 0 to 1: the threshold's crossing (1 - 0.95 = 0.05) sat in the bottom 5 % of the
+# panel (a sensor-characterisation review, 2026-11-30). Now logarithmic down to a floor under the threshold line, the
+# line drawn, each CCDF point at the floor where it is 0 (a log axis has no 0: the sine's CCDF is 0 past 100 Hz), the
+# bandwidth marks from the panel's bottom to its top (at y = 0 on a log axis they were not drawn)
+"$PY" - "$T/ccdf.gp" <<'PYEOF' && pass "CCDF panel: log y axis, floor under the threshold, no point at or under 0" ||
+import re, sys
+gp = open(sys.argv[1]).read()
+bad = []
+if "set logscale y" not in gp: bad.append("no log y axis")
+m = re.search(r"set yrange \[([^:]+):1\]", gp)
+floor = float(m.group(1)) if m else 0.0
+if not (0.0 < floor < 0.05): bad.append("floor %r not in (0, 0.05)" % floor)
+if gp.count("0.05 with lines dt 2 lc rgb 'black' title 'threshold") != 2: bad.append("threshold line not in both panels")
+ys = [float(l.split()[1]) for blk in re.findall(r"\$c\d << EOD\n(.*?)EOD", gp, re.S) for l in blk.splitlines()]
+if not ys or min(ys) < floor: bad.append("a CCDF point under the floor: %r" % (min(ys) if ys else None))
+if min(ys) > floor: bad.append("no CCDF point at the floor (the sine's CCDF is 0 past 100 Hz)")
+if re.search(r"set arrow from [0-9.e+-]+,0 to", gp): bad.append("a bandwidth mark from y = 0")
+if "set arrow from first" not in gp: bad.append("no bandwidth mark")
+# the gyroscopes' panel, no power: its x axis was gnuplot's -10..10 with nothing drawn; the log's band, and why
+if "set label 1 'no power on any axis'" not in gp or "set xrange [0:500]" not in gp: bad.append("no-power panel")
+print(bad)
+sys.exit(1 if bad else 0)
+PYEOF
+    fail "CCDF panel: linear y axis, no threshold line, or a point a log axis cannot show"
 # the spectrogram's segment times against scipy.signal.spectrogram's t (Hann
 # 16, 50 %, on ax: a chirp of growing amplitude, so a column under another
 # segment's time shows in its dB too): every time was a sample early, the
