@@ -9,6 +9,9 @@
 #   make bench      benchmarks (figures quoted in docs/ come from here)
 #   make simgap-validation  the gap diagnosis on withheld effects -> docs/simgap-validation.md
 #   make deps       install the Debian packages (scripts/bootstrap.sh)
+#   make install    the library, its headers, footnav.pc and the harness (as
+#                   footnav-harness) under PREFIX (/usr/local); DESTDIR stages
+#   make uninstall  removes what make install put
 #   make clean
 #
 # The core calls the port's fnav_port_assert_failed(), which lives in libhx.a
@@ -55,15 +58,30 @@ BENCH_BINS  := $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 FORBIDDEN := malloc|calloc|realloc|free|_sbrk|sbrk|printf|fprintf|sprintf|snprintf|vprintf|vfprintf|vsprintf|vsnprintf|puts|fputs|putchar|fputc|putc|fopen|fclose|fread|fwrite|fflush|stdout|stderr|stdin|_impure_ptr|__printf_chk|__fprintf_chk|__sprintf_chk|__snprintf_chk|exit|abort|system
 
 .PHONY: all test check-suites test-double test-cli vectors-check nm-check sanitize \
-        firmware firmware-bench bench deps clean run fuzz valgrind lint longrun
+        firmware firmware-bench bench deps clean run fuzz valgrind lint longrun install uninstall
 
 all: $(LIB) $(HARNESS) nm-check
 
-$(BUILD)/obj/src/%.o: src/%.c
+# The FNAV_* options size the objects (fnav_config.h): every object of
+# $(BUILD) is rebuilt when FNAV_DEFS changes, so the library make install
+# copies was built with the FNAV_DEFS its footnav.pc gives a program.
+DEFS_STAMP := $(BUILD)/fnav-defs.stamp
+# (make's own file function: FNAV_DEFS may hold quotes, -DFNAV_CONFIG_FILE='"my.h"')
+ifneq ($(filter-out clean deps,$(or $(MAKECMDGOALS),all)),)
+ifneq ($(file <$(DEFS_STAMP)),$(strip $(FNAV_DEFS)))
+$(shell mkdir -p $(BUILD))
+$(file >$(DEFS_STAMP),$(strip $(FNAV_DEFS)))
+endif
+endif
+
+$(DEFS_STAMP):
+	@mkdir -p $(dir $@) && : >$@
+
+$(BUILD)/obj/src/%.o: src/%.c $(DEFS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS_CORE) -MMD -MP -c $< -o $@
 
-$(BUILD)/obj/%.o: %.c
+$(BUILD)/obj/%.o: %.c $(DEFS_STAMP)
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS_HOST) -MMD -MP -c $< -o $@
 
@@ -327,6 +345,62 @@ lint:
 	clang-tidy --quiet $(wildcard src/*.c) $(wildcard port/linux/*.c) $(wildcard port/cortex-m/*.c) -- \
 	  $(CPPFLAGS) -std=c99 -D_POSIX_C_SOURCE=200809L
 	@echo "make lint: cppcheck and clang-tidy clean"
+
+# ---------------------------------------------------------------- install
+# make install: for a program of your own on Linux (README, "Using the
+# library in your own program"): libfootnav.a in LIBDIR, the public headers
+# in INCLUDEDIR/footnav/ (#include "footnav/footnav.h"), footnav.pc in
+# PKGCONFIGDIR and bin/harness in BINDIR as footnav-harness. DESTDIR stages
+# the whole tree (packaging); make uninstall removes exactly those files,
+# and INCLUDEDIR/footnav once empty. The port is the program's: no port
+# header or source is installed (port/linux belongs to the harness;
+# docs/firmware.md, "Porting to a new board").
+# footnav.pc carries FNAV_DEFS in its Cflags: a program must see the options
+# the library was built with (make install FNAV_DEFS=-DFNAV_USE_DOUBLE=1
+# rebuilds $(BUILD) in double and says so in footnav.pc). -D options only:
+# an FNAV_CONFIG_FILE header is not installed.
+PREFIX       ?= /usr/local
+EXEC_PREFIX  ?= $(PREFIX)
+BINDIR       ?= $(EXEC_PREFIX)/bin
+LIBDIR       ?= $(EXEC_PREFIX)/lib
+INCLUDEDIR   ?= $(PREFIX)/include
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+INSTALL      ?= install
+INSTALL_PROGRAM ?= $(INSTALL)
+INSTALL_DATA ?= $(INSTALL) -m 644
+HARNESS_NAME ?= footnav-harness
+# No release numbering yet; a packager sets VERSION.
+VERSION      ?= 0.0.0
+HEADERS      := $(wildcard include/footnav/*.h)
+
+# A directory under PREFIX is written relative to ${prefix} in footnav.pc,
+# so that pkg-config --define-prefix can move the tree.
+pc_dir = $(patsubst $(PREFIX)/%,$${prefix}/%,$(1))
+define FOOTNAV_PC
+prefix=$(PREFIX)
+libdir=$(call pc_dir,$(LIBDIR))
+includedir=$(call pc_dir,$(INCLUDEDIR))
+
+Name: footnav
+Description: foot-mounted IMU navigation: strapdown, UKF with zero-velocity updates, Allan deviation, Welch PSD
+Version: $(VERSION)
+Cflags: -I$${includedir}$(if $(strip $(FNAV_DEFS)), $(strip $(FNAV_DEFS)))
+Libs: -L$${libdir} -lfootnav -lm
+endef
+
+install: all
+	$(file >$(BUILD)/footnav.pc,$(FOOTNAV_PC))
+	$(INSTALL) -d '$(DESTDIR)$(LIBDIR)' '$(DESTDIR)$(PKGCONFIGDIR)' '$(DESTDIR)$(INCLUDEDIR)/footnav' '$(DESTDIR)$(BINDIR)'
+	$(INSTALL_DATA) $(LIB) '$(DESTDIR)$(LIBDIR)/libfootnav.a'
+	$(INSTALL_DATA) $(HEADERS) '$(DESTDIR)$(INCLUDEDIR)/footnav'
+	$(INSTALL_DATA) $(BUILD)/footnav.pc '$(DESTDIR)$(PKGCONFIGDIR)/footnav.pc'
+	$(INSTALL_PROGRAM) $(HARNESS) '$(DESTDIR)$(BINDIR)/$(HARNESS_NAME)'
+
+uninstall:
+	rm -f '$(DESTDIR)$(LIBDIR)/libfootnav.a' '$(DESTDIR)$(PKGCONFIGDIR)/footnav.pc' '$(DESTDIR)$(BINDIR)/$(HARNESS_NAME)'
+	rm -f $(foreach h,$(notdir $(HEADERS)),'$(DESTDIR)$(INCLUDEDIR)/footnav/$(h)')
+	@if [ -d '$(DESTDIR)$(INCLUDEDIR)/footnav' ]; then rmdir '$(DESTDIR)$(INCLUDEDIR)/footnav' 2>/dev/null || \
+	  echo "uninstall: $(DESTDIR)$(INCLUDEDIR)/footnav holds other files, left in place"; fi
 
 # ---------------------------------------------------------------- misc
 deps:

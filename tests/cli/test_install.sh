@@ -1,0 +1,226 @@
+#!/bin/sh
+# make install / make uninstall as a user of the library sees them (README,
+# "Using the library in your own program"): `make install DESTDIR=D
+# PREFIX=/usr` puts exactly libfootnav.a, the public headers, footnav.pc and
+# footnav-harness under D/usr; a program of one's own, compiled away from
+# the source tree with nothing but `pkg-config --cflags --libs footnav`,
+# builds against the installed files only (it does not before the install),
+# initialises a navigator with a built-in profile and navigates 7 s of a
+# sensor at rest; installed with FNAV_DEFS=-DFNAV_USE_DOUBLE=1 the library
+# is rebuilt in double and footnav.pc makes the program double too; `make
+# uninstall` with the same variables leaves no file.
+# The installs build in a scratch directory (BUILD=$T/build, about 15 s
+# each): the make running this test (e.g. make sanitize, BUILD=build/san
+# SAN=...) passes its variables down through MAKEFLAGS, which is cleared.
+set -u
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/lib.sh"
+cd "$(dirname "$0")/../.." || exit 1
+ROOT=$(pwd)
+CC=${CC:-cc} # may hold words, e.g. "ccache gcc"
+MAKE=${MAKE:-make}
+unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
+if ! command -v pkg-config >/dev/null 2>&1; then
+    # scripts/bootstrap.sh installs it: make install's footnav.pc is for pkg-config
+    fail "pkg-config not found (sh scripts/bootstrap.sh installs it)"
+    echo "test_install.sh: $fails failure(s)"
+    exit 1
+fi
+
+# pkg-config on the staged tree only: the .pc of D/usr/lib/pkgconfig (no
+# system directory), its -I and -L under D (the sysroot)
+pc() { # DESTDIR pkg-config-args...
+    d=$1; shift
+    PKG_CONFIG_LIBDIR="$d/usr/lib/pkgconfig" PKG_CONFIG_SYSROOT_DIR="$d" pkg-config "$@"
+}
+build_prog() { # DESTDIR OUTPUT: compiles $T/prog.c in $T (away from the source tree) with footnav.pc's flags
+    flags=$(pc "$1" --cflags --libs footnav) || return 1
+    # shellcheck disable=SC2086
+    (cd "$T" && $CC -std=c99 -pedantic -Wall -Wextra -Werror -o "$2" prog.c $flags)
+}
+# the files make install should put under DESTDIR, sorted
+expected_files() {
+    {
+        echo usr/bin/footnav-harness
+        echo usr/lib/libfootnav.a
+        echo usr/lib/pkgconfig/footnav.pc
+        for h in include/footnav/*.h; do echo "usr/include/footnav/${h##*/}"; done
+    } | LC_ALL=C sort
+}
+installed_files() { # DESTDIR: every file (not directory) under it, relative, sorted (none: no DESTDIR)
+    [ -d "$1" ] || return 0
+    (cd "$1" && find . ! -type d | sed 's|^\./||' | LC_ALL=C sort)
+}
+
+cat >"$T/prog.c" <<'EOF'
+#include <stdio.h>
+#include <stdlib.h>
+#include "footnav/footnav.h"
+
+/* the port's assert hook: a program of one's own defines it (docs/firmware.md) */
+void fnav_port_assert_failed(const char *file, int line, const char *expr)
+{
+    fprintf(stderr, "%s:%d: assertion failed: %s\n", file, line, expr);
+    abort();
+}
+
+static int take(fnav_nav_t *nav, unsigned long *frames, unsigned long *aligned, double *worst)
+{
+    fnav_nav_frame_t f;
+    fnav_status_t st;
+    int k;
+    while ((st = fnav_nav_pop(nav, &f)) == FNAV_OK) {
+        (*frames)++;
+        if (f.flags & FNAV_FRAME_ALIGNED) {
+            (*aligned)++;
+            for (k = 0; k < 3; k++) {
+                double p = (double)f.pos_m[k] < 0.0 ? -(double)f.pos_m[k] : (double)f.pos_m[k];
+                if (p > *worst) {
+                    *worst = p;
+                }
+            }
+        }
+    }
+    return st == FNAV_AGAIN || st == FNAV_END ? 0 : -1;
+}
+
+int main(void)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t cfg = fnav_nav_config_default;
+    fnav_sample_t s = {0};
+    unsigned long frames = 0, aligned = 0;
+    double worst = 0.0;
+    int i;
+    if (fnav_profile_builtin(&cfg.profile, FNAV_PROFILE_NAVCHIP) != FNAV_OK || fnav_nav_init(&nav, &cfg) != FNAV_OK) {
+        return 1;
+    }
+    for (i = 0; i < 1400; i++) { /* 7 s at rest at 200 Hz, +z up: aligned after 5 s (max_still_s) */
+        s.t_ns = (int64_t)i * 5000000;
+        s.seq = (uint32_t)i;
+        s.accel_mps2[0] = FNAV_R(0.01);
+        s.accel_mps2[1] = FNAV_R(-0.02);
+        s.accel_mps2[2] = FNAV_R(9.81);
+        s.gyro_rps[0] = FNAV_R(0.001);
+        s.gyro_rps[1] = FNAV_R(0.002);
+        s.gyro_rps[2] = FNAV_R(-0.001);
+        if (fnav_nav_push(&nav, &s) != FNAV_OK || take(&nav, &frames, &aligned, &worst) != 0) {
+            return 1;
+        }
+    }
+    fnav_nav_finish(&nav);
+    if (take(&nav, &frames, &aligned, &worst) != 0) {
+        return 1;
+    }
+    printf("profile %s, fnav_real_t %u bytes: %lu frames, %lu aligned, |position| <= %.4f m\n", nav.cfg.profile.name,
+           (unsigned)sizeof(fnav_real_t), frames, aligned, worst);
+    return 0;
+}
+EOF
+
+# before the install: nothing to find, and the program does not build
+# (no -Iinclude: the source tree is not on its path)
+D="$T/root"
+if pc "$D" --exists footnav 2>/dev/null; then
+    fail "pkg-config finds footnav before make install"
+else
+    pass "pkg-config does not find footnav before make install"
+fi
+# shellcheck disable=SC2086
+if (cd "$T" && $CC -std=c99 -o prog0 prog.c -lfootnav -lm) >"$T/err" 2>&1; then
+    # a footnav installed on this machine (/usr/local): the staged one comes
+    # first on the -I and -L of footnav.pc, but this check cannot be made
+    echo "note: footnav is installed on this machine outside the staged tree: not checked that the program needs the install"
+elif grep -q 'footnav/footnav.h' "$T/err"; then
+    pass "the program does not build without the install (footnav/footnav.h not found)"
+else
+    fail "the program does not build without the install, but not for want of footnav/footnav.h:"; cat "$T/err"
+fi
+
+expect_exit 0 "make install DESTDIR=D PREFIX=/usr" \
+    "$MAKE" -C "$ROOT" install DESTDIR="$D" PREFIX=/usr BUILD="$T/build" HARNESS="$T/build/harness"
+expected_files >"$T/want"
+installed_files "$D" >"$T/got"
+if cmp -s "$T/want" "$T/got"; then
+    pass "make install put exactly the library, $(grep -c include/ "$T/want") headers, footnav.pc and footnav-harness"
+else
+    fail "make install: the installed files differ from the expected ones (- expected, + installed)"
+    diff -u "$T/want" "$T/got" | sed -n '3,$p'
+fi
+if [ -x "$D/usr/bin/footnav-harness" ] && ! [ -e "$D/usr/bin/harness" ]; then
+    pass "the harness is installed as footnav-harness"
+else
+    fail "the harness is not installed as footnav-harness (or also as harness)"
+fi
+expect_exit 0 "footnav-harness --help" "$D/usr/bin/footnav-harness" --help
+expect_out "replay" "footnav-harness --help lists the commands"
+expect_exit 0 "the installed footnav-harness runs a command (info on the bundled walk)" \
+    "$D/usr/bin/footnav-harness" info vectors/walk.bin
+pc "$D" --cflags --libs footnav >"$T/out" 2>"$T/err"
+expect_out_re "^-I$D/usr/include +-L$D/usr/lib +-lfootnav +-lm *$" \
+    "pkg-config --cflags --libs footnav: -I and -L of the install, -lfootnav -lm, no FNAV_USE_DOUBLE in the float build"
+PKG_CONFIG_LIBDIR="$D/usr/lib/pkgconfig" pkg-config --define-prefix --cflags footnav >"$T/out" 2>"$T/err"
+expect_out_re "^-I$D/usr/include *$" "pkg-config --define-prefix relocates the staged tree too"
+PKG_CONFIG_LIBDIR="$D/usr/lib/pkgconfig" pkg-config --modversion footnav >"$T/out" 2>"$T/err"
+expect_out_re "^[0-9]+\.[0-9]+\.[0-9]+$" "footnav.pc has a version"
+
+if build_prog "$D" prog_float >"$T/err" 2>&1; then
+    pass "a program of one's own builds with pkg-config's flags alone (float)"
+    expect_exit 0 "the program runs (float)" "$T/prog_float"
+    expect_out_re "^profile navchip, fnav_real_t 4 bytes: 1400 frames, 400 aligned, \|position\| <= 0\.00[0-9]{2} m$" \
+        "the program navigated 7 s at rest with the NavChip profile: 1400 frames, the last 400 aligned, at the origin (float)"
+else
+    fail "the program does not build with pkg-config's flags (float)"; cat "$T/err"
+fi
+
+# The double build: FNAV_DEFS at install rebuilds the same BUILD in double
+# (the objects follow FNAV_DEFS) and footnav.pc passes it on; a program
+# built as float against the double library would read its frames wrong.
+D2="$T/root-double"
+expect_exit 0 "make install FNAV_DEFS=-DFNAV_USE_DOUBLE=1 (same BUILD, rebuilt)" \
+    "$MAKE" -C "$ROOT" install DESTDIR="$D2" PREFIX=/usr BUILD="$T/build" HARNESS="$T/build/harness" \
+    FNAV_DEFS=-DFNAV_USE_DOUBLE=1
+pc "$D2" --cflags footnav >"$T/out" 2>"$T/err"
+expect_out_re "^-I$D2/usr/include +-DFNAV_USE_DOUBLE=1 *$" "footnav.pc of the double build carries -DFNAV_USE_DOUBLE=1"
+if build_prog "$D2" prog_double >"$T/err" 2>&1; then
+    pass "the program builds with pkg-config's flags alone (double)"
+    expect_exit 0 "the program runs (double)" "$T/prog_double"
+    expect_out_re "^profile navchip, fnav_real_t 8 bytes: 1400 frames, 400 aligned, \|position\| <= 0\.00[0-9]{2} m$" \
+        "the same navigation in double"
+else
+    fail "the program does not build with pkg-config's flags (double)"; cat "$T/err"
+fi
+
+for d in "$D" "$D2"; do
+    expect_exit 0 "make uninstall DESTDIR=${d##*/} PREFIX=/usr" \
+        "$MAKE" -C "$ROOT" uninstall DESTDIR="$d" PREFIX=/usr BUILD="$T/build" HARNESS="$T/build/harness"
+    installed_files "$d" >"$T/got"
+    if [ -s "$T/got" ]; then
+        fail "make uninstall left files under ${d##*/}:"; cat "$T/got"
+    else
+        pass "make uninstall left no file under ${d##*/}"
+    fi
+    if [ -d "$d/usr/include/footnav" ]; then
+        fail "make uninstall left the empty include/footnav directory"
+    else
+        pass "make uninstall removed include/footnav"
+    fi
+done
+# a file of someone else's in include/footnav is left, and so is the
+# directory (the double build again: BUILD is not rebuilt)
+expect_exit 0 "make install again" \
+    "$MAKE" -C "$ROOT" install DESTDIR="$D" PREFIX=/usr BUILD="$T/build" HARNESS="$T/build/harness" \
+    FNAV_DEFS=-DFNAV_USE_DOUBLE=1
+: >"$D/usr/include/footnav/mine.h"
+expect_exit 0 "make uninstall with a foreign file in include/footnav" \
+    "$MAKE" -C "$ROOT" uninstall DESTDIR="$D" PREFIX=/usr BUILD="$T/build" HARNESS="$T/build/harness"
+installed_files "$D" >"$T/got"
+if [ "$(cat "$T/got")" = usr/include/footnav/mine.h ]; then
+    pass "make uninstall removes only what make install put"
+else
+    fail "make uninstall with a foreign file: left $(tr '\n' ' ' <"$T/got")"
+fi
+
+if [ "$fails" -ne 0 ]; then echo "test_install.sh: $fails failure(s)"; exit 1; fi
+echo "test_install.sh: all passed"
