@@ -1098,6 +1098,20 @@ expect_exit 2 "--strides onto the log" "$H" replay "$T/sw0.bin" --strides "$T/sw
 expect_err "is the input itself" "--strides onto the log refused"
 expect_exit 3 "unwritable --strides" "$H" replay "$T/sw0.bin" --strides /nonexistent/dir/s.csv
 if [ ! -s "$T/out" ]; then pass "unwritable --strides: refused before the run"; else fail "unwritable --strides: the log was run first"; fi
+# --strides' event times against the experts of ipol_gait_xsens trial 1-2 (scripts/stride_ipol.py; docs/harness.md,
+# "Stride CSV"): the rows' times, s since the log's first sample, in packets (+ the first PacketCounter: 0 left,
+# 1 right) match eval's row of the trial (same detector: expert strides, missed, spurious, median |FO| and |FS|
+# errors) and its targets (none missed or spurious, medians <= 2 samples). A shift of the rows' time base by a
+# sample, or one taken from counter 0 on the right foot, changes eval's medians there
+if [ -n "$D" ] && [ -f "$D/ipol_gait_xsens/1-2.json" ]; then
+    mkdir -p "$T/ip12/ipol_gait_xsens"
+    for x in .json _lf.txt _rf.txt; do ln -s "$(cd "$D/ipol_gait_xsens" && pwd)/1-2$x" "$T/ip12/ipol_gait_xsens/"; done
+    expect_exit 0 "eval: ipol trial 1-2" "$H" eval --no-experiments --no-plots --data "$T/ip12" --out "$T/ip12.md"
+    if HARNESS="$H" /usr/bin/python3 "$(dirname "$0")/../../scripts/stride_ipol.py" --check --eval "$T/ip12.md" \
+        "$T/ip12/ipol_gait_xsens" 1-2 >"$T/py" 2>&1; then
+        pass "--strides on ipol 1-2: eval's events and targets ($(grep '^foot-' "$T/py" | tr '\n' ' '))"
+    else fail "--strides on ipol 1-2 against the experts: $(cat "$T/py")"; fi
+fi
 
 if [ "$fails" -ne 0 ]; then
     echo "test_replay.sh: $fails failure(s)"
