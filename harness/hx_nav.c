@@ -1549,7 +1549,10 @@ int hx_nav_write_strides(FILE *f, const hx_traj_t *t)
         stride_field(f, 6, fs);
         stride_field(f, 6, 1e-9 * (double)(e->swing_t0_ns - t->t0_ns));
         stride_field(f, 6, 1e-9 * (double)(e->swing_t1_ns - t->t0_ns));
-        stride_field(f, 6, fs - fo);
+        /* a swing shorter than the two searches (0.3 s each) can put the
+         * foot-off at or after the foot-strike: no swing time then (it read
+         * 0 or negative, down to -0.24 s, in 8 of ipol's 515 rows) */
+        stride_field(f, 6, fs > fo ? fs - fo : (double)NAN);
         stride_field(f, 6, fs - fs_prev);
         stride_field(f, 3, 120.0 / (fs - fs_prev));
         stride_field(f, 4, len);

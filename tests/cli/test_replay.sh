@@ -1112,6 +1112,16 @@ if [ -n "$D" ] && [ -f "$D/ipol_gait_xsens/1-2.json" ]; then
         pass "--strides on ipol 1-2: eval's events and targets ($(grep '^foot-' "$T/py" | tr '\n' ' '))"
     else fail "--strides on ipol 1-2 against the experts: $(cat "$T/py")"; fi
 fi
+# a short step whose foot-off search (0.3 s after the swing began) reaches past its foot-strike (0.3 s before the
+# stance) has no swing time: swing_s was 0 or negative there (0 in trial 3-3 left, stride 21)
+if [ -n "$D" ] && [ -f "$D/ipol_gait_xsens/3-3_lf.txt" ]; then
+    expect_exit 0 "--strides, ipol 3-3 left" "$H" replay "$D/ipol_gait_xsens/3-3_lf.txt" --strides "$T/s33.csv" --quiet
+    if awk -F, 'NR > 1 { n++; if ($6 != "" && $6 <= 0) bad++; if ($6 == "" && $2 != "" && $2 < $3) bad++;
+                         if ($2 != "" && $2 >= $3) short++ }
+                END { exit !(n > 10 && short > 0 && !bad) }' "$T/s33.csv"; then
+        pass "--strides: a foot-off not before its foot-strike leaves swing_s empty, every other swing_s positive"
+    else fail "--strides swing_s: $(awk -F, 'NR > 1 && ($6 == "" || $6 <= 0)' "$T/s33.csv" | head -3)"; fi
+fi
 
 if [ "$fails" -ne 0 ]; then
     echo "test_replay.sh: $fails failure(s)"
