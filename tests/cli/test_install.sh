@@ -208,10 +208,17 @@ for d in "$D" "$D2"; do
     fi
 done
 # a file of someone else's in include/footnav is left, and so is the
-# directory (the double build again: BUILD is not rebuilt)
+# directory (the double build again: BUILD is not rebuilt, the uninstalls
+# above without FNAV_DEFS did not mark its objects stale)
 expect_exit 0 "make install again" \
     "$MAKE" -C "$ROOT" install DESTDIR="$D" PREFIX=/usr BUILD="$T/build" HARNESS="$T/build/harness" \
     FNAV_DEFS=-DFNAV_USE_DOUBLE=1
+if grep -q -e ' -c ' "$T/out"; then
+    fail "make install again with the same FNAV_DEFS recompiled (after make uninstall without FNAV_DEFS):"
+    grep -e ' -c ' "$T/out" | head -n 3
+else
+    pass "make install again with the same FNAV_DEFS compiles nothing (make uninstall left the objects' stamp alone)"
+fi
 : >"$D/usr/include/footnav/mine.h"
 expect_exit 0 "make uninstall with a foreign file in include/footnav" \
     "$MAKE" -C "$ROOT" uninstall DESTDIR="$D" PREFIX=/usr BUILD="$T/build" HARNESS="$T/build/harness"
@@ -221,6 +228,23 @@ if [ "$(cat "$T/got")" = usr/include/footnav/mine.h ]; then
 else
     fail "make uninstall with a foreign file: left $(tr '\n' ' ' <"$T/got")"
 fi
+
+# make clean and a build in one run with FNAV_DEFS (a copy of the tree:
+# make clean removes build/ and bin/): the stamp the build makes again
+# records FNAV_DEFS, so a later make without FNAV_DEFS rebuilds the library
+# (it found the double objects up to date, and make install would have put
+# them beside a footnav.pc without -DFNAV_USE_DOUBLE=1)
+C="$T/copy"
+mkdir -p "$C" && cp -R Makefile src include "$C/"
+expect_exit 0 "make clean libfootnav.a FNAV_DEFS=-DFNAV_USE_DOUBLE=1 (one run, a copy of the tree)" \
+    "$MAKE" -C "$C" clean build/host/libfootnav.a FNAV_DEFS=-DFNAV_USE_DOUBLE=1
+if [ "$(cat "$C/build/host/fnav-defs.stamp" 2>/dev/null)" = -DFNAV_USE_DOUBLE=1 ]; then
+    pass "the stamp remade after make clean holds the run's FNAV_DEFS"
+else
+    fail "the stamp remade after make clean does not hold -DFNAV_USE_DOUBLE=1: '$(cat "$C/build/host/fnav-defs.stamp" 2>/dev/null)'"
+fi
+expect_exit 1 "then make -q libfootnav.a without FNAV_DEFS: the double library is out of date" \
+    "$MAKE" -C "$C" -q build/host/libfootnav.a
 
 if [ "$fails" -ne 0 ]; then echo "test_install.sh: $fails failure(s)"; exit 1; fi
 echo "test_install.sh: all passed"
