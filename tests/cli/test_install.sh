@@ -11,7 +11,10 @@
 # uninstall` with the same variables leaves no file.
 # The installs build in a scratch directory (BUILD=$T/build, about 15 s
 # each): the make running this test (e.g. make sanitize, BUILD=build/san
-# SAN=...) passes its variables down through MAKEFLAGS, which is cleared.
+# SAN=...) passes its command-line variables down through MAKEFLAGS and the
+# environment, both cleared here (with SAN and OPT from make sanitize the
+# library was built with ASan + UBSan, and the program, linked without
+# them, did not link).
 set -u
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
@@ -20,7 +23,7 @@ cd "$(dirname "$0")/../.." || exit 1
 ROOT=$(pwd)
 CC=${CC:-cc} # may hold words, e.g. "ccache gcc"
 MAKE=${MAKE:-make}
-unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
+unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES BUILD HARNESS OPT SAN FNAV_DEFS
 if ! command -v pkg-config >/dev/null 2>&1; then
     # scripts/bootstrap.sh installs it: make install's footnav.pc is for pkg-config
     fail "pkg-config not found (sh scripts/bootstrap.sh installs it)"
