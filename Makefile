@@ -67,15 +67,20 @@ all: $(LIB) $(HARNESS) nm-check
 # copies was built with the FNAV_DEFS its footnav.pc gives a program.
 DEFS_STAMP := $(BUILD)/fnav-defs.stamp
 # (make's own file function: FNAV_DEFS may hold quotes, -DFNAV_CONFIG_FILE='"my.h"')
-ifneq ($(filter-out clean deps,$(or $(MAKECMDGOALS),all)),)
+# Goals that compile nothing in $(BUILD) leave the stamp alone (a make
+# uninstall or lint without the FNAV_DEFS of the build made it rebuild all).
+ifneq ($(filter-out clean deps uninstall lint,$(or $(MAKECMDGOALS),all)),)
 ifneq ($(file <$(DEFS_STAMP)),$(strip $(FNAV_DEFS)))
 $(shell mkdir -p $(BUILD))
 $(file >$(DEFS_STAMP),$(strip $(FNAV_DEFS)))
 endif
 endif
 
+# Made when missing (a fresh tree, or make clean earlier in the same run):
+# it records FNAV_DEFS too, or a later make with other FNAV_DEFS would find
+# the objects up to date. One line: make expands a recipe before running it.
 $(DEFS_STAMP):
-	@mkdir -p $(dir $@) && : >$@
+	$(shell mkdir -p $(dir $@))$(file >$@,$(strip $(FNAV_DEFS)))
 
 $(BUILD)/obj/src/%.o: src/%.c $(DEFS_STAMP)
 	@mkdir -p $(dir $@)

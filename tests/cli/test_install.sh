@@ -11,7 +11,10 @@
 # uninstall` with the same variables leaves no file.
 # The installs build in a scratch directory (BUILD=$T/build, about 15 s
 # each): the make running this test (e.g. make sanitize, BUILD=build/san
-# SAN=...) passes its variables down through MAKEFLAGS, which is cleared.
+# SAN=...) passes its command-line variables down through MAKEFLAGS and the
+# environment, both cleared here (with SAN and OPT from make sanitize the
+# library was built with ASan + UBSan, and the program, linked without
+# them, did not link).
 set -u
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
@@ -20,7 +23,7 @@ cd "$(dirname "$0")/../.." || exit 1
 ROOT=$(pwd)
 CC=${CC:-cc} # may hold words, e.g. "ccache gcc"
 MAKE=${MAKE:-make}
-unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
+unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES BUILD HARNESS OPT SAN FNAV_DEFS
 if ! command -v pkg-config >/dev/null 2>&1; then
     # scripts/bootstrap.sh installs it: make install's footnav.pc is for pkg-config
     fail "pkg-config not found (sh scripts/bootstrap.sh installs it)"
@@ -208,10 +211,17 @@ for d in "$D" "$D2"; do
     fi
 done
 # a file of someone else's in include/footnav is left, and so is the
-# directory (the double build again: BUILD is not rebuilt)
+# directory (the double build again: BUILD is not rebuilt, the uninstalls
+# above without FNAV_DEFS did not mark its objects stale)
 expect_exit 0 "make install again" \
     "$MAKE" -C "$ROOT" install DESTDIR="$D" PREFIX=/usr BUILD="$T/build" HARNESS="$T/build/harness" \
     FNAV_DEFS=-DFNAV_USE_DOUBLE=1
+if grep -q -e ' -c ' "$T/out"; then
+    fail "make install again with the same FNAV_DEFS recompiled (after make uninstall without FNAV_DEFS):"
+    grep -e ' -c ' "$T/out" | head -n 3
+else
+    pass "make install again with the same FNAV_DEFS compiles nothing (make uninstall left the objects' stamp alone)"
+fi
 : >"$D/usr/include/footnav/mine.h"
 expect_exit 0 "make uninstall with a foreign file in include/footnav" \
     "$MAKE" -C "$ROOT" uninstall DESTDIR="$D" PREFIX=/usr BUILD="$T/build" HARNESS="$T/build/harness"
@@ -221,6 +231,23 @@ if [ "$(cat "$T/got")" = usr/include/footnav/mine.h ]; then
 else
     fail "make uninstall with a foreign file: left $(tr '\n' ' ' <"$T/got")"
 fi
+
+# make clean and a build in one run with FNAV_DEFS (a copy of the tree:
+# make clean removes build/ and bin/): the stamp the build makes again
+# records FNAV_DEFS, so a later make without FNAV_DEFS rebuilds the library
+# (it found the double objects up to date, and make install would have put
+# them beside a footnav.pc without -DFNAV_USE_DOUBLE=1)
+C="$T/copy"
+mkdir -p "$C" && cp -R Makefile src include "$C/"
+expect_exit 0 "make clean libfootnav.a FNAV_DEFS=-DFNAV_USE_DOUBLE=1 (one run, a copy of the tree)" \
+    "$MAKE" -C "$C" clean build/host/libfootnav.a FNAV_DEFS=-DFNAV_USE_DOUBLE=1
+if [ "$(cat "$C/build/host/fnav-defs.stamp" 2>/dev/null)" = -DFNAV_USE_DOUBLE=1 ]; then
+    pass "the stamp remade after make clean holds the run's FNAV_DEFS"
+else
+    fail "the stamp remade after make clean does not hold -DFNAV_USE_DOUBLE=1: '$(cat "$C/build/host/fnav-defs.stamp" 2>/dev/null)'"
+fi
+expect_exit 1 "then make -q libfootnav.a without FNAV_DEFS: the double library is out of date" \
+    "$MAKE" -C "$C" -q build/host/libfootnav.a
 
 if [ "$fails" -ne 0 ]; then echo "test_install.sh: $fails failure(s)"; exit 1; fi
 echo "test_install.sh: all passed"
