@@ -1305,6 +1305,18 @@ static void heading_ref(const hx_traj_t *t, size_t first, double ref_b[3])
     }
 }
 
+/* d in (-pi, pi]: a heading step of at most half a turn */
+static double wrap_step(double d)
+{
+    while (d > M_PI) {
+        d -= 2.0 * M_PI;
+    }
+    while (d <= -M_PI) {
+        d += 2.0 * M_PI;
+    }
+    return d;
+}
+
 static int heading_of(const double ref_b[3], const fnav_nav_frame_t *f, double *yaw)
 {
     double c[3][3], hx, hy;
@@ -1412,14 +1424,7 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
             }
             if (heading_of(ref_b, f, &yaw)) {
                 if (have) {
-                    double dyaw = yaw - yaw_prev;
-                    while (dyaw > M_PI) {
-                        dyaw -= 2.0 * M_PI;
-                    }
-                    while (dyaw <= -M_PI) {
-                        dyaw += 2.0 * M_PI;
-                    }
-                    yaw_acc += dyaw;
+                    yaw_acc += wrap_step(yaw - yaw_prev);
                 }
                 yaw_prev = yaw;
                 have = 1;
@@ -1519,14 +1524,7 @@ int hx_nav_write_strides(FILE *f, const hx_traj_t *t)
                 len = sqrt(l2);
                 dh = 0.0 - dz; /* n is z down */
                 if (heading_of(ref_b, a, &ya) && heading_of(ref_b, b, &yb)) {
-                    double d = yb - ya;
-                    while (d > M_PI) {
-                        d -= 2.0 * M_PI;
-                    }
-                    while (d <= -M_PI) {
-                        d += 2.0 * M_PI;
-                    }
-                    dpsi = d * 180.0 / M_PI;
+                    dpsi = wrap_step(yb - ya) * 180.0 / M_PI;
                 }
                 /* the height above the line from a to b, at the point of the
                  * line the frame's horizontal position projects to */

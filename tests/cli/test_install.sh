@@ -10,12 +10,18 @@
 # is rebuilt in double and footnav.pc makes the program double too; `make
 # uninstall` with the same variables leaves no file.
 # The installs build in a scratch directory (BUILD=$T/build, about 15 s
-# each): the make running this test (e.g. make sanitize, BUILD=build/san
-# SAN=...) passes its command-line variables down through MAKEFLAGS and the
-# environment, both cleared here (with SAN and OPT from make sanitize the
-# library was built with ASan + UBSan, and the program, linked without
-# them, did not link).
+# each): the make running this test passes its command-line variables down
+# through MAKEFLAGS and the environment, both cleared here (with SAN and OPT
+# from make sanitize the library was built with ASan + UBSan, and the
+# program, linked without them, did not link). Under make sanitize the test
+# is not run: cleared, it would repeat make test's run.
 set -u
+if [ -n "${SAN:-}" ]; then
+    # make sanitize: the installs below clear SAN and build the same
+    # unsanitized library and program as make test's run of this test did
+    echo "test_install.sh: not run under make sanitize (it builds without the sanitizers, as under make test)"
+    exit 0
+fi
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 . "$(dirname "$0")/lib.sh"
