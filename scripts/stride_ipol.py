@@ -153,7 +153,9 @@ def foot(rows, evs, oevs, tb, ub, c0, rate, last):
             excluded.append((s0, s1))
             continue
         evaluated.append(j)
-    res = dict(expected=len(evaluated), rows=len(r), missed=0, spurious=0, fo=[], fs=[], st=[], cad=[])
+    res = dict(expected=len(evaluated), rows=len(r), missed=0, spurious=0, fo=[], fs=[], st=[], cad=[],
+               # rows of a short step whose foot-off is not before its foot-strike (swing_s empty), by how much, s
+               late_fo=[(x["fo"] - x["fs"]) / rate for x in r if x["fo"] is not None and x["fo"] >= x["fs"]])
     for j in evaluated:
         if j not in owner:
             res["missed"] += 1
@@ -219,7 +221,7 @@ def main():
         trials = sorted(found, key=lambda n: tuple(int(x) for x in n.split("-")))
     if not trials:
         sys.exit("no trial 1-x, 2-x or 3-x in " + d)
-    tot = dict(expected=0, rows=0, missed=0, spurious=0, fo=[], fs=[], st=[], cad=[])
+    tot = dict(expected=0, rows=0, missed=0, spurious=0, fo=[], fs=[], st=[], cad=[], late_fo=[])
     differ = []
     print("trial foot   expert  rows  matched  missed  spurious  med|FO|  med|FS|  FO_bias  FS_bias  "
           "med|dT|_ms  p90|dT|_ms  (samples at 100 Hz unless ms)")
@@ -258,6 +260,8 @@ def main():
     print("stride time (%d): median |error| %.1f ms, 90th percentile %.1f ms, bias %+.1f ms, largest %.1f ms" % (
         len(tot["st"]), *st, max(abs(e) for e in tot["st"]) if tot["st"] else float("nan")))
     print("cadence     (%d): median |error| %.2f steps/min, 90th percentile %.2f, bias %+.2f" % (len(tot["cad"]), *cad))
+    print("foot-off not before foot-strike (swing_s empty): %d of %d rows, by %.2f s at most" % (
+        len(tot["late_fo"]), tot["rows"], max(tot["late_fo"], default=0.0)))
     if eval_rows is not None:
         if differ:
             sys.exit("eval's table differs:\n" + "\n".join(differ))
