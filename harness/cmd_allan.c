@@ -2241,7 +2241,7 @@ int hx_cmd_allan(int argc, char **argv)
 {
     hx_args_t a;
     run_t *R;
-    int rc, i, exit_code = HX_EXIT_OK, input_rc;
+    int rc, i, exit_code = HX_EXIT_OK, input_rc, npaper = 0;
     double rate_opt = 0.0, seed_d = 1.0, nsim_d = 0.0;
     long per_octave = 4, column = 0;
     const char *series, *path, *s_est;
@@ -2486,6 +2486,18 @@ int hx_cmd_allan(int argc, char **argv)
         if (R->ch[i].underflow) {
             exit_code = HX_EXIT_DATA;
         }
+        npaper += R->ch[i].id_ok && R->ch[i].id.paper_ok;
+    }
+    if (npaper > 0 && R->rate_hz > tau_max_samples(R) * (1.0 + 1e-9)) {
+        /* the paper's sigma_v, the ADEV at 1 s, lies beyond the tenth of the
+         * record the identification keeps to: only the profile's bound said
+         * so (write_profile()), the paper's column of a 5 s log read it
+         * without a word (2026-11-30) */
+        hx_warn(CMD, "%s: the paper's sigma_v of %d channel%s (its column of the parameter table: the ADEV at 1 s) "
+                     "is read beyond the longest tau the identification keeps to, %.3g s (--max-tau-frac of the "
+                     "%.3g-s record): it rests on a few averages; record %.3g s or more (docs/allan.md, \"Command\")",
+                R->source, npaper, npaper == 1 ? "" : "s", tau_max_samples(R) / R->rate_hz,
+                (double)R->n / R->rate_hz, 1.0 / R->tau_max_frac);
     }
     if (!hx_flag(&a, "--no-sim") && !grid_streamable(R)) {
         hx_warn(CMD, "simulation check skipped: it runs the streaming estimator, which cannot track every --m");

@@ -92,6 +92,15 @@ expect_err "five.profile: the white noise of 6 channels (the bound's, above) is 
 expect_exit 0 "10 s: a profile" "$H" allan "$T/ten.csv" --no-sim --quiet --profile "$T/ten.profile"
 grep -q "beyond the longest tau the identification keeps to" "$T/err" && fail "10 s: the short-record warning" ||
     pass "10 s: 1 s within the identified range, no short-record warning"
+# ... and without --profile the paper's column read its sigma_v there too, the ADEV at 1 s beyond the tau the
+# identification keeps to, without a word (only the profile's bound warned): now a warning says so, as for the
+# profile; a 10 s record, whose 1 s lies within its tenth, gets none
+expect_exit 0 "5 s: the paper's column" "$H" allan "$T/five.csv" --no-sim --quiet
+expect_err "five.csv: the paper's sigma_v of 6 channels (its column of the parameter table: the ADEV at 1 s) is read beyond the longest tau the identification keeps to, 0.5 s (--max-tau-frac of the 5-s record): it rests on a few averages; record 10 s or more (docs/allan.md, \"Command\")" \
+    "a 5 s log: the paper's sigma_v beyond the identified range is said"
+expect_exit 0 "10 s: the paper's column" "$H" allan "$T/ten.csv" --no-sim --quiet
+grep -q "beyond the longest tau the identification keeps to" "$T/err" && fail "10 s: the paper's sigma_v warned as beyond the range" ||
+    pass "10 s: the paper's sigma_v within the identified range, no warning"
 # a log too short for any Allan point (the shortest tau, 1 sample, beyond 10 % of 2 samples): until 2026-11-29
 # exit 0 with empty tables and every value n/a (exit 1 only with --profile; found by the ident review); now an
 # error naming the samples it needs, as a record of under 2 samples is, exit 1, no output written
