@@ -379,10 +379,16 @@ VERSION      ?= 0.0.0
 HEADERS      := $(wildcard include/footnav/*.h)
 
 # A directory under PREFIX is written relative to ${prefix} in footnav.pc,
-# so that pkg-config --define-prefix can move the tree.
-pc_dir = $(patsubst $(PREFIX)/%,$${prefix}/%,$(1))
+# so that pkg-config --define-prefix can move the tree. pkg-config splits
+# values at blanks: a space in a path is written "\ " (pkg-config keeps the
+# backslash in its output, -I/opt/my\ dir/include, for the shell that reads
+# the command line), and is hidden from patsubst, which splits at blanks too.
+pc_empty :=
+pc_space := $(pc_empty) $(pc_empty)
+pc_hide = $(subst $(pc_space),<fnav-space>,$(1))
+pc_dir = $(subst <fnav-space>,\ ,$(patsubst $(call pc_hide,$(PREFIX))/%,$${prefix}/%,$(call pc_hide,$(1))))
 define FOOTNAV_PC
-prefix=$(PREFIX)
+prefix=$(subst $(pc_space),\ ,$(PREFIX))
 libdir=$(call pc_dir,$(LIBDIR))
 includedir=$(call pc_dir,$(INCLUDEDIR))
 
@@ -396,10 +402,10 @@ endef
 install: all
 	$(file >$(BUILD)/footnav.pc,$(FOOTNAV_PC))
 	$(INSTALL) -d '$(DESTDIR)$(LIBDIR)' '$(DESTDIR)$(PKGCONFIGDIR)' '$(DESTDIR)$(INCLUDEDIR)/footnav' '$(DESTDIR)$(BINDIR)'
-	$(INSTALL_DATA) $(LIB) '$(DESTDIR)$(LIBDIR)/libfootnav.a'
-	$(INSTALL_DATA) $(HEADERS) '$(DESTDIR)$(INCLUDEDIR)/footnav'
-	$(INSTALL_DATA) $(BUILD)/footnav.pc '$(DESTDIR)$(PKGCONFIGDIR)/footnav.pc'
-	$(INSTALL_PROGRAM) $(HARNESS) '$(DESTDIR)$(BINDIR)/$(HARNESS_NAME)'
+	$(INSTALL_DATA) '$(LIB)' '$(DESTDIR)$(LIBDIR)/libfootnav.a'
+	$(INSTALL_DATA) $(foreach h,$(HEADERS),'$(h)') '$(DESTDIR)$(INCLUDEDIR)/footnav'
+	$(INSTALL_DATA) '$(BUILD)/footnav.pc' '$(DESTDIR)$(PKGCONFIGDIR)/footnav.pc'
+	$(INSTALL_PROGRAM) '$(HARNESS)' '$(DESTDIR)$(BINDIR)/$(HARNESS_NAME)'
 
 uninstall:
 	rm -f '$(DESTDIR)$(LIBDIR)/libfootnav.a' '$(DESTDIR)$(PKGCONFIGDIR)/footnav.pc' '$(DESTDIR)$(BINDIR)/$(HARNESS_NAME)'

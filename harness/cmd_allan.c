@@ -1235,6 +1235,15 @@ static double ar1_floor_samples(void)
 {
     return ceil(HX_ALLAN_AR1_MIN_BUMP_SAMPLES / 1.89);
 }
+
+/* Whether the Gauss-Markov bound's T, t_BS / 1.89, lies under that floor
+ * (an Allan minimum under HX_ALLAN_AR1_MIN_BUMP_SAMPLES): a correlation time
+ * the identification refuses as the sensor's own filtering, which the bound
+ * then does not state either; profile_model() raises it to the floor */
+static int bound_at_floor(const run_t *R, const chan_t *ch)
+{
+    return (double)ch->id.paper.t_bs_s * R->rate_hz / 1.89 < ar1_floor_samples();
+}
 static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m);
 
 static void print_params(const run_t *R)
@@ -1306,9 +1315,14 @@ static void print_params(const run_t *R)
                    "0.6174: the true T may be longer; docs/allan.md):\n",
                    R->is_series ? "A log's --profile would hold" : "--profile holds");
         }
-        printf("%-6s %-6s | %s: sigma_v %.3g, tau %.0f samples (%s s), sigma_bias %.3g\n", ch->label, ch->unit,
+        printf("%-6s %-6s | %s: sigma_v %.3g, tau %.0f samples (%s s), sigma_bias %.3g", ch->label, ch->unit,
                R->is_series ? "bound" : "profile", m.white, m.gm_tau_s * R->rate_hz, fmt_s(b1, sizeof b1, m.gm_tau_s),
                m.gm_sigma);
+        if (bound_at_floor(R, ch)) {
+            printf(" (T raised to the %.0f-sample floor from t_BS / 1.89 = %s s)", ar1_floor_samples(),
+                   fmt_s(b1, sizeof b1, (double)ch->id.paper.t_bs_s / 1.89));
+        }
+        printf("\n");
     }
     for (i = 0; i < R->nch; i++) {
         nother += R->ch[i].id_ok && R->ch[i].id.paper_ok;
@@ -1524,6 +1538,8 @@ static int write_json(const run_t *R, const char *path)
             if (bound >= 0) {
                 cJSON_AddStringToObject(p, "basis", bound ? "bound" : "fit");
                 json_model(p, &m, R->rate_hz);
+                /* the bound's T raised to the floor (t_BS / 1.89 under it) */
+                cJSON_AddBoolToObject(p, "tau_at_floor", bound == 1 && bound_at_floor(R, ch));
             }
         }
         t = cJSON_AddArrayToObject(c, "table");
@@ -1948,9 +1964,14 @@ static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m)
      * so T = t_min / 1.89 and sigma = ADEV_min / 0.6174 put the model's bump
      * on the lowest measured point. No upper bound for the bias in
      * general: a pure Gauss-Markov channel (T = 1 s, sigma 0.004, no
-     * white noise, 10^4 s) gets T = 520 s, sigma 2.4e-4 (docs/allan.md). */
+     * white noise, 10^4 s) gets T = 520 s, sigma 2.4e-4 (docs/allan.md).
+     * A minimum under HX_ALLAN_AR1_MIN_BUMP_SAMPLES would give a T under the
+     * floor the fit is refused for (21-26 samples from a minimum near 0.45 s
+     * at 100 Hz): T is then the floor, the shortest correlation time the
+     * curve can tell from the sensor's filtering, its bump at the minimum's
+     * height where the curve lies at or above it. */
     m->white = (double)ch->id.paper.sigma_v;
-    m->gm_tau_s = (double)ch->id.paper.t_bs_s / 1.89;
+    m->gm_tau_s = bound_at_floor(R, ch) ? ar1_floor_samples() / R->rate_hz : (double)ch->id.paper.t_bs_s / 1.89;
     m->gm_sigma = (double)ch->id.paper.bs / 0.6174;
     return 1;
 }
@@ -2075,12 +2096,26 @@ static int write_profile(const run_t *R, const char *path, const char *name)
             /* which way it bounds: "bound T = 173 s" on a channel whose T is
              * 720 s read as an upper bound (a user review, 2026-11-29); it is
              * the AR(1) whose bump sits on the minimum, no bound on sigma */
-            hx_warn(CMD, "%s: %s; the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV at 1 s; %s) and the "
-                         "Gauss-Markov bound T = %s s, sigma = %.3g %s, whose Allan bump sits on the minimum at "
-                         "%s s (T from the minimum's position: the true T may be longer; no upper bound on the "
-                         "bias, docs/allan.md)",
-                    path, why, m.white, ch->unit, fitw, fmt_s(tb, sizeof tb, m.gm_tau_s), m.gm_sigma, ch->unit,
-                    fmt_s(mb, sizeof mb, (double)ch->id.paper.t_bs_s));
+            if (bound_at_floor(R, ch)) {
+                /* t_BS / 1.89 under the floor: T = 0.24 s was stated for a
+                 * fit refused for its T under 0.53 s (2026-11-30) */
+                char t0[32], bb[32];
+                hx_warn(CMD, "%s: %s; the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV at 1 s; %s) and the "
+                             "Gauss-Markov bound T = %s s (raised to the floor of %.0f samples from t_BS / 1.89 = %s "
+                             "s: a shorter T is not told from the sensor's filtering), sigma = %.3g %s, whose Allan "
+                             "bump at %s s has the height of the minimum at %s s (the true T may be longer; no upper "
+                             "bound on the bias, docs/allan.md)",
+                        path, why, m.white, ch->unit, fitw, fmt_s(tb, sizeof tb, m.gm_tau_s), ar1_floor_samples(),
+                        fmt_s(t0, sizeof t0, (double)ch->id.paper.t_bs_s / 1.89), m.gm_sigma, ch->unit,
+                        fmt_s(bb, sizeof bb, 1.89 * m.gm_tau_s), fmt_s(mb, sizeof mb, (double)ch->id.paper.t_bs_s));
+            } else {
+                hx_warn(CMD, "%s: %s; the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV at 1 s; %s) and the "
+                             "Gauss-Markov bound T = %s s, sigma = %.3g %s, whose Allan bump sits on the minimum at "
+                             "%s s (T from the minimum's position: the true T may be longer; no upper bound on the "
+                             "bias, docs/allan.md)",
+                        path, why, m.white, ch->unit, fitw, fmt_s(tb, sizeof tb, m.gm_tau_s), m.gm_sigma, ch->unit,
+                        fmt_s(mb, sizeof mb, (double)ch->id.paper.t_bs_s));
+            }
         }
         if (k < 3) {
             p.accel_noise_mps2_rthz[k] = (fnav_real_t)(m.white * si);
@@ -2206,7 +2241,7 @@ int hx_cmd_allan(int argc, char **argv)
 {
     hx_args_t a;
     run_t *R;
-    int rc, i, exit_code = HX_EXIT_OK, input_rc;
+    int rc, i, exit_code = HX_EXIT_OK, input_rc, npaper = 0;
     double rate_opt = 0.0, seed_d = 1.0, nsim_d = 0.0;
     long per_octave = 4, column = 0;
     const char *series, *path, *s_est;
@@ -2451,6 +2486,18 @@ int hx_cmd_allan(int argc, char **argv)
         if (R->ch[i].underflow) {
             exit_code = HX_EXIT_DATA;
         }
+        npaper += R->ch[i].id_ok && R->ch[i].id.paper_ok;
+    }
+    if (npaper > 0 && R->rate_hz > tau_max_samples(R) * (1.0 + 1e-9)) {
+        /* the paper's sigma_v, the ADEV at 1 s, lies beyond the tenth of the
+         * record the identification keeps to: only the profile's bound said
+         * so (write_profile()), the paper's column of a 5 s log read it
+         * without a word (2026-11-30) */
+        hx_warn(CMD, "%s: the paper's sigma_v of %d channel%s (its column of the parameter table: the ADEV at 1 s) "
+                     "is read beyond the longest tau the identification keeps to, %.3g s (--max-tau-frac of the "
+                     "%.3g-s record): it rests on a few averages; record %.3g s or more (docs/allan.md, \"Command\")",
+                R->source, npaper, npaper == 1 ? "" : "s", tau_max_samples(R) / R->rate_hz,
+                (double)R->n / R->rate_hz, 1.0 / R->tau_max_frac);
     }
     if (!hx_flag(&a, "--no-sim") && !grid_streamable(R)) {
         hx_warn(CMD, "simulation check skipped: it runs the streaming estimator, which cannot track every --m");

@@ -187,13 +187,36 @@ static int analyse(const hx_log_t *log, const setting_t *st, const fnav_bandwidt
     return 0;
 }
 
+/* The widest group's band, Hz */
+static double widest_band(const result_t *r)
+{
+    return r->group_bw[0] > r->group_bw[1] ? r->group_bw[0] : r->group_bw[1];
+}
+
+/* Whether the answer is only a lower bound: the widest band ends in the top
+ * tenth of the log's band (at NYQ_FRAC of the Nyquist frequency or above),
+ * where the power has not fallen off and the log cannot show where the band
+ * ends (white sensor noise: a static log). The bound is then the answer, or
+ * the log's rate where the rounding lifts the answer above it. Not so where
+ * the rounding alone lifts it above the rate: the band ends well inside. */
+static int fs_lower_bound(const result_t *r, double rate, double *bound_hz)
+{
+    const int lower = widest_band(r) >= NYQ_FRAC * 0.5 * rate;
+    *bound_hz = lower ? (r->overall_fs < rate ? r->overall_fs : rate) : (double)NAN;
+    return lower;
+}
+
 /* paper_dc: the DC mode is segment, the paper's setting and the default,
  * which docs/psd.md does not recommend: the answer line says so (450 Hz on
  * the 820 Hz walk read as the answer where --dc global gives 300 Hz; a user
- * review) */
-static void print_result(const char *title, const result_t *r, const fnav_bandwidth_config_t *bc, int paper_dc)
+ * review). A lower bound (fs_lower_bound()) is said there too: only a
+ * warning said so, and the line read as a measurement (2026-11-30). */
+static void print_result(const char *title, const result_t *r, const fnav_bandwidth_config_t *bc, double rate,
+                         double thr, int paper_dc)
 {
     const int rounded = bc->round_hz > FNAV_R(0.0);
+    char lower[256] = "";
+    double bound_hz;
     char rnd[64];
     int c, g, none = 0;
     /* --round 0 said "multiples of 0 Hz" */
@@ -226,13 +249,23 @@ static void print_result(const char *title, const result_t *r, const fnav_bandwi
         printf("  lowest usable sampling frequency: none (no channel has power)\n");
         return;
     }
+    if (fs_lower_bound(r, rate, &bound_hz)) {
+        char of[64] = "";
+        if (r->overall_fs > rate * (1.0 + 1e-9)) {
+            snprintf(of, sizeof of, " of %.4g Hz, the log's rate", bound_hz);
+        }
+        snprintf(lower, sizeof lower,
+                 ", only a lower bound%s (%.0f %% of the power reaches %.1f Hz, %.0f %% of the Nyquist frequency: "
+                 "the log cannot show where the band ends)",
+                 of, 100.0 * thr, widest_band(r), 100.0 * widest_band(r) / (0.5 * rate));
+    }
     /* a tie is said as one: on a static log both groups reach the Nyquist frequency alike */
-    printf("  lowest usable sampling frequency: %.*f Hz (%s; %.0f %% of the power, %s)%s\n", rounded ? 0 : 1,
+    printf("  lowest usable sampling frequency: %.*f Hz (%s; %.0f %% of the power, %s)%s%s\n", rounded ? 0 : 1,
            r->overall_fs,
            r->group_fs[0] > r->group_fs[1]   ? "the accelerometers limit it"
            : r->group_fs[0] < r->group_fs[1] ? "the gyroscopes limit it"
                                              : "accelerometers and gyroscopes alike",
-           100.0 * (double)bc->threshold, rnd,
+           100.0 * (double)bc->threshold, rnd, lower,
            paper_dc ? " (--dc segment, the paper's setting; --dc global is recommended: docs/psd.md)" : "");
 }
 
@@ -801,7 +834,7 @@ int hx_cmd_psd(int argc, char **argv)
                  st.wc.window == FNAV_WINDOW_HAMMING ? "Hamming" : (st.wc.window == FNAV_WINDOW_HANN ? "Hann" : "rect"),
                  (unsigned)st.wc.nfft, st.wc.symmetric ? " (symmetric)" : "", (unsigned)st.wc.overlap,
                  k_dc_names[dc_mode], (unsigned)res.nseg, res.df, 100.0 * thr, dct, rndt);
-        print_result(title, &res, &bc, dc_mode == 0);
+        print_result(title, &res, &bc, rate, thr, dc_mode == 0);
     }
     {
         /* a group whose every axis is constant after the DC treatment has no
@@ -820,7 +853,7 @@ int hx_cmd_psd(int argc, char **argv)
                     none[0] ? "accelerometer" : "gyroscope", none[0] ? "gyroscopes" : "accelerometers");
         }
     }
-    bw_max = res.group_bw[0] > res.group_bw[1] ? res.group_bw[0] : res.group_bw[1];
+    bw_max = widest_band(&res);
     above_rate = res.overall_fs > rate * (1.0 + 1e-9);
     at_nyquist = above_rate || bw_max >= NYQ_FRAC * 0.5 * rate;
     if (at_nyquist && !above_rate) {
@@ -930,6 +963,18 @@ int hx_cmd_psd(int argc, char **argv)
         cJSON_AddItemToObject(root, "result", json_result(&res));
         cJSON_AddBoolToObject(root, "fs_above_log_rate", above_rate);
         cJSON_AddBoolToObject(root, "band_at_nyquist", at_nyquist);
+        {
+            /* the answer as a lower bound, and that bound (null where the
+             * answer is a measurement): band_at_nyquist is true also where
+             * the rounding alone lifts the answer above the rate */
+            double bound_hz;
+            cJSON_AddBoolToObject(root, "fs_is_lower_bound", fs_lower_bound(&res, rate, &bound_hz));
+            if (isfinite(bound_hz)) {
+                cJSON_AddNumberToObject(root, "fs_lower_bound_hz", bound_hz);
+            } else {
+                cJSON_AddNullToObject(root, "fs_lower_bound_hz");
+            }
+        }
         if (hx_flag(&a, "--sensitivity")) {
             cJSON *arr = cJSON_AddArrayToObject(root, "sensitivity");
             int d, k;

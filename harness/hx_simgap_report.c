@@ -440,7 +440,23 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
     }
     fprintf(f, "verdict: %s", r->verdict);
     {
-        int first = 1;
+        int first = 1, nfinal = 0;
+        /* the channels' parameters below are their final refit (the
+         * accepted effects together, on the fit segment), not the steps'
+         * fits printed above them, and were given unlabelled (a jumps step
+         * of rms 0.00875 beside a verdict of rms 0; 2026-11-30) */
+        for (ch = 0; ch < SG_NCH; ch++) {
+            for (i = 0; i < r->ch[ch].nsel; i++) {
+                nfinal += sg_model_find(&r->ch[ch].final, r->ch[ch].sel_id[i]) >= 0;
+            }
+        }
+        if (nfinal > 0 && r->segs.sandwich) {
+            fprintf(f, " (parameters of the final refit on the fit segment, the first and last %.3g %%)",
+                    50.0 * r->opts.fit_frac);
+        } else if (nfinal > 0) {
+            fprintf(f, " (parameters of the final refit on the fit segment, the first %.3g %%)",
+                    100.0 * r->opts.fit_frac);
+        }
         for (ch = 0; ch < SG_NCH; ch++) {
             for (i = 0; i < r->ch[ch].nsel; i++) {
                 const sg_chmodel_t *m = &r->ch[ch].final;

@@ -2214,6 +2214,36 @@ static void test_summary_no_excess_names_the_split(void **state)
     free(r);
 }
 
+/* The verdict's parameters are each channel's final refit (the accepted
+ * effects fitted together on the fit segment), not the fits the steps
+ * above print: a jumps step of rms 0.00875 and a verdict of rms 0 read as
+ * one figure contradicting the other. Until 2026-11-30 they were given
+ * unlabelled; now the verdict says so once, with the fit segment of the
+ * split used, and says nothing where it lists no channel effect. */
+static void test_summary_verdict_labels_final_refit(void **state)
+{
+    sg_result_t *r = hand_result();
+    char *txt;
+    (void)state;
+    r->segs.sandwich = 1;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "\nverdict: explained (parameters of the final refit on the fit segment, the first "
+                                "and last 30 %): vibration ("));
+    free(txt);
+    r->segs.sandwich = 0;
+    r->opts.contiguous = 1;
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "\nverdict: explained (parameters of the final refit on the fit segment, the first "
+                                "60 %): vibration ("));
+    free(txt);
+    r->ch[0].nsel = 0;
+    snprintf(r->verdict, sizeof r->verdict, "none");
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "\nverdict: none\n"));
+    free(txt);
+    free(r);
+}
+
 /* A fraction within half a percent of zero is printed as 0 %, not -0 %: a
  * candidate that explains -0.1 % of the held-out excess (68 %: -0.4 to
  * 0.2 %) read "explains -0 % of the excess (68 %: -0..0 %)" until
@@ -2456,6 +2486,7 @@ int main(void)
         cmocka_unit_test(test_json_jitter_has_no_first_event),
         cmocka_unit_test(test_summary_no_excess_names_the_split),
         cmocka_unit_test(test_summary_no_negative_zero_percent),
+        cmocka_unit_test(test_summary_verdict_labels_final_refit),
         cmocka_unit_test(test_summary_not_attempted_says_why),
         cmocka_unit_test(test_summary_defines_g_as_computed),
         cmocka_unit_test(test_json_unconfirmed_not_tried),

@@ -92,6 +92,15 @@ expect_err "five.profile: the white noise of 6 channels (the bound's, above) is 
 expect_exit 0 "10 s: a profile" "$H" allan "$T/ten.csv" --no-sim --quiet --profile "$T/ten.profile"
 grep -q "beyond the longest tau the identification keeps to" "$T/err" && fail "10 s: the short-record warning" ||
     pass "10 s: 1 s within the identified range, no short-record warning"
+# ... and without --profile the paper's column read its sigma_v there too, the ADEV at 1 s beyond the tau the
+# identification keeps to, without a word (only the profile's bound warned): now a warning says so, as for the
+# profile; a 10 s record, whose 1 s lies within its tenth, gets none
+expect_exit 0 "5 s: the paper's column" "$H" allan "$T/five.csv" --no-sim --quiet
+expect_err "five.csv: the paper's sigma_v of 6 channels (its column of the parameter table: the ADEV at 1 s) is read beyond the longest tau the identification keeps to, 0.5 s (--max-tau-frac of the 5-s record): it rests on a few averages; record 10 s or more (docs/allan.md, \"Command\")" \
+    "a 5 s log: the paper's sigma_v beyond the identified range is said"
+expect_exit 0 "10 s: the paper's column" "$H" allan "$T/ten.csv" --no-sim --quiet
+grep -q "beyond the longest tau the identification keeps to" "$T/err" && fail "10 s: the paper's sigma_v warned as beyond the range" ||
+    pass "10 s: the paper's sigma_v within the identified range, no warning"
 # a log too short for any Allan point (the shortest tau, 1 sample, beyond 10 % of 2 samples): until 2026-11-29
 # exit 0 with empty tables and every value n/a (exit 1 only with --profile; found by the ident review); now an
 # error naming the samples it needs, as a record of under 2 samples is, exit 1, no output written
@@ -456,7 +465,9 @@ expect_err "the AR(1) bias of gx is not identifiable within the record (no fit w
     "no fit: the fitted range named"
 # "the bound T = 173 s, sigma = 0.00384 deg/s" on a channel whose T is 720 s read as an upper bound; the bound is
 # the AR(1) whose bump sits on the Allan minimum, and the warning and the table's note now say which way it goes
-expect_err "and the Gauss-Markov bound T = .*, whose Allan bump sits on the minimum at 0.96 s (T from the minimum's position: the true T may be longer; no upper bound on the bias, docs/allan.md)" \
+# (here the minimum, 0.96 s, puts t_BS / 1.89 under the 53-sample floor and T is the floor's, below; a minimum
+# above the floor is checked with the filtered white noise further down)
+expect_err "and the Gauss-Markov bound T = 0.53 s (raised to the floor of 53 samples from t_BS / 1.89 = 0.508 s: .*), sigma = .*, whose Allan bump at 1 s has the height of the minimum at 0.96 s (the true T may be longer; no upper bound on the bias, docs/allan.md)" \
     "the bound's warning says which way it bounds"
 expect_out "Gauss-Markov bound from the Allan minimum (T = t_BS / 1.89, sigma_bias = BS / 0.6174: the true T may be longer; docs/allan.md):" \
     "the table's note says which way the bound goes"
@@ -555,6 +566,8 @@ expect_exit 0 "white noise through a short filter, a profile" "$H" allan "$T/fil
 expect_err "the fit's AR(1) of gx has T = " "a short AR(1) is said to be refused"
 expect_out "AR(1) not resolved by the curve (T below the 53-sample floor): see below" \
     "a short AR(1) is marked in the table"
+expect_err "and the Gauss-Markov bound T = 27.1 s, sigma = .*, whose Allan bump sits on the minimum at 51.2 s (T from the minimum's position: the true T may be longer; no upper bound on the bias, docs/allan.md)" \
+    "a minimum above the floor: the bound's T is t_BS / 1.89, its bump on the minimum"
 prof_ok() { # PROFILE WHITE_ACCEL WHITE_GYRO TOL: every white noise within TOL of its value, no tau under 0.528 s
     "$PY" - "$@" <<'PYEOF'
 import sys
@@ -574,6 +587,43 @@ PYEOF
 }
 prof_ok "$T/filt.profile" 0.005 0.0005 0.1 >"$T/pyout" && pass "filtered white noise: the profile holds its white noise, no bias of a few samples" ||
     fail "filtered white noise: profile $(cat "$T/pyout")"
+# The bound a refused channel gets, T = t_BS / 1.89, could itself sit under the floor the fit was refused for: an
+# Allan minimum under 100 samples gave a profile bias of T = 21-24 samples, a correlation time the identification
+# calls the sensor's filtering, not a bias. Now the bound's T is raised to the floor, and the warning, the table's
+# line and the JSON's profile object (tau_at_floor) say so. 300 s at 100 Hz of the filtered white noise above plus
+# a random walk (minimum near 0.45 s); with --fit-extra the walk goes to K and the fit's AR(1) to the filter.
+"$PY" -c "
+import math, random, sys
+r = random.Random(3)
+sd, mean, L = [0.05] * 3 + [0.005] * 3, [0, 0, 9.81, 0, 0, 0], 4
+h = [[r.gauss(0, 1) for _ in range(L)] for _ in range(6)]
+b = [0.0] * 6
+with open(sys.argv[1], 'w') as f:
+    f.write('t,ax,ay,az,gx,gy,gz\n')
+    for i in range(30000):
+        row = []
+        for c in range(6):
+            h[c].pop(0)
+            h[c].append(r.gauss(0, 1))
+            b[c] += 0.04 * sd[c] * r.gauss(0, 1)
+            row.append(mean[c] + b[c] + sd[c] * (math.sqrt(0.5) * r.gauss(0, 1) + math.sqrt(0.5) * sum(h[c]) / L))
+        f.write('%.2f,%s\n' % (i / 100, ','.join('%.7g' % v for v in row)))" "$T/filtrw.csv"
+expect_exit 0 "filtered white noise and a random walk, --fit-extra, a profile" "$H" allan "$T/filtrw.csv" --no-sim \
+    --quiet --fit-extra --profile "$T/filtrw.profile" --json "$T/filtrw.json"
+expect_err "the fit's AR(1) of gx has T = .* under the floor of 53 samples" "minimum under the floor: the fit is refused for its T"
+json "$T/filtrw.json" "([c for c in j['channels'] if c['paper']['t_bs_s'] / 1.89 < 0.53] and
+    all(c['profile']['basis'] == 'bound' and c['profile']['tau_at_floor'] == (c['paper']['t_bs_s'] / 1.89 < 0.53) and
+        (c['profile']['tau_samples'] == 53 if c['profile']['tau_at_floor'] else c['profile']['tau_samples'] > 53)
+        for c in j['channels']))" &&
+    pass "a bound under the floor: the JSON's profile holds T = 53 samples, tau_at_floor" ||
+    fail "a bound under the floor, JSON: $(cat "$T/pyerr"; grep -o '"tau_samples":[^,]*' "$T/filtrw.json")"
+grep -E "^(accel|gyro)_tau_s = " "$T/filtrw.profile" | awk '{ for (k = 3; k <= 5; k++) if ($k < 0.53 - 1e-6) bad++ }
+    END { exit bad ? 1 : 0 }' && pass "a bound under the floor: no profile tau under 0.53 s" ||
+    fail "a bound under the floor: profile $(grep _tau_s "$T/filtrw.profile")"
+expect_err "the Gauss-Markov bound T = 0.53 s (raised to the floor of 53 samples from t_BS / 1.89 = .* s: a shorter T is not told from the sensor.s filtering), sigma = .*, whose Allan bump at 1 s has the height of the minimum at .* s" \
+    "a bound under the floor: the warning says T was raised to the floor"
+expect_out_re "^Gyr x  deg/s  \| profile: sigma_v [0-9.]+, tau 53 samples \(0.53 s\), sigma_bias [0-9.]+ \(T raised to the 53-sample floor from t_BS / 1.89 = [0-9.]+ s\)$" \
+    "a bound under the floor: the table's profile line says so"
 if [ -n "$F30" ]; then
     "$H" convert "$F30" "$T/a10.csv" --end 600 >/dev/null 2>&1 || fail "convert the first 10 minutes of log 1"
     expect_exit 0 "10 minutes of ADIS16405 log 1, a profile" "$H" allan "$T/a10.csv" --no-sim --quiet \

@@ -7,8 +7,9 @@
 # builds against the installed files only (it does not before the install),
 # initialises a navigator with a built-in profile and navigates 7 s of a
 # sensor at rest; installed with FNAV_DEFS=-DFNAV_USE_DOUBLE=1 the library
-# is rebuilt in double and footnav.pc makes the program double too; `make
-# uninstall` with the same variables leaves no file.
+# is rebuilt in double and footnav.pc makes the program double too; a
+# PREFIX with a space installs, and the program builds from pkg-config's
+# escaped flags; `make uninstall` with the same variables leaves no file.
 # The installs build in a scratch directory (BUILD=$T/build, about 15 s
 # each): the make running this test passes its command-line variables down
 # through MAKEFLAGS and the environment, both cleared here (with SAN and OPT
@@ -182,6 +183,43 @@ if build_prog "$D" prog_float >"$T/err" 2>&1; then
 else
     fail "the program does not build with pkg-config's flags (float)"; cat "$T/err"
 fi
+
+# A PREFIX with a space (no DESTDIR: installed where it is used). footnav.pc
+# held it as written, and pkg-config splits its values at blanks:
+# `-I/x/my prefix/include` became -I/x/my and a stray prefix/include. Its
+# variables now escape a space with a backslash, which pkg-config keeps in
+# what it prints (-I/x/my\ prefix/include), for the shell that reads the
+# command line (make's recipes, or eval here) to join again. A program
+# then builds from `pkg-config --cflags --libs footnav` alone, and make
+# install and make uninstall quote the paths they are given.
+P="$T/my prefix"
+expect_exit 0 "make install PREFIX='.../my prefix'" \
+    "$MAKE" -C "$ROOT" install PREFIX="$P" BUILD="$T/build" HARNESS="$T/build/harness"
+expected_files | sed 's|^usr/||' >"$T/want"
+installed_files "$P" >"$T/got"
+if cmp -s "$T/want" "$T/got"; then
+    pass "make install into a PREFIX with a space put exactly the expected files"
+else
+    fail "make install into a PREFIX with a space (- expected, + installed)"
+    diff -u "$T/want" "$T/got" | sed -n '3,$p'
+fi
+esc=$(printf '%s' "$P" | sed 's/ /\\\\ /g')
+PKG_CONFIG_LIBDIR="$P/lib/pkgconfig" pkg-config --cflags --libs footnav >"$T/out" 2>"$T/err"
+expect_out_re "^-I$esc/include +-L$esc/lib +-lfootnav +-lm *$" \
+    "pkg-config --cflags --libs footnav: the PREFIX's space escaped, one word each"
+flags=$(PKG_CONFIG_LIBDIR="$P/lib/pkgconfig" pkg-config --cflags --libs footnav)
+if (cd "$T" && eval "$CC -std=c99 -pedantic -Wall -Wextra -Werror -o prog_space prog.c $flags") >"$T/err" 2>&1; then
+    pass "a program builds from pkg-config --cflags --libs footnav with a space in PREFIX"
+    expect_exit 0 "the program runs (PREFIX with a space)" "$T/prog_space"
+    expect_out_re "^profile navchip, fnav_real_t 4 bytes: 1400 frames, 400 aligned" "the same navigation (PREFIX with a space)"
+else
+    fail "the program does not build from pkg-config's flags with a space in PREFIX"; cat "$T/err"
+fi
+expect_exit 0 "make uninstall PREFIX='.../my prefix'" \
+    "$MAKE" -C "$ROOT" uninstall PREFIX="$P" BUILD="$T/build" HARNESS="$T/build/harness"
+installed_files "$P" >"$T/got"
+if [ -s "$T/got" ]; then fail "make uninstall left files under the PREFIX with a space:"; cat "$T/got"; else
+    pass "make uninstall left no file under the PREFIX with a space"; fi
 
 # The double build: FNAV_DEFS at install rebuilds the same BUILD in double
 # (the objects follow FNAV_DEFS) and footnav.pc passes it on; a program

@@ -285,6 +285,13 @@ expect_out "DC: each segment's mean removed (a high-pass near f_s/nfft = 1.56 Hz
 expect_out "band from 0 Hz holding 95 % of the total power" "the output states its criterion"
 "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["band_at_nyquist"] is True and d["fs_above_log_rate"] is False and d["result"]["fs_hz"] == 100, d' "$T/s100.json" &&
     pass "JSON band_at_nyquist on a static log" || fail "JSON band_at_nyquist on a static log"
+# ... yet only the warning said that 100 Hz is a lower bound: the summary line read as a measurement, and the JSON's
+# band_at_nyquist is true also where the rounding alone lifts the answer (below); now the summary line says so, and
+# the JSON's fs_is_lower_bound and fs_lower_bound_hz (2026-11-30)
+expect_out_re "^  lowest usable sampling frequency: 100 Hz \(accelerometers and gyroscopes alike; 95 % of the power, multiples of 50 Hz\), only a lower bound \(95 % of the power reaches 4[0-9.]+ Hz, 9[0-9] % of the Nyquist frequency: the log cannot show where the band ends\) \(--dc segment, " \
+    "static log at 100 Hz: the summary line says the answer is a lower bound"
+"$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_is_lower_bound"] is True and d["fs_lower_bound_hz"] == 100, d' "$T/s100.json" &&
+    pass "JSON fs_is_lower_bound on a static log" || fail "JSON fs_is_lower_bound on a static log: $(head -c 300 "$T/s100.json")"
 # the same log at 10 Hz: white noise to the 5 Hz Nyquist frequency, 2 x 4.75 Hz rounded up to 50 Hz, above the
 # log's own rate: said, and marked in the JSON
 awk -F, 'NR == 1 { print; next } { $1 = sprintf("%.1f", (NR - 2) / 10.0); print }' OFS=, "$T/static.csv" >"$T/static10.csv"
@@ -292,15 +299,27 @@ expect_exit 0 "static log at 10 Hz" "$H" psd "$T/static10.csv" --json "$T/s10.js
 expect_err "is above the log's own rate (10 Hz)" "an answer above the log's rate is flagged"
 "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_above_log_rate"] is True and d["band_at_nyquist"] is True and d["result"]["fs_hz"] == 50, d' "$T/s10.json" &&
     pass "JSON fs_above_log_rate" || fail "JSON fs_above_log_rate"
+# above the log's rate the bound is the rate itself (the warning's "read it as 'at least 10 Hz'"), not the answer
+expect_out_re "^  lowest usable sampling frequency: 50 Hz \(.*\), only a lower bound of 10 Hz, the log's rate \(95 % of the power reaches 4[0-9.]+ Hz, 9[0-9] % of the Nyquist frequency: the log cannot show where the band ends\)" \
+    "static log at 10 Hz: the summary line gives the lower bound, the log's rate"
+"$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_is_lower_bound"] is True and d["fs_lower_bound_hz"] == 10, d' "$T/s10.json" &&
+    pass "JSON fs_lower_bound_hz above the log's rate: the rate" || fail "JSON fs_lower_bound_hz at 10 Hz: $(head -c 300 "$T/s10.json")"
 # a rounding step above the rate (--round 2000 on the 1000 Hz tone, band 115 Hz): the answer exceeds the rate through
 # the rounding alone; it was said to be because 95 % of the power 'reaches 115.4 Hz, near the Nyquist frequency 500 Hz'
 expect_exit 0 "tone, --round 2000" "$H" psd "$T/tone.csv" --round 2000
+expect_out_re "^  lowest usable sampling frequency: 2000 Hz \([^)]*\) \(--dc segment[^)]*\)$" \
+    "--round 2000: the band ends inside the log's, the answer is no lower bound"
 expect_err "is above the log's own rate (1000 Hz) only through the rounding to multiples of 2000 Hz" \
     "an answer above the rate by the rounding alone is said so"
 ! grep -q "near the Nyquist" "$T/err" && pass "--round 2000: a 115 Hz band is not called near the 500 Hz Nyquist frequency" ||
     fail "--round 2000: a 115 Hz band called near the Nyquist frequency"
 "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_above_log_rate"] is False and d["band_at_nyquist"] is False' "$T/tone.json" &&
     pass "JSON fs_above_log_rate false below the rate" || fail "fs_above_log_rate on the tone"
+"$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_is_lower_bound"] is False and d["fs_lower_bound_hz"] is None' "$T/tone.json" &&
+    pass "JSON fs_is_lower_bound false, fs_lower_bound_hz null, on the tone" || fail "fs_is_lower_bound on the tone"
+expect_exit 0 "tone, --round 2000, --json" "$H" psd "$T/tone.csv" --round 2000 --json "$T/tone2000.json"
+"$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_above_log_rate"] is True and d["band_at_nyquist"] is True and d["fs_is_lower_bound"] is False and d["fs_lower_bound_hz"] is None, d' "$T/tone2000.json" &&
+    pass "JSON: above the rate by the rounding alone, no lower bound" || fail "fs_is_lower_bound with --round 2000: $(head -c 300 "$T/tone2000.json")"
 # a value beyond any sensor (and the core's input range): exit 1, the line and column named
 awk -F, 'NR == 102 { $5 = "1e30" } { print }' OFS=, "$T/tone.csv" >"$T/huge.csv"
 expect_exit 1 "a sample beyond float range" "$H" psd "$T/huge.csv"

@@ -237,7 +237,7 @@ json "$T/hr.json" 'all(c["baseline"]["ar1_tau_s"] >= 0.001 and c["baseline"]["ar
     --out "$T/q.csv" >/dev/null 2>&1 || fail "sim quant"
 head -n 1 "$T/q.csv" | grep -q '^t,ax,ay,az,gx,gy,gz$' && pass "CSV input header" || fail "CSV header"
 expect_exit 0 "static log with quantisation" "$H" simgap "$T/q.csv" --quiet --seeds 8 --json "$T/q.json" --plot "$T/qp"
-grep -q "^verdict: explained: quant" "$T/out" && pass "summary names quant" || fail "summary: $(grep verdict "$T/out")"
+grep -q "^verdict: explained (parameters of the final refit on the fit segment, the first and last 30 %): quant" "$T/out" && pass "summary names quant, its parameters labelled as the final refit" || fail "summary: $(grep verdict "$T/out")"
 json "$T/q.json" 'j["schema"] == "footnav-simgap/1" and j["log"]["domain"] == "static" and j["log"]["domain_from"] == "detected" and j["complete"] is True and "error" not in j' &&
     pass "JSON schema and domain" || fail "JSON schema/domain: $(cat "$T/pyerr")"
 json "$T/q.json" 'j["verdict"]["answer"] == "explained" and j["verdict"]["unconfirmed"] == [] and j["effects"][0]["effect"] == "quant" and j["effects"][0]["rank"] == 1 and [c["channel"] for c in j["effects"][0]["channels"]] == ["gz"]' &&
