@@ -11,8 +11,8 @@
  * a nominal quaternion q_nb plus a three-parameter attitude error in the
  * navigation frame, q_true = dq(a) * q_nb, where a are the generalised
  * Rodrigues parameters with a = 1, f = 4 (a = 4 tan(angle/4) along the axis:
- * equal to the rotation vector to third order, trig-free both ways, singular
- * only at 360 degrees). After each prediction and update the error mean is
+ * the rotation vector up to second order, angle + angle^3/48 + ..., trig-free
+ * both ways, singular only at 360 degrees). After each prediction and update the error mean is
  * folded into q_nb and reset to zero. Roll, pitch and yaw (ZYX) are derived
  * from q_nb for output only, so the filter has no Euler singularity at
  * +-90 degrees of pitch. The covariance of the attitude error is what the
