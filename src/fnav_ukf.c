@@ -86,7 +86,7 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
     size_t b;
     unsigned char *p = (unsigned char *)f;
     int i, n;
-    fnav_real_t lambda;
+    fnav_real_t lambda, nl;
     if (f == NULL || cfg == NULL) {
         return FNAV_E_ARG;
     }
@@ -114,12 +114,18 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
         return FNAV_E_CONFIG;
     }
     n = 9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0);
-    lambda = cfg->alpha * cfg->alpha * ((fnav_real_t)n + cfg->kappa) - (fnav_real_t)n;
+    /* n + lambda = alpha^2 (n + kappa), formed as that product: as n +
+     * (alpha^2 (n + kappa) - n) it cancelled in float32 down to the spacing
+     * of n (9.5e-7 at 15), 1.7 % off the weights at alpha = 1e-3 and 0 at
+     * alpha = 1e-4 (refused); the defaults give lambda = 0 both ways
+     * (test_ukf test_weights_small_alpha) */
+    nl = cfg->alpha * cfg->alpha * ((fnav_real_t)n + cfg->kappa);
+    lambda = nl - (fnav_real_t)n;
     /* n + lambda > 0: the pair weights Wi are positive; beta >= alpha^2,
      * formed as fnav_ukf_predict forms it: the predicted covariance S +
      * (beta - alpha^2) m m^T is a sum of positive semi-definite terms
      * (fnav_ukf.h) */
-    if (!((fnav_real_t)n + lambda > FNAV_R(0.0)) || !(cfg->beta - cfg->alpha * cfg->alpha >= FNAV_R(0.0))) {
+    if (!(nl > FNAV_R(0.0)) || !fnav_isfinite(nl) || !(cfg->beta - cfg->alpha * cfg->alpha >= FNAV_R(0.0))) {
         return FNAV_E_CONFIG;
     }
     for (b = 0; b < sizeof *f; b++) {
@@ -144,10 +150,10 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
     }
     FNAV_ASSERT(f->n_act == n);
     f->n_lin = n - 3;
-    f->gamma = fnav_sqrt((fnav_real_t)n + lambda);
-    f->w0m = lambda / ((fnav_real_t)n + lambda);
+    f->gamma = fnav_sqrt(nl);
+    f->w0m = lambda / nl;
     f->w0c = f->w0m + FNAV_R(1.0) - cfg->alpha * cfg->alpha + cfg->beta;
-    f->wi = FNAV_R(0.5) / ((fnav_real_t)n + lambda);
+    f->wi = FNAV_R(0.5) / nl;
     f->q_nb = fnav_quat_identity();
     return FNAV_OK;
 }

@@ -544,6 +544,59 @@ static void test_weights_psd(void **state)
 }
 
 
+/* Small alpha (the scaled UT's usual range is 1e-4 <= alpha <= 1: Wan & van
+ * der Merwe, ch. 7 of Haykin (ed.), Kalman Filtering and Neural Networks,
+ * 2001). n + lambda = alpha^2 (n + kappa) was formed as n + (alpha^2
+ * (n + kappa) - n), which in float32 cancels down to the spacing of n
+ * (9.5e-7 at 15): at alpha = 1e-3 the sigma points sat 0.86 % (n = 15) and
+ * 2.3 % (n = 18, the lever) off gamma = alpha sqrt(n + kappa) and the pair
+ * weight Wi 1.7 % and 4.9 % off 1 / (2 alpha^2 (n + kappa)), and alpha =
+ * 1e-4 (n = 15) or 2e-4 (n = 18) was refused (FNAV_E_CONFIG) as if n +
+ * lambda were not positive (the audit of 2026-11-30). The weights must be
+ * those of the formulas to rounding, the mean weights sum to 1, and a
+ * prediction at alpha = 1e-4 keeps a positive definite covariance. The
+ * defaults (alpha = 1, kappa = 0: lambda = 0 exactly) are unchanged
+ * (test_weights_psd). */
+static void test_weights_small_alpha(void **state)
+{
+    static fnav_ukf_t f;
+    static const double alpha[] = { 1.0e-2, 1.0e-3, 3.0e-4, 1.0e-4 }, kappa[] = { 0.0, 3.0 };
+    double asym;
+    size_t i, k;
+    int lever;
+    (void)state;
+    for (lever = 0; lever < 2; lever++) {
+        for (k = 0; k < sizeof kappa / sizeof kappa[0]; k++) {
+            for (i = 0; i < sizeof alpha / sizeof alpha[0]; i++) {
+                fnav_ukf_config_t c = fnav_ukf_config_default;
+                double n, a, nl;
+                c.lever = lever;
+                c.alpha = (fnav_real_t)alpha[i];
+                c.kappa = (fnav_real_t)kappa[k];
+                if (fnav_ukf_init(&f, &c) != FNAV_OK) {
+                    fail_msg("alpha %g kappa %g lever %d: refused", alpha[i], kappa[k], lever);
+                }
+                n = (double)f.n_act;
+                a = (double)c.alpha;
+                nl = a * a * (n + (double)c.kappa);
+                FNAV_ASSERT_CLOSE(f.gamma, sqrt(nl), 0.0, 8.0 * EPS);
+                FNAV_ASSERT_CLOSE(f.wi, 0.5 / nl, 0.0, 8.0 * EPS);
+                /* the mean weights sum to 1 (relative to |W0m|, of 1 / alpha^2) */
+                FNAV_ASSERT_CLOSE((double)f.w0m + 2.0 * n * (double)f.wi, 1.0, 8.0 * EPS * fabs((double)f.w0m),
+                                  0.0);
+                /* W0c = W0m + 1 - alpha^2 + beta, rounded at the size of W0m
+                 * (never multiplied: fnav_ukf_predict uses beta - alpha^2) */
+                FNAV_ASSERT_CLOSE((double)f.w0c - (double)f.w0m, 1.0 - a * a + (double)c.beta,
+                                  4.0 * EPS * fabs((double)f.w0m), 0.0);
+            }
+        }
+    }
+    predict_weights(&f, 1.0e-4, 2.0, 0);
+    assert_int_equal(f.health.cov_guard, 0);
+    assert_true(fnav_test_cov_spd(&f, &asym) > 0.0);
+}
+
+
 /* The lever's random walk: without updates the lever is constant (r' = r,
  * no other state feeds it), so each prediction adds lever_rw^2 dt to its
  * variance: P_r = lever_sd^2 + k lever_rw^2 dt after k steps, exactly but
@@ -1904,6 +1957,7 @@ int main(void)
         cmocka_unit_test(test_rotated_accel_noise),
         cmocka_unit_test(test_unscented_second_order),
         cmocka_unit_test(test_weights_psd),
+        cmocka_unit_test(test_weights_small_alpha),
         cmocka_unit_test(test_lever_random_walk),
         cmocka_unit_test(test_zupt_update),
         cmocka_unit_test(test_lever_measurement),

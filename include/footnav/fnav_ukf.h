@@ -11,8 +11,8 @@
  * a nominal quaternion q_nb plus a three-parameter attitude error in the
  * navigation frame, q_true = dq(a) * q_nb, where a are the generalised
  * Rodrigues parameters with a = 1, f = 4 (a = 4 tan(angle/4) along the axis:
- * equal to the rotation vector to third order, trig-free both ways, singular
- * only at 360 degrees). After each prediction and update the error mean is
+ * the rotation vector up to second order, angle + angle^3/48 + ..., trig-free
+ * both ways, singular only at 360 degrees). After each prediction and update the error mean is
  * folded into q_nb and reset to zero. Roll, pitch and yaw (ZYX) are derived
  * from q_nb for output only, so the filter has no Euler singularity at
  * +-90 degrees of pitch. The covariance of the attitude error is what the
@@ -87,7 +87,9 @@
  * -1e6 at alpha = 1e-3, tested). A small alpha keeps the signs; it puts
  * the sigma points at gamma = alpha sqrt(n + kappa) standard deviations,
  * so the rounding of each point's image weighs more (in the mean by Wi =
- * 1 / (2 alpha^2 (n + kappa))); updates use
+ * 1 / (2 alpha^2 (n + kappa))). n + lambda is formed as alpha^2 (n + kappa),
+ * so gamma and the weights hold to rounding down to alpha = 1e-4 and below
+ * (the scaled UT's usual range is 1e-4 to 1); updates use
  * the Joseph form, expanded as P - K H P - P H^T K^T + K S K^T (valid for any
  * gain, symmetric term by term). A Cholesky pivot that is not positive triggers the defined
  * recovery: add jitter (1e-6 of each variance) and retry; if that also fails,
