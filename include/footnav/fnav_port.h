@@ -86,7 +86,10 @@ typedef struct {
 
 /** Link-time assert hook: every port provides exactly one definition
  *  (port/linux prints and aborts; port/cortex-m breaks into the debugger
- *  and halts). Called only for programmer errors, never for bad data. */
+ *  and halts). Called only for programmer errors, never for bad data. It
+ *  must not return: the code after an FNAV_ASSERT relies on the condition
+ *  (e.g. dereferences the pointer it checked); end the program, reset the
+ *  part, or longjmp out. */
 void fnav_port_assert_failed(const char *file, int line, const char *expr);
 
 #if FNAV_ENABLE_ASSERT
