@@ -56,11 +56,10 @@ typedef struct {
 } fnav_nav_frame_t;
 
 /** A port: callbacks plus the context pointer passed to each of them.
- *  Any callback may be NULL when the port has no such facility. They run
- *  one at a time in the thread that calls fnav_nav_run (or the
- *  fnav_port_* helpers), never from the core on its own and never from an
- *  interrupt: none needs to be reentrant, and any may block (fnav_nav_run
- *  has no timeout). A sample or frame passed to a callback is the caller's
+ *  Any callback may be NULL when the port has no such facility. The core
+ *  calls them only from inside fnav_nav_run (and the fnav_port_* helpers),
+ *  in the caller's thread, one at a time: none needs to be reentrant, and
+ *  any may block (fnav_nav_run has no timeout). A sample or frame passed to a callback is the caller's
  *  and valid only during the call. docs/firmware.md, "The callbacks'
  *  contract", "Time stamps from a board". */
 typedef struct {
