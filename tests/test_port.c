@@ -13,6 +13,8 @@
 #include "fnav_port_linux.h"
 #include "fnav_testdata.h"
 #include "fnav_cm_ring.h"
+#include "fnav_cm_time.h"
+#include "footnav/fnav_nav.h"
 
 static void test_status_strings(void **state)
 {
@@ -143,6 +145,157 @@ static void test_cm_ring(void **state)
     assert_int_equal(ring.overruns, 5);
 }
 
+/* A board's 32-bit microsecond timer wraps every 71.6 minutes and an IMU's
+ * 16-bit FIFO time stamp every 65.536 ms: fnav_cm_unwrap extends either to
+ * 64 bits, so the stamps given to the core never go back. */
+static void test_cm_unwrap(void **state)
+{
+    fnav_cm_unwrap_t u;
+    uint32_t raw;
+    int64_t prev, t;
+    int i;
+    (void)state;
+    /* 32-bit us timer, starting 1 s before its wrap, 2,500 us steps */
+    fnav_cm_unwrap_init(&u, 0xffffffffu);
+    raw = 0xffffffffu - 999999u;
+    prev = fnav_cm_unwrap(&u, raw);
+    assert_true(prev == (int64_t)raw); /* the first reading is its own value */
+    for (i = 0; i < 800; i++) { /* 2 s: across the wrap */
+        raw += 2500u;               /* uint32 arithmetic wraps as the timer does */
+        t = fnav_cm_unwrap(&u, raw);
+        assert_true(t - prev == 2500);
+        prev = t;
+    }
+    assert_true(prev == (int64_t)0xffffffffu - 999999 + 800 * 2500);
+    /* 16-bit FIFO stamp (1 us), 1 kHz, 5 s: 76 wraps */
+    fnav_cm_unwrap_init(&u, 0xffffu);
+    raw = 65000u;
+    prev = fnav_cm_unwrap(&u, raw);
+    for (i = 0; i < 5000; i++) {
+        raw = (raw + 1000u) & 0xffffu;
+        t = fnav_cm_unwrap(&u, raw);
+        assert_true(t - prev == 1000);
+        prev = t;
+    }
+    /* a repeated reading is no wrap (dt 0 stays 0) */
+    assert_true(fnav_cm_unwrap(&u, raw) == prev);
+    /* a back-dated reading (a FIFO stamp 10 us behind) stays behind, not
+     * one period (65.5 ms; 71.6 min for a 32-bit timer) ahead */
+    assert_true(fnav_cm_unwrap(&u, (raw - 10u) & 0xffffu) == prev - 10);
+    assert_true(fnav_cm_unwrap(&u, (raw + 990u) & 0xffffu) == prev + 990);
+    fnav_cm_unwrap_init(&u, 0xffffffffu);
+    (void)fnav_cm_unwrap(&u, 5u);
+    assert_true(fnav_cm_unwrap(&u, 0xfffffffbu) == -5); /* behind, across the wrap */
+}
+
+/* A FIFO batch stamped once, at its watermark interrupt: spread its n
+ * samples over the interval since the previous batch, so that each has its
+ * own stamp, none repeats and none goes back, whatever the interrupt's
+ * latency jitter. */
+static void test_cm_batch_stamp(void **state)
+{
+    int64_t t_prev = 1000000000; /* last stamp of the previous batch, ns */
+    int64_t t_irq = t_prev + 8 * 2500000 + 300000; /* 8 samples, 0.3 ms late */
+    int64_t t, before = t_prev;
+    uint32_t i;
+    (void)state;
+    for (i = 0; i < 8u; i++) {
+        t = fnav_cm_batch_stamp(t_prev, t_irq, i, 8u, 2500000);
+        assert_true(t > before);
+        before = t;
+    }
+    assert_true(before == t_irq); /* the last sample is the interrupt's */
+    assert_true(fnav_cm_batch_stamp(t_prev, t_irq, 0u, 8u, 2500000) == t_prev + (t_irq - t_prev) / 8);
+    /* an interrupt stamp not after the previous one: every sample gets the
+     * previous stamp (duplicates the core counts), never one behind it */
+    assert_true(fnav_cm_batch_stamp(t_prev, t_prev - 5000, 3u, 8u, 2500000) == t_prev);
+    assert_true(fnav_cm_batch_stamp(t_prev, t_irq, 8u, 8u, 2500000) == t_prev);
+    /* 100 ms since the previous batch, 8 samples at 2.5 ms: samples were
+     * lost before this batch; it keeps its nominal intervals, the gap goes
+     * before it */
+    t_irq = t_prev + 100000000;
+    assert_true(fnav_cm_batch_stamp(t_prev, t_irq, 7u, 8u, 2500000) == t_irq);
+    assert_true(fnav_cm_batch_stamp(t_prev, t_irq, 0u, 8u, 2500000) == t_irq - 7 * 2500000);
+    assert_true(fnav_cm_batch_stamp(t_prev, t_irq, 0u, 8u, 0) == t_prev + 100000000 / 8); /* 0: spread */
+}
+
+/* The stamps through the navigator: a 400 Hz still-then-moving stream whose
+ * board timer wraps, and 8-sample FIFO batches stamped at a jittery
+ * interrupt. Converted naively (timer * 1000 per sample, or the interrupt's
+ * stamp on every sample of a batch) the core rejects samples or sees
+ * duplicates; through the helpers every interval is a sample's own. */
+static int64_t nav_feed(int scheme, fnav_nav_stats_t *stats, fnav_real_t *rate_hz)
+{
+    static fnav_nav_t nav;
+    fnav_cm_unwrap_t u;
+    fnav_nav_frame_t f;
+    const uint32_t start_us = 0xffffffffu - 2000000u; /* wraps 2 s in */
+    int64_t t_prev = 0, t_irq = 0, max_dt = 0, last = 0;
+    int i;
+    assert_int_equal(fnav_nav_init(&nav, &fnav_nav_config_default), FNAV_OK);
+    fnav_cm_unwrap_init(&u, 0xffffffffu);
+    for (i = 0; i < 2000; i++) { /* 5 s */
+        fnav_sample_t s;
+        fnav_status_t st;
+        uint32_t us = start_us + (uint32_t)i * 2500u;
+        memset(&s, 0, sizeof s);
+        s.accel_mps2[2] = FNAV_R(9.80665);
+        s.gyro_rps[2] = (i > 1200) ? FNAV_R(0.5) : FNAV_R(0.0);
+        if (scheme == 0) {
+            s.t_ns = (int64_t)us * 1000; /* naive: goes back at the wrap */
+        } else if (scheme == 1) {
+            s.t_ns = fnav_cm_unwrap(&u, us) * 1000;
+        } else {
+            /* batches of 8; the interrupt comes 0-400 us after the 8th */
+            int b = i / 8, k = i % 8;
+            if (k == 0) {
+                int64_t last_us = fnav_cm_unwrap(&u, start_us + (uint32_t)(b * 8 + 7) * 2500u);
+                t_prev = t_irq;
+                t_irq = (last_us + ((b % 3) * 200)) * 1000;
+                if (b == 0) {
+                    t_prev = t_irq - 8 * 2500000;
+                }
+            }
+            s.t_ns = (scheme == 2) ? t_irq : fnav_cm_batch_stamp(t_prev, t_irq, (uint32_t)k, 8u, 2500000);
+        }
+        if (i > 0 && s.t_ns - last > max_dt) {
+            max_dt = s.t_ns - last;
+        }
+        last = s.t_ns;
+        st = fnav_nav_push(&nav, &s);
+        (void)st;
+        while (fnav_nav_pop(&nav, &f) == FNAV_OK) {
+        }
+    }
+    *stats = nav.stats;
+    *rate_hz = nav.stance.rate_hz;
+    return max_dt;
+}
+
+static void test_cm_stamps_through_nav(void **state)
+{
+    fnav_nav_stats_t st;
+    fnav_real_t rate;
+    int64_t max_dt;
+    (void)state;
+    max_dt = nav_feed(0, &st, &rate); /* the hazard the helpers remove */
+    assert_true(st.time_back > 0u);
+    assert_true(st.time_jumps == 1u);
+    (void)max_dt;
+    max_dt = nav_feed(1, &st, &rate);
+    assert_true(st.time_back == 0u && st.time_jumps == 0u && st.duplicates == 0u && st.gaps == 0u);
+    assert_true(st.samples == 2000u);
+    assert_true(max_dt == 2500000);
+    assert_true(fnav_fabs(rate - FNAV_R(400.0)) < FNAV_R(0.01));
+    (void)nav_feed(2, &st, &rate); /* one stamp per batch: 7 of 8 are duplicates */
+    assert_true(st.duplicates >= 7u * 249u);
+    assert_true(rate < FNAV_R(60.0)); /* the detector's rate estimate: 50 Hz, not 400 */
+    max_dt = nav_feed(3, &st, &rate);
+    assert_true(st.time_back == 0u && st.time_jumps == 0u && st.duplicates == 0u && st.gaps == 0u);
+    assert_true(max_dt <= 2500000 + 400000 / 8 + 1);
+    assert_true(fnav_fabs(rate - FNAV_R(400.0)) < FNAV_R(4.0));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -150,6 +303,9 @@ int main(void)
         cmocka_unit_test(test_port_helpers_null),
         cmocka_unit_test(test_linux_replay_port),
         cmocka_unit_test(test_cm_ring),
+        cmocka_unit_test(test_cm_unwrap),
+        cmocka_unit_test(test_cm_batch_stamp),
+        cmocka_unit_test(test_cm_stamps_through_nav),
     };
     return cmocka_run_group_tests_name("port", tests, NULL, NULL);
 }

@@ -56,11 +56,18 @@ typedef struct {
 } fnav_nav_frame_t;
 
 /** A port: callbacks plus the context pointer passed to each of them.
- *  Any callback may be NULL when the port has no such facility. */
+ *  Any callback may be NULL when the port has no such facility. The core
+ *  calls them only from inside fnav_nav_run (and the fnav_port_* helpers),
+ *  in the caller's thread, one at a time: none needs to be reentrant, and
+ *  any may block (fnav_nav_run has no timeout). A sample or frame passed to a callback is the caller's
+ *  and valid only during the call. docs/firmware.md, "The callbacks'
+ *  contract", "Time stamps from a board". */
 typedef struct {
     void *ctx; /**< passed unchanged to every callback */
 
-    /** Sample source. Returns FNAV_OK with *sample filled, FNAV_END when the
+    /** Sample source: fills every field of *sample (t_ns in ns, never going
+     *  back: a board's wrapping counter or one stamp per FIFO batch must be
+     *  converted first, port/cortex-m/fnav_cm_time.h). Returns FNAV_OK with *sample filled, FNAV_END when the
      *  source is exhausted, FNAV_AGAIN when no sample is ready yet
      *  (non-blocking sources), or a negative status on an error. */
     fnav_status_t (*read_sample)(void *ctx, fnav_sample_t *sample);
@@ -78,7 +85,10 @@ typedef struct {
 
 /** Link-time assert hook: every port provides exactly one definition
  *  (port/linux prints and aborts; port/cortex-m breaks into the debugger
- *  and halts). Called only for programmer errors, never for bad data. */
+ *  and halts). Called only for programmer errors, never for bad data. It
+ *  must not return: the code after an FNAV_ASSERT relies on the condition
+ *  (e.g. dereferences the pointer it checked); end the program, reset the
+ *  part, or longjmp out. */
 void fnav_port_assert_failed(const char *file, int line, const char *expr);
 
 #if FNAV_ENABLE_ASSERT

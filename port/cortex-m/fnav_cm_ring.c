@@ -1,7 +1,10 @@
 /* Lock-free SPSC sample ring (see fnav_cm_ring.h). */
 #include "fnav_cm_ring.h"
 
-/* Data memory barrier: orders the slot write before the index update. */
+/* Data memory barrier: orders the slot write before the index update. On
+ * the host it is a compiler barrier only: right for the host tests, where
+ * push and pop run in one thread, not for a producer and a consumer on two
+ * threads of a weakly ordered CPU (AArch64), which would need a fence. */
 #if defined(__arm__)
 #define FNAV_CM_DMB() __asm volatile("dmb" ::: "memory")
 #else

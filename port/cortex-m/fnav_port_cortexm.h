@@ -44,8 +44,10 @@ typedef struct {
 /** Set up @p port over @p ctx (empties the ring, zeroes the counters). */
 void fnav_cm_port_init(fnav_port_t *port, fnav_cm_port_ctx_t *ctx);
 
-/** Sample-ready interrupt body: reads the IMU and pushes the sample
- *  (a full ring counts an overrun). ISR only. */
+/** Sample-ready interrupt body: reads the IMU once (fnav_cm_imu_read) and
+ *  pushes that one sample (a full ring counts an overrun). ISR only. An IMU
+ *  that interrupts once per FIFO batch needs one call per sample of the
+ *  batch: docs/firmware.md, "FIFO batches and the ring". */
 void fnav_cm_sample_isr(fnav_cm_port_ctx_t *ctx);
 
 /** Send a SAMPLE frame (raw stream). Main loop only. @return FNAV_OK or FNAV_E_IO. */
@@ -69,7 +71,10 @@ void fnav_cm_systick_tick(void);
 /* Weak hardware hooks (override in the board support code). */
 /** Board set-up; called once by the reference main() before the loop. */
 void fnav_cm_board_init(void);
-/** Read one sample (fill every field, t_ns included). 0 ok, -1 none. ISR context. */
+/** Read one sample (fill every field, t_ns included: int64 ns, never going
+ *  back; fnav_cm_time.h converts a wrapping timer or a FIFO batch's one
+ *  stamp). 0 ok, -1 none. ISR context: must not block. Called once per
+ *  sample-ready interrupt. */
 int fnav_cm_imu_read(fnav_sample_t *s);
 /** Monotonic time, ns. */
 int64_t fnav_cm_ticks_ns(void);

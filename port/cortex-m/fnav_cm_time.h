@@ -1,0 +1,92 @@
+/**
+ * @file fnav_cm_time.h
+ * @brief Time stamps from a board's counters, for fnav_cm_imu_read() (or
+ *        any read_sample): the core wants int64 ns that never go back
+ *        (fnav_sample_t.t_ns), while a board has a 32-bit microsecond timer
+ *        (wraps every 71.6 min), an IMU's 16-bit FIFO time stamp (wraps
+ *        every 65.536 ms at 1 us) or one interrupt stamp per FIFO batch.
+ *        docs/firmware.md, "Time stamps from a board".
+ *
+ * Header only (static inline): nothing of it is in an image that does not
+ * call it. Portable C; not ISR-safe per object: one fnav_cm_unwrap_t per
+ * counter, used from one context (the sample-ready interrupt, typically).
+ */
+#ifndef FNAV_CM_TIME_H
+#define FNAV_CM_TIME_H
+
+#include "footnav/fnav_types.h"
+
+/** Extends a free-running counter of 1..32 bits to 64 bits. */
+typedef struct {
+    uint32_t mask;  /**< 2^bits - 1: 0xffffffff for a 32-bit timer, 0xffff for a 16-bit FIFO stamp */
+    uint32_t last;  /**< last raw reading (masked) */
+    int64_t ext;    /**< its extended value, counter ticks */
+    int started;    /**< a reading was taken */
+} fnav_cm_unwrap_t;
+
+/** Start an unwrapper for a counter whose readings are masked by @p mask
+ *  (2^bits - 1). */
+static inline void fnav_cm_unwrap_init(fnav_cm_unwrap_t *u, uint32_t mask)
+{
+    u->mask = mask;
+    u->last = 0u;
+    u->ext = 0;
+    u->started = 0;
+}
+
+/** Extended value of the raw reading @p raw, in counter ticks (multiply by
+ *  the tick in ns: 1000 for a microsecond timer). The first reading is its
+ *  own value. A reading less than half the counter's period ahead of the
+ *  previous one is read as that far ahead (across a wrap when it is
+ *  smaller); one less than half a period behind as that far behind, so a
+ *  back-dated stamp stays behind (the core rejects it, FNAV_E_TIME) instead
+ *  of turning into a jump of a whole period ahead. So read the counter at
+ *  least every half period (35.8 min for a 32-bit us timer, 32.8 ms for a
+ *  16-bit 1-us FIFO stamp: consecutive FIFO samples are far closer); longer
+ *  apart, whole periods are lost without a trace. */
+static inline int64_t fnav_cm_unwrap(fnav_cm_unwrap_t *u, uint32_t raw)
+{
+    raw &= u->mask;
+    if (!u->started) {
+        u->started = 1;
+        u->ext = (int64_t)raw;
+    } else {
+        const int64_t period = (int64_t)u->mask + 1;
+        int64_t d = (int64_t)((raw - u->last) & u->mask); /* ahead, modulo the period */
+        if (d >= period / 2) {
+            d -= period; /* behind */
+        }
+        u->ext += d;
+    }
+    u->last = raw;
+    return u->ext;
+}
+
+/** Stamp of sample @p i (0 oldest) of a FIFO batch of @p n read at one
+ *  interrupt stamped @p t_irq_ns, the batch's last sample being the
+ *  interrupt's: the batch is spread evenly over the interval since the
+ *  previous batch's last stamp @p t_prev_ns, so every sample has its own
+ *  interval (one stamp for the whole batch makes n - 1 duplicates, which the
+ *  core does not propagate, and makes the estimated rate n times too low),
+ *  and the interrupt's latency jitter moves each interval by jitter / n,
+ *  never behind the previous batch. When the interval is longer than
+ *  2 n @p period_ns (the nominal sample interval; samples were lost before
+ *  the batch: a FIFO overflow, a stall), the batch is stamped back from
+ *  t_irq_ns at period_ns, so the core sees the gap where the samples were
+ *  lost (period_ns 0: always spread). t_irq_ns not after t_prev_ns, i >= n
+ *  or n = 0: t_prev_ns (a duplicate, never a stamp behind). */
+static inline int64_t fnav_cm_batch_stamp(int64_t t_prev_ns, int64_t t_irq_ns, uint32_t i, uint32_t n,
+                                          int64_t period_ns)
+{
+    int64_t span;
+    if (n == 0u || i >= n || !(t_irq_ns > t_prev_ns)) {
+        return t_prev_ns;
+    }
+    span = t_irq_ns - t_prev_ns;
+    if (period_ns > 0 && span / (int64_t)n > 2 * period_ns) {
+        return t_irq_ns - (int64_t)(n - 1u - i) * period_ns;
+    }
+    return t_prev_ns + span * (int64_t)(i + 1u) / (int64_t)n;
+}
+
+#endif /* FNAV_CM_TIME_H */
