@@ -847,6 +847,14 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         }
         r->time_mode = TIME_COUNTER;
         r->rate_hz = rate_hz > 0.0 ? rate_hz : fs;
+        if (rate_hz > 0.0 && fabs(rate_hz - fs) > 1.0e-9 * fs) {
+            /* the file states its rate: a different --input-rate replaced
+             * it without a word, and --input-rate 200 on a 100 Hz file
+             * halved every stride time (the gait review, 2026-11-30); it
+             * still rules, since the file may state the wrong one */
+            add_warn(r, "%s: --input-rate %g Hz replaces the rate the file states (%g Hz on line %ld)", r->path,
+                     rate_hz, fs, r->stats.lines);
+        }
         r->delim = '\t';
         if (setup_header(r, names, 1) != 0) {
             return -1;

@@ -200,6 +200,17 @@ awk 'BEGIN { print "gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g"; f
 assumed_rate ADIS16405 "$T/adis.csv" "no time stamps; assuming the ADIS16405 data set rate of 100 Hz (give --input-rate)"
 awk 'BEGIN { print "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps,q0,q1,q2,q3"; for (k = 0; k < 400; k++) print k ",-0.07,0,-9.82,0.001,-0.002,-0.001,1,0,0,0" }' >"$T/square2.csv"
 assumed_rate square2 "$T/square2.csv" "no time stamps; assuming the ZUPT-aided-INS square2 data set rate of 100 Hz (give --input-rate)"
+# an ipol log states its rate on line 1: --input-rate replaced it without a word,
+# and a gait lab's wrong --input-rate 200 on a 100 Hz file halved every stride
+# time and doubled the cadence in replay --strides (the gait review,
+# 2026-11-30); now a rate that differs from the stated one is warned about
+# (it still rules: the file may state the wrong one), the same one is not
+awk 'BEGIN { print "Acquisition frequency: 100 Hz"; print "PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z"; for (k = 0; k < 400; k++) print k "\t0.1\t0\t9.8\t0.001\t-0.002\t0.001" }' >"$T/ipol.txt"
+expect_exit 0 "info on an ipol log with a different --input-rate" "$H" info "$T/ipol.txt" --input-rate 200
+expect_err "ipol.txt: --input-rate 200 Hz replaces the rate the file states (100 Hz on line 1)" "ipol: a --input-rate that overrides the stated rate is warned about"
+expect_out "200.000 Hz (nominal)" "ipol: --input-rate still sets the rate"
+expect_exit 0 "info on an ipol log with its own rate as --input-rate" "$H" info "$T/ipol.txt" --input-rate 100
+if grep -q "replaces the rate" "$T/err"; then fail "ipol --input-rate equal to the stated rate: warned"; else pass "ipol --input-rate equal to the stated rate: no warning"; fi
 
 # --- a foreign recording cut off mid-line (docs/log-format.md: its last line
 # is ignored with a warning): every reader warns, the streaming ones (convert,
