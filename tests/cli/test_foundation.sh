@@ -211,6 +211,22 @@ expect_err "ipol.txt: --input-rate 200 Hz replaces the rate the file states (100
 expect_out "200.000 Hz (nominal)" "ipol: --input-rate still sets the rate"
 expect_exit 0 "info on an ipol log with its own rate as --input-rate" "$H" info "$T/ipol.txt" --input-rate 100
 if grep -q "replaces the rate" "$T/err"; then fail "ipol --input-rate equal to the stated rate: warned"; else pass "ipol --input-rate equal to the stated rate: no warning"; fi
+# our CSV without a time column (a logger that writes samples at a fixed rate,
+# the first thing a gait lab exports): --input-rate gives the rate, t = index /
+# rate, as for the importers without time stamps; without it the error names
+# --input-rate. Before, it was "header has no column 't'" with no way to give
+# a rate but to add the column by hand (the gait review, 2026-11-30)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 400; k++) printf "%.2f,0.1,0,%.3f,0.001,-0.002,%.4f\n", k / 100, 9.8 + k % 7 * 0.001, k % 5 * 0.0001 }' >"$T/timed.csv"
+cut -d, -f2- "$T/timed.csv" >"$T/untimed.csv"
+expect_exit 1 "our CSV without t, no --input-rate" "$H" info "$T/untimed.csv"
+expect_err "untimed.csv:1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz\[,temp\] (t in s; a log without time stamps: give its rate with --input-rate HZ)" "no t column: the error names --input-rate"
+expect_exit 0 "our CSV without t, --input-rate 100" "$H" convert "$T/untimed.csv" "$T/untimed_out.csv" --input-rate 100
+"$H" convert "$T/timed.csv" "$T/timed_out.csv" >/dev/null 2>&1
+if cmp -s "$T/timed_out.csv" "$T/untimed_out.csv"; then pass "no t column with --input-rate 100: the samples of the same log with t = index / 100"
+else fail "no t column with --input-rate 100: $(diff "$T/timed_out.csv" "$T/untimed_out.csv" | head -3)"; fi
+if grep -q "ignored" "$T/err"; then fail "no t column: --input-rate said to be ignored"; else pass "no t column: --input-rate not said to be ignored"; fi
+expect_exit 0 "info on our CSV without t" "$H" info "$T/untimed.csv" --input-rate 100
+expect_out "100.000 Hz (nominal)" "no t column: the rate is --input-rate's"
 
 # --- a foreign recording cut off mid-line (docs/log-format.md: its last line
 # is ignored with a warning): every reader warns, the streaming ones (convert,
