@@ -958,6 +958,13 @@ PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp3.txt" "$H" replay "$T/straight.bin" --pr
     --samples instant --plot "$T/straight3.png" --quiet >/dev/null 2>&1
 if grep -q -x "set multiplot layout 1,2 title '$T/straight.bin'" "$T/gp3.txt"; then pass "plot title: defaults given explicitly are left out"; else
     fail "plot title (explicit defaults): $(grep multiplot "$T/gp3.txt" | head -1)"; fi
+# the path's axes are n's x and y (docs/frames.md: x along the sensor's heading at the alignment, no
+# magnetometer): they were labelled 'north x' and 'east y', which a figure in a paper reads as geographic (the
+# gait review, 2026-11-30)
+if grep -q -x "set xlabel 'y (m, right of the start heading)'" "$T/gp.txt" &&
+    grep -q -x "set ylabel 'x (m, along the start heading)'" "$T/gp.txt" && ! grep -q -i "north\|east" "$T/gp.txt"; then
+    pass "path plot: axes named after the start heading, not north and east"
+else fail "path plot labels: $(grep label "$T/gp.txt" | tr '\n' ' ')"; fi
 # gnuplot failing partway left its half-drawn PNG behind beside "failed to
 # write" (the plots review): the file it started is removed, and said; a file
 # that was there before and that gnuplot never opened is left alone
