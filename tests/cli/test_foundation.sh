@@ -398,6 +398,17 @@ for args in "replay vectors/walk.bin --quiet --out $T/two.txt --json $T/two.txt"
     expect_err "name the same file" "two outputs on one file refused: ${args%% *}"
 done
 expect_exit 0 "replay --out /dev/null --json /dev/null" "$H" replay vectors/walk.bin --quiet --out /dev/null --json /dev/null
+# the same new file under two spellings (F and ./F, or DIR//F): stat could not
+# tell before either existed, and `replay LOG --strides s.csv --json ./s.csv`
+# left the JSON in s.csv, exit 0 (the gait review, 2026-11-30)
+rm -f "$T/sp.csv"
+expect_exit 2 "two outputs on one new file, spelled twice" "$H" replay vectors/walk.bin --quiet --strides "$T/sp.csv" --json "$T/./sp.csv"
+expect_err "name the same file" "two spellings of one new file refused"
+if [ -e "$T/sp.csv" ]; then fail "the refused outputs were written"; else pass "nothing written when two spellings are refused"; fi
+rm -f "$T/sp.csv"
+expect_exit 2 "two outputs on one new file, DIR//F" "$H" psd vectors/walk.bin --out "$T//sp.csv" --json "$T/sp.csv"
+expect_err "name the same file" "DIR//F and DIR/F refused"
+expect_exit 0 "two different new files in one directory" "$H" replay vectors/walk.bin --quiet --strides "$T/sp1.csv" --json "$T/./sp2.csv"
 
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]
