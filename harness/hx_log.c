@@ -696,9 +696,15 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
                         r->path, r->stats.lines, hx_format_name(r->meta.format),
                         r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "see docs/log-format.md");
             } else if (r->meta.format == HX_FMT_CSV) {
+                /* a header with the six others lacks only its time: say how
+                 * to give the rate (not to a file that is no IMU log) */
+                int k, six = i == 0;
+                for (k = 1; k < 7 && six; k++) {
+                    six = find_col(f, n, names[k]) >= 0;
+                }
                 set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]%s", r->path,
                         r->stats.lines, names[i],
-                        i == 0 ? " (t in s; a log without time stamps: give its rate with --input-rate HZ)" : "");
+                        six ? " (t in s; a log without time stamps: give its rate with --input-rate HZ)" : "");
             } else {
                 set_err(r, "%s:%ld: header has no column '%s' (the %s column of the %s format)", r->path,
                         r->stats.lines, names[i], what[i], hx_format_name(r->meta.format));

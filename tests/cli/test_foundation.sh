@@ -220,6 +220,11 @@ awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 400; k++) printf "%.2f
 cut -d, -f2- "$T/timed.csv" >"$T/untimed.csv"
 expect_exit 1 "our CSV without t, no --input-rate" "$H" info "$T/untimed.csv"
 expect_err "untimed.csv:1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz\[,temp\] (t in s; a log without time stamps: give its rate with --input-rate HZ)" "no t column: the error names --input-rate"
+# ... but only to a header that has the six others: a file that is no IMU log (a stride table) is not told to
+# give a rate
+printf 'strideIndex,x,y\n1,0.5,0.1\n' >"$T/notimu.csv"
+expect_exit 1 "a CSV that is no IMU log" "$H" info "$T/notimu.csv"
+if grep -q "input-rate" "$T/err"; then fail "a CSV that is no IMU log: told to give --input-rate"; else pass "a CSV that is no IMU log: no --input-rate advice"; fi
 expect_exit 0 "our CSV without t, --input-rate 100" "$H" convert "$T/untimed.csv" "$T/untimed_out.csv" --input-rate 100
 "$H" convert "$T/timed.csv" "$T/timed_out.csv" >/dev/null 2>&1
 if cmp -s "$T/timed_out.csv" "$T/untimed_out.csv"; then pass "no t column with --input-rate 100: the samples of the same log with t = index / 100"
