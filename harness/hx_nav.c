@@ -895,9 +895,15 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
             }
         }
         if (name != NULL) {
+            /* 1 s apart: 1 kHz in milliseconds, or a sample number (a
+             * logger's counter), which --input-rate serves without the
+             * column (the gait review, 2026-11-30) */
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
-                         "time stamps in seconds? (they look like %s: divide by %s)",
-                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, name, div);
+                         "time stamps in seconds? (they look like %s: divide by %s%s)",
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, name, div,
+                         fabs(rate_hz - 1.0) < 1e-9 ? "; or, if they count samples, leave the column out and give the "
+                                                      "rate with --input-rate HZ"
+                                                    : "");
         } else {
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
                          "time stamps in seconds? (in milliseconds, divide by 1000)",

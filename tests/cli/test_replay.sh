@@ -698,6 +698,17 @@ awk -F, 'NR == 1 { print; next } NR < 400 { printf "%.0f,%s,%s,%s,%s,%s,%s\n", $
     vectors/nav/golden/gx2_walk2.csv > "$T/in_ns.csv"
 expect_exit 1 "time in nanoseconds" "$H" replay "$T/in_ns.csv" --quiet
 expect_err "they look like nanoseconds: divide by 1e9" "time stamps in ns are named as such"
+# a t column that counts samples (0, 1, 2, ...), as a logger's sample number often does: it was told only to
+# divide by 1000 (right for a 1 kHz log in ms, wrong for a 250 Hz one); the remedy for a counter, leaving the
+# column out and giving --input-rate, is named too (the gait review, 2026-11-30)
+awk -F, 'NR == 1 { print; next } { printf "%d,%s,%s,%s,%s,%s,%s\n", NR - 2, $2, $3, $4, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_idx.csv"
+expect_exit 1 "time as a sample number" "$H" replay "$T/in_idx.csv" --quiet
+expect_err "they look like milliseconds: divide by 1000; or, if they count samples, leave the column out and give the rate with --input-rate HZ" \
+    "a sample number as time: the counter's remedy named"
+expect_exit 1 "time in milliseconds, again" "$H" replay "$T/in_ms.csv" --quiet
+if grep -q "count samples" "$T/err"; then fail "stamps in ms (4 ms apart) told they may count samples"; else
+    pass "stamps in ms (4 ms apart) not told they may count samples"; fi
 
 # Rows of the Markdown tables in FILE... whose cell count differs from their
 # header's (an unescaped | in a header or a note breaks a table), as FILE:LINE.
