@@ -320,6 +320,41 @@ static double stance_fit_rate(const fnav_nav_config_t *cfg, double fs_hz)
     return 0.0;
 }
 
+/* The gait events' searches at fs_hz, samples (fnav_stance.c, set_rate and
+ * foot_strike): the foot-off's is n_ev, at most FNAV_STANCE_EVENT_BUF - 1;
+ * the foot-strike's what the jerk history holds before the stance's first
+ * n_min_stance samples. */
+static void event_reach(const fnav_nav_config_t *cfg, double fs_hz, long *fo_n, long *fs_n)
+{
+    long ev = lround((double)cfg->stance.event_window_s * fs_hz), ms = lround((double)cfg->stance.min_stance_s * fs_hz);
+    ev = ev < 1 ? 1 : ev > FNAV_STANCE_EVENT_BUF - 1 ? FNAV_STANCE_EVENT_BUF - 1 : ev;
+    ms = ms < 1 ? 1 : ms;
+    *fo_n = ev;
+    *fs_n = ev < FNAV_STANCE_EVENT_BUF - ms ? ev : FNAV_STANCE_EVENT_BUF - ms;
+}
+
+/* The highest rate below fs_hz, in whole hundreds of Hz from 100 Hz up and
+ * whole Hz below, at which both event searches span event_window_s; 0 when
+ * none does. */
+static double event_fit_rate(const fnav_nav_config_t *cfg, double fs_hz)
+{
+    double r = fs_hz;
+    while (r >= 1.0) {
+        const double step = r > 100.0 ? 100.0 : 1.0;
+        long fo_n, fs_n, want;
+        r = step * ceil(r / step) - step;
+        if (!(r >= 1.0)) {
+            break;
+        }
+        event_reach(cfg, r, &fo_n, &fs_n);
+        want = lround((double)cfg->stance.event_window_s * r);
+        if (fo_n >= want && fs_n >= want) {
+            return r;
+        }
+    }
+    return 0.0;
+}
+
 /* ------------------------------------------------------------ resampler */
 
 static int cmp_i64(const void *a, const void *b)
@@ -1173,6 +1208,34 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                     "%s: at %.0f Hz the stance detector's ring of %d samples cuts %s: %s or build with a larger "
                     "FNAV_STANCE_MAX_WINDOW (docs/navigation.md, \"Stance detector\")",
                     path, fs, FNAV_STANCE_MAX_WINDOW, what, advice);
+        }
+    }
+    if ((flags & HX_REPLAY_EVENTS) && nav.stance.rate_hz > 0.0f) {
+        /* the gait events' searches live in the detector's jerk history
+         * (FNAV_STANCE_EVENT_BUF samples): above about 450 Hz they are cut,
+         * and an event beyond the cut is read late (the 820 Hz OpenShoe
+         * walk: 3 of 49 foot-strikes 77-155 ms later than at 200 Hz),
+         * silently until 2026-11-30 (the gait review) */
+        const double fs = (double)nav.stance.rate_hz;
+        const long want = lround((double)cfg->stance.event_window_s * fs);
+        long fo_n, fs_n;
+        event_reach(cfg, fs, &fo_n, &fs_n);
+        if (fo_n < want || fs_n < want) {
+            const double fit = event_fit_rate(cfg, fs);
+            char advice[96];
+            if (fit > 0.0) {
+                snprintf(advice, sizeof advice, "resample (--rate %.0f) or", fit);
+            } else {
+                snprintf(advice, sizeof advice, "shorten min_stance_s (--param) or");
+            }
+            hx_warn(cmd,
+                    "%s: at %.0f Hz the gait events' searches are cut: the foot-off is searched over %.0f ms (of "
+                    "%.0f) after the swing begins and the foot-strike over %.0f ms (of %.0f) before the stance "
+                    "(FNAV_STANCE_EVENT_BUF, %d samples of jerk history); an event beyond is read late: %s build "
+                    "with a larger FNAV_STANCE_EVENT_BUF (docs/navigation.md, \"Strides and gait events\")",
+                    path, fs, 1e3 * (double)fo_n / fs, 1e3 * (double)cfg->stance.event_window_s,
+                    1e3 * (double)fs_n / fs, 1e3 * (double)cfg->stance.event_window_s, FNAV_STANCE_EVENT_BUF,
+                    advice);
         }
     }
     if (rc == 0) {
