@@ -704,7 +704,9 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
                 }
                 set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]%s", r->path,
                         r->stats.lines, names[i],
-                        six ? " (t in s; a log without time stamps: give its rate with --input-rate HZ)" : "");
+                        six ? " (t in s: name the time column t; a log without time stamps: give its rate with "
+                              "--input-rate HZ)"
+                            : "");
             } else {
                 set_err(r, "%s:%ld: header has no column '%s' (the %s column of the %s format)", r->path,
                         r->stats.lines, names[i], what[i], hx_format_name(r->meta.format));

@@ -219,7 +219,12 @@ if grep -q "replaces the rate" "$T/err"; then fail "ipol --input-rate equal to t
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 400; k++) printf "%.2f,0.1,0,%.3f,0.001,-0.002,%.4f\n", k / 100, 9.8 + k % 7 * 0.001, k % 5 * 0.0001 }' >"$T/timed.csv"
 cut -d, -f2- "$T/timed.csv" >"$T/untimed.csv"
 expect_exit 1 "our CSV without t, no --input-rate" "$H" info "$T/untimed.csv"
-expect_err "untimed.csv:1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz\[,temp\] (t in s; a log without time stamps: give its rate with --input-rate HZ)" "no t column: the error names --input-rate"
+expect_err "untimed.csv:1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz\[,temp\] (t in s: name the time column t; a log without time stamps: give its rate with --input-rate HZ)" "no t column: the error names --input-rate"
+# a time column under another name ('time', 'timestamp'): the rename is named first, since --input-rate would
+# drop its stamps
+sed '1s/^t,/time,/' "$T/timed.csv" >"$T/timecol.csv"
+expect_exit 1 "our CSV with its time column named 'time'" "$H" info "$T/timecol.csv"
+expect_err "header has no column 't'; expected t,ax,ay,az,gx,gy,gz\\[,temp\\] (t in s: name the time column t;" "a time column named 'time': the rename named"
 # ... but only to a header that has the six others: a file that is no IMU log (a stride table) is not told to
 # give a rate
 printf 'strideIndex,x,y\n1,0.5,0.1\n' >"$T/notimu.csv"
