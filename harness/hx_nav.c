@@ -1569,7 +1569,7 @@ int hx_nav_write_strides(FILE *f, const hx_traj_t *t)
         n = hx_nav_stance_phases(t, mid, start, t->n + 1);
         heading_ref(t, first, ref_b);
     }
-    fprintf(f, "stride,foot_off_s,foot_strike_s,swing_start_s,swing_end_s,swing_s,stride_time_s,cadence_spm,"
+    fprintf(f, "stride,foot_off_s,foot_strike_s,swing_start_s,swing_end_s,swing_s,stance_s,stride_time_s,cadence_spm,"
                "length_m,height_change_m,heading_change_deg,clearance_m\n");
     for (k = 0; k < t->nev; k++) {
         const hx_stride_ev_t *e = &t->ev[k];
@@ -1620,6 +1620,10 @@ int hx_nav_write_strides(FILE *f, const hx_traj_t *t)
          * foot-off at or after the foot-strike: no swing time then (it read
          * 0 or negative, down to -0.24 s, in 8 of ipol's 515 rows) */
         stride_field(f, 6, fs > fo ? fs - fo : (double)NAN);
+        /* the stance of this gait cycle: from the previous foot-strike to
+         * this foot-off (stance + swing = stride time; the rows had no
+         * stance time until the gait review, 2026-11-30) */
+        stride_field(f, 6, fo > fs_prev ? fo - fs_prev : (double)NAN);
         stride_field(f, 6, fs - fs_prev);
         stride_field(f, 3, 120.0 / (fs - fs_prev));
         stride_field(f, 4, len);

@@ -1038,7 +1038,7 @@ strides_ok() {
     "${PY:-/usr/bin/python3}" - "$@" <<'PYEOF'
 import csv, json, statistics, sys
 path, jpath, want_len, want_cad, tol_len, tol_cad = sys.argv[1], sys.argv[2], *map(float, sys.argv[3:7])
-cols = ["stride", "foot_off_s", "foot_strike_s", "swing_start_s", "swing_end_s", "swing_s", "stride_time_s",
+cols = ["stride", "foot_off_s", "foot_strike_s", "swing_start_s", "swing_end_s", "swing_s", "stance_s", "stride_time_s",
         "cadence_spm", "length_m", "height_change_m", "heading_change_deg", "clearance_m"]
 rows = list(csv.reader(open(path)))
 if rows[0] != cols: sys.exit("header %s" % rows[0])
@@ -1054,6 +1054,14 @@ for r in rows:
     if not f(r, "foot_off_s") < f(r, "foot_strike_s"): sys.exit("foot-off not before foot-strike in stride " + r["stride"])
     if not f(r, "swing_start_s") < f(r, "swing_end_s"): sys.exit("swing start not before its end in stride " + r["stride"])
 if rows[0]["stride_time_s"] != "" or rows[0]["cadence_spm"] != "": sys.exit("the first stride has a stride time")
+# stance_s: the foot-off minus the previous row's foot-strike, so that stance and swing make the stride time
+# (the gait review, 2026-11-30: the rows gave no stance time)
+if rows[0]["stance_s"] != "": sys.exit("the first stride has a stance time")
+for a, b in zip(rows, rows[1:]):
+    if abs(f(b, "stance_s") - (f(b, "foot_off_s") - f(a, "foot_strike_s"))) > 1.5e-6:
+        sys.exit("stance_s of stride %s is not its foot-off minus the previous foot-strike" % b["stride"])
+    if b["swing_s"] != "" and abs(f(b, "stance_s") + f(b, "swing_s") - f(b, "stride_time_s")) > 3e-6:
+        sys.exit("stance_s + swing_s is not stride_time_s in stride " + b["stride"])
 lens = [f(r, "length_m") for r in rows if r["length_m"] != ""]
 cads = [f(r, "cadence_spm") for r in rows if r["cadence_spm"] != ""]
 ml, mc = statistics.median(lens), statistics.median(cads)
