@@ -1124,6 +1124,14 @@ expect_exit 0 "replay at 1 kHz without --strides" "$H" replay "$T/sw_1k.bin" --q
 if grep -q "gait events" "$T/err"; then fail "the event searches warned about without --strides"; else pass "no event-search warning without --strides"; fi
 expect_exit 0 "replay --strides at 1 kHz resampled to 400 Hz" "$H" replay "$T/sw_1k.bin" --rate 400 --strides "$T/sw_400.csv" --quiet
 if grep -q "gait events" "$T/err"; then fail "the event searches warned about at 400 Hz: $(cat "$T/err")"; else pass "no event-search warning at 400 Hz"; fi
+# the sign of heading_change_deg (docs/harness.md, "Stride CSV": positive clockwise from above, as yaw): the
+# simulator's loop turns right three times, and its rows sum to +270 deg
+"$H" sim --motion loop --duration 60 --profile none --out "$T/loop.bin" >/dev/null 2>&1 || fail "sim --motion loop"
+expect_exit 0 "replay --strides of the loop" "$H" replay "$T/loop.bin" --strides "$T/loop_strides.csv" --quiet
+if awk -F, 'NR > 1 && $12 != "" { s += $12 } END { exit !(s > 269 && s < 271) }' "$T/loop_strides.csv" &&
+    head -1 "$T/loop_strides.csv" | awk -F, '{ exit $12 != "heading_change_deg" }'; then
+    pass "heading_change_deg: three right turns sum to +270"
+else fail "heading_change_deg of the loop: $(cut -d, -f12 "$T/loop_strides.csv" | tr '\n' ' ')"; fi
 expect_exit 0 "--strides -" "$H" replay "$T/sw0.bin" --strides -
 if cmp -s "$T/out" "$T/sw0_strides.csv"; then pass "--strides - writes the rows of --strides FILE on stdout"; else fail "--strides - on stdout"; fi
 expect_err "^stance  *[0-9]* strides" "--strides -: the summary is on stderr"
