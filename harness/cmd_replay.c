@@ -16,7 +16,10 @@ static const hx_opt_t k_opts[] = {
     { "--out", "FILE", "trajectory CSV (time, position, velocity, attitude, biases, flags, covariance)", 0 },
     { "--json", "FILE", "summary as JSON (keys in docs/harness.md)", 0 },
     { "--plot", "FILE", "PNG of the 2-D path and of the height over time", 0 },
-    { "--strides", "FILE", "stride CSV: gait events, stride time, cadence, length, height and heading change, clearance per stride", 0 },
+    { "--strides", "FILE",
+      "stride CSV: gait events, swing, stance and stride time, cadence, length, height and heading change, "
+      "clearance per stride",
+      0 },
     { "--quiet", NULL, "no summary on standard output", 0 },
     { NULL, NULL, NULL, 0 }
 };

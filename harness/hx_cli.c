@@ -492,13 +492,48 @@ void hx_progress_end(hx_progress_t *p)
 
 /* ------------------------------------------------------------ output files */
 
+/* a path's directory (".", when it has none) into dir and its last
+ * component into *base; 0 when it has no usable last component */
+static int split_dir(const char *path, char *dir, size_t size, const char **base)
+{
+    const char *slash = strrchr(path, '/');
+    size_t dn = slash == NULL ? 0 : slash == path ? 1 : (size_t)(slash - path);
+    *base = slash != NULL ? slash + 1 : path;
+    if (dn >= size || **base == '\0' || strcmp(*base, ".") == 0 || strcmp(*base, "..") == 0) {
+        return 0;
+    }
+    if (dn == 0) {
+        dir[0] = '.';
+        dn = 1;
+    } else {
+        memcpy(dir, path, dn);
+    }
+    dir[dn] = '\0';
+    return 1;
+}
+
 int hx_same_file(const char *a, const char *b)
 {
     struct stat sa, sb;
-    if (a == NULL || b == NULL || stat(a, &sa) != 0 || stat(b, &sb) != 0) {
+    int ha, hb;
+    char da[4096], db[4096];
+    const char *ba, *bb;
+    if (a == NULL || b == NULL) {
         return 0;
     }
-    return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    ha = stat(a, &sa) == 0;
+    hb = stat(b, &sb) == 0;
+    if (ha && hb) {
+        return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    }
+    if (ha || hb) {
+        return 0; /* one is there, the other is not */
+    }
+    /* neither is there yet: one name in one directory (`--strides s.csv
+     * --json ./s.csv` wrote both into one file, exit 0; the gait review,
+     * 2026-11-30) */
+    return split_dir(a, da, sizeof da, &ba) && split_dir(b, db, sizeof db, &bb) && strcmp(ba, bb) == 0 &&
+           stat(da, &sa) == 0 && stat(db, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
 int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, const char *const *outputs)

@@ -696,8 +696,17 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
                         r->path, r->stats.lines, hx_format_name(r->meta.format),
                         r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "see docs/log-format.md");
             } else if (r->meta.format == HX_FMT_CSV) {
-                set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]", r->path,
-                        r->stats.lines, names[i]);
+                /* a header with the six others lacks only its time: say how
+                 * to give the rate (not to a file that is no IMU log) */
+                int k, six = i == 0;
+                for (k = 1; k < 7 && six; k++) {
+                    six = find_col(f, n, names[k]) >= 0;
+                }
+                set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]%s", r->path,
+                        r->stats.lines, names[i],
+                        six ? " (t in s: name the time column t; a log without time stamps: give its rate with "
+                              "--input-rate HZ)"
+                            : "");
             } else {
                 set_err(r, "%s:%ld: header has no column '%s' (the %s column of the %s format)", r->path,
                         r->stats.lines, names[i], what[i], hx_format_name(r->meta.format));
@@ -748,8 +757,16 @@ static int setup_text(hx_reader_t *r, double rate_hz)
     case HX_FMT_CSV: {
         static const char *const names[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
         r->time_mode = TIME_COLUMN_S;
-        if (setup_header(r, names, 1) != 0) {
+        if (setup_header(r, names, !(rate_hz > 0.0)) != 0) {
             return -1;
+        }
+        if (r->col_t < 0) {
+            /* no time column: --input-rate gives the rate, t = index / rate,
+             * as for the importers without time stamps (it was an error with
+             * no way to give the rate; the gait review, 2026-11-30) */
+            r->time_mode = TIME_INDEX;
+            m->stamps_made = 1;
+            r->rate_hz = rate_hz;
         }
         m->has_temp = r->col_temp >= 0;
         copy_str(m->sensor, sizeof m->sensor, "unknown");
@@ -847,6 +864,14 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         }
         r->time_mode = TIME_COUNTER;
         r->rate_hz = rate_hz > 0.0 ? rate_hz : fs;
+        if (rate_hz > 0.0 && fabs(rate_hz - fs) > 1.0e-9 * fs) {
+            /* the file states its rate: a different --input-rate replaced
+             * it without a word, and --input-rate 200 on a 100 Hz file
+             * halved every stride time (the gait review, 2026-11-30); it
+             * still rules, since the file may state the wrong one */
+            add_warn(r, "%s: --input-rate %g Hz replaces the rate the file states (%g Hz on line %ld)", r->path,
+                     rate_hz, fs, r->stats.lines);
+        }
         r->delim = '\t';
         if (setup_header(r, names, 1) != 0) {
             return -1;

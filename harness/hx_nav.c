@@ -320,6 +320,41 @@ static double stance_fit_rate(const fnav_nav_config_t *cfg, double fs_hz)
     return 0.0;
 }
 
+/* The gait events' searches at fs_hz, samples (fnav_stance.c, set_rate and
+ * foot_strike): the foot-off's is n_ev, at most FNAV_STANCE_EVENT_BUF - 1;
+ * the foot-strike's what the jerk history holds before the stance's first
+ * n_min_stance samples. */
+static void event_reach(const fnav_nav_config_t *cfg, double fs_hz, long *fo_n, long *fs_n)
+{
+    long ev = lround((double)cfg->stance.event_window_s * fs_hz), ms = lround((double)cfg->stance.min_stance_s * fs_hz);
+    ev = ev < 1 ? 1 : ev > FNAV_STANCE_EVENT_BUF - 1 ? FNAV_STANCE_EVENT_BUF - 1 : ev;
+    ms = ms < 1 ? 1 : ms;
+    *fo_n = ev;
+    *fs_n = ev < FNAV_STANCE_EVENT_BUF - ms ? ev : FNAV_STANCE_EVENT_BUF - ms;
+}
+
+/* The highest rate below fs_hz, in whole hundreds of Hz from 100 Hz up and
+ * whole Hz below, at which both event searches span event_window_s; 0 when
+ * none does. */
+static double event_fit_rate(const fnav_nav_config_t *cfg, double fs_hz)
+{
+    double r = fs_hz;
+    while (r >= 1.0) {
+        const double step = r > 100.0 ? 100.0 : 1.0;
+        long fo_n, fs_n, want;
+        r = step * ceil(r / step) - step;
+        if (!(r >= 1.0)) {
+            break;
+        }
+        event_reach(cfg, r, &fo_n, &fs_n);
+        want = lround((double)cfg->stance.event_window_s * r);
+        if (fo_n >= want && fs_n >= want) {
+            return r;
+        }
+    }
+    return 0.0;
+}
+
 /* ------------------------------------------------------------ resampler */
 
 static int cmp_i64(const void *a, const void *b)
@@ -895,9 +930,15 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
             }
         }
         if (name != NULL) {
+            /* 1 s apart: 1 kHz in milliseconds, or a sample number (a
+             * logger's counter), which --input-rate serves without the
+             * column (the gait review, 2026-11-30) */
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
-                         "time stamps in seconds? (they look like %s: divide by %s)",
-                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, name, div);
+                         "time stamps in seconds? (they look like %s: divide by %s%s)",
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, name, div,
+                         fabs(rate_hz - 1.0) < 1e-9 ? "; or, if they count samples, leave the column out and give the "
+                                                      "rate with --input-rate HZ"
+                                                    : "");
         } else {
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
                          "time stamps in seconds? (in milliseconds, divide by 1000)",
@@ -1167,6 +1208,34 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                     "%s: at %.0f Hz the stance detector's ring of %d samples cuts %s: %s or build with a larger "
                     "FNAV_STANCE_MAX_WINDOW (docs/navigation.md, \"Stance detector\")",
                     path, fs, FNAV_STANCE_MAX_WINDOW, what, advice);
+        }
+    }
+    if ((flags & HX_REPLAY_EVENTS) && nav.stance.rate_hz > 0.0f) {
+        /* the gait events' searches live in the detector's jerk history
+         * (FNAV_STANCE_EVENT_BUF samples): above about 450 Hz they are cut,
+         * and an event beyond the cut is read late (the 820 Hz OpenShoe
+         * walk: 3 of 49 foot-strikes 77-155 ms later than at 200 Hz),
+         * silently until 2026-11-30 (the gait review) */
+        const double fs = (double)nav.stance.rate_hz;
+        const long want = lround((double)cfg->stance.event_window_s * fs);
+        long fo_n, fs_n;
+        event_reach(cfg, fs, &fo_n, &fs_n);
+        if (fo_n < want || fs_n < want) {
+            const double fit = event_fit_rate(cfg, fs);
+            char advice[96];
+            if (fit > 0.0) {
+                snprintf(advice, sizeof advice, "resample (--rate %.0f) or", fit);
+            } else {
+                snprintf(advice, sizeof advice, "shorten min_stance_s (--param) or");
+            }
+            hx_warn(cmd,
+                    "%s: at %.0f Hz the gait events' searches are cut: the foot-off is searched over %.0f ms (of "
+                    "%.0f) after the swing begins and the foot-strike over %.0f ms (of %.0f) before the stance "
+                    "(FNAV_STANCE_EVENT_BUF, %d samples of jerk history); an event beyond is read late: %s build "
+                    "with a larger FNAV_STANCE_EVENT_BUF (docs/navigation.md, \"Strides and gait events\")",
+                    path, fs, 1e3 * (double)fo_n / fs, 1e3 * (double)cfg->stance.event_window_s,
+                    1e3 * (double)fs_n / fs, 1e3 * (double)cfg->stance.event_window_s, FNAV_STANCE_EVENT_BUF,
+                    advice);
         }
     }
     if (rc == 0) {
@@ -1500,7 +1569,7 @@ int hx_nav_write_strides(FILE *f, const hx_traj_t *t)
         n = hx_nav_stance_phases(t, mid, start, t->n + 1);
         heading_ref(t, first, ref_b);
     }
-    fprintf(f, "stride,foot_off_s,foot_strike_s,swing_start_s,swing_end_s,swing_s,stride_time_s,cadence_spm,"
+    fprintf(f, "stride,foot_off_s,foot_strike_s,swing_start_s,swing_end_s,swing_s,stance_s,stride_time_s,cadence_spm,"
                "length_m,height_change_m,heading_change_deg,clearance_m\n");
     for (k = 0; k < t->nev; k++) {
         const hx_stride_ev_t *e = &t->ev[k];
@@ -1551,6 +1620,10 @@ int hx_nav_write_strides(FILE *f, const hx_traj_t *t)
          * foot-off at or after the foot-strike: no swing time then (it read
          * 0 or negative, down to -0.24 s, in 8 of ipol's 515 rows) */
         stride_field(f, 6, fs > fo ? fs - fo : (double)NAN);
+        /* the stance of this gait cycle: from the previous foot-strike to
+         * this foot-off (stance + swing = stride time; the rows had no
+         * stance time until the gait review, 2026-11-30) */
+        stride_field(f, 6, fo > fs_prev ? fo - fs_prev : (double)NAN);
         stride_field(f, 6, fs - fs_prev);
         stride_field(f, 3, 120.0 / (fs - fs_prev));
         stride_field(f, 4, len);
@@ -1879,13 +1952,17 @@ int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_tr
          * it): two empty panels that say so; gnuplot refuses a plot without
          * a valid point, and the png was left half drawn with exit 3 (a
          * review, 2026-11-28) */
-        fprintf(p.gp, "set xlabel 'east y (m)'\nset ylabel 'north x (m)'\nset xrange [-1:1]\nset yrange [-1:1]\n"
+        fprintf(p.gp, "set xlabel 'y (m, right of the start heading)'\nset ylabel 'x (m, along the start heading)'\n"
+                      "set xrange [-1:1]\nset yrange [-1:1]\n"
                       "set title 'no aligned frame: nothing navigated'\nplot -2 notitle\n"
                       "set xlabel 'time (s)'\nset ylabel 'height (m, up)'\nset title 'no aligned frame'\n"
                       "plot -2 notitle\nunset multiplot\n");
         return hx_plot_close(&p, cmd);
     }
-    fprintf(p.gp, "set size ratio -1\nset xlabel 'east y (m)'\nset ylabel 'north x (m)'\n");
+    /* n's axes (docs/frames.md): no magnetometer, so not north and east,
+     * as they were labelled until 2026-11-30 (the gait review) */
+    fprintf(p.gp, "set size ratio -1\nset xlabel 'y (m, right of the start heading)'\n"
+                  "set ylabel 'x (m, along the start heading)'\n");
     {
         /* one span on both axes, centred on the path (start included): with
          * equal units alone a straight walk became a strip a few pixels wide

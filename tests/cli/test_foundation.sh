@@ -200,6 +200,43 @@ awk 'BEGIN { print "gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g"; f
 assumed_rate ADIS16405 "$T/adis.csv" "no time stamps; assuming the ADIS16405 data set rate of 100 Hz (give --input-rate)"
 awk 'BEGIN { print "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps,q0,q1,q2,q3"; for (k = 0; k < 400; k++) print k ",-0.07,0,-9.82,0.001,-0.002,-0.001,1,0,0,0" }' >"$T/square2.csv"
 assumed_rate square2 "$T/square2.csv" "no time stamps; assuming the ZUPT-aided-INS square2 data set rate of 100 Hz (give --input-rate)"
+# an ipol log states its rate on line 1: --input-rate replaced it without a word,
+# and a gait lab's wrong --input-rate 200 on a 100 Hz file halved every stride
+# time and doubled the cadence in replay --strides (the gait review,
+# 2026-11-30); now a rate that differs from the stated one is warned about
+# (it still rules: the file may state the wrong one), the same one is not
+awk 'BEGIN { print "Acquisition frequency: 100 Hz"; print "PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z"; for (k = 0; k < 400; k++) print k "\t0.1\t0\t9.8\t0.001\t-0.002\t0.001" }' >"$T/ipol.txt"
+expect_exit 0 "info on an ipol log with a different --input-rate" "$H" info "$T/ipol.txt" --input-rate 200
+expect_err "ipol.txt: --input-rate 200 Hz replaces the rate the file states (100 Hz on line 1)" "ipol: a --input-rate that overrides the stated rate is warned about"
+expect_out "200.000 Hz (nominal)" "ipol: --input-rate still sets the rate"
+expect_exit 0 "info on an ipol log with its own rate as --input-rate" "$H" info "$T/ipol.txt" --input-rate 100
+if grep -q "replaces the rate" "$T/err"; then fail "ipol --input-rate equal to the stated rate: warned"; else pass "ipol --input-rate equal to the stated rate: no warning"; fi
+# our CSV without a time column (a logger that writes samples at a fixed rate,
+# the first thing a gait lab exports): --input-rate gives the rate, t = index /
+# rate, as for the importers without time stamps; without it the error names
+# --input-rate. Before, it was "header has no column 't'" with no way to give
+# a rate but to add the column by hand (the gait review, 2026-11-30)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 400; k++) printf "%.2f,0.1,0,%.3f,0.001,-0.002,%.4f\n", k / 100, 9.8 + k % 7 * 0.001, k % 5 * 0.0001 }' >"$T/timed.csv"
+cut -d, -f2- "$T/timed.csv" >"$T/untimed.csv"
+expect_exit 1 "our CSV without t, no --input-rate" "$H" info "$T/untimed.csv"
+expect_err "untimed.csv:1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz\[,temp\] (t in s: name the time column t; a log without time stamps: give its rate with --input-rate HZ)" "no t column: the error names --input-rate"
+# a time column under another name ('time', 'timestamp'): the rename is named first, since --input-rate would
+# drop its stamps
+sed '1s/^t,/time,/' "$T/timed.csv" >"$T/timecol.csv"
+expect_exit 1 "our CSV with its time column named 'time'" "$H" info "$T/timecol.csv"
+expect_err "header has no column 't'; expected t,ax,ay,az,gx,gy,gz\\[,temp\\] (t in s: name the time column t;" "a time column named 'time': the rename named"
+# ... but only to a header that has the six others: a file that is no IMU log (a stride table) is not told to
+# give a rate
+printf 'strideIndex,x,y\n1,0.5,0.1\n' >"$T/notimu.csv"
+expect_exit 1 "a CSV that is no IMU log" "$H" info "$T/notimu.csv"
+if grep -q "input-rate" "$T/err"; then fail "a CSV that is no IMU log: told to give --input-rate"; else pass "a CSV that is no IMU log: no --input-rate advice"; fi
+expect_exit 0 "our CSV without t, --input-rate 100" "$H" convert "$T/untimed.csv" "$T/untimed_out.csv" --input-rate 100
+"$H" convert "$T/timed.csv" "$T/timed_out.csv" >/dev/null 2>&1
+if cmp -s "$T/timed_out.csv" "$T/untimed_out.csv"; then pass "no t column with --input-rate 100: the samples of the same log with t = index / 100"
+else fail "no t column with --input-rate 100: $(diff "$T/timed_out.csv" "$T/untimed_out.csv" | head -3)"; fi
+if grep -q "ignored" "$T/err"; then fail "no t column: --input-rate said to be ignored"; else pass "no t column: --input-rate not said to be ignored"; fi
+expect_exit 0 "info on our CSV without t" "$H" info "$T/untimed.csv" --input-rate 100
+expect_out "100.000 Hz (nominal)" "no t column: the rate is --input-rate's"
 
 # --- a foreign recording cut off mid-line (docs/log-format.md: its last line
 # is ignored with a warning): every reader warns, the streaming ones (convert,
@@ -371,6 +408,17 @@ for args in "replay vectors/walk.bin --quiet --out $T/two.txt --json $T/two.txt"
     expect_err "name the same file" "two outputs on one file refused: ${args%% *}"
 done
 expect_exit 0 "replay --out /dev/null --json /dev/null" "$H" replay vectors/walk.bin --quiet --out /dev/null --json /dev/null
+# the same new file under two spellings (F and ./F, or DIR//F): stat could not
+# tell before either existed, and `replay LOG --strides s.csv --json ./s.csv`
+# left the JSON in s.csv, exit 0 (the gait review, 2026-11-30)
+rm -f "$T/sp.csv"
+expect_exit 2 "two outputs on one new file, spelled twice" "$H" replay vectors/walk.bin --quiet --strides "$T/sp.csv" --json "$T/./sp.csv"
+expect_err "name the same file" "two spellings of one new file refused"
+if [ -e "$T/sp.csv" ]; then fail "the refused outputs were written"; else pass "nothing written when two spellings are refused"; fi
+rm -f "$T/sp.csv"
+expect_exit 2 "two outputs on one new file, DIR//F" "$H" psd vectors/walk.bin --out "$T//sp.csv" --json "$T/sp.csv"
+expect_err "name the same file" "DIR//F and DIR/F refused"
+expect_exit 0 "two different new files in one directory" "$H" replay vectors/walk.bin --quiet --strides "$T/sp1.csv" --json "$T/./sp2.csv"
 
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]

@@ -698,6 +698,17 @@ awk -F, 'NR == 1 { print; next } NR < 400 { printf "%.0f,%s,%s,%s,%s,%s,%s\n", $
     vectors/nav/golden/gx2_walk2.csv > "$T/in_ns.csv"
 expect_exit 1 "time in nanoseconds" "$H" replay "$T/in_ns.csv" --quiet
 expect_err "they look like nanoseconds: divide by 1e9" "time stamps in ns are named as such"
+# a t column that counts samples (0, 1, 2, ...), as a logger's sample number often does: it was told only to
+# divide by 1000 (right for a 1 kHz log in ms, wrong for a 250 Hz one); the remedy for a counter, leaving the
+# column out and giving --input-rate, is named too (the gait review, 2026-11-30)
+awk -F, 'NR == 1 { print; next } { printf "%d,%s,%s,%s,%s,%s,%s\n", NR - 2, $2, $3, $4, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_idx.csv"
+expect_exit 1 "time as a sample number" "$H" replay "$T/in_idx.csv" --quiet
+expect_err "they look like milliseconds: divide by 1000; or, if they count samples, leave the column out and give the rate with --input-rate HZ" \
+    "a sample number as time: the counter's remedy named"
+expect_exit 1 "time in milliseconds, again" "$H" replay "$T/in_ms.csv" --quiet
+if grep -q "count samples" "$T/err"; then fail "stamps in ms (4 ms apart) told they may count samples"; else
+    pass "stamps in ms (4 ms apart) not told they may count samples"; fi
 
 # Rows of the Markdown tables in FILE... whose cell count differs from their
 # header's (an unescaped | in a header or a note breaks a table), as FILE:LINE.
@@ -958,6 +969,13 @@ PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp3.txt" "$H" replay "$T/straight.bin" --pr
     --samples instant --plot "$T/straight3.png" --quiet >/dev/null 2>&1
 if grep -q -x "set multiplot layout 1,2 title '$T/straight.bin'" "$T/gp3.txt"; then pass "plot title: defaults given explicitly are left out"; else
     fail "plot title (explicit defaults): $(grep multiplot "$T/gp3.txt" | head -1)"; fi
+# the path's axes are n's x and y (docs/frames.md: x along the sensor's heading at the alignment, no
+# magnetometer): they were labelled 'north x' and 'east y', which a figure in a paper reads as geographic (the
+# gait review, 2026-11-30)
+if grep -q -x "set xlabel 'y (m, right of the start heading)'" "$T/gp.txt" &&
+    grep -q -x "set ylabel 'x (m, along the start heading)'" "$T/gp.txt" && ! grep -q -i "north\|east" "$T/gp.txt"; then
+    pass "path plot: axes named after the start heading, not north and east"
+else fail "path plot labels: $(grep label "$T/gp.txt" | tr '\n' ' ')"; fi
 # gnuplot failing partway left its half-drawn PNG behind beside "failed to
 # write" (the plots review): the file it started is removed, and said; a file
 # that was there before and that gnuplot never opened is left alone
@@ -1020,7 +1038,7 @@ strides_ok() {
     "${PY:-/usr/bin/python3}" - "$@" <<'PYEOF'
 import csv, json, statistics, sys
 path, jpath, want_len, want_cad, tol_len, tol_cad = sys.argv[1], sys.argv[2], *map(float, sys.argv[3:7])
-cols = ["stride", "foot_off_s", "foot_strike_s", "swing_start_s", "swing_end_s", "swing_s", "stride_time_s",
+cols = ["stride", "foot_off_s", "foot_strike_s", "swing_start_s", "swing_end_s", "swing_s", "stance_s", "stride_time_s",
         "cadence_spm", "length_m", "height_change_m", "heading_change_deg", "clearance_m"]
 rows = list(csv.reader(open(path)))
 if rows[0] != cols: sys.exit("header %s" % rows[0])
@@ -1036,6 +1054,14 @@ for r in rows:
     if not f(r, "foot_off_s") < f(r, "foot_strike_s"): sys.exit("foot-off not before foot-strike in stride " + r["stride"])
     if not f(r, "swing_start_s") < f(r, "swing_end_s"): sys.exit("swing start not before its end in stride " + r["stride"])
 if rows[0]["stride_time_s"] != "" or rows[0]["cadence_spm"] != "": sys.exit("the first stride has a stride time")
+# stance_s: the foot-off minus the previous row's foot-strike, so that stance and swing make the stride time
+# (the gait review, 2026-11-30: the rows gave no stance time)
+if rows[0]["stance_s"] != "": sys.exit("the first stride has a stance time")
+for a, b in zip(rows, rows[1:]):
+    if abs(f(b, "stance_s") - (f(b, "foot_off_s") - f(a, "foot_strike_s"))) > 1.5e-6:
+        sys.exit("stance_s of stride %s is not its foot-off minus the previous foot-strike" % b["stride"])
+    if b["swing_s"] != "" and abs(f(b, "stance_s") + f(b, "swing_s") - f(b, "stride_time_s")) > 3e-6:
+        sys.exit("stance_s + swing_s is not stride_time_s in stride " + b["stride"])
 lens = [f(r, "length_m") for r in rows if r["length_m"] != ""]
 cads = [f(r, "cadence_spm") for r in rows if r["cadence_spm"] != ""]
 ml, mc = statistics.median(lens), statistics.median(cads)
@@ -1084,6 +1110,28 @@ expect_exit 0 "replay --strides --rate 100" "$H" replay "$T/sw0.bin" --rate 100 
 if strides_ok "$T/sw0_r_strides.csv" "$T/sw0_r.json" "$L0" 100 0.014 0.9 >"$T/py" 2>&1; then pass "--strides resampled: $(cat "$T/py")"
 else fail "--strides resampled: $(cat "$T/py") $(cat "$T/err")"; fi
 # standard output: the rows alone there, the summary on standard error
+# above about 450 Hz the gait events' searches do not fit the detector's jerk history (FNAV_STANCE_EVENT_BUF,
+# 160 samples): at 1 kHz the foot-off was searched over 159 ms and the foot-strike over 110 ms instead of 0.3 s,
+# and the 820 Hz OpenShoe walk read 3 of its 49 foot-strikes 77-155 ms later than resampled to 200 Hz, without a
+# word (the gait review, 2026-11-30). With --strides, replay now says so and names the rate that fits
+"$H" sim --motion walk --duration 12 --rate 1000 --profile none --out "$T/sw_1k.bin" >/dev/null 2>&1 ||
+    fail "sim --rate 1000 for the event searches"
+expect_exit 0 "replay --strides at 1 kHz" "$H" replay "$T/sw_1k.bin" --strides "$T/sw_1k.csv" --quiet
+expect_err "at 1000 Hz the gait events' searches are cut: the foot-off is searched over 159 ms (of 300) after the swing begins and the foot-strike over 110 ms (of 300) before the stance (FNAV_STANCE_EVENT_BUF, 160 samples of jerk history)" \
+    "--strides at 1 kHz: the cut event searches said, with their reach"
+expect_err "resample (--rate 400) or build with a larger FNAV_STANCE_EVENT_BUF" "--strides at 1 kHz: the rate that fits advised"
+expect_exit 0 "replay at 1 kHz without --strides" "$H" replay "$T/sw_1k.bin" --quiet
+if grep -q "gait events" "$T/err"; then fail "the event searches warned about without --strides"; else pass "no event-search warning without --strides"; fi
+expect_exit 0 "replay --strides at 1 kHz resampled to 400 Hz" "$H" replay "$T/sw_1k.bin" --rate 400 --strides "$T/sw_400.csv" --quiet
+if grep -q "gait events" "$T/err"; then fail "the event searches warned about at 400 Hz: $(cat "$T/err")"; else pass "no event-search warning at 400 Hz"; fi
+# the sign of heading_change_deg (docs/harness.md, "Stride CSV": positive clockwise from above, as yaw): the
+# simulator's loop turns right three times, and its rows sum to +270 deg
+"$H" sim --motion loop --duration 60 --profile none --out "$T/loop.bin" >/dev/null 2>&1 || fail "sim --motion loop"
+expect_exit 0 "replay --strides of the loop" "$H" replay "$T/loop.bin" --strides "$T/loop_strides.csv" --quiet
+if awk -F, 'NR > 1 && $12 != "" { s += $12 } END { exit !(s > 269 && s < 271) }' "$T/loop_strides.csv" &&
+    head -1 "$T/loop_strides.csv" | awk -F, '{ exit $12 != "heading_change_deg" }'; then
+    pass "heading_change_deg: three right turns sum to +270"
+else fail "heading_change_deg of the loop: $(cut -d, -f12 "$T/loop_strides.csv" | tr '\n' ' ')"; fi
 expect_exit 0 "--strides -" "$H" replay "$T/sw0.bin" --strides -
 if cmp -s "$T/out" "$T/sw0_strides.csv"; then pass "--strides - writes the rows of --strides FILE on stdout"; else fail "--strides - on stdout"; fi
 expect_err "^stance  *[0-9]* strides" "--strides -: the summary is on stderr"
