@@ -146,8 +146,11 @@ int hx_evplot_paths(const hx_evplot_set_t *s, const char *cmd, const char *png, 
     }
     fprintf(p.gp, "set multiplot layout 1,2 title '%s'\n", hx_gp_str(q, sizeof q, title));
     fprintf(p.gp, "set key outside bottom center horizontal noautotitle\n");
-    /* east to the right, north up (n is north-east-down) */
-    fprintf(p.gp, "set size ratio -1\nset xlabel 'east y (m)'\nset ylabel 'north x (m)'\nplot ");
+    /* n's y to the right, x up: x is the heading at the alignment, not
+     * north (no magnetometer, docs/frames.md); labelled 'east y' and 'north
+     * x' until 2026-11-30, as replay's plot was */
+    fprintf(p.gp, "set size ratio -1\nset xlabel 'y (m, right of the start heading)'\n"
+                  "set ylabel 'x (m, along the start heading)'\nplot ");
     for (i = 0; i < s->n; i++) {
         fprintf(p.gp, "'-' with lines lw 1 title '%s', ", hx_gp_str(q, sizeof q, s->w[i].name));
     }
@@ -177,7 +180,7 @@ int hx_evplot_paths(const hx_evplot_set_t *s, const char *cmd, const char *png, 
 static const char k_strides_key[] = "(grey: estimated path; red dots: the estimate at each stride; circles: the truth "
                                     "there)";
 
-/* Widen the ranges lo..hi (east, north) to a point. */
+/* Widen the ranges lo..hi (n's y, x) to a point. */
 static void widen(double lo[2], double hi[2], double e, double n)
 {
     lo[0] = fmin(lo[0], e);
@@ -210,8 +213,8 @@ int hx_evplot_strides(const hx_evplot_set_t *s, const char *cmd, const char *png
     }
     fprintf(p.gp, "set multiplot layout %d,%d title '%s'.\"\\n\".'%s'\n", rows, cols, hx_gp_str(q, sizeof q, title),
             k_strides_key);
-    fprintf(p.gp, "set size ratio -1\nunset key\nset xlabel 'east y (m)' font ',8'\n"
-                  "set ylabel 'north x (m)' font ',8'\nset tics font ',8'\n");
+    fprintf(p.gp, "set size ratio -1\nunset key\nset xlabel 'y (m, right of the start heading)' font ',8'\n"
+                  "set ylabel 'x (m, along the start heading)' font ',8'\nset tics font ',8'\n");
     for (i = 0; i < s->n; i++) {
         const hx_evplot_walk_t *w = &s->w[i];
         /* the panel's ranges: every point, the narrower side widened to

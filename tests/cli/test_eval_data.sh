@@ -93,6 +93,16 @@ else pass "licence and readme files are not walks, whatever their case"; fi
 if grep -q "^| openshoe_c_820hz/walk.txt | " "$T/docs.md"; then pass "the walk beside them is evaluated"; else fail "walk beside the docs missing"; fi
 if grep -q "^No walks found in \`$T/docs/openshoe_square2\`." "$T/docs.md"; then pass "the other closed set's absence is said"; else
     fail "absent openshoe_square2 not named"; fi
+# the paths' axes are the navigation frame's x and y (docs/frames.md: x along the sensor's heading at the alignment,
+# no magnetometer): eval labelled them 'north x' and 'east y', which a figure in a paper reads as geographic (replay's
+# plot was relabelled by the gait review, 2026-11-30; eval's figures kept the old labels)
+fake_gnuplot "$T/fakegp"
+PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp_eval.txt" "$H" eval --no-experiments --data "$T/docs" --out "$T/docs_gp.md" \
+    --plots "$T/docs_figs" >/dev/null 2>&1
+if grep -q "^set xlabel 'y (m, right of the start heading)'" "$T/gp_eval.txt" &&
+    grep -q "^set ylabel 'x (m, along the start heading)'" "$T/gp_eval.txt" && ! grep -q -i "north\|east" "$T/gp_eval.txt"; then
+    pass "eval's path figure: axes named after the start heading, not north and east"
+else fail "eval path labels: $(grep label "$T/gp_eval.txt" 2>/dev/null | tr '\n' ' ')"; fi
 
 if [ -n "$D" ]; then
     D=$(cd "$D" && pwd) # the symlinks below need an absolute target
