@@ -33,7 +33,7 @@ const fnav_nav_config_t fnav_nav_config_default = {
     FNAV_R(0.001),      /* yaw_sd_rad */
     FNAV_R(0.01) * D2R, /* gyro_bias_sd_rps */
     FNAV_R(0.02),       /* accel_bias_sd_mps2 */
-    FNAV_R(0.5),        /* max_gap_s */
+    FNAV_R(0.2),        /* max_gap_s */
     1,                  /* closed_form */
     FNAV_R(30.0),       /* diverge_speed_mps */
     20u                 /* diverge_undone */

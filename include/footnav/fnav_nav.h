@@ -136,7 +136,8 @@ typedef struct {
     fnav_real_t gyro_bias_sd_rps;      /**< initial sd of the AR(1) gyro bias states, rad/s */
     fnav_real_t accel_bias_sd_mps2;    /**< initial sd of the AR(1) accel bias states, m/s^2 */
     fnav_real_t max_gap_s;             /**< intervals above this (and above 1.5 nominal intervals)
-                                            are time jumps, s; with stance.rate_hz set, init
+                                            are time jumps, s (default 0.2, docs/navigation.md
+                                            "Timing"); with stance.rate_hz set, init
                                             refuses max_gap_s <= 1.5 / rate_hz */
     int closed_form;                   /**< UKF closed-form linear sigma points (1) or not (0) */
     fnav_real_t diverge_speed_mps;     /**< |velocity| above this is divergence, m/s (default 30:

@@ -1013,7 +1013,7 @@ expect_exit 1 "stamps of 10 s resolution" "$H" replay "$T/lr10.csv"
 expect_err "estimated from the log's time stamps.*is too low to navigate" "too coarse stamps: the rate and its source said"
 grep -q "check --param" "$T/err" && fail "no --param given, yet 'check --param'" || pass "no --param blamed"
 expect_exit 2 "--rate 1" "$H" replay vectors/walk.bin --rate 1
-expect_err "a sample rate of 1 Hz (--rate) is too low to navigate.*above 3 Hz" "--rate too low: said with the bound"
+expect_err "a sample rate of 1 Hz (--rate) is too low to navigate.*above 7.5 Hz" "--rate too low: said with the bound"
 
 # --- the summary's figures on a climb whose answer is known: a simulated flight of 12 stairs of
 # 0.17 m x 0.28 m, two per stride (docs/simulator.md) leaves 6 stance phases, 5 step-to-step
