@@ -547,20 +547,28 @@ json "$T/gm.json" "j['channels'][0]['corrected']['ar1_identified'] and 2.5 < j['
 # channel gets the white noise of the ADEV at 1 s. 600 s at 100 Hz of white noise, half of it through a 4-sample
 # moving average (low-frequency density 0.005 m/s^2/sqrt(Hz), 0.0005 rad/s/sqrt(Hz), as the filter keeps the DC
 # gain): the fit gave T = 1 sample and a white noise about 36 % low on every channel.
-"$PY" -c "
+filt_log() { # OUT N RW: N samples at 100 Hz of white noise, half of it through a 4-tap moving average, plus a
+    # random walk of RW x the white sd per sample (seed 3)
+    "$PY" -c "
 import math, random, sys
 r = random.Random(3)
 sd, mean, L = [0.05] * 3 + [0.005] * 3, [0, 0, 9.81, 0, 0, 0], 4
 h = [[r.gauss(0, 1) for _ in range(L)] for _ in range(6)]
+b = [0.0] * 6
+rw = float(sys.argv[3])
 with open(sys.argv[1], 'w') as f:
     f.write('t,ax,ay,az,gx,gy,gz\n')
-    for i in range(60000):
+    for i in range(int(sys.argv[2])):
         row = []
         for c in range(6):
             h[c].pop(0)
             h[c].append(r.gauss(0, 1))
-            row.append(mean[c] + sd[c] * (math.sqrt(0.5) * r.gauss(0, 1) + math.sqrt(0.5) * sum(h[c]) / L))
-        f.write('%.2f,%s\n' % (i / 100, ','.join('%.7g' % v for v in row)))" "$T/filt.csv"
+            if rw:
+                b[c] += rw * sd[c] * r.gauss(0, 1)
+            row.append(mean[c] + b[c] + sd[c] * (math.sqrt(0.5) * r.gauss(0, 1) + math.sqrt(0.5) * sum(h[c]) / L))
+        f.write('%.2f,%s\n' % (i / 100, ','.join('%.7g' % v for v in row)))" "$@"
+}
+filt_log "$T/filt.csv" 60000 0
 expect_exit 0 "white noise through a short filter, a profile" "$H" allan "$T/filt.csv" --no-sim --quiet \
     --profile "$T/filt.profile"
 expect_err "the fit's AR(1) of gx has T = " "a short AR(1) is said to be refused"
@@ -592,22 +600,7 @@ prof_ok "$T/filt.profile" 0.005 0.0005 0.1 >"$T/pyout" && pass "filtered white n
 # calls the sensor's filtering, not a bias. Now the bound's T is raised to the floor, and the warning, the table's
 # line and the JSON's profile object (tau_at_floor) say so. 300 s at 100 Hz of the filtered white noise above plus
 # a random walk (minimum near 0.45 s); with --fit-extra the walk goes to K and the fit's AR(1) to the filter.
-"$PY" -c "
-import math, random, sys
-r = random.Random(3)
-sd, mean, L = [0.05] * 3 + [0.005] * 3, [0, 0, 9.81, 0, 0, 0], 4
-h = [[r.gauss(0, 1) for _ in range(L)] for _ in range(6)]
-b = [0.0] * 6
-with open(sys.argv[1], 'w') as f:
-    f.write('t,ax,ay,az,gx,gy,gz\n')
-    for i in range(30000):
-        row = []
-        for c in range(6):
-            h[c].pop(0)
-            h[c].append(r.gauss(0, 1))
-            b[c] += 0.04 * sd[c] * r.gauss(0, 1)
-            row.append(mean[c] + b[c] + sd[c] * (math.sqrt(0.5) * r.gauss(0, 1) + math.sqrt(0.5) * sum(h[c]) / L))
-        f.write('%.2f,%s\n' % (i / 100, ','.join('%.7g' % v for v in row)))" "$T/filtrw.csv"
+filt_log "$T/filtrw.csv" 30000 0.04
 expect_exit 0 "filtered white noise and a random walk, --fit-extra, a profile" "$H" allan "$T/filtrw.csv" --no-sim \
     --quiet --fit-extra --profile "$T/filtrw.profile" --json "$T/filtrw.json"
 expect_err "the fit's AR(1) of gx has T = .* under the floor of 53 samples" "minimum under the floor: the fit is refused for its T"
