@@ -1210,7 +1210,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                     path, fs, FNAV_STANCE_MAX_WINDOW, what, advice);
         }
     }
-    if ((flags & HX_REPLAY_EVENTS) && nav.stance.rate_hz > 0.0f) {
+    if ((flags & HX_REPLAY_EVENTS) && nav.stance.rate_hz > FNAV_R(0.0)) {
         /* the gait events' searches live in the detector's jerk history
          * (FNAV_STANCE_EVENT_BUF samples): above about 450 Hz they are cut,
          * and an event beyond the cut is read late (the 820 Hz OpenShoe
