@@ -1210,7 +1210,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                     path, fs, FNAV_STANCE_MAX_WINDOW, what, advice);
         }
     }
-    if ((flags & HX_REPLAY_EVENTS) && nav.stance.rate_hz > 0.0f) {
+    if ((flags & HX_REPLAY_EVENTS) && nav.stance.rate_hz > FNAV_R(0.0)) {
         /* the gait events' searches live in the detector's jerk history
          * (FNAV_STANCE_EVENT_BUF samples): above about 450 Hz they are cut,
          * and an event beyond the cut is read late (the 820 Hz OpenShoe
@@ -1622,8 +1622,11 @@ int hx_nav_write_strides(FILE *f, const hx_traj_t *t)
         stride_field(f, 6, fs > fo ? fs - fo : (double)NAN);
         /* the stance of this gait cycle: from the previous foot-strike to
          * this foot-off (stance + swing = stride time; the rows had no
-         * stance time until the gait review, 2026-11-30) */
-        stride_field(f, 6, fo > fs_prev ? fo - fs_prev : (double)NAN);
+         * stance time until the gait review, 2026-11-30); none where the
+         * swing has none: from a foot-off not before the foot-strike it
+         * read the whole stride time or more (0.87 s of a 0.68 s stride,
+         * ipol 3-4 right) */
+        stride_field(f, 6, fo > fs_prev && fs > fo ? fo - fs_prev : (double)NAN);
         stride_field(f, 6, fs - fs_prev);
         stride_field(f, 3, 120.0 / (fs - fs_prev));
         stride_field(f, 4, len);

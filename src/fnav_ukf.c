@@ -124,8 +124,11 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
     /* n + lambda > 0: the pair weights Wi are positive; beta >= alpha^2,
      * formed as fnav_ukf_predict forms it: the predicted covariance S +
      * (beta - alpha^2) m m^T is a sum of positive semi-definite terms
-     * (fnav_ukf.h) */
-    if (!(nl > FNAV_R(0.0)) || !fnav_isfinite(nl) || !(cfg->beta - cfg->alpha * cfg->alpha >= FNAV_R(0.0))) {
+     * (fnav_ukf.h); W0m = lambda / (n + lambda) finite, which also refuses
+     * an infinite n + lambda (inf / inf) and one so small that W0m
+     * overflows (alpha = 3e-20 in float: W0m = -inf; Wi = 0.5 / (n + lambda)
+     * is then smaller in magnitude, n >= 9) */
+    if (!(nl > FNAV_R(0.0)) || !fnav_isfinite(lambda / nl) || !(cfg->beta - cfg->alpha * cfg->alpha >= FNAV_R(0.0))) {
         return FNAV_E_CONFIG;
     }
     for (b = 0; b < sizeof *f; b++) {

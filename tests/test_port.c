@@ -219,6 +219,60 @@ static void test_cm_batch_stamp(void **state)
     assert_true(fnav_cm_batch_stamp(t_prev, t_irq, 0u, 8u, 0) == t_prev + 100000000 / 8); /* 0: spread */
 }
 
+/* The edges of the two helpers. fnav_cm_unwrap: a step of exactly half the
+ * counter's period is ahead (the header asks for a reading at least every
+ * half period: one exactly half a period later read as half a period
+ * behind, the core rejecting it), and a counter of one value (mask 0) stays
+ * at 0 (it went back a tick per reading: 0, -1, -2, ...). fnav_cm_batch_stamp
+ * on stamps far apart (period_ns 0: always spread) or a huge period_ns: span
+ * * (i + 1), t_irq - t_prev and 2 period_ns overflowed int64 (undefined;
+ * stamps behind t_prev or a wrong batch), and the lost-samples case starts
+ * where the header says, at an interval longer than 2 n period_ns (it
+ * started n - 1 ns later). */
+static void test_cm_time_edges(void **state)
+{
+    fnav_cm_unwrap_t u;
+    int64_t t, before, step;
+    uint32_t i;
+    (void)state;
+    fnav_cm_unwrap_init(&u, 0xffffu);
+    assert_true(fnav_cm_unwrap(&u, 0u) == 0);
+    assert_true(fnav_cm_unwrap(&u, 32768u) == 32768); /* half a period later: ahead */
+    assert_true(fnav_cm_unwrap(&u, 0u) == 65536);
+    assert_true(fnav_cm_unwrap(&u, 32769u) == 65536 - 32767); /* less than half behind: behind */
+    fnav_cm_unwrap_init(&u, 0xffffffffu);
+    (void)fnav_cm_unwrap(&u, 7u);
+    assert_true(fnav_cm_unwrap(&u, 7u + 0x80000000u) == (int64_t)7 + 0x80000000);
+    fnav_cm_unwrap_init(&u, 1u); /* one bit: every change is half a period */
+    for (i = 0; i < 6u; i++) {
+        assert_true(fnav_cm_unwrap(&u, i & 1u) == (int64_t)i);
+    }
+    fnav_cm_unwrap_init(&u, 0u);
+    for (i = 0; i < 4u; i++) {
+        assert_true(fnav_cm_unwrap(&u, 12345u * i) == 0);
+    }
+    /* 0 .. INT64_MAX over 8 samples: each interval span / 8 (rounded), the
+     * last at t_irq */
+    before = 0;
+    step = INT64_MAX / 8;
+    for (i = 0; i < 8u; i++) {
+        t = fnav_cm_batch_stamp(0, INT64_MAX, i, 8u, 0);
+        assert_true(t - before >= step && t - before <= step + 1);
+        before = t;
+    }
+    assert_true(before == INT64_MAX);
+    /* t_irq - t_prev above INT64_MAX */
+    assert_true(fnav_cm_batch_stamp(-INT64_MAX, INT64_MAX, 0u, 2u, 0) == 0);
+    assert_true(fnav_cm_batch_stamp(-INT64_MAX, INT64_MAX, 1u, 2u, 0) == INT64_MAX);
+    assert_true(fnav_cm_batch_stamp(-INT64_MAX, INT64_MAX, 0u, 3u, 0) == -INT64_MAX + (int64_t)(((uint64_t)INT64_MAX * 2u) / 3u));
+    /* a period too long to double: 8 us over 8 samples is spread */
+    assert_true(fnav_cm_batch_stamp(0, 8000, 0u, 8u, INT64_MAX) == 1000);
+    assert_true(fnav_cm_batch_stamp(0, 8000, 7u, 8u, INT64_MAX) == 8000);
+    /* the lost-samples case from an interval longer than 2 n period_ns */
+    assert_true(fnav_cm_batch_stamp(0, 16 * 2500000, 0u, 8u, 2500000) == 2 * 2500000);
+    assert_true(fnav_cm_batch_stamp(0, 16 * 2500000 + 1, 0u, 8u, 2500000) == 16 * 2500000 + 1 - 7 * 2500000);
+}
+
 /* The stamps through the navigator: a 400 Hz still-then-moving stream whose
  * board timer wraps, and 8-sample FIFO batches stamped at a jittery
  * interrupt. Converted naively (timer * 1000 per sample, or the interrupt's
@@ -305,6 +359,7 @@ int main(void)
         cmocka_unit_test(test_cm_ring),
         cmocka_unit_test(test_cm_unwrap),
         cmocka_unit_test(test_cm_batch_stamp),
+        cmocka_unit_test(test_cm_time_edges),
         cmocka_unit_test(test_cm_stamps_through_nav),
     };
     return cmocka_run_group_tests_name("port", tests, NULL, NULL);

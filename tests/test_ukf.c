@@ -594,6 +594,28 @@ static void test_weights_small_alpha(void **state)
     predict_weights(&f, 1.0e-4, 2.0, 0);
     assert_int_equal(f.health.cov_guard, 0);
     assert_true(fnav_test_cov_spd(&f, &asym) > 0.0);
+    /* far below the usual range alpha^2 (n + kappa) is still positive but
+     * W0m = lambda / (alpha^2 (n + kappa)) overflows (float: alpha = 3e-20
+     * gave W0m = -inf, accepted, when n + lambda was formed as the product;
+     * the old form refused it as 0): init either refuses alpha or its
+     * weights are finite */
+    {
+        static const double tiny[] = { 1.0e-15, 1.0e-18, 1.0e-19, 3.0e-20, 1.0e-20, 1.0e-22, 1.0e-160, 1.0e-170 };
+        for (i = 0; i < sizeof tiny / sizeof tiny[0]; i++) {
+            fnav_ukf_config_t c = fnav_ukf_config_default;
+            fnav_status_t st;
+            c.alpha = (fnav_real_t)tiny[i];
+            st = fnav_ukf_init(&f, &c);
+            if (st == FNAV_OK && !(fnav_isfinite(f.gamma) && fnav_isfinite(f.w0m) && fnav_isfinite(f.w0c) &&
+                                   fnav_isfinite(f.wi))) {
+                fail_msg("alpha %g accepted with weights W0m %g W0c %g Wi %g", tiny[i], (double)f.w0m,
+                         (double)f.w0c, (double)f.wi);
+            }
+            if (st != FNAV_OK) {
+                assert_int_equal(st, FNAV_E_CONFIG);
+            }
+        }
+    }
 }
 
 

@@ -89,7 +89,8 @@
  * so the rounding of each point's image weighs more (in the mean by Wi =
  * 1 / (2 alpha^2 (n + kappa))). n + lambda is formed as alpha^2 (n + kappa),
  * so gamma and the weights hold to rounding down to alpha = 1e-4 and below
- * (the scaled UT's usual range is 1e-4 to 1); updates use
+ * (the scaled UT's usual range is 1e-4 to 1); an alpha whose W0m
+ * overflows (float: about 3e-20) is refused, FNAV_E_CONFIG; updates use
  * the Joseph form, expanded as P - K H P - P H^T K^T + K S K^T (valid for any
  * gain, symmetric term by term). A Cholesky pivot that is not positive triggers the defined
  * recovery: add jitter (1e-6 of each variance) and retry; if that also fails,

@@ -36,7 +36,7 @@ static inline void fnav_cm_unwrap_init(fnav_cm_unwrap_t *u, uint32_t mask)
 
 /** Extended value of the raw reading @p raw, in counter ticks (multiply by
  *  the tick in ns: 1000 for a microsecond timer). The first reading is its
- *  own value. A reading less than half the counter's period ahead of the
+ *  own value. A reading up to half the counter's period ahead of the
  *  previous one is read as that far ahead (across a wrap when it is
  *  smaller); one less than half a period behind as that far behind, so a
  *  back-dated stamp stays behind (the core rejects it, FNAV_E_TIME) instead
@@ -53,8 +53,8 @@ static inline int64_t fnav_cm_unwrap(fnav_cm_unwrap_t *u, uint32_t raw)
     } else {
         const int64_t period = (int64_t)u->mask + 1;
         int64_t d = (int64_t)((raw - u->last) & u->mask); /* ahead, modulo the period */
-        if (d >= period / 2) {
-            d -= period; /* behind */
+        if (d > period / 2) {
+            d -= period; /* behind (half a period is ahead; mask 0: always 0) */
         }
         u->ext += d;
     }
@@ -78,15 +78,25 @@ static inline int64_t fnav_cm_unwrap(fnav_cm_unwrap_t *u, uint32_t raw)
 static inline int64_t fnav_cm_batch_stamp(int64_t t_prev_ns, int64_t t_irq_ns, uint32_t i, uint32_t n,
                                           int64_t period_ns)
 {
-    int64_t span;
+    uint64_t span, q, r, x;
     if (n == 0u || i >= n || !(t_irq_ns > t_prev_ns)) {
         return t_prev_ns;
     }
-    span = t_irq_ns - t_prev_ns;
-    if (period_ns > 0 && span / (int64_t)n > 2 * period_ns) {
+    /* unsigned: no int64 overflow for any stamps or period (t_irq - t_prev,
+     * span (i + 1) and 2 period_ns overflowed on extreme ones) */
+    span = (uint64_t)t_irq_ns - (uint64_t)t_prev_ns;
+    q = span / n;
+    r = span % n;
+    if (period_ns > 0 && (q > 2u * (uint64_t)period_ns || (q == 2u * (uint64_t)period_ns && r > 0u))) {
+        /* span > 2 n period_ns: then (n - 1 - i) period_ns < span / 2 */
         return t_irq_ns - (int64_t)(n - 1u - i) * period_ns;
     }
-    return t_prev_ns + span * (int64_t)(i + 1u) / (int64_t)n;
+    x = q * (i + 1u) + r * (i + 1u) / n; /* floor(span (i + 1) / n) <= span; r (i + 1) < 2^64 */
+    if (x > (uint64_t)INT64_MAX) {
+        t_prev_ns += INT64_MAX; /* t_prev_ns < 0 here */
+        x -= (uint64_t)INT64_MAX;
+    }
+    return t_prev_ns + (int64_t)x;
 }
 
 #endif /* FNAV_CM_TIME_H */

@@ -1169,6 +1169,13 @@ if [ -n "$D" ] && [ -f "$D/ipol_gait_xsens/3-3_lf.txt" ]; then
                 END { exit !(n > 10 && short > 0 && !bad) }' "$T/s33.csv"; then
         pass "--strides: a foot-off not before its foot-strike leaves swing_s empty, every other swing_s positive"
     else fail "--strides swing_s: $(awk -F, 'NR > 1 && ($6 == "" || $6 <= 0)' "$T/s33.csv" | head -3)"; fi
+    # and stance_s ($7) empty too: from that foot-off it read the whole stride time or more (0.75 s of a 0.75 s
+    # stride in 3-3 left, stride 21; 0.87 s of 0.68 s in 3-4 right), a stance share of 100 % and above
+    if awk -F, 'NR > 2 { if ($6 == "" && $7 != "") bad++; if ($7 != "" && $8 != "" && !($7 < $8)) bad++;
+                         if ($6 != "" && $7 != "") both++ }
+                END { exit !(both > 10 && !bad) }' "$T/s33.csv"; then
+        pass "--strides: stance_s empty where swing_s is, every other stance_s below the stride time"
+    else fail "--strides stance_s: $(awk -F, 'NR > 2 && (($6 == "" && $7 != "") || ($7 != "" && $8 != "" && !($7 < $8)))' "$T/s33.csv" | head -3)"; fi
 fi
 
 if [ "$fails" -ne 0 ]; then
