@@ -100,6 +100,19 @@ static void test_window_from_rate(void **state)
         }
         assert_int_equal(st.win, wins[i]);
         FNAV_ASSERT_CLOSE(st.rate_hz, rates[i], 0.0, 0.01);
+        /* a log shorter than the probe (10 samples): the rate is taken
+         * from its stamps at fnav_stance_finish (a mutant taking the
+         * configured 0 Hz there, window 3 at every rate, passed every
+         * suite) */
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        for (k = 0; k < 10; k++) {
+            s = sample(k, rates[i], f, w);
+            assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        }
+        assert_int_equal(st.win, 0);
+        fnav_stance_finish(&st);
+        assert_int_equal(st.win, wins[i]);
+        FNAV_ASSERT_CLOSE(st.rate_hz, rates[i], 0.0, 1e-6);
     }
 }
 
