@@ -103,6 +103,28 @@ static void test_config(void **state)
     c = fnav_nav_config_default;
     c.closed_form = 2;
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* the divergence limits and the longest gap: positive and finite, a
+     * run of at least one undone step (none was tested: a mutant accepting
+     * a speed limit of 0, which resets at every step, passed every suite) */
+    {
+        const fnav_real_t bad[4] = { FNAV_R(0.0), -FNAV_R(1.0), (fnav_real_t)INFINITY, (fnav_real_t)NAN };
+        int k;
+        for (k = 0; k < 4; k++) {
+            c = fnav_nav_config_default;
+            c.diverge_speed_mps = bad[k];
+            assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+            c = fnav_nav_config_default;
+            c.max_gap_s = bad[k];
+            assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        }
+        c = fnav_nav_config_default;
+        c.diverge_undone = 0u;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.diverge_undone = 1u;
+        c.diverge_speed_mps = FNAV_R(1e-3);
+        c.max_gap_s = FNAV_R(1e-3);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    }
     /* a renewal minimum longer than a still period can last (the
      * alignment's max_still_s ends it) would never renew: refused */
     c = fnav_nav_config_default;
