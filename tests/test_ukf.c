@@ -53,8 +53,17 @@ static void test_config(void **state)
     fnav_ukf_init_sd_t sd = sd_default();
     (void)state;
     assert_int_equal(fnav_ukf_init(NULL, &c), FNAV_E_ARG);
+    assert_int_equal(fnav_ukf_init(&f, NULL), FNAV_E_ARG);
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
     assert_int_equal(f.n_act, 15);
+    /* a missing filter or initial sds (the null checks of start, zupt and
+     * zaru had no test: a mutant asking for both null in start passed
+     * every suite) */
+    assert_int_equal(fnav_ukf_start(NULL, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_E_ARG);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), NULL), FNAV_E_ARG);
+    assert_false(f.started);
+    assert_int_equal(fnav_ukf_zupt(NULL, fnav_vec3_zero()), FNAV_E_ARG);
+    assert_int_equal(fnav_ukf_zaru(NULL, fnav_vec3_zero()), FNAV_E_ARG);
     c.lever = 1;
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
     assert_int_equal(f.n_act, 18);
