@@ -601,6 +601,52 @@ static void test_gait_events(void **state)
     assert_int_equal(ev.fs_at, 152);
 }
 
+/* The foot-off search covers the first event_window_s of the swing run,
+ * n_ev = round(0.3 s x 100 Hz) = 30 samples: the run of test_gait_events
+ * begins at sample 99 (the 3-sample SHOE window, test_window_from_rate,
+ * sees the motion of sample 100 from there), so samples 99..128. A larger
+ * peak at 128 is the foot-off; at 129 it is outside the window and the
+ * push-off peak at 104 stays the foot-off. A window one sample shorter
+ * (run < n_ev, a mutant) passed every suite. */
+static void test_foot_off_window_edge(void **state)
+{
+    const double rate = 100.0;
+    long peak;
+    (void)state;
+    for (peak = 128; peak <= 129; peak++) {
+        fnav_stance_t st;
+        fnav_stance_config_t c = fnav_stance_config_default;
+        events_t ev = { -1, -1, 0, 0 };
+        long k;
+        c.rate_hz = (fnav_real_t)rate;
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        for (k = 0; k <= 300; k++) {
+            if (k < 300) {
+                double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+                fnav_sample_t s;
+                if (k >= 100 && k < 160) {
+                    w[1] = 3.0;
+                    f[0] = 2.0;
+                }
+                if (k == 104) {
+                    f[0] = 25.0;
+                }
+                if (k == peak) {
+                    f[0] = 40.0;
+                }
+                s = sample(k, rate, f, w);
+                assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+            } else {
+                fnav_stance_finish(&st);
+            }
+            pop_events(&st, rate, &ev);
+        }
+        assert_int_equal(st.n_ev, 30);
+        assert_int_equal(ev.nfo, 1);
+        assert_int_equal(ev.fo_at, peak == 128 ? 128 : 104);
+    }
+}
+
 /* A swing shorter than the foot-off window that ends in a pause shorter
  * than min_stance_s (a stance confirmed for ZUPTs, not for a stride), then
  * a little settling motion: the foot-off is the push-off peak of the swing,
@@ -1076,6 +1122,7 @@ int main(void)
         cmocka_unit_test(test_threshold_both_below),
         cmocka_unit_test(test_threshold_at_limit),
         cmocka_unit_test(test_gait_events),
+        cmocka_unit_test(test_foot_off_window_edge),
         cmocka_unit_test(test_foot_off_short_pause),
         cmocka_unit_test(test_foot_strike_jumps_add_up),
         cmocka_unit_test(test_foot_strike_reference),
