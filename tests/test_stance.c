@@ -206,6 +206,13 @@ static void test_delay_and_flush(void **state)
     }
     assert_int_equal(next, 100);
     assert_int_equal(fnav_stance_pop(&st, &o), FNAV_END);
+    /* no sample at all: FNAV_AGAIN until the finish, then FNAV_END (a
+     * mutant answering FNAV_AGAIN for ever there passed every suite) */
+    c.rate_hz = FNAV_R(0.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    assert_int_equal(fnav_stance_pop(&st, &o), FNAV_AGAIN);
+    fnav_stance_finish(&st);
+    assert_int_equal(fnav_stance_pop(&st, &o), FNAV_END);
 }
 
 /* The caller must pop: a full ring refuses more samples. */
