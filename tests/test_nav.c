@@ -124,6 +124,16 @@ static void test_config(void **state)
         c.diverge_speed_mps = FNAV_R(1e-3);
         c.max_gap_s = FNAV_R(1e-3);
         assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+        /* with a configured rate the longest gap must be above 1.5
+         * intervals (a gap): 1.5 / 128 s at 128 Hz, exactly 1.5 intervals
+         * in binary, is refused, 1.6 intervals accepted (a mutant accepting
+         * 1.5 passed every suite) */
+        c = fnav_nav_config_default;
+        c.stance.rate_hz = FNAV_R(128.0);
+        c.max_gap_s = FNAV_R(0.01171875);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.max_gap_s = FNAV_R(0.0125);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
     }
     /* a renewal minimum longer than a still period can last (the
      * alignment's max_still_s ends it) would never renew: refused */
