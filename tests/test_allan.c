@@ -685,6 +685,39 @@ static void test_totdev_edf(void **state)
     assert_true(hx_dev_edf(HX_DEV_HTOTDEV, 0, 16u, 1001u) == hx_dev_edf(HX_DEV_OHDEV, 0, 16u, 1001u));
 }
 
+/* fnav_allan_slopes (fnav_allan.h): the least-squares slope of log ADEV
+ * over the point and its neighbours, 3 inside and 2 at the ends. With tau
+ * doubling (log tau equally spaced) that is (y[i+1] - y[i-1]) / (x[i+1] -
+ * x[i-1]) inside and the two-point slope at the ends: ADEV 1, 1/2, 1/2, 1, 4
+ * at tau 1..16 (log2: 0, -1, -1, 0, 2) gives -1, -1/2, 1/2, 3/2, 2. An
+ * unusable point (avar 0) has a NaN slope and is left out of its
+ * neighbours'. Taking the next-to-last point's slope from two points (a
+ * mutant of the upper neighbour's bound) passed every suite. */
+static void test_slopes_three_points(void **state)
+{
+    static const double adev[5] = { 1.0, 0.5, 0.5, 1.0, 4.0 }, want[5] = { -1.0, -0.5, 0.5, 1.5, 2.0 };
+    fnav_allan_result_t r[5];
+    fnav_real_t slope[5];
+    int i;
+    (void)state;
+    memset(r, 0, sizeof r);
+    for (i = 0; i < 5; i++) {
+        r[i].tau = 1u << i;
+        r[i].terms = 100u;
+        r[i].avar = (fnav_real_t)(adev[i] * adev[i]);
+    }
+    fnav_allan_slopes(r, 5, slope);
+    for (i = 0; i < 5; i++) {
+        FNAV_ASSERT_CLOSE(slope[i], want[i], 1e-5, 0.0);
+    }
+    /* point 2 unusable: its slope NaN, points 1 and 3 from their other two */
+    r[2].avar = FNAV_R(0.0);
+    fnav_allan_slopes(r, 5, slope);
+    assert_true(slope[2] != slope[2]);
+    FNAV_ASSERT_CLOSE(slope[1], -1.0, 1e-5, 0.0);
+    FNAV_ASSERT_CLOSE(slope[3], 2.0, 1e-5, 0.0);
+}
+
 /* Flicker phase noise (alpha = 1) with more than 100 lags: Greenhall &
  * Riley's algorithm switches from the exact basic sum to their case-3
  * approximation 1/edf = (a0 - a1/r) / (b^2 r), b = b0 + b1 ln m. It must
@@ -1941,6 +1974,7 @@ int main(void)
         cmocka_unit_test(test_totdev_edf),
         cmocka_unit_test(test_chi2_quantile_large),
         cmocka_unit_test(test_edf_flicker_pm_table),
+        cmocka_unit_test(test_slopes_three_points),
         cmocka_unit_test(test_pdev_edf),
         cmocka_unit_test(test_pdev_edf_simulated),
         cmocka_unit_test(test_phasedat_oadev_every_tau),
