@@ -718,6 +718,32 @@ static void test_slopes_three_points(void **state)
     FNAV_ASSERT_CLOSE(slope[3], 2.0, 1e-5, 0.0);
 }
 
+/* The paper's BS and t_BS at a minimum on the table's last point: no
+ * parabola (it needs a neighbour on each side), BS the last ADEV and t_BS
+ * its tau exactly. The entry after the n given is a usable point above the
+ * minimum: reading it (a mutant of the bound, imin + 1 <= n) drew a
+ * parabola through it and passed every suite. */
+static void test_paper_min_at_end(void **state)
+{
+    static const double adev[5] = { 4.0, 2.0, 1.0, 0.5, 2.0 };
+    fnav_allan_result_t r[5];
+    fnav_allan_paper_id_t id;
+    int i;
+    (void)state;
+    memset(r, 0, sizeof r);
+    for (i = 0; i < 5; i++) {
+        r[i].tau = 100u << i; /* 100 .. 1600 samples at 100 Hz: 1 s is the first */
+        r[i].terms = 100u;
+        r[i].avar = (fnav_real_t)(adev[i] * adev[i]);
+    }
+    assert_int_equal(fnav_allan_identify_paper(r, 4, FNAV_R(100.0), 0u, &id), FNAV_OK);
+    assert_int_equal((int)id.i_min, 3);
+    FNAV_ASSERT_CLOSE(id.bs, 0.5, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(id.tau_samples, 800.0, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(id.t_bs_s, 8.0, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(id.sigma_v, 4.0, 0.0, 1e-6);
+}
+
 /* Flicker phase noise (alpha = 1) with more than 100 lags: Greenhall &
  * Riley's algorithm switches from the exact basic sum to their case-3
  * approximation 1/edf = (a0 - a1/r) / (b^2 r), b = b0 + b1 ln m. It must
@@ -1975,6 +2001,7 @@ int main(void)
         cmocka_unit_test(test_chi2_quantile_large),
         cmocka_unit_test(test_edf_flicker_pm_table),
         cmocka_unit_test(test_slopes_three_points),
+        cmocka_unit_test(test_paper_min_at_end),
         cmocka_unit_test(test_pdev_edf),
         cmocka_unit_test(test_pdev_edf_simulated),
         cmocka_unit_test(test_phasedat_oadev_every_tau),
