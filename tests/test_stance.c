@@ -652,6 +652,21 @@ static void test_foot_off_window_edge(void **state)
         assert_int_equal(ev.nfo, 1);
         assert_int_equal(ev.fo_at, peak == 128 ? 128 : 104);
     }
+    /* a window longer than the jerk history is cut to
+     * FNAV_STANCE_EVENT_BUF - 1 samples (fnav_stance.h: the foot-strike
+     * search reaches n_ev back into that history; a mutant allowing two
+     * more passed every suite) */
+    {
+        fnav_stance_t st;
+        fnav_stance_config_t c = fnav_stance_config_default;
+        double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+        fnav_sample_t s = sample(0, rate, f, w);
+        c.rate_hz = (fnav_real_t)rate;
+        c.event_window_s = FNAV_R(1000.0);
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        assert_int_equal(st.n_ev, FNAV_STANCE_EVENT_BUF - 1);
+    }
 }
 
 /* A swing shorter than the foot-off window that ends in a pause shorter
