@@ -134,6 +134,50 @@ static void test_undone_run_cleared(void **state)
     assert_true(r.last.flags & FNAV_FRAME_ALIGNED);
 }
 
+/* The other half of test_undone_run_cleared: 20 consecutive undone
+ * predictions (diverge_undone) reset the navigator, 19 do not. A NaN put
+ * in the filter's gyro bias makes every prediction undone (its state is
+ * not finite, FNAV_E_DIVERGED; the bias stays NaN), without the
+ * speed check (the velocity stays finite); the frames carry the NaN bias,
+ * so they are popped here without check_frame. A run counted down instead
+ * of up (a mutant: undone_run - 1, which wraps) reset at the first undone
+ * step and passed every suite. */
+static void test_undone_run_resets(void **state)
+{
+    static const double a[3] = { 0.0, 0.0, -9.80665 }, w[3] = { 0.0, 0.0, 0.0 };
+    run_t r;
+    int k;
+    (void)state;
+    init(&r, 200.0);
+    still(&r, 6.0);
+    assert_true(r.last.flags & FNAV_FRAME_ALIGNED);
+    assert_int_equal(g_nav.stats.resets, 0u);
+    g_nav.ukf.bg_rps.v[0] = (fnav_real_t)NAN;
+    for (k = 1; k <= 20; k++) {
+        fnav_sample_t s;
+        fnav_nav_frame_t f;
+        int i;
+        memset(&s, 0, sizeof s);
+        s.t_ns = r.t_ns;
+        r.t_ns += r.dt_ns;
+        for (i = 0; i < 3; i++) {
+            s.accel_mps2[i] = (fnav_real_t)a[i];
+            s.gyro_rps[i] = (fnav_real_t)w[i];
+        }
+        assert_int_equal(fnav_nav_push(&g_nav, &s), FNAV_OK);
+        while (fnav_nav_pop(&g_nav, &f) == FNAV_OK) {
+        }
+        assert_int_equal(g_nav.stats.diverged, (unsigned)k);
+        if (k < 20) {
+            assert_int_equal(g_nav.undone_run, (unsigned)k);
+            assert_int_equal(g_nav.stats.resets, 0u);
+        }
+    }
+    assert_int_equal(g_nav.stats.resets, 1u);
+    assert_int_equal(g_nav.undone_run, 0u);
+    assert_true(g_nav.health & FNAV_HEALTH_RESET);
+}
+
 /* The navigator's statistics and health bits carry the UKF's counters
  * (fnav_nav.h: stats "UKF health"). Most of them cannot be provoked through
  * the input (test_undone_run_cleared), so distinct counts are set in the
@@ -519,6 +563,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_health_counters_reach_stats),
+        cmocka_unit_test(test_undone_run_resets),
         cmocka_unit_test(test_divergence_reset),
         cmocka_unit_test(test_undone_run_cleared),
         cmocka_unit_test(test_reset_then_renewal),
