@@ -20,6 +20,8 @@ golden values of tests/test_allan.c and the figures in docs/allan.md
   (alpha = 1) at points where Greenhall & Riley's algorithm uses its
   approximation (J > 100 lags, r = M/m > 3: 1/edf = (a0 - a1/r) / (b^2 r),
   b = b0 + b1 ln m, their case 3), which it must approach within a few %;
+  and at points of a short record (J > 100 lags, r <= 3), where the
+  algorithm takes the basic sum to 100 lags with m scaled to 100 / r;
 - `--greenhall-fm-table` the same for the table of their case 2 (large m,
   1/edf = (a0 - a1/r) / r) at r = M/m just above d + 1, where a1 matters
   most: flicker FM with the Allan filter (d = 2), white FM with the
@@ -152,6 +154,9 @@ def main():
         print("overlapping Allan filter, alpha 1, exact sum (compare fnav_allan_edf_var(1, 2, 0, m, n, 1)):")
         print(" ".join("%d/%d: %.10g" % (m, n, edf(avar_taps(m), m, n - 2 * m, 1))
                        for m, n in ((40, 1001), (64, 3001), (128, 4001))))
+        print("the same where J > 100 and r = M/m <= 3 (the scaled basic sum):")
+        print(" ".join("%d/%d: %.10g" % (m, n, edf(avar_taps(m), m, n - 2 * m, 1))
+                       for m, n in ((64, 278), (128, 556), (40, 200), (100, 450))))
     if "--greenhall-fm-table" in args:
         # r = M/m just above d + 1, where a1/r matters most
         print("overlapping Allan filter, alpha -1, exact sum (compare fnav_allan_edf_var(-1, 2, 0, m, n, 1)):")

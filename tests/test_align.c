@@ -72,6 +72,10 @@ static void test_from_means(void **state)
         FNAV_ASSERT_CLOSE(fnav_vec3_norm(r.accel_bias_mps2), 0.05, 40.0 * EPS * k_g, 0.0);
         FNAV_ASSERT_CLOSE(fnav_vec3_dot(r.accel_bias_mps2, up_b), 0.05, 40.0 * EPS * k_g, 0.0);
         FNAV_ASSERT_CLOSE(r.gyro_bias_rps.v[2], 0.003, 0.0, EPS);
+        /* the means themselves, as given (the harness prints |f| from
+         * accel_mean_mps2; a mutant leaving it unset passed every suite) */
+        assert_memory_equal(&r.accel_mean_mps2, &f, sizeof f);
+        assert_memory_equal(&r.gyro_mean_rps, &w, sizeof w);
         /* the aligned attitude maps the measured gravity to (0, 0, -|f|) */
         {
             fnav_vec3_t fn = fnav_quat_rotate(r.q_nb, f);
@@ -223,6 +227,72 @@ static void test_ratio_ends_period(void **state)
      * 3.0947), so the period holds the 122 samples 0..121 */
     assert_int_equal((int)k, 123);
     assert_int_equal((int)al.result.samples, 122);
+}
+
+/* A still sample whose statistic is 0 (zero readings, a quantised sensor
+ * at rest) has no logarithm: it counts as log10 = 0 (left_floor's
+ * "unusable") and neither ends the period nor pulls the noise floor to
+ * -inf. With its log10 (-inf) in the running mean, the first positive
+ * statistic after it (1e-3 here, 3 decades under the floor of 0) "left
+ * the floor" and ended the period at 1 s of 5 (a mutant taking stat >= 0
+ * as usable passed every suite). 1 s of zeros then 1e-3 at 200 Hz: the
+ * period runs to max_still_s, samples 0..1000 (as test_max_duration). */
+static void test_zero_stat(void **state)
+{
+    fnav_align_t al;
+    fnav_align_config_t c = fnav_align_config_default;
+    long k;
+    fnav_status_t st = FNAV_AGAIN;
+    (void)state;
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
+    for (k = 0; k < 2000 && st == FNAV_AGAIN; k++) {
+        fnav_sample_t s = still_sample(k, 200.0, 0.002);
+        st = fnav_align_push(&al, &s, 1, k < 200 ? FNAV_R(0.0) : FNAV_R(1e-3));
+    }
+    assert_int_equal(st, FNAV_OK);
+    assert_int_equal((int)k, 1001);
+    assert_int_equal((int)al.result.samples, 1001);
+}
+
+/* The variance is clamped at 0 when the running sums' rounding makes it
+ * negative: one sample 0.7 m/s^2 off and 10,000 equal ones after it (1 kHz,
+ * 10 s) cancel sa2 - sa^2 / n down to its true value (0.7^2 / n, 1 part in
+ * 10^4 of sa2), under the float32 sums' rounding (numpy float32 with the
+ * same order of operations gives -5.2e-6). The standard deviation is a
+ * number between 0 and twice the true one (0.7 / sqrt(n) = 7.0e-3,
+ * computed here in double), not NaN (a mutant without the clamp passed
+ * every suite). */
+static void test_rounded_variance_clamped(void **state)
+{
+    fnav_align_t al;
+    fnav_align_config_t c = fnav_align_config_default;
+    long k;
+    fnav_status_t st = FNAV_AGAIN;
+    double d, sum = 0.0, ss = 0.0, sd;
+    (void)state;
+    c.max_still_s = FNAV_R(10.0);
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
+    for (k = 0; k < 20000 && st == FNAV_AGAIN; k++) {
+        fnav_sample_t s = still_sample(k, 1000.0, 0.0);
+        s.accel_mps2[2] = k == 0 ? (fnav_real_t)-9.81 : (fnav_real_t)(-9.81 + 0.7);
+        st = fnav_align_push(&al, &s, 1, FNAV_R(100.0));
+    }
+    assert_int_equal(st, FNAV_OK);
+    assert_int_equal((int)al.result.samples, 10001);
+    /* the true sample standard deviation of the values pushed */
+    d = (double)(fnav_real_t)(-9.81 + 0.7) - (double)(fnav_real_t)-9.81;
+    for (k = 0; k < 10001; k++) {
+        sum += k == 0 ? 0.0 : d;
+    }
+    for (k = 0; k < 10001; k++) {
+        const double e = (k == 0 ? 0.0 : d) - sum / 10001.0;
+        ss += e * e;
+    }
+    sd = sqrt(ss / 10000.0);
+    FNAV_ASSERT_CLOSE(sd, 0.7 / sqrt(10001.0), 0.0, 1e-5);
+    assert_true(fnav_isfinite(al.result.accel_sd_mps2.v[2]));
+    assert_true(al.result.accel_sd_mps2.v[2] >= FNAV_R(0.0));
+    assert_true((double)al.result.accel_sd_mps2.v[2] <= 2.0 * sd);
 }
 
 /* finish: aligns on what was collected if it is long enough. */
@@ -470,6 +540,19 @@ static void test_stuck_stamp_period(void **state)
         assert_true(al.cur.n > 0 && al.cur.n <= 2147483647L);
     }
     assert_true(al.cur.n <= 2);
+    /* the restart is at FNAV_ALIGN_PERIOD_MAX samples exactly: a period
+     * holding that many takes no more (a mutant restarting one sample
+     * later passed every suite) */
+    al.cur.n = FNAV_ALIGN_PERIOD_MAX - 1L;
+    al.cur.sum_log_stat = (fnav_real_t)(2.0 * (double)al.cur.n);
+    {
+        fnav_sample_t s = still_sample(102, 200.0, 0.002);
+        s.t_ns = 1000000000;
+        assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_AGAIN);
+        assert_true(al.cur.n == FNAV_ALIGN_PERIOD_MAX);
+        assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_AGAIN);
+        assert_true(al.cur.n == 1);
+    }
     for (k = 102; k < 5000 && st == FNAV_AGAIN; k++) {
         fnav_sample_t s = still_sample(k, 200.0, 0.002);
         s.t_ns += 1000000000 - 510000000; /* on from the stuck stamp, 5 ms apart */
@@ -537,6 +620,8 @@ int main(void)
         cmocka_unit_test(test_still_period),
         cmocka_unit_test(test_max_duration),
         cmocka_unit_test(test_ratio_ends_period),
+        cmocka_unit_test(test_zero_stat),
+        cmocka_unit_test(test_rounded_variance_clamped),
         cmocka_unit_test(test_finish),
         cmocka_unit_test(test_short_period_fallback),
         cmocka_unit_test(test_gyro_bias_posterior),

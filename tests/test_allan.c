@@ -685,6 +685,65 @@ static void test_totdev_edf(void **state)
     assert_true(hx_dev_edf(HX_DEV_HTOTDEV, 0, 16u, 1001u) == hx_dev_edf(HX_DEV_OHDEV, 0, 16u, 1001u));
 }
 
+/* fnav_allan_slopes (fnav_allan.h): the least-squares slope of log ADEV
+ * over the point and its neighbours, 3 inside and 2 at the ends. With tau
+ * doubling (log tau equally spaced) that is (y[i+1] - y[i-1]) / (x[i+1] -
+ * x[i-1]) inside and the two-point slope at the ends: ADEV 1, 1/2, 1/2, 1, 4
+ * at tau 1..16 (log2: 0, -1, -1, 0, 2) gives -1, -1/2, 1/2, 3/2, 2. An
+ * unusable point (avar 0) has a NaN slope and is left out of its
+ * neighbours'. Taking the next-to-last point's slope from two points (a
+ * mutant of the upper neighbour's bound) passed every suite. */
+static void test_slopes_three_points(void **state)
+{
+    static const double adev[5] = { 1.0, 0.5, 0.5, 1.0, 4.0 }, want[5] = { -1.0, -0.5, 0.5, 1.5, 2.0 };
+    fnav_allan_result_t r[5];
+    fnav_real_t slope[5];
+    int i;
+    (void)state;
+    memset(r, 0, sizeof r);
+    for (i = 0; i < 5; i++) {
+        r[i].tau = 1u << i;
+        r[i].terms = 100u;
+        r[i].avar = (fnav_real_t)(adev[i] * adev[i]);
+    }
+    fnav_allan_slopes(r, 5, slope);
+    for (i = 0; i < 5; i++) {
+        FNAV_ASSERT_CLOSE(slope[i], want[i], 1e-5, 0.0);
+    }
+    /* point 2 unusable: its slope NaN, points 1 and 3 from their other two */
+    r[2].avar = FNAV_R(0.0);
+    fnav_allan_slopes(r, 5, slope);
+    assert_true(slope[2] != slope[2]);
+    FNAV_ASSERT_CLOSE(slope[1], -1.0, 1e-5, 0.0);
+    FNAV_ASSERT_CLOSE(slope[3], 2.0, 1e-5, 0.0);
+}
+
+/* The paper's BS and t_BS at a minimum on the table's last point: no
+ * parabola (it needs a neighbour on each side), BS the last ADEV and t_BS
+ * its tau exactly. The entry after the n given is a usable point above the
+ * minimum: reading it (a mutant of the bound, imin + 1 <= n) drew a
+ * parabola through it and passed every suite. */
+static void test_paper_min_at_end(void **state)
+{
+    static const double adev[5] = { 4.0, 2.0, 1.0, 0.5, 2.0 };
+    fnav_allan_result_t r[5];
+    fnav_allan_paper_id_t id;
+    int i;
+    (void)state;
+    memset(r, 0, sizeof r);
+    for (i = 0; i < 5; i++) {
+        r[i].tau = 100u << i; /* 100 .. 1600 samples at 100 Hz: 1 s is the first */
+        r[i].terms = 100u;
+        r[i].avar = (fnav_real_t)(adev[i] * adev[i]);
+    }
+    assert_int_equal(fnav_allan_identify_paper(r, 4, FNAV_R(100.0), 0u, &id), FNAV_OK);
+    assert_int_equal((int)id.i_min, 3);
+    FNAV_ASSERT_CLOSE(id.bs, 0.5, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(id.tau_samples, 800.0, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(id.t_bs_s, 8.0, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(id.sigma_v, 4.0, 0.0, 1e-6);
+}
+
 /* Flicker phase noise (alpha = 1) with more than 100 lags: Greenhall &
  * Riley's algorithm switches from the exact basic sum to their case-3
  * approximation 1/edf = (a0 - a1/r) / (b^2 r), b = b0 + b1 ln m. It must
@@ -692,14 +751,21 @@ static void test_totdev_edf(void **state)
  * scripts/pvar_edf.py --greenhall-table computes in double from the
  * filter's taps (no code shared with the C). The approximation is 1.9 %,
  * 1.2 % and 0.6 % below it at these points; 3 % bounds that. A b with
- * log10 m in place of ln m gives EDFs a third of these. */
+ * log10 m in place of ln m gives EDFs a third of these. A short record
+ * (r = M/m <= 3 with J > 100 lags) takes the basic sum to 100 lags with m
+ * scaled to 100 / r, divided by b^2 100: 0.7, 1.3, 0.5 and 1.1 % above the
+ * exact sum at the last four points (the script's second line), inside the
+ * same 3 %; a mutant dividing by b / b there (EDFs of 0.004) passed every
+ * suite. */
 static void test_edf_flicker_pm_table(void **state)
 {
-    static const uint32_t pt[3][2] = { { 40u, 1001u }, { 64u, 3001u }, { 128u, 4001u } };
-    static const double exact[3] = { 107.5620414, 246.8457145, 204.7103324 };
+    static const uint32_t pt[7][2] = { { 40u, 1001u }, { 64u, 3001u }, { 128u, 4001u }, { 64u, 278u },
+                                       { 128u, 556u },  { 40u, 200u },  { 100u, 450u } };
+    static const double exact[7] = { 107.5620414, 246.8457145, 204.7103324, 16.36843715,
+                                     20.69725378, 16.56890687, 20.00896318 };
     int i;
     (void)state;
-    for (i = 0; i < 3; i++) {
+    for (i = 0; i < 7; i++) {
         FNAV_ASSERT_CLOSE(fnav_allan_edf_var(1, 2, 0, pt[i][0], pt[i][1], 1), exact[i], 0.0, 0.03);
     }
 }
@@ -1934,6 +2000,8 @@ int main(void)
         cmocka_unit_test(test_totdev_edf),
         cmocka_unit_test(test_chi2_quantile_large),
         cmocka_unit_test(test_edf_flicker_pm_table),
+        cmocka_unit_test(test_slopes_three_points),
+        cmocka_unit_test(test_paper_min_at_end),
         cmocka_unit_test(test_pdev_edf),
         cmocka_unit_test(test_pdev_edf_simulated),
         cmocka_unit_test(test_phasedat_oadev_every_tau),

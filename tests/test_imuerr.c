@@ -352,6 +352,26 @@ static void test_profile_baseline(void **state)
     assert_int_equal(fnav_imuerr_config_from_profile(NULL, &p), FNAV_E_ARG);
     p.gyro_tau_s[0] = FNAV_R(-1.0);
     assert_int_equal(fnav_imuerr_config_from_profile(&c, &p), FNAV_E_CONFIG);
+    /* each of the six figures outside the catalogue's range (density and
+     * sigma up to 1e3, tau from 1e-3 s) is refused, on the second axis: a
+     * mutant leaving the gyro density out of the range check passed every
+     * suite */
+    {
+        int k;
+        for (k = 0; k < 6; k++) {
+            fnav_real_t *x[6];
+            assert_int_equal(fnav_profile_builtin(&p, FNAV_PROFILE_NAVCHIP), FNAV_OK);
+            assert_int_equal(fnav_imuerr_config_from_profile(&c, &p), FNAV_OK);
+            x[0] = &p.accel_noise_mps2_rthz[1];
+            x[1] = &p.gyro_noise_rps_rthz[1];
+            x[2] = &p.accel_tau_s[1];
+            x[3] = &p.gyro_tau_s[1];
+            x[4] = &p.accel_bias_sigma_mps2[1];
+            x[5] = &p.gyro_bias_sigma_rps[1];
+            *x[k] = (k == 2 || k == 3) ? FNAV_R(5e-4) : FNAV_R(2e3);
+            assert_int_equal(fnav_imuerr_config_from_profile(&c, &p), FNAV_E_CONFIG);
+        }
+    }
     free(y);
 }
 

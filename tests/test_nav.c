@@ -103,6 +103,38 @@ static void test_config(void **state)
     c = fnav_nav_config_default;
     c.closed_form = 2;
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* the divergence limits and the longest gap: positive and finite, a
+     * run of at least one undone step (none was tested: a mutant accepting
+     * a speed limit of 0, which resets at every step, passed every suite) */
+    {
+        const fnav_real_t bad[4] = { FNAV_R(0.0), -FNAV_R(1.0), (fnav_real_t)INFINITY, (fnav_real_t)NAN };
+        int k;
+        for (k = 0; k < 4; k++) {
+            c = fnav_nav_config_default;
+            c.diverge_speed_mps = bad[k];
+            assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+            c = fnav_nav_config_default;
+            c.max_gap_s = bad[k];
+            assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        }
+        c = fnav_nav_config_default;
+        c.diverge_undone = 0u;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.diverge_undone = 1u;
+        c.diverge_speed_mps = FNAV_R(1e-3);
+        c.max_gap_s = FNAV_R(1e-3);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+        /* with a configured rate the longest gap must be above 1.5
+         * intervals (a gap): 1.5 / 128 s at 128 Hz, exactly 1.5 intervals
+         * in binary, is refused, 1.6 intervals accepted (a mutant accepting
+         * 1.5 passed every suite) */
+        c = fnav_nav_config_default;
+        c.stance.rate_hz = FNAV_R(128.0);
+        c.max_gap_s = FNAV_R(0.01171875);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.max_gap_s = FNAV_R(0.0125);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    }
     /* a renewal minimum longer than a still period can last (the
      * alignment's max_still_s ends it) would never renew: refused */
     c = fnav_nav_config_default;
@@ -469,6 +501,84 @@ static void test_not_initialised(void **state)
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
     assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
     assert_int_equal(nav.stats.samples, 1u);
+}
+
+/* The navigator's configuration reaches its parts (fnav_nav.h): the UKF's
+ * noises are the profile's and the motion noise added in quadrature
+ * (computed here in double), every other filter option as given, and the
+ * gravity that of the detector and the alignment too. Each value differs
+ * from both defaults; deleting the copy of lever_rw_m_rts (the defaults
+ * of the navigator and the UKF agree, 0.002) passed every suite. */
+static void test_config_reaches_parts(void **state)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    const fnav_ukf_config_t *u = &nav.ukf.cfg;
+    int i;
+    (void)state;
+    for (i = 0; i < 3; i++) {
+        c.profile.gyro_noise_rps_rthz[i] = (fnav_real_t)(0.003 + 0.001 * i);
+        c.profile.accel_noise_mps2_rthz[i] = (fnav_real_t)(0.04 + 0.01 * i);
+        c.profile.gyro_tau_s[i] = (fnav_real_t)(101.0 + i);
+        c.profile.accel_tau_s[i] = (fnav_real_t)(201.0 + i);
+        c.profile.gyro_bias_sigma_rps[i] = (fnav_real_t)(0.0011 + 0.0001 * i);
+        c.profile.accel_bias_sigma_mps2[i] = (fnav_real_t)(0.011 + 0.001 * i);
+    }
+    c.gyro_motion_noise_rps_rthz = FNAV_R(0.004);
+    c.accel_motion_noise_mps2_rthz = FNAV_R(0.03);
+    c.bias_model = FNAV_BIAS_OFF;
+    c.gravity_mps2 = FNAV_R(9.79);
+    c.sample_type = FNAV_SAMPLE_MEAN;
+    c.zupt_sigma_mps = FNAV_R(0.013);
+    c.zaru_sigma_rps = FNAV_R(0.017);
+    c.zaru_gate = FNAV_R(7.81);
+    c.closed_form = 0;
+    c.lever = 1;
+    c.lever_sd_m = FNAV_R(0.07);
+    c.lever_rw_m_rts = FNAV_R(0.005);
+    c.settle = 0;
+    c.settle_sd_mps = FNAV_R(0.021);
+    c.settle_tau_s = FNAV_R(0.04);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    for (i = 0; i < 3; i++) {
+        /* of the values as stored; a few roundings of the build's type */
+        const double gn = (double)c.profile.gyro_noise_rps_rthz[i], an = (double)c.profile.accel_noise_mps2_rthz[i];
+        const double gm = (double)c.gyro_motion_noise_rps_rthz, am = (double)c.accel_motion_noise_mps2_rthz;
+        const double rel = FNAV_USE_DOUBLE ? 1e-15 : 5e-7;
+        FNAV_ASSERT_CLOSE(u->gyro_noise_rps_rthz[i], sqrt(gn * gn + gm * gm), 0.0, rel);
+        FNAV_ASSERT_CLOSE(u->accel_noise_mps2_rthz[i], sqrt(an * an + am * am), 0.0, rel);
+        assert_true(u->gyro_tau_s[i] == c.profile.gyro_tau_s[i]);
+        assert_true(u->accel_tau_s[i] == c.profile.accel_tau_s[i]);
+        assert_true(u->gyro_bias_sigma_rps[i] == c.profile.gyro_bias_sigma_rps[i]);
+        assert_true(u->accel_bias_sigma_mps2[i] == c.profile.accel_bias_sigma_mps2[i]);
+    }
+    assert_int_equal(u->bias_model, FNAV_BIAS_OFF);
+    assert_true(u->strapdown.gravity_mps2 == FNAV_R(9.79));
+    assert_int_equal(u->strapdown.sample_type, FNAV_SAMPLE_MEAN);
+    assert_true(u->zupt_sigma_mps == FNAV_R(0.013));
+    assert_true(u->zaru_sigma_rps == FNAV_R(0.017));
+    assert_true(u->zaru_gate == FNAV_R(7.81));
+    assert_int_equal(u->closed_form, 0);
+    assert_int_equal(u->lever, 1);
+    assert_true(u->lever_sd_m == FNAV_R(0.07));
+    assert_true(u->lever_rw_m_rts == FNAV_R(0.005));
+    assert_int_equal(u->settle, 0);
+    assert_true(u->settle_sd_mps == FNAV_R(0.021));
+    assert_true(u->settle_tau_s == FNAV_R(0.04));
+    assert_true(nav.stance.cfg.gravity_mps2 == FNAV_R(9.79));
+    assert_true(nav.align.cfg.gravity_mps2 == FNAV_R(9.79));
+    /* and the switches the other way */
+    c.lever = 0;
+    c.settle = 1;
+    c.closed_form = 1;
+    c.bias_model = FNAV_BIAS_AR1;
+    c.sample_type = FNAV_SAMPLE_INSTANT;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    assert_int_equal(u->lever, 0);
+    assert_int_equal(u->settle, 1);
+    assert_int_equal(u->closed_form, 1);
+    assert_int_equal(u->bias_model, FNAV_BIAS_AR1);
+    assert_int_equal(u->strapdown.sample_type, FNAV_SAMPLE_INSTANT);
 }
 
 /* A second fnav_nav_init starts over (fnav_nav.h), also with the
@@ -2019,6 +2129,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_config),
+        cmocka_unit_test(test_config_reaches_parts),
         cmocka_unit_test(test_stream_contract),
         cmocka_unit_test(test_push_after_finish),
         cmocka_unit_test(test_timing),

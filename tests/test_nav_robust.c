@@ -134,6 +134,92 @@ static void test_undone_run_cleared(void **state)
     assert_true(r.last.flags & FNAV_FRAME_ALIGNED);
 }
 
+/* The other half of test_undone_run_cleared: 20 consecutive undone
+ * predictions (diverge_undone) reset the navigator, 19 do not. A NaN put
+ * in the filter's gyro bias makes every prediction undone (its state is
+ * not finite, FNAV_E_DIVERGED; the bias stays NaN), without the
+ * speed check (the velocity stays finite); the frames carry the NaN bias,
+ * so they are popped here without check_frame. A run counted down instead
+ * of up (a mutant: undone_run - 1, which wraps) reset at the first undone
+ * step and passed every suite. */
+static void test_undone_run_resets(void **state)
+{
+    static const double a[3] = { 0.0, 0.0, -9.80665 }, w[3] = { 0.0, 0.0, 0.0 };
+    run_t r;
+    int k;
+    (void)state;
+    init(&r, 200.0);
+    still(&r, 6.0);
+    assert_true(r.last.flags & FNAV_FRAME_ALIGNED);
+    assert_int_equal(g_nav.stats.resets, 0u);
+    g_nav.ukf.bg_rps.v[0] = (fnav_real_t)NAN;
+    for (k = 1; k <= 20; k++) {
+        fnav_sample_t s;
+        fnav_nav_frame_t f;
+        int i;
+        memset(&s, 0, sizeof s);
+        s.t_ns = r.t_ns;
+        r.t_ns += r.dt_ns;
+        for (i = 0; i < 3; i++) {
+            s.accel_mps2[i] = (fnav_real_t)a[i];
+            s.gyro_rps[i] = (fnav_real_t)w[i];
+        }
+        assert_int_equal(fnav_nav_push(&g_nav, &s), FNAV_OK);
+        while (fnav_nav_pop(&g_nav, &f) == FNAV_OK) {
+        }
+        assert_int_equal(g_nav.stats.diverged, (unsigned)k);
+        if (k < 20) {
+            assert_int_equal(g_nav.undone_run, (unsigned)k);
+            assert_int_equal(g_nav.stats.resets, 0u);
+        }
+    }
+    assert_int_equal(g_nav.stats.resets, 1u);
+    assert_int_equal(g_nav.undone_run, 0u);
+    assert_true(g_nav.health & FNAV_HEALTH_RESET);
+}
+
+/* The navigator's statistics and health bits carry the UKF's counters
+ * (fnav_nav.h: stats "UKF health"). Most of them cannot be provoked through
+ * the input (test_undone_run_cleared), so distinct counts are set in the
+ * filter's health as if they had happened; one still step, which adds at
+ * most a ZUPT, must show each in nav.stats and set its health bit. Deleting
+ * the copy of diverged passed every suite. */
+static void test_health_counters_reach_stats(void **state)
+{
+    static const double a[3] = { 0.0, 0.0, -9.80665 }, w[3] = { 0.0, 0.0, 0.0 };
+    fnav_ukf_health_t *h = &g_nav.ukf.health;
+    run_t r;
+    (void)state;
+    init(&r, 200.0);
+    still(&r, 6.0);
+    assert_true(r.last.flags & FNAV_FRAME_ALIGNED);
+    assert_int_equal(g_nav.health & (FNAV_HEALTH_CHOL_JITTER | FNAV_HEALTH_CHOL_RESET | FNAV_HEALTH_DIVERGED |
+                                     FNAV_HEALTH_UPDATE_REJECT | FNAV_HEALTH_COV_GUARD),
+                     0u);
+    h->chol_jitter = 11u;
+    h->chol_reset = 12u;
+    h->diverged = 13u;
+    h->update_reject = 14u;
+    h->cov_guard = 15u;
+    h->zupts = 1000u;
+    h->zarus = 17u;
+    h->zaru_gated = 18u;
+    push(&r, a, w);
+    assert_int_equal(g_nav.stats.chol_jitter, 11u);
+    assert_int_equal(g_nav.stats.chol_reset, 12u);
+    assert_int_equal(g_nav.stats.diverged, 13u);
+    assert_int_equal(g_nav.stats.update_reject, 14u);
+    assert_int_equal(g_nav.stats.cov_guard, 15u);
+    assert_in_range(g_nav.stats.zupts, 1000u, 1001u);
+    assert_int_equal(g_nav.stats.zarus, 17u);
+    assert_int_equal(g_nav.stats.zaru_gated, 18u);
+    assert_true(g_nav.health & FNAV_HEALTH_CHOL_JITTER);
+    assert_true(g_nav.health & FNAV_HEALTH_CHOL_RESET);
+    assert_true(g_nav.health & FNAV_HEALTH_DIVERGED);
+    assert_true(g_nav.health & FNAV_HEALTH_UPDATE_REJECT);
+    assert_true(g_nav.health & FNAV_HEALTH_COV_GUARD);
+}
+
 /* A physically impossible state (a foot at over 30 m/s) resets the
  * navigator; it re-aligns at the next still period and continues from the
  * last good position, so the trajectory stays continuous. */
@@ -476,6 +562,8 @@ static void test_stance_after_long_swing(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_health_counters_reach_stats),
+        cmocka_unit_test(test_undone_run_resets),
         cmocka_unit_test(test_divergence_reset),
         cmocka_unit_test(test_undone_run_cleared),
         cmocka_unit_test(test_reset_then_renewal),

@@ -151,6 +151,16 @@ static void test_validate(void **state)
     memcpy(rows, fnav_profile_paper_table(FNAV_PROFILE_NAVCHIP), sizeof rows);
     rows[4].sigma_bias = -1.0;
     assert_int_equal(fnav_profile_from_paper(&p, "x", 200.0, rows), FNAV_E_ARG);
+    /* the null arguments (by_name with a null name, from_paper with null
+     * rows: mutants without those checks passed every suite) */
+    {
+        memcpy(rows, fnav_profile_paper_table(FNAV_PROFILE_NAVCHIP), sizeof rows);
+        assert_int_equal(fnav_profile_from_paper(&p, "x", 200.0, rows), FNAV_OK);
+        assert_int_equal(fnav_profile_from_paper(NULL, "x", 200.0, rows), FNAV_E_ARG);
+        assert_int_equal(fnav_profile_from_paper(&p, NULL, 200.0, rows), FNAV_E_ARG);
+        assert_int_equal(fnav_profile_from_paper(&p, "x", 200.0, NULL), FNAV_E_ARG);
+        assert_int_equal(fnav_profile_by_name(&p, NULL), FNAV_E_ARG);
+    }
     memcpy(rows, fnav_profile_paper_table(FNAV_PROFILE_NAVCHIP), sizeof rows);
     assert_int_equal(fnav_profile_from_paper(&p, "x", 0.0, rows), FNAV_E_ARG);
     assert_int_equal(fnav_profile_from_paper(&p, "x", (double)INFINITY, rows), FNAV_E_ARG);

@@ -100,6 +100,19 @@ static void test_window_from_rate(void **state)
         }
         assert_int_equal(st.win, wins[i]);
         FNAV_ASSERT_CLOSE(st.rate_hz, rates[i], 0.0, 0.01);
+        /* a log shorter than the probe (10 samples): the rate is taken
+         * from its stamps at fnav_stance_finish (a mutant taking the
+         * configured 0 Hz there, window 3 at every rate, passed every
+         * suite) */
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        for (k = 0; k < 10; k++) {
+            s = sample(k, rates[i], f, w);
+            assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        }
+        assert_int_equal(st.win, 0);
+        fnav_stance_finish(&st);
+        assert_int_equal(st.win, wins[i]);
+        FNAV_ASSERT_CLOSE(st.rate_hz, rates[i], 0.0, 1e-6);
     }
 }
 
@@ -192,6 +205,13 @@ static void test_delay_and_flush(void **state)
         next++;
     }
     assert_int_equal(next, 100);
+    assert_int_equal(fnav_stance_pop(&st, &o), FNAV_END);
+    /* no sample at all: FNAV_AGAIN until the finish, then FNAV_END (a
+     * mutant answering FNAV_AGAIN for ever there passed every suite) */
+    c.rate_hz = FNAV_R(0.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    assert_int_equal(fnav_stance_pop(&st, &o), FNAV_AGAIN);
+    fnav_stance_finish(&st);
     assert_int_equal(fnav_stance_pop(&st, &o), FNAV_END);
 }
 
@@ -586,6 +606,67 @@ static void test_gait_events(void **state)
     assert_int_equal(ev.nfs, 1);
     assert_int_equal(ev.fo_at, 104);
     assert_int_equal(ev.fs_at, 152);
+}
+
+/* The foot-off search covers the first event_window_s of the swing run,
+ * n_ev = round(0.3 s x 100 Hz) = 30 samples: the run of test_gait_events
+ * begins at sample 99 (the 3-sample SHOE window, test_window_from_rate,
+ * sees the motion of sample 100 from there), so samples 99..128. A larger
+ * peak at 128 is the foot-off; at 129 it is outside the window and the
+ * push-off peak at 104 stays the foot-off. A window one sample shorter
+ * (run < n_ev, a mutant) passed every suite. */
+static void test_foot_off_window_edge(void **state)
+{
+    const double rate = 100.0;
+    long peak;
+    (void)state;
+    for (peak = 128; peak <= 129; peak++) {
+        fnav_stance_t st;
+        fnav_stance_config_t c = fnav_stance_config_default;
+        events_t ev = { -1, -1, 0, 0 };
+        long k;
+        c.rate_hz = (fnav_real_t)rate;
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        for (k = 0; k <= 300; k++) {
+            if (k < 300) {
+                double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+                fnav_sample_t s;
+                if (k >= 100 && k < 160) {
+                    w[1] = 3.0;
+                    f[0] = 2.0;
+                }
+                if (k == 104) {
+                    f[0] = 25.0;
+                }
+                if (k == peak) {
+                    f[0] = 40.0;
+                }
+                s = sample(k, rate, f, w);
+                assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+            } else {
+                fnav_stance_finish(&st);
+            }
+            pop_events(&st, rate, &ev);
+        }
+        assert_int_equal(st.n_ev, 30);
+        assert_int_equal(ev.nfo, 1);
+        assert_int_equal(ev.fo_at, peak == 128 ? 128 : 104);
+    }
+    /* a window longer than the jerk history is cut to
+     * FNAV_STANCE_EVENT_BUF - 1 samples (fnav_stance.h: the foot-strike
+     * search reaches n_ev back into that history; a mutant allowing two
+     * more passed every suite) */
+    {
+        fnav_stance_t st;
+        fnav_stance_config_t c = fnav_stance_config_default;
+        double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+        fnav_sample_t s = sample(0, rate, f, w);
+        c.rate_hz = (fnav_real_t)rate;
+        c.event_window_s = FNAV_R(1000.0);
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        assert_int_equal(st.n_ev, FNAV_STANCE_EVENT_BUF - 1);
+    }
 }
 
 /* A swing shorter than the foot-off window that ends in a pause shorter
@@ -1063,6 +1144,7 @@ int main(void)
         cmocka_unit_test(test_threshold_both_below),
         cmocka_unit_test(test_threshold_at_limit),
         cmocka_unit_test(test_gait_events),
+        cmocka_unit_test(test_foot_off_window_edge),
         cmocka_unit_test(test_foot_off_short_pause),
         cmocka_unit_test(test_foot_strike_jumps_add_up),
         cmocka_unit_test(test_foot_strike_reference),

@@ -53,8 +53,17 @@ static void test_config(void **state)
     fnav_ukf_init_sd_t sd = sd_default();
     (void)state;
     assert_int_equal(fnav_ukf_init(NULL, &c), FNAV_E_ARG);
+    assert_int_equal(fnav_ukf_init(&f, NULL), FNAV_E_ARG);
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
     assert_int_equal(f.n_act, 15);
+    /* a missing filter or initial sds (the null checks of start, zupt and
+     * zaru had no test: a mutant asking for both null in start passed
+     * every suite) */
+    assert_int_equal(fnav_ukf_start(NULL, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_E_ARG);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), NULL), FNAV_E_ARG);
+    assert_false(f.started);
+    assert_int_equal(fnav_ukf_zupt(NULL, fnav_vec3_zero()), FNAV_E_ARG);
+    assert_int_equal(fnav_ukf_zaru(NULL, fnav_vec3_zero()), FNAV_E_ARG);
     c.lever = 1;
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
     assert_int_equal(f.n_act, 18);
@@ -1672,6 +1681,42 @@ static void test_settle_zupt(void **state)
     assert_true(fabs(dx[NM]) > 1e-6);
 }
 
+/* The covariance guard with the settling active (fnav_ukf.c guard_cov):
+ * a variance that is not positive resets its row and column to zero, the
+ * settling's cross-covariance included, and the variance to its maximum.
+ * A prediction from a filter whose velocity y variance is -1e-3 (A) must
+ * therefore equal, bit for bit, one from the same filter with that reset
+ * done here by hand (B: row, column and Pxs zeroed, (100 m/s)^2), where
+ * the guard finds nothing to do. A mutant keeping the settling's
+ * cross-covariance (Pxs) of the reset state passed every suite. */
+static void test_settle_guard_reset(void **state)
+{
+    static fnav_ukf_t a, b;
+    const fnav_vec3_t w = fnav_vec3(FNAV_R(0.3), FNAV_R(-0.4), FNAV_R(0.1));
+    const fnav_vec3_t fb = fnav_vec3(FNAV_R(0.5), FNAV_R(0.3), FNAV_R(-9.5));
+    const int vy = FNAV_UKF_V + 1;
+    int j;
+    (void)state;
+    settle_setup(&a, 3);
+    assert_true(fabs((double)a.Pxs[a.pos[vy]]) > 1e-7); /* correlated: the reset has something to clear */
+    b = a;
+    fnav_ukf_set_cov(&a, vy, vy, -FNAV_R(1e-3));
+    for (j = 0; j < NM; j++) {
+        if (b.pos[j] >= 0 && j != vy) {
+            fnav_ukf_set_cov(&b, vy, j, FNAV_R(0.0));
+        }
+    }
+    fnav_ukf_set_cov(&b, vy, vy, FNAV_R(1.0e4));
+    b.Pxs[b.pos[vy]] = FNAV_R(0.0);
+    assert_int_equal(fnav_ukf_predict(&a, w, fb, FNAV_R(0.004)), FNAV_OK);
+    assert_int_equal(fnav_ukf_predict(&b, w, fb, FNAV_R(0.004)), FNAV_OK);
+    assert_int_equal(a.health.cov_guard, b.health.cov_guard + 1u);
+    assert_true(a.settle_on && b.settle_on);
+    assert_memory_equal(a.P, b.P, sizeof a.P);
+    assert_memory_equal(a.Pxs, b.Pxs, sizeof a.Pxs);
+    assert_true(a.settle_var == b.settle_var);
+}
+
 /* The ZARU with the settling active: the textbook update of the augmented
  * state with a measurement that does not involve the settling (which is
  * still corrected through its correlations). */
@@ -1995,6 +2040,7 @@ int main(void)
         cmocka_unit_test(test_nees_settle),
         cmocka_unit_test(test_settle_zupt),
         cmocka_unit_test(test_settle_zaru),
+        cmocka_unit_test(test_settle_guard_reset),
         cmocka_unit_test(test_zaru_gate),
         cmocka_unit_test(test_settle_predict),
         cmocka_unit_test(test_settle_decay),
