@@ -119,14 +119,12 @@ nm-check: $(LIB)
 check-suites: $(TEST_BINS)
 	@set -e; for t in $(TEST_BINS); do echo "== $$t"; $$t; done
 
-# With FNAV_REQUIRE_DATA=1 (CI) a CLI test that skips checks for want of the
-# shared data fails instead.
+# The CLI tests, one after the other (scripts/run_cli_tests.sh). With
+# FNAV_REQUIRE_DATA=1 (CI) a CLI test that skips checks for want of the
+# shared data fails instead; with FNAV_REQUIRE_TOOLS=1 (CI) one that skips
+# checks for want of a tool (socat, the ARM toolchain, numpy/scipy) does.
 test-cli: $(HARNESS)
-	@set -e; mkdir -p $(BUILD); for t in tests/cli/test_*.sh; do echo "== $$t"; \
-	  HARNESS=$(abspath $(HARNESS)) sh $$t >$(BUILD)/cli-test.log 2>&1 || { cat $(BUILD)/cli-test.log; exit 1; }; \
-	  cat $(BUILD)/cli-test.log; \
-	  if [ "$${FNAV_REQUIRE_DATA:-}" = 1 ] && grep -i -E '^skip.*shared.data' $(BUILD)/cli-test.log; then \
-	    echo "$$t: shared data not found and FNAV_REQUIRE_DATA=1"; exit 1; fi; done
+	@HARNESS=$(abspath $(HARNESS)) sh scripts/run_cli_tests.sh $(BUILD) tests/cli/test_*.sh
 
 test-double:
 	$(MAKE) BUILD=build/double HARNESS=build/double/harness FNAV_DEFS=-DFNAV_USE_DOUBLE=1 check-suites
