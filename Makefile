@@ -376,6 +376,24 @@ HARNESS_NAME ?= footnav-harness
 VERSION      ?= 0.0.0
 HEADERS      := $(wildcard include/footnav/*.h)
 
+# A path may hold a space, but not a ', a # or a tab: the recipes quote the
+# paths with ', and footnav.pc cannot carry a # (a comment to pkg-config) or
+# a tab (pkg-config prints a space for it; make's patsubst splits there). make install and make
+# uninstall refuse such a path before building or installing anything.
+fnav_hash := \#
+fnav_tab := $(pc_empty)	$(pc_empty)
+fnav_install_vars := DESTDIR PREFIX EXEC_PREFIX BINDIR LIBDIR INCLUDEDIR PKGCONFIGDIR HARNESS_NAME
+# $(call fnav_refuse,VAR,CHAR,NAME): a make error when $(VAR) holds CHAR
+fnav_refuse = $(if $(findstring $(2),$($(1))),$(error make $(fnav_goal): $(1) holds $(3) ($(1)=$($(1))): \
+  not supported; a path may hold a space but not a ' or $(fnav_hash) or a tab (the recipes quote paths with ' \
+  and footnav.pc cannot carry the other two)))
+fnav_goal = $(firstword $(filter install uninstall,$(MAKECMDGOALS)))
+ifneq ($(fnav_goal),)
+$(foreach v,$(fnav_install_vars),$(call fnav_refuse,$(v),',an apostrophe (')))
+$(foreach v,$(fnav_install_vars),$(call fnav_refuse,$(v),$(fnav_hash),a hash ($(fnav_hash))))
+$(foreach v,$(fnav_install_vars),$(call fnav_refuse,$(v),$(fnav_tab),a tab))
+endif
+
 # A directory under PREFIX is written relative to ${prefix} in footnav.pc,
 # so that pkg-config --define-prefix can move the tree. pkg-config splits
 # values at blanks: a space in a path is written "\ " (pkg-config keeps the
