@@ -119,14 +119,12 @@ nm-check: $(LIB)
 check-suites: $(TEST_BINS)
 	@set -e; for t in $(TEST_BINS); do echo "== $$t"; $$t; done
 
-# With FNAV_REQUIRE_DATA=1 (CI) a CLI test that skips checks for want of the
-# shared data fails instead.
+# The CLI tests, one after the other (scripts/run_cli_tests.sh). With
+# FNAV_REQUIRE_DATA=1 (CI) a CLI test that skips checks for want of the
+# shared data fails instead; with FNAV_REQUIRE_TOOLS=1 (CI) one that skips
+# checks for want of a tool (socat, the ARM toolchain, numpy/scipy) does.
 test-cli: $(HARNESS)
-	@set -e; mkdir -p $(BUILD); for t in tests/cli/test_*.sh; do echo "== $$t"; \
-	  HARNESS=$(abspath $(HARNESS)) sh $$t >$(BUILD)/cli-test.log 2>&1 || { cat $(BUILD)/cli-test.log; exit 1; }; \
-	  cat $(BUILD)/cli-test.log; \
-	  if [ "$${FNAV_REQUIRE_DATA:-}" = 1 ] && grep -i -E '^skip.*shared.data' $(BUILD)/cli-test.log; then \
-	    echo "$$t: shared data not found and FNAV_REQUIRE_DATA=1"; exit 1; fi; done
+	@HARNESS=$(abspath $(HARNESS)) sh scripts/run_cli_tests.sh $(BUILD) tests/cli/test_*.sh
 
 test-double:
 	$(MAKE) BUILD=build/double HARNESS=build/double/harness FNAV_DEFS=-DFNAV_USE_DOUBLE=1 check-suites
@@ -377,6 +375,24 @@ HARNESS_NAME ?= footnav-harness
 # No release numbering yet; a packager sets VERSION.
 VERSION      ?= 0.0.0
 HEADERS      := $(wildcard include/footnav/*.h)
+
+# A path may hold a space, but not a ', a # or a tab: the recipes quote the
+# paths with ', and footnav.pc cannot carry a # (a comment to pkg-config) or
+# a tab (pkg-config prints a space for it; make's patsubst splits there). make install and make
+# uninstall refuse such a path before building or installing anything.
+fnav_hash := \#
+fnav_tab := $(pc_empty)	$(pc_empty)
+fnav_install_vars := DESTDIR PREFIX EXEC_PREFIX BINDIR LIBDIR INCLUDEDIR PKGCONFIGDIR HARNESS_NAME
+# $(call fnav_refuse,VAR,CHAR,NAME): a make error when $(VAR) holds CHAR
+fnav_refuse = $(if $(findstring $(2),$($(1))),$(error make $(fnav_goal): $(1) holds $(3) ($(1)=$($(1))): \
+  not supported; a path may hold a space but not a ' or $(fnav_hash) or a tab (the recipes quote paths with ' \
+  and footnav.pc cannot carry the other two)))
+fnav_goal = $(firstword $(filter install uninstall,$(MAKECMDGOALS)))
+ifneq ($(fnav_goal),)
+$(foreach v,$(fnav_install_vars),$(call fnav_refuse,$(v),',an apostrophe (')))
+$(foreach v,$(fnav_install_vars),$(call fnav_refuse,$(v),$(fnav_hash),a hash ($(fnav_hash))))
+$(foreach v,$(fnav_install_vars),$(call fnav_refuse,$(v),$(fnav_tab),a tab))
+endif
 
 # A directory under PREFIX is written relative to ${prefix} in footnav.pc,
 # so that pkg-config --define-prefix can move the tree. pkg-config splits

@@ -883,8 +883,7 @@ int hx_cmd_psd(int argc, char **argv)
         hx_warn(CMD, "the answer (%.0f Hz) is above the log's own rate (%.4g Hz): %.0f %% of the power reaches "
                      "%.1f Hz, near the Nyquist frequency %.4g Hz, so this log cannot show where the band ends; "
                      "read it as 'at least %.4g Hz' (or give --round 0)",
-                res.overall_fs, rate, 100.0 * thr, res.group_bw[0] > res.group_bw[1] ? res.group_bw[0] : res.group_bw[1],
-                0.5 * rate, rate);
+                res.overall_fs, rate, 100.0 * thr, bw_max, 0.5 * rate, rate);
     }
 
     memset(have, 0, sizeof have);

@@ -264,22 +264,34 @@ void hx_nav_init_error(const fnav_nav_config_t *cfg, const char *rate_src, const
     }
 }
 
-/* Whether the stance detector fits its configured window and minimum ZUPT
- * run into its ring at rate_hz, asked of the core itself (a probe given the
- * rate and one sample; fnav_stance.c, set_rate), and whether the navigation
- * takes that rate (max_gap_s: fnav_nav_init). */
-static int stance_fits(const fnav_nav_config_t *cfg, double rate_hz)
+/* A stance detector of cfg's configuration given the rate rate_hz and one
+ * sample, so that it has set its window and durations in samples
+ * (fnav_stance.c, set_rate): the core's own answer to what they are at a
+ * rate, with no second copy of its rounding and caps here. NULL when the
+ * core refuses the configuration. */
+static const fnav_stance_t *stance_probe(const fnav_nav_config_t *cfg, double rate_hz)
 {
     static fnav_stance_t probe;
     fnav_stance_config_t c = cfg->stance;
     fnav_sample_t s0;
     memset(&s0, 0, sizeof s0);
     c.rate_hz = (fnav_real_t)rate_hz;
-    if (!((double)cfg->max_gap_s * rate_hz > 1.5) || fnav_stance_init(&probe, &c) != FNAV_OK ||
-        fnav_stance_push(&probe, &s0) != FNAV_OK) {
+    if (fnav_stance_init(&probe, &c) != FNAV_OK || fnav_stance_push(&probe, &s0) != FNAV_OK) {
+        return NULL;
+    }
+    return &probe;
+}
+
+/* Whether the stance detector fits its configured window and minimum ZUPT
+ * run into its ring at rate_hz, asked of the core itself (stance_probe),
+ * and whether the navigation takes that rate (max_gap_s: fnav_nav_init). */
+static int stance_fits(const fnav_nav_config_t *cfg, double rate_hz)
+{
+    const fnav_stance_t *probe;
+    if (!((double)cfg->max_gap_s * rate_hz > 1.5) || (probe = stance_probe(cfg, rate_hz)) == NULL) {
         return 0;
     }
-    return fnav_stance_cut(&probe) == 0u;
+    return fnav_stance_cut(probe) == 0u;
 }
 
 /* The rate to advise when the ring cuts the detector's durations at fs_hz:
@@ -320,15 +332,23 @@ static double stance_fit_rate(const fnav_nav_config_t *cfg, double fs_hz)
     return 0.0;
 }
 
-/* The gait events' searches at fs_hz, samples (fnav_stance.c, set_rate and
- * foot_strike): the foot-off's is n_ev, at most FNAV_STANCE_EVENT_BUF - 1;
- * the foot-strike's what the jerk history holds before the stance's first
- * n_min_stance samples. */
+/* The gait events' searches at fs_hz, samples, as the core sets them
+ * (stance_probe): the foot-off's is n_ev (fnav_stance.c, set_rate: at most
+ * FNAV_STANCE_EVENT_BUF - 1); the foot-strike's what the jerk history holds
+ * before the stance's first n_min_stance samples (foot_strike). Both 0 when
+ * the core refuses the configuration. Until 2026-11-30 n_ev and
+ * n_min_stance were computed here again, in double, a second copy of
+ * set_rate's. */
 static void event_reach(const fnav_nav_config_t *cfg, double fs_hz, long *fo_n, long *fs_n)
 {
-    long ev = lround((double)cfg->stance.event_window_s * fs_hz), ms = lround((double)cfg->stance.min_stance_s * fs_hz);
-    ev = ev < 1 ? 1 : ev > FNAV_STANCE_EVENT_BUF - 1 ? FNAV_STANCE_EVENT_BUF - 1 : ev;
-    ms = ms < 1 ? 1 : ms;
+    const fnav_stance_t *probe = stance_probe(cfg, fs_hz);
+    long ev, ms;
+    if (probe == NULL) {
+        *fo_n = *fs_n = 0;
+        return;
+    }
+    ev = probe->n_ev;
+    ms = probe->n_min_stance;
     *fo_n = ev;
     *fs_n = ev < FNAV_STANCE_EVENT_BUF - ms ? ev : FNAV_STANCE_EVENT_BUF - ms;
 }

@@ -285,8 +285,8 @@ static int64_t foot_strike(const fnav_stance_t *st, long k0, int64_t t_now_ns, l
     if (lo < 0) {
         lo = 0;
     }
-    /* the history ends k_now - k0 = n_min_stance - 1 samples after k0: the
-     * window before k0 is cut to what it still holds */
+    /* the history ends k_now - k0 = n_min_stance - 1 samples after k0: the window
+     * before k0 is cut to what it still holds (replay says so: hx_nav.c, event_reach) */
     if (lo < k_now - (FNAV_STANCE_EVENT_BUF - 1)) {
         lo = k_now - (FNAV_STANCE_EVENT_BUF - 1);
     }

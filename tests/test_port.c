@@ -219,6 +219,37 @@ static void test_cm_batch_stamp(void **state)
     assert_true(fnav_cm_batch_stamp(t_prev, t_irq, 0u, 8u, 0) == t_prev + 100000000 / 8); /* 0: spread */
 }
 
+/* A batch spanning fewer nanoseconds than it has samples: fewer distinct
+ * stamps than samples fit in (t_prev, t_irq], so some repeat (the header and
+ * docs/firmware.md say so; they said "never repeating"), yet none goes back,
+ * the last is t_irq and there are as many distinct stamps as fit, each
+ * floor(span (i + 1) / n) after t_prev. From a span of n ns on, every stamp
+ * is its own. */
+static void test_cm_batch_stamp_short_span(void **state)
+{
+    const int64_t t_prev = 1000000000;
+    int64_t span, t, before;
+    uint32_t i, distinct;
+    (void)state;
+    for (span = 1; span <= 17; span++) {
+        before = t_prev;
+        distinct = 0u;
+        for (i = 0; i < 8u; i++) {
+            t = fnav_cm_batch_stamp(t_prev, t_prev + span, i, 8u, 2500000);
+            assert_true(t == t_prev + span * (int64_t)(i + 1u) / 8);
+            assert_true(t >= before); /* never back */
+            distinct += (t > before) ? 1u : 0u;
+            before = t;
+        }
+        assert_true(before == t_prev + span);
+        if (span < 8) {
+            assert_true(distinct == (uint32_t)span); /* a repeat, only as many as cannot be avoided */
+        } else {
+            assert_true(distinct == 8u); /* no repeat, none equal to t_prev */
+        }
+    }
+}
+
 /* The edges of the two helpers. fnav_cm_unwrap: a step of exactly half the
  * counter's period is ahead (the header asks for a reading at least every
  * half period: one exactly half a period later read as half a period
@@ -359,6 +390,7 @@ int main(void)
         cmocka_unit_test(test_cm_ring),
         cmocka_unit_test(test_cm_unwrap),
         cmocka_unit_test(test_cm_batch_stamp),
+        cmocka_unit_test(test_cm_batch_stamp_short_span),
         cmocka_unit_test(test_cm_time_edges),
         cmocka_unit_test(test_cm_stamps_through_nav),
     };

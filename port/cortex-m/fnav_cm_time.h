@@ -69,7 +69,10 @@ static inline int64_t fnav_cm_unwrap(fnav_cm_unwrap_t *u, uint32_t raw)
  *  interval (one stamp for the whole batch makes n - 1 duplicates, which the
  *  core does not propagate, and makes the estimated rate n times too low),
  *  and the interrupt's latency jitter moves each interval by jitter / n,
- *  never behind the previous batch. When the interval is longer than
+ *  never behind the previous batch. The stamps never go back, and they repeat
+ *  only when the batch spans fewer nanoseconds than it has samples
+ *  (t_irq_ns - t_prev_ns < n: fewer distinct stamps than samples fit in the
+ *  interval; sample i gets t_prev_ns + floor(span (i + 1) / n)). When the interval is longer than
  *  2 n @p period_ns (the nominal sample interval; samples were lost before
  *  the batch: a FIFO overflow, a stall), the batch is stamped back from
  *  t_irq_ns at period_ns, so the core sees the gap where the samples were

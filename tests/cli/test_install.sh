@@ -221,6 +221,36 @@ installed_files "$P" >"$T/got"
 if [ -s "$T/got" ]; then fail "make uninstall left files under the PREFIX with a space:"; cat "$T/got"; else
     pass "make uninstall left no file under the PREFIX with a space"; fi
 
+# A path holding ', # or a tab: the recipes quote the paths with ' (a '
+# ended the quote: a shell syntax error part-way, `Unterminated quoted
+# string`), and footnav.pc cannot carry a # (a comment to pkg-config: the
+# prefix cut there, the flags pointing elsewhere) or a tab (pkg-config prints
+# a space for it, which splits the flag; make's patsubst splits there too). make install and make uninstall refuse
+# such a path, naming the variable and the character, before building or
+# installing anything.
+TAB=$(printf '\t')
+for c in "'" "#" "$TAB"; do
+    case $c in "'") name="an apostrophe (')" ;; "#") name="a hash (#)" ;; *) name="a tab" ;; esac
+    for goal in install uninstall; do
+        for v in PREFIX DESTDIR LIBDIR; do
+            bad="$T/bad${c}dir"
+            case $v in
+                PREFIX) set -- PREFIX="$bad" ;;
+                DESTDIR) set -- DESTDIR="$bad" PREFIX=/usr ;;
+                LIBDIR) set -- DESTDIR="$T/stage-bad" LIBDIR="/usr/li${c}b" ;;
+            esac
+            expect_exit 2 "make $goal with $name in $v is refused" \
+                "$MAKE" -C "$ROOT" "$goal" "$@" BUILD="$T/build" HARNESS="$T/build/harness"
+            expect_err "make $goal: $v holds $name" "the error names $v and the character"
+            if [ -e "$bad" ] || [ -e "$T/stage-bad" ]; then
+                fail "make $goal with $name in $v created a directory"; rm -rf "$bad" "$T/stage-bad"
+            else
+                pass "make $goal with $name in $v created nothing"
+            fi
+        done
+    done
+done
+
 # The double build: FNAV_DEFS at install rebuilds the same BUILD in double
 # (the objects follow FNAV_DEFS) and footnav.pc passes it on; a program
 # built as float against the double library would read its frames wrong.

@@ -198,6 +198,8 @@ grep_in "$T/live.out" "0 bad frames, 0 lost frames" "no link errors on a clean s
 if cmp -s "$T/rec.csv" "$T/orig.csv"; then pass "recording identical to walk.bin (every value)"; else fail "recording differs from walk.bin"; cat "$T/err"; fi
 if command -v gnuplot >/dev/null 2>&1; then
     if [ -s "$T/live.png" ]; then pass "--plot-every drew $T/live.png"; else fail "--plot-every drew nothing"; fi
+else
+    echo "SKIP the --plot-every picture: gnuplot is not installed (apt-get install gnuplot-nox)"
 fi
 
 # --- a gnuplot that fails: the last picture, drawn at the end, is an output that was not written; its child's exit

@@ -1124,6 +1124,16 @@ expect_exit 0 "replay at 1 kHz without --strides" "$H" replay "$T/sw_1k.bin" --q
 if grep -q "gait events" "$T/err"; then fail "the event searches warned about without --strides"; else pass "no event-search warning without --strides"; fi
 expect_exit 0 "replay --strides at 1 kHz resampled to 400 Hz" "$H" replay "$T/sw_1k.bin" --rate 400 --strides "$T/sw_400.csv" --quiet
 if grep -q "gait events" "$T/err"; then fail "the event searches warned about at 400 Hz: $(cat "$T/err")"; else pass "no event-search warning at 400 Hz"; fi
+# replay computed the searches' reach again, in double, beside the core's set_rate, whose float rounds otherwise at
+# a half: min_stance_s = 0.021 at 500 Hz is 10.4999998 samples in double (10), 10.5 in float, which the core rounds
+# to 11, so its foot-strike search holds 160 - 11 = 149 samples (298 ms), cut; replay counted 150 and said nothing.
+# It asks the core now (hx_nav.c, event_reach). (The float build, which the CLI tests run.)
+"$H" sim --motion walk --duration 12 --rate 500 --profile none --out "$T/sw_500.bin" >/dev/null 2>&1 ||
+    fail "sim --rate 500 for the event searches"
+expect_exit 0 "replay --strides at 500 Hz, min_stance_s 0.021" "$H" replay "$T/sw_500.bin" --strides "$T/sw_500.csv" \
+    --param min_stance_s=0.021 --quiet
+expect_err "the foot-off is searched over 300 ms (of 300) after the swing begins and the foot-strike over 298 ms (of 300)" \
+    "--strides at 500 Hz: the foot-strike search the core cuts (149 samples) is said"
 # the sign of heading_change_deg (docs/harness.md, "Stride CSV": positive clockwise from above, as yaw): the
 # simulator's loop turns right three times, and its rows sum to +270 deg
 "$H" sim --motion loop --duration 60 --profile none --out "$T/loop.bin" >/dev/null 2>&1 || fail "sim --motion loop"
