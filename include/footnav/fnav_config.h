@@ -37,7 +37,7 @@
  *  covers what the history still holds before the stance: min(event_window_s,
  *  this many samples less the min_stance_s ones), i.e. the full 0.3 s up to
  *  457 Hz with the default 0.05 s (fnav_stance.h); beyond, a shorter window.
- *  8 bytes per sample. */
+ *  8.5 bytes per sample (13 in the double build). */
 #ifndef FNAV_STANCE_EVENT_BUF
 #define FNAV_STANCE_EVENT_BUF 160
 #endif

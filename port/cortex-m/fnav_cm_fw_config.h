@@ -33,9 +33,9 @@
 #define FNAV_STANCE_MAX_WINDOW 24
 
 /* Foot-strike search history: 128 samples hold the default 0.3 s event
- * window up to 426 Hz (the firmware samples at 400 Hz at most, see
- * FNAV_CM_RING_SIZE); 8 bytes per sample, 256 bytes less than the default
- * 160 (which the navigation's alignment and detector state needed). */
+ * window and min_stance_s (0.05 s) up to 366 Hz, 270 ms of it at the
+ * image's 400 Hz (docs/firmware.md); 8.5 bytes per sample, 272 bytes less
+ * than the default 160 (which the navigation's alignment and detector state needed). */
 #define FNAV_STANCE_EVENT_BUF 128
 
 /* Sample ring between the interrupt and the main loop: 16 samples, 40 ms at
