@@ -155,7 +155,13 @@ def foot(rows, evs, oevs, tb, ub, c0, rate, last):
         evaluated.append(j)
     res = dict(expected=len(evaluated), rows=len(r), missed=0, spurious=0, fo=[], fs=[], st=[], cad=[],
                # rows of a short step whose foot-off is not before its foot-strike (swing_s empty), by how much, s
-               late_fo=[(x["fo"] - x["fs"]) / rate for x in r if x["fo"] is not None and x["fo"] >= x["fs"]])
+               late_fo=[(x["fo"] - x["fs"]) / rate for x in r if x["fo"] is not None and x["fo"] >= x["fs"]],
+               # stance share, 100 stance_s / stride_time_s, of the rows with both, of a straight stride
+               # (|heading_change_deg| <= 10) under 2 s (docs/harness.md, "Reading the rows for gait analysis")
+               share=[100.0 * fnum(x["stance_s"]) / fnum(x["stride_time_s"]) for x in rows
+                      if fnum(x["stance_s"]) is not None and fnum(x["stride_time_s"]) is not None and
+                      fnum(x["heading_change_deg"]) is not None and abs(fnum(x["heading_change_deg"])) <= 10.0 and
+                      fnum(x["stride_time_s"]) < 2.0])
     for j in evaluated:
         if j not in owner:
             res["missed"] += 1
@@ -221,7 +227,7 @@ def main():
         trials = sorted(found, key=lambda n: tuple(int(x) for x in n.split("-")))
     if not trials:
         sys.exit("no trial 1-x, 2-x or 3-x in " + d)
-    tot = dict(expected=0, rows=0, missed=0, spurious=0, fo=[], fs=[], st=[], cad=[], late_fo=[])
+    tot = dict(expected=0, rows=0, missed=0, spurious=0, fo=[], fs=[], st=[], cad=[], late_fo=[], share=[])
     differ = []
     print("trial foot   expert  rows  matched  missed  spurious  med|FO|  med|FS|  FO_bias  FS_bias  "
           "med|dT|_ms  p90|dT|_ms  (samples at 100 Hz unless ms)")
@@ -262,6 +268,11 @@ def main():
     print("cadence     (%d): median |error| %.2f steps/min, 90th percentile %.2f, bias %+.2f" % (len(tot["cad"]), *cad))
     print("foot-off not before foot-strike (swing_s empty): %d of %d rows, by %.2f s at most" % (
         len(tot["late_fo"]), tot["rows"], max(tot["late_fo"], default=0.0)))
+    if tot["share"]:
+        print("stance share (%d rows with stance_s and stride_time_s, |heading change| <= 10 deg, stride < 2 s): "
+              "median %.1f %%, 10th-90th percentile %.1f-%.1f %%" % (
+                  len(tot["share"]), np.median(tot["share"]), np.percentile(tot["share"], 10),
+                  np.percentile(tot["share"], 90)))
     if eval_rows is not None:
         if differ:
             sys.exit("eval's table differs:\n" + "\n".join(differ))
