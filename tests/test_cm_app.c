@@ -17,6 +17,7 @@
 
 static uint32_t g_imu_next;           /* sample counter of the fake IMU */
 static int g_imu_absent;
+static long g_imu_fifo;               /* samples left in the fake IMU's FIFO (-1: endless) */
 static int g_imu_still;               /* a sensor lying still (the filter aligns) */
 static uint8_t g_link[1 << 17];       /* everything sent */
 static size_t g_link_n;
@@ -48,8 +49,11 @@ static fnav_sample_t make_sample(uint32_t k)
 
 int fnav_cm_imu_read(fnav_sample_t *s)
 {
-    if (g_imu_absent) {
+    if (g_imu_absent || g_imu_fifo == 0) {
         return -1;
+    }
+    if (g_imu_fifo > 0) {
+        g_imu_fifo--;
     }
     *s = make_sample(g_imu_next++);
     return 0;
@@ -71,6 +75,7 @@ static void reset_board(void)
 {
     g_imu_next = 0;
     g_imu_absent = 0;
+    g_imu_fifo = -1;
     g_imu_still = 0;
     g_link_n = 0;
     g_busy_every = 0;
@@ -83,6 +88,8 @@ typedef struct {
     fnav_wire_decoder_t dec;
     uint32_t by_type[6];
     uint32_t samples_ok;          /* echoed samples equal to what the IMU gave */
+    uint32_t seq_breaks;          /* echoed samples whose seq is not the previous one's + 1 */
+    uint32_t last_seq;            /* seq of the last echoed sample */
     fnav_wire_status_t last_status;
     fnav_wire_info_t info;
 } rx_t;
@@ -93,6 +100,7 @@ static void receive(rx_t *rx)
     fnav_wire_decoder_init(&rx->dec);
     memset(rx->by_type, 0, sizeof rx->by_type);
     rx->samples_ok = 0;
+    rx->seq_breaks = 0;
     for (;;) {
         size_t used;
         fnav_wire_frame_t f;
@@ -109,6 +117,8 @@ static void receive(rx_t *rx)
             if (s.t_ns == want.t_ns && s.accel_mps2[2] == want.accel_mps2[2] && s.gyro_rps[0] == want.gyro_rps[0]) {
                 rx->samples_ok++;
             }
+            rx->seq_breaks += rx->by_type[FNAV_WIRE_SAMPLE] > 1 && s.seq != rx->last_seq + 1u;
+            rx->last_seq = s.seq;
         } else if (f.type == FNAV_WIRE_STATUS) {
             assert_int_equal(fnav_wire_parse_status(&f, &rx->last_status), FNAV_OK);
         } else if (f.type == FNAV_WIRE_INFO) {
@@ -286,6 +296,51 @@ static void test_ring_overrun(void **state)
     assert_int_equal(fnav_cm_app_poll(&app), 0);
 }
 
+/* A FIFO-watermark interrupt: fnav_cm_sample_isr_fifo reads the IMU until it
+ * has no sample left or max were read, and pushes each; the main loop sees
+ * them in order. fnav_cm_sample_isr reads one per interrupt, so such a board
+ * lost all but one sample of each batch (the porting review, 2026-11-30). */
+static void test_isr_fifo(void **state)
+{
+    static fnav_cm_app_t app;
+    static rx_t rx;
+    fnav_cm_app_config_t cfg = fnav_cm_app_config_default;
+    (void)state;
+    reset_board();
+    cfg.sample_every = 1;
+    cfg.nav_every = 0;
+    cfg.status_every = 0;
+    assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_OK);
+    /* a batch of 12, all read at one interrupt */
+    g_imu_fifo = 12;
+    assert_int_equal(fnav_cm_sample_isr_fifo(&app.port_ctx, FNAV_CM_RING_SIZE), 12);
+    assert_int_equal(g_imu_fifo, 0);
+    assert_int_equal(fnav_cm_app_poll(&app), 12);
+    /* more waiting than max: max read, the rest left in the FIFO */
+    g_imu_fifo = 20;
+    assert_int_equal(fnav_cm_sample_isr_fifo(&app.port_ctx, 8), 8);
+    assert_int_equal(g_imu_fifo, 12);
+    assert_int_equal(fnav_cm_sample_isr_fifo(&app.port_ctx, 0), 0);
+    assert_int_equal(fnav_cm_sample_isr_fifo(&app.port_ctx, FNAV_CM_RING_SIZE), 12);
+    assert_int_equal(fnav_cm_app_poll(&app), 20);
+    /* more than the ring holds: each read sample past it is an overrun */
+    g_imu_fifo = (long)FNAV_CM_RING_SIZE + 3;
+    assert_int_equal(fnav_cm_sample_isr_fifo(&app.port_ctx, FNAV_CM_RING_SIZE + 3u), FNAV_CM_RING_SIZE + 3u);
+    assert_int_equal(app.port_ctx.ring.overruns, 3);
+    assert_int_equal(fnav_cm_app_poll(&app), FNAV_CM_RING_SIZE);
+    /* no IMU: nothing read */
+    g_imu_absent = 1;
+    assert_int_equal(fnav_cm_sample_isr_fifo(&app.port_ctx, FNAV_CM_RING_SIZE), 0);
+    receive(&rx);
+    /* every sample the ring kept, in the IMU's order: the three dropped are
+     * the newest (the ring keeps what it holds), so no break in seq */
+    assert_int_equal(app.samples, 12 + 20 + FNAV_CM_RING_SIZE);
+    assert_int_equal(rx.by_type[FNAV_WIRE_SAMPLE], 12 + 20 + FNAV_CM_RING_SIZE);
+    assert_int_equal(rx.samples_ok, 12 + 20 + FNAV_CM_RING_SIZE);
+    assert_int_equal(rx.seq_breaks, 0);
+    assert_int_equal(rx.last_seq, 12 + 20 + FNAV_CM_RING_SIZE - 1);
+}
+
 /* A busy link: the refused frames are counted by the sender and show up
  * as sequence gaps (drops) at the receiver. */
 static void test_busy_link(void **state)
@@ -322,6 +377,7 @@ int main(void)
         cmocka_unit_test(test_sample_every_info),
         cmocka_unit_test(test_every_frame_is_output),
         cmocka_unit_test(test_ring_overrun),
+        cmocka_unit_test(test_isr_fifo),
         cmocka_unit_test(test_busy_link),
     };
     return cmocka_run_group_tests_name("cm_app", tests, NULL, NULL);

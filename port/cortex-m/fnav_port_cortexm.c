@@ -9,6 +9,17 @@ void fnav_cm_sample_isr(fnav_cm_port_ctx_t *ctx)
     }
 }
 
+uint32_t fnav_cm_sample_isr_fifo(fnav_cm_port_ctx_t *ctx, uint32_t max)
+{
+    fnav_sample_t s;
+    uint32_t n = 0;
+    while (n < max && fnav_cm_imu_read(&s) == 0) {
+        (void)fnav_cm_ring_push(&ctx->ring, &s);
+        n++;
+    }
+    return n;
+}
+
 /* ---- SysTick time base ---- */
 
 #if defined(__arm__)

@@ -47,8 +47,19 @@ void fnav_cm_port_init(fnav_port_t *port, fnav_cm_port_ctx_t *ctx);
 /** Sample-ready interrupt body: reads the IMU once (fnav_cm_imu_read) and
  *  pushes that one sample (a full ring counts an overrun). ISR only. An IMU
  *  that interrupts once per FIFO batch needs one call per sample of the
- *  batch: docs/firmware.md, "FIFO batches and the ring". */
+ *  batch, or fnav_cm_sample_isr_fifo below: docs/firmware.md, "FIFO
+ *  batches and the ring". */
 void fnav_cm_sample_isr(fnav_cm_port_ctx_t *ctx);
+
+/** FIFO-watermark interrupt body: calls fnav_cm_imu_read until it returns
+ *  -1 (the IMU's FIFO is empty) or @p max samples were read, and pushes each
+ *  (a full ring counts each sample past it as an overrun; the ring keeps
+ *  what it holds). @return the number of samples read. ISR only. @p max
+ *  bounds the time spent in the interrupt: the watermark, or
+ *  FNAV_CM_RING_SIZE. Stamps: fnav_cm_batch_stamp (fnav_cm_time.h).
+ *  Nothing of it is in an image that does not call it (the reference image
+ *  calls fnav_cm_sample_isr). */
+uint32_t fnav_cm_sample_isr_fifo(fnav_cm_port_ctx_t *ctx, uint32_t max);
 
 /** Send a SAMPLE frame (raw stream). Main loop only. @return FNAV_OK or FNAV_E_IO. */
 fnav_status_t fnav_cm_port_send_sample(fnav_cm_port_ctx_t *ctx, const fnav_sample_t *s);
@@ -74,7 +85,8 @@ void fnav_cm_board_init(void);
 /** Read one sample (fill every field, t_ns included: int64 ns, never going
  *  back; fnav_cm_time.h converts a wrapping timer or a FIFO batch's one
  *  stamp). 0 ok, -1 none. ISR context: must not block. Called once per
- *  sample-ready interrupt. */
+ *  sample-ready interrupt by fnav_cm_sample_isr, or until it returns -1 by
+ *  fnav_cm_sample_isr_fifo. */
 int fnav_cm_imu_read(fnav_sample_t *s);
 /** Monotonic time, ns. */
 int64_t fnav_cm_ticks_ns(void);
