@@ -179,8 +179,15 @@ int hx_plot_check(const char *cmd, const char *png_path);
  *  file it started in this session (one that was not there, or one that was
  *  and has changed since hx_plot_open) is removed, and the error says so. */
 int hx_plot_close(hx_plot_t *p, const char *cmd);
-/** 1 when the two paths name one existing file (an output about to
- *  overwrite the input), else 0. */
+/** The axis labels of a path plot: the navigation frame's y and x
+ *  (docs/frames.md), x along the sensor's heading at the alignment; no
+ *  magnetometer, so not east and north (replay's, live's and eval's
+ *  plots). */
+#define HX_PLOT_PATH_XLABEL "y (m, right of the start heading)"
+#define HX_PLOT_PATH_YLABEL "x (m, along the start heading)"
+/** 1 when the two paths name one file: one that exists, or, when neither
+ *  exists yet, one name in one directory (an output about to overwrite the
+ *  input, or two outputs written into one file), else 0. */
 int hx_same_file(const char *a, const char *b);
 /** 1, after an error naming it, when one of the output options `outputs`
  *  (NULL-terminated, e.g. "--json") given in `a` names the input file

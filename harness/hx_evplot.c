@@ -149,8 +149,8 @@ int hx_evplot_paths(const hx_evplot_set_t *s, const char *cmd, const char *png, 
     /* n's y to the right, x up: x is the heading at the alignment, not
      * north (no magnetometer, docs/frames.md); labelled 'east y' and 'north
      * x' until 2026-11-30, as replay's plot was */
-    fprintf(p.gp, "set size ratio -1\nset xlabel 'y (m, right of the start heading)'\n"
-                  "set ylabel 'x (m, along the start heading)'\nplot ");
+    fprintf(p.gp, "set size ratio -1\nset xlabel '" HX_PLOT_PATH_XLABEL "'\nset ylabel '" HX_PLOT_PATH_YLABEL
+                  "'\nplot ");
     for (i = 0; i < s->n; i++) {
         fprintf(p.gp, "'-' with lines lw 1 title '%s', ", hx_gp_str(q, sizeof q, s->w[i].name));
     }
@@ -213,8 +213,8 @@ int hx_evplot_strides(const hx_evplot_set_t *s, const char *cmd, const char *png
     }
     fprintf(p.gp, "set multiplot layout %d,%d title '%s'.\"\\n\".'%s'\n", rows, cols, hx_gp_str(q, sizeof q, title),
             k_strides_key);
-    fprintf(p.gp, "set size ratio -1\nunset key\nset xlabel 'y (m, right of the start heading)' font ',8'\n"
-                  "set ylabel 'x (m, along the start heading)' font ',8'\nset tics font ',8'\n");
+    fprintf(p.gp, "set size ratio -1\nunset key\nset xlabel '" HX_PLOT_PATH_XLABEL "' font ',8'\n"
+                  "set ylabel '" HX_PLOT_PATH_YLABEL "' font ',8'\nset tics font ',8'\n");
     for (i = 0; i < s->n; i++) {
         const hx_evplot_walk_t *w = &s->w[i];
         /* the panel's ranges: every point, the narrower side widened to

@@ -1975,7 +1975,7 @@ int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_tr
          * it): two empty panels that say so; gnuplot refuses a plot without
          * a valid point, and the png was left half drawn with exit 3 (a
          * review, 2026-11-28) */
-        fprintf(p.gp, "set xlabel 'y (m, right of the start heading)'\nset ylabel 'x (m, along the start heading)'\n"
+        fprintf(p.gp, "set xlabel '" HX_PLOT_PATH_XLABEL "'\nset ylabel '" HX_PLOT_PATH_YLABEL "'\n"
                       "set xrange [-1:1]\nset yrange [-1:1]\n"
                       "set title 'no aligned frame: nothing navigated'\nplot -2 notitle\n"
                       "set xlabel 'time (s)'\nset ylabel 'height (m, up)'\nset title 'no aligned frame'\n"
@@ -1984,8 +1984,7 @@ int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_tr
     }
     /* n's axes (docs/frames.md): no magnetometer, so not north and east,
      * as they were labelled until 2026-11-30 (the gait review) */
-    fprintf(p.gp, "set size ratio -1\nset xlabel 'y (m, right of the start heading)'\n"
-                  "set ylabel 'x (m, along the start heading)'\n");
+    fprintf(p.gp, "set size ratio -1\nset xlabel '" HX_PLOT_PATH_XLABEL "'\nset ylabel '" HX_PLOT_PATH_YLABEL "'\n");
     {
         /* one span on both axes, centred on the path (start included): with
          * equal units alone a straight walk became a strip a few pixels wide
