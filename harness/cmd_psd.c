@@ -212,7 +212,7 @@ static int fs_lower_bound(const result_t *r, double rate, double *bound_hz)
  * review). A lower bound (fs_lower_bound()) is said there too: only a
  * warning said so, and the line read as a measurement (2026-11-30). */
 static void print_result(const char *title, const result_t *r, const fnav_bandwidth_config_t *bc, double rate,
-                         double thr, int paper_dc)
+                         int paper_dc)
 {
     const int rounded = bc->round_hz > FNAV_R(0.0);
     char lower[256] = "";
@@ -257,7 +257,7 @@ static void print_result(const char *title, const result_t *r, const fnav_bandwi
         snprintf(lower, sizeof lower,
                  ", only a lower bound%s (%.0f %% of the power reaches %.1f Hz, %.0f %% of the Nyquist frequency: "
                  "the log cannot show where the band ends)",
-                 of, 100.0 * thr, widest_band(r), 100.0 * widest_band(r) / (0.5 * rate));
+                 of, 100.0 * (double)bc->threshold, widest_band(r), 100.0 * widest_band(r) / (0.5 * rate));
     }
     /* a tie is said as one: on a static log both groups reach the Nyquist frequency alike */
     printf("  lowest usable sampling frequency: %.*f Hz (%s; %.0f %% of the power, %s)%s%s\n", rounded ? 0 : 1,
@@ -834,7 +834,7 @@ int hx_cmd_psd(int argc, char **argv)
                  st.wc.window == FNAV_WINDOW_HAMMING ? "Hamming" : (st.wc.window == FNAV_WINDOW_HANN ? "Hann" : "rect"),
                  (unsigned)st.wc.nfft, st.wc.symmetric ? " (symmetric)" : "", (unsigned)st.wc.overlap,
                  k_dc_names[dc_mode], (unsigned)res.nseg, res.df, 100.0 * thr, dct, rndt);
-        print_result(title, &res, &bc, rate, thr, dc_mode == 0);
+        print_result(title, &res, &bc, rate, dc_mode == 0);
     }
     {
         /* a group whose every axis is constant after the DC treatment has no
