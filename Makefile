@@ -380,6 +380,7 @@ HEADERS      := $(wildcard include/footnav/*.h)
 # paths with ', and footnav.pc cannot carry a # (a comment to pkg-config) or
 # a tab (pkg-config prints a space for it; make's patsubst splits there). make install and make
 # uninstall refuse such a path before building or installing anything.
+pc_empty :=
 fnav_hash := \#
 fnav_tab := $(pc_empty)	$(pc_empty)
 fnav_install_vars := DESTDIR PREFIX EXEC_PREFIX BINDIR LIBDIR INCLUDEDIR PKGCONFIGDIR HARNESS_NAME
@@ -399,7 +400,6 @@ endif
 # values at blanks: a space in a path is written "\ " (pkg-config keeps the
 # backslash in its output, -I/opt/my\ dir/include, for the shell that reads
 # the command line), and is hidden from patsubst, which splits at blanks too.
-pc_empty :=
 pc_space := $(pc_empty) $(pc_empty)
 pc_hide = $(subst $(pc_space),<fnav-space>,$(1))
 pc_dir = $(subst <fnav-space>,\ ,$(patsubst $(call pc_hide,$(PREFIX))/%,$${prefix}/%,$(call pc_hide,$(1))))
