@@ -1059,7 +1059,7 @@ static void analyse_channel(run_t *R, chan_t *ch, int fit_extra)
     o.tau_max_s = tau_max_samples(R) / R->rate_hz;
     ch->id_ok = hx_allan_identify(ch->res, ch->nres, R->rate_hz, &o, &ch->id) == 0;
     if (ch->id_ok && ch->id.paper_ok) {
-        /* the paper's BS is "the minimum" (III.C.2); a curve still falling
+        /* the paper's BS is "the minimum" (III.A; t_BS, III.C.2); a curve still falling
          * at the end of the analysed range, or rising from its first tau,
          * has none there, and its end point was printed as a bias stability
          * without a word (white noise: BS at 983 s of a 10^4 s record) */

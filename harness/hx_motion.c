@@ -683,7 +683,8 @@ int hx_motion_scenario(const char *name, const hx_motion_config_t *cfg, double d
                  side, side, side, still);
     } else if (strcmp(name, "paper") == 0) {
         /* like the paper's Fig. 11: corridors, two flights up and down
-         * (about one floor each way), back to the start room */
+         * (about one floor each way; the paper's walk went two floors up
+         * and down), back to the start room */
         snprintf(script, size,
                  "stand:%g,walk:8,turn:90,walk:30,turn:180,walk:40,turn:-90,walk:6,stairs-up:12,turn:180,"
                  "stairs-up:12,walk:6,turn:90,walk:25,turn:90,walk:6,stairs-down:12,turn:180,stairs-down:12,"

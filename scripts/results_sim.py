@@ -13,8 +13,9 @@ A. Bias model (paper V.A): the paper-like closed walk (`--motion paper`,
    (`--bias-sigma given|eq6`, docs/simulator.md).
 B. Sampling frequency (paper II, V.B): 120 s of walking and of running at
    100, 200 and 300 Hz, heel strikes as calibrated to the paper's Table III
-   (default: walking 7 ms, running 5 ms) and sharper (3 ms, "heels": Table I
-   asks 250-300 Hz for heels), sampled as interval means (an integrating
+   (default: walking 7 ms, running 5 ms) and sharper (3 ms: 500 Hz for a
+   walk by the same criterion, beyond the 250-300 Hz Table I asks for
+   heels), sampled as interval means (an integrating
    sensor, the filter's own convention), through the anti-alias FIR
    (instantaneous band-limited values) and as point samples without any
    filter (`--oversample 1`), for the MTx sensor (random, N seeds) and an ideal
