@@ -3,7 +3,8 @@
  * @brief footnav's version, MAJOR.MINOR.PATCH: the one place it is written.
  *
  * The Makefile reads the three numbers for footnav.pc's Version (a packager
- * may still set VERSION=).
+ * may still set VERSION=), `harness --version` prints FNAV_VERSION_STRING
+ * and every JSON output of the harness carries it as `footnav_version`.
  * Macros only: nothing of it is compiled into the library or the firmware.
  * It starts at 0.1.0, before a first release; CHANGELOG.md says what bumps
  * which number.
