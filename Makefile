@@ -372,8 +372,13 @@ INSTALL      ?= install
 INSTALL_PROGRAM ?= $(INSTALL)
 INSTALL_DATA ?= $(INSTALL) -m 644
 HARNESS_NAME ?= footnav-harness
-# No release numbering yet; a packager sets VERSION.
-VERSION      ?= 0.0.0
+# footnav.pc's Version: by default the one of include/footnav/fnav_version.h
+# (FNAV_VERSION_MAJOR.MINOR.PATCH, the version's one source); a packager may
+# set VERSION= all the same.
+fnav_header_version := $(shell awk '$$2 == "FNAV_VERSION_MAJOR" { a = $$3 } $$2 == "FNAV_VERSION_MINOR" { b = $$3 } \
+  $$2 == "FNAV_VERSION_PATCH" { c = $$3 } END { if (a != "" && b != "" && c != "") print a "." b "." c }' \
+  include/footnav/fnav_version.h)
+VERSION      ?= $(fnav_header_version)
 HEADERS      := $(wildcard include/footnav/*.h)
 
 # A path may hold a space, but not a ', a # or a tab: the recipes quote the

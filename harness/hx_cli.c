@@ -12,6 +12,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "footnav/fnav_version.h"
+
 static int opt_index(const hx_spec_t *spec, const char *name, size_t len)
 {
     int i;
@@ -725,10 +727,25 @@ int hx_out_close(FILE *f)
     return r != 0 || failed ? EOF : 0;
 }
 
-int hx_write_json(const char *path, const struct cJSON *root, char *err, size_t err_size)
+/* `footnav_version` as the first key of the object `root` (not again when
+ * it has one): added as cJSON adds, last, then moved to the front, with its
+ * name. 0, or -1 out of memory. */
+static int json_add_version(cJSON *root)
+{
+    cJSON *v;
+    if (!cJSON_IsObject(root) || cJSON_HasObjectItem(root, "footnav_version")) {
+        return 0;
+    }
+    if ((v = cJSON_AddStringToObject(root, "footnav_version", FNAV_VERSION_STRING)) == NULL) {
+        return -1;
+    }
+    return cJSON_InsertItemInArray(root, 0, cJSON_DetachItemViaPointer(root, v)) ? 0 : -1;
+}
+
+int hx_write_json(const char *path, struct cJSON *root, char *err, size_t err_size)
 {
     const int to_stdout = strcmp(path, "-") == 0;
-    char *txt = cJSON_Print(root), *clean;
+    char *txt = json_add_version(root) == 0 ? cJSON_Print(root) : NULL, *clean;
     FILE *f;
     int ok;
     if (txt != NULL && (clean = json_utf8(txt)) != txt) {

@@ -225,8 +225,12 @@ FILE *hx_out_open(const char *path);
 int hx_out_close(FILE *f);
 struct cJSON;
 /** Write `root` as text (one trailing newline) to `path`, or to
- *  hx_json_stdout when `path` is "-". 0, or -1 with the reason in err. */
-int hx_write_json(const char *path, const struct cJSON *root, char *err, size_t err_size);
+ *  hx_json_stdout when `path` is "-". An object first gets the key
+ *  `footnav_version` (FNAV_VERSION_STRING), at the front, once: every
+ *  command's JSON document carries the version that wrote it
+ *  (docs/harness.md, "Conventions shared by every command"). 0, or -1 with
+ *  the reason in err. */
+int hx_write_json(const char *path, struct cJSON *root, char *err, size_t err_size);
 
 /** `s` as the inside of a gnuplot single-quoted string (a quote doubled),
  *  cut to fit `buf`; returns buf. Every text from outside the program (a

@@ -6,6 +6,8 @@
 
 #include <gsl/gsl_errno.h>
 
+#include "footnav/fnav_version.h"
+
 #include "hx_cli.h"
 #include "hx_commands.h"
 
@@ -33,7 +35,8 @@ static const command_t k_commands[] = {
 static void usage(FILE *f)
 {
     size_t i;
-    fprintf(f, "usage: harness COMMAND [ARGS...]   (harness COMMAND --help for details)\n\ncommands:\n");
+    fprintf(f, "usage: harness COMMAND [ARGS...]   (harness COMMAND --help for details)\n"
+               "       harness --version           (footnav's version; or -V)\n\ncommands:\n");
     for (i = 0; i < sizeof k_commands / sizeof k_commands[0]; i++) {
         fprintf(f, "  %-16s %s\n", k_commands[i].name, k_commands[i].summary);
     }
@@ -78,6 +81,17 @@ int main(int argc, char **argv)
     if (argc < 2) {
         usage(stderr);
         return HX_EXIT_USAGE;
+    }
+    /* `harness --version` (nothing reported a version before: an unknown
+     * command, exit 2) */
+    if (strcmp(argv[1], "--version") == 0 || strcmp(argv[1], "-V") == 0) {
+        if (argc > 2) {
+            fprintf(stderr, "harness: error: %s takes no argument\n", argv[1]);
+            usage(stderr);
+            return HX_EXIT_USAGE;
+        }
+        printf("harness (footnav) %s\n", FNAV_VERSION_STRING);
+        return flush_stdout(NULL, HX_EXIT_OK);
     }
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
         static char help_opt[] = "--help";

@@ -9,6 +9,7 @@
 extern "C" {
 #endif
 
+#include "fnav_version.h"
 #include "fnav_config.h"
 #include "fnav_types.h"
 #include "fnav_math.h"

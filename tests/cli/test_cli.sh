@@ -41,6 +41,41 @@ if [ -w /dev/full ]; then
     [ "$rc" -eq 3 ] && pass "harness help info >/dev/full exits 3" || fail "harness help info >/dev/full: exit $rc, expected 3"
 fi
 
+# --- `harness --version` (or -V) prints footnav's version, the one of
+# include/footnav/fnav_version.h, and exits 0; every JSON output carries it
+# as `footnav_version`. Nothing reported a version before (--version was an
+# unknown command, exit 2).
+HV=$(awk '$1 == "#define" && $2 == "FNAV_VERSION_MAJOR" { a = $3 } $1 == "#define" && $2 == "FNAV_VERSION_MINOR" { b = $3 }
+    $1 == "#define" && $2 == "FNAV_VERSION_PATCH" { c = $3 } END { if (a != "" && b != "" && c != "") print a "." b "." c }' \
+    include/footnav/fnav_version.h 2>/dev/null)
+if [ -n "$HV" ]; then pass "fnav_version.h defines the version ($HV)"; else fail "fnav_version.h: no FNAV_VERSION_MAJOR/MINOR/PATCH"; fi
+for o in --version -V; do
+    expect_exit 0 "harness $o" "$H" "$o"
+    if [ "$(cat "$T/out")" = "harness (footnav) $HV" ]; then pass "harness $o prints 'harness (footnav) $HV' alone"
+    else fail "harness $o printed '$(cat "$T/out")', expected 'harness (footnav) $HV'"; fi
+    if [ -s "$T/err" ]; then fail "harness $o wrote to standard error"; else pass "harness $o: nothing on standard error"; fi
+done
+expect_exit 2 "harness --version with an argument" "$H" --version info
+expect_err "takes no argument" "harness --version info: the error says --version takes no argument"
+expect_exit 0 "harness --help" "$H" --help
+expect_out "^ *harness --version" "harness --help names --version"
+if [ -w /dev/full ]; then
+    "$H" --version >/dev/full 2>"$T/err"; rc=$?
+    [ "$rc" -eq 3 ] && pass "harness --version >/dev/full exits 3" || fail "harness --version >/dev/full: exit $rc, expected 3"
+fi
+expect_exit 0 "info --json -" "$H" info vectors/walk.bin --json -
+if json "$T/out" "j.get('footnav_version') == '$HV' and list(j)[0] == 'footnav_version'"; then
+    pass "info's JSON starts with footnav_version $HV"
+else fail "info's JSON lacks footnav_version $HV as its first key"; fi
+expect_exit 0 "replay --json" "$H" replay vectors/walk.bin --quiet --json "$T/r.json"
+if json "$T/r.json" "j.get('footnav_version') == '$HV' and list(j)[0] == 'footnav_version' and j['command'].startswith('harness replay')"; then
+    pass "replay's JSON starts with footnav_version $HV, its other keys kept"
+else fail "replay's JSON lacks footnav_version $HV as its first key"; fi
+expect_exit 0 "psd --json" "$H" psd vectors/walk.bin --json "$T/p.json"
+if json "$T/p.json" "j.get('footnav_version') == '$HV' and list(j)[0] == 'footnav_version'"; then
+    pass "psd's JSON starts with footnav_version $HV"
+else fail "psd's JSON lacks footnav_version $HV as its first key"; fi
+
 # --- numbers on the command line are decimal, finite and the whole value,
 # read alike by every option (hx_parse_number): strtod took a hexadecimal
 # '0x10' as 16 and skipped leading blanks (' 5' passed, '5 ' did not), while

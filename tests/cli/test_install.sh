@@ -10,6 +10,8 @@
 # is rebuilt in double and footnav.pc makes the program double too; a
 # PREFIX with a space installs, and the program builds from pkg-config's
 # escaped flags; `make uninstall` with the same variables leaves no file.
+# footnav.pc's Version is include/footnav/fnav_version.h's (a VERSION=
+# given to make wins), and the program sees its FNAV_VERSION_STRING.
 # The installs build in a scratch directory (BUILD=$T/build, about 15 s
 # each): the make running this test passes its command-line variables down
 # through MAKEFLAGS and the environment, both cleared here (with SAN and OPT
@@ -125,6 +127,7 @@ int main(void)
     }
     printf("profile %s, fnav_real_t %u bytes: %lu frames, %lu aligned, |position| <= %.4f m\n", nav.cfg.profile.name,
            (unsigned)sizeof(fnav_real_t), frames, aligned, worst);
+    printf("footnav %s\n", FNAV_VERSION_STRING);
     return 0;
 }
 EOF
@@ -174,12 +177,24 @@ PKG_CONFIG_LIBDIR="$D/usr/lib/pkgconfig" pkg-config --define-prefix --cflags foo
 expect_out_re "^-I$D/usr/include *$" "pkg-config --define-prefix relocates the staged tree too"
 PKG_CONFIG_LIBDIR="$D/usr/lib/pkgconfig" pkg-config --modversion footnav >"$T/out" 2>"$T/err"
 expect_out_re "^[0-9]+\.[0-9]+\.[0-9]+$" "footnav.pc has a version"
+# the version of include/footnav/fnav_version.h, its one source (footnav.pc
+# said 0.0.0, the Makefile's own default, before the header had one)
+HV=$(awk '$2 == "FNAV_VERSION_MAJOR" { a = $3 } $2 == "FNAV_VERSION_MINOR" { b = $3 } $2 == "FNAV_VERSION_PATCH" { c = $3 }
+    END { if (a != "" && b != "" && c != "") print a "." b "." c }' include/footnav/fnav_version.h 2>/dev/null)
+if [ -n "$HV" ] && [ "$(cat "$T/out")" = "$HV" ]; then pass "footnav.pc's version is fnav_version.h's ($HV)"
+else fail "footnav.pc's version '$(cat "$T/out")' is not fnav_version.h's '$HV'"; fi
+# a packager's VERSION= still wins (the library is built: no compilation)
+expect_exit 0 "make install VERSION=9.8.7-1 DESTDIR=D3" \
+    "$MAKE" -C "$ROOT" install DESTDIR="$T/root-v" PREFIX=/usr VERSION=9.8.7-1 BUILD="$T/build" HARNESS="$T/build/harness"
+PKG_CONFIG_LIBDIR="$T/root-v/usr/lib/pkgconfig" pkg-config --modversion footnav >"$T/out" 2>"$T/err"
+expect_out_re "^9\.8\.7-1$" "make install VERSION=9.8.7-1: footnav.pc says 9.8.7-1"
 
 if build_prog "$D" prog_float >"$T/err" 2>&1; then
     pass "a program of one's own builds with pkg-config's flags alone (float)"
     expect_exit 0 "the program runs (float)" "$T/prog_float"
     expect_out_re "^profile navchip, fnav_real_t 4 bytes: 1400 frames, 400 aligned, \|position\| <= 0\.00[0-9]{2} m$" \
         "the program navigated 7 s at rest with the NavChip profile: 1400 frames, the last 400 aligned, at the origin (float)"
+    expect_out_re "^footnav $HV$" "the program sees FNAV_VERSION_STRING $HV in the installed footnav.h"
 else
     fail "the program does not build with pkg-config's flags (float)"; cat "$T/err"
 fi
