@@ -168,7 +168,9 @@ fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x)
         kahan_add(&w->gs, &w->gc, (x - w->cfg.offset) - w->shift);
     }
     w->ring[w->pos] = (x - w->cfg.offset) - w->shift;
-    w->pos = (w->pos + 1u == n) ? 0u : w->pos + 1u;
+    /* >=, not ==: with n = 0 (never initialised, static storage) the index
+     * stays at 0 instead of running past the ring; no segment completes */
+    w->pos = (w->pos + 1u >= n) ? 0u : w->pos + 1u;
     w->nsamples++;
     if (w->fill < n) {
         w->fill++;
