@@ -202,6 +202,9 @@ uint32_t fnav_welch_bins(const fnav_welch_t *w)
 
 fnav_real_t fnav_welch_freq(const fnav_welch_t *w, uint32_t k)
 {
+    if (w == NULL || w->cfg.nfft == 0u) {
+        return FNAV_R(0.0); /* as bins and segments answer 0 for NULL */
+    }
     return (fnav_real_t)k * w->cfg.rate_hz / (fnav_real_t)w->cfg.nfft;
 }
 

@@ -620,6 +620,12 @@ static void test_not_initialised(void **state)
     assert_int_equal(w.fill, 0);
     assert_int_equal(fnav_welch_segments(&w), 0);
     assert_int_equal(fnav_welch_bins(&w), 1);
+    /* the accessors answer 0 rather than read through NULL or divide by
+     * nfft 0 (fnav_welch_freq dereferenced NULL and gave NaN here) */
+    assert_true(fnav_welch_freq(&w, 1) == FNAV_R(0.0));
+    assert_true(fnav_welch_freq(NULL, 1) == FNAV_R(0.0));
+    assert_int_equal(fnav_welch_bins(NULL), 0);
+    assert_int_equal(fnav_welch_segments(NULL), 0);
     assert_int_equal(fnav_welch_get(&w, out, FNAV_WELCH_MAX_BINS), FNAV_E_STATE);
     assert_int_equal(fnav_welch_last(&w, out, FNAV_WELCH_MAX_BINS), FNAV_E_STATE);
     /* an init that succeeds afterwards starts from scratch */

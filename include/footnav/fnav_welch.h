@@ -119,13 +119,15 @@ FNAV_WARN_UNUSED fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x);
 
-/** Segments averaged so far. */
+/** Segments averaged so far (0 for NULL). */
 uint32_t fnav_welch_segments(const fnav_welch_t *w);
 
-/** Number of one-sided bins, nfft/2 + 1. */
+/** Number of one-sided bins, nfft/2 + 1 (0 for NULL). */
 uint32_t fnav_welch_bins(const fnav_welch_t *w);
 
-/** Frequency of bin k, Hz (k f_s / nfft). */
+/** Frequency of bin k, Hz (k f_s / nfft; 0 for NULL or an estimator never
+ *  initialised). fnav_welch_freq(w, 1) is the bin spacing, the df_hz of
+ *  fnav_welch_bandwidth(). */
 fnav_real_t fnav_welch_freq(const fnav_welch_t *w, uint32_t k);
 
 /**
