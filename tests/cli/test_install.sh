@@ -193,20 +193,44 @@ fi
 # must be in 3..1024"), and from C++ (g++ -std=c++11, -Werror: a C++ program
 # links the C library only through the headers' extern "C" guards); every
 # symbol the library exports is fnav_*.
-hflags=$(pc "$D" --cflags footnav)
-hbad="" xbad=""
-for h in "$D"/usr/include/footnav/*.h; do
-    b=${h##*/}
-    printf '#include "footnav/%s"\n#include "footnav/%s"\nint hdr_tu;\n' "$b" "$b" >"$T/hdr.c"
-    # shellcheck disable=SC2086
-    (cd "$T" && $CC -std=c99 -pedantic -Wall -Wextra -Werror $hflags -c hdr.c -o hdr.o) >"$T/err" 2>&1 ||
-        { hbad="$hbad $b"; head -n 3 "$T/err"; }
-done
-if [ -z "$hbad" ]; then
-    pass "every installed header compiles alone, included twice (C99, -pedantic -Wall -Wextra -Werror)"
-else
-    fail "installed headers that do not compile alone:$hbad"
-fi
+# A program's own stricter warnings must not fire in the headers' inline
+# functions either (fnav_isfinite's x == x tripped -Wfloat-equal).
+HWARN_C="-std=c99 -pedantic -Wall -Wextra -Werror -Wconversion -Wsign-conversion -Wshadow -Wundef -Wdouble-promotion
+ -Wfloat-equal -Wcast-qual -Wstrict-prototypes -Wmissing-prototypes"
+HWARN_CXX="-std=c++11 -pedantic -Wall -Wextra -Werror -Wconversion -Wsign-conversion -Wshadow -Wundef -Wdouble-promotion
+ -Wfloat-equal -Wold-style-cast -Wzero-as-null-pointer-constant"
+CXX=${CXX:-g++}
+have_cxx=0
+command -v "${CXX%% *}" >/dev/null 2>&1 && have_cxx=1
+check_headers() { # DESTDIR LABEL: each installed header alone, in C (twice over) and, with a C++ compiler, in C++
+    hflags=$(pc "$1" --cflags footnav)
+    hbad="" xbad=""
+    for h in "$1"/usr/include/footnav/*.h; do
+        b=${h##*/}
+        printf '#include "footnav/%s"\n#include "footnav/%s"\nint hdr_tu;\n' "$b" "$b" >"$T/hdr.c"
+        # shellcheck disable=SC2086
+        (cd "$T" && $CC $HWARN_C $hflags -c hdr.c -o hdr.o) >"$T/err" 2>&1 ||
+            { hbad="$hbad $b"; head -n 5 "$T/err"; }
+        [ "$have_cxx" = 1 ] || continue
+        printf '#include "footnav/%s"\nint hdr_tu;\n' "$b" >"$T/hdr.cpp"
+        # shellcheck disable=SC2086
+        (cd "$T" && $CXX $HWARN_CXX $hflags -c hdr.cpp -o hdr.o) >"$T/err" 2>&1 ||
+            { xbad="$xbad $b"; head -n 5 "$T/err"; }
+    done
+    if [ -z "$hbad" ]; then
+        pass "every installed header compiles alone, included twice ($2; C99, -Werror and a program's stricter warnings)"
+    else
+        fail "installed headers that do not compile alone ($2):$hbad"
+    fi
+    if [ "$have_cxx" = 0 ]; then
+        echo "SKIP test_install.sh: no C++ compiler ($CXX; apt-get install g++): the headers' C++ check ($2)"
+    elif [ -z "$xbad" ]; then
+        pass "every installed header compiles alone as C++11 ($2; $CXX -std=c++11 -Werror and stricter warnings)"
+    else
+        fail "installed headers that do not compile as C++11 ($2):$xbad"
+    fi
+}
+check_headers "$D" float
 # the guard in every header that declares anything (fnav_config*.h hold macros only)
 nog=$(cd "$D/usr/include/footnav" && grep -L 'extern "C"' ./*.h | sed 's|^\./||' | grep -v '^fnav_config' | tr '\n' ' ')
 if [ -z "$nog" ]; then
@@ -214,20 +238,7 @@ if [ -z "$nog" ]; then
 else
     fail "installed headers without an extern \"C\" guard: $nog"
 fi
-CXX=${CXX:-g++}
-if command -v "${CXX%% *}" >/dev/null 2>&1; then
-    for h in "$D"/usr/include/footnav/*.h; do
-        b=${h##*/}
-        printf '#include "footnav/%s"\nint hdr_tu;\n' "$b" >"$T/hdr.cpp"
-        # shellcheck disable=SC2086
-        (cd "$T" && $CXX -std=c++11 -pedantic -Wall -Wextra -Werror $hflags -c hdr.cpp -o hdr.o) >"$T/err" 2>&1 ||
-            { xbad="$xbad $b"; head -n 3 "$T/err"; }
-    done
-    if [ -z "$xbad" ]; then
-        pass "every installed header compiles alone as C++11 ($CXX -std=c++11 -pedantic -Wall -Wextra -Werror)"
-    else
-        fail "installed headers that do not compile as C++11:$xbad"
-    fi
+if [ "$have_cxx" = 1 ]; then
     # the program includes the headers one by one (footnav.h wraps them in
     # extern "C" itself) and defines the assert hook as fnav_port.h declares
     # it: C linkage only through each header's own guard
@@ -272,8 +283,6 @@ EOF
     else
         fail "a C++ program does not build against the installed library"; cat "$T/err"
     fi
-else
-    echo "SKIP test_install.sh: no C++ compiler ($CXX; apt-get install g++): the headers' C++ check"
 fi
 nm -g --defined-only "$D/usr/lib/libfootnav.a" 2>/dev/null | awk 'NF == 3 { print $3 }' | LC_ALL=C sort -u >"$T/syms"
 if [ ! -s "$T/syms" ]; then
@@ -360,6 +369,7 @@ expect_exit 0 "make install FNAV_DEFS=-DFNAV_USE_DOUBLE=1 (same BUILD, rebuilt)"
     FNAV_DEFS=-DFNAV_USE_DOUBLE=1
 pc "$D2" --cflags footnav >"$T/out" 2>"$T/err"
 expect_out_re "^-I$D2/usr/include +-DFNAV_USE_DOUBLE=1 *$" "footnav.pc of the double build carries -DFNAV_USE_DOUBLE=1"
+check_headers "$D2" double
 if build_prog "$D2" prog_double >"$T/err" 2>&1; then
     pass "the program builds with pkg-config's flags alone (double)"
     expect_exit 0 "the program runs (double)" "$T/prog_double"
