@@ -6,7 +6,7 @@
 #                                   valgrind), cppcheck and clang-tidy (make
 #                                   lint), clang with libFuzzer (make fuzz)
 set -eu
-PACKAGES="make gcc libc6-dev pkg-config git ca-certificates \
+PACKAGES="make gcc g++ libc6-dev pkg-config git ca-certificates \
   libcmocka-dev libgsl-dev libserialport-dev libcjson-dev zlib1g-dev \
   gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-system-arm \
   gnuplot-nox socat python3 python3-numpy python3-scipy python3-matplotlib"

@@ -168,7 +168,9 @@ fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x)
         kahan_add(&w->gs, &w->gc, (x - w->cfg.offset) - w->shift);
     }
     w->ring[w->pos] = (x - w->cfg.offset) - w->shift;
-    w->pos = (w->pos + 1u == n) ? 0u : w->pos + 1u;
+    /* >=, not ==: with n = 0 (never initialised, static storage) the index
+     * stays at 0 instead of running past the ring; no segment completes */
+    w->pos = (w->pos + 1u >= n) ? 0u : w->pos + 1u;
     w->nsamples++;
     if (w->fill < n) {
         w->fill++;
@@ -200,6 +202,9 @@ uint32_t fnav_welch_bins(const fnav_welch_t *w)
 
 fnav_real_t fnav_welch_freq(const fnav_welch_t *w, uint32_t k)
 {
+    if (w == NULL || w->cfg.nfft == 0u) {
+        return FNAV_R(0.0); /* as bins and segments answer 0 for NULL */
+    }
     return (fnav_real_t)k * w->cfg.rate_hz / (fnav_real_t)w->cfg.nfft;
 }
 

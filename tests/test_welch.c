@@ -597,6 +597,50 @@ static void test_sample_count_end(void **state)
     }
 }
 
+/* An estimator never initialised (static storage, zeroed) or whose init
+ * failed before it ever succeeded: nfft is 0. Push stepped the ring index
+ * past the end (pos + 1 == 0 never wrapped it), writing out of bounds from
+ * the FNAV_WELCH_MAX_NFFT-th push on (found by a library user's probe,
+ * 2026-11-30); now the index stays in the ring, no segment completes and
+ * fnav_welch_get says FNAV_E_STATE, as before the first segment. */
+static void test_not_initialised(void **state)
+{
+    static fnav_welch_t w, copy;
+    fnav_welch_config_t c = fnav_welch_config_default;
+    fnav_real_t out[FNAV_WELCH_MAX_BINS];
+    uint32_t i;
+    (void)state;
+    c.nfft = 48; /* refused: w stays zeroed */
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    for (i = 0; i < FNAV_WELCH_MAX_NFFT + 8u; i++) {
+        assert_int_equal(fnav_welch_push(&w, FNAV_R(1.0)), FNAV_OK);
+        assert_true(w.pos < FNAV_WELCH_MAX_NFFT);
+    }
+    assert_int_equal(w.pos, 0);
+    assert_int_equal(w.fill, 0);
+    assert_int_equal(fnav_welch_segments(&w), 0);
+    assert_int_equal(fnav_welch_bins(&w), 1);
+    /* the accessors answer 0 rather than read through NULL or divide by
+     * nfft 0 (fnav_welch_freq dereferenced NULL and gave NaN here) */
+    assert_true(fnav_welch_freq(&w, 1) == FNAV_R(0.0));
+    assert_true(fnav_welch_freq(NULL, 1) == FNAV_R(0.0));
+    assert_int_equal(fnav_welch_bins(NULL), 0);
+    assert_int_equal(fnav_welch_segments(NULL), 0);
+    assert_int_equal(fnav_welch_get(&w, out, FNAV_WELCH_MAX_BINS), FNAV_E_STATE);
+    assert_int_equal(fnav_welch_last(&w, out, FNAV_WELCH_MAX_BINS), FNAV_E_STATE);
+    /* an init that succeeds afterwards starts from scratch */
+    assert_int_equal(fnav_welch_init(&w, NULL), FNAV_OK);
+    for (i = 0; i < 64u; i++) {
+        assert_int_equal(fnav_welch_push(&w, (fnav_real_t)(i % 3u)), FNAV_OK);
+    }
+    assert_int_equal(fnav_welch_segments(&w), 1);
+    assert_int_equal(fnav_welch_get(&w, out, FNAV_WELCH_MAX_BINS), FNAV_OK);
+    /* a failed init leaves an initialised estimator as it was (fnav_welch.h) */
+    copy = w;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    assert_memory_equal(&w, &copy, sizeof w);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -610,6 +654,7 @@ int main(void)
         cmocka_unit_test(test_segment_mean_large_offset),
         cmocka_unit_test(test_global_long_offset_start),
         cmocka_unit_test(test_sample_count_end),
+        cmocka_unit_test(test_not_initialised),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -159,7 +159,7 @@ FNAV_WARN_UNUSED fnav_status_t fnav_allan_init(fnav_allan_t *a, const fnav_allan
 
 /**
  * Add one sample.
- * @param a  initialised estimator
+ * @param a  initialised estimator (not NULL: FNAV_ASSERT, a programmer error)
  * @param y  the sample (any unit; rate, specific force, ...)
  * @return FNAV_OK; FNAV_E_NANINF for a NaN/Inf sample and FNAV_E_RANGE
  *         for |y| > FNAV_INPUT_MAX_ABS (both ignored, state unchanged), and
@@ -281,7 +281,8 @@ double fnav_allan_edf_pvar(int alpha, uint32_t m, uint32_t n_phase);
  * @param r        results, ascending tau
  * @param n        number of results
  * @param rate_hz  sample rate, Hz
- * @param tau_max  largest tau (samples) considered for the minimum (0: all)
+ * @param tau_max  largest tau (samples) considered for the minimum (0: all;
+ *                 `harness allan` passes 10 % of the record, docs/allan.md)
  * @param id       output
  * @return FNAV_OK; FNAV_E_ARG on NULL / bad rate; FNAV_E_RANGE when 1 s is
  *         outside the tau range with data or fewer than 2 valid points.

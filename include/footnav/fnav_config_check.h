@@ -1,10 +1,13 @@
 /**
  * @file fnav_config_check.h
- * @brief Rejects incoherent option sets at compile time (included by
- *        fnav_config.h; do not include directly).
+ * @brief Rejects incoherent option sets at compile time (included at the
+ *        end of fnav_config.h; included on its own, it includes
+ *        fnav_config.h first, which defines the options it checks).
  */
 #ifndef FNAV_CONFIG_CHECK_H
 #define FNAV_CONFIG_CHECK_H
+
+#include "fnav_config.h"
 
 #if (FNAV_USE_DOUBLE != 0) && (FNAV_USE_DOUBLE != 1)
 #error "FNAV_USE_DOUBLE must be 0 or 1"

@@ -148,8 +148,11 @@ typedef struct {
 } fnav_nav_config_t;
 
 /** Defaults: profile "generic-mems" (fnav_profile.h) with the AR(1) bias
- *  model, lever on (18 states), SHOE with the adaptive threshold
- *  (docs/navigation.md gives the reasons). */
+ *  model, lever on (18 states), SHOE with the adaptive threshold, the
+ *  detector's rate estimated (stance.rate_hz 0). Every field's default,
+ *  unit and reason: docs/navigation.md, "Configuration" (the fields above
+ *  name their unit; the alignment's and the detector's defaults are in
+ *  fnav_align.h and fnav_stance.h). */
 extern const fnav_nav_config_t fnav_nav_config_default;
 
 /** Counters (also summarised in fnav_nav_frame_t.health). */

@@ -91,11 +91,21 @@ static inline fnav_real_t fnav_ceil(fnav_real_t x) { return ceilf(x); }
 static inline fnav_real_t fnav_fmod(fnav_real_t x, fnav_real_t y) { return fmodf(x, y); }
 #endif
 
-/** Non-zero when x is neither NaN nor infinite. */
+/** Non-zero when x is neither NaN nor infinite. x == x is false for NaN
+ *  only, on purpose: a program's -Wfloat-equal is kept quiet here (the
+ *  expression is left as it is, since rewriting it changes the code the
+ *  compiler makes of every loop it is inlined in). */
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wfloat-equal"
+#endif
 static inline FNAV_ALWAYS_INLINE int fnav_isfinite(fnav_real_t x)
 {
     return (x == x) && (x <= FNAV_REAL_MAX) && (x >= -FNAV_REAL_MAX);
 }
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
 
 /** Clamp x to [lo, hi] (x is evaluated once). */
 static inline fnav_real_t fnav_clamp(fnav_real_t x, fnav_real_t lo, fnav_real_t hi)

@@ -102,7 +102,9 @@ typedef struct {
  * @return FNAV_OK; FNAV_E_ARG for NULL w; FNAV_E_CONFIG for a bad nfft,
  *         overlap >= nfft, unknown window/detrend/scaling, a rate not
  *         positive and finite, an offset not finite or beyond
- *         FNAV_INPUT_MAX_ABS, or FNAV_DETREND_GLOBAL with a symmetric window.
+ *         FNAV_INPUT_MAX_ABS, or FNAV_DETREND_GLOBAL with a symmetric window;
+ *         *w is then not changed (one initialised before keeps its
+ *         configuration and data; one never initialised stays zeroed).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg);
 
@@ -111,17 +113,21 @@ FNAV_WARN_UNUSED fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch
  * nfft samples were seen.
  * @return FNAV_OK; FNAV_E_ARG for NULL w; FNAV_E_NANINF for NaN/Inf,
  *         FNAV_E_RANGE for |x| > FNAV_INPUT_MAX_ABS and once 2^32 - 1
- *         samples were pushed (ignored, state unchanged).
+ *         samples were pushed (ignored, state unchanged). An estimator
+ *         never initialised (zeroed, as static storage is) takes the sample
+ *         but never completes a segment: fnav_welch_get says FNAV_E_STATE.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x);
 
-/** Segments averaged so far. */
+/** Segments averaged so far (0 for NULL). */
 uint32_t fnav_welch_segments(const fnav_welch_t *w);
 
-/** Number of one-sided bins, nfft/2 + 1. */
+/** Number of one-sided bins, nfft/2 + 1 (0 for NULL). */
 uint32_t fnav_welch_bins(const fnav_welch_t *w);
 
-/** Frequency of bin k, Hz (k f_s / nfft). */
+/** Frequency of bin k, Hz (k f_s / nfft; 0 for NULL or an estimator never
+ *  initialised). fnav_welch_freq(w, 1) is the bin spacing, the df_hz of
+ *  fnav_welch_bandwidth(). */
 fnav_real_t fnav_welch_freq(const fnav_welch_t *w, uint32_t k);
 
 /**

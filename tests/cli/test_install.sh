@@ -12,6 +12,9 @@
 # escaped flags; `make uninstall` with the same variables leaves no file.
 # footnav.pc's Version is include/footnav/fnav_version.h's (a VERSION=
 # given to make wins), and the program sees its FNAV_VERSION_STRING.
+# Each installed header compiles alone (C99 and C++11, -Werror), a C++
+# program links through the headers' extern "C" guards, and the library
+# exports only fnav_* symbols.
 # The installs build in a scratch directory (BUILD=$T/build, about 15 s
 # each): the make running this test passes its command-line variables down
 # through MAKEFLAGS and the environment, both cleared here (with SAN and OPT
@@ -199,6 +202,112 @@ else
     fail "the program does not build with pkg-config's flags (float)"; cat "$T/err"
 fi
 
+# Each installed header compiles alone, first and twice over, with the
+# program's flags (fnav_config_check.h, which fnav_config.h includes, did
+# not: its option checks met undefined options, #error "FNAV_STANCE_MAX_WINDOW
+# must be in 3..1024"), and from C++ (g++ -std=c++11, -Werror: a C++ program
+# links the C library only through the headers' extern "C" guards); every
+# symbol the library exports is fnav_*.
+# A program's own stricter warnings must not fire in the headers' inline
+# functions either (fnav_isfinite's x == x tripped -Wfloat-equal).
+HWARN_C="-std=c99 -pedantic -Wall -Wextra -Werror -Wconversion -Wsign-conversion -Wshadow -Wundef -Wdouble-promotion
+ -Wfloat-equal -Wcast-qual -Wstrict-prototypes -Wmissing-prototypes"
+HWARN_CXX="-std=c++11 -pedantic -Wall -Wextra -Werror -Wconversion -Wsign-conversion -Wshadow -Wundef -Wdouble-promotion
+ -Wfloat-equal -Wold-style-cast -Wzero-as-null-pointer-constant"
+CXX=${CXX:-g++}
+have_cxx=0
+command -v "${CXX%% *}" >/dev/null 2>&1 && have_cxx=1
+check_headers() { # DESTDIR LABEL: each installed header alone, in C (twice over) and, with a C++ compiler, in C++
+    hflags=$(pc "$1" --cflags footnav)
+    hbad="" xbad=""
+    for h in "$1"/usr/include/footnav/*.h; do
+        b=${h##*/}
+        printf '#include "footnav/%s"\n#include "footnav/%s"\nint hdr_tu;\n' "$b" "$b" >"$T/hdr.c"
+        # shellcheck disable=SC2086
+        (cd "$T" && $CC $HWARN_C $hflags -c hdr.c -o hdr.o) >"$T/err" 2>&1 ||
+            { hbad="$hbad $b"; head -n 5 "$T/err"; }
+        [ "$have_cxx" = 1 ] || continue
+        printf '#include "footnav/%s"\nint hdr_tu;\n' "$b" >"$T/hdr.cpp"
+        # shellcheck disable=SC2086
+        (cd "$T" && $CXX $HWARN_CXX $hflags -c hdr.cpp -o hdr.o) >"$T/err" 2>&1 ||
+            { xbad="$xbad $b"; head -n 5 "$T/err"; }
+    done
+    if [ -z "$hbad" ]; then
+        pass "every installed header compiles alone, included twice ($2; C99, -Werror and a program's stricter warnings)"
+    else
+        fail "installed headers that do not compile alone ($2):$hbad"
+    fi
+    if [ "$have_cxx" = 0 ]; then
+        echo "SKIP test_install.sh: no C++ compiler ($CXX; apt-get install g++): the headers' C++ check ($2)"
+    elif [ -z "$xbad" ]; then
+        pass "every installed header compiles alone as C++11 ($2; $CXX -std=c++11 -Werror and stricter warnings)"
+    else
+        fail "installed headers that do not compile as C++11 ($2):$xbad"
+    fi
+}
+check_headers "$D" float
+# the guard in every header that declares anything (fnav_config*.h hold macros only)
+nog=$(cd "$D/usr/include/footnav" && grep -L 'extern "C"' ./*.h | sed 's|^\./||' | grep -v '^fnav_config' | tr '\n' ' ')
+if [ -z "$nog" ]; then
+    pass "every installed header but fnav_config*.h (macros only) has an extern \"C\" guard"
+else
+    fail "installed headers without an extern \"C\" guard: $nog"
+fi
+if [ "$have_cxx" = 1 ]; then
+    # the program includes the headers one by one (footnav.h wraps them in
+    # extern "C" itself) and defines the assert hook as fnav_port.h declares
+    # it: C linkage only through each header's own guard
+    {
+        echo '#include <cstdio>'
+        echo '#include <cstdlib>'
+        for h in "$D"/usr/include/footnav/fnav_*.h; do echo "#include \"footnav/${h##*/}\""; done
+        cat <<'EOF'
+void fnav_port_assert_failed(const char *file, int line, const char *expr)
+{
+    std::fprintf(stderr, "%s:%d: %s\n", file, line, expr);
+    std::abort();
+}
+int main()
+{
+    static fnav_allan_t a;
+    static fnav_welch_t w;
+    static fnav_nav_t nav;
+    fnav_nav_config_t cfg = fnav_nav_config_default;
+    fnav_status_t st = fnav_profile_builtin(&cfg.profile, FNAV_PROFILE_NAVCHIP);
+    if (st == FNAV_OK) {
+        st = fnav_nav_init(&nav, &cfg);
+    }
+    if (st == FNAV_OK) {
+        st = fnav_welch_init(&w, &fnav_welch_config_default);
+    }
+    if (st == FNAV_OK) {
+        st = fnav_allan_init(&a, NULL);
+    }
+    if (st == FNAV_OK) {
+        st = fnav_allan_push(&a, FNAV_R(1.0));
+    }
+    std::printf("%s, %u sample\n", fnav_status_str(st), (unsigned)fnav_allan_samples(&a));
+    return st == FNAV_OK ? 0 : 1;
+}
+EOF
+    } >"$T/prog.cpp"
+    # shellcheck disable=SC2046
+    if (cd "$T" && $CXX -std=c++11 -Wall -Wextra -Werror -o prog_cpp prog.cpp $(pc "$D" --cflags --libs footnav)) >"$T/err" 2>&1; then
+        expect_exit 0 "a C++ program links the installed library and runs" "$T/prog_cpp"
+        expect_out "^ok, 1 sample$" "the C++ program called the library through each header's extern \"C\" guard"
+    else
+        fail "a C++ program does not build against the installed library"; cat "$T/err"
+    fi
+fi
+nm -g --defined-only "$D/usr/lib/libfootnav.a" 2>/dev/null | awk 'NF == 3 { print $3 }' | LC_ALL=C sort -u >"$T/syms"
+if [ ! -s "$T/syms" ]; then
+    fail "nm found no symbol in the installed libfootnav.a"
+elif grep -v '^fnav_' "$T/syms" >"$T/leak"; then
+    fail "the installed library exports symbols outside fnav_*: $(tr '\n' ' ' <"$T/leak")"
+else
+    pass "the installed library exports only fnav_* symbols ($(wc -l <"$T/syms" | tr -d ' '))"
+fi
+
 # A PREFIX with a space (no DESTDIR: installed where it is used). footnav.pc
 # held it as written, and pkg-config splits its values at blanks:
 # `-I/x/my prefix/include` became -I/x/my and a stray prefix/include. Its
@@ -275,6 +384,7 @@ expect_exit 0 "make install FNAV_DEFS=-DFNAV_USE_DOUBLE=1 (same BUILD, rebuilt)"
     FNAV_DEFS=-DFNAV_USE_DOUBLE=1
 pc "$D2" --cflags footnav >"$T/out" 2>"$T/err"
 expect_out_re "^-I$D2/usr/include +-DFNAV_USE_DOUBLE=1 *$" "footnav.pc of the double build carries -DFNAV_USE_DOUBLE=1"
+check_headers "$D2" double
 if build_prog "$D2" prog_double >"$T/err" 2>&1; then
     pass "the program builds with pkg-config's flags alone (double)"
     expect_exit 0 "the program runs (double)" "$T/prog_double"
