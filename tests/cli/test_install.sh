@@ -246,10 +246,11 @@ check_headers() { # DESTDIR LABEL: each installed header alone, in C (twice over
     fi
 }
 check_headers "$D" float
-# the guard in every header that declares anything (fnav_config*.h hold macros only)
-nog=$(cd "$D/usr/include/footnav" && grep -L 'extern "C"' ./*.h | sed 's|^\./||' | grep -v '^fnav_config' | tr '\n' ' ')
+# the guard in every header that declares anything (fnav_config*.h and
+# fnav_version.h hold macros only)
+nog=$(cd "$D/usr/include/footnav" && grep -L 'extern "C"' ./*.h | sed 's|^\./||' | grep -v '^fnav_config\|^fnav_version\.h$' | tr '\n' ' ')
 if [ -z "$nog" ]; then
-    pass "every installed header but fnav_config*.h (macros only) has an extern \"C\" guard"
+    pass "every installed header but fnav_config*.h and fnav_version.h (macros only) has an extern \"C\" guard"
 else
     fail "installed headers without an extern \"C\" guard: $nog"
 fi
