@@ -393,6 +393,43 @@ static void squeeze_line(const char *text, char *out, size_t size)
     out[k] = '\0';
 }
 
+/* The first line of text in out as squeeze_line makes it, but for a line
+ * without commas, tabs or semicolons, whose runs of blanks separate its
+ * names (numpy's savetxt with its default delimiter, "t ax ay ..."): each
+ * run becomes a tab. */
+static int blank_separated(const char *text)
+{
+    while (*text != '\0' && *text != '\n' && *text != ',' && *text != '\t' && *text != ';') {
+        text++;
+    }
+    return *text == '\0' || *text == '\n';
+}
+
+static void squeeze_header(const char *text, char *out, size_t size)
+{
+    size_t k = 0;
+    if (!blank_separated(text)) {
+        squeeze_line(text, out, size);
+        return;
+    }
+    for (; *text != '\0' && *text != '\n' && k + 1 < size; text++) {
+        if (*text == ' ') {
+            if (k > 0 && out[k - 1] != '\t') {
+                out[k++] = '\t';
+            }
+            continue;
+        }
+        if (*text == '"' || *text == '\'' || *text == '\r') {
+            continue;
+        }
+        out[k++] = (char)tolower((unsigned char)*text);
+    }
+    while (k > 0 && out[k - 1] == '\t') {
+        k--;
+    }
+    out[k] = '\0';
+}
+
 /* Whether the squeezed header line holds the field name (separated by
  * commas, tabs or semicolons). */
 static int has_field(const char *head, const char *name)
@@ -488,6 +525,20 @@ static int full_interchange_header(const char *head)
     return 1;
 }
 
+/* Whether a comment line (text after its '#') is the interchange header,
+ * as numpy's savetxt writes it: "# t,ax,..." (the name t is enough), or
+ * blank-separated "# t ax ay az gx gy gz" (all seven, so that a note such
+ * as "# t is in seconds" is not taken for one). */
+static int comment_header(const char *text)
+{
+    char head[600];
+    squeeze_header(text, head, sizeof head);
+    if (blank_separated(text)) {
+        return full_interchange_header(head);
+    }
+    return has_field(head, "t");
+}
+
 static hx_format_t detect(const unsigned char *b, size_t n)
 {
     char text[600], head[600];
@@ -519,8 +570,7 @@ static hx_format_t detect(const unsigned char *b, size_t n)
             }
             /* a commented header ("# t,ax,...", numpy's savetxt) is the
              * plain format's; other comment lines are skipped */
-            squeeze_line(h + 1, head, sizeof head);
-            if (has_field(head, "t")) {
+            if (comment_header(h + 1)) {
                 return HX_FMT_CSV;
             }
             h = strchr(h, '\n');
@@ -533,6 +583,7 @@ static hx_format_t detect(const unsigned char *b, size_t n)
         if (strncmp(head, "acquisitionfrequency", 20) == 0) {
             return HX_FMT_IPOL;
         }
+        squeeze_header(text, head, sizeof head);
         if (full_interchange_header(head)) {
             /* every column of the interchange format: ours, even if it
              * also carries a foreign format's names (a converted log that
@@ -640,10 +691,8 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
         if (r->meta.format == HX_FMT_CSV && comment(r->line)) {
             /* "# t,ax,...": the header behind the comment sign; any other
              * comment line before the header is skipped */
-            char head[600];
             char *h = strchr(r->line, '#') + 1;
-            squeeze_line(h, head, sizeof head);
-            if (!has_field(head, "t")) {
+            if (!comment_header(h)) {
                 continue;
             }
             while (*h == ' ' || *h == '\t') {
@@ -657,15 +706,17 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
         /* the interchange format and the comma-separated foreign ones: a
          * spreadsheet's tab- or semicolon-separated export is read the same
          * way (detection accepts those separators too); the tab-separated
-         * ipol file also with commas, semicolons or blanks (its names have
-         * no spaces) */
+         * ipol file also with commas, semicolons or blanks; and any of them
+         * with blanks alone, whose runs then separate the names (numpy's
+         * savetxt with its default delimiter; a name with a blank in it,
+         * as the ngimu's "Time (s)", is then not found) */
         if (strchr(r->line, ',') != NULL) {
             r->delim = ',';
         } else if (strchr(r->line, '\t') != NULL) {
             r->delim = '\t';
         } else if (strchr(r->line, ';') != NULL) {
             r->delim = ';';
-        } else if (r->meta.format == HX_FMT_IPOL) {
+        } else {
             r->delim = ' ';
         }
     }

@@ -1472,7 +1472,18 @@ static void test_detect_variants(void **state)
           "0,0.5,0.2,9.8,0.1,0.2,0.3\n0.01,0.5,0.2,9.8,0.1,0.2,0.3\n",
           HX_FMT_CSV, 0.5, 0.3 },
         { "t,ax,ay,az,gx,gy,gz,acc_x_g,gyro_x_dps\n0,0.5,0.2,9.8,0.1,0.2,0.3,9,9\n0.01,0.5,0.2,9.8,0.1,0.2,0.3,9,9\n",
+          HX_FMT_CSV, 0.5, 0.3 },        /* blank-separated: numpy's savetxt with its default delimiter
+         * (header "# t ax ..."), a header padded with runs of blanks, and a
+         * foreign format whose names hold no blank (until 2026-11-30:
+         * "FILE:2: header has no column 't'" and "FILE:1: ...") */
+        { "# t ax ay az gx gy gz\n0.000000000000000000e+00 5.000000000000000000e-01 2.0e-01 9.8e+00 1.0e-01 2.0e-01 "
+          "3.000000000000000000e-01\n1.0e-02 5.0e-01 2.0e-01 9.8e+00 1.0e-01 2.0e-01 3.0e-01\n",
           HX_FMT_CSV, 0.5, 0.3 },
+        { "t    ax    ay    az    gx    gy    gz\r\n0    0.5   0.2   9.8   0.1   0.2   0.3\r\n"
+          "0.01 0.5   0.2   9.8   0.1   0.2   0.3\r\n",
+          HX_FMT_CSV, 0.5, 0.3 },
+        { "gyro_x_dps  gyro_y_dps  gyro_z_dps  acc_x_g  acc_y_g  acc_z_g\n1 2 3 0.5 0 -1\n1 2 3 0.5 0 -1\n",
+          HX_FMT_ADIS, 0.5 * 9.80665, 3.0 * 0.017453292519943295 },
     };
     size_t i;
     (void)state;
