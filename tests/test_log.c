@@ -1504,6 +1504,41 @@ static void test_detect_variants(void **state)
     }
 }
 
+/* Numbers with a decimal comma (a European-locale export): an error that
+ * says so, at the line, in every reader (it said "column 2 ('0,5') is not a
+ * number", and of the headerless OpenShoe file "header has no column 't'",
+ * until 2026-11-30). */
+static void test_decimal_comma(void **state)
+{
+    static const struct {
+        const char *text, *where;
+    } cases[] = {
+        { "t;ax;ay;az;gx;gy;gz\n0;0,5;0,2;9,8;0,1;0,2;0,3\n", ":2: column 2 ('0,5')" },
+        { "t;ax;ay;az;gx;gy;gz\n0,01;0.5;0.2;9.8;0.1;0.2;0.3\n", ":2: time ('0,01')" },
+        { "0,19594386;-0,42454505;9,86250782;-0,00349064;-0,01745320;-0,02443448\n"
+          "0,19594386;-0,42454505;9,86250782;-0,00349064;-0,01745320;-0,02443448\n",
+          ":1: the first line is numbers with a decimal comma ('0,19594386')" },
+        { "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+          "0\t5,09\t0,40\t8,92\t-0,002\t0,008\t-0,017\n",
+          ":3: column 2 ('5,09')" },
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char p[256], err[320];
+        hx_log_t log;
+        tmp_path(p, sizeof p, ".csv");
+        write_text(p, cases[i].text);
+        assert_int_not_equal(hx_log_load(&log, p, HX_FMT_AUTO, 100.0, err, sizeof err), 0);
+        if (strstr(err, cases[i].where) == NULL || strstr(err, "decimal point") == NULL ||
+            strstr(err, "--from") != NULL) {
+            fail_msg("case %zu: %s", i, err);
+        }
+        hx_log_free(&log);
+        unlink(p);
+    }
+}
+
 /* A header that detection takes for one format but that lacks a column:
  * the error names the detected format and --from; with --from given it
  * does not. */
@@ -2078,6 +2113,7 @@ int main(void)
         cmocka_unit_test(test_short_rows_warned),
         cmocka_unit_test(test_range_in_si_units),
         cmocka_unit_test(test_detect_variants),
+        cmocka_unit_test(test_decimal_comma),
         cmocka_unit_test(test_detect_wrong_hint),
         cmocka_unit_test(test_gz_truncated),
         cmocka_unit_test(test_stamp_rate),
