@@ -237,6 +237,88 @@ static int parse_num(const char *s, double *out)
     return 0;
 }
 
+/* Whether a field is a number written with a decimal comma ("-0,5",
+ * "9,81e+00"), as a European-locale spreadsheet exports it: an error whose
+ * message then says so. */
+static int decimal_comma(const char *s)
+{
+    int lead = 0, frac = 0;
+    if (*s == '+' || *s == '-') {
+        s++;
+    }
+    while (isdigit((unsigned char)*s)) {
+        s++;
+        lead++;
+    }
+    if (lead == 0 || *s++ != ',') {
+        return 0;
+    }
+    while (isdigit((unsigned char)*s)) {
+        s++;
+        frac++;
+    }
+    if (frac > 0 && (*s == 'e' || *s == 'E')) {
+        s++;
+        if (*s == '+' || *s == '-') {
+            s++;
+        }
+        if (!isdigit((unsigned char)*s)) {
+            return 0;
+        }
+        while (isdigit((unsigned char)*s)) {
+            s++;
+        }
+    }
+    return frac > 0 && *s == '\0';
+}
+
+#define DECIMAL_COMMA_FIX "footnav reads numbers with a decimal point; export the log without the locale's decimal comma"
+#define DECIMAL_COMMA_HINT " (a decimal comma: " DECIMAL_COMMA_FIX ")"
+
+/* "not a number", and why when the field has a decimal comma */
+static const char *not_a_number(const char *field)
+{
+    return decimal_comma(field) ? "not a number" DECIMAL_COMMA_HINT : "not a number";
+}
+
+/* Whether a line is numbers separated by semicolons, tabs or blanks, at
+ * least one with a decimal comma and the others whole (a headerless
+ * European-locale export: "0,19;-0,42;9,86;..."); first: its first field
+ * with a decimal comma. */
+static int decimal_comma_line(const char *line, char *first, size_t size)
+{
+    int commas = 0;
+    const char *p = line;
+    first[0] = '\0';
+    for (;;) {
+        char tok[64];
+        size_t k = 0;
+        while (*p == ';' || *p == '\t' || *p == ' ' || *p == '\r' || *p == '\n') {
+            p++;
+        }
+        if (*p == '\0') {
+            return commas > 0;
+        }
+        while (*p != '\0' && *p != ';' && *p != '\t' && *p != ' ' && *p != '\r' && *p != '\n') {
+            if (k + 1 >= sizeof tok) {
+                return 0;
+            }
+            tok[k++] = *p++;
+        }
+        tok[k] = '\0';
+        if (decimal_comma(tok)) {
+            if (commas++ == 0) {
+                copy_str(first, size, tok);
+            }
+        } else {
+            const char *d = tok[0] == '-' || tok[0] == '+' ? tok + 1 : tok;
+            if (*d == '\0' || strspn(d, "0123456789") != strlen(d)) {
+                return 0; /* neither a decimal comma nor a whole number */
+            }
+        }
+    }
+}
+
 /* Seconds as text to integer ns, exactly for plain decimals. */
 static int parse_time_ns(const char *s, int64_t *out)
 {
@@ -393,6 +475,43 @@ static void squeeze_line(const char *text, char *out, size_t size)
     out[k] = '\0';
 }
 
+/* The first line of text in out as squeeze_line makes it, but for a line
+ * without commas, tabs or semicolons, whose runs of blanks separate its
+ * names (numpy's savetxt with its default delimiter, "t ax ay ..."): each
+ * run becomes a tab. */
+static int blank_separated(const char *text)
+{
+    while (*text != '\0' && *text != '\n' && *text != ',' && *text != '\t' && *text != ';') {
+        text++;
+    }
+    return *text == '\0' || *text == '\n';
+}
+
+static void squeeze_header(const char *text, char *out, size_t size)
+{
+    size_t k = 0;
+    if (!blank_separated(text)) {
+        squeeze_line(text, out, size);
+        return;
+    }
+    for (; *text != '\0' && *text != '\n' && k + 1 < size; text++) {
+        if (*text == ' ') {
+            if (k > 0 && out[k - 1] != '\t') {
+                out[k++] = '\t';
+            }
+            continue;
+        }
+        if (*text == '"' || *text == '\'' || *text == '\r') {
+            continue;
+        }
+        out[k++] = (char)tolower((unsigned char)*text);
+    }
+    while (k > 0 && out[k - 1] == '\t') {
+        k--;
+    }
+    out[k] = '\0';
+}
+
 /* Whether the squeezed header line holds the field name (separated by
  * commas, tabs or semicolons). */
 static int has_field(const char *head, const char *name)
@@ -488,6 +607,20 @@ static int full_interchange_header(const char *head)
     return 1;
 }
 
+/* Whether a comment line (text after its '#') is the interchange header,
+ * as numpy's savetxt writes it: "# t,ax,..." (the name t is enough), or
+ * blank-separated "# t ax ay az gx gy gz" (all seven, so that a note such
+ * as "# t is in seconds" is not taken for one). */
+static int comment_header(const char *text)
+{
+    char head[600];
+    squeeze_header(text, head, sizeof head);
+    if (blank_separated(text)) {
+        return full_interchange_header(head);
+    }
+    return has_field(head, "t");
+}
+
 static hx_format_t detect(const unsigned char *b, size_t n)
 {
     char text[600], head[600];
@@ -519,8 +652,7 @@ static hx_format_t detect(const unsigned char *b, size_t n)
             }
             /* a commented header ("# t,ax,...", numpy's savetxt) is the
              * plain format's; other comment lines are skipped */
-            squeeze_line(h + 1, head, sizeof head);
-            if (has_field(head, "t")) {
+            if (comment_header(h + 1)) {
                 return HX_FMT_CSV;
             }
             h = strchr(h, '\n');
@@ -533,6 +665,7 @@ static hx_format_t detect(const unsigned char *b, size_t n)
         if (strncmp(head, "acquisitionfrequency", 20) == 0) {
             return HX_FMT_IPOL;
         }
+        squeeze_header(text, head, sizeof head);
         if (full_interchange_header(head)) {
             /* every column of the interchange format: ours, even if it
              * also carries a foreign format's names (a converted log that
@@ -623,8 +756,8 @@ static int all_numeric(char **f, int n)
 
 static int setup_header(hx_reader_t *r, const char *const names[8], int time_required)
 {
-    char *f[HX_MAX_COLS];
-    int n, i, rc, total;
+    char *f[HX_MAX_COLS], dc_first[64];
+    int n, i, rc, total, dc_line;
     static const char *const what[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
     for (;;) {
         rc = read_line(r);
@@ -640,10 +773,8 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
         if (r->meta.format == HX_FMT_CSV && comment(r->line)) {
             /* "# t,ax,...": the header behind the comment sign; any other
              * comment line before the header is skipped */
-            char head[600];
             char *h = strchr(r->line, '#') + 1;
-            squeeze_line(h, head, sizeof head);
-            if (!has_field(head, "t")) {
+            if (!comment_header(h)) {
                 continue;
             }
             while (*h == ' ' || *h == '\t') {
@@ -657,15 +788,17 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
         /* the interchange format and the comma-separated foreign ones: a
          * spreadsheet's tab- or semicolon-separated export is read the same
          * way (detection accepts those separators too); the tab-separated
-         * ipol file also with commas, semicolons or blanks (its names have
-         * no spaces) */
+         * ipol file also with commas, semicolons or blanks; and any of them
+         * with blanks alone, whose runs then separate the names (numpy's
+         * savetxt with its default delimiter; a name with a blank in it,
+         * as the ngimu's "Time (s)", is then not found) */
         if (strchr(r->line, ',') != NULL) {
             r->delim = ',';
         } else if (strchr(r->line, '\t') != NULL) {
             r->delim = '\t';
         } else if (strchr(r->line, ';') != NULL) {
             r->delim = ';';
-        } else if (r->meta.format == HX_FMT_IPOL) {
+        } else {
             r->delim = ' ';
         }
     }
@@ -677,6 +810,7 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
             total += *q == r->delim;
         }
     }
+    dc_line = decimal_comma_line(r->line, dc_first, sizeof dc_first);
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     r->hdr_fields = r->delim == ' ' || total > HX_MAX_COLS ? n : total;
     r->ncols_needed = 0;
@@ -691,6 +825,11 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
                  * 2026-11-29) */
                 set_err(r, "%s:%ld: header has %d columns; only the first %d are read, and '%s' is not among them",
                         r->path, r->stats.lines, total, HX_MAX_COLS, names[i]);
+            } else if (dc_line) {
+                /* no header problem: no hint about the format's detection */
+                r->missing_col = -1;
+                set_err(r, "%s:%ld: the first line is numbers with a decimal comma ('%s'): " DECIMAL_COMMA_FIX,
+                        r->path, r->stats.lines, dc_first);
             } else if (all_numeric(f, n)) {
                 set_err(r, "%s:%ld: the first line is data, not a header: a %s log starts with its header (%s)",
                         r->path, r->stats.lines, hx_format_name(r->meta.format),
@@ -1092,7 +1231,7 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
             int prc = parse_num(f[col], &v[c * 3 + i]);
             if (prc != 0) {
                 set_err(r, "%s:%ld: column %d ('%.20s') is %s", r->path, r->stats.lines, col + 1, f[col],
-                        prc == -2 ? "NaN or Inf" : "not a number");
+                        prc == -2 ? "NaN or Inf" : not_a_number(f[col]));
                 return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
             }
             /* what the core would refuse (and float would make Inf) is a
@@ -1111,7 +1250,7 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         int prc = parse_num(f[r->col_temp], &tc);
         if (prc != 0) {
             set_err(r, "%s:%ld: temperature ('%.20s') is %s", r->path, r->stats.lines, f[r->col_temp],
-                    prc == -2 ? "NaN or Inf" : "not a number");
+                    prc == -2 ? "NaN or Inf" : not_a_number(f[r->col_temp]));
             return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
         }
         if (fabs(tc) > FNAV_INPUT_MAX_ABS) {
@@ -1132,7 +1271,7 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
                     prc == -2   ? "NaN or Inf"
                     : prc == -3 ? "beyond 9e9 s (the time column is in seconds; Unix time in milliseconds or "
                                   "nanoseconds must be divided by 1e3 or 1e9)"
-                                : "not a number");
+                                : not_a_number(f[r->col_t]));
             return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
         }
         s->seq = (uint32_t)r->index;
@@ -1148,8 +1287,8 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         break;
     case TIME_COUNTER:
         if (parse_num(f[r->col_t], &tv) != 0 || tv < 0.0 || tv > 4.0e9) {
-            set_err(r, "%s:%ld: counter ('%.20s') is not a non-negative number", r->path, r->stats.lines,
-                    f[r->col_t]);
+            set_err(r, "%s:%ld: counter ('%.20s') is not a non-negative number%s", r->path, r->stats.lines,
+                    f[r->col_t], decimal_comma(f[r->col_t]) ? DECIMAL_COMMA_HINT : "");
             return FNAV_E_FORMAT;
         }
         if (r->meta.format == HX_FMT_IPOL && tv < 65536.0) {

@@ -1472,7 +1472,18 @@ static void test_detect_variants(void **state)
           "0,0.5,0.2,9.8,0.1,0.2,0.3\n0.01,0.5,0.2,9.8,0.1,0.2,0.3\n",
           HX_FMT_CSV, 0.5, 0.3 },
         { "t,ax,ay,az,gx,gy,gz,acc_x_g,gyro_x_dps\n0,0.5,0.2,9.8,0.1,0.2,0.3,9,9\n0.01,0.5,0.2,9.8,0.1,0.2,0.3,9,9\n",
+          HX_FMT_CSV, 0.5, 0.3 },        /* blank-separated: numpy's savetxt with its default delimiter
+         * (header "# t ax ..."), a header padded with runs of blanks, and a
+         * foreign format whose names hold no blank (until 2026-11-30:
+         * "FILE:2: header has no column 't'" and "FILE:1: ...") */
+        { "# t ax ay az gx gy gz\n0.000000000000000000e+00 5.000000000000000000e-01 2.0e-01 9.8e+00 1.0e-01 2.0e-01 "
+          "3.000000000000000000e-01\n1.0e-02 5.0e-01 2.0e-01 9.8e+00 1.0e-01 2.0e-01 3.0e-01\n",
           HX_FMT_CSV, 0.5, 0.3 },
+        { "t    ax    ay    az    gx    gy    gz\r\n0    0.5   0.2   9.8   0.1   0.2   0.3\r\n"
+          "0.01 0.5   0.2   9.8   0.1   0.2   0.3\r\n",
+          HX_FMT_CSV, 0.5, 0.3 },
+        { "gyro_x_dps  gyro_y_dps  gyro_z_dps  acc_x_g  acc_y_g  acc_z_g\n1 2 3 0.5 0 -1\n1 2 3 0.5 0 -1\n",
+          HX_FMT_ADIS, 0.5 * 9.80665, 3.0 * 0.017453292519943295 },
     };
     size_t i;
     (void)state;
@@ -1488,6 +1499,41 @@ static void test_detect_variants(void **state)
         assert_int_equal(log.n, 2);
         FNAV_ASSERT_CLOSE(log.acc[0][0], cases[i].ax, 1e-6, 1e-6);
         FNAV_ASSERT_CLOSE(log.gyr[0][2], cases[i].gz, 1e-7, 1e-6);
+        hx_log_free(&log);
+        unlink(p);
+    }
+}
+
+/* Numbers with a decimal comma (a European-locale export): an error that
+ * says so, at the line, in every reader (it said "column 2 ('0,5') is not a
+ * number", and of the headerless OpenShoe file "header has no column 't'",
+ * until 2026-11-30). */
+static void test_decimal_comma(void **state)
+{
+    static const struct {
+        const char *text, *where;
+    } cases[] = {
+        { "t;ax;ay;az;gx;gy;gz\n0;0,5;0,2;9,8;0,1;0,2;0,3\n", ":2: column 2 ('0,5')" },
+        { "t;ax;ay;az;gx;gy;gz\n0,01;0.5;0.2;9.8;0.1;0.2;0.3\n", ":2: time ('0,01')" },
+        { "0,19594386;-0,42454505;9,86250782;-0,00349064;-0,01745320;-0,02443448\n"
+          "0,19594386;-0,42454505;9,86250782;-0,00349064;-0,01745320;-0,02443448\n",
+          ":1: the first line is numbers with a decimal comma ('0,19594386')" },
+        { "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+          "0\t5,09\t0,40\t8,92\t-0,002\t0,008\t-0,017\n",
+          ":3: column 2 ('5,09')" },
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char p[256], err[320];
+        hx_log_t log;
+        tmp_path(p, sizeof p, ".csv");
+        write_text(p, cases[i].text);
+        assert_int_not_equal(hx_log_load(&log, p, HX_FMT_AUTO, 100.0, err, sizeof err), 0);
+        if (strstr(err, cases[i].where) == NULL || strstr(err, "decimal point") == NULL ||
+            strstr(err, "--from") != NULL) {
+            fail_msg("case %zu: %s", i, err);
+        }
         hx_log_free(&log);
         unlink(p);
     }
@@ -2067,6 +2113,7 @@ int main(void)
         cmocka_unit_test(test_short_rows_warned),
         cmocka_unit_test(test_range_in_si_units),
         cmocka_unit_test(test_detect_variants),
+        cmocka_unit_test(test_decimal_comma),
         cmocka_unit_test(test_detect_wrong_hint),
         cmocka_unit_test(test_gz_truncated),
         cmocka_unit_test(test_stamp_rate),
