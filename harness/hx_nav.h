@@ -264,6 +264,22 @@ typedef struct {
  *  motion time or more (the summary's note, the JSON's `motion_gaps.unreliable`). */
 int hx_nav_gappy(const hx_nav_summary_t *s);
 
+/** Time stamps coarser than the sampling: float32 seconds far from 0 (at
+ *  1e5 s they step by 2^-7 s = 7.8 ms) or a millisecond clock above 1 kHz
+ *  repeat a stamp for many samples. The navigator integrates no repeated
+ *  sample (dt = 0) and its detector reads the rate from the stamps, so the
+ *  walk is navigated on a fraction of its samples: openshoe_gx2 walk 2 with
+ *  float32 stamps at 1e5 s (49 % repeated) halves its ZUPT share, the 820 Hz
+ *  walk (84 %) cuts it from 39 % to 7 % and doubles its closure, exit 0
+ *  without a word until 2026-11-30 (the generality review). When the
+ *  repeated samples reach this share of the log, the summary notes it and
+ *  names the remedy; the xio logger repeats 1.2 % (205 and 252 samples). */
+#define HX_NAV_DUP_FRACTION 0.10
+
+/** True when the samples that repeat the time stamp before them reach
+ *  HX_NAV_DUP_FRACTION of the samples (the summary's note). */
+int hx_nav_coarse_stamps(const fnav_nav_stats_t *st);
+
 /** A stand between strides longer than this is noted in the summary when
  *  the ZARU is off and there are two strides or more: with ZUPTs only the heading drifts with the gyro bias
  *  while the foot stands (docs/navigation.md, "Zero-velocity update"). */
