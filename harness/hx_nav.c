@@ -1527,6 +1527,39 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
             }
         }
     }
+    {
+        /* the median gait cycle, from one onset of the foot's motion to the
+         * next (the detector's stance flag, over every frame: a compressed
+         * time axis shows before the alignment too), counting a motion that
+         * lasts HX_NAV_CYCLE_MOTION_S or more: the strides would not do,
+         * since a swing compressed below min_swing_s makes none */
+        double *iv = (double *)malloc((t->n / 2u + 1u) * sizeof *iv);
+        size_t k = 0, run0 = 0;
+        int64_t onset = 0;
+        int have = 0, moving = 0;
+        for (i = 0; iv != NULL && i <= t->n; i++) {
+            const int still = i == t->n || (t->f[i].flags & FNAV_FRAME_STANCE) != 0u;
+            if (!still && !moving) {
+                moving = 1;
+                run0 = i;
+            } else if (still && moving) {
+                moving = 0;
+                if (1e-9 * (double)(t->f[i - 1u].t_ns - t->f[run0].t_ns) >= HX_NAV_CYCLE_MOTION_S) {
+                    if (have && k < t->n / 2u + 1u) {
+                        iv[k++] = 1e-9 * (double)(t->f[run0].t_ns - onset);
+                    }
+                    onset = t->f[run0].t_ns;
+                    have = 1;
+                }
+            }
+        }
+        if (k >= HX_NAV_STRIDE_MIN_N) {
+            qsort(iv, k, sizeof *iv, hx_cmp_double);
+            s->median_stride_s = k % 2u ? iv[k / 2u] : 0.5 * (iv[k / 2u - 1u] + iv[k / 2u]);
+            s->stride_intervals = (long)k;
+        }
+        free(iv);
+    }
     if (first >= t->n) {
         /* never aligned: no position, so no return-to-start figure (null in
          * the JSON, as other figures that cannot be computed) */
@@ -1702,6 +1735,11 @@ int hx_nav_gappy(const hx_nav_summary_t *s)
     return s->motion_s > 0.0 && s->gap_lost_s >= HX_NAV_GAP_LOST_FRACTION * s->motion_s;
 }
 
+int hx_nav_strides_too_short(const hx_nav_summary_t *s)
+{
+    return s->stride_intervals >= HX_NAV_STRIDE_MIN_N && s->median_stride_s < HX_NAV_STRIDE_MIN_S;
+}
+
 int hx_nav_coarse_stamps(const fnav_nav_stats_t *st)
 {
     return st->samples > 1u && (double)st->duplicates >= HX_NAV_DUP_FRACTION * (double)st->samples;
@@ -1819,6 +1857,13 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                    "detector's %.1f Hz (taken once, from the first intervals): its window and durations are wrong in "
                    "seconds there; split the log or resample it (--rate HZ) (docs/navigation.md, \"Timing\")\n",
                 s->rate_change_hz, s->rate_change_at_s, 100.0 * s->rate_off_fraction, t->rate_hz);
+    }
+    if (hx_nav_strides_too_short(s)) {
+        fprintf(f, "note              the gait cycles last %.2f s (median of %ld, from one motion of the foot to the "
+                   "next), %.0f steps/min: faster than any foot (a sprint is about 280); the time axis is compressed: "
+                   "is the rate right? (%.1f Hz, above; a log without time stamps has an assumed one: give the rate "
+                   "with --input-rate HZ)\n",
+                s->median_stride_s, s->stride_intervals, 120.0 / s->median_stride_s, t->rate_hz);
     }
     if (hx_nav_coarse_stamps(st)) {
         fprintf(f, "note              %.1f %% of the samples repeat the time stamp before them (dt = 0; longest "

@@ -738,6 +738,20 @@ grep -q "look like milliseconds" "$T/err" && fail "repeated stamps at 16 Hz told
 expect_exit 0 "the bundled walk (205 duplicates of 16539)" "$H" replay vectors/walk.bin
 grep -q "repeat the time stamp" "$T/out" && fail "1.2 % duplicates (the xio logger's) noted as coarse stamps" ||
     pass "a few duplicates are no coarse stamps"
+grep -q "cycles last" "$T/out" && fail "the bundled walk's gait cycles called too short" ||
+    pass "the bundled walk's gait cycles are plausible"
+# a log without time stamps gets a rate it cannot check: six bare numbers a line are the OpenShoe 820 Hz file
+# (assumed 820 Hz, a warning): a 250 Hz walk in that form navigated 5 m of 77 with strides of 0.34 s, a 200 Hz
+# one made no stride at all, exit 0, only the assumption warned (the generality review, 2026-11-30); the gait
+# cycles no foot makes (0.27 s: 450 steps/min) are named, with --input-rate
+"$H" sim --motion walk --duration 30 --rate 200 --out "$T/bare_w.csv" >/dev/null 2>&1
+awk -F, 'NR > 1 { print $2 "," $3 "," $4 "," $5 "," $6 "," $7 }' "$T/bare_w.csv" > "$T/bare6.txt"
+expect_exit 0 "a 200 Hz walk as six bare columns (820 Hz assumed)" "$H" replay "$T/bare6.txt"
+expect_out_re "^note +the gait cycles last 0\.[0-9]+ s \(median of [0-9]+" "gait cycles too short for a foot named"
+expect_out "give the rate with --input-rate HZ" "the remedy for a wrong rate named"
+expect_exit 0 "the same walk with --input-rate 200" "$H" replay "$T/bare6.txt" --input-rate 200
+grep -q "cycles last" "$T/out" && fail "gait cycles at the right rate called too short" ||
+    pass "no gait-cycle note at the right rate"
 
 # Rows of the Markdown tables in FILE... whose cell count differs from their
 # header's (an unescaped | in a header or a note breaks a table), as FILE:LINE.
