@@ -12,6 +12,8 @@ to a scratch directory and replayed (`bin/harness replay --json -`):
   against the accelerometer); the accelerometer's sign reversed (a sensor
   that reports gravity instead of the specific force: a mirror image);
 - units: accelerometer in g and mg, gyro in deg/s, time in ms and us;
+- sensor errors: a gyro bias of 2 deg/s, an accelerometer bias of 0.5
+  m/s^2 (both constant, as a turn-on bias), a gyro scale error of +2 %;
 - time: Unix seconds (1.7e9 s, printed to the microsecond); stamps rounded
   as float32 seconds at 1e4, 1e5 and 1e6 s; stamps jittered by +-30 % of
   the period; 10 % of the samples dropped at random; --rate 100 and 50;
@@ -81,6 +83,9 @@ OTHERS = [('z reversed (left-handed)', turn(np.diag([1.0, 1.0, -1.0])), '%.9g'),
           ('accel in g', scale([1, 2, 3], 1 / 9.80665), '%.9g'),
           ('accel in mg', scale([1, 2, 3], 1 / 0.00980665), '%.9g'),
           ('gyro in deg/s', scale([4, 5, 6], 180 / np.pi), '%.9g'),
+          ('gyro bias 2 deg/s (x, -0.7 y, 0.5 z)', lambda d: d.__setitem__((slice(None), slice(4, 7)), d[:, 4:7] + np.radians(2.0) * np.array([1, -0.7, 0.5])), '%.9g'),
+          ('accelerometer bias 0.5 m/s^2 (x, -0.7 y, 0.5 z)', lambda d: d.__setitem__((slice(None), slice(1, 4)), d[:, 1:4] + 0.5 * np.array([1, -0.7, 0.5])), '%.9g'),
+          ('gyro scale +2 %', scale([4, 5, 6], 1.02), '%.9g'),
           ('time in ms', scale([0], 1e3), '%.17g'),
           ('time in us', scale([0], 1e6), '%.17g'),
           ('Unix time 1.7e9 s', lambda d: d.__setitem__((slice(None), 0), d[:, 0] + 1.7e9), '%.6f'),
