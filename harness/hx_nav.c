@@ -897,6 +897,7 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 #define HX_GRAVITY_TOL ((double)FNAV_ALIGN_GRAVITY_TOL) /* |f| at rest within 25 % of gravity (the core's alignment refuses more) */
 #define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
 #define HX_RATE_MIN_HZ 20.0    /* below this, no stance lasts more than a few samples */
+#define HX_ACCEL_MEAN_MAX_G 10.0 /* a foot's mean |f| over a log, in g, stays far below (walking about 1.1, running 2) */
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz, char *msg,
                      size_t msg_size)
 {
@@ -921,7 +922,10 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
         HX_UNITS_ADD("the accelerometer reads |f| = %.4g at rest, where gravity is %.4g m/s^2: the log is not in "
                      "m/s^2%s",
                      f_rest_mps2, g,
-                     fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL ? " but in g (multiply by 9.80665)" : "");
+                     fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL
+                         ? " but in g (multiply by 9.80665)"
+                         : fabs(f_rest_mps2 * 0.00980665 / g - 1.0) < HX_GRAVITY_TOL ? " but in mg (multiply by 0.00980665)"
+                                                                                     : "");
     }
     if (gyro_max_rps > HX_GYRO_MAX_RPS) {
         HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis (its largest |w| on a single axis), beyond the "
@@ -976,8 +980,9 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
 static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean,
                        double in_rate_hz, char *err, size_t err_size)
 {
-    char msg[768], acc[320] = "";
+    char msg[768], acc[320] = "", rep[320] = "";
     const double g = (double)nav->cfg.gravity_mps2;
+    double rate;
     /* |f| at rest: the alignment's, or that of a still period it refused
      * for being off gravity (FNAV_ALIGN_GRAVITY_TOL) */
     const double fn = nav->aligned ? (double)fnav_vec3_norm(nav->align.result.accel_mean_mps2)
@@ -998,8 +1003,39 @@ static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_
                  "the log is probably in g (multiply by 9.80665)",
                  f_norm_mean, g);
     }
-    bad = hx_units_problem(fn, g, gyro_max_rps, in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz, msg,
-                           sizeof msg);
+    if (!nav->aligned && fn == 0.0 && f_norm_mean > HX_ACCEL_MEAN_MAX_G * g) {
+        /* no rest found, and a mean |f| no foot reaches: mg, cm/s^2 or raw
+         * counts, whose noise also hides every still period (it said only
+         * "no still period": the generality review, 2026-11-30) */
+        const double in_g = f_norm_mean * 0.00980665 / g;
+        snprintf(acc, sizeof acc,
+                 "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 on a foot averages a few "
+                 "times %.4g at most: the log is not in m/s^2: %s",
+                 f_norm_mean, g,
+                 in_g > 0.75 && in_g < HX_ACCEL_MEAN_MAX_G ? "in mg? (multiply by 0.00980665)"
+                                                          : "raw counts? (scale them by the sensor's sensitivity)");
+    }
+    rate = in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz;
+    if (hx_nav_coarse_stamps(&nav->stats) && rate > 0.0 && rate < HX_RATE_MIN_HZ) {
+        /* a low rate from stamps that repeat is no unit (float32 seconds
+         * at 1e6 s step by 62.5 ms: "16 Hz", whose remedy read "divide by
+         * 1000"; the generality review, 2026-11-30) */
+        snprintf(rep, sizeof rep,
+                 "%.1f %% of the samples repeat the time stamp before them, which advance by %.4g s: %.3g Hz from "
+                 "the stamps, too coarse for the sampling (float32 seconds far from 0?): write the stamps with more "
+                 "digits, or leave the time column out and give the rate with --input-rate HZ (docs/log-format.md, "
+                 "\"CSV interchange\")",
+                 100.0 * (double)nav->stats.duplicates / (double)nav->stats.samples, 1.0 / rate, rate);
+        rate = 0.0;
+    }
+    bad = hx_units_problem(fn, g, gyro_max_rps, rate, msg, sizeof msg);
+    if (rep[0] != '\0') {
+        size_t len = strlen(msg);
+        if (len < sizeof msg) {
+            snprintf(msg + len, sizeof msg - len, "%s%s", bad ? "; also " : "", rep);
+        }
+        bad = 1;
+    }
     if (acc[0] != '\0') {
         snprintf(err, err_size, "%s: %s%s%s", path, acc, bad ? "; also " : " (docs/log-format.md)", bad ? msg : "");
         return 2;
@@ -1491,6 +1527,39 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
             }
         }
     }
+    {
+        /* the median gait cycle, from one onset of the foot's motion to the
+         * next (the detector's stance flag, over every frame: a compressed
+         * time axis shows before the alignment too), counting a motion that
+         * lasts HX_NAV_CYCLE_MOTION_S or more: the strides would not do,
+         * since a swing compressed below min_swing_s makes none */
+        double *iv = (double *)malloc((t->n / 2u + 1u) * sizeof *iv);
+        size_t k = 0, run0 = 0;
+        int64_t onset = 0;
+        int have = 0, moving = 0;
+        for (i = 0; iv != NULL && i <= t->n; i++) {
+            const int still = i == t->n || (t->f[i].flags & FNAV_FRAME_STANCE) != 0u;
+            if (!still && !moving) {
+                moving = 1;
+                run0 = i;
+            } else if (still && moving) {
+                moving = 0;
+                if (1e-9 * (double)(t->f[i - 1u].t_ns - t->f[run0].t_ns) >= HX_NAV_CYCLE_MOTION_S) {
+                    if (have && k < t->n / 2u + 1u) {
+                        iv[k++] = 1e-9 * (double)(t->f[run0].t_ns - onset);
+                    }
+                    onset = t->f[run0].t_ns;
+                    have = 1;
+                }
+            }
+        }
+        if (k >= HX_NAV_STRIDE_MIN_N) {
+            qsort(iv, k, sizeof *iv, hx_cmp_double);
+            s->median_stride_s = k % 2u ? iv[k / 2u] : 0.5 * (iv[k / 2u - 1u] + iv[k / 2u]);
+            s->stride_intervals = (long)k;
+        }
+        free(iv);
+    }
     if (first >= t->n) {
         /* never aligned: no position, so no return-to-start figure (null in
          * the JSON, as other figures that cannot be computed) */
@@ -1666,6 +1735,16 @@ int hx_nav_gappy(const hx_nav_summary_t *s)
     return s->motion_s > 0.0 && s->gap_lost_s >= HX_NAV_GAP_LOST_FRACTION * s->motion_s;
 }
 
+int hx_nav_strides_too_short(const hx_nav_summary_t *s)
+{
+    return s->stride_intervals >= HX_NAV_STRIDE_MIN_N && s->median_stride_s < HX_NAV_STRIDE_MIN_S;
+}
+
+int hx_nav_coarse_stamps(const fnav_nav_stats_t *st)
+{
+    return st->samples > 1u && (double)st->duplicates >= HX_NAV_DUP_FRACTION * (double)st->samples;
+}
+
 int hx_nav_little_motion(const hx_nav_summary_t *s)
 {
     return s->duration_s > 10.0 && s->stance_fraction > 0.9 && s->strides < 3;
@@ -1778,6 +1857,22 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                    "detector's %.1f Hz (taken once, from the first intervals): its window and durations are wrong in "
                    "seconds there; split the log or resample it (--rate HZ) (docs/navigation.md, \"Timing\")\n",
                 s->rate_change_hz, s->rate_change_at_s, 100.0 * s->rate_off_fraction, t->rate_hz);
+    }
+    if (hx_nav_strides_too_short(s)) {
+        fprintf(f, "note              the gait cycles last %.2f s (median of %ld, from one motion of the foot to the "
+                   "next), %.0f steps/min: faster than any foot (a sprint is about 280); the time axis is compressed: "
+                   "is the rate right? (%.1f Hz, above; a log without time stamps has an assumed one: give the rate "
+                   "with --input-rate HZ)\n",
+                s->median_stride_s, s->stride_intervals, 120.0 / s->median_stride_s, t->rate_hz);
+    }
+    if (hx_nav_coarse_stamps(st)) {
+        fprintf(f, "note              %.1f %% of the samples repeat the time stamp before them (dt = 0; longest "
+                   "interval %.1f ms): the stamps are coarser than the sampling (float32 seconds far from 0? a "
+                   "millisecond clock above 1 kHz?); a repeated sample is not integrated and the detector's rate "
+                   "comes from the stamps, so position and heading are unreliable: write the stamps with more "
+                   "digits, or leave the time column out and give the rate with --input-rate HZ (docs/log-format.md, "
+                   "\"CSV interchange\")\n",
+                100.0 * (double)st->duplicates / (double)st->samples, 1e3 * (double)st->max_gap_seen_s);
     }
     if (hx_nav_gappy(s)) {
         fprintf(f, "note              %.1f %% of the time in motion is lost in %ld gap%s longer than %.0f ms (longest "

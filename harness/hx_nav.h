@@ -235,6 +235,8 @@ typedef struct {
     double before_align_s;    /**< frames before it the detector called motion (not navigated), s */
     double longest_stand_s;   /**< longest stance between two motions after the alignment, s (0: none) */
     double longest_stand_at_s; /**< its start, s after the first frame (NaN: none) */
+    double median_stride_s;   /**< median gait cycle, one motion onset of the foot to the next, s (0: fewer than HX_NAV_STRIDE_MIN_N cycles) */
+    long stride_intervals;    /**< the cycles that median is of */
     double rate_change_at_s;  /**< first block of intervals whose rate is off the detector's (hx_rate_changes), s after the first frame (NaN: none) */
     double rate_change_hz;    /**< that block's rate, Hz (NaN: none) */
     double rate_off_fraction; /**< share of the log's duration in such blocks (0: none) */
@@ -263,6 +265,38 @@ typedef struct {
 /** True when the long gaps in motion lose HX_NAV_GAP_LOST_FRACTION of the
  *  motion time or more (the summary's note, the JSON's `motion_gaps.unreliable`). */
 int hx_nav_gappy(const hx_nav_summary_t *s);
+
+/** Time stamps coarser than the sampling: float32 seconds far from 0 (at
+ *  1e5 s they step by 2^-7 s = 7.8 ms) or a millisecond clock above 1 kHz
+ *  repeat a stamp for many samples. The navigator integrates no repeated
+ *  sample (dt = 0) and its detector reads the rate from the stamps, so the
+ *  walk is navigated on a fraction of its samples: openshoe_gx2 walk 2 with
+ *  float32 stamps at 1e5 s (49 % repeated) halves its ZUPT share, the 820 Hz
+ *  walk (84 %) cuts it from 39 % to 7 % and doubles its closure, exit 0
+ *  without a word until 2026-11-30 (the generality review). When the
+ *  repeated samples reach this share of the log, the summary notes it and
+ *  names the remedy; the xio logger repeats 1.2 % (205 and 252 samples). */
+#define HX_NAV_DUP_FRACTION 0.10
+
+/** Gait cycles no foot makes: a median cycle (from one onset of the foot's
+ *  motion, the detector's stance flag, to the next, counting a motion of
+ *  HX_NAV_CYCLE_MOTION_S or more) below HX_NAV_STRIDE_MIN_S, a cadence
+ *  above 300 steps/min (a sprinter reaches about 280), says the time axis
+ *  is compressed: most often a rate assumed for a log without time stamps
+ *  (the OpenShoe 820 Hz reader takes six bare numbers a line at 820 Hz: a
+ *  250 Hz walk in that form navigates 5 m of 77, a 200 Hz one makes no
+ *  stride at all, exit 0, until 2026-11-30). Judged on HX_NAV_STRIDE_MIN_N
+ *  cycles or more (the generality review). */
+#define HX_NAV_STRIDE_MIN_S 0.40
+#define HX_NAV_STRIDE_MIN_N 8
+#define HX_NAV_CYCLE_MOTION_S 0.05
+
+/** True when the gait cycles are too short for a foot (the summary's note). */
+int hx_nav_strides_too_short(const hx_nav_summary_t *s);
+
+/** True when the samples that repeat the time stamp before them reach
+ *  HX_NAV_DUP_FRACTION of the samples (the summary's note). */
+int hx_nav_coarse_stamps(const fnav_nav_stats_t *st);
 
 /** A stand between strides longer than this is noted in the summary when
  *  the ZARU is off and there are two strides or more: with ZUPTs only the heading drifts with the gyro bias

@@ -709,6 +709,49 @@ expect_err "they look like milliseconds: divide by 1000; or, if they count sampl
 expect_exit 1 "time in milliseconds, again" "$H" replay "$T/in_ms.csv" --quiet
 if grep -q "count samples" "$T/err"; then fail "stamps in ms (4 ms apart) told they may count samples"; else
     pass "stamps in ms (4 ms apart) not told they may count samples"; fi
+# an accelerometer in mg (or cm/s^2, or raw counts): no still period is found (the noise is 100 times the
+# detector's), and replay said only "no still period of 0.20 s ... found", naming neither the unit nor the
+# remedy (the generality review, 2026-11-30); the mean |f| of the whole log, about 1,000, gives it away
+awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 0.00980665, $3 / 0.00980665, $4 / 0.00980665, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_mg.csv"
+expect_exit 1 "accelerometer in mg" "$H" replay "$T/in_mg.csv" --quiet
+expect_err "not in m/s^2: in mg? (multiply by 0.00980665)" "a log in mg is named as such"
+expect_exit 0 "info on a log in mg" "$H" info "$T/in_mg.csv"
+expect_out "units       NOT SI: .*not in m/s^2 but in mg (multiply by 0.00980665)" "info names mg too"
+# time stamps coarser than the sampling, as float32 seconds far from 0 give them (1e5 s, a day of a board's
+# uptime: steps of 2^-7 s = 7.8 ms at 250 Hz): half the samples repeat the stamp before them, are not
+# integrated, and the detector's rate reads 128 Hz; the walk navigated with a ZUPT share halved and exit 0
+# without a word (the generality review, 2026-11-30). The summary now says so and names the remedy
+awk -F, 'NR == 1 { print; next } { printf "%.7f,%s,%s,%s,%s,%s,%s\n", 100000 + int($1 * 128 + 0.5) / 128, $2, $3, $4, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_f32t.csv"
+expect_exit 0 "time stamps as float32 at 1e5 s" "$H" replay "$T/in_f32t.csv"
+expect_out_re "^note +[0-9.]+ % of the samples repeat the time stamp before them" "repeated stamps noted"
+expect_out "give the rate with --input-rate HZ" "the remedy for coarse stamps named"
+# at 1e6 s float32 steps by 62.5 ms: the stamps read 16 Hz, an error (exit 1) whose remedy was "they look like
+# milliseconds: divide by 1000", wrong for stamps that repeat; it names the repeated stamps instead
+awk -F, 'NR == 1 { print; next } { printf "%.7f,%s,%s,%s,%s,%s,%s\n", 1000000 + int($1 * 16 + 0.5) / 16, $2, $3, $4, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_f32t6.csv"
+expect_exit 1 "time stamps as float32 at 1e6 s" "$H" replay "$T/in_f32t6.csv" --quiet
+expect_err "of the samples repeat the time stamp before them" "16 Hz from repeated stamps: the repetition named"
+grep -q "look like milliseconds" "$T/err" && fail "repeated stamps at 16 Hz told to divide by 1000" ||
+    pass "repeated stamps at 16 Hz not told to divide by 1000"
+expect_exit 0 "the bundled walk (205 duplicates of 16539)" "$H" replay vectors/walk.bin
+grep -q "repeat the time stamp" "$T/out" && fail "1.2 % duplicates (the xio logger's) noted as coarse stamps" ||
+    pass "a few duplicates are no coarse stamps"
+grep -q "cycles last" "$T/out" && fail "the bundled walk's gait cycles called too short" ||
+    pass "the bundled walk's gait cycles are plausible"
+# a log without time stamps gets a rate it cannot check: six bare numbers a line are the OpenShoe 820 Hz file
+# (assumed 820 Hz, a warning): a 250 Hz walk in that form navigated 5 m of 77 with strides of 0.34 s, a 200 Hz
+# one made no stride at all, exit 0, only the assumption warned (the generality review, 2026-11-30); the gait
+# cycles no foot makes (0.27 s: 450 steps/min) are named, with --input-rate
+"$H" sim --motion walk --duration 30 --rate 200 --out "$T/bare_w.csv" >/dev/null 2>&1
+awk -F, 'NR > 1 { print $2 "," $3 "," $4 "," $5 "," $6 "," $7 }' "$T/bare_w.csv" > "$T/bare6.txt"
+expect_exit 0 "a 200 Hz walk as six bare columns (820 Hz assumed)" "$H" replay "$T/bare6.txt"
+expect_out_re "^note +the gait cycles last 0\.[0-9]+ s \(median of [0-9]+" "gait cycles too short for a foot named"
+expect_out "give the rate with --input-rate HZ" "the remedy for a wrong rate named"
+expect_exit 0 "the same walk with --input-rate 200" "$H" replay "$T/bare6.txt" --input-rate 200
+grep -q "cycles last" "$T/out" && fail "gait cycles at the right rate called too short" ||
+    pass "no gait-cycle note at the right rate"
 
 # Rows of the Markdown tables in FILE... whose cell count differs from their
 # header's (an unescaped | in a header or a note breaks a table), as FILE:LINE.
