@@ -166,5 +166,11 @@ expect_err "unknown profile 'mysensor'.*a file of that name exists: give it as .
     pass "./mysensor is read as the file" || { fail "./mysensor"; cat "$T/err"; }
 expect_exit 2 "an unknown name, no such file" "$H" replay vectors/walk.bin --quiet --profile nosuchsensor
 ! grep -q "file of that name" "$T/err" && pass "no file hint without a file" || fail "file hint for a missing file: $(cat "$T/err")"
+# the datasheet example of docs/profile-format.md ("From a datasheet") is a
+# valid, plausible profile that replay and sim take
+awk '/^### From a datasheet/ { s = 1 } s && /^```/ { n++; next } s && n == 1' docs/profile-format.md >"$T/ds.profile"
+expect_exit 0 "replay with the datasheet example profile" "$H" replay vectors/walk.bin --quiet --profile "$T/ds.profile"
+! grep -q "above any IMU's" "$T/err" && pass "the datasheet example: no units warning" || fail "datasheet example warned: $(cat "$T/err")"
+expect_exit 0 "sim with the datasheet example profile" "$H" sim --duration 5 --profile "$T/ds.profile" --out "$T/ds.bin"
 echo "profile chain: $fails failure(s)"
 [ "$fails" -eq 0 ]
