@@ -1559,6 +1559,11 @@ static void test_detect_wrong_hint(void **state)
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ":1: header has no column 't'"));
     assert_non_null(strstr(err, "no importer's header recognised, read as footnav CSV; give --from FORMAT"));
+    /* a layout no importer reads (a phone app's export): the error names
+     * the way without C, not only --from (a contributor's review, 2026-11-30) */
+    write_text(p, "timestamp_ns,acc_x,acc_y,acc_z,gyro_x,gyro_y,gyro_z\n1764500000000000000,1,2,3,4,5,6\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, "or rename the columns and convert the units: docs/log-format.md, \"Another layout\")"));
     write_text(p, "t,ax,ay,az,gx,gy\n0,1,2,3,4,5\n"); /* ours, known by its 't': no hint */
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ":1: header has no column 'gz'; expected t,ax,ay,az,gx,gy,gz[,temp]"));
