@@ -38,7 +38,7 @@ hx_format_t hx_format_from_name(const char *name)
 
 const char *hx_format_list(void)
 {
-    return "bin, csv, gx2, openshoe820, ngimu, pyshoe, ipol, adis, square2";
+    return HX_FORMAT_LIST;
 }
 
 /* How a text format gives time. */

@@ -1539,6 +1539,23 @@ static void test_decimal_comma(void **state)
     }
 }
 
+/* The names of --help and of the unknown-format error (HX_FORMAT_LIST) are
+ * exactly the formats --from takes, in order: a new importer that misses
+ * one of the two lists fails here (CONTRIBUTING.md, "Extending footnav"). */
+static void test_format_list(void **state)
+{
+    char list[256], want[256] = "";
+    int f;
+    (void)state;
+    for (f = HX_FMT_AUTO + 1; f < HX_FMT_COUNT; f++) {
+        assert_int_equal(hx_format_from_name(hx_format_name((hx_format_t)f)), f);
+        snprintf(list, sizeof list, "%s%s%s", want, want[0] != '\0' ? ", " : "", hx_format_name((hx_format_t)f));
+        snprintf(want, sizeof want, "%s", list);
+    }
+    assert_string_equal(hx_format_list(), want);
+    assert_int_equal(hx_format_from_name("nope"), HX_FMT_COUNT);
+}
+
 /* A header that detection takes for one format but that lacks a column:
  * the error names the detected format and --from; with --from given it
  * does not. */
@@ -2119,6 +2136,7 @@ int main(void)
         cmocka_unit_test(test_range_in_si_units),
         cmocka_unit_test(test_detect_variants),
         cmocka_unit_test(test_decimal_comma),
+        cmocka_unit_test(test_format_list),
         cmocka_unit_test(test_detect_wrong_hint),
         cmocka_unit_test(test_gz_truncated),
         cmocka_unit_test(test_stamp_rate),
