@@ -98,8 +98,7 @@ void hx_warn(const char *cmd, const char *fmt, ...)
 
 /** Options every command that reads a log understands. */
 #define HX_INPUT_OPTS                                                                         \
-    { "--from", "NAME", "input format (default: detected): bin, csv, gx2, openshoe820, "     \
-                        "ngimu, pyshoe, ipol, adis, square2", 0 },                            \
+    { "--from", "NAME", "input format (default: detected): " HX_FORMAT_LIST, 0 },            \
     { "--input-rate", "HZ", "sample rate of an input without time stamps", 0 }
 
 /** Check --from and --input-rate; call right after parsing so that a bad

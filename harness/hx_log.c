@@ -38,7 +38,7 @@ hx_format_t hx_format_from_name(const char *name)
 
 const char *hx_format_list(void)
 {
-    return "bin, csv, gx2, openshoe820, ngimu, pyshoe, ipol, adis, square2";
+    return HX_FORMAT_LIST;
 }
 
 /* How a text format gives time. */
@@ -1626,8 +1626,11 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
             /* given with --from, or our CSV known by its 't' column */
             snprintf(err, err_size, "%s", r->err);
         } else if (fmt == HX_FMT_CSV) {
+            /* --from alone left a layout no importer reads (a phone app's
+             * export) without a way (a contributor's review, 2026-11-30) */
             snprintf(err, err_size, "%s (no importer's header recognised, read as footnav CSV; give --from FORMAT "
-                                    "for another format)", r->err);
+                                    "for another format, or rename the columns and convert the units: "
+                                    "docs/log-format.md, \"Another layout\")", r->err);
         } else {
             snprintf(err, err_size, "%s (format %s detected from the content; give --from FORMAT if it is another)",
                      r->err, hx_format_name(fmt));

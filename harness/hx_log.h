@@ -64,7 +64,11 @@ typedef struct hx_reader hx_reader_t;
 const char *hx_format_name(hx_format_t fmt);
 /** Format from its name; HX_FMT_COUNT if unknown. */
 hx_format_t hx_format_from_name(const char *name);
-/** Comma-separated list of the format names (for --help). */
+/** The format names a user gives to --from, comma-separated: the one list
+ *  behind --help (HX_INPUT_OPTS) and the error of an unknown name; a new
+ *  importer adds its name here and in k_format_names (hx_log.c). */
+#define HX_FORMAT_LIST "bin, csv, gx2, openshoe820, ngimu, pyshoe, ipol, adis, square2"
+/** Comma-separated list of the format names (HX_FORMAT_LIST). */
 const char *hx_format_list(void);
 
 /**

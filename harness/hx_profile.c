@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define PROFILE_MAGIC "footnav-profile 1"
 
@@ -283,8 +284,15 @@ int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size
         return 0;
     }
     if (strchr(name_or_path, '/') == NULL && strchr(name_or_path, '.') == NULL) {
-        snprintf(err, err_size, "unknown profile '%s' (built-in: navchip, mtx, shimmer, generic-mems; or a profile file)",
-                 name_or_path);
+        /* a file named `mysensor` is a built-in's name by this rule: the
+         * error said only "unknown profile" beside the file (a
+         * contributor's review, 2026-11-30) */
+        struct stat st;
+        int is_file = stat(name_or_path, &st) == 0 && S_ISREG(st.st_mode);
+        snprintf(err, err_size,
+                 "unknown profile '%s' (built-in: navchip, mtx, shimmer, generic-mems; or a profile file)%s%s",
+                 name_or_path, is_file ? "; a file of that name exists: give it as ./" : "",
+                 is_file ? name_or_path : "");
         return -1;
     }
     if (hx_profile_read(name_or_path, p, err, err_size) != 0) {

@@ -14,6 +14,7 @@
 #include <cmocka.h>
 
 #include "fnav_testdata.h"
+#include "fuzz/fuzz_log_byte.h"
 #include "hx_bin.h"
 #include "hx_log.h"
 
@@ -1539,6 +1540,57 @@ static void test_decimal_comma(void **state)
     }
 }
 
+/* The names of --help and of the unknown-format error (HX_FORMAT_LIST) are
+ * exactly the formats --from takes, in order: a new importer that misses
+ * one of the two lists fails here (CONTRIBUTING.md, "Extending footnav"). */
+static void test_format_list(void **state)
+{
+    char list[256], want[256] = "";
+    int f;
+    (void)state;
+    for (f = HX_FMT_AUTO + 1; f < HX_FMT_COUNT; f++) {
+        assert_int_equal(hx_format_from_name(hx_format_name((hx_format_t)f)), f);
+        snprintf(list, sizeof list, "%s%s%s", want, want[0] != '\0' ? ", " : "", hx_format_name((hx_format_t)f));
+        snprintf(want, sizeof want, "%s", list);
+    }
+    assert_string_equal(hx_format_list(), want);
+    assert_int_equal(hx_format_from_name("nope"), HX_FMT_COUNT);
+}
+
+/* The seeds of the log-reader fuzz target run the format their names say:
+ * the target took the format as the whole first byte modulo HX_FMT_COUNT,
+ * flag bits included, so gx2_forced (0x83) ran as bin, square2_forced
+ * (0x89) as ipol and adis_synthetic_gz (0x40) as openshoe820 (a
+ * contributor's review, 2026-11-30); a new format moved them again. */
+static void test_fuzz_seed_formats(void **state)
+{
+    static const struct {
+        const char *seed, *format;
+    } k[] = {
+        { "gx2_forced", "gx2" },           { "ngimu_forced", "ngimu" },   { "openshoe820_forced", "openshoe820" },
+        { "pyshoe_forced", "pyshoe" },     { "square2_forced", "square2" }, { "bin_golden_whole", "bin" },
+        { "adis_synthetic_gz", "auto" },   { "openshoe820_tabs", "auto" }, { "openshoe820_blanks", "openshoe820" },
+        { "csv_temp", "csv" },             { "regress_gx2_huge_nr", "gx2" },
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof k / sizeof k[0]; i++) {
+        char path[128];
+        FILE *f;
+        int b;
+        snprintf(path, sizeof path, "tests/fuzz/corpus/log_reader/%s", k[i].seed);
+        f = fopen(path, "rb");
+        assert_non_null(f);
+        b = fgetc(f);
+        fclose(f);
+        assert_true(b != EOF);
+        if (fuzz_log_format((uint8_t)b) != hx_format_from_name(k[i].format)) {
+            fail_msg("%s (first byte 0x%02x) runs as %s, not %s", k[i].seed, b,
+                     hx_format_name(fuzz_log_format((uint8_t)b)), k[i].format);
+        }
+    }
+}
+
 /* A header that detection takes for one format but that lacks a column:
  * the error names the detected format and --from; with --from given it
  * does not. */
@@ -1559,6 +1611,11 @@ static void test_detect_wrong_hint(void **state)
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ":1: header has no column 't'"));
     assert_non_null(strstr(err, "no importer's header recognised, read as footnav CSV; give --from FORMAT"));
+    /* a layout no importer reads (a phone app's export): the error names
+     * the way without C, not only --from (a contributor's review, 2026-11-30) */
+    write_text(p, "timestamp_ns,acc_x,acc_y,acc_z,gyro_x,gyro_y,gyro_z\n1764500000000000000,1,2,3,4,5,6\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, "or rename the columns and convert the units: docs/log-format.md, \"Another layout\")"));
     write_text(p, "t,ax,ay,az,gx,gy\n0,1,2,3,4,5\n"); /* ours, known by its 't': no hint */
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ":1: header has no column 'gz'; expected t,ax,ay,az,gx,gy,gz[,temp]"));
@@ -2114,6 +2171,8 @@ int main(void)
         cmocka_unit_test(test_range_in_si_units),
         cmocka_unit_test(test_detect_variants),
         cmocka_unit_test(test_decimal_comma),
+        cmocka_unit_test(test_format_list),
+        cmocka_unit_test(test_fuzz_seed_formats),
         cmocka_unit_test(test_detect_wrong_hint),
         cmocka_unit_test(test_gz_truncated),
         cmocka_unit_test(test_stamp_rate),

@@ -17,18 +17,9 @@ trap 'rm -rf "$T"' EXIT
 W="$(dirname "$0")/../../vectors/walk.bin"
 
 # --- options: COMMAND DOCUMENT (--from, --input-rate and --help are the
-# conventions of docs/harness.md, shared by every command)
-while read -r cmd doc; do
-    "$H" "$cmd" --help >"$T/help" 2>&1
-    missing=""
-    for o in $(sed -n 's/^  \(--[a-z0-9-]*\).*/\1/p' "$T/help"); do
-        case "$o" in --from | --input-rate | --help) continue ;; esac
-        grep -q -e "$o\([^a-z0-9-]\|\$\)" "$DOCS/$doc" || missing="$missing $o"
-    done
-    if [ -z "$missing" ]; then pass "$cmd: every --help option is in docs/$doc"
-    else fail "$cmd: docs/$doc lacks$missing"; fi
-done <<EOF
-info harness.md
+# conventions of docs/harness.md, shared by every command). A new command
+# gets a line here (CONTRIBUTING.md, "Extending footnav").
+CMD_DOCS="info harness.md
 convert harness.md
 replay harness.md
 eval harness.md
@@ -39,12 +30,33 @@ psd psd.md
 sim simulator.md
 montecarlo simulator.md
 simgap simgap.md
-simgap-validate simgap.md
-EOF
+simgap-validate simgap.md"
+printf '%s\n' "$CMD_DOCS" | while read -r cmd doc; do
+    "$H" "$cmd" --help >"$T/help" 2>&1
+    missing=""
+    for o in $(sed -n 's/^  \(--[a-z0-9-]*\).*/\1/p' "$T/help"); do
+        case "$o" in --from | --input-rate | --help) continue ;; esac
+        grep -q -e "$o\([^a-z0-9-]\|\$\)" "$DOCS/$doc" || missing="$missing $o"
+    done
+    if [ -z "$missing" ]; then pass "$cmd: every --help option is in docs/$doc"
+    else fail "$cmd: docs/$doc lacks$missing"; fi
+done >"$T/opts"
+cat "$T/opts"
+fails=$((fails + $(grep -c '^FAIL' "$T/opts")))
+
+# --- every command `harness help` lists is in that list and in the command
+# table of docs/harness.md: a new command was checked by nothing above
+"$H" help >"$T/cmds" 2>&1
+for cmd in $(sed -n '/^commands:/,$s/^  \([a-z][a-z0-9-]*\) .*/\1/p' "$T/cmds"); do
+    if printf '%s\n' "$CMD_DOCS" | grep -q "^$cmd "; then pass "$cmd: in test_docs.sh's command list"
+    else fail "$cmd: not in test_docs.sh's command list (add '$cmd DOCUMENT' to CMD_DOCS)"; fi
+    if grep -q "^| \`$cmd[\` ]" "$DOCS/harness.md"; then pass "$cmd: in docs/harness.md's command table"
+    else fail "$cmd: not in docs/harness.md's command table"; fi
+done
 
 # --- and back: every option of a command's synopsis in docs/harness.md (the
 # first code block of its section, ## `CMD`) is in that command's --help
-for cmd in info convert replay eval stream live; do
+for cmd in $(printf '%s\n' "$CMD_DOCS" | awk '$2 == "harness.md" { print $1 }'); do
     "$H" "$cmd" --help >"$T/help" 2>&1
     awk -v h="## \`$cmd\`" '$0 == h { s = 1; next } s && /^## / { exit }
         s && /^```/ { if (b) exit; b = 1; next } s && b' "$DOCS/harness.md" >"$T/syn"

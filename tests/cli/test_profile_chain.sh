@@ -154,5 +154,23 @@ expect_err "warning: $T/hand2.profile: accel_bias_sigma_mps2 5 is 0.51 g, above 
 [ "$(grep -c "above any IMU's" "$T/err")" -eq 1 ] && pass "montecarlo: one warning for its profile" || fail "montecarlo warnings: $(grep -c "above any IMU's" "$T/err")"
 expect_exit 0 "replay with the generic profile file" "$H" replay vectors/walk.bin --quiet --profile docs/profiles/generic-mems.profile
 ! grep -q "above any IMU's" "$T/err" && pass "a plausible profile: no warning" || fail "generic-mems.profile warned: $(cat "$T/err")"
+# a profile file whose name has no '/' and no '.' is read as a built-in's
+# name: the error said only "unknown profile", though the file was there
+# (a contributor's review, 2026-11-30)
+cp docs/profiles/generic-mems.profile "$T/mysensor"
+(cd "$T" && "$H" replay "$OLDPWD/vectors/walk.bin" --quiet --profile mysensor) >"$T/out" 2>"$T/err"; st=$?
+[ $st -eq 2 ] && pass "a bare name is a built-in's name (exit 2)" || fail "bare name: exit $st, expected 2"
+expect_err "unknown profile 'mysensor'.*a file of that name exists: give it as ./mysensor" \
+    "the error names the file and how to give it"
+(cd "$T" && "$H" replay "$OLDPWD/vectors/walk.bin" --quiet --profile ./mysensor) >"$T/out" 2>"$T/err" &&
+    pass "./mysensor is read as the file" || { fail "./mysensor"; cat "$T/err"; }
+expect_exit 2 "an unknown name, no such file" "$H" replay vectors/walk.bin --quiet --profile nosuchsensor
+! grep -q "file of that name" "$T/err" && pass "no file hint without a file" || fail "file hint for a missing file: $(cat "$T/err")"
+# the datasheet example of docs/profile-format.md ("From a datasheet") is a
+# valid, plausible profile that replay and sim take
+awk '/^### From a datasheet/ { s = 1 } s && /^```/ { n++; next } s && n == 1' docs/profile-format.md >"$T/ds.profile"
+expect_exit 0 "replay with the datasheet example profile" "$H" replay vectors/walk.bin --quiet --profile "$T/ds.profile"
+! grep -q "above any IMU's" "$T/err" && pass "the datasheet example: no units warning" || fail "datasheet example warned: $(cat "$T/err")"
+expect_exit 0 "sim with the datasheet example profile" "$H" sim --duration 5 --profile "$T/ds.profile" --out "$T/ds.bin"
 echo "profile chain: $fails failure(s)"
 [ "$fails" -eq 0 ]

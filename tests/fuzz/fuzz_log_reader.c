@@ -4,6 +4,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "fuzz_log_byte.h"
 #include "fuzz_support.h"
 #include "hx_log.h"
 
@@ -18,7 +19,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (size < 1) {
         return 0;
     }
-    fmt = (hx_format_t)(data[0] % HX_FMT_COUNT);
+    fmt = fuzz_log_format(data[0]);
     whole = (data[0] & 0x80) != 0;
     path = fuzz_write_input(data + 1, size - 1, (data[0] & 0x40) ? ".gz" : ".log");
     if (path == NULL) {
