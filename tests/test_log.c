@@ -1521,6 +1521,12 @@ static void test_decimal_comma(void **state)
         { "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
           "0\t5,09\t0,40\t8,92\t-0,002\t0,008\t-0,017\n",
           ":3: column 2 ('5,09')" },
+        /* comma-separated, each number quoted (a spreadsheet quotes a field
+         * that holds the separator): the quoted commas split the fields, and
+         * "0,00","0,5",... loaded as t 0, ax 0, ay 5, ... without a word */
+        { "t,ax,ay,az,gx,gy,gz\n\"0,00\",\"0,5\",\"0,2\",\"9,8\",\"0,1\",\"0,2\",\"0,3\"\n"
+          "\"0,01\",\"0,5\",\"0,2\",\"9,8\",\"0,1\",\"0,2\",\"0,3\"\n",
+          ":2: column 2 ('0,5')" },
     };
     size_t i;
     (void)state;
