@@ -1472,7 +1472,8 @@ static void test_detect_variants(void **state)
           "0,0.5,0.2,9.8,0.1,0.2,0.3\n0.01,0.5,0.2,9.8,0.1,0.2,0.3\n",
           HX_FMT_CSV, 0.5, 0.3 },
         { "t,ax,ay,az,gx,gy,gz,acc_x_g,gyro_x_dps\n0,0.5,0.2,9.8,0.1,0.2,0.3,9,9\n0.01,0.5,0.2,9.8,0.1,0.2,0.3,9,9\n",
-          HX_FMT_CSV, 0.5, 0.3 },        /* blank-separated: numpy's savetxt with its default delimiter
+          HX_FMT_CSV, 0.5, 0.3 },
+        /* blank-separated: numpy's savetxt with its default delimiter
          * (header "# t ax ..."), a header padded with runs of blanks, and a
          * foreign format whose names hold no blank (until 2026-11-30:
          * "FILE:2: header has no column 't'" and "FILE:1: ...") */
