@@ -897,7 +897,7 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 #define HX_GRAVITY_TOL ((double)FNAV_ALIGN_GRAVITY_TOL) /* |f| at rest within 25 % of gravity (the core's alignment refuses more) */
 #define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
 #define HX_RATE_MIN_HZ 20.0    /* below this, no stance lasts more than a few samples */
-#define HX_ACCEL_MEAN_MAX_G 10.0 /* a foot's mean |f| over a log, in g, stays far below (walking about 1.1, running 2) */
+#define HX_ACCEL_MEAN_MAX_G 10.0 /* a foot's mean |f| over a log, in g, stays far below (the 66 shared walks and trials 1.0-2.0, the simulator's run 3.3) */
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz, char *msg,
                      size_t msg_size)
 {
