@@ -718,6 +718,13 @@ expect_exit 1 "accelerometer in mg" "$H" replay "$T/in_mg.csv" --quiet
 expect_err "not in m/s^2: in mg? (multiply by 0.00980665)" "a log in mg is named as such"
 expect_exit 0 "info on a log in mg" "$H" info "$T/in_mg.csv"
 expect_out "units       NOT SI: .*not in m/s^2 but in mg (multiply by 0.00980665)" "info names mg too"
+# and not a foot in m/s^2 that never stands still: the simulator's run without a stand averages |f| = 3.3 g,
+# the most of any motion here (the mg test needs 10 g); it is told it has no still period, and no unit
+"$H" sim --motion run:30 --out "$T/run_nostand.csv" >/dev/null 2>&1
+expect_exit 1 "a run in m/s^2 without a still period" "$H" replay "$T/run_nostand.csv" --quiet
+expect_err "no still period" "a run without a still period is told so"
+grep -q "in mg\|raw counts\|not in m/s" "$T/err" && fail "a run in m/s^2 without a still period named as another unit" ||
+    pass "a run in m/s^2 without a still period is not named as mg"
 # time stamps coarser than the sampling, as float32 seconds far from 0 give them (1e5 s, a day of a board's
 # uptime: steps of 2^-7 s = 7.8 ms at 250 Hz): half the samples repeat the stamp before them, are not
 # integrated, and the detector's rate reads 128 Hz; the walk navigated with a ZUPT share halved and exit 0
