@@ -742,6 +742,12 @@ expect_exit 1 "time stamps as float32 at 1e6 s" "$H" replay "$T/in_f32t6.csv" --
 expect_err "of the samples repeat the time stamp before them" "16 Hz from repeated stamps: the repetition named"
 grep -q "look like milliseconds" "$T/err" && fail "repeated stamps at 16 Hz told to divide by 1000" ||
     pass "repeated stamps at 16 Hz not told to divide by 1000"
+# a millisecond clock at 1 kHz is not coarse (no stamp repeats): no note
+"$H" sim --motion walk --duration 20 --rate 1000 --out "$T/w1k.csv" >/dev/null 2>&1
+awk -F, 'NR == 1 { print; next } { printf "%.3f,%s,%s,%s,%s,%s,%s\n", $1, $2, $3, $4, $5, $6, $7 }' "$T/w1k.csv" > "$T/w1k_ms.csv"
+expect_exit 0 "a 1 kHz walk stamped to the millisecond" "$H" replay "$T/w1k_ms.csv"
+grep -q "repeat the time stamp\|cycles last" "$T/out" && fail "a 1 kHz walk stamped to the millisecond given a timing note" ||
+    pass "a 1 kHz walk stamped to the millisecond: no coarse-stamp or gait-cycle note"
 expect_exit 0 "the bundled walk (205 duplicates of 16539)" "$H" replay vectors/walk.bin
 grep -q "repeat the time stamp" "$T/out" && fail "1.2 % duplicates (the xio logger's) noted as coarse stamps" ||
     pass "a few duplicates are no coarse stamps"
