@@ -178,7 +178,7 @@ static char *trim(char *s)
 /* Split line in place; returns the number of fields. */
 static int split(char *line, char delim, char **f, int max)
 {
-    int n = 0;
+    int n = 0, quoted = 0;
     char *p = line;
     if (delim == ' ') {
         while (*p != '\0' && n < max) {
@@ -200,7 +200,10 @@ static int split(char *line, char delim, char **f, int max)
     }
     f[n++] = p;
     while (*p != '\0') {
-        if (*p == delim) {
+        /* a delimiter between double quotes is the field's ("0,5" in a
+         * comma-separated export with a decimal comma); trim drops them */
+        quoted ^= *p == '"';
+        if (*p == delim && !quoted) {
             *p = '\0';
             if (n < max) {
                 f[n++] = p + 1;
@@ -805,9 +808,11 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
     {
         /* the header's own count of fields: split keeps HX_MAX_COLS */
         const char *q;
+        int quoted = 0;
         total = 1;
         for (q = r->line; r->delim != ' ' && *q != '\0'; q++) {
-            total += *q == r->delim;
+            quoted ^= *q == '"';
+            total += *q == r->delim && !quoted;
         }
     }
     dc_line = decimal_comma_line(r->line, dc_first, sizeof dc_first);

@@ -897,7 +897,7 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 #define HX_GRAVITY_TOL ((double)FNAV_ALIGN_GRAVITY_TOL) /* |f| at rest within 25 % of gravity (the core's alignment refuses more) */
 #define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
 #define HX_RATE_MIN_HZ 20.0    /* below this, no stance lasts more than a few samples */
-#define HX_ACCEL_MEAN_MAX_G 10.0 /* a foot's mean |f| over a log, in g, stays far below (walking about 1.1, running 2) */
+#define HX_ACCEL_MEAN_MAX_G 10.0 /* a foot's mean |f| over a log, in g, stays far below (the 66 shared walks and trials 1.0-2.0, the simulator's run 3.3) */
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz, char *msg,
                      size_t msg_size)
 {
@@ -1532,19 +1532,33 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
          * next (the detector's stance flag, over every frame: a compressed
          * time axis shows before the alignment too), counting a motion that
          * lasts HX_NAV_CYCLE_MOTION_S or more: the strides would not do,
-         * since a swing compressed below min_swing_s makes none */
+         * since a swing compressed below min_swing_s makes none. A stance
+         * shorter than HX_NAV_CYCLE_MOTION_S ends no motion: a slow walk's
+         * swing broken by a 15 ms stance counted as two cycles, 0.39 s of
+         * 2 s (the review of 2026-11-30) */
         double *iv = (double *)malloc((t->n / 2u + 1u) * sizeof *iv);
-        size_t k = 0, run0 = 0;
+        size_t k = 0, run0 = 0, still0 = 0;
         int64_t onset = 0;
-        int have = 0, moving = 0;
+        int have = 0, moving = 0, pause = 0;
         for (i = 0; iv != NULL && i <= t->n; i++) {
             const int still = i == t->n || (t->f[i].flags & FNAV_FRAME_STANCE) != 0u;
-            if (!still && !moving) {
-                moving = 1;
-                run0 = i;
-            } else if (still && moving) {
+            if (!still) {
+                if (!moving) {
+                    moving = 1;
+                    run0 = i;
+                }
+                pause = 0;
+            } else if (moving) {
+                if (!pause) {
+                    pause = 1;
+                    still0 = i;
+                }
+                if (i < t->n && 1e-9 * (double)(t->f[i].t_ns - t->f[still0].t_ns) < HX_NAV_CYCLE_MOTION_S) {
+                    continue; /* perhaps a blip in the swing */
+                }
                 moving = 0;
-                if (1e-9 * (double)(t->f[i - 1u].t_ns - t->f[run0].t_ns) >= HX_NAV_CYCLE_MOTION_S) {
+                pause = 0;
+                if (1e-9 * (double)(t->f[still0 - 1u].t_ns - t->f[run0].t_ns) >= HX_NAV_CYCLE_MOTION_S) {
                     if (have && k < t->n / 2u + 1u) {
                         iv[k++] = 1e-9 * (double)(t->f[run0].t_ns - onset);
                     }

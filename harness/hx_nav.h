@@ -280,7 +280,8 @@ int hx_nav_gappy(const hx_nav_summary_t *s);
 
 /** Gait cycles no foot makes: a median cycle (from one onset of the foot's
  *  motion, the detector's stance flag, to the next, counting a motion of
- *  HX_NAV_CYCLE_MOTION_S or more) below HX_NAV_STRIDE_MIN_S, a cadence
+ *  HX_NAV_CYCLE_MOTION_S or more, which no shorter stance ends) below
+ *  HX_NAV_STRIDE_MIN_S, a cadence
  *  above 300 steps/min (a sprinter reaches about 280), says the time axis
  *  is compressed: most often a rate assumed for a log without time stamps
  *  (the OpenShoe 820 Hz reader takes six bare numbers a line at 820 Hz: a

@@ -1473,7 +1473,8 @@ static void test_detect_variants(void **state)
           "0,0.5,0.2,9.8,0.1,0.2,0.3\n0.01,0.5,0.2,9.8,0.1,0.2,0.3\n",
           HX_FMT_CSV, 0.5, 0.3 },
         { "t,ax,ay,az,gx,gy,gz,acc_x_g,gyro_x_dps\n0,0.5,0.2,9.8,0.1,0.2,0.3,9,9\n0.01,0.5,0.2,9.8,0.1,0.2,0.3,9,9\n",
-          HX_FMT_CSV, 0.5, 0.3 },        /* blank-separated: numpy's savetxt with its default delimiter
+          HX_FMT_CSV, 0.5, 0.3 },
+        /* blank-separated: numpy's savetxt with its default delimiter
          * (header "# t ax ..."), a header padded with runs of blanks, and a
          * foreign format whose names hold no blank (until 2026-11-30:
          * "FILE:2: header has no column 't'" and "FILE:1: ...") */
@@ -1522,6 +1523,12 @@ static void test_decimal_comma(void **state)
         { "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
           "0\t5,09\t0,40\t8,92\t-0,002\t0,008\t-0,017\n",
           ":3: column 2 ('5,09')" },
+        /* comma-separated, each number quoted (a spreadsheet quotes a field
+         * that holds the separator): the quoted commas split the fields, and
+         * "0,00","0,5",... loaded as t 0, ax 0, ay 5, ... without a word */
+        { "t,ax,ay,az,gx,gy,gz\n\"0,00\",\"0,5\",\"0,2\",\"9,8\",\"0,1\",\"0,2\",\"0,3\"\n"
+          "\"0,01\",\"0,5\",\"0,2\",\"9,8\",\"0,1\",\"0,2\",\"0,3\"\n",
+          ":2: column 2 ('0,5')" },
     };
     size_t i;
     (void)state;

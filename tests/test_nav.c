@@ -2125,6 +2125,61 @@ static void test_long_gap_edge(void **state)
     }
 }
 
+/* The gait cycle behind the summary's "the gait cycles last" note
+ * (hx_nav_strides_too_short): from one onset of the foot's motion to the
+ * next. Frames at 200 Hz, the detector's stance flag in a pattern per
+ * cycle: a slow walk (60 steps/min, `harness sim --motion walk --cadence
+ * 60 --speed 0.5`: stance 0.72 s, then a swing the detector breaks with a
+ * 15 ms stance in its middle) has 2 s cycles; the blip split each cycle in
+ * two, the median read 0.39 s and a normal slow walk was told its time
+ * axis was compressed (the review of 2026-11-30). A stance shorter than
+ * HX_NAV_CYCLE_MOTION_S now ends no motion; a compressed walk (0.25 s
+ * cycles, stance 0.10 s) and a normal one (1.1 s) are judged as before. */
+static void test_gait_cycles(void **state)
+{
+    static const struct {
+        int stance, motion, blip, motion2; /* frames at 200 Hz, in this order, per cycle */
+        double cycle_s;
+        int too_short;
+    } k_cases[] = {
+        { 143, 73, 3, 181, 2.0, 0 },  /* slow walk, a 15 ms stance blip mid-swing */
+        { 120, 98, 0, 0, 1.09, 0 },   /* normal walk */
+        { 20, 30, 0, 0, 0.25, 1 },    /* a compressed time axis */
+        { 20, 14, 2, 14, 0.25, 1 },   /* compressed, with a blip in the swing */
+    };
+    size_t c;
+    (void)state;
+    for (c = 0; c < sizeof k_cases / sizeof k_cases[0]; c++) {
+        const int per = k_cases[c].stance + k_cases[c].motion + k_cases[c].blip + k_cases[c].motion2;
+        hx_traj_t t;
+        hx_nav_summary_t s;
+        size_t i;
+        memset(&t, 0, sizeof t);
+        t.n = t.cap = (size_t)(25 * per);
+        t.f = (fnav_nav_frame_t *)calloc(t.cap, sizeof *t.f);
+        assert_non_null(t.f);
+        t.rate_hz = 200.0;
+        t.max_gap_s = 0.5;
+        t.aligned = 1;
+        for (i = 0; i < t.n; i++) {
+            const int k = (int)(i % (size_t)per);
+            const int still = k < k_cases[c].stance ||
+                              (k >= k_cases[c].stance + k_cases[c].motion &&
+                               k < k_cases[c].stance + k_cases[c].motion + k_cases[c].blip);
+            t.f[i].t_ns = (int64_t)i * 5000000;
+            t.f[i].seq = (uint32_t)i;
+            t.f[i].flags = FNAV_FRAME_ALIGNED | (still ? FNAV_FRAME_STANCE : 0u);
+        }
+        hx_nav_summarize(&t, &s);
+        if (s.stride_intervals != 24 || fabs(s.median_stride_s - k_cases[c].cycle_s) > 1e-9 ||
+            hx_nav_strides_too_short(&s) != k_cases[c].too_short) {
+            fail_msg("case %zu: %ld cycles, median %.4f s (expected 24 of %.4f s), too short %d", c,
+                     s.stride_intervals, s.median_stride_s, k_cases[c].cycle_s, hx_nav_strides_too_short(&s));
+        }
+        hx_traj_free(&t);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -2163,6 +2218,7 @@ int main(void)
         cmocka_unit_test(test_note_thresholds),
         cmocka_unit_test(test_health_keys),
         cmocka_unit_test(test_long_gap_edge),
+        cmocka_unit_test(test_gait_cycles),
         cmocka_unit_test(test_golden_replays),
         cmocka_unit_test(test_float_vs_double),
     };

@@ -718,6 +718,13 @@ expect_exit 1 "accelerometer in mg" "$H" replay "$T/in_mg.csv" --quiet
 expect_err "not in m/s^2: in mg? (multiply by 0.00980665)" "a log in mg is named as such"
 expect_exit 0 "info on a log in mg" "$H" info "$T/in_mg.csv"
 expect_out "units       NOT SI: .*not in m/s^2 but in mg (multiply by 0.00980665)" "info names mg too"
+# and not a foot in m/s^2 that never stands still: the simulator's run without a stand averages |f| = 3.3 g,
+# the most of any motion here (the mg test needs 10 g); it is told it has no still period, and no unit
+"$H" sim --motion run:30 --out "$T/run_nostand.csv" >/dev/null 2>&1
+expect_exit 1 "a run in m/s^2 without a still period" "$H" replay "$T/run_nostand.csv" --quiet
+expect_err "no still period" "a run without a still period is told so"
+grep -q "in mg\|raw counts\|not in m/s" "$T/err" && fail "a run in m/s^2 without a still period named as another unit" ||
+    pass "a run in m/s^2 without a still period is not named as mg"
 # time stamps coarser than the sampling, as float32 seconds far from 0 give them (1e5 s, a day of a board's
 # uptime: steps of 2^-7 s = 7.8 ms at 250 Hz): half the samples repeat the stamp before them, are not
 # integrated, and the detector's rate reads 128 Hz; the walk navigated with a ZUPT share halved and exit 0
@@ -735,6 +742,12 @@ expect_exit 1 "time stamps as float32 at 1e6 s" "$H" replay "$T/in_f32t6.csv" --
 expect_err "of the samples repeat the time stamp before them" "16 Hz from repeated stamps: the repetition named"
 grep -q "look like milliseconds" "$T/err" && fail "repeated stamps at 16 Hz told to divide by 1000" ||
     pass "repeated stamps at 16 Hz not told to divide by 1000"
+# a millisecond clock at 1 kHz is not coarse (no stamp repeats): no note
+"$H" sim --motion walk --duration 20 --rate 1000 --out "$T/w1k.csv" >/dev/null 2>&1
+awk -F, 'NR == 1 { print; next } { printf "%.3f,%s,%s,%s,%s,%s,%s\n", $1, $2, $3, $4, $5, $6, $7 }' "$T/w1k.csv" > "$T/w1k_ms.csv"
+expect_exit 0 "a 1 kHz walk stamped to the millisecond" "$H" replay "$T/w1k_ms.csv"
+grep -q "repeat the time stamp\|cycles last" "$T/out" && fail "a 1 kHz walk stamped to the millisecond given a timing note" ||
+    pass "a 1 kHz walk stamped to the millisecond: no coarse-stamp or gait-cycle note"
 expect_exit 0 "the bundled walk (205 duplicates of 16539)" "$H" replay vectors/walk.bin
 grep -q "repeat the time stamp" "$T/out" && fail "1.2 % duplicates (the xio logger's) noted as coarse stamps" ||
     pass "a few duplicates are no coarse stamps"
