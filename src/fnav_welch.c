@@ -148,6 +148,9 @@ fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x)
         return FNAV_E_ARG;
     }
     n = w->cfg.nfft;
+    if (n == 0u) {
+        return FNAV_E_STATE; /* never initialised (zeroed, as static storage is) */
+    }
     if (!fnav_isfinite(x)) {
         return FNAV_E_NANINF;
     }
@@ -168,8 +171,8 @@ fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x)
         kahan_add(&w->gs, &w->gc, (x - w->cfg.offset) - w->shift);
     }
     w->ring[w->pos] = (x - w->cfg.offset) - w->shift;
-    /* >=, not ==: with n = 0 (never initialised, static storage) the index
-     * stays at 0 instead of running past the ring; no segment completes */
+    /* >=, not ==: the index can never run past the ring (n >= 1 here: an
+     * estimator never initialised was refused above) */
     w->pos = (w->pos + 1u >= n) ? 0u : w->pos + 1u;
     w->nsamples++;
     if (w->fill < n) {

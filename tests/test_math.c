@@ -1,5 +1,6 @@
 /* fnav_math.h: vectors, quaternions, DCMs and Euler angles against analytic
  * answers. Tolerances: float32 build 2e-6, double build 1e-12. */
+#include <float.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -177,6 +178,53 @@ static void test_wrap_and_normalize(void **state)
     FNAV_ASSERT_CLOSE(fnav_clamp(FNAV_R(2.0), FNAV_R(-1.0), FNAV_R(1.0)), 1.0, 0.0, 0.0);
 }
 
+/* fnav_isfinite on every class of value, against the C library's isfinite:
+ * NaN of either sign, +-Inf, +-the largest finite value, the smallest and
+ * the largest denormal of either sign, +-0 and 1. The values go through a
+ * volatile so the inlined code is what is tested, not a constant folded by
+ * the compiler. */
+static void test_isfinite(void **state)
+{
+    static const int expect[] = {0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+    volatile fnav_real_t v[13];
+    fnav_vec3_t a;
+    size_t i;
+    (void)state;
+    v[0] = (fnav_real_t)NAN;
+    v[1] = -(fnav_real_t)NAN;
+    v[2] = (fnav_real_t)INFINITY;
+    v[3] = -(fnav_real_t)INFINITY;
+    v[4] = FNAV_REAL_MAX;
+    v[5] = -FNAV_REAL_MAX;
+#if FNAV_USE_DOUBLE
+    v[6] = ldexp(1.0, -1074);          /* smallest denormal */
+    v[7] = DBL_MIN - ldexp(1.0, -1074); /* largest denormal */
+#else
+    v[6] = ldexpf(1.0f, -149);
+    v[7] = FLT_MIN - ldexpf(1.0f, -149);
+#endif
+    v[8] = -v[6];
+    v[9] = -v[7];
+    v[10] = FNAV_R(0.0);
+    v[11] = -FNAV_R(0.0);
+    v[12] = FNAV_R(1.0);
+    /* the denormals are denormals (not flushed to zero, below the smallest normal) */
+#if FNAV_USE_DOUBLE
+    assert_true(v[6] > 0.0 && v[7] > v[6] && v[7] < DBL_MIN);
+#else
+    assert_true(v[6] > 0.0f && v[7] > v[6] && v[7] < FLT_MIN);
+#endif
+    for (i = 0; i < sizeof expect / sizeof expect[0]; i++) {
+        fnav_real_t x = v[i];
+        assert_int_equal(isfinite(x) != 0, expect[i]);
+        assert_int_equal(fnav_isfinite(x) != 0, expect[i]);
+    }
+    a = fnav_vec3(FNAV_REAL_MAX, -FNAV_R(0.0), v[6]);
+    assert_true(fnav_vec3_isfinite(a));
+    a.v[2] = v[1];
+    assert_false(fnav_vec3_isfinite(a));
+}
+
 /* fnav_one_minus_exp_neg against the C library's expm1 in double (an
  * independent computation): relative error within 2e-6 in float from x =
  * 1e-12 (an AR(1) at 1 kHz with tau of hours has 2 dt/tau near 1e-7) to 80,
@@ -263,6 +311,7 @@ int main(void)
         cmocka_unit_test(test_wrap_and_normalize),
         cmocka_unit_test(test_exp_neg),
         cmocka_unit_test(test_one_minus_exp_neg),
+        cmocka_unit_test(test_isfinite),
     };
     return cmocka_run_group_tests_name("math", tests, NULL, NULL);
 }

@@ -113,9 +113,10 @@ FNAV_WARN_UNUSED fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch
  * nfft samples were seen.
  * @return FNAV_OK; FNAV_E_ARG for NULL w; FNAV_E_NANINF for NaN/Inf,
  *         FNAV_E_RANGE for |x| > FNAV_INPUT_MAX_ABS and once 2^32 - 1
- *         samples were pushed (ignored, state unchanged). An estimator
- *         never initialised (zeroed, as static storage is) takes the sample
- *         but never completes a segment: fnav_welch_get says FNAV_E_STATE.
+ *         samples were pushed (ignored, state unchanged); FNAV_E_STATE for
+ *         an estimator never initialised (zeroed, as static storage is) or
+ *         whose only fnav_welch_init failed, before the sample is looked
+ *         at (nothing taken), as fnav_nav_push says.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_push(fnav_welch_t *w, fnav_real_t x);
 
