@@ -976,6 +976,12 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
     return n > 0;
 }
 
+/* The remedy for time stamps coarser than the sampling (hx_nav_coarse_stamps),
+ * one text for the units error and the summary's note. */
+#define HX_COARSE_STAMPS_REMEDY                                                                            \
+    "write the stamps with more digits, or leave the time column out and give the rate with --input-rate " \
+    "HZ (docs/log-format.md, \"CSV interchange\")"
+
 /* 2 when the replayed log is not in SI units (err says why), else 0. */
 static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean,
                        double in_rate_hz, char *err, size_t err_size)
@@ -1022,9 +1028,7 @@ static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_
          * 1000"; the generality review, 2026-11-30) */
         snprintf(rep, sizeof rep,
                  "%.1f %% of the samples repeat the time stamp before them, which advance by %.4g s: %.3g Hz from "
-                 "the stamps, too coarse for the sampling (float32 seconds far from 0?): write the stamps with more "
-                 "digits, or leave the time column out and give the rate with --input-rate HZ (docs/log-format.md, "
-                 "\"CSV interchange\")",
+                 "the stamps, too coarse for the sampling (float32 seconds far from 0?): " HX_COARSE_STAMPS_REMEDY,
                  100.0 * (double)nav->stats.duplicates / (double)nav->stats.samples, 1.0 / rate, rate);
         rate = 0.0;
     }
@@ -1883,9 +1887,7 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
         fprintf(f, "note              %.1f %% of the samples repeat the time stamp before them (dt = 0; longest "
                    "interval %.1f ms): the stamps are coarser than the sampling (float32 seconds far from 0? a "
                    "millisecond clock above 1 kHz?); a repeated sample is not integrated and the detector's rate "
-                   "comes from the stamps, so position and heading are unreliable: write the stamps with more "
-                   "digits, or leave the time column out and give the rate with --input-rate HZ (docs/log-format.md, "
-                   "\"CSV interchange\")\n",
+                   "comes from the stamps, so position and heading are unreliable: " HX_COARSE_STAMPS_REMEDY "\n",
                 100.0 * (double)st->duplicates / (double)st->samples, 1e3 * (double)st->max_gap_seen_s);
     }
     if (hx_nav_gappy(s)) {
