@@ -739,7 +739,16 @@ static int json_add_version(cJSON *root)
     if ((v = cJSON_AddStringToObject(root, "footnav_version", FNAV_VERSION_STRING)) == NULL) {
         return -1;
     }
-    return cJSON_InsertItemInArray(root, 0, cJSON_DetachItemViaPointer(root, v)) ? 0 : -1;
+    /* moved to the front: called as a statement, since cJSON < 1.7.13
+     * returns void here and later versions a bool; it inserts at 0 or not
+     * at all, so a version item not first is not in root: freed */
+    v = cJSON_DetachItemViaPointer(root, v);
+    cJSON_InsertItemInArray(root, 0, v);
+    if (root->child != v) {
+        cJSON_Delete(v);
+        return -1;
+    }
+    return 0;
 }
 
 int hx_write_json(const char *path, struct cJSON *root, char *err, size_t err_size)

@@ -976,9 +976,16 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
     return n > 0;
 }
 
-/* 2 when the replayed log is not in SI units (err says why), else 0. */
-static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean,
-                       double in_rate_hz, char *err, size_t err_size)
+/* The remedy for time stamps coarser than the sampling (hx_nav_coarse_stamps),
+ * one text for the units error and the summary's note. */
+#define HX_COARSE_STAMPS_REMEDY                                                                            \
+    "write the stamps with more digits, or leave the time column out and give the rate with --input-rate " \
+    "HZ (docs/log-format.md, \"CSV interchange\")"
+
+/* 2 when the replayed log is not in SI units (err says why, without the
+ * log's name: the JSON's units_problem), else 0. */
+static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean, double in_rate_hz, char *err,
+                       size_t err_size)
 {
     char msg[768], acc[320] = "", rep[320] = "";
     const double g = (double)nav->cfg.gravity_mps2;
@@ -990,8 +997,8 @@ static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_
     int bad;
     if (!nav->aligned && !(f_norm_mean > 1e-6 * g)) {
         /* no specific force at all: not a unit but a dead channel */
-        snprintf(err, err_size, "%s: the accelerometer reads %s throughout: disconnected, or its columns missing?",
-                 path, f_norm_mean > 0.0 ? "almost 0" : "0");
+        snprintf(err, err_size, "the accelerometer reads %s throughout: disconnected, or its columns missing?",
+                 f_norm_mean > 0.0 ? "almost 0" : "0");
         return 2;
     }
     if (!nav->aligned && fn == 0.0 && f_norm_mean > 0.0 && f_norm_mean < 0.5 * g) {
@@ -1022,9 +1029,7 @@ static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_
          * 1000"; the generality review, 2026-11-30) */
         snprintf(rep, sizeof rep,
                  "%.1f %% of the samples repeat the time stamp before them, which advance by %.4g s: %.3g Hz from "
-                 "the stamps, too coarse for the sampling (float32 seconds far from 0?): write the stamps with more "
-                 "digits, or leave the time column out and give the rate with --input-rate HZ (docs/log-format.md, "
-                 "\"CSV interchange\")",
+                 "the stamps, too coarse for the sampling (float32 seconds far from 0?): " HX_COARSE_STAMPS_REMEDY,
                  100.0 * (double)nav->stats.duplicates / (double)nav->stats.samples, 1.0 / rate, rate);
         rate = 0.0;
     }
@@ -1037,11 +1042,11 @@ static int units_check(const char *path, const fnav_nav_t *nav, double gyro_max_
         bad = 1;
     }
     if (acc[0] != '\0') {
-        snprintf(err, err_size, "%s: %s%s%s", path, acc, bad ? "; also " : " (docs/log-format.md)", bad ? msg : "");
+        snprintf(err, err_size, "%s%s%s", acc, bad ? "; also " : " (docs/log-format.md)", bad ? msg : "");
         return 2;
     }
     if (bad) {
-        snprintf(err, err_size, "%s: %s", path, msg);
+        snprintf(err, err_size, "%s", msg);
         return 2;
     }
     return 0;
@@ -1296,9 +1301,18 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     }
     if (rc == 0) {
         /* wrong units are also why a log never looks still */
-        int u = units_check(path, &nav, pc.gyro_max_rps, pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0, traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0,
-                            err, err_size);
-        rc = u != 0 ? u : rc;
+        char msg[sizeof traj->units_problem];
+        int u = units_check(&nav, pc.gyro_max_rps, pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0,
+                            traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0, msg, sizeof msg);
+        if (traj != NULL) {
+            /* the JSON's units_problem ("" when none) */
+            traj->units_checked = 1;
+            snprintf(traj->units_problem, sizeof traj->units_problem, "%s", u != 0 ? msg : "");
+        }
+        if (u != 0) {
+            snprintf(err, err_size, "%s: %s", path, msg);
+            rc = u;
+        }
     }
     if (rc == 0 && !nav.aligned) {
         if (stamps_never_advance(&nav.stats)) {
@@ -1883,9 +1897,7 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
         fprintf(f, "note              %.1f %% of the samples repeat the time stamp before them (dt = 0; longest "
                    "interval %.1f ms): the stamps are coarser than the sampling (float32 seconds far from 0? a "
                    "millisecond clock above 1 kHz?); a repeated sample is not integrated and the detector's rate "
-                   "comes from the stamps, so position and heading are unreliable: write the stamps with more "
-                   "digits, or leave the time column out and give the rate with --input-rate HZ (docs/log-format.md, "
-                   "\"CSV interchange\")\n",
+                   "comes from the stamps, so position and heading are unreliable: " HX_COARSE_STAMPS_REMEDY "\n",
                 100.0 * (double)st->duplicates / (double)st->samples, 1e3 * (double)st->max_gap_seen_s);
     }
     if (hx_nav_gappy(s)) {
@@ -1994,6 +2006,14 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddItemToObject(root, "before_alignment_s", num(s->before_align_s));
     cJSON_AddItemToObject(root, "longest_stand_s", num(s->longest_stand_s));
     {
+        /* the summary's gait-cycle note (hx_nav_strides_too_short) */
+        cJSON *gc = cJSON_CreateObject();
+        cJSON_AddItemToObject(gc, "median_s", num(s->stride_intervals > 0 ? s->median_stride_s : (double)NAN));
+        cJSON_AddNumberToObject(gc, "intervals", (double)s->stride_intervals);
+        cJSON_AddBoolToObject(gc, "too_short", hx_nav_strides_too_short(s));
+        cJSON_AddItemToObject(root, "gait_cycles", gc);
+    }
+    {
         static const char *const k_ch[6] = { "ax", "ay", "az", "gx", "gy", "gz" };
         cJSON *sat = cJSON_AddObjectToObject(root, "saturated_samples");
         int ch;
@@ -2011,6 +2031,15 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
         cJSON_AddItemToObject(g, "longest_s", num(s->longest_motion_gap_s));
         cJSON_AddBoolToObject(g, "unreliable", hx_nav_gappy(s));
         cJSON_AddItemToObject(root, "motion_gaps", g);
+    }
+    {
+        /* the summary's coarse-stamp note (hx_nav_coarse_stamps); the
+         * count is health's duplicates */
+        cJSON *sp = cJSON_CreateObject();
+        cJSON_AddItemToObject(sp, "duplicate_fraction",
+                              num(st->samples > 0u ? (double)st->duplicates / (double)st->samples : (double)NAN));
+        cJSON_AddBoolToObject(sp, "coarse", hx_nav_coarse_stamps(st));
+        cJSON_AddItemToObject(root, "stamps", sp);
     }
     if (s->rate_off_fraction > 0.0) {
         cJSON *chg = cJSON_CreateObject();
@@ -2032,6 +2061,13 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
         cJSON_AddItemToObject(ax, "problem", checked ? cJSON_CreateBool(t->axes.problem) : cJSON_CreateNull());
         cJSON_AddStringToObject(ax, "message", t->axes.msg);
         cJSON_AddItemToObject(root, "axes", ax);
+    }
+    if (t->units_checked) {
+        /* as info's: the units check's message, null when the values look
+         * like SI (no key when it did not run: live, a replay stopped early) */
+        cJSON_AddItemToObject(root, "units_problem", t->units_problem[0] != '\0'
+                                                         ? cJSON_CreateString(t->units_problem)
+                                                         : cJSON_CreateNull());
     }
     cJSON_AddNumberToObject(h, "samples", st->samples);
     cJSON_AddNumberToObject(h, "frames", st->frames);

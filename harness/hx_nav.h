@@ -126,6 +126,12 @@ typedef struct {
     /** replay: 1 when the run stopped because the trajectory output could
      *  not be written (input_complete is then 0 and input_error says so) */
     int output_failed;
+    /** replay: 1 when the units check ran (the log read to its end), with
+     *  units_problem its message, "" when the values look like SI (the
+     *  JSON's `units_problem`); 0 not checked (live, a run stopped early):
+     *  no JSON key */
+    int units_checked;
+    char units_problem[1152];
     /** the configuration that ran, for the summary's `config` line and the
      *  JSON's keys (hx_traj_set_config; have_config 0: not said, no line) */
     int have_config;

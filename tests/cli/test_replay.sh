@@ -714,8 +714,11 @@ if grep -q "count samples" "$T/err"; then fail "stamps in ms (4 ms apart) told t
 # remedy (the generality review, 2026-11-30); the mean |f| of the whole log, about 1,000, gives it away
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 0.00980665, $3 / 0.00980665, $4 / 0.00980665, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_mg.csv"
-expect_exit 1 "accelerometer in mg" "$H" replay "$T/in_mg.csv" --quiet
+expect_exit 1 "accelerometer in mg" "$H" replay "$T/in_mg.csv" --quiet --json "$T/in_mg.json"
 expect_err "not in m/s^2: in mg? (multiply by 0.00980665)" "a log in mg is named as such"
+# in the JSON too, as info's units_problem: the error's message without the path (it had no trace of it)
+json "$T/in_mg.json" 'j["units_problem"].startswith("the accelerometer averages |f| = ") and "in mg? (multiply by 0.00980665)" in j["units_problem"]' &&
+    pass "replay --json: units_problem names mg" || fail "replay --json of a log in mg: units_problem $(grep units_problem "$T/in_mg.json")"
 expect_exit 0 "info on a log in mg" "$H" info "$T/in_mg.csv"
 expect_out "units       NOT SI: .*not in m/s^2 but in mg (multiply by 0.00980665)" "info names mg too"
 # and not a foot in m/s^2 that never stands still: the simulator's run without a stand averages |f| = 3.3 g,
@@ -731,40 +734,66 @@ grep -q "in mg\|raw counts\|not in m/s" "$T/err" && fail "a run in m/s^2 without
 # without a word (the generality review, 2026-11-30). The summary now says so and names the remedy
 awk -F, 'NR == 1 { print; next } { printf "%.7f,%s,%s,%s,%s,%s,%s\n", 100000 + int($1 * 128 + 0.5) / 128, $2, $3, $4, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_f32t.csv"
-expect_exit 0 "time stamps as float32 at 1e5 s" "$H" replay "$T/in_f32t.csv"
+expect_exit 0 "time stamps as float32 at 1e5 s" "$H" replay "$T/in_f32t.csv" --json "$T/in_f32t.json"
 expect_out_re "^note +[0-9.]+ % of the samples repeat the time stamp before them" "repeated stamps noted"
 expect_out "give the rate with --input-rate HZ" "the remedy for coarse stamps named"
+# the note in the JSON: stamps.coarse, and the share the note prints, of health's counts (no key had it)
+json "$T/in_f32t.json" '(j["stamps"]["coarse"] is True and j["stamps"]["duplicate_fraction"] >= 0.1 and
+    abs(j["stamps"]["duplicate_fraction"] - j["health"]["duplicates"] / j["health"]["samples"]) < 1e-12 and
+    j["units_problem"] is None)' &&
+    pass "replay --json: stamps.coarse true with the note" || fail "replay --json, coarse stamps: $(grep -A3 '"stamps"' "$T/in_f32t.json" | tr -d '\n\t')"
 # at 1e6 s float32 steps by 62.5 ms: the stamps read 16 Hz, an error (exit 1) whose remedy was "they look like
 # milliseconds: divide by 1000", wrong for stamps that repeat; it names the repeated stamps instead
 awk -F, 'NR == 1 { print; next } { printf "%.7f,%s,%s,%s,%s,%s,%s\n", 1000000 + int($1 * 16 + 0.5) / 16, $2, $3, $4, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_f32t6.csv"
-expect_exit 1 "time stamps as float32 at 1e6 s" "$H" replay "$T/in_f32t6.csv" --quiet
+expect_exit 1 "time stamps as float32 at 1e6 s" "$H" replay "$T/in_f32t6.csv" --quiet --json "$T/in_f32t6.json"
 expect_err "of the samples repeat the time stamp before them" "16 Hz from repeated stamps: the repetition named"
+json "$T/in_f32t6.json" 'j["stamps"]["coarse"] is True and "of the samples repeat the time stamp before them" in j["units_problem"]' &&
+    pass "replay --json: 16 Hz from repeated stamps in stamps.coarse and units_problem" ||
+    fail "replay --json, stamps at 1e6 s: $(grep -A3 '"stamps"\|units_problem' "$T/in_f32t6.json" | tr -d '\n\t')"
 grep -q "look like milliseconds" "$T/err" && fail "repeated stamps at 16 Hz told to divide by 1000" ||
     pass "repeated stamps at 16 Hz not told to divide by 1000"
 # a millisecond clock at 1 kHz is not coarse (no stamp repeats): no note
 "$H" sim --motion walk --duration 20 --rate 1000 --out "$T/w1k.csv" >/dev/null 2>&1
 awk -F, 'NR == 1 { print; next } { printf "%.3f,%s,%s,%s,%s,%s,%s\n", $1, $2, $3, $4, $5, $6, $7 }' "$T/w1k.csv" > "$T/w1k_ms.csv"
-expect_exit 0 "a 1 kHz walk stamped to the millisecond" "$H" replay "$T/w1k_ms.csv"
+expect_exit 0 "a 1 kHz walk stamped to the millisecond" "$H" replay "$T/w1k_ms.csv" --json "$T/w1k_ms.json"
 grep -q "repeat the time stamp\|cycles last" "$T/out" && fail "a 1 kHz walk stamped to the millisecond given a timing note" ||
     pass "a 1 kHz walk stamped to the millisecond: no coarse-stamp or gait-cycle note"
-expect_exit 0 "the bundled walk (205 duplicates of 16539)" "$H" replay vectors/walk.bin
+json "$T/w1k_ms.json" 'j["stamps"]["coarse"] is False and j["gait_cycles"]["too_short"] is False' &&
+    pass "replay --json of the 1 kHz walk in ms: stamps.coarse and gait_cycles.too_short false" ||
+    fail "replay --json of the 1 kHz walk in ms: $(grep -A3 '"stamps"\|"gait_cycles"' "$T/w1k_ms.json" | tr -d '\n\t')"
+expect_exit 0 "the bundled walk (205 duplicates of 16539)" "$H" replay vectors/walk.bin --json "$T/walkbin.json"
 grep -q "repeat the time stamp" "$T/out" && fail "1.2 % duplicates (the xio logger's) noted as coarse stamps" ||
     pass "a few duplicates are no coarse stamps"
 grep -q "cycles last" "$T/out" && fail "the bundled walk's gait cycles called too short" ||
     pass "the bundled walk's gait cycles are plausible"
+json "$T/walkbin.json" '(j["stamps"]["coarse"] is False and 0 < j["stamps"]["duplicate_fraction"] < 0.1 and
+    j["gait_cycles"]["too_short"] is False and j["gait_cycles"]["intervals"] >= 8 and j["gait_cycles"]["median_s"] >= 0.4 and
+    j["units_problem"] is None)' &&
+    pass "replay --json of the bundled walk: stamps.coarse and gait_cycles.too_short false, units_problem null" ||
+    fail "replay --json of the bundled walk: $(grep -A3 '"stamps"\|"gait_cycles"\|units_problem' "$T/walkbin.json" | tr -d '\n\t')"
 # a log without time stamps gets a rate it cannot check: six bare numbers a line are the OpenShoe 820 Hz file
 # (assumed 820 Hz, a warning): a 250 Hz walk in that form navigated 5 m of 77 with strides of 0.34 s, a 200 Hz
 # one made no stride at all, exit 0, only the assumption warned (the generality review, 2026-11-30); the gait
 # cycles no foot makes (0.27 s: 450 steps/min) are named, with --input-rate
 "$H" sim --motion walk --duration 30 --rate 200 --out "$T/bare_w.csv" >/dev/null 2>&1
 awk -F, 'NR > 1 { print $2 "," $3 "," $4 "," $5 "," $6 "," $7 }' "$T/bare_w.csv" > "$T/bare6.txt"
-expect_exit 0 "a 200 Hz walk as six bare columns (820 Hz assumed)" "$H" replay "$T/bare6.txt"
+expect_exit 0 "a 200 Hz walk as six bare columns (820 Hz assumed)" "$H" replay "$T/bare6.txt" --json "$T/bare6.json"
 expect_out_re "^note +the gait cycles last 0\.[0-9]+ s \(median of [0-9]+" "gait cycles too short for a foot named"
 expect_out "give the rate with --input-rate HZ" "the remedy for a wrong rate named"
-expect_exit 0 "the same walk with --input-rate 200" "$H" replay "$T/bare6.txt" --input-rate 200
+# the note in the JSON, with the median and the count it prints (no key had them)
+NOTE=$(grep "^note *the gait cycles last" "$T/out"); export NOTE
+json "$T/bare6.json" '(j["gait_cycles"]["too_short"] is True and j["gait_cycles"]["intervals"] >= 8 and
+    "the gait cycles last %.2f s (median of %d," % (j["gait_cycles"]["median_s"], j["gait_cycles"]["intervals"])
+    in __import__("os").environ["NOTE"])' &&
+    pass "replay --json: gait_cycles.too_short true, the note's median and count" ||
+    fail "replay --json, six bare columns: $(grep -A3 '"gait_cycles"' "$T/bare6.json" | tr -d '\n\t') $(cat "$T/pyerr")"
+expect_exit 0 "the same walk with --input-rate 200" "$H" replay "$T/bare6.txt" --input-rate 200 --json "$T/bare6_200.json"
 grep -q "cycles last" "$T/out" && fail "gait cycles at the right rate called too short" ||
     pass "no gait-cycle note at the right rate"
+json "$T/bare6_200.json" 'j["gait_cycles"]["too_short"] is False and j["gait_cycles"]["median_s"] >= 0.4' &&
+    pass "replay --json at the right rate: gait_cycles.too_short false" ||
+    fail "replay --json at the right rate: $(grep -A3 '"gait_cycles"' "$T/bare6_200.json" | tr -d '\n\t')"
 
 # Rows of the Markdown tables in FILE... whose cell count differs from their
 # header's (an unescaped | in a header or a note breaks a table), as FILE:LINE.
