@@ -1552,14 +1552,19 @@ static void test_decimal_comma(void **state)
  * one of the two lists fails here (CONTRIBUTING.md, "Extending footnav"). */
 static void test_format_list(void **state)
 {
-    char list[256], want[256] = "";
+    char want[256] = "";
+    size_t len = 0;
     int f;
     (void)state;
     for (f = HX_FMT_AUTO + 1; f < HX_FMT_COUNT; f++) {
         assert_int_equal(hx_format_from_name(hx_format_name((hx_format_t)f)), f);
-        snprintf(list, sizeof list, "%s%s%s", want, want[0] != '\0' ? ", " : "", hx_format_name((hx_format_t)f));
-        snprintf(want, sizeof want, "%s", list);
+        /* appended in place (a copy through a second buffer of the same
+         * size is a truncation warning at -O1, make sanitize) */
+        assert_true(len < sizeof want);
+        len += (size_t)snprintf(want + len, sizeof want - len, "%s%s", len > 0 ? ", " : "",
+                                hx_format_name((hx_format_t)f));
     }
+    assert_true(len < sizeof want);
     assert_string_equal(hx_format_list(), want);
     assert_int_equal(hx_format_from_name("nope"), HX_FMT_COUNT);
 }
