@@ -2345,7 +2345,7 @@ int hx_cmd_allan(int argc, char **argv)
         /* the log's options were ignored with a series without a word, exit
          * 0 (`--series F --channels gx`; a user review, 2026-11-30), as
          * --unit with a log was */
-        static const char *const log_only[] = { "--channels", "--from", "--input-rate", "--name", NULL };
+        static const char *const log_only[] = { "--channels", "--from", "--input-rate", "--columns", "--units", "--name", NULL };
         int k;
         for (k = 0; log_only[k] != NULL; k++) {
             if (hx_arg(&a, log_only[k]) != NULL) {

@@ -328,7 +328,26 @@ static int input_options(const char *cmd, const hx_args_t *a, hx_format_t *fmt, 
     if (hx_arg_double(a, "--input-rate", 1e-3, 1e6, rate) != 0) {
         return -1;
     }
-    (void)cmd;
+    {
+        /* --columns and --units: the interchange CSV under another layout,
+         * for every reader this command opens (docs/log-format.md,
+         * "Another layout") */
+        const char *map = hx_arg(a, "--columns"), *units = hx_arg(a, "--units");
+        hx_csv_layout_t l;
+        char err[200];
+        hx_csv_layout_default(&l);
+        if ((map != NULL && hx_csv_columns_parse(&l, map, err, sizeof err) != 0) ||
+            (units != NULL && hx_csv_units_parse(&l, units, err, sizeof err) != 0)) {
+            hx_error(cmd, "%s", err);
+            return -1;
+        }
+        if (l.option != NULL && *fmt != HX_FMT_CSV && *fmt != HX_FMT_AUTO) {
+            hx_error(cmd, "%s appl%s to the interchange CSV (format csv), not to the %s format", l.option,
+                     strchr(l.option, ' ') != NULL ? "y" : "ies", hx_format_name(*fmt));
+            return -1;
+        }
+        hx_reader_set_layout(&l);
+    }
     return 0;
 }
 
@@ -336,7 +355,24 @@ int hx_check_input_opts(const char *cmd, const hx_args_t *a)
 {
     hx_format_t fmt;
     double rate;
-    return input_options(cmd, a, &fmt, &rate);
+    if (input_options(cmd, a, &fmt, &rate) != 0) {
+        return -1;
+    }
+    if (fmt == HX_FMT_AUTO && (hx_arg(a, "--columns") != NULL || hx_arg(a, "--units") != NULL) && a->npos > 0) {
+        /* a log detected as another format is a usage error too, as with
+         * --from (the reader would refuse it as unreadable data) */
+        const hx_format_t got = hx_detect_file(a->pos[0]);
+        if (got != HX_FMT_AUTO && got != HX_FMT_CSV) {
+            const char *opt = hx_arg(a, "--columns") == NULL  ? "--units"
+                              : hx_arg(a, "--units") == NULL ? "--columns"
+                                                             : "--columns and --units";
+            hx_error(cmd, "%s: %s appl%s to the interchange CSV (format csv), not to the %s format (detected from "
+                          "the content; give --from csv to read the file as CSV)",
+                     a->pos[0], opt, strchr(opt, ' ') != NULL ? "y" : "ies", hx_format_name(got));
+            return -1;
+        }
+    }
+    return 0;
 }
 
 void hx_print_warnings(const char *cmd, const char *w)

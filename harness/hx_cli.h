@@ -99,13 +99,19 @@ void hx_warn(const char *cmd, const char *fmt, ...)
 /** Options every command that reads a log understands. */
 #define HX_INPUT_OPTS                                                                         \
     { "--from", "NAME", "input format (default: detected): " HX_FORMAT_LIST, 0 },            \
-    { "--input-rate", "HZ", "sample rate of an input without time stamps", 0 }
+    { "--input-rate", "HZ", "sample rate of an input without time stamps", 0 },                \
+    { "--columns", "MAP", "the CSV's names of the columns, e.g. t=timestamp_ns,ax=acc_x,...", 0 }, \
+    { "--units", "SPEC", "the CSV's units: time=s|ms|us|ns,accel=m/s2|g,gyro=rad/s|deg/s", 0 }
 
-/** Check --from and --input-rate; call right after parsing so that a bad
+/** Check --from, --input-rate, --columns and --units (a log of another
+ *  format than csv with either of the last two, given or detected, is a
+ *  usage error) and set the readers' CSV layout (hx_reader_set_layout);
+ *  call right after parsing so that a bad
  *  value is a usage error (exit HX_EXIT_USAGE). 0 ok, -1 error printed. */
 int hx_check_input_opts(const char *cmd, const hx_args_t *a);
 
-/** Open the input of a command using --from and --input-rate. Prints the
+/** Open the input of a command using --from and --input-rate (and the CSV
+ *  layout of --columns and --units, hx_check_input_opts). Prints the
  *  error and returns NULL on failure; prints reader warnings. */
 hx_reader_t *hx_open_input(const char *cmd, const hx_args_t *a, const char *path);
 /** Print newline-separated warnings, one "warning:" line each; a line

@@ -41,6 +41,11 @@ const char *hx_format_list(void)
     return HX_FORMAT_LIST;
 }
 
+/* The interchange CSV's column names, and the layout readers take them in
+ * (hx_reader_set_layout; option NULL: these names in s, m/s^2, rad/s). */
+static const char *const k_csv_names[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
+static hx_csv_layout_t g_layout;
+
 /* How a text format gives time. */
 typedef enum {
     TIME_COLUMN_S,   /* a column in seconds */
@@ -74,6 +79,7 @@ struct hx_reader {
     double ctr_wrap;            /* ipol: 65536 per wrap of the 16-bit packet counter so far */
     double ctr_prev;            /* ipol: the last raw counter */
     double acc_scale, gyr_scale;
+    hx_csv_layout_t layout;     /* the interchange CSV's names and units (--columns, --units) */
     time_mode_t time_mode;
     double rate_hz;
     long index;
@@ -322,9 +328,14 @@ static int decimal_comma_line(const char *line, char *first, size_t size)
     }
 }
 
-/* Seconds as text to integer ns, exactly for plain decimals. */
-static int parse_time_ns(const char *s, int64_t *out)
+/* Time as text to integer ns, exactly for plain decimals: in seconds
+ * (k = 9), ms (6), us (3) or ns (0), 10^k ns to the unit; the point moves
+ * in the text, no float (--units time=ns: Unix time in ns to the ns). */
+static int parse_time_ns(const char *s, int k, int64_t *out)
 {
+    static const int64_t p10[10] = { 1LL, 10LL, 100LL, 1000LL, 10000LL, 100000LL, 1000000LL, 10000000LL,
+                                     100000000LL, 1000000000LL };
+    const int64_t lim = 9000000000LL * p10[9 - k]; /* 9e9 s in the unit */
     const char *p = s;
     int neg = 0, digits = 0, frac = 0, extra = 0, up = 0;
     int64_t ip = 0, fp = 0;
@@ -333,17 +344,17 @@ static int parse_time_ns(const char *s, int64_t *out)
         p++;
     }
     while (isdigit((unsigned char)*p)) {
-        ip = ip * 10 + (*p - '0');
-        if (ip > 9000000000LL) {
+        if (ip > (lim - (*p - '0')) / 10) {
             return -3; /* beyond 9e9 s: int64 ns would overflow */
         }
+        ip = ip * 10 + (*p - '0');
         p++;
         digits++;
     }
     if (*p == '.') {
         p++;
         while (isdigit((unsigned char)*p)) {
-            if (frac < 9) {
+            if (frac < k) {
                 fp = fp * 10 + (*p - '0');
                 frac++;
             } else if (extra++ == 0) {
@@ -362,17 +373,18 @@ static int parse_time_ns(const char *s, int64_t *out)
         if (rc != 0) {
             return rc;
         }
-        if (v > 9.0e9 || v < -9.0e9) {
+        v *= (double)p10[k]; /* ns */
+        if (v > 9.0e18 || v < -9.0e18) {
             return -3;
         }
-        *out = (int64_t)(v * 1.0e9 + (v >= 0.0 ? 0.5 : -0.5));
+        *out = (int64_t)(v + (v >= 0.0 ? 0.5 : -0.5));
         return 0;
     }
-    while (frac < 9) {
+    while (frac < k) {
         fp *= 10;
         frac++;
     }
-    *out = (ip * 1000000000LL + fp + up) * (neg ? -1 : 1);
+    *out = (ip * p10[k] + fp + up) * (neg ? -1 : 1);
     return 0;
 }
 
@@ -839,6 +851,10 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
                 set_err(r, "%s:%ld: the first line is data, not a header: a %s log starts with its header (%s)",
                         r->path, r->stats.lines, hx_format_name(r->meta.format),
                         r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "see docs/log-format.md");
+            } else if (r->meta.format == HX_FMT_CSV && r->layout.names[i][0] != '\0') {
+                /* a name the user gave: say where it came from */
+                set_err(r, "%s:%ld: header has no column '%s' (the name --columns gives %s)", r->path,
+                        r->stats.lines, names[i], what[i]);
             } else if (r->meta.format == HX_FMT_CSV) {
                 /* a header with the six others lacks only its time: say how
                  * to give the rate (not to a file that is no IMU log) */
@@ -899,7 +915,13 @@ static int setup_text(hx_reader_t *r, double rate_hz)
     r->delim = ',';
     switch (m->format) {
     case HX_FMT_CSV: {
-        static const char *const names[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
+        const char *names[8];
+        int i;
+        for (i = 0; i < 8; i++) {
+            names[i] = r->layout.names[i][0] != '\0' ? r->layout.names[i] : k_csv_names[i];
+        }
+        r->acc_scale = r->layout.acc_scale;
+        r->gyr_scale = r->layout.gyr_scale;
         r->time_mode = TIME_COLUMN_S;
         if (setup_header(r, names, !(rate_hz > 0.0)) != 0) {
             return -1;
@@ -1270,12 +1292,17 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     }
     switch (r->time_mode) {
     case TIME_COLUMN_S: {
-        int prc = parse_time_ns(f[r->col_t], &t_ns);
+        int prc = parse_time_ns(f[r->col_t], r->layout.time_digits, &t_ns);
         if (prc != 0) {
             set_err(r, "%s:%ld: time ('%.20s') is %s", r->path, r->stats.lines, f[r->col_t],
                     prc == -2   ? "NaN or Inf"
+                    : prc == -3 && r->layout.time_digits != 9
+                        ? "beyond 9e9 s"
+                    : prc == -3 && r->meta.format != HX_FMT_CSV
+                        ? "beyond 9e9 s (the time column is in seconds; Unix time in milliseconds or "
+                          "nanoseconds must be divided by 1e3 or 1e9)"
                     : prc == -3 ? "beyond 9e9 s (the time column is in seconds; Unix time in milliseconds or "
-                                  "nanoseconds must be divided by 1e3 or 1e9)"
+                                  "nanoseconds: --units time=ms or time=ns)"
                                 : not_a_number(f[r->col_t]));
             return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
         }
@@ -1337,9 +1364,14 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     if (t_ns > FNAV_T_NS_MAX || t_ns < -FNAV_T_NS_MAX) {
         /* time in ms, us or ns read as seconds: Unix time in ms is 1.7e12 "s"
          * (until 2026-11-28 the message named no cause) */
-        set_err(r, "%s:%ld: time %.6g s is beyond 2^62 ns (146 years): is the time column in seconds? (in "
-                   "milliseconds, microseconds or nanoseconds, divide by 1000, 1e6 or 1e9)",
-                r->path, r->stats.lines, (double)t_ns * 1e-9);
+        set_err(r, "%s:%ld: time %.6g s is beyond 2^62 ns (146 years)%s", r->path, r->stats.lines,
+                (double)t_ns * 1e-9,
+                r->meta.format != HX_FMT_CSV ? ": is the time column in seconds? (in milliseconds, microseconds or "
+                                               "nanoseconds, divide by 1000, 1e6 or 1e9)"
+                : r->time_mode == TIME_COLUMN_S && r->layout.time_digits == 9
+                    ? ": is the time column in seconds? (in milliseconds, microseconds or nanoseconds: --units "
+                      "time=ms, us or ns)"
+                    : "");
         return FNAV_E_RANGE;
     }
     if (r->have_prev && t_ns < r->prev_t_ns) {
@@ -1626,15 +1658,29 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
     }
     r->meta.format = fmt;
     copy_str(r->meta.source, sizeof r->meta.source, path);
+    if (g_layout.option == NULL) {
+        hx_csv_layout_default(&r->layout);
+    } else if (fmt != HX_FMT_CSV) {
+        /* the names and units are the interchange CSV's: an importer has
+         * its own */
+        snprintf(err, err_size, "%s: %s appl%s to the interchange CSV (format csv), not to the %s format%s", path,
+                 g_layout.option, strchr(g_layout.option, ' ') != NULL ? "y" : "ies", hx_format_name(fmt),
+                 guessed ? " (detected from the content; give --from csv to read the file as CSV)" : "");
+        gzclose(r->gz);
+        free(r);
+        return NULL;
+    } else {
+        r->layout = g_layout;
+    }
     if (((fmt == HX_FMT_BIN) ? setup_bin(r) : setup_text(r, rate_hz)) != 0) {
-        if (!guessed || (fmt == HX_FMT_CSV && r->missing_col != 0)) {
+        if (!guessed || (fmt == HX_FMT_CSV && (r->missing_col != 0 || r->layout.option != NULL))) {
             /* given with --from, or our CSV known by its 't' column */
             snprintf(err, err_size, "%s", r->err);
         } else if (fmt == HX_FMT_CSV) {
             /* --from alone left a layout no importer reads (a phone app's
              * export) without a way (a contributor's review, 2026-11-30) */
             snprintf(err, err_size, "%s (no importer's header recognised, read as footnav CSV; give --from FORMAT "
-                                    "for another format, or rename the columns and convert the units: "
+                                    "for another format, or give its names and units with --columns and --units: "
                                     "docs/log-format.md, \"Another layout\")", r->err);
         } else {
             snprintf(err, err_size, "%s (format %s detected from the content; give --from FORMAT if it is another)",
@@ -2278,4 +2324,198 @@ void hx_log_free(hx_log_t *log)
     log->gyr = NULL;
     log->temp = NULL;
     log->n = 0;
+}
+
+/* ------------------------------------------------------------ layout */
+
+
+void hx_csv_layout_default(hx_csv_layout_t *l)
+{
+    memset(l, 0, sizeof *l);
+    l->time_digits = 9;
+    l->acc_scale = 1.0;
+    l->gyr_scale = 1.0;
+}
+
+void hx_reader_set_layout(const hx_csv_layout_t *l)
+{
+    if (l == NULL) {
+        hx_csv_layout_default(&g_layout);
+    } else {
+        g_layout = *l;
+    }
+}
+
+/* One "key=value" item of a comma-separated list, blanks around each part
+ * dropped: 1 an item, 0 the end, -1 no '=' (err filled). */
+static int next_item(const char **p, const char *opt, char *key, size_t ksize, char *val, size_t vsize, char *err,
+                     size_t err_size)
+{
+    const char *s = *p, *e, *eq;
+    size_t n;
+    while (*s == ' ' || *s == '\t') {
+        s++;
+    }
+    if (*s == '\0') {
+        return 0;
+    }
+    e = strchr(s, ',');
+    if (e == NULL) {
+        e = s + strlen(s);
+    }
+    eq = memchr(s, '=', (size_t)(e - s));
+    if (eq == NULL) {
+        snprintf(err, err_size, "%s: '%.*s' has no '=' (KEY=VALUE, items separated by commas)", opt, (int)(e - s), s);
+        return -1;
+    }
+    n = (size_t)(eq - s);
+    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t')) {
+        n--;
+    }
+    snprintf(key, ksize, "%.*s", (int)n, s);
+    s = eq + 1;
+    while (s < e && (*s == ' ' || *s == '\t')) {
+        s++;
+    }
+    n = (size_t)(e - s);
+    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t')) {
+        n--;
+    }
+    snprintf(val, vsize, "%.*s", (int)n, s);
+    *p = *e == ',' ? e + 1 : e;
+    return 1;
+}
+
+static void layout_given(hx_csv_layout_t *l, const char *opt)
+{
+    if (l->option == NULL || strcmp(l->option, opt) == 0) {
+        l->option = opt;
+    } else {
+        l->option = "--columns and --units";
+    }
+}
+
+int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t err_size)
+{
+    const char *p = map;
+    char key[16], val[256];
+    int seen = 0, i, j, rc;
+    while ((rc = next_item(&p, "--columns", key, sizeof key, val, sizeof val, err, err_size)) > 0) {
+        for (i = 0; i < 8 && strcmp(key, k_csv_names[i]) != 0; i++) {
+        }
+        if (i == 8) {
+            snprintf(err, err_size, "--columns: unknown column '%s' (the interchange names: t, ax, ay, az, gx, gy, "
+                                    "gz, temp)", key);
+            return -1;
+        }
+        if (seen & (1 << i)) {
+            snprintf(err, err_size, "--columns: '%s' given twice", key);
+            return -1;
+        }
+        if (val[0] == '\0' || strspn(val, " \t\"'") == strlen(val)) {
+            snprintf(err, err_size, "--columns: %s= has an empty name (the file's name of the column)", key);
+            return -1;
+        }
+        if (strlen(val) >= sizeof l->names[i]) {
+            snprintf(err, err_size, "--columns: %s=: a name of more than %d characters", key,
+                     (int)sizeof l->names[i] - 1);
+            return -1;
+        }
+        seen |= 1 << i;
+        memcpy(l->names[i], val, strlen(val) + 1);
+    }
+    if (rc < 0) {
+        return -1;
+    }
+    if (seen == 0) {
+        snprintf(err, err_size, "--columns: no KEY=NAME given (e.g. t=timestamp_ns,ax=acc_x)");
+        return -1;
+    }
+    /* one column of the file for two quantities (named twice, or named
+     * for one key while another keeps it as its default) */
+    for (i = 0; i < 8; i++) {
+        for (j = i + 1; j < 8; j++) {
+            const char *a = l->names[i][0] != '\0' ? l->names[i] : k_csv_names[i];
+            const char *b = l->names[j][0] != '\0' ? l->names[j] : k_csv_names[j];
+            if (squeezed_eq(a, b)) {
+                snprintf(err, err_size, "--columns: column '%s' is named for both %s and %s%s", a, k_csv_names[i],
+                         k_csv_names[j],
+                         l->names[i][0] == '\0' || l->names[j][0] == '\0' ? " (a key not given keeps its own name)"
+                                                                           : "");
+                return -1;
+            }
+        }
+    }
+    layout_given(l, "--columns");
+    return 0;
+}
+
+int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t err_size)
+{
+    const char *p = spec;
+    char key[16], val[16];
+    int seen = 0, rc;
+    while ((rc = next_item(&p, "--units", key, sizeof key, val, sizeof val, err, err_size)) > 0) {
+        int k = strcmp(key, "time") == 0 ? 0 : strcmp(key, "accel") == 0 ? 1 : strcmp(key, "gyro") == 0 ? 2 : -1;
+        if (k < 0) {
+            snprintf(err, err_size, "--units: unknown quantity '%s' (time, accel or gyro)", key);
+            return -1;
+        }
+        if (seen & (1 << k)) {
+            snprintf(err, err_size, "--units: '%s' given twice", key);
+            return -1;
+        }
+        seen |= 1 << k;
+        if (k == 0) {
+            static const char *const tu[4] = { "s", "ms", "us", "ns" };
+            int i;
+            for (i = 0; i < 4 && strcmp(val, tu[i]) != 0; i++) {
+            }
+            if (i == 4) {
+                snprintf(err, err_size, "--units: time=%s: the time unit is s, ms, us or ns", val);
+                return -1;
+            }
+            l->time_digits = 9 - 3 * i;
+        } else if (k == 1) {
+            if (strcmp(val, "m/s2") == 0 || strcmp(val, "m/s^2") == 0 || strcmp(val, "mps2") == 0) {
+                l->acc_scale = 1.0;
+            } else if (strcmp(val, "g") == 0) {
+                l->acc_scale = 9.80665;
+            } else {
+                snprintf(err, err_size, "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, mps2) or g", val);
+                return -1;
+            }
+        } else {
+            if (strcmp(val, "rad/s") == 0) {
+                l->gyr_scale = 1.0;
+            } else if (strcmp(val, "deg/s") == 0 || strcmp(val, "dps") == 0) {
+                l->gyr_scale = 3.14159265358979323846 / 180.0;
+            } else {
+                snprintf(err, err_size, "--units: gyro=%s: the rate unit is rad/s or deg/s (dps)", val);
+                return -1;
+            }
+        }
+    }
+    if (rc < 0) {
+        return -1;
+    }
+    if (seen == 0) {
+        snprintf(err, err_size, "--units: no KEY=UNIT given (e.g. time=ns,accel=g,gyro=deg/s)");
+        return -1;
+    }
+    layout_given(l, "--units");
+    return 0;
+}
+
+hx_format_t hx_detect_file(const char *path)
+{
+    unsigned char head[600];
+    int got;
+    gzFile gz = gzopen(path, "rb");
+    if (gz == NULL) {
+        return HX_FMT_AUTO;
+    }
+    got = gzread(gz, head, sizeof head);
+    gzclose(gz);
+    return got > 0 ? detect(head, (size_t)got) : HX_FMT_AUTO;
 }

@@ -71,6 +71,36 @@ hx_format_t hx_format_from_name(const char *name);
 /** Comma-separated list of the format names (HX_FORMAT_LIST). */
 const char *hx_format_list(void);
 
+/** The interchange CSV under another layout (--columns, --units;
+ *  docs/log-format.md, "Another layout"): the file's name of each
+ *  interchange column and the units of its time, accelerations and rates. */
+typedef struct {
+    char names[8][64];  /**< the file's column for t, ax, ay, az, gx, gy, gz, temp; "" keeps the default name */
+    int time_digits;    /**< ns per unit of the time column as a power of ten: 9 s, 6 ms, 3 us, 0 ns */
+    double acc_scale;   /**< m/s^2 per unit of the accelerations (1, or 9.80665 for g) */
+    double gyr_scale;   /**< rad/s per unit of the rates (1, or pi/180 for deg/s) */
+    const char *option; /**< "--columns", "--units" or "--columns and --units": the options that gave it; NULL: defaults */
+} hx_csv_layout_t;
+
+/** The interchange names and units (t,ax,...,temp in s, m/s^2, rad/s). */
+void hx_csv_layout_default(hx_csv_layout_t *l);
+/** Parse a --columns MAP ("t=timestamp_ns,ax=acc_x,..."; keys t, ax, ay, az,
+ *  gx, gy, gz, temp) into l. 0 ok; -1 with a message in err (an unknown key,
+ *  a key given twice, a missing '=', an empty name, one column named for two
+ *  keys, counting the default names of the keys not given). */
+int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t err_size);
+/** Parse a --units SPEC ("time=ns,accel=g,gyro=deg/s"; time s|ms|us|ns,
+ *  accel m/s2|m/s^2|mps2|g, gyro rad/s|deg/s|dps) into l. 0 ok; -1 with a
+ *  message in err. */
+int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t err_size);
+/** The layout every reader opened afterwards in this process reads the
+ *  interchange CSV with (NULL: the defaults); set once from a command's
+ *  --columns and --units (hx_cli.c). A layout given by an option makes
+ *  opening a log of another format an error that names the option. */
+void hx_reader_set_layout(const hx_csv_layout_t *l);
+/** The format detection gives a file's content (HX_FMT_AUTO: unreadable). */
+hx_format_t hx_detect_file(const char *path);
+
 /**
  * Open a log for reading.
  * @param path       file to read (text formats may be .gz)

@@ -1624,10 +1624,13 @@ static void test_detect_wrong_hint(void **state)
     assert_non_null(strstr(err, ":1: header has no column 't'"));
     assert_non_null(strstr(err, "no importer's header recognised, read as footnav CSV; give --from FORMAT"));
     /* a layout no importer reads (a phone app's export): the error names
-     * the way without C, not only --from (a contributor's review, 2026-11-30) */
+     * the way without C, not only --from (a contributor's review, 2026-11-30):
+     * the options, since 2026-11-30 (it said "rename the columns and
+     * convert the units") */
     write_text(p, "timestamp_ns,acc_x,acc_y,acc_z,gyro_x,gyro_y,gyro_z\n1764500000000000000,1,2,3,4,5,6\n");
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
-    assert_non_null(strstr(err, "or rename the columns and convert the units: docs/log-format.md, \"Another layout\")"));
+    assert_non_null(strstr(err, "or give its names and units with --columns and --units: docs/log-format.md, "
+                                "\"Another layout\")"));
     write_text(p, "t,ax,ay,az,gx,gy\n0,1,2,3,4,5\n"); /* ours, known by its 't': no hint */
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ":1: header has no column 'gz'; expected t,ax,ay,az,gx,gy,gz[,temp]"));
@@ -2080,6 +2083,122 @@ static void test_format_names(void **state)
     assert_int_equal(hx_format_from_name("nonsense"), HX_FMT_COUNT);
 }
 
+/* --columns and --units: the interchange CSV under another layout (a phone
+ * app's export: ns stamps, g, deg/s) read without an awk conversion
+ * (docs/log-format.md, "Another layout"). Until 2026-11-30 such a file had to
+ * be rewritten first. */
+static void test_csv_layout(void **state)
+{
+    char p[512], err[320];
+    readall_t ra;
+    hx_meta_t meta;
+    hx_csv_layout_t l;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    /* the mapping and every unit: Unix time in ns to the ns, g, deg/s */
+    write_text(p, "timestamp_ns, \"Acc_X\",acc_y,acc_z,gyro_x,gyro_y,gyro_z,temperature\n"
+                  "1764460800123456789,0.5,-0.25,1,90,-45,180,21.5\n"
+                  "1764460800126969349,0,0,1,0,0,0,\n");
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "t=timestamp_ns,ax=acc_x,ay=acc_y,az=acc_z,gx=gyro_x,gy=gyro_y,"
+                                              "gz=gyro_z,temp=temperature",
+                                          err, sizeof err),
+                     0);
+    assert_int_equal(hx_csv_units_parse(&l, "time=ns,accel=g,gyro=deg/s", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), 0);
+    assert_int_equal(meta.format, HX_FMT_CSV);
+    assert_int_equal(ra.n, 2);
+    assert_int_equal(ra.end, FNAV_END);
+    assert_true(ra.s[0].t_ns == 1764460800123456789LL);
+    assert_true(ra.s[1].t_ns == 1764460800126969349LL);
+    assert_true(ra.s[0].accel_mps2[0] == (float)(0.5 * 9.80665));
+    assert_true(ra.s[0].accel_mps2[1] == (float)(-0.25 * 9.80665));
+    assert_true(ra.s[0].accel_mps2[2] == (float)9.80665);
+    assert_true(ra.s[0].gyro_rps[0] == (float)(90.0 * (3.14159265358979323846 / 180.0)));
+    assert_true(ra.s[0].gyro_rps[1] == (float)(-45.0 * (3.14159265358979323846 / 180.0)));
+    assert_true(ra.s[0].gyro_rps[2] == (float)(180.0 * (3.14159265358979323846 / 180.0)));
+    assert_true(ra.s[0].temp_c == 21.5f);
+    /* the other spellings: m/s^2, mps2, rad/s, dps, and ms and us stamps,
+     * exact in the decimal text (1.0000005 ms is 1000000.5 ns: rounds up) */
+    {
+        static const struct {
+            const char *units, *t0;
+            long long ns;
+            double acc, gyr;
+        } k[] = {
+            { "time=s,accel=m/s2,gyro=rad/s", "12.000000001", 12000000001LL, 1.0, 1.0 },
+            { "time=ms,accel=m/s^2,gyro=dps", "1500.25", 1500250000LL, 1.0, 3.14159265358979323846 / 180.0 },
+            { "time=ms", "1.0000005", 1000001LL, 1.0, 1.0 },
+            { "time=us,accel=mps2", "1500.2504", 1500250LL, 1.0, 1.0 },
+            { "time=ns", "42", 42LL, 1.0, 1.0 },
+            { "time=ns", "1.5e3", 1500LL, 1.0, 1.0 },
+        };
+        size_t i;
+        tmp_path(p, sizeof p, ".csv");
+        for (i = 0; i < sizeof k / sizeof k[0]; i++) {
+            char text[256];
+            snprintf(text, sizeof text, "t,ax,ay,az,gx,gy,gz\n%s,0,0,9.5,2,0,0\n", k[i].t0);
+            write_text(p, text);
+            hx_csv_layout_default(&l);
+            assert_int_equal(hx_csv_units_parse(&l, k[i].units, err, sizeof err), 0);
+            hx_reader_set_layout(&l);
+            assert_int_equal(read_all(p, HX_FMT_CSV, 0.0, &ra, NULL), 0);
+            assert_int_equal(ra.n, 1);
+            assert_true(ra.s[0].t_ns == k[i].ns);
+            assert_true(ra.s[0].accel_mps2[2] == (float)(9.5 * k[i].acc));
+            assert_true(ra.s[0].gyro_rps[0] == (float)(2.0 * k[i].gyr));
+        }
+    }
+    /* a mapped column the header lacks: the error names it and --columns */
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "time_ns,ax,ay,az,gx,gy,gz\n1,0,0,1,0,0,0\n");
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "t=timestamp_ns", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
+    assert_non_null(strstr(ra.err, "header has no column 'timestamp_ns'"));
+    assert_non_null(strstr(ra.err, "--columns"));
+    /* another format: the options are the interchange CSV's; the error names
+     * the option and the format */
+    write_text(p, "Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Gyroscope Z (deg/s),Accelerometer X (g),"
+                  "Accelerometer Y (g),Accelerometer Z (g)\n0,0,0,0,0,0,1\n");
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_units_parse(&l, "accel=g", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
+    assert_non_null(strstr(ra.err, "--units"));
+    assert_non_null(strstr(ra.err, "ngimu"));
+    hx_reader_set_layout(NULL);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), 0); /* the defaults again */
+    assert_int_equal(meta.format, HX_FMT_NGIMU);
+    /* bad maps and specs: each refused with a message that says why */
+    {
+        static const struct {
+            int units;
+            const char *spec, *says;
+        } bad[] = {
+            { 0, "tx=a", "unknown" },         { 0, "t=a,t=b", "twice" },
+            { 0, "ax=x,ay=x", "'x'" },        { 0, "ax=ay", "'ay'" },
+            { 0, "t", "'='" },                { 0, "t=", "empty" },
+            { 1, "time", "'='" },             { 1, "time=min", "s, ms, us or ns" },
+            { 1, "accel=G2", "m/s2" },        { 1, "gyro=rpm", "rad/s" },
+            { 1, "speed=1", "unknown" },      { 1, "time=ms,time=ns", "twice" },
+        };
+        size_t i;
+        for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+            int rc;
+            err[0] = '\0';
+            hx_csv_layout_default(&l);
+            rc = bad[i].units ? hx_csv_units_parse(&l, bad[i].spec, err, sizeof err)
+                              : hx_csv_columns_parse(&l, bad[i].spec, err, sizeof err);
+            if (rc == 0 || strstr(err, bad[i].says) == NULL) {
+                fail_msg("'%s': rc %d, '%s' (expected an error saying %s)", bad[i].spec, rc, err, bad[i].says);
+            }
+        }
+    }
+}
+
 typedef struct {
     int calls;
     double last;
@@ -2193,6 +2312,7 @@ int main(void)
         cmocka_unit_test(test_bin_rate_unknown),
         cmocka_unit_test(test_format_names),
         cmocka_unit_test(test_load_progress),
+        cmocka_unit_test(test_csv_layout),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);
 }

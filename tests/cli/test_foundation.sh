@@ -278,12 +278,12 @@ expect_err "record #1000 at byte 48192 has 10 of 48 bytes.*; before it: .*record
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n5000000000,0,0,9.8,0,0,0\n' >"$T/farfuture.csv"
 expect_exit 1 "a time beyond 2^62 ns" "$H" info "$T/farfuture.csv"
 expect_err "farfuture.csv:3: time 5e+09 s is beyond 2^62 ns" "a time whose differences would overflow is refused with its line"
-expect_err "is the time column in seconds? (in milliseconds, microseconds or nanoseconds, divide by 1000, 1e6 or 1e9)" \
-    "such a time names the likely unit mistake (time stamps in ns pass 2^62 ns after 4.6 s)"
+expect_err "is the time column in seconds? (in milliseconds, microseconds or nanoseconds: --units time=ms, us or ns)" \
+    "such a time names the likely unit mistake and the option (time stamps in ns pass 2^62 ns after 4.6 s; it said divide by 1e9 until 2026-11-30)"
 printf 't,ax,ay,az,gx,gy,gz\n1700000000000.000,0,0,9.8,0,0,0\n' >"$T/unixms.csv"
 expect_exit 1 "Unix time in milliseconds" "$H" info "$T/unixms.csv"
-expect_err "unixms.csv:2: time ('1700000000000.000') is beyond 9e9 s (the time column is in seconds" \
-    "a time in milliseconds is named as such (was: not a number)"
+expect_err "unixms.csv:2: time ('1700000000000.000') is beyond 9e9 s (the time column is in seconds; Unix time in milliseconds or nanoseconds: --units time=ms or time=ns)" \
+    "a time in milliseconds is named as such, with the option (was: not a number; until 2026-11-30: divide by 1e3)"
 awk 'BEGIN { printf "t,ax,ay,az,gx,gy,gz\r"; for (i = 0; i < 600; i++) printf "%.2f,0,0,9.8,0,0,0\r", i / 100 }' >"$T/cr.csv"
 expect_exit 1 "lines ending in CR alone" "$H" info "$T/cr.csv"
 expect_err "line longer than 4095 characters (its lines end in a carriage return alone" "CR-only line ends are named"
@@ -419,6 +419,55 @@ rm -f "$T/sp.csv"
 expect_exit 2 "two outputs on one new file, DIR//F" "$H" psd vectors/walk.bin --out "$T//sp.csv" --json "$T/sp.csv"
 expect_err "name the same file" "DIR//F and DIR/F refused"
 expect_exit 0 "two different new files in one directory" "$H" replay vectors/walk.bin --quiet --strides "$T/sp1.csv" --json "$T/./sp2.csv"
+
+# --columns and --units read a CSV of another layout, which needed an awk
+# conversion into the interchange format until 2026-11-30 (docs/log-format.md,
+# "Another layout"): the walk as a phone app exports it (ns stamps, g, deg/s,
+# its own names and column order) replays to the byte-identical trajectory
+"$H" convert vectors/walk.bin "$T/lw.csv" >/dev/null 2>&1
+PHONE_AWK='BEGIN { FS = ","; d = 3.14159265358979323846 / 180 }
+NR == 1 { print "timestamp_ns,gyro_x,gyro_y,gyro_z,acc_x,acc_y,acc_z,battery"; next }
+{ split($1, s, "."); t = sprintf("%.0f%s", s[1] + off, s[2]); sub(/^0+/, "", t); if (t == "") t = "0"
+  printf "%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,99\n", t, $5 / d, $6 / d, $7 / d, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665 }'
+awk -v off=0 "$PHONE_AWK" "$T/lw.csv" > "$T/phone.csv"
+LCOLS=t=timestamp_ns,ax=acc_x,ay=acc_y,az=acc_z,gx=gyro_x,gy=gyro_y,gz=gyro_z
+"$H" replay vectors/walk.bin --quiet --out "$T/lw_traj.csv" >/dev/null 2>&1
+expect_exit 0 "replay --columns --units of a phone export" "$H" replay "$T/phone.csv" --quiet --out "$T/ph_traj.csv" \
+    --columns "$LCOLS" --units time=ns,accel=g,gyro=deg/s
+cmp -s "$T/lw_traj.csv" "$T/ph_traj.csv" && pass "--columns --units: the trajectory of the original, byte for byte" ||
+    fail "--columns --units: the trajectory differs from the original's"
+# Unix time in ns is read to the ns: the same as the interchange CSV in s
+awk -v off=1764460800 "$PHONE_AWK" "$T/lw.csv" > "$T/phone_unix.csv"
+awk -F, -v OFS=, 'NR > 1 { split($1, s, "."); $1 = sprintf("%.0f.%s", s[1] + 1764460800, s[2]) } { print }' "$T/lw.csv" > "$T/lw_unix.csv"
+"$H" replay "$T/lw_unix.csv" --quiet --out "$T/lwu_traj.csv" >/dev/null 2>&1
+expect_exit 0 "replay --columns --units, Unix time in ns" "$H" replay "$T/phone_unix.csv" --quiet --out "$T/phu_traj.csv" \
+    --columns "$LCOLS" --units time=ns,accel=g,gyro=deg/s
+cmp -s "$T/lwu_traj.csv" "$T/phu_traj.csv" && pass "--units time=ns: Unix-time stamps exact, as seconds in the text are" ||
+    fail "--units time=ns: Unix-time stamps read differently from the same stamps in seconds"
+# every command that reads a log takes them (info, here)
+expect_exit 0 "info --columns --units" "$H" info "$T/phone.csv" --columns "$LCOLS" --units time=ns,accel=g,gyro=deg/s
+expect_out "csv" "info reads the phone export as the interchange CSV"
+# a wrong --units is still caught by the units check after the replay
+expect_exit 1 "replay of a log in g without accel=g" "$H" replay "$T/phone.csv" --quiet --columns "$LCOLS" --units time=ns,gyro=deg/s
+expect_err "in g" "the units check names g"
+# the mapped name the header lacks is named, with where it came from
+expect_exit 1 "--columns naming no column of the header" "$H" info "$T/phone.csv" --columns t=time_ns
+expect_err "header has no column 'time_ns' (the name --columns gives t)" "the missing mapped column named"
+# command-line errors, exit 2
+expect_exit 2 "--columns: unknown key" "$H" info "$T/phone.csv" --columns tx=timestamp_ns
+expect_err "unknown column 'tx'" "unknown --columns key named"
+expect_exit 2 "--columns: a key twice" "$H" replay "$T/phone.csv" --columns t=a,t=b
+expect_err "'t' given twice" "a key given twice named"
+expect_exit 2 "--columns: no '='" "$H" psd "$T/phone.csv" --columns timestamp_ns
+expect_err "has no '='" "a missing '=' said"
+expect_exit 2 "--units: unknown unit" "$H" info "$T/phone.csv" --units time=min
+expect_err "s, ms, us or ns" "the time units listed"
+for c in info replay allan psd simgap; do
+    expect_exit 2 "$c: --units on a .bin" "$H" $c vectors/walk.bin --units accel=g
+    expect_err "--units applies to the interchange CSV (format csv), not to the bin format" "$c: --units on a .bin: option and format named"
+done
+expect_exit 2 "convert: --columns with --from ngimu" "$H" convert "$T/phone.csv" "$T/c.bin" --from ngimu --columns t=timestamp_ns
+expect_err "--columns applies to the interchange CSV (format csv), not to the ngimu format" "--columns with another --from named"
 
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]

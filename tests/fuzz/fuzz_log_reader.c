@@ -1,6 +1,7 @@
 /* Fuzz target: every log reader (.bin, CSV and the importers). The first
  * input byte selects the format (0: detect, 1..: forced) and whether the
- * whole-log loader or the streaming reader is used; the rest is the file. */
+ * whole-log loader or the streaming reader is used (a CSV also under
+ * --units); the rest is the file. */
 #include <stdint.h>
 #include <string.h>
 
@@ -31,17 +32,36 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             hx_log_free(&log);
         }
     } else {
-        hx_reader_t *r = hx_reader_open(path, fmt, 0.0, err, sizeof err);
-        if (r != NULL) {
-            fnav_sample_t s;
-            long n = 0;
-            while (hx_reader_next(r, &s) == FNAV_OK && n < 1000000) {
-                n++;
+        /* the streaming reader as the file's format reads it, then, for a
+         * CSV (given or detected), again under --units (the time unit by the
+         * input's size: s, ms, us, ns; g, deg/s), whose time parsing moves
+         * the decimal point in the text; another detected format is refused */
+        int pass;
+        for (pass = 0; pass < (fmt == HX_FMT_AUTO || fmt == HX_FMT_CSV ? 2 : 1); pass++) {
+            hx_reader_t *r;
+            if (pass == 1) {
+                static const char *const units[4] = { "time=s,accel=g,gyro=deg/s", "time=ms,accel=g,gyro=deg/s",
+                                                      "time=us,accel=g,gyro=deg/s", "time=ns,accel=g,gyro=deg/s" };
+                hx_csv_layout_t l;
+                hx_csv_layout_default(&l);
+                if (hx_csv_units_parse(&l, units[size & 3u], err, sizeof err) != 0) {
+                    __builtin_trap();
+                }
+                hx_reader_set_layout(&l);
             }
-            (void)hx_reader_error(r);
-            (void)hx_reader_warnings(r);
-            hx_reader_close(r);
+            r = hx_reader_open(path, fmt, 0.0, err, sizeof err);
+            if (r != NULL) {
+                fnav_sample_t s;
+                long n = 0;
+                while (hx_reader_next(r, &s) == FNAV_OK && n < 1000000) {
+                    n++;
+                }
+                (void)hx_reader_error(r);
+                (void)hx_reader_warnings(r);
+                hx_reader_close(r);
+            }
         }
+        hx_reader_set_layout(NULL);
     }
     unlink(path);
     return 0;
