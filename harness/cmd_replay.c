@@ -124,7 +124,7 @@ int hx_cmd_replay(int argc, char **argv)
     }
     hx_command_line(cmdline, sizeof cmdline, "harness replay", argc, argv);
     rc = hx_nav_replay("replay", a.pos[0], fmt, in_rate, &cfg, o.rate_hz, csv, &traj,
-                       HX_REPLAY_PROGRESS | HX_REPLAY_AXES | (strides_path != NULL ? HX_REPLAY_EVENTS : 0u), err,
+                       HX_REPLAY_PROGRESS | HX_REPLAY_AXES | HX_REPLAY_UNITS_OPT | (strides_path != NULL ? HX_REPLAY_EVENTS : 0u), err,
                        sizeof err);
     traj.input_complete = 1;
     hx_traj_set_config(&traj, &o, &cfg);

@@ -2346,6 +2346,15 @@ void hx_reader_set_layout(const hx_csv_layout_t *l)
     }
 }
 
+void hx_reader_layout(hx_csv_layout_t *l)
+{
+    if (g_layout.option == NULL) {
+        hx_csv_layout_default(l);
+    } else {
+        *l = g_layout;
+    }
+}
+
 /* One "key=value" item of a comma-separated list, blanks around each part
  * dropped: 1 an item, 0 the end, -1 no '=' (err filled). */
 static int next_item(const char **p, const char *opt, char *key, size_t ksize, char *val, size_t vsize, char *err,
