@@ -1665,7 +1665,9 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
          * its own */
         snprintf(err, err_size, "%s: %s appl%s to the interchange CSV (format csv), not to the %s format%s", path,
                  g_layout.option, strchr(g_layout.option, ' ') != NULL ? "y" : "ies", hx_format_name(fmt),
-                 guessed ? " (detected from the content; give --from csv to read the file as CSV)" : "");
+                 !guessed               ? ""
+                 : fmt == HX_FMT_BIN ? " (detected from the content)" /* no text: --from csv reads a NUL byte */
+                                     : " (detected from the content; give --from csv to read the file as CSV)");
         gzclose(r->gz);
         free(r);
         return NULL;

@@ -2169,6 +2169,28 @@ static void test_csv_layout(void **state)
     assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
     assert_non_null(strstr(ra.err, "--units"));
     assert_non_null(strstr(ra.err, "ngimu"));
+    assert_non_null(strstr(ra.err, "give --from csv"));
+    /* a .bin is no text: not told to give --from csv, which reads "a NUL
+     * byte in the text" (it was told to until 2026-11-30) */
+    {
+        hx_meta_t bm;
+        hx_writer_t *w;
+        fnav_sample_t s;
+        char pb[512];
+        memset(&bm, 0, sizeof bm);
+        bm.rate_hz = 100.0;
+        bm.rate_nominal = 1;
+        memset(&s, 0, sizeof s);
+        s.accel_mps2[2] = -9.81f;
+        tmp_path(pb, sizeof pb, ".bin");
+        w = hx_writer_open(pb, HX_FMT_AUTO, &bm, 0, err, sizeof err);
+        assert_non_null(w);
+        assert_int_equal(hx_writer_write(w, &s), FNAV_OK);
+        assert_int_equal(hx_writer_close(w, err, sizeof err), FNAV_OK);
+        assert_int_equal(read_all(pb, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
+        assert_non_null(strstr(ra.err, "not to the bin format"));
+        assert_null(strstr(ra.err, "--from csv"));
+    }
     hx_reader_set_layout(NULL);
     assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), 0); /* the defaults again */
     assert_int_equal(meta.format, HX_FMT_NGIMU);
