@@ -337,17 +337,21 @@ static int parse_time_ns(const char *s, int k, int64_t *out)
                                      100000000LL, 1000000000LL };
     const int64_t lim = 9000000000LL * p10[9 - k]; /* 9e9 s in the unit */
     const char *p = s;
-    int neg = 0, digits = 0, frac = 0, extra = 0, up = 0;
+    int neg = 0, digits = 0, frac = 0, extra = 0, up = 0, over = 0;
     int64_t ip = 0, fp = 0;
     if (*p == '+' || *p == '-') {
         neg = (*p == '-');
         p++;
     }
     while (isdigit((unsigned char)*p)) {
-        if (ip > (lim - (*p - '0')) / 10) {
-            return -3; /* beyond 9e9 s: int64 ns would overflow */
+        /* beyond 9e9 s, where int64 ns would overflow: said below unless an
+         * exponent follows ("100000000000000000000e-15" is 1e5 s; it was
+         * refused here before the exponent was seen) */
+        if (over || ip > (lim - (*p - '0')) / 10) {
+            over = 1;
+        } else {
+            ip = ip * 10 + (*p - '0');
         }
-        ip = ip * 10 + (*p - '0');
         p++;
         digits++;
     }
@@ -379,6 +383,9 @@ static int parse_time_ns(const char *s, int k, int64_t *out)
         }
         *out = (int64_t)(v + (v >= 0.0 ? 0.5 : -0.5));
         return 0;
+    }
+    if (over) {
+        return -3;
     }
     while (frac < k) {
         fp *= 10;

@@ -2133,6 +2133,10 @@ static void test_csv_layout(void **state)
             { "time=us,accel=mps2", "1500.2504", 1500250LL, 1.0, 1.0 },
             { "time=ns", "42", 42LL, 1.0, 1.0 },
             { "time=ns", "1.5e3", 1500LL, 1.0, 1.0 },
+            /* more integer digits than 9e9 s holds, scaled down by an
+             * exponent: a number, not "beyond 9e9 s" (it was, 2026-11-30) */
+            { "time=s", "100000000000000000000e-15", 100000000000000LL, 1.0, 1.0 },
+            { "time=ns", "90000000000000000000e-2", 900000000000000000LL, 1.0, 1.0 },
         };
         size_t i;
         tmp_path(p, sizeof p, ".csv");
