@@ -841,7 +841,10 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
     r->missing_col = -1;
     for (i = 0; i < 8; i++) {
         int c = (names[i] != NULL) ? find_col(f, n, names[i]) : -1;
-        if (c < 0 && names[i] != NULL && (i < 7) && (i > 0 || time_required)) {
+        /* a name --columns gave is required, also temp's and t's with a rate
+         * given (they were dropped without a word) */
+        const int given = r->meta.format == HX_FMT_CSV && r->layout.names[i][0] != '\0';
+        if (c < 0 && names[i] != NULL && (given || ((i < 7) && (i > 0 || time_required)))) {
             r->missing_col = i;
             if (total > HX_MAX_COLS) {
                 /* the column may be there, past the ones read (it said "header

@@ -2163,6 +2163,22 @@ static void test_csv_layout(void **state)
     assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
     assert_non_null(strstr(ra.err, "header has no column 'timestamp_ns'"));
     assert_non_null(strstr(ra.err, "--columns"));
+    /* so is a mapped temp, an optional column, and a mapped t with the rate
+     * given: a name the user gave is there (both were ignored, the
+     * temperature left out or the time taken from the rate, until
+     * 2026-11-30) */
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n0,0,0,1,0,0,0\n");
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "temp=temperature", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    assert_int_equal(read_all(p, HX_FMT_CSV, 0.0, &ra, NULL), -1);
+    assert_non_null(strstr(ra.err, "header has no column 'temperature' (the name --columns gives temp)"));
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "t=timestamp_ns", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    write_text(p, "time_ns,ax,ay,az,gx,gy,gz\n1,0,0,1,0,0,0\n");
+    assert_int_equal(read_all(p, HX_FMT_CSV, 100.0, &ra, NULL), -1);
+    assert_non_null(strstr(ra.err, "header has no column 'timestamp_ns' (the name --columns gives t)"));
     /* another format: the options are the interchange CSV's; the error names
      * the option and the format */
     write_text(p, "Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Gyroscope Z (deg/s),Accelerometer X (g),"
