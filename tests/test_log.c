@@ -2241,6 +2241,16 @@ static void test_csv_layout(void **state)
     }
 }
 
+/* test_csv_layout's teardown: the process-wide layout back to the
+ * defaults also when an assertion left the test midway (the tests after it
+ * read the interchange CSV) */
+static int layout_reset(void **state)
+{
+    (void)state;
+    hx_reader_set_layout(NULL);
+    return 0;
+}
+
 typedef struct {
     int calls;
     double last;
@@ -2354,7 +2364,7 @@ int main(void)
         cmocka_unit_test(test_bin_rate_unknown),
         cmocka_unit_test(test_format_names),
         cmocka_unit_test(test_load_progress),
-        cmocka_unit_test(test_csv_layout),
+        cmocka_unit_test_teardown(test_csv_layout, layout_reset),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);
 }
