@@ -679,6 +679,13 @@ awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g\n", 
     vectors/nav/golden/gx2_walk2.csv > "$T/in_gdeg.csv"
 expect_exit 1 "accelerometer in g and gyroscope in deg/s" "$H" replay "$T/in_gdeg.csv" --quiet
 expect_err "in g (give --units accel=g); also the gyroscope .*probably in deg/s (give --units gyro=deg/s)" "both unit mistakes named"
+# all three (g, deg/s, ms): the message whole, to its end (replay's error was cut at 400 characters, in the
+# third: "also the samples are ; outputs were still written")
+awk -F, 'NR == 1 { print; next } { printf "%.6f,%s,%s,%s,%s,%s,%s\n", $1 * 1000, $2, $3, $4, $5, $6, $7 }' \
+    "$T/in_gdeg.csv" > "$T/in_gdegms.csv"
+expect_exit 1 "g, deg/s and ms" "$H" replay "$T/in_gdegms.csv" --quiet
+expect_err "(give --units gyro=deg/s); also the samples are .*give --units time=ms) (docs/log-format.md); outputs were still written" \
+    "three unit mistakes: the whole message"
 expect_exit 0 "info on a log in deg/s" "$H" info "$T/in_deg.csv"
 expect_out "units       NOT SI: .*probably in deg/s" "info names the units too"
 # one figure for one log: replay said 454.7 rad/s (the vector's magnitude),
