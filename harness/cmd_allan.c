@@ -733,7 +733,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
          * tells deg/s. */
         R->moving = R->win_n > 0 && (double)R->win_moving > HX_ALLAN_MOVING_FRAC * (double)R->win_n;
         R->units_bad = hx_units_problem(R->moving ? 0.0 : sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]), 9.80665,
-                                        R->gyro_max, 0.0, R->units_msg, sizeof R->units_msg);
+                                        R->gyro_max, 0.0, NULL, R->units_msg, sizeof R->units_msg);
         if (!(rate_opt > 0.0)) {
             R->time_unit_warned = slow_check(path, R->rate_hz);
         }

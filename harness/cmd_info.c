@@ -191,7 +191,7 @@ static void analyse(const hx_log_t *log, info_t *in)
         double wmax = in->peak[3] > in->peak[4] ? in->peak[3] : in->peak[4];
         wmax = wmax > in->peak[5] ? wmax : in->peak[5];
         /* the rate is not judged here: a static log for the Allan variance may be slow */
-        in->units_bad = hx_units_problem(in->g_mag, 9.80665, wmax, 0.0, in->units, sizeof in->units);
+        in->units_bad = hx_units_problem(in->g_mag, 9.80665, wmax, 0.0, NULL, in->units, sizeof in->units);
     }
 }
 

@@ -48,7 +48,10 @@ int hx_cmd_replay(int argc, char **argv)
     double in_rate = 0.0;
     const char *out_path, *json_path, *plot_path, *strides_path, *from;
     FILE *csv = NULL, *summary_to;
-    char err[400], cmdline[1024];
+    /* err holds the units check's message (as long as the JSON's
+     * units_problem) after the log's name: at 400 characters it was cut in
+     * the third of three unit mistakes */
+    char err[sizeof traj.units_problem + 512], cmdline[1024];
     int rc, exit_code = HX_EXIT_OK;
     if (hx_nav_param_help_requested(argc, argv)) {
         return HX_EXIT_OK;
@@ -124,7 +127,7 @@ int hx_cmd_replay(int argc, char **argv)
     }
     hx_command_line(cmdline, sizeof cmdline, "harness replay", argc, argv);
     rc = hx_nav_replay("replay", a.pos[0], fmt, in_rate, &cfg, o.rate_hz, csv, &traj,
-                       HX_REPLAY_PROGRESS | HX_REPLAY_AXES | (strides_path != NULL ? HX_REPLAY_EVENTS : 0u), err,
+                       HX_REPLAY_PROGRESS | HX_REPLAY_AXES | HX_REPLAY_UNITS_OPT | (strides_path != NULL ? HX_REPLAY_EVENTS : 0u), err,
                        sizeof err);
     traj.input_complete = 1;
     hx_traj_set_config(&traj, &o, &cfg);
@@ -140,7 +143,7 @@ int hx_cmd_replay(int argc, char **argv)
         }
         traj.input_complete = 0;
         traj.output_failed = 1;
-        snprintf(traj.input_error, sizeof traj.input_error, "%s", err);
+        snprintf(traj.input_error, sizeof traj.input_error, "%.*s", (int)sizeof traj.input_error - 1, err);
     }
     if (csv != NULL && (csv == stdout ? fflush(csv) != 0 || ferror(csv) : fclose(csv) != 0) && rc >= 0) {
         snprintf(err, sizeof err, "cannot write %s", strcmp(out_path, "-") == 0 ? "standard output" : out_path);
@@ -158,7 +161,7 @@ int hx_cmd_replay(int argc, char **argv)
         hx_error("replay", "%s (frames before it were written)", err);
         exit_code = HX_EXIT_DATA;
         traj.input_complete = 0;
-        snprintf(traj.input_error, sizeof traj.input_error, "%s", err);
+        snprintf(traj.input_error, sizeof traj.input_error, "%.*s", (int)sizeof traj.input_error - 1, err);
     } else if (rc == 2) {
         hx_error("replay", "%s; outputs were still written, computed from the values as given", err);
         exit_code = HX_EXIT_DATA;

@@ -366,9 +366,11 @@ int hx_check_input_opts(const char *cmd, const hx_args_t *a)
             const char *opt = hx_arg(a, "--columns") == NULL  ? "--units"
                               : hx_arg(a, "--units") == NULL ? "--columns"
                                                              : "--columns and --units";
+            /* a .bin is no text: --from csv reads "a NUL byte" */
             hx_error(cmd, "%s: %s appl%s to the interchange CSV (format csv), not to the %s format (detected from "
-                          "the content; give --from csv to read the file as CSV)",
-                     a->pos[0], opt, strchr(opt, ' ') != NULL ? "y" : "ies", hx_format_name(got));
+                          "the content%s)",
+                     a->pos[0], opt, strchr(opt, ' ') != NULL ? "y" : "ies", hx_format_name(got),
+                     got == HX_FMT_BIN ? "" : "; give --from csv to read the file as CSV");
             return -1;
         }
     }

@@ -337,17 +337,21 @@ static int parse_time_ns(const char *s, int k, int64_t *out)
                                      100000000LL, 1000000000LL };
     const int64_t lim = 9000000000LL * p10[9 - k]; /* 9e9 s in the unit */
     const char *p = s;
-    int neg = 0, digits = 0, frac = 0, extra = 0, up = 0;
+    int neg = 0, digits = 0, frac = 0, extra = 0, up = 0, over = 0;
     int64_t ip = 0, fp = 0;
     if (*p == '+' || *p == '-') {
         neg = (*p == '-');
         p++;
     }
     while (isdigit((unsigned char)*p)) {
-        if (ip > (lim - (*p - '0')) / 10) {
-            return -3; /* beyond 9e9 s: int64 ns would overflow */
+        /* beyond 9e9 s, where int64 ns would overflow: said below unless an
+         * exponent follows ("100000000000000000000e-15" is 1e5 s; it was
+         * refused here before the exponent was seen) */
+        if (over || ip > (lim - (*p - '0')) / 10) {
+            over = 1;
+        } else {
+            ip = ip * 10 + (*p - '0');
         }
-        ip = ip * 10 + (*p - '0');
         p++;
         digits++;
     }
@@ -379,6 +383,9 @@ static int parse_time_ns(const char *s, int k, int64_t *out)
         }
         *out = (int64_t)(v + (v >= 0.0 ? 0.5 : -0.5));
         return 0;
+    }
+    if (over) {
+        return -3;
     }
     while (frac < k) {
         fp *= 10;
@@ -834,7 +841,10 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
     r->missing_col = -1;
     for (i = 0; i < 8; i++) {
         int c = (names[i] != NULL) ? find_col(f, n, names[i]) : -1;
-        if (c < 0 && names[i] != NULL && (i < 7) && (i > 0 || time_required)) {
+        /* a name --columns gave is required, also temp's and t's with a rate
+         * given (they were dropped without a word) */
+        const int given = r->meta.format == HX_FMT_CSV && r->layout.names[i][0] != '\0';
+        if (c < 0 && names[i] != NULL && (given || ((i < 7) && (i > 0 || time_required)))) {
             r->missing_col = i;
             if (total > HX_MAX_COLS) {
                 /* the column may be there, past the ones read (it said "header
@@ -1665,7 +1675,9 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
          * its own */
         snprintf(err, err_size, "%s: %s appl%s to the interchange CSV (format csv), not to the %s format%s", path,
                  g_layout.option, strchr(g_layout.option, ' ') != NULL ? "y" : "ies", hx_format_name(fmt),
-                 guessed ? " (detected from the content; give --from csv to read the file as CSV)" : "");
+                 !guessed               ? ""
+                 : fmt == HX_FMT_BIN ? " (detected from the content)" /* no text: --from csv reads a NUL byte */
+                                     : " (detected from the content; give --from csv to read the file as CSV)");
         gzclose(r->gz);
         free(r);
         return NULL;
@@ -2343,6 +2355,15 @@ void hx_reader_set_layout(const hx_csv_layout_t *l)
         hx_csv_layout_default(&g_layout);
     } else {
         g_layout = *l;
+    }
+}
+
+void hx_reader_layout(hx_csv_layout_t *l)
+{
+    if (g_layout.option == NULL) {
+        hx_csv_layout_default(l);
+    } else {
+        *l = g_layout;
     }
 }
 

@@ -98,6 +98,8 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
  *  --columns and --units (hx_cli.c). A layout given by an option makes
  *  opening a log of another format an error that names the option. */
 void hx_reader_set_layout(const hx_csv_layout_t *l);
+/** The layout hx_reader_set_layout set (the defaults when none was). */
+void hx_reader_layout(hx_csv_layout_t *l);
 /** The format detection gives a file's content (HX_FMT_AUTO: unreadable). */
 hx_format_t hx_detect_file(const char *path);
 

@@ -898,8 +898,8 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 #define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
 #define HX_RATE_MIN_HZ 20.0    /* below this, no stance lasts more than a few samples */
 #define HX_ACCEL_MEAN_MAX_G 10.0 /* a foot's mean |f| over a log, in g, stays far below (the 66 shared walks and trials 1.0-2.0, the simulator's run 3.3) */
-int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz, char *msg,
-                     size_t msg_size)
+int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
+                     const hx_csv_layout_t *csv, char *msg, size_t msg_size)
 {
     /* every mistake found is named (a log in g and deg/s names both) */
     double g = gravity_mps2;
@@ -923,7 +923,8 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
                      "m/s^2%s",
                      f_rest_mps2, g,
                      fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL
-                         ? " but in g (multiply by 9.80665)"
+                         ? csv != NULL && csv->acc_scale == 1.0 ? " but in g (give --units accel=g)"
+                                                                : " but in g (multiply by 9.80665)"
                          : fabs(f_rest_mps2 * 0.00980665 / g - 1.0) < HX_GRAVITY_TOL ? " but in mg (multiply by 0.00980665)"
                                                                                      : "");
     }
@@ -931,25 +932,35 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
         HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis (its largest |w| on a single axis), beyond the "
                      "range of any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): the log is not in rad/s%s",
                      gyro_max_rps, HX_GYRO_MAX_RPS,
-                     gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS ? " but probably in deg/s (multiply by pi/180)"
-                                                                    : "");
+                     gyro_max_rps * M_PI / 180.0 >= HX_GYRO_MAX_RPS ? ""
+                     : csv != NULL && csv->gyr_scale == 1.0       ? " but probably in deg/s (give --units gyro=deg/s)"
+                                                                  : " but probably in deg/s (multiply by pi/180)");
     }
     if (rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ) {
         /* the unit that makes the rate one a foot-mounted IMU has (20 Hz to
          * 100 kHz): 2.5 ms read as 2.5 s (ms), as 2511 s (us), as 2.5e6 s
-         * (ns); until 2026-11-28 the remedy always named milliseconds */
+         * (ns); until 2026-11-28 the remedy always named milliseconds. The
+         * interchange CSV's remedy is --units time=, counted from the unit
+         * it was read in (us read as ms look like ms: time=us) */
         static const struct {
             double scale;
-            const char *name, *div;
-        } k_units[] = { { 1e3, "milliseconds", "1000" }, { 1e6, "microseconds", "1e6" },
-                        { 1e9, "nanoseconds", "1e9" } };
-        const char *name = NULL, *div = NULL;
+            const char *div;
+        } k_units[] = { { 1e3, "1000" }, { 1e6, "1e6" }, { 1e9, "1e9" } };
+        /* by (9 - k) / 3, for 10^k ns per unit */
+        static const char *const k_name[4] = { "seconds", "milliseconds", "microseconds", "nanoseconds" };
+        static const char *const k_opt[4] = { "s", "ms", "us", "ns" };
+        const char *name = NULL, *div = NULL, *opt = NULL;
+        const int k = csv != NULL ? csv->time_digits : 9; /* the unit the stamps were read in */
         size_t u;
         for (u = 0; u < sizeof k_units / sizeof k_units[0]; u++) {
             const double r_u = rate_hz * k_units[u].scale;
             if (r_u >= HX_RATE_MIN_HZ && r_u <= 1e5) {
-                name = k_units[u].name;
-                div = k_units[u].div;
+                const int true_k = k - 3 * (int)(u + 1u);
+                if (true_k >= 0) {
+                    name = k_name[(9 - true_k) / 3];
+                    div = k_units[u].div;
+                    opt = csv != NULL ? k_opt[(9 - true_k) / 3] : NULL;
+                }
                 break;
             }
         }
@@ -958,15 +969,17 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
              * logger's counter), which --input-rate serves without the
              * column (the gait review, 2026-11-30) */
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
-                         "time stamps in seconds? (they look like %s: divide by %s%s)",
-                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, name, div,
+                         "time stamps in %s? (they look like %s: %s%s%s)",
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, k_name[(9 - k) / 3], name,
+                         opt != NULL ? "give --units time=" : "divide by ", opt != NULL ? opt : div,
                          fabs(rate_hz - 1.0) < 1e-9 ? "; or, if they count samples, leave the column out and give the "
                                                       "rate with --input-rate HZ"
                                                     : "");
         } else {
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
-                         "time stamps in seconds? (in milliseconds, divide by 1000)",
-                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ);
+                         "time stamps in seconds? (in milliseconds, %s)",
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ,
+                         csv != NULL && k == 9 ? "give --units time=ms" : "divide by 1000");
         }
     }
 #undef HX_UNITS_ADD
@@ -983,9 +996,9 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
     "HZ (docs/log-format.md, \"CSV interchange\")"
 
 /* 2 when the replayed log is not in SI units (err says why, without the
- * log's name: the JSON's units_problem), else 0. */
-static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean, double in_rate_hz, char *err,
-                       size_t err_size)
+ * log's name: the JSON's units_problem), else 0. csv: as hx_units_problem's. */
+static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean, double in_rate_hz,
+                       const hx_csv_layout_t *csv, char *err, size_t err_size)
 {
     char msg[768], acc[320] = "", rep[320] = "";
     const double g = (double)nav->cfg.gravity_mps2;
@@ -1007,8 +1020,9 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
          * g; a walk in m/s^2 averages g or more (its motion adds to |f|) */
         snprintf(acc, sizeof acc,
                  "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 averages %.4g or more: "
-                 "the log is probably in g (multiply by 9.80665)",
-                 f_norm_mean, g);
+                 "the log is probably in g (%s)",
+                 f_norm_mean, g,
+                 csv != NULL && csv->acc_scale == 1.0 ? "give --units accel=g" : "multiply by 9.80665");
     }
     if (!nav->aligned && fn == 0.0 && f_norm_mean > HX_ACCEL_MEAN_MAX_G * g) {
         /* no rest found, and a mean |f| no foot reaches: mg, cm/s^2 or raw
@@ -1033,7 +1047,7 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
                  100.0 * (double)nav->stats.duplicates / (double)nav->stats.samples, 1.0 / rate, rate);
         rate = 0.0;
     }
-    bad = hx_units_problem(fn, g, gyro_max_rps, rate, msg, sizeof msg);
+    bad = hx_units_problem(fn, g, gyro_max_rps, rate, csv, msg, sizeof msg);
     if (rep[0] != '\0') {
         size_t len = strlen(msg);
         if (len < sizeof msg) {
@@ -1069,6 +1083,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     hx_reader_t *r = NULL;
     hx_log_t raw, res;
     fnav_status_t st;
+    hx_format_t in_fmt; /* the format read: the units check's remedy */
     int rc = 0;
     memset(&pc, 0, sizeof pc);
     memset(&raw, 0, sizeof raw);
@@ -1088,6 +1103,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
          * bridged), as the unresampled replay prints them below; they were
          * dropped here */
         hx_print_warnings(cmd, raw.warnings);
+        in_fmt = raw.meta.format;
         if (lrc > 0) {
             snprintf(err, err_size, "%s", raw.error);
             rc = 1;
@@ -1118,6 +1134,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         if (r == NULL) {
             return -1;
         }
+        in_fmt = hx_reader_meta(r)->format;
     }
     {
         /* Stamps too coarse for a median interval (a 398 Hz log printed to
@@ -1302,8 +1319,12 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     if (rc == 0) {
         /* wrong units are also why a log never looks still */
         char msg[sizeof traj->units_problem];
-        int u = units_check(&nav, pc.gyro_max_rps, pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0,
-                            traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0, msg, sizeof msg);
+        hx_csv_layout_t lay;
+        int u;
+        hx_reader_layout(&lay);
+        u = units_check(&nav, pc.gyro_max_rps, pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0,
+                        traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0,
+                        (flags & HX_REPLAY_UNITS_OPT) && in_fmt == HX_FMT_CSV ? &lay : NULL, msg, sizeof msg);
         if (traj != NULL) {
             /* the JSON's units_problem ("" when none) */
             traj->units_checked = 1;

@@ -184,15 +184,20 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
 /** Whether a log's values look like SI units (docs/harness.md, "Units
  *  check"): |f| at rest within 25 % of gravity (0: not known), no rate above
  *  70 rad/s, samples at least 20 per second (0: not known). 1 with the
- *  mistake and its remedy in msg, else 0. */
-int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz, char *msg,
-                     size_t msg_size);
+ *  mistake and its remedy in msg, else 0. csv: the layout an interchange
+ *  CSV was read with, by a command that takes --units: a remedy it can give
+ *  names the option (accel=g, gyro=deg/s, time=ms|us|ns from the unit given);
+ *  NULL: the arithmetic (multiply by 9.80665, divide by 1000). */
+int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
+                     const hx_csv_layout_t *csv, char *msg, size_t msg_size);
 
 #define HX_REPLAY_PROGRESS 0x1u /**< hx_nav_replay: progress indicator */
 #define HX_REPLAY_AXES 0x2u     /**< hx_nav_replay: the axes check (48 integrations per swing sample) */
 #define HX_REPLAY_EVENTS 0x4u   /**< hx_nav_replay: keep the strides' gait events in traj->ev (a second
                                      fnav_stance_t fed the samples the navigator accepted, whose outputs
                                      are checked against its frames: fnav_nav_frame_t has no event times) */
+#define HX_REPLAY_UNITS_OPT 0x8u /**< hx_nav_replay: the command takes --units: the units check's remedy for
+                                      the interchange CSV names it (hx_units_problem) */
 
 /**
  * Replay one log through the Linux port into a navigator, sample by sample.

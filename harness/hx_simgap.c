@@ -1502,7 +1502,7 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
         }
     }
     qsort(fm, nf, sizeof *fm, hx_cmp_double);
-    bad = hx_units_problem(fm[nf / 2], 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, msg, sizeof msg);
+    bad = hx_units_problem(fm[nf / 2], 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, NULL, msg, sizeof msg);
     free(wm);
     free(fm);
     if (!bad && r->domain == 1) {

@@ -2133,6 +2133,10 @@ static void test_csv_layout(void **state)
             { "time=us,accel=mps2", "1500.2504", 1500250LL, 1.0, 1.0 },
             { "time=ns", "42", 42LL, 1.0, 1.0 },
             { "time=ns", "1.5e3", 1500LL, 1.0, 1.0 },
+            /* more integer digits than 9e9 s holds, scaled down by an
+             * exponent: a number, not "beyond 9e9 s" (it was, 2026-11-30) */
+            { "time=s", "100000000000000000000e-15", 100000000000000LL, 1.0, 1.0 },
+            { "time=ns", "90000000000000000000e-2", 900000000000000000LL, 1.0, 1.0 },
         };
         size_t i;
         tmp_path(p, sizeof p, ".csv");
@@ -2159,6 +2163,22 @@ static void test_csv_layout(void **state)
     assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
     assert_non_null(strstr(ra.err, "header has no column 'timestamp_ns'"));
     assert_non_null(strstr(ra.err, "--columns"));
+    /* so is a mapped temp, an optional column, and a mapped t with the rate
+     * given: a name the user gave is there (both were ignored, the
+     * temperature left out or the time taken from the rate, until
+     * 2026-11-30) */
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n0,0,0,1,0,0,0\n");
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "temp=temperature", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    assert_int_equal(read_all(p, HX_FMT_CSV, 0.0, &ra, NULL), -1);
+    assert_non_null(strstr(ra.err, "header has no column 'temperature' (the name --columns gives temp)"));
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "t=timestamp_ns", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    write_text(p, "time_ns,ax,ay,az,gx,gy,gz\n1,0,0,1,0,0,0\n");
+    assert_int_equal(read_all(p, HX_FMT_CSV, 100.0, &ra, NULL), -1);
+    assert_non_null(strstr(ra.err, "header has no column 'timestamp_ns' (the name --columns gives t)"));
     /* another format: the options are the interchange CSV's; the error names
      * the option and the format */
     write_text(p, "Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Gyroscope Z (deg/s),Accelerometer X (g),"
@@ -2169,6 +2189,28 @@ static void test_csv_layout(void **state)
     assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
     assert_non_null(strstr(ra.err, "--units"));
     assert_non_null(strstr(ra.err, "ngimu"));
+    assert_non_null(strstr(ra.err, "give --from csv"));
+    /* a .bin is no text: not told to give --from csv, which reads "a NUL
+     * byte in the text" (it was told to until 2026-11-30) */
+    {
+        hx_meta_t bm;
+        hx_writer_t *w;
+        fnav_sample_t s;
+        char pb[512];
+        memset(&bm, 0, sizeof bm);
+        bm.rate_hz = 100.0;
+        bm.rate_nominal = 1;
+        memset(&s, 0, sizeof s);
+        s.accel_mps2[2] = -9.81f;
+        tmp_path(pb, sizeof pb, ".bin");
+        w = hx_writer_open(pb, HX_FMT_AUTO, &bm, 0, err, sizeof err);
+        assert_non_null(w);
+        assert_int_equal(hx_writer_write(w, &s), FNAV_OK);
+        assert_int_equal(hx_writer_close(w, err, sizeof err), FNAV_OK);
+        assert_int_equal(read_all(pb, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
+        assert_non_null(strstr(ra.err, "not to the bin format"));
+        assert_null(strstr(ra.err, "--from csv"));
+    }
     hx_reader_set_layout(NULL);
     assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), 0); /* the defaults again */
     assert_int_equal(meta.format, HX_FMT_NGIMU);
@@ -2197,6 +2239,16 @@ static void test_csv_layout(void **state)
             }
         }
     }
+}
+
+/* test_csv_layout's teardown: the process-wide layout back to the
+ * defaults also when an assertion left the test midway (the tests after it
+ * read the interchange CSV) */
+static int layout_reset(void **state)
+{
+    (void)state;
+    hx_reader_set_layout(NULL);
+    return 0;
 }
 
 typedef struct {
@@ -2312,7 +2364,7 @@ int main(void)
         cmocka_unit_test(test_bin_rate_unknown),
         cmocka_unit_test(test_format_names),
         cmocka_unit_test(test_load_progress),
-        cmocka_unit_test(test_csv_layout),
+        cmocka_unit_test_teardown(test_csv_layout, layout_reset),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);
 }

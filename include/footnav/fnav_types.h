@@ -99,6 +99,14 @@ static inline fnav_real_t fnav_fmod(fnav_real_t x, fnav_real_t y) { return fmodf
  *  two range comparisons were three VCMPs with their VMRS: 1,952 bytes less
  *  flash for the firmware image, the same worst-case stack (docs/firmware.md,
  *  "Budget"; tests/test_math.c test_isfinite). */
+/* the bits through memcpy; GCC's and Clang's builtin also in a program
+ * built -ffreestanding or -fno-builtin, where memcpy is a call at every
+ * check (tests/cli/test_install.sh) */
+#if defined(__GNUC__) || defined(__clang__)
+#define FNAV_BITS_COPY(dst, src, n) __builtin_memcpy(dst, src, n)
+#else
+#define FNAV_BITS_COPY(dst, src, n) memcpy(dst, src, n)
+#endif
 #if FNAV_USE_DOUBLE
 #if DBL_MANT_DIG != 53 || DBL_MAX_EXP != 1024
 #error "fnav_isfinite expects IEEE-754 binary64 double"
@@ -106,7 +114,7 @@ static inline fnav_real_t fnav_fmod(fnav_real_t x, fnav_real_t y) { return fmodf
 static inline FNAV_ALWAYS_INLINE int fnav_isfinite(fnav_real_t x)
 {
     uint64_t u;
-    memcpy(&u, &x, sizeof u);
+    FNAV_BITS_COPY(&u, &x, sizeof u);
     return (u & UINT64_C(0x7ff0000000000000)) != UINT64_C(0x7ff0000000000000);
 }
 #else
@@ -116,7 +124,7 @@ static inline FNAV_ALWAYS_INLINE int fnav_isfinite(fnav_real_t x)
 static inline FNAV_ALWAYS_INLINE int fnav_isfinite(fnav_real_t x)
 {
     uint32_t u;
-    memcpy(&u, &x, sizeof u);
+    FNAV_BITS_COPY(&u, &x, sizeof u);
     return (u & 0x7f800000u) != 0x7f800000u;
 }
 #endif

@@ -466,6 +466,15 @@ for c in info replay allan psd simgap; do
     expect_exit 2 "$c: --units on a .bin" "$H" $c vectors/walk.bin --units accel=g
     expect_err "--units applies to the interchange CSV (format csv), not to the bin format" "$c: --units on a .bin: option and format named"
 done
+# a .bin is no text: not told to give --from csv, which reads it as "a NUL byte in the text" (it was told to)
+if grep -q -- "--from csv" "$T/err"; then fail "a .bin with --units told to give --from csv"; else
+    pass "a .bin with --units not told to give --from csv"; fi
+expect_exit 1 "--from csv --units on a .bin" "$H" info vectors/walk.bin --from csv --units accel=g
+expect_err "a NUL byte in the text" "--from csv on a .bin: binary data named"
+# a text format detected from the content is still told how to read it as CSV
+printf 'Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Gyroscope Z (deg/s),Accelerometer X (g),Accelerometer Y (g),Accelerometer Z (g)\n0,0,0,0,0,0,1\n' > "$T/ngimu1.csv"
+expect_exit 2 "--units on a detected ngimu log" "$H" info "$T/ngimu1.csv" --units accel=g
+expect_err "not to the ngimu format (detected from the content; give --from csv to read the file as CSV)" "a detected text format: --from csv hinted"
 expect_exit 2 "convert: --columns with --from ngimu" "$H" convert "$T/phone.csv" "$T/c.bin" --from ngimu --columns t=timestamp_ns
 expect_err "--columns applies to the interchange CSV (format csv), not to the ngimu format" "--columns with another --from named"
 

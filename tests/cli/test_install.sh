@@ -246,6 +246,23 @@ check_headers() { # DESTDIR LABEL: each installed header alone, in C (twice over
     fi
 }
 check_headers "$D" float
+# fnav_isfinite reads the bits with memcpy, which a freestanding program
+# (-ffreestanding, -fno-builtin: no builtins, as some firmware builds) turned
+# into a call of memcpy at every check, at any -O: it is to stay inline
+printf '#include "footnav/fnav_math.h"\nint fin(float x, fnav_vec3_t v);\nint fin(float x, fnav_vec3_t v) { return fnav_isfinite(x) + fnav_vec3_isfinite(v); }\n' >"$T/fin.c"
+fbad=""
+for o in -O0 -O2; do
+    for fl in -ffreestanding -fno-builtin; do
+        # shellcheck disable=SC2046
+        if (cd "$T" && $CC -std=c99 -pedantic -Wall -Wextra -Werror $o $fl $(pc "$D" --cflags footnav) -c fin.c -o fin.o) >"$T/err" 2>&1; then
+            nm -u "$T/fin.o" | grep -q -w memcpy && fbad="$fbad $o$fl"
+        else
+            fbad="$fbad $o$fl(no build)"; head -n 5 "$T/err"
+        fi
+    done
+done
+[ -z "$fbad" ] && pass "fnav_isfinite calls no memcpy in a freestanding program (-O0, -O2; -ffreestanding, -fno-builtin)" ||
+    fail "fnav_isfinite calls memcpy with:$fbad"
 # the guard in every header that declares anything (fnav_config*.h and
 # fnav_version.h hold macros only)
 nog=$(cd "$D/usr/include/footnav" && grep -L 'extern "C"' ./*.h | sed 's|^\./||' | grep -v '^fnav_config\|^fnav_version\.h$' | tr '\n' ' ')

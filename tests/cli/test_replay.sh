@@ -647,16 +647,28 @@ if command -v gnuplot >/dev/null 2>&1; then
 fi
 # a walk in the wrong units navigates into nonsense without a reader error:
 # each mistake is named with its remedy, exit 1, and the outputs are still
-# written (from the values as given)
+# written (from the values as given). The interchange CSV's remedy is the
+# --units option (it was the arithmetic, "multiply by 9.80665", until
+# 2026-11-30); a format that cannot take --units keeps the arithmetic
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_g.csv"
 expect_exit 1 "accelerometer in g" "$H" replay "$T/in_g.csv" --json "$T/in_g.json"
-expect_err "not in m/s^2 but in g (multiply by 9.80665)" "a log in g is named as such"
+expect_err "not in m/s^2 but in g (give --units accel=g)" "a log in g is named as such, with the option"
 [ -s "$T/in_g.json" ] && pass "JSON written for a log in g" || fail "no JSON for a log in g"
+# a .bin in g (a format --units does not apply to): the arithmetic remedy, not the option
+expect_exit 0 "convert a log in g to .bin" "$H" convert "$T/in_g.csv" "$T/in_g.bin"
+expect_exit 1 "accelerometer in g, .bin" "$H" replay "$T/in_g.bin" --quiet
+expect_err "not in m/s^2 but in g (multiply by 9.80665)" "a .bin in g: the arithmetic remedy"
+if grep -q -- "--units" "$T/err"; then fail "a .bin told to give --units"; else pass "a .bin not told to give --units"; fi
+# an accelerometer in g with accel=g given already (values in g/9.80665): not told to give accel=g again
+awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5, $6, $7 }' \
+    "$T/in_g.csv" > "$T/in_g2.csv"
+expect_exit 1 "accelerometer in g, read with accel=g, still 9.8 times small" "$H" replay "$T/in_g2.csv" --quiet --units accel=g
+expect_err "but in g (multiply by 9.80665)" "accel=g given: the arithmetic remedy"
 awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.7g,%.7g,%.7g\n", $1, $2, $3, $4, $5 * 57.29578, $6 * 57.29578, $7 * 57.29578 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_deg.csv"
 expect_exit 1 "gyroscope in deg/s" "$H" replay "$T/in_deg.csv" --quiet
-expect_err "probably in deg/s (multiply by pi/180)" "a log in deg/s is named as such"
+expect_err "probably in deg/s (give --units gyro=deg/s)" "a log in deg/s is named as such, with the option"
 # an accelerometer that reads 0 throughout is named as dead, not as a walk
 # without a still period
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3f,0,0,0,0.001,0,0\n", i / 200 }' > "$T/zacc.csv"
@@ -666,7 +678,14 @@ expect_err "the accelerometer reads 0 throughout: disconnected" "a dead accelero
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5 * 57.29578, $6 * 57.29578, $7 * 57.29578 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_gdeg.csv"
 expect_exit 1 "accelerometer in g and gyroscope in deg/s" "$H" replay "$T/in_gdeg.csv" --quiet
-expect_err "in g (multiply by 9.80665); also the gyroscope .*probably in deg/s" "both unit mistakes named"
+expect_err "in g (give --units accel=g); also the gyroscope .*probably in deg/s (give --units gyro=deg/s)" "both unit mistakes named"
+# all three (g, deg/s, ms): the message whole, to its end (replay's error was cut at 400 characters, in the
+# third: "also the samples are ; outputs were still written")
+awk -F, 'NR == 1 { print; next } { printf "%.6f,%s,%s,%s,%s,%s,%s\n", $1 * 1000, $2, $3, $4, $5, $6, $7 }' \
+    "$T/in_gdeg.csv" > "$T/in_gdegms.csv"
+expect_exit 1 "g, deg/s and ms" "$H" replay "$T/in_gdegms.csv" --quiet
+expect_err "(give --units gyro=deg/s); also the samples are .*give --units time=ms) (docs/log-format.md); outputs were still written" \
+    "three unit mistakes: the whole message"
 expect_exit 0 "info on a log in deg/s" "$H" info "$T/in_deg.csv"
 expect_out "units       NOT SI: .*probably in deg/s" "info names the units too"
 # one figure for one log: replay said 454.7 rad/s (the vector's magnitude),
@@ -687,24 +706,28 @@ expect_exit 1 "time in milliseconds" "$H" replay "$T/in_ms.csv" --out "$T/in_ms_
 expect_err "are the time stamps in seconds" "time stamps in ms are named as such"
 rows=$(($(wc -l < "$T/in_ms_traj.csv") - 1))
 [ "$rows" -gt 1000 ] && pass "trajectory written for a log in ms ($rows frames)" || fail "trajectory of a log in ms: $rows frames"
-expect_err "they look like milliseconds: divide by 1000" "the remedy names milliseconds"
+expect_err "they look like milliseconds: give --units time=ms)" "the remedy names milliseconds and the option"
 # stamps in microseconds or nanoseconds: the remedy named milliseconds for both (2.5 ms read as 2511 s:
 # "in milliseconds, divide by 1000", which left them 2.5 s apart)
 awk -F, 'NR == 1 { print; next } { printf "%.0f,%s,%s,%s,%s,%s,%s\n", $1 * 1e6, $2, $3, $4, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_us.csv"
 expect_exit 1 "time in microseconds" "$H" replay "$T/in_us.csv" --quiet
-expect_err "they look like microseconds: divide by 1e6" "time stamps in us are named as such"
+expect_err "they look like microseconds: give --units time=us)" "time stamps in us are named as such"
+# a --units time= already given counts: us read as ms are 1000 times too far apart again, and the remedy is
+# time=us, not the time=ms given
+expect_exit 1 "time in microseconds read as ms" "$H" replay "$T/in_us.csv" --quiet --units time=ms
+expect_err "they look like microseconds: give --units time=us)" "us read with --units time=ms: time=us named"
 awk -F, 'NR == 1 { print; next } NR < 400 { printf "%.0f,%s,%s,%s,%s,%s,%s\n", $1 * 1e9, $2, $3, $4, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_ns.csv"
 expect_exit 1 "time in nanoseconds" "$H" replay "$T/in_ns.csv" --quiet
-expect_err "they look like nanoseconds: divide by 1e9" "time stamps in ns are named as such"
+expect_err "they look like nanoseconds: give --units time=ns)" "time stamps in ns are named as such"
 # a t column that counts samples (0, 1, 2, ...), as a logger's sample number often does: it was told only to
 # divide by 1000 (right for a 1 kHz log in ms, wrong for a 250 Hz one); the remedy for a counter, leaving the
 # column out and giving --input-rate, is named too (the gait review, 2026-11-30)
 awk -F, 'NR == 1 { print; next } { printf "%d,%s,%s,%s,%s,%s,%s\n", NR - 2, $2, $3, $4, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_idx.csv"
 expect_exit 1 "time as a sample number" "$H" replay "$T/in_idx.csv" --quiet
-expect_err "they look like milliseconds: divide by 1000; or, if they count samples, leave the column out and give the rate with --input-rate HZ" \
+expect_err "they look like milliseconds: give --units time=ms; or, if they count samples, leave the column out and give the rate with --input-rate HZ" \
     "a sample number as time: the counter's remedy named"
 expect_exit 1 "time in milliseconds, again" "$H" replay "$T/in_ms.csv" --quiet
 if grep -q "count samples" "$T/err"; then fail "stamps in ms (4 ms apart) told they may count samples"; else
