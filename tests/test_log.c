@@ -2112,13 +2112,13 @@ static void test_csv_layout(void **state)
     assert_int_equal(ra.end, FNAV_END);
     assert_true(ra.s[0].t_ns == 1764460800123456789LL);
     assert_true(ra.s[1].t_ns == 1764460800126969349LL);
-    assert_true(ra.s[0].accel_mps2[0] == (float)(0.5 * 9.80665));
-    assert_true(ra.s[0].accel_mps2[1] == (float)(-0.25 * 9.80665));
-    assert_true(ra.s[0].accel_mps2[2] == (float)9.80665);
-    assert_true(ra.s[0].gyro_rps[0] == (float)(90.0 * (3.14159265358979323846 / 180.0)));
-    assert_true(ra.s[0].gyro_rps[1] == (float)(-45.0 * (3.14159265358979323846 / 180.0)));
-    assert_true(ra.s[0].gyro_rps[2] == (float)(180.0 * (3.14159265358979323846 / 180.0)));
-    assert_true(ra.s[0].temp_c == 21.5f);
+    assert_true((float)ra.s[0].accel_mps2[0] == (float)(0.5 * 9.80665));
+    assert_true((float)ra.s[0].accel_mps2[1] == (float)(-0.25 * 9.80665));
+    assert_true((float)ra.s[0].accel_mps2[2] == (float)9.80665);
+    assert_true((float)ra.s[0].gyro_rps[0] == (float)(90.0 * (3.14159265358979323846 / 180.0)));
+    assert_true((float)ra.s[0].gyro_rps[1] == (float)(-45.0 * (3.14159265358979323846 / 180.0)));
+    assert_true((float)ra.s[0].gyro_rps[2] == (float)(180.0 * (3.14159265358979323846 / 180.0)));
+    assert_true((float)ra.s[0].temp_c == 21.5f);
     /* the other spellings: m/s^2, mps2, rad/s, dps, and ms and us stamps,
      * exact in the decimal text (1.0000005 ms is 1000000.5 ns: rounds up) */
     {
@@ -2150,8 +2150,8 @@ static void test_csv_layout(void **state)
             assert_int_equal(read_all(p, HX_FMT_CSV, 0.0, &ra, NULL), 0);
             assert_int_equal(ra.n, 1);
             assert_true(ra.s[0].t_ns == k[i].ns);
-            assert_true(ra.s[0].accel_mps2[2] == (float)(9.5 * k[i].acc));
-            assert_true(ra.s[0].gyro_rps[0] == (float)(2.0 * k[i].gyr));
+            assert_true((float)ra.s[0].accel_mps2[2] == (float)(9.5 * k[i].acc));
+            assert_true((float)ra.s[0].gyro_rps[0] == (float)(2.0 * k[i].gyr));
         }
     }
     /* a mapped column the header lacks: the error names it and --columns */
