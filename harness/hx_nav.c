@@ -908,6 +908,20 @@ const char *hx_units_fix_dps(const hx_csv_layout_t *csv)
     return csv != NULL && csv->gyr_scale == 1.0 ? "give --units gyro=deg/s" : "multiply by pi/180";
 }
 
+/* An accelerometer in mg is judged on the file's values, before --units
+ * accel=g multiplied them by 9.80665: mg read as g are 1000 times too large
+ * (the mg mark missed them: "raw counts?" or no unit at all), and their
+ * remedy keeps the option given. */
+static double acc_read_scale(const hx_csv_layout_t *csv)
+{
+    return csv != NULL ? csv->acc_scale : 1.0;
+}
+
+static const char *mg_fix(const hx_csv_layout_t *csv)
+{
+    return acc_read_scale(csv) == 1.0 ? "multiply by 0.00980665" : "read as g by --units accel=g: divide by 1000";
+}
+
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
                      const hx_csv_layout_t *csv, char *msg, size_t msg_size)
 {
@@ -932,8 +946,8 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
         char fix[96] = "";
         if (fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL) {
             snprintf(fix, sizeof fix, " but in g (%s)", hx_units_fix_g(csv));
-        } else if (fabs(f_rest_mps2 * 0.00980665 / g - 1.0) < HX_GRAVITY_TOL) {
-            snprintf(fix, sizeof fix, " but in mg (multiply by 0.00980665)");
+        } else if (fabs(f_rest_mps2 / acc_read_scale(csv) * 0.00980665 / g - 1.0) < HX_GRAVITY_TOL) {
+            snprintf(fix, sizeof fix, " but in mg (%s)", mg_fix(csv));
         }
         HX_UNITS_ADD("the accelerometer reads |f| = %.4g at rest, where gravity is %.4g m/s^2: the log is not in "
                      "m/s^2%s",
@@ -1020,13 +1034,13 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
         /* no rest found, and a mean |f| no foot reaches: mg, cm/s^2 or raw
          * counts, whose noise also hides every still period (it said only
          * "no still period": the generality review, 2026-11-30) */
-        const double in_g = f_norm_mean * 0.00980665 / g;
+        const double in_g = f_norm_mean / acc_read_scale(csv) * 0.00980665 / g; /* the file's values in mg */
+        const int mg = in_g > 0.75 && in_g < HX_ACCEL_MEAN_MAX_G;
         snprintf(acc, sizeof acc,
                  "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 on a foot averages a few "
-                 "times %.4g at most: the log is not in m/s^2: %s",
-                 f_norm_mean, g,
-                 in_g > 0.75 && in_g < HX_ACCEL_MEAN_MAX_G ? "in mg? (multiply by 0.00980665)"
-                                                          : "raw counts? (scale them by the sensor's sensitivity)");
+                 "times %.4g at most: the log is not in m/s^2: %s%s%s",
+                 f_norm_mean, g, mg ? "in mg? (" : "raw counts? (scale them by the sensor's sensitivity)",
+                 mg ? mg_fix(csv) : "", mg ? ")" : "");
     }
     rate = in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz;
     if (hx_nav_coarse_stamps(&nav->stats) && rate > 0.0 && rate < HX_RATE_MIN_HZ) {
