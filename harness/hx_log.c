@@ -1671,13 +1671,9 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
     if (g_layout.option == NULL) {
         hx_csv_layout_default(&r->layout);
     } else if (fmt != HX_FMT_CSV) {
-        /* the names and units are the interchange CSV's: an importer has
-         * its own */
-        snprintf(err, err_size, "%s: %s appl%s to the interchange CSV (format csv), not to the %s format%s", path,
-                 g_layout.option, strchr(g_layout.option, ' ') != NULL ? "y" : "ies", hx_format_name(fmt),
-                 !guessed               ? ""
-                 : fmt == HX_FMT_BIN ? " (detected from the content)" /* no text: --from csv reads a NUL byte */
-                                     : " (detected from the content; give --from csv to read the file as CSV)");
+        /* for a caller that skipped hx_check_input_opts, which refuses it
+         * as a usage error before reading */
+        hx_layout_refusal(err, err_size, path, g_layout.option, fmt, guessed);
         gzclose(r->gz);
         free(r);
         return NULL;
@@ -2395,6 +2391,18 @@ const hx_csv_layout_t *hx_units_layout(hx_format_t fmt, hx_csv_layout_t *buf)
     }
     hx_reader_layout(buf);
     return buf;
+}
+
+void hx_layout_refusal(char *msg, size_t msg_size, const char *path, const char *opt, hx_format_t fmt,
+                       int detected)
+{
+    /* the names and units are the interchange CSV's: an importer has its own */
+    snprintf(msg, msg_size, "%s%s%s appl%s to the interchange CSV (format csv), not to the %s format%s",
+             path != NULL ? path : "", path != NULL ? ": " : "", opt, strchr(opt, ' ') != NULL ? "y" : "ies",
+             hx_format_name(fmt),
+             !detected              ? ""
+             : fmt == HX_FMT_BIN ? " (detected from the content)" /* no text: --from csv reads a NUL byte */
+                                 : " (detected from the content; give --from csv to read the file as CSV)");
 }
 
 /* One "key=value" item of a comma-separated list, blanks around each part

@@ -106,6 +106,14 @@ void hx_reader_layout(hx_csv_layout_t *l);
  *  the interchange CSV, which --units reads; NULL for another format, whose
  *  remedy is the arithmetic. */
 const hx_csv_layout_t *hx_units_layout(hx_format_t fmt, hx_csv_layout_t *buf);
+/** The refusal of a layout (opt: its option, hx_csv_layout_t.option) for a
+ *  log of another format fmt, one text for the usage error of
+ *  hx_check_input_opts and the reader's error: "[PATH: ]OPT applies to the
+ *  interchange CSV (format csv), not to the FMT format", and for a format
+ *  detected from the content (not given with --from) where it came from
+ *  and, but for a .bin (no text), "give --from csv". path NULL: none. */
+void hx_layout_refusal(char *msg, size_t msg_size, const char *path, const char *opt, hx_format_t fmt,
+                       int detected);
 /** The format detection gives a file's content (HX_FMT_AUTO: unreadable). */
 hx_format_t hx_detect_file(const char *path);
 
