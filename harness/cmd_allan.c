@@ -144,6 +144,7 @@ typedef struct {
     double gyro_max;         /* a log's largest |rate| on any axis (units check) */
     int units_bad;           /* the log is not in SI units (hx_units_problem; units_msg says why) */
     char units_msg[768];
+    hx_format_t in_fmt;      /* a log's format: the units remedies name --units for the interchange CSV */
     int time_unit_warned;    /* slow_check() warned that the time stamps look like ms, us or ns */
     /* motion check: one-second windows of the log (sums for the spread of
      * the rate and of |f| within each) */
@@ -601,10 +602,11 @@ static void disturbed_check(const run_t *R, const char *path)
  * nanoseconds explains (20 Hz to 100 kHz once divided) is warned about:
  * 30 minutes of ADIS16405 log 1 with t in ms read as 0.1 Hz without a word,
  * tau 1000 times and sigma_v 31.6 times too large (the static review). */
-static int slow_check(const char *path, double rate_hz)
+static int slow_check(const char *path, double rate_hz, hx_format_t fmt)
 {
     char msg[320];
-    if (hx_time_unit_hint(rate_hz, msg, sizeof msg)) {
+    hx_csv_layout_t lay;
+    if (hx_time_unit_hint(rate_hz, hx_units_layout(fmt, &lay), msg, sizeof msg)) {
         hx_warn(CMD, "%s: %s; tau, sigma_v and the profile are read at %.3g Hz", path, msg, rate_hz);
         return 1;
     }
@@ -626,6 +628,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         return -1;
     }
     snprintf(R->sensor, sizeof R->sensor, "%s", hx_reader_meta(r)->sensor);
+    R->in_fmt = hx_reader_meta(r)->format;
     /* a log whose format names no sensor (a CSV's "unknown"): the header
      * names the format, as info does ("(unknown)" before) */
     if (R->sensor[0] == '\0' || strcmp(R->sensor, "unknown") == 0) {
@@ -731,11 +734,13 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
          * mistake ("|f| = 13.58 at rest ... not in m/s^2" for a walk in
          * m/s^2). The motion is named instead; the gyro's range still
          * tells deg/s. */
+        hx_csv_layout_t lay;
         R->moving = R->win_n > 0 && (double)R->win_moving > HX_ALLAN_MOVING_FRAC * (double)R->win_n;
         R->units_bad = hx_units_problem(R->moving ? 0.0 : sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]), 9.80665,
-                                        R->gyro_max, 0.0, NULL, R->units_msg, sizeof R->units_msg);
+                                        R->gyro_max, 0.0, hx_units_layout(R->in_fmt, &lay), R->units_msg,
+                                        sizeof R->units_msg);
         if (!(rate_opt > 0.0)) {
-            R->time_unit_warned = slow_check(path, R->rate_hz);
+            R->time_unit_warned = slow_check(path, R->rate_hz, R->in_fmt);
         }
     }
     return rc;
@@ -2463,13 +2468,14 @@ int hx_cmd_allan(int argc, char **argv)
                 (double)R->grid[R->ngrid - 1u] / R->rate_hz);
     }
     if (R->moving) {
+        hx_csv_layout_t lay;
         hx_error(CMD,
                  "%s: the log moves: in %ld of its %ld one-second windows the rate spreads by more than %g rad/s "
                  "RMS or |f| by more than %g m/s^2 (the first at %.0f s): not a static log (a walk?); the Allan "
                  "variance and its bias model describe a sensor at rest (a gyro in deg/s at rest also reads so: "
-                 "multiply by pi/180) (docs/allan.md, \"Command\")",
+                 "%s) (docs/allan.md, \"Command\")",
                  path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2,
-                 R->win_first_moving_s);
+                 R->win_first_moving_s, hx_units_fix_dps(hx_units_layout(R->in_fmt, &lay)));
         exit_code = HX_EXIT_DATA;
     } else if (R->win_moving > 0) {
         motion_report(R, path, hx_arg(&a, "--profile") != NULL);

@@ -189,9 +189,11 @@ static void analyse(const hx_log_t *log, info_t *in)
     }
     {
         double wmax = in->peak[3] > in->peak[4] ? in->peak[3] : in->peak[4];
+        hx_csv_layout_t lay; /* the remedies name --units for the interchange CSV, as replay's */
         wmax = wmax > in->peak[5] ? wmax : in->peak[5];
         /* the rate is not judged here: a static log for the Allan variance may be slow */
-        in->units_bad = hx_units_problem(in->g_mag, 9.80665, wmax, 0.0, NULL, in->units, sizeof in->units);
+        in->units_bad = hx_units_problem(in->g_mag, 9.80665, wmax, 0.0, hx_units_layout(log->meta.format, &lay),
+                                         in->units, sizeof in->units);
     }
 }
 
@@ -297,7 +299,9 @@ int hx_cmd_info(int argc, char **argv)
          * allan and psd say it (a warning: a static log may be slow), where
          * until 2026-11-29 info printed the rate without a word */
         char hint[256];
-        if (!log.meta.rate_nominal && hx_time_unit_hint(in.rate_hz, hint, sizeof hint)) {
+        hx_csv_layout_t lay;
+        if (!log.meta.rate_nominal &&
+            hx_time_unit_hint(in.rate_hz, hx_units_layout(log.meta.format, &lay), hint, sizeof hint)) {
             hx_warn("info", "%s: %s", a.pos[0], hint);
         }
     }

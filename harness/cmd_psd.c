@@ -800,7 +800,8 @@ int hx_cmd_psd(int argc, char **argv)
         /* a time column in milliseconds (100 Hz read as 0.1 Hz) was said
          * only as an answer above the log's rate (the static review) */
         char msg[320];
-        if (hx_time_unit_hint(rate, msg, sizeof msg)) {
+        hx_csv_layout_t lay;
+        if (hx_time_unit_hint(rate, hx_units_layout(log.meta.format, &lay), msg, sizeof msg)) {
             hx_warn(CMD, "%s: %s; the frequencies are read at %.3g Hz", a.pos[0], msg, rate);
         }
     }

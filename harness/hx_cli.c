@@ -342,8 +342,8 @@ static int input_options(const char *cmd, const hx_args_t *a, hx_format_t *fmt, 
             return -1;
         }
         if (l.option != NULL && *fmt != HX_FMT_CSV && *fmt != HX_FMT_AUTO) {
-            hx_error(cmd, "%s appl%s to the interchange CSV (format csv), not to the %s format", l.option,
-                     strchr(l.option, ' ') != NULL ? "y" : "ies", hx_format_name(*fmt));
+            hx_layout_refusal(err, sizeof err, NULL, l.option, *fmt, 0);
+            hx_error(cmd, "%s", err);
             return -1;
         }
         hx_reader_set_layout(&l);
@@ -355,22 +355,19 @@ int hx_check_input_opts(const char *cmd, const hx_args_t *a)
 {
     hx_format_t fmt;
     double rate;
+    hx_csv_layout_t l;
     if (input_options(cmd, a, &fmt, &rate) != 0) {
         return -1;
     }
-    if (fmt == HX_FMT_AUTO && (hx_arg(a, "--columns") != NULL || hx_arg(a, "--units") != NULL) && a->npos > 0) {
+    hx_reader_layout(&l); /* input_options set it: l.option names the options given, NULL none */
+    if (fmt == HX_FMT_AUTO && l.option != NULL && a->npos > 0) {
         /* a log detected as another format is a usage error too, as with
          * --from (the reader would refuse it as unreadable data) */
         const hx_format_t got = hx_detect_file(a->pos[0]);
         if (got != HX_FMT_AUTO && got != HX_FMT_CSV) {
-            const char *opt = hx_arg(a, "--columns") == NULL  ? "--units"
-                              : hx_arg(a, "--units") == NULL ? "--columns"
-                                                             : "--columns and --units";
-            /* a .bin is no text: --from csv reads "a NUL byte" */
-            hx_error(cmd, "%s: %s appl%s to the interchange CSV (format csv), not to the %s format (detected from "
-                          "the content%s)",
-                     a->pos[0], opt, strchr(opt, ' ') != NULL ? "y" : "ies", hx_format_name(got),
-                     got == HX_FMT_BIN ? "" : "; give --from csv to read the file as CSV");
+            char msg[1024];
+            hx_layout_refusal(msg, sizeof msg, a->pos[0], l.option, got, 1);
+            hx_error(cmd, "%s", msg);
             return -1;
         }
     }

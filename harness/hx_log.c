@@ -1671,13 +1671,9 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
     if (g_layout.option == NULL) {
         hx_csv_layout_default(&r->layout);
     } else if (fmt != HX_FMT_CSV) {
-        /* the names and units are the interchange CSV's: an importer has
-         * its own */
-        snprintf(err, err_size, "%s: %s appl%s to the interchange CSV (format csv), not to the %s format%s", path,
-                 g_layout.option, strchr(g_layout.option, ' ') != NULL ? "y" : "ies", hx_format_name(fmt),
-                 !guessed               ? ""
-                 : fmt == HX_FMT_BIN ? " (detected from the content)" /* no text: --from csv reads a NUL byte */
-                                     : " (detected from the content; give --from csv to read the file as CSV)");
+        /* for a caller that skipped hx_check_input_opts, which refuses it
+         * as a usage error before reading */
+        hx_layout_refusal(err, err_size, path, g_layout.option, fmt, guessed);
         gzclose(r->gz);
         free(r);
         return NULL;
@@ -1802,30 +1798,51 @@ int hx_interval_irregular(int64_t dt_ns, double rate_hz, int64_t res_ns)
     return fabs(dt - 1.0 / rate_hz) > 0.1 / rate_hz + slack;
 }
 
-int hx_time_unit_hint(double rate_hz, char *msg, size_t msg_size)
+int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix)
 {
     static const struct {
         double scale;
-        const char *name, *div;
-    } k_units[] = { { 1e3, "milliseconds", "1000" }, { 1e6, "microseconds", "1e6" }, { 1e9, "nanoseconds", "1e9" } };
+        const char *div;
+    } k_units[] = { { 1e3, "1000" }, { 1e6, "1e6" }, { 1e9, "1e9" } };
+    /* by (9 - digits) / 3 */
+    static const char *const k_name[4] = { "seconds", "milliseconds", "microseconds", "nanoseconds" };
+    static const char *const k_opt[4] = { "s", "ms", "us", "ns" };
     size_t u;
-    if (msg_size > 0u) {
-        msg[0] = '\0';
-    }
-    if (!(rate_hz > 0.0 && rate_hz < 1.0)) {
-        return 0;
-    }
+    memset(fix, 0, sizeof *fix);
+    fix->read = k_name[(9 - digits) / 3];
     for (u = 0; u < sizeof k_units / sizeof k_units[0]; u++) {
         const double r_u = rate_hz * k_units[u].scale;
         if (r_u >= 20.0 && r_u <= 1e5) {
-            snprintf(msg, msg_size,
-                     "the samples are %.4g s apart (%.3g Hz): are the time stamps in seconds? (they look like %s, a "
-                     "%.4g Hz log: divide by %s)",
-                     1.0 / rate_hz, rate_hz, k_units[u].name, r_u, k_units[u].div);
+            /* us read as ms look like us; nothing is finer than ns */
+            const int true_digits = digits - 3 * (int)(u + 1u);
+            if (true_digits < 0) {
+                return 0;
+            }
+            fix->name = k_name[(9 - true_digits) / 3];
+            fix->opt = k_opt[(9 - true_digits) / 3];
+            fix->div = k_units[u].div;
+            fix->rate_hz = r_u;
             return 1;
         }
     }
     return 0;
+}
+
+int hx_time_unit_hint(double rate_hz, const hx_csv_layout_t *csv, char *msg, size_t msg_size)
+{
+    hx_time_fix_t fix;
+    if (msg_size > 0u) {
+        msg[0] = '\0';
+    }
+    if (!(rate_hz > 0.0 && rate_hz < 1.0) || !hx_time_unit_fix(rate_hz, csv != NULL ? csv->time_digits : 9, &fix)) {
+        return 0;
+    }
+    snprintf(msg, msg_size,
+             "the samples are %.4g s apart (%.3g Hz): are the time stamps in %s? (they look like %s, a %.4g Hz log: "
+             "%s%s)",
+             1.0 / rate_hz, rate_hz, fix.read, fix.name, fix.rate_hz, csv != NULL ? "give --units time=" : "divide by ",
+             csv != NULL ? fix.opt : fix.div);
+    return 1;
 }
 
 double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)
@@ -2365,6 +2382,27 @@ void hx_reader_layout(hx_csv_layout_t *l)
     } else {
         *l = g_layout;
     }
+}
+
+const hx_csv_layout_t *hx_units_layout(hx_format_t fmt, hx_csv_layout_t *buf)
+{
+    if (fmt != HX_FMT_CSV) {
+        return NULL;
+    }
+    hx_reader_layout(buf);
+    return buf;
+}
+
+void hx_layout_refusal(char *msg, size_t msg_size, const char *path, const char *opt, hx_format_t fmt,
+                       int detected)
+{
+    /* the names and units are the interchange CSV's: an importer has its own */
+    snprintf(msg, msg_size, "%s%s%s appl%s to the interchange CSV (format csv), not to the %s format%s",
+             path != NULL ? path : "", path != NULL ? ": " : "", opt, strchr(opt, ' ') != NULL ? "y" : "ies",
+             hx_format_name(fmt),
+             !detected              ? ""
+             : fmt == HX_FMT_BIN ? " (detected from the content)" /* no text: --from csv reads a NUL byte */
+                                 : " (detected from the content; give --from csv to read the file as CSV)");
 }
 
 /* One "key=value" item of a comma-separated list, blanks around each part

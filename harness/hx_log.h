@@ -100,6 +100,20 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
 void hx_reader_set_layout(const hx_csv_layout_t *l);
 /** The layout hx_reader_set_layout set (the defaults when none was). */
 void hx_reader_layout(hx_csv_layout_t *l);
+/** The layout a units remedy names --units from (the csv of
+ *  hx_units_problem and hx_time_unit_hint): for a log of format fmt read
+ *  by a command that takes --units, the reader's layout in *buf when fmt is
+ *  the interchange CSV, which --units reads; NULL for another format, whose
+ *  remedy is the arithmetic. */
+const hx_csv_layout_t *hx_units_layout(hx_format_t fmt, hx_csv_layout_t *buf);
+/** The refusal of a layout (opt: its option, hx_csv_layout_t.option) for a
+ *  log of another format fmt, one text for the usage error of
+ *  hx_check_input_opts and the reader's error: "[PATH: ]OPT applies to the
+ *  interchange CSV (format csv), not to the FMT format", and for a format
+ *  detected from the content (not given with --from) where it came from
+ *  and, but for a .bin (no text), "give --from csv". path NULL: none. */
+void hx_layout_refusal(char *msg, size_t msg_size, const char *path, const char *opt, hx_format_t fmt,
+                       int detected);
 /** The format detection gives a file's content (HX_FMT_AUTO: unreadable). */
 hx_format_t hx_detect_file(const char *path);
 
@@ -197,13 +211,30 @@ int64_t hx_gcd_i64(int64_t a, int64_t b);
  *  check of psd and allan. */
 int hx_interval_irregular(int64_t dt_ns, double rate_hz, int64_t res_ns);
 
+/** The unit of time stamps that read rate_hz in the unit of 10^digits ns
+ *  (9 s, 6 ms, 3 us, 0 ns): the first of 1000, 1e6 and 1e9 times slower
+ *  stamps that makes the rate 20 Hz to 100 kHz. */
+typedef struct {
+    const char *read; /**< the unit read ("seconds") */
+    const char *name; /**< the unit the stamps look like ("milliseconds"); NULL: none (0 returned) */
+    const char *opt;  /**< its --units item ("ms") */
+    const char *div;  /**< the divisor of the values as read ("1000") */
+    double rate_hz;   /**< the rate in that unit */
+} hx_time_fix_t;
+/** Fill fix for rate_hz read in 10^digits ns: 1 when a unit (at most ns)
+ *  makes the rate 20 Hz to 100 kHz, else 0 (fix->read still set). The
+ *  remedy of hx_units_problem and hx_time_unit_hint. */
+int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix);
 /** The time unit a slow log's stamps look like: 1 when rate_hz is below
  *  1 Hz and milliseconds, microseconds or nanoseconds make it 20 Hz to
- *  100 kHz, with the question and the divisor in msg ("the samples are 10 s
+ *  100 kHz, with the question and the remedy in msg ("the samples are 10 s
  *  apart (0.1 Hz): are the time stamps in seconds? (they look like
- *  milliseconds, a 100 Hz log: divide by 1000)"), else 0. A static log may
- *  be slow, so this is a warning of allan and psd, not a unit error. */
-int hx_time_unit_hint(double rate_hz, char *msg, size_t msg_size);
+ *  milliseconds, a 100 Hz log: divide by 1000)"), else 0. csv: as
+ *  hx_units_layout gives it; the remedy is then the --units item counted
+ *  from the time unit given ("give --units time=ms"). A static log may be
+ *  slow, so this is a warning of info, allan, psd and simgap, not a unit
+ *  error. */
+int hx_time_unit_hint(double rate_hz, const hx_csv_layout_t *csv, char *msg, size_t msg_size);
 
 /** The rate along a log is judged in blocks of this many positive
  *  intervals; a block whose rate is off the expected one by more than

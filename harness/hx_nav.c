@@ -898,6 +898,30 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 #define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
 #define HX_RATE_MIN_HZ 20.0    /* below this, no stance lasts more than a few samples */
 #define HX_ACCEL_MEAN_MAX_G 10.0 /* a foot's mean |f| over a log, in g, stays far below (the 66 shared walks and trials 1.0-2.0, the simulator's run 3.3) */
+const char *hx_units_fix_g(const hx_csv_layout_t *csv)
+{
+    return csv != NULL && csv->acc_scale == 1.0 ? "give --units accel=g" : "multiply by 9.80665";
+}
+
+const char *hx_units_fix_dps(const hx_csv_layout_t *csv)
+{
+    return csv != NULL && csv->gyr_scale == 1.0 ? "give --units gyro=deg/s" : "multiply by pi/180";
+}
+
+/* An accelerometer in mg is judged on the file's values, before --units
+ * accel=g multiplied them by 9.80665: mg read as g are 1000 times too large
+ * (the mg mark missed them: "raw counts?" or no unit at all), and their
+ * remedy keeps the option given. */
+static double acc_read_scale(const hx_csv_layout_t *csv)
+{
+    return csv != NULL ? csv->acc_scale : 1.0;
+}
+
+static const char *mg_fix(const hx_csv_layout_t *csv)
+{
+    return acc_read_scale(csv) == 1.0 ? "multiply by 0.00980665" : "read as g by --units accel=g: divide by 1000";
+}
+
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
                      const hx_csv_layout_t *csv, char *msg, size_t msg_size)
 {
@@ -919,59 +943,42 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
         n++;                                                                                               \
     } while (0)
     if (f_rest_mps2 > 0.0 && fabs(f_rest_mps2 / g - 1.0) > HX_GRAVITY_TOL) {
+        char fix[96] = "";
+        if (fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL) {
+            snprintf(fix, sizeof fix, " but in g (%s)", hx_units_fix_g(csv));
+        } else if (fabs(f_rest_mps2 / acc_read_scale(csv) * 0.00980665 / g - 1.0) < HX_GRAVITY_TOL) {
+            snprintf(fix, sizeof fix, " but in mg (%s)", mg_fix(csv));
+        }
         HX_UNITS_ADD("the accelerometer reads |f| = %.4g at rest, where gravity is %.4g m/s^2: the log is not in "
                      "m/s^2%s",
-                     f_rest_mps2, g,
-                     fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL
-                         ? csv != NULL && csv->acc_scale == 1.0 ? " but in g (give --units accel=g)"
-                                                                : " but in g (multiply by 9.80665)"
-                         : fabs(f_rest_mps2 * 0.00980665 / g - 1.0) < HX_GRAVITY_TOL ? " but in mg (multiply by 0.00980665)"
-                                                                                     : "");
+                     f_rest_mps2, g, fix);
     }
     if (gyro_max_rps > HX_GYRO_MAX_RPS) {
+        char fix[96] = "";
+        if (gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS) {
+            snprintf(fix, sizeof fix, " but probably in deg/s (%s)", hx_units_fix_dps(csv));
+        }
         HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis (its largest |w| on a single axis), beyond the "
                      "range of any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): the log is not in rad/s%s",
-                     gyro_max_rps, HX_GYRO_MAX_RPS,
-                     gyro_max_rps * M_PI / 180.0 >= HX_GYRO_MAX_RPS ? ""
-                     : csv != NULL && csv->gyr_scale == 1.0       ? " but probably in deg/s (give --units gyro=deg/s)"
-                                                                  : " but probably in deg/s (multiply by pi/180)");
+                     gyro_max_rps, HX_GYRO_MAX_RPS, fix);
     }
     if (rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ) {
         /* the unit that makes the rate one a foot-mounted IMU has (20 Hz to
          * 100 kHz): 2.5 ms read as 2.5 s (ms), as 2511 s (us), as 2.5e6 s
          * (ns); until 2026-11-28 the remedy always named milliseconds. The
          * interchange CSV's remedy is --units time=, counted from the unit
-         * it was read in (us read as ms look like ms: time=us) */
-        static const struct {
-            double scale;
-            const char *div;
-        } k_units[] = { { 1e3, "1000" }, { 1e6, "1e6" }, { 1e9, "1e9" } };
-        /* by (9 - k) / 3, for 10^k ns per unit */
-        static const char *const k_name[4] = { "seconds", "milliseconds", "microseconds", "nanoseconds" };
-        static const char *const k_opt[4] = { "s", "ms", "us", "ns" };
-        const char *name = NULL, *div = NULL, *opt = NULL;
+         * it was read in (us read as ms look like ms: time=us;
+         * hx_time_unit_fix, as the slow-log hint of info, allan and psd) */
         const int k = csv != NULL ? csv->time_digits : 9; /* the unit the stamps were read in */
-        size_t u;
-        for (u = 0; u < sizeof k_units / sizeof k_units[0]; u++) {
-            const double r_u = rate_hz * k_units[u].scale;
-            if (r_u >= HX_RATE_MIN_HZ && r_u <= 1e5) {
-                const int true_k = k - 3 * (int)(u + 1u);
-                if (true_k >= 0) {
-                    name = k_name[(9 - true_k) / 3];
-                    div = k_units[u].div;
-                    opt = csv != NULL ? k_opt[(9 - true_k) / 3] : NULL;
-                }
-                break;
-            }
-        }
-        if (name != NULL) {
+        hx_time_fix_t fix;
+        if (hx_time_unit_fix(rate_hz, k, &fix)) {
             /* 1 s apart: 1 kHz in milliseconds, or a sample number (a
              * logger's counter), which --input-rate serves without the
              * column (the gait review, 2026-11-30) */
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
                          "time stamps in %s? (they look like %s: %s%s%s)",
-                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, k_name[(9 - k) / 3], name,
-                         opt != NULL ? "give --units time=" : "divide by ", opt != NULL ? opt : div,
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, fix.read, fix.name,
+                         csv != NULL ? "give --units time=" : "divide by ", csv != NULL ? fix.opt : fix.div,
                          fabs(rate_hz - 1.0) < 1e-9 ? "; or, if they count samples, leave the column out and give the "
                                                       "rate with --input-rate HZ"
                                                     : "");
@@ -1021,20 +1028,19 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
         snprintf(acc, sizeof acc,
                  "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 averages %.4g or more: "
                  "the log is probably in g (%s)",
-                 f_norm_mean, g,
-                 csv != NULL && csv->acc_scale == 1.0 ? "give --units accel=g" : "multiply by 9.80665");
+                 f_norm_mean, g, hx_units_fix_g(csv));
     }
     if (!nav->aligned && fn == 0.0 && f_norm_mean > HX_ACCEL_MEAN_MAX_G * g) {
         /* no rest found, and a mean |f| no foot reaches: mg, cm/s^2 or raw
          * counts, whose noise also hides every still period (it said only
          * "no still period": the generality review, 2026-11-30) */
-        const double in_g = f_norm_mean * 0.00980665 / g;
+        const double in_g = f_norm_mean / acc_read_scale(csv) * 0.00980665 / g; /* the file's values in mg */
+        const int mg = in_g > 0.75 && in_g < HX_ACCEL_MEAN_MAX_G;
         snprintf(acc, sizeof acc,
                  "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 on a foot averages a few "
-                 "times %.4g at most: the log is not in m/s^2: %s",
-                 f_norm_mean, g,
-                 in_g > 0.75 && in_g < HX_ACCEL_MEAN_MAX_G ? "in mg? (multiply by 0.00980665)"
-                                                          : "raw counts? (scale them by the sensor's sensitivity)");
+                 "times %.4g at most: the log is not in m/s^2: %s%s%s",
+                 f_norm_mean, g, mg ? "in mg? (" : "raw counts? (scale them by the sensor's sensitivity)",
+                 mg ? mg_fix(csv) : "", mg ? ")" : "");
     }
     rate = in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz;
     if (hx_nav_coarse_stamps(&nav->stats) && rate > 0.0 && rate < HX_RATE_MIN_HZ) {
@@ -1321,10 +1327,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         char msg[sizeof traj->units_problem];
         hx_csv_layout_t lay;
         int u;
-        hx_reader_layout(&lay);
         u = units_check(&nav, pc.gyro_max_rps, pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0,
                         traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0,
-                        (flags & HX_REPLAY_UNITS_OPT) && in_fmt == HX_FMT_CSV ? &lay : NULL, msg, sizeof msg);
+                        (flags & HX_REPLAY_UNITS_OPT) ? hx_units_layout(in_fmt, &lay) : NULL, msg, sizeof msg);
         if (traj != NULL) {
             /* the JSON's units_problem ("" when none) */
             traj->units_checked = 1;

@@ -1481,6 +1481,9 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
     char msg[768];
     size_t k, nf = 0;
     int bad;
+    /* the remedies name --units for the interchange CSV, as replay's */
+    hx_csv_layout_t lay;
+    const hx_csv_layout_t *csv = hx_units_layout(log->meta.format, &lay);
     if (wm == NULL || fm == NULL) {
         free(wm);
         free(fm);
@@ -1502,7 +1505,7 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
         }
     }
     qsort(fm, nf, sizeof *fm, hx_cmp_double);
-    bad = hx_units_problem(fm[nf / 2], 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, NULL, msg, sizeof msg);
+    bad = hx_units_problem(fm[nf / 2], 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, csv, msg, sizeof msg);
     free(wm);
     free(fm);
     if (!bad && r->domain == 1) {
@@ -1511,8 +1514,8 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
             snprintf(msg, sizeof msg,
                      "the gyroscope spreads by %.3g rad/s RMS within a second (the median one-second window) while "
                      "the log is static, where a gyro at rest spreads by hundredths: the log is not in rad/s but "
-                     "probably in deg/s (multiply by pi/180) (docs/log-format.md)",
-                     spread);
+                     "probably in deg/s (%s) (docs/log-format.md)",
+                     spread, hx_units_fix_dps(csv));
             bad = 1;
         }
     }
@@ -1529,7 +1532,7 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
      * milliseconds (us, ns) explains is named, as allan and psd name it:
      * until 2026-11-29 the first minute of ADIS16405 log 1 with its time in
      * ms was analysed at 0.1 Hz without a word (taus 1000 times too long) */
-    if (r->domain == 1 && !log->meta.rate_nominal && hx_time_unit_hint(r->rate_hz, msg, sizeof msg)) {
+    if (r->domain == 1 && !log->meta.rate_nominal && hx_time_unit_hint(r->rate_hz, csv, msg, sizeof msg)) {
         hx_warn("simgap", "%s: %s; the taus and frequencies are read at %.3g Hz", path, msg, r->rate_hz);
     }
     return 0;

@@ -1582,7 +1582,7 @@ static void test_fuzz_seed_formats(void **state)
         { "gx2_forced", "gx2" },           { "ngimu_forced", "ngimu" },   { "openshoe820_forced", "openshoe820" },
         { "pyshoe_forced", "pyshoe" },     { "square2_forced", "square2" }, { "bin_golden_whole", "bin" },
         { "adis_synthetic_gz", "auto" },   { "openshoe820_tabs", "auto" }, { "openshoe820_blanks", "openshoe820" },
-        { "csv_temp", "csv" },             { "regress_gx2_huge_nr", "gx2" },
+        { "csv_temp", "csv" },             { "regress_gx2_huge_nr", "gx2" }, { "csv_columns", "csv" },
     };
     size_t i;
     (void)state;

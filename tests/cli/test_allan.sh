@@ -135,7 +135,8 @@ expect_err "--unit applies to --series only" "--unit with a log explained"
 awk -F, 'NR == 1 { print; next } { $6 = 0.0005 * (NR % 7); for (k = 2; k <= 4; k++) $k = $k / 9.80665; print }' OFS=, \
     "$T/stuck.csv" >"$T/in_g.csv"
 expect_exit 1 "static log in g" "$H" allan "$T/in_g.csv" --no-sim --quiet --out "$T/in_g_table.csv" --profile "$T/in_g.profile"
-expect_err "in_g.csv: the accelerometer reads |f| = 1.* but in g (multiply by 9.80665)" "a log in g is named"
+expect_err "in_g.csv: the accelerometer reads |f| = 1.* but in g (give --units accel=g)" \
+    "a log in g is named, with the --units item (it said multiply by 9.80665 until 2026-11-30)"
 [ -s "$T/in_g_table.csv" ] && [ ! -e "$T/in_g.profile" ] && pass "log in g: table written, no profile" ||
     fail "log in g: outputs"
 # a record whose analysed range (here 50 %) outgrows the core's grid (2^20 samples), as 10 % of a 12-hour
@@ -733,6 +734,7 @@ expect_err "walk.bin: the log moves: in 19 of its 41 one-second windows" "the wa
 expect_err "walk.profile: the log is not static (above); profile not written" "no profile from a walk"
 [ -s "$T/walk_t.csv" ] && [ ! -e "$T/walk.profile" ] && pass "walk: table written, no profile" || fail "walk: outputs"
 expect_exit 1 "a walk without --profile" "$H" allan vectors/walk.bin --no-sim --quiet
+expect_err "a gyro in deg/s at rest also reads so: multiply by pi/180)" "a .bin: the arithmetic remedy for deg/s"
 G2=$(data openshoe_gx2/Measurement_100521_2_data_inert.txt)
 if [ -n "$G2" ]; then
     expect_exit 1 "a GX2 walk (m/s^2 after import)" "$H" allan "$G2" --no-sim --quiet
@@ -811,8 +813,8 @@ if grep -q "disturbed" "$T/err"; then fail "an untouched white-noise log called 
 awk '{ if (NR == 1) print; else { split($0, v, ","); v[1] = v[1] * 1000; out = v[1];
        for (k = 2; k <= 7; k++) out = out "," v[k]; print out } }' "$T/touch0.csv" >"$T/touch_ms.csv"
 expect_exit 0 "a static log with its time in milliseconds" "$H" allan "$T/touch_ms.csv" --no-sim --quiet
-expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: divide by 1000)" \
-    "time in milliseconds is named"
+expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
+    "time in milliseconds is named, with the --units item (it said divide by 1000 until 2026-11-30)"
 # ... and with --profile the warning was followed by "no identification for ax (too little data?)", sending the user
 # to the record's length; the error now names the time unit as the likely cause (a user review, 2026-11-29)
 expect_exit 1 "a static log with its time in milliseconds, a profile" "$H" allan "$T/touch_ms.csv" --no-sim --quiet \
@@ -831,7 +833,8 @@ awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 6000; i++)
             9.81 + 0.05 * (rand() - 0.5), 1.2 * (rand() - 0.5), 1.2 * (rand() - 0.5), 0.3 + 1.2 * (rand() - 0.5) }' \
     >"$T/dps.csv"
 expect_exit 1 "a static gyro in deg/s" "$H" allan "$T/dps.csv" --no-sim --quiet
-expect_err "a gyro in deg/s at rest also reads so" "deg/s named as a cause"
+expect_err "a gyro in deg/s at rest also reads so: give --units gyro=deg/s)" \
+    "deg/s named as a cause, with the --units item for the CSV (it said multiply by pi/180 until 2026-11-30)"
 
 A=$(data adis16405_static/adis16405_imu1_100Hz.csv.gz)
 if [ -n "$A" ]; then

@@ -65,8 +65,21 @@ expect_out "^rate        none (every time stamp is the same)$" "one time stamp: 
 # generalisation check, 2026-11-29); a warning, the status unchanged
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 300; k++) printf "%d,0,0,9.8,0,0,0\n", 10 * k }' > "$T/tms.csv"
 expect_exit 0 "info on a 100 Hz log stamped in milliseconds" "$H" info "$T/tms.csv"
-expect_err "tms.csv: the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: divide by 1000)" \
-    "info names time stamps in milliseconds"
+expect_err "tms.csv: the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
+    "info names time stamps in milliseconds, with the --units item (it said divide by 1000 until 2026-11-30)"
+# the remedy counts from the unit given: stamps in microseconds read with --units time=ms are told time=us
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 300; k++) printf "%d,0,0,9.8,0,0,0\n", 10000 * k }' > "$T/tus.csv"
+expect_exit 0 "info on a 100 Hz log stamped in microseconds, read as ms" "$H" info "$T/tus.csv" --units time=ms
+expect_err "tus.csv: the samples are 10 s apart (0.1 Hz): are the time stamps in milliseconds? (they look like microseconds, a 100 Hz log: give --units time=us)" \
+    "info: us read with --units time=ms told time=us"
+# a format --units does not apply to keeps the arithmetic
+expect_exit 0 "convert the log in ms to .bin" "$H" convert "$T/tms.csv" "$T/tms.bin"
+expect_exit 0 "info on a .bin stamped in milliseconds" "$H" info "$T/tms.bin"
+expect_err "(they look like milliseconds, a 100 Hz log: divide by 1000)" "info on a .bin: the arithmetic remedy"
+# a log in g: the units line names --units accel=g for the CSV (it said "multiply by 9.80665" until 2026-11-30)
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 300; k++) printf "%.2f,0,0,1,0,0,0\n", k / 100 }' > "$T/ing.csv"
+expect_exit 0 "info on a log in g" "$H" info "$T/ing.csv"
+expect_out "units       NOT SI: .*not in m/s^2 but in g (give --units accel=g)" "info names --units accel=g for a CSV in g"
 expect_exit 0 "info on a 100 Hz log in seconds" "$H" info "$T/dups.csv"
 if grep -q "look like" "$T/err"; then fail "a 100 Hz log in seconds questioned"; else pass "no unit question on a log in seconds"; fi
 # an 820 Hz log stamped to the millisecond reads 1 and 2 ms: its median is

@@ -744,6 +744,17 @@ json "$T/in_mg.json" 'j["units_problem"].startswith("the accelerometer averages 
     pass "replay --json: units_problem names mg" || fail "replay --json of a log in mg: units_problem $(grep units_problem "$T/in_mg.json")"
 expect_exit 0 "info on a log in mg" "$H" info "$T/in_mg.csv"
 expect_out "units       NOT SI: .*not in m/s^2 but in mg (multiply by 0.00980665)" "info names mg too"
+# the same log read with --units accel=g: 1000 times too large once read as g; mg was judged on the values as
+# read (9.8 times mg), so replay said "raw counts? (scale them by the sensor's sensitivity)" and info named no
+# unit; mg is now judged on the file's values, and the remedy keeps the option given: divide by 1000
+expect_exit 1 "accelerometer in mg, read with accel=g" "$H" replay "$T/in_mg.csv" --quiet --units accel=g
+expect_err "the log is not in m/s^2: in mg? (read as g by --units accel=g: divide by 1000) (docs/log-format.md)" \
+    "mg read with accel=g: named as mg, the remedy dividing by 1000"
+if grep -q "0.00980665\|raw counts" "$T/err"; then fail "mg read with accel=g: told to multiply by 0.00980665 or called raw counts"; else
+    pass "mg read with accel=g: not told to multiply by 0.00980665 nor called raw counts"; fi
+expect_exit 0 "info on a log in mg, read with accel=g" "$H" info "$T/in_mg.csv" --units accel=g
+expect_out "units       NOT SI: .*not in m/s^2 but in mg (read as g by --units accel=g: divide by 1000)" \
+    "info: mg read with accel=g named, the remedy dividing by 1000"
 # and not a foot in m/s^2 that never stands still: the simulator's run without a stand averages |f| = 3.3 g,
 # the most of any motion here (the mg test needs 10 g); it is told it has no still period, and no unit
 "$H" sim --motion run:30 --out "$T/run_nostand.csv" >/dev/null 2>&1

@@ -355,7 +355,7 @@ expect_err "--contiguous is for static logs .*ignored on a walk" "--contiguous o
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5, $6, $7 }' \
     "$T/w.csv" > "$T/wg.csv"
 expect_exit 1 "walk in g" "$H" simgap "$T/wg.csv" --quiet --seeds 4
-expect_err "not in m/s^2 but in g" "a walk in g is named as such"
+expect_err "not in m/s^2 but in g (give --units accel=g)" "a walk in g is named as such, with the --units item"
 # a static log with its gyro in deg/s: its noise of tenths of a "rad/s"
 # reached 1 rad/s within every second, so it was detected as a walk without
 # a stance and answered "too short" for its stances (exit 1; found by the
@@ -366,7 +366,8 @@ awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.7g,%.7g,%.7g\n", $1, $2
 expect_exit 0 "static log with the gyro in deg/s" "$H" simgap "$T/sdeg.csv" --quiet --seeds 4 --max-effects 0 --json "$T/sdeg.json"
 json "$T/sdeg.json" 'j["log"]["domain_detected"] == "static" and j["verdict"]["answer"] != "too-short"' &&
     pass "a static gyro in deg/s is detected as static" || fail "static deg/s domain: $(cat "$T/pyerr")"
-expect_err "spreads by 0.[0-9]* rad/s RMS .* probably in deg/s (multiply by pi/180)" "a static gyro in deg/s is named"
+expect_err "spreads by 0.[0-9]* rad/s RMS .* probably in deg/s (give --units gyro=deg/s)" \
+    "a static gyro in deg/s is named, with the --units item (it said multiply by pi/180 until 2026-11-30)"
 expect_exit 0 "the same static log in rad/s" "$H" simgap "$T/sd.csv" --quiet --seeds 4 --max-effects 0
 if grep -q "deg/s" "$T/err"; then fail "a static gyro in rad/s named as deg/s"; else pass "no deg/s warning on a static gyro in rad/s"; fi
 # the same static log with its time column in milliseconds (100 Hz read as
@@ -374,8 +375,8 @@ if grep -q "deg/s" "$T/err"; then fail "a static gyro in rad/s named as deg/s"; 
 # and psd name the unit; now a warning, the status unchanged
 awk -F, 'NR == 1 { print; next } { printf "%.6f,%s,%s,%s,%s,%s,%s\n", $1 * 1000, $2, $3, $4, $5, $6, $7 }' "$T/sd.csv" > "$T/sdms.csv"
 expect_exit 0 "static log with its time in milliseconds" "$H" simgap "$T/sdms.csv" --quiet --seeds 4 --max-effects 0
-expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: divide by 1000)" \
-    "a static log's time in milliseconds is named"
+expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
+    "a static log's time in milliseconds is named, with the --units item"
 # a walk on gyro lattices: the summary names the lattice as such, not as a
 # navigation point at t 0; every gyro's lattice is selected, not the top one's alone
 "$H" sim --motion walk --duration 40 --rate 100 --profile mtx --seed 4 --effect quant:ch=gyro:lsb=0.002 --out "$T/wq.csv" >/dev/null 2>&1 || fail "sim walk with quantisation"

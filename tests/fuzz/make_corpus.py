@@ -77,6 +77,16 @@ def main():
     put('log_reader', 'gx2_first_restart', bytes([FMT['auto']]) + b'\r\n'.join(gx2[:5] + gx2[9:]))
     put('log_reader', 'csv_temp', bytes([FMT['csv']]) +
         b't,ax,ay,az,gx,gy,gz,temp\n0,0.1,0.2,-9.8,0.01,0.02,0.03,21.5\n0.005,0.1,0.2,-9.8,0.01,0.02,0.03,21.5\n')
+    # a phone export for --columns (fuzz_log_reader.c: the map and the units
+    # by the input's size): zeros after the last value make the size 7 mod
+    # 16, the phone map (size / 4 % 4 == 1) and time=ns (size % 4 == 3)
+    phone = (b'timestamp_ns,acc_x,acc_y,acc_z,gyro_x,gyro_y,gyro_z\n'
+             b'1764500000000000000,0.01,0.02,-1.0,0.5,1.0,1.5\n'
+             b'1764500000005000000,0.01,0.02,-1.0,0.5,1.0,1.5')
+    pad = 0
+    while (1 + len(phone) + pad + 1) % 16 != 7:
+        pad += 1
+    put('log_reader', 'csv_columns', bytes([FMT['csv']]) + phone + b'0' * pad + b'\n')
     with open(os.path.join(ROOT, 'vectors', 'logformat', 'sample_v1.bin'), 'rb') as f:
         b = f.read()
     put('log_reader', 'bin_golden', bytes([FMT['auto']]) + b)
