@@ -116,6 +116,63 @@ static void test_window_from_rate(void **state)
     }
 }
 
+/* Stamps that never advance (all equal: a logger that wrote no time) give
+ * no positive interval to take the median of: the rate is then 100 Hz
+ * (fnav_stance.h, rate_hz), the detector sized as one configured for
+ * 100 Hz, at the end of the probe and at fnav_stance_finish of a shorter
+ * log; the decisions still come out, one per sample. A NULL pop is
+ * FNAV_E_ARG. (make coverage: none of this was run.) */
+static void test_rate_without_stamps(void **state)
+{
+    fnav_stance_t st, ref;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0, 0, 0 };
+    fnav_stance_out_t o;
+    fnav_sample_t s;
+    long k, n;
+    (void)state;
+    c.rate_hz = FNAV_R(100.0);
+    assert_int_equal(fnav_stance_init(&ref, &c), FNAV_OK);
+    s = sample(0, 100.0, f, w);
+    assert_int_equal(fnav_stance_push(&ref, &s), FNAV_OK);
+    assert_true(ref.win > 1);
+    c.rate_hz = FNAV_R(0.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0, n = 0; k < FNAV_STANCE_RATE_PROBE + 8; k++) {
+        s = sample(k, 100.0, f, w);
+        s.t_ns = 1000000000; /* the same stamp every time */
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            n++;
+        }
+        if (k < FNAV_STANCE_RATE_PROBE) {
+            assert_int_equal(st.win, 0);
+        }
+    }
+    assert_true(st.rate_hz == FNAV_R(100.0));
+    assert_int_equal(st.win, ref.win);
+    assert_int_equal(st.half, ref.half);
+    assert_int_equal(st.n_min_zupt, ref.n_min_zupt);
+    assert_int_equal(st.n_ev, ref.n_ev);
+    fnav_stance_finish(&st);
+    while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+        n++;
+    }
+    assert_int_equal(fnav_stance_pop(&st, &o), FNAV_END);
+    assert_int_equal(n, FNAV_STANCE_RATE_PROBE + 8);
+    /* one sample only: no interval at all, at finish */
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    s = sample(0, 100.0, f, w);
+    assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+    fnav_stance_finish(&st);
+    assert_true(st.rate_hz == FNAV_R(100.0));
+    assert_int_equal(st.win, ref.win);
+    assert_int_equal(fnav_stance_pop(&st, &o), FNAV_OK);
+    assert_int_equal(fnav_stance_pop(&st, &o), FNAV_END);
+    assert_int_equal(fnav_stance_pop(NULL, &o), FNAV_E_ARG);
+    assert_int_equal(fnav_stance_pop(&st, NULL), FNAV_E_ARG);
+}
+
 /* The SHOE statistic of a window equals the formula evaluated here in
  * double: T = 1/W sum(|f - g u|^2 / sa^2 + |w|^2 / sg^2), u = mean f / |mean f|. */
 static void test_shoe_statistic(void **state)
@@ -1134,6 +1191,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_config),
         cmocka_unit_test(test_window_from_rate),
+        cmocka_unit_test(test_rate_without_stamps),
         cmocka_unit_test(test_shoe_statistic),
         cmocka_unit_test(test_delay_and_flush),
         cmocka_unit_test(test_ring_contract),
