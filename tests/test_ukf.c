@@ -117,6 +117,23 @@ static void test_config(void **state)
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
     assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3_zero(), FNAV_R(0.01)), FNAV_E_STATE);
     assert_int_equal(fnav_ukf_zupt(&f, fnav_vec3_zero()), FNAV_E_STATE);
+    /* (make coverage: the next three were not run) a ZARU before start;
+     * a bias model that is neither AR1 nor OFF; a start with a NaN in the
+     * attitude or a bias: FNAV_E_NANINF, the filter not started */
+    assert_int_equal(fnav_ukf_zaru(&f, fnav_vec3_zero()), FNAV_E_STATE);
+    c.bias_model = (fnav_bias_model_t)7;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+    c = fnav_ukf_config_default;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat(FNAV_R(1.0), FNAV_R(0.0), (fnav_real_t)NAN, FNAV_R(0.0)), fnav_vec3_zero(),
+                                    fnav_vec3_zero(), &sd),
+                     FNAV_E_NANINF);
+    assert_false(f.started);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(),
+                                    fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)INFINITY), &sd),
+                     FNAV_E_NANINF);
+    assert_false(f.started);
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3_zero(), FNAV_R(0.01)), FNAV_E_STATE);
     sd.vel_mps = FNAV_R(0.0);
     assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_E_ARG);
 }
@@ -792,12 +809,25 @@ static void test_bad_input(void **state)
                                       FNAV_R(0.01)),
                      FNAV_E_NANINF);
     assert_int_equal(fnav_ukf_zaru(&f, fnav_vec3((fnav_real_t)NAN, FNAV_R(0.0), FNAV_R(0.0))), FNAV_E_NANINF);
-    assert_int_equal(f.health.nan_inputs, 3);
+    /* a ZUPT's rate is checked too (make coverage: not run) */
+    assert_int_equal(fnav_ukf_zupt(&f, fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)NAN)), FNAV_E_NANINF);
+    assert_int_equal(f.health.nan_inputs, 4);
     f.health = g.health;
     assert_memory_equal(&f, &g, sizeof f);
     assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3_zero(), FNAV_R(-0.01)), FNAV_E_TIME);
     assert_int_equal(fnav_ukf_predict(&f, fnav_vec3(FNAV_R(1.0), FNAV_R(0.0), FNAV_R(0.0)), fnav_vec3_zero(), FNAV_R(0.0)),
                      FNAV_OK);
+    assert_memory_equal(&f, &g, sizeof f);
+    /* with the bias model off a ZARU is FNAV_OK without effect (fnav_ukf.h;
+     * make coverage: not run), nothing counted, even for a rate that the
+     * AR1 model's gate would refuse */
+    c.bias_model = FNAV_BIAS_OFF;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    g = f;
+    assert_int_equal(fnav_ukf_zaru(&f, fnav_vec3(FNAV_R(0.01), FNAV_R(-0.02), FNAV_R(0.03))), FNAV_OK);
+    assert_int_equal(fnav_ukf_zaru(&f, fnav_vec3(FNAV_R(3.0), FNAV_R(0.0), FNAV_R(0.0))), FNAV_OK);
+    assert_int_equal(f.health.zarus, 0);
     assert_memory_equal(&f, &g, sizeof f);
 }
 
