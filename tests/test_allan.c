@@ -1247,6 +1247,18 @@ static void test_grid(void **state)
     }
     assert_int_equal(g[n - 1], 1u << 20);
     assert_int_equal(fnav_allan_grid(g, 3, 1u << 20, 4), 3);
+    /* a tau_max past FNAV_ALLAN_TAU_MAX is capped there (fnav_allan.h):
+     * the octaves 1 .. FNAV_ALLAN_TAU_MAX, every one valid, and NULL gives
+     * no point (make coverage: neither was run) */
+    n = fnav_allan_grid(g, 128, UINT32_MAX, 1);
+    assert_int_equal(n, FNAV_ALLAN_MAX_LEVELS);
+    assert_int_equal((unsigned long)g[n - 1], FNAV_ALLAN_TAU_MAX);
+    for (i = 0; i < n; i++) {
+        assert_int_equal(g[i], 1u << i);
+        assert_true(fnav_allan_tau_valid(g[i]));
+    }
+    assert_false(fnav_allan_tau_valid((uint32_t)(FNAV_ALLAN_TAU_MAX + 1ul)));
+    assert_int_equal(fnav_allan_grid(NULL, 128, 1000, 1), 0);
 }
 
 /* ------------------------------------------------------------ noise types */
@@ -1279,6 +1291,14 @@ static void test_noise_from_slope(void **state)
     assert_int_equal(fnav_allan_noise_alpha(FNAV_ALLAN_NOISE_WHITE), 0);
     assert_int_equal(fnav_allan_noise_alpha(FNAV_ALLAN_NOISE_RRW), -2);
     assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_RRW), "rate-random-walk");
+    /* the other names (harness allan prints them; make coverage: never
+     * asked), and "unknown" for UNKNOWN and a value outside the enum */
+    assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_QUANT), "quantisation");
+    assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_WHITE), "white");
+    assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_FLICKER), "flicker");
+    assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_RAMP), "ramp");
+    assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_UNKNOWN), "unknown");
+    assert_string_equal(fnav_allan_noise_name((fnav_allan_noise_t)99), "unknown");
 }
 
 /* Simulated pure white noise and pure random walk: the local slopes and

@@ -321,6 +321,18 @@ static void test_last_segment_average(void **state)
         FNAV_ASSERT_CLOSE(avg[k], sum[k] / seen, 1e-12, FNAV_USE_DOUBLE ? 1e-12 : 1e-5);
     }
     assert_int_equal(fnav_welch_get(&w, avg, 10), FNAV_E_SIZE);
+    /* fnav_welch_last too refuses a buffer shorter than the bins, and
+     * writes nothing into it; NULL is FNAV_E_ARG (make coverage: neither
+     * was run) */
+    one[0] = FNAV_R(-1.0);
+    assert_int_equal(fnav_welch_last(&w, one, fnav_welch_bins(&w) - 1u), FNAV_E_SIZE);
+    assert_true(one[0] == FNAV_R(-1.0));
+    assert_int_equal(fnav_welch_last(&w, one, fnav_welch_bins(&w)), FNAV_OK);
+    assert_true(one[0] >= FNAV_R(0.0));
+    assert_int_equal(fnav_welch_last(NULL, one, FNAV_WELCH_MAX_BINS), FNAV_E_ARG);
+    assert_int_equal(fnav_welch_last(&w, NULL, FNAV_WELCH_MAX_BINS), FNAV_E_ARG);
+    assert_int_equal(fnav_welch_get(NULL, avg, FNAV_WELCH_MAX_BINS), FNAV_E_ARG);
+    assert_int_equal(fnav_welch_get(&w, NULL, FNAV_WELCH_MAX_BINS), FNAV_E_ARG);
 }
 
 /* Parseval: with a rectangular window and no detrending, the one-sided
