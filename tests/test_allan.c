@@ -470,6 +470,79 @@ static void test_edf_white_pm_few_terms(void **state)
                       1464.0 / (1.0 + 2.0 * (1.0 - 1.0 / r768) * (4.0 / 6.0) * (4.0 / 6.0)), 1e-9, 0.0);
 }
 
+/* Greenhall's EDF where it has more than EDF_JMAX = 100 terms (J > 100):
+ * none of these branches was run by a suite (make coverage). The reference
+ * is the exact EDF of the overlapping estimator, written here from its
+ * definition: a term is z_i = sum_n w_n e_(i+n) over a white sequence e (y
+ * for white FM, alpha = 0: the second difference of the phase x = cumsum
+ * y at stride m, averaged over m starts when modified; x itself for white
+ * PM, alpha = +2), its covariance c_k = sum_n w_n w_(n+k), and the mean of
+ * M such squares has, Gaussian, edf = 2 E^2 / var = M c0^2 / (c0^2 + 2
+ * sum_(k=1..M-1) (1 - k/M) c_k^2). (1) J > 100 with r = M/S <= d + 1:
+ * the basic sum cut to 100 terms; unmodified (r = 0.51, 1.00, 2.51) and
+ * modified (r = 0.505, 1.51), white FM, within 1 % (the order of a cut
+ * at 100 terms; 8e-4 at most measured). At r = 0.51 the
+ * table form (1/r)(a0 - a1/r) would give 39 against 1.69, at r = 1 3.0
+ * against 2.68. (2) Case 4 (white PM, unmodified) with K = ceil(r) > d and
+ * J > 100: the table's (1/M)(a0 - a1/r) is exact there (the terms
+ * correlate at lags 0, m, 2m only). */
+static double edf_w[1024];
+
+static double edf_exact(int alpha, int modified, long m, long n_phase)
+{
+    const long lw = modified ? 3 * m : (alpha == 0 ? 2 * m : 2 * m + 1);
+    const long M = n_phase - (modified ? 3 * m - 1 : 2 * m);
+    double c0 = 0.0, s = 0.0;
+    long j, n, k;
+    assert_true(lw <= (long)(sizeof edf_w / sizeof edf_w[0]));
+    memset(edf_w, 0, sizeof edf_w);
+    for (j = 0; j < (modified ? m : 1); j++) {
+        if (alpha == 0) {
+            for (n = 0; n < m; n++) {
+                edf_w[j + n] -= 1.0;
+                edf_w[j + m + n] += 1.0;
+            }
+        } else {
+            edf_w[j] += 1.0;
+            edf_w[j + m] -= 2.0;
+            edf_w[j + 2 * m] += 1.0;
+        }
+    }
+    for (n = 0; n < lw; n++) {
+        c0 += edf_w[n] * edf_w[n];
+    }
+    for (k = 1; k < M && k < lw; k++) {
+        double c = 0.0;
+        for (n = 0; n + k < lw; n++) {
+            c += edf_w[n] * edf_w[n + k];
+        }
+        s += (1.0 - (double)k / (double)M) * c * c;
+    }
+    return (double)M * c0 * c0 / (c0 * c0 + 2.0 * s);
+}
+
+static void test_edf_many_terms(void **state)
+{
+    static const struct {
+        int alpha, modified;
+        long m, n;
+        double rel;
+    } t[] = {
+        { 0, 0, 200, 501, 0.01 }, { 0, 0, 200, 601, 0.01 }, { 0, 0, 100, 451, 0.01 },
+        { 0, 1, 200, 701, 0.01 }, { 0, 1, 100, 451, 0.01 },
+        { 2, 0, 200, 1151, 1e-9 }, { 2, 0, 100, 651, 1e-9 },
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof t / sizeof t[0]; i++) {
+        const double want = edf_exact(t[i].alpha, t[i].modified, t[i].m, t[i].n);
+        const double got = fnav_allan_edf_var(t[i].alpha, 2, t[i].modified, (uint32_t)t[i].m, (uint32_t)t[i].n, 1);
+        FNAV_ASSERT_CLOSE(got, want, 0.0, t[i].rel);
+    }
+    /* the reference itself: one term is one degree of freedom */
+    FNAV_ASSERT_CLOSE(edf_exact(0, 0, 50, 101), 1.0, 1e-12, 0.0);
+}
+
 static void test_edf_var_edges(void **state)
 {
     int alpha, d;
@@ -2015,6 +2088,7 @@ int main(void)
         cmocka_unit_test(test_phasedat_other_deviations),
         cmocka_unit_test(test_edf_var_edges),
         cmocka_unit_test(test_edf_white_pm_few_terms),
+        cmocka_unit_test(test_edf_many_terms),
         cmocka_unit_test(test_pdev_nbs14),
         cmocka_unit_test(test_totdev_nbs14),
         cmocka_unit_test(test_totdev_edf),
