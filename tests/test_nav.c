@@ -149,6 +149,60 @@ static void test_config(void **state)
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
     c.zaru_after_s = (fnav_real_t)INFINITY;
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* the checks of nav_init no suite made (make coverage): gravity not
+     * finite; a motion noise not finite or negative; an initial sd of 0,
+     * negative, or whose square is 0 or infinite in the working precision
+     * (fnav_ukf_start would refuse it); zaru neither 0 nor 1; a renewal
+     * minimum negative or NaN */
+    {
+        const fnav_real_t huge = (fnav_real_t)(FNAV_USE_DOUBLE ? 1e200 : 1e30);
+        const fnav_real_t tiny = (fnav_real_t)(FNAV_USE_DOUBLE ? 1e-200 : 1e-30);
+        const fnav_real_t bad_sd[4] = { FNAV_R(0.0), FNAV_R(-0.1), huge, tiny };
+        int k;
+        c = fnav_nav_config_default;
+        c.gravity_mps2 = (fnav_real_t)NAN;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c = fnav_nav_config_default;
+        c.accel_motion_noise_mps2_rthz = (fnav_real_t)INFINITY;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.accel_motion_noise_mps2_rthz = FNAV_R(-0.1);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.accel_motion_noise_mps2_rthz = FNAV_R(0.0); /* none: accepted */
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+        c = fnav_nav_config_default;
+        c.gyro_motion_noise_rps_rthz = (fnav_real_t)NAN;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.gyro_motion_noise_rps_rthz = FNAV_R(-0.1);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.gyro_motion_noise_rps_rthz = FNAV_R(0.0);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+        for (k = 0; k < 4; k++) {
+            c = fnav_nav_config_default;
+            c.tilt_sd_rad = bad_sd[k];
+            assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+            c = fnav_nav_config_default;
+            c.yaw_sd_rad = bad_sd[k];
+            assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+            c = fnav_nav_config_default;
+            c.gyro_bias_sd_rps = bad_sd[k];
+            assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+            c = fnav_nav_config_default;
+            c.accel_bias_sd_mps2 = bad_sd[k];
+            assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        }
+        c = fnav_nav_config_default;
+        c.zaru = 2;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.zaru = -1;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c = fnav_nav_config_default;
+        c.realign_min_s = FNAV_R(-0.1);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.realign_min_s = (fnav_real_t)NAN;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.realign_min_s = FNAV_R(0.0);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    }
 }
 
 /* One frame per accepted sample, in order; rejected samples change nothing;
