@@ -161,7 +161,7 @@ static void test_grp(void **state)
 /* Run the closed form and the full sigma points side by side for 200 steps
  * (a ZUPT every 50) and return the largest difference of the covariance,
  * relative to sqrt(P_ii P_jj), and of position and velocity (m, m/s). */
-static void closed_vs_full(int bias_model, fnav_real_t bg_sd_rps, double *dcov, double *dstate)
+static void closed_vs_full(int bias_model, fnav_real_t bg_sd_rps, int settle, double *dcov, double *dstate)
 {
     static fnav_ukf_t a, b;
     fnav_ukf_config_t c = fnav_ukf_config_default;
@@ -170,6 +170,7 @@ static void closed_vs_full(int bias_model, fnav_real_t bg_sd_rps, double *dcov, 
     int k, i, j;
     c.lever = 1;
     c.bias_model = bias_model;
+    c.settle = settle;
     for (i = 0; i < 3; i++) {
         sd.gyro_bias_rps[i] = bg_sd_rps;
     }
@@ -192,6 +193,13 @@ static void closed_vs_full(int bias_model, fnav_real_t bg_sd_rps, double *dcov, 
             assert_int_equal(fnav_ukf_zupt(&a, w), FNAV_OK);
             assert_int_equal(fnav_ukf_zupt(&b, w), FNAV_OK);
         }
+        if (settle && k % 50 == 39) { /* a stance onset: the settling state runs for the next steps */
+            assert_int_equal(fnav_ukf_settle_start(&a), FNAV_OK);
+            assert_int_equal(fnav_ukf_settle_start(&b), FNAV_OK);
+        }
+    }
+    if (settle) {
+        assert_true(a.settle_on && b.settle_on);
     }
     *dcov = 0.0;
     for (i = 0; i < NM; i++) {
@@ -227,17 +235,28 @@ static void test_closed_form_equivalence(void **state)
     const double dt = 0.005, gamma = sqrt(18.0); /* alpha = 1, kappa = 0: gamma = sqrt(n) */
     double e_big = gamma * 1e-3 * dt, e_small = gamma * 1e-4 * dt;
     (void)state;
-    closed_vs_full(FNAV_BIAS_OFF, FNAV_R(1e-3), &dc, &ds);
+    closed_vs_full(FNAV_BIAS_OFF, FNAV_R(1e-3), 0, &dc, &ds);
     printf("closed form vs full, bias model off: covariance %.3g (relative), state %.3g\n", dc, ds);
     assert_true(dc < 2e3 * EPS);
     assert_true(ds < 2e4 * EPS);
-    closed_vs_full(FNAV_BIAS_AR1, FNAV_R(1e-3), &dc_big, &ds_big);
-    closed_vs_full(FNAV_BIAS_AR1, FNAV_R(1e-4), &dc_small, &ds_small);
+    closed_vs_full(FNAV_BIAS_AR1, FNAV_R(1e-3), 0, &dc_big, &ds_big);
+    closed_vs_full(FNAV_BIAS_AR1, FNAV_R(1e-4), 0, &dc_small, &ds_small);
     printf("closed form vs full, AR(1): covariance %.3g / %.3g, state %.3g / %.3g (e = %.2g / %.2g)\n", dc_big,
            dc_small, ds_big, ds_small, e_big, e_small);
     assert_true(dc_big < 2e3 * EPS + e_big);
     assert_true(dc_small < 2e3 * EPS + e_small);
     assert_true(ds_big < 2e4 * EPS + 100.0 * e_big * e_big);
+    /* with the landing settling state on (linear, like velocity): the same
+     * bounds. With closed_form = 0 its prediction makes the bias maps
+     * itself (predict_linear does not run): make coverage found that path
+     * unrun */
+    {
+        double dc_settle, ds_settle;
+        closed_vs_full(FNAV_BIAS_AR1, FNAV_R(1e-3), 1, &dc_settle, &ds_settle);
+        printf("closed form vs full, AR(1) with settling: covariance %.3g, state %.3g\n", dc_settle, ds_settle);
+        assert_true(dc_settle < 2e3 * EPS + e_big);
+        assert_true(ds_settle < 2e4 * EPS + 100.0 * e_big * e_big);
+    }
 #if FNAV_USE_DOUBLE
     assert_true(dc_big > 1e3 * EPS);         /* the approximation shows in double, */
     assert_true(dc_small < dc_big / 3.0);    /* shrinks with e */
