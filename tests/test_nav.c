@@ -555,6 +555,17 @@ static void test_not_initialised(void **state)
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
     assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
     assert_int_equal(nav.stats.samples, 1u);
+    /* NULL arguments: FNAV_E_ARG, nothing counted (make coverage: push
+     * and pop were not tried with them) */
+    {
+        fnav_nav_frame_t fr;
+        assert_int_equal(fnav_nav_push(NULL, &s), FNAV_E_ARG);
+        assert_int_equal(fnav_nav_push(&nav, NULL), FNAV_E_ARG);
+        assert_int_equal(fnav_nav_pop(NULL, &fr), FNAV_E_ARG);
+        assert_int_equal(fnav_nav_pop(&nav, NULL), FNAV_E_ARG);
+        assert_int_equal(fnav_sample_check(NULL), FNAV_E_ARG);
+        assert_int_equal(nav.stats.samples, 1u);
+    }
 }
 
 /* The navigator's configuration reaches its parts (fnav_nav.h): the UKF's

@@ -171,6 +171,10 @@ static void test_rate_without_stamps(void **state)
     assert_int_equal(fnav_stance_pop(&st, &o), FNAV_END);
     assert_int_equal(fnav_stance_pop(NULL, &o), FNAV_E_ARG);
     assert_int_equal(fnav_stance_pop(&st, NULL), FNAV_E_ARG);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    assert_int_equal(fnav_stance_push(NULL, &s), FNAV_E_ARG);
+    assert_int_equal(fnav_stance_push(&st, NULL), FNAV_E_ARG);
+    assert_int_equal((int)st.n_in, 0);
 }
 
 /* The SHOE statistic of a window equals the formula evaluated here in

@@ -64,6 +64,7 @@ static void test_config(void **state)
     assert_false(f.started);
     assert_int_equal(fnav_ukf_zupt(NULL, fnav_vec3_zero()), FNAV_E_ARG);
     assert_int_equal(fnav_ukf_zaru(NULL, fnav_vec3_zero()), FNAV_E_ARG);
+    assert_int_equal(fnav_ukf_predict(NULL, fnav_vec3_zero(), fnav_vec3_zero(), FNAV_R(0.01)), FNAV_E_ARG);
     c.lever = 1;
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
     assert_int_equal(f.n_act, 18);
