@@ -425,6 +425,17 @@ static void test_bandwidth_analytic(void **state)
     assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_E_ARG);
     c.round_hz = FNAV_R(50.0);
     assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_OK);
+    /* rounded up to a multiple of 50 Hz; with round_hz = 0 not rounded,
+     * fs itself (fnav_welch.h; make coverage: 0 was never tried) */
+    {
+        const double fs = (double)out.fs_hz, up = (double)out.fs_rounded_hz;
+        FNAV_ASSERT_CLOSE(up, 50.0 * ceil(fs / 50.0), 1e-9, 0.0);
+        assert_true(up > fs + 1.0); /* the case rounds something */
+        c.round_hz = FNAV_R(0.0);
+        assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_OK);
+        assert_true(out.fs_rounded_hz == out.fs_hz);
+        FNAV_ASSERT_CLOSE(out.fs_hz, fs, 0.0, 0.0);
+    }
     /* a step so fine that fs / step overflows float (harness psd --round
      * 1e-40 printed fs_Hz inf): a step that small rounds nothing */
     c.round_hz = (fnav_real_t)1e-37;
