@@ -68,6 +68,56 @@ static void test_config(void **state)
     c = fnav_stance_config_default;
     c.detector = (fnav_detector_t)7;
     assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+    /* every real field (make coverage: most of fnav_stance_init's checks
+     * were never made): NaN and -Inf refused everywhere; a field that must
+     * be positive refuses 0 and -1, one that may be 0 takes 0 and refuses
+     * -1; adapt_max_ratio is at least 1; adaptive is 0 or 1 */
+    {
+        static const struct {
+            size_t off;
+            int zero_ok;
+        } f[] = {
+            { offsetof(fnav_stance_config_t, rate_hz), 1 },
+            { offsetof(fnav_stance_config_t, window_s), 0 },
+            { offsetof(fnav_stance_config_t, sigma_a_mps2), 0 },
+            { offsetof(fnav_stance_config_t, sigma_g_rps), 0 },
+            { offsetof(fnav_stance_config_t, gamma), 0 },
+            { offsetof(fnav_stance_config_t, gyro_thresh_rps), 0 },
+            { offsetof(fnav_stance_config_t, accel_thresh_mps2), 0 },
+            { offsetof(fnav_stance_config_t, gravity_mps2), 0 },
+            { offsetof(fnav_stance_config_t, floor_window_s), 0 },
+            { offsetof(fnav_stance_config_t, margin_dec), 1 },
+            { offsetof(fnav_stance_config_t, min_stance_s), 1 },
+            { offsetof(fnav_stance_config_t, min_zupt_s), 1 },
+            { offsetof(fnav_stance_config_t, min_swing_s), 1 },
+            { offsetof(fnav_stance_config_t, event_window_s), 0 },
+        };
+        size_t i;
+        for (i = 0; i < sizeof f / sizeof f[0]; i++) {
+            fnav_real_t *v = (fnav_real_t *)(void *)((char *)&c + f[i].off);
+            c = fnav_stance_config_default;
+            *v = (fnav_real_t)NAN;
+            assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+            *v = -(fnav_real_t)INFINITY;
+            assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+            *v = FNAV_R(-1.0);
+            assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+            *v = FNAV_R(0.0);
+            assert_int_equal(fnav_stance_init(&st, &c), f[i].zero_ok ? FNAV_OK : FNAV_E_CONFIG);
+        }
+        c = fnav_stance_config_default;
+        c.adapt_max_ratio = (fnav_real_t)NAN;
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+        c.adapt_max_ratio = FNAV_R(1.0);
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        c = fnav_stance_config_default;
+        c.adaptive = 2;
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+        c.adaptive = -1;
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+        c.adaptive = 0;
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    }
 }
 
 /* W = 2 floor(window * rate / 2) + 1, at least 3: the same 25 ms at every rate. */
