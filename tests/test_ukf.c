@@ -113,6 +113,48 @@ static void test_config(void **state)
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
     c.closed_form = 0;
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    /* checks of fnav_ukf_init no suite made (make coverage): an
+     * accelerometer noise not finite, beta or kappa not finite, a ZARU sd
+     * of 0, gravity 0, lever 2, a sample type out of the enum, with the
+     * lever an sd of 0 or a negative random walk, an AR1 bias sigma of 0 */
+    {
+        c = fnav_ukf_config_default;
+        c.accel_noise_mps2_rthz[1] = (fnav_real_t)INFINITY;
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+        c = fnav_ukf_config_default;
+        c.beta = (fnav_real_t)NAN;
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+        c = fnav_ukf_config_default;
+        c.kappa = (fnav_real_t)INFINITY;
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+        c = fnav_ukf_config_default;
+        c.zaru_sigma_rps = FNAV_R(0.0);
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+        c = fnav_ukf_config_default;
+        c.strapdown.gravity_mps2 = FNAV_R(0.0);
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+        c = fnav_ukf_config_default;
+        c.lever = 2;
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+        c = fnav_ukf_config_default;
+        c.strapdown.sample_type = (fnav_sample_type_t)7;
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+        c = fnav_ukf_config_default;
+        c.lever = 1;
+        c.lever_sd_m = FNAV_R(0.0);
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+        c = fnav_ukf_config_default;
+        c.lever = 1;
+        c.lever_rw_m_rts = FNAV_R(-1e-3);
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+        c.lever_rw_m_rts = FNAV_R(0.0); /* no random walk: accepted */
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+        c = fnav_ukf_config_default;
+        c.gyro_bias_sigma_rps[0] = FNAV_R(0.0);
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
+        c.bias_model = FNAV_BIAS_OFF; /* not used without the model */
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    }
     /* calls before start */
     c = fnav_ukf_config_default;
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
