@@ -49,6 +49,31 @@ static void test_config(void **state)
     assert_int_equal(fnav_align_init(&al, &c), FNAV_E_CONFIG);
     c.gyro_bias_prior_sd_rps = FNAV_R(0.0); /* no prior: allowed */
     assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
+    /* the checks no suite made (make coverage): NULL configuration; every
+     * real field NaN; min_still_s 0; gravity 0; max_still_s = min_still_s
+     * and short_still_s = min_still_s accepted (the bounds are inclusive) */
+    assert_int_equal(fnav_align_init(&al, NULL), FNAV_E_ARG);
+    {
+        fnav_real_t *const fields[6] = { &c.min_still_s, &c.max_still_s, &c.short_still_s, &c.gravity_mps2,
+                                         &c.still_ratio, &c.gyro_bias_prior_sd_rps };
+        int i;
+        for (i = 0; i < 6; i++) {
+            c = fnav_align_config_default;
+            *fields[i] = (fnav_real_t)NAN;
+            assert_int_equal(fnav_align_init(&al, &c), FNAV_E_CONFIG);
+        }
+    }
+    c = fnav_align_config_default;
+    c.min_still_s = FNAV_R(0.0);
+    c.short_still_s = FNAV_R(0.0);
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_E_CONFIG);
+    c = fnav_align_config_default;
+    c.gravity_mps2 = FNAV_R(0.0);
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_E_CONFIG);
+    c = fnav_align_config_default;
+    c.max_still_s = c.min_still_s;
+    c.short_still_s = c.min_still_s;
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
 }
 
 /* For a body at rest with attitude (roll, pitch, yaw) and an accelerometer
