@@ -478,6 +478,34 @@ static void test_config_and_bad_input(void **state)
     c = fnav_welch_config_default;
     c.offset = FNAV_R(1.0e30);
     assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    /* checks no suite made (make coverage): a power of two below 8 (8 and
+     * FNAV_WELCH_MAX_NFFT accepted), a detrending or scaling outside the
+     * enum, the global mean with a symmetric window, a rate not finite */
+    c = fnav_welch_config_default;
+    c.overlap = 0;
+    c.nfft = 4;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c.nfft = 8;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_OK);
+    c.nfft = FNAV_WELCH_MAX_NFFT;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_OK);
+    c = fnav_welch_config_default;
+    c.detrend = (fnav_detrend_t)9;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c = fnav_welch_config_default;
+    c.scaling = (fnav_scaling_t)9;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c = fnav_welch_config_default;
+    c.detrend = FNAV_DETREND_GLOBAL;
+    c.symmetric = 1;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c.symmetric = 0;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_OK);
+    c = fnav_welch_config_default;
+    c.rate_hz = (fnav_real_t)INFINITY;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c.rate_hz = (fnav_real_t)NAN;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
 }
 
 /* The offset is removed before anything else: with no detrending, a
