@@ -817,6 +817,57 @@ static void test_paper_min_at_end(void **state)
     FNAV_ASSERT_CLOSE(id.sigma_v, 4.0, 0.0, 1e-6);
 }
 
+/* tau_max (fnav_allan.h; `harness allan` passes 10 % of the record; no
+ * suite passed anything but 0, make coverage): on the table of
+ * test_paper_min_at_end, the minimum over tau <= 400 is the 400-sample
+ * point and over tau <= 800 the 800 one, each exactly (the neighbour
+ * above is past tau_max: no parabola); with 0 the parabola in log-log
+ * through 400, 800, 1600 refines it, below the grid minimum. And
+ * FNAV_E_RANGE when 1 s is below the table (at 50 Hz, 50 samples) or
+ * fewer than 2 points are usable. */
+static void test_paper_tau_max(void **state)
+{
+    static const double adev[5] = { 4.0, 2.0, 1.0, 0.5, 2.0 };
+    fnav_allan_result_t r[5];
+    fnav_allan_paper_id_t id;
+    int i;
+    (void)state;
+    memset(r, 0, sizeof r);
+    for (i = 0; i < 5; i++) {
+        r[i].tau = 100u << i;
+        r[i].terms = 100u;
+        r[i].avar = (fnav_real_t)(adev[i] * adev[i]);
+    }
+    assert_int_equal(fnav_allan_identify_paper(r, 5, FNAV_R(100.0), 400u, &id), FNAV_OK);
+    assert_int_equal((int)id.i_min, 2);
+    FNAV_ASSERT_CLOSE(id.bs, 1.0, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(id.tau_samples, 400.0, 0.0, 1e-6);
+    assert_int_equal(fnav_allan_identify_paper(r, 5, FNAV_R(100.0), 800u, &id), FNAV_OK);
+    assert_int_equal((int)id.i_min, 3);
+    FNAV_ASSERT_CLOSE(id.bs, 0.5, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(id.tau_samples, 800.0, 0.0, 1e-6);
+    assert_int_equal(fnav_allan_identify_paper(r, 5, FNAV_R(100.0), 0u, &id), FNAV_OK);
+    assert_int_equal((int)id.i_min, 3);
+    {
+        /* the vertex of the parabola through (ln tau, ln adev) of the three
+         * points, computed here in double */
+        const double x0 = log(400.0), x1 = log(800.0), x2 = log(1600.0);
+        const double y0 = log(1.0), y1 = log(0.5), y2 = log(2.0);
+        const double d1 = (y1 - y0) / (x1 - x0), d2 = (y2 - y1) / (x2 - x1), c2 = (d2 - d1) / (x2 - x0);
+        const double xv = 0.5 * (x0 + x1) - d1 / (2.0 * c2);
+        const double yv = y0 + d1 * (xv - x0) + c2 * (xv - x0) * (xv - x1);
+        assert_true(xv > x0 && xv < x2);
+        FNAV_ASSERT_CLOSE(id.tau_samples, exp(xv), 0.0, 1e-5);
+        FNAV_ASSERT_CLOSE(id.bs, exp(yv), 0.0, 1e-5);
+        assert_true(id.bs < FNAV_R(0.5));
+    }
+    assert_int_equal(fnav_allan_identify_paper(r, 5, FNAV_R(50.0), 0u, &id), FNAV_E_RANGE);
+    for (i = 1; i < 5; i++) {
+        r[i].terms = 0u; /* no term: not usable */
+    }
+    assert_int_equal(fnav_allan_identify_paper(r, 5, FNAV_R(100.0), 0u, &id), FNAV_E_RANGE);
+}
+
 /* Flicker phase noise (alpha = 1) with more than 100 lags: Greenhall &
  * Riley's algorithm switches from the exact basic sum to their case-3
  * approximation 1/edf = (a0 - a1/r) / (b^2 r), b = b0 + b1 ln m. It must
@@ -2096,6 +2147,7 @@ int main(void)
         cmocka_unit_test(test_edf_flicker_pm_table),
         cmocka_unit_test(test_slopes_three_points),
         cmocka_unit_test(test_paper_min_at_end),
+        cmocka_unit_test(test_paper_tau_max),
         cmocka_unit_test(test_pdev_edf),
         cmocka_unit_test(test_pdev_edf_simulated),
         cmocka_unit_test(test_phasedat_oadev_every_tau),
