@@ -945,12 +945,16 @@ static void test_deterministic_signal_effects(void **state)
         FNAV_ASSERT_CLOSE(y[4], (double)c.saturation.range[4], 0.0, 0.0); /* 0.25 + 1.0 clipped at the output */
         FNAV_ASSERT_CLOSE(y[5], -1.5, 0.0, 0.0);
     }
-    c.mask[FNAV_EFFECT_QUANT] = FNAV_CH_AZ;
+    c.mask[FNAV_EFFECT_QUANT] = FNAV_CH_AZ | FNAV_CH_GX;
     c.quant.lsb[2] = FNAV_R(0.3);
+    c.quant.lsb[3] = FNAV_R(0.18);
     assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
     fnav_imuerr_signal(&e, f, w, y);
     fnav_imuerr_sensor(&e, y);
     FNAV_ASSERT_CLOSE(y[2], -4.8, 1e-6, 0.0);
+    /* and on the positive side (make coverage: never run): 0.3 rounds to
+     * 2 lsb = 0.36, past the range; the top is 1 lsb, 0.18 */
+    FNAV_ASSERT_CLOSE(y[3], 0.18, 1e-7, 0.0);
     /* offset */
     c = base_cfg(100.0);
     c.mask[FNAV_EFFECT_OFFSET] = FNAV_CH_AX;
