@@ -719,6 +719,45 @@ static void test_gait_events(void **state)
     assert_int_equal(ev.fs_at, 152);
 }
 
+/* A log that starts in the swing (20 samples at 100 Hz, min_swing_s 0.1
+ * s): the foot-strike search window (event_window_s, 30 samples) reaches
+ * back past the first sample and is cut at it (make coverage: never run);
+ * the impact onset at sample 12 is still the foot-strike, as at 152 in
+ * test_gait_events. */
+static void test_foot_strike_at_start(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    const double rate = 100.0;
+    long k, n = 200;
+    events_t ev = { -1, -1, 0, 0 };
+    (void)state;
+    c.rate_hz = (fnav_real_t)rate;
+    c.min_swing_s = FNAV_R(0.1);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k <= n; k++) {
+        if (k < n) {
+            double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+            if (k < 20) {
+                w[1] = 3.0;
+                f[0] = 2.0;
+            }
+            if (k >= 12 && k < 16) {
+                f[2] = -k_g + (k == 12 ? 30.0 : (k == 13 ? -20.0 : 8.0)); /* impact from sample 12 */
+            }
+            {
+                fnav_sample_t s = sample(k, rate, f, w);
+                assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+            }
+        } else {
+            fnav_stance_finish(&st);
+        }
+        pop_events(&st, rate, &ev);
+    }
+    assert_int_equal(ev.nfs, 1);
+    assert_int_equal(ev.fs_at, 12);
+}
+
 /* The foot-off search covers the first event_window_s of the swing run,
  * n_ev = round(0.3 s x 100 Hz) = 30 samples: the run of test_gait_events
  * begins at sample 99 (the 3-sample SHOE window, test_window_from_rate,
@@ -1256,6 +1295,7 @@ int main(void)
         cmocka_unit_test(test_threshold_both_below),
         cmocka_unit_test(test_threshold_at_limit),
         cmocka_unit_test(test_gait_events),
+        cmocka_unit_test(test_foot_strike_at_start),
         cmocka_unit_test(test_foot_off_window_edge),
         cmocka_unit_test(test_foot_off_short_pause),
         cmocka_unit_test(test_foot_strike_jumps_add_up),
