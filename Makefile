@@ -7,6 +7,7 @@
 #   make firmware   the reference firmware image for Cortex-M4F: size and stack report
 #   make firmware-bench  the firmware in qemu-system-arm: instructions per call
 #   make bench      benchmarks (figures quoted in docs/ come from here)
+#   make coverage   line and branch coverage of src/ by the suites (build/cov; not part of make test)
 #   make simgap-validation  the gap diagnosis on withheld effects -> docs/simgap-validation.md
 #   make deps       install the Debian packages (scripts/bootstrap.sh)
 #   make install    the library, its headers, footnav.pc and the harness (as
@@ -58,7 +59,7 @@ BENCH_BINS  := $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 FORBIDDEN := malloc|calloc|realloc|free|_sbrk|sbrk|printf|fprintf|sprintf|snprintf|vprintf|vfprintf|vsprintf|vsnprintf|puts|fputs|putchar|fputc|putc|fopen|fclose|fread|fwrite|fflush|stdout|stderr|stdin|_impure_ptr|__printf_chk|__fprintf_chk|__sprintf_chk|__snprintf_chk|exit|abort|system
 
 .PHONY: all test check-suites test-double test-cli vectors-check nm-check sanitize \
-        firmware firmware-bench bench deps clean run fuzz valgrind lint longrun install uninstall
+        firmware firmware-bench bench deps clean run fuzz valgrind lint longrun install uninstall coverage
 
 all: $(LIB) $(HARNESS) nm-check
 
@@ -140,6 +141,18 @@ sanitize:
 	  SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
 	  check-suites test-cli
 	@echo "make sanitize: all passed under ASan + UBSan"
+
+# make coverage: the suites built in $(COV_BUILD) with --coverage at -O0
+# (SAN is the flag variable every compile and link line carries) and run;
+# then scripts/coverage.sh prints line and branch coverage of src/*.c (and
+# of the inline functions of include/footnav/) per file and in total, and
+# leaves the annotated sources in $(COV_BUILD)/gcov/. The CLI tests are not
+# counted. Old counts are removed first. Not part of make test or CI.
+COV_BUILD := build/cov
+coverage:
+	@find $(COV_BUILD) -name '*.gcda' -delete 2>/dev/null || true
+	$(MAKE) BUILD=$(COV_BUILD) HARNESS=$(COV_BUILD)/harness OPT="-O0 -g" SAN=--coverage check-suites
+	@sh scripts/coverage.sh $(COV_BUILD)
 
 # ---------------------------------------------------------------- firmware
 # make firmware: the reference firmware image for a generic Cortex-M4F

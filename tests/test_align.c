@@ -49,6 +49,31 @@ static void test_config(void **state)
     assert_int_equal(fnav_align_init(&al, &c), FNAV_E_CONFIG);
     c.gyro_bias_prior_sd_rps = FNAV_R(0.0); /* no prior: allowed */
     assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
+    /* the checks no suite made (make coverage): NULL configuration; every
+     * real field NaN; min_still_s 0; gravity 0; max_still_s = min_still_s
+     * and short_still_s = min_still_s accepted (the bounds are inclusive) */
+    assert_int_equal(fnav_align_init(&al, NULL), FNAV_E_ARG);
+    {
+        fnav_real_t *const fields[6] = { &c.min_still_s, &c.max_still_s, &c.short_still_s, &c.gravity_mps2,
+                                         &c.still_ratio, &c.gyro_bias_prior_sd_rps };
+        int i;
+        for (i = 0; i < 6; i++) {
+            c = fnav_align_config_default;
+            *fields[i] = (fnav_real_t)NAN;
+            assert_int_equal(fnav_align_init(&al, &c), FNAV_E_CONFIG);
+        }
+    }
+    c = fnav_align_config_default;
+    c.min_still_s = FNAV_R(0.0);
+    c.short_still_s = FNAV_R(0.0);
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_E_CONFIG);
+    c = fnav_align_config_default;
+    c.gravity_mps2 = FNAV_R(0.0);
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_E_CONFIG);
+    c = fnav_align_config_default;
+    c.max_still_s = c.min_still_s;
+    c.short_still_s = c.min_still_s;
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
 }
 
 /* For a body at rest with attitude (roll, pitch, yaw) and an accelerometer
@@ -362,6 +387,49 @@ static void test_short_period_fallback(void **state)
     assert_int_equal((int)al.result.samples, 25);
 }
 
+/* finish when a short period was kept and the current one does not
+ * qualify (shorter than min_still_s and noisier than the kept one): the
+ * kept period aligns, as at the first motion in test_short_period_fallback.
+ * A second finish is FNAV_OK and changes nothing; a push after the end is
+ * FNAV_E_STATE; NULL is refused (make coverage: none of these was run). */
+static void test_finish_keeps_best(void **state)
+{
+    fnav_align_t al;
+    fnav_align_config_t c = fnav_align_config_default;
+    fnav_align_result_t r;
+    fnav_align_result_t out;
+    long k;
+    (void)state;
+    c.gyro_bias_prior_sd_rps = FNAV_R(0.0);
+    assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
+    for (k = 0; k < 31; k++) {
+        fnav_sample_t s = still_sample(k, 100.0, 0.0);
+        assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_AGAIN);
+    }
+    for (k = 31; k < 63; k++) { /* the ratio test ends the quiet period at k = 31 */
+        fnav_sample_t s = still_sample(k, 100.0, 0.0);
+        assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(1e4)), FNAV_AGAIN);
+    }
+    assert_int_equal(al.have_best, 1);
+    assert_int_equal((int)al.cur.n, 31);
+    assert_int_equal(fnav_align_finish(&al), FNAV_OK);
+    assert_int_equal(al.done, 1);
+    assert_int_equal((int)al.result.samples, 31);
+    FNAV_ASSERT_CLOSE(al.result.duration_s, 0.3, 1e-6, 0.0);
+    r = al.result;
+    assert_int_equal(fnav_align_finish(&al), FNAV_OK);
+    assert_memory_equal(&al.result, &r, sizeof r);
+    {
+        fnav_sample_t s = still_sample(63, 100.0, 0.0);
+        assert_int_equal(fnav_align_push(&al, &s, 1, FNAV_R(100.0)), FNAV_E_STATE);
+        assert_int_equal(fnav_align_push(NULL, &s, 1, FNAV_R(100.0)), FNAV_E_ARG);
+        assert_int_equal(fnav_align_push(&al, NULL, 1, FNAV_R(100.0)), FNAV_E_ARG);
+        assert_int_equal(fnav_align_renew(NULL, &s, 1, FNAV_R(100.0), FNAV_R(0.1), &out), 0);
+        assert_int_equal(fnav_align_renew(&al, &s, 1, FNAV_R(100.0), FNAV_R(0.1), NULL), 0);
+    }
+    assert_int_equal(fnav_align_finish(NULL), FNAV_E_ARG);
+}
+
 /* Gyro bias posterior. (1) A clean still period (white noise) keeps almost
  * the whole mean: its standard error is the white-noise value. (2) A foot
  * swaying at 1 Hz by 1 deg over 0.75 s has a mean rate far from the bias;
@@ -624,6 +692,7 @@ int main(void)
         cmocka_unit_test(test_rounded_variance_clamped),
         cmocka_unit_test(test_finish),
         cmocka_unit_test(test_short_period_fallback),
+        cmocka_unit_test(test_finish_keeps_best),
         cmocka_unit_test(test_gyro_bias_posterior),
         cmocka_unit_test(test_zero_mean_period),
         cmocka_unit_test(test_stuck_stamp_period),

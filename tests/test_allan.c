@@ -470,6 +470,79 @@ static void test_edf_white_pm_few_terms(void **state)
                       1464.0 / (1.0 + 2.0 * (1.0 - 1.0 / r768) * (4.0 / 6.0) * (4.0 / 6.0)), 1e-9, 0.0);
 }
 
+/* Greenhall's EDF where it has more than EDF_JMAX = 100 terms (J > 100):
+ * none of these branches was run by a suite (make coverage). The reference
+ * is the exact EDF of the overlapping estimator, written here from its
+ * definition: a term is z_i = sum_n w_n e_(i+n) over a white sequence e (y
+ * for white FM, alpha = 0: the second difference of the phase x = cumsum
+ * y at stride m, averaged over m starts when modified; x itself for white
+ * PM, alpha = +2), its covariance c_k = sum_n w_n w_(n+k), and the mean of
+ * M such squares has, Gaussian, edf = 2 E^2 / var = M c0^2 / (c0^2 + 2
+ * sum_(k=1..M-1) (1 - k/M) c_k^2). (1) J > 100 with r = M/S <= d + 1:
+ * the basic sum cut to 100 terms; unmodified (r = 0.51, 1.00, 2.51) and
+ * modified (r = 0.505, 1.51), white FM, within 1 % (the order of a cut
+ * at 100 terms; 8e-4 at most measured). At r = 0.51 the
+ * table form (1/r)(a0 - a1/r) would give 39 against 1.69, at r = 1 3.0
+ * against 2.68. (2) Case 4 (white PM, unmodified) with K = ceil(r) > d and
+ * J > 100: the table's (1/M)(a0 - a1/r) is exact there (the terms
+ * correlate at lags 0, m, 2m only). */
+static double edf_w[1024];
+
+static double edf_exact(int alpha, int modified, long m, long n_phase)
+{
+    const long lw = modified ? 3 * m : (alpha == 0 ? 2 * m : 2 * m + 1);
+    const long M = n_phase - (modified ? 3 * m - 1 : 2 * m);
+    double c0 = 0.0, s = 0.0;
+    long j, n, k;
+    assert_true(lw <= (long)(sizeof edf_w / sizeof edf_w[0]));
+    memset(edf_w, 0, sizeof edf_w);
+    for (j = 0; j < (modified ? m : 1); j++) {
+        if (alpha == 0) {
+            for (n = 0; n < m; n++) {
+                edf_w[j + n] -= 1.0;
+                edf_w[j + m + n] += 1.0;
+            }
+        } else {
+            edf_w[j] += 1.0;
+            edf_w[j + m] -= 2.0;
+            edf_w[j + 2 * m] += 1.0;
+        }
+    }
+    for (n = 0; n < lw; n++) {
+        c0 += edf_w[n] * edf_w[n];
+    }
+    for (k = 1; k < M && k < lw; k++) {
+        double c = 0.0;
+        for (n = 0; n + k < lw; n++) {
+            c += edf_w[n] * edf_w[n + k];
+        }
+        s += (1.0 - (double)k / (double)M) * c * c;
+    }
+    return (double)M * c0 * c0 / (c0 * c0 + 2.0 * s);
+}
+
+static void test_edf_many_terms(void **state)
+{
+    static const struct {
+        int alpha, modified;
+        long m, n;
+        double rel;
+    } t[] = {
+        { 0, 0, 200, 501, 0.01 }, { 0, 0, 200, 601, 0.01 }, { 0, 0, 100, 451, 0.01 },
+        { 0, 1, 200, 701, 0.01 }, { 0, 1, 100, 451, 0.01 },
+        { 2, 0, 200, 1151, 1e-9 }, { 2, 0, 100, 651, 1e-9 },
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof t / sizeof t[0]; i++) {
+        const double want = edf_exact(t[i].alpha, t[i].modified, t[i].m, t[i].n);
+        const double got = fnav_allan_edf_var(t[i].alpha, 2, t[i].modified, (uint32_t)t[i].m, (uint32_t)t[i].n, 1);
+        FNAV_ASSERT_CLOSE(got, want, 0.0, t[i].rel);
+    }
+    /* the reference itself: one term is one degree of freedom */
+    FNAV_ASSERT_CLOSE(edf_exact(0, 0, 50, 101), 1.0, 1e-12, 0.0);
+}
+
 static void test_edf_var_edges(void **state)
 {
     int alpha, d;
@@ -742,6 +815,57 @@ static void test_paper_min_at_end(void **state)
     FNAV_ASSERT_CLOSE(id.tau_samples, 800.0, 0.0, 1e-6);
     FNAV_ASSERT_CLOSE(id.t_bs_s, 8.0, 0.0, 1e-6);
     FNAV_ASSERT_CLOSE(id.sigma_v, 4.0, 0.0, 1e-6);
+}
+
+/* tau_max (fnav_allan.h; `harness allan` passes 10 % of the record; no
+ * suite passed anything but 0, make coverage): on the table of
+ * test_paper_min_at_end, the minimum over tau <= 400 is the 400-sample
+ * point and over tau <= 800 the 800 one, each exactly (the neighbour
+ * above is past tau_max: no parabola); with 0 the parabola in log-log
+ * through 400, 800, 1600 refines it, below the grid minimum. And
+ * FNAV_E_RANGE when 1 s is below the table (at 50 Hz, 50 samples) or
+ * fewer than 2 points are usable. */
+static void test_paper_tau_max(void **state)
+{
+    static const double adev[5] = { 4.0, 2.0, 1.0, 0.5, 2.0 };
+    fnav_allan_result_t r[5];
+    fnav_allan_paper_id_t id;
+    int i;
+    (void)state;
+    memset(r, 0, sizeof r);
+    for (i = 0; i < 5; i++) {
+        r[i].tau = 100u << i;
+        r[i].terms = 100u;
+        r[i].avar = (fnav_real_t)(adev[i] * adev[i]);
+    }
+    assert_int_equal(fnav_allan_identify_paper(r, 5, FNAV_R(100.0), 400u, &id), FNAV_OK);
+    assert_int_equal((int)id.i_min, 2);
+    FNAV_ASSERT_CLOSE(id.bs, 1.0, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(id.tau_samples, 400.0, 0.0, 1e-6);
+    assert_int_equal(fnav_allan_identify_paper(r, 5, FNAV_R(100.0), 800u, &id), FNAV_OK);
+    assert_int_equal((int)id.i_min, 3);
+    FNAV_ASSERT_CLOSE(id.bs, 0.5, 0.0, 1e-6);
+    FNAV_ASSERT_CLOSE(id.tau_samples, 800.0, 0.0, 1e-6);
+    assert_int_equal(fnav_allan_identify_paper(r, 5, FNAV_R(100.0), 0u, &id), FNAV_OK);
+    assert_int_equal((int)id.i_min, 3);
+    {
+        /* the vertex of the parabola through (ln tau, ln adev) of the three
+         * points, computed here in double */
+        const double x0 = log(400.0), x1 = log(800.0), x2 = log(1600.0);
+        const double y0 = log(1.0), y1 = log(0.5), y2 = log(2.0);
+        const double d1 = (y1 - y0) / (x1 - x0), d2 = (y2 - y1) / (x2 - x1), c2 = (d2 - d1) / (x2 - x0);
+        const double xv = 0.5 * (x0 + x1) - d1 / (2.0 * c2);
+        const double yv = y0 + d1 * (xv - x0) + c2 * (xv - x0) * (xv - x1);
+        assert_true(xv > x0 && xv < x2);
+        FNAV_ASSERT_CLOSE(id.tau_samples, exp(xv), 0.0, 1e-5);
+        FNAV_ASSERT_CLOSE(id.bs, exp(yv), 0.0, 1e-5);
+        assert_true(id.bs < FNAV_R(0.5));
+    }
+    assert_int_equal(fnav_allan_identify_paper(r, 5, FNAV_R(50.0), 0u, &id), FNAV_E_RANGE);
+    for (i = 1; i < 5; i++) {
+        r[i].terms = 0u; /* no term: not usable */
+    }
+    assert_int_equal(fnav_allan_identify_paper(r, 5, FNAV_R(100.0), 0u, &id), FNAV_E_RANGE);
 }
 
 /* Flicker phase noise (alpha = 1) with more than 100 lags: Greenhall &
@@ -1247,6 +1371,18 @@ static void test_grid(void **state)
     }
     assert_int_equal(g[n - 1], 1u << 20);
     assert_int_equal(fnav_allan_grid(g, 3, 1u << 20, 4), 3);
+    /* a tau_max past FNAV_ALLAN_TAU_MAX is capped there (fnav_allan.h):
+     * the octaves 1 .. FNAV_ALLAN_TAU_MAX, every one valid, and NULL gives
+     * no point (make coverage: neither was run) */
+    n = fnav_allan_grid(g, 128, UINT32_MAX, 1);
+    assert_int_equal(n, FNAV_ALLAN_MAX_LEVELS);
+    assert_int_equal((unsigned long)g[n - 1], FNAV_ALLAN_TAU_MAX);
+    for (i = 0; i < n; i++) {
+        assert_int_equal(g[i], 1u << i);
+        assert_true(fnav_allan_tau_valid(g[i]));
+    }
+    assert_false(fnav_allan_tau_valid((uint32_t)(FNAV_ALLAN_TAU_MAX + 1ul)));
+    assert_int_equal(fnav_allan_grid(NULL, 128, 1000, 1), 0);
 }
 
 /* ------------------------------------------------------------ noise types */
@@ -1279,6 +1415,14 @@ static void test_noise_from_slope(void **state)
     assert_int_equal(fnav_allan_noise_alpha(FNAV_ALLAN_NOISE_WHITE), 0);
     assert_int_equal(fnav_allan_noise_alpha(FNAV_ALLAN_NOISE_RRW), -2);
     assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_RRW), "rate-random-walk");
+    /* the other names (harness allan prints them; make coverage: never
+     * asked), and "unknown" for UNKNOWN and a value outside the enum */
+    assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_QUANT), "quantisation");
+    assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_WHITE), "white");
+    assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_FLICKER), "flicker");
+    assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_RAMP), "ramp");
+    assert_string_equal(fnav_allan_noise_name(FNAV_ALLAN_NOISE_UNKNOWN), "unknown");
+    assert_string_equal(fnav_allan_noise_name((fnav_allan_noise_t)99), "unknown");
 }
 
 /* Simulated pure white noise and pure random walk: the local slopes and
@@ -1995,6 +2139,7 @@ int main(void)
         cmocka_unit_test(test_phasedat_other_deviations),
         cmocka_unit_test(test_edf_var_edges),
         cmocka_unit_test(test_edf_white_pm_few_terms),
+        cmocka_unit_test(test_edf_many_terms),
         cmocka_unit_test(test_pdev_nbs14),
         cmocka_unit_test(test_totdev_nbs14),
         cmocka_unit_test(test_totdev_edf),
@@ -2002,6 +2147,7 @@ int main(void)
         cmocka_unit_test(test_edf_flicker_pm_table),
         cmocka_unit_test(test_slopes_three_points),
         cmocka_unit_test(test_paper_min_at_end),
+        cmocka_unit_test(test_paper_tau_max),
         cmocka_unit_test(test_pdev_edf),
         cmocka_unit_test(test_pdev_edf_simulated),
         cmocka_unit_test(test_phasedat_oadev_every_tau),

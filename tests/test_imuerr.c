@@ -249,6 +249,28 @@ static void test_catalogue_names_and_params(void **state)
     fnav_imuerr_disable(&c, FNAV_EFFECT_JITTER);
     assert_int_equal(c.mask[FNAV_EFFECT_JITTER], 0);
     assert_int_equal(fnav_imuerr_enable(NULL, FNAV_EFFECT_JITTER, FNAV_CH_AX), FNAV_E_ARG);
+
+    /* bad names, ids and channels (fnav_imuerr.h; make coverage: not run):
+     * no effect, index -1, a get of 0, a reset that changes nothing */
+    assert_int_equal(fnav_imuerr_effect_find(NULL), FNAV_EFFECT_COUNT);
+    assert_int_equal(fnav_imuerr_param_find(FNAV_EFFECT_QUANT, NULL), -1);
+    assert_int_equal(fnav_imuerr_param_find(FNAV_EFFECT_COUNT, "lsb"), -1);
+    i = fnav_imuerr_param_find(FNAV_EFFECT_QUANT, "lsb");
+    assert_true(fnav_imuerr_param_get(&c, FNAV_EFFECT_QUANT, i, 6) == FNAV_R(0.0));
+    assert_true(fnav_imuerr_param_get(&c, FNAV_EFFECT_QUANT, i, -1) == FNAV_R(0.0));
+    assert_true(fnav_imuerr_param_get(&c, FNAV_EFFECT_COUNT, 0, 0) == FNAV_R(0.0));
+    assert_true(fnav_imuerr_param_get(NULL, FNAV_EFFECT_QUANT, i, 0) == FNAV_R(0.0));
+    /* a scalar parameter ignores the channel, whatever it is */
+    i = fnav_imuerr_param_find(FNAV_EFFECT_DROPOUT, "prob");
+    c.dropout.prob = FNAV_R(0.125);
+    assert_true(fnav_imuerr_param_get(&c, FNAV_EFFECT_DROPOUT, i, 17) == FNAV_R(0.125));
+    {
+        fnav_imuerr_config_t before = c;
+        fnav_imuerr_effect_reset(&c, FNAV_EFFECT_COUNT);
+        assert_memory_equal(&c, &before, sizeof c);
+    }
+    fnav_imuerr_effect_reset(NULL, FNAV_EFFECT_QUANT);
+    assert_int_equal(fnav_imuerr_internal_factor(NULL), 1u);
 }
 
 static void test_config_validation(void **state)
@@ -311,6 +333,23 @@ static void test_config_validation(void **state)
     c.alias.factor = FNAV_R(8.0);
     assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
     assert_int_equal(fnav_imuerr_internal_factor(&c), 8);
+    /* a scalar parameter outside its range [2, 1024] (make coverage: only
+     * per-channel ones were tried) */
+    c.alias.factor = FNAV_R(1.0);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_E_CONFIG);
+    c.alias.factor = FNAV_R(2048.0);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_E_CONFIG);
+    c.alias.factor = FNAV_R(1024.0);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
+    /* the rate finite and positive, oversample 1 .. 1024 */
+    c = fnav_imuerr_config_default;
+    c.rate_hz = (fnav_real_t)NAN;
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_E_CONFIG);
+    c = fnav_imuerr_config_default;
+    c.oversample = 1025u;
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_E_CONFIG);
+    c.oversample = 1024u;
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
 
     c = fnav_imuerr_config_default;
     c.mask[FNAV_EFFECT_JUMPS] = FNAV_CH_AX;
@@ -906,12 +945,16 @@ static void test_deterministic_signal_effects(void **state)
         FNAV_ASSERT_CLOSE(y[4], (double)c.saturation.range[4], 0.0, 0.0); /* 0.25 + 1.0 clipped at the output */
         FNAV_ASSERT_CLOSE(y[5], -1.5, 0.0, 0.0);
     }
-    c.mask[FNAV_EFFECT_QUANT] = FNAV_CH_AZ;
+    c.mask[FNAV_EFFECT_QUANT] = FNAV_CH_AZ | FNAV_CH_GX;
     c.quant.lsb[2] = FNAV_R(0.3);
+    c.quant.lsb[3] = FNAV_R(0.18);
     assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
     fnav_imuerr_signal(&e, f, w, y);
     fnav_imuerr_sensor(&e, y);
     FNAV_ASSERT_CLOSE(y[2], -4.8, 1e-6, 0.0);
+    /* and on the positive side (make coverage: never run): 0.3 rounds to
+     * 2 lsb = 0.36, past the range; the top is 1 lsb, 0.18 */
+    FNAV_ASSERT_CLOSE(y[3], 0.18, 1e-7, 0.0);
     /* offset */
     c = base_cfg(100.0);
     c.mask[FNAV_EFFECT_OFFSET] = FNAV_CH_AX;

@@ -149,6 +149,60 @@ static void test_config(void **state)
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
     c.zaru_after_s = (fnav_real_t)INFINITY;
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* the checks of nav_init no suite made (make coverage): gravity not
+     * finite; a motion noise not finite or negative; an initial sd of 0,
+     * negative, or whose square is 0 or infinite in the working precision
+     * (fnav_ukf_start would refuse it); zaru neither 0 nor 1; a renewal
+     * minimum negative or NaN */
+    {
+        const fnav_real_t huge = (fnav_real_t)(FNAV_USE_DOUBLE ? 1e200 : 1e30);
+        const fnav_real_t tiny = (fnav_real_t)(FNAV_USE_DOUBLE ? 1e-200 : 1e-30);
+        const fnav_real_t bad_sd[4] = { FNAV_R(0.0), FNAV_R(-0.1), huge, tiny };
+        int k;
+        c = fnav_nav_config_default;
+        c.gravity_mps2 = (fnav_real_t)NAN;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c = fnav_nav_config_default;
+        c.accel_motion_noise_mps2_rthz = (fnav_real_t)INFINITY;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.accel_motion_noise_mps2_rthz = FNAV_R(-0.1);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.accel_motion_noise_mps2_rthz = FNAV_R(0.0); /* none: accepted */
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+        c = fnav_nav_config_default;
+        c.gyro_motion_noise_rps_rthz = (fnav_real_t)NAN;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.gyro_motion_noise_rps_rthz = FNAV_R(-0.1);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.gyro_motion_noise_rps_rthz = FNAV_R(0.0);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+        for (k = 0; k < 4; k++) {
+            c = fnav_nav_config_default;
+            c.tilt_sd_rad = bad_sd[k];
+            assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+            c = fnav_nav_config_default;
+            c.yaw_sd_rad = bad_sd[k];
+            assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+            c = fnav_nav_config_default;
+            c.gyro_bias_sd_rps = bad_sd[k];
+            assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+            c = fnav_nav_config_default;
+            c.accel_bias_sd_mps2 = bad_sd[k];
+            assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        }
+        c = fnav_nav_config_default;
+        c.zaru = 2;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.zaru = -1;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c = fnav_nav_config_default;
+        c.realign_min_s = FNAV_R(-0.1);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.realign_min_s = (fnav_real_t)NAN;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c.realign_min_s = FNAV_R(0.0);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    }
 }
 
 /* One frame per accepted sample, in order; rejected samples change nothing;
@@ -501,6 +555,17 @@ static void test_not_initialised(void **state)
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
     assert_int_equal(fnav_nav_push(&nav, &s), FNAV_OK);
     assert_int_equal(nav.stats.samples, 1u);
+    /* NULL arguments: FNAV_E_ARG, nothing counted (make coverage: push
+     * and pop were not tried with them) */
+    {
+        fnav_nav_frame_t fr;
+        assert_int_equal(fnav_nav_push(NULL, &s), FNAV_E_ARG);
+        assert_int_equal(fnav_nav_push(&nav, NULL), FNAV_E_ARG);
+        assert_int_equal(fnav_nav_pop(NULL, &fr), FNAV_E_ARG);
+        assert_int_equal(fnav_nav_pop(&nav, NULL), FNAV_E_ARG);
+        assert_int_equal(fnav_sample_check(NULL), FNAV_E_ARG);
+        assert_int_equal(nav.stats.samples, 1u);
+    }
 }
 
 /* The navigator's configuration reaches its parts (fnav_nav.h): the UKF's
@@ -705,6 +770,130 @@ static void test_run_after_finish(void **state)
     assert_int_equal(fnav_nav_run(&nav, &port, 0), FNAV_E_STATE);
     assert_int_equal(g_reads, 0);
     assert_int_equal(nav.stats.frames, 50u);
+}
+
+/* fnav_nav_run's other exits (fnav_nav.h; found by make coverage, none
+ * was run by a suite): the max_samples limit (exactly that many samples
+ * read, then the frames flushed as at the end of the source); FNAV_AGAIN
+ * from a non-blocking source (called again, not counted against the
+ * limit, the frames those of a source without it); a read error (its
+ * status returned after every frame of the samples read was written); a
+ * sink failing inside the loop or in the final flush (FNAV_E_IO, nothing
+ * more read or written); NULL arguments (FNAV_E_ARG). */
+typedef struct {
+    long n;        /**< samples the source holds */
+    fnav_status_t end; /**< returned after them: FNAV_END or an error */
+    int again;     /**< FNAV_AGAIN before every sample */
+    long fail_at;  /**< the sink fails on this frame (0-based), -1: never */
+    long reads, calls, writes;
+    fnav_nav_frame_t *out;
+} script_port_t;
+
+static fnav_status_t script_read(void *ctx, fnav_sample_t *s)
+{
+    script_port_t *m = (script_port_t *)ctx;
+    m->calls++;
+    if (m->again && m->calls % 2 == 1) {
+        return FNAV_AGAIN;
+    }
+    if (m->reads >= m->n) {
+        return m->end;
+    }
+    *s = still(m->reads);
+    m->reads++;
+    return FNAV_OK;
+}
+
+static fnav_status_t script_write(void *ctx, const fnav_nav_frame_t *f)
+{
+    script_port_t *m = (script_port_t *)ctx;
+    if (m->writes == m->fail_at) {
+        return FNAV_E_IO;
+    }
+    if (m->out != NULL) {
+        m->out[m->writes] = *f;
+    }
+    m->writes++;
+    return FNAV_OK;
+}
+
+static fnav_status_t script_run(script_port_t *m, long max_samples)
+{
+    static fnav_nav_t nav;
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_port_t port;
+    memset(&port, 0, sizeof port);
+    port.ctx = m;
+    port.read_sample = script_read;
+    port.write_nav = script_write;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    return fnav_nav_run(&nav, &port, max_samples);
+}
+
+static void test_run_exits(void **state)
+{
+    static fnav_nav_t nav;
+    static fnav_nav_frame_t fa[200], fb[200];
+    fnav_nav_config_t c = fnav_nav_config_default;
+    fnav_port_t port;
+    script_port_t m;
+    (void)state;
+    /* reference: 200 samples, plain source */
+    memset(&m, 0, sizeof m);
+    m.n = 200, m.end = FNAV_END, m.fail_at = -1, m.out = fa;
+    assert_int_equal(script_run(&m, 0), FNAV_OK);
+    assert_int_equal(m.reads, 200);
+    assert_int_equal(m.writes, 200);
+    /* FNAV_AGAIN before every sample: the same frames */
+    memset(&m, 0, sizeof m);
+    m.n = 200, m.end = FNAV_END, m.again = 1, m.fail_at = -1, m.out = fb;
+    assert_int_equal(script_run(&m, 0), FNAV_OK);
+    assert_int_equal(m.writes, 200);
+    assert_memory_equal(fa, fb, sizeof fa);
+    /* max_samples = 120 on that source: 120 samples read (in 240 calls:
+     * the FNAV_AGAINs are not counted) and the frames of a source of 120
+     * samples, those held back flushed as at its end */
+    memset(&m, 0, sizeof m);
+    m.n = 120, m.end = FNAV_END, m.fail_at = -1, m.out = fa;
+    assert_int_equal(script_run(&m, 0), FNAV_OK);
+    assert_int_equal(m.writes, 120);
+    memset(&m, 0, sizeof m);
+    m.n = 200, m.end = FNAV_END, m.again = 1, m.fail_at = -1, m.out = fb;
+    assert_int_equal(script_run(&m, 120), FNAV_OK);
+    assert_int_equal(m.reads, 120);
+    assert_int_equal(m.calls, 240);
+    assert_int_equal(m.writes, 120);
+    assert_memory_equal(fa, fb, 120 * sizeof fa[0]);
+    /* a read error after 60 samples: its status, after the 60 frames */
+    memset(&m, 0, sizeof m);
+    m.n = 60, m.end = FNAV_E_IO, m.fail_at = -1;
+    assert_int_equal(script_run(&m, 0), FNAV_E_IO);
+    assert_int_equal(m.reads, 60);
+    assert_int_equal(m.writes, 60);
+    memset(&m, 0, sizeof m);
+    m.n = 60, m.end = FNAV_E_TRUNCATED, m.fail_at = -1;
+    assert_int_equal(script_run(&m, 0), FNAV_E_TRUNCATED);
+    assert_int_equal(m.writes, 60);
+    /* the sink fails on frame 10 (in the loop): nothing more read */
+    memset(&m, 0, sizeof m);
+    m.n = 200, m.end = FNAV_END, m.fail_at = 10;
+    assert_int_equal(script_run(&m, 0), FNAV_E_IO);
+    assert_int_equal(m.writes, 10);
+    assert_true(m.reads < 200);
+    assert_true(m.reads > 10);
+    /* the sink fails on the last frame, one held back until the end of
+     * the source (the frames lag the samples): in the flush */
+    memset(&m, 0, sizeof m);
+    m.n = 200, m.end = FNAV_END, m.fail_at = 199;
+    assert_int_equal(script_run(&m, 0), FNAV_E_IO);
+    assert_int_equal(m.reads, 200);
+    assert_int_equal(m.writes, 199);
+    /* NULL */
+    memset(&port, 0, sizeof port);
+    port.read_sample = script_read;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    assert_int_equal(fnav_nav_run(NULL, &port, 0), FNAV_E_ARG);
+    assert_int_equal(fnav_nav_run(&nav, NULL, 0), FNAV_E_ARG);
 }
 
 /* What fnav_nav.h says of input in the wrong units, which the core does not
@@ -2195,6 +2384,7 @@ int main(void)
         cmocka_unit_test(test_frames_before_alignment),
         cmocka_unit_test(test_step_null_frame),
         cmocka_unit_test(test_run_after_finish),
+        cmocka_unit_test(test_run_exits),
         cmocka_unit_test(test_units_not_checked),
         cmocka_unit_test(test_zaru_after),
         cmocka_unit_test(test_max_gap_below_interval),

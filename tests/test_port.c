@@ -38,6 +38,15 @@ static void test_status_strings(void **state)
     }
 }
 
+static int g_log_calls;
+static void counting_log(void *ctx, fnav_log_level_t level, const char *msg)
+{
+    (void)ctx;
+    (void)level;
+    (void)msg;
+    g_log_calls++;
+}
+
 static void test_port_helpers_null(void **state)
 {
     fnav_port_t p;
@@ -53,6 +62,17 @@ static void test_port_helpers_null(void **state)
     assert_true(fnav_port_now_ns(&p) == 0);
     fnav_port_log(&p, FNAV_LOG_ERROR, "dropped: no hook");
     fnav_port_log(NULL, FNAV_LOG_ERROR, "dropped: no port");
+    /* the other NULLs (make coverage: not tried): no sample, no frame, no
+     * port for the clock; a NULL message is not passed to the hook */
+    assert_int_equal(fnav_port_read(&p, NULL), FNAV_E_ARG);
+    assert_int_equal(fnav_port_write_nav(NULL, &f), FNAV_E_ARG);
+    assert_true(fnav_port_now_ns(NULL) == 0);
+    g_log_calls = 0;
+    p.log = counting_log;
+    fnav_port_log(&p, FNAV_LOG_INFO, NULL);
+    assert_int_equal(g_log_calls, 0);
+    fnav_port_log(&p, FNAV_LOG_INFO, "one");
+    assert_int_equal(g_log_calls, 1);
 }
 
 /* The Linux port replays a log sample by sample and writes frames as CSV. */

@@ -184,6 +184,29 @@ static void test_validate(void **state)
     /* another identification rate: tau in samples scales with it */
     assert_int_equal(fnav_profile_from_paper(&p, "at100", 100.0, rows), FNAV_OK);
     FNAV_ASSERT_CLOSE(p.accel_tau_s[0], 2000.0 / 100.0, 0.0, REL);
+    /* (make coverage: not run) a zero or NaN noise and a zero or NaN tau
+     * in a row are refused like a negative sigma, the profile unchanged;
+     * a name longer than FNAV_PROFILE_NAME_MAX - 1 characters is cut
+     * there, NUL-terminated */
+    {
+        static const char long_name[] = "a-profile-name-of-more-than-thirty-one-characters";
+        fnav_profile_t before = p;
+        rows[1].noise = 0.0;
+        assert_int_equal(fnav_profile_from_paper(&p, "x", 200.0, rows), FNAV_E_ARG);
+        rows[1].noise = (double)NAN;
+        assert_int_equal(fnav_profile_from_paper(&p, "x", 200.0, rows), FNAV_E_ARG);
+        memcpy(rows, fnav_profile_paper_table(FNAV_PROFILE_NAVCHIP), sizeof rows);
+        rows[5].tau_samples = 0.0;
+        assert_int_equal(fnav_profile_from_paper(&p, "x", 200.0, rows), FNAV_E_ARG);
+        rows[5].tau_samples = (double)NAN;
+        assert_int_equal(fnav_profile_from_paper(&p, "x", 200.0, rows), FNAV_E_ARG);
+        assert_memory_equal(&p, &before, sizeof p);
+        memcpy(rows, fnav_profile_paper_table(FNAV_PROFILE_NAVCHIP), sizeof rows);
+        assert_true(strlen(long_name) > FNAV_PROFILE_NAME_MAX);
+        assert_int_equal(fnav_profile_from_paper(&p, long_name, 200.0, rows), FNAV_OK);
+        assert_int_equal((int)strlen(p.name), FNAV_PROFILE_NAME_MAX - 1);
+        assert_memory_equal(p.name, long_name, FNAV_PROFILE_NAME_MAX - 1);
+    }
 }
 
 /* A profile file (the format `harness allan --profile` writes) survives a

@@ -68,6 +68,56 @@ static void test_config(void **state)
     c = fnav_stance_config_default;
     c.detector = (fnav_detector_t)7;
     assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+    /* every real field (make coverage: most of fnav_stance_init's checks
+     * were never made): NaN and -Inf refused everywhere; a field that must
+     * be positive refuses 0 and -1, one that may be 0 takes 0 and refuses
+     * -1; adapt_max_ratio is at least 1; adaptive is 0 or 1 */
+    {
+        static const struct {
+            size_t off;
+            int zero_ok;
+        } f[] = {
+            { offsetof(fnav_stance_config_t, rate_hz), 1 },
+            { offsetof(fnav_stance_config_t, window_s), 0 },
+            { offsetof(fnav_stance_config_t, sigma_a_mps2), 0 },
+            { offsetof(fnav_stance_config_t, sigma_g_rps), 0 },
+            { offsetof(fnav_stance_config_t, gamma), 0 },
+            { offsetof(fnav_stance_config_t, gyro_thresh_rps), 0 },
+            { offsetof(fnav_stance_config_t, accel_thresh_mps2), 0 },
+            { offsetof(fnav_stance_config_t, gravity_mps2), 0 },
+            { offsetof(fnav_stance_config_t, floor_window_s), 0 },
+            { offsetof(fnav_stance_config_t, margin_dec), 1 },
+            { offsetof(fnav_stance_config_t, min_stance_s), 1 },
+            { offsetof(fnav_stance_config_t, min_zupt_s), 1 },
+            { offsetof(fnav_stance_config_t, min_swing_s), 1 },
+            { offsetof(fnav_stance_config_t, event_window_s), 0 },
+        };
+        size_t i;
+        for (i = 0; i < sizeof f / sizeof f[0]; i++) {
+            fnav_real_t *v = (fnav_real_t *)(void *)((char *)&c + f[i].off);
+            c = fnav_stance_config_default;
+            *v = (fnav_real_t)NAN;
+            assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+            *v = -(fnav_real_t)INFINITY;
+            assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+            *v = FNAV_R(-1.0);
+            assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+            *v = FNAV_R(0.0);
+            assert_int_equal(fnav_stance_init(&st, &c), f[i].zero_ok ? FNAV_OK : FNAV_E_CONFIG);
+        }
+        c = fnav_stance_config_default;
+        c.adapt_max_ratio = (fnav_real_t)NAN;
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+        c.adapt_max_ratio = FNAV_R(1.0);
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        c = fnav_stance_config_default;
+        c.adaptive = 2;
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+        c.adaptive = -1;
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+        c.adaptive = 0;
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    }
 }
 
 /* W = 2 floor(window * rate / 2) + 1, at least 3: the same 25 ms at every rate. */
@@ -114,6 +164,67 @@ static void test_window_from_rate(void **state)
         assert_int_equal(st.win, wins[i]);
         FNAV_ASSERT_CLOSE(st.rate_hz, rates[i], 0.0, 1e-6);
     }
+}
+
+/* Stamps that never advance (all equal: a logger that wrote no time) give
+ * no positive interval to take the median of: the rate is then 100 Hz
+ * (fnav_stance.h, rate_hz), the detector sized as one configured for
+ * 100 Hz, at the end of the probe and at fnav_stance_finish of a shorter
+ * log; the decisions still come out, one per sample. A NULL pop is
+ * FNAV_E_ARG. (make coverage: none of this was run.) */
+static void test_rate_without_stamps(void **state)
+{
+    fnav_stance_t st, ref;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0, 0, 0 };
+    fnav_stance_out_t o;
+    fnav_sample_t s;
+    long k, n;
+    (void)state;
+    c.rate_hz = FNAV_R(100.0);
+    assert_int_equal(fnav_stance_init(&ref, &c), FNAV_OK);
+    s = sample(0, 100.0, f, w);
+    assert_int_equal(fnav_stance_push(&ref, &s), FNAV_OK);
+    assert_true(ref.win > 1);
+    c.rate_hz = FNAV_R(0.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0, n = 0; k < FNAV_STANCE_RATE_PROBE + 8; k++) {
+        s = sample(k, 100.0, f, w);
+        s.t_ns = 1000000000; /* the same stamp every time */
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            n++;
+        }
+        if (k < FNAV_STANCE_RATE_PROBE) {
+            assert_int_equal(st.win, 0);
+        }
+    }
+    assert_true(st.rate_hz == FNAV_R(100.0));
+    assert_int_equal(st.win, ref.win);
+    assert_int_equal(st.half, ref.half);
+    assert_int_equal(st.n_min_zupt, ref.n_min_zupt);
+    assert_int_equal(st.n_ev, ref.n_ev);
+    fnav_stance_finish(&st);
+    while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+        n++;
+    }
+    assert_int_equal(fnav_stance_pop(&st, &o), FNAV_END);
+    assert_int_equal(n, FNAV_STANCE_RATE_PROBE + 8);
+    /* one sample only: no interval at all, at finish */
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    s = sample(0, 100.0, f, w);
+    assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+    fnav_stance_finish(&st);
+    assert_true(st.rate_hz == FNAV_R(100.0));
+    assert_int_equal(st.win, ref.win);
+    assert_int_equal(fnav_stance_pop(&st, &o), FNAV_OK);
+    assert_int_equal(fnav_stance_pop(&st, &o), FNAV_END);
+    assert_int_equal(fnav_stance_pop(NULL, &o), FNAV_E_ARG);
+    assert_int_equal(fnav_stance_pop(&st, NULL), FNAV_E_ARG);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    assert_int_equal(fnav_stance_push(NULL, &s), FNAV_E_ARG);
+    assert_int_equal(fnav_stance_push(&st, NULL), FNAV_E_ARG);
+    assert_int_equal((int)st.n_in, 0);
 }
 
 /* The SHOE statistic of a window equals the formula evaluated here in
@@ -606,6 +717,45 @@ static void test_gait_events(void **state)
     assert_int_equal(ev.nfs, 1);
     assert_int_equal(ev.fo_at, 104);
     assert_int_equal(ev.fs_at, 152);
+}
+
+/* A log that starts in the swing (20 samples at 100 Hz, min_swing_s 0.1
+ * s): the foot-strike search window (event_window_s, 30 samples) reaches
+ * back past the first sample and is cut at it (make coverage: never run);
+ * the impact onset at sample 12 is still the foot-strike, as at 152 in
+ * test_gait_events. */
+static void test_foot_strike_at_start(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    const double rate = 100.0;
+    long k, n = 200;
+    events_t ev = { -1, -1, 0, 0 };
+    (void)state;
+    c.rate_hz = (fnav_real_t)rate;
+    c.min_swing_s = FNAV_R(0.1);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k <= n; k++) {
+        if (k < n) {
+            double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+            if (k < 20) {
+                w[1] = 3.0;
+                f[0] = 2.0;
+            }
+            if (k >= 12 && k < 16) {
+                f[2] = -k_g + (k == 12 ? 30.0 : (k == 13 ? -20.0 : 8.0)); /* impact from sample 12 */
+            }
+            {
+                fnav_sample_t s = sample(k, rate, f, w);
+                assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+            }
+        } else {
+            fnav_stance_finish(&st);
+        }
+        pop_events(&st, rate, &ev);
+    }
+    assert_int_equal(ev.nfs, 1);
+    assert_int_equal(ev.fs_at, 12);
 }
 
 /* The foot-off search covers the first event_window_s of the swing run,
@@ -1134,6 +1284,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_config),
         cmocka_unit_test(test_window_from_rate),
+        cmocka_unit_test(test_rate_without_stamps),
         cmocka_unit_test(test_shoe_statistic),
         cmocka_unit_test(test_delay_and_flush),
         cmocka_unit_test(test_ring_contract),
@@ -1144,6 +1295,7 @@ int main(void)
         cmocka_unit_test(test_threshold_both_below),
         cmocka_unit_test(test_threshold_at_limit),
         cmocka_unit_test(test_gait_events),
+        cmocka_unit_test(test_foot_strike_at_start),
         cmocka_unit_test(test_foot_off_window_edge),
         cmocka_unit_test(test_foot_off_short_pause),
         cmocka_unit_test(test_foot_strike_jumps_add_up),

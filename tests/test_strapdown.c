@@ -319,6 +319,53 @@ static void test_coning_instant(void **state)
     assert_true(e_mis > 20.0 * e_inst);
 }
 
+/* Instantaneous samples with config.coning = 0 (make coverage: never run):
+ * the same rotation and velocity increments as with it (the quadratic fit
+ * does not depend on it), and no coning or sculling term; with it, the
+ * terms of the linear profile, (1/12) (w0 T) x (w1 T) and (1/12) ((w0 T) x
+ * (f1 T) + (f0 T) x (w1 T)) (fnav_strapdown.h), computed here in double. */
+static void test_instant_coning_off(void **state)
+{
+    fnav_strapdown_config_t on = fnav_strapdown_config_default, off = fnav_strapdown_config_default;
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
+    fnav_strapdown_incr_t a, b;
+    const double T = 0.005, w0[3] = { 0.3, -1.2, 2.0 }, f0[3] = { 1.0, 0.5, -9.0 };
+    const double w1[3] = { 0.5, -1.0, 1.5 }, f1[3] = { 1.5, 0.2, -9.5 };
+    double cw[3], cs[3];
+    int i;
+    (void)state;
+    assert_int_equal(on.sample_type, FNAV_SAMPLE_INSTANT);
+    off.coning = 0;
+    h.w2_rps = fnav_vec3(FNAV_R(0.2), FNAV_R(-1.3), FNAV_R(2.2));
+    h.f2_mps2 = fnav_vec3(FNAV_R(0.8), FNAV_R(0.6), FNAV_R(-8.9));
+    h.w_rps = fnav_vec3((fnav_real_t)w0[0], (fnav_real_t)w0[1], (fnav_real_t)w0[2]);
+    h.f_mps2 = fnav_vec3((fnav_real_t)f0[0], (fnav_real_t)f0[1], (fnav_real_t)f0[2]);
+    h.dt_prev_s = (fnav_real_t)T;
+    h.have_sample = 2;
+    h.valid = 1;
+    fnav_strapdown_increments(&on, &h, fnav_vec3((fnav_real_t)w1[0], (fnav_real_t)w1[1], (fnav_real_t)w1[2]),
+                              fnav_vec3((fnav_real_t)f1[0], (fnav_real_t)f1[1], (fnav_real_t)f1[2]), (fnav_real_t)T, &a);
+    fnav_strapdown_increments(&off, &h, fnav_vec3((fnav_real_t)w1[0], (fnav_real_t)w1[1], (fnav_real_t)w1[2]),
+                              fnav_vec3((fnav_real_t)f1[0], (fnav_real_t)f1[1], (fnav_real_t)f1[2]), (fnav_real_t)T, &b);
+    for (i = 0; i < 3; i++) {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        /* the readings as stored (rounded to fnav_real_t) */
+        const double a0j = (double)(fnav_real_t)w0[j] * T, a0k = (double)(fnav_real_t)w0[k] * T;
+        const double a1j = (double)(fnav_real_t)w1[j] * T, a1k = (double)(fnav_real_t)w1[k] * T;
+        const double v0j = (double)(fnav_real_t)f0[j] * T, v0k = (double)(fnav_real_t)f0[k] * T;
+        const double v1j = (double)(fnav_real_t)f1[j] * T, v1k = (double)(fnav_real_t)f1[k] * T;
+        cw[i] = (a0j * a1k - a0k * a1j) / 12.0;
+        cs[i] = ((a0j * v1k - a0k * v1j) + (v0j * a1k - v0k * a1j)) / 12.0;
+        assert_true(a.theta_rad.v[i] == b.theta_rad.v[i]);
+        assert_true(a.dv_mps.v[i] == b.dv_mps.v[i]);
+        assert_true(b.coning.v[i] == FNAV_R(0.0));
+        assert_true(b.scull.v[i] == FNAV_R(0.0));
+        FNAV_ASSERT_CLOSE(a.coning.v[i], cw[i], 1e-12, 1e-5);
+        FNAV_ASSERT_CLOSE(a.scull.v[i], cs[i], 1e-10, 1e-5);
+    }
+    assert_true(fabs(cw[2]) > 1e-7); /* the terms are not trivially zero */
+}
+
 /* Somigliana on WGS-84: 9.7803253359 m/s^2 at the equator and
  * 9.8321849378 m/s^2 at the poles (NIMA TR8350.2, table 3.4). */
 static void test_gravity(void **state)
@@ -432,6 +479,7 @@ int main(void)
         cmocka_unit_test(test_rotating_acceleration_instant),
         cmocka_unit_test(test_coning),
         cmocka_unit_test(test_coning_instant),
+        cmocka_unit_test(test_instant_coning_off),
         cmocka_unit_test(test_gravity),
         cmocka_unit_test(test_quat_exp_series),
         cmocka_unit_test(test_quat_exp_large),

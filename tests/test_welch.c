@@ -321,6 +321,18 @@ static void test_last_segment_average(void **state)
         FNAV_ASSERT_CLOSE(avg[k], sum[k] / seen, 1e-12, FNAV_USE_DOUBLE ? 1e-12 : 1e-5);
     }
     assert_int_equal(fnav_welch_get(&w, avg, 10), FNAV_E_SIZE);
+    /* fnav_welch_last too refuses a buffer shorter than the bins, and
+     * writes nothing into it; NULL is FNAV_E_ARG (make coverage: neither
+     * was run) */
+    one[0] = FNAV_R(-1.0);
+    assert_int_equal(fnav_welch_last(&w, one, fnav_welch_bins(&w) - 1u), FNAV_E_SIZE);
+    assert_true(one[0] == FNAV_R(-1.0));
+    assert_int_equal(fnav_welch_last(&w, one, fnav_welch_bins(&w)), FNAV_OK);
+    assert_true(one[0] >= FNAV_R(0.0));
+    assert_int_equal(fnav_welch_last(NULL, one, FNAV_WELCH_MAX_BINS), FNAV_E_ARG);
+    assert_int_equal(fnav_welch_last(&w, NULL, FNAV_WELCH_MAX_BINS), FNAV_E_ARG);
+    assert_int_equal(fnav_welch_get(NULL, avg, FNAV_WELCH_MAX_BINS), FNAV_E_ARG);
+    assert_int_equal(fnav_welch_get(&w, NULL, FNAV_WELCH_MAX_BINS), FNAV_E_ARG);
 }
 
 /* Parseval: with a rectangular window and no detrending, the one-sided
@@ -413,6 +425,17 @@ static void test_bandwidth_analytic(void **state)
     assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_E_ARG);
     c.round_hz = FNAV_R(50.0);
     assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_OK);
+    /* rounded up to a multiple of 50 Hz; with round_hz = 0 not rounded,
+     * fs itself (fnav_welch.h; make coverage: 0 was never tried) */
+    {
+        const double fs = (double)out.fs_hz, up = (double)out.fs_rounded_hz;
+        FNAV_ASSERT_CLOSE(up, 50.0 * ceil(fs / 50.0), 1e-9, 0.0);
+        assert_true(up > fs + 1.0); /* the case rounds something */
+        c.round_hz = FNAV_R(0.0);
+        assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_OK);
+        assert_true(out.fs_rounded_hz == out.fs_hz);
+        FNAV_ASSERT_CLOSE(out.fs_hz, fs, 0.0, 0.0);
+    }
     /* a step so fine that fs / step overflows float (harness psd --round
      * 1e-40 printed fs_Hz inf): a step that small rounds nothing */
     c.round_hz = (fnav_real_t)1e-37;
@@ -454,6 +477,34 @@ static void test_config_and_bad_input(void **state)
     assert_memory_equal(&w, &copy, sizeof w);
     c = fnav_welch_config_default;
     c.offset = FNAV_R(1.0e30);
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    /* checks no suite made (make coverage): a power of two below 8 (8 and
+     * FNAV_WELCH_MAX_NFFT accepted), a detrending or scaling outside the
+     * enum, the global mean with a symmetric window, a rate not finite */
+    c = fnav_welch_config_default;
+    c.overlap = 0;
+    c.nfft = 4;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c.nfft = 8;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_OK);
+    c.nfft = FNAV_WELCH_MAX_NFFT;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_OK);
+    c = fnav_welch_config_default;
+    c.detrend = (fnav_detrend_t)9;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c = fnav_welch_config_default;
+    c.scaling = (fnav_scaling_t)9;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c = fnav_welch_config_default;
+    c.detrend = FNAV_DETREND_GLOBAL;
+    c.symmetric = 1;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c.symmetric = 0;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_OK);
+    c = fnav_welch_config_default;
+    c.rate_hz = (fnav_real_t)INFINITY;
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
+    c.rate_hz = (fnav_real_t)NAN;
     assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
 }
 

@@ -368,6 +368,17 @@ static void test_roundtrip_and_sizes(void **state)
         assert_memory_equal(f.payload, big, sizeof big);
     }
     assert_int_equal(fnav_wire_encode_sample(buf, sizeof buf, 0u, NULL), 0);
+    /* the other typed encoders refuse a NULL record too, writing nothing
+     * (make coverage: not run) */
+    {
+        uint8_t copy[sizeof buf];
+        memset(buf, 0xEE, sizeof buf);
+        memcpy(copy, buf, sizeof buf);
+        assert_int_equal(fnav_wire_encode_nav(buf, sizeof buf, 0u, NULL), 0);
+        assert_int_equal(fnav_wire_encode_status(buf, sizeof buf, 0u, NULL), 0);
+        assert_int_equal(fnav_wire_encode_info(buf, sizeof buf, 0u, NULL), 0);
+        assert_memory_equal(buf, copy, sizeof buf);
+    }
     assert_int_equal(fnav_wire_decode(NULL, buf, 1, &used, &f), FNAV_E_ARG);
     assert_int_equal(fnav_wire_decode(&d, NULL, 1, &used, &f), FNAV_E_ARG);
 }

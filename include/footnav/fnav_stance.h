@@ -75,7 +75,8 @@ typedef enum {
 /** Configuration; every value in SI units. */
 typedef struct {
     fnav_detector_t detector;   /**< SHOE (default) or THRESHOLD */
-    fnav_real_t rate_hz;        /**< nominal sample rate, Hz; 0: estimate from the first 32 intervals */
+    fnav_real_t rate_hz;        /**< nominal sample rate, Hz; 0: estimate from the first 32 intervals
+                                     (100 Hz when no interval is positive: stamps that never advance) */
     fnav_real_t window_s;       /**< detector window, s (default 0.025: 5 samples at 200 Hz) */
     fnav_real_t sigma_a_mps2;   /**< SHOE accelerometer noise weight, m/s^2 (default 0.01) */
     fnav_real_t sigma_g_rps;    /**< SHOE gyroscope noise weight, rad/s (default 0.1 deg/s) */
