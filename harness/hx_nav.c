@@ -922,6 +922,9 @@ static const char *mg_fix(const hx_csv_layout_t *csv)
     return acc_read_scale(csv) == 1.0 ? "multiply by 0.00980665" : "read as g by --units accel=g: divide by 1000";
 }
 
+/* The remedy for a file in m/s^2 read as g (acc_read_scale 9.80665). */
+static const char *const msq_fix = "read as g by --units accel=g: leave accel=g out";
+
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
                      const hx_csv_layout_t *csv, char *msg, size_t msg_size)
 {
@@ -945,12 +948,17 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
     if (f_rest_mps2 > 0.0 && fabs(f_rest_mps2 / g - 1.0) > HX_GRAVITY_TOL) {
         char fix[96] = "";
         if (fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL) {
-            snprintf(fix, sizeof fix, " but in g (%s)", hx_units_fix_g(csv));
+            snprintf(fix, sizeof fix, "not in m/s^2 but in g (%s)", hx_units_fix_g(csv));
         } else if (fabs(f_rest_mps2 / acc_read_scale(csv) * 0.00980665 / g - 1.0) < HX_GRAVITY_TOL) {
-            snprintf(fix, sizeof fix, " but in mg (%s)", mg_fix(csv));
+            snprintf(fix, sizeof fix, "not in m/s^2 but in mg (%s)", mg_fix(csv));
+        } else if (acc_read_scale(csv) != 1.0 && fabs(f_rest_mps2 / acc_read_scale(csv) / g - 1.0) < HX_GRAVITY_TOL) {
+            /* the file in m/s^2 read as g: 9.8 times gravity, which said
+             * only "not in m/s^2" of a file that is (until 2026-11-30) */
+            snprintf(fix, sizeof fix, "in m/s^2 already (%s)", msq_fix);
+        } else {
+            snprintf(fix, sizeof fix, "not in m/s^2");
         }
-        HX_UNITS_ADD("the accelerometer reads |f| = %.4g at rest, where gravity is %.4g m/s^2: the log is not in "
-                     "m/s^2%s",
+        HX_UNITS_ADD("the accelerometer reads |f| = %.4g at rest, where gravity is %.4g m/s^2: the log is %s",
                      f_rest_mps2, g, fix);
     }
     if (gyro_max_rps > HX_GYRO_MAX_RPS) {
@@ -1036,11 +1044,18 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
          * "no still period": the generality review, 2026-11-30) */
         const double in_g = f_norm_mean / acc_read_scale(csv) * 0.00980665 / g; /* the file's values in mg */
         const int mg = in_g > 0.75 && in_g < HX_ACCEL_MEAN_MAX_G;
+        /* the file's values in m/s^2, read as g (a foot's mean: 0.75-10 g,
+         * as the mg mark's; "raw counts?" until 2026-11-30) */
+        const double in_mps2 = f_norm_mean / acc_read_scale(csv) / g;
+        const int msq = acc_read_scale(csv) != 1.0 && in_mps2 > 0.75 && in_mps2 < HX_ACCEL_MEAN_MAX_G;
         snprintf(acc, sizeof acc,
                  "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 on a foot averages a few "
-                 "times %.4g at most: the log is not in m/s^2: %s%s%s",
-                 f_norm_mean, g, mg ? "in mg? (" : "raw counts? (scale them by the sensor's sensitivity)",
-                 mg ? mg_fix(csv) : "", mg ? ")" : "");
+                 "times %.4g at most: the log is %s%s%s",
+                 f_norm_mean, g,
+                 msq  ? "in m/s^2 already? ("
+                 : mg ? "not in m/s^2: in mg? ("
+                      : "not in m/s^2: raw counts? (scale them by the sensor's sensitivity)",
+                 msq ? msq_fix : mg ? mg_fix(csv) : "", msq || mg ? ")" : "");
     }
     rate = in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz;
     if (hx_nav_coarse_stamps(&nav->stats) && rate > 0.0 && rate < HX_RATE_MIN_HZ) {

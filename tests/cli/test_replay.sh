@@ -755,6 +755,21 @@ if grep -q "0.00980665\|raw counts" "$T/err"; then fail "mg read with accel=g: t
 expect_exit 0 "info on a log in mg, read with accel=g" "$H" info "$T/in_mg.csv" --units accel=g
 expect_out "units       NOT SI: .*not in m/s^2 but in mg (read as g by --units accel=g: divide by 1000)" \
     "info: mg read with accel=g named, the remedy dividing by 1000"
+# a log already in m/s^2 read with --units accel=g (9.8 times too large once read as g): the marks judged the
+# values as read, so replay called it "raw counts? (scale them by the sensor's sensitivity)" and info said
+# only "not in m/s^2", of a file that is; it is now named as m/s^2 read as g, the remedy leaving accel=g out
+expect_exit 1 "accelerometer in m/s^2, read with accel=g" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet \
+    --units accel=g --out "$T/msg_as_g.csv"
+expect_err "the log is in m/s^2 already? (read as g by --units accel=g: leave accel=g out) (docs/log-format.md)" \
+    "m/s^2 read with accel=g: named as m/s^2, the remedy leaving accel=g out"
+if grep -q "raw counts\|in mg" "$T/err"; then fail "m/s^2 read with accel=g: called raw counts or mg"; else
+    pass "m/s^2 read with accel=g: not called raw counts nor mg"; fi
+expect_exit 0 "info on a log in m/s^2, read with accel=g" "$H" info vectors/nav/golden/gx2_walk2.csv --units accel=g
+expect_out "units       NOT SI: .*at rest, where gravity is 9.807 m/s^2: the log is in m/s^2 already (read as g by --units accel=g: leave accel=g out)" \
+    "info: m/s^2 read with accel=g named, the remedy leaving accel=g out"
+expect_exit 0 "info on the same log without accel=g" "$H" info vectors/nav/golden/gx2_walk2.csv
+if grep -q "NOT SI" "$T/out"; then fail "the remedy followed: info still finds a unit problem"; else
+    pass "the remedy followed (accel=g left out): no unit problem"; fi
 # and not a foot in m/s^2 that never stands still: the simulator's run without a stand averages |f| = 3.3 g,
 # the most of any motion here (the mg test needs 10 g); it is told it has no still period, and no unit
 "$H" sim --motion run:30 --out "$T/run_nostand.csv" >/dev/null 2>&1
