@@ -2469,13 +2469,14 @@ int hx_cmd_allan(int argc, char **argv)
     }
     if (R->moving) {
         hx_csv_layout_t lay;
+        char give[64];
         hx_error(CMD,
                  "%s: the log moves: in %ld of its %ld one-second windows the rate spreads by more than %g rad/s "
                  "RMS or |f| by more than %g m/s^2 (the first at %.0f s): not a static log (a walk?); the Allan "
                  "variance and its bias model describe a sensor at rest (a gyro in deg/s at rest also reads so: "
                  "%s) (docs/allan.md, \"Command\")",
                  path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2,
-                 R->win_first_moving_s, hx_units_fix_dps(hx_units_layout(R->in_fmt, &lay)));
+                 R->win_first_moving_s, hx_units_fix_dps(hx_units_layout(R->in_fmt, &lay), give, sizeof give));
         exit_code = HX_EXIT_DATA;
     } else if (R->win_moving > 0) {
         motion_report(R, path, hx_arg(&a, "--profile") != NULL);

@@ -1484,6 +1484,7 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
     /* the remedies name --units for the interchange CSV, as replay's */
     hx_csv_layout_t lay;
     const hx_csv_layout_t *csv = hx_units_layout(log->meta.format, &lay);
+    char give[64];
     if (wm == NULL || fm == NULL) {
         free(wm);
         free(fm);
@@ -1515,7 +1516,7 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
                      "the gyroscope spreads by %.3g rad/s RMS within a second (the median one-second window) while "
                      "the log is static, where a gyro at rest spreads by hundredths: the log is not in rad/s but "
                      "probably in deg/s (%s) (docs/log-format.md)",
-                     spread, hx_units_fix_dps(csv));
+                     spread, hx_units_fix_dps(csv, give, sizeof give));
             bad = 1;
         }
     }
