@@ -1853,6 +1853,17 @@ int hx_time_unit_hint(double rate_hz, const hx_csv_layout_t *csv, char *msg, siz
     return 1;
 }
 
+const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t *csv, hx_csv_layout_t *buf)
+{
+    hx_time_fix_t fix;
+    if (csv == NULL || !(rate_hz > 0.0 && rate_hz < 1.0) || !hx_time_unit_fix(rate_hz, csv->time_digits, &fix)) {
+        return csv;
+    }
+    *buf = *csv;
+    buf->time_digits = fix.digits;
+    return buf;
+}
+
 const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size)
 {
     /* one --units value: a second --units replaces the first (a

@@ -231,6 +231,11 @@ int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix);
  *  synopsis's order): one --units value, since a second --units replaces
  *  the first. Returns buf. */
 const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size);
+/** csv with the time unit hx_time_unit_hint finds for rate_hz (in *buf),
+ *  else csv itself (NULL stays NULL): the layout whose other remedies
+ *  (hx_units_problem's, given with no rate) name the time item too, for a
+ *  command that says both in two messages. */
+const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t *csv, hx_csv_layout_t *buf);
 /** The time unit a slow log's stamps look like: 1 when rate_hz is below
  *  1 Hz and milliseconds, microseconds or nanoseconds make it 20 Hz to
  *  100 kHz, with the question and the remedy in msg ("the samples are 10 s

@@ -972,6 +972,16 @@ static const char *mg_fix(const hx_csv_layout_t *csv)
 /* The remedy for a file in m/s^2 read as g (acc_read_scale 9.80665). */
 static const char *const msq_fix = "read as g by --units accel=g: leave accel=g out";
 
+const hx_csv_layout_t *hx_units_want(const hx_csv_layout_t *csv, double f_rest_mps2, double gravity_mps2,
+                                     double gyro_max_rps, hx_csv_layout_t *buf)
+{
+    if (csv == NULL) {
+        return NULL;
+    }
+    units_want(csv, f_rest_mps2, gravity_mps2, gyro_max_rps, 0.0, 0, buf);
+    return buf;
+}
+
 static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
                          const hx_csv_layout_t *csv, int acc_in_g, char *msg, size_t msg_size)
 {

@@ -192,6 +192,12 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
  *  arithmetic (multiply by 9.80665, divide by 1000). */
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
                      const hx_csv_layout_t *csv, char *msg, size_t msg_size);
+/** csv with the unit items hx_units_problem finds for these arguments (no
+ *  rate) in *buf, NULL for csv NULL: the layout given to
+ *  hx_time_unit_hint so that its remedy names them too, for a command that
+ *  says both in two messages (a second --units replaces the first). */
+const hx_csv_layout_t *hx_units_want(const hx_csv_layout_t *csv, double f_rest_mps2, double gravity_mps2,
+                                     double gyro_max_rps, hx_csv_layout_t *buf);
 /** The remedy for a gyro in deg/s, csv as hx_units_problem's, in buf
  *  (returned): "give --units gyro=deg/s" for the interchange CSV read
  *  without it, with the unit items given ("give --units

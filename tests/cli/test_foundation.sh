@@ -88,6 +88,10 @@ expect_out "units       NOT SI: .*not in m/s^2 but in g (give --units time=ms,ac
 expect_exit 0 "info on a log in g stamped in ms, read with --units accel=g" "$H" info "$T/ingms.csv" --units accel=g
 expect_err "(they look like milliseconds, a 100 Hz log: give --units time=ms,accel=g)" \
     "info: accel=g given, the remedy for ms keeps it (it said give --units time=ms)"
+# and read with neither: the units line and the warning each name both items (two messages, one --units value)
+expect_exit 0 "info on a log in g stamped in ms" "$H" info "$T/ingms.csv"
+expect_out "units       NOT SI: .*not in m/s^2 but in g (give --units time=ms,accel=g)" "info: the units line names both items"
+expect_err "(they look like milliseconds, a 100 Hz log: give --units time=ms,accel=g)" "info: the warning names both items"
 expect_exit 0 "the remedy followed: info with --units time=ms,accel=g" "$H" info "$T/ingms.csv" --units time=ms,accel=g
 if grep -q "NOT SI" "$T/out" || grep -q "look like" "$T/err"; then fail "the remedy followed: a unit still named"; else
     pass "the remedy followed: no unit named"; fi
