@@ -602,11 +602,10 @@ static void disturbed_check(const run_t *R, const char *path)
  * nanoseconds explains (20 Hz to 100 kHz once divided) is warned about:
  * 30 minutes of ADIS16405 log 1 with t in ms read as 0.1 Hz without a word,
  * tau 1000 times and sigma_v 31.6 times too large (the static review). */
-static int slow_check(const char *path, double rate_hz, hx_format_t fmt)
+static int slow_check(const char *path, double rate_hz, const hx_csv_layout_t *want)
 {
     char msg[320];
-    hx_csv_layout_t lay;
-    if (hx_time_unit_hint(rate_hz, hx_units_layout(fmt, &lay), msg, sizeof msg)) {
+    if (hx_time_unit_hint(rate_hz, want, msg, sizeof msg)) {
         hx_warn(CMD, "%s: %s; tau, sigma_v and the profile are read at %.3g Hz", path, msg, rate_hz);
         return 1;
     }
@@ -734,13 +733,19 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
          * mistake ("|f| = 13.58 at rest ... not in m/s^2" for a walk in
          * m/s^2). The motion is named instead; the gyro's range still
          * tells deg/s. */
-        hx_csv_layout_t lay;
+        /* the units error and the time warning each name the items of
+         * both, one --units value (a second --units replaces the first) */
+        hx_csv_layout_t lay, lay_t, lay_w;
+        const hx_csv_layout_t *csv = hx_units_layout(R->in_fmt, &lay);
+        double f_rest;
         R->moving = R->win_n > 0 && (double)R->win_moving > HX_ALLAN_MOVING_FRAC * (double)R->win_n;
-        R->units_bad = hx_units_problem(R->moving ? 0.0 : sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]), 9.80665,
-                                        R->gyro_max, 0.0, hx_units_layout(R->in_fmt, &lay), R->units_msg,
-                                        sizeof R->units_msg);
+        f_rest = R->moving ? 0.0 : sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+        R->units_bad = hx_units_problem(f_rest, 9.80665, R->gyro_max, 0.0,
+                                        rate_opt > 0.0 ? csv : hx_time_unit_layout(R->rate_hz, csv, &lay_t),
+                                        R->units_msg, sizeof R->units_msg);
         if (!(rate_opt > 0.0)) {
-            R->time_unit_warned = slow_check(path, R->rate_hz, R->in_fmt);
+            R->time_unit_warned =
+                slow_check(path, R->rate_hz, hx_units_want(csv, f_rest, 9.80665, R->gyro_max, &lay_w));
         }
     }
     return rc;
@@ -2468,14 +2473,18 @@ int hx_cmd_allan(int argc, char **argv)
                 (double)R->grid[R->ngrid - 1u] / R->rate_hz);
     }
     if (R->moving) {
-        hx_csv_layout_t lay;
+        hx_csv_layout_t lay, lay_t;
+        char give[64];
         hx_error(CMD,
                  "%s: the log moves: in %ld of its %ld one-second windows the rate spreads by more than %g rad/s "
                  "RMS or |f| by more than %g m/s^2 (the first at %.0f s): not a static log (a walk?); the Allan "
                  "variance and its bias model describe a sensor at rest (a gyro in deg/s at rest also reads so: "
                  "%s) (docs/allan.md, \"Command\")",
                  path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2,
-                 R->win_first_moving_s, hx_units_fix_dps(hx_units_layout(R->in_fmt, &lay)));
+                 R->win_first_moving_s,
+                 hx_units_fix_dps(hx_time_unit_layout(R->time_unit_warned ? R->rate_hz : 0.0,
+                                                      hx_units_layout(R->in_fmt, &lay), &lay_t),
+                                  give, sizeof give));
         exit_code = HX_EXIT_DATA;
     } else if (R->win_moving > 0) {
         motion_report(R, path, hx_arg(&a, "--profile") != NULL);

@@ -40,6 +40,7 @@ typedef struct {
     int g_axis;
     int units_bad;     /* not SI units (hx_units_problem) */
     char units[768];   /* why, and the remedy */
+    double gyro_max;   /* the largest |w| on one axis (the units check's) */
 } info_t;
 
 /* Clipping at full scale leaves flat tops at the channel's extreme value,
@@ -189,10 +190,15 @@ static void analyse(const hx_log_t *log, info_t *in)
     }
     {
         double wmax = in->peak[3] > in->peak[4] ? in->peak[3] : in->peak[4];
-        hx_csv_layout_t lay; /* the remedies name --units for the interchange CSV, as replay's */
+        hx_csv_layout_t lay, lay_t; /* the remedies name --units for the interchange CSV, as replay's */
+        const hx_csv_layout_t *csv = hx_units_layout(log->meta.format, &lay);
         wmax = wmax > in->peak[5] ? wmax : in->peak[5];
-        /* the rate is not judged here: a static log for the Allan variance may be slow */
-        in->units_bad = hx_units_problem(in->g_mag, 9.80665, wmax, 0.0, hx_units_layout(log->meta.format, &lay),
+        in->gyro_max = wmax;
+        /* the rate is not judged here: a static log for the Allan variance
+         * may be slow; but the remedy names the time item of the warning
+         * on a slow log too (one --units value: a second replaces the first) */
+        in->units_bad = hx_units_problem(in->g_mag, 9.80665, wmax, 0.0,
+                                         log->meta.rate_nominal ? csv : hx_time_unit_layout(in->rate_hz, csv, &lay_t),
                                          in->units, sizeof in->units);
     }
 }
@@ -299,9 +305,12 @@ int hx_cmd_info(int argc, char **argv)
          * allan and psd say it (a warning: a static log may be slow), where
          * until 2026-11-29 info printed the rate without a word */
         char hint[256];
-        hx_csv_layout_t lay;
+        hx_csv_layout_t lay, lay_w; /* with the unit items of the units line (one --units value) */
         if (!log.meta.rate_nominal &&
-            hx_time_unit_hint(in.rate_hz, hx_units_layout(log.meta.format, &lay), hint, sizeof hint)) {
+            hx_time_unit_hint(in.rate_hz,
+                              hx_units_want(hx_units_layout(log.meta.format, &lay), in.g_mag, 9.80665, in.gyro_max,
+                                            &lay_w),
+                              hint, sizeof hint)) {
             hx_warn("info", "%s: %s", a.pos[0], hint);
         }
     }

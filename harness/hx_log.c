@@ -1820,6 +1820,7 @@ int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix)
             }
             fix->name = k_name[(9 - true_digits) / 3];
             fix->opt = k_opt[(9 - true_digits) / 3];
+            fix->digits = true_digits;
             fix->div = k_units[u].div;
             fix->rate_hz = r_u;
             return 1;
@@ -1831,18 +1832,63 @@ int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix)
 int hx_time_unit_hint(double rate_hz, const hx_csv_layout_t *csv, char *msg, size_t msg_size)
 {
     hx_time_fix_t fix;
+    char fix_text[64];
     if (msg_size > 0u) {
         msg[0] = '\0';
     }
     if (!(rate_hz > 0.0 && rate_hz < 1.0) || !hx_time_unit_fix(rate_hz, csv != NULL ? csv->time_digits : 9, &fix)) {
         return 0;
     }
+    if (csv != NULL) {
+        hx_csv_layout_t want = *csv;
+        want.time_digits = fix.digits;
+        hx_units_give(&want, fix_text, sizeof fix_text);
+    } else {
+        snprintf(fix_text, sizeof fix_text, "divide by %s", fix.div);
+    }
     snprintf(msg, msg_size,
              "the samples are %.4g s apart (%.3g Hz): are the time stamps in %s? (they look like %s, a %.4g Hz log: "
-             "%s%s)",
-             1.0 / rate_hz, rate_hz, fix.read, fix.name, fix.rate_hz, csv != NULL ? "give --units time=" : "divide by ",
-             csv != NULL ? fix.opt : fix.div);
+             "%s)",
+             1.0 / rate_hz, rate_hz, fix.read, fix.name, fix.rate_hz, fix_text);
     return 1;
+}
+
+const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t *csv, hx_csv_layout_t *buf)
+{
+    hx_time_fix_t fix;
+    if (csv == NULL || !(rate_hz > 0.0 && rate_hz < 1.0) || !hx_time_unit_fix(rate_hz, csv->time_digits, &fix)) {
+        return csv;
+    }
+    *buf = *csv;
+    buf->time_digits = fix.digits;
+    return buf;
+}
+
+const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size)
+{
+    /* one --units value: a second --units replaces the first (a
+     * non-repeatable option given twice takes the last value), so each
+     * remedy names every item, in the order of the synopsis */
+    static const char *const k_opt[4] = { "s", "ms", "us", "ns" };
+    size_t len;
+    snprintf(buf, size, "give --units ");
+    len = strlen(buf);
+    if (want->time_digits != 9 && len < size) {
+        snprintf(buf + len, size - len, "time=%s,", k_opt[(9 - want->time_digits) / 3]);
+        len = strlen(buf);
+    }
+    if (want->acc_scale != 1.0 && len < size) {
+        snprintf(buf + len, size - len, "accel=g,");
+        len = strlen(buf);
+    }
+    if (want->gyr_scale != 1.0 && len < size) {
+        snprintf(buf + len, size - len, "gyro=deg/s,");
+        len = strlen(buf);
+    }
+    if (len > 0u && buf[len - 1u] == ',') {
+        buf[len - 1u] = '\0';
+    }
+    return buf;
 }
 
 double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)

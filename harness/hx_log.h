@@ -220,18 +220,30 @@ typedef struct {
     const char *opt;  /**< its --units item ("ms") */
     const char *div;  /**< the divisor of the values as read ("1000") */
     double rate_hz;   /**< the rate in that unit */
+    int digits;       /**< that unit as hx_csv_layout_t.time_digits */
 } hx_time_fix_t;
 /** Fill fix for rate_hz read in 10^digits ns: 1 when a unit (at most ns)
  *  makes the rate 20 Hz to 100 kHz, else 0 (fix->read still set). The
  *  remedy of hx_units_problem and hx_time_unit_hint. */
 int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix);
+/** The remedy "give --units ITEMS" naming every unit item of want, the
+ *  layout that reads the log (time=, accel=g, gyro=deg/s, in the
+ *  synopsis's order): one --units value, since a second --units replaces
+ *  the first. Returns buf. */
+const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size);
+/** csv with the time unit hx_time_unit_hint finds for rate_hz (in *buf),
+ *  else csv itself (NULL stays NULL): the layout whose other remedies
+ *  (hx_units_problem's, given with no rate) name the time item too, for a
+ *  command that says both in two messages. */
+const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t *csv, hx_csv_layout_t *buf);
 /** The time unit a slow log's stamps look like: 1 when rate_hz is below
  *  1 Hz and milliseconds, microseconds or nanoseconds make it 20 Hz to
  *  100 kHz, with the question and the remedy in msg ("the samples are 10 s
  *  apart (0.1 Hz): are the time stamps in seconds? (they look like
  *  milliseconds, a 100 Hz log: divide by 1000)"), else 0. csv: as
  *  hx_units_layout gives it; the remedy is then the --units item counted
- *  from the time unit given ("give --units time=ms"). A static log may be
+ *  from the time unit given, with the unit items given ("give --units
+ *  time=ms,accel=g"; hx_units_give). A static log may be
  *  slow, so this is a warning of info, allan, psd and simgap, not a unit
  *  error. */
 int hx_time_unit_hint(double rate_hz, const hx_csv_layout_t *csv, char *msg, size_t msg_size);

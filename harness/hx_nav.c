@@ -898,14 +898,61 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 #define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
 #define HX_RATE_MIN_HZ 20.0    /* below this, no stance lasts more than a few samples */
 #define HX_ACCEL_MEAN_MAX_G 10.0 /* a foot's mean |f| over a log, in g, stays far below (the 66 shared walks and trials 1.0-2.0, the simulator's run 3.3) */
-const char *hx_units_fix_g(const hx_csv_layout_t *csv)
+/* The remedies for g and deg/s: want is the layout that reads the log (csv
+ * with every unit item the marks found), named whole by hx_units_give when
+ * the item was not given; a unit already given, or csv NULL, keeps the
+ * arithmetic. */
+static const char *fix_g(const hx_csv_layout_t *csv, const hx_csv_layout_t *want, char *buf, size_t size)
 {
-    return csv != NULL && csv->acc_scale == 1.0 ? "give --units accel=g" : "multiply by 9.80665";
+    if (csv != NULL && csv->acc_scale == 1.0) {
+        return hx_units_give(want, buf, size);
+    }
+    snprintf(buf, size, "multiply by 9.80665");
+    return buf;
 }
 
-const char *hx_units_fix_dps(const hx_csv_layout_t *csv)
+static const char *fix_dps(const hx_csv_layout_t *csv, const hx_csv_layout_t *want, char *buf, size_t size)
 {
-    return csv != NULL && csv->gyr_scale == 1.0 ? "give --units gyro=deg/s" : "multiply by pi/180";
+    if (csv != NULL && csv->gyr_scale == 1.0) {
+        return hx_units_give(want, buf, size);
+    }
+    snprintf(buf, size, "multiply by pi/180");
+    return buf;
+}
+
+const char *hx_units_fix_dps(const hx_csv_layout_t *csv, char *buf, size_t size)
+{
+    hx_csv_layout_t want;
+    if (csv != NULL) {
+        want = *csv;
+        want.gyr_scale = M_PI / 180.0;
+    }
+    return fix_dps(csv, csv != NULL ? &want : NULL, buf, size);
+}
+
+/* The layout that reads the log, for the remedies of units_problem: csv
+ * with the unit items of every mark found, as units_problem judges them
+ * (acc_in_g: the mean |f| of units_check found g), so that each remedy
+ * names the whole --units value. csv NULL: none (want untouched). */
+static void units_want(const hx_csv_layout_t *csv, double f_rest_mps2, double g, double gyro_max_rps,
+                       double rate_hz, int acc_in_g, hx_csv_layout_t *want)
+{
+    hx_time_fix_t tf;
+    if (csv == NULL) {
+        return;
+    }
+    *want = *csv;
+    if ((acc_in_g || (f_rest_mps2 > 0.0 && fabs(f_rest_mps2 / g - 1.0) > HX_GRAVITY_TOL &&
+                      fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL)) &&
+        csv->acc_scale == 1.0) {
+        want->acc_scale = 9.80665;
+    }
+    if (gyro_max_rps > HX_GYRO_MAX_RPS && gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS && csv->gyr_scale == 1.0) {
+        want->gyr_scale = M_PI / 180.0;
+    }
+    if (rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ && hx_time_unit_fix(rate_hz, csv->time_digits, &tf)) {
+        want->time_digits = tf.digits;
+    }
 }
 
 /* An accelerometer in mg is judged on the file's values, before --units
@@ -922,13 +969,29 @@ static const char *mg_fix(const hx_csv_layout_t *csv)
     return acc_read_scale(csv) == 1.0 ? "multiply by 0.00980665" : "read as g by --units accel=g: divide by 1000";
 }
 
-int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
-                     const hx_csv_layout_t *csv, char *msg, size_t msg_size)
+/* The remedy for a file in m/s^2 read as g (acc_read_scale 9.80665). */
+static const char *const msq_fix = "read as g by --units accel=g: leave accel=g out";
+
+const hx_csv_layout_t *hx_units_want(const hx_csv_layout_t *csv, double f_rest_mps2, double gravity_mps2,
+                                     double gyro_max_rps, hx_csv_layout_t *buf)
+{
+    if (csv == NULL) {
+        return NULL;
+    }
+    units_want(csv, f_rest_mps2, gravity_mps2, gyro_max_rps, 0.0, 0, buf);
+    return buf;
+}
+
+static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
+                         const hx_csv_layout_t *csv, int acc_in_g, char *msg, size_t msg_size)
 {
     /* every mistake found is named (a log in g and deg/s names both) */
     double g = gravity_mps2;
     size_t len = 0;
     int n = 0;
+    hx_csv_layout_t want;
+    char give[64];
+    units_want(csv, f_rest_mps2, g, gyro_max_rps, rate_hz, acc_in_g, &want);
     msg[0] = '\0';
 #define HX_UNITS_ADD(...)                                                                                  \
     do {                                                                                                   \
@@ -943,20 +1006,25 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
         n++;                                                                                               \
     } while (0)
     if (f_rest_mps2 > 0.0 && fabs(f_rest_mps2 / g - 1.0) > HX_GRAVITY_TOL) {
-        char fix[96] = "";
+        char fix[128] = "";
         if (fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL) {
-            snprintf(fix, sizeof fix, " but in g (%s)", hx_units_fix_g(csv));
+            snprintf(fix, sizeof fix, "not in m/s^2 but in g (%s)", fix_g(csv, &want, give, sizeof give));
         } else if (fabs(f_rest_mps2 / acc_read_scale(csv) * 0.00980665 / g - 1.0) < HX_GRAVITY_TOL) {
-            snprintf(fix, sizeof fix, " but in mg (%s)", mg_fix(csv));
+            snprintf(fix, sizeof fix, "not in m/s^2 but in mg (%s)", mg_fix(csv));
+        } else if (acc_read_scale(csv) != 1.0 && fabs(f_rest_mps2 / acc_read_scale(csv) / g - 1.0) < HX_GRAVITY_TOL) {
+            /* the file in m/s^2 read as g: 9.8 times gravity, which said
+             * only "not in m/s^2" of a file that is (until 2026-11-30) */
+            snprintf(fix, sizeof fix, "in m/s^2 already (%s)", msq_fix);
+        } else {
+            snprintf(fix, sizeof fix, "not in m/s^2");
         }
-        HX_UNITS_ADD("the accelerometer reads |f| = %.4g at rest, where gravity is %.4g m/s^2: the log is not in "
-                     "m/s^2%s",
+        HX_UNITS_ADD("the accelerometer reads |f| = %.4g at rest, where gravity is %.4g m/s^2: the log is %s",
                      f_rest_mps2, g, fix);
     }
     if (gyro_max_rps > HX_GYRO_MAX_RPS) {
-        char fix[96] = "";
+        char fix[128] = "";
         if (gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS) {
-            snprintf(fix, sizeof fix, " but probably in deg/s (%s)", hx_units_fix_dps(csv));
+            snprintf(fix, sizeof fix, " but probably in deg/s (%s)", fix_dps(csv, &want, give, sizeof give));
         }
         HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis (its largest |w| on a single axis), beyond the "
                      "range of any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): the log is not in rad/s%s",
@@ -975,10 +1043,14 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
             /* 1 s apart: 1 kHz in milliseconds, or a sample number (a
              * logger's counter), which --input-rate serves without the
              * column (the gait review, 2026-11-30) */
+            if (csv != NULL) {
+                hx_units_give(&want, give, sizeof give);
+            } else {
+                snprintf(give, sizeof give, "divide by %s", fix.div);
+            }
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
-                         "time stamps in %s? (they look like %s: %s%s%s)",
-                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, fix.read, fix.name,
-                         csv != NULL ? "give --units time=" : "divide by ", csv != NULL ? fix.opt : fix.div,
+                         "time stamps in %s? (they look like %s: %s%s)",
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, fix.read, fix.name, give,
                          fabs(rate_hz - 1.0) < 1e-9 ? "; or, if they count samples, leave the column out and give the "
                                                       "rate with --input-rate HZ"
                                                     : "");
@@ -994,6 +1066,12 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
         snprintf(msg + len, msg_size - len, " (docs/log-format.md)");
     }
     return n > 0;
+}
+
+int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
+                     const hx_csv_layout_t *csv, char *msg, size_t msg_size)
+{
+    return units_problem(f_rest_mps2, gravity_mps2, gyro_max_rps, rate_hz, csv, 0, msg, msg_size);
 }
 
 /* The remedy for time stamps coarser than the sampling (hx_nav_coarse_stamps),
@@ -1014,33 +1092,13 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
      * for being off gravity (FNAV_ALIGN_GRAVITY_TOL) */
     const double fn = nav->aligned ? (double)fnav_vec3_norm(nav->align.result.accel_mean_mps2)
                                    : (double)nav->align.refused_f_mps2;
+    const int acc_in_g = !nav->aligned && fn == 0.0 && f_norm_mean > 0.0 && f_norm_mean < 0.5 * g;
     int bad;
     if (!nav->aligned && !(f_norm_mean > 1e-6 * g)) {
         /* no specific force at all: not a unit but a dead channel */
         snprintf(err, err_size, "the accelerometer reads %s throughout: disconnected, or its columns missing?",
                  f_norm_mean > 0.0 ? "almost 0" : "0");
         return 2;
-    }
-    if (!nav->aligned && fn == 0.0 && f_norm_mean > 0.0 && f_norm_mean < 0.5 * g) {
-        /* no rest found (a gyro in deg/s hides every still period): the
-         * mean |f| of the whole log stands in, but only to reveal a log in
-         * g; a walk in m/s^2 averages g or more (its motion adds to |f|) */
-        snprintf(acc, sizeof acc,
-                 "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 averages %.4g or more: "
-                 "the log is probably in g (%s)",
-                 f_norm_mean, g, hx_units_fix_g(csv));
-    }
-    if (!nav->aligned && fn == 0.0 && f_norm_mean > HX_ACCEL_MEAN_MAX_G * g) {
-        /* no rest found, and a mean |f| no foot reaches: mg, cm/s^2 or raw
-         * counts, whose noise also hides every still period (it said only
-         * "no still period": the generality review, 2026-11-30) */
-        const double in_g = f_norm_mean / acc_read_scale(csv) * 0.00980665 / g; /* the file's values in mg */
-        const int mg = in_g > 0.75 && in_g < HX_ACCEL_MEAN_MAX_G;
-        snprintf(acc, sizeof acc,
-                 "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 on a foot averages a few "
-                 "times %.4g at most: the log is not in m/s^2: %s%s%s",
-                 f_norm_mean, g, mg ? "in mg? (" : "raw counts? (scale them by the sensor's sensitivity)",
-                 mg ? mg_fix(csv) : "", mg ? ")" : "");
     }
     rate = in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz;
     if (hx_nav_coarse_stamps(&nav->stats) && rate > 0.0 && rate < HX_RATE_MIN_HZ) {
@@ -1053,7 +1111,39 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
                  100.0 * (double)nav->stats.duplicates / (double)nav->stats.samples, 1.0 / rate, rate);
         rate = 0.0;
     }
-    bad = hx_units_problem(fn, g, gyro_max_rps, rate, csv, msg, sizeof msg);
+    if (acc_in_g) {
+        /* no rest found (a gyro in deg/s hides every still period): the
+         * mean |f| of the whole log stands in, but only to reveal a log in
+         * g; a walk in m/s^2 averages g or more (its motion adds to |f|).
+         * Its remedy names the other items found too (units_want) */
+        hx_csv_layout_t want;
+        char give[64];
+        units_want(csv, fn, g, gyro_max_rps, rate, 1, &want);
+        snprintf(acc, sizeof acc,
+                 "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 averages %.4g or more: "
+                 "the log is probably in g (%s)",
+                 f_norm_mean, g, fix_g(csv, &want, give, sizeof give));
+    }
+    if (!nav->aligned && fn == 0.0 && f_norm_mean > HX_ACCEL_MEAN_MAX_G * g) {
+        /* no rest found, and a mean |f| no foot reaches: mg, cm/s^2 or raw
+         * counts, whose noise also hides every still period (it said only
+         * "no still period": the generality review, 2026-11-30) */
+        const double in_g = f_norm_mean / acc_read_scale(csv) * 0.00980665 / g; /* the file's values in mg */
+        const int mg = in_g > 0.75 && in_g < HX_ACCEL_MEAN_MAX_G;
+        /* the file's values in m/s^2, read as g (a foot's mean: 0.75-10 g,
+         * as the mg mark's; "raw counts?" until 2026-11-30) */
+        const double in_mps2 = f_norm_mean / acc_read_scale(csv) / g;
+        const int msq = acc_read_scale(csv) != 1.0 && in_mps2 > 0.75 && in_mps2 < HX_ACCEL_MEAN_MAX_G;
+        snprintf(acc, sizeof acc,
+                 "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 on a foot averages a few "
+                 "times %.4g at most: the log is %s%s%s",
+                 f_norm_mean, g,
+                 msq  ? "in m/s^2 already? ("
+                 : mg ? "not in m/s^2: in mg? ("
+                      : "not in m/s^2: raw counts? (scale them by the sensor's sensitivity)",
+                 msq ? msq_fix : mg ? mg_fix(csv) : "", msq || mg ? ")" : "");
+    }
+    bad = units_problem(fn, g, gyro_max_rps, rate, csv, acc_in_g, msg, sizeof msg);
     if (rep[0] != '\0') {
         size_t len = strlen(msg);
         if (len < sizeof msg) {

@@ -186,17 +186,24 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
  *  70 rad/s, samples at least 20 per second (0: not known). 1 with the
  *  mistake and its remedy in msg, else 0. csv: the layout an interchange
  *  CSV was read with, by a command that takes --units: a remedy it can give
- *  names the option (accel=g, gyro=deg/s, time=ms|us|ns from the unit given);
- *  NULL: the arithmetic (multiply by 9.80665, divide by 1000). */
+ *  names the option (accel=g, gyro=deg/s, time=ms|us|ns from the unit given),
+ *  each remedy the whole --units value: the items given and every item
+ *  found ("give --units time=ms,accel=g"; hx_units_give); NULL: the
+ *  arithmetic (multiply by 9.80665, divide by 1000). */
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
                      const hx_csv_layout_t *csv, char *msg, size_t msg_size);
-/** The remedy for an accelerometer in g, csv as hx_units_problem's: "give
- *  --units accel=g" for the interchange CSV read without it, else
- *  "multiply by 9.80665". */
-const char *hx_units_fix_g(const hx_csv_layout_t *csv);
-/** The remedy for a gyro in deg/s: "give --units gyro=deg/s" or "multiply
- *  by pi/180", as hx_units_fix_g. */
-const char *hx_units_fix_dps(const hx_csv_layout_t *csv);
+/** csv with the unit items hx_units_problem finds for these arguments (no
+ *  rate) in *buf, NULL for csv NULL: the layout given to
+ *  hx_time_unit_hint so that its remedy names them too, for a command that
+ *  says both in two messages (a second --units replaces the first). */
+const hx_csv_layout_t *hx_units_want(const hx_csv_layout_t *csv, double f_rest_mps2, double gravity_mps2,
+                                     double gyro_max_rps, hx_csv_layout_t *buf);
+/** The remedy for a gyro in deg/s, csv as hx_units_problem's, in buf
+ *  (returned): "give --units gyro=deg/s" for the interchange CSV read
+ *  without it, with the unit items given ("give --units
+ *  time=ms,gyro=deg/s": a second --units replaces the first;
+ *  hx_units_give), else "multiply by pi/180". */
+const char *hx_units_fix_dps(const hx_csv_layout_t *csv, char *buf, size_t size);
 
 #define HX_REPLAY_PROGRESS 0x1u /**< hx_nav_replay: progress indicator */
 #define HX_REPLAY_AXES 0x2u     /**< hx_nav_replay: the axes check (48 integrations per swing sample) */

@@ -1482,8 +1482,15 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
     size_t k, nf = 0;
     int bad;
     /* the remedies name --units for the interchange CSV, as replay's */
-    hx_csv_layout_t lay;
+    hx_csv_layout_t lay, lay_t, lay_w;
     const hx_csv_layout_t *csv = hx_units_layout(log->meta.format, &lay);
+    /* a static log's units warning and time warning each name the items
+     * of both, one --units value (a second --units replaces the first) */
+    const int slow = r->domain == 1 && !log->meta.rate_nominal;
+    const hx_csv_layout_t *csv_t = slow ? hx_time_unit_layout(r->rate_hz, csv, &lay_t) : csv;
+    const hx_csv_layout_t *want = NULL;
+    double f_med;
+    char give[64];
     if (wm == NULL || fm == NULL) {
         free(wm);
         free(fm);
@@ -1505,7 +1512,9 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
         }
     }
     qsort(fm, nf, sizeof *fm, hx_cmp_double);
-    bad = hx_units_problem(fm[nf / 2], 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, csv, msg, sizeof msg);
+    f_med = fm[nf / 2];
+    bad = hx_units_problem(f_med, 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, csv_t, msg, sizeof msg);
+    want = hx_units_want(csv, f_med, 9.80665, wmax, &lay_w);
     free(wm);
     free(fm);
     if (!bad && r->domain == 1) {
@@ -1515,8 +1524,11 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
                      "the gyroscope spreads by %.3g rad/s RMS within a second (the median one-second window) while "
                      "the log is static, where a gyro at rest spreads by hundredths: the log is not in rad/s but "
                      "probably in deg/s (%s) (docs/log-format.md)",
-                     spread, hx_units_fix_dps(csv));
+                     spread, hx_units_fix_dps(csv_t, give, sizeof give));
             bad = 1;
+            if (want != NULL && csv->gyr_scale == 1.0) {
+                lay_w.gyr_scale = M_PI / 180.0;
+            }
         }
     }
     if (bad && r->domain == 2) {
@@ -1532,7 +1544,7 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
      * milliseconds (us, ns) explains is named, as allan and psd name it:
      * until 2026-11-29 the first minute of ADIS16405 log 1 with its time in
      * ms was analysed at 0.1 Hz without a word (taus 1000 times too long) */
-    if (r->domain == 1 && !log->meta.rate_nominal && hx_time_unit_hint(r->rate_hz, csv, msg, sizeof msg)) {
+    if (slow && hx_time_unit_hint(r->rate_hz, want, msg, sizeof msg)) {
         hx_warn("simgap", "%s: %s; the taus and frequencies are read at %.3g Hz", path, msg, r->rate_hz);
     }
     return 0;

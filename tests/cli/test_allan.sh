@@ -139,6 +139,17 @@ expect_err "in_g.csv: the accelerometer reads |f| = 1.* but in g (give --units a
     "a log in g is named, with the --units item (it said multiply by 9.80665 until 2026-11-30)"
 [ -s "$T/in_g_table.csv" ] && [ ! -e "$T/in_g.profile" ] && pass "log in g: table written, no profile" ||
     fail "log in g: outputs"
+# in g and stamped in ms: the error and the warning each name both items, one --units value (a second --units
+# replaces the first: "give --units accel=g" and "give --units time=ms" followed as two options kept one)
+awk -F, 'NR == 1 { print; next } { $1 = $1 * 1000; print }' OFS=, "$T/in_g.csv" >"$T/in_gms.csv"
+expect_exit 1 "static log in g, stamped in ms" "$H" allan "$T/in_gms.csv" --no-sim --quiet
+expect_err "in_gms.csv: the accelerometer reads |f| = 1.* but in g (give --units time=ms,accel=g)" \
+    "in g and ms: the error names both items"
+expect_err "in_gms.csv: the samples are .*(they look like milliseconds, a 100 Hz log: give --units time=ms,accel=g)" \
+    "in g and ms: the warning names both items"
+expect_exit 0 "the remedy followed: --units time=ms,accel=g" "$H" allan "$T/in_gms.csv" --no-sim --quiet --units time=ms,accel=g
+if grep -q "look like\|not in m/s" "$T/err"; then fail "the remedy followed: a unit still named"; else
+    pass "the remedy followed: no unit named"; fi
 # a record whose analysed range (here 50 %) outgrows the core's grid (2^20 samples), as 10 % of a 12-hour
 # 1 kHz log does: said, instead of a quality line "over tau <= 1.1e+03 s" that the table never reached
 awk 'BEGIN { for (i = 0; i < 2200000; i++) print (i * 7919) % 13 }' >"$T/long.txt"

@@ -80,6 +80,21 @@ expect_err "(they look like milliseconds, a 100 Hz log: divide by 1000)" "info o
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 300; k++) printf "%.2f,0,0,1,0,0,0\n", k / 100 }' > "$T/ing.csv"
 expect_exit 0 "info on a log in g" "$H" info "$T/ing.csv"
 expect_out "units       NOT SI: .*not in m/s^2 but in g (give --units accel=g)" "info names --units accel=g for a CSV in g"
+# a unit item given stays in the remedy (a second --units replaces the first): a log in g stamped in ms
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 300; k++) printf "%d,0,0,1,0,0,0\n", 10 * k }' > "$T/ingms.csv"
+expect_exit 0 "info on a log in g stamped in ms, read with --units time=ms" "$H" info "$T/ingms.csv" --units time=ms
+expect_out "units       NOT SI: .*not in m/s^2 but in g (give --units time=ms,accel=g)" \
+    "info: time=ms given, the remedy for g keeps it (it said give --units accel=g)"
+expect_exit 0 "info on a log in g stamped in ms, read with --units accel=g" "$H" info "$T/ingms.csv" --units accel=g
+expect_err "(they look like milliseconds, a 100 Hz log: give --units time=ms,accel=g)" \
+    "info: accel=g given, the remedy for ms keeps it (it said give --units time=ms)"
+# and read with neither: the units line and the warning each name both items (two messages, one --units value)
+expect_exit 0 "info on a log in g stamped in ms" "$H" info "$T/ingms.csv"
+expect_out "units       NOT SI: .*not in m/s^2 but in g (give --units time=ms,accel=g)" "info: the units line names both items"
+expect_err "(they look like milliseconds, a 100 Hz log: give --units time=ms,accel=g)" "info: the warning names both items"
+expect_exit 0 "the remedy followed: info with --units time=ms,accel=g" "$H" info "$T/ingms.csv" --units time=ms,accel=g
+if grep -q "NOT SI" "$T/out" || grep -q "look like" "$T/err"; then fail "the remedy followed: a unit still named"; else
+    pass "the remedy followed: no unit named"; fi
 expect_exit 0 "info on a 100 Hz log in seconds" "$H" info "$T/dups.csv"
 if grep -q "look like" "$T/err"; then fail "a 100 Hz log in seconds questioned"; else pass "no unit question on a log in seconds"; fi
 # an 820 Hz log stamped to the millisecond reads 1 and 2 ms: its median is

@@ -678,14 +678,26 @@ expect_err "the accelerometer reads 0 throughout: disconnected" "a dead accelero
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5 * 57.29578, $6 * 57.29578, $7 * 57.29578 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_gdeg.csv"
 expect_exit 1 "accelerometer in g and gyroscope in deg/s" "$H" replay "$T/in_gdeg.csv" --quiet
-expect_err "in g (give --units accel=g); also the gyroscope .*probably in deg/s (give --units gyro=deg/s)" "both unit mistakes named"
+expect_err "in g (give --units accel=g,gyro=deg/s); also the gyroscope .*probably in deg/s (give --units accel=g,gyro=deg/s)" \
+    "both unit mistakes named, each remedy with both items (one --units: a second replaces the first)"
 # all three (g, deg/s, ms): the message whole, to its end (replay's error was cut at 400 characters, in the
 # third: "also the samples are ; outputs were still written")
 awk -F, 'NR == 1 { print; next } { printf "%.6f,%s,%s,%s,%s,%s,%s\n", $1 * 1000, $2, $3, $4, $5, $6, $7 }' \
     "$T/in_gdeg.csv" > "$T/in_gdegms.csv"
 expect_exit 1 "g, deg/s and ms" "$H" replay "$T/in_gdegms.csv" --quiet
-expect_err "(give --units gyro=deg/s); also the samples are .*give --units time=ms) (docs/log-format.md); outputs were still written" \
+expect_err "(give --units time=ms,accel=g,gyro=deg/s); also the samples are .*give --units time=ms,accel=g,gyro=deg/s) (docs/log-format.md); outputs were still written" \
     "three unit mistakes: the whole message"
+# each remedy names the whole --units value, every item found and every item given: a second --units replaces the
+# first (a non-repeatable option given twice takes the last value), so "give --units time=ms" said to a command
+# with --units gyro=deg/s, or "give --units accel=g" and "give --units gyro=deg/s" in one message, led to a
+# command that lost an item and failed again (the review of 2026-11-30)
+expect_exit 1 "g, deg/s and ms, gyro=deg/s given" "$H" replay "$T/in_gdegms.csv" --quiet --units gyro=deg/s
+expect_err "in g (give --units time=ms,accel=g,gyro=deg/s); also the samples are .*(they look like milliseconds: give --units time=ms,accel=g,gyro=deg/s) (docs/log-format.md)" \
+    "gyro=deg/s given: the remedies keep it and name every item found"
+expect_exit 0 "the remedy followed: g, deg/s and ms read with --units time=ms,accel=g,gyro=deg/s" "$H" replay \
+    "$T/in_gdegms.csv" --quiet --units time=ms,accel=g,gyro=deg/s
+if grep -q "units\|m/s^2\|rad/s" "$T/err"; then fail "the remedy followed: a unit still named"; cat "$T/err"; else
+    pass "the remedy followed: no unit named"; fi
 expect_exit 0 "info on a log in deg/s" "$H" info "$T/in_deg.csv"
 expect_out "units       NOT SI: .*probably in deg/s" "info names the units too"
 # one figure for one log: replay said 454.7 rad/s (the vector's magnitude),
@@ -755,6 +767,21 @@ if grep -q "0.00980665\|raw counts" "$T/err"; then fail "mg read with accel=g: t
 expect_exit 0 "info on a log in mg, read with accel=g" "$H" info "$T/in_mg.csv" --units accel=g
 expect_out "units       NOT SI: .*not in m/s^2 but in mg (read as g by --units accel=g: divide by 1000)" \
     "info: mg read with accel=g named, the remedy dividing by 1000"
+# a log already in m/s^2 read with --units accel=g (9.8 times too large once read as g): the marks judged the
+# values as read, so replay called it "raw counts? (scale them by the sensor's sensitivity)" and info said
+# only "not in m/s^2", of a file that is; it is now named as m/s^2 read as g, the remedy leaving accel=g out
+expect_exit 1 "accelerometer in m/s^2, read with accel=g" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet \
+    --units accel=g --out "$T/msg_as_g.csv"
+expect_err "the log is in m/s^2 already? (read as g by --units accel=g: leave accel=g out) (docs/log-format.md)" \
+    "m/s^2 read with accel=g: named as m/s^2, the remedy leaving accel=g out"
+if grep -q "raw counts\|in mg" "$T/err"; then fail "m/s^2 read with accel=g: called raw counts or mg"; else
+    pass "m/s^2 read with accel=g: not called raw counts nor mg"; fi
+expect_exit 0 "info on a log in m/s^2, read with accel=g" "$H" info vectors/nav/golden/gx2_walk2.csv --units accel=g
+expect_out "units       NOT SI: .*at rest, where gravity is 9.807 m/s^2: the log is in m/s^2 already (read as g by --units accel=g: leave accel=g out)" \
+    "info: m/s^2 read with accel=g named, the remedy leaving accel=g out"
+expect_exit 0 "info on the same log without accel=g" "$H" info vectors/nav/golden/gx2_walk2.csv
+if grep -q "NOT SI" "$T/out"; then fail "the remedy followed: info still finds a unit problem"; else
+    pass "the remedy followed (accel=g left out): no unit problem"; fi
 # and not a foot in m/s^2 that never stands still: the simulator's run without a stand averages |f| = 3.3 g,
 # the most of any motion here (the mg test needs 10 g); it is told it has no still period, and no unit
 "$H" sim --motion run:30 --out "$T/run_nostand.csv" >/dev/null 2>&1

@@ -377,6 +377,12 @@ awk -F, 'NR == 1 { print; next } { printf "%.6f,%s,%s,%s,%s,%s,%s\n", $1 * 1000,
 expect_exit 0 "static log with its time in milliseconds" "$H" simgap "$T/sdms.csv" --quiet --seeds 4 --max-effects 0
 expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "a static log's time in milliseconds is named, with the --units item"
+# in g as well: the units warning and the time warning each name both items, one --units value
+awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5, $6, $7 }' \
+    "$T/sdms.csv" > "$T/sdgms.csv"
+expect_exit 0 "static log in g with its time in milliseconds" "$H" simgap "$T/sdgms.csv" --quiet --seeds 4 --max-effects 0
+expect_err "not in m/s^2 but in g (give --units time=ms,accel=g)" "g and ms: the units warning names both items"
+expect_err "(they look like milliseconds, a 100 Hz log: give --units time=ms,accel=g)" "g and ms: the time warning names both items"
 # a walk on gyro lattices: the summary names the lattice as such, not as a
 # navigation point at t 0; every gyro's lattice is selected, not the top one's alone
 "$H" sim --motion walk --duration 40 --rate 100 --profile mtx --seed 4 --effect quant:ch=gyro:lsb=0.002 --out "$T/wq.csv" >/dev/null 2>&1 || fail "sim walk with quantisation"
