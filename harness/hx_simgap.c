@@ -1513,7 +1513,8 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
     }
     qsort(fm, nf, sizeof *fm, hx_cmp_double);
     f_med = fm[nf / 2];
-    bad = hx_units_problem(f_med, 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, csv_t, msg, sizeof msg);
+    bad = hx_units_problem(f_med, 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, csv_t, 0, msg,
+                           sizeof msg);
     want = hx_units_want(csv, f_med, 9.80665, wmax, &lay_w);
     free(wm);
     free(fm);
