@@ -1119,11 +1119,19 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
                          fabs(rate_hz - 1.0) < 1e-9 ? "; or, if they count samples, leave the column out and give the "
                                                       "rate with --input-rate HZ"
                                                     : "");
+        } else if (k != 9) {
+            /* read by --units time= in a finer unit than seconds, and too
+             * slow for any unit finer still (5 Hz read as ns): the question
+             * named seconds and the remedy milliseconds until 2026-11-30
+             * (the units review) */
+            HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
+                         "time stamps in %s? (read so by --units time=%s; no finer unit makes the rate 20 Hz to "
+                         "100 kHz)",
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, fix.read, k == 6 ? "ms" : k == 3 ? "us" : "ns");
         } else {
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
                          "time stamps in seconds? (in milliseconds, %s)",
-                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ,
-                         csv != NULL && k == 9 ? "give --units time=ms" : "divide by 1000");
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, csv != NULL ? "give --units time=ms" : "divide by 1000");
         }
     }
 #undef HX_UNITS_ADD

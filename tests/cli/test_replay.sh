@@ -778,6 +778,16 @@ awk -F, 'NR == 1 { print; next } NR < 400 { printf "%.0f,%s,%s,%s,%s,%s,%s\n", $
     vectors/nav/golden/gx2_walk2.csv > "$T/in_ns.csv"
 expect_exit 1 "time in nanoseconds" "$H" replay "$T/in_ns.csv" --quiet
 expect_err "they look like nanoseconds: give --units time=ns)" "time stamps in ns are named as such"
+# stamps too slow for any unit finer than the one they were read in (5 Hz read as ns: nothing is finer than ns):
+# the question named seconds ("are the time stamps in seconds? (in milliseconds, divide by 1000)") whatever
+# --units time= had read them as; it names the unit they were read in (the units review, 2026-11-30)
+awk -F, 'NR == 1 { print; next } NR < 400 { printf "%.0f,%s,%s,%s,%s,%s,%s\n", (NR - 2) * 200000000, $2, $3, $4, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_5hz_ns.csv"
+expect_exit 1 "5 Hz stamps read as ns" "$H" replay "$T/in_5hz_ns.csv" --quiet --units time=ns
+expect_err "are the time stamps in nanoseconds? (read so by --units time=ns; no finer unit makes the rate 20 Hz to 100 kHz)" \
+    "5 Hz read as ns: the question names nanoseconds"
+if grep -q "in seconds?\|in milliseconds" "$T/err"; then fail "5 Hz read as ns: asked about seconds or told milliseconds"; else
+    pass "5 Hz read as ns: neither seconds nor milliseconds named"; fi
 # a t column that counts samples (0, 1, 2, ...), as a logger's sample number often does: it was told only to
 # divide by 1000 (right for a 1 kHz log in ms, wrong for a 250 Hz one); the remedy for a counter, leaving the
 # column out and giving --input-rate, is named too (the gait review, 2026-11-30)
