@@ -1007,7 +1007,8 @@ static void units_want(const hx_csv_layout_t *csv, double f_rest_mps2, double g,
     if (gyro_rps_as_dps(csv, gyro_max_rps, walks)) {
         want->gyr_scale = 1.0; /* the remedy leaves gyro=deg/s out */
     }
-    if (rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ && hx_time_unit_fix(rate_hz, csv->time_digits, &tf)) {
+    if (((rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ) || rate_hz > HX_TIME_RATE_MAX_HZ) &&
+        hx_time_unit_fix(rate_hz, csv->time_digits, &tf)) {
         want->time_digits = tf.digits;
     }
 }
@@ -1132,6 +1133,19 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
                          "time stamps in seconds? (in milliseconds, %s)",
                          1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, csv != NULL ? "give --units time=ms" : "divide by 1000");
+        }
+    }
+    if (rate_hz > HX_TIME_RATE_MAX_HZ) {
+        /* stamps read by --units time= in a finer unit than theirs (ms read
+         * as ns: 1e6 times too fast); said only as a cut detector ring and
+         * no still period until 2026-11-30 (the units review). Nothing is
+         * coarser than seconds: only a unit given can be too fine */
+        hx_time_fix_t fix;
+        if (hx_time_unit_fix(rate_hz, csv != NULL ? csv->time_digits : 9, &fix)) {
+            HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU samples at %.0f kHz at most: "
+                         "are the time stamps in %s? (they look like %s: %s)",
+                         1.0 / rate_hz, rate_hz, 1e-3 * HX_TIME_RATE_MAX_HZ, fix.read, fix.name,
+                         hx_units_give(&want, give, sizeof give));
         }
     }
 #undef HX_UNITS_ADD

@@ -788,6 +788,12 @@ expect_err "are the time stamps in nanoseconds? (read so by --units time=ns; no 
     "5 Hz read as ns: the question names nanoseconds"
 if grep -q "in seconds?\|in milliseconds" "$T/err"; then fail "5 Hz read as ns: asked about seconds or told milliseconds"; else
     pass "5 Hz read as ns: neither seconds nor milliseconds named"; fi
+# the other way: stamps in milliseconds read with --units time=ns are 1e6 times too fast (4 ns apart, 250 MHz);
+# replay said only that the detector's ring was cut and that no still period was found (the units review,
+# 2026-11-30); above 100 kHz the unit that fits is named, as for slow stamps
+expect_exit 1 "time in milliseconds read as ns" "$H" replay "$T/in_ms.csv" --quiet --units time=ns
+expect_err "are the time stamps in nanoseconds? (they look like milliseconds: give --units time=ms)" \
+    "ms read as ns: the stamps too fast named, time=ms the remedy"
 # a t column that counts samples (0, 1, 2, ...), as a logger's sample number often does: it was told only to
 # divide by 1000 (right for a 1 kHz log in ms, wrong for a 250 Hz one); the remedy for a counter, leaving the
 # column out and giving --input-rate, is named too (the gait review, 2026-11-30)
