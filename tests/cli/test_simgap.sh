@@ -388,6 +388,12 @@ awk -F, 'NR == 1 { print; next } { printf "%.6f,%s,%s,%s,%s,%s,%s\n", $1 * 1000,
 expect_exit 0 "static log with its time in milliseconds" "$H" simgap "$T/sdms.csv" --quiet --seeds 4 --max-effects 0
 expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "a static log's time in milliseconds is named, with the --units item"
+# the other way: read with --units time=ns, 1e6 times too fast (100 MHz), analysed without a word until
+# 2026-11-30 (the units review); now the same warning names the unit that fits
+expect_exit 0 "static log with its time in milliseconds, read as ns" "$H" simgap "$T/sdms.csv" --quiet --seeds 4 \
+    --max-effects 0 --units time=ns
+expect_err "the samples are 1e-08 s apart (1e+08 Hz): are the time stamps in nanoseconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
+    "a static log's ms stamps read as ns are named, with the --units item"
 # in g as well: the units warning and the time warning each name both items, one --units value
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5, $6, $7 }' \
     "$T/sdms.csv" > "$T/sdgms.csv"
