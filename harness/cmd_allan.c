@@ -741,7 +741,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         R->moving = R->win_n > 0 && (double)R->win_moving > HX_ALLAN_MOVING_FRAC * (double)R->win_n;
         f_rest = R->moving ? 0.0 : sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
         R->units_bad = hx_units_problem(f_rest, 9.80665, R->gyro_max, 0.0,
-                                        rate_opt > 0.0 ? csv : hx_time_unit_layout(R->rate_hz, csv, &lay_t),
+                                        rate_opt > 0.0 ? csv : hx_time_unit_layout(R->rate_hz, csv, &lay_t), 0,
                                         R->units_msg, sizeof R->units_msg);
         if (!(rate_opt > 0.0)) {
             R->time_unit_warned =

@@ -197,9 +197,16 @@ static void analyse(const hx_log_t *log, info_t *in)
         /* the rate is not judged here: a static log for the Allan variance
          * may be slow; but the remedy names the time item of the warning
          * on a slow log too (one --units value: a second replaces the first) */
+        hx_walk_t walk; /* the walk a gyro read as deg/s below a foot's rates needs, as replay's */
+        memset(&walk, 0, sizeof walk);
+        for (i = 0; i < n; i++) {
+            hx_walk_push(&walk, log->t_ns[i],
+                         sqrt(log->acc[i][0] * log->acc[i][0] + log->acc[i][1] * log->acc[i][1] +
+                              log->acc[i][2] * log->acc[i][2]));
+        }
         in->units_bad = hx_units_problem(in->g_mag, 9.80665, wmax, 0.0,
                                          log->meta.rate_nominal ? csv : hx_time_unit_layout(in->rate_hz, csv, &lay_t),
-                                         in->units, sizeof in->units);
+                                         hx_walk_seen(&walk), in->units, sizeof in->units);
     }
 }
 

@@ -1810,9 +1810,32 @@ int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix)
     size_t u;
     memset(fix, 0, sizeof *fix);
     fix->read = k_name[(9 - digits) / 3];
+    if (rate_hz > HX_TIME_RATE_MAX_HZ) {
+        /* too fast: read in a finer unit than theirs (ms read as ns look
+         * 1e6 times too fast); nothing is coarser than seconds. As on the
+         * slow side, the unit that gives the lowest rate of 20 Hz or more
+         * (100 MHz read as ns: ms, 100 Hz, not us, 100 kHz) */
+        for (u = sizeof k_units / sizeof k_units[0]; u-- > 0;) {
+            const double r_u = rate_hz / k_units[u].scale;
+            const int true_digits = digits + 3 * (int)(u + 1u);
+            if (true_digits > 9) {
+                continue;
+            }
+            if (r_u >= 20.0 && r_u <= HX_TIME_RATE_MAX_HZ) {
+                fix->name = k_name[(9 - true_digits) / 3];
+                fix->opt = k_opt[(9 - true_digits) / 3];
+                fix->digits = true_digits;
+                fix->div = k_units[u].div;
+                fix->fast = 1;
+                fix->rate_hz = r_u;
+                return 1;
+            }
+        }
+        return 0;
+    }
     for (u = 0; u < sizeof k_units / sizeof k_units[0]; u++) {
         const double r_u = rate_hz * k_units[u].scale;
-        if (r_u >= 20.0 && r_u <= 1e5) {
+        if (r_u >= 20.0 && r_u <= HX_TIME_RATE_MAX_HZ) {
             /* us read as ms look like us; nothing is finer than ns */
             const int true_digits = digits - 3 * (int)(u + 1u);
             if (true_digits < 0) {
@@ -1829,6 +1852,14 @@ int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix)
     return 0;
 }
 
+/* A rate the time hint questions: below 1 Hz (a static log may be slow, but
+ * not so slow), or above HX_TIME_RATE_MAX_HZ (stamps read in a finer unit
+ * than theirs; until 2026-11-30 only the slow side was questioned) */
+static int time_rate_odd(double rate_hz)
+{
+    return (rate_hz > 0.0 && rate_hz < 1.0) || rate_hz > HX_TIME_RATE_MAX_HZ;
+}
+
 int hx_time_unit_hint(double rate_hz, const hx_csv_layout_t *csv, char *msg, size_t msg_size)
 {
     hx_time_fix_t fix;
@@ -1836,7 +1867,7 @@ int hx_time_unit_hint(double rate_hz, const hx_csv_layout_t *csv, char *msg, siz
     if (msg_size > 0u) {
         msg[0] = '\0';
     }
-    if (!(rate_hz > 0.0 && rate_hz < 1.0) || !hx_time_unit_fix(rate_hz, csv != NULL ? csv->time_digits : 9, &fix)) {
+    if (!time_rate_odd(rate_hz) || !hx_time_unit_fix(rate_hz, csv != NULL ? csv->time_digits : 9, &fix)) {
         return 0;
     }
     if (csv != NULL) {
@@ -1844,7 +1875,7 @@ int hx_time_unit_hint(double rate_hz, const hx_csv_layout_t *csv, char *msg, siz
         want.time_digits = fix.digits;
         hx_units_give(&want, fix_text, sizeof fix_text);
     } else {
-        snprintf(fix_text, sizeof fix_text, "divide by %s", fix.div);
+        snprintf(fix_text, sizeof fix_text, "%s by %s", fix.fast ? "multiply" : "divide", fix.div);
     }
     snprintf(msg, msg_size,
              "the samples are %.4g s apart (%.3g Hz): are the time stamps in %s? (they look like %s, a %.4g Hz log: "
@@ -1856,7 +1887,7 @@ int hx_time_unit_hint(double rate_hz, const hx_csv_layout_t *csv, char *msg, siz
 const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t *csv, hx_csv_layout_t *buf)
 {
     hx_time_fix_t fix;
-    if (csv == NULL || !(rate_hz > 0.0 && rate_hz < 1.0) || !hx_time_unit_fix(rate_hz, csv->time_digits, &fix)) {
+    if (csv == NULL || !time_rate_odd(rate_hz) || !hx_time_unit_fix(rate_hz, csv->time_digits, &fix)) {
         return csv;
     }
     *buf = *csv;

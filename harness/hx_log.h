@@ -211,14 +211,19 @@ int64_t hx_gcd_i64(int64_t a, int64_t b);
  *  check of psd and allan. */
 int hx_interval_irregular(int64_t dt_ns, double rate_hz, int64_t res_ns);
 
+/** The highest rate a foot-mounted IMU's time stamps give, Hz: above it
+ *  (as below 20 Hz) the stamps' unit is questioned. */
+#define HX_TIME_RATE_MAX_HZ 1e5
 /** The unit of time stamps that read rate_hz in the unit of 10^digits ns
  *  (9 s, 6 ms, 3 us, 0 ns): the first of 1000, 1e6 and 1e9 times slower
- *  stamps that makes the rate 20 Hz to 100 kHz. */
+ *  stamps that makes the rate 20 Hz to 100 kHz; above 100 kHz, the first of
+ *  1000, 1e6 and 1e9 times faster ones, at most seconds (fast). */
 typedef struct {
     const char *read; /**< the unit read ("seconds") */
     const char *name; /**< the unit the stamps look like ("milliseconds"); NULL: none (0 returned) */
     const char *opt;  /**< its --units item ("ms") */
-    const char *div;  /**< the divisor of the values as read ("1000") */
+    const char *div;  /**< the divisor of the values as read ("1000"); fast: their factor */
+    int fast;         /**< 1: the stamps were read too fast (multiply by div), 0: too slow */
     double rate_hz;   /**< the rate in that unit */
     int digits;       /**< that unit as hx_csv_layout_t.time_digits */
 } hx_time_fix_t;
@@ -238,7 +243,8 @@ const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size);
 const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t *csv, hx_csv_layout_t *buf);
 /** The time unit a slow log's stamps look like: 1 when rate_hz is below
  *  1 Hz and milliseconds, microseconds or nanoseconds make it 20 Hz to
- *  100 kHz, with the question and the remedy in msg ("the samples are 10 s
+ *  100 kHz (or above 100 kHz and a coarser unit than the one read, at most
+ *  seconds, does: ms read as ns), with the question and the remedy in msg ("the samples are 10 s
  *  apart (0.1 Hz): are the time stamps in seconds? (they look like
  *  milliseconds, a 100 Hz log: divide by 1000)"), else 0. csv: as
  *  hx_units_layout gives it; the remedy is then the --units item counted

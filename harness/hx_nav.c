@@ -715,6 +715,7 @@ typedef struct {
     int traj_oom;        /* no memory to keep a frame */
     double gyro_max_rps; /* largest |w| on one axis: the units check (a range is per axis) */
     double f_norm_sum;   /* sum of |f| read: the units check when no rest was found */
+    hx_walk_t walk;      /* |f| in one-second windows: the units check's gyro mark */
     hx_axes_t *axes;     /* the axes check (with traj), or NULL */
     int64_t t_last_ns;   /* the last sample's stamp (with have_t_last) */
     int have_t_last;
@@ -820,9 +821,13 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
             const double w = fabs((double)s->gyro_rps[k]);
             c->gyro_max_rps = w > c->gyro_max_rps ? w : c->gyro_max_rps;
         }
-        c->f_norm_sum += sqrt((double)s->accel_mps2[0] * (double)s->accel_mps2[0] +
-                              (double)s->accel_mps2[1] * (double)s->accel_mps2[1] +
-                              (double)s->accel_mps2[2] * (double)s->accel_mps2[2]);
+        {
+            const double fn = sqrt((double)s->accel_mps2[0] * (double)s->accel_mps2[0] +
+                                   (double)s->accel_mps2[1] * (double)s->accel_mps2[1] +
+                                   (double)s->accel_mps2[2] * (double)s->accel_mps2[2]);
+            c->f_norm_sum += fn;
+            hx_walk_push(&c->walk, s->t_ns, fn);
+        }
         c->n_read++;
         if (c->have_t_last && s->t_ns > c->t_last_ns) {
             c->stamp_res_ns = hx_gcd_i64(s->t_ns - c->t_last_ns, c->stamp_res_ns);
@@ -898,6 +903,55 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 #define HX_GYRO_MAX_RPS 70.0   /* ~4000 deg/s: the widest range of MEMS gyros */
 #define HX_RATE_MIN_HZ 20.0    /* below this, no stance lasts more than a few samples */
 #define HX_ACCEL_MEAN_MAX_G 10.0 /* a foot's mean |f| over a log, in g, stays far below (the 66 shared walks and trials 1.0-2.0, the simulator's run 3.3) */
+/* A walking foot turns at several rad/s in each swing: the largest |w| on
+ * one axis is 6.2-24 rad/s over the shared walks that show a walk (hx_walk_t;
+ * square2, which barely walks, 1.8) and 2.6 rad/s for the simulator's walk at
+ * 30 steps/min, so 0.75 rad/s (43 deg/s) lies 8 times below the slowest
+ * shared walk, 2.4 below square2 and 3.4 below the simulator's slowest. A
+ * gyro in rad/s read as deg/s is 57.3 times too small: the shared walks read
+ * 0.11-0.42 rad/s so, and any gyro within 43 rad/s stays under the mark */
+#define HX_GYRO_WALK_MIN_RPS 0.75
+/* The walk the mark needs (a static log's rates are small): one-second
+ * windows of |f| whose standard deviation is 2 m/s^2 or more, at least 3 of
+ * them; the shared walks have 14-92 (their quietest window of a stride 3.4
+ * m/s^2 and up), the simulator's walk at 30 steps/min 5 in 30 s, a static
+ * log none (its noise: hundredths) */
+#define HX_WALK_F_SD_MPS2 2.0
+#define HX_WALK_WINDOWS 3L
+#define HX_WALK_WINDOW_MIN_N 10L /* samples a window needs to count */
+
+void hx_walk_push(hx_walk_t *w, int64_t t_ns, double f_norm_mps2)
+{
+    if (w->open && (t_ns < w->t0_ns || t_ns - w->t0_ns >= 1000000000)) {
+        if (t_ns >= w->t0_ns && w->n >= HX_WALK_WINDOW_MIN_N) {
+            const double m = w->s / (double)w->n, var = w->s2 / (double)w->n - m * m;
+            w->windows += var >= HX_WALK_F_SD_MPS2 * HX_WALK_F_SD_MPS2;
+        }
+        w->open = 0;
+    }
+    if (!w->open) {
+        w->open = 1;
+        w->t0_ns = t_ns;
+        w->s = w->s2 = 0.0;
+        w->n = 0;
+    }
+    w->s += f_norm_mps2;
+    w->s2 += f_norm_mps2 * f_norm_mps2;
+    w->n++;
+}
+
+int hx_walk_seen(const hx_walk_t *w)
+{
+    return w != NULL && w->windows >= HX_WALK_WINDOWS;
+}
+
+/* The gyro mark: a walk (hx_walk_seen) whose gyro, read as deg/s by
+ * --units gyro=deg/s, never reaches HX_GYRO_WALK_MIN_RPS */
+static int gyro_rps_as_dps(const hx_csv_layout_t *csv, double gyro_max_rps, int walks)
+{
+    return walks && csv != NULL && csv->gyr_scale != 1.0 && gyro_max_rps > 0.0 &&
+           gyro_max_rps < HX_GYRO_WALK_MIN_RPS;
+}
 /* The remedies for g and deg/s: want is the layout that reads the log (csv
  * with every unit item the marks found), named whole by hx_units_give when
  * the item was not given; a unit already given, or csv NULL, keeps the
@@ -935,7 +989,7 @@ const char *hx_units_fix_dps(const hx_csv_layout_t *csv, char *buf, size_t size)
  * (acc_in_g: the mean |f| of units_check found g), so that each remedy
  * names the whole --units value. csv NULL: none (want untouched). */
 static void units_want(const hx_csv_layout_t *csv, double f_rest_mps2, double g, double gyro_max_rps,
-                       double rate_hz, int acc_in_g, hx_csv_layout_t *want)
+                       double rate_hz, int acc_in_g, int walks, hx_csv_layout_t *want)
 {
     hx_time_fix_t tf;
     if (csv == NULL) {
@@ -950,7 +1004,11 @@ static void units_want(const hx_csv_layout_t *csv, double f_rest_mps2, double g,
     if (gyro_max_rps > HX_GYRO_MAX_RPS && gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS && csv->gyr_scale == 1.0) {
         want->gyr_scale = M_PI / 180.0;
     }
-    if (rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ && hx_time_unit_fix(rate_hz, csv->time_digits, &tf)) {
+    if (gyro_rps_as_dps(csv, gyro_max_rps, walks)) {
+        want->gyr_scale = 1.0; /* the remedy leaves gyro=deg/s out */
+    }
+    if (((rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ) || rate_hz > HX_TIME_RATE_MAX_HZ) &&
+        hx_time_unit_fix(rate_hz, csv->time_digits, &tf)) {
         want->time_digits = tf.digits;
     }
 }
@@ -978,12 +1036,12 @@ const hx_csv_layout_t *hx_units_want(const hx_csv_layout_t *csv, double f_rest_m
     if (csv == NULL) {
         return NULL;
     }
-    units_want(csv, f_rest_mps2, gravity_mps2, gyro_max_rps, 0.0, 0, buf);
+    units_want(csv, f_rest_mps2, gravity_mps2, gyro_max_rps, 0.0, 0, 0, buf);
     return buf;
 }
 
 static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
-                         const hx_csv_layout_t *csv, int acc_in_g, char *msg, size_t msg_size)
+                         const hx_csv_layout_t *csv, int acc_in_g, int walks, char *msg, size_t msg_size)
 {
     /* every mistake found is named (a log in g and deg/s names both) */
     double g = gravity_mps2;
@@ -991,7 +1049,7 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
     int n = 0;
     hx_csv_layout_t want;
     char give[64];
-    units_want(csv, f_rest_mps2, g, gyro_max_rps, rate_hz, acc_in_g, &want);
+    units_want(csv, f_rest_mps2, g, gyro_max_rps, rate_hz, acc_in_g, walks, &want);
     msg[0] = '\0';
 #define HX_UNITS_ADD(...)                                                                                  \
     do {                                                                                                   \
@@ -1030,6 +1088,14 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
                      "range of any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): the log is not in rad/s%s",
                      gyro_max_rps, HX_GYRO_MAX_RPS, fix);
     }
+    if (gyro_rps_as_dps(csv, gyro_max_rps, walks)) {
+        /* silent until 2026-11-30: exit 0 and a walk navigated with rates
+         * 57.3 times too small (the units review) */
+        HX_UNITS_ADD("the gyroscope never exceeds %.3g rad/s on one axis while the log walks (|f| spreads by %.0f "
+                     "m/s^2 or more within a second), where a walking foot turns at several rad/s in each swing: "
+                     "the log is in rad/s already? (read as deg/s by --units gyro=deg/s: leave gyro=deg/s out)",
+                     gyro_max_rps, HX_WALK_F_SD_MPS2);
+    }
     if (rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ) {
         /* the unit that makes the rate one a foot-mounted IMU has (20 Hz to
          * 100 kHz): 2.5 ms read as 2.5 s (ms), as 2511 s (us), as 2.5e6 s
@@ -1054,11 +1120,32 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
                          fabs(rate_hz - 1.0) < 1e-9 ? "; or, if they count samples, leave the column out and give the "
                                                       "rate with --input-rate HZ"
                                                     : "");
+        } else if (k != 9) {
+            /* read by --units time= in a finer unit than seconds, and too
+             * slow for any unit finer still (5 Hz read as ns): the question
+             * named seconds and the remedy milliseconds until 2026-11-30
+             * (the units review) */
+            HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
+                         "time stamps in %s? (read so by --units time=%s; no finer unit makes the rate 20 Hz to "
+                         "100 kHz)",
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, fix.read, k == 6 ? "ms" : k == 3 ? "us" : "ns");
         } else {
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
                          "time stamps in seconds? (in milliseconds, %s)",
-                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ,
-                         csv != NULL && k == 9 ? "give --units time=ms" : "divide by 1000");
+                         1.0 / rate_hz, rate_hz, HX_RATE_MIN_HZ, csv != NULL ? "give --units time=ms" : "divide by 1000");
+        }
+    }
+    if (rate_hz > HX_TIME_RATE_MAX_HZ) {
+        /* stamps read by --units time= in a finer unit than theirs (ms read
+         * as ns: 1e6 times too fast); said only as a cut detector ring and
+         * no still period until 2026-11-30 (the units review). Nothing is
+         * coarser than seconds: only a unit given can be too fine */
+        hx_time_fix_t fix;
+        if (hx_time_unit_fix(rate_hz, csv != NULL ? csv->time_digits : 9, &fix)) {
+            HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU samples at %.0f kHz at most: "
+                         "are the time stamps in %s? (they look like %s: %s)",
+                         1.0 / rate_hz, rate_hz, 1e-3 * HX_TIME_RATE_MAX_HZ, fix.read, fix.name,
+                         hx_units_give(&want, give, sizeof give));
         }
     }
 #undef HX_UNITS_ADD
@@ -1069,9 +1156,9 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
 }
 
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
-                     const hx_csv_layout_t *csv, char *msg, size_t msg_size)
+                     const hx_csv_layout_t *csv, int walks, char *msg, size_t msg_size)
 {
-    return units_problem(f_rest_mps2, gravity_mps2, gyro_max_rps, rate_hz, csv, 0, msg, msg_size);
+    return units_problem(f_rest_mps2, gravity_mps2, gyro_max_rps, rate_hz, csv, 0, walks, msg, msg_size);
 }
 
 /* The remedy for time stamps coarser than the sampling (hx_nav_coarse_stamps),
@@ -1082,8 +1169,8 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
 
 /* 2 when the replayed log is not in SI units (err says why, without the
  * log's name: the JSON's units_problem), else 0. csv: as hx_units_problem's. */
-static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean, double in_rate_hz,
-                       const hx_csv_layout_t *csv, char *err, size_t err_size)
+static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean, int walks,
+                       double in_rate_hz, const hx_csv_layout_t *csv, char *err, size_t err_size)
 {
     char msg[768], acc[320] = "", rep[320] = "";
     const double g = (double)nav->cfg.gravity_mps2;
@@ -1118,7 +1205,7 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
          * Its remedy names the other items found too (units_want) */
         hx_csv_layout_t want;
         char give[64];
-        units_want(csv, fn, g, gyro_max_rps, rate, 1, &want);
+        units_want(csv, fn, g, gyro_max_rps, rate, 1, walks, &want);
         snprintf(acc, sizeof acc,
                  "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 averages %.4g or more: "
                  "the log is probably in g (%s)",
@@ -1143,7 +1230,7 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
                       : "not in m/s^2: raw counts? (scale them by the sensor's sensitivity)",
                  msq ? msq_fix : mg ? mg_fix(csv) : "", msq || mg ? ")" : "");
     }
-    bad = units_problem(fn, g, gyro_max_rps, rate, csv, acc_in_g, msg, sizeof msg);
+    bad = units_problem(fn, g, gyro_max_rps, rate, csv, acc_in_g, walks, msg, sizeof msg);
     if (rep[0] != '\0') {
         size_t len = strlen(msg);
         if (len < sizeof msg) {
@@ -1418,6 +1505,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         hx_csv_layout_t lay;
         int u;
         u = units_check(&nav, pc.gyro_max_rps, pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0,
+                        hx_walk_seen(&pc.walk),
                         traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0,
                         (flags & HX_REPLAY_UNITS_OPT) ? hx_units_layout(in_fmt, &lay) : NULL, msg, sizeof msg);
         if (traj != NULL) {

@@ -189,9 +189,26 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
  *  names the option (accel=g, gyro=deg/s, time=ms|us|ns from the unit given),
  *  each remedy the whole --units value: the items given and every item
  *  found ("give --units time=ms,accel=g"; hx_units_give); NULL: the
- *  arithmetic (multiply by 9.80665, divide by 1000). */
+ *  arithmetic (multiply by 9.80665, divide by 1000). walks: the log walks
+ *  (hx_walk_seen), so that a gyro read as deg/s (csv) that stays below
+ *  0.75 rad/s is named as rad/s read as deg/s; 0: not known. */
 int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
-                     const hx_csv_layout_t *csv, char *msg, size_t msg_size);
+                     const hx_csv_layout_t *csv, int walks, char *msg, size_t msg_size);
+/** The walk evidence of the units check's gyro mark: |f| (m/s^2) in
+ *  one-second windows of the stamps, pushed sample by sample (zeroed
+ *  first). hx_walk_seen: 1 when 3 windows or more spread by 2 m/s^2 (sd) or
+ *  more, as a walking foot's do and a static log's never; given as walks to
+ *  hx_units_problem, which then names a gyro read as deg/s by --units
+ *  gyro=deg/s that never exceeds 0.75 rad/s (a rad/s log read as deg/s). */
+typedef struct {
+    int64_t t0_ns; /**< the open window's first stamp */
+    double s, s2;  /**< its sum of |f| and of |f|^2 */
+    long n;        /**< its samples */
+    long windows;  /**< closed windows that spread */
+    int open;
+} hx_walk_t;
+void hx_walk_push(hx_walk_t *w, int64_t t_ns, double f_norm_mps2);
+int hx_walk_seen(const hx_walk_t *w);
 /** csv with the unit items hx_units_problem finds for these arguments (no
  *  rate) in *buf, NULL for csv NULL: the layout given to
  *  hx_time_unit_hint so that its remedy names them too, for a command that

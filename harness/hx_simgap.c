@@ -1491,6 +1491,7 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
     const hx_csv_layout_t *want = NULL;
     double f_med;
     char give[64];
+    hx_walk_t walk;
     if (wm == NULL || fm == NULL) {
         free(wm);
         free(fm);
@@ -1513,7 +1514,18 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
     }
     qsort(fm, nf, sizeof *fm, hx_cmp_double);
     f_med = fm[nf / 2];
-    bad = hx_units_problem(f_med, 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, csv_t, msg, sizeof msg);
+    /* the walk replay's gyro mark needs (a gyro in rad/s read as deg/s by
+     * --units gyro=deg/s), from the accelerometer as replay's: such a walk
+     * is detected as static (its rates stay below 1 rad/s), and was
+     * analysed as one without a word until 2026-11-30 */
+    memset(&walk, 0, sizeof walk);
+    for (k = 0; k < log->n; k++) {
+        hx_walk_push(&walk, log->t_ns[k],
+                     sqrt(log->acc[k][0] * log->acc[k][0] + log->acc[k][1] * log->acc[k][1] +
+                          log->acc[k][2] * log->acc[k][2]));
+    }
+    bad = hx_units_problem(f_med, 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, csv_t, hx_walk_seen(&walk), msg,
+                           sizeof msg);
     want = hx_units_want(csv, f_med, 9.80665, wmax, &lay_w);
     free(wm);
     free(fm);

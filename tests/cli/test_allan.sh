@@ -826,6 +826,11 @@ awk '{ if (NR == 1) print; else { split($0, v, ","); v[1] = v[1] * 1000; out = v
 expect_exit 0 "a static log with its time in milliseconds" "$H" allan "$T/touch_ms.csv" --no-sim --quiet
 expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "time in milliseconds is named, with the --units item (it said divide by 1000 until 2026-11-30)"
+# the other way: the same log read with --units time=ns is 1e6 times too fast (10 ns apart, 100 MHz) and passed
+# without a word (the units review, 2026-11-30); now the same warning names the unit that fits
+expect_exit 0 "a static log in milliseconds read as ns" "$H" allan "$T/touch_ms.csv" --no-sim --quiet --units time=ns
+expect_err "are the time stamps in nanoseconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
+    "stamps too fast: ms read as ns told time=ms"
 # ... and with --profile the warning was followed by "no identification for ax (too little data?)", sending the user
 # to the record's length; the error now names the time unit as the likely cause (a user review, 2026-11-29)
 expect_exit 1 "a static log with its time in milliseconds, a profile" "$H" allan "$T/touch_ms.csv" --no-sim --quiet \

@@ -72,6 +72,15 @@ awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 300; k++) printf "%d,0
 expect_exit 0 "info on a 100 Hz log stamped in microseconds, read as ms" "$H" info "$T/tus.csv" --units time=ms
 expect_err "tus.csv: the samples are 10 s apart (0.1 Hz): are the time stamps in milliseconds? (they look like microseconds, a 100 Hz log: give --units time=us)" \
     "info: us read with --units time=ms told time=us"
+# the other way: stamps read in a finer unit than theirs look 1000, 1e6 or 1e9 times too fast (the same log in
+# milliseconds read with --units time=ns: 10 ns apart, 100 MHz), and info printed that rate without a word (the
+# units review, 2026-11-30); above 100 kHz the unit that makes the rate 20 Hz to 100 kHz is named, as for slow ones
+expect_exit 0 "info on a 100 Hz log stamped in milliseconds, read as ns" "$H" info "$T/tms.csv" --units time=ns
+expect_err "tms.csv: the samples are 1e-08 s apart (1e+08 Hz): are the time stamps in nanoseconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
+    "info names stamps too fast: ms read as ns told time=ms"
+# the remedy followed: no question
+expect_exit 0 "info on the log in milliseconds read with --units time=ms" "$H" info "$T/tms.csv" --units time=ms
+if grep -q "look like" "$T/err"; then fail "ms read as ms: a unit still named"; else pass "ms read as ms: no unit named"; fi
 # a format --units does not apply to keeps the arithmetic
 expect_exit 0 "convert the log in ms to .bin" "$H" convert "$T/tms.csv" "$T/tms.bin"
 expect_exit 0 "info on a .bin stamped in milliseconds" "$H" info "$T/tms.bin"

@@ -370,6 +370,11 @@ awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) printf "%d,
 expect_exit 0 "time stamps in milliseconds" "$H" psd "$T/tms.csv"
 expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "time in milliseconds is named, with the --units item (it said divide by 1000 until 2026-11-30)"
+# the other way: read with --units time=ns, 1e6 times too fast (100 MHz), without a word (the units review,
+# 2026-11-30); now the unit that fits is named
+expect_exit 0 "time stamps in milliseconds read as ns" "$H" psd "$T/tms.csv" --units time=ns
+expect_err "the samples are 1e-08 s apart (1e+08 Hz): are the time stamps in nanoseconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
+    "stamps too fast: ms read as ns told time=ms"
 
 O=$(data openshoe_c_820hz/OpenShoeDataSet.txt)
 if [ -n "$O" ]; then

@@ -712,6 +712,51 @@ if grep -q "the gyroscope reaches $w_ref rad/s on one axis (its largest |w| on a
     fail "gyro peak: replay '$(cat "$T/deg_replay.err")', info '$(grep units "$T/out")', reference $w_ref"; fi
 expect_exit 0 "info on a log in SI units" "$H" info vectors/nav/golden/gx2_walk2.csv
 if grep -q "NOT SI" "$T/out"; then fail "an SI log flagged by info"; else pass "an SI log is not flagged by info"; fi
+# a gyro already in rad/s read with --units gyro=deg/s is 57.3 times too small: a walk whose foot never turns
+# faster than 0.75 rad/s (43 deg/s; a swing turns at several rad/s, the shared walks 1.8-24) navigated into
+# nonsense with exit 0 and no word (the units review, 2026-11-30). The walk shows in the accelerometer (|f|
+# spreads by 2 m/s^2 or more in one-second windows); named as the m/s^2 read as g are, the remedy leaving
+# gyro=deg/s out
+expect_exit 1 "a walk in rad/s read with gyro=deg/s" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet --units gyro=deg/s
+expect_err "the log is in rad/s already? (read as deg/s by --units gyro=deg/s: leave gyro=deg/s out)" \
+    "rad/s read with gyro=deg/s: named, the remedy leaving gyro=deg/s out"
+expect_exit 0 "info on a walk in rad/s read with gyro=deg/s" "$H" info vectors/nav/golden/gx2_walk2.csv --units gyro=deg/s
+expect_out "units       NOT SI: .*the log is in rad/s already? (read as deg/s by --units gyro=deg/s: leave gyro=deg/s out)" \
+    "info: rad/s read with gyro=deg/s named"
+# not a static log (its small rates are no mark), nor a walk in deg/s read as such: the simulator's walks at 30 to
+# 150 steps/min (the slowest turns at 2.6 rad/s) and its run, written in deg/s
+"$H" sim --motion stand:20 --out "$T/stand_rps.csv" >/dev/null 2>&1
+expect_exit 0 "a static log in rad/s read with gyro=deg/s" "$H" replay "$T/stand_rps.csv" --quiet --units gyro=deg/s
+grep -q "rad/s already" "$T/err" && fail "a static log's small rates taken for rad/s read as deg/s" ||
+    pass "a static log read with gyro=deg/s is not told it is in rad/s"
+for spm in 30 60 150 run; do
+    if [ "$spm" = run ]; then "$H" sim --motion run --duration 30 --out "$T/sim_w.csv" >/dev/null 2>&1; else
+        "$H" sim --cadence "$spm" --duration 30 --out "$T/sim_w.csv" >/dev/null 2>&1; fi
+    awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.9g,%.9g,%.9g\n", $1, $2, $3, $4, $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232 }' \
+        "$T/sim_w.csv" > "$T/sim_wdeg.csv"
+    "$H" replay "$T/sim_wdeg.csv" --quiet --units gyro=deg/s 2> "$T/sim_w.err"
+    grep -q "rad/s already" "$T/sim_w.err" && fail "simulated $spm (deg/s, read as such) told it is in rad/s" ||
+        pass "simulated $spm in deg/s read with gyro=deg/s: no rad/s mark"
+done
+# nor the shared walks (the slowest: square2, 1.8 rad/s; the vicon trial of 11-27-30, 6.2; ipol 2-3, 9.2; the xio
+# short walk), converted with the gyro in deg/s and read with gyro=deg/s
+if [ -n "$D" ]; then
+    for w in openshoe_square2/square2_u.csv pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-27-30_imu.csv \
+        ipol_gait_xsens/2-3_rf.txt xio_ngimu_gait/short_walk.csv openshoe_gx2/Measurement_100521_2_data_inert.txt; do
+        [ -f "$D/$w" ] || continue
+        "$H" convert "$D/$w" "$T/sh_w.csv" >/dev/null 2>&1
+        awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.9g,%.9g,%.9g\n", $1, $2, $3, $4, $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232 }' \
+            "$T/sh_w.csv" > "$T/sh_wdeg.csv"
+        "$H" replay "$T/sh_wdeg.csv" --quiet --units gyro=deg/s 2> "$T/sh_w.err"
+        grep -q "rad/s already" "$T/sh_w.err" && fail "$w (deg/s, read as such) told it is in rad/s" ||
+            pass "$w in deg/s read with gyro=deg/s: no rad/s mark"
+        "$H" info "$T/sh_wdeg.csv" --units gyro=deg/s > "$T/sh_w.out" 2>&1
+        grep -q "rad/s already" "$T/sh_w.out" && fail "info: $w (deg/s, read as such) told it is in rad/s" ||
+            pass "info: $w in deg/s read with gyro=deg/s: no rad/s mark"
+    done
+else
+    echo "skip shared-data units checks (no ../shared/data; set FNAV_DATA_DIR)"
+fi
 awk -F, 'NR == 1 { print; next } { printf "%.3f,%s,%s,%s,%s,%s,%s\n", $1 * 1000, $2, $3, $4, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_ms.csv"
 expect_exit 1 "time in milliseconds" "$H" replay "$T/in_ms.csv" --out "$T/in_ms_traj.csv"
@@ -733,6 +778,22 @@ awk -F, 'NR == 1 { print; next } NR < 400 { printf "%.0f,%s,%s,%s,%s,%s,%s\n", $
     vectors/nav/golden/gx2_walk2.csv > "$T/in_ns.csv"
 expect_exit 1 "time in nanoseconds" "$H" replay "$T/in_ns.csv" --quiet
 expect_err "they look like nanoseconds: give --units time=ns)" "time stamps in ns are named as such"
+# stamps too slow for any unit finer than the one they were read in (5 Hz read as ns: nothing is finer than ns):
+# the question named seconds ("are the time stamps in seconds? (in milliseconds, divide by 1000)") whatever
+# --units time= had read them as; it names the unit they were read in (the units review, 2026-11-30)
+awk -F, 'NR == 1 { print; next } NR < 400 { printf "%.0f,%s,%s,%s,%s,%s,%s\n", (NR - 2) * 200000000, $2, $3, $4, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_5hz_ns.csv"
+expect_exit 1 "5 Hz stamps read as ns" "$H" replay "$T/in_5hz_ns.csv" --quiet --units time=ns
+expect_err "are the time stamps in nanoseconds? (read so by --units time=ns; no finer unit makes the rate 20 Hz to 100 kHz)" \
+    "5 Hz read as ns: the question names nanoseconds"
+if grep -q "in seconds?\|in milliseconds" "$T/err"; then fail "5 Hz read as ns: asked about seconds or told milliseconds"; else
+    pass "5 Hz read as ns: neither seconds nor milliseconds named"; fi
+# the other way: stamps in milliseconds read with --units time=ns are 1e6 times too fast (4 ns apart, 250 MHz);
+# replay said only that the detector's ring was cut and that no still period was found (the units review,
+# 2026-11-30); above 100 kHz the unit that fits is named, as for slow stamps
+expect_exit 1 "time in milliseconds read as ns" "$H" replay "$T/in_ms.csv" --quiet --units time=ns
+expect_err "are the time stamps in nanoseconds? (they look like milliseconds: give --units time=ms)" \
+    "ms read as ns: the stamps too fast named, time=ms the remedy"
 # a t column that counts samples (0, 1, 2, ...), as a logger's sample number often does: it was told only to
 # divide by 1000 (right for a 1 kHz log in ms, wrong for a 250 Hz one); the remedy for a counter, leaving the
 # column out and giving --input-rate, is named too (the gait review, 2026-11-30)
