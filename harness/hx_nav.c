@@ -917,19 +917,27 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 #define HX_GYRO_WALK_MIN_RPS 0.75
 /* The walk the mark needs (a static log's rates are small): one-second
  * windows of |f| whose standard deviation is 2 m/s^2 or more, at least 3 of
- * them; the shared walks have 14-92 (their quietest window of a stride 3.4
- * m/s^2 and up), the simulator's walk at 30 steps/min 5 in 30 s, a static
- * log none (its noise: hundredths) */
+ * them; the shared walks have 14-91 (14-92 before HX_WALK_OFF_SHARE; their
+ * quietest window of a stride 3.4 m/s^2 and up), the simulator's walk at 30
+ * steps/min 5 in 30 s, a static log none (its noise: hundredths) */
 #define HX_WALK_F_SD_MPS2 2.0
 #define HX_WALK_WINDOWS 3L
 #define HX_WALK_WINDOW_MIN_N 10L /* samples a window needs to count */
+/* ... and its spread must last: a tenth of its samples or more 2 m/s^2 or
+ * more off gravity (a swing's |f| stays off for a good part of it). A tap on
+ * a static log (30 ms of 25 m/s^2: 3 % of its second) spreads a window by 4
+ * m/s^2 too, and five synchronisation taps on a static log in deg/s, read
+ * as such, made replay exit 1 calling it a walk in rad/s (the false-positive
+ * review, 2026-11-30) */
+#define HX_WALK_OFF_SHARE 0.1
 
 void hx_walk_push(hx_walk_t *w, int64_t t_ns, double f_norm_mps2)
 {
     if (w->open && (t_ns < w->t0_ns || t_ns - w->t0_ns >= 1000000000)) {
         if (t_ns >= w->t0_ns && w->n >= HX_WALK_WINDOW_MIN_N) {
             const double m = w->s / (double)w->n, var = w->s2 / (double)w->n - m * m;
-            w->windows += var >= HX_WALK_F_SD_MPS2 * HX_WALK_F_SD_MPS2;
+            w->windows += var >= HX_WALK_F_SD_MPS2 * HX_WALK_F_SD_MPS2 &&
+                          (double)w->n_off >= HX_WALK_OFF_SHARE * (double)w->n;
         }
         w->open = 0;
     }
@@ -937,8 +945,9 @@ void hx_walk_push(hx_walk_t *w, int64_t t_ns, double f_norm_mps2)
         w->open = 1;
         w->t0_ns = t_ns;
         w->s = w->s2 = 0.0;
-        w->n = 0;
+        w->n = w->n_off = 0;
     }
+    w->n_off += fabs(f_norm_mps2 - 9.80665) >= HX_WALK_F_SD_MPS2;
     w->s += f_norm_mps2;
     w->s2 += f_norm_mps2 * f_norm_mps2;
     w->n++;

@@ -729,6 +729,15 @@ expect_out "units       NOT SI: .*the log is in rad/s already? (read as deg/s by
 expect_exit 0 "a static log in rad/s read with gyro=deg/s" "$H" replay "$T/stand_rps.csv" --quiet --units gyro=deg/s
 grep -q "rad/s already" "$T/err" && fail "a static log's small rates taken for rad/s read as deg/s" ||
     pass "a static log read with gyro=deg/s is not told it is in rad/s"
+# nor a static log with taps (a 30 ms knock of 25 m/s^2 in 5 seconds, as a logger's synchronisation taps),
+# written in deg/s and read as such: each tap spread |f| by 4 m/s^2 within its second, and replay exited 1
+# calling it a walk in rad/s (the false-positive review, 2026-11-30); a walk's spread lasts, a tap's does not
+awk -F, 'NR == 1 { print; next } { a = $4; if ($1 >= 5 && int($1) % 3 == 2 && $1 - int($1) < 0.03) a = $4 - 25
+    printf "%s,%s,%s,%.9g,%.9g,%.9g,%.9g\n", $1, $2, $3, a, $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232 }' \
+    "$T/stand_rps.csv" > "$T/stand_taps_deg.csv"
+expect_exit 0 "a static log with taps in deg/s read with gyro=deg/s" "$H" replay "$T/stand_taps_deg.csv" --quiet --units gyro=deg/s
+grep -q "rad/s already" "$T/err" && fail "a static log's taps taken for a walk in rad/s read as deg/s" ||
+    pass "a static log with taps read with gyro=deg/s is not told it is in rad/s"
 for spm in 30 60 150 run; do
     if [ "$spm" = run ]; then "$H" sim --motion run --duration 30 --out "$T/sim_w.csv" >/dev/null 2>&1; else
         "$H" sim --cadence "$spm" --duration 30 --out "$T/sim_w.csv" >/dev/null 2>&1; fi
