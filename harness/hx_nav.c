@@ -718,6 +718,7 @@ typedef struct {
     hx_walk_t walk;      /* |f| in one-second windows: the units check's gyro mark */
     hx_axes_t *axes;     /* the axes check (with traj), or NULL */
     int64_t t_last_ns;   /* the last sample's stamp (with have_t_last) */
+    int64_t t_first_ns;  /* the first sample's stamp (with have_t_last) */
     int have_t_last;
     int64_t stamp_res_ns; /* the stamps' resolution: gcd of the intervals that advance (0: none yet) */
     hx_sat_t sat;         /* flat tops of the input as read (a resampled log's: before resampling) */
@@ -832,6 +833,9 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
         if (c->have_t_last && s->t_ns > c->t_last_ns) {
             c->stamp_res_ns = hx_gcd_i64(s->t_ns - c->t_last_ns, c->stamp_res_ns);
         }
+        if (!c->have_t_last) {
+            c->t_first_ns = s->t_ns;
+        }
         c->t_last_ns = s->t_ns;
         c->have_t_last = 1;
         if (c->ev != NULL) {
@@ -913,19 +917,27 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
 #define HX_GYRO_WALK_MIN_RPS 0.75
 /* The walk the mark needs (a static log's rates are small): one-second
  * windows of |f| whose standard deviation is 2 m/s^2 or more, at least 3 of
- * them; the shared walks have 14-92 (their quietest window of a stride 3.4
- * m/s^2 and up), the simulator's walk at 30 steps/min 5 in 30 s, a static
- * log none (its noise: hundredths) */
+ * them; the shared walks have 14-91 (14-92 before HX_WALK_OFF_SHARE; their
+ * quietest window of a stride 3.4 m/s^2 and up), the simulator's walk at 30
+ * steps/min 5 in 30 s, a static log none (its noise: hundredths) */
 #define HX_WALK_F_SD_MPS2 2.0
 #define HX_WALK_WINDOWS 3L
 #define HX_WALK_WINDOW_MIN_N 10L /* samples a window needs to count */
+/* ... and its spread must last: a tenth of its samples or more 2 m/s^2 or
+ * more off gravity (a swing's |f| stays off for a good part of it). A tap on
+ * a static log (30 ms of 25 m/s^2: 3 % of its second) spreads a window by 4
+ * m/s^2 too, and five synchronisation taps on a static log in deg/s, read
+ * as such, made replay exit 1 calling it a walk in rad/s (the false-positive
+ * review, 2026-11-30) */
+#define HX_WALK_OFF_SHARE 0.1
 
 void hx_walk_push(hx_walk_t *w, int64_t t_ns, double f_norm_mps2)
 {
     if (w->open && (t_ns < w->t0_ns || t_ns - w->t0_ns >= 1000000000)) {
         if (t_ns >= w->t0_ns && w->n >= HX_WALK_WINDOW_MIN_N) {
             const double m = w->s / (double)w->n, var = w->s2 / (double)w->n - m * m;
-            w->windows += var >= HX_WALK_F_SD_MPS2 * HX_WALK_F_SD_MPS2;
+            w->windows += var >= HX_WALK_F_SD_MPS2 * HX_WALK_F_SD_MPS2 &&
+                          (double)w->n_off >= HX_WALK_OFF_SHARE * (double)w->n;
         }
         w->open = 0;
     }
@@ -933,8 +945,9 @@ void hx_walk_push(hx_walk_t *w, int64_t t_ns, double f_norm_mps2)
         w->open = 1;
         w->t0_ns = t_ns;
         w->s = w->s2 = 0.0;
-        w->n = 0;
+        w->n = w->n_off = 0;
     }
+    w->n_off += fabs(f_norm_mps2 - 9.80665) >= HX_WALK_F_SD_MPS2;
     w->s += f_norm_mps2;
     w->s2 += f_norm_mps2 * f_norm_mps2;
     w->n++;
@@ -1170,7 +1183,8 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
 /* 2 when the replayed log is not in SI units (err says why, without the
  * log's name: the JSON's units_problem), else 0. csv: as hx_units_problem's. */
 static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean, int walks,
-                       double in_rate_hz, const hx_csv_layout_t *csv, char *err, size_t err_size)
+                       double in_rate_hz, double span_rate_hz, const hx_csv_layout_t *csv, char *err,
+                       size_t err_size)
 {
     char msg[768], acc[320] = "", rep[320] = "";
     const double g = (double)nav->cfg.gravity_mps2;
@@ -1188,6 +1202,15 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
         return 2;
     }
     rate = in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz;
+    if (rate > HX_TIME_RATE_MAX_HZ && !(span_rate_hz > HX_TIME_RATE_MAX_HZ)) {
+        /* intervals too short, but not the log's span for its samples:
+         * stamps taken in bursts (a logger stamping a batch of samples as
+         * it reads them, microseconds apart), which no unit explains; the
+         * too-fast error needs both (replay exited 1 on such a log, naming
+         * a coarser unit that made it 1000 times too slow: the
+         * false-positive review, 2026-11-30) */
+        rate = 0.0;
+    }
     if (hx_nav_coarse_stamps(&nav->stats) && rate > 0.0 && rate < HX_RATE_MIN_HZ) {
         /* a low rate from stamps that repeat is no unit (float32 seconds
          * at 1e6 s step by 62.5 ms: "16 Hz", whose remedy read "divide by
@@ -1507,6 +1530,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         u = units_check(&nav, pc.gyro_max_rps, pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0,
                         hx_walk_seen(&pc.walk),
                         traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0,
+                        pc.n_read > 1 && pc.t_last_ns > pc.t_first_ns
+                            ? 1e9 * (double)(pc.n_read - 1) / (double)(pc.t_last_ns - pc.t_first_ns)
+                            : 0.0,
                         (flags & HX_REPLAY_UNITS_OPT) ? hx_units_layout(in_fmt, &lay) : NULL, msg, sizeof msg);
         if (traj != NULL) {
             /* the JSON's units_problem ("" when none) */

@@ -197,13 +197,15 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
 /** The walk evidence of the units check's gyro mark: |f| (m/s^2) in
  *  one-second windows of the stamps, pushed sample by sample (zeroed
  *  first). hx_walk_seen: 1 when 3 windows or more spread by 2 m/s^2 (sd) or
- *  more, as a walking foot's do and a static log's never; given as walks to
+ *  more, a tenth of their samples or more 2 m/s^2 or more off gravity, as a
+ *  walking foot's do and a static log's never (nor its taps); given as walks to
  *  hx_units_problem, which then names a gyro read as deg/s by --units
  *  gyro=deg/s that never exceeds 0.75 rad/s (a rad/s log read as deg/s). */
 typedef struct {
     int64_t t0_ns; /**< the open window's first stamp */
     double s, s2;  /**< its sum of |f| and of |f|^2 */
     long n;        /**< its samples */
+    long n_off;    /**< its samples 2 m/s^2 or more off gravity */
     long windows;  /**< closed windows that spread */
     int open;
 } hx_walk_t;

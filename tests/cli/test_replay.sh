@@ -729,6 +729,15 @@ expect_out "units       NOT SI: .*the log is in rad/s already? (read as deg/s by
 expect_exit 0 "a static log in rad/s read with gyro=deg/s" "$H" replay "$T/stand_rps.csv" --quiet --units gyro=deg/s
 grep -q "rad/s already" "$T/err" && fail "a static log's small rates taken for rad/s read as deg/s" ||
     pass "a static log read with gyro=deg/s is not told it is in rad/s"
+# nor a static log with taps (a 30 ms knock of 25 m/s^2 in 5 seconds, as a logger's synchronisation taps),
+# written in deg/s and read as such: each tap spread |f| by 4 m/s^2 within its second, and replay exited 1
+# calling it a walk in rad/s (the false-positive review, 2026-11-30); a walk's spread lasts, a tap's does not
+awk -F, 'NR == 1 { print; next } { a = $4; if ($1 >= 5 && int($1) % 3 == 2 && $1 - int($1) < 0.03) a = $4 - 25
+    printf "%s,%s,%s,%.9g,%.9g,%.9g,%.9g\n", $1, $2, $3, a, $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232 }' \
+    "$T/stand_rps.csv" > "$T/stand_taps_deg.csv"
+expect_exit 0 "a static log with taps in deg/s read with gyro=deg/s" "$H" replay "$T/stand_taps_deg.csv" --quiet --units gyro=deg/s
+grep -q "rad/s already" "$T/err" && fail "a static log's taps taken for a walk in rad/s read as deg/s" ||
+    pass "a static log with taps read with gyro=deg/s is not told it is in rad/s"
 for spm in 30 60 150 run; do
     if [ "$spm" = run ]; then "$H" sim --motion run --duration 30 --out "$T/sim_w.csv" >/dev/null 2>&1; else
         "$H" sim --cadence "$spm" --duration 30 --out "$T/sim_w.csv" >/dev/null 2>&1; fi
@@ -794,6 +803,16 @@ if grep -q "in seconds?\|in milliseconds" "$T/err"; then fail "5 Hz read as ns: 
 expect_exit 1 "time in milliseconds read as ns" "$H" replay "$T/in_ms.csv" --quiet --units time=ns
 expect_err "are the time stamps in nanoseconds? (they look like milliseconds: give --units time=ms)" \
     "ms read as ns: the stamps too fast named, time=ms the remedy"
+# stamps taken on arrival (a logger that receives 4 samples at once and stamps each as it reads it, 5 us
+# apart, every 16 ms): the median interval is 5 us (200 kHz), but the log spans 12 s for its 2998 samples,
+# 250 Hz: no unit makes that too fast. Replay exited 1 ("are the time stamps in microseconds? (they look like
+# milliseconds: give --units time=ms)") on such a log it had replayed with exit 0 (the false-positive review,
+# 2026-11-30); the too-fast error needs the log's span to be too short as well
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 16000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_burst_us.csv"
+expect_exit 0 "stamps in bursts, read as us" "$H" replay "$T/in_burst_us.csv" --quiet --units time=us
+if grep -q "are the time stamps in" "$T/err"; then fail "stamps in bursts (250 Hz over the log) told they are too fast"; else
+    pass "stamps in bursts (250 Hz over the log): no time unit questioned"; fi
 # a t column that counts samples (0, 1, 2, ...), as a logger's sample number often does: it was told only to
 # divide by 1000 (right for a 1 kHz log in ms, wrong for a 250 Hz one); the remedy for a counter, leaving the
 # column out and giving --input-rate, is named too (the gait review, 2026-11-30)
