@@ -303,6 +303,22 @@ expect_exit 1 "stream of a log with a header and no sample" "$H" stream "$T/hdr.
 expect_err "^harness stream: error: $T/hdr.csv: no samples" "stream: the empty log named"
 [ ! -e "$T/port" ] && pass "stream: no port opened or created for an empty log" || fail "stream created $T/port"
 
+# --- a full disk (/dev/full: every write fails with ENOSPC), never run
+# before make coverage-harness (2026-11-30): the write failure is an
+# output error, exit 3, naming the file, not a success.
+if [ -c /dev/full ]; then
+    expect_exit 3 "convert onto a full disk" "$H" convert vectors/walk.bin /dev/full
+    expect_err "^harness convert: error: /dev/full: write failed (No space left on device)" "convert: the failed write named"
+    expect_exit 3 "replay --out onto a full disk" "$H" replay vectors/walk.bin --quiet --out /dev/full
+    expect_err "^harness replay: error: cannot write the trajectory to /dev/full" "replay: the failed write named"
+    "$H" sim --motion stand --duration 120 --rate 100 --seed 3 --out "$T/still.bin" >/dev/null 2>&1
+    expect_exit 3 "allan --profile onto a full disk" "$H" allan "$T/still.bin" --profile /dev/full
+    expect_err "^harness allan: error: /dev/full: write failed (No space left on device)" "allan --profile: the failed write named"
+    rm -f "$T/still.bin"
+else
+    echo "skip the full-disk checks (no /dev/full)"
+fi
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
