@@ -319,6 +319,22 @@ else
     echo "skip the full-disk checks (no /dev/full)"
 fi
 
+# --- --from naming a format the file is not (never run before make
+# coverage-harness, 2026-11-30): the importer says what it expected at which
+# line, exit 1; refused at the header, no --out is written.
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n' >"$T/plain.csv"
+rm -f "$T/from.csv"
+expect_exit 1 "a footnav CSV given as --from ipol" "$H" replay "$T/plain.csv" --from ipol --quiet --out "$T/from.csv"
+expect_err "plain.csv:1: expected 'Acquisition frequency: N Hz'" "--from ipol: the header line it expected"
+[ ! -e "$T/from.csv" ] && pass "--from ipol: no --out written" || fail "--from ipol: --out written"
+expect_exit 1 "a footnav CSV given as --from gx2" "$H" replay "$T/plain.csv" --from gx2 --quiet --out "$T/from.csv"
+expect_err "plain.csv: no 'Header:' line found" "--from gx2: the missing Header: line named"
+[ ! -e "$T/from.csv" ] && pass "--from gx2: no --out written" || fail "--from gx2: --out written"
+printf 'Header:\n1.0 2.0 3.0\n' >"$T/gx2.txt"
+expect_exit 1 "a GX2 file whose first data line is not one" "$H" replay "$T/gx2.txt" --from gx2 --quiet
+expect_err "gx2.txt:2: not a GX2 data line" "--from gx2: the line that is not GX2 data named"
+rm -f "$T/plain.csv" "$T/gx2.txt" "$T/from.csv"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1
