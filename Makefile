@@ -8,6 +8,7 @@
 #   make firmware-bench  the firmware in qemu-system-arm: instructions per call
 #   make bench      benchmarks (figures quoted in docs/ come from here)
 #   make coverage   line and branch coverage of src/ by the suites (build/cov; not part of make test)
+#   make coverage-harness  the same of harness/ by the CLI tests (build/hcov; not part of make test)
 #   make simgap-validation  the gap diagnosis on withheld effects -> docs/simgap-validation.md
 #   make deps       install the Debian packages (scripts/bootstrap.sh)
 #   make install    the library, its headers, footnav.pc and the harness (as
@@ -59,7 +60,8 @@ BENCH_BINS  := $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
 FORBIDDEN := malloc|calloc|realloc|free|_sbrk|sbrk|printf|fprintf|sprintf|snprintf|vprintf|vfprintf|vsprintf|vsnprintf|puts|fputs|putchar|fputc|putc|fopen|fclose|fread|fwrite|fflush|stdout|stderr|stdin|_impure_ptr|__printf_chk|__fprintf_chk|__sprintf_chk|__snprintf_chk|exit|abort|system
 
 .PHONY: all test check-suites test-double test-cli vectors-check nm-check sanitize \
-        firmware firmware-bench bench deps clean run fuzz valgrind lint longrun install uninstall coverage
+        firmware firmware-bench bench deps clean run fuzz valgrind lint longrun install uninstall coverage \
+        coverage-harness
 
 all: $(LIB) $(HARNESS) nm-check
 
@@ -153,6 +155,16 @@ coverage:
 	@find $(COV_BUILD) -name '*.gcda' -delete 2>/dev/null || true
 	$(MAKE) BUILD=$(COV_BUILD) HARNESS=$(COV_BUILD)/harness OPT="-O0 -g" SAN=--coverage check-suites
 	@sh scripts/coverage.sh $(COV_BUILD)
+
+# make coverage-harness: the same for harness/*.c, run by the suites (some
+# test the harness's readers and writers) and the CLI tests
+# (tests/cli/test_*.sh, as make test-cli runs them) against a --coverage -O0
+# build in $(HCOV_BUILD); about 15 minutes. Not part of make test or CI.
+HCOV_BUILD := build/hcov
+coverage-harness:
+	@find $(HCOV_BUILD) -name '*.gcda' -delete 2>/dev/null || true
+	$(MAKE) BUILD=$(HCOV_BUILD) HARNESS=$(HCOV_BUILD)/harness OPT="-O0 -g" SAN=--coverage check-suites test-cli
+	@sh scripts/coverage.sh $(HCOV_BUILD) harness
 
 # ---------------------------------------------------------------- firmware
 # make firmware: the reference firmware image for a generic Cortex-M4F

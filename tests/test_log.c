@@ -441,6 +441,47 @@ static void test_bin_nan_record(void **state)
     expect_bin(b, g_golden_n, 1, 2, FNAV_E_NANINF, "NaN");
 }
 
+/* A sample record whose values a reader must refuse though its checksum
+ * holds (never run before make coverage-harness, 2026-11-30): time going
+ * backwards, beyond 2^62 ns, a value beyond FNAV_INPUT_MAX_ABS; and a sample
+ * after the end record. Each ends the read there with its status and a
+ * message naming the record; the samples before it are delivered. */
+static void test_bin_bad_record_values(void **state)
+{
+    unsigned char b[4096];
+    hx_bin_record_t rec, prev;
+    const size_t r2 = HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE;
+    const size_t r3 = HX_BIN_HEADER_SIZE + 3 * HX_BIN_RECORD_SIZE;
+    const size_t r5 = HX_BIN_HEADER_SIZE + 5 * HX_BIN_RECORD_SIZE;
+    (void)state;
+    memcpy(b, g_golden, g_golden_n);
+    assert_int_equal(hx_bin_record_decode(b + r2, &prev), 0);
+    assert_int_equal(hx_bin_record_decode(b + r3, &rec), 0);
+    rec.t_ns = prev.t_ns - 1;
+    hx_bin_record_encode(&rec, b + r3);
+    expect_bin(b, g_golden_n, 1, 3, FNAV_E_TIME, "time goes backwards");
+
+    memcpy(b, g_golden, g_golden_n);
+    assert_int_equal(hx_bin_record_decode(b + r3, &rec), 0);
+    rec.t_ns = INT64_MAX;
+    hx_bin_record_encode(&rec, b + r3);
+    expect_bin(b, g_golden_n, 1, 3, FNAV_E_RANGE, "beyond 2^62 ns");
+
+    memcpy(b, g_golden, g_golden_n);
+    assert_int_equal(hx_bin_record_decode(b + r3, &rec), 0);
+    rec.acc[0] = 2.0e6f;
+    hx_bin_record_encode(&rec, b + r3);
+    expect_bin(b, g_golden_n, 1, 3, FNAV_E_RANGE, "a value beyond");
+
+    /* the last sample and the end record again after the end record (two
+     * recordings run together): the sample is delivered, then the read ends
+     * in a format error naming it */
+    assert_int_equal(g_golden_n, (size_t)HX_BIN_HEADER_SIZE + 7 * HX_BIN_RECORD_SIZE);
+    memcpy(b, g_golden, g_golden_n);
+    memcpy(b + g_golden_n, g_golden + r5, 2 * HX_BIN_RECORD_SIZE);
+    expect_bin(b, g_golden_n + 2 * HX_BIN_RECORD_SIZE, 1, 7, FNAV_E_FORMAT, "data after the end record");
+}
+
 /* ------------------------------------------------------------ bad CSV */
 
 static void expect_csv(const char *text, int open_ok, int n_samples, fnav_status_t end, const char *msg_part)
@@ -2323,6 +2364,7 @@ int main(void)
         cmocka_unit_test(test_bin_truncated),
         cmocka_unit_test(test_bin_corrupted),
         cmocka_unit_test(test_bin_nan_record),
+        cmocka_unit_test(test_bin_bad_record_values),
         cmocka_unit_test(test_bin_header_fields),
         cmocka_unit_test(test_bin_end_count),
         cmocka_unit_test(test_bin_resync_counts),

@@ -263,6 +263,78 @@ expect_err "^convert: done in" "convert of a long log: the progress ends with th
 expect_err "^convert: *[0-9]* % ([0-9.]* s, about [0-9]* s left)$" "convert of a long log: the time left"
 rm -f "$T/long.csv"
 
+# --- mistakes a user can make that no test ran before make coverage-harness
+# (2026-11-30): the command line, an output that cannot be written, an
+# empty log, a stream to a file that is not a serial port. Each is refused
+# with its exit status and a message naming what is wrong, and leaves no
+# output file behind.
+expect_exit 2 "a short option no command has (-x)" "$H" info vectors/walk.bin -x
+expect_err "^harness info: error: unknown option '-x'" "-x: named as an unknown option"
+expect_err "^usage: harness info LOG" "-x: the usage follows"
+expect_exit 2 "a second positional argument to info" "$H" info vectors/walk.bin extra
+expect_err "^harness info: error: unexpected argument 'extra'" "the extra argument is named"
+expect_exit 2 "a value given to a flag (--quiet=1)" "$H" replay vectors/walk.bin --quiet=1
+expect_err "^harness replay: error: option --quiet takes no value" "--quiet=1: the flag takes no value"
+expect_exit 2 "convert --to with an unknown format" "$H" convert vectors/walk.bin "$T/to.dat" --to xyz
+expect_err "^harness convert: error: --to must be bin or csv, not 'xyz'" "--to xyz: the formats it takes"
+[ ! -e "$T/to.dat" ] && pass "--to xyz: nothing written" || fail "--to xyz wrote $T/to.dat"
+expect_exit 3 "convert to a directory that does not exist" "$H" convert vectors/walk.bin "$T/nodir/x.csv"
+expect_err "^harness convert: error: $T/nodir/x.csv: cannot create (No such file or directory)" \
+    "convert: the output and the reason named"
+expect_exit 3 "replay --out in a directory that does not exist" "$H" replay vectors/walk.bin --quiet --out "$T/nodir/o.csv"
+expect_err "^harness replay: error: cannot write $T/nodir/o.csv" "replay --out: the output named"
+rm -f "$T/ok.csv"
+expect_exit 3 "replay --strides unwritable beside a writable --out" \
+    "$H" replay vectors/walk.bin --quiet --out "$T/ok.csv" --strides "$T/nodir/s.csv"
+expect_err "^harness replay: error: cannot write $T/nodir/s.csv (No such file or directory)" "--strides: the output and the reason named"
+[ ! -e "$T/ok.csv" ] && pass "--strides unwritable: refused before the run, --out not started" || fail "--strides unwritable: --out written"
+expect_exit 3 "allan --profile in a directory that does not exist" "$H" allan vectors/walk.bin --profile "$T/nodir/x.profile"
+expect_err "^harness allan: error: cannot write $T/nodir/x.profile (No such file or directory)" "allan --profile: the output and the reason named"
+: >"$T/empty.csv"
+expect_exit 1 "info on an empty file" "$H" info "$T/empty.csv"
+expect_err "^harness info: error: $T/empty.csv: empty file" "the empty file is named as such"
+expect_exit 2 "stream --rate with --speed" "$H" stream vectors/walk.bin "$T/port" --rate 100 --speed 2
+expect_err "^harness stream: error: --rate and --speed exclude each other" "--rate and --speed: named"
+expect_exit 3 "stream to a plain file, not a serial port" "$H" stream vectors/walk.bin "$T/empty.csv"
+expect_err "^harness stream: error: $T/empty.csv: not a serial port (not a character device)" "stream: a plain file is not a port"
+[ ! -s "$T/empty.csv" ] && pass "stream: the plain file was not written to" || fail "stream wrote into $T/empty.csv"
+printf 't,ax,ay,az,gx,gy,gz\n' >"$T/hdr.csv"
+expect_exit 1 "stream of a log with a header and no sample" "$H" stream "$T/hdr.csv" "$T/port"
+expect_err "^harness stream: error: $T/hdr.csv: no samples" "stream: the empty log named"
+[ ! -e "$T/port" ] && pass "stream: no port opened or created for an empty log" || fail "stream created $T/port"
+
+# --- a full disk (/dev/full: every write fails with ENOSPC), never run
+# before make coverage-harness (2026-11-30): the write failure is an
+# output error, exit 3, naming the file, not a success.
+if [ -c /dev/full ]; then
+    expect_exit 3 "convert onto a full disk" "$H" convert vectors/walk.bin /dev/full
+    expect_err "^harness convert: error: /dev/full: write failed (No space left on device)" "convert: the failed write named"
+    expect_exit 3 "replay --out onto a full disk" "$H" replay vectors/walk.bin --quiet --out /dev/full
+    expect_err "^harness replay: error: cannot write the trajectory to /dev/full" "replay: the failed write named"
+    "$H" sim --motion stand --duration 120 --rate 100 --seed 3 --out "$T/still.bin" >/dev/null 2>&1
+    expect_exit 3 "allan --profile onto a full disk" "$H" allan "$T/still.bin" --profile /dev/full
+    expect_err "^harness allan: error: /dev/full: write failed (No space left on device)" "allan --profile: the failed write named"
+    rm -f "$T/still.bin"
+else
+    echo "skip the full-disk checks (no /dev/full)"
+fi
+
+# --- --from naming a format the file is not (never run before make
+# coverage-harness, 2026-11-30): the importer says what it expected at which
+# line, exit 1; refused at the header, no --out is written.
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n' >"$T/plain.csv"
+rm -f "$T/from.csv"
+expect_exit 1 "a footnav CSV given as --from ipol" "$H" replay "$T/plain.csv" --from ipol --quiet --out "$T/from.csv"
+expect_err "plain.csv:1: expected 'Acquisition frequency: N Hz'" "--from ipol: the header line it expected"
+[ ! -e "$T/from.csv" ] && pass "--from ipol: no --out written" || fail "--from ipol: --out written"
+expect_exit 1 "a footnav CSV given as --from gx2" "$H" replay "$T/plain.csv" --from gx2 --quiet --out "$T/from.csv"
+expect_err "plain.csv: no 'Header:' line found" "--from gx2: the missing Header: line named"
+[ ! -e "$T/from.csv" ] && pass "--from gx2: no --out written" || fail "--from gx2: --out written"
+printf 'Header:\n1.0 2.0 3.0\n' >"$T/gx2.txt"
+expect_exit 1 "a GX2 file whose first data line is not one" "$H" replay "$T/gx2.txt" --from gx2 --quiet
+expect_err "gx2.txt:2: not a GX2 data line" "--from gx2: the line that is not GX2 data named"
+rm -f "$T/plain.csv" "$T/gx2.txt" "$T/from.csv"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_cli.sh: $fails failure(s)"
     exit 1

@@ -172,5 +172,48 @@ awk '/^### From a datasheet/ { s = 1 } s && /^```/ { n++; next } s && n == 1' do
 expect_exit 0 "replay with the datasheet example profile" "$H" replay vectors/walk.bin --quiet --profile "$T/ds.profile"
 ! grep -q "above any IMU's" "$T/err" && pass "the datasheet example: no units warning" || fail "datasheet example warned: $(cat "$T/err")"
 expect_exit 0 "sim with the datasheet example profile" "$H" sim --duration 5 --profile "$T/ds.profile" --out "$T/ds.bin"
+
+# --- a profile file a user got wrong (docs/profile-format.md): each mistake
+# is a usage error (exit 2) naming the file, the line and what is wrong, and
+# nothing is replayed. Never run by a test before make coverage-harness
+# (2026-11-30, hx_profile.c).
+HDR='format = footnav-profile 1'
+bad_profile() { # description expected-message: $T/bad.profile is the file
+    expect_exit 2 "profile $1" "$H" replay vectors/walk.bin --quiet --profile "$T/bad.profile" --out "$T/bad_out.csv"
+    expect_err "$2" "profile $1: the message"
+    [ ! -e "$T/bad_out.csv" ] && pass "profile $1: no output written" || fail "profile $1: an output was written"
+    rm -f "$T/bad_out.csv"
+}
+printf 'rate_hz = 100\n' >"$T/bad.profile"
+bad_profile "without its format line" "bad.profile: not a footnav profile (no 'format = footnav-profile 1' line)"
+printf 'format = footnav-profile 2\nrate_hz = 100\n' >"$T/bad.profile"
+bad_profile "of another format version" "bad.profile:1: format 'footnav-profile 2' not supported (expected 'footnav-profile 1')"
+printf '%s\n' "$HDR" >"$T/bad.profile"
+bad_profile "without rate_hz" "bad.profile: rate_hz missing"
+printf '%s\nrate_hz = 100\nrate_hz = 200\n' "$HDR" >"$T/bad.profile"
+bad_profile "with rate_hz twice" "bad.profile:3: rate_hz given twice"
+printf '%s\nrate_hz = 1e7\n' "$HDR" >"$T/bad.profile"
+bad_profile "with rate_hz out of range" "bad.profile:2: rate_hz '1e7' is not a rate in (0, 1e6\]"
+printf '%s\nrate_hz = 100\nrate 100\n' "$HDR" >"$T/bad.profile"
+bad_profile "with a line without '='" "bad.profile:3: expected 'key = value'"
+printf '%s\nrate_hz = 100\ngyro_tau_s = 100 100\n' "$HDR" >"$T/bad.profile"
+bad_profile "with two values of three" "bad.profile:3: gyro_tau_s needs three positive numbers (x y z)"
+printf '%s\nrate_hz = 100\ngyro_tau_s = 100 100 -5\n' "$HDR" >"$T/bad.profile"
+bad_profile "with a negative value" "bad.profile:3: gyro_tau_s needs three positive numbers (x y z)"
+printf '%s\nrate_hz = 100\ngyro_tau_s = 100 100 100 s\n' "$HDR" >"$T/bad.profile"
+bad_profile "with text after the three values" "bad.profile:3: gyro_tau_s: unexpected text after three values"
+printf '%s\nrate_hz = 100\ngyro_tau_s = 100 100 100\ngyro_tau_s = 50 50 50\n' "$HDR" >"$T/bad.profile"
+bad_profile "with a triple twice" "bad.profile:4: gyro_tau_s given twice"
+printf '%s\nrate_hz = 100\nname = a\000b\n' "$HDR" >"$T/bad.profile"
+bad_profile "with a NUL byte" "bad.profile:3: NUL byte: not a text file"
+{ printf '%s\nrate_hz = 100\n# ' "$HDR"; awk 'BEGIN { for (i = 0; i < 600; i++) printf "x"; print "" }'; } >"$T/bad.profile"
+bad_profile "with a 602-character line" "bad.profile:3: line too long (at most 511 characters)"
+rm -f "$T/bad.profile"; mkdir "$T/bad.profile"
+bad_profile "that is a directory" "bad.profile: cannot read profile ("
+rmdir "$T/bad.profile"
+# a line of exactly 511 characters is still read (the limit is inclusive)
+{ cat "$T/ds.profile"; printf '# '; awk 'BEGIN { for (i = 0; i < 509; i++) printf "x"; print "" }'; } >"$T/edge.profile"
+expect_exit 0 "a profile with a 511-character comment line" "$H" replay vectors/walk.bin --quiet --profile "$T/edge.profile"
+
 echo "profile chain: $fails failure(s)"
 [ "$fails" -eq 0 ]

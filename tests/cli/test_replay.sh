@@ -1418,6 +1418,42 @@ else
     echo "skip --strides swing_s on ipol 3-3 (ipol_gait_xsens/3-3_lf.txt not in the shared data)"
 fi
 
+# --- damaged binary logs (never run by a CLI test before make
+# coverage-harness, 2026-11-30): a copy of vectors/walk.bin cut inside its
+# gzip stream is replayed up to the last whole record, exit 1, the frames
+# before the cut kept in --out; a header cut short or with a flipped byte is
+# refused (exit 1) with no output.
+gzip -c vectors/walk.bin | head -c 20000 >"$T/cut.bin.gz"
+rm -f "$T/cut.csv"
+expect_exit 1 "replay of a .bin.gz cut inside the gzip data" "$H" replay "$T/cut.bin.gz" --quiet --out "$T/cut.csv"
+expect_err "cut.bin.gz: the gzip data ends early (a truncated .gz, e.g. an incomplete copy) after [0-9][0-9]* complete records" \
+    "the cut .gz: named as a truncated copy"
+nrec=$(sed -n 's/.*after \([0-9][0-9]*\) complete records.*/\1/p' "$T/err" | head -n 1)
+nrow=$(grep -v '^#' "$T/cut.csv" 2>/dev/null | tail -n +2 | wc -l)
+if [ -n "$nrec" ] && [ "$nrec" -gt 100 ] && [ "$nrow" -eq "$nrec" ]; then
+    pass "the cut .gz: --out keeps one row per complete record ($nrow)"
+else fail "the cut .gz: $nrow rows in --out for ${nrec:-?} complete records"; fi
+# the rows kept are the whole log's first samples, in order (their time
+# column; the states of the last few rows, filtered without the samples
+# after the cut, differ)
+"$H" replay vectors/walk.bin --quiet --out "$T/whole.csv" 2>/dev/null
+if [ -n "$nrec" ] && [ "$(grep -v '^#' "$T/cut.csv" | cut -d, -f1 | head -n "$nrec" | md5sum)" = \
+        "$(grep -v '^#' "$T/whole.csv" | cut -d, -f1 | head -n "$nrec" | md5sum)" ]; then
+    pass "the cut .gz: the rows kept are the whole log's first samples"
+else fail "the cut .gz: the rows kept are not the whole log's first samples"; fi
+head -c 100 vectors/walk.bin >"$T/short.bin"
+rm -f "$T/short.csv"
+expect_exit 1 "replay of a .bin cut inside its header" "$H" replay "$T/short.bin" --quiet --out "$T/short.csv"
+expect_err "short.bin: too short for a footnav log header (100 of 192 bytes)" "the cut header: its length named"
+[ ! -e "$T/short.csv" ] && pass "the cut header: no --out written" || fail "the cut header: --out written"
+# byte 30 is inside the sensor name: the header's CRC no longer matches
+{ head -c 30 vectors/walk.bin; head -c 31 vectors/walk.bin | tail -c 1 | tr '\000-\377' '\200-\377\000-\177'; tail -c +32 vectors/walk.bin; } >"$T/crc.bin"
+rm -f "$T/crc.csv"
+if cmp -s "$T/crc.bin" vectors/walk.bin; then fail "crc.bin: the byte was not changed"; fi
+expect_exit 1 "replay of a .bin with a damaged header" "$H" replay "$T/crc.bin" --quiet --out "$T/crc.csv"
+expect_err "crc.bin: header: header checksum mismatch (corrupted)" "the damaged header: the checksum named"
+[ ! -e "$T/crc.csv" ] && pass "the damaged header: no --out written" || fail "the damaged header: --out written"
+
 if [ "$fails" -ne 0 ]; then
     echo "test_replay.sh: $fails failure(s)"
     exit 1
