@@ -933,12 +933,6 @@ double hx_motion_knot_time(const hx_motion_t *m, size_t i)
     return i < m->nk ? m->k[i].t : m->k[m->nk - 1].t;
 }
 
-const char *hx_phase_name(int phase)
-{
-    static const char *const names[] = { "still", "heeloff", "swing", "landing", "slap", "ride" };
-    return (phase >= 0 && phase <= HX_PHASE_RIDE) ? names[phase] : "?";
-}
-
 /* ------------------------------------------------------------ evaluation */
 
 /* Envelopes on u in [0, 1] with value and derivatives (per u): zero with

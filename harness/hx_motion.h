@@ -137,9 +137,6 @@ double hx_motion_knot_time(const hx_motion_t *m, size_t i);
 /** Exact truth at time t (any t; still outside [0, duration]). */
 void hx_motion_eval(const hx_motion_t *m, double t_s, hx_truth_t *out);
 
-/** Name of a phase. */
-const char *hx_phase_name(int phase);
-
 /** C_nb = Rz(yaw) Ry(pitch) Rx(roll) of ZYX Euler angles, rad (Titterton &
  *  Weston eq. 3.47; the simulator's mounting and truth, the replay's heading). */
 void hx_dcm_from_euler(double roll, double pitch, double yaw, double C[3][3]);
