@@ -376,7 +376,16 @@ int hx_mtmgr_time(hx_mtmgr_t *x, char **f, int64_t *t_ns, uint32_t *seq, int *ha
                      f[x->col_stf]);
             return -1;
         }
-        ticks = unwrap(v, HX_MTMGR_STF_WRAP, &x->have_stf, &x->stf_prev, &x->stf_wrap);
+        if (x->have_stf && x->stf_prev < HX_MTMGR_STF_DAY && v < x->stf_prev - HX_MTMGR_STF_DAY / 2.0) {
+            /* ticks of the day past midnight (XDA's packet stamper wraps
+             * the sample time at one day of 10 kHz ticks) */
+            x->stf_wrap += HX_MTMGR_STF_DAY;
+            x->stf_prev = v;
+            ticks = v + x->stf_wrap;
+        } else {
+            /* ticks since power-up, a uint32 */
+            ticks = unwrap(v, HX_MTMGR_STF_WRAP, &x->have_stf, &x->stf_prev, &x->stf_wrap);
+        }
         /* ticks of 100 us: exact in int64 ns for 29,000 years */
         *t_ns = (int64_t)ticks * (1000000000LL / HX_MTMGR_STF_HZ);
         break;

@@ -24,6 +24,9 @@
 #define HX_MTMGR_STF_HZ 10000
 /** SampleTimeFine is a uint32 and wraps at 2^32 ticks (119.3 h). */
 #define HX_MTMGR_STF_WRAP 4294967296.0
+/** ... or, as time of day (an MTi-G with a GNSS fix), at 864,000,000 ticks:
+ *  XDA's packet stamper unwraps the sample time at "1 day @ 10kHz". */
+#define HX_MTMGR_STF_DAY 864000000.0
 /** PacketCounter is a uint16 and wraps at 65536 (XDA's packet stamper:
  *  a drop by more than half the range is a wrap). */
 #define HX_MTMGR_CTR_WRAP 65536.0

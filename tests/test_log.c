@@ -793,6 +793,10 @@ static void test_cut_last_line(void **state)
                   "0.0025,0.1,0.2,0.3,-0.49,0.24,0.83\n"
                   "0.005,0.1,0.2,0.3,-0.49,0.24,8");
     expect_cut(p, HX_FMT_NGIMU, 2, ":4: last line has no newline and ends in a value the reader uses");
+    /* an MT Manager export cut inside a row */
+    write_text(p, "// Update Rate: 100.0Hz\nPacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "1\t100\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n2\t200\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n3\t300\t0.1\t0.");
+    expect_cut(p, HX_FMT_MTMGR, 2, ":5: last line is incomplete");
     write_text(p, "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps,q0,q1,q2,q3\n"
                   "0,0.1,0.2,-9.8,0.01,0.02,0.03,1,0,0,0\n"
                   "1,0.1,0.2,-9.8,0.01,0.02,0.03,1,0,0");
@@ -1624,6 +1628,7 @@ static void test_fuzz_seed_formats(void **state)
         { "pyshoe_forced", "pyshoe" },     { "square2_forced", "square2" }, { "bin_golden_whole", "bin" },
         { "adis_synthetic_gz", "auto" },   { "openshoe820_tabs", "auto" }, { "openshoe820_blanks", "openshoe820" },
         { "csv_temp", "csv" },             { "regress_gx2_huge_nr", "gx2" }, { "csv_columns", "csv" },
+        { "mtmanager_synthetic", "auto" }, { "mtmanager_forced", "mtmanager" },
     };
     size_t i;
     (void)state;
@@ -2356,6 +2361,23 @@ static void test_mtmgr_wraps_and_gap(void **state)
     assert_true(log.acc[6][2] == (double)(fnav_real_t)9.978389);
     assert_true(log.gyr[6][2] == (double)(fnav_real_t)0.012926); /* "%.6f" of 0.005926 + 0.007 (row 7) */
     assert_string_equal(log.warnings, "");
+    hx_log_free(&log);
+    /* SampleTimeFine as time of day (an MTi-G with a GNSS fix) wraps at
+     * midnight, 864,000,000 ticks (XDA's packet stamper): 10 ms on, not
+     * "time goes backwards"; a drop of less than half a day is no wrap */
+    write_text(p, "PacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "1\t863999800\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n"
+                  "2\t863999900\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n"
+                  "3\t0\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n"
+                  "4\t100\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n"
+                  "5\t50\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1);
+    assert_int_equal(log.n, 4);
+    for (k = 1; k < log.n; k++) {
+        assert_true(log.t_ns[k] - log.t_ns[k - 1] == 10000000LL);
+    }
+    assert_int_equal(log.status, FNAV_E_TIME);
+    assert_non_null(strstr(log.error, ":6: time goes backwards"));
     hx_log_free(&log);
     unlink(p);
 }
