@@ -2,6 +2,7 @@
  * docs/log-format.md). */
 #include "hx_log.h"
 #include "hx_bin.h"
+#include "hx_xsens.h"
 
 #include <ctype.h>
 #include <math.h>
@@ -17,7 +18,7 @@
 #define HX_BUF_SIZE 65536
 
 static const char *const k_format_names[HX_FMT_COUNT] = {
-    "auto", "bin", "csv", "gx2", "openshoe820", "ngimu", "pyshoe", "ipol", "adis", "square2"
+    "auto", "bin", "csv", "gx2", "openshoe820", "ngimu", "pyshoe", "ipol", "adis", "square2", "mtmanager"
 };
 
 const char *hx_format_name(hx_format_t fmt)
@@ -51,7 +52,8 @@ typedef enum {
     TIME_COLUMN_S,   /* a column in seconds */
     TIME_INDEX,      /* uniform: line index / rate */
     TIME_COUNTER,    /* a packet counter column / rate, also the seq */
-    TIME_GX2         /* GX2 sensor timer (19.6608 MHz), see gx2_time() */
+    TIME_GX2,        /* GX2 sensor timer (19.6608 MHz), see gx2_time() */
+    TIME_MTMGR       /* MT Manager export: SampleTimeFine, PacketCounter or index (hx_mtmgr_time) */
 } time_mode_t;
 
 struct hx_reader {
@@ -78,6 +80,8 @@ struct hx_reader {
     long short_first;           /* the line of the first of them */
     double ctr_wrap;            /* ipol: 65536 per wrap of the 16-bit packet counter so far */
     double ctr_prev;            /* ipol: the last raw counter */
+    hx_mtmgr_t mt;              /* mtmanager: columns, time source, counters (hx_xsens.h) */
+    int row_skipped;            /* the row just read was skipped (mtmanager: a missing value) */
     double acc_scale, gyr_scale;
     hx_csv_layout_t layout;     /* the interchange CSV's names and units (--columns, --units) */
     time_mode_t time_mode;
@@ -709,6 +713,11 @@ static hx_format_t detect(const unsigned char *b, size_t n)
         if (has_field(head, "t")) {
             return HX_FMT_CSV;
         }
+        if (hx_mtmgr_detect(text)) {
+            /* Xsens MT Manager's export, by its '//' preamble or its header
+             * (none of the names above is in it) */
+            return HX_FMT_MTMGR;
+        }
     }
     if (count_numbers(text) == 6) {
         /* headerless: six numbers -> OpenShoe 820 Hz */
@@ -914,6 +923,80 @@ static void set_cols(hx_reader_t *r, int t, int a0, int g0)
     }
 }
 
+/* Xsens MT Manager's export (hx_xsens.h): the '//' lines, the header and
+ * a look at the first data row, whose SampleTimeFine (a number or NaN)
+ * chooses the time source; the row is read again as the first sample. */
+static int setup_mtmgr(hx_reader_t *r, double rate_hz)
+{
+    hx_meta_t *m = &r->meta;
+    char *f[HX_MAX_COLS], msg[256];
+    int n, rc;
+    long lines;
+    z_off_t pos;
+    hx_mtmgr_init(&r->mt);
+    do {
+        rc = read_line(r);
+        if (rc <= 0) {
+            if (rc == 0) {
+                set_err(r, "%s: no header line (PacketCounter, SampleTimeFine, Acc_X, ...)", r->path);
+            }
+            return -1;
+        }
+    } while (blank(r->line) || hx_mtmgr_comment(&r->mt, r->line, r->stats.lines));
+    /* tabs as MT Manager writes them, else commas, semicolons or blanks */
+    r->delim = strchr(r->line, '\t') != NULL ? '\t'
+               : strchr(r->line, ',') != NULL ? ','
+               : strchr(r->line, ';') != NULL ? ';'
+                                              : ' ';
+    n = split(r->line, r->delim, f, HX_MAX_COLS);
+    r->hdr_fields = n;
+    if (hx_mtmgr_header(&r->mt, f, n, msg, sizeof msg) != 0) {
+        set_err(r, "%s:%ld: %s", r->path, r->stats.lines, msg);
+        return -1;
+    }
+    lines = r->stats.lines;
+    pos = gztell(r->gz);
+    do {
+        rc = read_line(r);
+    } while (rc > 0 && blank(r->line));
+    if (rc < 0) {
+        return -1;
+    }
+    n = rc > 0 ? split(r->line, r->delim, f, HX_MAX_COLS) : 0;
+    if (hx_mtmgr_choose_time(&r->mt, rc > 0 ? f : NULL, n, rate_hz, msg, sizeof msg) != 0) {
+        set_err(r, "%s:%ld: %s", r->path, r->stats.lines, msg);
+        return -1;
+    }
+    if (pos < 0 || gzseek(r->gz, pos, SEEK_SET) != pos) {
+        set_err(r, "%s:%ld: cannot read the first row again (seek failed)", r->path, r->stats.lines);
+        return -1;
+    }
+    r->stats.lines = lines;
+    r->last_line_open = 0;
+    for (n = 0; n < 3; n++) {
+        r->col_a[n] = r->mt.col_acc[n];
+        r->col_g[n] = r->mt.col_gyr[n];
+    }
+    r->ncols_needed = r->mt.ncols_needed;
+    r->time_mode = TIME_MTMGR;
+    r->rate_hz = r->mt.rate_hz;
+    m->has_seq = r->mt.use_ctr;
+    m->stamps_made = r->mt.time_src == HX_MTMGR_TIME_INDEX;
+    if (r->mt.rate_hz > 0.0) {
+        m->rate_hz = r->mt.rate_hz;
+        m->rate_nominal = 1;
+    }
+    if (r->mt.time_src != HX_MTMGR_TIME_STF && rate_hz > 0.0 && r->mt.stated_hz > 0.0 &&
+        fabs(rate_hz - r->mt.stated_hz) > 1.0e-9 * r->mt.stated_hz) {
+        /* as for ipol: the user's rate rules, said */
+        add_warn(r, "%s: --input-rate %g Hz replaces the rate the file states (%g Hz on line %ld)", r->path, rate_hz,
+                 r->mt.stated_hz, r->mt.stated_line);
+    }
+    snprintf(m->sensor, sizeof m->sensor, "Xsens %s", r->mt.product[0] != '\0' ? r->mt.product : "(MT Manager)");
+    copy_str(m->axes, sizeof m->axes, "sensor axes");
+    return 0;
+}
+
 static int setup_text(hx_reader_t *r, double rate_hz)
 {
     hx_meta_t *m = &r->meta;
@@ -1057,6 +1140,11 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         copy_str(m->axes, sizeof m->axes, "sensor axes; tilted at rest, +z mostly up");
         break;
     }
+    case HX_FMT_MTMGR:
+        if (setup_mtmgr(r, rate_hz) != 0) {
+            return -1;
+        }
+        break;
     case HX_FMT_OS820:
         r->time_mode = TIME_INDEX;
         m->stamps_made = 1;
@@ -1100,7 +1188,7 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         set_err(r, "%s: internal: not a text format", r->path);
         return -1;
     }
-    if (r->time_mode != TIME_COLUMN_S && r->time_mode != TIME_GX2) {
+    if (r->time_mode != TIME_COLUMN_S && r->time_mode != TIME_GX2 && r->time_mode != TIME_MTMGR) {
         m->rate_hz = r->rate_hz;
         m->rate_nominal = 1;
     }
@@ -1159,8 +1247,23 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr
 }
 
 static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s);
+static fnav_status_t next_text_line(hx_reader_t *r, fnav_sample_t *s);
 
+/* The next sample of a text log: the next line's, past the rows skipped
+ * (an MT Manager export's rows with a missing value, counted). */
 static fnav_status_t next_text(hx_reader_t *r, fnav_sample_t *s)
+{
+    for (;;) {
+        const fnav_status_t st = next_text_line(r, s);
+        if (st != FNAV_OK || !r->row_skipped) {
+            return st;
+        }
+        r->row_skipped = 0;
+        s->flags = 0;
+    }
+}
+
+static fnav_status_t next_text_line(hx_reader_t *r, fnav_sample_t *s)
 {
     int rc;
     for (;;) {
@@ -1261,6 +1364,12 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
             r->short_first = r->stats.lines;
         }
     }
+    if (r->meta.format == HX_FMT_MTMGR && hx_mtmgr_row(&r->mt, f, n, r->stats.lines)) {
+        /* NaN or empty where the reader needs a value: the packet lacks
+         * it; skipped and counted, warned at the end (hx_reader_next) */
+        r->row_skipped = 1;
+        return FNAV_OK;
+    }
     for (i = 0; i < 3; i++) {
         int c;
         for (c = 0; c < 2; c++) {
@@ -1351,6 +1460,18 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         s->seq = (uint32_t)tv;
         s->flags |= FNAV_SAMPLE_HAS_SEQ;
         break;
+    case TIME_MTMGR: {
+        char msg[160];
+        int has_seq;
+        if (hx_mtmgr_time(&r->mt, f, &t_ns, &s->seq, &has_seq, msg, sizeof msg) != 0) {
+            set_err(r, "%s:%ld: %s", r->path, r->stats.lines, msg);
+            return FNAV_E_FORMAT;
+        }
+        if (has_seq) {
+            s->flags |= FNAV_SAMPLE_HAS_SEQ;
+        }
+        break;
+    }
     case TIME_GX2: {
         double host = 0.0, freq = 0.0;
         if (parse_num(f[7], &tv) != 0 || parse_num(f[r->col_aux], &aux) != 0 ||
@@ -1698,7 +1819,8 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         free(r);
         return NULL;
     }
-    if (rate_hz > 0.0 && (fmt == HX_FMT_BIN || r->time_mode == TIME_COLUMN_S || r->time_mode == TIME_GX2)) {
+    if (rate_hz > 0.0 && (fmt == HX_FMT_BIN || r->time_mode == TIME_COLUMN_S || r->time_mode == TIME_GX2 ||
+                          (r->time_mode == TIME_MTMGR && r->mt.time_src == HX_MTMGR_TIME_STF))) {
         /* --input-rate gives the rate of an input without time stamps
          * (docs/harness.md). It used to replace a .bin's header rate, which
          * every analysis then used against the stamps (`psd walk.bin
@@ -2079,13 +2201,26 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
                  "restart bridged with the measured period (docs/log-format.md, GX2 time)",
                  r->path, r->gx2_bridged, r->gx2_bridged == 1 ? "" : "s");
     }
+    if (r->meta.format == HX_FMT_MTMGR && r->mt.skipped > 0) {
+        /* MT Manager writes NaN where a packet lacks a value (a packet the
+         * radio lost, a quantity not yet available): such rows are left
+         * out, so the stamps around them show a gap */
+        add_warn(r, "%s:%ld: %ld row%s with NaN or an empty field in Acc_*, Gyr_* or the time or counter column (the "
+                    "first here) skipped: a gap in the samples there",
+                 r->path, r->mt.skipped_first, r->mt.skipped, r->mt.skipped == 1 ? "" : "s");
+    }
     if (r->short_rows > 0) {
         add_warn(r, "%s:%ld: %ld row%s with fewer fields than the header's %d (the first here): where a field was "
                     "lost inside a row, the values after it were read from the wrong columns",
                  r->path, r->short_first, r->short_rows, r->short_rows == 1 ? "" : "s", r->hdr_fields);
     }
     if (st == FNAV_END && r->stats.records == 0) {
-        set_err(r, "%s: no samples", r->path);
+        if (r->meta.format == HX_FMT_MTMGR && r->mt.skipped > 0) {
+            set_err(r, "%s: no samples: each of the %ld rows has NaN or an empty field in Acc_*, Gyr_* or the time or "
+                       "counter column", r->path, r->mt.skipped);
+        } else {
+            set_err(r, "%s: no samples", r->path);
+        }
         st = FNAV_E_FORMAT;
     }
     r->deferred = st == FNAV_END ? FNAV_OK : st;

@@ -31,6 +31,7 @@ typedef enum {
     HX_FMT_IPOL,       /**< IPOL Xsens MTw text (packet counter, 100 Hz) */
     HX_FMT_ADIS,       /**< ADIS16405 static CSV (deg/s, g, no time) */
     HX_FMT_SQUARE2,    /**< ZUPT-aided-INS square2 CSV (sample index, 100 Hz) */
+    HX_FMT_MTMGR,      /**< Xsens MT Manager ASCII export (SampleTimeFine or PacketCounter; hx_xsens.h) */
     HX_FMT_COUNT
 } hx_format_t;
 
@@ -67,7 +68,7 @@ hx_format_t hx_format_from_name(const char *name);
 /** The format names a user gives to --from, comma-separated: the one list
  *  behind --help (HX_INPUT_OPTS) and the error of an unknown name; a new
  *  importer adds its name here and in k_format_names (hx_log.c). */
-#define HX_FORMAT_LIST "bin, csv, gx2, openshoe820, ngimu, pyshoe, ipol, adis, square2"
+#define HX_FORMAT_LIST "bin, csv, gx2, openshoe820, ngimu, pyshoe, ipol, adis, square2, mtmanager"
 /** Comma-separated list of the format names (HX_FORMAT_LIST). */
 const char *hx_format_list(void);
 

@@ -793,6 +793,10 @@ static void test_cut_last_line(void **state)
                   "0.0025,0.1,0.2,0.3,-0.49,0.24,0.83\n"
                   "0.005,0.1,0.2,0.3,-0.49,0.24,8");
     expect_cut(p, HX_FMT_NGIMU, 2, ":4: last line has no newline and ends in a value the reader uses");
+    /* an MT Manager export cut inside a row */
+    write_text(p, "// Update Rate: 100.0Hz\nPacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "1\t100\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n2\t200\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n3\t300\t0.1\t0.");
+    expect_cut(p, HX_FMT_MTMGR, 2, ":5: last line is incomplete");
     write_text(p, "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps,q0,q1,q2,q3\n"
                   "0,0.1,0.2,-9.8,0.01,0.02,0.03,1,0,0,0\n"
                   "1,0.1,0.2,-9.8,0.01,0.02,0.03,1,0,0");
@@ -1624,6 +1628,7 @@ static void test_fuzz_seed_formats(void **state)
         { "pyshoe_forced", "pyshoe" },     { "square2_forced", "square2" }, { "bin_golden_whole", "bin" },
         { "adis_synthetic_gz", "auto" },   { "openshoe820_tabs", "auto" }, { "openshoe820_blanks", "openshoe820" },
         { "csv_temp", "csv" },             { "regress_gx2_huge_nr", "gx2" }, { "csv_columns", "csv" },
+        { "mtmanager_synthetic", "auto" }, { "mtmanager_forced", "mtmanager" },
     };
     size_t i;
     (void)state;
@@ -2285,6 +2290,329 @@ static void test_csv_layout(void **state)
 /* test_csv_layout's teardown: the process-wide layout back to the
  * defaults also when an assertion left the test midway (the tests after it
  * read the interchange CSV) */
+/* ------------------------------------------------------------ mtmanager */
+
+/* Xsens MT Manager's ASCII export (docs/log-format.md, "MT Manager
+ * export"). A preamble as MT Manager writes it (the public example of an
+ * MTw2 export; trailing blanks on some lines), then the header. */
+static const char k_mtmgr_preamble[] =
+    "// General information: \n"
+    "//  MT Manager version: 2022.2.0 \n"
+    "//  XDA version: 2022.2.0 build 7381 rev 124627 built on 2023-07-19\n"
+    "// Device information: \n"
+    "//  DeviceId: 00B42D4F\n"
+    "//  ProductCode: MTW2-3A7G6\n"
+    "//  Firmware Version: 4.4.0\n"
+    "//  Hardware Version: 1.1.0\n"
+    "// Device settings: \n"
+    "//  Filter Profile: human(46.1)\n"
+    "//  Option Flags: Orientation Smoother Disabled, Position/Velocity Smoother Disabled, Continuous Zero "
+    "Rotation Update Disabled, AHS Disabled, ICC Disabled\n"
+    "// Coordinate system: ENU\n";
+
+/* Both counters wrap (PacketCounter at 2^16, SampleTimeFine at 2^32 ticks
+ * of 100 us) and one packet is lost after the wraps: the time is the
+ * unwrapped SampleTimeFine (10 ms a packet at 100 Hz, 20 ms over the lost
+ * one), seq the unwrapped counter (a step of 2 there: a drop), the rate
+ * the one the '// Update Rate' line states; the unused Roll/Pitch/Yaw and
+ * the NaN date columns are ignored. A mutant without the
+ * SampleTimeFine unwrap reads "time goes backwards" at the wrap; one
+ * without the counter unwrap a seq step of -65535. */
+static void test_mtmgr_wraps_and_gap(void **state)
+{
+    char p[256], err[320];
+    hx_log_t log;
+    FILE *f;
+    long i;
+    size_t k;
+    const double stf0 = 4294967296.0 - 300.0; /* 3 packets before the wrap */
+    (void)state;
+    tmp_path(p, sizeof p, ".txt");
+    f = fopen(p, "w");
+    assert_non_null(f);
+    fprintf(f, "%s//  Update Rate: 100.0Hz\n", k_mtmgr_preamble);
+    fprintf(f, "PacketCounter\tSampleTimeFine\tYear\tMonth\tDay\tSecond\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\t"
+               "Roll\tPitch\tYaw\n");
+    for (i = 0; i < 8; i++) {
+        if (i == 5) {
+            continue; /* lost: 2 packets after both wraps */
+        }
+        fprintf(f, "%ld\t%.0f\tNaN\tNaN\tNaN\tNaN\t0.069663\t-0.012828\t9.978389\t0.001960\t-0.000371\t%.6f\t"
+                   "-0.254385\t0.210872\t-137.2\n",
+                (65533L + i) % 65536L, fmod(stf0 + 100.0 * (double)i, 4294967296.0), 0.005926 + 0.001 * (double)i);
+    }
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(hx_detect_file(p), HX_FMT_MTMGR);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.meta.format, HX_FMT_MTMGR);
+    assert_string_equal(log.meta.sensor, "Xsens MTW2-3A7G6");
+    assert_true(log.meta.rate_hz == 100.0);
+    assert_int_equal(log.meta.rate_nominal, 1);
+    assert_int_equal(log.meta.has_seq, 1);
+    assert_int_equal(log.meta.stamps_made, 0);
+    assert_int_equal(log.n, 7);
+    assert_true(log.t_ns[0] == (int64_t)stf0 * 100000LL);
+    assert_true(log.seq[0] == 65533u);
+    for (k = 1; k < log.n; k++) {
+        const int lost = k == 5;
+        assert_true(log.t_ns[k] - log.t_ns[k - 1] == (lost ? 20000000LL : 10000000LL));
+        assert_true(log.seq[k] - log.seq[k - 1] == (lost ? 2u : 1u));
+    }
+    assert_true(log.acc[6][2] == (double)(fnav_real_t)9.978389);
+    assert_true(log.gyr[6][2] == (double)(fnav_real_t)0.012926); /* "%.6f" of 0.005926 + 0.007 (row 7) */
+    assert_string_equal(log.warnings, "");
+    hx_log_free(&log);
+    /* SampleTimeFine as time of day (an MTi-G with a GNSS fix) wraps at
+     * midnight, 864,000,000 ticks (XDA's packet stamper): 10 ms on, not
+     * "time goes backwards"; a drop of less than half a day is no wrap */
+    write_text(p, "PacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "1\t863999800\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n"
+                  "2\t863999900\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n"
+                  "3\t0\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n"
+                  "4\t100\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n"
+                  "5\t50\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1);
+    assert_int_equal(log.n, 4);
+    for (k = 1; k < log.n; k++) {
+        assert_true(log.t_ns[k] - log.t_ns[k - 1] == 10000000LL);
+    }
+    assert_int_equal(log.status, FNAV_E_TIME);
+    assert_non_null(strstr(log.error, ":6: time goes backwards"));
+    hx_log_free(&log);
+    unlink(p);
+}
+
+/* Rows with NaN or an empty field where the reader needs a value (Acc_,
+ * Gyr_, SampleTimeFine, the PacketCounter that gives seq) are lost packets:
+ * skipped, counted and warned with the first one's line, as MT Manager
+ * writes them; NaN in a column the reader does not use is no loss. The
+ * other readers stop at a NaN (their files have none); a mutant that does
+ * so here reads 2 samples. */
+static void test_mtmgr_nan_rows(void **state)
+{
+    char p[256], err[320];
+    hx_log_t log;
+    (void)state;
+    tmp_path(p, sizeof p, ".txt");
+    write_text(p, "// Update Rate: 100.0Hz\n"
+                  "PacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\tMag_X\n"
+                  "10\t1000\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\tNaN\n"
+                  "11\t1100\t0.1\tNaN\t9.8\t0.01\t0.02\t0.03\t0.5\n" /* line 4 */
+                  "12\t1200\t0.1\t0.2\t9.8\t0.01\t0.02\t\t0.5\n"
+                  "13\tnan\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\t0.5\n"
+                  "NaN\t1400\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\t0.5\n"
+                  "15\t1500\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\t0.5\n"
+                  "16\t1600\t-0.1\t0.2\t9.8\t0.01\t0.02\t0.03\t0.5\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.meta.format, HX_FMT_MTMGR);
+    assert_int_equal(log.n, 3);
+    assert_true(log.seq[1] == 15u && log.t_ns[1] == 150000000LL);
+    assert_true(log.t_ns[2] - log.t_ns[1] == 10000000LL);
+    assert_true(log.acc[2][0] == (double)(fnav_real_t)-0.1);
+    assert_non_null(strstr(log.warnings, ":4: 4 rows with NaN or an empty field in Acc_*, Gyr_* or the time or "
+                                         "counter column (the first here) skipped"));
+    hx_log_free(&log);
+    /* every row lost: no samples, an error that says why */
+    write_text(p, "// Update Rate: 100.0Hz\n"
+                  "PacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "10\t1000\tNaN\tNaN\tNaN\tNaN\tNaN\tNaN\n11\t1100\tNaN\tNaN\tNaN\tNaN\tNaN\tNaN\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ": no samples: each of the 2 rows has NaN or an empty field in Acc_*, Gyr_* or the "
+                                "time or counter column"));
+    /* Inf is no missing value but a fault: an error at its line, as in
+     * every reader */
+    write_text(p, "PacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "10\t1000\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n"
+                  "11\t1100\t0.1\tinf\t9.8\t0.01\t0.02\t0.03\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1);
+    assert_int_equal(log.n, 1);
+    assert_int_equal(log.status, FNAV_E_NANINF);
+    assert_non_null(strstr(log.error, ":3: column 4 ('inf') is NaN or Inf"));
+    hx_log_free(&log);
+    unlink(p);
+}
+
+/* Columns in another order, extra columns, comma or semicolon delimiter,
+ * CRLF, no preamble (the header alone is recognised): the values land in
+ * the right axes. Without SampleTimeFine the time is the PacketCounter at
+ * the stated rate, or --input-rate (warned when it differs from the stated
+ * one); with neither a rate is asked for. A SampleTimeFine of NaN on the
+ * first row (the public example's) leaves the time to the counter. */
+static void test_mtmgr_columns_and_rate(void **state)
+{
+    char p[256], err[320];
+    hx_log_t log;
+    static const char *const delims[2] = { ",", ";" };
+    int d;
+    (void)state;
+    tmp_path(p, sizeof p, ".txt");
+    for (d = 0; d < 2; d++) {
+        char text[512];
+        const char *c = delims[d];
+        snprintf(text, sizeof text,
+                 "Gyr_Z%sGyr_Y%sGyr_X%sQuat_q0%sAcc_Z%sAcc_Y%sAcc_X%sSampleTimeFine%sPacketCounter\r\n"
+                 "0.3%s0.2%s0.1%s1%s9.7%s-0.5%s0.25%s20000%s7\r\n"
+                 "0.3%s0.2%s0.1%s1%s9.7%s-0.5%s0.25%s20050%s8\r\n",
+                 c, c, c, c, c, c, c, c, c, c, c, c, c, c, c, c, c, c, c, c, c, c, c, c);
+        write_text(p, text);
+        assert_int_equal(hx_detect_file(p), HX_FMT_MTMGR);
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        assert_int_equal(log.n, 2);
+        assert_true(log.acc[0][0] == (double)(fnav_real_t)0.25 && log.acc[0][1] == (double)(fnav_real_t)-0.5 &&
+                    log.acc[0][2] == (double)(fnav_real_t)9.7);
+        assert_true(log.gyr[0][0] == (double)(fnav_real_t)0.1 && log.gyr[0][1] == (double)(fnav_real_t)0.2 &&
+                    log.gyr[0][2] == (double)(fnav_real_t)0.3);
+        assert_true(log.t_ns[0] == 2000000000LL && log.t_ns[1] == 2005000000LL); /* 200 Hz */
+        assert_true(log.seq[1] == 8u);
+        assert_int_equal(log.meta.rate_nominal, 0); /* estimated from the stamps */
+        assert_true(fabs(log.meta.rate_hz - 200.0) < 1e-9);
+        hx_log_free(&log);
+    }
+    /* the counter at the stated 40 Hz */
+    write_text(p, "// Start Time: Unknown\n// Update Rate: 40.0Hz\n// Filter Profile: human (46.1)\n"
+                  "PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "4\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n5\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_true(log.meta.rate_hz == 40.0 && log.meta.rate_nominal == 1);
+    assert_true(log.t_ns[0] == 100000000LL && log.t_ns[1] == 125000000LL);
+    assert_string_equal(log.warnings, "");
+    hx_log_free(&log);
+    /* --input-rate replaces it, said */
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 50.0, err, sizeof err), 0);
+    assert_true(log.meta.rate_hz == 50.0);
+    assert_true(log.t_ns[1] == 100000000LL);
+    assert_non_null(strstr(log.warnings, ": --input-rate 50 Hz replaces the rate the file states (40 Hz on line 2)"));
+    hx_log_free(&log);
+    /* no rate at all: an error naming --input-rate; with it, read */
+    write_text(p, "// ProductCode: MTI-3-8A7G6\n"
+                  "PacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "4\tNaN\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n5\tNaN\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":3: no time stamps: SampleTimeFine is missing on the first row, so the time is "
+                                "the PacketCounter at the rate, which no '// Update Rate' line states: give it "
+                                "with --input-rate HZ"));
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 100.0, err, sizeof err), 0);
+    assert_int_equal(log.n, 2);
+    assert_true(log.t_ns[0] == 40000000LL && log.t_ns[1] == 50000000LL);
+    assert_null(strstr(log.warnings, "ignored")); /* the counter needs it */
+    hx_log_free(&log);
+    /* --input-rate with SampleTimeFine: ignored, said */
+    write_text(p, "PacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "4\t100\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n5\t200\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 50.0, err, sizeof err), 0);
+    assert_true(log.t_ns[1] - log.t_ns[0] == 10000000LL);
+    assert_non_null(strstr(log.warnings, "--input-rate ignored: the mtmanager format has time stamps"));
+    hx_log_free(&log);
+    unlink(p);
+}
+
+/* What is refused, with its line: an export of increments (dq_, dv: the SDI
+ * output) or of FreeAcc_ alone, named with what to export instead; a column
+ * missing (the detection hint); a counter that is no whole number; a
+ * SampleTimeFine that steps back by less than half its range (no wrap). */
+static void test_mtmgr_refused(void **state)
+{
+    char p[256], err[320];
+    hx_log_t log;
+    (void)state;
+    tmp_path(p, sizeof p, ".txt");
+    write_text(p, "// General information:\n//  MT Manager version: 2022.2.0\n"
+                  "PacketCounter\tSampleTimeFine\tdq_W\tdq_X\tdq_Y\tdq_Z\tdv[1]\tdv[2]\tdv[3]\n"
+                  "1\t100\t1\t0\t0\t0\t0\t0\t0.098\n");
+    assert_int_equal(hx_detect_file(p), HX_FMT_MTMGR);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":3: header has no column 'Acc_X': the export holds orientation and velocity "
+                                "increments (dq_*, dv*: the SDI output), which footnav does not integrate back; "
+                                "export Acc_X..Z (acceleration, m/s^2) and Gyr_X..Z (rate of turn, rad/s) instead"));
+    write_text(p, "PacketCounter\tSampleTimeFine\tFreeAcc_X\tFreeAcc_Y\tFreeAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "1\t100\t0\t0\t0\t0\t0\t0\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_MTMGR, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":1: header has no column 'Acc_X': FreeAcc_* is the acceleration without gravity"));
+    write_text(p, "// Update Rate: 100.0Hz\nPacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\n"
+                  "1\t100\t0\t0\t0\t0\t0\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":2: header has no column 'Gyr_Z' (an MT Manager export needs Acc_X..Z in m/s^2 "
+                                "and Gyr_X..Z in rad/s) (format mtmanager detected from the content; give --from"));
+    write_text(p, "PacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "1\t100\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n"
+                  "2\t200.5\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1);
+    assert_int_equal(log.n, 1);
+    assert_non_null(strstr(log.error, ":3: SampleTimeFine ('200.5') is not a whole number from 0 to 4294967295"));
+    hx_log_free(&log);
+    write_text(p, "PacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "1\t100\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n"
+                  "x2\t200\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1);
+    assert_non_null(strstr(log.error, ":3: PacketCounter ('x2') is not a whole number"));
+    hx_log_free(&log);
+    write_text(p, "PacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "1\t3000000000\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n"
+                  "2\t2000000000\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1);
+    assert_int_equal(log.status, FNAV_E_TIME);
+    assert_non_null(strstr(log.error, ":3: time goes backwards"));
+    hx_log_free(&log);
+    /* the preamble alone, no header */
+    write_text(p, "// General information:\n//  MT Manager version: 2022.2.0\n\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ": no header line (PacketCounter, SampleTimeFine, Acc_X, ...) (format mtmanager detected"));
+    /* a header alone, no rows */
+    write_text(p, "PacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ": no samples"));
+    unlink(p);
+}
+
+/* Detection reads the first 600 bytes: a preamble longer than that (more
+ * comment lines than the example's) is known by MT Manager's keys in its
+ * '//' lines; '//' lines without them are an export only when the header
+ * shows (PacketCounter or SampleTimeFine with Acc_X and Gyr_X); other
+ * '//' text and the formats detected before stay as they were. */
+static void test_mtmgr_detect(void **state)
+{
+    char p[256], text[2048];
+    int i;
+    size_t len;
+    static const char hdr[] = "PacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                              "1\t100\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n";
+    (void)state;
+    tmp_path(p, sizeof p, ".txt");
+    len = (size_t)snprintf(text, sizeof text, "%s", k_mtmgr_preamble);
+    for (i = 0; i < 6; i++) {
+        len += (size_t)snprintf(text + len, sizeof text - len, "// Coordinate system: ENU\n");
+    }
+    assert_true(len > 600);
+    snprintf(text + len, sizeof text - len, "%s", hdr);
+    write_text(p, text);
+    assert_int_equal(hx_detect_file(p), HX_FMT_MTMGR);
+    /* no keys, the header past 600 bytes: not recognised */
+    for (len = 0, i = 0; i < 40; i++) {
+        len += (size_t)snprintf(text + len, sizeof text - len, "// recorded by hand\n");
+    }
+    snprintf(text + len, sizeof text - len, "%s", hdr);
+    write_text(p, text);
+    assert_int_equal(hx_detect_file(p), HX_FMT_CSV);
+    /* no keys, the header in sight */
+    snprintf(text, sizeof text, "// recorded by hand\n%s", hdr);
+    write_text(p, text);
+    assert_int_equal(hx_detect_file(p), HX_FMT_MTMGR);
+    /* '//' before another header, and the ipol file's counter header under
+     * its first line: as before */
+    write_text(p, "// a note\nt,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n");
+    assert_int_equal(hx_detect_file(p), HX_FMT_CSV);
+    write_text(p, "Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
+                  "0.0\t5.09\t0.41\t8.92\t-0.0025\t0.0089\t-0.0178\n");
+    assert_int_equal(hx_detect_file(p), HX_FMT_IPOL);
+    /* the same header without that line: the export's */
+    write_text(p, "PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n0\t5.09\t0.41\t8.92\t-0.0025\t0.0089\t-0.0178\n");
+    assert_int_equal(hx_detect_file(p), HX_FMT_MTMGR);
+    /* a CSV that also carries Xsens names but has t: ours */
+    write_text(p, "t,PacketCounter,Acc_X,Gyr_X,ax,ay,az,gx,gy,gz\n0,1,0,0,0,0,9.8,0,0,0\n");
+    assert_int_equal(hx_detect_file(p), HX_FMT_CSV);
+    unlink(p);
+}
+
 static int layout_reset(void **state)
 {
     (void)state;
@@ -2406,6 +2734,11 @@ int main(void)
         cmocka_unit_test(test_bin_rate_unknown),
         cmocka_unit_test(test_format_names),
         cmocka_unit_test(test_load_progress),
+        cmocka_unit_test(test_mtmgr_wraps_and_gap),
+        cmocka_unit_test(test_mtmgr_nan_rows),
+        cmocka_unit_test(test_mtmgr_columns_and_rate),
+        cmocka_unit_test(test_mtmgr_refused),
+        cmocka_unit_test(test_mtmgr_detect),
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);

@@ -515,5 +515,62 @@ expect_err "not to the ngimu format (detected from the content; give --from csv 
 expect_exit 2 "convert: --columns with --from ngimu" "$H" convert "$T/phone.csv" "$T/c.bin" --from ngimu --columns t=timestamp_ns
 expect_err "--columns applies to the interchange CSV (format csv), not to the ngimu format" "--columns with another --from named"
 
+# --- Xsens MT Manager's ASCII export (docs/log-format.md, "MT Manager export"):
+# the walk of vectors/walk.bin written as MT Manager writes an MTw2's export
+# ('//' preamble, tab-separated PacketCounter, SampleTimeFine, extra NaN and
+# orientation columns) and as a comma-separated one with CRLF and the columns
+# in another order. SampleTimeFine counts 100 us ticks, so the walk's ns stamps
+# are rounded to the tick; the reference is the same walk as our CSV with those
+# rounded stamps (t = tick / 1e4 s, exact decimals). The ticks start 10 s before
+# SampleTimeFine's 2^32 wrap and the counter 536 packets before its 2^16 wrap:
+# both wrap inside the walk.
+"$H" convert vectors/walk.bin "$T/xw.csv" >/dev/null 2>&1
+awk -F, -v ref="$T/xref.csv" -v tab="$T/xmt.txt" -v com="$T/xmt_comma.txt" '
+BEGIN { base = 4294967296 - 100000; wrap = 4294967296
+    print "t,ax,ay,az,gx,gy,gz" > ref
+    printf "// General information:\n//  MT Manager version: 2022.2.0\n//  XDA version: 2022.2.0 build 7381\n" > tab
+    printf "// Device information:\n//  DeviceId: 00B42D4F\n//  ProductCode: MTW2-3A7G6\n// Device settings:\n" > tab
+    printf "//  Filter Profile: human(46.1)\n// Coordinate system: ENU\n" > tab
+    printf "PacketCounter\tSampleTimeFine\tYear\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\tRoll\tPitch\tYaw\n" > tab
+    printf "Gyr_Z,Gyr_Y,Gyr_X,Mag_X,Acc_Z,Acc_Y,Acc_X,SampleTimeFine,PacketCounter\r\n" > com }
+NR > 1 { split($1, p, "."); tick = base + p[1] * 10000 + substr(p[2], 1, 4) + (substr(p[2], 5, 1) >= 5)
+    ctr = (65000 + NR - 2) % 65536; raw = tick >= wrap ? tick - wrap : tick
+    printf "%.0f.%04.0f,%s,%s,%s,%s,%s,%s\n", int(tick / 10000), tick % 10000, $2, $3, $4, $5, $6, $7 > ref
+    printf "%.0f\t%.0f\tNaN\t%s\t%s\t%s\t%s\t%s\t%s\t-0.25\t0.21\t-137.2\n", ctr, raw, $2, $3, $4, $5, $6, $7 > tab
+    printf "%s,%s,%s,NaN,%s,%s,%s,%.0f,%.0f\r\n", $7, $6, $5, $4, $3, $2, raw, ctr > com }' "$T/xw.csv"
+expect_exit 0 "info on an MT Manager export" "$H" info "$T/xmt.txt"
+expect_out "format      mtmanager" "MT Manager export detected"
+expect_out "sensor      Xsens MTW2-3A7G6" "MT Manager export: the ProductCode is the sensor"
+expect_out "samples     16539" "MT Manager export: every sample of the walk"
+expect_out "drops       0" "MT Manager export: the counter's wrap is no drop"
+"$H" replay "$T/xref.csv" --quiet --out "$T/xref_out.csv" >/dev/null 2>&1
+for x in xmt xmt_comma; do
+    expect_exit 0 "replay the walk as an MT Manager export ($x)" "$H" replay "$T/$x.txt" --quiet --out "$T/${x}_out.csv"
+    if [ -s "$T/xref_out.csv" ] && cmp -s "$T/xref_out.csv" "$T/${x}_out.csv"; then
+        pass "MT Manager export ($x): the trajectory of the same walk's CSV, byte for byte"
+    else fail "MT Manager export ($x): trajectory differs: $(cmp "$T/xref_out.csv" "$T/${x}_out.csv" 2>&1)"; fi
+done
+# against the walk's own ns stamps: moved by up to 50 us (half a tick) they
+# move the path by 5.9 mm at most over its 25 m (this check prints it); 1 cm
+"$H" replay vectors/walk.bin --quiet --out "$T/xorig_out.csv" >/dev/null 2>&1
+if "${PY:-/usr/bin/python3}" -c 'import csv, math, sys
+a = list(csv.DictReader(open(sys.argv[1]))); b = list(csv.DictReader(open(sys.argv[2])))
+d = max(math.dist([float(r[k]) for k in "xyz"], [float(s[k]) for k in "xyz"]) for r, s in zip(a, b))
+print("%.1f mm" % (d * 1000))
+sys.exit(0 if len(a) == len(b) == 16539 and d < 0.01 else 1)' "$T/xorig_out.csv" "$T/xmt_out.csv" >"$T/xdist" 2>"$T/pyerr"; then
+    pass "MT Manager export: within 1 cm of the walk's own path at every sample (at most $(cat "$T/xdist"))"
+else fail "MT Manager export: more than 1 cm from the walk's own path ($(cat "$T/xdist"))"; fi
+# refused with the setting to change: an export of increments; a counter
+# without a stated rate names --input-rate
+printf '// General information:\n//  MT Manager version: 2022.2.0\nPacketCounter\tSampleTimeFine\tdq_W\tdq_X\tdq_Y\tdq_Z\tdv[1]\tdv[2]\tdv[3]\n1\t100\t1\t0\t0\t0\t0\t0\t0.098\n' >"$T/xdq.txt"
+expect_exit 1 "an MT Manager export of dq/dv" "$H" replay "$T/xdq.txt" --quiet --out "$T/xdq_out.csv"
+expect_err "xdq.txt:3: header has no column 'Acc_X': the export holds orientation and velocity increments" "dq/dv export: refused, the increments named"
+expect_err "export Acc_X..Z (acceleration, m/s^2) and Gyr_X..Z (rate of turn, rad/s) instead" "dq/dv export: what to export instead"
+cut -f 1,4- "$T/xmt.txt" >"$T/xctr.txt"
+expect_exit 1 "an MT Manager export with a counter and no rate" "$H" info "$T/xctr.txt"
+expect_err "the time is the PacketCounter at the rate, which no '// Update Rate' line states: give it with --input-rate HZ" "counter without a rate: --input-rate named"
+expect_exit 0 "... with --input-rate" "$H" info "$T/xctr.txt" --input-rate 400
+expect_out "rate        400.000 Hz (nominal)" "counter time at --input-rate"
+
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]

@@ -19,7 +19,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 DATA = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, '..', 'shared', 'data')
 FMT = {'auto': 0, 'bin': 1, 'csv': 2, 'gx2': 3, 'openshoe820': 4, 'ngimu': 5, 'pyshoe': 6,
-       'ipol': 7, 'adis': 8, 'square2': 9}
+       'ipol': 7, 'adis': 8, 'square2': 9, 'mtmanager': 10}
 
 def head(rel, lines):
     with open(os.path.join(DATA, rel), 'rb') as f:
@@ -58,6 +58,19 @@ def main():
         b'0.0\t5.0\t0.4\t8.9\t-0.002\t0.008\t-0.017\t-0.6\t0.0\t-0.4\n'
         b'1.0\t5.1\t0.4\t8.9\t-0.010\t0.008\t-0.015\t-0.6\t0.0\t-0.4\n'
         b'4.0\t5.0\t0.5\t8.8\t-0.011\t0.009\t-0.016\t-0.6\t0.0\t-0.4\n')
+    # Xsens MT Manager exports (synthetic): a preamble, both counters about
+    # to wrap, a NaN row; and a comma-separated one with NaN SampleTimeFine,
+    # whose counter then needs the stated rate
+    put('log_reader', 'mtmanager_synthetic', bytes([FMT['auto']]) +
+        b'// General information:\n//  MT Manager version: 2022.2.0\n// Device information:\n'
+        b'//  ProductCode: MTW2-3A7G6\n// Coordinate system: ENU\n'
+        b'PacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\tRoll\tPitch\tYaw\n'
+        b'65534\t4294967096\t0.07\t-0.01\t9.98\t0.002\t-0.0004\t0.006\t-0.25\t0.21\t-137.2\n'
+        b'65535\t4294967196\tNaN\tNaN\tNaN\tNaN\tNaN\tNaN\t-0.25\t0.21\t-137.2\n'
+        b'0\t0\t0.07\t-0.01\t9.98\t0.002\t-0.0004\t0.006\t-0.25\t0.21\t-137.2\n')
+    put('log_reader', 'mtmanager_forced', bytes([FMT['mtmanager'] | 0x80]) +
+        b'// Update Rate: 100.0Hz\r\nGyr_Z,Gyr_Y,Gyr_X,Acc_Z,Acc_Y,Acc_X,SampleTimeFine,PacketCounter\r\n'
+        b'0.3,0.2,0.1,9.7,-0.5,0.25,NaN,7\r\n0.3,0.2,0.1,9.7,-0.5,0.25,NaN,8\r\n')
     adis = (b'gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g\n'
             b'-0.05,-0.3,0.7,-0.006,0,-1.015\n0.35,-0.3,0.45,-0.01,0,-1.018\n')
     put('log_reader', 'adis_synthetic', bytes([FMT['auto']]) + adis)

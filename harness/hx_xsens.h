@@ -1,0 +1,102 @@
+/**
+ * @file hx_xsens.h
+ * @brief Xsens MT Manager's ASCII export (format `mtmanager`,
+ *        docs/log-format.md, "MT Manager export"): what the reader knows of
+ *        the format, apart from reading lines.
+ *
+ * The export of an MTi, MTw or MTw2 recording: `//` comment lines (MT
+ * Manager's and XDA's versions, the device, its settings, sometimes
+ * `// Update Rate: 100.0Hz`), then a header naming the columns the user
+ * chose to export (tab-separated, or ',' or ';'), then one row per packet,
+ * `NaN` where a packet lacks a value. hx_log.c reads the lines and splits
+ * them; these functions detect the format, take the rate from the comments,
+ * find the columns, choose the time source and turn each row's counters
+ * into a time and a sequence number. Linux harness only; no I/O here.
+ */
+#ifndef HX_XSENS_H
+#define HX_XSENS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/** SampleTimeFine ticks per second: 0.1 ms resolution (MTi User Manual,
+ *  MT0605P.E, 4.12.3). */
+#define HX_MTMGR_STF_HZ 10000
+/** SampleTimeFine is a uint32 and wraps at 2^32 ticks (119.3 h). */
+#define HX_MTMGR_STF_WRAP 4294967296.0
+/** ... or, as time of day (an MTi-G with a GNSS fix), at 864,000,000 ticks:
+ *  XDA's packet stamper unwraps the sample time at "1 day @ 10kHz". */
+#define HX_MTMGR_STF_DAY 864000000.0
+/** PacketCounter is a uint16 and wraps at 65536 (XDA's packet stamper:
+ *  a drop by more than half the range is a wrap). */
+#define HX_MTMGR_CTR_WRAP 65536.0
+
+/** Where a row's time comes from. */
+typedef enum {
+    HX_MTMGR_TIME_STF = 1,   /**< SampleTimeFine, unwrapped, x 100 us */
+    HX_MTMGR_TIME_COUNTER,   /**< PacketCounter, unwrapped, / rate */
+    HX_MTMGR_TIME_INDEX      /**< neither: the row's index / rate */
+} hx_mtmgr_time_t;
+
+/** The reader's state for one export. */
+typedef struct {
+    int col_ctr, col_stf;    /**< PacketCounter, SampleTimeFine columns; -1: none */
+    int col_acc[3], col_gyr[3];
+    int ncols_needed;        /**< columns a row must have (the last used one + 1) */
+    double stated_hz;        /**< "// Update Rate: 100.0Hz"; 0: not stated */
+    long stated_line;        /**< its line */
+    char product[24];        /**< "// ProductCode: MTW2-3A7G6"; "" when not given */
+    hx_mtmgr_time_t time_src;
+    int use_ctr;             /**< PacketCounter gives each sample's seq */
+    double rate_hz;          /**< rate of the counter or index time */
+    long rows;               /**< data rows seen, skipped ones included */
+    long skipped;            /**< rows skipped for a missing value */
+    long skipped_first;      /**< the line of the first of them */
+    int have_ctr, have_stf;
+    double ctr_prev, stf_prev;     /**< the last raw values */
+    double ctr_wrap, stf_wrap;     /**< counts added by the wraps so far */
+} hx_mtmgr_t;
+
+/** Whether the start of a file (text, NUL-terminated, a UTF-8 byte-order
+ *  mark removed) is an MT Manager export: `//` comment lines that name MT
+ *  Manager's keys (`MT Manager`, `XDA`, `Update Rate`, `Filter Profile`,
+ *  `DeviceId`, `ProductCode`), or a header (after such lines, or first)
+ *  with PacketCounter or SampleTimeFine and Acc_X and Gyr_X (or dq_/dv
+ *  increments). */
+int hx_mtmgr_detect(const char *text);
+
+/** Reset x before the first line. */
+void hx_mtmgr_init(hx_mtmgr_t *x);
+
+/** Whether line (leading blanks allowed) is a `//` comment line; the rate
+ *  of `Update Rate: N Hz` and the ProductCode are kept from it. */
+int hx_mtmgr_comment(hx_mtmgr_t *x, const char *line, long lineno);
+
+/** Find the columns among the n header fields f. 0, or -1 with the reason
+ *  in msg: an Acc_ or Gyr_ column missing (an export of increments dq_, dv_
+ *  or of FreeAcc_ alone is named as such, with the export setting that
+ *  gives Acc_ and Gyr_). */
+int hx_mtmgr_header(hx_mtmgr_t *x, char **f, int n, char *msg, size_t msg_size);
+
+/** Whether a field is a missing value: empty, or NaN in any case or sign. */
+int hx_mtmgr_missing(const char *field);
+
+/** Choose the time source from the first data row (f, n; f NULL: none):
+ *  SampleTimeFine when it holds a number there, else PacketCounter, else
+ *  the row index, the last two at input_hz (--input-rate; 0: none) or else
+ *  the stated rate. 0, or -1 with the reason in msg (a counter or index
+ *  time without a rate). */
+int hx_mtmgr_choose_time(hx_mtmgr_t *x, char **f, int n, double input_hz, char *msg, size_t msg_size);
+
+/** A data row (n fields f): 1 when a value the reader uses (Acc_, Gyr_,
+ *  the time source, the counter when it gives seq) is missing, and the row
+ *  is skipped and counted (line: its line); 0 to read it. Either way the
+ *  row takes its place in the index. */
+int hx_mtmgr_row(hx_mtmgr_t *x, char **f, int n, long line);
+
+/** The time and sequence number of a row hx_mtmgr_row let through.
+ *  *has_seq: 1 when seq is the sensor's counter. 0, or -1 with the reason in
+ *  msg (a counter that is not a whole number in its range). */
+int hx_mtmgr_time(hx_mtmgr_t *x, char **f, int64_t *t_ns, uint32_t *seq, int *has_seq, char *msg, size_t msg_size);
+
+#endif /* HX_XSENS_H */
