@@ -335,6 +335,81 @@ expect_exit 1 "a GX2 file whose first data line is not one" "$H" replay "$T/gx2.
 expect_err "gx2.txt:2: not a GX2 data line" "--from gx2: the line that is not GX2 data named"
 rm -f "$T/plain.csv" "$T/gx2.txt" "$T/from.csv"
 
+# --- the importers' counters (no test fed a bad one before 2026-11-30; docs/log-format.md): square2's sample
+# column and ipol's PacketCounter (time = counter / rate), GX2's Counter and Nr. A bad counter ends the read at
+# its line, exit 1, naming the line (and, but for GX2, the value), the samples before it kept; ipol's 16-bit
+# counter wraps (65535, 0: one interval on), a drop by less than half its range is time going backwards.
+sq_log() { # FILE SAMPLE...: a square2 log, one row per sample value
+    f=$1; shift
+    { echo "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps"
+      for s in "$@"; do echo "$s,0.01,0.02,-9.81,0.001,0.002,0.003"; done; } >"$f"
+}
+ip_log() { # FILE COUNTER...: an ipol trial's log at 100 Hz, one row per counter value
+    f=$1; shift
+    { printf 'Acquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n'
+      for s in "$@"; do printf '%s\t0.01\t0.02\t9.81\t0.001\t0.002\t0.003\n' "$s"; done; } >"$f"
+}
+ctr_bad() { # description expected-message command...: exit 1, the message, 2 samples kept
+    d=$1; m=$2; shift 2
+    expect_exit 1 "$d" "$@"
+    expect_err "$m (using the 2 samples before it)" "$d: the line and the reason named"
+    expect_out "^samples     2$" "$d: the samples before it kept"
+}
+sq_log "$T/sq.csv" 0 1 -1 3
+ctr_bad "square2, a negative sample number" "sq.csv:4: counter ('-1') is not a non-negative number" \
+    "$H" info "$T/sq.csv" --from square2
+sq_log "$T/sq.csv" 0 1 2.5 3
+ctr_bad "square2, a fractional sample number" "sq.csv:4: counter ('2.5') is not a whole number in range" \
+    "$H" info "$T/sq.csv" --from square2
+sq_log "$T/sq.csv" 0 1 abc 3
+ctr_bad "square2, a sample number that is text" "sq.csv:4: counter ('abc') is not a non-negative number" \
+    "$H" info "$T/sq.csv" --from square2
+sq_log "$T/sq.csv" 0 1 4000000001 3
+ctr_bad "square2, a sample number beyond 4e9" "sq.csv:4: counter ('4000000001') is not .*" "$H" info "$T/sq.csv" --from square2
+sq_log "$T/sq.csv" 0 1 0 3
+ctr_bad "square2, a sample number that goes back" "sq.csv:4: time goes backwards (0.000000000 s after 0.010000000 s)" \
+    "$H" info "$T/sq.csv" --from square2
+ip_log "$T/ip.txt" 1 2 1.5 3
+ctr_bad "ipol, a fractional packet counter" "ip.txt:5: counter ('1.5') is not a whole number in range" \
+    "$H" info "$T/ip.txt" --from ipol
+ip_log "$T/ip.txt" 1 2 -3 3
+ctr_bad "ipol, a negative packet counter" "ip.txt:5: counter ('-3') is not a non-negative number" "$H" info "$T/ip.txt" --from ipol
+ip_log "$T/ip.txt" 100 101 50 51
+ctr_bad "ipol, a counter that drops by less than half its range" "ip.txt:5: time goes backwards (0.500000000 s after 1.010000000 s)" \
+    "$H" info "$T/ip.txt" --from ipol
+ip_log "$T/ip.txt" 65533 65534 65535 0 1 2
+expect_exit 0 "ipol, the 16-bit counter wrapping" "$H" info "$T/ip.txt" --from ipol
+expect_out "^duration    0.050 s$" "ipol wrap: 65535 to 0 is one interval"
+expect_out "^drops       0 " "ipol wrap: no sample counted lost"
+ip_log "$T/ip.txt" 65533 65534 65535 2 3
+expect_exit 0 "ipol, the counter wrapping over lost packets" "$H" info "$T/ip.txt" --from ipol
+expect_out "^duration    0.060 s$" "ipol wrap with 2 lost: 65535 to 2 is three intervals"
+expect_out "^drops       2 " "ipol wrap with 2 lost: both counted"
+# GX2 (docs/log-format.md, openshoe_gx2): Counter (a clock count) and Nr (a sample number) must be 32-bit counts
+GXH='Header:      a_x [g]:      a_y [g]:      a_z [g]: ar_x [rad/s]: ar_y [rad/s]: ar_z [rad/s]:      Counter: Checksum:     Nr:   Filtered ts[s]: Unfiltered ts[s]:      Pred. ts[s]: Freq. [Hz]:      m_x [G]:      m_y [G]:      m_z [G]:'
+gx_log() { # FILE COUNTER:NR:TS...: a GX2 log, one row per triple
+    f=$1; shift
+    { printf 'Inertial data.\n\n%s\n' "$GXH"
+      for s in "$@"; do
+          printf '   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %s    0x15fd       %s %s %s %s  250.000001   -0.12299968   -0.01066045   -0.46057537 \n' \
+              "${s%%:*}" "$(echo "$s" | cut -d: -f2)" "${s##*:}" "${s##*:}" "${s##*:}"
+      done; } >"$f"
+}
+gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 130674288:3:1000.008
+expect_exit 0 "GX2, three good rows" "$H" info "$T/gx.txt" --from gx2
+expect_out "^samples     3$" "GX2: three samples read"
+gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 abc:3:1000.008
+ctr_bad "GX2, a Counter that is text" "gx.txt:6: counter, Nr or time stamp is not a number" "$H" info "$T/gx.txt" --from gx2
+gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 130674288:3:xyz
+ctr_bad "GX2, a time stamp that is text" "gx.txt:6: counter, Nr or time stamp is not a number" "$H" info "$T/gx.txt" --from gx2
+gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 130674288:-3:1000.008
+ctr_bad "GX2, a negative Nr" "gx.txt:6: Nr or counter is not a 32-bit count" "$H" info "$T/gx.txt" --from gx2
+gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 130674288:3.5:1000.008
+ctr_bad "GX2, a fractional Nr" "gx.txt:6: Nr or counter is not a 32-bit count" "$H" info "$T/gx.txt" --from gx2
+gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 5e9:3:1000.008
+ctr_bad "GX2, a Counter beyond 32 bits" "gx.txt:6: Nr or counter is not a 32-bit count" "$H" info "$T/gx.txt" --from gx2
+rm -f "$T/sq.csv" "$T/ip.txt" "$T/gx.txt"
+
 # --- the plotting backend fails or is missing (no test ran a failing gnuplot with allan, psd, montecarlo, simgap
 # or eval, nor checked the other outputs of replay's, before 2026-11-30). A gnuplot that fails partway is an
 # output error, exit 3, naming the picture, whose partial file is removed, and every other output is still
