@@ -76,7 +76,8 @@ if grep -q "^| xio short_walk.csv (~400 Hz) | 3-D closure (m) | - | - | - |$" "$
 # motion-capture position lies beyond 1e6 m; ipol events files without TrialBoundaries, without the left foot's
 # events, of more than 16 MB, and with 257 events. Each is read before its walk is replayed (the logs here are
 # placeholders): every one keeps its row with the reason, and counts as a failed run. An events file of exactly
-# 16 MiB is read whole: its row names its (empty) log, not the events file.
+# 16 MiB is read whole: its row names its (empty) log, not the events file. And a footprint walk and a vicon
+# trial whose truth strides all lie past the log's end.
 B="$T/tbad"
 FPD="$B/pyshoe_vicon_llio/own_3dmgx5_footprints"; VD="$B/pyshoe_vicon_llio/vicon_3dmgx3"; ID="$B/ipol_gait_xsens"
 mkdir -p "$FPD" "$VD" "$ID"
@@ -88,6 +89,12 @@ awk 'BEGIN { print "strideIndex,time,x,y"; for (i = 0; i < 1025; i++) printf "%d
 printf 'strideIndex,time,x,y\n10,0.05,0,0\n20,0.1,1,0\n' >"$VD/far_strides_gcp.csv"
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz,x,y"; for (i = 0; i < 100; i++) printf "%.3f,0,0,9.81,0,0,0,2e6,-3e6\n", i / 200 }' \
     >"$VD/far_imu.csv"
+# a walk and a trial whose truth strides all lie past the log's end (a truth of another walk): replayed, then
+# "fewer than 2 truth strides ... inside the replayed samples" (the vicon log with the position columns 8 and 9)
+"$H" sim --motion stand:5,walk:10,stand:3 --rate 100 --out "$FPD/out_imu.csv" >/dev/null 2>&1 || fail "sim of a walk for eval"
+awk -F, 'NR == 1 { print "t,ax,ay,az,gx,gy,gz,px,py"; next } { print $0 ",0.5,0.25" }' "$FPD/out_imu.csv" >"$VD/out_imu.csv"
+printf 'strideIndex,time,x,y\n100000,500,0,0\n100100,500.5,1,0\n' >"$FPD/out_strides_gcp.csv"
+cp "$FPD/out_strides_gcp.csv" "$VD/out_strides_gcp.csv"
 for t in 1-1 1-2 1-3 1-4 1-5; do : >"$ID/${t}_lf.txt"; : >"$ID/${t}_rf.txt"; done
 printf '{"LeftFootEvents": [[10, 20]], "RightFootEvents": [[30, 40]]}\n' >"$ID/1-1.json"
 printf '{"TrialBoundaries": [0, 100], "RightFootEvents": [[30, 40]]}\n' >"$ID/1-2.json"
@@ -108,6 +115,10 @@ tb_row "no readable stride row (junk, 1e7 m, five fields)" \
     "^| junk | - |.*| not run: truth file has 0 readable stride rows (strideIndex, _, x, y), 2 needed |$"
 tb_row "1,025 strides" "^| many | - |.*| not run: truth file has more than 1024 strides |$"
 tb_row "every motion-capture position beyond 1e6 m" "^| far | - |.*| not run: no motion-capture position columns |$"
+tb_row "footprint truth past the log's end" \
+    "^| out | - | - | - | - | - | - | not run: fewer than 2 truth strides with a position fall inside the replayed samples |$"
+tb_row "vicon truth past the log's end" \
+    "^| out | - | - | - | - | not run: fewer than 2 truth strides with a position fall inside the replayed samples |$"
 for f in left right; do
     tb_row "events without TrialBoundaries ($f)" "^| 1-1 | $f | - |.*| not run: the events file has no TrialBoundaries pair |$"
     tb_row "events without LeftFootEvents ($f)" "^| 1-2 | $f | - |.*| not run: the events file has no LeftFootEvents |$"
@@ -116,7 +127,7 @@ for f in left right; do
     tb_row "257 events ($f)" "^| 1-5 | $f | - |.*| not run: LeftFootEvents holds 257 events, more than 256 |$"
     tb_row "an events file of 16 MiB is read whole ($f): its empty log named" "^| 1-4 | $f | - |.*| not run: empty file |$"
 done
-json "$T/tbad.json" 'j["failed_runs"] == 14' && pass "each refused truth is a failed run (14)" ||
+json "$T/tbad.json" 'j["failed_runs"] == 16' && pass "each refused truth is a failed run (16)" ||
     fail "refused truths: failed_runs $(grep -o '"failed_runs":[^,]*' "$T/tbad.json")"
 expect_err "one_imu.csv: truth file has 1 readable stride rows" "the refusal is warned about, naming the walk"
 rm -rf "$B"
