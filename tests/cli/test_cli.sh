@@ -335,6 +335,24 @@ expect_exit 1 "a GX2 file whose first data line is not one" "$H" replay "$T/gx2.
 expect_err "gx2.txt:2: not a GX2 data line" "--from gx2: the line that is not GX2 data named"
 rm -f "$T/plain.csv" "$T/gx2.txt" "$T/from.csv"
 
+# ... and the header checks of the other importers (never run by a test before 2026-11-30: make
+# coverage-harness), a file of blank lines, and an ipol file with its rate line and no header: exit 1, each named
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n' >"$T/plain.csv"
+for fc in "pyshoe:t_s:t" "adis:acc_x_g:ax" "square2:sample:t" "ngimu:Time (s):t"; do
+    f=${fc%%:*}; c=$(echo "$fc" | cut -d: -f2); k=${fc##*:}
+    expect_exit 1 "a footnav CSV given as --from $f" "$H" info "$T/plain.csv" --from "$f"
+    expect_err "plain.csv:1: header has no column '$c' (the $k column of the $f format)" "--from $f: the column it expected"
+done
+printf '\n\n\n' >"$T/blank.txt"
+expect_exit 1 "a file of blank lines as --from ipol" "$H" info "$T/blank.txt" --from ipol
+expect_err "blank.txt: empty file$" "--from ipol: blank lines are an empty file"
+expect_exit 1 "a file of blank lines as CSV" "$H" info "$T/blank.txt" --from csv
+expect_err "blank.txt: empty file (no header line)" "--from csv: blank lines, no header line"
+printf 'Acquisition frequency: 100 Hz\n\n' >"$T/blank.txt"
+expect_exit 1 "an ipol file with its rate line alone" "$H" info "$T/blank.txt" --from ipol
+expect_err "blank.txt: empty file (no header line)" "--from ipol: the header line missing after the rate"
+rm -f "$T/plain.csv" "$T/blank.txt"
+
 # --- the importers' counters (no test fed a bad one before 2026-11-30; docs/log-format.md): square2's sample
 # column and ipol's PacketCounter (time = counter / rate), GX2's Counter and Nr. A bad counter ends the read at
 # its line, exit 1, naming the line (and, but for GX2, the value), the samples before it kept; ipol's 16-bit
