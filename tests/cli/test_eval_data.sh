@@ -87,6 +87,8 @@ printf 'strideIndex,time,x,y\n10,0.05,0.0,0.0x\n20,0.1,1e7,0.0\n30,0.15,1.0,0.0,
 awk 'BEGIN { print "strideIndex,time,x,y"; for (i = 0; i < 1025; i++) printf "%d,%.3f,%.2f,0\n", i, i / 200, 0.7 * i }' \
     >"$FPD/many_strides_gcp.csv"
 printf 'strideIndex,time,x,y\n10,0.05,0,0\n20,0.1,1,0\n' >"$VD/far_strides_gcp.csv"
+ln -s "$T/still.csv" "$VD/one_imu.csv"
+cp "$FPD/one_strides_gcp.csv" "$VD/one_strides_gcp.csv"
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz,x,y"; for (i = 0; i < 100; i++) printf "%.3f,0,0,9.81,0,0,0,2e6,-3e6\n", i / 200 }' \
     >"$VD/far_imu.csv"
 # a walk and a trial whose truth strides all lie past the log's end (a truth of another walk): replayed, then
@@ -114,6 +116,8 @@ tb_row "one readable stride row" "^| one | - |.*| not run: truth file has 1 read
 tb_row "no readable stride row (junk, 1e7 m, five fields)" \
     "^| junk | - |.*| not run: truth file has 0 readable stride rows (strideIndex, _, x, y), 2 needed |$"
 tb_row "1,025 strides" "^| many | - |.*| not run: truth file has more than 1024 strides |$"
+tb_row "vicon: one readable stride row" \
+    "^| one | - | - | - | - | not run: truth file has 1 readable stride rows (strideIndex, _, x, y), 2 needed |$"
 tb_row "every motion-capture position beyond 1e6 m" "^| far | - |.*| not run: no motion-capture position columns |$"
 tb_row "footprint truth past the log's end" \
     "^| out | - | - | - | - | - | - | not run: fewer than 2 truth strides with a position fall inside the replayed samples |$"
@@ -127,9 +131,14 @@ for f in left right; do
     tb_row "257 events ($f)" "^| 1-5 | $f | - |.*| not run: LeftFootEvents holds 257 events, more than 256 |$"
     tb_row "an events file of 16 MiB is read whole ($f): its empty log named" "^| 1-4 | $f | - |.*| not run: empty file |$"
 done
-json "$T/tbad.json" 'j["failed_runs"] == 16' && pass "each refused truth is a failed run (16)" ||
+json "$T/tbad.json" 'j["failed_runs"] == 17' && pass "each refused truth is a failed run (17)" ||
     fail "refused truths: failed_runs $(grep -o '"failed_runs":[^,]*' "$T/tbad.json")"
-expect_err "one_imu.csv: truth file has 1 readable stride rows" "the refusal is warned about, naming the walk"
+# the warning names the truth file it is about (it named the walk's IMU log until the review of 2026-11-30); a
+# missing one, the IMU log ("W_imu.csv: no truth file W_strides_gcp.csv")
+expect_err "own_3dmgx5_footprints/one_strides_gcp.csv: truth file has 1 readable stride rows" "the refusal names the truth file"
+expect_err "own_3dmgx5_footprints/many_strides_gcp.csv: truth file has more than 1024 strides" "the refusal names the truth file (1,025)"
+expect_err "vicon_3dmgx3/one_strides_gcp.csv: truth file has 1 readable stride rows" "vicon: the refusal names the truth file"
+expect_err "vicon_3dmgx3/far_imu.csv: no motion-capture position columns" "no position: the IMU log that holds them named"
 rm -rf "$B"
 
 # a data directory with its MANIFEST.md and set folders but not one walk
