@@ -486,6 +486,18 @@ expect_err "^harness replay: error: cannot draw $T/gr.png: gnuplot is not instal
     fail "replay without gnuplot: outputs written"
 expect_exit 3 "allan --plot without gnuplot" env PATH="$T/nogp" "$H" allan "$T/gst.csv" --no-sim --quiet --plot "$T/ga2.png"
 expect_err "^harness allan: error: cannot draw $T/ga2.png: gnuplot is not installed" "allan without gnuplot: said"
+for c in "psd:psd.png" "montecarlo:gm4.png" "simgap:z.png"; do
+    cmd=${c%%:*}
+    case $cmd in
+    psd) set -- psd "$T/gst.csv" --plot "$T/gnp" --json "$T/gnp.json" ;;
+    montecarlo) set -- montecarlo --seeds 3 --duration 20 --plot "$T/gnp/gm4.png" --json "$T/gnp.json" ;;
+    simgap) set -- simgap "$T/gst.csv" --quiet --seeds 4 --max-effects 0 --plot "$T/gnp" --json "$T/gnp.json" ;;
+    esac
+    mkdir -p "$T/gnp"; rm -f "$T/gnp.json"
+    expect_exit 3 "$cmd --plot without gnuplot" env PATH="$T/nogp" "$H" "$@"
+    expect_err "^harness $cmd: error: cannot draw $T/gnp/${c#*:}: gnuplot is not installed" "$cmd without gnuplot: said"
+    [ ! -e "$T/gnp.json" ] && pass "$cmd without gnuplot: refused before the run, no --json" || fail "$cmd without gnuplot: --json written"
+done
 expect_exit 0 "eval without gnuplot" env PATH="$T/nogp" "$H" eval --no-experiments --data "$T/gev" --out "$T/gev/n.md"
 expect_err "warning: no figures: gnuplot is not installed (apt-get install gnuplot-nox)" "eval without gnuplot: said"
 grep -q "^| short_walk.csv | [0-9]" "$T/gev/n.md" && ! grep -q "\.png" "$T/gev/n.md" &&
