@@ -2474,17 +2474,22 @@ int hx_cmd_allan(int argc, char **argv)
     }
     if (R->moving) {
         hx_csv_layout_t lay, lay_t;
-        char give[64];
+        const hx_csv_layout_t *csv = hx_units_layout(R->in_fmt, &lay);
+        char give[64], cause[128] = "";
+        /* a gyro read as deg/s by --units gyro=deg/s was converted already:
+         * deg/s is no cause, and "multiply by pi/180" would convert it twice
+         * (named so until the review of 2026-11-30) */
+        if (csv == NULL || csv->gyr_scale == 1.0) {
+            snprintf(cause, sizeof cause, " (a gyro in deg/s at rest also reads so: %s)",
+                     hx_units_fix_dps(hx_time_unit_layout(R->time_unit_warned ? R->rate_hz : 0.0, csv, &lay_t),
+                                      give, sizeof give));
+        }
         hx_error(CMD,
                  "%s: the log moves: in %ld of its %ld one-second windows the rate spreads by more than %g rad/s "
                  "RMS or |f| by more than %g m/s^2 (the first at %.0f s): not a static log (a walk?); the Allan "
-                 "variance and its bias model describe a sensor at rest (a gyro in deg/s at rest also reads so: "
-                 "%s) (docs/allan.md, \"Command\")",
+                 "variance and its bias model describe a sensor at rest%s (docs/allan.md, \"Command\")",
                  path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2,
-                 R->win_first_moving_s,
-                 hx_units_fix_dps(hx_time_unit_layout(R->time_unit_warned ? R->rate_hz : 0.0,
-                                                      hx_units_layout(R->in_fmt, &lay), &lay_t),
-                                  give, sizeof give));
+                 R->win_first_moving_s, cause);
         exit_code = HX_EXIT_DATA;
     } else if (R->win_moving > 0) {
         motion_report(R, path, hx_arg(&a, "--profile") != NULL);

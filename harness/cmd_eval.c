@@ -811,7 +811,9 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
             snprintf(msg, sizeof msg, "no IMU log %.160s_imu.csv", names[i]);
         }
         if (!is_file(path) || read_gcp(gpath, &g, msg, sizeof msg) != 0) {
-            fail(ev, path, note, sizeof note, msg);
+            /* a truth file that is there but refused is named, not the
+             * walk's IMU log (the review of 2026-11-30) */
+            fail(ev, is_file(path) && is_file(gpath) ? gpath : path, note, sizeof note, msg);
             not_run_row(ev, write, nm, 6, note);
             continue;
         }
@@ -960,18 +962,22 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         snprintf(path, sizeof path, "%s/%s_imu.csv", dir, names[i]);
         snprintf(gpath, sizeof gpath, "%s/%s_strides_gcp.csv", dir, names[i]);
         snprintf(nm, sizeof nm, "%s", names[i]);
+        const char *bad = path; /* the file the failure is about */
         if (!is_file(path)) {
             snprintf(msg, sizeof msg, "no IMU log %.160s_imu.csv", names[i]);
             rc = -1;
         } else {
             rc = read_gcp(gpath, &g, msg, sizeof msg);
+            if (rc != 0 && is_file(gpath)) {
+                bad = gpath; /* a truth file there but refused (the review of 2026-11-30) */
+            }
         }
         if (rc == 0 && read_vicon(path, &vx, &vy, &nv) != 0) {
             snprintf(msg, sizeof msg, "no motion-capture position columns");
             rc = -1;
         }
         if (rc != 0) {
-            fail(ev, path, note, sizeof note, msg);
+            fail(ev, bad, note, sizeof note, msg);
             not_run_row(ev, write, nm, 4, note);
             continue;
         }

@@ -746,6 +746,17 @@ expect_err "walk.profile: the log is not static (above); profile not written" "n
 [ -s "$T/walk_t.csv" ] && [ ! -e "$T/walk.profile" ] && pass "walk: table written, no profile" || fail "walk: outputs"
 expect_exit 1 "a walk without --profile" "$H" allan vectors/walk.bin --no-sim --quiet
 expect_err "a gyro in deg/s at rest also reads so: multiply by pi/180)" "a .bin: the arithmetic remedy for deg/s"
+# a walk in deg/s read with --units gyro=deg/s: its gyro was converted already, so deg/s is no cause and
+# "multiply by pi/180" would convert it twice (the error named it until the review of 2026-11-30)
+"$H" sim --cadence 60 --duration 30 --out "$T/simw.csv" >/dev/null 2>&1 || fail "sim of a walk for the deg/s case"
+awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.9g,%.9g,%.9g\n", $1, $2, $3, $4, $5 * 57.29577951308232,
+    $6 * 57.29577951308232, $7 * 57.29577951308232 }' "$T/simw.csv" >"$T/simw_deg.csv"
+expect_exit 1 "a walk in deg/s read with --units gyro=deg/s" "$H" allan "$T/simw_deg.csv" --no-sim --quiet --units gyro=deg/s
+expect_err "simw_deg.csv: the log moves: in [0-9]* of its 30 one-second windows" "gyro=deg/s given: the motion named"
+if grep -q "deg/s at rest\|pi/180" "$T/err"; then fail "gyro=deg/s given: deg/s still named as a cause"; else
+    pass "gyro=deg/s given: deg/s not named as a cause, no second conversion"; fi
+expect_exit 1 "the same walk in deg/s without --units" "$H" allan "$T/simw_deg.csv" --no-sim --quiet
+expect_err "a gyro in deg/s at rest also reads so: give --units gyro=deg/s)" "without --units: deg/s named with the item"
 G2=$(data openshoe_gx2/Measurement_100521_2_data_inert.txt)
 if [ -n "$G2" ]; then
     expect_exit 1 "a GX2 walk (m/s^2 after import)" "$H" allan "$G2" --no-sim --quiet

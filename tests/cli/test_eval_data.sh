@@ -70,6 +70,77 @@ expect_exit 1 "eval with experiments: one failed xio walk" "$H" eval --data "$T/
 if grep -q "^| xio short_walk.csv (~400 Hz) | 3-D closure (m) | - | - | - |$" "$T/expx.md" && ! grep -qi "nan" "$T/expx.md"; then
     pass "a failed walk's experiment rows read '-', no nan"; else fail "failed walk in the experiments: $(grep -i 'nan' "$T/expx.md")"; fi
 
+# --- truth files eval refuses (docs/robustness.md, "Bad-input catalogue: eval's truth files"), none of which a
+# test fed before 2026-11-30: a footprint truth with one readable stride row, one whose rows are all unreadable
+# (junk after a y, a position beyond 1e6 m, a fifth field), one with 1,025 strides; a vicon trial whose every
+# motion-capture position lies beyond 1e6 m; ipol events files without TrialBoundaries, without the left foot's
+# events, of more than 16 MB, and with 257 events. Each is read before its walk is replayed (the logs here are
+# placeholders): every one keeps its row with the reason, and counts as a failed run. An events file of exactly
+# 16 MiB is read whole: its row names its (empty) log, not the events file. And a footprint walk and a vicon
+# trial whose truth strides all lie past the log's end.
+B="$T/tbad"
+FPD="$B/pyshoe_vicon_llio/own_3dmgx5_footprints"; VD="$B/pyshoe_vicon_llio/vicon_3dmgx3"; ID="$B/ipol_gait_xsens"
+mkdir -p "$FPD" "$VD" "$ID"
+for w in one junk many; do ln -s "$T/still.csv" "$FPD/${w}_imu.csv"; done
+printf 'strideIndex,time,x,y\n10,0.05,0.0,0.0\n' >"$FPD/one_strides_gcp.csv"
+printf 'strideIndex,time,x,y\n10,0.05,0.0,0.0x\n20,0.1,1e7,0.0\n30,0.15,1.0,0.0,9\n' >"$FPD/junk_strides_gcp.csv"
+awk 'BEGIN { print "strideIndex,time,x,y"; for (i = 0; i < 1025; i++) printf "%d,%.3f,%.2f,0\n", i, i / 200, 0.7 * i }' \
+    >"$FPD/many_strides_gcp.csv"
+printf 'strideIndex,time,x,y\n10,0.05,0,0\n20,0.1,1,0\n' >"$VD/far_strides_gcp.csv"
+ln -s "$T/still.csv" "$VD/one_imu.csv"
+cp "$FPD/one_strides_gcp.csv" "$VD/one_strides_gcp.csv"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz,x,y"; for (i = 0; i < 100; i++) printf "%.3f,0,0,9.81,0,0,0,2e6,-3e6\n", i / 200 }' \
+    >"$VD/far_imu.csv"
+# a walk and a trial whose truth strides all lie past the log's end (a truth of another walk): replayed, then
+# "fewer than 2 truth strides ... inside the replayed samples" (the vicon log with the position columns 8 and 9)
+"$H" sim --motion stand:5,walk:10,stand:3 --rate 100 --out "$FPD/out_imu.csv" >/dev/null 2>&1 || fail "sim of a walk for eval"
+awk -F, 'NR == 1 { print "t,ax,ay,az,gx,gy,gz,px,py"; next } { print $0 ",0.5,0.25" }' "$FPD/out_imu.csv" >"$VD/out_imu.csv"
+printf 'strideIndex,time,x,y\n100000,500,0,0\n100100,500.5,1,0\n' >"$FPD/out_strides_gcp.csv"
+cp "$FPD/out_strides_gcp.csv" "$VD/out_strides_gcp.csv"
+for t in 1-1 1-2 1-3 1-4 1-5; do : >"$ID/${t}_lf.txt"; : >"$ID/${t}_rf.txt"; done
+printf '{"LeftFootEvents": [[10, 20]], "RightFootEvents": [[30, 40]]}\n' >"$ID/1-1.json"
+printf '{"TrialBoundaries": [0, 100], "RightFootEvents": [[30, 40]]}\n' >"$ID/1-2.json"
+head -c $((16 * 1048576 + 1)) /dev/zero | tr '\000' ' ' >"$ID/1-3.json"
+pre='{"TrialBoundaries": [0, 100], "LeftFootEvents": [[10, 20]], "RightFootEvents": [[30, 40]], "Pad": "'
+{ printf '%s' "$pre"; head -c $((16 * 1048576 - ${#pre} - 2)) /dev/zero | tr '\000' x; printf '"}'; } >"$ID/1-4.json"
+awk 'BEGIN { printf "{\"TrialBoundaries\": [0, 9000], \"LeftFootEvents\": ["; for (i = 0; i < 257; i++)
+    printf "%s[%d, %d]", i ? ", " : "", 30 * i + 10, 30 * i + 20; print "], \"RightFootEvents\": []}" }' >"$ID/1-5.json"
+expect_exit 1 "eval: truth files it refuses" "$H" eval --no-experiments --no-plots --data "$B" --out "$T/tbad.md" \
+    --json "$T/tbad.json"
+if [ "$(wc -c <"$ID/1-4.json")" -eq 16777216 ] && [ "$(wc -c <"$ID/1-3.json")" -eq 16777217 ]; then
+    pass "the events files are 16 MiB and one byte more"; else fail "events file sizes: $(wc -c "$ID/1-3.json" "$ID/1-4.json")"; fi
+tb_row() { # description pattern: a row of tbad.md
+    if grep -q "$2" "$T/tbad.md"; then pass "$1"; else fail "$1: no row /$2/"; grep "not run" "$T/tbad.md"; fi
+}
+tb_row "one readable stride row" "^| one | - |.*| not run: truth file has 1 readable stride rows (strideIndex, _, x, y), 2 needed |$"
+tb_row "no readable stride row (junk, 1e7 m, five fields)" \
+    "^| junk | - |.*| not run: truth file has 0 readable stride rows (strideIndex, _, x, y), 2 needed |$"
+tb_row "1,025 strides" "^| many | - |.*| not run: truth file has more than 1024 strides |$"
+tb_row "vicon: one readable stride row" \
+    "^| one | - | - | - | - | not run: truth file has 1 readable stride rows (strideIndex, _, x, y), 2 needed |$"
+tb_row "every motion-capture position beyond 1e6 m" "^| far | - |.*| not run: no motion-capture position columns |$"
+tb_row "footprint truth past the log's end" \
+    "^| out | - | - | - | - | - | - | not run: fewer than 2 truth strides with a position fall inside the replayed samples |$"
+tb_row "vicon truth past the log's end" \
+    "^| out | - | - | - | - | not run: fewer than 2 truth strides with a position fall inside the replayed samples |$"
+for f in left right; do
+    tb_row "events without TrialBoundaries ($f)" "^| 1-1 | $f | - |.*| not run: the events file has no TrialBoundaries pair |$"
+    tb_row "events without LeftFootEvents ($f)" "^| 1-2 | $f | - |.*| not run: the events file has no LeftFootEvents |$"
+    tb_row "an events file over 16 MB ($f)" \
+        "^| 1-3 | $f | - |.*| not run: cannot read the events file (larger than 16 MB or unreadable) |$"
+    tb_row "257 events ($f)" "^| 1-5 | $f | - |.*| not run: LeftFootEvents holds 257 events, more than 256 |$"
+    tb_row "an events file of 16 MiB is read whole ($f): its empty log named" "^| 1-4 | $f | - |.*| not run: empty file |$"
+done
+json "$T/tbad.json" 'j["failed_runs"] == 17' && pass "each refused truth is a failed run (17)" ||
+    fail "refused truths: failed_runs $(grep -o '"failed_runs":[^,]*' "$T/tbad.json")"
+# the warning names the truth file it is about (it named the walk's IMU log until the review of 2026-11-30); a
+# missing one, the IMU log ("W_imu.csv: no truth file W_strides_gcp.csv")
+expect_err "own_3dmgx5_footprints/one_strides_gcp.csv: truth file has 1 readable stride rows" "the refusal names the truth file"
+expect_err "own_3dmgx5_footprints/many_strides_gcp.csv: truth file has more than 1024 strides" "the refusal names the truth file (1,025)"
+expect_err "vicon_3dmgx3/one_strides_gcp.csv: truth file has 1 readable stride rows" "vicon: the refusal names the truth file"
+expect_err "vicon_3dmgx3/far_imu.csv: no motion-capture position columns" "no position: the IMU log that holds them named"
+rm -rf "$B"
+
 # a data directory with its MANIFEST.md and set folders but not one walk
 # (a copy not synced): nothing to run on, exit 4, the results file left as
 # it was (it was overwritten with "no data" everywhere, exit 0)
@@ -210,13 +281,18 @@ if [ -n "$D" ]; then
     awk -F, -v r=$((row - 1)) 'BEGIN { OFS = "," } NR == r { $8 = $8 sprintf("%600s", "") } { gsub(/ /, "]"); print }' \
         "${VI}_imu.csv" > "$VJ/long_imu.csv"
     ln -s "${VI}_imu.csv" "$VJ/plain_imu.csv"
-    for w in yjunk long plain; do ln -s "${VI}_strides_gcp.csv" "$VJ/${w}_strides_gcp.csv"; done
+    # and an x beyond 1e6 m (FNAV_INPUT_MAX_ABS) at the 5th stride: no position there (no test fed one before
+    # 2026-11-30; docs/robustness.md, "Bad-input catalogue: eval's truth files")
+    awk -F, -v r=$row 'BEGIN { OFS = "," } NR == r { $8 = "2e6" } { print }' "${VI}_imu.csv" > "$VJ/far_imu.csv"
+    for w in yjunk long plain far; do ln -s "${VI}_strides_gcp.csv" "$VJ/${w}_strides_gcp.csv"; done
     expect_exit 0 "eval: vicon positions with junk, a long line" "$H" eval --no-experiments --no-plots --data "$T/vjunk" --out "$T/vjunk.md"
     plain=$(grep '^| plain | ' "$T/vjunk.md" | cut -d'|' -f3-)
     if grep -q "^| yjunk | [0-9]* | [0-9.]* | [0-9.]* | [0-9.]* | 1 stride without a truth position not scored |" "$T/vjunk.md" &&
         [ -n "$plain" ] && [ "$(grep '^| long | ' "$T/vjunk.md" | cut -d'|' -f3-)" = "$plain" ]; then
         pass "vicon positions: junk after a y is no position, a long line one row"
     else fail "vicon junk: $(grep '^| \(yjunk\|long\) ' "$T/vjunk.md")"; fi
+    if grep -q "^| far | [0-9]* | [0-9.]* | [0-9.]* | [0-9.]* | 1 stride without a truth position not scored |" "$T/vjunk.md"; then
+        pass "vicon positions: an x beyond 1e6 m is no position"; else fail "vicon far: $(grep '^| far ' "$T/vjunk.md")"; fi
     # a vicon trial that starts walking (its first 0.25 s cut off: 0.1 s of
     # stillness before the first stride, too little to align on): the filter
     # aligns in a later stance, the strides before are not navigated and were
