@@ -618,7 +618,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     fnav_sample_t s;
     fnav_status_t st;
     hx_progress_t pr;
-    int64_t t_prev = 0;
+    int64_t t_prev = 0, t_first = 0; /* the last and the first sample's stamps */
     int64_t res_ns = 0; /* the stamps' resolution so far: the gcd of the intervals that advance */
     long irregular = 0;
     double stamp_rate; /* the rate the stamps are checked against: the log's own, not an overriding --rate */
@@ -667,6 +667,9 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
              * as well: every interval of such a uniform log was counted (as
              * psd's, 2026-11-29; the gcd so far is never below the final one) */
             irregular += hx_interval_irregular(s.t_ns - t_prev, stamp_rate, res_ns);
+        }
+        if (R->n == 0) {
+            t_first = s.t_ns;
         }
         t_prev = s.t_ns;
         motion_push(R, &s);
@@ -737,15 +740,18 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
          * both, one --units value (a second --units replaces the first) */
         hx_csv_layout_t lay, lay_t, lay_w;
         const hx_csv_layout_t *csv = hx_units_layout(R->in_fmt, &lay);
+        /* the rate the time unit is judged at: the log's span too (stamps
+         * in bursts are no unit) */
+        const double rate_u = hx_time_unit_rate(R->rate_hz, (size_t)R->n, t_first, t_prev);
         double f_rest;
         R->moving = R->win_n > 0 && (double)R->win_moving > HX_ALLAN_MOVING_FRAC * (double)R->win_n;
         f_rest = R->moving ? 0.0 : sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
         R->units_bad = hx_units_problem(f_rest, 9.80665, R->gyro_max, 0.0,
-                                        rate_opt > 0.0 ? csv : hx_time_unit_layout(R->rate_hz, csv, &lay_t), 0,
+                                        rate_opt > 0.0 ? csv : hx_time_unit_layout(rate_u, csv, &lay_t), 0,
                                         R->units_msg, sizeof R->units_msg);
         if (!(rate_opt > 0.0)) {
             R->time_unit_warned =
-                slow_check(path, R->rate_hz, hx_units_want(csv, f_rest, 9.80665, R->gyro_max, &lay_w));
+                slow_check(path, rate_u, hx_units_want(csv, f_rest, 9.80665, R->gyro_max, &lay_w));
         }
     }
     return rc;

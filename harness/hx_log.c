@@ -1821,7 +1821,7 @@ int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix)
             if (true_digits > 9) {
                 continue;
             }
-            if (r_u >= 20.0 && r_u <= HX_TIME_RATE_MAX_HZ) {
+            if (r_u >= HX_TIME_RATE_MIN_HZ && r_u <= HX_TIME_RATE_MAX_HZ) {
                 fix->name = k_name[(9 - true_digits) / 3];
                 fix->opt = k_opt[(9 - true_digits) / 3];
                 fix->digits = true_digits;
@@ -1835,7 +1835,7 @@ int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix)
     }
     for (u = 0; u < sizeof k_units / sizeof k_units[0]; u++) {
         const double r_u = rate_hz * k_units[u].scale;
-        if (r_u >= 20.0 && r_u <= HX_TIME_RATE_MAX_HZ) {
+        if (r_u >= HX_TIME_RATE_MIN_HZ && r_u <= HX_TIME_RATE_MAX_HZ) {
             /* us read as ms look like us; nothing is finer than ns */
             const int true_digits = digits - 3 * (int)(u + 1u);
             if (true_digits < 0) {
@@ -1882,6 +1882,29 @@ int hx_time_unit_hint(double rate_hz, const hx_csv_layout_t *csv, char *msg, siz
              "%s)",
              1.0 / rate_hz, rate_hz, fix.read, fix.name, fix.rate_hz, fix_text);
     return 1;
+}
+
+double hx_time_unit_rate(double rate_hz, size_t n, int64_t t_first_ns, int64_t t_last_ns)
+{
+    /* one test for every command (replay's alone until 2026-11-30, when
+     * info, allan, psd and simgap still told stamps in bursts time=ms) */
+    const int fast = rate_hz > HX_TIME_RATE_MAX_HZ, slow = rate_hz > 0.0 && rate_hz < HX_TIME_RATE_MIN_HZ;
+    double span_hz;
+    if (!fast && !slow) {
+        return rate_hz; /* a foot-mounted IMU's rate: no unit to question, whatever the span */
+    }
+    if (n < 2u || t_last_ns <= t_first_ns) {
+        return rate_hz; /* no span: the intervals alone */
+    }
+    span_hz = 1e9 * (double)(n - 1u) / (double)(t_last_ns - t_first_ns);
+    /* a wrong unit makes the span as fast (or as slow) as the intervals;
+     * stamps in bursts leave it at the sampling rate */
+    return (fast && span_hz > HX_TIME_RATE_MAX_HZ) || (slow && span_hz < HX_TIME_RATE_MIN_HZ) ? rate_hz : 0.0;
+}
+
+double hx_log_time_unit_rate(const hx_log_t *log, double rate_hz)
+{
+    return log->n > 0u ? hx_time_unit_rate(rate_hz, log->n, log->t_ns[0], log->t_ns[log->n - 1u]) : rate_hz;
 }
 
 const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t *csv, hx_csv_layout_t *buf)

@@ -1183,8 +1183,8 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
 /* 2 when the replayed log is not in SI units (err says why, without the
  * log's name: the JSON's units_problem), else 0. csv: as hx_units_problem's. */
 static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean, int walks,
-                       double in_rate_hz, double span_rate_hz, const hx_csv_layout_t *csv, char *err,
-                       size_t err_size)
+                       double in_rate_hz, size_t n_in, int64_t t_first_ns, int64_t t_last_ns,
+                       const hx_csv_layout_t *csv, char *err, size_t err_size)
 {
     char msg[768], acc[320] = "", rep[320] = "";
     const double g = (double)nav->cfg.gravity_mps2;
@@ -1202,15 +1202,6 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
         return 2;
     }
     rate = in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz;
-    if (rate > HX_TIME_RATE_MAX_HZ && !(span_rate_hz > HX_TIME_RATE_MAX_HZ)) {
-        /* intervals too short, but not the log's span for its samples:
-         * stamps taken in bursts (a logger stamping a batch of samples as
-         * it reads them, microseconds apart), which no unit explains; the
-         * too-fast error needs both (replay exited 1 on such a log, naming
-         * a coarser unit that made it 1000 times too slow: the
-         * false-positive review, 2026-11-30) */
-        rate = 0.0;
-    }
     if (hx_nav_coarse_stamps(&nav->stats) && rate > 0.0 && rate < HX_RATE_MIN_HZ) {
         /* a low rate from stamps that repeat is no unit (float32 seconds
          * at 1e6 s step by 62.5 ms: "16 Hz", whose remedy read "divide by
@@ -1221,6 +1212,15 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
                  100.0 * (double)nav->stats.duplicates / (double)nav->stats.samples, 1.0 / rate, rate);
         rate = 0.0;
     }
+    /* intervals too short (or too long), but not the log's span for its
+     * samples: stamps taken in bursts (a logger stamping a batch of samples
+     * as it reads them, microseconds apart), which no unit explains; the
+     * time error needs both (replay exited 1 on such a log, naming a
+     * coarser unit that made it 1000 times too slow: the false-positive
+     * review, 2026-11-30). The test of info, allan, psd and simgap too
+     * (hx_time_unit_rate); after the repeated stamps' test, whose slow rate
+     * the span does not explain either */
+    rate = hx_time_unit_rate(rate, n_in, t_first_ns, t_last_ns);
     if (acc_in_g) {
         /* no rest found (a gyro in deg/s hides every still period): the
          * mean |f| of the whole log stands in, but only to reveal a log in
@@ -1290,6 +1290,8 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     hx_log_t raw, res;
     fnav_status_t st;
     hx_format_t in_fmt; /* the format read: the units check's remedy */
+    size_t span_n = 0;  /* the input's samples and their first and last stamps (the units check's span; */
+    int64_t span_t0 = 0, span_t1 = 0; /* with --rate the input's, not the resampled grid's) */
     int rc = 0;
     memset(&pc, 0, sizeof pc);
     memset(&raw, 0, sizeof raw);
@@ -1313,6 +1315,11 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         if (lrc > 0) {
             snprintf(err, err_size, "%s", raw.error);
             rc = 1;
+        }
+        if (raw.n > 0u) {
+            span_n = raw.n;
+            span_t0 = raw.t_ns[0];
+            span_t1 = raw.t_ns[raw.n - 1u];
         }
         if (hx_nav_resample(&raw, rate_hz, (double)cfg->max_gap_s, &res, &dups, &fs, err, err_size) != 0) {
             hx_log_free(&raw);
@@ -1527,12 +1534,15 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         char msg[sizeof traj->units_problem];
         hx_csv_layout_t lay;
         int u;
+        if (r != NULL && pc.have_t_last) {
+            span_n = (size_t)pc.n_read;
+            span_t0 = pc.t_first_ns;
+            span_t1 = pc.t_last_ns;
+        }
         u = units_check(&nav, pc.gyro_max_rps, pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0,
                         hx_walk_seen(&pc.walk),
                         traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0,
-                        pc.n_read > 1 && pc.t_last_ns > pc.t_first_ns
-                            ? 1e9 * (double)(pc.n_read - 1) / (double)(pc.t_last_ns - pc.t_first_ns)
-                            : 0.0,
+                        span_n, span_t0, span_t1,
                         (flags & HX_REPLAY_UNITS_OPT) ? hx_units_layout(in_fmt, &lay) : NULL, msg, sizeof msg);
         if (traj != NULL) {
             /* the JSON's units_problem ("" when none) */

@@ -2128,6 +2128,41 @@ static void test_format_names(void **state)
  * app's export: ns stamps, g, deg/s) read without an awk conversion
  * (docs/log-format.md, "Another layout"). Until 2026-11-30 such a file had to
  * be rewritten first. */
+/* The rate the time-unit checks judge (hx_time_unit_rate): the span of the
+ * samples has the last word on a rate out of 20 Hz - 100 kHz. Until
+ * 2026-11-30 info, allan, psd and simgap judged the median interval alone
+ * and told stamps in bursts time=ms (tests/cli/test_foundation.sh). */
+static void test_time_unit_rate(void **state)
+{
+    (void)state;
+    /* 4 samples 5 us apart every 10 ms: 200 kHz from the median interval,
+     * 16539 samples over 41.34 s (400 Hz): no unit to question */
+    assert_true(hx_time_unit_rate(2e5, 16539u, 10000000, 41350015000) == 0.0);
+    /* one stamp per 100 samples, 2 s apart: 0.5 Hz from the distinct
+     * stamps, 50 Hz over the log */
+    assert_true(hx_time_unit_rate(0.5, 16539u, 0, 330000000000) == 0.0);
+    /* a wrong unit moves the span alike: ms read as ns (100 MHz, 300
+     * samples 10 ns apart), ms read as s (0.1 Hz, 300 samples 10 s apart) */
+    assert_true(hx_time_unit_rate(1e8, 300u, 0, 2990) == 1e8);
+    assert_true(hx_time_unit_rate(0.1, 300u, 0, 2990000000000) == 0.1);
+    /* the span on the other side of the band still disagrees: no unit */
+    assert_true(hx_time_unit_rate(2e5, 5u, 0, 4000000000) == 0.0);
+    /* a rate in the band stays, whatever the span (a log with a day's
+     * pause is no unit mistake); 0 (no rate) stays 0 */
+    assert_true(hx_time_unit_rate(400.0, 1000u, 0, 86400000000000) == 400.0);
+    assert_true(hx_time_unit_rate(400.0, 1000u, 0, 2497500) == 400.0);
+    assert_true(hx_time_unit_rate(0.0, 1000u, 0, 2497500000) == 0.0);
+    /* no span (one sample, the last stamp not after the first): the
+     * intervals alone */
+    assert_true(hx_time_unit_rate(2e5, 1u, 5, 5) == 2e5);
+    assert_true(hx_time_unit_rate(2e5, 100u, 7000, 7000) == 2e5);
+    assert_true(hx_time_unit_rate(0.1, 100u, 9000, 1000) == 0.1);
+    /* the band's edges are in it: 20 Hz and 100 kHz over the span */
+    assert_true(hx_time_unit_rate(0.5, 21u, 0, 1000000000) == 0.0);
+    assert_true(hx_time_unit_rate(2e5, 100001u, 0, 1000000000) == 0.0);
+    assert_true(hx_time_unit_rate(2e5, 100002u, 0, 1000000000) == 2e5);
+}
+
 static void test_csv_layout(void **state)
 {
     char p[512], err[320];
@@ -2406,6 +2441,7 @@ int main(void)
         cmocka_unit_test(test_bin_rate_unknown),
         cmocka_unit_test(test_format_names),
         cmocka_unit_test(test_load_progress),
+        cmocka_unit_test(test_time_unit_rate),
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);

@@ -831,6 +831,14 @@ expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds?
 expect_exit 0 "a static log in milliseconds read as ns" "$H" allan "$T/touch_ms.csv" --no-sim --quiet --units time=ns
 expect_err "are the time stamps in nanoseconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "stamps too fast: ms read as ns told time=ms"
+# the same static log stamped in bursts (packets of 4 samples stamped 5 us apart, every 40 ms: 100 Hz over the log),
+# in us read as such: allan warned "are the time stamps in microseconds? (they look like milliseconds, a 200 Hz log:
+# give --units time=ms)", 1000 times too slow (the units review, 2026-11-30); replay's test of the span now
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 40000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
+    "$T/touch0.csv" > "$T/touch_burst.csv"
+expect_exit 0 "a static log stamped in bursts, read as us" "$H" allan "$T/touch_burst.csv" --no-sim --quiet --units time=us
+if grep -q "are the time stamps in\|look like" "$T/err"; then fail "allan: stamps in bursts told a time unit: $(cat "$T/err")"; else
+    pass "allan: stamps in bursts (100 Hz over the log) told no time unit"; fi
 # ... and with --profile the warning was followed by "no identification for ax (too little data?)", sending the user
 # to the record's length; the error now names the time unit as the likely cause (a user review, 2026-11-29)
 expect_exit 1 "a static log with its time in milliseconds, a profile" "$H" allan "$T/touch_ms.csv" --no-sim --quiet \

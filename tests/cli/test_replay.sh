@@ -803,6 +803,12 @@ if grep -q "in seconds?\|in milliseconds" "$T/err"; then fail "5 Hz read as ns: 
 expect_exit 1 "time in milliseconds read as ns" "$H" replay "$T/in_ms.csv" --quiet --units time=ns
 expect_err "are the time stamps in nanoseconds? (they look like milliseconds: give --units time=ms)" \
     "ms read as ns: the stamps too fast named, time=ms the remedy"
+# ... also with --rate: the span was the resampled grid's (100 Hz), so the too-fast error, which needs the span too,
+# was never given and replay said only that no still period was found (the units review, 2026-11-30); the span is
+# the input's now
+expect_exit 1 "time in milliseconds read as ns, --rate 100" "$H" replay "$T/in_ms.csv" --quiet --units time=ns --rate 100
+expect_err "are the time stamps in nanoseconds? (they look like milliseconds: give --units time=ms)" \
+    "ms read as ns, --rate 100: the stamps too fast named, time=ms the remedy"
 # stamps taken on arrival (a logger that receives 4 samples at once and stamps each as it reads it, 5 us
 # apart, every 16 ms): the median interval is 5 us (200 kHz), but the log spans 12 s for its 2998 samples,
 # 250 Hz: no unit makes that too fast. Replay exited 1 ("are the time stamps in microseconds? (they look like
