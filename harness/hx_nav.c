@@ -466,6 +466,42 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
     fs = 1e9 / (double)dt[(n - 1) / 2];
     free(dt);
     *in_rate = fs;
+    gap_ns = (int64_t)ceil(1e9 * (max_gap_s > 1.5 / fs ? max_gap_s : 1.5 / fs));
+    {
+        /* The filter takes the input as uniform at its median rate, which
+         * needs the median interval to be the sampling period: the samples
+         * between the time jumps as many as it gives over their span, give
+         * or take lost (fewer) and repeated (more) ones. Stamps in bursts
+         * break it: packets of samples stamped microseconds apart (5 us
+         * every 10 ms: 200 kHz, where 400 Hz fill the span; 0.2 % of the
+         * samples), or one stamp shared by a packet (4 samples to a stamp
+         * every 10 ms: 100 Hz, 4 times the samples). Until 2026-11-30 both
+         * were resampled with exit 0: the kernel, 40 times the rate ratio
+         * of "200 kHz" samples long, smeared seconds of the walk into each
+         * output (0 strides), and the shared stamps kept one sample of
+         * four (the units review). */
+        double expect = 0.0, span_s = 0.0;
+        size_t segs = 0;
+        for (a = 0; a < n; a = b) {
+            for (b = a + 1; b < n && in->t_ns[keep[b]] - in->t_ns[keep[b - 1]] <= gap_ns; b++) {
+            }
+            span_s += 1e-9 * (double)(in->t_ns[keep[b - 1]] - in->t_ns[keep[a]]);
+            segs++;
+        }
+        expect = span_s * fs + (double)segs;
+        if ((double)in->n < 0.5 * expect || (double)in->n > 1.5 * expect) {
+            const double per_s = span_s > 0.0 ? (double)(in->n - segs) / span_s : 0.0;
+            free(keep);
+            snprintf(err, err_size,
+                     "--rate: the time stamps come in bursts (%s): 1 / their median interval gives %.6g Hz, but the %zu "
+                     "samples span %.4g s%s, %.4g Hz; resampling needs each sample's own time: leave the time column "
+                     "out and give --input-rate %.4g (docs/harness.md, \"--rate HZ (resampling)\")",
+                     (double)in->n < expect ? "samples stamped close together as a logger reads them?"
+                                            : "samples that share one stamp?",
+                     fs, in->n, span_s, segs > 1u ? " between the time jumps" : "", per_s, per_s);
+            return -1;
+        }
+    }
     if (!(rate_hz < fs * 0.999)) {
         /* a rate within 0.1 % of the input's leaves nothing to decimate
          * (the vicon trials' 200.080 Hz median refused --rate 200 as "not
@@ -504,7 +540,6 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
     fc = 0.45 * rate_hz / fs; /* cycles per input sample */
     half = (int)ceil(20.0 * fs / rate_hz);
     period_ns = 1e9 / rate_hz;
-    gap_ns = (int64_t)ceil(1e9 * (max_gap_s > 1.5 / fs ? max_gap_s : 1.5 / fs));
     nout = 0;
     for (pass = 0; pass < 2; pass++) {
         k = 0;

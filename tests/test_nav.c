@@ -1780,6 +1780,61 @@ static void test_resampler_time_jump(void **state)
     hx_log_free(&in);
 }
 
+/* Stamps in bursts: the filter takes the input as uniform at its median
+ * rate, which is no sampling period here. 400 Hz in packets of 4 samples
+ * stamped 5 us apart every 10 ms (200 kHz from the median interval), or
+ * sharing one stamp (100 Hz from the distinct stamps): refused, naming the
+ * rate over the span for --input-rate. Until 2026-11-30 both were
+ * resampled (exit 0): the first smeared seconds into each output, the
+ * second kept one sample of four. A log that loses a third of its samples
+ * in small gaps, or repeats a quarter of its stamps, is still resampled. */
+static void test_resampler_bursts(void **state)
+{
+    hx_log_t in, out;
+    size_t n = 4000, i;
+    long dups = 0;
+    double fs = 0.0;
+    char err[512];
+    int kind;
+    (void)state;
+    log_alloc(&in, n);
+    in.n = n;
+    for (kind = 0; kind < 4; kind++) {
+        for (i = 0; i < n; i++) {
+            switch (kind) {
+            case 0: /* 4 samples 5 us apart every 10 ms */
+                in.t_ns[i] = (int64_t)(i / 4u) * 10000000 + (int64_t)(i % 4u) * 5000;
+                break;
+            case 1: /* 4 samples to a stamp every 10 ms */
+                in.t_ns[i] = (int64_t)(i / 4u) * 10000000;
+                break;
+            case 2: /* 400 Hz, one sample of three lost (gaps closed up) */
+                in.t_ns[i] = (int64_t)(i + i / 2u) * 2500000;
+                break;
+            default: /* 400 Hz, one stamp of four repeated */
+                in.t_ns[i] = (int64_t)(i - i / 4u) * 2500000;
+                break;
+            }
+            in.acc[i][2] = -9.8;
+        }
+        err[0] = '\0';
+        if (kind < 2) {
+            assert_int_equal(hx_nav_resample(&in, 100.0, 0.5, &out, &dups, &fs, err, sizeof err), -1);
+            assert_non_null(strstr(err, "--rate: the time stamps come in bursts"));
+            assert_non_null(strstr(err, kind == 0 ? "gives 200000 Hz" : "gives 100 Hz"));
+            assert_non_null(strstr(err, kind == 0 ? "stamped close together" : "share one stamp"));
+            /* 3999 intervals over 9.99 s (kind 0: 9.990015 s) */
+            assert_non_null(strstr(err, "4000 samples span 9.99 s, 400.3 Hz"));
+            assert_non_null(strstr(err, "give --input-rate 400.3"));
+        } else {
+            assert_int_equal(hx_nav_resample(&in, 100.0, 0.5, &out, &dups, &fs, err, sizeof err), 0);
+            FNAV_ASSERT_CLOSE(fs, 400.0, 0.0, 1e-9);
+            hx_log_free(&out);
+        }
+    }
+    hx_log_free(&in);
+}
+
 /* A rate that is no integer fraction of the input's (250 -> 100 Hz, like
  * openshoe_gx2 in the rate experiment): the output instants fall between
  * input samples. A 30 Hz tone, inside the pass band, keeps its amplitude
@@ -2404,6 +2459,7 @@ int main(void)
         cmocka_unit_test(test_resampler),
         cmocka_unit_test(test_resampler_fractional),
         cmocka_unit_test(test_resampler_time_jump),
+        cmocka_unit_test(test_resampler_bursts),
         cmocka_unit_test(test_sat_two_runs),
         cmocka_unit_test(test_note_thresholds),
         cmocka_unit_test(test_health_keys),

@@ -819,6 +819,33 @@ awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", 
 expect_exit 0 "stamps in bursts, read as us" "$H" replay "$T/in_burst_us.csv" --quiet --units time=us
 if grep -q "are the time stamps in" "$T/err"; then fail "stamps in bursts (250 Hz over the log) told they are too fast"; else
     pass "stamps in bursts (250 Hz over the log): no time unit questioned"; fi
+# ... and resampled with --rate: the resampler takes the input as uniform at 1 / its median interval (5 us, 200 kHz),
+# so its low-pass, 40 times the rate ratio of samples long, smeared seconds of the walk into each output: exit 0 and
+# 0 strides (the walk of vectors/walk.bin stamped so, 4 samples every 10 ms, 400 Hz over the log); one stamp shared by
+# the 4 samples (100 Hz from the distinct stamps) kept one sample of four. Both are now refused, naming the rate
+# over the span for --input-rate (the units review, 2026-11-30); the remedy followed gives the trajectory of the
+# same walk stamped evenly at 400 Hz, to the byte
+expect_exit 0 "convert the walk to CSV (bursts, --rate)" "$H" convert vectors/walk.bin "$T/bw.csv"
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/bw_burst.csv"
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000, $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/bw_shared.csv"
+awk -F, 'NR == 1 { print; next } { printf "%.4f,%s,%s,%s,%s,%s,%s\n", (NR - 2) / 400, $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/bw_even.csv"
+expect_exit 1 "stamps in bursts, --rate 100" "$H" replay "$T/bw_burst.csv" --quiet --units time=us --rate 100 --out "$T/bw_b.csv"
+expect_err "replay: error: --rate: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; resampling needs each sample's own time: leave the time column out and give --input-rate 400 (docs/harness.md, \"--rate HZ (resampling)\")" \
+    "stamps in bursts, --rate: refused, the cause and --input-rate named"
+expect_exit 1 "samples sharing a stamp, --rate 50" "$H" replay "$T/bw_shared.csv" --quiet --units time=us --rate 50
+expect_err "the time stamps come in bursts (samples that share one stamp?): 1 / their median interval gives 100 Hz, but the 16539 samples span 41.34 s, 400 Hz" \
+    "samples sharing a stamp, --rate: refused (one sample of four was kept)"
+expect_exit 1 "convert --rate on stamps in bursts" "$H" convert "$T/bw_burst.csv" "$T/bw_c.csv" --units time=us --rate 100
+expect_err "leave the time column out and give --input-rate 400 (docs/harness.md" "convert --rate: the same refusal, in full"
+cut -d, -f2- "$T/bw_burst.csv" > "$T/bw_not.csv"
+expect_exit 0 "the remedy: no time column, --input-rate 400 --rate 100" "$H" replay "$T/bw_not.csv" --quiet --input-rate 400 \
+    --rate 100 --out "$T/bw_not_traj.csv"
+expect_exit 0 "the walk stamped evenly at 400 Hz, --rate 100" "$H" replay "$T/bw_even.csv" --quiet --rate 100 --out "$T/bw_even_traj.csv"
+cmp -s "$T/bw_not_traj.csv" "$T/bw_even_traj.csv" && pass "the remedy gives the evenly stamped walk's trajectory" ||
+    fail "the remedy's trajectory differs from the evenly stamped walk's"
 # a t column that counts samples (0, 1, 2, ...), as a logger's sample number often does: it was told only to
 # divide by 1000 (right for a 1 kHz log in ms, wrong for a 250 Hz one); the remedy for a counter, leaving the
 # column out and giving --input-rate, is named too (the gait review, 2026-11-30)
