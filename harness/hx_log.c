@@ -1918,6 +1918,11 @@ const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t
     return buf;
 }
 
+const char *hx_accel_unit_name(double acc_scale)
+{
+    return acc_scale == HX_G_MPS2 ? "g" : acc_scale == HX_MG_MPS2 ? "mg" : "m/s2";
+}
+
 const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size)
 {
     /* one --units value: a second --units replaces the first (a
@@ -1932,11 +1937,11 @@ const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size)
         len = strlen(buf);
     }
     if (want->acc_scale != 1.0 && len < size) {
-        snprintf(buf + len, size - len, "accel=g,");
+        snprintf(buf + len, size - len, "accel=%s,", hx_accel_unit_name(want->acc_scale));
         len = strlen(buf);
     }
     if (want->gyr_scale != 1.0 && len < size) {
-        snprintf(buf + len, size - len, "gyro=deg/s,");
+        snprintf(buf + len, size - len, "gyro=%s,", want->gyr_scale == HX_MDPS_RPS ? "mdps" : "deg/s");
         len = strlen(buf);
     }
     if (len > 0u && buf[len - 1u] == ',') {
@@ -2639,18 +2644,24 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             if (strcmp(val, "m/s2") == 0 || strcmp(val, "m/s^2") == 0 || strcmp(val, "mps2") == 0) {
                 l->acc_scale = 1.0;
             } else if (strcmp(val, "g") == 0) {
-                l->acc_scale = 9.80665;
+                l->acc_scale = HX_G_MPS2;
+            } else if (strcmp(val, "mg") == 0) {
+                l->acc_scale = HX_MG_MPS2; /* ST's SensorTile data log, AccX [mg] (the units review) */
             } else {
-                snprintf(err, err_size, "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, mps2) or g", val);
+                snprintf(err, err_size, "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, mps2), g or mg",
+                         val);
                 return -1;
             }
         } else {
             if (strcmp(val, "rad/s") == 0) {
                 l->gyr_scale = 1.0;
             } else if (strcmp(val, "deg/s") == 0 || strcmp(val, "dps") == 0) {
-                l->gyr_scale = 3.14159265358979323846 / 180.0;
+                l->gyr_scale = HX_DPS_RPS;
+            } else if (strcmp(val, "mdps") == 0 || strcmp(val, "mdeg/s") == 0) {
+                l->gyr_scale = HX_MDPS_RPS; /* ST's SensorTile data log, GyroX [mdps] (the units review) */
             } else {
-                snprintf(err, err_size, "--units: gyro=%s: the rate unit is rad/s or deg/s (dps)", val);
+                snprintf(err, err_size, "--units: gyro=%s: the rate unit is rad/s, deg/s (dps) or mdps (mdeg/s)",
+                         val);
                 return -1;
             }
         }

@@ -77,10 +77,19 @@ const char *hx_format_list(void);
 typedef struct {
     char names[8][64];  /**< the file's column for t, ax, ay, az, gx, gy, gz, temp; "" keeps the default name */
     int time_digits;    /**< ns per unit of the time column as a power of ten: 9 s, 6 ms, 3 us, 0 ns */
-    double acc_scale;   /**< m/s^2 per unit of the accelerations (1, or 9.80665 for g) */
-    double gyr_scale;   /**< rad/s per unit of the rates (1, or pi/180 for deg/s) */
+    double acc_scale;   /**< m/s^2 per unit of the accelerations (1, HX_G_MPS2 for g, HX_MG_MPS2 for mg) */
+    double gyr_scale;   /**< rad/s per unit of the rates (1, HX_DPS_RPS for deg/s, HX_MDPS_RPS for mdps) */
     const char *option; /**< "--columns", "--units" or "--columns and --units": the options that gave it; NULL: defaults */
 } hx_csv_layout_t;
+
+/** The scales of --units (hx_csv_layout_t.acc_scale, gyr_scale): m/s^2 per
+ *  g and per mg, rad/s per deg/s and per mdps. */
+#define HX_G_MPS2 9.80665
+#define HX_MG_MPS2 0.00980665
+#define HX_DPS_RPS (3.14159265358979323846 / 180.0)
+#define HX_MDPS_RPS (3.14159265358979323846 / 180.0 / 1000.0)
+/** The --units name of an acceleration scale: "g", "mg", else "m/s2". */
+const char *hx_accel_unit_name(double acc_scale);
 
 /** The interchange names and units (t,ax,...,temp in s, m/s^2, rad/s). */
 void hx_csv_layout_default(hx_csv_layout_t *l);
@@ -90,8 +99,8 @@ void hx_csv_layout_default(hx_csv_layout_t *l);
  *  keys, counting the default names of the keys not given). */
 int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t err_size);
 /** Parse a --units SPEC ("time=ns,accel=g,gyro=deg/s"; time s|ms|us|ns,
- *  accel m/s2|m/s^2|mps2|g, gyro rad/s|deg/s|dps) into l. 0 ok; -1 with a
- *  message in err. */
+ *  accel m/s2|m/s^2|mps2|g|mg, gyro rad/s|deg/s|dps|mdps|mdeg/s) into l.
+ *  0 ok; -1 with a message in err. */
 int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t err_size);
 /** The layout every reader opened afterwards in this process reads the
  *  interchange CSV with (NULL: the defaults); set once from a command's

@@ -2208,6 +2208,10 @@ static void test_csv_layout(void **state)
             { "time=ms", "1.0000005", 1000001LL, 1.0, 1.0 },
             { "time=us,accel=mps2", "1500.2504", 1500250LL, 1.0, 1.0 },
             { "time=ns", "42", 42LL, 1.0, 1.0 },
+            /* mg and mdps (ST's SensorTile data log writes AccX [mg] and
+             * GyroX [mdps]; the units review, 2026-11-30) */
+            { "accel=mg,gyro=mdps", "1", 1000000000LL, 0.00980665, 3.14159265358979323846 / 180.0 / 1000.0 },
+            { "gyro=mdeg/s", "1", 1000000000LL, 1.0, 3.14159265358979323846 / 180.0 / 1000.0 },
             { "time=ns", "1.5e3", 1500LL, 1.0, 1.0 },
             /* more integer digits than 9e9 s holds, scaled down by an
              * exponent: a number, not "beyond 9e9 s" (it was, 2026-11-30) */
@@ -2229,6 +2233,38 @@ static void test_csv_layout(void **state)
             assert_true((float)ra.s[0].accel_mps2[2] == (float)(9.5 * k[i].acc));
             assert_true((float)ra.s[0].gyro_rps[0] == (float)(2.0 * k[i].gyr));
         }
+    }
+    /* 1000 mg is g and 90000 mdps 90 deg/s, to the float32 the core takes:
+     * the same sample as 1 g and 90 deg/s read with accel=g,gyro=deg/s */
+    {
+        float a_g, w_dps;
+        tmp_path(p, sizeof p, ".csv");
+        write_text(p, "t,ax,ay,az,gx,gy,gz\n0,0,0,1,90,0,0\n");
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, "accel=g,gyro=deg/s", err, sizeof err), 0);
+        hx_reader_set_layout(&l);
+        assert_int_equal(read_all(p, HX_FMT_CSV, 0.0, &ra, NULL), 0);
+        a_g = (float)ra.s[0].accel_mps2[2];
+        w_dps = (float)ra.s[0].gyro_rps[0];
+        assert_true(a_g == 9.80665f);
+        write_text(p, "t,ax,ay,az,gx,gy,gz\n0,0,0,1000,90000,0,0\n");
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, "accel=mg,gyro=mdps", err, sizeof err), 0);
+        hx_reader_set_layout(&l);
+        assert_int_equal(read_all(p, HX_FMT_CSV, 0.0, &ra, NULL), 0);
+        assert_true((float)ra.s[0].accel_mps2[2] == a_g);
+        assert_true((float)ra.s[0].gyro_rps[0] == w_dps);
+        assert_true((float)ra.s[0].gyro_rps[0] == (float)(3.14159265358979323846 / 2.0));
+    }
+    /* the remedy's --units value names every item in its unit, the
+     * synopsis's order (hx_units_give): mg and mdps as well as g and deg/s */
+    {
+        char give[96];
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, "gyro=mdps,accel=mg,time=us", err, sizeof err), 0);
+        assert_string_equal(hx_units_give(&l, give, sizeof give), "give --units time=us,accel=mg,gyro=mdps");
+        assert_int_equal(hx_csv_units_parse(&l, "accel=g,gyro=deg/s,time=s", err, sizeof err), 0);
+        assert_string_equal(hx_units_give(&l, give, sizeof give), "give --units accel=g,gyro=deg/s");
     }
     /* a mapped column the header lacks: the error names it and --columns */
     tmp_path(p, sizeof p, ".csv");
@@ -2301,6 +2337,7 @@ static void test_csv_layout(void **state)
             { 0, "t", "'='" },                { 0, "t=", "empty" },
             { 1, "time", "'='" },             { 1, "time=min", "s, ms, us or ns" },
             { 1, "accel=G2", "m/s2" },        { 1, "gyro=rpm", "rad/s" },
+            { 1, "accel=ug", "mg" },          { 1, "gyro=udps", "mdps" },
             { 1, "speed=1", "unknown" },      { 1, "time=ms,time=ns", "twice" },
         };
         size_t i;
