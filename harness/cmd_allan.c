@@ -150,6 +150,8 @@ typedef struct {
      * the rate and of |f| within each) */
     double win_sum[4], win_sq[4]; /* gx, gy, gz, |f| */
     uint32_t win_fill, win_len;
+    long win_off;            /* the open window's samples whose |f| is 2 m/s^2 or more off gravity (hx_walk_off) */
+    hx_walk_t walk;          /* the windows that spread as a walk's (hx_walk_window): the units check's walks */
     long win_n, win_moving;
     double win_first_moving_s;
     double *win_spread;      /* every window's rate and |f| spread (RMS), in pairs: the disturbance check */
@@ -493,9 +495,16 @@ static void motion_push(run_t *R, const fnav_sample_t *s)
         R->win_sum[i] += v[i];
         R->win_sq[i] += v[i] * v[i];
     }
+    R->win_off += hx_walk_off(v[3]);
     if (++R->win_fill == R->win_len) {
         const double n = (double)R->win_fill;
         double var[4];
+        /* the same window tells a walk (replay's and info's test of the
+         * stamps' seconds; the units review, 2026-11-30: allan judged no
+         * walk, and a walk in rad/s read with --units gyro=deg/s was told
+         * "multiply by pi/180") */
+        hx_walk_window(&R->walk, (long)R->win_fill, R->win_sum[3], R->win_sq[3], R->win_off);
+        R->win_off = 0;
         for (i = 0; i < 4; i++) {
             const double m = R->win_sum[i] / n;
             var[i] = R->win_sq[i] / n - m * m;
@@ -747,7 +756,8 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         R->moving = R->win_n > 0 && (double)R->win_moving > HX_ALLAN_MOVING_FRAC * (double)R->win_n;
         f_rest = R->moving ? 0.0 : sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
         R->units_bad = hx_units_problem(f_rest, 9.80665, R->gyro_max, 0.0,
-                                        rate_opt > 0.0 ? csv : hx_time_unit_layout(rate_u, csv, &lay_t), 0,
+                                        rate_opt > 0.0 ? csv : hx_time_unit_layout(rate_u, csv, &lay_t),
+                                        hx_walk_seen(&R->walk),
                                         R->units_msg, sizeof R->units_msg);
         if (!(rate_opt > 0.0)) {
             R->time_unit_warned =
@@ -2480,17 +2490,22 @@ int hx_cmd_allan(int argc, char **argv)
     }
     if (R->moving) {
         hx_csv_layout_t lay, lay_t;
-        char give[64];
+        char give[64], dps[128] = "";
+        const hx_csv_layout_t *csv = hx_units_layout(R->in_fmt, &lay);
+        if (csv == NULL || csv->gyr_scale == 1.0) {
+            /* a gyro read as deg/s already (--units gyro=) is not told to
+             * multiply by pi/180 again: a walk in rad/s read so was, until
+             * 2026-11-30 (the units review; the units check names it) */
+            snprintf(dps, sizeof dps, " (a gyro in deg/s at rest also reads so: %s)",
+                     hx_units_fix_dps(hx_time_unit_layout(R->time_unit_warned ? R->rate_hz : 0.0, csv, &lay_t),
+                                      give, sizeof give));
+        }
         hx_error(CMD,
                  "%s: the log moves: in %ld of its %ld one-second windows the rate spreads by more than %g rad/s "
                  "RMS or |f| by more than %g m/s^2 (the first at %.0f s): not a static log (a walk?); the Allan "
-                 "variance and its bias model describe a sensor at rest (a gyro in deg/s at rest also reads so: "
-                 "%s) (docs/allan.md, \"Command\")",
+                 "variance and its bias model describe a sensor at rest%s (docs/allan.md, \"Command\")",
                  path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2,
-                 R->win_first_moving_s,
-                 hx_units_fix_dps(hx_time_unit_layout(R->time_unit_warned ? R->rate_hz : 0.0,
-                                                      hx_units_layout(R->in_fmt, &lay), &lay_t),
-                                  give, sizeof give));
+                 R->win_first_moving_s, dps);
         exit_code = HX_EXIT_DATA;
     } else if (R->win_moving > 0) {
         motion_report(R, path, hx_arg(&a, "--profile") != NULL);

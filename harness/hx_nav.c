@@ -966,13 +966,24 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
  * review, 2026-11-30) */
 #define HX_WALK_OFF_SHARE 0.1
 
+void hx_walk_window(hx_walk_t *w, long n, double s, double s2, long n_off)
+{
+    if (n >= HX_WALK_WINDOW_MIN_N) {
+        const double m = s / (double)n, var = s2 / (double)n - m * m;
+        w->windows += var >= HX_WALK_F_SD_MPS2 * HX_WALK_F_SD_MPS2 && (double)n_off >= HX_WALK_OFF_SHARE * (double)n;
+    }
+}
+
+int hx_walk_off(double f_norm_mps2)
+{
+    return fabs(f_norm_mps2 - 9.80665) >= HX_WALK_F_SD_MPS2;
+}
+
 void hx_walk_push(hx_walk_t *w, int64_t t_ns, double f_norm_mps2)
 {
     if (w->open && (t_ns < w->t0_ns || t_ns - w->t0_ns >= 1000000000)) {
-        if (t_ns >= w->t0_ns && w->n >= HX_WALK_WINDOW_MIN_N) {
-            const double m = w->s / (double)w->n, var = w->s2 / (double)w->n - m * m;
-            w->windows += var >= HX_WALK_F_SD_MPS2 * HX_WALK_F_SD_MPS2 &&
-                          (double)w->n_off >= HX_WALK_OFF_SHARE * (double)w->n;
+        if (t_ns >= w->t0_ns) {
+            hx_walk_window(w, w->n, w->s, w->s2, w->n_off);
         }
         w->open = 0;
     }
@@ -982,7 +993,7 @@ void hx_walk_push(hx_walk_t *w, int64_t t_ns, double f_norm_mps2)
         w->s = w->s2 = 0.0;
         w->n = w->n_off = 0;
     }
-    w->n_off += fabs(f_norm_mps2 - 9.80665) >= HX_WALK_F_SD_MPS2;
+    w->n_off += hx_walk_off(f_norm_mps2);
     w->s += f_norm_mps2;
     w->s2 += f_norm_mps2 * f_norm_mps2;
     w->n++;

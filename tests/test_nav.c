@@ -1780,6 +1780,47 @@ static void test_resampler_time_jump(void **state)
     hx_log_free(&in);
 }
 
+/* The walk test of the units check, fed two ways: by stamps
+ * (hx_walk_push, replay, info, simgap) and by a caller's own windows of
+ * samples (hx_walk_window, allan's one-second windows): the same count.
+ * 100 Hz: 5 s of swinging |f| (5 and 15 m/s^2 in turn: sd 5, every sample
+ * off gravity), 5 s at rest, 5 s at rest with one tap a second (3 samples
+ * of 25 m/s^2: sd 2.7, but 3 % of the samples off gravity, below the
+ * tenth a walk needs). */
+static void test_walk_window(void **state)
+{
+    hx_walk_t by_stamp, by_window;
+    double s = 0.0, s2 = 0.0;
+    long n = 0, off = 0;
+    int i;
+    (void)state;
+    memset(&by_stamp, 0, sizeof by_stamp);
+    memset(&by_window, 0, sizeof by_window);
+    for (i = 0; i < 1501; i++) {
+        const double f = i < 500 ? (i % 2 ? 15.0 : 5.0) : i >= 1000 && i % 100 < 3 ? 25.0 : 9.80665 + 0.001 * (i % 3);
+        hx_walk_push(&by_stamp, (int64_t)i * 10000000, f); /* the 1501st sample closes the 15th second */
+        if (i == 1500) {
+            break;
+        }
+        s += f;
+        s2 += f * f;
+        off += hx_walk_off(f);
+        if (++n == 100) {
+            hx_walk_window(&by_window, n, s, s2, off);
+            s = s2 = 0.0;
+            n = off = 0;
+        }
+    }
+    assert_int_equal(by_stamp.windows, 5);
+    assert_int_equal(by_window.windows, 5);
+    assert_true(hx_walk_seen(&by_window));
+    assert_true(hx_walk_off(11.81) && !hx_walk_off(11.8) && hx_walk_off(7.8) && !hx_walk_off(9.8));
+    /* fewer than 10 samples: no window counts */
+    memset(&by_window, 0, sizeof by_window);
+    hx_walk_window(&by_window, 9, 9.0 * 10.0, 9.0 * 125.0, 9);
+    assert_int_equal(by_window.windows, 0);
+}
+
 /* Stamps in bursts: the filter takes the input as uniform at its median
  * rate, which is no sampling period here. 400 Hz in packets of 4 samples
  * stamped 5 us apart every 10 ms (200 kHz from the median interval), or
@@ -2460,6 +2501,7 @@ int main(void)
         cmocka_unit_test(test_resampler_fractional),
         cmocka_unit_test(test_resampler_time_jump),
         cmocka_unit_test(test_resampler_bursts),
+        cmocka_unit_test(test_walk_window),
         cmocka_unit_test(test_sat_two_runs),
         cmocka_unit_test(test_note_thresholds),
         cmocka_unit_test(test_health_keys),

@@ -859,6 +859,20 @@ awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 6000; i++)
 expect_exit 1 "a static gyro in deg/s" "$H" allan "$T/dps.csv" --no-sim --quiet
 expect_err "a gyro in deg/s at rest also reads so: give --units gyro=deg/s)" \
     "deg/s named as a cause, with the --units item for the CSV (it said multiply by pi/180 until 2026-11-30)"
+# a walk in rad/s read with --units gyro=deg/s (57.3 times too small): allan judged no walk (replay, info and simgap
+# did, from hx_walk_t) and its motion error told "a gyro in deg/s at rest also reads so: multiply by pi/180", of a
+# gyro read as deg/s already; allan's own one-second windows now feed the walk test (the units review, 2026-11-30):
+# the rad/s mark is named and the deg/s clause left out. The same walk without --units keeps the clause
+expect_exit 1 "a walk in rad/s read with gyro=deg/s" "$H" allan vectors/nav/golden/gx2_walk2.csv --no-sim --quiet --units gyro=deg/s
+expect_err "the log is in rad/s already? (read as deg/s by --units gyro=deg/s: leave gyro=deg/s out)" \
+    "a walk in rad/s read as deg/s: the rad/s mark named, as replay names it"
+if grep -q "multiply by pi/180" "$T/err"; then fail "a gyro read as deg/s told to multiply by pi/180 again"; else
+    pass "a gyro read as deg/s not told to multiply by pi/180 again"; fi
+expect_exit 1 "the walk in rad/s" "$H" allan vectors/nav/golden/gx2_walk2.csv --no-sim --quiet
+expect_err "the log moves: .*(a gyro in deg/s at rest also reads so: give --units gyro=deg/s)" \
+    "the walk in rad/s: the moving error keeps the deg/s clause"
+if grep -q "rad/s already" "$T/err"; then fail "the walk in rad/s named as rad/s read as deg/s"; else
+    pass "the walk in rad/s: no rad/s mark"; fi
 
 A=$(data adis16405_static/adis16405_imu1_100Hz.csv.gz)
 if [ -n "$A" ]; then
