@@ -2478,8 +2478,8 @@ int main(void)
         cmocka_unit_test(test_bin_rate_unknown),
         cmocka_unit_test(test_format_names),
         cmocka_unit_test(test_load_progress),
-        cmocka_unit_test(test_time_unit_rate),
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
+        cmocka_unit_test(test_time_unit_rate),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);
 }
