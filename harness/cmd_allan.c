@@ -150,6 +150,8 @@ typedef struct {
      * the rate and of |f| within each) */
     double win_sum[4], win_sq[4]; /* gx, gy, gz, |f| */
     uint32_t win_fill, win_len;
+    long win_off;            /* the open window's samples whose |f| is 2 m/s^2 or more off gravity (hx_walk_off) */
+    hx_walk_t walk;          /* the windows that spread as a walk's (hx_walk_window): the units check's walks */
     long win_n, win_moving;
     double win_first_moving_s;
     double *win_spread;      /* every window's rate and |f| spread (RMS), in pairs: the disturbance check */
@@ -493,9 +495,16 @@ static void motion_push(run_t *R, const fnav_sample_t *s)
         R->win_sum[i] += v[i];
         R->win_sq[i] += v[i] * v[i];
     }
+    R->win_off += hx_walk_off(v[3]);
     if (++R->win_fill == R->win_len) {
         const double n = (double)R->win_fill;
         double var[4];
+        /* the same window tells a walk (replay's and info's test of the
+         * stamps' seconds; the units review, 2026-11-30: allan judged no
+         * walk, and a walk in rad/s read with --units gyro=deg/s was told
+         * "multiply by pi/180") */
+        hx_walk_window(&R->walk, (long)R->win_fill, R->win_sum[3], R->win_sq[3], R->win_off);
+        R->win_off = 0;
         for (i = 0; i < 4; i++) {
             const double m = R->win_sum[i] / n;
             var[i] = R->win_sq[i] / n - m * m;
@@ -618,7 +627,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     fnav_sample_t s;
     fnav_status_t st;
     hx_progress_t pr;
-    int64_t t_prev = 0;
+    int64_t t_prev = 0, t_first = 0; /* the last and the first sample's stamps */
     int64_t res_ns = 0; /* the stamps' resolution so far: the gcd of the intervals that advance */
     long irregular = 0;
     double stamp_rate; /* the rate the stamps are checked against: the log's own, not an overriding --rate */
@@ -667,6 +676,9 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
              * as well: every interval of such a uniform log was counted (as
              * psd's, 2026-11-29; the gcd so far is never below the final one) */
             irregular += hx_interval_irregular(s.t_ns - t_prev, stamp_rate, res_ns);
+        }
+        if (R->n == 0) {
+            t_first = s.t_ns;
         }
         t_prev = s.t_ns;
         motion_push(R, &s);
@@ -737,15 +749,19 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
          * both, one --units value (a second --units replaces the first) */
         hx_csv_layout_t lay, lay_t, lay_w;
         const hx_csv_layout_t *csv = hx_units_layout(R->in_fmt, &lay);
+        /* the rate the time unit is judged at: the log's span too (stamps
+         * in bursts are no unit) */
+        const double rate_u = hx_time_unit_rate(R->rate_hz, (size_t)R->n, t_first, t_prev);
         double f_rest;
         R->moving = R->win_n > 0 && (double)R->win_moving > HX_ALLAN_MOVING_FRAC * (double)R->win_n;
         f_rest = R->moving ? 0.0 : sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
         R->units_bad = hx_units_problem(f_rest, 9.80665, R->gyro_max, 0.0,
-                                        rate_opt > 0.0 ? csv : hx_time_unit_layout(R->rate_hz, csv, &lay_t), 0,
+                                        rate_opt > 0.0 ? csv : hx_time_unit_layout(rate_u, csv, &lay_t),
+                                        hx_walk_seen(&R->walk),
                                         R->units_msg, sizeof R->units_msg);
         if (!(rate_opt > 0.0)) {
             R->time_unit_warned =
-                slow_check(path, R->rate_hz, hx_units_want(csv, f_rest, 9.80665, R->gyro_max, &lay_w));
+                slow_check(path, rate_u, hx_units_want(csv, f_rest, 9.80665, R->gyro_max, &lay_w));
         }
     }
     return rc;
@@ -2474,13 +2490,13 @@ int hx_cmd_allan(int argc, char **argv)
     }
     if (R->moving) {
         hx_csv_layout_t lay, lay_t;
+        char give[64], dps[128] = "";
         const hx_csv_layout_t *csv = hx_units_layout(R->in_fmt, &lay);
-        char give[64], cause[128] = "";
-        /* a gyro read as deg/s by --units gyro=deg/s was converted already:
-         * deg/s is no cause, and "multiply by pi/180" would convert it twice
-         * (named so until the review of 2026-11-30) */
         if (csv == NULL || csv->gyr_scale == 1.0) {
-            snprintf(cause, sizeof cause, " (a gyro in deg/s at rest also reads so: %s)",
+            /* a gyro read as deg/s already (--units gyro=) is not told to
+             * multiply by pi/180 again: a walk in rad/s read so was, until
+             * 2026-11-30 (the units review; the units check names it) */
+            snprintf(dps, sizeof dps, " (a gyro in deg/s at rest also reads so: %s)",
                      hx_units_fix_dps(hx_time_unit_layout(R->time_unit_warned ? R->rate_hz : 0.0, csv, &lay_t),
                                       give, sizeof give));
         }
@@ -2489,7 +2505,7 @@ int hx_cmd_allan(int argc, char **argv)
                  "RMS or |f| by more than %g m/s^2 (the first at %.0f s): not a static log (a walk?); the Allan "
                  "variance and its bias model describe a sensor at rest%s (docs/allan.md, \"Command\")",
                  path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2,
-                 R->win_first_moving_s, cause);
+                 R->win_first_moving_s, dps);
         exit_code = HX_EXIT_DATA;
     } else if (R->win_moving > 0) {
         motion_report(R, path, hx_arg(&a, "--profile") != NULL);

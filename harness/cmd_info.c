@@ -205,7 +205,9 @@ static void analyse(const hx_log_t *log, info_t *in)
                               log->acc[i][2] * log->acc[i][2]));
         }
         in->units_bad = hx_units_problem(in->g_mag, 9.80665, wmax, 0.0,
-                                         log->meta.rate_nominal ? csv : hx_time_unit_layout(in->rate_hz, csv, &lay_t),
+                                         log->meta.rate_nominal
+                                             ? csv
+                                             : hx_time_unit_layout(hx_log_time_unit_rate(log, in->rate_hz), csv, &lay_t),
                                          hx_walk_seen(&walk), in->units, sizeof in->units);
     }
 }
@@ -314,7 +316,7 @@ int hx_cmd_info(int argc, char **argv)
         char hint[256];
         hx_csv_layout_t lay, lay_w; /* with the unit items of the units line (one --units value) */
         if (!log.meta.rate_nominal &&
-            hx_time_unit_hint(in.rate_hz,
+            hx_time_unit_hint(hx_log_time_unit_rate(&log, in.rate_hz), /* no hint for stamps in bursts */
                               hx_units_want(hx_units_layout(log.meta.format, &lay), in.g_mag, 9.80665, in.gyro_max,
                                             &lay_w),
                               hint, sizeof hint)) {

@@ -801,7 +801,9 @@ int hx_cmd_psd(int argc, char **argv)
          * only as an answer above the log's rate (the static review) */
         char msg[320];
         hx_csv_layout_t lay;
-        if (hx_time_unit_hint(rate, hx_units_layout(log.meta.format, &lay), msg, sizeof msg)) {
+        /* judged by the log's span too: stamps in bursts are no unit */
+        if (hx_time_unit_hint(hx_log_time_unit_rate(&log, rate), hx_units_layout(log.meta.format, &lay), msg,
+                              sizeof msg)) {
             hx_warn(CMD, "%s: %s; the frequencies are read at %.3g Hz", a.pos[0], msg, rate);
         }
     }

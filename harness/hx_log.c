@@ -1943,7 +1943,7 @@ int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix)
             if (true_digits > 9) {
                 continue;
             }
-            if (r_u >= 20.0 && r_u <= HX_TIME_RATE_MAX_HZ) {
+            if (r_u >= HX_TIME_RATE_MIN_HZ && r_u <= HX_TIME_RATE_MAX_HZ) {
                 fix->name = k_name[(9 - true_digits) / 3];
                 fix->opt = k_opt[(9 - true_digits) / 3];
                 fix->digits = true_digits;
@@ -1957,7 +1957,7 @@ int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix)
     }
     for (u = 0; u < sizeof k_units / sizeof k_units[0]; u++) {
         const double r_u = rate_hz * k_units[u].scale;
-        if (r_u >= 20.0 && r_u <= HX_TIME_RATE_MAX_HZ) {
+        if (r_u >= HX_TIME_RATE_MIN_HZ && r_u <= HX_TIME_RATE_MAX_HZ) {
             /* us read as ms look like us; nothing is finer than ns */
             const int true_digits = digits - 3 * (int)(u + 1u);
             if (true_digits < 0) {
@@ -2006,6 +2006,29 @@ int hx_time_unit_hint(double rate_hz, const hx_csv_layout_t *csv, char *msg, siz
     return 1;
 }
 
+double hx_time_unit_rate(double rate_hz, size_t n, int64_t t_first_ns, int64_t t_last_ns)
+{
+    /* one test for every command (replay's alone until 2026-11-30, when
+     * info, allan, psd and simgap still told stamps in bursts time=ms) */
+    const int fast = rate_hz > HX_TIME_RATE_MAX_HZ, slow = rate_hz > 0.0 && rate_hz < HX_TIME_RATE_MIN_HZ;
+    double span_hz;
+    if (!fast && !slow) {
+        return rate_hz; /* a foot-mounted IMU's rate: no unit to question, whatever the span */
+    }
+    if (n < 2u || t_last_ns <= t_first_ns) {
+        return rate_hz; /* no span: the intervals alone */
+    }
+    span_hz = 1e9 * (double)(n - 1u) / (double)(t_last_ns - t_first_ns);
+    /* a wrong unit makes the span as fast (or as slow) as the intervals;
+     * stamps in bursts leave it at the sampling rate */
+    return (fast && span_hz > HX_TIME_RATE_MAX_HZ) || (slow && span_hz < HX_TIME_RATE_MIN_HZ) ? rate_hz : 0.0;
+}
+
+double hx_log_time_unit_rate(const hx_log_t *log, double rate_hz)
+{
+    return log->n > 0u ? hx_time_unit_rate(rate_hz, log->n, log->t_ns[0], log->t_ns[log->n - 1u]) : rate_hz;
+}
+
 const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t *csv, hx_csv_layout_t *buf)
 {
     hx_time_fix_t fix;
@@ -2015,6 +2038,11 @@ const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t
     *buf = *csv;
     buf->time_digits = fix.digits;
     return buf;
+}
+
+const char *hx_accel_unit_name(double acc_scale)
+{
+    return acc_scale == HX_G_MPS2 ? "g" : acc_scale == HX_MG_MPS2 ? "mg" : "m/s2";
 }
 
 const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size)
@@ -2031,11 +2059,11 @@ const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size)
         len = strlen(buf);
     }
     if (want->acc_scale != 1.0 && len < size) {
-        snprintf(buf + len, size - len, "accel=g,");
+        snprintf(buf + len, size - len, "accel=%s,", hx_accel_unit_name(want->acc_scale));
         len = strlen(buf);
     }
     if (want->gyr_scale != 1.0 && len < size) {
-        snprintf(buf + len, size - len, "gyro=deg/s,");
+        snprintf(buf + len, size - len, "gyro=%s,", want->gyr_scale == HX_MDPS_RPS ? "mdps" : "deg/s");
         len = strlen(buf);
     }
     if (len > 0u && buf[len - 1u] == ',') {
@@ -2751,18 +2779,24 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             if (strcmp(val, "m/s2") == 0 || strcmp(val, "m/s^2") == 0 || strcmp(val, "mps2") == 0) {
                 l->acc_scale = 1.0;
             } else if (strcmp(val, "g") == 0) {
-                l->acc_scale = 9.80665;
+                l->acc_scale = HX_G_MPS2;
+            } else if (strcmp(val, "mg") == 0) {
+                l->acc_scale = HX_MG_MPS2; /* ST's SensorTile data log, AccX [mg] (the units review) */
             } else {
-                snprintf(err, err_size, "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, mps2) or g", val);
+                snprintf(err, err_size, "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, mps2), g or mg",
+                         val);
                 return -1;
             }
         } else {
             if (strcmp(val, "rad/s") == 0) {
                 l->gyr_scale = 1.0;
             } else if (strcmp(val, "deg/s") == 0 || strcmp(val, "dps") == 0) {
-                l->gyr_scale = 3.14159265358979323846 / 180.0;
+                l->gyr_scale = HX_DPS_RPS;
+            } else if (strcmp(val, "mdps") == 0 || strcmp(val, "mdeg/s") == 0) {
+                l->gyr_scale = HX_MDPS_RPS; /* ST's SensorTile data log, GyroX [mdps] (the units review) */
             } else {
-                snprintf(err, err_size, "--units: gyro=%s: the rate unit is rad/s or deg/s (dps)", val);
+                snprintf(err, err_size, "--units: gyro=%s: the rate unit is rad/s, deg/s (dps) or mdps (mdeg/s)",
+                         val);
                 return -1;
             }
         }

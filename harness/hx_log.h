@@ -78,10 +78,19 @@ const char *hx_format_list(void);
 typedef struct {
     char names[8][64];  /**< the file's column for t, ax, ay, az, gx, gy, gz, temp; "" keeps the default name */
     int time_digits;    /**< ns per unit of the time column as a power of ten: 9 s, 6 ms, 3 us, 0 ns */
-    double acc_scale;   /**< m/s^2 per unit of the accelerations (1, or 9.80665 for g) */
-    double gyr_scale;   /**< rad/s per unit of the rates (1, or pi/180 for deg/s) */
+    double acc_scale;   /**< m/s^2 per unit of the accelerations (1, HX_G_MPS2 for g, HX_MG_MPS2 for mg) */
+    double gyr_scale;   /**< rad/s per unit of the rates (1, HX_DPS_RPS for deg/s, HX_MDPS_RPS for mdps) */
     const char *option; /**< "--columns", "--units" or "--columns and --units": the options that gave it; NULL: defaults */
 } hx_csv_layout_t;
+
+/** The scales of --units (hx_csv_layout_t.acc_scale, gyr_scale): m/s^2 per
+ *  g and per mg, rad/s per deg/s and per mdps. */
+#define HX_G_MPS2 9.80665
+#define HX_MG_MPS2 0.00980665
+#define HX_DPS_RPS (3.14159265358979323846 / 180.0)
+#define HX_MDPS_RPS (3.14159265358979323846 / 180.0 / 1000.0)
+/** The --units name of an acceleration scale: "g", "mg", else "m/s2". */
+const char *hx_accel_unit_name(double acc_scale);
 
 /** The interchange names and units (t,ax,...,temp in s, m/s^2, rad/s). */
 void hx_csv_layout_default(hx_csv_layout_t *l);
@@ -91,8 +100,8 @@ void hx_csv_layout_default(hx_csv_layout_t *l);
  *  keys, counting the default names of the keys not given). */
 int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t err_size);
 /** Parse a --units SPEC ("time=ns,accel=g,gyro=deg/s"; time s|ms|us|ns,
- *  accel m/s2|m/s^2|mps2|g, gyro rad/s|deg/s|dps) into l. 0 ok; -1 with a
- *  message in err. */
+ *  accel m/s2|m/s^2|mps2|g|mg, gyro rad/s|deg/s|dps|mdps|mdeg/s) into l.
+ *  0 ok; -1 with a message in err. */
 int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t err_size);
 /** The layout every reader opened afterwards in this process reads the
  *  interchange CSV with (NULL: the defaults); set once from a command's
@@ -237,6 +246,25 @@ int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix);
  *  synopsis's order): one --units value, since a second --units replaces
  *  the first. Returns buf. */
 const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size);
+/** The lowest rate of a foot-mounted IMU the time-unit remedies aim at,
+ *  Hz (hx_time_unit_fix's band is 20 Hz to HX_TIME_RATE_MAX_HZ). */
+#define HX_TIME_RATE_MIN_HZ 20.0
+/** The rate the time-unit checks judge (hx_time_unit_hint,
+ *  hx_time_unit_layout and replay's units check) for a log whose stamps'
+ *  intervals give rate_hz (1 / their median interval, hx_stamp_rate_hz)
+ *  and whose n samples run from the stamp t_first_ns to t_last_ns, its
+ *  span rate (n - 1) / span: rate_hz when it lies in the band of
+ *  HX_TIME_RATE_MIN_HZ to HX_TIME_RATE_MAX_HZ (a log with a pause keeps
+ *  it), when there is no span (n < 2, or the last stamp not after the
+ *  first), or when the span rate is out of the band on the same side (a
+ *  wrong unit moves both alike); else 0, no unit to question. Stamps taken
+ *  in bursts, a batch of samples stamped microseconds apart as a logger
+ *  reads them (5 us apart every 16 ms: 200 kHz from the median interval,
+ *  250 Hz over the log), or one stamp shared by a batch of samples (one
+ *  stamp every 2 s for 100 samples: 0.5 Hz from the distinct stamps, 50 Hz
+ *  over the log), are in the right unit: naming one would make the log
+ *  1000 times too slow or too fast. */
+double hx_time_unit_rate(double rate_hz, size_t n, int64_t t_first_ns, int64_t t_last_ns);
 /** csv with the time unit hx_time_unit_hint finds for rate_hz (in *buf),
  *  else csv itself (NULL stays NULL): the layout whose other remedies
  *  (hx_units_problem's, given with no rate) name the time item too, for a
@@ -290,6 +318,10 @@ int hx_log_load(hx_log_t *log, const char *path, hx_format_t fmt, double rate_hz
 int hx_log_load_progress(hx_log_t *log, const char *path, hx_format_t fmt, double rate_hz,
                          void (*progress)(void *ctx, double frac), void *ctx, char *err, size_t err_size);
 void hx_log_free(hx_log_t *log);
+
+/** hx_time_unit_rate for a loaded log: its stamps' rate_hz judged by the
+ *  span of its samples (rate_hz itself for an empty log). */
+double hx_log_time_unit_rate(const hx_log_t *log, double rate_hz);
 
 /** Sample i of a loaded log as the core takes it (time, sequence, specific
  *  force and rate; no temperature). */

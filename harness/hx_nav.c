@@ -466,6 +466,42 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
     fs = 1e9 / (double)dt[(n - 1) / 2];
     free(dt);
     *in_rate = fs;
+    gap_ns = (int64_t)ceil(1e9 * (max_gap_s > 1.5 / fs ? max_gap_s : 1.5 / fs));
+    {
+        /* The filter takes the input as uniform at its median rate, which
+         * needs the median interval to be the sampling period: the samples
+         * between the time jumps as many as it gives over their span, give
+         * or take lost (fewer) and repeated (more) ones. Stamps in bursts
+         * break it: packets of samples stamped microseconds apart (5 us
+         * every 10 ms: 200 kHz, where 400 Hz fill the span; 0.2 % of the
+         * samples), or one stamp shared by a packet (4 samples to a stamp
+         * every 10 ms: 100 Hz, 4 times the samples). Until 2026-11-30 both
+         * were resampled with exit 0: the kernel, 40 times the rate ratio
+         * of "200 kHz" samples long, smeared seconds of the walk into each
+         * output (0 strides), and the shared stamps kept one sample of
+         * four (the units review). */
+        double expect = 0.0, span_s = 0.0;
+        size_t segs = 0;
+        for (a = 0; a < n; a = b) {
+            for (b = a + 1; b < n && in->t_ns[keep[b]] - in->t_ns[keep[b - 1]] <= gap_ns; b++) {
+            }
+            span_s += 1e-9 * (double)(in->t_ns[keep[b - 1]] - in->t_ns[keep[a]]);
+            segs++;
+        }
+        expect = span_s * fs + (double)segs;
+        if ((double)in->n < 0.5 * expect || (double)in->n > 1.5 * expect) {
+            const double per_s = span_s > 0.0 ? (double)(in->n - segs) / span_s : 0.0;
+            free(keep);
+            snprintf(err, err_size,
+                     "--rate: the time stamps come in bursts (%s): 1 / their median interval gives %.6g Hz, but the %zu "
+                     "samples span %.4g s%s, %.4g Hz; resampling needs each sample's own time: leave the time column "
+                     "out and give --input-rate %.4g (docs/harness.md, \"--rate HZ (resampling)\")",
+                     (double)in->n < expect ? "samples stamped close together as a logger reads them?"
+                                            : "samples that share one stamp?",
+                     fs, in->n, span_s, segs > 1u ? " between the time jumps" : "", per_s, per_s);
+            return -1;
+        }
+    }
     if (!(rate_hz < fs * 0.999)) {
         /* a rate within 0.1 % of the input's leaves nothing to decimate
          * (the vicon trials' 200.080 Hz median refused --rate 200 as "not
@@ -504,7 +540,6 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
     fc = 0.45 * rate_hz / fs; /* cycles per input sample */
     half = (int)ceil(20.0 * fs / rate_hz);
     period_ns = 1e9 / rate_hz;
-    gap_ns = (int64_t)ceil(1e9 * (max_gap_s > 1.5 / fs ? max_gap_s : 1.5 / fs));
     nout = 0;
     for (pass = 0; pass < 2; pass++) {
         k = 0;
@@ -931,13 +966,24 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
  * review, 2026-11-30) */
 #define HX_WALK_OFF_SHARE 0.1
 
+void hx_walk_window(hx_walk_t *w, long n, double s, double s2, long n_off)
+{
+    if (n >= HX_WALK_WINDOW_MIN_N) {
+        const double m = s / (double)n, var = s2 / (double)n - m * m;
+        w->windows += var >= HX_WALK_F_SD_MPS2 * HX_WALK_F_SD_MPS2 && (double)n_off >= HX_WALK_OFF_SHARE * (double)n;
+    }
+}
+
+int hx_walk_off(double f_norm_mps2)
+{
+    return fabs(f_norm_mps2 - 9.80665) >= HX_WALK_F_SD_MPS2;
+}
+
 void hx_walk_push(hx_walk_t *w, int64_t t_ns, double f_norm_mps2)
 {
     if (w->open && (t_ns < w->t0_ns || t_ns - w->t0_ns >= 1000000000)) {
-        if (t_ns >= w->t0_ns && w->n >= HX_WALK_WINDOW_MIN_N) {
-            const double m = w->s / (double)w->n, var = w->s2 / (double)w->n - m * m;
-            w->windows += var >= HX_WALK_F_SD_MPS2 * HX_WALK_F_SD_MPS2 &&
-                          (double)w->n_off >= HX_WALK_OFF_SHARE * (double)w->n;
+        if (t_ns >= w->t0_ns) {
+            hx_walk_window(w, w->n, w->s, w->s2, w->n_off);
         }
         w->open = 0;
     }
@@ -947,7 +993,7 @@ void hx_walk_push(hx_walk_t *w, int64_t t_ns, double f_norm_mps2)
         w->s = w->s2 = 0.0;
         w->n = w->n_off = 0;
     }
-    w->n_off += fabs(f_norm_mps2 - 9.80665) >= HX_WALK_F_SD_MPS2;
+    w->n_off += hx_walk_off(f_norm_mps2);
     w->s += f_norm_mps2;
     w->s2 += f_norm_mps2 * f_norm_mps2;
     w->n++;
@@ -965,6 +1011,13 @@ static int gyro_rps_as_dps(const hx_csv_layout_t *csv, double gyro_max_rps, int 
     return walks && csv != NULL && csv->gyr_scale != 1.0 && gyro_max_rps > 0.0 &&
            gyro_max_rps < HX_GYRO_WALK_MIN_RPS;
 }
+/* A gyro read as mdps whose file values reach a walking foot's rates once
+ * read as deg/s (HX_GYRO_WALK_MIN_RPS): a file in deg/s, not rad/s. */
+static int gyro_file_dps(const hx_csv_layout_t *csv, double gyro_max_rps)
+{
+    return csv != NULL && csv->gyr_scale == HX_MDPS_RPS && gyro_max_rps / HX_MDPS_RPS * HX_DPS_RPS >= HX_GYRO_WALK_MIN_RPS;
+}
+
 /* The remedies for g and deg/s: want is the layout that reads the log (csv
  * with every unit item the marks found), named whole by hx_units_give when
  * the item was not given; a unit already given, or csv NULL, keeps the
@@ -997,28 +1050,86 @@ const char *hx_units_fix_dps(const hx_csv_layout_t *csv, char *buf, size_t size)
     return fix_dps(csv, csv != NULL ? &want : NULL, buf, size);
 }
 
+/* An accelerometer is judged on the file's values, before --units accel=
+ * scaled them: mg read as g are 1000 times too large (the mg mark missed
+ * them: "raw counts?" or no unit at all), and their remedy names the unit
+ * they are in. */
+static double acc_read_scale(const hx_csv_layout_t *csv)
+{
+    return csv != NULL ? csv->acc_scale : 1.0;
+}
+
+/* The unit the file's accelerations are in, by |f| at rest as read: the
+ * scale (m/s^2 per unit: 1, HX_G_MPS2, HX_MG_MPS2) that makes the file's
+ * value gravity within HX_GRAVITY_TOL; 0 when none does. */
+static double acc_file_scale(const hx_csv_layout_t *csv, double f_rest_mps2, double g)
+{
+    static const double k_scale[3] = { 1.0, HX_G_MPS2, HX_MG_MPS2 };
+    size_t i;
+    for (i = 0; i < 3u; i++) {
+        if (fabs(f_rest_mps2 / acc_read_scale(csv) * k_scale[i] / g - 1.0) < HX_GRAVITY_TOL) {
+            return k_scale[i];
+        }
+    }
+    return 0.0;
+}
+
+/* The remedy for accelerations whose file unit is file_scale (want: the
+ * layout that reads the log, units_want): for the interchange CSV the whole
+ * --units value (the unit given named first: "read as g by --units accel=g:
+ * give --units accel=mg", where until 2026-11-30 mg had no item and mg read
+ * as g were told "divide by 1000"), or the item given left out for a file
+ * in m/s^2; for another format (csv NULL) the arithmetic. */
+static const char *acc_fix(const hx_csv_layout_t *csv, const hx_csv_layout_t *want, double file_scale, char *buf,
+                           size_t size)
+{
+    char give[96];
+    const char *given = hx_accel_unit_name(acc_read_scale(csv));
+    if (csv == NULL) {
+        snprintf(buf, size, "multiply by %s", file_scale == HX_MG_MPS2 ? "0.00980665" : "9.80665");
+    } else if (file_scale == 1.0) {
+        snprintf(buf, size, "read as %s by --units accel=%s: leave accel=%s out", given, given, given);
+    } else if (csv->acc_scale == 1.0) {
+        hx_units_give(want, buf, size);
+    } else {
+        snprintf(buf, size, "read as %s by --units accel=%s: %s", given, given, hx_units_give(want, give, sizeof give));
+    }
+    return buf;
+}
+
 /* The layout that reads the log, for the remedies of units_problem: csv
  * with the unit items of every mark found, as units_problem judges them
- * (acc_in_g: the mean |f| of units_check found g), so that each remedy
+ * (acc_mean: the file unit the mean |f| of units_check found, HX_G_MPS2,
+ * HX_MG_MPS2 or 1 for m/s^2 read in another unit; 0 none), so that each remedy
  * names the whole --units value. csv NULL: none (want untouched). */
 static void units_want(const hx_csv_layout_t *csv, double f_rest_mps2, double g, double gyro_max_rps,
-                       double rate_hz, int acc_in_g, int walks, hx_csv_layout_t *want)
+                       double rate_hz, double acc_mean, int walks, hx_csv_layout_t *want)
 {
     hx_time_fix_t tf;
     if (csv == NULL) {
         return;
     }
     *want = *csv;
-    if ((acc_in_g || (f_rest_mps2 > 0.0 && fabs(f_rest_mps2 / g - 1.0) > HX_GRAVITY_TOL &&
-                      fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL)) &&
-        csv->acc_scale == 1.0) {
-        want->acc_scale = 9.80665;
+    if (acc_mean == HX_G_MPS2 && csv->acc_scale == 1.0) {
+        want->acc_scale = HX_G_MPS2;
+    } else if (acc_mean == HX_MG_MPS2 || acc_mean == 1.0) {
+        want->acc_scale = acc_mean;
+    } else if (f_rest_mps2 > 0.0 && fabs(f_rest_mps2 / g - 1.0) > HX_GRAVITY_TOL &&
+               acc_file_scale(csv, f_rest_mps2, g) > 0.0) {
+        /* the unit the file's values are in (g, mg, or m/s^2 read as g or
+         * mg: the item left out), whatever was given */
+        want->acc_scale = acc_file_scale(csv, f_rest_mps2, g);
     }
     if (gyro_max_rps > HX_GYRO_MAX_RPS && gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS && csv->gyr_scale == 1.0) {
         want->gyr_scale = M_PI / 180.0;
+    } else if (gyro_max_rps > HX_GYRO_MAX_RPS && gyro_max_rps * HX_MDPS_RPS < HX_GYRO_MAX_RPS &&
+               csv->gyr_scale == 1.0) {
+        want->gyr_scale = HX_MDPS_RPS;
     }
     if (gyro_rps_as_dps(csv, gyro_max_rps, walks)) {
-        want->gyr_scale = 1.0; /* the remedy leaves gyro=deg/s out */
+        /* the remedy leaves gyro=deg/s out, or names deg/s for a file in
+         * deg/s read as mdps */
+        want->gyr_scale = gyro_file_dps(csv, gyro_max_rps) ? HX_DPS_RPS : 1.0;
     }
     if (((rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ) || rate_hz > HX_TIME_RATE_MAX_HZ) &&
         hx_time_unit_fix(rate_hz, csv->time_digits, &tf)) {
@@ -1026,22 +1137,6 @@ static void units_want(const hx_csv_layout_t *csv, double f_rest_mps2, double g,
     }
 }
 
-/* An accelerometer in mg is judged on the file's values, before --units
- * accel=g multiplied them by 9.80665: mg read as g are 1000 times too large
- * (the mg mark missed them: "raw counts?" or no unit at all), and their
- * remedy keeps the option given. */
-static double acc_read_scale(const hx_csv_layout_t *csv)
-{
-    return csv != NULL ? csv->acc_scale : 1.0;
-}
-
-static const char *mg_fix(const hx_csv_layout_t *csv)
-{
-    return acc_read_scale(csv) == 1.0 ? "multiply by 0.00980665" : "read as g by --units accel=g: divide by 1000";
-}
-
-/* The remedy for a file in m/s^2 read as g (acc_read_scale 9.80665). */
-static const char *const msq_fix = "read as g by --units accel=g: leave accel=g out";
 
 const hx_csv_layout_t *hx_units_want(const hx_csv_layout_t *csv, double f_rest_mps2, double gravity_mps2,
                                      double gyro_max_rps, hx_csv_layout_t *buf)
@@ -1054,15 +1149,15 @@ const hx_csv_layout_t *hx_units_want(const hx_csv_layout_t *csv, double f_rest_m
 }
 
 static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rps, double rate_hz,
-                         const hx_csv_layout_t *csv, int acc_in_g, int walks, char *msg, size_t msg_size)
+                         const hx_csv_layout_t *csv, double acc_mean, int walks, char *msg, size_t msg_size)
 {
     /* every mistake found is named (a log in g and deg/s names both) */
     double g = gravity_mps2;
     size_t len = 0;
     int n = 0;
     hx_csv_layout_t want;
-    char give[64];
-    units_want(csv, f_rest_mps2, g, gyro_max_rps, rate_hz, acc_in_g, walks, &want);
+    char give[128]; /* a remedy: "read as mg by --units accel=mg: give --units time=ms,accel=g,gyro=deg/s" */
+    units_want(csv, f_rest_mps2, g, gyro_max_rps, rate_hz, acc_mean, walks, &want);
     msg[0] = '\0';
 #define HX_UNITS_ADD(...)                                                                                  \
     do {                                                                                                   \
@@ -1077,15 +1172,19 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
         n++;                                                                                               \
     } while (0)
     if (f_rest_mps2 > 0.0 && fabs(f_rest_mps2 / g - 1.0) > HX_GRAVITY_TOL) {
-        char fix[128] = "";
-        if (fabs(f_rest_mps2 * 9.80665 / g - 1.0) < HX_GRAVITY_TOL) {
-            snprintf(fix, sizeof fix, "not in m/s^2 but in g (%s)", fix_g(csv, &want, give, sizeof give));
-        } else if (fabs(f_rest_mps2 / acc_read_scale(csv) * 0.00980665 / g - 1.0) < HX_GRAVITY_TOL) {
-            snprintf(fix, sizeof fix, "not in m/s^2 but in mg (%s)", mg_fix(csv));
-        } else if (acc_read_scale(csv) != 1.0 && fabs(f_rest_mps2 / acc_read_scale(csv) / g - 1.0) < HX_GRAVITY_TOL) {
+        char fix[192] = "";
+        const double file = acc_file_scale(csv, f_rest_mps2, g);
+        if (file == 1.0) {
             /* the file in m/s^2 read as g: 9.8 times gravity, which said
              * only "not in m/s^2" of a file that is (until 2026-11-30) */
-            snprintf(fix, sizeof fix, "in m/s^2 already (%s)", msq_fix);
+            snprintf(fix, sizeof fix, "in m/s^2 already (%s)", acc_fix(csv, &want, file, give, sizeof give));
+        } else if (file > 0.0) {
+            snprintf(fix, sizeof fix, "not in m/s^2 but in %s (%s)", hx_accel_unit_name(file),
+                     acc_fix(csv, &want, file, give, sizeof give));
+        } else if (fabs(f_rest_mps2 * HX_G_MPS2 / g - 1.0) < HX_GRAVITY_TOL) {
+            /* in g as read, with a unit given (values in g / 9.80665 read
+             * as g): the arithmetic on top of it */
+            snprintf(fix, sizeof fix, "not in m/s^2 but in g (%s)", fix_g(csv, &want, give, sizeof give));
         } else {
             snprintf(fix, sizeof fix, "not in m/s^2");
         }
@@ -1093,9 +1192,18 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
                      f_rest_mps2, g, fix);
     }
     if (gyro_max_rps > HX_GYRO_MAX_RPS) {
-        char fix[128] = "";
+        char fix[192] = "";
         if (gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS) {
             snprintf(fix, sizeof fix, " but probably in deg/s (%s)", fix_dps(csv, &want, give, sizeof give));
+        } else if (gyro_max_rps * HX_MDPS_RPS < HX_GYRO_MAX_RPS) {
+            /* mdps (ST's SensorTile data log): "not in rad/s" alone until
+             * 2026-11-30 (the units review) */
+            if (csv != NULL && csv->gyr_scale == 1.0) {
+                hx_units_give(&want, give, sizeof give);
+            } else {
+                snprintf(give, sizeof give, "multiply by pi/180000");
+            }
+            snprintf(fix, sizeof fix, ": in mdps? (%s)", give);
         }
         HX_UNITS_ADD("the gyroscope reaches %.4g rad/s on one axis (its largest |w| on a single axis), beyond the "
                      "range of any MEMS gyro (about %.0f rad/s = 4000 deg/s per axis): the log is not in rad/s%s",
@@ -1103,11 +1211,20 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
     }
     if (gyro_rps_as_dps(csv, gyro_max_rps, walks)) {
         /* silent until 2026-11-30: exit 0 and a walk navigated with rates
-         * 57.3 times too small (the units review) */
-        HX_UNITS_ADD("the gyroscope never exceeds %.3g rad/s on one axis while the log walks (|f| spreads by %.0f "
-                     "m/s^2 or more within a second), where a walking foot turns at several rad/s in each swing: "
-                     "the log is in rad/s already? (read as deg/s by --units gyro=deg/s: leave gyro=deg/s out)",
-                     gyro_max_rps, HX_WALK_F_SD_MPS2);
+         * 57.3 times too small (the units review). Read as mdps, a file in
+         * deg/s is too small as well: told gyro=deg/s (gyro_file_dps) */
+        const char *given = csv->gyr_scale == HX_MDPS_RPS ? "mdps" : "deg/s";
+        if (gyro_file_dps(csv, gyro_max_rps)) {
+            HX_UNITS_ADD("the gyroscope never exceeds %.3g rad/s on one axis while the log walks (|f| spreads by "
+                         "%.0f m/s^2 or more within a second), where a walking foot turns at several rad/s in each "
+                         "swing: the log is in deg/s? (read as %s by --units gyro=%s: %s)",
+                         gyro_max_rps, HX_WALK_F_SD_MPS2, given, given, hx_units_give(&want, give, sizeof give));
+        } else {
+            HX_UNITS_ADD("the gyroscope never exceeds %.3g rad/s on one axis while the log walks (|f| spreads by "
+                         "%.0f m/s^2 or more within a second), where a walking foot turns at several rad/s in each "
+                         "swing: the log is in rad/s already? (read as %s by --units gyro=%s: leave gyro=%s out)",
+                         gyro_max_rps, HX_WALK_F_SD_MPS2, given, given, given);
+        }
     }
     if (rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ) {
         /* the unit that makes the rate one a foot-mounted IMU has (20 Hz to
@@ -1183,10 +1300,10 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
 /* 2 when the replayed log is not in SI units (err says why, without the
  * log's name: the JSON's units_problem), else 0. csv: as hx_units_problem's. */
 static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean, int walks,
-                       double in_rate_hz, double span_rate_hz, const hx_csv_layout_t *csv, char *err,
-                       size_t err_size)
+                       double in_rate_hz, size_t n_in, int64_t t_first_ns, int64_t t_last_ns,
+                       const hx_csv_layout_t *csv, char *err, size_t err_size)
 {
-    char msg[768], acc[320] = "", rep[320] = "";
+    char msg[768], acc[360] = "", rep[320] = ""; /* acc + "; also " + msg fit the summary's units_problem */
     const double g = (double)nav->cfg.gravity_mps2;
     double rate;
     /* |f| at rest: the alignment's, or that of a still period it refused
@@ -1194,6 +1311,9 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
     const double fn = nav->aligned ? (double)fnav_vec3_norm(nav->align.result.accel_mean_mps2)
                                    : (double)nav->align.refused_f_mps2;
     const int acc_in_g = !nav->aligned && fn == 0.0 && f_norm_mean > 0.0 && f_norm_mean < 0.5 * g;
+    /* the file's unit the mean |f| found (units_want): g, or, above
+     * HX_ACCEL_MEAN_MAX_G, mg or m/s^2 read in another unit (0: none) */
+    double acc_mean = acc_in_g ? HX_G_MPS2 : 0.0;
     int bad;
     if (!nav->aligned && !(f_norm_mean > 1e-6 * g)) {
         /* no specific force at all: not a unit but a dead channel */
@@ -1202,15 +1322,6 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
         return 2;
     }
     rate = in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz;
-    if (rate > HX_TIME_RATE_MAX_HZ && !(span_rate_hz > HX_TIME_RATE_MAX_HZ)) {
-        /* intervals too short, but not the log's span for its samples:
-         * stamps taken in bursts (a logger stamping a batch of samples as
-         * it reads them, microseconds apart), which no unit explains; the
-         * too-fast error needs both (replay exited 1 on such a log, naming
-         * a coarser unit that made it 1000 times too slow: the
-         * false-positive review, 2026-11-30) */
-        rate = 0.0;
-    }
     if (hx_nav_coarse_stamps(&nav->stats) && rate > 0.0 && rate < HX_RATE_MIN_HZ) {
         /* a low rate from stamps that repeat is no unit (float32 seconds
          * at 1e6 s step by 62.5 ms: "16 Hz", whose remedy read "divide by
@@ -1221,6 +1332,15 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
                  100.0 * (double)nav->stats.duplicates / (double)nav->stats.samples, 1.0 / rate, rate);
         rate = 0.0;
     }
+    /* intervals too short (or too long), but not the log's span for its
+     * samples: stamps taken in bursts (a logger stamping a batch of samples
+     * as it reads them, microseconds apart), which no unit explains; the
+     * time error needs both (replay exited 1 on such a log, naming a
+     * coarser unit that made it 1000 times too slow: the false-positive
+     * review, 2026-11-30). The test of info, allan, psd and simgap too
+     * (hx_time_unit_rate); after the repeated stamps' test, whose slow rate
+     * the span does not explain either */
+    rate = hx_time_unit_rate(rate, n_in, t_first_ns, t_last_ns);
     if (acc_in_g) {
         /* no rest found (a gyro in deg/s hides every still period): the
          * mean |f| of the whole log stands in, but only to reveal a log in
@@ -1228,7 +1348,7 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
          * Its remedy names the other items found too (units_want) */
         hx_csv_layout_t want;
         char give[64];
-        units_want(csv, fn, g, gyro_max_rps, rate, 1, walks, &want);
+        units_want(csv, fn, g, gyro_max_rps, rate, acc_mean, walks, &want);
         snprintf(acc, sizeof acc,
                  "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 averages %.4g or more: "
                  "the log is probably in g (%s)",
@@ -1244,6 +1364,15 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
          * as the mg mark's; "raw counts?" until 2026-11-30) */
         const double in_mps2 = f_norm_mean / acc_read_scale(csv) / g;
         const int msq = acc_read_scale(csv) != 1.0 && in_mps2 > 0.75 && in_mps2 < HX_ACCEL_MEAN_MAX_G;
+        hx_csv_layout_t want;
+        char fix[128] = "";
+        /* the remedy names the other items found too (units_want), with
+         * the accelerometer's unit the file's; so do the others */
+        acc_mean = msq ? 1.0 : mg ? HX_MG_MPS2 : 0.0;
+        units_want(csv, fn, g, gyro_max_rps, rate, acc_mean, walks, &want);
+        if (msq || mg) {
+            acc_fix(csv, &want, acc_mean, fix, sizeof fix);
+        }
         snprintf(acc, sizeof acc,
                  "the accelerometer averages |f| = %.4g over the log, where one in m/s^2 on a foot averages a few "
                  "times %.4g at most: the log is %s%s%s",
@@ -1251,9 +1380,9 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
                  msq  ? "in m/s^2 already? ("
                  : mg ? "not in m/s^2: in mg? ("
                       : "not in m/s^2: raw counts? (scale them by the sensor's sensitivity)",
-                 msq ? msq_fix : mg ? mg_fix(csv) : "", msq || mg ? ")" : "");
+                 fix, msq || mg ? ")" : "");
     }
-    bad = units_problem(fn, g, gyro_max_rps, rate, csv, acc_in_g, walks, msg, sizeof msg);
+    bad = units_problem(fn, g, gyro_max_rps, rate, csv, acc_mean, walks, msg, sizeof msg);
     if (rep[0] != '\0') {
         size_t len = strlen(msg);
         if (len < sizeof msg) {
@@ -1290,6 +1419,8 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     hx_log_t raw, res;
     fnav_status_t st;
     hx_format_t in_fmt; /* the format read: the units check's remedy */
+    size_t span_n = 0;  /* the input's samples and their first and last stamps (the units check's span; */
+    int64_t span_t0 = 0, span_t1 = 0; /* with --rate the input's, not the resampled grid's) */
     int rc = 0;
     memset(&pc, 0, sizeof pc);
     memset(&raw, 0, sizeof raw);
@@ -1313,6 +1444,11 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         if (lrc > 0) {
             snprintf(err, err_size, "%s", raw.error);
             rc = 1;
+        }
+        if (raw.n > 0u) {
+            span_n = raw.n;
+            span_t0 = raw.t_ns[0];
+            span_t1 = raw.t_ns[raw.n - 1u];
         }
         if (hx_nav_resample(&raw, rate_hz, (double)cfg->max_gap_s, &res, &dups, &fs, err, err_size) != 0) {
             hx_log_free(&raw);
@@ -1527,12 +1663,15 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         char msg[sizeof traj->units_problem];
         hx_csv_layout_t lay;
         int u;
+        if (r != NULL && pc.have_t_last) {
+            span_n = (size_t)pc.n_read;
+            span_t0 = pc.t_first_ns;
+            span_t1 = pc.t_last_ns;
+        }
         u = units_check(&nav, pc.gyro_max_rps, pc.n_read > 0 ? pc.f_norm_sum / (double)pc.n_read : 0.0,
                         hx_walk_seen(&pc.walk),
                         traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0,
-                        pc.n_read > 1 && pc.t_last_ns > pc.t_first_ns
-                            ? 1e9 * (double)(pc.n_read - 1) / (double)(pc.t_last_ns - pc.t_first_ns)
-                            : 0.0,
+                        span_n, span_t0, span_t1,
                         (flags & HX_REPLAY_UNITS_OPT) ? hx_units_layout(in_fmt, &lay) : NULL, msg, sizeof msg);
         if (traj != NULL) {
             /* the JSON's units_problem ("" when none) */

@@ -210,6 +210,15 @@ typedef struct {
     int open;
 } hx_walk_t;
 void hx_walk_push(hx_walk_t *w, int64_t t_ns, double f_norm_mps2);
+/** A window closed by its owner (allan's one-second windows of samples,
+ *  the same idea as hx_walk_push's of stamps): n samples whose |f| (m/s^2)
+ *  sums to s and its square to s2, n_off of them 2 m/s^2 or more off
+ *  gravity (hx_walk_off). Counted in w->windows when it spreads as a
+ *  walking foot's: the one test of hx_walk_push's windows too. */
+void hx_walk_window(hx_walk_t *w, long n, double s, double s2, long n_off);
+/** 1 when a sample's |f| (m/s^2) is 2 m/s^2 or more off gravity: the
+ *  n_off of hx_walk_window. */
+int hx_walk_off(double f_norm_mps2);
 int hx_walk_seen(const hx_walk_t *w);
 /** csv with the unit items hx_units_problem finds for these arguments (no
  *  rate) in *buf, NULL for csv NULL: the layout given to

@@ -1487,7 +1487,10 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
     /* a static log's units warning and time warning each name the items
      * of both, one --units value (a second --units replaces the first) */
     const int slow = r->domain == 1 && !log->meta.rate_nominal;
-    const hx_csv_layout_t *csv_t = slow ? hx_time_unit_layout(r->rate_hz, csv, &lay_t) : csv;
+    /* the rate the time unit is judged at: the log's span too (stamps in
+     * bursts are no unit) */
+    const double rate_u = hx_log_time_unit_rate(log, r->rate_hz);
+    const hx_csv_layout_t *csv_t = slow ? hx_time_unit_layout(rate_u, csv, &lay_t) : csv;
     const hx_csv_layout_t *want = NULL;
     double f_med;
     char give[64];
@@ -1524,7 +1527,7 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
                      sqrt(log->acc[k][0] * log->acc[k][0] + log->acc[k][1] * log->acc[k][1] +
                           log->acc[k][2] * log->acc[k][2]));
     }
-    bad = hx_units_problem(f_med, 9.80665, wmax, r->domain == 2 ? r->rate_hz : 0.0, csv_t, hx_walk_seen(&walk), msg,
+    bad = hx_units_problem(f_med, 9.80665, wmax, r->domain == 2 ? rate_u : 0.0, csv_t, hx_walk_seen(&walk), msg,
                            sizeof msg);
     want = hx_units_want(csv, f_med, 9.80665, wmax, &lay_w);
     free(wm);
@@ -1556,7 +1559,7 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
      * milliseconds (us, ns) explains is named, as allan and psd name it:
      * until 2026-11-29 the first minute of ADIS16405 log 1 with its time in
      * ms was analysed at 0.1 Hz without a word (taus 1000 times too long) */
-    if (slow && hx_time_unit_hint(r->rate_hz, want, msg, sizeof msg)) {
+    if (slow && hx_time_unit_hint(rate_u, want, msg, sizeof msg)) {
         hx_warn("simgap", "%s: %s; the taus and frequencies are read at %.3g Hz", path, msg, r->rate_hz);
     }
     return 0;

@@ -2133,6 +2133,41 @@ static void test_format_names(void **state)
  * app's export: ns stamps, g, deg/s) read without an awk conversion
  * (docs/log-format.md, "Another layout"). Until 2026-11-30 such a file had to
  * be rewritten first. */
+/* The rate the time-unit checks judge (hx_time_unit_rate): the span of the
+ * samples has the last word on a rate out of 20 Hz - 100 kHz. Until
+ * 2026-11-30 info, allan, psd and simgap judged the median interval alone
+ * and told stamps in bursts time=ms (tests/cli/test_foundation.sh). */
+static void test_time_unit_rate(void **state)
+{
+    (void)state;
+    /* 4 samples 5 us apart every 10 ms: 200 kHz from the median interval,
+     * 16539 samples over 41.34 s (400 Hz): no unit to question */
+    assert_true(hx_time_unit_rate(2e5, 16539u, 10000000, 41350015000) == 0.0);
+    /* one stamp per 100 samples, 2 s apart: 0.5 Hz from the distinct
+     * stamps, 50 Hz over the log */
+    assert_true(hx_time_unit_rate(0.5, 16539u, 0, 330000000000) == 0.0);
+    /* a wrong unit moves the span alike: ms read as ns (100 MHz, 300
+     * samples 10 ns apart), ms read as s (0.1 Hz, 300 samples 10 s apart) */
+    assert_true(hx_time_unit_rate(1e8, 300u, 0, 2990) == 1e8);
+    assert_true(hx_time_unit_rate(0.1, 300u, 0, 2990000000000) == 0.1);
+    /* the span on the other side of the band still disagrees: no unit */
+    assert_true(hx_time_unit_rate(2e5, 5u, 0, 4000000000) == 0.0);
+    /* a rate in the band stays, whatever the span (a log with a day's
+     * pause is no unit mistake); 0 (no rate) stays 0 */
+    assert_true(hx_time_unit_rate(400.0, 1000u, 0, 86400000000000) == 400.0);
+    assert_true(hx_time_unit_rate(400.0, 1000u, 0, 2497500) == 400.0);
+    assert_true(hx_time_unit_rate(0.0, 1000u, 0, 2497500000) == 0.0);
+    /* no span (one sample, the last stamp not after the first): the
+     * intervals alone */
+    assert_true(hx_time_unit_rate(2e5, 1u, 5, 5) == 2e5);
+    assert_true(hx_time_unit_rate(2e5, 100u, 7000, 7000) == 2e5);
+    assert_true(hx_time_unit_rate(0.1, 100u, 9000, 1000) == 0.1);
+    /* the band's edges are in it: 20 Hz and 100 kHz over the span */
+    assert_true(hx_time_unit_rate(0.5, 21u, 0, 1000000000) == 0.0);
+    assert_true(hx_time_unit_rate(2e5, 100001u, 0, 1000000000) == 0.0);
+    assert_true(hx_time_unit_rate(2e5, 100002u, 0, 1000000000) == 2e5);
+}
+
 static void test_csv_layout(void **state)
 {
     char p[512], err[320];
@@ -2178,6 +2213,10 @@ static void test_csv_layout(void **state)
             { "time=ms", "1.0000005", 1000001LL, 1.0, 1.0 },
             { "time=us,accel=mps2", "1500.2504", 1500250LL, 1.0, 1.0 },
             { "time=ns", "42", 42LL, 1.0, 1.0 },
+            /* mg and mdps (ST's SensorTile data log writes AccX [mg] and
+             * GyroX [mdps]; the units review, 2026-11-30) */
+            { "accel=mg,gyro=mdps", "1", 1000000000LL, 0.00980665, 3.14159265358979323846 / 180.0 / 1000.0 },
+            { "gyro=mdeg/s", "1", 1000000000LL, 1.0, 3.14159265358979323846 / 180.0 / 1000.0 },
             { "time=ns", "1.5e3", 1500LL, 1.0, 1.0 },
             /* more integer digits than 9e9 s holds, scaled down by an
              * exponent: a number, not "beyond 9e9 s" (it was, 2026-11-30) */
@@ -2199,6 +2238,38 @@ static void test_csv_layout(void **state)
             assert_true((float)ra.s[0].accel_mps2[2] == (float)(9.5 * k[i].acc));
             assert_true((float)ra.s[0].gyro_rps[0] == (float)(2.0 * k[i].gyr));
         }
+    }
+    /* 1000 mg is g and 90000 mdps 90 deg/s, to the float32 the core takes:
+     * the same sample as 1 g and 90 deg/s read with accel=g,gyro=deg/s */
+    {
+        float a_g, w_dps;
+        tmp_path(p, sizeof p, ".csv");
+        write_text(p, "t,ax,ay,az,gx,gy,gz\n0,0,0,1,90,0,0\n");
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, "accel=g,gyro=deg/s", err, sizeof err), 0);
+        hx_reader_set_layout(&l);
+        assert_int_equal(read_all(p, HX_FMT_CSV, 0.0, &ra, NULL), 0);
+        a_g = (float)ra.s[0].accel_mps2[2];
+        w_dps = (float)ra.s[0].gyro_rps[0];
+        assert_true(a_g == 9.80665f);
+        write_text(p, "t,ax,ay,az,gx,gy,gz\n0,0,0,1000,90000,0,0\n");
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, "accel=mg,gyro=mdps", err, sizeof err), 0);
+        hx_reader_set_layout(&l);
+        assert_int_equal(read_all(p, HX_FMT_CSV, 0.0, &ra, NULL), 0);
+        assert_true((float)ra.s[0].accel_mps2[2] == a_g);
+        assert_true((float)ra.s[0].gyro_rps[0] == w_dps);
+        assert_true((float)ra.s[0].gyro_rps[0] == (float)(3.14159265358979323846 / 2.0));
+    }
+    /* the remedy's --units value names every item in its unit, the
+     * synopsis's order (hx_units_give): mg and mdps as well as g and deg/s */
+    {
+        char give[96];
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, "gyro=mdps,accel=mg,time=us", err, sizeof err), 0);
+        assert_string_equal(hx_units_give(&l, give, sizeof give), "give --units time=us,accel=mg,gyro=mdps");
+        assert_int_equal(hx_csv_units_parse(&l, "accel=g,gyro=deg/s,time=s", err, sizeof err), 0);
+        assert_string_equal(hx_units_give(&l, give, sizeof give), "give --units accel=g,gyro=deg/s");
     }
     /* a mapped column the header lacks: the error names it and --columns */
     tmp_path(p, sizeof p, ".csv");
@@ -2271,6 +2342,7 @@ static void test_csv_layout(void **state)
             { 0, "t", "'='" },                { 0, "t=", "empty" },
             { 1, "time", "'='" },             { 1, "time=min", "s, ms, us or ns" },
             { 1, "accel=G2", "m/s2" },        { 1, "gyro=rpm", "rad/s" },
+            { 1, "accel=ug", "mg" },          { 1, "gyro=udps", "mdps" },
             { 1, "speed=1", "unknown" },      { 1, "time=ms,time=ns", "twice" },
         };
         size_t i;
@@ -2740,6 +2812,7 @@ int main(void)
         cmocka_unit_test(test_mtmgr_refused),
         cmocka_unit_test(test_mtmgr_detect),
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
+        cmocka_unit_test(test_time_unit_rate),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);
 }

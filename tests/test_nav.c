@@ -1780,6 +1780,102 @@ static void test_resampler_time_jump(void **state)
     hx_log_free(&in);
 }
 
+/* The walk test of the units check, fed two ways: by stamps
+ * (hx_walk_push, replay, info, simgap) and by a caller's own windows of
+ * samples (hx_walk_window, allan's one-second windows): the same count.
+ * 100 Hz: 5 s of swinging |f| (5 and 15 m/s^2 in turn: sd 5, every sample
+ * off gravity), 5 s at rest, 5 s at rest with one tap a second (3 samples
+ * of 25 m/s^2: sd 2.7, but 3 % of the samples off gravity, below the
+ * tenth a walk needs). */
+static void test_walk_window(void **state)
+{
+    hx_walk_t by_stamp, by_window;
+    double s = 0.0, s2 = 0.0;
+    long n = 0, off = 0;
+    int i;
+    (void)state;
+    memset(&by_stamp, 0, sizeof by_stamp);
+    memset(&by_window, 0, sizeof by_window);
+    for (i = 0; i < 1501; i++) {
+        const double f = i < 500 ? (i % 2 ? 15.0 : 5.0) : i >= 1000 && i % 100 < 3 ? 25.0 : 9.80665 + 0.001 * (i % 3);
+        hx_walk_push(&by_stamp, (int64_t)i * 10000000, f); /* the 1501st sample closes the 15th second */
+        if (i == 1500) {
+            break;
+        }
+        s += f;
+        s2 += f * f;
+        off += hx_walk_off(f);
+        if (++n == 100) {
+            hx_walk_window(&by_window, n, s, s2, off);
+            s = s2 = 0.0;
+            n = off = 0;
+        }
+    }
+    assert_int_equal(by_stamp.windows, 5);
+    assert_int_equal(by_window.windows, 5);
+    assert_true(hx_walk_seen(&by_window));
+    assert_true(hx_walk_off(11.81) && !hx_walk_off(11.8) && hx_walk_off(7.8) && !hx_walk_off(9.8));
+    /* fewer than 10 samples: no window counts */
+    memset(&by_window, 0, sizeof by_window);
+    hx_walk_window(&by_window, 9, 9.0 * 10.0, 9.0 * 125.0, 9);
+    assert_int_equal(by_window.windows, 0);
+}
+
+/* Stamps in bursts: the filter takes the input as uniform at its median
+ * rate, which is no sampling period here. 400 Hz in packets of 4 samples
+ * stamped 5 us apart every 10 ms (200 kHz from the median interval), or
+ * sharing one stamp (100 Hz from the distinct stamps): refused, naming the
+ * rate over the span for --input-rate. Until 2026-11-30 both were
+ * resampled (exit 0): the first smeared seconds into each output, the
+ * second kept one sample of four. A log that loses a third of its samples
+ * in small gaps, or repeats a quarter of its stamps, is still resampled. */
+static void test_resampler_bursts(void **state)
+{
+    hx_log_t in, out;
+    size_t n = 4000, i;
+    long dups = 0;
+    double fs = 0.0;
+    char err[512];
+    int kind;
+    (void)state;
+    log_alloc(&in, n);
+    in.n = n;
+    for (kind = 0; kind < 4; kind++) {
+        for (i = 0; i < n; i++) {
+            switch (kind) {
+            case 0: /* 4 samples 5 us apart every 10 ms */
+                in.t_ns[i] = (int64_t)(i / 4u) * 10000000 + (int64_t)(i % 4u) * 5000;
+                break;
+            case 1: /* 4 samples to a stamp every 10 ms */
+                in.t_ns[i] = (int64_t)(i / 4u) * 10000000;
+                break;
+            case 2: /* 400 Hz, one sample of three lost (gaps closed up) */
+                in.t_ns[i] = (int64_t)(i + i / 2u) * 2500000;
+                break;
+            default: /* 400 Hz, one stamp of four repeated */
+                in.t_ns[i] = (int64_t)(i - i / 4u) * 2500000;
+                break;
+            }
+            in.acc[i][2] = -9.8;
+        }
+        err[0] = '\0';
+        if (kind < 2) {
+            assert_int_equal(hx_nav_resample(&in, 100.0, 0.5, &out, &dups, &fs, err, sizeof err), -1);
+            assert_non_null(strstr(err, "--rate: the time stamps come in bursts"));
+            assert_non_null(strstr(err, kind == 0 ? "gives 200000 Hz" : "gives 100 Hz"));
+            assert_non_null(strstr(err, kind == 0 ? "stamped close together" : "share one stamp"));
+            /* 3999 intervals over 9.99 s (kind 0: 9.990015 s) */
+            assert_non_null(strstr(err, "4000 samples span 9.99 s, 400.3 Hz"));
+            assert_non_null(strstr(err, "give --input-rate 400.3"));
+        } else {
+            assert_int_equal(hx_nav_resample(&in, 100.0, 0.5, &out, &dups, &fs, err, sizeof err), 0);
+            FNAV_ASSERT_CLOSE(fs, 400.0, 0.0, 1e-9);
+            hx_log_free(&out);
+        }
+    }
+    hx_log_free(&in);
+}
+
 /* A rate that is no integer fraction of the input's (250 -> 100 Hz, like
  * openshoe_gx2 in the rate experiment): the output instants fall between
  * input samples. A 30 Hz tone, inside the pass band, keeps its amplitude
@@ -2404,6 +2500,8 @@ int main(void)
         cmocka_unit_test(test_resampler),
         cmocka_unit_test(test_resampler_fractional),
         cmocka_unit_test(test_resampler_time_jump),
+        cmocka_unit_test(test_resampler_bursts),
+        cmocka_unit_test(test_walk_window),
         cmocka_unit_test(test_sat_two_runs),
         cmocka_unit_test(test_note_thresholds),
         cmocka_unit_test(test_health_keys),

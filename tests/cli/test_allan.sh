@@ -842,6 +842,14 @@ expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds?
 expect_exit 0 "a static log in milliseconds read as ns" "$H" allan "$T/touch_ms.csv" --no-sim --quiet --units time=ns
 expect_err "are the time stamps in nanoseconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "stamps too fast: ms read as ns told time=ms"
+# the same static log stamped in bursts (packets of 4 samples stamped 5 us apart, every 40 ms: 100 Hz over the log),
+# in us read as such: allan warned "are the time stamps in microseconds? (they look like milliseconds, a 200 Hz log:
+# give --units time=ms)", 1000 times too slow (the units review, 2026-11-30); replay's test of the span now
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 40000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
+    "$T/touch0.csv" > "$T/touch_burst.csv"
+expect_exit 0 "a static log stamped in bursts, read as us" "$H" allan "$T/touch_burst.csv" --no-sim --quiet --units time=us
+if grep -q "are the time stamps in\|look like" "$T/err"; then fail "allan: stamps in bursts told a time unit: $(cat "$T/err")"; else
+    pass "allan: stamps in bursts (100 Hz over the log) told no time unit"; fi
 # ... and with --profile the warning was followed by "no identification for ax (too little data?)", sending the user
 # to the record's length; the error now names the time unit as the likely cause (a user review, 2026-11-29)
 expect_exit 1 "a static log with its time in milliseconds, a profile" "$H" allan "$T/touch_ms.csv" --no-sim --quiet \
@@ -862,6 +870,20 @@ awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 6000; i++)
 expect_exit 1 "a static gyro in deg/s" "$H" allan "$T/dps.csv" --no-sim --quiet
 expect_err "a gyro in deg/s at rest also reads so: give --units gyro=deg/s)" \
     "deg/s named as a cause, with the --units item for the CSV (it said multiply by pi/180 until 2026-11-30)"
+# a walk in rad/s read with --units gyro=deg/s (57.3 times too small): allan judged no walk (replay, info and simgap
+# did, from hx_walk_t) and its motion error told "a gyro in deg/s at rest also reads so: multiply by pi/180", of a
+# gyro read as deg/s already; allan's own one-second windows now feed the walk test (the units review, 2026-11-30):
+# the rad/s mark is named and the deg/s clause left out. The same walk without --units keeps the clause
+expect_exit 1 "a walk in rad/s read with gyro=deg/s" "$H" allan vectors/nav/golden/gx2_walk2.csv --no-sim --quiet --units gyro=deg/s
+expect_err "the log is in rad/s already? (read as deg/s by --units gyro=deg/s: leave gyro=deg/s out)" \
+    "a walk in rad/s read as deg/s: the rad/s mark named, as replay names it"
+if grep -q "multiply by pi/180" "$T/err"; then fail "a gyro read as deg/s told to multiply by pi/180 again"; else
+    pass "a gyro read as deg/s not told to multiply by pi/180 again"; fi
+expect_exit 1 "the walk in rad/s" "$H" allan vectors/nav/golden/gx2_walk2.csv --no-sim --quiet
+expect_err "the log moves: .*(a gyro in deg/s at rest also reads so: give --units gyro=deg/s)" \
+    "the walk in rad/s: the moving error keeps the deg/s clause"
+if grep -q "rad/s already" "$T/err"; then fail "the walk in rad/s named as rad/s read as deg/s"; else
+    pass "the walk in rad/s: no rad/s mark"; fi
 
 A=$(data adis16405_static/adis16405_imu1_100Hz.csv.gz)
 if [ -n "$A" ]; then

@@ -81,6 +81,34 @@ expect_err "tms.csv: the samples are 1e-08 s apart (1e+08 Hz): are the time stam
 # the remedy followed: no question
 expect_exit 0 "info on the log in milliseconds read with --units time=ms" "$H" info "$T/tms.csv" --units time=ms
 if grep -q "look like" "$T/err"; then fail "ms read as ms: a unit still named"; else pass "ms read as ms: no unit named"; fi
+# stamps in bursts: a logger that stamps each packet of 4 samples as it reads them, 5 us apart, every 10 ms (the
+# walk of vectors/walk.bin, 400 Hz over the log), in microseconds read as such: the median interval (5 us, 200 kHz)
+# is no sampling period, and info warned "are the time stamps in microseconds? (they look like milliseconds, a 200 Hz
+# log: give --units time=ms)", a remedy that makes the log 1000 times too slow, where replay, which judges the log's
+# span too (16539 samples over 41.3 s, 400 Hz), said nothing (the units review, 2026-11-30); one test now
+# (hx_time_unit_rate) for info, allan, psd, simgap and replay
+expect_exit 0 "convert the walk to CSV (stamps in bursts)" "$H" convert vectors/walk.bin "$T/bw.csv"
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/burst_us.csv"
+expect_exit 0 "info on stamps in bursts, read as us" "$H" info "$T/burst_us.csv" --units time=us --json "$T/burst_us.json"
+if grep -q "are the time stamps in\|look like" "$T/err"; then fail "info: stamps in bursts (400 Hz over the log) told a time unit: $(cat "$T/err")"; else
+    pass "info: stamps in bursts (400 Hz over the log) told no time unit"; fi
+json "$T/burst_us.json" 'j["units_problem"] is None' && pass "info --json: stamps in bursts, units_problem null" ||
+    fail "info --json: stamps in bursts, units_problem $(grep units_problem "$T/burst_us.json")"
+# one stamp for each packet of 100 samples, 2 s apart (50 Hz over the log): "the samples are 2 s apart (0.5 Hz): are
+# the time stamps in seconds? (they look like milliseconds, a 500 Hz log: give --units time=ms)" until then too
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", int(i / 100) * 2, $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/pkt2s.csv"
+expect_exit 0 "info on one stamp per 100 samples, 2 s apart" "$H" info "$T/pkt2s.csv"
+if grep -q "are the time stamps in\|look like" "$T/err"; then fail "info: one stamp per packet (50 Hz over the log) told a time unit: $(cat "$T/err")"; else
+    pass "info: one stamp per packet (50 Hz over the log) told no time unit"; fi
+# the same walk stamped evenly in microseconds (2.5 ms apart) and read as ns is in a wrong unit, its span as fast
+# as its intervals (400 kHz): still named
+awk -F, 'NR == 1 { print; next } { printf "%d,%s,%s,%s,%s,%s,%s\n", (NR - 2) * 2500, $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/even_us.csv"
+expect_exit 0 "info on even stamps in us, read as ns" "$H" info "$T/even_us.csv" --units time=ns
+expect_err "are the time stamps in nanoseconds? (they look like microseconds, a 400 Hz log: give --units time=us)" \
+    "info: even stamps in us read as ns still told time=us"
 # a format --units does not apply to keeps the arithmetic
 expect_exit 0 "convert the log in ms to .bin" "$H" convert "$T/tms.csv" "$T/tms.bin"
 expect_exit 0 "info on a .bin stamped in milliseconds" "$H" info "$T/tms.bin"

@@ -375,6 +375,16 @@ expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds?
 expect_exit 0 "time stamps in milliseconds read as ns" "$H" psd "$T/tms.csv" --units time=ns
 expect_err "the samples are 1e-08 s apart (1e+08 Hz): are the time stamps in nanoseconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "stamps too fast: ms read as ns told time=ms"
+# stamps in bursts (packets of 4 samples stamped 5 us apart as a logger reads them, every 10 ms: the walk of
+# vectors/walk.bin, 400 Hz over the log), in us read as such: psd warned "are the time stamps in microseconds? (they
+# look like milliseconds, a 200 Hz log: give --units time=ms)", 1000 times too slow, where replay judges the log's
+# span too (the units review, 2026-11-30); the same test now (hx_time_unit_rate)
+expect_exit 0 "convert the walk to CSV (stamps in bursts)" "$H" convert vectors/walk.bin "$T/bw.csv"
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/burst_us.csv"
+expect_exit 0 "stamps in bursts, read as us" "$H" psd "$T/burst_us.csv" --units time=us
+if grep -q "are the time stamps in\|look like" "$T/err"; then fail "psd: stamps in bursts told a time unit: $(cat "$T/err")"; else
+    pass "psd: stamps in bursts (400 Hz over the log) told no time unit"; fi
 
 O=$(data openshoe_c_820hz/OpenShoeDataSet.txt)
 if [ -n "$O" ]; then

@@ -807,6 +807,12 @@ if grep -q "in seconds?\|in milliseconds" "$T/err"; then fail "5 Hz read as ns: 
 expect_exit 1 "time in milliseconds read as ns" "$H" replay "$T/in_ms.csv" --quiet --units time=ns
 expect_err "are the time stamps in nanoseconds? (they look like milliseconds: give --units time=ms)" \
     "ms read as ns: the stamps too fast named, time=ms the remedy"
+# ... also with --rate: the span was the resampled grid's (100 Hz), so the too-fast error, which needs the span too,
+# was never given and replay said only that no still period was found (the units review, 2026-11-30); the span is
+# the input's now
+expect_exit 1 "time in milliseconds read as ns, --rate 100" "$H" replay "$T/in_ms.csv" --quiet --units time=ns --rate 100
+expect_err "are the time stamps in nanoseconds? (they look like milliseconds: give --units time=ms)" \
+    "ms read as ns, --rate 100: the stamps too fast named, time=ms the remedy"
 # stamps taken on arrival (a logger that receives 4 samples at once and stamps each as it reads it, 5 us
 # apart, every 16 ms): the median interval is 5 us (200 kHz), but the log spans 12 s for its 2998 samples,
 # 250 Hz: no unit makes that too fast. Replay exited 1 ("are the time stamps in microseconds? (they look like
@@ -817,6 +823,33 @@ awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", 
 expect_exit 0 "stamps in bursts, read as us" "$H" replay "$T/in_burst_us.csv" --quiet --units time=us
 if grep -q "are the time stamps in" "$T/err"; then fail "stamps in bursts (250 Hz over the log) told they are too fast"; else
     pass "stamps in bursts (250 Hz over the log): no time unit questioned"; fi
+# ... and resampled with --rate: the resampler takes the input as uniform at 1 / its median interval (5 us, 200 kHz),
+# so its low-pass, 40 times the rate ratio of samples long, smeared seconds of the walk into each output: exit 0 and
+# 0 strides (the walk of vectors/walk.bin stamped so, 4 samples every 10 ms, 400 Hz over the log); one stamp shared by
+# the 4 samples (100 Hz from the distinct stamps) kept one sample of four. Both are now refused, naming the rate
+# over the span for --input-rate (the units review, 2026-11-30); the remedy followed gives the trajectory of the
+# same walk stamped evenly at 400 Hz, to the byte
+expect_exit 0 "convert the walk to CSV (bursts, --rate)" "$H" convert vectors/walk.bin "$T/bw.csv"
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/bw_burst.csv"
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000, $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/bw_shared.csv"
+awk -F, 'NR == 1 { print; next } { printf "%.4f,%s,%s,%s,%s,%s,%s\n", (NR - 2) / 400, $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/bw_even.csv"
+expect_exit 1 "stamps in bursts, --rate 100" "$H" replay "$T/bw_burst.csv" --quiet --units time=us --rate 100 --out "$T/bw_b.csv"
+expect_err "replay: error: --rate: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; resampling needs each sample's own time: leave the time column out and give --input-rate 400 (docs/harness.md, \"--rate HZ (resampling)\")" \
+    "stamps in bursts, --rate: refused, the cause and --input-rate named"
+expect_exit 1 "samples sharing a stamp, --rate 50" "$H" replay "$T/bw_shared.csv" --quiet --units time=us --rate 50
+expect_err "the time stamps come in bursts (samples that share one stamp?): 1 / their median interval gives 100 Hz, but the 16539 samples span 41.34 s, 400 Hz" \
+    "samples sharing a stamp, --rate: refused (one sample of four was kept)"
+expect_exit 1 "convert --rate on stamps in bursts" "$H" convert "$T/bw_burst.csv" "$T/bw_c.csv" --units time=us --rate 100
+expect_err "leave the time column out and give --input-rate 400 (docs/harness.md" "convert --rate: the same refusal, in full"
+cut -d, -f2- "$T/bw_burst.csv" > "$T/bw_not.csv"
+expect_exit 0 "the remedy: no time column, --input-rate 400 --rate 100" "$H" replay "$T/bw_not.csv" --quiet --input-rate 400 \
+    --rate 100 --out "$T/bw_not_traj.csv"
+expect_exit 0 "the walk stamped evenly at 400 Hz, --rate 100" "$H" replay "$T/bw_even.csv" --quiet --rate 100 --out "$T/bw_even_traj.csv"
+cmp -s "$T/bw_not_traj.csv" "$T/bw_even_traj.csv" && pass "the remedy gives the evenly stamped walk's trajectory" ||
+    fail "the remedy's trajectory differs from the evenly stamped walk's"
 # a t column that counts samples (0, 1, 2, ...), as a logger's sample number often does: it was told only to
 # divide by 1000 (right for a 1 kHz log in ms, wrong for a 250 Hz one); the remedy for a counter, leaving the
 # column out and giving --input-rate, is named too (the gait review, 2026-11-30)
@@ -834,23 +867,40 @@ if grep -q "count samples" "$T/err"; then fail "stamps in ms (4 ms apart) told t
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 0.00980665, $3 / 0.00980665, $4 / 0.00980665, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_mg.csv"
 expect_exit 1 "accelerometer in mg" "$H" replay "$T/in_mg.csv" --quiet --json "$T/in_mg.json"
-expect_err "not in m/s^2: in mg? (multiply by 0.00980665)" "a log in mg is named as such"
+# the remedy: --units accel=mg, which --units has since the units review (2026-11-30: "multiply by 0.00980665")
+expect_err "not in m/s^2: in mg? (give --units accel=mg)" "a log in mg is named as such, the --units item the remedy"
 # in the JSON too, as info's units_problem: the error's message without the path (it had no trace of it)
-json "$T/in_mg.json" 'j["units_problem"].startswith("the accelerometer averages |f| = ") and "in mg? (multiply by 0.00980665)" in j["units_problem"]' &&
+json "$T/in_mg.json" 'j["units_problem"].startswith("the accelerometer averages |f| = ") and "in mg? (give --units accel=mg)" in j["units_problem"]' &&
     pass "replay --json: units_problem names mg" || fail "replay --json of a log in mg: units_problem $(grep units_problem "$T/in_mg.json")"
 expect_exit 0 "info on a log in mg" "$H" info "$T/in_mg.csv"
-expect_out "units       NOT SI: .*not in m/s^2 but in mg (multiply by 0.00980665)" "info names mg too"
+expect_out "units       NOT SI: .*not in m/s^2 but in mg (give --units accel=mg)" "info names mg too, and accel=mg"
+# the remedy followed: no unit named, the walk navigated
+expect_exit 0 "accelerometer in mg, read with accel=mg" "$H" replay "$T/in_mg.csv" --quiet --units accel=mg
+expect_exit 0 "info on a log in mg, read with accel=mg" "$H" info "$T/in_mg.csv" --units accel=mg
+if grep -q "NOT SI" "$T/out"; then fail "mg read with accel=mg: info still finds a unit problem"; else
+    pass "mg read with accel=mg: no unit problem"; fi
+# a format --units does not apply to keeps the arithmetic
+expect_exit 0 "convert the log in mg to .bin" "$H" convert "$T/in_mg.csv" "$T/in_mg.bin"
+expect_exit 1 "a .bin in mg" "$H" replay "$T/in_mg.bin" --quiet
+expect_err "not in m/s^2: in mg? (multiply by 0.00980665)" "a .bin in mg: the arithmetic remedy"
+# mg and deg/s together: one --units value naming both items, in both parts of the message
+awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.7g,%.7g,%.7g\n", $1, $2, $3, $4, $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232 }' \
+    "$T/in_mg.csv" > "$T/in_mg_dps.csv"
+expect_exit 0 "info on a log in mg and deg/s" "$H" info "$T/in_mg_dps.csv"
+expect_out "units       NOT SI: .*not in m/s^2 but in mg (give --units accel=mg,gyro=deg/s).*not in rad/s but probably in deg/s (give --units accel=mg,gyro=deg/s)" \
+    "mg and deg/s: each remedy names accel=mg,gyro=deg/s"
 # the same log read with --units accel=g: 1000 times too large once read as g; mg was judged on the values as
 # read (9.8 times mg), so replay said "raw counts? (scale them by the sensor's sensitivity)" and info named no
-# unit; mg is now judged on the file's values, and the remedy keeps the option given: divide by 1000
+# unit; mg is now judged on the file's values, and the remedy keeps the option given: divide by 1000, until the
+# units review (2026-11-30) gave --units accel=mg, now named instead
 expect_exit 1 "accelerometer in mg, read with accel=g" "$H" replay "$T/in_mg.csv" --quiet --units accel=g
-expect_err "the log is not in m/s^2: in mg? (read as g by --units accel=g: divide by 1000) (docs/log-format.md)" \
-    "mg read with accel=g: named as mg, the remedy dividing by 1000"
+expect_err "the log is not in m/s^2: in mg? (read as g by --units accel=g: give --units accel=mg) (docs/log-format.md)" \
+    "mg read with accel=g: named as mg, the remedy naming accel=mg"
 if grep -q "0.00980665\|raw counts" "$T/err"; then fail "mg read with accel=g: told to multiply by 0.00980665 or called raw counts"; else
     pass "mg read with accel=g: not told to multiply by 0.00980665 nor called raw counts"; fi
 expect_exit 0 "info on a log in mg, read with accel=g" "$H" info "$T/in_mg.csv" --units accel=g
-expect_out "units       NOT SI: .*not in m/s^2 but in mg (read as g by --units accel=g: divide by 1000)" \
-    "info: mg read with accel=g named, the remedy dividing by 1000"
+expect_out "units       NOT SI: .*not in m/s^2 but in mg (read as g by --units accel=g: give --units accel=mg)" \
+    "info: mg read with accel=g named, the remedy naming accel=mg"
 # a log already in m/s^2 read with --units accel=g (9.8 times too large once read as g): the marks judged the
 # values as read, so replay called it "raw counts? (scale them by the sensor's sensitivity)" and info said
 # only "not in m/s^2", of a file that is; it is now named as m/s^2 read as g, the remedy leaving accel=g out
@@ -866,6 +916,41 @@ expect_out "units       NOT SI: .*at rest, where gravity is 9.807 m/s^2: the log
 expect_exit 0 "info on the same log without accel=g" "$H" info vectors/nav/golden/gx2_walk2.csv
 if grep -q "NOT SI" "$T/out"; then fail "the remedy followed: info still finds a unit problem"; else
     pass "the remedy followed (accel=g left out): no unit problem"; fi
+# mg and mdps (ST's SensorTile data log writes AccX [mg] and GyroX [mdps]), which --units reads since the units
+# review (2026-11-30): the file's unit is named whatever --units gave, each remedy the whole --units value
+expect_exit 1 "accelerometer in m/s^2, read with accel=mg" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet --units accel=mg
+expect_err "the log is in m/s^2 already (read as mg by --units accel=mg: leave accel=mg out)" \
+    "m/s^2 read with accel=mg: named as m/s^2, the remedy leaving accel=mg out"
+expect_exit 1 "accelerometer in g, read with accel=mg" "$H" replay "$T/in_g.csv" --quiet --units accel=mg
+expect_err "the log is not in m/s^2 but in g (read as mg by --units accel=mg: give --units accel=g)" \
+    "g read with accel=mg: named as g, the remedy naming accel=g"
+expect_exit 1 "gyro in rad/s, read with gyro=mdps" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet --units gyro=mdps
+expect_err "the log is in rad/s already? (read as mdps by --units gyro=mdps: leave gyro=mdps out)" \
+    "rad/s read with gyro=mdps: named, the remedy leaving gyro=mdps out"
+awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.7g,%.7g,%.7g\n", $1, $2, $3, $4, $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_dps.csv"
+expect_exit 1 "gyro in deg/s, read with gyro=mdps" "$H" replay "$T/in_dps.csv" --quiet --units gyro=mdps
+expect_err "the log is in deg/s? (read as mdps by --units gyro=mdps: give --units gyro=deg/s)" \
+    "deg/s read with gyro=mdps: named as deg/s, the remedy naming gyro=deg/s"
+awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g\n", $1, $2 / 0.00980665, $3 / 0.00980665, $4 / 0.00980665, $5 * 57295.77951308232, $6 * 57295.77951308232, $7 * 57295.77951308232 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_mg_mdps.csv"
+expect_exit 1 "a log in mg and mdps" "$H" replay "$T/in_mg_mdps.csv" --quiet
+expect_err "not in m/s^2: in mg? (give --units accel=mg,gyro=mdps); also the gyroscope reaches .* the log is not in rad/s: in mdps? (give --units accel=mg,gyro=mdps)" \
+    "mg and mdps: both named, each remedy the whole --units value"
+expect_exit 0 "the remedy followed: accel=mg,gyro=mdps" "$H" replay "$T/in_mg_mdps.csv" --quiet --units accel=mg,gyro=mdps \
+    --out "$T/mg_mdps_traj.csv"
+expect_exit 0 "the same walk in SI" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet --out "$T/si_traj.csv"
+"${PY:-/usr/bin/python3}" - "$T/mg_mdps_traj.csv" "$T/si_traj.csv" <<'PYEOF' && pass "mg and mdps read: the SI walk's trajectory (within 1 mm)" || fail "mg and mdps read: the trajectory differs from the SI walk's"
+import csv, sys
+a = list(csv.reader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+b = list(csv.reader(l for l in open(sys.argv[2]) if not l.startswith("#")))
+h = a[0]
+ix = [h.index(k) for k in ("x", "y", "z")]
+assert len(a) == len(b) and len(a) > 100, (len(a), len(b))
+d = max(abs(float(r[i]) - float(s[i])) for r, s in zip(a[1:], b[1:]) for i in ix)
+print("max position difference", d)
+sys.exit(0 if d < 1e-3 else 1)
+PYEOF
 # and not a foot in m/s^2 that never stands still: the simulator's run without a stand averages |f| = 3.3 g,
 # the most of any motion here (the mg test needs 10 g); it is told it has no still period, and no unit
 "$H" sim --motion run:30 --out "$T/run_nostand.csv" >/dev/null 2>&1

@@ -394,6 +394,15 @@ expect_exit 0 "static log with its time in milliseconds, read as ns" "$H" simgap
     --max-effects 0 --units time=ns
 expect_err "the samples are 1e-08 s apart (1e+08 Hz): are the time stamps in nanoseconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "a static log's ms stamps read as ns are named, with the --units item"
+# the static log stamped in bursts (packets of 4 samples stamped 5 us apart, every 40 ms: 100 Hz over the log), in
+# us read as such: simgap warned "are the time stamps in microseconds? (they look like milliseconds, a 200 Hz log:
+# give --units time=ms)", 1000 times too slow (the units review, 2026-11-30); replay's test of the span now
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 40000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
+    "$T/sd.csv" > "$T/sdburst.csv"
+expect_exit 0 "static log stamped in bursts, read as us" "$H" simgap "$T/sdburst.csv" --quiet --seeds 4 --max-effects 0 \
+    --units time=us
+if grep -q "are the time stamps in\|look like" "$T/err"; then fail "simgap: stamps in bursts told a time unit: $(cat "$T/err")"; else
+    pass "simgap: stamps in bursts (100 Hz over the log) told no time unit"; fi
 # in g as well: the units warning and the time warning each name both items, one --units value
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5, $6, $7 }' \
     "$T/sdms.csv" > "$T/sdgms.csv"
