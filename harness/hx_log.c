@@ -2068,6 +2068,10 @@ const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size)
     }
     if (len > 0u && buf[len - 1u] == ',') {
         buf[len - 1u] = '\0';
+    } else if (len > 0u && buf[len - 1u] == ' ') {
+        /* no item: the file is in s, m/s^2 and rad/s, the defaults, so the
+         * --units given is what is wrong (seconds read as time=ms) */
+        snprintf(buf, size, "leave --units out");
     }
     return buf;
 }

@@ -244,7 +244,8 @@ int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix);
 /** The remedy "give --units ITEMS" naming every unit item of want, the
  *  layout that reads the log (time=, accel=g, gyro=deg/s, in the
  *  synopsis's order): one --units value, since a second --units replaces
- *  the first. Returns buf. */
+ *  the first; "leave --units out" when every item is the default (s,
+ *  m/s^2, rad/s). Returns buf. */
 const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size);
 /** The lowest rate of a foot-mounted IMU the time-unit remedies aim at,
  *  Hz (hx_time_unit_fix's band is 20 Hz to HX_TIME_RATE_MAX_HZ). */

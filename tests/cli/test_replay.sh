@@ -698,6 +698,11 @@ expect_exit 0 "the remedy followed: g, deg/s and ms read with --units time=ms,ac
     "$T/in_gdegms.csv" --quiet --units time=ms,accel=g,gyro=deg/s
 if grep -q "units\|m/s^2\|rad/s" "$T/err"; then fail "the remedy followed: a unit still named"; cat "$T/err"; else
     pass "the remedy followed: no unit named"; fi
+# a file already in seconds, m/s^2 and rad/s read with --units time=ms: no item to give, the --units given is the
+# mistake; the remedy read "give --units " with nothing after it until the review of 2026-11-30
+expect_exit 1 "seconds read with --units time=ms" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet --units time=ms
+expect_err "are the time stamps in milliseconds? (they look like seconds: leave --units out)" \
+    "seconds read as ms: the remedy is to leave --units out"
 expect_exit 0 "info on a log in deg/s" "$H" info "$T/in_deg.csv"
 expect_out "units       NOT SI: .*probably in deg/s" "info names the units too"
 # one figure for one log: replay said 454.7 rad/s (the vector's magnitude),
