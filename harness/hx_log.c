@@ -1457,10 +1457,17 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         }
         s->seq = (uint32_t)r->index;
         break;
-    case TIME_COUNTER:
-        if (parse_num(f[r->col_t], &tv) != 0 || tv < 0.0 || tv > 4.0e9) {
-            set_err(r, "%s:%ld: counter ('%.20s') is not a non-negative number%s", r->path, r->stats.lines,
-                    f[r->col_t], decimal_comma(f[r->col_t]) ? DECIMAL_COMMA_HINT : "");
+    case TIME_COUNTER: {
+        /* what is wrong, said: a counter beyond 32 bits, or above 4e9 and
+         * within them, was "not a non-negative number" (the code review of
+         * 2026-11-30); the range is now the 32 bits of seq */
+        const int prc = parse_num(f[r->col_t], &tv);
+        if (prc != 0 || tv < 0.0 || tv > 4294967295.0) {
+            set_err(r, "%s:%ld: counter ('%.20s') is %s", r->path, r->stats.lines, f[r->col_t],
+                    prc == -2   ? "NaN or Inf"
+                    : prc != 0  ? not_a_number(f[r->col_t])
+                    : tv < 0.0  ? "negative"
+                                : "beyond 32 bits (4294967295)");
             return FNAV_E_FORMAT;
         }
         if (r->meta.format == HX_FMT_IPOL && tv < 65536.0) {
@@ -1481,6 +1488,7 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         s->seq = (uint32_t)tv;
         s->flags |= FNAV_SAMPLE_HAS_SEQ;
         break;
+    }
     case TIME_MTMGR: {
         char msg[160];
         int has_seq;
@@ -1495,14 +1503,31 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     }
     case TIME_GX2: {
         double host = 0.0, freq = 0.0;
-        if (parse_num(f[7], &tv) != 0 || parse_num(f[r->col_aux], &aux) != 0 ||
-            parse_num(f[r->col_t], &host) != 0) {
-            set_err(r, "%s:%ld: counter, Nr or time stamp is not a number", r->path, r->stats.lines);
-            return FNAV_E_FORMAT;
+        /* the field and its text named, as the other readers do (it was
+         * "counter, Nr or time stamp is not a number"; the code review of
+         * 2026-11-30) */
+        static const char *const gx2_names[3] = { "Counter", "Nr", "time stamp Filtered ts" };
+        const int cols[3] = { 7, r->col_aux, r->col_t };
+        double *vals[3];
+        int k;
+        vals[0] = &tv;
+        vals[1] = &aux;
+        vals[2] = &host;
+        for (k = 0; k < 3; k++) {
+            const int prc = parse_num(f[cols[k]], vals[k]);
+            if (prc != 0) {
+                set_err(r, "%s:%ld: %s ('%.20s') is %s", r->path, r->stats.lines, gx2_names[k], f[cols[k]],
+                        prc == -2 ? "NaN or Inf" : not_a_number(f[cols[k]]));
+                return FNAV_E_FORMAT;
+            }
         }
-        if (!(aux >= 0.0 && aux <= 4294967295.0 && aux == floor(aux)) || !(tv >= 0.0 && tv <= 4294967295.0)) {
-            set_err(r, "%s:%ld: Nr or counter is not a 32-bit count", r->path, r->stats.lines);
-            return FNAV_E_FORMAT;
+        for (k = 0; k < 2; k++) {
+            const double cv = *vals[k];
+            if (!(cv >= 0.0 && cv <= 4294967295.0 && (k == 0 || cv == floor(cv)))) {
+                set_err(r, "%s:%ld: %s ('%.20s') is not a 32-bit count", r->path, r->stats.lines, gx2_names[k],
+                        f[cols[k]]);
+                return FNAV_E_FORMAT;
+            }
         }
         if (n <= 13 || parse_num(f[13], &freq) != 0) {
             freq = 0.0; /* Freq. [Hz], used only before a period is measured */

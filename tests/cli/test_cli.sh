@@ -374,16 +374,25 @@ ctr_bad() { # description expected-message command...: exit 1, the message, 2 sa
     expect_out "^samples     2$" "$d: the samples before it kept"
 }
 sq_log "$T/sq.csv" 0 1 -1 3
-ctr_bad "square2, a negative sample number" "sq.csv:4: counter ('-1') is not a non-negative number" \
+ctr_bad "square2, a negative sample number" "sq.csv:4: counter ('-1') is negative" \
     "$H" info "$T/sq.csv" --from square2
 sq_log "$T/sq.csv" 0 1 2.5 3
 ctr_bad "square2, a fractional sample number" "sq.csv:4: counter ('2.5') is not a whole number in range" \
     "$H" info "$T/sq.csv" --from square2
 sq_log "$T/sq.csv" 0 1 abc 3
-ctr_bad "square2, a sample number that is text" "sq.csv:4: counter ('abc') is not a non-negative number" \
+ctr_bad "square2, a sample number that is text" "sq.csv:4: counter ('abc') is not a number" \
     "$H" info "$T/sq.csv" --from square2
-sq_log "$T/sq.csv" 0 1 4000000001 3
-ctr_bad "square2, a sample number beyond 4e9" "sq.csv:4: counter ('4000000001') is not .*" "$H" info "$T/sq.csv" --from square2
+# beyond 32 bits: said so (until 2026-11-30 "is not a non-negative number", of a counter that is; and above 4e9,
+# which 32 bits still hold)
+sq_log "$T/sq.csv" 0 1 5e9 3
+ctr_bad "square2, a sample number beyond 32 bits" "sq.csv:4: counter ('5e9') is beyond 32 bits (4294967295)" \
+    "$H" info "$T/sq.csv" --from square2
+sq_log "$T/sq.csv" 0 1 4294967296 3
+ctr_bad "square2, a sample number one beyond 32 bits" "sq.csv:4: counter ('4294967296') is beyond 32 bits (4294967295)" \
+    "$H" info "$T/sq.csv" --from square2
+sq_log "$T/sq.csv" 4294967293 4294967294 4294967295
+expect_exit 0 "square2, a sample number at the 32-bit maximum" "$H" info "$T/sq.csv" --from square2
+expect_out "^samples     3$" "square2, 32-bit maximum: three samples read"
 sq_log "$T/sq.csv" 0 1 0 3
 ctr_bad "square2, a sample number that goes back" "sq.csv:4: time goes backwards (0.000000000 s after 0.010000000 s)" \
     "$H" info "$T/sq.csv" --from square2
@@ -391,7 +400,7 @@ ip_log "$T/ip.txt" 1 2 1.5 3
 ctr_bad "ipol, a fractional packet counter" "ip.txt:5: counter ('1.5') is not a whole number in range" \
     "$H" info "$T/ip.txt" --from ipol
 ip_log "$T/ip.txt" 1 2 -3 3
-ctr_bad "ipol, a negative packet counter" "ip.txt:5: counter ('-3') is not a non-negative number" "$H" info "$T/ip.txt" --from ipol
+ctr_bad "ipol, a negative packet counter" "ip.txt:5: counter ('-3') is negative" "$H" info "$T/ip.txt" --from ipol
 ip_log "$T/ip.txt" 100 101 50 51
 ctr_bad "ipol, a counter that drops by less than half its range" "ip.txt:5: time goes backwards (0.500000000 s after 1.010000000 s)" \
     "$H" info "$T/ip.txt" --from ipol
@@ -417,15 +426,17 @@ gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 130674288:3:1000.00
 expect_exit 0 "GX2, three good rows" "$H" info "$T/gx.txt" --from gx2
 expect_out "^samples     3$" "GX2: three samples read"
 gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 abc:3:1000.008
-ctr_bad "GX2, a Counter that is text" "gx.txt:6: counter, Nr or time stamp is not a number" "$H" info "$T/gx.txt" --from gx2
+ctr_bad "GX2, a Counter that is text" "gx.txt:6: Counter ('abc') is not a number" "$H" info "$T/gx.txt" --from gx2
 gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 130674288:3:xyz
-ctr_bad "GX2, a time stamp that is text" "gx.txt:6: counter, Nr or time stamp is not a number" "$H" info "$T/gx.txt" --from gx2
+ctr_bad "GX2, a time stamp that is text" "gx.txt:6: time stamp Filtered ts ('xyz') is not a number" "$H" info "$T/gx.txt" --from gx2
+gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 130674288:x3:1000.008
+ctr_bad "GX2, an Nr that is text" "gx.txt:6: Nr ('x3') is not a number" "$H" info "$T/gx.txt" --from gx2
 gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 130674288:-3:1000.008
-ctr_bad "GX2, a negative Nr" "gx.txt:6: Nr or counter is not a 32-bit count" "$H" info "$T/gx.txt" --from gx2
+ctr_bad "GX2, a negative Nr" "gx.txt:6: Nr ('-3') is not a 32-bit count" "$H" info "$T/gx.txt" --from gx2
 gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 130674288:3.5:1000.008
-ctr_bad "GX2, a fractional Nr" "gx.txt:6: Nr or counter is not a 32-bit count" "$H" info "$T/gx.txt" --from gx2
+ctr_bad "GX2, a fractional Nr" "gx.txt:6: Nr ('3.5') is not a 32-bit count" "$H" info "$T/gx.txt" --from gx2
 gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 5e9:3:1000.008
-ctr_bad "GX2, a Counter beyond 32 bits" "gx.txt:6: Nr or counter is not a 32-bit count" "$H" info "$T/gx.txt" --from gx2
+ctr_bad "GX2, a Counter beyond 32 bits" "gx.txt:6: Counter ('5e9') is not a 32-bit count" "$H" info "$T/gx.txt" --from gx2
 rm -f "$T/sq.csv" "$T/ip.txt" "$T/gx.txt"
 
 # --- the plotting backend fails or is missing (no test ran a failing gnuplot with allan, psd, montecarlo, simgap
