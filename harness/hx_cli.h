@@ -184,6 +184,10 @@ int hx_plot_check(const char *cmd, const char *png_path);
  *  file it started in this session (one that was not there, or one that was
  *  and has changed since hx_plot_open) is removed, and the error says so. */
 int hx_plot_close(hx_plot_t *p, const char *cmd);
+/** on: a picture gnuplot fails to draw (hx_plot_close, or gnuplot not
+ *  starting in hx_plot_open) is printed as a warning, for a command that
+ *  goes on without it (eval); off (the default): as an error. */
+void hx_plot_failure_warns(int on);
 /** The axis labels of a path plot: the navigation frame's y and x
  *  (docs/frames.md), x along the sensor's heading at the alignment; no
  *  magnetometer, so not east and north (replay's, live's and eval's

@@ -482,8 +482,14 @@ mkdir -p "$T/gev/xio_ngimu_gait"
     fail "sim of a walk for eval"
 expect_exit 0 "eval, gnuplot failing" env PATH="$T/failgp:$PATH" "$H" eval --no-experiments --data "$T/gev" \
     --out "$T/gev/r.md" --json "$T/gev/r.json"
-gp_gone "eval" "$T/gev/img/eval-xio.png"
-expect_err "warning: figure $T/gev/img/eval-xio.png not drawn (the error above); results.md goes on without it" \
+# eval goes on (exit 0): the failure is a warning, as the harness labels what does not stop a run (it was
+# "error: gnuplot failed ..." with exit 0; the code review of 2026-11-30)
+expect_err "harness eval: warning: gnuplot failed to write $T/gev/img/eval-xio.png; the partial file was removed" \
+    "eval: the failed picture named, as a warning"
+[ ! -e "$T/gev/img/eval-xio.png" ] && pass "eval: no partial picture left" || fail "eval: $T/gev/img/eval-xio.png left behind"
+grep -q "error:" "$T/err" && fail "eval, gnuplot failing: an error printed: $(grep 'error:' "$T/err")" ||
+    pass "eval, gnuplot failing: no 'error:' printed"
+expect_err "warning: figure $T/gev/img/eval-xio.png not drawn (see above); results.md goes on without it" \
     "eval: the figure left out is said"
 grep -q "^| short_walk.csv | [0-9]" "$T/gev/r.md" && ! grep -q "eval-xio.png" "$T/gev/r.md" && json "$T/gev/r.json" '"footnav_version" in j' &&
     pass "eval, gnuplot failing: results.md with the walk's row, no link to the missing figure, the JSON" ||
