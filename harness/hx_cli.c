@@ -881,10 +881,18 @@ const char *hx_line_str(char *buf, size_t size, const char *s)
     return buf;
 }
 
-int hx_plot_check(const char *cmd, const char *png_path)
+int hx_plot_have_gnuplot(const char *cmd, const char *png_path)
 {
     if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
         hx_error(cmd, "cannot draw %s: gnuplot is not installed (apt-get install gnuplot-nox)", png_path);
+        return -1;
+    }
+    return 0;
+}
+
+int hx_plot_check(const char *cmd, const char *png_path)
+{
+    if (hx_plot_have_gnuplot(cmd, png_path) != 0) {
         return -1;
     }
     return hx_check_writable(cmd, png_path);

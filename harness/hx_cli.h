@@ -180,6 +180,10 @@ int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int
 /** 0 when gnuplot is installed and `png_path` can be written; -1 with the
  *  error printed. For plots drawn only after long work. */
 int hx_plot_check(const char *cmd, const char *png_path);
+/** 0 when gnuplot is installed; -1 with the error printed (naming
+ *  png_path). For a command that makes the picture's directory: asked
+ *  first, so that a refused run leaves none behind. */
+int hx_plot_have_gnuplot(const char *cmd, const char *png_path);
 /** Finish; returns 0 when the PNG was written. When gnuplot failed, the
  *  file it started in this session (one that was not there, or one that was
  *  and has changed since hx_plot_open) is removed, and the error says so. */

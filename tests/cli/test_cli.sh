@@ -515,6 +515,19 @@ for c in "psd:psd.png" "montecarlo:gm4.png" "simgap:z.png"; do
     expect_err "^harness $cmd: error: cannot draw $T/gnp/${c#*:}: gnuplot is not installed" "$cmd without gnuplot: said"
     [ ! -e "$T/gnp.json" ] && pass "$cmd without gnuplot: refused before the run, no --json" || fail "$cmd without gnuplot: --json written"
 done
+# a --plot directory not there yet is not made when the run is refused for want of gnuplot (psd and simgap made it
+# first and left it empty; the code review of 2026-11-30)
+for cmd in psd simgap; do
+    rm -rf "$T/gnpnew"
+    case $cmd in
+    psd) set -- psd "$T/gst.csv" --plot "$T/gnpnew" ;;
+    simgap) set -- simgap "$T/gst.csv" --quiet --seeds 4 --max-effects 0 --plot "$T/gnpnew" ;;
+    esac
+    expect_exit 3 "$cmd --plot NEWDIR without gnuplot" env PATH="$T/nogp" "$H" "$@"
+    expect_err "^harness $cmd: error: cannot draw $T/gnpnew/[a-z]*.png: gnuplot is not installed" "$cmd NEWDIR without gnuplot: said"
+    [ ! -e "$T/gnpnew" ] && pass "$cmd without gnuplot: no --plot directory left behind" ||
+        fail "$cmd without gnuplot: $T/gnpnew left behind"
+done
 expect_exit 0 "eval without gnuplot" env PATH="$T/nogp" "$H" eval --no-experiments --data "$T/gev" --out "$T/gev/n.md"
 expect_err "warning: no figures: gnuplot is not installed (apt-get install gnuplot-nox)" "eval without gnuplot: said"
 grep -q "^| short_walk.csv | [0-9]" "$T/gev/n.md" && ! grep -q "\.png" "$T/gev/n.md" &&
