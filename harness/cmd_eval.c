@@ -1459,7 +1459,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                             "foot-off (FO)", fs_e.v, fs_e.n, "foot-strike (FS)", 10) == 0) {
             ev->ipol_fig = 1;
         } else {
-            hx_warn("eval", "figure %s not drawn (the error above); results.md goes on without it", png);
+            hx_warn("eval", "figure %s not drawn (see above); results.md goes on without it", png);
         }
     }
     out->n_fo = fo_a.n;
@@ -1662,7 +1662,7 @@ static void figure(ev_t *ev, const char *name, int strides, const char *title, c
                      : hx_evplot_paths(&ev->fig, "eval", png, title)) == 0) {
             fprintf(ev->md, "![%s](%s/eval-%s.png)\n\n%s\n\n", title, ev->plot_link, name, caption);
         } else {
-            hx_warn("eval", "figure %s not drawn (the error above); results.md goes on without it", png);
+            hx_warn("eval", "figure %s not drawn (see above); results.md goes on without it", png);
         }
     }
     hx_evplot_free(&ev->fig);
@@ -1789,6 +1789,7 @@ int hx_cmd_eval(int argc, char **argv)
             } else {
                 char rel[HX_PLOT_PATH_SIZE];
                 ev.plots = 1;
+                hx_plot_failure_warns(1); /* eval goes on without a figure (see figure()) */
                 rel_path(md_dir, ev.plot_dir, rel, sizeof rel);
                 md_link(rel, ev.plot_link, sizeof ev.plot_link);
             }

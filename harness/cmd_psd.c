@@ -716,12 +716,25 @@ int hx_cmd_psd(int argc, char **argv)
             return HX_EXIT_IO;
         }
         if (dir != NULL) {
-            if (stat(dir, &sb) != 0 && mkdir(dir, 0777) != 0) {
-                hx_error(CMD, "%s: cannot create directory (%s)", dir, strerror(errno));
+            /* gnuplot first: a run refused for want of it left the
+             * directory made, empty (the code review of 2026-11-30); one
+             * made here is removed when the picture cannot be written */
+            int made = 0;
+            snprintf(png, sizeof png, "%s/psd.png", dir);
+            if (hx_plot_have_gnuplot(CMD, png) != 0) {
                 return HX_EXIT_IO;
             }
-            snprintf(png, sizeof png, "%s/psd.png", dir);
+            if (stat(dir, &sb) != 0) {
+                if (mkdir(dir, 0777) != 0) {
+                    hx_error(CMD, "%s: cannot create directory (%s)", dir, strerror(errno));
+                    return HX_EXIT_IO;
+                }
+                made = 1;
+            }
             if (hx_plot_check(CMD, png) != 0) {
+                if (made) {
+                    (void)remove(dir); /* an empty directory: rmdir */
+                }
                 return HX_EXIT_IO;
             }
         }

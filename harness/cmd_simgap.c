@@ -104,13 +104,26 @@ int hx_cmd_simgap(int argc, char **argv)
         return HX_EXIT_IO;
     }
     if (plot != NULL) {
+        /* gnuplot first: a run refused for want of it left the directory
+         * made, empty (the code review of 2026-11-30); one made here is
+         * removed when the pictures cannot be written */
         char png[4200];
-        if (mkdir(plot, 0777) != 0 && errno != EEXIST) {
-            hx_error("simgap", "cannot create %s: %s", plot, strerror(errno));
+        int made = 1;
+        snprintf(png, sizeof png, "%s/z.png", plot);
+        if (hx_plot_have_gnuplot("simgap", png) != 0) {
             return HX_EXIT_IO;
         }
-        snprintf(png, sizeof png, "%s/z.png", plot);
+        if (mkdir(plot, 0777) != 0) {
+            if (errno != EEXIST) {
+                hx_error("simgap", "cannot create %s: %s", plot, strerror(errno));
+                return HX_EXIT_IO;
+            }
+            made = 0;
+        }
         if (hx_plot_check("simgap", png) != 0) {
+            if (made) {
+                (void)remove(plot); /* an empty directory: rmdir */
+            }
             return HX_EXIT_IO;
         }
     }

@@ -881,10 +881,18 @@ const char *hx_line_str(char *buf, size_t size, const char *s)
     return buf;
 }
 
-int hx_plot_check(const char *cmd, const char *png_path)
+int hx_plot_have_gnuplot(const char *cmd, const char *png_path)
 {
     if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
         hx_error(cmd, "cannot draw %s: gnuplot is not installed (apt-get install gnuplot-nox)", png_path);
+        return -1;
+    }
+    return 0;
+}
+
+int hx_plot_check(const char *cmd, const char *png_path)
+{
+    if (hx_plot_have_gnuplot(cmd, png_path) != 0) {
         return -1;
     }
     return hx_check_writable(cmd, png_path);
@@ -906,6 +914,31 @@ static int file_sig(const char *path, long long sig[7])
     sig[5] = (long long)st.st_ctim.tv_sec;
     sig[6] = (long long)st.st_ctim.tv_nsec;
     return 0;
+}
+
+/* a failed picture is a warning (hx_plot_failure_warns) */
+static int g_plot_warns;
+
+void hx_plot_failure_warns(int on)
+{
+    g_plot_warns = on;
+}
+
+/* a failed picture said: an error, or a warning for a command that goes
+ * on (eval said "error: gnuplot failed ..." and exited 0; the code review
+ * of 2026-11-30) */
+static void plot_failed(const char *cmd, const char *fmt, ...)
+{
+    va_list ap;
+    char msg[HX_PLOT_PATH_SIZE + 200];
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    if (g_plot_warns) {
+        hx_warn(cmd, "%s", msg);
+    } else {
+        hx_error(cmd, "%s", msg);
+    }
 }
 
 int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h)
@@ -930,7 +963,7 @@ int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int
     p->existed = file_sig(png_path, p->before) == 0;
     p->gp = popen("gnuplot >/dev/null", "w");
     if (p->gp == NULL) {
-        hx_error(cmd, "cannot start gnuplot (%s)", strerror(errno));
+        plot_failed(cmd, "cannot start gnuplot (%s)", strerror(errno));
         return -1;
     }
     snprintf(p->path, sizeof p->path, "%s", png_path);
@@ -984,12 +1017,12 @@ int hx_plot_close(hx_plot_t *p, const char *cmd)
             }
         }
         if (changed && remove(p->path) == 0) {
-            hx_error(cmd, "gnuplot failed to write %s; the partial file was removed", p->path);
+            plot_failed(cmd, "gnuplot failed to write %s; the partial file was removed", p->path);
         } else if (changed) {
-            hx_error(cmd, "gnuplot failed to write %s; the partial file could not be removed (%s)", p->path,
-                     strerror(errno));
+            plot_failed(cmd, "gnuplot failed to write %s; the partial file could not be removed (%s)", p->path,
+                        strerror(errno));
         } else {
-            hx_error(cmd, "gnuplot failed to write %s", p->path);
+            plot_failed(cmd, "gnuplot failed to write %s", p->path);
         }
         return -1;
     }

@@ -180,10 +180,18 @@ int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int
 /** 0 when gnuplot is installed and `png_path` can be written; -1 with the
  *  error printed. For plots drawn only after long work. */
 int hx_plot_check(const char *cmd, const char *png_path);
+/** 0 when gnuplot is installed; -1 with the error printed (naming
+ *  png_path). For a command that makes the picture's directory: asked
+ *  first, so that a refused run leaves none behind. */
+int hx_plot_have_gnuplot(const char *cmd, const char *png_path);
 /** Finish; returns 0 when the PNG was written. When gnuplot failed, the
  *  file it started in this session (one that was not there, or one that was
  *  and has changed since hx_plot_open) is removed, and the error says so. */
 int hx_plot_close(hx_plot_t *p, const char *cmd);
+/** on: a picture gnuplot fails to draw (hx_plot_close, or gnuplot not
+ *  starting in hx_plot_open) is printed as a warning, for a command that
+ *  goes on without it (eval); off (the default): as an error. */
+void hx_plot_failure_warns(int on);
 /** The axis labels of a path plot: the navigation frame's y and x
  *  (docs/frames.md), x along the sensor's heading at the alignment; no
  *  magnetometer, so not east and north (replay's, live's and eval's

@@ -78,6 +78,9 @@ struct hx_reader {
     int last_line;              /* next_text_fields is parsing a last line without a newline */
     long short_rows;            /* data rows with fewer fields than the header */
     long short_first;           /* the line of the first of them */
+    long long_rows;             /* data rows with more non-empty fields than the header */
+    long long_first;            /* the line of the first of them */
+    long rows_checked;          /* data rows compared with the header */
     double ctr_wrap;            /* ipol: 65536 per wrap of the 16-bit packet counter so far */
     double ctr_prev;            /* ipol: the last raw counter */
     hx_mtmgr_t mt;              /* mtmanager: columns, time source, counters (hx_xsens.h) */
@@ -1364,6 +1367,24 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
             r->short_first = r->stats.lines;
         }
     }
+    if (r->hdr_fields > 0) {
+        /* more fields than the header names: a stray delimiter inside the
+         * row shifts the values after it (0.01,5,0.01,... read as ax = 5),
+         * or the header lacks a column's name; counted and warned at the
+         * end (it was read silently; the code review of 2026-11-30). Empty
+         * fields past the header's are no data: a trailing delimiter, as
+         * spreadsheets and MT Manager write one on every row. GX2 (its
+         * Header: line leaves the packet id unnamed) and the headerless
+         * OpenShoe 820 Hz file have no count to compare with. */
+        int k, data = 0;
+        for (k = r->hdr_fields; k < n && !data; k++) {
+            data = f[k][0] != '\0';
+        }
+        if (data && r->long_rows++ == 0) {
+            r->long_first = r->stats.lines;
+        }
+        r->rows_checked++;
+    }
     if (r->meta.format == HX_FMT_MTMGR && hx_mtmgr_row(&r->mt, f, n, r->stats.lines)) {
         /* NaN or empty where the reader needs a value: the packet lacks
          * it; skipped and counted, warned at the end (hx_reader_next) */
@@ -1436,10 +1457,17 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         }
         s->seq = (uint32_t)r->index;
         break;
-    case TIME_COUNTER:
-        if (parse_num(f[r->col_t], &tv) != 0 || tv < 0.0 || tv > 4.0e9) {
-            set_err(r, "%s:%ld: counter ('%.20s') is not a non-negative number%s", r->path, r->stats.lines,
-                    f[r->col_t], decimal_comma(f[r->col_t]) ? DECIMAL_COMMA_HINT : "");
+    case TIME_COUNTER: {
+        /* what is wrong, said: a counter beyond 32 bits, or above 4e9 and
+         * within them, was "not a non-negative number" (the code review of
+         * 2026-11-30); the range is now the 32 bits of seq */
+        const int prc = parse_num(f[r->col_t], &tv);
+        if (prc != 0 || tv < 0.0 || tv > 4294967295.0) {
+            set_err(r, "%s:%ld: counter ('%.20s') is %s", r->path, r->stats.lines, f[r->col_t],
+                    prc == -2   ? "NaN or Inf"
+                    : prc != 0  ? not_a_number(f[r->col_t])
+                    : tv < 0.0  ? "negative"
+                                : "beyond 32 bits (4294967295)");
             return FNAV_E_FORMAT;
         }
         if (r->meta.format == HX_FMT_IPOL && tv < 65536.0) {
@@ -1460,6 +1488,7 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         s->seq = (uint32_t)tv;
         s->flags |= FNAV_SAMPLE_HAS_SEQ;
         break;
+    }
     case TIME_MTMGR: {
         char msg[160];
         int has_seq;
@@ -1474,14 +1503,31 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     }
     case TIME_GX2: {
         double host = 0.0, freq = 0.0;
-        if (parse_num(f[7], &tv) != 0 || parse_num(f[r->col_aux], &aux) != 0 ||
-            parse_num(f[r->col_t], &host) != 0) {
-            set_err(r, "%s:%ld: counter, Nr or time stamp is not a number", r->path, r->stats.lines);
-            return FNAV_E_FORMAT;
+        /* the field and its text named, as the other readers do (it was
+         * "counter, Nr or time stamp is not a number"; the code review of
+         * 2026-11-30) */
+        static const char *const gx2_names[3] = { "Counter", "Nr", "time stamp Filtered ts" };
+        const int cols[3] = { 7, r->col_aux, r->col_t };
+        double *vals[3];
+        int k;
+        vals[0] = &tv;
+        vals[1] = &aux;
+        vals[2] = &host;
+        for (k = 0; k < 3; k++) {
+            const int prc = parse_num(f[cols[k]], vals[k]);
+            if (prc != 0) {
+                set_err(r, "%s:%ld: %s ('%.20s') is %s", r->path, r->stats.lines, gx2_names[k], f[cols[k]],
+                        prc == -2 ? "NaN or Inf" : not_a_number(f[cols[k]]));
+                return FNAV_E_FORMAT;
+            }
         }
-        if (!(aux >= 0.0 && aux <= 4294967295.0 && aux == floor(aux)) || !(tv >= 0.0 && tv <= 4294967295.0)) {
-            set_err(r, "%s:%ld: Nr or counter is not a 32-bit count", r->path, r->stats.lines);
-            return FNAV_E_FORMAT;
+        for (k = 0; k < 2; k++) {
+            const double cv = *vals[k];
+            if (!(cv >= 0.0 && cv <= 4294967295.0 && (k == 0 || cv == floor(cv)))) {
+                set_err(r, "%s:%ld: %s ('%.20s') is not a 32-bit count", r->path, r->stats.lines, gx2_names[k],
+                        f[cols[k]]);
+                return FNAV_E_FORMAT;
+            }
         }
         if (n <= 13 || parse_num(f[13], &freq) != 0) {
             freq = 0.0; /* Freq. [Hz], used only before a period is measured */
@@ -2245,6 +2291,18 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
         add_warn(r, "%s:%ld: %ld row%s with fewer fields than the header's %d (the first here): where a field was "
                     "lost inside a row, the values after it were read from the wrong columns",
                  r->path, r->short_first, r->short_rows, r->short_rows == 1 ? "" : "s", r->hdr_fields);
+    }
+    if (r->long_rows > 1 && r->long_rows == r->rows_checked) {
+        /* the same on every row: more likely a name the header lacks than
+         * a stray delimiter, and then the columns after it are all wrong */
+        add_warn(r, "%s:%ld: every row (%ld) has more fields than the header's %d (the first here): the header may "
+                    "lack a column's name, and where it lacks one before a column the reader uses, every value after "
+                    "it was read from the wrong column (name each column in the header)",
+                 r->path, r->long_first, r->long_rows, r->hdr_fields);
+    } else if (r->long_rows > 0) {
+        add_warn(r, "%s:%ld: %ld row%s with more fields than the header's %d (the first here): where a stray delimiter "
+                    "split a field, the values after it were read from the wrong columns",
+                 r->path, r->long_first, r->long_rows, r->long_rows == 1 ? "" : "s", r->hdr_fields);
     }
     if (st == FNAV_END && r->stats.records == 0) {
         if (r->meta.format == HX_FMT_MTMGR && r->mt.skipped > 0) {

@@ -1910,6 +1910,82 @@ static void test_short_rows_warned(void **state)
     unlink(p);
 }
 
+/* A row with more fields than the header names: a stray delimiter inside
+ * it shifts the values after it (0.01,5,0.01,... read as ax = 5, az =
+ * 0.02, gx = 9.81); it was read without a word (the code review of
+ * 2026-11-30). Read, as a row with fewer fields is, but counted and warned
+ * with the first such line; when every row has more, the message says the
+ * header may lack a column's name. What exporters write is no extra field:
+ * an empty field after a trailing delimiter on every row (also with an
+ * MT Manager export's tabs, and a stray comma among such rows is still
+ * counted); a file without either has no warning. */
+static void test_long_rows_warned(void **state)
+{
+    char p[256], err[320];
+    hx_log_t log;
+    FILE *f;
+    long c;
+    int pass;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    for (pass = 0; pass < 5; pass++) {
+        f = fopen(p, "w");
+        assert_non_null(f);
+        fprintf(f, "t,ax,ay,az,gx,gy,gz\n");
+        for (c = 0; c < 20; c++) {
+            const char *tail = pass == 1 || pass == 2 ? "," : pass == 3 ? ",7.5" : "";
+            if ((pass == 0 || pass == 2) && (c == 4 || c == 11)) {
+                fprintf(f, "%ld.01,5,0.01,0.02,9.81,0.001,0.002,0.003%s\n", c, tail); /* a stray comma */
+            } else {
+                fprintf(f, "%ld.01,0.01,0.02,9.81,0.001,0.002,0.003%s\n", c, tail);
+            }
+        }
+        assert_int_equal(fclose(f), 0);
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        assert_int_equal(log.meta.format, HX_FMT_CSV);
+        assert_int_equal(log.n, 20);
+        if (pass == 0 || pass == 2) {
+            assert_true(log.acc[4][0] == (double)(fnav_real_t)5.0); /* the shift the warning is about */
+            assert_true(log.gyr[4][0] == (double)(fnav_real_t)9.81);
+            assert_non_null(strstr(log.warnings, ".csv:6: 2 rows with more fields than the header's 7 (the first "
+                                                 "here): where a stray delimiter split a field, the values after it "
+                                                 "were read from the wrong columns"));
+            assert_null(strstr(log.warnings, "every row"));
+        } else if (pass == 3) {
+            assert_true(log.acc[4][0] == (double)(fnav_real_t)0.01);
+            assert_non_null(strstr(log.warnings, ".csv:2: every row (20) has more fields than the header's 7"));
+            assert_non_null(strstr(log.warnings, "the header may lack a column's name"));
+        } else {
+            assert_true(log.acc[4][0] == (double)(fnav_real_t)0.01);
+            assert_null(strstr(log.warnings, "more fields"));
+        }
+        hx_log_free(&log);
+    }
+    /* an MT Manager export whose rows end in a tab: no warning; with a
+     * stray tab in one, a warning */
+    for (pass = 0; pass < 2; pass++) {
+        f = fopen(p, "w");
+        assert_non_null(f);
+        fprintf(f, "// Update Rate: 100.0Hz\nPacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n");
+        for (c = 0; c < 10; c++) {
+            fprintf(f, "%ld\t%ld\t0.1\t%s0.2\t9.8\t0.01\t0.02\t0.03\t\n", c, 1000 + 100 * c,
+                    pass == 1 && c == 3 ? "\t" : "");
+        }
+        assert_int_equal(fclose(f), 0);
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        assert_int_equal(log.meta.format, HX_FMT_MTMGR);
+        if (pass == 0) {
+            assert_int_equal(log.n, 10);
+            assert_null(strstr(log.warnings, "more fields"));
+        } else {
+            /* the shifted row has an empty Acc_Y: skipped as a lost packet, and its fields counted */
+            assert_non_null(strstr(log.warnings, ".csv:6: 1 row with more fields than the header's 8 (the first here)"));
+        }
+        hx_log_free(&log);
+    }
+    unlink(p);
+}
+
 /* The reader's limit of 1e6 applies in SI units, after the importer's scale
  * (docs/log-format.md: "a value ... beyond 1e6 in SI units"): in an NGIMU
  * log 1.5e6 deg/s is 26,180 rad/s, read; 2e5 g is 1.96e6 m/s^2, refused at
@@ -2798,6 +2874,7 @@ int main(void)
         cmocka_unit_test(test_ipol_counter_wrap),
         cmocka_unit_test(test_ipol_rate_and_step_back),
         cmocka_unit_test(test_short_rows_warned),
+        cmocka_unit_test(test_long_rows_warned),
         cmocka_unit_test(test_range_in_si_units),
         cmocka_unit_test(test_detect_variants),
         cmocka_unit_test(test_decimal_comma),
