@@ -82,10 +82,13 @@ static int preamble_key(const char *s, size_t len)
 /* Whether one header line (len characters at s) names a counter and the
  * inertial columns: PacketCounter or SampleTimeFine, and Acc_X and Gyr_X or
  * increments (dq_, dv). Fields are separated by tabs, commas, semicolons or
- * blanks. */
+ * blanks. A header naming Euler_X or Quat_W is Movella DOT's CSV, not MT
+ * Manager's (which writes Roll, Pitch, Yaw and Quat_q0..q3): DOT counts
+ * SampleTimeFine in us and writes Gyr_* in deg/s (DOT user manual, XD0502P,
+ * 4.2.5), so it is left to the CSV reader's --columns and --units. */
 static int header_line(const char *s, size_t len)
 {
-    int counter = 0, acc = 0, gyr = 0, inc = 0;
+    int counter = 0, acc = 0, gyr = 0, inc = 0, dot = 0;
     size_t i = 0;
     while (i < len) {
         char tok[40];
@@ -104,8 +107,9 @@ static int header_line(const char *s, size_t len)
         acc |= name_eq(tok, "Acc_X");
         gyr |= name_eq(tok, "Gyr_X");
         inc |= name_starts(tok, "dq_") || name_starts(tok, "dv[") || name_starts(tok, "dv_");
+        dot |= name_eq(tok, "Euler_X") || name_eq(tok, "Quat_W");
     }
-    return counter && ((acc && gyr) || inc);
+    return counter && ((acc && gyr) || inc) && !dot;
 }
 
 int hx_mtmgr_detect(const char *text)

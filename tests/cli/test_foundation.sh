@@ -599,6 +599,22 @@ expect_exit 1 "an MT Manager export with a counter and no rate" "$H" info "$T/xc
 expect_err "the time is the PacketCounter at the rate, which no '// Update Rate' line states: give it with --input-rate HZ" "counter without a rate: --input-rate named"
 expect_exit 0 "... with --input-rate" "$H" info "$T/xctr.txt" --input-rate 400
 expect_out "rate        400.000 Hz (nominal)" "counter time at --input-rate"
+# not an MT Manager export: Movella (Xsens) DOT's CSV names its columns as
+# MT Manager does but counts SampleTimeFine in us and writes Gyr_* in deg/s
+# (DOT user manual, XD0502P, 4.2.5), and names its orientation Euler_X..Z or
+# Quat_W..Z (MT Manager: Roll, Pitch, Yaw, Quat_q0..q3). Read as an export
+# it was a walk 100 times too slow, hinted 'divide by 1000'; it is refused
+# as before, and the CSV remedy it names reads it at its rate.
+awk -F, 'NR > 1 { split($1, p, "."); us = p[1] * 1000000 + substr(p[2] "000000000", 1, 6)
+    printf "%d,%d,0.1,0.2,0.3,%s,%s,%s,%.6f,%.6f,%.6f\n", NR - 2, us + 12345678, $2, $3, $4, $5 * 57.29578, $6 * 57.29578, $7 * 57.29578 }
+    BEGIN { print "PacketCounter,SampleTimeFine,Euler_X,Euler_Y,Euler_Z,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z" }' "$T/xw.csv" >"$T/xdot.csv"
+expect_exit 1 "a Movella DOT CSV (Euler_X) is not taken for an MT Manager export" "$H" info "$T/xdot.csv"
+expect_err "header has no column 't'; .*no importer's header recognised" "DOT CSV: refused as footnav CSV, the --columns remedy named"
+sed '1s/Euler_X,Euler_Y,Euler_Z/Quat_W,Quat_X,Quat_Y/' "$T/xdot.csv" >"$T/xdotq.csv"
+expect_exit 1 "a Movella DOT CSV (Quat_W) is not taken for an MT Manager export" "$H" info "$T/xdotq.csv"
+expect_exit 0 "DOT CSV read with --columns and --units time=us,gyro=deg/s" "$H" info "$T/xdot.csv" --from csv \
+    --columns t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s
+expect_out_re "^rate +398\.[0-9]+ Hz" "DOT CSV read as CSV: the walk's rate"
 
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]
