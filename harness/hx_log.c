@@ -731,15 +731,16 @@ static hx_format_t detect(const unsigned char *b, size_t n)
 
 /* ------------------------------------------------------------ text setup */
 
-/* Equal but for case, spaces, quotes and carriage returns ("Time(s)" is
- * "Time (s)"), as detection compares names (squeeze_line). */
-static int squeezed_eq(const char *a, const char *b)
+/* Equal but for case, blanks (spaces, tabs), quotes and carriage returns
+ * ("Time(s)" is "Time (s)", "acc_x" is "Acc_X"), as detection compares
+ * names (squeeze_line); also the MT Manager reader's (hx_xsens.c). */
+int hx_name_eq(const char *a, const char *b)
 {
     for (;;) {
-        while (*a == ' ' || *a == '"' || *a == '\'' || *a == '\r') {
+        while (*a == ' ' || *a == '\t' || *a == '"' || *a == '\'' || *a == '\r') {
             a++;
         }
-        while (*b == ' ' || *b == '"' || *b == '\'' || *b == '\r') {
+        while (*b == ' ' || *b == '\t' || *b == '"' || *b == '\'' || *b == '\r') {
             b++;
         }
         if (*a == '\0' || *b == '\0') {
@@ -757,7 +758,7 @@ static int find_col(char **f, int n, const char *name)
 {
     int i;
     for (i = 0; i < n; i++) {
-        if (squeezed_eq(f[i], name)) {
+        if (hx_name_eq(f[i], name)) {
             return i;
         }
     }
@@ -2798,7 +2799,7 @@ int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t 
         for (j = i + 1; j < 8; j++) {
             const char *a = l->names[i][0] != '\0' ? l->names[i] : k_csv_names[i];
             const char *b = l->names[j][0] != '\0' ? l->names[j] : k_csv_names[j];
-            if (squeezed_eq(a, b)) {
+            if (hx_name_eq(a, b)) {
                 snprintf(err, err_size, "--columns: column '%s' is named for both %s and %s%s", a, k_csv_names[i],
                          k_csv_names[j],
                          l->names[i][0] == '\0' || l->names[j][0] == '\0' ? " (a key not given keeps its own name)"

@@ -65,6 +65,9 @@ typedef struct hx_reader hx_reader_t;
 const char *hx_format_name(hx_format_t fmt);
 /** Format from its name; HX_FMT_COUNT if unknown. */
 hx_format_t hx_format_from_name(const char *name);
+/** Whether two column names are equal but for case, blanks, quotes and
+ *  carriage returns ("acc_x" and "Acc_X"), as the readers match headers. */
+int hx_name_eq(const char *a, const char *b);
 /** The format names a user gives to --from, comma-separated: the one list
  *  behind --help (HX_INPUT_OPTS) and the error of an unknown name; a new
  *  importer adds its name here and in k_format_names (hx_log.c). */

@@ -2,34 +2,13 @@
  * preamble, the columns and each row's time (see hx_xsens.h and
  * docs/log-format.md, "MT Manager export"). hx_log.c reads the lines. */
 #include "hx_xsens.h"
+#include "hx_log.h"
 
 #include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* Equal but for case, blanks, quotes and carriage returns, as hx_log.c
- * compares the names of every other header ("acc_x" is "Acc_X"). */
-static int name_eq(const char *a, const char *b)
-{
-    for (;;) {
-        while (*a == ' ' || *a == '\t' || *a == '"' || *a == '\'' || *a == '\r') {
-            a++;
-        }
-        while (*b == ' ' || *b == '\t' || *b == '"' || *b == '\'' || *b == '\r') {
-            b++;
-        }
-        if (*a == '\0' || *b == '\0') {
-            return *a == *b;
-        }
-        if (tolower((unsigned char)*a) != tolower((unsigned char)*b)) {
-            return 0;
-        }
-        a++;
-        b++;
-    }
-}
 
 /* Whether a name starts with prefix, without regard to case (after leading
  * blanks and quotes). */
@@ -103,11 +82,11 @@ static int header_line(const char *s, size_t len)
             i++;
         }
         tok[k] = '\0';
-        counter |= name_eq(tok, "PacketCounter") || name_eq(tok, "SampleTimeFine");
-        acc |= name_eq(tok, "Acc_X");
-        gyr |= name_eq(tok, "Gyr_X");
+        counter |= hx_name_eq(tok, "PacketCounter") || hx_name_eq(tok, "SampleTimeFine");
+        acc |= hx_name_eq(tok, "Acc_X");
+        gyr |= hx_name_eq(tok, "Gyr_X");
         inc |= name_starts(tok, "dq_") || name_starts(tok, "dv[") || name_starts(tok, "dv_");
-        dot |= name_eq(tok, "Euler_X") || name_eq(tok, "Quat_W");
+        dot |= hx_name_eq(tok, "Euler_X") || hx_name_eq(tok, "Quat_W");
     }
     return counter && ((acc && gyr) || inc) && !dot;
 }
@@ -198,7 +177,7 @@ static int find(char **f, int n, const char *name)
 {
     int i;
     for (i = 0; i < n; i++) {
-        if (name_eq(f[i], name)) {
+        if (hx_name_eq(f[i], name)) {
             return i;
         }
     }
