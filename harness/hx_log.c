@@ -754,6 +754,19 @@ int hx_name_eq(const char *a, const char *b)
     }
 }
 
+/* The fields a header names, of its `total`: a delimiter at its end names
+ * none (a spreadsheet's export), so rows without one have every field; each
+ * was warned "fewer fields than the header's" until 2026-11-30. The names
+ * split kept (n) are enough to tell, unless it kept fewer than total. */
+static int named_fields(char **f, int n, int total)
+{
+    while (n == total && n > 1 && f[n - 1][0] == '\0') {
+        n--;
+        total--;
+    }
+    return total;
+}
+
 static int find_col(char **f, int n, const char *name)
 {
     int i;
@@ -849,7 +862,7 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
     }
     dc_line = decimal_comma_line(r->line, dc_first, sizeof dc_first);
     n = split(r->line, r->delim, f, HX_MAX_COLS);
-    r->hdr_fields = r->delim == ' ' || total > HX_MAX_COLS ? n : total;
+    r->hdr_fields = r->delim == ' ' || total > HX_MAX_COLS ? n : named_fields(f, n, total);
     r->ncols_needed = 0;
     r->missing_col = -1;
     for (i = 0; i < 8; i++) {
@@ -953,7 +966,7 @@ static int setup_mtmgr(hx_reader_t *r, double rate_hz)
                : strchr(r->line, ';') != NULL ? ';'
                                               : ' ';
     n = split(r->line, r->delim, f, HX_MAX_COLS);
-    r->hdr_fields = n;
+    r->hdr_fields = named_fields(f, n, n);
     if (hx_mtmgr_header(&r->mt, f, n, msg, sizeof msg) != 0) {
         set_err(r, "%s:%ld: %s", r->path, r->stats.lines, msg);
         return -1;

@@ -1908,6 +1908,35 @@ static void test_short_rows_warned(void **state)
         hx_log_free(&log);
     }
     unlink(p);
+    /* a header that ends in a delimiter names no column there (a
+     * spreadsheet's export): rows without it have every field the header
+     * names (each was warned "fewer fields than the header's 9" until
+     * 2026-11-30); a row that lost a field still is, against 8 */
+    tmp_path(p, sizeof p, ".csv");
+    for (pass = 0; pass < 2; pass++) {
+        f = fopen(p, "w");
+        assert_non_null(f);
+        fprintf(f, "t,ax,ay,az,gx,gy,gz,mx,\n");
+        for (c = 0; c < 20; c++) {
+            if (pass == 1 && c == 6) {
+                fprintf(f, "%ld.01,0.01,9.81,0.001,0.002,0.003,0.4\n", c); /* ay lost */
+            } else {
+                fprintf(f, "%ld.01,0.01,0.02,9.81,0.001,0.002,0.003,0.4\n", c);
+            }
+        }
+        assert_int_equal(fclose(f), 0);
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        assert_int_equal(log.meta.format, HX_FMT_CSV);
+        assert_int_equal(log.n, 20);
+        if (pass == 0) {
+            assert_null(strstr(log.warnings, "fewer fields"));
+        } else {
+            assert_non_null(strstr(log.warnings, ".csv:8: 1 row with fewer fields than the header's 8"));
+        }
+        assert_null(strstr(log.warnings, "more fields"));
+        hx_log_free(&log);
+    }
+    unlink(p);
 }
 
 /* A row with more fields than the header names: a stray delimiter inside
