@@ -1189,6 +1189,17 @@ static int setup_text(hx_reader_t *r, double rate_hz)
                 return -1;
             }
         } while (strncmp(trim(r->line), "Header:", 7) != 0);
+        {
+            /* a row's fields: the packet id, which the header leaves
+             * unnamed, and one for each name the header ends with a colon
+             * (16), as many as the colons with "Header:"'s; rows were not
+             * compared with it until 2026-11-30 */
+            const char *q;
+            r->hdr_fields = 0;
+            for (q = r->line; *q != '\0'; q++) {
+                r->hdr_fields += *q == ':' && r->hdr_fields < HX_MAX_COLS; /* as many as split keeps */
+            }
+        }
         /* fields 0-10 are taken (the Freq. column 13 only when there, see
          * TIME_GX2): a last line cut inside field 11 or later is read (it
          * needed 12 fields and such a line was dropped, which
@@ -1387,9 +1398,8 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
          * or the header lacks a column's name; counted and warned at the
          * end (it was read silently; the code review of 2026-11-30). Empty
          * fields past the header's are no data: a trailing delimiter, as
-         * spreadsheets and MT Manager write one on every row. GX2 (its
-         * Header: line leaves the packet id unnamed) and the headerless
-         * OpenShoe 820 Hz file have no count to compare with. */
+         * spreadsheets and MT Manager write one on every row. The
+         * headerless OpenShoe 820 Hz file has no count to compare with. */
         int k, data = 0;
         for (k = r->hdr_fields; k < n && !data; k++) {
             data = f[k][0] != '\0';

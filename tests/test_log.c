@@ -1117,6 +1117,55 @@ static void test_gx2_lost_packets(void **state)
     remove(p);
 }
 
+/* GX2 rows against the header's count: the packet id and the 16 fields the
+ * Header: line names, 17. A row that lost a field (a stamp: the rate
+ * estimate then read from m_x) or gained one (a stray blank splitting a
+ * number) shifts the values after it (one in the columns the samples are
+ * read from mostly stops the reader: a counter read as a_z); they were
+ * read without a word until 2026-11-30. Counted and warned as in the other
+ * formats; a clean file and a cut last line have none. */
+static void test_gx2_field_count(void **state)
+{
+    const long period = 78720;
+    hx_log_t log;
+    char err[320], p[256];
+    FILE *f;
+    long nr, counter = 130516848;
+    int pass;
+    (void)state;
+    for (pass = 0; pass < 3; pass++) {
+        f = open_gx2(p, sizeof p);
+        for (nr = 1; nr <= 30; nr++, counter += period) {
+            const double host = 1274434048.5 + 0.004 * (double)nr;
+            if (pass == 1 && (nr == 7 || nr == 9)) {
+                fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %ld    0x15fd       %ld %.6f %.6f  250.000001   -0.12299968   -0.01066045   -0.46057537 \r\n",
+                        counter, nr, host, host + 0.004); /* a stamp lost: Freq. read from m_x */
+            } else if (pass == 2 && nr == 12) {
+                fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %ld    0x15fd       %ld %.6f %.6f %.6f  250.000001   -0.12 299968   -0.01066045   -0.46057537 \r\n",
+                        counter, nr, host, host, host + 0.004); /* a stray blank */
+            } else {
+                write_gx2_record(f, (unsigned long)counter, nr, host, host + 0.004, "250.000001");
+            }
+        }
+        fprintf(f, "   0xcb   -0.10581776   +0.15830289   +0.99007481   +0.00535047   -0.01242570   +0.00101861     %ld    0x15fd       31 1274434048.624000", counter); /* cut */
+        assert_int_equal(fclose(f), 0);
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        assert_int_equal(log.meta.format, HX_FMT_GX2);
+        if (pass == 1) {
+            assert_non_null(strstr(log.warnings, "_data_inert.txt:11: 2 rows with fewer fields than the header's 17"));
+        } else {
+            assert_null(strstr(log.warnings, "fewer fields"));
+        }
+        if (pass == 2) {
+            assert_non_null(strstr(log.warnings, "_data_inert.txt:16: 1 row with more fields than the header's 17"));
+        } else {
+            assert_null(strstr(log.warnings, "more fields"));
+        }
+        hx_log_free(&log);
+        remove(p);
+    }
+}
+
 /* GX2: the timer-restart note is kept when the log then stops at a bad
  * line (the samples before it were bridged all the same); it was added only
  * at a clean end, so a log cut by an error lost it. */
@@ -2889,6 +2938,7 @@ int main(void)
         cmocka_unit_test(test_importer_units),
         cmocka_unit_test(test_importer_first_rows),
         cmocka_unit_test(test_gx2_lost_packets),
+        cmocka_unit_test(test_gx2_field_count),
         cmocka_unit_test(test_gx2_restart_then_error),
         cmocka_unit_test(test_gx2_first_restart),
         cmocka_unit_test(test_gx2_long),
