@@ -95,6 +95,31 @@ OTHERS = [('z reversed (left-handed)', turn(np.diag([1.0, 1.0, -1.0])), '%.9g'),
           ('stamps jittered 30 %', jitter, '%.9f')]
 
 
+def insert_stand(d0, trajectory, stand_s, path):
+    """Write to path the log d0 (rows t, ax..gz) with a stand of stand_s s
+    inserted at the first stance after its middle (0.2 s in stance in the
+    replay's trajectory CSV): that stance's accelerometer mean with the noise
+    of the log's own first 1.5 s (a standstill in every shared walk), and
+    that standstill's gyro (its bias and noise), what a stop to talk looks
+    like. Returns the time of that stance and the stand's first and last
+    time stamps."""
+    st = np.genfromtxt(trajectory, delimiter=',', names=True)['stance']
+    dt = np.median(np.diff(d0[:, 0]))
+    n = int(0.2 / dt)
+    m = len(d0) // 2
+    while not st[m:m + n].all():
+        m += 1
+    still = d0[d0[:, 0] < 1.5]
+    blk = np.tile(still[:, 1:], (int(np.ceil(stand_s / (len(still) * dt))), 1))[:int(stand_s / dt)]
+    blk[:, 0:3] += d0[m:m + n, 1:4].mean(0) - still[:, 1:4].mean(0)
+    tin = d0[m + n - 1, 0] + dt * np.arange(1, len(blk) + 1)
+    after = d0[m + n:].copy()
+    after[:, 0] += tin[-1] - after[0, 0] + dt
+    np.savetxt(path, np.vstack([d0[:m + n], np.column_stack([tin, blk]), after]), delimiter=',',
+               header='t,ax,ay,az,gx,gy,gz', comments='', fmt='%.9f')
+    return d0[m, 0], tin[0], tin[-1]
+
+
 def replay(path, extra=()):
     r = subprocess.run([H, 'replay', path, '--json', '-', *extra], capture_output=True, text=True)
     try:
@@ -164,29 +189,12 @@ def main():
         row('10 % of samples dropped', *replay(p))
         for r in (100, 50):
             row('--rate %d' % r, *replay(base, ('--rate', str(r))))
-        # a stand inserted into the walk: the first stance after its middle
-        # held for S s, its accelerometer mean with the noise of the log's
-        # own first 1.5 s (a standstill in every shared walk) and that
-        # standstill's gyro (bias and noise): what a stop to talk looks like
         tr = os.path.join(tmp, 'tr.csv')
         subprocess.run([H, 'replay', base, '--out', tr, '--quiet'], check=True, capture_output=True)
-        st = np.genfromtxt(tr, delimiter=',', names=True)['stance']
-        dt = np.median(np.diff(d0[:, 0]))
-        n = int(0.2 / dt)
-        m = len(d0) // 2
-        while not st[m:m + n].all():
-            m += 1
-        still = d0[d0[:, 0] < 1.5]
         for stand_s in (60, 300):
-            blk = np.tile(still[:, 1:], (int(np.ceil(stand_s / (len(still) * dt))), 1))[:int(stand_s / dt)]
-            blk[:, 0:3] += d0[m:m + n, 1:4].mean(0) - still[:, 1:4].mean(0)
-            tin = d0[m + n - 1, 0] + dt * np.arange(1, len(blk) + 1)
-            after = d0[m + n:].copy()
-            after[:, 0] += tin[-1] - after[0, 0] + dt
             p = os.path.join(tmp, 'p.csv')
-            np.savetxt(p, np.vstack([d0[:m + n], np.column_stack([tin, blk]), after]), delimiter=',',
-                       header='t,ax,ay,az,gx,gy,gz', comments='', fmt='%.9f')
-            row('stand of %d s inserted at %.1f s' % (stand_s, d0[m, 0]), *replay(p))
+            at, _, _ = insert_stand(d0, tr, stand_s, p)
+            row('stand of %d s inserted at %.1f s' % (stand_s, at), *replay(p))
             row('the same, --param zaru=1 --param zaru_after_s=1', *replay(p, ('--param', 'zaru=1', '--param',
                                                                              'zaru_after_s=1')))
 
