@@ -754,7 +754,7 @@ int hx_name_eq(const char *a, const char *b)
     }
 }
 
-static int find_col(char **f, int n, const char *name)
+int hx_find_col(char **f, int n, const char *name)
 {
     int i;
     for (i = 0; i < n; i++) {
@@ -853,7 +853,7 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
     r->ncols_needed = 0;
     r->missing_col = -1;
     for (i = 0; i < 8; i++) {
-        int c = (names[i] != NULL) ? find_col(f, n, names[i]) : -1;
+        int c = (names[i] != NULL) ? hx_find_col(f, n, names[i]) : -1;
         /* a name --columns gave is required, also temp's and t's with a rate
          * given (they were dropped without a word) */
         const int given = r->meta.format == HX_FMT_CSV && r->layout.names[i][0] != '\0';
@@ -883,7 +883,7 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
                  * to give the rate (not to a file that is no IMU log) */
                 int k, six = i == 0;
                 for (k = 1; k < 7 && six; k++) {
-                    six = find_col(f, n, names[k]) >= 0;
+                    six = hx_find_col(f, n, names[k]) >= 0;
                 }
                 set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]%s", r->path,
                         r->stats.lines, names[i],

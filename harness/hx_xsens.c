@@ -173,31 +173,20 @@ int hx_mtmgr_comment(hx_mtmgr_t *x, const char *line, long lineno)
     return 1;
 }
 
-static int find(char **f, int n, const char *name)
-{
-    int i;
-    for (i = 0; i < n; i++) {
-        if (hx_name_eq(f[i], name)) {
-            return i;
-        }
-    }
-    return -1;
-}
-
 int hx_mtmgr_header(hx_mtmgr_t *x, char **f, int n, char *msg, size_t msg_size)
 {
     static const char *const acc[3] = { "Acc_X", "Acc_Y", "Acc_Z" };
     static const char *const gyr[3] = { "Gyr_X", "Gyr_Y", "Gyr_Z" };
     int i, inc = 0, free_acc = 0;
-    x->col_ctr = find(f, n, "PacketCounter");
-    x->col_stf = find(f, n, "SampleTimeFine");
+    x->col_ctr = hx_find_col(f, n, "PacketCounter");
+    x->col_stf = hx_find_col(f, n, "SampleTimeFine");
     for (i = 0; i < n; i++) {
         inc |= name_starts(f[i], "dq_") || name_starts(f[i], "dv[") || name_starts(f[i], "dv_");
         free_acc |= name_starts(f[i], "FreeAcc_");
     }
     for (i = 0; i < 6; i++) {
         const char *name = i < 3 ? acc[i] : gyr[i - 3];
-        const int c = find(f, n, name);
+        const int c = hx_find_col(f, n, name);
         if (c < 0) {
             if (inc) {
                 /* the strapdown-integrated increments (MTi Family Reference
