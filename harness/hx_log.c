@@ -927,9 +927,42 @@ static void set_cols(hx_reader_t *r, int t, int a0, int g0)
     }
 }
 
+/* The first rows of an MT Manager export after its header (on line
+ * header_line), read ahead on a second handle of the file for their
+ * SampleTimeFine (hx_mtmgr_peek): the reader's own handle stays at the
+ * first row, and a fault there (a NUL byte, a line too long, a read error)
+ * ends the look ahead and is left for the reading to meet at its line. */
+static void mtmgr_peek(hx_reader_t *r, long header_line)
+{
+    char *f[HX_MAX_COLS];
+    long line = 0;
+    gzFile gz;
+    if (strlen(r->path) + 1 >= sizeof r->path || (gz = gzopen(r->path, "rb")) == NULL) {
+        return; /* a path cut to fit, or gone: no look ahead */
+    }
+    (void)gzbuffer(gz, 1 << 16);
+    while (gzgets(gz, r->line, (int)sizeof r->line) != NULL) {
+        const size_t len = strlen(r->line);
+        int n;
+        if (len == 0 || (r->line[len - 1] != '\n' && !gzeof(gz))) {
+            break;
+        }
+        if (++line <= header_line || blank(r->line)) {
+            continue;
+        }
+        n = split(r->line, r->delim, f, HX_MAX_COLS);
+        if (!hx_mtmgr_peek(&r->mt, f, n)) {
+            break;
+        }
+    }
+    gzclose(gz);
+}
+
 /* Xsens MT Manager's export (hx_xsens.h): the '//' lines, the header and
  * a look at the first data row, whose SampleTimeFine (a number or NaN)
- * chooses the time source; the row is read again as the first sample. */
+ * chooses the time source; the row is read again as the first sample. With
+ * SampleTimeFine, the steps of the first rows' stamps check their unit
+ * (hx_mtmgr_stamps; the unit's refusal is open_raw's). */
 static int setup_mtmgr(hx_reader_t *r, double rate_hz)
 {
     hx_meta_t *m = &r->meta;
@@ -974,6 +1007,12 @@ static int setup_mtmgr(hx_reader_t *r, double rate_hz)
     if (pos < 0 || gzseek(r->gz, pos, SEEK_SET) != pos) {
         set_err(r, "%s:%ld: cannot read the first row again (seek failed)", r->path, r->stats.lines);
         return -1;
+    }
+    if (r->mt.time_src == HX_MTMGR_TIME_STF) {
+        mtmgr_peek(r, lines);
+        if (hx_mtmgr_stamps(&r->mt, msg, sizeof msg)) {
+            add_warn(r, "%s:%ld: %s", r->path, r->mt.stated_line, msg);
+        }
     }
     r->stats.lines = lines;
     r->last_line_open = 0;
@@ -1862,6 +1901,16 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
             snprintf(err, err_size, "%s (format %s detected from the content; give --from FORMAT if it is another)",
                      r->err, hx_format_name(fmt));
         }
+        gzclose(r->gz);
+        free(r);
+        return NULL;
+    }
+    if (guessed && fmt == HX_FMT_MTMGR && r->mt.us_like) {
+        /* taken for an MT Manager export by its header alone, with stamps
+         * that make an IMU's rate in us and none in 100 us ticks: Movella
+         * DOT's CSV (hx_mtmgr_stamps), refused with the CSV reader's
+         * remedy; it was read 100 times too slow (the review of 2026-11-30) */
+        hx_mtmgr_us_refusal(&r->mt, path, err, err_size);
         gzclose(r->gz);
         free(r);
         return NULL;

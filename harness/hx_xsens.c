@@ -139,6 +139,7 @@ int hx_mtmgr_comment(hx_mtmgr_t *x, const char *line, long lineno)
         return 0;
     }
     p += 2;
+    x->comments++;
     while (*p == ' ' || *p == '\t') {
         p++;
     }
@@ -375,4 +376,66 @@ int hx_mtmgr_time(hx_mtmgr_t *x, char **f, int64_t *t_ns, uint32_t *seq, int *ha
     }
     }
     return 0;
+}
+
+int hx_mtmgr_peek(hx_mtmgr_t *x, char **f, int n)
+{
+    const char *s = field(f, n, x->col_stf);
+    double v;
+    if (x->npeek >= HX_MTMGR_PEEK_ROWS) {
+        return 0;
+    }
+    x->peek[x->npeek++] = s != NULL && count_of(s, HX_MTMGR_STF_WRAP - 1.0, &v) == 0 ? v : -1.0;
+    return x->npeek < HX_MTMGR_PEEK_ROWS;
+}
+
+int hx_mtmgr_stamps(hx_mtmgr_t *x, char *msg, size_t msg_size)
+{
+    double d[HX_MTMGR_PEEK_ROWS], prev = -1.0;
+    int i, k = 0;
+    x->stamp_step = 0.0;
+    x->us_like = 0;
+    if (x->time_src != HX_MTMGR_TIME_STF) {
+        return 0;
+    }
+    /* the steps between successive stamps that advance: a wrap (a drop),
+     * a repeated stamp or a row without one gives none */
+    for (i = 0; i < x->npeek; i++) {
+        const double v = x->peek[i];
+        if (v < 0.0) {
+            continue;
+        }
+        if (prev >= 0.0 && v > prev) {
+            double s = v - prev;
+            int j = k++;
+            for (; j > 0 && d[j - 1] > s; j--) {
+                d[j] = d[j - 1]; /* insertion sort: at most 255 steps */
+            }
+            d[j] = s;
+        }
+        prev = v;
+    }
+    if (k == 0) {
+        return 0;
+    }
+    x->stamp_step = k % 2 == 1 ? d[k / 2] : 0.5 * (d[k / 2 - 1] + d[k / 2]);
+    {
+        const double hz = (double)HX_MTMGR_STF_HZ / x->stamp_step; /* 100 us ticks */
+        const double hz_us = 1.0e6 / x->stamp_step;                /* us, as Movella DOT counts */
+        x->us_like = x->comments == 0 && hz < HX_MTMGR_IMU_MIN_HZ && hz_us >= HX_MTMGR_IMU_MIN_HZ &&
+                     hz_us <= HX_MTMGR_IMU_MAX_HZ;
+        (void)msg;
+        (void)msg_size;
+    }
+    return 0;
+}
+
+void hx_mtmgr_us_refusal(const hx_mtmgr_t *x, const char *path, char *msg, size_t msg_size)
+{
+    snprintf(msg, msg_size,
+             "%s: SampleTimeFine steps by %g: %.4g Hz in 100 us ticks, %.4g Hz in us, no '//' line: likely a Movella "
+             "DOT CSV; read it with --from csv --columns "
+             "t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s "
+             "(if MT Manager's: --from mtmanager)",
+             path, x->stamp_step, (double)HX_MTMGR_STF_HZ / x->stamp_step, 1.0e6 / x->stamp_step);
 }
