@@ -961,8 +961,8 @@ static void mtmgr_peek(hx_reader_t *r, long header_line)
 /* Xsens MT Manager's export (hx_xsens.h): the '//' lines, the header and
  * a look at the first data row, whose SampleTimeFine (a number or NaN)
  * chooses the time source; the row is read again as the first sample. With
- * SampleTimeFine, the steps of the first rows' stamps check their unit
- * (hx_mtmgr_stamps; the unit's refusal is open_raw's). */
+ * SampleTimeFine, the steps of the first rows' stamps check the stated rate
+ * and their unit (hx_mtmgr_stamps; the unit's refusal is open_raw's). */
 static int setup_mtmgr(hx_reader_t *r, double rate_hz)
 {
     hx_meta_t *m = &r->meta;

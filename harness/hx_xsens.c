@@ -424,8 +424,16 @@ int hx_mtmgr_stamps(hx_mtmgr_t *x, char *msg, size_t msg_size)
         const double hz_us = 1.0e6 / x->stamp_step;                /* us, as Movella DOT counts */
         x->us_like = x->comments == 0 && hz < HX_MTMGR_IMU_MIN_HZ && hz_us >= HX_MTMGR_IMU_MIN_HZ &&
                      hz_us <= HX_MTMGR_IMU_MAX_HZ;
-        (void)msg;
-        (void)msg_size;
+        if (x->stated_hz > 0.0 && fabs(hz - x->stated_hz) > HX_MTMGR_RATE_TOL * x->stated_hz) {
+            /* the stamps are the samples' times: a stated rate they do not
+             * keep is no nominal rate (the rate is then the stamps') */
+            snprintf(msg, msg_size,
+                     "'// Update Rate' states %g Hz, but SampleTimeFine steps by %g ticks of 100 us (the median of "
+                     "the first %d rows): %.4g Hz; the stamps are used, for the time and the rate",
+                     x->stated_hz, x->stamp_step, x->npeek, hz);
+            x->rate_hz = 0.0;
+            return 1;
+        }
     }
     return 0;
 }

@@ -33,6 +33,9 @@
 /** The rows after the header whose SampleTimeFine steps hx_mtmgr_stamps
  *  compares with the stated rate and the unit. */
 #define HX_MTMGR_PEEK_ROWS 256
+/** How far the stated '// Update Rate' may be from the stamps' rate before
+ *  it is warned and left out (a fraction of the stated rate). */
+#define HX_MTMGR_RATE_TOL 0.05
 /** The rates an IMU can have, Hz: SampleTimeFine steps slower than the
  *  lowest in 100 us ticks that are in this range in us are a Movella DOT
  *  CSV's (hx_mtmgr_stamps). */
@@ -108,6 +111,10 @@ int hx_mtmgr_peek(hx_mtmgr_t *x, char **f, int n);
 
 /** After hx_mtmgr_peek, with SampleTimeFine the time source: the median of
  *  the steps between the rows' stamps that advance (stamp_step), and
+ *  - when the '// Update Rate' differs from the stamps' rate by more than
+ *    HX_MTMGR_RATE_TOL of it: the stamps rule, the stated rate is dropped
+ *    (rate_hz 0, the rate is then estimated from the stamps), and 1 with
+ *    the warning in msg;
  *  - when there is no '//' line and the steps are slower than
  *    HX_MTMGR_IMU_MIN_HZ in 100 us ticks but in HX_MTMGR_IMU_MIN_HZ ..
  *    HX_MTMGR_IMU_MAX_HZ in us: us_like (a Movella DOT CSV, whose

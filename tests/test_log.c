@@ -2849,6 +2849,53 @@ static void test_mtmgr_us_stamps(void **state)
     unlink(p);
 }
 
+/* The '// Update Rate' is checked against the SampleTimeFine steps (their
+ * median over the first 256 rows): more than 5 % apart, a warning names
+ * both and the stamps rule (the rate is theirs, not nominal); within 5 %
+ * the stated rate stays the nominal one. It was taken without a check: an
+ * export stating 100 Hz with stamps at 400 Hz was "100 Hz (nominal)". */
+static void test_mtmgr_stated_rate(void **state)
+{
+    char p[256], err[320];
+    hx_log_t log;
+    static const struct {
+        long step;
+        int warned;
+    } cases[] = { { 100, 0 }, { 96, 0 }, { 105, 0 }, { 94, 1 }, { 106, 1 }, { 25, 1 } };
+    size_t c;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    for (c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        write_mtmgr_steps(p, "", 100.0, 12, cases[c].step, 0);
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        assert_int_equal(log.n, 12);
+        assert_true(log.t_ns[1] - log.t_ns[0] == cases[c].step * 100000LL);
+        if (cases[c].warned) {
+            assert_non_null(strstr(log.warnings, ".csv:1: '// Update Rate' states 100 Hz, but SampleTimeFine steps by"));
+            assert_non_null(strstr(log.warnings, "the stamps are used, for the time and the rate"));
+            assert_int_equal(log.meta.rate_nominal, 0);
+            assert_true(fabs(log.meta.rate_hz - 1.0e4 / (double)cases[c].step) < 1e-6);
+        } else {
+            assert_string_equal(log.warnings, "");
+            assert_int_equal(log.meta.rate_nominal, 1);
+            assert_true(log.meta.rate_hz == 100.0);
+        }
+        hx_log_free(&log);
+    }
+    write_mtmgr_steps(p, "", 100.0, 12, 25, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_non_null(strstr(log.warnings, ".csv:1: '// Update Rate' states 100 Hz, but SampleTimeFine steps by 25 ticks "
+                                         "of 100 us (the median of the first 12 rows): 400 Hz; the stamps are used, "
+                                         "for the time and the rate"));
+    hx_log_free(&log);
+    /* the median of the first 256 rows, whatever follows */
+    write_mtmgr_steps(p, "", 100.0, 300, 25, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_non_null(strstr(log.warnings, "steps by 25 ticks of 100 us (the median of the first 256 rows): 400 Hz"));
+    hx_log_free(&log);
+    unlink(p);
+}
+
 static int layout_reset(void **state)
 {
     (void)state;
@@ -2977,6 +3024,7 @@ int main(void)
         cmocka_unit_test(test_mtmgr_refused),
         cmocka_unit_test(test_mtmgr_detect),
         cmocka_unit_test(test_mtmgr_us_stamps),
+        cmocka_unit_test(test_mtmgr_stated_rate),
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
         cmocka_unit_test(test_time_unit_rate),
     };

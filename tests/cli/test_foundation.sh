@@ -588,6 +588,24 @@ print("%.1f mm" % (d * 1000))
 sys.exit(0 if len(a) == len(b) == 16539 and d < 0.01 else 1)' "$T/xorig_out.csv" "$T/xmt_out.csv" >"$T/xdist" 2>"$T/pyerr"; then
     pass "MT Manager export: within 1 cm of the walk's own path at every sample (at most $(cat "$T/xdist"))"
 else fail "MT Manager export: more than 1 cm from the walk's own path ($(cat "$T/xdist"))"; fi
+# the '// Update Rate' against the SampleTimeFine steps (their median over
+# the first 256 rows: 25 ticks, 400 Hz, for the 398 Hz walk): within 5 % it
+# is the nominal rate; 100 Hz stated was taken as the nominal rate without
+# a word (info: "100.000 Hz (nominal)"), now warned with both, and the
+# stamps rule: the rate is theirs
+sed 's|^// Device settings:$|&\n//  Update Rate: 400.0Hz|' "$T/xmt.txt" >"$T/xmt400.txt"
+expect_exit 0 "info on an export stating 400 Hz, its stamps at 398 Hz" "$H" info "$T/xmt400.txt"
+expect_out "rate        400.000 Hz (nominal)" "stated rate within 5 % of the stamps: the nominal rate"
+if grep -q "Update Rate" "$T/err"; then fail "stated rate within 5 %: warned: $(cat "$T/err")"; else pass "stated rate within 5 %: no warning"; fi
+sed 's|^// Device settings:$|&\n//  Update Rate: 100.0Hz|' "$T/xmt.txt" >"$T/xmt100.txt"
+expect_exit 0 "info on an export stating 100 Hz, its stamps at 398 Hz" "$H" info "$T/xmt100.txt"
+expect_err "xmt100.txt:8: '// Update Rate' states 100 Hz, but SampleTimeFine steps by 25 ticks of 100 us (the median of the first 256 rows): 400 Hz; the stamps are used, for the time and the rate" \
+    "stated rate 4 times the stamps': warned, both named, the stamps used"
+expect_out_re "^rate +398\.[0-9]+ Hz \(from the time stamps" "stated rate 4 times the stamps': the rate is the stamps'"
+expect_exit 0 "replay of that export" "$H" replay "$T/xmt100.txt" --quiet --out "$T/xmt100_out.csv"
+if [ -s "$T/xref_out.csv" ] && cmp -s "$T/xref_out.csv" "$T/xmt100_out.csv"; then
+    pass "stated rate 4 times the stamps': the same trajectory as the walk's CSV"
+else fail "stated rate 4 times the stamps': trajectory differs: $(cmp "$T/xref_out.csv" "$T/xmt100_out.csv" 2>&1)"; fi
 # refused with the setting to change: an export of increments; a counter
 # without a stated rate names --input-rate
 printf '// General information:\n//  MT Manager version: 2022.2.0\nPacketCounter\tSampleTimeFine\tdq_W\tdq_X\tdq_Y\tdq_Z\tdv[1]\tdv[2]\tdv[3]\n1\t100\t1\t0\t0\t0\t0\t0\t0.098\n' >"$T/xdq.txt"
