@@ -398,8 +398,9 @@ int hx_mtmgr_stamps(hx_mtmgr_t *x, char *msg, size_t msg_size)
     if (x->time_src != HX_MTMGR_TIME_STF) {
         return 0;
     }
-    /* the steps between successive stamps that advance: a wrap (a drop),
-     * a repeated stamp or a row without one gives none */
+    /* the steps between successive stamps that advance: a wrap (a drop)
+     * or a repeated stamp gives none; a row without a stamp is passed
+     * over (the step spans it, as a lost packet's does) */
     for (i = 0; i < x->npeek; i++) {
         const double v = x->peek[i];
         if (v < 0.0) {
