@@ -767,7 +767,7 @@ static int named_fields(char **f, int n, int total)
     return total;
 }
 
-static int find_col(char **f, int n, const char *name)
+int hx_find_col(char **f, int n, const char *name)
 {
     int i;
     for (i = 0; i < n; i++) {
@@ -866,7 +866,7 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
     r->ncols_needed = 0;
     r->missing_col = -1;
     for (i = 0; i < 8; i++) {
-        int c = (names[i] != NULL) ? find_col(f, n, names[i]) : -1;
+        int c = (names[i] != NULL) ? hx_find_col(f, n, names[i]) : -1;
         /* a name --columns gave is required, also temp's and t's with a rate
          * given (they were dropped without a word) */
         const int given = r->meta.format == HX_FMT_CSV && r->layout.names[i][0] != '\0';
@@ -896,7 +896,7 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
                  * to give the rate (not to a file that is no IMU log) */
                 int k, six = i == 0;
                 for (k = 1; k < 7 && six; k++) {
-                    six = find_col(f, n, names[k]) >= 0;
+                    six = hx_find_col(f, n, names[k]) >= 0;
                 }
                 set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]%s", r->path,
                         r->stats.lines, names[i],
@@ -940,9 +940,42 @@ static void set_cols(hx_reader_t *r, int t, int a0, int g0)
     }
 }
 
+/* The first rows of an MT Manager export after its header (on line
+ * header_line), read ahead on a second handle of the file for their
+ * SampleTimeFine (hx_mtmgr_peek): the reader's own handle stays at the
+ * first row, and a fault there (a NUL byte, a line too long, a read error)
+ * ends the look ahead and is left for the reading to meet at its line. */
+static void mtmgr_peek(hx_reader_t *r, long header_line)
+{
+    char *f[HX_MAX_COLS];
+    long line = 0;
+    gzFile gz;
+    if (strlen(r->path) + 1 >= sizeof r->path || (gz = gzopen(r->path, "rb")) == NULL) {
+        return; /* a path cut to fit, or gone: no look ahead */
+    }
+    (void)gzbuffer(gz, 1 << 16);
+    while (gzgets(gz, r->line, (int)sizeof r->line) != NULL) {
+        const size_t len = strlen(r->line);
+        int n;
+        if (len == 0 || (r->line[len - 1] != '\n' && !gzeof(gz))) {
+            break;
+        }
+        if (++line <= header_line || blank(r->line)) {
+            continue;
+        }
+        n = split(r->line, r->delim, f, HX_MAX_COLS);
+        if (!hx_mtmgr_peek(&r->mt, f, n)) {
+            break;
+        }
+    }
+    gzclose(gz);
+}
+
 /* Xsens MT Manager's export (hx_xsens.h): the '//' lines, the header and
  * a look at the first data row, whose SampleTimeFine (a number or NaN)
- * chooses the time source; the row is read again as the first sample. */
+ * chooses the time source; the row is read again as the first sample. With
+ * SampleTimeFine, the steps of the first rows' stamps check the stated rate
+ * and their unit (hx_mtmgr_stamps; the unit's refusal is open_raw's). */
 static int setup_mtmgr(hx_reader_t *r, double rate_hz)
 {
     hx_meta_t *m = &r->meta;
@@ -987,6 +1020,12 @@ static int setup_mtmgr(hx_reader_t *r, double rate_hz)
     if (pos < 0 || gzseek(r->gz, pos, SEEK_SET) != pos) {
         set_err(r, "%s:%ld: cannot read the first row again (seek failed)", r->path, r->stats.lines);
         return -1;
+    }
+    if (r->mt.time_src == HX_MTMGR_TIME_STF) {
+        mtmgr_peek(r, lines);
+        if (hx_mtmgr_stamps(&r->mt, msg, sizeof msg)) {
+            add_warn(r, "%s:%ld: %s", r->path, r->mt.stated_line, msg);
+        }
     }
     r->stats.lines = lines;
     r->last_line_open = 0;
@@ -1885,6 +1924,16 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
             snprintf(err, err_size, "%s (format %s detected from the content; give --from FORMAT if it is another)",
                      r->err, hx_format_name(fmt));
         }
+        gzclose(r->gz);
+        free(r);
+        return NULL;
+    }
+    if (guessed && fmt == HX_FMT_MTMGR && r->mt.us_like) {
+        /* taken for an MT Manager export by its header alone, with stamps
+         * that make an IMU's rate in us and none in 100 us ticks: Movella
+         * DOT's CSV (hx_mtmgr_stamps), refused with the CSV reader's
+         * remedy; it was read 100 times too slow (the review of 2026-11-30) */
+        hx_mtmgr_us_refusal(&r->mt, path, err, err_size);
         gzclose(r->gz);
         free(r);
         return NULL;

@@ -68,6 +68,9 @@ hx_format_t hx_format_from_name(const char *name);
 /** Whether two column names are equal but for case, blanks, quotes and
  *  carriage returns ("acc_x" and "Acc_X"), as the readers match headers. */
 int hx_name_eq(const char *a, const char *b);
+/** The first of the n header fields f that is name (hx_name_eq); -1 when
+ *  none is. */
+int hx_find_col(char **f, int n, const char *name);
 /** The format names a user gives to --from, comma-separated: the one list
  *  behind --help (HX_INPUT_OPTS) and the error of an unknown name; a new
  *  importer adds its name here and in k_format_names (hx_log.c). */

@@ -139,6 +139,7 @@ int hx_mtmgr_comment(hx_mtmgr_t *x, const char *line, long lineno)
         return 0;
     }
     p += 2;
+    x->comments++;
     while (*p == ' ' || *p == '\t') {
         p++;
     }
@@ -173,31 +174,20 @@ int hx_mtmgr_comment(hx_mtmgr_t *x, const char *line, long lineno)
     return 1;
 }
 
-static int find(char **f, int n, const char *name)
-{
-    int i;
-    for (i = 0; i < n; i++) {
-        if (hx_name_eq(f[i], name)) {
-            return i;
-        }
-    }
-    return -1;
-}
-
 int hx_mtmgr_header(hx_mtmgr_t *x, char **f, int n, char *msg, size_t msg_size)
 {
     static const char *const acc[3] = { "Acc_X", "Acc_Y", "Acc_Z" };
     static const char *const gyr[3] = { "Gyr_X", "Gyr_Y", "Gyr_Z" };
     int i, inc = 0, free_acc = 0;
-    x->col_ctr = find(f, n, "PacketCounter");
-    x->col_stf = find(f, n, "SampleTimeFine");
+    x->col_ctr = hx_find_col(f, n, "PacketCounter");
+    x->col_stf = hx_find_col(f, n, "SampleTimeFine");
     for (i = 0; i < n; i++) {
         inc |= name_starts(f[i], "dq_") || name_starts(f[i], "dv[") || name_starts(f[i], "dv_");
         free_acc |= name_starts(f[i], "FreeAcc_");
     }
     for (i = 0; i < 6; i++) {
         const char *name = i < 3 ? acc[i] : gyr[i - 3];
-        const int c = find(f, n, name);
+        const int c = hx_find_col(f, n, name);
         if (c < 0) {
             if (inc) {
                 /* the strapdown-integrated increments (MTi Family Reference
@@ -386,4 +376,75 @@ int hx_mtmgr_time(hx_mtmgr_t *x, char **f, int64_t *t_ns, uint32_t *seq, int *ha
     }
     }
     return 0;
+}
+
+int hx_mtmgr_peek(hx_mtmgr_t *x, char **f, int n)
+{
+    const char *s = field(f, n, x->col_stf);
+    double v;
+    if (x->npeek >= HX_MTMGR_PEEK_ROWS) {
+        return 0;
+    }
+    x->peek[x->npeek++] = s != NULL && count_of(s, HX_MTMGR_STF_WRAP - 1.0, &v) == 0 ? v : -1.0;
+    return x->npeek < HX_MTMGR_PEEK_ROWS;
+}
+
+int hx_mtmgr_stamps(hx_mtmgr_t *x, char *msg, size_t msg_size)
+{
+    double d[HX_MTMGR_PEEK_ROWS], prev = -1.0;
+    int i, k = 0;
+    x->stamp_step = 0.0;
+    x->us_like = 0;
+    if (x->time_src != HX_MTMGR_TIME_STF) {
+        return 0;
+    }
+    /* the steps between successive stamps that advance: a wrap (a drop)
+     * or a repeated stamp gives none; a row without a stamp is passed
+     * over (the step spans it, as a lost packet's does) */
+    for (i = 0; i < x->npeek; i++) {
+        const double v = x->peek[i];
+        if (v < 0.0) {
+            continue;
+        }
+        if (prev >= 0.0 && v > prev) {
+            double s = v - prev;
+            int j = k++;
+            for (; j > 0 && d[j - 1] > s; j--) {
+                d[j] = d[j - 1]; /* insertion sort: at most 255 steps */
+            }
+            d[j] = s;
+        }
+        prev = v;
+    }
+    if (k == 0) {
+        return 0;
+    }
+    x->stamp_step = k % 2 == 1 ? d[k / 2] : 0.5 * (d[k / 2 - 1] + d[k / 2]);
+    {
+        const double hz = (double)HX_MTMGR_STF_HZ / x->stamp_step; /* 100 us ticks */
+        const double hz_us = 1.0e6 / x->stamp_step;                /* us, as Movella DOT counts */
+        x->us_like = x->comments == 0 && hz < HX_MTMGR_IMU_MIN_HZ && hz_us >= HX_MTMGR_IMU_MIN_HZ &&
+                     hz_us <= HX_MTMGR_IMU_MAX_HZ;
+        if (x->stated_hz > 0.0 && fabs(hz - x->stated_hz) > HX_MTMGR_RATE_TOL * x->stated_hz) {
+            /* the stamps are the samples' times: a stated rate they do not
+             * keep is no nominal rate (the rate is then the stamps') */
+            snprintf(msg, msg_size,
+                     "'// Update Rate' states %g Hz, but SampleTimeFine steps by %g ticks of 100 us (the median of "
+                     "the first %d rows): %.4g Hz; the stamps are used, for the time and the rate",
+                     x->stated_hz, x->stamp_step, x->npeek, hz);
+            x->rate_hz = 0.0;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+void hx_mtmgr_us_refusal(const hx_mtmgr_t *x, const char *path, char *msg, size_t msg_size)
+{
+    snprintf(msg, msg_size,
+             "%s: SampleTimeFine steps by %g: %.4g Hz in 100 us ticks, %.4g Hz in us, no '//' line: likely a Movella "
+             "DOT CSV; read it with --from csv --columns "
+             "t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s "
+             "(if MT Manager's: --from mtmanager)",
+             path, x->stamp_step, (double)HX_MTMGR_STF_HZ / x->stamp_step, 1.0e6 / x->stamp_step);
 }

@@ -30,6 +30,17 @@
 /** PacketCounter is a uint16 and wraps at 65536 (XDA's packet stamper:
  *  a drop by more than half the range is a wrap). */
 #define HX_MTMGR_CTR_WRAP 65536.0
+/** The rows after the header whose SampleTimeFine steps hx_mtmgr_stamps
+ *  compares with the stated rate and the unit. */
+#define HX_MTMGR_PEEK_ROWS 256
+/** How far the stated '// Update Rate' may be from the stamps' rate before
+ *  it is warned and left out (a fraction of the stated rate). */
+#define HX_MTMGR_RATE_TOL 0.05
+/** The rates an IMU can have, Hz: SampleTimeFine steps slower than the
+ *  lowest in 100 us ticks that are in this range in us are a Movella DOT
+ *  CSV's (hx_mtmgr_stamps). */
+#define HX_MTMGR_IMU_MIN_HZ 20.0
+#define HX_MTMGR_IMU_MAX_HZ 5000.0
 
 /** Where a row's time comes from. */
 typedef enum {
@@ -46,6 +57,7 @@ typedef struct {
     double stated_hz;        /**< "// Update Rate: 100.0Hz"; 0: not stated */
     long stated_line;        /**< its line */
     char product[24];        /**< "// ProductCode: MTW2-3A7G6"; "" when not given */
+    long comments;           /**< '//' lines before the header */
     hx_mtmgr_time_t time_src;
     int use_ctr;             /**< PacketCounter gives each sample's seq */
     double rate_hz;          /**< rate of the counter or index time */
@@ -55,6 +67,10 @@ typedef struct {
     int have_ctr, have_stf;
     double ctr_prev, stf_prev;     /**< the last raw values */
     double ctr_wrap, stf_wrap;     /**< counts added by the wraps so far */
+    double peek[HX_MTMGR_PEEK_ROWS]; /**< SampleTimeFine of the first rows (hx_mtmgr_peek); -1: none */
+    int npeek;               /**< rows in peek */
+    double stamp_step;       /**< their median step that advances, ticks; 0: none (hx_mtmgr_stamps) */
+    int us_like;             /**< the steps read as a Movella DOT CSV's us (hx_mtmgr_stamps) */
 } hx_mtmgr_t;
 
 /** Whether the start of a file (text, NUL-terminated, a UTF-8 byte-order
@@ -87,6 +103,31 @@ int hx_mtmgr_missing(const char *field);
  *  the stated rate. 0, or -1 with the reason in msg (a counter or index
  *  time without a rate). */
 int hx_mtmgr_choose_time(hx_mtmgr_t *x, char **f, int n, double input_hz, char *msg, size_t msg_size);
+
+/** One of the first data rows (n fields f; the first one included), read
+ *  ahead before the samples: its SampleTimeFine is kept (-1 when it has
+ *  none) for hx_mtmgr_stamps. 1 while more rows are wanted. */
+int hx_mtmgr_peek(hx_mtmgr_t *x, char **f, int n);
+
+/** After hx_mtmgr_peek, with SampleTimeFine the time source: the median of
+ *  the steps between the rows' stamps that advance (stamp_step), and
+ *  - when the '// Update Rate' differs from the stamps' rate by more than
+ *    HX_MTMGR_RATE_TOL of it: the stamps rule, the stated rate is dropped
+ *    (rate_hz 0, the rate is then estimated from the stamps), and 1 with
+ *    the warning in msg;
+ *  - when there is no '//' line and the steps are slower than
+ *    HX_MTMGR_IMU_MIN_HZ in 100 us ticks but in HX_MTMGR_IMU_MIN_HZ ..
+ *    HX_MTMGR_IMU_MAX_HZ in us: us_like (a Movella DOT CSV, whose
+ *    SampleTimeFine counts us; hx_mtmgr_us_refusal).
+ *  Else 0. */
+int hx_mtmgr_stamps(hx_mtmgr_t *x, char *msg, size_t msg_size);
+
+/** The refusal of a file detected as an export whose stamps are us_like:
+ *  "PATH: SampleTimeFine steps by N (R Hz in MT Manager's 100 us ticks, R'
+ *  Hz in us) with no '//' preamble: likely a Movella DOT CSV; read it with
+ *  --from csv --columns ... --units time=us,gyro=deg/s (an MT Manager
+ *  export: --from mtmanager)". */
+void hx_mtmgr_us_refusal(const hx_mtmgr_t *x, const char *path, char *msg, size_t msg_size);
 
 /** A data row (n fields f): 1 when a value the reader uses (Acc_, Gyr_,
  *  the time source, the counter when it gives seq) is missing, and the row

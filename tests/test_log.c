@@ -2844,6 +2844,136 @@ static void test_mtmgr_detect(void **state)
     unlink(p);
 }
 
+/* An export of rows whose SampleTimeFine steps by step from 1000 (one
+ * step of gap instead after row gap_at, when > 0), after pre ("" for a
+ * header alone) and an optional '// Update Rate' of stated Hz (0: none). */
+static void write_mtmgr_steps(const char *p, const char *pre, double stated, int rows, long step, int gap_at)
+{
+    FILE *f = fopen(p, "w");
+    long stf = 1000;
+    int i;
+    assert_non_null(f);
+    fprintf(f, "%s", pre);
+    if (stated > 0.0) {
+        fprintf(f, "// Update Rate: %.1fHz\n", stated);
+    }
+    fprintf(f, "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,Mag_Z\n");
+    for (i = 0; i < rows; i++) {
+        fprintf(f, "%d,%ld,0.1,0.2,9.8,0.01,0.02,0.03,0.4,-0.1,0.8\n", i, stf);
+        stf += i + 1 == gap_at ? 40 * step : step;
+    }
+    assert_int_equal(fclose(f), 0);
+}
+
+/* A header alone whose SampleTimeFine steps are slower than 20 Hz in MT
+ * Manager's 100 us ticks but 20 Hz .. 5 kHz in us is Movella DOT's CSV
+ * (DOT user manual, XD0502P, 4.2.5: SampleTimeFine in us), refused with the
+ * CSV reader's remedy; it was read 100 times too slow. At the bounds (500
+ * ticks: 20 Hz; 50,001: 19.9996 Hz in us), with a '//' line, or with
+ * --from mtmanager it is read as an export. The median step (a gap, a
+ * wrap in the first rows) decides. A mutant that drops the '//' condition
+ * refuses the preamble case; one without the us range refuses 50,001. */
+static void test_mtmgr_us_stamps(void **state)
+{
+    char p[256], err[320];
+    hx_log_t log;
+    static const struct {
+        long step;
+        int refused;
+    } cases[] = { { 150, 0 }, { 500, 0 }, { 501, 1 }, { 2511, 1 }, { 50000, 1 }, { 50001, 0 } };
+    size_t c;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    for (c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        write_mtmgr_steps(p, "", 0.0, 12, cases[c].step, 0);
+        assert_int_equal(hx_detect_file(p), HX_FMT_MTMGR);
+        if (cases[c].refused) {
+            assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+            assert_non_null(strstr(err, "no '//' line: likely a Movella DOT CSV; read it with --from csv --columns "
+                                        "t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z "
+                                        "--units time=us,gyro=deg/s (if MT Manager's: --from mtmanager)"));
+        } else {
+            assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+            assert_int_equal(log.n, 12);
+            assert_true(log.t_ns[1] - log.t_ns[0] == cases[c].step * 100000LL);
+            hx_log_free(&log);
+        }
+    }
+    write_mtmgr_steps(p, "", 0.0, 12, 501, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ".csv: SampleTimeFine steps by 501: 19.96 Hz in 100 us ticks, 1996 Hz in us, no "
+                                "'//' line: likely a Movella DOT CSV"));
+    /* the median step: a gap of 40 steps and a 2^32 wrap in the first rows */
+    write_mtmgr_steps(p, "", 0.0, 12, 2511, 4);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ": SampleTimeFine steps by 2511: 3.982 Hz in 100 us ticks, 398.2 Hz in us"));
+    write_text(p, "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z\n"
+                  "0,4294962000,0.1,0.2,9.8,0.01,0.02,0.03\n1,4294964500,0.1,0.2,9.8,0.01,0.02,0.03\n"
+                  "2,4294967000,0.1,0.2,9.8,0.01,0.02,0.03\n3,2204,0.1,0.2,9.8,0.01,0.02,0.03\n"
+                  "4,4704,0.1,0.2,9.8,0.01,0.02,0.03\n");
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ": SampleTimeFine steps by 2500: 4 Hz in 100 us ticks, 400 Hz in us"));
+    /* a '//' line before the header: MT Manager's, read in ticks */
+    write_mtmgr_steps(p, "// Coordinate system: ENU\n", 0.0, 12, 2511, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_true(log.t_ns[1] - log.t_ns[0] == 251100000LL);
+    hx_log_free(&log);
+    /* given with --from mtmanager: read in ticks, as asked */
+    write_mtmgr_steps(p, "", 0.0, 12, 2511, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_MTMGR, 0.0, err, sizeof err), 0);
+    assert_int_equal(log.n, 12);
+    assert_true(log.t_ns[1] - log.t_ns[0] == 251100000LL);
+    hx_log_free(&log);
+    unlink(p);
+}
+
+/* The '// Update Rate' is checked against the SampleTimeFine steps (their
+ * median over the first 256 rows): more than 5 % apart, a warning names
+ * both and the stamps rule (the rate is theirs, not nominal); within 5 %
+ * the stated rate stays the nominal one. It was taken without a check: an
+ * export stating 100 Hz with stamps at 400 Hz was "100 Hz (nominal)". */
+static void test_mtmgr_stated_rate(void **state)
+{
+    char p[256], err[320];
+    hx_log_t log;
+    static const struct {
+        long step;
+        int warned;
+    } cases[] = { { 100, 0 }, { 96, 0 }, { 105, 0 }, { 94, 1 }, { 106, 1 }, { 25, 1 } };
+    size_t c;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    for (c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        write_mtmgr_steps(p, "", 100.0, 12, cases[c].step, 0);
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        assert_int_equal(log.n, 12);
+        assert_true(log.t_ns[1] - log.t_ns[0] == cases[c].step * 100000LL);
+        if (cases[c].warned) {
+            assert_non_null(strstr(log.warnings, ".csv:1: '// Update Rate' states 100 Hz, but SampleTimeFine steps by"));
+            assert_non_null(strstr(log.warnings, "the stamps are used, for the time and the rate"));
+            assert_int_equal(log.meta.rate_nominal, 0);
+            assert_true(fabs(log.meta.rate_hz - 1.0e4 / (double)cases[c].step) < 1e-6);
+        } else {
+            assert_string_equal(log.warnings, "");
+            assert_int_equal(log.meta.rate_nominal, 1);
+            assert_true(log.meta.rate_hz == 100.0);
+        }
+        hx_log_free(&log);
+    }
+    write_mtmgr_steps(p, "", 100.0, 12, 25, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_non_null(strstr(log.warnings, ".csv:1: '// Update Rate' states 100 Hz, but SampleTimeFine steps by 25 ticks "
+                                         "of 100 us (the median of the first 12 rows): 400 Hz; the stamps are used, "
+                                         "for the time and the rate"));
+    hx_log_free(&log);
+    /* the median of the first 256 rows, whatever follows */
+    write_mtmgr_steps(p, "", 100.0, 300, 25, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_non_null(strstr(log.warnings, "steps by 25 ticks of 100 us (the median of the first 256 rows): 400 Hz"));
+    hx_log_free(&log);
+    unlink(p);
+}
+
 static int layout_reset(void **state)
 {
     (void)state;
@@ -2972,6 +3102,8 @@ int main(void)
         cmocka_unit_test(test_mtmgr_columns_and_rate),
         cmocka_unit_test(test_mtmgr_refused),
         cmocka_unit_test(test_mtmgr_detect),
+        cmocka_unit_test(test_mtmgr_us_stamps),
+        cmocka_unit_test(test_mtmgr_stated_rate),
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
         cmocka_unit_test(test_time_unit_rate),
     };

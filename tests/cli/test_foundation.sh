@@ -588,6 +588,24 @@ print("%.1f mm" % (d * 1000))
 sys.exit(0 if len(a) == len(b) == 16539 and d < 0.01 else 1)' "$T/xorig_out.csv" "$T/xmt_out.csv" >"$T/xdist" 2>"$T/pyerr"; then
     pass "MT Manager export: within 1 cm of the walk's own path at every sample (at most $(cat "$T/xdist"))"
 else fail "MT Manager export: more than 1 cm from the walk's own path ($(cat "$T/xdist"))"; fi
+# the '// Update Rate' against the SampleTimeFine steps (their median over
+# the first 256 rows: 25 ticks, 400 Hz, for the 398 Hz walk): within 5 % it
+# is the nominal rate; 100 Hz stated was taken as the nominal rate without
+# a word (info: "100.000 Hz (nominal)"), now warned with both, and the
+# stamps rule: the rate is theirs
+sed 's|^// Device settings:$|&\n//  Update Rate: 400.0Hz|' "$T/xmt.txt" >"$T/xmt400.txt"
+expect_exit 0 "info on an export stating 400 Hz, its stamps at 398 Hz" "$H" info "$T/xmt400.txt"
+expect_out "rate        400.000 Hz (nominal)" "stated rate within 5 % of the stamps: the nominal rate"
+if grep -q "Update Rate" "$T/err"; then fail "stated rate within 5 %: warned: $(cat "$T/err")"; else pass "stated rate within 5 %: no warning"; fi
+sed 's|^// Device settings:$|&\n//  Update Rate: 100.0Hz|' "$T/xmt.txt" >"$T/xmt100.txt"
+expect_exit 0 "info on an export stating 100 Hz, its stamps at 398 Hz" "$H" info "$T/xmt100.txt"
+expect_err "xmt100.txt:8: '// Update Rate' states 100 Hz, but SampleTimeFine steps by 25 ticks of 100 us (the median of the first 256 rows): 400 Hz; the stamps are used, for the time and the rate" \
+    "stated rate 4 times the stamps': warned, both named, the stamps used"
+expect_out_re "^rate +398\.[0-9]+ Hz \(from the time stamps" "stated rate 4 times the stamps': the rate is the stamps'"
+expect_exit 0 "replay of that export" "$H" replay "$T/xmt100.txt" --quiet --out "$T/xmt100_out.csv"
+if [ -s "$T/xref_out.csv" ] && cmp -s "$T/xref_out.csv" "$T/xmt100_out.csv"; then
+    pass "stated rate 4 times the stamps': the same trajectory as the walk's CSV"
+else fail "stated rate 4 times the stamps': trajectory differs: $(cmp "$T/xref_out.csv" "$T/xmt100_out.csv" 2>&1)"; fi
 # refused with the setting to change: an export of increments; a counter
 # without a stated rate names --input-rate
 printf '// General information:\n//  MT Manager version: 2022.2.0\nPacketCounter\tSampleTimeFine\tdq_W\tdq_X\tdq_Y\tdq_Z\tdv[1]\tdv[2]\tdv[3]\n1\t100\t1\t0\t0\t0\t0\t0\t0.098\n' >"$T/xdq.txt"
@@ -615,6 +633,29 @@ expect_exit 1 "a Movella DOT CSV (Quat_W) is not taken for an MT Manager export"
 expect_exit 0 "DOT CSV read with --columns and --units time=us,gyro=deg/s" "$H" info "$T/xdot.csv" --from csv \
     --columns t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s
 expect_out_re "^rate +398\.[0-9]+ Hz" "DOT CSV read as CSV: the walk's rate"
+# ... and a DOT CSV of Acc_*, Gyr_* and Mag_* alone names nothing MT Manager
+# does not: its SampleTimeFine steps (2511 a row in the walk) are 3.98 Hz
+# in MT Manager's 100 us ticks but 398 Hz in us, and no '//' line precedes
+# the header. It was read as an export 100 times too slow (3.982 Hz,
+# 4161.803 s; replay hinted 'divide by 1000'); now refused, the DOT CSV and
+# the --columns/--units remedy named, which reads it at its rate. Given
+# with --from mtmanager it is read in ticks, as asked.
+awk -F, 'NR > 1 { split($1, p, "."); us = p[1] * 1000000 + substr(p[2] "000000000", 1, 6)
+    printf "%d,%d,%s,%s,%s,%.6f,%.6f,%.6f,0.41,-0.12,0.83\n", NR - 2, us + 12345678, $2, $3, $4, $5 * 57.29578, $6 * 57.29578, $7 * 57.29578 }
+    BEGIN { print "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,Mag_Z" }' "$T/xw.csv" >"$T/xdotm.csv"
+dot_remedy="likely a Movella DOT CSV; read it with --from csv --columns t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s"
+expect_exit 1 "a Movella DOT CSV of Acc/Gyr/Mag is not read as an MT Manager export" "$H" info "$T/xdotm.csv"
+expect_err "xdotm.csv: SampleTimeFine steps by 2511: 3.982 Hz in 100 us ticks, 398.2 Hz in us, no '//' line: $dot_remedy (if MT Manager's: --from mtmanager)" \
+    "DOT CSV of Acc/Gyr/Mag: the steps in both units, the DOT CSV and the --columns/--units remedy named"
+expect_exit 1 "... replay refuses it too" "$H" replay "$T/xdotm.csv" --quiet --out "$T/xdotm_out.csv"
+expect_err "$dot_remedy" "DOT CSV of Acc/Gyr/Mag: replay names the remedy"
+if grep -q "divide by 1000" "$T/err"; then fail "DOT CSV of Acc/Gyr/Mag: the time-unit hint --units cannot apply"; else pass "DOT CSV of Acc/Gyr/Mag: no 'divide by 1000' hint"; fi
+expect_exit 0 "DOT CSV of Acc/Gyr/Mag read with the remedy" "$H" info "$T/xdotm.csv" --from csv \
+    --columns t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s
+expect_out_re "^rate +398\.[0-9]+ Hz" "DOT CSV of Acc/Gyr/Mag read with the remedy: the walk's rate"
+expect_out_re "^duration +41\.[0-9]+ s" "DOT CSV of Acc/Gyr/Mag read with the remedy: the walk's duration"
+expect_exit 0 "DOT CSV of Acc/Gyr/Mag with --from mtmanager: read in ticks, as asked" "$H" info "$T/xdotm.csv" --from mtmanager
+expect_out_re "^rate +3\.98[0-9] Hz" "DOT CSV with --from mtmanager: 100 us ticks"
 
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]
