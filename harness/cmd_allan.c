@@ -157,7 +157,7 @@ typedef struct {
     double *win_spread;      /* every window's rate and |f| spread (RMS), in pairs: the disturbance check */
     size_t win_cap;          /* windows win_spread holds room for */
     int moving;              /* over HX_ALLAN_MOVING_FRAC of the windows move: not a static log */
-    char input_error[512];   /* the error that stopped the input ("": read to its end; input_fail) */
+    char input_error[HX_ERR_SIZE];   /* the error that stopped the input ("": read to its end; input_fail) */
 } run_t;
 
 /* An error of the input that stops the reading: said, and kept for the

@@ -1301,7 +1301,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             int ne, noe, nsw = 0, nfo = 0, nfs = 0, j, exp_n = 0, det_n = 0, miss = 0, spur_n = 0, lrc = 0;
             long last;
             hx_log_t log;
-            char err[320], oerr[320];
+            char err[HX_ERR_SIZE], oerr[320];
             fnav_stance_t st;
             fnav_stance_config_t sc = cfg->stance;
             fnav_stance_out_t o;

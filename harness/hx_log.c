@@ -61,7 +61,7 @@ struct hx_reader {
     char path[512];
     hx_meta_t meta;
     hx_read_stats_t stats;
-    char err[320];
+    char err[HX_ERR_SIZE];
     char warn[512];
     size_t warn_taken;          /* bytes of warn already handed out by hx_reader_take_warnings */
     fnav_status_t deferred;     /* error to return at the end (bin) */

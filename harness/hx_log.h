@@ -74,6 +74,11 @@ int hx_find_col(char **f, int n, const char *name);
 /** The format names a user gives to --from, comma-separated: the one list
  *  behind --help (HX_INPUT_OPTS) and the error of an unknown name; a new
  *  importer adds its name here and in k_format_names (hx_log.c). */
+/** Room for a reader's message: the path (a few hundred bytes) and the
+ *  longest remedy (about 400: the Movella DOT CSV's, the other names'); 320
+ *  until 2026-11-30 cut them behind a path of 30-110 bytes. */
+#define HX_ERR_SIZE 1024
+
 #define HX_FORMAT_LIST "bin, csv, gx2, openshoe820, ngimu, pyshoe, ipol, adis, square2, mtmanager"
 /** Comma-separated list of the format names (HX_FORMAT_LIST). */
 const char *hx_format_list(void);
@@ -197,7 +202,7 @@ typedef struct {
     double (*gyr)[3];       /**< rad/s */
     double *temp;           /**< degC, NaN when unknown */
     fnav_status_t status;   /**< FNAV_END when read completely, else the error */
-    char error[320];        /**< the error, if any */
+    char error[HX_ERR_SIZE]; /**< the error, if any */
     char warnings[512];
 } hx_log_t;
 

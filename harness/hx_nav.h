@@ -122,7 +122,7 @@ typedef struct {
      *  stopped at an error of the input or of the trajectory output
      *  (input_error); -1 not said (live): no JSON keys */
     int input_complete;
-    char input_error[512];
+    char input_error[HX_ERR_SIZE];
     /** replay: 1 when the run stopped because the trajectory output could
      *  not be written (input_complete is then 0 and input_error says so) */
     int output_failed;

@@ -679,7 +679,7 @@ void sg_timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, d
 typedef struct {
     char path[512];
     int complete;             /**< the log was read to its end (else input_error says where it stopped) */
-    char input_error[320];    /**< the reader's error when not complete: the diagnosis covers the samples before it */
+    char input_error[HX_ERR_SIZE];    /**< the reader's error when not complete: the diagnosis covers the samples before it */
     int domain;               /**< 1 static, 2 walk */
     int domain_detected;
     double rate_hz;

@@ -656,6 +656,22 @@ expect_out_re "^rate +398\.[0-9]+ Hz" "DOT CSV of Acc/Gyr/Mag read with the reme
 expect_out_re "^duration +41\.[0-9]+ s" "DOT CSV of Acc/Gyr/Mag read with the remedy: the walk's duration"
 expect_exit 0 "DOT CSV of Acc/Gyr/Mag with --from mtmanager: read in ticks, as asked" "$H" info "$T/xdotm.csv" --from mtmanager
 expect_out_re "^rate +3\.98[0-9] Hz" "DOT CSV with --from mtmanager: 100 us ticks"
+# a reader's message is whole behind a long path: the errors were cut at
+# 320 bytes, path included (info, allan, psd and convert left the DOT
+# remedy's --units out behind a 110-byte path; 2026-11-30)
+LP="$T/recordings_of_the_left_foot_with_a_rather_long_directory_name/session_2026_11_30_outdoor_walk"
+mkdir -p "$LP"
+cp "$T/xdotm.csv" "$LP/dot_recording_left_foot.csv"
+for c in info allan psd; do
+    expect_exit 1 "DOT CSV behind a long path: $c refuses it" "$H" $c "$LP/dot_recording_left_foot.csv"
+    expect_err "$dot_remedy (if MT Manager's: --from mtmanager)" "DOT CSV behind a long path: $c's message whole"
+done
+expect_exit 1 "DOT CSV behind a long path: convert refuses it" "$H" convert "$LP/dot_recording_left_foot.csv" "$T/lp.csv"
+expect_err "$dot_remedy (if MT Manager's: --from mtmanager)" "DOT CSV behind a long path: convert's message whole"
+sed '1s/.*/timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z/' "$T/xw.csv" >"$LP/phone_export_without_the_interchange_names.csv"
+expect_exit 1 "other names behind a long path: refused" "$H" info "$LP/phone_export_without_the_interchange_names.csv"
+expect_err 'give its names and units with --columns and --units: docs/log-format.md, "Another layout")' \
+    "other names behind a long path: the message whole"
 
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]
