@@ -17,6 +17,7 @@
 #include "fuzz/fuzz_log_byte.h"
 #include "hx_bin.h"
 #include "hx_log.h"
+#include "hx_names.h"
 
 #define MAXS 16
 
@@ -2244,6 +2245,223 @@ static void test_time_unit_rate(void **state)
     assert_true(hx_time_unit_rate(2e5, 100002u, 0, 1000000000) == 2e5);
 }
 
+/* The names of a header matched without --columns (hx_names.h;
+ * docs/log-format.md, "Names read without --columns"): one name */
+static void test_name_classify(void **state)
+{
+    static const struct {
+        const char *name;
+        hx_name_kind_t kind;
+        int key;
+        hx_name_unit_t unit;
+    } k[] = {
+        /* time */
+        { "t", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "Time", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "timestamp", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "TimeStamp", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "time stamp", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "ts", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "time_s", HX_NAME_MATCH, 0, HX_UNIT_S },
+        { "timestamp_ns", HX_NAME_MATCH, 0, HX_UNIT_NS },
+        { "Time [ms]", HX_NAME_MATCH, 0, HX_UNIT_MS },
+        { "t (us)", HX_NAME_MATCH, 0, HX_UNIT_US },
+        { "time_sec", HX_NAME_MATCH, 0, HX_UNIT_S },
+        { "SampleTimeFine", HX_NAME_NEAR, 0, HX_UNIT_NONE },
+        { "time_utc", HX_NAME_NEAR, 0, HX_UNIT_NONE },
+        { "time [g]", HX_NAME_NEAR, 0, HX_UNIT_G }, /* a unit of another quantity */
+        /* accelerations */
+        { "acc_x", HX_NAME_MATCH, 1, HX_UNIT_NONE },
+        { "AccX", HX_NAME_MATCH, 1, HX_UNIT_NONE },
+        { "accY", HX_NAME_MATCH, 2, HX_UNIT_NONE },
+        { "ACC_Z", HX_NAME_MATCH, 3, HX_UNIT_NONE },
+        { "accel_x", HX_NAME_MATCH, 1, HX_UNIT_NONE },
+        { "Accelerometer Y (g)", HX_NAME_MATCH, 2, HX_UNIT_G },
+        { "acceleration-z", HX_NAME_MATCH, 3, HX_UNIT_NONE },
+        { "accx", HX_NAME_MATCH, 1, HX_UNIT_NONE },
+        { "ax", HX_NAME_MATCH, 1, HX_UNIT_NONE },
+        { "accX_mps2", HX_NAME_MATCH, 1, HX_UNIT_MPS2 },
+        { "acc_x [m/s^2]", HX_NAME_MATCH, 1, HX_UNIT_MPS2 },
+        { "acc_x (m/s2)", HX_NAME_MATCH, 1, HX_UNIT_MPS2 },
+        { "acc_z_ms2", HX_NAME_MATCH, 3, HX_UNIT_MPS2 },
+        { "AccX [mg]", HX_NAME_MATCH, 1, HX_UNIT_MG },
+        { "ax_g", HX_NAME_MATCH, 1, HX_UNIT_G },
+        { "\"acc_y\"", HX_NAME_MATCH, 2, HX_UNIT_NONE },
+        /* rates */
+        { "gyr_x", HX_NAME_MATCH, 4, HX_UNIT_NONE },
+        { "GyrZ", HX_NAME_MATCH, 6, HX_UNIT_NONE },
+        { "gyro_y", HX_NAME_MATCH, 5, HX_UNIT_NONE },
+        { "Gyro Z (deg/s)", HX_NAME_MATCH, 6, HX_UNIT_DPS },
+        { "gyroscope_x", HX_NAME_MATCH, 4, HX_UNIT_NONE },
+        { "gyroz", HX_NAME_MATCH, 6, HX_UNIT_NONE },
+        { "wx", HX_NAME_MATCH, 4, HX_UNIT_NONE },
+        { "w_y", HX_NAME_MATCH, 5, HX_UNIT_NONE },
+        { "omega_z", HX_NAME_MATCH, 6, HX_UNIT_NONE },
+        { "angvel_x", HX_NAME_MATCH, 4, HX_UNIT_NONE },
+        { "Angular Velocity Y", HX_NAME_MATCH, 5, HX_UNIT_NONE },
+        { "angular rate z [rad/s]", HX_NAME_MATCH, 6, HX_UNIT_RPS },
+        { "rotation rate x", HX_NAME_MATCH, 4, HX_UNIT_NONE },
+        { "gyrZ_rps", HX_NAME_MATCH, 6, HX_UNIT_RPS },
+        { "gyro_x_dps", HX_NAME_MATCH, 4, HX_UNIT_DPS },
+        { "GyroX [mdps]", HX_NAME_MATCH, 4, HX_UNIT_MDPS },
+        { "gx", HX_NAME_MATCH, 4, HX_UNIT_NONE },
+        { "gyr_x_degs", HX_NAME_MATCH, 4, HX_UNIT_DPS },
+        /* near misses: a word besides stem, axis and unit */
+        { "FreeAcc_X", HX_NAME_NEAR, 1, HX_UNIT_NONE },
+        { "acc_x_lin", HX_NAME_NEAR, 1, HX_UNIT_NONE },
+        { "linear_acceleration_y", HX_NAME_NEAR, 2, HX_UNIT_NONE },
+        { "acc_x_filtered", HX_NAME_NEAR, 1, HX_UNIT_NONE },
+        { "gravity acc z", HX_NAME_NEAR, 3, HX_UNIT_NONE },
+        { "acc_world_x", HX_NAME_NEAR, 1, HX_UNIT_NONE },
+        { "gyr_x_bias", HX_NAME_NEAR, 4, HX_UNIT_NONE },
+        { "gyro_x_uncal", HX_NAME_NEAR, 4, HX_UNIT_NONE },
+        { "acc_x [s]", HX_NAME_NEAR, 1, HX_UNIT_S }, /* a time unit on an acceleration */
+        { "gyro_x_g", HX_NAME_NEAR, 4, HX_UNIT_G },
+        { "acc1_x", HX_NAME_OTHER, -1, HX_UNIT_NONE }, /* a numbered sensor: not a stem */
+        /* no stem, no axis, or no unit we read */
+        { "mag_x", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "quat_w", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "Euler_X", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "acc", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "x", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "g", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "temp", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "acc_x [counts]", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "acc_x (g) 2", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof k / sizeof k[0]; i++) {
+        hx_name_class_t c;
+        const hx_name_kind_t kind = hx_name_classify(k[i].name, &c);
+        if (kind != k[i].kind || c.key != k[i].key || c.unit != k[i].unit) {
+            print_error("%s: kind %d key %d unit %d, expected %d %d %d\n", k[i].name, (int)kind, c.key, (int)c.unit,
+                        (int)k[i].kind, k[i].key, (int)k[i].unit);
+        }
+        assert_int_equal(kind, k[i].kind);
+        assert_int_equal(c.kind, k[i].kind);
+        assert_int_equal(c.key, k[i].key);
+        assert_int_equal(c.unit, k[i].unit);
+    }
+}
+
+/* split a header at commas into f (the text is changed) */
+static int split_header(char *text, char **f, int max)
+{
+    int n = 0;
+    char *p = text;
+    for (;;) {
+        char *e = strchr(p, ',');
+        if (n == max) {
+            return n;
+        }
+        f[n++] = p;
+        if (e == NULL) {
+            return n;
+        }
+        *e = '\0';
+        p = e + 1;
+    }
+}
+
+/* A whole header: each key one column, t at most one, one unit per quantity */
+static void test_names_match(void **state)
+{
+    static const struct {
+        const char *header;
+        int ok;
+        int col[7];
+        hx_name_unit_t unit[3];
+        const char *give; /* hx_names_give */
+    } k[] = {
+        { "timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=timestamp,ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        { "Time,AccX,AccY,AccZ,GyrX,GyrY,GyrZ", 1, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=Time,ax=AccX,ay=AccY,az=AccZ,gx=GyrX,gy=GyrY,gz=GyrZ" },
+        { "time,ax,ay,az,wx,wy,wz", 1, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=time,ax=ax,ay=ay,az=az,gx=wx,gy=wy,gz=wz" },
+        { "t,accel_x,accel_y,accel_z,gyro_x,gyro_y,gyro_z", 1, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=t,ax=accel_x,ay=accel_y,az=accel_z,gx=gyro_x,gy=gyro_y,gz=gyro_z" },
+        { "time_s,accX_mps2,accY_mps2,accZ_mps2,gyrX_rps,gyrY_rps,gyrZ_rps", 1, { 0, 1, 2, 3, 4, 5, 6 },
+          { HX_UNIT_S, HX_UNIT_MPS2, HX_UNIT_RPS },
+          "--columns t=time_s,ax=accX_mps2,ay=accY_mps2,az=accZ_mps2,gx=gyrX_rps,gy=gyrY_rps,gz=gyrZ_rps "
+          "--units time=s,accel=m/s2,gyro=rad/s" },
+        /* units in brackets; another order; extra columns not read */
+        { "Time [ms],GyroX [deg/s],GyroY [deg/s],GyroZ [deg/s],AccX [g],AccY [g],AccZ [g],mag_x,quat_w", 1,
+          { 0, 4, 5, 6, 1, 2, 3 }, { HX_UNIT_MS, HX_UNIT_G, HX_UNIT_DPS },
+          "--columns 't=Time [ms],ax=AccX [g],ay=AccY [g],az=AccZ [g],gx=GyroX [deg/s],gy=GyroY [deg/s],"
+          "gz=GyroZ [deg/s]' --units time=ms,accel=g,gyro=deg/s" },
+        /* no time column: the six matched (the no-time path reads it) */
+        { "acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,temp", 1, { -1, 0, 1, 2, 3, 4, 5 }, { 0, 0, 0 },
+          "--columns ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        /* near misses are not candidates: acc_x read beside acc_x_lin */
+        { "t,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,acc_x_lin,FreeAcc_Y", 1, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=t,ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        /* a near miss for a channel: no match */
+        { "t,FreeAcc_X,FreeAcc_Y,FreeAcc_Z,gyr_x,gyr_y,gyr_z", 0, { 0, -1, -1, -1, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=t,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        { "t,acc_x_lin,acc_y_lin,acc_z_lin,gyr_x,gyr_y,gyr_z", 0, { 0, -1, -1, -1, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=t,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        { "t,mag_x,mag_y,mag_z,quat_w,quat_x,quat_y", 0, { 0, -1, -1, -1, -1, -1, -1 }, { 0, 0, 0 },
+          "--columns t=t" },
+        /* duplicates: two candidates for ax, two time columns */
+        { "t,acc_x,accel_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 0, { 0, -1, 3, 4, 5, 6, 7 }, { 0, 0, 0 },
+          "--columns t=t,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        { "time,timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 0, { -1, 2, 3, 4, 5, 6, 7 }, { 0, 0, 0 },
+          "--columns ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        /* one quantity in two units: no one --units item reads it */
+        { "t,acc_x [g],acc_y [g],acc_z,gyr_x,gyr_y,gyr_z", 0, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns 't=t,ax=acc_x [g],ay=acc_y [g],az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z'" },
+        /* an Xsens export (Movella DOT: Gyr_X in deg/s): not matched */
+        { "PacketCounter,SampleTimeFine,Euler_X,Euler_Y,Euler_Z,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z", 0,
+          { -1, -1, -1, -1, -1, -1, -1 }, { 0, 0, 0 }, "" },
+    };
+    size_t i;
+    int j;
+    (void)state;
+    for (i = 0; i < sizeof k / sizeof k[0]; i++) {
+        char text[512], give[512];
+        char *f[32];
+        hx_names_match_t m;
+        int n;
+        snprintf(text, sizeof text, "%s", k[i].header);
+        n = split_header(text, f, 32);
+        assert_int_equal(hx_names_match(f, n, &m), k[i].ok);
+        assert_int_equal(m.ok, k[i].ok);
+        for (j = 0; j < 7; j++) {
+            if (m.col[j] != k[i].col[j]) {
+                print_error("%s: key %d column %d, expected %d\n", k[i].header, j, m.col[j], k[i].col[j]);
+            }
+            assert_int_equal(m.col[j], k[i].col[j]);
+        }
+        for (j = 0; j < 3; j++) {
+            assert_int_equal(m.unit[j], k[i].unit[j]);
+        }
+        assert_string_equal(hx_names_give(&m, f, give, sizeof give), k[i].give);
+    }
+    {
+        /* what a refusal says: the candidates and the near misses */
+        char text[256], miss[256];
+        char *f[16];
+        hx_names_match_t m;
+        int n;
+        snprintf(text, sizeof text, "t,acc_x,accel_x,acc_y,FreeAcc_Z,gyr_x,gyr_y,gyr_z");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 0);
+        assert_string_equal(hx_names_unmatched(&m, f, 1, miss, sizeof miss),
+                            "ax: 2 candidates (acc_x, accel_x); az: none (near misses: FreeAcc_Z)");
+        snprintf(text, sizeof text, "acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z [deg/s]");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 0);
+        assert_int_equal(m.units_differ, 2);
+        assert_string_equal(hx_names_unmatched(&m, f, 0, miss, sizeof miss), "the rates name different units");
+        assert_string_equal(hx_names_unmatched(&m, f, 1, miss, sizeof miss),
+                            "t: none; the rates name different units");
+        assert_true(m.excluded == 0);
+    }
+}
+
 static void test_csv_layout(void **state)
 {
     char p[512], err[320];
@@ -2894,6 +3112,8 @@ int main(void)
         cmocka_unit_test(test_mtmgr_refused),
         cmocka_unit_test(test_mtmgr_detect),
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
+        cmocka_unit_test(test_name_classify),
+        cmocka_unit_test(test_names_match),
         cmocka_unit_test(test_time_unit_rate),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);
