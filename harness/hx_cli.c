@@ -395,7 +395,7 @@ hx_reader_t *hx_open_input(const char *cmd, const hx_args_t *a, const char *path
 {
     hx_format_t fmt;
     double rate;
-    char err[320];
+    char err[1024];
     hx_reader_t *r;
     if (input_options(cmd, a, &fmt, &rate) != 0) {
         return NULL;
@@ -418,7 +418,7 @@ int hx_load_input(const char *cmd, const hx_args_t *a, const char *path, hx_log_
 {
     hx_format_t fmt;
     double rate;
-    char err[320], label[48];
+    char err[1024], label[48];
     hx_progress_t pr;
     int rc;
     if (input_options(cmd, a, &fmt, &rate) != 0) {

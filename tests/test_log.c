@@ -25,12 +25,12 @@ typedef struct {
     fnav_sample_t s[MAXS];
     int n;
     fnav_status_t end;
-    char err[320];
+    char err[1024];
 } readall_t;
 
 static int read_all(const char *path, hx_format_t fmt, double rate, readall_t *out, hx_meta_t *meta)
 {
-    char err[320];
+    char err[1024];
     hx_reader_t *r = hx_reader_open(path, fmt, rate, err, sizeof err);
     fnav_sample_t s;
     memset(out, 0, sizeof *out);
@@ -1655,7 +1655,7 @@ static void test_fuzz_seed_formats(void **state)
  * does not. */
 static void test_detect_wrong_hint(void **state)
 {
-    char p[256], err[320];
+    char p[256], err[1024];
     hx_log_t log;
     (void)state;
     tmp_path(p, sizeof p, ".csv");
@@ -1666,7 +1666,9 @@ static void test_detect_wrong_hint(void **state)
     assert_non_null(strstr(err, "format ngimu detected from the content; give --from FORMAT"));
     assert_int_equal(hx_log_load(&log, p, HX_FMT_NGIMU, 0.0, err, sizeof err), -1);
     assert_null(strstr(err, "--from"));
-    write_text(p, "time,acc x,acc y,acc z,gyr x,gyr y,gyr z\n0,1,2,3,4,5,6\n");
+    /* (names with a word besides stem and axis: "acc x" alone is read since
+     * 2026-11-30, test_csv_names) */
+    write_text(p, "time,acc x raw,acc y raw,acc z raw,gyr x raw,gyr y raw,gyr z raw\n0,1,2,3,4,5,6\n");
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ":1: header has no column 't'"));
     assert_non_null(strstr(err, "no importer's header recognised, read as footnav CSV; give --from FORMAT"));
@@ -1674,7 +1676,8 @@ static void test_detect_wrong_hint(void **state)
      * the way without C, not only --from (a contributor's review, 2026-11-30):
      * the options, since 2026-11-30 (it said "rename the columns and
      * convert the units") */
-    write_text(p, "timestamp_ns,acc_x,acc_y,acc_z,gyro_x,gyro_y,gyro_z\n1764500000000000000,1,2,3,4,5,6\n");
+    write_text(p, "timestamp_ns,acc_x_uncal,acc_y_uncal,acc_z_uncal,gyro_x_uncal,gyro_y_uncal,gyro_z_uncal\n"
+                  "1764500000000000000,1,2,3,4,5,6\n");
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, "or give its names and units with --columns and --units: docs/log-format.md, "
                                 "\"Another layout\")"));
@@ -2462,6 +2465,105 @@ static void test_names_match(void **state)
     }
 }
 
+/* The reader: a header refused before is read with the names matched and
+ * the units they name, said once as the options; one refused still is
+ * refused with the candidates */
+static void test_csv_names(void **state)
+{
+    char p[512], err[1024];
+    readall_t ra;
+    hx_meta_t meta;
+    hx_csv_layout_t lay;
+    hx_reader_t *r;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "Time [ms],AccX [g],AccY [g],AccZ [g],GyroX [deg/s],GyroY [deg/s],GyroZ [deg/s],acc_x_lin\n"
+                  "1500,0.5,-0.25,1,90,-45,180,7\n"
+                  "1502.5,0,0,1,0,0,0,7\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), 0);
+    assert_int_equal(meta.format, HX_FMT_CSV);
+    assert_int_equal(ra.n, 2);
+    assert_int_equal(ra.end, FNAV_END);
+    assert_true(ra.s[0].t_ns == 1500000000LL);
+    assert_true(ra.s[1].t_ns == 1502500000LL);
+    assert_true((float)ra.s[0].accel_mps2[0] == (float)(0.5 * 9.80665));
+    assert_true((float)ra.s[0].accel_mps2[1] == (float)(-0.25 * 9.80665));
+    assert_true((float)ra.s[0].accel_mps2[2] == (float)9.80665);
+    assert_true((float)ra.s[0].gyro_rps[0] == (float)(90.0 * (3.14159265358979323846 / 180.0)));
+    assert_true((float)ra.s[0].gyro_rps[2] == (float)(180.0 * (3.14159265358979323846 / 180.0)));
+    r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_non_null(r);
+    {
+        char want[1024];
+        const char *w = hx_reader_warnings(r), *at;
+        snprintf(want, sizeof want,
+                 "%s: header read as --columns 't=Time [ms],ax=AccX [g],ay=AccY [g],az=AccZ [g],gx=GyroX [deg/s],"
+                 "gy=GyroY [deg/s],gz=GyroZ [deg/s]' --units time=ms,accel=g,gyro=deg/s (names matched; not read: "
+                 "acc_x_lin; give --columns to choose otherwise)",
+                 p);
+        at = strstr(w, want);
+        assert_non_null(at);
+        assert_null(strstr(at + strlen(want), "header read as")); /* once */
+    }
+    hx_reader_close(r);
+    /* the units remedies name the layout it was read with */
+    assert_non_null(hx_units_layout(HX_FMT_CSV, &lay));
+    assert_int_equal(lay.names_matched, 1);
+    assert_int_equal(lay.time_digits, 6);
+    assert_true(lay.acc_scale == HX_G_MPS2);
+    assert_true(lay.gyr_scale == HX_DPS_RPS);
+    assert_string_equal(lay.names[1], "AccX [g]");
+    /* a --units item given keeps its unit; the others come from the names */
+    {
+        hx_csv_layout_t l;
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, "gyro=rad/s", err, sizeof err), 0);
+        hx_reader_set_layout(&l);
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), 0);
+        assert_true((float)ra.s[0].accel_mps2[0] == (float)(0.5 * 9.80665));
+        assert_true((float)ra.s[0].gyro_rps[0] == 90.0f);
+        assert_true(ra.s[1].t_ns == 1502500000LL);
+        hx_reader_set_layout(NULL);
+    }
+    /* an interchange CSV opened next: the defaults again */
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), 0);
+    assert_non_null(hx_units_layout(HX_FMT_CSV, &lay));
+    assert_int_equal(lay.names_matched, 0);
+    assert_true(lay.acc_scale == 1.0);
+    /* ambiguous: refused, the candidates and what matched named */
+    write_text(p, "timestamp,acc_x,accel_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,1,1,2,3,4,5,6\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), -1);
+    assert_non_null(strstr(ra.err, ":1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz[,temp]; names "
+                                   "matched: --columns t=timestamp,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z; "
+                                   "not matched: ax: 2 candidates (acc_x, accel_x)"));
+    /* no time column and no rate: the six named, and --input-rate */
+    write_text(p, "acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n1,2,3,4,5,6\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), -1);
+    assert_non_null(strstr(ra.err, "names matched: --columns ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z; "
+                                   "no time column: give the log's rate with --input-rate HZ"));
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 100.0, &ra, &meta), 0);
+    assert_int_equal(ra.n, 1);
+    assert_true((float)ra.s[0].gyro_rps[2] == 6.0f);
+    /* the interchange names with one missing: the message as before */
+    write_text(p, "t,ax,ay,az\n0,0,0,-9.8\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), -1);
+    assert_null(strstr(ra.err, "names matched"));
+    /* --columns given: no matching (the name it gives is required) */
+    {
+        hx_csv_layout_t l;
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_columns_parse(&l, "t=time_ns", err, sizeof err), 0);
+        hx_reader_set_layout(&l);
+        write_text(p, "timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,1,2,3,4,5,6\n");
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), -1);
+        assert_non_null(strstr(ra.err, "header has no column 'time_ns' (the name --columns gives t)"));
+        assert_null(strstr(ra.err, "names matched"));
+        hx_reader_set_layout(NULL);
+    }
+    unlink(p);
+}
+
 static void test_csv_layout(void **state)
 {
     char p[512], err[320];
@@ -3114,6 +3216,7 @@ int main(void)
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
         cmocka_unit_test(test_name_classify),
         cmocka_unit_test(test_names_match),
+        cmocka_unit_test_teardown(test_csv_names, layout_reset),
         cmocka_unit_test(test_time_unit_rate),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);
