@@ -2,6 +2,7 @@
  * docs/log-format.md). */
 #include "hx_log.h"
 #include "hx_bin.h"
+#include "hx_names.h"
 #include "hx_xsens.h"
 
 #include <ctype.h>
@@ -46,6 +47,10 @@ const char *hx_format_list(void)
  * (hx_reader_set_layout; option NULL: these names in s, m/s^2, rad/s). */
 static const char *const k_csv_names[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
 static hx_csv_layout_t g_layout;
+/* the layout the last interchange CSV opened was read with, when its names
+ * were matched without --columns (hx_units_layout names its units) */
+static hx_csv_layout_t g_read_layout;
+static int g_read_matched;
 
 /* How a text format gives time. */
 typedef enum {
@@ -61,7 +66,7 @@ struct hx_reader {
     char path[512];
     hx_meta_t meta;
     hx_read_stats_t stats;
-    char err[HX_ERR_SIZE];
+    char err[HX_ERR_SIZE];      /* a refusal of names names the candidates (hx_names.h) */
     char warn[512];
     size_t warn_taken;          /* bytes of warn already handed out by hx_reader_take_warnings */
     fnav_status_t deferred;     /* error to return at the end (bin) */
@@ -802,11 +807,66 @@ static int all_numeric(char **f, int n)
     return n > 0;
 }
 
-static int setup_header(hx_reader_t *r, const char *const names[8], int time_required)
+/* The header's names matched without --columns (hx_names.h; docs/log-format.md,
+ * "Names read without --columns"): the names and the units they name into
+ * r->layout (a --units item given keeps its unit), and the warning that says
+ * it as the options that make it explicit. */
+static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
 {
-    char *f[HX_MAX_COLS], dc_first[64];
-    int n, i, rc, total, dc_line;
+    hx_csv_layout_t *l = &r->layout;
+    char give[700];
+    int k;
+    for (k = 0; k < 7; k++) {
+        if (m->col[k] >= 0) {
+            const char *s = f[m->col[k]];
+            size_t len;
+            while (*s == ' ' || *s == '\t' || *s == '"' || *s == '\'') {
+                s++;
+            }
+            len = strlen(s);
+            while (len > 0 && (s[len - 1] == ' ' || s[len - 1] == '\t' || s[len - 1] == '"' ||
+                               s[len - 1] == '\'' || s[len - 1] == '\r')) {
+                len--;
+            }
+            if (len >= sizeof l->names[k]) {
+                len = sizeof l->names[k] - 1;
+            }
+            memcpy(l->names[k], s, len);
+            l->names[k][len] = '\0';
+        }
+    }
+    if (!(l->units_given & 1) && m->unit[0] != HX_UNIT_NONE) {
+        l->time_digits = m->unit[0] == HX_UNIT_MS ? 6 : m->unit[0] == HX_UNIT_US ? 3 : m->unit[0] == HX_UNIT_NS ? 0 : 9;
+    }
+    if (!(l->units_given & 2) && m->unit[1] != HX_UNIT_NONE) {
+        l->acc_scale = m->unit[1] == HX_UNIT_G ? HX_G_MPS2 : m->unit[1] == HX_UNIT_MG ? HX_MG_MPS2 : 1.0;
+    }
+    if (!(l->units_given & 4) && m->unit[2] != HX_UNIT_NONE) {
+        l->gyr_scale = m->unit[2] == HX_UNIT_DPS ? HX_DPS_RPS : m->unit[2] == HX_UNIT_MDPS ? HX_MDPS_RPS : 1.0;
+    }
+    l->names_matched = 1;
+    /* the warning names the units the log is read in (not the defaults) */
+    m->unit[0] = l->time_digits == 6 ? HX_UNIT_MS : l->time_digits == 3 ? HX_UNIT_US
+                 : l->time_digits == 0 ? HX_UNIT_NS : HX_UNIT_NONE;
+    m->unit[1] = l->acc_scale == HX_G_MPS2 ? HX_UNIT_G : l->acc_scale == HX_MG_MPS2 ? HX_UNIT_MG : HX_UNIT_NONE;
+    m->unit[2] = l->gyr_scale == HX_DPS_RPS ? HX_UNIT_DPS : l->gyr_scale == HX_MDPS_RPS ? HX_UNIT_MDPS : HX_UNIT_NONE;
+    {
+        char near[300];
+        (void)hx_names_near(m, f, near, sizeof near);
+        add_warn(r, "%s: header read as %s (names matched%s%s; give --columns to choose otherwise)", r->path,
+                 hx_names_give(m, f, give, sizeof give), near[0] != '\0' ? "; not read: " : "", near);
+    }
+}
+
+static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_required)
+{
+    char *f[HX_MAX_COLS], dc_first[64], matched[700] = "";
+    const char *names[8];
+    int n, i, rc, total, dc_line, tried = 0;
     static const char *const what[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
+    for (i = 0; i < 8; i++) {
+        names[i] = names_in[i];
+    }
     for (;;) {
         rc = read_line(r);
         if (rc <= 0) {
@@ -863,6 +923,7 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
     dc_line = decimal_comma_line(r->line, dc_first, sizeof dc_first);
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     r->hdr_fields = r->delim == ' ' || total > HX_MAX_COLS ? n : named_fields(f, n, total);
+lookup:
     r->ncols_needed = 0;
     r->missing_col = -1;
     for (i = 0; i < 8; i++) {
@@ -872,6 +933,54 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
         const int given = r->meta.format == HX_FMT_CSV && r->layout.names[i][0] != '\0';
         if (c < 0 && names[i] != NULL && (given || ((i < 7) && (i > 0 || time_required)))) {
             r->missing_col = i;
+            if (r->meta.format == HX_FMT_CSV && !tried && total <= HX_MAX_COLS && !dc_line && !all_numeric(f, n)) {
+                /* no --columns and the interchange names not all there: the
+                 * names of the six channels matched (a log refused before,
+                 * never one read before: docs/log-format.md, "Names read
+                 * without --columns") */
+                int k, named = 0;
+                for (k = 0; k < 8; k++) {
+                    named |= r->layout.names[k][0] != '\0';
+                }
+                if (!named) {
+                    hx_names_match_t m;
+                    tried = 1;
+                    if (hx_names_match(f, n, &m) && (m.col[0] >= 0 || !time_required)) {
+                        names_apply(r, &m, f);
+                        for (k = 0; k < 7; k++) {
+                            if (r->layout.names[k][0] != '\0') {
+                                names[k] = r->layout.names[k];
+                            }
+                        }
+                        goto lookup;
+                    }
+                    /* something to say: a channel's name matched, and more
+                     * than the interchange names the header has (t,ax,ay,az
+                     * keeps its message, a stride table with a timestamp
+                     * and a file of no IMU names theirs) */
+                    int six = 0, news = m.units_differ != 0;
+                    for (k = 0; k < 7; k++) {
+                        six |= k > 0 && m.ncand[k] > 0;
+                        news |= m.ncand[k] > 1 || m.nnear[k] > 0 ||
+                                (m.ncand[k] == 1 && !hx_name_eq(f[m.cand[k][0]], k_csv_names[k]));
+                    }
+                    if (!m.excluded && six && news) {
+                        char give[700], miss[400];
+                        (void)hx_names_give(&m, f, give, sizeof give);
+                        (void)hx_names_unmatched(&m, f, time_required, miss, sizeof miss);
+                        if (m.ok) {
+                            /* all but the time: the no-time path's rate */
+                            snprintf(matched, sizeof matched,
+                                     "; names matched: %.400s; no time column%.150s: give the log's rate with "
+                                     "--input-rate HZ, or its time column with --columns t=NAME too",
+                                     give, strncmp(miss, "t: none", 7) == 0 ? miss + 7 : "");
+                        } else if (give[0] != '\0' || miss[0] != '\0') {
+                            snprintf(matched, sizeof matched, "; names matched: %.400s; not matched: %.250s",
+                                     give[0] != '\0' ? give : "none", miss[0] != '\0' ? miss : "none");
+                        }
+                    }
+                }
+            }
             if (total > HX_MAX_COLS) {
                 /* the column may be there, past the ones read (it said "header
                  * has no column 'gx'" of a header that had it; a review,
@@ -898,11 +1007,12 @@ static int setup_header(hx_reader_t *r, const char *const names[8], int time_req
                 for (k = 1; k < 7 && six; k++) {
                     six = hx_find_col(f, n, names[k]) >= 0;
                 }
-                set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]%s", r->path,
+                set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]%s%s", r->path,
                         r->stats.lines, names[i],
                         six ? " (t in s: name the time column t; a log without time stamps: give its rate with "
                               "--input-rate HZ)"
-                            : "");
+                            : "",
+                        matched);
             } else {
                 set_err(r, "%s:%ld: header has no column '%s' (the %s column of the %s format)", r->path,
                         r->stats.lines, names[i], what[i], hx_format_name(r->meta.format));
@@ -1069,12 +1179,13 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         for (i = 0; i < 8; i++) {
             names[i] = r->layout.names[i][0] != '\0' ? r->layout.names[i] : k_csv_names[i];
         }
-        r->acc_scale = r->layout.acc_scale;
-        r->gyr_scale = r->layout.gyr_scale;
         r->time_mode = TIME_COLUMN_S;
         if (setup_header(r, names, !(rate_hz > 0.0)) != 0) {
             return -1;
         }
+        /* after the header: names matched there may name units */
+        r->acc_scale = r->layout.acc_scale;
+        r->gyr_scale = r->layout.gyr_scale;
         if (r->col_t < 0) {
             /* no time column: --input-rate gives the rate, t = index / rate,
              * as for the importers without time stamps (it was an error with
@@ -1938,6 +2049,10 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         free(r);
         return NULL;
     }
+    if (fmt == HX_FMT_CSV) {
+        g_read_layout = r->layout;
+        g_read_matched = r->layout.names_matched;
+    }
     if (rate_hz > 0.0 && (fmt == HX_FMT_BIN || r->time_mode == TIME_COLUMN_S || r->time_mode == TIME_GX2 ||
                           (r->time_mode == TIME_MTMGR && r->mt.time_src == HX_MTMGR_TIME_STF))) {
         /* --input-rate gives the rate of an input without time stamps
@@ -2691,7 +2806,7 @@ int hx_log_load_progress(hx_log_t *log, const char *path, hx_format_t fmt, doubl
     log->status = st;
     log->stats = *hx_reader_stats(r);
     if (st != FNAV_END && log->error[0] == '\0') {
-        snprintf(log->error, sizeof log->error, "%s", hx_reader_error(r));
+        copy_str(log->error, sizeof log->error, hx_reader_error(r));
     }
     snprintf(log->warnings, sizeof log->warnings, "%s", hx_reader_warnings(r));
     hx_reader_close(r);
@@ -2765,6 +2880,10 @@ const hx_csv_layout_t *hx_units_layout(hx_format_t fmt, hx_csv_layout_t *buf)
         return NULL;
     }
     hx_reader_layout(buf);
+    if (g_read_matched) {
+        g_read_layout.option = buf->option;
+        *buf = g_read_layout;
+    }
     return buf;
 }
 
@@ -2900,6 +3019,7 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             return -1;
         }
         seen |= 1 << k;
+        l->units_given |= 1 << k;
         if (k == 0) {
             static const char *const tu[4] = { "s", "ms", "us", "ns" };
             int i;

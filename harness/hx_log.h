@@ -92,6 +92,8 @@ typedef struct {
     double acc_scale;   /**< m/s^2 per unit of the accelerations (1, HX_G_MPS2 for g, HX_MG_MPS2 for mg) */
     double gyr_scale;   /**< rad/s per unit of the rates (1, HX_DPS_RPS for deg/s, HX_MDPS_RPS for mdps) */
     const char *option; /**< "--columns", "--units" or "--columns and --units": the options that gave it; NULL: defaults */
+    int units_given;    /**< the --units items given: 1 time, 2 accel, 4 gyro (a unit in a matched name gives the others) */
+    int names_matched;  /**< the names were matched from the header without --columns (hx_names.h) */
 } hx_csv_layout_t;
 
 /** The scales of --units (hx_csv_layout_t.acc_scale, gyr_scale): m/s^2 per
@@ -124,8 +126,10 @@ void hx_reader_layout(hx_csv_layout_t *l);
 /** The layout a units remedy names --units from (the csv of
  *  hx_units_problem and hx_time_unit_hint): for a log of format fmt read
  *  by a command that takes --units, the reader's layout in *buf when fmt is
- *  the interchange CSV, which --units reads; NULL for another format, whose
- *  remedy is the arithmetic. */
+ *  the interchange CSV, which --units reads (with the names and units the
+ *  last CSV opened was matched to, when its header was read without
+ *  --columns: docs/log-format.md, "Names read without --columns"); NULL for
+ *  another format, whose remedy is the arithmetic. */
 const hx_csv_layout_t *hx_units_layout(hx_format_t fmt, hx_csv_layout_t *buf);
 /** The refusal of a layout (opt: its option, hx_csv_layout_t.option) for a
  *  log of another format fmt, one text for the usage error of

@@ -17,6 +17,7 @@
 #include "fuzz/fuzz_log_byte.h"
 #include "hx_bin.h"
 #include "hx_log.h"
+#include "hx_names.h"
 
 #define MAXS 16
 
@@ -24,12 +25,12 @@ typedef struct {
     fnav_sample_t s[MAXS];
     int n;
     fnav_status_t end;
-    char err[320];
+    char err[1024];
 } readall_t;
 
 static int read_all(const char *path, hx_format_t fmt, double rate, readall_t *out, hx_meta_t *meta)
 {
-    char err[320];
+    char err[1024];
     hx_reader_t *r = hx_reader_open(path, fmt, rate, err, sizeof err);
     fnav_sample_t s;
     memset(out, 0, sizeof *out);
@@ -1703,7 +1704,7 @@ static void test_fuzz_seed_formats(void **state)
  * does not. */
 static void test_detect_wrong_hint(void **state)
 {
-    char p[256], err[320];
+    char p[256], err[1024];
     hx_log_t log;
     (void)state;
     tmp_path(p, sizeof p, ".csv");
@@ -1714,7 +1715,9 @@ static void test_detect_wrong_hint(void **state)
     assert_non_null(strstr(err, "format ngimu detected from the content; give --from FORMAT"));
     assert_int_equal(hx_log_load(&log, p, HX_FMT_NGIMU, 0.0, err, sizeof err), -1);
     assert_null(strstr(err, "--from"));
-    write_text(p, "time,acc x,acc y,acc z,gyr x,gyr y,gyr z\n0,1,2,3,4,5,6\n");
+    /* (names with a word besides stem and axis: "acc x" alone is read since
+     * 2026-11-30, test_csv_names) */
+    write_text(p, "time,acc x raw,acc y raw,acc z raw,gyr x raw,gyr y raw,gyr z raw\n0,1,2,3,4,5,6\n");
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ":1: header has no column 't'"));
     assert_non_null(strstr(err, "no importer's header recognised, read as footnav CSV; give --from FORMAT"));
@@ -1722,7 +1725,8 @@ static void test_detect_wrong_hint(void **state)
      * the way without C, not only --from (a contributor's review, 2026-11-30):
      * the options, since 2026-11-30 (it said "rename the columns and
      * convert the units") */
-    write_text(p, "timestamp_ns,acc_x,acc_y,acc_z,gyro_x,gyro_y,gyro_z\n1764500000000000000,1,2,3,4,5,6\n");
+    write_text(p, "timestamp_ns,acc_x_uncal,acc_y_uncal,acc_z_uncal,gyro_x_uncal,gyro_y_uncal,gyro_z_uncal\n"
+                  "1764500000000000000,1,2,3,4,5,6\n");
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, "or give its names and units with --columns and --units: docs/log-format.md, "
                                 "\"Another layout\")"));
@@ -2320,6 +2324,322 @@ static void test_time_unit_rate(void **state)
     assert_true(hx_time_unit_rate(0.5, 21u, 0, 1000000000) == 0.0);
     assert_true(hx_time_unit_rate(2e5, 100001u, 0, 1000000000) == 0.0);
     assert_true(hx_time_unit_rate(2e5, 100002u, 0, 1000000000) == 2e5);
+}
+
+/* The names of a header matched without --columns (hx_names.h;
+ * docs/log-format.md, "Names read without --columns"): one name */
+static void test_name_classify(void **state)
+{
+    static const struct {
+        const char *name;
+        hx_name_kind_t kind;
+        int key;
+        hx_name_unit_t unit;
+    } k[] = {
+        /* time */
+        { "t", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "Time", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "timestamp", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "TimeStamp", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "time stamp", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "ts", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "time_s", HX_NAME_MATCH, 0, HX_UNIT_S },
+        { "timestamp_ns", HX_NAME_MATCH, 0, HX_UNIT_NS },
+        { "Time [ms]", HX_NAME_MATCH, 0, HX_UNIT_MS },
+        { "t (us)", HX_NAME_MATCH, 0, HX_UNIT_US },
+        { "time_sec", HX_NAME_MATCH, 0, HX_UNIT_S },
+        { "SampleTimeFine", HX_NAME_NEAR, 0, HX_UNIT_NONE },
+        { "time_utc", HX_NAME_NEAR, 0, HX_UNIT_NONE },
+        { "time [g]", HX_NAME_NEAR, 0, HX_UNIT_G }, /* a unit of another quantity */
+        /* accelerations */
+        { "acc_x", HX_NAME_MATCH, 1, HX_UNIT_NONE },
+        { "AccX", HX_NAME_MATCH, 1, HX_UNIT_NONE },
+        { "accY", HX_NAME_MATCH, 2, HX_UNIT_NONE },
+        { "ACC_Z", HX_NAME_MATCH, 3, HX_UNIT_NONE },
+        { "accel_x", HX_NAME_MATCH, 1, HX_UNIT_NONE },
+        { "Accelerometer Y (g)", HX_NAME_MATCH, 2, HX_UNIT_G },
+        { "acceleration-z", HX_NAME_MATCH, 3, HX_UNIT_NONE },
+        { "accx", HX_NAME_MATCH, 1, HX_UNIT_NONE },
+        { "ax", HX_NAME_MATCH, 1, HX_UNIT_NONE },
+        { "accX_mps2", HX_NAME_MATCH, 1, HX_UNIT_MPS2 },
+        { "acc_x [m/s^2]", HX_NAME_MATCH, 1, HX_UNIT_MPS2 },
+        { "acc_x (m/s2)", HX_NAME_MATCH, 1, HX_UNIT_MPS2 },
+        { "acc_z_ms2", HX_NAME_MATCH, 3, HX_UNIT_MPS2 },
+        { "AccX [mg]", HX_NAME_MATCH, 1, HX_UNIT_MG },
+        { "ax_g", HX_NAME_MATCH, 1, HX_UNIT_G },
+        { "\"acc_y\"", HX_NAME_MATCH, 2, HX_UNIT_NONE },
+        /* rates */
+        { "gyr_x", HX_NAME_MATCH, 4, HX_UNIT_NONE },
+        { "GyrZ", HX_NAME_MATCH, 6, HX_UNIT_NONE },
+        { "gyro_y", HX_NAME_MATCH, 5, HX_UNIT_NONE },
+        { "Gyro Z (deg/s)", HX_NAME_MATCH, 6, HX_UNIT_DPS },
+        { "gyroscope_x", HX_NAME_MATCH, 4, HX_UNIT_NONE },
+        { "gyroz", HX_NAME_MATCH, 6, HX_UNIT_NONE },
+        { "wx", HX_NAME_MATCH, 4, HX_UNIT_NONE },
+        { "w_y", HX_NAME_MATCH, 5, HX_UNIT_NONE },
+        { "omega_z", HX_NAME_MATCH, 6, HX_UNIT_NONE },
+        { "angvel_x", HX_NAME_MATCH, 4, HX_UNIT_NONE },
+        { "Angular Velocity Y", HX_NAME_MATCH, 5, HX_UNIT_NONE },
+        { "angular rate z [rad/s]", HX_NAME_MATCH, 6, HX_UNIT_RPS },
+        { "rotation rate x", HX_NAME_MATCH, 4, HX_UNIT_NONE },
+        { "gyrZ_rps", HX_NAME_MATCH, 6, HX_UNIT_RPS },
+        { "gyro_x_dps", HX_NAME_MATCH, 4, HX_UNIT_DPS },
+        { "GyroX [mdps]", HX_NAME_MATCH, 4, HX_UNIT_MDPS },
+        { "gx", HX_NAME_MATCH, 4, HX_UNIT_NONE },
+        { "gyr_x_degs", HX_NAME_MATCH, 4, HX_UNIT_DPS },
+        /* near misses: a word besides stem, axis and unit */
+        { "FreeAcc_X", HX_NAME_NEAR, 1, HX_UNIT_NONE },
+        { "acc_x_lin", HX_NAME_NEAR, 1, HX_UNIT_NONE },
+        { "linear_acceleration_y", HX_NAME_NEAR, 2, HX_UNIT_NONE },
+        { "acc_x_filtered", HX_NAME_NEAR, 1, HX_UNIT_NONE },
+        { "gravity acc z", HX_NAME_NEAR, 3, HX_UNIT_NONE },
+        { "acc_world_x", HX_NAME_NEAR, 1, HX_UNIT_NONE },
+        { "gyr_x_bias", HX_NAME_NEAR, 4, HX_UNIT_NONE },
+        { "gyro_x_uncal", HX_NAME_NEAR, 4, HX_UNIT_NONE },
+        { "acc_x [s]", HX_NAME_NEAR, 1, HX_UNIT_S }, /* a time unit on an acceleration */
+        { "gyro_x_g", HX_NAME_NEAR, 4, HX_UNIT_G },
+        { "acc1_x", HX_NAME_OTHER, -1, HX_UNIT_NONE }, /* a numbered sensor: not a stem */
+        /* no stem, no axis, or no unit we read */
+        { "mag_x", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "quat_w", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "Euler_X", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "acc", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "x", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "g", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "temp", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "acc_x [counts]", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "acc_x (g) 2", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof k / sizeof k[0]; i++) {
+        hx_name_class_t c;
+        const hx_name_kind_t kind = hx_name_classify(k[i].name, &c);
+        if (kind != k[i].kind || c.key != k[i].key || c.unit != k[i].unit) {
+            print_error("%s: kind %d key %d unit %d, expected %d %d %d\n", k[i].name, (int)kind, c.key, (int)c.unit,
+                        (int)k[i].kind, k[i].key, (int)k[i].unit);
+        }
+        assert_int_equal(kind, k[i].kind);
+        assert_int_equal(c.kind, k[i].kind);
+        assert_int_equal(c.key, k[i].key);
+        assert_int_equal(c.unit, k[i].unit);
+    }
+}
+
+/* split a header at commas into f (the text is changed) */
+static int split_header(char *text, char **f, int max)
+{
+    int n = 0;
+    char *p = text;
+    for (;;) {
+        char *e = strchr(p, ',');
+        if (n == max) {
+            return n;
+        }
+        f[n++] = p;
+        if (e == NULL) {
+            return n;
+        }
+        *e = '\0';
+        p = e + 1;
+    }
+}
+
+/* A whole header: each key one column, t at most one, one unit per quantity */
+static void test_names_match(void **state)
+{
+    static const struct {
+        const char *header;
+        int ok;
+        int col[7];
+        hx_name_unit_t unit[3];
+        const char *give; /* hx_names_give */
+    } k[] = {
+        { "timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=timestamp,ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        { "Time,AccX,AccY,AccZ,GyrX,GyrY,GyrZ", 1, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=Time,ax=AccX,ay=AccY,az=AccZ,gx=GyrX,gy=GyrY,gz=GyrZ" },
+        { "time,ax,ay,az,wx,wy,wz", 1, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=time,ax=ax,ay=ay,az=az,gx=wx,gy=wy,gz=wz" },
+        { "t,accel_x,accel_y,accel_z,gyro_x,gyro_y,gyro_z", 1, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=t,ax=accel_x,ay=accel_y,az=accel_z,gx=gyro_x,gy=gyro_y,gz=gyro_z" },
+        { "time_s,accX_mps2,accY_mps2,accZ_mps2,gyrX_rps,gyrY_rps,gyrZ_rps", 1, { 0, 1, 2, 3, 4, 5, 6 },
+          { HX_UNIT_S, HX_UNIT_MPS2, HX_UNIT_RPS },
+          "--columns t=time_s,ax=accX_mps2,ay=accY_mps2,az=accZ_mps2,gx=gyrX_rps,gy=gyrY_rps,gz=gyrZ_rps "
+          "--units time=s,accel=m/s2,gyro=rad/s" },
+        /* units in brackets; another order; extra columns not read */
+        { "Time [ms],GyroX [deg/s],GyroY [deg/s],GyroZ [deg/s],AccX [g],AccY [g],AccZ [g],mag_x,quat_w", 1,
+          { 0, 4, 5, 6, 1, 2, 3 }, { HX_UNIT_MS, HX_UNIT_G, HX_UNIT_DPS },
+          "--columns 't=Time [ms],ax=AccX [g],ay=AccY [g],az=AccZ [g],gx=GyroX [deg/s],gy=GyroY [deg/s],"
+          "gz=GyroZ [deg/s]' --units time=ms,accel=g,gyro=deg/s" },
+        /* no time column: the six matched (the no-time path reads it) */
+        { "acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,temp", 1, { -1, 0, 1, 2, 3, 4, 5 }, { 0, 0, 0 },
+          "--columns ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        /* near misses are not candidates: acc_x read beside acc_x_lin */
+        { "t,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,acc_x_lin,FreeAcc_Y", 1, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=t,ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        /* a near miss for a channel: no match */
+        { "t,FreeAcc_X,FreeAcc_Y,FreeAcc_Z,gyr_x,gyr_y,gyr_z", 0, { 0, -1, -1, -1, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=t,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        { "t,acc_x_lin,acc_y_lin,acc_z_lin,gyr_x,gyr_y,gyr_z", 0, { 0, -1, -1, -1, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns t=t,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        { "t,mag_x,mag_y,mag_z,quat_w,quat_x,quat_y", 0, { 0, -1, -1, -1, -1, -1, -1 }, { 0, 0, 0 },
+          "--columns t=t" },
+        /* duplicates: two candidates for ax, two time columns */
+        { "t,acc_x,accel_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 0, { 0, -1, 3, 4, 5, 6, 7 }, { 0, 0, 0 },
+          "--columns t=t,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        { "time,timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 0, { -1, 2, 3, 4, 5, 6, 7 }, { 0, 0, 0 },
+          "--columns ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        /* one quantity in two units: no one --units item reads it */
+        { "t,acc_x [g],acc_y [g],acc_z,gyr_x,gyr_y,gyr_z", 0, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
+          "--columns 't=t,ax=acc_x [g],ay=acc_y [g],az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z'" },
+        /* an Xsens export (Movella DOT: Gyr_X in deg/s): not matched */
+        { "PacketCounter,SampleTimeFine,Euler_X,Euler_Y,Euler_Z,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z", 0,
+          { -1, -1, -1, -1, -1, -1, -1 }, { 0, 0, 0 }, "" },
+    };
+    size_t i;
+    int j;
+    (void)state;
+    for (i = 0; i < sizeof k / sizeof k[0]; i++) {
+        char text[512], give[512];
+        char *f[32];
+        hx_names_match_t m;
+        int n;
+        snprintf(text, sizeof text, "%s", k[i].header);
+        n = split_header(text, f, 32);
+        assert_int_equal(hx_names_match(f, n, &m), k[i].ok);
+        assert_int_equal(m.ok, k[i].ok);
+        for (j = 0; j < 7; j++) {
+            if (m.col[j] != k[i].col[j]) {
+                print_error("%s: key %d column %d, expected %d\n", k[i].header, j, m.col[j], k[i].col[j]);
+            }
+            assert_int_equal(m.col[j], k[i].col[j]);
+        }
+        for (j = 0; j < 3; j++) {
+            assert_int_equal(m.unit[j], k[i].unit[j]);
+        }
+        assert_string_equal(hx_names_give(&m, f, give, sizeof give), k[i].give);
+    }
+    {
+        /* what a refusal says: the candidates and the near misses */
+        char text[256], miss[256];
+        char *f[16];
+        hx_names_match_t m;
+        int n;
+        snprintf(text, sizeof text, "t,acc_x,accel_x,acc_y,FreeAcc_Z,gyr_x,gyr_y,gyr_z");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 0);
+        assert_string_equal(hx_names_unmatched(&m, f, 1, miss, sizeof miss),
+                            "ax: 2 candidates (acc_x, accel_x); az: none (near misses: FreeAcc_Z)");
+        snprintf(text, sizeof text, "acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z [deg/s]");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 0);
+        assert_int_equal(m.units_differ, 2);
+        assert_string_equal(hx_names_unmatched(&m, f, 0, miss, sizeof miss), "the rates name different units");
+        assert_string_equal(hx_names_unmatched(&m, f, 1, miss, sizeof miss),
+                            "t: none; the rates name different units");
+        assert_true(m.excluded == 0);
+    }
+}
+
+/* The reader: a header refused before is read with the names matched and
+ * the units they name, said once as the options; one refused still is
+ * refused with the candidates */
+static void test_csv_names(void **state)
+{
+    char p[512], err[1024];
+    readall_t ra;
+    hx_meta_t meta;
+    hx_csv_layout_t lay;
+    hx_reader_t *r;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "Time [ms],AccX [g],AccY [g],AccZ [g],GyroX [deg/s],GyroY [deg/s],GyroZ [deg/s],acc_x_lin\n"
+                  "1500,0.5,-0.25,1,90,-45,180,7\n"
+                  "1502.5,0,0,1,0,0,0,7\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), 0);
+    assert_int_equal(meta.format, HX_FMT_CSV);
+    assert_int_equal(ra.n, 2);
+    assert_int_equal(ra.end, FNAV_END);
+    assert_true(ra.s[0].t_ns == 1500000000LL);
+    assert_true(ra.s[1].t_ns == 1502500000LL);
+    assert_true((float)ra.s[0].accel_mps2[0] == (float)(0.5 * 9.80665));
+    assert_true((float)ra.s[0].accel_mps2[1] == (float)(-0.25 * 9.80665));
+    assert_true((float)ra.s[0].accel_mps2[2] == (float)9.80665);
+    assert_true((float)ra.s[0].gyro_rps[0] == (float)(90.0 * (3.14159265358979323846 / 180.0)));
+    assert_true((float)ra.s[0].gyro_rps[2] == (float)(180.0 * (3.14159265358979323846 / 180.0)));
+    r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_non_null(r);
+    {
+        char want[1024];
+        const char *w = hx_reader_warnings(r), *at;
+        snprintf(want, sizeof want,
+                 "%s: header read as --columns 't=Time [ms],ax=AccX [g],ay=AccY [g],az=AccZ [g],gx=GyroX [deg/s],"
+                 "gy=GyroY [deg/s],gz=GyroZ [deg/s]' --units time=ms,accel=g,gyro=deg/s (names matched; not read: "
+                 "acc_x_lin; give --columns to choose otherwise)",
+                 p);
+        at = strstr(w, want);
+        assert_non_null(at);
+        assert_null(strstr(at + strlen(want), "header read as")); /* once */
+    }
+    hx_reader_close(r);
+    /* the units remedies name the layout it was read with */
+    assert_non_null(hx_units_layout(HX_FMT_CSV, &lay));
+    assert_int_equal(lay.names_matched, 1);
+    assert_int_equal(lay.time_digits, 6);
+    assert_true(lay.acc_scale == HX_G_MPS2);
+    assert_true(lay.gyr_scale == HX_DPS_RPS);
+    assert_string_equal(lay.names[1], "AccX [g]");
+    /* a --units item given keeps its unit; the others come from the names */
+    {
+        hx_csv_layout_t l;
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, "gyro=rad/s", err, sizeof err), 0);
+        hx_reader_set_layout(&l);
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), 0);
+        assert_true((float)ra.s[0].accel_mps2[0] == (float)(0.5 * 9.80665));
+        assert_true((float)ra.s[0].gyro_rps[0] == 90.0f);
+        assert_true(ra.s[1].t_ns == 1502500000LL);
+        hx_reader_set_layout(NULL);
+    }
+    /* an interchange CSV opened next: the defaults again */
+    write_text(p, "t,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), 0);
+    assert_non_null(hx_units_layout(HX_FMT_CSV, &lay));
+    assert_int_equal(lay.names_matched, 0);
+    assert_true(lay.acc_scale == 1.0);
+    /* ambiguous: refused, the candidates and what matched named */
+    write_text(p, "timestamp,acc_x,accel_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,1,1,2,3,4,5,6\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), -1);
+    assert_non_null(strstr(ra.err, ":1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz[,temp]; names "
+                                   "matched: --columns t=timestamp,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z; "
+                                   "not matched: ax: 2 candidates (acc_x, accel_x)"));
+    /* no time column and no rate: the six named, and --input-rate */
+    write_text(p, "acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n1,2,3,4,5,6\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), -1);
+    assert_non_null(strstr(ra.err, "names matched: --columns ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z; "
+                                   "no time column: give the log's rate with --input-rate HZ"));
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 100.0, &ra, &meta), 0);
+    assert_int_equal(ra.n, 1);
+    assert_true((float)ra.s[0].gyro_rps[2] == 6.0f);
+    /* the interchange names with one missing: the message as before */
+    write_text(p, "t,ax,ay,az\n0,0,0,-9.8\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), -1);
+    assert_null(strstr(ra.err, "names matched"));
+    /* --columns given: no matching (the name it gives is required) */
+    {
+        hx_csv_layout_t l;
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_columns_parse(&l, "t=time_ns", err, sizeof err), 0);
+        hx_reader_set_layout(&l);
+        write_text(p, "timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,1,2,3,4,5,6\n");
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &meta), -1);
+        assert_non_null(strstr(ra.err, "header has no column 'time_ns' (the name --columns gives t)"));
+        assert_null(strstr(ra.err, "names matched"));
+        hx_reader_set_layout(NULL);
+    }
+    unlink(p);
 }
 
 static void test_csv_layout(void **state)
@@ -3105,6 +3425,9 @@ int main(void)
         cmocka_unit_test(test_mtmgr_us_stamps),
         cmocka_unit_test(test_mtmgr_stated_rate),
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
+        cmocka_unit_test(test_name_classify),
+        cmocka_unit_test(test_names_match),
+        cmocka_unit_test_teardown(test_csv_names, layout_reset),
         cmocka_unit_test(test_time_unit_rate),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);

@@ -285,11 +285,14 @@ awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 400; k++) printf "%.2f
 cut -d, -f2- "$T/timed.csv" >"$T/untimed.csv"
 expect_exit 1 "our CSV without t, no --input-rate" "$H" info "$T/untimed.csv"
 expect_err "untimed.csv:1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz\[,temp\] (t in s: name the time column t; a log without time stamps: give its rate with --input-rate HZ)" "no t column: the error names --input-rate"
-# a time column under another name ('time', 'timestamp'): the rename is named first, since --input-rate would
-# drop its stamps
+# a time column under another name ('time', 'timestamp'): read as the time
+# since 2026-11-30, with a warning naming the --columns that says so (it was
+# refused with "name the time column t"; docs/log-format.md, "Names read
+# without --columns")
 sed '1s/^t,/time,/' "$T/timed.csv" >"$T/timecol.csv"
-expect_exit 1 "our CSV with its time column named 'time'" "$H" info "$T/timecol.csv"
-expect_err "header has no column 't'; expected t,ax,ay,az,gx,gy,gz\\[,temp\\] (t in s: name the time column t;" "a time column named 'time': the rename named"
+expect_exit 0 "our CSV with its time column named 'time'" "$H" info "$T/timecol.csv"
+expect_err "timecol.csv: header read as --columns t=time,ax=ax,ay=ay,az=az,gx=gx,gy=gy,gz=gz (names matched; give --columns to choose otherwise)" "a time column named 'time': read, the mapping named"
+expect_out "duration    3.990 s" "a time column named 'time': its stamps read"
 # ... but only to a header that has the six others: a file that is no IMU log (a stride table) is not told to
 # give a rate
 printf 'strideIndex,x,y\n1,0.5,0.1\n' >"$T/notimu.csv"
@@ -668,10 +671,79 @@ for c in info allan psd; do
 done
 expect_exit 1 "DOT CSV behind a long path: convert refuses it" "$H" convert "$LP/dot_recording_left_foot.csv" "$T/lp.csv"
 expect_err "$dot_remedy (if MT Manager's: --from mtmanager)" "DOT CSV behind a long path: convert's message whole"
-sed '1s/.*/timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z/' "$T/xw.csv" >"$LP/phone_export_without_the_interchange_names.csv"
+sed '1s/.*/timestamp,acc_x_raw,acc_y_raw,acc_z_raw,gyr_x_raw,gyr_y_raw,gyr_z_raw/' "$T/xw.csv" \
+    >"$LP/phone_export_without_the_interchange_names.csv"
 expect_exit 1 "other names behind a long path: refused" "$H" info "$LP/phone_export_without_the_interchange_names.csv"
 expect_err 'give its names and units with --columns and --units: docs/log-format.md, "Another layout")' \
     "other names behind a long path: the message whole"
+
+# --- names read without --columns (docs/log-format.md, "Names read without
+# --columns"): a header that names the six channels in a common way is read
+# as the interchange CSV, the mapping said once as the options; each replays
+# the bundled walk to the same trajectory as the interchange CSV. Before
+# 2026-11-30 each was refused: "header has no column 't'".
+"$H" convert vectors/walk.bin "$T/nw.csv" 2>/dev/null
+"$H" replay "$T/nw.csv" --quiet --out "$T/nw_ref.csv" >/dev/null 2>&1
+for hdr in "timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z" "Time,AccX,AccY,AccZ,GyrX,GyrY,GyrZ" \
+    "time,ax,ay,az,wx,wy,wz" "t,accel_x,accel_y,accel_z,gyro_x,gyro_y,gyro_z" \
+    "time_s,accX_mps2,accY_mps2,accZ_mps2,gyrX_rps,gyrY_rps,gyrZ_rps"; do
+    { echo "$hdr"; tail -n +2 "$T/nw.csv"; } >"$T/nh.csv"
+    expect_exit 0 "names matched: $hdr" "$H" replay "$T/nh.csv" --quiet --out "$T/nh_out.csv"
+    cmp -s "$T/nh_out.csv" "$T/nw_ref.csv" && pass "names matched: $hdr: the trajectory of the interchange CSV" ||
+        fail "names matched: $hdr: another trajectory"
+    [ "$(grep -c 'nh.csv: header read as --columns ' "$T/err")" -eq 1 ] && pass "names matched: $hdr: one warning" ||
+        fail "names matched: $hdr: $(grep -c 'header read as' "$T/err") warnings"
+done
+expect_err "nh.csv: header read as --columns t=time_s,ax=accX_mps2,ay=accY_mps2,az=accZ_mps2,gx=gyrX_rps,gy=gyrY_rps,gz=gyrZ_rps (names matched; give --columns to choose otherwise)" "names matched: the warning names the options"
+# units in the names: ms, g and deg/s, the values scaled to them
+awk -F, 'NR == 1 { print "Time [ms],AccX [g],AccY [g],AccZ [g],GyroX [deg/s],GyroY [deg/s],GyroZ [deg/s]"; next }
+    { printf "%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", $1 * 1000, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665,
+      $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232 }' "$T/nw.csv" >"$T/nu.csv"
+"$H" replay "$T/nu.csv" --quiet --from csv --columns "t=Time [ms],ax=AccX [g],ay=AccY [g],az=AccZ [g],gx=GyroX [deg/s],gy=GyroY [deg/s],gz=GyroZ [deg/s]" \
+    --units time=ms,accel=g,gyro=deg/s --out "$T/nu_cols.csv" --json "$T/nu_cols.json" >/dev/null 2>&1
+expect_exit 0 "names matched with units [ms], [g], [deg/s]" "$H" replay "$T/nu.csv" --quiet --out "$T/nu_out.csv" --json "$T/nu.json"
+expect_err "header read as --columns 't=Time \[ms\],ax=AccX \[g\],ay=AccY \[g\],az=AccZ \[g\],gx=GyroX \[deg/s\],gy=GyroY \[deg/s\],gz=GyroZ \[deg/s\]' --units time=ms,accel=g,gyro=deg/s (names matched" "units in the names: the warning names --units"
+cmp -s "$T/nu_out.csv" "$T/nu_cols.csv" && pass "units in the names: the trajectory of the explicit --columns/--units" ||
+    fail "units in the names: another trajectory than the explicit options"
+"$H" replay "$T/nw.csv" --quiet --out /dev/null --json "$T/nw.json" >/dev/null 2>&1
+json "$T/nu.json" 'abs(j["return_error_h_m"] - json.load(open("'"$T"'/nw.json"))["return_error_h_m"]) < 0.005 and j["strides"] == json.load(open("'"$T"'/nw.json"))["strides"]' "units in the names: the walk's closure and strides"
+# every command reads it through the one reader: info, convert, psd
+expect_exit 0 "info of names matched" "$H" info "$T/nu.csv"
+expect_err "nu.csv: header read as --columns" "info: the mapping named"
+expect_out "duration    41.618 s" "info: the stamps in ms read"
+expect_exit 0 "convert of names matched" "$H" convert "$T/nu.csv" "$T/nu_conv.csv"
+expect_err "header read as --columns" "convert: the mapping named"
+head -1 "$T/nu_conv.csv" | grep -q '^t,ax,ay,az,gx,gy,gz' && pass "convert: the interchange header written" || fail "convert: another header"
+expect_exit 0 "psd of names matched" "$H" psd "$T/nu.csv" --out "$T/nu_psd.csv"
+expect_err "header read as --columns" "psd: the mapping named"
+# names but data in other units: the units check names --units with the time unit the names gave
+sed '1s/.*/Time_ms,AccX,AccY,AccZ,GyroX,GyroY,GyroZ/' "$T/nu.csv" >"$T/nun.csv"
+expect_exit 1 "names matched, data in g and deg/s unnamed" "$H" replay "$T/nun.csv" --quiet --out /dev/null
+expect_err "give --units time=ms,accel=g,gyro=deg/s" "the units remedy keeps the time unit of the names"
+expect_exit 0 "... the remedy given" "$H" replay "$T/nun.csv" --quiet --out "$T/nun_out.csv" --units time=ms,accel=g,gyro=deg/s
+cmp -s "$T/nun_out.csv" "$T/nu_cols.csv" && pass "names matched with --units: the same trajectory" || fail "names matched with --units: another trajectory"
+# ambiguous: refused, the candidates and what matched named as --columns
+{ echo "timestamp,acc_x,accel_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z"; awk -F, 'NR > 1 { print $1 "," $2 "," $2 "," $3 "," $4 "," $5 "," $6 "," $7 }' "$T/nw.csv"; } >"$T/namb.csv"
+expect_exit 1 "two candidates for ax" "$H" replay "$T/namb.csv" --quiet --out "$T/namb_out.csv"
+expect_err "namb.csv:1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz\[,temp\]; names matched: --columns t=timestamp,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z; not matched: ax: 2 candidates (acc_x, accel_x) (no importer's header recognised" "ambiguous: the candidates and the --columns text"
+[ -e "$T/namb_out.csv" ] && fail "ambiguous: an output written" || pass "ambiguous: no output written"
+expect_exit 0 "... completed with --columns" "$H" replay "$T/namb.csv" --quiet --out "$T/namb_out.csv" --columns t=timestamp,ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z
+cmp -s "$T/namb_out.csv" "$T/nw_ref.csv" && pass "ambiguous, completed: the walk's trajectory" || fail "ambiguous, completed: another trajectory"
+# near misses are not read: a free acceleration is refused, named
+sed '1s/.*/timestamp,acc_x,acc_y,FreeAcc_Z,gyr_x,gyr_y,gyr_z/' "$T/nw.csv" >"$T/nfree.csv"
+expect_exit 1 "a near miss (FreeAcc_Z)" "$H" info "$T/nfree.csv"
+expect_err "not matched: az: none (near misses: FreeAcc_Z)" "near miss: named"
+# a near miss beside the name read: read, the near miss named as not read
+{ echo "timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,acc_x_lin"; awk -F, 'NR > 1 { print $0 ",0" }' "$T/nw.csv"; } >"$T/nlin.csv"
+expect_exit 0 "acc_x beside acc_x_lin" "$H" replay "$T/nlin.csv" --quiet --out "$T/nlin_out.csv"
+expect_err "(names matched; not read: acc_x_lin; give --columns to choose otherwise)" "the near miss named as not read"
+cmp -s "$T/nlin_out.csv" "$T/nw_ref.csv" && pass "acc_x beside acc_x_lin: the walk's trajectory" || fail "acc_x beside acc_x_lin: another trajectory"
+# no time column: the no-time path, the six named
+{ echo "acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z"; cut -d, -f2- "$T/timed.csv" | tail -n +2; } >"$T/nnot.csv"
+expect_exit 1 "names matched, no time column, no rate" "$H" info "$T/nnot.csv"
+expect_err "names matched: --columns ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z; no time column: give the log's rate with --input-rate HZ" "no time: --input-rate named"
+expect_exit 0 "... with --input-rate" "$H" info "$T/nnot.csv" --input-rate 100
+expect_out "samples     400" "no time, --input-rate: read"
 
 echo "foundation CLI: $fails failure(s)"
 [ "$fails" -eq 0 ]

@@ -1,0 +1,417 @@
+/* Column names of an IMU CSV read without --columns (hx_names.h,
+ * docs/log-format.md "Names read without --columns"). */
+#include "hx_names.h"
+#include "hx_log.h"
+
+#include <ctype.h>
+#include <stdio.h>
+#include <string.h>
+
+#define NAME_MAX_TOK 8
+#define NAME_TOK_LEN 32
+
+static const char *const k_keys[7] = { "t", "ax", "ay", "az", "gx", "gy", "gz" };
+
+/* the stems of an acceleration and a rate name (one word each) */
+static const char *const k_acc_stems[] = { "acc", "accel", "accelerometer", "acceleration", NULL };
+static const char *const k_gyr_stems[] = { "gyr", "gyro", "gyroscope", "w", "omega", "angvel", NULL };
+
+static int in_list(const char *w, const char *const *list)
+{
+    for (; *list != NULL; list++) {
+        if (strcmp(w, *list) == 0) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static int axis_of(const char *w)
+{
+    return (w[0] >= 'x' && w[0] <= 'z' && w[1] == '\0') ? w[0] - 'x' : -1;
+}
+
+/* a unit word or bracket text (lower case, no blanks) */
+static hx_name_unit_t unit_of(const char *u)
+{
+    static const struct {
+        const char *text;
+        hx_name_unit_t unit;
+    } k_units[] = {
+        { "s", HX_UNIT_S },         { "sec", HX_UNIT_S },       { "ms", HX_UNIT_MS },      { "us", HX_UNIT_US },
+        { "ns", HX_UNIT_NS },       { "g", HX_UNIT_G },         { "mg", HX_UNIT_MG },      { "m/s^2", HX_UNIT_MPS2 },
+        { "m/s2", HX_UNIT_MPS2 },   { "mps2", HX_UNIT_MPS2 },   { "ms2", HX_UNIT_MPS2 },   { "rad/s", HX_UNIT_RPS },
+        { "rps", HX_UNIT_RPS },     { "rads", HX_UNIT_RPS },    { "radps", HX_UNIT_RPS },  { "deg/s", HX_UNIT_DPS },
+        { "dps", HX_UNIT_DPS },     { "degs", HX_UNIT_DPS },    { "mdps", HX_UNIT_MDPS },  { "mdeg/s", HX_UNIT_MDPS },
+    };
+    size_t i;
+    for (i = 0; i < sizeof k_units / sizeof k_units[0]; i++) {
+        if (strcmp(u, k_units[i].text) == 0) {
+            return k_units[i].unit;
+        }
+    }
+    return HX_UNIT_NONE;
+}
+
+const char *hx_name_unit_item(hx_name_unit_t u)
+{
+    static const char *const items[] = { NULL,      "time=s", "time=ms", "time=us",    "time=ns",  "accel=m/s2",
+                                         "accel=g", "accel=mg", "gyro=rad/s", "gyro=deg/s", "gyro=mdps" };
+    return ((int)u > 0 && (size_t)u < sizeof items / sizeof items[0]) ? items[u] : NULL;
+}
+
+/* 0 time, 1 acceleration, 2 rate: the quantity a unit measures */
+static int unit_quantity(hx_name_unit_t u)
+{
+    return u <= HX_UNIT_NS ? 0 : u <= HX_UNIT_MG ? 1 : 2;
+}
+
+/* a word that is a stem with its axis glued (accx, gyroz, wx, and the
+ * interchange names ax, gx): the quantity (1 accel, 2 rate), axis in *ax */
+static int glued(const char *w, int *ax)
+{
+    char stem[NAME_TOK_LEN];
+    size_t n = strlen(w);
+    if (n < 2 || n >= sizeof stem || w[n - 1] < 'x' || w[n - 1] > 'z') {
+        return 0;
+    }
+    memcpy(stem, w, n - 1);
+    stem[n - 1] = '\0';
+    *ax = w[n - 1] - 'x';
+    if (strcmp(stem, "a") == 0 || in_list(stem, k_acc_stems)) {
+        return 1;
+    }
+    if (strcmp(stem, "g") == 0 || in_list(stem, k_gyr_stems)) {
+        return 2;
+    }
+    return 0;
+}
+
+static int is_sep(char c)
+{
+    return c == ' ' || c == '\t' || c == '_' || c == '-' || c == '.' || c == ':';
+}
+
+/* the words of text[0, len): lower case, split at separators and at a
+ * lower-to-upper case change; -1 when there are too many or too long */
+static int split_words(const char *text, size_t len, char w[NAME_MAX_TOK][NAME_TOK_LEN])
+{
+    int n = 0;
+    size_t i, k = 0;
+    for (i = 0; i <= len; i++) {
+        const char c = i < len ? text[i] : ' ';
+        const int brk = i > 0 && i < len && islower((unsigned char)text[i - 1]) && isupper((unsigned char)c);
+        if ((is_sep(c) || brk) && k > 0) {
+            w[n][k] = '\0';
+            n++;
+            k = 0;
+        }
+        if (is_sep(c)) {
+            continue;
+        }
+        if (n >= NAME_MAX_TOK || k + 1 >= NAME_TOK_LEN) {
+            return -1;
+        }
+        w[n][k++] = (char)tolower((unsigned char)c);
+    }
+    return n;
+}
+
+hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
+{
+    char buf[128], w[NAME_MAX_TOK][NAME_TOK_LEN];
+    const char *s = name, *open;
+    size_t len;
+    int n, i, q = -1, ax = -1, key = -1, time_word = 0;
+    hx_name_unit_t unit = HX_UNIT_NONE;
+    c->kind = HX_NAME_OTHER;
+    c->key = -1;
+    c->unit = HX_UNIT_NONE;
+    while (*s == ' ' || *s == '\t' || *s == '"' || *s == '\'') {
+        s++;
+    }
+    len = strlen(s);
+    while (len > 0 && (s[len - 1] == ' ' || s[len - 1] == '\t' || s[len - 1] == '"' || s[len - 1] == '\'' ||
+                       s[len - 1] == '\r' || s[len - 1] == '\n')) {
+        len--;
+    }
+    if (len == 0 || len >= sizeof buf) {
+        return c->kind;
+    }
+    memcpy(buf, s, len);
+    buf[len] = '\0';
+    open = strpbrk(buf, "([");
+    if (open != NULL) {
+        /* "Gyro Z (deg/s)", "AccX [g]": the unit in brackets, nothing after */
+        const char *close = strchr(open, *open == '(' ? ')' : ']');
+        char u[32];
+        size_t k = 0;
+        const char *p;
+        if (close == NULL || close[1 + strspn(close + 1, " \t")] != '\0') {
+            return c->kind;
+        }
+        for (p = open + 1; p < close; p++) {
+            if (*p != ' ' && *p != '\t') {
+                if (k + 1 >= sizeof u) {
+                    return c->kind;
+                }
+                u[k++] = (char)tolower((unsigned char)*p);
+            }
+        }
+        u[k] = '\0';
+        unit = unit_of(u);
+        if (unit == HX_UNIT_NONE) {
+            return c->kind; /* "(raw)", "[counts]": no unit we read */
+        }
+        len = (size_t)(open - buf);
+    }
+    n = split_words(buf, len, w);
+    if (n <= 0) {
+        return c->kind;
+    }
+    if (unit == HX_UNIT_NONE && n >= 2 && unit_of(w[n - 1]) != HX_UNIT_NONE) {
+        /* the last word a unit: time_s, accX_mps2, gyro_x_dps */
+        unit = unit_of(w[n - 1]);
+        n--;
+    }
+    /* what the words are */
+    if (n == 1 && (strcmp(w[0], "t") == 0 || strcmp(w[0], "time") == 0 || strcmp(w[0], "timestamp") == 0 ||
+                   strcmp(w[0], "ts") == 0)) {
+        key = 0;
+    } else if (n == 2 && strcmp(w[0], "time") == 0 && strcmp(w[1], "stamp") == 0) {
+        key = 0;
+    } else if (n == 1 && (q = glued(w[0], &ax)) != 0) {
+        key = 1 + 3 * (q - 1) + ax;
+    } else if (n == 2 && axis_of(w[1]) >= 0 && (in_list(w[0], k_acc_stems) || in_list(w[0], k_gyr_stems))) {
+        key = (in_list(w[0], k_acc_stems) ? 1 : 4) + axis_of(w[1]);
+    } else if (n == 3 && axis_of(w[2]) >= 0 &&
+               ((strcmp(w[0], "angular") == 0 && (strcmp(w[1], "velocity") == 0 || strcmp(w[1], "rate") == 0)) ||
+                (strcmp(w[0], "rotation") == 0 && strcmp(w[1], "rate") == 0))) {
+        key = 4 + axis_of(w[2]);
+    }
+    if (key >= 0) {
+        const int want = key == 0 ? 0 : key <= 3 ? 1 : 2;
+        c->key = key;
+        c->unit = unit;
+        c->kind = unit == HX_UNIT_NONE || unit_quantity(unit) == want ? HX_NAME_MATCH : HX_NAME_NEAR;
+        return c->kind;
+    }
+    /* a near miss: a stem and an axis, or a time word, among other words
+     * (FreeAcc_X, acc_x_lin, SampleTimeFine) */
+    for (i = 0; i < n; i++) {
+        int a;
+        if ((q = glued(w[i], &a)) != 0) {
+            c->key = 1 + 3 * (q - 1) + a;
+            break;
+        }
+        if (in_list(w[i], k_acc_stems) || in_list(w[i], k_gyr_stems)) {
+            int j;
+            for (j = i + 1; j < n && axis_of(w[j]) < 0; j++) {
+            }
+            if (j < n) {
+                c->key = (in_list(w[i], k_acc_stems) ? 1 : 4) + axis_of(w[j]);
+                break;
+            }
+        }
+        time_word |= strcmp(w[i], "time") == 0 || strcmp(w[i], "timestamp") == 0;
+    }
+    if (c->key < 0 && time_word) {
+        c->key = 0;
+    }
+    if (c->key >= 0) {
+        c->kind = HX_NAME_NEAR;
+        c->unit = unit;
+    }
+    return c->kind;
+}
+
+static void add_col(int *count, int list[3], int col)
+{
+    if (*count < 3) {
+        list[*count] = col;
+    }
+    (*count)++;
+}
+
+int hx_names_match(char *const *f, int n, hx_names_match_t *m)
+{
+    int i, k;
+    memset(m, 0, sizeof *m);
+    for (k = 0; k < 7; k++) {
+        m->col[k] = -1;
+    }
+    for (i = 0; i < n; i++) {
+        /* Xsens's exports: Gyr_X is deg/s in a Movella DOT CSV and rad/s
+         * in MT Manager's, which has its own importer */
+        if (hx_name_eq(f[i], "SampleTimeFine") || hx_name_eq(f[i], "PacketCounter")) {
+            m->excluded = 1;
+            return 0;
+        }
+    }
+    for (i = 0; i < n; i++) {
+        hx_name_class_t c;
+        const hx_name_kind_t kind = hx_name_classify(f[i], &c);
+        if (kind == HX_NAME_MATCH) {
+            add_col(&m->ncand[c.key], m->cand[c.key], i);
+        } else if (kind == HX_NAME_NEAR) {
+            add_col(&m->nnear[c.key], m->near[c.key], i);
+        }
+    }
+    m->ok = m->ncand[0] <= 1;
+    for (k = 0; k < 7; k++) {
+        if (m->ncand[k] == 1) {
+            m->col[k] = m->cand[k][0];
+        } else if (k > 0) {
+            m->ok = 0;
+        }
+    }
+    if (m->col[0] >= 0) {
+        hx_name_class_t c;
+        (void)hx_name_classify(f[m->col[0]], &c);
+        m->unit[0] = c.unit;
+    }
+    for (k = 1; k < 3; k++) {
+        /* one unit for the three axes of a quantity (one --units item) */
+        int a, seen = 0;
+        for (a = 0; a < 3; a++) {
+            const int col = m->col[1 + 3 * (k - 1) + a];
+            hx_name_class_t c;
+            if (col < 0) {
+                continue;
+            }
+            (void)hx_name_classify(f[col], &c);
+            if (!seen) {
+                m->unit[k] = c.unit;
+                seen = 1;
+            } else if (c.unit != m->unit[k]) {
+                m->units_differ |= k;
+            }
+        }
+        if (m->units_differ & k) {
+            m->unit[k] = HX_UNIT_NONE;
+            m->ok = 0;
+        }
+    }
+    return m->ok;
+}
+
+/* a name as the header spells it, without blanks and quotes around it */
+static void bare(const char *name, char *out, size_t size)
+{
+    size_t len;
+    while (*name == ' ' || *name == '\t' || *name == '"' || *name == '\'') {
+        name++;
+    }
+    len = strlen(name);
+    while (len > 0 && (name[len - 1] == ' ' || name[len - 1] == '\t' || name[len - 1] == '"' ||
+                       name[len - 1] == '\'' || name[len - 1] == '\r')) {
+        len--;
+    }
+    snprintf(out, size, "%.*s", (int)len, name);
+}
+
+static void cat(char *buf, size_t size, const char *text)
+{
+    const size_t n = strlen(buf);
+    if (n + 1 < size) {
+        snprintf(buf + n, size - n, "%s", text);
+    }
+}
+
+const char *hx_names_give(const hx_names_match_t *m, char *const *f, char *buf, size_t size)
+{
+    char map[512], name[128];
+    int k, quote = 0;
+    size_t i;
+    map[0] = '\0';
+    for (k = 0; k < 7; k++) {
+        if (m->ncand[k] == 1) {
+            bare(f[m->cand[k][0]], name, sizeof name);
+            cat(map, sizeof map, map[0] != '\0' ? "," : "");
+            cat(map, sizeof map, k_keys[k]);
+            cat(map, sizeof map, "=");
+            cat(map, sizeof map, name);
+        }
+    }
+    for (i = 0; map[i] != '\0'; i++) {
+        /* a name with a blank or a bracket is one shell word only quoted */
+        quote |= !(isalnum((unsigned char)map[i]) || strchr("_.,=/-+", map[i]) != NULL);
+    }
+    buf[0] = '\0';
+    if (map[0] == '\0') {
+        return buf;
+    }
+    snprintf(buf, size, "--columns %s%s%s", quote ? "'" : "", map, quote ? "'" : "");
+    {
+        char units[64] = "";
+        for (k = 0; k < 3; k++) {
+            const char *item = hx_name_unit_item(m->unit[k]);
+            if (item != NULL && unit_quantity(m->unit[k]) == k) {
+                cat(units, sizeof units, units[0] != '\0' ? "," : "");
+                cat(units, sizeof units, item);
+            }
+        }
+        if (units[0] != '\0') {
+            cat(buf, size, " --units ");
+            cat(buf, size, units);
+        }
+    }
+    return buf;
+}
+
+const char *hx_names_unmatched(const hx_names_match_t *m, char *const *f, int time_required, char *buf,
+                               size_t size)
+{
+    int k, j;
+    char name[128], item[64];
+    buf[0] = '\0';
+    for (k = time_required ? 0 : 1; k < 7; k++) {
+        const int count = m->ncand[k] == 0 ? m->nnear[k] : m->ncand[k];
+        const int *list = m->ncand[k] == 0 ? m->near[k] : m->cand[k];
+        if (m->ncand[k] == 1) {
+            continue;
+        }
+        cat(buf, size, buf[0] != '\0' ? "; " : "");
+        if (m->ncand[k] > 1) {
+            snprintf(item, sizeof item, "%s: %d candidates (", k_keys[k], m->ncand[k]);
+        } else if (count > 0) {
+            snprintf(item, sizeof item, "%s: none (near misses: ", k_keys[k]);
+        } else {
+            snprintf(item, sizeof item, "%s: none", k_keys[k]);
+        }
+        cat(buf, size, item);
+        for (j = 0; j < count && j < 3; j++) {
+            bare(f[list[j]], name, sizeof name);
+            cat(buf, size, j > 0 ? ", " : "");
+            cat(buf, size, name);
+        }
+        cat(buf, size, count > 3 ? ", ...)" : count > 0 ? ")" : "");
+    }
+    for (k = 1; k < 3; k++) {
+        if (m->units_differ & k) {
+            cat(buf, size, buf[0] != '\0' ? "; " : "");
+            cat(buf, size, k == 1 ? "the accelerations name different units" : "the rates name different units");
+        }
+    }
+    return buf;
+}
+
+const char *hx_names_near(const hx_names_match_t *m, char *const *f, char *buf, size_t size)
+{
+    int k, j, shown = 0, total = 0;
+    char name[128];
+    buf[0] = '\0';
+    for (k = 0; k < 7; k++) {
+        total += m->nnear[k];
+        for (j = 0; j < m->nnear[k] && j < 3; j++) {
+            if (shown < 4) {
+                bare(f[m->near[k][j]], name, sizeof name);
+                cat(buf, size, shown > 0 ? ", " : "");
+                cat(buf, size, name);
+                shown++;
+            }
+        }
+    }
+    cat(buf, size, total > shown ? ", ..." : "");
+    return buf;
+}

@@ -1,0 +1,82 @@
+/* Column names of an IMU CSV read without --columns (docs/log-format.md,
+ * "Names read without --columns"): a header such as
+ * "timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z" or
+ * "Time,AccX [g],...,GyrZ [deg/s]" matched to the interchange keys. */
+#ifndef HX_NAMES_H
+#define HX_NAMES_H
+
+#include <stddef.h>
+
+/** What one header name is (hx_name_classify). */
+typedef enum {
+    HX_NAME_OTHER = 0, /**< no time, acceleration or rate name */
+    HX_NAME_MATCH,     /**< a name of key (0 t, 1..3 ax..az, 4..6 gx..gy) */
+    HX_NAME_NEAR       /**< a stem and an axis (or a time word) with another word: FreeAcc_X, acc_x_lin */
+} hx_name_kind_t;
+
+/** The unit a name gives (in brackets, parentheses or as its last word). */
+typedef enum {
+    HX_UNIT_NONE = 0,
+    HX_UNIT_S, HX_UNIT_MS, HX_UNIT_US, HX_UNIT_NS, /* time */
+    HX_UNIT_MPS2, HX_UNIT_G, HX_UNIT_MG,           /* acceleration */
+    HX_UNIT_RPS, HX_UNIT_DPS, HX_UNIT_MDPS         /* rate */
+} hx_name_unit_t;
+
+typedef struct {
+    hx_name_kind_t kind;
+    int key;              /**< 0 t, 1..6 ax..gz (MATCH and NEAR), -1 none */
+    hx_name_unit_t unit;  /**< the unit named, HX_UNIT_NONE when none */
+} hx_name_class_t;
+
+/** Classify one header name. Split into lower-case words at blanks, '_',
+ *  '-', '.', ':' and at a lower-to-upper case change (AccX: acc, x;
+ *  accX_mps2: acc, x, mps2); a unit in brackets or parentheses, or as the
+ *  last word, is taken out. The words left must be exactly a time name (t,
+ *  time, timestamp, ts, time stamp), or a stem and an axis x, y, z, the
+ *  axis apart or glued (acc_x, accx, ax): acceleration acc, accel,
+ *  accelerometer, acceleration, a (glued only: ax); rate gyr, gyro,
+ *  gyroscope, w, omega, angvel, angular velocity, angular rate, rotation
+ *  rate, g (glued only: gx). A unit of another quantity, or any other word
+ *  (FreeAcc_X's free, acc_x_lin's lin), makes it no match: a near miss when
+ *  a stem and an axis (or a time word) are among the words. Returns kind. */
+hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c);
+
+/** The result of matching a header (hx_names_match). */
+typedef struct {
+    int ok;             /**< 1: each of ax..gz one column, t at most one, one unit per quantity */
+    int col[7];         /**< the column of t, ax..gz; -1 none (or ambiguous: ncand > 1) */
+    int ncand[7];       /**< the columns that match each key */
+    int cand[7][3];     /**< the first three of them */
+    int nnear[7];       /**< near misses of each key */
+    int near[7][3];     /**< the first three of them */
+    int units_differ;   /**< 1 accel, 2 gyro: the three axes name different units */
+    int excluded;       /**< 1: an Xsens export's name (SampleTimeFine, PacketCounter): not matched */
+    hx_name_unit_t unit[3]; /**< the unit of time, accel, gyro the names give (NONE: not named) */
+} hx_names_match_t;
+
+/** Match the n header fields f to the interchange keys. A header with
+ *  SampleTimeFine or PacketCounter (Xsens exports, whose Gyr_X is deg/s in
+ *  one product and rad/s in another) is not matched (excluded set).
+ *  Returns m->ok. */
+int hx_names_match(char *const *f, int n, hx_names_match_t *m);
+
+/** The --units item of a unit ("time=ms", "accel=g", "gyro=deg/s"), NULL
+ *  for HX_UNIT_NONE. */
+const char *hx_name_unit_item(hx_name_unit_t u);
+
+/** The text "--columns t=NAME,ax=NAME,..." of the keys matched uniquely
+ *  (the names as the header spells them), then " --units ITEMS" of the units
+ *  named; "" when nothing matched. Returns buf. */
+const char *hx_names_give(const hx_names_match_t *m, char *const *f, char *buf, size_t size);
+
+/** What did not match, for a refusal: "gx: 2 candidates (gyro_x,
+ *  gyro_x_filt); gy: none (near misses: gyr_y_lin)", "" when every key
+ *  matched. time_required: say of a missing t too. Returns buf. */
+const char *hx_names_unmatched(const hx_names_match_t *m, char *const *f, int time_required, char *buf,
+                               size_t size);
+
+/** The near misses of every key, comma-separated (the first four, then
+ *  "..."): the names a warning says were not read. "" when none. */
+const char *hx_names_near(const hx_names_match_t *m, char *const *f, char *buf, size_t size);
+
+#endif
