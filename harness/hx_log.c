@@ -2258,6 +2258,81 @@ double hx_time_unit_rate(double rate_hz, size_t n, int64_t t_first_ns, int64_t t
     return (fast && span_hz > HX_TIME_RATE_MAX_HZ) || (slow && span_hz < HX_TIME_RATE_MIN_HZ) ? rate_hz : 0.0;
 }
 
+/* The strictly increasing stamps of t_ns[0..n) into v (duplicates and steps
+ * back dropped); their count. hx_stamp_rate_hz's and hx_stamp_bursts's. */
+static size_t distinct_stamps(const int64_t *t_ns, size_t n, int64_t *v)
+{
+    size_t i, m = 0;
+    for (i = 0; i < n; i++) {
+        if (m == 0u || t_ns[i] > v[m - 1u]) {
+            v[m++] = t_ns[i];
+        }
+    }
+    return m;
+}
+
+int hx_stamp_bursts(const int64_t *t_ns, size_t n, double max_gap_s, hx_bursts_t *b)
+{
+    /* Until 2026-11-30 the test of --rate's resampler alone (hx_nav.c);
+     * plain replay navigated such logs at "200 kHz" (0 strides, exit 0) */
+    int64_t *v, *d, gap_ns;
+    size_t i, m = 0, a, e;
+    memset(b, 0, sizeof *b);
+    b->n = n;
+    if (t_ns == NULL || n < 2u) {
+        return HX_BURSTS_NONE;
+    }
+    v = (int64_t *)malloc(2u * n * sizeof *v);
+    if (v == NULL) {
+        return -1;
+    }
+    d = v + n;
+    m = distinct_stamps(t_ns, n, v); /* exact repeated stamps carry no new instant */
+    if (m < 2u) {
+        free(v);
+        return HX_BURSTS_NONE;
+    }
+    for (i = 1; i < m; i++) {
+        d[i - 1u] = v[i] - v[i - 1u];
+    }
+    qsort(d, m - 1u, sizeof *d, cmp_i64);
+    b->median_hz = 1e9 / (double)d[(m - 1u) / 2u];
+    if (m < 4u) {
+        free(v);
+        return HX_BURSTS_NONE;
+    }
+    gap_ns = (int64_t)ceil(1e9 * (max_gap_s > 1.5 / b->median_hz ? max_gap_s : 1.5 / b->median_hz));
+    for (a = 0; a < m; a = e) {
+        for (e = a + 1u; e < m && v[e] - v[e - 1u] <= gap_ns; e++) {
+        }
+        b->span_s += 1e-9 * (double)(v[e - 1u] - v[a]);
+        b->segs++;
+    }
+    free(v);
+    b->span_hz = b->span_s > 0.0 ? (double)(n - b->segs) / b->span_s : 0.0;
+    {
+        /* the samples the median interval gives: one per segment and one
+         * per interval over the span */
+        const double expect = b->span_s * b->median_hz + (double)b->segs;
+        b->kind = (double)n < 0.5 * expect   ? HX_BURSTS_CLOSE
+                  : (double)n > 1.5 * expect ? HX_BURSTS_SHARED
+                                             : HX_BURSTS_NONE;
+    }
+    return (int)b->kind;
+}
+
+const char *hx_bursts_text(const hx_bursts_t *b, const char *needs, const char *section, char *msg, size_t size)
+{
+    snprintf(msg, size,
+             "the time stamps come in bursts (%s): 1 / their median interval gives %.6g Hz, but the %zu samples span "
+             "%.4g s%s, %.4g Hz; %s: leave the time column out and give --input-rate %.4g (docs/harness.md, \"%s\")",
+             b->kind == HX_BURSTS_CLOSE ? "samples stamped close together as a logger reads them?"
+                                        : "samples that share one stamp?",
+             b->median_hz, b->n, b->span_s, b->segs > 1u ? " between the time jumps" : "", b->span_hz, needs,
+             b->span_hz, section);
+    return msg;
+}
+
 double hx_log_time_unit_rate(const hx_log_t *log, double rate_hz)
 {
     return log->n > 0u ? hx_time_unit_rate(rate_hz, log->n, log->t_ns[0], log->t_ns[log->n - 1u]) : rate_hz;
@@ -2328,14 +2403,10 @@ double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)
     }
     d = v + n;
     srt = d + n;
-    /* the strictly increasing stamps (duplicates and steps back dropped),
-     * their intervals, and the intervals' greatest common divisor: the
-     * stamps' resolution (1 ms for stamps printed to three decimals) */
-    for (i = 0; i < n; i++) {
-        if (m == 0u || t_ns[i] > v[m - 1u]) {
-            v[m++] = t_ns[i];
-        }
-    }
+    /* the strictly increasing stamps, their intervals, and the intervals'
+     * greatest common divisor: the stamps' resolution (1 ms for stamps
+     * printed to three decimals) */
+    m = distinct_stamps(t_ns, n, v);
     if (m < 2u) {
         free(v);
         return 0.0;

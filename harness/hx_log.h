@@ -281,6 +281,40 @@ const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size);
  *  over the log), are in the right unit: naming one would make the log
  *  1000 times too slow or too fast. */
 double hx_time_unit_rate(double rate_hz, size_t n, int64_t t_first_ns, int64_t t_last_ns);
+/** Stamps in bursts, the verdict of hx_stamp_bursts. */
+typedef enum {
+    HX_BURSTS_NONE = 0, /**< the median interval is the sampling period, give or take lost (a third of the
+                             samples) and repeated (a quarter of the stamps) samples */
+    HX_BURSTS_CLOSE,    /**< fewer than half the samples the median interval gives over the span: samples
+                             stamped close together as a logger reads them (5 us apart every 10 ms) */
+    HX_BURSTS_SHARED    /**< more than 1.5 times as many: samples that share one stamp (4 to a stamp every
+                             10 ms), as stamps coarser than the sampling also give */
+} hx_bursts_kind_t;
+typedef struct {
+    hx_bursts_kind_t kind;
+    size_t n;         /**< the samples */
+    size_t segs;      /**< the segments between time jumps */
+    double median_hz; /**< 1 / the median interval of the strictly increasing stamps (0: fewer than 2) */
+    double span_s;    /**< the segments' spans, summed */
+    double span_hz;   /**< the samples over that span, (n - segs) / span_s: the rate to give (0: no span) */
+} hx_bursts_t;
+/** Whether n time stamps (ns) come in bursts: the samples between the time
+ *  jumps (an interval above max_gap_s and 1.5 median intervals, the
+ *  navigator's rule) against the count the median interval of the strictly
+ *  increasing stamps predicts over their span (span x rate + one per
+ *  segment): below half of it HX_BURSTS_CLOSE, above 1.5 times
+ *  HX_BURSTS_SHARED. The one test of replay (before navigating), of
+ *  --rate's resampler, and of the warning of info, psd and allan. Fewer
+ *  than 4 distinct stamps: HX_BURSTS_NONE. Returns the kind, -1 out of
+ *  memory. */
+int hx_stamp_bursts(const int64_t *t_ns, size_t n, double max_gap_s, hx_bursts_t *b);
+/** The cause and the remedy for stamps in bursts (b->kind not
+ *  HX_BURSTS_NONE) in msg (returned): "the time stamps come in bursts
+ *  (samples stamped close together as a logger reads them?): 1 / their
+ *  median interval gives 200000 Hz, but the 16539 samples span 41.34 s,
+ *  400 Hz; NEEDS: leave the time column out and give --input-rate 400
+ *  (docs/harness.md, \"SECTION\")". needs: what the wrong rate breaks. */
+const char *hx_bursts_text(const hx_bursts_t *b, const char *needs, const char *section, char *msg, size_t size);
 /** csv with the time unit hx_time_unit_hint finds for rate_hz (in *buf),
  *  else csv itself (NULL stays NULL): the layout whose other remedies
  *  (hx_units_problem's, given with no rate) name the time item too, for a

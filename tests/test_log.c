@@ -1839,6 +1839,91 @@ static void test_stamp_rate(void **state)
     assert_true(hx_stamp_rate_hz(same, 1, NULL) == 0.0);
 }
 
+/* Stamps in bursts (hx_stamp_bursts), the test of replay, --rate and the
+ * warning of info, psd and allan; expected values worked out by hand from
+ * the stamps built here:
+ * - packets of 4 samples stamped 5 us apart every 10 ms (400 Hz): median
+ *   interval 5 us, 200 kHz; the 4000 samples span 10,000 us to
+ *   10,000,015 us: 9.990015 s, 3999 / 9.990015 Hz; CLOSE (4000 samples,
+ *   where 200 kHz gives about 2 million);
+ * - one stamp shared by each packet: 100 Hz, 9.99 s, SHARED;
+ * - the same bursts with a 5 s pause after 2000 samples: two segments, the
+ *   pause left out of the span;
+ * - 400 Hz with every third sample lost, or every fourth stamp a repeat of
+ *   the one before (the coarse stamps the units review kept apart): NONE;
+ * - fewer than 4 distinct stamps: NONE. */
+static void test_stamp_bursts(void **state)
+{
+    enum { N = 4000 };
+    static int64_t t[N];
+    hx_bursts_t b;
+    char msg[512];
+    size_t k, m;
+    (void)state;
+    for (k = 0; k < N; k++) {
+        t[k] = ((int64_t)(k / 4u) + 1) * 10000000 + 5000 * (int64_t)(k % 4u);
+    }
+    assert_int_equal(hx_stamp_bursts(t, N, 0.2, &b), HX_BURSTS_CLOSE);
+    assert_int_equal(b.kind, HX_BURSTS_CLOSE);
+    assert_true(b.median_hz == 200000.0);
+    assert_int_equal(b.segs, 1);
+    assert_int_equal(b.n, N);
+    FNAV_ASSERT_CLOSE(b.span_s, 9.990015, 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(b.span_hz, 3999.0 / 9.990015, 1e-9, 0.0);
+    assert_string_equal(hx_bursts_text(&b, "WHAT", "SECTION", msg, sizeof msg),
+                        "the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 "
+                        "/ their median interval gives 200000 Hz, but the 4000 samples span 9.99 s, 400.3 Hz; WHAT: "
+                        "leave the time column out and give --input-rate 400.3 (docs/harness.md, \"SECTION\")");
+    /* a pause of 5 s after 2000 samples: a time jump, not in the span */
+    for (k = N / 2u; k < N; k++) {
+        t[k] += 5000000000;
+    }
+    assert_int_equal(hx_stamp_bursts(t, N, 0.2, &b), HX_BURSTS_CLOSE);
+    assert_int_equal(b.segs, 2);
+    FNAV_ASSERT_CLOSE(b.span_s, 2.0 * 4.990015, 1e-12, 0.0); /* 10,000 us to 5,000,015 us, and as long after the pause */
+    FNAV_ASSERT_CLOSE(b.span_hz, 3998.0 / 9.98003, 1e-9, 0.0);
+    assert_non_null(strstr(hx_bursts_text(&b, "W", "S", msg, sizeof msg), "span 9.98 s between the time jumps"));
+    /* one stamp per packet */
+    for (k = 0; k < N; k++) {
+        t[k] = ((int64_t)(k / 4u) + 1) * 10000000;
+    }
+    assert_int_equal(hx_stamp_bursts(t, N, 0.2, &b), HX_BURSTS_SHARED);
+    assert_true(b.median_hz == 100.0);
+    FNAV_ASSERT_CLOSE(b.span_s, 9.99, 1e-12, 0.0);
+    assert_non_null(strstr(hx_bursts_text(&b, "W", "S", msg, sizeof msg), "(samples that share one stamp?)"));
+    /* 400 Hz, a third of the samples lost in gaps of 27.5 ms (10 of every
+     * 30): the median interval stays 2.5 ms, and 2/3 of its count is no
+     * burst */
+    for (k = 0, m = 0; k < N; k++) {
+        if (k % 30u < 20u) {
+            t[m++] = (int64_t)k * 2500000;
+        }
+    }
+    assert_int_equal(hx_stamp_bursts(t, m, 0.2, &b), HX_BURSTS_NONE);
+    assert_true(b.median_hz == 400.0);
+    FNAV_ASSERT_CLOSE((double)m / (b.span_s * b.median_hz + 1.0), 2.0 / 3.0, 2e-3, 0.0);
+    /* every third sample lost: intervals of 2.5 and 5 ms alike, whose
+     * median (5 ms) halves the rate; 4/3 of its count, no burst either */
+    for (k = 0, m = 0; k < N; k++) {
+        if (k % 3u != 2u) {
+            t[m++] = (int64_t)k * 2500000;
+        }
+    }
+    assert_int_equal(hx_stamp_bursts(t, m, 0.2, &b), HX_BURSTS_NONE);
+    assert_true(b.median_hz == 200.0);
+    /* 400 Hz, every fourth stamp the one before it */
+    for (k = 0; k < N; k++) {
+        t[k] = (int64_t)(k % 4u == 3u ? k - 1u : k) * 2500000;
+    }
+    assert_int_equal(hx_stamp_bursts(t, N, 0.2, &b), HX_BURSTS_NONE);
+    /* too few distinct stamps */
+    for (k = 0; k < 8; k++) {
+        t[k] = (int64_t)(k / 3u) * 1000;
+    }
+    assert_int_equal(hx_stamp_bursts(t, 8, 0.2, &b), HX_BURSTS_NONE);
+    assert_int_equal(hx_stamp_bursts(NULL, 0, 0.2, &b), HX_BURSTS_NONE);
+}
+
 /* The Xsens packet counter of ipol_gait_xsens has 16 bits: past 65535 it
  * wraps to 0 (and a packet may be lost across the wrap), which must read as
  * time going on, not backwards. */
@@ -3412,6 +3497,7 @@ int main(void)
         cmocka_unit_test(test_detect_wrong_hint),
         cmocka_unit_test(test_gz_truncated),
         cmocka_unit_test(test_stamp_rate),
+        cmocka_unit_test(test_stamp_bursts),
         cmocka_unit_test(test_roundtrip_all_formats),
         cmocka_unit_test(test_killed_writer),
         cmocka_unit_test(test_bin_rate_unknown),
