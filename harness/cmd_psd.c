@@ -13,6 +13,7 @@
 #include "footnav/fnav_welch.h"
 #include "hx_cli.h"
 #include "hx_commands.h"
+#include "hx_nav.h"
 
 #define CMD "psd"
 #define NSENS_NFFT 5
@@ -808,6 +809,11 @@ int hx_cmd_psd(int argc, char **argv)
                          "sampling",
                     irregular, log.n - 1, rate);
         }
+    }
+    {
+        char what[96];
+        snprintf(what, sizeof what, "the frequencies are read at %.4g Hz, not the sampling rate", rate);
+        hx_nav_bursts_warn(CMD, a.pos[0], log.t_ns, log.n, what);
     }
     if (hx_arg(&a, "--input-rate") == NULL) {
         /* a time column in milliseconds (100 Hz read as 0.1 Hz) was said

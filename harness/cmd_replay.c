@@ -109,6 +109,11 @@ int hx_cmd_replay(int argc, char **argv)
             return HX_EXIT_DATA;
         }
         hx_reader_close(probe);
+        /* stamps in bursts are refused before any output is opened too */
+        if (!(o.rate_hz > 0.0) && hx_nav_stamps_check(a.pos[0], fmt, in_rate, (double)cfg.max_gap_s, err, sizeof err) != 0) {
+            hx_error("replay", "%s", err);
+            return HX_EXIT_DATA;
+        }
     }
     /* the JSON and the PNG are written after the whole log: find out now
      * that they can be (it ran the log first; the JSON review, 2026-11-30) */
@@ -127,7 +132,8 @@ int hx_cmd_replay(int argc, char **argv)
     }
     hx_command_line(cmdline, sizeof cmdline, "harness replay", argc, argv);
     rc = hx_nav_replay("replay", a.pos[0], fmt, in_rate, &cfg, o.rate_hz, csv, &traj,
-                       HX_REPLAY_PROGRESS | HX_REPLAY_AXES | HX_REPLAY_UNITS_OPT | (strides_path != NULL ? HX_REPLAY_EVENTS : 0u), err,
+                       HX_REPLAY_PROGRESS | HX_REPLAY_AXES | HX_REPLAY_UNITS_OPT | HX_REPLAY_STAMPS_CHECKED |
+                           (strides_path != NULL ? HX_REPLAY_EVENTS : 0u), err,
                        sizeof err);
     traj.input_complete = 1;
     hx_traj_set_config(&traj, &o, &cfg);

@@ -377,12 +377,6 @@ static double event_fit_rate(const fnav_nav_config_t *cfg, double fs_hz)
 
 /* ------------------------------------------------------------ resampler */
 
-static int cmp_i64(const void *a, const void *b)
-{
-    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
-    return (x > y) - (x < y);
-}
-
 /* One output sample at instant t from the kept input samples [a, b) of a
  * segment without time jumps (kernel half length half, cut-off fc in
  * cycles per input sample); *m is the segment's input sample at or before
@@ -427,7 +421,7 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
                     double *in_rate, char *err, size_t err_size)
 {
     size_t n = 0, i, k, nout, a, b;
-    int64_t *dt, gap_ns;
+    int64_t gap_ns;
     double fs, fc, period_ns;
     int half, pass;
     size_t *keep;
@@ -438,10 +432,7 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
         return -1;
     }
     keep = (size_t *)malloc(in->n * sizeof *keep);
-    dt = (int64_t *)malloc(in->n * sizeof *dt);
-    if (keep == NULL || dt == NULL) {
-        free(keep);
-        free(dt);
+    if (keep == NULL) {
         snprintf(err, err_size, "out of memory");
         return -1;
     }
@@ -455,53 +446,36 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
     }
     if (n < 4) {
         free(keep);
-        free(dt);
         snprintf(err, err_size, "too few distinct time stamps to resample (%zu)", n);
         return -1;
     }
-    for (i = 1; i < n; i++) {
-        dt[i - 1] = in->t_ns[keep[i]] - in->t_ns[keep[i - 1]];
-    }
-    qsort(dt, n - 1, sizeof *dt, cmp_i64);
-    fs = 1e9 / (double)dt[(n - 1) / 2];
-    free(dt);
-    *in_rate = fs;
-    gap_ns = (int64_t)ceil(1e9 * (max_gap_s > 1.5 / fs ? max_gap_s : 1.5 / fs));
     {
         /* The filter takes the input as uniform at its median rate, which
-         * needs the median interval to be the sampling period: the samples
-         * between the time jumps as many as it gives over their span, give
-         * or take lost (fewer) and repeated (more) ones. Stamps in bursts
-         * break it: packets of samples stamped microseconds apart (5 us
-         * every 10 ms: 200 kHz, where 400 Hz fill the span; 0.2 % of the
-         * samples), or one stamp shared by a packet (4 samples to a stamp
-         * every 10 ms: 100 Hz, 4 times the samples). Until 2026-11-30 both
-         * were resampled with exit 0: the kernel, 40 times the rate ratio
-         * of "200 kHz" samples long, smeared seconds of the walk into each
-         * output (0 strides), and the shared stamps kept one sample of
-         * four (the units review). */
-        double expect = 0.0, span_s = 0.0;
-        size_t segs = 0;
-        for (a = 0; a < n; a = b) {
-            for (b = a + 1; b < n && in->t_ns[keep[b]] - in->t_ns[keep[b - 1]] <= gap_ns; b++) {
-            }
-            span_s += 1e-9 * (double)(in->t_ns[keep[b - 1]] - in->t_ns[keep[a]]);
-            segs++;
-        }
-        expect = span_s * fs + (double)segs;
-        if ((double)in->n < 0.5 * expect || (double)in->n > 1.5 * expect) {
-            const double per_s = span_s > 0.0 ? (double)(in->n - segs) / span_s : 0.0;
+         * needs the median interval to be the sampling period: stamps in
+         * bursts break it (hx_stamp_bursts, the test plain replay makes
+         * too). Until 2026-11-30 both kinds were resampled with exit 0: the
+         * kernel, 40 times the rate ratio of "200 kHz" samples long,
+         * smeared seconds of the walk into each output (0 strides), and
+         * the shared stamps kept one sample of four (the units review). */
+        hx_bursts_t bu;
+        char why[400];
+        const int kind = hx_stamp_bursts(in->t_ns, in->n, max_gap_s, &bu);
+        if (kind < 0) {
             free(keep);
-            snprintf(err, err_size,
-                     "--rate: the time stamps come in bursts (%s): 1 / their median interval gives %.6g Hz, but the %zu "
-                     "samples span %.4g s%s, %.4g Hz; resampling needs each sample's own time: leave the time column "
-                     "out and give --input-rate %.4g (docs/harness.md, \"--rate HZ (resampling)\")",
-                     (double)in->n < expect ? "samples stamped close together as a logger reads them?"
-                                            : "samples that share one stamp?",
-                     fs, in->n, span_s, segs > 1u ? " between the time jumps" : "", per_s, per_s);
+            snprintf(err, err_size, "out of memory");
+            return -1;
+        }
+        fs = bu.median_hz;
+        if (kind != HX_BURSTS_NONE) {
+            free(keep);
+            snprintf(err, err_size, "--rate: %s",
+                     hx_bursts_text(&bu, "resampling needs each sample's own time", "--rate HZ (resampling)", why,
+                                    sizeof why));
             return -1;
         }
     }
+    *in_rate = fs;
+    gap_ns = (int64_t)ceil(1e9 * (max_gap_s > 1.5 / fs ? max_gap_s : 1.5 / fs));
     if (!(rate_hz < fs * 0.999)) {
         /* a rate within 0.1 % of the input's leaves nothing to decimate
          * (the vicon trials' 200.080 Hz median refused --rate 200 as "not
@@ -1409,6 +1383,65 @@ static int stamps_never_advance(const fnav_nav_stats_t *st)
     return st->samples > 1u && st->duplicates + 1u >= st->samples;
 }
 
+int hx_nav_bursts_warn(const char *cmd, const char *path, const int64_t *t_ns, size_t n, const char *what)
+{
+    /* info, psd and allan printed 1 / the median interval of such stamps
+     * (200 kHz for a 400 Hz walk) as the rate without a word until
+     * 2026-11-30; they still run, with this warning */
+    hx_bursts_t bu;
+    char msg[512];
+    if (hx_stamp_bursts(t_ns, n, (double)fnav_nav_config_default.max_gap_s, &bu) <= 0) {
+        return 0;
+    }
+    hx_warn(cmd, "%s: %s", path, hx_bursts_text(&bu, what, "Time stamps in bursts", msg, sizeof msg));
+    return 1;
+}
+
+int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, double max_gap_s, char *err,
+                        size_t err_size)
+{
+    /* Stamps in bursts make the detector's rate 1 / their median interval
+     * (5 us: "200 kHz") and the navigation meaningless; until 2026-11-30
+     * plain replay ran such a walk with exit 0 and 0 strides, where --rate
+     * refused it. The whole log's stamps, read once before the run (the
+     * test needs its span); a read error stops the collection there, and
+     * the replay reports it as before. */
+    hx_reader_t *r = hx_reader_open(path, fmt, in_rate, err, err_size);
+    int64_t *t = NULL;
+    size_t n = 0, cap = 0;
+    fnav_sample_t s;
+    hx_bursts_t bu;
+    int kind, rc = 0;
+    err[0] = '\0';
+    if (r == NULL) {
+        return 0; /* the replay's own open says why */
+    }
+    memset(&s, 0, sizeof s);
+    while (hx_reader_next(r, &s) == FNAV_OK) {
+        if (n == cap) {
+            const size_t nc = cap > 0u ? 2u * cap : 65536u;
+            int64_t *nt = (int64_t *)realloc(t, nc * sizeof *t);
+            if (nt == NULL) {
+                break; /* the stamps so far */
+            }
+            t = nt;
+            cap = nc;
+        }
+        t[n++] = s.t_ns;
+    }
+    hx_reader_close(r);
+    kind = hx_stamp_bursts(t, n, max_gap_s, &bu);
+    if (kind == HX_BURSTS_CLOSE) {
+        char why[400];
+        snprintf(err, err_size, "%s: %s", path,
+                 hx_bursts_text(&bu, "navigation needs each sample's own time", "Time stamps in bursts", why,
+                                sizeof why));
+        rc = -1;
+    }
+    free(t);
+    return rc;
+}
+
 int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_rate, const fnav_nav_config_t *cfg,
                   double rate_hz, FILE *csv, hx_traj_t *traj, unsigned flags, char *err, size_t err_size)
 {
@@ -1472,6 +1505,10 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             traj->resample_dropped_dups = dups;
         }
     } else {
+        if (!(flags & HX_REPLAY_STAMPS_CHECKED) &&
+            hx_nav_stamps_check(path, fmt, in_rate, (double)cfg->max_gap_s, err, err_size) != 0) {
+            return -1;
+        }
         r = hx_reader_open(path, fmt, in_rate, err, err_size);
         if (r == NULL) {
             return -1;
@@ -2265,7 +2302,7 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     if (hx_nav_coarse_stamps(st)) {
         fprintf(f, "note              %.1f %% of the samples repeat the time stamp before them (dt = 0; longest "
                    "interval %.1f ms): the stamps are coarser than the sampling (float32 seconds far from 0? a "
-                   "millisecond clock above 1 kHz?); a repeated sample is not integrated and the detector's rate "
+                   "millisecond clock above 1 kHz? one stamp for each packet of samples?); a repeated sample is not integrated and the detector's rate "
                    "comes from the stamps, so position and heading are unreliable: " HX_COARSE_STAMPS_REMEDY "\n",
                 100.0 * (double)st->duplicates / (double)st->samples, 1e3 * (double)st->max_gap_seen_s);
     }

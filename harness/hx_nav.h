@@ -240,6 +240,29 @@ const char *hx_units_fix_dps(const hx_csv_layout_t *csv, char *buf, size_t size)
                                      are checked against its frames: fnav_nav_frame_t has no event times) */
 #define HX_REPLAY_UNITS_OPT 0x8u /**< hx_nav_replay: the command takes --units: the units check's remedy for
                                       the interchange CSV names it (hx_units_problem) */
+#define HX_REPLAY_STAMPS_CHECKED 0x10u /**< hx_nav_replay: the caller ran hx_nav_stamps_check on the log
+                                            already (before opening its outputs) */
+
+/**
+ * Refuse a log whose time stamps come in bursts (HX_BURSTS_CLOSE of
+ * hx_stamp_bursts over all its stamps, read once: samples stamped
+ * microseconds apart as a logger reads them, whose median interval the
+ * stance detector would take for the period): -1 with the cause and the
+ * --input-rate remedy in err, else 0 (a log that cannot be opened too: the
+ * replay's own open says why). Samples that share one stamp are left to
+ * the coarse-stamps note (docs/harness.md, "Time stamps in bursts").
+ * hx_nav_replay runs it without --rate unless HX_REPLAY_STAMPS_CHECKED.
+ */
+int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, double max_gap_s, char *err,
+                        size_t err_size);
+/**
+ * The warning of info, psd and allan for n time stamps in bursts (either
+ * kind of hx_stamp_bursts, with the navigator's default time jump): "cmd:
+ * warning: PATH: the time stamps come in bursts (...): ...; WHAT: leave the
+ * time column out and give --input-rate N (...)". what: what the wrong rate
+ * makes of the command's output. 1 when warned, else 0.
+ */
+int hx_nav_bursts_warn(const char *cmd, const char *path, const int64_t *t_ns, size_t n, const char *what);
 
 /**
  * Replay one log through the Linux port into a navigator, sample by sample.

@@ -850,6 +850,13 @@ awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", 
 expect_exit 0 "a static log stamped in bursts, read as us" "$H" allan "$T/touch_burst.csv" --no-sim --quiet --units time=us
 if grep -q "are the time stamps in\|look like" "$T/err"; then fail "allan: stamps in bursts told a time unit: $(cat "$T/err")"; else
     pass "allan: stamps in bursts (100 Hz over the log) told no time unit"; fi
+# ... but tau was read at 200 kHz with only "intervals differ from 1/rate"; a warning now names the rate over the span
+# and --input-rate (the units review, 2026-11-30; exit 0 as before)
+expect_err "the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the .* samples span .* s, 100 Hz; tau, sigma_v and the profile are read at 2e+05 Hz, not the sampling rate: leave the time column out and give --input-rate 100 (docs/harness.md, \"Time stamps in bursts\")" \
+    "allan: stamps in bursts warned, 100 Hz and --input-rate named"
+# with --rate the analysis takes the rate given: no such warning
+expect_exit 0 "the same log analysed at --rate 100" "$H" allan "$T/touch_burst.csv" --no-sim --quiet --units time=us --rate 100
+grep -q "come in bursts" "$T/err" && fail "allan --rate: stamps in bursts still warned" || pass "allan --rate 100: no burst warning"
 # ... and with --profile the warning was followed by "no identification for ax (too little data?)", sending the user
 # to the record's length; the error now names the time unit as the likely cause (a user review, 2026-11-29)
 expect_exit 1 "a static log with its time in milliseconds, a profile" "$H" allan "$T/touch_ms.csv" --no-sim --quiet \

@@ -95,6 +95,19 @@ if grep -q "are the time stamps in\|look like" "$T/err"; then fail "info: stamps
     pass "info: stamps in bursts (400 Hz over the log) told no time unit"; fi
 json "$T/burst_us.json" 'j["units_problem"] is None' && pass "info --json: stamps in bursts, units_problem null" ||
     fail "info --json: stamps in bursts, units_problem $(grep units_problem "$T/burst_us.json")"
+# ... but its rate line (200000 Hz, 1 / the median interval) was printed without a word; a warning now names the
+# rate over the span and the --input-rate remedy, replay's refusal (the units review, 2026-11-30; exit 0 as before)
+expect_err "info: warning: $T/burst_us.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; the rate line is not the sampling rate: leave the time column out and give --input-rate 400 (docs/harness.md, \"Time stamps in bursts\")" \
+    "info: stamps in bursts warned, 400 Hz and --input-rate named"
+# one stamp shared by each packet of 4 samples: 100 Hz from the stamps, the same warning for the other kind
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000, $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/shared_us.csv"
+expect_exit 0 "info on samples sharing a stamp" "$H" info "$T/shared_us.csv" --units time=us
+expect_err "the time stamps come in bursts (samples that share one stamp?): 1 / their median interval gives 100 Hz, but the 16539 samples span 41.34 s, 400 Hz; the rate line is not the sampling rate: leave the time column out and give --input-rate 400" \
+    "info: samples sharing a stamp warned, 400 Hz named"
+# the evenly stamped walk and the bundled one: no such warning
+expect_exit 0 "info on the bundled walk" "$H" info vectors/walk.bin
+grep -q "come in bursts" "$T/err" && fail "info: the bundled walk warned of bursts" || pass "info: the bundled walk, no burst warning"
 # one stamp for each packet of 100 samples, 2 s apart (50 Hz over the log): "the samples are 2 s apart (0.5 Hz): are
 # the time stamps in seconds? (they look like milliseconds, a 500 Hz log: give --units time=ms)" until then too
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", int(i / 100) * 2, $2, $3, $4, $5, $6, $7 }' \

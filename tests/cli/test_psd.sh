@@ -385,6 +385,12 @@ awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", 
 expect_exit 0 "stamps in bursts, read as us" "$H" psd "$T/burst_us.csv" --units time=us
 if grep -q "are the time stamps in\|look like" "$T/err"; then fail "psd: stamps in bursts told a time unit: $(cat "$T/err")"; else
     pass "psd: stamps in bursts (400 Hz over the log) told no time unit"; fi
+# ... but its frequencies, read at 200 kHz, were given with only "intervals differ ...: Welch assumes uniform
+# sampling"; a warning now names the rate over the span and --input-rate (the units review, 2026-11-30; exit 0)
+expect_err "psd: warning: $T/burst_us.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; the frequencies are read at 2e+05 Hz, not the sampling rate: leave the time column out and give --input-rate 400 (docs/harness.md, \"Time stamps in bursts\")" \
+    "psd: stamps in bursts warned, 400 Hz and --input-rate named"
+expect_exit 0 "psd of the bundled walk" "$H" psd vectors/walk.bin
+grep -q "come in bursts" "$T/err" && fail "psd: the bundled walk warned of bursts" || pass "psd: the bundled walk, no burst warning"
 
 O=$(data openshoe_c_820hz/OpenShoeDataSet.txt)
 if [ -n "$O" ]; then

@@ -825,9 +825,12 @@ expect_err "are the time stamps in nanoseconds? (they look like milliseconds: gi
 # 2026-11-30); the too-fast error needs the log's span to be too short as well
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 16000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_burst_us.csv"
-expect_exit 0 "stamps in bursts, read as us" "$H" replay "$T/in_burst_us.csv" --quiet --units time=us
+# (exit 0 until the burst refusal below, which such a log now meets instead: still no time unit)
+expect_exit 1 "stamps in bursts, read as us" "$H" replay "$T/in_burst_us.csv" --quiet --units time=us
 if grep -q "are the time stamps in" "$T/err"; then fail "stamps in bursts (250 Hz over the log) told they are too fast"; else
     pass "stamps in bursts (250 Hz over the log): no time unit questioned"; fi
+expect_err "the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 2998 samples span 11.98 s, 250.1 Hz;" \
+    "stamps in bursts (250 Hz over the log): refused as bursts, 250 Hz from the span"
 # ... and resampled with --rate: the resampler takes the input as uniform at 1 / its median interval (5 us, 200 kHz),
 # so its low-pass, 40 times the rate ratio of samples long, smeared seconds of the walk into each output: exit 0 and
 # 0 strides (the walk of vectors/walk.bin stamped so, 4 samples every 10 ms, 400 Hz over the log); one stamp shared by
@@ -855,6 +858,45 @@ expect_exit 0 "the remedy: no time column, --input-rate 400 --rate 100" "$H" rep
 expect_exit 0 "the walk stamped evenly at 400 Hz, --rate 100" "$H" replay "$T/bw_even.csv" --quiet --rate 100 --out "$T/bw_even_traj.csv"
 cmp -s "$T/bw_not_traj.csv" "$T/bw_even_traj.csv" && pass "the remedy gives the evenly stamped walk's trajectory" ||
     fail "the remedy's trajectory differs from the evenly stamped walk's"
+# ... and without --rate: the stance detector took 1 / the median interval (5 us) for the period, 200 kHz, and the
+# walk replayed with exit 0 and 0 strides; its ring warning named --rate, which then refused the log, so the remedy
+# was two steps away (the units review, 2026-11-30). Now refused before the run with --rate's cause and remedy (one
+# test, hx_stamp_bursts), no trajectory written, an earlier one kept
+echo "an earlier trajectory" > "$T/bw_keep.csv"
+expect_exit 1 "stamps in bursts, no --rate" "$H" replay "$T/bw_burst.csv" --quiet --units time=us --out "$T/bw_keep.csv"
+expect_err "replay: error: $T/bw_burst.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; navigation needs each sample's own time: leave the time column out and give --input-rate 400 (docs/harness.md, \"Time stamps in bursts\")" \
+    "stamps in bursts, no --rate: refused, the cause and --input-rate named"
+grep -q "stance detector's ring" "$T/err" && fail "stamps in bursts: the ring warning (--rate) still given" ||
+    pass "stamps in bursts: no ring warning naming --rate"
+[ "$(cat "$T/bw_keep.csv")" = "an earlier trajectory" ] && pass "stamps in bursts: an earlier --out kept" ||
+    fail "stamps in bursts: the earlier --out was overwritten"
+# the remedy followed: no time column and --input-rate 400 give the evenly stamped walk's trajectory
+expect_exit 0 "the remedy without --rate: no time column, --input-rate 400" "$H" replay "$T/bw_not.csv" --quiet \
+    --input-rate 400 --out "$T/bw_not_full.csv"
+expect_exit 0 "the walk stamped evenly at 400 Hz" "$H" replay "$T/bw_even.csv" --quiet --out "$T/bw_even_full.csv"
+cmp -s "$T/bw_not_full.csv" "$T/bw_even_full.csv" && pass "the remedy without --rate gives the evenly stamped walk's trajectory" ||
+    fail "the remedy's trajectory (no --rate) differs from the evenly stamped walk's"
+# one stamp shared by each packet of 4 samples: 3 of 4 samples repeat the stamp before them, which the coarse-stamps
+# note already says with the --input-rate remedy (exit 0, as before); the note's causes now name packets too
+expect_exit 0 "samples sharing a stamp, no --rate" "$H" replay "$T/bw_shared.csv" --units time=us --out /dev/null
+expect_out "75.0 % of the samples repeat the time stamp before them" "samples sharing a stamp: the coarse-stamps note"
+expect_out "one stamp for each packet of samples?" "samples sharing a stamp: the note names packets"
+grep -q "come in bursts" "$T/err" && fail "samples sharing a stamp refused as bursts without --rate" ||
+    pass "samples sharing a stamp: no burst refusal without --rate"
+# no burst refusal for the cases the test keeps apart: a third of the samples lost in small gaps (one of every 3
+# dropped: the median interval is still one period, 2/3 of its count over the span) and a quarter of the stamps
+# repeated (every 4th sample stamped as the one before it)
+awk -F, 'NR == 1 { print; next } (NR - 2) % 3 != 2 { printf "%.5f,%s,%s,%s,%s,%s,%s\n", (NR - 2) / 400, $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/bw_lost3.csv"
+expect_exit 0 "a third of the samples lost in small gaps" "$H" replay "$T/bw_lost3.csv" --quiet --out /dev/null
+grep -q "come in bursts" "$T/err" && fail "a third of the samples lost: refused as bursts" ||
+    pass "a third of the samples lost: no burst refusal"
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%.5f,%s,%s,%s,%s,%s,%s\n", (i % 4 == 3 ? i - 1 : i) / 400, $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/bw_rep4.csv"
+expect_exit 0 "a quarter of the stamps repeated" "$H" replay "$T/bw_rep4.csv" --out /dev/null
+grep -q "come in bursts" "$T/err" && fail "a quarter of the stamps repeated: refused as bursts" ||
+    pass "a quarter of the stamps repeated: no burst refusal"
+expect_out "25.0 % of the samples repeat the time stamp before them" "a quarter of the stamps repeated: the coarse-stamps note, as before"
 # a t column that counts samples (0, 1, 2, ...), as a logger's sample number often does: it was told only to
 # divide by 1000 (right for a 1 kHz log in ms, wrong for a 250 Hz one); the remedy for a counter, leaving the
 # column out and giving --input-rate, is named too (the gait review, 2026-11-30)
