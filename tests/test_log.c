@@ -1890,7 +1890,7 @@ static void test_stamp_bursts(void **state)
     assert_int_equal(hx_stamp_bursts(t, N, 0.2, &b), HX_BURSTS_SHARED);
     assert_true(b.median_hz == 100.0);
     FNAV_ASSERT_CLOSE(b.span_s, 9.99, 1e-12, 0.0);
-    assert_non_null(strstr(hx_bursts_text(&b, "W", "S", msg, sizeof msg), "(samples that share one stamp?)"));
+    assert_non_null(strstr(hx_bursts_text(&b, "W", "S", msg, sizeof msg), "(samples that share one stamp: one per packet, or stamps coarser than the sampling?)"));
     /* 400 Hz, a third of the samples lost in gaps of 27.5 ms (10 of every
      * 30): the median interval stays 2.5 ms, and 2/3 of its count is no
      * burst */

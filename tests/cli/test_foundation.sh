@@ -103,7 +103,7 @@ expect_err "info: warning: $T/burst_us.csv: the time stamps come in bursts (samp
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000, $2, $3, $4, $5, $6, $7 }' \
     "$T/bw.csv" > "$T/shared_us.csv"
 expect_exit 0 "info on samples sharing a stamp" "$H" info "$T/shared_us.csv" --units time=us
-expect_err "the time stamps come in bursts (samples that share one stamp?): 1 / their median interval gives 100 Hz, but the 16539 samples span 41.34 s, 400 Hz; the rate line is not the sampling rate: leave the time column out and give --input-rate 400" \
+expect_err "the time stamps come in bursts (samples that share one stamp: one per packet, or stamps coarser than the sampling?): 1 / their median interval gives 100 Hz, but the 16539 samples span 41.34 s, 400 Hz; the rate line is not the sampling rate: leave the time column out and give --input-rate 400" \
     "info: samples sharing a stamp warned, 400 Hz named"
 # the evenly stamped walk and the bundled one: no such warning
 expect_exit 0 "info on the bundled walk" "$H" info vectors/walk.bin

@@ -848,7 +848,7 @@ expect_exit 1 "stamps in bursts, --rate 100" "$H" replay "$T/bw_burst.csv" --qui
 expect_err "replay: error: --rate: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; resampling needs each sample's own time: leave the time column out and give --input-rate 400 (docs/harness.md, \"--rate HZ (resampling)\")" \
     "stamps in bursts, --rate: refused, the cause and --input-rate named"
 expect_exit 1 "samples sharing a stamp, --rate 50" "$H" replay "$T/bw_shared.csv" --quiet --units time=us --rate 50
-expect_err "the time stamps come in bursts (samples that share one stamp?): 1 / their median interval gives 100 Hz, but the 16539 samples span 41.34 s, 400 Hz" \
+expect_err "the time stamps come in bursts (samples that share one stamp: one per packet, or stamps coarser than the sampling?): 1 / their median interval gives 100 Hz, but the 16539 samples span 41.34 s, 400 Hz" \
     "samples sharing a stamp, --rate: refused (one sample of four was kept)"
 expect_exit 1 "convert --rate on stamps in bursts" "$H" convert "$T/bw_burst.csv" "$T/bw_c.csv" --units time=us --rate 100
 expect_err "leave the time column out and give --input-rate 400 (docs/harness.md" "convert --rate: the same refusal, in full"
