@@ -818,21 +818,7 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
     int k;
     for (k = 0; k < 7; k++) {
         if (m->col[k] >= 0) {
-            const char *s = f[m->col[k]];
-            size_t len;
-            while (*s == ' ' || *s == '\t' || *s == '"' || *s == '\'') {
-                s++;
-            }
-            len = strlen(s);
-            while (len > 0 && (s[len - 1] == ' ' || s[len - 1] == '\t' || s[len - 1] == '"' ||
-                               s[len - 1] == '\'' || s[len - 1] == '\r')) {
-                len--;
-            }
-            if (len >= sizeof l->names[k]) {
-                len = sizeof l->names[k] - 1;
-            }
-            memcpy(l->names[k], s, len);
-            l->names[k][len] = '\0';
+            hx_name_bare(f[m->col[k]], l->names[k], sizeof l->names[k]);
         }
     }
     if (!(l->units_given & 1) && m->unit[0] != HX_UNIT_NONE) {

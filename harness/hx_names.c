@@ -295,8 +295,7 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
     return m->ok;
 }
 
-/* a name as the header spells it, without blanks and quotes around it */
-static void bare(const char *name, char *out, size_t size)
+void hx_name_bare(const char *name, char *out, size_t size)
 {
     size_t len;
     while (*name == ' ' || *name == '\t' || *name == '"' || *name == '\'') {
@@ -326,7 +325,7 @@ const char *hx_names_give(const hx_names_match_t *m, char *const *f, char *buf, 
     map[0] = '\0';
     for (k = 0; k < 7; k++) {
         if (m->ncand[k] == 1) {
-            bare(f[m->cand[k][0]], name, sizeof name);
+            hx_name_bare(f[m->cand[k][0]], name, sizeof name);
             cat(map, sizeof map, map[0] != '\0' ? "," : "");
             cat(map, sizeof map, k_keys[k]);
             cat(map, sizeof map, "=");
@@ -381,7 +380,7 @@ const char *hx_names_unmatched(const hx_names_match_t *m, char *const *f, int ti
         }
         cat(buf, size, item);
         for (j = 0; j < count && j < 3; j++) {
-            bare(f[list[j]], name, sizeof name);
+            hx_name_bare(f[list[j]], name, sizeof name);
             cat(buf, size, j > 0 ? ", " : "");
             cat(buf, size, name);
         }
@@ -405,7 +404,7 @@ const char *hx_names_near(const hx_names_match_t *m, char *const *f, char *buf, 
         total += m->nnear[k];
         for (j = 0; j < m->nnear[k] && j < 3; j++) {
             if (shown < 4) {
-                bare(f[m->near[k][j]], name, sizeof name);
+                hx_name_bare(f[m->near[k][j]], name, sizeof name);
                 cat(buf, size, shown > 0 ? ", " : "");
                 cat(buf, size, name);
                 shown++;

@@ -41,6 +41,10 @@ typedef struct {
  *  a stem and an axis (or a time word) are among the words. Returns kind. */
 hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c);
 
+/** A name as the header spells it, without the blanks, tabs, quotes and
+ *  CR around it, into out (cut to size). */
+void hx_name_bare(const char *name, char *out, size_t size);
+
 /** The result of matching a header (hx_names_match). */
 typedef struct {
     int ok;             /**< 1: each of ax..gz one column, t at most one, one unit per quantity */
