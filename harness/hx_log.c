@@ -2310,11 +2310,12 @@ int hx_stamp_bursts(const int64_t *t_ns, size_t n, double max_gap_s, hx_bursts_t
 const char *hx_bursts_text(const hx_bursts_t *b, const char *needs, const char *section, char *msg, size_t size)
 {
     snprintf(msg, size,
-             "the time stamps come in bursts (%s): 1 / their median interval gives %.6g Hz, but the %zu samples span "
-             "%.4g s%s, %.4g Hz; %s: leave the time column out and give --input-rate %.4g (docs/harness.md, \"%s\")",
+             "the time stamps come in bursts (%s): 1 / their median interval gives %.6g Hz, but the %s%zu samples "
+             "span %.4g s%s, %.4g Hz; %s: leave the time column out and give --input-rate %.4g (docs/harness.md, "
+             "\"%s\")",
              b->kind == HX_BURSTS_CLOSE ? "samples stamped close together as a logger reads them?"
                                         : "samples that share one stamp: one per packet, or stamps coarser than the sampling?",
-             b->median_hz, b->n, b->span_s, b->segs > 1u ? " between the time jumps" : "", b->span_hz, needs,
+             b->median_hz, b->first ? "first " : "", b->n, b->span_s, b->segs > 1u ? " between the time jumps" : "", b->span_hz, needs,
              b->span_hz, section);
     return msg;
 }

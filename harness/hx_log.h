@@ -293,6 +293,7 @@ typedef enum {
 typedef struct {
     hx_bursts_kind_t kind;
     size_t n;         /**< the samples */
+    int first;        /**< 1: n are a log's first samples, not all of them (the message says so) */
     size_t segs;      /**< the segments between time jumps */
     double median_hz; /**< 1 / the median interval of the strictly increasing stamps (0: fewer than 2) */
     double span_s;    /**< the segments' spans, summed */

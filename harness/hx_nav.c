@@ -1403,34 +1403,33 @@ int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, doubl
     /* Stamps in bursts make the detector's rate 1 / their median interval
      * (5 us: "200 kHz") and the navigation meaningless; until 2026-11-30
      * plain replay ran such a walk with exit 0 and 0 strides, where --rate
-     * refused it. The whole log's stamps, read once before the run (the
-     * test needs its span); a read error stops the collection there, and
-     * the replay reports it as before. */
+     * refused it. The log's first HX_STAMPS_PROBE_N stamps, read before
+     * the run: the detector's rate comes from its first intervals, and the
+     * whole log was read twice (and its stamps held) until the review of
+     * 2026-11-30; a read error stops the collection there, and the replay
+     * reports it as before. */
     hx_reader_t *r = hx_reader_open(path, fmt, in_rate, err, err_size);
-    int64_t *t = NULL;
-    size_t n = 0, cap = 0;
+    int64_t *t;
+    size_t n = 0;
     fnav_sample_t s;
     hx_bursts_t bu;
-    int kind, rc = 0;
+    int kind, rc = 0, more = 0;
     err[0] = '\0';
     if (r == NULL) {
         return 0; /* the replay's own open says why */
     }
+    t = (int64_t *)malloc(HX_STAMPS_PROBE_N * sizeof *t);
+    if (t == NULL) {
+        hx_reader_close(r);
+        return 0; /* no check: the replay runs as before */
+    }
     memset(&s, 0, sizeof s);
-    while (hx_reader_next(r, &s) == FNAV_OK) {
-        if (n == cap) {
-            const size_t nc = cap > 0u ? 2u * cap : 65536u;
-            int64_t *nt = (int64_t *)realloc(t, nc * sizeof *t);
-            if (nt == NULL) {
-                break; /* the stamps so far */
-            }
-            t = nt;
-            cap = nc;
-        }
+    while ((more = hx_reader_next(r, &s) == FNAV_OK) != 0 && n < HX_STAMPS_PROBE_N) {
         t[n++] = s.t_ns;
     }
     hx_reader_close(r);
     kind = hx_stamp_bursts(t, n, max_gap_s, &bu);
+    bu.first = more; /* the log goes on past the stamps tested */
     if (kind == HX_BURSTS_CLOSE) {
         char why[400];
         snprintf(err, err_size, "%s: %s", path,

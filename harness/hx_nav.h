@@ -240,14 +240,20 @@ const char *hx_units_fix_dps(const hx_csv_layout_t *csv, char *buf, size_t size)
                                      are checked against its frames: fnav_nav_frame_t has no event times) */
 #define HX_REPLAY_UNITS_OPT 0x8u /**< hx_nav_replay: the command takes --units: the units check's remedy for
                                       the interchange CSV names it (hx_units_problem) */
+/** The samples hx_nav_stamps_check reads at most: a walk of minutes whole,
+ *  and the rate over a longer log's first 65,536 to 1 part in 10^4 for
+ *  packets of 4 samples (512 KiB of stamps). */
+#define HX_STAMPS_PROBE_N 65536
+
 #define HX_REPLAY_STAMPS_CHECKED 0x10u /**< hx_nav_replay: the caller ran hx_nav_stamps_check on the log
                                             already (before opening its outputs) */
 
 /**
  * Refuse a log whose time stamps come in bursts (HX_BURSTS_CLOSE of
- * hx_stamp_bursts over all its stamps, read once: samples stamped
+ * hx_stamp_bursts over its first HX_STAMPS_PROBE_N stamps: samples stamped
  * microseconds apart as a logger reads them, whose median interval the
- * stance detector would take for the period): -1 with the cause and the
+ * stance detector takes for the period from its first intervals,
+ * FNAV_STANCE_RATE_PROBE): -1 with the cause and the
  * --input-rate remedy in err, else 0 (a log that cannot be opened too: the
  * replay's own open says why). Samples that share one stamp are left to
  * the coarse-stamps note (docs/harness.md, "Time stamps in bursts").

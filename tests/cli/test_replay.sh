@@ -870,6 +870,15 @@ grep -q "stance detector's ring" "$T/err" && fail "stamps in bursts: the ring wa
     pass "stamps in bursts: no ring warning naming --rate"
 [ "$(cat "$T/bw_keep.csv")" = "an earlier trajectory" ] && pass "stamps in bursts: an earlier --out kept" ||
     fail "stamps in bursts: the earlier --out was overwritten"
+# a log longer than the stamps the check reads (HX_STAMPS_PROBE_N, 65,536): its first samples decide, as the
+# detector's rate comes from its first intervals; the whole log was read twice before the run, its stamps held
+# (the review of 2026-11-30)
+awk -F, 'NR == 1 { print; next } { r[NR - 2] = $2 "," $3 "," $4 "," $5 "," $6 "," $7 } END {
+    for (i = 0; i < 70000; i++) printf "%d,%s\n", (int(i / 4) + 1) * 10000 + 5 * (i % 4), r[i % (NR - 1)] }' \
+    "$T/bw.csv" > "$T/bw_long.csv"
+expect_exit 1 "stamps in bursts, a log of 70,000 samples" "$H" replay "$T/bw_long.csv" --quiet --units time=us --out "$T/bw_long_traj.csv"
+expect_err "1 / their median interval gives 200000 Hz, but the first 65536 samples span 163.8 s, 400 Hz; navigation needs each sample's own time: leave the time column out and give --input-rate 400" \
+    "stamps in bursts, a long log: its first 65,536 samples tested, said so"
 # the remedy followed: no time column and --input-rate 400 give the evenly stamped walk's trajectory
 expect_exit 0 "the remedy without --rate: no time column, --input-rate 400" "$H" replay "$T/bw_not.csv" --quiet \
     --input-rate 400 --out "$T/bw_not_full.csv"
