@@ -631,10 +631,14 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     int64_t res_ns = 0; /* the stamps' resolution so far: the gcd of the intervals that advance */
     long irregular = 0;
     double stamp_rate; /* the rate the stamps are checked against: the log's own, not an overriding --rate */
-    int64_t *stamps = NULL; /* every stamp, for the test of stamps in bursts (none: out of memory, no test) */
-    size_t n_stamps = 0, cap_stamps = 0;
+    /* the first HX_STAMPS_PROBE_N stamps, for the test of stamps in bursts
+     * as replay's (none: --rate, or out of memory); a streaming command,
+     * it held every stamp until the review of 2026-11-30 */
+    int64_t *stamps = rate_opt > 0.0 ? NULL : (int64_t *)malloc(HX_STAMPS_PROBE_N * sizeof *stamps);
+    size_t n_stamps = 0;
     int i, rc = 0;
     if (r == NULL) {
+        free(stamps);
         return -1;
     }
     snprintf(R->sensor, sizeof R->sensor, "%s", hx_reader_meta(r)->sensor);
@@ -683,22 +687,8 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
             t_first = s.t_ns;
         }
         t_prev = s.t_ns;
-        if (!(rate_opt > 0.0) && (stamps != NULL || R->n == 0)) {
-            if (n_stamps == cap_stamps) {
-                const size_t nc = cap_stamps > 0u ? 2u * cap_stamps : 65536u;
-                int64_t *ns = (int64_t *)realloc(stamps, nc * sizeof *ns);
-                if (ns == NULL) {
-                    free(stamps);
-                    stamps = NULL;
-                    n_stamps = cap_stamps = 0;
-                } else {
-                    stamps = ns;
-                    cap_stamps = nc;
-                }
-            }
-            if (stamps != NULL) {
-                stamps[n_stamps++] = s.t_ns;
-            }
+        if (stamps != NULL && n_stamps < HX_STAMPS_PROBE_N) {
+            stamps[n_stamps++] = s.t_ns;
         }
         motion_push(R, &s);
         for (i = 0; i < 3; i++) {
@@ -747,7 +737,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         char what[96];
         snprintf(what, sizeof what, "tau, sigma_v and the profile are read at %.4g Hz, not the sampling rate",
                  R->rate_hz);
-        hx_nav_bursts_warn(CMD, path, stamps, n_stamps, what);
+        hx_nav_bursts_warn(CMD, path, stamps, n_stamps, (size_t)R->n > n_stamps, what);
     }
     free(stamps);
     if (rate_opt > 0.0 && stamp_rate > 0.0 && fabs(rate_opt / stamp_rate - 1.0) > 1e-3) {

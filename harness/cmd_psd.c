@@ -813,7 +813,7 @@ int hx_cmd_psd(int argc, char **argv)
     {
         char what[96];
         snprintf(what, sizeof what, "the frequencies are read at %.4g Hz, not the sampling rate", rate);
-        hx_nav_bursts_warn(CMD, a.pos[0], log.t_ns, log.n, what);
+        hx_nav_bursts_warn(CMD, a.pos[0], log.t_ns, log.n, 0, what);
     }
     if (hx_arg(&a, "--input-rate") == NULL) {
         /* a time column in milliseconds (100 Hz read as 0.1 Hz) was said

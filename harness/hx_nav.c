@@ -1383,7 +1383,8 @@ static int stamps_never_advance(const fnav_nav_stats_t *st)
     return st->samples > 1u && st->duplicates + 1u >= st->samples;
 }
 
-int hx_nav_bursts_warn(const char *cmd, const char *path, const int64_t *t_ns, size_t n, const char *what)
+int hx_nav_bursts_warn(const char *cmd, const char *path, const int64_t *t_ns, size_t n, int first,
+                       const char *what)
 {
     /* info, psd and allan printed 1 / the median interval of such stamps
      * (200 kHz for a 400 Hz walk) as the rate without a word until
@@ -1393,6 +1394,7 @@ int hx_nav_bursts_warn(const char *cmd, const char *path, const int64_t *t_ns, s
     if (hx_stamp_bursts(t_ns, n, (double)fnav_nav_config_default.max_gap_s, &bu) <= 0) {
         return 0;
     }
+    bu.first = first;
     hx_warn(cmd, "%s: %s", path, hx_bursts_text(&bu, what, "Time stamps in bursts", msg, sizeof msg));
     return 1;
 }

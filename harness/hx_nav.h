@@ -266,9 +266,11 @@ int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, doubl
  * kind of hx_stamp_bursts, with the navigator's default time jump): "cmd:
  * warning: PATH: the time stamps come in bursts (...): ...; WHAT: leave the
  * time column out and give --input-rate N (...)". what: what the wrong rate
- * makes of the command's output. 1 when warned, else 0.
+ * makes of the command's output. first: the n are the log's first stamps,
+ * not all (the message says so). 1 when warned, else 0.
  */
-int hx_nav_bursts_warn(const char *cmd, const char *path, const int64_t *t_ns, size_t n, const char *what);
+int hx_nav_bursts_warn(const char *cmd, const char *path, const int64_t *t_ns, size_t n, int first,
+                       const char *what);
 
 /**
  * Replay one log through the Linux port into a navigator, sample by sample.
