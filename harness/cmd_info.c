@@ -374,7 +374,10 @@ int hx_cmd_info(int argc, char **argv)
            "%.1f s\n",
            in.g_vec[in.g_axis] >= 0.0 ? '-' : '+', 'x' + in.g_axis, in.g_vec[in.g_axis] >= 0.0 ? '+' : '-',
            'x' + in.g_axis, in.g_mag, in.g_mag / 9.80665, in.g_vec[0], in.g_vec[1], in.g_vec[2], in.still_t_s);
-    printf("            gyro (%.5f, %.5f, %.5f) rad/s\n", in.gyro_rest[0], in.gyro_rest[1], in.gyro_rest[2]);
+    /* in deg/s as well, the unit of the peak line and of a data sheet's bias */
+    printf("            gyro (%.5f, %.5f, %.5f) rad/s = (%.3f, %.3f, %.3f) deg/s\n", in.gyro_rest[0], in.gyro_rest[1],
+           in.gyro_rest[2], in.gyro_rest[0] * 57.29577951308232, in.gyro_rest[1] * 57.29577951308232,
+           in.gyro_rest[2] * 57.29577951308232);
     if (in.units_bad) {
         printf("units       NOT SI: %s\n", in.units);
     }

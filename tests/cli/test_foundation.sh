@@ -182,6 +182,10 @@ expect_exit 0 "info walk.bin" "$H" info vectors/walk.bin --json "$T/info.json"
 expect_out "at rest     gravity along -z (+z up)" "gravity points down, against the specific force"
 expect_out "samples     16539" "walk.bin sample count"
 expect_out "duplicates  205" "walk.bin duplicates (MANIFEST: 205)"
+# the gyro at rest in deg/s too, the peak line's unit (rad/s alone until
+# 2026-11-30), each the JSON's rad/s times 180/pi
+degs=$("${PY:-/usr/bin/python3}" -c 'import json,math,sys; g=json.load(open(sys.argv[1]))["gyro_at_rest_rps"]; print("(%s) deg/s" % ", ".join("%.3f" % math.degrees(x) for x in g))' "$T/info.json")
+expect_out "rad/s = $degs" "the gyro at rest in deg/s as well"
 if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['samples']==16539 and d['duplicates']==205 and d['gravity_axis']=='-z' and d['up_axis']=='+z'" "$T/info.json"; then
     pass "info --json is valid and consistent"
 else
