@@ -40,7 +40,7 @@ Sensor errors. The gyro's turn-on bias b (the mean over the first still
 second) would be scaled by s with the motion: (1 - s) b is added back. The
 log's own noise shrinks by s (gyro) and s^2 (accelerometer), and the
 resampler turns it into noise below s times the Nyquist frequency: white
-noise is added per channel (seeded) so that each channel's standard
+noise is added per channel (seeded by s) so that each channel's standard
 deviation over the first still second (1/s seconds in the copy) equals the
 original's. The noise's level matches, not its spectrum (a white floor plus
 the slowed original's band-limited part).
@@ -59,18 +59,29 @@ threshold`):
 - swing ZUPT: share of the frames of the original's swings (its stride
   CSV's swing_start_s..swing_end_s, mapped to t' = t0 + (t - t0) / s) that
   have a ZUPT; swings hit: those with a ZUPT in their middle 80 %; v at ZUPT:
-  the largest true speed at such a ZUPT, s times the original replay's
-  speed at s t;
+  the largest true speed at a ZUPT in those swings' frames, s times the
+  original replay's speed at s t;
 - closure: return_error_3d_m (closed walks; footprint walk 31 is not one);
 - distance: distance_m, and against the walk as recorded;
 - median stride length and median height_change_m of the stride CSV.
+After each walk's table, "SHOE at the mid-swing ZUPTs": the ZUPT runs in
+the middle 80 % of a swing at a true speed over 0.3 m/s, their length in
+samples, where in the swing, and at each run's smallest statistic the SHOE
+statistic's two terms (numpy, the detector's formula, window and weights),
+|w| and ||f| - g|, and the same at that instant of the walk at s = 1
+(medians over the runs).
+
+What it does not model: a slow walker does not replay a normal swing
+slower (shorter strides, a lower foot, a flatter landing). The probe shows
+where the detector is fragile, not how often a real slow walk gets there.
 
 Usage: /usr/bin/python3 scripts/probe_slow.py [LOG...] [--factors 1,0.85,0.7,0.6,0.5]
        [--threshold] [--tmp DIR] [--keep]
 Without LOG: openshoe_gx2 Measurement_100521_2 and _3, openshoe_c_820hz,
 footprint walk 31 and the x-io short walk under $DATA (default
-../shared/data). HARNESS=path overrides bin/harness. About 1.5 min for
-the five walks and five factors, 2.5 min with --threshold (2 cores).
+../shared/data). HARNESS=path overrides bin/harness. About 25 s for the
+five walks and five factors, 36 s with --threshold. --keep (or --tmp)
+keeps the copies, DIR/NAME.sS.csv, for replays by hand.
 """
 import json
 import os
@@ -82,6 +93,7 @@ import time
 from fractions import Fraction
 
 import numpy as np
+from numpy.lib.stride_tricks import sliding_window_view
 from scipy.signal import resample_poly
 
 H = os.environ.get('HARNESS', 'bin/harness')
@@ -188,6 +200,61 @@ def swing_stats(st0, traj0, traj, s, t0):
     return (hit_frames / tot if tot else None), hits, vmax
 
 
+def shoe_parts(d, g=9.80665, sigma_a=0.01, sigma_g=np.radians(0.1), window_s=0.025):
+    """The SHOE statistic's two terms per sample (docs/navigation.md, "Stance
+    detector"; Skog et al. 2010, eq. 13): 1/W sum |f_j - g u|^2 / sigma_a^2 and
+    1/W sum |w_j|^2 / sigma_g^2 over the centred window of W samples (25 ms,
+    odd), u the window's mean specific force direction; footnav's default
+    weights and gravity. A numpy computation, not the C detector."""
+    dt = np.median(np.diff(d[:, 0]))
+    W = int(round(window_s / dt))
+    W += W % 2 == 0
+    n, h = len(d), W // 2
+    fw = sliding_window_view(d[:, 1:4], (W, 3)).reshape(-1, W, 3)
+    ww = sliding_window_view(d[:, 4:7], (W, 3)).reshape(-1, W, 3)
+    u = fw.mean(1)
+    u /= np.linalg.norm(u, axis=1)[:, None]
+    ta, tg = np.full(n, np.nan), np.full(n, np.nan)
+    ta[h:n - h] = np.mean(np.sum((fw - g * u[:, None, :]) ** 2, 2), 1) / sigma_a ** 2
+    tg[h:n - h] = np.mean(np.sum(ww ** 2, 2), 1) / sigma_g ** 2
+    return ta, tg
+
+
+def explain(st0, traj0, traj, d, parts1, d1, s, t0):
+    """The ZUPT runs in the middle 80 % of the original's swings (mapped by
+    1/s) where the true speed (s times the original's) exceeds 0.3 m/s: their
+    length, their phase in the swing, and at each run's smallest T the
+    statistic's terms, |w| and ||f| - g| in the copy and at the same instant
+    of the walk at s = 1 (d1, parts1)."""
+    if st0 is None or traj is None:
+        return None
+    tt, z = traj['t'], traj['zupt'] > 0
+    sp0 = np.sqrt(traj0['vx'] ** 2 + traj0['vy'] ** 2 + traj0['vz'] ** 2)
+    ta, tg = shoe_parts(d)
+    ta1, tg1 = parts1
+    rows = []
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], z.astype(int), [0]])))
+    for a, b in zip(edges[0::2], edges[1::2]):
+        for sa, sb in zip(st0['swing_start_s'], st0['swing_end_s']):
+            if not (np.isfinite(sa) and np.isfinite(sb)):
+                continue
+            a1, b1 = t0 + (sa - t0) / s, t0 + (sb - t0) / s
+            if tt[a] > a1 + 0.1 * (b1 - a1) and tt[b - 1] < b1 - 0.1 * (b1 - a1):
+                k = np.searchsorted(d[:, 0], tt[a:b])
+                k = k[k < len(d)]
+                i = k[np.nanargmin(ta[k] + tg[k])]
+                tau = t0 + s * (d[i, 0] - t0)
+                v = s * np.interp(tau, traj0['t'], sp0)
+                if v > 0.3:
+                    j = min(np.searchsorted(d1[:, 0], tau), len(d1) - 1)
+                    rows.append((b - a, (d[i, 0] - a1) / (b1 - a1), np.log10(ta[i] + tg[i]), np.log10(ta[i]),
+                                 np.log10(tg[i]), np.linalg.norm(d[i, 4:7]), abs(np.linalg.norm(d[i, 1:4]) - 9.80665),
+                                 v, np.log10(ta1[j] + tg1[j]), np.log10(ta1[j]), np.log10(tg1[j]),
+                                 np.linalg.norm(d1[j, 4:7]), np.linalg.norm(d1[j, 1:4])))
+                break
+    return np.array(rows)
+
+
 def med(st, col):
     if st is None or col not in st.dtype.names:
         return None
@@ -270,8 +337,11 @@ def main():
               'swings hit | v at ZUPT (m/s) | closure 3-D (m) | distance (m) | distance vs recorded | '
               'median stride (m) | median height change (m) | still mean /f/ change (m/s^2) | exit |')
         print('| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |')
-        rng = np.random.default_rng(58)
+        d1 = np.column_stack([tu, du])
+        parts1 = shoe_parts(d1)
+        notes = []
         for s in factors:
+            rng = np.random.default_rng([58, int(round(1000 * s))])  # the same copy whatever the list of factors
             out, sd = slowed(tu, du, downu, s, g, bias_g, sd0, rng)
             p = os.path.join(tmp, '%s.s%.2f.csv' % (name, s))
             np.savetxt(p, out, delimiter=',', header='t,ax,ay,az,gx,gy,gz', comments='', fmt='%.9g')
@@ -286,6 +356,16 @@ def main():
                 rc, j, st, traj, err = replay(p, '.' + det, ex)
                 jr, str_ = rec[det][1], rec[det][2]
                 share, hits, vmax = swing_stats(st0, traj0, traj, s, t0)
+                if det == 'shoe' and s != 1.0:
+                    ex = explain(st0, traj0, traj, out, parts1, d1, s, t0)
+                    if ex is not None and len(ex):
+                        m = np.median(ex, 0)
+                        notes.append('s %.2f: %d ZUPT runs in mid-swing at over 0.3 m/s: %d-%d frames (median %d), '
+                                     'at %.2f-%.2f of the swing; at their smallest T: log10 T %.2f (accelerometer term '
+                                     '%.2f, gyro term %.2f), |w| %.2f rad/s, ||f| - g| %.2f m/s^2, true speed %.2f m/s; '
+                                     'the same instants at s = 1: log10 T %.2f (%.2f, %.2f), |w| %.2f rad/s, |f| %.1f '
+                                     'm/s^2 (medians)' % (s, len(ex), ex[:, 0].min(), ex[:, 0].max(), m[0],
+                                                          ex[:, 1].min(), ex[:, 1].max(), *m[2:]))
                 nsw = int(np.isfinite(st0['swing_start_s']).sum())
                 dist = j.get('distance_m')
                 row = (s, det, fmt(med(st, 'cadence_spm'), '%.1f'),
@@ -305,6 +385,8 @@ def main():
                           'strides %+d -->' % (det, j.get('return_error_3d_m', np.nan) - jr['return_error_3d_m'],
                                                j.get('distance_m', np.nan) - jr['distance_m'],
                                                j.get('strides', 0) - jr['strides']))
+        if notes:
+            print('\nSHOE at the mid-swing ZUPTs (default settings):\n' + '\n'.join(notes))
     print('\n%.0f s' % (time.time() - start))
     if mine and not keep:
         shutil.rmtree(tmp, ignore_errors=True)
