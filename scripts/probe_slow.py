@@ -47,7 +47,9 @@ the slowed original's band-limited part).
 
 Checks printed per walk: at s = 1, the copy's closure and strides against
 the replay of the log as recorded (for a log on a uniform clock the copy is
-the log itself); per s, | mean |f'| - mean |f| | over the first still second
+the log itself); per s, the replayed speed against s times the walk's at s
+t (the median difference where that exceeds 0.5 m/s: a wrong sign or
+scale of the gravity term would show here first); | mean |f'| - mean |f| | over the first still second
 (1/s seconds in the copy; means, not medians: the 820 Hz walk's |f| is
 quantised in steps of 1/300 g) and the noise levels.
 
@@ -171,6 +173,19 @@ def slowed(tu, du, downu, s, g, bias_g, sd0, rng):
     add = np.sqrt(np.maximum(sd0 ** 2 - sd ** 2, 0.0))
     out[:, 1:7] += rng.standard_normal((n, 6)) * add
     return out, sd
+
+
+def speed_check(traj0, traj, s, t0):
+    """Median | |v'(t)| - s |v(t0 + s (t - t0))| | over the frames where the
+    expected speed exceeds 0.5 m/s: the slowed copy's replay against s times
+    the walk's (the transform's end-to-end check; a mid-swing ZUPT raises it)."""
+    if traj is None:
+        return None
+    sp0 = np.sqrt(traj0['vx'] ** 2 + traj0['vy'] ** 2 + traj0['vz'] ** 2)
+    sp = np.sqrt(traj['vx'] ** 2 + traj['vy'] ** 2 + traj['vz'] ** 2)
+    ref = s * np.interp(t0 + s * (traj['t'] - t0), traj0['t'], sp0)
+    m = ref > 0.5
+    return float(np.median(np.abs(sp[m] - ref[m]))) if m.any() else None
 
 
 def swing_stats(st0, traj0, traj, s, t0):
@@ -335,8 +350,9 @@ def main():
                med(st0, 'length_m'), med(st0, 'height_change_m')))
         print('\n| s | detector | cadence (steps/min) | strides (as recorded) | swing frames with ZUPT | '
               'swings hit | v at ZUPT (m/s) | closure 3-D (m) | distance (m) | distance vs recorded | '
-              'median stride (m) | median height change (m) | still mean /f/ change (m/s^2) | exit |')
-        print('| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |')
+              'median stride (m) | median height change (m) | still mean /f/ change (m/s^2) | speed vs s x recorded (m/s) | '
+              'exit |')
+        print('| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |')
         d1 = np.column_stack([tu, du])
         parts1 = shoe_parts(d1)
         notes = []
@@ -376,8 +392,8 @@ def main():
                        fmt(dist, '%.2f'),
                        fmt(None if dist is None else 100 * (dist / jr['distance_m'] - 1), '%+.1f %%'),
                        fmt(med(st, 'length_m'), '%.3f'), fmt(med(st, 'height_change_m'), '%+.4f'),
-                       '%.4f' % dfn, rc)
-                print('| %.2f | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %d |' % row)
+                       '%.4f' % dfn, fmt(speed_check(rec[det][3], traj, s, t0), '%.3f'), rc)
+                print('| %.2f | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %d |' % row)
                 sys.stdout.flush()
                 summary.append((name, *row))
                 if s == 1.0:
