@@ -290,10 +290,14 @@ def main():
         del args[i:i + 2]
     if '--factors' in args:
         i = args.index('--factors')
-        factors = [float(x) for x in args[i + 1].split(',')]
+        try:
+            factors = [float(x) for x in args[i + 1].split(',')]
+        except (IndexError, ValueError):
+            sys.exit('probe_slow.py: --factors takes numbers separated by commas, e.g. 1,0.85,0.7')
         del args[i:i + 2]
-        if any(not 0 < x <= 1 for x in factors):
-            sys.exit('probe_slow.py: factors lie in (0, 1]')
+        # the resampler stretches by a fraction with a denominator up to 100
+        if any(not 0 < x <= 1 or abs(float(Fraction(x).limit_denominator(100)) - x) > 1e-12 for x in factors):
+            sys.exit('probe_slow.py: a factor lies in (0, 1] and is a fraction p/q with q <= 100 (0.85, 0.7, 0.6, ...)')
     if '--threshold' in args:
         extra_det = True
         args.remove('--threshold')
@@ -306,108 +310,108 @@ def main():
     mine = tmp is None
     tmp = tmp or tempfile.mkdtemp(prefix='probe_slow_')
     os.makedirs(tmp, exist_ok=True)
-    start = time.time()
-    dets = [('shoe', ())] + ([('threshold', ('--detector', 'threshold'))] if extra_det else [])
-    summary = []
-    for log in logs:
-        name = os.path.basename(log)
-        closed = 'SensorConnectData' not in name
-        base = os.path.join(tmp, name + '.csv')
-        r = subprocess.run([H, 'convert', log, base], capture_output=True, text=True)
-        if r.returncode:
-            sys.exit('probe_slow.py: %s: convert failed: %s' % (log, r.stderr.strip()))
-        d0 = np.loadtxt(base, delimiter=',', skiprows=1)
-        d0 = d0[increasing(d0[:, 0])]
-        rec = {}
-        for det, ex in dets:
-            rec[det] = replay(base, '.rec.' + det, ex)
-        rc, j0, st0, traj0, _ = rec['shoe']
-        if traj0 is None or not j0:
-            sys.exit('probe_slow.py: %s: the replay as recorded failed' % log)
-        t0 = d0[0, 0]
-        still0 = d0[:, 0] < t0 + STILL_S
-        tr_still = traj0['stance'][traj0['t'] < t0 + STILL_S]
-        if not tr_still.all():
-            print('warning: %s: the first %.1f s is not all stance' % (name, STILL_S))
-        dt = np.median(np.diff(d0[:, 0]))
-        tu = t0 + dt * np.arange(int(np.floor((d0[-1, 0] - t0) / dt)) + 1)
-        du = np.column_stack([np.interp(tu, d0[:, 0], d0[:, c]) for c in range(1, 7)])
-        ttr = traj0['t']
-        ktr = increasing(ttr)
-        down = tilt_down(traj0)
-        downu = np.column_stack([np.interp(tu, ttr[ktr], down[ktr, c]) for c in range(3)])
-        downu /= np.linalg.norm(downu, axis=1)[:, None]
-        g = float(np.linalg.norm(d0[still0, 1:4].mean(0)))
-        bias_g = d0[still0, 4:7].mean(0)
-        sd0 = d0[still0, 1:7].std(0)
-        fnorm0 = np.linalg.norm(d0[still0, 1:4], axis=1)
-        print('\n%s: %.1f Hz (median interval), %d rows on the grid, still |f| %.4f m/s^2, '
-              'still noise sd acc %.4f %.4f %.4f m/s^2, gyro %.5f %.5f %.5f rad/s' %
-              (log, 1 / dt, len(tu), g, *sd0))
-        print('as recorded: exit %d, closure 3-D %.3f m, distance %.2f m, %d strides, median cadence %.1f '
-              'steps/min, median stride %.3f m, median height change %+.4f m' %
-              (rc, j0['return_error_3d_m'], j0['distance_m'], j0['strides'], med(st0, 'cadence_spm'),
-               med(st0, 'length_m'), med(st0, 'height_change_m')))
-        print('\n| s | detector | cadence (steps/min) | strides (as recorded) | swing frames with ZUPT | '
-              'swings hit | v at ZUPT (m/s) | closure 3-D (m) | distance (m) | distance vs recorded | '
-              'median stride (m) | median height change (m) | still mean /f/ change (m/s^2) | speed vs s x recorded (m/s) | '
-              'exit |')
-        print('| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |')
-        d1 = np.column_stack([tu, du])
-        parts1 = shoe_parts(d1)
-        notes = []
-        for s in factors:
-            rng = np.random.default_rng([58, int(round(1000 * s))])  # the same copy whatever the list of factors
-            out, sd = slowed(tu, du, downu, s, g, bias_g, sd0, rng)
-            p = os.path.join(tmp, '%s.s%.2f.csv' % (name, s))
-            np.savetxt(p, out, delimiter=',', header='t,ax,ay,az,gx,gy,gz', comments='', fmt='%.9g')
-            still = out[:, 0] < t0 + STILL_S / s
-            dfn = abs(np.mean(np.linalg.norm(out[still, 1:4], axis=1)) - np.mean(fnorm0))
-            sd1 = out[still, 1:7].std(0)
-            if s != 1.0:
-                print('<!-- s %.2f: still noise sd before adding %s, after %s (original %s) -->' %
-                      (s, np.array2string(sd, precision=5), np.array2string(sd1, precision=5),
-                       np.array2string(sd0, precision=5)))
+    try:
+        start = time.time()
+        dets = [('shoe', ())] + ([('threshold', ('--detector', 'threshold'))] if extra_det else [])
+        for log in logs:
+            name = os.path.basename(log)
+            closed = 'SensorConnectData' not in name
+            base = os.path.join(tmp, name + '.csv')
+            r = subprocess.run([H, 'convert', log, base], capture_output=True, text=True)
+            if r.returncode:
+                sys.exit('probe_slow.py: %s: convert failed: %s' % (log, r.stderr.strip()))
+            d0 = np.loadtxt(base, delimiter=',', skiprows=1)
+            d0 = d0[increasing(d0[:, 0])]
+            rec = {}
             for det, ex in dets:
-                rc, j, st, traj, err = replay(p, '.' + det, ex)
-                jr, str_ = rec[det][1], rec[det][2]
-                share, hits, vmax = swing_stats(st0, traj0, traj, s, t0)
-                if det == 'shoe' and s != 1.0:
-                    ex = explain(st0, traj0, traj, out, parts1, d1, s, t0)
-                    if ex is not None and len(ex):
-                        m = np.median(ex, 0)
-                        notes.append('s %.2f: %d ZUPT runs in mid-swing at over 0.3 m/s: %d-%d frames (median %d), '
-                                     'at %.2f-%.2f of the swing; at their smallest T: log10 T %.2f (accelerometer term '
-                                     '%.2f, gyro term %.2f), |w| %.2f rad/s, ||f| - g| %.2f m/s^2, true speed %.2f m/s; '
-                                     'the same instants at s = 1: log10 T %.2f (%.2f, %.2f), |w| %.2f rad/s, |f| %.1f '
-                                     'm/s^2 (medians)' % (s, len(ex), ex[:, 0].min(), ex[:, 0].max(), m[0],
-                                                          ex[:, 1].min(), ex[:, 1].max(), *m[2:]))
-                nsw = int(np.isfinite(st0['swing_start_s']).sum())
-                dist = j.get('distance_m')
-                row = (s, det, fmt(med(st, 'cadence_spm'), '%.1f'),
-                       '%s (%d)' % (j.get('strides', '-'), jr.get('strides', 0)),
-                       fmt(None if share is None else 100 * share, '%.1f %%'),
-                       '%s of %d' % (hits, nsw), fmt(vmax if hits else None, '%.2f'),
-                       fmt(j.get('return_error_3d_m') if closed else None, '%.3f'),
-                       fmt(dist, '%.2f'),
-                       fmt(None if dist is None else 100 * (dist / jr['distance_m'] - 1), '%+.1f %%'),
-                       fmt(med(st, 'length_m'), '%.3f'), fmt(med(st, 'height_change_m'), '%+.4f'),
-                       '%.4f' % dfn, fmt(speed_check(rec[det][3], traj, s, t0), '%.3f'), rc)
-                print('| %.2f | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %d |' % row)
-                sys.stdout.flush()
-                summary.append((name, *row))
-                if s == 1.0:
-                    print('<!-- s 1 against the log as recorded (%s): closure %+.4f m, distance %+.4f m, '
-                          'strides %+d -->' % (det, j.get('return_error_3d_m', np.nan) - jr['return_error_3d_m'],
-                                               j.get('distance_m', np.nan) - jr['distance_m'],
-                                               j.get('strides', 0) - jr['strides']))
-        if notes:
-            print('\nSHOE at the mid-swing ZUPTs (default settings):\n' + '\n'.join(notes))
-    print('\n%.0f s' % (time.time() - start))
-    if mine and not keep:
-        shutil.rmtree(tmp, ignore_errors=True)
-    elif mine:
-        print('files kept in %s' % tmp)
+                rec[det] = replay(base, '.rec.' + det, ex)
+            rc, j0, st0, traj0, _ = rec['shoe']
+            if traj0 is None or not j0:
+                sys.exit('probe_slow.py: %s: the replay as recorded failed' % log)
+            t0 = d0[0, 0]
+            still0 = d0[:, 0] < t0 + STILL_S
+            tr_still = traj0['stance'][traj0['t'] < t0 + STILL_S]
+            if not tr_still.all():
+                print('warning: %s: the first %.1f s is not all stance' % (name, STILL_S))
+            dt = np.median(np.diff(d0[:, 0]))
+            tu = t0 + dt * np.arange(int(np.floor((d0[-1, 0] - t0) / dt)) + 1)
+            du = np.column_stack([np.interp(tu, d0[:, 0], d0[:, c]) for c in range(1, 7)])
+            ttr = traj0['t']
+            ktr = increasing(ttr)
+            down = tilt_down(traj0)
+            downu = np.column_stack([np.interp(tu, ttr[ktr], down[ktr, c]) for c in range(3)])
+            downu /= np.linalg.norm(downu, axis=1)[:, None]
+            g = float(np.linalg.norm(d0[still0, 1:4].mean(0)))
+            bias_g = d0[still0, 4:7].mean(0)
+            sd0 = d0[still0, 1:7].std(0)
+            fnorm0 = np.linalg.norm(d0[still0, 1:4], axis=1)
+            print('\n%s: %.1f Hz (median interval), %d rows on the grid, still |f| %.4f m/s^2, '
+                  'still noise sd acc %.4f %.4f %.4f m/s^2, gyro %.5f %.5f %.5f rad/s' %
+                  (log, 1 / dt, len(tu), g, *sd0))
+            print('as recorded: exit %d, closure 3-D %.3f m, distance %.2f m, %d strides, median cadence %.1f '
+                  'steps/min, median stride %.3f m, median height change %+.4f m' %
+                  (rc, j0['return_error_3d_m'], j0['distance_m'], j0['strides'], med(st0, 'cadence_spm'),
+                   med(st0, 'length_m'), med(st0, 'height_change_m')))
+            print('\n| s | detector | cadence (steps/min) | strides (as recorded) | swing frames with ZUPT | '
+                  'swings hit | v at ZUPT (m/s) | closure 3-D (m) | distance (m) | distance vs recorded | '
+                  'median stride (m) | median height change (m) | still mean /f/ change (m/s^2) | speed vs s x recorded (m/s) | '
+                  'exit |')
+            print('| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |')
+            d1 = np.column_stack([tu, du])
+            parts1 = shoe_parts(d1)
+            notes = []
+            for s in factors:
+                rng = np.random.default_rng([58, int(round(1000 * s))])  # the same copy whatever the list of factors
+                out, sd = slowed(tu, du, downu, s, g, bias_g, sd0, rng)
+                p = os.path.join(tmp, '%s.s%.2f.csv' % (name, s))
+                np.savetxt(p, out, delimiter=',', header='t,ax,ay,az,gx,gy,gz', comments='', fmt='%.9g')
+                still = out[:, 0] < t0 + STILL_S / s
+                dfn = abs(np.mean(np.linalg.norm(out[still, 1:4], axis=1)) - np.mean(fnorm0))
+                sd1 = out[still, 1:7].std(0)
+                if s != 1.0:
+                    print('<!-- s %.2f: still noise sd before adding %s, after %s (original %s) -->' %
+                          (s, np.array2string(sd, precision=5), np.array2string(sd1, precision=5),
+                           np.array2string(sd0, precision=5)))
+                for det, ex in dets:
+                    rc, j, st, traj, err = replay(p, '.' + det, ex)
+                    jr, str_ = rec[det][1], rec[det][2]
+                    share, hits, vmax = swing_stats(st0, traj0, traj, s, t0)
+                    if det == 'shoe' and s != 1.0:
+                        ex = explain(st0, traj0, traj, out, parts1, d1, s, t0)
+                        if ex is not None and len(ex):
+                            m = np.median(ex, 0)
+                            notes.append('s %.2f: %d ZUPT runs in mid-swing at over 0.3 m/s: %d-%d frames (median %d), '
+                                         'at %.2f-%.2f of the swing; at their smallest T: log10 T %.2f (accelerometer term '
+                                         '%.2f, gyro term %.2f), |w| %.2f rad/s, ||f| - g| %.2f m/s^2, true speed %.2f m/s; '
+                                         'the same instants at s = 1: log10 T %.2f (%.2f, %.2f), |w| %.2f rad/s, |f| %.1f '
+                                         'm/s^2 (medians)' % (s, len(ex), ex[:, 0].min(), ex[:, 0].max(), m[0],
+                                                              ex[:, 1].min(), ex[:, 1].max(), *m[2:]))
+                    nsw = int(np.isfinite(st0['swing_start_s']).sum())
+                    dist = j.get('distance_m')
+                    row = (s, det, fmt(med(st, 'cadence_spm'), '%.1f'),
+                           '%s (%d)' % (j.get('strides', '-'), jr.get('strides', 0)),
+                           fmt(None if share is None else 100 * share, '%.1f %%'),
+                           '%s of %d' % (hits, nsw), fmt(vmax if hits else None, '%.2f'),
+                           fmt(j.get('return_error_3d_m') if closed else None, '%.3f'),
+                           fmt(dist, '%.2f'),
+                           fmt(None if dist is None else 100 * (dist / jr['distance_m'] - 1), '%+.1f %%'),
+                           fmt(med(st, 'length_m'), '%.3f'), fmt(med(st, 'height_change_m'), '%+.4f'),
+                           '%.4f' % dfn, fmt(speed_check(rec[det][3], traj, s, t0), '%.3f'), rc)
+                    print('| %.2f | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %d |' % row)
+                    sys.stdout.flush()
+                    if s == 1.0:
+                        print('<!-- s 1 against the log as recorded (%s): closure %+.4f m, distance %+.4f m, '
+                              'strides %+d -->' % (det, j.get('return_error_3d_m', np.nan) - jr['return_error_3d_m'],
+                                                   j.get('distance_m', np.nan) - jr['distance_m'],
+                                                   j.get('strides', 0) - jr['strides']))
+            if notes:
+                print('\nSHOE at the mid-swing ZUPTs (default settings):\n' + '\n'.join(notes))
+        print('\n%.0f s' % (time.time() - start))
+    finally:
+        if mine and not keep:
+            shutil.rmtree(tmp, ignore_errors=True)
+        elif mine:
+            print('files kept in %s' % tmp)
 
 
 if __name__ == '__main__':
