@@ -2175,6 +2175,16 @@ int hx_nav_strides_too_short(const hx_nav_summary_t *s)
     return s->stride_intervals >= HX_NAV_STRIDE_MIN_N && s->median_stride_s < HX_NAV_STRIDE_MIN_S;
 }
 
+int hx_nav_gait_slow(const hx_traj_t *t, const hx_nav_summary_t *s)
+{
+    /* a run given a shortest ZUPT run of the remedy's or longer has had it;
+     * a log with almost no motion has its own note, and its motions are no
+     * gait (openshoe_square2: 13 cycles of 1.76 s, 1 stride) */
+    return s->stride_intervals >= HX_NAV_STRIDE_MIN_N && s->median_stride_s > HX_NAV_SLOW_CYCLE_S &&
+           !hx_nav_little_motion(s) &&
+           !(t->have_config && (double)t->config.stance.min_zupt_s >= 0.999 * HX_NAV_SLOW_MIN_ZUPT_S);
+}
+
 int hx_nav_coarse_stamps(const fnav_nav_stats_t *st)
 {
     return st->samples > 1u && (double)st->duplicates >= HX_NAV_DUP_FRACTION * (double)st->samples;
@@ -2300,6 +2310,14 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                    "with --input-rate HZ)\n",
                 s->median_stride_s, s->stride_intervals, 120.0 / s->median_stride_s, t->rate_hz);
     }
+    if (hx_nav_gait_slow(t, s)) {
+        fprintf(f, "note              the gait cycles last %.2f s (median of %ld), %.0f steps/min: a slow gait, where "
+                   "the foot's deceleration before landing can pass for a short stance and its ZUPT take speed out of "
+                   "the swing (the strides read short; real walks played this slow lost up to a third of their "
+                   "length); --param min_zupt_s=%.2f guards against it (docs/harness.md, \"Slow walking, real walks "
+                   "played slower\")\n",
+                s->median_stride_s, s->stride_intervals, 120.0 / s->median_stride_s, HX_NAV_SLOW_MIN_ZUPT_S);
+    }
     if (hx_nav_coarse_stamps(st)) {
         fprintf(f, "note              %.1f %% of the samples repeat the time stamp before them (dt = 0; longest "
                    "interval %.1f ms): the stamps are coarser than the sampling (float32 seconds far from 0? a "
@@ -2418,6 +2436,8 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
         cJSON_AddItemToObject(gc, "median_s", num(s->stride_intervals > 0 ? s->median_stride_s : (double)NAN));
         cJSON_AddNumberToObject(gc, "intervals", (double)s->stride_intervals);
         cJSON_AddBoolToObject(gc, "too_short", hx_nav_strides_too_short(s));
+        /* the summary's slow-gait note (hx_nav_gait_slow) */
+        cJSON_AddBoolToObject(gc, "slow", hx_nav_gait_slow(t, s));
         cJSON_AddItemToObject(root, "gait_cycles", gc);
     }
     {

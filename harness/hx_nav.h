@@ -379,6 +379,25 @@ int hx_nav_gappy(const hx_nav_summary_t *s);
 /** True when the gait cycles are too short for a foot (the summary's note). */
 int hx_nav_strides_too_short(const hx_nav_summary_t *s);
 
+/** A slow gait: a median gait cycle (as HX_NAV_STRIDE_MIN_S's, of
+ *  HX_NAV_STRIDE_MIN_N cycles or more) above HX_NAV_SLOW_CYCLE_S, a cadence
+ *  below 70 steps/min. Real walks played slower (scripts/probe_slow.py)
+ *  lost 2-33 % of their length at 53-68 steps/min and kept it from 71-75
+ *  up: in late swing the foot's slowed deceleration brings |f| near g, the
+ *  statistic dips under the threshold for 20-32 ms, longer than the
+ *  shortest ZUPT run, and the ZUPT zeroes a swing's velocity.
+ *  HX_NAV_SLOW_MIN_ZUPT_S (as --param min_zupt_s) cured those copies; it is
+ *  not the default because a jogger's stances are shorter (footprint walk
+ *  35: 2.67 -> 80.74 %). docs/harness.md, "Slow walking, real walks played
+ *  slower". */
+#define HX_NAV_SLOW_CYCLE_S (120.0 / 70.0)
+#define HX_NAV_SLOW_MIN_ZUPT_S 0.05
+
+/** True when the gait is slow (HX_NAV_SLOW_CYCLE_S) and the run's shortest
+ *  ZUPT run is below HX_NAV_SLOW_MIN_ZUPT_S (or not said): the summary's
+ *  note and the JSON's gait_cycles.slow. */
+int hx_nav_gait_slow(const hx_traj_t *t, const hx_nav_summary_t *s);
+
 /** True when the samples that repeat the time stamp before them reach
  *  HX_NAV_DUP_FRACTION of the samples (the summary's note). */
 int hx_nav_coarse_stamps(const fnav_nav_stats_t *st);

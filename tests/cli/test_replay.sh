@@ -1080,6 +1080,36 @@ grep -q "cycles last" "$T/out" && fail "gait cycles at the right rate called too
 json "$T/bare6_200.json" 'j["gait_cycles"]["too_short"] is False and j["gait_cycles"]["median_s"] >= 0.4' &&
     pass "replay --json at the right rate: gait_cycles.too_short false" ||
     fail "replay --json at the right rate: $(grep -A3 '"gait_cycles"' "$T/bare6_200.json" | tr -d '\n\t')"
+# a slow gait (under 70 steps/min) is named with its remedy: in a slow swing the foot's deceleration before the
+# landing can pass for a stance of 20-32 ms and its ZUPT takes speed out (real walks played slower lost up to a
+# third of their length, scripts/probe_slow.py; nothing was said until 2026-11-30). The simulator's 60 steps/min
+# walk (0.8 m strides at 0.4 m/s) reads its strides short and climbs; --param min_zupt_s=0.05, the remedy named,
+# brings the median stride nearer 0.8 m and takes the note away; the 100 steps/min walk above has no note.
+"$H" sim --motion walk --duration 60 --cadence 60 --speed 0.4 --profile none --out "$T/slow60.bin" >/dev/null 2>&1 ||
+    fail "sim a 60 steps/min walk"
+expect_exit 0 "a 60 steps/min walk" "$H" replay "$T/slow60.bin" --out /dev/null --json "$T/slow60.json" --strides "$T/slow60_s.csv"
+expect_out_re "^note +the gait cycles last 2\.00 s \(median of [0-9]+\), 60 steps/min: a slow gait" "a slow gait named"
+expect_out "--param min_zupt_s=0.05 guards against it" "the slow gait's remedy named"
+json "$T/slow60.json" 'j["gait_cycles"]["slow"] is True and j["gait_cycles"]["too_short"] is False' &&
+    pass "replay --json: gait_cycles.slow true at 60 steps/min" ||
+    fail "replay --json at 60 steps/min: $(grep -A5 '"gait_cycles"' "$T/slow60.json" | tr -d '\n\t')"
+expect_exit 0 "the 60 steps/min walk with the remedy" "$H" replay "$T/slow60.bin" --out /dev/null --param min_zupt_s=0.05 \
+    --json "$T/slow60_fix.json" --strides "$T/slow60_fix_s.csv"
+grep -q "slow gait" "$T/out" && fail "the slow-gait note with its remedy applied" || pass "no slow-gait note with the remedy"
+json "$T/slow60_fix.json" 'j["gait_cycles"]["slow"] is False' && pass "replay --json: gait_cycles.slow false with the remedy" ||
+    fail "replay --json with the remedy: $(grep -A5 '"gait_cycles"' "$T/slow60_fix.json" | tr -d '\n\t')"
+if "${PY:-/usr/bin/python3}" - "$T/slow60_s.csv" "$T/slow60_fix_s.csv" >"$T/py" 2>&1 <<'PYEOF'
+import csv, statistics, sys
+def med(p):
+    rows = list(csv.DictReader(open(p)))[1:-1]
+    return statistics.median(float(r["length_m"]) for r in rows)
+a, b = med(sys.argv[1]), med(sys.argv[2])
+print("median stride %.3f m, %.3f m with the remedy (truth 0.800)" % (a, b))
+sys.exit(0 if abs(b - 0.8) < abs(a - 0.8) and abs(b - 0.8) < 0.01 else 1)
+PYEOF
+then pass "the remedy named mends the slow walk's strides: $(cat "$T/py")"; else fail "slow walk's remedy: $(cat "$T/py")"; fi
+json "$T/walkbin.json" 'j["gait_cycles"]["slow"] is False' && pass "the bundled walk (104 steps/min) is no slow gait" ||
+    fail "the bundled walk called slow: $(grep -A5 '"gait_cycles"' "$T/walkbin.json" | tr -d '\n\t')"
 
 # Rows of the Markdown tables in FILE... whose cell count differs from their
 # header's (an unescaped | in a header or a note breaks a table), as FILE:LINE.
