@@ -297,7 +297,10 @@ typedef struct {
     size_t segs;      /**< the segments between time jumps */
     double median_hz; /**< 1 / the median interval of the strictly increasing stamps (0: fewer than 2) */
     double span_s;    /**< the segments' spans, summed */
-    double span_hz;   /**< the samples over that span, (n - segs) / span_s: the rate to give (0: no span) */
+    double rate_hz;   /**< the rate to give: per segment, the samples from the start of its second burst to
+                           the start of its last over the time between them (whole packets, whatever the
+                           first and last hold); with no segment of 3 bursts the samples over the span,
+                           (n - segs) / span_s (0: no span) */
 } hx_bursts_t;
 /** Whether n time stamps (ns) come in bursts: the samples between the time
  *  jumps (an interval above max_gap_s and 1.5 median intervals, the

@@ -1844,7 +1844,8 @@ static void test_stamp_rate(void **state)
  * the stamps built here:
  * - packets of 4 samples stamped 5 us apart every 10 ms (400 Hz): median
  *   interval 5 us, 200 kHz; the 4000 samples span 10,000 us to
- *   10,000,015 us: 9.990015 s, 3999 / 9.990015 Hz; CLOSE (4000 samples,
+ *   10,000,015 us: 9.990015 s; the rate to give 400 Hz, from packets 2 to
+ *   1000 (3992 samples over 9.98 s); CLOSE (4000 samples,
  *   where 200 kHz gives about 2 million);
  * - one stamp shared by each packet: 100 Hz, 9.99 s, SHARED;
  * - the same bursts with a 5 s pause after 2000 samples: two segments, the
@@ -1869,11 +1870,12 @@ static void test_stamp_bursts(void **state)
     assert_int_equal(b.segs, 1);
     assert_int_equal(b.n, N);
     FNAV_ASSERT_CLOSE(b.span_s, 9.990015, 1e-12, 0.0);
-    FNAV_ASSERT_CLOSE(b.span_hz, 3999.0 / 9.990015, 1e-9, 0.0);
+    /* the samples of packets 2 to 1000, 3992, over their stamps' 9.98 s */
+    FNAV_ASSERT_CLOSE(b.rate_hz, 400.0, 0.0, 1e-12);
     assert_string_equal(hx_bursts_text(&b, "WHAT", "SECTION", msg, sizeof msg),
                         "the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 "
-                        "/ their median interval gives 200000 Hz, but the 4000 samples span 9.99 s, 400.3 Hz; WHAT: "
-                        "leave the time column out and give --input-rate 400.3 (docs/harness.md, \"SECTION\")");
+                        "/ their median interval gives 200000 Hz, but the 4000 samples span 9.99 s, 400 Hz; WHAT: "
+                        "leave the time column out and give --input-rate 400 (docs/harness.md, \"SECTION\")");
     /* a pause of 5 s after 2000 samples: a time jump, not in the span */
     for (k = N / 2u; k < N; k++) {
         t[k] += 5000000000;
@@ -1881,7 +1883,7 @@ static void test_stamp_bursts(void **state)
     assert_int_equal(hx_stamp_bursts(t, N, 0.2, &b), HX_BURSTS_CLOSE);
     assert_int_equal(b.segs, 2);
     FNAV_ASSERT_CLOSE(b.span_s, 2.0 * 4.990015, 1e-12, 0.0); /* 10,000 us to 5,000,015 us, and as long after the pause */
-    FNAV_ASSERT_CLOSE(b.span_hz, 3998.0 / 9.98003, 1e-9, 0.0);
+    FNAV_ASSERT_CLOSE(b.rate_hz, 400.0, 0.0, 1e-12); /* packets 2 to 500 of each segment: 2 x 1992 samples over 2 x 4.98 s */
     assert_non_null(strstr(hx_bursts_text(&b, "W", "S", msg, sizeof msg), "span 9.98 s between the time jumps"));
     /* one stamp per packet */
     for (k = 0; k < N; k++) {
@@ -1922,6 +1924,62 @@ static void test_stamp_bursts(void **state)
     }
     assert_int_equal(hx_stamp_bursts(t, 8, 0.2, &b), HX_BURSTS_NONE);
     assert_int_equal(hx_stamp_bursts(NULL, 0, 0.2, &b), HX_BURSTS_NONE);
+}
+
+/* The rate hx_bursts_text gives for --input-rate: exact for whole packets
+ * whatever the log's first and last packets hold. It was (n - segs) / span
+ * over the stamps, which counts the samples of a cut last packet and of the
+ * first one against a span that ends at the last stamp: a 250 Hz log gave
+ * 250.1, a walk's 4000 whole packets 400.3. Expected rates worked out by
+ * hand: 4 samples every 7 ms, 571.43 Hz (%.4g: 571.4); 4 every 16 ms,
+ * 250 Hz; 3 to a stamp every 10 ms, 300 Hz; the 400 Hz bursts with a 5 s
+ * pause in the middle of a packet, 400 Hz. */
+static void test_stamp_bursts_rate(void **state)
+{
+    enum { N = 3000 };
+    static int64_t t[N];
+    hx_bursts_t b;
+    char msg[512];
+    size_t k, skip, n;
+    (void)state;
+    /* close bursts, 4 samples 5 us apart every 7 ms: a last packet of 1,
+     * 2, 3 or 4 samples, and a first packet cut to 3, 2 or 1 */
+    for (skip = 0; skip < 4u; skip++) {
+        for (n = N - 3u; n <= N; n++) {
+            for (k = 0; k < n; k++) {
+                const size_t j = k + skip;
+                t[k] = ((int64_t)(j / 4u) + 1) * 7000000 + 5000 * (int64_t)(j % 4u);
+            }
+            assert_int_equal(hx_stamp_bursts(t, n, 0.2, &b), HX_BURSTS_CLOSE);
+            assert_non_null(strstr(hx_bursts_text(&b, "W", "S", msg, sizeof msg), "give --input-rate 571.4 ("));
+            FNAV_ASSERT_CLOSE(b.rate_hz, 4.0 / 0.007, 0.0, 1e-12);
+        }
+    }
+    /* 250 Hz in packets of 4 every 16 ms, 2998 samples (a last packet of 2):
+     * the log of tests/cli/test_replay.sh that said 250.1 */
+    for (k = 0; k < 2998u; k++) {
+        t[k] = ((int64_t)(k / 4u) + 1) * 16000000 + 5000 * (int64_t)(k % 4u);
+    }
+    assert_int_equal(hx_stamp_bursts(t, 2998u, 0.2, &b), HX_BURSTS_CLOSE);
+    assert_non_null(strstr(hx_bursts_text(&b, "W", "S", msg, sizeof msg), "span 11.98 s, 250 Hz; W: leave the time column out and give --input-rate 250 ("));
+    /* 3 samples to a stamp every 10 ms (300 Hz): a last packet of 1 and a
+     * first one cut to 2 */
+    for (k = 0; k < 2998u; k++) {
+        t[k] = ((int64_t)((k + 1u) / 3u) + 1) * 10000000;
+    }
+    assert_int_equal(hx_stamp_bursts(t, 2998u, 0.2, &b), HX_BURSTS_SHARED);
+    assert_non_null(strstr(hx_bursts_text(&b, "W", "S", msg, sizeof msg), "give --input-rate 300 ("));
+    FNAV_ASSERT_CLOSE(b.rate_hz, 300.0, 0.0, 1e-12);
+    /* the 400 Hz bursts (4 every 10 ms) with a pause of 5 s after 2002
+     * samples, in the middle of a packet: two segments, each with a cut
+     * packet at its end or its start */
+    for (k = 0; k < N; k++) {
+        t[k] = ((int64_t)(k / 4u) + 1) * 10000000 + 5000 * (int64_t)(k % 4u) + (k >= 2002u ? 5000000000 : 0);
+    }
+    assert_int_equal(hx_stamp_bursts(t, N, 0.2, &b), HX_BURSTS_CLOSE);
+    assert_int_equal(b.segs, 2);
+    assert_non_null(strstr(hx_bursts_text(&b, "W", "S", msg, sizeof msg), "between the time jumps, 400 Hz; W: leave the time column out and give --input-rate 400 ("));
+    FNAV_ASSERT_CLOSE(b.rate_hz, 400.0, 0.0, 1e-12);
 }
 
 /* The Xsens packet counter of ipol_gait_xsens has 16 bits: past 65535 it
@@ -3498,6 +3556,7 @@ int main(void)
         cmocka_unit_test(test_gz_truncated),
         cmocka_unit_test(test_stamp_rate),
         cmocka_unit_test(test_stamp_bursts),
+        cmocka_unit_test(test_stamp_bursts_rate),
         cmocka_unit_test(test_roundtrip_all_formats),
         cmocka_unit_test(test_killed_writer),
         cmocka_unit_test(test_bin_rate_unknown),
