@@ -131,6 +131,13 @@ int hx_cmd_simgap(int argc, char **argv)
     if (lr < 0) {
         return HX_EXIT_DATA;
     }
+    /* stamps in bursts: a walk refused as replay refuses it, before the
+     * domain (which the wrong rate breaks) decides anything else */
+    if (sg_stamps_check(&log, path, o.domain, err, sizeof err) != 0) {
+        hx_error("simgap", "%s: %s", path, err);
+        hx_log_free(&log);
+        return HX_EXIT_DATA;
+    }
     /* a static log's held-out score and likelihood-ratio tests leave one
      * twin out of each null and need 4 twins: with 3 every effect scored
      * 0 sigma and a plain tone was answered "unexplained", exit 0 (a

@@ -41,6 +41,33 @@ double sg_log_rate(const hx_log_t *log)
     return r > 0.0 ? r : log->meta.rate_hz;
 }
 
+int sg_stamps_check(const hx_log_t *log, const char *path, int domain, char *err, size_t err_size)
+{
+    /* until 2026-11-30 a walk stamped in bursts (4 samples 5 us apart every
+     * 10 ms) was read at 200 kHz, detected as static and analysed as one,
+     * exit 0; one stamp per packet of 4 was navigated and twinned at 100 Hz
+     * (a 400 Hz walk), its answer meaningless */
+    const size_t n = log->n < HX_STAMPS_PROBE_N ? log->n : (size_t)HX_STAMPS_PROBE_N;
+    const double max_gap_s = (double)fnav_nav_config_default.max_gap_s;
+    hx_bursts_t bu;
+    char what[96];
+    if (err_size > 0u) {
+        err[0] = '\0';
+    }
+    if (log->t_ns == NULL || log->meta.stamps_made || hx_stamp_bursts(log->t_ns, n, max_gap_s, &bu) <= 0) {
+        return 0;
+    }
+    bu.first = log->n > n;
+    if (domain == 2 || (domain == 0 && sg_detect_domain(log, bu.rate_hz) == 2)) {
+        hx_bursts_text(&bu, "navigation needs each sample's own time", "Time stamps in bursts", err, err_size);
+        return -1;
+    }
+    snprintf(what, sizeof what, "the taus and frequencies are read at %.4g Hz, not the sampling rate",
+             sg_log_rate(log));
+    (void)hx_nav_bursts_warn("simgap", path, log->t_ns, n, log->n > n, what);
+    return 0;
+}
+
 int sg_detect_domain(const hx_log_t *log, double rate_hz)
 {
     size_t n = log->n, k, w = (size_t)(rate_hz > 1.0 ? rate_hz : 1.0), nw = 0, moving = 0;

@@ -730,6 +730,17 @@ void sg_result_free(sg_result_t *r);
 /** Static or walk: stillness over the whole log (1 static, 2 walk). */
 int sg_detect_domain(const hx_log_t *log, double rate_hz);
 
+/** Time stamps in bursts (either kind of hx_stamp_bursts over the log's
+ *  first HX_STAMPS_PROBE_N stamps, with the navigator's default time jump,
+ *  as replay's test and allan's): the log's rate, 1 / the median interval
+ *  of the distinct stamps, is then no sampling rate. A walk (domain 2, or
+ *  0 and detected as one at the rate of the whole packets, which the wrong
+ *  rate's one-second windows hide) cannot be navigated or twinned: -1 with
+ *  the cause and the --input-rate remedy in err (replay's message). A
+ *  static log is warned as allan and psd warn (the taus and frequencies at
+ *  the wrong rate): 0, as for stamps without bursts. */
+int sg_stamps_check(const hx_log_t *log, const char *path, int domain, char *err, size_t err_size);
+
 /** Nominal rate of a log (meta, else hx_stamp_rate_hz of its stamps). */
 double sg_log_rate(const hx_log_t *log);
 

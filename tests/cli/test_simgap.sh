@@ -403,6 +403,34 @@ expect_exit 0 "static log stamped in bursts, read as us" "$H" simgap "$T/sdburst
     --units time=us
 if grep -q "are the time stamps in\|look like" "$T/err"; then fail "simgap: stamps in bursts told a time unit: $(cat "$T/err")"; else
     pass "simgap: stamps in bursts (100 Hz over the log) told no time unit"; fi
+# ... and it is warned of the bursts as allan and psd warn (the taus at 1 / the median interval, 200 kHz; without
+# a word until 2026-11-30), the rate of the whole packets named for --input-rate
+expect_err "harness simgap: warning: $T/sdburst.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the .* samples span .* s, 100 Hz; the taus and frequencies are read at 2e+05 Hz, not the sampling rate: leave the time column out and give --input-rate 100 (docs/harness.md, \"Time stamps in bursts\")" \
+    "a static log stamped in bursts: warned, --input-rate 100 named"
+# a walk stamped in bursts (vectors/walk.bin, 400 Hz, in packets of 4 samples 5 us apart every 10 ms) was read at
+# 200 kHz, detected as static (its one-second windows 200,000 samples long) and analysed as one, exit 0; with one
+# stamp per packet it was navigated and twinned at 100 Hz. Both are now refused as replay refuses stamps in bursts,
+# before the diagnosis, with --walk too; the remedy (no time column, --input-rate 400) is diagnosed as a 400 Hz walk
+"$H" convert vectors/walk.bin "$T/bw.csv" >/dev/null 2>&1 || fail "convert the walk to CSV (bursts)"
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/bw_burst.csv"
+awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000, $2, $3, $4, $5, $6, $7 }' \
+    "$T/bw.csv" > "$T/bw_shared.csv"
+expect_exit 1 "a walk stamped in bursts" "$H" simgap "$T/bw_burst.csv" --units time=us --seeds 4 --json "$T/bw_burst.json"
+expect_err "^harness simgap: error: $T/bw_burst.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; navigation needs each sample's own time: leave the time column out and give --input-rate 400 (docs/harness.md, \"Time stamps in bursts\")" \
+    "a walk stamped in bursts: refused with replay's message, --input-rate 400 named"
+[ "$(wc -l < "$T/err")" -eq 1 ] && pass "a walk stamped in bursts: the error line alone" || fail "a walk stamped in bursts: $(cat "$T/err")"
+[ -s "$T/out" ] && fail "a walk stamped in bursts: a summary printed" || pass "a walk stamped in bursts: no summary (refused before the diagnosis)"
+[ -e "$T/bw_burst.json" ] && fail "a walk stamped in bursts: the JSON written" || pass "a walk stamped in bursts: no JSON"
+expect_exit 1 "a walk stamped in bursts, --walk" "$H" simgap "$T/bw_burst.csv" --units time=us --seeds 4 --walk
+expect_err "come in bursts (samples stamped close together .* give --input-rate 400 (" "a walk stamped in bursts, --walk: refused"
+expect_exit 1 "a walk with one stamp per packet" "$H" simgap "$T/bw_shared.csv" --units time=us --seeds 4
+expect_err "^harness simgap: error: $T/bw_shared.csv: the time stamps come in bursts (samples that share one stamp: one per packet, or stamps coarser than the sampling?): 1 / their median interval gives 100 Hz, but the 16539 samples span 41.34 s, 400 Hz; navigation needs each sample's own time: leave the time column out and give --input-rate 400 (" \
+    "a walk with one stamp per packet: refused, --input-rate 400 named"
+cut -d, -f2- "$T/bw_burst.csv" > "$T/bw_not.csv"
+"$H" simgap "$T/bw_not.csv" --input-rate 400 --seeds 4 --quiet > "$T/out" 2> "$T/err"
+expect_out "walk, 16539 samples at 400 Hz" "the remedy (no time column, --input-rate 400): diagnosed as a 400 Hz walk"
+grep -q "come in bursts" "$T/err" && fail "the remedy: still refused as bursts" || pass "the remedy: no burst refusal"
 # in g as well: the units warning and the time warning each name both items, one --units value
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5, $6, $7 }' \
     "$T/sdms.csv" > "$T/sdgms.csv"
