@@ -174,6 +174,45 @@ int hx_mtmgr_comment(hx_mtmgr_t *x, const char *line, long lineno)
     return 1;
 }
 
+/* Whether a header field is empty (a trailing comma's) or a column a
+ * Movella DOT CSV writes besides its orientation (Euler_*, Quat_*, which
+ * hx_mtmgr_detect leaves to the CSV reader): the columns of the DOT SDK's
+ * payloads, PacketCounter, SampleTimeFine, Acc_, Gyr_, Mag_, FreeAcc_ and
+ * Cal_FreeAcc_ X..Z, dq_W..Z, dv[1]..dv[3], Status, Flag, ClipCountAcc,
+ * ClipCountGyr, FreeAcc_Compared_Result. MT Manager may export a header of
+ * these alone, but always writes '//' lines before it. */
+static int dot_column(const char *name)
+{
+    static const char *const exact[] = { "PacketCounter", "SampleTimeFine", "Status", "Flag", "ClipCountAcc",
+                                         "ClipCountGyr", "FreeAcc_Compared_Result", "dv[1]", "dv[2]", "dv[3]" };
+    static const char *const xyz[] = { "Acc_", "Gyr_", "Mag_", "FreeAcc_", "Cal_FreeAcc_", "dq_" };
+    const char *s = name;
+    size_t i;
+    while (*s == ' ' || *s == '\t' || *s == '"' || *s == '\'' || *s == '\r') {
+        s++;
+    }
+    if (*s == '\0') {
+        return 1;
+    }
+    for (i = 0; i < sizeof exact / sizeof exact[0]; i++) {
+        if (hx_name_eq(name, exact[i])) {
+            return 1;
+        }
+    }
+    for (i = 0; i < sizeof xyz / sizeof xyz[0]; i++) {
+        static const char *const axes[] = { "W", "X", "Y", "Z" };
+        size_t k;
+        for (k = i == 5u ? 0u : 1u; k < 4u; k++) { /* dq_ has W, X, Y, Z; the others X, Y, Z */
+            char want[24];
+            snprintf(want, sizeof want, "%s%s", xyz[i], axes[k]);
+            if (hx_name_eq(name, want)) {
+                return 1;
+            }
+        }
+    }
+    return 0;
+}
+
 int hx_mtmgr_header(hx_mtmgr_t *x, char **f, int n, char *msg, size_t msg_size)
 {
     static const char *const acc[3] = { "Acc_X", "Acc_Y", "Acc_Z" };
@@ -181,7 +220,9 @@ int hx_mtmgr_header(hx_mtmgr_t *x, char **f, int n, char *msg, size_t msg_size)
     int i, inc = 0, free_acc = 0;
     x->col_ctr = hx_find_col(f, n, "PacketCounter");
     x->col_stf = hx_find_col(f, n, "SampleTimeFine");
+    x->dot_cols = 1;
     for (i = 0; i < n; i++) {
+        x->dot_cols &= dot_column(f[i]);
         inc |= name_starts(f[i], "dq_") || name_starts(f[i], "dv[") || name_starts(f[i], "dv_");
         free_acc |= name_starts(f[i], "FreeAcc_");
     }
@@ -423,8 +464,13 @@ int hx_mtmgr_stamps(hx_mtmgr_t *x, char *msg, size_t msg_size)
     {
         const double hz = (double)HX_MTMGR_STF_HZ / x->stamp_step; /* 100 us ticks */
         const double hz_us = 1.0e6 / x->stamp_step;                /* us, as Movella DOT counts */
-        x->us_like = x->comments == 0 && hz < HX_MTMGR_IMU_MIN_HZ && hz_us >= HX_MTMGR_IMU_MIN_HZ &&
-                     hz_us <= HX_MTMGR_IMU_MAX_HZ;
+        /* an IMU's rate in us and none in ticks; or, under DOT's own
+         * columns, one of DOT's rates down to 1 Hz (0.01 Hz in ticks), which
+         * the IMU band missed below 20 Hz: a DOT at 10 Hz was read as an
+         * export at 0.1 Hz until 2026-11-30 */
+        x->us_like = x->comments == 0 && hz < HX_MTMGR_IMU_MIN_HZ &&
+                     ((hz_us >= HX_MTMGR_IMU_MIN_HZ && hz_us <= HX_MTMGR_IMU_MAX_HZ) ||
+                      (x->dot_cols && hz_us >= HX_MTMGR_DOT_MIN_HZ));
         if (x->stated_hz > 0.0 && fabs(hz - x->stated_hz) > HX_MTMGR_RATE_TOL * x->stated_hz) {
             /* the stamps are the samples' times: a stated rate they do not
              * keep is no nominal rate (the rate is then the stamps') */
@@ -445,6 +491,6 @@ void hx_mtmgr_us_refusal(const hx_mtmgr_t *x, const char *path, char *msg, size_
              "%s: SampleTimeFine steps by %g: %.4g Hz in 100 us ticks, %.4g Hz in us, no '//' line: likely a Movella "
              "DOT CSV; read it with --from csv --columns "
              "t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s "
-             "(if MT Manager's: --from mtmanager)",
+             "(if MT Manager's, its '//' lines cut: put one back before the header)",
              path, x->stamp_step, (double)HX_MTMGR_STF_HZ / x->stamp_step, 1.0e6 / x->stamp_step);
 }

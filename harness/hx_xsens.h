@@ -41,6 +41,11 @@
  *  CSV's (hx_mtmgr_stamps). */
 #define HX_MTMGR_IMU_MIN_HZ 20.0
 #define HX_MTMGR_IMU_MAX_HZ 5000.0
+/** Half the slowest rate of a Movella DOT (1 Hz; it logs at 1, 4, 10, 12,
+ *  15, 20, 30, 60 or 120 Hz), Hz in us: under a header of DOT's own
+ *  columns, steps this fast or faster in us are a DOT CSV's at any of its
+ *  rates (hx_mtmgr_stamps). */
+#define HX_MTMGR_DOT_MIN_HZ 0.5
 
 /** Where a row's time comes from. */
 typedef enum {
@@ -71,6 +76,8 @@ typedef struct {
     int npeek;               /**< rows in peek */
     double stamp_step;       /**< their median step that advances, ticks; 0: none (hx_mtmgr_stamps) */
     int us_like;             /**< the steps read as a Movella DOT CSV's us (hx_mtmgr_stamps) */
+    int dot_cols;            /**< every named header column is one a Movella DOT CSV writes
+                                  (hx_mtmgr_header) */
 } hx_mtmgr_t;
 
 /** Whether the start of a file (text, NUL-terminated, a UTF-8 byte-order
@@ -117,16 +124,18 @@ int hx_mtmgr_peek(hx_mtmgr_t *x, char **f, int n);
  *    the warning in msg;
  *  - when there is no '//' line and the steps are slower than
  *    HX_MTMGR_IMU_MIN_HZ in 100 us ticks but in HX_MTMGR_IMU_MIN_HZ ..
- *    HX_MTMGR_IMU_MAX_HZ in us: us_like (a Movella DOT CSV, whose
+ *    HX_MTMGR_IMU_MAX_HZ in us, or, under a header of DOT's own columns
+ *    (dot_cols), HX_MTMGR_DOT_MIN_HZ or faster in us (a DOT at 1 to 15 Hz,
+ *    which make no IMU's rate in us): us_like (a Movella DOT CSV, whose
  *    SampleTimeFine counts us; hx_mtmgr_us_refusal).
  *  Else 0. */
 int hx_mtmgr_stamps(hx_mtmgr_t *x, char *msg, size_t msg_size);
 
-/** The refusal of a file detected as an export whose stamps are us_like:
- *  "PATH: SampleTimeFine steps by N (R Hz in MT Manager's 100 us ticks, R'
- *  Hz in us) with no '//' preamble: likely a Movella DOT CSV; read it with
- *  --from csv --columns ... --units time=us,gyro=deg/s (an MT Manager
- *  export: --from mtmanager)". */
+/** The refusal of a file read as an export (detected, or --from mtmanager)
+ *  whose stamps are us_like: "PATH: SampleTimeFine steps by N: R Hz in 100
+ *  us ticks, R' Hz in us, no '//' line: likely a Movella DOT CSV; read it
+ *  with --from csv --columns ... --units time=us,gyro=deg/s (if MT
+ *  Manager's, its '//' lines cut: put one back before the header)". */
 void hx_mtmgr_us_refusal(const hx_mtmgr_t *x, const char *path, char *msg, size_t msg_size);
 
 /** A data row (n fields f): 1 when a value the reader uses (Acc_, Gyr_,

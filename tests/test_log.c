@@ -3310,7 +3310,11 @@ static void test_mtmgr_detect(void **state)
 /* An export of rows whose SampleTimeFine steps by step from 1000 (one
  * step of gap instead after row gap_at, when > 0), after pre ("" for a
  * header alone) and an optional '// Update Rate' of stated Hz (0: none). */
-static void write_mtmgr_steps(const char *p, const char *pre, double stated, int rows, long step, int gap_at)
+/* An export of rows rows whose SampleTimeFine steps by step (40 steps
+ * after row gap_at) under the header hdr of 11 columns, after pre and a
+ * '// Update Rate' line when stated > 0. */
+static void write_mtmgr_steps_hdr(const char *p, const char *pre, const char *hdr, double stated, int rows, long step,
+                                  int gap_at)
 {
     FILE *f = fopen(p, "w");
     long stf = 1000;
@@ -3320,7 +3324,7 @@ static void write_mtmgr_steps(const char *p, const char *pre, double stated, int
     if (stated > 0.0) {
         fprintf(f, "// Update Rate: %.1fHz\n", stated);
     }
-    fprintf(f, "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,Mag_Z\n");
+    fprintf(f, "%s\n", hdr);
     for (i = 0; i < rows; i++) {
         fprintf(f, "%d,%ld,0.1,0.2,9.8,0.01,0.02,0.03,0.4,-0.1,0.8\n", i, stf);
         stf += i + 1 == gap_at ? 40 * step : step;
@@ -3328,22 +3332,34 @@ static void write_mtmgr_steps(const char *p, const char *pre, double stated, int
     assert_int_equal(fclose(f), 0);
 }
 
+/* The columns of a Movella DOT CSV of Acc_*, Gyr_* and Mag_* (DOT's
+ * "rate quantities with mag" payload), which MT Manager may export too. */
+#define DOT_ACC_GYR_MAG "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,Mag_Z"
+
+static void write_mtmgr_steps(const char *p, const char *pre, double stated, int rows, long step, int gap_at)
+{
+    write_mtmgr_steps_hdr(p, pre, DOT_ACC_GYR_MAG, stated, rows, step, gap_at);
+}
+
 /* A header alone whose SampleTimeFine steps are slower than 20 Hz in MT
  * Manager's 100 us ticks but 20 Hz .. 5 kHz in us is Movella DOT's CSV
  * (DOT user manual, XD0502P, 4.2.5: SampleTimeFine in us), refused with the
- * CSV reader's remedy; it was read 100 times too slow. At the bounds (500
- * ticks: 20 Hz; 50,001: 19.9996 Hz in us), with a '//' line, or with
- * --from mtmanager it is read as an export. The median step (a gap, a
- * wrap in the first rows) decides. A mutant that drops the '//' condition
- * refuses the preamble case; one without the us range refuses 50,001. */
+ * CSV reader's remedy; it was read 100 times too slow. At the bound of 500
+ * ticks (20 Hz) or with a '//' line it is read as an export; with a column
+ * DOT does not write (Roll) too at 50,001 (19.9996 Hz in us), which DOT's
+ * own columns refuse (test_mtmgr_dot_rates). With --from mtmanager it is
+ * refused the same (it was read in ticks until 2026-11-30). The median
+ * step (a gap, a wrap in the first rows) decides. A mutant that drops the
+ * '//' condition refuses the preamble case; one without the us range
+ * refuses 50,001 under Roll. */
 static void test_mtmgr_us_stamps(void **state)
 {
-    char p[256], err[320];
+    char p[256], err[HX_ERR_SIZE];
     hx_log_t log;
     static const struct {
         long step;
         int refused;
-    } cases[] = { { 150, 0 }, { 500, 0 }, { 501, 1 }, { 2511, 1 }, { 50000, 1 }, { 50001, 0 } };
+    } cases[] = { { 150, 0 }, { 500, 0 }, { 501, 1 }, { 2511, 1 }, { 50000, 1 }, { 50001, 1 } };
     size_t c;
     (void)state;
     tmp_path(p, sizeof p, ".csv");
@@ -3354,7 +3370,8 @@ static void test_mtmgr_us_stamps(void **state)
             assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
             assert_non_null(strstr(err, "no '//' line: likely a Movella DOT CSV; read it with --from csv --columns "
                                         "t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z "
-                                        "--units time=us,gyro=deg/s (if MT Manager's: --from mtmanager)"));
+                                        "--units time=us,gyro=deg/s (if MT Manager's, its '//' lines cut: put one "
+                                        "back before the header)"));
         } else {
             assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
             assert_int_equal(log.n, 12);
@@ -3381,11 +3398,81 @@ static void test_mtmgr_us_stamps(void **state)
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
     assert_true(log.t_ns[1] - log.t_ns[0] == 251100000LL);
     hx_log_free(&log);
-    /* given with --from mtmanager: read in ticks, as asked */
+    /* a column MT Manager writes and DOT does not (Roll, Pitch, Yaw): the
+     * rate rule alone, whose bound 50,001 (19.9996 Hz in us) is read */
+    write_mtmgr_steps_hdr(p, "", "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Roll,Pitch,Yaw", 0.0,
+                          12, 50001, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_true(log.t_ns[1] - log.t_ns[0] == 5000100000LL);
+    hx_log_free(&log);
+    write_mtmgr_steps_hdr(p, "", "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Roll,Pitch,Yaw", 0.0,
+                          12, 2511, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, "likely a Movella DOT CSV"));
+    /* given with --from mtmanager: the same refusal (it was read in ticks,
+     * a DOT CSV 100 times too slow with its deg/s read as rad/s, and only
+     * replay's units check said something, naming --units) */
     write_mtmgr_steps(p, "", 0.0, 12, 2511, 0);
-    assert_int_equal(hx_log_load(&log, p, HX_FMT_MTMGR, 0.0, err, sizeof err), 0);
-    assert_int_equal(log.n, 12);
-    assert_true(log.t_ns[1] - log.t_ns[0] == 251100000LL);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_MTMGR, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ".csv: SampleTimeFine steps by 2511: 3.982 Hz in 100 us ticks, 398.2 Hz in us, no "
+                                "'//' line: likely a Movella DOT CSV; read it with --from csv"));
+    unlink(p);
+}
+
+/* A Movella DOT CSV at any of DOT's rates (1, 4, 10, 12, 15, 20, 30, 60 and
+ * 120 Hz: DOT SDK's output rates): with no '//' line and a header of DOT's
+ * own columns, SampleTimeFine steps of 0.5 Hz or faster in us are DOT's.
+ * Below 20 Hz in us (0.2 Hz in ticks) they were read as an export, 100
+ * times too slow: the rate rule alone needs an IMU's rate in us. Half DOT's
+ * slowest rate is the bound (2,000,000 us refused, 2,000,001 read); a
+ * column DOT does not write, a '//' line, leave the export as it was. */
+static void test_mtmgr_dot_rates(void **state)
+{
+    static const int rates[] = { 1, 4, 10, 12, 15, 20, 30, 60, 120 };
+    char p[256], err[HX_ERR_SIZE];
+    hx_log_t log;
+    size_t c;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    for (c = 0; c < sizeof rates / sizeof rates[0]; c++) {
+        const long step = (1000000L + rates[c] / 2) / rates[c];
+        write_mtmgr_steps(p, "", 0.0, 12, step, 0);
+        err[0] = '\0';
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+        assert_non_null(strstr(err, "likely a Movella DOT CSV; read it with --from csv --columns"));
+        /* --from mtmanager: the same */
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_MTMGR, 0.0, err, sizeof err), -1);
+        assert_non_null(strstr(err, "likely a Movella DOT CSV; read it with --from csv --columns"));
+    }
+    write_mtmgr_steps(p, "", 0.0, 12, 100000, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ".csv: SampleTimeFine steps by 100000: 0.1 Hz in 100 us ticks, 10 Hz in us, no '//' "
+                                "line: likely a Movella DOT CSV"));
+    write_mtmgr_steps(p, "", 0.0, 12, 1000000, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, ": SampleTimeFine steps by 1e+06: 0.01 Hz in 100 us ticks, 1 Hz in us"));
+    /* DOT's other columns (Status, ClipCountAcc/Gyr) and a trailing comma */
+    write_mtmgr_steps_hdr(p, "", "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Status,ClipCountAcc,"
+                          "ClipCountGyr,", 0.0, 12, 100000, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, "likely a Movella DOT CSV"));
+    /* half DOT's slowest rate */
+    write_mtmgr_steps(p, "", 0.0, 12, 2000000, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    write_mtmgr_steps(p, "", 0.0, 12, 2000001, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_true(log.t_ns[1] - log.t_ns[0] == 200000100000LL);
+    hx_log_free(&log);
+    /* a column DOT does not write: read in ticks, 0.1 Hz */
+    write_mtmgr_steps_hdr(p, "", "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,StatusWord,Roll,Yaw",
+                          0.0, 12, 100000, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_true(log.t_ns[1] - log.t_ns[0] == 10000000000LL);
+    hx_log_free(&log);
+    /* a '//' line: MT Manager's, read in ticks */
+    write_mtmgr_steps(p, "// MT Manager\n", 0.0, 12, 100000, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_true(log.t_ns[1] - log.t_ns[0] == 10000000000LL);
     hx_log_free(&log);
     unlink(p);
 }
@@ -3568,6 +3655,7 @@ int main(void)
         cmocka_unit_test(test_mtmgr_refused),
         cmocka_unit_test(test_mtmgr_detect),
         cmocka_unit_test(test_mtmgr_us_stamps),
+        cmocka_unit_test(test_mtmgr_dot_rates),
         cmocka_unit_test(test_mtmgr_stated_rate),
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
         cmocka_unit_test(test_name_classify),

@@ -665,7 +665,7 @@ awk -F, 'NR > 1 { split($1, p, "."); us = p[1] * 1000000 + substr(p[2] "00000000
     BEGIN { print "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,Mag_Z" }' "$T/xw.csv" >"$T/xdotm.csv"
 dot_remedy="likely a Movella DOT CSV; read it with --from csv --columns t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s"
 expect_exit 1 "a Movella DOT CSV of Acc/Gyr/Mag is not read as an MT Manager export" "$H" info "$T/xdotm.csv"
-expect_err "xdotm.csv: SampleTimeFine steps by 2511: 3.982 Hz in 100 us ticks, 398.2 Hz in us, no '//' line: $dot_remedy (if MT Manager's: --from mtmanager)" \
+expect_err "xdotm.csv: SampleTimeFine steps by 2511: 3.982 Hz in 100 us ticks, 398.2 Hz in us, no '//' line: $dot_remedy (if MT Manager's, its '//' lines cut: put one back before the header)" \
     "DOT CSV of Acc/Gyr/Mag: the steps in both units, the DOT CSV and the --columns/--units remedy named"
 expect_exit 1 "... replay refuses it too" "$H" replay "$T/xdotm.csv" --quiet --out "$T/xdotm_out.csv"
 expect_err "$dot_remedy" "DOT CSV of Acc/Gyr/Mag: replay names the remedy"
@@ -674,8 +674,32 @@ expect_exit 0 "DOT CSV of Acc/Gyr/Mag read with the remedy" "$H" info "$T/xdotm.
     --columns t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s
 expect_out_re "^rate +398\.[0-9]+ Hz" "DOT CSV of Acc/Gyr/Mag read with the remedy: the walk's rate"
 expect_out_re "^duration +41\.[0-9]+ s" "DOT CSV of Acc/Gyr/Mag read with the remedy: the walk's duration"
-expect_exit 0 "DOT CSV of Acc/Gyr/Mag with --from mtmanager: read in ticks, as asked" "$H" info "$T/xdotm.csv" --from mtmanager
-expect_out_re "^rate +3\.98[0-9] Hz" "DOT CSV with --from mtmanager: 100 us ticks"
+# given with --from mtmanager it was read in ticks, as asked (3.98 Hz, the gyro's deg/s as rad/s; info exit 0, and
+# replay's units error hinted 'divide by 1000', which --units cannot apply to this format): now the same refusal;
+# an export whose '//' lines were cut is read with one put back
+expect_exit 1 "DOT CSV of Acc/Gyr/Mag with --from mtmanager: refused the same" "$H" info "$T/xdotm.csv" --from mtmanager
+expect_err "xdotm.csv: SampleTimeFine steps by 2511: 3.982 Hz in 100 us ticks, 398.2 Hz in us, no '//' line: $dot_remedy (if MT Manager's, its '//' lines cut: put one back before the header)" \
+    "DOT CSV with --from mtmanager: the DOT CSV and the remedy named"
+expect_exit 1 "... replay --from mtmanager too" "$H" replay "$T/xdotm.csv" --from mtmanager --quiet --out /dev/null
+expect_err "$dot_remedy" "DOT CSV, replay --from mtmanager: the DOT remedy"
+if grep -q "divide by 1000" "$T/err"; then fail "DOT CSV, replay --from mtmanager: the time-unit hint"; else pass "DOT CSV, replay --from mtmanager: no 'divide by 1000' hint"; fi
+{ echo "// MT Manager"; cat "$T/xdotm.csv"; } >"$T/xdotm_pre.csv"
+expect_exit 0 "the same file with a '//' line: read as an export, in ticks" "$H" info "$T/xdotm_pre.csv"
+expect_out_re "^rate +3\.98[0-9] Hz" "a '//' line: 100 us ticks"
+# a DOT logging at 10 Hz or 1 Hz (its rates: 1, 4, 10, 12, 15, 20, 30, 60, 120 Hz): 0.1 and 0.01 Hz in ticks, 10 and
+# 1 Hz in us, below the 20 Hz an IMU's band starts at, so it was read as an export 100 times too slow (0.1 Hz, exit
+# 0); a header of DOT's own columns with no '//' line is now refused at any DOT rate (every 40th and 400th sample of
+# the walk, stamped 100,000 and 1,000,000 us apart)
+for r in 10 1; do
+    awk -F, -v k=$((400 / r)) -v st=$((1000000 / r)) 'NR > 1 && (NR - 2) % k == 0 { i = (NR - 2) / k
+        printf "%d,%d,%s,%s,%s,%.6f,%.6f,%.6f,0.41,-0.12,0.83\n", i, 12345678 + i * st, $2, $3, $4, $5 * 57.29578, $6 * 57.29578, $7 * 57.29578 }
+        BEGIN { print "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,Mag_Z" }' "$T/xw.csv" >"$T/xdot$r.csv"
+    expect_exit 1 "a Movella DOT CSV at $r Hz is not read as an MT Manager export" "$H" info "$T/xdot$r.csv"
+    expect_err "xdot$r.csv: SampleTimeFine steps by .*, $r Hz in us, no '//' line: $dot_remedy" "DOT CSV at $r Hz: refused, the remedy named"
+    expect_exit 0 "DOT CSV at $r Hz read with the remedy" "$H" info "$T/xdot$r.csv" --from csv \
+        --columns t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s
+    expect_out_re "^rate +$r(\.0+)? Hz" "DOT CSV at $r Hz read with the remedy: $r Hz"
+done
 # a reader's message is whole behind a long path: the errors were cut at
 # 320 bytes, path included (info, allan, psd and convert left the DOT
 # remedy's --units out behind a 110-byte path; 2026-11-30)
@@ -684,10 +708,10 @@ mkdir -p "$LP"
 cp "$T/xdotm.csv" "$LP/dot_recording_left_foot.csv"
 for c in info allan psd; do
     expect_exit 1 "DOT CSV behind a long path: $c refuses it" "$H" $c "$LP/dot_recording_left_foot.csv"
-    expect_err "$dot_remedy (if MT Manager's: --from mtmanager)" "DOT CSV behind a long path: $c's message whole"
+    expect_err "$dot_remedy (if MT Manager's, its '//' lines cut: put one back before the header)" "DOT CSV behind a long path: $c's message whole"
 done
 expect_exit 1 "DOT CSV behind a long path: convert refuses it" "$H" convert "$LP/dot_recording_left_foot.csv" "$T/lp.csv"
-expect_err "$dot_remedy (if MT Manager's: --from mtmanager)" "DOT CSV behind a long path: convert's message whole"
+expect_err "$dot_remedy (if MT Manager's, its '//' lines cut: put one back before the header)" "DOT CSV behind a long path: convert's message whole"
 sed '1s/.*/timestamp,acc_x_raw,acc_y_raw,acc_z_raw,gyr_x_raw,gyr_y_raw,gyr_z_raw/' "$T/xw.csv" \
     >"$LP/phone_export_without_the_interchange_names.csv"
 expect_exit 1 "other names behind a long path: refused" "$H" info "$LP/phone_export_without_the_interchange_names.csv"
