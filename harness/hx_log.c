@@ -1036,27 +1036,22 @@ static void set_cols(hx_reader_t *r, int t, int a0, int g0)
     }
 }
 
-/* The first rows of an MT Manager export after its header (on line
- * header_line), read ahead on a second handle of the file for their
- * SampleTimeFine (hx_mtmgr_peek): the reader's own handle stays at the
- * first row, and a fault there (a NUL byte, a line too long, a read error)
- * ends the look ahead and is left for the reading to meet at its line. */
-static void mtmgr_peek(hx_reader_t *r, long header_line)
+/* The first rows of an MT Manager export after its header, read ahead for
+ * their SampleTimeFine (hx_mtmgr_peek) on the reader's own handle, which
+ * the caller then puts back at the first row (gzclearerr, gzseek): a fault
+ * there (a NUL byte, a line too long, a read error) ends the look ahead
+ * and is left for the reading to meet at its line. It opened the file a
+ * second time for this until 2026-11-30. */
+static void mtmgr_peek(hx_reader_t *r)
 {
     char *f[HX_MAX_COLS];
-    long line = 0;
-    gzFile gz;
-    if (strlen(r->path) + 1 >= sizeof r->path || (gz = gzopen(r->path, "rb")) == NULL) {
-        return; /* a path cut to fit, or gone: no look ahead */
-    }
-    (void)gzbuffer(gz, 1 << 16);
-    while (gzgets(gz, r->line, (int)sizeof r->line) != NULL) {
+    while (gzgets(r->gz, r->line, (int)sizeof r->line) != NULL) {
         const size_t len = strlen(r->line);
         int n;
-        if (len == 0 || (r->line[len - 1] != '\n' && !gzeof(gz))) {
+        if (len == 0 || (r->line[len - 1] != '\n' && !gzeof(r->gz))) {
             break;
         }
-        if (++line <= header_line || blank(r->line)) {
+        if (blank(r->line)) {
             continue;
         }
         n = split(r->line, r->delim, f, HX_MAX_COLS);
@@ -1064,7 +1059,6 @@ static void mtmgr_peek(hx_reader_t *r, long header_line)
             break;
         }
     }
-    gzclose(gz);
 }
 
 /* Xsens MT Manager's export (hx_xsens.h): the '//' lines, the header and
@@ -1118,7 +1112,12 @@ static int setup_mtmgr(hx_reader_t *r, double rate_hz)
         return -1;
     }
     if (r->mt.time_src == HX_MTMGR_TIME_STF) {
-        mtmgr_peek(r, lines);
+        mtmgr_peek(r);
+        gzclearerr(r->gz); /* a read error of the look ahead is met again at its line */
+        if (gzseek(r->gz, pos, SEEK_SET) != pos) {
+            set_err(r, "%s:%ld: cannot read the first row again (seek failed)", r->path, r->stats.lines);
+            return -1;
+        }
         if (hx_mtmgr_stamps(&r->mt, msg, sizeof msg)) {
             add_warn(r, "%s:%ld: %s", r->path, r->mt.stated_line, msg);
         }

@@ -3522,6 +3522,30 @@ static void test_mtmgr_stated_rate(void **state)
     assert_non_null(strstr(log.warnings, "steps by 25 ticks of 100 us (the median of the first 256 rows): 400 Hz"));
     hx_log_free(&log);
     unlink(p);
+    /* the same compressed: the look ahead reads the first 256 rows on the
+     * reader's own handle (a second open of the file until 2026-11-30),
+     * which is put back at the first row: every row read once, in order */
+    {
+        gzFile gz;
+        int i;
+        tmp_path(p, sizeof p, ".csv.gz");
+        gz = gzopen(p, "wb");
+        assert_non_null(gz);
+        gzprintf(gz, "// Update Rate: 100.0Hz\n" DOT_ACC_GYR_MAG "\n\n");
+        for (i = 0; i < 300; i++) {
+            gzprintf(gz, "%d,%ld,0.1,0.2,9.8,0.01,0.02,%d,0.4,-0.1,0.8\n", i, 1000L + 25L * i, i);
+        }
+        assert_int_equal(gzclose(gz), Z_OK);
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+        assert_non_null(strstr(log.warnings, "steps by 25 ticks of 100 us (the median of the first 256 rows): 400 Hz"));
+        assert_int_equal(log.n, 300);
+        for (i = 0; i < 300; i++) {
+            assert_true(log.t_ns[i] == (1000LL + 25LL * i) * 100000LL);
+            assert_true(log.gyr[i][2] == (double)i);
+        }
+        hx_log_free(&log);
+        unlink(p);
+    }
 }
 
 static int layout_reset(void **state)
