@@ -50,7 +50,7 @@ int sg_stamps_check(const hx_log_t *log, const char *path, int domain, char *err
     const size_t n = log->n < HX_STAMPS_PROBE_N ? log->n : (size_t)HX_STAMPS_PROBE_N;
     const double max_gap_s = (double)fnav_nav_config_default.max_gap_s;
     hx_bursts_t bu;
-    char what[96];
+    char what[96], msg[512];
     if (err_size > 0u) {
         err[0] = '\0';
     }
@@ -64,7 +64,8 @@ int sg_stamps_check(const hx_log_t *log, const char *path, int domain, char *err
     }
     snprintf(what, sizeof what, "the taus and frequencies are read at %.4g Hz, not the sampling rate",
              sg_log_rate(log));
-    (void)hx_nav_bursts_warn("simgap", path, log->t_ns, n, log->n > n, what);
+    /* the verdict above, not hx_nav_bursts_warn's second test of the same stamps */
+    hx_warn("simgap", "%s: %s", path, hx_bursts_text(&bu, what, "Time stamps in bursts", msg, sizeof msg));
     return 0;
 }
 
