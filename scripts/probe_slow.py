@@ -95,8 +95,9 @@ import time
 from fractions import Fraction
 
 import numpy as np
-from numpy.lib.stride_tricks import sliding_window_view
 from scipy.signal import resample_poly
+
+from shoe_statistic import shoe_terms
 
 H = os.environ.get('HARNESS', 'bin/harness')
 DATA = os.environ.get('DATA', '../shared/data')
@@ -225,13 +226,8 @@ def shoe_parts(d, g=9.80665, sigma_a=0.01, sigma_g=np.radians(0.1), window_s=0.0
     W = int(round(window_s / dt))
     W += W % 2 == 0
     n, h = len(d), W // 2
-    fw = sliding_window_view(d[:, 1:4], (W, 3)).reshape(-1, W, 3)
-    ww = sliding_window_view(d[:, 4:7], (W, 3)).reshape(-1, W, 3)
-    u = fw.mean(1)
-    u /= np.linalg.norm(u, axis=1)[:, None]
     ta, tg = np.full(n, np.nan), np.full(n, np.nan)
-    ta[h:n - h] = np.mean(np.sum((fw - g * u[:, None, :]) ** 2, 2), 1) / sigma_a ** 2
-    tg[h:n - h] = np.mean(np.sum(ww ** 2, 2), 1) / sigma_g ** 2
+    ta[h:n - h], tg[h:n - h] = shoe_terms(d[:, 1:4], d[:, 4:7], W, g, sigma_a, sigma_g)
     return ta, tg
 
 
@@ -374,7 +370,7 @@ def main():
                            np.array2string(sd0, precision=5)))
                 for det, ex in dets:
                     rc, j, st, traj, err = replay(p, '.' + det, ex)
-                    jr, str_ = rec[det][1], rec[det][2]
+                    jr = rec[det][1]
                     share, hits, vmax = swing_stats(st0, traj0, traj, s, t0)
                     if det == 'shoe' and s != 1.0:
                         ex = explain(st0, traj0, traj, out, parts1, d1, s, t0)

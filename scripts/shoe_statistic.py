@@ -18,8 +18,22 @@ import argparse
 import sys
 
 import numpy as np
+from numpy.lib.stride_tricks import sliding_window_view
 
 G = 9.80665
+
+
+def shoe_terms(f, w, W, g=G, sigma_a=0.01, sigma_g=0.1 * np.pi / 180.0):
+    """The SHOE statistic's two terms over each window of W samples, the
+    window starting at sample k = 0 .. n - W: 1/W sum |f_j - g u|^2 /
+    sigma_a^2 and 1/W sum |w_j|^2 / sigma_g^2 (T is their sum); f and w are
+    n x 3 arrays. Also scripts/probe_slow.py's."""
+    fw = sliding_window_view(f, (W, 3)).reshape(-1, W, 3)
+    ww = sliding_window_view(w, (W, 3)).reshape(-1, W, 3)
+    u = fw.mean(1)
+    u /= np.linalg.norm(u, axis=1)[:, None]
+    return (np.mean(np.sum((fw - g * u[:, None, :]) ** 2, 2), 1) / sigma_a ** 2,
+            np.mean(np.sum(ww ** 2, 2), 1) / sigma_g ** 2)
 
 
 def main():
@@ -35,15 +49,8 @@ def main():
     if d.ndim != 2 or d.shape[1] < 7 or d.shape[0] <= a.window:
         sys.exit("shoe_statistic.py: %s: expected at least 7 columns and more rows than the window" % a.log)
     f, w = d[:, 1:4], d[:, 4:7]
-    sa, sg, W = 0.01, 0.1 * np.pi / 180.0, a.window
-    n = len(f) - W
-    T = np.empty(n)
-    for k in range(n):
-        fw, ww = f[k:k + W], w[k:k + W]
-        u = fw.mean(0)
-        u /= np.linalg.norm(u)
-        T[k] = np.mean(np.sum((fw - G * u) ** 2, 1) / sa ** 2 + np.sum(ww ** 2, 1) / sg ** 2)
-    lt = np.log10(T)
+    ta, tg = shoe_terms(f, w, a.window)
+    lt = np.log10((ta + tg)[:len(f) - a.window])  # every window but the last, as before
     rest = lt < np.log10(a.gamma)
     print("max |w| %.2f rad/s, max ||f| - g| %.2f m/s^2" %
           (np.linalg.norm(w, axis=1).max(), np.abs(np.linalg.norm(f, axis=1) - G).max()))
