@@ -49,12 +49,14 @@ Rounding an event to the copy's packets moves it by up to half a copy
 sample (s / 2 original samples); eval's errors are whole samples.
 
 Usage: /usr/bin/python3 scripts/probe_slow_ipol.py [--factors 1,0.9,0.8,0.7,0.6,0.5]
-       [--tmp DIR] [--keep] [--selftest]
+       [--seed N] [--tmp DIR] [--keep] [--selftest]
 $DATA (default ../shared/data) holds ipol_gait_xsens; trials 1-x to 3-x
 (subjects 1-3) only. HARNESS=path overrides bin/harness. About 15 s for
 the six factors (progress on stderr). --tmp DIR (or --keep) keeps the
 copies, DIR/sS/ipol_gait_xsens/, for eval or replay by hand. --selftest
-checks ipol_packet() and map_events() and exits.
+checks ipol_packet() and map_events() and exits. --seed N (N > 0) draws
+another realisation of the added noise (0, the default: the documented
+one), to see how much the counts owe to it.
 """
 import glob
 import json
@@ -375,6 +377,16 @@ def main():
     if '--keep' in args:
         keep = True
         args.remove('--keep')
+    seed = 0
+    if '--seed' in args:
+        i = args.index('--seed')
+        try:
+            seed = int(args[i + 1])
+        except (IndexError, ValueError):
+            sys.exit('probe_slow_ipol.py: --seed takes a whole number from 0 up')
+        if seed < 0:
+            sys.exit('probe_slow_ipol.py: --seed takes a whole number from 0 up')
+        del args[i:i + 2]
     if args:
         sys.exit(__doc__)
     src = os.path.join(ps.DATA, 'ipol_gait_xsens')
@@ -435,7 +447,7 @@ def main():
                 cad += expert_cadence(mj)
                 for foot in ('lf', 'rf'):
                     header, c0, tu, du, downu, g, bias_g, sd0, ti, fi, _ = prep[(n, foot)]
-                    rng = ps.factor_rng(s, ti, fi)
+                    rng = ps.factor_rng(s, ti, fi, *([seed] if seed else []))
                     out, _ = ps.slowed(tu, du[:, 0:6], downu, s, g, bias_g, sd0, rng)
                     k = np.rint(out[:, 0] * RATE).astype(int)  # the copy's packets (tu starts at packet 0)
                     kmin = ipol_packet(c0, s) if c0 else 0
