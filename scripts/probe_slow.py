@@ -154,6 +154,50 @@ def increasing(t):
     return keep
 
 
+def load_converted(path):
+    """The CSV of `bin/harness convert` (t, ax..gz), rows with a time stamp
+    not after the one before dropped."""
+    d0 = np.loadtxt(path, delimiter=',', skiprows=1)
+    return d0[increasing(d0[:, 0])]
+
+
+def uniform_grid(d0, t0, dt):
+    """The log d0 (t, then channels) on the grid t0 + k dt up to its last
+    stamp, each channel interpolated linearly (before d0's first stamp:
+    its first row)."""
+    tu = t0 + dt * np.arange(int(np.floor((d0[-1, 0] - t0) / dt)) + 1)
+    du = np.column_stack([np.interp(tu, d0[:, 0], d0[:, c]) for c in range(1, d0.shape[1])])
+    return tu, du
+
+
+def tilt_on_grid(tu, traj0, t_offset=0.0):
+    """tilt_down() of the replay traj0 on the grid tu (unit vectors); the
+    trajectory's t plus t_offset is the log's time."""
+    ttr = traj0['t'] + t_offset
+    ktr = increasing(ttr)
+    down = tilt_down(traj0)
+    downu = np.column_stack([np.interp(tu, ttr[ktr], down[ktr, c]) for c in range(3)])
+    downu /= np.linalg.norm(downu, axis=1)[:, None]
+    return downu
+
+
+def still_stats(d0, still0):
+    """Over the rows still0 (the first still second): |mean f| (the g of the
+    transform), the gyro's mean (its turn-on bias), each channel's standard
+    deviation and |f| per row."""
+    g = float(np.linalg.norm(d0[still0, 1:4].mean(0)))
+    bias_g = d0[still0, 4:7].mean(0)
+    sd0 = d0[still0, 1:7].std(0)
+    fnorm0 = np.linalg.norm(d0[still0, 1:4], axis=1)
+    return g, bias_g, sd0, fnorm0
+
+
+def factor_rng(s, *more):
+    """The added noise's generator for factor s: the same copy whatever the
+    list of factors (more: further seed words, e.g. a file's)."""
+    return np.random.default_rng([58, int(round(1000 * s)), *more])
+
+
 def slowed(tu, du, downu, s, g, bias_g, sd0, rng):
     """The uniform-grid log (tu, du = f, w) played slower by s; returns rows
     t, ax..gz at the same rate and the noise levels before the added noise."""
@@ -316,8 +360,7 @@ def main():
             r = subprocess.run([H, 'convert', log, base], capture_output=True, text=True)
             if r.returncode:
                 sys.exit('probe_slow.py: %s: convert failed: %s' % (log, r.stderr.strip()))
-            d0 = np.loadtxt(base, delimiter=',', skiprows=1)
-            d0 = d0[increasing(d0[:, 0])]
+            d0 = load_converted(base)
             rec = {}
             for det, ex in dets:
                 rec[det] = replay(base, '.rec.' + det, ex)
@@ -330,17 +373,9 @@ def main():
             if not tr_still.all():
                 print('warning: %s: the first %.1f s is not all stance' % (name, STILL_S))
             dt = np.median(np.diff(d0[:, 0]))
-            tu = t0 + dt * np.arange(int(np.floor((d0[-1, 0] - t0) / dt)) + 1)
-            du = np.column_stack([np.interp(tu, d0[:, 0], d0[:, c]) for c in range(1, 7)])
-            ttr = traj0['t']
-            ktr = increasing(ttr)
-            down = tilt_down(traj0)
-            downu = np.column_stack([np.interp(tu, ttr[ktr], down[ktr, c]) for c in range(3)])
-            downu /= np.linalg.norm(downu, axis=1)[:, None]
-            g = float(np.linalg.norm(d0[still0, 1:4].mean(0)))
-            bias_g = d0[still0, 4:7].mean(0)
-            sd0 = d0[still0, 1:7].std(0)
-            fnorm0 = np.linalg.norm(d0[still0, 1:4], axis=1)
+            tu, du = uniform_grid(d0, t0, dt)
+            downu = tilt_on_grid(tu, traj0)
+            g, bias_g, sd0, fnorm0 = still_stats(d0, still0)
             print('\n%s: %.1f Hz (median interval), %d rows on the grid, still |f| %.4f m/s^2, '
                   'still noise sd acc %.4f %.4f %.4f m/s^2, gyro %.5f %.5f %.5f rad/s' %
                   (log, 1 / dt, len(tu), g, *sd0))
@@ -357,7 +392,7 @@ def main():
             parts1 = shoe_parts(d1)
             notes = []
             for s in factors:
-                rng = np.random.default_rng([58, int(round(1000 * s))])  # the same copy whatever the list of factors
+                rng = factor_rng(s)
                 out, sd = slowed(tu, du, downu, s, g, bias_g, sd0, rng)
                 p = os.path.join(tmp, '%s.s%.2f.csv' % (name, s))
                 np.savetxt(p, out, delimiter=',', header='t,ax,ay,az,gx,gy,gz', comments='', fmt='%.9g')

@@ -520,5 +520,21 @@ if [ -n "$D" ]; then
     else fail "eval GX2 closure against scripts/eval_closure_ref.py: $(cat "$T/ref")"; fi
 fi
 
+# --- scripts/probe_slow_ipol.py: the ipol events mapped to a slowed copy's
+# packets (round(p / s), halves up, NaN kept, other keys kept), and with the
+# shared data the copy at s = 1 (the packet grid from packet 0, dropped
+# packets interpolated, written in the ipol format into an ipol-only data
+# folder) scored by eval as the original files are, row by row
+# (docs/harness.md, "Slow walking, real walks played slower")
+PS="$(dirname "$0")/../../scripts/probe_slow_ipol.py"
+expect_exit 0 "probe_slow_ipol.py --selftest: the event mapping" /usr/bin/python3 "$PS" --selftest
+if [ -n "$D" ] && [ -d "$D/ipol_gait_xsens" ]; then
+    if HARNESS="$H" DATA="$D" /usr/bin/python3 "$PS" --factors 1 --tmp "$T/pslow" >"$T/pslow.txt" 2>"$T/pslow.err" &&
+        grep -q "^Check at s = 1 .*: the same ipol summary" "$T/pslow.txt" &&
+        grep -q "^  per trial and foot: every one of the 28 rows the same" "$T/pslow.txt"; then
+        pass "probe_slow_ipol.py at s = 1: eval on the copies as on the originals"
+    else fail "probe_slow_ipol.py at s = 1: $(grep -A3 '^Check' "$T/pslow.txt") $(tail -3 "$T/pslow.err")"; fi
+fi
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]
