@@ -63,6 +63,7 @@ static const param_t k_params[] = {
     { "min_zupt_s", P_REAL, 1.0, "a stance shorter than this is ignored, s" },
     { "min_stance_s", P_REAL, 1.0, "segmentation: shortest stance, s" },
     { "min_swing_s", P_REAL, 1.0, "segmentation: shortest swing, s" },
+    { "event_window_s", P_REAL, 1.0, "gait events: foot-off search after a swing begins, foot-strike search before a stance, s" },
     { "gravity", P_REAL, 1.0, "local gravity, m/s^2" },
     { "accel_motion_noise", P_REAL, 1.0, "extra accel process noise, m/s^2/sqrt(Hz)" },
     { "gyro_motion_noise_dps", P_REAL, 3.14159265358979323846 / 180.0, "extra gyro process noise, deg/s/sqrt(Hz)" },
@@ -107,6 +108,7 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     if (strcmp(key, "min_stance_s") == 0) return &c->stance.min_stance_s;
     if (strcmp(key, "min_zupt_s") == 0) return &c->stance.min_zupt_s;
     if (strcmp(key, "min_swing_s") == 0) return &c->stance.min_swing_s;
+    if (strcmp(key, "event_window_s") == 0) return &c->stance.event_window_s;
     if (strcmp(key, "gravity") == 0) return &c->gravity_mps2;
     if (strcmp(key, "accel_motion_noise") == 0) return &c->accel_motion_noise_mps2_rthz;
     if (strcmp(key, "gyro_motion_noise_dps") == 0) return &c->gyro_motion_noise_rps_rthz;

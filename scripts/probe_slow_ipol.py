@@ -49,7 +49,7 @@ Rounding an event to the copy's packets moves it by up to half a copy
 sample (s / 2 original samples); eval's errors are whole samples.
 
 Usage: /usr/bin/python3 scripts/probe_slow_ipol.py [--factors 1,0.9,0.8,0.7,0.6,0.5]
-       [--seed N] [--tmp DIR] [--keep] [--selftest]
+       [--seed N] [--param KEY=VALUE ...] [--tmp DIR] [--keep] [--selftest]
 $DATA (default ../shared/data) holds ipol_gait_xsens; trials 1-x to 3-x
 (subjects 1-3) only. HARNESS=path overrides bin/harness. About 15 s for
 the six factors (progress on stderr). --tmp DIR (or --keep) keeps the
@@ -57,6 +57,19 @@ copies, DIR/sS/ipol_gait_xsens/, for eval or replay by hand. --selftest
 checks ipol_packet() and map_events() and exits. --seed N (N > 0) draws
 another realisation of the added noise (0, the default: the documented
 one), to see how much the counts owe to it.
+
+--param KEY=VALUE (repeatable; keys: `bin/harness replay --param help`)
+is passed to every eval (the originals' and each copy's) and to the
+`replay --strides` runs that explain the missed and spurious strides, to
+score other detector settings on the same copies: the copies themselves do
+not depend on it (the tilt comes from a replay with the defaults), so two
+runs with the same --seed differ only by the settings. The explanations
+follow gamma, margin_dec, floor_window_s, adapt_max_ratio and min_swing_s
+(the threshold's floor and the swing length they quote) and the foot-off
+paragraph event_window_s (its window in samples of the copy); the
+comparison with docs/results.md (written with the defaults) then says
+whether the settings move the originals' ipol figures. Without --param the
+output is the same as before the option.
 """
 import glob
 import json
@@ -76,6 +89,11 @@ import probe_slow as ps
 
 RATE = 100.0
 GAMMA = 1e5  # footnav's default SHOE threshold (docs/navigation.md, "Stance detector")
+# --param KEY=VALUE given on the command line, passed to eval and replay
+PARAMS = []
+# the detector settings the explanations quote, defaults of `bin/harness replay --param help`; --param overrides
+SET = {'gamma': GAMMA, 'margin_dec': 0.4, 'floor_window_s': 2.0, 'adapt_max_ratio': 10.0, 'min_swing_s': 0.25,
+       'event_window_s': 0.3}
 EVENT_KEYS = ('LeftFootEvents', 'RightFootEvents')
 PAIR_KEYS = ('TrialBoundaries', 'UTurnBoundaries')
 
@@ -175,10 +193,16 @@ def parse_summary(sec):
     return {kk: float(m.group(i + 1)) for i, kk in enumerate(k)}
 
 
+def param_args():
+    """The --param options given on the command line, for bin/harness."""
+    return [a for kv in PARAMS for a in ('--param', kv)]
+
+
 def run_eval(ddir):
-    """`bin/harness eval` on ddir; (ipol rows {(trial, foot): (...)}, summary dict, exit, stderr)."""
+    """`bin/harness eval` on ddir (with the --param settings); (ipol rows {(trial, foot): (...)}, summary dict,
+    exit, stderr)."""
     res = os.path.join(ddir, 'res.md')
-    r = subprocess.run([ps.H, 'eval', '--no-plots', '--no-experiments', '--out', res],
+    r = subprocess.run([ps.H, 'eval', '--no-plots', '--no-experiments', '--out', res, *param_args()],
                        env=dict(os.environ, FNAV_DATA_DIR=ddir), capture_output=True, text=True)
     rows, summ = {}, None
     try:
@@ -229,13 +253,16 @@ def match(js, key, sw, fo, fs, last):
 def threshold_log10(lt):
     """The adaptive threshold's log10 per sample (docs/navigation.md,
     "Adaptive threshold"), approximately: the floor is the minimum of log10
-    T over the 2 s before (not the 8 blocks' minima), never below log10
-    gamma - 0.4."""
-    n, w = len(lt), int(2 * RATE)
+    T over the floor_window_s (2 s) before (not the 8 blocks' minima), never
+    below log10 gamma - margin_dec (0.4); the threshold the floor plus
+    margin_dec, clamped to [gamma, gamma adapt_max_ratio] (the --param
+    settings, SET)."""
+    n, w = len(lt), int(round(SET['floor_window_s'] * RATE))
+    lg, mg = math.log10(SET['gamma']), SET['margin_dec']
     fl = np.array([np.nanmin(lt[max(0, i - w):i]) if i > 0 and np.isfinite(lt[max(0, i - w):i]).any() else np.nan
                    for i in range(n)])
-    fl = np.maximum(np.nan_to_num(fl, nan=math.log10(GAMMA) - 0.4), math.log10(GAMMA) - 0.4)
-    return np.clip(fl + 0.4, math.log10(GAMMA), math.log10(GAMMA) + 1)
+    fl = np.maximum(np.nan_to_num(fl, nan=lg - mg), lg - mg)
+    return np.clip(fl + mg, lg, lg + math.log10(SET['adapt_max_ratio']))
 
 
 def runs_below(lt, thr, a, b):
@@ -252,7 +279,8 @@ def replay_strides(copy_txt, kmin, tmp):
     foot-strike (None where the CSV has none), in packets of the copy; None
     when the replay fails."""
     st_csv = os.path.join(tmp, 'replay.str.csv')
-    r = subprocess.run([ps.H, 'replay', copy_txt, '--strides', st_csv, '--quiet'], capture_output=True, text=True)
+    r = subprocess.run([ps.H, 'replay', copy_txt, '--strides', st_csv, '--quiet', *param_args()], capture_output=True,
+                       text=True)
     if r.returncode:
         log('warning: %s: replay failed: %s' % (copy_txt, r.stderr.strip()))
         return None
@@ -266,7 +294,8 @@ def fo_window(js, key, rs):
     """Per evaluated expert swing (inside the trial, clear of the U-turn)
     with a detected swing over it: how far the expert's foot-off lies after
     the detected swing's start, and the reported foot-off's error (packets;
-    the foot-off search spans 0.3 s from the swing's start)."""
+    the foot-off search spans event_window_s, 0.3 s, from the swing's
+    start)."""
     tb, ub = js['TrialBoundaries'], js.get('UTurnBoundaries') or [0, 0]
     sw, fo, _ = rs
     out = []
@@ -298,7 +327,7 @@ def explain(copy_txt, js, key, kmin, tmp):
     n_exp, missed, spur = match(js, key, sw, fo, fs, last)
     out, tags = [], []
     row = lambda p: p - kmin
-    min_swing = int(round(0.25 * RATE))  # min_swing_s, samples of the copy
+    min_swing = int(round(SET['min_swing_s'] * RATE))  # min_swing_s, samples of the copy
     for s0, s1, hit, bfo, bfs in missed:
         up = [n for _, n in runs_below(-lt, -thr, row(s0), row(s1))]  # runs of T over the threshold
         dsw = [x for x in sw if overlaps(x[0], x[1], s0, s1)]
@@ -387,6 +416,19 @@ def main():
         if seed < 0:
             sys.exit('probe_slow_ipol.py: --seed takes a whole number from 0 up')
         del args[i:i + 2]
+    while '--param' in args:
+        i = args.index('--param')
+        kv = args[i + 1] if i + 1 < len(args) else ''
+        k, _, v = kv.partition('=')
+        if not k or not v:
+            sys.exit('probe_slow_ipol.py: --param takes KEY=VALUE (keys: bin/harness replay --param help)')
+        if k in SET:
+            try:
+                SET[k] = float(v)
+            except ValueError:
+                sys.exit('probe_slow_ipol.py: --param %s: %s is not a number' % (k, v))
+        PARAMS.append(kv)
+        del args[i:i + 2]
     if args:
         sys.exit(__doc__)
     src = os.path.join(ps.DATA, 'ipol_gait_xsens')
@@ -474,6 +516,8 @@ def main():
                         fw += fo_window(mj, key, rs)
             results[s] = (rows, summ, rc, np.array(cad), kmins, np.array(fw))
         # the report
+        if PARAMS:
+            print('Settings (eval and replay): %s' % ' '.join('--param ' + kv for kv in PARAMS))
         print('Reference, eval on the original files: %d trials and feet, %d expert strides, %d detected, %d missed, '
               '%d spurious, median |FO| %.1f (bias %+.1f), |FS| %.1f (bias %+.1f) samples (exit %d)' %
               (summ0['files'], summ0['expert'], summ0['detected'], summ0['missed'], summ0['spurious'], summ0['fo'],
@@ -488,17 +532,18 @@ def main():
                   (s, np.median(cad), np.percentile(cad, 10), np.percentile(cad, 90), m['expert'], m['detected'],
                    m['missed'], m['spurious'], m['fo'], m['fo_bias'], m['fs'], m['fs_bias'], s * m['fo'],
                    s * m['fo_bias'], s * m['fs'], s * m['fs_bias'], rc))
-        print('\nThe foot-off search (the largest |f| in the 0.3 s, 30 samples, after the detected swing\'s start) per s: '
+        nev = int(round(SET['event_window_s'] * RATE))  # the foot-off search, samples of the copy
+        print('\nThe foot-off search (the largest |f| in the %g s, %d samples, after the detected swing\'s start) per s: '
               'expert swings of the straight phases with a detected swing over them; the expert\'s foot-off after '
-              'that swing\'s start, median (10th-90th percentile); the share beyond 30 samples; the reported foot-off\'s '
-              'median error, for those beyond and those within (samples of the copy):')
+              'that swing\'s start, median (10th-90th percentile); the share beyond %d samples; the reported foot-off\'s '
+              'median error, for those beyond and those within (samples of the copy):' % (SET['event_window_s'], nev, nev))
         for s in factors:
             fw = results[s][5]
-            far = fw[:, 0] > 30
+            far = fw[:, 0] > nev
             print('s %.2f: %d swings, expert foot-off %.0f (%.0f-%.0f) samples after the swing\'s start, %.0f %% beyond '
-                  '30; foot-off error median %+.0f beyond, %+.0f within (median |error| %.1f within)' %
+                  '%d; foot-off error median %+.0f beyond, %+.0f within (median |error| %.1f within)' %
                   (s, len(fw), np.median(fw[:, 0]), np.percentile(fw[:, 0], 10), np.percentile(fw[:, 0], 90),
-                   100 * far.mean(), np.median(fw[far, 1]) if far.any() else float('nan'),
+                   100 * far.mean(), nev, np.median(fw[far, 1]) if far.any() else float('nan'),
                    np.median(fw[~far, 1]), np.median(np.abs(fw[~far, 1]))))
         try:
             with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'docs', 'results.md')) as fh:
@@ -507,9 +552,9 @@ def main():
             doc = None
         if doc is not None:
             print('\ndocs/results.md: %d expert strides, %d missed, %d spurious, median |FO| %.1f (bias %+.1f), |FS| %.1f '
-                  '(bias %+.1f); eval on the originals now: %s' %
+                  '(bias %+.1f); eval on the originals now%s: %s' %
                   (doc['expert'], doc['missed'], doc['spurious'], doc['fo'], doc['fo_bias'], doc['fs'], doc['fs_bias'],
-                   'the same' if all(doc[k] == summ0[k] for k in doc) else 'DIFFERENT'))
+                   ' (with the --param settings)' if PARAMS else '', 'the same' if all(doc[k] == summ0[k] for k in doc) else 'DIFFERENT'))
         if 1.0 in results:
             rows, m = results[1.0][0:2]
             same = all(m[k] == summ0[k] for k in ('expert', 'detected', 'missed', 'spurious', 'fo', 'fs', 'fo_bias',

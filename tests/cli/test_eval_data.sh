@@ -535,6 +535,22 @@ if [ -n "$D" ] && [ -d "$D/ipol_gait_xsens" ]; then
         pass "probe_slow_ipol.py at s = 1: eval on the copies as on the originals"
     else fail "probe_slow_ipol.py at s = 1: $(grep -A3 '^Check' "$T/pslow.txt") $(tail -3 "$T/pslow.err")"; fi
 fi
+# --param KEY=VALUE goes to eval (the originals' and the copies') and to the
+# replays that explain the misses: min_swing_s=0.6 misses strides at s = 1
+# (first and last steps), the originals' figures then differ from
+# docs/results.md, and replay's matching agrees with eval's on every row
+expect_exit 1 "probe_slow_ipol.py --param without =" /usr/bin/python3 "$PS" --param min_swing_s
+expect_err "takes KEY=VALUE" "probe_slow_ipol.py --param without =: says what it takes"
+if [ -n "$D" ] && [ -d "$D/ipol_gait_xsens" ]; then
+    if HARNESS="$H" DATA="$D" /usr/bin/python3 "$PS" --factors 1 --param min_swing_s=0.6 >"$T/pslowp.txt" \
+        2>"$T/pslowp.err" && grep -q "^Settings (eval and replay): --param min_swing_s=0.6$" "$T/pslowp.txt" &&
+        grep -q "^Reference, eval on the original files: 28 trials and feet, 458 expert strides, [0-9]* detected, [1-9][0-9]* missed" \
+            "$T/pslowp.txt" &&
+        grep -q "eval on the originals now (with the --param settings): DIFFERENT$" "$T/pslowp.txt" &&
+        grep -q "replay matched" "$T/pslowp.txt" && ! grep -q "replay matched.*DIFFERENT" "$T/pslowp.txt"; then
+        pass "probe_slow_ipol.py --param min_swing_s=0.6: passed to eval and to replay"
+    else fail "probe_slow_ipol.py --param: $(head -3 "$T/pslowp.txt") $(tail -3 "$T/pslowp.err")"; fi
+fi
 
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]

@@ -41,6 +41,18 @@ expect_exit 0 "--param help" "$H" replay vectors/walk.bin --param help
 expect_out "zupt_sigma" "--param help lists the keys"
 expect_exit 0 "--param help without a log" "$H" replay --param help
 expect_out "settle_tau" "--param help without a log lists the keys"
+# event_window_s (the gait events' searches) is a --param: listed, taken
+# (0.1 s moves the foot-offs and foot-strikes of the bundled 398 Hz walk,
+# 0.4 s is more than its 160-sample jerk history holds, and replay says
+# so), 0 refused by the core
+expect_out "^  event_window_s  *0.3 " "--param help lists event_window_s with its default"
+expect_exit 0 "--param event_window_s=0.1" "$H" replay vectors/walk.bin --quiet --strides "$T/ew1.csv" --param event_window_s=0.1
+expect_exit 0 "replay --strides with the default event window" "$H" replay vectors/walk.bin --quiet --strides "$T/ew3.csv"
+if ! cmp -s "$T/ew1.csv" "$T/ew3.csv"; then pass "event_window_s=0.1 moves the gait events"
+else fail "event_window_s=0.1: the strides CSV is the default's"; fi
+expect_exit 0 "--param event_window_s=0.4" "$H" replay vectors/walk.bin --quiet --strides "$T/ew4.csv" --param event_window_s=0.4
+expect_err "searched over 399 ms (of 400)" "event_window_s=0.4 beyond the 398 Hz walk's jerk history: replay says so"
+expect_exit 2 "--param event_window_s=0 refused" "$H" replay vectors/walk.bin --quiet --param event_window_s=0
 expect_exit 2 "unknown profile" "$H" replay vectors/walk.bin --profile /nonexistent/profile.txt
 expect_exit 2 "bad --rate" "$H" replay vectors/walk.bin --rate -5
 expect_exit 2 "config rejected by the core" "$H" replay vectors/walk.bin --param window_s=-1 --quiet
