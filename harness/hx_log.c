@@ -2027,7 +2027,7 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
     if (fmt == HX_FMT_MTMGR && r->mt.us_like) {
         /* read as an MT Manager export, with no '//' line, with stamps
          * that make an IMU's rate in us and none in 100 us ticks (or one
-         * of DOT's rates under DOT's own columns): Movella DOT's CSV
+         * of DOT's rates under a header of DOT's): Movella DOT's CSV
          * (hx_mtmgr_stamps), refused with the CSV reader's remedy; it was
          * read 100 times too slow (the review of 2026-11-30). Given with
          * --from mtmanager too: it was read in ticks, as asked, with DOT's

@@ -700,6 +700,15 @@ for r in 10 1; do
         --columns t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s
     expect_out_re "^rate +$r(\.0+)? Hz" "DOT CSV at $r Hz read with the remedy: $r Hz"
 done
+# ... and with a column on no list besides DOT's own ClipCountAcc/ClipCountGyr (an app's UtcTime): it was read at
+# 0.1 Hz, exit 0, until 2026-12-01 (every column had to be DOT's); a name only DOT writes now marks it, unless one
+# only MT Manager writes (Roll) is there too
+awk 'NR == 1 { print $0 ",ClipCountAcc,ClipCountGyr,UtcTime"; next } { print $0 ",0,0,1764547200" }' "$T/xdot10.csv" >"$T/xdotu.csv"
+expect_exit 1 "a Movella DOT CSV at 10 Hz with an app's column is not read as an MT Manager export" "$H" info "$T/xdotu.csv"
+expect_err "xdotu.csv: SampleTimeFine steps by .*, 10 Hz in us, no '//' line: $dot_remedy" "DOT CSV at 10 Hz with an app's column: refused, the remedy named"
+sed '1s/,UtcTime$/,Roll/' "$T/xdotu.csv" >"$T/xdotr.csv"
+expect_exit 0 "... with Roll (MT Manager's) instead: read as an export, in ticks" "$H" info "$T/xdotr.csv"
+expect_out_re "^rate +0\.100 Hz" "... with Roll: 100 us ticks"
 # a reader's message is whole behind a long path: the errors were cut at
 # 320 bytes, path included (info, allan, psd and convert left the DOT
 # remedy's --units out behind a 110-byte path; 2026-11-30)
