@@ -2357,16 +2357,60 @@ int hx_stamp_bursts(const int64_t *t_ns, size_t n, double max_gap_s, hx_bursts_t
     return (int)b->kind;
 }
 
-const char *hx_bursts_text(const hx_bursts_t *b, const char *needs, const char *section, char *msg, size_t size)
+/* hx_bursts_text's cause, up to the rate of the samples' span: "the time
+ * stamps come in bursts (...): 1 / their median interval gives 200000 Hz,
+ * but the 16539 samples span 41.34 s, 400 Hz" */
+static void bursts_cause(const hx_bursts_t *b, char *msg, size_t size)
 {
     snprintf(msg, size,
              "the time stamps come in bursts (%s): 1 / their median interval gives %.6g Hz, but the %s%zu samples "
-             "span %.4g s%s, %.4g Hz; %s: leave the time column out and give --input-rate %.4g (docs/harness.md, "
-             "\"%s\")",
+             "span %.4g s%s, %.4g Hz",
              b->kind == HX_BURSTS_CLOSE ? "samples stamped close together as a logger reads them?"
                                         : "samples that share one stamp: one per packet, or stamps coarser than the sampling?",
-             b->median_hz, b->first ? "first " : "", b->n, b->span_s, b->segs > 1u ? " between the time jumps" : "", b->rate_hz, needs,
-             b->rate_hz, section);
+             b->median_hz, b->first ? "first " : "", b->n, b->span_s, b->segs > 1u ? " between the time jumps" : "",
+             b->rate_hz);
+}
+
+const char *hx_bursts_text(const hx_bursts_t *b, const char *needs, const char *section, char *msg, size_t size)
+{
+    size_t len;
+    bursts_cause(b, msg, size);
+    len = strlen(msg);
+    if (len < size) {
+        snprintf(msg + len, size - len,
+                 "; %s: leave the time column out and give --input-rate %.4g (docs/harness.md, \"%s\")", needs,
+                 b->rate_hz, section);
+    }
+    return msg;
+}
+
+const char *hx_bursts_rate_text(const hx_bursts_t *b, const char *reads, double rate_hz, int nominal, char *msg,
+                                size_t size)
+{
+    /* until 2026-12-01 every case said "read at R Hz, not the sampling
+     * rate", also where R is the rate the file states and the span keeps
+     * (a .bin's nominal rate), which is the sampling rate */
+    const int kept = nominal && b->rate_hz > 0.0 && fabs(rate_hz / b->rate_hz - 1.0) <= HX_BURSTS_RATE_TOL;
+    size_t len;
+    bursts_cause(b, msg, size);
+    len = strlen(msg);
+    if (len >= size) {
+        return msg;
+    }
+    if (kept) {
+        snprintf(msg + len, size - len,
+                 "; %s %.4g Hz, the rate the file states, which the samples' span keeps, not the stamps' %.6g Hz "
+                 "(docs/harness.md, \"Time stamps in bursts\")",
+                 reads, rate_hz, b->median_hz);
+    } else {
+        snprintf(msg + len, size - len,
+                 "; %s %.4g Hz, %s: leave the time column out and give --input-rate %.4g (docs/harness.md, \"Time "
+                 "stamps in bursts\")",
+                 reads, rate_hz,
+                 nominal ? "the rate the file states, which the samples' span does not keep"
+                         : "the stamps' rate, not the sampling rate",
+                 b->rate_hz);
+    }
     return msg;
 }
 
