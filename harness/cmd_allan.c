@@ -733,11 +733,12 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
                 irregular);
     }
     if (stamps != NULL && R->rate_hz > 0.0) {
-        /* not with --rate, which sets the rate the analysis takes */
-        char what[96];
-        snprintf(what, sizeof what, "tau, sigma_v and the profile are read at %.4g Hz, not the sampling rate",
-                 R->rate_hz);
-        hx_nav_bursts_warn(CMD, path, stamps, n_stamps, (size_t)R->n > n_stamps, what);
+        /* not with --rate, which sets the rate the analysis takes; the
+         * reader's rate is the file's own when nominal */
+        const hx_meta_t *m = hx_reader_meta(r);
+        hx_nav_bursts_warn(CMD, path, stamps, n_stamps, (size_t)R->n > n_stamps,
+                           "tau, sigma_v and the profile are read at", R->rate_hz,
+                           m->rate_nominal && m->rate_hz > 0.0 && R->rate_hz == m->rate_hz);
     }
     free(stamps);
     if (rate_opt > 0.0 && stamp_rate > 0.0 && fabs(rate_opt / stamp_rate - 1.0) > 1e-3) {

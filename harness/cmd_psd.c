@@ -810,11 +810,8 @@ int hx_cmd_psd(int argc, char **argv)
                     irregular, log.n - 1, rate);
         }
     }
-    {
-        char what[96];
-        snprintf(what, sizeof what, "the frequencies are read at %.4g Hz, not the sampling rate", rate);
-        hx_nav_bursts_warn(CMD, a.pos[0], log.t_ns, log.n, 0, what);
-    }
+    hx_nav_bursts_warn(CMD, a.pos[0], log.t_ns, log.n, 0, "the frequencies are read at", rate,
+                       log.meta.rate_nominal && log.meta.rate_hz > 0.0);
     if (hx_arg(&a, "--input-rate") == NULL) {
         /* a time column in milliseconds (100 Hz read as 0.1 Hz) was said
          * only as an answer above the log's rate (the static review) */

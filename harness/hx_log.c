@@ -844,6 +844,40 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
     }
 }
 
+/* The columns of names[0..7] (t, ax..gz, temp; NULL: not read) among the
+ * n header fields f, set in r in that order, r->ncols_needed with them,
+ * up to the first name that is required and missing: its index, kept in
+ * r->missing_col; -1 when none is. A name --columns gave is required, also
+ * temp's and t's with a rate given (they were dropped without a word); t
+ * is required when time_required. */
+static int find_columns(hx_reader_t *r, const char *const names[8], char **f, int n, int time_required)
+{
+    int i;
+    r->ncols_needed = 0;
+    r->missing_col = -1;
+    for (i = 0; i < 8; i++) {
+        int c = (names[i] != NULL) ? hx_find_col(f, n, names[i]) : -1;
+        const int given = r->meta.format == HX_FMT_CSV && r->layout.names[i][0] != '\0';
+        if (c < 0 && names[i] != NULL && (given || ((i < 7) && (i > 0 || time_required)))) {
+            r->missing_col = i;
+            return i;
+        }
+        if (i == 0) {
+            r->col_t = c;
+        } else if (i <= 3) {
+            r->col_a[i - 1] = c;
+        } else if (i <= 6) {
+            r->col_g[i - 4] = c;
+        } else {
+            r->col_temp = c;
+        }
+        if (c + 1 > r->ncols_needed) {
+            r->ncols_needed = c + 1;
+        }
+    }
+    return -1;
+}
+
 static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_required)
 {
     char *f[HX_MAX_COLS], dc_first[64], matched[700] = "";
@@ -909,116 +943,98 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
     dc_line = decimal_comma_line(r->line, dc_first, sizeof dc_first);
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     r->hdr_fields = r->delim == ' ' || total > HX_MAX_COLS ? n : named_fields(f, n, total);
-lookup:
-    r->ncols_needed = 0;
-    r->missing_col = -1;
-    for (i = 0; i < 8; i++) {
-        int c = (names[i] != NULL) ? hx_find_col(f, n, names[i]) : -1;
-        /* a name --columns gave is required, also temp's and t's with a rate
-         * given (they were dropped without a word) */
-        const int given = r->meta.format == HX_FMT_CSV && r->layout.names[i][0] != '\0';
-        if (c < 0 && names[i] != NULL && (given || ((i < 7) && (i > 0 || time_required)))) {
-            r->missing_col = i;
-            if (r->meta.format == HX_FMT_CSV && !tried && total <= HX_MAX_COLS && !dc_line && !all_numeric(f, n)) {
-                /* no --columns and the interchange names not all there: the
-                 * names of the six channels matched (a log refused before,
-                 * never one read before: docs/log-format.md, "Names read
-                 * without --columns") */
-                int k, named = 0;
-                for (k = 0; k < 8; k++) {
-                    named |= r->layout.names[k][0] != '\0';
-                }
-                if (!named) {
-                    hx_names_match_t m;
-                    tried = 1;
-                    if (hx_names_match(f, n, &m) && (m.col[0] >= 0 || !time_required)) {
-                        names_apply(r, &m, f);
-                        for (k = 0; k < 7; k++) {
-                            if (r->layout.names[k][0] != '\0') {
-                                names[k] = r->layout.names[k];
-                            }
-                        }
-                        goto lookup;
-                    }
-                    /* something to say: a channel's name matched, and more
-                     * than the interchange names the header has (t,ax,ay,az
-                     * keeps its message, a stride table with a timestamp
-                     * and a file of no IMU names theirs) */
-                    int six = 0, news = m.units_differ != 0;
+    for (;;) {
+        i = find_columns(r, names, f, n, time_required);
+        if (i < 0) {
+            return 0;
+        }
+        if (r->meta.format == HX_FMT_CSV && !tried && total <= HX_MAX_COLS && !dc_line && !all_numeric(f, n)) {
+            /* no --columns and the interchange names not all there: the
+             * names of the six channels matched (a log refused before,
+             * never one read before: docs/log-format.md, "Names read
+             * without --columns") */
+            int k, named = 0;
+            for (k = 0; k < 8; k++) {
+                named |= r->layout.names[k][0] != '\0';
+            }
+            if (!named) {
+                hx_names_match_t m;
+                tried = 1;
+                if (hx_names_match(f, n, &m) && (m.col[0] >= 0 || !time_required)) {
+                    names_apply(r, &m, f);
                     for (k = 0; k < 7; k++) {
-                        six |= k > 0 && m.ncand[k] > 0;
-                        news |= m.ncand[k] > 1 || m.nnear[k] > 0 ||
-                                (m.ncand[k] == 1 && !hx_name_eq(f[m.cand[k][0]], k_csv_names[k]));
-                    }
-                    if (!m.excluded && six && news) {
-                        char give[700], miss[400];
-                        (void)hx_names_give(&m, f, give, sizeof give);
-                        (void)hx_names_unmatched(&m, f, time_required, miss, sizeof miss);
-                        if (m.ok) {
-                            /* all but the time: the no-time path's rate */
-                            snprintf(matched, sizeof matched,
-                                     "; names matched: %.400s; no time column%.150s: give the log's rate with "
-                                     "--input-rate HZ, or its time column with --columns t=NAME too",
-                                     give, strncmp(miss, "t: none", 7) == 0 ? miss + 7 : "");
-                        } else if (give[0] != '\0' || miss[0] != '\0') {
-                            snprintf(matched, sizeof matched, "; names matched: %.400s; not matched: %.250s",
-                                     give[0] != '\0' ? give : "none", miss[0] != '\0' ? miss : "none");
+                        if (r->layout.names[k][0] != '\0') {
+                            names[k] = r->layout.names[k];
                         }
                     }
+                    continue; /* the columns again, under the names matched */
+                }
+                /* something to say: a channel's name matched, and more
+                 * than the interchange names the header has (t,ax,ay,az
+                 * keeps its message, a stride table with a timestamp
+                 * and a file of no IMU names theirs) */
+                int six = 0, news = m.units_differ != 0;
+                for (k = 0; k < 7; k++) {
+                    six |= k > 0 && m.ncand[k] > 0;
+                    news |= m.ncand[k] > 1 || m.nnear[k] > 0 ||
+                            (m.ncand[k] == 1 && !hx_name_eq(f[m.cand[k][0]], k_csv_names[k]));
+                }
+                if (!m.excluded && six && news) {
+                    char give[700], miss[400];
+                    (void)hx_names_give(&m, f, give, sizeof give);
+                    (void)hx_names_unmatched(&m, f, time_required, miss, sizeof miss);
+                    if (m.ok) {
+                        /* all but the time: the no-time path's rate */
+                        snprintf(matched, sizeof matched,
+                                 "; names matched: %.400s; no time column%.150s: give the log's rate with "
+                                 "--input-rate HZ, or its time column with --columns t=NAME too",
+                                 give, strncmp(miss, "t: none", 7) == 0 ? miss + 7 : "");
+                    } else if (give[0] != '\0' || miss[0] != '\0') {
+                        snprintf(matched, sizeof matched, "; names matched: %.400s; not matched: %.250s",
+                                 give[0] != '\0' ? give : "none", miss[0] != '\0' ? miss : "none");
+                    }
                 }
             }
-            if (total > HX_MAX_COLS) {
-                /* the column may be there, past the ones read (it said "header
-                 * has no column 'gx'" of a header that had it; a review,
-                 * 2026-11-29) */
-                set_err(r, "%s:%ld: header has %d columns; only the first %d are read, and '%s' is not among them",
-                        r->path, r->stats.lines, total, HX_MAX_COLS, names[i]);
-            } else if (dc_line) {
-                /* no header problem: no hint about the format's detection */
-                r->missing_col = -1;
-                set_err(r, "%s:%ld: the first line is numbers with a decimal comma ('%s'): " DECIMAL_COMMA_FIX,
-                        r->path, r->stats.lines, dc_first);
-            } else if (all_numeric(f, n)) {
-                set_err(r, "%s:%ld: the first line is data, not a header: a %s log starts with its header (%s)",
-                        r->path, r->stats.lines, hx_format_name(r->meta.format),
-                        r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "see docs/log-format.md");
-            } else if (r->meta.format == HX_FMT_CSV && r->layout.names[i][0] != '\0') {
-                /* a name the user gave: say where it came from */
-                set_err(r, "%s:%ld: header has no column '%s' (the name --columns gives %s)", r->path,
-                        r->stats.lines, names[i], what[i]);
-            } else if (r->meta.format == HX_FMT_CSV) {
-                /* a header with the six others lacks only its time: say how
-                 * to give the rate (not to a file that is no IMU log) */
-                int k, six = i == 0;
-                for (k = 1; k < 7 && six; k++) {
-                    six = hx_find_col(f, n, names[k]) >= 0;
-                }
-                set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]%s%s", r->path,
-                        r->stats.lines, names[i],
-                        six ? " (t in s: name the time column t; a log without time stamps: give its rate with "
-                              "--input-rate HZ)"
-                            : "",
-                        matched);
-            } else {
-                set_err(r, "%s:%ld: header has no column '%s' (the %s column of the %s format)", r->path,
-                        r->stats.lines, names[i], what[i], hx_format_name(r->meta.format));
-            }
-            return -1;
         }
-        if (i == 0) {
-            r->col_t = c;
-        } else if (i <= 3) {
-            r->col_a[i - 1] = c;
-        } else if (i <= 6) {
-            r->col_g[i - 4] = c;
-        } else {
-            r->col_temp = c;
-        }
-        if (c + 1 > r->ncols_needed) {
-            r->ncols_needed = c + 1;
-        }
+        break;
     }
-    return 0;
+    if (total > HX_MAX_COLS) {
+        /* the column may be there, past the ones read (it said "header
+         * has no column 'gx'" of a header that had it; a review,
+         * 2026-11-29) */
+        set_err(r, "%s:%ld: header has %d columns; only the first %d are read, and '%s' is not among them",
+                r->path, r->stats.lines, total, HX_MAX_COLS, names[i]);
+    } else if (dc_line) {
+        /* no header problem: no hint about the format's detection */
+        r->missing_col = -1;
+        set_err(r, "%s:%ld: the first line is numbers with a decimal comma ('%s'): " DECIMAL_COMMA_FIX,
+                r->path, r->stats.lines, dc_first);
+    } else if (all_numeric(f, n)) {
+        set_err(r, "%s:%ld: the first line is data, not a header: a %s log starts with its header (%s)",
+                r->path, r->stats.lines, hx_format_name(r->meta.format),
+                r->meta.format == HX_FMT_CSV ? "t,ax,ay,az,gx,gy,gz[,temp]" : "see docs/log-format.md");
+    } else if (r->meta.format == HX_FMT_CSV && r->layout.names[i][0] != '\0') {
+        /* a name the user gave: say where it came from */
+        set_err(r, "%s:%ld: header has no column '%s' (the name --columns gives %s)", r->path,
+                r->stats.lines, names[i], what[i]);
+    } else if (r->meta.format == HX_FMT_CSV) {
+        /* a header with the six others lacks only its time: say how
+         * to give the rate (not to a file that is no IMU log) */
+        int k, six = i == 0;
+        for (k = 1; k < 7 && six; k++) {
+            six = hx_find_col(f, n, names[k]) >= 0;
+        }
+        set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]%s%s", r->path,
+                r->stats.lines, names[i],
+                six ? " (t in s: name the time column t; a log without time stamps: give its rate with "
+                      "--input-rate HZ)"
+                    : "",
+                matched);
+    } else {
+        set_err(r, "%s:%ld: header has no column '%s' (the %s column of the %s format)", r->path,
+                r->stats.lines, names[i], what[i], hx_format_name(r->meta.format));
+    }
+    return -1;
 }
 
 static void set_cols(hx_reader_t *r, int t, int a0, int g0)
@@ -2027,7 +2043,7 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
     if (fmt == HX_FMT_MTMGR && r->mt.us_like) {
         /* read as an MT Manager export, with no '//' line, with stamps
          * that make an IMU's rate in us and none in 100 us ticks (or one
-         * of DOT's rates under DOT's own columns): Movella DOT's CSV
+         * of DOT's rates under a header of DOT's): Movella DOT's CSV
          * (hx_mtmgr_stamps), refused with the CSV reader's remedy; it was
          * read 100 times too slow (the review of 2026-11-30). Given with
          * --from mtmanager too: it was read in ticks, as asked, with DOT's
@@ -2357,16 +2373,60 @@ int hx_stamp_bursts(const int64_t *t_ns, size_t n, double max_gap_s, hx_bursts_t
     return (int)b->kind;
 }
 
-const char *hx_bursts_text(const hx_bursts_t *b, const char *needs, const char *section, char *msg, size_t size)
+/* hx_bursts_text's cause, up to the rate of the samples' span: "the time
+ * stamps come in bursts (...): 1 / their median interval gives 200000 Hz,
+ * but the 16539 samples span 41.34 s, 400 Hz" */
+static void bursts_cause(const hx_bursts_t *b, char *msg, size_t size)
 {
     snprintf(msg, size,
              "the time stamps come in bursts (%s): 1 / their median interval gives %.6g Hz, but the %s%zu samples "
-             "span %.4g s%s, %.4g Hz; %s: leave the time column out and give --input-rate %.4g (docs/harness.md, "
-             "\"%s\")",
+             "span %.4g s%s, %.4g Hz",
              b->kind == HX_BURSTS_CLOSE ? "samples stamped close together as a logger reads them?"
                                         : "samples that share one stamp: one per packet, or stamps coarser than the sampling?",
-             b->median_hz, b->first ? "first " : "", b->n, b->span_s, b->segs > 1u ? " between the time jumps" : "", b->rate_hz, needs,
-             b->rate_hz, section);
+             b->median_hz, b->first ? "first " : "", b->n, b->span_s, b->segs > 1u ? " between the time jumps" : "",
+             b->rate_hz);
+}
+
+const char *hx_bursts_text(const hx_bursts_t *b, const char *needs, const char *section, char *msg, size_t size)
+{
+    size_t len;
+    bursts_cause(b, msg, size);
+    len = strlen(msg);
+    if (len < size) {
+        snprintf(msg + len, size - len,
+                 "; %s: leave the time column out and give --input-rate %.4g (docs/harness.md, \"%s\")", needs,
+                 b->rate_hz, section);
+    }
+    return msg;
+}
+
+const char *hx_bursts_rate_text(const hx_bursts_t *b, const char *reads, double rate_hz, int nominal, char *msg,
+                                size_t size)
+{
+    /* until 2026-12-01 every case said "read at R Hz, not the sampling
+     * rate", also where R is the rate the file states and the span keeps
+     * (a .bin's nominal rate), which is the sampling rate */
+    const int kept = nominal && b->rate_hz > 0.0 && fabs(rate_hz / b->rate_hz - 1.0) <= HX_BURSTS_RATE_TOL;
+    size_t len;
+    bursts_cause(b, msg, size);
+    len = strlen(msg);
+    if (len >= size) {
+        return msg;
+    }
+    if (kept) {
+        snprintf(msg + len, size - len,
+                 "; %s %.4g Hz, the rate the file states, which the samples' span keeps, not the stamps' %.6g Hz "
+                 "(docs/harness.md, \"Time stamps in bursts\")",
+                 reads, rate_hz, b->median_hz);
+    } else {
+        snprintf(msg + len, size - len,
+                 "; %s %.4g Hz, %s: leave the time column out and give --input-rate %.4g (docs/harness.md, \"Time "
+                 "stamps in bursts\")",
+                 reads, rate_hz,
+                 nominal ? "the rate the file states, which the samples' span does not keep"
+                         : "the stamps' rate, not the sampling rate",
+                 b->rate_hz);
+    }
     return msg;
 }
 

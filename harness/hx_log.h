@@ -319,6 +319,24 @@ int hx_stamp_bursts(const int64_t *t_ns, size_t n, double max_gap_s, hx_bursts_t
  *  400 Hz; NEEDS: leave the time column out and give --input-rate 400
  *  (docs/harness.md, \"SECTION\")". needs: what the wrong rate breaks. */
 const char *hx_bursts_text(const hx_bursts_t *b, const char *needs, const char *section, char *msg, size_t size);
+/** How far a rate the file states (nominal) may be from the rate of the
+ *  samples' span (hx_bursts_t.rate_hz) and still be called kept, a
+ *  fraction (the tolerance of an MT Manager export's '// Update Rate'). */
+#define HX_BURSTS_RATE_TOL 0.05
+/** The warning of info, psd, allan and simgap for stamps in bursts (b->kind
+ *  not HX_BURSTS_NONE) in msg (returned), saying which rate the command
+ *  uses and where it came from: hx_bursts_text's cause, then "READS R Hz,"
+ *  and, for a rate from the stamps (nominal 0), "the stamps' rate, not the
+ *  sampling rate: leave the time column out and give --input-rate N
+ *  (docs/harness.md, "Time stamps in bursts")"; for the rate the file
+ *  states (nominal 1) that the samples' span keeps (within
+ *  HX_BURSTS_RATE_TOL), "the rate the file states, which the samples' span
+ *  keeps, not the stamps' 200000 Hz (docs/harness.md, ...)"; for one it
+ *  does not keep, "the rate the file states, which the samples' span does
+ *  not keep: leave the time column out ...". reads: what of the output
+ *  the rate makes, e.g. "the frequencies are read at". */
+const char *hx_bursts_rate_text(const hx_bursts_t *b, const char *reads, double rate_hz, int nominal, char *msg,
+                                size_t size);
 /** csv with the time unit hx_time_unit_hint finds for rate_hz (in *buf),
  *  else csv itself (NULL stays NULL): the layout whose other remedies
  *  (hx_units_problem's, given with no rate) name the time item too, for a

@@ -1386,18 +1386,19 @@ static int stamps_never_advance(const fnav_nav_stats_t *st)
 }
 
 int hx_nav_bursts_warn(const char *cmd, const char *path, const int64_t *t_ns, size_t n, int first,
-                       const char *what)
+                       const char *reads, double rate_hz, int nominal)
 {
     /* info, psd and allan printed 1 / the median interval of such stamps
      * (200 kHz for a 400 Hz walk) as the rate without a word until
-     * 2026-11-30; they still run, with this warning */
+     * 2026-11-30; they still run, with this warning, which says which rate
+     * they use and where it came from (2026-12-01) */
     hx_bursts_t bu;
-    char msg[512];
+    char msg[640];
     if (hx_stamp_bursts(t_ns, n, (double)fnav_nav_config_default.max_gap_s, &bu) <= 0) {
         return 0;
     }
     bu.first = first;
-    hx_warn(cmd, "%s: %s", path, hx_bursts_text(&bu, what, "Time stamps in bursts", msg, sizeof msg));
+    hx_warn(cmd, "%s: %s", path, hx_bursts_rate_text(&bu, reads, rate_hz, nominal, msg, sizeof msg));
     return 1;
 }
 

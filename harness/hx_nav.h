@@ -264,13 +264,16 @@ int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, doubl
 /**
  * The warning of info, psd and allan for n time stamps in bursts (either
  * kind of hx_stamp_bursts, with the navigator's default time jump): "cmd:
- * warning: PATH: the time stamps come in bursts (...): ...; WHAT: leave the
- * time column out and give --input-rate N (...)". what: what the wrong rate
- * makes of the command's output. first: the n are the log's first stamps,
- * not all (the message says so). 1 when warned, else 0.
+ * warning: PATH: the time stamps come in bursts (...): ...; READS R Hz,
+ * ..." with hx_bursts_rate_text's account of the rate: the stamps' rate,
+ * not the sampling rate, and the remedy (nominal 0); the rate the file
+ * states, which the samples' span keeps or not (nominal 1). reads: what of
+ * the command's output the rate rate_hz makes ("the frequencies are read
+ * at"). first: the n are the log's first stamps, not all (the message says
+ * so). 1 when warned, else 0.
  */
 int hx_nav_bursts_warn(const char *cmd, const char *path, const int64_t *t_ns, size_t n, int first,
-                       const char *what);
+                       const char *reads, double rate_hz, int nominal);
 
 /**
  * Replay one log through the Linux port into a navigator, sample by sample.

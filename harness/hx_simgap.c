@@ -50,7 +50,7 @@ int sg_stamps_check(const hx_log_t *log, const char *path, int domain, char *err
     const size_t n = log->n < HX_STAMPS_PROBE_N ? log->n : (size_t)HX_STAMPS_PROBE_N;
     const double max_gap_s = (double)fnav_nav_config_default.max_gap_s;
     hx_bursts_t bu;
-    char what[96], msg[512];
+    char msg[640];
     if (err_size > 0u) {
         err[0] = '\0';
     }
@@ -62,10 +62,11 @@ int sg_stamps_check(const hx_log_t *log, const char *path, int domain, char *err
         hx_bursts_text(&bu, "navigation needs each sample's own time", "Time stamps in bursts", err, err_size);
         return -1;
     }
-    snprintf(what, sizeof what, "the taus and frequencies are read at %.4g Hz, not the sampling rate",
-             sg_log_rate(log));
-    /* the verdict above, not hx_nav_bursts_warn's second test of the same stamps */
-    hx_warn("simgap", "%s: %s", path, hx_bursts_text(&bu, what, "Time stamps in bursts", msg, sizeof msg));
+    /* the verdict above, not hx_nav_bursts_warn's second test of the same
+     * stamps; its words, with sg_log_rate's rate and its source */
+    hx_warn("simgap", "%s: %s", path,
+            hx_bursts_rate_text(&bu, "the taus and frequencies are read at", sg_log_rate(log),
+                                log->meta.rate_nominal && log->meta.rate_hz > 0.0, msg, sizeof msg));
     return 0;
 }
 

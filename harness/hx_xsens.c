@@ -174,58 +174,96 @@ int hx_mtmgr_comment(hx_mtmgr_t *x, const char *line, long lineno)
     return 1;
 }
 
-/* Whether a header field is empty (a trailing comma's) or a column a
- * Movella DOT CSV writes besides its orientation (Euler_*, Quat_*, which
- * hx_mtmgr_detect leaves to the CSV reader): the columns of the DOT SDK's
- * payloads, PacketCounter, SampleTimeFine, Acc_, Gyr_, Mag_, FreeAcc_ and
- * Cal_FreeAcc_ X..Z, dq_W..Z, dv[1]..dv[3], Status, Flag, ClipCountAcc,
- * ClipCountGyr, FreeAcc_Compared_Result. MT Manager may export a header of
- * these alone, but always writes '//' lines before it. */
-static int dot_column(const char *name)
+/* Whether name is one of the n names of list (hx_name_eq: without case,
+ * blanks or quotes). */
+static int name_in(const char *name, const char *const *list, size_t n)
 {
-    static const char *const exact[] = { "PacketCounter", "SampleTimeFine", "Status", "Flag", "ClipCountAcc",
-                                         "ClipCountGyr", "FreeAcc_Compared_Result", "dv[1]", "dv[2]", "dv[3]" };
-    static const char *const xyz[] = { "Acc_", "Gyr_", "Mag_", "FreeAcc_", "Cal_FreeAcc_", "dq_" };
-    const char *s = name;
     size_t i;
+    for (i = 0; i < n; i++) {
+        if (hx_name_eq(name, list[i])) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* Whether name is stem followed by one of the letters of axes. */
+static int name_axis(const char *name, const char *stem, const char *axes)
+{
+    for (; *axes != '\0'; axes++) {
+        char want[32];
+        snprintf(want, sizeof want, "%s%c", stem, *axes);
+        if (hx_name_eq(name, want)) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* What a header field tells of a Movella DOT CSV (the names of the DOT
+ * SDK's payloads; DOT user manual, XD0502P, 4.2):
+ * - DOT_MARK: a name only DOT writes: Euler_X..Z and Quat_W..Z (MT Manager
+ *   writes Roll, Pitch, Yaw and Quat_q0..q3), ClipCountAcc, ClipCountGyr,
+ *   Cal_FreeAcc_X..Z, FreeAcc_Compared_Result;
+ * - DOT_SHARED: a name DOT writes that MT Manager may write too, or empty
+ *   (a trailing comma's): PacketCounter, SampleTimeFine, Acc_, Gyr_, Mag_,
+ *   FreeAcc_ X..Z, dq_W..Z, dv[1]..dv[3], Status, Flag;
+ * - MTMGR_OWN: a name only MT Manager writes, for what DOT names otherwise
+ *   or does not output: Roll, Pitch, Yaw, Quat_q0..q3, StatusWord,
+ *   SampleTimeCoarse, Mat[..] (the rotation matrix);
+ * - OTHER: any other name (an app's own column, say), which tells neither. */
+enum { COL_OTHER, COL_DOT_SHARED, COL_DOT_MARK, COL_MTMGR_OWN };
+
+static int column_kind(const char *name)
+{
+    static const char *const mark[] = { "ClipCountAcc", "ClipCountGyr", "FreeAcc_Compared_Result" };
+    static const char *const shared[] = { "PacketCounter", "SampleTimeFine", "Status", "Flag", "dv[1]", "dv[2]",
+                                          "dv[3]" };
+    static const char *const own[] = { "Roll", "Pitch", "Yaw", "StatusWord", "SampleTimeCoarse" };
+    const char *s = name;
     while (*s == ' ' || *s == '\t' || *s == '"' || *s == '\'' || *s == '\r') {
         s++;
     }
     if (*s == '\0') {
-        return 1;
+        return COL_DOT_SHARED;
     }
-    for (i = 0; i < sizeof exact / sizeof exact[0]; i++) {
-        if (hx_name_eq(name, exact[i])) {
-            return 1;
-        }
+    if (name_in(name, mark, sizeof mark / sizeof mark[0]) || name_axis(name, "Euler_", "XYZ") ||
+        name_axis(name, "Quat_", "WXYZ") || name_axis(name, "Cal_FreeAcc_", "XYZ")) {
+        return COL_DOT_MARK;
     }
-    for (i = 0; i < sizeof xyz / sizeof xyz[0]; i++) {
-        static const char *const axes[] = { "W", "X", "Y", "Z" };
-        size_t k;
-        for (k = i == 5u ? 0u : 1u; k < 4u; k++) { /* dq_ has W, X, Y, Z; the others X, Y, Z */
-            char want[24];
-            snprintf(want, sizeof want, "%s%s", xyz[i], axes[k]);
-            if (hx_name_eq(name, want)) {
-                return 1;
-            }
-        }
+    if (name_in(name, shared, sizeof shared / sizeof shared[0]) || name_axis(name, "Acc_", "XYZ") ||
+        name_axis(name, "Gyr_", "XYZ") || name_axis(name, "Mag_", "XYZ") || name_axis(name, "FreeAcc_", "XYZ") ||
+        name_axis(name, "dq_", "WXYZ")) {
+        return COL_DOT_SHARED;
     }
-    return 0;
+    if (name_in(name, own, sizeof own / sizeof own[0]) || name_axis(name, "Quat_q", "0123") ||
+        name_starts(name, "Mat[")) {
+        return COL_MTMGR_OWN;
+    }
+    return COL_OTHER;
 }
 
 int hx_mtmgr_header(hx_mtmgr_t *x, char **f, int n, char *msg, size_t msg_size)
 {
     static const char *const acc[3] = { "Acc_X", "Acc_Y", "Acc_Z" };
     static const char *const gyr[3] = { "Gyr_X", "Gyr_Y", "Gyr_Z" };
-    int i, inc = 0, free_acc = 0;
+    int i, inc = 0, free_acc = 0, dot_only = 1, dot_mark = 0, mtmgr_own = 0;
     x->col_ctr = hx_find_col(f, n, "PacketCounter");
     x->col_stf = hx_find_col(f, n, "SampleTimeFine");
-    x->dot_cols = 1;
     for (i = 0; i < n; i++) {
-        x->dot_cols &= dot_column(f[i]);
+        const int kind = column_kind(f[i]);
+        dot_only &= kind == COL_DOT_SHARED || kind == COL_DOT_MARK;
+        dot_mark |= kind == COL_DOT_MARK;
+        mtmgr_own |= kind == COL_MTMGR_OWN;
         inc |= name_starts(f[i], "dq_") || name_starts(f[i], "dv[") || name_starts(f[i], "dv_");
         free_acc |= name_starts(f[i], "FreeAcc_");
     }
+    /* a DOT CSV by its names: DOT's alone (an MT Manager export of these
+     * always has '//' lines before them), or a name only DOT writes among
+     * others and none only MT Manager writes (until 2026-12-01 every name
+     * had to be DOT's: one more, an app's own, left a DOT at 1 to 15 Hz
+     * read 100 times too slow) */
+    x->dot_header = !mtmgr_own && (dot_only || dot_mark);
     for (i = 0; i < 6; i++) {
         const char *name = i < 3 ? acc[i] : gyr[i - 3];
         const int c = hx_find_col(f, n, name);
@@ -464,13 +502,13 @@ int hx_mtmgr_stamps(hx_mtmgr_t *x, char *msg, size_t msg_size)
     {
         const double hz = (double)HX_MTMGR_STF_HZ / x->stamp_step; /* 100 us ticks */
         const double hz_us = 1.0e6 / x->stamp_step;                /* us, as Movella DOT counts */
-        /* an IMU's rate in us and none in ticks; or, under DOT's own
-         * columns, one of DOT's rates down to 1 Hz (0.01 Hz in ticks), which
+        /* an IMU's rate in us and none in ticks; or, under a header of
+         * DOT's (dot_header), one of DOT's rates down to 1 Hz (0.01 Hz in ticks), which
          * the IMU band missed below 20 Hz: a DOT at 10 Hz was read as an
          * export at 0.1 Hz until 2026-11-30 */
         x->us_like = x->comments == 0 && hz < HX_MTMGR_IMU_MIN_HZ &&
                      ((hz_us >= HX_MTMGR_IMU_MIN_HZ && hz_us <= HX_MTMGR_IMU_MAX_HZ) ||
-                      (x->dot_cols && hz_us >= HX_MTMGR_DOT_MIN_HZ));
+                      (x->dot_header && hz_us >= HX_MTMGR_DOT_MIN_HZ));
         if (x->stated_hz > 0.0 && fabs(hz - x->stated_hz) > HX_MTMGR_RATE_TOL * x->stated_hz) {
             /* the stamps are the samples' times: a stated rate they do not
              * keep is no nominal rate (the rate is then the stamps') */

@@ -42,8 +42,8 @@
 #define HX_MTMGR_IMU_MIN_HZ 20.0
 #define HX_MTMGR_IMU_MAX_HZ 5000.0
 /** Half the slowest rate of a Movella DOT (1 Hz; it logs at 1, 4, 10, 12,
- *  15, 20, 30, 60 or 120 Hz), Hz in us: under a header of DOT's own
- *  columns, steps this fast or faster in us are a DOT CSV's at any of its
+ *  15, 20, 30, 60 or 120 Hz), Hz in us: under a header of DOT's
+ *  (dot_header), steps this fast or faster in us are a DOT CSV's at any of its
  *  rates (hx_mtmgr_stamps). */
 #define HX_MTMGR_DOT_MIN_HZ 0.5
 
@@ -76,7 +76,8 @@ typedef struct {
     int npeek;               /**< rows in peek */
     double stamp_step;       /**< their median step that advances, ticks; 0: none (hx_mtmgr_stamps) */
     int us_like;             /**< the steps read as a Movella DOT CSV's us (hx_mtmgr_stamps) */
-    int dot_cols;            /**< every named header column is one a Movella DOT CSV writes
+    int dot_header;          /**< the header is a Movella DOT CSV's by its names: DOT's alone, or
+                                  one only DOT writes and none only MT Manager writes
                                   (hx_mtmgr_header) */
 } hx_mtmgr_t;
 
@@ -95,10 +96,14 @@ void hx_mtmgr_init(hx_mtmgr_t *x);
  *  of `Update Rate: N Hz` and the ProductCode are kept from it. */
 int hx_mtmgr_comment(hx_mtmgr_t *x, const char *line, long lineno);
 
-/** Find the columns among the n header fields f. 0, or -1 with the reason
- *  in msg: an Acc_ or Gyr_ column missing (an export of increments dq_, dv_
- *  or of FreeAcc_ alone is named as such, with the export setting that
- *  gives Acc_ and Gyr_). */
+/** Find the columns among the n header fields f, and whether the names are
+ *  a Movella DOT CSV's (dot_header: every one DOT's, or one only DOT writes,
+ *  Euler_*, Quat_W..Z, ClipCountAcc/Gyr, Cal_FreeAcc_*,
+ *  FreeAcc_Compared_Result, and none only MT Manager writes, Roll, Pitch,
+ *  Yaw, Quat_q0..q3, StatusWord, SampleTimeCoarse, Mat[..]). 0, or -1 with
+ *  the reason in msg: an Acc_ or Gyr_ column missing (an export of
+ *  increments dq_, dv_ or of FreeAcc_ alone is named as such, with the
+ *  export setting that gives Acc_ and Gyr_). */
 int hx_mtmgr_header(hx_mtmgr_t *x, char **f, int n, char *msg, size_t msg_size);
 
 /** Whether a field is a missing value: empty, or NaN in any case or sign. */
@@ -124,8 +129,8 @@ int hx_mtmgr_peek(hx_mtmgr_t *x, char **f, int n);
  *    the warning in msg;
  *  - when there is no '//' line and the steps are slower than
  *    HX_MTMGR_IMU_MIN_HZ in 100 us ticks but in HX_MTMGR_IMU_MIN_HZ ..
- *    HX_MTMGR_IMU_MAX_HZ in us, or, under a header of DOT's own columns
- *    (dot_cols), HX_MTMGR_DOT_MIN_HZ or faster in us (a DOT at 1 to 15 Hz,
+ *    HX_MTMGR_IMU_MAX_HZ in us, or, under a header of DOT's
+ *    (dot_header), HX_MTMGR_DOT_MIN_HZ or faster in us (a DOT at 1 to 15 Hz,
  *    which make no IMU's rate in us): us_like (a Movella DOT CSV, whose
  *    SampleTimeFine counts us; hx_mtmgr_us_refusal).
  *  Else 0. */

@@ -3477,6 +3477,76 @@ static void test_mtmgr_dot_rates(void **state)
     unlink(p);
 }
 
+/* A DOT CSV is known by a name only DOT writes (ClipCountAcc, ClipCountGyr,
+ * Cal_FreeAcc_*, FreeAcc_Compared_Result, Quat_W..Z, Euler_X..Z), whatever
+ * else its header holds: a column on no list (an app's own, here
+ * "UtcTime") left a DOT at 10 Hz read at 0.1 Hz, exit 0, until 2026-12-01,
+ * when every column had to be on DOT's list. Given with --from mtmanager a
+ * header with Euler_X (which detection leaves to the CSV reader) is refused
+ * the same. A name only MT Manager writes (Roll, StatusWord, Quat_q0,
+ * SampleTimeCoarse) beside DOT's mark, or an unknown column without the
+ * mark, leaves the file read in ticks, as before. A mutant that takes the
+ * mark alone refuses the Roll case; one without the mark reads the first. */
+static void test_mtmgr_dot_marks(void **state)
+{
+    static const struct {
+        const char *hdr; /* 11 columns, SampleTimeFine second */
+        hx_format_t from; /* HX_FMT_AUTO or HX_FMT_MTMGR */
+        int refused;
+    } cases[] = {
+        { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,ClipCountAcc,ClipCountGyr,UtcTime",
+          HX_FMT_AUTO, 1 },
+        { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,UtcTime,Cal_FreeAcc_X,Temp", HX_FMT_AUTO,
+          1 },
+        { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,FreeAcc_Compared_Result,Foo,Bar",
+          HX_FMT_AUTO, 1 },
+        { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Euler_X,Euler_Y,UtcTime", HX_FMT_MTMGR,
+          1 },
+        { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Quat_W,Quat_X,Quat_Y", HX_FMT_MTMGR, 1 },
+        /* MT Manager's own names beside DOT's mark: not DOT's */
+        { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,ClipCountAcc,ClipCountGyr,Roll",
+          HX_FMT_AUTO, 0 },
+        { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,ClipCountAcc,StatusWord,UtcTime",
+          HX_FMT_AUTO, 0 },
+        { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Quat_W,Quat_q0,Quat_q1", HX_FMT_MTMGR,
+          0 },
+        { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Cal_FreeAcc_X,SampleTimeCoarse,Foo",
+          HX_FMT_AUTO, 0 },
+        /* no mark: an unknown column leaves the file read in ticks */
+        { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,UtcTime", HX_FMT_AUTO, 0 },
+    };
+    char p[256], err[HX_ERR_SIZE];
+    hx_log_t log;
+    size_t c;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    for (c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        int rc;
+        write_mtmgr_steps_hdr(p, "", cases[c].hdr, 0.0, 12, 100000, 0); /* 10 Hz in us, 0.1 Hz in ticks */
+        if (cases[c].from == HX_FMT_AUTO) {
+            assert_int_equal(hx_detect_file(p), HX_FMT_MTMGR);
+        }
+        err[0] = '\0';
+        rc = hx_log_load(&log, p, cases[c].from, 0.0, err, sizeof err);
+        if (cases[c].refused) {
+            assert_int_equal(rc, -1);
+            assert_non_null(strstr(err, ".csv: SampleTimeFine steps by 100000: 0.1 Hz in 100 us ticks, 10 Hz in us, "
+                                        "no '//' line: likely a Movella DOT CSV; read it with --from csv"));
+        } else {
+            assert_int_equal(rc, 0);
+            assert_int_equal(log.n, 12);
+            assert_true(log.t_ns[1] - log.t_ns[0] == 10000000000LL);
+            hx_log_free(&log);
+        }
+    }
+    /* a '//' line before the marked header: MT Manager's, read in ticks */
+    write_mtmgr_steps_hdr(p, "// MT Manager\n", cases[0].hdr, 0.0, 12, 100000, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_true(log.t_ns[1] - log.t_ns[0] == 10000000000LL);
+    hx_log_free(&log);
+    unlink(p);
+}
+
 /* The '// Update Rate' is checked against the SampleTimeFine steps (their
  * median over the first 256 rows): more than 5 % apart, a warning names
  * both and the stamps rule (the rate is theirs, not nominal); within 5 %
@@ -3680,6 +3750,7 @@ int main(void)
         cmocka_unit_test(test_mtmgr_detect),
         cmocka_unit_test(test_mtmgr_us_stamps),
         cmocka_unit_test(test_mtmgr_dot_rates),
+        cmocka_unit_test(test_mtmgr_dot_marks),
         cmocka_unit_test(test_mtmgr_stated_rate),
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
         cmocka_unit_test(test_name_classify),

@@ -26,6 +26,14 @@ csv_rect() { # csv_rect FILE FIRST: passes when FILE, past its '#' lines, is a h
 rows = list(csv.reader(l for l in open(sys.argv[1]) if not l.startswith("#")))
 sys.exit(0 if len(rows) > 2 and rows[0][0] == sys.argv[2] and all(len(r) == len(rows[0]) for r in rows) else 1)' "$1" "$2" 2>"$T/pyerr"
 }
+bin_rate() { # bin_rate IN OUT HZ: a .bin with its header's rate set to HZ and marked nominal (flags bit 0), the header CRC made again (docs/log-format.md)
+    "${PY:-/usr/bin/python3}" -c 'import struct, sys, zlib
+b = bytearray(open(sys.argv[1], "rb").read())
+struct.pack_into("<I", b, 12, struct.unpack_from("<I", b, 12)[0] | 1)
+struct.pack_into("<d", b, 16, float(sys.argv[3]))
+struct.pack_into("<I", b, 188, zlib.crc32(bytes(b[:188])) & 0xffffffff)
+open(sys.argv[2], "wb").write(b)' "$@"
+}
 fake_gnuplot() { # DIR: a stand-in gnuplot there that keeps its script in $GP_SCRIPT and creates the output file
     mkdir -p "$1"
     cat >"$1/gnuplot" <<'GP'

@@ -852,8 +852,16 @@ if grep -q "are the time stamps in\|look like" "$T/err"; then fail "allan: stamp
     pass "allan: stamps in bursts (100 Hz over the log) told no time unit"; fi
 # ... but tau was read at 200 kHz with only "intervals differ from 1/rate"; a warning now names the rate over the span
 # and --input-rate (the units review, 2026-11-30; exit 0 as before)
-expect_err "the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the .* samples span .* s, 100 Hz; tau, sigma_v and the profile are read at 2e+05 Hz, not the sampling rate: leave the time column out and give --input-rate 100 (docs/harness.md, \"Time stamps in bursts\")" \
-    "allan: stamps in bursts warned, 100 Hz and --input-rate named"
+expect_err "the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the .* samples span .* s, 100 Hz; tau, sigma_v and the profile are read at 2e+05 Hz, the stamps' rate, not the sampling rate: leave the time column out and give --input-rate 100 (docs/harness.md, \"Time stamps in bursts\")" \
+    "allan: stamps in bursts warned, the stamps' rate said, 100 Hz and --input-rate named"
+# the same stamps in a .bin whose header states 100 Hz (nominal): tau is read at it, which the span keeps; it was
+# told "not the sampling rate" too until 2026-12-01
+"$H" convert "$T/touch_burst.csv" "$T/touch_burst.bin" --units time=us >/dev/null 2>&1 || fail "allan: convert the bursts to .bin"
+bin_rate "$T/touch_burst.bin" "$T/touch_nom.bin" 100 || fail "allan: the .bin's rate set"
+expect_exit 0 "a static log stamped in bursts, the .bin's stated 100 Hz" "$H" allan "$T/touch_nom.bin" --no-sim --quiet
+expect_err "100 Hz; tau, sigma_v and the profile are read at 100 Hz, the rate the file states, which the samples' span keeps, not the stamps' 200000 Hz (docs/harness.md, \"Time stamps in bursts\")" \
+    "allan: stamps in bursts at the stated rate: the rate and its source said"
+grep -q "not the sampling rate" "$T/err" && fail "allan: stated rate kept by the span told 'not the sampling rate'" || pass "allan: stated rate kept by the span, not told 'not the sampling rate'"
 # with --rate the analysis takes the rate given: no such warning
 expect_exit 0 "the same log analysed at --rate 100" "$H" allan "$T/touch_burst.csv" --no-sim --quiet --units time=us --rate 100
 grep -q "come in bursts" "$T/err" && fail "allan --rate: stamps in bursts still warned" || pass "allan --rate 100: no burst warning"

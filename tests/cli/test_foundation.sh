@@ -97,13 +97,13 @@ json "$T/burst_us.json" 'j["units_problem"] is None' && pass "info --json: stamp
     fail "info --json: stamps in bursts, units_problem $(grep units_problem "$T/burst_us.json")"
 # ... but its rate line (200000 Hz, 1 / the median interval) was printed without a word; a warning now names the
 # rate over the span and the --input-rate remedy, replay's refusal (the units review, 2026-11-30; exit 0 as before)
-expect_err "info: warning: $T/burst_us.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; the rate line is not the sampling rate: leave the time column out and give --input-rate 400 (docs/harness.md, \"Time stamps in bursts\")" \
-    "info: stamps in bursts warned, 400 Hz and --input-rate named"
+expect_err "info: warning: $T/burst_us.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; the rate line gives 2e+05 Hz, the stamps' rate, not the sampling rate: leave the time column out and give --input-rate 400 (docs/harness.md, \"Time stamps in bursts\")" \
+    "info: stamps in bursts warned, the stamps' rate said, 400 Hz and --input-rate named"
 # one stamp shared by each packet of 4 samples: 100 Hz from the stamps, the same warning for the other kind
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000, $2, $3, $4, $5, $6, $7 }' \
     "$T/bw.csv" > "$T/shared_us.csv"
 expect_exit 0 "info on samples sharing a stamp" "$H" info "$T/shared_us.csv" --units time=us
-expect_err "the time stamps come in bursts (samples that share one stamp: one per packet, or stamps coarser than the sampling?): 1 / their median interval gives 100 Hz, but the 16539 samples span 41.34 s, 400 Hz; the rate line is not the sampling rate: leave the time column out and give --input-rate 400" \
+expect_err "the time stamps come in bursts (samples that share one stamp: one per packet, or stamps coarser than the sampling?): 1 / their median interval gives 100 Hz, but the 16539 samples span 41.34 s, 400 Hz; the rate line gives 100 Hz, the stamps' rate, not the sampling rate: leave the time column out and give --input-rate 400" \
     "info: samples sharing a stamp warned, 400 Hz named"
 # the evenly stamped walk and the bundled one: no such warning
 expect_exit 0 "info on the bundled walk" "$H" info vectors/walk.bin
@@ -700,6 +700,15 @@ for r in 10 1; do
         --columns t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s
     expect_out_re "^rate +$r(\.0+)? Hz" "DOT CSV at $r Hz read with the remedy: $r Hz"
 done
+# ... and with a column on no list besides DOT's own ClipCountAcc/ClipCountGyr (an app's UtcTime): it was read at
+# 0.1 Hz, exit 0, until 2026-12-01 (every column had to be DOT's); a name only DOT writes now marks it, unless one
+# only MT Manager writes (Roll) is there too
+awk 'NR == 1 { print $0 ",ClipCountAcc,ClipCountGyr,UtcTime"; next } { print $0 ",0,0,1764547200" }' "$T/xdot10.csv" >"$T/xdotu.csv"
+expect_exit 1 "a Movella DOT CSV at 10 Hz with an app's column is not read as an MT Manager export" "$H" info "$T/xdotu.csv"
+expect_err "xdotu.csv: SampleTimeFine steps by .*, 10 Hz in us, no '//' line: $dot_remedy" "DOT CSV at 10 Hz with an app's column: refused, the remedy named"
+sed '1s/,UtcTime$/,Roll/' "$T/xdotu.csv" >"$T/xdotr.csv"
+expect_exit 0 "... with Roll (MT Manager's) instead: read as an export, in ticks" "$H" info "$T/xdotr.csv"
+expect_out_re "^rate +0\.100 Hz" "... with Roll: 100 us ticks"
 # a reader's message is whole behind a long path: the errors were cut at
 # 320 bytes, path included (info, allan, psd and convert left the DOT
 # remedy's --units out behind a 110-byte path; 2026-11-30)

@@ -387,8 +387,16 @@ if grep -q "are the time stamps in\|look like" "$T/err"; then fail "psd: stamps 
     pass "psd: stamps in bursts (400 Hz over the log) told no time unit"; fi
 # ... but its frequencies, read at 200 kHz, were given with only "intervals differ ...: Welch assumes uniform
 # sampling"; a warning now names the rate over the span and --input-rate (the units review, 2026-11-30; exit 0)
-expect_err "psd: warning: $T/burst_us.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; the frequencies are read at 2e+05 Hz, not the sampling rate: leave the time column out and give --input-rate 400 (docs/harness.md, \"Time stamps in bursts\")" \
-    "psd: stamps in bursts warned, 400 Hz and --input-rate named"
+expect_err "psd: warning: $T/burst_us.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; the frequencies are read at 2e+05 Hz, the stamps' rate, not the sampling rate: leave the time column out and give --input-rate 400 (docs/harness.md, \"Time stamps in bursts\")" \
+    "psd: stamps in bursts warned, the stamps' rate said, 400 Hz and --input-rate named"
+# the same stamps in a .bin whose header states 400 Hz (nominal): the frequencies are read at it, which the span
+# keeps; it was told "not the sampling rate" too until 2026-12-01
+"$H" convert "$T/burst_us.csv" "$T/burst_us.bin" --units time=us >/dev/null 2>&1 || fail "psd: convert the bursts to .bin"
+bin_rate "$T/burst_us.bin" "$T/burst_nom.bin" 400 || fail "psd: the .bin's rate set"
+expect_exit 0 "stamps in bursts, the .bin's stated 400 Hz" "$H" psd "$T/burst_nom.bin"
+expect_err "400 Hz; the frequencies are read at 400 Hz, the rate the file states, which the samples' span keeps, not the stamps' 200000 Hz (docs/harness.md, \"Time stamps in bursts\")" \
+    "psd: stamps in bursts at the stated rate: the rate and its source said"
+grep -q "not the sampling rate" "$T/err" && fail "psd: stated rate kept by the span told 'not the sampling rate'" || pass "psd: stated rate kept by the span, not told 'not the sampling rate'"
 expect_exit 0 "psd of the bundled walk" "$H" psd vectors/walk.bin
 grep -q "come in bursts" "$T/err" && fail "psd: the bundled walk warned of bursts" || pass "psd: the bundled walk, no burst warning"
 

@@ -405,8 +405,20 @@ if grep -q "are the time stamps in\|look like" "$T/err"; then fail "simgap: stam
     pass "simgap: stamps in bursts (100 Hz over the log) told no time unit"; fi
 # ... and it is warned of the bursts as allan and psd warn (the taus at 1 / the median interval, 200 kHz; without
 # a word until 2026-11-30), the rate of the whole packets named for --input-rate
-expect_err "harness simgap: warning: $T/sdburst.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the .* samples span .* s, 100 Hz; the taus and frequencies are read at 2e+05 Hz, not the sampling rate: leave the time column out and give --input-rate 100 (docs/harness.md, \"Time stamps in bursts\")" \
-    "a static log stamped in bursts: warned, --input-rate 100 named"
+expect_err "harness simgap: warning: $T/sdburst.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the .* samples span .* s, 100 Hz; the taus and frequencies are read at 2e+05 Hz, the stamps' rate, not the sampling rate: leave the time column out and give --input-rate 100 (docs/harness.md, \"Time stamps in bursts\")" \
+    "a static log stamped in bursts: warned, the stamps' rate said, --input-rate 100 named"
+# the same stamps in a .bin whose header states the rate (flag bit 0, nominal): simgap reads at the stated rate,
+# and said "not the sampling rate" of 100 Hz too, which the span keeps (until 2026-12-01); now the rate the file
+# states is named, kept or not by the span (50 Hz stated: not kept, --input-rate 100 named)
+"$H" convert "$T/sdburst.csv" "$T/sdburst.bin" --units time=us >/dev/null 2>&1 || fail "convert the bursts to .bin"
+bin_rate "$T/sdburst.bin" "$T/sdnom.bin" 100 && bin_rate "$T/sdburst.bin" "$T/sdnom50.bin" 50
+expect_exit 0 "static log stamped in bursts, the .bin's stated 100 Hz" "$H" simgap "$T/sdnom.bin" --quiet --seeds 4 --max-effects 0
+expect_err "harness simgap: warning: $T/sdnom.bin: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 3001 samples span 30 s, 100 Hz; the taus and frequencies are read at 100 Hz, the rate the file states, which the samples' span keeps, not the stamps' 200000 Hz (docs/harness.md, \"Time stamps in bursts\")" \
+    "a static log stamped in bursts at its stated rate: the rate and its source said, no remedy"
+grep -q "not the sampling rate" "$T/err" && fail "stated rate kept by the span: told 'not the sampling rate'" || pass "stated rate kept by the span: not told 'not the sampling rate'"
+expect_exit 0 "static log stamped in bursts, the .bin's stated 50 Hz" "$H" simgap "$T/sdnom50.bin" --quiet --seeds 4 --max-effects 0
+expect_err "100 Hz; the taus and frequencies are read at 50 Hz, the rate the file states, which the samples' span does not keep: leave the time column out and give --input-rate 100 (docs/harness.md, \"Time stamps in bursts\")" \
+    "a static log stamped in bursts at a stated rate the span does not keep: said, --input-rate 100 named"
 # a walk stamped in bursts (vectors/walk.bin, 400 Hz, in packets of 4 samples 5 us apart every 10 ms) was read at
 # 200 kHz, detected as static (its one-second windows 200,000 samples long) and analysed as one, exit 0; with one
 # stamp per packet it was navigated and twinned at 100 Hz. Both are now refused as replay refuses stamps in bursts,
