@@ -321,11 +321,14 @@ def fmt(v, f):
     return f % v if v is not None else '-'
 
 
-def main():
-    args = sys.argv[1:]
-    tmp, factors, extra_det, keep = None, [1.0, 0.85, 0.7, 0.6, 0.5], False, False
+def take_common(args, prog, factors, usage):
+    """Removes the options both probes take from args: --tmp DIR, --factors
+    F,F,... and --keep; returns (tmp or None, factors, keep)."""
+    tmp, keep = None, False
     if '--tmp' in args:
         i = args.index('--tmp')
+        if i + 1 >= len(args):
+            sys.exit(usage)
         tmp = args[i + 1]
         del args[i:i + 2]
     if '--factors' in args:
@@ -333,17 +336,23 @@ def main():
         try:
             factors = [float(x) for x in args[i + 1].split(',')]
         except (IndexError, ValueError):
-            sys.exit('probe_slow.py: --factors takes numbers separated by commas, e.g. 1,0.85,0.7')
+            sys.exit('%s: --factors takes numbers separated by commas, e.g. 1,0.85,0.7' % prog)
         del args[i:i + 2]
         # the resampler stretches by a fraction with a denominator up to 100
         if any(not 0 < x <= 1 or abs(float(Fraction(x).limit_denominator(100)) - x) > 1e-12 for x in factors):
-            sys.exit('probe_slow.py: a factor lies in (0, 1] and is a fraction p/q with q <= 100 (0.85, 0.7, 0.6, ...)')
-    if '--threshold' in args:
-        extra_det = True
-        args.remove('--threshold')
+            sys.exit('%s: a factor lies in (0, 1] and is a fraction p/q with q <= 100 (0.85, 0.7, 0.6, ...)' % prog)
     if '--keep' in args:
         keep = True
         args.remove('--keep')
+    return tmp, factors, keep
+
+
+def main():
+    args = sys.argv[1:]
+    tmp, factors, keep = take_common(args, 'probe_slow.py', [1.0, 0.85, 0.7, 0.6, 0.5], __doc__)
+    extra_det = '--threshold' in args
+    if extra_det:
+        args.remove('--threshold')
     if any(a.startswith('-') for a in args):
         sys.exit(__doc__)
     logs = args or [os.path.join(DATA, p) for p in DEFAULT_LOGS]
@@ -379,10 +388,11 @@ def main():
             print('\n%s: %.1f Hz (median interval), %d rows on the grid, still |f| %.4f m/s^2, '
                   'still noise sd acc %.4f %.4f %.4f m/s^2, gyro %.5f %.5f %.5f rad/s' %
                   (log, 1 / dt, len(tu), g, *sd0))
-            print('as recorded: exit %d, closure 3-D %.3f m, distance %.2f m, %d strides, median cadence %.1f '
-                  'steps/min, median stride %.3f m, median height change %+.4f m' %
-                  (rc, j0['return_error_3d_m'], j0['distance_m'], j0['strides'], med(st0, 'cadence_spm'),
-                   med(st0, 'length_m'), med(st0, 'height_change_m')))
+            # fmt: a walk of one stride (square2) has no cadence nor median
+            print('as recorded: exit %d, closure 3-D %.3f m, distance %.2f m, %d strides, median cadence %s '
+                  'steps/min, median stride %s m, median height change %s m' %
+                  (rc, j0['return_error_3d_m'], j0['distance_m'], j0['strides'], fmt(med(st0, 'cadence_spm'), '%.1f'),
+                   fmt(med(st0, 'length_m'), '%.3f'), fmt(med(st0, 'height_change_m'), '%+.4f')))
             print('\n| s | detector | cadence (steps/min) | strides (as recorded) | swing frames with ZUPT | '
                   'swings hit | v at ZUPT (m/s) | closure 3-D (m) | distance (m) | distance vs recorded | '
                   'median stride (m) | median height change (m) | still mean /f/ change (m/s^2) | speed vs s x recorded (m/s) | '
@@ -425,7 +435,7 @@ def main():
                            '%s of %d' % (hits, nsw), fmt(vmax if hits else None, '%.2f'),
                            fmt(j.get('return_error_3d_m') if closed else None, '%.3f'),
                            fmt(dist, '%.2f'),
-                           fmt(None if dist is None else 100 * (dist / jr['distance_m'] - 1), '%+.1f %%'),
+                           fmt(None if dist is None or not jr.get('distance_m') else 100 * (dist / jr['distance_m'] - 1), '%+.1f %%'),
                            fmt(med(st, 'length_m'), '%.3f'), fmt(med(st, 'height_change_m'), '%+.4f'),
                            '%.4f' % dfn, fmt(speed_check(rec[det][3], traj, s, t0), '%.3f'), rc)
                     print('| %.2f | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %d |' % row)

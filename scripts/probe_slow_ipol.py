@@ -387,25 +387,7 @@ def main():
     if '--selftest' in args:
         selftest()
         return
-    tmp, keep, factors = None, False, [1.0, 0.9, 0.8, 0.7, 0.6, 0.5]
-    if '--tmp' in args:
-        i = args.index('--tmp')
-        if i + 1 >= len(args):
-            sys.exit(__doc__)
-        tmp = args[i + 1]
-        del args[i:i + 2]
-    if '--factors' in args:
-        i = args.index('--factors')
-        try:
-            factors = [float(x) for x in args[i + 1].split(',')]
-        except (IndexError, ValueError):
-            sys.exit('probe_slow_ipol.py: --factors takes numbers separated by commas, e.g. 1,0.8,0.6')
-        del args[i:i + 2]
-        if any(not 0 < x <= 1 or abs(float(Fraction(x).limit_denominator(100)) - x) > 1e-12 for x in factors):
-            sys.exit('probe_slow_ipol.py: a factor lies in (0, 1] and is a fraction p/q with q <= 100')
-    if '--keep' in args:
-        keep = True
-        args.remove('--keep')
+    tmp, factors, keep = ps.take_common(args, 'probe_slow_ipol.py', [1.0, 0.9, 0.8, 0.7, 0.6, 0.5], __doc__)
     seed = 0
     if '--seed' in args:
         i = args.index('--seed')
