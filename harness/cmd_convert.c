@@ -73,7 +73,7 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
 {
     hx_log_t raw, res;
     hx_writer_t *w;
-    char err[512]; /* the resampler's refusal of stamps in bursts runs to 300 characters */
+    char err[768]; /* the resampler's refusal of stamps in bursts runs to 500 characters (a .bin's remedy) */
     long dups = 0, k;
     double fs = 0.0;
     int exit_code, lrc;

@@ -323,7 +323,7 @@ int hx_cmd_info(int argc, char **argv)
             hx_warn("info", "%s: %s", a.pos[0], hint);
         }
     }
-    hx_nav_bursts_warn("info", a.pos[0], log.t_ns, log.n, 0, "the rate line gives", in.rate_hz,
+    hx_nav_bursts_warn("info", a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the rate line gives", in.rate_hz,
                        log.meta.rate_nominal && log.meta.rate_hz > 0.0);
     printf("file        %s\n", a.pos[0]);
     printf("format      %s\n", hx_format_name(log.meta.format));

@@ -810,7 +810,7 @@ int hx_cmd_psd(int argc, char **argv)
                     irregular, log.n - 1, rate);
         }
     }
-    hx_nav_bursts_warn(CMD, a.pos[0], log.t_ns, log.n, 0, "the frequencies are read at", rate,
+    hx_nav_bursts_warn(CMD, a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the frequencies are read at", rate,
                        log.meta.rate_nominal && log.meta.rate_hz > 0.0);
     if (hx_arg(&a, "--input-rate") == NULL) {
         /* a time column in milliseconds (100 Hz read as 0.1 Hz) was said

@@ -2387,15 +2387,40 @@ static void bursts_cause(const hx_bursts_t *b, char *msg, size_t size)
              b->rate_hz);
 }
 
+const char *hx_bursts_remedy(hx_format_t fmt, double rate_hz, char *msg, size_t size)
+{
+    /* until 2026-12-01 every format was told to leave its time column out:
+     * a .bin has none, and the importers' logs with their time column cut
+     * are no longer their format; --input-rate is ignored (with a warning)
+     * on a .bin and a time-stamped importer's log, and a counter's only
+     * rescales the stamps. The converted CSV's t is its first column
+     * (cmd_convert), which cut takes out */
+    if ((fmt == HX_FMT_CSV || fmt == HX_FMT_AUTO) && g_layout.option != NULL && g_layout.names[0][0] != '\0') {
+        /* a time column --columns names (a DOT CSV's t=SampleTimeFine):
+         * the item goes too, since --columns t= with --input-rate is an
+         * error, and t= naming a column cut from the file is one */
+        snprintf(msg, size, "leave the time column out (drop t=%s from --columns) and give --input-rate %.4g",
+                 g_layout.names[0], rate_hz);
+    } else if (fmt == HX_FMT_CSV || fmt == HX_FMT_AUTO) {
+        snprintf(msg, size, "leave the time column out and give --input-rate %.4g", rate_hz);
+    } else {
+        snprintf(msg, size,
+                 "convert it to CSV without the time column (bin/harness convert LOG out.csv; cut -d, -f2- out.csv "
+                 "> in.csv) and give in.csv --input-rate %.4g",
+                 rate_hz);
+    }
+    return msg;
+}
+
 const char *hx_bursts_text(const hx_bursts_t *b, const char *needs, const char *section, char *msg, size_t size)
 {
     size_t len;
+    char fix[192];
     bursts_cause(b, msg, size);
     len = strlen(msg);
     if (len < size) {
-        snprintf(msg + len, size - len,
-                 "; %s: leave the time column out and give --input-rate %.4g (docs/harness.md, \"%s\")", needs,
-                 b->rate_hz, section);
+        snprintf(msg + len, size - len, "; %s: %s (docs/harness.md, \"%s\")", needs,
+                 hx_bursts_remedy(b->format, b->rate_hz, fix, sizeof fix), section);
     }
     return msg;
 }
@@ -2408,6 +2433,7 @@ const char *hx_bursts_rate_text(const hx_bursts_t *b, const char *reads, double 
      * (a .bin's nominal rate), which is the sampling rate */
     const int kept = nominal && b->rate_hz > 0.0 && fabs(rate_hz / b->rate_hz - 1.0) <= HX_BURSTS_RATE_TOL;
     size_t len;
+    char fix[192];
     bursts_cause(b, msg, size);
     len = strlen(msg);
     if (len >= size) {
@@ -2420,12 +2446,10 @@ const char *hx_bursts_rate_text(const hx_bursts_t *b, const char *reads, double 
                  reads, rate_hz, b->median_hz);
     } else {
         snprintf(msg + len, size - len,
-                 "; %s %.4g Hz, %s: leave the time column out and give --input-rate %.4g (docs/harness.md, \"Time "
-                 "stamps in bursts\")",
-                 reads, rate_hz,
+                 "; %s %.4g Hz, %s: %s (docs/harness.md, \"Time stamps in bursts\")", reads, rate_hz,
                  nominal ? "the rate the file states, which the samples' span does not keep"
                          : "the stamps' rate, not the sampling rate",
-                 b->rate_hz);
+                 hx_bursts_remedy(b->format, b->rate_hz, fix, sizeof fix));
     }
     return msg;
 }

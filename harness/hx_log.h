@@ -301,6 +301,9 @@ typedef struct {
                            the start of its last over the time between them (whole packets, whatever the
                            first and last hold); with no segment of 3 bursts the samples over the span,
                            (n - segs) / span_s (0: no span) */
+    hx_format_t format; /**< the format read, which chooses the remedy (hx_bursts_text): the interchange CSV
+                             (and HX_FMT_AUTO, hx_stamp_bursts's 0) leaves its time column out, any other
+                             (a .bin, an importer's log) is converted to CSV first; the caller sets it */
 } hx_bursts_t;
 /** Whether n time stamps (ns) come in bursts: the samples between the time
  *  jumps (an interval above max_gap_s and 1.5 median intervals, the
@@ -317,8 +320,25 @@ int hx_stamp_bursts(const int64_t *t_ns, size_t n, double max_gap_s, hx_bursts_t
  *  (samples stamped close together as a logger reads them?): 1 / their
  *  median interval gives 200000 Hz, but the 16539 samples span 41.34 s,
  *  400 Hz; NEEDS: leave the time column out and give --input-rate 400
- *  (docs/harness.md, \"SECTION\")". needs: what the wrong rate breaks. */
+ *  (docs/harness.md, \"SECTION\")". needs: what the wrong rate breaks.
+ *  The remedy is the interchange CSV's (b->format HX_FMT_CSV or
+ *  HX_FMT_AUTO); for any other format, whose time cannot be left out and
+ *  which ignores --input-rate or takes it for its counter's rate,
+ *  hx_bursts_remedy's conversion to CSV without the time column. */
 const char *hx_bursts_text(const hx_bursts_t *b, const char *needs, const char *section, char *msg, size_t size);
+/** The remedy for stamps in bursts of a log in format fmt, with the rate
+ *  to give, in msg (returned): for the interchange CSV (or HX_FMT_AUTO)
+ *  "leave the time column out and give --input-rate 400", with "(drop
+ *  t=NAME from --columns)" after "out" when --columns names the time
+ *  column (hx_reader_set_layout's; a DOT CSV's t=SampleTimeFine); for any other
+ *  format "convert it to CSV without the time column (bin/harness convert
+ *  LOG out.csv; cut -d, -f2- out.csv > in.csv) and give in.csv
+ *  --input-rate 400": a .bin has no column to leave out, and a time-stamped
+ *  importer (ngimu, pyshoe, gx2, an MT Manager export by SampleTimeFine)
+ *  ignores --input-rate as the .bin does, while a counter's (ipol,
+ *  square2, an export by PacketCounter) only rescales its stamps
+ *  (docs/harness.md, "Time stamps in bursts"). */
+const char *hx_bursts_remedy(hx_format_t fmt, double rate_hz, char *msg, size_t size);
 /** How far a rate the file states (nominal) may be from the rate of the
  *  samples' span (hx_bursts_t.rate_hz) and still be called kept, a
  *  fraction (the tolerance of an MT Manager export's '// Update Rate'). */

@@ -460,7 +460,7 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
          * smeared seconds of the walk into each output (0 strides), and
          * the shared stamps kept one sample of four (the units review). */
         hx_bursts_t bu;
-        char why[400];
+        char why[640];
         const int kind = hx_stamp_bursts(in->t_ns, in->n, max_gap_s, &bu);
         if (kind < 0) {
             free(keep);
@@ -468,6 +468,7 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
             return -1;
         }
         fs = bu.median_hz;
+        bu.format = in->meta.format;
         if (kind != HX_BURSTS_NONE) {
             free(keep);
             snprintf(err, err_size, "--rate: %s",
@@ -1268,18 +1269,29 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
 }
 
 /* The remedy for time stamps coarser than the sampling (hx_nav_coarse_stamps),
- * one text for the units error and the summary's note. */
-#define HX_COARSE_STAMPS_REMEDY                                                                            \
-    "write the stamps with more digits, or leave the time column out and give the rate with --input-rate " \
-    "HZ (docs/log-format.md, \"CSV interchange\")"
+ * one text for the units error and the summary's note: for the interchange
+ * CSV more digits or no time column; for any other format (a .bin, an
+ * importer's log: no time column to leave out, --input-rate ignored or
+ * only rescaling a counter) the conversion to CSV without it, as for stamps
+ * in bursts (hx_bursts_remedy; every format was told to leave its time
+ * column out until 2026-12-01). */
+static const char *coarse_stamps_remedy(hx_format_t fmt)
+{
+    return fmt == HX_FMT_CSV || fmt == HX_FMT_AUTO
+               ? "write the stamps with more digits, or leave the time column out and give the rate with "
+                 "--input-rate HZ (docs/log-format.md, \"CSV interchange\")"
+               : "convert it to CSV without the time column (bin/harness convert LOG out.csv; cut -d, -f2- "
+                 "out.csv > in.csv) and give in.csv the rate with --input-rate HZ (docs/harness.md, \"Time stamps "
+                 "in bursts\")";
+}
 
 /* 2 when the replayed log is not in SI units (err says why, without the
  * log's name: the JSON's units_problem), else 0. csv: as hx_units_problem's. */
 static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm_mean, int walks,
                        double in_rate_hz, size_t n_in, int64_t t_first_ns, int64_t t_last_ns,
-                       const hx_csv_layout_t *csv, char *err, size_t err_size)
+                       const hx_csv_layout_t *csv, hx_format_t fmt, char *err, size_t err_size)
 {
-    char msg[768], acc[360] = "", rep[320] = ""; /* acc + "; also " + msg fit the summary's units_problem */
+    char msg[768], acc[360] = "", rep[448] = ""; /* acc + "; also " + msg fit the summary's units_problem */
     const double g = (double)nav->cfg.gravity_mps2;
     double rate;
     /* |f| at rest: the alignment's, or that of a still period it refused
@@ -1304,8 +1316,9 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
          * 1000"; the generality review, 2026-11-30) */
         snprintf(rep, sizeof rep,
                  "%.1f %% of the samples repeat the time stamp before them, which advance by %.4g s: %.3g Hz from "
-                 "the stamps, too coarse for the sampling (float32 seconds far from 0?): " HX_COARSE_STAMPS_REMEDY,
-                 100.0 * (double)nav->stats.duplicates / (double)nav->stats.samples, 1.0 / rate, rate);
+                 "the stamps, too coarse for the sampling (float32 seconds far from 0?): %s",
+                 100.0 * (double)nav->stats.duplicates / (double)nav->stats.samples, 1.0 / rate, rate,
+                 coarse_stamps_remedy(fmt));
         rate = 0.0;
     }
     /* intervals too short (or too long), but not the log's span for its
@@ -1385,8 +1398,8 @@ static int stamps_never_advance(const fnav_nav_stats_t *st)
     return st->samples > 1u && st->duplicates + 1u >= st->samples;
 }
 
-int hx_nav_bursts_warn(const char *cmd, const char *path, const int64_t *t_ns, size_t n, int first,
-                       const char *reads, double rate_hz, int nominal)
+int hx_nav_bursts_warn(const char *cmd, const char *path, hx_format_t fmt, const int64_t *t_ns, size_t n,
+                       int first, const char *reads, double rate_hz, int nominal)
 {
     /* info, psd and allan printed 1 / the median interval of such stamps
      * (200 kHz for a 400 Hz walk) as the rate without a word until
@@ -1398,6 +1411,7 @@ int hx_nav_bursts_warn(const char *cmd, const char *path, const int64_t *t_ns, s
         return 0;
     }
     bu.first = first;
+    bu.format = fmt;
     hx_warn(cmd, "%s: %s", path, hx_bursts_rate_text(&bu, reads, rate_hz, nominal, msg, sizeof msg));
     return 1;
 }
@@ -1418,6 +1432,7 @@ int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, doubl
     size_t n = 0;
     fnav_sample_t s;
     hx_bursts_t bu;
+    hx_format_t read_fmt;
     int kind, rc = 0, more = 0;
     err[0] = '\0';
     if (r == NULL) {
@@ -1432,11 +1447,13 @@ int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, doubl
     while ((more = hx_reader_next(r, &s) == FNAV_OK) != 0 && n < HX_STAMPS_PROBE_N) {
         t[n++] = s.t_ns;
     }
+    read_fmt = hx_reader_meta(r)->format; /* fmt may be HX_FMT_AUTO */
     hx_reader_close(r);
     kind = hx_stamp_bursts(t, n, max_gap_s, &bu);
     bu.first = more; /* the log goes on past the stamps tested */
+    bu.format = read_fmt;
     if (kind == HX_BURSTS_CLOSE) {
-        char why[400];
+        char why[640];
         snprintf(err, err_size, "%s: %s", path,
                  hx_bursts_text(&bu, "navigation needs each sample's own time", "Time stamps in bursts", why,
                                 sizeof why));
@@ -1478,6 +1495,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
          * dropped here */
         hx_print_warnings(cmd, raw.warnings);
         in_fmt = raw.meta.format;
+        if (traj != NULL) {
+            traj->in_format = in_fmt;
+        }
         if (lrc > 0) {
             snprintf(err, err_size, "%s", raw.error);
             rc = 1;
@@ -1518,6 +1538,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             return -1;
         }
         in_fmt = hx_reader_meta(r)->format;
+        if (traj != NULL) {
+            traj->in_format = in_fmt;
+        }
     }
     {
         /* Stamps too coarse for a median interval (a 398 Hz log printed to
@@ -1713,7 +1736,8 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                         hx_walk_seen(&pc.walk),
                         traj != NULL && traj->in_rate_hz > 0.0 ? traj->in_rate_hz : 0.0,
                         span_n, span_t0, span_t1,
-                        (flags & HX_REPLAY_UNITS_OPT) ? hx_units_layout(in_fmt, &lay) : NULL, msg, sizeof msg);
+                        (flags & HX_REPLAY_UNITS_OPT) ? hx_units_layout(in_fmt, &lay) : NULL, in_fmt, msg,
+                        sizeof msg);
         if (traj != NULL) {
             /* the JSON's units_problem ("" when none) */
             traj->units_checked = 1;
@@ -2325,8 +2349,9 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
         fprintf(f, "note              %.1f %% of the samples repeat the time stamp before them (dt = 0; longest "
                    "interval %.1f ms): the stamps are coarser than the sampling (float32 seconds far from 0? a "
                    "millisecond clock above 1 kHz? one stamp for each packet of samples?); a repeated sample is not integrated and the detector's rate "
-                   "comes from the stamps, so position and heading are unreliable: " HX_COARSE_STAMPS_REMEDY "\n",
-                100.0 * (double)st->duplicates / (double)st->samples, 1e3 * (double)st->max_gap_seen_s);
+                   "comes from the stamps, so position and heading are unreliable: %s\n",
+                100.0 * (double)st->duplicates / (double)st->samples, 1e3 * (double)st->max_gap_seen_s,
+                coarse_stamps_remedy(t->in_format));
     }
     if (hx_nav_gappy(s)) {
         fprintf(f, "note              %.1f %% of the time in motion is lost in %ld gap%s longer than %.0f ms (longest "

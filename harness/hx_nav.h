@@ -113,6 +113,7 @@ typedef struct {
     long cut_lines;              /**< the log's incomplete last line ignored (hx_read_stats_t) */
     int stamps_coarse;           /**< the stamps are so coarse that an interval of one period can read over 1.5 periods (a gap) */
     char rate_src[128];          /**< where rate_hz came from, for the summary's rate line ("": not said) */
+    hx_format_t in_format;       /**< the format read (replay; HX_FMT_AUTO: not said), which chooses the coarse-stamps note's remedy */
     double max_gap_s;            /**< the navigator's time-jump limit (fnav_nav_config_t; 0: not known, no interval is a jump) */
     fnav_align_result_t align;   /**< alignment result */
     int aligned;
@@ -270,10 +271,11 @@ int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, doubl
  * states, which the samples' span keeps or not (nominal 1). reads: what of
  * the command's output the rate rate_hz makes ("the frequencies are read
  * at"). first: the n are the log's first stamps, not all (the message says
- * so). 1 when warned, else 0.
+ * so). fmt: the format read, which chooses the remedy (hx_bursts_remedy).
+ * 1 when warned, else 0.
  */
-int hx_nav_bursts_warn(const char *cmd, const char *path, const int64_t *t_ns, size_t n, int first,
-                       const char *reads, double rate_hz, int nominal);
+int hx_nav_bursts_warn(const char *cmd, const char *path, hx_format_t fmt, const int64_t *t_ns, size_t n,
+                       int first, const char *reads, double rate_hz, int nominal);
 
 /**
  * Replay one log through the Linux port into a navigator, sample by sample.

@@ -58,6 +58,7 @@ int sg_stamps_check(const hx_log_t *log, const char *path, int domain, char *err
         return 0;
     }
     bu.first = log->n > n;
+    bu.format = log->meta.format;
     if (domain == 2 || (domain == 0 && sg_detect_domain(log, bu.rate_hz) == 2)) {
         hx_bursts_text(&bu, "navigation needs each sample's own time", "Time stamps in bursts", err, err_size);
         return -1;

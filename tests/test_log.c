@@ -1982,6 +1982,60 @@ static void test_stamp_bursts_rate(void **state)
     FNAV_ASSERT_CLOSE(b.rate_hz, 400.0, 0.0, 1e-12);
 }
 
+/* The remedy for stamps in bursts is the format's (hx_bursts_remedy): the
+ * interchange CSV leaves its time column out; every other format, whose
+ * time cannot be left out (a .bin) or which ignores --input-rate (a
+ * time-stamped importer) or takes it for its counter's rate (ipol), is
+ * converted to CSV first. Until 2026-12-01 every format was told to leave
+ * its time column out (tests/cli/test_bursts.sh follows each remedy). */
+static void test_bursts_remedy(void **state)
+{
+    static const hx_format_t convert[] = { HX_FMT_BIN, HX_FMT_GX2, HX_FMT_NGIMU, HX_FMT_PYSHOE,
+                                           HX_FMT_IPOL, HX_FMT_SQUARE2, HX_FMT_MTMGR };
+    hx_bursts_t b;
+    char msg[640];
+    int64_t t[400];
+    size_t k;
+    (void)state;
+    hx_reader_set_layout(NULL);
+    assert_string_equal(hx_bursts_remedy(HX_FMT_CSV, 400.0, msg, sizeof msg),
+                        "leave the time column out and give --input-rate 400");
+    assert_string_equal(hx_bursts_remedy(HX_FMT_AUTO, 250.0, msg, sizeof msg),
+                        "leave the time column out and give --input-rate 250");
+    {
+        /* a time column --columns names: its item goes too */
+        hx_csv_layout_t l;
+        hx_csv_layout_default(&l);
+        strcpy(l.names[0], "SampleTimeFine");
+        l.option = "--columns";
+        hx_reader_set_layout(&l);
+        assert_string_equal(hx_bursts_remedy(HX_FMT_CSV, 398.0, msg, sizeof msg),
+                            "leave the time column out (drop t=SampleTimeFine from --columns) and give --input-rate 398");
+        hx_reader_set_layout(NULL);
+    }
+    for (k = 0; k < sizeof convert / sizeof convert[0]; k++) {
+        assert_string_equal(hx_bursts_remedy(convert[k], 400.0, msg, sizeof msg),
+                            "convert it to CSV without the time column (bin/harness convert LOG out.csv; cut -d, -f2- "
+                            "out.csv > in.csv) and give in.csv --input-rate 400");
+    }
+    /* the format set in hx_bursts_t chooses the text of both messages */
+    for (k = 0; k < 400u; k++) {
+        t[k] = ((int64_t)(k / 4u) + 1) * 10000000 + 5000 * (int64_t)(k % 4u);
+    }
+    assert_int_equal(hx_stamp_bursts(t, 400u, 0.2, &b), HX_BURSTS_CLOSE);
+    assert_int_equal(b.format, HX_FMT_AUTO);
+    b.format = HX_FMT_BIN;
+    assert_non_null(strstr(hx_bursts_text(&b, "W", "S", msg, sizeof msg),
+                           "400 Hz; W: convert it to CSV without the time column (bin/harness convert LOG out.csv; cut "
+                           "-d, -f2- out.csv > in.csv) and give in.csv --input-rate 400 (docs/harness.md, \"S\")"));
+    assert_non_null(strstr(hx_bursts_rate_text(&b, "R", 50.0, 1, msg, sizeof msg),
+                           "R 50 Hz, the rate the file states, which the samples' span does not keep: convert it to CSV "
+                           "without the time column"));
+    b.format = HX_FMT_CSV;
+    assert_non_null(strstr(hx_bursts_rate_text(&b, "R", 2e5, 0, msg, sizeof msg),
+                           "the stamps' rate, not the sampling rate: leave the time column out and give --input-rate 400 ("));
+}
+
 /* The Xsens packet counter of ipol_gait_xsens has 16 bits: past 65535 it
  * wraps to 0 (and a packet may be lost across the wrap), which must read as
  * time going on, not backwards. */
@@ -3738,6 +3792,7 @@ int main(void)
         cmocka_unit_test(test_stamp_rate),
         cmocka_unit_test(test_stamp_bursts),
         cmocka_unit_test(test_stamp_bursts_rate),
+        cmocka_unit_test(test_bursts_remedy),
         cmocka_unit_test(test_roundtrip_all_formats),
         cmocka_unit_test(test_killed_writer),
         cmocka_unit_test(test_bin_rate_unknown),
