@@ -961,7 +961,7 @@ int hx_cmd_psd(int argc, char **argv)
         exit_code = HX_EXIT_IO;
     }
     if (hx_arg(&a, "--json") != NULL) {
-        char err[256];
+        char err[HX_ERR_SIZE];
         cJSON *set;
         root = cJSON_CreateObject();
         cJSON_AddStringToObject(root, "source", a.pos[0]);
