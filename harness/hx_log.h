@@ -339,6 +339,17 @@ const char *hx_bursts_text(const hx_bursts_t *b, const char *needs, const char *
  *  square2, an export by PacketCounter) only rescales its stamps
  *  (docs/harness.md, "Time stamps in bursts"). */
 const char *hx_bursts_remedy(hx_format_t fmt, double rate_hz, char *msg, size_t size);
+/** The remedy for a log of a format other than the interchange CSV whose
+ *  time stamps navigation cannot use, "convert it to CSV without the time
+ *  column (bin/harness convert LOG out.csv; cut -d, -f2- out.csv > in.csv)
+ *  and give in.csv " followed by rate, a string literal naming the rate to
+ *  give: hx_bursts_remedy's "--input-rate %.4g" (a format for the rate it
+ *  found) and the coarse-stamps note's "the rate with --input-rate HZ"
+ *  (hx_nav.c). One text, so that the two cannot drift apart (written twice
+ *  until 2026-12-01). */
+#define HX_CONVERT_REMEDY(rate)                                                                                      \
+    "convert it to CSV without the time column (bin/harness convert LOG out.csv; cut -d, -f2- out.csv > in.csv) "  \
+    "and give in.csv " rate
 /** How far a rate the file states (nominal) may be from the rate of the
  *  samples' span (hx_bursts_t.rate_hz) and still be called kept, a
  *  fraction (the tolerance of an MT Manager export's '// Update Rate'). */
