@@ -75,8 +75,13 @@ int hx_find_col(char **f, int n, const char *name);
  *  behind --help (HX_INPUT_OPTS) and the error of an unknown name; a new
  *  importer adds its name here and in k_format_names (hx_log.c). */
 /** Room for a reader's message: the path (a few hundred bytes) and the
- *  longest remedy (about 400: the Movella DOT CSV's, the other names'); 320
- *  until 2026-11-30 cut them behind a path of 30-110 bytes. */
+ *  longest remedy (about 400: the Movella DOT CSV's, the other names', a
+ *  stamps-in-bursts refusal's "convert it to CSV ..."); 320 until
+ *  2026-11-30 cut them behind a path of 30-110 bytes. Every buffer a
+ *  command passes for an error message is this size (eval's row notes this
+ *  and room for its own words, cmd_eval.c's EV_NOTE_SIZE): until
+ *  2026-12-01 some had 200 to 768 bytes, and eval cut a non-CSV log's
+ *  bursts remedy (tests/cli/test_eval_data.sh). */
 #define HX_ERR_SIZE 1024
 
 #define HX_FORMAT_LIST "bin, csv, gx2, openshoe820, ngimu, pyshoe, ipol, adis, square2, mtmanager"
