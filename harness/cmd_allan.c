@@ -1515,10 +1515,13 @@ static void json_deviations(const run_t *R, const chan_t *ch, size_t k, cJSON *e
 static int write_json(const run_t *R, const char *path)
 {
     cJSON *root = cJSON_CreateObject(), *arr;
-    char err[256];
+    char err[HX_ERR_SIZE];
     int i, rc;
     size_t k;
     cJSON_AddStringToObject(root, "source", R->source);
+    /* the name replay's JSON gives the input file; source kept as its alias
+     * (docs/allan.md, "JSON"; the only key until 2026-12-01) */
+    cJSON_AddStringToObject(root, "log", R->source);
     cJSON_AddStringToObject(root, "sensor", R->sensor);
     cJSON_AddNumberToObject(root, "rate_hz", R->rate_hz);
     cJSON_AddNumberToObject(root, "samples", (double)R->n);
@@ -2100,7 +2103,7 @@ static void ar1_refusal(const run_t *R, const chan_t *ch, double tau_long_s, cha
 static int write_profile(const run_t *R, const char *path, const char *name)
 {
     fnav_profile_t p;
-    char err[320], comment[1024], extra[2048];
+    char err[HX_ERR_SIZE], comment[1024], extra[2048];
     size_t len = 0;
     int i, have_q = 0, have_k = 0, nfallback = 0, bound;
     double tau_long_s;

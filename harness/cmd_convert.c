@@ -73,7 +73,7 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
 {
     hx_log_t raw, res;
     hx_writer_t *w;
-    char err[768]; /* the resampler's refusal of stamps in bursts runs to 500 characters (a .bin's remedy) */
+    char err[HX_ERR_SIZE]; /* a reader's or the resampler's refusal: the path and a remedy (hx_log.h) */
     long dups = 0, k;
     double fs = 0.0;
     int exit_code, lrc;
@@ -138,7 +138,7 @@ int hx_cmd_convert(int argc, char **argv)
     hx_format_t to = HX_FMT_AUTO;
     fnav_sample_t s;
     fnav_status_t st;
-    char err[320];
+    char err[HX_ERR_SIZE];
     const char *to_name;
     int rc = hx_args_parse(&k_spec, argc, argv, &a);
     int exit_code = HX_EXIT_OK;

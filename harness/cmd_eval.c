@@ -17,6 +17,13 @@
 #include "hx_profile.h"
 #include "hx_evplot.h"
 
+/* Room for a row's note: a reader's or replay's message whole (HX_ERR_SIZE:
+ * the path and the longest remedy, a stamps-in-bursts refusal's "convert it
+ * to CSV ...") with eval's words around it ("input ends early (...): the
+ * walk was read only in part"). Until 2026-12-01 a note had 200 bytes and a
+ * replay's message 400: a non-CSV log's bursts refusal lost its remedy. */
+#define EV_NOTE_SIZE (HX_ERR_SIZE + 128)
+
 static const hx_opt_t k_opts[] = {
     HX_NAV_OPTS(NULL),
     { "--data", "DIR", "shared data directory (default: $FNAV_DATA_DIR, ../shared/data)", 0 },
@@ -273,7 +280,7 @@ static const char *after_path(const char *msg, const char *path, char *buf, size
  * targets' note) and its reason kept for the row of its table. */
 static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const char *msg)
 {
-    char buf[400];
+    char buf[HX_ERR_SIZE];
     size_t i;
     hx_warn("eval", "%s: %s", path, after_path(msg, path, buf, sizeof buf));
     ev->failures++;
@@ -317,7 +324,7 @@ static void note_add(char *note, size_t size, const char *what)
 static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, double rate_hz, int axes, hx_traj_t *t,
                   hx_nav_summary_t *s, char *note, size_t note_size)
 {
-    char err[400], buf[400];
+    char err[HX_ERR_SIZE], buf[HX_ERR_SIZE];
     int rc = hx_nav_replay("eval", path, HX_FMT_AUTO, 0.0, cfg, rate_hz, NULL, t, axes ? HX_REPLAY_AXES : 0u, err,
                            sizeof err);
     ev->runs++;
@@ -336,8 +343,8 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
          * that cannot be read at all (until 2026-11-29 a note in the row
          * only: no warning, exit 0, and the part judged against the
          * targets; a review) */
-        char why[300];
-        snprintf(why, sizeof why, "input ends early (%.150s): the walk was read only in part",
+        char why[EV_NOTE_SIZE];
+        snprintf(why, sizeof why, "input ends early (%s): the walk was read only in part",
                  after_path(err, path, buf, sizeof buf));
         fail(ev, path, note, note_size, why);
         hx_traj_free(t);
@@ -348,8 +355,8 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
          * or time stamps that never advance), which the row gave as "no
          * still period at the start" for both (the JSON review's merge,
          * 2026-11-30) */
-        char why[300];
-        snprintf(why, sizeof why, "the filter never aligned: %.250s", after_path(err, path, buf, sizeof buf));
+        char why[EV_NOTE_SIZE];
+        snprintf(why, sizeof why, "the filter never aligned: %s", after_path(err, path, buf, sizeof buf));
         fail(ev, path, note, note_size, why);
         hx_traj_free(t);
         return -1;
@@ -442,7 +449,7 @@ static double *walk_values(double **walk, int n)
 static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fnav_nav_config_t *cfg, double rate_hz,
                         int write, closure_t *out, double **walk)
 {
-    char dir[600], path[1000], note[200], nm[256];
+    char dir[600], path[1000], note[EV_NOTE_SIZE], nm[256];
     ev_name_t *names;
     double *h, *d3, *vz, *hm, *pm, *wv;
     int n, i, k = 0;
@@ -521,7 +528,7 @@ static double closure_3d_m(ev_t *ev, const char *path, const fnav_nav_config_t *
 {
     hx_traj_t t;
     hx_nav_summary_t s;
-    char note[200];
+    char note[EV_NOTE_SIZE];
     if (replay(ev, path, cfg, rate_hz, 0, &t, &s, note, sizeof note) != 0 ||
         no_closure(ev, path, &s, &t, note, sizeof note)) {
         return (double)NAN;
@@ -783,7 +790,7 @@ static void stride_notes(char *note, size_t size, const gcp_t *g, const stride_r
 static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, int write, fp_t *out,
                        double **walk)
 {
-    char dir[600], path[900], gpath[900], note[200], msg[200], nm[256];
+    char dir[600], path[900], gpath[900], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256];
     ev_name_t *names;
     double *fpct, *smed, *fm, *wv, sum = 0.0;
     int n, i, k = 0;
@@ -936,7 +943,7 @@ typedef struct {
 
 static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *out, double **walk)
 {
-    char dir[600], path[900], gpath[900], note[200], msg[200], nm[256];
+    char dir[600], path[900], gpath[900], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256];
     ev_name_t *names;
     double *med, *rms, *fin, *wv;
     int n, i, k = 0, rc;
@@ -1279,7 +1286,7 @@ static void ipol_match(const long (*evs)[2], int ne, const long (*oevs)[2], int 
 
 static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
 {
-    char dir[600], path[900], jpath[900], note[200], nm[300];
+    char dir[600], path[900], jpath[900], note[EV_NOTE_SIZE], nm[300];
     ev_name_t *names;
     ev_dvec_t fo_e = { NULL, 0, 0 }, fs_e = { NULL, 0, 0 }, fo_a = { NULL, 0, 0 }, fs_a = { NULL, 0, 0 };
     long (*sw)[2] = NULL, *fo = NULL, *fs = NULL;
@@ -1301,7 +1308,7 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             int ne, noe, nsw = 0, nfo = 0, nfs = 0, j, exp_n = 0, det_n = 0, miss = 0, spur_n = 0, lrc = 0;
             long last;
             hx_log_t log;
-            char err[HX_ERR_SIZE], oerr[320];
+            char err[HX_ERR_SIZE], oerr[HX_ERR_SIZE];
             fnav_stance_t st;
             fnav_stance_config_t sc = cfg->stance;
             fnav_stance_out_t o;
@@ -1336,8 +1343,8 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
                  * expert swings after it would read as missed strides, the
                  * detector blamed for the data (until 2026-11-29 without a
                  * word, exit 0; a review) */
-                char buf[400], why[400];
-                snprintf(why, sizeof why, "input ends early (%.150s): the foot's log was read only in part",
+                char buf[HX_ERR_SIZE], why[EV_NOTE_SIZE];
+                snprintf(why, sizeof why, "input ends early (%s): the foot's log was read only in part",
                          log.n == 0 ? "no sample" : after_path(log.error, path, buf, sizeof buf));
                 fail(ev, path, note, sizeof note, why);
                 hx_log_free(&log);
@@ -1673,7 +1680,7 @@ int hx_cmd_eval(int argc, char **argv)
     hx_args_t a;
     hx_nav_opts_t o;
     ev_t ev;
-    char err[400], cmdline[1024];
+    char err[HX_ERR_SIZE], cmdline[1024];
     const char *out_path, *json_path, *data;
     closure_t gx2, gx2_200, gx2_100;
     double xs = (double)NAN, xl = (double)NAN; /* the vendor-figure walks' 3-D closure, m */
@@ -1904,7 +1911,7 @@ int hx_cmd_eval(int argc, char **argv)
     if (nxio == 0) {
         fprintf(ev.md, "No walks found in `%s/xio_ngimu_gait`.\n\n", ev.data);
     } else {
-        char p[1000], note[200];
+        char p[1000], note[EV_NOTE_SIZE];
         fprintf(ev.md, "| walk | path (m) | horizontal (m) | 3-D (m) | 3-D (%%) | vertical (m) | vendor 3-D (m) | "
                        "duplicates | gaps | longest interval (ms) | result |\n");
         fprintf(ev.md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
@@ -1958,7 +1965,7 @@ int hx_cmd_eval(int argc, char **argv)
             fprintf(ev.md, "No walks found in `%s/%s`.\n\n", ev.data,
                     nother_set[0] == 0 ? "openshoe_c_820hz" : "openshoe_square2");
         }
-        char p[1000], note[200];
+        char p[1000], note[EV_NOTE_SIZE];
         fprintf(ev.md, "| walk | rate (Hz) | path (m) | horizontal (m) | 3-D (m) | 3-D (%%) | vertical (m) | "
                        "frames in stance (%%) | strides | note |\n");
         fprintf(ev.md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
@@ -2094,7 +2101,7 @@ int hx_cmd_eval(int argc, char **argv)
                 wg[b] = wf[b] = wv[b] = NULL;
             }
             for (pi = 0; pi < EV_NP; pi++) {
-                char perr[300];
+                char perr[HX_ERR_SIZE];
                 fnav_profile_t pr;
                 ok[pi] = 1;
                 if (hx_profile_load(prof[pi], &pr, perr, sizeof perr) != 0) {

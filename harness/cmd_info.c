@@ -216,7 +216,7 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
 {
     cJSON *j = cJSON_CreateObject();
     cJSON *arr;
-    char err[256];
+    char err[HX_ERR_SIZE];
     int c, rc;
     static const char *const ch[6] = { "ax", "ay", "az", "gx", "gy", "gz" };
     cJSON_AddStringToObject(j, "format", hx_format_name(log->meta.format));

@@ -276,7 +276,7 @@ static void report_link(live_t *L, const fnav_wire_frame_t *f)
 static int open_recording(live_t *L)
 {
     hx_meta_t meta;
-    char err[320];
+    char err[HX_ERR_SIZE];
     memset(&meta, 0, sizeof meta);
     meta.format = HX_FMT_BIN;
     if (L->have_info) {
@@ -659,7 +659,7 @@ int hx_cmd_live(int argc, char **argv)
     /* quiet time before held frames are flushed: shorter than --timeout */
     double idle_flush_s;
     const char *plot_png = "live.png", *out_path, *json_path;
-    char err[600], gone_msg[600] = "";
+    char err[HX_ERR_SIZE], gone_msg[600] = "";
     int rc, exit_code = HX_EXIT_OK, gone = 0, timed_out = 0;
     char cmdline[1024], why[700] = "", port_path[4096];
     struct sigaction sa;
@@ -837,7 +837,7 @@ int hx_cmd_live(int argc, char **argv)
 
     /* the recording first: it must be complete whatever happens below */
     if (L.rec != NULL) {
-        char werr[320];
+        char werr[HX_ERR_SIZE];
         if (hx_writer_close(L.rec, werr, sizeof werr) != FNAV_OK) {
             hx_error(CMD, "%s", werr);
             L.rec_failed = 1;

@@ -276,7 +276,7 @@ static int write_json(const char *path, const hx_mc_result_t *r, const char *mot
                       const char *fprofile, int eq6, unsigned seed)
 {
     cJSON *root = cJSON_CreateObject(), *vars = cJSON_CreateArray();
-    char err[256];
+    char err[HX_ERR_SIZE];
     int v, g, b, rc;
     cJSON_AddStringToObject(root, "motion", motion);
     cJSON_AddNumberToObject(root, "rate_hz", rate);
@@ -616,7 +616,7 @@ int hx_cmd_montecarlo(int argc, char **argv)
         hx_motion_t *motion;
         hx_nav_opts_t no;
         prog_ctx_t pc;
-        char err[512];
+        char err[HX_ERR_SIZE];
         const char *bm = hx_arg(&a, "--bias-model"), *fprof = hx_arg(&a, "--filter-profile");
         const char *json = hx_arg(&a, "--json"), *csv = hx_arg(&a, "--csv"), *png = hx_arg(&a, "--plot");
         double seeds = 50.0, bin = 1.0;

@@ -961,10 +961,13 @@ int hx_cmd_psd(int argc, char **argv)
         exit_code = HX_EXIT_IO;
     }
     if (hx_arg(&a, "--json") != NULL) {
-        char err[256];
+        char err[HX_ERR_SIZE];
         cJSON *set;
         root = cJSON_CreateObject();
         cJSON_AddStringToObject(root, "source", a.pos[0]);
+        /* the name replay's JSON gives the input file; source kept as its
+         * alias (docs/psd.md, "JSON"; the only key until 2026-12-01) */
+        cJSON_AddStringToObject(root, "log", a.pos[0]);
         cJSON_AddStringToObject(root, "sensor", log.meta.sensor);
         cJSON_AddNumberToObject(root, "rate_hz", rate);
         cJSON_AddNumberToObject(root, "samples", (double)log.n);

@@ -92,7 +92,7 @@ int hx_cmd_sim(int argc, char **argv)
     hx_motion_t *motion = NULL;
     sim_ctx_t ctx;
     hx_meta_t meta;
-    char err[512];
+    char err[HX_ERR_SIZE];
     const char *motion_name, *profile, *out, *truth;
     double rate, dur;
     int rc, status = HX_EXIT_OK;

@@ -51,7 +51,7 @@ int hx_cmd_simgap(int argc, char **argv)
     hx_log_t log;
     sg_opts_t o = sg_opts_default();
     sg_result_t *r;
-    char err[768]; /* a stamps-in-bursts refusal with the convert remedy runs to 500 characters */
+    char err[HX_ERR_SIZE]; /* a reader's refusal: the path and a remedy (hx_log.h) */
     long seeds = o.seeds, seed = (long)o.seed, steps = o.max_steps, pre = o.prescreen;
     double frac = o.fit_frac, alpha = o.alpha;
     const char *json, *plot, *path;

@@ -66,7 +66,7 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     hx_args_t a;
     sgv_opts_t o = sgv_opts_default();
     sgv_case_t *cases;
-    char err[512], why[600];
+    char err[HX_ERR_SIZE], why[HX_ERR_SIZE];
     long n = o.cases, seed = (long)o.seed, seeds = o.seeds;
     const char *json, *md, *mr;
     double t0;

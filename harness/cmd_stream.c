@@ -109,7 +109,7 @@ int hx_cmd_stream(int argc, char **argv)
     tx_t tx;
     long baud = 460800, corrupt = 0, drop = 0, hangup = 0;
     double rate = 0.0, speed = 1.0, t_start, need_bps;
-    char err[600];
+    char err[HX_ERR_SIZE];
     int rc = hx_args_parse(&k_spec, argc, argv, &a), loaded;
     int exit_code = HX_EXIT_OK;
     size_t i;

@@ -334,7 +334,7 @@ static int input_options(const char *cmd, const hx_args_t *a, hx_format_t *fmt, 
          * "Another layout") */
         const char *map = hx_arg(a, "--columns"), *units = hx_arg(a, "--units");
         hx_csv_layout_t l;
-        char err[200];
+        char err[HX_ERR_SIZE];
         hx_csv_layout_default(&l);
         if ((map != NULL && hx_csv_columns_parse(&l, map, err, sizeof err) != 0) ||
             (units != NULL && hx_csv_units_parse(&l, units, err, sizeof err) != 0)) {

@@ -2404,10 +2404,7 @@ const char *hx_bursts_remedy(hx_format_t fmt, double rate_hz, char *msg, size_t 
     } else if (fmt == HX_FMT_CSV || fmt == HX_FMT_AUTO) {
         snprintf(msg, size, "leave the time column out and give --input-rate %.4g", rate_hz);
     } else {
-        snprintf(msg, size,
-                 "convert it to CSV without the time column (bin/harness convert LOG out.csv; cut -d, -f2- out.csv "
-                 "> in.csv) and give in.csv --input-rate %.4g",
-                 rate_hz);
+        snprintf(msg, size, HX_CONVERT_REMEDY("--input-rate %.4g"), rate_hz);
     }
     return msg;
 }

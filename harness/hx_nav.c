@@ -1280,9 +1280,7 @@ static const char *coarse_stamps_remedy(hx_format_t fmt)
     return fmt == HX_FMT_CSV || fmt == HX_FMT_AUTO
                ? "write the stamps with more digits, or leave the time column out and give the rate with "
                  "--input-rate HZ (docs/log-format.md, \"CSV interchange\")"
-               : "convert it to CSV without the time column (bin/harness convert LOG out.csv; cut -d, -f2- "
-                 "out.csv > in.csv) and give in.csv the rate with --input-rate HZ (docs/harness.md, \"Time stamps "
-                 "in bursts\")";
+               : HX_CONVERT_REMEDY("the rate with --input-rate HZ") " (docs/harness.md, \"Time stamps in bursts\")";
 }
 
 /* 2 when the replayed log is not in SI units (err says why, without the

@@ -552,7 +552,7 @@ static int parse_triple(const char *s, double v[3])
 
 int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *s)
 {
-    char err[512];
+    char err[HX_ERR_SIZE];
     double rate = 200.0, dur = 0.0, over = 0.0, seed = 1.0, v;
     const char *bs;
     int i;

@@ -2620,7 +2620,7 @@ static int sim_firsts(const char *script, const fnav_imuerr_config_t *cfg, const
     hx_log_t L;
     walk_t w;
     navrun_t run;
-    char err[256];
+    char err[HX_ERR_SIZE];
     int c;
     long k;
     if (sgv_simulate(script, cfg, 0, &L, err, sizeof err) != 0) {

@@ -1125,7 +1125,7 @@ int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *case
                    const char *error)
 {
     cJSON *root = cJSON_CreateObject(), *arr;
-    char err[256];
+    char err[HX_ERR_SIZE];
     int i, ch, rc, nrun = 0, complete;
     if (root == NULL) {
         return -1;

@@ -200,70 +200,36 @@ static int name_axis(const char *name, const char *stem, const char *axes)
     return 0;
 }
 
-/* What a header field tells of a Movella DOT CSV (the names of the DOT
- * SDK's payloads; DOT user manual, XD0502P, 4.2):
- * - DOT_MARK: a name only DOT writes: Euler_X..Z and Quat_W..Z (MT Manager
- *   writes Roll, Pitch, Yaw and Quat_q0..q3), ClipCountAcc, ClipCountGyr,
- *   Cal_FreeAcc_X..Z, FreeAcc_Compared_Result;
- * - DOT_SHARED: a name DOT writes that MT Manager may write too, or empty
- *   (a trailing comma's): PacketCounter, SampleTimeFine, Acc_, Gyr_, Mag_,
- *   FreeAcc_ X..Z, dq_W..Z, dv[1]..dv[3], Status, Flag;
- * - MTMGR_OWN: a name only MT Manager writes, for what DOT names otherwise
- *   or does not output: Roll, Pitch, Yaw, Quat_q0..q3, StatusWord,
- *   SampleTimeCoarse, Mat[..] (the rotation matrix);
- * - OTHER: any other name (an app's own column, say), which tells neither. */
-enum { COL_OTHER, COL_DOT_SHARED, COL_DOT_MARK, COL_MTMGR_OWN };
-
-static int column_kind(const char *name)
+/* Whether a header field is a name only MT Manager writes, for what a
+ * Movella DOT CSV names otherwise or does not output (the names of the DOT
+ * SDK's payloads; DOT user manual, XD0502P, 4.2): Roll, Pitch, Yaw (DOT:
+ * Euler_X..Z), Quat_q0..q3 (DOT: Quat_W..Z), StatusWord, SampleTimeCoarse,
+ * Mat[..] (the rotation matrix). Until 2026-12-01 the header was also
+ * searched for DOT's own names (Euler_*, Quat_W..Z, ClipCountAcc/Gyr,
+ * Cal_FreeAcc_*, FreeAcc_Compared_Result): a DOT CSV without one and with a
+ * column of neither (an app's own) was read in ticks at 1 to 15 Hz; the
+ * stamps tell it now (hx_mtmgr_stamps), and the names only what rules a
+ * DOT out. */
+static int mtmgr_own_name(const char *name)
 {
-    static const char *const mark[] = { "ClipCountAcc", "ClipCountGyr", "FreeAcc_Compared_Result" };
-    static const char *const shared[] = { "PacketCounter", "SampleTimeFine", "Status", "Flag", "dv[1]", "dv[2]",
-                                          "dv[3]" };
     static const char *const own[] = { "Roll", "Pitch", "Yaw", "StatusWord", "SampleTimeCoarse" };
-    const char *s = name;
-    while (*s == ' ' || *s == '\t' || *s == '"' || *s == '\'' || *s == '\r') {
-        s++;
-    }
-    if (*s == '\0') {
-        return COL_DOT_SHARED;
-    }
-    if (name_in(name, mark, sizeof mark / sizeof mark[0]) || name_axis(name, "Euler_", "XYZ") ||
-        name_axis(name, "Quat_", "WXYZ") || name_axis(name, "Cal_FreeAcc_", "XYZ")) {
-        return COL_DOT_MARK;
-    }
-    if (name_in(name, shared, sizeof shared / sizeof shared[0]) || name_axis(name, "Acc_", "XYZ") ||
-        name_axis(name, "Gyr_", "XYZ") || name_axis(name, "Mag_", "XYZ") || name_axis(name, "FreeAcc_", "XYZ") ||
-        name_axis(name, "dq_", "WXYZ")) {
-        return COL_DOT_SHARED;
-    }
-    if (name_in(name, own, sizeof own / sizeof own[0]) || name_axis(name, "Quat_q", "0123") ||
-        name_starts(name, "Mat[")) {
-        return COL_MTMGR_OWN;
-    }
-    return COL_OTHER;
+    return name_in(name, own, sizeof own / sizeof own[0]) || name_axis(name, "Quat_q", "0123") ||
+           name_starts(name, "Mat[");
 }
 
 int hx_mtmgr_header(hx_mtmgr_t *x, char **f, int n, char *msg, size_t msg_size)
 {
     static const char *const acc[3] = { "Acc_X", "Acc_Y", "Acc_Z" };
     static const char *const gyr[3] = { "Gyr_X", "Gyr_Y", "Gyr_Z" };
-    int i, inc = 0, free_acc = 0, dot_only = 1, dot_mark = 0, mtmgr_own = 0;
+    int i, inc = 0, free_acc = 0;
     x->col_ctr = hx_find_col(f, n, "PacketCounter");
     x->col_stf = hx_find_col(f, n, "SampleTimeFine");
+    x->mtmgr_names = 0;
     for (i = 0; i < n; i++) {
-        const int kind = column_kind(f[i]);
-        dot_only &= kind == COL_DOT_SHARED || kind == COL_DOT_MARK;
-        dot_mark |= kind == COL_DOT_MARK;
-        mtmgr_own |= kind == COL_MTMGR_OWN;
+        x->mtmgr_names |= mtmgr_own_name(f[i]);
         inc |= name_starts(f[i], "dq_") || name_starts(f[i], "dv[") || name_starts(f[i], "dv_");
         free_acc |= name_starts(f[i], "FreeAcc_");
     }
-    /* a DOT CSV by its names: DOT's alone (an MT Manager export of these
-     * always has '//' lines before them), or a name only DOT writes among
-     * others and none only MT Manager writes (until 2026-12-01 every name
-     * had to be DOT's: one more, an app's own, left a DOT at 1 to 15 Hz
-     * read 100 times too slow) */
-    x->dot_header = !mtmgr_own && (dot_only || dot_mark);
     for (i = 0; i < 6; i++) {
         const char *name = i < 3 ? acc[i] : gyr[i - 3];
         const int c = hx_find_col(f, n, name);
@@ -502,13 +468,16 @@ int hx_mtmgr_stamps(hx_mtmgr_t *x, char *msg, size_t msg_size)
     {
         const double hz = (double)HX_MTMGR_STF_HZ / x->stamp_step; /* 100 us ticks */
         const double hz_us = 1.0e6 / x->stamp_step;                /* us, as Movella DOT counts */
-        /* an IMU's rate in us and none in ticks; or, under a header of
-         * DOT's (dot_header), one of DOT's rates down to 1 Hz (0.01 Hz in ticks), which
-         * the IMU band missed below 20 Hz: a DOT at 10 Hz was read as an
-         * export at 0.1 Hz until 2026-11-30 */
+        /* an IMU's rate in us and none in ticks; or, under a header with
+         * no name only MT Manager writes, a rate in ticks no MTi outputs
+         * (below 1 Hz) and one of DOT's in us, down to its 1 Hz (0.01 Hz in
+         * ticks), which the IMU band misses below 20 Hz: a DOT at 10 Hz was
+         * read as an export at 0.1 Hz until 2026-11-30, and until
+         * 2026-12-01 when its header had no name only DOT writes and one of
+         * neither (an app's own column) */
         x->us_like = x->comments == 0 && hz < HX_MTMGR_IMU_MIN_HZ &&
                      ((hz_us >= HX_MTMGR_IMU_MIN_HZ && hz_us <= HX_MTMGR_IMU_MAX_HZ) ||
-                      (x->dot_header && hz_us >= HX_MTMGR_DOT_MIN_HZ));
+                      (!x->mtmgr_names && hz < HX_MTMGR_MTI_MIN_HZ && hz_us >= HX_MTMGR_DOT_MIN_HZ));
         if (x->stated_hz > 0.0 && fabs(hz - x->stated_hz) > HX_MTMGR_RATE_TOL * x->stated_hz) {
             /* the stamps are the samples' times: a stated rate they do not
              * keep is no nominal rate (the rate is then the stamps') */

@@ -42,10 +42,18 @@
 #define HX_MTMGR_IMU_MIN_HZ 20.0
 #define HX_MTMGR_IMU_MAX_HZ 5000.0
 /** Half the slowest rate of a Movella DOT (1 Hz; it logs at 1, 4, 10, 12,
- *  15, 20, 30, 60 or 120 Hz), Hz in us: under a header of DOT's
- *  (dot_header), steps this fast or faster in us are a DOT CSV's at any of its
- *  rates (hx_mtmgr_stamps). */
+ *  15, 20, 30, 60 or 120 Hz), Hz in us: steps this fast or faster in us
+ *  that make no MTi's rate in ticks (HX_MTMGR_MTI_MIN_HZ), under a header
+ *  with no name only MT Manager writes, are a DOT CSV's at any of its rates
+ *  (hx_mtmgr_stamps). */
 #define HX_MTMGR_DOT_MIN_HZ 0.5
+/** The slowest rate an MTi outputs, Hz: its output configuration sets
+ *  each data's rate in whole Hz (XDA's XsOutputConfiguration::m_frequency,
+ *  a uint16; 0xFFFF the maximum), so SampleTimeFine steps slower than this
+ *  in 100 us ticks are no MTi export's (hx_mtmgr_stamps). Any bound from
+ *  0.2 Hz (20 Hz in us, where the IMU band takes over) to 20 Hz decides
+ *  the same. */
+#define HX_MTMGR_MTI_MIN_HZ 1.0
 
 /** Where a row's time comes from. */
 typedef enum {
@@ -76,9 +84,9 @@ typedef struct {
     int npeek;               /**< rows in peek */
     double stamp_step;       /**< their median step that advances, ticks; 0: none (hx_mtmgr_stamps) */
     int us_like;             /**< the steps read as a Movella DOT CSV's us (hx_mtmgr_stamps) */
-    int dot_header;          /**< the header is a Movella DOT CSV's by its names: DOT's alone, or
-                                  one only DOT writes and none only MT Manager writes
-                                  (hx_mtmgr_header) */
+    int mtmgr_names;         /**< the header holds a name only MT Manager writes, for what a
+                                  Movella DOT CSV names otherwise (Roll, Quat_q0, StatusWord, ...;
+                                  hx_mtmgr_header): no DOT CSV */
 } hx_mtmgr_t;
 
 /** Whether the start of a file (text, NUL-terminated, a UTF-8 byte-order
@@ -96,11 +104,10 @@ void hx_mtmgr_init(hx_mtmgr_t *x);
  *  of `Update Rate: N Hz` and the ProductCode are kept from it. */
 int hx_mtmgr_comment(hx_mtmgr_t *x, const char *line, long lineno);
 
-/** Find the columns among the n header fields f, and whether the names are
- *  a Movella DOT CSV's (dot_header: every one DOT's, or one only DOT writes,
- *  Euler_*, Quat_W..Z, ClipCountAcc/Gyr, Cal_FreeAcc_*,
- *  FreeAcc_Compared_Result, and none only MT Manager writes, Roll, Pitch,
- *  Yaw, Quat_q0..q3, StatusWord, SampleTimeCoarse, Mat[..]). 0, or -1 with
+/** Find the columns among the n header fields f, and whether one is a name
+ *  only MT Manager writes, for what a Movella DOT CSV names otherwise
+ *  (mtmgr_names: Roll, Pitch, Yaw, Quat_q0..q3, StatusWord,
+ *  SampleTimeCoarse, Mat[..]). 0, or -1 with
  *  the reason in msg: an Acc_ or Gyr_ column missing (an export of
  *  increments dq_, dv_ or of FreeAcc_ alone is named as such, with the
  *  export setting that gives Acc_ and Gyr_). */
@@ -129,9 +136,10 @@ int hx_mtmgr_peek(hx_mtmgr_t *x, char **f, int n);
  *    the warning in msg;
  *  - when there is no '//' line and the steps are slower than
  *    HX_MTMGR_IMU_MIN_HZ in 100 us ticks but in HX_MTMGR_IMU_MIN_HZ ..
- *    HX_MTMGR_IMU_MAX_HZ in us, or, under a header of DOT's
- *    (dot_header), HX_MTMGR_DOT_MIN_HZ or faster in us (a DOT at 1 to 15 Hz,
- *    which make no IMU's rate in us): us_like (a Movella DOT CSV, whose
+ *    HX_MTMGR_IMU_MAX_HZ in us, or, under a header with no name only MT
+ *    Manager writes (mtmgr_names), slower than HX_MTMGR_MTI_MIN_HZ in ticks
+ *    (no MTi's rate) and HX_MTMGR_DOT_MIN_HZ or faster in us (a DOT at 1 to
+ *    15 Hz, which make no IMU's rate in us): us_like (a Movella DOT CSV, whose
  *    SampleTimeFine counts us; hx_mtmgr_us_refusal).
  *  Else 0. */
 int hx_mtmgr_stamps(hx_mtmgr_t *x, char *msg, size_t msg_size);

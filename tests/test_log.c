@@ -3479,7 +3479,8 @@ static void test_mtmgr_us_stamps(void **state)
  * Below 20 Hz in us (0.2 Hz in ticks) they were read as an export, 100
  * times too slow: the rate rule alone needs an IMU's rate in us. Half DOT's
  * slowest rate is the bound (2,000,000 us refused, 2,000,001 read); a
- * column DOT does not write, a '//' line, leave the export as it was. */
+ * column only MT Manager writes, a '//' line, leave the export as it was;
+ * a column of neither (an app's own) does not (2026-12-01). */
 static void test_mtmgr_dot_rates(void **state)
 {
     static const int rates[] = { 1, 4, 10, 12, 15, 20, 30, 60, 120 };
@@ -3517,7 +3518,27 @@ static void test_mtmgr_dot_rates(void **state)
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
     assert_true(log.t_ns[1] - log.t_ns[0] == 200000100000LL);
     hx_log_free(&log);
-    /* a column DOT does not write: read in ticks, 0.1 Hz */
+    /* a DOT CSV with one column neither DOT's nor MT Manager's (an app's own) and no DOT-only name, at each of
+     * DOT's rates below 20 Hz: its steps make no MTi's rate in 100 us ticks (an MTi outputs at whole Hz, 1 or
+     * more) and one of DOT's in us, so it is refused as the DOT header is; it was read in ticks, 100 times too
+     * slow, until 2026-12-01. The same bound (2,000,000 us refused, 2,000,001 read) */
+    for (c = 0; c < 5; c++) {
+        const long step = (1000000L + rates[c] / 2) / rates[c];
+        write_mtmgr_steps_hdr(p, "", "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,"
+                              "AppTime", 0.0, 12, step, 0);
+        err[0] = '\0';
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+        assert_non_null(strstr(err, "likely a Movella DOT CSV; read it with --from csv --columns"));
+    }
+    write_mtmgr_steps_hdr(p, "", "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,AppTime",
+                          0.0, 12, 2000000, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    write_mtmgr_steps_hdr(p, "", "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,AppTime",
+                          0.0, 12, 2000001, 0);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
+    assert_true(log.t_ns[1] - log.t_ns[0] == 200000100000LL);
+    hx_log_free(&log);
+    /* a column only MT Manager writes: its export with the '//' lines cut, read in ticks, 0.1 Hz */
     write_mtmgr_steps_hdr(p, "", "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,StatusWord,Roll,Yaw",
                           0.0, 12, 100000, 0);
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 0);
@@ -3538,9 +3559,10 @@ static void test_mtmgr_dot_rates(void **state)
  * when every column had to be on DOT's list. Given with --from mtmanager a
  * header with Euler_X (which detection leaves to the CSV reader) is refused
  * the same. A name only MT Manager writes (Roll, StatusWord, Quat_q0,
- * SampleTimeCoarse) beside DOT's mark, or an unknown column without the
- * mark, leaves the file read in ticks, as before. A mutant that takes the
- * mark alone refuses the Roll case; one without the mark reads the first. */
+ * SampleTimeCoarse) beside DOT's mark leaves the file read in ticks, as
+ * before. An unknown column without the mark was read in ticks too, at 0.1
+ * Hz, until 2026-12-01: no MTi outputs below 1 Hz, so a header without a
+ * name only MT Manager writes is DOT's at such steps, mark or none. */
 static void test_mtmgr_dot_marks(void **state)
 {
     static const struct {
@@ -3566,8 +3588,10 @@ static void test_mtmgr_dot_marks(void **state)
           0 },
         { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Cal_FreeAcc_X,SampleTimeCoarse,Foo",
           HX_FMT_AUTO, 0 },
-        /* no mark: an unknown column leaves the file read in ticks */
-        { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,UtcTime", HX_FMT_AUTO, 0 },
+        /* no mark, an unknown column: 0.1 Hz in ticks is no MTi's output rate (whole Hz, 1 or more), 10 Hz in us
+         * one of DOT's: refused (read at 0.1 Hz, exit 0, until 2026-12-01) */
+        { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,UtcTime", HX_FMT_AUTO, 1 },
+        { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,UtcTime,Foo,Bar", HX_FMT_MTMGR, 1 },
     };
     char p[256], err[HX_ERR_SIZE];
     hx_log_t log;

@@ -59,6 +59,9 @@ head -c 40000 vectors/walk.bin >"$T/cut.bin"
 expect_exit 1 "a .bin log cut mid-record, --json" "$H" allan "$T/cut.bin" --no-sim --quiet --json "$T/cut.json"
 json "$T/cut.json" 'j["complete"] is False and "truncated: record #829" in j["error"] and j["samples"] == 829' &&
     pass "--json of a cut log: complete false, the reader's error" || fail "cut log --json: $(head -c 200 "$T/cut.json")"
+# the input file as replay's JSON names it, `log`, and `source` kept as its alias (until 2026-12-01 `source` only)
+json "$T/cut.json" 'j["log"] == j["source"] == sys.argv[1].replace("cut.json", "cut.bin")' &&
+    pass "allan --json names the log as replay's does (log), source its alias" || fail "allan --json log/source: $(head -c 200 "$T/cut.json")"
 head -2000 "$T/bad.txt" >"$T/good.txt"
 expect_exit 0 "a whole series, --json" "$H" allan --series "$T/good.txt" --rate 10 --no-sim --quiet --json "$T/good.json"
 json "$T/good.json" 'j["complete"] is True and "error" not in j' && pass "--json of a whole series: complete true, no error" ||

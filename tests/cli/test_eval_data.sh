@@ -552,5 +552,21 @@ if [ -n "$D" ] && [ -d "$D/ipol_gait_xsens" ]; then
     else fail "probe_slow_ipol.py --param: $(head -3 "$T/pslowp.txt") $(tail -3 "$T/pslowp.err")"; fi
 fi
 
+# --- a log of another format than CSV with stamps in bursts (pyshoe's t_s, packets of 4 samples 5 us apart every
+# 10 ms, as tests/cli/test_bursts.sh builds it): its refusal carries the remedy "convert it to CSV ...", some 390
+# bytes past the path, which eval's replay buffer (400 bytes with the path) and a row's note (200) cut short until
+# 2026-12-01 (docs/harness.md, "Time stamps in bursts"). The whole message reaches the warning and the row.
+mkdir -p "$T/bursts_in_a_folder_named_at_some_length/openshoe_gx2"
+"$H" convert vectors/walk.bin "$T/wb.csv" >/dev/null 2>&1 || fail "bursts: convert vectors/walk.bin"
+awk -F, 'NR == 1 { print "t_s,ax_mps2,ay_mps2,az_mps2,gx_radps,gy_radps,gz_radps"; next } { i = NR - 2; printf "%.6f,%s,%s,%s,%s,%s,%s\n", ((int(i / 4) + 1) * 10000 + 5 * (i % 4)) / 1e6, $2, $3, $4, $5, $6, $7 }' \
+    "$T/wb.csv" > "$T/bursts_in_a_folder_named_at_some_length/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+expect_exit 1 "eval: a non-CSV walk stamped in bursts" "$H" eval --no-experiments --no-plots \
+    --data "$T/bursts_in_a_folder_named_at_some_length" --out "$T/bursts.md"
+bursts_msg="the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; navigation needs each sample's own time: convert it to CSV without the time column (bin/harness convert LOG out.csv; cut -d, -f2- out.csv > in.csv) and give in.csv --input-rate 400 (docs/harness.md, \"Time stamps in bursts\")"
+if grep -qxF "harness eval: warning: $T/bursts_in_a_folder_named_at_some_length/openshoe_gx2/Measurement_2000_1_data_inert.txt: $bursts_msg" "$T/err"; then
+    pass "bursts: eval's warning carries the whole remedy"; else fail "bursts: warning $(grep warning "$T/err")"; fi
+if grep -qxF "| Measurement_2000_1 | - | - | - | - | - | - | - | - | not run: $bursts_msg |" "$T/bursts.md"; then
+    pass "bursts: the walk's row carries the whole remedy"; else fail "bursts: row $(grep '^| Measurement' "$T/bursts.md")"; fi
+
 echo "test_eval_data: $fails failure(s)"
 [ "$fails" -eq 0 ]

@@ -709,6 +709,11 @@ expect_err "xdotu.csv: SampleTimeFine steps by .*, 10 Hz in us, no '//' line: $d
 sed '1s/,UtcTime$/,Roll/' "$T/xdotu.csv" >"$T/xdotr.csv"
 expect_exit 0 "... with Roll (MT Manager's) instead: read as an export, in ticks" "$H" info "$T/xdotr.csv"
 expect_out_re "^rate +0\.100 Hz" "... with Roll: 100 us ticks"
+# ... and with the app's column and no name only DOT writes: read at 0.1 Hz, exit 0, until 2026-12-01; 0.1 Hz in
+# ticks is no MTi's rate (it outputs at whole Hz), so without a name only MT Manager writes it is DOT's
+awk 'NR == 1 { print $0 ",UtcTime"; next } { print $0 ",1764547200" }' "$T/xdot10.csv" >"$T/xdotn.csv"
+expect_exit 1 "a Movella DOT CSV at 10 Hz with an app's column and no DOT-only name is not read as an export" "$H" info "$T/xdotn.csv"
+expect_err "xdotn.csv: SampleTimeFine steps by .*, 10 Hz in us, no '//' line: $dot_remedy" "DOT CSV at 10 Hz, no DOT-only name: refused, the remedy named"
 # a reader's message is whole behind a long path: the errors were cut at
 # 320 bytes, path included (info, allan, psd and convert left the DOT
 # remedy's --units out behind a 110-byte path; 2026-11-30)

@@ -33,6 +33,9 @@ if "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]; assert 1
 else
     fail "tone bandwidth"
 fi
+# the input file as replay's JSON names it, `log`, and `source` kept as its alias (until 2026-12-01 `source` only)
+json "$T/tone.json" 'j["log"] == j["source"] == sys.argv[1].replace("tone.json", "tone.csv")' &&
+    pass "psd --json names the log as replay's does (log), source its alias" || fail "psd --json log/source: $(head -c 200 "$T/tone.json")"
 expect_out_re "^  lowest usable sampling frequency: 250 Hz \(accelerometers and gyroscopes alike; 95 % of the power, multiples of 50 Hz\)$" \
     "--dc global: the answer line without the pointer"
 # the default (--dc segment, the paper's setting) is not the recommended one: the answer line says which it is (the
