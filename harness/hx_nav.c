@@ -1698,14 +1698,14 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         }
         if ((cut & FNAV_STANCE_CUT_ZUPT_CYCLE) != 0u) {
             /* min_zupt_cycle: the look-ahead is fixed for the longest cycle
-             * (FNAV_STANCE_CYCLE_MAX_S); the ring caps it at lag + 1 samples */
+             * (FNAV_STANCE_CYCLE_LAG_S); the ring caps it at lag + 1 samples */
             const double run_max = (double)(nav.stance.lag + 1);
             hx_warn(cmd,
                     "%s: at %.0f Hz the stance detector's ring of %d samples caps the cycle-scaled ZUPT run at "
                     "%.1f ms (min_zupt_cycle %g asks up to %.1f ms): gait cycles over %.2f s get the cap "
                     "(docs/navigation.md, \"Stance detector\")",
                     path, fs, FNAV_STANCE_MAX_WINDOW, 1e3 * run_max / fs, (double)cfg->stance.min_zupt_cycle,
-                    1e3 * (double)cfg->stance.min_zupt_cycle * (double)FNAV_STANCE_CYCLE_MAX_S,
+                    1e3 * (double)cfg->stance.min_zupt_cycle * (double)FNAV_STANCE_CYCLE_LAG_S,
                     run_max / ((double)cfg->stance.min_zupt_cycle * fs));
         }
     }

@@ -120,12 +120,12 @@ static int min_zupt_wanted(const fnav_stance_t *st, fnav_real_t rate_hz)
 }
 
 /* The largest shortest ZUPT run min_zupt_cycle can ask for at a rate (a
- * cycle of FNAV_STANCE_CYCLE_MAX_S), samples, before the ring's cap; 0 when
+ * cycle of FNAV_STANCE_CYCLE_LAG_S), samples, before the ring's cap; 0 when
  * the scaling is off. */
 static int zupt_cycle_wanted(const fnav_stance_t *st, fnav_real_t rate_hz)
 {
     return st->cfg.min_zupt_cycle > FNAV_R(0.0)
-               ? round_pos(st->cfg.min_zupt_cycle * FNAV_STANCE_CYCLE_MAX_S * rate_hz)
+               ? round_pos(st->cfg.min_zupt_cycle * FNAV_STANCE_CYCLE_LAG_S * rate_hz)
                : 0;
 }
 
@@ -359,7 +359,8 @@ static int64_t foot_strike(const fnav_stance_t *st, long k0, int64_t t_now_ns, l
 
 /* Cycle-scaled shortest ZUPT run (fnav_stance.h): a swing starts at t0_ns;
  * the cycle since the previous swing start gives a run
- * round(min_zupt_cycle * T * rate), between n_min_zupt and lag + 1; the run
+ * round(min_zupt_cycle * T * rate), between n_min_zupt and lag + 1 (a cycle
+ * over FNAV_STANCE_CYCLE_LAG_S gets lag + 1 when the ring allows it); the run
  * in use is the median of the last three (the smaller of two; the one). A
  * cycle longer than FNAV_STANCE_CYCLE_MAX_S (a stand between the strides)
  * or not positive (a new timeline) clears them: back to n_min_zupt. */

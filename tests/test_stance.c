@@ -1423,10 +1423,12 @@ static void test_zupt_cycle_fast_gait(void **state)
     }
 }
 
-/* A stand between strides: a "cycle" over FNAV_STANCE_CYCLE_MAX_S (3 s)
+/* A stand between strides: a "cycle" over FNAV_STANCE_CYCLE_MAX_S (4 s)
  * clears the cycles known, and the run is min_zupt_s's again until a
  * cycle is known after it (the swing after the stand takes its dip as
- * the first swing of a walk does); then the scaled run is back. */
+ * the first swing of a walk does); then the scaled run is back. Cycles
+ * between FNAV_STANCE_CYCLE_LAG_S (3 s) and the bound get the look-ahead's
+ * run, 15 samples. */
 static void test_zupt_cycle_stand_resets(void **state)
 {
     zc_cycle_t cyc[8];
@@ -1452,12 +1454,26 @@ static void test_zupt_cycle_stand_resets(void **state)
         assert_int_equal(req[i], 12);
         assert_int_equal(dip[i], 0);
     }
-    /* a stand just under the bound is a (slow) cycle: 3 s gives 15, the
-     * look-ahead's cap */
-    cyc[4].stance_n = 360;
+    /* a pause just under the bound is a (slow) cycle: 3.9 s would give 20,
+     * capped at the look-ahead's 15; the median keeps 12 */
+    cyc[4].stance_n = 540;
     zc_run(FNAV_R(0.025), cyc, 8, dip, req, &strides, &lag);
+    assert_int_equal(strides, 8);
     assert_int_equal(req[4], 12); /* median of 12, 12, 15 */
     assert_int_equal(dip[4], 0);
+    /* cycles of 3.5 s in a row: the capped run, 15 samples (a raw dip of
+     * 14 rejected, of 15 a stance) */
+    for (i = 0; i < 8; i++) {
+        cyc[i].stance_n = 460;
+        cyc[i].gap_n = i < 5 ? 16 : 17;
+    }
+    zc_run(FNAV_R(0.025), cyc, 8, dip, req, &strides, &lag);
+    assert_int_equal(strides, 8);
+    assert_int_equal(lag, 14);
+    for (i = 1; i < 8; i++) {
+        assert_int_equal(req[i], 15);
+        assert_int_equal(dip[i], i < 5 ? 0 : 1);
+    }
 }
 
 /* The look-ahead with min_zupt_cycle: fixed at the rate for the longest

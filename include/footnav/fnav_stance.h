@@ -53,10 +53,11 @@
  * where T is the median of the last three gait cycles (the time between the
  * starts of successive segmented swings; the smaller of two, the one when
  * fewer are known; min_zupt_s alone before the second swing start). A cycle
- * longer than FNAV_STANCE_CYCLE_MAX_S spans a stand: it clears the cycles
- * known (as does a step back in time), and the scaling starts again from
- * min_zupt_s. The largest run the scaling can ask for,
- * round(min_zupt_cycle * FNAV_STANCE_CYCLE_MAX_S * rate), fixes the
+ * longer than FNAV_STANCE_CYCLE_MAX_S (4 s) spans a stand: it clears the
+ * cycles known (as does a step back in time), and the scaling starts again
+ * from min_zupt_s. The largest run the scaling can ask for, that of a cycle
+ * of FNAV_STANCE_CYCLE_LAG_S (3 s; longer cycles get it),
+ * round(min_zupt_cycle * FNAV_STANCE_CYCLE_LAG_S * rate), fixes the
  * look-ahead L when the rate becomes known (capped by the ring as above,
  * FNAV_STANCE_CUT_ZUPT_CYCLE): the latency is fixed, h + L samples, and
  * grows with min_zupt_cycle (0.025 at 200 Hz: L = 14, 70 ms instead of 15 ms;
@@ -114,10 +115,15 @@ typedef struct {
                                      ZUPT run" above) */
 } fnav_stance_config_t;
 
-/** Longest gait cycle the cycle-scaled ZUPT run takes, s: a stride of two
- *  steps at 40 steps/min, slower than the slowest walks measured (49
- *  steps/min; docs/harness.md, "Slow walking"); a longer one spans a stand. */
-#define FNAV_STANCE_CYCLE_MAX_S FNAV_R(3.0)
+/** Cycle-scaled ZUPT run: the look-ahead covers the run of a gait cycle this
+ *  long, s (a stride of two steps at 40 steps/min, slower than the slowest
+ *  walks measured, 49 steps/min; docs/harness.md, "Slow walking"); a longer
+ *  cycle gets that run. */
+#define FNAV_STANCE_CYCLE_LAG_S FNAV_R(3.0)
+/** Cycle-scaled ZUPT run: a "cycle" longer than this, s, spans a stand and
+ *  clears the cycles known (the slowed walks' turning strides last up to
+ *  3.5 s at 49 steps/min). */
+#define FNAV_STANCE_CYCLE_MAX_S FNAV_R(4.0)
 
 /** Blocks of the sliding-window minimum of the adaptive floor. */
 #define FNAV_STANCE_FLOOR_BLOCKS 8
@@ -244,7 +250,7 @@ long fnav_stance_pending(const fnav_stance_t *st);
 #define FNAV_STANCE_CUT_WINDOW 0x1u   /**< the window is shorter than window_s */
 #define FNAV_STANCE_CUT_MIN_ZUPT 0x2u /**< the shortest ZUPT run is shorter than min_zupt_s */
 #define FNAV_STANCE_CUT_ZUPT_CYCLE 0x4u /**< the cycle-scaled run is capped below what
-                                             min_zupt_cycle asks for at FNAV_STANCE_CYCLE_MAX_S */
+                                             min_zupt_cycle asks for at FNAV_STANCE_CYCLE_LAG_S */
 
 /** Which configured durations the ring (FNAV_STANCE_MAX_WINDOW samples) cut
  *  at the rate in use (high rates: the comment at the top): FNAV_STANCE_CUT_*
