@@ -61,6 +61,7 @@ static const param_t k_params[] = {
     { "gyro_thresh_dps", P_REAL, 3.14159265358979323846 / 180.0, "threshold detector: RMS rate limit, deg/s" },
     { "accel_thresh", P_REAL, 1.0, "threshold detector: RMS ||f|-g| limit, m/s^2" },
     { "min_zupt_s", P_REAL, 1.0, "a stance shorter than this is ignored, s" },
+    { "min_zupt_cycle", P_REAL, 1.0, "shortest ZUPT run as a fraction of the recent gait cycle (0: off; raises the latency)" },
     { "min_stance_s", P_REAL, 1.0, "segmentation: shortest stance, s" },
     { "min_swing_s", P_REAL, 1.0, "segmentation: shortest swing, s" },
     { "event_window_s", P_REAL, 1.0, "gait events: foot-off search after a swing begins, foot-strike search before a stance, s" },
@@ -107,6 +108,7 @@ static void *param_ptr(fnav_nav_config_t *c, const char *key)
     if (strcmp(key, "accel_thresh") == 0) return &c->stance.accel_thresh_mps2;
     if (strcmp(key, "min_stance_s") == 0) return &c->stance.min_stance_s;
     if (strcmp(key, "min_zupt_s") == 0) return &c->stance.min_zupt_s;
+    if (strcmp(key, "min_zupt_cycle") == 0) return &c->stance.min_zupt_cycle;
     if (strcmp(key, "min_swing_s") == 0) return &c->stance.min_swing_s;
     if (strcmp(key, "event_window_s") == 0) return &c->stance.event_window_s;
     if (strcmp(key, "gravity") == 0) return &c->gravity_mps2;
@@ -293,7 +295,8 @@ static int stance_fits(const fnav_nav_config_t *cfg, double rate_hz)
     if (!((double)cfg->max_gap_s * rate_hz > 1.5) || (probe = stance_probe(cfg, rate_hz)) == NULL) {
         return 0;
     }
-    return fnav_stance_cut(probe) == 0u;
+    /* the cycle-scaled run's cap (FNAV_STANCE_CUT_ZUPT_CYCLE) is said apart */
+    return (fnav_stance_cut(probe) & (FNAV_STANCE_CUT_WINDOW | FNAV_STANCE_CUT_MIN_ZUPT)) == 0u;
 }
 
 /* The rate to advise when the ring cuts the detector's durations at fs_hz:
@@ -1690,6 +1693,18 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                     "%s: at %.0f Hz the stance detector's ring of %d samples cuts %s: %s or build with a larger "
                     "FNAV_STANCE_MAX_WINDOW (docs/navigation.md, \"Stance detector\")",
                     path, fs, FNAV_STANCE_MAX_WINDOW, what, advice);
+        }
+        if ((cut & FNAV_STANCE_CUT_ZUPT_CYCLE) != 0u) {
+            /* min_zupt_cycle: the look-ahead is fixed for the longest cycle
+             * (FNAV_STANCE_CYCLE_LAG_S); the ring caps it at lag + 1 samples */
+            const double run_max = (double)(nav.stance.lag + 1);
+            hx_warn(cmd,
+                    "%s: at %.0f Hz the stance detector's ring of %d samples caps the cycle-scaled ZUPT run at "
+                    "%.1f ms (min_zupt_cycle %g asks up to %.1f ms): gait cycles over %.2f s get the cap "
+                    "(docs/navigation.md, \"Stance detector\")",
+                    path, fs, FNAV_STANCE_MAX_WINDOW, 1e3 * run_max / fs, (double)cfg->stance.min_zupt_cycle,
+                    1e3 * (double)cfg->stance.min_zupt_cycle * (double)FNAV_STANCE_CYCLE_LAG_S,
+                    run_max / ((double)cfg->stance.min_zupt_cycle * fs));
         }
     }
     if ((flags & HX_REPLAY_EVENTS) && nav.stance.rate_hz > FNAV_R(0.0)) {

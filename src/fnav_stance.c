@@ -52,8 +52,13 @@ const fnav_stance_config_t fnav_stance_config_default = {
     FNAV_R(0.02),       /* min_zupt_s, s */
     FNAV_R(0.05),       /* min_stance_s, s */
     FNAV_R(0.25),       /* min_swing_s, s */
-    FNAV_R(0.3)         /* event_window_s, s */
+    FNAV_R(0.3),        /* event_window_s, s */
+    FNAV_R(0.0)         /* min_zupt_cycle: off */
 };
+
+/* cyc_n: bits 0-1 the cycles known, bit 2 a swing start known. */
+#define CYC_COUNT 0x3u
+#define CYC_START 0x4u
 
 static int pos_finite(fnav_real_t x)
 {
@@ -77,7 +82,8 @@ fnav_status_t fnav_stance_init(fnav_stance_t *st, const fnav_stance_config_t *cf
         !(fnav_isfinite(c->adapt_max_ratio) && c->adapt_max_ratio >= FNAV_R(1.0)) ||
         !(fnav_isfinite(c->min_stance_s) && c->min_stance_s >= FNAV_R(0.0)) ||
         !(fnav_isfinite(c->min_zupt_s) && c->min_zupt_s >= FNAV_R(0.0)) ||
-        !(fnav_isfinite(c->min_swing_s) && c->min_swing_s >= FNAV_R(0.0)) || !pos_finite(c->event_window_s)) {
+        !(fnav_isfinite(c->min_swing_s) && c->min_swing_s >= FNAV_R(0.0)) || !pos_finite(c->event_window_s) ||
+        !(fnav_isfinite(c->min_zupt_cycle) && c->min_zupt_cycle >= FNAV_R(0.0) && c->min_zupt_cycle <= FNAV_R(1.0))) {
         return FNAV_E_CONFIG;
     }
     for (i = 0; i < sizeof *st; i++) {
@@ -113,6 +119,16 @@ static int min_zupt_wanted(const fnav_stance_t *st, fnav_real_t rate_hz)
     return n < 1 ? 1 : n;
 }
 
+/* The largest shortest ZUPT run min_zupt_cycle can ask for at a rate (a
+ * cycle of FNAV_STANCE_CYCLE_LAG_S), samples, before the ring's cap; 0 when
+ * the scaling is off. */
+static int zupt_cycle_wanted(const fnav_stance_t *st, fnav_real_t rate_hz)
+{
+    return st->cfg.min_zupt_cycle > FNAV_R(0.0)
+               ? round_pos(st->cfg.min_zupt_cycle * FNAV_STANCE_CYCLE_LAG_S * rate_hz)
+               : 0;
+}
+
 /* Window and durations from the rate. */
 static void set_rate(fnav_stance_t *st, fnav_real_t rate_hz)
 {
@@ -129,11 +145,19 @@ static void set_rate(fnav_stance_t *st, fnav_real_t rate_hz)
     n = round_pos(st->cfg.min_stance_s * rate_hz);
     st->n_min_stance = n < 1 ? 1 : n;
     st->n_min_zupt = min_zupt_wanted(st, rate_hz);
-    st->lag = st->n_min_zupt - 1;
+    /* the look-ahead covers the largest run the cycle scaling can ask for
+     * (fixed here: a fixed latency); without it, n_min_zupt - 1 */
+    n = zupt_cycle_wanted(st, rate_hz);
+    n = n > st->n_min_zupt ? n : st->n_min_zupt;
+    n = n < 255 ? n : 255; /* cyc_run holds unsigned chars */
+    st->lag = n - 1;
     if (st->half + st->lag + 2 > FNAV_STANCE_MAX_WINDOW) {
         st->lag = FNAV_STANCE_MAX_WINDOW - 2 - st->half;
+    }
+    if (st->n_min_zupt > st->lag + 1) {
         st->n_min_zupt = st->lag + 1;
     }
+    st->n_zupt_req = st->n_min_zupt;
     n = round_pos(st->cfg.min_swing_s * rate_hz);
     st->n_min_swing = n < 1 ? 1 : n;
     n = round_pos(st->cfg.floor_window_s * rate_hz / (fnav_real_t)FNAV_STANCE_FLOOR_BLOCKS);
@@ -333,6 +357,46 @@ static int64_t foot_strike(const fnav_stance_t *st, long k0, int64_t t_now_ns, l
     return t_now_ns - (int64_t)(uint32_t)(t_us(t_now_ns) - st->jerk_t_us[kbest % FNAV_STANCE_EVENT_BUF]) * 1000;
 }
 
+/* Cycle-scaled shortest ZUPT run (fnav_stance.h): a swing starts at t0_ns;
+ * the cycle since the previous swing start gives a run
+ * round(min_zupt_cycle * T * rate), between n_min_zupt and lag + 1 (a cycle
+ * over FNAV_STANCE_CYCLE_LAG_S gets lag + 1 when the ring allows it); the run
+ * in use is the median of the last three (the smaller of two; the one). A
+ * cycle longer than FNAV_STANCE_CYCLE_MAX_S (a stand between the strides)
+ * or not positive (a new timeline) clears them: back to n_min_zupt. */
+static void cycle_update(fnav_stance_t *st, int64_t t0_ns)
+{
+    unsigned n_cyc = st->cyc_n & CYC_COUNT;
+    if (st->cyc_n & CYC_START) {
+        const int64_t dt_ns = t0_ns - st->swing_t0_ns;
+        const fnav_real_t t_s = (fnav_real_t)dt_ns * FNAV_R(1.0e-9);
+        if (dt_ns <= 0 || t_s > FNAV_STANCE_CYCLE_MAX_S) {
+            n_cyc = 0;
+            st->n_zupt_req = st->n_min_zupt;
+        } else {
+            int n = round_pos(st->cfg.min_zupt_cycle * t_s * st->rate_hz), a, b, c;
+            n = n > st->n_min_zupt ? n : st->n_min_zupt;
+            n = n < st->lag + 1 ? n : st->lag + 1;
+            st->cyc_run[2] = st->cyc_run[1];
+            st->cyc_run[1] = st->cyc_run[0];
+            st->cyc_run[0] = (unsigned char)n;
+            n_cyc = n_cyc < 3u ? n_cyc + 1u : 3u;
+            a = st->cyc_run[0];
+            b = st->cyc_run[1];
+            c = st->cyc_run[2];
+            if (n_cyc == 1u) {
+                st->n_zupt_req = a;
+            } else if (n_cyc == 2u) {
+                st->n_zupt_req = a < b ? a : b;
+            } else {
+                /* median of three */
+                st->n_zupt_req = a < b ? (b < c ? b : (a < c ? c : a)) : (a < c ? a : (b < c ? c : b));
+            }
+        }
+    }
+    st->cyc_n = (unsigned char)(n_cyc | CYC_START);
+}
+
 /* Segmentation and gait events for decision index k (= st->n_out). */
 static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
 {
@@ -412,6 +476,9 @@ static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
     if (st->seg == 1 && !o->stance && st->run >= st->n_min_swing) {
         st->seg = 0;
         st->fo_pending = 1;
+        if (st->cfg.min_zupt_cycle > FNAV_R(0.0)) {
+            cycle_update(st, st->run_t0_ns);
+        }
         st->swing_t0_ns = st->run_t0_ns; /* the swing began with this run */
     } else if (st->seg == 0 && o->stance && st->run >= st->n_min_stance) {
         st->seg = 1;
@@ -525,7 +592,7 @@ fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
             fwd++;
         }
     }
-    out->stance = out->raw_stance && (st->back + fwd >= st->n_min_zupt || i == 0);
+    out->stance = out->raw_stance && (st->back + fwd >= st->n_zupt_req || i == 0);
     out->events = 0;
     out->fo_t_ns = 0;
     out->fs_t_ns = 0;
@@ -554,6 +621,9 @@ unsigned fnav_stance_cut(const fnav_stance_t *st)
     }
     if (min_zupt_wanted(st, st->rate_hz) > st->n_min_zupt) {
         cut |= FNAV_STANCE_CUT_MIN_ZUPT;
+    }
+    if (zupt_cycle_wanted(st, st->rate_hz) > st->lag + 1) {
+        cut |= FNAV_STANCE_CUT_ZUPT_CYCLE;
     }
     return cut;
 }

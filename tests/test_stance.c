@@ -91,6 +91,7 @@ static void test_config(void **state)
             { offsetof(fnav_stance_config_t, min_zupt_s), 1 },
             { offsetof(fnav_stance_config_t, min_swing_s), 1 },
             { offsetof(fnav_stance_config_t, event_window_s), 0 },
+            { offsetof(fnav_stance_config_t, min_zupt_cycle), 1 },
         };
         size_t i;
         for (i = 0; i < sizeof f / sizeof f[0]; i++) {
@@ -117,6 +118,15 @@ static void test_config(void **state)
         assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
         c.adaptive = 0;
         assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        /* a fraction of the gait cycle: above 1 is no fraction */
+        c = fnav_stance_config_default;
+        assert_true(c.min_zupt_cycle == FNAV_R(0.0)); /* off by default */
+        c.min_zupt_cycle = FNAV_R(1.0);
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        c.min_zupt_cycle = FNAV_R(1.01);
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
+        c.min_zupt_cycle = (fnav_real_t)INFINITY;
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_E_CONFIG);
     }
 }
 
@@ -1246,6 +1256,272 @@ static void test_cut_durations(void **state)
     }
 }
 
+/* Cycle-scaled shortest ZUPT run (min_zupt_cycle). A synthetic gait at
+ * 200 Hz (W = 3, fixed threshold): each cycle is a still stance of
+ * stance_n samples and a swing of swing_n samples (|w| = 2 rad/s) with a
+ * still gap of gap_n samples gap_at samples into it; a gap of G samples
+ * gives a raw stance of G - 2 (the window's edges see the motion), the
+ * late-swing dip of a slow gait. Per cycle: whether any sample around the
+ * gap was decided stance (a ZUPT), and the run in use when the gap's first
+ * sample was decided. */
+typedef struct {
+    int stance_n, swing_n, gap_at, gap_n;
+} zc_cycle_t;
+
+#define ZC_MAX_CYCLES 12
+#define ZC_MAX_SAMPLES 12000
+
+static void zc_run(fnav_real_t frac, const zc_cycle_t *cyc, int n_cyc, int *dip_zupt, int *req, long *strides,
+                   int *lag)
+{
+    static signed char moving[ZC_MAX_SAMPLES];
+    static short cyc_of[ZC_MAX_SAMPLES]; /* cycle whose gap (+-2) the sample is in, else -1 */
+    static unsigned char gap0[ZC_MAX_SAMPLES];
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    fnav_stance_out_t o;
+    long n = 0, k;
+    int i, j;
+    for (i = 0; i < n_cyc; i++) {
+        dip_zupt[i] = 0;
+        req[i] = -1;
+        for (j = 0; j < cyc[i].stance_n + cyc[i].swing_n; j++) {
+            const int sw = j - cyc[i].stance_n; /* sample within the swing */
+            const int in_gap = sw >= cyc[i].gap_at && sw < cyc[i].gap_at + cyc[i].gap_n;
+            assert_true(n < ZC_MAX_SAMPLES - 100);
+            moving[n] = (signed char)(sw >= 0 && !in_gap);
+            cyc_of[n] = (short)(cyc[i].gap_n > 0 && sw >= cyc[i].gap_at - 2 &&
+                                        sw < cyc[i].gap_at + cyc[i].gap_n + 2
+                                    ? i
+                                    : -1);
+            gap0[n] = (unsigned char)(cyc[i].gap_n > 0 && sw == cyc[i].gap_at);
+            n++;
+        }
+    }
+    for (j = 0; j < 100; j++, n++) { /* a last stance ends the last swing */
+        moving[n] = 0;
+        cyc_of[n] = -1;
+        gap0[n] = 0;
+    }
+    c.rate_hz = FNAV_R(200.0);
+    c.window_s = FNAV_R(0.01);
+    c.adaptive = 0;
+    c.min_zupt_cycle = frac;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k <= n; k++) {
+        if (k < n) {
+            double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+            fnav_sample_t s;
+            w[1] = moving[k] ? 2.0 : 0.0;
+            s = sample(k, 200.0, f, w);
+            assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        } else {
+            fnav_stance_finish(&st);
+        }
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            const long q = (long)o.sample.seq;
+            if (cyc_of[q] >= 0) {
+                dip_zupt[cyc_of[q]] |= o.stance;
+                if (gap0[q]) {
+                    req[cyc_of[q]] = st.n_zupt_req;
+                }
+            }
+        }
+    }
+    *strides = st.strides;
+    *lag = st.lag;
+}
+
+/* A slow gait (a cycle of 2.4 s, 50 steps/min): a late-swing dip with a
+ * raw stance of 6 samples (30 ms) passes min_zupt_s (4 samples) and is a
+ * ZUPT in every swing; with min_zupt_cycle 0.025 the run from the third
+ * swing on is round(0.025 x 2.4 s x 200 Hz) = 12 samples and the dip is
+ * rejected. The first two swings come before a cycle is known (one needs
+ * two swing starts; the cycle is taken at the second swing's start,
+ * min_swing_s into it, before its dip): the first dip is accepted by
+ * min_zupt_s alone. The look-ahead is fixed for the longest cycle: 0.025 x
+ * 3 s x 200 Hz = 15 samples, L = 14. */
+static void test_zupt_cycle_slow_gait(void **state)
+{
+    zc_cycle_t cyc[6];
+    int dip[6], req[6], lag, i;
+    long strides;
+    (void)state;
+    for (i = 0; i < 6; i++) {
+        cyc[i].stance_n = 240;
+        cyc[i].swing_n = 240;
+        cyc[i].gap_at = 180;
+        cyc[i].gap_n = 8;
+    }
+    zc_run(FNAV_R(0.0), cyc, 6, dip, req, &strides, &lag);
+    assert_int_equal(lag, 3);
+    assert_int_equal(strides, 6);
+    for (i = 0; i < 6; i++) {
+        assert_int_equal(dip[i], 1); /* the dip is a ZUPT in every swing */
+        assert_int_equal(req[i], 4);
+    }
+    zc_run(FNAV_R(0.025), cyc, 6, dip, req, &strides, &lag);
+    assert_int_equal(lag, 14);
+    assert_int_equal(strides, 6);
+    assert_int_equal(dip[0], 1); /* no cycle known yet: min_zupt_s */
+    assert_int_equal(req[0], 4);
+    for (i = 1; i < 6; i++) {
+        assert_int_equal(req[i], 12);
+        assert_int_equal(dip[i], 0);
+    }
+    /* a dip as long as the scaled run is a stance again: a raw run of 12 */
+    for (i = 0; i < 6; i++) {
+        cyc[i].gap_n = 14;
+    }
+    zc_run(FNAV_R(0.025), cyc, 6, dip, req, &strides, &lag);
+    for (i = 0; i < 6; i++) {
+        assert_int_equal(dip[i], 1);
+    }
+    /* one short cycle among long ones: a stance of 0.2 s makes the
+     * interval between swing starts 2 and 3 1.4 s, a run of 7 samples,
+     * which a dip of a raw 8 (a gap of 10) would pass; the median of the
+     * last three keeps 12 and rejects it */
+    for (i = 0; i < 6; i++) {
+        cyc[i].gap_n = 10;
+    }
+    cyc[3].stance_n = 40;
+    zc_run(FNAV_R(0.025), cyc, 6, dip, req, &strides, &lag);
+    assert_int_equal(strides, 6);
+    assert_int_equal(dip[0], 1);
+    assert_int_equal(req[3], 12);
+    assert_int_equal(req[4], 12);
+    for (i = 1; i < 6; i++) {
+        assert_int_equal(dip[i], 0);
+    }
+}
+
+/* A fast gait (a cycle of 0.6 s, 100 steps/min per foot... a jog): 0.025
+ * x 0.6 s x 200 Hz = 3 samples, below min_zupt_s's 4: the run stays at the
+ * floor, and a dip of a raw 4 samples is a ZUPT as without the scaling
+ * (running stances are short: footprint walk 35 broke with a fixed 50 ms,
+ * docs/harness.md). */
+static void test_zupt_cycle_fast_gait(void **state)
+{
+    zc_cycle_t cyc[8];
+    int dip[8], dip0[8], req[8], lag, i;
+    long strides;
+    (void)state;
+    for (i = 0; i < 8; i++) {
+        cyc[i].stance_n = 40;
+        cyc[i].swing_n = 80;
+        cyc[i].gap_at = 60;
+        cyc[i].gap_n = 6;
+    }
+    zc_run(FNAV_R(0.0), cyc, 8, dip0, req, &strides, &lag);
+    assert_int_equal(strides, 8);
+    zc_run(FNAV_R(0.025), cyc, 8, dip, req, &strides, &lag);
+    assert_int_equal(strides, 8);
+    for (i = 0; i < 8; i++) {
+        assert_int_equal(req[i], 4);
+        assert_int_equal(dip0[i], 1);
+        assert_int_equal(dip[i], 1);
+    }
+}
+
+/* A stand between strides: a "cycle" over FNAV_STANCE_CYCLE_MAX_S (4 s)
+ * clears the cycles known, and the run is min_zupt_s's again until a
+ * cycle is known after it (the swing after the stand takes its dip as
+ * the first swing of a walk does); then the scaled run is back. Cycles
+ * between FNAV_STANCE_CYCLE_LAG_S (3 s) and the bound get the look-ahead's
+ * run, 15 samples. */
+static void test_zupt_cycle_stand_resets(void **state)
+{
+    zc_cycle_t cyc[8];
+    int dip[8], req[8], lag, i;
+    long strides;
+    (void)state;
+    for (i = 0; i < 8; i++) {
+        cyc[i].stance_n = 240;
+        cyc[i].swing_n = 240;
+        cyc[i].gap_at = 180;
+        cyc[i].gap_n = 8;
+    }
+    cyc[4].stance_n = 1000; /* a stand of 5 s: the cycle into swing 4 is 6.2 s */
+    zc_run(FNAV_R(0.025), cyc, 8, dip, req, &strides, &lag);
+    assert_int_equal(strides, 8);
+    for (i = 1; i < 4; i++) {
+        assert_int_equal(req[i], 12);
+        assert_int_equal(dip[i], 0);
+    }
+    assert_int_equal(req[4], 4); /* cleared by the stand */
+    assert_int_equal(dip[4], 1);
+    for (i = 5; i < 8; i++) {
+        assert_int_equal(req[i], 12);
+        assert_int_equal(dip[i], 0);
+    }
+    /* a pause just under the bound is a (slow) cycle: 3.9 s would give 20,
+     * capped at the look-ahead's 15; the median keeps 12 */
+    cyc[4].stance_n = 540;
+    zc_run(FNAV_R(0.025), cyc, 8, dip, req, &strides, &lag);
+    assert_int_equal(strides, 8);
+    assert_int_equal(req[4], 12); /* median of 12, 12, 15 */
+    assert_int_equal(dip[4], 0);
+    /* cycles of 3.5 s in a row: the capped run, 15 samples (a raw dip of
+     * 14 rejected, of 15 a stance) */
+    for (i = 0; i < 8; i++) {
+        cyc[i].stance_n = 460;
+        cyc[i].gap_n = i < 5 ? 16 : 17;
+    }
+    zc_run(FNAV_R(0.025), cyc, 8, dip, req, &strides, &lag);
+    assert_int_equal(strides, 8);
+    assert_int_equal(lag, 14);
+    for (i = 1; i < 8; i++) {
+        assert_int_equal(req[i], 15);
+        assert_int_equal(dip[i], i < 5 ? 0 : 1);
+    }
+}
+
+/* The look-ahead with min_zupt_cycle: fixed at the rate for the longest
+ * cycle, h + L samples of delay from the first sample (200 Hz, W = 5: h =
+ * 2; 0.025 x 3 s x 200 Hz = 15, L = 14). At high rates the ring caps it
+ * (FNAV_STANCE_CUT_ZUPT_CYCLE; 820 Hz: h = 10, L = MAX - 2 - 10). */
+static void test_zupt_cycle_latency(void **state)
+{
+    fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    const double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+    fnav_stance_out_t o;
+    long k, next = 0, max_lag = 0;
+    (void)state;
+    c.rate_hz = FNAV_R(200.0);
+    c.min_zupt_cycle = FNAV_R(0.025);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    for (k = 0; k < 100; k++) {
+        fnav_sample_t s = sample(k, 200.0, f, w);
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+            assert_int_equal((long)o.sample.seq, next);
+            next++;
+        }
+        max_lag = (k + 1 - next) > max_lag ? (k + 1 - next) : max_lag;
+    }
+    assert_int_equal(max_lag, 2 + 14);
+    assert_int_equal(fnav_stance_pending(&st), 2 + 14);
+    assert_int_equal(st.n_min_zupt, 4);
+    assert_int_equal(st.n_zupt_req, 4);
+    assert_int_equal(fnav_stance_cut(&st), 0u);
+    c.rate_hz = FNAV_R(820.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    {
+        fnav_sample_t s = sample(0, 820.0, f, w);
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+    }
+    assert_int_equal(st.half, 10);
+    if (FNAV_STANCE_MAX_WINDOW - 2 - 10 < 61) {
+        assert_int_equal(st.lag, FNAV_STANCE_MAX_WINDOW - 2 - 10);
+        assert_int_equal(fnav_stance_cut(&st), FNAV_STANCE_CUT_ZUPT_CYCLE);
+    } else {
+        assert_int_equal(st.lag, 61); /* round(61.5) = 62 samples */
+        assert_int_equal(fnav_stance_cut(&st), 0u);
+    }
+    assert_int_equal(st.n_min_zupt, 16); /* round(0.02 x 820) */
+}
+
 /* Zero specific force (an IMU that outputs zeros before its first
  * conversion, a stuck bus read): |mean f| = 0 has no direction, and the
  * statistic took g u = 0, so T = 0 and the detector called a dead sensor
@@ -1306,6 +1582,10 @@ int main(void)
         cmocka_unit_test(test_foot_strike_time_jump),
         cmocka_unit_test(test_cut_durations),
         cmocka_unit_test(test_zero_specific_force),
+        cmocka_unit_test(test_zupt_cycle_slow_gait),
+        cmocka_unit_test(test_zupt_cycle_fast_gait),
+        cmocka_unit_test(test_zupt_cycle_stand_resets),
+        cmocka_unit_test(test_zupt_cycle_latency),
     };
     return cmocka_run_group_tests_name("stance", tests, NULL, NULL);
 }

@@ -45,6 +45,24 @@
  * stance minima rise, the threshold follows them one window later (so the
  * first running stances after a transition are missed: docs/navigation.md).
  *
+ * Cycle-scaled shortest ZUPT run (min_zupt_cycle > 0; docs/navigation.md,
+ * "Stance detector"): in a slow gait the statistic dips under the threshold
+ * for 20-32 ms in late swing, longer than min_zupt_s, and a ZUPT there
+ * removes about 1 m/s (docs/harness.md, "Slow walking"). The shortest run
+ * then becomes max(n(min_zupt_s), round(min_zupt_cycle * T * rate)) samples,
+ * where T is the median of the last three gait cycles (the time between the
+ * starts of successive segmented swings; the smaller of two, the one when
+ * fewer are known; min_zupt_s alone before the second swing start). A cycle
+ * longer than FNAV_STANCE_CYCLE_MAX_S (4 s) spans a stand: it clears the
+ * cycles known (as does a step back in time), and the scaling starts again
+ * from min_zupt_s. The largest run the scaling can ask for, that of a cycle
+ * of FNAV_STANCE_CYCLE_LAG_S (3 s; longer cycles get it),
+ * round(min_zupt_cycle * FNAV_STANCE_CYCLE_LAG_S * rate), fixes the
+ * look-ahead L when the rate becomes known (capped by the ring as above,
+ * FNAV_STANCE_CUT_ZUPT_CYCLE): the latency is fixed, h + L samples, and
+ * grows with min_zupt_cycle (0.025 at 200 Hz: L = 14, 70 ms instead of 15 ms;
+ * at 0 nothing changes: L = n(min_zupt_s) - 1, the same decisions).
+ *
  * Not ISR-safe by itself (one object per caller); no allocation.
  */
 #ifndef FNAV_STANCE_H
@@ -92,7 +110,20 @@ typedef struct {
     fnav_real_t min_stance_s;   /**< segmentation: shortest stance ending a swing, s (default 0.05) */
     fnav_real_t min_swing_s;    /**< segmentation: shortest swing, s (default 0.25) */
     fnav_real_t event_window_s; /**< gait-event search window, s (default 0.3) */
+    fnav_real_t min_zupt_cycle; /**< shortest ZUPT run as a fraction of the recent gait cycle,
+                                     dimensionless (default 0: off; see "Cycle-scaled shortest
+                                     ZUPT run" above) */
 } fnav_stance_config_t;
+
+/** Cycle-scaled ZUPT run: the look-ahead covers the run of a gait cycle this
+ *  long, s (a stride of two steps at 40 steps/min, slower than the slowest
+ *  walks measured, 49 steps/min; docs/harness.md, "Slow walking"); a longer
+ *  cycle gets that run. */
+#define FNAV_STANCE_CYCLE_LAG_S FNAV_R(3.0)
+/** Cycle-scaled ZUPT run: a "cycle" longer than this, s, spans a stand and
+ *  clears the cycles known (the slowed walks' turning strides last up to
+ *  3.5 s at 49 steps/min). */
+#define FNAV_STANCE_CYCLE_MAX_S FNAV_R(4.0)
 
 /** Blocks of the sliding-window minimum of the adaptive floor. */
 #define FNAV_STANCE_FLOOR_BLOCKS 8
@@ -116,7 +147,7 @@ typedef struct {
     fnav_real_t gamma;    /**< threshold used for this sample */
     int raw_stance;       /**< 1: statistic below the threshold */
     int stance;           /**< 1: foot at rest (apply a zero-velocity update): raw stance in a
-                               run of at least min_zupt_s */
+                               run of at least min_zupt_s (or the cycle-scaled run) */
     int segment_stance;   /**< segmented gait phase: 1 stance, 0 swing */
     uint32_t events;      /**< FNAV_STANCE_EV_* bits raised at this sample */
     int64_t fo_t_ns;      /**< foot-off time, ns (with EV_FOOT_OFF) */
@@ -137,8 +168,9 @@ typedef struct {
     fnav_real_t dq_stat[FNAV_STANCE_MAX_WINDOW];  /**< raw decisions waiting for confirmation */
     fnav_real_t dq_gamma[FNAV_STANCE_MAX_WINDOW];
     unsigned char dq_raw[FNAV_STANCE_MAX_WINDOW];
-    int lag;            /**< confirmation look-ahead, samples (n_min_zupt - 1) */
-    int n_min_zupt;     /**< shortest stance run, samples */
+    int lag;            /**< confirmation look-ahead, samples (n_min_zupt - 1; with min_zupt_cycle,
+                             the largest run the scaling can ask for - 1) */
+    int n_min_zupt;     /**< shortest stance run from min_zupt_s, samples */
     long back;          /**< raw stance run length ending at the last output (saturates) */
     int win;            /**< window W, samples (odd), 0 until the rate is known */
     int half;           /**< h = (W - 1) / 2 */
@@ -153,6 +185,9 @@ typedef struct {
     int seg;            /**< 1 stance, 0 swing */
     long run;           /**< length of the current run of raw decisions, samples (saturates) */
     int run_raw;        /**< raw decision of that run */
+    unsigned char cyc_run[3]; /**< min_zupt_cycle: the last gait cycles' shortest runs, samples
+                                   (newest first; in a padding hole on 32-bit targets) */
+    unsigned char cyc_n;      /**< cycles in cyc_run (bits 0-1: 0-3); bit 2: a swing start is known */
     int64_t run_t0_ns;  /**< time of the first sample of the run */
     int64_t swing_t0_ns; /**< start of the current swing */
     int64_t prev_t_ns;  /**< time of the last decision */
@@ -160,6 +195,8 @@ typedef struct {
     int have_prev;
     /* foot-off search: largest |f| in the first event_window_s of a swing run */
     fnav_real_t fo_max;
+    int n_zupt_req;     /**< shortest stance run in use, samples: n_min_zupt, or more from the
+                             gait cycle (min_zupt_cycle) */
     int64_t fo_t_ns;
     int fo_open;
     int fo_pending;     /**< report foot-off once the swing is confirmed */
@@ -212,6 +249,8 @@ long fnav_stance_pending(const fnav_stance_t *st);
 
 #define FNAV_STANCE_CUT_WINDOW 0x1u   /**< the window is shorter than window_s */
 #define FNAV_STANCE_CUT_MIN_ZUPT 0x2u /**< the shortest ZUPT run is shorter than min_zupt_s */
+#define FNAV_STANCE_CUT_ZUPT_CYCLE 0x4u /**< the cycle-scaled run is capped below what
+                                             min_zupt_cycle asks for at FNAV_STANCE_CYCLE_LAG_S */
 
 /** Which configured durations the ring (FNAV_STANCE_MAX_WINDOW samples) cut
  *  at the rate in use (high rates: the comment at the top): FNAV_STANCE_CUT_*

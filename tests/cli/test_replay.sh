@@ -1357,6 +1357,21 @@ if [ -n "$r2" ] && [ "$r2" -ge 1 ]; then
     if grep -q "ring of .* cuts" "$T/w2r.err"; then fail "window_s=2: still cut at the rate it names ($r2 Hz)"
     else pass "window_s=2: resampled to the rate it names ($r2 Hz), no cut"; fi
 else fail "window_s=2: no rate named: $(cat "$T/w2s.err")"; fi
+# min_zupt_cycle (docs/navigation.md, "Cycle-scaled shortest run"): its
+# look-ahead is sized for a 3 s cycle; where the ring caps that run (820 Hz:
+# 53 samples of the 74 that 0.03 asks for) replay says so, at 400 Hz it
+# fits and nothing is said; a fraction over 1 is refused (exit 2)
+"$H" sim --duration 12 --rate 820 --profile mtx --out "$T/w820.bin" >/dev/null 2>&1
+"$H" replay "$T/w820.bin" --param min_zupt_cycle=0.03 > /dev/null 2> "$T/w820.err"
+if grep -q "at 820 Hz the stance detector's ring of 64 samples caps the cycle-scaled ZUPT run at 64.6 ms (min_zupt_cycle 0.03 asks up to 90.0 ms): gait cycles over 2.15 s get the cap" "$T/w820.err" &&
+    ! grep -q "ring of .* cuts" "$T/w820.err"; then
+    pass "min_zupt_cycle at 820 Hz: the capped run is said"; else fail "min_zupt_cycle 820 Hz: $(cat "$T/w820.err")"; fi
+"$H" replay vectors/walk.bin --param min_zupt_cycle=0.025 > /dev/null 2> "$T/wzc.err"; rc=$?
+if [ "$rc" -eq 0 ] && ! grep -q "ring of" "$T/wzc.err"; then
+    pass "min_zupt_cycle at 400 Hz: fits, nothing said"; else fail "min_zupt_cycle 400 Hz: rc $rc $(cat "$T/wzc.err")"; fi
+"$H" replay vectors/walk.bin --param min_zupt_cycle=2 > /dev/null 2> "$T/wzc2.err"; rc=$?
+if [ "$rc" -eq 2 ] && grep -q "a --param value out of range" "$T/wzc2.err"; then
+    pass "min_zupt_cycle=2 refused (exit 2)"; else fail "min_zupt_cycle=2: rc $rc $(cat "$T/wzc2.err")"; fi
 
 # --- the 2-D path of replay --plot (and of live's plot) spans the same
 # distance on both axes: with equal units alone, a straight walk was a strip a
