@@ -203,6 +203,8 @@ static void nav_finish(live_t *L)
     L->traj.rate_hz = (double)L->nav->stance.rate_hz;
     L->traj.max_gap_s = (double)L->nav->cfg.max_gap_s;
     L->traj.window = L->nav->stance.win;
+    L->traj.zupt_min_n = L->nav->stance.n_min_zupt;
+    L->traj.zupt_max_n = L->nav->stance.lag + 1;
     L->traj.align = L->nav->align.result;
     L->traj.aligned = L->nav->aligned;
     {

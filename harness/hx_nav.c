@@ -1626,6 +1626,8 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         }
         traj->max_gap_s = (double)nav.cfg.max_gap_s;
         traj->window = nav.stance.win;
+        traj->zupt_min_n = nav.stance.n_min_zupt;
+        traj->zupt_max_n = nav.stance.lag + 1;
         traj->align = nav.align.result;
         traj->aligned = nav.aligned;
         {
@@ -2215,14 +2217,38 @@ int hx_nav_strides_too_short(const hx_nav_summary_t *s)
     return s->stride_intervals >= HX_NAV_STRIDE_MIN_N && s->median_stride_s < HX_NAV_STRIDE_MIN_S;
 }
 
-int hx_nav_gait_slow(const hx_traj_t *t, const hx_nav_summary_t *s)
+int hx_nav_gait_slow(const hx_nav_summary_t *s)
 {
-    /* a run given a shortest ZUPT run of the remedy's or longer has had it;
-     * a log with almost no motion has its own note, and its motions are no
+    /* a log with almost no motion has its own note, and its motions are no
      * gait (openshoe_square2: 13 cycles of 1.76 s, 1 stride) */
     return s->stride_intervals >= HX_NAV_STRIDE_MIN_N && s->median_stride_s > HX_NAV_SLOW_CYCLE_S &&
-           !hx_nav_little_motion(s) &&
-           !(t->have_config && (double)t->config.stance.min_zupt_s >= 0.999 * HX_NAV_SLOW_MIN_ZUPT_S);
+           !hx_nav_little_motion(s);
+}
+
+hx_slow_note_t hx_nav_slow_note(const hx_traj_t *t, const hx_nav_summary_t *s, double *run_ms)
+{
+    const fnav_stance_config_t *sc = t->have_config ? &t->config.stance : &fnav_nav_config_default.stance;
+    if (!hx_nav_gait_slow(s)) {
+        return HX_SLOW_NOTE_NONE;
+    }
+    /* 0.999: --param min_zupt_cycle=0.02 reads 0.0199999996 in float */
+    if ((double)sc->min_zupt_cycle >= 0.999 * HX_NAV_SLOW_CYCLE_FRAC) {
+        if (run_ms != NULL) {
+            /* the detector's run for cycles of this length (fnav_stance.c
+             * cycle_update): the cycle's samples, at least min_zupt_s's, at
+             * most what the look-ahead holds */
+            long n = lround((double)sc->min_zupt_cycle * s->median_stride_s * t->rate_hz);
+            const long n_min = t->zupt_min_n > 0 ? (long)t->zupt_min_n : lround((double)sc->min_zupt_s * t->rate_hz);
+            n = n > n_min ? n : n_min;
+            if (t->zupt_max_n > 0 && n > (long)t->zupt_max_n) {
+                n = (long)t->zupt_max_n;
+            }
+            *run_ms = t->rate_hz > 0.0 ? 1e3 * (double)n / t->rate_hz : 0.0;
+        }
+        return HX_SLOW_NOTE_CYCLE;
+    }
+    /* a run given a shortest ZUPT run of the remedy's or longer has had it */
+    return (double)sc->min_zupt_s >= 0.999 * HX_NAV_SLOW_MIN_ZUPT_S ? HX_SLOW_NOTE_NONE : HX_SLOW_NOTE_REMEDY;
 }
 
 int hx_nav_coarse_stamps(const fnav_nav_stats_t *st)
@@ -2350,13 +2376,29 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
                    "with --input-rate HZ)\n",
                 s->median_stride_s, s->stride_intervals, 120.0 / s->median_stride_s, t->rate_hz);
     }
-    if (hx_nav_gait_slow(t, s)) {
-        fprintf(f, "note              the gait cycles last %.2f s (median of %ld), %.0f steps/min: a slow gait, where "
-                   "the foot's deceleration before landing can pass for a short stance and its ZUPT take speed out of "
-                   "the swing (the strides read short; real walks played this slow lost up to a third of their "
-                   "length); --param min_zupt_s=%.2f guards against it (docs/harness.md, \"Slow walking, real walks "
-                   "played slower\")\n",
-                s->median_stride_s, s->stride_intervals, 120.0 / s->median_stride_s, HX_NAV_SLOW_MIN_ZUPT_S);
+    {
+        double slow_run_ms = 0.0;
+        const hx_slow_note_t slow_note = hx_nav_slow_note(t, s, &slow_run_ms);
+        if (slow_note == HX_SLOW_NOTE_CYCLE) {
+            /* min_zupt_cycle in effect (--param min_zupt_cycle): the run
+             * follows the cycle; naming min_zupt_s=0.05 there was redundant, and
+             * that breaks a jogger */
+            fprintf(f, "note              the gait cycles last %.2f s (median of %ld), %.0f steps/min: a slow gait, where "
+                       "the foot's deceleration before landing can pass for a short stance; the shortest ZUPT run follows "
+                       "the cycle (min_zupt_cycle %g: %.0f ms at this cycle) and guards against it, but not in the first "
+                       "strides after a start or a stand (docs/harness.md, \"Slow walking, real walks played slower\")\n",
+                    s->median_stride_s, s->stride_intervals, 120.0 / s->median_stride_s,
+                    (double)(t->have_config ? t->config.stance.min_zupt_cycle
+                                            : fnav_nav_config_default.stance.min_zupt_cycle),
+                    slow_run_ms);
+        } else if (slow_note == HX_SLOW_NOTE_REMEDY) {
+            fprintf(f, "note              the gait cycles last %.2f s (median of %ld), %.0f steps/min: a slow gait, where "
+                       "the foot's deceleration before landing can pass for a short stance and its ZUPT take speed out of "
+                       "the swing (the strides read short; real walks played this slow lost up to a third of their "
+                       "length); --param min_zupt_s=%.2f guards against it (docs/harness.md, \"Slow walking, real walks "
+                       "played slower\")\n",
+                    s->median_stride_s, s->stride_intervals, 120.0 / s->median_stride_s, HX_NAV_SLOW_MIN_ZUPT_S);
+        }
     }
     if (hx_nav_coarse_stamps(st)) {
         fprintf(f, "note              %.1f %% of the samples repeat the time stamp before them (dt = 0; longest "
@@ -2477,8 +2519,9 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
         cJSON_AddItemToObject(gc, "median_s", num(s->stride_intervals > 0 ? s->median_stride_s : (double)NAN));
         cJSON_AddNumberToObject(gc, "intervals", (double)s->stride_intervals);
         cJSON_AddBoolToObject(gc, "too_short", hx_nav_strides_too_short(s));
-        /* the summary's slow-gait note (hx_nav_gait_slow) */
-        cJSON_AddBoolToObject(gc, "slow", hx_nav_gait_slow(t, s));
+        /* the gait is slow (hx_nav_gait_slow), whatever the settings; the
+         * summary's note says what guards against it (hx_nav_slow_note) */
+        cJSON_AddBoolToObject(gc, "slow", hx_nav_gait_slow(s));
         cJSON_AddItemToObject(root, "gait_cycles", gc);
     }
     {

@@ -108,6 +108,8 @@ typedef struct {
     fnav_nav_stats_t stats;      /**< navigator counters at the end */
     double rate_hz;              /**< detector rate */
     int window;                  /**< detector window, samples */
+    int zupt_min_n;              /**< the detector's shortest ZUPT run, samples (min_zupt_s at the rate; 0: not known) */
+    int zupt_max_n;              /**< the longest shortest ZUPT run the look-ahead allows (lag + 1, samples; 0: not known) */
     double in_rate_hz;           /**< input rate before resampling (0 if not resampled) */
     long resample_dropped_dups;  /**< duplicates dropped by the resampler */
     long cut_lines;              /**< the log's incomplete last line ignored (hx_read_stats_t) */
@@ -388,20 +390,44 @@ int hx_nav_strides_too_short(const hx_nav_summary_t *s);
  *  HX_NAV_STRIDE_MIN_N cycles or more) above HX_NAV_SLOW_CYCLE_S, a cadence
  *  below 70 steps/min. Real walks played slower (scripts/probe_slow.py)
  *  lost 2-33 % of their length at 53-68 steps/min and kept it from 71-75
- *  up: in late swing the foot's slowed deceleration brings |f| near g, the
- *  statistic dips under the threshold for 20-32 ms, longer than the
- *  shortest ZUPT run, and the ZUPT zeroes a swing's velocity.
- *  HX_NAV_SLOW_MIN_ZUPT_S (as --param min_zupt_s) cured those copies; it is
- *  not the default because a jogger's stances are shorter (footprint walk
- *  35: 2.67 -> 80.74 %). docs/harness.md, "Slow walking, real walks played
- *  slower". */
+ *  up, with the default (min_zupt_cycle 0): in late swing
+ *  the foot's slowed deceleration brings |f| near g, the statistic dips
+ *  under the threshold for 20-32 ms, longer than the shortest ZUPT run, and
+ *  the ZUPT zeroes a swing's velocity. HX_NAV_SLOW_MIN_ZUPT_S (as --param
+ *  min_zupt_s) cured those copies but breaks a jogger, whose stances are
+ *  shorter (footprint walk 35: 2.67 -> 80.74 %); a shortest run scaled with
+ *  the gait cycle (--param min_zupt_cycle=0.025) cures them too (2.5 % or
+ *  less) and keeps walk 35 at its own rate; it is not the default (walk 35
+ *  at 100 Hz locked in, docs/navigation.md). docs/harness.md,
+ *  "Slow walking, real walks played slower". */
 #define HX_NAV_SLOW_CYCLE_S (120.0 / 70.0)
 #define HX_NAV_SLOW_MIN_ZUPT_S 0.05
+/** The min_zupt_cycle from which the slow-gait note says the shortest ZUPT
+ *  run follows the cycle instead of naming HX_NAV_SLOW_MIN_ZUPT_S: the
+ *  slowed copies lost up to 23 % at 0.015, up to 10 % at 0.02 and 2.5 % at
+ *  0.025 (docs/harness.md, "Slow walking, real walks played slower"). */
+#define HX_NAV_SLOW_CYCLE_FRAC 0.02
 
-/** True when the gait is slow (HX_NAV_SLOW_CYCLE_S) and the run's shortest
- *  ZUPT run is below HX_NAV_SLOW_MIN_ZUPT_S (or not said): the summary's
- *  note and the JSON's gait_cycles.slow. */
-int hx_nav_gait_slow(const hx_traj_t *t, const hx_nav_summary_t *s);
+/** True when the gait is slow (HX_NAV_SLOW_CYCLE_S; not for a log with
+ *  almost no motion, which has its own note): the JSON's gait_cycles.slow,
+ *  a statement about the gait whatever the settings. */
+int hx_nav_gait_slow(const hx_nav_summary_t *s);
+
+/** The summary's slow-gait note, for the configuration that ran (t's; the
+ *  default when not said). */
+typedef enum {
+    HX_SLOW_NOTE_NONE = 0, /**< no slow gait, or min_zupt_s of HX_NAV_SLOW_MIN_ZUPT_S or more with min_zupt_cycle
+                                below HX_NAV_SLOW_CYCLE_FRAC (the remedy applied): nothing said */
+    HX_SLOW_NOTE_CYCLE,    /**< min_zupt_cycle of HX_NAV_SLOW_CYCLE_FRAC or more: the run follows the cycle */
+    HX_SLOW_NOTE_REMEDY    /**< neither: the note names --param min_zupt_s=HX_NAV_SLOW_MIN_ZUPT_S */
+} hx_slow_note_t;
+
+/** Which slow-gait note the summary prints; with HX_SLOW_NOTE_CYCLE,
+ *  *run_ms (when not NULL) receives the shortest ZUPT run the detector
+ *  takes at the median gait cycle, ms: max(min_zupt_s's run,
+ *  round(min_zupt_cycle x cycle x rate)) samples, capped at the look-ahead's
+ *  (fnav_stance.c cycle_update). */
+hx_slow_note_t hx_nav_slow_note(const hx_traj_t *t, const hx_nav_summary_t *s, double *run_ms);
 
 /** True when the samples that repeat the time stamp before them reach
  *  HX_NAV_DUP_FRACTION of the samples (the summary's note). */

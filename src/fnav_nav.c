@@ -9,9 +9,7 @@
 const fnav_nav_config_t fnav_nav_config_default = {
     FNAV_PROFILE_GENERIC_MEMS_INIT, /* profile: docs/navigation.md, "Bias model" */
     FNAV_BIAS_AR1, /* bias_model: see docs/navigation.md (evidence in docs/results.md) */
-    { FNAV_DETECTOR_SHOE, FNAV_R(0.0), FNAV_R(0.025), FNAV_R(0.01), FNAV_R(0.1) * D2R, FNAV_R(1.0e5),
-      FNAV_R(0.6), FNAV_R(0.6), FNAV_R(9.80665), 1, FNAV_R(2.0), FNAV_R(0.4), FNAV_R(10.0), FNAV_R(0.02), FNAV_R(0.05),
-      FNAV_R(0.25), FNAV_R(0.3), FNAV_R(0.0) },
+    FNAV_STANCE_CONFIG_DEFAULT_INIT, /* stance: the detector's own defaults */
     { FNAV_R(0.5), FNAV_R(5.0), FNAV_R(9.80665), FNAV_R(10.0), FNAV_R(0.2), FNAV_R(0.5) * D2R },
     FNAV_R(9.80665),    /* gravity_mps2 */
     FNAV_SAMPLE_INSTANT, /* sample_type: rate-output sensors (docs/navigation.md) */

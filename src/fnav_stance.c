@@ -35,26 +35,7 @@
 #define JERK_SPAN_NS ((int64_t)2147483648 * 1000)
 #define JERK_LONG_NS (JERK_SPAN_NS / FNAV_STANCE_EVENT_BUF)
 
-const fnav_stance_config_t fnav_stance_config_default = {
-    FNAV_DETECTOR_SHOE, /* detector */
-    FNAV_R(0.0),        /* rate_hz: estimate */
-    FNAV_R(0.025),      /* window_s, s */
-    FNAV_R(0.01),       /* sigma_a_mps2, m/s^2 (OpenShoe default) */
-    FNAV_R(0.1) * FNAV_DEG2RAD, /* sigma_g_rps, rad/s (OpenShoe default) */
-    FNAV_R(1.0e5),      /* gamma */
-    FNAV_R(0.6),        /* gyro_thresh_rps, rad/s */
-    FNAV_R(0.6),        /* accel_thresh_mps2, m/s^2 */
-    FNAV_R(9.80665),    /* gravity_mps2, m/s^2 */
-    1,                  /* adaptive */
-    FNAV_R(2.0),        /* floor_window_s, s */
-    FNAV_R(0.4),        /* margin_dec, decades */
-    FNAV_R(10.0),       /* adapt_max_ratio */
-    FNAV_R(0.02),       /* min_zupt_s, s */
-    FNAV_R(0.05),       /* min_stance_s, s */
-    FNAV_R(0.25),       /* min_swing_s, s */
-    FNAV_R(0.3),        /* event_window_s, s */
-    FNAV_R(0.0)         /* min_zupt_cycle: off */
-};
+const fnav_stance_config_t fnav_stance_config_default = FNAV_STANCE_CONFIG_DEFAULT_INIT;
 
 /* cyc_n: bits 0-1 the cycles known, bit 2 a swing start known. */
 #define CYC_COUNT 0x3u

@@ -42,6 +42,28 @@ static void swing(fnav_sample_t *s)
     s->accel_mps2[0] = FNAV_R(1.0);
 }
 
+/* The navigator's default detector is the detector's default: one
+ * initializer (FNAV_STANCE_CONFIG_DEFAULT_INIT) for both. Until 2026-12-01
+ * fnav_nav_config_default held a copy of the values, and a default changed
+ * in one would not have reached the other. Compared field by field (the
+ * padding of a struct is not part of its value). */
+static void test_default_stance_is_detector_default(void **state)
+{
+    const fnav_stance_config_t *a = &fnav_nav_config_default.stance, *b = &fnav_stance_config_default;
+    (void)state;
+    assert_int_equal(a->detector, b->detector);
+    assert_true(a->rate_hz == b->rate_hz && a->window_s == b->window_s);
+    assert_true(a->sigma_a_mps2 == b->sigma_a_mps2 && a->sigma_g_rps == b->sigma_g_rps && a->gamma == b->gamma);
+    assert_true(a->gyro_thresh_rps == b->gyro_thresh_rps && a->accel_thresh_mps2 == b->accel_thresh_mps2);
+    assert_true(a->gravity_mps2 == b->gravity_mps2);
+    assert_int_equal(a->adaptive, b->adaptive);
+    assert_true(a->floor_window_s == b->floor_window_s && a->margin_dec == b->margin_dec &&
+                a->adapt_max_ratio == b->adapt_max_ratio);
+    assert_true(a->min_zupt_s == b->min_zupt_s && a->min_stance_s == b->min_stance_s &&
+                a->min_swing_s == b->min_swing_s && a->event_window_s == b->event_window_s);
+    assert_true(a->min_zupt_cycle == b->min_zupt_cycle);
+}
+
 static void test_config(void **state)
 {
     static fnav_nav_t nav;
@@ -2469,6 +2491,7 @@ static void test_gait_cycles(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_default_stance_is_detector_default),
         cmocka_unit_test(test_config),
         cmocka_unit_test(test_config_reaches_parts),
         cmocka_unit_test(test_stream_contract),

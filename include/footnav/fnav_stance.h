@@ -128,6 +128,31 @@ typedef struct {
 /** Blocks of the sliding-window minimum of the adaptive floor. */
 #define FNAV_STANCE_FLOOR_BLOCKS 8
 
+/** The defaults' initializer, shared by fnav_stance_config_default and the
+ *  navigator's default (fnav_nav_config_default.stance), so the two cannot
+ *  differ. Until 2026-12-01 the navigator's was a copy of the values. */
+#define FNAV_STANCE_CONFIG_DEFAULT_INIT                                                                            \
+    {                                                                                                              \
+        FNAV_DETECTOR_SHOE,          /* detector */                                                                \
+        FNAV_R(0.0),                 /* rate_hz: estimate */                                                       \
+        FNAV_R(0.025),               /* window_s, s */                                                             \
+        FNAV_R(0.01),                /* sigma_a_mps2, m/s^2 (OpenShoe default) */                                  \
+        FNAV_R(0.1) * FNAV_DEG2RAD,  /* sigma_g_rps, rad/s (OpenShoe default) */                                   \
+        FNAV_R(1.0e5),               /* gamma */                                                                   \
+        FNAV_R(0.6),                 /* gyro_thresh_rps, rad/s */                                                  \
+        FNAV_R(0.6),                 /* accel_thresh_mps2, m/s^2 */                                                \
+        FNAV_R(9.80665),             /* gravity_mps2, m/s^2 */                                                     \
+        1,                           /* adaptive */                                                                \
+        FNAV_R(2.0),                 /* floor_window_s, s */                                                       \
+        FNAV_R(0.4),                 /* margin_dec, decades */                                                     \
+        FNAV_R(10.0),                /* adapt_max_ratio */                                                         \
+        FNAV_R(0.02),                /* min_zupt_s, s */                                                           \
+        FNAV_R(0.05),                /* min_stance_s, s */                                                         \
+        FNAV_R(0.25),                /* min_swing_s, s */                                                          \
+        FNAV_R(0.3),                 /* event_window_s, s */                                                       \
+        FNAV_R(0.0)                  /* min_zupt_cycle: off (docs/navigation.md, "Cycle-scaled shortest run") */    \
+    }
+
 /** Defaults (see each field). */
 extern const fnav_stance_config_t fnav_stance_config_default;
 

@@ -1094,34 +1094,64 @@ grep -q "cycles last" "$T/out" && fail "gait cycles at the right rate called too
 json "$T/bare6_200.json" 'j["gait_cycles"]["too_short"] is False and j["gait_cycles"]["median_s"] >= 0.4' &&
     pass "replay --json at the right rate: gait_cycles.too_short false" ||
     fail "replay --json at the right rate: $(grep -A3 '"gait_cycles"' "$T/bare6_200.json" | tr -d '\n\t')"
-# a slow gait (under 70 steps/min) is named with its remedy: in a slow swing the foot's deceleration before the
-# landing can pass for a stance of 20-32 ms and its ZUPT takes speed out (real walks played slower lost up to a
-# third of their length, scripts/probe_slow.py; nothing was said until 2026-11-30). The simulator's 60 steps/min
-# walk (0.8 m strides at 0.4 m/s) reads its strides short and climbs; --param min_zupt_s=0.05, the remedy named,
-# brings the median stride nearer 0.8 m and takes the note away; the 100 steps/min walk above has no note.
+# a slow gait (under 70 steps/min) is named, with what guards against it: in a slow swing the foot's deceleration
+# before the landing can pass for a stance of 20-32 ms and its ZUPT takes speed out (real walks played slower lost up
+# to a third of their length, scripts/probe_slow.py; nothing was said until 2026-11-30). The simulator's 60 steps/min
+# walk (0.8 m strides at 0.4 m/s, 2 s cycles) reads its strides short by default; the note names --param
+# min_zupt_s=0.05, which brings the median stride to 0.8 m and takes the note away. With the cycle-scaled run on
+# (--param min_zupt_cycle=0.025: 50 ms at this cycle) the note names that run instead (naming min_zupt_s=0.05 there
+# would be redundant). gait_cycles.slow says the gait is slow whatever guards against it (until 2026-12-01: whether
+# the note was printed).
 "$H" sim --motion walk --duration 60 --cadence 60 --speed 0.4 --profile none --out "$T/slow60.bin" >/dev/null 2>&1 ||
     fail "sim a 60 steps/min walk"
 expect_exit 0 "a 60 steps/min walk" "$H" replay "$T/slow60.bin" --out /dev/null --json "$T/slow60.json" --strides "$T/slow60_s.csv"
 expect_out_re "^note +the gait cycles last 2\.00 s \(median of [0-9]+\), 60 steps/min: a slow gait" "a slow gait named"
-expect_out "--param min_zupt_s=0.05 guards against it" "the slow gait's remedy named"
+expect_out "--param min_zupt_s=0.05 guards against it" "the slow gait's remedy named (default)"
+grep -q "follows the cycle" "$T/out" && fail "the default's slow-gait note names a cycle-scaled run (it is off)" ||
+    pass "the default's slow-gait note names no cycle-scaled run"
 json "$T/slow60.json" 'j["gait_cycles"]["slow"] is True and j["gait_cycles"]["too_short"] is False' &&
     pass "replay --json: gait_cycles.slow true at 60 steps/min" ||
     fail "replay --json at 60 steps/min: $(grep -A5 '"gait_cycles"' "$T/slow60.json" | tr -d '\n\t')"
-expect_exit 0 "the 60 steps/min walk with the remedy" "$H" replay "$T/slow60.bin" --out /dev/null --param min_zupt_s=0.05 \
-    --json "$T/slow60_fix.json" --strides "$T/slow60_fix_s.csv"
+expect_exit 0 "the 60 steps/min walk with min_zupt_cycle=0.025" "$H" replay "$T/slow60.bin" --out /dev/null \
+    --param min_zupt_cycle=0.025 --json "$T/slow60_c.json" --strides "$T/slow60_c_s.csv"
+expect_out_re "^note +the gait cycles last 2\.00 s \(median of [0-9]+\), 60 steps/min: a slow gait" \
+    "a slow gait named with min_zupt_cycle=0.025"
+expect_out "the shortest ZUPT run follows the cycle (min_zupt_cycle 0.025: 50 ms at this cycle) and guards against it, but not in the first strides after a start or a stand" \
+    "min_zupt_cycle=0.025: the cycle-scaled run named, with its length at this cycle"
+grep -q "min_zupt_s=0.05" "$T/out" && fail "the slow-gait note names min_zupt_s=0.05 with the cycle-scaled run on" ||
+    pass "the slow-gait note does not name min_zupt_s=0.05 with the cycle-scaled run on"
+json "$T/slow60_c.json" 'j["gait_cycles"]["slow"] is True' && pass "replay --json: gait_cycles.slow true with min_zupt_cycle=0.025" ||
+    fail "replay --json with min_zupt_cycle=0.025: $(grep -A5 '"gait_cycles"' "$T/slow60_c.json" | tr -d '\n\t')"
+# the note's two branches meet at min_zupt_cycle 0.02 (0.0199999996 in float): 0.015 names the remedy
+expect_exit 0 "the 60 steps/min walk with min_zupt_cycle=0.02" "$H" replay "$T/slow60.bin" --out /dev/null --param min_zupt_cycle=0.02
+expect_out "the shortest ZUPT run follows the cycle (min_zupt_cycle 0.02: 40 ms at this cycle)" \
+    "min_zupt_cycle=0.02: the cycle-scaled run named"
+expect_exit 0 "the 60 steps/min walk with min_zupt_cycle=0.015" "$H" replay "$T/slow60.bin" --out /dev/null --param min_zupt_cycle=0.015
+expect_out "--param min_zupt_s=0.05 guards against it" "min_zupt_cycle=0.015: the remedy named"
+# at 820 Hz the ring of 64 caps the run at 53 samples (64.6 ms) for cycles over 2.59 s: at 45 steps/min (2.67 s) the
+# note gives the capped run, 65 ms, not the 67 ms (55 samples) of the cycle
+"$H" sim --motion walk --duration 60 --cadence 45 --speed 0.4 --profile none --rate 820 --out "$T/slow45_820.bin" \
+    >/dev/null 2>&1 || fail "sim a 45 steps/min walk at 820 Hz"
+expect_exit 0 "a 45 steps/min walk at 820 Hz" "$H" replay "$T/slow45_820.bin" --out /dev/null --param min_zupt_cycle=0.025
+expect_out "last 2.67 s (median of [0-9]*), 45 steps/min: a slow gait.*follows the cycle (min_zupt_cycle 0.025: 65 ms at this cycle)" \
+    "the slow-gait note gives the run the ring caps (820 Hz)"
+expect_exit 0 "the 60 steps/min walk with the remedy" "$H" replay "$T/slow60.bin" --out /dev/null \
+    --param min_zupt_s=0.05 --json "$T/slow60_fix.json" --strides "$T/slow60_fix_s.csv"
 grep -q "slow gait" "$T/out" && fail "the slow-gait note with its remedy applied" || pass "no slow-gait note with the remedy"
-json "$T/slow60_fix.json" 'j["gait_cycles"]["slow"] is False' && pass "replay --json: gait_cycles.slow false with the remedy" ||
+json "$T/slow60_fix.json" 'j["gait_cycles"]["slow"] is True' && pass "replay --json: gait_cycles.slow true with the remedy (the gait)" ||
     fail "replay --json with the remedy: $(grep -A5 '"gait_cycles"' "$T/slow60_fix.json" | tr -d '\n\t')"
-if "${PY:-/usr/bin/python3}" - "$T/slow60_s.csv" "$T/slow60_fix_s.csv" >"$T/py" 2>&1 <<'PYEOF'
+if "${PY:-/usr/bin/python3}" - "$T/slow60_s.csv" "$T/slow60_c_s.csv" "$T/slow60_fix_s.csv" >"$T/py" 2>&1 <<'PYEOF'
 import csv, statistics, sys
 def med(p):
     rows = list(csv.DictReader(open(p)))[1:-1]
     return statistics.median(float(r["length_m"]) for r in rows)
-a, b = med(sys.argv[1]), med(sys.argv[2])
-print("median stride %.3f m, %.3f m with the remedy (truth 0.800)" % (a, b))
-sys.exit(0 if abs(b - 0.8) < abs(a - 0.8) and abs(b - 0.8) < 0.01 else 1)
+off, cyc, fix = (med(p) for p in sys.argv[1:4])
+print("median stride %.4f m by default, %.4f m with min_zupt_cycle 0.025, %.4f m with min_zupt_s 0.05 (truth 0.800)"
+      % (off, cyc, fix))
+ok = all(abs(x - 0.8) < 0.005 and abs(x - 0.8) < abs(off - 0.8) for x in (cyc, fix)) and abs(off - 0.8) > 0.01
+sys.exit(0 if ok else 1)
 PYEOF
-then pass "the remedy named mends the slow walk's strides: $(cat "$T/py")"; else fail "slow walk's remedy: $(cat "$T/py")"; fi
+then pass "the remedy and the cycle-scaled run mend the slow walk's strides: $(cat "$T/py")"; else fail "slow walk's strides: $(cat "$T/py")"; fi
 json "$T/walkbin.json" 'j["gait_cycles"]["slow"] is False' && pass "the bundled walk (104 steps/min) is no slow gait" ||
     fail "the bundled walk called slow: $(grep -A5 '"gait_cycles"' "$T/walkbin.json" | tr -d '\n\t')"
 
