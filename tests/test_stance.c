@@ -1476,6 +1476,44 @@ static void test_zupt_cycle_stand_resets(void **state)
     }
 }
 
+/* The lock-in guard (fnav_stance.h): two slow cycles of 3 s (stances and
+ * swings of 300 samples at 200 Hz) ask for the capped run, 15 samples; then
+ * a fast gait (stances of 14 still samples, a raw run of 12; swings of 60)
+ * whose stances are all shorter than that. Without the guard every one is
+ * rejected, so the swing never ends, no cycle is measured and the run stays
+ * at 15 for good: 2 strides (the slow one and the last stand's) where F = 0
+ * finds 12. With it, once the last FNAV_STANCE_RAW_RUNS raw runs are the
+ * short stances (the slow stances pushed out), the run is capped at half
+ * of 12, and every later stance is a ZUPT: FNAV_STANCE_RAW_RUNS short
+ * stances missed, 12 - FNAV_STANCE_RAW_RUNS strides. The slow gait's
+ * late-swing dips stay rejected with the guard
+ * (test_zupt_cycle_slow_gait: the stance, a raw run of 238, is among the
+ * runs remembered, so the cap is 119 and does not bind). */
+static void test_zupt_cycle_lock_in(void **state)
+{
+    zc_cycle_t cyc[12];
+    int dip[12], req[12], lag, i;
+    long strides;
+    (void)state;
+    for (i = 0; i < 12; i++) {
+        cyc[i].stance_n = i < 2 ? 300 : 14;
+        cyc[i].swing_n = i < 2 ? 300 : 60;
+        cyc[i].gap_at = 0;
+        cyc[i].gap_n = 0;
+    }
+    zc_run(FNAV_R(0.0), cyc, 12, dip, req, &strides, &lag);
+    assert_int_equal(strides, 12);
+    zc_run(FNAV_R(0.025), cyc, 12, dip, req, &strides, &lag);
+    assert_int_equal(lag, 14);
+    assert_int_equal(strides, 12 - FNAV_STANCE_RAW_RUNS);
+    /* a milder slow start (cycles of 2 s: a run of 10, under the fast
+     * stances' 12) locks nothing in: every stance is a ZUPT as with F = 0 */
+    cyc[0].stance_n = 100;
+    cyc[1].stance_n = 100;
+    zc_run(FNAV_R(0.025), cyc, 12, dip, req, &strides, &lag);
+    assert_int_equal(strides, 12);
+}
+
 /* The look-ahead with min_zupt_cycle: fixed at the rate for the longest
  * cycle, h + L samples of delay from the first sample (200 Hz, W = 5: h =
  * 2; 0.025 x 3 s x 200 Hz = 15, L = 14). At high rates the ring caps it
@@ -1585,6 +1623,7 @@ int main(void)
         cmocka_unit_test(test_zupt_cycle_slow_gait),
         cmocka_unit_test(test_zupt_cycle_fast_gait),
         cmocka_unit_test(test_zupt_cycle_stand_resets),
+        cmocka_unit_test(test_zupt_cycle_lock_in),
         cmocka_unit_test(test_zupt_cycle_latency),
     };
     return cmocka_run_group_tests_name("stance", tests, NULL, NULL);
