@@ -140,7 +140,8 @@ typedef struct {
 /** Cycle-scaled ZUPT run's guard: the raw stance runs remembered; the
  *  scaled run is at most half the longest of them (at least n(min_zupt_s);
  *  see "Lock-in guard" above). 3: a slow walk's stance stays among them
- *  with two late-swing dips after it, and a lock-in ends after three short
+ *  while up to three late-swing dips of a swing are decided (a fourth
+ *  would pass), and a lock-in ends after three short
  *  stances (with 4, footprint walk 35 at 100 Hz kept 77.6 m for 65.4 m;
  *  docs/navigation.md). At most 4 fit the padding the bytes sit in. */
 #define FNAV_STANCE_RAW_RUNS 3
