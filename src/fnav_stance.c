@@ -428,7 +428,7 @@ static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
         st->run = st->run < RUN_MAX ? st->run + 1 : RUN_MAX;
     } else {
         st->run = 1;
-        st->run_raw = o->stance;
+        st->run_raw = (signed char)o->stance;
         st->run_t0_ns = o->sample.t_ns;
         if (!o->stance) {
             /* a new swing run: foot-off is the largest |f| of its first
@@ -534,10 +534,27 @@ static void decide_raw(fnav_stance_t *st)
     st->n_raw++;
 }
 
+/* The lock-in guard (fnav_stance.h): a raw stance run of st->back samples
+ * (at least n_min_zupt) just ended, accepted or rejected; remember it and
+ * recompute the cap, half the longest remembered run. */
+static void raw_run_end(fnav_stance_t *st)
+{
+    int j, longest;
+    for (j = FNAV_STANCE_RAW_RUNS - 1; j > 0; j--) {
+        st->raw_runs[j] = st->raw_runs[j - 1];
+    }
+    st->raw_runs[0] = (unsigned char)(st->back < 255 ? st->back : 255);
+    longest = 0;
+    for (j = 0; j < FNAV_STANCE_RAW_RUNS; j++) {
+        longest = st->raw_runs[j] > longest ? st->raw_runs[j] : longest;
+    }
+    st->raw_cap = (unsigned char)(longest / 2);
+}
+
 fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
 {
     long i, k, fwd;
-    int q;
+    int q, req;
     if (st == NULL || out == NULL) {
         return FNAV_E_ARG;
     }
@@ -563,6 +580,9 @@ fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
     out->raw_stance = st->dq_raw[q];
     /* length of the raw stance run through i, looking ahead at most lag
      * (saturated: a foot at rest for days stays at rest) */
+    if (!out->raw_stance && st->back >= st->n_min_zupt && st->cfg.min_zupt_cycle > FNAV_R(0.0)) {
+        raw_run_end(st);
+    }
     st->back = out->raw_stance ? (st->back < RUN_MAX ? st->back + 1 : RUN_MAX) : 0;
     fwd = 0;
     if (out->raw_stance) {
@@ -573,7 +593,14 @@ fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
             fwd++;
         }
     }
-    out->stance = out->raw_stance && (st->back + fwd >= st->n_zupt_req || i == 0);
+    req = st->n_zupt_req;
+    if (req > st->raw_cap) {
+        /* the lock-in guard (fnav_stance.h): at most half the longest recent
+         * raw run, never below n_min_zupt (n_zupt_req is n_min_zupt when
+         * min_zupt_cycle is 0: nothing changes then) */
+        req = st->raw_cap > st->n_min_zupt ? st->raw_cap : st->n_min_zupt;
+    }
+    out->stance = out->raw_stance && (st->back + fwd >= req || i == 0);
     out->events = 0;
     out->fo_t_ns = 0;
     out->fs_t_ns = 0;

@@ -1270,6 +1270,9 @@ typedef struct {
 
 #define ZC_MAX_CYCLES 12
 #define ZC_MAX_SAMPLES 12000
+/* More dips per swing: g_zc_dips gaps, each 30 samples after the one
+ * before (test_zupt_cycle_lock_in; 1 elsewhere). */
+static int g_zc_dips = 1;
 
 static void zc_run(fnav_real_t frac, const zc_cycle_t *cyc, int n_cyc, int *dip_zupt, int *req, long *strides,
                    int *lag)
@@ -1287,13 +1290,15 @@ static void zc_run(fnav_real_t frac, const zc_cycle_t *cyc, int n_cyc, int *dip_
         req[i] = -1;
         for (j = 0; j < cyc[i].stance_n + cyc[i].swing_n; j++) {
             const int sw = j - cyc[i].stance_n; /* sample within the swing */
-            const int in_gap = sw >= cyc[i].gap_at && sw < cyc[i].gap_at + cyc[i].gap_n;
+            int in_gap = 0, near_gap = 0, d;
+            for (d = 0; d < g_zc_dips; d++) {
+                const int g0 = cyc[i].gap_at + 30 * d;
+                in_gap |= sw >= g0 && sw < g0 + cyc[i].gap_n;
+                near_gap |= cyc[i].gap_n > 0 && sw >= g0 - 2 && sw < g0 + cyc[i].gap_n + 2;
+            }
             assert_true(n < ZC_MAX_SAMPLES - 100);
             moving[n] = (signed char)(sw >= 0 && !in_gap);
-            cyc_of[n] = (short)(cyc[i].gap_n > 0 && sw >= cyc[i].gap_at - 2 &&
-                                        sw < cyc[i].gap_at + cyc[i].gap_n + 2
-                                    ? i
-                                    : -1);
+            cyc_of[n] = (short)(near_gap ? i : -1);
             gap0[n] = (unsigned char)(cyc[i].gap_n > 0 && sw == cyc[i].gap_at);
             n++;
         }
@@ -1476,6 +1481,73 @@ static void test_zupt_cycle_stand_resets(void **state)
     }
 }
 
+/* The lock-in guard (fnav_stance.h): two slow cycles of 3 s (stances and
+ * swings of 300 samples at 200 Hz) ask for the capped run, 15 samples; then
+ * a fast gait (stances of 14 still samples, a raw run of 12; swings of 60)
+ * whose stances are all shorter than that. Without the guard every one is
+ * rejected, so the swing never ends, no cycle is measured and the run stays
+ * at 15 for good: 2 strides (the slow one and the last stand's) where F = 0
+ * finds 12. With it, once the last FNAV_STANCE_RAW_RUNS raw runs are the
+ * short stances (the slow stances pushed out), the run is capped at half
+ * of 12, and every later stance is a ZUPT: FNAV_STANCE_RAW_RUNS short
+ * stances missed, 12 - FNAV_STANCE_RAW_RUNS strides. The slow gait's
+ * late-swing dips stay rejected with the guard
+ * (test_zupt_cycle_slow_gait: the stance, a raw run of 238, is among the
+ * runs remembered, so the cap is 119 and does not bind). */
+static void test_zupt_cycle_lock_in(void **state)
+{
+    zc_cycle_t cyc[12];
+    int dip[12], req[12], lag, i;
+    long strides;
+    (void)state;
+    for (i = 0; i < 12; i++) {
+        cyc[i].stance_n = i < 2 ? 300 : 14;
+        cyc[i].swing_n = i < 2 ? 300 : 60;
+        cyc[i].gap_at = 0;
+        cyc[i].gap_n = 0;
+    }
+    zc_run(FNAV_R(0.0), cyc, 12, dip, req, &strides, &lag);
+    assert_int_equal(strides, 12);
+    zc_run(FNAV_R(0.025), cyc, 12, dip, req, &strides, &lag);
+    assert_int_equal(lag, 14);
+    assert_int_equal(strides, 12 - FNAV_STANCE_RAW_RUNS);
+    /* a milder slow start (cycles of 2 s: a run of 10, under the fast
+     * stances' 12) locks nothing in: every stance is a ZUPT as with F = 0 */
+    cyc[0].stance_n = 100;
+    cyc[1].stance_n = 100;
+    zc_run(FNAV_R(0.025), cyc, 12, dip, req, &strides, &lag);
+    assert_int_equal(strides, 12);
+    /* the slow gait's late-swing dips with the guard: three dips per swing
+     * (raw runs of 6, 30 samples apart) leave the stance among the last
+     * three runs when each dip is decided, so the cap (half of 238) does
+     * not bind and every dip is rejected from the second swing; with F = 0
+     * every one is a ZUPT. A fourth dip would push the stance out (the cap
+     * falls to the floor, 4, and that dip passes). */
+    for (i = 0; i < 6; i++) {
+        cyc[i].stance_n = 240;
+        cyc[i].swing_n = 240;
+        cyc[i].gap_at = 100;
+        cyc[i].gap_n = 8;
+    }
+    g_zc_dips = FNAV_STANCE_RAW_RUNS;
+    zc_run(FNAV_R(0.0), cyc, 6, dip, req, &strides, &lag);
+    for (i = 0; i < 6; i++) {
+        assert_int_equal(dip[i], 1);
+    }
+    zc_run(FNAV_R(0.025), cyc, 6, dip, req, &strides, &lag);
+    assert_int_equal(strides, 6);
+    for (i = 1; i < 6; i++) {
+        assert_int_equal(req[i], 12);
+        assert_int_equal(dip[i], 0);
+    }
+    g_zc_dips = FNAV_STANCE_RAW_RUNS + 1;
+    zc_run(FNAV_R(0.025), cyc, 6, dip, req, &strides, &lag);
+    for (i = 1; i < 6; i++) {
+        assert_int_equal(dip[i], 1);
+    }
+    g_zc_dips = 1;
+}
+
 /* The look-ahead with min_zupt_cycle: fixed at the rate for the longest
  * cycle, h + L samples of delay from the first sample (200 Hz, W = 5: h =
  * 2; 0.025 x 3 s x 200 Hz = 15, L = 14). At high rates the ring caps it
@@ -1585,6 +1657,7 @@ int main(void)
         cmocka_unit_test(test_zupt_cycle_slow_gait),
         cmocka_unit_test(test_zupt_cycle_fast_gait),
         cmocka_unit_test(test_zupt_cycle_stand_resets),
+        cmocka_unit_test(test_zupt_cycle_lock_in),
         cmocka_unit_test(test_zupt_cycle_latency),
     };
     return cmocka_run_group_tests_name("stance", tests, NULL, NULL);

@@ -63,6 +63,18 @@
  * grows with min_zupt_cycle (0.025 at 200 Hz: L = 14, 70 ms instead of 15 ms;
  * at 0 nothing changes: L = n(min_zupt_s) - 1, the same decisions).
  *
+ * Lock-in guard (min_zupt_cycle > 0): a gait whose stances are shorter than
+ * the run a long cycle asked for (a jog after a slow start, a pause) would
+ * have every stance rejected, so no swing ends, no cycle is measured and
+ * the run never comes down (footprint walk 35 at 100 Hz: 16 strides,
+ * 100.5 m for 65.4 m). The detector remembers the lengths of the last
+ * FNAV_STANCE_RAW_RUNS raw stance runs of at least n(min_zupt_s) samples,
+ * accepted or rejected, and caps the scaled run at half the longest of them
+ * (never below n(min_zupt_s)). In a slow walk the stance (hundreds of ms) is
+ * among them beside the late-swing dips (1-2 per cycle), so the cap does not
+ * bind; in a lock-in every recent run is a short stance, and the cap falls
+ * under them after at most FNAV_STANCE_RAW_RUNS of them.
+ *
  * Not ISR-safe by itself (one object per caller); no allocation.
  */
 #ifndef FNAV_STANCE_H
@@ -124,6 +136,15 @@ typedef struct {
  *  clears the cycles known (the slowed walks' turning strides last up to
  *  3.5 s at 49 steps/min). */
 #define FNAV_STANCE_CYCLE_MAX_S FNAV_R(4.0)
+
+/** Cycle-scaled ZUPT run's guard: the raw stance runs remembered; the
+ *  scaled run is at most half the longest of them (at least n(min_zupt_s);
+ *  see "Lock-in guard" above). 3: a slow walk's stance stays among them
+ *  while up to three late-swing dips of a swing are decided (a fourth
+ *  would pass), and a lock-in ends after three short
+ *  stances (with 4, footprint walk 35 at 100 Hz kept 77.6 m for 65.4 m;
+ *  docs/navigation.md). At most 4 fit the padding the bytes sit in. */
+#define FNAV_STANCE_RAW_RUNS 3
 
 /** Blocks of the sliding-window minimum of the adaptive floor. */
 #define FNAV_STANCE_FLOOR_BLOCKS 8
@@ -207,12 +228,20 @@ typedef struct {
     long fw_fill, fw_len;  /**< samples in it, samples per block */
     fnav_real_t margin_ratio; /**< 10^margin_dec */
     /* segmentation */
-    int seg;            /**< 1 stance, 0 swing */
+    signed char seg;    /**< 1 stance, 0 swing */
+    signed char run_raw; /**< raw decision of the current run (-1 before the first) */
+    unsigned char cyc_n;      /**< min_zupt_cycle: cycles in cyc_run (bits 0-1: 0-3); bit 2: a
+                                   swing start is known */
+    unsigned char raw_cap;    /**< min_zupt_cycle's lock-in guard: half the longest of raw_runs,
+                                   the cycle-scaled run's cap, samples */
     long run;           /**< length of the current run of raw decisions, samples (saturates) */
-    int run_raw;        /**< raw decision of that run */
     unsigned char cyc_run[3]; /**< min_zupt_cycle: the last gait cycles' shortest runs, samples
-                                   (newest first; in a padding hole on 32-bit targets) */
-    unsigned char cyc_n;      /**< cycles in cyc_run (bits 0-1: 0-3); bit 2: a swing start is known */
+                                   (newest first) */
+    unsigned char raw_runs[FNAV_STANCE_RAW_RUNS]; /**< the guard: the last raw stance runs of at
+                                   least n_min_zupt samples, accepted or not, samples (newest
+                                   first, saturated at 255; 0: none yet). These bytes sit
+                                   in the padding around run (before run_t0_ns): the struct's
+                                   size is as without them. */
     int64_t run_t0_ns;  /**< time of the first sample of the run */
     int64_t swing_t0_ns; /**< start of the current swing */
     int64_t prev_t_ns;  /**< time of the last decision */
