@@ -31,6 +31,45 @@ def put(target, name, data):
     with open(os.path.join(d, name), 'wb') as f:
         f.write(data)
 
+def nav_slow_gait():
+    """A navigator seed (fuzz_nav.c) that reaches the cycle-scaled shortest
+    ZUPT run and its lock-in guard: option byte AR(1) bias model, lever,
+    still lead-in, 100 Hz, min_zupt_cycle 0.025 (bit 7); then seven 2 s gait
+    cycles of 13-byte records (regular time code 128, accel at 2048 LSB/g,
+    gyro at 16.384 LSB/(deg/s)): 0.6 s still, 1.4 s of swing with a 50 ms
+    still dip in late swing (a raw run of 3 samples: rejected with the 5 of
+    the 2 s cycle, a ZUPT without), then four 0.6 s cycles whose stances are
+    60 ms (raw runs of 4, under the 5 the 2 s cycles ask for: the lock-in
+    case, which the guard ends); a constant yaw rate keeps the swing from
+    passing for a stance. Replayed as a CSV (t,ax..gz in SI, after a 2 s
+    still lead-in): 7 strides of 2 s either way, 444 ZUPT samples with
+    min_zupt_cycle 0, 418 with 0.025 (the dips rejected)."""
+    import math
+    import struct
+    out = bytearray([1 | 2 | 16 | 128])
+    def rec(a, g):
+        out.extend(struct.pack('<B6h', 128, *[max(-32000, min(32000, int(round(v)))) for v in a + g]))
+    still = ([0.0, 0.0, -2048.0], [0.0, 0.0, 0.0])
+    def swing(n, dip_at=None):
+        for k in range(n):
+            if dip_at is not None and dip_at <= k < dip_at + 5:
+                rec(*still)
+                continue
+            ph = 2.0 * math.pi * k / n
+            rec([2048.0 * math.sin(ph), 200.0 * math.sin(2 * ph), -2048.0 + 1500.0 * math.sin(ph)],
+                [300.0 * math.sin(3 * ph), 16.384 * 300.0 * math.sin(ph), 16.384 * 150.0])
+    for _ in range(7):
+        for _ in range(60):
+            rec(*still)
+        swing(140, dip_at=110)
+    for _ in range(4):
+        for _ in range(6):
+            rec(*still)
+        swing(54)
+    for _ in range(60):
+        rec(*still)
+    return bytes(out)
+
 def main():
     seeds = [
         ('gx2', 'openshoe_gx2/Measurement_100521_2_data_inert.txt', 12),   # ISC
@@ -115,6 +154,7 @@ gyro_noise_rps_rthz = 5.7e-05 6.4e-05 7.3e-05
 gyro_tau_s = 5 5 50
 gyro_bias_sigma_rps = 1.5e-06 1.1e-06 5.9e-07
 ''')
+    put('nav', 'slow_gait_cycle', nav_slow_gait())
     print('corpus written under', os.path.join(HERE, 'corpus'))
 
 if __name__ == '__main__':
