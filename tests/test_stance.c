@@ -292,6 +292,27 @@ static void test_shoe_statistic(void **state)
     assert_true(got > 30);
 }
 
+/* 100 still samples at 200 Hz pushed into an initialised detector, every
+ * due decision popped (each sample once, in order): the largest delay
+ * between push and pop, samples; *next receives the samples popped. */
+static long still_delay(fnav_stance_t *st, long *next)
+{
+    const double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+    fnav_stance_out_t o;
+    long k, max_lag = 0;
+    *next = 0;
+    for (k = 0; k < 100; k++) {
+        fnav_sample_t s = sample(k, 200.0, f, w);
+        assert_int_equal(fnav_stance_push(st, &s), FNAV_OK);
+        while (fnav_stance_pop(st, &o) == FNAV_OK) {
+            assert_int_equal((long)o.sample.seq, *next);
+            (*next)++;
+        }
+        max_lag = (k + 1 - *next) > max_lag ? (k + 1 - *next) : max_lag;
+    }
+    return max_lag;
+}
+
 /* Every sample comes back once, in order, h + L samples late; after
  * finish the rest comes back and then FNAV_END. */
 static void test_delay_and_flush(void **state)
@@ -300,19 +321,11 @@ static void test_delay_and_flush(void **state)
     fnav_stance_config_t c = fnav_stance_config_default;
     double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0, 0, 0 };
     fnav_stance_out_t o;
-    long k, next = 0, max_lag = 0;
+    long next = 0, max_lag;
     (void)state;
     c.rate_hz = FNAV_R(200.0);
     assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
-    for (k = 0; k < 100; k++) {
-        fnav_sample_t s = sample(k, 200.0, f, w);
-        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
-        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
-            assert_int_equal((long)o.sample.seq, next);
-            next++;
-        }
-        max_lag = (k + 1 - next) > max_lag ? (k + 1 - next) : max_lag;
-    }
+    max_lag = still_delay(&st, &next);
     /* h = 2 (W = 5) plus L = 3 (min_zupt 20 ms = 4 samples) */
     assert_int_equal(max_lag, 5);
     assert_int_equal(fnav_stance_pending(&st), 5);
@@ -1269,6 +1282,18 @@ typedef struct {
 } zc_cycle_t;
 
 #define ZC_MAX_CYCLES 12
+
+/* n cycles alike: stance, swing, and a still gap in the swing. */
+static void zc_fill(zc_cycle_t *cyc, int n, int stance_n, int swing_n, int gap_at, int gap_n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        cyc[i].stance_n = stance_n;
+        cyc[i].swing_n = swing_n;
+        cyc[i].gap_at = gap_at;
+        cyc[i].gap_n = gap_n;
+    }
+}
 #define ZC_MAX_SAMPLES 12000
 /* More dips per swing: g_zc_dips gaps, each 30 samples after the one
  * before (test_zupt_cycle_lock_in; 1 elsewhere). */
@@ -1352,12 +1377,7 @@ static void test_zupt_cycle_slow_gait(void **state)
     int dip[6], req[6], lag, i;
     long strides;
     (void)state;
-    for (i = 0; i < 6; i++) {
-        cyc[i].stance_n = 240;
-        cyc[i].swing_n = 240;
-        cyc[i].gap_at = 180;
-        cyc[i].gap_n = 8;
-    }
+    zc_fill(cyc, 6, 240, 240, 180, 8);
     zc_run(FNAV_R(0.0), cyc, 6, dip, req, &strides, &lag);
     assert_int_equal(lag, 3);
     assert_int_equal(strides, 6);
@@ -1411,12 +1431,7 @@ static void test_zupt_cycle_fast_gait(void **state)
     int dip[8], dip0[8], req[8], lag, i;
     long strides;
     (void)state;
-    for (i = 0; i < 8; i++) {
-        cyc[i].stance_n = 40;
-        cyc[i].swing_n = 80;
-        cyc[i].gap_at = 60;
-        cyc[i].gap_n = 6;
-    }
+    zc_fill(cyc, 8, 40, 80, 60, 6);
     zc_run(FNAV_R(0.0), cyc, 8, dip0, req, &strides, &lag);
     assert_int_equal(strides, 8);
     zc_run(FNAV_R(0.025), cyc, 8, dip, req, &strides, &lag);
@@ -1440,12 +1455,7 @@ static void test_zupt_cycle_stand_resets(void **state)
     int dip[8], req[8], lag, i;
     long strides;
     (void)state;
-    for (i = 0; i < 8; i++) {
-        cyc[i].stance_n = 240;
-        cyc[i].swing_n = 240;
-        cyc[i].gap_at = 180;
-        cyc[i].gap_n = 8;
-    }
+    zc_fill(cyc, 8, 240, 240, 180, 8);
     cyc[4].stance_n = 1000; /* a stand of 5 s: the cycle into swing 4 is 6.2 s */
     zc_run(FNAV_R(0.025), cyc, 8, dip, req, &strides, &lag);
     assert_int_equal(strides, 8);
@@ -1523,12 +1533,7 @@ static void test_zupt_cycle_lock_in(void **state)
      * not bind and every dip is rejected from the second swing; with F = 0
      * every one is a ZUPT. A fourth dip would push the stance out (the cap
      * falls to the floor, 4, and that dip passes). */
-    for (i = 0; i < 6; i++) {
-        cyc[i].stance_n = 240;
-        cyc[i].swing_n = 240;
-        cyc[i].gap_at = 100;
-        cyc[i].gap_n = 8;
-    }
+    zc_fill(cyc, 6, 240, 240, 100, 8);
     g_zc_dips = FNAV_STANCE_RAW_RUNS;
     zc_run(FNAV_R(0.0), cyc, 6, dip, req, &strides, &lag);
     for (i = 0; i < 6; i++) {
@@ -1557,21 +1562,12 @@ static void test_zupt_cycle_latency(void **state)
     fnav_stance_t st;
     fnav_stance_config_t c = fnav_stance_config_default;
     const double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
-    fnav_stance_out_t o;
-    long k, next = 0, max_lag = 0;
+    long next = 0, max_lag;
     (void)state;
     c.rate_hz = FNAV_R(200.0);
     c.min_zupt_cycle = FNAV_R(0.025);
     assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
-    for (k = 0; k < 100; k++) {
-        fnav_sample_t s = sample(k, 200.0, f, w);
-        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
-        while (fnav_stance_pop(&st, &o) == FNAV_OK) {
-            assert_int_equal((long)o.sample.seq, next);
-            next++;
-        }
-        max_lag = (k + 1 - next) > max_lag ? (k + 1 - next) : max_lag;
-    }
+    max_lag = still_delay(&st, &next);
     assert_int_equal(max_lag, 2 + 14);
     assert_int_equal(fnav_stance_pending(&st), 2 + 14);
     assert_int_equal(st.n_min_zupt, 4);
