@@ -228,7 +228,7 @@ typedef struct {
     long fw_fill, fw_len;  /**< samples in it, samples per block */
     fnav_real_t margin_ratio; /**< 10^margin_dec */
     /* segmentation */
-    signed char seg;    /**< 1 stance, 0 swing */
+    unsigned char seg;  /**< 1 stance, 0 swing */
     signed char run_raw; /**< raw decision of the current run (-1 before the first) */
     unsigned char cyc_n;      /**< min_zupt_cycle: cycles in cyc_run (bits 0-1: 0-3); bit 2: a
                                    swing start is known */
