@@ -171,7 +171,7 @@ typedef struct {
         FNAV_R(0.05),                /* min_stance_s, s */                                                         \
         FNAV_R(0.25),                /* min_swing_s, s */                                                          \
         FNAV_R(0.3),                 /* event_window_s, s */                                                       \
-        FNAV_R(0.0)                  /* min_zupt_cycle: off (docs/navigation.md, "Cycle-scaled shortest run") */    \
+        FNAV_R(0.025)                /* min_zupt_cycle (docs/navigation.md, "Cycle-scaled shortest run") */    \
     }
 
 /** Defaults (see each field). */
