@@ -1175,6 +1175,9 @@ if [ -n "$D" ]; then
         if grep -q "$s" "$T/results.md"; then pass "results.md has $s"; else fail "results.md lacks $s"; fi
     done
     if head -5 "$T/results.md" | grep -q "harness eval"; then pass "results.md names its command"; else fail "results.md command"; fi
+    # the configuration names the shortest ZUPT run, which moves every walk's figures (since 2026-12-01)
+    if head -5 "$T/results.md" | grep -q "landing settling state on, shortest ZUPT run 20 ms or \`min_zupt_cycle\` 0.025 of the gait cycle if longer"; then
+        pass "results.md's configuration names the cycle-scaled shortest ZUPT run"; else fail "results.md configuration: $(sed -n 4p "$T/results.md")"; fi
     # the figures: img/ beside results.md, each linked from it, a PNG
     # (gnuplot is a dependency: scripts/bootstrap.sh)
     ok=1
