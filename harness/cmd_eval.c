@@ -1680,7 +1680,7 @@ int hx_cmd_eval(int argc, char **argv)
     hx_args_t a;
     hx_nav_opts_t o;
     ev_t ev;
-    char err[HX_ERR_SIZE], cmdline[1024];
+    char err[HX_ERR_SIZE], cmdline[1024], zupt_run[96];
     const char *out_path, *json_path, *data;
     closure_t gx2, gx2_200, gx2_100;
     double xs = (double)NAN, xl = (double)NAN; /* the vendor-figure walks' 3-D closure, m */
@@ -1877,16 +1877,25 @@ int hx_cmd_eval(int argc, char **argv)
     ar1 = ev.cfg;
     ar1.bias_model = FNAV_BIAS_AR1;
 
+    /* the shortest ZUPT run: fixed, or scaled with the gait cycle (the
+     * default since 2026-12-01; docs/navigation.md, "Cycle-scaled shortest
+     * run"), which moves every walk's figures */
+    if (ev.cfg.stance.min_zupt_cycle > FNAV_R(0.0)) {
+        snprintf(zupt_run, sizeof zupt_run, "%g ms or `min_zupt_cycle` %g of the gait cycle if longer",
+                 1e3 * (double)ev.cfg.stance.min_zupt_s, (double)ev.cfg.stance.min_zupt_cycle);
+    } else {
+        snprintf(zupt_run, sizeof zupt_run, "%g ms (`min_zupt_cycle` 0)", 1e3 * (double)ev.cfg.stance.min_zupt_s);
+    }
     fprintf(ev.md, "# footnav results\n\n");
     fprintf(ev.md, "Written by `%s` (float%s build). Every number below comes from that command;\n"
                    "rerun it to reproduce them. Data: `%s` (MANIFEST.md). Configuration: profile `%s`, "
-                   "bias model `%s`, detector `%s`%s, lever states %s, landing settling state %s "
-                   "(docs/navigation.md).\n\n",
+                   "bias model `%s`, detector `%s`%s, lever states %s, landing settling state %s, "
+                   "shortest ZUPT run %s (docs/navigation.md).\n\n",
             cmdline, FNAV_USE_DOUBLE ? "64" : "32", ev.data, ev.cfg.profile.name,
             ev.cfg.bias_model == FNAV_BIAS_AR1 ? "ar1" : "off",
             ev.cfg.stance.detector == FNAV_DETECTOR_SHOE ? "shoe" : "threshold",
             ev.cfg.stance.adaptive ? " (adaptive threshold)" : "", ev.cfg.lever ? "on" : "off",
-            ev.cfg.settle ? "on" : "off");
+            ev.cfg.settle ? "on" : "off", zupt_run);
 
     fprintf(ev.md, "## openshoe_gx2: return to start (closed loops, 250 Hz)\n\n"
                    "Error of the last stance mid-point from the first, as a fraction of the step-to-step path "

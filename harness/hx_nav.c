@@ -1464,6 +1464,52 @@ int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, doubl
     return rc;
 }
 
+/* The gait cycles of the frames kept, s, in order (*k of them; NULL with
+ * *k = 0 when there are none to keep or memory runs out; the caller frees):
+ * from one onset of the foot's motion to the next (the detector's stance
+ * flag, over every frame: a compressed time axis shows before the alignment
+ * too), counting a motion that lasts HX_NAV_CYCLE_MOTION_S or more: the
+ * strides would not do, since a swing compressed below min_swing_s makes
+ * none. A stance shorter than HX_NAV_CYCLE_MOTION_S ends no motion: a slow
+ * walk's swing broken by a 15 ms stance counted as two cycles, 0.39 s of
+ * 2 s (the review of 2026-11-30). */
+static double *cycle_intervals(const hx_traj_t *t, size_t *k)
+{
+    double *iv = t->n > 0u ? (double *)malloc((t->n / 2u + 1u) * sizeof *iv) : NULL;
+    size_t i, run0 = 0, still0 = 0;
+    int64_t onset = 0;
+    int have = 0, moving = 0, pause = 0;
+    *k = 0;
+    for (i = 0; iv != NULL && i <= t->n; i++) {
+        const int still = i == t->n || (t->f[i].flags & FNAV_FRAME_STANCE) != 0u;
+        if (!still) {
+            if (!moving) {
+                moving = 1;
+                run0 = i;
+            }
+            pause = 0;
+        } else if (moving) {
+            if (!pause) {
+                pause = 1;
+                still0 = i;
+            }
+            if (i < t->n && 1e-9 * (double)(t->f[i].t_ns - t->f[still0].t_ns) < HX_NAV_CYCLE_MOTION_S) {
+                continue; /* perhaps a blip in the swing */
+            }
+            moving = 0;
+            pause = 0;
+            if (1e-9 * (double)(t->f[still0 - 1u].t_ns - t->f[run0].t_ns) >= HX_NAV_CYCLE_MOTION_S) {
+                if (have && *k < t->n / 2u + 1u) {
+                    iv[(*k)++] = 1e-9 * (double)(t->f[run0].t_ns - onset);
+                }
+                onset = t->f[run0].t_ns;
+                have = 1;
+            }
+        }
+    }
+    return iv;
+}
+
 int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_rate, const fnav_nav_config_t *cfg,
                   double rate_hz, FILE *csv, hx_traj_t *traj, unsigned flags, char *err, size_t err_size)
 {
@@ -1696,17 +1742,30 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                     "FNAV_STANCE_MAX_WINDOW (docs/navigation.md, \"Stance detector\")",
                     path, fs, FNAV_STANCE_MAX_WINDOW, what, advice);
         }
-        if ((cut & FNAV_STANCE_CUT_ZUPT_CYCLE) != 0u) {
+        if ((cut & FNAV_STANCE_CUT_ZUPT_CYCLE) != 0u && traj != NULL) {
             /* min_zupt_cycle: the look-ahead is fixed for the longest cycle
-             * (FNAV_STANCE_CYCLE_LAG_S); the ring caps it at lag + 1 samples */
+             * (FNAV_STANCE_CYCLE_LAG_S); the ring caps it at lag + 1
+             * samples, which binds for cycles over run_max / (F fs) only:
+             * said when the log has such cycles. Until 2026-12-01 it was
+             * said at every rate that cuts, whatever the gait (the 820 Hz
+             * walk, cycles of 1.0 s, when 0.025 became the default) */
             const double run_max = (double)(nav.stance.lag + 1);
-            hx_warn(cmd,
-                    "%s: at %.0f Hz the stance detector's ring of %d samples caps the cycle-scaled ZUPT run at "
-                    "%.1f ms (min_zupt_cycle %g asks up to %.1f ms): gait cycles over %.2f s get the cap "
-                    "(docs/navigation.md, \"Stance detector\")",
-                    path, fs, FNAV_STANCE_MAX_WINDOW, 1e3 * run_max / fs, (double)cfg->stance.min_zupt_cycle,
-                    1e3 * (double)cfg->stance.min_zupt_cycle * (double)FNAV_STANCE_CYCLE_LAG_S,
-                    run_max / ((double)cfg->stance.min_zupt_cycle * fs));
+            const double cyc_max = run_max / ((double)cfg->stance.min_zupt_cycle * fs);
+            size_t k = 0, i, over = 0;
+            double *iv = cycle_intervals(traj, &k);
+            for (i = 0; i < k; i++) {
+                over += iv[i] > cyc_max;
+            }
+            free(iv);
+            if (over > 0u) {
+                hx_warn(cmd,
+                        "%s: at %.0f Hz the stance detector's ring of %d samples caps the cycle-scaled ZUPT run at "
+                        "%.1f ms (min_zupt_cycle %g asks up to %.1f ms): gait cycles over %.2f s get the cap, "
+                        "%lu of the log's %lu (docs/navigation.md, \"Stance detector\")",
+                        path, fs, FNAV_STANCE_MAX_WINDOW, 1e3 * run_max / fs, (double)cfg->stance.min_zupt_cycle,
+                        1e3 * (double)cfg->stance.min_zupt_cycle * (double)FNAV_STANCE_CYCLE_LAG_S, cyc_max,
+                        (unsigned long)over, (unsigned long)k);
+            }
         }
     }
     if ((flags & HX_REPLAY_EVENTS) && nav.stance.rate_hz > FNAV_R(0.0)) {
@@ -1991,45 +2050,8 @@ void hx_nav_summarize(const hx_traj_t *t, hx_nav_summary_t *s)
         }
     }
     {
-        /* the median gait cycle, from one onset of the foot's motion to the
-         * next (the detector's stance flag, over every frame: a compressed
-         * time axis shows before the alignment too), counting a motion that
-         * lasts HX_NAV_CYCLE_MOTION_S or more: the strides would not do,
-         * since a swing compressed below min_swing_s makes none. A stance
-         * shorter than HX_NAV_CYCLE_MOTION_S ends no motion: a slow walk's
-         * swing broken by a 15 ms stance counted as two cycles, 0.39 s of
-         * 2 s (the review of 2026-11-30) */
-        double *iv = (double *)malloc((t->n / 2u + 1u) * sizeof *iv);
-        size_t k = 0, run0 = 0, still0 = 0;
-        int64_t onset = 0;
-        int have = 0, moving = 0, pause = 0;
-        for (i = 0; iv != NULL && i <= t->n; i++) {
-            const int still = i == t->n || (t->f[i].flags & FNAV_FRAME_STANCE) != 0u;
-            if (!still) {
-                if (!moving) {
-                    moving = 1;
-                    run0 = i;
-                }
-                pause = 0;
-            } else if (moving) {
-                if (!pause) {
-                    pause = 1;
-                    still0 = i;
-                }
-                if (i < t->n && 1e-9 * (double)(t->f[i].t_ns - t->f[still0].t_ns) < HX_NAV_CYCLE_MOTION_S) {
-                    continue; /* perhaps a blip in the swing */
-                }
-                moving = 0;
-                pause = 0;
-                if (1e-9 * (double)(t->f[still0 - 1u].t_ns - t->f[run0].t_ns) >= HX_NAV_CYCLE_MOTION_S) {
-                    if (have && k < t->n / 2u + 1u) {
-                        iv[k++] = 1e-9 * (double)(t->f[run0].t_ns - onset);
-                    }
-                    onset = t->f[run0].t_ns;
-                    have = 1;
-                }
-            }
-        }
+        size_t k = 0;
+        double *iv = cycle_intervals(t, &k);
         if (k >= HX_NAV_STRIDE_MIN_N) {
             qsort(iv, k, sizeof *iv, hx_cmp_double);
             s->median_stride_s = k % 2u ? iv[k / 2u] : 0.5 * (iv[k / 2u - 1u] + iv[k / 2u]);

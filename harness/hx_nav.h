@@ -390,16 +390,16 @@ int hx_nav_strides_too_short(const hx_nav_summary_t *s);
  *  HX_NAV_STRIDE_MIN_N cycles or more) above HX_NAV_SLOW_CYCLE_S, a cadence
  *  below 70 steps/min. Real walks played slower (scripts/probe_slow.py)
  *  lost 2-33 % of their length at 53-68 steps/min and kept it from 71-75
- *  up, with the default (min_zupt_cycle 0): in late swing
+ *  up, with min_zupt_cycle 0 (the default until 2026-12-01): in late swing
  *  the foot's slowed deceleration brings |f| near g, the statistic dips
  *  under the threshold for 20-32 ms, longer than the shortest ZUPT run, and
  *  the ZUPT zeroes a swing's velocity. HX_NAV_SLOW_MIN_ZUPT_S (as --param
  *  min_zupt_s) cured those copies but breaks a jogger, whose stances are
  *  shorter (footprint walk 35: 2.67 -> 80.74 %); a shortest run scaled with
- *  the gait cycle (--param min_zupt_cycle=0.025) cures them too (2.5 % or
- *  less) and keeps walk 35 at its own rate; it is not the default (walk 35
- *  at 100 Hz locked in, docs/navigation.md). docs/harness.md,
- *  "Slow walking, real walks played slower". */
+ *  the gait cycle, min_zupt_cycle 0.025, the default since 2026-12-01 (with
+ *  the lock-in guard that keeps walk 35 at 100 Hz from locking in,
+ *  docs/navigation.md), cures them too (2.5 % or less) and keeps walk 35.
+ *  docs/harness.md, "Slow walking, real walks played slower". */
 #define HX_NAV_SLOW_CYCLE_S (120.0 / 70.0)
 #define HX_NAV_SLOW_MIN_ZUPT_S 0.05
 /** The min_zupt_cycle from which the slow-gait note says the shortest ZUPT

@@ -19,6 +19,7 @@ static uint32_t g_imu_next;           /* sample counter of the fake IMU */
 static int g_imu_absent;
 static long g_imu_fifo;               /* samples left in the fake IMU's FIFO (-1: endless) */
 static int g_imu_still;               /* a sensor lying still (the filter aligns) */
+static int64_t g_period_ns;           /* sample interval of the fake IMU's stamps */
 static uint8_t g_link[1 << 17];       /* everything sent */
 static size_t g_link_n;
 static int g_busy_every;              /* refuse every N-th frame (0: never) */
@@ -29,7 +30,7 @@ static fnav_sample_t make_sample(uint32_t k)
     fnav_sample_t s;
     int i;
     memset(&s, 0, sizeof s);
-    s.t_ns = (int64_t)k * 2500000;
+    s.t_ns = (int64_t)k * g_period_ns;
     s.seq = k;
     s.flags = FNAV_SAMPLE_HAS_SEQ;
     if (g_imu_still) {
@@ -77,6 +78,7 @@ static void reset_board(void)
     g_imu_absent = 0;
     g_imu_fifo = -1;
     g_imu_still = 0;
+    g_period_ns = 2500000; /* 400 Hz, the app's default rate */
     g_link_n = 0;
     g_busy_every = 0;
     g_writes = 0;
@@ -196,9 +198,14 @@ static void test_isr_to_frames(void **state)
 
 /* Every frame the filter releases is an output, also when one sample
  * releases several: with the detector's rate estimated (the default), the
- * first 33 samples' frames come out together. The app counted one output
- * per sample and never sent the others (a review, 2026-11-29: 21 of the
- * walk slice's first frames). Counted against the filter driven directly. */
+ * first 33 samples' frames come out together, less the detector's delay.
+ * The app counted one output per sample and never sent the others (a
+ * review, 2026-11-29: 21 of the walk slice's first frames). Counted against
+ * the filter driven directly. At 200 Hz: at the app's 400 Hz the host
+ * build's detector delay (its ring of 64 lets min_zupt_cycle's look-ahead
+ * reach 29 samples, the default since 2026-12-01) is 34 samples, longer
+ * than the 33, and no sample releases several; the firmware's ring of 24
+ * caps it at 22. */
 static void test_every_frame_is_output(void **state)
 {
     static fnav_cm_app_t app;
@@ -207,13 +214,15 @@ static void test_every_frame_is_output(void **state)
     fnav_cm_app_config_t cfg = fnav_cm_app_config_default;
     fnav_nav_frame_t fr;
     uint32_t i, n_ref = 0, n_aligned = 0, burst = 0;
-    const uint32_t n = 4000; /* 10 s at 400 Hz: aligns after max_still_s (5 s) */
+    const uint32_t n = 2000; /* 10 s at 200 Hz: aligns after max_still_s (5 s) */
     (void)state;
     if (!(fnav_cm_est_built() & 1u)) {
         skip();
     }
     reset_board();
     g_imu_still = 1;
+    g_period_ns = 5000000;
+    cfg.rate_hz = FNAV_R(200.0);
     assert_int_equal(fnav_cm_est_init(&ref, cfg.rate_hz, cfg.nav_rate_hz), FNAV_OK);
     for (i = 0; i < n; i++) {
         fnav_sample_t s = make_sample(i);
@@ -227,7 +236,7 @@ static void test_every_frame_is_output(void **state)
         burst = got > burst ? got : burst;
     }
     assert_true(burst > 1u);       /* the case: one sample, several frames */
-    assert_true(n_aligned > 1000u); /* and the filter navigates */
+    assert_true(n_aligned > 500u); /* and the filter navigates: over half of the 5 s after the alignment */
 
     assert_int_equal(fnav_cm_app_init(&app, &cfg), FNAV_OK);
     for (i = 0; i < n; i++) {

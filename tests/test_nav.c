@@ -341,12 +341,14 @@ static void test_push_after_finish(void **state)
     assert_int_equal(nav.stats.time_back, 0);
     assert_int_equal(nav.health & (FNAV_HEALTH_NANINF | FNAV_HEALTH_RANGE | FNAV_HEALTH_TIME_BACK), 0u);
     assert_memory_equal(&nav, &copy, sizeof nav);
-    /* the frames held back by the detector are still all there */
+    /* the frames held back by the detector are still all there: h 2 + lag
+     * 14 at 200 Hz (fnav_nav.h, "Latency"; 5 until min_zupt_cycle became
+     * 0.025 by default, 2026-12-01) */
     k = 0;
     while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
         k++;
     }
-    assert_int_equal(k, 5);
+    assert_int_equal(k, 16);
     assert_int_equal(nav.stats.frames, 100);
 }
 
@@ -445,13 +447,15 @@ static void test_step(void **state)
         fnav_status_t st = fnav_nav_step(&nav, &s, &fr);
         if (st == FNAV_OK) {
             ok++;
-            /* latency: W = 5 (h = 2) plus the 4-sample confirmation (L = 3) */
-            assert_int_equal((long)fr.seq, k - 5);
+            /* latency: W = 5 (h = 2) plus the confirmation look-ahead,
+             * fixed by min_zupt_cycle 0.025 for a 3 s cycle: L =
+             * round(0.025 x 3 x 200) - 1 = 14 (fnav_stance.h) */
+            assert_int_equal((long)fr.seq, k - 16);
         } else {
             assert_int_equal(st, FNAV_AGAIN);
         }
     }
-    assert_int_equal(ok, 95);
+    assert_int_equal(ok, 84);
 }
 
 /* The port loop produces the same frames as push/pop by hand. */
@@ -1504,17 +1508,19 @@ static fnav_nav_frame_t end_still_run(fnav_nav_t *nav, long n, long *pre, long *
  * 40 of them (0.195 s). Now the held-back samples go on to the alignment,
  * which completes at the first with which its still period qualifies (the
  * frames after it are navigated, as after an alignment at max_still_s).
- * With enough stillness before the held-back samples (48) the alignment is
- * as it was: on the samples before them, all held-back frames navigated;
- * with 38 (0.185 s) nothing aligns. */
+ * With enough stillness before the held-back samples (43 + held) the
+ * alignment is as it was: on the samples before them, all held-back frames
+ * navigated; with 38 (0.185 s) nothing aligns. (Until min_zupt_cycle
+ * became 0.025 by default, 2026-12-01, 5 were held back: 44 and 48.) */
 static void test_align_at_end(void **state)
 {
     static fnav_nav_t nav;
     fnav_nav_frame_t fr;
     long pre, run, first, zupts;
-    const long held = 5; /* h 2 + lag 3 with the defaults at 200 Hz (fnav_nav.h, "Latency") */
+    /* h 2 + lag 14 with the defaults at 200 Hz (fnav_nav.h, "Latency") */
+    const long held = 16;
     (void)state;
-    fr = end_still_run(&nav, 44, &pre, &run, &first, &zupts);
+    fr = end_still_run(&nav, 39 + held, &pre, &run, &first, &zupts);
     assert_int_equal(run - pre, held);
     assert_true(nav.aligned);
     assert_int_equal(nav.health & FNAV_HEALTH_NOT_ALIGNED, 0u);
@@ -1539,7 +1545,7 @@ static void test_align_at_end(void **state)
 
     /* enough before the held-back samples: aligned at fnav_nav_finish on
      * those popped before it, every held-back frame navigated */
-    fr = end_still_run(&nav, 48, &pre, &run, &first, &zupts);
+    fr = end_still_run(&nav, 43 + held, &pre, &run, &first, &zupts);
     assert_int_equal(run - pre, held);
     assert_true(nav.aligned);
     assert_int_equal(nav.align.result.samples, pre);

@@ -120,7 +120,7 @@ static void test_config(void **state)
         assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
         /* a fraction of the gait cycle: above 1 is no fraction */
         c = fnav_stance_config_default;
-        assert_true(c.min_zupt_cycle == FNAV_R(0.0)); /* off by default */
+        assert_true(c.min_zupt_cycle == FNAV_R(0.025)); /* on by default (off until 2026-12-01) */
         c.min_zupt_cycle = FNAV_R(1.0);
         assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
         c.min_zupt_cycle = FNAV_R(1.01);
@@ -244,7 +244,7 @@ static void test_shoe_statistic(void **state)
     fnav_stance_t st;
     fnav_stance_config_t c = fnav_stance_config_default;
     double f[64][3], w[64][3];
-    int k, i, n = 40, got = 0;
+    int k, i, n = 56, got = 0; /* 40 popped while pushing: 16 held back (h + L) */
     fnav_stance_out_t o;
     (void)state;
     c.rate_hz = FNAV_R(200.0);
@@ -325,10 +325,21 @@ static void test_delay_and_flush(void **state)
     (void)state;
     c.rate_hz = FNAV_R(200.0);
     assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    /* without the cycle-scaled run: h = 2 (W = 5) plus L = 3 (min_zupt 20
+     * ms = 4 samples) */
+    c.min_zupt_cycle = FNAV_R(0.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
     max_lag = still_delay(&st, &next);
-    /* h = 2 (W = 5) plus L = 3 (min_zupt 20 ms = 4 samples) */
     assert_int_equal(max_lag, 5);
     assert_int_equal(fnav_stance_pending(&st), 5);
+    /* the default, min_zupt_cycle 0.025: L fixed for a 3 s cycle,
+     * round(0.025 x 3 x 200) - 1 = 14, so h + L = 16 */
+    c.min_zupt_cycle = fnav_stance_config_default.min_zupt_cycle;
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    next = 0;
+    max_lag = still_delay(&st, &next);
+    assert_int_equal(max_lag, 16);
+    assert_int_equal(fnav_stance_pending(&st), 16);
     fnav_stance_finish(&st);
     {
         fnav_sample_t s = sample(100, 200.0, f, w);
@@ -1249,11 +1260,14 @@ static void test_foot_strike_time_jump(void **state)
 
 /* fnav_stance_cut: 0 until the rate is known; at 200 Hz nothing is cut;
  * at 2 kHz the shortest ZUPT run (19 of 20 ms: half window 25 + 40 + 1 > 64),
- * at 4 kHz the window too (63 of 101 samples) with the default ring of 64 */
+ * at 4 kHz the window too (63 of 101 samples) with the default ring of 64;
+ * at both, the default min_zupt_cycle's (0.025) run for a 3 s cycle (150 and
+ * 300 samples) too */
 static void test_cut_durations(void **state)
 {
     static const double rates[3] = { 200.0, 2000.0, 4000.0 };
-    const unsigned want[3] = { 0u, FNAV_STANCE_CUT_MIN_ZUPT, FNAV_STANCE_CUT_WINDOW | FNAV_STANCE_CUT_MIN_ZUPT };
+    const unsigned want[3] = { 0u, FNAV_STANCE_CUT_MIN_ZUPT | FNAV_STANCE_CUT_ZUPT_CYCLE,
+                               FNAV_STANCE_CUT_WINDOW | FNAV_STANCE_CUT_MIN_ZUPT | FNAV_STANCE_CUT_ZUPT_CYCLE };
     int r;
     (void)state;
     for (r = 0; r < 3; r++) {
@@ -1610,7 +1624,7 @@ static void test_zero_specific_force(void **state)
     c.rate_hz = FNAV_R(200.0);
     c.adaptive = 0;
     assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
-    for (k = 0; k < 40; k++) {
+    for (k = 0; k < 56; k++) { /* 40 popped: 16 held back (h + L) */
         fnav_sample_t s = sample(k, 200.0, f, w);
         assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
         while (fnav_stance_pop(&st, &o) == FNAV_OK) {

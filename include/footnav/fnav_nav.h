@@ -52,11 +52,14 @@
  *
  * Latency: the SHOE window is centred, so a sample's statistic is known h =
  * (W - 1) / 2 samples after it, and the stance decision also waits for the
- * shortest ZUPT run to be confirmed (lag = n_min_zupt - 1): frames come out
- * h + lag samples after their sample (5 at 200 Hz with the defaults, 25 ms
- * window and 20 ms run: h 2, lag 3; fnav_stance.h; with stance.min_zupt_cycle > 0 the lag is fixed
- * for the longest cycle-scaled run: 14 at 200 Hz with 0.025, frames 16 samples late); when the rate is
- * estimated (rate_hz = 0) the first frame waits for 33 samples. Each frame carries its own sample's time.
+ * shortest ZUPT run to be confirmed: frames come out h + lag samples after
+ * their sample. With the defaults (25 ms window, stance.min_zupt_cycle 0.025
+ * since 2026-12-01) the lag is fixed for the longest cycle-scaled run: at
+ * 200 Hz h 2, lag 14, frames 16 samples (80 ms) late; fnav_stance.h. With
+ * stance.min_zupt_cycle 0 (the default until 2026-12-01) lag = n_min_zupt - 1:
+ * 5 samples (25 ms) at 200 Hz with the 20 ms run (h 2, lag 3). When the rate
+ * is estimated (rate_hz = 0) the first frame waits for 33 samples. Each frame
+ * carries its own sample's time.
  *
  * Timing: each sample's own dt is used. A repeated time stamp (dt = 0,
  * e.g. the duplicated rows of the NGIMU logs) is counted and produces a

@@ -18,7 +18,8 @@
  * samples; a raw stance must also last at least min_zupt_s (a single-sample
  * dip of T in mid-swing, when the foot's rotation reverses, must not zero a
  * velocity of metres per second), which needs L = min_zupt_s * rate - 1 more
- * samples of look-ahead. fnav_stance_push() stores each sample in a fixed
+ * samples of look-ahead (more with min_zupt_cycle, the default: below).
+ * fnav_stance_push() stores each sample in a fixed
  * ring inside the object and fnav_stance_pop() returns it, with its
  * decision, h + L samples later. Call pop until it says FNAV_AGAIN
  * after every push; after the last sample call fnav_stance_finish() and pop
@@ -45,8 +46,8 @@
  * stance minima rise, the threshold follows them one window later (so the
  * first running stances after a transition are missed: docs/navigation.md).
  *
- * Cycle-scaled shortest ZUPT run (min_zupt_cycle > 0; docs/navigation.md,
- * "Stance detector"): in a slow gait the statistic dips under the threshold
+ * Cycle-scaled shortest ZUPT run (min_zupt_cycle > 0, 0.025 by default since
+ * 2026-12-01; docs/navigation.md, "Stance detector"): in a slow gait the statistic dips under the threshold
  * for 20-32 ms in late swing, longer than min_zupt_s, and a ZUPT there
  * removes about 1 m/s (docs/harness.md, "Slow walking"). The shortest run
  * then becomes max(n(min_zupt_s), round(min_zupt_cycle * T * rate)) samples,
@@ -60,8 +61,9 @@
  * round(min_zupt_cycle * FNAV_STANCE_CYCLE_LAG_S * rate), fixes the
  * look-ahead L when the rate becomes known (capped by the ring as above,
  * FNAV_STANCE_CUT_ZUPT_CYCLE): the latency is fixed, h + L samples, and
- * grows with min_zupt_cycle (0.025 at 200 Hz: L = 14, 70 ms instead of 15 ms;
- * at 0 nothing changes: L = n(min_zupt_s) - 1, the same decisions).
+ * grows with min_zupt_cycle (the default 0.025 at 200 Hz: L = 14, 70 ms,
+ * h + L 80 ms; at 0, the default until 2026-12-01, L = n(min_zupt_s) - 1,
+ * 15 ms, h + L 25 ms, and the decisions without the scaling).
  *
  * Lock-in guard (min_zupt_cycle > 0): a gait whose stances are shorter than
  * the run a long cycle asked for (a jog after a slow start, a pause) would
@@ -123,8 +125,8 @@ typedef struct {
     fnav_real_t min_swing_s;    /**< segmentation: shortest swing, s (default 0.25) */
     fnav_real_t event_window_s; /**< gait-event search window, s (default 0.3) */
     fnav_real_t min_zupt_cycle; /**< shortest ZUPT run as a fraction of the recent gait cycle,
-                                     dimensionless (default 0: off; see "Cycle-scaled shortest
-                                     ZUPT run" above) */
+                                     dimensionless (default 0.025 since 2026-12-01; 0: off; see
+                                     "Cycle-scaled shortest ZUPT run" above) */
 } fnav_stance_config_t;
 
 /** Cycle-scaled ZUPT run: the look-ahead covers the run of a gait cycle this
@@ -171,7 +173,7 @@ typedef struct {
         FNAV_R(0.05),                /* min_stance_s, s */                                                         \
         FNAV_R(0.25),                /* min_swing_s, s */                                                          \
         FNAV_R(0.3),                 /* event_window_s, s */                                                       \
-        FNAV_R(0.0)                  /* min_zupt_cycle: off (docs/navigation.md, "Cycle-scaled shortest run") */    \
+        FNAV_R(0.025)                /* min_zupt_cycle (docs/navigation.md, "Cycle-scaled shortest run") */    \
     }
 
 /** Defaults (see each field). */

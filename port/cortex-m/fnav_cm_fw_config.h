@@ -29,7 +29,12 @@
  * to 960 Hz (the paper's lowest usable rates are 200-350 Hz). The ring also
  * holds the look-ahead of min_zupt_s (half window + min_zupt_s * rate + 1
  * samples must fit): above about 730 Hz the detector shortens min_zupt_s to
- * what fits (fnav_stance.c set_rate). */
+ * what fits (fnav_stance.c set_rate). The default cycle-scaled run
+ * (min_zupt_cycle 0.025 since 2026-12-01; 0, off, before) asks at 400 Hz
+ * for runs of up to 30 samples (look-ahead 29): the ring caps the look-ahead
+ * at 17, runs of 18 samples, 45 ms, reached for cycles over 1.8 s, and the
+ * navigator's latency is h + L = 22 samples, 55 ms (12, 30 ms, with
+ * min_zupt_cycle 0; docs/firmware.md). */
 #define FNAV_STANCE_MAX_WINDOW 24
 
 /* Foot-strike search history: 128 samples hold the default 0.3 s event

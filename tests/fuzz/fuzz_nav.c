@@ -1,9 +1,9 @@
 /* Fuzz target: the navigator stepped with arbitrary samples.
  *
  * Input: byte 0 selects options (bias model, lever, ZARU, threshold
- * detector, a still lead-in so that alignment happens, sample rate class,
- * the cycle-scaled shortest ZUPT run with its lock-in guard, since
- * 2026-12-01);
+ * detector, a still lead-in so that alignment happens, sample rate class;
+ * bit 7 turns the cycle-scaled shortest ZUPT run, with its lock-in guard,
+ * off: it is on by default since 2026-12-01, and bit 7 turned it on before);
  * then records of 13 bytes: a time code and six int16 values. Values map to
  * +-16 g and +-2000 deg/s except for special codes that inject NaN, +-Inf,
  * denormals, 1e30 and values just beyond a sensor's range; time codes give
@@ -74,7 +74,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     step_ns = steps[(opt >> 5) & 3u];
     if (opt & 128u) {
-        cfg.stance.min_zupt_cycle = FNAV_R(0.025); /* --param min_zupt_cycle=0.025 */
+        cfg.stance.min_zupt_cycle = FNAV_R(0.0); /* --param min_zupt_cycle=0 (0.025 by default) */
     }
     if (fnav_nav_init(&nav, &cfg) != FNAV_OK) {
         abort(); /* the default configuration must be valid */
