@@ -1602,6 +1602,25 @@ static void test_zupt_cycle_latency(void **state)
         assert_int_equal(fnav_stance_cut(&st), 0u);
     }
     assert_int_equal(st.n_min_zupt, 16); /* round(0.02 x 820) */
+    /* the latency, h + L, at 100 and 400 Hz (docs/navigation.md, "Data flow
+     * and latency"): 1 + 7 = 8 samples, 80 ms; 5 + 29 = 34, 85 ms, where the
+     * ring holds it (the firmware's ring of 24 caps L at 24 - 2 - 5 = 17:
+     * 22 samples) */
+    c.rate_hz = FNAV_R(100.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    {
+        fnav_sample_t s = sample(0, 100.0, f, w);
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+    }
+    assert_int_equal(st.half + st.lag, 1 + 7);
+    c.rate_hz = FNAV_R(400.0);
+    assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+    {
+        fnav_sample_t s = sample(0, 400.0, f, w);
+        assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+    }
+    assert_int_equal(st.half, 5);
+    assert_int_equal(st.lag, FNAV_STANCE_MAX_WINDOW - 2 - 5 < 29 ? FNAV_STANCE_MAX_WINDOW - 2 - 5 : 29);
 }
 
 /* Zero specific force (an IMU that outputs zeros before its first
