@@ -471,5 +471,31 @@ if csv_rect "$T/nl_$c.csv" "$first"; then
 else fail "$c --out with a line break in the log's name: $(head -c 200 "$T/nl_$c.csv")"; fi
 rm -f "$T/$NL"
 
+# --- the Welch and FFT core as the Cortex-M4F firmware builds them: float
+# arithmetic only. fnav_welch_init() summed the window (sum w, sum w^2, W_1)
+# in double, which on the single-precision FPU are soft-float calls: the only
+# double arithmetic in the firmware image, 1.9 KB of libgcc (__aeabi_dadd,
+# __aeabi_dmul, ...; the init review, 2026-12-01). Skipped without the
+# cross-compiler.
+ARMCC=${ARM_CC:-arm-none-eabi-gcc}
+ARMNM=${ARM_NM:-arm-none-eabi-nm}
+if command -v "$ARMCC" >/dev/null 2>&1 && command -v "$ARMNM" >/dev/null 2>&1; then
+    for s in fnav_welch fnav_fft; do
+        if ! "$ARMCC" -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard -Os -std=c99 -Iinclude \
+            -Iport/cortex-m -DFNAV_CONFIG_FILE='"fnav_cm_fw_config.h"' -c "src/$s.c" -o "$T/$s.o" 2>"$T/err"; then
+            fail "$s.c for the Cortex-M4F: $(head -c 300 "$T/err")"
+            continue
+        fi
+        dbl=$("$ARMNM" -u "$T/$s.o" | grep -E '__aeabi_(d[a-z0-9]+|f2d|i2d|ui2d|l2d|ul2d)$' | awk '{print $2}' | tr '\n' ' ')
+        if [ -z "$dbl" ]; then
+            pass "$s.c for the Cortex-M4F calls no soft-float double helper"
+        else
+            fail "$s.c for the Cortex-M4F calls soft-float double helpers: $dbl"
+        fi
+    done
+else
+    echo "skip: no $ARMCC (the core's Cortex-M4F objects)"
+fi
+
 if [ "$fails" -ne 0 ]; then echo "test_psd.sh: $fails failure(s)"; exit 1; fi
 echo "test_psd.sh: all passed"
