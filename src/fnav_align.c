@@ -49,8 +49,20 @@ fnav_status_t fnav_align_init(fnav_align_t *al, const fnav_align_config_t *cfg)
 
 fnav_status_t fnav_align_from_means(fnav_vec3_t f, fnav_vec3_t w, fnav_real_t g, fnav_align_result_t *out)
 {
-    fnav_real_t fn = fnav_vec3_norm(f);
+    fnav_real_t fn;
     fnav_real_t roll, pitch;
+    /* a public function (the harness's axes check calls it): until
+     * 2026-12-01 (a review) a NULL out crashed, g = 0 with f = 0 passed the
+     * test below (0 <= 0) and g = +Inf too (Inf <= Inf), returning OK with
+     * an accelerometer bias of NaN or Inf, and a NaN rate came back as the
+     * gyro bias with OK (test_align test_from_means_bad_args) */
+    if (out == NULL || !fnav_isfinite(g) || !(g > FNAV_R(0.0))) {
+        return FNAV_E_ARG;
+    }
+    if (!fnav_vec3_isfinite(w)) {
+        return FNAV_E_NANINF;
+    }
+    fn = fnav_vec3_norm(f);
     if (!(fnav_fabs(fn - g) <= FNAV_ALIGN_GRAVITY_TOL * g)) { /* NaN, zero and not at rest on the Earth */
         return FNAV_E_RANGE;
     }

@@ -449,9 +449,16 @@ uint32_t fnav_imuerr_internal_factor(const fnav_imuerr_config_t *cfg)
         return 1u;
     }
     if (cfg->mask[FNAV_EFFECT_ALIAS] != 0u) {
+        /* inside the catalogue's range before the conversion: NaN, a
+         * negative factor or one above 2^32 made it undefined behaviour
+         * (a review, 2026-12-01; test_imuerr test_catalogue_names_and_params) */
+        const fnav_effect_param_t *p = &k_alias[0];
+        if (!(cfg->alias.factor >= (fnav_real_t)p->lo && cfg->alias.factor <= (fnav_real_t)p->hi)) {
+            return 1u;
+        }
         return (uint32_t)(cfg->alias.factor + FNAV_R(0.5));
     }
-    return cfg->oversample;
+    return (cfg->oversample >= 1u && cfg->oversample <= 1024u) ? cfg->oversample : 1u;
 }
 
 /* ================================================================ model */

@@ -114,6 +114,42 @@ static void test_from_means(void **state)
     }
 }
 
+/* Bad arguments of fnav_align_from_means, a public function (the harness's
+ * axes check calls it directly): a NULL result is FNAV_E_ARG, not a crash;
+ * a gravity that is 0, negative, NaN or infinite is FNAV_E_ARG (before, 0
+ * with a zero force passed the |f| test, 0 <= 0.25 * 0, and returned OK with
+ * an accelerometer bias of 0 / 0 = NaN, and +Inf passed it, Inf <= Inf,
+ * with an infinite bias); a non-finite mean rate is FNAV_E_NANINF (it was
+ * returned as the gyro bias with OK). Nothing is written on an error. */
+static void test_from_means_bad_args(void **state)
+{
+    const fnav_vec3_t f = fnav_vec3(FNAV_R(0.1), FNAV_R(-0.2), FNAV_R(-9.8));
+    const fnav_vec3_t w = fnav_vec3(FNAV_R(0.001), FNAV_R(0.0), FNAV_R(0.0));
+    const fnav_real_t zero = FNAV_R(0.0);
+    const fnav_real_t bad_g[4] = { FNAV_R(0.0), FNAV_R(-9.8), zero / zero, FNAV_R(1.0) / zero };
+    fnav_align_result_t r, r0;
+    int i;
+    (void)state;
+    assert_int_equal(fnav_align_from_means(f, w, (fnav_real_t)k_g, NULL), FNAV_E_ARG);
+    memset(&r0, 0x5a, sizeof r0);
+    for (i = 0; i < 4; i++) {
+        r = r0;
+        assert_int_equal(fnav_align_from_means(fnav_vec3_zero(), w, bad_g[i], &r), FNAV_E_ARG);
+        assert_int_equal(fnav_align_from_means(f, w, bad_g[i], &r), FNAV_E_ARG);
+        assert_memory_equal(&r, &r0, sizeof r);
+    }
+    for (i = 0; i < 3; i++) {
+        fnav_vec3_t wb = w;
+        wb.v[i] = (i == 1) ? zero / zero : ((i == 0) ? FNAV_R(1.0) / zero : -FNAV_R(1.0) / zero);
+        r = r0;
+        assert_int_equal(fnav_align_from_means(f, wb, (fnav_real_t)k_g, &r), FNAV_E_NANINF);
+        assert_memory_equal(&r, &r0, sizeof r);
+    }
+    /* the same arguments with a good gravity and rate align */
+    assert_int_equal(fnav_align_from_means(f, w, (fnav_real_t)k_g, &r), FNAV_OK);
+    assert_true(fnav_isfinite(r.accel_bias_mps2.v[2]));
+}
+
 static fnav_sample_t still_sample(long k, double rate, double wobble)
 {
     fnav_sample_t s;
@@ -685,6 +721,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_config),
         cmocka_unit_test(test_from_means),
+        cmocka_unit_test(test_from_means_bad_args),
         cmocka_unit_test(test_still_period),
         cmocka_unit_test(test_max_duration),
         cmocka_unit_test(test_ratio_ends_period),

@@ -271,6 +271,31 @@ static void test_catalogue_names_and_params(void **state)
     }
     fnav_imuerr_effect_reset(NULL, FNAV_EFFECT_QUANT);
     assert_int_equal(fnav_imuerr_internal_factor(NULL), 1u);
+    /* a configuration fnav_imuerr_init refuses (a review, 2026-12-01): the
+     * alias factor was converted to uint32_t whatever it held, undefined
+     * behaviour for NaN, a negative value or one above 2^32 (x86 gave
+     * 0x80000000 or 0), and oversample 0 came back as 0, a factor a
+     * caller divides by; now 1, as for NULL */
+    {
+        const fnav_real_t zero = FNAV_R(0.0);
+        const fnav_real_t bad[5] = { zero / zero, FNAV_R(-5.0), FNAV_R(1e20), FNAV_R(1.0) / zero, FNAV_R(1.0) };
+        int k;
+        c = fnav_imuerr_config_default;
+        c.mask[FNAV_EFFECT_ALIAS] = FNAV_CH_ALL;
+        for (k = 0; k < 5; k++) {
+            c.alias.factor = bad[k];
+            assert_int_equal(fnav_imuerr_internal_factor(&c), 1u);
+        }
+        c.alias.factor = FNAV_R(1024.0);
+        assert_int_equal(fnav_imuerr_internal_factor(&c), 1024u);
+        c = fnav_imuerr_config_default;
+        c.oversample = 0u;
+        assert_int_equal(fnav_imuerr_internal_factor(&c), 1u);
+        c.oversample = 1025u;
+        assert_int_equal(fnav_imuerr_internal_factor(&c), 1u);
+        c.oversample = 1024u;
+        assert_int_equal(fnav_imuerr_internal_factor(&c), 1024u);
+    }
 }
 
 static void test_config_validation(void **state)

@@ -174,7 +174,9 @@ int fnav_align_renew(fnav_align_t *al, const fnav_sample_t *s, int still, fnav_r
 
 /** Compute an alignment from a mean specific force, mean rate and gravity
  *  (the formulas of the file comment). FNAV_E_RANGE if |f| is not finite or
- *  off gravity by more than FNAV_ALIGN_GRAVITY_TOL (zero among them). */
+ *  off gravity by more than FNAV_ALIGN_GRAVITY_TOL (zero among them);
+ *  FNAV_E_ARG for a NULL out or a gravity that is not finite and positive;
+ *  FNAV_E_NANINF for a non-finite rate. *out is written only on FNAV_OK. */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_from_means(fnav_vec3_t f_mean, fnav_vec3_t w_mean, fnav_real_t gravity_mps2,
                                                      fnav_align_result_t *out);
 

@@ -231,7 +231,9 @@ fnav_real_t fnav_imuerr_param_get(const fnav_imuerr_config_t *cfg, fnav_effect_i
 FNAV_WARN_UNUSED fnav_status_t fnav_imuerr_config_from_profile(fnav_imuerr_config_t *cfg, const fnav_profile_t *p);
 
 /** Internal rate factor of the signal stage: alias.factor when `alias` is on,
- *  else oversample. */
+ *  else oversample. 1 for NULL, an alias.factor outside [2, 1024] or not
+ *  finite, and an oversample outside 1 .. 1024 (fnav_imuerr_init refuses
+ *  those; a non-whole factor in range, refused too, is rounded). */
 uint32_t fnav_imuerr_internal_factor(const fnav_imuerr_config_t *cfg);
 
 /* ---------------------------------------------------------------- model */
