@@ -1278,16 +1278,31 @@ static int setup_text(hx_reader_t *r, double rate_hz)
             }
         } while (blank(r->line));
         {
-            /* "Acquisition frequency: 100 Hz", in any case, spaces around */
+            /* "Acquisition frequency: 100 Hz", in any case, spaces around:
+             * a decimal number and the unit Hz, nothing else. It was read
+             * with sscanf's %lf, which stops where it cannot go on:
+             * "100 kHz" and "100,5 Hz" read as 100 Hz, exit 0, every time
+             * off; and a rate of 1e-300 Hz failed at the second row as a
+             * counter out of range (the robustness hunt, 2026-12-01) */
             char head[64];
+            const char *num;
+            char *end = NULL;
             squeeze_line(r->line, head, sizeof head);
-            if (strncmp(head, "acquisitionfrequency:", 21) != 0 || sscanf(head + 21, "%lf", &fs) != 1) {
-                fs = 0.0;
+            num = head + 21;
+            if (strncmp(head, "acquisitionfrequency:", 21) == 0 && strpbrk(num, "xX") == NULL) {
+                fs = strtod(num, &end);
             }
-        }
-        if (!(fs > 0.0 && fs < 1.0e6)) {
-            set_err(r, "%s:%ld: expected 'Acquisition frequency: N Hz'", r->path, r->stats.lines);
-            return -1;
+            if (end == NULL || end == num || strcmp(end, "hz") != 0) {
+                const int comma = end != NULL && end != num && end[0] == ',' && isdigit((unsigned char)end[1]);
+                set_err(r, "%s:%ld: expected 'Acquisition frequency: N Hz', a number in Hz%s", r->path,
+                        r->stats.lines, comma ? DECIMAL_COMMA_HINT : "");
+                return -1;
+            }
+            if (!(fs >= 1.0e-3 && fs < 1.0e6)) {
+                set_err(r, "%s:%ld: expected 'Acquisition frequency: N Hz': %g Hz is outside [0.001, 1e+06)", r->path,
+                        r->stats.lines, fs);
+                return -1;
+            }
         }
         r->time_mode = TIME_COUNTER;
         r->rate_hz = rate_hz > 0.0 ? rate_hz : fs;

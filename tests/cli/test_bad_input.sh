@@ -29,5 +29,34 @@ else
     echo "skip the full-disk checks of sim (no /dev/full)"
 fi
 
+# --- ipol: the rate of line 1 ("Acquisition frequency: 100 Hz") is a number
+# and the unit Hz. Until 2026-12-01 it was read with sscanf's "%lf", which
+# stops at the first character it cannot use: "100 kHz" read as 100 Hz and
+# "100,5 Hz" as 100 Hz (exit 0, every time off), and a rate of 1e-300 Hz was
+# taken, to fail at the second row as "counter ('1.0') is not a whole number
+# in range".
+ipol() { # FILE RATE-TEXT: an ipol file of 300 still samples at 100 Hz under line 1 'Acquisition frequency: RATE-TEXT'
+    { printf 'Acquisition frequency: %s\n' "$2"
+      printf 'PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n'
+      awk 'BEGIN { for (i = 0; i < 300; i++) printf "%d.0\t0.01\t0.02\t9.81\t0.001\t0.002\t0.003\n", i }'; } >"$1"
+}
+ipol "$T/ok.txt" "100 Hz"
+expect_exit 0 "ipol: 'Acquisition frequency: 100 Hz'" "$H" info "$T/ok.txt" --from ipol
+expect_out "^rate        100.000 Hz (nominal)" "ipol: the stated 100 Hz read"
+ipol "$T/ok2.txt" "1e2hz"
+expect_exit 0 "ipol: 'Acquisition frequency: 1e2hz' (any case, blanks and exponent)" "$H" info "$T/ok2.txt" --from ipol
+expect_out "^rate        100.000 Hz (nominal)" "ipol: 1e2hz read as 100 Hz"
+for bad in "100 kHz" "100,5 Hz" "100" "100 Hz 50" "1e-300 Hz" "0 Hz" "1e6 Hz" "nan Hz" "Hz"; do
+    ipol "$T/bad.txt" "$bad"
+    expect_exit 1 "ipol: 'Acquisition frequency: $bad' refused" "$H" info "$T/bad.txt" --from ipol
+    expect_err "bad.txt:1: expected 'Acquisition frequency: N Hz'" "ipol: '$bad': line 1 named"
+done
+ipol "$T/comma.txt" "100,5 Hz"
+expect_exit 1 "ipol: a decimal comma in the rate" "$H" info "$T/comma.txt" --from ipol
+expect_err "a decimal comma" "ipol: the decimal comma said"
+ipol "$T/low.txt" "1e-300 Hz"
+expect_exit 1 "ipol: a rate of 1e-300 Hz" "$H" info "$T/low.txt" --from ipol
+expect_err "1e-300 Hz is outside \[0.001, 1e+06)" "ipol: the rate out of range said"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
