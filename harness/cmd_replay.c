@@ -164,7 +164,10 @@ int hx_cmd_replay(int argc, char **argv)
         hx_error("replay", "%s", err);
         exit_code = HX_EXIT_IO;
     } else if (rc == 1) {
-        hx_error("replay", "%s (frames before it were written)", err);
+        /* "frames before it were written" was said with none before it (a
+         * header without samples; the robustness hunt, 2026-12-01) */
+        hx_error("replay", "%s (%s)", err,
+                 traj.stats.frames > 0u ? "frames before it were written" : "no frame before it: the outputs hold none");
         exit_code = HX_EXIT_DATA;
         traj.input_complete = 0;
         snprintf(traj.input_error, sizeof traj.input_error, "%.*s", (int)sizeof traj.input_error - 1, err);

@@ -58,5 +58,17 @@ ipol "$T/low.txt" "1e-300 Hz"
 expect_exit 1 "ipol: a rate of 1e-300 Hz" "$H" info "$T/low.txt" --from ipol
 expect_err "1e-300 Hz is outside \[0.001, 1e+06)" "ipol: the rate out of range said"
 
+# --- replay, an input that stops before its first sample: the error said
+# "(frames before it were written)" with no frame before it (a header-only
+# CSV, a .bin header without records, a .bin whose first record is junk).
+printf 't,ax,ay,az,gx,gy,gz\n' >"$T/head.csv"
+expect_exit 1 "replay of a header without samples" "$H" replay "$T/head.csv" --quiet --out "$T/head_traj.csv"
+expect_err "head.csv: no samples (no frame before it: the outputs hold none)" "replay: no frame said for a log without samples"
+grep -q "frames before it were written" "$T/err" && fail "replay: 'frames before it were written' with none" \
+    || pass "replay: no claim of frames written before the error"
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,x,0,9.8,0,0,0\n' >"$T/one.csv"
+expect_exit 1 "replay of a log that stops after its first sample" "$H" replay "$T/one.csv" --quiet --out "$T/one_traj.csv"
+expect_err "one.csv:3: column 2 ('x') is not a number (frames before it were written)" "replay: frames before the error said"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
