@@ -105,6 +105,7 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
         hx_log_free(&res);
         return HX_EXIT_IO;
     }
+    hx_warn_gz_output("convert", a->pos[1], to);
     for (k = 0; k < (long)res.n; k++) {
         hx_log_sample(&res, (size_t)k, &s);
         if (!in_window(wd, s.t_ns)) {
@@ -194,6 +195,7 @@ int hx_cmd_convert(int argc, char **argv)
         hx_reader_close(r);
         return HX_EXIT_IO;
     }
+    hx_warn_gz_output("convert", a.pos[1], to);
     /* a long log shows progress (a day at 100 Hz took 11 s to CSV without
      * a word; the scale review, 2026-11-29) */
     hx_progress_start(&pr, "convert", 1.0);

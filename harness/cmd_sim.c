@@ -179,6 +179,7 @@ int hx_cmd_sim(int argc, char **argv)
         hx_motion_free(motion);
         return HX_EXIT_IO;
     }
+    hx_warn_gz_output("sim", out, HX_FMT_AUTO);
     if (truth != NULL && hx_same_file(truth, out)) {
         /* the same file under another name (--out x.bin --truth ./x.bin):
          * only now that the log exists can stat tell (the truth CSV was

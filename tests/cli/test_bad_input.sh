@@ -70,5 +70,23 @@ printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,x,0,9.8,0,0,0\n' >"$T/one.csv
 expect_exit 1 "replay of a log that stops after its first sample" "$H" replay "$T/one.csv" --quiet --out "$T/one_traj.csv"
 expect_err "one.csv:3: column 2 ('x') is not a number (frames before it were written)" "replay: frames before the error said"
 
+# --- an output named .gz: footnav writes no gzip. convert and sim wrote
+# OUT.csv.gz as plain CSV and OUT.bin.gz as plain CSV too (a name not ending
+# in .bin is CSV), exit 0 without a word: gzip -d then fails on it. Now a
+# warning says so (the file is still written as before, and every command
+# reads it by its content).
+expect_exit 0 "convert to x.csv.gz" "$H" convert vectors/walk.bin "$T/x.csv.gz"
+expect_err "^harness convert: warning: $T/x.csv.gz: written uncompressed (footnav writes no gzip" "convert: an uncompressed .gz said"
+expect_exit 0 "convert to x.bin.gz" "$H" convert vectors/walk.bin "$T/x.bin.gz"
+expect_err "^harness convert: warning: $T/x.bin.gz: written uncompressed, as CSV" "convert: a CSV named .bin.gz said"
+expect_exit 0 "convert to x.bin.gz --to bin" "$H" convert vectors/walk.bin "$T/y.bin.gz" --to bin
+expect_err "^harness convert: warning: $T/y.bin.gz: written uncompressed (footnav writes no gzip" "convert --to bin: an uncompressed .gz said"
+expect_exit 0 "info reads the uncompressed .bin.gz by its content" "$H" info "$T/y.bin.gz"
+expect_out "^format      bin" "info: the .bin.gz is a .bin"
+expect_exit 0 "sim to x.csv.gz" "$H" sim --duration 2 --out "$T/s.csv.gz"
+expect_err "^harness sim: warning: $T/s.csv.gz: written uncompressed (footnav writes no gzip" "sim: an uncompressed .gz said"
+expect_exit 0 "convert to x.csv: no .gz warning" "$H" convert vectors/walk.bin "$T/x.csv"
+grep -q "warning" "$T/err" && fail "convert to x.csv warned: $(cat "$T/err")" || pass "convert to x.csv: no warning"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
