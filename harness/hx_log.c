@@ -178,6 +178,20 @@ static void copy_str(char *dst, size_t size, const char *src)
     dst[n] = '\0';
 }
 
+/* Replaces the control characters of s (below 0x20, and DEL) with '?';
+ * returns how many there were. */
+static int printable(char *s)
+{
+    int n = 0;
+    for (; *s != '\0'; s++) {
+        if ((unsigned char)*s < 0x20u || (unsigned char)*s == 0x7fu) {
+            *s = '?';
+            n++;
+        }
+    }
+    return n;
+}
+
 /* ------------------------------------------------------------ parsing */
 
 static char *trim(char *s)
@@ -1160,6 +1174,9 @@ static int setup_mtmgr(hx_reader_t *r, double rate_hz)
                  r->mt.stated_hz, r->mt.stated_line);
     }
     snprintf(m->sensor, sizeof m->sensor, "Xsens %s", r->mt.product[0] != '\0' ? r->mt.product : "(MT Manager)");
+    if (printable(m->sensor) > 0) { /* an escape in the ProductCode reached the terminal, as a .bin's text */
+        add_warn(r, "%s: the ProductCode holds control characters (read as '?')", r->path);
+    }
     copy_str(m->axes, sizeof m->axes, "sensor axes");
     return 0;
 }
@@ -1791,6 +1808,7 @@ static int bin_fill(hx_reader_t *r, size_t need)
     return (r->len - r->pos >= need) ? 1 : 0;
 }
 
+
 static int setup_bin(hx_reader_t *r)
 {
     hx_bin_header_t h;
@@ -1817,6 +1835,16 @@ static int setup_bin(hx_reader_t *r)
     copy_str(r->meta.sensor, sizeof r->meta.sensor, h.sensor);
     copy_str(r->meta.source, sizeof r->meta.source, h.source);
     copy_str(r->meta.axes, sizeof r->meta.axes, h.axes);
+    {
+        /* text that reaches the reports, read as printable: a sensor name
+         * "x<LF>samples 1" forged a line of info's report, and an escape
+         * sequence reached the terminal (the robustness hunt, 2026-12-01) */
+        const int ctl = printable(r->meta.sensor) + printable(r->meta.source) + printable(r->meta.axes);
+        if (ctl > 0) {
+            add_warn(r, "%s: the header's text holds %d control character%s (read as '?')", r->path, ctl,
+                     ctl == 1 ? "" : "s");
+        }
+    }
     return 0;
 }
 

@@ -88,5 +88,26 @@ expect_err "^harness sim: warning: $T/s.csv.gz: written uncompressed (footnav wr
 expect_exit 0 "convert to x.csv: no .gz warning" "$H" convert vectors/walk.bin "$T/x.csv"
 grep -q "warning" "$T/err" && fail "convert to x.csv warned: $(cat "$T/err")" || pass "convert to x.csv: no warning"
 
+# --- a .bin header's text (sensor, axis note, source) with control
+# characters: info printed them raw, so a sensor name "x<LF>samples 1" forged
+# a line of info's report and an escape sequence reached the terminal. They
+# are now read as '?', with a warning.
+"${PY:-/usr/bin/python3}" -c 'import struct, sys, zlib
+b = bytearray(open(sys.argv[1], "rb").read())
+b[24:56] = b"x\nsamples     1\x1b[2J".ljust(32, b"\0")
+struct.pack_into("<I", b, 188, zlib.crc32(bytes(b[:188])) & 0xffffffff)
+open(sys.argv[2], "wb").write(b)' vectors/walk.bin "$T/ctl.bin"
+expect_exit 0 "info of a .bin whose sensor name holds a newline and an escape" "$H" info "$T/ctl.bin"
+expect_out "^sensor      x?samples     1?\[2J$" "info: the control characters shown as '?'"
+[ "$(grep -c '^samples' "$T/out")" -eq 1 ] && pass "info: no forged line" || fail "info: a forged line: $(grep '^samples' "$T/out")"
+if tr -d '\n' <"$T/out" | grep -q "$(printf '\033')"; then fail "info: an escape character printed"; else pass "info: no escape character printed"; fi
+expect_err "ctl.bin: the header's text holds 2 control characters (read as '?')" "info: the control characters warned of"
+printf '// MT Manager\n// ProductCode: MTi\033[31m-1\n// Update Rate: 100Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n1\t0\t0\t9.8\t0\t0\t0\n2\t0\t0\t9.8\t0\t0\t0\n' >"$T/mt.txt"
+expect_exit 0 "info of an MT Manager export whose ProductCode holds an escape" "$H" info "$T/mt.txt"
+expect_out "^sensor      Xsens MTi?\[31m-1$" "info: the ProductCode's escape shown as '?'"
+expect_err "mt.txt: the ProductCode holds control characters (read as '?')" "info: the ProductCode's control character warned of"
+expect_exit 0 "info of vectors/walk.bin: no control-character warning" "$H" info vectors/walk.bin
+grep -q "control characters" "$T/err" && fail "vectors/walk.bin warned of control characters" || pass "vectors/walk.bin: no such warning"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
