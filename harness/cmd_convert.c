@@ -220,9 +220,18 @@ int hx_cmd_convert(int argc, char **argv)
     }
     hx_progress_end(&pr);
     if (st != FNAV_END && exit_code == HX_EXIT_OK) {
-        long n = hx_reader_stats(r)->records;
-        hx_error("convert", "%s (the %ld sample%s before it %s written)", hx_reader_error(r), n, n == 1 ? "" : "s",
-                 n == 1 ? "was" : "were");
+        /* the samples written: with --start/--end those of the window (the
+         * samples read were counted as written, "the 200 samples before it
+         * were written" when --start kept none; the robustness hunt,
+         * 2026-12-01) */
+        const long n = hx_reader_stats(r)->records, kept = wd.kept;
+        if (hx_arg(&a, "--start") != NULL || hx_arg(&a, "--end") != NULL) {
+            hx_error("convert", "%s (the %ld sample%s of the window before it %s written, of %ld read)",
+                     hx_reader_error(r), kept, kept == 1 ? "" : "s", kept == 1 ? "was" : "were", n);
+        } else {
+            hx_error("convert", "%s (the %ld sample%s before it %s written)", hx_reader_error(r), n,
+                     n == 1 ? "" : "s", n == 1 ? "was" : "were");
+        }
         exit_code = HX_EXIT_DATA;
     }
     if (hx_writer_close(w, err, sizeof err) != FNAV_OK) {

@@ -109,5 +109,18 @@ expect_err "mt.txt: the ProductCode holds control characters (read as '?')" "inf
 expect_exit 0 "info of vectors/walk.bin: no control-character warning" "$H" info vectors/walk.bin
 grep -q "control characters" "$T/err" && fail "vectors/walk.bin warned of control characters" || pass "vectors/walk.bin: no such warning"
 
+# --- convert --start/--end over an input with a bad line: the error counted
+# the samples read as written ("the 200 samples before it were written" when
+# --start 2.5 kept none of them and the output held its header alone).
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 300; i++) printf "%.2f,%s,0,9.8,0,0,0\n", i / 100, i == 200 ? "nan" : "0.01" }' >"$T/nan200.csv"
+expect_exit 1 "convert --start 2.5 of a log with NaN at 2 s" "$H" convert "$T/nan200.csv" "$T/w0.csv" --start 2.5
+expect_err "(the 0 samples of the window before it were written, of 200 read)" "convert: none of the window written, said"
+[ "$(wc -l <"$T/w0.csv")" -eq 1 ] && pass "convert: the output holds the header alone" || fail "convert: $(wc -l <"$T/w0.csv") lines written"
+expect_exit 1 "convert --start 1 of a log with NaN at 2 s" "$H" convert "$T/nan200.csv" "$T/w1.csv" --start 1
+expect_err "(the 100 samples of the window before it were written, of 200 read)" "convert: the window's samples counted"
+[ "$(wc -l <"$T/w1.csv")" -eq 101 ] && pass "convert: the 100 samples written" || fail "convert: $(wc -l <"$T/w1.csv") lines written, expected 101"
+expect_exit 1 "convert without a window of a log with NaN at 2 s" "$H" convert "$T/nan200.csv" "$T/w2.csv"
+expect_err "(the 200 samples before it were written)" "convert: without a window, the samples read are those written"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
