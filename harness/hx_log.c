@@ -892,6 +892,25 @@ static int find_columns(hx_reader_t *r, const char *const names[8], char **f, in
     return -1;
 }
 
+/* A column read whose name the header gives twice: the first is read, and
+ * the warning says so (it was read without a word; the robustness hunt,
+ * 2026-12-01). The first such name is named. */
+static void dup_names_warn(hx_reader_t *r, const char *const names[8], char **f, int n)
+{
+    int i, k;
+    for (i = 0; i < 8; i++) {
+        const int c = names[i] != NULL ? hx_find_col(f, n, names[i]) : -1;
+        for (k = c + 1; c >= 0 && k < n; k++) {
+            if (hx_name_eq(f[k], names[i])) {
+                add_warn(r, "%s:%ld: the header names '%s' twice (columns %d and %d): column %d is read (--columns "
+                            "cannot choose between them: rename the other to read it)",
+                         r->path, r->stats.lines, names[i], c + 1, k + 1, c + 1);
+                return;
+            }
+        }
+    }
+}
+
 static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_required)
 {
     char *f[HX_MAX_COLS], dc_first[64], matched[700] = "";
@@ -960,6 +979,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
     for (;;) {
         i = find_columns(r, names, f, n, time_required);
         if (i < 0) {
+            dup_names_warn(r, names, f, n);
             return 0;
         }
         if (r->meta.format == HX_FMT_CSV && !tried && total <= HX_MAX_COLS && !dc_line && !all_numeric(f, n)) {

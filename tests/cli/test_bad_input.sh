@@ -122,5 +122,15 @@ expect_err "(the 100 samples of the window before it were written, of 200 read)"
 expect_exit 1 "convert without a window of a log with NaN at 2 s" "$H" convert "$T/nan200.csv" "$T/w2.csv"
 expect_err "(the 200 samples before it were written)" "convert: without a window, the samples read are those written"
 
+# --- a header that names a column it reads twice: the first was read
+# without a word ("t,ax,ay,az,gx,gy,gz,ax": the values of the second ax,
+# perhaps the one meant, were ignored). A warning names both columns.
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz,ax"; for (i = 0; i < 300; i++) printf "%.2f,0.01,0.02,9.8,0,0,0,5\n", i / 100 }' >"$T/dupax.csv"
+expect_exit 0 "info of a header naming ax twice" "$H" info "$T/dupax.csv"
+expect_err "dupax.csv:1: the header names 'ax' twice (columns 2 and 8): column 2 is read" "info: the duplicated name warned of"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz,x,x"; for (i = 0; i < 300; i++) printf "%.2f,0.01,0.02,9.8,0,0,0,1,2\n", i / 100 }' >"$T/dupx.csv"
+expect_exit 0 "info of a header naming an unread column twice" "$H" info "$T/dupx.csv"
+grep -q "twice" "$T/err" && fail "a column not read, named twice, warned of: $(cat "$T/err")" || pass "a column not read may be named twice"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
