@@ -1262,7 +1262,8 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         break;
     }
     case HX_FMT_ADIS: {
-        static const char *const names[8] = { NULL, "acc_x_g", "acc_y_g", "acc_z_g",
+        /* t: looked for, not read (the format has none), to be named below */
+        static const char *const names[8] = { "t", "acc_x_g", "acc_y_g", "acc_z_g",
                                               "gyro_x_dps", "gyro_y_dps", "gyro_z_dps", NULL };
         r->time_mode = TIME_INDEX;
         m->stamps_made = 1;
@@ -1274,7 +1275,18 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         }
         copy_str(m->sensor, sizeof m->sensor, "ADIS16405");
         copy_str(m->axes, sizeof m->axes, "sensor axes; z down at rest");
-        if (!(rate_hz > 0.0)) {
+        if (r->col_t >= 0) {
+            /* a time column beside the format's names: it was ignored under
+             * "no time stamps; assuming ... 100 Hz" (a log stamped at 200 Hz
+             * read at 100; the robustness hunt, 2026-12-01) */
+            add_warn(r, "%s: the column 't' is not read: the adis format has no time stamps (%s); to read them, "
+                        "give --from csv --columns t=t,ax=acc_x_g,ay=acc_y_g,az=acc_z_g,gx=gyro_x_dps,"
+                        "gy=gyro_y_dps,gz=gyro_z_dps --units accel=g,gyro=deg/s (and time=ms, us or ns if t is "
+                        "not in s)",
+                     r->path,
+                     rate_hz > 0.0 ? "the --input-rate given is used" : "read at 100 Hz, the ADIS16405 data set's rate");
+            r->col_t = -1;
+        } else if (!(rate_hz > 0.0)) {
             /* no time stamps: a log of another rate would be read at 100 Hz
              * without a word (the OpenShoe 820 Hz reader warned, this one
              * did not; the unseen review, 2026-11-29) */

@@ -132,5 +132,16 @@ awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz,x,x"; for (i = 0; i < 300; i++) printf "
 expect_exit 0 "info of a header naming an unread column twice" "$H" info "$T/dupx.csv"
 grep -q "twice" "$T/err" && fail "a column not read, named twice, warned of: $(cat "$T/err")" || pass "a column not read may be named twice"
 
+# --- the adis format (detected by its names acc_x_g ... gyro_z_dps) with a
+# time column: the column was ignored and the warning said "no time stamps;
+# assuming ... 100 Hz" of a log stamped at 200 Hz. It now names the column
+# and how to read it.
+awk 'BEGIN { print "t,gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g"; for (i = 0; i < 400; i++) printf "%.3f,0.1,0.2,0.3,0,0,-1\n", i / 200 }' >"$T/adis_t.csv"
+expect_exit 0 "info of an adis-named CSV with a time column" "$H" info "$T/adis_t.csv"
+expect_err "adis_t.csv: the column 't' is not read: the adis format has no time stamps" "info: the adis time column named"
+expect_err "give --from csv --columns t=t,ax=acc_x_g,ay=acc_y_g,az=acc_z_g,gx=gyro_x_dps,gy=gyro_y_dps,gz=gyro_z_dps --units accel=g,gyro=deg/s" "info: how to read it said"
+expect_exit 0 "the remedy followed" "$H" info "$T/adis_t.csv" --from csv --columns t=t,ax=acc_x_g,ay=acc_y_g,az=acc_z_g,gx=gyro_x_dps,gy=gyro_y_dps,gz=gyro_z_dps --units accel=g,gyro=deg/s
+expect_out "^rate        200.000 Hz" "the remedy reads the 200 Hz stamps"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
