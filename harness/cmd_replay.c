@@ -126,7 +126,8 @@ int hx_cmd_replay(int argc, char **argv)
     if (out_path != NULL) {
         csv = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
         if (csv == NULL) {
-            hx_error("replay", "cannot write %s", out_path);
+            /* with the reason (a directory, a missing one), as --json's */
+            hx_error("replay", "cannot write %s (%s)", out_path, strerror(errno));
             return HX_EXIT_IO;
         }
     }

@@ -829,7 +829,7 @@ int hx_write_json(const char *path, struct cJSON *root, char *err, size_t err_si
     const int to_stdout = strcmp(path, "-") == 0;
     char *txt = json_add_version(root) == 0 ? cJSON_Print(root) : NULL, *clean;
     FILE *f;
-    int ok;
+    int ok, e;
     if (txt != NULL && (clean = json_utf8(txt)) != txt) {
         free(txt);
         txt = clean;
@@ -844,11 +844,21 @@ int hx_write_json(const char *path, struct cJSON *root, char *err, size_t err_si
         free(txt);
         return -1;
     }
+    /* the reason of the first failure said, as convert's (a full disk was
+     * "cannot write FILE"; the robustness hunt, 2026-12-01) */
     ok = fputs(txt, f) >= 0 && fputc('\n', f) != EOF;
-    ok = (to_stdout ? fflush(f) : fclose(f)) == 0 && ok;
+    e = ok ? 0 : errno;
+    if ((to_stdout ? fflush(f) : fclose(f)) != 0) {
+        e = ok ? errno : e;
+        ok = 0;
+    }
     free(txt);
     if (!ok) {
-        snprintf(err, err_size, "cannot write %s", path);
+        if (e != 0) {
+            snprintf(err, err_size, "cannot write %s (%s)", path, strerror(e));
+        } else {
+            snprintf(err, err_size, "cannot write %s", path);
+        }
         return -1;
     }
     return 0;

@@ -143,5 +143,19 @@ expect_err "give --from csv --columns t=t,ax=acc_x_g,ay=acc_y_g,az=acc_z_g,gx=gy
 expect_exit 0 "the remedy followed" "$H" info "$T/adis_t.csv" --from csv --columns t=t,ax=acc_x_g,ay=acc_y_g,az=acc_z_g,gx=gyro_x_dps,gy=gyro_y_dps,gz=gyro_z_dps --units accel=g,gyro=deg/s
 expect_out "^rate        200.000 Hz" "the remedy reads the 200 Hz stamps"
 
+# --- an output that cannot be written: the error gives the reason, as
+# convert's and sim's do. replay's --out said only "cannot write DIR" (a
+# directory, a missing directory), and a JSON that failed as it was written
+# (a full disk) "cannot write FILE".
+expect_exit 3 "replay --out a directory" "$H" replay vectors/walk.bin --quiet --out "$T"
+expect_err "^harness replay: error: cannot write $T (Is a directory)" "replay --out: the reason given"
+expect_exit 3 "replay --out in a missing directory" "$H" replay vectors/walk.bin --quiet --out "$T/no/such/t.csv"
+expect_err "^harness replay: error: cannot write $T/no/such/t.csv (No such file or directory)" "replay --out: the missing directory said"
+if [ -w /dev/full ]; then
+    expect_exit 3 "info --json onto a full disk" "$H" info vectors/walk.bin --json /dev/full
+    expect_err "^harness info: error: cannot write /dev/full (No space left on device)" "info --json: the reason given"
+    expect_out "^samples     16539" "info: the report still printed"
+fi
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
