@@ -105,6 +105,7 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
         hx_log_free(&res);
         return HX_EXIT_IO;
     }
+    hx_warn_gz_output("convert", a->pos[1], to);
     for (k = 0; k < (long)res.n; k++) {
         hx_log_sample(&res, (size_t)k, &s);
         if (!in_window(wd, s.t_ns)) {
@@ -194,6 +195,7 @@ int hx_cmd_convert(int argc, char **argv)
         hx_reader_close(r);
         return HX_EXIT_IO;
     }
+    hx_warn_gz_output("convert", a.pos[1], to);
     /* a long log shows progress (a day at 100 Hz took 11 s to CSV without
      * a word; the scale review, 2026-11-29) */
     hx_progress_start(&pr, "convert", 1.0);
@@ -218,9 +220,18 @@ int hx_cmd_convert(int argc, char **argv)
     }
     hx_progress_end(&pr);
     if (st != FNAV_END && exit_code == HX_EXIT_OK) {
-        long n = hx_reader_stats(r)->records;
-        hx_error("convert", "%s (the %ld sample%s before it %s written)", hx_reader_error(r), n, n == 1 ? "" : "s",
-                 n == 1 ? "was" : "were");
+        /* the samples written: with --start/--end those of the window (the
+         * samples read were counted as written, "the 200 samples before it
+         * were written" when --start kept none; the robustness hunt,
+         * 2026-12-01) */
+        const long n = hx_reader_stats(r)->records, kept = wd.kept;
+        if (hx_arg(&a, "--start") != NULL || hx_arg(&a, "--end") != NULL) {
+            hx_error("convert", "%s (the %ld sample%s of the window before it %s written, of %ld read)",
+                     hx_reader_error(r), kept, kept == 1 ? "" : "s", kept == 1 ? "was" : "were", n);
+        } else {
+            hx_error("convert", "%s (the %ld sample%s before it %s written)", hx_reader_error(r), n,
+                     n == 1 ? "" : "s", n == 1 ? "was" : "were");
+        }
         exit_code = HX_EXIT_DATA;
     }
     if (hx_writer_close(w, err, sizeof err) != FNAV_OK) {

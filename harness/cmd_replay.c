@@ -126,7 +126,8 @@ int hx_cmd_replay(int argc, char **argv)
     if (out_path != NULL) {
         csv = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
         if (csv == NULL) {
-            hx_error("replay", "cannot write %s", out_path);
+            /* with the reason (a directory, a missing one), as --json's */
+            hx_error("replay", "cannot write %s (%s)", out_path, strerror(errno));
             return HX_EXIT_IO;
         }
     }
@@ -164,7 +165,10 @@ int hx_cmd_replay(int argc, char **argv)
         hx_error("replay", "%s", err);
         exit_code = HX_EXIT_IO;
     } else if (rc == 1) {
-        hx_error("replay", "%s (frames before it were written)", err);
+        /* "frames before it were written" was said with none before it (a
+         * header without samples; the robustness hunt, 2026-12-01) */
+        hx_error("replay", "%s (%s)", err,
+                 traj.stats.frames > 0u ? "frames before it were written" : "no frame before it: the outputs hold none");
         exit_code = HX_EXIT_DATA;
         traj.input_complete = 0;
         snprintf(traj.input_error, sizeof traj.input_error, "%.*s", (int)sizeof traj.input_error - 1, err);

@@ -34,7 +34,7 @@ typedef struct {
     hx_writer_t *w;
     FILE *truth;
     const char *truth_path;
-    int write_error;     /* 1 the log, 2 the truth CSV */
+    int write_error;     /* bits: 1 the log, 2 the truth CSV (each, once failed, is no longer written) */
     int truth_errno;     /* errno of the truth CSV's failed write */
     size_t written, dropped, dups, ticks, total;
     double peak_f, peak_w;
@@ -47,10 +47,14 @@ static int sink(void *vctx, const hx_sim_tick_t *tk)
     const hx_truth_t *o = &tk->truth;
     uint32_t k;
     int c;
-    for (k = 0; k < tk->count && s->w != NULL; k++) {
+    /* an output that fails is no longer written, and the other goes on to
+     * the end: the first failed write stopped the run, and a truth CSV on a
+     * full disk left the log cut short, a valid-looking log of a few rows
+     * (the robustness hunt, 2026-12-01; tests/cli/test_bad_input.sh) */
+    for (k = 0; k < tk->count && s->w != NULL && !(s->write_error & 1); k++) {
         if (hx_writer_write(s->w, &tk->meas) != FNAV_OK) {
-            s->write_error = 1;
-            return 1;
+            s->write_error |= 1;
+            break;
         }
         s->written++;
     }
@@ -62,7 +66,7 @@ static int sink(void *vctx, const hx_sim_tick_t *tk)
         s->peak_f = f > s->peak_f ? f : s->peak_f;
         s->peak_w = w > s->peak_w ? w : s->peak_w;
     }
-    if (s->truth != NULL) {
+    if (s->truth != NULL && !(s->write_error & 2)) {
         int r = fprintf(s->truth,
                         "%.9f,%u,%u,%.9f,%.9f,%.9f,%.9f,%.9f,%.9f,%.12f,%.12f,%.12f,%.12f,%.9f,%.9f,%.9f,"
                         "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%d,%d,%d,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
@@ -72,10 +76,12 @@ static int sink(void *vctx, const hx_sim_tick_t *tk)
                         o->w_b[2], o->still, o->zero_vel, o->phase, o->leg, o->odo_m, tk->bias[0], tk->bias[1],
                         tk->bias[2], tk->bias[3], tk->bias[4], tk->bias[5]);
         if (r < 0) {
-            s->write_error = 2;
+            s->write_error |= 2;
             s->truth_errno = errno;
-            return 1;
         }
+    }
+    if ((s->write_error & 1) && (s->truth == NULL || (s->write_error & 2))) {
+        return 1; /* nothing left to write */
     }
     s->ticks++;
     if ((s->ticks & 1023u) == 0u) {
@@ -173,6 +179,7 @@ int hx_cmd_sim(int argc, char **argv)
         hx_motion_free(motion);
         return HX_EXIT_IO;
     }
+    hx_warn_gz_output("sim", out, HX_FMT_AUTO);
     if (truth != NULL && hx_same_file(truth, out)) {
         /* the same file under another name (--out x.bin --truth ./x.bin):
          * only now that the log exists can stat tell (the truth CSV was
@@ -201,20 +208,23 @@ int hx_cmd_sim(int argc, char **argv)
     if (rc < 0) {
         hx_error("sim", "%s", err);
         status = HX_EXIT_USAGE;
-    } else if (ctx.write_error == 1) {
-        status = HX_EXIT_IO; /* hx_writer_close below names the error, with its reason */
-    } else if (ctx.write_error == 2) {
-        /* one line with the reason, as convert's (the log's failure was
-         * said twice, the truth CSV's without a reason; the mutation
-         * round, 2026-11-29) */
-        hx_error("sim", "%s: write failed (%s)", truth, strerror(ctx.truth_errno));
-        status = HX_EXIT_IO;
+    } else {
+        if (ctx.write_error & 1) {
+            status = HX_EXIT_IO; /* hx_writer_close below names the error, with its reason */
+        }
+        if (ctx.write_error & 2) {
+            /* one line with the reason, as convert's (the log's failure was
+             * said twice, the truth CSV's without a reason; the mutation
+             * round, 2026-11-29) */
+            hx_error("sim", "%s: write failed (%s)", truth, strerror(ctx.truth_errno));
+            status = HX_EXIT_IO;
+        }
     }
     if (hx_writer_close(ctx.w, err, sizeof err) != FNAV_OK) {
         hx_error("sim", "%s", err);
         status = HX_EXIT_IO;
     }
-    if (ctx.truth != NULL && fclose(ctx.truth) != 0 && ctx.write_error != 2) {
+    if (ctx.truth != NULL && fclose(ctx.truth) != 0 && !(ctx.write_error & 2)) {
         hx_error("sim", "%s: write failed (%s)", truth, strerror(errno));
         status = HX_EXIT_IO;
     }

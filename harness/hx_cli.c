@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
+#include <ctype.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -311,6 +312,43 @@ void hx_warn(const char *cmd, const char *fmt, ...)
     vfprintf(stderr, fmt, ap);
     va_end(ap);
     fputc('\n', stderr);
+}
+
+/* whether the len characters before the end of s are suffix, without
+ * regard to case */
+static int ends_in(const char *s, size_t end, const char *suffix)
+{
+    const size_t m = strlen(suffix);
+    size_t i;
+    if (end < m) {
+        return 0;
+    }
+    for (i = 0; i < m; i++) {
+        if (tolower((unsigned char)s[end - m + i]) != suffix[i]) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+void hx_warn_gz_output(const char *cmd, const char *path, hx_format_t fmt)
+{
+    /* convert and sim wrote OUT.csv.gz plain, and OUT.bin.gz as plain CSV
+     * (its name does not end in .bin), without a word: gzip -d then
+     * refused it (the robustness hunt, 2026-12-01) */
+    const size_t n = strlen(path);
+    if (!ends_in(path, n, ".gz")) {
+        return;
+    }
+    if (fmt == HX_FMT_BIN || fmt == HX_FMT_CSV || !ends_in(path, n - 3, ".bin")) {
+        hx_warn(cmd, "%s: written uncompressed (footnav writes no gzip; every command reads the file by its "
+                     "content); for a gzip file write it without .gz and compress it with gzip",
+                path);
+    } else {
+        hx_warn(cmd, "%s: written uncompressed, as CSV (a name ending in .bin is a .bin, or with --to bin; footnav "
+                     "writes no gzip): for a compressed .bin write %.*s and compress it with gzip",
+                path, (int)(n - 3), path);
+    }
 }
 
 static int input_options(const char *cmd, const hx_args_t *a, hx_format_t *fmt, double *rate)
@@ -791,7 +829,7 @@ int hx_write_json(const char *path, struct cJSON *root, char *err, size_t err_si
     const int to_stdout = strcmp(path, "-") == 0;
     char *txt = json_add_version(root) == 0 ? cJSON_Print(root) : NULL, *clean;
     FILE *f;
-    int ok;
+    int ok, e;
     if (txt != NULL && (clean = json_utf8(txt)) != txt) {
         free(txt);
         txt = clean;
@@ -806,11 +844,21 @@ int hx_write_json(const char *path, struct cJSON *root, char *err, size_t err_si
         free(txt);
         return -1;
     }
+    /* the reason of the first failure said, as convert's (a full disk was
+     * "cannot write FILE"; the robustness hunt, 2026-12-01) */
     ok = fputs(txt, f) >= 0 && fputc('\n', f) != EOF;
-    ok = (to_stdout ? fflush(f) : fclose(f)) == 0 && ok;
+    e = ok ? 0 : errno;
+    if ((to_stdout ? fflush(f) : fclose(f)) != 0) {
+        e = ok ? errno : e;
+        ok = 0;
+    }
     free(txt);
     if (!ok) {
-        snprintf(err, err_size, "cannot write %s", path);
+        if (e != 0) {
+            snprintf(err, err_size, "cannot write %s (%s)", path, strerror(e));
+        } else {
+            snprintf(err, err_size, "cannot write %s", path);
+        }
         return -1;
     }
     return 0;

@@ -96,6 +96,11 @@ void hx_warn(const char *cmd, const char *fmt, ...)
 #endif
     ;
 
+/** A warning when an output log's name ends in .gz (any case): footnav
+ *  writes no gzip, so the file is plain (and CSV unless fmt, the format
+ *  asked for, is HX_FMT_BIN or the name ends in .bin before the .gz). */
+void hx_warn_gz_output(const char *cmd, const char *path, hx_format_t fmt);
+
 /** Options every command that reads a log understands. */
 #define HX_INPUT_OPTS                                                                         \
     { "--from", "NAME", "input format (default: detected): " HX_FORMAT_LIST, 0 },            \

@@ -178,6 +178,20 @@ static void copy_str(char *dst, size_t size, const char *src)
     dst[n] = '\0';
 }
 
+/* Replaces the control characters of s (below 0x20, and DEL) with '?';
+ * returns how many there were. */
+static int printable(char *s)
+{
+    int n = 0;
+    for (; *s != '\0'; s++) {
+        if ((unsigned char)*s < 0x20u || (unsigned char)*s == 0x7fu) {
+            *s = '?';
+            n++;
+        }
+    }
+    return n;
+}
+
 /* ------------------------------------------------------------ parsing */
 
 static char *trim(char *s)
@@ -878,6 +892,25 @@ static int find_columns(hx_reader_t *r, const char *const names[8], char **f, in
     return -1;
 }
 
+/* A column read whose name the header gives twice: the first is read, and
+ * the warning says so (it was read without a word; the robustness hunt,
+ * 2026-12-01). The first such name is named. */
+static void dup_names_warn(hx_reader_t *r, const char *const names[8], char **f, int n)
+{
+    int i, k;
+    for (i = 0; i < 8; i++) {
+        const int c = names[i] != NULL ? hx_find_col(f, n, names[i]) : -1;
+        for (k = c + 1; c >= 0 && k < n; k++) {
+            if (hx_name_eq(f[k], names[i])) {
+                add_warn(r, "%s:%ld: the header names '%s' twice (columns %d and %d): column %d is read (--columns "
+                            "cannot choose between them: rename the other to read it)",
+                         r->path, r->stats.lines, names[i], c + 1, k + 1, c + 1);
+                return;
+            }
+        }
+    }
+}
+
 static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_required)
 {
     char *f[HX_MAX_COLS], dc_first[64], matched[700] = "";
@@ -946,6 +979,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
     for (;;) {
         i = find_columns(r, names, f, n, time_required);
         if (i < 0) {
+            dup_names_warn(r, names, f, n);
             return 0;
         }
         if (r->meta.format == HX_FMT_CSV && !tried && total <= HX_MAX_COLS && !dc_line && !all_numeric(f, n)) {
@@ -1160,6 +1194,9 @@ static int setup_mtmgr(hx_reader_t *r, double rate_hz)
                  r->mt.stated_hz, r->mt.stated_line);
     }
     snprintf(m->sensor, sizeof m->sensor, "Xsens %s", r->mt.product[0] != '\0' ? r->mt.product : "(MT Manager)");
+    if (printable(m->sensor) > 0) { /* an escape in the ProductCode reached the terminal, as a .bin's text */
+        add_warn(r, "%s: the ProductCode holds control characters (read as '?')", r->path);
+    }
     copy_str(m->axes, sizeof m->axes, "sensor axes");
     return 0;
 }
@@ -1225,7 +1262,8 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         break;
     }
     case HX_FMT_ADIS: {
-        static const char *const names[8] = { NULL, "acc_x_g", "acc_y_g", "acc_z_g",
+        /* t: looked for, not read (the format has none), to be named below */
+        static const char *const names[8] = { "t", "acc_x_g", "acc_y_g", "acc_z_g",
                                               "gyro_x_dps", "gyro_y_dps", "gyro_z_dps", NULL };
         r->time_mode = TIME_INDEX;
         m->stamps_made = 1;
@@ -1237,7 +1275,18 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         }
         copy_str(m->sensor, sizeof m->sensor, "ADIS16405");
         copy_str(m->axes, sizeof m->axes, "sensor axes; z down at rest");
-        if (!(rate_hz > 0.0)) {
+        if (r->col_t >= 0) {
+            /* a time column beside the format's names: it was ignored under
+             * "no time stamps; assuming ... 100 Hz" (a log stamped at 200 Hz
+             * read at 100; the robustness hunt, 2026-12-01) */
+            add_warn(r, "%s: the column 't' is not read: the adis format has no time stamps (%s); to read them, "
+                        "give --from csv --columns t=t,ax=acc_x_g,ay=acc_y_g,az=acc_z_g,gx=gyro_x_dps,"
+                        "gy=gyro_y_dps,gz=gyro_z_dps --units accel=g,gyro=deg/s (and time=ms, us or ns if t is "
+                        "not in s)",
+                     r->path,
+                     rate_hz > 0.0 ? "the --input-rate given is used" : "read at 100 Hz, the ADIS16405 data set's rate");
+            r->col_t = -1;
+        } else if (!(rate_hz > 0.0)) {
             /* no time stamps: a log of another rate would be read at 100 Hz
              * without a word (the OpenShoe 820 Hz reader warned, this one
              * did not; the unseen review, 2026-11-29) */
@@ -1278,16 +1327,31 @@ static int setup_text(hx_reader_t *r, double rate_hz)
             }
         } while (blank(r->line));
         {
-            /* "Acquisition frequency: 100 Hz", in any case, spaces around */
+            /* "Acquisition frequency: 100 Hz", in any case, spaces around:
+             * a decimal number and the unit Hz, nothing else. It was read
+             * with sscanf's %lf, which stops where it cannot go on:
+             * "100 kHz" and "100,5 Hz" read as 100 Hz, exit 0, every time
+             * off; and a rate of 1e-300 Hz failed at the second row as a
+             * counter out of range (the robustness hunt, 2026-12-01) */
             char head[64];
+            const char *num;
+            char *end = NULL;
             squeeze_line(r->line, head, sizeof head);
-            if (strncmp(head, "acquisitionfrequency:", 21) != 0 || sscanf(head + 21, "%lf", &fs) != 1) {
-                fs = 0.0;
+            num = head + 21;
+            if (strncmp(head, "acquisitionfrequency:", 21) == 0 && strpbrk(num, "xX") == NULL) {
+                fs = strtod(num, &end);
             }
-        }
-        if (!(fs > 0.0 && fs < 1.0e6)) {
-            set_err(r, "%s:%ld: expected 'Acquisition frequency: N Hz'", r->path, r->stats.lines);
-            return -1;
+            if (end == NULL || end == num || strcmp(end, "hz") != 0) {
+                const int comma = end != NULL && end != num && end[0] == ',' && isdigit((unsigned char)end[1]);
+                set_err(r, "%s:%ld: expected 'Acquisition frequency: N Hz', a number in Hz%s", r->path,
+                        r->stats.lines, comma ? DECIMAL_COMMA_HINT : "");
+                return -1;
+            }
+            if (!(fs >= 1.0e-3 && fs < 1.0e6)) {
+                set_err(r, "%s:%ld: expected 'Acquisition frequency: N Hz': %g Hz is outside [0.001, 1e+06)", r->path,
+                        r->stats.lines, fs);
+                return -1;
+            }
         }
         r->time_mode = TIME_COUNTER;
         r->rate_hz = rate_hz > 0.0 ? rate_hz : fs;
@@ -1776,6 +1840,7 @@ static int bin_fill(hx_reader_t *r, size_t need)
     return (r->len - r->pos >= need) ? 1 : 0;
 }
 
+
 static int setup_bin(hx_reader_t *r)
 {
     hx_bin_header_t h;
@@ -1802,6 +1867,16 @@ static int setup_bin(hx_reader_t *r)
     copy_str(r->meta.sensor, sizeof r->meta.sensor, h.sensor);
     copy_str(r->meta.source, sizeof r->meta.source, h.source);
     copy_str(r->meta.axes, sizeof r->meta.axes, h.axes);
+    {
+        /* text that reaches the reports, read as printable: a sensor name
+         * "x<LF>samples 1" forged a line of info's report, and an escape
+         * sequence reached the terminal (the robustness hunt, 2026-12-01) */
+        const int ctl = printable(r->meta.sensor) + printable(r->meta.source) + printable(r->meta.axes);
+        if (ctl > 0) {
+            add_warn(r, "%s: the header's text holds %d control character%s (read as '?')", r->path, ctl,
+                     ctl == 1 ? "" : "s");
+        }
+    }
     return 0;
 }
 

@@ -1,0 +1,161 @@
+#!/bin/sh
+# CLI tests of bad input and failed outputs found by the robustness hunt of
+# 2026-12-01 (the rule of docs/harness.md, "Exit status": a clear error and
+# a non-zero exit, never a crash; nothing already computed is lost): each
+# check failed before its fix.
+set -u
+H=${HARNESS:-bin/harness}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/lib.sh"
+
+# --- sim: one output that cannot be written leaves the other whole (exit 3,
+# "every other output is still written"). Until 2026-12-01 the first failed
+# write stopped the simulation: a truth CSV on a full disk left the log cut
+# short (1,288 bytes of a 10 s walk, a header and a few rows that read as a
+# valid log), and a log that could not be written left the truth cut short.
+# (No summary is printed when an output failed: tests/cli/test_sim.sh.)
+expect_exit 0 "sim: the reference log and truth" "$H" sim --duration 10 --out "$T/ref.csv" --truth "$T/ref_truth.csv"
+if [ -w /dev/full ]; then
+    expect_exit 3 "sim --truth onto a full disk" "$H" sim --duration 10 --out "$T/log.csv" --truth /dev/full
+    expect_err "^harness sim: error: /dev/full: write failed (No space left on device)" "sim: the truth's failed write named"
+    if cmp -s "$T/ref.csv" "$T/log.csv"; then pass "sim: the log written whole when the truth fails"
+    else fail "sim: the log cut short when the truth fails ($(wc -c <"$T/log.csv") of $(wc -c <"$T/ref.csv") bytes)"; fi
+    expect_exit 3 "sim --out onto a full disk" "$H" sim --duration 10 --out /dev/full --truth "$T/truth.csv"
+    expect_err "^harness sim: error: /dev/full: write failed (No space left on device)" "sim: the log's failed write named"
+    if cmp -s "$T/ref_truth.csv" "$T/truth.csv"; then pass "sim: the truth written whole when the log fails"
+    else fail "sim: the truth cut short when the log fails ($(wc -c <"$T/truth.csv") of $(wc -c <"$T/ref_truth.csv") bytes)"; fi
+else
+    echo "skip the full-disk checks of sim (no /dev/full)"
+fi
+
+# --- ipol: the rate of line 1 ("Acquisition frequency: 100 Hz") is a number
+# and the unit Hz. Until 2026-12-01 it was read with sscanf's "%lf", which
+# stops at the first character it cannot use: "100 kHz" read as 100 Hz and
+# "100,5 Hz" as 100 Hz (exit 0, every time off), and a rate of 1e-300 Hz was
+# taken, to fail at the second row as "counter ('1.0') is not a whole number
+# in range".
+ipol() { # FILE RATE-TEXT: an ipol file of 300 still samples at 100 Hz under line 1 'Acquisition frequency: RATE-TEXT'
+    { printf 'Acquisition frequency: %s\n' "$2"
+      printf 'PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n'
+      awk 'BEGIN { for (i = 0; i < 300; i++) printf "%d.0\t0.01\t0.02\t9.81\t0.001\t0.002\t0.003\n", i }'; } >"$1"
+}
+ipol "$T/ok.txt" "100 Hz"
+expect_exit 0 "ipol: 'Acquisition frequency: 100 Hz'" "$H" info "$T/ok.txt" --from ipol
+expect_out "^rate        100.000 Hz (nominal)" "ipol: the stated 100 Hz read"
+ipol "$T/ok2.txt" "1e2hz"
+expect_exit 0 "ipol: 'Acquisition frequency: 1e2hz' (any case, blanks and exponent)" "$H" info "$T/ok2.txt" --from ipol
+expect_out "^rate        100.000 Hz (nominal)" "ipol: 1e2hz read as 100 Hz"
+for bad in "100 kHz" "100,5 Hz" "100" "100 Hz 50" "1e-300 Hz" "0 Hz" "1e6 Hz" "nan Hz" "Hz"; do
+    ipol "$T/bad.txt" "$bad"
+    expect_exit 1 "ipol: 'Acquisition frequency: $bad' refused" "$H" info "$T/bad.txt" --from ipol
+    expect_err "bad.txt:1: expected 'Acquisition frequency: N Hz'" "ipol: '$bad': line 1 named"
+done
+ipol "$T/comma.txt" "100,5 Hz"
+expect_exit 1 "ipol: a decimal comma in the rate" "$H" info "$T/comma.txt" --from ipol
+expect_err "a decimal comma" "ipol: the decimal comma said"
+ipol "$T/low.txt" "1e-300 Hz"
+expect_exit 1 "ipol: a rate of 1e-300 Hz" "$H" info "$T/low.txt" --from ipol
+expect_err "1e-300 Hz is outside \[0.001, 1e+06)" "ipol: the rate out of range said"
+
+# --- replay, an input that stops before its first sample: the error said
+# "(frames before it were written)" with no frame before it (a header-only
+# CSV, a .bin header without records, a .bin whose first record is junk).
+printf 't,ax,ay,az,gx,gy,gz\n' >"$T/head.csv"
+expect_exit 1 "replay of a header without samples" "$H" replay "$T/head.csv" --quiet --out "$T/head_traj.csv"
+expect_err "head.csv: no samples (no frame before it: the outputs hold none)" "replay: no frame said for a log without samples"
+grep -q "frames before it were written" "$T/err" && fail "replay: 'frames before it were written' with none" \
+    || pass "replay: no claim of frames written before the error"
+printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,x,0,9.8,0,0,0\n' >"$T/one.csv"
+expect_exit 1 "replay of a log that stops after its first sample" "$H" replay "$T/one.csv" --quiet --out "$T/one_traj.csv"
+expect_err "one.csv:3: column 2 ('x') is not a number (frames before it were written)" "replay: frames before the error said"
+
+# --- an output named .gz: footnav writes no gzip. convert and sim wrote
+# OUT.csv.gz as plain CSV and OUT.bin.gz as plain CSV too (a name not ending
+# in .bin is CSV), exit 0 without a word: gzip -d then fails on it. Now a
+# warning says so (the file is still written as before, and every command
+# reads it by its content).
+expect_exit 0 "convert to x.csv.gz" "$H" convert vectors/walk.bin "$T/x.csv.gz"
+expect_err "^harness convert: warning: $T/x.csv.gz: written uncompressed (footnav writes no gzip" "convert: an uncompressed .gz said"
+expect_exit 0 "convert to x.bin.gz" "$H" convert vectors/walk.bin "$T/x.bin.gz"
+expect_err "^harness convert: warning: $T/x.bin.gz: written uncompressed, as CSV" "convert: a CSV named .bin.gz said"
+expect_exit 0 "convert to x.bin.gz --to bin" "$H" convert vectors/walk.bin "$T/y.bin.gz" --to bin
+expect_err "^harness convert: warning: $T/y.bin.gz: written uncompressed (footnav writes no gzip" "convert --to bin: an uncompressed .gz said"
+expect_exit 0 "info reads the uncompressed .bin.gz by its content" "$H" info "$T/y.bin.gz"
+expect_out "^format      bin" "info: the .bin.gz is a .bin"
+expect_exit 0 "sim to x.csv.gz" "$H" sim --duration 2 --out "$T/s.csv.gz"
+expect_err "^harness sim: warning: $T/s.csv.gz: written uncompressed (footnav writes no gzip" "sim: an uncompressed .gz said"
+expect_exit 0 "convert to x.csv: no .gz warning" "$H" convert vectors/walk.bin "$T/x.csv"
+grep -q "warning" "$T/err" && fail "convert to x.csv warned: $(cat "$T/err")" || pass "convert to x.csv: no warning"
+
+# --- a .bin header's text (sensor, axis note, source) with control
+# characters: info printed them raw, so a sensor name "x<LF>samples 1" forged
+# a line of info's report and an escape sequence reached the terminal. They
+# are now read as '?', with a warning.
+"${PY:-/usr/bin/python3}" -c 'import struct, sys, zlib
+b = bytearray(open(sys.argv[1], "rb").read())
+b[24:56] = b"x\nsamples     1\x1b[2J".ljust(32, b"\0")
+struct.pack_into("<I", b, 188, zlib.crc32(bytes(b[:188])) & 0xffffffff)
+open(sys.argv[2], "wb").write(b)' vectors/walk.bin "$T/ctl.bin"
+expect_exit 0 "info of a .bin whose sensor name holds a newline and an escape" "$H" info "$T/ctl.bin"
+expect_out "^sensor      x?samples     1?\[2J$" "info: the control characters shown as '?'"
+[ "$(grep -c '^samples' "$T/out")" -eq 1 ] && pass "info: no forged line" || fail "info: a forged line: $(grep '^samples' "$T/out")"
+if tr -d '\n' <"$T/out" | grep -q "$(printf '\033')"; then fail "info: an escape character printed"; else pass "info: no escape character printed"; fi
+expect_err "ctl.bin: the header's text holds 2 control characters (read as '?')" "info: the control characters warned of"
+printf '// MT Manager\n// ProductCode: MTi\033[31m-1\n// Update Rate: 100Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n1\t0\t0\t9.8\t0\t0\t0\n2\t0\t0\t9.8\t0\t0\t0\n' >"$T/mt.txt"
+expect_exit 0 "info of an MT Manager export whose ProductCode holds an escape" "$H" info "$T/mt.txt"
+expect_out "^sensor      Xsens MTi?\[31m-1$" "info: the ProductCode's escape shown as '?'"
+expect_err "mt.txt: the ProductCode holds control characters (read as '?')" "info: the ProductCode's control character warned of"
+expect_exit 0 "info of vectors/walk.bin: no control-character warning" "$H" info vectors/walk.bin
+grep -q "control characters" "$T/err" && fail "vectors/walk.bin warned of control characters" || pass "vectors/walk.bin: no such warning"
+
+# --- convert --start/--end over an input with a bad line: the error counted
+# the samples read as written ("the 200 samples before it were written" when
+# --start 2.5 kept none of them and the output held its header alone).
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 300; i++) printf "%.2f,%s,0,9.8,0,0,0\n", i / 100, i == 200 ? "nan" : "0.01" }' >"$T/nan200.csv"
+expect_exit 1 "convert --start 2.5 of a log with NaN at 2 s" "$H" convert "$T/nan200.csv" "$T/w0.csv" --start 2.5
+expect_err "(the 0 samples of the window before it were written, of 200 read)" "convert: none of the window written, said"
+[ "$(wc -l <"$T/w0.csv")" -eq 1 ] && pass "convert: the output holds the header alone" || fail "convert: $(wc -l <"$T/w0.csv") lines written"
+expect_exit 1 "convert --start 1 of a log with NaN at 2 s" "$H" convert "$T/nan200.csv" "$T/w1.csv" --start 1
+expect_err "(the 100 samples of the window before it were written, of 200 read)" "convert: the window's samples counted"
+[ "$(wc -l <"$T/w1.csv")" -eq 101 ] && pass "convert: the 100 samples written" || fail "convert: $(wc -l <"$T/w1.csv") lines written, expected 101"
+expect_exit 1 "convert without a window of a log with NaN at 2 s" "$H" convert "$T/nan200.csv" "$T/w2.csv"
+expect_err "(the 200 samples before it were written)" "convert: without a window, the samples read are those written"
+
+# --- a header that names a column it reads twice: the first was read
+# without a word ("t,ax,ay,az,gx,gy,gz,ax": the values of the second ax,
+# perhaps the one meant, were ignored). A warning names both columns.
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz,ax"; for (i = 0; i < 300; i++) printf "%.2f,0.01,0.02,9.8,0,0,0,5\n", i / 100 }' >"$T/dupax.csv"
+expect_exit 0 "info of a header naming ax twice" "$H" info "$T/dupax.csv"
+expect_err "dupax.csv:1: the header names 'ax' twice (columns 2 and 8): column 2 is read" "info: the duplicated name warned of"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz,x,x"; for (i = 0; i < 300; i++) printf "%.2f,0.01,0.02,9.8,0,0,0,1,2\n", i / 100 }' >"$T/dupx.csv"
+expect_exit 0 "info of a header naming an unread column twice" "$H" info "$T/dupx.csv"
+grep -q "twice" "$T/err" && fail "a column not read, named twice, warned of: $(cat "$T/err")" || pass "a column not read may be named twice"
+
+# --- the adis format (detected by its names acc_x_g ... gyro_z_dps) with a
+# time column: the column was ignored and the warning said "no time stamps;
+# assuming ... 100 Hz" of a log stamped at 200 Hz. It now names the column
+# and how to read it.
+awk 'BEGIN { print "t,gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g"; for (i = 0; i < 400; i++) printf "%.3f,0.1,0.2,0.3,0,0,-1\n", i / 200 }' >"$T/adis_t.csv"
+expect_exit 0 "info of an adis-named CSV with a time column" "$H" info "$T/adis_t.csv"
+expect_err "adis_t.csv: the column 't' is not read: the adis format has no time stamps" "info: the adis time column named"
+expect_err "give --from csv --columns t=t,ax=acc_x_g,ay=acc_y_g,az=acc_z_g,gx=gyro_x_dps,gy=gyro_y_dps,gz=gyro_z_dps --units accel=g,gyro=deg/s" "info: how to read it said"
+expect_exit 0 "the remedy followed" "$H" info "$T/adis_t.csv" --from csv --columns t=t,ax=acc_x_g,ay=acc_y_g,az=acc_z_g,gx=gyro_x_dps,gy=gyro_y_dps,gz=gyro_z_dps --units accel=g,gyro=deg/s
+expect_out "^rate        200.000 Hz" "the remedy reads the 200 Hz stamps"
+
+# --- an output that cannot be written: the error gives the reason, as
+# convert's and sim's do. replay's --out said only "cannot write DIR" (a
+# directory, a missing directory), and a JSON that failed as it was written
+# (a full disk) "cannot write FILE".
+expect_exit 3 "replay --out a directory" "$H" replay vectors/walk.bin --quiet --out "$T"
+expect_err "^harness replay: error: cannot write $T (Is a directory)" "replay --out: the reason given"
+expect_exit 3 "replay --out in a missing directory" "$H" replay vectors/walk.bin --quiet --out "$T/no/such/t.csv"
+expect_err "^harness replay: error: cannot write $T/no/such/t.csv (No such file or directory)" "replay --out: the missing directory said"
+if [ -w /dev/full ]; then
+    expect_exit 3 "info --json onto a full disk" "$H" info vectors/walk.bin --json /dev/full
+    expect_err "^harness info: error: cannot write /dev/full (No space left on device)" "info --json: the reason given"
+    expect_out "^samples     16539" "info: the report still printed"
+fi
+
+if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
+echo "test_bad_input.sh: all passed"
