@@ -157,5 +157,26 @@ if [ -w /dev/full ]; then
     expect_out "^samples     16539" "info: the report still printed"
 fi
 
+# --- replay of a log whose time stamps come in pairs (intervals of 0.1 ms
+# and 9.9 ms by turns: a logger stamping each pair of 200 Hz samples as it
+# reads them). info, allan and psd warned of the bursts; replay ran without
+# a word, its stance detector at 101 Hz (1 / the median of its first 32
+# intervals) with a 3-sample window where 200 Hz gives 5. It now warns as
+# they do, with the detector's rate and the --input-rate remedy.
+expect_exit 0 "sim: a 200 Hz walk" "$H" sim --duration 20 --rate 200 --out "$T/w200.csv"
+awk -F, 'NR == 1 { print; next } { k = NR - 2; $1 = sprintf("%.4f", int(k / 2) * 0.01 + (k % 2) * 0.0001); print }' OFS=, \
+    "$T/w200.csv" >"$T/pairs.csv"
+expect_exit 0 "replay of a log stamped in pairs (runs, as before)" "$H" replay "$T/pairs.csv" --quiet
+expect_err "^harness replay: warning: $T/pairs.csv: the time stamps come in bursts (.*): 1 / their median interval gives 101.01 Hz, but the 4001 samples span 20 s, 200 Hz; the stance detector takes 101 Hz" "replay: the paired stamps warned of, with the detector's rate"
+expect_err "leave the time column out and give --input-rate 200 (docs/harness.md, \"Time stamps in bursts\")" "replay: the remedy info names"
+expect_exit 0 "info of the log stamped in pairs" "$H" info "$T/pairs.csv"
+expect_err "leave the time column out and give --input-rate 200" "info: the same remedy"
+cut -d, -f2- "$T/pairs.csv" >"$T/pairs_cut.csv"
+expect_exit 0 "replay: the remedy followed" "$H" replay "$T/pairs_cut.csv" --input-rate 200
+expect_out "detector window 5 samples" "replay: the remedy gives the 5-sample window of 200 Hz"
+grep -q "bursts" "$T/err" && fail "replay: the remedy still warned: $(cat "$T/err")" || pass "replay: no warning once the remedy is followed"
+expect_exit 0 "replay of the evenly stamped walk" "$H" replay "$T/w200.csv" --quiet
+grep -q "bursts" "$T/err" && fail "replay of an even log warned: $(cat "$T/err")" || pass "replay: no bursts warning on evenly stamped stamps"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
