@@ -178,5 +178,27 @@ grep -q "bursts" "$T/err" && fail "replay: the remedy still warned: $(cat "$T/er
 expect_exit 0 "replay of the evenly stamped walk" "$H" replay "$T/w200.csv" --quiet
 grep -q "bursts" "$T/err" && fail "replay of an even log warned: $(cat "$T/err")" || pass "replay: no bursts warning on evenly stamped stamps"
 
+# --- a .bin whose header states a rate its stamps contradict (1000 Hz
+# stated, stamps 5 ms apart): info printed the stated rate without a word,
+# and its search for the rest took windows of 1000 samples, 5 s of the
+# 200 Hz log. A warning now names both rates and the remedy; a stated rate
+# within 10 % of the stamps' is not questioned.
+expect_exit 0 "convert: the 200 Hz walk as a .bin" "$H" convert "$T/w200.csv" "$T/w200.bin"
+bin_rate "$T/w200.bin" "$T/r1000.bin" 1000
+expect_exit 0 "info of a .bin stating 1000 Hz over 5 ms stamps (runs, as before)" "$H" info "$T/r1000.bin"
+expect_out "^rate        1000.000 Hz (nominal)" "info: the stated rate still printed"
+expect_err "^harness info: warning: $T/r1000.bin: the file states 1000 Hz, but its time stamps give 200 Hz (5.000 ms apart)" "info: the contradiction warned of"
+expect_err "convert it to CSV (bin/harness convert $T/r1000.bin out.csv), whose rate comes from its stamps" "info: the remedy named"
+"$H" convert "$T/r1000.bin" "$T/r1000.csv" 2>/dev/null
+expect_exit 0 "info: the remedy followed" "$H" info "$T/r1000.csv"
+expect_out "^rate        200.000 Hz (from the time stamps" "info: the converted CSV's rate is the stamps'"
+for hz in 200 215; do
+    bin_rate "$T/w200.bin" "$T/r$hz.bin" $hz
+    expect_exit 0 "info of a .bin stating $hz Hz over 5 ms stamps" "$H" info "$T/r$hz.bin"
+    grep -q "file states" "$T/err" && fail "info: $hz Hz stated for 200 Hz stamps warned of: $(cat "$T/err")" || pass "info: $hz Hz stated for 200 Hz stamps (within 10 %) not questioned"
+done
+expect_exit 0 "info of vectors/walk.bin" "$H" info vectors/walk.bin
+grep -q "file states" "$T/err" && fail "info: vectors/walk.bin's rate questioned: $(cat "$T/err")" || pass "info: vectors/walk.bin's rate not questioned"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
