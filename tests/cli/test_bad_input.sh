@@ -200,5 +200,18 @@ done
 expect_exit 0 "info of vectors/walk.bin" "$H" info vectors/walk.bin
 grep -q "file states" "$T/err" && fail "info: vectors/walk.bin's rate questioned: $(cat "$T/err")" || pass "info: vectors/walk.bin's rate not questioned"
 
+# --- sim --mount out of range: any number was taken (--mount 1e30,0,0
+# simulated a sensor turned by 1e30 degrees, exit 0). Roll and yaw lie in
+# [-180, 180] and pitch in [-90, 90], which reach every mounting (ZYX Euler
+# angles); beyond, a command-line error as --rate's (exit 2).
+for m in 1e30,0,0 0,91,0 0,-90.5,0 0,0,181 -180.01,0,0 0,0,-1e300; do
+    expect_exit 2 "sim --mount $m refused" "$H" sim --motion stand:2 --out "$T/m.csv" --mount "$m"
+    expect_err "^harness sim: error: --mount '$m': roll, pitch, yaw in degrees within \[-180, 180\], \[-90, 90\], \[-180, 180\]" "sim --mount $m: the ranges said"
+done
+[ -e "$T/m.csv" ] && fail "sim --mount out of range wrote a log" || pass "sim --mount out of range: no log written"
+for m in 180,90,-180 -180,-90,180 0,10,90; do
+    expect_exit 0 "sim --mount $m (the range's ends) taken" "$H" sim --motion stand:2 --out "$T/m_ok.csv" --mount "$m"
+done
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
