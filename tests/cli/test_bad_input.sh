@@ -213,5 +213,47 @@ for m in 180,90,-180 -180,-90,180 0,10,90; do
     expect_exit 0 "sim --mount $m (the range's ends) taken" "$H" sim --motion stand:2 --out "$T/m_ok.csv" --mount "$m"
 done
 
+# --- info of a log that holds no sample (a .bin header with no record, one
+# closed by its END record, a CSV header alone): the error alone, no report
+# and no JSON. Now the report says what the file is and that it holds no
+# sample, the JSON says so (samples 0, complete false, the error), exit 1
+# (bad or incomplete input: docs/harness.md, "Exit status").
+head -c 192 vectors/walk.bin >"$T/hdr.bin"
+"${PY:-/usr/bin/python3}" -c 'import struct, sys, zlib
+r = bytearray(48)
+struct.pack_into("<HHIq", r, 0, 0xA5E0, 0, 0, 0)
+struct.pack_into("<I", r, 44, zlib.crc32(bytes(r[:44])) & 0xffffffff)
+open(sys.argv[2], "wb").write(open(sys.argv[1], "rb").read(192) + bytes(r))' vectors/walk.bin "$T/closed.bin"
+for f in hdr.bin closed.bin head.csv; do
+    rm -f "$T/e.json"
+    expect_exit 1 "info of $f, no sample" "$H" info "$T/$f" --json "$T/e.json"
+    expect_out "^samples     0 (the file holds no sample: nothing to analyse)" "info $f: the empty log said"
+    expect_out "^file        $T/$f" "info $f: the file named"
+    expect_err "^harness info: error: $T/$f: " "info $f: the reader's error given"
+    json "$T/e.json" 'j["samples"] == 0 and j["complete"] is False and len(j["error"]) > 0 and j["rate_change"] is None' \
+        && pass "info $f: the JSON says the log is empty" || fail "info $f: no JSON saying the log is empty"
+done
+expect_out "^format      csv" "info head.csv: its format said"
+expect_exit 1 "info of closed.bin (format and sensor)" "$H" info "$T/closed.bin"
+expect_out "^sensor      x-io NGIMU" "info closed.bin: the header's sensor said"
+expect_err "closed.bin: no samples" "info closed.bin: no samples said"
+expect_exit 1 "info of a file that is no log: no report" "$H" info "$T/err" --from bin
+[ -s "$T/out" ] && fail "info of a non-log printed a report: $(cat "$T/out")" || pass "info of a non-log: no report, as before"
+
+# --- replay --out of an input with no sample: a 0-byte file, no CSV header
+# (the port writes the header with the first frame). It now holds the
+# header alone, a valid empty CSV (docs/harness.md, "replay", --out).
+expect_exit 0 "replay --out of a walk: the header to compare" "$H" replay vectors/walk.bin --quiet --out "$T/walk_traj.csv"
+for f in head.csv hdr.bin closed.bin; do
+    rm -f "$T/e_traj.csv"
+    expect_exit 1 "replay --out of $f, no sample" "$H" replay "$T/$f" --quiet --out "$T/e_traj.csv"
+    [ "$(wc -l <"$T/e_traj.csv")" -eq 1 ] && [ "$(cat "$T/e_traj.csv")" = "$(head -n 1 "$T/walk_traj.csv")" ] \
+        && pass "replay $f: --out holds the trajectory CSV's header alone" \
+        || fail "replay $f: --out holds $(wc -c <"$T/e_traj.csv") bytes, not the header alone"
+done
+expect_exit 1 "replay --out - of head.csv" "$H" replay "$T/head.csv" --out -
+[ "$(cat "$T/out")" = "$(head -n 1 "$T/walk_traj.csv")" ] && pass "replay --out -: the header alone on standard output" \
+    || fail "replay --out -: standard output holds '$(head -c 200 "$T/out")'"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
