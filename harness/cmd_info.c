@@ -284,6 +284,108 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     return rc;
 }
 
+/* A stated rate (a .bin header's nominal rate) that the log's own stamps
+ * contradict by more than INFO_STATED_RATE_TOL: 1000 Hz stated over stamps
+ * 5 ms apart was printed without a word until 2026-12-01, and the search
+ * for the rest took windows of 1000 samples, 5 s of that 200 Hz log. The
+ * stamps' rate is every command's estimate from the first 4,096 stamps
+ * (hx_stamp_rate_hz: the median interval, or the mean one for stamps too
+ * coarse for a median). Stamps made from the stated rate (a counter's,
+ * none at all) cannot contradict it; stamps in bursts have their own
+ * warning, which judges the stated rate by the log's span. */
+#define INFO_STATED_RATE_TOL 0.10
+static void stated_rate_warn(const hx_log_t *log, const info_t *in, const char *path)
+{
+    double hz;
+    if (!log->meta.rate_nominal || log->meta.stamps_made || !(in->rate_hz > 0.0) || log->n < 2u) {
+        return;
+    }
+    hz = hx_stamp_rate_hz(log->t_ns, log->n < 4096u ? log->n : (size_t)4096, NULL);
+    if (!(hz > 0.0) || fabs(in->rate_hz / hz - 1.0) <= INFO_STATED_RATE_TOL) {
+        return;
+    }
+    hx_warn("info",
+            "%s: the file states %.6g Hz, but its time stamps give %.6g Hz (%.3f ms apart): the "
+            "rate line and the one-second windows of the search for the rest take the stated rate; if the stamps "
+            "are right, convert it to CSV (bin/harness convert %s out.csv), whose rate comes from its stamps "
+            "(docs/harness.md, \"info\")",
+            path, in->rate_hz, hz, 1e3 / hz, path);
+}
+
+/* A log that opens (a valid .bin header, a CSV header) but holds no sample:
+ * hx_load_input has said why (the reader's error) and kept nothing. Until
+ * 2026-12-01 that error was all: no report, and no JSON. The file is
+ * opened again, quietly, for what its header says (format, sensor, a
+ * stated rate), and the report and the JSON say that it holds no sample;
+ * exit 1 (bad or incomplete input). -1 when it does not open (a bad
+ * header, a missing file: the error said so, as before). */
+static int report_empty(const hx_args_t *a, const char *path)
+{
+    const char *from = hx_arg(a, "--from");
+    const char *json = hx_arg(a, "--json");
+    hx_format_t fmt = from != NULL ? hx_format_from_name(from) : HX_FMT_AUTO;
+    double in_rate = 0.0;
+    char err[HX_ERR_SIZE], why[HX_ERR_SIZE];
+    hx_reader_t *r;
+    hx_meta_t meta;
+    fnav_sample_t s;
+    int rc = HX_EXIT_DATA;
+    /* the options were checked by hx_check_input_opts: no message here */
+    if (hx_arg(a, "--input-rate") != NULL && hx_arg_double(a, "--input-rate", 1e-3, 1e6, &in_rate) != 0) {
+        return -1;
+    }
+    r = hx_reader_open(path, fmt, in_rate, err, sizeof err);
+    if (r == NULL) {
+        return -1;
+    }
+    meta = *hx_reader_meta(r);
+    if (hx_reader_next(r, &s) == FNAV_OK) {
+        hx_reader_close(r); /* a sample after all: the file changed; the error stands */
+        return -1;
+    }
+    snprintf(why, sizeof why, "%s", hx_reader_error(r));
+    hx_reader_close(r);
+    printf("file        %s\n", path);
+    printf("format      %s\n", hx_format_name(meta.format));
+    printf("sensor      %s\n", meta.sensor);
+    if (meta.axes[0]) {
+        printf("axes        %s\n", meta.axes);
+    }
+    printf("samples     0 (the file holds no sample: nothing to analyse)\n");
+    if (meta.rate_nominal && meta.rate_hz > 0.0) {
+        printf("rate        %.3f Hz (nominal)\n", meta.rate_hz);
+    } else {
+        printf("rate        none (no sample gives no rate)\n");
+    }
+    printf("incomplete  %s\n", why);
+    if (json != NULL) {
+        /* info's keys, the figures null: there is no sample to make them */
+        static const char *const none[] = { "duration_s", "dt_median_s", "dt_min_s", "dt_max_s", "gaps",
+                                            "max_gap_s", "duplicates", "counter_drops", "rate_change",
+                                            "saturated_samples", "peak_abs", "gravity_at_rest_mps2",
+                                            "gravity_magnitude_mps2", "gravity_axis", "up_axis",
+                                            "gyro_at_rest_rps", "units_problem", "still_window_start_s" };
+        cJSON *j = cJSON_CreateObject();
+        size_t k;
+        cJSON_AddStringToObject(j, "format", hx_format_name(meta.format));
+        cJSON_AddStringToObject(j, "sensor", meta.sensor);
+        cJSON_AddNumberToObject(j, "samples", 0.0);
+        cJSON_AddNumberToObject(j, "rate_hz", meta.rate_nominal && meta.rate_hz > 0.0 ? meta.rate_hz : 0.0);
+        cJSON_AddBoolToObject(j, "rate_nominal", meta.rate_nominal);
+        for (k = 0; k < sizeof none / sizeof none[0]; k++) {
+            cJSON_AddNullToObject(j, none[k]);
+        }
+        cJSON_AddBoolToObject(j, "complete", 0);
+        cJSON_AddStringToObject(j, "error", why);
+        if (hx_write_json(json, j, err, sizeof err) != 0) {
+            hx_error("info", "%s", err);
+            rc = HX_EXIT_IO;
+        }
+        cJSON_Delete(j);
+    }
+    return rc;
+}
+
 int hx_cmd_info(int argc, char **argv)
 {
     hx_args_t a;
@@ -306,7 +408,8 @@ int hx_cmd_info(int argc, char **argv)
     }
     rc = hx_load_input("info", &a, a.pos[0], &log);
     if (rc < 0) {
-        return HX_EXIT_DATA;
+        const int e = report_empty(&a, a.pos[0]);
+        return e < 0 ? HX_EXIT_DATA : e;
     }
     analyse(&log, &in);
     {
@@ -323,8 +426,10 @@ int hx_cmd_info(int argc, char **argv)
             hx_warn("info", "%s: %s", a.pos[0], hint);
         }
     }
-    hx_nav_bursts_warn("info", a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the rate line gives", in.rate_hz,
-                       log.meta.rate_nominal && log.meta.rate_hz > 0.0);
+    if (!hx_nav_bursts_warn("info", a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the rate line gives", in.rate_hz,
+                            log.meta.rate_nominal && log.meta.rate_hz > 0.0)) {
+        stated_rate_warn(&log, &in, a.pos[0]);
+    }
     printf("file        %s\n", a.pos[0]);
     printf("format      %s\n", hx_format_name(log.meta.format));
     printf("sensor      %s\n", log.meta.sensor);

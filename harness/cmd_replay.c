@@ -5,6 +5,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "fnav_port_linux.h"
 #include "hx_cli.h"
 #include "hx_commands.h"
 #include "hx_nav.h"
@@ -151,6 +152,13 @@ int hx_cmd_replay(int argc, char **argv)
         traj.input_complete = 0;
         traj.output_failed = 1;
         snprintf(traj.input_error, sizeof traj.input_error, "%.*s", (int)sizeof traj.input_error - 1, err);
+    }
+    if (csv != NULL && rc != -3 && traj.stats.frames == 0u) {
+        /* the port writes the header with the first frame: an input with
+         * no sample (a CSV header alone, a .bin without records) left a
+         * 0-byte file until 2026-12-01; now a valid empty CSV, the header
+         * alone (docs/harness.md, "replay") */
+        fprintf(csv, "%s\n", FNAV_LINUX_NAV_CSV_HEADER);
     }
     if (csv != NULL && (csv == stdout ? fflush(csv) != 0 || ferror(csv) : fclose(csv) != 0) && rc >= 0) {
         snprintf(err, sizeof err, "cannot write %s", strcmp(out_path, "-") == 0 ? "standard output" : out_path);

@@ -736,6 +736,8 @@ typedef struct {
     int64_t t_first_ns;  /* the first sample's stamp (with have_t_last) */
     int have_t_last;
     int64_t stamp_res_ns; /* the stamps' resolution: gcd of the intervals that advance (0: none yet) */
+    int64_t *probe;       /* the first HX_STAMPS_PROBE_N stamps read (pairs_warn), or NULL */
+    size_t n_probe;
     hx_sat_t sat;         /* flat tops of the input as read (a resampled log's: before resampling) */
     /* HX_REPLAY_EVENTS: a second detector, initialised with the navigator's
      * detector's configuration and fed the samples the navigator accepted
@@ -845,6 +847,9 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
             hx_walk_push(&c->walk, s->t_ns, fn);
         }
         c->n_read++;
+        if (c->probe != NULL && c->n_probe < HX_STAMPS_PROBE_N) {
+            c->probe[c->n_probe++] = s->t_ns;
+        }
         if (c->have_t_last && s->t_ns > c->t_last_ns) {
             c->stamp_res_ns = hx_gcd_i64(s->t_ns - c->t_last_ns, c->stamp_res_ns);
         }
@@ -1417,6 +1422,42 @@ int hx_nav_bursts_warn(const char *cmd, const char *path, hx_format_t fmt, const
     return 1;
 }
 
+/* Replay's warning for distinct time stamps in bursts of the other kind
+ * than hx_nav_stamps_check refuses: more samples than the median interval
+ * gives over the span, with no stamp repeated to explain them (a logger
+ * stamping each pair of 200 Hz samples 0.1 ms apart every 10 ms). The
+ * stance detector then takes 1 / the median of its first intervals (101
+ * Hz for that log, a 3-sample window where 200 Hz gives 5) without a word
+ * until 2026-12-01, where info, allan and psd warned. Samples that share
+ * one stamp (the duplicates explain the count) keep the coarse-stamps note
+ * of the summary, as before. t_ns: the first n stamps read; first: the log
+ * went on past them; det_hz: the detector's rate. 1 when warned. */
+static int pairs_warn(const char *cmd, const char *path, hx_format_t fmt, const int64_t *t_ns, size_t n, int first,
+                      double max_gap_s, double det_hz)
+{
+    hx_bursts_t bu;
+    char msg[640];
+    size_t i, distinct = n > 0u ? 1u : 0u;
+    int64_t last;
+    if (t_ns == NULL || n < 2u || hx_stamp_bursts(t_ns, n, max_gap_s, &bu) != HX_BURSTS_SHARED) {
+        return 0;
+    }
+    for (last = t_ns[0], i = 1; i < n; i++) {
+        if (t_ns[i] > last) {
+            distinct++;
+            last = t_ns[i];
+        }
+    }
+    /* hx_stamp_bursts's SHARED test over the distinct stamps alone */
+    if (!((double)distinct > 1.5 * (bu.span_s * bu.median_hz + (double)bu.segs))) {
+        return 0;
+    }
+    bu.first = first;
+    bu.format = fmt;
+    hx_warn(cmd, "%s: %s", path, hx_bursts_rate_text(&bu, "the stance detector takes", det_hz, 0, msg, sizeof msg));
+    return 1;
+}
+
 int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, double max_gap_s, char *err,
                         size_t err_size)
 {
@@ -1612,6 +1653,11 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     }
     fnav_linux_port_init(&pc.linux_port, &pc.lctx, r, csv);
     pc.traj = traj;
+    if (r != NULL && !(cfg->stance.rate_hz > FNAV_R(0.0)) && !hx_reader_meta(r)->rate_coarse) {
+        /* the stamps the detector's own estimate comes from: pairs_warn
+         * (NULL: out of memory, no warning) */
+        pc.probe = (int64_t *)malloc(HX_STAMPS_PROBE_N * sizeof *pc.probe);
+    }
     if (traj != NULL && (flags & HX_REPLAY_AXES)) {
         pc.axes = hx_axes_new(); /* NULL: out of memory, not checked */
     }
@@ -1706,6 +1752,11 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         /* warnings collected while reading (assumed rates, cut-off lines) */
         hx_print_warnings(cmd, hx_reader_take_warnings(r));
         hx_reader_close(r);
+    }
+    if (pc.probe != NULL) {
+        pairs_warn(cmd, path, in_fmt, pc.probe, pc.n_probe, pc.n_read > (long)pc.n_probe, (double)cfg->max_gap_s,
+                   (double)nav.stance.rate_hz);
+        free(pc.probe);
     }
     hx_log_free(&res);
     free(pc.ev);

@@ -650,6 +650,18 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         hx_error(cmd, "--mount needs R,P,Y in degrees, e.g. --mount 0,10,90");
         return -1;
     }
+    if (hx_arg(a, "--mount") != NULL) {
+        /* ZYX Euler angles reach every mounting with roll and yaw in
+         * [-180, 180] and pitch in [-90, 90]; any number was taken until
+         * 2026-12-01 (--mount 1e30,0,0 simulated a sensor turned by 1e30
+         * degrees, exit 0) */
+        const double *m = s->motion_cfg.mount_deg;
+        if (!(fabs(m[0]) <= 180.0) || !(fabs(m[1]) <= 90.0) || !(fabs(m[2]) <= 180.0)) {
+            hx_error(cmd, "--mount '%s': roll, pitch, yaw in degrees within [-180, 180], [-90, 90], [-180, 180]",
+                     hx_arg(a, "--mount"));
+            return -1;
+        }
+    }
     bs = hx_arg(a, "--bias-sigma");
     if (bs != NULL && strcmp(bs, "given") != 0 && strcmp(bs, "eq6") != 0) {
         hx_error(cmd, "--bias-sigma is given or eq6, not '%s'", bs);

@@ -157,5 +157,103 @@ if [ -w /dev/full ]; then
     expect_out "^samples     16539" "info: the report still printed"
 fi
 
+# --- replay of a log whose time stamps come in pairs (intervals of 0.1 ms
+# and 9.9 ms by turns: a logger stamping each pair of 200 Hz samples as it
+# reads them). info, allan and psd warned of the bursts; replay ran without
+# a word, its stance detector at 101 Hz (1 / the median of its first 32
+# intervals) with a 3-sample window where 200 Hz gives 5. It now warns as
+# they do, with the detector's rate and the --input-rate remedy.
+expect_exit 0 "sim: a 200 Hz walk" "$H" sim --duration 20 --rate 200 --out "$T/w200.csv"
+awk -F, 'NR == 1 { print; next } { k = NR - 2; $1 = sprintf("%.4f", int(k / 2) * 0.01 + (k % 2) * 0.0001); print }' OFS=, \
+    "$T/w200.csv" >"$T/pairs.csv"
+expect_exit 0 "replay of a log stamped in pairs (runs, as before)" "$H" replay "$T/pairs.csv" --quiet
+expect_err "^harness replay: warning: $T/pairs.csv: the time stamps come in bursts (.*): 1 / their median interval gives 101.01 Hz, but the 4001 samples span 20 s, 200 Hz; the stance detector takes 101 Hz" "replay: the paired stamps warned of, with the detector's rate"
+expect_err "leave the time column out and give --input-rate 200 (docs/harness.md, \"Time stamps in bursts\")" "replay: the remedy info names"
+expect_exit 0 "info of the log stamped in pairs" "$H" info "$T/pairs.csv"
+expect_err "leave the time column out and give --input-rate 200" "info: the same remedy"
+cut -d, -f2- "$T/pairs.csv" >"$T/pairs_cut.csv"
+expect_exit 0 "replay: the remedy followed" "$H" replay "$T/pairs_cut.csv" --input-rate 200
+expect_out "detector window 5 samples" "replay: the remedy gives the 5-sample window of 200 Hz"
+grep -q "bursts" "$T/err" && fail "replay: the remedy still warned: $(cat "$T/err")" || pass "replay: no warning once the remedy is followed"
+expect_exit 0 "replay of the evenly stamped walk" "$H" replay "$T/w200.csv" --quiet
+grep -q "bursts" "$T/err" && fail "replay of an even log warned: $(cat "$T/err")" || pass "replay: no bursts warning on evenly stamped stamps"
+
+# --- a .bin whose header states a rate its stamps contradict (1000 Hz
+# stated, stamps 5 ms apart): info printed the stated rate without a word,
+# and its search for the rest took windows of 1000 samples, 5 s of the
+# 200 Hz log. A warning now names both rates and the remedy; a stated rate
+# within 10 % of the stamps' is not questioned.
+expect_exit 0 "convert: the 200 Hz walk as a .bin" "$H" convert "$T/w200.csv" "$T/w200.bin"
+bin_rate "$T/w200.bin" "$T/r1000.bin" 1000
+expect_exit 0 "info of a .bin stating 1000 Hz over 5 ms stamps (runs, as before)" "$H" info "$T/r1000.bin"
+expect_out "^rate        1000.000 Hz (nominal)" "info: the stated rate still printed"
+expect_err "^harness info: warning: $T/r1000.bin: the file states 1000 Hz, but its time stamps give 200 Hz (5.000 ms apart)" "info: the contradiction warned of"
+expect_err "convert it to CSV (bin/harness convert $T/r1000.bin out.csv), whose rate comes from its stamps" "info: the remedy named"
+"$H" convert "$T/r1000.bin" "$T/r1000.csv" 2>/dev/null
+expect_exit 0 "info: the remedy followed" "$H" info "$T/r1000.csv"
+expect_out "^rate        200.000 Hz (from the time stamps" "info: the converted CSV's rate is the stamps'"
+for hz in 200 215; do
+    bin_rate "$T/w200.bin" "$T/r$hz.bin" $hz
+    expect_exit 0 "info of a .bin stating $hz Hz over 5 ms stamps" "$H" info "$T/r$hz.bin"
+    grep -q "file states" "$T/err" && fail "info: $hz Hz stated for 200 Hz stamps warned of: $(cat "$T/err")" || pass "info: $hz Hz stated for 200 Hz stamps (within 10 %) not questioned"
+done
+expect_exit 0 "info of vectors/walk.bin" "$H" info vectors/walk.bin
+grep -q "file states" "$T/err" && fail "info: vectors/walk.bin's rate questioned: $(cat "$T/err")" || pass "info: vectors/walk.bin's rate not questioned"
+
+# --- sim --mount out of range: any number was taken (--mount 1e30,0,0
+# simulated a sensor turned by 1e30 degrees, exit 0). Roll and yaw lie in
+# [-180, 180] and pitch in [-90, 90], which reach every mounting (ZYX Euler
+# angles); beyond, a command-line error as --rate's (exit 2).
+for m in 1e30,0,0 0,91,0 0,-90.5,0 0,0,181 -180.01,0,0 0,0,-1e300; do
+    expect_exit 2 "sim --mount $m refused" "$H" sim --motion stand:2 --out "$T/m.csv" --mount "$m"
+    expect_err "^harness sim: error: --mount '$m': roll, pitch, yaw in degrees within \[-180, 180\], \[-90, 90\], \[-180, 180\]" "sim --mount $m: the ranges said"
+done
+[ -e "$T/m.csv" ] && fail "sim --mount out of range wrote a log" || pass "sim --mount out of range: no log written"
+for m in 180,90,-180 -180,-90,180 0,10,90; do
+    expect_exit 0 "sim --mount $m (the range's ends) taken" "$H" sim --motion stand:2 --out "$T/m_ok.csv" --mount "$m"
+done
+
+# --- info of a log that holds no sample (a .bin header with no record, one
+# closed by its END record, a CSV header alone): the error alone, no report
+# and no JSON. Now the report says what the file is and that it holds no
+# sample, the JSON says so (samples 0, complete false, the error), exit 1
+# (bad or incomplete input: docs/harness.md, "Exit status").
+head -c 192 vectors/walk.bin >"$T/hdr.bin"
+"${PY:-/usr/bin/python3}" -c 'import struct, sys, zlib
+r = bytearray(48)
+struct.pack_into("<HHIq", r, 0, 0xA5E0, 0, 0, 0)
+struct.pack_into("<I", r, 44, zlib.crc32(bytes(r[:44])) & 0xffffffff)
+open(sys.argv[2], "wb").write(open(sys.argv[1], "rb").read(192) + bytes(r))' vectors/walk.bin "$T/closed.bin"
+for f in hdr.bin closed.bin head.csv; do
+    rm -f "$T/e.json"
+    expect_exit 1 "info of $f, no sample" "$H" info "$T/$f" --json "$T/e.json"
+    expect_out "^samples     0 (the file holds no sample: nothing to analyse)" "info $f: the empty log said"
+    expect_out "^file        $T/$f" "info $f: the file named"
+    expect_err "^harness info: error: $T/$f: " "info $f: the reader's error given"
+    json "$T/e.json" 'j["samples"] == 0 and j["complete"] is False and len(j["error"]) > 0 and j["rate_change"] is None' \
+        && pass "info $f: the JSON says the log is empty" || fail "info $f: no JSON saying the log is empty"
+done
+expect_out "^format      csv" "info head.csv: its format said"
+expect_exit 1 "info of closed.bin (format and sensor)" "$H" info "$T/closed.bin"
+expect_out "^sensor      x-io NGIMU" "info closed.bin: the header's sensor said"
+expect_err "closed.bin: no samples" "info closed.bin: no samples said"
+expect_exit 1 "info of a file that is no log: no report" "$H" info "$T/err" --from bin
+[ -s "$T/out" ] && fail "info of a non-log printed a report: $(cat "$T/out")" || pass "info of a non-log: no report, as before"
+
+# --- replay --out of an input with no sample: a 0-byte file, no CSV header
+# (the port writes the header with the first frame). It now holds the
+# header alone, a valid empty CSV (docs/harness.md, "replay", --out).
+expect_exit 0 "replay --out of a walk: the header to compare" "$H" replay vectors/walk.bin --quiet --out "$T/walk_traj.csv"
+for f in head.csv hdr.bin closed.bin; do
+    rm -f "$T/e_traj.csv"
+    expect_exit 1 "replay --out of $f, no sample" "$H" replay "$T/$f" --quiet --out "$T/e_traj.csv"
+    [ "$(wc -l <"$T/e_traj.csv")" -eq 1 ] && [ "$(cat "$T/e_traj.csv")" = "$(head -n 1 "$T/walk_traj.csv")" ] \
+        && pass "replay $f: --out holds the trajectory CSV's header alone" \
+        || fail "replay $f: --out holds $(wc -c <"$T/e_traj.csv") bytes, not the header alone"
+done
+expect_exit 1 "replay --out - of head.csv" "$H" replay "$T/head.csv" --out -
+[ "$(cat "$T/out")" = "$(head -n 1 "$T/walk_traj.csv")" ] && pass "replay --out -: the header alone on standard output" \
+    || fail "replay --out -: standard output holds '$(head -c 200 "$T/out")'"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
