@@ -298,6 +298,8 @@ typedef enum {
 typedef struct {
     hx_bursts_kind_t kind;
     size_t n;         /**< the samples */
+    size_t distinct;  /**< the distinct stamps among them (the cause of HX_BURSTS_SHARED: stamps that
+                           repeat, or distinct stamps close together in pairs, 0.1 ms and 9.9 ms apart) */
     int first;        /**< 1: n are a log's first samples, not all of them (the message says so) */
     size_t segs;      /**< the segments between time jumps */
     double median_hz; /**< 1 / the median interval of the strictly increasing stamps (0: fewer than 2) */

@@ -171,6 +171,11 @@ expect_err "^harness replay: warning: $T/pairs.csv: the time stamps come in burs
 expect_err "leave the time column out and give --input-rate 200 (docs/harness.md, \"Time stamps in bursts\")" "replay: the remedy info names"
 expect_exit 0 "info of the log stamped in pairs" "$H" info "$T/pairs.csv"
 expect_err "leave the time column out and give --input-rate 200" "info: the same remedy"
+# the stamps are distinct, 0.1 ms apart in each pair: the cause is samples
+# stamped close together, not samples sharing one stamp (as until
+# 2026-12-01; the median interval is the long one, 9.9 ms, as it is for
+# shared stamps)
+expect_err "the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 101.01 Hz" "info: the paired stamps' cause is close stamping"
 cut -d, -f2- "$T/pairs.csv" >"$T/pairs_cut.csv"
 expect_exit 0 "replay: the remedy followed" "$H" replay "$T/pairs_cut.csv" --input-rate 200
 expect_out "detector window 5 samples" "replay: the remedy gives the 5-sample window of 200 Hz"
