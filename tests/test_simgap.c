@@ -808,6 +808,40 @@ static void test_timing_jitter_off_rate(void **state)
     assert_true(tm.stamp_s < 1e-15);
 }
 
+/* A dropout's held-out check expects the drops of the held-out intervals
+ * at the fitted probability p per sample: before each kept sample
+ * p / (1 - p) lost ones on average (geometric), so n_int p / (1 - p), the
+ * fit segment's ratio of drops to intervals. A clock that loses every 10th
+ * sample, the same everywhere, has held-out drops exactly where the fit
+ * puts them; p n_int (until 2026-12-01) expected 10 % too few, and on
+ * 20,000 samples the held-out 889 drops read +3.1 sigma against 800, a gap
+ * the dropout "leaves" (a CSV of `harness sim --effect dropout:prob=0.1`:
+ * +4.5 sigma, partly-explained; a review, 2026-12-01). */
+static void test_timing_dropout_after(void **state)
+{
+    enum { N = 20000 };
+    static int64_t t[N];
+    hx_log_t lg;
+    sg_segs_t segs;
+    sg_timing_t tm;
+    long k, j = 0;
+    (void)state;
+    memset(&lg, 0, sizeof lg);
+    for (k = 0; j < N; k++) {
+        if (k % 10 != 9) {
+            t[j++] = k * 10000000LL;
+        }
+    }
+    lg.n = (size_t)N;
+    lg.t_ns = t;
+    sg_segs_split(N, 0.6, 1, &segs);
+    sg_timing_analyse(&lg, 100.0, &segs, 0.05, &tm);
+    assert_true(tm.sel[SG_TIM_DROP]);
+    FNAV_ASSERT_CLOSE(tm.drop_prob, 0.1, 0.0, 2e-3);
+    assert_true(fabs(tm.z_after[SG_TIM_DROP]) < 1.0);
+    assert_false(tm.open[SG_TIM_DROP]);
+}
+
 /* The special estimators' evidence on a sandwich split's fit segment (two
  * blocks; docs/simgap.md, section 4, step 1). The lattice score of the
  * segment is the blocks' normal scores combined as Stouffer's
@@ -2502,6 +2536,7 @@ int main(void)
         cmocka_unit_test(test_cand_fold2),
         cmocka_unit_test(test_timing_thresholds),
         cmocka_unit_test(test_timing_jitter_off_rate),
+        cmocka_unit_test(test_timing_dropout_after),
         cmocka_unit_test(test_evidence_lattice_and_line),
         cmocka_unit_test(test_locate_runs),
         cmocka_unit_test(test_explained_golden),
