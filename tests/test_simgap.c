@@ -768,6 +768,80 @@ static void test_timing_thresholds(void **state)
     assert_false(tm.sel[SG_TIM_DROP] || tm.sel[SG_TIM_JITTER]);
 }
 
+/* A clean clock read at a rate that is not its own has no jitter. Exact
+ * stamps on the 10 ms grid, one sample in 20 lost, analysed at 95.37 Hz
+ * (the rate hx_stamp_rate_hz gives such a CSV of `harness sim --effect
+ * dropout:prob=0.05`): every regular interval is 10 ms, x = dt - T the
+ * same -485,000 ns for all 57,000 of them, and their spread is 0. From the
+ * raw moments (s2 - s^2 / n on sums of 10^16) the cancellation left
+ * 0.43 ns, and against the rounding floor of an exact grid (0) that was
+ * "jitter" at z 40 beside the dropout (a review, 2026-12-01). The spread
+ * and kurtosis come from moments about a reference interval now. */
+static void test_timing_jitter_off_rate(void **state)
+{
+    enum { N = 60000 };
+    static int64_t t[N];
+    hx_log_t lg;
+    sg_segs_t segs;
+    sg_timing_t tm;
+    long k, j = 0;
+    int g;
+    (void)state;
+    memset(&lg, 0, sizeof lg);
+    for (k = 0; j < N; k++) {
+        if (k % 20 != 19) {
+            t[j++] = k * 10000000LL;
+        }
+    }
+    lg.n = (size_t)N;
+    lg.t_ns = t;
+    sg_segs_split(N, 0.4, 1, &segs);
+    sg_timing_analyse(&lg, 95.37322950929718, &segs, 0.05, &tm);
+    assert_true(tm.have);
+    assert_int_equal(tm.n_drop[SG_FULL], t[N - 1] / 10000000LL + 1 - N);
+    for (g = 0; g < SG_NSEG; g++) {
+        assert_true(tm.jit_sd[g] < 1e-15);
+        assert_false(tm.z[g][SG_TIM_JITTER] > 0.0);
+    }
+    assert_false(tm.sel[SG_TIM_JITTER]);
+    assert_true(tm.sel[SG_TIM_DROP]);
+    assert_true(tm.stamp_s < 1e-15);
+}
+
+/* A dropout's held-out check expects the drops of the held-out intervals
+ * at the fitted probability p per sample: before each kept sample
+ * p / (1 - p) lost ones on average (geometric), so n_int p / (1 - p), the
+ * fit segment's ratio of drops to intervals. A clock that loses every 10th
+ * sample, the same everywhere, has held-out drops exactly where the fit
+ * puts them; p n_int (until 2026-12-01) expected 10 % too few, and on
+ * 20,000 samples the held-out 889 drops read +3.1 sigma against 800, a gap
+ * the dropout "leaves" (a CSV of `harness sim --effect dropout:prob=0.1`:
+ * +4.5 sigma, partly-explained; a review, 2026-12-01). */
+static void test_timing_dropout_after(void **state)
+{
+    enum { N = 20000 };
+    static int64_t t[N];
+    hx_log_t lg;
+    sg_segs_t segs;
+    sg_timing_t tm;
+    long k, j = 0;
+    (void)state;
+    memset(&lg, 0, sizeof lg);
+    for (k = 0; j < N; k++) {
+        if (k % 10 != 9) {
+            t[j++] = k * 10000000LL;
+        }
+    }
+    lg.n = (size_t)N;
+    lg.t_ns = t;
+    sg_segs_split(N, 0.6, 1, &segs);
+    sg_timing_analyse(&lg, 100.0, &segs, 0.05, &tm);
+    assert_true(tm.sel[SG_TIM_DROP]);
+    FNAV_ASSERT_CLOSE(tm.drop_prob, 0.1, 0.0, 2e-3);
+    assert_true(fabs(tm.z_after[SG_TIM_DROP]) < 1.0);
+    assert_false(tm.open[SG_TIM_DROP]);
+}
+
 /* The special estimators' evidence on a sandwich split's fit segment (two
  * blocks; docs/simgap.md, section 4, step 1). The lattice score of the
  * segment is the blocks' normal scores combined as Stouffer's
@@ -2461,6 +2535,8 @@ int main(void)
         cmocka_unit_test(test_thermal_nested),
         cmocka_unit_test(test_cand_fold2),
         cmocka_unit_test(test_timing_thresholds),
+        cmocka_unit_test(test_timing_jitter_off_rate),
+        cmocka_unit_test(test_timing_dropout_after),
         cmocka_unit_test(test_evidence_lattice_and_line),
         cmocka_unit_test(test_locate_runs),
         cmocka_unit_test(test_explained_golden),
