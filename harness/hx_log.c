@@ -2628,16 +2628,23 @@ double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)
         *coarse = 1;
     }
     /* Coarse stamps: the median interval is one of the few values they can
-     * show. A first period from the median of spans of K intervals (a span
-     * carries the stamps' rounding once, not K times), then the mean of the
+     * show. A first period from the spans of K intervals (a span carries
+     * the stamps' rounding once, not K times), then the mean of the
      * intervals that are not gaps: rounding errors cancel in the sum, and a
-     * lost sample (two periods, give or take the resolution) is left out. */
+     * lost sample (two periods, give or take the resolution) is left out.
+     * The span is their 10th percentile: a lost sample only lengthens a
+     * span, so it is one without one while more than a tenth of the spans
+     * hold none (up to 13 % of the samples lost; rounding moves it by at
+     * most a resolution over K). The median until 2026-12-01: above 4.2 %
+     * lost the median span held one, 17 periods over 16, and the gap
+     * threshold let one lost sample's interval in (95.3 Hz for 100 Hz at 5
+     * %; test_log test_stamp_rate) */
     if (m >= 3u * K + 1u) {
         for (w = 0; (w + 1u) * K < m; w++) {
             srt[w] = v[(w + 1u) * K] - v[w * K];
         }
         qsort(srt, w, sizeof srt[0], cmp_i64);
-        t1 = (double)srt[w / 2u] / (double)K;
+        t1 = (double)srt[w / 10u] / (double)K;
     }
     /* a period that is a whole number of resolutions (stamps from a sample
      * counter, k / rate, or exact ones rounded at a multiple of the period)

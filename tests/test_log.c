@@ -1807,6 +1807,36 @@ static void test_stamp_rate(void **state)
         }
         assert_true(hx_stamp_rate_hz(t, N, &coarse) == 100.0);
         assert_int_equal(coarse, 0);
+        /* 5 % and 10 % lost: exactly 100 Hz still. The first period came
+         * from the median of spans of 16 intervals, which above 4.2 % lost
+         * holds a lost sample (17 periods over 16, 10.625 ms): the gap
+         * threshold then took 20 ms intervals for periods, 95.3 and 91.6
+         * Hz (found by the simgap review of 2026-12-01: `sim --rate 100
+         * --effect dropout:prob=0.05` as a CSV, `info`) */
+        {
+            static const uint64_t lost[2] = { 838861u, 1677722u }; /* 5 %, 10 % of 2^24 */
+            size_t e;
+            for (e = 0; e < 2; e++) {
+                r = 5u;
+                c = 0;
+                for (k = 0; k < N; k++) {
+                    do {
+                        r = 6364136223846793005u * r + 1442695040888963407u;
+                        c++;
+                    } while ((r >> 40) < lost[e]);
+                    t[k] = c * 10000000;
+                }
+                assert_true(hx_stamp_rate_hz(t, N, &coarse) == 100.0);
+                assert_int_equal(coarse, 0);
+            }
+            r = 3u;
+            c = 0;
+            for (k = 0; k < N; k++) {
+                r = 6364136223846793005u * r + 1442695040888963407u;
+                c += ((r >> 40) < 167772u) ? 2 : 1;
+                t[k] = c * 10000000;
+            }
+        }
         /* one interval that is no whole number of periods (10 ms read as
          * 11): coarse, as a 100 Hz log stamped to the millisecond whose
          * clock runs slow */
