@@ -6,7 +6,6 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
-#include <ctype.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -314,33 +313,16 @@ void hx_warn(const char *cmd, const char *fmt, ...)
     fputc('\n', stderr);
 }
 
-/* whether the len characters before the end of s are suffix, without
- * regard to case */
-static int ends_in(const char *s, size_t end, const char *suffix)
-{
-    const size_t m = strlen(suffix);
-    size_t i;
-    if (end < m) {
-        return 0;
-    }
-    for (i = 0; i < m; i++) {
-        if (tolower((unsigned char)s[end - m + i]) != suffix[i]) {
-            return 0;
-        }
-    }
-    return 1;
-}
-
 void hx_warn_gz_output(const char *cmd, const char *path, hx_format_t fmt)
 {
     /* convert and sim wrote OUT.csv.gz plain, and OUT.bin.gz as plain CSV
      * (its name does not end in .bin), without a word: gzip -d then
      * refused it (the robustness hunt, 2026-12-01) */
     const size_t n = strlen(path);
-    if (!ends_in(path, n, ".gz")) {
+    if (!hx_ends_in(path, n, ".gz")) {
         return;
     }
-    if (fmt == HX_FMT_BIN || fmt == HX_FMT_CSV || !ends_in(path, n - 3, ".bin")) {
+    if (fmt == HX_FMT_BIN || fmt == HX_FMT_CSV || !hx_ends_in(path, n - 3, ".bin")) {
         hx_warn(cmd, "%s: written uncompressed (footnav writes no gzip; every command reads the file by its "
                      "content); for a gzip file write it without .gz and compress it with gzip",
                 path);

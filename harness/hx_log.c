@@ -1840,7 +1840,6 @@ static int bin_fill(hx_reader_t *r, size_t need)
     return (r->len - r->pos >= need) ? 1 : 0;
 }
 
-
 static int setup_bin(hx_reader_t *r)
 {
     hx_bin_header_t h;
@@ -2845,20 +2844,26 @@ struct hx_writer {
     int failed;
 };
 
-/* 1 when s ends with suffix (lower case), in any case: OUT.BIN is a .bin
- * (it was written as CSV; a review, 2026-11-28) */
-static int ends_with(const char *s, const char *suffix)
+int hx_ends_in(const char *s, size_t end, const char *suffix)
 {
-    size_t n = strlen(s), m = strlen(suffix), i;
-    if (n < m) {
+    const size_t m = strlen(suffix);
+    size_t i;
+    if (end < m) {
         return 0;
     }
     for (i = 0; i < m; i++) {
-        if (tolower((unsigned char)s[n - m + i]) != suffix[i]) {
+        if (tolower((unsigned char)s[end - m + i]) != suffix[i]) {
             return 0;
         }
     }
     return 1;
+}
+
+/* 1 when s ends with suffix (lower case), in any case: OUT.BIN is a .bin
+ * (it was written as CSV; a review, 2026-11-28) */
+static int ends_with(const char *s, const char *suffix)
+{
+    return hx_ends_in(s, strlen(s), suffix);
 }
 
 hx_writer_t *hx_writer_open(const char *path, hx_format_t fmt, const hx_meta_t *meta, int sync_each, char *err,

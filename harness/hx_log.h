@@ -215,6 +215,9 @@ typedef struct {
     char warnings[512];
 } hx_log_t;
 
+/** 1 when the end characters of s before index end (strlen(s) for the
+ *  whole string) are suffix (given in lower case), in any case. */
+int hx_ends_in(const char *s, size_t end, const char *suffix);
 /** Sampling rate (Hz) of n time stamps (ns), on the strictly increasing
  *  stamps (duplicates and steps back dropped). When the stamps resolve the
  *  period (their resolution, the intervals' greatest common divisor, is at

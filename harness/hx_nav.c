@@ -1437,19 +1437,11 @@ static int pairs_warn(const char *cmd, const char *path, hx_format_t fmt, const 
 {
     hx_bursts_t bu;
     char msg[640];
-    size_t i, distinct = n > 0u ? 1u : 0u;
-    int64_t last;
     if (t_ns == NULL || n < 2u || hx_stamp_bursts(t_ns, n, max_gap_s, &bu) != HX_BURSTS_SHARED) {
         return 0;
     }
-    for (last = t_ns[0], i = 1; i < n; i++) {
-        if (t_ns[i] > last) {
-            distinct++;
-            last = t_ns[i];
-        }
-    }
     /* hx_stamp_bursts's SHARED test over the distinct stamps alone */
-    if (!((double)distinct > 1.5 * (bu.span_s * bu.median_hz + (double)bu.segs))) {
+    if (!((double)bu.distinct > 1.5 * (bu.span_s * bu.median_hz + (double)bu.segs))) {
         return 0;
     }
     bu.first = first;
