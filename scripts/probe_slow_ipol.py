@@ -49,14 +49,16 @@ Rounding an event to the copy's packets moves it by up to half a copy
 sample (s / 2 original samples); eval's errors are whole samples.
 
 Usage: /usr/bin/python3 scripts/probe_slow_ipol.py [--factors 1,0.9,0.8,0.7,0.6,0.5]
-       [--seed N] [--param KEY=VALUE ...] [--tmp DIR] [--keep] [--selftest]
+       [--seed N] [--param KEY=VALUE ...] [--tmp DIR] [--keep] [--stance-share]
+       [--selftest]
 $DATA (default ../shared/data) holds ipol_gait_xsens; trials 1-x to 3-x
 (subjects 1-3) only. HARNESS=path overrides bin/harness. About 15 s for
 the six factors (progress on stderr). --tmp DIR (or --keep) keeps the
 copies, DIR/sS/ipol_gait_xsens/, for eval or replay by hand. --selftest
 checks ipol_packet() and map_events() and exits. --seed N (N > 0) draws
 another realisation of the added noise (0, the default: the documented
-one), to see how much the counts owe to it.
+one), to see how much the counts owe to it. --stance-share adds, per s,
+the stance shares of docs/harness.md's "Two more tries" (stance_shares()).
 
 --param KEY=VALUE (repeatable; keys: `bin/harness replay --param help`)
 is passed to every eval (the originals' and each copy's) and to the
@@ -247,7 +249,7 @@ def match(js, key, sw, fo, fs, last):
         used[hit] = 1
     spur = [(a, b) for k, (a, b) in enumerate(sw) if used[k] == 0 and not (ub[0] <= (a + b) // 2 < ub[1])
             and tb[0] - 5 < (a + b) // 2 < tb[1] + 5]
-    return n_exp, missed, spur
+    return n_exp, missed, spur, used
 
 
 def threshold_log10(lt):
@@ -324,7 +326,7 @@ def explain(copy_txt, js, key, kmin, tmp):
     lt = np.log10(ta + tg)
     thr = threshold_log10(lt)
     last = int(d[-1, 0])
-    n_exp, missed, spur = match(js, key, sw, fo, fs, last)
+    n_exp, missed, spur, _ = match(js, key, sw, fo, fs, last)
     out, tags = [], []
     row = lambda p: p - kmin
     min_swing = int(round(SET['min_swing_s'] * RATE))  # min_swing_s, samples of the copy
@@ -376,6 +378,44 @@ def explain(copy_txt, js, key, kmin, tmp):
     return out, n_exp, len(missed), len(spur), tags, post
 
 
+def stance_shares(copy_txt, js, key, kmin, tmp):
+    """The stance share of one copied foot log (docs/harness.md, "Two more
+    tries"): each detected stance (the gap between successive swings of
+    `bin/harness replay COPY --strides`) against the median of the three
+    stances before it. Returned: the shares of the late-swing stances (the
+    stances before the spurious strides explain() calls "a stance from
+    inside the expert swing, then the motion around the foot-strike") and
+    of the stances before a matched stride, and the count of late-swing
+    stances with fewer than three stances before them (left out); None
+    when the replay fails."""
+    rs = replay_strides(copy_txt, kmin, tmp)
+    if rs is None:
+        return None
+    sw = rs[0]
+    fo = [x for x in rs[1] if x is not None]
+    fs = [x for x in rs[2] if x is not None]
+    _, d = read_ipol(copy_txt)
+    _, missed, spur, used = match(js, key, sw, fo, fs, int(d[-1, 0]))
+    late, matched, short = [], [], 0
+    stance = lambda j: sw[j][0] - sw[j - 1][1]
+    for k in range(1, len(sw)):
+        a, b = sw[k]
+        is_late = False
+        if used[k] != 1 and (a, b) in spur and not any(overlaps(a, b, m[0], m[1]) for m in missed):
+            pe = sw[k - 1][1]
+            inside = [e for e in js[key] if overlaps(e[0] - 30, e[1] + 30, a, b) and e[0] < pe < e[1]]
+            is_late = bool(inside) and b > inside[0][1]
+        if k < 4:  # fewer than three stances before it (swings k-4..k-1)
+            short += is_late
+            continue
+        share = stance(k) / float(np.median([stance(j) for j in range(k - 3, k)]))
+        if used[k] == 1:
+            matched.append(share)
+        elif is_late:
+            late.append(share)
+    return late, matched, short
+
+
 def trials(data):
     names = sorted(os.path.basename(p)[:-5] for p in glob.glob(os.path.join(data, 'ipol_gait_xsens', '*.json')))
     # subjects 1-3 only (4-x and 5-x are kept unseen)
@@ -388,6 +428,9 @@ def main():
         selftest()
         return
     tmp, factors, keep = ps.take_common(args, 'probe_slow_ipol.py', [1.0, 0.9, 0.8, 0.7, 0.6, 0.5], __doc__)
+    shares = '--stance-share' in args
+    if shares:
+        args.remove('--stance-share')
     seed = 0
     if '--seed' in args:
         i = args.index('--seed')
@@ -603,6 +646,26 @@ def main():
                                                       np.median(v[:, 1]), v[:, 1].min(), v[:, 1].max(),
                                                       np.median(v[:, 2]), v[:, 2].min(), v[:, 2].max(),
                                                       np.median(v[:, 3]), v[:, 3].min(), v[:, 3].max()))
+        if shares:
+            print('\nStance share (each detected stance against the median of the three stances before it; '
+                  'replay --strides of every copy): the late-swing stances (before the "a stance from inside the '
+                  'expert swing" strides) and the stances before a matched stride:')
+            for s in factors:
+                kmins, late, matched, short = results[s][4], [], [], 0
+                for n in names:
+                    with open(os.path.join(tmp, 's%.2f' % s, 'ipol_gait_xsens', n + '.json')) as fh:
+                        mj = json.load(fh)
+                    for foot, key in (('lf', EVENT_KEYS[0]), ('rf', EVENT_KEYS[1])):
+                        r = stance_shares(os.path.join(tmp, 's%.2f' % s, 'ipol_gait_xsens', '%s_%s.txt' % (n, foot)),
+                                          mj, key, kmins[(n, foot)], tmp)
+                        if r is not None:
+                            late += r[0]
+                            matched += r[1]
+                            short += r[2]
+                print('s %.2f: late-swing stances %d, share up to %s (%d more with fewer than three stances before '
+                      'them); before a matched stride %d, share down to %s' %
+                      (s, len(late), '%.2f' % max(late) if late else '-', short, len(matched),
+                       '%.2f' % min(matched) if matched else '-'))
         print('\n%.0f s' % (time.time() - start))
     finally:
         if mine and not keep:
