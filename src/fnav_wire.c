@@ -404,6 +404,10 @@ fnav_status_t fnav_wire_decode_flush(fnav_wire_decoder_t *d, fnav_wire_frame_t *
             return st; /* a whole frame held behind the rejected candidate */
         }
         if (d->fill == 0u) {
+            /* no byte of a counted candidate's extent will come: a corrupt
+             * frame after the pause counts on its own (the rest of the
+             * extent was carried over and hid it until 2026-12-01) */
+            d->bad_until = 0u;
             return FNAV_AGAIN;
         }
         /* buf[0] starts a candidate no byte will complete: a lone first

@@ -819,6 +819,41 @@ static void test_flush_end_of_stream(void **state)
     assert_int_equal(fnav_wire_decode_flush(&d, NULL), FNAV_E_ARG);
 }
 
+/* After a flush the decoder starts afresh: the extent of the truncated
+ * candidate it rejected ends there (no byte of it will come), so a corrupt
+ * frame arriving after the quiet time counts on its own. Until 2026-12-01
+ * the rejected candidate's remaining extent (here 50 - 19 = 31 bytes) was
+ * kept and the corrupt frame after it was not counted: harness live called
+ * a damaged frame after a sender's pause a plain drop. */
+static void test_flush_ends_extent(void **state)
+{
+    uint8_t buf[128];
+    fnav_wire_decoder_t d;
+    fnav_wire_frame_t f;
+    fnav_sample_t s;
+    size_t n, used;
+    uint8_t t = 0;
+    (void)state;
+    memset(&s, 0, sizeof s);
+    fnav_wire_decoder_init(&d);
+    /* a SAMPLE frame cut after 20 bytes, then the line goes quiet */
+    n = fnav_wire_encode_sample(buf, sizeof buf, 1, &s);
+    assert_int_equal(n, 51);
+    assert_int_equal(fnav_wire_decode(&d, buf, 20, &used, &f), FNAV_AGAIN);
+    assert_int_equal(flush_all(&d, &t), 0);
+    assert_int_equal(d.stats.bad_frames, 1);
+    assert_int_equal(d.stats.skipped_bytes, 20);
+    /* then a whole SAMPLE frame with a flipped payload bit, then a good one */
+    n = fnav_wire_encode_sample(buf, sizeof buf, 2, &s);
+    buf[FNAV_WIRE_HEADER_SIZE + 20u] ^= 0x08u;
+    n += fnav_wire_encode_end(buf + n, sizeof buf - n, 3, 1);
+    assert_int_equal(fnav_wire_decode(&d, buf, n, &used, &f), FNAV_OK);
+    assert_int_equal(f.type, FNAV_WIRE_END);
+    assert_int_equal(d.stats.bad_frames, 2);
+    assert_int_equal(d.stats.skipped_bytes, 20 + 51);
+    assert_int_equal(d.stats.frames, 1);
+}
+
 /* Flushes at random points of a damaged stream (a receiver's idle timer
  * firing at any byte): every frame whole before the flush point is
  * delivered, the decoder is empty after each flush, and every byte fed is
@@ -900,6 +935,7 @@ int main(void)
         cmocka_unit_test(test_nested_candidate_counts_once),
         cmocka_unit_test(test_garbage_fuzz),
         cmocka_unit_test(test_flush_end_of_stream),
+        cmocka_unit_test(test_flush_ends_extent),
         cmocka_unit_test(test_flush_random),
     };
     return cmocka_run_group_tests_name("wire", tests, NULL, NULL);

@@ -201,7 +201,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_wire_decode(fnav_wire_decoder_t *d, const ui
  * never (an END frame behind a truncated frame was not seen).
  *
  * Call it until it returns FNAV_AGAIN; the decoder is then empty (every
- * byte fed was skipped or delivered) and goes on with fnav_wire_decode().
+ * byte fed was skipped or delivered; the rejected candidate's extent ends
+ * there, so a corrupt frame fed next counts on its own) and goes on with
+ * fnav_wire_decode().
  * A frame cut by a pause longer than the receiver waited is lost (counted as
  * corrupt), so a receiver calls this after an idle time far longer than a
  * frame takes on its link, or at the end of a stream.

@@ -8,7 +8,8 @@
 #define SYS_WRITE0 0x04
 #define SYS_EXIT 0x18
 #define SYS_EXIT_EXTENDED 0x20
-#define ADP_STOPPED_APPLICATION_EXIT 0x20026
+#define ADP_STOPPED_APPLICATION_EXIT 0x20026u
+#define ADP_STOPPED_RUNTIME_ERROR_UNKNOWN 0x20023u
 
 __attribute__((naked)) static int semihost_call(int op, const void *arg)
 {
@@ -26,12 +27,19 @@ void fnav_cm_sh_puts(const char *s)
 
 void fnav_cm_sh_exit(int status)
 {
+    /* SYS_EXIT_EXTENDED carries the status itself; a debugger without that
+     * extension (or an image built with FNAV_CM_SH_NO_EXIT_EXTENDED, for one
+     * that halts on an operation it does not know) gets the plain SYS_EXIT,
+     * whose reason code says success or failure: a failure was sent as
+     * ADP_Stopped_ApplicationExit, success, until 2026-12-01 (tests/m4/exit.sh) */
+    const uintptr_t reason = (status == 0) ? ADP_STOPPED_APPLICATION_EXIT : ADP_STOPPED_RUNTIME_ERROR_UNKNOWN;
+#if !defined(FNAV_CM_SH_NO_EXIT_EXTENDED)
     uint32_t block[2];
     block[0] = ADP_STOPPED_APPLICATION_EXIT;
     block[1] = (uint32_t)status;
     (void)semihost_call(SYS_EXIT_EXTENDED, block);
-    /* a debugger without the extension: plain exit (status lost) */
-    (void)semihost_call(SYS_EXIT, (const void *)ADP_STOPPED_APPLICATION_EXIT);
+#endif
+    (void)semihost_call(SYS_EXIT, (const void *)reason);
     for (;;) {
     }
 }
