@@ -215,8 +215,11 @@ void hx_allan_mark_periodic(const fnav_allan_noise_t *noise, size_t n, unsigned 
 
 /* R(m) = MVAR / AVAR of the record against its expected values for white
  * (1 / m) and flicker phase noise (SP 1065 sec. 5.6, with the bandwidth at
- * the Nyquist frequency: 2 pi f_h tau = pi m): +2 below their geometric
- * mean, +1 above; -1 when MVAR or AVAR is not there. */
+ * the Nyquist frequency: 2 pi f_h tau = pi m): the nearer on a log scale,
+ * +2 or +1; -1 when MVAR or AVAR is not there. For m >= 2 that is a split
+ * at their geometric mean, white below; at m = 1 MVAR = AVAR, R = 1 for any
+ * noise, white phase noise's value exactly and above the flicker formula's
+ * 0.75, where "white below the mean" named every record flicker (+1). */
 static int noise_id_rn(const double *x, size_t n, uint32_t m, int *alpha)
 {
     const double pi = 3.14159265358979323846;
@@ -228,7 +231,10 @@ static int noise_id_rn(const double *x, size_t n, uint32_t m, int *alpha)
     if (!(mv >= 0.0) || !(av > 0.0)) {
         return -1;
     }
-    *alpha = mv / av < sqrt(r_white * r_flicker) ? 2 : 1;
+    {
+        const double lr = log(mv / av); /* -inf for MVAR 0: white */
+        *alpha = fabs(lr - log(r_white)) <= fabs(lr - log(r_flicker)) ? 2 : 1;
+    }
     return 0;
 }
 

@@ -81,8 +81,10 @@ double hx_noise_model_avar(const hx_noise_model_t *mdl, double rate_hz, double m
 
 /**
  * Weighted least-squares fit of the model to a measured table (overlapping
- * ADEV). Stage 1: for correlation times on a log grid, non-negative linear
- * least squares for the squared amplitudes; stage 2: Levenberg-Marquardt
+ * ADEV). Stage 1: for correlation times on a log grid, unconstrained
+ * linear least squares for the squared amplitudes (a T whose solution has
+ * an amplitude <= 0 is discarded; when every T is, the fit fails); stage
+ * 2: Levenberg-Marquardt
  * (GSL) on log ADEV over log parameters from the best stage-1 point.
  * Weight of a point 1/sqrt(1/(2 EDF) + floor^2), EDF by Greenhall with the
  * noise type from the local slope. A set of terms is tried only with more

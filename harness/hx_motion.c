@@ -336,7 +336,7 @@ static int stride(hx_motion_t *m, const hx_gait_t *g, double dx, double dy, doub
     double t0 = k0.t, tb, tc, td, ts, tf, tg;
     double v[NCOORD][3];
     ring_t ring;
-    int c;
+    int c, rings = 0;
     if (!(T_sw > 0.05)) {
         return fail(m, "gait fractions leave no time to swing", NULL);
     }
@@ -495,8 +495,12 @@ static int stride(hx_motion_t *m, const hx_gait_t *g, double dx, double dy, doub
         if (push_ring(m, &ring) != 0) {
             return -1;
         }
+        rings = 1;
     }
-    m->k[m->nk - 2].still_from = (ts + g->ring_s > tf) ? ts + g->ring_s : tf;
+    /* at rest from foot flat, or from the ringing's end if it rings longer
+     * (without a ringing ring_s is no time at all: the running slap, 42 ms,
+     * was not still for another 8 ms with ring_mps2 0) */
+    m->k[m->nk - 2].still_from = (rings && ts + g->ring_s > tf) ? ts + g->ring_s : tf;
     if (m->k[m->nk - 2].still_from >= tg) {
         return fail(m, "the shoe ringing outlasts the stance; shorten ring_s", NULL);
     }

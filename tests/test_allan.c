@@ -1998,6 +1998,35 @@ static void test_noise_id_edges(void **state)
     assert_string_equal(hx_noise_id_name(HX_NOISE_ID_B1_RN), "b1+rn");
 }
 
+/* R(m) = MVAR / AVAR at m = 1: the two are the same estimate there, so R
+ * is 1 whatever the noise, exactly white phase noise's expected 1 / m and
+ * above flicker phase noise's 0.75 (the formula's, for larger m). The
+ * split at the geometric mean put +2 below it and +1 above, which holds
+ * only while 1 / m < the flicker value (m >= 2): at m = 1 every record that
+ * B1 called phase noise was named flicker phase noise (+1), a white phase
+ * of 21 samples too (400 white phases of 20 averages: all 344 of B1's
+ * phase answers +1; `harness allan --series` of 25 samples printed alpha 1
+ * b1+rn at tau 1). The nearer expected value on a log scale (the same split
+ * for m >= 2) gives +2. */
+static void test_noise_id_rn_at_one_sample(void **state)
+{
+    static double x[21];
+    uint64_t r = 88172645463325252ull; /* xorshift64, as test_noise_id_edges: uniform white phase */
+    size_t n;
+    int alpha = 99;
+    hx_noise_id_t how = HX_NOISE_ID_SLOPE;
+    (void)state;
+    for (n = 0; n < 21u; n++) {
+        r ^= r << 13;
+        r ^= r >> 7;
+        r ^= r << 17;
+        x[n] = (double)(r >> 11) / 9007199254740992.0 - 0.5;
+    }
+    assert_int_equal(hx_allan_noise_id_acf(x, 21u, 1u, &alpha, &how), 0); /* 20 averages: B1 */
+    assert_int_equal(how, HX_NOISE_ID_B1_RN);
+    assert_int_equal(alpha, 2);
+}
+
 /* The sample count's end (a review, 2026-11-28): 2^32 - 1 samples give
  * 2^32 phase values, which n_phase (uint32_t) cannot hold: it read 0, and
  * fnav_allan_edf() then called every estimate undefined. 12.4 days at
@@ -2182,6 +2211,7 @@ int main(void)
         cmocka_unit_test(test_edf_single_term),
         cmocka_unit_test(test_avar_record_ramp),
         cmocka_unit_test(test_noise_id_edges),
+        cmocka_unit_test(test_noise_id_rn_at_one_sample),
         cmocka_unit_test(test_sample_count_end),
         cmocka_unit_test(test_nonoverlap_count_end),
         cmocka_unit_test(test_paper_readings),

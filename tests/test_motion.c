@@ -163,6 +163,40 @@ static void check_strapdown(const char *scenario)
     hx_motion_free(m);
 }
 
+/* The same with the sensor mounted at a general attitude on the foot
+ * (roll, pitch and yaw all non-zero): q_nb = q_nf (x) q_fs, w_b = C_sf w_f
+ * and f_b = C_bn (a_n - g_n) must agree. Every other check used a level
+ * mounting or a pure yaw, and compared f_b and w_b only: a hand-made
+ * mutant composing q_fs (x) q_nf passed test_motion, test_sim, test_simnav
+ * and test_mc (the ident review, 2026-12-01); it fails here at once
+ * (attitude off by the mounting's rotation). */
+static void test_strapdown_mounted(void **state)
+{
+    hx_motion_config_t c = hx_motion_config_default();
+    char err[256];
+    hx_motion_t *m;
+    hx_truth_t o;
+    nav_t x;
+    double perr;
+    int j;
+    (void)state;
+    c.mount_deg[0] = 10.0;
+    c.mount_deg[1] = -20.0;
+    c.mount_deg[2] = 30.0;
+    m = hx_motion_create(&c, "stand:1,walk:6:120,turn:-135,stairs-down:5:30,run:8,elevator:3,home", 0.0, err,
+                         sizeof err);
+    assert_non_null(m);
+    integrate(m, 5e-5, &x, 9.80665, &perr);
+    hx_motion_eval(m, hx_motion_duration(m), &o);
+    for (j = 0; j < 3; j++) {
+        FNAV_ASSERT_CLOSE(x.p[j], o.pos_m[j], 1e-6, 0.0);
+        FNAV_ASSERT_CLOSE(x.v[j], o.vel_mps[j], 1e-7, 0.0);
+    }
+    assert_true(perr < 1e-6);
+    assert_true(qangle(x.q, o.q_nb) < 1e-8);
+    hx_motion_free(m);
+}
+
 static double final_perr(const hx_motion_t *m, double hmax)
 {
     hx_truth_t o;
@@ -298,6 +332,45 @@ static void test_still_is_exactly_still(void **state)
     (void)state;
     still_is_exactly_still("walk");
     still_is_exactly_still("run");
+}
+
+/* Without the shoe's ringing (--ring-scale 0: ring_mps2 = 0) the foot is at
+ * rest from the end of the slap: wherever the stance's truth is exactly
+ * still (velocity, acceleration and rate 0) it is flagged still and
+ * zero_vel. The stance was flagged still only from contact + ring_s on,
+ * the ringing's end though no ringing was made: the running slap (6 % of
+ * 0.706 s, 42 ms) is shorter than ring_s (50 ms), so every running stance
+ * began with 7.6 ms at exact rest flagged moving (the ident review). */
+static void test_still_without_ringing(void **state)
+{
+    hx_motion_config_t c = hx_motion_config_default();
+    char err[256];
+    hx_motion_t *m;
+    double T, t;
+    long rest = 0, missed = 0;
+    (void)state;
+    c.run.ring_mps2 = 0.0;
+    m = hx_motion_create(&c, "stand:1,run:12,stand:1", 0.0, err, sizeof err);
+    assert_non_null(m);
+    T = hx_motion_duration(m);
+    for (t = 0.0; t < T; t += 2e-4) {
+        hx_truth_t o;
+        int j, zero = 1;
+        hx_motion_eval(m, t, &o);
+        for (j = 0; j < 3; j++) {
+            zero = zero && o.vel_mps[j] == 0.0 && o.acc_mps2[j] == 0.0 && o.w_b[j] == 0.0;
+        }
+        if (zero && o.phase == HX_PHASE_STILL) {
+            rest++;
+            missed += !o.zero_vel;
+        }
+    }
+    if (missed > 0) {
+        fprintf(stderr, "run without ringing: %ld of %ld samples at exact rest not flagged zero_vel\n", missed, rest);
+    }
+    assert_true(rest > 1000);
+    assert_int_equal(missed, 0);
+    hx_motion_free(m);
 }
 
 /* A stance detector looks at short windows of |w| and |f| - g. While the
@@ -611,7 +684,9 @@ int main(void)
         cmocka_unit_test(test_strapdown_walk),
         cmocka_unit_test(test_strapdown_run_stairs_elevator),
         cmocka_unit_test(test_strapdown_detects_inconsistency),
+        cmocka_unit_test(test_strapdown_mounted),
         cmocka_unit_test(test_still_is_exactly_still),
+        cmocka_unit_test(test_still_without_ringing),
         cmocka_unit_test(test_no_quiet_window_in_motion),
         cmocka_unit_test(test_closed_loops_and_odometer),
         cmocka_unit_test(test_stairs_and_elevator_heights),
