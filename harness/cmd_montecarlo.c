@@ -82,7 +82,13 @@ static stats_t stats_of(const double *x, int n)
         s.mean = sum / k;
         s.rms = sqrt(sq / k);
         if (k > 1) {
-            s.sd = sqrt((sq - sum * sum / k) / (k - 1));
+            /* two passes: the one-pass sum of squares less k mean^2 came
+             * out a rounding below 0 for runs that agree, and its root NaN */
+            double ss = 0.0;
+            for (i = 0; i < k; i++) {
+                ss += (v[i] - s.mean) * (v[i] - s.mean);
+            }
+            s.sd = sqrt(ss / (k - 1));
             /* half-width of the mean's 95 % interval: Student's t with
              * k - 1 degrees of freedom (1.96, the normal's, made 3 runs'
              * interval less than half as wide as it is) */
