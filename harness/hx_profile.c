@@ -136,6 +136,14 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
                 return -1;
             }
             p->rate_hz = (fnav_real_t)v;
+            if (!(p->rate_hz > FNAV_R(0.0))) {
+                /* 1e-50 is 0 in float: said at its line (it was "a value
+                 * is zero ... in the float build", no line, no key) */
+                snprintf(err, err_size, "%s:%d: rate_hz '%s' is 0 in the %s build (out of its range)", path, lineno,
+                         val, FNAV_USE_DOUBLE ? "double" : "float");
+                fclose(f);
+                return -1;
+            }
             have_rate = 1;
         } else {
             for (i = 0; i < 6; i++) {
@@ -157,6 +165,16 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
                             return -1;
                         }
                         dst[k] = (fnav_real_t)v;
+                        if (!isfinite(dst[k]) || !(dst[k] > FNAV_R(0.0))) {
+                            /* positive in double, not in the working
+                             * precision (1e39, 1e-50 in float): at its line */
+                            const char *num = s + strspn(s, " \t");
+                            snprintf(err, err_size, "%s:%d: %s value %d '%.*s' is %s in the %s build (out of its range)",
+                                     path, lineno, key, k + 1, (int)(end - num), num,
+                                     isfinite(dst[k]) ? "0" : "infinite", FNAV_USE_DOUBLE ? "double" : "float");
+                            fclose(f);
+                            return -1;
+                        }
                         s = end;
                     }
                     if (*trim(s) != '\0') {

@@ -325,6 +325,54 @@ static void test_file_round_trip(void **state)
     assert_null(strstr(err, "not a footnav profile"));
 }
 
+/* A value positive and finite as read (double) but not in the working
+ * precision (float: 1e39 is infinite, 1e-50 zero) is refused at its line,
+ * naming the key: the error said only "a value is zero, negative or not
+ * finite in the float build", without line or key (a review, 2026-12-01).
+ * The double build takes both values. */
+static void test_file_out_of_float_range(void **state)
+{
+    static const char *const lines[4] = { "gyro_tau_s = 100 100 1e39\n", "accel_noise_mps2_rthz = 1e-4 1e-50 1e-4\n",
+                                          "rate_hz = 1e-50\n", "rate_hz = 1e-50\r\n" };
+    static const char *const keys[4] = { "gyro_tau_s", "accel_noise_mps2_rthz", "rate_hz", "rate_hz" };
+    char path[] = "/tmp/fnav_profile_XXXXXX", err[320];
+    fnav_profile_t b;
+    int fd, k;
+    (void)state;
+    fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    for (k = 0; k < 4; k++) {
+        FILE *f = fopen(path, "w");
+        int i;
+        assert_non_null(f);
+        fputs("format = footnav-profile 1\n", f);
+        if (k < 2) {
+            fputs("rate_hz = 200\n", f);
+        }
+        fputs(lines[k], f);
+        for (i = 0; i < 6; i++) {
+            static const char *const all[6] = { "accel_noise_mps2_rthz", "accel_tau_s", "accel_bias_sigma_mps2",
+                                                 "gyro_noise_rps_rthz", "gyro_tau_s", "gyro_bias_sigma_rps" };
+            if (strcmp(all[i], keys[k]) != 0) {
+                fprintf(f, "%s = 1e-3 1e-3 1e-3\n", all[i]);
+            }
+        }
+        fclose(f);
+        err[0] = '\0';
+#if FNAV_USE_DOUBLE
+        assert_int_equal(hx_profile_read(path, &b, err, sizeof err), 0);
+        assert_int_equal(fnav_profile_validate(&b), FNAV_OK);
+#else
+        assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
+        assert_non_null(strstr(err, k < 2 ? ":3:" : ":2:"));
+        assert_non_null(strstr(err, keys[k]));
+        assert_non_null(strstr(err, "float"));
+#endif
+    }
+    remove(path);
+}
+
 /* The built-in generic MEMS profile (the navigation's default) is the file
  * docs/profiles/generic-mems.profile, value for value (the evidence runs
  * of docs/navigation.md load the file), and the default configuration's
@@ -366,6 +414,7 @@ int main(void)
         cmocka_unit_test(test_ar1_units),
         cmocka_unit_test(test_validate),
         cmocka_unit_test(test_file_round_trip),
+        cmocka_unit_test(test_file_out_of_float_range),
         cmocka_unit_test(test_generic_mems),
     };
     return cmocka_run_group_tests_name("profile", tests, NULL, NULL);
