@@ -257,35 +257,64 @@ int hx_profile_write_extra(const char *path, const fnav_profile_t *p, const char
     return 0;
 }
 
+/* The advice of a flagged value v of a key in unit `key_unit`: the units
+ * it was most likely written in, a (factor fa, spelt fa_txt) and b, each
+ * named when v converted from it is itself within `limit` (the key's
+ * bound, in the key's unit), both when neither or both are. */
+static void units_advice(char *buf, size_t n, double v, double limit, const char *key_unit, const char *ua, double fa,
+                         const char *fa_txt, const char *ub, double fb, const char *fb_txt)
+{
+    const int ok_a = v * fa <= limit, ok_b = v * fb <= limit;
+    if (ok_a != ok_b) {
+        snprintf(buf, n, "in %s? the key is in %s (x %s = %.3g)", ok_a ? ua : ub, key_unit, ok_a ? fa_txt : fb_txt,
+                 v * (ok_a ? fa : fb));
+    } else {
+        snprintf(buf, n, "in %s or %s? the key is in %s (x %s = %.3g from %s, x %s = %.3g from %s)", ua, ub, key_unit,
+                 fa_txt, v * fa, ua, fb_txt, v * fb, ub);
+    }
+}
+
 int hx_profile_implausible(const fnav_profile_t *p, char *msg, size_t n)
 {
+    /* the bounds in the keys' units; the advice names the datasheet units
+     * too: a gyro's angle random walk in deg/sqrt(h) and bias instability
+     * in deg/h, an accelerometer's noise and bias in ug. Only deg/s and mg
+     * were named, and followed (10 deg/h written as 10 -> 0.175 rad/s) the
+     * value stayed thousands of times too large, no longer flagged (a
+     * review, 2026-12-01) */
     const double pi = 3.14159265358979323846, g = 9.80665;
+    const double wn_max = pi / 180.0, an_max = 0.01 * g, wb_max = 10.0 * pi / 180.0, ab_max = 0.1 * g;
+    char adv[224];
     int i;
     for (i = 0; i < 3; i++) {
         const double wn = (double)p->gyro_noise_rps_rthz[i], an = (double)p->accel_noise_mps2_rthz[i];
         const double wb = (double)p->gyro_bias_sigma_rps[i], ab = (double)p->accel_bias_sigma_mps2[i];
-        if (wn > pi / 180.0) {
-            snprintf(msg, n, "gyro_noise_rps_rthz %g is %.3g deg/s/sqrt(Hz), above any IMU's (1 deg/s/sqrt(Hz)): in "
-                             "deg/s/sqrt(Hz)? the key is in rad/s/sqrt(Hz) (x pi/180 = %.3g)",
-                     wn, wn * 180.0 / pi, wn * pi / 180.0);
+        if (wn > wn_max) {
+            units_advice(adv, sizeof adv, wn, wn_max, "rad/s/sqrt(Hz)", "deg/s/sqrt(Hz)", pi / 180.0, "pi/180",
+                         "deg/sqrt(h)", pi / 10800.0, "pi/10800");
+            snprintf(msg, n, "gyro_noise_rps_rthz %g is %.3g deg/s/sqrt(Hz), above any IMU's (1 deg/s/sqrt(Hz)): %s", wn,
+                     wn * 180.0 / pi, adv);
             return 1;
         }
-        if (an > 0.01 * g) {
-            snprintf(msg, n, "accel_noise_mps2_rthz %g is %.3g mg/sqrt(Hz), above any IMU's (10 mg/sqrt(Hz)): in "
-                             "mg/sqrt(Hz)? the key is in m/s^2/sqrt(Hz) (x 0.00980665 = %.3g)",
-                     an, 1e3 * an / g, an * g / 1e3);
+        if (an > an_max) {
+            units_advice(adv, sizeof adv, an, an_max, "m/s^2/sqrt(Hz)", "mg/sqrt(Hz)", g / 1e3, "0.00980665",
+                         "ug/sqrt(Hz)", g / 1e6, "9.80665e-6");
+            snprintf(msg, n, "accel_noise_mps2_rthz %g is %.3g mg/sqrt(Hz), above any IMU's (10 mg/sqrt(Hz)): %s", an,
+                     1e3 * an / g, adv);
             return 1;
         }
-        if (wb > 10.0 * pi / 180.0) {
-            snprintf(msg, n, "gyro_bias_sigma_rps %g is %.3g deg/s, above any IMU's in-run bias (10 deg/s): in deg/s? "
-                             "the key is in rad/s (x pi/180 = %.3g)",
-                     wb, wb * 180.0 / pi, wb * pi / 180.0);
+        if (wb > wb_max) {
+            units_advice(adv, sizeof adv, wb, wb_max, "rad/s", "deg/s", pi / 180.0, "pi/180", "deg/h", pi / 648000.0,
+                         "pi/648000");
+            snprintf(msg, n, "gyro_bias_sigma_rps %g is %.3g deg/s, above any IMU's in-run bias (10 deg/s): %s", wb,
+                     wb * 180.0 / pi, adv);
             return 1;
         }
-        if (ab > 0.1 * g) {
-            snprintf(msg, n, "accel_bias_sigma_mps2 %g is %.3g g, above any IMU's in-run bias (0.1 g): in mg? the key "
-                             "is in m/s^2 (x 0.00980665 = %.3g)",
-                     ab, ab / g, ab * g / 1e3);
+        if (ab > ab_max) {
+            units_advice(adv, sizeof adv, ab, ab_max, "m/s^2", "mg", g / 1e3, "0.00980665", "ug", g / 1e6,
+                         "9.80665e-6");
+            snprintf(msg, n, "accel_bias_sigma_mps2 %g is %.3g g, above any IMU's in-run bias (0.1 g): %s", ab, ab / g,
+                     adv);
             return 1;
         }
     }

@@ -373,6 +373,49 @@ static void test_file_out_of_float_range(void **state)
     remove(path);
 }
 
+/* The units check's advice (hx_profile_implausible): a value flagged in
+ * its key's unit names the units it was most likely written in, with the
+ * value converted from each. Datasheets give a gyro's bias instability in
+ * deg/h, its angle random walk in deg/sqrt(h) and an accelerometer's noise
+ * and bias in ug: the advice named only deg/s, deg/s/sqrt(Hz) and mg, and
+ * followed (10 deg/h written as 10 -> 0.175 rad/s, 50 ug as 50 -> 0.49
+ * m/s^2) gave a value 3600 or 1000 times too large that was no longer
+ * flagged (a review, 2026-12-01). */
+static void test_units_advice(void **state)
+{
+    static const struct {
+        int which; /* 0 gyro noise, 1 accel noise, 2 gyro bias, 3 accel bias */
+        double v;
+        const char *want[2], *not_want;
+    } cases[] = {
+        { 2, 10.0, { "deg/h", "4.85e-05" }, NULL },            /* generic-mems' 10 deg/h, as written */
+        { 0, 0.3, { "deg/sqrt(h)", "8.73e-05" }, NULL },       /* an ARW of 0.3 deg/sqrt(h) */
+        { 1, 70.0, { "ug/sqrt(Hz)", "0.000686" }, "in mg" },   /* the ICM-42688-P's 70 ug/sqrt(Hz) */
+        { 3, 50.0, { " ug", "0.00049" }, NULL },                /* generic-mems' 50 ug */
+        { 0, 0.0396, { "deg/s/sqrt(Hz)", "0.000691" }, NULL }, /* still said: the ADIS16405's deg/s/sqrt(Hz) */
+        { 3, 5.0, { "mg", "0.049" }, NULL },                   /* still said: 5 mg */
+    };
+    size_t k;
+    (void)state;
+    for (k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        fnav_profile_t p;
+        char msg[320];
+        fnav_real_t *v;
+        assert_int_equal(fnav_profile_by_name(&p, "generic-mems"), FNAV_OK);
+        assert_int_equal(hx_profile_implausible(&p, msg, sizeof msg), 0);
+        v = cases[k].which == 0   ? p.gyro_noise_rps_rthz
+            : cases[k].which == 1 ? p.accel_noise_mps2_rthz
+            : cases[k].which == 2 ? p.gyro_bias_sigma_rps
+                                  : p.accel_bias_sigma_mps2;
+        v[0] = v[1] = v[2] = (fnav_real_t)cases[k].v;
+        assert_int_equal(hx_profile_implausible(&p, msg, sizeof msg), 1);
+        if (strstr(msg, cases[k].want[0]) == NULL || strstr(msg, cases[k].want[1]) == NULL ||
+            (cases[k].not_want != NULL && strstr(msg, cases[k].not_want) != NULL)) {
+            fail_msg("case %zu: '%s'", k, msg);
+        }
+    }
+}
+
 /* The built-in generic MEMS profile (the navigation's default) is the file
  * docs/profiles/generic-mems.profile, value for value (the evidence runs
  * of docs/navigation.md load the file), and the default configuration's
@@ -415,6 +458,7 @@ int main(void)
         cmocka_unit_test(test_validate),
         cmocka_unit_test(test_file_round_trip),
         cmocka_unit_test(test_file_out_of_float_range),
+        cmocka_unit_test(test_units_advice),
         cmocka_unit_test(test_generic_mems),
     };
     return cmocka_run_group_tests_name("profile", tests, NULL, NULL);
