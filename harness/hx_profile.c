@@ -71,7 +71,7 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
     FILE *f = fopen(path, "r");
     char line[513]; /* 511 characters (profile-format.md), a CR and the terminator */
     long len;
-    int lineno = 0, have_magic = 0, have_rate = 0, have[6] = { 0, 0, 0, 0, 0, 0 };
+    int lineno = 0, have_magic = 0, have_rate = 0, have_name = 0, have[6] = { 0, 0, 0, 0, 0, 0 };
     int i;
     if (f == NULL) {
         snprintf(err, err_size, "%s: cannot open profile (%s)", path, strerror(errno));
@@ -110,9 +110,11 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
         *eq = '\0';
         key = trim(key);
         val = trim(eq + 1);
-        if ((strcmp(key, "format") == 0 && have_magic) || (strcmp(key, "rate_hz") == 0 && have_rate)) {
-            /* a required key given twice: which one was meant is not known
-             * (the last one won silently; a review, 2026-11-28) */
+        if ((strcmp(key, "format") == 0 && have_magic) || (strcmp(key, "rate_hz") == 0 && have_rate) ||
+            (strcmp(key, "name") == 0 && have_name)) {
+            /* a key given twice: which one was meant is not known (the
+             * last one won silently; a review, 2026-11-28; name too,
+             * 2026-12-01) */
             snprintf(err, err_size, "%s:%d: %s given twice", path, lineno, key);
             fclose(f);
             return -1;
@@ -127,6 +129,7 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
             have_magic = 1;
         } else if (strcmp(key, "name") == 0) {
             snprintf(p->name, sizeof p->name, "%s", val);
+            have_name = 1;
         } else if (strcmp(key, "rate_hz") == 0) {
             char *end;
             double v = strtod(val, &end);

@@ -267,6 +267,15 @@ static void test_file_round_trip(void **state)
     fclose(f);
     assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
     assert_non_null(strstr(err, "gyro_tau_s given twice"));
+    /* name too: the last one was taken without a word (a review,
+     * 2026-12-01); its line is named */
+    assert_int_equal(hx_profile_write(path, &a, NULL, err, sizeof err), 0);
+    f = fopen(path, "a");
+    assert_non_null(f);
+    fputs("name = other\n", f);
+    fclose(f);
+    assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
+    assert_non_null(strstr(err, ":11: name given twice"));
     {
         static const double rates[3] = { 1e6, 1.0000001e6, 2e6 };
         int k;
