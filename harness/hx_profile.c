@@ -97,7 +97,13 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
             fclose(f);
             return -1;
         }
-        key = trim(line);
+        key = line;
+        if (lineno == 1 && len >= 3 && memcmp(key, "\xef\xbb\xbf", 3) == 0) {
+            /* a UTF-8 byte order mark (an editor's), skipped as the CSV
+             * reader does: the file read as "not a footnav profile" */
+            key += 3;
+        }
+        key = trim(key);
         if (*key == '\0' || *key == '#') {
             continue;
         }
