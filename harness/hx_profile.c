@@ -71,7 +71,7 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
     FILE *f = fopen(path, "r");
     char line[513]; /* 511 characters (profile-format.md), a CR and the terminator */
     long len;
-    int lineno = 0, have_magic = 0, have_rate = 0, have[6] = { 0, 0, 0, 0, 0, 0 };
+    int lineno = 0, have_magic = 0, have_rate = 0, have_name = 0, have[6] = { 0, 0, 0, 0, 0, 0 };
     int i;
     if (f == NULL) {
         snprintf(err, err_size, "%s: cannot open profile (%s)", path, strerror(errno));
@@ -97,7 +97,13 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
             fclose(f);
             return -1;
         }
-        key = trim(line);
+        key = line;
+        if (lineno == 1 && len >= 3 && memcmp(key, "\xef\xbb\xbf", 3) == 0) {
+            /* a UTF-8 byte order mark (an editor's), skipped as the CSV
+             * reader does: the file read as "not a footnav profile" */
+            key += 3;
+        }
+        key = trim(key);
         if (*key == '\0' || *key == '#') {
             continue;
         }
@@ -110,9 +116,11 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
         *eq = '\0';
         key = trim(key);
         val = trim(eq + 1);
-        if ((strcmp(key, "format") == 0 && have_magic) || (strcmp(key, "rate_hz") == 0 && have_rate)) {
-            /* a required key given twice: which one was meant is not known
-             * (the last one won silently; a review, 2026-11-28) */
+        if ((strcmp(key, "format") == 0 && have_magic) || (strcmp(key, "rate_hz") == 0 && have_rate) ||
+            (strcmp(key, "name") == 0 && have_name)) {
+            /* a key given twice: which one was meant is not known (the
+             * last one won silently; a review, 2026-11-28; name too,
+             * 2026-12-01) */
             snprintf(err, err_size, "%s:%d: %s given twice", path, lineno, key);
             fclose(f);
             return -1;
@@ -127,6 +135,7 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
             have_magic = 1;
         } else if (strcmp(key, "name") == 0) {
             snprintf(p->name, sizeof p->name, "%s", val);
+            have_name = 1;
         } else if (strcmp(key, "rate_hz") == 0) {
             char *end;
             double v = strtod(val, &end);
@@ -136,6 +145,14 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
                 return -1;
             }
             p->rate_hz = (fnav_real_t)v;
+            if (!(p->rate_hz > FNAV_R(0.0))) {
+                /* 1e-50 is 0 in float: said at its line (it was "a value
+                 * is zero ... in the float build", no line, no key) */
+                snprintf(err, err_size, "%s:%d: rate_hz '%s' is 0 in the %s build (out of its range)", path, lineno,
+                         val, FNAV_USE_DOUBLE ? "double" : "float");
+                fclose(f);
+                return -1;
+            }
             have_rate = 1;
         } else {
             for (i = 0; i < 6; i++) {
@@ -157,6 +174,16 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
                             return -1;
                         }
                         dst[k] = (fnav_real_t)v;
+                        if (!isfinite(dst[k]) || !(dst[k] > FNAV_R(0.0))) {
+                            /* positive in double, not in the working
+                             * precision (1e39, 1e-50 in float): at its line */
+                            const char *num = s + strspn(s, " \t");
+                            snprintf(err, err_size, "%s:%d: %s value %d '%.*s' is %s in the %s build (out of its range)",
+                                     path, lineno, key, k + 1, (int)(end - num), num,
+                                     isfinite(dst[k]) ? "0" : "infinite", FNAV_USE_DOUBLE ? "double" : "float");
+                            fclose(f);
+                            return -1;
+                        }
                         s = end;
                     }
                     if (*trim(s) != '\0') {
@@ -239,35 +266,64 @@ int hx_profile_write_extra(const char *path, const fnav_profile_t *p, const char
     return 0;
 }
 
+/* The advice of a flagged value v of a key in unit `key_unit`: the units
+ * it was most likely written in, a (factor fa, spelt fa_txt) and b, each
+ * named when v converted from it is itself within `limit` (the key's
+ * bound, in the key's unit), both when neither or both are. */
+static void units_advice(char *buf, size_t n, double v, double limit, const char *key_unit, const char *ua, double fa,
+                         const char *fa_txt, const char *ub, double fb, const char *fb_txt)
+{
+    const int ok_a = v * fa <= limit, ok_b = v * fb <= limit;
+    if (ok_a != ok_b) {
+        snprintf(buf, n, "in %s? the key is in %s (x %s = %.3g)", ok_a ? ua : ub, key_unit, ok_a ? fa_txt : fb_txt,
+                 v * (ok_a ? fa : fb));
+    } else {
+        snprintf(buf, n, "in %s or %s? the key is in %s (x %s = %.3g from %s, x %s = %.3g from %s)", ua, ub, key_unit,
+                 fa_txt, v * fa, ua, fb_txt, v * fb, ub);
+    }
+}
+
 int hx_profile_implausible(const fnav_profile_t *p, char *msg, size_t n)
 {
+    /* the bounds in the keys' units; the advice names the datasheet units
+     * too: a gyro's angle random walk in deg/sqrt(h) and bias instability
+     * in deg/h, an accelerometer's noise and bias in ug. Only deg/s and mg
+     * were named, and followed (10 deg/h written as 10 -> 0.175 rad/s) the
+     * value stayed thousands of times too large, no longer flagged (a
+     * review, 2026-12-01) */
     const double pi = 3.14159265358979323846, g = 9.80665;
+    const double wn_max = pi / 180.0, an_max = 0.01 * g, wb_max = 10.0 * pi / 180.0, ab_max = 0.1 * g;
+    char adv[224];
     int i;
     for (i = 0; i < 3; i++) {
         const double wn = (double)p->gyro_noise_rps_rthz[i], an = (double)p->accel_noise_mps2_rthz[i];
         const double wb = (double)p->gyro_bias_sigma_rps[i], ab = (double)p->accel_bias_sigma_mps2[i];
-        if (wn > pi / 180.0) {
-            snprintf(msg, n, "gyro_noise_rps_rthz %g is %.3g deg/s/sqrt(Hz), above any IMU's (1 deg/s/sqrt(Hz)): in "
-                             "deg/s/sqrt(Hz)? the key is in rad/s/sqrt(Hz) (x pi/180 = %.3g)",
-                     wn, wn * 180.0 / pi, wn * pi / 180.0);
+        if (wn > wn_max) {
+            units_advice(adv, sizeof adv, wn, wn_max, "rad/s/sqrt(Hz)", "deg/s/sqrt(Hz)", pi / 180.0, "pi/180",
+                         "deg/sqrt(h)", pi / 10800.0, "pi/10800");
+            snprintf(msg, n, "gyro_noise_rps_rthz %g is %.3g deg/s/sqrt(Hz), above any IMU's (1 deg/s/sqrt(Hz)): %s", wn,
+                     wn * 180.0 / pi, adv);
             return 1;
         }
-        if (an > 0.01 * g) {
-            snprintf(msg, n, "accel_noise_mps2_rthz %g is %.3g mg/sqrt(Hz), above any IMU's (10 mg/sqrt(Hz)): in "
-                             "mg/sqrt(Hz)? the key is in m/s^2/sqrt(Hz) (x 0.00980665 = %.3g)",
-                     an, 1e3 * an / g, an * g / 1e3);
+        if (an > an_max) {
+            units_advice(adv, sizeof adv, an, an_max, "m/s^2/sqrt(Hz)", "mg/sqrt(Hz)", g / 1e3, "0.00980665",
+                         "ug/sqrt(Hz)", g / 1e6, "9.80665e-6");
+            snprintf(msg, n, "accel_noise_mps2_rthz %g is %.3g mg/sqrt(Hz), above any IMU's (10 mg/sqrt(Hz)): %s", an,
+                     1e3 * an / g, adv);
             return 1;
         }
-        if (wb > 10.0 * pi / 180.0) {
-            snprintf(msg, n, "gyro_bias_sigma_rps %g is %.3g deg/s, above any IMU's in-run bias (10 deg/s): in deg/s? "
-                             "the key is in rad/s (x pi/180 = %.3g)",
-                     wb, wb * 180.0 / pi, wb * pi / 180.0);
+        if (wb > wb_max) {
+            units_advice(adv, sizeof adv, wb, wb_max, "rad/s", "deg/s", pi / 180.0, "pi/180", "deg/h", pi / 648000.0,
+                         "pi/648000");
+            snprintf(msg, n, "gyro_bias_sigma_rps %g is %.3g deg/s, above any IMU's in-run bias (10 deg/s): %s", wb,
+                     wb * 180.0 / pi, adv);
             return 1;
         }
-        if (ab > 0.1 * g) {
-            snprintf(msg, n, "accel_bias_sigma_mps2 %g is %.3g g, above any IMU's in-run bias (0.1 g): in mg? the key "
-                             "is in m/s^2 (x 0.00980665 = %.3g)",
-                     ab, ab / g, ab * g / 1e3);
+        if (ab > ab_max) {
+            units_advice(adv, sizeof adv, ab, ab_max, "m/s^2", "mg", g / 1e3, "0.00980665", "ug", g / 1e6,
+                         "9.80665e-6");
+            snprintf(msg, n, "accel_bias_sigma_mps2 %g is %.3g g, above any IMU's in-run bias (0.1 g): %s", ab, ab / g,
+                     adv);
             return 1;
         }
     }

@@ -24,8 +24,11 @@ int hx_profile_write(const char *path, const fnav_profile_t *p, const char *comm
 int hx_profile_write_extra(const char *path, const fnav_profile_t *p, const char *comment, const char *extra,
                            char *err, size_t err_size);
 
-/** 1 with @p msg filled (the key, its value, the unit it most likely is
- *  in) when a value lies beyond any IMU's in its key's unit: a gyro noise
+/** 1 with @p msg filled (the key, its value, the units it most likely is
+ *  in, with the value converted from each: deg/s/sqrt(Hz) or deg/sqrt(h),
+ *  mg/sqrt(Hz) or ug/sqrt(Hz), deg/s or deg/h, mg or ug, each named when
+ *  its conversion is within the bound) when a value lies beyond any IMU's
+ *  in its key's unit: a gyro noise
  *  above 1 deg/s/sqrt(Hz), an accelerometer noise above 10 mg/sqrt(Hz), a
  *  gyro bias sd above 10 deg/s, an accelerometer bias sd above 0.1 g
  *  (docs/profile-format.md); else 0. */

@@ -73,8 +73,8 @@ static void test_maps(void **state)
  * formula f_b = R(u, theta)^T (0, 0, g)
  *   = g (-u_y s + u_x u_z c', u_x s + u_y u_z c', cos theta + u_z^2 c'),
  * s = sin theta, c' = 1 - cos theta (u_z = 0: g (-u_y s, u_x s, cos theta)),
- * and the rate theta' u. gyro_sign flips gx, swap exchanges gx and
- * gy in the "recorded" samples. Frames reach the check lag samples late.
+ * and the rate theta' u. gyro_sign flips gx, swap 1 exchanges gx and
+ * gy in the "recorded" samples, swap 2 records (gy, gz, gx). Frames reach the check lag samples late.
  * The verdict in r. */
 static void walk_about(int n, double gyro_sign, int swap, size_t lag, double beta, hx_axes_result_t *r)
 {
@@ -105,9 +105,15 @@ static void walk_about(int n, double gyro_sign, int swap, size_t lag, double bet
             s.accel_mps2[0] = (fnav_real_t)f[0];
             s.accel_mps2[1] = (fnav_real_t)f[1];
             s.accel_mps2[2] = (fnav_real_t)f[2];
-            s.gyro_rps[0] = (fnav_real_t)(gyro_sign * (swap ? gy : gx));
-            s.gyro_rps[1] = (fnav_real_t)(swap ? gx : gy);
-            s.gyro_rps[2] = (fnav_real_t)(w * uz);
+            if (swap == 2) { /* a logger's cyclic map: recorded (gy, gz, gx) */
+                s.gyro_rps[0] = (fnav_real_t)(gyro_sign * gy);
+                s.gyro_rps[1] = (fnav_real_t)(w * uz);
+                s.gyro_rps[2] = (fnav_real_t)gx;
+            } else {
+                s.gyro_rps[0] = (fnav_real_t)(gyro_sign * (swap ? gy : gx));
+                s.gyro_rps[1] = (fnav_real_t)(swap ? gx : gy);
+                s.gyro_rps[2] = (fnav_real_t)(w * uz);
+            }
             fr[i].t_ns = s.t_ns;
             fr[i].flags = (ts <= 0.0 || step >= (size_t)n) ? FNAV_FRAME_ZUPT : 0u;
             hx_axes_sample(a, &s);
@@ -175,6 +181,27 @@ static void test_flipped_and_swapped(void **state)
     assert_string_equal(r.best_map, "(gy, gx, gz)");
 }
 
+/* A cyclic map (a 3-cycle is not its own inverse, unlike the flips and the
+ * swap above): the verdict names the map that restores the truth, read as
+ * out_i = s_i w_p(i), and hx_axes_map of that map turns the recorded rate
+ * back into the true one. A mutant applying the inverse permutation in
+ * hx_axes_map (o[p[i]] = w[i]) passed test_maps and every verdict above
+ * while the named map was the other 3-cycle. */
+static void test_cyclic_map(void **state)
+{
+    hx_axes_result_t r;
+    fnav_vec3_t truth = fnav_vec3(FNAV_R(0.1), FNAV_R(0.2), FNAV_R(0.3)), rec, back;
+    (void)state;
+    walk_about(12, 1.0, 2, 5, 20.0 * M_PI / 180.0, &r);
+    assert_int_equal(r.swings, 12);
+    assert_int_equal(r.problem, 1);
+    assert_string_equal(r.best_map, "(gz, gx, gy)");
+    assert_true(r.v_best_mps < 0.002);
+    rec = fnav_vec3(truth.v[1], truth.v[2], truth.v[0]); /* recorded as in walk_about, swap 2 */
+    back = hx_axes_map(r.best, rec);
+    assert_true(back.v[0] == truth.v[0] && back.v[1] == truth.v[1] && back.v[2] == truth.v[2]);
+}
+
 /* frames as far behind their samples as the ring holds, or further (a
  * navigator buffering a long alignment): swings whose samples were
  * overwritten are dropped, the rest judged on their own samples */
@@ -216,6 +243,7 @@ int main(void)
         cmocka_unit_test(test_recorded_map_right),
         cmocka_unit_test(test_nearest_rival),
         cmocka_unit_test(test_flipped_and_swapped),
+        cmocka_unit_test(test_cyclic_map),
         cmocka_unit_test(test_frames_behind_the_ring),
         cmocka_unit_test(test_too_few_swings),
     };

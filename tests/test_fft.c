@@ -144,6 +144,59 @@ static void test_real_tone(void **state)
     }
 }
 
+/* fnav_fft_cos_sin_2pi against long double, every k of n = 1..600 and of
+ * the largest transform lengths and their windows' (1023 .. 4097):
+ * the twiddles (8 | n, reduced to [0, pi/4]) and the symmetric window
+ * (n = nfft - 1, odd: reduced to [0, pi] only). Absolute error in units
+ * of the working precision's epsilon; the exact values at multiples of
+ * pi/2 are exact when 8 divides n (cos 0 = 1, sin 0 = 0 after the
+ * reduction). The worst errors are printed (the figures fnav_fft.h
+ * quotes). */
+static void test_cos_sin_2pi(void **state)
+{
+    static const uint32_t big[] = { 1023, 1024, 2047, 2048, 4095, 4096, 4097 };
+    uint32_t n, k, i;
+    double worst8 = 0.0, worst_other = 0.0, worst8_ulp = 0.0;
+    (void)state;
+    for (i = 0; i < 600u + sizeof big / sizeof big[0]; i++) {
+        n = i < 600u ? i + 1u : big[i - 600u];
+        for (k = 0; k < n; k++) {
+            fnav_real_t c, s;
+            const long double a = 6.283185307179586476925286766559L * (long double)k / (long double)n;
+            long double tc = cosl(a), ts = sinl(a);
+            double e;
+            if (4u * k == n || 4u * k == 3u * n) {
+                tc = 0.0L;
+            }
+            if (2u * k == n || k == 0u) {
+                ts = 0.0L;
+            }
+            fnav_fft_cos_sin_2pi(k, n, &c, &s);
+            e = fmax(fabs((double)c - (double)tc), fabs((double)s - (double)ts)) / (double)FNAV_REAL_EPSILON;
+            if (n % 8u == 0u) {
+                /* ulp of a value in [2^e, 2^(e+1)): epsilon 2^e */
+                const double uc = (double)tc == 0.0 ? 0.0
+                                                    : fabs((double)c - (double)tc) /
+                                                          ((double)FNAV_REAL_EPSILON * ldexp(1.0, ilogb((double)tc)));
+                const double us = (double)ts == 0.0 ? 0.0
+                                                    : fabs((double)s - (double)ts) /
+                                                          ((double)FNAV_REAL_EPSILON * ldexp(1.0, ilogb((double)ts)));
+                worst8 = fmax(worst8, e);
+                worst8_ulp = fmax(worst8_ulp, fmax(uc, us));
+                if (4u * k % n == 0u) { /* a multiple of pi/2: exact */
+                    assert_true(c == (fnav_real_t)tc && s == (fnav_real_t)ts);
+                }
+            } else {
+                worst_other = fmax(worst_other, e);
+            }
+        }
+    }
+    fprintf(stderr, "[  INFO    ] %s build: cos/sin(2 pi k / n) worst error %.2f eps (8 | n; %.2f ulp), %.2f eps (other n), n = 1..600, 1023..4097\n",
+            FNAV_USE_DOUBLE ? "double" : "float", worst8, worst8_ulp, worst_other);
+    assert_true(worst8 <= 1.0);
+    assert_true(worst_other <= 4.0);
+}
+
 static void test_init_errors(void **state)
 {
     static fnav_fft_t f;
@@ -161,6 +214,7 @@ int main(void)
         cmocka_unit_test(test_complex_vs_dft),
         cmocka_unit_test(test_real_vs_dft),
         cmocka_unit_test(test_real_tone),
+        cmocka_unit_test(test_cos_sin_2pi),
         cmocka_unit_test(test_init_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -143,13 +143,13 @@ else fail "1-minute log: the bound's T or sigma against the AR(1) Allan peak"; f
 cp docs/profiles/generic-mems.profile "$T/hand.profile"
 sed -i 's/^gyro_noise_rps_rthz = .*/gyro_noise_rps_rthz = 0.0396 0.0422 0.039/' "$T/hand.profile"
 expect_exit 0 "replay with a gyro noise in deg/s/sqrt(Hz)" "$H" replay vectors/walk.bin --quiet --profile "$T/hand.profile"
-expect_err "warning: $T/hand.profile: gyro_noise_rps_rthz 0.0396 is 2.27 deg/s/sqrt(Hz), above any IMU's (1 deg/s/sqrt(Hz)): in deg/s/sqrt(Hz)? the key is in rad/s/sqrt(Hz) (x pi/180 = 0.000691)" \
+expect_err "warning: $T/hand.profile: gyro_noise_rps_rthz 0.0396 is 2.27 deg/s/sqrt(Hz), above any IMU's (1 deg/s/sqrt(Hz)): in deg/s/sqrt(Hz) or deg/sqrt(h)? the key is in rad/s/sqrt(Hz) (x pi/180 = 0.000691 from deg/s/sqrt(Hz), x pi/10800 = 1.15e-05 from deg/sqrt(h))" \
     "a gyro noise in deg/s/sqrt(Hz): warned with the likely unit"
 [ "$(grep -c "above any IMU's" "$T/err")" -eq 1 ] && pass "one warning per profile" || fail "warnings: $(cat "$T/err")"
 cp docs/profiles/generic-mems.profile "$T/hand2.profile"
 sed -i 's/^accel_bias_sigma_mps2 = .*/accel_bias_sigma_mps2 = 5 5 8/' "$T/hand2.profile"
 expect_exit 0 "montecarlo with an accelerometer bias in mg" "$H" montecarlo --seeds 2 --duration 10 --quiet --profile "$T/hand2.profile"
-expect_err "warning: $T/hand2.profile: accel_bias_sigma_mps2 5 is 0.51 g, above any IMU's in-run bias (0.1 g): in mg? the key is in m/s^2 (x 0.00980665 = 0.049)" \
+expect_err "warning: $T/hand2.profile: accel_bias_sigma_mps2 5 is 0.51 g, above any IMU's in-run bias (0.1 g): in mg or ug? the key is in m/s^2 (x 0.00980665 = 0.049 from mg, x 9.80665e-6 = 4.9e-05 from ug)" \
     "an accelerometer bias in mg: warned with the likely unit"
 [ "$(grep -c "above any IMU's" "$T/err")" -eq 1 ] && pass "montecarlo: one warning for its profile" || fail "montecarlo warnings: $(grep -c "above any IMU's" "$T/err")"
 expect_exit 0 "replay with the generic profile file" "$H" replay vectors/walk.bin --quiet --profile docs/profiles/generic-mems.profile
