@@ -312,6 +312,21 @@ static void stated_rate_warn(const hx_log_t *log, const info_t *in, const char *
             path, in->rate_hz, hz, 1e3 / hz, path);
 }
 
+/* The rate line's figure: three decimals, and below 0.1 Hz as many more as
+ * keep three significant digits, where three decimals printed a log of one
+ * sample per 83 min (0.0002 Hz) as "0.000 Hz" until 2026-12-01
+ * (tests/cli/test_foundation.sh); from 0.1 Hz the line is as before */
+static const char *rate_str(double hz, char *buf, size_t size)
+{
+    int dec = 3;
+    double x;
+    for (x = hz; x > 0.0 && x < 0.1 && dec < 15; x *= 10.0) {
+        dec++;
+    }
+    snprintf(buf, size, "%.*f", dec, hz);
+    return buf;
+}
+
 /* A log that opens (a valid .bin header, a CSV header) but holds no sample:
  * hx_load_input has said why (the reader's error) and kept nothing. Until
  * 2026-12-01 that error was all: no report, and no JSON. The file is
@@ -329,6 +344,7 @@ static int report_empty(const hx_args_t *a, const char *path)
     hx_reader_t *r;
     hx_meta_t meta;
     fnav_sample_t s;
+    char hz[32];
     int rc = HX_EXIT_DATA;
     /* the options were checked by hx_check_input_opts: no message here */
     if (hx_arg(a, "--input-rate") != NULL && hx_arg_double(a, "--input-rate", 1e-3, 1e6, &in_rate) != 0) {
@@ -353,7 +369,7 @@ static int report_empty(const hx_args_t *a, const char *path)
     }
     printf("samples     0 (the file holds no sample: nothing to analyse)\n");
     if (meta.rate_nominal && meta.rate_hz > 0.0) {
-        printf("rate        %.3f Hz (nominal)\n", meta.rate_hz);
+        printf("rate        %s Hz (nominal)\n", rate_str(meta.rate_hz, hz, sizeof hz));
     } else {
         printf("rate        none (no sample gives no rate)\n");
     }
@@ -393,6 +409,7 @@ int hx_cmd_info(int argc, char **argv)
     info_t in;
     int rc = hx_args_parse(&k_spec, argc, argv, &a);
     int c, exit_code = HX_EXIT_OK;
+    char hz[32];
     static const char *const ch[6] = { "ax", "ay", "az", "gx", "gy", "gz" };
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
@@ -441,7 +458,7 @@ int hx_cmd_info(int argc, char **argv)
         /* which stamps, and how: replay's detector and --rate take other
          * estimates (199.44 and 200.1 Hz for a vicon trial that reads 200.000
          * here; the generalisation review, 2026-11-29) */
-        printf("rate        %.3f Hz (%s)\n", in.rate_hz,
+        printf("rate        %s Hz (%s)\n", rate_str(in.rate_hz, hz, sizeof hz),
                log.meta.rate_nominal ? "nominal"
                : log.meta.rate_hz <= 0.0 ? "from the time stamps: 1 / the median interval"
                : log.meta.rate_coarse ? "from the time stamps of the first 4,096 samples: their mean interval without gaps"
