@@ -41,6 +41,7 @@ typedef struct {
     int units_bad;     /* not SI units (hx_units_problem) */
     char units[768];   /* why, and the remedy */
     double gyro_max;   /* the largest |w| on one axis (the units check's) */
+    int empty;         /* no sample (report_empty): every figure but rate_hz is null in the JSON */
 } info_t;
 
 /* Clipping at full scale leaves flat tops at the channel's extreme value,
@@ -212,6 +213,19 @@ static void analyse(const hx_log_t *log, info_t *in)
     }
 }
 
+/* A figure, or null for a log with no sample to make it (in->empty) */
+static void add_num(cJSON *j, const char *name, double v, const info_t *in)
+{
+    if (in->empty) {
+        cJSON_AddNullToObject(j, name);
+    } else {
+        cJSON_AddNumberToObject(j, name, v);
+    }
+}
+
+/* info's JSON, for a log and for one that holds no sample (in->empty:
+ * report_empty's, the same keys with the figures null; until 2026-12-01
+ * that JSON came from a list of these keys kept by hand) */
 static int write_json(const char *path, const hx_log_t *log, const info_t *in)
 {
     cJSON *j = cJSON_CreateObject();
@@ -224,22 +238,22 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     cJSON_AddNumberToObject(j, "samples", (double)log->n);
     cJSON_AddNumberToObject(j, "rate_hz", in->rate_hz);
     cJSON_AddBoolToObject(j, "rate_nominal", log->meta.rate_nominal);
-    cJSON_AddNumberToObject(j, "duration_s", in->duration_s);
-    cJSON_AddNumberToObject(j, "dt_median_s", in->dt_med_s);
-    cJSON_AddNumberToObject(j, "dt_min_s", in->dt_min_s);
-    cJSON_AddNumberToObject(j, "dt_max_s", in->dt_max_s);
-    cJSON_AddNumberToObject(j, "gaps", (double)in->gaps);
-    cJSON_AddNumberToObject(j, "max_gap_s", in->max_gap_s);
-    cJSON_AddNumberToObject(j, "duplicates", (double)in->dups);
+    add_num(j, "duration_s", in->duration_s, in);
+    add_num(j, "dt_median_s", in->dt_med_s, in);
+    add_num(j, "dt_min_s", in->dt_min_s, in);
+    add_num(j, "dt_max_s", in->dt_max_s, in);
+    add_num(j, "gaps", (double)in->gaps, in);
+    add_num(j, "max_gap_s", in->max_gap_s, in);
+    add_num(j, "duplicates", (double)in->dups, in);
     /* null, as the text leaves its drops line out, when the format has no
      * sensor counter: a 0 read "no drops" where none can be counted (a user
      * review) */
-    if (log->meta.has_seq) {
+    if (log->meta.has_seq && !in->empty) {
         cJSON_AddNumberToObject(j, "counter_drops", (double)in->drops);
     } else {
         cJSON_AddNullToObject(j, "counter_drops");
     }
-    if (in->rate_off > 0.0) {
+    if (in->rate_off > 0.0 && !in->empty) {
         cJSON *chg = cJSON_AddObjectToObject(j, "rate_change");
         cJSON_AddNumberToObject(chg, "at_s", in->rate_chg_at_s);
         cJSON_AddNumberToObject(chg, "rate_hz", in->rate_chg_hz);
@@ -247,31 +261,41 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     } else {
         cJSON_AddNullToObject(j, "rate_change");
     }
-    arr = cJSON_AddObjectToObject(j, "saturated_samples");
-    for (c = 0; c < 6; c++) {
-        cJSON_AddNumberToObject(arr, ch[c], (double)in->sat[c]);
+    if (in->empty) {
+        cJSON_AddNullToObject(j, "saturated_samples");
+        cJSON_AddNullToObject(j, "peak_abs");
+        cJSON_AddNullToObject(j, "gravity_at_rest_mps2");
+    } else {
+        arr = cJSON_AddObjectToObject(j, "saturated_samples");
+        for (c = 0; c < 6; c++) {
+            cJSON_AddNumberToObject(arr, ch[c], (double)in->sat[c]);
+        }
+        arr = cJSON_AddObjectToObject(j, "peak_abs");
+        for (c = 0; c < 6; c++) {
+            cJSON_AddNumberToObject(arr, ch[c], in->peak[c]);
+        }
+        cJSON_AddItemToObject(j, "gravity_at_rest_mps2", cJSON_CreateDoubleArray(in->g_vec, 3));
     }
-    arr = cJSON_AddObjectToObject(j, "peak_abs");
-    for (c = 0; c < 6; c++) {
-        cJSON_AddNumberToObject(arr, ch[c], in->peak[c]);
-    }
-    cJSON_AddItemToObject(j, "gravity_at_rest_mps2", cJSON_CreateDoubleArray(in->g_vec, 3));
-    cJSON_AddNumberToObject(j, "gravity_magnitude_mps2", in->g_mag);
-    {
+    add_num(j, "gravity_magnitude_mps2", in->g_mag, in);
+    if (in->empty) {
+        cJSON_AddNullToObject(j, "gravity_axis");
+        cJSON_AddNullToObject(j, "up_axis");
+        cJSON_AddNullToObject(j, "gyro_at_rest_rps");
+    } else {
         /* the accelerometer reads the specific force, which points up at
          * rest: gravity lies along the other sign (frames.md) */
         char up[3] = { in->g_vec[in->g_axis] >= 0.0 ? '+' : '-', (char)('x' + in->g_axis), '\0' };
         char down[3] = { in->g_vec[in->g_axis] >= 0.0 ? '-' : '+', (char)('x' + in->g_axis), '\0' };
         cJSON_AddStringToObject(j, "gravity_axis", down);
         cJSON_AddStringToObject(j, "up_axis", up);
+        cJSON_AddItemToObject(j, "gyro_at_rest_rps", cJSON_CreateDoubleArray(in->gyro_rest, 3));
     }
-    cJSON_AddItemToObject(j, "gyro_at_rest_rps", cJSON_CreateDoubleArray(in->gyro_rest, 3));
-    if (in->units_bad) {
+    if (in->units_bad && !in->empty) {
         cJSON_AddStringToObject(j, "units_problem", in->units);
     } else {
         cJSON_AddNullToObject(j, "units_problem");
     }
-    cJSON_AddNumberToObject(j, "still_window_start_s", in->still_t_s);
+    add_num(j, "still_window_start_s", in->still_t_s, in);
     cJSON_AddBoolToObject(j, "complete", log->status == FNAV_END);
     if (log->status != FNAV_END) {
         cJSON_AddStringToObject(j, "error", log->error);
@@ -375,29 +399,19 @@ static int report_empty(const hx_args_t *a, const char *path)
     }
     printf("incomplete  %s\n", why);
     if (json != NULL) {
-        /* info's keys, the figures null: there is no sample to make them */
-        static const char *const none[] = { "duration_s", "dt_median_s", "dt_min_s", "dt_max_s", "gaps",
-                                            "max_gap_s", "duplicates", "counter_drops", "rate_change",
-                                            "saturated_samples", "peak_abs", "gravity_at_rest_mps2",
-                                            "gravity_magnitude_mps2", "gravity_axis", "up_axis",
-                                            "gyro_at_rest_rps", "units_problem", "still_window_start_s" };
-        cJSON *j = cJSON_CreateObject();
-        size_t k;
-        cJSON_AddStringToObject(j, "format", hx_format_name(meta.format));
-        cJSON_AddStringToObject(j, "sensor", meta.sensor);
-        cJSON_AddNumberToObject(j, "samples", 0.0);
-        cJSON_AddNumberToObject(j, "rate_hz", meta.rate_nominal && meta.rate_hz > 0.0 ? meta.rate_hz : 0.0);
-        cJSON_AddBoolToObject(j, "rate_nominal", meta.rate_nominal);
-        for (k = 0; k < sizeof none / sizeof none[0]; k++) {
-            cJSON_AddNullToObject(j, none[k]);
-        }
-        cJSON_AddBoolToObject(j, "complete", 0);
-        cJSON_AddStringToObject(j, "error", why);
-        if (hx_write_json(json, j, err, sizeof err) != 0) {
-            hx_error("info", "%s", err);
+        /* info's JSON with no sample: the figures null, the stated rate or 0 */
+        static hx_log_t log; /* static: a few kB, zeroed */
+        info_t in;
+        memset(&log, 0, sizeof log);
+        memset(&in, 0, sizeof in);
+        log.meta = meta;
+        log.status = FNAV_E_FORMAT; /* not FNAV_END: "complete" false, the error given */
+        snprintf(log.error, sizeof log.error, "%s", why);
+        in.empty = 1;
+        in.rate_hz = meta.rate_nominal && meta.rate_hz > 0.0 ? meta.rate_hz : 0.0;
+        if (write_json(json, &log, &in) != 0) {
             rc = HX_EXIT_IO;
         }
-        cJSON_Delete(j);
     }
     return rc;
 }
