@@ -308,34 +308,6 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     return rc;
 }
 
-/* A stated rate (a .bin header's nominal rate) that the log's own stamps
- * contradict by more than INFO_STATED_RATE_TOL: 1000 Hz stated over stamps
- * 5 ms apart was printed without a word until 2026-12-01, and the search
- * for the rest took windows of 1000 samples, 5 s of that 200 Hz log. The
- * stamps' rate is every command's estimate from the first 4,096 stamps
- * (hx_stamp_rate_hz: the median interval, or the mean one for stamps too
- * coarse for a median). Stamps made from the stated rate (a counter's,
- * none at all) cannot contradict it; stamps in bursts have their own
- * warning, which judges the stated rate by the log's span. */
-#define INFO_STATED_RATE_TOL 0.10
-static void stated_rate_warn(const hx_log_t *log, const info_t *in, const char *path)
-{
-    double hz;
-    if (!log->meta.rate_nominal || log->meta.stamps_made || !(in->rate_hz > 0.0) || log->n < 2u) {
-        return;
-    }
-    hz = hx_stamp_rate_hz(log->t_ns, log->n < 4096u ? log->n : (size_t)4096, NULL);
-    if (!(hz > 0.0) || fabs(in->rate_hz / hz - 1.0) <= INFO_STATED_RATE_TOL) {
-        return;
-    }
-    hx_warn("info",
-            "%s: the file states %.6g Hz, but its time stamps give %.6g Hz (%.3f ms apart): the "
-            "rate line and the one-second windows of the search for the rest take the stated rate; if the stamps "
-            "are right, convert it to CSV (bin/harness convert %s out.csv), whose rate comes from its stamps "
-            "(docs/harness.md, \"info\")",
-            path, in->rate_hz, hz, 1e3 / hz, path);
-}
-
 /* The rate line's figure: three decimals, and below 0.1 Hz as many more as
  * keep three significant digits, where three decimals printed a log of one
  * sample per 83 min (0.0002 Hz) as "0.000 Hz" until 2026-12-01
@@ -459,7 +431,9 @@ int hx_cmd_info(int argc, char **argv)
     }
     if (!hx_nav_bursts_warn("info", a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the rate line gives", in.rate_hz,
                             log.meta.rate_nominal && log.meta.rate_hz > 0.0)) {
-        stated_rate_warn(&log, &in, a.pos[0]);
+        /* a stated rate the stamps contradict (the rate line prints it) */
+        hx_stated_rate_warn("info", a.pos[0], &log.meta, log.t_ns, log.n,
+                            "the rate line and the one-second windows of the search for the rest take");
     }
     printf("file        %s\n", a.pos[0]);
     printf("format      %s\n", hx_format_name(log.meta.format));
