@@ -736,9 +736,13 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         /* not with --rate, which sets the rate the analysis takes; the
          * reader's rate is the file's own when nominal */
         const hx_meta_t *m = hx_reader_meta(r);
-        hx_nav_bursts_warn(CMD, path, m->format, stamps, n_stamps, (size_t)R->n > n_stamps,
-                           "tau, sigma_v and the profile are read at", R->rate_hz,
-                           m->rate_nominal && m->rate_hz > 0.0 && R->rate_hz == m->rate_hz);
+        if (!hx_nav_bursts_warn(CMD, path, m->format, stamps, n_stamps, (size_t)R->n > n_stamps,
+                                "tau, sigma_v and the profile are read at", R->rate_hz,
+                                m->rate_nominal && m->rate_hz > 0.0 && R->rate_hz == m->rate_hz)) {
+            /* a stated rate the stamps contradict, as info's (without a
+             * word until 2026-12-01) */
+            hx_stated_rate_warn(CMD, path, m, stamps, n_stamps, "tau, sigma_v and the profile are read at");
+        }
     }
     free(stamps);
     if (rate_opt > 0.0 && stamp_rate > 0.0 && fabs(rate_opt / stamp_rate - 1.0) > 1e-3) {

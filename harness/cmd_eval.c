@@ -276,13 +276,16 @@ static const char *after_path(const char *msg, const char *path, char *buf, size
     return *msg == ' ' ? msg + 1 : msg;
 }
 
-/* A failed run: warned with its path, counted (eval's exit status and the
- * targets' note) and its reason kept for the row of its table. */
-static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const char *msg)
+/* A failed run: warned with its path (unless warn is 0: said already),
+ * counted (eval's exit status and the targets' note) and its reason kept
+ * for the row of its table. */
+static void fail_warn(ev_t *ev, const char *path, char *why, size_t why_size, const char *msg, int warn)
 {
     char buf[HX_ERR_SIZE];
     size_t i;
-    hx_warn("eval", "%s: %s", path, after_path(msg, path, buf, sizeof buf));
+    if (warn) {
+        hx_warn("eval", "%s: %s", path, after_path(msg, path, buf, sizeof buf));
+    }
     ev->failures++;
     if (why == NULL) {
         return;
@@ -293,6 +296,11 @@ static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const c
             why[i] = '/'; /* would break the Markdown table */
         }
     }
+}
+
+static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const char *msg)
+{
+    fail_warn(ev, path, why, why_size, msg, 1);
 }
 
 /* The row of a walk that gave no figures, when its table is written: a
@@ -1302,6 +1310,11 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
         fprintf(ev->md, "|---|---|---:|---:|---:|---:|---:|---:|---|\n");
     }
     for (i = 0; i < n; i++) {
+        /* the error of the events file, which serves both feet, that the
+         * left foot's row gave (no TrialBoundaries pair; not valid JSON, too
+         * large): the right foot's row and failed run get it without a
+         * second warning (warned once per foot until 2026-12-01) */
+        char ev_warned[HX_ERR_SIZE] = "";
         for (foot = 0; foot < 2; foot++) {
             static long evs[256][2], oevs[256][2];
             long tb[2], ub[2], otb[2], oub[2];
@@ -1323,7 +1336,8 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             noe = ne < 0 ? 0 : read_events(jpath, oevs, 256, foot ? "LeftFootEvents" : "RightFootEvents", otb, oub,
                                             oerr, sizeof oerr);
             if (ne < 0) {
-                fail(ev, jpath, note, sizeof note, err);
+                fail_warn(ev, jpath, note, sizeof note, err, strcmp(err, ev_warned) != 0);
+                snprintf(ev_warned, sizeof ev_warned, "%s", err);
             } else if (noe < 0) {
                 /* the other foot's swings decide which of this foot's are
                  * evaluated (both feet in the air): without them the

@@ -41,6 +41,7 @@ typedef struct {
     int units_bad;     /* not SI units (hx_units_problem) */
     char units[768];   /* why, and the remedy */
     double gyro_max;   /* the largest |w| on one axis (the units check's) */
+    int empty;         /* no sample (report_empty): every figure but rate_hz is null in the JSON */
 } info_t;
 
 /* Clipping at full scale leaves flat tops at the channel's extreme value,
@@ -212,6 +213,19 @@ static void analyse(const hx_log_t *log, info_t *in)
     }
 }
 
+/* A figure, or null for a log with no sample to make it (in->empty) */
+static void add_num(cJSON *j, const char *name, double v, const info_t *in)
+{
+    if (in->empty) {
+        cJSON_AddNullToObject(j, name);
+    } else {
+        cJSON_AddNumberToObject(j, name, v);
+    }
+}
+
+/* info's JSON, for a log and for one that holds no sample (in->empty:
+ * report_empty's, the same keys with the figures null; until 2026-12-01
+ * that JSON came from a list of these keys kept by hand) */
 static int write_json(const char *path, const hx_log_t *log, const info_t *in)
 {
     cJSON *j = cJSON_CreateObject();
@@ -224,22 +238,22 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     cJSON_AddNumberToObject(j, "samples", (double)log->n);
     cJSON_AddNumberToObject(j, "rate_hz", in->rate_hz);
     cJSON_AddBoolToObject(j, "rate_nominal", log->meta.rate_nominal);
-    cJSON_AddNumberToObject(j, "duration_s", in->duration_s);
-    cJSON_AddNumberToObject(j, "dt_median_s", in->dt_med_s);
-    cJSON_AddNumberToObject(j, "dt_min_s", in->dt_min_s);
-    cJSON_AddNumberToObject(j, "dt_max_s", in->dt_max_s);
-    cJSON_AddNumberToObject(j, "gaps", (double)in->gaps);
-    cJSON_AddNumberToObject(j, "max_gap_s", in->max_gap_s);
-    cJSON_AddNumberToObject(j, "duplicates", (double)in->dups);
+    add_num(j, "duration_s", in->duration_s, in);
+    add_num(j, "dt_median_s", in->dt_med_s, in);
+    add_num(j, "dt_min_s", in->dt_min_s, in);
+    add_num(j, "dt_max_s", in->dt_max_s, in);
+    add_num(j, "gaps", (double)in->gaps, in);
+    add_num(j, "max_gap_s", in->max_gap_s, in);
+    add_num(j, "duplicates", (double)in->dups, in);
     /* null, as the text leaves its drops line out, when the format has no
      * sensor counter: a 0 read "no drops" where none can be counted (a user
      * review) */
-    if (log->meta.has_seq) {
+    if (log->meta.has_seq && !in->empty) {
         cJSON_AddNumberToObject(j, "counter_drops", (double)in->drops);
     } else {
         cJSON_AddNullToObject(j, "counter_drops");
     }
-    if (in->rate_off > 0.0) {
+    if (in->rate_off > 0.0 && !in->empty) {
         cJSON *chg = cJSON_AddObjectToObject(j, "rate_change");
         cJSON_AddNumberToObject(chg, "at_s", in->rate_chg_at_s);
         cJSON_AddNumberToObject(chg, "rate_hz", in->rate_chg_hz);
@@ -247,31 +261,41 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     } else {
         cJSON_AddNullToObject(j, "rate_change");
     }
-    arr = cJSON_AddObjectToObject(j, "saturated_samples");
-    for (c = 0; c < 6; c++) {
-        cJSON_AddNumberToObject(arr, ch[c], (double)in->sat[c]);
+    if (in->empty) {
+        cJSON_AddNullToObject(j, "saturated_samples");
+        cJSON_AddNullToObject(j, "peak_abs");
+        cJSON_AddNullToObject(j, "gravity_at_rest_mps2");
+    } else {
+        arr = cJSON_AddObjectToObject(j, "saturated_samples");
+        for (c = 0; c < 6; c++) {
+            cJSON_AddNumberToObject(arr, ch[c], (double)in->sat[c]);
+        }
+        arr = cJSON_AddObjectToObject(j, "peak_abs");
+        for (c = 0; c < 6; c++) {
+            cJSON_AddNumberToObject(arr, ch[c], in->peak[c]);
+        }
+        cJSON_AddItemToObject(j, "gravity_at_rest_mps2", cJSON_CreateDoubleArray(in->g_vec, 3));
     }
-    arr = cJSON_AddObjectToObject(j, "peak_abs");
-    for (c = 0; c < 6; c++) {
-        cJSON_AddNumberToObject(arr, ch[c], in->peak[c]);
-    }
-    cJSON_AddItemToObject(j, "gravity_at_rest_mps2", cJSON_CreateDoubleArray(in->g_vec, 3));
-    cJSON_AddNumberToObject(j, "gravity_magnitude_mps2", in->g_mag);
-    {
+    add_num(j, "gravity_magnitude_mps2", in->g_mag, in);
+    if (in->empty) {
+        cJSON_AddNullToObject(j, "gravity_axis");
+        cJSON_AddNullToObject(j, "up_axis");
+        cJSON_AddNullToObject(j, "gyro_at_rest_rps");
+    } else {
         /* the accelerometer reads the specific force, which points up at
          * rest: gravity lies along the other sign (frames.md) */
         char up[3] = { in->g_vec[in->g_axis] >= 0.0 ? '+' : '-', (char)('x' + in->g_axis), '\0' };
         char down[3] = { in->g_vec[in->g_axis] >= 0.0 ? '-' : '+', (char)('x' + in->g_axis), '\0' };
         cJSON_AddStringToObject(j, "gravity_axis", down);
         cJSON_AddStringToObject(j, "up_axis", up);
+        cJSON_AddItemToObject(j, "gyro_at_rest_rps", cJSON_CreateDoubleArray(in->gyro_rest, 3));
     }
-    cJSON_AddItemToObject(j, "gyro_at_rest_rps", cJSON_CreateDoubleArray(in->gyro_rest, 3));
-    if (in->units_bad) {
+    if (in->units_bad && !in->empty) {
         cJSON_AddStringToObject(j, "units_problem", in->units);
     } else {
         cJSON_AddNullToObject(j, "units_problem");
     }
-    cJSON_AddNumberToObject(j, "still_window_start_s", in->still_t_s);
+    add_num(j, "still_window_start_s", in->still_t_s, in);
     cJSON_AddBoolToObject(j, "complete", log->status == FNAV_END);
     if (log->status != FNAV_END) {
         cJSON_AddStringToObject(j, "error", log->error);
@@ -284,32 +308,19 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     return rc;
 }
 
-/* A stated rate (a .bin header's nominal rate) that the log's own stamps
- * contradict by more than INFO_STATED_RATE_TOL: 1000 Hz stated over stamps
- * 5 ms apart was printed without a word until 2026-12-01, and the search
- * for the rest took windows of 1000 samples, 5 s of that 200 Hz log. The
- * stamps' rate is every command's estimate from the first 4,096 stamps
- * (hx_stamp_rate_hz: the median interval, or the mean one for stamps too
- * coarse for a median). Stamps made from the stated rate (a counter's,
- * none at all) cannot contradict it; stamps in bursts have their own
- * warning, which judges the stated rate by the log's span. */
-#define INFO_STATED_RATE_TOL 0.10
-static void stated_rate_warn(const hx_log_t *log, const info_t *in, const char *path)
+/* The rate line's figure: three decimals, and below 0.1 Hz as many more as
+ * keep three significant digits, where three decimals printed a log of one
+ * sample per 83 min (0.0002 Hz) as "0.000 Hz" until 2026-12-01
+ * (tests/cli/test_foundation.sh); from 0.1 Hz the line is as before */
+static const char *rate_str(double hz, char *buf, size_t size)
 {
-    double hz;
-    if (!log->meta.rate_nominal || log->meta.stamps_made || !(in->rate_hz > 0.0) || log->n < 2u) {
-        return;
+    int dec = 3;
+    double x;
+    for (x = hz; x > 0.0 && x < 0.1 && dec < 15; x *= 10.0) {
+        dec++;
     }
-    hz = hx_stamp_rate_hz(log->t_ns, log->n < 4096u ? log->n : (size_t)4096, NULL);
-    if (!(hz > 0.0) || fabs(in->rate_hz / hz - 1.0) <= INFO_STATED_RATE_TOL) {
-        return;
-    }
-    hx_warn("info",
-            "%s: the file states %.6g Hz, but its time stamps give %.6g Hz (%.3f ms apart): the "
-            "rate line and the one-second windows of the search for the rest take the stated rate; if the stamps "
-            "are right, convert it to CSV (bin/harness convert %s out.csv), whose rate comes from its stamps "
-            "(docs/harness.md, \"info\")",
-            path, in->rate_hz, hz, 1e3 / hz, path);
+    snprintf(buf, size, "%.*f", dec, hz);
+    return buf;
 }
 
 /* A log that opens (a valid .bin header, a CSV header) but holds no sample:
@@ -329,6 +340,7 @@ static int report_empty(const hx_args_t *a, const char *path)
     hx_reader_t *r;
     hx_meta_t meta;
     fnav_sample_t s;
+    char hz[32];
     int rc = HX_EXIT_DATA;
     /* the options were checked by hx_check_input_opts: no message here */
     if (hx_arg(a, "--input-rate") != NULL && hx_arg_double(a, "--input-rate", 1e-3, 1e6, &in_rate) != 0) {
@@ -353,35 +365,25 @@ static int report_empty(const hx_args_t *a, const char *path)
     }
     printf("samples     0 (the file holds no sample: nothing to analyse)\n");
     if (meta.rate_nominal && meta.rate_hz > 0.0) {
-        printf("rate        %.3f Hz (nominal)\n", meta.rate_hz);
+        printf("rate        %s Hz (nominal)\n", rate_str(meta.rate_hz, hz, sizeof hz));
     } else {
         printf("rate        none (no sample gives no rate)\n");
     }
     printf("incomplete  %s\n", why);
     if (json != NULL) {
-        /* info's keys, the figures null: there is no sample to make them */
-        static const char *const none[] = { "duration_s", "dt_median_s", "dt_min_s", "dt_max_s", "gaps",
-                                            "max_gap_s", "duplicates", "counter_drops", "rate_change",
-                                            "saturated_samples", "peak_abs", "gravity_at_rest_mps2",
-                                            "gravity_magnitude_mps2", "gravity_axis", "up_axis",
-                                            "gyro_at_rest_rps", "units_problem", "still_window_start_s" };
-        cJSON *j = cJSON_CreateObject();
-        size_t k;
-        cJSON_AddStringToObject(j, "format", hx_format_name(meta.format));
-        cJSON_AddStringToObject(j, "sensor", meta.sensor);
-        cJSON_AddNumberToObject(j, "samples", 0.0);
-        cJSON_AddNumberToObject(j, "rate_hz", meta.rate_nominal && meta.rate_hz > 0.0 ? meta.rate_hz : 0.0);
-        cJSON_AddBoolToObject(j, "rate_nominal", meta.rate_nominal);
-        for (k = 0; k < sizeof none / sizeof none[0]; k++) {
-            cJSON_AddNullToObject(j, none[k]);
-        }
-        cJSON_AddBoolToObject(j, "complete", 0);
-        cJSON_AddStringToObject(j, "error", why);
-        if (hx_write_json(json, j, err, sizeof err) != 0) {
-            hx_error("info", "%s", err);
+        /* info's JSON with no sample: the figures null, the stated rate or 0 */
+        static hx_log_t log; /* static: a few kB, zeroed */
+        info_t in;
+        memset(&log, 0, sizeof log);
+        memset(&in, 0, sizeof in);
+        log.meta = meta;
+        log.status = FNAV_E_FORMAT; /* not FNAV_END: "complete" false, the error given */
+        snprintf(log.error, sizeof log.error, "%s", why);
+        in.empty = 1;
+        in.rate_hz = meta.rate_nominal && meta.rate_hz > 0.0 ? meta.rate_hz : 0.0;
+        if (write_json(json, &log, &in) != 0) {
             rc = HX_EXIT_IO;
         }
-        cJSON_Delete(j);
     }
     return rc;
 }
@@ -393,6 +395,7 @@ int hx_cmd_info(int argc, char **argv)
     info_t in;
     int rc = hx_args_parse(&k_spec, argc, argv, &a);
     int c, exit_code = HX_EXIT_OK;
+    char hz[32];
     static const char *const ch[6] = { "ax", "ay", "az", "gx", "gy", "gz" };
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
@@ -428,7 +431,9 @@ int hx_cmd_info(int argc, char **argv)
     }
     if (!hx_nav_bursts_warn("info", a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the rate line gives", in.rate_hz,
                             log.meta.rate_nominal && log.meta.rate_hz > 0.0)) {
-        stated_rate_warn(&log, &in, a.pos[0]);
+        /* a stated rate the stamps contradict (the rate line prints it) */
+        hx_stated_rate_warn("info", a.pos[0], &log.meta, log.t_ns, log.n,
+                            "the rate line and the one-second windows of the search for the rest take");
     }
     printf("file        %s\n", a.pos[0]);
     printf("format      %s\n", hx_format_name(log.meta.format));
@@ -441,7 +446,7 @@ int hx_cmd_info(int argc, char **argv)
         /* which stamps, and how: replay's detector and --rate take other
          * estimates (199.44 and 200.1 Hz for a vicon trial that reads 200.000
          * here; the generalisation review, 2026-11-29) */
-        printf("rate        %.3f Hz (%s)\n", in.rate_hz,
+        printf("rate        %s Hz (%s)\n", rate_str(in.rate_hz, hz, sizeof hz),
                log.meta.rate_nominal ? "nominal"
                : log.meta.rate_hz <= 0.0 ? "from the time stamps: 1 / the median interval"
                : log.meta.rate_coarse ? "from the time stamps of the first 4,096 samples: their mean interval without gaps"

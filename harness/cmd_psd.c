@@ -810,8 +810,12 @@ int hx_cmd_psd(int argc, char **argv)
                     irregular, log.n - 1, rate);
         }
     }
-    hx_nav_bursts_warn(CMD, a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the frequencies are read at", rate,
-                       log.meta.rate_nominal && log.meta.rate_hz > 0.0);
+    if (!hx_nav_bursts_warn(CMD, a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the frequencies are read at", rate,
+                            log.meta.rate_nominal && log.meta.rate_hz > 0.0)) {
+        /* a stated rate the stamps contradict, as info's (without a word
+         * until 2026-12-01) */
+        hx_stated_rate_warn(CMD, a.pos[0], &log.meta, log.t_ns, log.n, "the frequencies are read at");
+    }
     if (hx_arg(&a, "--input-rate") == NULL) {
         /* a time column in milliseconds (100 Hz read as 0.1 Hz) was said
          * only as an answer above the log's rate (the static review) */

@@ -1422,6 +1422,30 @@ int hx_nav_bursts_warn(const char *cmd, const char *path, hx_format_t fmt, const
     return 1;
 }
 
+int hx_stated_rate_warn(const char *cmd, const char *path, const hx_meta_t *meta, const int64_t *t_ns, size_t n,
+                        const char *reads)
+{
+    /* info's since 2026-12-01 (1000 Hz stated over stamps 5 ms apart was
+     * printed without a word, and the search for the rest took windows of
+     * 1000 samples, 5 s of that 200 Hz log); psd's and allan's too from
+     * the same day, which read their frequencies and tau at that rate */
+    double hz;
+    if (meta == NULL || t_ns == NULL || !meta->rate_nominal || meta->stamps_made || !(meta->rate_hz > 0.0) ||
+        n < 2u) {
+        return 0;
+    }
+    hz = hx_stamp_rate_hz(t_ns, n < 4096u ? n : (size_t)4096, NULL);
+    if (!(hz > 0.0) || fabs(meta->rate_hz / hz - 1.0) <= HX_STATED_RATE_TOL) {
+        return 0;
+    }
+    hx_warn(cmd,
+            "%s: the file states %.6g Hz, but its time stamps give %.6g Hz (%.3f ms apart): %s the stated rate; if "
+            "the stamps are right, convert it to CSV (bin/harness convert %s out.csv), whose rate comes from its "
+            "stamps (docs/harness.md, \"info\")",
+            path, meta->rate_hz, hz, 1e3 / hz, reads, path);
+    return 1;
+}
+
 /* Replay's warning for distinct time stamps in bursts of the other kind
  * than hx_nav_stamps_check refuses: more samples than the median interval
  * gives over the span, with no stamp repeated to explain them (a logger

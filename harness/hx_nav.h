@@ -279,6 +279,25 @@ int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, doubl
 int hx_nav_bursts_warn(const char *cmd, const char *path, hx_format_t fmt, const int64_t *t_ns, size_t n,
                        int first, const char *reads, double rate_hz, int nominal);
 
+/** Largest relative difference between a stated rate and its stamps' that
+ *  hx_stated_rate_warn lets pass. */
+#define HX_STATED_RATE_TOL 0.10
+/**
+ * The warning of info, psd and allan for a stated rate (meta->rate_nominal:
+ * a .bin header's) that the log's own time stamps contradict by more than
+ * HX_STATED_RATE_TOL: "cmd: warning: PATH: the file states S Hz, but its
+ * time stamps give R Hz (D ms apart): READS the stated rate; if the stamps
+ * are right, convert it to CSV (...)". The stamps' rate is every command's
+ * estimate from the first 4,096 (hx_stamp_rate_hz) of the n stamps t_ns.
+ * reads: what of the command's output takes the stated rate ("the
+ * frequencies are read at"). Stamps made from the stated rate
+ * (meta->stamps_made) cannot contradict it; stamps in bursts have their
+ * own warning (hx_nav_bursts_warn: call this when that one did not warn).
+ * 1 when warned, else 0.
+ */
+int hx_stated_rate_warn(const char *cmd, const char *path, const hx_meta_t *meta, const int64_t *t_ns, size_t n,
+                        const char *reads);
+
 /**
  * Replay one log through the Linux port into a navigator, sample by sample.
  * @param cmd       command name for messages

@@ -365,6 +365,11 @@ fnav_status_t fnav_imuerr_param_set(fnav_imuerr_config_t *cfg, fnav_effect_id_t 
     if (!in_range(p, value)) {
         return FNAV_E_RANGE;
     }
+    if ((p->flags & FNAV_PARAM_INTEGER) != 0u && value != fnav_floor(value)) {
+        /* init's refusal of the same value (validate); taken here until
+         * 2026-12-01, and the configuration refused only at init */
+        return FNAV_E_CONFIG;
+    }
     dst = param_ptr(cfg, p);
     if ((p->flags & FNAV_PARAM_PER_CHANNEL) == 0u) {
         dst[0] = value;

@@ -298,6 +298,46 @@ static void test_catalogue_names_and_params(void **state)
     }
 }
 
+/* A whole-number parameter given a non-whole value: param_set took it and
+ * fnav_imuerr_init refused the configuration later (FNAV_E_CONFIG, without
+ * naming it; an earlier review). param_set now refuses it with init's
+ * status and leaves the parameter as it was; whole values are taken. */
+static void test_param_set_whole(void **state)
+{
+    fnav_imuerr_config_t c = fnav_imuerr_config_default;
+    fnav_imuerr_t e;
+    const int sh = fnav_imuerr_param_find(FNAV_EFFECT_QUANT, "shaped");
+    const int fa = fnav_imuerr_param_find(FNAV_EFFECT_ALIAS, "factor");
+    const fnav_real_t fa0 = c.alias.factor;
+    (void)state;
+    assert_true(sh >= 0 && fa >= 0);
+    /* init's status for such a value, set behind param_set's back */
+    c.quant.shaped[5] = FNAV_R(0.5);
+    assert_int_equal(fnav_imuerr_enable(&c, FNAV_EFFECT_QUANT, FNAV_CH_GZ), FNAV_OK);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_E_CONFIG);
+    c = fnav_imuerr_config_default;
+    /* per-channel (quant.shaped, 0/1): refused, no channel changed */
+    assert_int_equal(fnav_imuerr_param_set(&c, FNAV_EFFECT_QUANT, sh, FNAV_CH_ALL, FNAV_R(0.5)), FNAV_E_CONFIG);
+    assert_true(c.quant.shaped[0] == fnav_imuerr_config_default.quant.shaped[0]);
+    assert_true(c.quant.shaped[5] == fnav_imuerr_config_default.quant.shaped[5]);
+    assert_int_equal(fnav_imuerr_param_set(&c, FNAV_EFFECT_QUANT, sh, FNAV_CH_GZ, FNAV_R(1.0)), FNAV_OK);
+    assert_true(c.quant.shaped[5] == FNAV_R(1.0));
+    /* scalar (alias.factor, 2 .. 1024): refused just above and below a whole number */
+    assert_int_equal(fnav_imuerr_param_set(&c, FNAV_EFFECT_ALIAS, fa, 0u, FNAV_R(2.5)), FNAV_E_CONFIG);
+    assert_int_equal(fnav_imuerr_param_set(&c, FNAV_EFFECT_ALIAS, fa, 0u, FNAV_R(3.0) + FNAV_R(0.0009765625)),
+                     FNAV_E_CONFIG);
+    assert_int_equal(fnav_imuerr_param_set(&c, FNAV_EFFECT_ALIAS, fa, 0u, FNAV_R(1023.75)), FNAV_E_CONFIG);
+    assert_true(c.alias.factor == fa0);
+    assert_int_equal(fnav_imuerr_param_set(&c, FNAV_EFFECT_ALIAS, fa, 0u, FNAV_R(3.0)), FNAV_OK);
+    assert_true(c.alias.factor == FNAV_R(3.0));
+    /* out of range is still FNAV_E_RANGE, as before */
+    assert_int_equal(fnav_imuerr_param_set(&c, FNAV_EFFECT_ALIAS, fa, 0u, FNAV_R(1.5)), FNAV_E_RANGE);
+    /* what param_set takes, init takes */
+    assert_int_equal(fnav_imuerr_enable(&c, FNAV_EFFECT_QUANT, FNAV_CH_GZ), FNAV_OK);
+    assert_int_equal(fnav_imuerr_enable(&c, FNAV_EFFECT_ALIAS, FNAV_CH_ALL), FNAV_OK);
+    assert_int_equal(fnav_imuerr_init(&e, &c), FNAV_OK);
+}
+
 static void test_config_validation(void **state)
 {
     fnav_imuerr_config_t c;
@@ -1137,6 +1177,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_rng_deterministic_and_normal),
         cmocka_unit_test(test_catalogue_names_and_params),
+        cmocka_unit_test(test_param_set_whole),
         cmocka_unit_test(test_config_validation),
         cmocka_unit_test(test_profile_baseline),
         cmocka_unit_test(test_allan_white_plus_ar1),

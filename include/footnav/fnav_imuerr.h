@@ -219,7 +219,9 @@ void fnav_imuerr_effect_reset(fnav_imuerr_config_t *cfg, fnav_effect_id_t id);
 
 /** Set parameter `param` of effect `id` on the channels of ch_mask (a
  *  scalar parameter ignores the mask). @return FNAV_OK, FNAV_E_ARG for a
- *  bad id / index, FNAV_E_RANGE for a value outside [lo, hi] or non-finite. */
+ *  bad id / index, FNAV_E_RANGE for a value outside [lo, hi] or non-finite,
+ *  FNAV_E_CONFIG (fnav_imuerr_init's status for it) for a value that is not
+ *  whole for a FNAV_PARAM_INTEGER parameter; nothing is set on an error. */
 FNAV_WARN_UNUSED fnav_status_t fnav_imuerr_param_set(fnav_imuerr_config_t *cfg, fnav_effect_id_t id, int param,
                                                      uint32_t ch_mask, fnav_real_t value);
 /** Value of a parameter on channel ch (ignored for scalars); 0 for bad ids. */

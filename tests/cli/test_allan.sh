@@ -865,6 +865,19 @@ expect_exit 0 "a static log stamped in bursts, the .bin's stated 100 Hz" "$H" al
 expect_err "100 Hz; tau, sigma_v and the profile are read at 100 Hz, the rate the file states, which the samples' span keeps, not the stamps' 200000 Hz (docs/harness.md, \"Time stamps in bursts\")" \
     "allan: stamps in bursts at the stated rate: the rate and its source said"
 grep -q "not the sampling rate" "$T/err" && fail "allan: stated rate kept by the span told 'not the sampling rate'" || pass "allan: stated rate kept by the span, not told 'not the sampling rate'"
+grep -q "file states [0-9]" "$T/err" && fail "allan: stamps in bursts at the stated rate also told the stated-rate warning" || pass "allan: stamps in bursts: the burst warning alone"
+# a .bin whose header states a rate its stamps contradict (1000 Hz stated, stamps 5 ms apart): info warned, allan
+# analysed it at the stated rate without a word until 2026-12-01; now the same warning (hx_stated_rate_warn); a
+# stated rate within 10 % of the stamps' (215 Hz), and the log's own 200 Hz, are not questioned
+"$H" sim --motion stand:20 --rate 200 --out "$T/sr200.bin" >/dev/null 2>&1 || fail "allan: sim of a 200 Hz .bin"
+bin_rate "$T/sr200.bin" "$T/sr1000.bin" 1000 && bin_rate "$T/sr200.bin" "$T/sr215.bin" 215 || fail "allan: the .bin's rate set"
+expect_exit 0 "allan of a .bin stating 1000 Hz over 5 ms stamps (runs, as before)" "$H" allan "$T/sr1000.bin" --no-sim --quiet
+expect_err "^harness allan: warning: $T/sr1000.bin: the file states 1000 Hz, but its time stamps give 200 Hz (5.000 ms apart): tau, sigma_v and the profile are read at the stated rate; if the stamps are right, convert it to CSV (bin/harness convert $T/sr1000.bin out.csv), whose rate comes from its stamps" \
+    "allan: a stated rate the stamps contradict warned of, with the remedy"
+for f in sr215 sr200; do
+    expect_exit 0 "allan of $f.bin" "$H" allan "$T/$f.bin" --no-sim --quiet
+    grep -q "file states [0-9]" "$T/err" && fail "allan: $f.bin's stated rate questioned: $(cat "$T/err")" || pass "allan: $f.bin's stated rate (within 10 %) not questioned"
+done
 # with --rate the analysis takes the rate given: no such warning
 expect_exit 0 "the same log analysed at --rate 100" "$H" allan "$T/touch_burst.csv" --no-sim --quiet --units time=us --rate 100
 grep -q "come in bursts" "$T/err" && fail "allan --rate: stamps in bursts still warned" || pass "allan --rate 100: no burst warning"

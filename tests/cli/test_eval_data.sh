@@ -139,6 +139,10 @@ expect_err "own_3dmgx5_footprints/one_strides_gcp.csv: truth file has 1 readable
 expect_err "own_3dmgx5_footprints/many_strides_gcp.csv: truth file has more than 1024 strides" "the refusal names the truth file (1,025)"
 expect_err "vicon_3dmgx3/one_strides_gcp.csv: truth file has 1 readable stride rows" "vicon: the refusal names the truth file"
 expect_err "vicon_3dmgx3/far_imu.csv: no motion-capture position columns" "no position: the IMU log that holds them named"
+# a recording's events file serves both feet: its TrialBoundaries error was warned once per foot, now once per
+# recording (each foot keeps its row and its failed run, above)
+n=$(grep -c "1-1.json: the events file has no TrialBoundaries pair" "$T/err")
+[ "$n" -eq 1 ] && pass "no TrialBoundaries: warned once per recording" || fail "no TrialBoundaries: warned $n times"
 rm -rf "$B"
 
 # a data directory with its MANIFEST.md and set folders but not one walk

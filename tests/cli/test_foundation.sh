@@ -67,6 +67,12 @@ awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 300; k++) printf "%d,0
 expect_exit 0 "info on a 100 Hz log stamped in milliseconds" "$H" info "$T/tms.csv"
 expect_err "tms.csv: the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "info names time stamps in milliseconds, with the --units item (it said divide by 1000 until 2026-11-30)"
+# a log one sample per 5000 s (0.0002 Hz): the rate line printed "0.000 Hz" (an earlier review); below 0.1 Hz it
+# keeps three significant digits, from 0.1 Hz on three decimals as before
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 6; k++) printf "%d,0,0,9.8,0,0,0\n", 5000 * k }' > "$T/slow.csv"
+expect_exit 0 "info on a 0.0002 Hz log" "$H" info "$T/slow.csv" --json "$T/slow.json"
+expect_out "^rate        0.000200 Hz (from the time stamps" "info: a 0.0002 Hz rate printed with three significant digits, not 0.000"
+json "$T/slow.json" "abs(j['rate_hz'] - 2e-4) < 1e-12" && pass "info --json: rate_hz 0.0002" || fail "info --json: $(grep rate_hz "$T/slow.json")"
 # the remedy counts from the unit given: stamps in microseconds read with --units time=ms are told time=us
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 300; k++) printf "%d,0,0,9.8,0,0,0\n", 10000 * k }' > "$T/tus.csv"
 expect_exit 0 "info on a 100 Hz log stamped in microseconds, read as ms" "$H" info "$T/tus.csv" --units time=ms

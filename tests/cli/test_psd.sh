@@ -400,6 +400,19 @@ expect_exit 0 "stamps in bursts, the .bin's stated 400 Hz" "$H" psd "$T/burst_no
 expect_err "400 Hz; the frequencies are read at 400 Hz, the rate the file states, which the samples' span keeps, not the stamps' 200000 Hz (docs/harness.md, \"Time stamps in bursts\")" \
     "psd: stamps in bursts at the stated rate: the rate and its source said"
 grep -q "not the sampling rate" "$T/err" && fail "psd: stated rate kept by the span told 'not the sampling rate'" || pass "psd: stated rate kept by the span, not told 'not the sampling rate'"
+grep -q "file states [0-9]" "$T/err" && fail "psd: stamps in bursts at the stated rate also told the stated-rate warning" || pass "psd: stamps in bursts: the burst warning alone"
+# a .bin whose header states a rate its stamps contradict (1000 Hz stated, stamps 5 ms apart): info warned, psd
+# analysed it at the stated rate without a word until 2026-12-01; now the same warning (hx_stated_rate_warn); a
+# stated rate within 10 % of the stamps' (215 Hz), and the log's own 200 Hz, are not questioned
+"$H" sim --motion stand:20 --rate 200 --out "$T/sr200.bin" >/dev/null 2>&1 || fail "psd: sim of a 200 Hz .bin"
+bin_rate "$T/sr200.bin" "$T/sr1000.bin" 1000 && bin_rate "$T/sr200.bin" "$T/sr215.bin" 215 || fail "psd: the .bin's rate set"
+expect_exit 0 "psd of a .bin stating 1000 Hz over 5 ms stamps (runs, as before)" "$H" psd "$T/sr1000.bin"
+expect_err "^harness psd: warning: $T/sr1000.bin: the file states 1000 Hz, but its time stamps give 200 Hz (5.000 ms apart): the frequencies are read at the stated rate; if the stamps are right, convert it to CSV (bin/harness convert $T/sr1000.bin out.csv), whose rate comes from its stamps" \
+    "psd: a stated rate the stamps contradict warned of, with the remedy"
+for f in sr215 sr200; do
+    expect_exit 0 "psd of $f.bin" "$H" psd "$T/$f.bin"
+    grep -q "file states [0-9]" "$T/err" && fail "psd: $f.bin's stated rate questioned: $(cat "$T/err")" || pass "psd: $f.bin's stated rate (within 10 %) not questioned"
+done
 expect_exit 0 "psd of the bundled walk" "$H" psd vectors/walk.bin
 grep -q "come in bursts" "$T/err" && fail "psd: the bundled walk warned of bursts" || pass "psd: the bundled walk, no burst warning"
 
