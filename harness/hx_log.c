@@ -1849,8 +1849,13 @@ static int setup_bin(hx_reader_t *r)
         return -1;
     }
     if (rc == 0) {
-        set_err(r, "%s: too short for a footnav log header (%zu of %d bytes)", r->path, r->len - r->pos,
-                HX_BIN_HEADER_SIZE);
+        /* a .bin.gz cut inside the header is a truncated .gz, as after it
+         * (next_bin): it was said as a .bin too short for its header until
+         * 2026-12-01 (a review; test_bin_gz_header_cut) */
+        set_err(r, "%s: %s (%zu of %d bytes)", r->path,
+                r->gz_cut ? "the gzip data ends early (a truncated .gz, e.g. an incomplete copy) inside the header"
+                          : "too short for a footnav log header",
+                r->len - r->pos, HX_BIN_HEADER_SIZE);
         return -1;
     }
     if (hx_bin_header_decode(r->buf + r->pos, r->len - r->pos, &h, msg, sizeof msg) != 0) {

@@ -751,6 +751,53 @@ static void test_gz_truncated(void **state)
     }
 }
 
+/* A .bin.gz cut inside its 192-byte header: said as a truncated .gz, as
+ * docs/log-format.md ("A truncated .gz") promises, with the bytes of the
+ * header it holds. Until 2026-12-01 it said "too short for a footnav log
+ * header (130 of 192 bytes)", the message of a plain .bin cut short, which
+ * stays. The golden file is stored uncompressed (level 0: a 10-byte gzip
+ * header, a 5-byte block header, then the bytes), so that a cut at
+ * 15 + 100 bytes leaves exactly 100 bytes of the header. */
+static void test_bin_gz_header_cut(void **state)
+{
+    char p[256], pz[256];
+    readall_t r;
+    gzFile gz;
+    (void)state;
+    tmp_path(pz, sizeof pz, ".bin.gz");
+    gz = gzopen(pz, "wb0");
+    assert_non_null(gz);
+    assert_int_equal(gzwrite(gz, g_golden, (unsigned)g_golden_n), (int)g_golden_n);
+    assert_int_equal(gzclose(gz), Z_OK);
+    assert_int_equal(truncate(pz, 15 + 100), 0);
+    assert_int_equal(read_all(pz, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    if (strstr(r.err, pz) == NULL ||
+        strstr(r.err, ": the gzip data ends early (a truncated .gz, e.g. an incomplete copy) inside the header "
+                      "(100 of 192 bytes)") == NULL) {
+        fail_msg("'%s' does not name the truncated .gz", r.err);
+    }
+    assert_int_equal(read_all(pz, HX_FMT_BIN, 0.0, &r, NULL), -1); /* --from bin: the same */
+    assert_non_null(strstr(r.err, "the gzip data ends early"));
+    unlink(pz);
+    /* a plain .bin cut in its header: unchanged */
+    tmp_path(p, sizeof p, ".bin");
+    write_file(p, g_golden, 100);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    assert_non_null(strstr(r.err, ": too short for a footnav log header (100 of 192 bytes)"));
+    assert_null(strstr(r.err, "gzip"));
+    unlink(p);
+    /* a whole .bin.gz ending inside the header (a header written, the
+     * compressed stream complete): no truncated .gz, the header is short */
+    gz = gzopen(pz, "wb");
+    assert_non_null(gz);
+    assert_int_equal(gzwrite(gz, g_golden, 100), 100);
+    assert_int_equal(gzclose(gz), Z_OK);
+    assert_int_equal(read_all(pz, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    assert_non_null(strstr(r.err, ": too short for a footnav log header (100 of 192 bytes)"));
+    assert_null(strstr(r.err, "gzip"));
+    unlink(pz);
+}
+
 /* Reads the foreign recording at p to its end: it must be of format fmt,
  * give n samples and end normally with a warning containing warn. */
 static void expect_cut(const char *p, hx_format_t fmt, int n, const char *warn)
@@ -3843,6 +3890,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_seed_formats),
         cmocka_unit_test(test_detect_wrong_hint),
         cmocka_unit_test(test_gz_truncated),
+        cmocka_unit_test(test_bin_gz_header_cut),
         cmocka_unit_test(test_stamp_rate),
         cmocka_unit_test(test_stamp_bursts),
         cmocka_unit_test(test_stamp_bursts_rate),
