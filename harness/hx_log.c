@@ -2028,7 +2028,14 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                     break;
                 }
             }
-            r->record_slot++;
+            /* the stretch skipped (from the bad record to the next valid
+             * one) counts as the records it holds, to the nearest whole
+             * one: the fewest bytes inserted or lost. Ten bytes inserted
+             * hold none, two damaged records two; it counted one whatever
+             * its length until 2026-12-01, and the records after ten bytes
+             * inserted were numbered one too high (a review;
+             * test_bin_resync_numbers) */
+            r->record_slot += (long)((r->offset - at + HX_BIN_RECORD_SIZE / 2) / HX_BIN_RECORD_SIZE);
         }
     }
 }

@@ -421,6 +421,37 @@ static void test_bin_resync_counts(void **state)
     unlink(p);
 }
 
+/* The record numbers after a byte-by-byte resynchronisation (record #N
+ * counts from 0, the header excluded: docs/log-format.md, "Integrity"):
+ * the stretch skipped counts as the records it holds, to the nearest whole
+ * one. Ten bytes inserted before record 2 hold none: record 4, with a NaN,
+ * is #4 at byte 192 + 4 * 48 + 10 (it was #5: the stretch counted one).
+ * Records 1 and 2 damaged, which the next slot cannot skip: 96 bytes, two
+ * records, so record 4 is #4 at byte 384 (it was #3). */
+static void test_bin_resync_numbers(void **state)
+{
+    unsigned char b[4096];
+    const size_t r2 = HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE;
+    hx_bin_record_t rec;
+    (void)state;
+    memcpy(b, g_golden, g_golden_n);
+    assert_int_equal(hx_bin_record_decode(b + HX_BIN_HEADER_SIZE + 4 * HX_BIN_RECORD_SIZE, &rec), 0);
+    rec.acc[0] = (float)NAN;
+    hx_bin_record_encode(&rec, b + HX_BIN_HEADER_SIZE + 4 * HX_BIN_RECORD_SIZE);
+    {
+        unsigned char c[4096];
+        memcpy(c, b, r2);
+        memcpy(c + r2, "0123456789", 10);
+        memcpy(c + r2 + 10, b + r2, g_golden_n - r2);
+        expect_bin(c, g_golden_n + 10, 1, 4, FNAV_E_NANINF, "record #4 at byte 394: NaN or Inf in a sample");
+        expect_bin(c, g_golden_n + 10, 1, 4, FNAV_E_NANINF,
+                   "record #2 at byte 288: unknown record type (corrupted); skipped");
+    }
+    b[HX_BIN_HEADER_SIZE + 1 * HX_BIN_RECORD_SIZE + 20] ^= 0x40;
+    b[r2 + 20] ^= 0x40;
+    expect_bin(b, g_golden_n, 1, 2, FNAV_E_NANINF, "record #4 at byte 384: NaN or Inf in a sample");
+}
+
 static void test_bin_nan_record(void **state)
 {
     unsigned char b[4096];
@@ -3856,6 +3887,7 @@ int main(void)
         cmocka_unit_test(test_bin_header_fields),
         cmocka_unit_test(test_bin_end_count),
         cmocka_unit_test(test_bin_resync_counts),
+        cmocka_unit_test(test_bin_resync_numbers),
         cmocka_unit_test(test_csv_malformed),
         cmocka_unit_test(test_csv_flexible),
         cmocka_unit_test(test_csv_missing_temp),
