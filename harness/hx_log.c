@@ -2087,6 +2087,27 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
     if (fmt == HX_FMT_AUTO) {
         fmt = detect(head, (size_t)got);
         guessed = 1;
+        if (fmt != HX_FMT_BIN && got >= 4 && (hx_ends_in(path, strlen(path), ".bin") ||
+                                              hx_ends_in(path, strlen(path), ".bin.gz"))) {
+            /* a .bin whose magic is one byte off (a flipped bit) is no
+             * text: it was read as CSV, "a NUL byte in the text", until
+             * 2026-12-01 (a review; test_bin_bad_magic). Three of the four
+             * bytes of FNAV, and the name: no text file is so taken */
+            int k, same = 0;
+            for (k = 0; k < 4; k++) {
+                same += head[k] == (unsigned char)HX_BIN_MAGIC[k];
+            }
+            if (same == 3) {
+                snprintf(err, err_size, "%s: not a footnav .bin: bad magic (its first 4 bytes are %02x %02x %02x "
+                                        "%02x, not FNAV's %02x %02x %02x %02x: a damaged file?)",
+                         path, head[0], head[1], head[2], head[3], (unsigned char)HX_BIN_MAGIC[0],
+                         (unsigned char)HX_BIN_MAGIC[1], (unsigned char)HX_BIN_MAGIC[2],
+                         (unsigned char)HX_BIN_MAGIC[3]);
+                gzclose(r->gz);
+                free(r);
+                return NULL;
+            }
+        }
     }
     if (gzrewind(r->gz) != 0) {
         snprintf(err, err_size, "%s: cannot rewind", path);

@@ -260,7 +260,7 @@ static void test_bin_corrupted(void **state)
     /* wrong magic */
     memcpy(b, g_golden, g_golden_n);
     b[0] = 'X';
-    expect_bin(b, g_golden_n, 0, 0, FNAV_END, NULL);
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, "not a footnav .bin: bad magic (its first 4 bytes are 58 4e 41 56");
     /* wrong version */
     memcpy(b, g_golden, g_golden_n);
     b[4] = 2;
@@ -293,6 +293,53 @@ static void test_bin_corrupted(void **state)
     memcpy(b, g_golden, g_golden_n);
     memset(b + g_golden_n, 0x55, 100);
     expect_bin(b, g_golden_n + 100, 1, 6, FNAV_E_CRC, "corrupted");
+}
+
+/* A .bin (or .bin.gz) whose magic is off by one byte (a flipped bit): the
+ * content is no text, so detection read it as CSV and said "a NUL byte in
+ * the text" until 2026-12-01; a file so named whose first four bytes hold
+ * three of FNAV's is now said to be a .bin with a bad magic. The same
+ * bytes under another name, or two bytes of the magic, are read as before. */
+static void test_bin_bad_magic(void **state)
+{
+    unsigned char b[4096];
+    char p[256];
+    readall_t r;
+    gzFile gz;
+    (void)state;
+    memcpy(b, g_golden, g_golden_n);
+    b[0] ^= 0x01; /* 'G' */
+    tmp_path(p, sizeof p, ".bin");
+    write_file(p, b, g_golden_n);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    if (strstr(r.err, p) == NULL ||
+        strstr(r.err, ": not a footnav .bin: bad magic (its first 4 bytes are 47 4e 41 56, not FNAV's 46 4e 41 56: "
+                      "a damaged file?)") == NULL) {
+        fail_msg("'%s' names no bad magic", r.err);
+    }
+    unlink(p);
+    tmp_path(p, sizeof p, ".BIN.gz");
+    gz = gzopen(p, "wb");
+    assert_non_null(gz);
+    assert_int_equal(gzwrite(gz, b, (unsigned)g_golden_n), (int)g_golden_n);
+    assert_int_equal(gzclose(gz), Z_OK);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    assert_non_null(strstr(r.err, ": not a footnav .bin: bad magic"));
+    unlink(p);
+    b[3] = 'X'; /* two bytes off: not taken for a damaged magic */
+    tmp_path(p, sizeof p, ".bin");
+    write_file(p, b, g_golden_n);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    assert_null(strstr(r.err, "bad magic"));
+    assert_non_null(strstr(r.err, "a NUL byte in the text"));
+    unlink(p);
+    b[3] = 'V'; /* another name: the content decides, as before */
+    tmp_path(p, sizeof p, ".dat");
+    write_file(p, b, g_golden_n);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    assert_null(strstr(r.err, "bad magic"));
+    assert_non_null(strstr(r.err, "a NUL byte in the text"));
+    unlink(p);
 }
 
 /* The golden file with its header's CRC made right again after a change
@@ -3882,6 +3929,7 @@ int main(void)
         cmocka_unit_test(test_csv_bin_csv_text),
         cmocka_unit_test(test_bin_truncated),
         cmocka_unit_test(test_bin_corrupted),
+        cmocka_unit_test(test_bin_bad_magic),
         cmocka_unit_test(test_bin_nan_record),
         cmocka_unit_test(test_bin_bad_record_values),
         cmocka_unit_test(test_bin_header_fields),
