@@ -37,6 +37,8 @@ typedef struct {
     long sat[6];
     double peak[6];
     double g_vec[3], g_mag, still_t_s, gyro_rest[3];
+    double still_spread; /* the stillest second's spread of f over its mean |f| (INFO_STILL_SPREAD) */
+    int still;           /* that second is still: its |f| is the rest value the units check reads */
     int g_axis;
     int units_bad;     /* not SI units (hx_units_problem) */
     char units[768];   /* why, and the remedy */
@@ -72,6 +74,19 @@ static void saturation(const hx_log_t *log, long sat[6], double peak[6])
         sat[c] = hx_sat_count(&st, c);
     }
 }
+
+/* The stillest second is a rest when its specific force spreads (the
+ * root of the summed per-axis variances) by less than this fraction of its
+ * mean |f|: at most 0.017 over the 69 logs of ../shared/data (0.0044 on
+ * vectors/walk.bin), 0.34 to 2.6 where a simulated walk or run has no rest
+ * (bin/harness sim --motion walk:20, run:20, walk:20 --cadence 60;
+ * scripts/info_still_spread.py, docs/harness.md "info"). A
+ * ratio, so that a log in g or mg is judged as one in m/s^2; the gyro is
+ * left out, since its unit is what the check may find wrong (a still gyro
+ * in deg/s spreads by tenths of a "rad/s"). Until 2026-12-01 any stillest
+ * second was taken for a rest, and a walk without one was told its
+ * accelerometer was not in m/s^2 (|f| = 13.8 mid-stride; a review). */
+#define INFO_STILL_SPREAD 0.1
 
 static void analyse(const hx_log_t *log, info_t *in)
 {
@@ -187,6 +202,17 @@ static void analyse(const hx_log_t *log, info_t *in)
                 }
             }
             in->still_t_s = 1e-9 * (double)(log->t_ns[best] - log->t_ns[0]);
+            {
+                double var = 0.0;
+                for (k = best; k < best + w; k++) {
+                    for (c = 0; c < 3; c++) {
+                        const double d = log->acc[k][c] - in->g_vec[c];
+                        var += d * d / (double)w;
+                    }
+                }
+                in->still_spread = in->g_mag > 0.0 ? sqrt(var) / in->g_mag : HUGE_VAL;
+                in->still = in->still_spread < INFO_STILL_SPREAD;
+            }
         }
     }
     {
@@ -205,7 +231,8 @@ static void analyse(const hx_log_t *log, info_t *in)
                          sqrt(log->acc[i][0] * log->acc[i][0] + log->acc[i][1] * log->acc[i][1] +
                               log->acc[i][2] * log->acc[i][2]));
         }
-        in->units_bad = hx_units_problem(in->g_mag, 9.80665, wmax, 0.0,
+        /* no rest, no |f| at rest to judge (0: not known); the gyro's marks need none */
+        in->units_bad = hx_units_problem(in->still ? in->g_mag : 0.0, 9.80665, wmax, 0.0,
                                          log->meta.rate_nominal
                                              ? csv
                                              : hx_time_unit_layout(hx_log_time_unit_rate(log, in->rate_hz), csv, &lay_t),
@@ -423,7 +450,8 @@ int hx_cmd_info(int argc, char **argv)
         hx_csv_layout_t lay, lay_w; /* with the unit items of the units line (one --units value) */
         if (!log.meta.rate_nominal &&
             hx_time_unit_hint(hx_log_time_unit_rate(&log, in.rate_hz), /* no hint for stamps in bursts */
-                              hx_units_want(hx_units_layout(log.meta.format, &lay), in.g_mag, 9.80665, in.gyro_max,
+                              hx_units_want(hx_units_layout(log.meta.format, &lay), in.still ? in.g_mag : 0.0, 9.80665,
+                                            in.gyro_max,
                                             &lay_w),
                               hint, sizeof hint)) {
             hx_warn("info", "%s: %s", a.pos[0], hint);
@@ -489,8 +517,16 @@ int hx_cmd_info(int argc, char **argv)
     printf("            gyro (%.5f, %.5f, %.5f) rad/s = (%.3f, %.3f, %.3f) deg/s\n", in.gyro_rest[0], in.gyro_rest[1],
            in.gyro_rest[2], in.gyro_rest[0] * 57.29577951308232, in.gyro_rest[1] * 57.29577951308232,
            in.gyro_rest[2] * 57.29577951308232);
+    if (!in.still) {
+        printf("            not still: f spreads by %.0f %% of its mean |f| in that second (a rest: below %.0f %%)\n",
+               100.0 * in.still_spread, 100.0 * INFO_STILL_SPREAD);
+    }
     if (in.units_bad) {
-        printf("units       NOT SI: %s\n", in.units);
+        printf("units       NOT SI: %s%s\n", in.units,
+               in.still ? "" : " (no still second found: the accelerometer's units not checked)");
+    } else if (!in.still) {
+        printf("units       no still second found: units not checked (the accelerometer's is read at rest; the "
+               "gyro's range found nothing wrong)\n");
     }
     if (log.status != FNAV_END) {
         printf("incomplete  %s\n", log.error);

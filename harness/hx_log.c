@@ -1849,8 +1849,13 @@ static int setup_bin(hx_reader_t *r)
         return -1;
     }
     if (rc == 0) {
-        set_err(r, "%s: too short for a footnav log header (%zu of %d bytes)", r->path, r->len - r->pos,
-                HX_BIN_HEADER_SIZE);
+        /* a .bin.gz cut inside the header is a truncated .gz, as after it
+         * (next_bin): it was said as a .bin too short for its header until
+         * 2026-12-01 (a review; test_bin_gz_header_cut) */
+        set_err(r, "%s: %s (%zu of %d bytes)", r->path,
+                r->gz_cut ? "the gzip data ends early (a truncated .gz, e.g. an incomplete copy) inside the header"
+                          : "too short for a footnav log header",
+                r->len - r->pos, HX_BIN_HEADER_SIZE);
         return -1;
     }
     if (hx_bin_header_decode(r->buf + r->pos, r->len - r->pos, &h, msg, sizeof msg) != 0) {
@@ -2023,7 +2028,14 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                     break;
                 }
             }
-            r->record_slot++;
+            /* the stretch skipped (from the bad record to the next valid
+             * one) counts as the records it holds, to the nearest whole
+             * one: the fewest bytes inserted or lost. Ten bytes inserted
+             * hold none, two damaged records two; it counted one whatever
+             * its length until 2026-12-01, and the records after ten bytes
+             * inserted were numbered one too high (a review;
+             * test_bin_resync_numbers) */
+            r->record_slot += (long)((r->offset - at + HX_BIN_RECORD_SIZE / 2) / HX_BIN_RECORD_SIZE);
         }
     }
 }
@@ -2075,6 +2087,27 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
     if (fmt == HX_FMT_AUTO) {
         fmt = detect(head, (size_t)got);
         guessed = 1;
+        if (fmt != HX_FMT_BIN && got >= 4 && (hx_ends_in(path, strlen(path), ".bin") ||
+                                              hx_ends_in(path, strlen(path), ".bin.gz"))) {
+            /* a .bin whose magic is one byte off (a flipped bit) is no
+             * text: it was read as CSV, "a NUL byte in the text", until
+             * 2026-12-01 (a review; test_bin_bad_magic). Three of the four
+             * bytes of FNAV, and the name: no text file is so taken */
+            int k, same = 0;
+            for (k = 0; k < 4; k++) {
+                same += head[k] == (unsigned char)HX_BIN_MAGIC[k];
+            }
+            if (same == 3) {
+                snprintf(err, err_size, "%s: not a footnav .bin: bad magic (its first 4 bytes are %02x %02x %02x "
+                                        "%02x, not FNAV's %02x %02x %02x %02x: a damaged file?)",
+                         path, head[0], head[1], head[2], head[3], (unsigned char)HX_BIN_MAGIC[0],
+                         (unsigned char)HX_BIN_MAGIC[1], (unsigned char)HX_BIN_MAGIC[2],
+                         (unsigned char)HX_BIN_MAGIC[3]);
+                gzclose(r->gz);
+                free(r);
+                return NULL;
+            }
+        }
     }
     if (gzrewind(r->gz) != 0) {
         snprintf(err, err_size, "%s: cannot rewind", path);

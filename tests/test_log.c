@@ -260,7 +260,7 @@ static void test_bin_corrupted(void **state)
     /* wrong magic */
     memcpy(b, g_golden, g_golden_n);
     b[0] = 'X';
-    expect_bin(b, g_golden_n, 0, 0, FNAV_END, NULL);
+    expect_bin(b, g_golden_n, 0, 0, FNAV_END, "not a footnav .bin: bad magic (its first 4 bytes are 58 4e 41 56");
     /* wrong version */
     memcpy(b, g_golden, g_golden_n);
     b[4] = 2;
@@ -293,6 +293,53 @@ static void test_bin_corrupted(void **state)
     memcpy(b, g_golden, g_golden_n);
     memset(b + g_golden_n, 0x55, 100);
     expect_bin(b, g_golden_n + 100, 1, 6, FNAV_E_CRC, "corrupted");
+}
+
+/* A .bin (or .bin.gz) whose magic is off by one byte (a flipped bit): the
+ * content is no text, so detection read it as CSV and said "a NUL byte in
+ * the text" until 2026-12-01; a file so named whose first four bytes hold
+ * three of FNAV's is now said to be a .bin with a bad magic. The same
+ * bytes under another name, or two bytes of the magic, are read as before. */
+static void test_bin_bad_magic(void **state)
+{
+    unsigned char b[4096];
+    char p[256];
+    readall_t r;
+    gzFile gz;
+    (void)state;
+    memcpy(b, g_golden, g_golden_n);
+    b[0] ^= 0x01; /* 'G' */
+    tmp_path(p, sizeof p, ".bin");
+    write_file(p, b, g_golden_n);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    if (strstr(r.err, p) == NULL ||
+        strstr(r.err, ": not a footnav .bin: bad magic (its first 4 bytes are 47 4e 41 56, not FNAV's 46 4e 41 56: "
+                      "a damaged file?)") == NULL) {
+        fail_msg("'%s' names no bad magic", r.err);
+    }
+    unlink(p);
+    tmp_path(p, sizeof p, ".BIN.gz");
+    gz = gzopen(p, "wb");
+    assert_non_null(gz);
+    assert_int_equal(gzwrite(gz, b, (unsigned)g_golden_n), (int)g_golden_n);
+    assert_int_equal(gzclose(gz), Z_OK);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    assert_non_null(strstr(r.err, ": not a footnav .bin: bad magic"));
+    unlink(p);
+    b[3] = 'X'; /* two bytes off: not taken for a damaged magic */
+    tmp_path(p, sizeof p, ".bin");
+    write_file(p, b, g_golden_n);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    assert_null(strstr(r.err, "bad magic"));
+    assert_non_null(strstr(r.err, "a NUL byte in the text"));
+    unlink(p);
+    b[3] = 'V'; /* another name: the content decides, as before */
+    tmp_path(p, sizeof p, ".dat");
+    write_file(p, b, g_golden_n);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    assert_null(strstr(r.err, "bad magic"));
+    assert_non_null(strstr(r.err, "a NUL byte in the text"));
+    unlink(p);
 }
 
 /* The golden file with its header's CRC made right again after a change
@@ -419,6 +466,37 @@ static void test_bin_resync_counts(void **state)
     assert_int_equal(log.stats.skipped_bytes, 7);
     hx_log_free(&log);
     unlink(p);
+}
+
+/* The record numbers after a byte-by-byte resynchronisation (record #N
+ * counts from 0, the header excluded: docs/log-format.md, "Integrity"):
+ * the stretch skipped counts as the records it holds, to the nearest whole
+ * one. Ten bytes inserted before record 2 hold none: record 4, with a NaN,
+ * is #4 at byte 192 + 4 * 48 + 10 (it was #5: the stretch counted one).
+ * Records 1 and 2 damaged, which the next slot cannot skip: 96 bytes, two
+ * records, so record 4 is #4 at byte 384 (it was #3). */
+static void test_bin_resync_numbers(void **state)
+{
+    unsigned char b[4096];
+    const size_t r2 = HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE;
+    hx_bin_record_t rec;
+    (void)state;
+    memcpy(b, g_golden, g_golden_n);
+    assert_int_equal(hx_bin_record_decode(b + HX_BIN_HEADER_SIZE + 4 * HX_BIN_RECORD_SIZE, &rec), 0);
+    rec.acc[0] = (float)NAN;
+    hx_bin_record_encode(&rec, b + HX_BIN_HEADER_SIZE + 4 * HX_BIN_RECORD_SIZE);
+    {
+        unsigned char c[4096];
+        memcpy(c, b, r2);
+        memcpy(c + r2, "0123456789", 10);
+        memcpy(c + r2 + 10, b + r2, g_golden_n - r2);
+        expect_bin(c, g_golden_n + 10, 1, 4, FNAV_E_NANINF, "record #4 at byte 394: NaN or Inf in a sample");
+        expect_bin(c, g_golden_n + 10, 1, 4, FNAV_E_NANINF,
+                   "record #2 at byte 288: unknown record type (corrupted); skipped");
+    }
+    b[HX_BIN_HEADER_SIZE + 1 * HX_BIN_RECORD_SIZE + 20] ^= 0x40;
+    b[r2 + 20] ^= 0x40;
+    expect_bin(b, g_golden_n, 1, 2, FNAV_E_NANINF, "record #4 at byte 384: NaN or Inf in a sample");
 }
 
 static void test_bin_nan_record(void **state)
@@ -749,6 +827,53 @@ static void test_gz_truncated(void **state)
             unlink(pz);
         }
     }
+}
+
+/* A .bin.gz cut inside its 192-byte header: said as a truncated .gz, as
+ * docs/log-format.md ("A truncated .gz") promises, with the bytes of the
+ * header it holds. Until 2026-12-01 it said "too short for a footnav log
+ * header (130 of 192 bytes)", the message of a plain .bin cut short, which
+ * stays. The golden file is stored uncompressed (level 0: a 10-byte gzip
+ * header, a 5-byte block header, then the bytes), so that a cut at
+ * 15 + 100 bytes leaves exactly 100 bytes of the header. */
+static void test_bin_gz_header_cut(void **state)
+{
+    char p[256], pz[256];
+    readall_t r;
+    gzFile gz;
+    (void)state;
+    tmp_path(pz, sizeof pz, ".bin.gz");
+    gz = gzopen(pz, "wb0");
+    assert_non_null(gz);
+    assert_int_equal(gzwrite(gz, g_golden, (unsigned)g_golden_n), (int)g_golden_n);
+    assert_int_equal(gzclose(gz), Z_OK);
+    assert_int_equal(truncate(pz, 15 + 100), 0);
+    assert_int_equal(read_all(pz, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    if (strstr(r.err, pz) == NULL ||
+        strstr(r.err, ": the gzip data ends early (a truncated .gz, e.g. an incomplete copy) inside the header "
+                      "(100 of 192 bytes)") == NULL) {
+        fail_msg("'%s' does not name the truncated .gz", r.err);
+    }
+    assert_int_equal(read_all(pz, HX_FMT_BIN, 0.0, &r, NULL), -1); /* --from bin: the same */
+    assert_non_null(strstr(r.err, "the gzip data ends early"));
+    unlink(pz);
+    /* a plain .bin cut in its header: unchanged */
+    tmp_path(p, sizeof p, ".bin");
+    write_file(p, g_golden, 100);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    assert_non_null(strstr(r.err, ": too short for a footnav log header (100 of 192 bytes)"));
+    assert_null(strstr(r.err, "gzip"));
+    unlink(p);
+    /* a whole .bin.gz ending inside the header (a header written, the
+     * compressed stream complete): no truncated .gz, the header is short */
+    gz = gzopen(pz, "wb");
+    assert_non_null(gz);
+    assert_int_equal(gzwrite(gz, g_golden, 100), 100);
+    assert_int_equal(gzclose(gz), Z_OK);
+    assert_int_equal(read_all(pz, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+    assert_non_null(strstr(r.err, ": too short for a footnav log header (100 of 192 bytes)"));
+    assert_null(strstr(r.err, "gzip"));
+    unlink(pz);
 }
 
 /* Reads the foreign recording at p to its end: it must be of format fmt,
@@ -3804,11 +3929,13 @@ int main(void)
         cmocka_unit_test(test_csv_bin_csv_text),
         cmocka_unit_test(test_bin_truncated),
         cmocka_unit_test(test_bin_corrupted),
+        cmocka_unit_test(test_bin_bad_magic),
         cmocka_unit_test(test_bin_nan_record),
         cmocka_unit_test(test_bin_bad_record_values),
         cmocka_unit_test(test_bin_header_fields),
         cmocka_unit_test(test_bin_end_count),
         cmocka_unit_test(test_bin_resync_counts),
+        cmocka_unit_test(test_bin_resync_numbers),
         cmocka_unit_test(test_csv_malformed),
         cmocka_unit_test(test_csv_flexible),
         cmocka_unit_test(test_csv_missing_temp),
@@ -3843,6 +3970,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_seed_formats),
         cmocka_unit_test(test_detect_wrong_hint),
         cmocka_unit_test(test_gz_truncated),
+        cmocka_unit_test(test_bin_gz_header_cut),
         cmocka_unit_test(test_stamp_rate),
         cmocka_unit_test(test_stamp_bursts),
         cmocka_unit_test(test_stamp_bursts_rate),

@@ -136,6 +136,24 @@ expect_err "(they look like milliseconds, a 100 Hz log: divide by 1000)" "info o
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 300; k++) printf "%.2f,0,0,1,0,0,0\n", k / 100 }' > "$T/ing.csv"
 expect_exit 0 "info on a log in g" "$H" info "$T/ing.csv"
 expect_out "units       NOT SI: .*not in m/s^2 but in g (give --units accel=g)" "info names --units accel=g for a CSV in g"
+# a walk with no still second (sim walk:20 starts walking at once): its stillest second is mid-stride, whose
+# |f| (13.8) was read as the rest and the SI log called "NOT SI" until 2026-12-01; now no verdict on the
+# accelerometer, said so, exit 0 (docs/harness.md, "info")
+expect_exit 0 "sim walk:20 (no rest)" "$H" sim --motion walk:20 --out "$T/norest.bin"
+expect_exit 0 "info on a walk with no still second" "$H" info "$T/norest.bin"
+expect_out "not still: f spreads by [0-9]* % of its mean |f| in that second (a rest: below 10 %)" \
+    "info: the stillest second of a walk with no rest is said not to be still"
+expect_out "units       no still second found: units not checked" "info: no rest, no units verdict"
+if grep -q "NOT SI" "$T/out"; then fail "info: an SI walk with no rest called NOT SI"; else
+    pass "info: an SI walk with no rest is not called NOT SI"; fi
+# the same walk's gyro in deg/s needs no rest: still named (the accelerometer not checked)
+expect_exit 0 "the walk to CSV" "$H" convert "$T/norest.bin" "$T/norest.csv"
+awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.9g,%.9g,%.9g\n", $1, $2, $3, $4, $5 * 57.29577951308232,
+    $6 * 57.29577951308232, $7 * 57.29577951308232 }' "$T/norest.csv" > "$T/norest_dps.csv"
+expect_exit 0 "info on the walk with its gyro in deg/s" "$H" info "$T/norest_dps.csv"
+expect_out "units       NOT SI: .*probably in deg/s (give --units gyro=deg/s).* (no still second found: the accelerometer's units not checked)" \
+    "info: no rest, the gyro in deg/s still named"
+# a rest in g is still found still (its spread is a ratio to its mean |f|): the log in g above stays NOT SI
 # a unit item given stays in the remedy (a second --units replaces the first): a log in g stamped in ms
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 300; k++) printf "%d,0,0,1,0,0,0\n", 10 * k }' > "$T/ingms.csv"
 expect_exit 0 "info on a log in g stamped in ms, read with --units time=ms" "$H" info "$T/ingms.csv" --units time=ms
