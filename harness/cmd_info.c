@@ -323,6 +323,14 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
         cJSON_AddNullToObject(j, "units_problem");
     }
     add_num(j, "still_window_start_s", in->still_t_s, in);
+    /* whether that window is a rest (INFO_STILL_SPREAD): without one the
+     * accelerometer's units are not checked, and units_problem's null
+     * says only that the gyro's look SI */
+    if (in->empty) {
+        cJSON_AddNullToObject(j, "still_found");
+    } else {
+        cJSON_AddBoolToObject(j, "still_found", in->still);
+    }
     cJSON_AddBoolToObject(j, "complete", log->status == FNAV_END);
     if (log->status != FNAV_END) {
         cJSON_AddStringToObject(j, "error", log->error);

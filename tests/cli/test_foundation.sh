@@ -146,6 +146,13 @@ expect_out "not still: f spreads by [0-9]* % of its mean |f| in that second (a r
 expect_out "units       no still second found: units not checked" "info: no rest, no units verdict"
 if grep -q "NOT SI" "$T/out"; then fail "info: an SI walk with no rest called NOT SI"; else
     pass "info: an SI walk with no rest is not called NOT SI"; fi
+# the JSON tells "no still second" from "looks SI" (units_problem null in both): still_found false / true
+expect_exit 0 "info --json on the walk with no rest" "$H" info "$T/norest.bin" --json "$T/norest.json"
+if grep -q '"still_found":[[:space:]]*false' "$T/norest.json"; then pass "info --json: still_found false without a rest"
+else fail "info --json: no still_found false: $(tr -d '\n\t' <"$T/norest.json" | head -c 300)"; fi
+expect_exit 0 "info --json on the bundled walk" "$H" info vectors/walk.bin --json "$T/walk_info.json"
+if grep -q '"still_found":[[:space:]]*true' "$T/walk_info.json"; then pass "info --json: still_found true with a rest"
+else fail "info --json: no still_found true on walk.bin"; fi
 # the same walk's gyro in deg/s needs no rest: still named (the accelerometer not checked)
 expect_exit 0 "the walk to CSV" "$H" convert "$T/norest.bin" "$T/norest.csv"
 awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.9g,%.9g,%.9g\n", $1, $2, $3, $4, $5 * 57.29577951308232,
