@@ -467,6 +467,71 @@ static void test_rotated_accel_noise(void **state)
     }
 }
 
+/* The gyroscope's white noise enters the attitude-error covariance rotated
+ * into the navigation frame, as the accelerometer's does the velocity's
+ * (test_rotated_accel_noise): the attitude error a is about the n axes
+ * (q_true = dq(a) q_nb, fnav_ukf.h), a body-frame rate error e adds C e dt
+ * to it, so each prediction adds C diag(q^2) C^T dt, C = C_nb. A body at
+ * rest in a rotated attitude with anisotropic densities, the bias model and
+ * the accelerometer noise off, an attitude sd of 1e-7 rad, one prediction:
+ * without rotation and with the rate zero the n-frame error is carried
+ * unchanged (q_true' = dq(a) q_nb dq(w dt)), so the attitude block is
+ * exactly s^2 I + C diag(q^2) C^T dt. No test held the gyro's rotation
+ * before (the filter review of 2026-12-01: the noise added with C^T in
+ * place of C, or unrotated, passed every test_ukf test; both fail here:
+ * the elements differ by up to 5.7e-5 and 3.7e-5 (rad^2) against a
+ * tolerance of 1.9e-10).
+ * Rounding: the noise's sums and the attitude columns' scatter, a few EPS
+ * of the largest variance: 16 EPS of it. */
+static void test_rotated_gyro_noise(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const double q2[3] = { 0.02 * 0.02, 0.05 * 0.05, 0.1 * 0.1 }, dt = 0.01, s = 1.0e-7;
+    const fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.3), FNAV_R(-0.4), FNAV_R(1.1));
+    double C[3][3], w, x, y, z, top = 0.0;
+    fnav_vec3_t fb;
+    int i, j, k;
+    (void)state;
+    c.bias_model = FNAV_BIAS_OFF;
+    for (i = 0; i < 3; i++) {
+        c.gyro_noise_rps_rthz[i] = (fnav_real_t)sqrt(q2[i]);
+        c.accel_noise_mps2_rthz[i] = FNAV_R(0.0);
+        sd.att_rad[i] = (fnav_real_t)s;
+    }
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, q0, fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    w = (double)f.q_nb.q[0];
+    x = (double)f.q_nb.q[1];
+    y = (double)f.q_nb.q[2];
+    z = (double)f.q_nb.q[3];
+    C[0][0] = 1.0 - 2.0 * (y * y + z * z);
+    C[0][1] = 2.0 * (x * y - w * z);
+    C[0][2] = 2.0 * (x * z + w * y);
+    C[1][0] = 2.0 * (x * y + w * z);
+    C[1][1] = 1.0 - 2.0 * (x * x + z * z);
+    C[1][2] = 2.0 * (y * z - w * x);
+    C[2][0] = 2.0 * (x * z - w * y);
+    C[2][1] = 2.0 * (y * z + w * x);
+    C[2][2] = 1.0 - 2.0 * (x * x + y * y);
+    assert_true(fabs(C[0][1] - C[1][0]) > 0.1); /* C^T would differ */
+    fb = fnav_quat_rotate(fnav_quat_conj(q0), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g));
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fb, (fnav_real_t)dt), FNAV_OK);
+    for (i = 0; i < 3; i++) {
+        top = q2[i] * dt > top ? q2[i] * dt : top;
+    }
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            double e = (i == j) ? (double)sd.att_rad[i] * (double)sd.att_rad[i] : 0.0;
+            for (k = 0; k < 3; k++) {
+                e += C[i][k] * C[j][k] * q2[k] * (double)(fnav_real_t)dt;
+            }
+            FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_A + i, FNAV_UKF_A + j), e, 16.0 * EPS * top, 0.0);
+        }
+    }
+}
+
 /* The unscented second-order case: the bias model and the noise off, every
  * initial sd negligible but the attitude's about x (s_rad) and the
  * velocity's (sv_mps). */
@@ -2114,6 +2179,7 @@ int main(void)
         cmocka_unit_test(test_linear_covariance),
         cmocka_unit_test(test_ar1_decay),
         cmocka_unit_test(test_rotated_accel_noise),
+        cmocka_unit_test(test_rotated_gyro_noise),
         cmocka_unit_test(test_unscented_second_order),
         cmocka_unit_test(test_weights_psd),
         cmocka_unit_test(test_weights_small_alpha),
