@@ -1144,6 +1144,101 @@ static void test_pitch_through_90(void **state)
     assert_int_equal((int)f.health.chol_jitter + (int)f.health.chol_reset + (int)f.health.diverged, 0);
 }
 
+
+/* A heading near +-180 deg. The paper's filter carries three Euler angles;
+ * averaging sigma points in those angles needs the yaw differences wrapped,
+ * or points on either side of +-180 deg average to about 0. footnav's
+ * attitude error is a GRP vector about the n axes, formed from quaternions
+ * (fnav_ukf.h), so nothing wraps; this pins that down. A level body at rest
+ * at a yaw of 179.9 deg turns about z at 0.2 rad/s (through +180 deg at the
+ * second step) for 40 steps of 5 ms, the yaw sd 0.2 rad (the yaw sigma
+ * points at +-0.77 rad, across the wrap) and roll and pitch 1e-3 rad, the
+ * bias model off. An error about n z commutes with a turn about b z = n z,
+ * and any n-frame error is carried unchanged by a body-frame increment
+ * (q_true' = dq(a) q_nb dq(th)), so every step: the attitude is the truth's
+ * (within 1e-5 rad; a float rounding of the quaternion), the ZYX yaw the
+ * truth's wrapped into (-pi, pi], the attitude covariance exactly the
+ * initial one plus the gyro noise sum_k C_k diag(N^2) C_k^T dt (C_k =
+ * Rz(yaw_k), the propagated attitude) and its yaw row uncorrelated with the
+ * velocity, the speed near 0 (the tilt pairs' second-order mean shift,
+ * 2 Wi g (1 - cos(gamma 1e-3)) dt a step: 1e-6 m/s after 40). Added by the
+ * filter review of 2026-12-01; it passed as the filter stood. Mutants of
+ * sigma_att (throwaway patches): for a level sigma point, the error's z
+ * component taken from the ZYX yaw difference (as 4 tan(d/4)) without
+ * wrapping fails only this test, at the first step (the yaw 1.69 rad
+ * against 3.14); the same with the difference wrapped to (-pi, pi] passes
+ * every test; all three components taken as Euler-angle differences fail
+ * it (0.35 rad off at the first step) and five other tests. */
+static void test_yaw_near_pi(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const double pi = 3.14159265358979323846, psi0 = 179.9 * pi / 180.0, w = 0.2, dt = 0.005;
+    double E[3][3] = { { 0.0 } }, max_err = 0.0, max_pe = 0.0;
+    int k, i, j;
+    (void)state;
+    c.bias_model = FNAV_BIAS_OFF;
+    sd.att_rad[0] = FNAV_R(1.0e-3);
+    sd.att_rad[1] = FNAV_R(1.0e-3);
+    sd.att_rad[2] = FNAV_R(0.2);
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat((fnav_real_t)cos(psi0 / 2.0), FNAV_R(0.0), FNAV_R(0.0),
+                                                  (fnav_real_t)sin(psi0 / 2.0)),
+                                    fnav_vec3_zero(), fnav_vec3_zero(), &sd),
+                     FNAV_OK);
+    for (i = 0; i < 3; i++) {
+        E[i][i] = (double)sd.att_rad[i] * (double)sd.att_rad[i];
+    }
+    for (k = 1; k <= 40; k++) {
+        const double psi = psi0 + w * dt * (double)k, cz = cos(psi / 2.0), sz = sin(psi / 2.0);
+        const double cs = cos(psi), sn = sin(psi);
+        const double R[3][3] = { { cs, -sn, 0.0 }, { sn, cs, 0.0 }, { 0.0, 0.0, 1.0 } };
+        double e[3], err, yaw_t, d;
+        fnav_vec3_t eu;
+        assert_int_equal(fnav_ukf_predict(&f, fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)w),
+                                          fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g), (fnav_real_t)dt),
+                         FNAV_OK);
+        /* vector part of conj(qt) q, qt = (cz, 0, 0, sz) */
+        e[0] = cz * (double)f.q_nb.q[1] + sz * (double)f.q_nb.q[2];
+        e[1] = cz * (double)f.q_nb.q[2] - sz * (double)f.q_nb.q[1];
+        e[2] = cz * (double)f.q_nb.q[3] - sz * (double)f.q_nb.q[0];
+        err = 2.0 * asin(fmin(1.0, sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2])));
+        max_err = fmax(max_err, err);
+        eu = fnav_ukf_euler(&f);
+        assert_true((double)eu.v[2] > -pi && (double)eu.v[2] <= pi);
+        yaw_t = psi > pi ? psi - 2.0 * pi : psi;
+        d = fmod((double)eu.v[2] - yaw_t + 3.0 * pi, 2.0 * pi) - pi;
+        if (!(fabs(d) < 1.0e-5) || !(err < 1.0e-5)) {
+            fail_msg("step %d: yaw %.9f (truth %.9f), attitude error %.3g rad", k, (double)eu.v[2], yaw_t, err);
+        }
+        /* the noise of this interval, rotated by the propagated attitude */
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                int m;
+                for (m = 0; m < 3; m++) {
+                    const double n = (double)c.gyro_noise_rps_rthz[m];
+                    E[i][j] += R[i][m] * R[j][m] * n * n * (double)(fnav_real_t)dt;
+                }
+            }
+        }
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                const double got = (double)fnav_ukf_cov(&f, FNAV_UKF_A + i, FNAV_UKF_A + j);
+                const double tol = 200.0 * EPS * sqrt(E[i][i] * E[j][j]);
+                max_pe = fmax(max_pe, fabs(got - E[i][j]) / sqrt(E[i][i] * E[j][j]));
+                if (!(fabs(got - E[i][j]) <= tol)) {
+                    fail_msg("step %d: attitude covariance (%d, %d) %.9g, expected %.9g", k, i, j, got, E[i][j]);
+                }
+            }
+            assert_true(fabs((double)fnav_ukf_cov(&f, FNAV_UKF_A + 2, FNAV_UKF_V + i)) <=
+                        200.0 * EPS * sqrt(E[2][2] * (double)fnav_ukf_cov(&f, FNAV_UKF_V + i, FNAV_UKF_V + i)));
+        }
+        assert_true(sqrt((double)fnav_vec3_dot(f.vel_mps, f.vel_mps)) < 1.0e-5);
+    }
+    fprintf(stderr, "yaw 179.9 deg through 180: attitude error %.2g rad, covariance %.2g (relative) at most\n",
+            max_err, max_pe);
+}
 /* A ZUPT after a long stretch without one: a velocity variance far above
  * the ZUPT's, within the guard's limit (sd 100 m/s). The update's exact
  * posterior variance is P r2 / (P + r2), about r2 (Joseph form:
@@ -2192,6 +2287,7 @@ int main(void)
         cmocka_unit_test(test_covariance_recovery),
         cmocka_unit_test(test_zupt_after_long_swing),
         cmocka_unit_test(test_pitch_through_90),
+        cmocka_unit_test(test_yaw_near_pi),
         cmocka_unit_test(test_squares_out_of_range),
         cmocka_unit_test(test_nees_bias_off),
         cmocka_unit_test(test_nees_ar1),
