@@ -1389,6 +1389,49 @@ static void test_covariance_recovery(void **state)
                      FNAV_OK);
 }
 
+
+/* The first stage of the Cholesky recovery (fnav_ukf.h, docs/navigation.md
+ * "Numerical robustness"): a covariance just outside the positive definite
+ * cone, a correlation of 1 + 3e-7 between velocity x and position x (the
+ * pivot 1 - rho^2 = -6e-7 of the variance), is symmetrised and its
+ * variances raised by 1e-6 of themselves, which makes the correlation
+ * rho / (1 + 1e-6) < 1 and the factorisation succeed: the step is an
+ * ordinary one (FNAV_OK), counted in chol_jitter, no reset, the
+ * correlation kept (a reset to the diagonal would drop it) and the result
+ * positive definite. No test reached this stage before (the filter review
+ * of 2026-12-01: with the jitter made 0, or its count removed, every
+ * test_ukf test passed; both fail here). */
+static void test_covariance_jitter(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    double pvv, ppp, rho, asym;
+    (void)state;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    pvv = (double)fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_V);
+    ppp = (double)fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_P);
+    fnav_ukf_set_cov(&f, FNAV_UKF_V, FNAV_UKF_P, (fnav_real_t)((1.0 + 3.0e-7) * sqrt(pvv * ppp)));
+    assert_true((double)fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_P) > sqrt(pvv * ppp)); /* indefinite */
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g),
+                                      FNAV_R(0.01)),
+                     FNAV_OK);
+    assert_int_equal(f.health.chol_jitter, 1);
+    assert_int_equal(f.health.chol_reset, 0);
+    assert_int_equal(f.health.cov_guard, 0);
+    rho = (double)fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_P) /
+          sqrt((double)fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_V) * (double)fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_P));
+    assert_true(rho > 0.9);
+    assert_true(fnav_test_cov_spd(&f, &asym) > 0.0);
+    assert_true(asym == 0.0);
+    /* the next step factors without help */
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g),
+                                      FNAV_R(0.01)),
+                     FNAV_OK);
+    assert_int_equal(f.health.chol_jitter, 1);
+    assert_int_equal(f.health.chol_reset, 0);
+}
 /* ------------------------------------------------------------------ NEES */
 
 /* Gaussian numbers from a fixed-seed generator (xorshift64* + Box-Muller),
@@ -2285,6 +2328,7 @@ int main(void)
         cmocka_unit_test(test_diverged),
         cmocka_unit_test(test_covariance_guard),
         cmocka_unit_test(test_covariance_recovery),
+        cmocka_unit_test(test_covariance_jitter),
         cmocka_unit_test(test_zupt_after_long_swing),
         cmocka_unit_test(test_pitch_through_90),
         cmocka_unit_test(test_yaw_near_pi),
