@@ -48,6 +48,15 @@ static int sd_ok(fnav_real_t x)
     return finite_pos(x) && finite_pos(x * x);
 }
 
+/* A white-noise density or random walk (0 allowed) whose square, which the
+ * prediction adds to the covariance, is finite (in float32 one above
+ * 1.8e19 made the first prediction's variance infinite and the guard its
+ * maximum; the UKF review). */
+static int noise_ok(fnav_real_t x)
+{
+    return finite_nonneg(x) && fnav_isfinite(x * x);
+}
+
 fnav_quat_t fnav_ukf_grp_to_quat(fnav_vec3_t p)
 {
     /* Crassidis & Markley 2003, eq. (33) with a = 1, f = 4 */
@@ -94,7 +103,7 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
         return FNAV_E_CONFIG;
     }
     for (i = 0; i < 3; i++) {
-        if (!finite_nonneg(cfg->gyro_noise_rps_rthz[i]) || !finite_nonneg(cfg->accel_noise_mps2_rthz[i])) {
+        if (!noise_ok(cfg->gyro_noise_rps_rthz[i]) || !noise_ok(cfg->accel_noise_mps2_rthz[i])) {
             return FNAV_E_CONFIG;
         }
         if (cfg->bias_model == FNAV_BIAS_AR1 &&
@@ -107,7 +116,7 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
         !sd_ok(cfg->zupt_sigma_mps) || !sd_ok(cfg->zaru_sigma_rps) ||
         !finite_pos(cfg->strapdown.gravity_mps2) || (cfg->lever != 0 && cfg->lever != 1) ||
         (cfg->strapdown.sample_type != FNAV_SAMPLE_INSTANT && cfg->strapdown.sample_type != FNAV_SAMPLE_MEAN) ||
-        (cfg->lever && (!sd_ok(cfg->lever_sd_m) || !finite_nonneg(cfg->lever_rw_m_rts))) ||
+        (cfg->lever && (!sd_ok(cfg->lever_sd_m) || !noise_ok(cfg->lever_rw_m_rts))) ||
         (cfg->settle != 0 && cfg->settle != 1) || (cfg->closed_form != 0 && cfg->closed_form != 1) ||
         (cfg->settle && (!sd_ok(cfg->settle_sd_mps) || !finite_pos(cfg->settle_tau_s))) ||
         !finite_nonneg(cfg->zaru_gate)) {

@@ -1034,6 +1034,27 @@ static void test_squares_out_of_range(void **state)
             }
         }
     }
+    /* the white-noise densities and the lever's random walk may be 0 (a
+     * tiny one is as 0), but one whose square overflows made the first
+     * prediction's variance infinite and the guard its maximum (a gyro
+     * density of 1e20 (float) gave an attitude variance of pi^2 about x,
+     * cov_guard 1; a lever walk of 1e20 the lever's 1 m^2): init accepted
+     * both (the UKF review, 2026-12-01); FNAV_E_CONFIG since */
+    {
+        fnav_real_t *nf[] = { &c.gyro_noise_rps_rthz[0], &c.accel_noise_mps2_rthz[2], &c.lever_rw_m_rts };
+        for (k = 0; k < sizeof nf / sizeof nf[0]; k++) {
+            for (b = 0; b < 2; b++) {
+                fnav_status_t st;
+                c = fnav_ukf_config_default;
+                c.lever = 1;
+                *nf[k] = b ? huge : tiny;
+                st = fnav_ukf_init(&f, &c);
+                if (st != (b ? FNAV_E_CONFIG : FNAV_OK)) {
+                    fail_msg("noise %d set to %g: status %d", (int)k, (double)*nf[k], (int)st);
+                }
+            }
+        }
+    }
     c = fnav_ukf_config_default;
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
     g = f;

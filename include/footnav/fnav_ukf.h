@@ -235,7 +235,9 @@ typedef struct {
  * Initialise (validates the configuration; the filter waits for
  * fnav_ukf_start()).
  * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG on a bad value
- *         (negative or non-finite noise, non-positive tau/sigma with AR1,
+ *         (negative or non-finite noise, or a noise density or lever
+ *         random walk whose square is not finite (float32: above about
+ *         1.8e19), non-positive tau/sigma with AR1,
  *         alpha <= 0, n + lambda <= 0, beta < alpha^2 (a predicted
  *         covariance term that is not positive semi-definite), non-positive
  *         measurement noise,
