@@ -19,6 +19,13 @@ expect_err "0 or 1" "--param switch error says what it takes"
 expect_exit 0 "--param zaru=1 accepted" "$H" replay vectors/walk.bin --quiet --param zaru=1
 expect_exit 0 "--param lever=0 accepted" "$H" replay vectors/walk.bin --quiet --param lever=0
 
+# --- a lever random walk whose square overflows float32 (fnav_ukf_init): it
+# ran with exit 0, the covariance guard clamping the lever's variance at
+# every step (47,493 times on gx2 walk 2; the UKF review, 2026-12-01)
+expect_exit 2 "--param lever_rw=1e20 refused" "$H" replay vectors/walk.bin --quiet --param lever_rw=1e20
+expect_err "out of range" "--param lever_rw=1e20: the error says the value is out of range"
+expect_exit 0 "--param lever_rw=0 accepted" "$H" replay vectors/walk.bin --quiet --param lever_rw=0
+
 # --- `harness help CMD` is CMD's help (it printed the list of commands, and
 # `harness help nosuch` exited 0)
 expect_exit 0 "harness help" "$H" help
