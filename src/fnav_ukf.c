@@ -170,6 +170,21 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
     return FNAV_OK;
 }
 
+fnav_real_t fnav_ukf_att_sd_max(const fnav_ukf_config_t *cfg)
+{
+    fnav_real_t nl;
+    if (cfg == NULL) {
+        return FNAV_R(0.0);
+    }
+    /* n + lambda as fnav_ukf_init forms it; gamma its root */
+    nl = cfg->alpha * cfg->alpha *
+         ((fnav_real_t)(9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0)) + cfg->kappa);
+    if (!(nl > FNAV_R(0.0)) || !fnav_isfinite(nl)) {
+        return FNAV_R(0.0);
+    }
+    return FNAV_UKF_ATT_GRP_MAX / fnav_sqrt(nl);
+}
+
 /* Covariance element of internal states i, j (0 for an inactive state). */
 fnav_real_t fnav_ukf_cov(const fnav_ukf_t *f, int i, int j)
 {
@@ -201,6 +216,12 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     }
     for (i = 0; i < 3; i++) {
         if (!sd_ok(sd->att_rad[i]) || !sd_ok(sd->gyro_bias_rps[i]) || !sd_ok(sd->accel_bias_mps2[i])) {
+            return FNAV_E_ARG;
+        }
+        /* sigma points at gamma sd: beyond FNAV_UKF_ATT_GRP_MAX they near
+         * 180 deg, where the prediction folds them back (a yaw sd of 90 deg
+         * read 32.4 deg one sample later) */
+        if (sd->att_rad[i] * f->gamma > FNAV_UKF_ATT_GRP_MAX) {
             return FNAV_E_ARG;
         }
     }

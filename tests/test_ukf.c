@@ -1006,6 +1006,63 @@ static void test_diverged(void **state)
  * filter review. Now: FNAV_E_CONFIG / FNAV_E_ARG for such an sd, the
  * attitude normalised (scaled first), FNAV_E_ARG for a zero quaternion,
  * the filter unchanged by a refused start. */
+/* The largest initial attitude sd (fnav_ukf_att_sd_max, FNAV_UKF_ATT_GRP_MAX
+ * / gamma): beyond 4 / gamma the sigma points pass 180 deg and the first
+ * prediction shrank the variance with no information (a yaw sd of 90 deg
+ * read 32.4 deg a sample later; the UKF review, 2026-12-01). start refuses
+ * an sd above the limit; at the limit a still prediction keeps it, as it
+ * does any smaller one, and 4 / gamma shows the fold the limit keeps out. */
+static void test_att_sd_limit(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const fnav_vec3_t w0 = fnav_vec3_zero(), f0 = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
+    fnav_real_t mx;
+    int k;
+    (void)state;
+    /* 3 / sqrt(n) with alpha 1, kappa 0 */
+    assert_true(fabs((double)fnav_ukf_att_sd_max(&c) - (3.0 / sqrt(15.0))) < 1.0e-6);
+    c.lever = 1;
+    assert_true(fabs((double)fnav_ukf_att_sd_max(&c) - (3.0 / sqrt(18.0))) < 1.0e-6);
+    c.lever = 0;
+    c.bias_model = FNAV_BIAS_OFF;
+    assert_true(fabs((double)fnav_ukf_att_sd_max(&c) - (1.0)) < 1.0e-6);
+    c.bias_model = FNAV_BIAS_AR1;
+    assert_true(fnav_ukf_att_sd_max(NULL) == FNAV_R(0.0));
+    mx = fnav_ukf_att_sd_max(&c);
+    for (k = 0; k < 3; k++) {
+        fnav_ukf_init_sd_t s2 = sd;
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+        s2.att_rad[k] = mx * FNAV_R(1.01);
+        assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &s2),
+                         FNAV_E_ARG);
+        assert_int_equal(f.started, 0); /* unchanged on the failure */
+    }
+    /* yaw sd at the limit and at 90 % of it: one still prediction, no
+     * rotation, adds only the gyro noise; and pi rad (set past start's
+     * check), whose sigma points pass 180 deg: the fold the limit keeps out */
+    for (k = 0; k < 3; k++) {
+        const fnav_real_t s = k == 0 ? mx : k == 1 ? FNAV_R(0.9) * mx : FNAV_R(3.14159265);
+        double v;
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+        sd.att_rad[2] = k == 2 ? mx : s;
+        assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+        if (k == 2) {
+            fnav_ukf_set_cov(&f, FNAV_UKF_A + 2, FNAV_UKF_A + 2, s * s);
+        }
+        assert_int_equal(fnav_ukf_predict(&f, w0, f0, FNAV_R(0.005)), FNAV_OK);
+        v = (double)fnav_ukf_cov(&f, FNAV_UKF_A + 2, FNAV_UKF_A + 2);
+        if (k < 2) {
+            if (!(fabs(v / ((double)s * (double)s) - 1.0) < 1.0e-4)) {
+                fail_msg("yaw sd %.4f rad: %.4f rad after one still prediction", (double)s, sqrt(v));
+            }
+        } else if (!(sqrt(v) < 0.5 * (double)s)) {
+            fail_msg("yaw sd %.4f rad kept (%.4f): no fold for the limit to keep out", (double)s, sqrt(v));
+        }
+    }
+}
+
 static void test_squares_out_of_range(void **state)
 {
     static fnav_ukf_t f, g;
@@ -2353,6 +2410,7 @@ int main(void)
         cmocka_unit_test(test_zupt_after_long_swing),
         cmocka_unit_test(test_pitch_through_90),
         cmocka_unit_test(test_yaw_near_pi),
+        cmocka_unit_test(test_att_sd_limit),
         cmocka_unit_test(test_squares_out_of_range),
         cmocka_unit_test(test_nees_bias_off),
         cmocka_unit_test(test_nees_ar1),
