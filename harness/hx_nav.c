@@ -263,6 +263,19 @@ void hx_nav_init_error(const fnav_nav_config_t *cfg, const char *rate_src, const
                  "a sample rate of %.3g Hz%s is too low to navigate: an interval over max_gap_s = %g s counts as a "
                  "time jump, so the rate must be above %.3g Hz",
                  rate, rate_src, gap, 1.5 / gap);
+    } else if (fnav_nav_att_sd_max_rad(cfg) > FNAV_R(0.0) &&
+               (cfg->tilt_sd_rad > fnav_nav_att_sd_max_rad(cfg) || cfg->yaw_sd_rad > fnav_nav_att_sd_max_rad(cfg))) {
+        /* fnav_nav_init's rule: the UKF's sigma points stay short of 180
+         * deg (FNAV_UKF_ATT_GRP_MAX); a larger sd shrank at the first
+         * prediction (yaw_sd_deg=90 read 32.4 deg a sample later) */
+        const double r2d = 180.0 / 3.14159265358979323846;
+        const int yaw = cfg->yaw_sd_rad > fnav_nav_att_sd_max_rad(cfg);
+        snprintf(err, err_size,
+                 "%s = %g deg is above %.1f deg, the largest initial attitude sd this filter's sigma points represent "
+                 "(%d states; docs/navigation.md, \"States\")",
+                 yaw ? "yaw_sd_deg" : "tilt_sd_deg", r2d * (double)(yaw ? cfg->yaw_sd_rad : cfg->tilt_sd_rad),
+                 r2d * (double)fnav_nav_att_sd_max_rad(cfg),
+                 9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0));
     } else {
         snprintf(err, err_size, "navigation configuration rejected by the core%s", other);
     }

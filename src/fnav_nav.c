@@ -144,7 +144,26 @@ static fnav_status_t nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
     if (st != FNAV_OK) {
         return st;
     }
-    return fnav_ukf_init(&nav->ukf, &uc);
+    st = fnav_ukf_init(&nav->ukf, &uc);
+    if (st != FNAV_OK) {
+        return st;
+    }
+    /* the initial attitude sd fnav_ukf_start takes (its test, to the
+     * rounding: fnav_nav_att_sd_max_rad) */
+    if (cfg->tilt_sd_rad * nav->ukf.gamma > FNAV_UKF_ATT_GRP_MAX || cfg->yaw_sd_rad * nav->ukf.gamma > FNAV_UKF_ATT_GRP_MAX) {
+        return FNAV_E_CONFIG;
+    }
+    return FNAV_OK;
+}
+
+fnav_real_t fnav_nav_att_sd_max_rad(const fnav_nav_config_t *cfg)
+{
+    fnav_ukf_config_t uc;
+    if (cfg == NULL) {
+        return FNAV_R(0.0);
+    }
+    ukf_config_from(cfg, &uc);
+    return fnav_ukf_att_sd_max(&uc);
 }
 
 fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
@@ -292,7 +311,10 @@ static void start_filter(fnav_nav_t *nav)
          * definition, nothing was navigated) */
         if (fnav_isfinite(nav->hold_yaw_var_rad2) &&
             nav->hold_yaw_var_rad2 > fnav_ukf_cov(&nav->ukf, FNAV_UKF_A + 2, FNAV_UKF_A + 2)) {
-            fnav_ukf_set_cov(&nav->ukf, FNAV_UKF_A + 2, FNAV_UKF_A + 2, nav->hold_yaw_var_rad2);
+            /* no larger than the sigma points represent (FNAV_UKF_ATT_GRP_MAX):
+             * the covariance guard's attitude maximum, pi rad, is above it */
+            fnav_real_t lim = FNAV_UKF_ATT_GRP_MAX / nav->ukf.gamma, v = nav->hold_yaw_var_rad2;
+            fnav_ukf_set_cov(&nav->ukf, FNAV_UKF_A + 2, FNAV_UKF_A + 2, v < lim * lim ? v : lim * lim);
         }
         nav->have_hold = 0;
     }

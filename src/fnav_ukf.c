@@ -48,6 +48,15 @@ static int sd_ok(fnav_real_t x)
     return finite_pos(x) && finite_pos(x * x);
 }
 
+/* A white-noise density or random walk (0 allowed) whose square, which the
+ * prediction adds to the covariance, is finite (in float32 one above
+ * 1.8e19 made the first prediction's variance infinite and the guard its
+ * maximum; the UKF review). */
+static int noise_ok(fnav_real_t x)
+{
+    return finite_nonneg(x) && fnav_isfinite(x * x);
+}
+
 fnav_quat_t fnav_ukf_grp_to_quat(fnav_vec3_t p)
 {
     /* Crassidis & Markley 2003, eq. (33) with a = 1, f = 4 */
@@ -94,7 +103,7 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
         return FNAV_E_CONFIG;
     }
     for (i = 0; i < 3; i++) {
-        if (!finite_nonneg(cfg->gyro_noise_rps_rthz[i]) || !finite_nonneg(cfg->accel_noise_mps2_rthz[i])) {
+        if (!noise_ok(cfg->gyro_noise_rps_rthz[i]) || !noise_ok(cfg->accel_noise_mps2_rthz[i])) {
             return FNAV_E_CONFIG;
         }
         if (cfg->bias_model == FNAV_BIAS_AR1 &&
@@ -107,7 +116,7 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
         !sd_ok(cfg->zupt_sigma_mps) || !sd_ok(cfg->zaru_sigma_rps) ||
         !finite_pos(cfg->strapdown.gravity_mps2) || (cfg->lever != 0 && cfg->lever != 1) ||
         (cfg->strapdown.sample_type != FNAV_SAMPLE_INSTANT && cfg->strapdown.sample_type != FNAV_SAMPLE_MEAN) ||
-        (cfg->lever && (!sd_ok(cfg->lever_sd_m) || !finite_nonneg(cfg->lever_rw_m_rts))) ||
+        (cfg->lever && (!sd_ok(cfg->lever_sd_m) || !noise_ok(cfg->lever_rw_m_rts))) ||
         (cfg->settle != 0 && cfg->settle != 1) || (cfg->closed_form != 0 && cfg->closed_form != 1) ||
         (cfg->settle && (!sd_ok(cfg->settle_sd_mps) || !finite_pos(cfg->settle_tau_s))) ||
         !finite_nonneg(cfg->zaru_gate)) {
@@ -161,6 +170,21 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
     return FNAV_OK;
 }
 
+fnav_real_t fnav_ukf_att_sd_max(const fnav_ukf_config_t *cfg)
+{
+    fnav_real_t nl;
+    if (cfg == NULL) {
+        return FNAV_R(0.0);
+    }
+    /* n + lambda as fnav_ukf_init forms it; gamma its root */
+    nl = cfg->alpha * cfg->alpha *
+         ((fnav_real_t)(9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0)) + cfg->kappa);
+    if (!(nl > FNAV_R(0.0)) || !fnav_isfinite(nl)) {
+        return FNAV_R(0.0);
+    }
+    return FNAV_UKF_ATT_GRP_MAX / fnav_sqrt(nl);
+}
+
 /* Covariance element of internal states i, j (0 for an inactive state). */
 fnav_real_t fnav_ukf_cov(const fnav_ukf_t *f, int i, int j)
 {
@@ -192,6 +216,12 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     }
     for (i = 0; i < 3; i++) {
         if (!sd_ok(sd->att_rad[i]) || !sd_ok(sd->gyro_bias_rps[i]) || !sd_ok(sd->accel_bias_mps2[i])) {
+            return FNAV_E_ARG;
+        }
+        /* sigma points at gamma sd: beyond FNAV_UKF_ATT_GRP_MAX they near
+         * 180 deg, where the prediction folds them back (a yaw sd of 90 deg
+         * read 32.4 deg one sample later) */
+        if (sd->att_rad[i] * f->gamma > FNAV_UKF_ATT_GRP_MAX) {
             return FNAV_E_ARG;
         }
     }

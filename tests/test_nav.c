@@ -125,6 +125,27 @@ static void test_config(void **state)
     c = fnav_nav_config_default;
     c.closed_form = 2;
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* an initial tilt or yaw sd the UKF's sigma points cannot represent
+     * (fnav_nav_att_sd_max_rad: 3 / sqrt(18) rad with the default 18
+     * states, the lever's included): a yaw sd of 90 deg was taken and read 32.4 deg a sample
+     * later (the UKF review, 2026-12-01) */
+    c = fnav_nav_config_default;
+    assert_true(fabs((double)fnav_nav_att_sd_max_rad(&c) - 3.0 / sqrt(18.0)) < 1.0e-6);
+    assert_true(fnav_nav_att_sd_max_rad(NULL) == FNAV_R(0.0));
+    c.yaw_sd_rad = FNAV_R(1.5707963);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c.yaw_sd_rad = fnav_nav_att_sd_max_rad(&c) * FNAV_R(1.001);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c.yaw_sd_rad = fnav_nav_att_sd_max_rad(&c) * FNAV_R(0.999);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    c = fnav_nav_config_default;
+    c.tilt_sd_rad = fnav_nav_att_sd_max_rad(&c) * FNAV_R(1.001);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c.tilt_sd_rad = FNAV_R(0.72); /* above 3 / sqrt(18) = 0.707, below 3 / sqrt(15) = 0.775 */
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c.lever = 0; /* 15 states: a larger limit */
+    assert_true(fabs((double)fnav_nav_att_sd_max_rad(&c) - 3.0 / sqrt(15.0)) < 1.0e-6);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
     /* the divergence limits and the longest gap: positive and finite, a
      * run of at least one undone step (none was tested: a mutant accepting
      * a speed limit of 0, which resets at every step, passed every suite) */

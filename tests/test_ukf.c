@@ -467,6 +467,71 @@ static void test_rotated_accel_noise(void **state)
     }
 }
 
+/* The gyroscope's white noise enters the attitude-error covariance rotated
+ * into the navigation frame, as the accelerometer's does the velocity's
+ * (test_rotated_accel_noise): the attitude error a is about the n axes
+ * (q_true = dq(a) q_nb, fnav_ukf.h), a body-frame rate error e adds C e dt
+ * to it, so each prediction adds C diag(q^2) C^T dt, C = C_nb. A body at
+ * rest in a rotated attitude with anisotropic densities, the bias model and
+ * the accelerometer noise off, an attitude sd of 1e-7 rad, one prediction:
+ * without rotation and with the rate zero the n-frame error is carried
+ * unchanged (q_true' = dq(a) q_nb dq(w dt)), so the attitude block is
+ * exactly s^2 I + C diag(q^2) C^T dt. No test held the gyro's rotation
+ * before (the filter review of 2026-12-01: the noise added with C^T in
+ * place of C, or unrotated, passed every test_ukf test; both fail here:
+ * the elements differ by up to 5.7e-5 and 3.7e-5 (rad^2) against a
+ * tolerance of 1.9e-10).
+ * Rounding: the noise's sums and the attitude columns' scatter, a few EPS
+ * of the largest variance: 16 EPS of it. */
+static void test_rotated_gyro_noise(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const double q2[3] = { 0.02 * 0.02, 0.05 * 0.05, 0.1 * 0.1 }, dt = 0.01, s = 1.0e-7;
+    const fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.3), FNAV_R(-0.4), FNAV_R(1.1));
+    double C[3][3], w, x, y, z, top = 0.0;
+    fnav_vec3_t fb;
+    int i, j, k;
+    (void)state;
+    c.bias_model = FNAV_BIAS_OFF;
+    for (i = 0; i < 3; i++) {
+        c.gyro_noise_rps_rthz[i] = (fnav_real_t)sqrt(q2[i]);
+        c.accel_noise_mps2_rthz[i] = FNAV_R(0.0);
+        sd.att_rad[i] = (fnav_real_t)s;
+    }
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, q0, fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    w = (double)f.q_nb.q[0];
+    x = (double)f.q_nb.q[1];
+    y = (double)f.q_nb.q[2];
+    z = (double)f.q_nb.q[3];
+    C[0][0] = 1.0 - 2.0 * (y * y + z * z);
+    C[0][1] = 2.0 * (x * y - w * z);
+    C[0][2] = 2.0 * (x * z + w * y);
+    C[1][0] = 2.0 * (x * y + w * z);
+    C[1][1] = 1.0 - 2.0 * (x * x + z * z);
+    C[1][2] = 2.0 * (y * z - w * x);
+    C[2][0] = 2.0 * (x * z - w * y);
+    C[2][1] = 2.0 * (y * z + w * x);
+    C[2][2] = 1.0 - 2.0 * (x * x + y * y);
+    assert_true(fabs(C[0][1] - C[1][0]) > 0.1); /* C^T would differ */
+    fb = fnav_quat_rotate(fnav_quat_conj(q0), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g));
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fb, (fnav_real_t)dt), FNAV_OK);
+    for (i = 0; i < 3; i++) {
+        top = q2[i] * dt > top ? q2[i] * dt : top;
+    }
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            double e = (i == j) ? (double)sd.att_rad[i] * (double)sd.att_rad[i] : 0.0;
+            for (k = 0; k < 3; k++) {
+                e += C[i][k] * C[j][k] * q2[k] * (double)(fnav_real_t)dt;
+            }
+            FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_A + i, FNAV_UKF_A + j), e, 16.0 * EPS * top, 0.0);
+        }
+    }
+}
+
 /* The unscented second-order case: the bias model and the noise off, every
  * initial sd negligible but the attitude's about x (s_rad) and the
  * velocity's (sv_mps). */
@@ -941,6 +1006,63 @@ static void test_diverged(void **state)
  * filter review. Now: FNAV_E_CONFIG / FNAV_E_ARG for such an sd, the
  * attitude normalised (scaled first), FNAV_E_ARG for a zero quaternion,
  * the filter unchanged by a refused start. */
+/* The largest initial attitude sd (fnav_ukf_att_sd_max, FNAV_UKF_ATT_GRP_MAX
+ * / gamma): beyond 4 / gamma the sigma points pass 180 deg and the first
+ * prediction shrank the variance with no information (a yaw sd of 90 deg
+ * read 32.4 deg a sample later; the UKF review, 2026-12-01). start refuses
+ * an sd above the limit; at the limit a still prediction keeps it, as it
+ * does any smaller one, and 4 / gamma shows the fold the limit keeps out. */
+static void test_att_sd_limit(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const fnav_vec3_t w0 = fnav_vec3_zero(), f0 = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
+    fnav_real_t mx;
+    int k;
+    (void)state;
+    /* 3 / sqrt(n) with alpha 1, kappa 0 */
+    assert_true(fabs((double)fnav_ukf_att_sd_max(&c) - (3.0 / sqrt(15.0))) < 1.0e-6);
+    c.lever = 1;
+    assert_true(fabs((double)fnav_ukf_att_sd_max(&c) - (3.0 / sqrt(18.0))) < 1.0e-6);
+    c.lever = 0;
+    c.bias_model = FNAV_BIAS_OFF;
+    assert_true(fabs((double)fnav_ukf_att_sd_max(&c) - (1.0)) < 1.0e-6);
+    c.bias_model = FNAV_BIAS_AR1;
+    assert_true(fnav_ukf_att_sd_max(NULL) == FNAV_R(0.0));
+    mx = fnav_ukf_att_sd_max(&c);
+    for (k = 0; k < 3; k++) {
+        fnav_ukf_init_sd_t s2 = sd;
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+        s2.att_rad[k] = mx * FNAV_R(1.01);
+        assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &s2),
+                         FNAV_E_ARG);
+        assert_int_equal(f.started, 0); /* unchanged on the failure */
+    }
+    /* yaw sd at the limit and at 90 % of it: one still prediction, no
+     * rotation, adds only the gyro noise; and pi rad (set past start's
+     * check), whose sigma points pass 180 deg: the fold the limit keeps out */
+    for (k = 0; k < 3; k++) {
+        const fnav_real_t s = k == 0 ? mx : k == 1 ? FNAV_R(0.9) * mx : FNAV_R(3.14159265);
+        double v;
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+        sd.att_rad[2] = k == 2 ? mx : s;
+        assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+        if (k == 2) {
+            fnav_ukf_set_cov(&f, FNAV_UKF_A + 2, FNAV_UKF_A + 2, s * s);
+        }
+        assert_int_equal(fnav_ukf_predict(&f, w0, f0, FNAV_R(0.005)), FNAV_OK);
+        v = (double)fnav_ukf_cov(&f, FNAV_UKF_A + 2, FNAV_UKF_A + 2);
+        if (k < 2) {
+            if (!(fabs(v / ((double)s * (double)s) - 1.0) < 1.0e-4)) {
+                fail_msg("yaw sd %.4f rad: %.4f rad after one still prediction", (double)s, sqrt(v));
+            }
+        } else if (!(sqrt(v) < 0.5 * (double)s)) {
+            fail_msg("yaw sd %.4f rad kept (%.4f): no fold for the limit to keep out", (double)s, sqrt(v));
+        }
+    }
+}
+
 static void test_squares_out_of_range(void **state)
 {
     static fnav_ukf_t f, g;
@@ -966,6 +1088,27 @@ static void test_squares_out_of_range(void **state)
             *cf[k] = b ? huge : tiny;
             if (fnav_ukf_init(&f, &c) != FNAV_E_CONFIG) {
                 fail_msg("config value %d set to %g: accepted", (int)k, (double)*cf[k]);
+            }
+        }
+    }
+    /* the white-noise densities and the lever's random walk may be 0 (a
+     * tiny one is as 0), but one whose square overflows made the first
+     * prediction's variance infinite and the guard its maximum (a gyro
+     * density of 1e20 (float) gave an attitude variance of pi^2 about x,
+     * cov_guard 1; a lever walk of 1e20 the lever's 1 m^2): init accepted
+     * both (the UKF review, 2026-12-01); FNAV_E_CONFIG since */
+    {
+        fnav_real_t *nf[] = { &c.gyro_noise_rps_rthz[0], &c.accel_noise_mps2_rthz[2], &c.lever_rw_m_rts };
+        for (k = 0; k < sizeof nf / sizeof nf[0]; k++) {
+            for (b = 0; b < 2; b++) {
+                fnav_status_t st;
+                c = fnav_ukf_config_default;
+                c.lever = 1;
+                *nf[k] = b ? huge : tiny;
+                st = fnav_ukf_init(&f, &c);
+                if (st != (b ? FNAV_E_CONFIG : FNAV_OK)) {
+                    fail_msg("noise %d set to %g: status %d", (int)k, (double)*nf[k], (int)st);
+                }
             }
         }
     }
@@ -1079,6 +1222,101 @@ static void test_pitch_through_90(void **state)
     assert_int_equal((int)f.health.chol_jitter + (int)f.health.chol_reset + (int)f.health.diverged, 0);
 }
 
+
+/* A heading near +-180 deg. The paper's filter carries three Euler angles;
+ * averaging sigma points in those angles needs the yaw differences wrapped,
+ * or points on either side of +-180 deg average to about 0. footnav's
+ * attitude error is a GRP vector about the n axes, formed from quaternions
+ * (fnav_ukf.h), so nothing wraps; this pins that down. A level body at rest
+ * at a yaw of 179.9 deg turns about z at 0.2 rad/s (through +180 deg at the
+ * second step) for 40 steps of 5 ms, the yaw sd 0.2 rad (the yaw sigma
+ * points at +-0.77 rad, across the wrap) and roll and pitch 1e-3 rad, the
+ * bias model off. An error about n z commutes with a turn about b z = n z,
+ * and any n-frame error is carried unchanged by a body-frame increment
+ * (q_true' = dq(a) q_nb dq(th)), so every step: the attitude is the truth's
+ * (within 1e-5 rad; a float rounding of the quaternion), the ZYX yaw the
+ * truth's wrapped into (-pi, pi], the attitude covariance exactly the
+ * initial one plus the gyro noise sum_k C_k diag(N^2) C_k^T dt (C_k =
+ * Rz(yaw_k), the propagated attitude) and its yaw row uncorrelated with the
+ * velocity, the speed near 0 (the tilt pairs' second-order mean shift,
+ * 2 Wi g (1 - cos(gamma 1e-3)) dt a step: 1e-6 m/s after 40). Added by the
+ * filter review of 2026-12-01; it passed as the filter stood. Mutants of
+ * sigma_att (throwaway patches): for a level sigma point, the error's z
+ * component taken from the ZYX yaw difference (as 4 tan(d/4)) without
+ * wrapping fails only this test, at the first step (the yaw 1.69 rad
+ * against 3.14); the same with the difference wrapped to (-pi, pi] passes
+ * every test; all three components taken as Euler-angle differences fail
+ * it (0.35 rad off at the first step) and five other tests. */
+static void test_yaw_near_pi(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const double pi = 3.14159265358979323846, psi0 = 179.9 * pi / 180.0, w = 0.2, dt = 0.005;
+    double E[3][3] = { { 0.0 } }, max_err = 0.0, max_pe = 0.0;
+    int k, i, j;
+    (void)state;
+    c.bias_model = FNAV_BIAS_OFF;
+    sd.att_rad[0] = FNAV_R(1.0e-3);
+    sd.att_rad[1] = FNAV_R(1.0e-3);
+    sd.att_rad[2] = FNAV_R(0.2);
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat((fnav_real_t)cos(psi0 / 2.0), FNAV_R(0.0), FNAV_R(0.0),
+                                                  (fnav_real_t)sin(psi0 / 2.0)),
+                                    fnav_vec3_zero(), fnav_vec3_zero(), &sd),
+                     FNAV_OK);
+    for (i = 0; i < 3; i++) {
+        E[i][i] = (double)sd.att_rad[i] * (double)sd.att_rad[i];
+    }
+    for (k = 1; k <= 40; k++) {
+        const double psi = psi0 + w * dt * (double)k, cz = cos(psi / 2.0), sz = sin(psi / 2.0);
+        const double cs = cos(psi), sn = sin(psi);
+        const double R[3][3] = { { cs, -sn, 0.0 }, { sn, cs, 0.0 }, { 0.0, 0.0, 1.0 } };
+        double e[3], err, yaw_t, d;
+        fnav_vec3_t eu;
+        assert_int_equal(fnav_ukf_predict(&f, fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)w),
+                                          fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g), (fnav_real_t)dt),
+                         FNAV_OK);
+        /* vector part of conj(qt) q, qt = (cz, 0, 0, sz) */
+        e[0] = cz * (double)f.q_nb.q[1] + sz * (double)f.q_nb.q[2];
+        e[1] = cz * (double)f.q_nb.q[2] - sz * (double)f.q_nb.q[1];
+        e[2] = cz * (double)f.q_nb.q[3] - sz * (double)f.q_nb.q[0];
+        err = 2.0 * asin(fmin(1.0, sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2])));
+        max_err = fmax(max_err, err);
+        eu = fnav_ukf_euler(&f);
+        assert_true((double)eu.v[2] > -pi && (double)eu.v[2] <= pi);
+        yaw_t = psi > pi ? psi - 2.0 * pi : psi;
+        d = fmod((double)eu.v[2] - yaw_t + 3.0 * pi, 2.0 * pi) - pi;
+        if (!(fabs(d) < 1.0e-5) || !(err < 1.0e-5)) {
+            fail_msg("step %d: yaw %.9f (truth %.9f), attitude error %.3g rad", k, (double)eu.v[2], yaw_t, err);
+        }
+        /* the noise of this interval, rotated by the propagated attitude */
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                int m;
+                for (m = 0; m < 3; m++) {
+                    const double n = (double)c.gyro_noise_rps_rthz[m];
+                    E[i][j] += R[i][m] * R[j][m] * n * n * (double)(fnav_real_t)dt;
+                }
+            }
+        }
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                const double got = (double)fnav_ukf_cov(&f, FNAV_UKF_A + i, FNAV_UKF_A + j);
+                const double tol = 200.0 * EPS * sqrt(E[i][i] * E[j][j]);
+                max_pe = fmax(max_pe, fabs(got - E[i][j]) / sqrt(E[i][i] * E[j][j]));
+                if (!(fabs(got - E[i][j]) <= tol)) {
+                    fail_msg("step %d: attitude covariance (%d, %d) %.9g, expected %.9g", k, i, j, got, E[i][j]);
+                }
+            }
+            assert_true(fabs((double)fnav_ukf_cov(&f, FNAV_UKF_A + 2, FNAV_UKF_V + i)) <=
+                        200.0 * EPS * sqrt(E[2][2] * (double)fnav_ukf_cov(&f, FNAV_UKF_V + i, FNAV_UKF_V + i)));
+        }
+        assert_true(sqrt((double)fnav_vec3_dot(f.vel_mps, f.vel_mps)) < 1.0e-5);
+    }
+    fprintf(stderr, "yaw 179.9 deg through 180: attitude error %.2g rad, covariance %.2g (relative) at most\n",
+            max_err, max_pe);
+}
 /* A ZUPT after a long stretch without one: a velocity variance far above
  * the ZUPT's, within the guard's limit (sd 100 m/s). The update's exact
  * posterior variance is P r2 / (P + r2), about r2 (Joseph form:
@@ -1229,6 +1467,49 @@ static void test_covariance_recovery(void **state)
                      FNAV_OK);
 }
 
+
+/* The first stage of the Cholesky recovery (fnav_ukf.h, docs/navigation.md
+ * "Numerical robustness"): a covariance just outside the positive definite
+ * cone, a correlation of 1 + 3e-7 between velocity x and position x (the
+ * pivot 1 - rho^2 = -6e-7 of the variance), is symmetrised and its
+ * variances raised by 1e-6 of themselves, which makes the correlation
+ * rho / (1 + 1e-6) < 1 and the factorisation succeed: the step is an
+ * ordinary one (FNAV_OK), counted in chol_jitter, no reset, the
+ * correlation kept (a reset to the diagonal would drop it) and the result
+ * positive definite. No test reached this stage before (the filter review
+ * of 2026-12-01: with the jitter made 0, or its count removed, every
+ * test_ukf test passed; both fail here). */
+static void test_covariance_jitter(void **state)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    double pvv, ppp, rho, asym;
+    (void)state;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    pvv = (double)fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_V);
+    ppp = (double)fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_P);
+    fnav_ukf_set_cov(&f, FNAV_UKF_V, FNAV_UKF_P, (fnav_real_t)((1.0 + 3.0e-7) * sqrt(pvv * ppp)));
+    assert_true((double)fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_P) > sqrt(pvv * ppp)); /* indefinite */
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g),
+                                      FNAV_R(0.01)),
+                     FNAV_OK);
+    assert_int_equal(f.health.chol_jitter, 1);
+    assert_int_equal(f.health.chol_reset, 0);
+    assert_int_equal(f.health.cov_guard, 0);
+    rho = (double)fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_P) /
+          sqrt((double)fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_V) * (double)fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_P));
+    assert_true(rho > 0.9);
+    assert_true(fnav_test_cov_spd(&f, &asym) > 0.0);
+    assert_true(asym == 0.0);
+    /* the next step factors without help */
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g),
+                                      FNAV_R(0.01)),
+                     FNAV_OK);
+    assert_int_equal(f.health.chol_jitter, 1);
+    assert_int_equal(f.health.chol_reset, 0);
+}
 /* ------------------------------------------------------------------ NEES */
 
 /* Gaussian numbers from a fixed-seed generator (xorshift64* + Box-Muller),
@@ -2114,6 +2395,7 @@ int main(void)
         cmocka_unit_test(test_linear_covariance),
         cmocka_unit_test(test_ar1_decay),
         cmocka_unit_test(test_rotated_accel_noise),
+        cmocka_unit_test(test_rotated_gyro_noise),
         cmocka_unit_test(test_unscented_second_order),
         cmocka_unit_test(test_weights_psd),
         cmocka_unit_test(test_weights_small_alpha),
@@ -2124,8 +2406,11 @@ int main(void)
         cmocka_unit_test(test_diverged),
         cmocka_unit_test(test_covariance_guard),
         cmocka_unit_test(test_covariance_recovery),
+        cmocka_unit_test(test_covariance_jitter),
         cmocka_unit_test(test_zupt_after_long_swing),
         cmocka_unit_test(test_pitch_through_90),
+        cmocka_unit_test(test_yaw_near_pi),
+        cmocka_unit_test(test_att_sd_limit),
         cmocka_unit_test(test_squares_out_of_range),
         cmocka_unit_test(test_nees_bias_off),
         cmocka_unit_test(test_nees_ar1),

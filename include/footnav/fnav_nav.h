@@ -217,9 +217,17 @@ typedef struct {
  *  not outlive the call); it may be the navigator's own, &nav->cfg, to
  *  start over with the same configuration.
  *  @return FNAV_OK, FNAV_E_ARG (NULL; *nav untouched), FNAV_E_CONFIG
- *          (profile or any module's configuration invalid; *nav is left
+ *          (profile or any module's configuration invalid, or an initial
+ *          tilt or yaw sd above fnav_nav_att_sd_max_rad(); *nav is left
  *          zeroed, not initialised: the other calls say FNAV_E_STATE). */
 FNAV_WARN_UNUSED fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg);
+
+/** The largest tilt_sd_rad and yaw_sd_rad fnav_nav_init takes with cfg's
+ *  filter, rad (fnav_ukf_att_sd_max): 0.707 rad = 40.5 deg with the
+ *  default 18 states, the lever's included; 0.775 rad = 44.4 deg without
+ *  the lever. Above it fnav_nav_init says FNAV_E_CONFIG (to the rounding
+ *  of its test). 0 for NULL. */
+fnav_real_t fnav_nav_att_sd_max_rad(const fnav_nav_config_t *cfg);
 
 /**
  * Accept one sample (b frame, SI units: m/s^2, rad/s, ns; not checked,

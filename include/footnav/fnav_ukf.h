@@ -235,7 +235,9 @@ typedef struct {
  * Initialise (validates the configuration; the filter waits for
  * fnav_ukf_start()).
  * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG on a bad value
- *         (negative or non-finite noise, non-positive tau/sigma with AR1,
+ *         (negative or non-finite noise, or a noise density or lever
+ *         random walk whose square is not finite (float32: above about
+ *         1.8e19), non-positive tau/sigma with AR1,
  *         alpha <= 0, n + lambda <= 0, beta < alpha^2 (a predicted
  *         covariance term that is not positive semi-definite), non-positive
  *         measurement noise,
@@ -246,6 +248,25 @@ typedef struct {
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg);
 
+/** A sigma point's attitude error, a GRP (a = 1, f = 4: magnitude 4
+ *  tan(angle / 4)), is at most this large at the start: 3 is a rotation of
+ *  4 atan(3/4) = 147 deg, 33 deg short of the 180 deg (magnitude 4) beyond
+ *  which the prediction reads it back as the shorter rotation the other
+ *  way and shrinks the covariance without information
+ *  (docs/navigation.md, "States"). */
+#define FNAV_UKF_ATT_GRP_MAX FNAV_R(3.0)
+
+/**
+ * The largest initial attitude-error standard deviation per axis, rad,
+ * that fnav_ukf_start() takes with a configuration:
+ * FNAV_UKF_ATT_GRP_MAX / gamma, gamma = alpha sqrt(n + kappa) (0.775 rad =
+ * 44.4 deg with fnav_ukf_config_default's 15 states, 0.707 rad = 40.5 deg
+ * with the lever's 18, the navigator's default).
+ * @return that sd, or 0 for a NULL configuration or one whose n + lambda is
+ *         not positive and finite.
+ */
+fnav_real_t fnav_ukf_att_sd_max(const fnav_ukf_config_t *cfg);
+
 /**
  * Start navigating from an aligned state at the origin at rest.
  * @param q_nb     initial attitude, any non-zero scale (normalised)
@@ -255,7 +276,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_confi
  *                 a finite positive square (the bias ones are checked, then
  *                 unused, with the model off)
  * @return FNAV_OK, FNAV_E_ARG (a NULL pointer, an sd not finite and
- *         positive or whose square is not, the zero quaternion),
+ *         positive or whose square is not, an attitude sd whose sigma
+ *         points pass FNAV_UKF_ATT_GRP_MAX: sd gamma above it, see
+ *         fnav_ukf_att_sd_max(); the zero quaternion),
  *         FNAV_E_NANINF on non-finite values; the filter unchanged on a
  *         failure.
  */

@@ -19,6 +19,22 @@ expect_err "0 or 1" "--param switch error says what it takes"
 expect_exit 0 "--param zaru=1 accepted" "$H" replay vectors/walk.bin --quiet --param zaru=1
 expect_exit 0 "--param lever=0 accepted" "$H" replay vectors/walk.bin --quiet --param lever=0
 
+# --- a lever random walk whose square overflows float32 (fnav_ukf_init): it
+# ran with exit 0, the covariance guard clamping the lever's variance at
+# every step (47,493 times on gx2 walk 2; the UKF review, 2026-12-01)
+expect_exit 2 "--param lever_rw=1e20 refused" "$H" replay vectors/walk.bin --quiet --param lever_rw=1e20
+expect_err "out of range" "--param lever_rw=1e20: the error says the value is out of range"
+expect_exit 0 "--param lever_rw=0 accepted" "$H" replay vectors/walk.bin --quiet --param lever_rw=0
+# --- an initial yaw sd beyond what the UKF's sigma points represent: taken,
+# it shrank at the first prediction (yaw_sd_deg=90 read 32.4 deg a sample
+# later; the UKF review, 2026-12-01); refused, naming the largest
+expect_exit 2 "--param yaw_sd_deg=90 refused" "$H" replay vectors/walk.bin --quiet --param yaw_sd_deg=90
+expect_err "yaw_sd_deg = 90 deg is above 40.5 deg, the largest initial attitude sd" \
+    "--param yaw_sd_deg=90: the error names the largest sd (18 states)"
+expect_exit 2 "--param tilt_sd_deg=41 refused" "$H" replay vectors/walk.bin --quiet --param tilt_sd_deg=41
+expect_err "tilt_sd_deg = 41 deg is above 40.5 deg" "--param tilt_sd_deg=41: named"
+expect_exit 0 "--param yaw_sd_deg=40 accepted" "$H" replay vectors/walk.bin --quiet --param yaw_sd_deg=40
+
 # --- `harness help CMD` is CMD's help (it printed the list of commands, and
 # `harness help nosuch` exited 0)
 expect_exit 0 "harness help" "$H" help
