@@ -2339,6 +2339,33 @@ static void test_summary_no_negative_zero_percent(void **state)
     free(r);
 }
 
+/* Without a second fold (--contiguous, or a fold 2 that failed) the ends'
+ * deviance drop is NaN: the step line gives the held-out deviance drop
+ * alone. Until 2026-12-01 it read "deviance drop 400 (ends nan)" (the 10-min
+ * quant log of docs/simgap.md "Worked example" with --contiguous; the sgfit
+ * review). With a second fold both are given, as before. */
+static void test_summary_contiguous_no_ends_nan(void **state)
+{
+    sg_result_t *r = hand_result();
+    sg_cand_t *cd = &r->ch[0].step[0].cand[0];
+    char *txt;
+    (void)state;
+    r->segs.sandwich = 0;
+    cd->dL_mid = cd->dL_rank = 400.0;
+    cd->z_ends = cd->dG_ends = cd->zg_ends = cd->dL_ends = (double)NAN;
+    cd->expl_hold = cd->expl_lo = cd->expl_hi = 0.5;
+    txt = summary_of(r);
+    assert_null(strstr(txt, "nan"));
+    assert_non_null(strstr(txt, "deviance drop 400, explains 50 %"));
+    free(txt);
+    r->segs.sandwich = 1;
+    sg_cand_fold2(cd, 1.0, 2.0, 3.0, 300.0);
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "deviance drop 700 (ends 300), explains 50 %"));
+    free(txt);
+    free(r);
+}
+
 /* A channel with a gap but no attribution says why: --max-effects 0, or a
  * log too short for a confident answer, where it said a bare "not
  * attempted" until 2026-11-29 (two seconds of ADIS unit 1, every channel;
@@ -2562,6 +2589,7 @@ int main(void)
         cmocka_unit_test(test_json_jitter_has_no_first_event),
         cmocka_unit_test(test_summary_no_excess_names_the_split),
         cmocka_unit_test(test_summary_no_negative_zero_percent),
+        cmocka_unit_test(test_summary_contiguous_no_ends_nan),
         cmocka_unit_test(test_summary_verdict_labels_final_refit),
         cmocka_unit_test(test_summary_not_attempted_says_why),
         cmocka_unit_test(test_summary_defines_g_as_computed),
