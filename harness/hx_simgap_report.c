@@ -143,8 +143,11 @@ static void print_static(FILE *f, const sg_result_t *r)
         sg_effect_text(w, sizeof w, ch, &c->baseline.e[iw]);
         sg_effect_text(a, sizeof a, ch, &c->baseline.e[ia]);
         at_max += sg_ar1_at_max(c);
+        /* the shortest bound too, where the optimum lies at or below one
+         * sample (the sgfit review) */
         fprintf(f, "  %s  %s, %s%s\n", sg_channel_name(ch), w, a,
-                sg_ar1_at_max(c) ? ", tau at the longest this log resolves" : "");
+                sg_ar1_at_max(c) ? ", tau at the longest this log resolves"
+                                 : (sg_ar1_at_min(c, r->rate_hz) ? ", tau at the shortest the fit may take" : ""));
     }
     if (at_max > 0) {
         /* a bias correlated longer than the record can show looks like a
