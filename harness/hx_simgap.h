@@ -644,6 +644,16 @@ double sg_fit_explained(double G_before, double null_mean, double G_after);
  *  longer one, which looks like a random walk over the record. */
 int sg_ar1_at_max(const sg_chres_t *c);
 
+/** Shortest AR(1) correlation time the baseline fit may take at rate_hz:
+ *  one sample or the catalogue's shortest (1 ms), whichever is longer (the
+ *  twin must be one the simulator runs; section 1 of docs/simgap.md). */
+double sg_ar1_tau_min(double rate_hz);
+
+/** 1 when the channel's baseline has an AR(1) bias whose correlation time
+ *  is at the shortest the fit may take (within 0.1 %): the optimum lies at
+ *  or below it, so the time is a bound, not a fit, as at ar1_tau_max_s. */
+int sg_ar1_at_min(const sg_chres_t *c, double rate_hz);
+
 /** Leave out of a channel's selection the effects its final (refitted)
  *  model gives a magnitude of exactly zero (into zero_id). */
 void sg_prune_zero(sg_chres_t *c);

@@ -956,6 +956,23 @@ static void jumps_rate(sg_chmodel_t *m, const sg_evidence_t *ev)
     m->e[k].se[1] = rel * m->e[k].p[1];
 }
 
+double sg_ar1_tau_min(double rate_hz)
+{
+    const fnav_effect_info_t *ai = fnav_imuerr_effect_info(FNAV_EFFECT_AR1);
+    double tmin_s = 1.0 / rate_hz;
+    if (ai != NULL && tmin_s < ai->params[0].lo) {
+        tmin_s = ai->params[0].lo;
+    }
+    return tmin_s;
+}
+
+int sg_ar1_at_min(const sg_chres_t *c, double rate_hz)
+{
+    const int ia = sg_model_find(&c->baseline, FNAV_EFFECT_AR1);
+    return c->active && ia >= 0 && c->baseline.e[ia].p[1] > 0.0 && rate_hz > 0.0 &&
+           c->baseline.e[ia].p[0] <= 1.001 * sg_ar1_tau_min(rate_hz);
+}
+
 double sg_time_fit_q(const sg_table_t *t, int thermal)
 {
     sg_chmodel_t m;
@@ -1056,12 +1073,9 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
     /* AR(1) correlation time grid: from one sample to tmax, within the
      * catalogue's range (its 1 ms is above one sample beyond 1 kHz: a
      * shorter fitted time made every twin fail) */
-    tmin_s = 1.0 / t->rate_hz;
+    tmin_s = sg_ar1_tau_min(t->rate_hz);
     {
         const fnav_effect_info_t *ai = fnav_imuerr_effect_info(FNAV_EFFECT_AR1);
-        if (ai != NULL && tmin_s < ai->params[0].lo) {
-            tmin_s = ai->params[0].lo;
-        }
         if (ai != NULL && tmax_s > ai->params[0].hi) {
             tmax_s = ai->params[0].hi;
         }

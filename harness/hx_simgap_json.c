@@ -118,6 +118,7 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
     const sg_chres_t *c = &r->ch[ch];
     cJSON *o = cJSON_CreateObject(), *b, *g, *gf, *pts, *att, *steps, *sel, *fm;
     int i, k, iw, ia;
+    const int tau_bound = sg_ar1_at_min(c, r->rate_hz) || sg_ar1_at_max(c);
     cJSON_AddStringToObject(o, "channel", sg_channel_name(ch));
     cJSON_AddStringToObject(o, "unit", sg_channel_unit(ch));
     cJSON_AddBoolToObject(o, "analysed", c->active);
@@ -136,7 +137,12 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
         add_num(b, "ar1_sigma", c->baseline.e[ia].p[1]);
         add_num(b, "ar1_sigma_se", c->baseline.e[ia].se[1]);
         add_num(b, "ar1_tau_s", c->baseline.e[ia].p[1] > 0.0 ? c->baseline.e[ia].p[0] : (double)NAN);
-        add_num(b, "ar1_tau_s_se", c->baseline.e[ia].se[0]);
+        /* a time at either bound of its search is no fit and has no
+         * standard error (the curvature at a constraint is none); the
+         * shortest bound was not flagged (the sgfit review) */
+        add_num(b, "ar1_tau_s_se", tau_bound ? (double)NAN : c->baseline.e[ia].se[0]);
+        add_num(b, "ar1_tau_min_s", sg_ar1_tau_min(r->rate_hz));
+        cJSON_AddBoolToObject(b, "ar1_tau_at_min", sg_ar1_at_min(c, r->rate_hz));
         add_num(b, "ar1_tau_max_s", c->ar1_tau_max_s);
         cJSON_AddBoolToObject(b, "ar1_tau_at_max", sg_ar1_at_max(c));
     }
@@ -217,7 +223,15 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
     }
     fm = cJSON_AddArrayToObject(att, "final_model");
     for (i = 0; i < c->final.n; i++) {
-        cJSON_AddItemToArray(fm, effect_json(&c->final.e[i], ch));
+        sg_effect_t e = c->final.e[i];
+        /* the final refit keeps the baseline's AR(1) time (the grid from
+         * the same bounds): at a bound, no standard error as above */
+        if (e.id == FNAV_EFFECT_AR1 && e.p[1] > 0.0 &&
+            (e.p[0] <= 1.001 * sg_ar1_tau_min(r->rate_hz) ||
+             (c->ar1_tau_max_s > 0.0 && e.p[0] >= 0.999 * c->ar1_tau_max_s))) {
+            e.se[0] = (double)NAN;
+        }
+        cJSON_AddItemToArray(fm, effect_json(&e, ch));
     }
     cJSON_AddBoolToObject(att, "within_noise", c->within_noise);
     if (c->have_prof) {

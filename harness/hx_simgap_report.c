@@ -143,8 +143,11 @@ static void print_static(FILE *f, const sg_result_t *r)
         sg_effect_text(w, sizeof w, ch, &c->baseline.e[iw]);
         sg_effect_text(a, sizeof a, ch, &c->baseline.e[ia]);
         at_max += sg_ar1_at_max(c);
+        /* the shortest bound too, where the optimum lies at or below one
+         * sample (the sgfit review) */
         fprintf(f, "  %s  %s, %s%s\n", sg_channel_name(ch), w, a,
-                sg_ar1_at_max(c) ? ", tau at the longest this log resolves" : "");
+                sg_ar1_at_max(c) ? ", tau at the longest this log resolves"
+                                 : (sg_ar1_at_min(c, r->rate_hz) ? ", tau at the shortest the fit may take" : ""));
     }
     if (at_max > 0) {
         /* a bias correlated longer than the record can show looks like a
@@ -259,7 +262,13 @@ static void print_static(FILE *f, const sg_result_t *r)
                     } else {
                         snprintf(ex, sizeof ex, "no held-out excess to explain");
                     }
-                    char zf[96] = "", zl[96] = "";
+                    char zf[96] = "", zl[96] = "", dl[64] = "";
+                    /* without a second fold (--contiguous, or fold 2
+                     * failed) there is no ends' drop: it read "(ends nan)"
+                     * (the sgfit review) */
+                    if (cd->dL_ends == cd->dL_ends) {
+                        snprintf(dl, sizeof dl, " (ends %.3g)", cd->dL_ends);
+                    }
                     if (cd->z_ends == cd->z_ends) {
                         snprintf(zf, sizeof zf, " (middle %+.1f, ends %+.1f)", cd->z_mid, cd->z_ends);
                     }
@@ -268,9 +277,9 @@ static void print_static(FILE *f, const sg_result_t *r)
                     }
                     fprintf(f,
                             "  step %d %c %-58s fit dQ %.1f; held out: G %.3g -> %.3g, score %+.1f sigma%s, "
-                            "likelihood ratio %+.1f sigma%s, deviance drop %.3g (ends %.3g), %s\n",
+                            "likelihood ratio %+.1f sigma%s, deviance drop %.3g%s, %s\n",
                             i + 1, j == st->selected ? '*' : ' ', b, cd->dQ_fit, st->G_hold_before, cd->G_hold,
-                            cd->z_delta, zf, cd->z_gap, zl, cd->dL_rank, cd->dL_ends, ex);
+                            cd->z_delta, zf, cd->z_gap, zl, cd->dL_rank, dl, ex);
                 } else {
                     fprintf(f, "  step %d   %-58s fit dQ %.1f; not simulated%s\n", i + 1, b, cd->dQ_fit,
                             cd->nested ? " (nested: a ramp fits the blocks' trends, curvatures and level as well)" : "");

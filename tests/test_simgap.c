@@ -2339,6 +2339,108 @@ static void test_summary_no_negative_zero_percent(void **state)
     free(r);
 }
 
+/* An AR(1) time at the shortest the fit may take (one sample, or the
+ * catalogue's 1 ms) is a bound, not a fit: the optimum lies at or below it,
+ * as at the longest (ar1_tau_at_max). The JSON says so (ar1_tau_min_s,
+ * ar1_tau_at_min) and gives no standard error for a time at either bound
+ * (a curvature at a constraint is none); the summary flags it. Until
+ * 2026-12-01 the first 600 s of ADIS unit 1 gave ay, gx and gy "tau 0.01 s"
+ * (one sample at 100 Hz) with ar1_tau_s_se 0.00072-0.00078, unflagged
+ * (bin/harness simgap cut.csv, docs/simgap.md "Limitations" for the cut;
+ * the sgfit review). */
+static void test_ar1_tau_at_min(void **state)
+{
+    sg_result_t *r = hand_result();
+    sg_chres_t *c = &r->ch[0];
+    cJSON *j, *b, *fm, *ar = NULL;
+    char *txt;
+    int ia = sg_model_find(&c->baseline, FNAV_EFFECT_AR1), i;
+    (void)state;
+    assert_true(ia >= 0);
+    assert_true(sg_ar1_tau_min(100.0) == 0.01);
+    assert_true(sg_ar1_tau_min(2000.0) == 1e-3); /* the catalogue's 1 ms */
+    c->ar1_tau_max_s = 3.84;
+    c->baseline.e[ia].p[0] = 0.01; /* tau_s: one sample at 100 Hz */
+    c->baseline.e[ia].p[1] = 0.0195;
+    c->baseline.e[ia].se[0] = 7.2e-4;
+    c->baseline.e[ia].se[1] = 8.9e-4;
+    c->final = c->baseline;
+    assert_int_equal(sg_ar1_at_min(c, r->rate_hz), 1);
+    j = json_of(r);
+    b = cJSON_GetObjectItem(cJSON_GetArrayItem(cJSON_GetObjectItem(j, "channels"), 0), "baseline");
+    assert_true(cJSON_IsTrue(cJSON_GetObjectItem(b, "ar1_tau_at_min")));
+    assert_true(cJSON_GetObjectItem(b, "ar1_tau_min_s")->valuedouble == 0.01);
+    assert_true(cJSON_GetObjectItem(b, "ar1_tau_s")->valuedouble == 0.01);
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(b, "ar1_tau_s_se")));
+    assert_true(cJSON_GetObjectItem(b, "ar1_sigma_se")->valuedouble == 8.9e-4);
+    fm = cJSON_GetObjectItem(cJSON_GetObjectItem(cJSON_GetArrayItem(cJSON_GetObjectItem(j, "channels"), 0),
+                                                 "attribution"), "final_model");
+    for (i = 0; i < cJSON_GetArraySize(fm); i++) {
+        if (strcmp(cJSON_GetObjectItem(cJSON_GetArrayItem(fm, i), "effect")->valuestring, "ar1") == 0) {
+            ar = cJSON_GetArrayItem(fm, i);
+        }
+    }
+    assert_non_null(ar);
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(cJSON_GetObjectItem(ar, "se"), "tau_s")));
+    assert_true(cJSON_GetObjectItem(cJSON_GetObjectItem(ar, "se"), "sigma")->valuedouble == 8.9e-4);
+    cJSON_Delete(j);
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "tau 0.01 s), tau at the shortest the fit may take\n"));
+    free(txt);
+    /* at the longest: no standard error either */
+    c->baseline.e[ia].p[0] = 3.84;
+    assert_int_equal(sg_ar1_at_min(c, r->rate_hz), 0);
+    j = json_of(r);
+    b = cJSON_GetObjectItem(cJSON_GetArrayItem(cJSON_GetObjectItem(j, "channels"), 0), "baseline");
+    assert_true(cJSON_IsTrue(cJSON_GetObjectItem(b, "ar1_tau_at_max")));
+    assert_true(cJSON_IsFalse(cJSON_GetObjectItem(b, "ar1_tau_at_min")));
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(b, "ar1_tau_s_se")));
+    cJSON_Delete(j);
+    /* inside: the standard error stands */
+    c->baseline.e[ia].p[0] = 0.0944;
+    assert_int_equal(sg_ar1_at_min(c, r->rate_hz), 0);
+    j = json_of(r);
+    b = cJSON_GetObjectItem(cJSON_GetArrayItem(cJSON_GetObjectItem(j, "channels"), 0), "baseline");
+    assert_true(cJSON_IsFalse(cJSON_GetObjectItem(b, "ar1_tau_at_min")));
+    assert_true(cJSON_GetObjectItem(b, "ar1_tau_s_se")->valuedouble == 7.2e-4);
+    cJSON_Delete(j);
+    txt = summary_of(r);
+    assert_null(strstr(txt, "tau at the shortest"));
+    free(txt);
+    /* no bias process: its tau is at no bound */
+    c->baseline.e[ia].p[0] = 0.01;
+    c->baseline.e[ia].p[1] = 0.0;
+    assert_int_equal(sg_ar1_at_min(c, r->rate_hz), 0);
+    free(r);
+}
+
+/* Without a second fold (--contiguous, or a fold 2 that failed) the ends'
+ * deviance drop is NaN: the step line gives the held-out deviance drop
+ * alone. Until 2026-12-01 it read "deviance drop 400 (ends nan)" (the 10-min
+ * quant log of docs/simgap.md "Worked example" with --contiguous; the sgfit
+ * review). With a second fold both are given, as before. */
+static void test_summary_contiguous_no_ends_nan(void **state)
+{
+    sg_result_t *r = hand_result();
+    sg_cand_t *cd = &r->ch[0].step[0].cand[0];
+    char *txt;
+    (void)state;
+    r->segs.sandwich = 0;
+    cd->dL_mid = cd->dL_rank = 400.0;
+    cd->z_ends = cd->dG_ends = cd->zg_ends = cd->dL_ends = (double)NAN;
+    cd->expl_hold = cd->expl_lo = cd->expl_hi = 0.5;
+    txt = summary_of(r);
+    assert_null(strstr(txt, "nan"));
+    assert_non_null(strstr(txt, "deviance drop 400, explains 50 %"));
+    free(txt);
+    r->segs.sandwich = 1;
+    sg_cand_fold2(cd, 1.0, 2.0, 3.0, 300.0);
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "deviance drop 700 (ends 300), explains 50 %"));
+    free(txt);
+    free(r);
+}
+
 /* A channel with a gap but no attribution says why: --max-effects 0, or a
  * log too short for a confident answer, where it said a bare "not
  * attempted" until 2026-11-29 (two seconds of ADIS unit 1, every channel;
@@ -2562,6 +2664,8 @@ int main(void)
         cmocka_unit_test(test_json_jitter_has_no_first_event),
         cmocka_unit_test(test_summary_no_excess_names_the_split),
         cmocka_unit_test(test_summary_no_negative_zero_percent),
+        cmocka_unit_test(test_summary_contiguous_no_ends_nan),
+        cmocka_unit_test(test_ar1_tau_at_min),
         cmocka_unit_test(test_summary_verdict_labels_final_refit),
         cmocka_unit_test(test_summary_not_attempted_says_why),
         cmocka_unit_test(test_summary_defines_g_as_computed),
