@@ -255,6 +255,7 @@ int hx_nav_config(const hx_nav_opts_t *o, fnav_nav_config_t *cfg, char *err, siz
 void hx_nav_init_error(const fnav_nav_config_t *cfg, const char *rate_src, const char *other, char *err, size_t err_size)
 {
     double rate = (double)cfg->stance.rate_hz, gap = (double)cfg->max_gap_s;
+    const double att_max = (double)fnav_nav_att_sd_max_rad(cfg);
     if (rate > 0.0 && gap > 0.0 && !(gap * rate > 1.5)) {
         /* fnav_nav_init's rule: a time jump (max_gap_s) must be longer than
          * a gap of 1.5 intervals. Stamps of 10 s resolution gave a rate of
@@ -263,19 +264,17 @@ void hx_nav_init_error(const fnav_nav_config_t *cfg, const char *rate_src, const
                  "a sample rate of %.3g Hz%s is too low to navigate: an interval over max_gap_s = %g s counts as a "
                  "time jump, so the rate must be above %.3g Hz",
                  rate, rate_src, gap, 1.5 / gap);
-    } else if (fnav_nav_att_sd_max_rad(cfg) > FNAV_R(0.0) &&
-               (cfg->tilt_sd_rad > fnav_nav_att_sd_max_rad(cfg) || cfg->yaw_sd_rad > fnav_nav_att_sd_max_rad(cfg))) {
+    } else if (att_max > 0.0 && ((double)cfg->tilt_sd_rad > att_max || (double)cfg->yaw_sd_rad > att_max)) {
         /* fnav_nav_init's rule: the UKF's sigma points stay short of 180
          * deg (FNAV_UKF_ATT_GRP_MAX); a larger sd shrank at the first
          * prediction (yaw_sd_deg=90 read 32.4 deg a sample later) */
         const double r2d = 180.0 / 3.14159265358979323846;
-        const int yaw = cfg->yaw_sd_rad > fnav_nav_att_sd_max_rad(cfg);
+        const int yaw = (double)cfg->yaw_sd_rad > att_max;
         snprintf(err, err_size,
                  "%s = %g deg is above %.1f deg, the largest initial attitude sd this filter's sigma points represent "
-                 "(%d states; docs/navigation.md, \"States\")",
+                 "(fewer states allow more: docs/navigation.md, \"States\")",
                  yaw ? "yaw_sd_deg" : "tilt_sd_deg", r2d * (double)(yaw ? cfg->yaw_sd_rad : cfg->tilt_sd_rad),
-                 r2d * (double)fnav_nav_att_sd_max_rad(cfg),
-                 9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0));
+                 r2d * att_max);
     } else {
         snprintf(err, err_size, "navigation configuration rejected by the core%s", other);
     }

@@ -57,6 +57,23 @@ static int noise_ok(fnav_real_t x)
     return finite_nonneg(x) && fnav_isfinite(x * x);
 }
 
+/* Active states of a configuration: velocity, position, attitude, the
+ * biases with the AR(1) model, the lever. */
+static inline FNAV_ALWAYS_INLINE int ukf_states(const fnav_ukf_config_t *cfg)
+{
+    return 9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0);
+}
+
+/* n + lambda = alpha^2 (n + kappa), formed as that product: as n +
+ * (alpha^2 (n + kappa) - n) it cancelled in float32 down to the spacing
+ * of n (9.5e-7 at 15), 1.7 % off the weights at alpha = 1e-3 and 0 at
+ * alpha = 1e-4 (refused); the defaults give lambda = 0 both ways
+ * (test_ukf test_weights_small_alpha). gamma is its root. */
+static inline FNAV_ALWAYS_INLINE fnav_real_t ukf_nl(const fnav_ukf_config_t *cfg)
+{
+    return cfg->alpha * cfg->alpha * ((fnav_real_t)ukf_states(cfg) + cfg->kappa);
+}
+
 fnav_quat_t fnav_ukf_grp_to_quat(fnav_vec3_t p)
 {
     /* Crassidis & Markley 2003, eq. (33) with a = 1, f = 4 */
@@ -122,13 +139,8 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
         !finite_nonneg(cfg->zaru_gate)) {
         return FNAV_E_CONFIG;
     }
-    n = 9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0);
-    /* n + lambda = alpha^2 (n + kappa), formed as that product: as n +
-     * (alpha^2 (n + kappa) - n) it cancelled in float32 down to the spacing
-     * of n (9.5e-7 at 15), 1.7 % off the weights at alpha = 1e-3 and 0 at
-     * alpha = 1e-4 (refused); the defaults give lambda = 0 both ways
-     * (test_ukf test_weights_small_alpha) */
-    nl = cfg->alpha * cfg->alpha * ((fnav_real_t)n + cfg->kappa);
+    n = ukf_states(cfg);
+    nl = ukf_nl(cfg);
     lambda = nl - (fnav_real_t)n;
     /* n + lambda > 0: the pair weights Wi are positive; beta >= alpha^2,
      * formed as fnav_ukf_predict forms it: the predicted covariance S +
@@ -176,9 +188,7 @@ fnav_real_t fnav_ukf_att_sd_max(const fnav_ukf_config_t *cfg)
     if (cfg == NULL) {
         return FNAV_R(0.0);
     }
-    /* n + lambda as fnav_ukf_init forms it; gamma its root */
-    nl = cfg->alpha * cfg->alpha *
-         ((fnav_real_t)(9 + (cfg->bias_model == FNAV_BIAS_AR1 ? 6 : 0) + (cfg->lever ? 3 : 0)) + cfg->kappa);
+    nl = ukf_nl(cfg); /* as fnav_ukf_init forms it */
     if (!(nl > FNAV_R(0.0)) || !fnav_isfinite(nl)) {
         return FNAV_R(0.0);
     }
