@@ -180,11 +180,18 @@ static void estimate_rate(fnav_stance_t *st)
 
 fnav_status_t fnav_stance_push(fnav_stance_t *st, const fnav_sample_t *sample)
 {
+    long lo;
     if (st == NULL || sample == NULL) {
         return FNAV_E_ARG;
     }
-    if (st->finished || st->n_in - st->n_out >= FNAV_STANCE_MAX_WINDOW) {
-        /* the caller did not pop the due decisions */
+    lo = st->n_raw - st->half; /* first sample of the next raw decision's window */
+    if (st->finished || st->n_in - st->n_out >= FNAV_STANCE_MAX_WINDOW ||
+        (lo > 0 && st->n_in - lo >= FNAV_STANCE_MAX_WINDOW)) {
+        /* the caller did not pop the due decisions: the ring is full, or
+         * this sample would overwrite the first of the window of the next
+         * raw decision (decided at the next pop; a window longer than the
+         * look-ahead, h > L, reaches it first; a review, 2026-12-01:
+         * test_stance test_burst_push_same_decisions) */
         return FNAV_E_STATE;
     }
     st->ring[st->n_in % FNAV_STANCE_MAX_WINDOW] = *sample;

@@ -282,7 +282,10 @@ FNAV_WARN_UNUSED fnav_status_t fnav_stance_init(fnav_stance_t *st, const fnav_st
  * FNAV_NAV_TIME_RESYNC samples behind: the gait-event search does not look
  * back across that step); the sample is copied.
  * @return FNAV_OK; FNAV_E_ARG on NULL; FNAV_E_STATE after fnav_stance_finish()
- *         or when the caller did not pop the due decisions (ring full).
+ *         or when the caller did not pop the due decisions: the ring is
+ *         full, or the sample would overwrite the start of the window of a
+ *         decision not yet made (a window longer than the look-ahead); pop
+ *         until FNAV_AGAIN and push it again (nothing was stored).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_stance_push(fnav_stance_t *st, const fnav_sample_t *sample);
 
