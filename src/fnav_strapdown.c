@@ -174,7 +174,14 @@ fnav_status_t fnav_strapdown_step(const fnav_strapdown_config_t *cfg, fnav_strap
 {
     fnav_strapdown_incr_t inc;
     fnav_strapdown_state_t y;
-    FNAV_ASSERT(cfg != NULL && x != NULL);
+    /* a public function returning a status: NULL and a configuration out
+     * of its domain are FNAV_E_ARG (until 2026-12-01, a review: NULL hit
+     * FNAV_ASSERT, a gravity of 0 or below and an unknown sample type
+     * returned FNAV_OK; test_strapdown test_bad_args) */
+    if (cfg == NULL || x == NULL || !fnav_isfinite(cfg->gravity_mps2) || !(cfg->gravity_mps2 > FNAV_R(0.0)) ||
+        (cfg->sample_type != FNAV_SAMPLE_INSTANT && cfg->sample_type != FNAV_SAMPLE_MEAN)) {
+        return FNAV_E_ARG;
+    }
     if (!fnav_vec3_isfinite(gyro_rps) || !fnav_vec3_isfinite(accel_mps2) || !fnav_isfinite(dt_s)) {
         return FNAV_E_NANINF;
     }

@@ -682,6 +682,40 @@ static void test_bad_input(void **state)
     assert_int_equal(h.valid, 0);
 }
 
+/* NULL pointers and a configuration out of its domain: FNAV_E_ARG, state
+ * and history unchanged. Until 2026-12-01 (a review) a NULL cfg or x hit
+ * FNAV_ASSERT (a crash with FNAV_ENABLE_ASSERT=0), a gravity of 0 or
+ * -9.8 m/s^2 and an unknown sample type returned FNAV_OK (gravity pulling
+ * up; the interval-mean increments), a NaN or infinite gravity
+ * FNAV_E_RANGE, as if the readings had overflowed the state. */
+static void test_bad_args(void **state)
+{
+    fnav_strapdown_state_t x = state_at(fnav_quat_identity());
+    fnav_strapdown_state_t x0 = x;
+    fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
+    fnav_strapdown_hist_t h0 = h;
+    const fnav_vec3_t w = fnav_vec3(FNAV_R(0.1), FNAV_R(0.0), FNAV_R(0.0));
+    const fnav_vec3_t f = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
+    const fnav_real_t bad_g[4] = { FNAV_R(0.0), (fnav_real_t)-k_g, (fnav_real_t)NAN, (fnav_real_t)INFINITY };
+    fnav_strapdown_config_t c;
+    int i;
+    (void)state;
+    assert_int_equal(fnav_strapdown_step(NULL, &x, &h, w, f, FNAV_R(0.01)), FNAV_E_ARG);
+    assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, NULL, &h, w, f, FNAV_R(0.01)), FNAV_E_ARG);
+    for (i = 0; i < 4; i++) {
+        c = fnav_strapdown_config_default;
+        c.gravity_mps2 = bad_g[i];
+        assert_int_equal(fnav_strapdown_step(&c, &x, &h, w, f, FNAV_R(0.01)), FNAV_E_ARG);
+    }
+    c = fnav_strapdown_config_default;
+    c.sample_type = (fnav_sample_type_t)2;
+    assert_int_equal(fnav_strapdown_step(&c, &x, &h, w, f, FNAV_R(0.01)), FNAV_E_ARG);
+    assert_memory_equal(&x, &x0, sizeof x);
+    assert_memory_equal(&h, &h0, sizeof h);
+    /* the history is optional (NULL: the reading held over the interval) */
+    assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, NULL, w, f, FNAV_R(0.01)), FNAV_OK);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -699,6 +733,7 @@ int main(void)
         cmocka_unit_test(test_quat_exp_series),
         cmocka_unit_test(test_quat_exp_large),
         cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_bad_args),
     };
     return cmocka_run_group_tests_name("strapdown", tests, NULL, NULL);
 }

@@ -135,9 +135,14 @@ void fnav_strapdown_propagate(const fnav_strapdown_config_t *cfg, fnav_strapdown
 /**
  * One complete strapdown step from raw (bias-corrected) readings: forms the
  * increments, propagates and updates the history.
- * @return FNAV_OK; FNAV_E_NANINF on a non-finite input or dt (x unchanged);
- *         FNAV_E_TIME on dt < 0 (x unchanged); FNAV_E_RANGE when finite
- *         inputs overflow the state (x and hist unchanged).
+ * @param cfg  configuration (gravity finite and positive, a known sample type)
+ * @param x    state, updated in place
+ * @param hist history, updated; may be NULL (each reading held over its interval)
+ * @return FNAV_OK; FNAV_E_ARG for a NULL cfg or x, or a cfg out of its
+ *         domain (x and hist unchanged); FNAV_E_NANINF on a non-finite
+ *         input or dt (x unchanged); FNAV_E_TIME on dt < 0 (x unchanged);
+ *         FNAV_E_RANGE when finite inputs overflow the state (x and hist
+ *         unchanged).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_strapdown_step(const fnav_strapdown_config_t *cfg, fnav_strapdown_state_t *x,
                                                    fnav_strapdown_hist_t *hist, fnav_vec3_t gyro_rps,
