@@ -607,7 +607,7 @@ fnav_status_t fnav_stance_pop(fnav_stance_t *st, fnav_stance_out_t *out)
          * min_zupt_cycle is 0: nothing changes then) */
         req = st->raw_cap > st->n_min_zupt ? st->raw_cap : st->n_min_zupt;
     }
-    out->stance = out->raw_stance && (st->back + fwd >= req || i == 0);
+    out->stance = out->raw_stance && st->back + fwd >= req;
     out->events = 0;
     out->fo_t_ns = 0;
     out->fs_t_ns = 0;

@@ -449,6 +449,55 @@ static void test_burst_push_same_decisions(void **state)
     }
 }
 
+/* The first samples of a stream follow the shortest-run rule like any
+ * other: a raw stance run at the start shorter than min_zupt_s is no
+ * stance, as such a run at the end of the stream is not (the recording
+ * may start mid-swing, at a dip of T). Until 2026-12-01 (a review) the
+ * first sample alone was made stance whatever its run (an undocumented
+ * "|| i == 0"), so a run of one raw sample at 100 Hz (W = 3: sample 1's
+ * window reaches the motion at sample 2), where the shortest run is 2,
+ * gave stance 1 at sample 0 and 0 at sample 1. A still start longer than
+ * the shortest run is stance from its first sample (the look-ahead). */
+static void test_first_samples_short_run(void **state)
+{
+    static fnav_stance_t st;
+    fnav_stance_config_t c = fnav_stance_config_default;
+    fnav_stance_out_t o;
+    int still_start;
+    (void)state;
+    c.rate_hz = FNAV_R(100.0);
+    c.adaptive = 0;
+    c.min_zupt_cycle = FNAV_R(0.0); /* shortest run round(0.02 x 100) = 2 */
+    for (still_start = 2; still_start <= 20; still_start += 18) {
+        long k, got = 0;
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        for (k = 0; k <= 60; k++) {
+            if (k < 60) {
+                /* still, then a swing (3 rad/s) from still_start for 30 samples, then still */
+                int moving = k >= still_start && k < still_start + 30;
+                double f[3] = { moving ? 5.0 : 0.0, 0.0, -k_g }, w[3] = { 0.0, moving ? 3.0 : 0.0, 0.0 };
+                fnav_sample_t s = sample(k, 100.0, f, w);
+                assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+            } else {
+                fnav_stance_finish(&st);
+            }
+            while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+                long j = (long)o.sample.seq;
+                if (still_start == 2 && j < 2) {
+                    /* sample 0 is raw stance alone: a run of 1 */
+                    assert_int_equal(o.raw_stance, j == 0);
+                    assert_int_equal(o.stance, 0);
+                }
+                if (still_start == 20 && j < 19) {
+                    assert_int_equal(o.stance, 1);
+                }
+                got++;
+            }
+        }
+        assert_int_equal(got, 60);
+    }
+}
+
 /* Synthetic steps at 200 Hz: still (f = -g z, w = 0, tiny noise), then a
  * swing of 0.5 s with |w| ~ 3 rad/s, then still again. The stance must end
  * and start within half a window of the motion, every still sample farther
@@ -1735,6 +1784,7 @@ int main(void)
         cmocka_unit_test(test_delay_and_flush),
         cmocka_unit_test(test_ring_contract),
         cmocka_unit_test(test_burst_push_same_decisions),
+        cmocka_unit_test(test_first_samples_short_run),
         cmocka_unit_test(test_step_boundaries),
         cmocka_unit_test(test_short_dip_rejected),
         cmocka_unit_test(test_adaptive_threshold),
