@@ -913,7 +913,7 @@ static void dup_names_warn(hx_reader_t *r, const char *const names[8], char **f,
 
 static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_required)
 {
-    char *f[HX_MAX_COLS], dc_first[64], matched[700] = "";
+    char *f[HX_MAX_COLS], dc_first[64], matched[1000] = "";
     const char *names[8];
     int n, i, rc, total, dc_line, tried = 0;
     static const char *const what[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
@@ -1013,18 +1013,27 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
                     news |= m.ncand[k] > 1 || m.nnear[k] > 0 ||
                             (m.ncand[k] == 1 && !hx_name_eq(f[m.cand[k][0]], k_csv_names[k]));
                 }
-                if (!m.excluded && six && news) {
-                    char give[700], miss[400];
+                if (!m.excluded && (six || m.unit_col >= 0) && news) {
+                    char give[700], miss[400], unit[300];
+                    size_t ul;
                     (void)hx_names_give(&m, f, give, sizeof give);
                     (void)hx_names_unmatched(&m, f, time_required, miss, sizeof miss);
+                    /* a name matched but for its unit says which (a unit
+                     * not read, "gx [deg/h]", or another quantity's; until
+                     * 2026-12-01 such a name was not mentioned) */
+                    snprintf(unit, sizeof unit, "; ");
+                    ul = strlen(unit);
+                    if (hx_names_unit_problem(&m, f, unit + ul, sizeof unit - ul)[0] == '\0') {
+                        unit[0] = '\0';
+                    }
                     if (m.ok) {
                         /* all but the time: the no-time path's rate */
                         snprintf(matched, sizeof matched,
-                                 "; names matched: %.400s; no time column%.150s: give the log's rate with "
+                                 "%.290s; names matched: %.400s; no time column%.150s: give the log's rate with "
                                  "--input-rate HZ, or its time column with --columns t=NAME too",
-                                 give, strncmp(miss, "t: none", 7) == 0 ? miss + 7 : "");
+                                 unit, give, strncmp(miss, "t: none", 7) == 0 ? miss + 7 : "");
                     } else if (give[0] != '\0' || miss[0] != '\0') {
-                        snprintf(matched, sizeof matched, "; names matched: %.400s; not matched: %.250s",
+                        snprintf(matched, sizeof matched, "%.290s; names matched: %.400s; not matched: %.250s", unit,
                                  give[0] != '\0' ? give : "none", miss[0] != '\0' ? miss : "none");
                     }
                 }

@@ -2759,7 +2759,6 @@ static void test_name_classify(void **state)
         { "x", HX_NAME_OTHER, -1, HX_UNIT_NONE },
         { "g", HX_NAME_OTHER, -1, HX_UNIT_NONE },
         { "temp", HX_NAME_OTHER, -1, HX_UNIT_NONE },
-        { "acc_x [counts]", HX_NAME_OTHER, -1, HX_UNIT_NONE },
         { "acc_x (g) 2", HX_NAME_OTHER, -1, HX_UNIT_NONE },
         { "", HX_NAME_OTHER, -1, HX_UNIT_NONE },
     };
@@ -2776,6 +2775,72 @@ static void test_name_classify(void **state)
         assert_int_equal(c.kind, k[i].kind);
         assert_int_equal(c.key, k[i].key);
         assert_int_equal(c.unit, k[i].unit);
+    }
+}
+
+/* Units spelled in UTF-8 (the degree, micro and superscript-two signs) are
+ * their ASCII spellings; a unit not read makes the name a near miss that
+ * says so (unit_unread, unit_text as the header spells it). Until
+ * 2026-12-01 "gx [°/s]" and "acc_x [m/s²]" were no names at all, and a
+ * bracketed unit not read made a name no near miss either. */
+static void test_name_units_utf8(void **state)
+{
+    static const struct {
+        const char *name;
+        hx_name_kind_t kind;
+        int key;
+        hx_name_unit_t unit;
+        int unread;
+        const char *text; /* unit_text */
+    } k[] = {
+        /* U+00B0 DEGREE SIGN, U+00B5 MICRO SIGN, U+03BC GREEK SMALL MU, U+00B2 SUPERSCRIPT TWO */
+        { "gx [\xc2\xb0/s]", HX_NAME_MATCH, 4, HX_UNIT_DPS, 0, "\xc2\xb0/s" },
+        { "gyr_x(\xc2\xb0/s)", HX_NAME_MATCH, 4, HX_UNIT_DPS, 0, "\xc2\xb0/s" },
+        { "Gyro Z (\xc2\xb0 / s)", HX_NAME_MATCH, 6, HX_UNIT_DPS, 0, "\xc2\xb0 / s" },
+        { "gyro_y_\xc2\xb0/s", HX_NAME_MATCH, 5, HX_UNIT_DPS, 0, "\xc2\xb0/s" },
+        { "GyroX [m\xc2\xb0/s]", HX_NAME_MATCH, 4, HX_UNIT_MDPS, 0, "m\xc2\xb0/s" },
+        { "acc_x [m/s\xc2\xb2]", HX_NAME_MATCH, 1, HX_UNIT_MPS2, 0, "m/s\xc2\xb2" },
+        { "AccZ (m/s\xc2\xb2)", HX_NAME_MATCH, 3, HX_UNIT_MPS2, 0, "m/s\xc2\xb2" },
+        { "t [\xc2\xb5s]", HX_NAME_MATCH, 0, HX_UNIT_US, 0, "\xc2\xb5s" },
+        { "t [\xce\xbcs]", HX_NAME_MATCH, 0, HX_UNIT_US, 0, "\xce\xbcs" },
+        { "time_\xc2\xb5s", HX_NAME_MATCH, 0, HX_UNIT_US, 0, "\xc2\xb5s" },
+        /* Latin-1 / Windows-1252 bytes (a spreadsheet's export), not UTF-8 */
+        { "gx [\xb0/s]", HX_NAME_MATCH, 4, HX_UNIT_DPS, 0, "\xb0/s" },
+        { "acc_y [m/s\xb2]", HX_NAME_MATCH, 2, HX_UNIT_MPS2, 0, "m/s\xb2" },
+        /* the ASCII spellings keep their meaning, with their text */
+        { "gx [deg/s]", HX_NAME_MATCH, 4, HX_UNIT_DPS, 0, "deg/s" },
+        { "acc_x", HX_NAME_MATCH, 1, HX_UNIT_NONE, 0, "" },
+        /* a unit not read: a near miss that says so */
+        { "gx [\xc2\xb0/h]", HX_NAME_NEAR, 4, HX_UNIT_NONE, 1, "\xc2\xb0/h" },
+        { "ax_\xc2\xb5g", HX_NAME_NEAR, 1, HX_UNIT_NONE, 1, "\xc2\xb5g" },
+        { "ax_ug", HX_NAME_NEAR, 1, HX_UNIT_NONE, 1, "ug" },
+        { "acc_x [counts]", HX_NAME_NEAR, 1, HX_UNIT_NONE, 1, "counts" },
+        { "gyro_z_rad/h", HX_NAME_NEAR, 6, HX_UNIT_NONE, 1, "rad/h" },
+        { "time [\xc2\xb5h]", HX_NAME_NEAR, 0, HX_UNIT_NONE, 1, "\xc2\xb5h" },
+        /* another word than a unit: a near miss as before, no unit named */
+        { "acc_x_lin", HX_NAME_NEAR, 1, HX_UNIT_NONE, 0, "" },
+        /* no IMU name: nothing to say of its unit */
+        { "mag_x [\xc2\xb5T]", HX_NAME_OTHER, -1, HX_UNIT_NONE, 0, "" },
+        { "temp [\xc2\xb0" "C]", HX_NAME_OTHER, -1, HX_UNIT_NONE, 0, "" },
+        /* a UTF-8 character that is none of these stays itself */
+        { "acc_x [m/s\xe2\x81\xbb\xc2\xb2]", HX_NAME_NEAR, 1, HX_UNIT_NONE, 1, "m/s\xe2\x81\xbb\xc2\xb2" },
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof k / sizeof k[0]; i++) {
+        hx_name_class_t c;
+        const hx_name_kind_t kind = hx_name_classify(k[i].name, &c);
+        if (kind != k[i].kind || c.key != k[i].key || c.unit != k[i].unit || c.unit_unread != k[i].unread ||
+            strcmp(c.unit_text, k[i].text) != 0) {
+            print_error("%s: kind %d key %d unit %d unread %d '%s', expected %d %d %d %d '%s'\n", k[i].name,
+                        (int)kind, c.key, (int)c.unit, c.unit_unread, c.unit_text, (int)k[i].kind, k[i].key,
+                        (int)k[i].unit, k[i].unread, k[i].text);
+        }
+        assert_int_equal(kind, k[i].kind);
+        assert_int_equal(c.key, k[i].key);
+        assert_int_equal(c.unit, k[i].unit);
+        assert_int_equal(c.unit_unread, k[i].unread);
+        assert_string_equal(c.unit_text, k[i].text);
     }
 }
 
@@ -2892,6 +2957,28 @@ static void test_names_match(void **state)
         assert_string_equal(hx_names_unmatched(&m, f, 1, miss, sizeof miss),
                             "t: none; the rates name different units");
         assert_true(m.excluded == 0);
+        /* a unit not read, and one of another quantity: the column, its
+         * name as spelled and the unit named (hx_names_unit_problem) */
+        snprintf(text, sizeof text, "t,ax,ay,az,gx [\xc2\xb0/h],gy [\xc2\xb0/h],gz [\xc2\xb0/h]");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 0);
+        assert_int_equal(m.unit_col, 4);
+        assert_string_equal(hx_names_unit_problem(&m, f, miss, sizeof miss),
+                            "column 5 ('gx [\xc2\xb0/h]') names a unit not read, '\xc2\xb0/h' (a rate's: rad/s, "
+                            "deg/s or dps or \xc2\xb0/s, mdps or mdeg/s)");
+        snprintf(text, sizeof text, "t,acc_x [s],acc_y [s],acc_z [s],gx,gy,gz");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 0);
+        assert_int_equal(m.unit_col, 1);
+        assert_string_equal(hx_names_unit_problem(&m, f, miss, sizeof miss),
+                            "column 2 ('acc_x [s]') names a time unit, 's', not an acceleration's (m/s^2 or m/s2 or "
+                            "m/s\xc2\xb2 or mps2, g, mg)");
+        /* a key with a candidate: its near misses' units are no problem */
+        snprintf(text, sizeof text, "t,ax,ay,az,gx,gy,gz,gx [counts]");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 1);
+        assert_int_equal(m.unit_col, -1);
+        assert_string_equal(hx_names_unit_problem(&m, f, miss, sizeof miss), "");
     }
 }
 
@@ -3992,6 +4079,7 @@ int main(void)
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
         cmocka_unit_test(test_name_classify),
         cmocka_unit_test(test_names_match),
+        cmocka_unit_test(test_name_units_utf8),
         cmocka_unit_test_teardown(test_csv_names, layout_reset),
         cmocka_unit_test(test_time_unit_rate),
     };
