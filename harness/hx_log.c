@@ -3331,10 +3331,16 @@ int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t 
 int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t err_size)
 {
     const char *p = spec;
-    char key[16], val[16];
+    char key[16], given[16], val[48];
     int seen = 0, rc;
-    while ((rc = next_item(&p, "--units", key, sizeof key, val, sizeof val, err, err_size)) > 0) {
+    while ((rc = next_item(&p, "--units", key, sizeof key, given, sizeof given, err, err_size)) > 0) {
         int k = strcmp(key, "time") == 0 ? 0 : strcmp(key, "accel") == 0 ? 1 : strcmp(key, "gyro") == 0 ? 2 : -1;
+        /* the units' signs as the names read them: time=µs, accel=m/s²,
+         * gyro=°/s (unknown units until 2026-12-01); the errors quote the
+         * value as given */
+        if (hx_name_fold_units(given, val, sizeof val) != 0) {
+            snprintf(val, sizeof val, "?");
+        }
         if (k < 0) {
             snprintf(err, err_size, "--units: unknown quantity '%s' (time, accel or gyro)", key);
             return -1;
@@ -3351,7 +3357,7 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             for (i = 0; i < 4 && strcmp(val, tu[i]) != 0; i++) {
             }
             if (i == 4) {
-                snprintf(err, err_size, "--units: time=%s: the time unit is s, ms, us or ns", val);
+                snprintf(err, err_size, "--units: time=%s: the time unit is s, ms, us or ns (\xc2\xb5s: us)", given);
                 return -1;
             }
             l->time_digits = 9 - 3 * i;
@@ -3363,8 +3369,8 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             } else if (strcmp(val, "mg") == 0) {
                 l->acc_scale = HX_MG_MPS2; /* ST's SensorTile data log, AccX [mg] (the units review) */
             } else {
-                snprintf(err, err_size, "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, mps2), g or mg",
-                         val);
+                snprintf(err, err_size, "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, m/s\xc2\xb2, mps2), g or mg",
+                         given);
                 return -1;
             }
         } else {
@@ -3375,8 +3381,8 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             } else if (strcmp(val, "mdps") == 0 || strcmp(val, "mdeg/s") == 0) {
                 l->gyr_scale = HX_MDPS_RPS; /* ST's SensorTile data log, GyroX [mdps] (the units review) */
             } else {
-                snprintf(err, err_size, "--units: gyro=%s: the rate unit is rad/s, deg/s (dps) or mdps (mdeg/s)",
-                         val);
+                snprintf(err, err_size, "--units: gyro=%s: the rate unit is rad/s, deg/s (dps, \xc2\xb0/s) or mdps (mdeg/s)",
+                         given);
                 return -1;
             }
         }

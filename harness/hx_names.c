@@ -154,6 +154,11 @@ static int fold_units(const char *text, size_t len, char *out, size_t size)
     return 0;
 }
 
+int hx_name_fold_units(const char *text, char *out, size_t size)
+{
+    return fold_units(text, strlen(text), out, size);
+}
+
 /* a last word that is a unit, but none read (ug: a log in micro-g, deg/h):
  * the name is then no other word's near miss, but one for its unit */
 static int unit_like(const char *w)

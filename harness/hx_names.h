@@ -50,6 +50,12 @@ typedef struct {
  *  a key's name a near miss with unit_unread. Returns kind. */
 hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c);
 
+/** text with the units' signs spelled in ASCII, as hx_name_classify reads
+ *  them (° "deg", µ and μ "u", ² "2"; UTF-8 or the Latin-1 byte), into out:
+ *  "m/s²" is "m/s2", "°/s" "deg/s" (--units reads its values so). 0, or -1
+ *  when out is too small. */
+int hx_name_fold_units(const char *text, char *out, size_t size);
+
 /** A name as the header spells it, without the blanks, tabs, quotes and
  *  CR around it, into out (cut to size). */
 void hx_name_bare(const char *name, char *out, size_t size);

@@ -2844,6 +2844,42 @@ static void test_name_units_utf8(void **state)
     }
 }
 
+/* --units takes the UTF-8 spellings the names do: time=µs (U+00B5) or μs
+ * (U+03BC), accel=m/s² (U+00B2), gyro=°/s (U+00B0) or m°/s; until
+ * 2026-12-01 each was an unknown unit, exit 2. The error quotes the value
+ * as given. */
+static void test_units_option_utf8(void **state)
+{
+    static const struct {
+        const char *spec;
+        int time_digits;
+        double acc, gyr;
+    } k[] = {
+        { "time=\xc2\xb5s", 3, 1.0, 1.0 },
+        { "time=\xce\xbcs,accel=m/s\xc2\xb2", 3, 1.0, 1.0 },
+        { "gyro=\xc2\xb0/s", 9, 1.0, HX_DPS_RPS },
+        { "gyro=m\xc2\xb0/s,accel=g", 9, HX_G_MPS2, HX_MDPS_RPS },
+        { "gyro=deg/s", 9, 1.0, HX_DPS_RPS },
+    };
+    size_t i;
+    char err[256];
+    (void)state;
+    for (i = 0; i < sizeof k / sizeof k[0]; i++) {
+        hx_csv_layout_t l;
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, k[i].spec, err, sizeof err), 0);
+        assert_int_equal(l.time_digits, k[i].time_digits);
+        assert_true(l.acc_scale == k[i].acc);
+        assert_true(l.gyr_scale == k[i].gyr);
+    }
+    {
+        hx_csv_layout_t l;
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, "gyro=\xc2\xb0/h", err, sizeof err), -1);
+        assert_non_null(strstr(err, "gyro=\xc2\xb0/h: the rate unit is"));
+    }
+}
+
 /* split a header at commas into f (the text is changed) */
 static int split_header(char *text, char **f, int max)
 {
@@ -4080,6 +4116,7 @@ int main(void)
         cmocka_unit_test(test_name_classify),
         cmocka_unit_test(test_names_match),
         cmocka_unit_test(test_name_units_utf8),
+        cmocka_unit_test(test_units_option_utf8),
         cmocka_unit_test_teardown(test_csv_names, layout_reset),
         cmocka_unit_test(test_time_unit_rate),
     };

@@ -297,6 +297,14 @@ for f in u_deg u_par u_mu; do
     else fail "$f.csv: read otherwise than the walk's CSV"; fi
 done
 expect_err "--units time=us,gyro=deg/s" "u_mu.csv: the Greek mu read as micro"
+# --units takes the same spellings (time=µs, gyro=°/s: unknown units, exit 2, until 2026-12-01)
+expect_exit 0 "convert with --units time=µs,accel=m/s²,gyro=°/s" "$H" convert "$T/u_par.csv" "$T/u_opt.csv" \
+    --columns 't=Time (µs),ax=AccX (m/s²),ay=AccY (m/s²),az=AccZ (m/s²),gx=gyr_x(°/s),gy=gyr_y(°/s),gz=gyr_z(°/s)' \
+    --units time=µs,accel=m/s²,gyro=°/s
+if cmp -s "$T/u_ref.csv" "$T/u_opt.csv"; then pass "--units in UTF-8: the walk's samples"
+else fail "--units in UTF-8: read otherwise than the walk's CSV"; fi
+expect_exit 2 "--units gyro=°/h" "$H" info "$T/u_par.csv" --units gyro=°/h
+expect_err "gyro=°/h: the rate unit is rad/s, deg/s (dps, °/s) or mdps" "--units gyro=°/h: refused, the value as given"
 # a unit not read: refused, the column, its name and the unit named
 u_hdr "$T/u_degh.csv" 't,ax,ay,az,gx [°/h],gy [°/h],gz [°/h]' 1 1
 expect_exit 1 "info of gx [°/h]" "$H" info "$T/u_degh.csv"
