@@ -354,6 +354,7 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
 {
     int i, k;
     memset(m, 0, sizeof *m);
+    m->unit_col = -1;
     for (k = 0; k < 7; k++) {
         m->col[k] = -1;
     }
@@ -374,7 +375,6 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
             add_col(&m->nnear[c.key], m->near[c.key], i);
         }
     }
-    m->unit_col = -1;
     for (i = 0; i < n && m->unit_col < 0; i++) {
         /* a key without a candidate that one name has but for its unit:
          * the refusal names the unit (hx_names_unit_problem) */

@@ -3015,6 +3015,13 @@ static void test_names_match(void **state)
         assert_int_equal(hx_names_match(f, n, &m), 1);
         assert_int_equal(m.unit_col, -1);
         assert_string_equal(hx_names_unit_problem(&m, f, miss, sizeof miss), "");
+        /* an Xsens export is not matched: no unit named either */
+        snprintf(text, sizeof text, "PacketCounter,acc_x [counts],Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 0);
+        assert_int_equal(m.excluded, 1);
+        assert_int_equal(m.unit_col, -1);
+        assert_string_equal(hx_names_unit_problem(&m, f, miss, sizeof miss), "");
     }
 }
 
