@@ -3369,8 +3369,8 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             } else if (strcmp(val, "mg") == 0) {
                 l->acc_scale = HX_MG_MPS2; /* ST's SensorTile data log, AccX [mg] (the units review) */
             } else {
-                snprintf(err, err_size, "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, m/s\xc2\xb2, mps2), g or mg",
-                         given);
+                snprintf(err, err_size,
+                         "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, m/s\xc2\xb2, mps2), g or mg", given);
                 return -1;
             }
         } else {
@@ -3381,8 +3381,8 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             } else if (strcmp(val, "mdps") == 0 || strcmp(val, "mdeg/s") == 0) {
                 l->gyr_scale = HX_MDPS_RPS; /* ST's SensorTile data log, GyroX [mdps] (the units review) */
             } else {
-                snprintf(err, err_size, "--units: gyro=%s: the rate unit is rad/s, deg/s (dps, \xc2\xb0/s) or mdps (mdeg/s)",
-                         given);
+                snprintf(err, err_size,
+                         "--units: gyro=%s: the rate unit is rad/s, deg/s (dps, \xc2\xb0/s) or mdps (mdeg/s)", given);
                 return -1;
             }
         }
