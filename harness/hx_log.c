@@ -911,6 +911,64 @@ static void dup_names_warn(hx_reader_t *r, const char *const names[8], char **f,
     }
 }
 
+/* A column of the interchange CSV whose name states a unit other than the
+ * one it is read in (--columns named it, and --units or the default sets
+ * the unit): warned, the first such, with the --units that reads what the
+ * names state; the values are read as asked. Until 2026-12-01 'acc_x [g]'
+ * given with --columns alone was read as m/s^2 without a word. The names
+ * matched without --columns set their units themselves. */
+static void units_named_warn(hx_reader_t *r, char **f, int n)
+{
+    static const char *const what[3] = { "the time", "the accelerations", "the rates" };
+    static const char *const tu[4] = { "s", "ms", "us", "ns" };
+    const hx_csv_layout_t *l = &r->layout;
+    hx_csv_layout_t want = *l;
+    int k, col_first = -1, q_first = 0;
+    hx_name_unit_t u_first = HX_UNIT_NONE;
+    if (r->meta.format != HX_FMT_CSV || l->names_matched) {
+        return;
+    }
+    for (k = 0; k < 7; k++) {
+        const int col = k == 0 ? r->col_t : k <= 3 ? r->col_a[k - 1] : r->col_g[k - 4];
+        const int q = k == 0 ? 0 : k <= 3 ? 1 : 2;
+        hx_name_class_t c;
+        int differs;
+        if (col < 0 || col >= n || hx_name_classify(f[col], &c) != HX_NAME_MATCH || c.unit == HX_UNIT_NONE) {
+            continue;
+        }
+        if (q == 0) {
+            want.time_digits = c.unit == HX_UNIT_MS ? 6 : c.unit == HX_UNIT_US ? 3 : c.unit == HX_UNIT_NS ? 0 : 9;
+            differs = want.time_digits != l->time_digits;
+        } else if (q == 1) {
+            want.acc_scale = c.unit == HX_UNIT_G ? HX_G_MPS2 : c.unit == HX_UNIT_MG ? HX_MG_MPS2 : 1.0;
+            differs = want.acc_scale != l->acc_scale;
+        } else {
+            want.gyr_scale = c.unit == HX_UNIT_DPS ? HX_DPS_RPS : c.unit == HX_UNIT_MDPS ? HX_MDPS_RPS : 1.0;
+            differs = want.gyr_scale != l->gyr_scale;
+        }
+        if (differs && col_first < 0) {
+            col_first = col;
+            q_first = q;
+            u_first = c.unit;
+        }
+    }
+    if (col_first >= 0) {
+        char name[128], give[160];
+        const char *item = hx_name_unit_item(u_first), *in;
+        in = q_first == 0   ? tu[(9 - l->time_digits) / 3]
+             : q_first == 1 ? hx_accel_unit_name(l->acc_scale)
+             : l->gyr_scale == HX_DPS_RPS ? "deg/s"
+             : l->gyr_scale == HX_MDPS_RPS ? "mdps"
+                                           : "rad/s";
+        hx_name_bare(f[col_first], name, sizeof name);
+        (void)hx_units_give(&want, give, sizeof give);
+        add_warn(r, "%s:%ld: column %d ('%s') names %s, but %s %s read in %s (%s %s the column's unit)", r->path,
+                 r->stats.lines, col_first + 1, name, item != NULL ? strchr(item, '=') + 1 : "?", what[q_first],
+                 q_first == 0 ? "is" : "are", in, strncmp(give, "give ", 5) == 0 ? give + 5 : give,
+                 strncmp(give, "give ", 5) == 0 ? "reads" : "to read");
+    }
+}
+
 static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_required)
 {
     char *f[HX_MAX_COLS], dc_first[64], matched[1000] = "";
@@ -980,6 +1038,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         i = find_columns(r, names, f, n, time_required);
         if (i < 0) {
             dup_names_warn(r, names, f, n);
+            units_named_warn(r, f, n);
             return 0;
         }
         if (r->meta.format == HX_FMT_CSV && !tried && total <= HX_MAX_COLS && !dc_line && !all_numeric(f, n)) {

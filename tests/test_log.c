@@ -2880,6 +2880,53 @@ static void test_units_option_utf8(void **state)
     }
 }
 
+/* --columns names a column whose name states a unit other than the one
+ * --units (or its default) reads it in: warned, naming the column, the two
+ * units and the --units item that reads it so; the values are read as
+ * asked. Until 2026-12-01 'acc_x [g]' given with --columns alone was read
+ * as m/s^2 without a word. */
+static void test_columns_unit_warned(void **state)
+{
+    char p[512], err[1024];
+    hx_csv_layout_t l;
+    hx_reader_t *r;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "time [ms],acc_x [g],acc_y [g],acc_z [g],gx [\xc2\xb0/s],gy [\xc2\xb0/s],gz [\xc2\xb0/s]\n"
+                  "0,0,0,1,0,0,0\n"
+                  "10,0,0,1,0,0,0\n");
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l,
+                                          "t=time [ms],ax=acc_x [g],ay=acc_y [g],az=acc_z [g],gx=gx [\xc2\xb0/s],"
+                                          "gy=gy [\xc2\xb0/s],gz=gz [\xc2\xb0/s]",
+                                          err, sizeof err),
+                     0);
+    assert_int_equal(hx_csv_units_parse(&l, "time=ms,gyro=deg/s", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_non_null(r);
+    {
+        char want[1024];
+        snprintf(want, sizeof want,
+                 "%s:1: column 2 ('acc_x [g]') names g, but the accelerations are read in m/s2 (--units "
+                 "time=ms,accel=g,gyro=deg/s reads the column's unit)",
+                 p);
+        assert_non_null(strstr(hx_reader_warnings(r), want));
+        assert_null(strstr(hx_reader_warnings(r), "column 1 ("));   /* time in ms as named */
+        assert_null(strstr(hx_reader_warnings(r), "column 5 ("));   /* deg/s as named */
+        assert_null(strstr(hx_reader_warnings(r), "column 3 ("));   /* the first only */
+    }
+    hx_reader_close(r);
+    /* the units that agree: no warning */
+    assert_int_equal(hx_csv_units_parse(&l, "time=ms,accel=g,gyro=deg/s", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_non_null(r);
+    assert_null(strstr(hx_reader_warnings(r), "names"));
+    hx_reader_close(r);
+    hx_reader_set_layout(NULL);
+}
+
 /* split a header at commas into f (the text is changed) */
 static int split_header(char *text, char **f, int max)
 {
@@ -4125,6 +4172,7 @@ int main(void)
         cmocka_unit_test(test_name_units_utf8),
         cmocka_unit_test(test_units_option_utf8),
         cmocka_unit_test_teardown(test_csv_names, layout_reset),
+        cmocka_unit_test_teardown(test_columns_unit_warned, layout_reset),
         cmocka_unit_test(test_time_unit_rate),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);

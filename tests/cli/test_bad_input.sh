@@ -305,6 +305,19 @@ if cmp -s "$T/u_ref.csv" "$T/u_opt.csv"; then pass "--units in UTF-8: the walk's
 else fail "--units in UTF-8: read otherwise than the walk's CSV"; fi
 expect_exit 2 "--units gyro=°/h" "$H" info "$T/u_par.csv" --units gyro=°/h
 expect_err "gyro=°/h: the rate unit is rad/s, deg/s (dps, °/s) or mdps" "--units gyro=°/h: refused, the value as given"
+# --columns alone on names that state their units: read in SI units as
+# asked, with a warning naming the column and the --units that reads them
+# (read without a word until 2026-12-01)
+expect_exit 0 "convert with --columns alone over UTF-8 units" "$H" convert "$T/u_deg.csv" "$T/u_col.csv" \
+    --columns 't=time [s],ax=acc_x [m/s²],ay=acc_y [m/s²],az=acc_z [m/s²],gx=gx [°/s],gy=gy [°/s],gz=gz [°/s]'
+expect_err "u_deg.csv:1: column 5 ('gx \[°/s\]') names deg/s, but the rates are read in rad/s (--units gyro=deg/s reads the column's unit)" \
+    "--columns alone: the unit the name states and the --units that reads it"
+expect_exit 0 "the same with --units gyro=°/s" "$H" convert "$T/u_deg.csv" "$T/u_col.csv" --units gyro=°/s \
+    --columns 't=time [s],ax=acc_x [m/s²],ay=acc_y [m/s²],az=acc_z [m/s²],gx=gx [°/s],gy=gy [°/s],gz=gz [°/s]'
+if grep -q "names" "$T/err"; then fail "--columns with the named units: warned ($(cat "$T/err"))"
+else pass "--columns with the named units: no warning"; fi
+cmp -s "$T/u_ref.csv" "$T/u_col.csv" && pass "--columns with the named units: the walk's samples" \
+    || fail "--columns with the named units: read otherwise than the walk's CSV"
 # a unit not read: refused, the column, its name and the unit named
 u_hdr "$T/u_degh.csv" 't,ax,ay,az,gx [°/h],gy [°/h],gz [°/h]' 1 1
 expect_exit 1 "info of gx [°/h]" "$H" info "$T/u_degh.csv"
