@@ -911,9 +911,67 @@ static void dup_names_warn(hx_reader_t *r, const char *const names[8], char **f,
     }
 }
 
+/* A column of the interchange CSV whose name states a unit other than the
+ * one it is read in (--columns named it, and --units or the default sets
+ * the unit): warned, the first such, with the --units that reads what the
+ * names state; the values are read as asked. Until 2026-12-01 'acc_x [g]'
+ * given with --columns alone was read as m/s^2 without a word. The names
+ * matched without --columns set their units themselves. */
+static void units_named_warn(hx_reader_t *r, char **f, int n)
+{
+    static const char *const what[3] = { "the time", "the accelerations", "the rates" };
+    static const char *const tu[4] = { "s", "ms", "us", "ns" };
+    const hx_csv_layout_t *l = &r->layout;
+    hx_csv_layout_t want = *l;
+    int k, col_first = -1, q_first = 0;
+    hx_name_unit_t u_first = HX_UNIT_NONE;
+    if (r->meta.format != HX_FMT_CSV || l->names_matched) {
+        return;
+    }
+    for (k = 0; k < 7; k++) {
+        const int col = k == 0 ? r->col_t : k <= 3 ? r->col_a[k - 1] : r->col_g[k - 4];
+        const int q = k == 0 ? 0 : k <= 3 ? 1 : 2;
+        hx_name_class_t c;
+        int differs;
+        if (col < 0 || col >= n || hx_name_classify(f[col], &c) != HX_NAME_MATCH || c.unit == HX_UNIT_NONE) {
+            continue;
+        }
+        if (q == 0) {
+            want.time_digits = c.unit == HX_UNIT_MS ? 6 : c.unit == HX_UNIT_US ? 3 : c.unit == HX_UNIT_NS ? 0 : 9;
+            differs = want.time_digits != l->time_digits;
+        } else if (q == 1) {
+            want.acc_scale = c.unit == HX_UNIT_G ? HX_G_MPS2 : c.unit == HX_UNIT_MG ? HX_MG_MPS2 : 1.0;
+            differs = want.acc_scale != l->acc_scale;
+        } else {
+            want.gyr_scale = c.unit == HX_UNIT_DPS ? HX_DPS_RPS : c.unit == HX_UNIT_MDPS ? HX_MDPS_RPS : 1.0;
+            differs = want.gyr_scale != l->gyr_scale;
+        }
+        if (differs && col_first < 0) {
+            col_first = col;
+            q_first = q;
+            u_first = c.unit;
+        }
+    }
+    if (col_first >= 0) {
+        char name[128], give[160];
+        const char *item = hx_name_unit_item(u_first), *in;
+        in = q_first == 0   ? tu[(9 - l->time_digits) / 3]
+             : q_first == 1 ? hx_accel_unit_name(l->acc_scale)
+             : l->gyr_scale == HX_DPS_RPS ? "deg/s"
+             : l->gyr_scale == HX_MDPS_RPS ? "mdps"
+                                           : "rad/s";
+        hx_name_bare(f[col_first], name, sizeof name);
+        (void)hx_units_give(&want, give, sizeof give);
+        add_warn(r, "%s:%ld: column %d ('%s') names %s, but %s %s read in %s (%s %s the column's unit)", r->path,
+                 r->stats.lines, col_first + 1, name, item != NULL ? strchr(item, '=') + 1 : "?", what[q_first],
+                 q_first == 0 ? "is" : "are", in, strncmp(give, "give ", 5) == 0 ? give + 5 : give,
+                 strncmp(give, "give ", 5) == 0 ? "reads" : "to read");
+    }
+}
+
 static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_required)
 {
-    char *f[HX_MAX_COLS], dc_first[64], matched[700] = "";
+    char *f[HX_MAX_COLS], dc_first[64], matched[1000] = "";
     const char *names[8];
     int n, i, rc, total, dc_line, tried = 0;
     static const char *const what[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
@@ -980,6 +1038,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         i = find_columns(r, names, f, n, time_required);
         if (i < 0) {
             dup_names_warn(r, names, f, n);
+            units_named_warn(r, f, n);
             return 0;
         }
         if (r->meta.format == HX_FMT_CSV && !tried && total <= HX_MAX_COLS && !dc_line && !all_numeric(f, n)) {
@@ -1013,18 +1072,27 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
                     news |= m.ncand[k] > 1 || m.nnear[k] > 0 ||
                             (m.ncand[k] == 1 && !hx_name_eq(f[m.cand[k][0]], k_csv_names[k]));
                 }
-                if (!m.excluded && six && news) {
-                    char give[700], miss[400];
+                if (!m.excluded && (six || m.unit_col >= 0) && news) {
+                    char give[700], miss[400], unit[300];
+                    size_t ul;
                     (void)hx_names_give(&m, f, give, sizeof give);
                     (void)hx_names_unmatched(&m, f, time_required, miss, sizeof miss);
+                    /* a name matched but for its unit says which (a unit
+                     * not read, "gx [deg/h]", or another quantity's; until
+                     * 2026-12-01 such a name was not mentioned) */
+                    snprintf(unit, sizeof unit, "; ");
+                    ul = strlen(unit);
+                    if (hx_names_unit_problem(&m, f, unit + ul, sizeof unit - ul)[0] == '\0') {
+                        unit[0] = '\0';
+                    }
                     if (m.ok) {
                         /* all but the time: the no-time path's rate */
                         snprintf(matched, sizeof matched,
-                                 "; names matched: %.400s; no time column%.150s: give the log's rate with "
+                                 "%.290s; names matched: %.400s; no time column%.150s: give the log's rate with "
                                  "--input-rate HZ, or its time column with --columns t=NAME too",
-                                 give, strncmp(miss, "t: none", 7) == 0 ? miss + 7 : "");
+                                 unit, give, strncmp(miss, "t: none", 7) == 0 ? miss + 7 : "");
                     } else if (give[0] != '\0' || miss[0] != '\0') {
-                        snprintf(matched, sizeof matched, "; names matched: %.400s; not matched: %.250s",
+                        snprintf(matched, sizeof matched, "%.290s; names matched: %.400s; not matched: %.250s", unit,
                                  give[0] != '\0' ? give : "none", miss[0] != '\0' ? miss : "none");
                     }
                 }
@@ -3322,10 +3390,16 @@ int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t 
 int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t err_size)
 {
     const char *p = spec;
-    char key[16], val[16];
+    char key[16], given[16], val[48];
     int seen = 0, rc;
-    while ((rc = next_item(&p, "--units", key, sizeof key, val, sizeof val, err, err_size)) > 0) {
+    while ((rc = next_item(&p, "--units", key, sizeof key, given, sizeof given, err, err_size)) > 0) {
         int k = strcmp(key, "time") == 0 ? 0 : strcmp(key, "accel") == 0 ? 1 : strcmp(key, "gyro") == 0 ? 2 : -1;
+        /* the units' signs as the names read them: time=µs, accel=m/s²,
+         * gyro=°/s (unknown units until 2026-12-01); the errors quote the
+         * value as given */
+        if (hx_name_fold_units(given, val, sizeof val) != 0) {
+            snprintf(val, sizeof val, "?");
+        }
         if (k < 0) {
             snprintf(err, err_size, "--units: unknown quantity '%s' (time, accel or gyro)", key);
             return -1;
@@ -3342,7 +3416,7 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             for (i = 0; i < 4 && strcmp(val, tu[i]) != 0; i++) {
             }
             if (i == 4) {
-                snprintf(err, err_size, "--units: time=%s: the time unit is s, ms, us or ns", val);
+                snprintf(err, err_size, "--units: time=%s: the time unit is s, ms, us or ns (\xc2\xb5s: us)", given);
                 return -1;
             }
             l->time_digits = 9 - 3 * i;
@@ -3354,8 +3428,8 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             } else if (strcmp(val, "mg") == 0) {
                 l->acc_scale = HX_MG_MPS2; /* ST's SensorTile data log, AccX [mg] (the units review) */
             } else {
-                snprintf(err, err_size, "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, mps2), g or mg",
-                         val);
+                snprintf(err, err_size,
+                         "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, m/s\xc2\xb2, mps2), g or mg", given);
                 return -1;
             }
         } else {
@@ -3366,8 +3440,8 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             } else if (strcmp(val, "mdps") == 0 || strcmp(val, "mdeg/s") == 0) {
                 l->gyr_scale = HX_MDPS_RPS; /* ST's SensorTile data log, GyroX [mdps] (the units review) */
             } else {
-                snprintf(err, err_size, "--units: gyro=%s: the rate unit is rad/s, deg/s (dps) or mdps (mdeg/s)",
-                         val);
+                snprintf(err, err_size,
+                         "--units: gyro=%s: the rate unit is rad/s, deg/s (dps, \xc2\xb0/s) or mdps (mdeg/s)", given);
                 return -1;
             }
         }

@@ -92,6 +92,81 @@ static int is_sep(char c)
     return c == ' ' || c == '\t' || c == '_' || c == '-' || c == '.' || c == ':';
 }
 
+/* The number of bytes of the valid UTF-8 sequence at s (up to end), 0 when
+ * none starts there (a byte alone, as Latin-1 writes a character). */
+static size_t utf8_len(const unsigned char *s, const unsigned char *end)
+{
+    size_t n, i;
+    if (s[0] < 0x80) {
+        return 1;
+    }
+    n = (s[0] & 0xE0) == 0xC0 ? 2 : (s[0] & 0xF0) == 0xE0 ? 3 : (s[0] & 0xF8) == 0xF0 ? 4 : 0;
+    if (n == 0 || s[0] == 0xC0 || s[0] == 0xC1 || (size_t)(end - s) < n) {
+        return 0;
+    }
+    for (i = 1; i < n; i++) {
+        if ((s[i] & 0xC0) != 0x80) {
+            return 0;
+        }
+    }
+    return n;
+}
+
+/* text[0, len) into out (NUL-terminated) with the units' signs spelled in
+ * ASCII: the degree sign U+00B0 (and U+00BA, the ordinal indicator that
+ * keyboards give for it) "deg", the micro sign U+00B5 and the Greek mu
+ * U+03BC "u", superscript two U+00B2 "2"; in UTF-8, or as the one byte
+ * Latin-1 (Windows-1252) writes them, where it is no UTF-8 sequence's.
+ * Any other character is kept. -1 when out is too small. */
+static int fold_units(const char *text, size_t len, char *out, size_t size)
+{
+    const unsigned char *p = (const unsigned char *)text, *end = p + len;
+    size_t k = 0;
+    while (p < end) {
+        const size_t n = utf8_len(p, end);
+        unsigned int cp = 0x100; /* none of the signs */
+        const char *rep = NULL;
+        size_t i, take = n == 0 ? 1 : n;
+        if (n == 0) {
+            cp = p[0]; /* a Latin-1 byte */
+        } else if (n == 2) {
+            cp = ((unsigned int)(p[0] & 0x1F) << 6) | (unsigned int)(p[1] & 0x3F);
+        }
+        rep = cp == 0xB0 || cp == 0xBA ? "deg" : cp == 0xB5 || cp == 0x3BC ? "u" : cp == 0xB2 ? "2" : NULL;
+        if (rep == NULL) {
+            for (i = 0; i < take; i++) {
+                if (k + 1 >= size) {
+                    return -1;
+                }
+                out[k++] = (char)p[i];
+            }
+        } else {
+            for (i = 0; rep[i] != '\0'; i++) {
+                if (k + 1 >= size) {
+                    return -1;
+                }
+                out[k++] = rep[i];
+            }
+        }
+        p += take;
+    }
+    out[k] = '\0';
+    return 0;
+}
+
+int hx_name_fold_units(const char *text, char *out, size_t size)
+{
+    return fold_units(text, strlen(text), out, size);
+}
+
+/* a last word that is a unit, but none read (ug: a log in micro-g, deg/h):
+ * the name is then no other word's near miss, but one for its unit */
+static int unit_like(const char *w)
+{
+    static const char *const k_other[] = { "ug", "ng", "lsb", "counts", "rpm", "dph", NULL };
+    return strpbrk(w, "/^") != NULL || in_list(w, k_other);
+}
+
 /* the words of text[0, len): lower case, split at separators and at a
  * lower-to-upper case change; -1 when there are too many or too long */
 static int split_words(const char *text, size_t len, char w[NAME_MAX_TOK][NAME_TOK_LEN])
@@ -117,16 +192,44 @@ static int split_words(const char *text, size_t len, char w[NAME_MAX_TOK][NAME_T
     return n;
 }
 
+/* the unit of a name as its header spells it: the bracket's text between
+ * its blanks, or the last word's (after the last separator) */
+static void unit_text_of(const char *s, size_t len, char *out, size_t size)
+{
+    const char *open = NULL, *b, *e = s + len;
+    size_t i;
+    for (i = 0; i < len && open == NULL; i++) {
+        open = s[i] == '(' || s[i] == '[' ? s + i : NULL;
+    }
+    if (open != NULL) {
+        b = open + 1;
+        e = (const char *)memchr(b, *open == '(' ? ')' : ']', (size_t)(s + len - b));
+        e = e != NULL ? e : s + len;
+    } else {
+        for (b = e; b > s && !is_sep(b[-1]); b--) {
+        }
+    }
+    while (b < e && (*b == ' ' || *b == '\t')) {
+        b++;
+    }
+    while (e > b && (e[-1] == ' ' || e[-1] == '\t')) {
+        e--;
+    }
+    snprintf(out, size, "%.*s", (int)(e - b), b);
+}
+
 hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
 {
     char buf[128], w[NAME_MAX_TOK][NAME_TOK_LEN];
     const char *s = name, *open;
-    size_t len;
-    int n, i, q = -1, ax = -1, key = -1, time_word = 0;
+    size_t len, len0;
+    int n, i, q = -1, ax = -1, key = -1, time_word = 0, unread = 0;
     hx_name_unit_t unit = HX_UNIT_NONE;
     c->kind = HX_NAME_OTHER;
     c->key = -1;
     c->unit = HX_UNIT_NONE;
+    c->unit_unread = 0;
+    c->unit_text[0] = '\0';
     while (*s == ' ' || *s == '\t' || *s == '"' || *s == '\'') {
         s++;
     }
@@ -135,11 +238,13 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
                        s[len - 1] == '\r' || s[len - 1] == '\n')) {
         len--;
     }
-    if (len == 0 || len >= sizeof buf) {
+    len0 = len;
+    /* the units' signs in ASCII: "gx [°/s]" is "gx [deg/s]" (they made the
+     * name no match until 2026-12-01) */
+    if (len == 0 || len >= sizeof buf || fold_units(s, len, buf, sizeof buf) != 0) {
         return c->kind;
     }
-    memcpy(buf, s, len);
-    buf[len] = '\0';
+    len = strlen(buf);
     open = strpbrk(buf, "([");
     if (open != NULL) {
         /* "Gyro Z (deg/s)", "AccX [g]": the unit in brackets, nothing after */
@@ -153,25 +258,29 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
         for (p = open + 1; p < close; p++) {
             if (*p != ' ' && *p != '\t') {
                 if (k + 1 >= sizeof u) {
-                    return c->kind;
+                    break; /* longer than any unit read */
                 }
                 u[k++] = (char)tolower((unsigned char)*p);
             }
         }
         u[k] = '\0';
-        unit = unit_of(u);
-        if (unit == HX_UNIT_NONE) {
-            return c->kind; /* "(raw)", "[counts]": no unit we read */
-        }
+        unit = p == close ? unit_of(u) : HX_UNIT_NONE;
+        /* "(raw)", "[counts]", "[deg/h]": no unit we read (a key's name so
+         * is a near miss that says so; it was no name at all until
+         * 2026-12-01) */
+        unread = unit == HX_UNIT_NONE;
         len = (size_t)(open - buf);
     }
     n = split_words(buf, len, w);
     if (n <= 0) {
         return c->kind;
     }
-    if (unit == HX_UNIT_NONE && n >= 2 && unit_of(w[n - 1]) != HX_UNIT_NONE) {
+    if (open == NULL && n >= 2 && unit_of(w[n - 1]) != HX_UNIT_NONE) {
         /* the last word a unit: time_s, accX_mps2, gyro_x_dps */
         unit = unit_of(w[n - 1]);
+        n--;
+    } else if (open == NULL && n >= 2 && unit_like(w[n - 1])) {
+        unread = 1; /* ax_ug, gyro_z_deg/h */
         n--;
     }
     /* what the words are */
@@ -193,7 +302,11 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
         const int want = key == 0 ? 0 : key <= 3 ? 1 : 2;
         c->key = key;
         c->unit = unit;
-        c->kind = unit == HX_UNIT_NONE || unit_quantity(unit) == want ? HX_NAME_MATCH : HX_NAME_NEAR;
+        c->unit_unread = unread;
+        c->kind = !unread && (unit == HX_UNIT_NONE || unit_quantity(unit) == want) ? HX_NAME_MATCH : HX_NAME_NEAR;
+        if (unit != HX_UNIT_NONE || unread) {
+            unit_text_of(s, len0, c->unit_text, sizeof c->unit_text);
+        }
         return c->kind;
     }
     /* a near miss: a stem and an axis, or a time word, among other words
@@ -221,6 +334,10 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
     if (c->key >= 0) {
         c->kind = HX_NAME_NEAR;
         c->unit = unit;
+        c->unit_unread = unread;
+        if (unit != HX_UNIT_NONE || unread) {
+            unit_text_of(s, len0, c->unit_text, sizeof c->unit_text);
+        }
     }
     return c->kind;
 }
@@ -237,6 +354,7 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
 {
     int i, k;
     memset(m, 0, sizeof *m);
+    m->unit_col = -1;
     for (k = 0; k < 7; k++) {
         m->col[k] = -1;
     }
@@ -255,6 +373,16 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
             add_col(&m->ncand[c.key], m->cand[c.key], i);
         } else if (kind == HX_NAME_NEAR) {
             add_col(&m->nnear[c.key], m->near[c.key], i);
+        }
+    }
+    for (i = 0; i < n && m->unit_col < 0; i++) {
+        /* a key without a candidate that one name has but for its unit:
+         * the refusal names the unit (hx_names_unit_problem) */
+        hx_name_class_t c;
+        if (hx_name_classify(f[i], &c) == HX_NAME_NEAR && m->ncand[c.key] == 0 &&
+            (c.unit_unread ||
+             (c.unit != HX_UNIT_NONE && unit_quantity(c.unit) != (c.key == 0 ? 0 : c.key <= 3 ? 1 : 2)))) {
+            m->unit_col = i;
         }
     }
     m->ok = m->ncand[0] <= 1;
@@ -391,6 +519,33 @@ const char *hx_names_unmatched(const hx_names_match_t *m, char *const *f, int ti
             cat(buf, size, buf[0] != '\0' ? "; " : "");
             cat(buf, size, k == 1 ? "the accelerations name different units" : "the rates name different units");
         }
+    }
+    return buf;
+}
+
+const char *hx_names_unit_problem(const hx_names_match_t *m, char *const *f, char *buf, size_t size)
+{
+    /* the units read, as docs/log-format.md lists them */
+    static const char *const k_read[3] = { "s, ms, us or \xc2\xb5s, ns",
+                                           "m/s^2 or m/s2 or m/s\xc2\xb2 or mps2, g, mg",
+                                           "rad/s, deg/s or dps or \xc2\xb0/s, mdps or mdeg/s" };
+    static const char *const k_what[3] = { "a time", "an acceleration", "a rate" };
+    static const char *const k_unit_of[3] = { "a time unit", "an acceleration unit", "a rate unit" };
+    hx_name_class_t c;
+    char name[128];
+    int want;
+    buf[0] = '\0';
+    if (m->unit_col < 0 || hx_name_classify(f[m->unit_col], &c) != HX_NAME_NEAR || c.key < 0) {
+        return buf;
+    }
+    want = c.key == 0 ? 0 : c.key <= 3 ? 1 : 2;
+    hx_name_bare(f[m->unit_col], name, sizeof name);
+    if (c.unit_unread) {
+        snprintf(buf, size, "column %d ('%s') names a unit not read, '%s' (%s's: %s)", m->unit_col + 1, name,
+                 c.unit_text, k_what[want], k_read[want]);
+    } else {
+        snprintf(buf, size, "column %d ('%s') names %s, '%s', not %s's (%s)", m->unit_col + 1, name,
+                 k_unit_of[unit_quantity(c.unit)], c.unit_text, k_what[want], k_read[want]);
     }
     return buf;
 }

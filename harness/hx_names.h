@@ -25,10 +25,16 @@ typedef enum {
 typedef struct {
     hx_name_kind_t kind;
     int key;              /**< 0 t, 1..6 ax..gz (MATCH and NEAR), -1 none */
-    hx_name_unit_t unit;  /**< the unit named, HX_UNIT_NONE when none */
+    hx_name_unit_t unit;  /**< the unit named, HX_UNIT_NONE when none (or not read) */
+    int unit_unread;      /**< 1: a key's name (NEAR) whose unit is none read: "gx [deg/h]", "ax_ug" */
+    char unit_text[32];   /**< a key's name's unit as the header spells it ("°/s"), "" when none */
 } hx_name_class_t;
 
-/** Classify one header name. Split into lower-case words at blanks, '_',
+/** Classify one header name. The UTF-8 degree sign (U+00B0, and U+00BA,
+ *  its common stand-in), micro signs (U+00B5, U+03BC) and superscript two
+ *  (U+00B2), or those bytes alone as Latin-1 writes them, are read as
+ *  "deg", "u" and "2": "gx [°/s]" is "gx [deg/s]", "acc_x [m/s²]"
+ *  "acc_x [m/s2]". Split into lower-case words at blanks, '_',
  *  '-', '.', ':' and at a lower-to-upper case change (AccX: acc, x;
  *  accX_mps2: acc, x, mps2); a unit in brackets or parentheses, or as the
  *  last word, is taken out. The words left must be exactly a time name (t,
@@ -38,8 +44,17 @@ typedef struct {
  *  gyroscope, w, omega, angvel, angular velocity, angular rate, rotation
  *  rate, g (glued only: gx). A unit of another quantity, or any other word
  *  (FreeAcc_X's free, acc_x_lin's lin), makes it no match: a near miss when
- *  a stem and an axis (or a time word) are among the words. Returns kind. */
+ *  a stem and an axis (or a time word) are among the words. A unit in
+ *  brackets that is none of these, or a last word that is a unit but none
+ *  read (ug, ng, lsb, counts, rpm, dph, or with a '/' or '^': deg/h), makes
+ *  a key's name a near miss with unit_unread. Returns kind. */
 hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c);
+
+/** text with the units' signs spelled in ASCII, as hx_name_classify reads
+ *  them (° "deg", µ and μ "u", ² "2"; UTF-8 or the Latin-1 byte), into out:
+ *  "m/s²" is "m/s2", "°/s" "deg/s" (--units reads its values so). 0, or -1
+ *  when out is too small. */
+int hx_name_fold_units(const char *text, char *out, size_t size);
 
 /** A name as the header spells it, without the blanks, tabs, quotes and
  *  CR around it, into out (cut to size). */
@@ -56,6 +71,8 @@ typedef struct {
     int units_differ;   /**< 1 accel, 2 gyro: the three axes name different units */
     int excluded;       /**< 1: an Xsens export's name (SampleTimeFine, PacketCounter): not matched */
     hx_name_unit_t unit[3]; /**< the unit of time, accel, gyro the names give (NONE: not named) */
+    int unit_col;       /**< the first column named for a key with no candidate whose unit is not read or is
+                             another quantity's ("gx [deg/h]", "acc_x [s]"); -1 none (hx_names_unit_problem) */
 } hx_names_match_t;
 
 /** Match the n header fields f to the interchange keys. A header with
@@ -78,6 +95,12 @@ const char *hx_names_give(const hx_names_match_t *m, char *const *f, char *buf, 
  *  matched. time_required: say of a missing t too. Returns buf. */
 const char *hx_names_unmatched(const hx_names_match_t *m, char *const *f, int time_required, char *buf,
                                size_t size);
+
+/** What is wrong with the unit of m->unit_col, for a refusal: "column 5
+ *  ('gx [deg/h]') names a unit not read, 'deg/h' (a rate's: rad/s, ...)"
+ *  or "column 2 ('acc_x [s]') names a time unit, 's', not an
+ *  acceleration's (...)"; "" when unit_col < 0. Returns buf. */
+const char *hx_names_unit_problem(const hx_names_match_t *m, char *const *f, char *buf, size_t size);
 
 /** The near misses of every key, comma-separated (the first four, then
  *  "..."): the names a warning says were not read. "" when none. */

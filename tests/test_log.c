@@ -2759,7 +2759,6 @@ static void test_name_classify(void **state)
         { "x", HX_NAME_OTHER, -1, HX_UNIT_NONE },
         { "g", HX_NAME_OTHER, -1, HX_UNIT_NONE },
         { "temp", HX_NAME_OTHER, -1, HX_UNIT_NONE },
-        { "acc_x [counts]", HX_NAME_OTHER, -1, HX_UNIT_NONE },
         { "acc_x (g) 2", HX_NAME_OTHER, -1, HX_UNIT_NONE },
         { "", HX_NAME_OTHER, -1, HX_UNIT_NONE },
     };
@@ -2777,6 +2776,155 @@ static void test_name_classify(void **state)
         assert_int_equal(c.key, k[i].key);
         assert_int_equal(c.unit, k[i].unit);
     }
+}
+
+/* Units spelled in UTF-8 (the degree, micro and superscript-two signs) are
+ * their ASCII spellings; a unit not read makes the name a near miss that
+ * says so (unit_unread, unit_text as the header spells it). Until
+ * 2026-12-01 "gx [°/s]" and "acc_x [m/s²]" were no names at all, and a
+ * bracketed unit not read made a name no near miss either. */
+static void test_name_units_utf8(void **state)
+{
+    static const struct {
+        const char *name;
+        hx_name_kind_t kind;
+        int key;
+        hx_name_unit_t unit;
+        int unread;
+        const char *text; /* unit_text */
+    } k[] = {
+        /* U+00B0 DEGREE SIGN, U+00B5 MICRO SIGN, U+03BC GREEK SMALL MU, U+00B2 SUPERSCRIPT TWO */
+        { "gx [\xc2\xb0/s]", HX_NAME_MATCH, 4, HX_UNIT_DPS, 0, "\xc2\xb0/s" },
+        { "gyr_x(\xc2\xb0/s)", HX_NAME_MATCH, 4, HX_UNIT_DPS, 0, "\xc2\xb0/s" },
+        { "Gyro Z (\xc2\xb0 / s)", HX_NAME_MATCH, 6, HX_UNIT_DPS, 0, "\xc2\xb0 / s" },
+        { "gyro_y_\xc2\xb0/s", HX_NAME_MATCH, 5, HX_UNIT_DPS, 0, "\xc2\xb0/s" },
+        { "GyroX [m\xc2\xb0/s]", HX_NAME_MATCH, 4, HX_UNIT_MDPS, 0, "m\xc2\xb0/s" },
+        { "acc_x [m/s\xc2\xb2]", HX_NAME_MATCH, 1, HX_UNIT_MPS2, 0, "m/s\xc2\xb2" },
+        { "AccZ (m/s\xc2\xb2)", HX_NAME_MATCH, 3, HX_UNIT_MPS2, 0, "m/s\xc2\xb2" },
+        { "t [\xc2\xb5s]", HX_NAME_MATCH, 0, HX_UNIT_US, 0, "\xc2\xb5s" },
+        { "t [\xce\xbcs]", HX_NAME_MATCH, 0, HX_UNIT_US, 0, "\xce\xbcs" },
+        { "time_\xc2\xb5s", HX_NAME_MATCH, 0, HX_UNIT_US, 0, "\xc2\xb5s" },
+        /* Latin-1 / Windows-1252 bytes (a spreadsheet's export), not UTF-8 */
+        { "gx [\xb0/s]", HX_NAME_MATCH, 4, HX_UNIT_DPS, 0, "\xb0/s" },
+        { "acc_y [m/s\xb2]", HX_NAME_MATCH, 2, HX_UNIT_MPS2, 0, "m/s\xb2" },
+        /* the ASCII spellings keep their meaning, with their text */
+        { "gx [deg/s]", HX_NAME_MATCH, 4, HX_UNIT_DPS, 0, "deg/s" },
+        { "acc_x", HX_NAME_MATCH, 1, HX_UNIT_NONE, 0, "" },
+        /* a unit not read: a near miss that says so */
+        { "gx [\xc2\xb0/h]", HX_NAME_NEAR, 4, HX_UNIT_NONE, 1, "\xc2\xb0/h" },
+        { "ax_\xc2\xb5g", HX_NAME_NEAR, 1, HX_UNIT_NONE, 1, "\xc2\xb5g" },
+        { "ax_ug", HX_NAME_NEAR, 1, HX_UNIT_NONE, 1, "ug" },
+        { "acc_x [counts]", HX_NAME_NEAR, 1, HX_UNIT_NONE, 1, "counts" },
+        { "gyro_z_rad/h", HX_NAME_NEAR, 6, HX_UNIT_NONE, 1, "rad/h" },
+        { "time [\xc2\xb5h]", HX_NAME_NEAR, 0, HX_UNIT_NONE, 1, "\xc2\xb5h" },
+        /* another word than a unit: a near miss as before, no unit named */
+        { "acc_x_lin", HX_NAME_NEAR, 1, HX_UNIT_NONE, 0, "" },
+        /* no IMU name: nothing to say of its unit */
+        { "mag_x [\xc2\xb5T]", HX_NAME_OTHER, -1, HX_UNIT_NONE, 0, "" },
+        { "temp [\xc2\xb0" "C]", HX_NAME_OTHER, -1, HX_UNIT_NONE, 0, "" },
+        /* a UTF-8 character that is none of these stays itself */
+        { "acc_x [m/s\xe2\x81\xbb\xc2\xb2]", HX_NAME_NEAR, 1, HX_UNIT_NONE, 1, "m/s\xe2\x81\xbb\xc2\xb2" },
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof k / sizeof k[0]; i++) {
+        hx_name_class_t c;
+        const hx_name_kind_t kind = hx_name_classify(k[i].name, &c);
+        if (kind != k[i].kind || c.key != k[i].key || c.unit != k[i].unit || c.unit_unread != k[i].unread ||
+            strcmp(c.unit_text, k[i].text) != 0) {
+            print_error("%s: kind %d key %d unit %d unread %d '%s', expected %d %d %d %d '%s'\n", k[i].name,
+                        (int)kind, c.key, (int)c.unit, c.unit_unread, c.unit_text, (int)k[i].kind, k[i].key,
+                        (int)k[i].unit, k[i].unread, k[i].text);
+        }
+        assert_int_equal(kind, k[i].kind);
+        assert_int_equal(c.key, k[i].key);
+        assert_int_equal(c.unit, k[i].unit);
+        assert_int_equal(c.unit_unread, k[i].unread);
+        assert_string_equal(c.unit_text, k[i].text);
+    }
+}
+
+/* --units takes the UTF-8 spellings the names do: time=µs (U+00B5) or μs
+ * (U+03BC), accel=m/s² (U+00B2), gyro=°/s (U+00B0) or m°/s; until
+ * 2026-12-01 each was an unknown unit, exit 2. The error quotes the value
+ * as given. */
+static void test_units_option_utf8(void **state)
+{
+    static const struct {
+        const char *spec;
+        int time_digits;
+        double acc, gyr;
+    } k[] = {
+        { "time=\xc2\xb5s", 3, 1.0, 1.0 },
+        { "time=\xce\xbcs,accel=m/s\xc2\xb2", 3, 1.0, 1.0 },
+        { "gyro=\xc2\xb0/s", 9, 1.0, HX_DPS_RPS },
+        { "gyro=m\xc2\xb0/s,accel=g", 9, HX_G_MPS2, HX_MDPS_RPS },
+        { "gyro=deg/s", 9, 1.0, HX_DPS_RPS },
+    };
+    size_t i;
+    char err[256];
+    (void)state;
+    for (i = 0; i < sizeof k / sizeof k[0]; i++) {
+        hx_csv_layout_t l;
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, k[i].spec, err, sizeof err), 0);
+        assert_int_equal(l.time_digits, k[i].time_digits);
+        assert_true(l.acc_scale == k[i].acc);
+        assert_true(l.gyr_scale == k[i].gyr);
+    }
+    {
+        hx_csv_layout_t l;
+        hx_csv_layout_default(&l);
+        assert_int_equal(hx_csv_units_parse(&l, "gyro=\xc2\xb0/h", err, sizeof err), -1);
+        assert_non_null(strstr(err, "gyro=\xc2\xb0/h: the rate unit is"));
+    }
+}
+
+/* --columns names a column whose name states a unit other than the one
+ * --units (or its default) reads it in: warned, naming the column, the two
+ * units and the --units item that reads it so; the values are read as
+ * asked. Until 2026-12-01 'acc_x [g]' given with --columns alone was read
+ * as m/s^2 without a word. */
+static void test_columns_unit_warned(void **state)
+{
+    char p[512], err[1024];
+    hx_csv_layout_t l;
+    hx_reader_t *r;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "time [ms],acc_x [g],acc_y [g],acc_z [g],gx [\xc2\xb0/s],gy [\xc2\xb0/s],gz [\xc2\xb0/s]\n"
+                  "0,0,0,1,0,0,0\n"
+                  "10,0,0,1,0,0,0\n");
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l,
+                                          "t=time [ms],ax=acc_x [g],ay=acc_y [g],az=acc_z [g],gx=gx [\xc2\xb0/s],"
+                                          "gy=gy [\xc2\xb0/s],gz=gz [\xc2\xb0/s]",
+                                          err, sizeof err),
+                     0);
+    assert_int_equal(hx_csv_units_parse(&l, "time=ms,gyro=deg/s", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_non_null(r);
+    {
+        char want[1024];
+        snprintf(want, sizeof want,
+                 "%s:1: column 2 ('acc_x [g]') names g, but the accelerations are read in m/s2 (--units "
+                 "time=ms,accel=g,gyro=deg/s reads the column's unit)",
+                 p);
+        assert_non_null(strstr(hx_reader_warnings(r), want));
+        assert_null(strstr(hx_reader_warnings(r), "column 1 ("));   /* time in ms as named */
+        assert_null(strstr(hx_reader_warnings(r), "column 5 ("));   /* deg/s as named */
+        assert_null(strstr(hx_reader_warnings(r), "column 3 ("));   /* the first only */
+    }
+    hx_reader_close(r);
+    /* the units that agree: no warning */
+    assert_int_equal(hx_csv_units_parse(&l, "time=ms,accel=g,gyro=deg/s", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    assert_non_null(r);
+    assert_null(strstr(hx_reader_warnings(r), "names"));
+    hx_reader_close(r);
+    hx_reader_set_layout(NULL);
 }
 
 /* split a header at commas into f (the text is changed) */
@@ -2892,6 +3040,35 @@ static void test_names_match(void **state)
         assert_string_equal(hx_names_unmatched(&m, f, 1, miss, sizeof miss),
                             "t: none; the rates name different units");
         assert_true(m.excluded == 0);
+        /* a unit not read, and one of another quantity: the column, its
+         * name as spelled and the unit named (hx_names_unit_problem) */
+        snprintf(text, sizeof text, "t,ax,ay,az,gx [\xc2\xb0/h],gy [\xc2\xb0/h],gz [\xc2\xb0/h]");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 0);
+        assert_int_equal(m.unit_col, 4);
+        assert_string_equal(hx_names_unit_problem(&m, f, miss, sizeof miss),
+                            "column 5 ('gx [\xc2\xb0/h]') names a unit not read, '\xc2\xb0/h' (a rate's: rad/s, "
+                            "deg/s or dps or \xc2\xb0/s, mdps or mdeg/s)");
+        snprintf(text, sizeof text, "t,acc_x [s],acc_y [s],acc_z [s],gx,gy,gz");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 0);
+        assert_int_equal(m.unit_col, 1);
+        assert_string_equal(hx_names_unit_problem(&m, f, miss, sizeof miss),
+                            "column 2 ('acc_x [s]') names a time unit, 's', not an acceleration's (m/s^2 or m/s2 or "
+                            "m/s\xc2\xb2 or mps2, g, mg)");
+        /* a key with a candidate: its near misses' units are no problem */
+        snprintf(text, sizeof text, "t,ax,ay,az,gx,gy,gz,gx [counts]");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 1);
+        assert_int_equal(m.unit_col, -1);
+        assert_string_equal(hx_names_unit_problem(&m, f, miss, sizeof miss), "");
+        /* an Xsens export is not matched: no unit named either */
+        snprintf(text, sizeof text, "PacketCounter,acc_x [counts],Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 0);
+        assert_int_equal(m.excluded, 1);
+        assert_int_equal(m.unit_col, -1);
+        assert_string_equal(hx_names_unit_problem(&m, f, miss, sizeof miss), "");
     }
 }
 
@@ -3992,7 +4169,10 @@ int main(void)
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
         cmocka_unit_test(test_name_classify),
         cmocka_unit_test(test_names_match),
+        cmocka_unit_test(test_name_units_utf8),
+        cmocka_unit_test(test_units_option_utf8),
         cmocka_unit_test_teardown(test_csv_names, layout_reset),
+        cmocka_unit_test_teardown(test_columns_unit_warned, layout_reset),
         cmocka_unit_test(test_time_unit_rate),
     };
     return cmocka_run_group_tests_name("log", tests, setup_golden, NULL);

@@ -271,5 +271,62 @@ expect_exit 1 "replay --out - of head.csv" "$H" replay "$T/head.csv" --out -
 [ "$(cat "$T/out")" = "$(head -n 1 "$T/walk_traj.csv")" ] && pass "replay --out -: the header alone on standard output" \
     || fail "replay --out -: standard output holds '$(head -c 200 "$T/out")'"
 
+# --- a CSV header whose units are spelled in UTF-8 (docs/log-format.md,
+# "Names read without --columns"): the degree sign (U+00B0), the micro
+# signs (U+00B5, U+03BC) and superscript two (U+00B2) read as deg, u and 2.
+# Until 2026-12-01 'gx [°/s]', 'gyr_x(°/s)', 'acc_x [m/s²]' and 't [µs]'
+# matched no channel and the file was refused (header has no column 't'),
+# and a unit not read ('gx [°/h]', 'ax_µg') was not named.
+expect_exit 0 "the walk as CSV, for the units' headers" "$H" convert vectors/walk.bin "$T/u_walk.csv"
+head -n 401 "$T/u_walk.csv" >"$T/u_ref.csv"
+u_hdr() { # FILE HEADER TIME-SCALE GYRO-SCALE: the walk's first 400 samples under HEADER, time and rates multiplied
+    { printf '%s\n' "$2"
+      awk -F, -v ts="$3" -v gs="$4" 'NR > 1 && NR <= 401 {
+          printf "%.17g,%s,%s,%s,%.17g,%.17g,%.17g\n", $1 * ts, $2, $3, $4, $5 * gs, $6 * gs, $7 * gs }' "$T/u_walk.csv"
+    } >"$1"
+}
+DPS=$(awk 'BEGIN { printf "%.17g", 180 / atan2(0, -1) }')
+u_hdr "$T/u_deg.csv" 'time [s],acc_x [m/s²],acc_y [m/s²],acc_z [m/s²],gx [°/s],gy [°/s],gz [°/s]' 1 "$DPS"
+u_hdr "$T/u_par.csv" 'Time (µs),AccX (m/s²),AccY (m/s²),AccZ (m/s²),gyr_x(°/s),gyr_y(°/s),gyr_z(°/s)' 1000000 "$DPS"
+u_hdr "$T/u_mu.csv" 'time_μs,acc_x,acc_y,acc_z,gyro_x_°/s,gyro_y_°/s,gyro_z_°/s' 1000000 "$DPS"
+for f in u_deg u_par u_mu; do
+    expect_exit 0 "info $f.csv (UTF-8 units)" "$H" info "$T/$f.csv"
+    expect_err "header read as --columns .* --units .*gyro=deg/s" "info $f.csv: the header read, the rates in deg/s"
+    expect_exit 0 "convert $f.csv" "$H" convert "$T/$f.csv" "$T/$f.out.csv"
+    if cmp -s "$T/u_ref.csv" "$T/$f.out.csv"; then pass "$f.csv: the walk's samples, to the float32"
+    else fail "$f.csv: read otherwise than the walk's CSV"; fi
+done
+expect_err "--units time=us,gyro=deg/s" "u_mu.csv: the Greek mu read as micro"
+# --units takes the same spellings (time=µs, gyro=°/s: unknown units, exit 2, until 2026-12-01)
+expect_exit 0 "convert with --units time=µs,accel=m/s²,gyro=°/s" "$H" convert "$T/u_par.csv" "$T/u_opt.csv" \
+    --columns 't=Time (µs),ax=AccX (m/s²),ay=AccY (m/s²),az=AccZ (m/s²),gx=gyr_x(°/s),gy=gyr_y(°/s),gz=gyr_z(°/s)' \
+    --units time=µs,accel=m/s²,gyro=°/s
+if cmp -s "$T/u_ref.csv" "$T/u_opt.csv"; then pass "--units in UTF-8: the walk's samples"
+else fail "--units in UTF-8: read otherwise than the walk's CSV"; fi
+expect_exit 2 "--units gyro=°/h" "$H" info "$T/u_par.csv" --units gyro=°/h
+expect_err "gyro=°/h: the rate unit is rad/s, deg/s (dps, °/s) or mdps" "--units gyro=°/h: refused, the value as given"
+# --columns alone on names that state their units: read in SI units as
+# asked, with a warning naming the column and the --units that reads them
+# (read without a word until 2026-12-01)
+expect_exit 0 "convert with --columns alone over UTF-8 units" "$H" convert "$T/u_deg.csv" "$T/u_col.csv" \
+    --columns 't=time [s],ax=acc_x [m/s²],ay=acc_y [m/s²],az=acc_z [m/s²],gx=gx [°/s],gy=gy [°/s],gz=gz [°/s]'
+expect_err "u_deg.csv:1: column 5 ('gx \[°/s\]') names deg/s, but the rates are read in rad/s (--units gyro=deg/s reads the column's unit)" \
+    "--columns alone: the unit the name states and the --units that reads it"
+expect_exit 0 "the same with --units gyro=°/s" "$H" convert "$T/u_deg.csv" "$T/u_col.csv" --units gyro=°/s \
+    --columns 't=time [s],ax=acc_x [m/s²],ay=acc_y [m/s²],az=acc_z [m/s²],gx=gx [°/s],gy=gy [°/s],gz=gz [°/s]'
+if grep -q "names" "$T/err"; then fail "--columns with the named units: warned ($(cat "$T/err"))"
+else pass "--columns with the named units: no warning"; fi
+cmp -s "$T/u_ref.csv" "$T/u_col.csv" && pass "--columns with the named units: the walk's samples" \
+    || fail "--columns with the named units: read otherwise than the walk's CSV"
+# a unit not read: refused, the column, its name and the unit named
+u_hdr "$T/u_degh.csv" 't,ax,ay,az,gx [°/h],gy [°/h],gz [°/h]' 1 1
+expect_exit 1 "info of gx [°/h]" "$H" info "$T/u_degh.csv"
+expect_err "u_degh.csv:1: header has no column 'gx'.*column 5 ('gx \[°/h\]') names a unit not read, '°/h' (a rate's: rad/s, deg/s" \
+    "a rate unit not read: the column and the unit named"
+u_hdr "$T/u_ug.csv" 'time,ax_µg,ay_µg,az_µg,gx,gy,gz' 1 1
+expect_exit 1 "info of ax_µg" "$H" info "$T/u_ug.csv"
+expect_err "column 2 ('ax_µg') names a unit not read, 'µg' (an acceleration's: m/s^2 or m/s2 or m/s² or mps2, g, mg)" \
+    "micro-g (no unit read): the column and the unit named"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
