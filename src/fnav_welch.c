@@ -45,7 +45,11 @@ fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
         /* periodic: L = N (DFT-even, scipy get_window); symmetric: L = N - 1 */
         const uint32_t L = c->symmetric ? c->nfft - 1u : c->nfft;
         fnav_real_t cph, sph, c1, s1i;
-        fnav_fft_cos_sin_2pi(i, L, &cph, &sph);
+        /* L >= 7 and nfft >= 8 here: FNAV_OK */
+        if (fnav_fft_cos_sin_2pi(i, L, &cph, &sph) != FNAV_OK ||
+            fnav_fft_cos_sin_2pi(i, c->nfft, &c1, &s1i) != FNAV_OK) {
+            return FNAV_E_CONFIG;
+        }
         switch (c->window) {
         case FNAV_WINDOW_HAMMING: w->win[i] = FNAV_R(0.54) - FNAV_R(0.46) * cph; break;
         case FNAV_WINDOW_HANN: w->win[i] = FNAV_R(0.5) - FNAV_R(0.5) * cph; break;
@@ -54,7 +58,6 @@ fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
         kahan_add(&s1, &s1c, w->win[i]);
         kahan_add(&s2, &s2c, w->win[i] * w->win[i]);
         /* W_1 = sum w_n e^(-2 pi i n / N) */
-        fnav_fft_cos_sin_2pi(i, c->nfft, &c1, &s1i);
         kahan_add(&w1r, &w1rc, w->win[i] * c1);
         kahan_add(&w1i, &w1ic, -(w->win[i] * s1i));
     }
@@ -106,7 +109,9 @@ static void segment(fnav_welch_t *w)
         re[i] = ((v0 - x0) - (a + b * i0)) * w->win[(size_t)2u * i];
         im[i] = ((v1 - x0) - (a + b * (i0 + FNAV_R(1.0)))) * w->win[(size_t)2u * i + 1u];
     }
-    fnav_fft_real_packed(&w->fft, re, im);
+    if (fnav_fft_real_packed(&w->fft, re, im) != FNAV_OK) {
+        return; /* never: the table is the one fnav_welch_init made */
+    }
     if (w->cfg.detrend == FNAV_DETREND_GLOBAL) {
         /* compensated: global_fix subtracts terms of the size of these sums */
         kahan_add(&w->x0, &w->x0c, re[0]);
