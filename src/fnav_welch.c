@@ -315,8 +315,13 @@ fnav_status_t fnav_welch_bandwidth(const fnav_real_t *psd, size_t n, fnav_real_t
         !(c->threshold <= FNAV_R(1.0)) || !(c->round_hz >= FNAV_R(0.0)) || !fnav_isfinite(c->round_hz)) {
         return FNAV_E_ARG;
     }
-    for (k = k0; k < n; k++) {
-        kahan_add(&total, &comp, psd[k] * df_hz); /* power in bin k: P_k df (Parseval) */
+    for (k = 0; k < n; k++) {
+        if (!(psd[k] >= FNAV_R(0.0))) {
+            return FNAV_E_RANGE; /* a density is never negative (nor NaN), bin 0 included */
+        }
+        if (k >= k0) {
+            kahan_add(&total, &comp, psd[k] * df_hz); /* power in bin k: P_k df (Parseval) */
+        }
     }
     total -= comp;
     if (!(total > FNAV_R(0.0)) || !fnav_isfinite(total)) {

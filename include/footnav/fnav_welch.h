@@ -177,7 +177,9 @@ typedef struct {
  *              fraction 1 - C(f) at the upper edge of each bin
  * @return FNAV_OK; FNAV_E_ARG for NULL / n < 2 / df <= 0 / a threshold
  *         outside (0, 1] / round_hz < 0 or not finite;
- *         FNAV_E_RANGE when the total power is not positive and finite.
+ *         FNAV_E_RANGE when a bin is negative or NaN (bin 0 too when
+ *         exclude_dc leaves it out) or the total power is not positive and
+ *         finite; nothing is written then.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_bandwidth(const fnav_real_t *psd, size_t n, fnav_real_t df_hz,
                                                     const fnav_bandwidth_config_t *cfg, fnav_bandwidth_t *out,
