@@ -21,6 +21,7 @@ static inline void kahan_add(fnav_real_t *s, fnav_real_t *c, fnav_real_t v)
 fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
 {
     const fnav_welch_config_t *c = cfg != NULL ? cfg : &fnav_welch_config_default;
+    fnav_welch_config_t cc;
     uint32_t i;
     /* compensated sums in fnav_real_t (Kahan): double ones were soft-float
      * calls on the Cortex-M4F, 1.9 KB of flash for this one init (test_psd.sh) */
@@ -36,8 +37,12 @@ fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
         !(c->rate_hz > FNAV_R(0.0)) || !fnav_isfinite(c->rate_hz) || !(fnav_fabs(c->offset) <= (fnav_real_t)FNAV_INPUT_MAX_ABS)) {
         return FNAV_E_CONFIG;
     }
+    /* through a copy: cfg may be w's own (a reset, fnav_welch_init(&w,
+     * &w.cfg)), which the memset clears; c then reads the one kept in w */
+    cc = *c;
     memset(w, 0, sizeof *w);
-    w->cfg = *c;
+    w->cfg = cc;
+    c = &w->cfg;
     if (fnav_fft_init(&w->fft, c->nfft) != FNAV_OK) {
         return FNAV_E_CONFIG;
     }

@@ -735,6 +735,48 @@ static void test_not_initialised(void **state)
     assert_memory_equal(&w, &copy, sizeof w);
 }
 
+/* Re-initialising with the estimator's own configuration (a reset,
+ * fnav_welch_init(&w, &w.cfg); a review, 2026-12-01): init cleared the
+ * estimator, configuration included, before it read the configuration's
+ * nfft again, so it returned FNAV_E_CONFIG and left the estimator zeroed
+ * (every push then FNAV_E_STATE), where fnav_welch.h says a failed init
+ * leaves it as it was. It must reset it: no segment, the same
+ * configuration, and the same spectrum as a fresh estimator after the same
+ * samples. */
+static void test_reinit_own_config(void **state)
+{
+    static fnav_welch_t w, fresh;
+    static fnav_real_t pw[FNAV_WELCH_MAX_BINS], pf[FNAV_WELCH_MAX_BINS];
+    fnav_welch_config_t c = fnav_welch_config_default;
+    uint32_t k;
+    int i;
+    (void)state;
+    c.nfft = 128u;
+    c.overlap = 96u;
+    c.window = FNAV_WINDOW_HANN;
+    c.detrend = FNAV_DETREND_GLOBAL;
+    c.rate_hz = FNAV_R(250.0);
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_OK);
+    for (i = 0; i < 700; i++) {
+        assert_int_equal(fnav_welch_push(&w, (fnav_real_t)(3.0 + sin(0.7 * i))), FNAV_OK);
+    }
+    assert_true(fnav_welch_segments(&w) > 0u);
+    assert_int_equal(fnav_welch_init(&w, &w.cfg), FNAV_OK);
+    assert_memory_equal(&w.cfg, &c, sizeof c);
+    assert_int_equal(fnav_welch_segments(&w), 0);
+    assert_int_equal(fnav_welch_init(&fresh, &c), FNAV_OK);
+    for (i = 0; i < 500; i++) {
+        const fnav_real_t v = (fnav_real_t)(0.5 * cos(0.31 * i) + 0.01 * (i % 11));
+        assert_int_equal(fnav_welch_push(&w, v), FNAV_OK);
+        assert_int_equal(fnav_welch_push(&fresh, v), FNAV_OK);
+    }
+    assert_int_equal(fnav_welch_get(&w, pw, FNAV_WELCH_MAX_BINS), FNAV_OK);
+    assert_int_equal(fnav_welch_get(&fresh, pf, FNAV_WELCH_MAX_BINS), FNAV_OK);
+    for (k = 0; k < fnav_welch_bins(&w); k++) {
+        assert_true(pw[k] == pf[k]); /* the same arithmetic on the same samples */
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -750,6 +792,7 @@ int main(void)
         cmocka_unit_test(test_global_long_offset_start),
         cmocka_unit_test(test_sample_count_end),
         cmocka_unit_test(test_not_initialised),
+        cmocka_unit_test(test_reinit_own_config),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -98,7 +98,8 @@ typedef struct {
 /**
  * Initialise.
  * @param w    estimator (caller-owned)
- * @param cfg  configuration, or NULL for fnav_welch_config_default
+ * @param cfg  configuration, or NULL for fnav_welch_config_default; may be
+ *             w's own (&w->cfg: a reset with the same settings)
  * @return FNAV_OK; FNAV_E_ARG for NULL w; FNAV_E_CONFIG for a bad nfft,
  *         overlap >= nfft, unknown window/detrend/scaling, a rate not
  *         positive and finite, an offset not finite or beyond
