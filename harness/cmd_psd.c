@@ -276,12 +276,12 @@ static void print_result(const char *title, const result_t *r, const fnav_bandwi
             snprintf(of, sizeof of, " of %.4g Hz, the log's rate", bound_hz);
         }
         snprintf(lower, sizeof lower,
-                 ", only a lower bound%s (%.0f %% of the power reaches %.1f Hz, %.0f %% of the Nyquist frequency: "
+                 ", only a lower bound%s (%g %% of the power reaches %.1f Hz, %.0f %% of the Nyquist frequency: "
                  "the log cannot show where the band ends)",
                  of, 100.0 * (double)bc->threshold, widest_band(r), 100.0 * widest_band(r) / (0.5 * rate));
     }
     /* a tie is said as one: on a static log both groups reach the Nyquist frequency alike */
-    printf("  lowest usable sampling frequency: %.*f Hz (%s; %.0f %% of the power, %s)%s%s\n", dec,
+    printf("  lowest usable sampling frequency: %.*f Hz (%s; %g %% of the power, %s)%s%s\n", dec,
            r->overall_fs,
            r->group_fs[0] > r->group_fs[1]   ? "the accelerometers limit it"
            : r->group_fs[0] < r->group_fs[1] ? "the gyroscopes limit it"
@@ -453,7 +453,7 @@ static int plot_ccdf(const char *dir, const result_t *r, const char *src, const 
     if (hx_plot_open(&p, CMD, path, 900, 700) != 0) {
         return -1;
     }
-    fprintf(p.gp, "set multiplot layout 2,1 title 'CCDF of the power (threshold %.0f %%): %s'\n",
+    fprintf(p.gp, "set multiplot layout 2,1 title 'CCDF of the power (threshold %g %%): %s'\n",
             100.0 * (double)bc->threshold, src);
     fprintf(p.gp, "set xlabel 'frequency [Hz]'\nset ylabel '1 - cumulative power fraction'\nset logscale y\n"
                   "set format y '%%g'\nset yrange [%.6g:1]\n",
@@ -870,7 +870,7 @@ int hx_cmd_psd(int argc, char **argv)
         }
         snprintf(title, sizeof title,
                  "Welch: %s window of %u samples%s, overlap %u, dc %s, %u segments, resolution %.3g Hz\n"
-                 "Criterion (paper II.B): per axis, the band from 0 Hz holding %.0f %% of the total power of the "
+                 "Criterion (paper II.B): per axis, the band from 0 Hz holding %g %% of the total power of the "
                  "one-sided PSD of the channel as logged (sensor axes);\n"
                  "  DC: %s;\n"
                  "  sampling frequency = 2 x band, %s; a group needs its widest axis",
@@ -904,7 +904,7 @@ int hx_cmd_psd(int argc, char **argv)
          * at the top of what the log can show (a static log: white sensor
          * noise to the Nyquist frequency; the answer is then the log's rate by
          * construction, not a property of the motion) */
-        hx_warn(CMD, "%.0f %% of the power reaches %.1f Hz, %.0f %% of the Nyquist frequency %.4g Hz: the power does "
+        hx_warn(CMD, "%g %% of the power reaches %.1f Hz, %.0f %% of the Nyquist frequency %.4g Hz: the power does "
                      "not fall off inside this log's band (white sensor noise does this, e.g. a static log, which "
                      "measures the sensor, not motion), so the log cannot show where the band ends; read %.*f Hz as "
                      "a lower bound set by the log's rate, not a measured requirement",
@@ -915,7 +915,7 @@ int hx_cmd_psd(int argc, char **argv)
          * log): the band itself ends well inside the log's (this said it was
          * "near the Nyquist frequency" for a 115 Hz band of a 1000 Hz log) */
         hx_warn(CMD, "the answer (%.*f Hz) is above the log's own rate (%.4g Hz) only through the rounding to "
-                     "multiples of %g Hz: %.0f %% of the power lies below %.1f Hz, %.0f %% of the Nyquist frequency, "
+                     "multiples of %g Hz: %g %% of the power lies below %.1f Hz, %.0f %% of the Nyquist frequency, "
                      "and 2 x that is %.1f Hz (--round 0 gives it)",
                 fs_decimals(&bc), res.overall_fs, rate, (double)bc.round_hz, 100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate),
                 2.0 * bw_max);
@@ -923,7 +923,7 @@ int hx_cmd_psd(int argc, char **argv)
         /* 2 x bandwidth never exceeds the rate; the rounding up did. The band
          * reaches the Nyquist frequency (a static log's noise is white up to
          * it), so the log cannot show where the signal ends. */
-        hx_warn(CMD, "the answer (%.*f Hz) is above the log's own rate (%.4g Hz): %.0f %% of the power reaches "
+        hx_warn(CMD, "the answer (%.*f Hz) is above the log's own rate (%.4g Hz): %g %% of the power reaches "
                      "%.1f Hz, near the Nyquist frequency %.4g Hz, so this log cannot show where the band ends; "
                      "read it as 'at least %.4g Hz' (or give --round 0)",
                 fs_decimals(&bc), res.overall_fs, rate, 100.0 * thr, bw_max, 0.5 * rate, rate);

@@ -89,6 +89,13 @@ expect_out "accelerometers: bandwidth 115.4 Hz -> $F Hz" "--round 2.5: the group
 expect_out_re "^  ax +[0-9.e+-]+ +115\.4 +230\.9 +$F\$" "--round 2.5: the table's fs_Hz column a multiple of the step"
 expect_exit 0 "tone, --round 0 (table)" "$H" psd "$T/tone.csv" --round 0
 expect_out_re "^  ax +[0-9.e+-]+ +115\.4 +230\.9 +230\.9\$" "--round 0: the table's fs_Hz column is 2 x the band, to 0.1 Hz"
+# a threshold that is no whole percentage: --threshold 0.995 was printed to the percent, "holding 100 % of the total
+# power" and "100 % of the power" (the spectral-path review, 2026-12-01): the threshold is said as given
+expect_exit 0 "tone, --threshold 0.995" "$H" psd "$T/tone.csv" --threshold 0.995
+expect_out "the band from 0 Hz holding 99.5 % of the total power" "--threshold 0.995: the criterion says 99.5 %"
+expect_out_re "^  lowest usable sampling frequency: [0-9]+ Hz \(accelerometers and gyroscopes alike; 99\.5 % of the power, multiples of 50 Hz\)" \
+    "--threshold 0.995: the answer line says 99.5 %"
+! grep -q "100 %" "$T/out" && pass "--threshold 0.995: no '100 %'" || fail "--threshold 0.995: '100 %' printed"
 # every channel constant: no band anywhere, so no answer (it printed 'lowest usable sampling frequency: 0 Hz' with
 # fs_hz 0 and exit 0); the tables are still written and the JSON's answer is null
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3f,0.1,0.2,9.81,0.01,0,0\n", i / 1000.0 }' \
