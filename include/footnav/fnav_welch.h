@@ -136,8 +136,9 @@ fnav_real_t fnav_welch_freq(const fnav_welch_t *w, uint32_t k);
  * The averaged one-sided spectrum.
  * @param out   fnav_welch_bins(w) entries
  * @param n_out capacity of out
- * @return FNAV_OK; FNAV_E_SIZE when n_out is too small; FNAV_E_STATE before
- *         the first segment.
+ * @return FNAV_OK; FNAV_E_ARG for NULL w or out; FNAV_E_SIZE when n_out is
+ *         too small; FNAV_E_STATE before the first segment (or for an
+ *         estimator never initialised). Nothing is written unless FNAV_OK.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_get(const fnav_welch_t *w, fnav_real_t *out, size_t n_out);
 
