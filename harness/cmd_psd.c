@@ -103,6 +103,26 @@ static void dc_text(int mode, double df, char *buf, size_t n)
  * cannot show where the band ends. */
 #define NYQ_FRAC 0.9
 
+/* Decimals that print a sampling frequency as the rule gives it: those of
+ * the rounding step (50 Hz: 0; 2.5 Hz: 1; up to 6), 1 when not rounded.
+ * A rounded answer printed to the hertz read 232 Hz for 232.5 Hz with
+ * --round 2.5: no multiple of the step, and below the answer. */
+static int fs_decimals(const fnav_bandwidth_config_t *bc)
+{
+    double step = (double)bc->round_hz;
+    int d;
+    if (!(step > 0.0)) {
+        return 1;
+    }
+    for (d = 0; d < 6; d++) {
+        if (fabs(step - nearbyint(step)) <= 1e-6 * step) {
+            return d;
+        }
+        step *= 10.0;
+    }
+    return 6;
+}
+
 static int parse_dc(const char *s, setting_t *st)
 {
     int i;
@@ -215,7 +235,7 @@ static int fs_lower_bound(const result_t *r, double rate, double *bound_hz)
 static void print_result(const char *title, const result_t *r, const fnav_bandwidth_config_t *bc, double rate,
                          int paper_dc)
 {
-    const int rounded = bc->round_hz > FNAV_R(0.0);
+    const int rounded = bc->round_hz > FNAV_R(0.0), dec = fs_decimals(bc);
     char lower[256] = "";
     double bound_hz;
     char rnd[64];
@@ -233,8 +253,8 @@ static void print_result(const char *title, const result_t *r, const fnav_bandwi
             printf("  %-5s %14s\n", k_ch[c], "no power");
             continue;
         }
-        printf("  %-5s %14.6g %12.1f %10.1f %10.0f\n", k_ch[c], (double)r->bw[c].total, (double)r->bw[c].bandwidth_hz,
-               (double)r->bw[c].fs_hz, (double)r->bw[c].fs_rounded_hz);
+        printf("  %-5s %14.6g %12.1f %10.1f %10.*f\n", k_ch[c], (double)r->bw[c].total, (double)r->bw[c].bandwidth_hz,
+               (double)r->bw[c].fs_hz, dec, (double)r->bw[c].fs_rounded_hz);
     }
     /* a group without power on any axis has no band: it said "bandwidth 0.0 Hz -> 0 Hz" */
     for (g = 0; g < 2; g++) {
@@ -243,7 +263,7 @@ static void print_result(const char *title, const result_t *r, const fnav_bandwi
             none++;
         } else {
             printf("  %-15s bandwidth %.1f Hz -> %.*f Hz\n", g == 0 ? "accelerometers:" : "gyroscopes:",
-                   r->group_bw[g], rounded ? 0 : 1, r->group_fs[g]);
+                   r->group_bw[g], dec, r->group_fs[g]);
         }
     }
     if (none == 2) {
@@ -256,12 +276,12 @@ static void print_result(const char *title, const result_t *r, const fnav_bandwi
             snprintf(of, sizeof of, " of %.4g Hz, the log's rate", bound_hz);
         }
         snprintf(lower, sizeof lower,
-                 ", only a lower bound%s (%.0f %% of the power reaches %.1f Hz, %.0f %% of the Nyquist frequency: "
+                 ", only a lower bound%s (%g %% of the power reaches %.1f Hz, %.0f %% of the Nyquist frequency: "
                  "the log cannot show where the band ends)",
                  of, 100.0 * (double)bc->threshold, widest_band(r), 100.0 * widest_band(r) / (0.5 * rate));
     }
     /* a tie is said as one: on a static log both groups reach the Nyquist frequency alike */
-    printf("  lowest usable sampling frequency: %.*f Hz (%s; %.0f %% of the power, %s)%s%s\n", rounded ? 0 : 1,
+    printf("  lowest usable sampling frequency: %.*f Hz (%s; %g %% of the power, %s)%s%s\n", dec,
            r->overall_fs,
            r->group_fs[0] > r->group_fs[1]   ? "the accelerometers limit it"
            : r->group_fs[0] < r->group_fs[1] ? "the gyroscopes limit it"
@@ -433,7 +453,7 @@ static int plot_ccdf(const char *dir, const result_t *r, const char *src, const 
     if (hx_plot_open(&p, CMD, path, 900, 700) != 0) {
         return -1;
     }
-    fprintf(p.gp, "set multiplot layout 2,1 title 'CCDF of the power (threshold %.0f %%): %s'\n",
+    fprintf(p.gp, "set multiplot layout 2,1 title 'CCDF of the power (threshold %g %%): %s'\n",
             100.0 * (double)bc->threshold, src);
     fprintf(p.gp, "set xlabel 'frequency [Hz]'\nset ylabel '1 - cumulative power fraction'\nset logscale y\n"
                   "set format y '%%g'\nset yrange [%.6g:1]\n",
@@ -850,7 +870,7 @@ int hx_cmd_psd(int argc, char **argv)
         }
         snprintf(title, sizeof title,
                  "Welch: %s window of %u samples%s, overlap %u, dc %s, %u segments, resolution %.3g Hz\n"
-                 "Criterion (paper II.B): per axis, the band from 0 Hz holding %.0f %% of the total power of the "
+                 "Criterion (paper II.B): per axis, the band from 0 Hz holding %g %% of the total power of the "
                  "one-sided PSD of the channel as logged (sensor axes);\n"
                  "  DC: %s;\n"
                  "  sampling frequency = 2 x band, %s; a group needs its widest axis",
@@ -884,29 +904,29 @@ int hx_cmd_psd(int argc, char **argv)
          * at the top of what the log can show (a static log: white sensor
          * noise to the Nyquist frequency; the answer is then the log's rate by
          * construction, not a property of the motion) */
-        hx_warn(CMD, "%.0f %% of the power reaches %.1f Hz, %.0f %% of the Nyquist frequency %.4g Hz: the power does "
+        hx_warn(CMD, "%g %% of the power reaches %.1f Hz, %.0f %% of the Nyquist frequency %.4g Hz: the power does "
                      "not fall off inside this log's band (white sensor noise does this, e.g. a static log, which "
-                     "measures the sensor, not motion), so the log cannot show where the band ends; read %.0f Hz as "
+                     "measures the sensor, not motion), so the log cannot show where the band ends; read %.*f Hz as "
                      "a lower bound set by the log's rate, not a measured requirement",
-                100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate), 0.5 * rate, res.overall_fs);
+                100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate), 0.5 * rate, fs_decimals(&bc), res.overall_fs);
     }
     if (above_rate && bw_max < NYQ_FRAC * 0.5 * rate) {
         /* the rounding step alone (--round above the rate, or a low-rate
          * log): the band itself ends well inside the log's (this said it was
          * "near the Nyquist frequency" for a 115 Hz band of a 1000 Hz log) */
-        hx_warn(CMD, "the answer (%.0f Hz) is above the log's own rate (%.4g Hz) only through the rounding to "
-                     "multiples of %g Hz: %.0f %% of the power lies below %.1f Hz, %.0f %% of the Nyquist frequency, "
+        hx_warn(CMD, "the answer (%.*f Hz) is above the log's own rate (%.4g Hz) only through the rounding to "
+                     "multiples of %g Hz: %g %% of the power lies below %.1f Hz, %.0f %% of the Nyquist frequency, "
                      "and 2 x that is %.1f Hz (--round 0 gives it)",
-                res.overall_fs, rate, (double)bc.round_hz, 100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate),
+                fs_decimals(&bc), res.overall_fs, rate, (double)bc.round_hz, 100.0 * thr, bw_max, 100.0 * bw_max / (0.5 * rate),
                 2.0 * bw_max);
     } else if (above_rate) {
         /* 2 x bandwidth never exceeds the rate; the rounding up did. The band
          * reaches the Nyquist frequency (a static log's noise is white up to
          * it), so the log cannot show where the signal ends. */
-        hx_warn(CMD, "the answer (%.0f Hz) is above the log's own rate (%.4g Hz): %.0f %% of the power reaches "
+        hx_warn(CMD, "the answer (%.*f Hz) is above the log's own rate (%.4g Hz): %g %% of the power reaches "
                      "%.1f Hz, near the Nyquist frequency %.4g Hz, so this log cannot show where the band ends; "
                      "read it as 'at least %.4g Hz' (or give --round 0)",
-                res.overall_fs, rate, 100.0 * thr, bw_max, 0.5 * rate, rate);
+                fs_decimals(&bc), res.overall_fs, rate, 100.0 * thr, bw_max, 0.5 * rate, rate);
     }
 
     memset(have, 0, sizeof have);
@@ -945,14 +965,14 @@ int hx_cmd_psd(int argc, char **argv)
                     for (g = 0; g < 2; g++) {
                         gok[g] = sres.ok[3 * g] || sres.ok[3 * g + 1] || sres.ok[3 * g + 2];
                         if (gok[g]) {
-                            printf(" %7.0f", sres.group_fs[g]);
+                            printf(" %7.*f", fs_decimals(&bc), sres.group_fs[g]);
                         } else {
                             printf(" %7s", "-");
                         }
                     }
                     if (gok[0] || gok[1]) {
                         fs_tab[d][k] = sres.overall_fs;
-                        printf(" %7.0f\n", sres.overall_fs);
+                        printf(" %7.*f\n", fs_decimals(&bc), sres.overall_fs);
                     } else {
                         printf(" %7s\n", "-");
                     }

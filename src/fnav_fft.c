@@ -4,7 +4,15 @@
  * Schafer, "Discrete-Time Signal Processing", 3rd ed., problem 9.51). */
 #include "footnav/fnav_fft.h"
 
-void fnav_fft_cos_sin_2pi(uint32_t k, uint32_t n, fnav_real_t *c, fnav_real_t *s)
+/* A table fnav_fft_init made: n a power of two in 4..FNAV_FFT_MAX_N (one
+ * never initialised is zeroed, n = 0). */
+static int table_ok(const fnav_fft_t *f)
+{
+    return f->n >= 4u && f->n <= FNAV_FFT_MAX_N && (f->n & (f->n - 1u)) == 0u;
+}
+
+/* fnav_fft_cos_sin_2pi without its argument checks: n > 0 */
+static void cos_sin_2pi(uint32_t k, uint32_t n, fnav_real_t *c, fnav_real_t *s)
 {
     const fnav_real_t two_pi = FNAV_R(6.283185307179586476925);
     uint32_t x = k % n;
@@ -34,6 +42,15 @@ void fnav_fft_cos_sin_2pi(uint32_t k, uint32_t n, fnav_real_t *c, fnav_real_t *s
     *s = sgn_s * (swap ? cc : ss);
 }
 
+fnav_status_t fnav_fft_cos_sin_2pi(uint32_t k, uint32_t n, fnav_real_t *c, fnav_real_t *s)
+{
+    if (c == NULL || s == NULL || n == 0u) {
+        return FNAV_E_ARG; /* n = 0 divided by zero (k % n) */
+    }
+    cos_sin_2pi(k, n, c, s);
+    return FNAV_OK;
+}
+
 fnav_status_t fnav_fft_init(fnav_fft_t *f, uint32_t n)
 {
     uint32_t k;
@@ -46,14 +63,26 @@ fnav_status_t fnav_fft_init(fnav_fft_t *f, uint32_t n)
     f->n = n;
     f->reserved = 0;
     for (k = 0; k < n / 2u; k++) {
-        fnav_fft_cos_sin_2pi(k, n, &f->cs[k], &f->sn[k]);
+        cos_sin_2pi(k, n, &f->cs[k], &f->sn[k]);
     }
     return FNAV_OK;
 }
 
-void fnav_fft_complex(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im, uint32_t m)
+fnav_status_t fnav_fft_complex(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im, uint32_t m)
 {
     uint32_t i, j, len;
+    if (f == NULL || re == NULL || im == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (!table_ok(f)) {
+        return FNAV_E_STATE;
+    }
+    /* an m not a power of two ran the butterflies past its m entries; one
+     * above n (fnav_fft.h allows n / 2) made the table's stride 0, every
+     * twiddle of that stage 1 */
+    if (m < 2u || m > f->n / 2u || (m & (m - 1u)) != 0u) {
+        return FNAV_E_SIZE;
+    }
     /* bit-reversal permutation */
     for (i = 1, j = 0; i < m; i++) {
         uint32_t bit = m >> 1;
@@ -95,13 +124,23 @@ void fnav_fft_complex(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im, uin
             }
         }
     }
+    return FNAV_OK;
 }
 
-void fnav_fft_real_packed(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im)
+fnav_status_t fnav_fft_real_packed(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im)
 {
-    const uint32_t m = f->n / 2u;
-    uint32_t k;
-    fnav_fft_complex(f, re, im, m);
+    uint32_t m, k;
+    fnav_status_t st;
+    if (f == NULL) {
+        return FNAV_E_ARG;
+    }
+    /* checks re, im and the table (n = 0, never initialised, sent the
+     * split loop below to k < 0 - k, past every array) */
+    m = f->n / 2u;
+    st = fnav_fft_complex(f, re, im, m);
+    if (st != FNAV_OK) {
+        return st;
+    }
     /* X_k = E_k + W^k O_k, E_k = (Z_k + conj Z_{m-k}) / 2, O_k = (Z_k - conj Z_{m-k}) / 2i,
      * W = e^(-2 pi i / n); pairs (k, m - k) are done together, in place. */
     {
@@ -128,4 +167,5 @@ void fnav_fft_real_packed(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im)
     if (k == m - k) {
         im[k] = -im[k]; /* X_{m/2} = conj Z_{m/2} */
     }
+    return FNAV_OK;
 }

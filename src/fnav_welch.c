@@ -21,6 +21,7 @@ static inline void kahan_add(fnav_real_t *s, fnav_real_t *c, fnav_real_t v)
 fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
 {
     const fnav_welch_config_t *c = cfg != NULL ? cfg : &fnav_welch_config_default;
+    fnav_welch_config_t cc;
     uint32_t i;
     /* compensated sums in fnav_real_t (Kahan): double ones were soft-float
      * calls on the Cortex-M4F, 1.9 KB of flash for this one init (test_psd.sh) */
@@ -36,8 +37,12 @@ fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
         !(c->rate_hz > FNAV_R(0.0)) || !fnav_isfinite(c->rate_hz) || !(fnav_fabs(c->offset) <= (fnav_real_t)FNAV_INPUT_MAX_ABS)) {
         return FNAV_E_CONFIG;
     }
+    /* through a copy: cfg may be w's own (a reset, fnav_welch_init(&w,
+     * &w.cfg)), which the memset clears; c then reads the one kept in w */
+    cc = *c;
     memset(w, 0, sizeof *w);
-    w->cfg = *c;
+    w->cfg = cc;
+    c = &w->cfg;
     if (fnav_fft_init(&w->fft, c->nfft) != FNAV_OK) {
         return FNAV_E_CONFIG;
     }
@@ -45,7 +50,11 @@ fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
         /* periodic: L = N (DFT-even, scipy get_window); symmetric: L = N - 1 */
         const uint32_t L = c->symmetric ? c->nfft - 1u : c->nfft;
         fnav_real_t cph, sph, c1, s1i;
-        fnav_fft_cos_sin_2pi(i, L, &cph, &sph);
+        /* L >= 7 and nfft >= 8 here: FNAV_OK */
+        if (fnav_fft_cos_sin_2pi(i, L, &cph, &sph) != FNAV_OK ||
+            fnav_fft_cos_sin_2pi(i, c->nfft, &c1, &s1i) != FNAV_OK) {
+            return FNAV_E_CONFIG;
+        }
         switch (c->window) {
         case FNAV_WINDOW_HAMMING: w->win[i] = FNAV_R(0.54) - FNAV_R(0.46) * cph; break;
         case FNAV_WINDOW_HANN: w->win[i] = FNAV_R(0.5) - FNAV_R(0.5) * cph; break;
@@ -54,7 +63,6 @@ fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
         kahan_add(&s1, &s1c, w->win[i]);
         kahan_add(&s2, &s2c, w->win[i] * w->win[i]);
         /* W_1 = sum w_n e^(-2 pi i n / N) */
-        fnav_fft_cos_sin_2pi(i, c->nfft, &c1, &s1i);
         kahan_add(&w1r, &w1rc, w->win[i] * c1);
         kahan_add(&w1i, &w1ic, -(w->win[i] * s1i));
     }
@@ -106,7 +114,9 @@ static void segment(fnav_welch_t *w)
         re[i] = ((v0 - x0) - (a + b * i0)) * w->win[(size_t)2u * i];
         im[i] = ((v1 - x0) - (a + b * (i0 + FNAV_R(1.0)))) * w->win[(size_t)2u * i + 1u];
     }
-    fnav_fft_real_packed(&w->fft, re, im);
+    if (fnav_fft_real_packed(&w->fft, re, im) != FNAV_OK) {
+        return; /* never: the table is the one fnav_welch_init made */
+    }
     if (w->cfg.detrend == FNAV_DETREND_GLOBAL) {
         /* compensated: global_fix subtracts terms of the size of these sums */
         kahan_add(&w->x0, &w->x0c, re[0]);
@@ -310,8 +320,13 @@ fnav_status_t fnav_welch_bandwidth(const fnav_real_t *psd, size_t n, fnav_real_t
         !(c->threshold <= FNAV_R(1.0)) || !(c->round_hz >= FNAV_R(0.0)) || !fnav_isfinite(c->round_hz)) {
         return FNAV_E_ARG;
     }
-    for (k = k0; k < n; k++) {
-        kahan_add(&total, &comp, psd[k] * df_hz); /* power in bin k: P_k df (Parseval) */
+    for (k = 0; k < n; k++) {
+        if (!(psd[k] >= FNAV_R(0.0))) {
+            return FNAV_E_RANGE; /* a density is never negative (nor NaN), bin 0 included */
+        }
+        if (k >= k0) {
+            kahan_add(&total, &comp, psd[k] * df_hz); /* power in bin k: P_k df (Parseval) */
+        }
     }
     total -= comp;
     if (!(total > FNAV_R(0.0)) || !fnav_isfinite(total)) {

@@ -64,7 +64,7 @@ static void test_complex_vs_dft(void **state)
             im[k] = (fnav_real_t)xi[k];
         }
         /* a table for a longer transform serves shorter ones (stride) */
-        fnav_fft_complex(&f, re, im, m);
+        assert_int_equal(fnav_fft_complex(&f, re, im, m), FNAV_OK);
         dft(xr, xi, m, yr, yi);
         for (k = 0; k < m; k++) {
             const double mag = (double)sqrtl(yr[k] * yr[k] + yi[k] * yi[k]);
@@ -105,7 +105,7 @@ static void test_real_vs_dft(void **state)
          * it held the 0 of the previous transform) */
         re[n / 2] = FNAV_R(7.0);
         im[n / 2] = FNAV_R(7.0);
-        fnav_fft_real_packed(&f, re, im);
+        assert_int_equal(fnav_fft_real_packed(&f, re, im), FNAV_OK);
         dft(x, z, n, yr, yi);
         for (k = 0; k <= n / 2; k++) {
             const double mag = (double)sqrtl(yr[k] * yr[k] + yi[k] * yi[k]);
@@ -137,7 +137,7 @@ static void test_real_tone(void **state)
         re[k] = (fnav_real_t)cos(6.283185307179586 * bin * (2.0 * k) / n);
         im[k] = (fnav_real_t)cos(6.283185307179586 * bin * (2.0 * k + 1.0) / n);
     }
-    fnav_fft_real_packed(&f, re, im);
+    assert_int_equal(fnav_fft_real_packed(&f, re, im), FNAV_OK);
     for (k = 0; k <= n / 2; k++) {
         const double mag = sqrt((double)(re[k] * re[k] + im[k] * im[k]));
         FNAV_ASSERT_CLOSE(mag, k == bin ? n / 2.0 : 0.0, 1e-4, 0.0);
@@ -171,7 +171,7 @@ static void test_cos_sin_2pi(void **state)
             if (2u * k == n || k == 0u) {
                 ts = 0.0L;
             }
-            fnav_fft_cos_sin_2pi(k, n, &c, &s);
+            assert_int_equal(fnav_fft_cos_sin_2pi(k, n, &c, &s), FNAV_OK);
             e = fmax(fabs((double)c - (double)tc), fabs((double)s - (double)ts)) / (double)FNAV_REAL_EPSILON;
             if (n % 8u == 0u) {
                 /* ulp of a value in [2^e, 2^(e+1)): epsilon 2^e */
@@ -208,6 +208,71 @@ static void test_init_errors(void **state)
     assert_int_equal(fnav_fft_init(&f, FNAV_FFT_MAX_N), FNAV_OK);
 }
 
+/* Argument checks (a review, 2026-12-01): fnav_fft_complex trusted m and
+ * the table, fnav_fft_real_packed the table, fnav_fft_cos_sin_2pi n. An m
+ * that is not a power of two ran its butterflies past the m entries (m = 6:
+ * re[6], re[7]: ASan, heap-buffer-overflow); m = 128 on a table of 64 took
+ * the last stage's twiddles as 1 (X_1 of a unit impulse at sample 1 came
+ * out 1 + 0i, numpy.fft.fft 0.9988 - 0.0491i); a table never initialised
+ * (n = 0, zeroed as static
+ * storage is) sent fnav_fft_real_packed's split loop to k < 0 - k, past
+ * every array; n = 0 divided by zero in fnav_fft_cos_sin_2pi. Each is now
+ * refused with a status, writing nothing. */
+static void test_argument_checks(void **state)
+{
+    static fnav_fft_t f, zero;
+    /* the m entries a call may use, and a guard beyond that must not move */
+    static fnav_real_t re[FNAV_FFT_MAX_N + 8], im[FNAV_FFT_MAX_N + 8];
+    static const uint32_t bad_m[] = { 0u, 1u, 3u, 6u, 12u, 48u, 128u };
+    fnav_real_t c = FNAV_R(7.0), s = FNAV_R(7.0);
+    size_t i, k;
+    (void)state;
+    assert_int_equal(fnav_fft_init(&f, 64u), FNAV_OK);
+    for (i = 0; i < sizeof bad_m / sizeof bad_m[0] + 2u; i++) {
+        /* the bad sizes, then 64 (above the 64 / 2 fnav_fft.h allows this
+         * table) and FNAV_FFT_MAX_N (above the compiled maximum's half) */
+        const size_t nb = sizeof bad_m / sizeof bad_m[0];
+        const uint32_t m = i < nb ? bad_m[i] : (i == nb ? 64u : FNAV_FFT_MAX_N);
+        for (k = 0; k < FNAV_FFT_MAX_N + 8u; k++) {
+            re[k] = (fnav_real_t)k;
+            im[k] = -(fnav_real_t)k;
+        }
+        assert_int_equal(fnav_fft_complex(&f, re, im, m), FNAV_E_SIZE);
+        for (k = 0; k < FNAV_FFT_MAX_N + 8u; k++) {
+            assert_true(re[k] == (fnav_real_t)k && im[k] == -(fnav_real_t)k);
+        }
+    }
+    /* the largest m the table serves, and the smallest */
+    assert_int_equal(fnav_fft_complex(&f, re, im, 32u), FNAV_OK);
+    assert_int_equal(fnav_fft_complex(&f, re, im, 2u), FNAV_OK);
+    assert_int_equal(fnav_fft_complex(NULL, re, im, 32u), FNAV_E_ARG);
+    assert_int_equal(fnav_fft_complex(&f, NULL, im, 32u), FNAV_E_ARG);
+    assert_int_equal(fnav_fft_complex(&f, re, NULL, 32u), FNAV_E_ARG);
+    assert_int_equal(fnav_fft_real_packed(NULL, re, im), FNAV_E_ARG);
+    assert_int_equal(fnav_fft_real_packed(&f, NULL, im), FNAV_E_ARG);
+    assert_int_equal(fnav_fft_real_packed(&f, re, NULL), FNAV_E_ARG);
+    /* a table never initialised, or whose init failed: nothing written */
+    assert_int_equal(fnav_fft_init(&zero, 48u), FNAV_E_CONFIG);
+    for (k = 0; k < FNAV_FFT_MAX_N + 8u; k++) {
+        re[k] = (fnav_real_t)k;
+        im[k] = -(fnav_real_t)k;
+    }
+    assert_int_equal(fnav_fft_real_packed(&zero, re, im), FNAV_E_STATE);
+    assert_int_equal(fnav_fft_complex(&zero, re, im, 2u), FNAV_E_STATE);
+    for (k = 0; k < FNAV_FFT_MAX_N + 8u; k++) {
+        assert_true(re[k] == (fnav_real_t)k && im[k] == -(fnav_real_t)k);
+    }
+    assert_int_equal(fnav_fft_real_packed(&f, re, im), FNAV_OK);
+    /* cos and sin of 2 pi k / n: n = 0 and NULL outputs refused, nothing written */
+    assert_int_equal(fnav_fft_cos_sin_2pi(3u, 0u, &c, &s), FNAV_E_ARG);
+    assert_true(c == FNAV_R(7.0) && s == FNAV_R(7.0));
+    assert_int_equal(fnav_fft_cos_sin_2pi(3u, 8u, NULL, &s), FNAV_E_ARG);
+    assert_int_equal(fnav_fft_cos_sin_2pi(3u, 8u, &c, NULL), FNAV_E_ARG);
+    assert_true(c == FNAV_R(7.0) && s == FNAV_R(7.0));
+    assert_int_equal(fnav_fft_cos_sin_2pi(2u, 8u, &c, &s), FNAV_OK); /* pi / 2, exact when 8 | n */
+    assert_true(c == FNAV_R(0.0) && s == FNAV_R(1.0));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -216,6 +281,7 @@ int main(void)
         cmocka_unit_test(test_real_tone),
         cmocka_unit_test(test_cos_sin_2pi),
         cmocka_unit_test(test_init_errors),
+        cmocka_unit_test(test_argument_checks),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -444,6 +444,46 @@ static void test_bandwidth_analytic(void **state)
     FNAV_ASSERT_CLOSE(out.fs_rounded_hz, out.fs_hz, 0.0, 1e-6);
 }
 
+/* A density is never negative (a review, 2026-12-01): a spectrum with a
+ * negative bin was taken, its total the sum of the positive and negative
+ * parts: {0, 4, -3, 0, 1} (df 1 Hz) gave FNAV_OK, a total of 2, a
+ * "95 %" band of 0.975 Hz and a CCDF rising from 0 to 0.5. A negative or
+ * NaN bin is now FNAV_E_RANGE, the DC bin too when it is left out of the
+ * total, with nothing written. */
+static void test_bandwidth_bad_bins(void **state)
+{
+    fnav_real_t p[5] = { FNAV_R(0.0), FNAV_R(4.0), FNAV_R(-3.0), FNAV_R(0.0), FNAV_R(1.0) }, ccdf[5];
+    fnav_bandwidth_t out, copy;
+    fnav_bandwidth_config_t c = fnav_bandwidth_config_default;
+    int k;
+    (void)state;
+    memset(&out, 0x5a, sizeof out);
+    copy = out;
+    for (k = 0; k < 5; k++) {
+        ccdf[k] = FNAV_R(7.0);
+    }
+    assert_int_equal(fnav_welch_bandwidth(p, 5, FNAV_R(1.0), &c, &out, ccdf), FNAV_E_RANGE);
+    p[2] = (fnav_real_t)NAN;
+    assert_int_equal(fnav_welch_bandwidth(p, 5, FNAV_R(1.0), &c, &out, ccdf), FNAV_E_RANGE);
+    p[2] = FNAV_R(0.0);
+    p[0] = FNAV_R(-1.0);
+    c.exclude_dc = 1;
+    assert_int_equal(fnav_welch_bandwidth(p, 5, FNAV_R(1.0), &c, &out, ccdf), FNAV_E_RANGE);
+    p[0] = (fnav_real_t)NAN;
+    assert_int_equal(fnav_welch_bandwidth(p, 5, FNAV_R(1.0), &c, &out, ccdf), FNAV_E_RANGE);
+    assert_memory_equal(&out, &copy, sizeof out);
+    for (k = 0; k < 5; k++) {
+        assert_true(ccdf[k] == FNAV_R(7.0));
+    }
+    /* the same spectrum without them: 4 and 1 in bins 1 and 4 */
+    p[0] = FNAV_R(0.0);
+    c.exclude_dc = 0;
+    assert_int_equal(fnav_welch_bandwidth(p, 5, FNAV_R(1.0), &c, &out, ccdf), FNAV_OK);
+    FNAV_ASSERT_CLOSE(out.total, 5.0, 0.0, 1e-6);
+    /* 4.75 of 5: 0.75 of bin 4's power, bin 4 spanning [3.5, 4] (the last, clipped) */
+    FNAV_ASSERT_CLOSE(out.bandwidth_hz, 3.5 + 0.75 * 0.5, 0.0, 1e-6);
+}
+
 static void test_config_and_bad_input(void **state)
 {
     static fnav_welch_t w, copy;
@@ -695,6 +735,48 @@ static void test_not_initialised(void **state)
     assert_memory_equal(&w, &copy, sizeof w);
 }
 
+/* Re-initialising with the estimator's own configuration (a reset,
+ * fnav_welch_init(&w, &w.cfg); a review, 2026-12-01): init cleared the
+ * estimator, configuration included, before it read the configuration's
+ * nfft again, so it returned FNAV_E_CONFIG and left the estimator zeroed
+ * (every push then FNAV_E_STATE), where fnav_welch.h says a failed init
+ * leaves it as it was. It must reset it: no segment, the same
+ * configuration, and the same spectrum as a fresh estimator after the same
+ * samples. */
+static void test_reinit_own_config(void **state)
+{
+    static fnav_welch_t w, fresh;
+    static fnav_real_t pw[FNAV_WELCH_MAX_BINS], pf[FNAV_WELCH_MAX_BINS];
+    fnav_welch_config_t c = fnav_welch_config_default;
+    uint32_t k;
+    int i;
+    (void)state;
+    c.nfft = 128u;
+    c.overlap = 96u;
+    c.window = FNAV_WINDOW_HANN;
+    c.detrend = FNAV_DETREND_GLOBAL;
+    c.rate_hz = FNAV_R(250.0);
+    assert_int_equal(fnav_welch_init(&w, &c), FNAV_OK);
+    for (i = 0; i < 700; i++) {
+        assert_int_equal(fnav_welch_push(&w, (fnav_real_t)(3.0 + sin(0.7 * i))), FNAV_OK);
+    }
+    assert_true(fnav_welch_segments(&w) > 0u);
+    assert_int_equal(fnav_welch_init(&w, &w.cfg), FNAV_OK);
+    assert_memory_equal(&w.cfg, &c, sizeof c);
+    assert_int_equal(fnav_welch_segments(&w), 0);
+    assert_int_equal(fnav_welch_init(&fresh, &c), FNAV_OK);
+    for (i = 0; i < 500; i++) {
+        const fnav_real_t v = (fnav_real_t)(0.5 * cos(0.31 * i) + 0.01 * (i % 11));
+        assert_int_equal(fnav_welch_push(&w, v), FNAV_OK);
+        assert_int_equal(fnav_welch_push(&fresh, v), FNAV_OK);
+    }
+    assert_int_equal(fnav_welch_get(&w, pw, FNAV_WELCH_MAX_BINS), FNAV_OK);
+    assert_int_equal(fnav_welch_get(&fresh, pf, FNAV_WELCH_MAX_BINS), FNAV_OK);
+    for (k = 0; k < fnav_welch_bins(&w); k++) {
+        assert_true(pw[k] == pf[k]); /* the same arithmetic on the same samples */
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -703,12 +785,14 @@ int main(void)
         cmocka_unit_test(test_last_global_against_scipy),
         cmocka_unit_test(test_parseval),
         cmocka_unit_test(test_bandwidth_analytic),
+        cmocka_unit_test(test_bandwidth_bad_bins),
         cmocka_unit_test(test_config_and_bad_input),
         cmocka_unit_test(test_offset),
         cmocka_unit_test(test_segment_mean_large_offset),
         cmocka_unit_test(test_global_long_offset_start),
         cmocka_unit_test(test_sample_count_end),
         cmocka_unit_test(test_not_initialised),
+        cmocka_unit_test(test_reinit_own_config),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

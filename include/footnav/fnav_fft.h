@@ -44,8 +44,9 @@ typedef struct {
  * @param n     denominator, > 0
  * @param c     cosine (output)
  * @param s     sine (output)
+ * @return FNAV_OK; FNAV_E_ARG for n = 0 or a NULL output (nothing written).
  */
-void fnav_fft_cos_sin_2pi(uint32_t k, uint32_t n, fnav_real_t *c, fnav_real_t *s);
+FNAV_WARN_UNUSED fnav_status_t fnav_fft_cos_sin_2pi(uint32_t k, uint32_t n, fnav_real_t *c, fnav_real_t *s);
 
 /**
  * Prepare the table for real transforms of n points.
@@ -59,8 +60,12 @@ FNAV_WARN_UNUSED fnav_status_t fnav_fft_init(fnav_fft_t *f, uint32_t n);
  * 2 <= m <= f->n / 2.
  * @param re  real parts, m entries
  * @param im  imaginary parts, m entries
+ * @return FNAV_OK; FNAV_E_ARG for a NULL pointer; FNAV_E_STATE for a table
+ *         fnav_fft_init never made (zeroed, or its init failed); FNAV_E_SIZE
+ *         for an m that is not a power of two in 2..f->n / 2 (so never
+ *         above FNAV_FFT_MAX_N / 2). Refused calls write nothing.
  */
-void fnav_fft_complex(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im, uint32_t m);
+FNAV_WARN_UNUSED fnav_status_t fnav_fft_complex(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im, uint32_t m);
 
 /**
  * Forward FFT of n = f->n real points, given packed: re[k] = x[2k],
@@ -68,8 +73,11 @@ void fnav_fft_complex(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im, uin
  * k = 0 .. n/2 (n/2 + 1 bins; im[0] = im[n/2] = 0).
  * @param re  n/2 + 1 entries
  * @param im  n/2 + 1 entries
+ * @return FNAV_OK; FNAV_E_ARG for a NULL pointer; FNAV_E_STATE for a table
+ *         fnav_fft_init never made (zeroed, or its init failed). Refused
+ *         calls write nothing.
  */
-void fnav_fft_real_packed(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im);
+FNAV_WARN_UNUSED fnav_status_t fnav_fft_real_packed(const fnav_fft_t *f, fnav_real_t *re, fnav_real_t *im);
 
 #ifdef __cplusplus
 }

@@ -98,7 +98,8 @@ typedef struct {
 /**
  * Initialise.
  * @param w    estimator (caller-owned)
- * @param cfg  configuration, or NULL for fnav_welch_config_default
+ * @param cfg  configuration, or NULL for fnav_welch_config_default; may be
+ *             w's own (&w->cfg: a reset with the same settings)
  * @return FNAV_OK; FNAV_E_ARG for NULL w; FNAV_E_CONFIG for a bad nfft,
  *         overlap >= nfft, unknown window/detrend/scaling, a rate not
  *         positive and finite, an offset not finite or beyond
@@ -135,8 +136,9 @@ fnav_real_t fnav_welch_freq(const fnav_welch_t *w, uint32_t k);
  * The averaged one-sided spectrum.
  * @param out   fnav_welch_bins(w) entries
  * @param n_out capacity of out
- * @return FNAV_OK; FNAV_E_SIZE when n_out is too small; FNAV_E_STATE before
- *         the first segment.
+ * @return FNAV_OK; FNAV_E_ARG for NULL w or out; FNAV_E_SIZE when n_out is
+ *         too small; FNAV_E_STATE before the first segment (or for an
+ *         estimator never initialised). Nothing is written unless FNAV_OK.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_get(const fnav_welch_t *w, fnav_real_t *out, size_t n_out);
 
@@ -177,7 +179,9 @@ typedef struct {
  *              fraction 1 - C(f) at the upper edge of each bin
  * @return FNAV_OK; FNAV_E_ARG for NULL / n < 2 / df <= 0 / a threshold
  *         outside (0, 1] / round_hz < 0 or not finite;
- *         FNAV_E_RANGE when the total power is not positive and finite.
+ *         FNAV_E_RANGE when a bin is negative or NaN (bin 0 too when
+ *         exclude_dc leaves it out) or the total power is not positive and
+ *         finite; nothing is written then.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_bandwidth(const fnav_real_t *psd, size_t n, fnav_real_t df_hz,
                                                     const fnav_bandwidth_config_t *cfg, fnav_bandwidth_t *out,

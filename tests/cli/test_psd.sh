@@ -74,6 +74,28 @@ assert 200 < r["fs_hz"] < 262.5 and r["fs_hz"] == max(r["accel_fs_hz"], r["gyro_
 else
     fail "--round 0: the answer is not 2 x the band: $(cat "$T/r0.json" | tr -d '\n' | cut -c1-400)"
 fi
+# a step that is no whole number of hertz: the answer 232.5 Hz (a multiple of 2.5) was printed to the hertz, "232 Hz",
+# in the answer line, the groups' lines and the table's fs_Hz column: no multiple of the step, and below what the rule
+# asks (the spectral-path review, 2026-12-01); now with the step's decimals. With --round 0 the table's fs_Hz column
+# (2 x the band itself) was printed to the hertz too: 231 beside 2xBW_Hz 230.9; now to 0.1 Hz, as the answer line.
+expect_exit 0 "tone, --round 2.5" "$H" psd "$T/tone.csv" --round 2.5 --json "$T/r25.json"
+F=$("$PY" -c 'import json,sys; print("%.1f" % json.load(open(sys.argv[1]))["result"]["fs_hz"])' "$T/r25.json")
+"$PY" -c 'import json,sys; f = json.load(open(sys.argv[1]))["result"]["fs_hz"]; assert f % 2.5 == 0 and f % 1 != 0, f' "$T/r25.json" &&
+    pass "--round 2.5: the tone's answer is a multiple of 2.5 Hz, not of 1 Hz (the case the check needs)" ||
+    fail "--round 2.5: the tone's answer $F Hz does not test a fractional step"
+expect_out "lowest usable sampling frequency: $F Hz (accelerometers and gyroscopes alike; 95 % of the power, multiples of 2.5 Hz)" \
+    "--round 2.5: the answer printed as the JSON's, a multiple of the step"
+expect_out "accelerometers: bandwidth 115.4 Hz -> $F Hz" "--round 2.5: the group's answer printed as the JSON's"
+expect_out_re "^  ax +[0-9.e+-]+ +115\.4 +230\.9 +$F\$" "--round 2.5: the table's fs_Hz column a multiple of the step"
+expect_exit 0 "tone, --round 0 (table)" "$H" psd "$T/tone.csv" --round 0
+expect_out_re "^  ax +[0-9.e+-]+ +115\.4 +230\.9 +230\.9\$" "--round 0: the table's fs_Hz column is 2 x the band, to 0.1 Hz"
+# a threshold that is no whole percentage: --threshold 0.995 was printed to the percent, "holding 100 % of the total
+# power" and "100 % of the power" (the spectral-path review, 2026-12-01): the threshold is said as given
+expect_exit 0 "tone, --threshold 0.995" "$H" psd "$T/tone.csv" --threshold 0.995
+expect_out "the band from 0 Hz holding 99.5 % of the total power" "--threshold 0.995: the criterion says 99.5 %"
+expect_out_re "^  lowest usable sampling frequency: [0-9]+ Hz \(accelerometers and gyroscopes alike; 99\.5 % of the power, multiples of 50 Hz\)" \
+    "--threshold 0.995: the answer line says 99.5 %"
+! grep -q "100 %" "$T/out" && pass "--threshold 0.995: no '100 %'" || fail "--threshold 0.995: '100 %' printed"
 # every channel constant: no band anywhere, so no answer (it printed 'lowest usable sampling frequency: 0 Hz' with
 # fs_hz 0 and exit 0); the tables are still written and the JSON's answer is null
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3f,0.1,0.2,9.81,0.01,0,0\n", i / 1000.0 }' \
