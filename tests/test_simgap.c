@@ -1020,6 +1020,64 @@ static void test_compare_twin_only_level(void **state)
     sg_plist_free(&pl);
 }
 
+/* The null of G treats each twin as the real against the other S - 1, so
+ * with S = 3 twins (the fewest --seeds takes) each pseudo-real meets two:
+ * its twin-only points' ratios are Student's t with one degree of freedom,
+ * which must be mapped to normal scores as the real's (t with two) are.
+ * Under the null (real and twins iid N(0, 1), 20 twin-only points) the
+ * null's mean G and the real's mean G then agree (both 1 in expectation:
+ * z^2 of a normal score). Until 2026-12-01 the mapping needed three twins,
+ * so at S = 3 the null's z were the raw t_1 (Cauchy), their capped squares
+ * about 4 x 40 / pi each: a null mean near 50 for a real G near 1, a G
+ * test that could never reject (the sgap review). S = 4 was right and
+ * stays so. */
+static void test_compare_null_three_twins(void **state)
+{
+    const int n = 20, R = 400;
+    const double alpha = 0.05 / 24.0;
+    sg_plist_t pl;
+    fnav_rng_t rng;
+    double real[20], tw[4 * 20];
+    int j, r, s, S;
+    (void)state;
+    memset(&pl, 0, sizeof pl);
+    for (j = 0; j < n; j++) {
+        sg_point_t p;
+        memset(&p, 0, sizeof p);
+        p.dom = SG_TIME;
+        p.kind = SG_TIME_TREND;
+        p.nblk = 1;
+        p.x_hi = 1.0;
+        assert_int_equal(sg_plist_add(&pl, &p), 0);
+    }
+    fnav_rng_seed(&rng, 17u, 2u);
+    for (S = 3; S <= 4; S++) {
+        double gn = 0.0, gr = 0.0;
+        for (r = 0; r < R; r++) {
+            sg_cmp_t c;
+            for (j = 0; j < n; j++) {
+                real[j] = (double)fnav_rng_gauss(&rng);
+            }
+            for (s = 0; s < S * n; s++) {
+                tw[s] = (double)fnav_rng_gauss(&rng);
+            }
+            assert_int_equal(sg_compare(&pl, real, tw, S, NULL, NULL, alpha, &c), 0);
+            gn += c.null_mean;
+            gr += c.G;
+            sg_cmp_free(&c);
+        }
+        gn /= (double)R;
+        gr /= (double)R;
+        fprintf(stderr, "%d twins: mean G of the real %.3f, of the null %.3f (both 1 in expectation)\n", S, gr, gn);
+        /* each mean is of 400 x 20 squared normal scores (sd about 0.016);
+         * a t_3 or t_2 tail (the normal scores' max |z| of 40 for the
+         * rare huge t) adds a little spread: 0.15 is many times that */
+        assert_true(fabs(gr - 1.0) < 0.15);
+        assert_true(fabs(gn - 1.0) < 0.15);
+    }
+    sg_plist_free(&pl);
+}
+
 static void test_split_disjoint(void **state)
 {
     int sandwich;
@@ -2808,6 +2866,7 @@ int main(void)
         cmocka_unit_test(test_lattice),
         cmocka_unit_test(test_rayleigh_golden),
         cmocka_unit_test(test_compare_twin_only_level),
+        cmocka_unit_test(test_compare_null_three_twins),
         cmocka_unit_test(test_compare_golden),
         cmocka_unit_test(test_allan_theory_var_noise_type),
         cmocka_unit_test(test_accept_rule),
