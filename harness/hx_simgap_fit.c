@@ -1203,6 +1203,13 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
             e->p[0] = -e->p[0];
         }
     }
+    if (best.m.e[ia].p[1] > 0.0) {
+        /* the AR(1) time's search, as the baseline's ar1_tau_at_min and
+         * ar1_tau_at_max report it (an AR(1) of sigma 0 has no time) */
+        best.m.e[ia].lo[0] = tmin_s;
+        best.m.e[ia].hi[0] = tmax_s;
+        best.m.e[ia].at_bound[0] = sg_param_at_bound(best.m.e[ia].p[0], tmin_s, tmax_s);
+    }
     fit_errors(t, &best);
     jumps_rate(&best.m, ev);
     for (i = 0; i < best.m.n; i++) {

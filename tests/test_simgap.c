@@ -2029,6 +2029,11 @@ static void test_fit_ar1_in_catalogue(void **state)
     assert_true(k >= 0);
     assert_true(f.model.e[k].p[1] > 0.0); /* the AR(1) is kept: it carries most of the variance */
     assert_true(f.model.e[k].p[0] >= info->params[0].lo);
+    /* the true 0.5 ms lies below the search (1 ms to 1 s): the time is
+     * its lower bound and says so (bounds.tau_s in the JSON) */
+    FNAV_ASSERT_CLOSE(f.model.e[k].lo[0], info->params[0].lo, 0.0, 1e-12);
+    FNAV_ASSERT_CLOSE(f.model.e[k].hi[0], 1.0, 0.0, 1e-12);
+    assert_int_equal(f.model.e[k].at_bound[0], -1);
     assert_int_equal(sg_model_imuerr(&f.model, fs, 1u, &cfg), 0);
     assert_int_equal(fnav_imuerr_init(&sim, &cfg), FNAV_OK);
 }
