@@ -281,7 +281,25 @@ typedef struct {
     int id;                   /**< fnav_effect_id_t */
     double p[SG_MAX_PAR];
     double se[SG_MAX_PAR];    /**< standard errors (NaN: unknown) */
+    double lo[SG_MAX_PAR], hi[SG_MAX_PAR]; /**< the interval the fit searched the parameter in (its
+                                   unit; lo = hi = 0: not searched within bounds): the thermal tau_s,
+                                   an rrw's or a flicker's magnitude refined by likelihood */
+    int at_bound[SG_MAX_PAR]; /**< the fit left it at a bound of that interval (sg_param_at_bound):
+                                   -1 the lower (the value is only an upper limit), +1 the upper
+                                   (only a lower limit), 0 inside or not searched. Reporting only:
+                                   the summary says so, the JSON's `bounds` too, with no se */
 } sg_effect_t;
+
+/** Relative distance within which a searched parameter counts as at a
+ *  bound of its search (0.1 %, as the AR(1) time's sg_ar1_at_min and
+ *  sg_ar1_at_max): the golden sections stop within 0.05 % (ln 5e-4) of a
+ *  bound the optimum lies at or beyond, a grid point on it. */
+#define SG_BOUND_REL 1e-3
+
+/** Side of the search interval [lo, hi] (lo > 0) a fitted value v lies at:
+ *  -1 when v <= lo (1 + SG_BOUND_REL), +1 when v >= hi (1 - SG_BOUND_REL),
+ *  0 inside, or when the interval is not set (lo, hi not positive). */
+int sg_param_at_bound(double v, double lo, double hi);
 
 /** Model of one channel of a static log: the value at rest plus effects
  *  (white and ar1 are the baseline). */

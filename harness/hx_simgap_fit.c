@@ -821,7 +821,8 @@ static int time_cols(const sg_table_t *t, int th, int rp, double T, double X[][2
 static int time_fit(const sg_table_t *t, sg_chmodel_t *m, int it, int ir)
 {
     enum { NG = 48 };
-    double X[SG_TAB_NT][2], c[2] = { 0.0, 0.0 }, cov[2][2], best = INFINITY, bT = 0.0, disp = 1.0;
+    double X[SG_TAB_NT][2], c[2] = { 0.0, 0.0 }, cov[2][2], best = INFINITY, bT = 0.0, disp = 1.0, tlo = 0.0,
+           thi = 0.0;
     const int th = it >= 0, rp = ir >= 0, np = th + rp;
     int nc, g;
     if (t->nt == 0 || np == 0) {
@@ -869,6 +870,8 @@ static int time_fit(const sg_table_t *t, sg_chmodel_t *m, int it, int ir)
         if (time_ls(t, time_cols(t, th, rp, exp(0.5 * (a + b)), X), X, c, cov) <= best) {
             bT = exp(0.5 * (a + b));
         }
+        tlo = lo;
+        thi = hi;
     }
     nc = time_cols(t, th, rp, bT, X);
     best = time_ls(t, nc, X, c, cov);
@@ -884,6 +887,14 @@ static int time_fit(const sg_table_t *t, sg_chmodel_t *m, int it, int ir)
         e->p[0] = c[0] / rise;
         e->p[2] = bT;
         e->se[0] = sqrt(cov[0][0] * disp) / fabs(rise);
+        /* the time constant's search interval and whether the fit left it
+         * on a bound: a drift still rising as a ramp at the segment's end
+         * puts it at the longest (only a lower limit), a step at the start
+         * at the shortest (only an upper limit); reported as such, the
+         * fit itself unchanged */
+        e->lo[2] = exp(tlo);
+        e->hi[2] = exp(thi);
+        e->at_bound[2] = sg_param_at_bound(bT, e->lo[2], e->hi[2]);
     }
     if (rp) {
         sg_effect_t *e = &m->e[ir];
@@ -954,6 +965,17 @@ static void jumps_rate(sg_chmodel_t *m, const sg_evidence_t *ev)
     m->e[k].p[1] = c / us;
     m->e[k].p[0] = K2 / (m->e[k].p[1] * m->e[k].p[1]);
     m->e[k].se[1] = rel * m->e[k].p[1];
+}
+
+int sg_param_at_bound(double v, double lo, double hi)
+{
+    if (!(lo > 0.0) || !(hi > lo) || !isfinite(v)) {
+        return 0;
+    }
+    if (v <= lo * (1.0 + SG_BOUND_REL)) {
+        return -1;
+    }
+    return v >= hi * (1.0 - SG_BOUND_REL) ? 1 : 0;
 }
 
 double sg_ar1_tau_min(double rate_hz)
@@ -1110,6 +1132,15 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
     if (!isfinite(bestQ)) {
         return -1;
     }
+    if (have_th) {
+        /* the warm-up's time constant from the grid above (the time fit
+         * failed): at its first or last point it is a bound, not a fit */
+        const double te = t->t1_s[t->nb - 1];
+        sg_effect_t *e = &best.m.e[it];
+        e->lo[2] = 10.0;
+        e->hi[2] = 2.0 * (te > 20.0 ? te : 20.0);
+        e->at_bound[2] = sg_param_at_bound(e->p[2], e->lo[2], e->hi[2]);
+    }
     /* refine the AR(1) time: golden section in ln T around the grid point */
     {
         double step = log(tmax_s / tmin_s) / (double)(ngT - 1);
@@ -1171,6 +1202,13 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
             /* coef * rise is what the data fix; rise keeps its default */
             e->p[0] = -e->p[0];
         }
+    }
+    if (best.m.e[ia].p[1] > 0.0) {
+        /* the AR(1) time's search, as the baseline's ar1_tau_at_min and
+         * ar1_tau_at_max report it (an AR(1) of sigma 0 has no time) */
+        best.m.e[ia].lo[0] = tmin_s;
+        best.m.e[ia].hi[0] = tmax_s;
+        best.m.e[ia].at_bound[0] = sg_param_at_bound(best.m.e[ia].p[0], tmin_s, tmax_s);
     }
     fit_errors(t, &best);
     jumps_rate(&best.m, ev);
@@ -1604,6 +1642,8 @@ int sg_rrw_ml(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_
     K = m->e[ik].p[0];
     lo = log(K) - log(8.0);
     hi = log(K) + log(8.0);
+    m->e[ik].lo[0] = exp(lo);
+    m->e[ik].hi[0] = exp(hi);
     for (k = 0; k < 40 && hi - lo > 1e-3; k++) {
         double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo);
         double q1 = rrw_nll(y, segs, g, r, phi, s2, exp(2.0 * x1) * dt);
@@ -1624,6 +1664,9 @@ int sg_rrw_ml(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_
         const double curv = (qp - 2.0 * q0 + qm) / (h * h);
         m->e[ik].p[0] = exp(lk);
         m->e[ik].se[0] = curv > 0.0 ? m->e[ik].p[0] * sqrt(2.0 / curv) : (double)NAN;
+        /* within a factor 8 of the Allan fit's K: at either end the
+         * likelihood's optimum lies beyond it (reported, not moved) */
+        m->e[ik].at_bound[0] = sg_param_at_bound(m->e[ik].p[0], m->e[ik].lo[0], m->e[ik].hi[0]);
     }
     free(y);
     return 0;
@@ -1846,6 +1889,8 @@ int sg_bm_fit(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_
     }
     p = &m->e[ik].p[mp];
     c = log(*p);
+    m->e[ik].lo[mp] = exp(c - log(30.0));
+    m->e[ik].hi[mp] = exp(c + log(30.0));
     q = bm_golden(m, p, c - log(30.0), c + log(30.0), rate_hz, Ds, segs->nb[g], nd, rows);
     if (!(q < (double)INFINITY)) {
         return 1;
@@ -1859,6 +1904,9 @@ int sg_bm_fit(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_
     *p = c;
     curv = (qp + qm - 2.0 * q) / (h * h);
     m->e[ik].se[mp] = curv > 0.0 ? c * sqrt(2.0 / curv) : (double)NAN;
+    /* the golden section stops 5e-3 wide in ln magnitude: within that of
+     * an end of the factor-30 interval the optimum lies at or beyond it */
+    m->e[ik].at_bound[mp] = log(c / m->e[ik].lo[mp]) <= 5e-3 ? -1 : (log(m->e[ik].hi[mp] / c) <= 5e-3 ? 1 : 0);
     *nll2 = q;
     return 0;
 }

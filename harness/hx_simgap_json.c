@@ -45,6 +45,7 @@ static cJSON *effect_json(const sg_effect_t *e, int ch)
 {
     const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)e->id);
     cJSON *o = cJSON_CreateObject(), *p = cJSON_CreateObject(), *se = cJSON_CreateObject(), *u = cJSON_CreateObject();
+    cJSON *bd = cJSON_CreateObject();
     int k;
     cJSON_AddStringToObject(o, "effect", info != NULL ? info->name : "?");
     for (k = 0; info != NULL && k < info->nparams && k < SG_MAX_PAR; k++) {
@@ -53,7 +54,20 @@ static cJSON *effect_json(const sg_effect_t *e, int ch)
          * (null, as the baseline's ar1_tau_s; the sgreport review) */
         const int void_tau = e->id == FNAV_EFFECT_AR1 && k == 0 && !(e->p[1] > 0.0);
         add_num(p, info->params[k].name, void_tau ? (double)NAN : e->p[k]);
-        add_num(se, info->params[k].name, void_tau ? (double)NAN : e->se[k]);
+        /* a parameter at a bound of its search has no standard error (the
+         * curvature at a constraint is none), as the AR(1) time at its
+         * bounds (the sgap review) */
+        add_num(se, info->params[k].name, void_tau || e->at_bound[k] != 0 ? (double)NAN : e->se[k]);
+        if (e->lo[k] > 0.0 && e->hi[k] > e->lo[k]) {
+            cJSON *b = cJSON_AddObjectToObject(bd, info->params[k].name);
+            add_num(b, "lo", e->lo[k]);
+            add_num(b, "hi", e->hi[k]);
+            if (e->at_bound[k] != 0) {
+                cJSON_AddStringToObject(b, "at_bound", e->at_bound[k] < 0 ? "lower" : "upper");
+            } else {
+                cJSON_AddNullToObject(b, "at_bound");
+            }
+        }
         if (strncmp(unit, "u", 1) == 0) {
             char b[48];
             snprintf(b, sizeof b, "%s%s", sg_channel_unit(ch), unit + 1);
@@ -65,6 +79,7 @@ static cJSON *effect_json(const sg_effect_t *e, int ch)
     cJSON_AddItemToObject(o, "params", p);
     cJSON_AddItemToObject(o, "se", se);
     cJSON_AddItemToObject(o, "units", u);
+    cJSON_AddItemToObject(o, "bounds", bd);
     return o;
 }
 

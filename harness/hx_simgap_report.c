@@ -43,6 +43,13 @@ static double pct(double f)
     return fabs(v) <= 0.5 ? 0.0 : v;
 }
 
+/* What a parameter the fit left at a bound of its search is (at_bound):
+ * at the lower, at most that; at the upper, at least that. */
+static const char *limit_text(const sg_effect_t *e, int k)
+{
+    return e->at_bound[k] < 0 ? "only an upper limit" : "only a lower limit";
+}
+
 void sg_effect_text(char *b, size_t n, int ch, const sg_effect_t *e)
 {
     char u[96], u2[96];
@@ -53,11 +60,13 @@ void sg_effect_text(char *b, size_t n, int ch, const sg_effect_t *e)
         break;
     case FNAV_EFFECT_FLICKER:
         fmt_u(u, sizeof u, ch, e->p[0], "");
-        snprintf(b, n, "flicker (B %s)", u);
+        snprintf(b, n, "flicker (B %s%s%s)", u, e->at_bound[0] != 0 ? " at the search bound: " : "",
+                 e->at_bound[0] != 0 ? limit_text(e, 0) : "");
         break;
     case FNAV_EFFECT_RRW:
         fmt_u(u, sizeof u, ch, e->p[0], "/sqrt(s)");
-        snprintf(b, n, "rrw (K %s)", u);
+        snprintf(b, n, "rrw (K %s%s%s)", u, e->at_bound[0] != 0 ? " at the search bound: " : "",
+                 e->at_bound[0] != 0 ? limit_text(e, 0) : "");
         break;
     case FNAV_EFFECT_RAMP:
         fmt_u(u, sizeof u, ch, e->p[0], "/s");
@@ -65,7 +74,13 @@ void sg_effect_text(char *b, size_t n, int ch, const sg_effect_t *e)
         break;
     case FNAV_EFFECT_THERMAL:
         fmt_u(u, sizeof u, ch, e->p[0], "/degC");
-        snprintf(b, n, "thermal (coef %s over a %.3g degC rise, tau %.3g s)", u, e->p[1], e->p[2]);
+        if (e->at_bound[2] != 0) {
+            /* the time constant a bound of its search (the sgap review) */
+            snprintf(b, n, "thermal (coef %s over a %.3g degC rise, tau at the search bound %.5g s: %s)", u, e->p[1],
+                     e->at_bound[2] < 0 ? e->lo[2] : e->hi[2], limit_text(e, 2));
+        } else {
+            snprintf(b, n, "thermal (coef %s over a %.3g degC rise, tau %.3g s)", u, e->p[1], e->p[2]);
+        }
         break;
     case FNAV_EFFECT_VIBRATION:
         fmt_u(u, sizeof u, ch, e->p[0], "");

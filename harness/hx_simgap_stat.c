@@ -854,12 +854,16 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
         if (dev_out != NULL) {
             dev_out[j] = dev[j]; /* the residual behind z: its sign is z's */
         }
-        if (!(vt[j] > 0.0) && nr >= 3) {
+        if (!(vt[j] > 0.0) && nr >= 2) {
             /* a variance from the twins alone: the deviation over its
              * estimate is Student's t with nr - 1 degrees of freedom, not
              * normal, so it is mapped to the normal score of the same tail
              * probability (with 16 twins a t of 4.14, the normal quantile
-             * of the Bonferroni level, has a tail 25 times the normal's) */
+             * of the Bonferroni level, has a tail 25 times the normal's).
+             * Two twins are one degree of freedom: the null of S = 3
+             * (each twin against the other two) needs it as the real
+             * needs two; nr >= 3 until 2026-12-01 left that null's raw
+             * t_1 squares, a mean G near 50 (the sgap review) */
             zz = t_to_normal(zz, (double)(nr - 1));
         }
         if (z != NULL) {

@@ -1020,6 +1020,64 @@ static void test_compare_twin_only_level(void **state)
     sg_plist_free(&pl);
 }
 
+/* The null of G treats each twin as the real against the other S - 1, so
+ * with S = 3 twins (the fewest --seeds takes) each pseudo-real meets two:
+ * its twin-only points' ratios are Student's t with one degree of freedom,
+ * which must be mapped to normal scores as the real's (t with two) are.
+ * Under the null (real and twins iid N(0, 1), 20 twin-only points) the
+ * null's mean G and the real's mean G then agree (both 1 in expectation:
+ * z^2 of a normal score). Until 2026-12-01 the mapping needed three twins,
+ * so at S = 3 the null's z were the raw t_1 (Cauchy), their capped squares
+ * about 4 x 40 / pi each: a null mean near 50 for a real G near 1, a G
+ * test that could never reject (the sgap review). S = 4 was right and
+ * stays so. */
+static void test_compare_null_three_twins(void **state)
+{
+    const int n = 20, R = 400;
+    const double alpha = 0.05 / 24.0;
+    sg_plist_t pl;
+    fnav_rng_t rng;
+    double real[20], tw[4 * 20];
+    int j, r, s, S;
+    (void)state;
+    memset(&pl, 0, sizeof pl);
+    for (j = 0; j < n; j++) {
+        sg_point_t p;
+        memset(&p, 0, sizeof p);
+        p.dom = SG_TIME;
+        p.kind = SG_TIME_TREND;
+        p.nblk = 1;
+        p.x_hi = 1.0;
+        assert_int_equal(sg_plist_add(&pl, &p), 0);
+    }
+    fnav_rng_seed(&rng, 17u, 2u);
+    for (S = 3; S <= 4; S++) {
+        double gn = 0.0, gr = 0.0;
+        for (r = 0; r < R; r++) {
+            sg_cmp_t c;
+            for (j = 0; j < n; j++) {
+                real[j] = (double)fnav_rng_gauss(&rng);
+            }
+            for (s = 0; s < S * n; s++) {
+                tw[s] = (double)fnav_rng_gauss(&rng);
+            }
+            assert_int_equal(sg_compare(&pl, real, tw, S, NULL, NULL, alpha, &c), 0);
+            gn += c.null_mean;
+            gr += c.G;
+            sg_cmp_free(&c);
+        }
+        gn /= (double)R;
+        gr /= (double)R;
+        fprintf(stderr, "%d twins: mean G of the real %.3f, of the null %.3f (both 1 in expectation)\n", S, gr, gn);
+        /* each mean is of 400 x 20 squared normal scores (sd about 0.016);
+         * a t_3 or t_2 tail (the normal scores' max |z| of 40 for the
+         * rare huge t) adds a little spread: 0.15 is many times that */
+        assert_true(fabs(gr - 1.0) < 0.15);
+        assert_true(fabs(gn - 1.0) < 0.15);
+    }
+    sg_plist_free(&pl);
+}
+
 static void test_split_disjoint(void **state)
 {
     int sandwich;
@@ -1444,6 +1502,69 @@ static void test_time_fit_thermal_se(void **state)
     FNAV_ASSERT_CLOSE(f.model.e[k].se[0] / fabs(f.model.e[k].p[0]), 1.0 / sqrt(swy2), 0.0, 0.01);
 }
 
+/* The warm-up's time constant is searched in ln T from 10 s to twice the
+ * segment's end (hx_simgap_fit.c time_fit): here 10 s to 6000 s (the
+ * 3000-s log of drift_table). A drift that is still a ramp at the end (the
+ * warm-up's long-time-constant limit) puts T on the longest: it is then
+ * only a lower limit, and a warm-up done within a few seconds (T = 1 s) on
+ * the shortest, only an upper limit; a warm-up of 500 s is inside. The fit
+ * says which (at_bound, lo, hi); the value itself is unchanged (reporting
+ * only). Until 2026-12-01 a T at a bound was reported as a fitted value
+ * (the sgap review). */
+static void test_thermal_tau_at_bound(void **state)
+{
+    sg_chmodel_t m;
+    sg_effect_t e;
+    sg_fit_t f;
+    int with[1] = {FNAV_EFFECT_THERMAL}, k;
+    (void)state;
+    /* a ramp: T at the longest */
+    memset(&m, 0, sizeof m);
+    memset(&e, 0, sizeof e);
+    e.id = FNAV_EFFECT_RAMP;
+    e.p[0] = 3e-7;
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    fit_drift_on(&m, with, 1, &f);
+    k = sg_model_find(&f.model, FNAV_EFFECT_THERMAL);
+    assert_true(k >= 0);
+    FNAV_ASSERT_CLOSE(f.model.e[k].lo[2], 10.0, 0.0, 1e-12);
+    FNAV_ASSERT_CLOSE(f.model.e[k].hi[2], 6000.0, 0.0, 1e-12);
+    FNAV_ASSERT_CLOSE(f.model.e[k].p[2], 6000.0, 0.0, SG_BOUND_REL);
+    assert_int_equal(f.model.e[k].at_bound[2], 1);
+    assert_int_equal(f.model.e[k].at_bound[0], 0);
+    assert_true(f.model.e[k].p[0] > 0.0);
+    /* a warm-up over in seconds: T at the shortest */
+    memset(&m, 0, sizeof m);
+    memset(&e, 0, sizeof e);
+    e.id = FNAV_EFFECT_THERMAL;
+    e.p[0] = 2e-4;
+    e.p[1] = 10.0;
+    e.p[2] = 1.0;
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    fit_drift_on(&m, with, 1, &f);
+    k = sg_model_find(&f.model, FNAV_EFFECT_THERMAL);
+    assert_true(k >= 0);
+    FNAV_ASSERT_CLOSE(f.model.e[k].p[2], 10.0, 0.0, SG_BOUND_REL);
+    assert_int_equal(f.model.e[k].at_bound[2], -1);
+    /* inside: no bound */
+    e.p[2] = 500.0;
+    memset(&m, 0, sizeof m);
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    fit_drift_on(&m, with, 1, &f);
+    k = sg_model_find(&f.model, FNAV_EFFECT_THERMAL);
+    FNAV_ASSERT_CLOSE(f.model.e[k].p[2], 500.0, 0.0, 1e-2);
+    assert_int_equal(f.model.e[k].at_bound[2], 0);
+    FNAV_ASSERT_CLOSE(f.model.e[k].hi[2], 6000.0, 0.0, 1e-12);
+    /* the rule itself: within 0.1 % of a bound, either side */
+    assert_int_equal(sg_param_at_bound(10.0, 10.0, 6000.0), -1);
+    assert_int_equal(sg_param_at_bound(10.009, 10.0, 6000.0), -1);
+    assert_int_equal(sg_param_at_bound(10.02, 10.0, 6000.0), 0);
+    assert_int_equal(sg_param_at_bound(5995.0, 10.0, 6000.0), 1);
+    assert_int_equal(sg_param_at_bound(5990.0, 10.0, 6000.0), 0);
+    assert_int_equal(sg_param_at_bound(6000.0, 0.0, 0.0), 0); /* not searched */
+    assert_int_equal(sg_param_at_bound((double)NAN, 10.0, 6000.0), 0);
+}
+
 /* The spread a random drift gives the time points (the prescreen's
  * deviance): for a rate random walk K W(t), the least-squares slope over L
  * has variance 6 K^2 / (5 L), the P2 coefficient 5 K^2 L / 42, and the
@@ -1550,6 +1671,35 @@ static void test_rrw_ml(void **state)
     assert_true(m.e[sg_model_find(&m, FNAV_EFFECT_RRW)].p[0] == K1);
     free(x);
     free(xr);
+}
+
+/* sg_rrw_ml searches K within a factor 8 of the Allan fit's: started 100x
+ * too high, the likelihood's optimum lies below the search and K ends at
+ * its lower end, flagged as such (at_bound -1: only an upper limit), with
+ * the interval; started 3x too high it is inside (at_bound 0). */
+static void test_rrw_ml_at_bound(void **state)
+{
+    const double fs = 50.0, N = 1e-3, K = 5e-5;
+    const long n = 100000;
+    double *x = malloc((size_t)n * sizeof *x);
+    sg_chmodel_t m;
+    sg_segs_t segs;
+    int k;
+    (void)state;
+    assert_non_null(x);
+    sg_segs_split(n, 0.6, 1, &segs);
+    white_rrw(x, n, fs, N, K, 11u, 100.0 * K, &m);
+    assert_int_equal(sg_rrw_ml(x, &segs, SG_FIT, fs, &m), 0);
+    k = sg_model_find(&m, FNAV_EFFECT_RRW);
+    FNAV_ASSERT_CLOSE(m.e[k].lo[0], 100.0 * K / 8.0, 0.0, 1e-9);
+    FNAV_ASSERT_CLOSE(m.e[k].hi[0], 800.0 * K, 0.0, 1e-9);
+    FNAV_ASSERT_CLOSE(m.e[k].p[0], 100.0 * K / 8.0, 0.0, SG_BOUND_REL);
+    assert_int_equal(m.e[k].at_bound[0], -1);
+    white_rrw(x, n, fs, N, K, 11u, 3.0 * K, &m);
+    assert_int_equal(sg_rrw_ml(x, &segs, SG_FIT, fs, &m), 0);
+    k = sg_model_find(&m, FNAV_EFFECT_RRW);
+    assert_int_equal(m.e[k].at_bound[0], 0);
+    free(x);
 }
 
 /* The likelihood's K over many logs: 24 seeds of white noise plus a walk
@@ -1879,6 +2029,11 @@ static void test_fit_ar1_in_catalogue(void **state)
     assert_true(k >= 0);
     assert_true(f.model.e[k].p[1] > 0.0); /* the AR(1) is kept: it carries most of the variance */
     assert_true(f.model.e[k].p[0] >= info->params[0].lo);
+    /* the true 0.5 ms lies below the search (1 ms to 1 s): the time is
+     * its lower bound and says so (bounds.tau_s in the JSON) */
+    FNAV_ASSERT_CLOSE(f.model.e[k].lo[0], info->params[0].lo, 0.0, 1e-12);
+    FNAV_ASSERT_CLOSE(f.model.e[k].hi[0], 1.0, 0.0, 1e-12);
+    assert_int_equal(f.model.e[k].at_bound[0], -1);
     assert_int_equal(sg_model_imuerr(&f.model, fs, 1u, &cfg), 0);
     assert_int_equal(fnav_imuerr_init(&sim, &cfg), FNAV_OK);
 }
@@ -2414,6 +2569,92 @@ static void test_ar1_tau_at_min(void **state)
     free(r);
 }
 
+/* A thermal effect whose time constant the fit left at a bound of its
+ * search is reported as such: the summary's effect text says "tau at the
+ * search bound 6000 s: only a lower limit" (at the shortest: an upper
+ * limit), the JSON's effect objects give bounds.tau_s {lo, hi, at_bound}
+ * and no standard error for it; a T inside gives at_bound null and its
+ * value as before. An rrw K at an end of its likelihood search likewise.
+ * Until 2026-12-01 the summary said "tau 6e+03 s" as if fitted (the sgap
+ * review). */
+static void test_json_summary_thermal_tau_at_bound(void **state)
+{
+    sg_result_t *r = hand_result();
+    sg_chres_t *c = &r->ch[0];
+    sg_effect_t t;
+    cJSON *j, *sel, *b, *se;
+    char *txt, eb[256];
+    (void)state;
+    memset(&t, 0, sizeof t);
+    t.id = FNAV_EFFECT_THERMAL;
+    t.p[0] = 2.4e-3;
+    t.p[1] = 10.0;
+    t.p[2] = 6000.0;
+    t.se[0] = 1e-4;
+    t.se[2] = 50.0; /* a number a fit at a bound should not give: not written */
+    t.lo[2] = 10.0;
+    t.hi[2] = 6000.0;
+    t.at_bound[2] = 1;
+    assert_int_equal(sg_model_set(&c->final, &t), 0);
+    c->sel_id[0] = FNAV_EFFECT_THERMAL; /* in place of the jumps */
+    j = json_of(r);
+    sel = cJSON_GetArrayItem(cJSON_GetObjectItem(cJSON_GetObjectItem(cJSON_GetArrayItem(cJSON_GetObjectItem(j,
+                                                                                                          "channels"),
+                                                                                        0),
+                                                                     "attribution"),
+                                                 "selected"),
+                             0);
+    assert_non_null(sel);
+    assert_string_equal(cJSON_GetObjectItem(sel, "effect")->valuestring, "thermal");
+    b = cJSON_GetObjectItem(cJSON_GetObjectItem(sel, "bounds"), "tau_s");
+    assert_non_null(b);
+    assert_true(cJSON_GetObjectItem(b, "lo")->valuedouble == 10.0);
+    assert_true(cJSON_GetObjectItem(b, "hi")->valuedouble == 6000.0);
+    assert_string_equal(cJSON_GetObjectItem(b, "at_bound")->valuestring, "upper");
+    assert_null(cJSON_GetObjectItem(cJSON_GetObjectItem(sel, "bounds"), "coef"));
+    se = cJSON_GetObjectItem(sel, "se");
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(se, "tau_s")));
+    assert_true(cJSON_GetObjectItem(se, "coef")->valuedouble == 1e-4);
+    assert_true(cJSON_GetObjectItem(cJSON_GetObjectItem(sel, "params"), "tau_s")->valuedouble == 6000.0);
+    cJSON_Delete(j);
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "tau at the search bound 6000 s: only a lower limit)"));
+    assert_null(strstr(txt, "tau 6e+03 s"));
+    free(txt);
+    /* at the shortest: an upper limit */
+    t.p[2] = 10.0;
+    t.at_bound[2] = -1;
+    sg_effect_text(eb, sizeof eb, 0, &t);
+    assert_non_null(strstr(eb, "tau at the search bound 10 s: only an upper limit)"));
+    /* inside: the value, at_bound null, the se written */
+    t.p[2] = 500.0;
+    t.at_bound[2] = 0;
+    assert_int_equal(sg_model_set(&c->final, &t), 0);
+    sg_effect_text(eb, sizeof eb, 0, &t);
+    assert_non_null(strstr(eb, "tau 500 s)"));
+    j = json_of(r);
+    sel = cJSON_GetArrayItem(cJSON_GetObjectItem(cJSON_GetObjectItem(cJSON_GetArrayItem(cJSON_GetObjectItem(j,
+                                                                                                          "channels"),
+                                                                                        0),
+                                                                     "attribution"),
+                                                 "selected"),
+                             0);
+    b = cJSON_GetObjectItem(cJSON_GetObjectItem(sel, "bounds"), "tau_s");
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(b, "at_bound")));
+    assert_true(cJSON_GetObjectItem(cJSON_GetObjectItem(sel, "se"), "tau_s")->valuedouble == 50.0);
+    cJSON_Delete(j);
+    /* an rrw K at the lower end of its likelihood search */
+    memset(&t, 0, sizeof t);
+    t.id = FNAV_EFFECT_RRW;
+    t.p[0] = 1e-5;
+    t.lo[0] = 1e-5;
+    t.hi[0] = 6.4e-4;
+    t.at_bound[0] = -1;
+    sg_effect_text(eb, sizeof eb, 0, &t);
+    assert_non_null(strstr(eb, "at the search bound: only an upper limit)"));
+    free(r);
+}
+
 /* Without a second fold (--contiguous, or a fold 2 that failed) the ends'
  * deviance drop is NaN: the step line gives the held-out deviance drop
  * alone. Until 2026-12-01 it read "deviance drop 400 (ends nan)" (the 10-min
@@ -2630,6 +2871,7 @@ int main(void)
         cmocka_unit_test(test_lattice),
         cmocka_unit_test(test_rayleigh_golden),
         cmocka_unit_test(test_compare_twin_only_level),
+        cmocka_unit_test(test_compare_null_three_twins),
         cmocka_unit_test(test_compare_golden),
         cmocka_unit_test(test_allan_theory_var_noise_type),
         cmocka_unit_test(test_accept_rule),
@@ -2648,6 +2890,8 @@ int main(void)
         cmocka_unit_test(test_time_domain_model),
         cmocka_unit_test(test_time_fit_drifts),
         cmocka_unit_test(test_time_fit_thermal_se),
+        cmocka_unit_test(test_thermal_tau_at_bound),
+        cmocka_unit_test(test_rrw_ml_at_bound),
         cmocka_unit_test(test_jumps_rate_detection),
         cmocka_unit_test(test_time_var_rrw),
         cmocka_unit_test(test_time_deviance),
@@ -2666,6 +2910,7 @@ int main(void)
         cmocka_unit_test(test_summary_no_negative_zero_percent),
         cmocka_unit_test(test_summary_contiguous_no_ends_nan),
         cmocka_unit_test(test_ar1_tau_at_min),
+        cmocka_unit_test(test_json_summary_thermal_tau_at_bound),
         cmocka_unit_test(test_summary_verdict_labels_final_refit),
         cmocka_unit_test(test_summary_not_attempted_says_why),
         cmocka_unit_test(test_summary_defines_g_as_computed),
