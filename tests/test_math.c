@@ -156,6 +156,42 @@ static void test_euler_gimbal(void **state)
     FNAV_ASSERT_CLOSE(e.v[1], k_pi / 2.0, 1e-3, 0.0);
 }
 
+/* At and near pitch = +-90 deg, roll and yaw are not defined one by one
+ * (only yaw - roll at +90 deg, yaw + roll at -90 deg), but the three angles
+ * returned must still describe the quaternion's rotation: the DCM rebuilt
+ * from them equals the quaternion's. The pitch is then known to about
+ * sqrt(eps) rad (asin near 1), so the tolerance is 8 sqrt(eps); a wrong pair
+ * is off by O(1) (from_euler(-pi, pi/2, 0) came back as (0, pi/2, 0), which
+ * maps body y to -y). */
+static void test_euler_gimbal_rotation(void **state)
+{
+    static const double cases[][3] = {
+        { -3.14159265358979, 1.57079632679490, 0.0 }, { 0.2, 1.57079632679490, 0.5 },
+        { 2.9, 1.57079632679490, -2.8 },              { -3.0, -1.57079632679490, 0.1 },
+        { 0.7, -1.57079632679490, 3.1 },              { 1.0, 1.57079632679490 - 2e-4, -1.0 },
+        { -2.0, -1.57079632679490 + 2e-4, 2.5 },     { 3.0, 1.57079632679490 - 1e-6, -3.0 },
+    };
+    const double tol = 8.0 * sqrt((double)FNAV_REAL_EPSILON);
+    size_t i;
+    int r, c;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        fnav_quat_t q = fnav_quat_from_euler((fnav_real_t)cases[i][0], (fnav_real_t)cases[i][1],
+                                             (fnav_real_t)cases[i][2]);
+        fnav_vec3_t e = fnav_quat_to_euler(q);
+        fnav_mat3_t want = fnav_quat_to_dcm(q);
+        fnav_mat3_t got = fnav_quat_to_dcm(fnav_quat_from_euler(e.v[0], e.v[1], e.v[2]));
+        assert_true(fnav_vec3_isfinite(e));
+        assert_true((double)e.v[0] > -k_pi - 1e-6 && (double)e.v[0] <= k_pi + 1e-6);
+        assert_true((double)e.v[2] > -k_pi - 1e-6 && (double)e.v[2] <= k_pi + 1e-6);
+        for (r = 0; r < 3; r++) {
+            for (c = 0; c < 3; c++) {
+                FNAV_ASSERT_CLOSE(got.m[r][c], want.m[r][c], tol, 0.0);
+            }
+        }
+    }
+}
+
 static void test_wrap_and_normalize(void **state)
 {
     fnav_quat_t z = fnav_quat(FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0), FNAV_R(0.0));
@@ -308,6 +344,7 @@ int main(void)
         cmocka_unit_test(test_quat_compose),
         cmocka_unit_test(test_euler),
         cmocka_unit_test(test_euler_gimbal),
+        cmocka_unit_test(test_euler_gimbal_rotation),
         cmocka_unit_test(test_wrap_and_normalize),
         cmocka_unit_test(test_exp_neg),
         cmocka_unit_test(test_one_minus_exp_neg),

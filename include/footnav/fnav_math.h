@@ -362,12 +362,28 @@ static inline fnav_quat_t fnav_quat_from_euler(fnav_real_t roll, fnav_real_t pit
                      cr * cp * sy - sr * sp * cy);
 }
 
-/** ZYX Euler angles (rad) of q_nb: out = (roll, pitch, yaw), pitch clamped
- *  to [-pi/2, pi/2] before asin so that rounding never yields NaN. */
+/** ZYX Euler angles (rad) of q_nb: out = (roll, pitch, yaw), with
+ *  sin(pitch) = 2 (w y - x z) clamped to [-1, 1] before asin so that
+ *  rounding never yields NaN. Within sqrt(8 eps) rad of pitch +-90 deg
+ *  (|sin(pitch)| >= 1 - 4 eps: 0.056 deg in float) roll and yaw's atan2
+ *  arguments are of the size of their rounding, and only yaw - roll (pitch
+ *  +90 deg) or yaw + roll (-90 deg) is defined: roll is then 0 and yaw that
+ *  sum or difference, 2 atan2(z -+ x, w +- y), so the three angles still
+ *  give q's rotation (the convention of PX4's matrix::Euler). */
 static inline fnav_vec3_t fnav_quat_to_euler(fnav_quat_t q)
 {
     fnav_real_t w = q.q[0], x = q.q[1], y = q.q[2], z = q.q[3];
     fnav_real_t sp = fnav_clamp(FNAV_R(2.0) * (w * y - x * z), -FNAV_R(1.0), FNAV_R(1.0));
+    if (fnav_fabs(sp) >= FNAV_R(1.0) - FNAV_R(4.0) * FNAV_REAL_EPSILON) {
+        fnav_real_t s = sp > FNAV_R(0.0) ? FNAV_R(1.0) : -FNAV_R(1.0);
+        fnav_real_t yaw = FNAV_R(2.0) * fnav_atan2(z - s * x, w + s * y); /* (-2 pi, 2 pi] */
+        if (yaw > FNAV_PI) {
+            yaw -= FNAV_R(2.0) * FNAV_PI;
+        } else if (yaw <= -FNAV_PI) {
+            yaw += FNAV_R(2.0) * FNAV_PI;
+        }
+        return fnav_vec3(FNAV_R(0.0), s * FNAV_R(0.5) * FNAV_PI, yaw);
+    }
     return fnav_vec3(fnav_atan2(FNAV_R(2.0) * (w * x + y * z), FNAV_R(1.0) - FNAV_R(2.0) * (x * x + y * y)),
                      fnav_asin(sp),
                      fnav_atan2(FNAV_R(2.0) * (w * z + x * y), FNAV_R(1.0) - FNAV_R(2.0) * (y * y + z * z)));
