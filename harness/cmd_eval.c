@@ -63,6 +63,8 @@ typedef struct {
     char plot_link[3 * HX_PLOT_PATH_SIZE]; /* the same as results.md links it (percent-encoded, md_link()) */
     hx_evplot_set_t fig;  /* the walks of the section being written */
     int ipol_fig;         /* eval-ipol.png was drawn (linked after the section's summary) */
+    char **warned;        /* the failures warned about, "PATH: reason" each (fail()) */
+    int n_warned, cap_warned;
 } ev_t;
 
 /* calloc that ends eval on exhaustion (the lists grow with the data). */
@@ -276,31 +278,68 @@ static const char *after_path(const char *msg, const char *path, char *buf, size
     return *msg == ' ' ? msg + 1 : msg;
 }
 
-/* A failed run: warned with its path (unless warn is 0: said already),
- * counted (eval's exit status and the targets' note) and its reason kept
- * for the row of its table. */
-static void fail_warn(ev_t *ev, const char *path, char *why, size_t why_size, const char *msg, int warn)
+/* 1 when the failure "PATH: reason" was warned about already, else 0 after
+ * keeping it (eval ends on exhaustion, as ev_calloc). */
+static int warned_before(ev_t *ev, const char *path, const char *reason)
+{
+    const size_t lp = strlen(path), lr = strlen(reason);
+    char *w;
+    int i;
+    for (i = 0; i < ev->n_warned; i++) {
+        w = ev->warned[i];
+        if (strncmp(w, path, lp) == 0 && w[lp] == ':' && w[lp + 1] == ' ' && strcmp(w + lp + 2, reason) == 0) {
+            return 1;
+        }
+    }
+    if (ev->n_warned == ev->cap_warned) {
+        ev->cap_warned = ev->cap_warned > 0 ? 2 * ev->cap_warned : 16;
+        ev->warned = (char **)ev_realloc(ev->warned, (size_t)ev->cap_warned, sizeof *ev->warned);
+    }
+    w = (char *)ev_calloc(lp + lr + 3, 1);
+    memcpy(w, path, lp);
+    memcpy(w + lp, ": ", 2);
+    memcpy(w + lp + 2, reason, lr + 1);
+    ev->warned[ev->n_warned++] = w;
+    return 0;
+}
+
+static void warned_free(ev_t *ev)
+{
+    int i;
+    for (i = 0; i < ev->n_warned; i++) {
+        free(ev->warned[i]);
+    }
+    free(ev->warned);
+    ev->warned = NULL;
+    ev->n_warned = ev->cap_warned = 0;
+}
+
+/* A failed run: warned with its path, counted (eval's exit status and the
+ * targets' note) and its reason kept for the row of its table. A fault
+ * warned about already (the same file, the same reason) is not warned
+ * again: an events file's fault that both feet's rows give (one foot's
+ * events missing or not pairs: that foot's and the other foot's run fail on
+ * it), a walk that fails each experiment's repeat as its main run. Until
+ * 2026-12-01 each failed run warned: twice per events file, up to eleven
+ * times per walk. */
+static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const char *msg)
 {
     char buf[HX_ERR_SIZE];
+    const char *reason = after_path(msg, path, buf, sizeof buf);
     size_t i;
-    if (warn) {
-        hx_warn("eval", "%s: %s", path, after_path(msg, path, buf, sizeof buf));
+    if (!warned_before(ev, path, reason)) {
+        hx_warn("eval", "%s: %s", path, reason);
     }
     ev->failures++;
     if (why == NULL) {
         return;
     }
-    snprintf(why, why_size, "%s", after_path(msg, path, buf, sizeof buf));
+    snprintf(why, why_size, "%s", reason);
     for (i = 0; why[i] != '\0'; i++) {
         if (why[i] == '|' || why[i] == '\n') {
             why[i] = '/'; /* would break the Markdown table */
         }
     }
-}
-
-static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const char *msg)
-{
-    fail_warn(ev, path, why, why_size, msg, 1);
 }
 
 /* The row of a walk that gave no figures, when its table is written: a
@@ -1310,11 +1349,6 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
         fprintf(ev->md, "|---|---|---:|---:|---:|---:|---:|---:|---|\n");
     }
     for (i = 0; i < n; i++) {
-        /* the error of the events file, which serves both feet, that the
-         * left foot's row gave (no TrialBoundaries pair; not valid JSON, too
-         * large): the right foot's row and failed run get it without a
-         * second warning (warned once per foot until 2026-12-01) */
-        char ev_warned[HX_ERR_SIZE] = "";
         for (foot = 0; foot < 2; foot++) {
             static long evs[256][2], oevs[256][2];
             long tb[2], ub[2], otb[2], oub[2];
@@ -1335,9 +1369,10 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             /* the other foot's swings, to find annotations with both feet in the air */
             noe = ne < 0 ? 0 : read_events(jpath, oevs, 256, foot ? "LeftFootEvents" : "RightFootEvents", otb, oub,
                                             oerr, sizeof oerr);
+            /* an events file's fault (it serves both feet) is warned once:
+             * fail() */
             if (ne < 0) {
-                fail_warn(ev, jpath, note, sizeof note, err, strcmp(err, ev_warned) != 0);
-                snprintf(ev_warned, sizeof ev_warned, "%s", err);
+                fail(ev, jpath, note, sizeof note, err);
             } else if (noe < 0) {
                 /* the other foot's swings decide which of this foot's are
                  * evaluated (both feet in the air): without them the
@@ -2274,6 +2309,7 @@ int hx_cmd_eval(int argc, char **argv)
                    fp_100.files);
         fprintf(ev.md, "\n");
     }
+    warned_free(&ev); /* the runs are over: no failure to warn about after them */
     free(fp_walk);
     free(gx2_200_walk);
     free(gx2_100_walk);
@@ -2320,7 +2356,7 @@ int hx_cmd_eval(int argc, char **argv)
     }
     if (ev.failures > ev.main_failures) {
         fprintf(ev.md, "\n%d of the experiments' runs failed (the same walks repeated with other settings; named in "
-                       "the warnings).\n",
+                       "the warnings, each fault once).\n",
                 ev.failures - ev.main_failures);
     }
     hx_progress_end(&ev.prog);

@@ -62,6 +62,11 @@ if grep -q '"failed_runs":[[:space:]]*1,' "$T/exp.json" && grep -q '"failed_expe
     && grep -q '\*\*1 run(s) failed\*\*' "$T/exp.md" && grep -q "of the experiments' runs failed" "$T/exp.md"; then
     pass "a bad walk counts once; the experiments' repeats apart"
 else fail "experiments: $(grep -o '"failed[a-z_]*":[^,]*' "$T/exp.json")"; fi
+# ... and is warned about once: each of its ten failed repeats warned the same "no stride detected" again
+# until 2026-12-01 (the repeats' count is in the JSON and under the targets)
+n=$(grep -c "Measurement_2000_1_data_inert.txt: no stride detected: no closure to judge" "$T/err")
+[ "$n" -eq 1 ] && pass "a bad walk's fault is warned once, not once per experiment run" ||
+    fail "a bad walk's fault with the experiments on: warned $n times"
 # the rate experiment's row of a walk that failed: dashes, as every table
 # (until 2026-11-29 "nan | nan | nan")
 mkdir -p "$T/expx/xio_ngimu_gait"
@@ -143,6 +148,30 @@ expect_err "vicon_3dmgx3/far_imu.csv: no motion-capture position columns" "no po
 # recording (each foot keeps its row and its failed run, above)
 n=$(grep -c "1-1.json: the events file has no TrialBoundaries pair" "$T/err")
 [ "$n" -eq 1 ] && pass "no TrialBoundaries: warned once per recording" || fail "no TrialBoundaries: warned $n times"
+rm -rf "$B"
+# an events file's fault that only one foot's events have: the foot missing (no LeftFootEvents, no
+# RightFootEvents) or one of its pairs not a pair (an end before its start, NaN). The foot itself fails on it,
+# and so does the other foot, whose evaluation needs them (both feet in the air): the same fault was warned twice
+# until 2026-12-01, once per foot. Once now, naming the events file and what is wrong; each foot keeps its row
+# and its failed run. The logs are empty placeholders: the events file is read first.
+B="$T/evonce"; ID="$B/ipol_gait_xsens"
+mkdir -p "$ID"
+for t in 1-1 1-2 1-3 1-4; do : >"$ID/${t}_lf.txt"; : >"$ID/${t}_rf.txt"; done
+printf '{"TrialBoundaries": [0, 100], "RightFootEvents": [[30, 40]]}\n' >"$ID/1-1.json"
+printf '{"TrialBoundaries": [0, 100], "LeftFootEvents": [[10, 20]]}\n' >"$ID/1-2.json"
+printf '{"TrialBoundaries": [0, 100], "LeftFootEvents": [[10, 20], [50, 40]], "RightFootEvents": [[30, 40]]}\n' >"$ID/1-3.json"
+printf '{"TrialBoundaries": [0, 100], "LeftFootEvents": [[10, 20]], "RightFootEvents": [[30, NaN]]}\n' >"$ID/1-4.json"
+expect_exit 1 "eval: events files with one foot's events missing or bad" "$H" eval --no-experiments --no-plots \
+    --data "$B" --out "$T/evonce.md" --json "$T/evonce.json"
+for c in "1-1.json: the events file has no LeftFootEvents" "1-2.json: the events file has no RightFootEvents" \
+    "1-3.json: LeftFootEvents\[1\] is not a pair of sample indices" \
+    "1-4.json: RightFootEvents\[0\] is not a pair of sample indices"; do
+    n=$(grep -c "^harness eval: warning: $ID/$c\$" "$T/err")
+    [ "$n" -eq 1 ] && pass "warned once per recording: $c" || fail "warned $n times: $c"
+done
+n=$(grep -c "^| 1-[1-4] | \(left\|right\) | - | - | - | - | - | - | not run: .*\(FootEvents\|sample indices\) |$" "$T/evonce.md")
+[ "$n" -eq 8 ] && json "$T/evonce.json" 'j["failed_runs"] == 8' && pass "each foot keeps its row and its failed run (8)" ||
+    fail "one foot's events at fault: $n rows, $(grep -o '"failed_runs":[^,]*' "$T/evonce.json")"
 rm -rf "$B"
 
 # a data directory with its MANIFEST.md and set folders but not one walk
