@@ -895,6 +895,15 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
         if (stride_errors(&t, &g, &r) != 0) {
             no_strides(ev, path, note, sizeof note);
             not_run_row(ev, write, nm, 6, note);
+        } else if (!(r.path > 0.0)) {
+            /* the truth's scored strides all at the first one's position:
+             * no measured path, so no final % to judge (its "nan" made the
+             * section's median and mean nan, exit 0, until 2026-12-01), as
+             * a judged closed walk without a stride (no_closure) */
+            fail(ev, gpath, note, sizeof note,
+                 "the truth's strides span no path (all at the first stride's position): no final-stride error "
+                 "as a share of it");
+            not_run_row(ev, write, nm, 6, note);
         } else {
             stride_notes(note, sizeof note, &g, &r);
             if (write) {
@@ -2030,6 +2039,7 @@ int hx_cmd_eval(int argc, char **argv)
         for (i = 0; i < nother; i++) {
             hx_traj_t t;
             hx_nav_summary_t s;
+            char pct[32];
             other3[i] = other_hz[i] = (double)NAN;
             snprintf(p, sizeof p, "%s/%.300s", ev.data, other[i]);
             if (replay(&ev, p, &ev.cfg, 0.0, 1, &t, &s, note, sizeof note) != 0) {
@@ -2042,9 +2052,11 @@ int hx_cmd_eval(int argc, char **argv)
                          "below the detector's threshold", note[0] ? "; " : "", 100.0 * s.stance_fraction);
             }
             other_hz[i] = t.rate_hz;
-            fprintf(ev.md, "| %s | %.0f | %.2f | %.3f | %.3f | %.2f | %+.3f | %.1f | %ld | %s |\n", other[i],
-                    t.rate_hz, s.path_m, s.end_h_m, s.end_3d_m, s.end_3d_pct, s.vertical_m,
-                    100.0 * s.stance_fraction, s.strides, note);
+            /* a walk without a stride has no path: its 3-D % is none ("-";
+             * "nan" until 2026-12-01) */
+            fprintf(ev.md, "| %s | %.0f | %.2f | %.3f | %.3f | %s | %+.3f | %.1f | %ld | %s |\n", other[i],
+                    t.rate_hz, s.path_m, s.end_h_m, s.end_3d_m, fmt_v(pct, sizeof pct, "%.2f", s.end_3d_pct),
+                    s.vertical_m, 100.0 * s.stance_fraction, s.strides, note);
             if (ev.plots) {
                 hx_evplot_add_path(&ev.fig, other[i], &t);
             }
@@ -2107,13 +2119,20 @@ int hx_cmd_eval(int argc, char **argv)
         fprintf(ev.md, "\n%d trials and feet: %d expert strides, %d detected, %d missed (%d of them overlapped by a "
                        "detected swing whose events are %d samples or more away), %d spurious (target: none "
                        "missed or spurious: %s); %d expert swings left out for overlapping the other foot's "
-                       "(with them kept: %d missed, %d spurious). Event "
-                       "timing: median |FO error| %.1f samples (bias %+.1f, 90th percentile "
-                       "%.1f), median |FS error| %.1f samples (bias %+.1f, 90th percentile %.1f) (target <= 2: %s).\n\n",
+                       "(with them kept: %d missed, %d spurious). ",
                 ip.trials, ip.expected, ip.detected, ip.missed, ip.off_time, IPOL_TOL, ip.spurious,
-                met(ip.missed == 0 && ip.spurious == 0), ip.both_feet, ip.strict_missed, ip.strict_spurious,
-                ip.fo_med, ip.fo_bias, ip.fo_p90, ip.fs_med, ip.fs_bias, ip.fs_p90,
-                met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
+                met(ip.missed == 0 && ip.spurious == 0), ip.both_feet, ip.strict_missed, ip.strict_spurious);
+        if (ip.n_fo > 0) {
+            fprintf(ev.md, "Event timing: median |FO error| %.1f samples (bias %+.1f, 90th percentile %.1f), median "
+                           "|FS error| %.1f samples (bias %+.1f, 90th percentile %.1f) (target <= 2: %s).\n\n",
+                    ip.fo_med, ip.fo_bias, ip.fo_p90, ip.fs_med, ip.fs_bias, ip.fs_p90,
+                    met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
+        } else {
+            /* every expert swing missed: no event was timed ("nan samples"
+             * until 2026-12-01) */
+            fprintf(ev.md, "Event timing: no expert swing detected, no event to time (target <= 2: %s).\n\n",
+                    met(0));
+        }
     }
     if (ev.ipol_fig) {
         fprintf(ev.md, "![ipol_gait_xsens: gait-event timing error](%s/eval-ipol.png)\n\nEvery matched event's "
@@ -2341,8 +2360,10 @@ int hx_cmd_eval(int argc, char **argv)
         }
         fprintf(ev.md, "| ipol: no missed or spurious strides | %s | %s |\n", v,
                 target(ip.trials, ip.missed == 0 && ip.spurious == 0));
-        if (ip.trials > 0) {
+        if (ip.trials > 0 && ip.n_fo > 0) {
             snprintf(v, sizeof v, "FO %.1f, FS %.1f", ip.fo_med, ip.fs_med);
+        } else if (ip.trials > 0) {
+            snprintf(v, sizeof v, "no event timed"); /* "FO nan, FS nan" until 2026-12-01 */
         } else {
             snprintf(v, sizeof v, "-");
         }

@@ -174,6 +174,41 @@ n=$(grep -c "^| 1-[1-4] | \(left\|right\) | - | - | - | - | - | - | not run: .*\
     fail "one foot's events at fault: $n rows, $(grep -o '"failed_runs":[^,]*' "$T/evonce.json")"
 rm -rf "$B"
 
+# --- no "nan" in results.md where a figure cannot be computed (the tables and summaries print "-" or say why;
+# until 2026-12-01 these printed "nan", exit 0): an unjudged closed walk without a stride (path 0, so no 3-D %),
+# an ipol trial whose expert swings are all missed (no event to time: the summary's and the target's medians),
+# and a footprint walk whose truth strides all stand at the first one's position (no measured path: its final
+# % was nan, and with it the section's median and mean; a failed run now, as a judged closed walk without a stride)
+B="$T/nofig"
+mkdir -p "$B/ipol_gait_xsens" "$B/openshoe_square2" "$B/pyshoe_vicon_llio/own_3dmgx5_footprints"
+for f in lf rf; do
+    awk 'BEGIN { print "Acquisition frequency: 100 Hz"; print "PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\tMag_X\tMag_Y\tMag_Z"
+                 for (i = 0; i < 3000; i++) printf "%d.0\t0.1\t0.2\t9.81\t0.001\t0.002\t0.001\t0.5\t0\t-0.4\n", i }' \
+        >"$B/ipol_gait_xsens/1-1_$f.txt"
+done
+printf '{"TrialBoundaries": [100, 2900], "UTurnBoundaries": [1400, 1500], "LeftFootEvents": [[500, 550], [700, 750]], "RightFootEvents": [[600, 650], [800, 850]]}\n' \
+    >"$B/ipol_gait_xsens/1-1.json"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) printf "%.3f,0.01,0.02,9.81,0.001,0,0\n", i / 100 }' \
+    >"$B/openshoe_square2/still.csv"
+"$H" sim --motion stand:5,walk:10,stand:3 --rate 200 --out "$B/pyshoe_vicon_llio/own_3dmgx5_footprints/same_imu.csv" \
+    >/dev/null 2>&1 || fail "sim of a walk for eval"
+printf 'strideIndex,time,x,y\n100,0.5,1.0,2.0\n1500,7.5,1.0,2.0\n2500,12.5,1.0,2.0\n' \
+    >"$B/pyshoe_vicon_llio/own_3dmgx5_footprints/same_strides_gcp.csv"
+expect_exit 1 "eval: figures that cannot be computed" "$H" eval --no-experiments --no-plots --data "$B" \
+    --out "$T/nofig.md" --json "$T/nofig.json"
+if grep -qi "nan" "$T/nofig.md"; then fail "nan in results.md: $(grep -i 'nan' "$T/nofig.md")"; else pass "no nan in results.md"; fi
+grep -q "^| openshoe_square2/still.csv | 100 | 0.00 | 0.000 | 0.000 | - | +0.000 | " "$T/nofig.md" &&
+    pass "a closed walk without a path: its 3-D % a dash" || fail "still closed walk: $(grep '^| openshoe_square2' "$T/nofig.md")"
+grep -q "^| same | - | - | - | - | - | - | not run: the truth's strides span no path (all at the first stride's position): no final-stride error as a share of it |$" \
+    "$T/nofig.md" && json "$T/nofig.json" 'j["failed_runs"] == 1 and j["footprints_final_pct_median"] is None' &&
+    pass "a footprint truth without a path: a failed run, said" || fail "truth without a path: $(grep '^| same' "$T/nofig.md")"
+expect_err "same_strides_gcp.csv: the truth's strides span no path" "a truth without a path: the truth file named"
+grep -q "Event timing: no expert swing detected, no event to time (target <= 2: \*\*not met\*\*)" "$T/nofig.md" &&
+    grep -q "^| ipol: median event timing error <= 2 samples | no event timed | \*\*not met\*\* |$" "$T/nofig.md" &&
+    json "$T/nofig.json" 'j["ipol_missed"] == 4 and j["ipol_fo_err_median"] is None' &&
+    pass "ipol without a detected swing: no event to time, said" || fail "ipol without events: $(grep 'Event timing\|event timing' "$T/nofig.md")"
+rm -rf "$B"
+
 # a data directory with its MANIFEST.md and set folders but not one walk
 # (a copy not synced): nothing to run on, exit 4, the results file left as
 # it was (it was overwritten with "no data" everywhere, exit 0)
