@@ -1609,7 +1609,7 @@ static void paired_row(ev_t *ev, const char *profile, const char *figure, const 
 {
     double *d = (double *)ev_calloc(n > 0 ? (size_t)n : 1u, sizeof *d), lo = (double)INFINITY, hi = -(double)INFINITY;
     int i, k = 0, better = 0, ties = 0;
-    char a[40], b[40], c[40];
+    char a[40], b[40], c[40], pv[40];
     for (i = 0; off != NULL && on != NULL && i < n; i++) {
         if (isfinite(off[i]) && isfinite(on[i])) {
             d[k] = off[i] - on[i];
@@ -1628,8 +1628,9 @@ static void paired_row(ev_t *ev, const char *profile, const char *figure, const 
     snprintf(a, sizeof a, fmt, hx_median(d, k));
     snprintf(b, sizeof b, fmt, lo);
     snprintf(c, sizeof c, fmt, hi);
-    fprintf(ev->md, "| %s | %s | %d | %d of %d | %s [%s, %s] | %.3f |\n", profile, figure, k, better, k - ties, a, b,
-            c, sign_test_p(better, k - ties));
+    /* every walk a tie: no sign test ("-"; "nan" until 2026-12-01) */
+    fprintf(ev->md, "| %s | %s | %d | %d of %d | %s [%s, %s] | %s |\n", profile, figure, k, better, k - ties, a, b,
+            c, fmt_v(pv, sizeof pv, "%.3f", sign_test_p(better, k - ties)));
     free(d);
 }
 

@@ -209,6 +209,20 @@ grep -q "Event timing: no expert swing detected, no event to time (target <= 2: 
     pass "ipol without a detected swing: no event to time, said" || fail "ipol without events: $(grep 'Event timing\|event timing' "$T/nofig.md")"
 rm -rf "$B"
 
+# --- the paired tables of the experiments when every walk ties (the same figure in both runs, here a footprint
+# walk whose log never moves: final error = the truth's last stride in every configuration): no untied walk for
+# the sign test, whose p printed "nan" until 2026-12-01; "-" now, as every figure that cannot be computed
+B="$T/ties"; P="$B/pyshoe_vicon_llio/own_3dmgx5_footprints"
+mkdir -p "$P"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) printf "%.3f,0,0,9.80665,0,0,0\n", i / 200 }' >"$P/still_imu.csv"
+printf 'strideIndex,time,x,y\n100,0.5,0,0\n1500,7.5,1.0,0\n2500,12.5,2.0,0\n' >"$P/still_strides_gcp.csv"
+expect_exit 0 "eval with experiments: a walk that ties in every pair" "$H" eval --no-plots --data "$B" --out "$T/ties.md"
+if grep -qi "nan" "$T/ties.md"; then fail "ties: nan in results.md: $(grep -i 'nan' "$T/ties.md")"; else pass "ties: no nan in results.md"; fi
+n=$(grep -c "^| [a-zA-Z0-9 ]* | footprints final-stride error (%) | 1 | 0 of 0 | +0.00 \[+0.00, +0.00\] | - |$" "$T/ties.md")
+[ "$n" -eq 5 ] && pass "ties: each paired row's sign test is '-' (4 profiles, 100 vs 200 Hz)" ||
+    fail "ties: $n paired rows with '-': $(grep 'footprints final-stride error (%)' "$T/ties.md")"
+rm -rf "$B"
+
 # a data directory with its MANIFEST.md and set folders but not one walk
 # (a copy not synced): nothing to run on, exit 4, the results file left as
 # it was (it was overwritten with "no data" everywhere, exit 0)
