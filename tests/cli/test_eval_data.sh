@@ -223,6 +223,22 @@ n=$(grep -c "^| [a-zA-Z0-9 ]* | footprints final-stride error (%) | 1 | 0 of 0 |
     fail "ties: $n paired rows with '-': $(grep 'footprints final-stride error (%)' "$T/ties.md")"
 rm -rf "$B"
 
+# --- the other closed walks are reported, not judged: one without a stride keeps its row (exit 0), and so do its
+# rate experiment's runs. Those were judged as a closure (openshoe_gx2's, xio's): "no stride detected: no closure
+# to judge", two failed experiment runs, exit 1 and dashes, until 2026-12-01 (a still walk at 400 Hz, above the
+# experiment's 200 Hz)
+B="$T/unjudged"
+mkdir -p "$B/openshoe_c_820hz"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 8000; i++) printf "%.4f,0.01,0.02,9.81,0.001,0,0\n", i / 400 }' \
+    >"$B/openshoe_c_820hz/walk.txt"
+expect_exit 0 "eval with experiments: an unjudged walk without a stride" "$H" eval --no-plots --data "$B" \
+    --out "$T/unjudged.md" --json "$T/unjudged.json"
+grep -q "^| openshoe_c_820hz/walk.txt (400 Hz) | 3-D closure (m) | [0-9.]* | [0-9.]* | [0-9.]* |$" "$T/unjudged.md" &&
+    json "$T/unjudged.json" 'j["failed_experiment_runs"] == 0' && ! grep -q "no closure to judge" "$T/err" &&
+    pass "an unjudged walk's rate experiment: reported, not judged" ||
+    fail "unjudged walk's experiment: $(grep '^| openshoe_c_820hz/walk.txt (' "$T/unjudged.md") $(grep warning "$T/err")"
+rm -rf "$B"
+
 # a data directory with its MANIFEST.md and set folders but not one walk
 # (a copy not synced): nothing to run on, exit 4, the results file left as
 # it was (it was overwritten with "no data" everywhere, exit 0)
