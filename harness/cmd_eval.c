@@ -1850,8 +1850,16 @@ int hx_cmd_eval(int argc, char **argv)
             return HX_EXIT_IO;
         }
         if (ev.plot_dir[0] != '\0') {
+            struct stat sb;
             if (mkdir(ev.plot_dir, 0777) != 0 && errno != EEXIST) {
                 hx_error("eval", "cannot create the figures' directory %s (%s)", ev.plot_dir, strerror(errno));
+                return HX_EXIT_IO;
+            }
+            if (stat(ev.plot_dir, &sb) != 0 || !S_ISDIR(sb.st_mode)) {
+                /* there, but a file (mkdir's EEXIST): each figure failed in
+                 * the middle of the run, which ended with exit 0, until
+                 * 2026-12-01 */
+                hx_error("eval", "the figures' directory %s is not a directory", ev.plot_dir);
                 return HX_EXIT_IO;
             }
             if (system("command -v gnuplot >/dev/null 2>&1") != 0) {

@@ -239,6 +239,24 @@ grep -q "^| openshoe_c_820hz/walk.txt (400 Hz) | 3-D closure (m) | [0-9.]* | [0-
     fail "unjudged walk's experiment: $(grep '^| openshoe_c_820hz/walk.txt (' "$T/unjudged.md") $(grep warning "$T/err")"
 rm -rf "$B"
 
+# --- a figures' directory that exists but is no directory (--plots naming a file, or a file img beside --out): an
+# error before the run, exit 3, as a directory that cannot be made, results.md not touched. Until 2026-12-01 it
+# passed the check (mkdir's EEXIST), and each figure printed "error: cannot write .../eval-gx2.png (Not a
+# directory)" in the middle of a run that ended with exit 0
+B="$T/pfile"
+mkdir -p "$B/data/openshoe_gx2" "$B/md"
+still "$B/data/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+: >"$B/figs"
+: >"$B/md/img"
+echo "kept" >"$B/md/r.md"
+expect_exit 3 "eval --plots naming a file" "$H" eval --no-experiments --data "$B/data" --out "$B/md/r.md" --plots "$B/figs"
+expect_err "^harness eval: error: the figures' directory $B/figs is not a directory$" "--plots naming a file: said"
+expect_exit 3 "eval: a file img beside --out" "$H" eval --no-experiments --data "$B/data" --out "$B/md/r.md"
+expect_err "^harness eval: error: the figures' directory $B/md/img is not a directory$" "a file img beside --out: said"
+[ "$(cat "$B/md/r.md")" = "kept" ] && pass "figures' directory not a directory: results.md not touched" ||
+    fail "figures' directory not a directory: results.md overwritten"
+rm -rf "$B"
+
 # a data directory with its MANIFEST.md and set folders but not one walk
 # (a copy not synced): nothing to run on, exit 4, the results file left as
 # it was (it was overwritten with "no data" everywhere, exit 0)
