@@ -49,8 +49,18 @@ static const hx_spec_t k_spec = {
 /* A file name in a data set folder (NAME_MAX is 255 on Linux). */
 typedef char ev_name_t[256];
 
+/* Room for the data directory's path, and for a path built on it: the
+ * directory, a set's folder (pyshoe_vicon_llio/own_3dmgx5_footprints, 39
+ * bytes), a file name (255) and the longest suffix eval adds
+ * (_strides_gcp.csv), with room to spare. Until 2026-12-01 the directory had
+ * 512 bytes: one of 561 was cut and reported missing ("no shared data in"
+ * the cut name, exit 4). */
+#define EV_DATA_SIZE 1024
+#define EV_DIR_SIZE (EV_DATA_SIZE + 64)  /* the directory and a set's folder */
+#define EV_PATH_SIZE (EV_DIR_SIZE + 320) /* that, a file name and a suffix */
+
 typedef struct {
-    char data[512];
+    char data[EV_DATA_SIZE];
     fnav_nav_config_t cfg;
     FILE *md;
     int runs, failures;
@@ -213,7 +223,7 @@ static int list_walks(const char *dir, const char *suffix, ev_name_t **names)
 static void unread_files(ev_t *ev, const char *sub, const char *const *suf, int nsuf)
 {
     ev_name_t *names = NULL;
-    char dir[700];
+    char dir[EV_DIR_SIZE];
     DIR *d;
     struct dirent *e;
     size_t n = 0, cap = 0, i;
@@ -224,7 +234,7 @@ static void unread_files(ev_t *ev, const char *sub, const char *const *suf, int 
         return;
     }
     while ((e = readdir(d)) != NULL) {
-        char path[1000];
+        char path[EV_PATH_SIZE];
         struct stat sb;
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
         if (e->d_name[0] == '.' || doc_file(e->d_name) || suffix_of(e->d_name, suf, nsuf) >= 0 ||
@@ -496,7 +506,7 @@ static double *walk_values(double **walk, int n)
 static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fnav_nav_config_t *cfg, double rate_hz,
                         int write, closure_t *out, double **walk)
 {
-    char dir[600], path[1000], note[EV_NOTE_SIZE], nm[256];
+    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], note[EV_NOTE_SIZE], nm[256];
     ev_name_t *names;
     double *h, *d3, *vz, *hm, *pm, *wv;
     int n, i, k = 0;
@@ -841,7 +851,7 @@ static void stride_notes(char *note, size_t size, const gcp_t *g, const stride_r
 static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, int write, fp_t *out,
                        double **walk)
 {
-    char dir[600], path[900], gpath[900], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256];
+    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], gpath[EV_PATH_SIZE], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256];
     ev_name_t *names;
     double *fpct, *smed, *fm, *wv, sum = 0.0;
     int n, i, k = 0;
@@ -1003,7 +1013,7 @@ typedef struct {
 
 static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *out, double **walk)
 {
-    char dir[600], path[900], gpath[900], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256];
+    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], gpath[EV_PATH_SIZE], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256];
     ev_name_t *names;
     double *med, *rms, *fin, *wv;
     int n, i, k = 0, rc;
@@ -1346,7 +1356,7 @@ static void ipol_match(const long (*evs)[2], int ne, const long (*oevs)[2], int 
 
 static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
 {
-    char dir[600], path[900], jpath[900], note[EV_NOTE_SIZE], nm[300];
+    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], jpath[EV_PATH_SIZE], note[EV_NOTE_SIZE], nm[300];
     ev_name_t *names;
     ev_dvec_t fo_e = { NULL, 0, 0 }, fs_e = { NULL, 0, 0 }, fo_a = { NULL, 0, 0 }, fs_a = { NULL, 0, 0 };
     long (*sw)[2] = NULL, *fo = NULL, *fs = NULL;
@@ -1794,6 +1804,12 @@ int hx_cmd_eval(int argc, char **argv)
     if (data == NULL || *data == '\0') {
         data = "../shared/data";
     }
+    if (strlen(data) >= sizeof ev.data) {
+        /* cut, it would name another directory (the figures' directory's
+         * check, below) */
+        hx_error("eval", "the data directory %.80s... is longer than %d bytes", data, (int)sizeof ev.data - 1);
+        return HX_EXIT_USAGE;
+    }
     snprintf(ev.data, sizeof ev.data, "%s", data);
     {
         /* the shared data: its MANIFEST.md, or at least one data set folder
@@ -1801,7 +1817,7 @@ int hx_cmd_eval(int argc, char **argv)
         static const char *const sets[] = { "MANIFEST.md",     "openshoe_gx2",     "xio_ngimu_gait",
                                              "pyshoe_vicon_llio", "ipol_gait_xsens", "openshoe_c_820hz",
                                              "openshoe_square2" };
-        char probe[700];
+        char probe[EV_DIR_SIZE];
         FILE *f = NULL;
         DIR *d = NULL;
         size_t k;
@@ -1876,7 +1892,7 @@ int hx_cmd_eval(int argc, char **argv)
     {
         /* the closed walks without a file-name convention of their own */
         static const char *const osets[2][2] = { { "openshoe_c_820hz", ".txt" }, { "openshoe_square2", ".csv" } };
-        char dir[700];
+        char dir[EV_DIR_SIZE];
         ev_name_t *names[2];
         int k, j, n[2];
         snprintf(dir, sizeof dir, "%s/xio_ngimu_gait", ev.data);
@@ -1900,7 +1916,7 @@ int hx_cmd_eval(int argc, char **argv)
     hx_command_line(cmdline, sizeof cmdline, "./bin/harness eval", argc, argv);
     {
         /* progress: one run per walk or trial and configuration */
-        char dir[700];
+        char dir[EV_DIR_SIZE];
         ev_name_t *names;
         int ngx2, nfp, nvi, nip;
         snprintf(dir, sizeof dir, "%s/openshoe_gx2", ev.data);
@@ -1991,7 +2007,7 @@ int hx_cmd_eval(int argc, char **argv)
     if (nxio == 0) {
         fprintf(ev.md, "No walks found in `%s/xio_ngimu_gait`.\n\n", ev.data);
     } else {
-        char p[1000], note[EV_NOTE_SIZE];
+        char p[EV_PATH_SIZE], note[EV_NOTE_SIZE];
         fprintf(ev.md, "| walk | path (m) | horizontal (m) | 3-D (m) | 3-D (%%) | vertical (m) | vendor 3-D (m) | "
                        "duplicates | gaps | longest interval (ms) | result |\n");
         fprintf(ev.md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
@@ -2045,7 +2061,7 @@ int hx_cmd_eval(int argc, char **argv)
             fprintf(ev.md, "No walks found in `%s/%s`.\n\n", ev.data,
                     nother_set[0] == 0 ? "openshoe_c_820hz" : "openshoe_square2");
         }
-        char p[1000], note[EV_NOTE_SIZE];
+        char p[EV_PATH_SIZE], note[EV_NOTE_SIZE];
         fprintf(ev.md, "| walk | rate (Hz) | path (m) | horizontal (m) | 3-D (m) | 3-D (%%) | vertical (m) | "
                        "frames in stance (%%) | strides | note |\n");
         fprintf(ev.md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
@@ -2209,7 +2225,7 @@ int hx_cmd_eval(int argc, char **argv)
                     vicon(&ev, &cv, 0, &vv[b], &wv[b]);
                     nvf = vv[b].files;
                     for (i = 0; i < nxio; i++) {
-                        char p[1000];
+                        char p[EV_PATH_SIZE];
                         snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, xio[i]);
                         x3[b * nxio + i] = closure_3d_m(&ev, p, &cv, 0.0, 1);
                     }
@@ -2307,7 +2323,7 @@ int hx_cmd_eval(int argc, char **argv)
             char label[400];
             int k;
             for (i = 0; i < nxio + nother; i++) {
-                char p[1000];
+                char p[EV_PATH_SIZE];
                 double r3[3];
                 if (i < nxio) {
                     snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, xio[i]);

@@ -257,6 +257,22 @@ expect_err "^harness eval: error: the figures' directory $B/md/img is not a dire
     fail "figures' directory not a directory: results.md overwritten"
 rm -rf "$B"
 
+# --- a data directory with a long name (561 bytes, far under PATH_MAX): eval kept 511 bytes of it and said "no
+# shared data in" the cut name, exit 4, until 2026-12-01. It is evaluated; one too long for eval's room (over 1,023
+# bytes) is refused as such, exit 2, not taken for a missing directory
+B=$T/$(printf '%0200d' 0)/$(printf '%0200d' 1)/$(printf '%0140d' 2)
+mkdir -p "$B/openshoe_gx2"
+still "$B/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+expect_exit 1 "eval: a data directory of $(printf '%s' "$B" | wc -c) bytes" "$H" eval --no-experiments --no-plots --data "$B" \
+    --out "$T/longdata.md"
+grep -q "^| Measurement_2000_1 | - |.*| not run: no stride detected: no closure to judge |$" "$T/longdata.md" &&
+    pass "a data directory with a long name: its walk evaluated" || fail "long data directory: $(head -c 300 "$T/err")"
+B2=$B/$(printf '%0250d' 3)/$(printf '%0250d' 4)
+mkdir -p "$B2/openshoe_gx2"
+expect_exit 2 "eval: a data directory longer than eval's room" "$H" eval --no-experiments --no-plots --data "$B2" --out "$T/longdata2.md"
+expect_err "^harness eval: error: the data directory .* is longer than 1023 bytes" "a data directory too long: said"
+rm -rf "$T/$(printf '%0200d' 0)"
+
 # a data directory with its MANIFEST.md and set folders but not one walk
 # (a copy not synced): nothing to run on, exit 4, the results file left as
 # it was (it was overwritten with "no data" everywhere, exit 0)
