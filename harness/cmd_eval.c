@@ -73,7 +73,7 @@ typedef struct {
     char plot_link[3 * HX_PLOT_PATH_SIZE]; /* the same as results.md links it (percent-encoded, md_link()) */
     hx_evplot_set_t fig;  /* the walks of the section being written */
     int ipol_fig;         /* eval-ipol.png was drawn (linked after the section's summary) */
-    char **warned;        /* the failures warned about, "PATH: reason" each (fail()) */
+    char **warned;        /* the failures warned about, "PATH\0reason" each (fail()) */
     int n_warned, cap_warned;
 } ev_t;
 
@@ -288,8 +288,10 @@ static const char *after_path(const char *msg, const char *path, char *buf, size
     return *msg == ' ' ? msg + 1 : msg;
 }
 
-/* 1 when the failure "PATH: reason" was warned about already, else 0 after
- * keeping it (eval ends on exhaustion, as ev_calloc). */
+/* 1 when the failure (path, reason) was warned about already, else 0 after
+ * keeping it (eval ends on exhaustion, as ev_calloc). Each kept as
+ * "PATH\0reason": the two compared apart, so that no file name holding ": "
+ * passes for another file's. */
 static int warned_before(ev_t *ev, const char *path, const char *reason)
 {
     const size_t lp = strlen(path), lr = strlen(reason);
@@ -297,7 +299,7 @@ static int warned_before(ev_t *ev, const char *path, const char *reason)
     int i;
     for (i = 0; i < ev->n_warned; i++) {
         w = ev->warned[i];
-        if (strncmp(w, path, lp) == 0 && w[lp] == ':' && w[lp + 1] == ' ' && strcmp(w + lp + 2, reason) == 0) {
+        if (strcmp(w, path) == 0 && strcmp(w + lp + 1, reason) == 0) {
             return 1;
         }
     }
@@ -305,10 +307,9 @@ static int warned_before(ev_t *ev, const char *path, const char *reason)
         ev->cap_warned = ev->cap_warned > 0 ? 2 * ev->cap_warned : 16;
         ev->warned = (char **)ev_realloc(ev->warned, (size_t)ev->cap_warned, sizeof *ev->warned);
     }
-    w = (char *)ev_calloc(lp + lr + 3, 1);
-    memcpy(w, path, lp);
-    memcpy(w + lp, ": ", 2);
-    memcpy(w + lp + 2, reason, lr + 1);
+    w = (char *)ev_calloc(lp + lr + 2, 1);
+    memcpy(w, path, lp + 1);
+    memcpy(w + lp + 1, reason, lr + 1);
     ev->warned[ev->n_warned++] = w;
     return 0;
 }
