@@ -288,6 +288,28 @@ static const char *after_path(const char *msg, const char *path, char *buf, size
     return *msg == ' ' ? msg + 1 : msg;
 }
 
+/* A walk's name as a Markdown table cell: '|' escaped, a control character
+ * (a line break in a file name) as '?'. Written as it was until
+ * 2026-12-01, a name holding '|' made its row one cell wider than its
+ * table. out needs 2 * strlen(name) + 1 bytes (EV_CELL_SIZE for a file
+ * name). */
+#define EV_CELL_SIZE (2 * sizeof(ev_name_t) + 64)
+static const char *md_cell(const char *name, char *out, size_t size)
+{
+    size_t o = 0;
+    for (; *name != '\0' && o + 2 < size; name++) {
+        const unsigned char c = (unsigned char)*name;
+        if (c == '|') {
+            out[o++] = '\\';
+            out[o++] = '|';
+        } else {
+            out[o++] = c < 0x20u || c == 0x7fu ? '?' : (char)c;
+        }
+    }
+    out[o] = '\0';
+    return out;
+}
+
 /* 1 when the failure (path, reason) was warned about already, else 0 after
  * keeping it (eval ends on exhaustion, as ev_calloc). Each kept as
  * "PATH\0reason": the two compared apart, so that no file name holding ": "
@@ -337,7 +359,7 @@ static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const c
 {
     char buf[HX_ERR_SIZE];
     const char *reason = after_path(msg, path, buf, sizeof buf);
-    size_t i;
+    size_t i, o;
     if (!warned_before(ev, path, reason)) {
         hx_warn("eval", "%s: %s", path, reason);
     }
@@ -345,16 +367,23 @@ static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const c
     if (why == NULL) {
         return;
     }
-    snprintf(why, why_size, "%s", reason);
-    for (i = 0; why[i] != '\0'; i++) {
-        if (why[i] == '|' || why[i] == '\n') {
-            why[i] = '/'; /* would break the Markdown table */
+    /* for the row's cell: '|' escaped, as a name (md_cell(); until
+     * 2026-12-01 made '/', which named another file: "cannot open 1/1.json"
+     * for 1|1.json), a line break '/' */
+    for (i = o = 0; reason[i] != '\0' && o + 2 < why_size; i++) {
+        if (reason[i] == '|') {
+            why[o++] = '\\';
+            why[o++] = '|';
+        } else {
+            why[o++] = reason[i] == '\n' ? '/' : reason[i];
         }
     }
+    why[o] = '\0';
 }
 
 /* The row of a walk that gave no figures, when its table is written: a
- * dash in each of its ncol figure columns and the reason in the last. */
+ * dash in each of its ncol figure columns and the reason in the last. name
+ * is its first cell(s), written as given (md_cell()). */
 static void not_run_row(const ev_t *ev, int write, const char *name, int ncol, const char *why)
 {
     int i;
@@ -507,7 +536,7 @@ static double *walk_values(double **walk, int n)
 static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fnav_nav_config_t *cfg, double rate_hz,
                         int write, closure_t *out, double **walk)
 {
-    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], note[EV_NOTE_SIZE], nm[256];
+    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], note[EV_NOTE_SIZE], nm[256], cell[EV_CELL_SIZE];
     ev_name_t *names;
     double *h, *d3, *vz, *hm, *pm, *wv;
     int n, i, k = 0;
@@ -529,13 +558,14 @@ static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fna
         hx_nav_summary_t s;
         snprintf(path, sizeof path, "%s/%s", dir, names[i]);
         fmt_name(nm, sizeof nm, names[i], suffix);
+        md_cell(nm, cell, sizeof cell);
         if (replay(ev, path, cfg, rate_hz, write, &t, &s, note, sizeof note) != 0 ||
             no_closure(ev, path, &s, &t, note, sizeof note)) {
-            not_run_row(ev, write, nm, 8, note);
+            not_run_row(ev, write, cell, 8, note);
             continue;
         }
         if (write) {
-            fprintf(ev->md, "| %s | %.2f | %.3f | %.2f | %.3f | %.2f | %+.3f | %+.1f | %ld | %s |\n", nm, s.path_m,
+            fprintf(ev->md, "| %s | %.2f | %.3f | %.2f | %.3f | %.2f | %+.3f | %+.1f | %ld | %s |\n", cell, s.path_m,
                     s.end_h_m, s.end_h_pct, s.end_3d_m, s.end_3d_pct, s.vertical_m, s.heading_change_deg, s.strides,
                     note);
             if (ev->plots) {
@@ -852,7 +882,8 @@ static void stride_notes(char *note, size_t size, const gcp_t *g, const stride_r
 static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, int write, fp_t *out,
                        double **walk)
 {
-    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], gpath[EV_PATH_SIZE], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256];
+    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], gpath[EV_PATH_SIZE], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256],
+        cell[EV_CELL_SIZE];
     ev_name_t *names;
     double *fpct, *smed, *fm, *wv, sum = 0.0;
     int n, i, k = 0;
@@ -876,6 +907,7 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
         snprintf(path, sizeof path, "%s/%s_imu.csv", dir, names[i]);
         snprintf(gpath, sizeof gpath, "%s/%s_strides_gcp.csv", dir, names[i]);
         snprintf(nm, sizeof nm, "%s", names[i]);
+        md_cell(nm, cell, sizeof cell);
         if (!is_file(path)) {
             snprintf(msg, sizeof msg, "no IMU log %.160s_imu.csv", names[i]);
         }
@@ -883,14 +915,14 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
             /* a truth file that is there but refused is named, not the
              * walk's IMU log (the review of 2026-11-30) */
             fail(ev, is_file(path) && is_file(gpath) ? gpath : path, note, sizeof note, msg);
-            not_run_row(ev, write, nm, 6, note);
+            not_run_row(ev, write, cell, 6, note);
             continue;
         }
         if (rate_hz > 0.0) {
             /* resampled: the stride indices refer to the original samples */
             double in = 0.0;
             if (replay(ev, path, cfg, rate_hz, write, &t, &s, note, sizeof note) != 0) {
-                not_run_row(ev, write, nm, 6, note);
+                not_run_row(ev, write, cell, 6, note);
                 continue;
             }
             in = t.in_rate_hz;
@@ -904,12 +936,12 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
                 }
             }
         } else if (replay(ev, path, cfg, 0.0, write, &t, &s, note, sizeof note) != 0) {
-            not_run_row(ev, write, nm, 6, note);
+            not_run_row(ev, write, cell, 6, note);
             continue;
         }
         if (stride_errors(&t, &g, &r) != 0) {
             no_strides(ev, path, note, sizeof note);
-            not_run_row(ev, write, nm, 6, note);
+            not_run_row(ev, write, cell, 6, note);
         } else if (!(r.path > 0.0)) {
             /* the truth's scored strides all at the first one's position:
              * no measured path, so no final % to judge (its "nan" made the
@@ -918,11 +950,11 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
             fail(ev, gpath, note, sizeof note,
                  "the truth's strides span no path (all at the first stride's position): no final-stride error "
                  "as a share of it");
-            not_run_row(ev, write, nm, 6, note);
+            not_run_row(ev, write, cell, 6, note);
         } else {
             stride_notes(note, sizeof note, &g, &r);
             if (write) {
-                fprintf(ev->md, "| %s | %d | %.1f | %.3f | %.3f | %.3f | %.2f | %s |\n", nm, r.strides, r.path,
+                fprintf(ev->md, "| %s | %d | %.1f | %.3f | %.3f | %.3f | %.2f | %s |\n", cell, r.strides, r.path,
                         r.stride_err_med, r.rms, r.final_err, r.final_pct, note);
                 if (ev->plots) {
                     hx_evplot_add_strides(&ev->fig, nm, &t, g.idx, g.x, g.y, g.n);
@@ -1014,7 +1046,8 @@ typedef struct {
 
 static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *out, double **walk)
 {
-    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], gpath[EV_PATH_SIZE], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256];
+    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], gpath[EV_PATH_SIZE], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256],
+        cell[EV_CELL_SIZE];
     ev_name_t *names;
     double *med, *rms, *fin, *wv;
     int n, i, k = 0, rc;
@@ -1040,6 +1073,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         snprintf(path, sizeof path, "%s/%s_imu.csv", dir, names[i]);
         snprintf(gpath, sizeof gpath, "%s/%s_strides_gcp.csv", dir, names[i]);
         snprintf(nm, sizeof nm, "%s", names[i]);
+        md_cell(nm, cell, sizeof cell);
         const char *bad = path; /* the file the failure is about */
         if (!is_file(path)) {
             snprintf(msg, sizeof msg, "no IMU log %.160s_imu.csv", names[i]);
@@ -1056,7 +1090,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         }
         if (rc != 0) {
             fail(ev, bad, note, sizeof note, msg);
-            not_run_row(ev, write, nm, 4, note);
+            not_run_row(ev, write, cell, 4, note);
             continue;
         }
         /* truth = the motion capture at the stride samples */
@@ -1068,16 +1102,16 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         free(vx);
         free(vy);
         if (replay(ev, path, cfg, 0.0, write, &t, &s, note, sizeof note) != 0) {
-            not_run_row(ev, write, nm, 4, note);
+            not_run_row(ev, write, cell, 4, note);
             continue;
         }
         if (stride_errors(&t, &g, &r) != 0) {
             no_strides(ev, path, note, sizeof note);
-            not_run_row(ev, write, nm, 4, note);
+            not_run_row(ev, write, cell, 4, note);
         } else {
             stride_notes(note, sizeof note, &g, &r);
             if (write) {
-                fprintf(ev->md, "| %s | %d | %.3f | %.3f | %.3f | %s |\n", nm, r.strides, r.stride_err_med, r.rms,
+                fprintf(ev->md, "| %s | %d | %.3f | %.3f | %.3f | %s |\n", cell, r.strides, r.stride_err_med, r.rms,
                         r.final_err, note);
                 if (ev->plots) {
                     hx_evplot_add_strides(&ev->fig, nm, &t, g.idx, g.x, g.y, g.n);
@@ -1357,7 +1391,7 @@ static void ipol_match(const long (*evs)[2], int ne, const long (*oevs)[2], int 
 
 static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
 {
-    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], jpath[EV_PATH_SIZE], note[EV_NOTE_SIZE], nm[300];
+    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], jpath[EV_PATH_SIZE], note[EV_NOTE_SIZE], nm[EV_CELL_SIZE + 16];
     ev_name_t *names;
     ev_dvec_t fo_e = { NULL, 0, 0 }, fs_e = { NULL, 0, 0 }, fo_a = { NULL, 0, 0 }, fs_a = { NULL, 0, 0 };
     long (*sw)[2] = NULL, *fo = NULL, *fs = NULL;
@@ -1388,7 +1422,11 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             double tfo[256], tfs[256];
             snprintf(jpath, sizeof jpath, "%s/%s.json", dir, names[i]);
             snprintf(path, sizeof path, "%s/%s_%s.txt", dir, names[i], foot ? "rf" : "lf");
-            snprintf(nm, sizeof nm, "%s | %s", names[i], foot ? "right" : "left");
+            {
+                char cell[EV_CELL_SIZE];
+                /* escaped here: not_run_row's escape would take the separator's '|' too */
+                snprintf(nm, sizeof nm, "%s | %s", md_cell(names[i], cell, sizeof cell), foot ? "right" : "left");
+            }
             ne = read_events(jpath, evs, 256, foot ? "RightFootEvents" : "LeftFootEvents", tb, ub, err, sizeof err);
             /* the other foot's swings, to find annotations with both feet in the air */
             noe = ne < 0 ? 0 : read_events(jpath, oevs, 256, foot ? "LeftFootEvents" : "RightFootEvents", otb, oub,
@@ -2016,12 +2054,12 @@ int hx_cmd_eval(int argc, char **argv)
             hx_traj_t t;
             hx_nav_summary_t s;
             double vendor = xio_vendor_m(xio[i]);
-            char vs[32];
+            char vs[32], cell[EV_CELL_SIZE];
             xio3[i] = (double)NAN;
             snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, xio[i]);
             if (replay(&ev, p, &ev.cfg, 0.0, 1, &t, &s, note, sizeof note) != 0 ||
                 no_closure(&ev, p, &s, &t, note, sizeof note)) {
-                not_run_row(&ev, 1, xio[i], 9, note);
+                not_run_row(&ev, 1, md_cell(xio[i], cell, sizeof cell), 9, note);
                 continue;
             }
             xio3[i] = s.end_3d_m;
@@ -2031,7 +2069,8 @@ int hx_cmd_eval(int argc, char **argv)
                 xl = s.end_3d_m;
             }
             snprintf(vs, sizeof vs, isfinite(vendor) ? "%.3f" : "-", vendor);
-            fprintf(ev.md, "| %s | %.2f | %.3f | %.3f | %.2f | %+.3f | %s | %u | %u | %.1f | %s%s%s |\n", xio[i],
+            fprintf(ev.md, "| %s | %.2f | %.3f | %.3f | %.2f | %+.3f | %s | %u | %u | %.1f | %s%s%s |\n",
+                    md_cell(xio[i], cell, sizeof cell),
                     s.path_m, s.end_h_m, s.end_3d_m, s.end_3d_pct, s.vertical_m, vs, t.stats.duplicates,
                     t.stats.gaps, 1e3 * (double)t.stats.max_gap_seen_s,
                     !isfinite(vendor) ? "no vendor figure"
@@ -2069,11 +2108,11 @@ int hx_cmd_eval(int argc, char **argv)
         for (i = 0; i < nother; i++) {
             hx_traj_t t;
             hx_nav_summary_t s;
-            char pct[32];
+            char pct[32], cell[EV_CELL_SIZE];
             other3[i] = other_hz[i] = (double)NAN;
             snprintf(p, sizeof p, "%s/%.300s", ev.data, other[i]);
             if (replay(&ev, p, &ev.cfg, 0.0, 1, &t, &s, note, sizeof note) != 0) {
-                not_run_row(&ev, 1, other[i], 8, note);
+                not_run_row(&ev, 1, md_cell(other[i], cell, sizeof cell), 8, note);
                 continue;
             }
             other3[i] = s.end_3d_m;
@@ -2084,7 +2123,8 @@ int hx_cmd_eval(int argc, char **argv)
             other_hz[i] = t.rate_hz;
             /* a walk without a stride has no path: its 3-D % is none ("-";
              * "nan" until 2026-12-01) */
-            fprintf(ev.md, "| %s | %.0f | %.2f | %.3f | %.3f | %s | %+.3f | %.1f | %ld | %s |\n", other[i],
+            fprintf(ev.md, "| %s | %.0f | %.2f | %.3f | %.3f | %s | %+.3f | %.1f | %ld | %s |\n",
+                    md_cell(other[i], cell, sizeof cell),
                     t.rate_hz, s.path_m, s.end_h_m, s.end_3d_m, fmt_v(pct, sizeof pct, "%.2f", s.end_3d_pct),
                     s.vertical_m, 100.0 * s.stance_fraction, s.strides, note);
             if (ev.plots) {
@@ -2265,8 +2305,8 @@ int hx_cmd_eval(int argc, char **argv)
             EV_ROW("footprints | mean final-stride error (% of path)", "%.2f", fpv[b].final_pct_mean);
             EV_ROW("vicon | median of the per-trial median stride errors (m)", "%.3f", vv[b].stride_med);
             for (i = 0; i < nxio; i++) {
-                char label[300];
-                snprintf(label, sizeof label, "xio %s | 3-D closure (m)", xio[i]);
+                char label[EV_CELL_SIZE + 64], cell[EV_CELL_SIZE];
+                snprintf(label, sizeof label, "xio %s | 3-D closure (m)", md_cell(xio[i], cell, sizeof cell));
                 EV_ROW(label, "%.3f", x3[b * nxio + i]);
             }
 #undef EV_ROW
@@ -2321,7 +2361,7 @@ int hx_cmd_eval(int argc, char **argv)
         }
         {
             const double rates[2] = { 200.0, 100.0 };
-            char label[400];
+            char label[2 * EV_CELL_SIZE], cell[EV_CELL_SIZE];
             int k;
             for (i = 0; i < nxio + nother; i++) {
                 char p[EV_PATH_SIZE];
@@ -2340,9 +2380,9 @@ int hx_cmd_eval(int argc, char **argv)
                     r3[k + 1] = closure_3d_m(&ev, p, &c2, rates[k], i < nxio);
                 }
                 if (i < nxio) {
-                    snprintf(label, sizeof label, "xio %s (~400 Hz) | 3-D closure (m)", xio[i]);
+                    snprintf(label, sizeof label, "xio %s (~400 Hz) | 3-D closure (m)", md_cell(xio[i], cell, sizeof cell));
                 } else {
-                    snprintf(label, sizeof label, "%s (%.0f Hz) | 3-D closure (m)", other[i - nxio],
+                    snprintf(label, sizeof label, "%s (%.0f Hz) | 3-D closure (m)", md_cell(other[i - nxio], cell, sizeof cell),
                              other_hz[i - nxio]);
                 }
                 row3(ev.md, label, "%.3f", r3[0], r3[1], r3[2]);

@@ -273,6 +273,27 @@ expect_exit 2 "eval: a data directory longer than eval's room" "$H" eval --no-ex
 expect_err "^harness eval: error: the data directory .* is longer than 1023 bytes" "a data directory too long: said"
 rm -rf "$T/$(printf '%0200d' 0)"
 
+# --- a walk whose file name holds '|' (or a line break): written as it was into a Markdown table row, it made one
+# cell more and broke the table until 2026-12-01; escaped now ("\|"; a control character as '?'). And in a row's
+# reason, where '|' was made '/' (an ipol trial 1|1 without its events file: "cannot open 1/1.json", another name)
+B="$T/pipe"
+mkdir -p "$B/openshoe_gx2" "$B/openshoe_square2" "$B/ipol_gait_xsens"
+: >"$B/ipol_gait_xsens/1|1_lf.txt"
+still "$B/openshoe_gx2/a|b_data_inert.txt"
+still "$B/openshoe_square2/c|d.csv"
+still "$B/openshoe_square2/e
+f.csv"
+expect_exit 1 "eval: walks named with '|' and a line break" "$H" eval --no-experiments --no-plots --data "$B" --out "$T/pipe.md"
+bad=$(awk '/^\|/ { l = $0; gsub(/\\\|/, "", l); n = gsub(/\|/, "", l);
+             if (!intab) { want = n; intab = 1 } else if (n != want) print FNR ": " $0 }
+     !/^\|/ { intab = 0 }' "$T/pipe.md")
+if [ -z "$bad" ] && grep -q '^| a\\|b | - |' "$T/pipe.md" && grep -q '^| openshoe_square2/c\\|d.csv | ' "$T/pipe.md" &&
+    grep -q '^| openshoe_square2/e?f.csv | ' "$T/pipe.md" &&
+    [ "$(grep -c '^| 1\\|1 | \(left\|right\) | - | .* | not run: cannot open 1\\|1.json |$' "$T/pipe.md")" -eq 2 ]; then
+    pass "names with '|' and a line break: escaped, every row as wide as its table"
+else fail "names with '|': rows with a wrong cell count: $bad"; fi
+rm -rf "$B"
+
 # a data directory with its MANIFEST.md and set folders but not one walk
 # (a copy not synced): nothing to run on, exit 4, the results file left as
 # it was (it was overwritten with "no data" everywhere, exit 0)
