@@ -1804,7 +1804,7 @@ int hx_cmd_eval(int argc, char **argv)
     double *fp_walk = NULL, *gx2_200_walk = NULL, *gx2_100_walk = NULL, *fp_100_walk = NULL;
     vicon_t vi;
     ipol_t ip;
-    int rc, i, exp = 1;
+    int rc, i, exp = 1, md_failed = 0;
     fnav_nav_config_t off, ar1;
     rc = hx_args_parse(&k_spec, argc, argv, &a);
     if (rc != 0) {
@@ -1990,7 +1990,7 @@ int hx_cmd_eval(int argc, char **argv)
     }
     ev.md = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
     if (ev.md == NULL) {
-        hx_error("eval", "cannot write %s", out_path);
+        hx_error("eval", "cannot write %s (%s)", out_path, strerror(errno));
         free(xio);
         free(other);
         free(xio3);
@@ -2451,9 +2451,16 @@ int hx_cmd_eval(int argc, char **argv)
                 ev.failures - ev.main_failures);
     }
     hx_progress_end(&ev.prog);
-    if (ev.md != stdout && fclose(ev.md) != 0) {
-        hx_error("eval", "cannot write %s", out_path);
-        return HX_EXIT_IO;
+    if (ev.md != stdout) {
+        /* a write that failed on the way (ferror) or at the close: said
+         * with the reason, and the JSON still written (until 2026-12-01
+         * eval returned before it, and said no reason) */
+        const int werr = ferror(ev.md);
+        const int cerr = fclose(ev.md) != 0 ? errno : 0;
+        if (werr || cerr != 0) {
+            hx_error("eval", "cannot write %s (%s)", out_path, strerror(cerr != 0 ? cerr : EIO));
+            md_failed = 1;
+        }
     }
     if (json_path != NULL) {
         cJSON *j = cJSON_CreateObject();
@@ -2481,6 +2488,9 @@ int hx_cmd_eval(int argc, char **argv)
             hx_error("eval", "%s", err);
             return HX_EXIT_IO;
         }
+    }
+    if (md_failed) {
+        return HX_EXIT_IO;
     }
     if (ev.failures > 0) {
         hx_error("eval", "%d run(s) failed, and %d of the experiments' runs (see the warnings); results are incomplete",

@@ -294,6 +294,27 @@ if [ -z "$bad" ] && grep -q '^| a\\|b | - |' "$T/pipe.md" && grep -q '^| opensho
 else fail "names with '|': rows with a wrong cell count: $bad"; fi
 rm -rf "$B"
 
+# --- results.md that cannot be written (a full disk): exit 3, the reason given, and the JSON of --json still
+# written; until 2026-12-01 eval returned before it ("nothing computed is lost", docs/harness.md), and the error
+# said "cannot write /dev/full" without why
+if [ -w /dev/full ]; then
+    B="$T/full"
+    mkdir -p "$B/openshoe_square2"
+    still "$B/openshoe_square2/s.csv"
+    expect_exit 3 "eval --out onto a full disk" "$H" eval --no-experiments --no-plots --data "$B" --out /dev/full --json "$T/full.json"
+    expect_err "^harness eval: error: cannot write /dev/full (No space left on device)$" "eval --out onto a full disk: the reason given"
+    json "$T/full.json" 'j["failed_runs"] == 0 and "gx2_h_pct_median" in j' && pass "eval --out onto a full disk: the JSON written" ||
+        fail "eval --out onto a full disk: no JSON"
+    rm -rf "$B"
+else
+    echo "skip eval's full-disk check (no /dev/full)"
+fi
+# ... and one that cannot be opened, before the run: the reason given too
+mkdir -p "$T/nof/openshoe_square2"
+still "$T/nof/openshoe_square2/s.csv"
+expect_exit 3 "eval --out in a missing directory" "$H" eval --no-experiments --no-plots --data "$T/nof" --out "$T/no/such/r.md"
+expect_err "^harness eval: error: cannot write $T/no/such/r.md (No such file or directory)$" "eval --out in a missing directory: the reason"
+
 # a data directory with its MANIFEST.md and set folders but not one walk
 # (a copy not synced): nothing to run on, exit 4, the results file left as
 # it was (it was overwritten with "no data" everywhere, exit 0)
