@@ -49,8 +49,18 @@ static const hx_spec_t k_spec = {
 /* A file name in a data set folder (NAME_MAX is 255 on Linux). */
 typedef char ev_name_t[256];
 
+/* Room for the data directory's path, and for a path built on it: the
+ * directory, a set's folder (pyshoe_vicon_llio/own_3dmgx5_footprints, 39
+ * bytes), a file name (255) and the longest suffix eval adds
+ * (_strides_gcp.csv), with room to spare. Until 2026-12-01 the directory had
+ * 512 bytes: one of 561 was cut and reported missing ("no shared data in"
+ * the cut name, exit 4). */
+#define EV_DATA_SIZE 1024
+#define EV_DIR_SIZE (EV_DATA_SIZE + 64)  /* the directory and a set's folder */
+#define EV_PATH_SIZE (EV_DIR_SIZE + 320) /* that, a file name and a suffix */
+
 typedef struct {
-    char data[512];
+    char data[EV_DATA_SIZE];
     fnav_nav_config_t cfg;
     FILE *md;
     int runs, failures;
@@ -63,6 +73,8 @@ typedef struct {
     char plot_link[3 * HX_PLOT_PATH_SIZE]; /* the same as results.md links it (percent-encoded, md_link()) */
     hx_evplot_set_t fig;  /* the walks of the section being written */
     int ipol_fig;         /* eval-ipol.png was drawn (linked after the section's summary) */
+    char **warned;        /* the failures warned about, "PATH\0reason" each (fail()) */
+    int n_warned, cap_warned;
 } ev_t;
 
 /* calloc that ends eval on exhaustion (the lists grow with the data). */
@@ -211,7 +223,7 @@ static int list_walks(const char *dir, const char *suffix, ev_name_t **names)
 static void unread_files(ev_t *ev, const char *sub, const char *const *suf, int nsuf)
 {
     ev_name_t *names = NULL;
-    char dir[700];
+    char dir[EV_DIR_SIZE];
     DIR *d;
     struct dirent *e;
     size_t n = 0, cap = 0, i;
@@ -222,7 +234,7 @@ static void unread_files(ev_t *ev, const char *sub, const char *const *suf, int 
         return;
     }
     while ((e = readdir(d)) != NULL) {
-        char path[1000];
+        char path[EV_PATH_SIZE];
         struct stat sb;
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
         if (e->d_name[0] == '.' || doc_file(e->d_name) || suffix_of(e->d_name, suf, nsuf) >= 0 ||
@@ -276,35 +288,102 @@ static const char *after_path(const char *msg, const char *path, char *buf, size
     return *msg == ' ' ? msg + 1 : msg;
 }
 
-/* A failed run: warned with its path (unless warn is 0: said already),
- * counted (eval's exit status and the targets' note) and its reason kept
- * for the row of its table. */
-static void fail_warn(ev_t *ev, const char *path, char *why, size_t why_size, const char *msg, int warn)
+/* A walk's name as a Markdown table cell: '|' escaped, a control character
+ * (a line break in a file name) as '?'. Written as it was until
+ * 2026-12-01, a name holding '|' made its row one cell wider than its
+ * table. out needs 2 * strlen(name) + 1 bytes (EV_CELL_SIZE for a file
+ * name). */
+#define EV_CELL_SIZE (2 * sizeof(ev_name_t) + 64)
+static const char *md_cell(const char *name, char *out, size_t size)
+{
+    size_t o = 0;
+    for (; *name != '\0' && o + 2 < size; name++) {
+        const unsigned char c = (unsigned char)*name;
+        if (c == '|') {
+            out[o++] = '\\';
+            out[o++] = '|';
+        } else {
+            out[o++] = c < 0x20u || c == 0x7fu ? '?' : (char)c;
+        }
+    }
+    out[o] = '\0';
+    return out;
+}
+
+/* 1 when the failure (path, reason) was warned about already, else 0 after
+ * keeping it (eval ends on exhaustion, as ev_calloc). Each kept as
+ * "PATH\0reason": the two compared apart, so that no file name holding ": "
+ * passes for another file's. */
+static int warned_before(ev_t *ev, const char *path, const char *reason)
+{
+    const size_t lp = strlen(path), lr = strlen(reason);
+    char *w;
+    int i;
+    for (i = 0; i < ev->n_warned; i++) {
+        w = ev->warned[i];
+        if (strcmp(w, path) == 0 && strcmp(w + lp + 1, reason) == 0) {
+            return 1;
+        }
+    }
+    if (ev->n_warned == ev->cap_warned) {
+        ev->cap_warned = ev->cap_warned > 0 ? 2 * ev->cap_warned : 16;
+        ev->warned = (char **)ev_realloc(ev->warned, (size_t)ev->cap_warned, sizeof *ev->warned);
+    }
+    w = (char *)ev_calloc(lp + lr + 2, 1);
+    memcpy(w, path, lp + 1);
+    memcpy(w + lp + 1, reason, lr + 1);
+    ev->warned[ev->n_warned++] = w;
+    return 0;
+}
+
+static void warned_free(ev_t *ev)
+{
+    int i;
+    for (i = 0; i < ev->n_warned; i++) {
+        free(ev->warned[i]);
+    }
+    free(ev->warned);
+    ev->warned = NULL;
+    ev->n_warned = ev->cap_warned = 0;
+}
+
+/* A failed run: warned with its path, counted (eval's exit status and the
+ * targets' note) and its reason kept for the row of its table. A fault
+ * warned about already (the same file, the same reason) is not warned
+ * again: an events file's fault that both feet's rows give (one foot's
+ * events missing or not pairs: that foot's and the other foot's run fail on
+ * it), a walk that fails each experiment's repeat as its main run. Until
+ * 2026-12-01 each failed run warned: twice per events file, up to eleven
+ * times per walk. */
+static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const char *msg)
 {
     char buf[HX_ERR_SIZE];
-    size_t i;
-    if (warn) {
-        hx_warn("eval", "%s: %s", path, after_path(msg, path, buf, sizeof buf));
+    const char *reason = after_path(msg, path, buf, sizeof buf);
+    size_t i, o;
+    if (!warned_before(ev, path, reason)) {
+        hx_warn("eval", "%s: %s", path, reason);
     }
     ev->failures++;
     if (why == NULL) {
         return;
     }
-    snprintf(why, why_size, "%s", after_path(msg, path, buf, sizeof buf));
-    for (i = 0; why[i] != '\0'; i++) {
-        if (why[i] == '|' || why[i] == '\n') {
-            why[i] = '/'; /* would break the Markdown table */
+    /* for the row's cell: '|' escaped, as a name (md_cell(); until
+     * 2026-12-01 made '/', which named another file: "cannot open 1/1.json"
+     * for 1|1.json), a line break '/' */
+    for (i = o = 0; reason[i] != '\0' && o + 2 < why_size; i++) {
+        if (reason[i] == '|') {
+            why[o++] = '\\';
+            why[o++] = '|';
+        } else {
+            why[o++] = reason[i] == '\n' ? '/' : reason[i];
         }
     }
-}
-
-static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const char *msg)
-{
-    fail_warn(ev, path, why, why_size, msg, 1);
+    why[o] = '\0';
 }
 
 /* The row of a walk that gave no figures, when its table is written: a
- * dash in each of its ncol figure columns and the reason in the last. */
+ * dash in each of its ncol figure columns and the reason in the last. name
+ * is its first cell(s), written as given (md_cell()). */
 static void not_run_row(const ev_t *ev, int write, const char *name, int ncol, const char *why)
 {
     int i;
@@ -457,7 +536,7 @@ static double *walk_values(double **walk, int n)
 static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fnav_nav_config_t *cfg, double rate_hz,
                         int write, closure_t *out, double **walk)
 {
-    char dir[600], path[1000], note[EV_NOTE_SIZE], nm[256];
+    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], note[EV_NOTE_SIZE], nm[256], cell[EV_CELL_SIZE];
     ev_name_t *names;
     double *h, *d3, *vz, *hm, *pm, *wv;
     int n, i, k = 0;
@@ -479,13 +558,14 @@ static void closure_set(ev_t *ev, const char *sub, const char *suffix, const fna
         hx_nav_summary_t s;
         snprintf(path, sizeof path, "%s/%s", dir, names[i]);
         fmt_name(nm, sizeof nm, names[i], suffix);
+        md_cell(nm, cell, sizeof cell);
         if (replay(ev, path, cfg, rate_hz, write, &t, &s, note, sizeof note) != 0 ||
             no_closure(ev, path, &s, &t, note, sizeof note)) {
-            not_run_row(ev, write, nm, 8, note);
+            not_run_row(ev, write, cell, 8, note);
             continue;
         }
         if (write) {
-            fprintf(ev->md, "| %s | %.2f | %.3f | %.2f | %.3f | %.2f | %+.3f | %+.1f | %ld | %s |\n", nm, s.path_m,
+            fprintf(ev->md, "| %s | %.2f | %.3f | %.2f | %.3f | %.2f | %+.3f | %+.1f | %ld | %s |\n", cell, s.path_m,
                     s.end_h_m, s.end_h_pct, s.end_3d_m, s.end_3d_pct, s.vertical_m, s.heading_change_deg, s.strides,
                     note);
             if (ev->plots) {
@@ -531,14 +611,18 @@ static double xio_vendor_m(const char *name)
 }
 
 /* Closure of one walk (last stance mid-point from the first), m; NaN when
- * the replay failed. */
-static double closure_3d_m(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, double rate_hz)
+ * the replay failed, or, for a judged walk (openshoe_gx2's and xio's
+ * sections), when it has no stride (no_closure). The other closed walks
+ * are reported, not judged, in their table and in the rate experiment
+ * alike (until 2026-12-01 the experiment judged them: a walk without a
+ * stride was two failed runs, exit 1). */
+static double closure_3d_m(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, double rate_hz, int judged)
 {
     hx_traj_t t;
     hx_nav_summary_t s;
     char note[EV_NOTE_SIZE];
     if (replay(ev, path, cfg, rate_hz, 0, &t, &s, note, sizeof note) != 0 ||
-        no_closure(ev, path, &s, &t, note, sizeof note)) {
+        (judged && no_closure(ev, path, &s, &t, note, sizeof note))) {
         return (double)NAN;
     }
     hx_traj_free(&t);
@@ -798,7 +882,8 @@ static void stride_notes(char *note, size_t size, const gcp_t *g, const stride_r
 static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, int write, fp_t *out,
                        double **walk)
 {
-    char dir[600], path[900], gpath[900], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256];
+    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], gpath[EV_PATH_SIZE], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256],
+        cell[EV_CELL_SIZE];
     ev_name_t *names;
     double *fpct, *smed, *fm, *wv, sum = 0.0;
     int n, i, k = 0;
@@ -822,6 +907,7 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
         snprintf(path, sizeof path, "%s/%s_imu.csv", dir, names[i]);
         snprintf(gpath, sizeof gpath, "%s/%s_strides_gcp.csv", dir, names[i]);
         snprintf(nm, sizeof nm, "%s", names[i]);
+        md_cell(nm, cell, sizeof cell);
         if (!is_file(path)) {
             snprintf(msg, sizeof msg, "no IMU log %.160s_imu.csv", names[i]);
         }
@@ -829,14 +915,14 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
             /* a truth file that is there but refused is named, not the
              * walk's IMU log (the review of 2026-11-30) */
             fail(ev, is_file(path) && is_file(gpath) ? gpath : path, note, sizeof note, msg);
-            not_run_row(ev, write, nm, 6, note);
+            not_run_row(ev, write, cell, 6, note);
             continue;
         }
         if (rate_hz > 0.0) {
             /* resampled: the stride indices refer to the original samples */
             double in = 0.0;
             if (replay(ev, path, cfg, rate_hz, write, &t, &s, note, sizeof note) != 0) {
-                not_run_row(ev, write, nm, 6, note);
+                not_run_row(ev, write, cell, 6, note);
                 continue;
             }
             in = t.in_rate_hz;
@@ -850,16 +936,25 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
                 }
             }
         } else if (replay(ev, path, cfg, 0.0, write, &t, &s, note, sizeof note) != 0) {
-            not_run_row(ev, write, nm, 6, note);
+            not_run_row(ev, write, cell, 6, note);
             continue;
         }
         if (stride_errors(&t, &g, &r) != 0) {
             no_strides(ev, path, note, sizeof note);
-            not_run_row(ev, write, nm, 6, note);
+            not_run_row(ev, write, cell, 6, note);
+        } else if (!(r.path > 0.0)) {
+            /* the truth's scored strides all at the first one's position:
+             * no measured path, so no final % to judge (its "nan" made the
+             * section's median and mean nan, exit 0, until 2026-12-01), as
+             * a judged closed walk without a stride (no_closure) */
+            fail(ev, gpath, note, sizeof note,
+                 "the truth's strides span no path (all at the first stride's position): no final-stride error "
+                 "as a share of it");
+            not_run_row(ev, write, cell, 6, note);
         } else {
             stride_notes(note, sizeof note, &g, &r);
             if (write) {
-                fprintf(ev->md, "| %s | %d | %.1f | %.3f | %.3f | %.3f | %.2f | %s |\n", nm, r.strides, r.path,
+                fprintf(ev->md, "| %s | %d | %.1f | %.3f | %.3f | %.3f | %.2f | %s |\n", cell, r.strides, r.path,
                         r.stride_err_med, r.rms, r.final_err, r.final_pct, note);
                 if (ev->plots) {
                     hx_evplot_add_strides(&ev->fig, nm, &t, g.idx, g.x, g.y, g.n);
@@ -951,7 +1046,8 @@ typedef struct {
 
 static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *out, double **walk)
 {
-    char dir[600], path[900], gpath[900], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256];
+    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], gpath[EV_PATH_SIZE], note[EV_NOTE_SIZE], msg[HX_ERR_SIZE], nm[256],
+        cell[EV_CELL_SIZE];
     ev_name_t *names;
     double *med, *rms, *fin, *wv;
     int n, i, k = 0, rc;
@@ -977,6 +1073,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         snprintf(path, sizeof path, "%s/%s_imu.csv", dir, names[i]);
         snprintf(gpath, sizeof gpath, "%s/%s_strides_gcp.csv", dir, names[i]);
         snprintf(nm, sizeof nm, "%s", names[i]);
+        md_cell(nm, cell, sizeof cell);
         const char *bad = path; /* the file the failure is about */
         if (!is_file(path)) {
             snprintf(msg, sizeof msg, "no IMU log %.160s_imu.csv", names[i]);
@@ -993,7 +1090,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         }
         if (rc != 0) {
             fail(ev, bad, note, sizeof note, msg);
-            not_run_row(ev, write, nm, 4, note);
+            not_run_row(ev, write, cell, 4, note);
             continue;
         }
         /* truth = the motion capture at the stride samples */
@@ -1005,16 +1102,16 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         free(vx);
         free(vy);
         if (replay(ev, path, cfg, 0.0, write, &t, &s, note, sizeof note) != 0) {
-            not_run_row(ev, write, nm, 4, note);
+            not_run_row(ev, write, cell, 4, note);
             continue;
         }
         if (stride_errors(&t, &g, &r) != 0) {
             no_strides(ev, path, note, sizeof note);
-            not_run_row(ev, write, nm, 4, note);
+            not_run_row(ev, write, cell, 4, note);
         } else {
             stride_notes(note, sizeof note, &g, &r);
             if (write) {
-                fprintf(ev->md, "| %s | %d | %.3f | %.3f | %.3f | %s |\n", nm, r.strides, r.stride_err_med, r.rms,
+                fprintf(ev->md, "| %s | %d | %.3f | %.3f | %.3f | %s |\n", cell, r.strides, r.stride_err_med, r.rms,
                         r.final_err, note);
                 if (ev->plots) {
                     hx_evplot_add_strides(&ev->fig, nm, &t, g.idx, g.x, g.y, g.n);
@@ -1294,7 +1391,7 @@ static void ipol_match(const long (*evs)[2], int ne, const long (*oevs)[2], int 
 
 static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
 {
-    char dir[600], path[900], jpath[900], note[EV_NOTE_SIZE], nm[300];
+    char dir[EV_DIR_SIZE], path[EV_PATH_SIZE], jpath[EV_PATH_SIZE], note[EV_NOTE_SIZE], nm[EV_CELL_SIZE + 16];
     ev_name_t *names;
     ev_dvec_t fo_e = { NULL, 0, 0 }, fs_e = { NULL, 0, 0 }, fo_a = { NULL, 0, 0 }, fs_a = { NULL, 0, 0 };
     long (*sw)[2] = NULL, *fo = NULL, *fs = NULL;
@@ -1310,11 +1407,6 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
         fprintf(ev->md, "|---|---|---:|---:|---:|---:|---:|---:|---|\n");
     }
     for (i = 0; i < n; i++) {
-        /* the error of the events file, which serves both feet, that the
-         * left foot's row gave (no TrialBoundaries pair; not valid JSON, too
-         * large): the right foot's row and failed run get it without a
-         * second warning (warned once per foot until 2026-12-01) */
-        char ev_warned[HX_ERR_SIZE] = "";
         for (foot = 0; foot < 2; foot++) {
             static long evs[256][2], oevs[256][2];
             long tb[2], ub[2], otb[2], oub[2];
@@ -1330,14 +1422,19 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             double tfo[256], tfs[256];
             snprintf(jpath, sizeof jpath, "%s/%s.json", dir, names[i]);
             snprintf(path, sizeof path, "%s/%s_%s.txt", dir, names[i], foot ? "rf" : "lf");
-            snprintf(nm, sizeof nm, "%s | %s", names[i], foot ? "right" : "left");
+            {
+                char cell[EV_CELL_SIZE];
+                /* escaped here: not_run_row's escape would take the separator's '|' too */
+                snprintf(nm, sizeof nm, "%s | %s", md_cell(names[i], cell, sizeof cell), foot ? "right" : "left");
+            }
             ne = read_events(jpath, evs, 256, foot ? "RightFootEvents" : "LeftFootEvents", tb, ub, err, sizeof err);
             /* the other foot's swings, to find annotations with both feet in the air */
             noe = ne < 0 ? 0 : read_events(jpath, oevs, 256, foot ? "LeftFootEvents" : "RightFootEvents", otb, oub,
                                             oerr, sizeof oerr);
+            /* an events file's fault (it serves both feet) is warned once:
+             * fail() */
             if (ne < 0) {
-                fail_warn(ev, jpath, note, sizeof note, err, strcmp(err, ev_warned) != 0);
-                snprintf(ev_warned, sizeof ev_warned, "%s", err);
+                fail(ev, jpath, note, sizeof note, err);
             } else if (noe < 0) {
                 /* the other foot's swings decide which of this foot's are
                  * evaluated (both feet in the air): without them the
@@ -1565,7 +1662,7 @@ static void paired_row(ev_t *ev, const char *profile, const char *figure, const 
 {
     double *d = (double *)ev_calloc(n > 0 ? (size_t)n : 1u, sizeof *d), lo = (double)INFINITY, hi = -(double)INFINITY;
     int i, k = 0, better = 0, ties = 0;
-    char a[40], b[40], c[40];
+    char a[40], b[40], c[40], pv[40];
     for (i = 0; off != NULL && on != NULL && i < n; i++) {
         if (isfinite(off[i]) && isfinite(on[i])) {
             d[k] = off[i] - on[i];
@@ -1584,8 +1681,9 @@ static void paired_row(ev_t *ev, const char *profile, const char *figure, const 
     snprintf(a, sizeof a, fmt, hx_median(d, k));
     snprintf(b, sizeof b, fmt, lo);
     snprintf(c, sizeof c, fmt, hi);
-    fprintf(ev->md, "| %s | %s | %d | %d of %d | %s [%s, %s] | %.3f |\n", profile, figure, k, better, k - ties, a, b,
-            c, sign_test_p(better, k - ties));
+    /* every walk a tie: no sign test ("-"; "nan" until 2026-12-01) */
+    fprintf(ev->md, "| %s | %s | %d | %d of %d | %s [%s, %s] | %s |\n", profile, figure, k, better, k - ties, a, b,
+            c, fmt_v(pv, sizeof pv, "%.3f", sign_test_p(better, k - ties)));
     free(d);
 }
 
@@ -1706,7 +1804,7 @@ int hx_cmd_eval(int argc, char **argv)
     double *fp_walk = NULL, *gx2_200_walk = NULL, *gx2_100_walk = NULL, *fp_100_walk = NULL;
     vicon_t vi;
     ipol_t ip;
-    int rc, i, exp = 1;
+    int rc, i, exp = 1, md_failed = 0;
     fnav_nav_config_t off, ar1;
     rc = hx_args_parse(&k_spec, argc, argv, &a);
     if (rc != 0) {
@@ -1745,6 +1843,12 @@ int hx_cmd_eval(int argc, char **argv)
     if (data == NULL || *data == '\0') {
         data = "../shared/data";
     }
+    if (strlen(data) >= sizeof ev.data) {
+        /* cut, it would name another directory (the figures' directory's
+         * check, below) */
+        hx_error("eval", "the data directory %.80s... is longer than %d bytes", data, (int)sizeof ev.data - 1);
+        return HX_EXIT_USAGE;
+    }
     snprintf(ev.data, sizeof ev.data, "%s", data);
     {
         /* the shared data: its MANIFEST.md, or at least one data set folder
@@ -1752,7 +1856,7 @@ int hx_cmd_eval(int argc, char **argv)
         static const char *const sets[] = { "MANIFEST.md",     "openshoe_gx2",     "xio_ngimu_gait",
                                              "pyshoe_vicon_llio", "ipol_gait_xsens", "openshoe_c_820hz",
                                              "openshoe_square2" };
-        char probe[700];
+        char probe[EV_DIR_SIZE];
         FILE *f = NULL;
         DIR *d = NULL;
         size_t k;
@@ -1801,8 +1905,16 @@ int hx_cmd_eval(int argc, char **argv)
             return HX_EXIT_IO;
         }
         if (ev.plot_dir[0] != '\0') {
+            struct stat sb;
             if (mkdir(ev.plot_dir, 0777) != 0 && errno != EEXIST) {
                 hx_error("eval", "cannot create the figures' directory %s (%s)", ev.plot_dir, strerror(errno));
+                return HX_EXIT_IO;
+            }
+            if (stat(ev.plot_dir, &sb) != 0 || !S_ISDIR(sb.st_mode)) {
+                /* there, but a file (mkdir's EEXIST): each figure failed in
+                 * the middle of the run, which ended with exit 0, until
+                 * 2026-12-01 */
+                hx_error("eval", "the figures' directory %s is not a directory", ev.plot_dir);
                 return HX_EXIT_IO;
             }
             if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
@@ -1819,7 +1931,7 @@ int hx_cmd_eval(int argc, char **argv)
     {
         /* the closed walks without a file-name convention of their own */
         static const char *const osets[2][2] = { { "openshoe_c_820hz", ".txt" }, { "openshoe_square2", ".csv" } };
-        char dir[700];
+        char dir[EV_DIR_SIZE];
         ev_name_t *names[2];
         int k, j, n[2];
         snprintf(dir, sizeof dir, "%s/xio_ngimu_gait", ev.data);
@@ -1843,7 +1955,7 @@ int hx_cmd_eval(int argc, char **argv)
     hx_command_line(cmdline, sizeof cmdline, "./bin/harness eval", argc, argv);
     {
         /* progress: one run per walk or trial and configuration */
-        char dir[700];
+        char dir[EV_DIR_SIZE];
         ev_name_t *names;
         int ngx2, nfp, nvi, nip;
         snprintf(dir, sizeof dir, "%s/openshoe_gx2", ev.data);
@@ -1878,7 +1990,7 @@ int hx_cmd_eval(int argc, char **argv)
     }
     ev.md = strcmp(out_path, "-") == 0 ? stdout : fopen(out_path, "w");
     if (ev.md == NULL) {
-        hx_error("eval", "cannot write %s", out_path);
+        hx_error("eval", "cannot write %s (%s)", out_path, strerror(errno));
         free(xio);
         free(other);
         free(xio3);
@@ -1934,7 +2046,7 @@ int hx_cmd_eval(int argc, char **argv)
     if (nxio == 0) {
         fprintf(ev.md, "No walks found in `%s/xio_ngimu_gait`.\n\n", ev.data);
     } else {
-        char p[1000], note[EV_NOTE_SIZE];
+        char p[EV_PATH_SIZE], note[EV_NOTE_SIZE];
         fprintf(ev.md, "| walk | path (m) | horizontal (m) | 3-D (m) | 3-D (%%) | vertical (m) | vendor 3-D (m) | "
                        "duplicates | gaps | longest interval (ms) | result |\n");
         fprintf(ev.md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
@@ -1942,12 +2054,12 @@ int hx_cmd_eval(int argc, char **argv)
             hx_traj_t t;
             hx_nav_summary_t s;
             double vendor = xio_vendor_m(xio[i]);
-            char vs[32];
+            char vs[32], cell[EV_CELL_SIZE];
             xio3[i] = (double)NAN;
             snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, xio[i]);
             if (replay(&ev, p, &ev.cfg, 0.0, 1, &t, &s, note, sizeof note) != 0 ||
                 no_closure(&ev, p, &s, &t, note, sizeof note)) {
-                not_run_row(&ev, 1, xio[i], 9, note);
+                not_run_row(&ev, 1, md_cell(xio[i], cell, sizeof cell), 9, note);
                 continue;
             }
             xio3[i] = s.end_3d_m;
@@ -1957,7 +2069,8 @@ int hx_cmd_eval(int argc, char **argv)
                 xl = s.end_3d_m;
             }
             snprintf(vs, sizeof vs, isfinite(vendor) ? "%.3f" : "-", vendor);
-            fprintf(ev.md, "| %s | %.2f | %.3f | %.3f | %.2f | %+.3f | %s | %u | %u | %.1f | %s%s%s |\n", xio[i],
+            fprintf(ev.md, "| %s | %.2f | %.3f | %.3f | %.2f | %+.3f | %s | %u | %u | %.1f | %s%s%s |\n",
+                    md_cell(xio[i], cell, sizeof cell),
                     s.path_m, s.end_h_m, s.end_3d_m, s.end_3d_pct, s.vertical_m, vs, t.stats.duplicates,
                     t.stats.gaps, 1e3 * (double)t.stats.max_gap_seen_s,
                     !isfinite(vendor) ? "no vendor figure"
@@ -1988,17 +2101,18 @@ int hx_cmd_eval(int argc, char **argv)
             fprintf(ev.md, "No walks found in `%s/%s`.\n\n", ev.data,
                     nother_set[0] == 0 ? "openshoe_c_820hz" : "openshoe_square2");
         }
-        char p[1000], note[EV_NOTE_SIZE];
+        char p[EV_PATH_SIZE], note[EV_NOTE_SIZE];
         fprintf(ev.md, "| walk | rate (Hz) | path (m) | horizontal (m) | 3-D (m) | 3-D (%%) | vertical (m) | "
                        "frames in stance (%%) | strides | note |\n");
         fprintf(ev.md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
         for (i = 0; i < nother; i++) {
             hx_traj_t t;
             hx_nav_summary_t s;
+            char pct[32], cell[EV_CELL_SIZE];
             other3[i] = other_hz[i] = (double)NAN;
             snprintf(p, sizeof p, "%s/%.300s", ev.data, other[i]);
             if (replay(&ev, p, &ev.cfg, 0.0, 1, &t, &s, note, sizeof note) != 0) {
-                not_run_row(&ev, 1, other[i], 8, note);
+                not_run_row(&ev, 1, md_cell(other[i], cell, sizeof cell), 8, note);
                 continue;
             }
             other3[i] = s.end_3d_m;
@@ -2007,9 +2121,12 @@ int hx_cmd_eval(int argc, char **argv)
                          "below the detector's threshold", note[0] ? "; " : "", 100.0 * s.stance_fraction);
             }
             other_hz[i] = t.rate_hz;
-            fprintf(ev.md, "| %s | %.0f | %.2f | %.3f | %.3f | %.2f | %+.3f | %.1f | %ld | %s |\n", other[i],
-                    t.rate_hz, s.path_m, s.end_h_m, s.end_3d_m, s.end_3d_pct, s.vertical_m,
-                    100.0 * s.stance_fraction, s.strides, note);
+            /* a walk without a stride has no path: its 3-D % is none ("-";
+             * "nan" until 2026-12-01) */
+            fprintf(ev.md, "| %s | %.0f | %.2f | %.3f | %.3f | %s | %+.3f | %.1f | %ld | %s |\n",
+                    md_cell(other[i], cell, sizeof cell),
+                    t.rate_hz, s.path_m, s.end_h_m, s.end_3d_m, fmt_v(pct, sizeof pct, "%.2f", s.end_3d_pct),
+                    s.vertical_m, 100.0 * s.stance_fraction, s.strides, note);
             if (ev.plots) {
                 hx_evplot_add_path(&ev.fig, other[i], &t);
             }
@@ -2072,13 +2189,20 @@ int hx_cmd_eval(int argc, char **argv)
         fprintf(ev.md, "\n%d trials and feet: %d expert strides, %d detected, %d missed (%d of them overlapped by a "
                        "detected swing whose events are %d samples or more away), %d spurious (target: none "
                        "missed or spurious: %s); %d expert swings left out for overlapping the other foot's "
-                       "(with them kept: %d missed, %d spurious). Event "
-                       "timing: median |FO error| %.1f samples (bias %+.1f, 90th percentile "
-                       "%.1f), median |FS error| %.1f samples (bias %+.1f, 90th percentile %.1f) (target <= 2: %s).\n\n",
+                       "(with them kept: %d missed, %d spurious). ",
                 ip.trials, ip.expected, ip.detected, ip.missed, ip.off_time, IPOL_TOL, ip.spurious,
-                met(ip.missed == 0 && ip.spurious == 0), ip.both_feet, ip.strict_missed, ip.strict_spurious,
-                ip.fo_med, ip.fo_bias, ip.fo_p90, ip.fs_med, ip.fs_bias, ip.fs_p90,
-                met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
+                met(ip.missed == 0 && ip.spurious == 0), ip.both_feet, ip.strict_missed, ip.strict_spurious);
+        if (ip.n_fo > 0) {
+            fprintf(ev.md, "Event timing: median |FO error| %.1f samples (bias %+.1f, 90th percentile %.1f), median "
+                           "|FS error| %.1f samples (bias %+.1f, 90th percentile %.1f) (target <= 2: %s).\n\n",
+                    ip.fo_med, ip.fo_bias, ip.fo_p90, ip.fs_med, ip.fs_bias, ip.fs_p90,
+                    met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
+        } else {
+            /* every expert swing missed: no event was timed ("nan samples"
+             * until 2026-12-01) */
+            fprintf(ev.md, "Event timing: no expert swing detected, no event to time (target <= 2: %s).\n\n",
+                    met(0));
+        }
     }
     if (ev.ipol_fig) {
         fprintf(ev.md, "![ipol_gait_xsens: gait-event timing error](%s/eval-ipol.png)\n\nEvery matched event's "
@@ -2142,9 +2266,9 @@ int hx_cmd_eval(int argc, char **argv)
                     vicon(&ev, &cv, 0, &vv[b], &wv[b]);
                     nvf = vv[b].files;
                     for (i = 0; i < nxio; i++) {
-                        char p[1000];
+                        char p[EV_PATH_SIZE];
                         snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, xio[i]);
-                        x3[b * nxio + i] = closure_3d_m(&ev, p, &cv, 0.0);
+                        x3[b * nxio + i] = closure_3d_m(&ev, p, &cv, 0.0, 1);
                     }
                 }
             }
@@ -2181,8 +2305,8 @@ int hx_cmd_eval(int argc, char **argv)
             EV_ROW("footprints | mean final-stride error (% of path)", "%.2f", fpv[b].final_pct_mean);
             EV_ROW("vicon | median of the per-trial median stride errors (m)", "%.3f", vv[b].stride_med);
             for (i = 0; i < nxio; i++) {
-                char label[300];
-                snprintf(label, sizeof label, "xio %s | 3-D closure (m)", xio[i]);
+                char label[EV_CELL_SIZE + 64], cell[EV_CELL_SIZE];
+                snprintf(label, sizeof label, "xio %s | 3-D closure (m)", md_cell(xio[i], cell, sizeof cell));
                 EV_ROW(label, "%.3f", x3[b * nxio + i]);
             }
 #undef EV_ROW
@@ -2237,10 +2361,10 @@ int hx_cmd_eval(int argc, char **argv)
         }
         {
             const double rates[2] = { 200.0, 100.0 };
-            char label[400];
+            char label[2 * EV_CELL_SIZE], cell[EV_CELL_SIZE];
             int k;
             for (i = 0; i < nxio + nother; i++) {
-                char p[1000];
+                char p[EV_PATH_SIZE];
                 double r3[3];
                 if (i < nxio) {
                     snprintf(p, sizeof p, "%s/xio_ngimu_gait/%s", ev.data, xio[i]);
@@ -2253,12 +2377,12 @@ int hx_cmd_eval(int argc, char **argv)
                     }
                 }
                 for (k = 0; k < 2; k++) {
-                    r3[k + 1] = closure_3d_m(&ev, p, &c2, rates[k]);
+                    r3[k + 1] = closure_3d_m(&ev, p, &c2, rates[k], i < nxio);
                 }
                 if (i < nxio) {
-                    snprintf(label, sizeof label, "xio %s (~400 Hz) | 3-D closure (m)", xio[i]);
+                    snprintf(label, sizeof label, "xio %s (~400 Hz) | 3-D closure (m)", md_cell(xio[i], cell, sizeof cell));
                 } else {
-                    snprintf(label, sizeof label, "%s (%.0f Hz) | 3-D closure (m)", other[i - nxio],
+                    snprintf(label, sizeof label, "%s (%.0f Hz) | 3-D closure (m)", md_cell(other[i - nxio], cell, sizeof cell),
                              other_hz[i - nxio]);
                 }
                 row3(ev.md, label, "%.3f", r3[0], r3[1], r3[2]);
@@ -2274,6 +2398,7 @@ int hx_cmd_eval(int argc, char **argv)
                    fp_100.files);
         fprintf(ev.md, "\n");
     }
+    warned_free(&ev); /* the runs are over: no failure to warn about after them */
     free(fp_walk);
     free(gx2_200_walk);
     free(gx2_100_walk);
@@ -2305,8 +2430,10 @@ int hx_cmd_eval(int argc, char **argv)
         }
         fprintf(ev.md, "| ipol: no missed or spurious strides | %s | %s |\n", v,
                 target(ip.trials, ip.missed == 0 && ip.spurious == 0));
-        if (ip.trials > 0) {
+        if (ip.trials > 0 && ip.n_fo > 0) {
             snprintf(v, sizeof v, "FO %.1f, FS %.1f", ip.fo_med, ip.fs_med);
+        } else if (ip.trials > 0) {
+            snprintf(v, sizeof v, "no event timed"); /* "FO nan, FS nan" until 2026-12-01 */
         } else {
             snprintf(v, sizeof v, "-");
         }
@@ -2320,13 +2447,20 @@ int hx_cmd_eval(int argc, char **argv)
     }
     if (ev.failures > ev.main_failures) {
         fprintf(ev.md, "\n%d of the experiments' runs failed (the same walks repeated with other settings; named in "
-                       "the warnings).\n",
+                       "the warnings, each fault once).\n",
                 ev.failures - ev.main_failures);
     }
     hx_progress_end(&ev.prog);
-    if (ev.md != stdout && fclose(ev.md) != 0) {
-        hx_error("eval", "cannot write %s", out_path);
-        return HX_EXIT_IO;
+    if (ev.md != stdout) {
+        /* a write that failed on the way (ferror) or at the close: said
+         * with the reason, and the JSON still written (until 2026-12-01
+         * eval returned before it, and said no reason) */
+        const int werr = ferror(ev.md);
+        const int cerr = fclose(ev.md) != 0 ? errno : 0;
+        if (werr || cerr != 0) {
+            hx_error("eval", "cannot write %s (%s)", out_path, strerror(cerr != 0 ? cerr : EIO));
+            md_failed = 1;
+        }
     }
     if (json_path != NULL) {
         cJSON *j = cJSON_CreateObject();
@@ -2354,6 +2488,9 @@ int hx_cmd_eval(int argc, char **argv)
             hx_error("eval", "%s", err);
             return HX_EXIT_IO;
         }
+    }
+    if (md_failed) {
+        return HX_EXIT_IO;
     }
     if (ev.failures > 0) {
         hx_error("eval", "%d run(s) failed, and %d of the experiments' runs (see the warnings); results are incomplete",

@@ -62,6 +62,11 @@ if grep -q '"failed_runs":[[:space:]]*1,' "$T/exp.json" && grep -q '"failed_expe
     && grep -q '\*\*1 run(s) failed\*\*' "$T/exp.md" && grep -q "of the experiments' runs failed" "$T/exp.md"; then
     pass "a bad walk counts once; the experiments' repeats apart"
 else fail "experiments: $(grep -o '"failed[a-z_]*":[^,]*' "$T/exp.json")"; fi
+# ... and is warned about once: each of its ten failed repeats warned the same "no stride detected" again
+# until 2026-12-01 (the repeats' count is in the JSON and under the targets)
+n=$(grep -c "Measurement_2000_1_data_inert.txt: no stride detected: no closure to judge" "$T/err")
+[ "$n" -eq 1 ] && pass "a bad walk's fault is warned once, not once per experiment run" ||
+    fail "a bad walk's fault with the experiments on: warned $n times"
 # the rate experiment's row of a walk that failed: dashes, as every table
 # (until 2026-11-29 "nan | nan | nan")
 mkdir -p "$T/expx/xio_ngimu_gait"
@@ -144,6 +149,171 @@ expect_err "vicon_3dmgx3/far_imu.csv: no motion-capture position columns" "no po
 n=$(grep -c "1-1.json: the events file has no TrialBoundaries pair" "$T/err")
 [ "$n" -eq 1 ] && pass "no TrialBoundaries: warned once per recording" || fail "no TrialBoundaries: warned $n times"
 rm -rf "$B"
+# an events file's fault that only one foot's events have: the foot missing (no LeftFootEvents, no
+# RightFootEvents) or one of its pairs not a pair (an end before its start, NaN). The foot itself fails on it,
+# and so does the other foot, whose evaluation needs them (both feet in the air): the same fault was warned twice
+# until 2026-12-01, once per foot. Once now, naming the events file and what is wrong; each foot keeps its row
+# and its failed run. The logs are empty placeholders: the events file is read first.
+B="$T/evonce"; ID="$B/ipol_gait_xsens"
+mkdir -p "$ID"
+for t in 1-1 1-2 1-3 1-4; do : >"$ID/${t}_lf.txt"; : >"$ID/${t}_rf.txt"; done
+printf '{"TrialBoundaries": [0, 100], "RightFootEvents": [[30, 40]]}\n' >"$ID/1-1.json"
+printf '{"TrialBoundaries": [0, 100], "LeftFootEvents": [[10, 20]]}\n' >"$ID/1-2.json"
+printf '{"TrialBoundaries": [0, 100], "LeftFootEvents": [[10, 20], [50, 40]], "RightFootEvents": [[30, 40]]}\n' >"$ID/1-3.json"
+printf '{"TrialBoundaries": [0, 100], "LeftFootEvents": [[10, 20]], "RightFootEvents": [[30, NaN]]}\n' >"$ID/1-4.json"
+expect_exit 1 "eval: events files with one foot's events missing or bad" "$H" eval --no-experiments --no-plots \
+    --data "$B" --out "$T/evonce.md" --json "$T/evonce.json"
+for c in "1-1.json: the events file has no LeftFootEvents" "1-2.json: the events file has no RightFootEvents" \
+    "1-3.json: LeftFootEvents\[1\] is not a pair of sample indices" \
+    "1-4.json: RightFootEvents\[0\] is not a pair of sample indices"; do
+    n=$(grep -c "^harness eval: warning: $ID/$c\$" "$T/err")
+    [ "$n" -eq 1 ] && pass "warned once per recording: $c" || fail "warned $n times: $c"
+done
+n=$(grep -c "^| 1-[1-4] | \(left\|right\) | - | - | - | - | - | - | not run: .*\(FootEvents\|sample indices\) |$" "$T/evonce.md")
+[ "$n" -eq 8 ] && json "$T/evonce.json" 'j["failed_runs"] == 8' && pass "each foot keeps its row and its failed run (8)" ||
+    fail "one foot's events at fault: $n rows, $(grep -o '"failed_runs":[^,]*' "$T/evonce.json")"
+rm -rf "$B"
+
+# --- no "nan" in results.md where a figure cannot be computed (the tables and summaries print "-" or say why;
+# until 2026-12-01 these printed "nan", exit 0): an unjudged closed walk without a stride (path 0, so no 3-D %),
+# an ipol trial whose expert swings are all missed (no event to time: the summary's and the target's medians),
+# and a footprint walk whose truth strides all stand at the first one's position (no measured path: its final
+# % was nan, and with it the section's median and mean; a failed run now, as a judged closed walk without a stride)
+B="$T/nofig"
+mkdir -p "$B/ipol_gait_xsens" "$B/openshoe_square2" "$B/pyshoe_vicon_llio/own_3dmgx5_footprints"
+for f in lf rf; do
+    awk 'BEGIN { print "Acquisition frequency: 100 Hz"; print "PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\tMag_X\tMag_Y\tMag_Z"
+                 for (i = 0; i < 3000; i++) printf "%d.0\t0.1\t0.2\t9.81\t0.001\t0.002\t0.001\t0.5\t0\t-0.4\n", i }' \
+        >"$B/ipol_gait_xsens/1-1_$f.txt"
+done
+printf '{"TrialBoundaries": [100, 2900], "UTurnBoundaries": [1400, 1500], "LeftFootEvents": [[500, 550], [700, 750]], "RightFootEvents": [[600, 650], [800, 850]]}\n' \
+    >"$B/ipol_gait_xsens/1-1.json"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) printf "%.3f,0.01,0.02,9.81,0.001,0,0\n", i / 100 }' \
+    >"$B/openshoe_square2/still.csv"
+"$H" sim --motion stand:5,walk:10,stand:3 --rate 200 --out "$B/pyshoe_vicon_llio/own_3dmgx5_footprints/same_imu.csv" \
+    >/dev/null 2>&1 || fail "sim of a walk for eval"
+printf 'strideIndex,time,x,y\n100,0.5,1.0,2.0\n1500,7.5,1.0,2.0\n2500,12.5,1.0,2.0\n' \
+    >"$B/pyshoe_vicon_llio/own_3dmgx5_footprints/same_strides_gcp.csv"
+expect_exit 1 "eval: figures that cannot be computed" "$H" eval --no-experiments --no-plots --data "$B" \
+    --out "$T/nofig.md" --json "$T/nofig.json"
+if grep -qi "nan" "$T/nofig.md"; then fail "nan in results.md: $(grep -i 'nan' "$T/nofig.md")"; else pass "no nan in results.md"; fi
+grep -q "^| openshoe_square2/still.csv | 100 | 0.00 | 0.000 | 0.000 | - | +0.000 | " "$T/nofig.md" &&
+    pass "a closed walk without a path: its 3-D % a dash" || fail "still closed walk: $(grep '^| openshoe_square2' "$T/nofig.md")"
+grep -q "^| same | - | - | - | - | - | - | not run: the truth's strides span no path (all at the first stride's position): no final-stride error as a share of it |$" \
+    "$T/nofig.md" && json "$T/nofig.json" 'j["failed_runs"] == 1 and j["footprints_final_pct_median"] is None' &&
+    pass "a footprint truth without a path: a failed run, said" || fail "truth without a path: $(grep '^| same' "$T/nofig.md")"
+expect_err "same_strides_gcp.csv: the truth's strides span no path" "a truth without a path: the truth file named"
+grep -q "Event timing: no expert swing detected, no event to time (target <= 2: \*\*not met\*\*)" "$T/nofig.md" &&
+    grep -q "^| ipol: median event timing error <= 2 samples | no event timed | \*\*not met\*\* |$" "$T/nofig.md" &&
+    json "$T/nofig.json" 'j["ipol_missed"] == 4 and j["ipol_fo_err_median"] is None' &&
+    pass "ipol without a detected swing: no event to time, said" || fail "ipol without events: $(grep 'Event timing\|event timing' "$T/nofig.md")"
+rm -rf "$B"
+
+# --- the paired tables of the experiments when every walk ties (the same figure in both runs, here a footprint
+# walk whose log never moves: final error = the truth's last stride in every configuration): no untied walk for
+# the sign test, whose p printed "nan" until 2026-12-01; "-" now, as every figure that cannot be computed
+B="$T/ties"; P="$B/pyshoe_vicon_llio/own_3dmgx5_footprints"
+mkdir -p "$P"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) printf "%.3f,0,0,9.80665,0,0,0\n", i / 200 }' >"$P/still_imu.csv"
+printf 'strideIndex,time,x,y\n100,0.5,0,0\n1500,7.5,1.0,0\n2500,12.5,2.0,0\n' >"$P/still_strides_gcp.csv"
+expect_exit 0 "eval with experiments: a walk that ties in every pair" "$H" eval --no-plots --data "$B" --out "$T/ties.md"
+if grep -qi "nan" "$T/ties.md"; then fail "ties: nan in results.md: $(grep -i 'nan' "$T/ties.md")"; else pass "ties: no nan in results.md"; fi
+n=$(grep -c "^| [a-zA-Z0-9 ]* | footprints final-stride error (%) | 1 | 0 of 0 | +0.00 \[+0.00, +0.00\] | - |$" "$T/ties.md")
+[ "$n" -eq 5 ] && pass "ties: each paired row's sign test is '-' (4 profiles, 100 vs 200 Hz)" ||
+    fail "ties: $n paired rows with '-': $(grep 'footprints final-stride error (%)' "$T/ties.md")"
+rm -rf "$B"
+
+# --- the other closed walks are reported, not judged: one without a stride keeps its row (exit 0), and so do its
+# rate experiment's runs. Those were judged as a closure (openshoe_gx2's, xio's): "no stride detected: no closure
+# to judge", two failed experiment runs, exit 1 and dashes, until 2026-12-01 (a still walk at 400 Hz, above the
+# experiment's 200 Hz)
+B="$T/unjudged"
+mkdir -p "$B/openshoe_c_820hz"
+awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 8000; i++) printf "%.4f,0.01,0.02,9.81,0.001,0,0\n", i / 400 }' \
+    >"$B/openshoe_c_820hz/walk.txt"
+expect_exit 0 "eval with experiments: an unjudged walk without a stride" "$H" eval --no-plots --data "$B" \
+    --out "$T/unjudged.md" --json "$T/unjudged.json"
+grep -q "^| openshoe_c_820hz/walk.txt (400 Hz) | 3-D closure (m) | [0-9.]* | [0-9.]* | [0-9.]* |$" "$T/unjudged.md" &&
+    json "$T/unjudged.json" 'j["failed_experiment_runs"] == 0' && ! grep -q "no closure to judge" "$T/err" &&
+    pass "an unjudged walk's rate experiment: reported, not judged" ||
+    fail "unjudged walk's experiment: $(grep '^| openshoe_c_820hz/walk.txt (' "$T/unjudged.md") $(grep warning "$T/err")"
+rm -rf "$B"
+
+# --- a figures' directory that exists but is no directory (--plots naming a file, or a file img beside --out): an
+# error before the run, exit 3, as a directory that cannot be made, results.md not touched. Until 2026-12-01 it
+# passed the check (mkdir's EEXIST), and each figure printed "error: cannot write .../eval-gx2.png (Not a
+# directory)" in the middle of a run that ended with exit 0
+B="$T/pfile"
+mkdir -p "$B/data/openshoe_gx2" "$B/md"
+still "$B/data/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+: >"$B/figs"
+: >"$B/md/img"
+echo "kept" >"$B/md/r.md"
+expect_exit 3 "eval --plots naming a file" "$H" eval --no-experiments --data "$B/data" --out "$B/md/r.md" --plots "$B/figs"
+expect_err "^harness eval: error: the figures' directory $B/figs is not a directory$" "--plots naming a file: said"
+expect_exit 3 "eval: a file img beside --out" "$H" eval --no-experiments --data "$B/data" --out "$B/md/r.md"
+expect_err "^harness eval: error: the figures' directory $B/md/img is not a directory$" "a file img beside --out: said"
+[ "$(cat "$B/md/r.md")" = "kept" ] && pass "figures' directory not a directory: results.md not touched" ||
+    fail "figures' directory not a directory: results.md overwritten"
+rm -rf "$B"
+
+# --- a data directory with a long name (561 bytes, far under PATH_MAX): eval kept 511 bytes of it and said "no
+# shared data in" the cut name, exit 4, until 2026-12-01. It is evaluated; one too long for eval's room (over 1,023
+# bytes) is refused as such, exit 2, not taken for a missing directory
+B=$T/$(printf '%0200d' 0)/$(printf '%0200d' 1)/$(printf '%0140d' 2)
+mkdir -p "$B/openshoe_gx2"
+still "$B/openshoe_gx2/Measurement_2000_1_data_inert.txt"
+expect_exit 1 "eval: a data directory of $(printf '%s' "$B" | wc -c) bytes" "$H" eval --no-experiments --no-plots --data "$B" \
+    --out "$T/longdata.md"
+grep -q "^| Measurement_2000_1 | - |.*| not run: no stride detected: no closure to judge |$" "$T/longdata.md" &&
+    pass "a data directory with a long name: its walk evaluated" || fail "long data directory: $(head -c 300 "$T/err")"
+B2=$B/$(printf '%0250d' 3)/$(printf '%0250d' 4)
+mkdir -p "$B2/openshoe_gx2"
+expect_exit 2 "eval: a data directory longer than eval's room" "$H" eval --no-experiments --no-plots --data "$B2" --out "$T/longdata2.md"
+expect_err "^harness eval: error: the data directory .* is longer than 1023 bytes" "a data directory too long: said"
+rm -rf "$T/$(printf '%0200d' 0)"
+
+# --- a walk whose file name holds '|' (or a line break): written as it was into a Markdown table row, it made one
+# cell more and broke the table until 2026-12-01; escaped now ("\|"; a control character as '?'). And in a row's
+# reason, where '|' was made '/' (an ipol trial 1|1 without its events file: "cannot open 1/1.json", another name)
+B="$T/pipe"
+mkdir -p "$B/openshoe_gx2" "$B/openshoe_square2" "$B/ipol_gait_xsens"
+: >"$B/ipol_gait_xsens/1|1_lf.txt"
+still "$B/openshoe_gx2/a|b_data_inert.txt"
+still "$B/openshoe_square2/c|d.csv"
+still "$B/openshoe_square2/e
+f.csv"
+expect_exit 1 "eval: walks named with '|' and a line break" "$H" eval --no-experiments --no-plots --data "$B" --out "$T/pipe.md"
+bad=$(awk '/^\|/ { l = $0; gsub(/\\\|/, "", l); n = gsub(/\|/, "", l);
+             if (!intab) { want = n; intab = 1 } else if (n != want) print FNR ": " $0 }
+     !/^\|/ { intab = 0 }' "$T/pipe.md")
+if [ -z "$bad" ] && grep -q '^| a\\|b | - |' "$T/pipe.md" && grep -q '^| openshoe_square2/c\\|d.csv | ' "$T/pipe.md" &&
+    grep -q '^| openshoe_square2/e?f.csv | ' "$T/pipe.md" &&
+    [ "$(grep -c '^| 1\\|1 | \(left\|right\) | - | .* | not run: cannot open 1\\|1.json |$' "$T/pipe.md")" -eq 2 ]; then
+    pass "names with '|' and a line break: escaped, every row as wide as its table"
+else fail "names with '|': rows with a wrong cell count: $bad"; fi
+rm -rf "$B"
+
+# --- results.md that cannot be written (a full disk): exit 3, the reason given, and the JSON of --json still
+# written; until 2026-12-01 eval returned before it ("nothing computed is lost", docs/harness.md), and the error
+# said "cannot write /dev/full" without why
+if [ -w /dev/full ]; then
+    B="$T/full"
+    mkdir -p "$B/openshoe_square2"
+    still "$B/openshoe_square2/s.csv"
+    expect_exit 3 "eval --out onto a full disk" "$H" eval --no-experiments --no-plots --data "$B" --out /dev/full --json "$T/full.json"
+    expect_err "^harness eval: error: cannot write /dev/full (No space left on device)$" "eval --out onto a full disk: the reason given"
+    json "$T/full.json" 'j["failed_runs"] == 0 and "gx2_h_pct_median" in j' && pass "eval --out onto a full disk: the JSON written" ||
+        fail "eval --out onto a full disk: no JSON"
+    rm -rf "$B"
+else
+    echo "skip eval's full-disk check (no /dev/full)"
+fi
+# ... and one that cannot be opened, before the run: the reason given too
+mkdir -p "$T/nof/openshoe_square2"
+still "$T/nof/openshoe_square2/s.csv"
+expect_exit 3 "eval --out in a missing directory" "$H" eval --no-experiments --no-plots --data "$T/nof" --out "$T/no/such/r.md"
+expect_err "^harness eval: error: cannot write $T/no/such/r.md (No such file or directory)$" "eval --out in a missing directory: the reason"
 
 # a data directory with its MANIFEST.md and set folders but not one walk
 # (a copy not synced): nothing to run on, exit 4, the results file left as
