@@ -1998,6 +1998,10 @@ int hx_cmd_eval(int argc, char **argv)
         return HX_EXIT_IO;
     }
     hx_progress_start(&ev.prog, "eval", ev.total_runs);
+    /* each walk is replayed up to 11 times (its table's run and the
+     * experiments' repeats): the reader's warnings and notes about it are
+     * printed by its first run only, the repeats counted below */
+    hx_warn_once(1);
     off = ev.cfg;
     off.bias_model = FNAV_BIAS_OFF;
     ar1 = ev.cfg;
@@ -2451,6 +2455,11 @@ int hx_cmd_eval(int argc, char **argv)
                 ev.failures - ev.main_failures);
     }
     hx_progress_end(&ev.prog);
+    hx_warn_once(0);
+    if (hx_warn_repeats() > 0) {
+        fprintf(stderr, "harness eval: note: %ld warning(s) and note(s) repeated by the walks' later runs, printed once\n",
+                hx_warn_repeats());
+    }
     if (ev.md != stdout) {
         /* a write that failed on the way (ferror) or at the close: said
          * with the reason, and the JSON still written (until 2026-12-01

@@ -302,9 +302,68 @@ void hx_error(const char *cmd, const char *fmt, ...)
 
 const char *hx_cmd_name = "harness";
 
+/* Once-per-process mode (hx_warn_once): the 64-bit FNV-1a hash of each
+ * warning and note printed, "cmd\nkind\ntext"; a repeat is counted, not
+ * printed. A full table prints every new message (nothing is lost but the
+ * dedup). */
+#define HX_WARN_SEEN_MAX 4096
+static int g_warn_once;
+static unsigned long long g_warn_seen[HX_WARN_SEEN_MAX];
+static size_t g_warn_seen_n;
+static long g_warn_repeats;
+
+void hx_warn_once(int on)
+{
+    g_warn_once = on;
+}
+
+long hx_warn_repeats(void)
+{
+    return g_warn_repeats;
+}
+
+static unsigned long long fnv1a(unsigned long long h, const char *s)
+{
+    for (; *s != '\0'; s++) {
+        h ^= (unsigned char)*s;
+        h *= 1099511628211ULL;
+    }
+    return h ^ 0x0aULL; /* a separator, so that ("ab", "c") and ("a", "bc") differ */
+}
+
+/* 1 when the message was printed already in once mode (counted), else 0
+ * (remembered). */
+static int warn_repeat(const char *cmd, const char *kind, const char *text)
+{
+    unsigned long long h = fnv1a(fnv1a(fnv1a(14695981039346656037ULL, cmd), kind), text);
+    size_t i;
+    if (!g_warn_once) {
+        return 0;
+    }
+    for (i = 0; i < g_warn_seen_n; i++) {
+        if (g_warn_seen[i] == h) {
+            g_warn_repeats++;
+            return 1;
+        }
+    }
+    if (g_warn_seen_n < HX_WARN_SEEN_MAX) {
+        g_warn_seen[g_warn_seen_n++] = h;
+    }
+    return 0;
+}
+
 void hx_warn(const char *cmd, const char *fmt, ...)
 {
     va_list ap;
+    if (g_warn_once) {
+        char text[4096];
+        va_start(ap, fmt);
+        (void)vsnprintf(text, sizeof text, fmt, ap);
+        va_end(ap);
+        if (warn_repeat(cmd, "warning", text)) {
+            return;
+        }
+    }
     hx_line_break();
     fprintf(stderr, "harness %s: warning: ", cmd);
     va_start(ap, fmt);
@@ -404,7 +463,10 @@ void hx_print_warnings(const char *cmd, const char *w)
     snprintf(buf, sizeof buf, "%s", w);
     for (line = strtok_r(buf, "\n", &save); line != NULL; line = strtok_r(NULL, "\n", &save)) {
         if (strncmp(line, "note: ", 6) == 0) {
-            fprintf(stderr, "harness %s: note: %s\n", cmd, line + 6); /* routine: nothing to act on */
+            if (!warn_repeat(cmd, "note", line + 6)) {
+                hx_line_break();
+                fprintf(stderr, "harness %s: note: %s\n", cmd, line + 6); /* routine: nothing to act on */
+            }
         } else {
             hx_warn(cmd, "%s", line);
         }

@@ -96,6 +96,17 @@ void hx_warn(const char *cmd, const char *fmt, ...)
 #endif
     ;
 
+/** Once-per-process mode for hx_warn and hx_print_warnings' notes (on:
+ *  1): a message identical to one printed already (the same command and
+ *  text) is counted, not printed again. For a command that runs the same
+ *  logs several times (eval: a walk's table run and its experiments'
+ *  repeats printed each reader warning up to 11 times, until 2026-12-01);
+ *  off by default, so a command that warns of repeated events (live's
+ *  hangups) says each. */
+void hx_warn_once(int on);
+/** Messages not printed again in once mode so far. */
+long hx_warn_repeats(void);
+
 /** A warning when an output log's name ends in .gz (any case): footnav
  *  writes no gzip, so the file is plain (and CSV unless fmt, the format
  *  asked for, is HX_FMT_BIN or the name ends in .bin before the .gz). */

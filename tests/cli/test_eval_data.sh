@@ -609,6 +609,25 @@ else
     echo "skip the bias-model experiment (xio_ngimu_gait/short_walk.csv not in the shared data)"
 fi
 
+# --- a reader's warning or note about a walk is printed once per eval, not
+# by each of the walk's eleven runs (the table's and the experiments'
+# repeats): until 2026-12-01 a gx2 walk cut off mid-line printed its
+# "last line is incomplete" 11 times, and each walk's timer-restart note too
+if [ -n "$D" ] && [ -f "$D/openshoe_gx2/Measurement_100521_31_data_inert.txt" ]; then
+    mkdir -p "$T/rw/openshoe_gx2"
+    ln -s "$(cd "$D" && pwd)/openshoe_gx2/Measurement_100521_31_data_inert.txt" "$T/rw/openshoe_gx2/"
+    "$H" eval --data "$T/rw" --out "$T/rw.md" --no-plots > /dev/null 2> "$T/rw.err"
+    nw=$(grep -c "Measurement_100521_31_data_inert.txt:16790: last line is incomplete" "$T/rw.err")
+    nn=$(grep -c "note: .*Measurement_100521_31_data_inert.txt: the sensor's timer restarted" "$T/rw.err")
+    dup=$(grep -E "warning:|note:" "$T/rw.err" | sort | uniq -d | head -1)
+    if [ "$nw" -eq 1 ] && [ "$nn" -eq 1 ] && [ -z "$dup" ] &&
+        grep -q "note: .* repeated by the walks' later runs, printed once" "$T/rw.err"; then
+        pass "a walk's reader warning and note printed once per eval, the repeats counted"
+    else fail "repeated reader messages: warning $nw times, note $nn times, repeated: $dup"; fi
+else
+    echo "skip the repeated reader warnings (openshoe_gx2 walk 31 not in the shared data)"
+fi
+
 # --- a figures' directory whose name has spaces and parentheses: results.md linked it as written, which is no
 # Markdown link (a destination ends at a space; the figure was not shown); it is percent-encoded (the plots review)
 if [ -n "$D" ]; then
