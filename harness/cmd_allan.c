@@ -749,6 +749,9 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         hx_warn(CMD, "%s: analysed at --rate %g Hz; the log's own rate is %g Hz", path, rate_opt, stamp_rate);
     }
     hx_reader_close(r);
+    if (R->rate_hz <= 0.0 && rc == 0 && R->n < 2u) {
+        return 0; /* one sample has no interval: the caller names the samples needed, not --rate */
+    }
     if (R->rate_hz <= 0.0) {
         hx_error(CMD, "%s: %s", path,
                  rc != 0 ? "too few samples before the error to know the sample rate"
@@ -2480,15 +2483,12 @@ int hx_cmd_allan(int argc, char **argv)
     }
     input_rc = series != NULL ? read_series(R, path, hx_flag(&a, "--phase"), column)
                               : read_log(R, &a, path, rate_opt);
-    if (input_rc < 0 || R->n < 2u) {
-        if (input_rc >= 0) {
-            hx_error(CMD, "%s: fewer than 2 samples", path);
-        }
+    if (input_rc < 0) {
         free_run(R);
         free(R);
         return HX_EXIT_DATA;
     }
-    if ((double)R->n < samples_needed(R)) {
+    if (R->n < 2u || (double)R->n < samples_needed(R)) {
         /* no tau in range: every table was empty and every value n/a, exit
          * 0 (2 samples; the ident review, 2026-11-29) */
         hx_error(CMD, "%s: %lu samples are too few for any Allan point: the shortest tau (%lu sample%s) needs at "

@@ -115,6 +115,21 @@ expect_err "two.csv: 2 samples are too few for any Allan point: the shortest tau
 head -n 10 "$T/tiny.csv" >"$T/nine.csv"
 expect_exit 1 "a 9-sample log" "$H" allan "$T/nine.csv" --no-sim --quiet
 expect_err "needs at least 10 samples (tau up to 0.1 of the record, --max-tau-frac)" "9 samples are too few"
+# a 1-sample log: until 2026-12-01 "sample rate unknown; give --rate" (one sample has no interval; --rate then
+# gave "fewer than 2 samples"), neither naming the samples needed (the fresh-eyes allan review); needed: the
+# shortest tau, 1 sample, within 0.1 of the record: n >= 1 / 0.1 = 10
+head -n 2 "$T/tiny.csv" >"$T/one.csv"
+expect_exit 1 "a 1-sample log" "$H" allan "$T/one.csv" --no-sim --quiet
+expect_err "one.csv: 1 samples are too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
+    "a 1-sample log: the samples it needs are named"
+grep -q "give --rate" "$T/err" && fail "a 1-sample log: told to give --rate" || pass "a 1-sample log: no --rate remedy"
+expect_exit 1 "a 1-sample log with --rate" "$H" allan "$T/one.csv" --rate 100 --no-sim --quiet
+expect_err "one.csv: 1 samples are too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
+    "a 1-sample log with --rate: the samples it needs are named"
+printf '1\n' >"$T/one.txt"
+expect_exit 1 "a 1-sample series" "$H" allan --series "$T/one.txt" --rate 1 --no-sim --quiet
+expect_err "one.txt: 1 samples are too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
+    "a 1-sample series: the samples it needs are named"
 expect_exit 0 "a 2-sample log at --max-tau-frac 0.5" "$H" allan "$T/two.csv" --no-sim --quiet --max-tau-frac 0.5
 printf '1\n2\n4\n3\n5\n' >"$T/five.txt"
 expect_exit 1 "a 5-sample series with --m 2,4" "$H" allan --series "$T/five.txt" --rate 1 --no-sim --quiet --m 2,4
