@@ -920,6 +920,12 @@ static int read_series(run_t *R, const char *path, int phase, long column)
             R->n++;
         }
     }
+    if (rc == 0 && ferror(f)) {
+        /* not the end of the series: a directory said "no numbers", a
+         * failing read mid-file ended the series there, complete */
+        input_fail(R, "%s: read error (%s)", path, strerror(errno));
+        rc = 1;
+    }
     fclose(f);
     if (blanks > 0) {
         /* a blank line is no sample: if one stood for a missing value,
@@ -928,6 +934,9 @@ static int read_series(run_t *R, const char *path, int phase, long column)
         hx_warn(CMD, "%s: %ld blank line%s among the numbers (the first at line %ld) %s skipped, not read as "
                      "samples: if one stands for a missing value, every later value is one sample early",
                 path, blanks, blanks == 1 ? "" : "s", blank_first, blanks == 1 ? "is" : "are");
+    }
+    if (R->n == 0 && rc == 0 && data_lines == 1) {
+        return 0; /* one phase value, no frequency: the caller names the samples needed */
     }
     if (R->n == 0) {
         if (rc == 0) {

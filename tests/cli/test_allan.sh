@@ -130,6 +130,17 @@ printf '1\n' >"$T/one.txt"
 expect_exit 1 "a 1-sample series" "$H" allan --series "$T/one.txt" --rate 1 --no-sim --quiet
 expect_err "one.txt: 1 samples are too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
     "a 1-sample series: the samples it needs are named"
+# a series that cannot be read (a directory: fgets fails, EISDIR) said "no numbers", and a read error mid-file
+# ended the series there as if at its end, complete (the fresh-eyes allan review, 2026-12-01)
+mkdir "$T/adir"
+expect_exit 1 "a directory as --series" "$H" allan --series "$T/adir" --rate 1 --no-sim --quiet
+expect_err "adir: read error (Is a directory)" "a directory as --series: the read error is named"
+grep -q "no numbers" "$T/err" && fail "a directory as --series: said 'no numbers'" ||
+    pass "a directory as --series: not 'no numbers'"
+# one phase value with --phase: a number, but no frequency; said "no numbers"
+expect_exit 1 "one phase value" "$H" allan --series "$T/one.txt" --rate 1 --phase --no-sim --quiet
+expect_err "one.txt: 0 samples are too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
+    "one phase value: the samples it needs are named"
 expect_exit 0 "a 2-sample log at --max-tau-frac 0.5" "$H" allan "$T/two.csv" --no-sim --quiet --max-tau-frac 0.5
 printf '1\n2\n4\n3\n5\n' >"$T/five.txt"
 expect_exit 1 "a 5-sample series with --m 2,4" "$H" allan --series "$T/five.txt" --rate 1 --no-sim --quiet --m 2,4
