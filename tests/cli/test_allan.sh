@@ -536,6 +536,18 @@ if json "$T/wser.json" "j['channels'][0]['profile'].get('basis') == 'bound'"; th
 else
     fail "the white series' AR(1) was resolved: no bound to draw"
 fi
+# --sim-samples shorter than the record: the simulated curves were drawn to --max-tau-frac of the measured record
+# (3 s of these 30 s), 3 times their own 10 % (1,000 samples at 100 Hz: 1 s), down to a term or two (the fresh-eyes
+# allan review, 2026-12-01); each simulation keeps to its own record's --max-tau-frac, as the measured curve does
+expect_exit 0 "a white series, --plot --sim-samples 1000" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/wsim.gp" "$H" allan \
+    --series "$T/wser.txt" --rate 100 --quiet --sim-samples 1000 --plot "$T/wsim.png"
+for b in sp sf; do
+    tmax=$(awk -v b="\$$b" '$1 == b && $2 == "<<" { on = 1; next } on && $1 == "EOD" { on = 0 } on { t = $1 } END { print t + 0 }' "$T/wsim.gp")
+    nmax=$(awk -v b="\$m" '$1 == b && $2 == "<<" { on = 1; next } on && $1 == "EOD" { on = 0 } on { t = $1 } END { print t + 0 }' "$T/wsim.gp")
+    awk -v t="$tmax" -v m="$nmax" 'BEGIN { exit !(t > 0 && t <= 1.0 + 1e-9 && m > 2.5) }' &&
+        pass "simulated curve \$$b ends at $tmax s, within 10 % of its 10-s record (the measured one at $nmax s)" ||
+        fail "simulated curve \$$b ends at $tmax s, past 10 % of its 10-s record, 1 s (the measured one at $nmax s)"
+done
 # (every channel is unresolved here: no fit may go unmarked; a channel with no fit at all draws none)
 [ "$nb" -eq 6 ] && grep -q "title 'corrected model (analytic, unresolved)'" "$T/w10s.gp" &&
     grep -q "title 'simulated, corrected id. (unresolved)'" "$T/w10s.gp" &&
