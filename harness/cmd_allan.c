@@ -2511,9 +2511,10 @@ int hx_cmd_allan(int argc, char **argv)
     if (R->n < 2u || (double)R->n < samples_needed(R)) {
         /* no tau in range: every table was empty and every value n/a, exit
          * 0 (2 samples; the ident review, 2026-11-29) */
-        hx_error(CMD, "%s: %lu samples are too few for any Allan point: the shortest tau (%lu sample%s) needs at "
+        hx_error(CMD, "%s: %lu %s too few for any Allan point: the shortest tau (%lu sample%s) needs at "
                       "least %.0f samples (tau up to %g of the record, --max-tau-frac)",
-                 path, (unsigned long)R->n, (unsigned long)R->grid[0], R->grid[0] == 1u ? "" : "s",
+                 path, (unsigned long)R->n, R->n == 1u ? "sample is" : "samples are", (unsigned long)R->grid[0],
+                 R->grid[0] == 1u ? "" : "s",
                  samples_needed(R), R->tau_max_frac);
         free_run(R);
         free(R);

@@ -120,15 +120,15 @@ expect_err "needs at least 10 samples (tau up to 0.1 of the record, --max-tau-fr
 # shortest tau, 1 sample, within 0.1 of the record: n >= 1 / 0.1 = 10
 head -n 2 "$T/tiny.csv" >"$T/one.csv"
 expect_exit 1 "a 1-sample log" "$H" allan "$T/one.csv" --no-sim --quiet
-expect_err "one.csv: 1 samples are too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
+expect_err "one.csv: 1 sample is too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
     "a 1-sample log: the samples it needs are named"
 grep -q "give --rate" "$T/err" && fail "a 1-sample log: told to give --rate" || pass "a 1-sample log: no --rate remedy"
 expect_exit 1 "a 1-sample log with --rate" "$H" allan "$T/one.csv" --rate 100 --no-sim --quiet
-expect_err "one.csv: 1 samples are too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
+expect_err "one.csv: 1 sample is too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
     "a 1-sample log with --rate: the samples it needs are named"
 printf '1\n' >"$T/one.txt"
 expect_exit 1 "a 1-sample series" "$H" allan --series "$T/one.txt" --rate 1 --no-sim --quiet
-expect_err "one.txt: 1 samples are too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
+expect_err "one.txt: 1 sample is too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
     "a 1-sample series: the samples it needs are named"
 # a series that cannot be read (a directory: fgets fails, EISDIR) said "no numbers", and a read error mid-file
 # ended the series there as if at its end, complete (the fresh-eyes allan review, 2026-12-01)
