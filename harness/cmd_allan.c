@@ -129,6 +129,7 @@ typedef struct {
     int nchunk;
     double rate_hz;
     uint32_t n;              /* samples pushed per channel */
+    uint32_t nsim;           /* samples per Fig. 7 simulation (0: none run) */
     double tau_max_frac;
     double conf;
     const char *source;
@@ -749,6 +750,9 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         hx_warn(CMD, "%s: analysed at --rate %g Hz; the log's own rate is %g Hz", path, rate_opt, stamp_rate);
     }
     hx_reader_close(r);
+    if (R->rate_hz <= 0.0 && rc == 0 && R->n < 2u) {
+        return 0; /* one sample has no interval: the caller names the samples needed, not --rate */
+    }
     if (R->rate_hz <= 0.0) {
         hx_error(CMD, "%s: %s", path,
                  rc != 0 ? "too few samples before the error to know the sample rate"
@@ -917,6 +921,12 @@ static int read_series(run_t *R, const char *path, int phase, long column)
             R->n++;
         }
     }
+    if (rc == 0 && ferror(f)) {
+        /* not the end of the series: a directory said "no numbers", a
+         * failing read mid-file ended the series there, complete */
+        input_fail(R, "%s: read error (%s)", path, strerror(errno));
+        rc = 1;
+    }
     fclose(f);
     if (blanks > 0) {
         /* a blank line is no sample: if one stood for a missing value,
@@ -925,6 +935,9 @@ static int read_series(run_t *R, const char *path, int phase, long column)
         hx_warn(CMD, "%s: %ld blank line%s among the numbers (the first at line %ld) %s skipped, not read as "
                      "samples: if one stands for a missing value, every later value is one sample early",
                 path, blanks, blanks == 1 ? "" : "s", blank_first, blanks == 1 ? "is" : "are");
+    }
+    if (R->n == 0 && rc == 0 && data_lines == 1) {
+        return 0; /* one phase value, no frequency: the caller names the samples needed */
     }
     if (R->n == 0) {
         if (rc == 0) {
@@ -1190,6 +1203,15 @@ static const char *noise_name(const chan_t *ch, size_t i)
 static int in_range(const run_t *R, const fnav_allan_result_t *r)
 {
     return r->terms > 0u && (double)r->tau <= tau_max_samples(R) * (1.0 + 1e-9);
+}
+
+/* A Fig. 7 simulation's point within --max-tau-frac of its own record, as
+ * the measured curve's within the log's: with --sim-samples below the log's
+ * length the simulated curves were drawn to the log's limit, past their own
+ * 10 %, down to a term or two (the fresh-eyes allan review, 2026-12-01). */
+static int sim_in_range(const run_t *R, const fnav_allan_result_t *r)
+{
+    return r->terms > 0u && (double)r->tau <= R->tau_max_frac * (double)R->nsim * (1.0 + 1e-9);
 }
 
 static void print_regions(const run_t *R, const chan_t *ch)
@@ -1655,11 +1677,12 @@ static int plot_block(FILE *gp, const char *name, const run_t *R, const chan_t *
                 fprintf(gp, "%.6g %.6g %.6g %.6g\n", t, sqrt((double)r->avar), ch->lo[k], ch->hi[k]);
                 np++;
             }
-        } else if (what == 1 && ch->have_sim_paper && ch->sim_paper[k].terms > 0u &&
+        } else if (what == 1 && ch->have_sim_paper && sim_in_range(R, &ch->sim_paper[k]) &&
                    (double)ch->sim_paper[k].avar > 0.0) {
             fprintf(gp, "%.6g %.6g\n", t, sqrt((double)ch->sim_paper[k].avar));
             np++;
-        } else if (what == 2 && ch->have_sim_fit && ch->sim_fit[k].terms > 0u && (double)ch->sim_fit[k].avar > 0.0) {
+        } else if (what == 2 && ch->have_sim_fit && sim_in_range(R, &ch->sim_fit[k]) &&
+                   (double)ch->sim_fit[k].avar > 0.0) {
             fprintf(gp, "%.6g %.6g\n", t, sqrt((double)ch->sim_fit[k].avar));
             np++;
         } else if (what == 3 && ch->id_ok && ch->id.fit_ok) {
@@ -2480,20 +2503,18 @@ int hx_cmd_allan(int argc, char **argv)
     }
     input_rc = series != NULL ? read_series(R, path, hx_flag(&a, "--phase"), column)
                               : read_log(R, &a, path, rate_opt);
-    if (input_rc < 0 || R->n < 2u) {
-        if (input_rc >= 0) {
-            hx_error(CMD, "%s: fewer than 2 samples", path);
-        }
+    if (input_rc < 0) {
         free_run(R);
         free(R);
         return HX_EXIT_DATA;
     }
-    if ((double)R->n < samples_needed(R)) {
+    if (R->n < 2u || (double)R->n < samples_needed(R)) {
         /* no tau in range: every table was empty and every value n/a, exit
          * 0 (2 samples; the ident review, 2026-11-29) */
-        hx_error(CMD, "%s: %lu samples are too few for any Allan point: the shortest tau (%lu sample%s) needs at "
+        hx_error(CMD, "%s: %lu %s too few for any Allan point: the shortest tau (%lu sample%s) needs at "
                       "least %.0f samples (tau up to %g of the record, --max-tau-frac)",
-                 path, (unsigned long)R->n, (unsigned long)R->grid[0], R->grid[0] == 1u ? "" : "s",
+                 path, (unsigned long)R->n, R->n == 1u ? "sample is" : "samples are", (unsigned long)R->grid[0],
+                 R->grid[0] == 1u ? "" : "s",
                  samples_needed(R), R->tau_max_frac);
         free_run(R);
         free(R);
@@ -2565,6 +2586,7 @@ int hx_cmd_allan(int argc, char **argv)
     } else if (!hx_flag(&a, "--no-sim")) {
         const uint32_t nsim = nsim_d > 0.0 ? (uint32_t)nsim_d : R->n;
         hx_progress_t pr;
+        R->nsim = nsim;
         double done = 0.0, total = 2.0 * (double)nsim * (double)R->nch;
         hx_progress_start(&pr, "allan: simulating (Fig. 7 check)", 1.0);
         for (i = 0; i < R->nch; i++) {

@@ -115,6 +115,32 @@ expect_err "two.csv: 2 samples are too few for any Allan point: the shortest tau
 head -n 10 "$T/tiny.csv" >"$T/nine.csv"
 expect_exit 1 "a 9-sample log" "$H" allan "$T/nine.csv" --no-sim --quiet
 expect_err "needs at least 10 samples (tau up to 0.1 of the record, --max-tau-frac)" "9 samples are too few"
+# a 1-sample log: until 2026-12-01 "sample rate unknown; give --rate" (one sample has no interval; --rate then
+# gave "fewer than 2 samples"), neither naming the samples needed (the fresh-eyes allan review); needed: the
+# shortest tau, 1 sample, within 0.1 of the record: n >= 1 / 0.1 = 10
+head -n 2 "$T/tiny.csv" >"$T/one.csv"
+expect_exit 1 "a 1-sample log" "$H" allan "$T/one.csv" --no-sim --quiet
+expect_err "one.csv: 1 sample is too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
+    "a 1-sample log: the samples it needs are named"
+grep -q "give --rate" "$T/err" && fail "a 1-sample log: told to give --rate" || pass "a 1-sample log: no --rate remedy"
+expect_exit 1 "a 1-sample log with --rate" "$H" allan "$T/one.csv" --rate 100 --no-sim --quiet
+expect_err "one.csv: 1 sample is too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
+    "a 1-sample log with --rate: the samples it needs are named"
+printf '1\n' >"$T/one.txt"
+expect_exit 1 "a 1-sample series" "$H" allan --series "$T/one.txt" --rate 1 --no-sim --quiet
+expect_err "one.txt: 1 sample is too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
+    "a 1-sample series: the samples it needs are named"
+# a series that cannot be read (a directory: fgets fails, EISDIR) said "no numbers", and a read error mid-file
+# ended the series there as if at its end, complete (the fresh-eyes allan review, 2026-12-01)
+mkdir "$T/adir"
+expect_exit 1 "a directory as --series" "$H" allan --series "$T/adir" --rate 1 --no-sim --quiet
+expect_err "adir: read error (Is a directory)" "a directory as --series: the read error is named"
+grep -q "no numbers" "$T/err" && fail "a directory as --series: said 'no numbers'" ||
+    pass "a directory as --series: not 'no numbers'"
+# one phase value with --phase: a number, but no frequency; said "no numbers"
+expect_exit 1 "one phase value" "$H" allan --series "$T/one.txt" --rate 1 --phase --no-sim --quiet
+expect_err "one.txt: 0 samples are too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
+    "one phase value: the samples it needs are named"
 expect_exit 0 "a 2-sample log at --max-tau-frac 0.5" "$H" allan "$T/two.csv" --no-sim --quiet --max-tau-frac 0.5
 printf '1\n2\n4\n3\n5\n' >"$T/five.txt"
 expect_exit 1 "a 5-sample series with --m 2,4" "$H" allan --series "$T/five.txt" --rate 1 --no-sim --quiet --m 2,4
@@ -510,6 +536,18 @@ if json "$T/wser.json" "j['channels'][0]['profile'].get('basis') == 'bound'"; th
 else
     fail "the white series' AR(1) was resolved: no bound to draw"
 fi
+# --sim-samples shorter than the record: the simulated curves were drawn to --max-tau-frac of the measured record
+# (3 s of these 30 s), 3 times their own 10 % (1,000 samples at 100 Hz: 1 s), down to a term or two (the fresh-eyes
+# allan review, 2026-12-01); each simulation keeps to its own record's --max-tau-frac, as the measured curve does
+expect_exit 0 "a white series, --plot --sim-samples 1000" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/wsim.gp" "$H" allan \
+    --series "$T/wser.txt" --rate 100 --quiet --sim-samples 1000 --plot "$T/wsim.png"
+for b in sp sf; do
+    tmax=$(awk -v b="\$$b" '$1 == b && $2 == "<<" { on = 1; next } on && $1 == "EOD" { on = 0 } on { t = $1 } END { print t + 0 }' "$T/wsim.gp")
+    nmax=$(awk -v b="\$m" '$1 == b && $2 == "<<" { on = 1; next } on && $1 == "EOD" { on = 0 } on { t = $1 } END { print t + 0 }' "$T/wsim.gp")
+    awk -v t="$tmax" -v m="$nmax" 'BEGIN { exit !(t > 0 && t <= 1.0 + 1e-9 && m > 2.5) }' &&
+        pass "simulated curve \$$b ends at $tmax s, within 10 % of its 10-s record (the measured one at $nmax s)" ||
+        fail "simulated curve \$$b ends at $tmax s, past 10 % of its 10-s record, 1 s (the measured one at $nmax s)"
+done
 # (every channel is unresolved here: no fit may go unmarked; a channel with no fit at all draws none)
 [ "$nb" -eq 6 ] && grep -q "title 'corrected model (analytic, unresolved)'" "$T/w10s.gp" &&
     grep -q "title 'simulated, corrected id. (unresolved)'" "$T/w10s.gp" &&
