@@ -474,7 +474,9 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, i
         int m = 0;
         for (i = 0; i < ns; i++) {
             double ts = (double)(t_ns[st[i].first] - t_ns[0]) * 1e-9;
-            if (ts >= wa && ts < wb) {
+            /* the last window closed: a stance beginning at the segment's
+             * last sample was in none (a review, 2026-12-01) */
+            if (ts >= wa && (ts < wb || w == nwin - 1)) {
                 s += st[i].nis_first;
                 m++;
             }

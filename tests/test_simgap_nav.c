@@ -322,6 +322,45 @@ static void test_stance_points(void **state)
     sg_plist_free(&pl);
 }
 
+/* The windows cover the segment to its last sample: a stance whose first
+ * update is the segment's last sample belongs to the last window. 30
+ * samples at 100 Hz (t 0-0.29 s), two windows [0, 0.145) and [0.145,
+ * 0.29]; stances at samples 2 (NIS 2) and 29 (NIS 7). Until 2026-12-01 the
+ * last window was half-open, the second stance was in no window (counted
+ * in the mean first-update NIS, 4.5, but not in its window) and the window
+ * was an empty placeholder. */
+static void test_stance_points_last_sample(void **state)
+{
+    enum { N = 30 };
+    static int64_t t[N];
+    static unsigned char zupt[N];
+    static double y[N][3], S[N][6], nis[N], v[N][3], p[N][3];
+    double vals[16];
+    sg_plist_t pl;
+    long cnt;
+    int k;
+    (void)state;
+    memset(&pl, 0, sizeof pl);
+    for (k = 0; k < N; k++) {
+        t[k] = (int64_t)k * 10000000;
+        S[k][0] = S[k][3] = S[k][5] = 1.0;
+    }
+    zupt[2] = zupt[N - 1] = 1;
+    nis[2] = 2.0;
+    nis[N - 1] = 7.0;
+    cnt = sg_nav_stance_points(N, t, zupt, (const double(*)[3])y, (const double(*)[6])S, nis,
+                               (const double(*)[3])v, (const double(*)[3])p, 2, 0, vals, &pl);
+    assert_int_equal(cnt, 9);
+    FNAV_ASSERT_CLOSE(vals[0], log(4.5), 1e-12, 0.0);
+    assert_int_equal(pl.p[7].kind, SG_NAV_WIN);
+    assert_int_equal(pl.p[7].empty, 0);
+    FNAV_ASSERT_CLOSE(vals[7], log(2.0), 1e-12, 0.0);
+    assert_int_equal(pl.p[8].kind, SG_NAV_WIN);
+    assert_int_equal(pl.p[8].empty, 0);
+    FNAV_ASSERT_CLOSE(vals[8], log(7.0), 1e-12, 0.0);
+    sg_plist_free(&pl);
+}
+
 /* A long walk: more stances than the 4,096 the stance list once held. 5,000
  * one-update stances 5 samples apart at 100 Hz (250 s); every first NIS 1
  * but the last stance's, 1001 (mean 1.2), the last at (3, 4, 0) m from the
@@ -396,6 +435,7 @@ int main(void)
         cmocka_unit_test(test_match_swing),
         cmocka_unit_test(test_draw_case_reason),
         cmocka_unit_test(test_stance_points),
+        cmocka_unit_test(test_stance_points_last_sample),
         cmocka_unit_test(test_stance_points_many),
         cmocka_unit_test(test_stance_starts_many),
     };
