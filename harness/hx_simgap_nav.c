@@ -474,7 +474,9 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, i
         int m = 0;
         for (i = 0; i < ns; i++) {
             double ts = (double)(t_ns[st[i].first] - t_ns[0]) * 1e-9;
-            if (ts >= wa && ts < wb) {
+            /* the last window closed: a stance beginning at the segment's
+             * last sample was in none (a review, 2026-12-01) */
+            if (ts >= wa && (ts < wb || w == nwin - 1)) {
                 s += st[i].nis_first;
                 m++;
             }
@@ -564,9 +566,12 @@ typedef struct {
     double val[24];              /* value: the sensor's parameter, y = (I + A) x */
     double eq[24];               /* linear families: the same effect as it acts on the twin's truth (B, below) */
     int has_eq;
+    int eq_at[24];               /* eq went past the catalogue's range: -1 below lo, +1 above hi (set to it) */
+    int at[24];                  /* val the same (sg_nav_sensor_values): only a limit, not a fit */
     int nalt;                    /* parameters the fit cannot tell from the first (fits within chi2_1 = 1) */
     int alt_ch[4], alt_k[4];
     double alt_val[4];           /* their values fitted alone (the sensor's) */
+    int alt_at[4];               /* as at */
     double dQ;                   /* fit-segment improvement (dispersion-scaled) */
     double dQ_hold, z_hold;      /* held-out improvement of the innovations' objective and its z */
     double Q0_hold;              /* held-out objective without the effect (dispersion-scaled) */
@@ -848,6 +853,50 @@ int sg_nav_lin_to_sensor(const double B[6][6], double A[6][6])
     return 0;
 }
 
+/* v within the range [lo, hi] of parameter k of effect id (*out); 0 inside,
+ * -1 (+1) set to lo (hi); -2 on a bad id or index. */
+static int clamp_param(int id, int k, double v, double *out)
+{
+    const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)id);
+    double lo, hi;
+    if (info == NULL || k < 0 || k >= info->nparams) {
+        return -2;
+    }
+    lo = info->params[k].lo;
+    hi = info->params[k].hi;
+    *out = v < lo ? lo : (v > hi ? hi : v);
+    return v < lo ? -1 : (v > hi ? 1 : 0);
+}
+
+int sg_nav_sensor_values(const double B[6][6], int id, int npar, const int *ch, const int *k, const double *eq,
+                         const int *eq_at, double *val, int *at)
+{
+    double A[6][6];
+    int i, nat = 0, sing = sg_nav_lin_to_sensor(B, A) != 0;
+    for (i = 0; i < npar; i++) {
+        double v;
+        if (clamp_param(id, k[i], 0.0, &v) < -1 || ch[i] < 0 || ch[i] >= 6) {
+            return -1;
+        }
+        if (sing) {
+            /* I - B singular: the sensor's error is unbounded, past the
+             * bound on the side of the trajectory's value */
+            at[i] = clamp_param(id, k[i], eq[i] > 0.0 ? (double)INFINITY : -(double)INFINITY, &val[i]);
+        } else {
+            v = A[ch[i]][lin_col(id, ch[i], k[i])];
+            at[i] = clamp_param(id, k[i], v, &val[i]);
+            if (at[i] == 0 && eq_at != NULL) {
+                /* the trajectory's value was clamped before: the sensor's
+                 * is that bound's, a limit too (b / (1 - b) and the identity
+                 * keep the side) */
+                at[i] = eq_at[i];
+            }
+        }
+        nat += at[i] != 0;
+    }
+    return nat;
+}
+
 /* The sensor's parameters from the fitted ones. The twin's truth is the
  * filter's trajectory, which integrated the real's measurements: its
  * signals are x_t = (I + A) x, the true motion x seen through the sensor's
@@ -857,7 +906,8 @@ int sg_nav_lin_to_sensor(const double B[6][6], double A[6][6])
  * sensor's b / (1 - b); misalignment and g-sensitivity alone are unchanged,
  * their B B vanishes). c's values are computed jointly with other's (NULL:
  * none), the effects selected together; values out of the parameter's
- * range (I - B singular) are clamped to it. */
+ * range (I - B singular) are set to the bound and flagged (at[]): they
+ * were reported as fits until 2026-12-01. */
 static void to_sensor(navcand_t *c, const navcand_t *other)
 {
     double B[6][6];
@@ -877,15 +927,35 @@ static void to_sensor(navcand_t *c, const navcand_t *other)
             B[set[m]->ch[i]][lin_col(set[m]->id, set[m]->ch[i], set[m]->k[i])] += set[m]->eq[i];
         }
     }
-    {
-        double A[6][6];
-        int sing = sg_nav_lin_to_sensor((const double(*)[6])B, A) != 0;
-        for (i = 0; i < c->npar; i++) {
-            const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)c->id);
-            double lo = info->params[c->k[i]].lo, hi = info->params[c->k[i]].hi, v;
-            v = sing ? (c->eq[i] > 0.0 ? hi : lo) : A[c->ch[i]][lin_col(c->id, c->ch[i], c->k[i])];
-            c->val[i] = v < lo ? lo : (v > hi ? hi : v);
-        }
+    (void)sg_nav_sensor_values((const double(*)[6])B, c->id, c->npar, c->ch, c->k, c->eq, c->eq_at, c->val, c->at);
+}
+
+int sg_nav_param_text(char *b, size_t n, int id, int ch, int k, double v, int at)
+{
+    const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)id);
+    const char *name = info != NULL && k >= 0 && k < info->nparams ? info->params[k].name : "?";
+    return snprintf(b, n, "%s.%s=%.3g%s", sg_channel_name(ch), name, v,
+                    at < 0   ? " at the catalogue's bound: only an upper limit"
+                    : at > 0 ? " at the catalogue's bound: only a lower limit"
+                             : "");
+}
+
+void sg_nav_bounds_json(cJSON *p, int id, int k, int at)
+{
+    const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)id);
+    cJSON *b;
+    if (info == NULL || k < 0 || k >= info->nparams ||
+        (id != FNAV_EFFECT_SCALE && id != FNAV_EFFECT_MISALIGN && id != FNAV_EFFECT_GSENS)) {
+        cJSON_AddNullToObject(p, "bounds");
+        return;
+    }
+    b = cJSON_AddObjectToObject(p, "bounds");
+    cJSON_AddNumberToObject(b, "lo", info->params[k].lo);
+    cJSON_AddNumberToObject(b, "hi", info->params[k].hi);
+    if (at != 0) {
+        cJSON_AddStringToObject(b, "at_bound", at < 0 ? "lower" : "upper");
+    } else {
+        cJSON_AddNullToObject(b, "at_bound");
     }
 }
 
@@ -1449,6 +1519,7 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
                     out->alt_ch[m2] = one.ch[0];
                     out->alt_k[m2] = one.k[0];
                     out->alt_val[m2] = one.val[0];
+                    out->alt_at[m2] = one.at[0];
                 }
             }
             /* chi2_1 at 0.1 %: 10.83, on the dispersion-scaled objective */
@@ -1464,11 +1535,11 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
         out->n_fit = nm;
         out->n_hold = nh;
         for (i = 0; i < nsel; i++) {
-            const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)id);
-            double lo = info->params[kk[sel[i]]].lo, hi = info->params[kk[sel[i]]].hi, v = theta[i];
             out->ch[i] = ch[sel[i]];
             out->k[i] = kk[sel[i]];
-            out->eq[i] = v < lo ? lo : (v > hi ? hi : v);
+            /* the twins take only values in the range: a fit beyond it is
+             * that bound, flagged */
+            out->eq_at[i] = clamp_param(id, kk[sel[i]], theta[i], &out->eq[i]);
         }
         out->has_eq = 1;
         to_sensor(out, given);
@@ -2172,8 +2243,10 @@ static void cand_text(char *b, size_t n, const navcand_t *cd)
     size_t o = (size_t)snprintf(b, n, "%s", info != NULL ? info->name : "?");
     int i;
     for (i = 0; i < cd->npar && o < n; i++) {
-        o += (size_t)snprintf(b + o, n - o, "%s%s.%s=%.3g", i ? ", " : " (", sg_channel_name(cd->ch[i]),
-                              info->params[cd->k[i]].name, cd->val[i]);
+        o += (size_t)snprintf(b + o, n - o, "%s", i ? ", " : " (");
+        if (o < n) {
+            o += (size_t)sg_nav_param_text(b + o, n - o, cd->id, cd->ch[i], cd->k[i], cd->val[i], cd->at[i]);
+        }
     }
     if (cd->npar > 0 && o < n) {
         snprintf(b + o, n - o, ")");
@@ -2282,8 +2355,8 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
                 fprintf(f, "      as good a fit (within chi2 1) in place of %s.%s:", sg_channel_name(cd->ch[0]),
                         info->params[cd->k[0]].name);
                 for (m = 0; m < cd->nalt; m++) {
-                    fprintf(f, "%s %s.%s=%.3g", m ? "," : "", sg_channel_name(cd->alt_ch[m]),
-                            info->params[cd->alt_k[m]].name, cd->alt_val[m]);
+                    sg_nav_param_text(b, sizeof b, cd->id, cd->alt_ch[m], cd->alt_k[m], cd->alt_val[m], cd->alt_at[m]);
+                    fprintf(f, "%s %s", m ? "," : "", b);
                 }
                 fprintf(f, "\n");
             }
@@ -2321,6 +2394,7 @@ static cJSON *cand_json(const navcand_t *cd)
         cJSON_AddStringToObject(p, "param", info->params[cd->k[i]].name);
         add_num(p, "value", cd->val[i]);
         add_num(p, "trajectory_value", cd->has_eq ? cd->eq[i] : (double)NAN); /* null: not a linear family */
+        sg_nav_bounds_json(p, cd->id, cd->k[i], cd->at[i]);
         cJSON_AddItemToArray(a, p);
     }
     {
@@ -2331,6 +2405,7 @@ static cJSON *cand_json(const navcand_t *cd)
             cJSON_AddStringToObject(p, "channel", sg_channel_name(cd->alt_ch[i]));
             cJSON_AddStringToObject(p, "param", info->params[cd->alt_k[i]].name);
             add_num(p, "value", cd->alt_val[i]);
+            sg_nav_bounds_json(p, cd->id, cd->alt_k[i], cd->alt_at[i]);
             cJSON_AddItemToArray(alt, p);
         }
     }
@@ -2383,6 +2458,7 @@ void sg_nav_verdict_json(const sg_nav_t *nv, cJSON *arr)
             cJSON_AddStringToObject(p, "channel", sg_channel_name(cd->ch[j]));
             cJSON_AddStringToObject(p, "param", info != NULL ? info->params[cd->k[j]].name : "?");
             add_num(p, "value", cd->val[j]);
+            sg_nav_bounds_json(p, cd->id, cd->k[j], cd->at[j]);
             cJSON_AddItemToArray(pa, p);
         }
         cJSON_AddItemToArray(arr, o);

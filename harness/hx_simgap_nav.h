@@ -60,6 +60,41 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
 int sg_nav_lin_to_sensor(const double B[6][6], double A[6][6]);
 
 /**
+ * The sensor's values of npar parameters of the linear motion family id
+ * (scale, misalign, gsens) from the error matrix B fitted on the filter's
+ * trajectory (sg_nav_lin_to_sensor), each within the catalogue's range
+ * [lo, hi] (fnav_imuerr_effect_info), the only values the twins' error
+ * model takes: a value beyond it (I - B singular: beyond the bound on the
+ * side of its trajectory value) is set to that bound and flagged.
+ * @param B      fitted error matrix, every family selected together
+ * @param ch, k  channel and parameter index of each parameter
+ * @param eq     its trajectory value (B), eq_at its flag (as at; NULL: none)
+ * @param val    the sensor's value (out)
+ * @param at     0 a fitted value inside the range; -1 (+1): the fit (the
+ *               sensor's value, or the trajectory's, eq_at) went past lo
+ *               (hi) and val is that bound, only an upper (a lower) limit
+ * @return the number of parameters flagged, -1 on a bad id or index.
+ */
+int sg_nav_sensor_values(const double B[6][6], int id, int npar, const int *ch, const int *k, const double *eq,
+                         const int *eq_at, double *val, int *at);
+
+/**
+ * One parameter of a walk-domain effect as the summary prints it,
+ * "gz.sf=0.3", and for a value at a bound of the catalogue's range (at as
+ * sg_nav_sensor_values) "gz.sf=10 at the catalogue's bound: only a lower
+ * limit".
+ * @return the length snprintf reports.
+ */
+int sg_nav_param_text(char *b, size_t n, int id, int ch, int k, double v, int at);
+
+/**
+ * Add `bounds` to a walk-domain parameter's JSON object p: for a linear
+ * family {`lo`, `hi` (the catalogue's range), `at_bound` (`"lower"`,
+ * `"upper"` or null: at as sg_nav_sensor_values)}, null for the others.
+ */
+void sg_nav_bounds_json(struct cJSON *p, int id, int k, int at);
+
+/**
  * The stance of run b that observes the same swing as stance i of run a:
  * the nearest first update in time (within 0.15 s), each other's nearest
  * (one to one), after a swing of the same duration to 10 %.

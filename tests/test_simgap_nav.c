@@ -14,6 +14,8 @@
 
 #include <cmocka.h>
 
+#include <cjson/cJSON.h>
+
 #include "hx_simgap_nav.h"
 #include "support/fnav_testdata.h"
 
@@ -73,6 +75,108 @@ static void test_lin_to_sensor_inverse(void **state)
     A[0][0] = 42.0;
     assert_int_equal(sg_nav_lin_to_sensor((const double(*)[6])B, A), -1);
     assert_true(A[0][0] == 42.0);
+}
+
+/* A fitted value beyond the catalogue's range is set to the bound and
+ * flagged, never reported as a fit (analytic): a scale b on the trajectory
+ * is the sensor's b / (1 - b), so b = 0.95 is 19, past sf's upper bound 10;
+ * b = 1 (I - B singular) is past it too; a misalignment whose trajectory
+ * value was already clamped to -1 stays flagged; jointly, scale gx 0.5 with
+ * misalign gx.from_z 0.6 on the trajectory are the sensor's 1.0 and 1.2
+ * (the (3, 5) block of B (I - B)^-1: [0.5 0.6; 0 0] [2 1.2; 0 1]), the
+ * second past misalign's bound 1. Until 2026-12-01 the clamped values were
+ * reported as fits with no flag. */
+static void test_sensor_values_at_bound(void **state)
+{
+    double B[6][6], val[2];
+    int ch[2], k[2], at[2], eq_at[2] = { 0, 0 };
+    double eq[2];
+    (void)state;
+    memset(B, 0, sizeof B);
+    B[5][5] = 0.95;
+    B[0][0] = -0.5;
+    ch[0] = 5;
+    k[0] = 0;
+    eq[0] = 0.95;
+    ch[1] = 0;
+    k[1] = 0;
+    eq[1] = -0.5;
+    assert_int_equal(sg_nav_sensor_values((const double(*)[6])B, FNAV_EFFECT_SCALE, 2, ch, k, eq, NULL, val, at), 1);
+    FNAV_ASSERT_CLOSE(val[0], 10.0, 0.0, 0.0);
+    assert_int_equal(at[0], 1);
+    FNAV_ASSERT_CLOSE(val[1], -0.5 / 1.5, 1e-12, 0.0);
+    assert_int_equal(at[1], 0);
+    /* singular */
+    B[5][5] = 1.0;
+    eq[0] = 1.0;
+    assert_int_equal(sg_nav_sensor_values((const double(*)[6])B, FNAV_EFFECT_SCALE, 1, ch, k, eq, NULL, val, at), 1);
+    FNAV_ASSERT_CLOSE(val[0], 10.0, 0.0, 0.0);
+    assert_int_equal(at[0], 1);
+    /* a trajectory value clamped already: misalign gx.from_z (column gz) */
+    memset(B, 0, sizeof B);
+    B[3][5] = -1.0;
+    ch[0] = 3;
+    k[0] = 2;
+    eq[0] = -1.0;
+    eq_at[0] = -1;
+    assert_int_equal(
+        sg_nav_sensor_values((const double(*)[6])B, FNAV_EFFECT_MISALIGN, 1, ch, k, eq, eq_at, val, at), 1);
+    FNAV_ASSERT_CLOSE(val[0], -1.0, 0.0, 0.0);
+    assert_int_equal(at[0], -1);
+    eq_at[0] = 0;
+    B[3][5] = eq[0] = 0.02;
+    assert_int_equal(
+        sg_nav_sensor_values((const double(*)[6])B, FNAV_EFFECT_MISALIGN, 1, ch, k, eq, eq_at, val, at), 0);
+    FNAV_ASSERT_CLOSE(val[0], 0.02, 1e-15, 0.0);
+    assert_int_equal(at[0], 0);
+    /* jointly: the misalignment past its bound */
+    B[3][3] = 0.5;
+    B[3][5] = eq[0] = 0.6;
+    assert_int_equal(
+        sg_nav_sensor_values((const double(*)[6])B, FNAV_EFFECT_MISALIGN, 1, ch, k, eq, eq_at, val, at), 1);
+    FNAV_ASSERT_CLOSE(val[0], 1.0, 0.0, 0.0);
+    assert_int_equal(at[0], 1);
+    ch[0] = 3;
+    k[0] = 0;
+    eq[0] = 0.5;
+    assert_int_equal(sg_nav_sensor_values((const double(*)[6])B, FNAV_EFFECT_SCALE, 1, ch, k, eq, NULL, val, at), 0);
+    FNAV_ASSERT_CLOSE(val[0], 1.0, 1e-12, 0.0);
+    assert_int_equal(at[0], 0);
+    /* a bad index */
+    k[0] = 3;
+    assert_int_equal(sg_nav_sensor_values((const double(*)[6])B, FNAV_EFFECT_MISALIGN, 1, ch, k, eq, NULL, val, at),
+                     -1);
+}
+
+/* The summary and the JSON say so: the text names the bound and what the
+ * value is, the JSON's `bounds` gives the range and which bound (null
+ * inside; `bounds` null for an effect with no range searched). */
+static void test_param_at_bound_outputs(void **state)
+{
+    char b[160];
+    cJSON *p = cJSON_CreateObject(), *bd;
+    (void)state;
+    sg_nav_param_text(b, sizeof b, FNAV_EFFECT_SCALE, 5, 0, 10.0, 1);
+    assert_string_equal(b, "gz.sf=10 at the catalogue's bound: only a lower limit");
+    sg_nav_param_text(b, sizeof b, FNAV_EFFECT_MISALIGN, 3, 2, -1.0, -1);
+    assert_string_equal(b, "gx.from_z=-1 at the catalogue's bound: only an upper limit");
+    sg_nav_param_text(b, sizeof b, FNAV_EFFECT_SCALE, 5, 0, 0.25, 0);
+    assert_string_equal(b, "gz.sf=0.25");
+    sg_nav_bounds_json(p, FNAV_EFFECT_SCALE, 0, 1);
+    bd = cJSON_GetObjectItem(p, "bounds");
+    assert_non_null(bd);
+    FNAV_ASSERT_CLOSE(cJSON_GetObjectItem(bd, "lo")->valuedouble, -0.9, 0.0, 0.0);
+    FNAV_ASSERT_CLOSE(cJSON_GetObjectItem(bd, "hi")->valuedouble, 10.0, 0.0, 0.0);
+    assert_string_equal(cJSON_GetObjectItem(bd, "at_bound")->valuestring, "upper");
+    cJSON_Delete(p);
+    p = cJSON_CreateObject();
+    sg_nav_bounds_json(p, FNAV_EFFECT_GSENS, 1, 0);
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(cJSON_GetObjectItem(p, "bounds"), "at_bound")));
+    cJSON_Delete(p);
+    p = cJSON_CreateObject();
+    sg_nav_bounds_json(p, FNAV_EFFECT_QUANT, 0, 0);
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(p, "bounds")));
+    cJSON_Delete(p);
 }
 
 /* Stances are matched one to one after a swing of the same duration: a lag
@@ -218,6 +322,45 @@ static void test_stance_points(void **state)
     sg_plist_free(&pl);
 }
 
+/* The windows cover the segment to its last sample: a stance whose first
+ * update is the segment's last sample belongs to the last window. 30
+ * samples at 100 Hz (t 0-0.29 s), two windows [0, 0.145) and [0.145,
+ * 0.29]; stances at samples 2 (NIS 2) and 29 (NIS 7). Until 2026-12-01 the
+ * last window was half-open, the second stance was in no window (counted
+ * in the mean first-update NIS, 4.5, but not in its window) and the window
+ * was an empty placeholder. */
+static void test_stance_points_last_sample(void **state)
+{
+    enum { N = 30 };
+    static int64_t t[N];
+    static unsigned char zupt[N];
+    static double y[N][3], S[N][6], nis[N], v[N][3], p[N][3];
+    double vals[16];
+    sg_plist_t pl;
+    long cnt;
+    int k;
+    (void)state;
+    memset(&pl, 0, sizeof pl);
+    for (k = 0; k < N; k++) {
+        t[k] = (int64_t)k * 10000000;
+        S[k][0] = S[k][3] = S[k][5] = 1.0;
+    }
+    zupt[2] = zupt[N - 1] = 1;
+    nis[2] = 2.0;
+    nis[N - 1] = 7.0;
+    cnt = sg_nav_stance_points(N, t, zupt, (const double(*)[3])y, (const double(*)[6])S, nis,
+                               (const double(*)[3])v, (const double(*)[3])p, 2, 0, vals, &pl);
+    assert_int_equal(cnt, 9);
+    FNAV_ASSERT_CLOSE(vals[0], log(4.5), 1e-12, 0.0);
+    assert_int_equal(pl.p[7].kind, SG_NAV_WIN);
+    assert_int_equal(pl.p[7].empty, 0);
+    FNAV_ASSERT_CLOSE(vals[7], log(2.0), 1e-12, 0.0);
+    assert_int_equal(pl.p[8].kind, SG_NAV_WIN);
+    assert_int_equal(pl.p[8].empty, 0);
+    FNAV_ASSERT_CLOSE(vals[8], log(7.0), 1e-12, 0.0);
+    sg_plist_free(&pl);
+}
+
 /* A long walk: more stances than the 4,096 the stance list once held. 5,000
  * one-update stances 5 samples apart at 100 Hz (250 s); every first NIS 1
  * but the last stance's, 1001 (mean 1.2), the last at (3, 4, 0) m from the
@@ -287,9 +430,12 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_lin_to_sensor_analytic),
         cmocka_unit_test(test_lin_to_sensor_inverse),
+        cmocka_unit_test(test_sensor_values_at_bound),
+        cmocka_unit_test(test_param_at_bound_outputs),
         cmocka_unit_test(test_match_swing),
         cmocka_unit_test(test_draw_case_reason),
         cmocka_unit_test(test_stance_points),
+        cmocka_unit_test(test_stance_points_last_sample),
         cmocka_unit_test(test_stance_points_many),
         cmocka_unit_test(test_stance_starts_many),
     };
