@@ -722,8 +722,12 @@ int hx_cmd_live(int argc, char **argv)
     /* the recording is opened at the first sample (its header takes the
      * INFO frame), the JSON written at the end: find out now, before the
      * session, that both can be written */
+    /* --out too: it is created once the port is open (it was created
+     * before, and a port that could not be opened left an earlier run's
+     * trajectory emptied; the live review, 2026-12-01) */
     if ((hx_arg(&a, "--record") != NULL && hx_check_writable(CMD, hx_arg(&a, "--record")) != 0) ||
-        (json_path != NULL && strcmp(json_path, "-") != 0 && hx_check_writable(CMD, json_path) != 0)) {
+        (json_path != NULL && strcmp(json_path, "-") != 0 && hx_check_writable(CMD, json_path) != 0) ||
+        (out_path != NULL && strcmp(out_path, "-") != 0 && hx_check_writable(CMD, out_path) != 0)) {
         return HX_EXIT_IO;
     }
 
@@ -747,25 +751,22 @@ int hx_cmd_live(int argc, char **argv)
             return HX_EXIT_IO;
         }
     }
+    port = hx_serial_open(a.pos[0], (int)baud, HX_SERIAL_READ, err, sizeof err);
+    if (port == NULL) {
+        hx_error(CMD, "%s", err);
+        live_free(&L);
+        return HX_EXIT_IO;
+    }
     if (out_path != NULL) {
         L.csv = (strcmp(out_path, "-") == 0) ? stdout : fopen(out_path, "w");
         if (L.csv == NULL) {
             hx_error(CMD, "cannot write %s: %s", out_path, strerror(errno));
+            hx_serial_close(port);
             live_free(&L);
             return HX_EXIT_IO;
         }
     }
     fnav_linux_port_init(&L.lport, &L.lctx, NULL, L.csv);
-
-    port = hx_serial_open(a.pos[0], (int)baud, HX_SERIAL_READ, err, sizeof err);
-    if (port == NULL) {
-        hx_error(CMD, "%s", err);
-        if (L.csv != NULL && L.csv != stdout) {
-            fclose(L.csv);
-        }
-        live_free(&L);
-        return HX_EXIT_IO;
-    }
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_signal; /* no SA_RESTART: a read returns at once */
     sigaction(SIGINT, &sa, NULL);

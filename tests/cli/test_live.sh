@@ -129,6 +129,17 @@ for o in record json; do
     expect_rc $? 3 "live --$o into a missing directory"
     grep_in "$T/err" "no/dir/x.$o" "the error names the --$o file, before the port"
 done
+# a port that cannot be opened (the sensor unplugged) leaves --out as it was:
+# the CSV was created before the port was opened, and an earlier run's
+# trajectory was emptied by a run that never started (the live review of
+# 2026-12-01); an --out that cannot be written is refused first, as --record's
+printf 't_s\n1.0\n' >"$T/keep.csv"
+timeout $LIMIT "$H" live /dev/nonexistent-port --out "$T/keep.csv" >/dev/null 2>"$T/err"; expect_rc $? 3 "live --out on a missing port"
+if [ "$(cat "$T/keep.csv")" = "$(printf 't_s\n1.0')" ]; then pass "an earlier --out is kept when the port cannot be opened"; else fail "the earlier --out was overwritten: $(wc -c <"$T/keep.csv") bytes"; fi
+timeout $LIMIT "$H" live /dev/nonexistent-port --out "$T/new.csv" >/dev/null 2>"$T/err"
+if [ -e "$T/new.csv" ]; then fail "an --out file was created for a port that cannot be opened"; else pass "no --out file is created when the port cannot be opened"; fi
+timeout $LIMIT "$H" live /dev/nonexistent-port --out "$T/no/dir/x.csv" >/dev/null 2>"$T/err"; expect_rc $? 3 "live --out into a missing directory"
+grep_in "$T/err" "no/dir/x.csv" "the error names the --out file, before the port"
 
 start_link
 # the real libserialport path refuses a pty: this is why the seam exists
