@@ -5,6 +5,7 @@
  * (fnav_nav_push / pop, then finish at the end), and prints the position and
  * the stance state. */
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -66,9 +67,22 @@ static const hx_spec_t k_spec = {
 };
 
 static volatile sig_atomic_t g_stop;
+/* The handler after the first signal: without SA_RESTART. The first is
+ * installed with SA_RESTART, so that a write it lands in (the trajectory
+ * to a slow reader of --out -, whose pipe is full) goes on: interrupted,
+ * the write failed, and the run exited 3 with the rows not yet written
+ * lost (the live review, 2026-12-01). A second signal interrupts such a
+ * write, for a reader that never reads. The receive loop stops on either:
+ * libserialport's read waits in slices of READ_TIMEOUT_MS. */
+static struct sigaction g_sa_second;
 
 static void on_signal(int sig)
 {
+    if (!g_stop) {
+        sigaction(SIGINT, &g_sa_second, NULL);
+        sigaction(SIGTERM, &g_sa_second, NULL);
+        sigaction(SIGHUP, &g_sa_second, NULL);
+    }
     g_stop = sig; /* named in the summary */
 }
 
@@ -155,6 +169,17 @@ static void on_nav_frame(live_t *L, const fnav_nav_frame_t *f)
         end_status_line(L);
         hx_error(CMD, "cannot write the trajectory CSV; it stops here");
         L->csv_failed = 1;
+        if (L->csv == stdout) {
+            /* what stdio still holds for a reader that never reads (a write
+             * a second signal cut) went to it again at the final flush and
+             * at exit, which then waited for ever (the live review,
+             * 2026-12-01): the rest goes nowhere, the reader gets its end */
+            int null_fd = open("/dev/null", O_WRONLY);
+            if (null_fd >= 0) {
+                (void)dup2(null_fd, STDOUT_FILENO);
+                (void)close(null_fd);
+            }
+        }
     }
     if (L->traj.n == L->traj.cap) {
         size_t nc = L->traj.cap ? 2 * L->traj.cap : 16384;
@@ -767,8 +792,13 @@ int hx_cmd_live(int argc, char **argv)
         }
     }
     fnav_linux_port_init(&L.lport, &L.lctx, NULL, L.csv);
+    memset(&g_sa_second, 0, sizeof g_sa_second);
+    g_sa_second.sa_handler = on_signal;
+    sigemptyset(&g_sa_second.sa_mask);
     memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal; /* no SA_RESTART: a read returns at once */
+    sa.sa_handler = on_signal;
+    sa.sa_flags = SA_RESTART; /* on_signal, above */
+    sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
     sigaction(SIGHUP, &sa, NULL);

@@ -548,6 +548,69 @@ grep_in "$T/live.err" "recorded" "the summary still names the recording"
 timeout $LIMIT "$H" info "$T/rec_p.bin" >"$T/info.out" 2>&1
 expect_rc $? 0 "the recording is complete and closed"
 
+# --- Ctrl-C while the trajectory waits on a slow reader of --out - (the pipe
+# full): the write goes on once the reader reads, and what was computed is
+# kept: exit 0, and the CSV is the replay of the recording, row for row. The
+# signal interrupted the blocked write: "cannot write the trajectory CSV",
+# exit 3, and 188 of 304 rows (the live review, 2026-12-01). The signal goes
+# to the harness itself: timeout(1) passes one on twice (to the child and to
+# its process group), the second of which rightly cuts the write, below.
+( LD_PRELOAD=$SEAM "$H" live "$A" --print-every 0 --record "$T/rec_s.bin" --out - --timeout 30 \
+    2>"$T/live.err" & echo $! >"$T/live.pid"; wait $!; echo $? >"$T/live.rc" ) | (sleep 4; cat >"$T/slow.csv") &
+PIPED=$!
+if ! wait_for 'grep -q "reading" "$T/live.err"' 200; then fail "live did not start"; fi
+LIVE=$(cat "$T/live.pid") # for the cleanup trap
+LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 0 >/dev/null 2>&1 &
+STREAM=$!
+sleep 2
+kill -INT "$(cat "$T/live.pid")" 2>/dev/null
+wait "$PIPED"
+LIVE=""
+kill -9 "$STREAM" 2>/dev/null
+wait "$STREAM" 2>/dev/null
+STREAM=""
+stop_link
+start_link
+expect_rc "$(cat "$T/live.rc")" 0 "live stopped by Ctrl-C while its --out - reader is slow"
+if grep -q "cannot write" "$T/live.err"; then fail "the signal broke the trajectory's write: $(grep "cannot write" "$T/live.err")"; else pass "no write error from the signal"; fi
+timeout $LIMIT "$H" replay "$T/rec_s.bin" --out "$T/slow_rep.csv" >/dev/null 2>&1
+if [ "$(wc -l <"$T/slow.csv")" -gt 1 ] && cmp -s "$T/slow.csv" "$T/slow_rep.csv"; then
+    pass "the trajectory written is the replay of the recording ($(($(wc -l <"$T/slow.csv") - 1)) rows)"
+else
+    fail "the trajectory written ($(wc -l <"$T/slow.csv") lines) is not the replay of the recording ($(wc -l <"$T/slow_rep.csv") lines)"
+fi
+
+# ... and a reader that never reads: a second signal interrupts the write,
+# and live ends at once with the write error (exit 3) and a closed recording
+rm -f "$T/live.rc"
+( LD_PRELOAD=$SEAM "$H" live "$A" --print-every 0 --record "$T/rec_s2.bin" --out - --timeout 30 \
+    2>"$T/live.err" & echo $! >"$T/live.pid"; wait $!; echo $? >"$T/live.rc" ) | (sleep 30; cat >/dev/null) &
+PIPED=$!
+if ! wait_for 'grep -q "reading" "$T/live.err"' 200; then fail "live did not start"; fi
+LIVE=$(cat "$T/live.pid") # for the cleanup trap
+LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 0 >/dev/null 2>&1 &
+STREAM=$!
+sleep 2
+kill -INT "$(cat "$T/live.pid")" 2>/dev/null
+sleep 0.5
+kill -INT "$(cat "$T/live.pid")" 2>/dev/null
+if wait_for '[ -s "$T/live.rc" ]' 100; then
+    expect_rc "$(cat "$T/live.rc")" 3 "live stopped by a second Ctrl-C while its --out - reader never reads"
+else
+    fail "live did not end within 10 s of a second Ctrl-C"
+fi
+kill -9 "$LIVE" 2>/dev/null
+LIVE=""
+kill -9 "$STREAM" 2>/dev/null
+wait "$STREAM" 2>/dev/null
+STREAM=""
+kill "$PIPED" 2>/dev/null
+wait "$PIPED" 2>/dev/null
+stop_link
+start_link
+timeout $LIMIT "$H" info "$T/rec_s2.bin" >"$T/info.out" 2>&1
+expect_rc $? 0 "the recording is complete and closed"
+
 # --- the tty hangs up under a node that stays (rfcomm, vhangup): exit 1, samples kept
 if msg=$(timeout $LIMIT /usr/bin/python3 tests/cli/live_vhangup.py "$H" "$SEAM" "$T"); then
     pass "live ends on a hang-up whose device node stays${msg:+ ($msg)}"
