@@ -688,6 +688,7 @@ int hx_cmd_live(int argc, char **argv)
     const char *plot_png = "live.png", *out_path, *json_path;
     char err[HX_ERR_SIZE], gone_msg[600] = "";
     int rc, exit_code = HX_EXIT_OK, gone = 0, timed_out = 0;
+    int stop_sig;
     char cmdline[1024], why[700] = "", port_path[4096];
     struct sigaction sa;
 
@@ -864,6 +865,10 @@ int hx_cmd_live(int argc, char **argv)
     /* the frames still held behind an incomplete one (Ctrl-C, a hang-up or
      * --timeout came before the line was quiet for idle_flush_s) */
     flush_link(&L, g_stop && !gone && !timed_out);
+    /* how the run ended: a signal that comes later (while the last picture
+     * is drawn) ends nothing; the summary said "stopped by SIGINT" after a
+     * --timeout, a hang-up or a restart (the live review, 2026-12-01) */
+    stop_sig = (gone || timed_out || L.restarted) ? 0 : (int)g_stop;
     end_status_line(&L);
     snprintf(port_path, sizeof port_path, "%s", hx_serial_path(port));
     hx_serial_close(port);
@@ -911,7 +916,7 @@ int hx_cmd_live(int argc, char **argv)
          * frames in sequence, nor the frame a Ctrl-C cut */
         uint32_t bad_frames = s->bad_frames - L.noise - L.cut;
         const char *end_how = L.have_end ? "END frame"
-                              : g_stop   ? (g_stop == SIGINT ? "SIGINT" : (g_stop == SIGTERM ? "SIGTERM" : "SIGHUP"))
+                              : stop_sig ? (stop_sig == SIGINT ? "SIGINT" : (stop_sig == SIGTERM ? "SIGTERM" : "SIGHUP"))
                               : timed_out ? "timeout"
                               : gone      ? "port gone"
                               : L.restarted ? "sender restarted"
@@ -931,7 +936,7 @@ int hx_cmd_live(int argc, char **argv)
         } else if (L.restarted) {
             snprintf(why, sizeof why, "the sender restarted: time went back from %.6f s to %.6f s at sample frame seq %u",
                      L.restart_from_s, L.restart_to_s, L.restart_seq);
-        } else if (L.rec_failed && !L.have_end && !g_stop) {
+        } else if (L.rec_failed && !L.have_end && !stop_sig) {
             snprintf(why, sizeof why, "the recording failed; the run stopped there");
         } else if (s->lost > 0u || bad_frames > 0u || L.bad_samples > 0u || L.bad_info > 0u || missing > 0u ||
                    extra > 0u) {
@@ -1043,11 +1048,11 @@ int hx_cmd_live(int argc, char **argv)
         if (L.have_end) {
             fprintf(sum_out, "live: end: END frame, the sender sent %u samples, %u received\n", (unsigned)L.end_count,
                    (unsigned)L.samples);
-        } else if (g_stop) {
+        } else if (stop_sig) {
             /* how the run ended, as for END and a vanished port (nothing
              * said it; a review, 2026-11-29) */
             fprintf(sum_out, "live: end: stopped by %s%s\n",
-                    g_stop == SIGINT ? "SIGINT (Ctrl-C)" : (g_stop == SIGTERM ? "SIGTERM" : "SIGHUP"),
+                    stop_sig == SIGINT ? "SIGINT (Ctrl-C)" : (stop_sig == SIGTERM ? "SIGTERM" : "SIGHUP"),
                     L.cut > 0u ? "; the frame arriving then was cut (not counted as corrupt)" : "");
         } else if (timed_out) {
             fprintf(sum_out, "live: end: no valid frame for %.1f s (--timeout)\n", timeout);

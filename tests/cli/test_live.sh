@@ -531,6 +531,39 @@ expect_rc "$LIVE_RC" 1 "live whose slow sender goes quiet (no END)"
 grep_in "$T/live.out" "live: $A: 25 samples over" "every one of the 25 slow samples is received"
 grep_in "$T/live.out" "live: end: no valid frame for 0.5 s (--timeout)" "the run ends at the timeout once the sender is quiet"
 
+# --- a signal after the run has ended (here by --timeout), while the last
+# picture is drawn: the run still ended by the timeout, and the summary and
+# the JSON say so, as the exit status and the error do (they said "stopped
+# by SIGINT"; the live review, 2026-12-01). A gnuplot that takes 3 s.
+mkdir -p "$T/slowgp"
+printf '#!/bin/sh\ncat >/dev/null\nsleep 3\nexit 1\n' >"$T/slowgp/gnuplot"
+chmod +x "$T/slowgp/gnuplot"
+stop_link
+start_link
+OLDPATH=$PATH
+PATH="$T/slowgp:$PATH"
+LD_PRELOAD=$SEAM "$H" live "$A" --print-every 0 --timeout 0.5 --plot "$T/late.png" --plot-every 100 \
+    --json "$T/late.json" >"$T/live.out" 2>"$T/live.err" &
+LIVE=$!
+PATH=$OLDPATH
+if ! wait_for 'grep -q "reading" "$T/live.err"' 200; then fail "live did not start"; fi
+/usr/bin/python3 -c "
+import os, sys, time
+sys.path.insert(0, 'tests/cli')
+from wire_cases import info, still, frame, SAMPLE
+fd = os.open(sys.argv[1], os.O_WRONLY | os.O_NOCTTY)
+os.write(fd, info(400.0) + b''.join(frame(SAMPLE, 1 + k, still(k)) for k in range(100)))
+time.sleep(3)
+os.close(fd)" "$B" &
+QUIET=$!
+sleep 2 # the timeout at about 0.5 s, then the picture: 3 s
+kill -INT "$LIVE" 2>/dev/null
+wait_live
+wait "$QUIET" 2>/dev/null
+grep_in "$T/live.out" "live: end: no valid frame for 0.5 s (--timeout)" "a signal while the last picture is drawn: the end is still the timeout"
+if /usr/bin/python3 -c "import json,sys; sys.exit(0 if json.load(open(sys.argv[1]))['link']['end'] == 'timeout' else 1)" "$T/late.json"; then
+    pass "the JSON's end is the timeout"; else fail "the JSON's end: $(head -c 600 "$T/late.json")"; fi
+
 # --- the reader of --out - goes away (live ... | head): a write error (exit 3)
 # with the summary and a complete recording, not a death by SIGPIPE
 stop_link
