@@ -722,6 +722,20 @@ dt=$(($(date +%s) - t0))
 expect_rc "$STREAM_RC" 143 "stream stopped by SIGTERM while its write is blocked"
 if [ "$dt" -le 5 ]; then pass "it stopped within $dt s"; else fail "it took $dt s to stop"; fi
 grep_in "$T/stream.out" "the interrupt cut the write" "stream says the batch was cut"
+# ... and by SIGHUP (the terminal it runs in closes), as live handles it:
+# stream died of it, with no summary of what it had sent (the live review,
+# 2026-12-01); 129 as for any signal, 128 + its number
+stop_link
+start_link
+LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 0 >"$T/stream.out" 2>"$T/stream.err" &
+STREAM=$!
+sleep 1
+kill -HUP "$STREAM" 2>/dev/null
+wait "$STREAM"
+STREAM_RC=$?
+STREAM=""
+expect_rc "$STREAM_RC" 129 "stream stopped by SIGHUP while its write is blocked"
+grep_in "$T/stream.out" "(interrupted)" "stream stopped by SIGHUP says what it sent"
 
 # --- hx_serial_write on a slow but steady reader (4 KB every 200 ms once the
 # pty is full: each pause shorter than the 500 ms timeout, the whole longer)
