@@ -5,6 +5,7 @@
  * (fnav_nav_push / pop, then finish at the end), and prints the position and
  * the stance state. */
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -66,9 +67,22 @@ static const hx_spec_t k_spec = {
 };
 
 static volatile sig_atomic_t g_stop;
+/* The handler after the first signal: without SA_RESTART. The first is
+ * installed with SA_RESTART, so that a write it lands in (the trajectory
+ * to a slow reader of --out -, whose pipe is full) goes on: interrupted,
+ * the write failed, and the run exited 3 with the rows not yet written
+ * lost (the live review, 2026-12-01). A second signal interrupts such a
+ * write, for a reader that never reads. The receive loop stops on either:
+ * libserialport's read waits in slices of READ_TIMEOUT_MS. */
+static struct sigaction g_sa_second;
 
 static void on_signal(int sig)
 {
+    if (!g_stop) {
+        sigaction(SIGINT, &g_sa_second, NULL);
+        sigaction(SIGTERM, &g_sa_second, NULL);
+        sigaction(SIGHUP, &g_sa_second, NULL);
+    }
     g_stop = sig; /* named in the summary */
 }
 
@@ -155,6 +169,17 @@ static void on_nav_frame(live_t *L, const fnav_nav_frame_t *f)
         end_status_line(L);
         hx_error(CMD, "cannot write the trajectory CSV; it stops here");
         L->csv_failed = 1;
+        if (L->csv == stdout) {
+            /* what stdio still holds for a reader that never reads (a write
+             * a second signal cut) went to it again at the final flush and
+             * at exit, which then waited for ever (the live review,
+             * 2026-12-01): the rest goes nowhere, the reader gets its end */
+            int null_fd = open("/dev/null", O_WRONLY);
+            if (null_fd >= 0) {
+                (void)dup2(null_fd, STDOUT_FILENO);
+                (void)close(null_fd);
+            }
+        }
     }
     if (L->traj.n == L->traj.cap) {
         size_t nc = L->traj.cap ? 2 * L->traj.cap : 16384;
@@ -663,6 +688,7 @@ int hx_cmd_live(int argc, char **argv)
     const char *plot_png = "live.png", *out_path, *json_path;
     char err[HX_ERR_SIZE], gone_msg[600] = "";
     int rc, exit_code = HX_EXIT_OK, gone = 0, timed_out = 0;
+    int stop_sig;
     char cmdline[1024], why[700] = "", port_path[4096];
     struct sigaction sa;
 
@@ -722,8 +748,12 @@ int hx_cmd_live(int argc, char **argv)
     /* the recording is opened at the first sample (its header takes the
      * INFO frame), the JSON written at the end: find out now, before the
      * session, that both can be written */
+    /* --out too: it is created once the port is open (it was created
+     * before, and a port that could not be opened left an earlier run's
+     * trajectory emptied; the live review, 2026-12-01) */
     if ((hx_arg(&a, "--record") != NULL && hx_check_writable(CMD, hx_arg(&a, "--record")) != 0) ||
-        (json_path != NULL && strcmp(json_path, "-") != 0 && hx_check_writable(CMD, json_path) != 0)) {
+        (json_path != NULL && strcmp(json_path, "-") != 0 && hx_check_writable(CMD, json_path) != 0) ||
+        (out_path != NULL && strcmp(out_path, "-") != 0 && hx_check_writable(CMD, out_path) != 0)) {
         return HX_EXIT_IO;
     }
 
@@ -747,27 +777,29 @@ int hx_cmd_live(int argc, char **argv)
             return HX_EXIT_IO;
         }
     }
+    port = hx_serial_open(a.pos[0], (int)baud, HX_SERIAL_READ, err, sizeof err);
+    if (port == NULL) {
+        hx_error(CMD, "%s", err);
+        live_free(&L);
+        return HX_EXIT_IO;
+    }
     if (out_path != NULL) {
         L.csv = (strcmp(out_path, "-") == 0) ? stdout : fopen(out_path, "w");
         if (L.csv == NULL) {
             hx_error(CMD, "cannot write %s: %s", out_path, strerror(errno));
+            hx_serial_close(port);
             live_free(&L);
             return HX_EXIT_IO;
         }
     }
     fnav_linux_port_init(&L.lport, &L.lctx, NULL, L.csv);
-
-    port = hx_serial_open(a.pos[0], (int)baud, HX_SERIAL_READ, err, sizeof err);
-    if (port == NULL) {
-        hx_error(CMD, "%s", err);
-        if (L.csv != NULL && L.csv != stdout) {
-            fclose(L.csv);
-        }
-        live_free(&L);
-        return HX_EXIT_IO;
-    }
+    memset(&g_sa_second, 0, sizeof g_sa_second);
+    g_sa_second.sa_handler = on_signal;
+    sigemptyset(&g_sa_second.sa_mask);
     memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal; /* no SA_RESTART: a read returns at once */
+    sa.sa_handler = on_signal;
+    sa.sa_flags = SA_RESTART; /* on_signal, above */
+    sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
     sigaction(SIGHUP, &sa, NULL);
@@ -833,6 +865,10 @@ int hx_cmd_live(int argc, char **argv)
     /* the frames still held behind an incomplete one (Ctrl-C, a hang-up or
      * --timeout came before the line was quiet for idle_flush_s) */
     flush_link(&L, g_stop && !gone && !timed_out);
+    /* how the run ended: a signal that comes later (while the last picture
+     * is drawn) ends nothing; the summary said "stopped by SIGINT" after a
+     * --timeout, a hang-up or a restart (the live review, 2026-12-01) */
+    stop_sig = (gone || timed_out || L.restarted) ? 0 : (int)g_stop;
     end_status_line(&L);
     snprintf(port_path, sizeof port_path, "%s", hx_serial_path(port));
     hx_serial_close(port);
@@ -880,7 +916,7 @@ int hx_cmd_live(int argc, char **argv)
          * frames in sequence, nor the frame a Ctrl-C cut */
         uint32_t bad_frames = s->bad_frames - L.noise - L.cut;
         const char *end_how = L.have_end ? "END frame"
-                              : g_stop   ? (g_stop == SIGINT ? "SIGINT" : (g_stop == SIGTERM ? "SIGTERM" : "SIGHUP"))
+                              : stop_sig ? (stop_sig == SIGINT ? "SIGINT" : (stop_sig == SIGTERM ? "SIGTERM" : "SIGHUP"))
                               : timed_out ? "timeout"
                               : gone      ? "port gone"
                               : L.restarted ? "sender restarted"
@@ -900,7 +936,7 @@ int hx_cmd_live(int argc, char **argv)
         } else if (L.restarted) {
             snprintf(why, sizeof why, "the sender restarted: time went back from %.6f s to %.6f s at sample frame seq %u",
                      L.restart_from_s, L.restart_to_s, L.restart_seq);
-        } else if (L.rec_failed && !L.have_end && !g_stop) {
+        } else if (L.rec_failed && !L.have_end && !stop_sig) {
             snprintf(why, sizeof why, "the recording failed; the run stopped there");
         } else if (s->lost > 0u || bad_frames > 0u || L.bad_samples > 0u || L.bad_info > 0u || missing > 0u ||
                    extra > 0u) {
@@ -1012,11 +1048,11 @@ int hx_cmd_live(int argc, char **argv)
         if (L.have_end) {
             fprintf(sum_out, "live: end: END frame, the sender sent %u samples, %u received\n", (unsigned)L.end_count,
                    (unsigned)L.samples);
-        } else if (g_stop) {
+        } else if (stop_sig) {
             /* how the run ended, as for END and a vanished port (nothing
              * said it; a review, 2026-11-29) */
             fprintf(sum_out, "live: end: stopped by %s%s\n",
-                    g_stop == SIGINT ? "SIGINT (Ctrl-C)" : (g_stop == SIGTERM ? "SIGTERM" : "SIGHUP"),
+                    stop_sig == SIGINT ? "SIGINT (Ctrl-C)" : (stop_sig == SIGTERM ? "SIGTERM" : "SIGHUP"),
                     L.cut > 0u ? "; the frame arriving then was cut (not counted as corrupt)" : "");
         } else if (timed_out) {
             fprintf(sum_out, "live: end: no valid frame for %.1f s (--timeout)\n", timeout);

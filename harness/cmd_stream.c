@@ -36,7 +36,7 @@ static const hx_spec_t k_spec = {
     "options damage the stream on purpose to test a receiver.\n"
     "Exit status: 0 sent, 1 the log was bad (every sample before the error was\n"
     "sent), 2 usage, 3 the port could not be opened or stopped accepting data,\n"
-    "130 (143) interrupted by Ctrl-C (SIGTERM) before the END frame.",
+    "130 (143, 129) interrupted by Ctrl-C (SIGTERM, SIGHUP) before the END frame.",
     2, 2, k_opts
 };
 
@@ -154,6 +154,7 @@ int hx_cmd_stream(int argc, char **argv)
     sa.sa_handler = on_signal;
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGHUP, &sa, NULL); /* as live: its terminal closed (it died without a summary) */
     signal(SIGPIPE, SIG_IGN);
 
     /* 10 bits per byte on an 8N1 line */

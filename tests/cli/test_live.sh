@@ -129,6 +129,17 @@ for o in record json; do
     expect_rc $? 3 "live --$o into a missing directory"
     grep_in "$T/err" "no/dir/x.$o" "the error names the --$o file, before the port"
 done
+# a port that cannot be opened (the sensor unplugged) leaves --out as it was:
+# the CSV was created before the port was opened, and an earlier run's
+# trajectory was emptied by a run that never started (the live review of
+# 2026-12-01); an --out that cannot be written is refused first, as --record's
+printf 't_s\n1.0\n' >"$T/keep.csv"
+timeout $LIMIT "$H" live /dev/nonexistent-port --out "$T/keep.csv" >/dev/null 2>"$T/err"; expect_rc $? 3 "live --out on a missing port"
+if [ "$(cat "$T/keep.csv")" = "$(printf 't_s\n1.0')" ]; then pass "an earlier --out is kept when the port cannot be opened"; else fail "the earlier --out was overwritten: $(wc -c <"$T/keep.csv") bytes"; fi
+timeout $LIMIT "$H" live /dev/nonexistent-port --out "$T/new.csv" >/dev/null 2>"$T/err"
+if [ -e "$T/new.csv" ]; then fail "an --out file was created for a port that cannot be opened"; else pass "no --out file is created when the port cannot be opened"; fi
+timeout $LIMIT "$H" live /dev/nonexistent-port --out "$T/no/dir/x.csv" >/dev/null 2>"$T/err"; expect_rc $? 3 "live --out into a missing directory"
+grep_in "$T/err" "no/dir/x.csv" "the error names the --out file, before the port"
 
 start_link
 # the real libserialport path refuses a pty: this is why the seam exists
@@ -520,6 +531,39 @@ expect_rc "$LIVE_RC" 1 "live whose slow sender goes quiet (no END)"
 grep_in "$T/live.out" "live: $A: 25 samples over" "every one of the 25 slow samples is received"
 grep_in "$T/live.out" "live: end: no valid frame for 0.5 s (--timeout)" "the run ends at the timeout once the sender is quiet"
 
+# --- a signal after the run has ended (here by --timeout), while the last
+# picture is drawn: the run still ended by the timeout, and the summary and
+# the JSON say so, as the exit status and the error do (they said "stopped
+# by SIGINT"; the live review, 2026-12-01). A gnuplot that takes 3 s.
+mkdir -p "$T/slowgp"
+printf '#!/bin/sh\ncat >/dev/null\nsleep 3\nexit 1\n' >"$T/slowgp/gnuplot"
+chmod +x "$T/slowgp/gnuplot"
+stop_link
+start_link
+OLDPATH=$PATH
+PATH="$T/slowgp:$PATH"
+LD_PRELOAD=$SEAM "$H" live "$A" --print-every 0 --timeout 0.5 --plot "$T/late.png" --plot-every 100 \
+    --json "$T/late.json" >"$T/live.out" 2>"$T/live.err" &
+LIVE=$!
+PATH=$OLDPATH
+if ! wait_for 'grep -q "reading" "$T/live.err"' 200; then fail "live did not start"; fi
+/usr/bin/python3 -c "
+import os, sys, time
+sys.path.insert(0, 'tests/cli')
+from wire_cases import info, still, frame, SAMPLE
+fd = os.open(sys.argv[1], os.O_WRONLY | os.O_NOCTTY)
+os.write(fd, info(400.0) + b''.join(frame(SAMPLE, 1 + k, still(k)) for k in range(100)))
+time.sleep(3)
+os.close(fd)" "$B" &
+QUIET=$!
+sleep 2 # the timeout at about 0.5 s, then the picture: 3 s
+kill -INT "$LIVE" 2>/dev/null
+wait_live
+wait "$QUIET" 2>/dev/null
+grep_in "$T/live.out" "live: end: no valid frame for 0.5 s (--timeout)" "a signal while the last picture is drawn: the end is still the timeout"
+if /usr/bin/python3 -c "import json,sys; sys.exit(0 if json.load(open(sys.argv[1]))['link']['end'] == 'timeout' else 1)" "$T/late.json"; then
+    pass "the JSON's end is the timeout"; else fail "the JSON's end: $(head -c 600 "$T/late.json")"; fi
+
 # --- the reader of --out - goes away (live ... | head): a write error (exit 3)
 # with the summary and a complete recording, not a death by SIGPIPE
 stop_link
@@ -535,6 +579,69 @@ start_link # a fresh pair for the cases below
 expect_rc "$(cat "$T/live.rc")" 3 "live whose CSV reader went away"
 grep_in "$T/live.err" "recorded" "the summary still names the recording"
 timeout $LIMIT "$H" info "$T/rec_p.bin" >"$T/info.out" 2>&1
+expect_rc $? 0 "the recording is complete and closed"
+
+# --- Ctrl-C while the trajectory waits on a slow reader of --out - (the pipe
+# full): the write goes on once the reader reads, and what was computed is
+# kept: exit 0, and the CSV is the replay of the recording, row for row. The
+# signal interrupted the blocked write: "cannot write the trajectory CSV",
+# exit 3, and 188 of 304 rows (the live review, 2026-12-01). The signal goes
+# to the harness itself: timeout(1) passes one on twice (to the child and to
+# its process group), the second of which rightly cuts the write, below.
+( LD_PRELOAD=$SEAM "$H" live "$A" --print-every 0 --record "$T/rec_s.bin" --out - --timeout 30 \
+    2>"$T/live.err" & echo $! >"$T/live.pid"; wait $!; echo $? >"$T/live.rc" ) | (sleep 4; cat >"$T/slow.csv") &
+PIPED=$!
+if ! wait_for 'grep -q "reading" "$T/live.err"' 200; then fail "live did not start"; fi
+LIVE=$(cat "$T/live.pid") # for the cleanup trap
+LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 0 >/dev/null 2>&1 &
+STREAM=$!
+sleep 2
+kill -INT "$(cat "$T/live.pid")" 2>/dev/null
+wait "$PIPED"
+LIVE=""
+kill -9 "$STREAM" 2>/dev/null
+wait "$STREAM" 2>/dev/null
+STREAM=""
+stop_link
+start_link
+expect_rc "$(cat "$T/live.rc")" 0 "live stopped by Ctrl-C while its --out - reader is slow"
+if grep -q "cannot write" "$T/live.err"; then fail "the signal broke the trajectory's write: $(grep "cannot write" "$T/live.err")"; else pass "no write error from the signal"; fi
+timeout $LIMIT "$H" replay "$T/rec_s.bin" --out "$T/slow_rep.csv" >/dev/null 2>&1
+if [ "$(wc -l <"$T/slow.csv")" -gt 1 ] && cmp -s "$T/slow.csv" "$T/slow_rep.csv"; then
+    pass "the trajectory written is the replay of the recording ($(($(wc -l <"$T/slow.csv") - 1)) rows)"
+else
+    fail "the trajectory written ($(wc -l <"$T/slow.csv") lines) is not the replay of the recording ($(wc -l <"$T/slow_rep.csv") lines)"
+fi
+
+# ... and a reader that never reads: a second signal interrupts the write,
+# and live ends at once with the write error (exit 3) and a closed recording
+rm -f "$T/live.rc"
+( LD_PRELOAD=$SEAM "$H" live "$A" --print-every 0 --record "$T/rec_s2.bin" --out - --timeout 30 \
+    2>"$T/live.err" & echo $! >"$T/live.pid"; wait $!; echo $? >"$T/live.rc" ) | (sleep 30; cat >/dev/null) &
+PIPED=$!
+if ! wait_for 'grep -q "reading" "$T/live.err"' 200; then fail "live did not start"; fi
+LIVE=$(cat "$T/live.pid") # for the cleanup trap
+LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 0 >/dev/null 2>&1 &
+STREAM=$!
+sleep 2
+kill -INT "$(cat "$T/live.pid")" 2>/dev/null
+sleep 0.5
+kill -INT "$(cat "$T/live.pid")" 2>/dev/null
+if wait_for '[ -s "$T/live.rc" ]' 100; then
+    expect_rc "$(cat "$T/live.rc")" 3 "live stopped by a second Ctrl-C while its --out - reader never reads"
+else
+    fail "live did not end within 10 s of a second Ctrl-C"
+fi
+kill -9 "$LIVE" 2>/dev/null
+LIVE=""
+kill -9 "$STREAM" 2>/dev/null
+wait "$STREAM" 2>/dev/null
+STREAM=""
+kill "$PIPED" 2>/dev/null
+wait "$PIPED" 2>/dev/null
+stop_link
+start_link
+timeout $LIMIT "$H" info "$T/rec_s2.bin" >"$T/info.out" 2>&1
 expect_rc $? 0 "the recording is complete and closed"
 
 # --- the tty hangs up under a node that stays (rfcomm, vhangup): exit 1, samples kept
@@ -615,6 +722,20 @@ dt=$(($(date +%s) - t0))
 expect_rc "$STREAM_RC" 143 "stream stopped by SIGTERM while its write is blocked"
 if [ "$dt" -le 5 ]; then pass "it stopped within $dt s"; else fail "it took $dt s to stop"; fi
 grep_in "$T/stream.out" "the interrupt cut the write" "stream says the batch was cut"
+# ... and by SIGHUP (the terminal it runs in closes), as live handles it:
+# stream died of it, with no summary of what it had sent (the live review,
+# 2026-12-01); 129 as for any signal, 128 + its number
+stop_link
+start_link
+LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 0 >"$T/stream.out" 2>"$T/stream.err" &
+STREAM=$!
+sleep 1
+kill -HUP "$STREAM" 2>/dev/null
+wait "$STREAM"
+STREAM_RC=$?
+STREAM=""
+expect_rc "$STREAM_RC" 129 "stream stopped by SIGHUP while its write is blocked"
+grep_in "$T/stream.out" "(interrupted)" "stream stopped by SIGHUP says what it sent"
 
 # --- hx_serial_write on a slow but steady reader (4 KB every 200 ms once the
 # pty is full: each pause shorter than the 500 ms timeout, the whole longer)
