@@ -223,9 +223,10 @@ for c in info replay psd allan simgap; do
 done
 
 # --- stream's --help lists every exit status (it left out 130 / 143, Ctrl-C /
-# SIGTERM before the END frame, docs/harness.md "stream")
+# SIGTERM before the END frame, docs/harness.md "stream"; 129, SIGHUP, since
+# 2026-12-01)
 expect_exit 0 "stream --help" "$H" stream --help
-expect_out "130 (143) interrupted" "stream --help names the status of an interrupted stream"
+expect_out "130 (143, 129) interrupted by Ctrl-C (SIGTERM, SIGHUP)" "stream --help names the status of an interrupted stream"
 
 # --- counts and seeds are whole numbers everywhere (hx_arg_whole): allan cut
 # --seed 1.5 to 1 and --sim-samples 100.5 to 100 without a word, while sim
