@@ -73,8 +73,6 @@ typedef struct {
     char plot_link[3 * HX_PLOT_PATH_SIZE]; /* the same as results.md links it (percent-encoded, md_link()) */
     hx_evplot_set_t fig;  /* the walks of the section being written */
     int ipol_fig;         /* eval-ipol.png was drawn (linked after the section's summary) */
-    char **warned;        /* the failures warned about, "PATH\0reason" each (fail()) */
-    int n_warned, cap_warned;
 } ev_t;
 
 /* calloc that ends eval on exhaustion (the lists grow with the data). */
@@ -310,59 +308,20 @@ static const char *md_cell(const char *name, char *out, size_t size)
     return out;
 }
 
-/* 1 when the failure (path, reason) was warned about already, else 0 after
- * keeping it (eval ends on exhaustion, as ev_calloc). Each kept as
- * "PATH\0reason": the two compared apart, so that no file name holding ": "
- * passes for another file's. */
-static int warned_before(ev_t *ev, const char *path, const char *reason)
-{
-    const size_t lp = strlen(path), lr = strlen(reason);
-    char *w;
-    int i;
-    for (i = 0; i < ev->n_warned; i++) {
-        w = ev->warned[i];
-        if (strcmp(w, path) == 0 && strcmp(w + lp + 1, reason) == 0) {
-            return 1;
-        }
-    }
-    if (ev->n_warned == ev->cap_warned) {
-        ev->cap_warned = ev->cap_warned > 0 ? 2 * ev->cap_warned : 16;
-        ev->warned = (char **)ev_realloc(ev->warned, (size_t)ev->cap_warned, sizeof *ev->warned);
-    }
-    w = (char *)ev_calloc(lp + lr + 2, 1);
-    memcpy(w, path, lp + 1);
-    memcpy(w + lp + 1, reason, lr + 1);
-    ev->warned[ev->n_warned++] = w;
-    return 0;
-}
-
-static void warned_free(ev_t *ev)
-{
-    int i;
-    for (i = 0; i < ev->n_warned; i++) {
-        free(ev->warned[i]);
-    }
-    free(ev->warned);
-    ev->warned = NULL;
-    ev->n_warned = ev->cap_warned = 0;
-}
-
 /* A failed run: warned with its path, counted (eval's exit status and the
  * targets' note) and its reason kept for the row of its table. A fault
  * warned about already (the same file, the same reason) is not warned
- * again: an events file's fault that both feet's rows give (one foot's
- * events missing or not pairs: that foot's and the other foot's run fail on
- * it), a walk that fails each experiment's repeat as its main run. Until
- * 2026-12-01 each failed run warned: twice per events file, up to eleven
- * times per walk. */
+ * again, by eval's once-per-process warnings (hx_warn_once): an events
+ * file's fault that both feet's rows give (one foot's events missing or not
+ * pairs: that foot's and the other foot's run fail on it), a walk that fails
+ * each experiment's repeat as its main run. Until 2026-12-01 each failed run
+ * warned: twice per events file, up to eleven times per walk. */
 static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const char *msg)
 {
     char buf[HX_ERR_SIZE];
     const char *reason = after_path(msg, path, buf, sizeof buf);
     size_t i, o;
-    if (!warned_before(ev, path, reason)) {
-        hx_warn("eval", "%s: %s", path, reason);
-    }
+    hx_warn("eval", "%s: %s", path, reason);
     ev->failures++;
     if (why == NULL) {
         return;
@@ -2402,7 +2361,6 @@ int hx_cmd_eval(int argc, char **argv)
                    fp_100.files);
         fprintf(ev.md, "\n");
     }
-    warned_free(&ev); /* the runs are over: no failure to warn about after them */
     free(fp_walk);
     free(gx2_200_walk);
     free(gx2_100_walk);
