@@ -235,10 +235,15 @@ int hx_cmd_sim(int argc, char **argv)
         hx_truth_t end;
         char spec[1024];
         int id;
-        hx_motion_eval(motion, sc.duration_s, &end);
+        /* the output's span: its last tick, (ticks - 1) / rate; a
+         * --duration between two ticks (7.0049 s at 100 Hz) printed 7.005 s
+         * and the truth there, past the log's last sample (the simmc
+         * review, 2026-12-02; test_sim.sh) */
+        const double t_end = (double)(ctx.total - 1u) / rate;
+        hx_motion_eval(motion, t_end, &end);
         fprintf(so, "motion      %s\n", motion_name);
         fprintf(so, "duration    %.3f s, %d strides, %.2f m between footfalls, ends at (%.3f, %.3f, %.3f) m\n",
-                    sc.duration_s, hx_motion_strides_until(motion, sc.duration_s), end.odo_m, end.pos_m[0], end.pos_m[1], end.pos_m[2]);
+                    t_end, hx_motion_strides_until(motion, t_end), end.odo_m, end.pos_m[0], end.pos_m[1], end.pos_m[2]);
         fprintf(so, "sampling    %g Hz, internal x%u (%s), seed %u\n", rate, fnav_imuerr_internal_factor(&sc.err),
                     sc.err.mask[FNAV_EFFECT_ALIAS]              ? "picked, no anti-alias filter"
                     : sc.decim == HX_DECIM_MEAN                 ? "interval means"

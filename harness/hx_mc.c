@@ -248,9 +248,14 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
         if (r == 0) {
             res->distance_m = buf.t[buf.n - 1].odo;
             for (b = 0; b < nbins; b++) {
-                size_t i = (size_t)llround((double)(b + 1) * bin_s * rate);
+                /* a bin ends where the run ends: the last one's estimates
+                 * are of that time (a 3.5 s run's last bin said 4 s, one
+                 * --bin 100 of a 3 s run 100 s; the simmc review,
+                 * 2026-12-02) */
+                const double t_end = fmin((double)(b + 1) * bin_s, res->duration_s);
+                size_t i = (size_t)llround(t_end * rate);
                 for (v = 0; v < nvar; v++) {
-                    res->var[v].bins[b].t_s = (double)(b + 1) * bin_s;
+                    res->var[v].bins[b].t_s = t_end;
                     res->var[v].bins[b].odo_m = buf.t[i < buf.n ? i : buf.n - 1].odo;
                 }
             }

@@ -64,7 +64,7 @@ typedef struct {
 
 /** Statistics of one time bin (the last estimate of each run in the bin). */
 typedef struct {
-    double t_s;            /**< end of the bin, s */
+    double t_s;            /**< end of the bin, s (the run's end for a last bin that would outlast it) */
     double odo_m;          /**< distance walked by then, m */
     int n;                 /**< runs with an estimate in the bin */
     double rms_h_m;        /**< RMS horizontal position error */

@@ -244,6 +244,19 @@ expect_err "standard output: cannot write" "--csv - on a full disk names standar
 expect_exit 0 "--bin 0.0125" "$H" montecarlo --seeds 1 --duration 2 --bin 0.0125 --csv "$T/fine.csv" --quiet
 if awk -F, 'NR == 2 { ok = ($2 + 0 == 0.0125) } END { exit !ok }' "$T/fine.csv"; then
     pass "the first bin ends at 0.0125 s"; else fail "first bin: $(sed -n 2p "$T/fine.csv" | cut -d, -f1-3)"; fi
+# a bin ends where the run ends: its estimates are of that time; a 3.5 s
+# run's last bin said 4 s, and the one bin of a 3 s run with --bin 100 said
+# 100 s (plotted there; the simmc review, 2026-12-02)
+expect_exit 0 "a run of 3.5 s in 1 s bins" "$H" montecarlo --seeds 1 --motion stand --duration 3.5 \
+    --csv "$T/end.csv" --json "$T/end.json" --quiet
+if [ "$(tail -n 1 "$T/end.csv" | cut -d, -f2)" = "3.500000" ]; then pass "the last bin ends at the run's end, 3.5 s"
+else fail "last bin: $(tail -n 1 "$T/end.csv" | cut -d, -f1-3)"; fi
+if json "$T/end.json" '[b["t_s"] for b in j["variants"][0]["bins"]] == [1.0, 2.0, 3.0, 3.5]'
+then pass "the JSON's bins end at 1, 2, 3 and 3.5 s"; else fail "JSON bins: $(grep -o '"t_s":[^,]*' "$T/end.json" | tr '\n' ' ')"; fi
+expect_exit 0 "a run of 3 s in one 100 s bin" "$H" montecarlo --seeds 1 --motion stand --duration 3 --bin 100 \
+    --csv "$T/end.csv" --quiet
+if [ "$(tail -n 1 "$T/end.csv" | cut -d, -f2)" = "3.000000" ]; then pass "one bin longer than the run ends at 3 s"
+else fail "the one bin: $(tail -n 1 "$T/end.csv" | cut -d, -f1-3)"; fi
 # seeds past 2^32 - 1 wrapped to 0 without a word
 expect_exit 2 "--seed 4294967295 --seeds 2" "$H" montecarlo --seed 4294967295 --seeds 2 --duration 2
 expect_err "4294967295" "the seed range is named"

@@ -224,6 +224,15 @@ expect_out_re "^duration    (5[5-9]|6[0-5])\.[0-9]+ s" "the default walk lasts a
 # (a 30 s cut of 'paper' said 154 strides, those of its 185 s)
 expect_exit 0 "sim walk cut before the first stride" "$H" sim --motion walk --duration 4 --out "$T/w4.bin"
 expect_out_re "^duration    4\.000 s, 0 strides, 0\.00 m between footfalls" "no stride within 4 s of standing"
+# ... and its duration and end are those of the last sample: a --duration
+# between two ticks (7.0049 s at 100 Hz: the last sample is at 7.000 s)
+# printed 7.005 s and the truth at 7.0049 s, 2 cm past the log's last
+# position (the simmc review, 2026-12-02); compared with the truth CSV's
+# last row
+expect_exit 0 "sim with --duration between ticks" "$H" sim --motion walk:20 --duration 7.0049 --rate 100 \
+    --profile none --out "$T/w7.bin" --truth "$T/w7.csv"
+want=$(tail -n 1 "$T/w7.csv" | awk -F, '{ printf "duration    %.3f s, .* %.2f m between footfalls, ends at \\(%.3f, %.3f, %.3f\\) m", $1, $27, $4, $5, $6 }')
+expect_out_re "^$want\$" "the summary's duration and end are the last sample's ($want)"
 expect_exit 0 "sim paper cut at 30 s" "$H" sim --motion paper --duration 30 --out "$T/p30.bin"
 n30=$(sed -n 's/^duration .* s, \([0-9]*\) strides.*/\1/p' "$T/out")
 expect_exit 0 "sim paper whole" "$H" sim --motion paper --out "$T/p.bin"
