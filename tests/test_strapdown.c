@@ -324,15 +324,23 @@ static void test_coning_instant(void **state)
  * the same rotation and velocity increments as with it (the quadratic fit
  * does not depend on it), and no coning or sculling term; with it, the
  * terms of the linear profile, (1/12) (w0 T) x (w1 T) and (1/12) ((w0 T) x
- * (f1 T) + (f0 T) x (w1 T)) (fnav_strapdown.h), computed here in double. */
+ * (f1 T) + (f0 T) x (w1 T)) (fnav_strapdown.h), computed here in double
+ * from the values the code sees (readings and T rounded to fnav_real_t).
+ * Rounding (unit roundoff u = EPS / 2): each increment w T and each
+ * product rounds once (3 u of every product), the differences and sums
+ * once and the scaling by a rounded 1/12 twice; a cross-product element
+ * may cancel, so the bound is relative to the sum of the magnitudes of its
+ * products: 6 u of it for coning, 8 u for sculling (two cross products
+ * added): 4 EPS of it for both. (It was 1e-5 relative in both builds:
+ * 100 times the float rounding, 1e10 times the double's.) */
 static void test_instant_coning_off(void **state)
 {
     fnav_strapdown_config_t on = fnav_strapdown_config_default, off = fnav_strapdown_config_default;
     fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_strapdown_incr_t a, b;
-    const double T = 0.005, w0[3] = { 0.3, -1.2, 2.0 }, f0[3] = { 1.0, 0.5, -9.0 };
+    const double T = (double)(fnav_real_t)0.005, w0[3] = { 0.3, -1.2, 2.0 }, f0[3] = { 1.0, 0.5, -9.0 };
     const double w1[3] = { 0.5, -1.0, 1.5 }, f1[3] = { 1.5, 0.2, -9.5 };
-    double cw[3], cs[3];
+    double cw[3], cs[3], mw[3], ms[3];
     int i;
     (void)state;
     assert_int_equal(on.sample_type, FNAV_SAMPLE_INSTANT);
@@ -357,12 +365,14 @@ static void test_instant_coning_off(void **state)
         const double v1j = (double)(fnav_real_t)f1[j] * T, v1k = (double)(fnav_real_t)f1[k] * T;
         cw[i] = (a0j * a1k - a0k * a1j) / 12.0;
         cs[i] = ((a0j * v1k - a0k * v1j) + (v0j * a1k - v0k * a1j)) / 12.0;
+        mw[i] = (fabs(a0j * a1k) + fabs(a0k * a1j)) / 12.0;
+        ms[i] = (fabs(a0j * v1k) + fabs(a0k * v1j) + fabs(v0j * a1k) + fabs(v0k * a1j)) / 12.0;
         assert_true(a.theta_rad.v[i] == b.theta_rad.v[i]);
         assert_true(a.dv_mps.v[i] == b.dv_mps.v[i]);
         assert_true(b.coning.v[i] == FNAV_R(0.0));
         assert_true(b.scull.v[i] == FNAV_R(0.0));
-        FNAV_ASSERT_CLOSE(a.coning.v[i], cw[i], 1e-12, 1e-5);
-        FNAV_ASSERT_CLOSE(a.scull.v[i], cs[i], 1e-10, 1e-5);
+        FNAV_ASSERT_CLOSE(a.coning.v[i], cw[i], 4.0 * EPS * mw[i], 0.0);
+        FNAV_ASSERT_CLOSE(a.scull.v[i], cs[i], 4.0 * EPS * ms[i], 0.0);
     }
     assert_true(fabs(cw[2]) > 1e-7); /* the terms are not trivially zero */
 }
