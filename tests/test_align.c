@@ -719,9 +719,27 @@ static void test_stuck_stamp_period(void **state)
         st = fnav_align_push(&al, &s, 1, FNAV_R(100.0));
     }
     assert_int_equal(st, FNAV_OK);
-    assert_true(al.result.samples > 990 && al.result.samples < 1010); /* max_still_s 5 s at 200 Hz */
-    FNAV_ASSERT_CLOSE(al.result.gyro_mean_rps.v[0], 0.004, 1e-4, 0.0);
-    FNAV_ASSERT_CLOSE(al.result.gyro_mean_rps.v[1], -0.002, 1e-6, 0.0);
+    /* max_still_s 5 s at 200 Hz: the stuck sample the period restarted
+     * with and k = 102 .. 1102 (its stamps 1 s .. 6 s; k = 102's repeats
+     * the stuck one) */
+    assert_int_equal((int)k, 1103);
+    assert_int_equal((int)al.result.samples, 1002);
+    /* the gyro means of those samples, in double: gyro x 0.004 + 0.001
+     * ((k mod 7) - 3), not a whole number of its 7-sample cycles, so not
+     * 0.004 (it was held to 0.004 within 1e-4, 16 times the cycles'
+     * 6e-6); the period sums offsets from its first sample (|offset| <=
+     * 0.006 rad/s, partial sums <= 1002 x 0.006): u of that per addition,
+     * over n in the mean, and u of the mean for adding it back: EPS (6 +
+     * 0.01) rad/s. Gyro y is constant: exact but for that last u. */
+    {
+        double mx = (double)still_sample(102, 200.0, 0.002).gyro_rps[0];
+        for (k = 102; k <= 1102; k++) {
+            mx += (double)still_sample(k, 200.0, 0.002).gyro_rps[0];
+        }
+        mx /= 1002.0;
+        FNAV_ASSERT_CLOSE(al.result.gyro_mean_rps.v[0], mx, EPS * (1002.0 * 0.006 + 0.01), 0.0);
+        FNAV_ASSERT_CLOSE(al.result.gyro_mean_rps.v[1], (double)FNAV_R(-0.002), EPS * 0.002, 0.0);
+    }
 }
 
 /* A still period whose mean |f| is off gravity by more than 25 %
