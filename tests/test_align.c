@@ -180,6 +180,37 @@ static void still_mean_f(long k0, long n, double rate, double wobble, double m[3
     }
 }
 
+/* The accelerometer bias of an alignment on still_sample(k0) ..
+ * still_sample(k0 + n - 1) (check_accel_bias: 200 Hz, wobble 0.002):
+ * f (|f| - g) / |f|, f the mean specific force (fnav_align_from_means),
+ * each component, with f and |f| in double from the samples pushed and g
+ * the configuration's.
+ * Rounding: the period sums offsets from its first sample (|offset| <=
+ * 0.008, partial sums <= 3.3: u of 3.3 in the mean) and adds the mean
+ * offset to that sample (u of |f|); |f| and |f| - g then take a few u of
+ * |f| more (the difference cancels to 0.004 of |f|, absolutely no worse),
+ * the scaling by f / |f| two u of the bias: 10 EPS of |f| absolute (EPS is
+ * 2 u) is about twice that. (It compared the norm alone with the nominal
+ * sqrt(0.1^2 + 0.2^2 + 9.81^2) - g to 1e-4 in both builds: 8 times the
+ * float rounding, 1e10 times the double's, and blind to the direction.) */
+static void check_accel_bias_at(const fnav_align_t *al, const fnav_align_config_t *c, long k0, long n, double rate,
+                                double wobble)
+{
+    double m[3], fn;
+    int i;
+    still_mean_f(k0, n, rate, wobble, m);
+    fn = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    for (i = 0; i < 3; i++) {
+        FNAV_ASSERT_CLOSE(al->result.accel_bias_mps2.v[i], m[i] * (fn - (double)c->gravity_mps2) / fn, 10.0 * EPS * fn,
+                          0.0);
+    }
+}
+
+static void check_accel_bias(const fnav_align_t *al, const fnav_align_config_t *c, long k0, long n)
+{
+    check_accel_bias_at(al, c, k0, n, 200.0, 0.002);
+}
+
 /* Motion before short_still_s restarts the average; motion after
  * min_still_s completes the alignment with the mean of the still samples
  * (no prior here: the plain mean). */
@@ -409,6 +440,18 @@ static void test_finish(void **state)
     }
     assert_int_equal(fnav_align_finish(&al), FNAV_OK);
     assert_int_equal((int)al.result.samples, 80);
+    /* on those 80 samples (it checked only their count): the bias of
+     * their mean specific force and the mean of their gyro x, 0.004 +
+     * 0.001 ((k mod 7) - 3) over k = 0..79 (tolerances as
+     * check_accel_bias's and test_stuck_stamp_period's) */
+    check_accel_bias_at(&al, &c, 0, 80, 100.0, 0.0);
+    {
+        double mx = 0.0;
+        for (k = 0; k < 80; k++) {
+            mx += (double)still_sample(k, 100.0, 0.0).gyro_rps[0] / 80.0;
+        }
+        FNAV_ASSERT_CLOSE(al.result.gyro_mean_rps.v[0], mx, EPS * (80.0 * 0.006 + 0.01), 0.0);
+    }
 }
 
 /* A period that ends before min_still_s but after short_still_s is kept;
@@ -618,30 +661,6 @@ static void test_gyro_bias_posterior(void **state)
  * kept (a review): the next still sample completed the alignment on the
  * zeros and the real samples together, an accelerometer bias of -g x
  * (zeros / all) along gravity (9.78 m/s^2 here). */
-/* The accelerometer bias of an alignment on still_sample(k0) ..
- * still_sample(k0 + n - 1) (200 Hz, wobble 0.002): f (|f| - g) / |f|,
- * f the mean specific force (fnav_align_from_means), each component, with
- * f and |f| in double from the samples pushed and g the configuration's.
- * Rounding: the period sums offsets from its first sample (|offset| <=
- * 0.008, partial sums <= 3.3: u of 3.3 in the mean) and adds the mean
- * offset to that sample (u of |f|); |f| and |f| - g then take a few u of
- * |f| more (the difference cancels to 0.004 of |f|, absolutely no worse),
- * the scaling by f / |f| two u of the bias: 10 EPS of |f| absolute (EPS is
- * 2 u) is about twice that. (It compared the norm alone with the nominal
- * sqrt(0.1^2 + 0.2^2 + 9.81^2) - g to 1e-4 in both builds: 8 times the
- * float rounding, 1e10 times the double's, and blind to the direction.) */
-static void check_accel_bias(const fnav_align_t *al, const fnav_align_config_t *c, long k0, long n)
-{
-    double m[3], fn;
-    int i;
-    still_mean_f(k0, n, 200.0, 0.002, m);
-    fn = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-    for (i = 0; i < 3; i++) {
-        FNAV_ASSERT_CLOSE(al->result.accel_bias_mps2.v[i], m[i] * (fn - (double)c->gravity_mps2) / fn, 10.0 * EPS * fn,
-                          0.0);
-    }
-}
-
 static void test_zero_mean_period(void **state)
 {
     fnav_align_t al;
