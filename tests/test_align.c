@@ -164,6 +164,53 @@ static fnav_sample_t still_sample(long k, double rate, double wobble)
     return s;
 }
 
+/* The mean specific force of still_sample(k0) .. still_sample(k0 + n - 1),
+ * in double from the fnav_real_t values pushed (the wobble's cycles of 3
+ * and 5 samples do not divide every n: the mean is not the nominal one). */
+static void still_mean_f(long k0, long n, double rate, double wobble, double m[3])
+{
+    long k;
+    int i;
+    m[0] = m[1] = m[2] = 0.0;
+    for (k = k0; k < k0 + n; k++) {
+        fnav_sample_t s = still_sample(k, rate, wobble);
+        for (i = 0; i < 3; i++) {
+            m[i] += (double)s.accel_mps2[i] / (double)n;
+        }
+    }
+}
+
+/* The accelerometer bias of an alignment on still_sample(k0) ..
+ * still_sample(k0 + n - 1) (check_accel_bias: 200 Hz, wobble 0.002):
+ * f (|f| - g) / |f|, f the mean specific force (fnav_align_from_means),
+ * each component, with f and |f| in double from the samples pushed and g
+ * the configuration's.
+ * Rounding: the period sums offsets from its first sample (|offset| <=
+ * 0.008, partial sums <= 3.3: u of 3.3 in the mean) and adds the mean
+ * offset to that sample (u of |f|); |f| and |f| - g then take a few u of
+ * |f| more (the difference cancels to 0.004 of |f|, absolutely no worse),
+ * the scaling by f / |f| two u of the bias: 10 EPS of |f| absolute (EPS is
+ * 2 u) is about twice that. (It compared the norm alone with the nominal
+ * sqrt(0.1^2 + 0.2^2 + 9.81^2) - g to 1e-4 in both builds: 8 times the
+ * float rounding, 1e10 times the double's, and blind to the direction.) */
+static void check_accel_bias_at(const fnav_align_t *al, const fnav_align_config_t *c, long k0, long n, double rate,
+                                double wobble)
+{
+    double m[3], fn;
+    int i;
+    still_mean_f(k0, n, rate, wobble, m);
+    fn = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    for (i = 0; i < 3; i++) {
+        FNAV_ASSERT_CLOSE(al->result.accel_bias_mps2.v[i], m[i] * (fn - (double)c->gravity_mps2) / fn, 10.0 * EPS * fn,
+                          0.0);
+    }
+}
+
+static void check_accel_bias(const fnav_align_t *al, const fnav_align_config_t *c, long k0, long n)
+{
+    check_accel_bias_at(al, c, k0, n, 200.0, 0.002);
+}
+
 /* Motion before short_still_s restarts the average; motion after
  * min_still_s completes the alignment with the mean of the still samples
  * (no prior here: the plain mean). */
@@ -319,7 +366,8 @@ static void test_zero_stat(void **state)
  * negative: one sample 0.7 m/s^2 off and 10,000 equal ones after it (1 kHz,
  * 10 s) cancel sa2 - sa^2 / n down to its true value (0.7^2 / n, 1 part in
  * 10^4 of sa2), under the float32 sums' rounding (numpy float32 with the
- * same order of operations gives -5.2e-6). The standard deviation is a
+ * same order of operations gives -5.2e-6: tests/align_clamp_ref.py). The
+ * standard deviation is a
  * number between 0 and twice the true one (0.7 / sqrt(n) = 7.0e-3,
  * computed here in double), not NaN (a mutant without the clamp passed
  * every suite). */
@@ -354,6 +402,23 @@ static void test_rounded_variance_clamped(void **state)
     assert_true(fnav_isfinite(al.result.accel_sd_mps2.v[2]));
     assert_true(al.result.accel_sd_mps2.v[2] >= FNAV_R(0.0));
     assert_true((double)al.result.accel_sd_mps2.v[2] <= 2.0 * sd);
+#if FNAV_USE_DOUBLE
+    /* in double the sums are good enough for the true value: as in
+     * test_max_duration, the variance within 10 n EPS relative times
+     * (mean^2 + var) / var (10,001 here: the cancellation), its square
+     * root half that */
+    {
+        const double mean = sum / 10001.0, var = ss / 10000.0;
+        FNAV_ASSERT_CLOSE(al.result.accel_sd_mps2.v[2], sd, 0.0, 5.0 * 10001.0 * EPS * (mean * mean + var) / var);
+    }
+#else
+    /* in float the variance rounds to -5.2e-6 (tests/align_clamp_ref.py,
+     * numpy float32): the clamp is what runs, and the standard deviation is 0
+     * (the bounds above alone did not show that the clamp ran; sums that no
+     * longer round below 0 need another case for the clamp, not a wider
+     * check) */
+    assert_true(al.result.accel_sd_mps2.v[2] == FNAV_R(0.0));
+#endif
 }
 
 /* finish: aligns on what was collected if it is long enough. */
@@ -375,6 +440,18 @@ static void test_finish(void **state)
     }
     assert_int_equal(fnav_align_finish(&al), FNAV_OK);
     assert_int_equal((int)al.result.samples, 80);
+    /* on those 80 samples (it checked only their count): the bias of
+     * their mean specific force and the mean of their gyro x, 0.004 +
+     * 0.001 ((k mod 7) - 3) over k = 0..79 (tolerances as
+     * check_accel_bias's and test_stuck_stamp_period's) */
+    check_accel_bias_at(&al, &c, 0, 80, 100.0, 0.0);
+    {
+        double mx = 0.0;
+        for (k = 0; k < 80; k++) {
+            mx += (double)still_sample(k, 100.0, 0.0).gyro_rps[0] / 80.0;
+        }
+        FNAV_ASSERT_CLOSE(al.result.gyro_mean_rps.v[0], mx, EPS * (80.0 * 0.006 + 0.01), 0.0);
+    }
 }
 
 /* A period that ends before min_still_s but after short_still_s is kept;
@@ -590,7 +667,6 @@ static void test_zero_mean_period(void **state)
     fnav_align_config_t c = fnav_align_config_default;
     long k;
     fnav_status_t st = FNAV_AGAIN;
-    double fn;
     (void)state;
     c.max_still_s = FNAV_R(2.0);
     assert_int_equal(fnav_align_init(&al, &c), FNAV_OK);
@@ -609,8 +685,7 @@ static void test_zero_mean_period(void **state)
     }
     assert_int_equal(st, FNAV_OK);
     assert_int_equal((int)al.result.samples, 401); /* the real samples only */
-    fn = sqrt(0.1 * 0.1 + 0.2 * 0.2 + 9.81 * 9.81);
-    FNAV_ASSERT_CLOSE(fnav_vec3_norm(al.result.accel_bias_mps2), fn - k_g, 1e-4, 0.0);
+    check_accel_bias(&al, &c, 401, 401);
 }
 
 /* A sensor stuck on one time stamp (frozen, repeating its last sample) in a
@@ -663,9 +738,27 @@ static void test_stuck_stamp_period(void **state)
         st = fnav_align_push(&al, &s, 1, FNAV_R(100.0));
     }
     assert_int_equal(st, FNAV_OK);
-    assert_true(al.result.samples > 990 && al.result.samples < 1010); /* max_still_s 5 s at 200 Hz */
-    FNAV_ASSERT_CLOSE(al.result.gyro_mean_rps.v[0], 0.004, 1e-4, 0.0);
-    FNAV_ASSERT_CLOSE(al.result.gyro_mean_rps.v[1], -0.002, 1e-6, 0.0);
+    /* max_still_s 5 s at 200 Hz: the stuck sample the period restarted
+     * with and k = 102 .. 1102 (its stamps 1 s .. 6 s; k = 102's repeats
+     * the stuck one) */
+    assert_int_equal((int)k, 1103);
+    assert_int_equal((int)al.result.samples, 1002);
+    /* the gyro means of those samples, in double: gyro x 0.004 + 0.001
+     * ((k mod 7) - 3), not a whole number of its 7-sample cycles, so not
+     * 0.004 (it was held to 0.004 within 1e-4, 16 times the cycles'
+     * 6e-6); the period sums offsets from its first sample (|offset| <=
+     * 0.006 rad/s, partial sums <= 1002 x 0.006): u of that per addition,
+     * over n in the mean, and u of the mean for adding it back: EPS (6 +
+     * 0.01) rad/s. Gyro y is constant: exact but for that last u. */
+    {
+        double mx = (double)still_sample(102, 200.0, 0.002).gyro_rps[0];
+        for (k = 102; k <= 1102; k++) {
+            mx += (double)still_sample(k, 200.0, 0.002).gyro_rps[0];
+        }
+        mx /= 1002.0;
+        FNAV_ASSERT_CLOSE(al.result.gyro_mean_rps.v[0], mx, EPS * (1002.0 * 0.006 + 0.01), 0.0);
+        FNAV_ASSERT_CLOSE(al.result.gyro_mean_rps.v[1], (double)FNAV_R(-0.002), EPS * 0.002, 0.0);
+    }
 }
 
 /* A still period whose mean |f| is off gravity by more than 25 %
@@ -681,7 +774,6 @@ static void test_implausible_gravity(void **state)
     fnav_align_config_t c = fnav_align_config_default;
     fnav_align_result_t r;
     fnav_status_t st = FNAV_AGAIN;
-    const double fn = sqrt(0.1 * 0.1 + 0.2 * 0.2 + 9.81 * 9.81); /* still_sample's |f| */
     long k;
     (void)state;
     assert_int_equal(fnav_align_from_means(fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)(-1.24 * k_g)),
@@ -707,13 +799,23 @@ static void test_implausible_gravity(void **state)
         if (k == 600) {
             /* 3 s: 200 zeros and 401 real samples, refused */
             assert_int_equal(st, FNAV_E_RANGE);
-            FNAV_ASSERT_CLOSE(al.refused_f_mps2, fn * 401.0 / 601.0, 1e-4, 0.0);
+            /* |f| of the period: the 200 zeros and the 401 real samples
+             * (k = 200..600), whose first sample, a zero, is the
+             * reference: the real samples' offsets are the full |f|, their
+             * k-th partial sum k |f|, each addition rounded by u of it: u
+             * |f| 401 x 402 / 2 in the sum, over 601 in the mean; and a few
+             * u of |f| for the norm */
+            double m[3], fr;
+            still_mean_f(200, 401, 200.0, 0.002, m);
+            fr = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) * 401.0 / 601.0;
+            FNAV_ASSERT_CLOSE(al.refused_f_mps2, fr, 0.5 * EPS * fr * (401.0 * 402.0 / 2.0) / 401.0 + 4.0 * EPS * fr,
+                              0.0);
             st = FNAV_AGAIN;
         }
     }
     assert_int_equal(st, FNAV_OK);
     assert_int_equal((int)al.result.samples, 601); /* real samples only: 3 s from k = 601 */
-    FNAV_ASSERT_CLOSE(fnav_vec3_norm(al.result.accel_bias_mps2), fn - k_g, 1e-4, 0.0);
+    check_accel_bias(&al, &c, 601, 601);
 }
 
 int main(void)

@@ -4,6 +4,7 @@
  * References: NIST SP 1065 NBS14 sets and Stable32 results on PHASE.DAT
  * (../shared/data/allan_reference), a numpy extended-precision vector
  * (vectors/allan/gen_allan.py), analytic results. */
+#include <float.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -1859,7 +1860,13 @@ static void test_paper_tables_inconsistent(void **state)
  * takes sigma_bias as the driving sd of eq. (4), stationary sd
  * sigma_bias / sqrt(1 - c^2), c = e^(-1/tau): 1e-4 / sqrt(1 - e^(-2/400))
  * = 1.41598e-3 (numpy). The SAMPLE density multiplied by sqrt(f_s) instead
- * passed every test (the mutation review, 2026-11-29). */
+ * passed every test (the mutation review, 2026-11-29). The expected values
+ * are these formulas, evaluated here in double on the fnav_real_t inputs
+ * (they were the printed 1.41421356e-3 and 1.41598e-3 and the unrounded
+ * 2e-2 and 1e-4, to 1e-6 and 1e-5 relative): the readings that pass a value
+ * through exactly, the SAMPLE density to 4 DBL_EPSILON (a square root and a
+ * division), the DRIVE sd to 4 DBL_EPSILON / (1 - c^2) (1 - c^2 = 5e-3
+ * formed here as 1 - exp, which cancels: the code uses expm1). */
 static void test_paper_readings(void **state)
 {
     fnav_allan_paper_id_t id;
@@ -1869,16 +1876,24 @@ static void test_paper_readings(void **state)
     id.sigma_v = (fnav_real_t)2e-2;
     id.sigma_bias = (fnav_real_t)1e-4;
     id.tau_samples = (fnav_real_t)400.0;
-    hx_noise_model_paper_reading(&id, 200.0, HX_PAPER_EQ4, &m);
-    FNAV_ASSERT_CLOSE(m.white, 2e-2, 0.0, 1e-6);
-    FNAV_ASSERT_CLOSE(m.gm_sigma, 1e-4, 0.0, 1e-6);
-    FNAV_ASSERT_CLOSE(m.gm_tau_s, 2.0, 0.0, 1e-6);
-    hx_noise_model_paper_reading(&id, 200.0, HX_PAPER_SAMPLE, &m);
-    FNAV_ASSERT_CLOSE(m.white, 1.41421356e-3, 0.0, 1e-6);
-    FNAV_ASSERT_CLOSE(m.gm_sigma, 1e-4, 0.0, 1e-6);
-    hx_noise_model_paper_reading(&id, 200.0, HX_PAPER_DRIVE, &m);
-    FNAV_ASSERT_CLOSE(m.white, 2e-2, 0.0, 1e-6);
-    FNAV_ASSERT_CLOSE(m.gm_sigma, 1.41598e-3, 0.0, 1e-5);
+    {
+        const double sv = (double)id.sigma_v, sb = (double)id.sigma_bias, one_c2 = 1.0 - exp(-2.0 / 400.0);
+        hx_noise_model_paper_reading(&id, 200.0, HX_PAPER_EQ4, &m);
+        FNAV_ASSERT_CLOSE(m.white, sv, 0.0, 0.0);
+        FNAV_ASSERT_CLOSE(m.gm_sigma, sb, 0.0, 0.0);
+        FNAV_ASSERT_CLOSE(m.gm_tau_s, 2.0, 0.0, 0.0);
+        hx_noise_model_paper_reading(&id, 200.0, HX_PAPER_SAMPLE, &m);
+        FNAV_ASSERT_CLOSE(m.white, sv / sqrt(200.0), 0.0, 4.0 * DBL_EPSILON);
+        FNAV_ASSERT_CLOSE(m.gm_sigma, sb, 0.0, 0.0);
+        FNAV_ASSERT_CLOSE(m.gm_tau_s, 2.0, 0.0, 0.0);
+        hx_noise_model_paper_reading(&id, 200.0, HX_PAPER_DRIVE, &m);
+        FNAV_ASSERT_CLOSE(m.white, sv, 0.0, 0.0);
+        FNAV_ASSERT_CLOSE(m.gm_sigma, sb / sqrt(one_c2), 0.0, 4.0 * DBL_EPSILON / one_c2);
+        FNAV_ASSERT_CLOSE(m.gm_tau_s, 2.0, 0.0, 0.0);
+        /* the figures the comment quotes */
+        FNAV_ASSERT_CLOSE(sv / sqrt(200.0), 1.41421e-3, 0.0, 5e-6);
+        FNAV_ASSERT_CLOSE(sb / sqrt(one_c2), 1.41598e-3, 0.0, 5e-6);
+    }
 }
 
 static void test_profile_roundtrip(void **state)

@@ -1748,16 +1748,24 @@ static void test_zupt_cycle_latency(void **state)
  * zero mean, sum |f_j - g u|^2 = sum |f_j|^2 + W g^2 for every unit u:
  * T = g^2 / sigma_a^2 here, 9.6e5, above gamma. (The adaptive threshold's
  * ceiling, 10 gamma = 1e6, still lets a long run of zeros through: off
- * here.) */
+ * here.) The expected value is formed in double from the configuration's
+ * own g and sigma_a (as fnav_real_t); the statistic rounds g^2, sigma_a^2,
+ * the quotient and the division by W once each and sums W equal terms
+ * (W - 1 roundings at most): (W + 4) EPS relative. (It was 1e-5 relative
+ * in both builds against a hard-coded 0.01, 1e10 times the double build's
+ * rounding.) */
 static void test_zero_specific_force(void **state)
 {
     fnav_stance_t st;
     fnav_stance_config_t c = fnav_stance_config_default;
     const double f[3] = { 0.0, 0.0, 0.0 }, w[3] = { 0.0, 0.0, 0.0 };
-    const double want = k_g * k_g / (0.01 * 0.01);
+    const double want = ((double)c.gravity_mps2 * (double)c.gravity_mps2) /
+                        ((double)c.sigma_a_mps2 * (double)c.sigma_a_mps2);
     fnav_stance_out_t o;
     long k, got = 0;
     (void)state;
+    /* the documented defaults (fnav_stance.h), which make T 9.6e5 */
+    assert_true(c.sigma_a_mps2 == FNAV_R(0.01) && c.gravity_mps2 == FNAV_R(9.80665));
     c.rate_hz = FNAV_R(200.0);
     c.adaptive = 0;
     assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
@@ -1765,7 +1773,7 @@ static void test_zero_specific_force(void **state)
         fnav_sample_t s = sample(k, 200.0, f, w);
         assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
         while (fnav_stance_pop(&st, &o) == FNAV_OK) {
-            FNAV_ASSERT_CLOSE(o.stat, want, 0.0, 1e-5);
+            FNAV_ASSERT_CLOSE(o.stat, want, 0.0, ((double)st.win + 4.0) * EPS);
             assert_int_equal(o.raw_stance, 0);
             assert_int_equal(o.stance, 0);
             got++;

@@ -136,10 +136,13 @@ static void test_constant_acceleration(void **state)
  * quadrature on 64 sub-steps in double, error < 1e-12), so the only error
  * left is the algorithm's: the velocity must be a T (tests the rotation
  * compensation and sculling terms and their signs). */
-static double rotating_acceleration(int instant, int algo_instant)
+/* The last run's velocity error (m/s, n) and its leading term (below). */
+static double g_ra_err[3], g_ra_lead[3];
+
+static double rotating_acceleration_dt(int instant, int algo_instant, double dt)
 {
-    const int n = 1000, sub = 64;
-    const double dt = 0.005, T = n * dt;
+    const int n = (int)lround(5.0 / dt), sub = 64;
+    const double T = n * dt;
     const double w[3] = { 3.0, -1.0, 2.0 }; /* rad/s: 3.7 rad/s, 18.7 rad in all */
     const double a[3] = { 0.8, -1.2, 0.5 };
     fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.4), FNAV_R(-0.3), FNAV_R(0.9));
@@ -183,9 +186,60 @@ static double rotating_acceleration(int instant, int algo_instant)
     }
     for (i = 0; i < 3; i++) {
         double e = fabs((double)x.vel_mps.v[i] - a[i] * T);
+        g_ra_err[i] = (double)x.vel_mps.v[i] - a[i] * T;
         err = e > err ? e : err;
     }
+    /* the leading error (test_rotating_acceleration): w and f in n */
+    {
+        const double qw = (double)q0.q[0], qv[3] = { (double)q0.q[1], (double)q0.q[2], (double)q0.q[3] };
+        const double fn[3] = { a[0], a[1], a[2] - k_g };
+        double t[3], wn[3], wf[3];
+        for (i = 0; i < 3; i++) { /* t = 2 q_v x w */
+            t[i] = 2.0 * (qv[(i + 1) % 3] * w[(i + 2) % 3] - qv[(i + 2) % 3] * w[(i + 1) % 3]);
+        }
+        for (i = 0; i < 3; i++) { /* w_n = w + q_w t + q_v x t */
+            wn[i] = w[i] + qw * t[i] + (qv[(i + 1) % 3] * t[(i + 2) % 3] - qv[(i + 2) % 3] * t[(i + 1) % 3]);
+        }
+        for (i = 0; i < 3; i++) {
+            wf[i] = wn[(i + 1) % 3] * fn[(i + 2) % 3] - wn[(i + 2) % 3] * fn[(i + 1) % 3];
+        }
+        for (i = 0; i < 3; i++) {
+            g_ra_lead[i] = -(T * dt * dt / 6.0) * (wn[(i + 1) % 3] * wf[(i + 2) % 3] - wn[(i + 2) % 3] * wf[(i + 1) % 3]);
+        }
+    }
     return err;
+}
+
+static double rotating_acceleration(int instant, int algo_instant)
+{
+    return rotating_acceleration_dt(instant, algo_instant, 0.005);
+}
+
+/* The error bound below (2e-4 g T) is an order estimate, 5.5 times the
+ * error measured (1.77e-3 m/s); what the algorithm guarantees is its order:
+ * second order in dt for the velocity, so halving dt (T kept) divides the
+ * error by 4. In double, at dt = 10, 5 and 2.5 ms: measured ratios 3.994
+ * and 3.997 (the means), held to 3.5 .. 4.5 as test_general_motion's; in
+ * float the rounding of 2000 steps moves the second ratio by about 5 %
+ * (4.19 measured), so it is held to the order only there. A first-order
+ * error makes the ratio 2; the means' sculling term with its sign flipped
+ * (a hand-made mutant) happens to cancel this motion's leading error
+ * (test_rotating_acceleration's analytic check): 1.0e-5 m/s, ratio 8.0,
+ * under the old bound, and now failing here. */
+static void rotating_acceleration_order(int instant)
+{
+    const double e1 = rotating_acceleration_dt(instant, instant, 0.01);
+    const double e2 = rotating_acceleration_dt(instant, instant, 0.005);
+    const double e3 = rotating_acceleration_dt(instant, instant, 0.0025);
+    print_message("rotating acceleration (%s): 10 / 5 / 2.5 ms: %.4e / %.4e / %.4e m/s, ratios %.3f %.3f\n",
+                  instant ? "instantaneous" : "means", e1, e2, e3, e1 / e2, e2 / e3);
+#if FNAV_USE_DOUBLE
+    assert_true(e1 / e2 > 3.5 && e1 / e2 < 4.5);
+    assert_true(e2 / e3 > 3.5 && e2 / e3 < 4.5);
+#else
+    assert_true(e1 / e2 > 3.5 && e1 / e2 < 4.5);
+    assert_true(e2 / e3 > 3.0 && e2 / e3 < 5.0);
+#endif
 }
 
 /* The readings are the exact interval means: algorithm error of the
@@ -197,6 +251,46 @@ static void test_rotating_acceleration(void **state)
     const double T = 5.0, dt = 0.005;
     (void)state;
     assert_true(rotating_acceleration(0, 0) < 2e-4 * k_g * T + 2.0 * 1000 * EPS * k_g * dt);
+#if FNAV_USE_DOUBLE
+    /* The error itself, analytic: with a constant rate w and interval means,
+     * the measured increment is v = T f - T^2/2 w x f + T^3/6 w x (w x f)
+     * (f the body-frame specific force at the interval's start, T = dt),
+     * the rotation compensation 1/2 (w T) x v adds T^2/2 w x f - T^3/4
+     * w x (w x f), and the two-sample sculling -T^3/12 w x (w x f) (its
+     * exact value for this motion too), so each step's increment misses
+     * the exact T f by -T^3/6 w x (w x f): the second-order rotation term,
+     * 1/2 int alpha x (alpha x f), that the algorithm leaves out (Savage
+     * 1998, 7.2.2). In n that is the same vector every step (w_n and f_n
+     * are constant), so the velocity error after the run is -(T_run dt^2
+     * / 6) w_n x (w_n x f_n), each component. The terms left out are
+     * |w| dt = 1.9 % of it each step (the next order), the first interval
+     * (no previous sample for the sculling) 1 / n: held to (2 |w| dt + 2 /
+     * n) of the leading error's norm; measured 0.46 % of it. Float: the
+     * attitude's rounding over 18.7 rad, carried into |f| T_run = 47 m/s,
+     * is of the error's size (3e-5 m/s measured), hence double only. */
+    {
+        const double wnorm = sqrt(3.0 * 3.0 + 1.0 + 2.0 * 2.0);
+        double ln = 0.0;
+        int i;
+        for (i = 0; i < 3; i++) {
+            ln += g_ra_lead[i] * g_ra_lead[i];
+        }
+        ln = sqrt(ln);
+        {
+            double worst = 0.0;
+            for (i = 0; i < 3; i++) {
+                worst = fmax(worst, fabs(g_ra_err[i] - g_ra_lead[i]) / ln);
+            }
+            print_message("rotating acceleration (means), 5 ms: error against its analytic leading term: %.2f %% of "
+                          "its norm\n",
+                          100.0 * worst);
+        }
+        for (i = 0; i < 3; i++) {
+            FNAV_ASSERT_CLOSE(g_ra_err[i], g_ra_lead[i], (2.0 * wnorm * dt + 2.0 / 1000.0) * ln, 0.0);
+        }
+    }
+#endif
+    rotating_acceleration_order(0);
 }
 
 /* The readings are the instantaneous specific force at each sample time
@@ -212,6 +306,7 @@ static void test_rotating_acceleration_instant(void **state)
                   e_mis);
     assert_true(e_inst < 2e-4 * k_g * T + 2.0 * 1000 * EPS * k_g * dt);
     assert_true(e_mis > 5.0 * e_inst);
+    rotating_acceleration_order(1);
 }
 
 /* Classical coning: q(t) = exp(beta u(t)), u = (cos Wt, sin Wt, 0). Its body
@@ -324,15 +419,23 @@ static void test_coning_instant(void **state)
  * the same rotation and velocity increments as with it (the quadratic fit
  * does not depend on it), and no coning or sculling term; with it, the
  * terms of the linear profile, (1/12) (w0 T) x (w1 T) and (1/12) ((w0 T) x
- * (f1 T) + (f0 T) x (w1 T)) (fnav_strapdown.h), computed here in double. */
+ * (f1 T) + (f0 T) x (w1 T)) (fnav_strapdown.h), computed here in double
+ * from the values the code sees (readings and T rounded to fnav_real_t).
+ * Rounding (unit roundoff u = EPS / 2): each increment w T and each
+ * product rounds once (3 u of every product), the differences and sums
+ * once and the scaling by a rounded 1/12 twice; a cross-product element
+ * may cancel, so the bound is relative to the sum of the magnitudes of its
+ * products: 6 u of it for coning, 8 u for sculling (two cross products
+ * added): 4 EPS of it for both. (It was 1e-5 relative in both builds:
+ * 100 times the float rounding, 1e10 times the double's.) */
 static void test_instant_coning_off(void **state)
 {
     fnav_strapdown_config_t on = fnav_strapdown_config_default, off = fnav_strapdown_config_default;
     fnav_strapdown_hist_t h = { { { 0 } }, { { 0 } }, { { 0 } }, { { 0 } }, FNAV_R(0.0), 0, 0 };
     fnav_strapdown_incr_t a, b;
-    const double T = 0.005, w0[3] = { 0.3, -1.2, 2.0 }, f0[3] = { 1.0, 0.5, -9.0 };
+    const double T = (double)(fnav_real_t)0.005, w0[3] = { 0.3, -1.2, 2.0 }, f0[3] = { 1.0, 0.5, -9.0 };
     const double w1[3] = { 0.5, -1.0, 1.5 }, f1[3] = { 1.5, 0.2, -9.5 };
-    double cw[3], cs[3];
+    double cw[3], cs[3], mw[3], ms[3];
     int i;
     (void)state;
     assert_int_equal(on.sample_type, FNAV_SAMPLE_INSTANT);
@@ -357,12 +460,14 @@ static void test_instant_coning_off(void **state)
         const double v1j = (double)(fnav_real_t)f1[j] * T, v1k = (double)(fnav_real_t)f1[k] * T;
         cw[i] = (a0j * a1k - a0k * a1j) / 12.0;
         cs[i] = ((a0j * v1k - a0k * v1j) + (v0j * a1k - v0k * a1j)) / 12.0;
+        mw[i] = (fabs(a0j * a1k) + fabs(a0k * a1j)) / 12.0;
+        ms[i] = (fabs(a0j * v1k) + fabs(a0k * v1j) + fabs(v0j * a1k) + fabs(v0k * a1j)) / 12.0;
         assert_true(a.theta_rad.v[i] == b.theta_rad.v[i]);
         assert_true(a.dv_mps.v[i] == b.dv_mps.v[i]);
         assert_true(b.coning.v[i] == FNAV_R(0.0));
         assert_true(b.scull.v[i] == FNAV_R(0.0));
-        FNAV_ASSERT_CLOSE(a.coning.v[i], cw[i], 1e-12, 1e-5);
-        FNAV_ASSERT_CLOSE(a.scull.v[i], cs[i], 1e-10, 1e-5);
+        FNAV_ASSERT_CLOSE(a.coning.v[i], cw[i], 4.0 * EPS * mw[i], 0.0);
+        FNAV_ASSERT_CLOSE(a.scull.v[i], cs[i], 4.0 * EPS * ms[i], 0.0);
     }
     assert_true(fabs(cw[2]) > 1e-7); /* the terms are not trivially zero */
 }

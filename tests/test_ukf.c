@@ -1054,8 +1054,19 @@ static void test_att_sd_limit(void **state)
         assert_int_equal(fnav_ukf_predict(&f, w0, f0, FNAV_R(0.005)), FNAV_OK);
         v = (double)fnav_ukf_cov(&f, FNAV_UKF_A + 2, FNAV_UKF_A + 2);
         if (k < 2) {
-            if (!(fabs(v / ((double)s * (double)s) - 1.0) < 1.0e-4)) {
-                fail_msg("yaw sd %.4f rad: %.4f rad after one still prediction", (double)s, sqrt(v));
+            /* exactly s^2 plus the interval's gyro noise q^2 dt and its
+             * bias uncertainty sd_bg^2 dt^2 (identity attitude: C = I; a
+             * yaw error leaves gravity alone). Rounding: each sigma point
+             * makes the GRP round trip (test_grp: 8 EPS (1 + p^2) of the
+             * angle, p = gamma s, up to 3 here) and the variance squares
+             * them: 16 EPS (1 + p^2) relative. Measured 1.1 EPS (float).
+             * (It allowed 1e-4 relative in both builds and left out the
+             * noise: 1e11 times the double build's rounding.) */
+            const double q = (double)c.gyro_noise_rps_rthz[2], b = (double)sd.gyro_bias_rps[2];
+            const double dt = (double)FNAV_R(0.005), p = (double)f.gamma * (double)s;
+            const double e = (double)s * (double)s + q * q * dt + b * b * dt * dt;
+            if (!(fabs(v - e) <= 16.0 * EPS * (1.0 + p * p) * e)) {
+                fail_msg("yaw sd %.4f rad: variance %.9g after one still prediction, expected %.9g", (double)s, v, e);
             }
         } else if (!(sqrt(v) < 0.5 * (double)s)) {
             fail_msg("yaw sd %.4f rad kept (%.4f): no fold for the limit to keep out", (double)s, sqrt(v));
@@ -1383,7 +1394,7 @@ static void test_zupt_after_long_swing(void **state)
  * kept; a normal covariance is left alone. */
 static void test_covariance_guard(void **state)
 {
-    static fnav_ukf_t f;
+    static fnav_ukf_t f, g;
     fnav_ukf_config_t c = fnav_ukf_config_default;
     fnav_ukf_init_sd_t sd = sd_default();
     fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
@@ -1407,16 +1418,46 @@ static void test_covariance_guard(void **state)
 /* position x far too large, correlated with velocity x: clamped to
      * (1e4 m)^2, the correlation coefficient unchanged */
     assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    g = f;
     pvx = (double)fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_V);
     fnav_ukf_set_cov(&f, FNAV_UKF_P, FNAV_UKF_P, (fnav_real_t)big);
     fnav_ukf_set_cov(&f, FNAV_UKF_P, FNAV_UKF_V, (fnav_real_t)(0.5 * sqrt(big * pvx)));
+    /* the reference: the covariance the guard should make of it, set
+     * directly (variance at its maximum, (1e4 m)^2, correlation 0.5) */
+    fnav_ukf_set_cov(&g, FNAV_UKF_P, FNAV_UKF_P, FNAV_R(1.0e8));
+    fnav_ukf_set_cov(&g, FNAV_UKF_P, FNAV_UKF_V, (fnav_real_t)(0.5 * sqrt(1.0e8 * pvx)));
     f.health.cov_guard = 0;
+    g.health.cov_guard = 0;
     assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fz, FNAV_R(0.01)), FNAV_OK);
-    assert_true(f.health.cov_guard >= 1);
-    FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_P), 1.0e8, 0.0, 1e-5);
+    assert_int_equal(fnav_ukf_predict(&g, fnav_vec3_zero(), fz, FNAV_R(0.01)), FNAV_OK);
+    /* f: clamped before the prediction and again after it (the prediction
+     * adds about 2 dt P_pv = 1 m^2 to 1e8); g only after */
+    assert_int_equal((int)f.health.cov_guard, 2);
+    assert_int_equal((int)g.health.cov_guard, 1);
+    FNAV_ASSERT_CLOSE(fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_P), 1.0e8, 0.0, 0.0);
     rho = (double)fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_V) /
           sqrt((double)fnav_ukf_cov(&f, FNAV_UKF_P, FNAV_UKF_P) * (double)fnav_ukf_cov(&f, FNAV_UKF_V, FNAV_UKF_V));
+    /* (0.5 before the prediction; the prediction's noise lowers it a little) */
     FNAV_ASSERT_CLOSE(rho, 0.5, 0.02, 0.0);
+    /* and the whole covariance is the reference's: the two differ before the
+     * prediction only by the guard's rounding of P_pv (its scaling by a
+     * rounded 0.1: 2 u relative), which the near-linear prediction carries
+     * at that size, and by the factorisation's rounding of a different
+     * input (a few u of sqrt(P_ii P_jj) per element, as the scatter's):
+     * 16 EPS of sqrt(P_ii P_jj) (measured: identical, both builds) */
+    {
+        int i, j;
+        for (i = 0; i < NM; i++) {
+            for (j = 0; j < NM; j++) {
+                const double a = (double)fnav_ukf_cov(&f, i, j), b = (double)fnav_ukf_cov(&g, i, j);
+                const double sc = sqrt(fabs((double)fnav_ukf_cov(&g, i, i) * (double)fnav_ukf_cov(&g, j, j)));
+                if (!(fabs(a - b) <= 16.0 * EPS * sc)) {
+                    fail_msg("P(%d, %d) = %.9g after the guard, %.9g set directly (%.3g of sqrt(P_ii P_jj))", i, j,
+                             a, b, fabs(a - b) / (sc + 1e-300));
+                }
+            }
+        }
+    }
 }
 
 static void test_covariance_recovery(void **state)

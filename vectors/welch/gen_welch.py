@@ -22,6 +22,13 @@ same scaling, one-sided), seg the last segment that fits (start
 whole input (the samples pushed so far). Same line format as
 welch_expected.csv, without band lines.
 
+welch_long_offset_expected.csv: tests/test_welch.c test_global_long_offset_start's
+record, 1,000,000 samples at 1 kHz: white noise (xorshift64 and Box-Muller,
+written here in Python's math as the C test writes it in C) with the first
+sample 50.0, far from the mean; scipy.signal.welch(x - x.mean(), periodic
+Hamming 64, overlap 32, detrend=False, density, one-sided): the default
+configuration with FNAV_DETREND_GLOBAL. Same line format, one case line.
+
 --check regenerates and compares with the committed files (relative 1e-12),
 and the two inputs with their sources (exact): the synthetic series with its
 generator, the OpenShoe excerpt with the shared data (when found; required
@@ -29,6 +36,7 @@ under FNAV_REQUIRE_DATA=1).
 --write-os820 re-extracts the real-data excerpt (needs the shared data:
 $FNAV_DATA_DIR, ../shared/data or /work/shared/data).
 """
+import math
 import os
 import sys
 import numpy as np
@@ -40,6 +48,7 @@ OUT = os.path.join(HERE, "welch_expected.csv")
 OUT_LAST = os.path.join(HERE, "welch_last_expected.csv")
 SYN = os.path.join(HERE, "welch_input_synth.txt")
 OS8 = os.path.join(HERE, "welch_input_os820.txt")
+OUT_LONG = os.path.join(HERE, "welch_long_offset_expected.csv")
 
 # name, input, fs, nperseg, noverlap, window, symmetric, detrend, scaling
 CASES = [
@@ -124,6 +133,38 @@ def last_segment(x, fs, n, nov, win, sym, detrend, scaling):
     return f, p
 
 
+def long_offset_record():
+    """test_global_long_offset_start's input, as its C loop makes it: per
+    sample two xorshift64 (13, 7, 17) draws u1 = 1 - (x >> 11) 2^-53, u2 =
+    (x >> 11) 2^-53 and g = sqrt(-2 ln u1) cos(2 pi u2); sample 0 is 50.0."""
+    mask = (1 << 64) - 1
+    x = 88172645463325252
+    out = np.empty(1000000)
+    for i in range(1000000):
+        x ^= (x << 13) & mask
+        x ^= x >> 7
+        x ^= (x << 17) & mask
+        u1 = 1.0 - float(x >> 11) * (1.0 / 9007199254740992.0)
+        x ^= (x << 13) & mask
+        x ^= x >> 7
+        x ^= (x << 17) & mask
+        u2 = float(x >> 11) * (1.0 / 9007199254740992.0)
+        out[i] = 50.0 if i == 0 else math.sqrt(-2.0 * math.log(u1)) * math.cos(6.283185307179586 * u2)
+    return out
+
+
+def long_offset():
+    fs, n, nov = 1000.0, 64, 32
+    f, p = welch(long_offset_record(), fs, n, nov, "hamming", 0, "global", "density")
+    lines = ["# scipy %s numpy %s: scipy.signal.welch of test_global_long_offset_start's record less its mean "
+             "(one-sided)\n" % (scipy.__version__, np.__version__),
+             "case,long_offset_hamming64_global,xorshift_bm,%.17g,%d,%d,hamming,0,global,density,%d\n"
+             % (fs, n, nov, len(p))]
+    for k, v in enumerate(p):
+        lines.append("%d,%.17e\n" % (k, v))
+    return lines
+
+
 def read(path):
     return np.array([float(l) for l in open(path) if l.strip() and not l.startswith("#")])
 
@@ -204,6 +245,7 @@ def main():
         with open(SYN, "w") as f:
             f.write(synth_text())
     lines, last = generate()
+    longo = long_offset()
     if "--check" in sys.argv:
         status = 0
         # the inputs too: an input edited and the expected values regenerated
@@ -220,7 +262,7 @@ def main():
                 print("gen_welch: %s differs from its source (regenerate: gen_welch.py --write-synth --write-os820)"
                       % os.path.basename(path))
                 status = 1
-        for path, new in ((OUT, lines), (OUT_LAST, last)):
+        for path, new in ((OUT, lines), (OUT_LAST, last), (OUT_LONG, longo)):
             err = compare(open(path).readlines(), new) if os.path.exists(path) else "missing"
             if err:
                 print("gen_welch: %s: %s" % (os.path.basename(path), err))
@@ -230,6 +272,8 @@ def main():
         f.writelines(lines)
     with open(OUT_LAST, "w") as f:
         f.writelines(last)
+    with open(OUT_LONG, "w") as f:
+        f.writelines(longo)
     return 0
 
 
