@@ -152,6 +152,21 @@ static void add_line(hx_reader_t *r, const char *prefix, const char *fmt, va_lis
     vsnprintf(r->warn + used, sizeof r->warn - used, fmt, ap);
 }
 
+/* m/s^2 per unit of an acceleration unit a header names (1 for m/s^2 or
+ * none), and back: the unit of a scale (HX_UNIT_NONE for m/s^2) */
+static double acc_scale_of(hx_name_unit_t u)
+{
+    return u == HX_UNIT_G ? HX_G_MPS2 : u == HX_UNIT_MG ? HX_MG_MPS2 : u == HX_UNIT_UG ? HX_UG_MPS2 : 1.0;
+}
+
+static hx_name_unit_t acc_unit_of(double scale)
+{
+    return scale == HX_G_MPS2    ? HX_UNIT_G
+           : scale == HX_MG_MPS2 ? HX_UNIT_MG
+           : scale == HX_UG_MPS2 ? HX_UNIT_UG
+                                 : HX_UNIT_NONE;
+}
+
 static void add_warn(hx_reader_t *r, const char *fmt, ...)
 {
     va_list ap;
@@ -839,7 +854,7 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
         l->time_digits = m->unit[0] == HX_UNIT_MS ? 6 : m->unit[0] == HX_UNIT_US ? 3 : m->unit[0] == HX_UNIT_NS ? 0 : 9;
     }
     if (!(l->units_given & 2) && m->unit[1] != HX_UNIT_NONE) {
-        l->acc_scale = m->unit[1] == HX_UNIT_G ? HX_G_MPS2 : m->unit[1] == HX_UNIT_MG ? HX_MG_MPS2 : 1.0;
+        l->acc_scale = acc_scale_of(m->unit[1]);
     }
     if (!(l->units_given & 4) && m->unit[2] != HX_UNIT_NONE) {
         l->gyr_scale = m->unit[2] == HX_UNIT_DPS ? HX_DPS_RPS : m->unit[2] == HX_UNIT_MDPS ? HX_MDPS_RPS : 1.0;
@@ -848,7 +863,7 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
     /* the warning names the units the log is read in (not the defaults) */
     m->unit[0] = l->time_digits == 6 ? HX_UNIT_MS : l->time_digits == 3 ? HX_UNIT_US
                  : l->time_digits == 0 ? HX_UNIT_NS : HX_UNIT_NONE;
-    m->unit[1] = l->acc_scale == HX_G_MPS2 ? HX_UNIT_G : l->acc_scale == HX_MG_MPS2 ? HX_UNIT_MG : HX_UNIT_NONE;
+    m->unit[1] = acc_unit_of(l->acc_scale);
     m->unit[2] = l->gyr_scale == HX_DPS_RPS ? HX_UNIT_DPS : l->gyr_scale == HX_MDPS_RPS ? HX_UNIT_MDPS : HX_UNIT_NONE;
     {
         char near[300];
@@ -940,7 +955,7 @@ static void units_named_warn(hx_reader_t *r, char **f, int n)
             want.time_digits = c.unit == HX_UNIT_MS ? 6 : c.unit == HX_UNIT_US ? 3 : c.unit == HX_UNIT_NS ? 0 : 9;
             differs = want.time_digits != l->time_digits;
         } else if (q == 1) {
-            want.acc_scale = c.unit == HX_UNIT_G ? HX_G_MPS2 : c.unit == HX_UNIT_MG ? HX_MG_MPS2 : 1.0;
+            want.acc_scale = acc_scale_of(c.unit);
             differs = want.acc_scale != l->acc_scale;
         } else {
             want.gyr_scale = c.unit == HX_UNIT_DPS ? HX_DPS_RPS : c.unit == HX_UNIT_MDPS ? HX_MDPS_RPS : 1.0;
@@ -2651,7 +2666,10 @@ const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t
 
 const char *hx_accel_unit_name(double acc_scale)
 {
-    return acc_scale == HX_G_MPS2 ? "g" : acc_scale == HX_MG_MPS2 ? "mg" : "m/s2";
+    return acc_scale == HX_G_MPS2    ? "g"
+           : acc_scale == HX_MG_MPS2 ? "mg"
+           : acc_scale == HX_UG_MPS2 ? "ug"
+                                     : "m/s2";
 }
 
 const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size)
@@ -3427,9 +3445,13 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
                 l->acc_scale = HX_G_MPS2;
             } else if (strcmp(val, "mg") == 0) {
                 l->acc_scale = HX_MG_MPS2; /* ST's SensorTile data log, AccX [mg] (the units review) */
+            } else if (strcmp(val, "ug") == 0) {
+                l->acc_scale = HX_UG_MPS2; /* micro-g, \xc2\xb5g and \xce\xbcg folded to ug (2026-12-02) */
             } else {
                 snprintf(err, err_size,
-                         "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, m/s\xc2\xb2, mps2), g or mg", given);
+                         "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, m/s\xc2\xb2, mps2), g, mg or ug "
+                         "(\xc2\xb5g)",
+                         given);
                 return -1;
             }
         } else {

@@ -323,10 +323,41 @@ u_hdr "$T/u_degh.csv" 't,ax,ay,az,gx [°/h],gy [°/h],gz [°/h]' 1 1
 expect_exit 1 "info of gx [°/h]" "$H" info "$T/u_degh.csv"
 expect_err "u_degh.csv:1: header has no column 'gx'.*column 5 ('gx \[°/h\]') names a unit not read, '°/h' (a rate's: rad/s, deg/s" \
     "a rate unit not read: the column and the unit named"
-u_hdr "$T/u_ug.csv" 'time,ax_µg,ay_µg,az_µg,gx,gy,gz' 1 1
-expect_exit 1 "info of ax_µg" "$H" info "$T/u_ug.csv"
-expect_err "column 2 ('ax_µg') names a unit not read, 'µg' (an acceleration's: m/s^2 or m/s2 or m/s² or mps2, g, mg)" \
-    "micro-g (no unit read): the column and the unit named"
+# micro-g (µg, μg, ug: 9.80665e-6 m/s^2, the standard g that g and mg are read with) is read, in a header and in
+# --units; until 2026-12-02 'ax_µg' was refused as 'a unit not read' (exit 1). The walk's accelerations in µg give
+# the walk's samples and info's figures; another unit (ng) is still refused, the list naming µg
+u_ug() { # FILE HEADER: the walk's first 400 samples under HEADER, the accelerations in micro-g
+    { printf '%s\n' "$2"
+      awk -F, 'NR > 1 && NR <= 401 { printf "%s,%.17g,%.17g,%.17g,%s,%s,%s\n", $1, $2 / 9.80665e-6, $3 / 9.80665e-6,
+          $4 / 9.80665e-6, $5, $6, $7 }' "$T/u_walk.csv"
+    } >"$1"
+}
+expect_exit 0 "info of the walk in m/s^2" "$H" info "$T/u_ref.csv"
+grep -v "^file " "$T/out" >"$T/u_ref.info"
+u_ug "$T/u_ug.csv" 'time,ax_µg,ay_µg,az_µg,gx,gy,gz'
+u_ug "$T/u_ug2.csv" 't,ax [ug],ay [ug],az [ug],gx,gy,gz'
+u_ug "$T/u_ug3.csv" 't,acc_x (μg),acc_y (μg),acc_z (μg),gx,gy,gz'
+for f in u_ug u_ug2 u_ug3; do
+    expect_exit 0 "info of $f.csv (accelerations in micro-g)" "$H" info "$T/$f.csv"
+    expect_err "header read as --columns .* --units accel=ug" "info $f.csv: the header read, the accelerations in ug"
+    grep -v "^file " "$T/out" | cmp -s - "$T/u_ref.info" && pass "info $f.csv: the figures of the walk in m/s^2" ||
+        fail "info $f.csv: figures differ from the walk in m/s^2: $(grep -v '^file ' "$T/out" | diff - "$T/u_ref.info")"
+    expect_exit 0 "convert $f.csv" "$H" convert "$T/$f.csv" "$T/$f.out.csv"
+    cmp -s "$T/u_ref.csv" "$T/$f.out.csv" && pass "$f.csv: the walk's samples, to the float32" ||
+        fail "$f.csv: read otherwise than the walk's CSV"
+done
+for u in ug µg μg; do
+    expect_exit 0 "--units accel=$u" "$H" convert "$T/u_ug.csv" "$T/u_ugopt.csv" --units "accel=$u" \
+        --columns 't=time,ax=ax_µg,ay=ay_µg,az=az_µg,gx=gx,gy=gy,gz=gz'
+    cmp -s "$T/u_ref.csv" "$T/u_ugopt.csv" && pass "--units accel=$u: the walk's samples" ||
+        fail "--units accel=$u: read otherwise than the walk's CSV"
+done
+expect_exit 2 "--units accel=ng" "$H" info "$T/u_ug.csv" --units accel=ng
+expect_err "accel=ng: the acceleration unit is m/s2 (m/s^2, m/s², mps2), g, mg or ug (µg)" "--units accel=ng: the list names ug"
+u_ug "$T/u_ng.csv" 'time,ax_ng,ay_ng,az_ng,gx,gy,gz'
+expect_exit 1 "info of ax_ng" "$H" info "$T/u_ng.csv"
+expect_err "column 2 ('ax_ng') names a unit not read, 'ng' (an acceleration's: m/s^2 or m/s2 or m/s² or mps2, g, mg, ug or µg)" \
+    "nano-g (no unit read): the column and the unit named, the list with micro-g"
 
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
