@@ -2835,6 +2835,81 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, c
     return r;
 }
 
+/* The bytes after the last gzip member of path, as gunzip reads the file:
+ * members one after another (concatenated .gz files are one valid .gz),
+ * each inflated to its end; *zeros set when they are all zero bytes (a
+ * block's padding). 0 when none, -1 when the file cannot be read again or
+ * a member is damaged (the reader said so). zlib's gzread ignores such
+ * bytes without a word; gunzip says "trailing garbage ignored". */
+static long gz_trailing_bytes(const char *path, int *zeros)
+{
+    enum { IN_SIZE = 1 << 14, OUT_SIZE = 1 << 15 };
+    unsigned char *const in = (unsigned char *)malloc(IN_SIZE + OUT_SIZE), *const out = in + IN_SIZE;
+    FILE *f = in != NULL ? fopen(path, "rb") : NULL;
+    z_stream zs;
+    long member_end = 0, size, left = -1;
+    if (f == NULL) {
+        free(in);
+        return -1;
+    }
+    memset(&zs, 0, sizeof zs);
+    if (fseek(f, 0L, SEEK_END) != 0 || (size = ftell(f)) < 0 || inflateInit2(&zs, 15 + 16) != Z_OK) {
+        fclose(f);
+        free(in);
+        return -1;
+    }
+    for (;;) {
+        size_t n;
+        int rc = Z_OK;
+        if (fseek(f, member_end, SEEK_SET) != 0) {
+            break;
+        }
+        n = fread(in, 1, 2, f);
+        if (n == 0) {
+            left = 0; /* the last member ends the file */
+            break;
+        }
+        if (n < 2 || in[0] != 0x1f || in[1] != 0x8b) {
+            /* no gzip member: the rest is junk (counted with its zero bytes) */
+            long k, nonzero = (long)(n == 2 ? (in[0] != 0) + (in[1] != 0) : in[0] != 0);
+            if (fseek(f, member_end + (long)n, SEEK_SET) == 0) {
+                while ((n = fread(in, 1, IN_SIZE, f)) > 0) {
+                    for (k = 0; k < (long)n; k++) {
+                        nonzero += in[k] != 0;
+                    }
+                }
+                left = size - member_end;
+                *zeros = nonzero == 0;
+            }
+            break;
+        }
+        if (fseek(f, member_end, SEEK_SET) != 0 || inflateReset(&zs) != Z_OK) {
+            break;
+        }
+        zs.avail_in = 0;
+        while (rc == Z_OK) {
+            if (zs.avail_in == 0) {
+                zs.avail_in = (uInt)fread(in, 1, IN_SIZE, f);
+                zs.next_in = in;
+                if (zs.avail_in == 0) {
+                    break; /* cut inside the member */
+                }
+            }
+            zs.next_out = out;
+            zs.avail_out = OUT_SIZE;
+            rc = inflate(&zs, Z_NO_FLUSH);
+        }
+        if (rc != Z_STREAM_END) {
+            break;
+        }
+        member_end += (long)zs.total_in;
+    }
+    inflateEnd(&zs);
+    fclose(f);
+    free(in);
+    return left;
+}
+
 fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
 {
     fnav_status_t st;
@@ -2887,6 +2962,17 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
         add_warn(r, "%s:%ld: %ld row%s with more fields than the header's %d (the first here): where a stray delimiter "
                     "split a field, the values after it were read from the wrong columns",
                  r->path, r->long_first, r->long_rows, r->long_rows == 1 ? "" : "s", r->hdr_fields);
+    }
+    if (st == FNAV_END && !gzdirect(r->gz)) {
+        /* bytes after the gzip data (a second member is read whole) */
+        int zeros = 0;
+        const long junk = gz_trailing_bytes(r->path, &zeros);
+        if (junk > 0) {
+            add_warn(r, "%s: %ld byte%s after the end of the gzip data %s no gzip member (%s): ignored, as gunzip "
+                        "does; the samples are the gzip data's",
+                     r->path, junk, junk == 1 ? "" : "s", junk == 1 ? "is" : "are",
+                     zeros ? "zero bytes, padding" : "trailing junk");
+        }
     }
     if (st == FNAV_END && r->stats.records == 0) {
         if (r->meta.format == HX_FMT_MTMGR && r->mt.skipped > 0) {
