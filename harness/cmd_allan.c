@@ -2311,6 +2311,19 @@ static int paper_tables(void)
 
 /* ------------------------------------------------------------ main */
 
+/* The exit status after one more failure: an output that could not be
+ * written (HX_EXIT_IO) decides over bad input or a refused profile
+ * (HX_EXIT_DATA), which says that every output was written; the outputs
+ * after a failure are still written (docs/allan.md, "Command"). Until
+ * 2026-12-02 the last failure set decided. */
+static int worse_exit(int exit_code, int failure)
+{
+    if (exit_code == HX_EXIT_IO || (exit_code == HX_EXIT_DATA && failure != HX_EXIT_IO)) {
+        return exit_code;
+    }
+    return failure;
+}
+
 int hx_cmd_allan(int argc, char **argv)
 {
     hx_args_t a;
@@ -2522,7 +2535,7 @@ int hx_cmd_allan(int argc, char **argv)
     }
     if (input_rc > 0) {
         hx_warn(CMD, "analysing the %lu samples before the error", (unsigned long)R->n);
-        exit_code = HX_EXIT_DATA;
+        exit_code = worse_exit(exit_code, HX_EXIT_DATA);
     }
 
     if (hx_arg(&a, "--m") == NULL && R->ngrid > 0u && tau_max_samples(R) > (double)R->grid[R->ngrid - 1u] * 1.01) {
@@ -2552,7 +2565,7 @@ int hx_cmd_allan(int argc, char **argv)
                  "variance and its bias model describe a sensor at rest%s (docs/allan.md, \"Command\")",
                  path, R->win_moving, R->win_n, HX_ALLAN_MOVING_GYRO_RPS, HX_ALLAN_MOVING_F_MPS2,
                  R->win_first_moving_s, dps);
-        exit_code = HX_EXIT_DATA;
+        exit_code = worse_exit(exit_code, HX_EXIT_DATA);
     } else if (R->win_moving > 0) {
         motion_report(R, path, hx_arg(&a, "--profile") != NULL);
     }
@@ -2561,12 +2574,12 @@ int hx_cmd_allan(int argc, char **argv)
     }
     if (R->units_bad) {
         hx_error(CMD, "%s: %s", path, R->units_msg);
-        exit_code = HX_EXIT_DATA;
+        exit_code = worse_exit(exit_code, HX_EXIT_DATA);
     }
     for (i = 0; i < R->nch; i++) {
         analyse_channel(R, &R->ch[i], hx_flag(&a, "--fit-extra"));
         if (R->ch[i].underflow) {
-            exit_code = HX_EXIT_DATA;
+            exit_code = worse_exit(exit_code, HX_EXIT_DATA);
         }
         npaper += R->ch[i].id_ok && R->ch[i].id.paper_ok;
     }
@@ -2619,18 +2632,18 @@ int hx_cmd_allan(int argc, char **argv)
     print_params(R);
 
     if (hx_arg(&a, "--out") != NULL && write_csv(R, hx_arg(&a, "--out")) != 0) {
-        exit_code = HX_EXIT_IO;
+        exit_code = worse_exit(exit_code, HX_EXIT_IO);
     }
     if (hx_arg(&a, "--json") != NULL && write_json(R, hx_arg(&a, "--json")) != 0) {
-        exit_code = HX_EXIT_IO;
+        exit_code = worse_exit(exit_code, HX_EXIT_IO);
     }
     if (hx_arg(&a, "--plot") != NULL && write_plot(R, hx_arg(&a, "--plot")) != 0) {
-        exit_code = HX_EXIT_IO;
+        exit_code = worse_exit(exit_code, HX_EXIT_IO);
     }
     if (hx_arg(&a, "--profile") != NULL && (R->units_bad || R->moving || R->win_moving > 0)) {
         hx_error(CMD, "%s: the log %s (above); profile not written", hx_arg(&a, "--profile"),
                  R->moving ? "is not static" : R->units_bad ? "is not in SI units" : "moves in places");
-        exit_code = HX_EXIT_DATA;
+        exit_code = worse_exit(exit_code, HX_EXIT_DATA);
     } else if (hx_arg(&a, "--profile") != NULL) {
         if (hx_arg(&a, "--name") != NULL) {
             snprintf(name, sizeof name, "%s", hx_arg(&a, "--name"));
@@ -2638,8 +2651,8 @@ int hx_cmd_allan(int argc, char **argv)
             base_name(path, name, sizeof name);
         }
         rc = write_profile(R, hx_arg(&a, "--profile"), name);
-        if (rc != 0 && exit_code == HX_EXIT_OK) {
-            exit_code = rc == -2 ? HX_EXIT_DATA : HX_EXIT_IO;
+        if (rc != 0) {
+            exit_code = worse_exit(exit_code, rc == -2 ? HX_EXIT_DATA : HX_EXIT_IO);
         }
     }
     free_run(R);

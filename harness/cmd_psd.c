@@ -103,6 +103,13 @@ static void dc_text(int mode, double df, char *buf, size_t n)
  * cannot show where the band ends. */
 #define NYQ_FRAC 0.9
 
+/* The smallest --round step (0 aside, not rounded), Hz. The step goes to
+ * the core as fnav_real_t (float): 1e-40 became a subnormal, 1e-50 zero,
+ * and 2 x bandwidth / step has whole-number precision in float only below
+ * 2^24, which a millihertz keeps up to 16.7 kHz; the answers are printed
+ * with the step's decimals (fs_decimals), three at 0.001 Hz. */
+#define ROUND_MIN_HZ 0.001
+
 /* Decimals that print a sampling frequency as the rule gives it: those of
  * the rounding step (50 Hz: 0; 2.5 Hz: 1; up to 6), 1 when not rounded.
  * A rounded answer printed to the hertz read 232 Hz for 232.5 Hz with
@@ -672,6 +679,13 @@ int hx_cmd_psd(int argc, char **argv)
     if (hx_arg_long(&a, "--overlap", 0, nfft - 1, &overlap) != 0 ||
         hx_arg_double(&a, "--threshold", 0.01, 1.0, &thr) != 0 || hx_arg_double(&a, "--round", 0.0, 1e6, &rnd) != 0 ||
         hx_arg_long(&a, "--spec-nfft", 8, FNAV_WELCH_MAX_NFFT, &spec_nfft) != 0) {
+        return HX_EXIT_USAGE;
+    }
+    if (rnd != 0.0 && rnd < ROUND_MIN_HZ) {
+        /* 1e-40 ran as "multiples of 9.99995e-41 Hz" (a float subnormal),
+         * 1e-50 as "not rounded" with round_hz 1e-50 in the JSON, exit 0 */
+        hx_error(CMD, "--round '%s' is neither 0 (not rounded) nor a step in [%g, %g] Hz", hx_arg(&a, "--round"),
+                 ROUND_MIN_HZ, 1e6);
         return HX_EXIT_USAGE;
     }
     if ((spec_nfft & (spec_nfft - 1)) != 0) {

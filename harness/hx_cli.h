@@ -117,7 +117,7 @@ void hx_warn_gz_output(const char *cmd, const char *path, hx_format_t fmt);
     { "--from", "NAME", "input format (default: detected): " HX_FORMAT_LIST, 0 },            \
     { "--input-rate", "HZ", "sample rate of an input without time stamps", 0 },                \
     { "--columns", "MAP", "the CSV's names of the columns, e.g. t=timestamp_ns,ax=acc_x,...", 0 }, \
-    { "--units", "SPEC", "the CSV's units: time=s|ms|us|ns,accel=m/s2|g|mg,gyro=rad/s|deg/s|mdps", 0 }
+    { "--units", "SPEC", "the CSV's units: time=s|ms|us|ns,accel=m/s2|g|mg|ug,gyro=rad/s|deg/s|mdps", 0 }
 
 /** Check --from, --input-rate, --columns and --units (a log of another
  *  format than csv with either of the last two, given or detected, is a

@@ -152,6 +152,21 @@ static void add_line(hx_reader_t *r, const char *prefix, const char *fmt, va_lis
     vsnprintf(r->warn + used, sizeof r->warn - used, fmt, ap);
 }
 
+/* m/s^2 per unit of an acceleration unit a header names (1 for m/s^2 or
+ * none), and back: the unit of a scale (HX_UNIT_NONE for m/s^2) */
+static double acc_scale_of(hx_name_unit_t u)
+{
+    return u == HX_UNIT_G ? HX_G_MPS2 : u == HX_UNIT_MG ? HX_MG_MPS2 : u == HX_UNIT_UG ? HX_UG_MPS2 : 1.0;
+}
+
+static hx_name_unit_t acc_unit_of(double scale)
+{
+    return scale == HX_G_MPS2    ? HX_UNIT_G
+           : scale == HX_MG_MPS2 ? HX_UNIT_MG
+           : scale == HX_UG_MPS2 ? HX_UNIT_UG
+                                 : HX_UNIT_NONE;
+}
+
 static void add_warn(hx_reader_t *r, const char *fmt, ...)
 {
     va_list ap;
@@ -839,7 +854,7 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
         l->time_digits = m->unit[0] == HX_UNIT_MS ? 6 : m->unit[0] == HX_UNIT_US ? 3 : m->unit[0] == HX_UNIT_NS ? 0 : 9;
     }
     if (!(l->units_given & 2) && m->unit[1] != HX_UNIT_NONE) {
-        l->acc_scale = m->unit[1] == HX_UNIT_G ? HX_G_MPS2 : m->unit[1] == HX_UNIT_MG ? HX_MG_MPS2 : 1.0;
+        l->acc_scale = acc_scale_of(m->unit[1]);
     }
     if (!(l->units_given & 4) && m->unit[2] != HX_UNIT_NONE) {
         l->gyr_scale = m->unit[2] == HX_UNIT_DPS ? HX_DPS_RPS : m->unit[2] == HX_UNIT_MDPS ? HX_MDPS_RPS : 1.0;
@@ -848,7 +863,7 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
     /* the warning names the units the log is read in (not the defaults) */
     m->unit[0] = l->time_digits == 6 ? HX_UNIT_MS : l->time_digits == 3 ? HX_UNIT_US
                  : l->time_digits == 0 ? HX_UNIT_NS : HX_UNIT_NONE;
-    m->unit[1] = l->acc_scale == HX_G_MPS2 ? HX_UNIT_G : l->acc_scale == HX_MG_MPS2 ? HX_UNIT_MG : HX_UNIT_NONE;
+    m->unit[1] = acc_unit_of(l->acc_scale);
     m->unit[2] = l->gyr_scale == HX_DPS_RPS ? HX_UNIT_DPS : l->gyr_scale == HX_MDPS_RPS ? HX_UNIT_MDPS : HX_UNIT_NONE;
     {
         char near[300];
@@ -940,7 +955,7 @@ static void units_named_warn(hx_reader_t *r, char **f, int n)
             want.time_digits = c.unit == HX_UNIT_MS ? 6 : c.unit == HX_UNIT_US ? 3 : c.unit == HX_UNIT_NS ? 0 : 9;
             differs = want.time_digits != l->time_digits;
         } else if (q == 1) {
-            want.acc_scale = c.unit == HX_UNIT_G ? HX_G_MPS2 : c.unit == HX_UNIT_MG ? HX_MG_MPS2 : 1.0;
+            want.acc_scale = acc_scale_of(c.unit);
             differs = want.acc_scale != l->acc_scale;
         } else {
             want.gyr_scale = c.unit == HX_UNIT_DPS ? HX_DPS_RPS : c.unit == HX_UNIT_MDPS ? HX_MDPS_RPS : 1.0;
@@ -2651,7 +2666,10 @@ const hx_csv_layout_t *hx_time_unit_layout(double rate_hz, const hx_csv_layout_t
 
 const char *hx_accel_unit_name(double acc_scale)
 {
-    return acc_scale == HX_G_MPS2 ? "g" : acc_scale == HX_MG_MPS2 ? "mg" : "m/s2";
+    return acc_scale == HX_G_MPS2    ? "g"
+           : acc_scale == HX_MG_MPS2 ? "mg"
+           : acc_scale == HX_UG_MPS2 ? "ug"
+                                     : "m/s2";
 }
 
 const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size)
@@ -2817,6 +2835,81 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, c
     return r;
 }
 
+/* The bytes after the last gzip member of path, as gunzip reads the file:
+ * members one after another (concatenated .gz files are one valid .gz),
+ * each inflated to its end; *zeros set when they are all zero bytes (a
+ * block's padding). 0 when none, -1 when the file cannot be read again or
+ * a member is damaged (the reader said so). zlib's gzread ignores such
+ * bytes without a word; gunzip says "trailing garbage ignored". */
+static long gz_trailing_bytes(const char *path, int *zeros)
+{
+    enum { IN_SIZE = 1 << 14, OUT_SIZE = 1 << 15 };
+    unsigned char *const in = (unsigned char *)malloc(IN_SIZE + OUT_SIZE), *const out = in + IN_SIZE;
+    FILE *f = in != NULL ? fopen(path, "rb") : NULL;
+    z_stream zs;
+    long member_end = 0, size, left = -1;
+    if (f == NULL) {
+        free(in);
+        return -1;
+    }
+    memset(&zs, 0, sizeof zs);
+    if (fseek(f, 0L, SEEK_END) != 0 || (size = ftell(f)) < 0 || inflateInit2(&zs, 15 + 16) != Z_OK) {
+        fclose(f);
+        free(in);
+        return -1;
+    }
+    for (;;) {
+        size_t n;
+        int rc = Z_OK;
+        if (fseek(f, member_end, SEEK_SET) != 0) {
+            break;
+        }
+        n = fread(in, 1, 2, f);
+        if (n == 0) {
+            left = 0; /* the last member ends the file */
+            break;
+        }
+        if (n < 2 || in[0] != 0x1f || in[1] != 0x8b) {
+            /* no gzip member: the rest is junk (counted with its zero bytes) */
+            long k, nonzero = (long)(n == 2 ? (in[0] != 0) + (in[1] != 0) : in[0] != 0);
+            if (fseek(f, member_end + (long)n, SEEK_SET) == 0) {
+                while ((n = fread(in, 1, IN_SIZE, f)) > 0) {
+                    for (k = 0; k < (long)n; k++) {
+                        nonzero += in[k] != 0;
+                    }
+                }
+                left = size - member_end;
+                *zeros = nonzero == 0;
+            }
+            break;
+        }
+        if (fseek(f, member_end, SEEK_SET) != 0 || inflateReset(&zs) != Z_OK) {
+            break;
+        }
+        zs.avail_in = 0;
+        while (rc == Z_OK) {
+            if (zs.avail_in == 0) {
+                zs.avail_in = (uInt)fread(in, 1, IN_SIZE, f);
+                zs.next_in = in;
+                if (zs.avail_in == 0) {
+                    break; /* cut inside the member */
+                }
+            }
+            zs.next_out = out;
+            zs.avail_out = OUT_SIZE;
+            rc = inflate(&zs, Z_NO_FLUSH);
+        }
+        if (rc != Z_STREAM_END) {
+            break;
+        }
+        member_end += (long)zs.total_in;
+    }
+    inflateEnd(&zs);
+    fclose(f);
+    free(in);
+    return left;
+}
+
 fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
 {
     fnav_status_t st;
@@ -2869,6 +2962,17 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
         add_warn(r, "%s:%ld: %ld row%s with more fields than the header's %d (the first here): where a stray delimiter "
                     "split a field, the values after it were read from the wrong columns",
                  r->path, r->long_first, r->long_rows, r->long_rows == 1 ? "" : "s", r->hdr_fields);
+    }
+    if (st == FNAV_END && !gzdirect(r->gz)) {
+        /* bytes after the gzip data (a second member is read whole) */
+        int zeros = 0;
+        const long junk = gz_trailing_bytes(r->path, &zeros);
+        if (junk > 0) {
+            add_warn(r, "%s: %ld byte%s after the end of the gzip data %s no gzip member (%s): ignored, as gunzip "
+                        "does; the samples are the gzip data's",
+                     r->path, junk, junk == 1 ? "" : "s", junk == 1 ? "is" : "are",
+                     zeros ? "zero bytes, padding" : "trailing junk");
+        }
     }
     if (st == FNAV_END && r->stats.records == 0) {
         if (r->meta.format == HX_FMT_MTMGR && r->mt.skipped > 0) {
@@ -3427,9 +3531,13 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
                 l->acc_scale = HX_G_MPS2;
             } else if (strcmp(val, "mg") == 0) {
                 l->acc_scale = HX_MG_MPS2; /* ST's SensorTile data log, AccX [mg] (the units review) */
+            } else if (strcmp(val, "ug") == 0) {
+                l->acc_scale = HX_UG_MPS2; /* micro-g, \xc2\xb5g and \xce\xbcg folded to ug (2026-12-02) */
             } else {
                 snprintf(err, err_size,
-                         "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, m/s\xc2\xb2, mps2), g or mg", given);
+                         "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, m/s\xc2\xb2, mps2), g, mg or ug "
+                         "(\xc2\xb5g)",
+                         given);
                 return -1;
             }
         } else {

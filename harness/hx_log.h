@@ -94,7 +94,7 @@ const char *hx_format_list(void);
 typedef struct {
     char names[8][64];  /**< the file's column for t, ax, ay, az, gx, gy, gz, temp; "" keeps the default name */
     int time_digits;    /**< ns per unit of the time column as a power of ten: 9 s, 6 ms, 3 us, 0 ns */
-    double acc_scale;   /**< m/s^2 per unit of the accelerations (1, HX_G_MPS2 for g, HX_MG_MPS2 for mg) */
+    double acc_scale;   /**< m/s^2 per unit of the accelerations (1, HX_G_MPS2 for g, HX_MG_MPS2 for mg, HX_UG_MPS2 for ug) */
     double gyr_scale;   /**< rad/s per unit of the rates (1, HX_DPS_RPS for deg/s, HX_MDPS_RPS for mdps) */
     const char *option; /**< "--columns", "--units" or "--columns and --units": the options that gave it; NULL: defaults */
     int units_given;    /**< the --units items given: 1 time, 2 accel, 4 gyro (a unit in a matched name gives the others) */
@@ -105,6 +105,7 @@ typedef struct {
  *  g and per mg, rad/s per deg/s and per mdps. */
 #define HX_G_MPS2 9.80665
 #define HX_MG_MPS2 0.00980665
+#define HX_UG_MPS2 9.80665e-6 /* micro-g: the standard g of g and mg, 1e-6 of it */
 #define HX_DPS_RPS (3.14159265358979323846 / 180.0)
 #define HX_MDPS_RPS (3.14159265358979323846 / 180.0 / 1000.0)
 /** The --units name of an acceleration scale: "g", "mg", else "m/s2". */

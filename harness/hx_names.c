@@ -39,7 +39,7 @@ static hx_name_unit_t unit_of(const char *u)
         hx_name_unit_t unit;
     } k_units[] = {
         { "s", HX_UNIT_S },         { "sec", HX_UNIT_S },       { "ms", HX_UNIT_MS },      { "us", HX_UNIT_US },
-        { "ns", HX_UNIT_NS },       { "g", HX_UNIT_G },         { "mg", HX_UNIT_MG },      { "m/s^2", HX_UNIT_MPS2 },
+        { "ns", HX_UNIT_NS },       { "g", HX_UNIT_G },         { "mg", HX_UNIT_MG },      { "ug", HX_UNIT_UG },      { "m/s^2", HX_UNIT_MPS2 },
         { "m/s2", HX_UNIT_MPS2 },   { "mps2", HX_UNIT_MPS2 },   { "ms2", HX_UNIT_MPS2 },   { "rad/s", HX_UNIT_RPS },
         { "rps", HX_UNIT_RPS },     { "rads", HX_UNIT_RPS },    { "radps", HX_UNIT_RPS },  { "deg/s", HX_UNIT_DPS },
         { "dps", HX_UNIT_DPS },     { "degs", HX_UNIT_DPS },    { "mdps", HX_UNIT_MDPS },  { "mdeg/s", HX_UNIT_MDPS },
@@ -56,14 +56,14 @@ static hx_name_unit_t unit_of(const char *u)
 const char *hx_name_unit_item(hx_name_unit_t u)
 {
     static const char *const items[] = { NULL,      "time=s", "time=ms", "time=us",    "time=ns",  "accel=m/s2",
-                                         "accel=g", "accel=mg", "gyro=rad/s", "gyro=deg/s", "gyro=mdps" };
+                                         "accel=g", "accel=mg", "accel=ug", "gyro=rad/s", "gyro=deg/s", "gyro=mdps" };
     return ((int)u > 0 && (size_t)u < sizeof items / sizeof items[0]) ? items[u] : NULL;
 }
 
 /* 0 time, 1 acceleration, 2 rate: the quantity a unit measures */
 static int unit_quantity(hx_name_unit_t u)
 {
-    return u <= HX_UNIT_NS ? 0 : u <= HX_UNIT_MG ? 1 : 2;
+    return u <= HX_UNIT_NS ? 0 : u <= HX_UNIT_UG ? 1 : 2;
 }
 
 /* a word that is a stem with its axis glued (accx, gyroz, wx, and the
@@ -159,11 +159,11 @@ int hx_name_fold_units(const char *text, char *out, size_t size)
     return fold_units(text, strlen(text), out, size);
 }
 
-/* a last word that is a unit, but none read (ug: a log in micro-g, deg/h):
+/* a last word that is a unit, but none read (ng: a log in nano-g, deg/h):
  * the name is then no other word's near miss, but one for its unit */
 static int unit_like(const char *w)
 {
-    static const char *const k_other[] = { "ug", "ng", "lsb", "counts", "rpm", "dph", NULL };
+    static const char *const k_other[] = { "ng", "lsb", "counts", "rpm", "dph", NULL };
     return strpbrk(w, "/^") != NULL || in_list(w, k_other);
 }
 
@@ -527,7 +527,7 @@ const char *hx_names_unit_problem(const hx_names_match_t *m, char *const *f, cha
 {
     /* the units read, as docs/log-format.md lists them */
     static const char *const k_read[3] = { "s, ms, us or \xc2\xb5s, ns",
-                                           "m/s^2 or m/s2 or m/s\xc2\xb2 or mps2, g, mg",
+                                           "m/s^2 or m/s2 or m/s\xc2\xb2 or mps2, g, mg, ug or \xc2\xb5g",
                                            "rad/s, deg/s or dps or \xc2\xb0/s, mdps or mdeg/s" };
     static const char *const k_what[3] = { "a time", "an acceleration", "a rate" };
     static const char *const k_unit_of[3] = { "a time unit", "an acceleration unit", "a rate unit" };

@@ -18,7 +18,7 @@ typedef enum {
 typedef enum {
     HX_UNIT_NONE = 0,
     HX_UNIT_S, HX_UNIT_MS, HX_UNIT_US, HX_UNIT_NS, /* time */
-    HX_UNIT_MPS2, HX_UNIT_G, HX_UNIT_MG,           /* acceleration */
+    HX_UNIT_MPS2, HX_UNIT_G, HX_UNIT_MG, HX_UNIT_UG, /* acceleration (ug: micro-g) */
     HX_UNIT_RPS, HX_UNIT_DPS, HX_UNIT_MDPS         /* rate */
 } hx_name_unit_t;
 

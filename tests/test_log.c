@@ -2812,8 +2812,11 @@ static void test_name_units_utf8(void **state)
         { "acc_x", HX_NAME_MATCH, 1, HX_UNIT_NONE, 0, "" },
         /* a unit not read: a near miss that says so */
         { "gx [\xc2\xb0/h]", HX_NAME_NEAR, 4, HX_UNIT_NONE, 1, "\xc2\xb0/h" },
-        { "ax_\xc2\xb5g", HX_NAME_NEAR, 1, HX_UNIT_NONE, 1, "\xc2\xb5g" },
-        { "ax_ug", HX_NAME_NEAR, 1, HX_UNIT_NONE, 1, "ug" },
+        { "ax_ng", HX_NAME_NEAR, 1, HX_UNIT_NONE, 1, "ng" },
+        /* micro-g, read since 2026-12-02 (a near miss "not read" before) */
+        { "ax_\xc2\xb5g", HX_NAME_MATCH, 1, HX_UNIT_UG, 0, "\xc2\xb5g" },
+        { "ax_ug", HX_NAME_MATCH, 1, HX_UNIT_UG, 0, "ug" },
+        { "AccY [\xce\xbcg]", HX_NAME_MATCH, 2, HX_UNIT_UG, 0, "\xce\xbcg" },
         { "acc_x [counts]", HX_NAME_NEAR, 1, HX_UNIT_NONE, 1, "counts" },
         { "gyro_z_rad/h", HX_NAME_NEAR, 6, HX_UNIT_NONE, 1, "rad/h" },
         { "time [\xc2\xb5h]", HX_NAME_NEAR, 0, HX_UNIT_NONE, 1, "\xc2\xb5h" },
@@ -2859,6 +2862,9 @@ static void test_units_option_utf8(void **state)
         { "time=\xce\xbcs,accel=m/s\xc2\xb2", 3, 1.0, 1.0 },
         { "gyro=\xc2\xb0/s", 9, 1.0, HX_DPS_RPS },
         { "gyro=m\xc2\xb0/s,accel=g", 9, HX_G_MPS2, HX_MDPS_RPS },
+        { "accel=\xc2\xb5g", 9, 9.80665e-6, 1.0 },
+        { "accel=\xce\xbcg", 9, 9.80665e-6, 1.0 },
+        { "accel=ug", 9, 9.80665e-6, 1.0 },
         { "gyro=deg/s", 9, 1.0, HX_DPS_RPS },
     };
     size_t i;
@@ -3055,7 +3061,7 @@ static void test_names_match(void **state)
         assert_int_equal(m.unit_col, 1);
         assert_string_equal(hx_names_unit_problem(&m, f, miss, sizeof miss),
                             "column 2 ('acc_x [s]') names a time unit, 's', not an acceleration's (m/s^2 or m/s2 or "
-                            "m/s\xc2\xb2 or mps2, g, mg)");
+                            "m/s\xc2\xb2 or mps2, g, mg, ug or \xc2\xb5g)");
         /* a key with a candidate: its near misses' units are no problem */
         snprintf(text, sizeof text, "t,ax,ay,az,gx,gy,gz,gx [counts]");
         n = split_header(text, f, 16);
@@ -3350,7 +3356,7 @@ static void test_csv_layout(void **state)
             { 0, "t", "'='" },                { 0, "t=", "empty" },
             { 1, "time", "'='" },             { 1, "time=min", "s, ms, us or ns" },
             { 1, "accel=G2", "m/s2" },        { 1, "gyro=rpm", "rad/s" },
-            { 1, "accel=ug", "mg" },          { 1, "gyro=udps", "mdps" },
+            { 1, "accel=ng", "ug" },          { 1, "gyro=udps", "mdps" },
             { 1, "speed=1", "unknown" },      { 1, "time=ms,time=ns", "twice" },
         };
         size_t i;

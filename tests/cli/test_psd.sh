@@ -89,6 +89,18 @@ expect_out "accelerometers: bandwidth 115.4 Hz -> $F Hz" "--round 2.5: the group
 expect_out_re "^  ax +[0-9.e+-]+ +115\.4 +230\.9 +$F\$" "--round 2.5: the table's fs_Hz column a multiple of the step"
 expect_exit 0 "tone, --round 0 (table)" "$H" psd "$T/tone.csv" --round 0
 expect_out_re "^  ax +[0-9.e+-]+ +115\.4 +230\.9 +230\.9\$" "--round 0: the table's fs_Hz column is 2 x the band, to 0.1 Hz"
+# a step too small to round anything: --round 1e-40 ran as "multiples of 9.99995e-41 Hz" (a float subnormal), 1e-50
+# and 5e-324 as "not rounded (--round 0)" while the JSON said round_hz 1e-50, exit 0 (a review, 2026-12-02). 0 or a step
+# of at least 0.001 Hz, else refused as any bad option value (exit 2, naming the value; docs/psd.md, "Command")
+for r in 1e-40 1e-50 5e-324 1e-300 0.0009 1e-6; do
+    expect_exit 2 "--round $r refused" "$H" psd "$T/tone.csv" --round $r
+    expect_err "^harness psd: error: --round '$r' is neither 0 (not rounded) nor a step in \[0.001, 1e+06\] Hz" \
+        "--round $r: the value and the range named"
+    [ ! -s "$T/out" ] && pass "--round $r: refused before the work" || fail "--round $r: the tables were printed"
+done
+expect_exit 2 "--round -1 refused" "$H" psd "$T/tone.csv" --round -1
+expect_exit 0 "--round 0.001, the smallest step" "$H" psd "$T/tone.csv" --round 0.001
+expect_out_re "^  lowest usable sampling frequency: 230\.893 Hz " "--round 0.001: the answer to the millihertz"
 # a threshold that is no whole percentage: --threshold 0.995 was printed to the percent, "holding 100 % of the total
 # power" and "100 % of the power" (the spectral-path review, 2026-12-01): the threshold is said as given
 expect_exit 0 "tone, --threshold 0.995" "$H" psd "$T/tone.csv" --threshold 0.995
