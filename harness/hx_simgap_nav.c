@@ -376,6 +376,35 @@ static int stances_counted(const navrun_t *r, const int64_t *t_ns, long a, long 
     return n;
 }
 
+/* The first update of the first stance, counted as stances_counted counts
+ * them, that begins at or after sample a (b when none does in [a, b)): the
+ * held-out part of a walk split at a (docs/simgap.md, section 2). A stance
+ * in progress at a, or a piece of it after a flicker of the detector,
+ * began in the fit segment: its first update, the observation the fit of
+ * the motion effects takes, and its NIS are the fit's. The held-out part
+ * began at the sample a until 2026-12-02, and such a stance was held out
+ * as well, with a mid-stance update as its "first" (a review). */
+static long stance_from(const navrun_t *r, const int64_t *t_ns, long a, long b, double min_swing_s)
+{
+    long k, last = -1;
+    for (k = a - 1; k >= 0; k--) {
+        if (r->flag[k] & FL_ZUPT) {
+            last = k;
+            break;
+        }
+    }
+    for (k = a; k < b; k++) {
+        if (!(r->flag[k] & FL_ZUPT)) {
+            continue;
+        }
+        if (last < 0 || (k - last > 3 && (double)(t_ns[k] - t_ns[last]) * 1e-9 >= min_swing_s)) {
+            return k;
+        }
+        last = k;
+    }
+    return b;
+}
+
 /* ------------------------------------------------------------ points */
 
 #define NAV_EMPTY_TWIN 2 /* sg_point_t.empty of a window in which a twin has no stance begin */
@@ -411,12 +440,14 @@ static double lnpos(double v)
 }
 
 /* Navigation points of samples [a, b) (rate fs), optionally with the drift
- * (truth: the true trajectory's positions, NULL for the real: closed walk). */
-static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long b, int nwin, int drift,
+ * (truth: the true trajectory's positions, NULL for the real: closed walk),
+ * over the stances from sample from (>= a: the held-out segment's first
+ * stance, stance_from) on; the windows span [a, b). */
+static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long from, long b, int nwin, int drift,
                        const double (*truth_p)[3], int with_pl, sg_plist_t *pl, double *vals)
 {
     int ns, i, w, c;
-    stance_t *st = stances_all(r, a, b, &ns);
+    stance_t *st = stances_all(r, from, b, &ns);
     long cnt = 0;
     double sf = 0.0, sa = 0.0, nu = 0.0, en = 0.0, es = 0.0, vr = 0.0, ax[3] = { 0, 0, 0 };
     double t0 = (double)(t_ns[a] - t_ns[0]) * 1e-9, t1 = (double)(t_ns[b - 1] - t_ns[0]) * 1e-9;
@@ -528,7 +559,61 @@ long sg_nav_stance_points(long n, const int64_t *t_ns, const unsigned char *zupt
     r.nis = (double *)nis;
     r.v = (double(*)[3])v;
     r.p = (double(*)[3])p;
-    cnt = nav_points(&r, t_ns, 0, n, nwin, drift, NULL, pl != NULL, pl, vals);
+    cnt = nav_points(&r, t_ns, 0, 0, n, nwin, drift, NULL, pl != NULL, pl, vals);
+    free(r.flag);
+    return cnt;
+}
+
+int sg_nav_held_out_stances(long n, const int64_t *t_ns, const unsigned char *zupt, long split, double min_swing_s,
+                            long *from)
+{
+    navrun_t r;
+    long k;
+    int cnt;
+    if (n < 1 || split < 0 || split > n || from == NULL) {
+        return -1;
+    }
+    memset(&r, 0, sizeof r);
+    r.n = n;
+    r.flag = (unsigned char *)calloc((size_t)n, 1);
+    if (r.flag == NULL) {
+        return -1;
+    }
+    for (k = 0; k < n; k++) {
+        r.flag[k] = zupt[k] ? FL_ZUPT : 0u;
+    }
+    *from = stance_from(&r, t_ns, split, n, min_swing_s);
+    cnt = stances_counted(&r, t_ns, *from, n, min_swing_s);
+    free(r.flag);
+    return cnt;
+}
+
+long sg_nav_held_out_points(long n, const int64_t *t_ns, const unsigned char *zupt, const double (*y)[3],
+                            const double (*S)[6], const double *nis, const double (*v)[3], const double (*p)[3],
+                            long split, double min_swing_s, int nwin, double *vals, sg_plist_t *pl)
+{
+    navrun_t r;
+    long k, cnt;
+    if (n < 1 || nwin < 0 || split < 0 || split >= n) {
+        return -1;
+    }
+    memset(&r, 0, sizeof r);
+    r.n = n;
+    r.flag = (unsigned char *)calloc((size_t)n, 1);
+    if (r.flag == NULL) {
+        return -1;
+    }
+    for (k = 0; k < n; k++) {
+        r.flag[k] = zupt[k] ? FL_ZUPT : 0u;
+    }
+    /* read only: nav_points does not write the run */
+    r.y = (double(*)[3])y;
+    r.S = (double(*)[6])S;
+    r.nis = (double *)nis;
+    r.v = (double(*)[3])v;
+    r.p = (double(*)[3])p;
+    cnt = nav_points(&r, t_ns, split, stance_from(&r, t_ns, split, n, min_swing_s), n, nwin, 0, NULL, pl != NULL,
+                     pl, vals);
     free(r.flag);
     return cnt;
 }
@@ -594,6 +679,8 @@ struct sg_nav {
     double *t_s;                 /* time of every sample since the first, s */
     double rate_hz;
     int nst[SG_NSEG];
+    long hold_from;              /* the held-out segment's first stance (stance_from; the log's end: none) */
+    double hold_from_s;          /* its time since the first sample, s */
     double white[SG_NCH];        /* baseline white densities, u/sqrt(Hz) */
     double ar1_tau[SG_NCH], ar1_sig[SG_NCH];
     int from_profile;
@@ -1051,8 +1138,11 @@ static int walk_points(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *
     int g, c;
     for (g = 0; g < SG_NSEG; g++) {
         long a = segs->start[g][0], b = a + segs->n[g][0], cnt;
-        cnt = nav_points(run, w->t_ns, a, b, g == SG_FULL ? NAV_WIN_FULL : NAV_WIN_SEG, nv->closed && g == SG_FULL,
-                         truth_p, with_pl, &pl[g], vals[g]);
+        /* the held-out stances: from the first that begins in the segment
+         * (in each run, the real's and every twin's, by its own updates) */
+        long from = g == SG_HOLD ? stance_from(run, w->t_ns, a, b, (double)nv->cfg.stance.min_swing_s) : a;
+        cnt = nav_points(run, w->t_ns, a, from, b, g == SG_FULL ? NAV_WIN_FULL : NAV_WIN_SEG,
+                         nv->closed && g == SG_FULL, truth_p, with_pl, &pl[g], vals[g]);
         if (cnt < 0) {
             return -1;
         }
@@ -1316,9 +1406,12 @@ static int family_params(int id, int ch[24], int k[24])
  * 0.1 %). Then the held-out test: with the parameters fixed, the held-out
  * objective changes by dQ = 2 b - a (a = |J theta|^2_W, b = (J theta)^T W r);
  * without the effect 2 b ~ N(0, 4 disp a), so z = b / sqrt(disp a). The
- * stances come from the whole walk (fr) and are split at t_split. */
+ * stances come from the whole walk (fr): fitted those before t_split, held
+ * out those from t_hold (the held-out segment's first stance, stance_from)
+ * on; a piece of the stance across the split between them (a run of
+ * updates after a flicker of the detector) is neither. */
 static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *rw, const firsts_t *fr, double t_split,
-                      const navcand_t *given, int id, navcand_t *out)
+                      double t_hold, const navcand_t *given, int id, navcand_t *out)
 {
     int ch[24], kk[24], np = family_params(id, ch, kk), p, i, a, b;
     double delta = id == FNAV_EFFECT_GSENS ? 1e-3 : 1e-2;
@@ -1339,7 +1432,10 @@ static int fit_family(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *r
     }
     for (i = 0; i < fr->n; i++) {
         mi[i] = match_swing(fr, i, base);
-        hold[i] = fr->t[i] >= t_split;
+        hold[i] = fr->t[i] >= t_hold;
+        if (fr->t[i] >= t_split && !hold[i]) {
+            mi[i] = -1;
+        }
         if (mi[i] >= 0) {
             double Si[3][3], q = 0.0;
             if (inv3(fr->S[i], Si) != 0) {
@@ -1728,8 +1824,14 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
         snprintf(err, err_size, "the navigation filter could not run on the log");
         return -1;
     }
+    /* the held-out stances begin with the first that begins in the held-out
+     * segment: a stance across the split is the fit's (stance_from) */
+    nv->hold_from = stance_from(&nv->real, log->t_ns, r->segs.start[SG_HOLD][0],
+                                r->segs.start[SG_HOLD][0] + r->segs.n[SG_HOLD][0], (double)nv->cfg.stance.min_swing_s);
+    nv->hold_from_s = nv->hold_from < (long)log->n ? (double)(log->t_ns[nv->hold_from] - log->t_ns[0]) * 1e-9
+                                                   : (double)NAN;
     for (g = 0; g < SG_NSEG; g++) {
-        nv->nst[g] = stances_counted(&nv->real, log->t_ns, r->segs.start[g][0],
+        nv->nst[g] = stances_counted(&nv->real, log->t_ns, g == SG_HOLD ? nv->hold_from : r->segs.start[g][0],
                                      r->segs.start[g][0] + r->segs.n[g][0], (double)nv->cfg.stance.min_swing_s);
     }
     /* a confident answer: at least 10 held-out stances, whose mean
@@ -1954,6 +2056,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
         firsts_t *fr = (firsts_t *)calloc(1, sizeof *fr);
         const double zacc = gsl_cdf_ugaussian_Qinv(r->opts.alpha / (double)(3 + 2 * SG_NCH));
         const double t_split = (double)(rw.t_ns[r->segs.start[SG_HOLD][0]] - rw.t_ns[0]) * 1e-9;
+        const double t_hold = nv->hold_from < rw.n ? nv->hold_from_s : (double)INFINITY;
         navstep_t *st = &nv->step[0];
         static const int fams[] = { FNAV_EFFECT_SCALE, FNAV_EFFECT_MISALIGN, FNAV_EFFECT_GSENS };
         int f, i, order[NAV_MAX_CAND], nord = 0;
@@ -1978,7 +2081,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                 fprintf(stderr, "simgap: fitting %s on the fit stances...\n",
                         fnav_imuerr_effect_info((fnav_effect_id_t)fams[f])->name);
             }
-            if (fit_family(nv, &r->segs, &rw, fr, t_split, NULL, fams[f], &cd) == 0 && cd.npar > 0) {
+            if (fit_family(nv, &r->segs, &rw, fr, t_split, t_hold, NULL, fams[f], &cd) == 0 && cd.npar > 0) {
                 st->cand[st->ncand++] = cd;
             }
         }
@@ -2128,7 +2231,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                 if (used || nv->nsel > 1) {
                     continue;
                 }
-                if (fit_family(nv, &r->segs, &rw, fr, t_split, &nv->sel[0], fams[f], &cd) == 0 && cd.npar > 0) {
+                if (fit_family(nv, &r->segs, &rw, fr, t_split, t_hold, &nv->sel[0], fams[f], &cd) == 0 && cd.npar > 0) {
                     s2->cand[s2->ncand] = cd;
                     if (cd.dQ >= 10.83 && cd.z_hold > zacc && (bi < 0 || cd.z_hold > s2->cand[bi].z_hold)) {
                         bi = s2->ncand;
@@ -2258,14 +2361,19 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
     int c, i, j;
     size_t k;
     char b[256];
-    (void)r;
-    /* each segment counts the stances that begin in it or run into it, so
-     * a stance across the split is in both ("48 stances (fit 33, held out
-     * 16)" read as a stance lost: a user review) */
-    fprintf(f, "navigation: %d stance%s (fit %d, held out %d%s); twin noise %s:", nv->nst[SG_FULL],
-            nv->nst[SG_FULL] == 1 ? "" : "s", nv->nst[SG_FIT], nv->nst[SG_HOLD],
-            nv->nst[SG_FIT] + nv->nst[SG_HOLD] > nv->nst[SG_FULL] ? "; the stance across the split in both" : "",
-            nv->from_profile ? "from the profile" : "from the stances (white)");
+    /* the held-out stances begin with the first that begins at or after the
+     * split: a stance across it is the fit's, and fit + held out = all.
+     * Until 2026-12-02 it was in both ("the stance across the split in
+     * both") */
+    fprintf(f, "navigation: %d stance%s (fit %d, held out %d", nv->nst[SG_FULL], nv->nst[SG_FULL] == 1 ? "" : "s",
+            nv->nst[SG_FIT], nv->nst[SG_HOLD]);
+    if (nv->hold_from_s == nv->hold_from_s) {
+        fprintf(f, " from t %.1f s, the first stance to begin at or after the split at %.1f s", nv->hold_from_s,
+                r->seg_start_s[SG_HOLD][0]);
+    } else {
+        fprintf(f, ": no stance begins at or after the split at %.1f s", r->seg_start_s[SG_HOLD][0]);
+    }
+    fprintf(f, "); twin noise %s:", nv->from_profile ? "from the profile" : "from the stances (white)");
     for (c = 0; c < SG_NCH; c++) {
         fprintf(f, " %s %.3g", sg_channel_name(c), nv->white[c]);
     }
@@ -2504,6 +2612,7 @@ cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r)
     cJSON_AddNumberToObject(o, "stances_full", nv->nst[SG_FULL]);
     cJSON_AddNumberToObject(o, "stances_fit", nv->nst[SG_FIT]);
     cJSON_AddNumberToObject(o, "stances_held_out", nv->nst[SG_HOLD]);
+    add_num(o, "held_out_from_s", nv->hold_from_s);
     cJSON_AddStringToObject(o, "twin_noise", nv->from_profile ? "profile" : "stances");
     cJSON_AddStringToObject(o, "twin_sampling", nv->inst ? "instantaneous" : "interval-mean");
     add_num(o, "G_fit_interval_mean", nv->G_fit_conv[0]);

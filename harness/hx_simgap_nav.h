@@ -132,4 +132,29 @@ long sg_nav_stance_points(long n, const int64_t *t_ns, const unsigned char *zupt
  */
 long sg_nav_stance_starts(long n, const int64_t *t_ns, const unsigned char *zupt, double *t, long max);
 
+/**
+ * The held-out stances of a walk split at sample split (docs/simgap.md,
+ * section 2): stances counted as the core's stride segmentation counts
+ * them (runs of updates with gaps of at most 2 samples, runs less than
+ * min_swing_s apart one stance), held out those that begin at or after
+ * split. A stance in progress at split began in the fit segment: it is the
+ * fit's, not held out.
+ * @param from  the first update of the first held-out stance (out; n when
+ *              there is none)
+ * @return the number of held-out stances, -1 on bad arguments.
+ */
+int sg_nav_held_out_stances(long n, const int64_t *t_ns, const unsigned char *zupt, long split, double min_swing_s,
+                            long *from);
+
+/**
+ * The navigation points of the held-out segment [split, n) of a walk as
+ * the diagnosis computes them: those of sg_nav_stance_points (no drift)
+ * over the stances from the first held-out one (sg_nav_held_out_stances)
+ * on, the windows spanning the segment from split.
+ * @return the number of points, -1 on bad arguments or memory failure.
+ */
+long sg_nav_held_out_points(long n, const int64_t *t_ns, const unsigned char *zupt, const double (*y)[3],
+                            const double (*S)[6], const double *nis, const double (*v)[3], const double (*p)[3],
+                            long split, double min_swing_s, int nwin, double *vals, sg_plist_t *pl);
+
 #endif /* HX_SIMGAP_NAV_H */

@@ -425,6 +425,67 @@ static void test_stance_starts_many(void **state)
     FNAV_ASSERT_CLOSE(ts[NS - 1], 0.01 * (NS - 1) * GAP, 1e-9, 0.0);
 }
 
+/* The held-out part of a walk split at a sample (docs/simgap.md, section
+ * 2) begins with the first stance that begins at or after the split: a
+ * stance in progress at the split began in the fit segment and is the
+ * fit's. 180 samples at 100 Hz; runs of updates at 10-20, 50-65, 95-105,
+ * 110-112 (a piece of the stance 95-105: 0.05 s after it, less than the
+ * shortest swing of 0.25 s) and 145-155; first-update NIS 2, 3, 5, 1, 7
+ * and 0.5 at sample 60 (mid-stance). Split at 60, inside the second
+ * stance: held out from 95, two stances (the third with its piece, the
+ * fourth), mean first-update NIS of the runs (5 + 1 + 7) / 3. Until
+ * 2026-12-02 the held-out part began at the split sample: the stance
+ * 50-65 was held out too (three stances), with its mid-stance update at
+ * 60 as its "first" (mean (0.5 + 5 + 1 + 7) / 4). A split in the gap
+ * before the piece (107) holds out from 145; one at a stance's first
+ * update (95) from it; one after the last stance none. */
+static void test_held_out_whole_stances(void **state)
+{
+    enum { N = 180 };
+    static int64_t t[N];
+    static unsigned char zupt[N];
+    static double y[N][3], S[N][6], nis[N], v[N][3], p[N][3];
+    static const int run[5][2] = { { 10, 20 }, { 50, 65 }, { 95, 105 }, { 110, 112 }, { 145, 155 } };
+    static const double first[5] = { 2.0, 3.0, 5.0, 1.0, 7.0 };
+    double vals[16];
+    sg_plist_t pl;
+    long from = -1, cnt;
+    int i, k;
+    (void)state;
+    memset(&pl, 0, sizeof pl);
+    for (k = 0; k < N; k++) {
+        t[k] = (int64_t)k * 10000000;
+        S[k][0] = S[k][3] = S[k][5] = 1.0;
+    }
+    for (i = 0; i < 5; i++) {
+        for (k = run[i][0]; k <= run[i][1]; k++) {
+            zupt[k] = 1;
+        }
+        nis[run[i][0]] = first[i];
+    }
+    nis[60] = 0.5;
+    assert_int_equal(sg_nav_held_out_stances(N, t, zupt, 60, 0.25, &from), 2);
+    assert_int_equal(from, 95);
+    assert_int_equal(sg_nav_held_out_stances(N, t, zupt, 107, 0.25, &from), 1);
+    assert_int_equal(from, 145);
+    assert_int_equal(sg_nav_held_out_stances(N, t, zupt, 95, 0.25, &from), 2);
+    assert_int_equal(from, 95);
+    assert_int_equal(sg_nav_held_out_stances(N, t, zupt, 0, 0.25, &from), 4);
+    assert_int_equal(from, 10);
+    assert_int_equal(sg_nav_held_out_stances(N, t, zupt, 170, 0.25, &from), 0);
+    assert_int_equal(from, N);
+    cnt = sg_nav_held_out_points(N, t, zupt, (const double(*)[3])y, (const double(*)[6])S, nis,
+                                 (const double(*)[3])v, (const double(*)[3])p, 60, 0.25, 1, vals, &pl);
+    assert_int_equal(cnt, 8);
+    FNAV_ASSERT_CLOSE(vals[0], log(13.0 / 3.0), 1e-12, 0.0);
+    /* the window spans the segment from the split sample: 0.6-1.79 s */
+    assert_int_equal(pl.p[7].kind, SG_NAV_WIN);
+    FNAV_ASSERT_CLOSE(pl.p[7].x_lo, 0.6, 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(pl.p[7].x_hi, 1.79, 1e-12, 0.0);
+    FNAV_ASSERT_CLOSE(vals[7], log(13.0 / 3.0), 1e-12, 0.0);
+    sg_plist_free(&pl);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -438,6 +499,7 @@ int main(void)
         cmocka_unit_test(test_stance_points_last_sample),
         cmocka_unit_test(test_stance_points_many),
         cmocka_unit_test(test_stance_starts_many),
+        cmocka_unit_test(test_held_out_whole_stances),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
