@@ -152,10 +152,24 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
     if (!(nl > FNAV_R(0.0)) || !fnav_isfinite(lambda / nl) || !(cfg->beta - cfg->alpha * cfg->alpha >= FNAV_R(0.0))) {
         return FNAV_E_CONFIG;
     }
-    for (b = 0; b < sizeof *f; b++) {
-        p[b] = 0;
+    {
+        /* every byte to 0 but the configuration's when cfg is the filter's
+         * own, &f->cfg (a restart with it, as fnav_nav_init allows): it was
+         * zeroed before it was copied, and the filter ran with gravity,
+         * the ZUPT's sigma and alpha 0, or with the lever hit the assert
+         * below (the core review, 2026-12-02; test_ukf
+         * test_reinit_own_config) */
+        const size_t c0 = offsetof(fnav_ukf_t, cfg), c1 = c0 + sizeof f->cfg;
+        const int own = cfg == &f->cfg;
+        for (b = 0; b < sizeof *f; b++) {
+            if (!own || b < c0 || b >= c1) {
+                p[b] = 0;
+            }
+        }
+        if (!own) {
+            f->cfg = *cfg;
+        }
     }
-    f->cfg = *cfg;
     f->n_act = 0;
     for (i = 0; i < N; i++) {
         f->pos[i] = -1;

@@ -233,7 +233,10 @@ typedef struct {
 
 /**
  * Initialise (validates the configuration; the filter waits for
- * fnav_ukf_start()).
+ * fnav_ukf_start()), or start over: every earlier state and counter is
+ * dropped. *cfg is copied; it may be the filter's own, &f->cfg, to start
+ * over with the same configuration. On a refused configuration *f is left
+ * as it was.
  * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG on a bad value
  *         (negative or non-finite noise, or a noise density or lever
  *         random walk whose square is not finite (float32: above about
