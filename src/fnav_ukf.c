@@ -234,6 +234,12 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     if (f == NULL || sd == NULL) {
         return FNAV_E_ARG;
     }
+    if (f->n_act == 0) {
+        /* never initialised (static storage; init sets 9 to 18 states):
+         * it ran with a zero configuration, no gravity and no states (the
+         * core review, 2026-12-02; test_ukf test_start_not_initialised) */
+        return FNAV_E_STATE;
+    }
     if (!fnav_vec3_isfinite(bg_rps) || !fnav_vec3_isfinite(ba_mps2) || !fnav_isfinite(q_nb.q[0]) ||
         !fnav_isfinite(q_nb.q[1]) || !fnav_isfinite(q_nb.q[2]) || !fnav_isfinite(q_nb.q[3])) {
         return FNAV_E_NANINF;

@@ -2440,6 +2440,30 @@ static void test_reinit_own_config(void **state)
     }
 }
 
+/* A filter never initialised (static storage: every byte 0) is refused
+ * at the start, and so every later call: FNAV_E_STATE, nothing written.
+ * Until 2026-12-02 (the core review) fnav_ukf_start said FNAV_OK on it and
+ * the filter then predicted with its zero configuration (no gravity, no
+ * states: FNAV_OK, the velocity falling at the specific force's 9.8 m/s^2)
+ * and answered each ZUPT FNAV_E_DECOMP. */
+static void test_start_not_initialised(void **state)
+{
+    static fnav_ukf_t f, zero;
+    fnav_ukf_init_sd_t sd = sd_default();
+    fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
+    (void)state;
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_E_STATE);
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fz, FNAV_R(0.005)), FNAV_E_STATE);
+    assert_int_equal(fnav_ukf_zupt(&f, fnav_vec3_zero()), FNAV_E_STATE);
+    assert_int_equal(fnav_ukf_zaru(&f, fnav_vec3_zero()), FNAV_E_STATE);
+    assert_int_equal(fnav_ukf_settle_start(&f), FNAV_E_STATE);
+    assert_memory_equal(&f, &zero, sizeof f);
+    /* once initialised it starts */
+    assert_int_equal(fnav_ukf_init(&f, &fnav_ukf_config_default), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fz, FNAV_R(0.005)), FNAV_OK);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -2478,6 +2502,7 @@ int main(void)
         cmocka_unit_test(test_settle_idle_identical),
         cmocka_unit_test(test_settle_recovery),
         cmocka_unit_test(test_reinit_own_config),
+        cmocka_unit_test(test_start_not_initialised),
     };
     return cmocka_run_group_tests_name("ukf", tests, NULL, NULL);
 }

@@ -282,8 +282,10 @@ fnav_real_t fnav_ukf_att_sd_max(const fnav_ukf_config_t *cfg);
  *         positive or whose square is not, an attitude sd whose sigma
  *         points pass FNAV_UKF_ATT_GRP_MAX: sd gamma above it, see
  *         fnav_ukf_att_sd_max(); the zero quaternion),
- *         FNAV_E_NANINF on non-finite values; the filter unchanged on a
- *         failure.
+ *         FNAV_E_NANINF on non-finite values, FNAV_E_STATE for a filter
+ *         not initialised (all bytes 0, as in static storage; an automatic
+ *         object never initialised holds whatever was on the stack: not
+ *         detectable); the filter unchanged on a failure.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps,
                                               fnav_vec3_t ba_mps2, const fnav_ukf_init_sd_t *sd);
