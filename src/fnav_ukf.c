@@ -1313,7 +1313,13 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
     si[1][2] = s[0][2] * s[1][0] - s[0][0] * s[1][2];
     si[2][2] = s[0][0] * s[1][1] - s[0][1] * s[1][0];
     det = s[0][0] * si[0][0] + s[0][1] * si[0][1] + s[0][2] * si[0][2];
-    if (!(det > FNAV_R(0.0)) || !fnav_isfinite(det) || !(si[0][0] > FNAV_R(0.0)) || !(si[2][2] > FNAV_R(0.0))) {
+    /* positive definite by Sylvester's criterion: the leading minors s00,
+     * s00 s11 - s01^2 (= si[2][2]) and det positive. Without s00 > 0 an
+     * indefinite S with two negative eigenvalues passed (-1 0 2; 0 -1 0;
+     * 2 0 -1: det 3, minor 1) and was inverted (the core review,
+     * 2026-12-02; test_ukf test_zupt_indefinite_s) */
+    if (!(det > FNAV_R(0.0)) || !fnav_isfinite(det) || !(s[0][0] > FNAV_R(0.0)) || !(si[0][0] > FNAV_R(0.0)) ||
+        !(si[2][2] > FNAV_R(0.0))) {
         f->health.update_reject++;
         if (so) {
             settle_drop(f); /* the next update goes without it */

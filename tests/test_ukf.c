@@ -2464,6 +2464,44 @@ static void test_start_not_initialised(void **state)
     assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fz, FNAV_R(0.005)), FNAV_OK);
 }
 
+/* An innovation covariance that is not positive definite skips the update
+ * (fnav_ukf.h: FNAV_E_DECOMP, counted in health.update_reject, nothing
+ * changed), also when it is indefinite with a positive determinant and a
+ * positive leading 2x2 minor: S = [-1 0 2; 0 -1 0; 2 0 -1] (eigenvalues
+ * -3, -1, 1; det 3, minor 1). Until 2026-12-02 (the core review) the test
+ * of S left out its first pivot, S_00 > 0 (Sylvester's criterion needs
+ * it with the minor and the determinant), and this S was inverted and
+ * used. Such a P (a velocity variance below -r2) is not one the filter
+ * makes: it is set here. */
+static void test_zupt_indefinite_s(void **state)
+{
+    static fnav_ukf_t f, g;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const fnav_real_t r2 = c.zupt_sigma_mps * c.zupt_sigma_mps;
+    const fnav_real_t sv[3][3] = { { FNAV_R(-1.0), FNAV_R(0.0), FNAV_R(2.0) },
+                                   { FNAV_R(0.0), FNAV_R(-1.0), FNAV_R(0.0) },
+                                   { FNAV_R(2.0), FNAV_R(0.0), FNAV_R(-1.0) } };
+    int i, j;
+    (void)state;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    for (i = 0; i < 3; i++) {
+        for (j = i; j < 3; j++) {
+            fnav_ukf_set_cov(&f, FNAV_UKF_V + i, FNAV_UKF_V + j, sv[i][j] - (i == j ? r2 : FNAV_R(0.0)));
+        }
+    }
+    f.vel_mps = fnav_vec3(FNAV_R(0.1), FNAV_R(0.0), FNAV_R(0.0));
+    g = f;
+    assert_int_equal(fnav_ukf_zupt(&f, fnav_vec3_zero()), FNAV_E_DECOMP);
+    assert_int_equal(f.health.update_reject, 1u);
+    assert_int_equal(f.health.zupts, 0u);
+    assert_memory_equal(f.P, g.P, sizeof f.P);
+    assert_memory_equal(&f.vel_mps, &g.vel_mps, sizeof f.vel_mps);
+    assert_memory_equal(&f.q_nb, &g.q_nb, sizeof f.q_nb);
+    assert_memory_equal(&f.pos_m, &g.pos_m, sizeof f.pos_m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -2503,6 +2541,7 @@ int main(void)
         cmocka_unit_test(test_settle_recovery),
         cmocka_unit_test(test_reinit_own_config),
         cmocka_unit_test(test_start_not_initialised),
+        cmocka_unit_test(test_zupt_indefinite_s),
     };
     return cmocka_run_group_tests_name("ukf", tests, NULL, NULL);
 }
