@@ -96,7 +96,8 @@
  * recovery: add jitter (1e-6 of each variance) and retry; if that also fails,
  * reset P to its own diagonal (cross-covariances dropped), count it, and
  * return FNAV_E_DECOMP after completing the step with the reset covariance.
- * Non-finite inputs return FNAV_E_NANINF and leave the filter unchanged; a
+ * Non-finite inputs return FNAV_E_NANINF and leave the filter unchanged but
+ * for its health.nan_inputs counter; a
  * step that would produce a non-finite state is undone (FNAV_E_DIVERGED).
  * After every prediction and update a guard keeps the diagonal finite,
  * positive and below a generous maximum per state kind (standard deviation
