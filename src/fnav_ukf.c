@@ -152,10 +152,24 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
     if (!(nl > FNAV_R(0.0)) || !fnav_isfinite(lambda / nl) || !(cfg->beta - cfg->alpha * cfg->alpha >= FNAV_R(0.0))) {
         return FNAV_E_CONFIG;
     }
-    for (b = 0; b < sizeof *f; b++) {
-        p[b] = 0;
+    {
+        /* every byte to 0 but the configuration's when cfg is the filter's
+         * own, &f->cfg (a restart with it, as fnav_nav_init allows): it was
+         * zeroed before it was copied, and the filter ran with gravity,
+         * the ZUPT's sigma and alpha 0, or with the lever hit the assert
+         * below (the core review, 2026-12-02; test_ukf
+         * test_reinit_own_config) */
+        const size_t c0 = offsetof(fnav_ukf_t, cfg), c1 = c0 + sizeof f->cfg;
+        const int own = cfg == &f->cfg;
+        for (b = 0; b < sizeof *f; b++) {
+            if (!own || b < c0 || b >= c1) {
+                p[b] = 0;
+            }
+        }
+        if (!own) {
+            f->cfg = *cfg;
+        }
     }
-    f->cfg = *cfg;
     f->n_act = 0;
     for (i = 0; i < N; i++) {
         f->pos[i] = -1;
@@ -219,6 +233,12 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     int i, j;
     if (f == NULL || sd == NULL) {
         return FNAV_E_ARG;
+    }
+    if (f->n_act == 0) {
+        /* never initialised (static storage; init sets 9 to 18 states):
+         * it ran with a zero configuration, no gravity and no states (the
+         * core review, 2026-12-02; test_ukf test_start_not_initialised) */
+        return FNAV_E_STATE;
     }
     if (!fnav_vec3_isfinite(bg_rps) || !fnav_vec3_isfinite(ba_mps2) || !fnav_isfinite(q_nb.q[0]) ||
         !fnav_isfinite(q_nb.q[1]) || !fnav_isfinite(q_nb.q[2]) || !fnav_isfinite(q_nb.q[3])) {
@@ -1293,7 +1313,13 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
     si[1][2] = s[0][2] * s[1][0] - s[0][0] * s[1][2];
     si[2][2] = s[0][0] * s[1][1] - s[0][1] * s[1][0];
     det = s[0][0] * si[0][0] + s[0][1] * si[0][1] + s[0][2] * si[0][2];
-    if (!(det > FNAV_R(0.0)) || !fnav_isfinite(det) || !(si[0][0] > FNAV_R(0.0)) || !(si[2][2] > FNAV_R(0.0))) {
+    /* positive definite by Sylvester's criterion: the leading minors s00,
+     * s00 s11 - s01^2 (= si[2][2]) and det positive. Without s00 > 0 an
+     * indefinite S with two negative eigenvalues passed (-1 0 2; 0 -1 0;
+     * 2 0 -1: det 3, minor 1) and was inverted (the core review,
+     * 2026-12-02; test_ukf test_zupt_indefinite_s) */
+    if (!(det > FNAV_R(0.0)) || !fnav_isfinite(det) || !(s[0][0] > FNAV_R(0.0)) || !(si[0][0] > FNAV_R(0.0)) ||
+        !(si[2][2] > FNAV_R(0.0))) {
         f->health.update_reject++;
         if (so) {
             settle_drop(f); /* the next update goes without it */

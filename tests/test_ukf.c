@@ -2427,6 +2427,122 @@ static void test_settle_recovery(void **state)
     assert_int_equal(fnav_ukf_zupt(&f, fnav_vec3_zero()), FNAV_OK);
 }
 
+/* fnav_ukf_init with the filter's own configuration, &f.cfg (a restart
+ * with it, as fnav_nav_init allows with &nav.cfg): the configuration is
+ * kept and the filter is the one a fresh init gives. Until 2026-12-02 (the
+ * core review) init zeroed the object, its configuration with it, before
+ * copying *cfg: without the lever it returned FNAV_OK with gravity, the
+ * ZUPT's sigma and alpha 0; with the lever (18 states counted before the
+ * zeroing, 15 packed after it) it hit FNAV_ASSERT. */
+static void test_reinit_own_config(void **state)
+{
+    static fnav_ukf_t f, g;
+    fnav_ukf_init_sd_t sd = sd_default();
+    fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
+    int lever, k;
+    (void)state;
+    for (lever = 0; lever < 2; lever++) {
+        fnav_ukf_config_t c = fnav_ukf_config_default;
+        c.lever = lever;
+        c.zupt_sigma_mps = FNAV_R(0.02);
+        assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+        assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+        assert_int_equal(fnav_ukf_predict(&f, fnav_vec3(FNAV_R(0.1), FNAV_R(0.0), FNAV_R(0.0)), fz, FNAV_R(0.005)),
+                         FNAV_OK);
+        /* the restart */
+        assert_int_equal(fnav_ukf_init(&f, &f.cfg), FNAV_OK);
+        assert_int_equal(f.n_act, lever ? 18 : 15);
+        assert_int_equal(f.started, 0);
+        assert_int_equal(f.health.predicts, 0u);
+        assert_true(f.cfg.strapdown.gravity_mps2 == c.strapdown.gravity_mps2);
+        assert_true(f.cfg.zupt_sigma_mps == FNAV_R(0.02));
+        assert_true(f.cfg.alpha == c.alpha && f.cfg.beta == c.beta && f.cfg.kappa == c.kappa);
+        assert_int_equal(f.cfg.lever, lever);
+        assert_int_equal(f.cfg.bias_model, c.bias_model);
+        /* and it runs as a fresh filter does, bit for bit */
+        assert_int_equal(fnav_ukf_init(&g, &c), FNAV_OK);
+        assert_true(f.gamma == g.gamma && f.w0m == g.w0m && f.w0c == g.w0c && f.wi == g.wi);
+        assert_memory_equal(f.pos, g.pos, sizeof f.pos);
+        assert_memory_equal(f.act, g.act, sizeof f.act);
+        assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+        assert_int_equal(fnav_ukf_start(&g, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+        for (k = 0; k < 50; k++) {
+            fnav_vec3_t w = fnav_vec3(FNAV_R(0.1), FNAV_R(-0.05), FNAV_R(0.02));
+            assert_int_equal(fnav_ukf_predict(&f, w, fz, FNAV_R(0.005)), FNAV_OK);
+            assert_int_equal(fnav_ukf_predict(&g, w, fz, FNAV_R(0.005)), FNAV_OK);
+            assert_int_equal(fnav_ukf_zupt(&f, w), FNAV_OK);
+            assert_int_equal(fnav_ukf_zupt(&g, w), FNAV_OK);
+        }
+        assert_memory_equal(f.P, g.P, sizeof f.P);
+        assert_memory_equal(&f.q_nb, &g.q_nb, sizeof f.q_nb);
+        assert_memory_equal(&f.vel_mps, &g.vel_mps, sizeof f.vel_mps);
+        assert_memory_equal(&f.pos_m, &g.pos_m, sizeof f.pos_m);
+        assert_memory_equal(&f.lever_m, &g.lever_m, sizeof f.lever_m);
+    }
+}
+
+/* A filter never initialised (static storage: every byte 0) is refused
+ * at the start, and so every later call: FNAV_E_STATE, nothing written.
+ * Until 2026-12-02 (the core review) fnav_ukf_start said FNAV_OK on it and
+ * the filter then predicted with its zero configuration (no gravity, no
+ * states: FNAV_OK, the velocity falling at the specific force's 9.8 m/s^2)
+ * and answered each ZUPT FNAV_E_DECOMP. */
+static void test_start_not_initialised(void **state)
+{
+    static fnav_ukf_t f, zero;
+    fnav_ukf_init_sd_t sd = sd_default();
+    fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
+    (void)state;
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_E_STATE);
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fz, FNAV_R(0.005)), FNAV_E_STATE);
+    assert_int_equal(fnav_ukf_zupt(&f, fnav_vec3_zero()), FNAV_E_STATE);
+    assert_int_equal(fnav_ukf_zaru(&f, fnav_vec3_zero()), FNAV_E_STATE);
+    assert_int_equal(fnav_ukf_settle_start(&f), FNAV_E_STATE);
+    assert_memory_equal(&f, &zero, sizeof f);
+    /* once initialised it starts */
+    assert_int_equal(fnav_ukf_init(&f, &fnav_ukf_config_default), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    assert_int_equal(fnav_ukf_predict(&f, fnav_vec3_zero(), fz, FNAV_R(0.005)), FNAV_OK);
+}
+
+/* An innovation covariance that is not positive definite skips the update
+ * (fnav_ukf.h: FNAV_E_DECOMP, counted in health.update_reject, nothing
+ * changed), also when it is indefinite with a positive determinant and a
+ * positive leading 2x2 minor: S = [-1 0 2; 0 -1 0; 2 0 -1] (eigenvalues
+ * -3, -1, 1; det 3, minor 1). Until 2026-12-02 (the core review) the test
+ * of S left out its first pivot, S_00 > 0 (Sylvester's criterion needs
+ * it with the minor and the determinant), and this S was inverted and
+ * used. Such a P (a velocity variance below -r2) is not one the filter
+ * makes: it is set here. */
+static void test_zupt_indefinite_s(void **state)
+{
+    static fnav_ukf_t f, g;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    fnav_ukf_init_sd_t sd = sd_default();
+    const fnav_real_t r2 = c.zupt_sigma_mps * c.zupt_sigma_mps;
+    const fnav_real_t sv[3][3] = { { FNAV_R(-1.0), FNAV_R(0.0), FNAV_R(2.0) },
+                                   { FNAV_R(0.0), FNAV_R(-1.0), FNAV_R(0.0) },
+                                   { FNAV_R(2.0), FNAV_R(0.0), FNAV_R(-1.0) } };
+    int i, j;
+    (void)state;
+    assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
+    assert_int_equal(fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd), FNAV_OK);
+    for (i = 0; i < 3; i++) {
+        for (j = i; j < 3; j++) {
+            fnav_ukf_set_cov(&f, FNAV_UKF_V + i, FNAV_UKF_V + j, sv[i][j] - (i == j ? r2 : FNAV_R(0.0)));
+        }
+    }
+    f.vel_mps = fnav_vec3(FNAV_R(0.1), FNAV_R(0.0), FNAV_R(0.0));
+    g = f;
+    assert_int_equal(fnav_ukf_zupt(&f, fnav_vec3_zero()), FNAV_E_DECOMP);
+    assert_int_equal(f.health.update_reject, 1u);
+    assert_int_equal(f.health.zupts, 0u);
+    assert_memory_equal(f.P, g.P, sizeof f.P);
+    assert_memory_equal(&f.vel_mps, &g.vel_mps, sizeof f.vel_mps);
+    assert_memory_equal(&f.q_nb, &g.q_nb, sizeof f.q_nb);
+    assert_memory_equal(&f.pos_m, &g.pos_m, sizeof f.pos_m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -2464,6 +2580,9 @@ int main(void)
         cmocka_unit_test(test_settle_decay),
         cmocka_unit_test(test_settle_idle_identical),
         cmocka_unit_test(test_settle_recovery),
+        cmocka_unit_test(test_reinit_own_config),
+        cmocka_unit_test(test_start_not_initialised),
+        cmocka_unit_test(test_zupt_indefinite_s),
     };
     return cmocka_run_group_tests_name("ukf", tests, NULL, NULL);
 }

@@ -96,7 +96,8 @@
  * recovery: add jitter (1e-6 of each variance) and retry; if that also fails,
  * reset P to its own diagonal (cross-covariances dropped), count it, and
  * return FNAV_E_DECOMP after completing the step with the reset covariance.
- * Non-finite inputs return FNAV_E_NANINF and leave the filter unchanged; a
+ * Non-finite inputs return FNAV_E_NANINF and leave the filter unchanged but
+ * for its health.nan_inputs counter; a
  * step that would produce a non-finite state is undone (FNAV_E_DIVERGED).
  * After every prediction and update a guard keeps the diagonal finite,
  * positive and below a generous maximum per state kind (standard deviation
@@ -233,7 +234,10 @@ typedef struct {
 
 /**
  * Initialise (validates the configuration; the filter waits for
- * fnav_ukf_start()).
+ * fnav_ukf_start()), or start over: every earlier state and counter is
+ * dropped. *cfg is copied; it may be the filter's own, &f->cfg, to start
+ * over with the same configuration. On a refused configuration *f is left
+ * as it was.
  * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG on a bad value
  *         (negative or non-finite noise, or a noise density or lever
  *         random walk whose square is not finite (float32: above about
@@ -279,8 +283,10 @@ fnav_real_t fnav_ukf_att_sd_max(const fnav_ukf_config_t *cfg);
  *         positive or whose square is not, an attitude sd whose sigma
  *         points pass FNAV_UKF_ATT_GRP_MAX: sd gamma above it, see
  *         fnav_ukf_att_sd_max(); the zero quaternion),
- *         FNAV_E_NANINF on non-finite values; the filter unchanged on a
- *         failure.
+ *         FNAV_E_NANINF on non-finite values, FNAV_E_STATE for a filter
+ *         not initialised (all bytes 0, as in static storage; an automatic
+ *         object never initialised holds whatever was on the stack: not
+ *         detectable); the filter unchanged on a failure.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps,
                                               fnav_vec3_t ba_mps2, const fnav_ukf_init_sd_t *sd);
