@@ -1033,6 +1033,56 @@ static void test_sample_count_end(void **state)
     for (i = 0; i < 5; i++) {
         assert_true(fnav_isfinite(out[i]) && out[i] >= FNAV_R(0.0));
     }
+    /* The value: the sums hold the 40 + 20 samples pushed (53 segments of
+     * the period-5 input; the second loop's i % 5 continues the first's),
+     * divided by the count moved to its end. Reference: the 53 periodograms
+     * in double (constant detrend, periodic Hamming, density at 1 Hz, a
+     * direct DFT), times 53 / (2^32 - 8). Tolerance: bin_tolerances' bound
+     * of the 53-segment average (the same arithmetic), scaled the same way,
+     * plus u of the bin for the count's conversion to fnav_real_t (2^32 - 8
+     * is not a float; a double holds it). */
+    {
+        double rec[60], ref[5], tol[5], worst = 0.0, wtol = 0.0;
+        const double cnt = (double)(UINT32_MAX - c.nfft + 1u), tp = 6.283185307179586476925;
+        bound_in_t b;
+        uint32_t j, k, n;
+        for (j = 0; j < 60u; j++) {
+            rec[j] = 0.1 * (double)(j % 5u);
+        }
+        for (k = 0; k < 5u; k++) {
+            double s2 = 0.0, acc = 0.0;
+            for (j = 0; j + 8u <= 60u; j++) {
+                double mean = 0.0, re = 0.0, im = 0.0;
+                for (n = 0; n < 8u; n++) {
+                    mean += rec[j + n] / 8.0;
+                }
+                for (n = 0; n < 8u; n++) {
+                    const double wn = 0.54 - 0.46 * cos(tp * n / 8.0);
+                    re += wn * (rec[j + n] - mean) * cos(tp * (double)(k * n) / 8.0);
+                    im -= wn * (rec[j + n] - mean) * sin(tp * (double)(k * n) / 8.0);
+                }
+                acc += re * re + im * im;
+            }
+            for (n = 0; n < 8u; n++) {
+                s2 += (0.54 - 0.46 * cos(tp * n / 8.0)) * (0.54 - 0.46 * cos(tp * n / 8.0));
+            }
+            ref[k] = acc / 53.0 / s2 * ((k == 0u || k == 4u) ? 1.0 : 2.0);
+        }
+        b.x = rec;
+        b.nx = 60u;
+        b.w = &w;
+        b.last = 0;
+        bin_tolerances(&b, ref, tol);
+        for (k = 0; k < 5u; k++) {
+            const double e = ref[k] * 53.0 / cnt, t = tol[k] * 53.0 / cnt + (double)FNAV_REAL_EPSILON / 2.0 * e;
+            FNAV_ASSERT_CLOSE(out[k], e, t, 0.0);
+            worst = fabs((double)out[k] / e - 1.0) > worst ? fabs((double)out[k] / e - 1.0) : worst;
+            wtol = t / e > wtol ? t / e : wtol;
+        }
+        fprintf(stderr, "[  INFO    ] %s build: at the count's end, worst bin %.2g relative to the double reference "
+                        "(derived tolerance at most %.2g of the bin)\n",
+                FNAV_USE_DOUBLE ? "double" : "float", worst, wtol);
+    }
 }
 
 /* An estimator never initialised (static storage, zeroed) or whose init
