@@ -891,7 +891,25 @@ static void test_zupt_update(void **state)
 }
 
 /* With the lever, a velocity equal to C (w x r) with the true lever gives a
- * zero innovation: the update changes neither velocity nor lever. */
+ * zero innovation: the update changes neither velocity nor lever. Then a
+ * wrong velocity moves the lever estimate towards explaining it, and by the
+ * Kalman update's value: the ZUPT with the lever is a linear update on the
+ * error state (h = v - C (w x r), w = w_m - b_g; H = [I, -C [w x], [u x]]
+ * over velocity, lever and attitude, u = C (w x r); y = u - v; R = sd^2 I),
+ * recomputed here in long double from the filter's own P, q, b_g, r and v
+ * (the quaternion's DCM, the cross products, S, its inverse and the gain
+ * written out): lever' = r + P_r,c H^T S^-1 y.
+ * Tolerance, first order in u = FNAV_REAL_EPSILON / 2, gamma_k = k u /
+ * (1 - k u), |.| elementwise, norms infinity: H's entries are within
+ * gamma_9 of Ha (|C| |[w x]|, [ (|C| (|w| x |r|)) x ], I): the DCM from
+ * the quaternion (gamma_4), a cross product and a 3-term product; P H^T
+ * (9 terms) within gamma_18 |P| Ha^T, S within gamma_27 Ha |P| Ha^T; the
+ * adjugate inverse within gamma_8 kappa(S) of S^-1, so S^-1 within
+ * |S^-1|^2 (|dS| + gamma_8 |S|); K_r = (P H^T)_r S^-1 within
+ * |dPH| |S^-1| + |PH| |dS^-1| + gamma_3 |PH| |S^-1|; y within
+ * gamma_9 |C| (|w| x |r|) + u (|u| + |v|); dx_r = K_r y within
+ * |dK| |y| + |K| |dy| + gamma_3 |K| |y|; the sum r + dx_r adds u |r'|.
+ * The reference's own error (long double, u 5.4e-20) is below this order. */
 static void test_lever_measurement(void **state)
 {
     static fnav_ukf_t f;
@@ -900,6 +918,10 @@ static void test_lever_measurement(void **state)
     fnav_vec3_t r = fnav_vec3(FNAV_R(0.02), FNAV_R(0.06), FNAV_R(-0.03));
     fnav_vec3_t w = fnav_vec3(FNAV_R(0.4), FNAV_R(-0.2), FNAV_R(0.1));
     fnav_vec3_t v;
+    const double u = (double)FNAV_REAL_EPSILON / 2.0;
+    long double Cq[3][3], wl[3], rl[3], vl[3], ul[3], yl[3], H[3][9], Ha[3][9], P[9][9], PH[9][3], PHa[9][3];
+    long double S[3][3], Sa[3][3], Si[3][3], adj[3][3], det, K[3][3], dxr[3], lev[3];
+    int cidx[9], i, j, k, m;
     (void)state;
     c.lever = 1;
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_OK);
@@ -915,7 +937,168 @@ static void test_lever_measurement(void **state)
     FNAV_ASSERT_CLOSE(f.lever_m.v[1], r.v[1], 20.0 * EPS, 0.0);
     /* a wrong velocity moves the lever estimate towards explaining it */
     f.vel_mps = fnav_vec3_add(v, fnav_quat_rotate(f.q_nb, fnav_vec3_cross(w, fnav_vec3(FNAV_R(0.0), FNAV_R(0.05), FNAV_R(0.0)))));
-    assert_int_equal(fnav_ukf_zupt(&f, w), FNAV_OK);
+    assert_int_equal(f.settle_on, 0); /* the reference has no settling state */
+    {
+        /* the reference, before the update: the state as the filter holds it */
+        const long double q0 = f.q_nb.q[0], q1 = f.q_nb.q[1], q2 = f.q_nb.q[2], q3 = f.q_nb.q[3];
+        Cq[0][0] = q0 * q0 + q1 * q1 - q2 * q2 - q3 * q3;
+        Cq[0][1] = 2.0L * (q1 * q2 - q0 * q3);
+        Cq[0][2] = 2.0L * (q1 * q3 + q0 * q2);
+        Cq[1][0] = 2.0L * (q1 * q2 + q0 * q3);
+        Cq[1][1] = q0 * q0 - q1 * q1 + q2 * q2 - q3 * q3;
+        Cq[1][2] = 2.0L * (q2 * q3 - q0 * q1);
+        Cq[2][0] = 2.0L * (q1 * q3 - q0 * q2);
+        Cq[2][1] = 2.0L * (q2 * q3 + q0 * q1);
+        Cq[2][2] = q0 * q0 - q1 * q1 - q2 * q2 + q3 * q3;
+    }
+    for (i = 0; i < 3; i++) {
+        wl[i] = (long double)w.v[i] - (long double)f.bg_rps.v[i];
+        rl[i] = f.lever_m.v[i];
+        vl[i] = f.vel_mps.v[i];
+        cidx[i] = FNAV_UKF_V + i;
+        cidx[3 + i] = FNAV_UKF_R + i;
+        cidx[6 + i] = FNAV_UKF_A + i;
+    }
+    {
+        const long double wr[3] = { wl[1] * rl[2] - wl[2] * rl[1], wl[2] * rl[0] - wl[0] * rl[2],
+                                    wl[0] * rl[1] - wl[1] * rl[0] };
+        const long double wra[3] = { fabsl(wl[1] * rl[2]) + fabsl(wl[2] * rl[1]),
+                                     fabsl(wl[2] * rl[0]) + fabsl(wl[0] * rl[2]),
+                                     fabsl(wl[0] * rl[1]) + fabsl(wl[1] * rl[0]) };
+        const long double sw[3][3] = { { 0, -wl[2], wl[1] }, { wl[2], 0, -wl[0] }, { -wl[1], wl[0], 0 } };
+        long double ua[3];
+        for (i = 0; i < 3; i++) {
+            ul[i] = 0.0L;
+            ua[i] = 0.0L;
+            for (j = 0; j < 3; j++) {
+                ul[i] += Cq[i][j] * wr[j];
+                ua[i] += fabsl(Cq[i][j]) * wra[j];
+            }
+            yl[i] = ul[i] - vl[i];
+        }
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                long double hr = 0.0L, hra = 0.0L;
+                for (k = 0; k < 3; k++) {
+                    hr += Cq[i][k] * sw[k][j];
+                    hra += fabsl(Cq[i][k]) * fabsl(sw[k][j]);
+                }
+                H[i][j] = Ha[i][j] = (i == j) ? 1.0L : 0.0L;
+                H[i][3 + j] = -hr;
+                Ha[i][3 + j] = hra;
+            }
+        }
+        /* [u x] */
+        H[0][6] = 0.0L; H[0][7] = -ul[2]; H[0][8] = ul[1];
+        H[1][6] = ul[2]; H[1][7] = 0.0L; H[1][8] = -ul[0];
+        H[2][6] = -ul[1]; H[2][7] = ul[0]; H[2][8] = 0.0L;
+        Ha[0][6] = 0.0L; Ha[0][7] = ua[2]; Ha[0][8] = ua[1];
+        Ha[1][6] = ua[2]; Ha[1][7] = 0.0L; Ha[1][8] = ua[0];
+        Ha[2][6] = ua[1]; Ha[2][7] = ua[0]; Ha[2][8] = 0.0L;
+        for (i = 0; i < 9; i++) {
+            for (j = 0; j < 9; j++) {
+                P[i][j] = fnav_ukf_cov(&f, cidx[i], cidx[j]);
+            }
+        }
+        for (i = 0; i < 9; i++) {
+            for (k = 0; k < 3; k++) {
+                PH[i][k] = PHa[i][k] = 0.0L;
+                for (m = 0; m < 9; m++) {
+                    PH[i][k] += P[i][m] * H[k][m];
+                    PHa[i][k] += fabsl(P[i][m]) * Ha[k][m];
+                }
+            }
+        }
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                S[i][j] = (i == j) ? (long double)c.zupt_sigma_mps * (long double)c.zupt_sigma_mps : 0.0L;
+                Sa[i][j] = S[i][j];
+                for (m = 0; m < 9; m++) {
+                    S[i][j] += H[i][m] * PH[m][j];
+                    Sa[i][j] += Ha[i][m] * PHa[m][j];
+                }
+            }
+        }
+        adj[0][0] = S[1][1] * S[2][2] - S[1][2] * S[2][1];
+        adj[0][1] = S[0][2] * S[2][1] - S[0][1] * S[2][2];
+        adj[0][2] = S[0][1] * S[1][2] - S[0][2] * S[1][1];
+        adj[1][0] = S[1][2] * S[2][0] - S[1][0] * S[2][2];
+        adj[1][1] = S[0][0] * S[2][2] - S[0][2] * S[2][0];
+        adj[1][2] = S[0][2] * S[1][0] - S[0][0] * S[1][2];
+        adj[2][0] = S[1][0] * S[2][1] - S[1][1] * S[2][0];
+        adj[2][1] = S[0][1] * S[2][0] - S[0][0] * S[2][1];
+        adj[2][2] = S[0][0] * S[1][1] - S[0][1] * S[1][0];
+        det = S[0][0] * adj[0][0] + S[0][1] * adj[1][0] + S[0][2] * adj[2][0];
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                Si[i][j] = adj[i][j] / det;
+            }
+        }
+        for (i = 0; i < 3; i++) { /* K_r = (P H^T)_r S^-1 */
+            for (j = 0; j < 3; j++) {
+                K[i][j] = 0.0L;
+                for (k = 0; k < 3; k++) {
+                    K[i][j] += PH[3 + i][k] * Si[k][j];
+                }
+            }
+            dxr[i] = K[i][0] * yl[0] + K[i][1] * yl[1] + K[i][2] * yl[2];
+            lev[i] = rl[i] + dxr[i];
+        }
+        assert_int_equal(fnav_ukf_zupt(&f, w), FNAV_OK);
+        {
+            const double g3 = 3.0 * u / (1.0 - 3.0 * u), g8 = 8.0 * u / (1.0 - 8.0 * u), g9 = 9.0 * u / (1.0 - 9.0 * u);
+            const double g18 = 18.0 * u / (1.0 - 18.0 * u), g27 = 27.0 * u / (1.0 - 27.0 * u);
+            double nSi = 0.0, nS = 0.0, ndS = 0.0, nPH = 0.0, ndPH = 0.0, nK = 0.0, ny = 0.0, ndy = 0.0, nKy = 0.0;
+            double nPHSi = 0.0, dSi, dK, ddx;
+            for (i = 0; i < 3; i++) {
+                double a = 0.0, b = 0.0, s2 = 0.0, p = 0.0, pa = 0.0, kk = 0.0, kya = 0.0, psa = 0.0;
+                for (j = 0; j < 3; j++) {
+                    a += fabs((double)Si[i][j]);
+                    b += fabs((double)S[i][j]);
+                    s2 += g27 * (double)Sa[i][j];
+                    p += fabs((double)PH[3 + i][j]);
+                    pa += g18 * (double)PHa[3 + i][j];
+                    kk += fabs((double)K[i][j]);
+                    kya += fabs((double)K[i][j]) * fabs((double)yl[j]);
+                    for (k = 0; k < 3; k++) {
+                        psa += fabs((double)PH[3 + i][k]) * fabs((double)Si[k][j]);
+                    }
+                }
+                nSi = a > nSi ? a : nSi;
+                nS = b > nS ? b : nS;
+                ndS = s2 > ndS ? s2 : ndS;
+                nPH = p > nPH ? p : nPH;
+                ndPH = pa > ndPH ? pa : ndPH;
+                nK = kk > nK ? kk : nK;
+                nKy = kya > nKy ? kya : nKy;
+                nPHSi = psa > nPHSi ? psa : nPHSi;
+                ny = fabs((double)yl[i]) > ny ? fabs((double)yl[i]) : ny;
+            }
+            for (i = 0; i < 3; i++) {
+                double e = u * (fabs((double)ul[i]) + fabs((double)vl[i]));
+                for (j = 0; j < 3; j++) {
+                    e += g9 * fabs((double)Cq[i][j]) * (double)(j == 0   ? fabsl(wl[1] * rl[2]) + fabsl(wl[2] * rl[1])
+                                                                : j == 1 ? fabsl(wl[2] * rl[0]) + fabsl(wl[0] * rl[2])
+                                                                         : fabsl(wl[0] * rl[1]) + fabsl(wl[1] * rl[0]));
+                }
+                ndy = e > ndy ? e : ndy;
+            }
+            dSi = nSi * nSi * (ndS + g8 * nS);
+            dK = ndPH * nSi + nPH * dSi + g3 * nPHSi;
+            ddx = dK * ny + nK * ndy + g3 * nKy;
+            for (i = 0; i < 3; i++) {
+                const double tol = ddx + u * fabs((double)lev[i]);
+                FNAV_ASSERT_CLOSE(f.lever_m.v[i], (double)lev[i], tol, 0.0);
+            }
+            print_message("lever update: correction %.3e %.3e %.3e m, filter within %.2g of the long double "
+                          "reference, derived tolerance %.2g\n",
+                          (double)dxr[0], (double)dxr[1], (double)dxr[2],
+                          fmax(fmax(fabs((double)f.lever_m.v[0] - (double)lev[0]),
+                                    fabs((double)f.lever_m.v[1] - (double)lev[1])),
+                               fabs((double)f.lever_m.v[2] - (double)lev[2])),
+                          ddx + u * fmax(fmax(fabs((double)lev[0]), fabs((double)lev[1])), fabs((double)lev[2])));
+        }
+    }
     assert_true(f.lever_m.v[1] > r.v[1]);
 }
 
