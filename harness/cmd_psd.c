@@ -872,8 +872,18 @@ int hx_cmd_psd(int argc, char **argv)
         hx_log_free(&log);
         return HX_EXIT_DATA;
     }
-    printf("harness psd: %s (%s), %zu samples at %.4g Hz, %.2f s\n", a.pos[0], log.meta.sensor, log.n, rate,
-           (double)log.n / rate);
+    {
+        /* a log whose format names no sensor (a CSV's "unknown"): the line
+         * names the format, as allan's and info's do */
+        char sensor_text[64];
+        if (log.meta.sensor[0] == '\0' || strcmp(log.meta.sensor, "unknown") == 0) {
+            snprintf(sensor_text, sizeof sensor_text, "%s log", hx_format_name(log.meta.format));
+        } else {
+            snprintf(sensor_text, sizeof sensor_text, "%s", log.meta.sensor);
+        }
+        printf("harness psd: %s (%s), %zu samples at %.4g Hz, %.2f s\n", a.pos[0], sensor_text, log.n, rate,
+               (double)log.n / rate);
+    }
     {
         char title[1024], dct[256], rndt[64];
         dc_text(dc_mode, res.df, dct, sizeof dct);

@@ -420,6 +420,9 @@ expect_exit 0 "convert the walk to CSV (stamps in bursts)" "$H" convert vectors/
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
     "$T/bw.csv" > "$T/burst_us.csv"
 expect_exit 0 "stamps in bursts, read as us" "$H" psd "$T/burst_us.csv" --units time=us
+# a CSV names no sensor: the first line named it "(unknown)" where allan and info name the format
+# ("(csv log)"); the JSON's sensor stays the reader's "unknown" (2026-12-02)
+expect_out "^harness psd: $T/burst_us.csv (csv log), 16539 samples" "psd: a CSV's first line names the format, as allan's does"
 if grep -q "are the time stamps in\|look like" "$T/err"; then fail "psd: stamps in bursts told a time unit: $(cat "$T/err")"; else
     pass "psd: stamps in bursts (400 Hz over the log) told no time unit"; fi
 # ... but its frequencies, read at 200 kHz, were given with only "intervals differ ...: Welch assumes uniform
