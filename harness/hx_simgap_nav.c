@@ -535,30 +535,42 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long from
     return cnt;
 }
 
+/* A run of n samples for nav_points and the stance counts from a caller's
+ * per-sample ZUPT flags and, where given (NULL otherwise), its first-update
+ * figures, which nav_points only reads. The caller frees r->flag. */
+static int run_of_flags(navrun_t *r, long n, const unsigned char *zupt, const double (*y)[3], const double (*S)[6],
+                        const double *nis, const double (*v)[3], const double (*p)[3])
+{
+    long k;
+    memset(r, 0, sizeof *r);
+    r->n = n;
+    r->flag = (unsigned char *)calloc((size_t)n, 1);
+    if (r->flag == NULL) {
+        return -1;
+    }
+    for (k = 0; k < n; k++) {
+        r->flag[k] = zupt[k] ? FL_ZUPT : 0u;
+    }
+    r->y = (double(*)[3])y;
+    r->S = (double(*)[6])S;
+    r->nis = (double *)nis;
+    r->v = (double(*)[3])v;
+    r->p = (double(*)[3])p;
+    return 0;
+}
+
 long sg_nav_stance_points(long n, const int64_t *t_ns, const unsigned char *zupt, const double (*y)[3],
                           const double (*S)[6], const double *nis, const double (*v)[3], const double (*p)[3],
                           int nwin, int drift, double *vals, sg_plist_t *pl)
 {
     navrun_t r;
-    long k, cnt;
+    long cnt;
     if (n < 1 || nwin < 0) {
         return -1;
     }
-    memset(&r, 0, sizeof r);
-    r.n = n;
-    r.flag = (unsigned char *)calloc((size_t)n, 1);
-    if (r.flag == NULL) {
+    if (run_of_flags(&r, n, zupt, y, S, nis, v, p) != 0) {
         return -1;
     }
-    for (k = 0; k < n; k++) {
-        r.flag[k] = zupt[k] ? FL_ZUPT : 0u;
-    }
-    /* read only: nav_points does not write the run */
-    r.y = (double(*)[3])y;
-    r.S = (double(*)[6])S;
-    r.nis = (double *)nis;
-    r.v = (double(*)[3])v;
-    r.p = (double(*)[3])p;
     cnt = nav_points(&r, t_ns, 0, 0, n, nwin, drift, NULL, pl != NULL, pl, vals);
     free(r.flag);
     return cnt;
@@ -568,19 +580,12 @@ int sg_nav_held_out_stances(long n, const int64_t *t_ns, const unsigned char *zu
                             long *from)
 {
     navrun_t r;
-    long k;
     int cnt;
     if (n < 1 || split < 0 || split > n || from == NULL) {
         return -1;
     }
-    memset(&r, 0, sizeof r);
-    r.n = n;
-    r.flag = (unsigned char *)calloc((size_t)n, 1);
-    if (r.flag == NULL) {
+    if (run_of_flags(&r, n, zupt, NULL, NULL, NULL, NULL, NULL) != 0) {
         return -1;
-    }
-    for (k = 0; k < n; k++) {
-        r.flag[k] = zupt[k] ? FL_ZUPT : 0u;
     }
     *from = stance_from(&r, t_ns, split, n, min_swing_s);
     cnt = stances_counted(&r, t_ns, *from, n, min_swing_s);
@@ -593,25 +598,13 @@ long sg_nav_held_out_points(long n, const int64_t *t_ns, const unsigned char *zu
                             long split, double min_swing_s, int nwin, double *vals, sg_plist_t *pl)
 {
     navrun_t r;
-    long k, cnt;
+    long cnt;
     if (n < 1 || nwin < 0 || split < 0 || split >= n) {
         return -1;
     }
-    memset(&r, 0, sizeof r);
-    r.n = n;
-    r.flag = (unsigned char *)calloc((size_t)n, 1);
-    if (r.flag == NULL) {
+    if (run_of_flags(&r, n, zupt, y, S, nis, v, p) != 0) {
         return -1;
     }
-    for (k = 0; k < n; k++) {
-        r.flag[k] = zupt[k] ? FL_ZUPT : 0u;
-    }
-    /* read only: nav_points does not write the run */
-    r.y = (double(*)[3])y;
-    r.S = (double(*)[6])S;
-    r.nis = (double *)nis;
-    r.v = (double(*)[3])v;
-    r.p = (double(*)[3])p;
     cnt = nav_points(&r, t_ns, split, stance_from(&r, t_ns, split, n, min_swing_s), n, nwin, 0, NULL, pl != NULL,
                      pl, vals);
     free(r.flag);
