@@ -241,8 +241,10 @@ double sg_gap_resampled(const sg_plist_t *pl, const double *real, const double *
 
 /**
  * Explained fraction of the excess gap (G_a - null mean) by going from twins
- * a to twins b (paired seeds), with a 68 % bootstrap interval over the
- * seeds; NaN when G_a is within two null standard deviations (no excess).
+ * a to twins b (paired seeds), with a 68 % bootstrap interval f +- se that
+ * carries the twins' seeds and the real's own noise (each resample's real
+ * perturbed by one of b's twins as a real; docs/simgap.md, section 4); NaN
+ * when G_a is within two null standard deviations (no excess).
  */
 void sg_explained(const sg_plist_t *pl, const double *real, const double *ta, const double *va, const double *sa,
                   const double *tb, const double *vb, const double *sb, int S, double null_mean, double null_sd,
