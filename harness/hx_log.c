@@ -2835,6 +2835,27 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, c
     return r;
 }
 
+/* 1 when path's last four bytes are the gzip trailer's ISIZE of a file
+ * whose data, read whole, were size bytes (RFC 1952: the length mod 2^32,
+ * little-endian): the last member then ends the file, as in every
+ * single-member .gz, and gz_trailing_bytes need not inflate it all again
+ * (it cost 0.1 s, a tenth of `info` on a 5 MB log of ADIS16405). 0
+ * otherwise (several members, bytes after the data, a read error). */
+static int gz_isize_ends(const char *path, unsigned long size)
+{
+    unsigned char t[4];
+    FILE *f = fopen(path, "rb");
+    int ok;
+    if (f == NULL) {
+        return 0;
+    }
+    ok = fseek(f, -4L, SEEK_END) == 0 && fread(t, 1, 4, f) == 4u &&
+         ((unsigned long)t[0] | (unsigned long)t[1] << 8 | (unsigned long)t[2] << 16 | (unsigned long)t[3] << 24) ==
+             (size & 0xffffffffUL);
+    fclose(f);
+    return ok;
+}
+
 /* The bytes after the last gzip member of path, as gunzip reads the file:
  * members one after another (concatenated .gz files are one valid .gz),
  * each inflated to its end; *zeros set when they are all zero bytes (a
@@ -2963,7 +2984,8 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
                     "split a field, the values after it were read from the wrong columns",
                  r->path, r->long_first, r->long_rows, r->long_rows == 1 ? "" : "s", r->hdr_fields);
     }
-    if (st == FNAV_END && !gzdirect(r->gz)) {
+    if (st == FNAV_END && !gzdirect(r->gz) && gztell(r->gz) >= 0 &&
+        !gz_isize_ends(r->path, (unsigned long)gztell(r->gz))) {
         /* bytes after the gzip data (a second member is read whole) */
         int zeros = 0;
         const long junk = gz_trailing_bytes(r->path, &zeros);
