@@ -360,6 +360,12 @@ static int stances_of(const navrun_t *r, long a, long b, stance_t *st, int max)
  * 23 runs of updates, 17 stances, gaps of 0.02-0.09 s between the pieces of
  * one stance against swings of 0.7-0.9 s), and the too-short rule counted
  * the pieces (a review). The statistics above still use the runs. */
+static int stance_begins(const int64_t *t_ns, long last, long k, double min_swing_s)
+{
+    /* update k after the update last (-1: none) begins a stance */
+    return last < 0 || (k - last > 3 && (double)(t_ns[k] - t_ns[last]) * 1e-9 >= min_swing_s);
+}
+
 static int stances_counted(const navrun_t *r, const int64_t *t_ns, long a, long b, double min_swing_s)
 {
     int n = 0;
@@ -368,7 +374,7 @@ static int stances_counted(const navrun_t *r, const int64_t *t_ns, long a, long 
         if (!(r->flag[k] & FL_ZUPT)) {
             continue;
         }
-        if (last < 0 || (k - last > 3 && (double)(t_ns[k] - t_ns[last]) * 1e-9 >= min_swing_s)) {
+        if (stance_begins(t_ns, last, k, min_swing_s)) {
             n++;
         }
         last = k;
@@ -397,7 +403,7 @@ static long stance_from(const navrun_t *r, const int64_t *t_ns, long a, long b, 
         if (!(r->flag[k] & FL_ZUPT)) {
             continue;
         }
-        if (last < 0 || (k - last > 3 && (double)(t_ns[k] - t_ns[last]) * 1e-9 >= min_swing_s)) {
+        if (stance_begins(t_ns, last, k, min_swing_s)) {
             return k;
         }
         last = k;
