@@ -1347,8 +1347,11 @@ static void test_unrepresentative_first_sample(void **state)
         so /= 2.0L * (long double)m * (long double)m * (long double)terms;
         sn /= 2.0L * (long double)m * (long double)m * (long double)terms_n;
         if (getenv("ALLAN_PER_TAU") != NULL) {
-            fprintf(stderr, "[  INFO    ] tau %6zu: relative AVAR error %.3g, derived tolerance %.3g (non-overlapping %.3g, %.3g)\n",
-                    m, fabs((double)r.avar / (double)so - 1.0), rel_o, fabs((double)r.avar_nonoverlap / (double)sn - 1.0), rel_n);
+            fprintf(stderr,
+                    "[  INFO    ] tau %6zu: relative AVAR error %.3g, derived tolerance %.3g (non-overlapping %.3g, "
+                    "%.3g)\n",
+                    m, fabs((double)r.avar / (double)so - 1.0), rel_o,
+                    fabs((double)r.avar_nonoverlap / (double)sn - 1.0), rel_n);
         }
         tol_min = rel_o < tol_min ? rel_o : tol_min;
         tol_max = rel_o > tol_max ? rel_o : tol_max;
