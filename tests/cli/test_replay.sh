@@ -1005,6 +1005,17 @@ if grep -q "raw counts" "$T/err"; then fail "a log in ug called raw counts"; els
 # the whole walk read as mg (no value beyond the reader's 1e6 once read so): the mean |f|, 1.6 g in the file's ug
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665e-6, $3 / 9.80665e-6, $4 / 9.80665e-6, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_ug_walk.csv"
+# read as m/s^2, the whole walk meets the reader's limit first (1e6 on one axis: 1 g in ug), where the reader said
+# only "no sensor reads that" (the units check never ran); an accelerometer column read in m/s^2 now asks about ug
+expect_exit 1 "the walk in ug, read as m/s^2" "$H" replay "$T/in_ug_walk.csv" --quiet --out /dev/null
+expect_err "in_ug_walk.csv:637: column 4 ('1002808') is beyond 1e+06 in SI units (no sensor reads that; in ug? 1 g is 1e6 ug: give --units accel=ug)" \
+    "the walk in ug read as m/s^2: the reader's limit asks about ug"
+expect_exit 1 "a gyro beyond 1e6" sh -c "awk -F, 'NR == 2 { \$5 = 2e6 } { print }' OFS=, vectors/nav/golden/gx2_walk2.csv > '$T/gyro_big.csv' && '$H' replay '$T/gyro_big.csv' --quiet --out /dev/null"
+if grep -q "accel=ug" "$T/err"; then fail "a gyro value beyond 1e6 asked about ug"; else pass "a gyro value beyond 1e6 not asked about ug"; fi
+# nor an acceleration that no accelerometer reads in ug either (beyond 400 g, the widest MEMS range, once read in ug)
+expect_exit 1 "an acceleration of 1e10" sh -c "awk -F, 'NR == 2 { \$2 = 1e10 } { print }' OFS=, vectors/nav/golden/gx2_walk2.csv > '$T/acc_big.csv' && '$H' replay '$T/acc_big.csv' --quiet --out /dev/null"
+expect_err "acc_big.csv:2: column 2 ('1e+10') is beyond 1e+06 in SI units (no sensor reads that)" "an acceleration of 1e10: the reader's limit"
+if grep -q "accel=ug" "$T/err"; then fail "an acceleration of 1e10 asked about ug"; else pass "an acceleration of 1e10 (1e4 g in ug) not asked about ug"; fi
 expect_exit 1 "accelerometer in ug, read with accel=mg" "$H" replay "$T/in_ug_walk.csv" --quiet --units accel=mg --out /dev/null
 expect_err "the log is not in m/s^2: in ug? (read as mg by --units accel=mg: give --units accel=ug) (docs/log-format.md)" \
     "ug read with accel=mg: named as ug, the remedy naming accel=ug"
