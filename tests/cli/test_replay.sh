@@ -1002,7 +1002,7 @@ expect_exit 1 "accelerometer in ug" "$H" replay "$T/in_ug.csv" --quiet --out /de
 expect_err "the log is not in m/s^2: in ug? (give --units accel=ug) (docs/log-format.md)" \
     "a log in ug is named as such, the --units item the remedy"
 if grep -q "raw counts" "$T/err"; then fail "a log in ug called raw counts"; else pass "a log in ug not called raw counts"; fi
-# the whole walk read as mg (no value beyond the reader's 1e6 once read so): the mean |f|, 1.6 g in the file's ug
+# the whole walk in ug
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665e-6, $3 / 9.80665e-6, $4 / 9.80665e-6, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_ug_walk.csv"
 # read as m/s^2, the whole walk meets the reader's limit first (1e6 on one axis: 1 g in ug), where the reader said
@@ -1016,6 +1016,7 @@ if grep -q "accel=ug" "$T/err"; then fail "a gyro value beyond 1e6 asked about u
 expect_exit 1 "an acceleration of 1e10" sh -c "awk -F, 'NR == 2 { \$2 = 1e10 } { print }' OFS=, vectors/nav/golden/gx2_walk2.csv > '$T/acc_big.csv' && '$H' replay '$T/acc_big.csv' --quiet --out /dev/null"
 expect_err "acc_big.csv:2: column 2 ('1e+10') is beyond 1e+06 in SI units (no sensor reads that)" "an acceleration of 1e10: the reader's limit"
 if grep -q "accel=ug" "$T/err"; then fail "an acceleration of 1e10 asked about ug"; else pass "an acceleration of 1e10 (1e4 g in ug) not asked about ug"; fi
+# the whole walk read as mg (no value beyond the reader's 1e6 once read so): the mean |f|, 1.6 g in the file's ug
 expect_exit 1 "accelerometer in ug, read with accel=mg" "$H" replay "$T/in_ug_walk.csv" --quiet --units accel=mg --out /dev/null
 expect_err "the log is not in m/s^2: in ug? (read as mg by --units accel=mg: give --units accel=ug) (docs/log-format.md)" \
     "ug read with accel=mg: named as ug, the remedy naming accel=ug"
