@@ -1726,8 +1726,25 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
             /* what the core would refuse (and float would make Inf) is a
              * reader error here, with its line */
             if (fabs(v[c * 3 + i] * (c == 0 ? r->acc_scale : r->gyr_scale)) > FNAV_INPUT_MAX_ABS) {
-                set_err(r, "%s:%ld: column %d ('%.20s') is beyond %g in SI units (no sensor reads that)", r->path,
-                        r->stats.lines, col + 1, f[col], FNAV_INPUT_MAX_ABS);
+                /* an accelerometer in ug read as m/s^2 reads 1e6 at 1 g, at
+                 * this limit: before the units check could name ug, a log
+                 * in ug met this error, which said only "no sensor reads
+                 * that" (until 2026-12-02). Asked when the value in ug is
+                 * within the widest range of MEMS accelerometers (400 g,
+                 * ST's H3LIS331DL), as a question: raw counts of a 24-bit
+                 * converter reach it too */
+                char give[96] = "";
+                if (c == 0 && r->meta.format == HX_FMT_CSV && r->acc_scale == 1.0 &&
+                    fabs(v[i]) * HX_UG_MPS2 <= 400.0 * HX_G_MPS2) {
+                    /* the whole --units value, as the units check names it */
+                    hx_csv_layout_t want = r->layout;
+                    char items[80];
+                    want.acc_scale = HX_UG_MPS2;
+                    snprintf(give, sizeof give, "; in ug? 1 g is 1e6 ug: %s",
+                             hx_units_give(&want, items, sizeof items));
+                }
+                set_err(r, "%s:%ld: column %d ('%.20s') is beyond %g in SI units (no sensor reads that%s)", r->path,
+                        r->stats.lines, col + 1, f[col], FNAV_INPUT_MAX_ABS, give);
                 return FNAV_E_RANGE;
             }
         }

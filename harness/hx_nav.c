@@ -1057,13 +1057,17 @@ static double acc_read_scale(const hx_csv_layout_t *csv)
 }
 
 /* The unit the file's accelerations are in, by |f| at rest as read: the
- * scale (m/s^2 per unit: 1, HX_G_MPS2, HX_MG_MPS2) that makes the file's
- * value gravity within HX_GRAVITY_TOL; 0 when none does. */
+ * scale (m/s^2 per unit: 1, HX_G_MPS2, HX_MG_MPS2, HX_UG_MPS2) that makes
+ * the file's value gravity within HX_GRAVITY_TOL; 0 when none does. The
+ * bands (file values 7.4-12.3, 0.75-1.25, 750-1250, 7.5e5-1.25e6) do not
+ * overlap: the units lie 9.8 and 1000 times apart, the band is 1.67 wide.
+ * ug was read by --units since 2026-12-02 but had no band: a file in ug
+ * was told "not in m/s^2" without a unit */
 static double acc_file_scale(const hx_csv_layout_t *csv, double f_rest_mps2, double g)
 {
-    static const double k_scale[3] = { 1.0, HX_G_MPS2, HX_MG_MPS2 };
+    static const double k_scale[4] = { 1.0, HX_G_MPS2, HX_MG_MPS2, HX_UG_MPS2 };
     size_t i;
-    for (i = 0; i < 3u; i++) {
+    for (i = 0; i < 4u; i++) {
         if (fabs(f_rest_mps2 / acc_read_scale(csv) * k_scale[i] / g - 1.0) < HX_GRAVITY_TOL) {
             return k_scale[i];
         }
@@ -1083,7 +1087,10 @@ static const char *acc_fix(const hx_csv_layout_t *csv, const hx_csv_layout_t *wa
     char give[96];
     const char *given = hx_accel_unit_name(acc_read_scale(csv));
     if (csv == NULL) {
-        snprintf(buf, size, "multiply by %s", file_scale == HX_MG_MPS2 ? "0.00980665" : "9.80665");
+        snprintf(buf, size, "multiply by %s",
+                 file_scale == HX_UG_MPS2   ? "9.80665e-6"
+                 : file_scale == HX_MG_MPS2 ? "0.00980665"
+                                            : "9.80665");
     } else if (file_scale == 1.0) {
         snprintf(buf, size, "read as %s by --units accel=%s: leave accel=%s out", given, given, given);
     } else if (csv->acc_scale == 1.0) {
@@ -1097,7 +1104,7 @@ static const char *acc_fix(const hx_csv_layout_t *csv, const hx_csv_layout_t *wa
 /* The layout that reads the log, for the remedies of units_problem: csv
  * with the unit items of every mark found, as units_problem judges them
  * (acc_mean: the file unit the mean |f| of units_check found, HX_G_MPS2,
- * HX_MG_MPS2 or 1 for m/s^2 read in another unit; 0 none), so that each remedy
+ * HX_MG_MPS2, HX_UG_MPS2 or 1 for m/s^2 read in another unit; 0 none), so that each remedy
  * names the whole --units value. csv NULL: none (want untouched). */
 static void units_want(const hx_csv_layout_t *csv, double f_rest_mps2, double g, double gyro_max_rps,
                        double rate_hz, double acc_mean, int walks, hx_csv_layout_t *want)
@@ -1109,7 +1116,7 @@ static void units_want(const hx_csv_layout_t *csv, double f_rest_mps2, double g,
     *want = *csv;
     if (acc_mean == HX_G_MPS2 && csv->acc_scale == 1.0) {
         want->acc_scale = HX_G_MPS2;
-    } else if (acc_mean == HX_MG_MPS2 || acc_mean == 1.0) {
+    } else if (acc_mean == HX_MG_MPS2 || acc_mean == HX_UG_MPS2 || acc_mean == 1.0) {
         want->acc_scale = acc_mean;
     } else if (f_rest_mps2 > 0.0 && fabs(f_rest_mps2 / g - 1.0) > HX_GRAVITY_TOL &&
                acc_file_scale(csv, f_rest_mps2, g) > 0.0) {
@@ -1318,7 +1325,7 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
                                    : (double)nav->align.refused_f_mps2;
     const int acc_in_g = !nav->aligned && fn == 0.0 && f_norm_mean > 0.0 && f_norm_mean < 0.5 * g;
     /* the file's unit the mean |f| found (units_want): g, or, above
-     * HX_ACCEL_MEAN_MAX_G, mg or m/s^2 read in another unit (0: none) */
+     * HX_ACCEL_MEAN_MAX_G, mg, ug or m/s^2 read in another unit (0: none) */
     double acc_mean = acc_in_g ? HX_G_MPS2 : 0.0;
     int bad;
     if (!nav->aligned && !(f_norm_mean > 1e-6 * g)) {
@@ -1362,11 +1369,15 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
                  f_norm_mean, g, fix_g(csv, &want, give, sizeof give));
     }
     if (!nav->aligned && fn == 0.0 && f_norm_mean > HX_ACCEL_MEAN_MAX_G * g) {
-        /* no rest found, and a mean |f| no foot reaches: mg, cm/s^2 or raw
-         * counts, whose noise also hides every still period (it said only
+        /* no rest found, and a mean |f| no foot reaches: mg, ug, cm/s^2 or
+         * raw counts, whose noise also hides every still period (it said only
          * "no still period": the generality review, 2026-11-30) */
         const double in_g = f_norm_mean / acc_read_scale(csv) * 0.00980665 / g; /* the file's values in mg */
         const int mg = in_g > 0.75 && in_g < HX_ACCEL_MEAN_MAX_G;
+        /* the file's values in ug (the same 0.75-10 g band: 7.5e5-1e7 in
+         * the file, above mg's 750-1e4; "raw counts?" until 2026-12-02) */
+        const double in_g_ug = f_norm_mean / acc_read_scale(csv) * HX_UG_MPS2 / g;
+        const int ug = in_g_ug > 0.75 && in_g_ug < HX_ACCEL_MEAN_MAX_G;
         /* the file's values in m/s^2, read as g (a foot's mean: 0.75-10 g,
          * as the mg mark's; "raw counts?" until 2026-11-30) */
         const double in_mps2 = f_norm_mean / acc_read_scale(csv) / g;
@@ -1375,9 +1386,9 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
         char fix[128] = "";
         /* the remedy names the other items found too (units_want), with
          * the accelerometer's unit the file's; so do the others */
-        acc_mean = msq ? 1.0 : mg ? HX_MG_MPS2 : 0.0;
+        acc_mean = msq ? 1.0 : mg ? HX_MG_MPS2 : ug ? HX_UG_MPS2 : 0.0;
         units_want(csv, fn, g, gyro_max_rps, rate, acc_mean, walks, &want);
-        if (msq || mg) {
+        if (msq || mg || ug) {
             acc_fix(csv, &want, acc_mean, fix, sizeof fix);
         }
         snprintf(acc, sizeof acc,
@@ -1386,8 +1397,9 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
                  f_norm_mean, g,
                  msq  ? "in m/s^2 already? ("
                  : mg ? "not in m/s^2: in mg? ("
+                 : ug ? "not in m/s^2: in ug? ("
                       : "not in m/s^2: raw counts? (scale them by the sensor's sensitivity)",
-                 fix, msq || mg ? ")" : "");
+                 fix, msq || mg || ug ? ")" : "");
     }
     bad = units_problem(fn, g, gyro_max_rps, rate, csv, acc_mean, walks, msg, sizeof msg);
     if (rep[0] != '\0') {

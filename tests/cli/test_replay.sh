@@ -988,6 +988,50 @@ expect_out "units       NOT SI: .*at rest, where gravity is 9.807 m/s^2: the log
 expect_exit 0 "info on the same log without accel=g" "$H" info vectors/nav/golden/gx2_walk2.csv
 if grep -q "NOT SI" "$T/out"; then fail "the remedy followed: info still finds a unit problem"; else
     pass "the remedy followed (accel=g left out): no unit problem"; fi
+# a log in micro-g (ax_µg, --units accel=ug since 2026-12-02): read as m/s^2 its |f| at rest is about 1.0e6, which
+# the units check called only "not in m/s^2" (info) or "raw counts?" (replay, no still period found: the noise
+# scaled by 1e5 hides it), and read as mg "raw counts?" as well; it is now named as ug, the remedy accel=ug, by
+# the bands of g and mg (|f| at rest within 25 % of gravity once read in ug; a mean |f| of 0.75-10 g). The first
+# 2.4 s of the walk (600 rows, the standing start): further on, |a| on one axis passes 1e6, which the reader refuses
+awk -F, 'NR == 1 { print; next } NR <= 601 { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665e-6, $3 / 9.80665e-6, $4 / 9.80665e-6, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_ug.csv"
+expect_exit 0 "info on a log in ug" "$H" info "$T/in_ug.csv"
+expect_out "units       NOT SI: .*at rest, where gravity is 9.807 m/s^2: the log is not in m/s^2 but in ug (give --units accel=ug)" \
+    "info names ug, and accel=ug"
+expect_exit 1 "accelerometer in ug" "$H" replay "$T/in_ug.csv" --quiet --out /dev/null
+expect_err "the log is not in m/s^2: in ug? (give --units accel=ug) (docs/log-format.md)" \
+    "a log in ug is named as such, the --units item the remedy"
+if grep -q "raw counts" "$T/err"; then fail "a log in ug called raw counts"; else pass "a log in ug not called raw counts"; fi
+# the whole walk in ug
+awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665e-6, $3 / 9.80665e-6, $4 / 9.80665e-6, $5, $6, $7 }' \
+    vectors/nav/golden/gx2_walk2.csv > "$T/in_ug_walk.csv"
+# read as m/s^2, the whole walk meets the reader's limit first (1e6 on one axis: 1 g in ug), where the reader said
+# only "no sensor reads that" (the units check never ran); an accelerometer column read in m/s^2 now asks about ug
+expect_exit 1 "the walk in ug, read as m/s^2" "$H" replay "$T/in_ug_walk.csv" --quiet --out /dev/null
+expect_err "in_ug_walk.csv:637: column 4 ('1002808') is beyond 1e+06 in SI units (no sensor reads that; in ug? 1 g is 1e6 ug: give --units accel=ug)" \
+    "the walk in ug read as m/s^2: the reader's limit asks about ug"
+expect_exit 1 "a gyro beyond 1e6" sh -c "awk -F, 'NR == 2 { \$5 = 2e6 } { print }' OFS=, vectors/nav/golden/gx2_walk2.csv > '$T/gyro_big.csv' && '$H' replay '$T/gyro_big.csv' --quiet --out /dev/null"
+if grep -q "accel=ug" "$T/err"; then fail "a gyro value beyond 1e6 asked about ug"; else pass "a gyro value beyond 1e6 not asked about ug"; fi
+# nor an acceleration that no accelerometer reads in ug either (beyond 400 g, the widest MEMS range, once read in ug)
+expect_exit 1 "an acceleration of 1e10" sh -c "awk -F, 'NR == 2 { \$2 = 1e10 } { print }' OFS=, vectors/nav/golden/gx2_walk2.csv > '$T/acc_big.csv' && '$H' replay '$T/acc_big.csv' --quiet --out /dev/null"
+expect_err "acc_big.csv:2: column 2 ('1e+10') is beyond 1e+06 in SI units (no sensor reads that)" "an acceleration of 1e10: the reader's limit"
+if grep -q "accel=ug" "$T/err"; then fail "an acceleration of 1e10 asked about ug"; else pass "an acceleration of 1e10 (1e4 g in ug) not asked about ug"; fi
+# the whole walk read as mg (no value beyond the reader's 1e6 once read so): the mean |f|, 1.6 g in the file's ug
+expect_exit 1 "accelerometer in ug, read with accel=mg" "$H" replay "$T/in_ug_walk.csv" --quiet --units accel=mg --out /dev/null
+expect_err "the log is not in m/s^2: in ug? (read as mg by --units accel=mg: give --units accel=ug) (docs/log-format.md)" \
+    "ug read with accel=mg: named as ug, the remedy naming accel=ug"
+expect_exit 0 "info on a log in ug, read with accel=mg" "$H" info "$T/in_ug.csv" --units accel=mg
+expect_out "units       NOT SI: .*not in m/s^2 but in ug (read as mg by --units accel=mg: give --units accel=ug)" \
+    "info: ug read with accel=mg named, the remedy naming accel=ug"
+# the remedy followed: no unit named, the walk navigated
+expect_exit 0 "accelerometer in ug, read with accel=ug" "$H" replay "$T/in_ug_walk.csv" --quiet --units accel=ug --out /dev/null
+expect_exit 0 "info on a log in ug, read with accel=ug" "$H" info "$T/in_ug.csv" --units accel=ug
+if grep -q "NOT SI" "$T/out"; then fail "ug read with accel=ug: info still finds a unit problem"; else
+    pass "ug read with accel=ug: no unit problem"; fi
+# and a log in m/s^2 read with accel=ug: 1e5 times too small, named as m/s^2, the remedy leaving accel=ug out
+expect_exit 0 "info on a log in m/s^2, read with accel=ug" "$H" info vectors/nav/golden/gx2_walk2.csv --units accel=ug
+expect_out "units       NOT SI: .*the log is in m/s^2 already (read as ug by --units accel=ug: leave accel=ug out)" \
+    "info: m/s^2 read with accel=ug named, the remedy leaving accel=ug out"
 # mg and mdps (ST's SensorTile data log writes AccX [mg] and GyroX [mdps]), which --units reads since the units
 # review (2026-11-30): the file's unit is named whatever --units gave, each remedy the whole --units value
 expect_exit 1 "accelerometer in m/s^2, read with accel=mg" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet --units accel=mg
