@@ -508,6 +508,10 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
                                                       : (r->ch[ch].nsteps == 0 ? "not-tried" : "no-effect"));
             if (why == SG_UNCONF_NOT_HELD_OUT && lead != NULL) {
                 cJSON *lo = effect_json(&lead->eff, ch);
+                /* fit_dQ as in every other effect object; fit_dq, the
+                 * name the lead was first written with, kept for
+                 * footnav-simgap/1 readers */
+                add_num(lo, "fit_dQ", lead->dQ_fit);
                 add_num(lo, "fit_dq", lead->dQ_fit);
                 cJSON_AddItemToObject(uo, "lead", lo);
             } else {

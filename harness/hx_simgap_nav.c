@@ -2639,6 +2639,7 @@ cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r)
         cJSON *s = cJSON_AddObjectToObject(a, segn[g]), *pts;
         add_num(s, "G", nv->cmp[g].G);
         add_num(s, "G_null_mean", nv->cmp[g].null_mean);
+        add_num(s, "G_null_sd", nv->cmp[g].null_sd);
         add_num(s, "G_crit", nv->cmp[g].G_crit);
         add_num(s, "max_abs_z", nv->cmp[g].maxz);
         add_num(s, "z_crit", nv->cmp[g].z_crit);

@@ -2895,6 +2895,37 @@ static void test_json_unconfirmed_not_tried(void **state)
     free(r);
 }
 
+/* A not-held-out gap's lead candidate carries the fit segment's dQ under
+ * the name every other effect object uses, fit_dQ, and under fit_dq, the
+ * name it was first written with (kept for footnav-simgap/1 readers): a
+ * review of docs/simgap.md, 2026-12-02, found the lead alone wrote fit_dq. */
+static void test_json_unconfirmed_lead_fit_dQ(void **state)
+{
+    sg_result_t *r = hand_result();
+    sg_chres_t *c = &r->ch[0];
+    cJSON *j, *lead;
+    (void)state;
+    c->nsel = c->nzero = 0;
+    c->nsteps = 1;
+    c->step[0].selected = -1;
+    c->step[0].cand[0].dQ_fit = 42.5;
+    c->gap = c->gap_full = 1;
+    c->gap_hold = 0;
+    c->within_noise = 0;
+    snprintf(r->verdict, sizeof r->verdict, "unexplained");
+    j = json_of(r);
+    lead = cJSON_GetObjectItem(
+        cJSON_GetArrayItem(cJSON_GetObjectItem(cJSON_GetObjectItem(j, "verdict"), "unconfirmed"), 0), "lead");
+    assert_non_null(lead);
+    /* cJSON_GetObjectItem ignores case: the names are told apart here */
+    assert_non_null(cJSON_GetObjectItemCaseSensitive(lead, "fit_dQ"));
+    assert_non_null(cJSON_GetObjectItemCaseSensitive(lead, "fit_dq"));
+    assert_true(cJSON_GetObjectItemCaseSensitive(lead, "fit_dQ")->valuedouble == 42.5);
+    assert_true(cJSON_GetObjectItemCaseSensitive(lead, "fit_dq")->valuedouble == 42.5);
+    cJSON_Delete(j);
+    free(r);
+}
+
 /* The summary's split percentages are not rounded apart: --fit-frac 0.25
  * read "fit on the first and last 12 %, held out the middle 75 %", 99 %
  * of the log, until 2026-11-29 (the sgreport review). */
@@ -3050,6 +3081,7 @@ int main(void)
         cmocka_unit_test(test_summary_not_attempted_says_why),
         cmocka_unit_test(test_summary_defines_g_as_computed),
         cmocka_unit_test(test_json_unconfirmed_not_tried),
+        cmocka_unit_test(test_json_unconfirmed_lead_fit_dQ),
         cmocka_unit_test(test_summary_split_percentages_add_up),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),

@@ -551,6 +551,13 @@ PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp.txt" "$H" simgap "$T/wgap.csv" --quiet -
 sed -n '/^\$d << EOD/,/^EOD/p' "$T/gp.txt" | sed '1d;$d' | cut -d' ' -f1 > "$T/wgap.t"
 json "$T/wgap.json" '(w := [p for p in j["navigation"]["gap"]["full"]["points"] if p["kind"] == "window"][-1])["real"] is not None and max(float(x) for x in open(sys.argv[1].replace(".json", ".t"))) >= w["x_lo"]' &&
     pass "innovation plot: stances at their time across a gap" || fail "innovation plot times: $(tail -1 "$T/wgap.t") $(cat "$T/pyerr")"
+# the walk's gap carries the null's sd, as a static channel's does: the
+# critical value is the scaled chi-square's with the null's mean m and sd s,
+# G_crit = m chi2.ppf(1 - alpha / 4, k) / k, k = 2 m^2 / s^2 (section 3: a
+# walk's family is its four tests; scipy).
+# The walk's gap had no G_null_sd (a review of docs/simgap.md, 2026-12-02)
+json "$T/wgap.json" '(c := __import__("scipy.stats").stats.chi2) and (a := j["settings"]["alpha"] / 4) and all((g := j["navigation"]["gap"][seg])["G_null_sd"] > 0 and abs(g["G_crit"] - g["G_null_mean"] * c.ppf(1 - a, (k := 2 * g["G_null_mean"] ** 2 / g["G_null_sd"] ** 2)) / k) <= 1e-6 * g["G_crit"] for seg in j["navigation"]["gap"] if j["navigation"]["gap"][seg]["G_crit"] is not None) and len([s for s in j["navigation"]["gap"].values() if s["G_crit"] is not None]) >= 2' &&
+    pass "walk gap: G_null_sd, and G_crit from it" || fail "walk gap null sd: $(cat "$T/pyerr")"
 # a walk of a few strides whose fit segment holds no stance (6 s; the
 # alignment takes the first seconds): its points were the constant ln 1e-30
 # in the real and every twin, and the walk was refused in the same way
