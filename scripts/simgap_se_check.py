@@ -4,8 +4,8 @@
 Writes 16 logs (300 s at 100 Hz, numpy seeds 1-16) to a temporary
 directory, runs `bin/harness simgap LOG --max-effects 0 --json` on each and
 compares each baseline parameter's `*_se` with the spread of the parameter
-over the seeds (docs/simgap.md, section 3, "The fitted parameters'
-standard errors", and Limitations):
+over the seeds (docs/simgap.md, section 3, the paragraph on the standard
+errors after the parameter bootstrap, and Limitations):
 
 - default: pure white noise, density 1e-3 m/s^2/sqrt(Hz) on the
   accelerometers and 5e-4 rad/s/sqrt(Hz) on the gyros; the white density
