@@ -358,9 +358,12 @@ static void table_weights(const sg_result_t *r, int ch, int g, sg_table_t *t)
 
 /* Spread of the model's predictions when it is refitted on each twin's
  * fit segment: the sampling uncertainty of the fitted parameters, carried
- * into every point of every segment (a parametric bootstrap of the fit). */
+ * into every point of every segment (a parametric bootstrap of the fit).
+ * se_model (or NULL): the fitted model whose Allan standard errors become
+ * the refits' spread of its parameters (sg_se_from_refits; reporting
+ * only: the same refits, nothing else changes). */
 static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, const int *with, int nwith,
-                     const sg_evidence_t *ev, double tmax, int gfit, twinset_t *t)
+                     const sg_evidence_t *ev, double tmax, int gfit, twinset_t *t, sg_chmodel_t *se_model)
 {
     const int S = r->S;
     const sg_plist_t *pl = r->pl[ch];
@@ -368,6 +371,17 @@ static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, cons
     double t0[SG_NSEG][SG_MAX_BLK], t1[SG_NSEG][SG_MAX_BLK], *pred[SG_NSEG];
     int g, s, ok = 0, b;
     size_t j;
+    sg_chmodel_t *fits = NULL;
+    int *fit_ok = NULL;
+    if (se_model != NULL) {
+        fits = (sg_chmodel_t *)malloc((size_t)S * sizeof *fits);
+        fit_ok = (int *)calloc((size_t)S, sizeof *fit_ok);
+        if (fits == NULL || fit_ok == NULL) {
+            free(fits);
+            free(fit_ok);
+            return -1;
+        }
+    }
     for (g = 0; g < SG_NSEG; g++) {
         for (b = 0; b < r->segs.nb[g]; b++) {
             t0[g][b] = (double)r->segs.start[g][b] / fs;
@@ -379,6 +393,8 @@ static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, cons
             for (; g >= 0; g--) {
                 free(pred[g]);
             }
+            free(fits);
+            free(fit_ok);
             return -1;
         }
     }
@@ -396,6 +412,10 @@ static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, cons
             continue;
         }
         ok++;
+        if (fits != NULL) {
+            fits[s] = f.model;
+            fit_ok[s] = 1;
+        }
         for (g = 0; g < SG_NSEG; g++) {
             for (j = 0; j < pl[g].n; j++) {
                 pred[g][(size_t)s * pl[g].n + j] =
@@ -447,6 +467,11 @@ static int param_var(const sg_result_t *r, int ch, const sg_chmodel_t *gen, cons
         }
         t->sh[g] = pred[g];
     }
+    if (se_model != NULL) {
+        sg_se_from_refits(se_model, fits, fit_ok, S);
+    }
+    free(fits);
+    free(fit_ok);
     return 0;
 }
 
@@ -643,6 +668,19 @@ double sg_score_test(const sg_plist_t *pl, const double *real, const sg_cmp_t *c
     return sd > 0.0 ? (T - *t_mean) / (sd * sqrt(1.0 + 1.0 / (double)S)) : 0.0;
 }
 
+/* An effect's standard errors without twins to refit: the Allan fit's
+ * (sg_effect_t.se_allan) are unknown. */
+static void se_without_twins(sg_effect_t *e)
+{
+    int k;
+    for (k = 0; k < SG_MAX_PAR; k++) {
+        if (e->se_allan[k]) {
+            e->se[k] = (double)NAN;
+            e->se_allan[k] = 0;
+        }
+    }
+}
+
 /* The static effects the diagnosis can fit. */
 static const int k_static_cands[] = { FNAV_EFFECT_QUANT,   FNAV_EFFECT_VIBRATION, FNAV_EFFECT_FLICKER,
                                       FNAV_EFFECT_RRW,     FNAV_EFFECT_RAMP,      FNAV_EFFECT_THERMAL,
@@ -809,7 +847,7 @@ static int fold_ends(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
     if (twinset_run(&f.model, ch, fc, &r->segs, c->q_full, S, seed, r->pl[ch], &ts) != 0) {
         return -1;
     }
-    if (param_var(r, ch, &f.model, with, nwith, &c->ev_mid, tmax, SG_HOLD, &ts) != 0) {
+    if (param_var(r, ch, &f.model, with, nwith, &c->ev_mid, tmax, SG_HOLD, &ts, NULL) != 0) {
         twinset_free(&ts);
         return -1;
     }
@@ -946,6 +984,11 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             memset(cd, 0, sizeof *cd);
             cd->id = id;
             cd->eff = f.model.e[sg_model_find(&f.model, id)];
+            /* a candidate gets the standard errors of its Allan-fitted
+             * parameters from its twins' refits when it is simulated (below);
+             * one that is not has no twins: no standard error (the Allan
+             * fit's own is too small, docs/simgap.md, section 3) */
+            se_without_twins(&cd->eff);
             /* ranked by the Allan objective; the time points join only
              * the threshold, read two ways, either of which lets a
              * candidate be simulated (the held-out tests judge it): their
@@ -1011,10 +1054,12 @@ static int attribute(sg_result_t *r, int ch, const double *x, const sg_feat_cfg_
             if (twinset_run(&f.model, ch, fc, &r->segs, c->q_full, S, seed, r->pl[ch], &ts) != 0) {
                 continue;
             }
-            if (param_var(r, ch, &f.model, w2, nwith + 1, &c->ev, tmax, SG_FIT, &ts) != 0) {
+            if (param_var(r, ch, &f.model, w2, nwith + 1, &c->ev, tmax, SG_FIT, &ts, &f.model) != 0) {
                 twinset_free(&ts);
                 continue;
             }
+            /* its standard errors now from its twins' refits */
+            cd->eff = f.model.e[sg_model_find(&f.model, cd->id)];
             memset(cc, 0, sizeof cc);
             {
                 sg_plist_t *pls = r->pl[ch];
@@ -1388,11 +1433,12 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             free(x);
             return -1;
         }
-        if (param_var(r, ch, &c->baseline, NULL, 0, &c->ev, tmax, SG_FIT, &ts) != 0) {
+        if (param_var(r, ch, &c->baseline, NULL, 0, &c->ev, tmax, SG_FIT, &ts, &c->baseline) != 0) {
             snprintf(err, err_size, "out of memory");
             free(x);
             return -1;
         }
+        c->final = c->baseline; /* with the standard errors from the twins' refits */
         for (g = 0; g < SG_NSEG; g++) {
             r->twin[ch][g] = ts.v[g];
             r->vx[ch][g] = ts.vx[g];

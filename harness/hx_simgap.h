@@ -283,6 +283,9 @@ typedef struct {
     int id;                   /**< fnav_effect_id_t */
     double p[SG_MAX_PAR];
     double se[SG_MAX_PAR];    /**< standard errors (NaN: unknown) */
+    int se_allan[SG_MAX_PAR]; /**< se[k] is the Allan fit's Gauss-Newton value, which treats the
+                                   overlapping Allan points as independent (too small); the twins'
+                                   refits replace it (sg_se_from_refits) */
     double lo[SG_MAX_PAR], hi[SG_MAX_PAR]; /**< the interval the fit searched the parameter in (its
                                    unit; lo = hi = 0: not searched within bounds): the thermal tau_s,
                                    an rrw's or a flicker's magnitude refined by likelihood */
@@ -310,6 +313,17 @@ typedef struct {
     int n;
     sg_effect_t e[SG_MAX_EFF];
 } sg_chmodel_t;
+
+/** Standard errors of the Allan fit's parameters from the twins' refits
+ *  (a parametric bootstrap: docs/simgap.md, section 3): every parameter of
+ *  m whose se the Allan fit gave (se_allan) gets the sample standard
+ *  deviation of the same parameter over fits[s] with ok[s] (S refits of
+ *  the same model on twins simulated from m), and its se_allan cleared; an
+ *  effect's other parameters (the AR(1) time) count only the refits whose
+ *  magnitude is not zero; fewer than 3 values leave se NaN. Other
+ *  standard errors (a drift's, a likelihood's) and NaN ones stay as they
+ *  are. Reporting only: no decision reads se. */
+void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok, int S);
 
 /** Find an effect in a model (index or -1). */
 int sg_model_find(const sg_chmodel_t *m, int id);
