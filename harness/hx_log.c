@@ -1729,12 +1729,13 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
                 /* an accelerometer in ug read as m/s^2 reads 1e6 at 1 g, at
                  * this limit: before the units check could name ug, a log
                  * in ug met this error, which said only "no sensor reads
-                 * that" (until 2026-12-02). Asked when the value in ug is
+                 * that" (until 2026-12-02); read as g (--units accel=g) it
+                 * meets it at once. Asked when the value in ug is
                  * within the widest range of MEMS accelerometers (400 g,
                  * ST's H3LIS331DL), as a question: raw counts of a 24-bit
                  * converter reach it too */
                 char give[96] = "";
-                if (c == 0 && r->meta.format == HX_FMT_CSV && r->acc_scale == 1.0 &&
+                if (c == 0 && r->meta.format == HX_FMT_CSV && r->acc_scale != HX_UG_MPS2 &&
                     fabs(v[i]) * HX_UG_MPS2 <= 400.0 * HX_G_MPS2) {
                     /* the whole --units value, as the units check names it */
                     hx_csv_layout_t want = r->layout;

@@ -152,6 +152,13 @@ expect_exit 0 "montecarlo with an accelerometer bias in mg" "$H" montecarlo --se
 expect_err "warning: $T/hand2.profile: accel_bias_sigma_mps2 5 is 0.51 g, above any IMU's in-run bias (0.1 g): in mg or ug? the key is in m/s^2 (x 0.00980665 = 0.049 from mg, x 9.80665e-6 = 4.9e-05 from ug)" \
     "an accelerometer bias in mg: warned with the likely unit"
 [ "$(grep -c "above any IMU's" "$T/err")" -eq 1 ] && pass "montecarlo: one warning for its profile" || fail "montecarlo warnings: $(grep -c "above any IMU's" "$T/err")"
+# ... and with two such files, the sensor's and the filter's, once each over
+# the runs (the loader remembers only the file it warned about last: a
+# command that loaded two files by turns would warn at each turn; montecarlo
+# loads each once; 2026-12-02)
+expect_exit 0 "montecarlo with two implausible profiles" "$H" montecarlo --seeds 3 --duration 10 --quiet --profile "$T/hand2.profile" --filter-profile "$T/hand.profile"
+[ "$(grep -c "hand2.profile: accel_bias_sigma_mps2 5 is" "$T/err")" -eq 1 ] && [ "$(grep -c "hand.profile: gyro_noise_rps_rthz 0.0396 is" "$T/err")" -eq 1 ] &&
+    pass "montecarlo: one warning for each of two profiles" || fail "two profiles' warnings: $(grep -c "above any IMU's" "$T/err")"
 expect_exit 0 "replay with the generic profile file" "$H" replay vectors/walk.bin --quiet --profile docs/profiles/generic-mems.profile
 ! grep -q "above any IMU's" "$T/err" && pass "a plausible profile: no warning" || fail "generic-mems.profile warned: $(cat "$T/err")"
 # a profile file whose name has no '/' and no '.' is read as a built-in's

@@ -1017,6 +1017,10 @@ expect_exit 1 "an acceleration of 1e10" sh -c "awk -F, 'NR == 2 { \$2 = 1e10 } {
 expect_err "acc_big.csv:2: column 2 ('1e+10') is beyond 1e+06 in SI units (no sensor reads that)" "an acceleration of 1e10: the reader's limit"
 if grep -q "accel=ug" "$T/err"; then fail "an acceleration of 1e10 asked about ug"; else pass "an acceleration of 1e10 (1e4 g in ug) not asked about ug"; fi
 # the whole walk read as mg (no value beyond the reader's 1e6 once read so): the mean |f|, 1.6 g in the file's ug
+# read as g, the walk meets the limit at once (1e6 g is 9.8e6 m/s^2): it was refused with no hint (2026-12-02)
+expect_exit 1 "the walk in ug, read as g" "$H" replay "$T/in_ug_walk.csv" --quiet --units accel=g --out /dev/null
+expect_err "in_ug_walk.csv:2: column [234] ('[-0-9.e+]*') is beyond 1e+06 in SI units (no sensor reads that; in ug? 1 g is 1e6 ug: give --units accel=ug)" \
+    "the walk in ug read as g: the reader's limit asks about ug"
 expect_exit 1 "accelerometer in ug, read with accel=mg" "$H" replay "$T/in_ug_walk.csv" --quiet --units accel=mg --out /dev/null
 expect_err "the log is not in m/s^2: in ug? (read as mg by --units accel=mg: give --units accel=ug) (docs/log-format.md)" \
     "ug read with accel=mg: named as ug, the remedy naming accel=ug"
