@@ -396,5 +396,27 @@ expect_exit 0 "replay of the .bin.gz" "$H" replay "$T/zw.bin.gz" --json "$T/zw.j
 json "$T/zwjunk.json" '[j[k] for k in ("duration_s", "distance_m", "strides")] == [json.load(open(sys.argv[1].replace("zwjunk", "zw")))[k] for k in ("duration_s", "distance_m", "strides")] and j["duration_s"] > 0' &&
     pass "a .bin.gz with junk: the samples of the .bin.gz" || fail "a .bin.gz with junk: other samples"
 
+# --- a file of another, binary format given as a log (a plot, a zip): no
+# importer's header is found and it is read as CSV, whose error on line 1
+# was "header has no column 't' ... give --from FORMAT for another format,
+# or give its names and units with --columns and --units" (a PNG of
+# docs/img, exit 1): advice no such file can follow. Now it is named as
+# binary data, neither a .bin nor text (exit 1 as before).
+cp "$(ls docs/img/*.png | head -n 1)" "$T/plot.png"
+printf 'PK\003\004\024\000\006\000\010\000\000\000!\000' >"$T/book.xlsx"
+for f in plot.png book.xlsx; do
+    for c in info replay psd; do
+        expect_exit 1 "$c of $f (binary, no log)" "$H" $c "$T/$f"
+        expect_err "$f: binary data, not a log: " "$c: $f said to be binary data"
+        grep -q -- "--columns" "$T/err" && fail "$c: $f: the advice of --columns given" || pass "$c: $f: no --columns advice"
+    done
+done
+expect_exit 1 "convert of plot.png" "$H" convert "$T/plot.png" "$T/plot.csv"
+expect_err "plot.png: binary data, not a log: its first bytes 89 50 4e 47 0d 0a 1a 0a hold 0x1a at byte 7" "convert: the bytes named"
+# a CSV in another layout is still told about --columns
+printf 'stamp;x;y;z\n0;0;0;9.8\n' >"$T/other2.csv"
+expect_exit 1 "info of a text CSV of no known layout" "$H" info "$T/other2.csv"
+expect_err "give its names and units with --columns and --units" "a text CSV of no known layout: --columns advised"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
