@@ -1769,6 +1769,12 @@ int hx_cmd_eval(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    {
+        static const char *const k_file_only[] = { "--plots", NULL };
+        if (hx_refuse_dash("eval", &a, k_file_only) != 0) {
+            return HX_EXIT_USAGE;
+        }
+    }
     rc = hx_nav_opts_from_args("eval", &a, &o);
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;

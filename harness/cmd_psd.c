@@ -665,6 +665,12 @@ int hx_cmd_psd(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    {
+        static const char *const k_file_only[] = { "--plot", NULL };
+        if (hx_refuse_dash(CMD, &a, k_file_only) != 0) {
+            return HX_EXIT_USAGE;
+        }
+    }
     if (hx_check_input_opts(CMD, &a) != 0) {
         return HX_EXIT_USAGE;
     }

@@ -176,6 +176,23 @@ static int find(const hx_args_t *a, const char *name)
     return k;
 }
 
+int hx_refuse_dash(const char *cmd, const hx_args_t *a, const char *const *opts)
+{
+    /* `replay --plot -` wrote a PNG named '-', psd's --plot - made a
+     * directory '-' (a user review, 2026-12-02), as sim's --truth - did
+     * until 2026-11-28 */
+    for (; *opts != NULL; opts++) {
+        const char *v = hx_arg(a, *opts);
+        if (v != NULL && strcmp(v, "-") == 0) {
+            const char *mv = a->spec->opts[find(a, *opts)].metavar;
+            hx_error(cmd, "%s needs a %s name ('-' is not standard output here)", *opts,
+                     mv != NULL && strcmp(mv, "DIR") == 0 ? "directory" : "file");
+            return -1;
+        }
+    }
+    return 0;
+}
+
 const char *hx_arg(const hx_args_t *a, const char *name)
 {
     int k = find(a, name);

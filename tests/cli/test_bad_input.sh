@@ -418,5 +418,33 @@ printf 'stamp;x;y;z\n0;0;0;9.8\n' >"$T/other2.csv"
 expect_exit 1 "info of a text CSV of no known layout" "$H" info "$T/other2.csv"
 expect_err "give its names and units with --columns and --units" "a text CSV of no known layout: --columns advised"
 
+# --- '-' given to an output option that cannot write to standard output:
+# `replay --plot -` wrote a PNG named '-' (exit 0), as did allan's, psd's
+# (a directory '-'), montecarlo's and simgap's --plot, allan's --profile,
+# simgap-validate's --markdown and eval's --plots, and live took --plot -
+# and --record -; sim refused its --truth - already. Now each is a usage
+# error naming the option, exit 2, before anything is read or written (run
+# in an empty directory, which stays empty).
+HA=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")
+W=$(pwd)/vectors/walk.bin
+mkdir "$T/dash"
+dash() { # description expected-option command...: exit 2, the option named, no '-' made
+    what=$1; opt=$2; shift 2
+    expect_exit 2 "$what" sh -c 'cd "$1" && shift && exec "$@"' sh "$T/dash" "$@"
+    expect_err "error: $opt needs a .* name ('-' is not standard output here" "$what: the option named"
+    if [ -e "$T/dash/-" ]; then fail "$what: a file '-' made"; rm -rf "$T/dash/-"; else pass "$what: no file '-' made"; fi
+}
+dash "replay --plot -" --plot "$HA" replay "$W" --quiet --plot -
+dash "allan --plot -" --plot "$HA" allan "$W" --quiet --no-sim --plot -
+dash "allan --profile -" --profile "$HA" allan "$W" --quiet --no-sim --profile -
+dash "psd --plot -" --plot "$HA" psd "$W" --plot -
+dash "montecarlo --plot -" --plot "$HA" montecarlo --duration 12 --seeds 2 --quiet --plot -
+dash "simgap --plot -" --plot "$HA" simgap "$W" --quiet --plot -
+dash "simgap-validate --markdown -" --markdown "$HA" simgap-validate --cases 1 --quiet --markdown -
+dash "eval --plots -" --plots "$HA" eval --data "$T/nodata" --out "$T/r.md" --plots -
+dash "live --plot -" --plot "$HA" live "$T/noport" --plot -
+dash "live --record -" --record "$HA" live "$T/noport" --record -
+dash "sim --truth -" --truth "$HA" sim --duration 2 --out "$T/s.csv" --truth -
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
