@@ -293,8 +293,8 @@ static int parse_m_list(run_t *R, const char *list)
         R->grid[R->ngrid++] = (uint32_t)v;
     }
     if (i < L.n || R->ngrid == 0) {
-        hx_error(CMD, "--m must be positive whole numbers separated by commas, strictly ascending, at most %d",
-                 GRID_MAX);
+        hx_error(CMD, "--m must be positive whole numbers separated by commas, strictly ascending, at most %d, not '%s'",
+                 GRID_MAX, list);
         return -1;
     }
     return 0;
@@ -2415,7 +2415,7 @@ int hx_cmd_allan(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     if (per_octave == 3) {
-        hx_error(CMD, "--per-octave must be 1, 2 or 4");
+        hx_error(CMD, "--per-octave must be 1, 2 or 4, not '%s'", hx_arg(&a, "--per-octave"));
         free(R);
         return HX_EXIT_USAGE;
     }
@@ -2468,7 +2468,7 @@ int hx_cmd_allan(int argc, char **argv)
     R->exact = series != NULL;
     if ((s_est = hx_arg(&a, "--estimator")) != NULL) {
         if (strcmp(s_est, "exact") != 0 && strcmp(s_est, "streaming") != 0) {
-            hx_error(CMD, "--estimator must be exact or streaming");
+            hx_error(CMD, "--estimator must be exact or streaming, not '%s'", s_est);
             free(R);
             return HX_EXIT_USAGE;
         }

@@ -678,7 +678,7 @@ int hx_cmd_psd(int argc, char **argv)
     st.exclude_dc = 0;
     if (hx_arg_long(&a, "--nfft", 8, FNAV_WELCH_MAX_NFFT, &nfft) != 0 || (nfft & (nfft - 1)) != 0) {
         if ((nfft & (nfft - 1)) != 0) {
-            hx_error(CMD, "--nfft must be a power of two in 8..%d", FNAV_WELCH_MAX_NFFT);
+            hx_error(CMD, "--nfft must be a power of two in 8..%d, not '%s'", FNAV_WELCH_MAX_NFFT, hx_arg(&a, "--nfft"));
         }
         return HX_EXIT_USAGE;
     }
@@ -695,7 +695,8 @@ int hx_cmd_psd(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     if ((spec_nfft & (spec_nfft - 1)) != 0) {
-        hx_error(CMD, "--spec-nfft must be a power of two in 8..%d", FNAV_WELCH_MAX_NFFT);
+        hx_error(CMD, "--spec-nfft must be a power of two in 8..%d, not '%s'", FNAV_WELCH_MAX_NFFT,
+                 hx_arg(&a, "--spec-nfft"));
         return HX_EXIT_USAGE;
     }
     st.wc.nfft = (uint32_t)nfft;
@@ -708,13 +709,13 @@ int hx_cmd_psd(int argc, char **argv)
         } else if (strcmp(s, "rect") == 0) {
             st.wc.window = FNAV_WINDOW_RECT;
         } else {
-            hx_error(CMD, "--window must be hamming, hann or rect");
+            hx_error(CMD, "--window must be hamming, hann or rect, not '%s'", s);
             return HX_EXIT_USAGE;
         }
     }
     st.wc.symmetric = hx_flag(&a, "--symmetric");
     if ((s = hx_arg(&a, "--dc")) != NULL && (dc_mode = parse_dc(s, &st)) < 0) {
-        hx_error(CMD, "--dc must be segment, linear, global, none or exclude");
+        hx_error(CMD, "--dc must be segment, linear, global, none or exclude, not '%s'", s);
         return HX_EXIT_USAGE;
     }
     if (st.wc.symmetric && st.wc.detrend == FNAV_DETREND_GLOBAL) {
@@ -728,7 +729,7 @@ int hx_cmd_psd(int argc, char **argv)
             }
         }
         if (spec_axis < 0) {
-            hx_error(CMD, "--spec-axis must be one of ax, ay, az, gx, gy, gz");
+            hx_error(CMD, "--spec-axis must be one of ax, ay, az, gx, gy, gz, not '%s'", s);
             return HX_EXIT_USAGE;
         }
     }

@@ -446,5 +446,26 @@ dash "live --plot -" --plot "$HA" live "$T/noport" --plot -
 dash "live --record -" --record "$HA" live "$T/noport" --record -
 dash "sim --truth -" --truth "$HA" sim --duration 2 --out "$T/s.csv" --truth -
 
+# --- an option value refused by a rule of its own (a power of two, a word
+# of a list) is named, as a number out of range is (docs/harness.md,
+# "Numbers"): `psd --nfft 100` said "--nfft must be a power of two in
+# 8..4096" and `allan --m 10,1` "--m must be positive whole numbers ...",
+# without the value given (exit 2, as still).
+bad_value() { # description expected-stderr command...
+    bv_what=$1; bv_want=$2; shift 2
+    expect_exit 2 "$bv_what" "$@"
+    expect_err "$bv_want" "$bv_what: the value named"
+}
+bad_value "psd --nfft 100" "error: --nfft must be a power of two in 8..4096, not '100'" "$H" psd vectors/walk.bin --nfft 100
+bad_value "psd --spec-nfft 100" "error: --spec-nfft must be a power of two in 8..4096, not '100'" "$H" psd vectors/walk.bin --spec-nfft 100 --plot "$T/p"
+bad_value "psd --window hanning" "error: --window must be hamming, hann or rect, not 'hanning'" "$H" psd vectors/walk.bin --window hanning
+bad_value "psd --dc mean" "error: --dc must be segment, linear, global, none or exclude, not 'mean'" "$H" psd vectors/walk.bin --dc mean
+bad_value "psd --spec-axis x" "error: --spec-axis must be one of ax, ay, az, gx, gy, gz, not 'x'" "$H" psd vectors/walk.bin --spec-axis x --plot "$T/p"
+bad_value "allan --per-octave 3" "error: --per-octave must be 1, 2 or 4, not '3'" "$H" allan vectors/walk.bin --per-octave 3
+bad_value "allan --estimator fast" "error: --estimator must be exact or streaming, not 'fast'" "$H" allan vectors/walk.bin --estimator fast
+bad_value "allan --m 10,1" "error: --m must be positive whole numbers separated by commas, strictly ascending, at most [0-9]*, not '10,1'" "$H" allan vectors/walk.bin --estimator exact --m 10,1
+bad_value "sim --mount 0,10" "error: --mount needs R,P,Y in degrees, e.g. --mount 0,10,90, not '0,10'" "$H" sim --out "$T/m.csv" --mount 0,10
+[ -e "$T/p" ] && fail "psd: the refused run made its plot directory" || pass "psd: no plot directory made"
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
