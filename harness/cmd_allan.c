@@ -293,7 +293,9 @@ static int parse_m_list(run_t *R, const char *list)
         R->grid[R->ngrid++] = (uint32_t)v;
     }
     if (i < L.n || R->ngrid == 0) {
-        hx_error(CMD, "--m must be positive whole numbers separated by commas, strictly ascending, at most %d, not '%s'",
+        hx_error(CMD,
+                 "--m must be positive whole numbers separated by commas, strictly ascending, at most %d, "
+                 "not '%s'",
                  GRID_MAX, list);
         return -1;
     }

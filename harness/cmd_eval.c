@@ -1844,7 +1844,9 @@ int hx_cmd_eval(int argc, char **argv)
             } else if (!S_ISDIR(st.st_mode)) {
                 hx_error("eval", "no shared data in %s: it is not a directory%s", ev.data, hint);
             } else {
-                hx_error("eval", "no shared data in %s (neither MANIFEST.md nor a data set folder such as openshoe_gx2)%s",
+                hx_error("eval",
+                         "no shared data in %s (neither MANIFEST.md nor a data set folder such as "
+                         "openshoe_gx2)%s",
                          ev.data, hint);
             }
             return HX_EXIT_UNAVAIL;

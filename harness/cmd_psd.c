@@ -678,7 +678,8 @@ int hx_cmd_psd(int argc, char **argv)
     st.exclude_dc = 0;
     if (hx_arg_long(&a, "--nfft", 8, FNAV_WELCH_MAX_NFFT, &nfft) != 0 || (nfft & (nfft - 1)) != 0) {
         if ((nfft & (nfft - 1)) != 0) {
-            hx_error(CMD, "--nfft must be a power of two in 8..%d, not '%s'", FNAV_WELCH_MAX_NFFT, hx_arg(&a, "--nfft"));
+            hx_error(CMD, "--nfft must be a power of two in 8..%d, not '%s'", FNAV_WELCH_MAX_NFFT,
+                     hx_arg(&a, "--nfft"));
         }
         return HX_EXIT_USAGE;
     }
