@@ -467,5 +467,19 @@ bad_value "allan --m 10,1" "error: --m must be positive whole numbers separated 
 bad_value "sim --mount 0,10" "error: --mount needs R,P,Y in degrees, e.g. --mount 0,10,90, not '0,10'" "$H" sim --out "$T/m.csv" --mount 0,10
 [ -e "$T/p" ] && fail "psd: the refused run made its plot directory" || pass "psd: no plot directory made"
 
+# --- psd's and allan's --out CSV onto a full disk: the error gave no reason
+# ("harness psd: error: /dev/full: write failed"), where every other
+# output's says why, as sim's above; the JSON is still written (exit 3)
+if [ -w /dev/full ]; then
+    expect_exit 3 "psd --out onto a full disk" "$H" psd vectors/walk.bin --out /dev/full --json "$T/pfull.json"
+    expect_err "^harness psd: error: /dev/full: write failed (No space left on device)$" "psd: the CSV's failed write said with its reason"
+    json "$T/pfull.json" 'j["samples"] > 0' && pass "psd: the JSON written beside the failed CSV" || fail "psd: no JSON beside the failed CSV"
+    expect_exit 3 "allan --out onto a full disk" "$H" allan vectors/walk.bin --no-sim --quiet --out /dev/full --json "$T/afull.json"
+    expect_err "^harness allan: error: /dev/full: write failed (No space left on device)$" "allan: the CSV's failed write said with its reason"
+    [ -s "$T/afull.json" ] && pass "allan: the JSON written beside the failed CSV" || fail "allan: no JSON beside the failed CSV"
+else
+    echo "skip the full-disk checks of psd and allan (no /dev/full)"
+fi
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"
