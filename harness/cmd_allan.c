@@ -293,8 +293,10 @@ static int parse_m_list(run_t *R, const char *list)
         R->grid[R->ngrid++] = (uint32_t)v;
     }
     if (i < L.n || R->ngrid == 0) {
-        hx_error(CMD, "--m must be positive whole numbers separated by commas, strictly ascending, at most %d",
-                 GRID_MAX);
+        hx_error(CMD,
+                 "--m must be positive whole numbers separated by commas, strictly ascending, at most %d, "
+                 "not '%s'",
+                 GRID_MAX, list);
         return -1;
     }
     return 0;
@@ -1483,7 +1485,12 @@ static int write_csv(const run_t *R, const char *path)
         }
     }
     if (hx_out_close(f) != 0) {
-        hx_error(CMD, "%s: write failed", strcmp(path, "-") == 0 ? "standard output" : path);
+        /* the reason, as every other output's error gives it (it said
+         * "write failed" alone; a user review, 2026-12-02): errno of the
+         * failed write or close */
+        const int e = errno;
+        hx_error(CMD, "%s: write failed%s%s%s", strcmp(path, "-") == 0 ? "standard output" : path, e != 0 ? " (" : "",
+                 e != 0 ? strerror(e) : "", e != 0 ? ")" : "");
         return -1;
     }
     return 0;
@@ -2338,6 +2345,12 @@ int hx_cmd_allan(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    {
+        static const char *const k_file_only[] = { "--plot", "--profile", NULL };
+        if (hx_refuse_dash(CMD, &a, k_file_only) != 0) {
+            return HX_EXIT_USAGE;
+        }
+    }
     if (hx_check_input_opts(CMD, &a) != 0) {
         return HX_EXIT_USAGE;
     }
@@ -2409,7 +2422,7 @@ int hx_cmd_allan(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     if (per_octave == 3) {
-        hx_error(CMD, "--per-octave must be 1, 2 or 4");
+        hx_error(CMD, "--per-octave must be 1, 2 or 4, not '%s'", hx_arg(&a, "--per-octave"));
         free(R);
         return HX_EXIT_USAGE;
     }
@@ -2462,7 +2475,7 @@ int hx_cmd_allan(int argc, char **argv)
     R->exact = series != NULL;
     if ((s_est = hx_arg(&a, "--estimator")) != NULL) {
         if (strcmp(s_est, "exact") != 0 && strcmp(s_est, "streaming") != 0) {
-            hx_error(CMD, "--estimator must be exact or streaming");
+            hx_error(CMD, "--estimator must be exact or streaming, not '%s'", s_est);
             free(R);
             return HX_EXIT_USAGE;
         }

@@ -1769,6 +1769,12 @@ int hx_cmd_eval(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    {
+        static const char *const k_file_only[] = { "--plots", NULL };
+        if (hx_refuse_dash("eval", &a, k_file_only) != 0) {
+            return HX_EXIT_USAGE;
+        }
+    }
     rc = hx_nav_opts_from_args("eval", &a, &o);
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
@@ -1828,7 +1834,21 @@ int hx_cmd_eval(int argc, char **argv)
             }
         }
         if (f == NULL && d == NULL) {
-            hx_error("eval", "no shared data in %s (give --data DIR or set FNAV_DATA_DIR)", ev.data);
+            /* a --data that does not exist, or is a file, was told "no
+             * shared data in DIR (give --data DIR ...)" as a directory
+             * without the data was (a user review, 2026-12-02) */
+            const char *hint = hx_arg(&a, "--data") == NULL ? "; give --data DIR or set FNAV_DATA_DIR" : "";
+            struct stat st;
+            if (stat(ev.data, &st) != 0) {
+                hx_error("eval", "no shared data in %s: it does not exist (%s)%s", ev.data, strerror(errno), hint);
+            } else if (!S_ISDIR(st.st_mode)) {
+                hx_error("eval", "no shared data in %s: it is not a directory%s", ev.data, hint);
+            } else {
+                hx_error("eval",
+                         "no shared data in %s (neither MANIFEST.md nor a data set folder such as "
+                         "openshoe_gx2)%s",
+                         ev.data, hint);
+            }
             return HX_EXIT_UNAVAIL;
         }
         if (f != NULL) {

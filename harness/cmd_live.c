@@ -700,6 +700,12 @@ int hx_cmd_live(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    {
+        static const char *const k_file_only[] = { "--plot", "--record", NULL };
+        if (hx_refuse_dash(CMD, &a, k_file_only) != 0) {
+            return HX_EXIT_USAGE;
+        }
+    }
     if (hx_arg_long(&a, "--baud", 50, 20000000, &baud) != 0 ||
         hx_arg_double(&a, "--plot-every", 0.1, 3600.0, &plot_every) != 0 ||
         hx_arg_double(&a, "--timeout", 0.1, 1e6, &timeout) != 0 ||

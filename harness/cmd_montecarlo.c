@@ -611,6 +611,12 @@ int hx_cmd_montecarlo(int argc, char **argv)
     if (pr != 0) {
         return pr > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    {
+        static const char *const k_file_only[] = { "--plot", NULL };
+        if (hx_refuse_dash("montecarlo", &a, k_file_only) != 0) {
+            return HX_EXIT_USAGE;
+        }
+    }
     if (hx_sim_setup_from_args("montecarlo", &a, &su) != 0) {
         return HX_EXIT_USAGE;
     }

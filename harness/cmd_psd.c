@@ -331,7 +331,12 @@ static int write_csv(const char *path, const result_t *r, const char *src)
         fprintf(f, "\n");
     }
     if (hx_out_close(f) != 0) {
-        hx_error(CMD, "%s: write failed", strcmp(path, "-") == 0 ? "standard output" : path);
+        /* the reason, as every other output's error gives it (it said
+         * "write failed" alone; a user review, 2026-12-02): errno of the
+         * failed write or close */
+        const int e = errno;
+        hx_error(CMD, "%s: write failed%s%s%s", strcmp(path, "-") == 0 ? "standard output" : path, e != 0 ? " (" : "",
+                 e != 0 ? strerror(e) : "", e != 0 ? ")" : "");
         return -1;
     }
     return 0;
@@ -665,6 +670,12 @@ int hx_cmd_psd(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    {
+        static const char *const k_file_only[] = { "--plot", NULL };
+        if (hx_refuse_dash(CMD, &a, k_file_only) != 0) {
+            return HX_EXIT_USAGE;
+        }
+    }
     if (hx_check_input_opts(CMD, &a) != 0) {
         return HX_EXIT_USAGE;
     }
@@ -672,7 +683,8 @@ int hx_cmd_psd(int argc, char **argv)
     st.exclude_dc = 0;
     if (hx_arg_long(&a, "--nfft", 8, FNAV_WELCH_MAX_NFFT, &nfft) != 0 || (nfft & (nfft - 1)) != 0) {
         if ((nfft & (nfft - 1)) != 0) {
-            hx_error(CMD, "--nfft must be a power of two in 8..%d", FNAV_WELCH_MAX_NFFT);
+            hx_error(CMD, "--nfft must be a power of two in 8..%d, not '%s'", FNAV_WELCH_MAX_NFFT,
+                     hx_arg(&a, "--nfft"));
         }
         return HX_EXIT_USAGE;
     }
@@ -689,7 +701,8 @@ int hx_cmd_psd(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     if ((spec_nfft & (spec_nfft - 1)) != 0) {
-        hx_error(CMD, "--spec-nfft must be a power of two in 8..%d", FNAV_WELCH_MAX_NFFT);
+        hx_error(CMD, "--spec-nfft must be a power of two in 8..%d, not '%s'", FNAV_WELCH_MAX_NFFT,
+                 hx_arg(&a, "--spec-nfft"));
         return HX_EXIT_USAGE;
     }
     st.wc.nfft = (uint32_t)nfft;
@@ -702,13 +715,13 @@ int hx_cmd_psd(int argc, char **argv)
         } else if (strcmp(s, "rect") == 0) {
             st.wc.window = FNAV_WINDOW_RECT;
         } else {
-            hx_error(CMD, "--window must be hamming, hann or rect");
+            hx_error(CMD, "--window must be hamming, hann or rect, not '%s'", s);
             return HX_EXIT_USAGE;
         }
     }
     st.wc.symmetric = hx_flag(&a, "--symmetric");
     if ((s = hx_arg(&a, "--dc")) != NULL && (dc_mode = parse_dc(s, &st)) < 0) {
-        hx_error(CMD, "--dc must be segment, linear, global, none or exclude");
+        hx_error(CMD, "--dc must be segment, linear, global, none or exclude, not '%s'", s);
         return HX_EXIT_USAGE;
     }
     if (st.wc.symmetric && st.wc.detrend == FNAV_DETREND_GLOBAL) {
@@ -722,7 +735,7 @@ int hx_cmd_psd(int argc, char **argv)
             }
         }
         if (spec_axis < 0) {
-            hx_error(CMD, "--spec-axis must be one of ax, ay, az, gx, gy, gz");
+            hx_error(CMD, "--spec-axis must be one of ax, ay, az, gx, gy, gz, not '%s'", s);
             return HX_EXIT_USAGE;
         }
     }

@@ -61,6 +61,12 @@ int hx_cmd_replay(int argc, char **argv)
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    {
+        static const char *const k_file_only[] = { "--plot", NULL };
+        if (hx_refuse_dash("replay", &a, k_file_only) != 0) {
+            return HX_EXIT_USAGE;
+        }
+    }
     rc = hx_nav_opts_from_args("replay", &a, &o);
     if (rc != 0) {
         return rc > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;

@@ -60,6 +60,12 @@ int hx_cmd_simgap(int argc, char **argv)
     if (pr != 0) {
         return pr > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    {
+        static const char *const k_file_only[] = { "--plot", NULL };
+        if (hx_refuse_dash("simgap", &a, k_file_only) != 0) {
+            return HX_EXIT_USAGE;
+        }
+    }
     if (hx_check_input_opts("simgap", &a) != 0 || hx_arg_long(&a, "--seeds", 3, 60, &seeds) != 0 ||
         hx_arg_long(&a, "--seed", 0, 2000000000L, &seed) != 0 || hx_arg_double(&a, "--fit-frac", 0.2, 0.9, &frac) != 0 ||
         hx_arg_double(&a, "--alpha", 1e-6, 0.5, &alpha) != 0 || hx_arg_long(&a, "--max-effects", 0, SG_MAX_STEPS, &steps) != 0 ||

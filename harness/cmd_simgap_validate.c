@@ -75,6 +75,12 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     if (pr != 0) {
         return pr > 0 ? HX_EXIT_OK : HX_EXIT_USAGE;
     }
+    {
+        static const char *const k_file_only[] = { "--markdown", NULL };
+        if (hx_refuse_dash("simgap-validate", &a, k_file_only) != 0) {
+            return HX_EXIT_USAGE;
+        }
+    }
     if (hx_arg_long(&a, "--cases", 1, 100000, &n) != 0 || hx_arg_long(&a, "--seed", 0, 2000000000L, &seed) != 0 ||
         hx_arg_double(&a, "--duration", 10.0, 1e6, &o.duration_s) != 0 ||
         hx_arg_double(&a, "--rate", 10.0, 1e5, &o.rate_hz) != 0 ||

@@ -142,6 +142,18 @@ int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
             hx_usage(spec, stderr);
             return -1;
         }
+        if (s[0] == '\0') {
+            /* `harness replay "$LOG"` with LOG unset: the empty name
+             * reached fopen, ": cannot read (No such file or directory)",
+             * exit 1 (exit 3 for convert's OUT, live's and stream's PORT),
+             * naming no file, where an empty option value is a usage error
+             * (a user review, 2026-12-02) */
+            char what[32];
+            missing_name(spec->usage, a->npos, what, sizeof what);
+            hx_error(spec->name, "argument%s%s is empty", what[0] != '\0' ? " " : "", what);
+            hx_usage(spec, stderr);
+            return -1;
+        }
         a->pos[a->npos++] = s;
     }
     if (a->npos < spec->min_pos) {
@@ -162,6 +174,23 @@ static int find(const hx_args_t *a, const char *name)
         abort();
     }
     return k;
+}
+
+int hx_refuse_dash(const char *cmd, const hx_args_t *a, const char *const *opts)
+{
+    /* `replay --plot -` wrote a PNG named '-', psd's --plot - made a
+     * directory '-' (a user review, 2026-12-02), as sim's --truth - did
+     * until 2026-11-28 */
+    for (; *opts != NULL; opts++) {
+        const char *v = hx_arg(a, *opts);
+        if (v != NULL && strcmp(v, "-") == 0) {
+            const char *mv = a->spec->opts[find(a, *opts)].metavar;
+            hx_error(cmd, "%s needs a %s name ('-' is not standard output here)", *opts,
+                     mv != NULL && strcmp(mv, "DIR") == 0 ? "directory" : "file");
+            return -1;
+        }
+    }
+    return 0;
 }
 
 const char *hx_arg(const hx_args_t *a, const char *name)

@@ -228,6 +228,11 @@ int hx_output_is_input(const char *cmd, const char *input, const hx_args_t *a, c
  *  it is, none is left behind); -1 with the error printed. For outputs
  *  written only after long work, or by a child process. */
 int hx_check_writable(const char *cmd, const char *path);
+/** -1, after a usage error naming it, when one of the output options
+ *  `opts` (NULL-ended) given in `a` is "-": options that write only to a
+ *  file or directory (a PNG, a profile), where '-' would make a file named
+ *  '-'; else 0. The caller exits HX_EXIT_USAGE before anything is read. */
+int hx_refuse_dash(const char *cmd, const hx_args_t *a, const char *const *opts);
 /** hx_check_writable for each option of `files` (NULL-ended) given in `a`
  *  with a file name ("-", standard output, is not checked), and
  *  hx_plot_check for each of `pngs`: the outputs a command writes after its

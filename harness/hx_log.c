@@ -2143,6 +2143,20 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
 
 /* ------------------------------------------------------------ public */
 
+/* The index of the first byte among b[0..n) that no text log holds (a
+ * control character but tab, line feed, vertical tab, form feed and
+ * carriage return; DEL), or -1. */
+static long binary_at(const unsigned char *b, size_t n)
+{
+    size_t k;
+    for (k = 0; k < n; k++) {
+        if ((b[k] < 0x20 && (b[k] < 0x09 || b[k] > 0x0d)) || b[k] == 0x7f) {
+            return (long)k;
+        }
+    }
+    return -1;
+}
+
 static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, char *err, size_t err_size)
 {
     hx_reader_t *r;
@@ -2234,6 +2248,20 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         if (!guessed || (fmt == HX_FMT_CSV && (r->missing_col != 0 || r->layout.option != NULL))) {
             /* given with --from, or our CSV known by its 't' column */
             snprintf(err, err_size, "%s", r->err);
+        } else if (fmt == HX_FMT_CSV && binary_at(head, (size_t)got) >= 0) {
+            /* a PNG, a zip given as a log: it was told "header has no
+             * column 't' ... give its names and units with --columns",
+             * which no such file can follow (a user review, 2026-12-02) */
+            size_t at = (size_t)binary_at(head, (size_t)got), k, n = got < 8 ? (size_t)got : 8;
+            char hex[3 * 8 + 1];
+            hex[0] = '\0';
+            for (k = 0; k < n; k++) {
+                snprintf(hex + strlen(hex), sizeof hex - strlen(hex), "%s%02x", k > 0 ? " " : "", head[k]);
+            }
+            snprintf(err, err_size,
+                     "%s: binary data, not a log: its first bytes %s hold 0x%02x at byte %lu, which no text log "
+                     "holds, and a footnav .bin starts with FNAV (the formats read: docs/log-format.md)",
+                     path, hex, head[at], (unsigned long)at + 1);
         } else if (fmt == HX_FMT_CSV) {
             /* --from alone left a layout no importer reads (a phone app's
              * export) without a way (a contributor's review, 2026-11-30) */

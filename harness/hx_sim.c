@@ -647,7 +647,7 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         m->turn.ring_mps2 *= v;
     }
     if (hx_arg(a, "--mount") != NULL && parse_triple(hx_arg(a, "--mount"), s->motion_cfg.mount_deg) != 0) {
-        hx_error(cmd, "--mount needs R,P,Y in degrees, e.g. --mount 0,10,90");
+        hx_error(cmd, "--mount needs R,P,Y in degrees, e.g. --mount 0,10,90, not '%s'", hx_arg(a, "--mount"));
         return -1;
     }
     if (hx_arg(a, "--mount") != NULL) {

@@ -396,5 +396,90 @@ expect_exit 0 "replay of the .bin.gz" "$H" replay "$T/zw.bin.gz" --json "$T/zw.j
 json "$T/zwjunk.json" '[j[k] for k in ("duration_s", "distance_m", "strides")] == [json.load(open(sys.argv[1].replace("zwjunk", "zw")))[k] for k in ("duration_s", "distance_m", "strides")] and j["duration_s"] > 0' &&
     pass "a .bin.gz with junk: the samples of the .bin.gz" || fail "a .bin.gz with junk: other samples"
 
+# --- a file of another, binary format given as a log (a plot, a zip): no
+# importer's header is found and it is read as CSV, whose error on line 1
+# was "header has no column 't' ... give --from FORMAT for another format,
+# or give its names and units with --columns and --units" (a PNG of
+# docs/img, exit 1): advice no such file can follow. Now it is named as
+# binary data, neither a .bin nor text (exit 1 as before).
+cp "$(ls docs/img/*.png | head -n 1)" "$T/plot.png"
+printf 'PK\003\004\024\000\006\000\010\000\000\000!\000' >"$T/book.xlsx"
+for f in plot.png book.xlsx; do
+    for c in info replay psd; do
+        expect_exit 1 "$c of $f (binary, no log)" "$H" $c "$T/$f"
+        expect_err "$f: binary data, not a log: " "$c: $f said to be binary data"
+        grep -q -- "--columns" "$T/err" && fail "$c: $f: the advice of --columns given" || pass "$c: $f: no --columns advice"
+    done
+done
+expect_exit 1 "convert of plot.png" "$H" convert "$T/plot.png" "$T/plot.csv"
+expect_err "plot.png: binary data, not a log: its first bytes 89 50 4e 47 0d 0a 1a 0a hold 0x1a at byte 7" "convert: the bytes named"
+# a CSV in another layout is still told about --columns
+printf 'stamp;x;y;z\n0;0;0;9.8\n' >"$T/other2.csv"
+expect_exit 1 "info of a text CSV of no known layout" "$H" info "$T/other2.csv"
+expect_err "give its names and units with --columns and --units" "a text CSV of no known layout: --columns advised"
+
+# --- '-' given to an output option that cannot write to standard output:
+# `replay --plot -` wrote a PNG named '-' (exit 0), as did allan's, psd's
+# (a directory '-'), montecarlo's and simgap's --plot, allan's --profile,
+# simgap-validate's --markdown and eval's --plots, and live took --plot -
+# and --record -; sim refused its --truth - already. Now each is a usage
+# error naming the option, exit 2, before anything is read or written (run
+# in an empty directory, which stays empty).
+HA=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")
+W=$(pwd)/vectors/walk.bin
+mkdir "$T/dash"
+dash() { # description expected-option command...: exit 2, the option named, no '-' made
+    what=$1; opt=$2; shift 2
+    expect_exit 2 "$what" sh -c 'cd "$1" && shift && exec "$@"' sh "$T/dash" "$@"
+    expect_err "error: $opt needs a .* name ('-' is not standard output here" "$what: the option named"
+    if [ -e "$T/dash/-" ]; then fail "$what: a file '-' made"; rm -rf "$T/dash/-"; else pass "$what: no file '-' made"; fi
+}
+dash "replay --plot -" --plot "$HA" replay "$W" --quiet --plot -
+dash "allan --plot -" --plot "$HA" allan "$W" --quiet --no-sim --plot -
+dash "allan --profile -" --profile "$HA" allan "$W" --quiet --no-sim --profile -
+dash "psd --plot -" --plot "$HA" psd "$W" --plot -
+dash "montecarlo --plot -" --plot "$HA" montecarlo --duration 12 --seeds 2 --quiet --plot -
+dash "simgap --plot -" --plot "$HA" simgap "$W" --quiet --plot -
+dash "simgap-validate --markdown -" --markdown "$HA" simgap-validate --cases 1 --quiet --markdown -
+dash "eval --plots -" --plots "$HA" eval --data "$T/nodata" --out "$T/r.md" --plots -
+dash "live --plot -" --plot "$HA" live "$T/noport" --plot -
+dash "live --record -" --record "$HA" live "$T/noport" --record -
+dash "sim --truth -" --truth "$HA" sim --duration 2 --out "$T/s.csv" --truth -
+
+# --- an option value refused by a rule of its own (a power of two, a word
+# of a list) is named, as a number out of range is (docs/harness.md,
+# "Numbers"): `psd --nfft 100` said "--nfft must be a power of two in
+# 8..4096" and `allan --m 10,1` "--m must be positive whole numbers ...",
+# without the value given (exit 2, as still).
+bad_value() { # description expected-stderr command...
+    bv_what=$1; bv_want=$2; shift 2
+    expect_exit 2 "$bv_what" "$@"
+    expect_err "$bv_want" "$bv_what: the value named"
+}
+bad_value "psd --nfft 100" "error: --nfft must be a power of two in 8..4096, not '100'" "$H" psd vectors/walk.bin --nfft 100
+bad_value "psd --spec-nfft 100" "error: --spec-nfft must be a power of two in 8..4096, not '100'" "$H" psd vectors/walk.bin --spec-nfft 100 --plot "$T/p"
+bad_value "psd --window hanning" "error: --window must be hamming, hann or rect, not 'hanning'" "$H" psd vectors/walk.bin --window hanning
+bad_value "psd --dc mean" "error: --dc must be segment, linear, global, none or exclude, not 'mean'" "$H" psd vectors/walk.bin --dc mean
+bad_value "psd --spec-axis x" "error: --spec-axis must be one of ax, ay, az, gx, gy, gz, not 'x'" "$H" psd vectors/walk.bin --spec-axis x --plot "$T/p"
+bad_value "allan --per-octave 3" "error: --per-octave must be 1, 2 or 4, not '3'" "$H" allan vectors/walk.bin --per-octave 3
+bad_value "allan --estimator fast" "error: --estimator must be exact or streaming, not 'fast'" "$H" allan vectors/walk.bin --estimator fast
+bad_value "allan --m 10,1" "error: --m must be positive whole numbers separated by commas, strictly ascending, at most [0-9]*, not '10,1'" "$H" allan vectors/walk.bin --estimator exact --m 10,1
+bad_value "sim --mount 0,10" "error: --mount needs R,P,Y in degrees, e.g. --mount 0,10,90, not '0,10'" "$H" sim --out "$T/m.csv" --mount 0,10
+[ -e "$T/p" ] && fail "psd: the refused run made its plot directory" || pass "psd: no plot directory made"
+
+# --- psd's and allan's --out CSV onto a full disk: the error gave no reason
+# ("harness psd: error: /dev/full: write failed"), where every other
+# output's says why, as sim's above; the JSON is still written (exit 3)
+if [ -w /dev/full ]; then
+    expect_exit 3 "psd --out onto a full disk" "$H" psd vectors/walk.bin --out /dev/full --json "$T/pfull.json"
+    expect_err "^harness psd: error: /dev/full: write failed (No space left on device)$" "psd: the CSV's failed write said with its reason"
+    json "$T/pfull.json" 'j["samples"] > 0' && pass "psd: the JSON written beside the failed CSV" || fail "psd: no JSON beside the failed CSV"
+    expect_exit 3 "allan --out onto a full disk" "$H" allan vectors/walk.bin --no-sim --quiet --out /dev/full --json "$T/afull.json"
+    expect_err "^harness allan: error: /dev/full: write failed (No space left on device)$" "allan: the CSV's failed write said with its reason"
+    [ -s "$T/afull.json" ] && pass "allan: the JSON written beside the failed CSV" || fail "allan: no JSON beside the failed CSV"
+else
+    echo "skip the full-disk checks of psd and allan (no /dev/full)"
+fi
+
 if [ "$fails" -ne 0 ]; then echo "test_bad_input.sh: $fails failure(s)"; exit 1; fi
 echo "test_bad_input.sh: all passed"

@@ -315,6 +315,19 @@ still "$T/nof/openshoe_square2/s.csv"
 expect_exit 3 "eval --out in a missing directory" "$H" eval --no-experiments --no-plots --data "$T/nof" --out "$T/no/such/r.md"
 expect_err "^harness eval: error: cannot write $T/no/such/r.md (No such file or directory)$" "eval --out in a missing directory: the reason"
 
+# a --data that does not exist, or is a file: said so (exit 4 as before).
+# It read "no shared data in DIR (give --data DIR or set FNAV_DATA_DIR)",
+# as for a directory without the data, to a user who gave --data
+expect_exit 4 "eval --data of a missing directory" "$H" eval --no-experiments --no-plots --data "$T/typo" --out "$T/typo.md"
+expect_err "^harness eval: error: no shared data in $T/typo: it does not exist (No such file or directory)$" "eval --data missing: said"
+echo x >"$T/afile"
+expect_exit 4 "eval --data of a file" "$H" eval --no-experiments --no-plots --data "$T/afile" --out "$T/typo.md"
+expect_err "^harness eval: error: no shared data in $T/afile: it is not a directory$" "eval --data a file: said"
+[ -e "$T/typo.md" ] && fail "eval --data missing: results written" || pass "eval --data missing: no results file"
+mkdir -p "$T/emptydir"
+expect_exit 4 "eval --data of an empty directory" "$H" eval --no-experiments --no-plots --data "$T/emptydir" --out "$T/typo.md"
+expect_err "no shared data in $T/emptydir (neither MANIFEST.md nor a data set folder" "eval --data empty: what is missing said"
+
 # a data directory with its MANIFEST.md and set folders but not one walk
 # (a copy not synced): nothing to run on, exit 4, the results file left as
 # it was (it was overwritten with "no data" everywhere, exit 0)

@@ -20,6 +20,23 @@ expect_exit 2 "unknown option" "$H" info vectors/walk.bin --bogus
 expect_exit 2 "empty --json" "$H" info vectors/walk.bin --json ""
 expect_err "option --json needs a value (FILE), not an empty one" "empty value named"
 expect_exit 2 "empty --out=" "$H" replay vectors/walk.bin --quiet --out=
+# so is an empty argument (`bin/harness replay "$LOG"` with LOG unset): it
+# reached fopen too, "harness replay: error: : cannot read (No such file or
+# directory)", exit 1 (a bad input), and exit 3 for convert's OUT and
+# live's and stream's PORT, naming no file
+for c in info replay allan psd simgap; do
+    expect_exit 2 "$c: an empty LOG" "$H" $c ""
+    expect_err "harness $c: error: argument LOG is empty" "$c: the empty LOG named"
+done
+expect_exit 2 "convert: an empty IN" "$H" convert "" "$T/e.csv"
+expect_err "argument IN is empty" "convert: the empty IN named"
+expect_exit 2 "convert: an empty OUT" "$H" convert vectors/walk.bin ""
+expect_err "argument OUT is empty" "convert: the empty OUT named"
+expect_exit 2 "stream: an empty PORT" "$H" stream vectors/walk.bin ""
+expect_err "argument PORT is empty" "stream: the empty PORT named"
+expect_exit 2 "live: an empty PORT" "$H" live "" --timeout 1
+expect_err "argument PORT is empty" "live: the empty PORT named"
+expect_exit 2 "an empty argument after --" "$H" info -- ""
 expect_exit 0 "info --help" "$H" info --help
 expect_exit 0 "convert --help" "$H" convert --help
 expect_exit 2 "bad --input-rate" "$H" info vectors/walk.bin --input-rate -3
