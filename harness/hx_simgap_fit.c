@@ -748,6 +748,20 @@ static void fit_errors(const sg_table_t *t, skel_t *s)
     }
 }
 
+/* Refit s's value of parameter k of effect id (mp: the effect's magnitude
+ * parameter) in *v: 0 when there is none to count (no refit, a value not
+ * finite, or the effect's magnitude is zero there and its other parameters
+ * are placeholders: an AR(1) of sigma 0 has no time). */
+static int refit_value(const sg_chmodel_t *fits, const int *ok, int s, int id, int k, int mp, double *v)
+{
+    const int j = ok[s] ? sg_model_find(&fits[s], id) : -1;
+    if (j < 0 || (k != mp && mp >= 0 && !(fits[s].e[j].p[mp] > 0.0))) {
+        return 0;
+    }
+    *v = fits[s].e[j].p[k];
+    return isfinite(*v);
+}
+
 void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok, int S)
 {
     int i, k, s;
@@ -755,7 +769,7 @@ void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok,
         sg_effect_t *e = &m->e[i];
         const int mp = mag_param(e->id);
         for (k = 0; k < SG_MAX_PAR; k++) {
-            double sum = 0.0, sum2 = 0.0, mean;
+            double sum = 0.0, sum2 = 0.0, mean, v;
             int c = 0;
             if (!e->se_allan[k]) {
                 continue;
@@ -765,16 +779,7 @@ void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok,
                 continue; /* null stays null */
             }
             for (s = 0; s < S; s++) {
-                const int j = ok[s] ? sg_model_find(&fits[s], e->id) : -1;
-                double v;
-                if (j < 0 || (k != mp && mp >= 0 && !(fits[s].e[j].p[mp] > 0.0))) {
-                    /* no refit, or the effect's magnitude is zero there and
-                     * its other parameters are placeholders (an AR(1) of
-                     * sigma 0 has no time) */
-                    continue;
-                }
-                v = fits[s].e[j].p[k];
-                if (isfinite(v)) {
+                if (refit_value(fits, ok, s, e->id, k, mp, &v)) {
                     sum += v;
                     c++;
                 }
@@ -783,15 +788,9 @@ void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok,
                 e->se[k] = (double)NAN;
                 continue;
             }
-            mean = sum / (double)c;
+            mean = sum / (double)c; /* two passes: the sample sd */
             for (s = 0; s < S; s++) {
-                const int j = ok[s] ? sg_model_find(&fits[s], e->id) : -1;
-                double v;
-                if (j < 0 || (k != mp && mp >= 0 && !(fits[s].e[j].p[mp] > 0.0))) {
-                    continue;
-                }
-                v = fits[s].e[j].p[k];
-                if (isfinite(v)) {
+                if (refit_value(fits, ok, s, e->id, k, mp, &v)) {
                     sum2 += (v - mean) * (v - mean);
                 }
             }
