@@ -2157,6 +2157,27 @@ static long binary_at(const unsigned char *b, size_t n)
     return -1;
 }
 
+/* The UTF-16 encoding of a text that starts with b[0..n) ("UTF-16" with a
+ * byte-order mark, which iconv reads; "UTF-16LE" / "UTF-16BE" without one,
+ * known by its first characters being ASCII: a NUL beside every printable
+ * byte), or NULL. */
+static const char *utf16_of(const unsigned char *b, size_t n)
+{
+    size_t k, m = n < 64 ? n & ~(size_t)1 : 64;
+    int le = 1, be = 1;
+    if (n >= 2 && ((b[0] == 0xff && b[1] == 0xfe) || (b[0] == 0xfe && b[1] == 0xff))) {
+        return "UTF-16";
+    }
+    if (m < 4) {
+        return NULL;
+    }
+    for (k = 0; k < m; k += 2) {
+        le = le && b[k] >= 0x09 && b[k] < 0x7f && b[k + 1] == 0;
+        be = be && b[k] == 0 && b[k + 1] >= 0x09 && b[k + 1] < 0x7f;
+    }
+    return le ? "UTF-16LE" : (be ? "UTF-16BE" : NULL);
+}
+
 static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, char *err, size_t err_size)
 {
     hx_reader_t *r;
@@ -2195,6 +2216,19 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         snprintf(err, err_size, "%s: %s", path,
                  e == Z_BUF_ERROR ? "the gzip data ends before any text (a truncated .gz, e.g. an incomplete copy)"
                                   : "empty file");
+        gzclose(r->gz);
+        free(r);
+        return NULL;
+    }
+    if (fmt != HX_FMT_BIN && utf16_of(head, (size_t)got) != NULL) {
+        /* Windows' "Unicode text" export: "FILE:1: a NUL byte in the text
+         * (binary data ...)" with its byte-order mark, the hint of
+         * --columns without it, where it only needs saving as UTF-8
+         * (2026-12-02) */
+        snprintf(err, err_size,
+                 "%s: UTF-16 text, not UTF-8 (save it as UTF-8, e.g. iconv -f %s -t UTF-8 %s > copy.csv; the "
+                 "formats read: docs/log-format.md)",
+                 path, utf16_of(head, (size_t)got), path);
         gzclose(r->gz);
         free(r);
         return NULL;

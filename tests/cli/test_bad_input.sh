@@ -413,6 +413,21 @@ for f in plot.png book.xlsx; do
 done
 expect_exit 1 "convert of plot.png" "$H" convert "$T/plot.png" "$T/plot.csv"
 expect_err "plot.png: binary data, not a log: its first bytes 89 50 4e 47 0d 0a 1a 0a hold 0x1a at byte 7" "convert: the bytes named"
+# a CSV saved as UTF-16 (Windows' "Unicode text" export, with or without its
+# byte-order mark): "FILE:1: a NUL byte in the text (binary data, e.g. a
+# logger's unwritten blocks)" with the mark, the --columns advice without
+# it, where the file only needs saving as UTF-8 (2026-12-02)
+head -n 50 vectors/nav/golden/gx2_walk2.csv >"$T/u8.csv"
+"${PY:-/usr/bin/python3}" -c 'import sys; t = open(sys.argv[1]).read(); open(sys.argv[2], "wb").write(t.encode("utf-16")); open(sys.argv[3], "wb").write(t.encode("utf-16-le")); open(sys.argv[4], "wb").write(t.encode("utf-16-be"))' \
+    "$T/u8.csv" "$T/u16.csv" "$T/u16le.csv" "$T/u16be.csv" || fail "write the UTF-16 copies"
+for fe in u16.csv:UTF-16 u16le.csv:UTF-16LE u16be.csv:UTF-16BE; do
+    f=${fe%%:*} e=${fe#*:}
+    for c in info replay; do
+        expect_exit 1 "$c of $f (UTF-16)" "$H" $c "$T/$f"
+        expect_err "$f: UTF-16 text, not UTF-8 (save it as UTF-8, e.g. iconv -f $e -t UTF-8 $T/$f" "$c: $f said to be $e"
+    done
+done
+expect_exit 0 "info of the UTF-8 original" "$H" info "$T/u8.csv"
 # a CSV in another layout is still told about --columns
 printf 'stamp;x;y;z\n0;0;0;9.8\n' >"$T/other2.csv"
 expect_exit 1 "info of a text CSV of no known layout" "$H" info "$T/other2.csv"
