@@ -327,7 +327,7 @@ if [ -c /dev/full ]; then
     expect_exit 3 "convert onto a full disk" "$H" convert vectors/walk.bin /dev/full
     expect_err "^harness convert: error: /dev/full: write failed (No space left on device)" "convert: the failed write named"
     expect_exit 3 "replay --out onto a full disk" "$H" replay vectors/walk.bin --quiet --out /dev/full
-    expect_err "^harness replay: error: cannot write the trajectory to /dev/full" "replay: the failed write named"
+    expect_err "^harness replay: error: cannot write the trajectory to /dev/full (No space left on device)$" "replay: the failed write named, with its reason"
     "$H" sim --motion stand --duration 120 --rate 100 --seed 3 --out "$T/still.bin" >/dev/null 2>&1
     expect_exit 3 "allan --profile onto a full disk" "$H" allan "$T/still.bin" --profile /dev/full
     expect_err "^harness allan: error: /dev/full: write failed (No space left on device)" "allan --profile: the failed write named"
