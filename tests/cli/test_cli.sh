@@ -48,6 +48,14 @@ expect_exit 2 "harness help of an unknown command" "$H" help nosuch
 expect_err "unknown command 'nosuch'" "harness help nosuch names the command"
 if [ -s "$T/out" ]; then fail "harness help nosuch wrote to standard output"; else pass "harness help nosuch: nothing on standard output"; fi
 expect_exit 2 "harness help with two commands" "$H" help info replay
+# `help help` (and `help --help`, `--help help`) is the general help, as
+# `help` alone (it answered "unknown command 'help'", exit 2; a review,
+# 2026-12-02)
+for w in "help help" "help --help" "--help help" "help -h"; do
+    # shellcheck disable=SC2086
+    expect_exit 0 "harness $w" "$H" $w
+    expect_out "^commands:" "harness $w lists the commands"
+done
 # the list of commands on a full disk is a write error, as every command's
 # output is (it exited 0)
 if [ -w /dev/full ]; then
