@@ -72,11 +72,12 @@ static int window_empty(const window_t *wd, const hx_args_t *a)
             snprintf(to, sizeof to, "the end");
         }
         if (wd->after_ns >= 0) {
-            hx_error("convert", "%s: no sample from %s s to %s: the log has none from %.6g s to %.6g s after its first sample",
+            hx_error("convert",
+                     "%s: no sample from %s s to %s: the log has none from %.6g s to %.6g s after its first sample",
                      a->pos[0], start, to, (double)wd->before_ns * 1e-9, (double)wd->after_ns * 1e-9);
         } else {
-            hx_error("convert", "%s: no sample from %s s to %s: the log spans 0-%.6g s after its first sample", a->pos[0],
-                     start, to, (double)wd->before_ns * 1e-9);
+            hx_error("convert", "%s: no sample from %s s to %s: the log spans 0-%.6g s after its first sample",
+                     a->pos[0], start, to, (double)wd->before_ns * 1e-9);
         }
     }
     return 1;

@@ -174,8 +174,8 @@ int hx_cmd_replay(int argc, char **argv)
         errno = 0; /* set only by a failed call: the reason of this one */
         if ((csv == stdout ? fflush(csv) != 0 || ferror(csv) : fclose(csv) != 0) && rc >= 0) {
             close_errno = errno;
-            snprintf(err, sizeof err, "cannot write %s%s%s%s", strcmp(out_path, "-") == 0 ? "standard output" : out_path,
-                     close_errno != 0 ? " (" : "", close_errno != 0 ? strerror(close_errno) : "",
+            snprintf(err, sizeof err, "cannot write %s%s%s%s",
+                     strcmp(out_path, "-") == 0 ? "standard output" : out_path, close_errno != 0 ? " (" : "", close_errno != 0 ? strerror(close_errno) : "",
                      close_errno != 0 ? ")" : "");
             rc = -3;
         }
