@@ -27,6 +27,8 @@ typedef struct {
     int64_t t0_ns;
     int have_t0;
     long kept;
+    int64_t before_ns; /* the latest sample before the window, after the first (its span when none is past it) */
+    int64_t after_ns;  /* the first sample past the window's end (-1: none seen) */
 } window_t;
 
 static int in_window(window_t *wd, int64_t t_ns)
@@ -37,7 +39,16 @@ static int in_window(window_t *wd, int64_t t_ns)
         wd->have_t0 = 1;
     }
     dt = t_ns - wd->t0_ns;
-    if (dt < wd->start_ns || (wd->end_ns >= 0 && dt > wd->end_ns)) {
+    if (dt < wd->start_ns) {
+        if (dt > wd->before_ns) {
+            wd->before_ns = dt;
+        }
+        return 0;
+    }
+    if (wd->end_ns >= 0 && dt > wd->end_ns) {
+        if (wd->after_ns < 0 || dt < wd->after_ns) {
+            wd->after_ns = dt;
+        }
         return 0;
     }
     wd->kept++;
@@ -50,9 +61,25 @@ static int window_empty(const window_t *wd, const hx_args_t *a)
     if (wd->kept > 0 || !wd->have_t0) {
         return 0;
     }
-    hx_error("convert", "%s: no sample between %s and %s s after the first", a->pos[0],
-             hx_arg(a, "--start") != NULL ? hx_arg(a, "--start") : "0",
-             hx_arg(a, "--end") != NULL ? hx_arg(a, "--end") : "the end");
+    /* with the log's span, or the gap the window fell in ("no sample
+     * between 100 and the end s after the first"; a review, 2026-12-02) */
+    {
+        char to[96];
+        const char *start = hx_arg(a, "--start") != NULL ? hx_arg(a, "--start") : "0";
+        if (hx_arg(a, "--end") != NULL) {
+            snprintf(to, sizeof to, "%s s", hx_arg(a, "--end"));
+        } else {
+            snprintf(to, sizeof to, "the end");
+        }
+        if (wd->after_ns >= 0) {
+            hx_error("convert",
+                     "%s: no sample from %s s to %s: the log has none from %.6g s to %.6g s after its first sample",
+                     a->pos[0], start, to, (double)wd->before_ns * 1e-9, (double)wd->after_ns * 1e-9);
+        } else {
+            hx_error("convert", "%s: no sample from %s s to %s: the log spans 0-%.6g s after its first sample",
+                     a->pos[0], start, to, (double)wd->before_ns * 1e-9);
+        }
+    }
     return 1;
 }
 
@@ -161,6 +188,7 @@ int hx_cmd_convert(int argc, char **argv)
     memset(&wd, 0, sizeof wd);
     wd.start_ns = (int64_t)llround(start_s * 1e9);
     wd.end_ns = hx_arg(&a, "--end") != NULL ? (int64_t)llround(end_s * 1e9) : -1;
+    wd.after_ns = -1;
     /* --rate: the range of replay --rate (hx_nav_opts_from_args); far below
      * 1 Hz the resampler's filter half-length, 20 x input rate / rate, no
      * longer fits an int (--rate 1e-9 wrote one NaN row and exit 0) */

@@ -167,7 +167,13 @@ static void on_nav_frame(live_t *L, const fnav_nav_frame_t *f)
 {
     if (L->csv != NULL && !L->csv_failed && fnav_port_write_nav(&L->lport, f) != FNAV_OK) {
         end_status_line(L);
-        hx_error(CMD, "cannot write the trajectory CSV; it stops here");
+        /* with the reason the port kept where the write failed (none was
+         * given; a review, 2026-12-02) */
+        if (L->lctx.write_errno != 0) {
+            hx_error(CMD, "cannot write the trajectory CSV (%s); it stops here", strerror(L->lctx.write_errno));
+        } else {
+            hx_error(CMD, "cannot write the trajectory CSV; it stops here");
+        }
         L->csv_failed = 1;
         if (L->csv == stdout) {
             /* what stdio still holds for a reader that never reads (a write
@@ -889,11 +895,22 @@ int hx_cmd_live(int argc, char **argv)
     }
     /* the frames the detector still holds, as replay does at the end */
     nav_finish(&L);
-    if (L.csv != NULL && (L.csv == stdout ? fflush(L.csv) != 0 || ferror(L.csv) : fclose(L.csv) != 0)) {
-        L.csv_failed = 1;
-    }
-    if (L.csv_failed && out_path != NULL) {
-        hx_error(CMD, "cannot write %s", out_path);
+    {
+        int csv_errno = L.lctx.write_errno; /* a frame's failed write: its reason */
+        errno = 0;                          /* set only by a failed call: the reason of this one */
+        if (L.csv != NULL && (L.csv == stdout ? fflush(L.csv) != 0 || ferror(L.csv) : fclose(L.csv) != 0)) {
+            if (!L.csv_failed) {
+                csv_errno = errno;
+            }
+            L.csv_failed = 1;
+        }
+        if (L.csv_failed && out_path != NULL) {
+            if (csv_errno != 0) {
+                hx_error(CMD, "cannot write %s (%s)", out_path, strerror(csv_errno));
+            } else {
+                hx_error(CMD, "cannot write %s", out_path);
+            }
+        }
     }
     if (L.plot_pid > 0) {
         waitpid(L.plot_pid, NULL, 0);

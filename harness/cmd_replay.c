@@ -152,8 +152,11 @@ int hx_cmd_replay(int argc, char **argv)
          * long enough ...)" and "complete": true for `--out - | head -2`; a
          * review, 2026-11-29) */
         if (csv != NULL && ferror(csv)) { /* the sink's write failed, not the memory */
-            snprintf(err, sizeof err, "cannot write the trajectory to %s",
-                     strcmp(out_path, "-") == 0 ? "standard output" : out_path);
+            /* with the reason the port kept where the write failed (errno
+             * is no longer it here; a review, 2026-12-02) */
+            snprintf(err, sizeof err, "cannot write the trajectory to %s%s%s%s",
+                     strcmp(out_path, "-") == 0 ? "standard output" : out_path, traj.output_errno != 0 ? " (" : "",
+                     traj.output_errno != 0 ? strerror(traj.output_errno) : "", traj.output_errno != 0 ? ")" : "");
         }
         traj.input_complete = 0;
         traj.output_failed = 1;
@@ -166,9 +169,16 @@ int hx_cmd_replay(int argc, char **argv)
          * alone (docs/harness.md, "replay") */
         fprintf(csv, "%s\n", FNAV_LINUX_NAV_CSV_HEADER);
     }
-    if (csv != NULL && (csv == stdout ? fflush(csv) != 0 || ferror(csv) : fclose(csv) != 0) && rc >= 0) {
-        snprintf(err, sizeof err, "cannot write %s", strcmp(out_path, "-") == 0 ? "standard output" : out_path);
-        rc = -3;
+    if (csv != NULL) {
+        int close_errno;
+        errno = 0; /* set only by a failed call: the reason of this one */
+        if ((csv == stdout ? fflush(csv) != 0 || ferror(csv) : fclose(csv) != 0) && rc >= 0) {
+            close_errno = errno;
+            snprintf(err, sizeof err, "cannot write %s%s%s%s",
+                     strcmp(out_path, "-") == 0 ? "standard output" : out_path, close_errno != 0 ? " (" : "", close_errno != 0 ? strerror(close_errno) : "",
+                     close_errno != 0 ? ")" : "");
+            rc = -3;
+        }
     }
     if (rc == -1) {
         hx_error("replay", "%s", err);

@@ -67,7 +67,8 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     sgv_opts_t o = sgv_opts_default();
     sgv_case_t *cases;
     char err[HX_ERR_SIZE], why[HX_ERR_SIZE];
-    long n = o.cases, seed = (long)o.seed, seeds = o.seeds;
+    long n = o.cases, seeds = o.seeds;
+    double seed = (double)o.seed;
     const char *json, *md, *mr;
     double t0;
     int status = HX_EXIT_OK;
@@ -81,7 +82,7 @@ int hx_cmd_simgap_validate(int argc, char **argv)
             return HX_EXIT_USAGE;
         }
     }
-    if (hx_arg_long(&a, "--cases", 1, 100000, &n) != 0 || hx_arg_long(&a, "--seed", 0, 2000000000L, &seed) != 0 ||
+    if (hx_arg_long(&a, "--cases", 1, 100000, &n) != 0 || hx_arg_whole(&a, "--seed", 0.0, 4294967295.0, &seed) != 0 ||
         hx_arg_double(&a, "--duration", 10.0, 1e6, &o.duration_s) != 0 ||
         hx_arg_double(&a, "--rate", 10.0, 1e5, &o.rate_hz) != 0 ||
         hx_arg_double(&a, "--walk-duration", 20.0, 3600.0, &o.walk_duration_s) != 0 ||
@@ -114,7 +115,7 @@ int hx_cmd_simgap_validate(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     o.cases = (int)n;
-    o.seed = (uint32_t)seed;
+    o.seed = (uint32_t)seed; /* [0, 4294967295], as sim's (it was [0, 2e9]; a review, 2026-12-02) */
     o.seeds = (int)seeds;
     o.verbose = hx_flag(&a, "--verbose");
     o.effects = hx_arg(&a, "--effects");

@@ -1724,7 +1724,12 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         hx_progress_end(&pc.prog);
     }
     if (pc.sink_failed || pc.traj_oom) {
-        snprintf(err, err_size, "%s", pc.sink_failed ? "cannot write the trajectory" : "out of memory keeping the trajectory");
+        if (pc.sink_failed && pc.lctx.write_errno != 0) {
+            snprintf(err, err_size, "cannot write the trajectory (%s)", strerror(pc.lctx.write_errno));
+        } else {
+            snprintf(err, err_size, "%s",
+                     pc.sink_failed ? "cannot write the trajectory" : "out of memory keeping the trajectory");
+        }
         rc = -3;
     } else if (st != FNAV_OK) {
         /* the input stopped the run (FNAV_E_IO is the reader's too: a NUL
@@ -1779,6 +1784,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             }
         }
         traj->t0_ns = pc.lctx.t0_ns;
+        traj->output_errno = pc.sink_failed ? pc.lctx.write_errno : 0;
         /* every frame kept has had its detector output (a run stopped by
          * the sink or the memory may have dropped the last frames') */
         traj->events = pc.ev != NULL && !pc.ev_bad;

@@ -129,6 +129,8 @@ typedef struct {
     /** replay: 1 when the run stopped because the trajectory output could
      *  not be written (input_complete is then 0 and input_error says so) */
     int output_failed;
+    /** replay: errno of the trajectory output's failed write (0: not said) */
+    int output_errno;
     /** replay: 1 when the units check ran (the log read to its end), with
      *  units_problem its message, "" when the values look like SI (the
      *  JSON's `units_problem`); 0 not checked (live, a run stopped early):

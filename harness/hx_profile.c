@@ -344,11 +344,16 @@ int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size
          * error said only "unknown profile" beside the file (a
          * contributor's review, 2026-11-30) */
         struct stat st;
-        int is_file = stat(name_or_path, &st) == 0 && S_ISREG(st.st_mode);
+        int found = stat(name_or_path, &st) == 0;
+        int is_file = found && S_ISREG(st.st_mode);
+        int is_dir = found && S_ISDIR(st.st_mode); /* said "unknown profile" alone (a review, 2026-12-02) */
         snprintf(err, err_size,
-                 "unknown profile '%s' (built-in: navchip, mtx, shimmer, generic-mems; or a profile file)%s%s",
-                 name_or_path, is_file ? "; a file of that name exists: give it as ./" : "",
-                 is_file ? name_or_path : "");
+                 "unknown profile '%s' (built-in: navchip, mtx, shimmer, generic-mems; or a profile file)%s%s%s",
+                 name_or_path,
+                 is_file  ? "; a file of that name exists: give it as ./"
+                 : is_dir ? "; '"
+                          : "",
+                 is_file || is_dir ? name_or_path : "", is_dir ? "' is a directory, not a profile file" : "");
         return -1;
     }
     if (hx_profile_read(name_or_path, p, err, err_size) != 0) {

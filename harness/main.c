@@ -96,7 +96,11 @@ int main(int argc, char **argv)
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
         static char help_opt[] = "--help";
         char *help_argv[] = { help_opt, NULL };
-        if (argc == 2) {
+        /* `help help` (`help --help`, `--help help`) is the general help,
+         * as `help` alone (it was "unknown command 'help'", exit 2; a
+         * review, 2026-12-02) */
+        if (argc == 2 || (argc == 3 && (strcmp(argv[2], "help") == 0 || strcmp(argv[2], "--help") == 0 ||
+                                        strcmp(argv[2], "-h") == 0))) {
             usage(stdout);
             return flush_stdout(NULL, HX_EXIT_OK);
         }

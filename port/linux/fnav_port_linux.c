@@ -1,6 +1,7 @@
 /* Linux port: file replay source, CSV sink, monotonic clock, stderr log. */
 #include "fnav_port_linux.h"
 
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -40,6 +41,11 @@ static fnav_status_t linux_write_nav(void *ctx, const fnav_nav_frame_t *f)
         c->frames++;
         return FNAV_OK;
     }
+    /* errno is set only by a failed call: cleared here, it is the reason of
+     * this frame's failed write, kept before anything else can change it
+     * (the reason was not given: "cannot write the trajectory to
+     * /dev/full"; a review, 2026-12-02) */
+    errno = 0;
     if (!c->header_written) {
         fprintf(c->nav_csv, "%s\n", FNAV_LINUX_NAV_CSV_HEADER);
         c->header_written = 1;
@@ -70,6 +76,9 @@ static fnav_status_t linux_write_nav(void *ctx, const fnav_nav_frame_t *f)
     }
     /* a full disk shows when the buffer is flushed: ferror is sticky */
     if (fputc('\n', c->nav_csv) == EOF || ferror(c->nav_csv)) {
+        if (c->write_errno == 0) {
+            c->write_errno = errno;
+        }
         return FNAV_E_IO;
     }
     c->frames++;

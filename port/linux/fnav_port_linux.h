@@ -22,6 +22,7 @@ typedef struct {
     long frames;                /**< frames written */
     fnav_log_level_t min_level; /**< messages below this level are dropped */
     fnav_status_t last_status;  /**< last status of the reader */
+    int write_errno;            /**< errno of the sink's first failed write (0: none or not said) */
 } fnav_linux_port_ctx_t;
 
 /** Set up @p port with the Linux callbacks over @p ctx. */

@@ -48,6 +48,14 @@ expect_exit 2 "harness help of an unknown command" "$H" help nosuch
 expect_err "unknown command 'nosuch'" "harness help nosuch names the command"
 if [ -s "$T/out" ]; then fail "harness help nosuch wrote to standard output"; else pass "harness help nosuch: nothing on standard output"; fi
 expect_exit 2 "harness help with two commands" "$H" help info replay
+# `help help` (and `help --help`, `--help help`) is the general help, as
+# `help` alone (it answered "unknown command 'help'", exit 2; a review,
+# 2026-12-02)
+for w in "help help" "help --help" "--help help" "help -h"; do
+    # shellcheck disable=SC2086
+    expect_exit 0 "harness $w" "$H" $w
+    expect_out "^commands:" "harness $w lists the commands"
+done
 # the list of commands on a full disk is a write error, as every command's
 # output is (it exited 0)
 if [ -w /dev/full ]; then
@@ -327,7 +335,7 @@ if [ -c /dev/full ]; then
     expect_exit 3 "convert onto a full disk" "$H" convert vectors/walk.bin /dev/full
     expect_err "^harness convert: error: /dev/full: write failed (No space left on device)" "convert: the failed write named"
     expect_exit 3 "replay --out onto a full disk" "$H" replay vectors/walk.bin --quiet --out /dev/full
-    expect_err "^harness replay: error: cannot write the trajectory to /dev/full" "replay: the failed write named"
+    expect_err "^harness replay: error: cannot write the trajectory to /dev/full (No space left on device)$" "replay: the failed write named, with its reason"
     "$H" sim --motion stand --duration 120 --rate 100 --seed 3 --out "$T/still.bin" >/dev/null 2>&1
     expect_exit 3 "allan --profile onto a full disk" "$H" allan "$T/still.bin" --profile /dev/full
     expect_err "^harness allan: error: /dev/full: write failed (No space left on device)" "allan --profile: the failed write named"

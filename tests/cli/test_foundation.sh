@@ -278,7 +278,16 @@ expect_exit 2 "--end before --start" "$H" convert vectors/walk.bin "$T/w.csv" --
 expect_err "--end 2 is before --start 3" "the order is named"
 expect_exit 2 "negative --start" "$H" convert vectors/walk.bin "$T/w.csv" --start -1
 expect_exit 1 "a window past the end" "$H" convert vectors/walk.bin "$T/w.csv" --start 100000
-expect_err "no sample between 100000 and the end s after the first" "the empty window is said"
+# said naturally, with the log's span ("no sample between 100000 and the
+# end s after the first"; a review, 2026-12-02)
+expect_err "^harness convert: error: vectors/walk.bin: no sample from 100000 s to the end: the log spans 0-41.618 s after its first sample$" "the empty window is said, with the log's span"
+expect_exit 1 "a window past the end, with --end" "$H" convert "$T/edge.csv" "$T/w.csv" --start 1 --end 2
+expect_err "edge.csv: no sample from 1 s to 2 s: the log spans 0-0.09 s after its first sample$" "an empty --start/--end window names the span"
+{ echo "t,ax,ay,az,gx,gy,gz"; for t in 0.00 0.01 0.02 1.00 1.01; do echo "$t,0,0,9.8,0,0,0"; done; } >"$T/gap.csv"
+expect_exit 1 "a window inside a gap" "$H" convert "$T/gap.csv" "$T/w.csv" --start 0.5 --end 0.6
+expect_err "gap.csv: no sample from 0.5 s to 0.6 s: the log has none from 0.02 s to 1 s after its first sample$" "a window inside a gap names the gap"
+expect_exit 1 "a window inside a gap, with --rate" "$H" convert "$T/gap.csv" "$T/w.csv" --start 0.5 --end 0.6 --rate 50
+expect_err "no sample from 0.5 s to 0.6 s" "--rate: the empty window is said as without it"
 expect_exit 2 "convert onto its own input" "$H" convert "$T/a.csv" "$T/a.csv"
 if cmp -s "$T/a.csv" "$T/c.csv"; then pass "convert left its input intact"; else fail "convert overwrote its input"; fi
 { head -200 "$T/a.csv"; head -c 600 /dev/zero; echo; sed -n 201,400p "$T/a.csv"; } > "$T/nul.csv"

@@ -705,6 +705,20 @@ stream vectors/walk.bin --speed 0
 wait_live
 grep_in "$T/live.out" "recorded 0 samples" "a failed recording counts what it holds"
 
+# --- a trajectory that cannot be written (a full disk): the reason is given
+# ("cannot write the trajectory CSV; it stops here" and "cannot write
+# /dev/full" alone; a review, 2026-12-02), the summary and the JSON are
+# still written, exit 3
+rm -f "$T/fulllive.json"
+start_live --out /dev/full --json "$T/fulllive.json"
+stream vectors/walk.bin --speed 0
+wait_live
+expect_rc "$LIVE_RC" 3 "live --out onto a full disk"
+grep_in "$T/live.err" "cannot write the trajectory CSV (No space left on device); it stops here" "live: the failed write's reason given"
+grep_in "$T/live.err" "cannot write /dev/full (No space left on device)" "live: the end names the file and the reason"
+grep_in "$T/live.out" "return-to-start" "live: the summary written beside the failed CSV"
+[ -s "$T/fulllive.json" ] && pass "live: the JSON written beside the failed CSV" || fail "live: no JSON beside the failed CSV"
+
 # --- stream interrupted while a write waits on a port nobody reads: it
 # stops at once with 143 (it waited out the 10 s write timeout, then exited
 # 3, as libserialport resumes an interrupted write; a review, 2026-11-29)

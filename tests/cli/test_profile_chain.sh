@@ -173,6 +173,13 @@ expect_err "unknown profile 'mysensor'.*a file of that name exists: give it as .
     pass "./mysensor is read as the file" || { fail "./mysensor"; cat "$T/err"; }
 expect_exit 2 "an unknown name, no such file" "$H" replay vectors/walk.bin --quiet --profile nosuchsensor
 ! grep -q "file of that name" "$T/err" && pass "no file hint without a file" || fail "file hint for a missing file: $(cat "$T/err")"
+# a directory of that name: "unknown profile 'mydir'" alone (a review,
+# 2026-12-02); it says the name is a directory, not a profile file
+mkdir -p "$T/mydir"
+(cd "$T" && "$H" replay "$OLDPWD/vectors/walk.bin" --quiet --profile mydir) >"$T/out" 2>"$T/err"; st=$?
+[ $st -eq 2 ] && pass "a bare name that is a directory: exit 2" || fail "bare directory name: exit $st, expected 2"
+expect_err "unknown profile 'mydir'.*; 'mydir' is a directory, not a profile file$" "the error says the name is a directory"
+! grep -q "file of that name" "$T/err" && pass "no file hint for a directory" || fail "file hint for a directory: $(cat "$T/err")"
 # the datasheet example of docs/profile-format.md ("From a datasheet") is a
 # valid, plausible profile that replay and sim take
 awk '/^### From a datasheet/ { s = 1 } s && /^```/ { n++; next } s && n == 1' docs/profile-format.md >"$T/ds.profile"

@@ -488,6 +488,9 @@ expect_err "cannot both write to standard output" "--json - and --csv - refused"
 if [ -w /dev/full ]; then
     expect_exit 3 "--out to a full disk" "$H" replay vectors/walk.bin --out /dev/full --quiet
     expect_err "cannot write the trajectory" "a full disk is reported"
+    # with its reason, as psd's (errno was gone when the message was built:
+    # "cannot write the trajectory to /dev/full" alone; a review, 2026-12-02)
+    expect_err "^harness replay: error: cannot write the trajectory to /dev/full (No space left on device)$" "the full disk's reason given"
     "$H" replay vectors/walk.bin --out - >/dev/full 2>"$T/err"; rc=$?
     if [ "$rc" -eq 3 ] && grep -q "cannot write" "$T/err"; then pass "--out - to a full disk: exit 3"; else fail "--out - to a full disk: exit $rc"; cat "$T/err"; fi
     # the results printed to standard output are an output too: the summary
@@ -509,18 +512,18 @@ if [ "$rc" -eq 3 ] && [ -s "$T/pipe.json" ] && grep -q "cannot write" "$T/err"; 
 # line does not blame the still period (it printed "NOT ALIGNED (no still
 # period long enough: the error above says what was found)" and the JSON
 # "complete": true; a review, 2026-11-29)
-n=$(sed -n 's/^stopped  *after \([0-9][0-9]*\) samples: cannot write the trajectory to standard output (the error above); every figure covers those samples$/\1/p' "$T/err")
+n=$(sed -n 's/^stopped  *after \([0-9][0-9]*\) samples: cannot write the trajectory to standard output (Broken pipe) (the error above); every figure covers those samples$/\1/p' "$T/err")
 if [ -n "$n" ] && grep -q "^duration .*, $n samples," "$T/err"; then pass "closed pipe: the summary says the run stopped after $n samples"; else
     fail "closed pipe: no stopped line"; cat "$T/err"; fi
 if grep -q "no still period" "$T/err"; then fail "closed pipe: the still period is blamed"; else pass "closed pipe: no still period blamed"; fi
 grep -q "^alignment  *NOT ALIGNED (the run stopped before a still period long enough was found)$" "$T/err" &&
     pass "closed pipe: the alignment line says the run stopped" || fail "closed pipe: alignment line: $(grep alignment "$T/err")"
-json "$T/pipe.json" "j['complete'] is False and j['error'] == 'cannot write the trajectory to standard output' and j['health']['samples'] == ${n:-0}" &&
+json "$T/pipe.json" "j['complete'] is False and j['error'] == 'cannot write the trajectory to standard output (Broken pipe)' and j['health']['samples'] == ${n:-0}" &&
     pass "closed pipe: JSON complete false, the error, the samples run" || fail "closed pipe JSON: $(head -c 400 "$T/pipe.json")"
 if [ -w /dev/full ]; then
     expect_exit 3 "--out to a full disk, with --json" "$H" replay vectors/walk.bin --out /dev/full --json "$T/full.json"
     expect_out_re "^stopped +after [0-9]+ samples: cannot write the trajectory to /dev/full " "full disk: the summary says the run stopped"
-    json "$T/full.json" "j['complete'] is False and j['error'] == 'cannot write the trajectory to /dev/full'" &&
+    json "$T/full.json" "j['complete'] is False and j['error'] == 'cannot write the trajectory to /dev/full (No space left on device)'" &&
         pass "full disk: JSON complete false, the error" || fail "full disk JSON: $(head -c 400 "$T/full.json")"
 fi
 

@@ -55,6 +55,14 @@ expect_err "^harness simgap: error: .*too short for a confident answer" "no held
 # ... while with the default split 3 s at 100 Hz are enough (section 5 of
 # docs/simgap.md; it said "about 5 s" until 2026-11-29)
 expect_exit 0 "3 s at 100 Hz: not too short" "$H" simgap "$T/s3.csv" --quiet --seeds 4
+# --seed: sim's and montecarlo's range and words, [0, 4294967295] and "not
+# a whole number" (it was [0, 2e9], "not an integer"; a review, 2026-12-02):
+# every seed simgap derives is uint32_t arithmetic, which wraps, defined
+expect_exit 2 "--seed past 2^32 - 1" "$H" simgap "$T/s3.csv" --seed 4294967296
+expect_err "^harness simgap: error: --seed '4294967296' is not a whole number in \[0, 4294967295\]$" "--seed: sim's range and words"
+expect_exit 0 "--seed 4294967295, the last seed (its twins' seeds wrap)" "$H" simgap "$T/s3.csv" --quiet --seeds 4 --seed 4294967295 --json "$T/s3seed.json"
+json "$T/s3seed.json" "j['settings']['seed'] == 4294967295" &&
+    pass "--seed 4294967295 written in the JSON" || fail "--seed in the JSON: $(grep -o '"seed":[^,]*' "$T/s3seed.json" | head -2)"
 # a still log read as a walk (--walk): one stance, so the innovations plot's panel of mean NIS held one value,
 # and gnuplot printed "Warning: empty y range [0.0172028:0.0172028], ..." on standard error despite --quiet
 if command -v gnuplot >/dev/null 2>&1; then
