@@ -175,8 +175,8 @@ int hx_cmd_replay(int argc, char **argv)
         if ((csv == stdout ? fflush(csv) != 0 || ferror(csv) : fclose(csv) != 0) && rc >= 0) {
             close_errno = errno;
             snprintf(err, sizeof err, "cannot write %s%s%s%s",
-                     strcmp(out_path, "-") == 0 ? "standard output" : out_path, close_errno != 0 ? " (" : "", close_errno != 0 ? strerror(close_errno) : "",
-                     close_errno != 0 ? ")" : "");
+                     strcmp(out_path, "-") == 0 ? "standard output" : out_path, close_errno != 0 ? " (" : "",
+                     close_errno != 0 ? strerror(close_errno) : "", close_errno != 0 ? ")" : "");
             rc = -3;
         }
     }
