@@ -1726,7 +1726,8 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     if (pc.sink_failed || pc.traj_oom) {
         if (pc.sink_failed) {
             char why[128];
-            snprintf(err, err_size, "cannot write the trajectory%s", hx_errno_note(pc.lctx.write_errno, why, sizeof why));
+            snprintf(err, err_size, "cannot write the trajectory%s",
+                     hx_errno_note(pc.lctx.write_errno, why, sizeof why));
         } else {
             snprintf(err, err_size, "out of memory keeping the trajectory");
         }
