@@ -169,11 +169,9 @@ static void on_nav_frame(live_t *L, const fnav_nav_frame_t *f)
         end_status_line(L);
         /* with the reason the port kept where the write failed (none was
          * given; a review, 2026-12-02) */
-        if (L->lctx.write_errno != 0) {
-            hx_error(CMD, "cannot write the trajectory CSV (%s); it stops here", strerror(L->lctx.write_errno));
-        } else {
-            hx_error(CMD, "cannot write the trajectory CSV; it stops here");
-        }
+        char why[128];
+        hx_error(CMD, "cannot write the trajectory CSV%s; it stops here",
+                 hx_errno_note(L->lctx.write_errno, why, sizeof why));
         L->csv_failed = 1;
         if (L->csv == stdout) {
             /* what stdio still holds for a reader that never reads (a write
@@ -905,11 +903,8 @@ int hx_cmd_live(int argc, char **argv)
             L.csv_failed = 1;
         }
         if (L.csv_failed && out_path != NULL) {
-            if (csv_errno != 0) {
-                hx_error(CMD, "cannot write %s (%s)", out_path, strerror(csv_errno));
-            } else {
-                hx_error(CMD, "cannot write %s", out_path);
-            }
+            char note[128];
+            hx_error(CMD, "cannot write %s%s", out_path, hx_errno_note(csv_errno, note, sizeof note));
         }
     }
     if (L.plot_pid > 0) {

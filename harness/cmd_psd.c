@@ -334,9 +334,9 @@ static int write_csv(const char *path, const result_t *r, const char *src)
         /* the reason, as every other output's error gives it (it said
          * "write failed" alone; a user review, 2026-12-02): errno of the
          * failed write or close */
-        const int e = errno;
-        hx_error(CMD, "%s: write failed%s%s%s", strcmp(path, "-") == 0 ? "standard output" : path, e != 0 ? " (" : "",
-                 e != 0 ? strerror(e) : "", e != 0 ? ")" : "");
+        char why[128];
+        hx_error(CMD, "%s: write failed%s", strcmp(path, "-") == 0 ? "standard output" : path,
+                 hx_errno_note(errno, why, sizeof why));
         return -1;
     }
     return 0;

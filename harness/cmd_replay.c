@@ -154,9 +154,10 @@ int hx_cmd_replay(int argc, char **argv)
         if (csv != NULL && ferror(csv)) { /* the sink's write failed, not the memory */
             /* with the reason the port kept where the write failed (errno
              * is no longer it here; a review, 2026-12-02) */
-            snprintf(err, sizeof err, "cannot write the trajectory to %s%s%s%s",
-                     strcmp(out_path, "-") == 0 ? "standard output" : out_path, traj.output_errno != 0 ? " (" : "",
-                     traj.output_errno != 0 ? strerror(traj.output_errno) : "", traj.output_errno != 0 ? ")" : "");
+            char why[128];
+            snprintf(err, sizeof err, "cannot write the trajectory to %s%s",
+                     strcmp(out_path, "-") == 0 ? "standard output" : out_path,
+                     hx_errno_note(traj.output_errno, why, sizeof why));
         }
         traj.input_complete = 0;
         traj.output_failed = 1;
@@ -170,13 +171,11 @@ int hx_cmd_replay(int argc, char **argv)
         fprintf(csv, "%s\n", FNAV_LINUX_NAV_CSV_HEADER);
     }
     if (csv != NULL) {
-        int close_errno;
         errno = 0; /* set only by a failed call: the reason of this one */
         if ((csv == stdout ? fflush(csv) != 0 || ferror(csv) : fclose(csv) != 0) && rc >= 0) {
-            close_errno = errno;
-            snprintf(err, sizeof err, "cannot write %s%s%s%s",
-                     strcmp(out_path, "-") == 0 ? "standard output" : out_path, close_errno != 0 ? " (" : "",
-                     close_errno != 0 ? strerror(close_errno) : "", close_errno != 0 ? ")" : "");
+            char why[128];
+            snprintf(err, sizeof err, "cannot write %s%s", strcmp(out_path, "-") == 0 ? "standard output" : out_path,
+                     hx_errno_note(errno, why, sizeof why));
             rc = -3;
         }
     }

@@ -193,6 +193,16 @@ int hx_refuse_dash(const char *cmd, const hx_args_t *a, const char *const *opts)
     return 0;
 }
 
+const char *hx_errno_note(int e, char *buf, size_t size)
+{
+    if (e != 0) {
+        snprintf(buf, size, " (%s)", strerror(e));
+    } else if (size > 0) {
+        buf[0] = '\0';
+    }
+    return buf;
+}
+
 const char *hx_arg(const hx_args_t *a, const char *name)
 {
     int k = find(a, name);

@@ -233,6 +233,9 @@ int hx_check_writable(const char *cmd, const char *path);
  *  file or directory (a PNG, a profile), where '-' would make a file named
  *  '-'; else 0. The caller exits HX_EXIT_USAGE before anything is read. */
 int hx_refuse_dash(const char *cmd, const hx_args_t *a, const char *const *opts);
+/** " (REASON)", strerror(e) in brackets, in buf (size bytes) for a message
+ *  about a failed call; "" when e is 0 (no reason known). Returns buf. */
+const char *hx_errno_note(int e, char *buf, size_t size);
 /** hx_check_writable for each option of `files` (NULL-ended) given in `a`
  *  with a file name ("-", standard output, is not checked), and
  *  hx_plot_check for each of `pngs`: the outputs a command writes after its

@@ -2183,6 +2183,8 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
     hx_reader_t *r;
     unsigned char head[600];
     int got, guessed = 0;
+    long bin_at;
+    const char *utf16;
     if (rate_hz < 0.0 || rate_hz > 1.0e6 || rate_hz != rate_hz) {
         snprintf(err, err_size, "%s: sample rate %g Hz is not in (0, 1e6]", path, rate_hz);
         return NULL;
@@ -2220,7 +2222,7 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         free(r);
         return NULL;
     }
-    if (fmt != HX_FMT_BIN && utf16_of(head, (size_t)got) != NULL) {
+    if (fmt != HX_FMT_BIN && (utf16 = utf16_of(head, (size_t)got)) != NULL) {
         /* Windows' "Unicode text" export: "FILE:1: a NUL byte in the text
          * (binary data ...)" with its byte-order mark, the hint of
          * --columns without it, where it only needs saving as UTF-8
@@ -2228,7 +2230,7 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         snprintf(err, err_size,
                  "%s: UTF-16 text, not UTF-8 (save it as UTF-8, e.g. iconv -f %s -t UTF-8 %s > copy.csv; the "
                  "formats read: docs/log-format.md)",
-                 path, utf16_of(head, (size_t)got), path);
+                 path, utf16, path);
         gzclose(r->gz);
         free(r);
         return NULL;
@@ -2282,11 +2284,11 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         if (!guessed || (fmt == HX_FMT_CSV && (r->missing_col != 0 || r->layout.option != NULL))) {
             /* given with --from, or our CSV known by its 't' column */
             snprintf(err, err_size, "%s", r->err);
-        } else if (fmt == HX_FMT_CSV && binary_at(head, (size_t)got) >= 0) {
+        } else if (fmt == HX_FMT_CSV && (bin_at = binary_at(head, (size_t)got)) >= 0) {
             /* a PNG, a zip given as a log: it was told "header has no
              * column 't' ... give its names and units with --columns",
              * which no such file can follow (a user review, 2026-12-02) */
-            size_t at = (size_t)binary_at(head, (size_t)got), k, n = got < 8 ? (size_t)got : 8;
+            size_t at = (size_t)bin_at, k, n = got < 8 ? (size_t)got : 8;
             char hex[3 * 8 + 1];
             hex[0] = '\0';
             for (k = 0; k < n; k++) {

@@ -1724,11 +1724,12 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         hx_progress_end(&pc.prog);
     }
     if (pc.sink_failed || pc.traj_oom) {
-        if (pc.sink_failed && pc.lctx.write_errno != 0) {
-            snprintf(err, err_size, "cannot write the trajectory (%s)", strerror(pc.lctx.write_errno));
+        if (pc.sink_failed) {
+            char why[128];
+            snprintf(err, err_size, "cannot write the trajectory%s",
+                     hx_errno_note(pc.lctx.write_errno, why, sizeof why));
         } else {
-            snprintf(err, err_size, "%s",
-                     pc.sink_failed ? "cannot write the trajectory" : "out of memory keeping the trajectory");
+            snprintf(err, err_size, "out of memory keeping the trajectory");
         }
         rc = -3;
     } else if (st != FNAV_OK) {
