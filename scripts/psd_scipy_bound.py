@@ -170,9 +170,11 @@ def main():
         nb = int((err > tol).sum())
         bad += nb
         print("%s: K %d; largest error %.3g of the bin, %.3g of its bound; bound %.3g to %.3g of the bin "
-              "(arithmetic alone %.3g to %.3g); %d bins beyond" %
+              "(arithmetic alone %.3g to %.3g; bins 0 and 1 %.3g and %.3g, the others %.3g to %.3g); "
+              "%d bins beyond" %
               (name, K, (err / r).max(), (err / tol).max(), (tol / r).min(), (tol / r).max(),
-               (scale * d / r).min(), (scale * d / r).max(), nb))
+               (scale * d / r).min(), (scale * d / r).max(), tol[0] / r[0], tol[1] / r[1],
+               (tol[2:] / r[2:]).min(), (tol[2:] / r[2:]).max(), nb))
     print("frequencies: largest difference %.3g Hz, %d beyond the printing bound" % (df.max(), int((df > ftol).sum())))
     return 1 if bad else 0
 
