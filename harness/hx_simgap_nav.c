@@ -387,9 +387,9 @@ static int stances_counted(const navrun_t *r, const int64_t *t_ns, long a, long 
  * held-out part of a walk split at a (docs/simgap.md, section 2). A stance
  * in progress at a, or a piece of it after a flicker of the detector,
  * began in the fit segment: its first update, the observation the fit of
- * the motion effects takes, and its NIS are the fit's. The held-out part
- * began at the sample a until 2026-12-02, and such a stance was held out
- * as well, with a mid-stance update as its "first" (a review). */
+ * the motion effects takes, and its NIS are the fit's. Starting the
+ * held-out part at the sample a would hold such a stance out as well, with
+ * a mid-stance update as its "first". */
 static long stance_from(const navrun_t *r, const int64_t *t_ns, long a, long b, double min_swing_s)
 {
     long k, last = -1;
@@ -420,9 +420,9 @@ static long stance_from(const navrun_t *r, const int64_t *t_ns, long a, long b, 
 #define MAX_ST 4096
 
 /* Every stance of [a, b) in a list of the size it needs (free() it), with
- * their number in *ns; NULL when out of memory. A list of MAX_ST stances
- * dropped those after it without a word: a 90-minute walk has about 4,900
- * (the scale review, 2026-11-29). */
+ * their number in *ns; NULL when out of memory. A fixed list of MAX_ST
+ * stances would drop those after it without a word: a 90-minute walk has
+ * about 4,900. */
 static stance_t *stances_all(const navrun_t *r, long a, long b, int *ns)
 {
     int cap = MAX_ST;
@@ -511,8 +511,8 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long from
         int m = 0;
         for (i = 0; i < ns; i++) {
             double ts = (double)(t_ns[st[i].first] - t_ns[0]) * 1e-9;
-            /* the last window closed: a stance beginning at the segment's
-             * last sample was in none (a review, 2026-12-01) */
+            /* the last window closed, so that a stance beginning at the
+             * segment's last sample is in one */
             if (ts >= wa && (ts < wb || w == nwin - 1)) {
                 s += st[i].nis_first;
                 m++;
@@ -992,8 +992,8 @@ int sg_nav_sensor_values(const double B[6][6], int id, int npar, const int *ch, 
  * sensor's b / (1 - b); misalignment and g-sensitivity alone are unchanged,
  * their B B vanishes). c's values are computed jointly with other's (NULL:
  * none), the effects selected together; values out of the parameter's
- * range (I - B singular) are set to the bound and flagged (at[]): they
- * were reported as fits until 2026-12-01. */
+ * range (I - B singular) are set to the bound and flagged (at[]), not
+ * reported as fits. */
 static void to_sensor(navcand_t *c, const navcand_t *other)
 {
     double B[6][6];
@@ -1215,9 +1215,9 @@ static int run_twins(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *rw
 
 /* First-update innovations of the stances of [a, b) of a run (3 per stance)
  * with their covariance and start times; all zero before the first
- * firsts_of, freed by firsts_free. (They were arrays of MAX_ST: the
- * stances after the 4,096th were dropped without a word, the held-out
- * ones of a 90-minute walk among them; the scale review, 2026-11-29.) */
+ * firsts_of, freed by firsts_free. (Sized by the stances, not arrays of
+ * MAX_ST, which would drop the stances after the 4,096th without a word,
+ * the held-out ones of a 90-minute walk among them.) */
 typedef struct {
     int n;
     double *t;
@@ -1742,8 +1742,7 @@ static void find_saturation(const walk_t *w, const int *constant, long a, long b
         int n = 0;
         if (constant[c]) {
             /* a stuck output is no clipping: every sample would be a "flat
-             * top" and the diagnosis answered saturation at its value (a
-             * review, 2026-11-28) */
+             * top" and the diagnosis would answer saturation at its value */
             sat[c] = 0.0;
             nsat[c] = 0;
             continue;
@@ -2038,8 +2037,8 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                 L->peak_z = cc->z[j];
                 /* the navigation statistics are logs (ratio real/twin) but
                  * whiteness and the lattice's normal score are not (real -
-                 * twin, as for a static log; the lattice read exp(168) =
-                 * 2e78; a review, 2026-11-28) */
+                 * twin, as for a static log; as a log the lattice would read
+                 * exp(168) = 2e78) */
                 L->ratio = (L->dom == SG_NAV && pl->p[j].kind != SG_NAV_WHITE)
                                ? exp(nv->real_v[SG_FULL][j] - cc->twin_mean[j])
                                : nv->real_v[SG_FULL][j] - cc->twin_mean[j];
@@ -2218,8 +2217,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
             memset(s2, 0, sizeof *s2);
             s2->selected = -1;
             /* no twins are run before a later step: its held-out and fit G
-             * are not known (null in the JSON; they read 0; a review,
-             * 2026-11-28) */
+             * are not known (null in the JSON, not 0) */
             s2->G_hold_before = s2->G_fit_before = (double)NAN;
             for (f = 0; f < 3; f++) {
                 navcand_t cd;
@@ -2361,9 +2359,8 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
     size_t k;
     char b[256];
     /* the held-out stances begin with the first that begins at or after the
-     * split: a stance across it is the fit's, and fit + held out = all.
-     * Until 2026-12-02 it was in both ("the stance across the split in
-     * both") */
+     * split: a stance across it is the fit's alone, and fit + held out =
+     * all */
     fprintf(f, "navigation: %d stance%s (fit %d, held out %d", nv->nst[SG_FULL], nv->nst[SG_FULL] == 1 ? "" : "s",
             nv->nst[SG_FIT], nv->nst[SG_HOLD]);
     if (nv->hold_from_s == nv->hold_from_s) {
@@ -2701,8 +2698,8 @@ int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const
     fprintf(p.gp, "set multiplot layout 2,1 title 'Zero-velocity-update innovations of the real walk'\n");
     if (ns == 0) {
         /* no stance, no update: two empty panels that say so (gnuplot
-         * refused the empty log axis, and the run exited 3 instead of the
-         * too-short answer's 1; a review, 2026-11-28) */
+         * refuses an empty log axis, and the run would exit 3 instead of
+         * the too-short answer's 1) */
         fprintf(p.gp, "set xrange [0:1]\nset yrange [0:1]\nset xlabel 't [s]'\nset ylabel 'NIS'\n"
                       "set title 'NIS of the first update of each stance: no stance detected'\nplot -1 notitle\n"
                       "set title 'mean NIS over each stance: no stance detected'\nplot -1 notitle\n"
