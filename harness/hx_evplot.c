@@ -147,8 +147,7 @@ int hx_evplot_paths(const hx_evplot_set_t *s, const char *cmd, const char *png, 
     fprintf(p.gp, "set multiplot layout 1,2 title '%s'\n", hx_gp_str(q, sizeof q, title));
     fprintf(p.gp, "set key outside bottom center horizontal noautotitle\n");
     /* n's y to the right, x up: x is the heading at the alignment, not
-     * north (no magnetometer, docs/frames.md); labelled 'east y' and 'north
-     * x' until 2026-11-30, as replay's plot was */
+     * north (no magnetometer, docs/frames.md), as in replay's plot */
     fprintf(p.gp, "set size ratio -1\nset xlabel '" HX_PLOT_PATH_XLABEL "'\nset ylabel '" HX_PLOT_PATH_YLABEL
                   "'\nplot ");
     for (i = 0; i < s->n; i++) {

@@ -736,13 +736,12 @@ static int parse_leg(hx_motion_t *m, char *item)
     }
     if (a2 != NULL && (strcmp(name, "stand") == 0 || strcmp(name, "turn") == 0 || strcmp(name, "elevator") == 0)) {
         /* only walk, run and the stairs take a second value: an extra one
-         * was ignored without a word (a review, 2026-11-28) */
+         * is refused, not ignored without a word */
         return fail(m, "stand, turn and elevator take one value (NAME:VALUE)", a2);
     }
     if (a2 != NULL && fabs(x2) > 3600.0) {
         /* the turn of a walk, run or stairs leg, bounded as a turn item's:
-         * 1e300 deg wrote infinite and NaN gyro samples (a review,
-         * 2026-11-28) */
+         * 1e300 deg would write infinite and NaN gyro samples */
         return fail(m, "the turn of a leg must be within +-3600 deg", a2);
     }
     if (strcmp(name, "stand") == 0) {

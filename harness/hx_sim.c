@@ -388,9 +388,9 @@ static int same_params(const fnav_imuerr_config_t *cfg, fnav_effect_id_t id, int
     return 1;
 }
 
-/* The shortest decimal that reads back as v (%.9g printed the float 0.05
- * as 0.0500000007 and the MTx density 8.9e-4 as 0.000890000025; a review,
- * 2026-11-30): what parses back to the same fnav_real_t is the same value. */
+/* The shortest decimal that reads back as v (%.9g would print the float
+ * 0.05 as 0.0500000007 and the MTx density 8.9e-4 as 0.000890000025): what
+ * parses back to the same fnav_real_t is the same value. */
 static void shortest(char *out, size_t size, fnav_real_t v)
 {
     const double a = fabs((double)v);
@@ -521,9 +521,9 @@ void hx_sim_warn_cut(const char *cmd, const hx_motion_t *m, const char *name, do
     for (i = 0; i < 3; i++) {
         moved += (end.pos_m[i] - at.pos_m[i]) * (end.pos_m[i] - at.pos_m[i]);
     }
-    /* a 'walk' of 4 s was 4 s of standing and a 'loop' of 20 s ended 1.2 m
-     * from its start without a word (a review, 2026-11-30); the sized
-     * scenarios' last standing, cut by their whole strides, is no cut */
+    /* a 'walk' of 4 s would be 4 s of standing and a 'loop' of 20 s would
+     * end 1.2 m from its start without a word; the sized scenarios' last
+     * standing, cut by their whole strides, is no cut */
     if (n < total || sqrt(moved) > 1e-6 || fabs(remainder(end.euler_rad[2] - at.euler_rad[2], 6.283185307179586)) > 1e-9) {
         hx_warn(cmd, "--duration %g cuts the motion '%s' (%.1f s) short: the output ends after %d of its %d strides, "
                      "%.2f m from where the motion ends%s",
@@ -652,9 +652,9 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
     }
     if (hx_arg(a, "--mount") != NULL) {
         /* ZYX Euler angles reach every mounting with roll and yaw in
-         * [-180, 180] and pitch in [-90, 90]; any number was taken until
-         * 2026-12-01 (--mount 1e30,0,0 simulated a sensor turned by 1e30
-         * degrees, exit 0) */
+         * [-180, 180] and pitch in [-90, 90]; a number outside is refused
+         * (--mount 1e30,0,0 would simulate a sensor turned by 1e30 degrees,
+         * exit 0) */
         const double *m = s->motion_cfg.mount_deg;
         if (!(fabs(m[0]) <= 180.0) || !(fabs(m[1]) <= 90.0) || !(fabs(m[2]) <= 180.0)) {
             hx_error(cmd, "--mount '%s': roll, pitch, yaw in degrees within [-180, 180], [-90, 90], [-180, 180]",
@@ -702,7 +702,7 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             if (fnav_profile_by_name(&builtin, s->profile_name) != FNAV_OK) {
                 /* a file's bias sd is most likely a stationary sd already
                  * (allan --profile writes one), which eq6 multiplies by
-                 * sqrt(tau rate) / 0.617 without a word (a review, 2026-11-30) */
+                 * sqrt(tau rate) / 0.617, so it is said */
                 hx_warn(cmd, "--bias-sigma eq6 rereads the bias sd of the profile file %s as the paper Tables' "
                              "sigma_bias (eq. 6: x sqrt(tau_s rate_hz) / 0.617); a profile from `harness allan "
                              "--profile` holds the stationary sd already: leave eq6 out for it (docs/simulator.md)",

@@ -183,8 +183,7 @@ static void print_static(FILE *f, const sg_result_t *r)
         }
         /* the held-out max |z| and its critical value too: a held-out gap
          * can be significant by one point while G is below its critical
-         * value, which the line then seemed to contradict (a review,
-         * 2026-11-28) */
+         * value, which the line would otherwise seem to contradict */
         fprintf(f,
                 "  %s  whole log G %.3g (null %.2g, crit %.2g, max |z| %.1f)%s; held out G %.3g (crit %.2g, max |z| "
                 "%.1f of %.2f)%s\n",
@@ -256,8 +255,8 @@ static void print_static(FILE *f, const sg_result_t *r)
         }
         fprintf(f, "attribution %s (held-out segment):\n", sg_channel_name(ch));
         if (c->nsteps == 0) {
-            /* --max-effects 0 (this line could not be reached: the test
-             * above skipped the channel first; a review, 2026-11-28) */
+            /* --max-effects 0 (a channel with a gap reaches this line: the
+             * test above passes it) */
             /* and a log too short for a confident answer, which said a
              * bare "not attempted" (the sgreport review) */
             fprintf(f, "  not attempted%s\n", r->opts.max_steps == 0 ? " (--max-effects 0)"
@@ -467,8 +466,8 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
         int first = 1, nfinal = 0;
         /* the channels' parameters below are their final refit (the
          * accepted effects together, on the fit segment), not the steps'
-         * fits printed above them, and were given unlabelled (a jumps step
-         * of rms 0.00875 beside a verdict of rms 0; 2026-11-30) */
+         * fits printed above them, and are labelled so (unlabelled, a jumps
+         * step of rms 0.00875 would stand beside a verdict of rms 0) */
         for (ch = 0; ch < SG_NCH; ch++) {
             for (i = 0; i < r->ch[ch].nsel; i++) {
                 nfinal += sg_model_find(&r->ch[ch].final, r->ch[ch].sel_id[i]) >= 0;
