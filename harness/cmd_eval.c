@@ -1875,7 +1875,7 @@ int hx_cmd_eval(int argc, char **argv)
             dlen = snprintf(ev.plot_dir, sizeof ev.plot_dir, "%s/img", md_dir);
         }
         if (dlen < 0 || (size_t)dlen >= sizeof ev.plot_dir) {
-            /* a cut name is another directory (the plots review) */
+            /* a cut name is another directory */
             hx_error("eval", "the figures' directory %.80s... is longer than %d bytes", ev.plot_dir,
                      (int)sizeof ev.plot_dir - 1);
             return HX_EXIT_IO;

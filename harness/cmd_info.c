@@ -273,8 +273,7 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     add_num(j, "max_gap_s", in->max_gap_s, in);
     add_num(j, "duplicates", (double)in->dups, in);
     /* null, as the text leaves its drops line out, when the format has no
-     * sensor counter: a 0 read "no drops" where none can be counted (a user
-     * review) */
+     * sensor counter: a 0 would read "no drops" where none can be counted */
     if (log->meta.has_seq && !in->empty) {
         cJSON_AddNumberToObject(j, "counter_drops", (double)in->drops);
     } else {

@@ -286,8 +286,8 @@ static void report_link(live_t *L, const fnav_wire_frame_t *f)
     if (s->resets != L->last_stats.resets) {
         if (L->have_prev_frame && (unsigned)f->seq == L->prev_frame_seq) {
             /* the previous frame again (a link's repetition), not a restart:
-             * a SAMPLE frame's copy is reported where it is skipped (it was
-             * also reported as "restart ... (sender reset?)"; a review) */
+             * a SAMPLE frame's copy is reported where it is skipped, and
+             * only there, not also as "restart ... (sender reset?)" */
             L->seq_repeats++;
             if (f->type != FNAV_WIRE_SAMPLE) {
                 snprintf(msg, sizeof msg, "repeated frame: frame seq %u received twice", (unsigned)f->seq);
@@ -596,8 +596,8 @@ static void plot_async(live_t *L, const char *png)
 {
     pid_t pid;
     if (L->hist.n == 0u) {
-        /* nothing received yet: gnuplot got empty data, and its errors ran
-         * down standard error at every redraw (the plots review) */
+        /* nothing received yet: gnuplot would get empty data, and its
+         * errors would run down standard error at every redraw */
         return;
     }
     if (L->plot_pid > 0) {
@@ -910,8 +910,8 @@ int hx_cmd_live(int argc, char **argv)
     }
     if (plot_every > 0.0 && L.hist.n > 0u) {
         /* the final picture is an output like the others: its child's exit
-         * status was not looked at, and a picture gnuplot failed to draw
-         * exited 0 (the plots review) */
+         * status is looked at, so that a picture gnuplot failed to draw
+         * does not exit 0 */
         int st = 0;
         plot_async(&L, plot_png);
         if (L.plot_pid <= 0 || waitpid(L.plot_pid, &st, 0) < 0 || !WIFEXITED(st) || WEXITSTATUS(st) != 0) {
@@ -1048,7 +1048,7 @@ int hx_cmd_live(int argc, char **argv)
         }
         if (L.record_path != NULL && L.rec != NULL) {
             /* what the file holds, not what was received (after a write
-             * error the rest of the read was counted too; a review) */
+             * error the rest of the read is not counted) */
             fprintf(sum_out, "live: recorded %u samples to %s%s\n", (unsigned)L.recorded, L.record_path,
                    L.rec_failed ? " (recording failed, see above)" : "");
         } else if (L.record_path != NULL) {
@@ -1096,7 +1096,7 @@ int hx_cmd_live(int argc, char **argv)
                      what);
         } else if (L.samples == 0u && exit_code == HX_EXIT_OK) {
             /* nothing to navigate or record is not a complete stream, as
-             * replay of an empty log exits 1 (Ctrl-C exited 0 here; a review) */
+             * replay of an empty log exits 1 (also after Ctrl-C) */
             hx_error(CMD, "no sample received from %s: %s", a.pos[0], what);
             exit_code = HX_EXIT_DATA;
         }

@@ -462,9 +462,9 @@ static int write_plot(const char *png, const hx_mc_result_t *r, const char *moti
         return -1;
     }
     /* the time span of every point: runs too short to align have none
-     * (gnuplot refused the plot, the picture was left half drawn and the
-     * run exited 3), one growth bin is one time (gnuplot warned "empty x
-     * range" on standard error); the plots review */
+     * (gnuplot would refuse the plot, leave the picture half drawn and the
+     * run exit 3), one growth bin is one time (gnuplot would warn "empty x
+     * range" on standard error) */
     for (v = 0; v < r->nvar; v++) {
         for (b = 0; b < r->var[v].nbins; b++) {
             for (w = 0; w < 3; w++) {

@@ -606,9 +606,8 @@ static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], con
     fprintf(p.gp, "set logscale x 2\nset xlabel 'segment length [samples]'\nset ylabel 'sampling frequency [Hz]'\n");
     {
         /* only the DC treatments with an answer; none at all (a log of
-         * zeros) failed the plot, exit 3, and one value everywhere (a
-         * constant log: 50 Hz) made gnuplot warn "empty y range" (the
-         * plots review) */
+         * zeros) would fail the plot, exit 3, and one value everywhere (a
+         * constant log: 50 Hz) would make gnuplot warn "empty y range" */
         double lo = HUGE_VAL, hi = -HUGE_VAL;
         int n = 0, nd[NDC];
         for (d = 0; d < NDC; d++) {
@@ -859,8 +858,8 @@ int hx_cmd_psd(int argc, char **argv)
         hx_stated_rate_warn(CMD, a.pos[0], &log.meta, log.t_ns, log.n, "the frequencies are read at");
     }
     if (hx_arg(&a, "--input-rate") == NULL) {
-        /* a time column in milliseconds (100 Hz read as 0.1 Hz) was said
-         * only as an answer above the log's rate (the static review) */
+        /* a time column in milliseconds (100 Hz read as 0.1 Hz) is said as
+         * such, not only as an answer above the log's rate */
         char msg[320];
         hx_csv_layout_t lay;
         /* judged by the log's span too: stamps in bursts are no unit */
@@ -1107,7 +1106,7 @@ int hx_cmd_psd(int argc, char **argv)
             }
             /* a spectrogram needs two segments (50 % overlap): gnuplot has
              * nothing to draw with none, and draws nothing of an image one
-             * column wide (a blank spectrogram.png; the plots review) */
+             * column wide (a blank spectrogram.png) */
             const size_t two = (size_t)spec_nfft + (size_t)spec_nfft / 2u;
             const int spec = log.n >= two;
             if (log.n < (size_t)spec_nfft) {
@@ -1120,7 +1119,7 @@ int hx_cmd_psd(int argc, char **argv)
                         log.n, spec_nfft, two);
             }
             /* the input's name goes into the titles as a gnuplot string (a
-             * quote in it ended the string: no plot; the plots review) */
+             * bare quote in it would end the string: no plot) */
             char src[1024];
             hx_gp_str(src, sizeof src, a.pos[0]);
             if (plot_psd(s, &res, src, &st) != 0 || plot_ccdf(s, &res, src, &bc) != 0 ||

@@ -61,7 +61,7 @@ static int sink(void *vctx, const hx_sim_tick_t *tk)
     s->dropped += tk->count == 0u;
     s->dups += tk->count == 2u;
     for (c = 0; c < 3 && tk->count > 0u; c++) {
-        /* the peaks of the log: a dropped sample is not in it (a review) */
+        /* the peaks of the log: a dropped sample is not in it */
         double f = fabs((double)tk->meas.accel_mps2[c]), w = fabs((double)tk->meas.gyro_rps[c]);
         s->peak_f = f > s->peak_f ? f : s->peak_f;
         s->peak_w = w > s->peak_w ? w : s->peak_w;

@@ -1071,10 +1071,10 @@ static void plot_failed(const char *cmd, const char *fmt, ...)
 
 int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h)
 {
-    /* the path as a gnuplot string: a quote doubles (a path was cut to 511
-     * bytes here and to 1023 in the string: gnuplot wrote another file, or
-     * this one and the check below looked for the cut name; the plots
-     * review) */
+    /* the path as a gnuplot string: a quote doubles (the path is not cut,
+     * where a cut to 511 bytes here or to 1023 in the string would have
+     * gnuplot write another file, or this one while the check below looks
+     * for the cut name) */
     char q[2 * HX_PLOT_PATH_SIZE];
     memset(p, 0, sizeof *p);
     if (strlen(png_path) >= sizeof p->path) {
@@ -1099,8 +1099,8 @@ int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int
     if (strpbrk(png_path, "\001\002\003\004\005\006\007\010\011\012\013\014\015\016\017\020\021\022\023\024\025\026"
                           "\027\030\031\032\033\034\035\036\037\177") != NULL) {
         /* a control character (a line break) has no place in a quoted
-         * string, which took it for a space: another file was written, and
-         * the check below failed (the plots review); a double-quoted one
+         * string, which takes it for a space: another file would be written,
+         * and the check below would fail; a double-quoted one
          * with octal escapes names the file exactly */
         const char *c;
         fprintf(p->gp, "set output \"");
@@ -1132,8 +1132,8 @@ int hx_plot_close(hx_plot_t *p, const char *cmd)
     rc = pclose(p->gp);
     p->gp = NULL;
     if (rc != 0 || access(p->path, F_OK) != 0) {
-        /* gnuplot failed partway: a half-drawn picture is no result, and
-         * was left behind (the plots review). Removed when this session
+        /* gnuplot failed partway: a half-drawn picture is no result, not
+         * to be left behind. Removed when this session
          * started it: new, or changed since hx_plot_open (gnuplot's set
          * output truncates the file in place); a file gnuplot never opened
          * (it failed before its set output) stays as it was. */

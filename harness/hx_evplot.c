@@ -201,8 +201,8 @@ int hx_evplot_strides(const hx_evplot_set_t *s, const char *cmd, const char *png
     rows = (s->n + cols - 1) / cols;
     /* the title and the key on two lines, the picture at least as wide as
      * the longer (about 6 px a character): on one line, 3 panels wide, the
-     * footprints' figure cut both ends off, the key's "circles: the truth"
-     * among them (the plots review) */
+     * footprints' figure would cut both ends off, the key's "circles: the
+     * truth" among them */
     {
         const size_t len = strlen(title) > strlen(k_strides_key) ? strlen(title) : strlen(k_strides_key);
         const int w = 320 * cols > 7 * (int)len + 40 ? 320 * cols : 7 * (int)len + 40;

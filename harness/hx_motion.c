@@ -854,8 +854,8 @@ hx_motion_t *hx_motion_create(const hx_motion_config_t *cfg, const char *script,
         if (parse_leg(m, item) != 0) {
             if (scenario) {
                 /* the item is the scenario's, sized to the duration: say so
-                 * (--duration 1e5 blamed "walk/run needs a distance in
-                 * (0, 1e5] m: 128320.500", a distance never given; a review) */
+                 * (not "walk/run needs a distance in (0, 1e5] m: 128320.500"
+                 * for --duration 1e5, a distance never given) */
                 char why[256];
                 snprintf(why, sizeof why, "%s", err);
                 if (duration_s > 0.0) {
@@ -871,7 +871,7 @@ hx_motion_t *hx_motion_create(const hx_motion_config_t *cfg, const char *script,
         items++;
     }
     if (items == 0) {
-        /* "," or ",," made one second of standing with exit 0 (a review) */
+        /* "," or ",," is refused, not one second of standing with exit 0 */
         snprintf(err, err_size, "empty motion script '%s' (items such as stand:5,walk:20)", script);
         hx_motion_free(m);
         return NULL;

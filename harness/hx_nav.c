@@ -494,8 +494,8 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
     gap_ns = (int64_t)ceil(1e9 * (max_gap_s > 1.5 / fs ? max_gap_s : 1.5 / fs));
     if (!(rate_hz < fs * 0.999)) {
         /* a rate within 0.1 % of the input's leaves nothing to decimate
-         * (the vicon trials' 200.080 Hz median refused --rate 200 as "not
-         * below the input rate 200.1 Hz", a user review); the advised bound
+         * (the vicon trials' 200.080 Hz median would refuse --rate 200 as
+         * "not below the input rate 200.1 Hz"); the advised bound
          * is rounded down so that every rate below it is accepted */
         const double below = floor(fs * 0.999 * 1000.0) / 1000.0;
         free(keep);
@@ -1737,9 +1737,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     if (traj != NULL) {
         traj->stats = nav.stats;
         traj->rate_hz = (double)nav.stance.rate_hz;
-        /* three rates can be printed for one log (the generalisation
-         * review: 199.44 Hz here, 200.0 Hz by info, 200.1 Hz by --rate's
-         * error, for a vicon trial): the line says which this is */
+        /* three rates can be printed for one log (199.44 Hz here, 200.0 Hz
+         * by info, 200.1 Hz by --rate's error, for a vicon trial): the line
+         * says which this is */
         if (rate_hz > 0.0) {
             snprintf(traj->rate_src, sizeof traj->rate_src, "resampled");
         } else if (cfg->stance.rate_hz > FNAV_R(0.0)) {

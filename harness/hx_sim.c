@@ -280,7 +280,7 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
         return -1;
     }
     if (t != NULL) {
-        /* the fields past the 32nd were dropped without a word (a review) */
+        /* refused, not the fields past the 32nd dropped without a word */
         snprintf(err, err_size, "effect specification with more than %d fields: %.40s...", ntok, spec);
         return -1;
     }
@@ -349,8 +349,8 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
                 }
             }
             if (pm == 0u && v != 0.0) {
-                /* every channel given is the parameter's own axis: the value
-                 * was dropped and the run went on (a review) */
+                /* every channel given is the parameter's own axis: refused,
+                 * since the value would be dropped and the run go on */
                 snprintf(err, err_size, "effect misalign: %s is the own axis of the %c channels (a%c, g%c: that is "
                          "the scale effect); give it for the other channels", tok[i], 'x' + axis, 'x' + axis,
                          'x' + axis);
@@ -358,8 +358,8 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
             }
         }
         if ((info->params[k].flags & FNAV_PARAM_INTEGER) && v != floor(v)) {
-            /* refused later by fnav_imuerr_init as "the effects are
-             * inconsistent (e.g. ...)", which did not name it (a review) */
+            /* refused here by name, not later by fnav_imuerr_init as "the
+             * effects are inconsistent (e.g. ...)", which does not name it */
             snprintf(err, err_size, "effect %s: %s needs a whole number, got '%s'", info->name, tok[i], eq + 1);
             return -1;
         }
@@ -590,8 +590,8 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             }
         }
         /* the derived figure keeps the range of its own option (--speed 10
-         * --cadence 20 walked 50 m strides, --speed 5 --stride 0.5 was
-         * refused as "gait fractions leave no time to swing"; a review) */
+         * --cadence 20 would walk 50 m strides, --speed 5 --stride 0.5 be
+         * refused as "gait fractions leave no time to swing") */
         if (w->cadence_spm < 20.0 || w->cadence_spm > 300.0) {
             hx_error(cmd, "--speed %g with a stride of %g m makes a cadence of %.4g steps/min, outside [20, 300]", sp,
                      w->stride_m, w->cadence_spm);
@@ -623,7 +623,7 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         caps[0] = '\0';
         for (i = 0; i < 5; i++) {
             /* a stride lands in at most 30 % of the swing (hx_gait_max_impact_s): a
-             * longer --impact-ms was shortened without a word (a review) */
+             * longer --impact-ms is said, not shortened without a word */
             const double cap_s = hx_gait_max_impact_s(gs[i]);
             if (v * 1e-3 > cap_s && len < sizeof caps) {
                 len += (size_t)snprintf(caps + len, sizeof caps - len, "%s%s %.0f ms", len ? ", " : "", gn[i],
@@ -719,7 +719,7 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         s->has_profile = 1;
     } else if (s->bias_eq6) {
         /* eq6 rereads a profile's bias sd; the ideal sensor has none (the
-         * option was dropped without a word; a review) */
+         * option is ignored with a warning, not without a word) */
         hx_warn(cmd, "--bias-sigma eq6 rereads a profile's bias sd; --profile none has no bias model: ignored");
     }
     for (i = 0; i < hx_arg_count(a, "--effect"); i++) {
@@ -742,9 +742,9 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         int alias = s->err.mask[FNAV_EFFECT_ALIAS] != 0u, mean = s->decim == HX_DECIM_MEAN && !alias;
         int pick = !mean && (alias || fnav_imuerr_internal_factor(&s->err) == 1u);
         /* sampling-instant jitter: refused here, before any output is
-         * begun (hx_sim_run refused it after the log was created), with the
-         * advice that fits the decimation (--oversample 1 was advised to a
-         * --decimation mean run that had it; a review) */
+         * begun (hx_sim_run would refuse it after the log was created), with
+         * the advice that fits the decimation (not --oversample 1 to a
+         * --decimation mean run that has it) */
         if (!pick && s->err.mask[FNAV_EFFECT_JITTER] != 0u && s->err.jitter.sample_s > FNAV_R(0.0)) {
             hx_error(cmd, "sampling-instant jitter (jitter:sample_s) needs point sampling: %s",
                      mean ? "interval means (--decimation mean) average over the interval; use --decimation fir "
@@ -760,9 +760,8 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             if (!mean && f > 0.41 * rate) {
                 /* a tone in the filter's stop band never reaches the output;
                  * one in its transition band (0.41-0.59 f_s) passes
-                 * attenuated, folded above f_s / 2 (the warning said
-                 * "filtered out" for both: 90 Hz at 200 Hz passes at 91 %;
-                 * a review) */
+                 * attenuated, folded above f_s / 2 (the warning says so, not
+                 * "filtered out" for both: 90 Hz at 200 Hz passes at 91 %) */
                 int M = (int)fnav_imuerr_internal_factor(&s->err), L, n;
                 double *h = fir_design(M, HX_SIM_FIR_HALF, &L), gain = 0.0;
                 if (h != NULL) {
@@ -789,8 +788,8 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             }
             if (mean && f > 0.5 * rate) {
                 /* the interval mean is no anti-alias filter: it passes the
-                 * tone attenuated and folded (the warning said "filtered
-                 * out" for it; a review) */
+                 * tone attenuated and folded (the warning says so, not
+                 * "filtered out") */
                 hx_warn(cmd, "vibration at %g Hz lies above the output's Nyquist frequency (%g Hz at %g Hz): the "
                              "interval means (--decimation mean) attenuate it and fold it to %g Hz",
                         f, 0.5 * rate, rate, fabs(f - rate * floor(f / rate + 0.5)));

@@ -358,8 +358,8 @@ static int stances_of(const navrun_t *r, long a, long b, stance_t *st, int max)
  * runs of updates separated by less than the shortest swing (min_swing_s)
  * are one stance. The detector flickers at a landing (the x-io short walk:
  * 23 runs of updates, 17 stances, gaps of 0.02-0.09 s between the pieces of
- * one stance against swings of 0.7-0.9 s), and the too-short rule counted
- * the pieces (a review). The statistics above still use the runs. */
+ * one stance against swings of 0.7-0.9 s), and the too-short rule would
+ * count the pieces. The statistics above still use the runs. */
 static int stance_begins(const int64_t *t_ns, long last, long k, double min_swing_s)
 {
     /* update k after the update last (-1: none) begins a stance */
@@ -494,10 +494,10 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long from
     } while (0)
     /* a segment without a stance (a short walk's held-out part, a foot that
      * never stands still) has no innovation to compare: its points are
-     * placeholders outside G, as an empty window's. They were the constant
-     * ln 1e-30 in the real and every twin, so the comparison read as twins
-     * that do not vary and the walk was refused as "a noise-free log?"
-     * instead of too short (a review) */
+     * placeholders outside G, as an empty window's. As the constant ln 1e-30
+     * in the real and every twin, the comparison would read as twins that do
+     * not vary and the walk would be refused as "a noise-free log?" instead
+     * of too short */
     ADDE(SG_NAV_NIS_FIRST, 0.0, t0, t1, lnpos(ns > 0 ? sf / ns : 0.0), ns == 0);
     ADDE(SG_NAV_NIS_ALL, 0.0, t0, t1, lnpos(nu > 0 ? sa / nu : 0.0), ns == 0);
     for (c = 0; c < 3; c++) {
@@ -1720,9 +1720,8 @@ static void stance_noise(const walk_t *w, const navrun_t *r, long a, long b, dou
             }
         }
         if (m > 10) {
-            /* the median by sorting: the selection sort it was is quadratic,
-             * and a walk with a 10-minute stand spent most of its time here
-             * (a review) */
+            /* the median by sorting: a selection sort is quadratic, and a
+             * walk with a 10-minute stand would spend most of its time here */
             qsort(d, (size_t)m, sizeof *d, cmp_double);
             /* MAD of a difference of two white samples: 0.6745 sqrt(2) sigma */
             white[c] = d[m / 2] / (0.6745 * sqrt(2.0)) / sqrt(fs);
@@ -1834,8 +1833,8 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
     }
     /* a confident answer: at least 10 held-out stances, whose mean
      * first-update NIS (chi2_3 / 3 per stance) is known to -44 % / +57 %
-     * (95 %: the quantiles of chi2_30 / 30). The message said +-50 %,
-     * which takes 13 (a review); the interval is computed, not typed */
+     * (95 %: the quantiles of chi2_30 / 30); +-50 % would take 13. The
+     * interval is computed, not typed */
     r->confident = 1;
     if (nv->nst[SG_HOLD] < NAV_MIN_HOLD) {
         const double dof = 3.0 * NAV_MIN_HOLD;
@@ -1948,8 +1947,8 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
         }
         /* a window in which the real has a stance begin but a twin none has
          * no twin statistic (the twin's is the placeholder ln 1e-30): not
-         * compared either. A 6 s walk's window read "real 0.0007 twin 1e-30
-         * (sd 1e-12) z +13.5" and was located as a gap (a review) */
+         * compared either (a 6 s walk's window would read "real 0.0007 twin
+         * 1e-30 (sd 1e-12) z +13.5" and be located as a gap) */
         for (g = 0; g < SG_NSEG; g++) {
             size_t k;
             int s2;
@@ -1984,9 +1983,9 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                  * answer, said as such. But a walk too short for lack of
                  * stances is said to be too short: with no stance in the
                  * fit segment the twins get no noise (it is measured in the
-                 * stances) and did not vary, and a foot that never stood
-                 * still was refused as "a noise-free log?" with no summary
-                 * or JSON (a review) */
+                 * stances) and do not vary, and a foot that never stood
+                 * still would be refused as "a noise-free log?" with no
+                 * summary or JSON */
                 int c2, g2;
                 snprintf(err, err_size, "the navigation gap of the walk cannot be tested: %s",
                          nav_cmp_why(nv, &cc[conv][g]));
@@ -2414,8 +2413,8 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
         }
         /* the sd is z's denominator, of the log of the statistic but for
          * whiteness: printed next to the statistic itself as "sd 0.08" it
-         * read as 0.64 +- 0.08 NIS for a spread of 8 % (a review) */
-        if (p->kind == SG_NAV_WIN) { /* which window: the six rows read alike (a user review) */
+         * would read as 0.64 +- 0.08 NIS for a spread of 8 % */
+        if (p->kind == SG_NAV_WIN) { /* which window: otherwise the six rows read alike */
             snprintf(b, sizeof b, "t %.1f-%.1f s", p->x_lo, p->x_hi);
         } else {
             snprintf(b, sizeof b, "%s", p->kind == SG_NAV_AXIS ? (p->x == 0.0 ? "x" : p->x == 1.0 ? "y" : "z") : "");
@@ -2712,9 +2711,9 @@ int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const
     fprintf(p.gp, "set xrange [%.4f:%.4f]\n", nv->t_s[st[0].first] - 0.5, nv->t_s[st[ns - 1].first] + 0.5);
     fprintf(p.gp, "$d << EOD\n");
     for (i = 0; i < ns; i++) {
-        /* the stance's start time (it was the sample index over the mean
-         * rate: after a 5 s gap every later stance was drawn 5 s early,
-         * apart from the summary's windows; a review) */
+        /* the stance's start time, not the sample index over the mean rate
+         * (after a 5 s gap every later stance would be drawn 5 s early,
+         * apart from the summary's windows) */
         fprintf(p.gp, "%.4f %.6g %.6g\n", nv->t_s[st[i].first], st[i].nis_first,
                 st[i].nupd > 0 ? st[i].nis_sum / st[i].nupd : 0.0);
     }

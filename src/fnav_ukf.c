@@ -41,8 +41,7 @@ static int finite_pos(fnav_real_t x)
 
 /* A standard deviation whose variance is finite and positive as well (in
  * float32 an sd below about 1e-19 has a variance of 0, one above 1.8e19 an
- * infinite one: the guard then made either the maximum; the filter
- * review). */
+ * infinite one, which the guard would make the maximum). */
 static int sd_ok(fnav_real_t x)
 {
     return finite_pos(x) && finite_pos(x * x);
@@ -50,8 +49,8 @@ static int sd_ok(fnav_real_t x)
 
 /* A white-noise density or random walk (0 allowed) whose square, which the
  * prediction adds to the covariance, is finite (in float32 one above
- * 1.8e19 made the first prediction's variance infinite and the guard its
- * maximum; the UKF review). */
+ * 1.8e19 would make the first prediction's variance infinite and the guard
+ * its maximum). */
 static int noise_ok(fnav_real_t x)
 {
     return finite_nonneg(x) && fnav_isfinite(x * x);
@@ -259,9 +258,9 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     }
     {
         /* a quaternion whose squared norm overflows or underflows is
-         * scaled by its largest component first (fnav_quat_normalize made
-         * (1e20, 0, 0, 1e20) the zero quaternion: the filter review); a
-         * unit one is normalised as it always was */
+         * scaled by its largest component first (fnav_quat_normalize makes
+         * (1e20, 0, 0, 1e20) the zero quaternion); a unit one is normalised
+         * by fnav_quat_normalize */
         fnav_real_t n2 = q_nb.q[0] * q_nb.q[0] + q_nb.q[1] * q_nb.q[1] + q_nb.q[2] * q_nb.q[2] + q_nb.q[3] * q_nb.q[3];
         if (!(n2 > FNAV_REAL_EPSILON) || !fnav_isfinite(n2)) {
             fnav_real_t m = FNAV_R(0.0);
