@@ -20,8 +20,8 @@ static const hx_opt_t k_opts[] = {
 };
 
 /* --start / --end: a window in seconds after the input's first sample, as
- * the commands report times (allan's "cut the log to its still part" had
- * no tool to cut with; a review, 2026-11-29). */
+ * the commands report times (the tool for allan's "cut the log to its
+ * still part"). */
 typedef struct {
     int64_t start_ns, end_ns; /* end_ns < 0: to the end */
     int64_t t0_ns;
@@ -61,8 +61,8 @@ static int window_empty(const window_t *wd, const hx_args_t *a)
     if (wd->kept > 0 || !wd->have_t0) {
         return 0;
     }
-    /* with the log's span, or the gap the window fell in ("no sample
-     * between 100 and the end s after the first"; a review, 2026-12-02) */
+    /* with the log's span, or the gap the window fell in, not only "no
+     * sample between 100 and the end s after the first" */
     {
         char to[96];
         const char *start = hx_arg(a, "--start") != NULL ? hx_arg(a, "--start") : "0";
@@ -119,8 +119,8 @@ static int convert_resampled(const hx_args_t *a, hx_format_t to, double rate, wi
     res.meta.rate_hz = rate;
     res.meta.rate_nominal = 1;
     res.meta.has_temp = 0; /* the resampler carries no temperature */
-    res.meta.has_seq = 0;  /* nor the sensor's counter: its seq is a running index (the .bin said "the
-                              sensor's own counter", and info counted no drops; a review, 2026-11-29) */
+    res.meta.has_seq = 0;  /* nor the sensor's counter: its seq is a running index (marked as "the
+                              sensor's own counter", info would count no drops) */
     if (raw.n > 0) {
         wd->t0_ns = raw.t_ns[0]; /* the window counts from the input's first sample */
         wd->have_t0 = 1;
@@ -224,8 +224,7 @@ int hx_cmd_convert(int argc, char **argv)
         return HX_EXIT_IO;
     }
     hx_warn_gz_output("convert", a.pos[1], to);
-    /* a long log shows progress (a day at 100 Hz took 11 s to CSV without
-     * a word; the scale review, 2026-11-29) */
+    /* a long log shows progress (a day at 100 Hz takes 11 s to CSV) */
     hx_progress_start(&pr, "convert", 1.0);
     while ((st = hx_reader_next(r, &s)) == FNAV_OK) {
         if ((hx_reader_stats(r)->records & 65535) == 0) {
@@ -248,10 +247,9 @@ int hx_cmd_convert(int argc, char **argv)
     }
     hx_progress_end(&pr);
     if (st != FNAV_END && exit_code == HX_EXIT_OK) {
-        /* the samples written: with --start/--end those of the window (the
-         * samples read were counted as written, "the 200 samples before it
-         * were written" when --start kept none; the robustness hunt,
-         * 2026-12-01) */
+        /* the samples written: with --start/--end those of the window, not
+         * the samples read ("the 200 samples before it were written" when
+         * --start kept none) */
         const long n = hx_reader_stats(r)->records, kept = wd.kept;
         if (hx_arg(&a, "--start") != NULL || hx_arg(&a, "--end") != NULL) {
             hx_error("convert", "%s (the %ld sample%s of the window before it %s written, of %ld read)",

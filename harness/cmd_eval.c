@@ -20,8 +20,9 @@
 /* Room for a row's note: a reader's or replay's message whole (HX_ERR_SIZE:
  * the path and the longest remedy, a stamps-in-bursts refusal's "convert it
  * to CSV ...") with eval's words around it ("input ends early (...): the
- * walk was read only in part"). Until 2026-12-01 a note had 200 bytes and a
- * replay's message 400: a non-CSV log's bursts refusal lost its remedy. */
+ * walk was read only in part"), so that a non-CSV log's bursts refusal
+ * keeps its remedy (200 bytes for a note and 400 for a replay's message
+ * would cut it). */
 #define EV_NOTE_SIZE (HX_ERR_SIZE + 128)
 
 static const hx_opt_t k_opts[] = {
@@ -52,9 +53,9 @@ typedef char ev_name_t[256];
 /* Room for the data directory's path, and for a path built on it: the
  * directory, a set's folder (pyshoe_vicon_llio/own_3dmgx5_footprints, 39
  * bytes), a file name (255) and the longest suffix eval adds
- * (_strides_gcp.csv), with room to spare. Until 2026-12-01 the directory had
- * 512 bytes: one of 561 was cut and reported missing ("no shared data in"
- * the cut name, exit 4). */
+ * (_strides_gcp.csv), with room to spare. With 512 bytes for the directory
+ * one of 561 would be cut and reported missing ("no shared data in" the
+ * cut name, exit 4). */
 #define EV_DATA_SIZE 1024
 #define EV_DIR_SIZE (EV_DATA_SIZE + 64)  /* the directory and a set's folder */
 #define EV_PATH_SIZE (EV_DIR_SIZE + 320) /* that, a file name and a suffix */
@@ -287,8 +288,8 @@ static const char *after_path(const char *msg, const char *path, char *buf, size
 }
 
 /* A walk's name as a Markdown table cell: '|' escaped, a control character
- * (a line break in a file name) as '?'. Written as it was until
- * 2026-12-01, a name holding '|' made its row one cell wider than its
+ * (a line break in a file name) as '?'. Written as it is, a name holding
+ * '|' would make its row one cell wider than its
  * table. out needs 2 * strlen(name) + 1 bytes (EV_CELL_SIZE for a file
  * name). */
 #define EV_CELL_SIZE (2 * sizeof(ev_name_t) + 64)
@@ -314,8 +315,8 @@ static const char *md_cell(const char *name, char *out, size_t size)
  * again, by eval's once-per-process warnings (hx_warn_once): an events
  * file's fault that both feet's rows give (one foot's events missing or not
  * pairs: that foot's and the other foot's run fail on it), a walk that fails
- * each experiment's repeat as its main run. Until 2026-12-01 each failed run
- * warned: twice per events file, up to eleven times per walk. */
+ * each experiment's repeat as its main run (a warning per failed run would
+ * be twice per events file, up to eleven times per walk). */
 static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const char *msg)
 {
     char buf[HX_ERR_SIZE];
@@ -326,9 +327,9 @@ static void fail(ev_t *ev, const char *path, char *why, size_t why_size, const c
     if (why == NULL) {
         return;
     }
-    /* for the row's cell: '|' escaped, as a name (md_cell(); until
-     * 2026-12-01 made '/', which named another file: "cannot open 1/1.json"
-     * for 1|1.json), a line break '/' */
+    /* for the row's cell: '|' escaped, as a name (md_cell(); not '/',
+     * which would name another file: "cannot open 1/1.json" for
+     * 1|1.json), a line break '/' */
     for (i = o = 0; reason[i] != '\0' && o + 2 < why_size; i++) {
         if (reason[i] == '|') {
             why[o++] = '\\';
@@ -386,9 +387,9 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
          * the walk: only the part before it was navigated, and its figures
          * (a closure of a walk read to a third, a final-stride error of a
          * stride in the middle) are not the walk's. A failed run, as a log
-         * that cannot be read at all (until 2026-11-29 a note in the row
-         * only: no warning, exit 0, and the part judged against the
-         * targets; a review) */
+         * that cannot be read at all (warned and counted in the exit
+         * status, the part not judged against the targets), not a note in
+         * the row only */
         char why[EV_NOTE_SIZE];
         snprintf(why, sizeof why, "input ends early (%s): the walk was read only in part",
                  after_path(err, path, buf, sizeof buf));
@@ -398,9 +399,8 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
     }
     if (rc == 3) {
         /* read to its end, never aligned: replay's reason (no still period,
-         * or time stamps that never advance), which the row gave as "no
-         * still period at the start" for both (the JSON review's merge,
-         * 2026-11-30) */
+         * or time stamps that never advance), not "no still period at the
+         * start" for both */
         char why[EV_NOTE_SIZE];
         snprintf(why, sizeof why, "the filter never aligned: %s", after_path(err, path, buf, sizeof buf));
         fail(ev, path, note, note_size, why);
@@ -426,7 +426,7 @@ static int replay(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, doub
     hx_nav_summarize(t, s);
     if (s->before_align_s > HX_NAV_LATE_ALIGN_S) {
         /* replay's note: a log that starts moving; its start is not in the
-         * figures (said in the row since 2026-11-29) */
+         * figures (said in the row) */
         snprintf(buf, sizeof buf, "%.1f s of motion before the alignment: not navigated", s->before_align_s);
         note_add(note, note_size, buf);
     }
@@ -573,8 +573,8 @@ static double xio_vendor_m(const char *name)
  * the replay failed, or, for a judged walk (openshoe_gx2's and xio's
  * sections), when it has no stride (no_closure). The other closed walks
  * are reported, not judged, in their table and in the rate experiment
- * alike (until 2026-12-01 the experiment judged them: a walk without a
- * stride was two failed runs, exit 1). */
+ * alike (judged in the experiment, a walk without a stride would be two
+ * failed runs, exit 1). */
 static double closure_3d_m(ev_t *ev, const char *path, const fnav_nav_config_t *cfg, double rate_hz, int judged)
 {
     hx_traj_t t;
@@ -603,9 +603,9 @@ typedef struct {
 /* The n numbers of a truth row, separated by commas, blanks around them
  * allowed: 0, or -1 for anything else. sscanf's "%lf,%lf,%lf,%lf" took the
  * number before junk in a field (a y of 6"x"02e-01 as 6, a stride index of
- * 2.685e as 3) and read a row of five fields shifted (its timestamp as x);
- * the mutation sweep of 2026-11-29 scored a walk against a footprint 2e16 m
- * away that way, exit 0. */
+ * 2.685e as 3) and read a row of five fields shifted (its timestamp as x):
+ * a mutated truth file scored a walk against a footprint 2e16 m away that
+ * way, exit 0. */
 static int truth_row(const char *line, double *v, int n)
 {
     const char *p = line;
@@ -654,9 +654,8 @@ static int read_gcp(const char *path, gcp_t *g, char *why, size_t why_size)
     while (fgets(line, sizeof line, f) != NULL) {
         double v[4];
         /* a position beyond FNAV_INPUT_MAX_ABS (1e6 m, the log readers'
-         * bound on any value in SI units) is no footprint: x of -7e42 made
-         * a path of 1.4e43 m and a final error of 0.00 % (mutation sweep,
-         * 2026-11-29) */
+         * bound on any value in SI units) is no footprint: x of -7e42 would
+         * make a path of 1.4e43 m and a final error of 0.00 % */
         int ok = truth_row(line, v, 4) == 0 && fabs(v[2]) <= FNAV_INPUT_MAX_ABS && fabs(v[3]) <= FNAV_INPUT_MAX_ABS;
         size_t k = strspn(line, " \t\r\n");
         if (skip_long_line(f, line, sizeof line)) {
@@ -872,7 +871,7 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
         }
         if (!is_file(path) || read_gcp(gpath, &g, msg, sizeof msg) != 0) {
             /* a truth file that is there but refused is named, not the
-             * walk's IMU log (the review of 2026-11-30) */
+             * walk's IMU log */
             fail(ev, is_file(path) && is_file(gpath) ? gpath : path, note, sizeof note, msg);
             not_run_row(ev, write, cell, 6, note);
             continue;
@@ -903,9 +902,9 @@ static void footprints(ev_t *ev, const fnav_nav_config_t *cfg, double rate_hz, i
             not_run_row(ev, write, cell, 6, note);
         } else if (!(r.path > 0.0)) {
             /* the truth's scored strides all at the first one's position:
-             * no measured path, so no final % to judge (its "nan" made the
-             * section's median and mean nan, exit 0, until 2026-12-01), as
-             * a judged closed walk without a stride (no_closure) */
+             * no measured path, so no final % to judge (a "nan" would make
+             * the section's median and mean nan, exit 0), as a judged closed
+             * walk without a stride (no_closure) */
             fail(ev, gpath, note, sizeof note,
                  "the truth's strides span no path (all at the first stride's position): no final-stride error "
                  "as a share of it");
@@ -961,10 +960,9 @@ static int read_vicon(const char *path, double **vx, double **vy, size_t *n)
     while (fgets(line, sizeof line, f) != NULL) {
         double v[9];
         const char *q = line + strspn(line, " \t");
-        /* a line longer than the buffer is one row, without a position:
-         * each 511 characters of it were a row, and every stride after it
-         * took the position of the sample before (mutation sweep,
-         * 2026-11-29) */
+        /* a line longer than the buffer is one row, without a position, not
+         * a row per 511 characters of it, which would give every stride
+         * after it the position of the sample before */
         const int long_line = skip_long_line(f, line, sizeof line);
         int ok;
         if (line[strspn(line, " \t\r\n\v\f")] == '\0' || *q == '#') {
@@ -1040,7 +1038,7 @@ static void vicon(ev_t *ev, const fnav_nav_config_t *cfg, int write, vicon_t *ou
         } else {
             rc = read_gcp(gpath, &g, msg, sizeof msg);
             if (rc != 0 && is_file(gpath)) {
-                bad = gpath; /* a truth file there but refused (the review of 2026-11-30) */
+                bad = gpath; /* a truth file there but refused */
             }
         }
         if (rc == 0 && read_vicon(path, &vx, &vy, &nv) != 0) {
@@ -1109,9 +1107,8 @@ typedef struct {
 
 /* A JSON pair of sample indices [x, y] (whole numbers, 0 <= x <= y) into
  * v; 0, or -1 when p is not one (an unknown value, NaN in the file, is
- * null here: until 2026-11-29 it was read as 0, so that [NaN, 574] was a
- * swing from the file's first packet and [527, NaN] one that ends before it
- * starts, a missed stride). */
+ * null here: read as 0, [NaN, 574] would be a swing from the file's first
+ * packet and [527, NaN] one that ends before it starts, a missed stride). */
 static int json_pair(const cJSON *p, long v[2])
 {
     const cJSON *x = cJSON_GetArrayItem(p, 0), *y = cJSON_GetArrayItem(p, 1);
@@ -1219,13 +1216,13 @@ static int read_events(const char *path, long ev[][2], int max, const char *key,
  * packets since the file's first: it is the time base the Awinda station
  * gives every sensor of a recording, and one TrialBoundaries pair serves
  * both feet, whose files start at different counters when their first
- * packets were lost (1-2: left 0, right 1; 3-3: left 2, right 0). Until
- * 2026-11-29 each file's first counter was subtracted, which moved the
- * events of the six files not starting at 0 earlier by one or two packets:
- * their foot-off errors then had a median of -3 packets against -1 for the
- * other 22 (subject 1's three such files at -3 each, its nine others
- * between -2 and -1), their foot-strike errors 0 against +1; with the
- * counter both groups agree (-1 and +1; a review). */
+ * packets were lost (1-2: left 0, right 1; 3-3: left 2, right 0).
+ * Subtracting each file's first counter would move the events of the six
+ * files not starting at 0 earlier by one or two packets: their foot-off
+ * errors would have a median of -3 packets against -1 for the other 22
+ * (subject 1's three such files at -3 each, its nine others between -2 and
+ * -1), their foot-strike errors 0 against +1; with the counter both groups
+ * agree (-1 and +1). */
 static long pkt_of_time(const hx_log_t *log, int64_t t_ns)
 {
     return (long)llround((double)t_ns * log->meta.rate_hz * 1e-9);
@@ -1241,7 +1238,7 @@ static int overlaps(long a0, long a1, long b0, long b1)
 
 /* v with one decimal, or "-" when there is none (no event to time). */
 /* v in the printf format fmt (one double), or "-" when there is none (a
- * failed run: "nan" in a table until 2026-11-29). */
+ * failed run, not "nan" in a table). */
 static const char *fmt_v(char *buf, size_t size, const char *fmt, double v)
 {
     if (isfinite(v)) {
@@ -1300,10 +1297,10 @@ static void ipol_match(const long (*evs)[2], int ne, const long (*oevs)[2], int 
                 if (used[k] == 0 && overlaps(sw[k][0], sw[k][1], s0, s1)) {
                     /* belongs to an excluded expert swing (not spurious);
                      * one that already detected an evaluated swing keeps
-                     * that mark, else a later evaluated swing took it again:
-                     * one detected swing over three expert swings, the
-                     * middle one left out, counted as two detections
-                     * (until 2026-11-29; a review) */
+                     * that mark, else a later evaluated swing would take it
+                     * again: one detected swing over three expert swings,
+                     * the middle one left out, would count as two
+                     * detections */
                     used[k] = 2;
                 }
             }
@@ -1397,8 +1394,8 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             } else if (noe < 0) {
                 /* the other foot's swings decide which of this foot's are
                  * evaluated (both feet in the air): without them the
-                 * evaluation is not the one described (until 2026-11-29 it
-                 * went on as if the other foot never left the ground) */
+                 * evaluation is not the one described (it would go on as if
+                 * the other foot never left the ground) */
                 fail(ev, jpath, note, sizeof note, oerr);
                 ne = -1;
             } else if (!is_file(path)) {
@@ -1411,8 +1408,8 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
             } else if (lrc > 0 || log.n == 0) {
                 /* a line the reader could not take stopped the log: the
                  * expert swings after it would read as missed strides, the
-                 * detector blamed for the data (until 2026-11-29 without a
-                 * word, exit 0; a review) */
+                 * detector blamed for the data (so it is said, not passed
+                 * with exit 0) */
                 char buf[HX_ERR_SIZE], why[EV_NOTE_SIZE];
                 snprintf(why, sizeof why, "input ends early (%s): the foot's log was read only in part",
                          log.n == 0 ? "no sample" : after_path(log.error, path, buf, sizeof buf));
@@ -1640,7 +1637,7 @@ static void paired_row(ev_t *ev, const char *profile, const char *figure, const 
     snprintf(a, sizeof a, fmt, hx_median(d, k));
     snprintf(b, sizeof b, fmt, lo);
     snprintf(c, sizeof c, fmt, hi);
-    /* every walk a tie: no sign test ("-"; "nan" until 2026-12-01) */
+    /* every walk a tie: no sign test ("-", not "nan") */
     fprintf(ev->md, "| %s | %s | %d | %d of %d | %s [%s, %s] | %s |\n", profile, figure, k, better, k - ties, a, b,
             c, fmt_v(pv, sizeof pv, "%.3f", sign_test_p(better, k - ties)));
     free(d);
@@ -1834,9 +1831,9 @@ int hx_cmd_eval(int argc, char **argv)
             }
         }
         if (f == NULL && d == NULL) {
-            /* a --data that does not exist, or is a file, was told "no
-             * shared data in DIR (give --data DIR ...)" as a directory
-             * without the data was (a user review, 2026-12-02) */
+            /* a --data that does not exist, or is a file, is told so, not
+             * "no shared data in DIR (give --data DIR ...)" as a directory
+             * without the data is */
             const char *hint = hx_arg(&a, "--data") == NULL ? "; give --data DIR or set FNAV_DATA_DIR" : "";
             struct stat st;
             if (stat(ev.data, &st) != 0) {
@@ -1878,7 +1875,7 @@ int hx_cmd_eval(int argc, char **argv)
             dlen = snprintf(ev.plot_dir, sizeof ev.plot_dir, "%s/img", md_dir);
         }
         if (dlen < 0 || (size_t)dlen >= sizeof ev.plot_dir) {
-            /* a cut name is another directory (the plots review) */
+            /* a cut name is another directory */
             hx_error("eval", "the figures' directory %.80s... is longer than %d bytes", ev.plot_dir,
                      (int)sizeof ev.plot_dir - 1);
             return HX_EXIT_IO;
@@ -1890,9 +1887,9 @@ int hx_cmd_eval(int argc, char **argv)
                 return HX_EXIT_IO;
             }
             if (stat(ev.plot_dir, &sb) != 0 || !S_ISDIR(sb.st_mode)) {
-                /* there, but a file (mkdir's EEXIST): each figure failed in
-                 * the middle of the run, which ended with exit 0, until
-                 * 2026-12-01 */
+                /* there, but a file (mkdir's EEXIST): refused here, or each
+                 * figure would fail in the middle of the run, which would
+                 * end with exit 0 */
                 hx_error("eval", "the figures' directory %s is not a directory", ev.plot_dir);
                 return HX_EXIT_IO;
             }
@@ -1953,9 +1950,8 @@ int hx_cmd_eval(int argc, char **argv)
         if (ev.total_runs == 0) {
             /* a MANIFEST.md or data set folders, but not one walk in them
              * (a copy not synced, a wrong directory): nothing to run on,
-             * said before results.md is touched (until 2026-11-29 it was
-             * overwritten with "no data" in every section, exit 0; a
-             * review) */
+             * said before results.md is touched (not overwritten with "no
+             * data" in every section, exit 0) */
             hx_error("eval", "no walk or trial in any data set folder of %s: nothing to evaluate", ev.data);
             free(xio);
             free(other);
@@ -1987,7 +1983,7 @@ int hx_cmd_eval(int argc, char **argv)
     ar1.bias_model = FNAV_BIAS_AR1;
 
     /* the shortest ZUPT run: fixed, or scaled with the gait cycle (the
-     * default since 2026-12-01; docs/navigation.md, "Cycle-scaled shortest
+     * default; docs/navigation.md, "Cycle-scaled shortest
      * run"), which moves every walk's figures */
     if (ev.cfg.stance.min_zupt_cycle > FNAV_R(0.0)) {
         snprintf(zupt_run, sizeof zupt_run, "%g ms or `min_zupt_cycle` %g of the gait cycle if longer",
@@ -2104,8 +2100,8 @@ int hx_cmd_eval(int argc, char **argv)
                          "below the detector's threshold", note[0] ? "; " : "", 100.0 * s.stance_fraction);
             }
             other_hz[i] = t.rate_hz;
-            /* a walk without a stride has no path: its 3-D % is none ("-";
-             * "nan" until 2026-12-01) */
+            /* a walk without a stride has no path: its 3-D % is none ("-",
+             * not "nan") */
             fprintf(ev.md, "| %s | %.0f | %.2f | %.3f | %.3f | %s | %+.3f | %.1f | %ld | %s |\n",
                     md_cell(other[i], cell, sizeof cell),
                     t.rate_hz, s.path_m, s.end_h_m, s.end_3d_m, fmt_v(pct, sizeof pct, "%.2f", s.end_3d_pct),
@@ -2181,8 +2177,8 @@ int hx_cmd_eval(int argc, char **argv)
                     ip.fo_med, ip.fo_bias, ip.fo_p90, ip.fs_med, ip.fs_bias, ip.fs_p90,
                     met(ip.fo_med <= 2.0 && ip.fs_med <= 2.0));
         } else {
-            /* every expert swing missed: no event was timed ("nan samples"
-             * until 2026-12-01) */
+            /* every expert swing missed: no event was timed (said so, not
+             * "nan samples") */
             fprintf(ev.md, "Event timing: no expert swing detected, no event to time (target <= 2: %s).\n\n",
                     met(0));
         }
@@ -2202,16 +2198,16 @@ int hx_cmd_eval(int argc, char **argv)
              * and with the generic MEMS profile of docs/profiles (literature
              * reading of sigma_bias): a pair per profile, so that within a
              * pair only the model differs (the profile also sets the white
-             * noise; until 2026-11-28 one "off" column, with the generic
-             * profile's white noise, stood for every table) */
+             * noise; one "off" column, with the generic profile's white
+             * noise, would not stand for every table) */
 #define EV_NP 4
 #define EV_NC (2 * EV_NP)
             /* the built-in generic-mems is docs/profiles/generic-mems.profile
              * value for value (tests/test_profile.c); by its name, so that
              * eval run outside the repository root keeps the default's pair
-             * (the file's path is relative: until 2026-11-29 the column pair
-             * was dropped there with a warning, exit 0, the text still
-             * calling the last columns the default's; a review) */
+             * (the file's path is relative: outside the root the column pair
+             * would be dropped with a warning, exit 0, the text still
+             * calling the last columns the default's) */
             static const char *const prof[EV_NP] = { "navchip", "mtx", "shimmer", "generic-mems" };
             static const char *const pname[EV_NP] = { "navchip", "mtx", "shimmer", "generic MEMS" };
             closure_t g[EV_NC];
@@ -2415,7 +2411,7 @@ int hx_cmd_eval(int argc, char **argv)
         if (ip.trials > 0 && ip.n_fo > 0) {
             snprintf(v, sizeof v, "FO %.1f, FS %.1f", ip.fo_med, ip.fs_med);
         } else if (ip.trials > 0) {
-            snprintf(v, sizeof v, "no event timed"); /* "FO nan, FS nan" until 2026-12-01 */
+            snprintf(v, sizeof v, "no event timed"); /* not "FO nan, FS nan" */
         } else {
             snprintf(v, sizeof v, "-");
         }
@@ -2440,8 +2436,8 @@ int hx_cmd_eval(int argc, char **argv)
     }
     if (ev.md != stdout) {
         /* a write that failed on the way (ferror) or at the close: said
-         * with the reason, and the JSON still written (until 2026-12-01
-         * eval returned before it, and said no reason) */
+         * with the reason, and the JSON still written (not returned before
+         * it without a reason) */
         const int werr = ferror(ev.md);
         const int cerr = fclose(ev.md) != 0 ? errno : 0;
         if (werr || cerr != 0) {

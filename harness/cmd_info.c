@@ -83,9 +83,9 @@ static void saturation(const hx_log_t *log, long sat[6], double peak[6])
  * scripts/info_still_spread.py, docs/harness.md "info"). A
  * ratio, so that a log in g or mg is judged as one in m/s^2; the gyro is
  * left out, since its unit is what the check may find wrong (a still gyro
- * in deg/s spreads by tenths of a "rad/s"). Until 2026-12-01 any stillest
- * second was taken for a rest, and a walk without one was told its
- * accelerometer was not in m/s^2 (|f| = 13.8 mid-stride; a review). */
+ * in deg/s spreads by tenths of a "rad/s"). Taking any stillest second for
+ * a rest, a walk without one would be told its accelerometer was not in
+ * m/s^2 (|f| = 13.8 mid-stride). */
 #define INFO_STILL_SPREAD 0.1
 
 static void analyse(const hx_log_t *log, info_t *in)
@@ -121,9 +121,9 @@ static void analyse(const hx_log_t *log, info_t *in)
         /* a gap: an interval over 1.5 periods. Stamps that resolve the
          * period (1/1000 of the median interval or finer) give it as the
          * median interval. Coarser ones show only a few values (an 820 Hz
-         * log stamped to the millisecond reads 1 and 2 ms, median 1 ms: a
-         * fifth of its intervals, with no sample lost, were gaps until
-         * 2026-11-28): the period is that of the rate estimated from them
+         * log stamped to the millisecond reads 1 and 2 ms, median 1 ms, and
+         * a fifth of its intervals, with no sample lost, would be gaps by
+         * the median): the period is that of the rate estimated from them
          * (hx_stamp_rate_hz) and, unless it is a whole number of
          * resolutions, an interval of one period reads up to a resolution
          * longer (the same threshold as hx_stamp_rate_hz's) */
@@ -251,8 +251,8 @@ static void add_num(cJSON *j, const char *name, double v, const info_t *in)
 }
 
 /* info's JSON, for a log and for one that holds no sample (in->empty:
- * report_empty's, the same keys with the figures null; until 2026-12-01
- * that JSON came from a list of these keys kept by hand) */
+ * report_empty's, the same keys with the figures null, from this one
+ * function rather than a list of its keys kept by hand) */
 static int write_json(const char *path, const hx_log_t *log, const info_t *in)
 {
     cJSON *j = cJSON_CreateObject();
@@ -273,8 +273,7 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
     add_num(j, "max_gap_s", in->max_gap_s, in);
     add_num(j, "duplicates", (double)in->dups, in);
     /* null, as the text leaves its drops line out, when the format has no
-     * sensor counter: a 0 read "no drops" where none can be counted (a user
-     * review) */
+     * sensor counter: a 0 would read "no drops" where none can be counted */
     if (log->meta.has_seq && !in->empty) {
         cJSON_AddNumberToObject(j, "counter_drops", (double)in->drops);
     } else {
@@ -344,9 +343,9 @@ static int write_json(const char *path, const hx_log_t *log, const info_t *in)
 }
 
 /* The rate line's figure: three decimals, and below 0.1 Hz as many more as
- * keep three significant digits, where three decimals printed a log of one
- * sample per 83 min (0.0002 Hz) as "0.000 Hz" until 2026-12-01
- * (tests/cli/test_foundation.sh); from 0.1 Hz the line is as before */
+ * keep three significant digits, where three decimals would print a log of
+ * one sample per 83 min (0.0002 Hz) as "0.000 Hz"
+ * (tests/cli/test_foundation.sh); from 0.1 Hz three decimals */
 static const char *rate_str(double hz, char *buf, size_t size)
 {
     int dec = 3;
@@ -359,12 +358,12 @@ static const char *rate_str(double hz, char *buf, size_t size)
 }
 
 /* A log that opens (a valid .bin header, a CSV header) but holds no sample:
- * hx_load_input has said why (the reader's error) and kept nothing. Until
- * 2026-12-01 that error was all: no report, and no JSON. The file is
+ * hx_load_input has said why (the reader's error) and kept nothing; a
+ * report and the JSON still follow. The file is
  * opened again, quietly, for what its header says (format, sensor, a
  * stated rate), and the report and the JSON say that it holds no sample;
  * exit 1 (bad or incomplete input). -1 when it does not open (a bad
- * header, a missing file: the error said so, as before). */
+ * header, a missing file: the error said so). */
 static int report_empty(const hx_args_t *a, const char *path)
 {
     const char *from = hx_arg(a, "--from");
@@ -452,8 +451,8 @@ int hx_cmd_info(int argc, char **argv)
     analyse(&log, &in);
     {
         /* time stamps in milliseconds make a 100 Hz log 0.1 Hz: said as
-         * allan and psd say it (a warning: a static log may be slow), where
-         * until 2026-11-29 info printed the rate without a word */
+         * allan and psd say it (a warning: a static log may be slow), not
+         * the rate without a word */
         char hint[256];
         hx_csv_layout_t lay, lay_w; /* with the unit items of the units line (one --units value) */
         if (!log.meta.rate_nominal &&
@@ -481,15 +480,15 @@ int hx_cmd_info(int argc, char **argv)
     if (log.meta.rate_nominal || in.rate_hz > 0.0) {
         /* which stamps, and how: replay's detector and --rate take other
          * estimates (199.44 and 200.1 Hz for a vicon trial that reads 200.000
-         * here; the generalisation review, 2026-11-29) */
+         * here) */
         printf("rate        %s Hz (%s)\n", rate_str(in.rate_hz, hz, sizeof hz),
                log.meta.rate_nominal ? "nominal"
                : log.meta.rate_hz <= 0.0 ? "from the time stamps: 1 / the median interval"
                : log.meta.rate_coarse ? "from the time stamps of the first 4,096 samples: their mean interval without gaps"
                                       : "from the time stamps of the first 4,096 samples: 1 / their median interval");
     } else {
-        /* no interval that advances, no rate: "0.000 Hz (from the time
-         * stamps)" until 2026-11-29 (the cli review) */
+        /* no interval that advances, no rate, not "0.000 Hz (from the time
+         * stamps)" */
         printf("rate        none (%s)\n", log.n < 2 ? "one sample gives no rate" : "every time stamp is the same");
     }
     printf("duration    %.3f s\n", in.duration_s);

@@ -34,7 +34,7 @@
 #define MAX_WARNINGS 20
 /* A status line says how long no frame has come once it is this long: a
  * sender that stopped with the port still open (a pty whose writer went, a
- * sensor that hung) looked like a steady one (the live review, 2026-11-30) */
+ * sensor that hung) would otherwise look like a steady one */
 #define QUIET_NOTE_S 1.0
 #define PLOT_SECONDS 10.0
 
@@ -70,8 +70,8 @@ static volatile sig_atomic_t g_stop;
 /* The handler after the first signal: without SA_RESTART. The first is
  * installed with SA_RESTART, so that a write it lands in (the trajectory
  * to a slow reader of --out -, whose pipe is full) goes on: interrupted,
- * the write failed, and the run exited 3 with the rows not yet written
- * lost (the live review, 2026-12-01). A second signal interrupts such a
+ * the write would fail, and the run would exit 3 with the rows not yet
+ * written lost. A second signal interrupts such a
  * write, for a reader that never reads. The receive loop stops on either:
  * libserialport's read waits in slices of READ_TIMEOUT_MS. */
 static struct sigaction g_sa_second;
@@ -153,8 +153,8 @@ typedef struct {
 } live_t;
 
 /* Before a message on standard error: a status line redrawn in place has no
- * newline yet, and a warning was written after it, on the same line (the
- * live review, 2026-11-30; tests/cli/live_tty.py) */
+ * newline yet, and a warning written after it would share its line
+ * (tests/cli/live_tty.py) */
 static void end_status_line(live_t *L)
 {
     hx_line_break(); /* the flag hx_error and hx_warn test too */
@@ -167,17 +167,16 @@ static void on_nav_frame(live_t *L, const fnav_nav_frame_t *f)
 {
     if (L->csv != NULL && !L->csv_failed && fnav_port_write_nav(&L->lport, f) != FNAV_OK) {
         end_status_line(L);
-        /* with the reason the port kept where the write failed (none was
-         * given; a review, 2026-12-02) */
+        /* with the reason the port kept where the write failed */
         char why[128];
         hx_error(CMD, "cannot write the trajectory CSV%s; it stops here",
                  hx_errno_note(L->lctx.write_errno, why, sizeof why));
         L->csv_failed = 1;
         if (L->csv == stdout) {
             /* what stdio still holds for a reader that never reads (a write
-             * a second signal cut) went to it again at the final flush and
-             * at exit, which then waited for ever (the live review,
-             * 2026-12-01): the rest goes nowhere, the reader gets its end */
+             * a second signal cut) would go to it again at the final flush
+             * and at exit, which would then wait for ever: the rest goes
+             * nowhere, the reader gets its end */
             int null_fd = open("/dev/null", O_WRONLY);
             if (null_fd >= 0) {
                 (void)dup2(null_fd, STDOUT_FILENO);
@@ -267,9 +266,9 @@ static void report_link(live_t *L, const fnav_wire_frame_t *f)
     if (s->bad_frames != L->last_stats.bad_frames) {
         /* this frame's sequence number follows the previous valid frame's:
          * no frame was lost, the corrupt candidates were bytes between two
-         * frames (noise on the line, a false sync word), not data. They
-         * made the run exit 1, "incomplete" with nothing missing (the live
-         * review, 2026-11-30). A damaged frame always leaves a gap. */
+         * frames (noise on the line, a false sync word), not data: they do
+         * not make the run exit 1, "incomplete" with nothing missing. A
+         * damaged frame always leaves a gap. */
         const uint32_t bad = s->bad_frames - L->last_stats.bad_frames;
         const int noise = L->have_prev_frame && s->lost == L->last_stats.lost && s->resets == L->last_stats.resets;
         if (noise) {
@@ -287,8 +286,8 @@ static void report_link(live_t *L, const fnav_wire_frame_t *f)
     if (s->resets != L->last_stats.resets) {
         if (L->have_prev_frame && (unsigned)f->seq == L->prev_frame_seq) {
             /* the previous frame again (a link's repetition), not a restart:
-             * a SAMPLE frame's copy is reported where it is skipped (it was
-             * also reported as "restart ... (sender reset?)"; a review) */
+             * a SAMPLE frame's copy is reported where it is skipped, and
+             * only there, not also as "restart ... (sender reset?)" */
             L->seq_repeats++;
             if (f->type != FNAV_WIRE_SAMPLE) {
                 snprintf(msg, sizeof msg, "repeated frame: frame seq %u received twice", (unsigned)f->seq);
@@ -381,7 +380,7 @@ static void on_sample(live_t *L, const fnav_sample_t *s)
 /* A jump of the sensor's own counter (INFO bit 2 and the sample's
  * FNAV_SAMPLE_HAS_SEQ) beyond what the link lost since the last sample
  * (frames lost, samples refused) is a loss on the sender: reported and
- * counted (live was silent about it; a review, 2026-11-29). Frames of other
+ * counted, not passed in silence. Frames of other
  * types lost on the link are counted as samples, so this is a lower bound. */
 static void sensor_counter(live_t *L, const fnav_sample_t *s)
 {
@@ -454,8 +453,8 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
         fnav_wire_info_t info;
         if (fnav_wire_parse_info(f, &info) == FNAV_OK) {
             /* 10 bits per byte on an 8N1 line, as stream's check: a real
-             * UART at a lower rate falls behind, losing frames (stream warned,
-             * live did not; the live review, 2026-11-30) */
+             * UART at a lower rate falls behind, losing frames (warned, as
+             * stream warns) */
             const double need_bps = (double)info.rate_hz * (double)FNAV_WIRE_FRAME_SIZE(FNAV_WIRE_SAMPLE_LEN) * 10.0;
             L->info = info;
             L->have_info = 1;
@@ -492,9 +491,9 @@ static void on_frame(live_t *L, const fnav_wire_frame_t *f)
 
 /* The line went quiet or the session ends: no byte will complete the
  * candidate frame the decoder holds, so the frames behind it (a truncated
- * frame followed by END, the sender then silent) are taken now; they waited
- * for bytes that never came (live missed the END frame and ran on until
- * --timeout or for ever; a review, 2026-11-29). */
+ * frame followed by END, the sender then silent) are taken now, not left to
+ * wait for bytes that never come (live would miss the END frame and run on
+ * until --timeout or for ever). */
 static void flush_link(live_t *L, int at_stop)
 {
     fnav_wire_frame_t f;
@@ -507,7 +506,7 @@ static void flush_link(live_t *L, int at_stop)
         /* the candidate after the last frame, cut by a Ctrl-C: a frame on
          * its way when the user stopped (on a UART a frame arrives in
          * pieces, so about half the stops land in one at 400 Hz), not a
-         * corrupt one; it made the run exit 1 (the live review, 2026-11-30) */
+         * corrupt one that makes the run exit 1 */
         L->cut = L->dec.stats.bad_frames - bad;
     }
 }
@@ -518,8 +517,8 @@ static double span_s(const live_t *L)
 }
 
 /* What came in while no sample did: for the status line and the end of a
- * run without samples (it read "aligning (keep the foot still)" with nothing
- * received, or with bytes at a wrong baud rate; a review, 2026-11-29). */
+ * run without samples (not "aligning (keep the foot still)" with nothing
+ * received, or with bytes at a wrong baud rate). */
 static void describe_nothing(const live_t *L, char *out, size_t size)
 {
     const fnav_wire_stats_t *s = &L->dec.stats;
@@ -553,8 +552,8 @@ static void print_status(live_t *L, double quiet_s)
     } else {
         snprintf(nav, sizeof nav, "aligning (keep the foot still)");
     }
-    /* what each number is: the time was the sensor's, not the wall's, and
-     * "bad 0 lost 0" named no unit (the live review, 2026-11-30) */
+    /* what each number is: the time is the sensor's, not the wall's, and
+     * "bad 0 lost 0" alone would name no unit */
     n = snprintf(line, sizeof line, "live: sensor time %.1f s, %u samples | %s | bad frames %u, lost frames %u", span,
                  (unsigned)L->samples, nav, (unsigned)(s->bad_frames + L->bad_samples), (unsigned)s->lost);
     if (quiet_s >= QUIET_NOTE_S && n > 0 && (size_t)n < sizeof line) {
@@ -597,8 +596,8 @@ static void plot_async(live_t *L, const char *png)
 {
     pid_t pid;
     if (L->hist.n == 0u) {
-        /* nothing received yet: gnuplot got empty data, and its errors ran
-         * down standard error at every redraw (the plots review) */
+        /* nothing received yet: gnuplot would get empty data, and its
+         * errors would run down standard error at every redraw */
         return;
     }
     if (L->plot_pid > 0) {
@@ -639,8 +638,7 @@ static void plot_async(live_t *L, const char *png)
         fprintf(p.gp, "plot '-' using 1:2 with lines title '|a|', '-' using 1:2 axes x1y2 with lines title '|w|'\n");
         {
             /* the last PLOT_SECONDS of the history, as the title says (the
-             * history holds 20,000 samples: 50 s at 400 Hz were drawn; a
-             * review, 2026-11-28) */
+             * history holds 20,000 samples: 50 s at 400 Hz) */
             const double t_from = h->n > 0 ? h->t[(h->head + h->cap - 1u) % h->cap] - PLOT_SECONDS : 0.0;
             int col;
             for (col = 0; col < 2; col++) {
@@ -758,9 +756,8 @@ int hx_cmd_live(int argc, char **argv)
     /* the recording is opened at the first sample (its header takes the
      * INFO frame), the JSON written at the end: find out now, before the
      * session, that both can be written */
-    /* --out too: it is created once the port is open (it was created
-     * before, and a port that could not be opened left an earlier run's
-     * trajectory emptied; the live review, 2026-12-01) */
+    /* --out too: it is created once the port is open, so that a port that
+     * cannot be opened leaves an earlier run's trajectory as it was */
     if ((hx_arg(&a, "--record") != NULL && hx_check_writable(CMD, hx_arg(&a, "--record")) != 0) ||
         (json_path != NULL && strcmp(json_path, "-") != 0 && hx_check_writable(CMD, json_path) != 0) ||
         (out_path != NULL && strcmp(out_path, "-") != 0 && hx_check_writable(CMD, out_path) != 0)) {
@@ -876,8 +873,8 @@ int hx_cmd_live(int argc, char **argv)
      * --timeout came before the line was quiet for idle_flush_s) */
     flush_link(&L, g_stop && !gone && !timed_out);
     /* how the run ended: a signal that comes later (while the last picture
-     * is drawn) ends nothing; the summary said "stopped by SIGINT" after a
-     * --timeout, a hang-up or a restart (the live review, 2026-12-01) */
+     * is drawn) ends nothing, so the summary does not say "stopped by
+     * SIGINT" after a --timeout, a hang-up or a restart */
     stop_sig = (gone || timed_out || L.restarted) ? 0 : (int)g_stop;
     end_status_line(&L);
     snprintf(port_path, sizeof port_path, "%s", hx_serial_path(port));
@@ -913,8 +910,8 @@ int hx_cmd_live(int argc, char **argv)
     }
     if (plot_every > 0.0 && L.hist.n > 0u) {
         /* the final picture is an output like the others: its child's exit
-         * status was not looked at, and a picture gnuplot failed to draw
-         * exited 0 (the plots review) */
+         * status is looked at, so that a picture gnuplot failed to draw
+         * does not exit 0 */
         int st = 0;
         plot_async(&L, plot_png);
         if (L.plot_pid <= 0 || waitpid(L.plot_pid, &st, 0) < 0 || !WIFEXITED(st) || WEXITSTATUS(st) != 0) {
@@ -944,9 +941,9 @@ int hx_cmd_live(int argc, char **argv)
         if (L.samples == 0u) {
             describe_nothing(&L, what, sizeof what);
         }
-        /* the verdict on the data, before the JSON that states it (live's
-         * JSON had neither "complete" nor a link counter: a run with lost
-         * frames wrote the JSON of a clean one; the live review, 2026-11-30) */
+        /* the verdict on the data, before the JSON that states it
+         * ("complete" and the link counters, so that a run with lost frames
+         * does not write the JSON of a clean one) */
         if (gone) {
             snprintf(why, sizeof why, "%s", gone_msg);
         } else if (timed_out) {
@@ -972,9 +969,8 @@ int hx_cmd_live(int argc, char **argv)
          * live's own "live: end:" line says how the run ended */
         L.traj.input_complete = -1;
         if (L.traj.aligned || json_path != NULL) {
-            /* --json is always written, as replay's: without a frame it was
-             * skipped, and an earlier run's file stayed beside the emptied
-             * --out (a review, 2026-11-28) */
+            /* --json is always written, as replay's, also without a frame:
+             * an earlier run's file must not stay beside the emptied --out */
             hx_nav_summary_t sum;
             hx_nav_summarize(&L.traj, &sum);
             if (L.traj.aligned) {
@@ -1052,7 +1048,7 @@ int hx_cmd_live(int argc, char **argv)
         }
         if (L.record_path != NULL && L.rec != NULL) {
             /* what the file holds, not what was received (after a write
-             * error the rest of the read was counted too; a review) */
+             * error the rest of the read is not counted) */
             fprintf(sum_out, "live: recorded %u samples to %s%s\n", (unsigned)L.recorded, L.record_path,
                    L.rec_failed ? " (recording failed, see above)" : "");
         } else if (L.record_path != NULL) {
@@ -1067,8 +1063,7 @@ int hx_cmd_live(int argc, char **argv)
             fprintf(sum_out, "live: end: END frame, the sender sent %u samples, %u received\n", (unsigned)L.end_count,
                    (unsigned)L.samples);
         } else if (stop_sig) {
-            /* how the run ended, as for END and a vanished port (nothing
-             * said it; a review, 2026-11-29) */
+            /* how the run ended, said as for END and a vanished port */
             fprintf(sum_out, "live: end: stopped by %s%s\n",
                     stop_sig == SIGINT ? "SIGINT (Ctrl-C)" : (stop_sig == SIGTERM ? "SIGTERM" : "SIGHUP"),
                     L.cut > 0u ? "; the frame arriving then was cut (not counted as corrupt)" : "");
@@ -1101,7 +1096,7 @@ int hx_cmd_live(int argc, char **argv)
                      what);
         } else if (L.samples == 0u && exit_code == HX_EXIT_OK) {
             /* nothing to navigate or record is not a complete stream, as
-             * replay of an empty log exits 1 (Ctrl-C exited 0 here; a review) */
+             * replay of an empty log exits 1 (also after Ctrl-C) */
             hx_error(CMD, "no sample received from %s: %s", a.pos[0], what);
             exit_code = HX_EXIT_DATA;
         }

@@ -462,9 +462,9 @@ static int write_plot(const char *png, const hx_mc_result_t *r, const char *moti
         return -1;
     }
     /* the time span of every point: runs too short to align have none
-     * (gnuplot refused the plot, the picture was left half drawn and the
-     * run exited 3), one growth bin is one time (gnuplot warned "empty x
-     * range" on standard error); the plots review */
+     * (gnuplot would refuse the plot, leave the picture half drawn and the
+     * run exit 3), one growth bin is one time (gnuplot would warn "empty x
+     * range" on standard error) */
     for (v = 0; v < r->nvar; v++) {
         for (b = 0; b < r->var[v].nbins; b++) {
             for (w = 0; w < 3; w++) {
@@ -646,8 +646,8 @@ int hx_cmd_montecarlo(int argc, char **argv)
         }
         {
             static const char *const outs[] = { "--json", "--csv", "--plot", NULL };
-            /* a profile file is an input: an output onto it replaced it
-             * after it was read, exit 0 (a review, 2026-11-29) */
+            /* a profile file is an input: an output onto it would replace
+             * it after it was read, exit 0 */
             if (hx_output_is_input("montecarlo", NULL, &a, outs) ||
                 hx_profile_is_output("montecarlo", hx_arg(&a, "--profile"), &a, outs) ||
                 hx_profile_is_output("montecarlo", fprof, &a, outs)) {
@@ -684,8 +684,8 @@ int hx_cmd_montecarlo(int argc, char **argv)
             }
             if (su.bias_eq6 && hx_arg(&a, "--filter-profile") == NULL) {
                 /* the sensor's profile read by eq. 6 for the filter too; a
-                 * --filter-profile is taken as given (a review, 2026-11-27:
-                 * generic-mems was inflated 229 times) */
+                 * --filter-profile is taken as given (read by eq. 6 as well,
+                 * generic-mems would be inflated 229 times) */
                 hx_profile_bias_eq6(&ad[v].cfg.profile);
             }
             navs[v].name = no.bias_model;

@@ -170,8 +170,8 @@ static int analyse(const hx_log_t *log, const setting_t *st, const fnav_bandwidt
         }
     }
     /* a transform every nfft - overlap samples: with --overlap nfft - 1 a
-     * long log is minutes of work, which said nothing (a user review,
-     * 2026-11-30); silent under a second as every progress line */
+     * long log is minutes of work, so it shows progress; silent under a
+     * second as every progress line */
     hx_progress_start(&pr, "psd: Welch", (double)log->n);
     for (i = 0; i < log->n; i++) {
         for (c = 0; c < 6; c++) {
@@ -236,9 +236,9 @@ static int fs_lower_bound(const result_t *r, double rate, double *bound_hz)
 
 /* paper_dc: the DC mode is segment, the paper's setting and the default,
  * which docs/psd.md does not recommend: the answer line says so (450 Hz on
- * the 820 Hz walk read as the answer where --dc global gives 300 Hz; a user
- * review). A lower bound (fs_lower_bound()) is said there too: only a
- * warning said so, and the line read as a measurement (2026-11-30). */
+ * the 820 Hz walk would read as the answer where --dc global gives 300 Hz).
+ * A lower bound (fs_lower_bound()) is said there too, not only in a
+ * warning, so the line does not read as a measurement. */
 static void print_result(const char *title, const result_t *r, const fnav_bandwidth_config_t *bc, double rate,
                          int paper_dc)
 {
@@ -331,9 +331,8 @@ static int write_csv(const char *path, const result_t *r, const char *src)
         fprintf(f, "\n");
     }
     if (hx_out_close(f) != 0) {
-        /* the reason, as every other output's error gives it (it said
-         * "write failed" alone; a user review, 2026-12-02): errno of the
-         * failed write or close */
+        /* the reason, as every other output's error gives it, not "write
+         * failed" alone: errno of the failed write or close */
         char why[128];
         hx_error(CMD, "%s: write failed%s", strcmp(path, "-") == 0 ? "standard output" : path,
                  hx_errno_note(errno, why, sizeof why));
@@ -455,8 +454,7 @@ static int plot_ccdf(const char *dir, const result_t *r, const char *src, const 
     char path[HX_PLOT_PATH_SIZE];
     int g, c;
     /* a logarithmic y axis: on 0..1 the threshold's crossing (1 - 0.95 =
-     * 0.05) sat in the bottom 5 % of the panel (a sensor-characterisation
-     * review, 2026-11-30); its floor is 1e-3, or a decade under the
+     * 0.05) would sit in the bottom 5 % of the panel; its floor is 1e-3, or a decade under the
      * threshold line where that is lower (--threshold 0.9999: 1e-5;
      * --threshold 1: no line, the floor 1e-3) */
     const double line = 1.0 - (double)bc->threshold;
@@ -551,8 +549,7 @@ static int plot_spectrogram(const char *dir, const hx_log_t *log, int c, uint32_
             /* the segment's centre: samples i - nfft + 1 .. i under a
              * periodic Hann window, which is 0 at the first and symmetric
              * about the first + nfft / 2, scipy.signal.spectrogram's t
-             * (i - nfft / 2 until 2026-11-29, a sample early; the plots
-             * review; tests/cli/test_psd.sh) */
+             * (i - nfft / 2 would be a sample early; tests/cli/test_psd.sh) */
             const double t = ((double)i + 1.0 - 0.5 * (double)nfft) / rate;
             seen = fnav_welch_segments(&w);
             if (fnav_welch_last(&w, col, FNAV_WELCH_MAX_BINS) != FNAV_OK) {
@@ -588,8 +585,8 @@ static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], con
     char path[HX_PLOT_PATH_SIZE];
     int d, k;
     snprintf(path, sizeof path, "%s/sensitivity.png", dir);
-    /* 900 wide as psd.png and ccdf.png: at 800 the title ran past the
-     * right edge on the shared data's paths (a user review, 2026-11-30) */
+    /* 900 wide as psd.png and ccdf.png: at 800 the title runs past the
+     * right edge on the shared data's paths */
     if (hx_plot_open(&p, CMD, path, 900, 500) != 0) {
         return -1;
     }
@@ -609,9 +606,8 @@ static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], con
     fprintf(p.gp, "set logscale x 2\nset xlabel 'segment length [samples]'\nset ylabel 'sampling frequency [Hz]'\n");
     {
         /* only the DC treatments with an answer; none at all (a log of
-         * zeros) failed the plot, exit 3, and one value everywhere (a
-         * constant log: 50 Hz) made gnuplot warn "empty y range" (the
-         * plots review) */
+         * zeros) would fail the plot, exit 3, and one value everywhere (a
+         * constant log: 50 Hz) would make gnuplot warn "empty y range" */
         double lo = HUGE_VAL, hi = -HUGE_VAL;
         int n = 0, nd[NDC];
         for (d = 0; d < NDC; d++) {
@@ -636,7 +632,7 @@ static int plot_sensitivity(const char *dir, double fs_tab[NDC][NSENS_NFFT], con
              * answer ran along the frame, where they could not be seen */
             fprintf(p.gp, "set offsets 0, 0, graph 0.05, graph 0.05\n");
         }
-        fprintf(p.gp, "set key outside right top\nplot "); /* beside the axes: inside, it sat on the lines (a user review, 2026-11-30) */
+        fprintf(p.gp, "set key outside right top\nplot "); /* beside the axes: inside, it sits on the lines */
         for (d = 0; d < NDC; d++) {
             if (nd[d] > 0) {
                 fprintf(p.gp, "%s$t using 1:%d with linespoints lw 2 title 'dc %s'", n++ ? ", " : "", d + 2,
@@ -740,8 +736,8 @@ int hx_cmd_psd(int argc, char **argv)
         }
     }
     if (hx_arg(&a, "--plot") == NULL && (hx_arg(&a, "--spec-axis") != NULL || hx_arg(&a, "--spec-nfft") != NULL)) {
-        /* they shape spectrogram.png only: without --plot they were
-         * ignored, exit 0 (a user review, 2026-11-30) */
+        /* they shape spectrogram.png only: without --plot they are refused,
+         * not ignored with exit 0 */
         hx_error(CMD, "%s sets the spectrogram of --plot DIR (spectrogram.png): give --plot DIR",
                  hx_arg(&a, "--spec-axis") != NULL ? "--spec-axis" : "--spec-nfft");
         return HX_EXIT_USAGE;
@@ -759,14 +755,14 @@ int hx_cmd_psd(int argc, char **argv)
             return HX_EXIT_USAGE;
         }
         /* written after the Welch work: checked now, the plots' directory
-         * made (they were found unwritable at the end; 2026-11-30) */
+         * made (not found unwritable at the end) */
         if (hx_check_outputs(CMD, &a, files, NULL) != 0) {
             return HX_EXIT_IO;
         }
         if (dir != NULL) {
-            /* gnuplot first: a run refused for want of it left the
-             * directory made, empty (the code review of 2026-11-30); one
-             * made here is removed when the picture cannot be written */
+            /* gnuplot first: a run refused for want of it must not leave
+             * the directory made, empty; one made here is removed when the
+             * picture cannot be written */
             int made = 0;
             snprintf(png, sizeof png, "%s/psd.png", dir);
             if (hx_plot_have_gnuplot(CMD, png) != 0) {
@@ -801,8 +797,7 @@ int hx_cmd_psd(int argc, char **argv)
     /* too short first: one stamped sample has no rate either, and no
      * --input-rate gives it one (a stamped format ignores the option) */
     if (log.n < (size_t)nfft) {
-        /* what to do: the segment length that fits (a user review,
-         * 2026-11-30); --nfft's least is 8 */
+        /* what to do: the segment length that fits; --nfft's least is 8 */
         char fix[96];
         unsigned fit = 8u;
         while ((size_t)fit * 2u <= log.n) {
@@ -859,13 +854,12 @@ int hx_cmd_psd(int argc, char **argv)
     }
     if (!hx_nav_bursts_warn(CMD, a.pos[0], log.meta.format, log.t_ns, log.n, 0, "the frequencies are read at", rate,
                             log.meta.rate_nominal && log.meta.rate_hz > 0.0)) {
-        /* a stated rate the stamps contradict, as info's (without a word
-         * until 2026-12-01) */
+        /* a stated rate the stamps contradict, warned as info's */
         hx_stated_rate_warn(CMD, a.pos[0], &log.meta, log.t_ns, log.n, "the frequencies are read at");
     }
     if (hx_arg(&a, "--input-rate") == NULL) {
-        /* a time column in milliseconds (100 Hz read as 0.1 Hz) was said
-         * only as an answer above the log's rate (the static review) */
+        /* a time column in milliseconds (100 Hz read as 0.1 Hz) is said as
+         * such, not only as an answer above the log's rate */
         char msg[320];
         hx_csv_layout_t lay;
         /* judged by the log's span too: stamps in bursts are no unit */
@@ -1027,7 +1021,8 @@ int hx_cmd_psd(int argc, char **argv)
         root = cJSON_CreateObject();
         cJSON_AddStringToObject(root, "source", a.pos[0]);
         /* the name replay's JSON gives the input file; source kept as its
-         * alias (docs/psd.md, "JSON"; the only key until 2026-12-01) */
+         * alias for readers of older psd JSON, where it was the only key
+         * (docs/psd.md, "JSON") */
         cJSON_AddStringToObject(root, "log", a.pos[0]);
         cJSON_AddStringToObject(root, "sensor", log.meta.sensor);
         cJSON_AddNumberToObject(root, "rate_hz", rate);
@@ -1077,8 +1072,7 @@ int hx_cmd_psd(int argc, char **argv)
         cJSON_AddBoolToObject(root, "complete", log.status == FNAV_END);
         if (log.status != FNAV_END) {
             /* the reader's message, as info's, replay's, allan's and
-             * simgap's `error` (it had `complete` only; the JSON review,
-             * 2026-11-30) */
+             * simgap's `error`, beside `complete` */
             cJSON_AddStringToObject(root, "error", log.error);
         }
         if (hx_write_json(hx_arg(&a, "--json"), root, err, sizeof err) != 0) {
@@ -1112,7 +1106,7 @@ int hx_cmd_psd(int argc, char **argv)
             }
             /* a spectrogram needs two segments (50 % overlap): gnuplot has
              * nothing to draw with none, and draws nothing of an image one
-             * column wide (a blank spectrogram.png; the plots review) */
+             * column wide (a blank spectrogram.png) */
             const size_t two = (size_t)spec_nfft + (size_t)spec_nfft / 2u;
             const int spec = log.n >= two;
             if (log.n < (size_t)spec_nfft) {
@@ -1125,7 +1119,7 @@ int hx_cmd_psd(int argc, char **argv)
                         log.n, spec_nfft, two);
             }
             /* the input's name goes into the titles as a gnuplot string (a
-             * quote in it ended the string: no plot; the plots review) */
+             * bare quote in it would end the string: no plot) */
             char src[1024];
             hx_gp_str(src, sizeof src, a.pos[0]);
             if (plot_psd(s, &res, src, &st) != 0 || plot_ccdf(s, &res, src, &bc) != 0 ||

@@ -108,8 +108,8 @@ int hx_cmd_replay(int argc, char **argv)
     }
     {
         /* the header is checked before any output is opened: a log that
-         * cannot be read at all empties no earlier trajectory (it did, and
-         * left an earlier --json beside it; a review, 2026-11-28) */
+         * cannot be read at all empties no earlier trajectory (nor leaves an
+         * earlier --json beside an emptied one) */
         hx_reader_t *probe = hx_reader_open(a.pos[0], fmt, in_rate, err, sizeof err);
         if (probe == NULL) {
             hx_error("replay", "%s", err);
@@ -122,8 +122,8 @@ int hx_cmd_replay(int argc, char **argv)
             return HX_EXIT_DATA;
         }
     }
-    /* the JSON and the PNG are written after the whole log: find out now
-     * that they can be (it ran the log first; the JSON review, 2026-11-30) */
+    /* the JSON and the PNG are written after the whole log: find out now,
+     * before running the log, that they can be */
     {
         static const char *const files[] = { "--json", "--strides", NULL }, *const pngs[] = { "--plot", NULL };
         if (hx_check_outputs("replay", &a, files, pngs) != 0) {
@@ -148,12 +148,11 @@ int hx_cmd_replay(int argc, char **argv)
     if (rc == -3) {
         /* the sink (or the memory for the frames) failed during the run,
          * which stopped there: the figures cover the samples before it, as
-         * a log cut at a bad line (it printed "NOT ALIGNED (no still period
-         * long enough ...)" and "complete": true for `--out - | head -2`; a
-         * review, 2026-11-29) */
+         * a log cut at a bad line (not "NOT ALIGNED (no still period long
+         * enough ...)" and "complete": true for `--out - | head -2`) */
         if (csv != NULL && ferror(csv)) { /* the sink's write failed, not the memory */
             /* with the reason the port kept where the write failed (errno
-             * is no longer it here; a review, 2026-12-02) */
+             * is not it here) */
             char why[128];
             snprintf(err, sizeof err, "cannot write the trajectory to %s%s",
                      strcmp(out_path, "-") == 0 ? "standard output" : out_path,
@@ -165,9 +164,9 @@ int hx_cmd_replay(int argc, char **argv)
     }
     if (csv != NULL && rc != -3 && traj.stats.frames == 0u) {
         /* the port writes the header with the first frame: an input with
-         * no sample (a CSV header alone, a .bin without records) left a
-         * 0-byte file until 2026-12-01; now a valid empty CSV, the header
-         * alone (docs/harness.md, "replay") */
+         * no sample (a CSV header alone, a .bin without records) gets it
+         * here, a valid empty CSV, the header alone, not a 0-byte file
+         * (docs/harness.md, "replay") */
         fprintf(csv, "%s\n", FNAV_LINUX_NAV_CSV_HEADER);
     }
     if (csv != NULL) {
@@ -188,8 +187,8 @@ int hx_cmd_replay(int argc, char **argv)
         hx_error("replay", "%s", err);
         exit_code = HX_EXIT_IO;
     } else if (rc == 1) {
-        /* "frames before it were written" was said with none before it (a
-         * header without samples; the robustness hunt, 2026-12-01) */
+        /* not "frames before it were written" with none before it (a header
+         * without samples) */
         hx_error("replay", "%s (%s)", err,
                  traj.stats.frames > 0u ? "frames before it were written" : "no frame before it: the outputs hold none");
         exit_code = HX_EXIT_DATA;

@@ -48,9 +48,9 @@ static int sink(void *vctx, const hx_sim_tick_t *tk)
     uint32_t k;
     int c;
     /* an output that fails is no longer written, and the other goes on to
-     * the end: the first failed write stopped the run, and a truth CSV on a
-     * full disk left the log cut short, a valid-looking log of a few rows
-     * (the robustness hunt, 2026-12-01; tests/cli/test_bad_input.sh) */
+     * the end: stopping the run at the first failed write, a truth CSV on a
+     * full disk would leave the log cut short, a valid-looking log of a few
+     * rows (tests/cli/test_bad_input.sh) */
     for (k = 0; k < tk->count && s->w != NULL && !(s->write_error & 1); k++) {
         if (hx_writer_write(s->w, &tk->meas) != FNAV_OK) {
             s->write_error |= 1;
@@ -61,7 +61,7 @@ static int sink(void *vctx, const hx_sim_tick_t *tk)
     s->dropped += tk->count == 0u;
     s->dups += tk->count == 2u;
     for (c = 0; c < 3 && tk->count > 0u; c++) {
-        /* the peaks of the log: a dropped sample is not in it (a review) */
+        /* the peaks of the log: a dropped sample is not in it */
         double f = fabs((double)tk->meas.accel_mps2[c]), w = fabs((double)tk->meas.gyro_rps[c]);
         s->peak_f = f > s->peak_f ? f : s->peak_f;
         s->peak_w = w > s->peak_w ? w : s->peak_w;
@@ -118,7 +118,7 @@ int hx_cmd_sim(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     if (truth != NULL && strcmp(truth, "-") == 0) {
-        /* it created a file named '-' (a review, 2026-11-28) */
+        /* refused: it would create a file named '-' */
         hx_error("sim", "--truth needs a file name ('-' is not standard output here: the summary goes there)");
         return HX_EXIT_USAGE;
     }
@@ -130,8 +130,8 @@ int hx_cmd_sim(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     {
-        /* a profile file is an input (a review, 2026-11-29: --out onto it
-         * replaced it, exit 0) */
+        /* a profile file is an input (--out onto it would replace it, exit
+         * 0) */
         static const char *const outs[] = { "--out", "--truth", NULL };
         if (hx_profile_is_output("sim", su.profile_name, &a, outs)) {
             return HX_EXIT_USAGE;
@@ -182,8 +182,8 @@ int hx_cmd_sim(int argc, char **argv)
     hx_warn_gz_output("sim", out, HX_FMT_AUTO);
     if (truth != NULL && hx_same_file(truth, out)) {
         /* the same file under another name (--out x.bin --truth ./x.bin):
-         * only now that the log exists can stat tell (the truth CSV was
-         * written into the .bin, exit 0; a mutant test, 2026-11-29) */
+         * only now that the log exists can stat tell (the truth CSV would
+         * be written into the .bin, exit 0) */
         hx_error("sim", "--truth and --out name the same file");
         hx_writer_close(ctx.w, err, sizeof err);
         hx_motion_free(motion);
@@ -213,9 +213,9 @@ int hx_cmd_sim(int argc, char **argv)
             status = HX_EXIT_IO; /* hx_writer_close below names the error, with its reason */
         }
         if (ctx.write_error & 2) {
-            /* one line with the reason, as convert's (the log's failure was
-             * said twice, the truth CSV's without a reason; the mutation
-             * round, 2026-11-29) */
+            /* one line with the reason, as convert's, for either output
+             * (the log's failure not said twice, the truth CSV's not
+             * without a reason) */
             hx_error("sim", "%s: write failed (%s)", truth, strerror(ctx.truth_errno));
             status = HX_EXIT_IO;
         }
@@ -230,15 +230,15 @@ int hx_cmd_sim(int argc, char **argv)
     }
     if (status == HX_EXIT_OK) {
         /* with the log on standard output (--out -) the summary goes to
-         * standard error, as replay's (it was dropped; a review, 2026-11-30) */
+         * standard error, as replay's, not dropped */
         FILE *so = strcmp(out, "-") == 0 ? stderr : stdout;
         hx_truth_t end;
         char spec[1024];
         int id;
         /* the output's span: its last tick, (ticks - 1) / rate; a
-         * --duration between two ticks (7.0049 s at 100 Hz) printed 7.005 s
-         * and the truth there, past the log's last sample (the simmc
-         * review, 2026-12-02; test_sim.sh) */
+         * --duration between two ticks (7.0049 s at 100 Hz) prints the last
+         * tick's time and truth, not 7.005 s and the truth there, past the
+         * log's last sample (test_sim.sh) */
         const double t_end = (double)(ctx.total - 1u) / rate;
         hx_motion_eval(motion, t_end, &end);
         fprintf(so, "motion      %s\n", motion_name);
@@ -259,7 +259,7 @@ int hx_cmd_sim(int argc, char **argv)
         fprintf(so, "samples     %zu written (%zu ticks, %zu dropped, %zu duplicated)\n", ctx.written, ctx.ticks,
                     ctx.dropped, ctx.dups);
         /* the largest |reading| of any one axis, what a sensor's range must
-         * hold; '|f|' read as the norm (a review, 2026-11-30) */
+         * hold; '|f|' would read as the norm */
         fprintf(so, "peaks       largest on one axis: f %.1f m/s^2 (%.1f g), w %.2f rad/s (%.0f deg/s)\n", ctx.peak_f,
                     ctx.peak_f / 9.80665, ctx.peak_w, ctx.peak_w * 180.0 / 3.14159265358979323846);
         fprintf(so, "log         %s\n", out);

@@ -109,13 +109,13 @@ int hx_cmd_simgap_validate(int argc, char **argv)
     o.statics = !hx_flag(&a, "--walk-only");
     if (o.statics && seeds < 4) {
         /* a static case's held-out tests leave one twin out of each null:
-         * with 3 twins no effect could be accepted (as simgap, 2026-11-29) */
+         * with 3 twins no effect could be accepted (as simgap refuses) */
         hx_error("simgap-validate", "--seeds %ld is too few for static cases: the held-out tests of an effect need "
                                     "at least 4 twins (or --walk-only)", seeds);
         return HX_EXIT_USAGE;
     }
     o.cases = (int)n;
-    o.seed = (uint32_t)seed; /* [0, 4294967295], as sim's (it was [0, 2e9]; a review, 2026-12-02) */
+    o.seed = (uint32_t)seed; /* [0, 4294967295], as sim's */
     o.seeds = (int)seeds;
     o.verbose = hx_flag(&a, "--verbose");
     o.effects = hx_arg(&a, "--effects");

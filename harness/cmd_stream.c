@@ -243,15 +243,14 @@ int hx_cmd_stream(int argc, char **argv)
     }
     if (end_queued && !tx.failed && !tx.cut) {
         /* every sample and the END frame went out: a signal that came while
-         * the last batch drained interrupted nothing (it exited 130 while
-         * the receiver had the END frame and every sample; a review,
-         * 2026-11-28) */
+         * the last batch drained interrupted nothing (no exit 130 while the
+         * receiver has the END frame and every sample) */
         g_stop = 0;
     }
     if (tx.failed || tx.cut || g_stop) {
         /* not "done in 1.6 s" after the port's error, as if the log had
-         * gone out (the live review, 2026-11-30): the line redrawn in place
-         * is ended, and the summary below says what was sent */
+         * gone out: the line redrawn in place is ended, and the summary
+         * below says what was sent */
         hx_line_break();
     } else {
         hx_progress_end(&prog);
@@ -260,8 +259,8 @@ int hx_cmd_stream(int argc, char **argv)
 
     {
         /* the samples left out on purpose are counted in END (the receiver
-         * sees them missing) but never written: said so (it printed "N
-         * samples sent" with all N left out; a review, 2026-11-29) */
+         * sees them missing) but never written: said so (not "N samples
+         * sent" with all N left out) */
         char dropped[96] = "";
         if (left_out > 0u) {
             snprintf(dropped, sizeof dropped, " (%u of them left out by --inject-drop, %u written)",

@@ -639,9 +639,9 @@ int hx_allan_identify(const fnav_allan_result_t *r, size_t n, double rate_hz, co
     if (o->tau_max_s > 0.0) {
         /* the same inclusive limit as the table, the noise regions and the
          * fit (tau <= limit (1 + 1e-9)): truncated, a point at exactly 10 %
-         * of a record whose limit rounds just below it was left out of the
-         * minimum search, and a limit under one sample became 0, "no limit"
-         * (a review, 2026-11-28) */
+         * of a record whose limit rounds just below it would be left out of
+         * the minimum search, and a limit under one sample would become 0,
+         * "no limit" */
         const double t = floor(o->tau_max_s * rate_hz * (1.0 + 1e-9));
         tau_max = t >= 4294967295.0 ? UINT32_MAX : (uint32_t)t;
         paper_range = t >= 1.0;

@@ -143,11 +143,11 @@ int hx_args_parse(const hx_spec_t *spec, int argc, char **argv, hx_args_t *a)
             return -1;
         }
         if (s[0] == '\0') {
-            /* `harness replay "$LOG"` with LOG unset: the empty name
-             * reached fopen, ": cannot read (No such file or directory)",
-             * exit 1 (exit 3 for convert's OUT, live's and stream's PORT),
-             * naming no file, where an empty option value is a usage error
-             * (a user review, 2026-12-02) */
+            /* `harness replay "$LOG"` with LOG unset: an empty name is a
+             * usage error, as an empty option value is, rather than reaching
+             * fopen (": cannot read (No such file or directory)", exit 1,
+             * exit 3 for convert's OUT, live's and stream's PORT, naming no
+             * file) */
             char what[32];
             missing_name(spec->usage, a->npos, what, sizeof what);
             hx_error(spec->name, "argument%s%s is empty", what[0] != '\0' ? " " : "", what);
@@ -178,9 +178,9 @@ static int find(const hx_args_t *a, const char *name)
 
 int hx_refuse_dash(const char *cmd, const hx_args_t *a, const char *const *opts)
 {
-    /* `replay --plot -` wrote a PNG named '-', psd's --plot - made a
-     * directory '-' (a user review, 2026-12-02), as sim's --truth - did
-     * until 2026-11-28 */
+    /* '-' for an option that takes no stream is refused: otherwise
+     * `replay --plot -` would write a PNG named '-', psd's --plot - make a
+     * directory '-' and sim's --truth - a file '-' */
     for (; *opts != NULL; opts++) {
         const char *v = hx_arg(a, *opts);
         if (v != NULL && strcmp(v, "-") == 0) {
@@ -310,9 +310,9 @@ int hx_arg_whole(const hx_args_t *a, const char *name, double lo, double hi, dou
 
 /* A progress or status line redrawn in place on a terminal ends without a
  * newline: an error or a warning that comes while one is drawn starts a
- * line of its own (it was written after it, on the same line: stream's
- * "write failed" after "harness stream:  41 % (1.6 s)", live's warnings
- * after its status line; the live review, 2026-11-30). One flag for both. */
+ * line of its own, not the rest of that line (stream's "write failed"
+ * after "harness stream:  41 % (1.6 s)", live's warnings after its status
+ * line). One flag for both. */
 static int g_line_open;
 
 void hx_line_open(void)
@@ -413,9 +413,9 @@ void hx_warn(const char *cmd, const char *fmt, ...)
 
 void hx_warn_gz_output(const char *cmd, const char *path, hx_format_t fmt)
 {
-    /* convert and sim wrote OUT.csv.gz plain, and OUT.bin.gz as plain CSV
-     * (its name does not end in .bin), without a word: gzip -d then
-     * refused it (the robustness hunt, 2026-12-01) */
+    /* convert and sim must not write OUT.csv.gz plain, nor OUT.bin.gz as
+     * plain CSV (its name does not end in .bin) without a word: gzip -d
+     * would refuse it */
     const size_t n = strlen(path);
     if (!hx_ends_in(path, n, ".gz")) {
         return;
@@ -545,13 +545,12 @@ int hx_load_input(const char *cmd, const hx_args_t *a, const char *path, hx_log_
     if (input_options(cmd, a, &fmt, &rate) != 0) {
         return -1;
     }
-    /* the reading of a long log shows progress (a day at 100 Hz took
-     * `info` 2.3 s without a word; the scale review, 2026-11-29) */
+    /* the reading of a long log shows progress (a day at 100 Hz takes
+     * `info` 2.3 s) */
     snprintf(label, sizeof label, "%s: reading", cmd);
     {
         /* a command's --quiet ("no progress indicator": simgap's) holds for
-         * the reading too (it printed "simgap: reading: 10 %" under
-         * --quiet; the review of 2026-11-29) */
+         * the reading too (no "simgap: reading: 10 %" under --quiet) */
         const int k = opt_index(a->spec, "--quiet", strlen("--quiet"));
         const int quiet = k >= 0 && a->count[k] > 0;
         hx_progress_start(&pr, label, 1.0);
@@ -593,8 +592,8 @@ int hx_progress_text(char *buf, size_t size, const char *label, double frac, dou
 {
     char left[48] = "";
     /* floored, so that a line never says more than is done: rounded, 9.6 %
-     * printed "10 %" and the decile's line after it "10 %" again (a review,
-     * 2026-11-30), and 99.6 % "100 %" before the end */
+     * would print "10 %" and the decile's line after it "10 %" again, and
+     * 99.6 % "100 %" before the end */
     const int pct = frac >= 1.0 ? 100 : frac > 0.0 ? (int)(100.0 * frac + 1e-9) : 0; /* 0.29: 28.999... */
     /* the time left at the rate so far, once 5 % and 2 s of it give a rate to go by */
     if (frac >= 0.05 && frac < 1.0 && elapsed_s >= 2.0) {
@@ -688,8 +687,7 @@ int hx_same_file(const char *a, const char *b)
         return 0; /* one is there, the other is not */
     }
     /* neither is there yet: one name in one directory (`--strides s.csv
-     * --json ./s.csv` wrote both into one file, exit 0; the gait review,
-     * 2026-11-30) */
+     * --json ./s.csv` would write both into one file, exit 0) */
     return split_dir(a, da, sizeof da, &ba) && split_dir(b, db, sizeof db, &bb) && strcmp(ba, bb) == 0 &&
            stat(da, &sa) == 0 && stat(db, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
@@ -771,9 +769,9 @@ int hx_json_stdout_claim(const char *cmd, int argc, char **argv)
     }
     if (json == NULL || strcmp(json, "-") != 0) {
         /* allan's and psd's --out - is standard output as well, the CSV
-         * alone there and their text on standard error, as with --json -;
-         * it wrote a file named '-' (a user review, 2026-11-30). replay,
-         * live and eval send their own text aside for their --out -. */
+         * alone there and their text on standard error, as with --json -,
+         * not a file named '-'. replay, live and eval send their own text
+         * aside for their --out -. */
         if (other[0] == NULL || strcmp(other[0], "-") != 0 ||
             (strcmp(cmd, "allan") != 0 && strcmp(cmd, "psd") != 0)) {
             return 0;
@@ -828,8 +826,8 @@ static size_t utf8_len(const unsigned char *s)
 }
 
 /* JSON text is UTF-8 (RFC 8259), but cJSON copies a string's bytes as they
- * are: a file name in Latin-1 made the whole file unreadable to a strict
- * reader (the JSON review, 2026-11-30). Each byte outside a well-formed
+ * are: a file name in Latin-1 would make the whole file unreadable to a
+ * strict reader. Each byte outside a well-formed
  * sequence, which can only be inside a string, becomes \ufffd, the
  * replacement character. txt itself when it is clean; NULL: out of memory. */
 static char *json_utf8(char *txt)
@@ -927,8 +925,8 @@ int hx_write_json(const char *path, struct cJSON *root, char *err, size_t err_si
         free(txt);
         return -1;
     }
-    /* the reason of the first failure said, as convert's (a full disk was
-     * "cannot write FILE"; the robustness hunt, 2026-12-01) */
+    /* the reason of the first failure said, as convert's (a full disk is
+     * more than "cannot write FILE") */
     ok = fputs(txt, f) >= 0 && fputc('\n', f) != EOF;
     e = ok ? 0 : errno;
     if ((to_stdout ? fflush(f) : fclose(f)) != 0) {
@@ -1056,8 +1054,7 @@ void hx_plot_failure_warns(int on)
 }
 
 /* a failed picture said: an error, or a warning for a command that goes
- * on (eval said "error: gnuplot failed ..." and exited 0; the code review
- * of 2026-11-30) */
+ * on (not "error: gnuplot failed ..." with exit 0, as eval would) */
 static void plot_failed(const char *cmd, const char *fmt, ...)
 {
     va_list ap;
@@ -1074,10 +1071,10 @@ static void plot_failed(const char *cmd, const char *fmt, ...)
 
 int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int h)
 {
-    /* the path as a gnuplot string: a quote doubles (a path was cut to 511
-     * bytes here and to 1023 in the string: gnuplot wrote another file, or
-     * this one and the check below looked for the cut name; the plots
-     * review) */
+    /* the path as a gnuplot string: a quote doubles (the path is not cut,
+     * where a cut to 511 bytes here or to 1023 in the string would have
+     * gnuplot write another file, or this one while the check below looks
+     * for the cut name) */
     char q[2 * HX_PLOT_PATH_SIZE];
     memset(p, 0, sizeof *p);
     if (strlen(png_path) >= sizeof p->path) {
@@ -1102,8 +1099,8 @@ int hx_plot_open(hx_plot_t *p, const char *cmd, const char *png_path, int w, int
     if (strpbrk(png_path, "\001\002\003\004\005\006\007\010\011\012\013\014\015\016\017\020\021\022\023\024\025\026"
                           "\027\030\031\032\033\034\035\036\037\177") != NULL) {
         /* a control character (a line break) has no place in a quoted
-         * string, which took it for a space: another file was written, and
-         * the check below failed (the plots review); a double-quoted one
+         * string, which takes it for a space: another file would be written,
+         * and the check below would fail; a double-quoted one
          * with octal escapes names the file exactly */
         const char *c;
         fprintf(p->gp, "set output \"");
@@ -1135,8 +1132,8 @@ int hx_plot_close(hx_plot_t *p, const char *cmd)
     rc = pclose(p->gp);
     p->gp = NULL;
     if (rc != 0 || access(p->path, F_OK) != 0) {
-        /* gnuplot failed partway: a half-drawn picture is no result, and
-         * was left behind (the plots review). Removed when this session
+        /* gnuplot failed partway: a half-drawn picture is no result, not
+         * to be left behind. Removed when this session
          * started it: new, or changed since hx_plot_open (gnuplot's set
          * output truncates the file in place); a file gnuplot never opened
          * (it failed before its set output) stays as it was. */
@@ -1174,8 +1171,8 @@ void hx_command_line(char *buf, size_t size, const char *prefix, int argc, char 
 {
     /* characters a POSIX shell takes as they are; an argument with any
      * other (a space, a quote, $, *) or none is single-quoted, a ' in it
-     * written '\'' (joined bare, "--out a b.csv" read back as two
-     * arguments; the JSON review, 2026-11-30) */
+     * written '\'' (joined bare, "--out a b.csv" would read back as two
+     * arguments) */
     static const char k_plain[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./:=,+@%^-";
     size_t len = (size_t)snprintf(buf, size, "%s", prefix);
     int i;

@@ -100,7 +100,7 @@ void hx_warn(const char *cmd, const char *fmt, ...)
  *  1): a message identical to one printed already (the same command and
  *  text) is counted, not printed again. For a command that runs the same
  *  logs several times (eval: a walk's table run and its experiments'
- *  repeats printed each reader warning up to 11 times, until 2026-12-01);
+ *  repeats would print each reader warning up to 11 times);
  *  off by default, so a command that warns of repeated events (live's
  *  hangups) says each. */
 void hx_warn_once(int on);

@@ -147,8 +147,7 @@ int hx_evplot_paths(const hx_evplot_set_t *s, const char *cmd, const char *png, 
     fprintf(p.gp, "set multiplot layout 1,2 title '%s'\n", hx_gp_str(q, sizeof q, title));
     fprintf(p.gp, "set key outside bottom center horizontal noautotitle\n");
     /* n's y to the right, x up: x is the heading at the alignment, not
-     * north (no magnetometer, docs/frames.md); labelled 'east y' and 'north
-     * x' until 2026-11-30, as replay's plot was */
+     * north (no magnetometer, docs/frames.md), as in replay's plot */
     fprintf(p.gp, "set size ratio -1\nset xlabel '" HX_PLOT_PATH_XLABEL "'\nset ylabel '" HX_PLOT_PATH_YLABEL
                   "'\nplot ");
     for (i = 0; i < s->n; i++) {
@@ -202,8 +201,8 @@ int hx_evplot_strides(const hx_evplot_set_t *s, const char *cmd, const char *png
     rows = (s->n + cols - 1) / cols;
     /* the title and the key on two lines, the picture at least as wide as
      * the longer (about 6 px a character): on one line, 3 panels wide, the
-     * footprints' figure cut both ends off, the key's "circles: the truth"
-     * among them (the plots review) */
+     * footprints' figure would cut both ends off, the key's "circles: the
+     * truth" among them */
     {
         const size_t len = strlen(title) > strlen(k_strides_key) ? strlen(title) : strlen(k_strides_key);
         const int w = 320 * cols > 7 * (int)len + 40 ? 320 * cols : 7 * (int)len + 40;

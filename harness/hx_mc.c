@@ -211,9 +211,9 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
     {
         /* a run's samples are held for the pairing with the truth: refuse,
          * before simulating anything, a run that cannot fit in this
-         * machine's memory (standing 1e6 s at 200 Hz, 38 GB, simulated
-         * for minutes and grew to about 16 GB before "out of memory"; a
-         * review, 2026-11-29), then take the whole buffer at once */
+         * machine's memory (standing 1e6 s at 200 Hz, 38 GB, would simulate
+         * for minutes and grow to about 16 GB before "out of memory"), then
+         * take the whole buffer at once */
         double need = (double)nt * (double)sizeof(mc_tick_t);
         long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
         double have = (pages > 0 && page > 0) ? (double)pages * (double)page : 0.0;
@@ -249,9 +249,8 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
             res->distance_m = buf.t[buf.n - 1].odo;
             for (b = 0; b < nbins; b++) {
                 /* a bin ends where the run ends: the last one's estimates
-                 * are of that time (a 3.5 s run's last bin said 4 s, one
-                 * --bin 100 of a 3 s run 100 s; the simmc review,
-                 * 2026-12-02) */
+                 * are of that time (not 4 s for a 3.5 s run's last bin, nor
+                 * 100 s for the one --bin 100 of a 3 s run) */
                 const double t_end = fmin((double)(b + 1) * bin_s, res->duration_s);
                 size_t i = (size_t)llround(t_end * rate);
                 for (v = 0; v < nvar; v++) {
@@ -307,7 +306,7 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
                          * aligned estimate. Not the truth's first tick: a
                          * motion that starts walking aligns at a later
                          * stance (walk:20, 1.43 m on), and every error
-                         * carried that offset (a review, 2026-11-29). */
+                         * would carry that offset. */
                         const double *q = tk->q;
                         double yaw0 = atan2(2.0 * (q[0] * q[3] + q[1] * q[2]), 1.0 - 2.0 * (q[2] * q[2] + q[3] * q[3]));
                         cz = cos(yaw0);

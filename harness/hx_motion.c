@@ -736,13 +736,12 @@ static int parse_leg(hx_motion_t *m, char *item)
     }
     if (a2 != NULL && (strcmp(name, "stand") == 0 || strcmp(name, "turn") == 0 || strcmp(name, "elevator") == 0)) {
         /* only walk, run and the stairs take a second value: an extra one
-         * was ignored without a word (a review, 2026-11-28) */
+         * is refused, not ignored without a word */
         return fail(m, "stand, turn and elevator take one value (NAME:VALUE)", a2);
     }
     if (a2 != NULL && fabs(x2) > 3600.0) {
         /* the turn of a walk, run or stairs leg, bounded as a turn item's:
-         * 1e300 deg wrote infinite and NaN gyro samples (a review,
-         * 2026-11-28) */
+         * 1e300 deg would write infinite and NaN gyro samples */
         return fail(m, "the turn of a leg must be within +-3600 deg", a2);
     }
     if (strcmp(name, "stand") == 0) {
@@ -855,8 +854,8 @@ hx_motion_t *hx_motion_create(const hx_motion_config_t *cfg, const char *script,
         if (parse_leg(m, item) != 0) {
             if (scenario) {
                 /* the item is the scenario's, sized to the duration: say so
-                 * (--duration 1e5 blamed "walk/run needs a distance in
-                 * (0, 1e5] m: 128320.500", a distance never given; a review) */
+                 * (not "walk/run needs a distance in (0, 1e5] m: 128320.500"
+                 * for --duration 1e5, a distance never given) */
                 char why[256];
                 snprintf(why, sizeof why, "%s", err);
                 if (duration_s > 0.0) {
@@ -872,7 +871,7 @@ hx_motion_t *hx_motion_create(const hx_motion_config_t *cfg, const char *script,
         items++;
     }
     if (items == 0) {
-        /* "," or ",," made one second of standing with exit 0 (a review) */
+        /* "," or ",," is refused, not one second of standing with exit 0 */
         snprintf(err, err_size, "empty motion script '%s' (items such as stand:5,walk:20)", script);
         hx_motion_free(m);
         return NULL;

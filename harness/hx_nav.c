@@ -317,10 +317,9 @@ static int stance_fits(const fnav_nav_config_t *cfg, double rate_hz)
  * downsamples); 0 when none does. The ring holds the window W and half
  * window + minimum run + 1 (fnav_stance.c, set_rate), so the rate is at most
  * MAX / window_s and (MAX - 1) / (window_s / 2 + min_zupt_s); the search
- * starts there and steps down to a rate the core accepts. Until 2026-11-29
- * the second bound alone was advised, rounded to the nearest Hz below 100
- * Hz: "--rate 0" for window_s = 1e30, "--rate 62" (still cut) for
- * window_s = 2 (the cli review). */
+ * starts there and steps down to a rate the core accepts. The second bound
+ * alone, rounded to the nearest Hz below 100 Hz, would advise "--rate 0"
+ * for window_s = 1e30 and "--rate 62" (still cut) for window_s = 2. */
 static double stance_fit_rate(const fnav_nav_config_t *cfg, double fs_hz)
 {
     const double w_s = (double)cfg->stance.window_s, z_s = (double)cfg->stance.min_zupt_s;
@@ -353,9 +352,8 @@ static double stance_fit_rate(const fnav_nav_config_t *cfg, double fs_hz)
  * (stance_probe): the foot-off's is n_ev (fnav_stance.c, set_rate: at most
  * FNAV_STANCE_EVENT_BUF - 1); the foot-strike's what the jerk history holds
  * before the stance's first n_min_stance samples (foot_strike). Both 0 when
- * the core refuses the configuration. Until 2026-11-30 n_ev and
- * n_min_stance were computed here again, in double, a second copy of
- * set_rate's. */
+ * the core refuses the configuration. n_ev and n_min_stance come from the
+ * core, not from a second copy of set_rate's arithmetic in double. */
 static void event_reach(const fnav_nav_config_t *cfg, double fs_hz, long *fo_n, long *fs_n)
 {
     const fnav_stance_t *probe = stance_probe(cfg, fs_hz);
@@ -470,10 +468,10 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
         /* The filter takes the input as uniform at its median rate, which
          * needs the median interval to be the sampling period: stamps in
          * bursts break it (hx_stamp_bursts, the test plain replay makes
-         * too). Until 2026-11-30 both kinds were resampled with exit 0: the
-         * kernel, 40 times the rate ratio of "200 kHz" samples long,
-         * smeared seconds of the walk into each output (0 strides), and
-         * the shared stamps kept one sample of four (the units review). */
+         * too). Neither kind is resampled: the kernel, 40 times the rate
+         * ratio of "200 kHz" samples long, would smear seconds of the walk
+         * into each output (0 strides), and shared stamps would keep one
+         * sample of four. */
         hx_bursts_t bu;
         char why[640];
         const int kind = hx_stamp_bursts(in->t_ns, in->n, max_gap_s, &bu);
@@ -496,8 +494,8 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
     gap_ns = (int64_t)ceil(1e9 * (max_gap_s > 1.5 / fs ? max_gap_s : 1.5 / fs));
     if (!(rate_hz < fs * 0.999)) {
         /* a rate within 0.1 % of the input's leaves nothing to decimate
-         * (the vicon trials' 200.080 Hz median refused --rate 200 as "not
-         * below the input rate 200.1 Hz", a user review); the advised bound
+         * (the vicon trials' 200.080 Hz median would refuse --rate 200 as
+         * "not below the input rate 200.1 Hz"); the advised bound
          * is rounded down so that every rate below it is accepted */
         const double below = floor(fs * 0.999 * 1000.0) / 1000.0;
         free(keep);
@@ -518,17 +516,17 @@ int hx_nav_resample(const hx_log_t *in, double rate_hz, double max_gap_s, hx_log
      * gain; applied as if the input were uniform at its median rate, and
      * evaluated directly at each output instant: its position between two
      * input stamps gives a fractional input index u, and the kernel is
-     * taken at j - u (renormalised by its weights at the edges). Until
-     * 2026-11-28 the filter ran on the input samples and its output was
-     * interpolated linearly at the new instants: a second, phase-dependent
-     * low-pass that took 7 % off a 40 Hz tone at 250 -> 100 Hz and left a
-     * 9 % error (tests/test_nav.c, test_resampler).
+     * taken at j - u (renormalised by its weights at the edges). Filtering
+     * the input samples and interpolating the output linearly at the new
+     * instants would add a second, phase-dependent low-pass that takes 7 %
+     * off a 40 Hz tone at 250 -> 100 Hz and leaves a 9 % error
+     * (tests/test_nav.c, test_resampler).
      * A time jump (an interval above max_gap_s and 1.5 input periods, the
      * navigator's own rule) splits the log into segments: the filter does
      * not reach across it and the output grid starts again at the first
-     * sample after it, so the jump stays a jump. Until 2026-11-28 the grid
-     * ran through it, and a day's pause became 8.6 million made-up samples
-     * (a review). Smaller gaps of lost samples are closed up, as before. */
+     * sample after it, so the jump stays a jump (a grid running through it
+     * would make a day's pause 8.6 million made-up samples). Smaller gaps of
+     * lost samples are closed up. */
     fc = 0.45 * rate_hz / fs; /* cycles per input sample */
     half = (int)ceil(20.0 * fs / rate_hz);
     period_ns = 1e9 / rate_hz;
@@ -666,8 +664,8 @@ static const char *samples_name(const fnav_nav_config_t *c)
 
 void hx_nav_plot_title(const hx_traj_t *t, const char *path, double rate_hz, char *buf, size_t size)
 {
-    /* plots of one log with --rate 100 or --detector threshold had the same
-     * title, the path alone (a review, 2026-11-29) */
+    /* the title names the options that change the run, so plots of one log
+     * with --rate 100 or --detector threshold do not share the path alone */
     char opt[600];
     size_t used = 0;
     int k;
@@ -843,9 +841,8 @@ static fnav_status_t hx_read(void *ctx, fnav_sample_t *s)
     }
     if (st == FNAV_OK) {
         /* the largest single axis, as info's peak line and its units check:
-         * a gyro's range is per axis, and replay took the vector's magnitude
-         * (454.7 against info's 438.8 for one log in deg/s; the
-         * generalisation review, 2026-11-29) */
+         * a gyro's range is per axis, not the vector's magnitude (454.7
+         * against info's 438.8 for one log in deg/s) */
         int k;
         for (k = 0; k < 3; k++) {
             const double w = fabs((double)s->gyro_rps[k]);
@@ -959,8 +956,7 @@ static void hx_logmsg(void *ctx, fnav_log_level_t level, const char *msg)
  * more off gravity (a swing's |f| stays off for a good part of it). A tap on
  * a static log (30 ms of 25 m/s^2: 3 % of its second) spreads a window by 4
  * m/s^2 too, and five synchronisation taps on a static log in deg/s, read
- * as such, made replay exit 1 calling it a walk in rad/s (the false-positive
- * review, 2026-11-30) */
+ * as such, would make replay exit 1 calling it a walk in rad/s */
 #define HX_WALK_OFF_SHARE 0.1
 
 void hx_walk_window(hx_walk_t *w, long n, double s, double s2, long n_off)
@@ -1061,8 +1057,8 @@ static double acc_read_scale(const hx_csv_layout_t *csv)
  * the file's value gravity within HX_GRAVITY_TOL; 0 when none does. The
  * bands (file values 7.4-12.3, 0.75-1.25, 750-1250, 7.5e5-1.25e6) do not
  * overlap: the units lie 9.8 and 1000 times apart, the band is 1.67 wide.
- * ug was read by --units since 2026-12-02 but had no band: a file in ug
- * was told "not in m/s^2" without a unit */
+ * ug has its band, so a file in ug is told its unit, not only "not in
+ * m/s^2" */
 static double acc_file_scale(const hx_csv_layout_t *csv, double f_rest_mps2, double g)
 {
     static const double k_scale[4] = { 1.0, HX_G_MPS2, HX_MG_MPS2, HX_UG_MPS2 };
@@ -1078,8 +1074,7 @@ static double acc_file_scale(const hx_csv_layout_t *csv, double f_rest_mps2, dou
 /* The remedy for accelerations whose file unit is file_scale (want: the
  * layout that reads the log, units_want): for the interchange CSV the whole
  * --units value (the unit given named first: "read as g by --units accel=g:
- * give --units accel=mg", where until 2026-11-30 mg had no item and mg read
- * as g were told "divide by 1000"), or the item given left out for a file
+ * give --units accel=mg", not "divide by 1000"), or the item given left out for a file
  * in m/s^2; for another format (csv NULL) the arithmetic. */
 static const char *acc_fix(const hx_csv_layout_t *csv, const hx_csv_layout_t *want, double file_scale, char *buf,
                            size_t size)
@@ -1179,8 +1174,8 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
         char fix[192] = "";
         const double file = acc_file_scale(csv, f_rest_mps2, g);
         if (file == 1.0) {
-            /* the file in m/s^2 read as g: 9.8 times gravity, which said
-             * only "not in m/s^2" of a file that is (until 2026-11-30) */
+            /* the file in m/s^2 read as g: 9.8 times gravity (named as such,
+             * not "not in m/s^2" of a file that is) */
             snprintf(fix, sizeof fix, "in m/s^2 already (%s)", acc_fix(csv, &want, file, give, sizeof give));
         } else if (file > 0.0) {
             snprintf(fix, sizeof fix, "not in m/s^2 but in %s (%s)", hx_accel_unit_name(file),
@@ -1200,8 +1195,8 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
         if (gyro_max_rps * M_PI / 180.0 < HX_GYRO_MAX_RPS) {
             snprintf(fix, sizeof fix, " but probably in deg/s (%s)", fix_dps(csv, &want, give, sizeof give));
         } else if (gyro_max_rps * HX_MDPS_RPS < HX_GYRO_MAX_RPS) {
-            /* mdps (ST's SensorTile data log): "not in rad/s" alone until
-             * 2026-11-30 (the units review) */
+            /* mdps (ST's SensorTile data log): named, not "not in rad/s"
+             * alone */
             if (csv != NULL && csv->gyr_scale == 1.0) {
                 hx_units_give(&want, give, sizeof give);
             } else {
@@ -1214,9 +1209,9 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
                      gyro_max_rps, HX_GYRO_MAX_RPS, fix);
     }
     if (gyro_rps_as_dps(csv, gyro_max_rps, walks)) {
-        /* silent until 2026-11-30: exit 0 and a walk navigated with rates
-         * 57.3 times too small (the units review). Read as mdps, a file in
-         * deg/s is too small as well: told gyro=deg/s (gyro_file_dps) */
+        /* not silent: it would exit 0 with a walk navigated with rates 57.3
+         * times too small. Read as mdps, a file in deg/s is too small as
+         * well: told gyro=deg/s (gyro_file_dps) */
         const char *given = csv->gyr_scale == HX_MDPS_RPS ? "mdps" : "deg/s";
         if (gyro_file_dps(csv, gyro_max_rps)) {
             HX_UNITS_ADD("the gyroscope never exceeds %.3g rad/s on one axis while the log walks (|f| spreads by "
@@ -1233,7 +1228,7 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
     if (rate_hz > 0.0 && rate_hz < HX_RATE_MIN_HZ) {
         /* the unit that makes the rate one a foot-mounted IMU has (20 Hz to
          * 100 kHz): 2.5 ms read as 2.5 s (ms), as 2511 s (us), as 2.5e6 s
-         * (ns); until 2026-11-28 the remedy always named milliseconds. The
+         * (ns): the remedy names that unit, not always milliseconds. The
          * interchange CSV's remedy is --units time=, counted from the unit
          * it was read in (us read as ms look like ms: time=us;
          * hx_time_unit_fix, as the slow-log hint of info, allan and psd) */
@@ -1242,7 +1237,7 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
         if (hx_time_unit_fix(rate_hz, k, &fix)) {
             /* 1 s apart: 1 kHz in milliseconds, or a sample number (a
              * logger's counter), which --input-rate serves without the
-             * column (the gait review, 2026-11-30) */
+             * column */
             if (csv != NULL) {
                 hx_units_give(&want, give, sizeof give);
             } else {
@@ -1257,8 +1252,8 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
         } else if (k != 9) {
             /* read by --units time= in a finer unit than seconds, and too
              * slow for any unit finer still (5 Hz read as ns): the question
-             * named seconds and the remedy milliseconds until 2026-11-30
-             * (the units review) */
+             * and the remedy name the unit given, not seconds and
+             * milliseconds */
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU needs %.0f Hz or more: are the "
                          "time stamps in %s? (read so by --units time=%s; no finer unit makes the rate 20 Hz to "
                          "100 kHz)",
@@ -1271,9 +1266,9 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
     }
     if (rate_hz > HX_TIME_RATE_MAX_HZ) {
         /* stamps read by --units time= in a finer unit than theirs (ms read
-         * as ns: 1e6 times too fast); said only as a cut detector ring and
-         * no still period until 2026-11-30 (the units review). Nothing is
-         * coarser than seconds: only a unit given can be too fine */
+         * as ns: 1e6 times too fast), said as such rather than only as a cut
+         * detector ring and no still period. Nothing is coarser than
+         * seconds: only a unit given can be too fine */
         hx_time_fix_t fix;
         if (hx_time_unit_fix(rate_hz, csv != NULL ? csv->time_digits : 9, &fix)) {
             HX_UNITS_ADD("the samples are %.4g s apart (%.3g Hz); a foot-mounted IMU samples at %.0f kHz at most: "
@@ -1300,8 +1295,7 @@ int hx_units_problem(double f_rest_mps2, double gravity_mps2, double gyro_max_rp
  * CSV more digits or no time column; for any other format (a .bin, an
  * importer's log: no time column to leave out, --input-rate ignored or
  * only rescaling a counter) the conversion to CSV without it, as for stamps
- * in bursts (hx_bursts_remedy; every format was told to leave its time
- * column out until 2026-12-01). */
+ * in bursts (hx_bursts_remedy). */
 static const char *coarse_stamps_remedy(hx_format_t fmt)
 {
     return fmt == HX_FMT_CSV || fmt == HX_FMT_AUTO
@@ -1337,8 +1331,8 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
     rate = in_rate_hz > 0.0 ? in_rate_hz : (double)nav->stance.rate_hz;
     if (hx_nav_coarse_stamps(&nav->stats) && rate > 0.0 && rate < HX_RATE_MIN_HZ) {
         /* a low rate from stamps that repeat is no unit (float32 seconds
-         * at 1e6 s step by 62.5 ms: "16 Hz", whose remedy read "divide by
-         * 1000"; the generality review, 2026-11-30) */
+         * at 1e6 s step by 62.5 ms: "16 Hz", whose unit remedy would read
+         * "divide by 1000") */
         snprintf(rep, sizeof rep,
                  "%.1f %% of the samples repeat the time stamp before them, which advance by %.4g s: %.3g Hz from "
                  "the stamps, too coarse for the sampling (float32 seconds far from 0?): %s",
@@ -1349,9 +1343,8 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
     /* intervals too short (or too long), but not the log's span for its
      * samples: stamps taken in bursts (a logger stamping a batch of samples
      * as it reads them, microseconds apart), which no unit explains; the
-     * time error needs both (replay exited 1 on such a log, naming a
-     * coarser unit that made it 1000 times too slow: the false-positive
-     * review, 2026-11-30). The test of info, allan, psd and simgap too
+     * time error needs both (else such a log would get a coarser unit
+     * that makes it 1000 times too slow). The test of info, allan, psd and simgap too
      * (hx_time_unit_rate); after the repeated stamps' test, whose slow rate
      * the span does not explain either */
     rate = hx_time_unit_rate(rate, n_in, t_first_ns, t_last_ns);
@@ -1370,16 +1363,16 @@ static int units_check(const fnav_nav_t *nav, double gyro_max_rps, double f_norm
     }
     if (!nav->aligned && fn == 0.0 && f_norm_mean > HX_ACCEL_MEAN_MAX_G * g) {
         /* no rest found, and a mean |f| no foot reaches: mg, ug, cm/s^2 or
-         * raw counts, whose noise also hides every still period (it said only
-         * "no still period": the generality review, 2026-11-30) */
+         * raw counts, whose noise also hides every still period (said so,
+         * not only "no still period") */
         const double in_g = f_norm_mean / acc_read_scale(csv) * 0.00980665 / g; /* the file's values in mg */
         const int mg = in_g > 0.75 && in_g < HX_ACCEL_MEAN_MAX_G;
         /* the file's values in ug (the same 0.75-10 g band: 7.5e5-1e7 in
-         * the file, above mg's 750-1e4; "raw counts?" until 2026-12-02) */
+         * the file, above mg's 750-1e4; named, not "raw counts?") */
         const double in_g_ug = f_norm_mean / acc_read_scale(csv) * HX_UG_MPS2 / g;
         const int ug = in_g_ug > 0.75 && in_g_ug < HX_ACCEL_MEAN_MAX_G;
         /* the file's values in m/s^2, read as g (a foot's mean: 0.75-10 g,
-         * as the mg mark's; "raw counts?" until 2026-11-30) */
+         * as the mg mark's; named, not "raw counts?") */
         const double in_mps2 = f_norm_mean / acc_read_scale(csv) / g;
         const int msq = acc_read_scale(csv) != 1.0 && in_mps2 > 0.75 && in_mps2 < HX_ACCEL_MEAN_MAX_G;
         hx_csv_layout_t want;
@@ -1431,10 +1424,9 @@ static int stamps_never_advance(const fnav_nav_stats_t *st)
 int hx_nav_bursts_warn(const char *cmd, const char *path, hx_format_t fmt, const int64_t *t_ns, size_t n,
                        int first, const char *reads, double rate_hz, int nominal)
 {
-    /* info, psd and allan printed 1 / the median interval of such stamps
-     * (200 kHz for a 400 Hz walk) as the rate without a word until
-     * 2026-11-30; they still run, with this warning, which says which rate
-     * they use and where it came from (2026-12-01) */
+    /* info, psd and allan take 1 / the median interval of such stamps
+     * (200 kHz for a 400 Hz walk) as the rate; they still run, with this
+     * warning, which says which rate they use and where it came from */
     hx_bursts_t bu;
     char msg[640];
     if (hx_stamp_bursts(t_ns, n, (double)fnav_nav_config_default.max_gap_s, &bu) <= 0) {
@@ -1449,10 +1441,10 @@ int hx_nav_bursts_warn(const char *cmd, const char *path, hx_format_t fmt, const
 int hx_stated_rate_warn(const char *cmd, const char *path, const hx_meta_t *meta, const int64_t *t_ns, size_t n,
                         const char *reads)
 {
-    /* info's since 2026-12-01 (1000 Hz stated over stamps 5 ms apart was
-     * printed without a word, and the search for the rest took windows of
-     * 1000 samples, 5 s of that 200 Hz log); psd's and allan's too from
-     * the same day, which read their frequencies and tau at that rate */
+    /* info's (1000 Hz stated over stamps 5 ms apart would go without a
+     * word, and the search for the rest would take windows of 1000 samples,
+     * 5 s of that 200 Hz log); psd's and allan's too, which read their
+     * frequencies and tau at that rate */
     double hz;
     if (meta == NULL || t_ns == NULL || !meta->rate_nominal || meta->stamps_made || !(meta->rate_hz > 0.0) ||
         n < 2u) {
@@ -1475,10 +1467,10 @@ int hx_stated_rate_warn(const char *cmd, const char *path, const hx_meta_t *meta
  * gives over the span, with no stamp repeated to explain them (a logger
  * stamping each pair of 200 Hz samples 0.1 ms apart every 10 ms). The
  * stance detector then takes 1 / the median of its first intervals (101
- * Hz for that log, a 3-sample window where 200 Hz gives 5) without a word
- * until 2026-12-01, where info, allan and psd warned. Samples that share
+ * Hz for that log, a 3-sample window where 200 Hz gives 5); info, allan
+ * and psd warn too. Samples that share
  * one stamp (the duplicates explain the count) keep the coarse-stamps note
- * of the summary, as before. t_ns: the first n stamps read; first: the log
+ * of the summary. t_ns: the first n stamps read; first: the log
  * went on past them; det_hz: the detector's rate. 1 when warned. */
 static int pairs_warn(const char *cmd, const char *path, hx_format_t fmt, const int64_t *t_ns, size_t n, int first,
                       double max_gap_s, double det_hz)
@@ -1502,13 +1494,12 @@ int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, doubl
                         size_t err_size)
 {
     /* Stamps in bursts make the detector's rate 1 / their median interval
-     * (5 us: "200 kHz") and the navigation meaningless; until 2026-11-30
-     * plain replay ran such a walk with exit 0 and 0 strides, where --rate
-     * refused it. The log's first HX_STAMPS_PROBE_N stamps, read before
-     * the run: the detector's rate comes from its first intervals, and the
-     * whole log was read twice (and its stamps held) until the review of
-     * 2026-11-30; a read error stops the collection there, and the replay
-     * reports it as before. */
+     * (5 us: "200 kHz") and the navigation meaningless: plain replay refuses
+     * such a walk as --rate does (it would run with exit 0 and 0 strides).
+     * The log's first HX_STAMPS_PROBE_N stamps, read before the run: the
+     * detector's rate comes from its first intervals, so the whole log is
+     * neither read twice nor its stamps held; a read error stops the
+     * collection there, and the replay reports it. */
     hx_reader_t *r = hx_reader_open(path, fmt, in_rate, err, err_size);
     int64_t *t;
     size_t n = 0;
@@ -1552,8 +1543,8 @@ int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, doubl
  * too), counting a motion that lasts HX_NAV_CYCLE_MOTION_S or more: the
  * strides would not do, since a swing compressed below min_swing_s makes
  * none. A stance shorter than HX_NAV_CYCLE_MOTION_S ends no motion: a slow
- * walk's swing broken by a 15 ms stance counted as two cycles, 0.39 s of
- * 2 s (the review of 2026-11-30). */
+ * walk's swing broken by a 15 ms stance would count as two cycles, 0.39 s
+ * of 2 s. */
 static double *cycle_intervals(const hx_traj_t *t, size_t *k)
 {
     double *iv = t->n > 0u ? (double *)malloc((t->n / 2u + 1u) * sizeof *iv) : NULL;
@@ -1734,8 +1725,8 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         rc = -3;
     } else if (st != FNAV_OK) {
         /* the input stopped the run (FNAV_E_IO is the reader's too: a NUL
-         * block, an over-long line, a truncated .gz); until 2026-11-28 it was
-         * reported as the sink's failure, exit 3 and no line named (a review) */
+         * block, an over-long line, a truncated .gz): reported as the
+         * input's, with its line, not as the sink's failure (exit 3) */
         if (r != NULL && hx_reader_error(r)[0] != '\0') {
             snprintf(err, err_size, "%s", hx_reader_error(r));
         } else {
@@ -1746,9 +1737,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     if (traj != NULL) {
         traj->stats = nav.stats;
         traj->rate_hz = (double)nav.stance.rate_hz;
-        /* three rates can be printed for one log (the generalisation
-         * review: 199.44 Hz here, 200.0 Hz by info, 200.1 Hz by --rate's
-         * error, for a vicon trial): the line says which this is */
+        /* three rates can be printed for one log (199.44 Hz here, 200.0 Hz
+         * by info, 200.1 Hz by --rate's error, for a vicon trial): the line
+         * says which this is */
         if (rate_hz > 0.0) {
             snprintf(traj->rate_src, sizeof traj->rate_src, "resampled");
         } else if (cfg->stance.rate_hz > FNAV_R(0.0)) {
@@ -1844,9 +1835,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             /* min_zupt_cycle: the look-ahead is fixed for the longest cycle
              * (FNAV_STANCE_CYCLE_LAG_S); the ring caps it at lag + 1
              * samples, which binds for cycles over run_max / (F fs) only:
-             * said when the log has such cycles. Until 2026-12-01 it was
-             * said at every rate that cuts, whatever the gait (the 820 Hz
-             * walk, cycles of 1.0 s, when 0.025 became the default) */
+             * said when the log has such cycles, not at every rate that
+             * cuts whatever the gait (the 820 Hz walk, cycles of 1.0 s, has
+             * none) */
             const double run_max = (double)(nav.stance.lag + 1);
             const double cyc_max = run_max / ((double)cfg->stance.min_zupt_cycle * fs);
             size_t k = 0, i, over = 0;
@@ -1870,8 +1861,8 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         /* the gait events' searches live in the detector's jerk history
          * (FNAV_STANCE_EVENT_BUF samples): above about 450 Hz they are cut,
          * and an event beyond the cut is read late (the 820 Hz OpenShoe
-         * walk: 3 of 49 foot-strikes 77-155 ms later than at 200 Hz),
-         * silently until 2026-11-30 (the gait review) */
+         * walk: 3 of 49 foot-strikes 77-155 ms later than at 200 Hz): said,
+         * not silent */
         const double fs = (double)nav.stance.rate_hz;
         const long want = lround((double)cfg->stance.event_window_s * fs);
         long fo_n, fs_n;
@@ -1923,17 +1914,15 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
     if (rc == 0 && !nav.aligned) {
         if (stamps_never_advance(&nav.stats)) {
             /* every sample at one time: no interval to integrate or to
-             * measure stillness over (it said "no still period"; a review,
-             * 2026-11-28) */
+             * measure stillness over (said so, not "no still period") */
             snprintf(err, err_size, "%s: the time stamps never advance (all %lu samples at one time): is the time "
                                     "column filled?",
                      path, (unsigned long)nav.stats.samples);
         } else {
             /* what the alignment requires: the first still period of
              * align_min_s, or, when the foot moves before one, the quietest
-             * of align_short_s or more (fnav_align.c); it said "no still
-             * period of 0.50 s" (align_min_s), although 0.3 s still aligns
-             * (the generalisation review, 2026-11-29). What was found: the
+             * of align_short_s or more (fnav_align.c), not "no still period
+             * of 0.50 s" (align_min_s), since 0.3 s still aligns. What was found: the
              * detector's longest still run (the alignment's periods lie in
              * such runs) */
             double longest = 0.0;
@@ -1959,8 +1948,8 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
             if (traj != NULL) {
                 /* a run that long can still give the alignment less: its
                  * noise-floor test or a time jump cuts it (a log that ends
-                 * still is no longer cut: the detector's held-back samples
-                 * reach the alignment since 2026-11-29, fnav_nav_finish) */
+                 * still is not cut: the detector's held-back samples reach
+                 * the alignment, fnav_nav_finish) */
                 const size_t len = strlen(err);
                 snprintf(err + len, err_size - len, ": the stance detector's longest still run lasted %.2f s%s", longest,
                          longest >= (double)cfg->align.short_still_s
@@ -1968,10 +1957,9 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
                              : "");
             }
         }
-        /* read to its end: not a run stopped early (it returned 1, and replay
-         * said "stopped after N samples, at the input error above", its JSON
-         * "complete": false; eval "input ends early"; the JSON review,
-         * 2026-11-30) */
+        /* read to its end: not a run stopped early (returning 1 would make
+         * replay say "stopped after N samples, at the input error above",
+         * its JSON "complete": false, and eval "input ends early") */
         rc = 3;
     }
     return rc;
@@ -2307,10 +2295,9 @@ int hx_nav_write_strides(FILE *f, const hx_traj_t *t)
          * 0 or negative, down to -0.24 s, in 8 of ipol's 515 rows) */
         stride_field(f, 6, fs > fo ? fs - fo : (double)NAN);
         /* the stance of this gait cycle: from the previous foot-strike to
-         * this foot-off (stance + swing = stride time; the rows had no
-         * stance time until the gait review, 2026-11-30); none where the
+         * this foot-off (stance + swing = stride time); none where the
          * swing has none: from a foot-off not before the foot-strike it
-         * read the whole stride time or more (0.87 s of a 0.68 s stride,
+         * would read the whole stride time or more (0.87 s of a 0.68 s stride,
          * ipol 3-4 right) */
         stride_field(f, 6, fo > fs_prev && fs > fo ? fo - fs_prev : (double)NAN);
         stride_field(f, 6, fs - fs_prev);
@@ -2413,8 +2400,8 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
         if (t->input_complete == 0) {
             fprintf(f, "alignment         NOT ALIGNED (the run stopped before a still period long enough was found)\n");
         } else if (stamps_never_advance(st)) {
-            /* it said "no still period long enough" under an error naming
-             * the stamps (review of 2026-11-30) */
+            /* not "no still period long enough" under an error naming the
+             * stamps */
             fprintf(f, "alignment         NOT ALIGNED (the time stamps never advance: the error above)\n");
         } else {
             fprintf(f, "alignment         NOT ALIGNED (no still period long enough: the error above says what was found)\n");
@@ -2442,7 +2429,7 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     fprintf(f, "vertical drift    %+.3f m (height change, up positive)\n", s->vertical_m);
     fprintf(f, "heading change    %+.1f deg\n", s->heading_change_deg);
     /* stance_fraction's share is of the frames from the alignment on, not
-     * of the whole log ("of frames" read as the log's; a review, 2026-11-29) */
+     * of the whole log ("of frames" would read as the log's) */
     fprintf(f, "stance            %ld stride%s, %ld stance phase%s, %.1f %% of aligned frames with ZUPT\n", s->strides,
             s->strides == 1 ? "" : "s", s->stance_phases, s->stance_phases == 1 ? "" : "s", 100.0 * s->stance_fraction);
     if (st->zarus > 0u || st->zaru_gated > 0u) {
@@ -2456,8 +2443,8 @@ void hx_nav_print_summary(FILE *f, const char *path, const hx_traj_t *t, const h
     }
     if (s->longest_stand_s > HX_NAV_LONG_STAND_S && st->zarus == 0u && st->zaru_gated == 0u && s->strides >= 2) {
         /* "between strides" needs two of them: with 0 strides and 1 stance
-         * phase the note contradicted the stance line (the threshold
-         * detector on openshoe_square2; a review, 2026-11-29) */
+         * phase the note would contradict the stance line (the threshold
+         * detector on openshoe_square2) */
         fprintf(f, "note              the foot stood %.0f s between strides (from %.1f s): with ZUPTs only the heading "
                    "drifts with the gyro bias there; --param zaru=1 --param zaru_after_s=1 holds it (docs/navigation.md, "
                    "\"Zero-velocity update\")\n",
@@ -2583,8 +2570,8 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddItemToObject(root, "input_rate_hz", num(t->in_rate_hz > 0.0 ? t->in_rate_hz : t->rate_hz));
     cJSON_AddNumberToObject(root, "window_samples", t->window);
     if (t->have_config) {
-        /* the configuration that ran, as the summary's config line (only
-         * `command` named it; a review, 2026-11-29) */
+        /* the configuration that ran, as the summary's config line (not
+         * only `command` names it) */
         const fnav_nav_config_t *c = &t->config;
         cJSON *pa = cJSON_CreateArray();
         int i;
@@ -2606,7 +2593,7 @@ int hx_nav_write_json(const char *json_path, const char *log_path, const char *c
     cJSON_AddBoolToObject(root, "aligned", t->aligned);
     if (t->input_complete >= 0) {
         /* as info's and psd's: a log cut short shows in the JSON, not only
-         * in the exit status (a review, 2026-11-29) */
+         * in the exit status */
         cJSON_AddBoolToObject(root, "complete", t->input_complete);
         if (!t->input_complete) {
             cJSON_AddStringToObject(root, "error", t->input_error);
@@ -2749,8 +2736,7 @@ int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_tr
     if (naligned == 0) {
         /* nothing navigated (a log that never aligned, or an error before
          * it): two empty panels that say so; gnuplot refuses a plot without
-         * a valid point, and the png was left half drawn with exit 3 (a
-         * review, 2026-11-28) */
+         * a valid point, and would leave the png half drawn with exit 3 */
         fprintf(p.gp, "set xlabel '" HX_PLOT_PATH_XLABEL "'\nset ylabel '" HX_PLOT_PATH_YLABEL "'\n"
                       "set xrange [-1:1]\nset yrange [-1:1]\n"
                       "set title 'no aligned frame: nothing navigated'\nplot -2 notitle\n"
@@ -2758,8 +2744,7 @@ int hx_nav_plot(const char *cmd, const char *png, const char *title, const hx_tr
                       "plot -2 notitle\nunset multiplot\n");
         return hx_plot_close(&p, cmd);
     }
-    /* n's axes (docs/frames.md): no magnetometer, so not north and east,
-     * as they were labelled until 2026-11-30 (the gait review) */
+    /* n's axes (docs/frames.md): no magnetometer, so not north and east */
     fprintf(p.gp, "set size ratio -1\nset xlabel '" HX_PLOT_PATH_XLABEL "'\nset ylabel '" HX_PLOT_PATH_YLABEL "'\n");
     {
         /* one span on both axes, centred on the path (start included): with

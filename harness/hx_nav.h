@@ -364,9 +364,8 @@ typedef struct {
  *  exactly 20 ms is none: test_nav test_long_gap_edge); when
  *  the time they lose reaches HX_NAV_GAP_LOST_FRACTION of the motion time,
  *  the summary notes that position and heading are unreliable. Found on
- *  openshoe_gx2 walk 2 with samples deleted (the generalisation review,
- *  2026-11-29; five phases of each pattern, closure of the intact walk
- *  0.53 m): holes of 12 ms (3 samples) losing 4 % of the time left the
+ *  openshoe_gx2 walk 2 with samples deleted (five phases of each pattern,
+ *  closure of the intact walk 0.53 m): holes of 12 ms (3 samples) losing 4 % of the time left the
  *  median closure at 0.53 m, holes of 24 ms losing 0.6 % at 0.59 m, but
  *  holes of 50 ms losing 1.2 % moved it to 0.88 m (up to 1.36) and every
  *  300 ms (17 %) to 2.4 m (up to 3.7). The xio walks lose 1.1 and 1.5 %
@@ -384,8 +383,8 @@ int hx_nav_gappy(const hx_nav_summary_t *s);
  *  sample (dt = 0) and its detector reads the rate from the stamps, so the
  *  walk is navigated on a fraction of its samples: openshoe_gx2 walk 2 with
  *  float32 stamps at 1e5 s (49 % repeated) halves its ZUPT share, the 820 Hz
- *  walk (84 %) cuts it from 39 % to 7 % and doubles its closure, exit 0
- *  without a word until 2026-11-30 (the generality review). When the
+ *  walk (84 %) cuts it from 39 % to 7 % and doubles its closure, with exit
+ *  0 and no other word. When the
  *  repeated samples reach this share of the log, the summary notes it and
  *  names the remedy; the xio logger repeats 1.2 % (205 and 252 samples). */
 #define HX_NAV_DUP_FRACTION 0.10
@@ -398,8 +397,8 @@ int hx_nav_gappy(const hx_nav_summary_t *s);
  *  is compressed: most often a rate assumed for a log without time stamps
  *  (the OpenShoe 820 Hz reader takes six bare numbers a line at 820 Hz: a
  *  250 Hz walk in that form navigates 5 m of 77, a 200 Hz one makes no
- *  stride at all, exit 0, until 2026-11-30). Judged on HX_NAV_STRIDE_MIN_N
- *  cycles or more (the generality review). */
+ *  stride at all, with exit 0 and no other word). Judged on HX_NAV_STRIDE_MIN_N
+ *  cycles or more. */
 #define HX_NAV_STRIDE_MIN_S 0.40
 #define HX_NAV_STRIDE_MIN_N 8
 #define HX_NAV_CYCLE_MOTION_S 0.05
@@ -411,13 +410,13 @@ int hx_nav_strides_too_short(const hx_nav_summary_t *s);
  *  HX_NAV_STRIDE_MIN_N cycles or more) above HX_NAV_SLOW_CYCLE_S, a cadence
  *  below 70 steps/min. Real walks played slower (scripts/probe_slow.py)
  *  lost 2-33 % of their length at 53-68 steps/min and kept it from 71-75
- *  up, with min_zupt_cycle 0 (the default until 2026-12-01): in late swing
+ *  up, with min_zupt_cycle 0 (the scaling off): in late swing
  *  the foot's slowed deceleration brings |f| near g, the statistic dips
  *  under the threshold for 20-32 ms, longer than the shortest ZUPT run, and
  *  the ZUPT zeroes a swing's velocity. HX_NAV_SLOW_MIN_ZUPT_S (as --param
  *  min_zupt_s) cured those copies but breaks a jogger, whose stances are
  *  shorter (footprint walk 35: 2.67 -> 80.74 %); a shortest run scaled with
- *  the gait cycle, min_zupt_cycle 0.025, the default since 2026-12-01 (with
+ *  the gait cycle, min_zupt_cycle 0.025, the default (with
  *  the lock-in guard that keeps walk 35 at 100 Hz from locking in,
  *  docs/navigation.md), cures them too (2.5 % or less) and keeps walk 35.
  *  docs/harness.md, "Slow walking, real walks played slower". */
@@ -464,8 +463,8 @@ int hx_nav_coarse_stamps(const fnav_nav_stats_t *st);
  *  navigated). A confirmed swing's worth (min_swing_s's default): a log that
  *  starts in a swing aligns on the next stance, after less than a second of
  *  motion (0.40 s for openshoe_gx2 walk 2 cut 0.5 s into its first swing, the JSON's before_alignment_s 0.404),
- *  which the 1 s of this limit until 2026-11-29 let pass without a word
- *  (the unseen review); every shared log has none. */
+ *  which a limit of 1 s would let pass without a word; every shared log
+ *  has none. */
 #define HX_NAV_LATE_ALIGN_S 0.25
 
 /** True when a log of more than 10 s shows almost no motion: over 90 % of

@@ -50,10 +50,9 @@ hx_serial_t *hx_serial_open(const char *path, int baud, int mode, char *err, siz
     }
     if (sp_get_port_by_name(s->path, &s->port) != SP_OK) {
         /* what the port is, by the name the user gave (and the device it
-         * leads to): libserialport's own message was the errno of its sysfs
+         * leads to): libserialport's own message is the errno of its sysfs
          * lookup, "No such file or directory" for /dev/null or a pty that
-         * exists, and a pty had no word of the seam (the live review,
-         * 2026-11-30) */
+         * exists, and says no word of a pty's seam */
         struct stat st;
         const char *base = strrchr(s->path, '/');
         char name[PATH_MAX + 8];
@@ -109,10 +108,10 @@ fail:
  * end closed reports POLLHUP; an unplugged USB adapter also loses its node.
  * A tty hung up under a node that stays (a Bluetooth rfcomm link, a
  * vhangup) reports POLLHUP with POLLIN, and its reads return 0 at once:
- * with nothing left to read, that is a hang-up too (a review, 2026-11-27:
- * live looped on it at full speed).
+ * with nothing left to read, that is a hang-up too (else live would loop
+ * on it at full speed).
  * The "nothing left" test (FIONREAD) changes nothing on a port opened by
- * path, checked 2026-11-29: on a tty hung up (vhangup, the pty master
+ * path, as checked on Linux: on a tty hung up (vhangup, the pty master
  * closed, a USB or rfcomm hang-up) FIONREAD fails with EIO and the kernel
  * has discarded the pending bytes (reads return 0); only a pty master whose
  * slave closed reports POLLHUP with POLLIN and bytes still readable, and
@@ -160,7 +159,7 @@ int hx_serial_write(hx_serial_t *s, const void *buf, size_t n, unsigned timeout_
     unsigned idle_ms = 0;
     while (off < n) {
         /* a slice, not the whole timeout: a write blocked on a port nobody
-         * reads held off Ctrl-C until the 10 s timeout (a review, 2026-11-29) */
+         * reads would hold off Ctrl-C until the 10 s timeout */
         const unsigned slice = timeout_ms - idle_ms < 100u ? timeout_ms - idle_ms : 100u;
         enum sp_return r;
         if (stop != NULL && *stop) {

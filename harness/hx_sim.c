@@ -280,7 +280,7 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
         return -1;
     }
     if (t != NULL) {
-        /* the fields past the 32nd were dropped without a word (a review) */
+        /* refused, not the fields past the 32nd dropped without a word */
         snprintf(err, err_size, "effect specification with more than %d fields: %.40s...", ntok, spec);
         return -1;
     }
@@ -349,8 +349,8 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
                 }
             }
             if (pm == 0u && v != 0.0) {
-                /* every channel given is the parameter's own axis: the value
-                 * was dropped and the run went on (a review) */
+                /* every channel given is the parameter's own axis: refused,
+                 * since the value would be dropped and the run go on */
                 snprintf(err, err_size, "effect misalign: %s is the own axis of the %c channels (a%c, g%c: that is "
                          "the scale effect); give it for the other channels", tok[i], 'x' + axis, 'x' + axis,
                          'x' + axis);
@@ -358,8 +358,8 @@ int hx_effect_parse(fnav_imuerr_config_t *cfg, const char *spec, char *err, size
             }
         }
         if ((info->params[k].flags & FNAV_PARAM_INTEGER) && v != floor(v)) {
-            /* refused later by fnav_imuerr_init as "the effects are
-             * inconsistent (e.g. ...)", which did not name it (a review) */
+            /* refused here by name, not later by fnav_imuerr_init as "the
+             * effects are inconsistent (e.g. ...)", which does not name it */
             snprintf(err, err_size, "effect %s: %s needs a whole number, got '%s'", info->name, tok[i], eq + 1);
             return -1;
         }
@@ -388,9 +388,9 @@ static int same_params(const fnav_imuerr_config_t *cfg, fnav_effect_id_t id, int
     return 1;
 }
 
-/* The shortest decimal that reads back as v (%.9g printed the float 0.05
- * as 0.0500000007 and the MTx density 8.9e-4 as 0.000890000025; a review,
- * 2026-11-30): what parses back to the same fnav_real_t is the same value. */
+/* The shortest decimal that reads back as v (%.9g would print the float
+ * 0.05 as 0.0500000007 and the MTx density 8.9e-4 as 0.000890000025): what
+ * parses back to the same fnav_real_t is the same value. */
 static void shortest(char *out, size_t size, fnav_real_t v)
 {
     const double a = fabs((double)v);
@@ -521,9 +521,9 @@ void hx_sim_warn_cut(const char *cmd, const hx_motion_t *m, const char *name, do
     for (i = 0; i < 3; i++) {
         moved += (end.pos_m[i] - at.pos_m[i]) * (end.pos_m[i] - at.pos_m[i]);
     }
-    /* a 'walk' of 4 s was 4 s of standing and a 'loop' of 20 s ended 1.2 m
-     * from its start without a word (a review, 2026-11-30); the sized
-     * scenarios' last standing, cut by their whole strides, is no cut */
+    /* a 'walk' of 4 s would be 4 s of standing and a 'loop' of 20 s would
+     * end 1.2 m from its start without a word; the sized scenarios' last
+     * standing, cut by their whole strides, is no cut */
     if (n < total || sqrt(moved) > 1e-6 || fabs(remainder(end.euler_rad[2] - at.euler_rad[2], 6.283185307179586)) > 1e-9) {
         hx_warn(cmd, "--duration %g cuts the motion '%s' (%.1f s) short: the output ends after %d of its %d strides, "
                      "%.2f m from where the motion ends%s",
@@ -590,8 +590,8 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             }
         }
         /* the derived figure keeps the range of its own option (--speed 10
-         * --cadence 20 walked 50 m strides, --speed 5 --stride 0.5 was
-         * refused as "gait fractions leave no time to swing"; a review) */
+         * --cadence 20 would walk 50 m strides, --speed 5 --stride 0.5 be
+         * refused as "gait fractions leave no time to swing") */
         if (w->cadence_spm < 20.0 || w->cadence_spm > 300.0) {
             hx_error(cmd, "--speed %g with a stride of %g m makes a cadence of %.4g steps/min, outside [20, 300]", sp,
                      w->stride_m, w->cadence_spm);
@@ -623,7 +623,7 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         caps[0] = '\0';
         for (i = 0; i < 5; i++) {
             /* a stride lands in at most 30 % of the swing (hx_gait_max_impact_s): a
-             * longer --impact-ms was shortened without a word (a review) */
+             * longer --impact-ms is said, not shortened without a word */
             const double cap_s = hx_gait_max_impact_s(gs[i]);
             if (v * 1e-3 > cap_s && len < sizeof caps) {
                 len += (size_t)snprintf(caps + len, sizeof caps - len, "%s%s %.0f ms", len ? ", " : "", gn[i],
@@ -652,9 +652,9 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
     }
     if (hx_arg(a, "--mount") != NULL) {
         /* ZYX Euler angles reach every mounting with roll and yaw in
-         * [-180, 180] and pitch in [-90, 90]; any number was taken until
-         * 2026-12-01 (--mount 1e30,0,0 simulated a sensor turned by 1e30
-         * degrees, exit 0) */
+         * [-180, 180] and pitch in [-90, 90]; a number outside is refused
+         * (--mount 1e30,0,0 would simulate a sensor turned by 1e30 degrees,
+         * exit 0) */
         const double *m = s->motion_cfg.mount_deg;
         if (!(fabs(m[0]) <= 180.0) || !(fabs(m[1]) <= 90.0) || !(fabs(m[2]) <= 180.0)) {
             hx_error(cmd, "--mount '%s': roll, pitch, yaw in degrees within [-180, 180], [-90, 90], [-180, 180]",
@@ -702,7 +702,7 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             if (fnav_profile_by_name(&builtin, s->profile_name) != FNAV_OK) {
                 /* a file's bias sd is most likely a stationary sd already
                  * (allan --profile writes one), which eq6 multiplies by
-                 * sqrt(tau rate) / 0.617 without a word (a review, 2026-11-30) */
+                 * sqrt(tau rate) / 0.617, so it is said */
                 hx_warn(cmd, "--bias-sigma eq6 rereads the bias sd of the profile file %s as the paper Tables' "
                              "sigma_bias (eq. 6: x sqrt(tau_s rate_hz) / 0.617); a profile from `harness allan "
                              "--profile` holds the stationary sd already: leave eq6 out for it (docs/simulator.md)",
@@ -719,7 +719,7 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         s->has_profile = 1;
     } else if (s->bias_eq6) {
         /* eq6 rereads a profile's bias sd; the ideal sensor has none (the
-         * option was dropped without a word; a review) */
+         * option is ignored with a warning, not without a word) */
         hx_warn(cmd, "--bias-sigma eq6 rereads a profile's bias sd; --profile none has no bias model: ignored");
     }
     for (i = 0; i < hx_arg_count(a, "--effect"); i++) {
@@ -742,9 +742,9 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
         int alias = s->err.mask[FNAV_EFFECT_ALIAS] != 0u, mean = s->decim == HX_DECIM_MEAN && !alias;
         int pick = !mean && (alias || fnav_imuerr_internal_factor(&s->err) == 1u);
         /* sampling-instant jitter: refused here, before any output is
-         * begun (hx_sim_run refused it after the log was created), with the
-         * advice that fits the decimation (--oversample 1 was advised to a
-         * --decimation mean run that had it; a review) */
+         * begun (hx_sim_run would refuse it after the log was created), with
+         * the advice that fits the decimation (not --oversample 1 to a
+         * --decimation mean run that has it) */
         if (!pick && s->err.mask[FNAV_EFFECT_JITTER] != 0u && s->err.jitter.sample_s > FNAV_R(0.0)) {
             hx_error(cmd, "sampling-instant jitter (jitter:sample_s) needs point sampling: %s",
                      mean ? "interval means (--decimation mean) average over the interval; use --decimation fir "
@@ -760,9 +760,8 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             if (!mean && f > 0.41 * rate) {
                 /* a tone in the filter's stop band never reaches the output;
                  * one in its transition band (0.41-0.59 f_s) passes
-                 * attenuated, folded above f_s / 2 (the warning said
-                 * "filtered out" for both: 90 Hz at 200 Hz passes at 91 %;
-                 * a review) */
+                 * attenuated, folded above f_s / 2 (the warning says so, not
+                 * "filtered out" for both: 90 Hz at 200 Hz passes at 91 %) */
                 int M = (int)fnav_imuerr_internal_factor(&s->err), L, n;
                 double *h = fir_design(M, HX_SIM_FIR_HALF, &L), gain = 0.0;
                 if (h != NULL) {
@@ -789,8 +788,8 @@ int hx_sim_setup_from_args(const char *cmd, const hx_args_t *a, hx_sim_setup_t *
             }
             if (mean && f > 0.5 * rate) {
                 /* the interval mean is no anti-alias filter: it passes the
-                 * tone attenuated and folded (the warning said "filtered
-                 * out" for it; a review) */
+                 * tone attenuated and folded (the warning says so, not
+                 * "filtered out") */
                 hx_warn(cmd, "vibration at %g Hz lies above the output's Nyquist frequency (%g Hz at %g Hz): the "
                              "interval means (--decimation mean) attenuate it and fold it to %g Hz",
                         f, 0.5 * rate, rate, fabs(f - rate * floor(f / rate + 0.5)));

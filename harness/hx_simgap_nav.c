@@ -358,8 +358,8 @@ static int stances_of(const navrun_t *r, long a, long b, stance_t *st, int max)
  * runs of updates separated by less than the shortest swing (min_swing_s)
  * are one stance. The detector flickers at a landing (the x-io short walk:
  * 23 runs of updates, 17 stances, gaps of 0.02-0.09 s between the pieces of
- * one stance against swings of 0.7-0.9 s), and the too-short rule counted
- * the pieces (a review). The statistics above still use the runs. */
+ * one stance against swings of 0.7-0.9 s), and the too-short rule would
+ * count the pieces. The statistics above still use the runs. */
 static int stance_begins(const int64_t *t_ns, long last, long k, double min_swing_s)
 {
     /* update k after the update last (-1: none) begins a stance */
@@ -387,9 +387,9 @@ static int stances_counted(const navrun_t *r, const int64_t *t_ns, long a, long 
  * held-out part of a walk split at a (docs/simgap.md, section 2). A stance
  * in progress at a, or a piece of it after a flicker of the detector,
  * began in the fit segment: its first update, the observation the fit of
- * the motion effects takes, and its NIS are the fit's. The held-out part
- * began at the sample a until 2026-12-02, and such a stance was held out
- * as well, with a mid-stance update as its "first" (a review). */
+ * the motion effects takes, and its NIS are the fit's. Starting the
+ * held-out part at the sample a would hold such a stance out as well, with
+ * a mid-stance update as its "first". */
 static long stance_from(const navrun_t *r, const int64_t *t_ns, long a, long b, double min_swing_s)
 {
     long k, last = -1;
@@ -420,9 +420,9 @@ static long stance_from(const navrun_t *r, const int64_t *t_ns, long a, long b, 
 #define MAX_ST 4096
 
 /* Every stance of [a, b) in a list of the size it needs (free() it), with
- * their number in *ns; NULL when out of memory. A list of MAX_ST stances
- * dropped those after it without a word: a 90-minute walk has about 4,900
- * (the scale review, 2026-11-29). */
+ * their number in *ns; NULL when out of memory. A fixed list of MAX_ST
+ * stances would drop those after it without a word: a 90-minute walk has
+ * about 4,900. */
 static stance_t *stances_all(const navrun_t *r, long a, long b, int *ns)
 {
     int cap = MAX_ST;
@@ -494,10 +494,10 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long from
     } while (0)
     /* a segment without a stance (a short walk's held-out part, a foot that
      * never stands still) has no innovation to compare: its points are
-     * placeholders outside G, as an empty window's. They were the constant
-     * ln 1e-30 in the real and every twin, so the comparison read as twins
-     * that do not vary and the walk was refused as "a noise-free log?"
-     * instead of too short (a review) */
+     * placeholders outside G, as an empty window's. As the constant ln 1e-30
+     * in the real and every twin, the comparison would read as twins that do
+     * not vary and the walk would be refused as "a noise-free log?" instead
+     * of too short */
     ADDE(SG_NAV_NIS_FIRST, 0.0, t0, t1, lnpos(ns > 0 ? sf / ns : 0.0), ns == 0);
     ADDE(SG_NAV_NIS_ALL, 0.0, t0, t1, lnpos(nu > 0 ? sa / nu : 0.0), ns == 0);
     for (c = 0; c < 3; c++) {
@@ -511,8 +511,8 @@ static long nav_points(const navrun_t *r, const int64_t *t_ns, long a, long from
         int m = 0;
         for (i = 0; i < ns; i++) {
             double ts = (double)(t_ns[st[i].first] - t_ns[0]) * 1e-9;
-            /* the last window closed: a stance beginning at the segment's
-             * last sample was in none (a review, 2026-12-01) */
+            /* the last window closed, so that a stance beginning at the
+             * segment's last sample is in one */
             if (ts >= wa && (ts < wb || w == nwin - 1)) {
                 s += st[i].nis_first;
                 m++;
@@ -992,8 +992,8 @@ int sg_nav_sensor_values(const double B[6][6], int id, int npar, const int *ch, 
  * sensor's b / (1 - b); misalignment and g-sensitivity alone are unchanged,
  * their B B vanishes). c's values are computed jointly with other's (NULL:
  * none), the effects selected together; values out of the parameter's
- * range (I - B singular) are set to the bound and flagged (at[]): they
- * were reported as fits until 2026-12-01. */
+ * range (I - B singular) are set to the bound and flagged (at[]), not
+ * reported as fits. */
 static void to_sensor(navcand_t *c, const navcand_t *other)
 {
     double B[6][6];
@@ -1215,9 +1215,9 @@ static int run_twins(const sg_nav_t *nv, const sg_segs_t *segs, const walk_t *rw
 
 /* First-update innovations of the stances of [a, b) of a run (3 per stance)
  * with their covariance and start times; all zero before the first
- * firsts_of, freed by firsts_free. (They were arrays of MAX_ST: the
- * stances after the 4,096th were dropped without a word, the held-out
- * ones of a 90-minute walk among them; the scale review, 2026-11-29.) */
+ * firsts_of, freed by firsts_free. (Sized by the stances, not arrays of
+ * MAX_ST, which would drop the stances after the 4,096th without a word,
+ * the held-out ones of a 90-minute walk among them.) */
 typedef struct {
     int n;
     double *t;
@@ -1720,9 +1720,8 @@ static void stance_noise(const walk_t *w, const navrun_t *r, long a, long b, dou
             }
         }
         if (m > 10) {
-            /* the median by sorting: the selection sort it was is quadratic,
-             * and a walk with a 10-minute stand spent most of its time here
-             * (a review) */
+            /* the median by sorting: a selection sort is quadratic, and a
+             * walk with a 10-minute stand would spend most of its time here */
             qsort(d, (size_t)m, sizeof *d, cmp_double);
             /* MAD of a difference of two white samples: 0.6745 sqrt(2) sigma */
             white[c] = d[m / 2] / (0.6745 * sqrt(2.0)) / sqrt(fs);
@@ -1742,8 +1741,7 @@ static void find_saturation(const walk_t *w, const int *constant, long a, long b
         int n = 0;
         if (constant[c]) {
             /* a stuck output is no clipping: every sample would be a "flat
-             * top" and the diagnosis answered saturation at its value (a
-             * review, 2026-11-28) */
+             * top" and the diagnosis would answer saturation at its value */
             sat[c] = 0.0;
             nsat[c] = 0;
             continue;
@@ -1835,8 +1833,8 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
     }
     /* a confident answer: at least 10 held-out stances, whose mean
      * first-update NIS (chi2_3 / 3 per stance) is known to -44 % / +57 %
-     * (95 %: the quantiles of chi2_30 / 30). The message said +-50 %,
-     * which takes 13 (a review); the interval is computed, not typed */
+     * (95 %: the quantiles of chi2_30 / 30); +-50 % would take 13. The
+     * interval is computed, not typed */
     r->confident = 1;
     if (nv->nst[SG_HOLD] < NAV_MIN_HOLD) {
         const double dof = 3.0 * NAV_MIN_HOLD;
@@ -1949,8 +1947,8 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
         }
         /* a window in which the real has a stance begin but a twin none has
          * no twin statistic (the twin's is the placeholder ln 1e-30): not
-         * compared either. A 6 s walk's window read "real 0.0007 twin 1e-30
-         * (sd 1e-12) z +13.5" and was located as a gap (a review) */
+         * compared either (a 6 s walk's window would read "real 0.0007 twin
+         * 1e-30 (sd 1e-12) z +13.5" and be located as a gap) */
         for (g = 0; g < SG_NSEG; g++) {
             size_t k;
             int s2;
@@ -1985,9 +1983,9 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                  * answer, said as such. But a walk too short for lack of
                  * stances is said to be too short: with no stance in the
                  * fit segment the twins get no noise (it is measured in the
-                 * stances) and did not vary, and a foot that never stood
-                 * still was refused as "a noise-free log?" with no summary
-                 * or JSON (a review) */
+                 * stances) and do not vary, and a foot that never stood
+                 * still would be refused as "a noise-free log?" with no
+                 * summary or JSON */
                 int c2, g2;
                 snprintf(err, err_size, "the navigation gap of the walk cannot be tested: %s",
                          nav_cmp_why(nv, &cc[conv][g]));
@@ -2038,8 +2036,8 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                 L->peak_z = cc->z[j];
                 /* the navigation statistics are logs (ratio real/twin) but
                  * whiteness and the lattice's normal score are not (real -
-                 * twin, as for a static log; the lattice read exp(168) =
-                 * 2e78; a review, 2026-11-28) */
+                 * twin, as for a static log; as a log the lattice would read
+                 * exp(168) = 2e78) */
                 L->ratio = (L->dom == SG_NAV && pl->p[j].kind != SG_NAV_WHITE)
                                ? exp(nv->real_v[SG_FULL][j] - cc->twin_mean[j])
                                : nv->real_v[SG_FULL][j] - cc->twin_mean[j];
@@ -2218,8 +2216,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
             memset(s2, 0, sizeof *s2);
             s2->selected = -1;
             /* no twins are run before a later step: its held-out and fit G
-             * are not known (null in the JSON; they read 0; a review,
-             * 2026-11-28) */
+             * are not known (null in the JSON, not 0) */
             s2->G_hold_before = s2->G_fit_before = (double)NAN;
             for (f = 0; f < 3; f++) {
                 navcand_t cd;
@@ -2361,9 +2358,8 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
     size_t k;
     char b[256];
     /* the held-out stances begin with the first that begins at or after the
-     * split: a stance across it is the fit's, and fit + held out = all.
-     * Until 2026-12-02 it was in both ("the stance across the split in
-     * both") */
+     * split: a stance across it is the fit's alone, and fit + held out =
+     * all */
     fprintf(f, "navigation: %d stance%s (fit %d, held out %d", nv->nst[SG_FULL], nv->nst[SG_FULL] == 1 ? "" : "s",
             nv->nst[SG_FIT], nv->nst[SG_HOLD]);
     if (nv->hold_from_s == nv->hold_from_s) {
@@ -2417,8 +2413,8 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
         }
         /* the sd is z's denominator, of the log of the statistic but for
          * whiteness: printed next to the statistic itself as "sd 0.08" it
-         * read as 0.64 +- 0.08 NIS for a spread of 8 % (a review) */
-        if (p->kind == SG_NAV_WIN) { /* which window: the six rows read alike (a user review) */
+         * would read as 0.64 +- 0.08 NIS for a spread of 8 % */
+        if (p->kind == SG_NAV_WIN) { /* which window: otherwise the six rows read alike */
             snprintf(b, sizeof b, "t %.1f-%.1f s", p->x_lo, p->x_hi);
         } else {
             snprintf(b, sizeof b, "%s", p->kind == SG_NAV_AXIS ? (p->x == 0.0 ? "x" : p->x == 1.0 ? "y" : "z") : "");
@@ -2701,8 +2697,8 @@ int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const
     fprintf(p.gp, "set multiplot layout 2,1 title 'Zero-velocity-update innovations of the real walk'\n");
     if (ns == 0) {
         /* no stance, no update: two empty panels that say so (gnuplot
-         * refused the empty log axis, and the run exited 3 instead of the
-         * too-short answer's 1; a review, 2026-11-28) */
+         * refuses an empty log axis, and the run would exit 3 instead of
+         * the too-short answer's 1) */
         fprintf(p.gp, "set xrange [0:1]\nset yrange [0:1]\nset xlabel 't [s]'\nset ylabel 'NIS'\n"
                       "set title 'NIS of the first update of each stance: no stance detected'\nplot -1 notitle\n"
                       "set title 'mean NIS over each stance: no stance detected'\nplot -1 notitle\n"
@@ -2715,9 +2711,9 @@ int sg_nav_plot(const sg_nav_t *nv, const sg_result_t *r, const char *dir, const
     fprintf(p.gp, "set xrange [%.4f:%.4f]\n", nv->t_s[st[0].first] - 0.5, nv->t_s[st[ns - 1].first] + 0.5);
     fprintf(p.gp, "$d << EOD\n");
     for (i = 0; i < ns; i++) {
-        /* the stance's start time (it was the sample index over the mean
-         * rate: after a 5 s gap every later stance was drawn 5 s early,
-         * apart from the summary's windows; a review) */
+        /* the stance's start time, not the sample index over the mean rate
+         * (after a 5 s gap every later stance would be drawn 5 s early,
+         * apart from the summary's windows) */
         fprintf(p.gp, "%.4f %.6g %.6g\n", nv->t_s[st[i].first], st[i].nis_first,
                 st[i].nupd > 0 ? st[i].nis_sum / st[i].nupd : 0.0);
     }

@@ -110,8 +110,8 @@ static int plot_domain(const sg_result_t *r, const char *dir, const char *cmd, i
                       "points pt 7 ps 0.6 lc rgb '#c02020' title 'real'",
                 nm, nm, nm, nm);
         if (r->ch[ch].have_prof) {
-            /* the profile's name is the user's text ("Bob's MEMS" ended the
-             * gnuplot string: no plot; a review, 2026-11-28) */
+            /* the profile's name is the user's text, quoted for gnuplot
+             * ("Bob's MEMS" would end the gnuplot string: no plot) */
             char q[160];
             fprintf(p.gp, ", $%s using 1:7 with lines lw 1.5 dt 4 lc rgb '#e08000' title 'profile %s'", nm,
                     hx_gp_str(q, sizeof q, r->prof_name));

@@ -36,7 +36,7 @@ static void fmt_u(char *b, size_t n, int ch, double v, const char *suffix)
 }
 
 /* A fraction in percent for "%.0f": within half a percent of zero it is 0,
- * where printf wrote "-0" (the sgreport review). */
+ * where printf would write "-0". */
 static double pct(double f)
 {
     const double v = 100.0 * f;
@@ -75,7 +75,7 @@ void sg_effect_text(char *b, size_t n, int ch, const sg_effect_t *e)
     case FNAV_EFFECT_THERMAL:
         fmt_u(u, sizeof u, ch, e->p[0], "/degC");
         if (e->at_bound[2] != 0) {
-            /* the time constant a bound of its search (the sgap review) */
+            /* the time constant a bound of its search */
             snprintf(b, n, "thermal (coef %s over a %.3g degC rise, tau at the search bound %.5g s: %s)", u, e->p[1],
                      e->at_bound[2] < 0 ? e->lo[2] : e->hi[2], limit_text(e, 2));
         } else {
@@ -159,7 +159,7 @@ static void print_static(FILE *f, const sg_result_t *r)
         sg_effect_text(a, sizeof a, ch, &c->baseline.e[ia]);
         at_max += sg_ar1_at_max(c);
         /* the shortest bound too, where the optimum lies at or below one
-         * sample (the sgfit review) */
+         * sample */
         fprintf(f, "  %s  %s, %s%s\n", sg_channel_name(ch), w, a,
                 sg_ar1_at_max(c) ? ", tau at the longest this log resolves"
                                  : (sg_ar1_at_min(c, r->rate_hz) ? ", tau at the shortest the fit may take" : ""));
@@ -172,7 +172,7 @@ static void print_static(FILE *f, const sg_result_t *r)
                    "   correlation looks like a random walk over the record, and rrw, flicker or ramp stand in for it)\n");
     }
     /* G as computed (section 3), not "mean z^2", which a reader of the
-     * JSON's points got otherwise (the sgreport review) */
+     * JSON's points would get otherwise */
     fprintf(f, "gap of the baseline twin (%d seeds; G = mean over the domains of their mean z^2 (|z| capped at %g), "
                "about 1 when the twin explains the data):\n",
             r->S, SG_ZCAP);
@@ -183,8 +183,7 @@ static void print_static(FILE *f, const sg_result_t *r)
         }
         /* the held-out max |z| and its critical value too: a held-out gap
          * can be significant by one point while G is below its critical
-         * value, which the line then seemed to contradict (a review,
-         * 2026-11-28) */
+         * value, which the line would otherwise seem to contradict */
         fprintf(f,
                 "  %s  whole log G %.3g (null %.2g, crit %.2g, max |z| %.1f)%s; held out G %.3g (crit %.2g, max |z| "
                 "%.1f of %.2f)%s\n",
@@ -256,10 +255,10 @@ static void print_static(FILE *f, const sg_result_t *r)
         }
         fprintf(f, "attribution %s (held-out segment):\n", sg_channel_name(ch));
         if (c->nsteps == 0) {
-            /* --max-effects 0 (this line could not be reached: the test
-             * above skipped the channel first; a review, 2026-11-28) */
-            /* and a log too short for a confident answer, which said a
-             * bare "not attempted" (the sgreport review) */
+            /* --max-effects 0 (a channel with a gap reaches this line: the
+             * test above passes it) */
+            /* and a log too short for a confident answer, said so, not a
+             * bare "not attempted" */
             fprintf(f, "  not attempted%s\n", r->opts.max_steps == 0 ? " (--max-effects 0)"
                                                : (!r->confident ? " (too short for a confident answer)" : ""));
         }
@@ -279,8 +278,8 @@ static void print_static(FILE *f, const sg_result_t *r)
                     }
                     char zf[96] = "", zl[96] = "", dl[64] = "";
                     /* without a second fold (--contiguous, or fold 2
-                     * failed) there is no ends' drop: it read "(ends nan)"
-                     * (the sgfit review) */
+                     * failed) there is no ends' drop: left out, not
+                     * "(ends nan)" */
                     if (cd->dL_ends == cd->dL_ends) {
                         snprintf(dl, sizeof dl, " (ends %.3g)", cd->dL_ends);
                     }
@@ -310,8 +309,8 @@ static void print_static(FILE *f, const sg_result_t *r)
             fprintf(f, "  -> remaining held-out gap within noise\n");
         } else {
             /* which test: with G below its critical value the gap is one
-             * point's |z|, which the line did not show ("G 2.38 -> 1.57"
-             * then "a significant held-out gap remains": a user review) */
+             * point's |z|, shown too (else "G 2.38 -> 1.57" then "a
+             * significant held-out gap remains" would seem to contradict) */
             const sg_cmp_t *h = &c->cmp_final[SG_HOLD];
             fprintf(f, "  -> a significant held-out gap remains (G %.3g, critical %.3g; max |z| %.2f, critical %.2f)\n",
                     h->G, h->G_crit, h->maxz, h->z_crit);
@@ -406,8 +405,8 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
     debug_points(f, r);
     int ch, i, d;
     char b[256];
-    /* %.3g: --fit-frac 0.25 read "the first and last 12 %, held out the
-     * middle 75 %" with %.0f (the sgreport review) */
+    /* %.3g: with %.0f, --fit-frac 0.25 would read "the first and last 12 %,
+     * held out the middle 75 %" */
     if (r->segs.sandwich) {
         fprintf(f, "simgap %s: %s, %ld samples at %.4g Hz (%.1f s); fit on the first and last %.3g %%, held out the "
                    "middle %.3g %%\n",
@@ -467,8 +466,8 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
         int first = 1, nfinal = 0;
         /* the channels' parameters below are their final refit (the
          * accepted effects together, on the fit segment), not the steps'
-         * fits printed above them, and were given unlabelled (a jumps step
-         * of rms 0.00875 beside a verdict of rms 0; 2026-11-30) */
+         * fits printed above them, and are labelled so (unlabelled, a jumps
+         * step of rms 0.00875 would stand beside a verdict of rms 0) */
         for (ch = 0; ch < SG_NCH; ch++) {
             for (i = 0; i < r->ch[ch].nsel; i++) {
                 nfinal += sg_model_find(&r->ch[ch].final, r->ch[ch].sel_id[i]) >= 0;
@@ -491,7 +490,7 @@ void sg_print_summary(FILE *f, const sg_result_t *r)
                         /* an effect accepted after others explains a share
                          * of the excess they left, not of the baseline's:
                          * "99 %" then "68 % of the held-out excess" on one
-                         * channel read as 167 % (the sgreport review) */
+                         * channel would otherwise read as 167 % */
                         fprintf(f, "%s %s on %s (%.0f %% of the held-out excess%s)", first ? ":" : ";", b,
                                 sg_channel_name(ch), pct(r->ch[ch].sel_expl[i]),
                                 sel_step(&r->ch[ch], r->ch[ch].sel_id[i]) > 0

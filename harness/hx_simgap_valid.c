@@ -742,8 +742,8 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
                     cs->truth >= 0 ? k_eff[cs->truth].name : "control", mk, mu,
                     cs->pred >= 0 ? k_eff[cs->pred].name : (cs->pred == -1 ? "none" : "other"), cs->verdict, lo, pe,
                     sh, cs->elapsed_s);
-            /* why, at the first too-short case of each domain: a run of them
-             * said so only in the summary at its end (a review, 2026-11-30) */
+            /* why, at the first too-short case of each domain, not only in
+             * the summary at the end of a run of them */
             if (strcmp(cs->verdict, "too-short") == 0 && !told_short[cs->walk ? 1 : 0]) {
                 told_short[cs->walk ? 1 : 0] = 1;
                 fprintf(f, "          too short for an answer: %s (a longer %s gives one)\n", res->why,
@@ -787,8 +787,8 @@ static void wilson(int k, int n, double *lo, double *hi)
 typedef struct {
     int n, det, top1, loc_exact, pe_n, pe_ok, sh_n, sh_ok;
     double jac;
-    double *pe_med_v, *sh_med_v; /* room for every case (NULL: no medians); until 2026-11-28
-                                  * 1024 each, so a larger class's medians were its first cases' */
+    double *pe_med_v, *sh_med_v; /* room for every case (NULL: no medians); with a fixed 1024
+                                  * each, a larger class's medians would be its first cases' */
     int npe, nsh;
 } agg_t;
 
@@ -920,8 +920,7 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
                 a->sh_ok, a->sh_n, sh_med, md ? " |" : "");
     }
     if (nshort > 0) {
-        /* a class's 0/8 with every case too short said nothing of why in
-         * the summary (a review, 2026-11-30) */
+        /* a class's 0/8 with every case too short says why in the summary */
         fprintf(f, "%s", md ? "\nToo short for an answer: " : "too short for an answer: ");
         for (k = 0, j = 0; k < SGV_NCLASS; k++) {
             if (short_cls[k] > 0) {
@@ -972,8 +971,7 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
         fprintf(f, "Top-1 by magnitude (multiple of the detectable threshold; quant: of 30 ulp, jitter: of 0.1 us):\n\n"
                    "| class | 1-2x | 2-4x | >= 4x |\n| --- | --- | --- | --- |\n");
     } else {
-        /* the counts under their column's name (the names stood 14
-         * columns to the right of the counts; a review, 2026-11-30) */
+        /* the counts under their column's name */
         fprintf(f, "top-1 by magnitude (multiple of the detectable threshold; quant: of 30 ulp, jitter: of 0.1 us):\n"
                    "  %-8s  %7s  %7s  %7s\n", "", "1-2x", "2-4x", ">= 4x");
     }
@@ -1006,9 +1004,8 @@ void sgv_report(FILE *f, const sgv_opts_t *o, const sgv_case_t *cases, int n, in
         }
         fprintf(f, " |\n");
     } else {
-        /* each count under its column's name, right-aligned to it (the
-         * names ran on the title line, the counts 4 characters apart; a
-         * review, 2026-11-30) */
+        /* each count under its column's name, right-aligned to it (not the
+         * names on the title line, the counts 4 characters apart) */
         fprintf(f, "confusion (rows: the withheld effect; columns: the diagnosis's top-ranked effect):\n  %-13s %4s",
                 "", "none");
         for (j = 0; j < NEFF; j++) {
@@ -1138,8 +1135,8 @@ int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *case
     complete = o->only >= 0 ? nrun == 1 : nrun == n;
     cJSON_AddBoolToObject(root, "complete", complete);
     if (error != NULL && !complete) {
-        /* why the run stopped early, as the other commands' `error` (it had
-         * complete false alone; the JSON review, 2026-11-30) */
+        /* why the run stopped early, as the other commands' `error`, beside
+         * complete false */
         cJSON_AddStringToObject(root, "error", error);
     }
     if (o->only >= 0) {

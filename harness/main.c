@@ -46,7 +46,7 @@ static void usage(FILE *f)
  * closed pipe is a write error (exit 3), not a success with the results
  * lost (`info LOG > /dev/full` exited 0) nor a silent death by SIGPIPE
  * before the other outputs were written (`replay LOG --out - --json S |
- * head -1` lost S; a review, 2026-11-28). `who` is "info", or NULL for the
+ * head -1` would lose S). `who` is "info", or NULL for the
  * harness's own usage. */
 static int flush_stdout(const char *who, int rc)
 {
@@ -97,8 +97,7 @@ int main(int argc, char **argv)
         static char help_opt[] = "--help";
         char *help_argv[] = { help_opt, NULL };
         /* `help help` (`help --help`, `--help help`) is the general help,
-         * as `help` alone (it was "unknown command 'help'", exit 2; a
-         * review, 2026-12-02) */
+         * as `help` alone, not "unknown command 'help'", exit 2 */
         if (argc == 2 || (argc == 3 && (strcmp(argv[2], "help") == 0 || strcmp(argv[2], "--help") == 0 ||
                                         strcmp(argv[2], "-h") == 0))) {
             usage(stdout);

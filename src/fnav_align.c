@@ -51,11 +51,11 @@ fnav_status_t fnav_align_from_means(fnav_vec3_t f, fnav_vec3_t w, fnav_real_t g,
 {
     fnav_real_t fn;
     fnav_real_t roll, pitch;
-    /* a public function (the harness's axes check calls it): until
-     * 2026-12-01 (a review) a NULL out crashed, g = 0 with f = 0 passed the
-     * test below (0 <= 0) and g = +Inf too (Inf <= Inf), returning OK with
-     * an accelerometer bias of NaN or Inf, and a NaN rate came back as the
-     * gyro bias with OK (test_align test_from_means_bad_args) */
+    /* a public function (the harness's axes check calls it): a NULL out,
+     * a g that is not finite and positive (g = 0 with f = 0 would pass the
+     * test below, 0 <= 0, and g = +Inf too, Inf <= Inf, with an
+     * accelerometer bias of NaN or Inf) and a NaN rate (it would come back
+     * as the gyro bias) are refused (test_align test_from_means_bad_args) */
     if (out == NULL || !fnav_isfinite(g) || !(g > FNAV_R(0.0))) {
         return FNAV_E_ARG;
     }
@@ -201,9 +201,9 @@ static void add_sample(fnav_align_period_t *p, const fnav_sample_t *s, fnav_real
     if (p->n >= FNAV_ALIGN_PERIOD_MAX) {
         /* a period that long has stamps that do not advance (a sensor stuck
          * on one stamp: its duration stays 0 and it never ends); its count,
-         * a long of 32 bits on the Cortex-M4F, overflowed after 2^31
-         * samples (a review, 2026-11-29; test_align test_stuck_stamp_period):
-         * start again with this sample */
+         * a long of 32 bits on the Cortex-M4F, would overflow after 2^31
+         * samples (test_align test_stuck_stamp_period): start again with
+         * this sample */
         reset_period(p);
     }
     if (p->n == 0) {

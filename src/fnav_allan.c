@@ -260,9 +260,9 @@ static fnav_real_t terms0(const fnav_allan_t *a, uint32_t m, uint32_t lo, uint32
 
 /* First multiple of m that is >= lo, or UINT32_MAX when it lies beyond
  * (above every end index: the count stops at 2^32 - 2 samples). In 32 bits
- * lo + m - 1 wrapped to a small number near the end, and the
- * non-overlapping sums took in about 2^32 / m terms of stale ring values
- * (13 times the variance), or never returned (a review, 2026-11-28). */
+ * lo + m - 1 would wrap to a small number near the end, and the
+ * non-overlapping sums would take in about 2^32 / m terms of stale ring
+ * values (13 times the variance), or never return. */
 static inline uint32_t next_multiple(uint32_t lo, uint32_t m)
 {
     const uint32_t r = lo % m, add = r == 0u ? 0u : m - r;
@@ -673,9 +673,9 @@ double fnav_allan_edf_var(int alpha, int d, int modified, uint32_t m_u, uint32_t
             /* case 4: K = ceil(r); the table's form holds for K > d only.
              * With K <= d (fewer terms than the averaging factor: they share
              * no sample) 1/edf = (1/M) sum over |k| < K of (1 - |k|/r)
-             * (C(2d, d+k) / C(2d, d))^2; the table's form gave an EDF above
+             * (C(2d, d+k) / C(2d, d))^2; the table's form gives an EDF above
              * M (1,096 against 952 at m = 1024 of 3,000 phase values) or
-             * none (a review, 2026-11-28) */
+             * none */
             const double K = ceil(r);
             if (K > dd) {
                 inv = (1.0 / M) * (a[0] - a[1] / r);

@@ -347,7 +347,7 @@ static int in_range(const fnav_effect_param_t *p, fnav_real_t v)
 {
     /* against the bounds in the value's own precision: in float, 1e-9 and
      * 1e-12 round below the double bounds of the same name, and the
-     * documented inclusive ends were refused (a review, 2026-11-28) */
+     * documented inclusive ends would be refused) */
     return fnav_isfinite(v) && v >= (fnav_real_t)p->lo && v <= (fnav_real_t)p->hi;
 }
 
@@ -366,8 +366,8 @@ fnav_status_t fnav_imuerr_param_set(fnav_imuerr_config_t *cfg, fnav_effect_id_t 
         return FNAV_E_RANGE;
     }
     if ((p->flags & FNAV_PARAM_INTEGER) != 0u && value != fnav_floor(value)) {
-        /* init's refusal of the same value (validate); taken here until
-         * 2026-12-01, and the configuration refused only at init */
+        /* init's refusal of the same value (validate), given here at once
+         * rather than only when init sees the configuration */
         return FNAV_E_CONFIG;
     }
     dst = param_ptr(cfg, p);
@@ -411,8 +411,8 @@ fnav_status_t fnav_imuerr_config_from_profile(fnav_imuerr_config_t *cfg, const f
     }
     {
         /* the catalogue's ranges of white and ar1 (a correlation time under
-         * 1 ms passed here, then init refused it and the harness blamed
-         * --effect options never given; a review, 2026-11-28) */
+         * 1 ms passing here would be refused only by init, and the harness
+         * would blame --effect options never given) */
         fnav_imuerr_config_t t = *cfg;
         int id, k, c;
         for (i = 0; i < 3; i++) {
@@ -455,8 +455,8 @@ uint32_t fnav_imuerr_internal_factor(const fnav_imuerr_config_t *cfg)
     }
     if (cfg->mask[FNAV_EFFECT_ALIAS] != 0u) {
         /* inside the catalogue's range before the conversion: NaN, a
-         * negative factor or one above 2^32 made it undefined behaviour
-         * (a review, 2026-12-01; test_imuerr test_catalogue_names_and_params) */
+         * negative factor or one above 2^32 make it undefined behaviour
+         * (test_imuerr test_catalogue_names_and_params) */
         const fnav_effect_param_t *p = &k_alias[0];
         if (!(cfg->alias.factor >= (fnav_real_t)p->lo && cfg->alias.factor <= (fnav_real_t)p->hi)) {
             return 1u;

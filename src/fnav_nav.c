@@ -232,9 +232,9 @@ fnav_status_t fnav_nav_push(fnav_nav_t *nav, const fnav_sample_t *sample)
     if (sample->t_ns < nav->t_in_ns && nav->back_run + 1u < (uint32_t)FNAV_NAV_TIME_RESYNC) {
         /* a run of FNAV_NAV_TIME_RESYNC samples behind the last accepted
          * one is a new timeline (a corrupted stamp far ahead, a restarted
-         * timer), whose first sample is accepted below: until 2026-11-29
-         * one stamp 1 h ahead had every later sample rejected for the rest
-         * of the run (a review; test_nav test_time_glitch_forward) */
+         * timer), whose first sample is accepted below: otherwise one stamp
+         * 1 h ahead would have every later sample rejected for the rest of
+         * the run (test_nav test_time_glitch_forward) */
         nav->back_run++;
         nav->stats.time_back++;
         nav->health |= FNAV_HEALTH_TIME_BACK;
@@ -284,8 +284,7 @@ static void start_filter(fnav_nav_t *nav)
          * axis), it is defined for every mounting, also with b's x axis
          * vertical, where yaw and roll split by the noise and holding the
          * yaw turned the path by 87 and 110 deg at the two renewals of the
-         * xio short walk turned upright (a review,
-         * 2026-11-28; test_nav test_realign_x_vertical). */
+         * xio short walk turned upright (test_nav test_realign_x_vertical). */
         fnav_mat3_t ch = fnav_quat_to_dcm(nav->hold_q_nb), cn = fnav_quat_to_dcm(nav->ukf.q_nb);
         fnav_real_t m00 = FNAV_R(0.0), m11 = FNAV_R(0.0), m10 = FNAV_R(0.0), m01 = FNAV_R(0.0), psi;
         fnav_quat_t qz;
@@ -347,7 +346,7 @@ static void hold_last_frame(fnav_nav_t *nav, int keep_yaw_var)
          * from its ZYX angles: near pitch +-90 deg roll and yaw each carry
          * the quaternion's rounding / cos(pitch), and so does the attitude
          * they give back (in float32 1.2 deg off at 0.001 deg from 90, 10
-         * deg at 1e-4, any heading at 90: a review, 2026-11-29) */
+         * deg at 1e-4, any heading at 90) */
         for (i = 0; i < 3; i++) {
             nav->hold_pos_var_m2[i] = g->p_diag[FNAV_UKF_P + i];
         }
@@ -373,9 +372,9 @@ static int renew_alignment(fnav_nav_t *nav, const fnav_stance_out_t *o)
     /* the state before this sample; its heading variance only after a
      * divergence reset, when the heading was navigated (the walk went on
      * from the last good frame): before the first stride of a log it is
-     * the frame's own definition. Until 2026-11-29 (a review) a renewal
-     * in the stand after a reset restarted it at yaw_sd^2 too, undoing
-     * the reset's hold (test_nav_robust test_reset_then_renewal). */
+     * the frame's own definition. Restarting it at yaw_sd^2 in a renewal
+     * in the stand after a reset would undo the reset's hold
+     * (test_nav_robust test_reset_then_renewal). */
     hold_last_frame(nav, nav->stats.resets > 0u);
     start_filter(nav);
     nav->stats.realigned++;
@@ -545,10 +544,10 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
     if (!nav->aligned) {
         /* after the input's end (fnav_nav_finish), each sample the detector
          * held back goes to the alignment, which then completes as soon as
-         * its still period qualifies (fnav_align_finish): until 2026-11-29
-         * (a review) only fnav_nav_finish tried, before these samples, and
-         * a log whose still period reached align_short_s with them did not
-         * align (test_nav test_align_at_end) */
+         * its still period qualifies (fnav_align_finish), so that a log
+         * whose still period reaches align_short_s only with these samples
+         * aligns (fnav_nav_finish alone tries before them; test_nav
+         * test_align_at_end) */
         if (fnav_align_push(&nav->align, s, o->stance, o->stat) != FNAV_OK &&
             !(nav->stance.finished && fnav_align_finish(&nav->align) == FNAV_OK)) {
             fill_frame(nav, o, flags, fr);

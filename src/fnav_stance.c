@@ -16,7 +16,7 @@
  * which divides the latter), so once n_out reaches REBASE_AT all three move
  * back by REBASE_STEP, a multiple of both ring sizes below 2^29: every slot
  * and difference stays, and the counters stay between 2^29 and 2^30 for
- * ever (a review, 2026-11-28; test_stance test_counters_long_run). The run
+ * ever (test_stance test_counters_long_run). The run
  * lengths saturate at RUN_MAX instead, above every duration in samples
  * (round_pos() saturates at 1e9). */
 #define REBASE_PERIOD ((long)FNAV_STANCE_MAX_WINDOW * (long)FNAV_STANCE_EVENT_BUF)
@@ -190,7 +190,7 @@ fnav_status_t fnav_stance_push(fnav_stance_t *st, const fnav_sample_t *sample)
         /* the caller did not pop the due decisions: the ring is full, or
          * this sample would overwrite the first of the window of the next
          * raw decision (decided at the next pop; a window longer than the
-         * look-ahead, h > L, reaches it first; a review, 2026-12-01:
+         * look-ahead, h > L, reaches it first;
          * test_stance test_burst_push_same_decisions) */
         return FNAV_E_STATE;
     }
@@ -334,7 +334,7 @@ static int64_t foot_strike(const fnav_stance_t *st, long k0, int64_t t_now_ns, l
     }
     if (st->jerk_long_left > 0) {
         /* jumps in the history may span 2^32 us or more together (three of
-         * 30 min put the strike 71.6 min off; a review, 2026-11-28) */
+         * 30 min in 32 bits would put the strike 71.6 min off) */
         int64_t span_us = 0;
         for (k = kbest + 1; k <= k_now; k++) {
             span_us += (int64_t)(uint32_t)(st->jerk_t_us[k % FNAV_STANCE_EVENT_BUF] -
@@ -446,8 +446,8 @@ static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
         } else {
             /* the swing run ended within its event window: the search
              * closes on what it saw (left open, the motion after a short
-             * pause took it over and foot-off came after foot-strike; a
-             * review, 2026-11-28) */
+             * pause would take it over and foot-off would come after
+             * foot-strike) */
             st->fo_open = 0;
         }
     }

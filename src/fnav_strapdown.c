@@ -175,9 +175,8 @@ fnav_status_t fnav_strapdown_step(const fnav_strapdown_config_t *cfg, fnav_strap
     fnav_strapdown_incr_t inc;
     fnav_strapdown_state_t y;
     /* a public function returning a status: NULL and a configuration out
-     * of its domain are FNAV_E_ARG (until 2026-12-01, a review: NULL hit
-     * FNAV_ASSERT, a gravity of 0 or below and an unknown sample type
-     * returned FNAV_OK; test_strapdown test_bad_args) */
+     * of its domain (a gravity of 0 or below, an unknown sample type) are
+     * FNAV_E_ARG, not an FNAV_ASSERT (test_strapdown test_bad_args) */
     if (cfg == NULL || x == NULL || !fnav_isfinite(cfg->gravity_mps2) || !(cfg->gravity_mps2 > FNAV_R(0.0)) ||
         (cfg->sample_type != FNAV_SAMPLE_INSTANT && cfg->sample_type != FNAV_SAMPLE_MEAN)) {
         return FNAV_E_ARG;
@@ -191,8 +190,8 @@ fnav_status_t fnav_strapdown_step(const fnav_strapdown_config_t *cfg, fnav_strap
     fnav_strapdown_increments(cfg, hist, gyro_rps, accel_mps2, dt_s, &inc);
     y = *x;
     fnav_strapdown_propagate(cfg, &y, &inc, fnav_vec3_zero(), fnav_vec3_zero());
-    /* finite readings and dt can still overflow (dt of 1e30 s: a review,
-     * 2026-11-28, found FNAV_OK with an infinite state) */
+    /* finite readings and dt can still overflow (a dt of 1e30 s would
+     * otherwise return FNAV_OK with an infinite state) */
     if (!fnav_vec3_isfinite(y.vel_mps) || !fnav_vec3_isfinite(y.pos_m) ||
         !fnav_isfinite(y.q_nb.q[0] + y.q_nb.q[1] + y.q_nb.q[2] + y.q_nb.q[3])) {
         return FNAV_E_RANGE;

@@ -41,8 +41,7 @@ static int finite_pos(fnav_real_t x)
 
 /* A standard deviation whose variance is finite and positive as well (in
  * float32 an sd below about 1e-19 has a variance of 0, one above 1.8e19 an
- * infinite one: the guard then made either the maximum; the filter
- * review). */
+ * infinite one, which the guard would make the maximum). */
 static int sd_ok(fnav_real_t x)
 {
     return finite_pos(x) && finite_pos(x * x);
@@ -50,8 +49,8 @@ static int sd_ok(fnav_real_t x)
 
 /* A white-noise density or random walk (0 allowed) whose square, which the
  * prediction adds to the covariance, is finite (in float32 one above
- * 1.8e19 made the first prediction's variance infinite and the guard its
- * maximum; the UKF review). */
+ * 1.8e19 would make the first prediction's variance infinite and the guard
+ * its maximum). */
 static int noise_ok(fnav_real_t x)
 {
     return finite_nonneg(x) && fnav_isfinite(x * x);
@@ -154,11 +153,10 @@ fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
     }
     {
         /* every byte to 0 but the configuration's when cfg is the filter's
-         * own, &f->cfg (a restart with it, as fnav_nav_init allows): it was
-         * zeroed before it was copied, and the filter ran with gravity,
-         * the ZUPT's sigma and alpha 0, or with the lever hit the assert
-         * below (the core review, 2026-12-02; test_ukf
-         * test_reinit_own_config) */
+         * own, &f->cfg (a restart with it, as fnav_nav_init allows): zeroed
+         * before the copy, the filter would run with gravity, the ZUPT's
+         * sigma and alpha 0, or with the lever hit the assert below
+         * (test_ukf test_reinit_own_config) */
         const size_t c0 = offsetof(fnav_ukf_t, cfg), c1 = c0 + sizeof f->cfg;
         const int own = cfg == &f->cfg;
         for (b = 0; b < sizeof *f; b++) {
@@ -236,8 +234,8 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     }
     if (f->n_act == 0) {
         /* never initialised (static storage; init sets 9 to 18 states):
-         * it ran with a zero configuration, no gravity and no states (the
-         * core review, 2026-12-02; test_ukf test_start_not_initialised) */
+         * it would run with a zero configuration, no gravity and no states
+         * (test_ukf test_start_not_initialised) */
         return FNAV_E_STATE;
     }
     if (!fnav_vec3_isfinite(bg_rps) || !fnav_vec3_isfinite(ba_mps2) || !fnav_isfinite(q_nb.q[0]) ||
@@ -260,9 +258,9 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     }
     {
         /* a quaternion whose squared norm overflows or underflows is
-         * scaled by its largest component first (fnav_quat_normalize made
-         * (1e20, 0, 0, 1e20) the zero quaternion: the filter review); a
-         * unit one is normalised as it always was */
+         * scaled by its largest component first (fnav_quat_normalize makes
+         * (1e20, 0, 0, 1e20) the zero quaternion); a unit one is normalised
+         * by fnav_quat_normalize */
         fnav_real_t n2 = q_nb.q[0] * q_nb.q[0] + q_nb.q[1] * q_nb.q[1] + q_nb.q[2] * q_nb.q[2] + q_nb.q[3] * q_nb.q[3];
         if (!(n2 > FNAV_REAL_EPSILON) || !fnav_isfinite(n2)) {
             fnav_real_t m = FNAV_R(0.0);
@@ -584,9 +582,9 @@ static fnav_real_t sd_max(int i)
  * times the measurement's (a velocity variance above 840 (m/s)^2 with the
  * 0.01 m/s ZUPT, after minutes without a stance) makes S = P + r2 round to
  * P, the gain 1 and the expanded Joseph form P - P - P + P = 0. With the
- * maximum, every later update did the same (S = 1e4 + 1e-4 rounds to 1e4):
- * the velocity variance stayed at 1e4 (m/s)^2 for the rest of the walk
- * (the filter review, 2026-11-29; test_ukf test_zupt_after_long_swing).
+ * maximum, every later update would do the same (S = 1e4 + 1e-4 rounds to
+ * 1e4): the velocity variance would stay at 1e4 (m/s)^2 for the rest of
+ * the walk (test_ukf test_zupt_after_long_swing).
  * r2 = 0: the prediction (f->K holds its bias maps; guard_cov(), the
  * branch folded away); inlined in the update, so that the prediction's
  * code and cost stay as they were. */
@@ -1315,9 +1313,9 @@ static fnav_status_t update(fnav_ukf_t *f, const fnav_real_t (*H)[N], const int 
     det = s[0][0] * si[0][0] + s[0][1] * si[0][1] + s[0][2] * si[0][2];
     /* positive definite by Sylvester's criterion: the leading minors s00,
      * s00 s11 - s01^2 (= si[2][2]) and det positive. Without s00 > 0 an
-     * indefinite S with two negative eigenvalues passed (-1 0 2; 0 -1 0;
-     * 2 0 -1: det 3, minor 1) and was inverted (the core review,
-     * 2026-12-02; test_ukf test_zupt_indefinite_s) */
+     * indefinite S with two negative eigenvalues would pass (-1 0 2; 0 -1 0;
+     * 2 0 -1: det 3, minor 1) and be inverted (test_ukf
+     * test_zupt_indefinite_s) */
     if (!(det > FNAV_R(0.0)) || !fnav_isfinite(det) || !(s[0][0] > FNAV_R(0.0)) || !(si[0][0] > FNAV_R(0.0)) ||
         !(si[2][2] > FNAV_R(0.0))) {
         f->health.update_reject++;

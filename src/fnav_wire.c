@@ -57,7 +57,7 @@ static void put_f32(uint8_t *p, float v)
 
 /* An fnav_real_t as float32. In a double build a value beyond the float
  * range is sent as the largest float of its sign (the plain cast is
- * undefined behaviour there, C99 6.3.1.5; a review, 2026-11-28); NaN and
+ * undefined behaviour there, C99 6.3.1.5); NaN and
  * infinities pass as they are. A float build sends the value itself. */
 static void put_real32(uint8_t *p, fnav_real_t x)
 {
@@ -406,7 +406,7 @@ fnav_status_t fnav_wire_decode_flush(fnav_wire_decoder_t *d, fnav_wire_frame_t *
         if (d->fill == 0u) {
             /* no byte of a counted candidate's extent will come: a corrupt
              * frame after the pause counts on its own (the rest of the
-             * extent was carried over and hid it until 2026-12-01) */
+             * extent, if carried over, would hide it) */
             d->bad_until = 0u;
             return FNAV_AGAIN;
         }

@@ -53,10 +53,10 @@
  * Latency: the SHOE window is centred, so a sample's statistic is known h =
  * (W - 1) / 2 samples after it, and the stance decision also waits for the
  * shortest ZUPT run to be confirmed: frames come out h + lag samples after
- * their sample. With the defaults (25 ms window, stance.min_zupt_cycle 0.025
- * since 2026-12-01) the lag is fixed for the longest cycle-scaled run: at
+ * their sample. With the defaults (25 ms window, stance.min_zupt_cycle
+ * 0.025) the lag is fixed for the longest cycle-scaled run: at
  * 200 Hz h 2, lag 14, frames 16 samples (80 ms) late; fnav_stance.h. With
- * stance.min_zupt_cycle 0 (the default until 2026-12-01) lag = n_min_zupt - 1:
+ * stance.min_zupt_cycle 0 (the scaling off) lag = n_min_zupt - 1:
  * 5 samples (25 ms) at 200 Hz with the 20 ms run (h 2, lag 3). When the rate
  * is estimated (rate_hz = 0) the first frame waits for 33 samples. Each frame
  * carries its own sample's time.

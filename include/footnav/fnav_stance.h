@@ -46,8 +46,8 @@
  * stance minima rise, the threshold follows them one window later (so the
  * first running stances after a transition are missed: docs/navigation.md).
  *
- * Cycle-scaled shortest ZUPT run (min_zupt_cycle > 0, 0.025 by default since
- * 2026-12-01; docs/navigation.md, "Stance detector"): in a slow gait the statistic dips under the threshold
+ * Cycle-scaled shortest ZUPT run (min_zupt_cycle > 0, 0.025 by default;
+ * docs/navigation.md, "Stance detector"): in a slow gait the statistic dips under the threshold
  * for 20-32 ms in late swing, longer than min_zupt_s, and a ZUPT there
  * removes about 1 m/s (docs/harness.md, "Slow walking"). The shortest run
  * then becomes max(n(min_zupt_s), round(min_zupt_cycle * T * rate)) samples,
@@ -62,7 +62,7 @@
  * look-ahead L when the rate becomes known (capped by the ring as above,
  * FNAV_STANCE_CUT_ZUPT_CYCLE): the latency is fixed, h + L samples, and
  * grows with min_zupt_cycle (the default 0.025 at 200 Hz: L = 14, 70 ms,
- * h + L 80 ms; at 0, the default until 2026-12-01, L = n(min_zupt_s) - 1,
+ * h + L 80 ms; at 0, the scaling off, L = n(min_zupt_s) - 1,
  * 15 ms, h + L 25 ms, and the decisions without the scaling).
  *
  * Lock-in guard (min_zupt_cycle > 0): a gait whose stances are shorter than
@@ -125,7 +125,7 @@ typedef struct {
     fnav_real_t min_swing_s;    /**< segmentation: shortest swing, s (default 0.25) */
     fnav_real_t event_window_s; /**< gait-event search window, s (default 0.3) */
     fnav_real_t min_zupt_cycle; /**< shortest ZUPT run as a fraction of the recent gait cycle,
-                                     dimensionless (default 0.025 since 2026-12-01; 0: off; see
+                                     dimensionless (default 0.025; 0: off; see
                                      "Cycle-scaled shortest ZUPT run" above) */
 } fnav_stance_config_t;
 
@@ -153,7 +153,7 @@ typedef struct {
 
 /** The defaults' initializer, shared by fnav_stance_config_default and the
  *  navigator's default (fnav_nav_config_default.stance), so the two cannot
- *  differ. Until 2026-12-01 the navigator's was a copy of the values. */
+ *  differ. */
 #define FNAV_STANCE_CONFIG_DEFAULT_INIT                                                                            \
     {                                                                                                              \
         FNAV_DETECTOR_SHOE,          /* detector */                                                                \

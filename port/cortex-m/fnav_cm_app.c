@@ -41,8 +41,7 @@ fnav_status_t fnav_cm_app_announce(fnav_cm_app_t *app)
     size_t i;
     /* the SAMPLE stream's own rate and counter: every N-th sample runs at
      * rate / N and its seq steps by N, which a receiver must not take for
-     * N - 1 lost samples each time (it did: 1,999 "drops" in 4,000 at
-     * N = 2; a review, 2026-11-28) */
+     * N - 1 lost samples each time (1,999 "drops" in 4,000 at N = 2) */
     const uint32_t every = app->cfg.sample_every > 1u ? app->cfg.sample_every : 1u;
     info.rate_hz = (double)(app->cfg.rate_hz / (fnav_real_t)every);
     info.flags = FNAV_WIRE_INFO_RATE_NOMINAL | (every == 1u ? FNAV_WIRE_INFO_SEQ : 0u);
@@ -76,8 +75,8 @@ void fnav_cm_app_process(fnav_cm_app_t *app, const fnav_sample_t *s)
     st = fnav_cm_est_nav(&app->est, s, &app->frame);
     FNAV_CM_PROF_END(FNAV_CM_PROF_NAV);
     FNAV_CM_PROF_NOTE(FNAV_CM_PROF_NAV, (st == FNAV_OK) ? app->frame.flags : FNAV_CM_PROF_TAG_NO_OUTPUT);
-    /* every frame the sample released is an output (the app used to count
-     * one per sample and drop the rest: a review, 2026-11-29) */
+    /* every frame the sample released is an output, not only the first
+     * (a sample can release several together) */
     while (st == FNAV_OK) {
         app->nav_outputs++;
         if (app->cfg.nav_every != 0u && app->nav_outputs % app->cfg.nav_every == 0u) {

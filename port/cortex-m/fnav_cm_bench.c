@@ -702,8 +702,8 @@ int main(void)
     }
 #if FNAV_CM_WITH_NAV
     /* every frame the filter released is an output and, at nav_every 1, a
-     * NAV frame (the app once sent one per sample and dropped the frames a
-     * sample released together: a review, 2026-11-29) */
+     * NAV frame (not one per sample: a sample can release several frames
+     * together, and none is dropped) */
     if (g_app.nav_outputs != g_app.est.nav.stats.frames || g_sink.frames[FNAV_WIRE_NAV] != g_app.nav_outputs) {
         fnav_cm_line_str(&l, "bench: error: the filter released ");
         fnav_cm_line_u64(&l, g_app.est.nav.stats.frames);

@@ -30,7 +30,7 @@
  * holds the look-ahead of min_zupt_s (half window + min_zupt_s * rate + 1
  * samples must fit): above about 730 Hz the detector shortens min_zupt_s to
  * what fits (fnav_stance.c set_rate). The default cycle-scaled run
- * (min_zupt_cycle 0.025 since 2026-12-01; 0, off, before) asks at 400 Hz
+ * (min_zupt_cycle 0.025; 0 is off) asks at 400 Hz
  * for runs of up to 30 samples (look-ahead 29): the ring caps the look-ahead
  * at 17, runs of 18 samples, 45 ms, reached for cycles over 1.8 s, and the
  * navigator's latency is h + L = 22 samples, 55 ms (12, 30 ms, with

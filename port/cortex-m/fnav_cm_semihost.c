@@ -30,8 +30,9 @@ void fnav_cm_sh_exit(int status)
     /* SYS_EXIT_EXTENDED carries the status itself; a debugger without that
      * extension (or an image built with FNAV_CM_SH_NO_EXIT_EXTENDED, for one
      * that halts on an operation it does not know) gets the plain SYS_EXIT,
-     * whose reason code says success or failure: a failure was sent as
-     * ADP_Stopped_ApplicationExit, success, until 2026-12-01 (tests/m4/exit.sh) */
+     * whose reason code says success or failure: a failure goes as
+     * ADP_Stopped_RunTimeErrorUnknown, never as ADP_Stopped_ApplicationExit,
+     * success (tests/m4/exit.sh) */
     const uintptr_t reason = (status == 0) ? ADP_STOPPED_APPLICATION_EXIT : ADP_STOPPED_RUNTIME_ERROR_UNKNOWN;
 #if !defined(FNAV_CM_SH_NO_EXIT_EXTENDED)
     uint32_t block[2];

@@ -43,8 +43,8 @@ static fnav_status_t linux_write_nav(void *ctx, const fnav_nav_frame_t *f)
     }
     /* errno is set only by a failed call: cleared here, it is the reason of
      * this frame's failed write, kept before anything else can change it
-     * (the reason was not given: "cannot write the trajectory to
-     * /dev/full"; a review, 2026-12-02) */
+     * (so the message gives the reason, not only "cannot write the
+     * trajectory to /dev/full") */
     errno = 0;
     if (!c->header_written) {
         fprintf(c->nav_csv, "%s\n", FNAV_LINUX_NAV_CSV_HEADER);
