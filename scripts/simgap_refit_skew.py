@@ -90,7 +90,8 @@ for key, name in names.items():
     print("%s: %d refit sets of %d-%d refits; relative sd (mean) %.3f" % (name, len(L), min(map(len, L)),
           max(map(len, L)), rel.mean()))
     print("  (median - mean)/sd: mean %+.3f, median below mean in %d of %d sets" % (md.mean(), (md < 0).sum(), len(L)))
-    print("  (mean - p16)/sd mean %.3f, (p84 - mean)/sd mean %.3f (1 and 1 if symmetric normal)" % (lo.mean(), hi.mean()))
+    print("  (mean - p16)/sd mean %.3f, (p84 - mean)/sd mean %.3f (1 and 1 if symmetric normal)"
+          % (lo.mean(), hi.mean()))
     asy = np.array([(np.percentile(v, 84) - np.median(v)) / (np.median(v) - np.percentile(v, 16)) for v in L
                     if np.median(v) > np.percentile(v, 16)])
     print("  (p84 - median)/(median - p16): median over sets %.3f, geometric mean %.3f" % (np.median(asy),
@@ -101,6 +102,7 @@ for key, name in names.items():
     print("  the same on ln(value): pooled skew %+.3f" % stats.skew(lz))
     tr = {(0, 0): truth, (1, 0): np.full(6, tau), (1, 1): sig}[key]
     fv = np.array(fitted[key]) / np.resize(tr, len(fitted[key]))  # one set per channel, ax..gz, per log
-    print("  fitted values / truth over the logs and channels (the estimator's own spread): mean %.4g median %.4g p16 %.4g p84 %.4g "
+    print("  fitted values / truth over the logs and channels (the estimator's own spread): "
+          "mean %.4g median %.4g p16 %.4g p84 %.4g "
           "sd %.4g skew %+.3f" % (fv.mean(), np.median(fv), np.percentile(fv, 16), np.percentile(fv, 84),
                                    fv.std(ddof=1), stats.skew(fv)))
