@@ -286,6 +286,11 @@ typedef struct {
     int se_allan[SG_MAX_PAR]; /**< se[k] is the Allan fit's Gauss-Newton value, which treats the
                                    overlapping Allan points as independent (too small); the twins'
                                    refits replace it (sg_se_from_refits) */
+    int nrefit[SG_MAX_PAR];   /**< the number of twins' refits se[k] is the standard deviation of
+                                   (sg_se_from_refits); 0: se[k] is not from refits */
+    double ci_lo[SG_MAX_PAR], ci_hi[SG_MAX_PAR]; /**< the 16th and 84th percentiles of those refits
+                                   (sg_quantile_sorted), the 68 % of them in between; NaN with fewer
+                                   than SG_CI_MIN_REFITS. Reporting only, as se */
     double lo[SG_MAX_PAR], hi[SG_MAX_PAR]; /**< the interval the fit searched the parameter in (its
                                    unit; lo = hi = 0: not searched within bounds): the thermal tau_s,
                                    an rrw's or a flicker's magnitude refined by likelihood */
@@ -314,13 +319,28 @@ typedef struct {
     sg_effect_t e[SG_MAX_EFF];
 } sg_chmodel_t;
 
+/** The fewest refits a 68 % percentile interval is given from: the 16th
+ *  percentile of n values lies at order statistic 1 + 0.16 (n - 1) (the
+ *  84th symmetrically), beyond the second smallest (largest) only from
+ *  n = 8 (1 + 0.16 x 7 = 2.12); with fewer, an end is mostly the single
+ *  extreme refit. */
+#define SG_CI_MIN_REFITS 8
+
+/** The q quantile (0 <= q <= 1) of n values sorted ascending, numpy's
+ *  default definition (numpy.percentile's "linear", Hyndman and Fan's
+ *  type 7): h = (n - 1) q, x[floor h] + (h - floor h)(x[floor h + 1] -
+ *  x[floor h]). NaN when n < 1. */
+double sg_quantile_sorted(const double *x, int n, double q);
+
 /** Standard errors of the Allan fit's parameters from the twins' refits
  *  (a parametric bootstrap: docs/simgap.md, section 3): every parameter of
  *  m whose se the Allan fit gave (se_allan) gets the sample standard
  *  deviation of the same parameter over fits[s] with ok[s] (S refits of
  *  the same model on twins simulated from m), and its se_allan cleared; an
  *  effect's other parameters (the AR(1) time) count only the refits whose
- *  magnitude is not zero; fewer than 3 values leave se NaN. Other
+ *  magnitude is not zero; fewer than 3 values leave se NaN. Beside
+ *  each such se: the number of refits (nrefit) and their 16th and 84th
+ *  percentiles (ci_lo, ci_hi; from SG_CI_MIN_REFITS values, else NaN). Other
  *  standard errors (a drift's, a likelihood's) and NaN ones stay as they
  *  are. Reporting only: no decision reads se. */
 void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok, int S);

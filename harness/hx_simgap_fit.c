@@ -673,7 +673,7 @@ static void set_effect(sg_effect_t *e, int id)
     memset(e, 0, sizeof *e);
     e->id = id;
     for (k = 0; k < SG_MAX_PAR; k++) {
-        e->se[k] = (double)NAN;
+        e->se[k] = e->ci_lo[k] = e->ci_hi[k] = (double)NAN;
         if (info != NULL && k < info->nparams) {
             e->p[k] = (double)fnav_imuerr_param_get(&d, (fnav_effect_id_t)id, k, 0);
         }
@@ -762,6 +762,44 @@ static int refit_value(const sg_chmodel_t *fits, const int *ok, int s, int id, i
     return isfinite(*v);
 }
 
+double sg_quantile_sorted(const double *x, int n, double q)
+{
+    double h;
+    int j;
+    if (n < 1) {
+        return (double)NAN;
+    }
+    h = (double)(n - 1) * (q < 0.0 ? 0.0 : (q > 1.0 ? 1.0 : q));
+    j = (int)floor(h);
+    if (j >= n - 1) {
+        return x[n - 1];
+    }
+    return x[j] + (h - (double)j) * (x[j + 1] - x[j]);
+}
+
+/* The 16th and 84th percentiles of parameter k of effect id over the
+ * refits (the c values refit_value counts) in e's ci_lo, ci_hi: NaN with
+ * fewer than SG_CI_MIN_REFITS, or without memory for them. */
+static void ci_from_refits(sg_effect_t *e, int k, int mp, const sg_chmodel_t *fits, const int *ok, int S, int c)
+{
+    double *x = c >= SG_CI_MIN_REFITS ? (double *)malloc((size_t)c * sizeof *x) : NULL;
+    double v;
+    int s, n = 0;
+    e->ci_lo[k] = e->ci_hi[k] = (double)NAN;
+    if (x == NULL) {
+        return;
+    }
+    for (s = 0; s < S && n < c; s++) {
+        if (refit_value(fits, ok, s, e->id, k, mp, &v)) {
+            x[n++] = v;
+        }
+    }
+    qsort(x, (size_t)n, sizeof *x, hx_cmp_double);
+    e->ci_lo[k] = sg_quantile_sorted(x, n, 0.16);
+    e->ci_hi[k] = sg_quantile_sorted(x, n, 0.84);
+    free(x);
+}
+
 void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok, int S)
 {
     int i, k, s;
@@ -775,6 +813,8 @@ void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok,
                 continue;
             }
             e->se_allan[k] = 0;
+            e->nrefit[k] = 0;
+            e->ci_lo[k] = e->ci_hi[k] = (double)NAN;
             if (!isfinite(e->se[k])) {
                 continue; /* null stays null */
             }
@@ -795,6 +835,8 @@ void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok,
                 }
             }
             e->se[k] = sqrt(sum2 / (double)(c - 1));
+            e->nrefit[k] = c;
+            ci_from_refits(e, k, mp, fits, ok, S, c);
         }
     }
 }
@@ -944,6 +986,7 @@ static int time_fit(const sg_table_t *t, sg_chmodel_t *m, int it, int ir)
         e->p[2] = bT;
         e->se[0] = sqrt(cov[0][0] * disp) / fabs(rise);
         e->se_allan[0] = 0;
+        e->nrefit[0] = 0; /* its own se: no refits' interval */
         /* the time constant's search interval and whether the fit left it
          * on a bound: a drift still rising as a ramp at the segment's end
          * puts it at the longest (only a lower limit), a step at the start
@@ -958,6 +1001,7 @@ static int time_fit(const sg_table_t *t, sg_chmodel_t *m, int it, int ir)
         e->p[0] = c[th ? 1 : 0];
         e->se[0] = sqrt(cov[th ? 1 : 0][th ? 1 : 0] * disp);
         e->se_allan[0] = 0;
+        e->nrefit[0] = 0;
     }
     return 0;
 }
@@ -1723,6 +1767,7 @@ int sg_rrw_ml(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_
         m->e[ik].p[0] = exp(lk);
         m->e[ik].se[0] = curv > 0.0 ? m->e[ik].p[0] * sqrt(2.0 / curv) : (double)NAN;
         m->e[ik].se_allan[0] = 0;
+        m->e[ik].nrefit[0] = 0; /* the likelihood's se: no refits' interval */
         /* within a factor 8 of the Allan fit's K: at either end the
          * likelihood's optimum lies beyond it (reported, not moved) */
         m->e[ik].at_bound[0] = sg_param_at_bound(m->e[ik].p[0], m->e[ik].lo[0], m->e[ik].hi[0]);
@@ -1964,6 +2009,7 @@ int sg_bm_fit(const double *x, const sg_segs_t *segs, int g, double rate_hz, sg_
     curv = (qp + qm - 2.0 * q) / (h * h);
     m->e[ik].se[mp] = curv > 0.0 ? c * sqrt(2.0 / curv) : (double)NAN;
     m->e[ik].se_allan[mp] = 0;
+    m->e[ik].nrefit[mp] = 0; /* the likelihood's se: no refits' interval */
     /* the golden section stops 5e-3 wide in ln magnitude: within that of
      * an end of the factor-30 interval the optimum lies at or beyond it */
     m->e[ik].at_bound[mp] = log(c / m->e[ik].lo[mp]) <= 5e-3 ? -1 : (log(m->e[ik].hi[mp] / c) <= 5e-3 ? 1 : 0);

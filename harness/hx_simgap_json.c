@@ -21,7 +21,37 @@ static void add_num(cJSON *o, const char *k, double v)
     }
 }
 
-/* {"name": value, ...} of an effect's parameters, and their standard errors. */
+/* The refits' 68 % interval of parameter k of e, [ci_lo, ci_hi], and the
+ * number of refits it and the se rest on, into *ci and *n (null items
+ * where there are none): none where the se is not written (no_se: an
+ * AR(1) time without a sigma, a parameter at a bound), not finite, or not
+ * from refits; the interval from SG_CI_MIN_REFITS refits (docs/simgap.md,
+ * section 3). */
+static void ci_items(const sg_effect_t *e, int k, int no_se, cJSON **ci, cJSON **n)
+{
+    const int c = no_se || !isfinite(e->se[k]) ? 0 : e->nrefit[k];
+    *n = c > 0 ? cJSON_CreateNumber((double)c) : cJSON_CreateNull();
+    if (c >= SG_CI_MIN_REFITS && isfinite(e->ci_lo[k]) && isfinite(e->ci_hi[k])) {
+        *ci = cJSON_CreateArray();
+        cJSON_AddItemToArray(*ci, cJSON_CreateNumber(e->ci_lo[k]));
+        cJSON_AddItemToArray(*ci, cJSON_CreateNumber(e->ci_hi[k]));
+    } else {
+        *ci = cJSON_CreateNull();
+    }
+}
+
+/* The baseline's KEY_ci68 and KEY_refits of parameter k of e. */
+static void add_ci(cJSON *o, const char *key, const sg_effect_t *e, int k, int no_se)
+{
+    char b[64];
+    cJSON *ci, *n;
+    ci_items(e, k, no_se, &ci, &n);
+    snprintf(b, sizeof b, "%s_ci68", key);
+    cJSON_AddItemToObject(o, b, ci);
+    snprintf(b, sizeof b, "%s_refits", key);
+    cJSON_AddItemToObject(o, b, n);
+}
+
 /* One place where the gap is significant. */
 static cJSON *loc_json(const sg_loc_t *L)
 {
@@ -41,11 +71,13 @@ static cJSON *loc_json(const sg_loc_t *L)
     return lo;
 }
 
+/* {"name": value, ...} of an effect's parameters, their standard errors, the
+ * refits' 68 % intervals and the number of refits. */
 static cJSON *effect_json(const sg_effect_t *e, int ch)
 {
     const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)e->id);
     cJSON *o = cJSON_CreateObject(), *p = cJSON_CreateObject(), *se = cJSON_CreateObject(), *u = cJSON_CreateObject();
-    cJSON *bd = cJSON_CreateObject();
+    cJSON *bd = cJSON_CreateObject(), *ci = cJSON_CreateObject(), *nr = cJSON_CreateObject();
     int k;
     cJSON_AddStringToObject(o, "effect", info != NULL ? info->name : "?");
     for (k = 0; info != NULL && k < info->nparams && k < SG_MAX_PAR; k++) {
@@ -58,6 +90,12 @@ static cJSON *effect_json(const sg_effect_t *e, int ch)
          * curvature at a constraint is none), as the AR(1) time at its
          * bounds (the sgap review) */
         add_num(se, info->params[k].name, void_tau || e->at_bound[k] != 0 ? (double)NAN : e->se[k]);
+        {
+            cJSON *c, *n;
+            ci_items(e, k, void_tau || e->at_bound[k] != 0, &c, &n);
+            cJSON_AddItemToObject(ci, info->params[k].name, c);
+            cJSON_AddItemToObject(nr, info->params[k].name, n);
+        }
         if (e->lo[k] > 0.0 && e->hi[k] > e->lo[k]) {
             cJSON *b = cJSON_AddObjectToObject(bd, info->params[k].name);
             add_num(b, "lo", e->lo[k]);
@@ -80,6 +118,8 @@ static cJSON *effect_json(const sg_effect_t *e, int ch)
     cJSON_AddItemToObject(o, "se", se);
     cJSON_AddItemToObject(o, "units", u);
     cJSON_AddItemToObject(o, "bounds", bd);
+    cJSON_AddItemToObject(o, "ci68", ci);
+    cJSON_AddItemToObject(o, "refits", nr);
     return o;
 }
 
@@ -147,15 +187,18 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
     if (iw >= 0) {
         add_num(b, "white_density", c->baseline.e[iw].p[0]);
         add_num(b, "white_density_se", c->baseline.e[iw].se[0]);
+        add_ci(b, "white_density", &c->baseline.e[iw], 0, 0);
     }
     if (ia >= 0) {
         add_num(b, "ar1_sigma", c->baseline.e[ia].p[1]);
         add_num(b, "ar1_sigma_se", c->baseline.e[ia].se[1]);
+        add_ci(b, "ar1_sigma", &c->baseline.e[ia], 1, 0);
         add_num(b, "ar1_tau_s", c->baseline.e[ia].p[1] > 0.0 ? c->baseline.e[ia].p[0] : (double)NAN);
         /* a time at either bound of its search is no fit and has no
          * standard error (the curvature at a constraint is none); the
          * shortest bound was not flagged (the sgfit review) */
         add_num(b, "ar1_tau_s_se", tau_bound ? (double)NAN : c->baseline.e[ia].se[0]);
+        add_ci(b, "ar1_tau_s", &c->baseline.e[ia], 0, tau_bound || !(c->baseline.e[ia].p[1] > 0.0));
         add_num(b, "ar1_tau_min_s", sg_ar1_tau_min(r->rate_hz));
         cJSON_AddBoolToObject(b, "ar1_tau_at_min", sg_ar1_at_min(c, r->rate_hz));
         add_num(b, "ar1_tau_max_s", c->ar1_tau_max_s);

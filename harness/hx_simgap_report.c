@@ -50,6 +50,45 @@ static const char *limit_text(const sg_effect_t *e, int k)
     return e->at_bound[k] < 0 ? "only an upper limit" : "only a lower limit";
 }
 
+/* Whether parameter k of e has the refits' 68 % interval (as the JSON's
+ * ci68: an se from SG_CI_MIN_REFITS refits or more). */
+static int has_ci(const sg_effect_t *e, int k)
+{
+    return isfinite(e->se[k]) && e->nrefit[k] >= SG_CI_MIN_REFITS && isfinite(e->ci_lo[k]) && isfinite(e->ci_hi[k]);
+}
+
+/* The line under a channel's baseline: where the middle 68 % of the twins'
+ * refits of each baseline parameter lie (docs/simgap.md, section 3), with
+ * how many refits; nothing when no parameter has an interval. no_tau: the
+ * time has none (no AR(1), or at a bound of its search). */
+static void print_ci(FILE *f, int ch, const sg_effect_t *w, const sg_effect_t *a, int no_tau)
+{
+    const char *u = sg_channel_unit(ch);
+    const int hw = has_ci(w, 0), hs = has_ci(a, 1), ht = !no_tau && has_ci(a, 0);
+    int n = 0;
+    if (!hw && !hs && !ht) {
+        return;
+    }
+    n = hw ? w->nrefit[0] : (hs ? a->nrefit[1] : a->nrefit[0]);
+    fprintf(f, "      68 %% of the twins' %d refits:", n);
+    if (hw) {
+        fprintf(f, " white %.3g-%.3g %s/sqrt(Hz)", w->ci_lo[0], w->ci_hi[0], u);
+    }
+    if (hs) {
+        fprintf(f, "%s sigma %.3g-%.3g %s", hw ? "," : "", a->ci_lo[1], a->ci_hi[1], u);
+        if (a->nrefit[1] != n) {
+            fprintf(f, " (of %d)", a->nrefit[1]);
+        }
+    }
+    if (ht) {
+        fprintf(f, "%s tau %.3g-%.3g s", hw || hs ? "," : "", a->ci_lo[0], a->ci_hi[0]);
+        if (a->nrefit[0] != n) {
+            fprintf(f, " (of %d with an AR(1))", a->nrefit[0]);
+        }
+    }
+    fprintf(f, "\n");
+}
+
 void sg_effect_text(char *b, size_t n, int ch, const sg_effect_t *e)
 {
     char u[96], u2[96];
@@ -163,6 +202,8 @@ static void print_static(FILE *f, const sg_result_t *r)
         fprintf(f, "  %s  %s, %s%s\n", sg_channel_name(ch), w, a,
                 sg_ar1_at_max(c) ? ", tau at the longest this log resolves"
                                  : (sg_ar1_at_min(c, r->rate_hz) ? ", tau at the shortest the fit may take" : ""));
+        print_ci(f, ch, &c->baseline.e[iw], &c->baseline.e[ia],
+                 sg_ar1_at_max(c) || sg_ar1_at_min(c, r->rate_hz) || !(c->baseline.e[ia].p[1] > 0.0));
     }
     if (at_max > 0) {
         /* a bias correlated longer than the record can show looks like a

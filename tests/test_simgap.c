@@ -1946,6 +1946,96 @@ static void test_se_from_refits(void **state)
     assert_true(isnan(m.e[1].se[0]));
 }
 
+static int cmp_dbl(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The refits' percentiles (sg_quantile_sorted) are numpy's default
+ * definition, linear interpolation between the order statistics; the
+ * values from numpy.percentile (scripts/simgap_ci_ref.py). 16 values as
+ * S = 16 twins' refits, the 8 simgap gives an interval from at the
+ * fewest, and one value. */
+static void test_refit_quantile(void **state)
+{
+    double x16[16] = { 0.61, 0.47, 0.52, 0.95, 0.44, 0.58, 0.50, 0.49, 0.71, 0.55, 0.46, 0.53, 0.66, 0.48, 0.57, 0.51 };
+    double x8[8] = { 3.0, 1.0, 4.0, 1.5, 9.0, 2.6, 5.0, 3.5 };
+    const double x1[1] = { 2.5 };
+    (void)state;
+    qsort(x16, 16, sizeof x16[0], cmp_dbl);
+    qsort(x8, 8, sizeof x8[0], cmp_dbl);
+    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x16, 16, 0.0), 0.44, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x16, 16, 0.16), 0.47399999999999998, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x16, 16, 0.5), 0.52500000000000002, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x16, 16, 0.84), 0.64000000000000001, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x16, 16, 1.0), 0.95, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x8, 8, 0.0), 1.0, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x8, 8, 0.16), 1.6320000000000001, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x8, 8, 0.5), 3.25, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x8, 8, 0.84), 4.8799999999999999, 0.0, 1e-15);
+    FNAV_ASSERT_CLOSE(sg_quantile_sorted(x8, 8, 1.0), 9.0, 0.0, 1e-15);
+    assert_true(sg_quantile_sorted(x1, 1, 0.16) == 2.5 && sg_quantile_sorted(x1, 1, 0.84) == 2.5);
+    assert_true(isnan(sg_quantile_sorted(x1, 0, 0.5)));
+}
+
+/* The refits' 68 % interval (16th and 84th percentiles) beside their sd:
+ * over the same refits the se counts (a failed refit not; the AR(1) time
+ * only where the refit kept an AR(1)), numpy's values
+ * (scripts/simgap_ci_ref.py), the number of refits it rests on, the
+ * refits' median inside it by construction, and none below
+ * SG_CI_MIN_REFITS refits (the se is still given). */
+static void test_ci_from_refits(void **state)
+{
+    enum { S = 11 };
+    const double sv[S] = { 0.5, 0.4, 0.7, 0.6, 0.45, 0.0, 0.55, 0.9, 0.52, 0.48, 0.3 },
+                 tv[S] = { 2.0, 1.0, 4.0, 3.0, 1.6, 5.0, 2.2, 8.0, 2.9, 1.2, 9.0 };
+    const int ok[S] = { 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 0 };
+    sg_chmodel_t m, fits[S];
+    sg_effect_t e;
+    int s;
+    (void)state;
+    memset(&m, 0, sizeof m);
+    memset(&e, 0, sizeof e);
+    e.id = FNAV_EFFECT_AR1;
+    e.p[0] = 2.5;
+    e.p[1] = 0.5;
+    e.se[0] = 0.02;
+    e.se[1] = 0.03;
+    e.se_allan[0] = e.se_allan[1] = 1;
+    assert_int_equal(sg_model_set(&m, &e), 0);
+    for (s = 0; s < S; s++) {
+        fits[s] = m;
+        fits[s].e[0].p[1] = sv[s];
+        fits[s].e[0].p[0] = tv[s];
+    }
+    sg_se_from_refits(&m, fits, ok, S);
+    /* sigma over the 10 refits (one of them 0, the eleventh failed) */
+    assert_int_equal(m.e[0].nrefit[1], 10);
+    FNAV_ASSERT_CLOSE(m.e[0].se[1], 0.22968577569269619, 0.0, 1e-12);
+    FNAV_ASSERT_CLOSE(m.e[0].ci_lo[1], 0.42200000000000004, 0.0, 1e-12);
+    FNAV_ASSERT_CLOSE(m.e[0].ci_hi[1], 0.65599999999999992, 0.0, 1e-12);
+    assert_true(m.e[0].ci_lo[1] <= 0.51 && 0.51 <= m.e[0].ci_hi[1]); /* the median */
+    /* tau over the 9 with sigma > 0 */
+    assert_int_equal(m.e[0].nrefit[0], 9);
+    FNAV_ASSERT_CLOSE(m.e[0].se[0], 2.1422988690760318, 0.0, 1e-12);
+    FNAV_ASSERT_CLOSE(m.e[0].ci_lo[0], 1.3120000000000001, 0.0, 1e-12);
+    FNAV_ASSERT_CLOSE(m.e[0].ci_hi[0], 3.7199999999999998, 0.0, 1e-12);
+    assert_true(m.e[0].ci_lo[0] <= 2.2 && 2.2 <= m.e[0].ci_hi[0]);
+    /* two more refits without an AR(1): 7 times, an se but no interval */
+    m.e[0].se_allan[0] = m.e[0].se_allan[1] = 1;
+    m.e[0].se[0] = m.e[0].se[1] = 0.02;
+    fits[0].e[0].p[1] = 0.0;
+    fits[1].e[0].p[1] = 0.0;
+    sg_se_from_refits(&m, fits, ok, S);
+    assert_int_equal(SG_CI_MIN_REFITS, 8);
+    assert_int_equal(m.e[0].nrefit[0], 7);
+    assert_true(isfinite(m.e[0].se[0]));
+    assert_true(isnan(m.e[0].ci_lo[0]) && isnan(m.e[0].ci_hi[0]));
+    assert_int_equal(m.e[0].nrefit[1], 10);
+    assert_true(isfinite(m.e[0].ci_lo[1]) && m.e[0].ci_lo[1] <= m.e[0].ci_hi[1]);
+}
+
 /* On pure white noise the white density's standard error is not below the
  * Cramer-Rao bound. Derivation: n fit samples x_i ~ N(0, s2), s2 = N^2 f_s
  * (N the density, u/sqrt(Hz)); the Fisher information of s2 is
@@ -2482,6 +2572,76 @@ static void test_json_effects_leave_out_refitted_to_zero(void **state)
     free(r);
 }
 
+/* The refits' 68 % interval in the JSON, additive beside se: the
+ * baseline's `*_ci68` [lo, hi] and `*_refits`, an effect's `ci68` and
+ * `refits` keyed by its parameters. An interval only from
+ * SG_CI_MIN_REFITS refits (fewer: null, the count and se still given); a
+ * time without an AR(1) (sigma 0) or at a bound of its search has none, as
+ * it has no se. */
+static void test_json_ci68(void **state)
+{
+    sg_result_t *r = hand_result();
+    sg_chres_t *c = &r->ch[0];
+    cJSON *j, *ch, *b, *fm, *w = NULL, *a = NULL, *lo;
+    int i;
+    (void)state;
+    c->baseline.e[0].se[0] = 1e-5;
+    c->baseline.e[0].nrefit[0] = 16;
+    c->baseline.e[0].ci_lo[0] = 0.0029;
+    c->baseline.e[0].ci_hi[0] = 0.0031;
+    c->baseline.e[1].se[0] = 0.1; /* tau: sigma is 0, no time */
+    c->baseline.e[1].nrefit[0] = 16;
+    c->baseline.e[1].ci_lo[0] = 0.8;
+    c->baseline.e[1].ci_hi[0] = 1.2;
+    c->baseline.e[1].se[1] = 1e-4; /* sigma: 5 refits, an se, no interval */
+    c->baseline.e[1].nrefit[1] = 5;
+    c->baseline.e[1].ci_lo[1] = c->baseline.e[1].ci_hi[1] = (double)NAN;
+    for (i = 0; i < 2; i++) {
+        c->final.e[i] = c->baseline.e[i];
+    }
+    j = json_of(r);
+    ch = cJSON_GetArrayItem(cJSON_GetObjectItem(j, "channels"), 0);
+    b = cJSON_GetObjectItem(ch, "baseline");
+    lo = cJSON_GetObjectItem(b, "white_density_ci68");
+    assert_int_equal(cJSON_GetArraySize(lo), 2);
+    assert_true(cJSON_GetArrayItem(lo, 0)->valuedouble == 0.0029 && cJSON_GetArrayItem(lo, 1)->valuedouble == 0.0031);
+    assert_int_equal(cJSON_GetObjectItem(b, "white_density_refits")->valueint, 16);
+    assert_true(cJSON_GetObjectItem(b, "white_density_se")->valuedouble == 1e-5); /* as before */
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(b, "ar1_sigma_ci68")));
+    assert_int_equal(cJSON_GetObjectItem(b, "ar1_sigma_refits")->valueint, 5);
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(b, "ar1_tau_s_ci68")));
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(b, "ar1_tau_s_refits")));
+    fm = cJSON_GetObjectItem(cJSON_GetObjectItem(ch, "attribution"), "final_model");
+    for (i = 0; i < cJSON_GetArraySize(fm); i++) {
+        cJSON *e = cJSON_GetArrayItem(fm, i);
+        const char *name = cJSON_GetObjectItem(e, "effect")->valuestring;
+        if (strcmp(name, "white") == 0) {
+            w = e;
+        } else if (strcmp(name, "ar1") == 0) {
+            a = e;
+        } else {
+            /* not from refits here: each parameter null, no interval */
+            cJSON *p;
+            cJSON_ArrayForEach(p, cJSON_GetObjectItem(e, "ci68")) {
+                assert_true(cJSON_IsNull(p));
+            }
+            cJSON_ArrayForEach(p, cJSON_GetObjectItem(e, "refits")) {
+                assert_true(cJSON_IsNull(p));
+            }
+        }
+    }
+    assert_true(w != NULL && a != NULL);
+    lo = cJSON_GetObjectItem(cJSON_GetObjectItem(w, "ci68"), "density");
+    assert_int_equal(cJSON_GetArraySize(lo), 2);
+    assert_true(cJSON_GetArrayItem(lo, 0)->valuedouble <= cJSON_GetArrayItem(lo, 1)->valuedouble);
+    assert_int_equal(cJSON_GetObjectItem(cJSON_GetObjectItem(w, "refits"), "density")->valueint, 16);
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(cJSON_GetObjectItem(a, "ci68"), "tau_s")));
+    assert_true(cJSON_IsNull(cJSON_GetObjectItem(cJSON_GetObjectItem(a, "ci68"), "sigma")));
+    assert_int_equal(cJSON_GetObjectItem(cJSON_GetObjectItem(a, "refits"), "sigma")->valueint, 5);
+    cJSON_Delete(j);
+    free(r);
+}
+
 /* An AR(1) of sigma 0 is no bias process: its tau means nothing and is
  * null wherever the JSON gives it, as the baseline's ar1_tau_s and the
  * summary's "ar1 (none: sigma 0)" say. Until 2026-11-29 final_model[] gave
@@ -2638,6 +2798,91 @@ static char *summary_of(const sg_result_t *r)
     assert_int_equal(fclose(f), 0);
     assert_non_null(buf);
     return buf;
+}
+
+/* End to end on a simulated log of white noise plus an AR(1) (300 s at
+ * 100 Hz, T 0.5 s, as scripts/simgap_se_check.py --ar1): every analysed
+ * channel's baseline gives its refits' 68 % interval beside the se, which
+ * stays as it was (the JSON's se is the model's), from at least
+ * SG_CI_MIN_REFITS and at most S refits, lo <= hi; the time's from no more
+ * refits than the white density's (only those that keep an AR(1)); and the
+ * summary prints it under the channel's baseline line. */
+static void test_ci68_diagnosed(void **state)
+{
+    enum { N = 30000 };
+    const double fs = 100.0, dens[SG_NCH] = { 1e-3, 1e-3, 1e-3, 5e-4, 5e-4, 5e-4 },
+                 sig[SG_NCH] = { 2e-3, 2e-3, 2e-3, 1e-3, 1e-3, 1e-3 }, phi = exp(-1.0 / (fs * 0.5));
+    hx_log_t lg;
+    sg_opts_t o = sg_opts_default();
+    sg_result_t *r = calloc(1, sizeof *r);
+    fnav_rng_t rng;
+    char err[256], *txt;
+    double b[SG_NCH] = { 0.0 };
+    cJSON *j;
+    int ch, ntau = 0;
+    long k;
+    (void)state;
+    assert_non_null(r);
+    memset(&lg, 0, sizeof lg);
+    lg.n = N;
+    lg.t_ns = malloc(N * sizeof *lg.t_ns);
+    lg.acc = malloc(N * sizeof *lg.acc);
+    lg.gyr = malloc(N * sizeof *lg.gyr);
+    assert_true(lg.t_ns != NULL && lg.acc != NULL && lg.gyr != NULL);
+    lg.meta.rate_hz = fs;
+    lg.meta.rate_nominal = 1;
+    lg.status = FNAV_END;
+    fnav_rng_seed(&rng, 23u, 7u);
+    for (k = 0; k < N; k++) {
+        lg.t_ns[k] = k * 10000000LL;
+        for (ch = 0; ch < SG_NCH; ch++) {
+            double x;
+            b[ch] = phi * b[ch] + sig[ch] * sqrt(1.0 - phi * phi) * (double)fnav_rng_gauss(&rng);
+            x = dens[ch] * sqrt(fs) * (double)fnav_rng_gauss(&rng) + b[ch];
+            if (ch < 3) {
+                lg.acc[k][ch] = x + (ch == 2 ? 9.81 : 0.0);
+            } else {
+                lg.gyr[k][ch - 3] = x;
+            }
+        }
+    }
+    o.quiet = 1;
+    o.domain = 1;
+    o.max_steps = 0;
+    assert_int_equal(sg_diagnose(&lg, "ar1", &o, r, err, sizeof err), 0);
+    j = json_of(r);
+    for (ch = 0; ch < SG_NCH; ch++) {
+        const sg_chmodel_t *m = &r->ch[ch].baseline;
+        const int iw = sg_model_find(m, FNAV_EFFECT_WHITE);
+        cJSON *bj = cJSON_GetObjectItem(cJSON_GetArrayItem(cJSON_GetObjectItem(j, "channels"), ch), "baseline");
+        cJSON *ci = cJSON_GetObjectItem(bj, "white_density_ci68"), *t = cJSON_GetObjectItem(bj, "ar1_tau_s_ci68");
+        const int n = cJSON_GetObjectItem(bj, "white_density_refits")->valueint;
+        assert_true(r->ch[ch].active && iw >= 0);
+        assert_true(n >= SG_CI_MIN_REFITS && n <= r->S);
+        assert_int_equal(cJSON_GetArraySize(ci), 2);
+        assert_true(cJSON_GetArrayItem(ci, 0)->valuedouble <= cJSON_GetArrayItem(ci, 1)->valuedouble);
+        /* cJSON's printing can move the last digit (one ulp) */
+        FNAV_ASSERT_CLOSE(cJSON_GetArrayItem(ci, 0)->valuedouble, m->e[iw].ci_lo[0], 0.0, 1e-15);
+        FNAV_ASSERT_CLOSE(cJSON_GetObjectItem(bj, "white_density_se")->valuedouble, m->e[iw].se[0], 0.0, 1e-15);
+        if (cJSON_IsArray(t)) {
+            const int nt = cJSON_GetObjectItem(bj, "ar1_tau_s_refits")->valueint;
+            assert_true(nt >= SG_CI_MIN_REFITS && nt <= n);
+            assert_true(cJSON_GetArrayItem(t, 0)->valuedouble <= cJSON_GetArrayItem(t, 1)->valuedouble);
+            assert_true(cJSON_IsNumber(cJSON_GetObjectItem(bj, "ar1_tau_s_se")));
+            ntau++;
+        }
+    }
+    print_message("channels with the AR(1) time's interval: %d of 6\n", ntau);
+    assert_true(ntau >= 3);
+    txt = summary_of(r);
+    assert_non_null(strstr(txt, "      68 % of the twins' "));
+    free(txt);
+    cJSON_Delete(j);
+    sg_result_free(r);
+    free(r);
+    free(lg.t_ns);
+    free(lg.acc);
+    free(lg.gyr);
 }
 
 /* The verdict's explained fraction of an effect accepted at a later step is
@@ -3212,12 +3457,16 @@ int main(void)
         cmocka_unit_test(test_rrw_ml),
         cmocka_unit_test(test_rrw_ml_calibration),
         cmocka_unit_test(test_se_from_refits),
+        cmocka_unit_test(test_refit_quantile),
+        cmocka_unit_test(test_ci_from_refits),
         cmocka_unit_test(test_white_se_cramer_rao),
         cmocka_unit_test(test_toeplitz_nll2),
         cmocka_unit_test(test_bm_fit),
         cmocka_unit_test(test_prune_zero),
         cmocka_unit_test(test_json_effects_leave_out_refitted_to_zero),
         cmocka_unit_test(test_json_ar1_tau_null_without_sigma),
+        cmocka_unit_test(test_json_ci68),
+        cmocka_unit_test(test_ci68_diagnosed),
         cmocka_unit_test(test_json_cmp_point_baseline_keys),
         cmocka_unit_test(test_fit_explained_undefined_without_excess),
         cmocka_unit_test(test_summary_later_step_fraction_of_what_is_left),
