@@ -72,16 +72,16 @@ static void print_ci(FILE *f, int ch, const sg_effect_t *w, const sg_effect_t *a
     n = hw ? w->nrefit[0] : (hs ? a->nrefit[1] : a->nrefit[0]);
     fprintf(f, "      68 %% of the twins' %d refits:", n);
     if (hw) {
-        fprintf(f, " white %.3g-%.3g %s/sqrt(Hz)", w->ci_lo[0], w->ci_hi[0], u);
+        fprintf(f, " white %.3g to %.3g %s/sqrt(Hz)", w->ci_lo[0], w->ci_hi[0], u);
     }
     if (hs) {
-        fprintf(f, "%s sigma %.3g-%.3g %s", hw ? "," : "", a->ci_lo[1], a->ci_hi[1], u);
+        fprintf(f, "%s sigma %.3g to %.3g %s", hw ? "," : "", a->ci_lo[1], a->ci_hi[1], u);
         if (a->nrefit[1] != n) {
             fprintf(f, " (of %d)", a->nrefit[1]);
         }
     }
     if (ht) {
-        fprintf(f, "%s tau %.3g-%.3g s", hw || hs ? "," : "", a->ci_lo[0], a->ci_hi[0]);
+        fprintf(f, "%s tau %.3g to %.3g s", hw || hs ? "," : "", a->ci_lo[0], a->ci_hi[0]);
         if (a->nrefit[0] != n) {
             fprintf(f, " (of %d with an AR(1))", a->nrefit[0]);
         }
