@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The end speed of tests/test_axes.c's analytic walk under the axes check's
-integration, with the recorded map and the nearest rival map, in float64, independent of the C code (test_recorded_map_right,
-test_nearest_rival, test_flipped_and_swapped, test_cyclic_map).
+integration, with the recorded map and the nearest rival map, in float64,
+independent of the C code (test_recorded_map_right, test_nearest_rival,
+test_flipped_and_swapped, test_cyclic_map, test_frames_behind_the_ring).
 
 The walk (walk_about): 400 Hz, stance 0.4 s, swing 0.5 s turning in place
 about the fixed body axis u = (cos phi cos beta, sin phi cos beta, sin beta)
