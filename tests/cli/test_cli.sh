@@ -128,12 +128,32 @@ expect_exit 2 "simgap-validate --mag-range 0x1,10 refused" "$H" simgap-validate 
 expect_err "--mag-range '0x1,10'" "--mag-range 0x1,10: the error names the option"
 expect_exit 2 "simgap-validate --mag-range '1, 10' refused" "$H" simgap-validate --mag-range "1, 10" --cases 1 --only 1
 expect_err "--mag-range '1, 10'" "--mag-range '1, 10': the error names the option"
-# what stays accepted: signs, a point, an exponent, -0 where 0 is allowed
+# what stays accepted: signs, a point, an exponent, -0 where 0 is allowed;
+# and read as the value it spells: the output is the plain spelling's, which
+# differs from the option's default (the exit status alone passed a parser
+# that took "+1e2" as 1 or "1.5E5" as 1.5)
+same_as() { # WHAT FILE_A FILE_B DEFAULT_FILE
+    if cmp -s "$2" "$3" && ! cmp -s "$3" "$4"; then pass "$1: the plain spelling's output, not the default's"
+    else fail "$1: output differs from the plain spelling's, or the value had no effect"; fi
+}
+"$H" convert vectors/walk.bin "$T/c100.bin" --rate 100 >/dev/null 2>&1
+"$H" convert vectors/walk.bin "$T/c0.bin" >/dev/null 2>&1
 expect_exit 0 "convert --rate +1e2" "$H" convert vectors/walk.bin "$T/c.bin" --rate +1e2
+same_as "convert --rate +1e2" "$T/c.bin" "$T/c100.bin" "$T/c0.bin"
 expect_exit 0 "convert --rate 100." "$H" convert vectors/walk.bin "$T/c.bin" --rate 100.
+same_as "convert --rate 100." "$T/c.bin" "$T/c100.bin" "$T/c0.bin"
+"$H" sim --out "$T/m_plain.bin" --duration 0.5 --mount -1.5,0,2 --motion stand:0.5 >/dev/null 2>&1
+"$H" sim --out "$T/m_none.bin" --duration 0.5 --motion stand:0.5 >/dev/null 2>&1
 expect_exit 0 "sim --duration .5 --mount -1.5,0,2e0 --motion stand:0.5" "$H" sim --out "$S" --duration .5 --mount -1.5,0,2e0 --motion stand:0.5
-expect_exit 0 "--param gamma=1.5E5" "$H" replay vectors/walk.bin --quiet --param gamma=1.5E5
-expect_exit 0 "sim --ring-scale -0" "$H" sim --out "$S" --duration 1 --ring-scale -0
+same_as "sim --duration .5 --mount -1.5,0,2e0" "$S" "$T/m_plain.bin" "$T/m_none.bin"
+"$H" replay vectors/walk.bin --quiet --param gamma=150000 --out "$T/g_plain.csv" >/dev/null 2>&1
+"$H" replay vectors/walk.bin --quiet --out "$T/g_none.csv" >/dev/null 2>&1
+expect_exit 0 "--param gamma=1.5E5" "$H" replay vectors/walk.bin --quiet --param gamma=1.5E5 --out "$T/g.csv"
+same_as "--param gamma=1.5E5" "$T/g.csv" "$T/g_plain.csv" "$T/g_none.csv"
+"$H" sim --out "$T/r_plain.bin" --motion stand:1,walk:3,stand:1 --ring-scale 0 >/dev/null 2>&1
+"$H" sim --out "$T/r_none.bin" --motion stand:1,walk:3,stand:1 >/dev/null 2>&1
+expect_exit 0 "sim --ring-scale -0" "$H" sim --out "$S" --motion stand:1,walk:3,stand:1 --ring-scale -0
+same_as "sim --ring-scale -0" "$S" "$T/r_plain.bin" "$T/r_none.bin"
 
 # --- a range in an error is printed exactly: "--seed '4294967296' is not a
 # number in [0, 4.29497e+09]" read as if the value were inside it
