@@ -2037,11 +2037,27 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                 return FNAV_E_TIME;
             }
             {
-                int k, finite = 1, in_range = 1;
+                int k, finite = 1, in_range = 1, ug = -1;
                 for (k = 0; k < 3; k++) {
                     finite &= isfinite(rec.acc[k]) && isfinite(rec.gyr[k]);
                     in_range &= fabs((double)rec.acc[k]) <= FNAV_INPUT_MAX_ABS &&
                                 fabs((double)rec.gyr[k]) <= FNAV_INPUT_MAX_ABS;
+                }
+                /* an accelerometer in ug written as m/s^2 reads 1e6 at 1 g:
+                 * the CSV reader asks "in ug?" with --units accel=ug, which
+                 * does not apply here (a .bin's units are fixed by its
+                 * header). Asked, with the remedy that does apply, when
+                 * every value beyond is an acceleration within 400 g once
+                 * read in ug, as the CSV reader's (until 2026-12-02 "no
+                 * sensor reads that" alone) */
+                for (k = 0; k < 3 && !in_range; k++) {
+                    const double a = fabs((double)rec.acc[k]);
+                    if (fabs((double)rec.gyr[k]) > FNAV_INPUT_MAX_ABS ||
+                        (a > FNAV_INPUT_MAX_ABS && a * HX_UG_MPS2 > 400.0 * HX_G_MPS2)) {
+                        ug = 3; /* not asked */
+                    } else if (a > FNAV_INPUT_MAX_ABS && ug < 0) {
+                        ug = k;
+                    }
                 }
                 /* a valid temperature too, as the CSV reader checks it (a
                  * NaN one was delivered and written into a CSV that the
@@ -2053,8 +2069,15 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                     return FNAV_E_NANINF;
                 }
                 if (!in_range) {
-                    set_err(r, "%s: record #%ld at byte %lld: a value beyond %g in SI units (no sensor reads that)",
-                            r->path, r->record_slot, r->offset, FNAV_INPUT_MAX_ABS);
+                    char give[200] = "";
+                    if (ug >= 0 && ug < 3) {
+                        snprintf(give, sizeof give,
+                                 "; a%c is %g: in ug? 1 g is 1e6 ug, but a .bin holds m/s^2 (docs/log-format.md) and "
+                                 "--units does not apply to it: the program that wrote it must scale ug by 9.80665e-6",
+                                 "xyz"[ug], (double)rec.acc[ug]);
+                    }
+                    set_err(r, "%s: record #%ld at byte %lld: a value beyond %g in SI units (no sensor reads that%s)",
+                            r->path, r->record_slot, r->offset, FNAV_INPUT_MAX_ABS, give);
                     return FNAV_E_RANGE;
                 }
             }
