@@ -830,11 +830,30 @@ static char *skip_sep(char *p)
     return p;
 }
 
+/* A series' read error, or, while no number has been read and the file's
+ * first bytes are binary (@p binary, else NULL), the binary data named as
+ * the readers name it (a PNG given as a series said "plot.png:2: not a
+ * number", its first line taken for a header; 2026-12-02). */
+static void series_fail(run_t *R, const char *binary, const char *fmt, ...)
+{
+    va_list ap;
+    if (binary != NULL) {
+        input_fail(R, "%s", binary);
+        return;
+    }
+    va_start(ap, fmt);
+    vsnprintf(R->input_error, sizeof R->input_error, fmt, ap);
+    va_end(ap);
+    hx_error(CMD, "%s", R->input_error);
+}
+
 /* column: 0 for one number per line, else the 1-based column to take */
 static int read_series(run_t *R, const char *path, int phase, long column)
 {
     FILE *f = fopen(path, "r");
     char line[1024];
+    char head_msg[HX_ERR_SIZE];
+    const char *binary = NULL; /* the binary-data message until a number is read */
     long lineno = 0;
     /* blank lines after the first number: pending until a number follows
      * (those at the file's end stay silent), then counted in blanks */
@@ -845,6 +864,22 @@ static int read_series(run_t *R, const char *path, int phase, long column)
         hx_error(CMD, "%s: cannot open (%s)", path, strerror(errno));
         return -1;
     }
+    if (fseek(f, 0L, SEEK_CUR) == 0) {
+        /* its first bytes, as the log readers' (hx_head_not_text): UTF-16
+         * refused at once with its iconv remedy, binary data named if no
+         * number comes. A pipe, which cannot be read twice, is not looked
+         * at first */
+        unsigned char head[600];
+        const size_t got = fread(head, 1, sizeof head, f);
+        const hx_head_t kind = hx_head_not_text(path, head, got, 1, head_msg, sizeof head_msg);
+        rewind(f);
+        if (kind == HX_HEAD_UTF16) {
+            hx_error(CMD, "%s", head_msg);
+            fclose(f);
+            return -1;
+        }
+        binary = kind == HX_HEAD_BINARY ? head_msg : NULL;
+    }
     while (fgets(line, sizeof line, f) != NULL) {
         char *p = line, *end;
         double v;
@@ -852,8 +887,7 @@ static int read_series(run_t *R, const char *path, int phase, long column)
         lineno++;
         if (strchr(line, '\n') == NULL && !feof(f)) {
             /* a longer line would be read in pieces, each taken for a line */
-            input_fail(R, "%s:%ld: line longer than %d characters", path, lineno,
-                     (int)sizeof line - 2);
+            series_fail(R, binary, "%s:%ld: line longer than %d characters", path, lineno, (int)sizeof line - 2);
             rc = 1;
             break;
         }
@@ -884,9 +918,9 @@ static int read_series(run_t *R, const char *path, int phase, long column)
                 continue;
             }
             if (*p == '\0' || *p == '\n' || *p == '\r') {
-                input_fail(R, "%s:%ld: no column %ld", path, lineno, column);
+                series_fail(R, binary, "%s:%ld: no column %ld", path, lineno, column);
             } else {
-                input_fail(R, "%s:%ld: not a number", path, lineno);
+                series_fail(R, binary, "%s:%ld: not a number", path, lineno);
             }
             rc = 1;
             break;
@@ -895,16 +929,18 @@ static int read_series(run_t *R, const char *path, int phase, long column)
             end++;
         }
         if (column == 0 && *end != '\0') {
-            input_fail(R, "%s:%ld: expected one number per line (--column N takes one of several)", path, lineno);
+            series_fail(R, binary, "%s:%ld: expected one number per line (--column N takes one of several)", path,
+                        lineno);
             rc = 1;
             break;
         }
         if (!isfinite(v)) {
-            input_fail(R, "%s:%ld: not a finite number", path, lineno);
+            series_fail(R, binary, "%s:%ld: not a finite number", path, lineno);
             rc = 1;
             break;
         }
         data_lines = 1;
+        binary = NULL;
         if (phase) {
             if (have_prev) {
                 if (push_series(R, path, lineno, (v - prev) * R->rate_hz, &first, &have_first) != 0) {
@@ -943,7 +979,11 @@ static int read_series(run_t *R, const char *path, int phase, long column)
     }
     if (R->n == 0) {
         if (rc == 0) {
-            hx_error(CMD, "%s: no numbers", path);
+            if (binary != NULL) {
+                hx_error(CMD, "%s", binary);
+            } else {
+                hx_error(CMD, "%s: no numbers", path);
+            }
         }
         return -1;
     }

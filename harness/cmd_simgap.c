@@ -19,7 +19,8 @@ static const hx_opt_t k_opts[] = {
     { "--json", "FILE", "JSON report (schema in docs/simgap.md)", 0 },
     { "--plot", "DIR", "plots: Allan and PSD real vs twin before and after, innovations", 0 },
     { "--seeds", "N", "twins per model (default 16)", 0 },
-    { "--seed", "S", "first simulator seed (default 1)", 0 },
+    { "--seed", "S", "first simulator seed (default 1); seeds less than 12010 apart may share twins: take seeds "
+                     "20000 apart for independent repeats (docs/simgap.md, \"What --seed seeds\")", 0 },
     { "--fit-frac", "F", "fraction of the log in the fit segment (default 0.6; the rest is held out)", 0 },
     { "--contiguous", NULL, "static logs: fit on the first part (default: on both ends, held out the middle)", 0 },
     { "--alpha", "A", "family-wise false-alarm level of the gap tests (default 0.05)", 0 },

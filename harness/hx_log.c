@@ -2037,11 +2037,27 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                 return FNAV_E_TIME;
             }
             {
-                int k, finite = 1, in_range = 1;
+                int k, finite = 1, in_range = 1, ug = -1;
                 for (k = 0; k < 3; k++) {
                     finite &= isfinite(rec.acc[k]) && isfinite(rec.gyr[k]);
                     in_range &= fabs((double)rec.acc[k]) <= FNAV_INPUT_MAX_ABS &&
                                 fabs((double)rec.gyr[k]) <= FNAV_INPUT_MAX_ABS;
+                }
+                /* an accelerometer in ug written as m/s^2 reads 1e6 at 1 g:
+                 * the CSV reader asks "in ug?" with --units accel=ug, which
+                 * does not apply here (a .bin's units are fixed by its
+                 * header). Asked, with the remedy that does apply, when
+                 * every value beyond is an acceleration within 400 g once
+                 * read in ug, as the CSV reader's (until 2026-12-02 "no
+                 * sensor reads that" alone) */
+                for (k = 0; k < 3 && !in_range; k++) {
+                    const double a = fabs((double)rec.acc[k]);
+                    if (fabs((double)rec.gyr[k]) > FNAV_INPUT_MAX_ABS ||
+                        (a > FNAV_INPUT_MAX_ABS && a * HX_UG_MPS2 > 400.0 * HX_G_MPS2)) {
+                        ug = 3; /* not asked */
+                    } else if (a > FNAV_INPUT_MAX_ABS && ug < 0) {
+                        ug = k;
+                    }
                 }
                 /* a valid temperature too, as the CSV reader checks it (a
                  * NaN one was delivered and written into a CSV that the
@@ -2053,8 +2069,15 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                     return FNAV_E_NANINF;
                 }
                 if (!in_range) {
-                    set_err(r, "%s: record #%ld at byte %lld: a value beyond %g in SI units (no sensor reads that)",
-                            r->path, r->record_slot, r->offset, FNAV_INPUT_MAX_ABS);
+                    char give[200] = "";
+                    if (ug >= 0 && ug < 3) {
+                        snprintf(give, sizeof give,
+                                 "; a%c is %g: in ug? 1 g is 1e6 ug, but a .bin holds m/s^2 (docs/log-format.md) and "
+                                 "--units does not apply to it: the program that wrote it must scale ug by 9.80665e-6",
+                                 "xyz"[ug], (double)rec.acc[ug]);
+                    }
+                    set_err(r, "%s: record #%ld at byte %lld: a value beyond %g in SI units (no sensor reads that%s)",
+                            r->path, r->record_slot, r->offset, FNAV_INPUT_MAX_ABS, give);
                     return FNAV_E_RANGE;
                 }
             }
@@ -2178,13 +2201,41 @@ static const char *utf16_of(const unsigned char *b, size_t n)
     return le ? "UTF-16LE" : (be ? "UTF-16BE" : NULL);
 }
 
+hx_head_t hx_head_not_text(const char *path, const unsigned char *head, size_t n, int series, char *msg,
+                           size_t msg_size)
+{
+    const char *utf16 = utf16_of(head, n);
+    long bin_at;
+    if (utf16 != NULL) {
+        snprintf(msg, msg_size, "%s: UTF-16 text, not UTF-8 (save it as UTF-8, e.g. iconv -f %s -t UTF-8 %s > %s; %s)",
+                 path, utf16, path, series ? "copy.txt" : "copy.csv",
+                 series ? "a series: docs/allan.md, \"Input\"" : "the formats read: docs/log-format.md");
+        return HX_HEAD_UTF16;
+    }
+    bin_at = binary_at(head, n);
+    if (bin_at >= 0) {
+        size_t k, m = n < 8 ? n : 8;
+        char hex[3 * 8 + 1];
+        hex[0] = '\0';
+        for (k = 0; k < m; k++) {
+            snprintf(hex + strlen(hex), sizeof hex - strlen(hex), "%s%02x", k > 0 ? " " : "", head[k]);
+        }
+        snprintf(msg, msg_size, "%s: binary data, not a %s: its first bytes %s hold 0x%02x at byte %lu, which no text %s",
+                 path, series ? "series" : "log", hex, head[bin_at], (unsigned long)bin_at + 1,
+                 series ? "holds (a series is text, numbers one per line: docs/allan.md, \"Input\")"
+                        : "log holds, and a footnav .bin starts with FNAV (the formats read: docs/log-format.md)");
+        return HX_HEAD_BINARY;
+    }
+    return HX_HEAD_TEXT;
+}
+
 static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, char *err, size_t err_size)
 {
     hx_reader_t *r;
     unsigned char head[600];
     int got, guessed = 0;
-    long bin_at;
-    const char *utf16;
+    hx_head_t head_kind = HX_HEAD_TEXT;
+    char head_msg[HX_ERR_SIZE];
     if (rate_hz < 0.0 || rate_hz > 1.0e6 || rate_hz != rate_hz) {
         snprintf(err, err_size, "%s: sample rate %g Hz is not in (0, 1e6]", path, rate_hz);
         return NULL;
@@ -2222,15 +2273,13 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         free(r);
         return NULL;
     }
-    if (fmt != HX_FMT_BIN && (utf16 = utf16_of(head, (size_t)got)) != NULL) {
+    if (fmt != HX_FMT_BIN &&
+        (head_kind = hx_head_not_text(path, head, (size_t)got, 0, head_msg, sizeof head_msg)) == HX_HEAD_UTF16) {
         /* Windows' "Unicode text" export: "FILE:1: a NUL byte in the text
          * (binary data ...)" with its byte-order mark, the hint of
          * --columns without it, where it only needs saving as UTF-8
          * (2026-12-02) */
-        snprintf(err, err_size,
-                 "%s: UTF-16 text, not UTF-8 (save it as UTF-8, e.g. iconv -f %s -t UTF-8 %s > copy.csv; the "
-                 "formats read: docs/log-format.md)",
-                 path, utf16, path);
+        snprintf(err, err_size, "%s", head_msg);
         gzclose(r->gz);
         free(r);
         return NULL;
@@ -2284,20 +2333,11 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         if (!guessed || (fmt == HX_FMT_CSV && (r->missing_col != 0 || r->layout.option != NULL))) {
             /* given with --from, or our CSV known by its 't' column */
             snprintf(err, err_size, "%s", r->err);
-        } else if (fmt == HX_FMT_CSV && (bin_at = binary_at(head, (size_t)got)) >= 0) {
+        } else if (fmt == HX_FMT_CSV && head_kind == HX_HEAD_BINARY) {
             /* a PNG, a zip given as a log: it was told "header has no
              * column 't' ... give its names and units with --columns",
              * which no such file can follow (a user review, 2026-12-02) */
-            size_t at = (size_t)bin_at, k, n = got < 8 ? (size_t)got : 8;
-            char hex[3 * 8 + 1];
-            hex[0] = '\0';
-            for (k = 0; k < n; k++) {
-                snprintf(hex + strlen(hex), sizeof hex - strlen(hex), "%s%02x", k > 0 ? " " : "", head[k]);
-            }
-            snprintf(err, err_size,
-                     "%s: binary data, not a log: its first bytes %s hold 0x%02x at byte %lu, which no text log "
-                     "holds, and a footnav .bin starts with FNAV (the formats read: docs/log-format.md)",
-                     path, hex, head[at], (unsigned long)at + 1);
+            snprintf(err, err_size, "%s", head_msg);
         } else if (fmt == HX_FMT_CSV) {
             /* --from alone left a layout no importer reads (a phone app's
              * export) without a way (a contributor's review, 2026-11-30) */

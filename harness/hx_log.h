@@ -160,6 +160,23 @@ hx_format_t hx_detect_file(const char *path);
 hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz,
                             char *err, size_t err_size);
 
+/** What a file's first bytes say when it is no text (hx_head_not_text). */
+typedef enum {
+    HX_HEAD_TEXT = 0, /**< text, as far as its first bytes tell */
+    HX_HEAD_UTF16,    /**< UTF-16 text (Windows' "Unicode text"), with or without a byte-order mark */
+    HX_HEAD_BINARY    /**< a byte no text holds (a control character but tab, LF, VT, FF, CR; DEL) */
+} hx_head_t;
+
+/** Whether the file @p path, whose first bytes are head[0..n), is no text:
+ *  UTF-16 (msg gets "PATH: UTF-16 text, not UTF-8 (save it as UTF-8, e.g.
+ *  iconv -f ENC -t UTF-8 PATH > copy.csv; ...)", ENC as iconv reads it)
+ *  or binary data (msg gets "PATH: binary data, not a log: its first bytes
+ *  .. hold 0x.. at byte N, ..."), for a log (@p series 0) or a series of
+ *  numbers (1: "not a series", copy.txt, docs/allan.md); msg is left alone
+ *  for text. The readers' open and `allan --series` share it. */
+hx_head_t hx_head_not_text(const char *path, const unsigned char *head, size_t n, int series, char *msg,
+                           size_t msg_size);
+
 /** Next sample. FNAV_OK with *s, FNAV_END at a clean end, negative status
  *  on an error (message from hx_reader_error()). */
 fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s);

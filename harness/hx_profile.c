@@ -330,11 +330,35 @@ int hx_profile_implausible(const fnav_profile_t *p, char *msg, size_t n)
     return 0;
 }
 
+/* 1 when the file named @p path was warned about already, else 0 (then
+ * remembered). Each file warned about is kept as the 64-bit FNV-1a hash of
+ * its name as given; it remembered only the last one until 2026-12-02, so
+ * that loading A, B, A warned about A twice. A full table remembers no
+ * more: a file warned about after the first HX_PROFILE_WARNED_MAX is
+ * warned about at each load (repeated, never lost). */
+static int profile_warned(const char *path)
+{
+    static unsigned long long seen[HX_PROFILE_WARNED_MAX];
+    static size_t nseen;
+    unsigned long long h = 14695981039346656037ULL;
+    size_t i;
+    for (; *path != '\0'; path++) {
+        h ^= (unsigned char)*path;
+        h *= 1099511628211ULL;
+    }
+    for (i = 0; i < nseen; i++) {
+        if (seen[i] == h) {
+            return 1;
+        }
+    }
+    if (nseen < HX_PROFILE_WARNED_MAX) {
+        seen[nseen++] = h;
+    }
+    return 0;
+}
+
 int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size_t err_size)
 {
-    /* the file warned about last: a command that loads its profile once
-     * per run (montecarlo) says it once */
-    static char warned[512];
     char msg[320];
     if (fnav_profile_by_name(p, name_or_path) == FNAV_OK) {
         return 0;
@@ -363,9 +387,11 @@ int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size
      * deg/s/sqrt(Hz)) was taken without a word: replay on the bundled walk
      * ended 0.33 m from its start instead of 0.04 m (a user review,
      * 2026-11-30). Valid, so a warning; the run goes on. */
-    if (hx_profile_implausible(p, msg, sizeof msg) && strcmp(warned, name_or_path) != 0) {
+    if (hx_profile_implausible(p, msg, sizeof msg) && !profile_warned(name_or_path)) {
+        /* once per file in a run: a command that loads its profiles once
+         * per seed (montecarlo, the sensor's and the filter's) says each
+         * once */
         hx_warn(hx_cmd_name, "%s: %s", name_or_path, msg);
-        snprintf(warned, sizeof warned, "%s", name_or_path);
     }
     return 0;
 }

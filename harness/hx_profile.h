@@ -34,9 +34,14 @@ int hx_profile_write_extra(const char *path, const fnav_profile_t *p, const char
  *  (docs/profile-format.md); else 0. */
 int hx_profile_implausible(const fnav_profile_t *p, char *msg, size_t n);
 
+/** Files hx_profile_load() remembers having warned about in a run. */
+#define HX_PROFILE_WARNED_MAX 64
+
 /** A built-in name ("navchip", "mtx", "shimmer") or a file path; a file
  *  with a value hx_profile_implausible() flags gets a warning (once per
- *  file in a run), and is loaded. */
+ *  file in a run, the file known by its name as given; past
+ *  HX_PROFILE_WARNED_MAX files warned about, a further one is warned about
+ *  at each load), and is loaded. */
 int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size_t err_size);
 
 /** A profile given as a file is an input: 1 (with the error printed) when

@@ -561,6 +561,62 @@ static void test_bin_bad_record_values(void **state)
     expect_bin(b, g_golden_n + 2 * HX_BIN_RECORD_SIZE, 1, 7, FNAV_E_FORMAT, "data after the end record");
 }
 
+/* A .bin whose accelerations were written in ug (1 g reads 1e6, at the
+ * limit): the CSV reader asks "in ug?" and names --units accel=ug, but a
+ * .bin's units are fixed by its header (m/s^2; docs/log-format.md) and
+ * --units does not apply to it, so the .bin reader asks the same question
+ * with the remedy that applies: its writer must scale ug to m/s^2 (the
+ * error said only "no sensor reads that" until 2026-12-02). Not asked of a
+ * rate beyond 1e6, nor of an acceleration beyond 400 g once read in ug. */
+static void test_bin_value_in_ug(void **state)
+{
+    static const struct {
+        int gyro, axis;
+        float v;
+        int asked;
+    } k_case[] = { { 0, 0, 2.0e6f, 1 }, { 0, 2, -9.8e6f, 1 }, { 1, 1, 2.0e6f, 0 }, { 0, 0, 1.0e10f, 0 } };
+    unsigned char b[4096];
+    hx_bin_record_t rec;
+    const size_t r3 = HX_BIN_HEADER_SIZE + 3 * HX_BIN_RECORD_SIZE;
+    size_t i;
+    char p[256];
+    (void)state;
+    for (i = 0; i < sizeof k_case / sizeof k_case[0]; i++) {
+        readall_t r;
+        memcpy(b, g_golden, g_golden_n);
+        assert_int_equal(hx_bin_record_decode(b + r3, &rec), 0);
+        if (k_case[i].gyro) {
+            rec.gyr[k_case[i].axis] = k_case[i].v;
+        } else {
+            rec.acc[k_case[i].axis] = k_case[i].v;
+        }
+        hx_bin_record_encode(&rec, b + r3);
+        tmp_path(p, sizeof p, ".bin");
+        write_file(p, b, g_golden_n);
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+        unlink(p);
+        assert_int_equal(r.n, 3);
+        assert_int_equal(r.end, FNAV_E_RANGE);
+        assert_non_null(
+            strstr(r.err, ": record #3 at byte 336: a value beyond 1e+06 in SI units (no sensor reads that"));
+        /* the remedy of a CSV does not apply to a .bin */
+        assert_null(strstr(r.err, "--units accel"));
+        if (k_case[i].asked) {
+            char want[256];
+            snprintf(want, sizeof want,
+                     "(no sensor reads that; a%c is %g: in ug? 1 g is 1e6 ug, but a .bin holds m/s^2 "
+                     "(docs/log-format.md) and --units does not apply to it: the program that wrote it must scale "
+                     "ug by 9.80665e-6)",
+                     "xyz"[k_case[i].axis], (double)k_case[i].v);
+            if (strstr(r.err, want) == NULL) {
+                fail_msg("error '%s' does not contain '%s'", r.err, want);
+            }
+        } else {
+            assert_non_null(strstr(r.err, "(no sensor reads that)"));
+        }
+    }
+}
+
 /* ------------------------------------------------------------ bad CSV */
 
 static void expect_csv(const char *text, int open_ok, int n_samples, fnav_status_t end, const char *msg_part)
@@ -4115,6 +4171,7 @@ int main(void)
         cmocka_unit_test(test_bin_bad_magic),
         cmocka_unit_test(test_bin_nan_record),
         cmocka_unit_test(test_bin_bad_record_values),
+        cmocka_unit_test(test_bin_value_in_ug),
         cmocka_unit_test(test_bin_header_fields),
         cmocka_unit_test(test_bin_end_count),
         cmocka_unit_test(test_bin_resync_counts),

@@ -485,6 +485,81 @@ static void test_generic_mems(void **state)
     FNAV_ASSERT_CLOSE(a.accel_bias_sigma_mps2[0], 50e-6 * 9.80665, 0.0, 0.01);
 }
 
+/* Loads `path` with stderr captured: the number of warnings it printed. */
+static int load_warnings(const char *path)
+{
+    fnav_profile_t p;
+    char err[320], line[1024];
+    FILE *cap = tmpfile();
+    int fd = dup(2), n = 0;
+    assert_non_null(cap);
+    assert_true(fd >= 0);
+    fflush(stderr);
+    assert_true(dup2(fileno(cap), 2) >= 0);
+    assert_int_equal(hx_profile_load(path, &p, err, sizeof err), 0);
+    fflush(stderr);
+    assert_true(dup2(fd, 2) >= 0);
+    close(fd);
+    rewind(cap);
+    while (fgets(line, sizeof line, cap) != NULL) {
+        n += strstr(line, "warning: ") != NULL && strstr(line, "above any IMU's") != NULL;
+    }
+    fclose(cap);
+    return n;
+}
+
+/* hx_profile_load warns once per file about a value no IMU has in its
+ * key's unit: it remembered only the file it warned about last, so
+ * loading A, B, A warned about A twice (2026-12-02). */
+static void test_load_warns_once_per_file(void **state)
+{
+    fnav_profile_t a;
+    char pa[] = "/tmp/fnav_profile_a_XXXXXX", pb[] = "/tmp/fnav_profile_b_XXXXXX", err[320];
+    int fd;
+    (void)state;
+    assert_int_equal(fnav_profile_builtin(&a, FNAV_PROFILE_SHIMMER), FNAV_OK);
+    a.gyro_noise_rps_rthz[0] = FNAV_R(0.0396); /* deg/s/sqrt(Hz) written as rad/s/sqrt(Hz) */
+    fd = mkstemp(pa);
+    assert_true(fd >= 0);
+    close(fd);
+    fd = mkstemp(pb);
+    assert_true(fd >= 0);
+    close(fd);
+    assert_int_equal(hx_profile_write(pa, &a, NULL, err, sizeof err), 0);
+    assert_int_equal(hx_profile_write(pb, &a, NULL, err, sizeof err), 0);
+    assert_int_equal(load_warnings(pa), 1);
+    assert_int_equal(load_warnings(pb), 1);
+    assert_int_equal(load_warnings(pa), 0);
+    assert_int_equal(load_warnings(pb), 0);
+    assert_int_equal(load_warnings(pa), 0);
+    {
+        /* a file is known by its name as given (A as /tmp/./a is another
+         * name); the table full, a further name is warned at each load,
+         * and those remembered still are not. Only names warned about
+         * fill it: the tests before load no implausible file */
+        char name[HX_PROFILE_WARNED_MAX * 2 + sizeof pa + 8];
+        int k;
+        const char *slash = strrchr(pa, '/');
+        assert_non_null(slash);
+        for (k = 1; k <= HX_PROFILE_WARNED_MAX - 2; k++) {
+            int j, m = snprintf(name, sizeof name, "%.*s", (int)(slash - pa), pa);
+            for (j = 0; j < k; j++) {
+                m += snprintf(name + m, sizeof name - (size_t)m, "/.");
+            }
+            snprintf(name + m, sizeof name - (size_t)m, "%s", slash);
+            assert_int_equal(load_warnings(name), 1);
+            assert_int_equal(load_warnings(name), 0);
+        }
+        snprintf(name, sizeof name, "/tmp/%s", slash);
+        assert_int_equal(load_warnings(name), 1);
+        assert_int_equal(load_warnings(name), 1);
+        assert_int_equal(load_warnings(pa), 0);
+        assert_int_equal(load_warnings(pb), 0);
+    }
+    unlink(pa);
+    unlink(pb);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -492,6 +567,7 @@ int main(void)
         cmocka_unit_test(test_ar1_units),
         cmocka_unit_test(test_validate),
         cmocka_unit_test(test_file_round_trip),
+        cmocka_unit_test(test_load_warns_once_per_file),
         cmocka_unit_test(test_file_out_of_float_range),
         cmocka_unit_test(test_units_advice),
         cmocka_unit_test(test_generic_mems),

@@ -401,13 +401,17 @@ json "$T/zwjunk.json" '[j[k] for k in ("duration_s", "distance_m", "strides")] =
 # was "header has no column 't' ... give --from FORMAT for another format,
 # or give its names and units with --columns and --units" (a PNG of
 # docs/img, exit 1): advice no such file can follow. Now it is named as
-# binary data, neither a .bin nor text (exit 1 as before).
+# binary data, neither a .bin nor text (exit 1 as before). So is one given
+# to allan as a --series of numbers (the same helper, hx_head_not_text),
+# which said "plot.png:2: not a number" (its first line taken for a header).
 cp "$(ls docs/img/*.png | head -n 1)" "$T/plot.png"
 printf 'PK\003\004\024\000\006\000\010\000\000\000!\000' >"$T/book.xlsx"
 for f in plot.png book.xlsx; do
-    for c in info replay psd; do
-        expect_exit 1 "$c of $f (binary, no log)" "$H" $c "$T/$f"
-        expect_err "$f: binary data, not a log: " "$c: $f said to be binary data"
+    for c in info replay psd "allan --rate 100 --series"; do
+        kind=log
+        case $c in *--series) kind=series ;; esac
+        expect_exit 1 "$c of $f (binary, no $kind)" "$H" $c "$T/$f"
+        expect_err "$f: binary data, not a $kind: " "$c: $f said to be binary data"
         grep -q -- "--columns" "$T/err" && fail "$c: $f: the advice of --columns given" || pass "$c: $f: no --columns advice"
     done
 done
@@ -422,12 +426,16 @@ head -n 50 vectors/nav/golden/gx2_walk2.csv >"$T/u8.csv"
     "$T/u8.csv" "$T/u16.csv" "$T/u16le.csv" "$T/u16be.csv" || fail "write the UTF-16 copies"
 for fe in u16.csv:UTF-16 u16le.csv:UTF-16LE u16be.csv:UTF-16BE; do
     f=${fe%%:*} e=${fe#*:}
-    for c in info replay; do
+    for c in info replay "allan --rate 100 --series"; do
         expect_exit 1 "$c of $f (UTF-16)" "$H" $c "$T/$f"
         expect_err "$f: UTF-16 text, not UTF-8 (save it as UTF-8, e.g. iconv -f $e -t UTF-8 $T/$f" "$c: $f said to be $e"
     done
 done
 expect_exit 0 "info of the UTF-8 original" "$H" info "$T/u8.csv"
+expect_exit 0 "allan --series of the UTF-8 original's column 2" "$H" allan --rate 100 --series "$T/u8.csv" --column 2 --no-sim --quiet
+expect_exit 1 "allan --series of plot.png" "$H" allan --rate 100 --series "$T/plot.png"
+expect_err "plot.png: binary data, not a series: its first bytes 89 50 4e 47 0d 0a 1a 0a hold 0x1a at byte 7, which no text holds" \
+    "allan --series: the bytes named"
 # a CSV in another layout is still told about --columns
 printf 'stamp;x;y;z\n0;0;0;9.8\n' >"$T/other2.csv"
 expect_exit 1 "info of a text CSV of no known layout" "$H" info "$T/other2.csv"
