@@ -37,6 +37,16 @@ expect_exit 1 "missing series" "$H" allan --series "$T/nope.txt" --rate 1
 awk 'BEGIN { for (i = 0; i < 50; i++) { printf "1.0"; for (j = 0; j < 1100; j++) printf " "; print "2.0" } }' > "$T/long.txt"
 expect_exit 1 "series line longer than the reader's buffer" "$H" allan --series "$T/long.txt" --rate 1 --no-sim
 expect_err "long.txt:1: line longer than" "the long line is named"
+# a NUL byte in a series (binary data, e.g. a logger's unwritten blocks): named as the log readers name it,
+# mid-file (it was called a line longer than 1022 characters) and on a last line without a newline (1.0 NUL junk
+# was read as 1.0, exit 0); the numbers before it are analysed
+awk 'BEGIN { for (i = 1; i <= 30; i++) print i % 7 }' > "$T/nul30.txt"
+{ cat "$T/nul30.txt"; printf '1.0\000junk\n4.0\n'; } > "$T/nul.txt"
+expect_exit 1 "a NUL byte mid-series" "$H" allan --series "$T/nul.txt" --rate 1 --no-sim --quiet
+expect_err "nul.txt:31: a NUL byte in the text" "a NUL byte mid-series is named"
+{ cat "$T/nul30.txt"; printf '1.0\000junk'; } > "$T/nulend.txt"
+expect_exit 1 "a NUL byte on a series' last line" "$H" allan --series "$T/nulend.txt" --rate 1 --no-sim --quiet
+expect_err "nulend.txt:31: a NUL byte in the text" "a NUL byte on the last line is named"
 expect_exit 0 "paper tables" "$H" allan --paper-tables
 grep -q "NavChip (IV)" "$T/out" && pass "paper tables list NavChip" || fail "paper tables output"
 # --paper-tables reads no option: --json FILE was ignored (exit 0, no file)
