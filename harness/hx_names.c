@@ -239,8 +239,8 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
         len--;
     }
     len0 = len;
-    /* the units' signs in ASCII: "gx [°/s]" is "gx [deg/s]" (they made the
-     * name no match until 2026-12-01) */
+    /* the units' signs in ASCII: "gx [°/s]" is "gx [deg/s]" (left as they
+     * are, they would make the name no match) */
     if (len == 0 || len >= sizeof buf || fold_units(s, len, buf, sizeof buf) != 0) {
         return c->kind;
     }
@@ -266,8 +266,7 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
         u[k] = '\0';
         unit = p == close ? unit_of(u) : HX_UNIT_NONE;
         /* "(raw)", "[counts]", "[deg/h]": no unit we read (a key's name so
-         * is a near miss that says so; it was no name at all until
-         * 2026-12-01) */
+         * is a near miss that says so, rather than no name at all) */
         unread = unit == HX_UNIT_NONE;
         len = (size_t)(open - buf);
     }

@@ -43,10 +43,10 @@ double sg_log_rate(const hx_log_t *log)
 
 int sg_stamps_check(const hx_log_t *log, const char *path, int domain, char *err, size_t err_size)
 {
-    /* until 2026-11-30 a walk stamped in bursts (4 samples 5 us apart every
-     * 10 ms) was read at 200 kHz, detected as static and analysed as one,
-     * exit 0; one stamp per packet of 4 was navigated and twinned at 100 Hz
-     * (a 400 Hz walk), its answer meaningless */
+    /* a walk stamped in bursts (4 samples 5 us apart every 10 ms) is
+     * refused: it would be read at 200 kHz, detected as static and analysed
+     * as one, exit 0; one stamp per packet of 4 would be navigated and
+     * twinned at 100 Hz (a 400 Hz walk), its answer meaningless */
     const size_t n = log->n < HX_STAMPS_PROBE_N ? log->n : (size_t)HX_STAMPS_PROBE_N;
     const double max_gap_s = (double)fnav_nav_config_default.max_gap_s;
     hx_bursts_t bu;
@@ -92,11 +92,11 @@ int sg_detect_domain(const hx_log_t *log, double rate_hz)
     /* one-second windows: moving when within the window the rate departs
      * from the log's mean by more than 1 rad/s and the specific force from
      * its mean norm by more than 1 m/s^2 (a foot in swing does both many
-     * times a second). Both: until 2026-11-29 either one made a window
-     * move, and a static log with its gyro in deg/s (noise of tenths of a
-     * "rad/s", reaching 1 within every second) was a walk without a stance,
-     * "too short" for its stances (tests/cli/test_simgap.sh); every walk of
-     * the shared data still has 9-95 % of its windows moving */
+     * times a second). Both: with either one enough to make a window
+     * move, a static log with its gyro in deg/s (noise of tenths of a
+     * "rad/s", reaching 1 within every second) would be a walk without a
+     * stance, "too short" for its stances (tests/cli/test_simgap.sh); every
+     * walk of the shared data has 9-95 % of its windows moving by both */
     for (k = 0; k + w <= n; k += w) {
         size_t i;
         int mg = 0, mf = 0;
@@ -133,10 +133,10 @@ static double poisson_z(long n, double lam)
 /* Two-sided score of a count against an expectation (after fitting): the
  * normal score of the Poisson tail on the count's side, capped at SG_ZCAP,
  * so that it is poisson_z's when the count lies above (against a fitted
- * rate of 0 the same number as before fitting). Until 2026-11-28 it was
- * the normal approximation (n - lam) / sqrt(lam), uncapped: 500 drops in
- * the held-out part of a log whose fit segment had none were "40 sigma"
- * before fitting and "+2235.8 sigma" after a fit that changed nothing. */
+ * rate of 0 the same number as before fitting). The normal approximation
+ * (n - lam) / sqrt(lam), uncapped, would make 500 drops in the held-out
+ * part of a log whose fit segment had none "40 sigma" before fitting and
+ * "+2235.8 sigma" after a fit that changed nothing. */
 static double count_z(long n, double lam)
 {
     double p;
@@ -182,8 +182,8 @@ void sg_timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, d
     t->first_t[SG_TIM_DUP] = t->first_t[SG_TIM_DROP] = (double)NAN;
     if (lg->n < 16 || lg->t_ns == NULL || lg->meta.stamps_made) {
         /* a format without stamps (ADIS16405, OpenShoe 820 Hz): the stamps
-         * are index / rate, with nothing to analyse (reported as a clean
-         * clock with a 0.01 s resolution; the sgreport review) */
+         * are index / rate, with nothing to analyse (analysed, they would
+         * read as a clean clock with a 0.01 s resolution) */
         return;
     }
     /* resolution: the largest decade of ns that divides every stamp offset */
@@ -208,10 +208,10 @@ void sg_timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, d
     /* What rounding an ideal clock's stamps to the resolution leaves in the
      * intervals: each is floor(T/res) or one more resolution step, the
      * longer with the frequency p = frac(T/res), so their spread is
-     * res sqrt(p (1 - p)) (T the mean regular interval). res/sqrt(6), used
-     * until 2026-11-28, is that spread's average over p; at 300 Hz with
-     * stamps in ms (p = 1/3, 0.471 ms against 0.408 ms) a clean log was
-     * answered "jitter" at 38.6 sigma. */
+     * res sqrt(p (1 - p)) (T the mean regular interval). res/sqrt(6) is
+     * that spread's average over p, not its value at this p: at 300 Hz with
+     * stamps in ms (p = 1/3, 0.471 ms against 0.408 ms) it would answer a
+     * clean log "jitter" at 38.6 sigma. */
     {
         double s = 0.0, p;
         long nreg = 0;
@@ -231,8 +231,8 @@ void sg_timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, d
          * the spread and kurtosis do not depend on it, and with a rate that
          * is not the clock's own (a coarse-stamped CSV with dropped
          * samples, read at 95.4 Hz for 100 Hz) every x is the same
-         * -485,000 ns, whose raw moments cancelled to a spread of 0.43 ns:
-         * "jitter" against an exact grid's 0 until 2026-12-01
+         * -485,000 ns, whose raw moments would cancel to a spread of
+         * 0.43 ns: "jitter" against an exact grid's 0
          * (test_timing_jitter_off_rate) */
         double s = 0.0, s2 = 0.0, s3 = 0.0, s4 = 0.0, ref = 0.0;
         long nreg = 0;
@@ -303,7 +303,7 @@ void sg_timing_analyse(const hx_log_t *lg, double rate, const sg_segs_t *segs, d
         /* before each kept sample p / (1 - p) lost ones on average
          * (geometric): the held-out intervals expect the fit's drops per
          * interval, not p per interval (10 % too few at p = 0.1, +4.5 sigma
-         * on a clean dropout log until 2026-12-01; test_timing_dropout_after) */
+         * on a clean dropout log; test_timing_dropout_after) */
         t->z_after[SG_TIM_DROP] = count_z(t->n_drop[SG_HOLD], (double)t->n_drop[SG_FIT] / (double)nif *
                                                                    (double)t->n_int[SG_HOLD]);
         {
@@ -508,8 +508,8 @@ static int cmp_all(const sg_plist_t pl[SG_NSEG], double *const real[SG_NSEG], co
 
 double sg_fit_explained(double G_before, double null_mean, double G_after)
 {
-    /* no excess, no fraction of it (0 until 2026-11-29: "explains
-     * nothing"; the sgreport review) */
+    /* no excess, no fraction of it (NaN: a 0 would read "explains
+     * nothing") */
     return (G_before - null_mean) > 0.0 ? (G_before - G_after) / (G_before - null_mean) : (double)NAN;
 }
 
@@ -663,8 +663,8 @@ double sg_score_test(const sg_plist_t *pl, const double *real, const sg_cmp_t *c
     *t_sd = sd;
     /* the real is a new draw against the mean and sd of S: (T - mean) /
      * (sd sqrt(1 + 1/S)) is the statistic that follows Student's t with
-     * S - 1 degrees of freedom (without the factor the test rejected 1.27
-     * times as often as its level at S = 16: a review, 2026-11-27) */
+     * S - 1 degrees of freedom (without the factor the test would reject
+     * 1.27 times as often as its level at S = 16) */
     return sd > 0.0 ? (T - *t_mean) / (sd * sqrt(1.0 + 1.0 / (double)S)) : 0.0;
 }
 
@@ -701,8 +701,8 @@ void sg_prune_zero(sg_chres_t *c)
 {
     /* an effect accepted at one step can be refitted to nothing once later
      * effects join (jumps at 0.00875 m/s^2, then 0 beside vibration and
-     * flicker: a review, 2026-11-28): it explains none of the final
-     * model's gap and is no answer */
+     * flicker): it explains none of the final model's gap and is no
+     * answer */
     int j, kept = 0;
     for (j = 0; j < c->nsel; j++) {
         const int m = sg_model_find(&c->final, c->sel_id[j]);
@@ -1175,8 +1175,8 @@ void sg_locate_into(const sg_plist_t *pl, int ch, int seg, const sg_cmp_t *c, sg
             sg_loc_t *L = &loc[(*nloc)++];
             /* the deviation behind z (after the parameter-uncertainty
              * correction), so that the ratio agrees with z's sign: the raw
-             * real - twin mean printed "34.9 sigma below the twin (ADEV
-             * x1.11)" on a vibration log (a review, 2026-11-29) */
+             * real - twin mean would print "34.9 sigma below the twin (ADEV
+             * x1.11)" on a vibration log */
             double d = c->dev[best];
             L->dom = pl->p[j].dom;
             L->ch = ch;
@@ -1185,8 +1185,8 @@ void sg_locate_into(const sg_plist_t *pl, int ch, int seg, const sg_cmp_t *c, sg
             L->x_lo = pl->p[j].x_lo;
             L->x_hi = pl->p[k - 1].x_hi;
             if (L->dom == SG_TIME && L->kind == SG_TIME_STEP && pl->p[best].t_peak_hi > pl->p[best].t_peak_lo) {
-                /* a step or transient: where in the block it is (until
-                 * 2026-11-29 the block, "t 0-600 s" for 0.5 s at 300 s) */
+                /* a step or transient: where in the block it is, not the
+                 * block ("t 0-600 s" for 0.5 s at 300 s) */
                 L->x_lo = pl->p[best].t_peak_lo;
                 L->x_hi = pl->p[best].t_peak_hi;
             }
@@ -1325,9 +1325,9 @@ static int diagnose_static(const hx_log_t *log, sg_result_t *r, char *err, size_
             x[k] = ch < 3 ? log->acc[k][ch] : log->gyr[k][ch - 3];
         }
         /* one value over the fit or the held-out segment: nothing to fit
-         * or to test there, which is not a log too short (until 2026-11-28
-         * it was answered "fewer than 4 Allan points" or "within +-25 % over
-         * only 0 decades", and stopped the attribution of every channel) */
+         * or to test there, which is not a log too short (as one, it would
+         * be answered "fewer than 4 Allan points" or "within +-25 % over
+         * only 0 decades", and stop the attribution of every channel) */
         for (g = SG_FIT; g <= SG_HOLD && !r->seg_constant[ch]; g++) {
             if (seg_one_value(x, &r->segs, g, &r->seg_constant_value[ch])) {
                 r->seg_constant[ch] = g;
@@ -1655,8 +1655,8 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
     f_med = fm[nf / 2];
     /* the walk replay's gyro mark needs (a gyro in rad/s read as deg/s by
      * --units gyro=deg/s), from the accelerometer as replay's: such a walk
-     * is detected as static (its rates stay below 1 rad/s), and was
-     * analysed as one without a word until 2026-11-30 */
+     * is detected as static (its rates stay below 1 rad/s), and would be
+     * analysed as one without a word */
     memset(&walk, 0, sizeof walk);
     for (k = 0; k < log->n; k++) {
         hx_walk_push(&walk, log->t_ns[k],
@@ -1687,14 +1687,14 @@ static int units_of_log(const hx_log_t *log, const char *path, const sg_result_t
         return -1;
     }
     if (bad) {
-        /* a warning, shown under --quiet too (it hides the progress only;
-         * a review, 2026-11-28) */
+        /* a warning, shown under --quiet too (it hides the progress
+         * only) */
         hx_warn("simgap", "%s: %s", path, msg);
     }
     /* a static log may be slow, but one below 1 Hz that a time column in
      * milliseconds (us, ns) explains is named, as allan and psd name it:
-     * until 2026-11-29 the first minute of ADIS16405 log 1 with its time in
-     * ms was analysed at 0.1 Hz without a word (taus 1000 times too long) */
+     * the first minute of ADIS16405 log 1 with its time in ms would be
+     * analysed at 0.1 Hz without a word (taus 1000 times too long) */
     if (slow && hx_time_unit_hint(rate_u, want, msg, sizeof msg)) {
         hx_warn("simgap", "%s: %s; the taus and frequencies are read at %.3g Hz", path, msg, r->rate_hz);
     }
@@ -1768,8 +1768,7 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
         return -1;
     }
     /* the stamps' span plus one period (n / rate on a regular log): n / rate
-     * alone said 50 s for a 60 s walk with 10 s of samples missing (the
-     * sgreport review) */
+     * alone would say 50 s for a 60 s walk with 10 s of samples missing */
     r->duration_s = log->t_ns != NULL ? (double)(log->t_ns[log->n - 1] - log->t_ns[0]) * 1e-9 + 1.0 / r->rate_hz
                                       : (double)r->n / r->rate_hz;
     r->domain_detected = sg_detect_domain(log, r->rate_hz);
@@ -1793,9 +1792,8 @@ int sg_diagnose(const hx_log_t *log, const char *path, const sg_opts_t *o, sg_re
      * start and the late behaviour are in both); walks: the first part */
     sg_segs_split(r->n, r->opts.fit_frac, r->domain == 1 && !r->opts.contiguous, &r->segs);
     /* the blocks' times from the log's stamps, as the navigation points and
-     * the timing's first events are: start / rate put a walk's held-out
-     * segment 10 s early after a 10 s gap in the samples (the sgreport
-     * review) */
+     * the timing's first events are: start / rate would put a walk's
+     * held-out segment 10 s early after a 10 s gap in the samples */
     {
         int g, b;
         for (g = 0; g < SG_NSEG; g++) {

@@ -776,8 +776,8 @@ typedef struct {
     sg_timing_t tim;
     int stamps_made;           /**< the log's format has no time stamps (hx_meta_t.stamps_made): timing not analysed */
     size_t nloc;
-    sg_loc_t loc[512];        /**< whole log and held out, every channel (64 until 2026-11-28: the
-                                   last channels' were dropped without a word) */
+    sg_loc_t loc[512];        /**< whole log and held out, every channel (room for all: with 64
+                                   the last channels' would be dropped) */
     size_t nloc_dropped;      /**< locations beyond the capacity: counted, said */
     char verdict[32];         /**< none, explained, partly-explained, unexplained, too-short */
     char prof_name[64];       /**< static logs with --profile: its name */

@@ -1196,7 +1196,7 @@ int sg_fit_model(const sg_table_t *t, double mean, const int *with, int nwith, c
     }
     /* AR(1) correlation time grid: from one sample to tmax, within the
      * catalogue's range (its 1 ms is above one sample beyond 1 kHz: a
-     * shorter fitted time made every twin fail) */
+     * shorter fitted time would make every twin fail) */
     tmin_s = sg_ar1_tau_min(t->rate_hz);
     {
         const fnav_effect_info_t *ai = fnav_imuerr_effect_info(FNAV_EFFECT_AR1);

@@ -83,12 +83,12 @@ static cJSON *effect_json(const sg_effect_t *e, int ch)
     for (k = 0; info != NULL && k < info->nparams && k < SG_MAX_PAR; k++) {
         const char *unit = info->params[k].unit;
         /* an AR(1) of sigma 0 is no bias process: its tau means nothing
-         * (null, as the baseline's ar1_tau_s; the sgreport review) */
+         * (null, as the baseline's ar1_tau_s) */
         const int void_tau = e->id == FNAV_EFFECT_AR1 && k == 0 && !(e->p[1] > 0.0);
         add_num(p, info->params[k].name, void_tau ? (double)NAN : e->p[k]);
         /* a parameter at a bound of its search has no standard error (the
          * curvature at a constraint is none), as the AR(1) time at its
-         * bounds (the sgap review) */
+         * bounds */
         add_num(se, info->params[k].name, void_tau || e->at_bound[k] != 0 ? (double)NAN : e->se[k]);
         {
             cJSON *c, *n;
@@ -195,8 +195,8 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
         add_ci(b, "ar1_sigma", &c->baseline.e[ia], 1, 0);
         add_num(b, "ar1_tau_s", c->baseline.e[ia].p[1] > 0.0 ? c->baseline.e[ia].p[0] : (double)NAN);
         /* a time at either bound of its search is no fit and has no
-         * standard error (the curvature at a constraint is none); the
-         * shortest bound was not flagged (the sgfit review) */
+         * standard error (the curvature at a constraint is none): the
+         * shortest bound as well as the longest */
         add_num(b, "ar1_tau_s_se", tau_bound ? (double)NAN : c->baseline.e[ia].se[0]);
         add_ci(b, "ar1_tau_s", &c->baseline.e[ia], 0, tau_bound || !(c->baseline.e[ia].p[1] > 0.0));
         add_num(b, "ar1_tau_min_s", sg_ar1_tau_min(r->rate_hz));
@@ -438,8 +438,8 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
                 add_num(e, "z_held_out_before", r->tim.z[SG_HOLD][k]);
                 add_num(e, "z_held_out_after", r->tim.z_after[k]);
                 cJSON_AddBoolToObject(e, "held_out_within_noise", !r->tim.open[k]);
-                /* a jitter has no first event (it read 0, the zeroed
-                 * field, until 2026-11-29; the sgreport review) */
+                /* a jitter has no first event: null (its field, zeroed,
+                 * would read 0) */
                 add_num(e, "first_event_s", k == SG_TIM_JITTER ? (double)NAN : r->tim.first_t[k]);
                 cJSON_AddItemToArray(a, e);
             }
@@ -461,8 +461,8 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
                     const sg_cand_t *cd = &c->step[k].cand[c->step[k].selected];
                     int found = 0, kept = 0;
                     /* an effect refitted to zero (sg_prune_zero) is no
-                     * answer here either: it was ranked, with no channel
-                     * (the sgreport review, 2026-11-29) */
+                     * answer here either: ranked, it would have no
+                     * channel */
                     for (e2 = 0; e2 < c->nsel; e2++) {
                         kept |= c->sel_id[e2] == cd->id;
                     }
@@ -544,8 +544,8 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
             uo = cJSON_CreateObject();
             cJSON_AddStringToObject(uo, "channel", sg_channel_name(ch));
             /* not-tried: no effect of the catalogue was tried (--max-effects
-             * 0), as the summary says; it read no-effect, "a held-out gap no
-             * candidate reduces" (the sgreport review) */
+             * 0), as the summary says; not no-effect, "a held-out gap no
+             * candidate reduces", which would say some were */
             cJSON_AddStringToObject(uo, "reason", why == SG_UNCONF_NOT_HELD_OUT
                                                       ? "not-held-out"
                                                       : (r->ch[ch].nsteps == 0 ? "not-tried" : "no-effect"));

@@ -862,8 +862,9 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
              * of the Bonferroni level, has a tail 25 times the normal's).
              * Two twins are one degree of freedom: the null of S = 3
              * (each twin against the other two) needs it as the real
-             * needs two; nr >= 3 until 2026-12-01 left that null's raw
-             * t_1 squares, a mean G near 50 (the sgap review) */
+             * needs two; with nr >= 3 that null would keep its raw t_1
+             * squares, a mean G near 50 (test_simgap
+             * test_compare_null_three_twins) */
             zz = t_to_normal(zz, (double)(nr - 1));
         }
         if (z != NULL) {
@@ -913,11 +914,11 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
  * bias by inverting E[r^2] ~ 1/(S - 1) + rho^2 (1 - 1/(S - 1)), the chord
  * through the exact values at rho = 0 and 1. Between them the exact E[r^2]
  * (Pearson r of S normal pairs, a 2F1 series) lies below the chord, so rho^2
- * comes out low: 0.467 for 0.5 and 0.274 for 0.3 at S = 16 (a review,
- * 2026-12-01, scipy.special.hyp2f1; not changed: it would move G_crit
- * where this variance exceeds the null's own, and the committed results).
- * The first-order form rho^2 + (1 - rho^2)^2 / (S - 1), which this
- * comment named until then, is not what is inverted. */
+ * comes out low: 0.467 for 0.5 and 0.274 for 0.3 at S = 16
+ * (scipy.special.hyp2f1). The chord is kept: the exact inversion would move
+ * G_crit where this variance exceeds the null's own, and the committed
+ * results. The first-order form rho^2 + (1 - rho^2)^2 / (S - 1) is not
+ * what is inverted. */
 static double g_corr_var(const sg_plist_t *pl, const double *dev, int S)
 {
     size_t n = pl->n, i, j;

@@ -204,12 +204,11 @@ static int name_axis(const char *name, const char *stem, const char *axes)
  * Movella DOT CSV names otherwise or does not output (the names of the DOT
  * SDK's payloads; DOT user manual, XD0502P, 4.2): Roll, Pitch, Yaw (DOT:
  * Euler_X..Z), Quat_q0..q3 (DOT: Quat_W..Z), StatusWord, SampleTimeCoarse,
- * Mat[..] (the rotation matrix). Until 2026-12-01 the header was also
- * searched for DOT's own names (Euler_*, Quat_W..Z, ClipCountAcc/Gyr,
- * Cal_FreeAcc_*, FreeAcc_Compared_Result): a DOT CSV without one and with a
- * column of neither (an app's own) was read in ticks at 1 to 15 Hz; the
- * stamps tell it now (hx_mtmgr_stamps), and the names only what rules a
- * DOT out. */
+ * Mat[..] (the rotation matrix). DOT's own names (Euler_*, Quat_W..Z,
+ * ClipCountAcc/Gyr, Cal_FreeAcc_*, FreeAcc_Compared_Result) are not looked
+ * for: a DOT CSV without one and with a column of neither (an app's own)
+ * would still be read in ticks at 1 to 15 Hz; the stamps tell it
+ * (hx_mtmgr_stamps), and the names only what rules a DOT out. */
 static int mtmgr_own_name(const char *name)
 {
     static const char *const own[] = { "Roll", "Pitch", "Yaw", "StatusWord", "SampleTimeCoarse" };
@@ -471,10 +470,9 @@ int hx_mtmgr_stamps(hx_mtmgr_t *x, char *msg, size_t msg_size)
         /* an IMU's rate in us and none in ticks; or, under a header with
          * no name only MT Manager writes, a rate in ticks no MTi outputs
          * (below 1 Hz) and one of DOT's in us, down to its 1 Hz (0.01 Hz in
-         * ticks), which the IMU band misses below 20 Hz: a DOT at 10 Hz was
-         * read as an export at 0.1 Hz until 2026-11-30, and until
-         * 2026-12-01 when its header had no name only DOT writes and one of
-         * neither (an app's own column) */
+         * ticks), which the IMU band misses below 20 Hz: a DOT at 10 Hz
+         * would be read as an export at 0.1 Hz, also when its header has no
+         * name only DOT writes and one of neither (an app's own column) */
         x->us_like = x->comments == 0 && hz < HX_MTMGR_IMU_MIN_HZ &&
                      ((hz_us >= HX_MTMGR_IMU_MIN_HZ && hz_us <= HX_MTMGR_IMU_MAX_HZ) ||
                       (!x->mtmgr_names && hz < HX_MTMGR_MTI_MIN_HZ && hz_us >= HX_MTMGR_DOT_MIN_HZ));
