@@ -159,12 +159,16 @@ FNAV_WARN_UNUSED fnav_status_t fnav_allan_init(fnav_allan_t *a, const fnav_allan
 
 /**
  * Add one sample.
- * @param a  initialised estimator (not NULL: FNAV_ASSERT, a programmer error)
+ * @param a  initialised estimator
  * @param y  the sample (any unit; rate, specific force, ...)
- * @return FNAV_OK; FNAV_E_NANINF for a NaN/Inf sample and FNAV_E_RANGE
- *         for |y| > FNAV_INPUT_MAX_ABS (both ignored, state unchanged), and
- *         FNAV_E_RANGE when 2^32 - 2 samples were already pushed (their
- *         2^32 - 1 phase values are what fnav_allan_result_t.n_phase holds).
+ * @return FNAV_OK; FNAV_E_ARG for NULL a; FNAV_E_NANINF for a NaN/Inf
+ *         sample and FNAV_E_RANGE for |y| > FNAV_INPUT_MAX_ABS (both
+ *         ignored, state unchanged), and FNAV_E_RANGE when 2^32 - 2 samples
+ *         were already pushed (their 2^32 - 1 phase values are what
+ *         fnav_allan_result_t.n_phase holds); FNAV_E_STATE for an estimator
+ *         never initialised (zeroed, as static storage is) or whose
+ *         fnav_allan_init failed (nothing taken; a sample the checks above
+ *         reject is refused as such first).
  * ISR-safe for distinct objects; bounded time.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_allan_push(fnav_allan_t *a, fnav_real_t y);
@@ -177,7 +181,8 @@ uint32_t fnav_allan_samples(const fnav_allan_t *a);
 
 /**
  * Result at grid point i (0 .. fnav_allan_count() - 1, ascending tau).
- * @return FNAV_OK, or FNAV_E_ARG for a bad index / NULL.
+ * @return FNAV_OK; FNAV_E_ARG for a bad index / NULL; FNAV_E_STATE for an
+ *         estimator never initialised or whose fnav_allan_init failed.
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_allan_get(const fnav_allan_t *a, size_t i, fnav_allan_result_t *out);
 
