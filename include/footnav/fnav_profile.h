@@ -92,7 +92,8 @@ FNAV_WARN_UNUSED fnav_status_t fnav_profile_builtin(fnav_profile_t *p, fnav_prof
 /** Built-in profile by name ("navchip", "mtx", "shimmer", "generic-mems"); FNAV_E_ARG if unknown. */
 FNAV_WARN_UNUSED fnav_status_t fnav_profile_by_name(fnav_profile_t *p, const char *name);
 
-/** FNAV_OK when every value is finite and positive (noise, tau, sigma). */
+/** FNAV_OK when every value is finite and positive (rate_hz, noise, tau, sigma); else FNAV_E_CONFIG
+ *  (FNAV_E_ARG for NULL). */
 FNAV_WARN_UNUSED fnav_status_t fnav_profile_validate(const fnav_profile_t *p);
 
 #ifdef __cplusplus
