@@ -172,8 +172,9 @@ FNAV_WARN_UNUSED fnav_status_t fnav_allan_init(fnav_allan_t *a, const fnav_allan
  * ISR-safe for distinct objects; bounded time: on the Cortex-M4F with the
  * firmware's options at most 22,064 instructions for a push to each of 6
  * channels (`make firmware-bench FW_ICOUNT_SHIFT=6`, docs/firmware.md), and
- * 100 bytes of stack and memcpy's (push 8, push_rare 72, terms0 20: the
- * -fstack-usage of `make firmware`, build/arm/obj/src/fnav_allan.su).
+ * 144 bytes of stack at most (push 8, push_rare 72, memcpy counted as 64:
+ * `/usr/bin/python3 tests/support/stack_usage.py build/arm/obj/src
+ * fnav_allan_push` after `make firmware`).
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_allan_push(fnav_allan_t *a, fnav_real_t y);
 

@@ -24,9 +24,9 @@
  * at most 19,185 instructions for a push to each of 3 channels, `make
  * firmware-bench FW_ICOUNT_SHIFT=6`, docs/firmware.md) and 144 bytes of
  * stack (push 24, segment 40, fnav_fft_real_packed 24, fnav_fft_complex 56:
- * the -fstack-usage of `make firmware`, build/arm/obj/src/fnav_welch.su and
- * fnav_fft.su). fnav_welch_init() (the window and the FFT table, sinf/cosf)
- * belongs in thread context.
+ * `/usr/bin/python3 tests/support/stack_usage.py build/arm/obj/src
+ * fnav_welch_push` after `make firmware`). fnav_welch_init() (the window
+ * and the FFT table, sinf/cosf) belongs in thread context.
  */
 #ifndef FNAV_WELCH_H
 #define FNAV_WELCH_H
