@@ -1560,6 +1560,35 @@ static void test_not_initialised(void **state)
     assert_int_equal(fnav_allan_get(&a, 0, &r), FNAV_OK);
 }
 
+/* fnav_allan_init reads the configuration and its tau array only during the
+ * call (fnav_allan.h): the caller's array may be reused at once. */
+static void test_grid_copied(void **state)
+{
+    static fnav_allan_t a;
+    uint32_t tau[3] = { 1u, 2u, 4u };
+    fnav_allan_config_t cfg;
+    fnav_allan_result_t r;
+    size_t i;
+    int k;
+    (void)state;
+    cfg.tau = tau;
+    cfg.n_tau = 3;
+    assert_int_equal(fnav_allan_init(&a, &cfg), FNAV_OK);
+    tau[0] = 0u; /* the caller's array reused: invalid values now */
+    tau[1] = 0u;
+    tau[2] = 0u;
+    cfg.n_tau = 0;
+    for (k = 0; k < 100; k++) {
+        assert_int_equal(fnav_allan_push(&a, (fnav_real_t)(k % 5)), FNAV_OK);
+    }
+    assert_int_equal(fnav_allan_count(&a), 3u);
+    for (i = 0; i < 3; i++) {
+        assert_int_equal(fnav_allan_get(&a, i, &r), FNAV_OK);
+        assert_int_equal(r.tau, 1u << i);
+        assert_true(r.terms > 0u);
+    }
+}
+
 static void test_grid(void **state)
 {
     uint32_t g[128];
@@ -2518,6 +2547,7 @@ int main(void)
         cmocka_unit_test(test_config_errors),
         cmocka_unit_test(test_bad_samples_leave_state),
         cmocka_unit_test(test_not_initialised),
+        cmocka_unit_test(test_grid_copied),
         cmocka_unit_test(test_grid),
         cmocka_unit_test(test_edf_case2_table),
         cmocka_unit_test(test_edf_modified_table),

@@ -150,7 +150,9 @@ typedef struct {
 /**
  * Initialise an estimator.
  * @param a    estimator (caller-owned)
- * @param cfg  configuration, or NULL for fnav_allan_config_default
+ * @param cfg  configuration, or NULL for fnav_allan_config_default; *cfg
+ *             and its tau array are read only during the call (the grid is
+ *             kept in a's tau points): neither need outlive it
  * @return FNAV_OK; FNAV_E_ARG when a is NULL; FNAV_E_CONFIG when the grid is
  *         empty, too long, not strictly ascending or has a tau that
  *         fnav_allan_tau_valid() rejects (a is then left zeroed).
