@@ -373,7 +373,9 @@ fnav_status_t fnav_allan_push(fnav_allan_t *a, fnav_real_t y)
 {
     fnav_real_t d, t, x;
     uint32_t w, n;
-    FNAV_ASSERT(a != NULL);
+    if (a == NULL) {
+        return FNAV_E_ARG;
+    }
     if (!(fnav_fabs(y) <= FNAV_REAL_MAX)) {
         return FNAV_E_NANINF; /* NaN fails the comparison too */
     }
@@ -387,6 +389,13 @@ fnav_status_t fnav_allan_push(fnav_allan_t *a, fnav_real_t y)
         return FNAV_E_RANGE;
     }
     if (n == 0u) {
+        if (a->npt == 0u) {
+            /* never initialised (zeroed, as static storage is) or its init
+             * failed: an initialised estimator tracks at least one tau.
+             * Checked here, where only the first sample comes, so that the
+             * common push pays nothing for it */
+            return FNAV_E_STATE;
+        }
         a->y0 = y;
     }
     /* phase x_n = x_{n-1} + (y - y0), Kahan-compensated */
@@ -424,7 +433,13 @@ fnav_status_t fnav_allan_get(const fnav_allan_t *a, size_t i, fnav_allan_result_
     const fnav_allan_point_t *p;
     uint32_t k, m;
     fnav_real_t tau, so, sn;
-    if (a == NULL || out == NULL || i >= a->npt) {
+    if (a == NULL || out == NULL) {
+        return FNAV_E_ARG;
+    }
+    if (a->npt == 0u) {
+        return FNAV_E_STATE; /* never initialised, or its init failed */
+    }
+    if (i >= a->npt) {
         return FNAV_E_ARG;
     }
     p = &a->pt[i];

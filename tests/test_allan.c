@@ -1524,6 +1524,71 @@ static void test_bad_samples_leave_state(void **state)
     assert_true(isnan((double)r.avar));
 }
 
+/* An estimator never initialised (zeroed, as static storage is) or whose
+ * fnav_allan_init failed (it is then left zeroed) refuses samples with
+ * FNAV_E_STATE, as fnav_welch_push and fnav_nav_push do: it took them with
+ * FNAV_OK, tracked no tau and every fnav_allan_get said FNAV_E_ARG, so a
+ * failed init went unnoticed. NULL is FNAV_E_ARG (an FNAV_ASSERT before). */
+static void test_not_initialised(void **state)
+{
+    static fnav_allan_t a, zero;
+    static const uint32_t bad_order[] = { 4, 2 };
+    fnav_allan_config_t cfg;
+    fnav_allan_result_t r;
+    (void)state;
+    assert_int_equal(fnav_allan_push(NULL, FNAV_R(1.0)), FNAV_E_ARG);
+    assert_int_equal(fnav_allan_push(&a, FNAV_R(1.0)), FNAV_E_STATE);
+    assert_int_equal(fnav_allan_push(&a, FNAV_R(2.0)), FNAV_E_STATE);
+    assert_memory_equal(&a, &zero, sizeof a); /* nothing taken */
+    assert_int_equal(fnav_allan_samples(&a), 0u);
+    assert_int_equal(fnav_allan_get(&a, 0, &r), FNAV_E_STATE);
+    /* a sample it would reject anyway is refused as such first */
+    assert_int_equal(fnav_allan_push(&a, (fnav_real_t)NAN), FNAV_E_NANINF);
+    /* a failed init leaves it zeroed: refused the same way */
+    assert_int_equal(fnav_allan_init(&a, NULL), FNAV_OK);
+    assert_int_equal(fnav_allan_push(&a, FNAV_R(1.0)), FNAV_OK);
+    cfg.tau = bad_order;
+    cfg.n_tau = 2;
+    assert_int_equal(fnav_allan_init(&a, &cfg), FNAV_E_CONFIG);
+    assert_int_equal(fnav_allan_push(&a, FNAV_R(1.0)), FNAV_E_STATE);
+    assert_int_equal(fnav_allan_get(&a, 0, &r), FNAV_E_STATE);
+    /* initialised: taken, and a bad index stays FNAV_E_ARG */
+    assert_int_equal(fnav_allan_init(&a, NULL), FNAV_OK);
+    assert_int_equal(fnav_allan_push(&a, FNAV_R(1.0)), FNAV_OK);
+    assert_int_equal(fnav_allan_samples(&a), 1u);
+    assert_int_equal(fnav_allan_get(&a, fnav_allan_count(&a), &r), FNAV_E_ARG);
+    assert_int_equal(fnav_allan_get(&a, 0, &r), FNAV_OK);
+}
+
+/* fnav_allan_init reads the configuration and its tau array only during the
+ * call (fnav_allan.h): the caller's array may be reused at once. */
+static void test_grid_copied(void **state)
+{
+    static fnav_allan_t a;
+    uint32_t tau[3] = { 1u, 2u, 4u };
+    fnav_allan_config_t cfg;
+    fnav_allan_result_t r;
+    size_t i;
+    int k;
+    (void)state;
+    cfg.tau = tau;
+    cfg.n_tau = 3;
+    assert_int_equal(fnav_allan_init(&a, &cfg), FNAV_OK);
+    tau[0] = 0u; /* the caller's array reused: invalid values now */
+    tau[1] = 0u;
+    tau[2] = 0u;
+    cfg.n_tau = 0;
+    for (k = 0; k < 100; k++) {
+        assert_int_equal(fnav_allan_push(&a, (fnav_real_t)(k % 5)), FNAV_OK);
+    }
+    assert_int_equal(fnav_allan_count(&a), 3u);
+    for (i = 0; i < 3; i++) {
+        assert_int_equal(fnav_allan_get(&a, i, &r), FNAV_OK);
+        assert_int_equal(r.tau, 1u << i);
+        assert_true(r.terms > 0u);
+    }
+}
+
 static void test_grid(void **state)
 {
     uint32_t g[128];
@@ -2530,6 +2595,8 @@ int main(void)
         cmocka_unit_test(test_memory_bound),
         cmocka_unit_test(test_config_errors),
         cmocka_unit_test(test_bad_samples_leave_state),
+        cmocka_unit_test(test_not_initialised),
+        cmocka_unit_test(test_grid_copied),
         cmocka_unit_test(test_grid),
         cmocka_unit_test(test_edf_case2_table),
         cmocka_unit_test(test_edf_modified_table),

@@ -64,6 +64,148 @@ static void test_default_stance_is_detector_default(void **state)
     assert_true(a->min_zupt_cycle == b->min_zupt_cycle);
 }
 
+/* The valid range of every field of fnav_nav_config_t, as docs/navigation.md
+ * ("Configuration", "What fnav_nav_init accepts") states it: for each real
+ * field the last value accepted and the first refused at the boundary (the
+ * defaults elsewhere: lever and settling on), and NaN and +-Inf refused. */
+typedef struct {
+    const char *name;
+    size_t off;
+    fnav_real_t ok, bad;
+} cfg_range_t;
+
+#define CFG_RANGE(f, ok, bad) { #f, offsetof(fnav_nav_config_t, f), FNAV_R(ok), FNAV_R(bad) }
+
+static void test_config_ranges(void **state)
+{
+    static fnav_nav_t nav;
+    static const cfg_range_t reals[] = {
+        CFG_RANGE(gravity_mps2, 1e-3, 0.0),
+        CFG_RANGE(accel_motion_noise_mps2_rthz, 0.0, -1e-6),
+        CFG_RANGE(gyro_motion_noise_rps_rthz, 0.0, -1e-6),
+        CFG_RANGE(zupt_sigma_mps, 1e-6, 0.0),
+        CFG_RANGE(lever_sd_m, 1e-6, 0.0),
+        CFG_RANGE(lever_rw_m_rts, 0.0, -1e-6),
+        CFG_RANGE(settle_sd_mps, 1e-6, 0.0),
+        CFG_RANGE(settle_tau_s, 1e-6, 0.0),
+        CFG_RANGE(zaru_sigma_rps, 1e-6, 0.0),
+        CFG_RANGE(zaru_gate, 0.0, -1e-6),
+        CFG_RANGE(zaru_after_s, 0.0, -1e-6),
+        CFG_RANGE(realign_min_s, 5.0, 5.001), /* at most align.max_still_s (5) */
+        CFG_RANGE(realign_min_s, 0.0, -1e-6),
+        CFG_RANGE(tilt_sd_rad, 1e-6, 0.0),
+        CFG_RANGE(yaw_sd_rad, 1e-6, 0.0),
+        CFG_RANGE(gyro_bias_sd_rps, 1e-6, 0.0),
+        CFG_RANGE(accel_bias_sd_mps2, 1e-6, 0.0),
+        CFG_RANGE(max_gap_s, 1e-6, 0.0),
+        CFG_RANGE(diverge_speed_mps, 1e-6, 0.0),
+        CFG_RANGE(stance.rate_hz, 0.0, -1e-6),
+        CFG_RANGE(stance.window_s, 1e-6, 0.0),
+        CFG_RANGE(stance.sigma_a_mps2, 1e-6, 0.0),
+        CFG_RANGE(stance.sigma_g_rps, 1e-6, 0.0),
+        CFG_RANGE(stance.gamma, 1e-6, 0.0),
+        CFG_RANGE(stance.gyro_thresh_rps, 1e-6, 0.0),
+        CFG_RANGE(stance.accel_thresh_mps2, 1e-6, 0.0),
+        CFG_RANGE(stance.floor_window_s, 1e-6, 0.0),
+        CFG_RANGE(stance.margin_dec, 0.0, -1e-6),
+        CFG_RANGE(stance.adapt_max_ratio, 1.0, 0.999),
+        CFG_RANGE(stance.min_zupt_s, 0.0, -1e-6),
+        CFG_RANGE(stance.min_stance_s, 0.0, -1e-6),
+        CFG_RANGE(stance.min_swing_s, 0.0, -1e-6),
+        CFG_RANGE(stance.event_window_s, 1e-6, 0.0),
+        CFG_RANGE(stance.min_zupt_cycle, 1.0, 1.001),
+        CFG_RANGE(stance.min_zupt_cycle, 0.0, -1e-6),
+        CFG_RANGE(align.min_still_s, 0.2, 0.0), /* at least short_still_s (0.2) */
+        CFG_RANGE(align.max_still_s, 3.0, 2.999), /* at least realign_min_s (3) and min_still_s (0.5) */
+        CFG_RANGE(align.short_still_s, 0.5, 0.501), /* in (0, min_still_s] */
+        CFG_RANGE(align.short_still_s, 1e-6, 0.0),
+        CFG_RANGE(align.still_ratio, 1.001, 1.0),
+        CFG_RANGE(align.gyro_bias_prior_sd_rps, 0.0, -1e-6),
+        CFG_RANGE(profile.rate_hz, 1e-6, 0.0),
+        CFG_RANGE(profile.accel_noise_mps2_rthz[0], 1e-6, 0.0),
+        CFG_RANGE(profile.gyro_tau_s[2], 1e-6, 0.0),
+        CFG_RANGE(profile.gyro_bias_sigma_rps[1], 1e-6, 0.0),
+    };
+    const fnav_real_t nonfinite[3] = { (fnav_real_t)NAN, (fnav_real_t)INFINITY, -(fnav_real_t)INFINITY };
+    size_t i, k;
+    fnav_nav_config_t c;
+    (void)state;
+    assert_int_equal(fnav_nav_config_default.lever, 1);
+    assert_int_equal(fnav_nav_config_default.settle, 1);
+    for (i = 0; i < sizeof reals / sizeof reals[0]; i++) {
+        fnav_real_t *f = (fnav_real_t *)(void *)((unsigned char *)&c + reals[i].off);
+        c = fnav_nav_config_default;
+        *f = reals[i].ok;
+        if (fnav_nav_init(&nav, &c) != FNAV_OK) {
+            fail_msg("%s = %g refused", reals[i].name, (double)reals[i].ok);
+        }
+        *f = reals[i].bad;
+        if (fnav_nav_init(&nav, &c) != FNAV_E_CONFIG) {
+            fail_msg("%s = %g not refused", reals[i].name, (double)reals[i].bad);
+        }
+        for (k = 0; k < 3; k++) {
+            *f = nonfinite[k];
+            if (fnav_nav_init(&nav, &c) != FNAV_E_CONFIG) {
+                fail_msg("%s = %g not refused", reals[i].name, (double)nonfinite[k]);
+            }
+        }
+    }
+    c = fnav_nav_config_default;
+    c.realign_min_s = FNAV_R(0.0);
+    c.align.max_still_s = FNAV_R(0.5);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    c.align.max_still_s = FNAV_R(0.499);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* with the detector's rate given, a time jump must be longer than a gap */
+    c = fnav_nav_config_default;
+    c.stance.rate_hz = FNAV_R(100.0);
+    c.max_gap_s = FNAV_R(0.016);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    c.max_gap_s = FNAV_R(0.015);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* the switches: 0 or 1; the counts and enumerations */
+    c = fnav_nav_config_default;
+    for (k = 0; k < 2; k++) {
+        int bad = k == 0 ? -1 : 2;
+        c = fnav_nav_config_default;
+        c.lever = bad;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c = fnav_nav_config_default;
+        c.settle = bad;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c = fnav_nav_config_default;
+        c.zaru = bad;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c = fnav_nav_config_default;
+        c.closed_form = bad;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+        c = fnav_nav_config_default;
+        c.stance.adaptive = bad;
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    }
+    c = fnav_nav_config_default;
+    c.diverge_undone = 1u;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+    c.diverge_undone = 0u;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c = fnav_nav_config_default;
+    c.sample_type = (fnav_sample_type_t)7;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c = fnav_nav_config_default;
+    c.bias_model = (fnav_bias_model_t)7;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    c = fnav_nav_config_default;
+    c.stance.detector = (fnav_detector_t)7;
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* the lever's and the settling's values are not read when they are off */
+    c = fnav_nav_config_default;
+    c.lever = 0;
+    c.lever_sd_m = FNAV_R(0.0);
+    c.settle = 0;
+    c.settle_tau_s = FNAV_R(0.0);
+    assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+}
+
 static void test_config(void **state)
 {
     static fnav_nav_t nav;
@@ -2520,6 +2662,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_default_stance_is_detector_default),
         cmocka_unit_test(test_config),
+        cmocka_unit_test(test_config_ranges),
         cmocka_unit_test(test_config_reaches_parts),
         cmocka_unit_test(test_stream_contract),
         cmocka_unit_test(test_push_after_finish),

@@ -51,7 +51,9 @@ typedef struct {
     fnav_real_t euler_rad[3];        /**< roll, pitch, yaw (ZYX), rad */
     fnav_real_t gyro_bias_rps[3];    /**< gyroscope bias estimate, rad/s */
     fnav_real_t accel_bias_mps2[3];  /**< accelerometer bias estimate, m/s^2 */
-    fnav_real_t p_diag[15];          /**< covariance diagonal, state order of fnav_ukf.h */
+    fnav_real_t p_diag[15];          /**< covariance diagonal, the output order of fnav_ukf.h: attitude
+                                          error about n's x, y, z (rad^2), velocity ((m/s)^2), position
+                                          (m^2), gyro bias ((rad/s)^2), accel bias ((m/s^2)^2) */
     fnav_real_t lever_m[3];          /**< estimated pivot-to-IMU lever in b, m (0 when not estimated) */
 } fnav_nav_frame_t;
 

@@ -86,13 +86,17 @@ const fnav_profile_paper_row_t *fnav_profile_paper_table(fnav_profile_id_t id);
 FNAV_WARN_UNUSED fnav_status_t fnav_profile_from_paper(fnav_profile_t *p, const char *name, double rate_hz,
                                                        const fnav_profile_paper_row_t rows[6]);
 
-/** A built-in profile. @return FNAV_OK or FNAV_E_ARG for an unknown id. */
+/** A built-in profile. @return FNAV_OK or FNAV_E_ARG for an unknown id.
+ *  Converted from the paper's table in double (fnav_profile_from_paper), once:
+ *  on a single-precision FPU (Cortex-M4F) that links the soft-float double
+ *  helpers (docs/firmware.md, "Another sensor model"). */
 FNAV_WARN_UNUSED fnav_status_t fnav_profile_builtin(fnav_profile_t *p, fnav_profile_id_t id);
 
 /** Built-in profile by name ("navchip", "mtx", "shimmer", "generic-mems"); FNAV_E_ARG if unknown. */
 FNAV_WARN_UNUSED fnav_status_t fnav_profile_by_name(fnav_profile_t *p, const char *name);
 
-/** FNAV_OK when every value is finite and positive (noise, tau, sigma). */
+/** FNAV_OK when every value is finite and positive (rate_hz, noise, tau, sigma); else FNAV_E_CONFIG
+ *  (FNAV_E_ARG for NULL). */
 FNAV_WARN_UNUSED fnav_status_t fnav_profile_validate(const fnav_profile_t *p);
 
 #ifdef __cplusplus

@@ -113,9 +113,11 @@ for build in float double; do
     done
 done
 # A whole program also builds for the Cortex-M4F as docs/firmware.md ("In
-# your own build") says: the core and the program with the firmware's
-# architecture flags, newlib-nano and its I/O stubs (nosys), linked.
+# your own build") says (keep the flags in step with its command): the core
+# and the program with the firmware's architecture flags, unused sections
+# collected, newlib-nano and its I/O stubs (nosys), linked.
 ARM_CC=${ARM_CC:-arm-none-eabi-gcc}
+ARM_NM=${ARM_NM:-arm-none-eabi-nm}
 if command -v "$ARM_CC" >/dev/null 2>&1; then
     i=1
     while [ "$i" -le "$count" ]; do
@@ -123,8 +125,22 @@ if command -v "$ARM_CC" >/dev/null 2>&1; then
         if grep -q 'int main(' "$T/snip_$i.c"; then
             # shellcheck disable=SC2086
             if "$ARM_CC" -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard -Os $WARN -Iinclude \
-                --specs=nano.specs --specs=nosys.specs -o "$T/arm_s$i.elf" "$T/snip_$i.c" src/*.c -lm >"$T/err" 2>&1; then
+                -ffunction-sections -fdata-sections -Wl,--gc-sections --specs=nano.specs --specs=nosys.specs -o "$T/arm_s$i.elf" "$T/snip_$i.c" src/*.c -lm >"$T/err" 2>&1; then
                 pass "$where: the C program builds for the Cortex-M4F"
+                # only what the program reaches is in the image: the port
+                # example navigates, so none of the core's Allan, Welch or
+                # wire-protocol code (fnav_allan_edf_var: double arithmetic,
+                # soft-float on the M4F) may be linked in
+                if ! command -v "$ARM_NM" >/dev/null 2>&1; then
+                    echo "SKIP test_doc_snippets.sh: no $ARM_NM, the image's symbols not checked"
+                elif grep -q 'fnav_allan_\|fnav_welch_\|fnav_wire_' "$T/snip_$i.c"; then
+                    :
+                elif "$ARM_NM" "$T/arm_s$i.elf" | grep -E ' [Tt] (fnav_allan_|fnav_welch_|fnav_wire_)' >"$T/unused"; then
+                    fail "$where: the Cortex-M4F image holds $(wc -l <"$T/unused") core functions the program never calls\
+ (e.g. $(awk 'NR == 1 { print $3 }' "$T/unused")): the build lacks -ffunction-sections -fdata-sections -Wl,--gc-sections"
+                else
+                    pass "$where: the Cortex-M4F image holds none of the core functions the program never calls"
+                fi
             else
                 fail "$where: the C program does not build for the Cortex-M4F"; cat "$T/err"
             fi
