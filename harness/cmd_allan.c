@@ -2396,8 +2396,8 @@ int hx_cmd_allan(int argc, char **argv)
             return HX_EXIT_USAGE;
         }
         /* it prints one table to standard output and reads no option: an
-         * option given with it (--json FILE, --out FILE) was ignored, exit 0
-         * with no file written */
+         * option given with it (--json FILE, --out FILE) is refused, not
+         * ignored with exit 0 and no file written */
         for (k = 0; k_opts[k].name != NULL; k++) {
             if (a.count[k] > 0 && strcmp(k_opts[k].name, "--paper-tables") != 0) {
                 hx_error(CMD, "--paper-tables prints its table to standard output and takes no other option (%s)",

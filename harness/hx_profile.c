@@ -145,8 +145,9 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
             }
             p->rate_hz = (fnav_real_t)v;
             if (!(p->rate_hz > FNAV_R(0.0))) {
-                /* 1e-50 is 0 in float: said at its line (it was "a value
-                 * is zero ... in the float build", no line, no key) */
+                /* 1e-50 is 0 in float: said at its line, with its key (not
+                 * "a value is zero ... in the float build", no line, no
+                 * key) */
                 snprintf(err, err_size, "%s:%d: rate_hz '%s' is 0 in the %s build (out of its range)", path, lineno,
                          val, FNAV_USE_DOUBLE ? "double" : "float");
                 fclose(f);
