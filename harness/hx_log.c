@@ -386,8 +386,8 @@ static int parse_time_ns(const char *s, int k, int64_t *out)
     }
     while (isdigit((unsigned char)*p)) {
         /* beyond 9e9 s, where int64 ns would overflow: said below unless an
-         * exponent follows ("100000000000000000000e-15" is 1e5 s; it was
-         * refused here before the exponent was seen) */
+         * exponent follows ("100000000000000000000e-15" is 1e5 s, not
+         * refused here before the exponent is seen) */
         if (over || ip > (lim - (*p - '0')) / 10) {
             over = 1;
         } else {
@@ -877,8 +877,8 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
  * n header fields f, set in r in that order, r->ncols_needed with them,
  * up to the first name that is required and missing: its index, kept in
  * r->missing_col; -1 when none is. A name --columns gave is required, also
- * temp's and t's with a rate given (they were dropped without a word); t
- * is required when time_required. */
+ * temp's and t's with a rate given (not dropped without a word); t is
+ * required when time_required. */
 static int find_columns(hx_reader_t *r, const char *const names[8], char **f, int n, int time_required)
 {
     int i;
