@@ -162,8 +162,8 @@ typedef struct {
 } run_t;
 
 /* An error of the input that stops the reading: said, and kept for the
- * JSON's `error` (it had no `complete` nor `error`; the JSON review,
- * 2026-11-30) */
+ * JSON's `error` (beside `complete`), so that the JSON tells a record read
+ * in part */
 static void input_fail(run_t *R, const char *fmt, ...)
 {
     va_list ap;
@@ -228,10 +228,9 @@ typedef struct {
 
 /* Split a list option's value into L, refusing an empty element (a comma
  * at either end, or two together) and an element given twice, the option
- * named: until 2026-11-29 --m 1,10, and --channels ax, ran as if the
- * comma were not there and --deviation mdev,mdev as mdev, while
- * --channels ax,ax was refused (the cli review). 0, or -1 with the error
- * printed (a usage error). */
+ * named, for every list option alike: otherwise --m 1,10, and --channels
+ * ax, would run as if the comma were not there and --deviation mdev,mdev
+ * as mdev. 0, or -1 with the error printed (a usage error). */
 static int split_list(const char *opt, const char *list, list_t *L)
 {
     const size_t len = strlen(list);
@@ -503,9 +502,8 @@ static void motion_push(run_t *R, const fnav_sample_t *s)
         const double n = (double)R->win_fill;
         double var[4];
         /* the same window tells a walk (replay's and info's test of the
-         * stamps' seconds; the units review, 2026-11-30: allan judged no
-         * walk, and a walk in rad/s read with --units gyro=deg/s was told
-         * "multiply by pi/180") */
+         * stamps' seconds), so that a walk in rad/s read with --units
+         * gyro=deg/s is not told "multiply by pi/180" */
         hx_walk_window(&R->walk, (long)R->win_fill, R->win_sum[3], R->win_sq[3], R->win_off);
         R->win_off = 0;
         for (i = 0; i < 4; i++) {
@@ -541,8 +539,8 @@ static void motion_push(run_t *R, const fnav_sample_t *s)
  * or |f| spreads by more than HX_ALLAN_DISTURBED_RATIO times the median
  * window's, those already counted as moving left out. A touch of 0.1 rad/s
  * and 0.2 m/s^2 for 0.5 s in 30 minutes of ADIS16405 log 1 (noise spread
- * 0.012 rad/s) stayed below the moving marks and was fitted, without a
- * word, as a gz bias of 0.096 deg/s with T = 0.3 s (the static review). */
+ * 0.012 rad/s) stays below the moving marks and, without the check, would
+ * be fitted without a word as a gz bias of 0.096 deg/s with T = 0.3 s. */
 /* The median window's rate and |f| spread (med[0], med[1]) for the
  * disturbance check; -1 when there are too few windows, too short ones, or
  * their spreads were not kept (out of memory). */
@@ -612,8 +610,8 @@ static void disturbed_check(const run_t *R, const char *path)
 /* A static log may be slow, so its rate is no unit error (as replay's is);
  * but one below 1 Hz that a time column in milliseconds, microseconds or
  * nanoseconds explains (20 Hz to 100 kHz once divided) is warned about:
- * 30 minutes of ADIS16405 log 1 with t in ms read as 0.1 Hz without a word,
- * tau 1000 times and sigma_v 31.6 times too large (the static review). */
+ * 30 minutes of ADIS16405 log 1 with t in ms reads as 0.1 Hz, tau 1000
+ * times and sigma_v 31.6 times too large, which would go without a word. */
 static int slow_check(const char *path, double rate_hz, const hx_csv_layout_t *want)
 {
     char msg[320];
@@ -636,7 +634,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
     double stamp_rate; /* the rate the stamps are checked against: the log's own, not an overriding --rate */
     /* the first HX_STAMPS_PROBE_N stamps, for the test of stamps in bursts
      * as replay's (none: --rate, or out of memory); a streaming command,
-     * it held every stamp until the review of 2026-11-30 */
+     * it does not hold every stamp */
     int64_t *stamps = rate_opt > 0.0 ? NULL : (int64_t *)malloc(HX_STAMPS_PROBE_N * sizeof *stamps);
     size_t n_stamps = 0;
     int i, rc = 0;
@@ -682,8 +680,8 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
              * the ADIS log at --rate 400, said as non-uniform sampling).
              * Stamps coarser than the period (398 Hz printed to the
              * millisecond reads 2 and 3 ms) may differ by their resolution
-             * as well: every interval of such a uniform log was counted (as
-             * psd's, 2026-11-29; the gcd so far is never below the final one) */
+             * as well, or every interval of such a uniform log would be
+             * counted (as psd's; the gcd so far is never below the final one) */
             irregular += hx_interval_irregular(s.t_ns - t_prev, stamp_rate, res_ns);
         }
         if (R->n == 0) {
@@ -742,8 +740,7 @@ static int read_log(run_t *R, const hx_args_t *a, const char *path, double rate_
         if (!hx_nav_bursts_warn(CMD, path, m->format, stamps, n_stamps, (size_t)R->n > n_stamps,
                                 "tau, sigma_v and the profile are read at", R->rate_hz,
                                 m->rate_nominal && m->rate_hz > 0.0 && R->rate_hz == m->rate_hz)) {
-            /* a stated rate the stamps contradict, as info's (without a
-             * word until 2026-12-01) */
+            /* a stated rate the stamps contradict, warned about as info's */
             hx_stated_rate_warn(CMD, path, m, stamps, n_stamps, "tau, sigma_v and the profile are read at");
         }
     }
@@ -832,8 +829,8 @@ static char *skip_sep(char *p)
 
 /* A series' read error, or, while no number has been read and the file's
  * first bytes are binary (@p binary, else NULL), the binary data named as
- * the readers name it (a PNG given as a series said "plot.png:2: not a
- * number", its first line taken for a header; 2026-12-02). */
+ * the readers name it (not "plot.png:2: not a number" for a PNG given as a
+ * series, its first line taken for a header). */
 static void series_fail(run_t *R, const char *binary, const char *fmt, ...)
 {
     va_list ap;
@@ -995,8 +992,8 @@ static int read_series(run_t *R, const char *path, int phase, long column)
     fclose(f);
     if (blanks > 0) {
         /* a blank line is no sample: if one stood for a missing value,
-         * every later value is one sample early (a sensor-characterisation
-         * review, 2026-11-30: they were skipped without a word) */
+         * every later value is one sample early, so the skipped lines are
+         * warned about, not skipped without a word */
         hx_warn(CMD, "%s: %ld blank line%s among the numbers (the first at line %ld) %s skipped, not read as "
                      "samples: if one stands for a missing value, every later value is one sample early",
                 path, blanks, blanks == 1 ? "" : "s", blank_first, blanks == 1 ? "is" : "are");
@@ -1094,8 +1091,8 @@ static void deviation_tables(const run_t *R, chan_t *ch)
 }
 
 /* A time in seconds for the text output: 3 significant digits, but a
- * whole number from 1000 s on ("1200 s", where %.3g printed "1.2e+03 s"
- * on a long record; a sensor-characterisation review, 2026-11-30). */
+ * whole number from 1000 s on ("1200 s", where %.3g would print "1.2e+03
+ * s" on a long record). */
 static const char *fmt_s(char *b, size_t n, double v)
 {
     if (isfinite(v) && fabs(v) >= 999.5 && fabs(v) < 1e15) {
@@ -1276,8 +1273,8 @@ static int in_range(const run_t *R, const fnav_allan_result_t *r)
 
 /* A Fig. 7 simulation's point within --max-tau-frac of its own record, as
  * the measured curve's within the log's: with --sim-samples below the log's
- * length the simulated curves were drawn to the log's limit, past their own
- * 10 %, down to a term or two (the fresh-eyes allan review, 2026-12-01). */
+ * length the log's limit would draw the simulated curves past their own
+ * 10 %, down to a term or two. */
 static int sim_in_range(const run_t *R, const fnav_allan_result_t *r)
 {
     return r->terms > 0u && (double)r->tau <= R->tau_max_frac * (double)R->nsim * (1.0 + 1e-9);
@@ -1394,8 +1391,8 @@ static void print_params(const run_t *R)
            "at the measured minimum):\n",
            R->rate_hz, fmt_s(b1, sizeof b1, tau_max_samples(R) / R->rate_hz));
     /* tau is in samples, as in the paper's tables, and the column says so:
-     * right after tables whose tau_s is in seconds, "tau 1" read as 1 s
-     * (a user review, 2026-11-29) */
+     * right after tables whose tau_s is in seconds, "tau 1" would read as
+     * 1 s */
     printf("%-6s %-6s | %-57s | %-57s\n", "", "", "paper III.C as written (eqs. 5-6, sigma_bias per eq. 4)",
            "corrected: LSQ fit of white + AR(1) Allan variance");
     printf("%-6s %-6s | %10s %12s %10s %10s %5s %6s | %10s %12s %10s %10s %5s %6s\n", "chan", "unit", "sigma_v",
@@ -1552,9 +1549,8 @@ static int write_csv(const run_t *R, const char *path)
         }
     }
     if (hx_out_close(f) != 0) {
-        /* the reason, as every other output's error gives it (it said
-         * "write failed" alone; a user review, 2026-12-02): errno of the
-         * failed write or close */
+        /* the reason, as every other output's error gives it, not "write
+         * failed" alone: errno of the failed write or close */
         char why[128];
         hx_error(CMD, "%s: write failed%s", strcmp(path, "-") == 0 ? "standard output" : path,
                  hx_errno_note(errno, why, sizeof why));
@@ -1619,8 +1615,8 @@ static int write_json(const run_t *R, const char *path)
     int i, rc;
     size_t k;
     cJSON_AddStringToObject(root, "source", R->source);
-    /* the name replay's JSON gives the input file; source kept as its alias
-     * (docs/allan.md, "JSON"; the only key until 2026-12-01) */
+    /* the name replay's JSON gives the input file; source, the older key,
+     * kept as its alias (docs/allan.md, "JSON") */
     cJSON_AddStringToObject(root, "log", R->source);
     cJSON_AddStringToObject(root, "sensor", R->sensor);
     cJSON_AddNumberToObject(root, "rate_hz", R->rate_hz);
@@ -1790,9 +1786,8 @@ static int write_plot(const run_t *R, const char *path)
         const int naf = plot_block(p.gp, "af", R, ch, 3);
         const int npb = plot_block(p.gp, "pb", R, ch, 4);
         /* an unresolved fit is no model of the sensor: the legend says so,
-         * and the bound the profile holds instead is drawn (the plot drew
-         * such a fit as the corrected model and left the bound out; a user
-         * review, 2026-11-30) */
+         * and the bound the profile holds instead is drawn, not such a fit
+         * as the corrected model without the bound */
         const char *unres = npb > 0 ? " (unresolved)" : "";
         fprintf(p.gp, "set title '%s'\n", hx_gp_str(q, sizeof q, ch->label));
         fprintf(p.gp, "set ylabel 'ADEV [%s]'\n", hx_gp_str(q, sizeof q, ch->unit));
@@ -1990,9 +1985,9 @@ static void motion_report(const run_t *R, const char *path, int profile)
  * local slope: the uncertainty if the part were absent; the measured slope
  * reads white noise as white phase noise often enough at long tau, EDF 20x
  * too high). The fit's 5 % floor alone was no test: at EDF 10-50 the
- * measured ADEV is uncertain by 10-22 %, and a fit of pure white noise raised
- * its AR(1) above the white part by 5 % in 26 of 100 records of 10-1000 s
- * (found by the ident review). */
+ * measured ADEV is uncertain by 10-22 %, and a fit of pure white noise raises
+ * its AR(1) above the white part by 5 % in 26 of 100 records of
+ * 10-1000 s. */
 static int part_resolved(const run_t *R, const fnav_allan_result_t *r, double all, const hx_noise_model_t *null)
 {
     const double m = (double)r->tau, fl = hx_allan_fit_opts_default.model_floor;
@@ -2026,8 +2021,8 @@ static int ar1_identified(const run_t *R, const chan_t *ch, double tau_long_s)
     size_t j;
     /* a bump within two decades of one sample is the sensor's own filtering,
      * not a bias (HX_ALLAN_AR1_MIN_BUMP_SAMPLES): 10 minutes of ADIS16405
-     * log 1 fitted gx with T = 1 sample and a white noise of 0.0279
-     * deg/s/sqrt(Hz) for the log's 0.040 (a user review, 2026-11-29) */
+     * log 1 fit gx with T = 1 sample and a white noise of 0.0279
+     * deg/s/sqrt(Hz) for the log's 0.040 */
     if (!ch->id.fit_ok || !(bump_s <= tau_long_s) || !(bump_s * R->rate_hz >= HX_ALLAN_AR1_MIN_BUMP_SAMPLES)) {
         return 0;
     }
@@ -2045,7 +2040,7 @@ static int ar1_identified(const run_t *R, const chan_t *ch, double tau_long_s)
         /* the white part too must show somewhere: a fit that traded it for
          * an AR(1) of about a sample (10 s of ADIS16405 log 1: ay white
          * 5.2e-9 m/s^2/sqrt(Hz), T = 0.0078 s) is white noise in disguise,
-         * not an identified bias (a review, 2026-11-29) */
+         * not an identified bias */
         white_seen |= part_resolved(R, r, all, &nw);
     }
     return ar1_seen && white_seen;
@@ -2127,8 +2122,7 @@ static int profile_model(const run_t *R, const chan_t *ch, hx_noise_model_t *m)
 /* The error for a channel with no identification at all. After the
  * time-unit warning (stamps in ms read as 0.1 Hz) that is the likely cause:
  * below 1 Hz the shortest tau is past the 1 s the white noise is read at,
- * and "too little data?" sent the user to the record's length (a user
- * review, 2026-11-29). */
+ * and "too little data?" would send the user to the record's length. */
 /* The samples the paper's white noise, the ADEV at 1 s, needs: twice the
  * first grid tau at or above 1 s (a level-0 term needs 2 m + 1 phase
  * values); 0 when the grid ends below 1 s. */
@@ -2152,8 +2146,8 @@ static void no_identification(const run_t *R, const char *path, const chan_t *ch
                       "written",
                  path, ch->name, R->rate_hz, 1.0 / R->rate_hz);
     } else if (one_s_needs(R) > (double)R->n) {
-        /* "(too little data?)" left the user to guess how much is enough (a
-         * user review, 2026-11-30) */
+        /* how much is enough, said ("(too little data?)" would leave the
+         * user to guess) */
         const double m1 = one_s_needs(R) / 2.0;
         hx_error(CMD, "%s: no identification for %s: the record, %.3g s (%lu samples), is too short: the white noise "
                       "is read at tau = 1 s, whose Allan point (%.3g s, m = %.0f) needs %.0f samples (%.3g s); record "
@@ -2167,8 +2161,8 @@ static void no_identification(const run_t *R, const char *path, const chan_t *ch
 
 /* Why the fit's AR(1) is not what the profile takes (ar1_resolved() false),
  * naming the test that failed and the limit it used: "longest tau 287 s"
- * beside a table that said "tau <= 60 s" left the reader to guess which
- * limit the identification keeps to (a user review, 2026-11-29). */
+ * beside a table that says "tau <= 60 s" would leave the reader to guess
+ * which limit the identification keeps to. */
 static void ar1_refusal(const run_t *R, const chan_t *ch, double tau_long_s, char *why, size_t n)
 {
     const double fit_s = tau_max_samples(R) / R->rate_hz, bump_s = 1.89 * ch->id.fit.gm_tau_s;
@@ -2242,11 +2236,11 @@ static int write_profile(const run_t *R, const char *path, const char *name)
             }
             ar1_refusal(R, ch, tau_long_s, why, sizeof why);
             /* which way it bounds: "bound T = 173 s" on a channel whose T is
-             * 720 s read as an upper bound (a user review, 2026-11-29); it is
-             * the AR(1) whose bump sits on the minimum, no bound on sigma */
+             * 720 s would read as an upper bound; it is the AR(1) whose bump
+             * sits on the minimum, no bound on sigma */
             if (bound_at_floor(R, ch)) {
-                /* t_BS / 1.89 under the floor: T = 0.24 s was stated for a
-                 * fit refused for its T under 0.53 s (2026-11-30) */
+                /* t_BS / 1.89 under the floor: the raised T is stated, not
+                 * T = 0.24 s for a fit refused for its T under 0.53 s */
                 char t0[32], bb[32];
                 hx_warn(CMD, "%s: %s; the profile holds the white noise %.3g %s/sqrt(Hz) (the ADEV at 1 s; %s) and the "
                              "Gauss-Markov bound T = %s s (raised to the floor of %.0f samples from t_BS / 1.89 = %s "
@@ -2308,9 +2302,9 @@ static int write_profile(const run_t *R, const char *path, const char *name)
     }
     if (nfallback > 0 && R->rate_hz > tau_max_samples(R) * (1.0 + 1e-9)) {
         /* the bound's white noise, the ADEV at 1 s, lies beyond the tenth
-         * of the record the identification keeps to: a 5 s log wrote a
-         * profile from an Allan point of EDF 4, exit 0, without a word (a
-         * user review, 2026-11-30) */
+         * of the record the identification keeps to: a 5 s log writes a
+         * profile from an Allan point of EDF 4, which would otherwise go
+         * without a word, exit 0 */
         hx_warn(CMD, "%s: the white noise of %d channel%s (the bound's, above) is the ADEV at 1 s, beyond the longest "
                      "tau the identification keeps to, %.3g s (--max-tau-frac of the %.3g-s record): it rests on a "
                      "few averages; record %.3g s or more, far longer for the bias (docs/workflow.md)",
@@ -2388,8 +2382,8 @@ static int paper_tables(void)
 /* The exit status after one more failure: an output that could not be
  * written (HX_EXIT_IO) decides over bad input or a refused profile
  * (HX_EXIT_DATA), which says that every output was written; the outputs
- * after a failure are still written (docs/allan.md, "Command"). Until
- * 2026-12-02 the last failure set decided. */
+ * after a failure are still written (docs/allan.md, "Command"), so the
+ * status does not depend on which failure came last. */
 static int worse_exit(int exit_code, int failure)
 {
     if (exit_code == HX_EXIT_IO || (exit_code == HX_EXIT_DATA && failure != HX_EXIT_IO)) {
@@ -2429,8 +2423,8 @@ int hx_cmd_allan(int argc, char **argv)
             return HX_EXIT_USAGE;
         }
         /* it prints one table to standard output and reads no option: an
-         * option given with it (--json FILE, --out FILE) was ignored, exit 0
-         * with no file written */
+         * option given with it (--json FILE, --out FILE) is refused, not
+         * ignored with exit 0 and no file written */
         for (k = 0; k_opts[k].name != NULL; k++) {
             if (a.count[k] > 0 && strcmp(k_opts[k].name, "--paper-tables") != 0) {
                 hx_error(CMD, "--paper-tables prints its table to standard output and takes no other option (%s)",
@@ -2451,8 +2445,8 @@ int hx_cmd_allan(int argc, char **argv)
         if (hx_output_is_input(CMD, series != NULL ? series : a.pos[0], &a, outs)) {
             return HX_EXIT_USAGE;
         }
-        /* written after the whole record: checked now (they were found
-         * unwritable at the end, after minutes on a long log; 2026-11-30) */
+        /* written after the whole record: checked now, not found
+         * unwritable at the end, after minutes on a long log */
         if (hx_check_outputs(CMD, &a, files, pngs) != 0) {
             return HX_EXIT_IO;
         }
@@ -2465,8 +2459,8 @@ int hx_cmd_allan(int argc, char **argv)
     }
     if (hx_arg(&a, "--unit") != NULL &&
         (!name_printable(hx_arg(&a, "--unit")) || strpbrk(hx_arg(&a, "--unit"), ",\"") != NULL)) {
-        /* a field of every row of the --out CSV: a comma split it (rows one
-         * column wider than the header; the JSON review, 2026-11-30) */
+        /* a field of every row of the --out CSV: a comma would split it
+         * (rows one column wider than the header) */
         hx_error(CMD, "--unit must be printable text on one line without a comma or a double quote (it is a field "
                       "of the --out CSV)");
         return HX_EXIT_USAGE;
@@ -2509,9 +2503,9 @@ int hx_cmd_allan(int argc, char **argv)
         return HX_EXIT_USAGE;
     }
     if (series != NULL) {
-        /* the log's options were ignored with a series without a word, exit
-         * 0 (`--series F --channels gx`; a user review, 2026-11-30), as
-         * --unit with a log was */
+        /* the log's options are refused with a series, not ignored without
+         * a word, exit 0 (`--series F --channels gx`), as --unit with a log
+         * is */
         static const char *const log_only[] = { "--channels", "--from", "--input-rate", "--columns", "--units", "--name", NULL };
         int k;
         for (k = 0; log_only[k] != NULL; k++) {
@@ -2525,8 +2519,8 @@ int hx_cmd_allan(int argc, char **argv)
         }
     }
     if (series == NULL && hx_arg(&a, "--unit") != NULL) {
-        /* a log's channels are in m/s^2 and deg/s: the unit was ignored
-         * without a word, exit 0 (the cli review, 2026-11-29) */
+        /* a log's channels are in m/s^2 and deg/s: the unit is refused, not
+         * ignored without a word, exit 0 */
         hx_error(CMD, "--unit applies to --series only (a log's channels are in m/s^2 and deg/s)");
         free(R);
         return HX_EXIT_USAGE;
@@ -2602,8 +2596,8 @@ int hx_cmd_allan(int argc, char **argv)
         return HX_EXIT_DATA;
     }
     if (R->n < 2u || (double)R->n < samples_needed(R)) {
-        /* no tau in range: every table was empty and every value n/a, exit
-         * 0 (2 samples; the ident review, 2026-11-29) */
+        /* no tau in range: every table would be empty and every value n/a,
+         * exit 0 (2 samples) */
         hx_error(CMD, "%s: %lu %s too few for any Allan point: the shortest tau (%lu sample%s) needs at "
                       "least %.0f samples (tau up to %g of the record, --max-tau-frac)",
                  path, (unsigned long)R->n, R->n == 1u ? "sample is" : "samples are", (unsigned long)R->grid[0],
@@ -2633,8 +2627,8 @@ int hx_cmd_allan(int argc, char **argv)
         const hx_csv_layout_t *csv = hx_units_layout(R->in_fmt, &lay);
         if (csv == NULL || csv->gyr_scale == 1.0) {
             /* a gyro read as deg/s already (--units gyro=) is not told to
-             * multiply by pi/180 again: a walk in rad/s read so was, until
-             * 2026-11-30 (the units review; the units check names it) */
+             * multiply by pi/180 again (a walk in rad/s read so is named by
+             * the units check instead) */
             snprintf(dps, sizeof dps, " (a gyro in deg/s at rest also reads so: %s)",
                      hx_units_fix_dps(hx_time_unit_layout(R->time_unit_warned ? R->rate_hz : 0.0, csv, &lay_t),
                                       give, sizeof give));
@@ -2665,9 +2659,8 @@ int hx_cmd_allan(int argc, char **argv)
     }
     if (npaper > 0 && R->rate_hz > tau_max_samples(R) * (1.0 + 1e-9)) {
         /* the paper's sigma_v, the ADEV at 1 s, lies beyond the tenth of the
-         * record the identification keeps to: only the profile's bound said
-         * so (write_profile()), the paper's column of a 5 s log read it
-         * without a word (2026-11-30) */
+         * record the identification keeps to: said for the paper's column of
+         * a 5 s log as for the profile's bound (write_profile()) */
         hx_warn(CMD, "%s: the paper's sigma_v of %d channel%s (its column of the parameter table: the ADEV at 1 s) "
                      "is read beyond the longest tau the identification keeps to, %.3g s (--max-tau-frac of the "
                      "%.3g-s record): it rests on a few averages; record %.3g s or more (docs/allan.md, \"Command\")",

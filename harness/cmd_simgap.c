@@ -81,10 +81,9 @@ int hx_cmd_simgap(int argc, char **argv)
     o.domain = hx_flag(&a, "--static") ? 1 : (hx_flag(&a, "--walk") ? 2 : 0);
     o.seeds = (int)seeds;
     o.seeds_cand = (int)seeds;
-    /* sim's and montecarlo's range, the whole uint32_t (it was [0, 2e9],
-     * "not an integer"; a review, 2026-12-02): every seed derived from it
-     * (+ 1000 x channel, + 7000, + 7777, + a twin's index) is uint32_t
-     * arithmetic, which wraps, defined */
+    /* sim's and montecarlo's range, the whole uint32_t: every seed derived
+     * from it (+ 1000 x channel, + 7000, + 7777, + a twin's index) is
+     * uint32_t arithmetic, which wraps, defined */
     o.seed = (uint32_t)seed;
     o.fit_frac = frac;
     o.alpha = alpha;
@@ -111,14 +110,14 @@ int hx_cmd_simgap(int argc, char **argv)
         }
     }
     /* the outputs are written after the diagnosis (minutes on a long log):
-     * find out now that they can be (a review, 2026-11-29) */
+     * find out now that they can be */
     if (json != NULL && strcmp(json, "-") != 0 && hx_check_writable("simgap", json) != 0) {
         return HX_EXIT_IO;
     }
     if (plot != NULL) {
-        /* gnuplot first: a run refused for want of it left the directory
-         * made, empty (the code review of 2026-11-30); one made here is
-         * removed when the pictures cannot be written */
+        /* gnuplot first: a run refused for want of it would leave the
+         * directory made, empty; one made here is removed when the pictures
+         * cannot be written */
         char png[4200];
         int made = 1;
         snprintf(png, sizeof png, "%s/z.png", plot);
@@ -151,10 +150,9 @@ int hx_cmd_simgap(int argc, char **argv)
         return HX_EXIT_DATA;
     }
     /* a static log's held-out score and likelihood-ratio tests leave one
-     * twin out of each null and need 4 twins: with 3 every effect scored
-     * 0 sigma and a plain tone was answered "unexplained", exit 0 (a
-     * review, 2026-11-29); walks, and static logs without an attribution,
-     * work with 3 */
+     * twin out of each null and need 4 twins: with 3 every effect would
+     * score 0 sigma and a plain tone be answered "unexplained", exit 0;
+     * walks, and static logs without an attribution, work with 3 */
     if (o.seeds < 4 && o.max_steps > 0 && log.n >= 16 &&
         (o.domain == 1 || (o.domain == 0 && sg_detect_domain(&log, sg_log_rate(&log)) == 1))) {
         hx_error("simgap", "--seeds %d is too few for a static log: the held-out tests of an effect need at least 4 "

@@ -386,8 +386,8 @@ static int parse_time_ns(const char *s, int k, int64_t *out)
     }
     while (isdigit((unsigned char)*p)) {
         /* beyond 9e9 s, where int64 ns would overflow: said below unless an
-         * exponent follows ("100000000000000000000e-15" is 1e5 s; it was
-         * refused here before the exponent was seen) */
+         * exponent follows ("100000000000000000000e-15" is 1e5 s, not
+         * refused here before the exponent is seen) */
         if (over || ip > (lim - (*p - '0')) / 10) {
             over = 1;
         } else {
@@ -404,8 +404,8 @@ static int parse_time_ns(const char *s, int k, int64_t *out)
                 frac++;
             } else if (extra++ == 0) {
                 /* the tenth decimal rounds to the nearest ns, as strtod's
-                 * path below does (it was cut off: 1.9999999996 read 1 ns
-                 * short of 1.9999999996e0; a review, 2026-11-29) */
+                 * path below does (cut off, 1.9999999996 would read 1 ns
+                 * short of 1.9999999996e0) */
                 up = *p >= '5';
             }
             p++;
@@ -789,9 +789,9 @@ int hx_name_eq(const char *a, const char *b)
 }
 
 /* The fields a header names, of its `total`: a delimiter at its end names
- * none (a spreadsheet's export), so rows without one have every field; each
- * was warned "fewer fields than the header's" until 2026-11-30. The names
- * split kept (n) are enough to tell, unless it kept fewer than total. */
+ * none (a spreadsheet's export), so rows without one have every field and
+ * are not warned "fewer fields than the header's". The names split kept
+ * (n) are enough to tell, unless it kept fewer than total. */
 static int named_fields(char **f, int n, int total)
 {
     while (n == total && n > 1 && f[n - 1][0] == '\0') {
@@ -877,8 +877,8 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
  * n header fields f, set in r in that order, r->ncols_needed with them,
  * up to the first name that is required and missing: its index, kept in
  * r->missing_col; -1 when none is. A name --columns gave is required, also
- * temp's and t's with a rate given (they were dropped without a word); t
- * is required when time_required. */
+ * temp's and t's with a rate given (not dropped without a word); t is
+ * required when time_required. */
 static int find_columns(hx_reader_t *r, const char *const names[8], char **f, int n, int time_required)
 {
     int i;
@@ -908,8 +908,8 @@ static int find_columns(hx_reader_t *r, const char *const names[8], char **f, in
 }
 
 /* A column read whose name the header gives twice: the first is read, and
- * the warning says so (it was read without a word; the robustness hunt,
- * 2026-12-01). The first such name is named. */
+ * the warning says so, rather than reading it without a word. The first
+ * such name is named. */
 static void dup_names_warn(hx_reader_t *r, const char *const names[8], char **f, int n)
 {
     int i, k;
@@ -929,9 +929,9 @@ static void dup_names_warn(hx_reader_t *r, const char *const names[8], char **f,
 /* A column of the interchange CSV whose name states a unit other than the
  * one it is read in (--columns named it, and --units or the default sets
  * the unit): warned, the first such, with the --units that reads what the
- * names state; the values are read as asked. Until 2026-12-01 'acc_x [g]'
- * given with --columns alone was read as m/s^2 without a word. The names
- * matched without --columns set their units themselves. */
+ * names state; the values are read as asked ('acc_x [g]' given with
+ * --columns alone is read as m/s^2, which would otherwise go without a
+ * word). The names matched without --columns set their units themselves. */
 static void units_named_warn(hx_reader_t *r, char **f, int n)
 {
     static const char *const what[3] = { "the time", "the accelerations", "the rates" };
@@ -1093,8 +1093,8 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
                     (void)hx_names_give(&m, f, give, sizeof give);
                     (void)hx_names_unmatched(&m, f, time_required, miss, sizeof miss);
                     /* a name matched but for its unit says which (a unit
-                     * not read, "gx [deg/h]", or another quantity's; until
-                     * 2026-12-01 such a name was not mentioned) */
+                     * not read, "gx [deg/h]", or another quantity's), so
+                     * that such a name is mentioned */
                     snprintf(unit, sizeof unit, "; ");
                     ul = strlen(unit);
                     if (hx_names_unit_problem(&m, f, unit + ul, sizeof unit - ul)[0] == '\0') {
@@ -1116,9 +1116,8 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         break;
     }
     if (total > HX_MAX_COLS) {
-        /* the column may be there, past the ones read (it said "header
-         * has no column 'gx'" of a header that had it; a review,
-         * 2026-11-29) */
+        /* the column may be there, past the ones read (not "header has
+         * no column 'gx'" of a header that has it) */
         set_err(r, "%s:%ld: header has %d columns; only the first %d are read, and '%s' is not among them",
                 r->path, r->stats.lines, total, HX_MAX_COLS, names[i]);
     } else if (dc_line) {
@@ -1173,8 +1172,8 @@ static void set_cols(hx_reader_t *r, int t, int a0, int g0)
  * their SampleTimeFine (hx_mtmgr_peek) on the reader's own handle, which
  * the caller then puts back at the first row (gzclearerr, gzseek): a fault
  * there (a NUL byte, a line too long, a read error) ends the look ahead
- * and is left for the reading to meet at its line. It opened the file a
- * second time for this until 2026-11-30. */
+ * and is left for the reading to meet at its line. The file is not
+ * opened a second time for this. */
 static void mtmgr_peek(hx_reader_t *r)
 {
     char *f[HX_MAX_COLS];
@@ -1309,8 +1308,8 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         r->gyr_scale = r->layout.gyr_scale;
         if (r->col_t < 0) {
             /* no time column: --input-rate gives the rate, t = index / rate,
-             * as for the importers without time stamps (it was an error with
-             * no way to give the rate; the gait review, 2026-11-30) */
+             * as for the importers without time stamps (not an error with
+             * no way to give the rate) */
             r->time_mode = TIME_INDEX;
             m->stamps_made = 1;
             r->rate_hz = rate_hz;
@@ -1359,9 +1358,9 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         copy_str(m->sensor, sizeof m->sensor, "ADIS16405");
         copy_str(m->axes, sizeof m->axes, "sensor axes; z down at rest");
         if (r->col_t >= 0) {
-            /* a time column beside the format's names: it was ignored under
-             * "no time stamps; assuming ... 100 Hz" (a log stamped at 200 Hz
-             * read at 100; the robustness hunt, 2026-12-01) */
+            /* a time column beside the format's names: said to be left
+             * unread, not ignored under "no time stamps; assuming ... 100
+             * Hz" (a log stamped at 200 Hz would read at 100 without a word) */
             add_warn(r, "%s: the column 't' is not read: the adis format has no time stamps (%s); to read them, "
                         "give --from csv --columns t=t,ax=acc_x_g,ay=acc_y_g,az=acc_z_g,gx=gyro_x_dps,"
                         "gy=gyro_y_dps,gz=gyro_z_dps --units accel=g,gyro=deg/s (and time=ms, us or ns if t is "
@@ -1371,8 +1370,7 @@ static int setup_text(hx_reader_t *r, double rate_hz)
             r->col_t = -1;
         } else if (!(rate_hz > 0.0)) {
             /* no time stamps: a log of another rate would be read at 100 Hz
-             * without a word (the OpenShoe 820 Hz reader warned, this one
-             * did not; the unseen review, 2026-11-29) */
+             * without a word (warned as the OpenShoe 820 Hz reader warns) */
             add_warn(r, "%s: no time stamps; assuming the ADIS16405 data set rate of 100 Hz (give --input-rate)",
                      r->path);
         }
@@ -1391,8 +1389,7 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         copy_str(m->axes, sizeof m->axes, "sensor axes; z down at rest");
         if (!(rate_hz > 0.0)) {
             /* a sample counter, no time: a log of another rate would be
-             * read at 100 Hz without a word, as ADIS16405 logs were (the
-             * unseen review, 2026-11-29) */
+             * read at 100 Hz without a word (warned as for ADIS16405 logs) */
             add_warn(r, "%s: no time stamps; assuming the ZUPT-aided-INS square2 data set rate of 100 Hz (give --input-rate)",
                      r->path);
         }
@@ -1411,11 +1408,10 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         } while (blank(r->line));
         {
             /* "Acquisition frequency: 100 Hz", in any case, spaces around:
-             * a decimal number and the unit Hz, nothing else. It was read
-             * with sscanf's %lf, which stops where it cannot go on:
-             * "100 kHz" and "100,5 Hz" read as 100 Hz, exit 0, every time
-             * off; and a rate of 1e-300 Hz failed at the second row as a
-             * counter out of range (the robustness hunt, 2026-12-01) */
+             * a decimal number and the unit Hz, nothing else. sscanf's %lf
+             * stops where it cannot go on: "100 kHz" and "100,5 Hz" would
+             * read as 100 Hz, exit 0, every time off; and a rate of 1e-300
+             * Hz would fail at the second row as a counter out of range */
             char head[64];
             const char *num;
             char *end = NULL;
@@ -1439,10 +1435,10 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         r->time_mode = TIME_COUNTER;
         r->rate_hz = rate_hz > 0.0 ? rate_hz : fs;
         if (rate_hz > 0.0 && fabs(rate_hz - fs) > 1.0e-9 * fs) {
-            /* the file states its rate: a different --input-rate replaced
-             * it without a word, and --input-rate 200 on a 100 Hz file
-             * halved every stride time (the gait review, 2026-11-30); it
-             * still rules, since the file may state the wrong one */
+            /* the file states its rate: a different --input-rate replaces
+             * it with a warning (--input-rate 200 on a 100 Hz file halves
+             * every stride time); it still rules, since the file may state
+             * the wrong one */
             add_warn(r, "%s: --input-rate %g Hz replaces the rate the file states (%g Hz on line %ld)", r->path,
                      rate_hz, fs, r->stats.lines);
         }
@@ -1490,8 +1486,8 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         {
             /* a row's fields: the packet id, which the header leaves
              * unnamed, and one for each name the header ends with a colon
-             * (16), as many as the colons with "Header:"'s; rows were not
-             * compared with it until 2026-11-30 */
+             * (16), as many as the colons with "Header:"'s; the rows are
+             * compared with it */
             const char *q;
             r->hdr_fields = 0;
             for (q = r->line; *q != '\0'; q++) {
@@ -1499,10 +1495,8 @@ static int setup_text(hx_reader_t *r, double rate_hz)
             }
         }
         /* fields 0-10 are taken (the Freq. column 13 only when there, see
-         * TIME_GX2): a last line cut inside field 11 or later is read (it
-         * needed 12 fields and such a line was dropped, which
-         * docs/log-format.md says is read; a mutant of the count,
-         * 2026-11-29) */
+         * TIME_GX2): a last line cut inside field 11 or later is read, as
+         * docs/log-format.md says (requiring 12 fields would drop it) */
         set_cols(r, 10, 1, 4);
         r->col_aux = 9; /* Nr */
         m->has_seq = 1;
@@ -1541,8 +1535,8 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr
         r->gx2_ticks = 0;
     } else if (counter == r->prev_counter && nr == r->gx2_prev_nr) {
         /* the same packet written again: a duplicate (dt = 0), as in every
-         * other format; it was bridged as a restart, one period on, which
-         * hid it and shifted the rest of the log (a review, 2026-11-29) */
+         * other format; bridged as a restart, one period on, it would be
+         * hidden and shift the rest of the log */
     } else {
         double d = counter - r->prev_counter, dn = nr - r->gx2_prev_nr;
         const long k = (dn >= 1.0 && dn <= (double)GX2_MAX_LOST) ? (long)dn : 1;
@@ -1568,7 +1562,7 @@ static int64_t gx2_time(hx_reader_t *r, double counter, double host_s, double nr
     r->gx2_prev_host = host_s;
     r->gx2_prev_nr = nr;
     /* whole seconds apart: ticks x 1e9 leaves int64 after 469 s (a longer
-     * log read "time goes backwards" there; a review, 2026-11-29) */
+     * log would read "time goes backwards" there) */
     return (r->gx2_ticks / GX2_TICK_HZ) * 1000000000LL + ((r->gx2_ticks % GX2_TICK_HZ) * 1000000000LL) / GX2_TICK_HZ;
 }
 
@@ -1609,8 +1603,7 @@ static fnav_status_t next_text_line(hx_reader_t *r, fnav_sample_t *s)
          * write none), and an incomplete one is an error like any malformed
          * line; but one that ends in a used value may have been cut inside
          * it (-0.00245940452 read as -0.0024590001): dropped with a
-         * warning, as for the foreign formats below (it was read silently;
-         * a review, 2026-11-28) */
+         * warning, as for the foreign formats below, not read silently */
         fnav_status_t st;
         r->last_line_open = 0;
         r->last_line = 1;
@@ -1684,8 +1677,8 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         /* enough fields for the columns used, fewer than the header names:
          * a field lost inside the row shifts the values after it (az read
          * from gx), which nothing can tell from trailing fields left off;
-         * counted and warned at the end (it was read silently; the
-         * mutation sweep of 2026-11-29). A cut last line is the cut's. */
+         * counted and warned at the end, not read silently. A cut last
+         * line is the cut's. */
         if (r->short_rows++ == 0) {
             r->short_first = r->stats.lines;
         }
@@ -1694,7 +1687,7 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         /* more fields than the header names: a stray delimiter inside the
          * row shifts the values after it (0.01,5,0.01,... read as ax = 5),
          * or the header lacks a column's name; counted and warned at the
-         * end (it was read silently; the code review of 2026-11-30). Empty
+         * end, not read silently. Empty
          * fields past the header's are no data: a trailing delimiter, as
          * spreadsheets and MT Manager write one on every row. The
          * headerless OpenShoe 820 Hz file has no count to compare with. */
@@ -1727,10 +1720,10 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
              * reader error here, with its line */
             if (fabs(v[c * 3 + i] * (c == 0 ? r->acc_scale : r->gyr_scale)) > FNAV_INPUT_MAX_ABS) {
                 /* an accelerometer in ug read as m/s^2 reads 1e6 at 1 g, at
-                 * this limit: before the units check could name ug, a log
-                 * in ug met this error, which said only "no sensor reads
-                 * that" (until 2026-12-02); read as g (--units accel=g) it
-                 * meets it at once. Asked when the value in ug is
+                 * this limit: before the units check can name ug, a log in
+                 * ug meets this error, so it asks about ug rather than
+                 * saying only "no sensor reads that"; read as g (--units
+                 * accel=g) it meets it at once. Asked when the value in ug is
                  * within the widest range of MEMS accelerometers (400 g,
                  * ST's H3LIS331DL), as a question: raw counts of a 24-bit
                  * converter reach it too */
@@ -1761,8 +1754,8 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
             return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
         }
         if (fabs(tc) > FNAV_INPUT_MAX_ABS) {
-            /* 1e40 became an Inf float, written by convert as "inf" or into
-             * a .bin record that its reader refuses (a review, 2026-11-29) */
+            /* 1e40 would become an Inf float, written by convert as "inf"
+             * or into a .bin record that its reader refuses */
             set_err(r, "%s:%ld: temperature ('%.20s') is beyond %g degC (no sensor reads that)", r->path,
                     r->stats.lines, f[r->col_temp], FNAV_INPUT_MAX_ABS);
             return FNAV_E_RANGE;
@@ -1799,8 +1792,8 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
         break;
     case TIME_COUNTER: {
         /* what is wrong, said: a counter beyond 32 bits, or above 4e9 and
-         * within them, was "not a non-negative number" (the code review of
-         * 2026-11-30); the range is now the 32 bits of seq */
+         * within them, is out of range, not "not a non-negative number";
+         * the range is the 32 bits of seq */
         const int prc = parse_num(f[r->col_t], &tv);
         if (prc != 0 || tv < 0.0 || tv > 4294967295.0) {
             set_err(r, "%s:%ld: counter ('%.20s') is %s", r->path, r->stats.lines, f[r->col_t],
@@ -1843,9 +1836,8 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     }
     case TIME_GX2: {
         double host = 0.0, freq = 0.0;
-        /* the field and its text named, as the other readers do (it was
-         * "counter, Nr or time stamp is not a number"; the code review of
-         * 2026-11-30) */
+        /* the field and its text named, as the other readers do (not
+         * "counter, Nr or time stamp is not a number") */
         static const char *const gx2_names[3] = { "Counter", "Nr", "time stamp Filtered ts" };
         const int cols[3] = { 7, r->col_aux, r->col_t };
         double *vals[3];
@@ -1880,7 +1872,7 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     }
     if (t_ns > FNAV_T_NS_MAX || t_ns < -FNAV_T_NS_MAX) {
         /* time in ms, us or ns read as seconds: Unix time in ms is 1.7e12 "s"
-         * (until 2026-11-28 the message named no cause) */
+         * (the message names the likely cause) */
         set_err(r, "%s:%ld: time %.6g s is beyond 2^62 ns (146 years)%s", r->path, r->stats.lines,
                 (double)t_ns * 1e-9,
                 r->meta.format != HX_FMT_CSV ? ": is the time column in seconds? (in milliseconds, microseconds or "
@@ -1925,7 +1917,7 @@ static int bin_fill(hx_reader_t *r, size_t need)
             if (e == Z_BUF_ERROR) {
                 /* a .bin.gz cut short: the records before the cut are
                  * delivered, then said as a truncated .gz, not as a
-                 * recording cut off mid-record (a review, 2026-11-29) */
+                 * recording cut off mid-record */
                 r->gz_cut = 1;
                 got = 0;
             } else if (got < 0) {
@@ -1951,8 +1943,8 @@ static int setup_bin(hx_reader_t *r)
     }
     if (rc == 0) {
         /* a .bin.gz cut inside the header is a truncated .gz, as after it
-         * (next_bin): it was said as a .bin too short for its header until
-         * 2026-12-01 (a review; test_bin_gz_header_cut) */
+         * (next_bin), not a .bin too short for its header
+         * (test_bin_gz_header_cut) */
         set_err(r, "%s: %s (%zu of %d bytes)", r->path,
                 r->gz_cut ? "the gzip data ends early (a truncated .gz, e.g. an incomplete copy) inside the header"
                           : "too short for a footnav log header",
@@ -1974,8 +1966,8 @@ static int setup_bin(hx_reader_t *r)
     copy_str(r->meta.axes, sizeof r->meta.axes, h.axes);
     {
         /* text that reaches the reports, read as printable: a sensor name
-         * "x<LF>samples 1" forged a line of info's report, and an escape
-         * sequence reached the terminal (the robustness hunt, 2026-12-01) */
+         * "x<LF>samples 1" would forge a line of info's report, and an
+         * escape sequence reach the terminal */
         const int ctl = printable(r->meta.sensor) + printable(r->meta.source) + printable(r->meta.axes);
         if (ctl > 0) {
             add_warn(r, "%s: the header's text holds %d control character%s (read as '?')", r->path, ctl,
@@ -2048,8 +2040,8 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                  * does not apply here (a .bin's units are fixed by its
                  * header). Asked, with the remedy that does apply, when
                  * every value beyond is an acceleration within 400 g once
-                 * read in ug, as the CSV reader's (until 2026-12-02 "no
-                 * sensor reads that" alone) */
+                 * read in ug, as the CSV reader's (not "no sensor reads
+                 * that" alone) */
                 for (k = 0; k < 3 && !in_range; k++) {
                     const double a = fabs((double)rec.acc[k]);
                     if (fabs((double)rec.gyr[k]) > FNAV_INPUT_MAX_ABS ||
@@ -2060,8 +2052,8 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                     }
                 }
                 /* a valid temperature too, as the CSV reader checks it (a
-                 * NaN one was delivered and written into a CSV that the
-                 * CSV reader refuses; a review, 2026-11-29) */
+                 * NaN one would be delivered and written into a CSV that
+                 * the CSV reader refuses) */
                 finite &= !(rec.flags & HX_BIN_REC_TEMP) || isfinite(rec.temp);
                 if (!finite) {
                     set_err(r, "%s: record #%ld at byte %lld: NaN or Inf in a sample", r->path, r->record_slot,
@@ -2155,10 +2147,9 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
             /* the stretch skipped (from the bad record to the next valid
              * one) counts as the records it holds, to the nearest whole
              * one: the fewest bytes inserted or lost. Ten bytes inserted
-             * hold none, two damaged records two; it counted one whatever
-             * its length until 2026-12-01, and the records after ten bytes
-             * inserted were numbered one too high (a review;
-             * test_bin_resync_numbers) */
+             * hold none, two damaged records two; counted as one whatever
+             * its length, the records after ten bytes inserted would be
+             * numbered one too high (test_bin_resync_numbers) */
             r->record_slot += (long)((r->offset - at + HX_BIN_RECORD_SIZE / 2) / HX_BIN_RECORD_SIZE);
         }
     }
@@ -2263,7 +2254,7 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
     }
     if (got == 0) {
         /* nothing decompressed: an empty file, or a .gz cut inside its
-         * first block (it said "empty file"; a review, 2026-11-28) */
+         * first block, told apart (not "empty file" for both) */
         int e;
         (void)gzerror(r->gz, &e);
         snprintf(err, err_size, "%s: %s", path,
@@ -2277,8 +2268,8 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         (head_kind = hx_head_not_text(path, head, (size_t)got, 0, head_msg, sizeof head_msg)) == HX_HEAD_UTF16) {
         /* Windows' "Unicode text" export: "FILE:1: a NUL byte in the text
          * (binary data ...)" with its byte-order mark, the hint of
-         * --columns without it, where it only needs saving as UTF-8
-         * (2026-12-02) */
+         * --columns without it would be wrong: it only needs saving as
+         * UTF-8 */
         snprintf(err, err_size, "%s", head_msg);
         gzclose(r->gz);
         free(r);
@@ -2290,9 +2281,9 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         if (fmt != HX_FMT_BIN && got >= 4 && (hx_ends_in(path, strlen(path), ".bin") ||
                                               hx_ends_in(path, strlen(path), ".bin.gz"))) {
             /* a .bin whose magic is one byte off (a flipped bit) is no
-             * text: it was read as CSV, "a NUL byte in the text", until
-             * 2026-12-01 (a review; test_bin_bad_magic). Three of the four
-             * bytes of FNAV, and the name: no text file is so taken */
+             * text: read as CSV it would give "a NUL byte in the text"
+             * (test_bin_bad_magic). Three of the four bytes of FNAV, and
+             * the name: no text file is so taken */
             int k, same = 0;
             for (k = 0; k < 4; k++) {
                 same += head[k] == (unsigned char)HX_BIN_MAGIC[k];
@@ -2334,13 +2325,13 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
             /* given with --from, or our CSV known by its 't' column */
             snprintf(err, err_size, "%s", r->err);
         } else if (fmt == HX_FMT_CSV && head_kind == HX_HEAD_BINARY) {
-            /* a PNG, a zip given as a log: it was told "header has no
-             * column 't' ... give its names and units with --columns",
-             * which no such file can follow (a user review, 2026-12-02) */
+            /* a PNG, a zip given as a log: named as binary data, not told
+             * "header has no column 't' ... give its names and units with
+             * --columns", which no such file can follow */
             snprintf(err, err_size, "%s", head_msg);
         } else if (fmt == HX_FMT_CSV) {
-            /* --from alone left a layout no importer reads (a phone app's
-             * export) without a way (a contributor's review, 2026-11-30) */
+            /* --from alone would leave a layout no importer reads (a phone
+             * app's export) without a way: --columns and --units named */
             snprintf(err, err_size, "%s (no importer's header recognised, read as footnav CSV; give --from FORMAT "
                                     "for another format, or give its names and units with --columns and --units: "
                                     "docs/log-format.md, \"Another layout\")", r->err);
@@ -2356,11 +2347,11 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
         /* read as an MT Manager export, with no '//' line, with stamps
          * that make an IMU's rate in us and none in 100 us ticks (or one
          * of DOT's rates under a header of DOT's): Movella DOT's CSV
-         * (hx_mtmgr_stamps), refused with the CSV reader's remedy; it was
-         * read 100 times too slow (the review of 2026-11-30). Given with
-         * --from mtmanager too: it was read in ticks, as asked, with DOT's
-         * deg/s as rad/s (2026-11-30); an export whose '//' lines were cut
-         * is read with one put back */
+         * (hx_mtmgr_stamps), refused with the CSV reader's remedy (read as
+         * an export it would be 100 times too slow). Given with --from
+         * mtmanager too: read in ticks, as asked, it would take DOT's deg/s
+         * as rad/s; an export whose '//' lines were cut is read with one
+         * put back */
         hx_mtmgr_us_refusal(&r->mt, path, err, err_size);
         gzclose(r->gz);
         free(r);
@@ -2373,10 +2364,11 @@ static hx_reader_t *open_raw(const char *path, hx_format_t fmt, double rate_hz, 
     if (rate_hz > 0.0 && (fmt == HX_FMT_BIN || r->time_mode == TIME_COLUMN_S || r->time_mode == TIME_GX2 ||
                           (r->time_mode == TIME_MTMGR && r->mt.time_src == HX_MTMGR_TIME_STF))) {
         /* --input-rate gives the rate of an input without time stamps
-         * (docs/harness.md). It used to replace a .bin's header rate, which
-         * every analysis then used against the stamps (`psd walk.bin
-         * --input-rate 100` analysed the 398 Hz walk as 100 Hz), while a
-         * time-stamped text log ignored it without a word */
+         * (docs/harness.md): ignored here with a warning. Replacing a
+         * .bin's header rate, every analysis would use it against the
+         * stamps (`psd walk.bin --input-rate 100` would analyse the 398 Hz
+         * walk as 100 Hz); ignored without a word, a time-stamped text log
+         * would not say so */
         add_warn(r, "%s: --input-rate ignored: the %s format has time stamps", path, hx_format_name(fmt));
     }
     return r;
@@ -2527,7 +2519,7 @@ int hx_time_unit_fix(double rate_hz, int digits, hx_time_fix_t *fix)
 
 /* A rate the time hint questions: below 1 Hz (a static log may be slow, but
  * not so slow), or above HX_TIME_RATE_MAX_HZ (stamps read in a finer unit
- * than theirs; until 2026-11-30 only the slow side was questioned) */
+ * than theirs): both sides are questioned */
 static int time_rate_odd(double rate_hz)
 {
     return (rate_hz > 0.0 && rate_hz < 1.0) || rate_hz > HX_TIME_RATE_MAX_HZ;
@@ -2559,8 +2551,8 @@ int hx_time_unit_hint(double rate_hz, const hx_csv_layout_t *csv, char *msg, siz
 
 double hx_time_unit_rate(double rate_hz, size_t n, int64_t t_first_ns, int64_t t_last_ns)
 {
-    /* one test for every command (replay's alone until 2026-11-30, when
-     * info, allan, psd and simgap still told stamps in bursts time=ms) */
+    /* one test for every command, so that none of info, allan, psd and
+     * simgap tells stamps in bursts time=ms where replay does not */
     const int fast = rate_hz > HX_TIME_RATE_MAX_HZ, slow = rate_hz > 0.0 && rate_hz < HX_TIME_RATE_MIN_HZ;
     double span_hz;
     if (!fast && !slow) {
@@ -2598,9 +2590,9 @@ static size_t distinct_stamps(const int64_t *t_ns, size_t n, int64_t *v)
  * log's start or a time jump) and the last (cut by its end) hold. Either
  * kind: a burst of samples stamped close together (5 us apart), or of
  * samples that share one stamp (every distinct stamp starts one). The
- * samples over the span counted a cut last packet's and the first
+ * samples over the span would count a cut last packet's and the first
  * packet's samples against a span that ends at the last stamp: 250.1 Hz
- * for 250 Hz (until 2026-11-30). */
+ * for 250 Hz. */
 static void bursts_rate(const int64_t *t_ns, size_t n, int64_t gap_ns, hx_bursts_t *b)
 {
     const double half_ns = b->rate_hz > 0.0 ? 0.5e9 / b->rate_hz : 0.0;
@@ -2636,8 +2628,9 @@ static void bursts_rate(const int64_t *t_ns, size_t n, int64_t gap_ns, hx_bursts
 
 int hx_stamp_bursts(const int64_t *t_ns, size_t n, double max_gap_s, hx_bursts_t *b)
 {
-    /* Until 2026-11-30 the test of --rate's resampler alone (hx_nav.c);
-     * plain replay navigated such logs at "200 kHz" (0 strides, exit 0) */
+    /* the test of every command, not of --rate's resampler alone
+     * (hx_nav.c): plain replay would navigate such logs at "200 kHz" (0
+     * strides, exit 0) */
     int64_t *v, *d, gap_ns;
     size_t i, m = 0, a, e;
     memset(b, 0, sizeof *b);
@@ -2693,9 +2686,8 @@ static void bursts_cause(const hx_bursts_t *b, char *msg, size_t size)
 {
     /* more samples than the median interval gives, with (nearly) every
      * stamp distinct: samples stamped close together in pairs (0.1 ms and
-     * 9.9 ms apart), whose median interval is the long one; until
-     * 2026-12-01 they were called samples sharing one stamp
-     * (tests/cli/test_bad_input.sh) */
+     * 9.9 ms apart), whose median interval is the long one; not samples
+     * sharing one stamp (tests/cli/test_bad_input.sh) */
     const int close = b->kind == HX_BURSTS_CLOSE || (double)b->distinct >= 0.9 * (double)b->n;
     snprintf(msg, size,
              "the time stamps come in bursts (%s): 1 / their median interval gives %.6g Hz, but the %s%zu samples "
@@ -2708,8 +2700,8 @@ static void bursts_cause(const hx_bursts_t *b, char *msg, size_t size)
 
 const char *hx_bursts_remedy(hx_format_t fmt, double rate_hz, char *msg, size_t size)
 {
-    /* until 2026-12-01 every format was told to leave its time column out:
-     * a .bin has none, and the importers' logs with their time column cut
+    /* not every format is told to leave its time column out: a .bin has
+     * none, and the importers' logs with their time column cut
      * are no longer their format; --input-rate is ignored (with a warning)
      * on a .bin and a time-stamped importer's log, and a counter's only
      * rescales the stamps. The converted CSV's t is its first column
@@ -2744,9 +2736,9 @@ const char *hx_bursts_text(const hx_bursts_t *b, const char *needs, const char *
 const char *hx_bursts_rate_text(const hx_bursts_t *b, const char *reads, double rate_hz, int nominal, char *msg,
                                 size_t size)
 {
-    /* until 2026-12-01 every case said "read at R Hz, not the sampling
-     * rate", also where R is the rate the file states and the span keeps
-     * (a .bin's nominal rate), which is the sampling rate */
+    /* not "read at R Hz, not the sampling rate" in every case: where R is
+     * the rate the file states and the span keeps (a .bin's nominal rate),
+     * it is the sampling rate */
     const int kept = nominal && b->rate_hz > 0.0 && fabs(rate_hz / b->rate_hz - 1.0) <= HX_BURSTS_RATE_TOL;
     size_t len;
     char fix[192];
@@ -2875,10 +2867,10 @@ double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)
      * The span is their 10th percentile: a lost sample only lengthens a
      * span, so it is one without one while more than a tenth of the spans
      * hold none (up to 13 % of the samples lost; rounding moves it by at
-     * most a resolution over K). The median until 2026-12-01: above 4.2 %
-     * lost the median span held one, 17 periods over 16, and the gap
-     * threshold let one lost sample's interval in (95.3 Hz for 100 Hz at 5
-     * %; test_log test_stamp_rate) */
+     * most a resolution over K). Not the median: above 4.2 % lost the
+     * median span would hold one, 17 periods over 16, and the gap threshold
+     * let one lost sample's interval in (95.3 Hz for 100 Hz at 5 %;
+     * test_log test_stamp_rate) */
     if (m >= 3u * K + 1u) {
         for (w = 0; (w + 1u) * K < m; w++) {
             srt[w] = v[(w + 1u) * K] - v[w * K];
@@ -2908,9 +2900,9 @@ double hx_stamp_rate_hz(const int64_t *t_ns, size_t n, int *coarse)
             /* every interval that is no gap the same and no stamp repeated
              * (a sample counter's k / rate, lost samples as gaps): the
              * stamps show no rounding and the median interval, the
-             * detector's own estimate, is exact; until 2026-11-29 replay
-             * said such a grid was "too coarse for the detector's
-             * estimate" (test_stamp_rate). Repeated stamps (10 s stamps on
+             * detector's own estimate, is exact, and replay does not call
+             * such a grid "too coarse for the detector's estimate"
+             * (test_stamp_rate). Repeated stamps (10 s stamps on
              * a 100 Hz log) hide the samples' own times: coarse. */
             *coarse = 0;
         }
@@ -2929,8 +2921,8 @@ hx_reader_t *hx_reader_open(const char *path, hx_format_t fmt, double rate_hz, c
     if (r->meta.rate_hz <= 0.0) {
         /* time stamps without a nominal rate (text, or a .bin whose header
          * gives 0, "unknown"): estimate from the stamps of the first samples
-         * (a separate pass over the start; a .bin was read as text here,
-         * which gave nothing: a review, 2026-11-29) */
+         * (a separate pass over the start, in the log's own format: a .bin
+         * read as text here would give nothing) */
         char e2[64];
         hx_reader_t *p = open_raw(path, r->meta.format, rate_hz, e2, sizeof e2);
         if (p != NULL) {
@@ -3072,10 +3064,10 @@ fnav_status_t hx_reader_next(hx_reader_t *r, fnav_sample_t *s)
     r->finished = 1;
     if (r->meta.format == HX_FMT_GX2 && r->gx2_bridged > 0) {
         /* also when the log stops at an error: the samples before it were
-         * bridged all the same (the message was lost then; a review). A
-         * note, not a warning: the logger restarts the timer about once a
-         * second and the bridge is exact to a tick (docs/log-format.md,
-         * "GX2 time"); every GX2 log warned of it (a user review) */
+         * bridged all the same, so the note is given then too. A note, not a
+         * warning: the logger restarts the timer about once a second and
+         * the bridge is exact to a tick (docs/log-format.md, "GX2 time"), so
+         * as a warning every GX2 log would warn of it */
         add_note(r,
                  "%s: the sensor's timer restarted %ld time%s (normal for the 3DM-GX2, about once a second); each "
                  "restart bridged with the measured period (docs/log-format.md, GX2 time)",
@@ -3208,8 +3200,8 @@ int hx_ends_in(const char *s, size_t end, const char *suffix)
     return 1;
 }
 
-/* 1 when s ends with suffix (lower case), in any case: OUT.BIN is a .bin
- * (it was written as CSV; a review, 2026-11-28) */
+/* 1 when s ends with suffix (lower case), in any case: OUT.BIN is a .bin,
+ * not written as CSV */
 static int ends_with(const char *s, const char *suffix)
 {
     return hx_ends_in(s, strlen(s), suffix);
@@ -3249,8 +3241,8 @@ hx_writer_t *hx_writer_open(const char *path, hx_format_t fmt, const hx_meta_t *
         if (!(h.rate_hz >= 0.0 && h.rate_hz <= 1.0e6)) {
             /* a rate the reader refuses (stamps a thousand times too dense
              * imply MHz) is stored as 0, "not known": the samples carry
-             * their own stamps, and the file stays readable (it was written,
-             * then refused by every command; a review, 2026-11-28) */
+             * their own stamps, and the file stays readable (written as it
+             * is, it would be refused by every command) */
             h.rate_hz = 0.0;
         }
         h.flags = 0;
@@ -3643,8 +3635,8 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
     while ((rc = next_item(&p, "--units", key, sizeof key, given, sizeof given, err, err_size)) > 0) {
         int k = strcmp(key, "time") == 0 ? 0 : strcmp(key, "accel") == 0 ? 1 : strcmp(key, "gyro") == 0 ? 2 : -1;
         /* the units' signs as the names read them: time=µs, accel=m/s²,
-         * gyro=°/s (unknown units until 2026-12-01); the errors quote the
-         * value as given */
+         * gyro=°/s are known units, not unknown ones; the errors quote
+         * the value as given */
         if (hx_name_fold_units(given, val, sizeof val) != 0) {
             snprintf(val, sizeof val, "?");
         }
@@ -3674,9 +3666,9 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             } else if (strcmp(val, "g") == 0) {
                 l->acc_scale = HX_G_MPS2;
             } else if (strcmp(val, "mg") == 0) {
-                l->acc_scale = HX_MG_MPS2; /* ST's SensorTile data log, AccX [mg] (the units review) */
+                l->acc_scale = HX_MG_MPS2; /* ST's SensorTile data log, AccX [mg] */
             } else if (strcmp(val, "ug") == 0) {
-                l->acc_scale = HX_UG_MPS2; /* micro-g, \xc2\xb5g and \xce\xbcg folded to ug (2026-12-02) */
+                l->acc_scale = HX_UG_MPS2; /* micro-g, \xc2\xb5g and \xce\xbcg folded to ug */
             } else {
                 snprintf(err, err_size,
                          "--units: accel=%s: the acceleration unit is m/s2 (m/s^2, m/s\xc2\xb2, mps2), g, mg or ug "
@@ -3690,7 +3682,7 @@ int hx_csv_units_parse(hx_csv_layout_t *l, const char *spec, char *err, size_t e
             } else if (strcmp(val, "deg/s") == 0 || strcmp(val, "dps") == 0) {
                 l->gyr_scale = HX_DPS_RPS;
             } else if (strcmp(val, "mdps") == 0 || strcmp(val, "mdeg/s") == 0) {
-                l->gyr_scale = HX_MDPS_RPS; /* ST's SensorTile data log, GyroX [mdps] (the units review) */
+                l->gyr_scale = HX_MDPS_RPS; /* ST's SensorTile data log, GyroX [mdps] */
             } else {
                 snprintf(err, err_size,
                          "--units: gyro=%s: the rate unit is rad/s, deg/s (dps, \xc2\xb0/s) or mdps (mdeg/s)", given);

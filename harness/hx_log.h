@@ -76,12 +76,11 @@ int hx_find_col(char **f, int n, const char *name);
  *  importer adds its name here and in k_format_names (hx_log.c). */
 /** Room for a reader's message: the path (a few hundred bytes) and the
  *  longest remedy (about 400: the Movella DOT CSV's, the other names', a
- *  stamps-in-bursts refusal's "convert it to CSV ..."); 320 until
- *  2026-11-30 cut them behind a path of 30-110 bytes. Every buffer a
- *  command passes for an error message is this size (eval's row notes this
- *  and room for its own words, cmd_eval.c's EV_NOTE_SIZE): until
- *  2026-12-01 some had 200 to 768 bytes, and eval cut a non-CSV log's
- *  bursts remedy (tests/cli/test_eval_data.sh). */
+ *  stamps-in-bursts refusal's "convert it to CSV ..."); 320 bytes would
+ *  cut them behind a path of 30-110 bytes. Every buffer a command passes
+ *  for an error message is this size (eval's row notes this and room for
+ *  its own words, cmd_eval.c's EV_NOTE_SIZE): with 200 to 768 bytes eval
+ *  would cut a non-CSV log's bursts remedy (tests/cli/test_eval_data.sh). */
 #define HX_ERR_SIZE 1024
 
 #define HX_FORMAT_LIST "bin, csv, gx2, openshoe820, ngimu, pyshoe, ipol, adis, square2, mtmanager"
@@ -373,8 +372,7 @@ const char *hx_bursts_remedy(hx_format_t fmt, double rate_hz, char *msg, size_t 
  *  and give in.csv " followed by rate, a string literal naming the rate to
  *  give: hx_bursts_remedy's "--input-rate %.4g" (a format for the rate it
  *  found) and the coarse-stamps note's "the rate with --input-rate HZ"
- *  (hx_nav.c). One text, so that the two cannot drift apart (written twice
- *  until 2026-12-01). */
+ *  (hx_nav.c). One text, so that the two cannot drift apart. */
 #define HX_CONVERT_REMEDY(rate)                                                                                      \
     "convert it to CSV without the time column (bin/harness convert LOG out.csv; cut -d, -f2- out.csv > in.csv) "  \
     "and give in.csv " rate

@@ -39,9 +39,9 @@ static char *trim(char *s)
 
 /* One line of f into line[size] without its newline. Returns its length,
  * or READ_EOF at the end of the file, READ_LONG when it does not fit,
- * READ_NUL on a NUL byte (not a text file: with fgets it showed as "line too
- * long"), READ_ERROR when reading failed (a directory read as a file was
- * "not a footnav profile"; a review, 2026-11-29). */
+ * READ_NUL on a NUL byte (not a text file: with fgets it would show as "line
+ * too long"), READ_ERROR when reading failed (a directory read as a file
+ * would otherwise be "not a footnav profile"). */
 enum { READ_EOF = -1, READ_LONG = -2, READ_NUL = -3, READ_ERROR = -4 };
 static long read_line(FILE *f, char *line, size_t size)
 {
@@ -118,9 +118,8 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
         val = trim(eq + 1);
         if ((strcmp(key, "format") == 0 && have_magic) || (strcmp(key, "rate_hz") == 0 && have_rate) ||
             (strcmp(key, "name") == 0 && have_name)) {
-            /* a key given twice: which one was meant is not known (the
-             * last one won silently; a review, 2026-11-28; name too,
-             * 2026-12-01) */
+            /* a key given twice (name too): which one was meant is not
+             * known, so the last one is not taken silently */
             snprintf(err, err_size, "%s:%d: %s given twice", path, lineno, key);
             fclose(f);
             return -1;
@@ -146,8 +145,9 @@ int hx_profile_read(const char *path, fnav_profile_t *p, char *err, size_t err_s
             }
             p->rate_hz = (fnav_real_t)v;
             if (!(p->rate_hz > FNAV_R(0.0))) {
-                /* 1e-50 is 0 in float: said at its line (it was "a value
-                 * is zero ... in the float build", no line, no key) */
+                /* 1e-50 is 0 in float: said at its line, with its key (not
+                 * "a value is zero ... in the float build", no line, no
+                 * key) */
                 snprintf(err, err_size, "%s:%d: rate_hz '%s' is 0 in the %s build (out of its range)", path, lineno,
                          val, FNAV_USE_DOUBLE ? "double" : "float");
                 fclose(f);
@@ -287,10 +287,9 @@ int hx_profile_implausible(const fnav_profile_t *p, char *msg, size_t n)
 {
     /* the bounds in the keys' units; the advice names the datasheet units
      * too: a gyro's angle random walk in deg/sqrt(h) and bias instability
-     * in deg/h, an accelerometer's noise and bias in ug. Only deg/s and mg
-     * were named, and followed (10 deg/h written as 10 -> 0.175 rad/s) the
-     * value stayed thousands of times too large, no longer flagged (a
-     * review, 2026-12-01) */
+     * in deg/h, an accelerometer's noise and bias in ug. Naming only deg/s
+     * and mg would be followed (10 deg/h written as 10 -> 0.175 rad/s) with
+     * a value still thousands of times too large, no longer flagged */
     const double pi = 3.14159265358979323846, g = 9.80665;
     const double wn_max = pi / 180.0, an_max = 0.01 * g, wb_max = 10.0 * pi / 180.0, ab_max = 0.1 * g;
     char adv[224];
@@ -332,8 +331,8 @@ int hx_profile_implausible(const fnav_profile_t *p, char *msg, size_t n)
 
 /* 1 when the file named @p path was warned about already, else 0 (then
  * remembered). Each file warned about is kept as the 64-bit FNV-1a hash of
- * its name as given; it remembered only the last one until 2026-12-02, so
- * that loading A, B, A warned about A twice. A full table remembers no
+ * its name as given, so that loading A, B, A warns about A once (the last
+ * one alone would warn about A twice). A full table remembers no
  * more: a file warned about after the first HX_PROFILE_WARNED_MAX is
  * warned about at each load (repeated, never lost). */
 static int profile_warned(const char *path)
@@ -365,12 +364,11 @@ int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size
     }
     if (strchr(name_or_path, '/') == NULL && strchr(name_or_path, '.') == NULL) {
         /* a file named `mysensor` is a built-in's name by this rule: the
-         * error said only "unknown profile" beside the file (a
-         * contributor's review, 2026-11-30) */
+         * error says so beside "unknown profile", and how to give the file */
         struct stat st;
         int found = stat(name_or_path, &st) == 0;
         int is_file = found && S_ISREG(st.st_mode);
-        int is_dir = found && S_ISDIR(st.st_mode); /* said "unknown profile" alone (a review, 2026-12-02) */
+        int is_dir = found && S_ISDIR(st.st_mode); /* named, not "unknown profile" alone */
         snprintf(err, err_size,
                  "unknown profile '%s' (built-in: navchip, mtx, shimmer, generic-mems; or a profile file)%s%s%s",
                  name_or_path,
@@ -384,9 +382,9 @@ int hx_profile_load(const char *name_or_path, fnav_profile_t *p, char *err, size
         return -1;
     }
     /* a file edited by hand in the wrong unit (a gyro noise in
-     * deg/s/sqrt(Hz)) was taken without a word: replay on the bundled walk
-     * ended 0.33 m from its start instead of 0.04 m (a user review,
-     * 2026-11-30). Valid, so a warning; the run goes on. */
+     * deg/s/sqrt(Hz)) is valid but not plausible: replay on the bundled
+     * walk ends 0.33 m from its start instead of 0.04 m with it. Valid, so
+     * a warning; the run goes on. */
     if (hx_profile_implausible(p, msg, sizeof msg) && !profile_warned(name_or_path)) {
         /* once per file in a run: a command that loads its profiles once
          * per seed (montecarlo, the sensor's and the filter's) says each
