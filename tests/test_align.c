@@ -116,11 +116,12 @@ static void test_from_means(void **state)
 
 /* Bad arguments of fnav_align_from_means, a public function (the harness's
  * axes check calls it directly): a NULL result is FNAV_E_ARG, not a crash;
- * a gravity that is 0, negative, NaN or infinite is FNAV_E_ARG (before, 0
- * with a zero force passed the |f| test, 0 <= 0.25 * 0, and returned OK with
- * an accelerometer bias of 0 / 0 = NaN, and +Inf passed it, Inf <= Inf,
- * with an infinite bias); a non-finite mean rate is FNAV_E_NANINF (it was
- * returned as the gyro bias with OK). Nothing is written on an error. */
+ * a gravity that is 0, negative, NaN or infinite is FNAV_E_ARG (otherwise
+ * 0 with a zero force would pass the |f| test, 0 <= 0.25 * 0, and return OK
+ * with an accelerometer bias of 0 / 0 = NaN, and +Inf would pass it,
+ * Inf <= Inf, with an infinite bias); a non-finite mean rate is
+ * FNAV_E_NANINF (not returned as the gyro bias with OK). Nothing is
+ * written on an error. */
 static void test_from_means_bad_args(void **state)
 {
     const fnav_vec3_t f = fnav_vec3(FNAV_R(0.1), FNAV_R(-0.2), FNAV_R(-9.8));
@@ -745,7 +746,7 @@ static void test_stuck_stamp_period(void **state)
     assert_int_equal((int)al.result.samples, 1002);
     /* the gyro means of those samples, in double: gyro x 0.004 + 0.001
      * ((k mod 7) - 3), not a whole number of its 7-sample cycles, so not
-     * 0.004 (it was held to 0.004 within 1e-4, 16 times the cycles'
+     * 0.004 (not held to 0.004 within 1e-4, 16 times the cycles'
      * 6e-6); the period sums offsets from its first sample (|offset| <=
      * 0.006 rad/s, partial sums <= 1002 x 0.006): u of that per addition,
      * over n in the mean, and u of the mean for adding it back: EPS (6 +

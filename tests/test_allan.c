@@ -1137,7 +1137,7 @@ static void test_synthetic_every_level(void **state)
  * relative at most (at tau 65536; 0.12 of the tolerance below at most, at
  * tau 384), 1.1e-2 before the re-centring.
  *
- * Tolerance, derived per tau (it was a fixed 2e-3 in float, 1e-9 in
+ * Tolerance, derived per tau (not a fixed 2e-3 in float, 1e-9 in
  * double), first order in u = FNAV_REAL_EPSILON / 2, worst case (no
  * cancellation assumed). Each term d = (x_e + x_{e-2m}) - 2 x_{e-m} uses
  * three stored phase values; a stored value is relative to its ring's base

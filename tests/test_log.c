@@ -472,9 +472,9 @@ static void test_bin_resync_counts(void **state)
  * counts from 0, the header excluded: docs/log-format.md, "Integrity"):
  * the stretch skipped counts as the records it holds, to the nearest whole
  * one. Ten bytes inserted before record 2 hold none: record 4, with a NaN,
- * is #4 at byte 192 + 4 * 48 + 10 (it was #5: the stretch counted one).
+ * is #4 at byte 192 + 4 * 48 + 10 (not #5, the stretch counted as one).
  * Records 1 and 2 damaged, which the next slot cannot skip: 96 bytes, two
- * records, so record 4 is #4 at byte 384 (it was #3). */
+ * records, so record 4 is #4 at byte 384 (not #3). */
 static void test_bin_resync_numbers(void **state)
 {
     unsigned char b[4096];
@@ -510,8 +510,8 @@ static void test_bin_nan_record(void **state)
     rec.gyr[1] = nan;
     hx_bin_record_encode(&rec, b + HX_BIN_HEADER_SIZE + 4 * HX_BIN_RECORD_SIZE);
     expect_bin(b, g_golden_n, 1, 4, FNAV_E_NANINF, "NaN");
-    /* a NaN temperature (flagged valid) likewise: it was delivered, and
-     * convert wrote "nan" into a CSV that the CSV reader refuses */
+    /* a NaN temperature (flagged valid) likewise: delivered, it would let
+     * convert write "nan" into a CSV that the CSV reader refuses */
     memcpy(b, g_golden, g_golden_n);
     assert_int_equal(hx_bin_record_decode(b + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE, &rec), 0);
     assert_true((rec.flags & HX_BIN_REC_TEMP) != 0);
@@ -720,7 +720,7 @@ static void test_csv_flexible(void **state)
 
 /* A sample without a temperature in a log that has them (a .bin record
  * whose temperature is not valid) is written to CSV as an empty field and
- * read back without one; it was written as 0 degC, a temperature it never
+ * read back without one, not written as 0 degC, a temperature it never
  * had. CSV -> .bin -> CSV keeps it. */
 static void test_csv_missing_temp(void **state)
 {
@@ -1349,8 +1349,8 @@ static void test_gx2_field_count(void **state)
 }
 
 /* GX2: the timer-restart note is kept when the log then stops at a bad
- * line (the samples before it were bridged all the same); it was added only
- * at a clean end, so a log cut by an error lost it. */
+ * line (the samples before it were bridged all the same); added only at a
+ * clean end, it would be lost from a log cut by an error. */
 static void test_gx2_restart_then_error(void **state)
 {
     const long period = 78720;
@@ -1417,8 +1417,8 @@ static void test_gx2_first_restart(void **state)
 }
 
 /* GX2: a packet written twice (same Nr, same timer value) is a duplicate,
- * dt = 0, as in every other format; it was bridged as a timer restart, one
- * period later, which hid it and shifted every later sample by a period. */
+ * dt = 0, as in every other format; bridged as a timer restart, one period
+ * later, it would be hidden and every later sample shifted by a period. */
 static void test_gx2_repeated_packet(void **state)
 {
     const long period = 78720;
@@ -1914,7 +1914,7 @@ static void test_detect_wrong_hint(void **state)
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ":1: header has no column 'gz'; expected t,ax,ay,az,gx,gy,gz[,temp]"));
     assert_null(strstr(err, "--from"));
-    /* no header at all: the first line is data (it was "header has no column 't'") */
+    /* no header at all: the first line is data (not "header has no column 't'") */
     write_text(p, "0.0025,0.1,-0.2,9.81,0.01,0.02,-0.03\n0.005,0.1,-0.2,9.81,0.01,0.02,-0.03\n");
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ":1: the first line is data, not a header"));
@@ -3852,9 +3852,9 @@ static void test_mtmgr_us_stamps(void **state)
                           12, 2511, 0);
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, "likely a Movella DOT CSV"));
-    /* given with --from mtmanager: the same refusal (it was read in ticks,
-     * a DOT CSV 100 times too slow with its deg/s read as rad/s, and only
-     * replay's units check said something, naming --units) */
+    /* given with --from mtmanager: the same refusal (read in ticks, a DOT
+     * CSV would be 100 times too slow with its deg/s read as rad/s, and only
+     * replay's units check would say something, naming --units) */
     write_mtmgr_steps(p, "", 0.0, 12, 2511, 0);
     assert_int_equal(hx_log_load(&log, p, HX_FMT_MTMGR, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ".csv: SampleTimeFine steps by 2511: 3.982 Hz in 100 us ticks, 398.2 Hz in us, no "

@@ -167,7 +167,7 @@ static void test_validate(void **state)
     /* a conversion that leaves the working precision's range (an infinite
      * rate makes every tau 0; in float 1e39 Hz is an infinite rate and
      * 1e-46 Hz a zero one) is refused and leaves the profile as it was
-     * (CONTRIBUTING: bad data leaves the object unchanged; it was half
+     * (CONTRIBUTING: bad data leaves the object unchanged; not half
      * converted: name, rate and every value overwritten) */
     {
         static const double bad_rates[3] = { (double)INFINITY, FNAV_USE_DOUBLE ? (double)INFINITY : 1.0e39,

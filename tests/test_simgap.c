@@ -3381,7 +3381,7 @@ static void test_report_medians_all_cases(void **state)
 
 /* The summary's top-1 by magnitude: quant's and jitter's multiples are not
  * drawn from --mag-range (committed run: quant at 508x, jitter at 41x), so
- * the last column holds everything from 4x up; it was labelled 4-10x. */
+ * the last column holds everything from 4x up, not labelled 4-10x. */
 static void test_report_magnitude_bins(void **state)
 {
     sgv_case_t c[2];

@@ -1284,8 +1284,8 @@ static void test_counters_long_run(void **state)
 
 /* The same for the run lengths: a foot at rest for 2^31 samples (simulated
  * by moving the lengths of the current raw-stance run close to LONG_MAX)
- * stays in stance; before the fix the run length overflowed and the
- * confirmation (run >= min_zupt) turned the rest into motion. */
+ * stays in stance; a run length left to overflow would make the
+ * confirmation (run >= min_zupt) turn the rest into motion. */
 static void test_rest_run_long(void **state)
 {
     static fnav_stance_t st;

@@ -787,8 +787,8 @@ static void test_general_motion(void **state)
  * same with and without), measured in double: instantaneous 6.8e-3 m/s
  * with the term, 2.27e-2 without; means 2.4e-3 against 2.15e-2. With the
  * sign of either sculling term flipped (hand-made mutants) the error is
- * 4.2e-2 and 4.1e-2 m/s, worse than none: before this test, the interval
- * means' flipped sign passed every test of this file (test_simnav saw it).
+ * 4.2e-2 and 4.1e-2 m/s, worse than none: without this test, the interval
+ * means' flipped sign passes every test of this file (test_simnav sees it).
  * The bounds: under half (instantaneous) and a fifth (means) of the error
  * without the term, plus float rounding (an ulp of g dt per step). */
 static void test_sculling(void **state)

@@ -882,10 +882,9 @@ static void test_offset(void **state)
  * losing the segment's small signal to a large offset: gravity on an
  * accelerometer axis, 4096-sample segments. The spectrum with the offset
  * must be that without it, bin 0 included, within 1e-3 of the bin or 1e-6
- * of the largest (the float tolerance against scipy before it was derived;
- * not derived here). Summing the raw
- * float samples for the mean put a 1.4 % error into bin 0 of the ADIS16405
- * az spectrum. */
+ * of the largest (a float tolerance against scipy, not derived here).
+ * Summing the raw float samples for the mean would put a 1.4 % error into
+ * bin 0 of the ADIS16405 az spectrum. */
 static void test_segment_mean_large_offset(void **state)
 {
     static fnav_welch_t a, b;

@@ -588,9 +588,9 @@ static void test_seq_gap_boundary(void **state)
  * when its CRC is right: a SAMPLE header saying 10 bytes, framed with a
  * valid CRC by the generic encoder, then an END frame. The decoder must
  * count one corrupt frame, skip its 20 bytes and deliver only END. Without
- * the length check the SAMPLE frame was delivered as valid and every test
- * passed (vectors/wire/corrupt.bin's wrong-length frame has a bad CRC too,
- * which fails either way). */
+ * the length check the SAMPLE frame would be delivered as valid and every
+ * other test pass (vectors/wire/corrupt.bin's wrong-length frame has a bad
+ * CRC too, which fails either way). */
 static void test_known_type_wrong_length(void **state)
 {
     uint8_t buf[64], pay[10];
