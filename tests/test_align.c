@@ -116,11 +116,12 @@ static void test_from_means(void **state)
 
 /* Bad arguments of fnav_align_from_means, a public function (the harness's
  * axes check calls it directly): a NULL result is FNAV_E_ARG, not a crash;
- * a gravity that is 0, negative, NaN or infinite is FNAV_E_ARG (before, 0
- * with a zero force passed the |f| test, 0 <= 0.25 * 0, and returned OK with
- * an accelerometer bias of 0 / 0 = NaN, and +Inf passed it, Inf <= Inf,
- * with an infinite bias); a non-finite mean rate is FNAV_E_NANINF (it was
- * returned as the gyro bias with OK). Nothing is written on an error. */
+ * a gravity that is 0, negative, NaN or infinite is FNAV_E_ARG (otherwise
+ * 0 with a zero force would pass the |f| test, 0 <= 0.25 * 0, and return OK
+ * with an accelerometer bias of 0 / 0 = NaN, and +Inf would pass it,
+ * Inf <= Inf, with an infinite bias); a non-finite mean rate is
+ * FNAV_E_NANINF (not returned as the gyro bias with OK). Nothing is
+ * written on an error. */
 static void test_from_means_bad_args(void **state)
 {
     const fnav_vec3_t f = fnav_vec3(FNAV_R(0.1), FNAV_R(-0.2), FNAV_R(-9.8));
@@ -657,10 +658,10 @@ static void test_gyro_bias_posterior(void **state)
 
 /* A still period whose mean specific force is exactly zero (a sensor that
  * outputs zeros, which the adaptive SHOE threshold accepts as stance) has
- * no gravity direction: FNAV_E_RANGE, and the period is discarded. It was
- * kept (a review): the next still sample completed the alignment on the
- * zeros and the real samples together, an accelerometer bias of -g x
- * (zeros / all) along gravity (9.78 m/s^2 here). */
+ * no gravity direction: FNAV_E_RANGE, and the period is discarded. Kept,
+ * the next still sample would complete the alignment on the zeros and the
+ * real samples together, an accelerometer bias of -g x (zeros / all) along
+ * gravity (9.78 m/s^2 here). */
 static void test_zero_mean_period(void **state)
 {
     fnav_align_t al;
@@ -690,10 +691,10 @@ static void test_zero_mean_period(void **state)
 
 /* A sensor stuck on one time stamp (frozen, repeating its last sample) in a
  * still period: the period's duration stays 0, so it never ends, and its
- * sample count (a long: 32 bits on the Cortex-M4F) grew without bound, to a
- * signed overflow after 2^31 samples (24.9 days at 1 kHz; a review of the
- * core, 2026-11-29). A period now restarts at FNAV_ALIGN_PERIOD_MAX
- * samples (the stamps say no time passed), so the count stays far inside
+ * sample count (a long: 32 bits on the Cortex-M4F) would grow without
+ * bound, to a signed overflow after 2^31 samples (24.9 days at 1 kHz). A
+ * period restarts at FNAV_ALIGN_PERIOD_MAX samples (the stamps say no
+ * time passed), so the count stays far inside
  * 32 bits and the alignment completes on the real stillness that follows.
  * The count is set near the end directly (2^30 pushes would take minutes). */
 static void test_stuck_stamp_period(void **state)
@@ -745,7 +746,7 @@ static void test_stuck_stamp_period(void **state)
     assert_int_equal((int)al.result.samples, 1002);
     /* the gyro means of those samples, in double: gyro x 0.004 + 0.001
      * ((k mod 7) - 3), not a whole number of its 7-sample cycles, so not
-     * 0.004 (it was held to 0.004 within 1e-4, 16 times the cycles'
+     * 0.004 (not held to 0.004 within 1e-4, 16 times the cycles'
      * 6e-6); the period sums offsets from its first sample (|offset| <=
      * 0.006 rad/s, partial sums <= 1002 x 0.006): u of that per addition,
      * over n in the mean, and u of the mean for adding it back: EPS (6 +
@@ -764,9 +765,9 @@ static void test_stuck_stamp_period(void **state)
 /* A still period whose mean |f| is off gravity by more than 25 %
  * (FNAV_ALIGN_GRAVITY_TOL) is refused: 1 s of zeros (a sensor not yet
  * running) and 2 s of real stillness in one period average |f| = 2/3 of
- * the real one, and aligning on it gave an accelerometer bias of 3.3 m/s^2
- * (found by a review, 2026-11-28: 2 s of zeros then a still foot through the
- * navigator, 3.91 m/s^2); the period is refused, its |f| kept, and the next
+ * the real one, and aligning on it would give an accelerometer bias of
+ * 3.3 m/s^2 (2 s of zeros then a still foot through the navigator:
+ * 3.91 m/s^2); the period is refused, its |f| kept, and the next
  * one aligns on real samples only. A log in g (|f| = 1) is refused too. */
 static void test_implausible_gravity(void **state)
 {

@@ -44,8 +44,8 @@ static double s32_conf(double edf)
 /* Stable32's limits against ours from its printed sigma, both printed to 5
  * digits (up to 5e-5 each): the worst row is 1.6e-4 (HDEV, m = 128, 2.9
  * degrees of freedom, where the EDF its two limits imply is 0.1-0.3 % above
- * Greenhall's: scripts/stable32_conf.py). This test held 5e-4 at one sigma
- * throughout until 2026-11-26. */
+ * Greenhall's: scripts/stable32_conf.py): hence 2e-4, not a blanket 5e-4
+ * at one sigma. */
 #define S32_CI_TOL 2e-4
 
 /* The larger relative miss of the limits at confidence conf against
@@ -459,8 +459,7 @@ static void test_nbs14_10_other_deviations(void **state)
  * (d = 2, S = m): m = 1024 gives M = 952, r = 0.93, K = 1, edf = M (a
  * 20,000-record Monte Carlo gave 951.3; the table's form 1,096); m = 1280,
  * M = 440 (Monte Carlo 432.4; the table's form gave -1, no interval);
- * m = 768, M = 1464, r = 1.906, K = 2: 1464 / (1 + 2 (1 - 1/r) (4/6)^2).
- * A review, 2026-11-28. */
+ * m = 768, M = 1464, r = 1.906, K = 2: 1464 / (1 + 2 (1 - 1/r) (4/6)^2). */
 static void test_edf_white_pm_few_terms(void **state)
 {
     const double r768 = 1464.0 / 768.0;
@@ -1138,7 +1137,7 @@ static void test_synthetic_every_level(void **state)
  * relative at most (at tau 65536; 0.12 of the tolerance below at most, at
  * tau 384), 1.1e-2 before the re-centring.
  *
- * Tolerance, derived per tau (it was a fixed 2e-3 in float, 1e-9 in
+ * Tolerance, derived per tau (not a fixed 2e-3 in float, 1e-9 in
  * double), first order in u = FNAV_REAL_EPSILON / 2, worst case (no
  * cancellation assumed). Each term d = (x_e + x_{e-2m}) - 2 x_{e-m} uses
  * three stored phase values; a stored value is relative to its ring's base
@@ -1171,8 +1170,8 @@ static void test_synthetic_every_level(void **state)
  *
  * For a term whose values were all written after the first re-centring
  * (the other terms keep the bound above and its pre-re-centring addition),
- * X is taken per term (since 2026-12-02; it was R + the largest offset in
- * the 3 blocks x 2S): a stored value is ph_q - base, the base the phase at
+ * X is taken per term (not R + the largest offset in the 3 blocks x 2S,
+ * the coarse X): a stored value is ph_q - base, the base the phase at
  * the ring's last re-basing, and the estimator's phase steps by y - y_0
  * where the reference's steps by y - 9.81 (the phase itself is never
  * re-centred, only the stored values), so X = R + sum |y_0 - 9.81| over the
@@ -1180,21 +1179,21 @@ static void test_synthetic_every_level(void **state)
  * before it was written: ring0 at n = 511 mod 512, a cascade ring at every
  * 17th write, else 0) to e, + 2S |dy_0| for each re-centring at or after the
  * oldest value's write (its line); each such re-centring's rounding is
- * u (2 |dy_0| S + X) per value. The old X left out the phase from before
+ * u (2 |dy_0| S + X) per value. The coarse X leaves out the phase from before
  * the first re-centring (y_0 = 0: 9.81 per sample, 5013 over its 511)
  * that a cascade value written after it carries until its ring first
- * re-bases, and took the 0.019 offset between the first and second
+ * re-bases, and takes the 0.019 offset between the first and second
  * re-centrings over all 2S samples of every window that held it. Float, per
- * tau (ALLAN_PER_TAU=1 build/host/tests/test_allan): the bound is the old
+ * tau (ALLAN_PER_TAU=1 build/host/tests/test_allan): the bound is the coarse
  * one to 1 % up to tau 256, 3-9 % above it from 384 to 16384 (the left-out
  * phase: 1.06e-3 at 384 where 1.03e-3, 1.12e-3 at 4096 where 1.03e-3), and
  * below it from 24576 (2.14e-3 where 2.49e-3; 3.37e-3 at 65536 where
  * 4.85e-3; 6.17e-3 at 98304 where 1.25e-2); measured 1.9e-7 to 1.5e-4, at
- * most 0.12 of it. It stays above the old measured 2e-3 from tau 24576:
+ * most 0.12 of it. It stays above the fixed 2e-3 from tau 24576:
  * there the top levels' values written before their ring first re-bases
  * (17 x 4096 samples and more) carry the 5013 of the first 511 samples, a
  * rounding of u 5013 = 3e-4 on second differences of 0.6-0.9. Double:
- * 3.8e-13 to 1.1e-11 (2.3e-11 before), measured 2.4e-13. */
+ * 3.8e-13 to 1.1e-11 (2.3e-11 with the coarse X), measured 2.4e-13. */
 static void test_unrepresentative_first_sample(void **state)
 {
     const size_t n = (size_t)1 << 20;
@@ -1892,10 +1891,10 @@ static void test_fit_more_params_than_points(void **state)
 
 /* A fit reported as done must be finite: white noise at 100 Hz with one
  * wild point (m = 8, 900x its neighbours) and the extra terms drove
- * Levenberg-Marquardt to log parameters whose exp() overflowed: Q and sigma
- * infinite, T infinite, RMS NaN, and a return of 0 (a randomised table
- * driver found it, the ident review). A non-finite step result now keeps
- * the stage-1 solution. */
+ * can drive Levenberg-Marquardt to log parameters whose exp() overflows: Q
+ * and sigma infinite, T infinite, RMS NaN, and a return of 0 (a randomised
+ * table driver finds it). A non-finite step result keeps the stage-1
+ * solution. */
 static void test_fit_finite(void **state)
 {
     static const uint32_t taus[7] = { 1, 2, 3, 4, 6, 8, 12 };
@@ -1930,7 +1929,7 @@ static void test_fit_finite(void **state)
 }
 
 /* A limit of the analysed tau under one sample is no paper identification,
- * not "no limit" (a review, 2026-11-28); `harness allan` now refuses such a
+ * not "no limit"; `harness allan` refuses such a
  * record before identifying (too few samples for any Allan point), so the
  * guard is checked here. */
 static void test_identify_limit_below_one_sample(void **state)
@@ -1958,8 +1957,8 @@ static void test_identify_limit_below_one_sample(void **state)
  * white sd 0.0027 (max 0.0065), gm_sigma sd 0.042 (max 0.091), gm_tau sd
  * 0.17 (max 0.47), rms_log10 mean 0.020, sd 0.009, at most 0.043; seed 42:
  * +0.12 %, -6.3 %, -6.6 %, rms_log10 0.020. The tolerances are 4 of those
- * sd (white 0.011, gm_sigma 0.17; until 2026-12-02 0.02 and 0.25, 7.4 and
- * 6 sd, which a fit biased by 1.5 % in the white noise met), gm_tau's 0.5
+ * sd (white 0.011, gm_sigma 0.17; 0.02 and 0.25, 7.4 and 6 sd, would let
+ * a fit biased by 1.5 % in the white noise pass), gm_tau's 0.5
  * (2.9 sd) kept, and rms_log10's 0.05 (the mean + 3.3 sd) kept. The
  * simulator's own statistics are checked tightly by test_sim_statistics. */
 static void test_fit_simulated(void **state)
@@ -2148,9 +2147,9 @@ static void test_paper_tables_inconsistent(void **state)
  * takes sigma_bias as the driving sd of eq. (4), stationary sd
  * sigma_bias / sqrt(1 - c^2), c = e^(-1/tau): 1e-4 / sqrt(1 - e^(-2/400))
  * = 1.41598e-3 (numpy). The SAMPLE density multiplied by sqrt(f_s) instead
- * passed every test (the mutation review, 2026-11-29). The expected values
+ * would pass every test but this one. The expected values
  * are these formulas, evaluated here in double on the fnav_real_t inputs
- * (they were the printed 1.41421356e-3 and 1.41598e-3 and the unrounded
+ * (not the printed 1.41421356e-3 and 1.41598e-3 and the unrounded
  * 2e-2 and 1e-4, to 1e-6 and 1e-5 relative): the readings that pass a value
  * through exactly, the SAMPLE density to 4 DBL_EPSILON (a square root and a
  * division), the DRIVE sd to 4 DBL_EPSILON / (1 - c^2) (1 - c^2 = 5e-3
@@ -2338,9 +2337,9 @@ static void test_noise_id_rn_at_one_sample(void **state)
     assert_int_equal(alpha, 2);
 }
 
-/* The sample count's end (a review, 2026-11-28): 2^32 - 1 samples give
- * 2^32 phase values, which n_phase (uint32_t) cannot hold: it read 0, and
- * fnav_allan_edf() then called every estimate undefined. 12.4 days at
+/* The sample count's end: 2^32 - 1 samples give 2^32 phase values, which
+ * n_phase (uint32_t) cannot hold: it would read 0, and fnav_allan_edf()
+ * would then call every estimate undefined. 12.4 days at
  * 4 kHz. The count is moved to its end here (the ring contents do not
  * matter for the counts); the push that would make it 2^32 - 1 is refused. */
 static void test_sample_count_end(void **state)
@@ -2366,10 +2365,10 @@ static void test_sample_count_end(void **state)
 }
 
 /* The non-overlapping sums near the count's end (2^32 - 2 samples): the
- * next multiple of m above a block start wrapped past 2^32 to a small
- * number, so fnav_allan_get added about 2^32 / m stale ring terms, and
- * within m samples of the end its loop stepped past 2^32 and never ended
- * (a review, 2026-11-28). The count is moved to the end as in
+ * next multiple of m above a block start must not wrap past 2^32 to a
+ * small number, or fnav_allan_get would add about 2^32 / m stale ring
+ * terms, and within m samples of the end its loop would step past 2^32 and
+ * never end. The count is moved to the end as in
  * test_sample_count_end (in the ring's phase, so the ring stays
  * consistent); the last pushes may add at most a term or two per point. */
 static uint64_t g_xs = 88172645463325252ull;
@@ -2484,8 +2483,8 @@ static void test_late_level0_points(void **state)
  * the phase has grown by the offset of the first sample to about 1,700
  * (ulp 1.2e-4) against a second difference of about 6 (the cost named in
  * docs/allan.md, "Phase"; test_unrepresentative_first_sample's 2e-3). No
- * mutant of fnav_allan.c tried in the review of 2026-12-01 passed the rest
- * of this file and failed here: it pins the per-push behaviour, not a fix. */
+ * mutant of fnav_allan.c tried passed the rest of this file and failed
+ * here: it pins the per-push behaviour, not a fix. */
 #if FNAV_USE_DOUBLE
 #define EVERY_TOL 1e-9
 #else

@@ -199,11 +199,11 @@ static void test_isr_to_frames(void **state)
 /* Every frame the filter releases is an output, also when one sample
  * releases several: with the detector's rate estimated (the default), the
  * first 33 samples' frames come out together, less the detector's delay.
- * The app counted one output per sample and never sent the others (a
- * review, 2026-11-29: 21 of the walk slice's first frames). Counted against
+ * An app counting one output per sample would never send the others (21
+ * of the walk slice's first frames). Counted against
  * the filter driven directly. At 200 Hz: at the app's 400 Hz the host
  * build's detector delay (its ring of 64 lets min_zupt_cycle's look-ahead
- * reach 29 samples, the default since 2026-12-01) is 34 samples, longer
+ * reach 29 samples, with the default min_zupt_cycle) is 34 samples, longer
  * than the 33, and no sample releases several; the firmware's ring of 24
  * caps it at 22. */
 static void test_every_frame_is_output(void **state)
@@ -252,7 +252,7 @@ static void test_every_frame_is_output(void **state)
 
 /* Every second sample echoed: the INFO frame announces the SAMPLE stream's
  * own rate (200 Hz) and no sensor counter, whose steps of 2 a receiver
- * took for 1,999 lost samples in 4,000 (a review, 2026-11-28). */
+ * would take for 1,999 lost samples in 4,000. */
 static void test_sample_every_info(void **state)
 {
     static fnav_cm_app_t app;
@@ -308,7 +308,7 @@ static void test_ring_overrun(void **state)
 /* A FIFO-watermark interrupt: fnav_cm_sample_isr_fifo reads the IMU until it
  * has no sample left or max were read, and pushes each; the main loop sees
  * them in order. fnav_cm_sample_isr reads one per interrupt, so such a board
- * lost all but one sample of each batch (the porting review, 2026-11-30). */
+ * would lose all but one sample of each batch with it. */
 static void test_isr_fifo(void **state)
 {
     static fnav_cm_app_t app;

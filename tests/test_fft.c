@@ -216,16 +216,16 @@ static void test_init_errors(void **state)
     assert_int_equal(fnav_fft_init(&f, FNAV_FFT_MAX_N), FNAV_OK);
 }
 
-/* Argument checks (a review, 2026-12-01): fnav_fft_complex trusted m and
- * the table, fnav_fft_real_packed the table, fnav_fft_cos_sin_2pi n. An m
- * that is not a power of two ran its butterflies past the m entries (m = 6:
- * re[6], re[7]: ASan, heap-buffer-overflow); m = 128 on a table of 64 took
- * the last stage's twiddles as 1 (X_1 of a unit impulse at sample 1 came
- * out 1 + 0i, numpy.fft.fft 0.9988 - 0.0491i); a table never initialised
- * (n = 0, zeroed as static
- * storage is) sent fnav_fft_real_packed's split loop to k < 0 - k, past
- * every array; n = 0 divided by zero in fnav_fft_cos_sin_2pi. Each is now
- * refused with a status, writing nothing. */
+/* Argument checks: fnav_fft_complex checks m and the table,
+ * fnav_fft_real_packed the table, fnav_fft_cos_sin_2pi n. Unchecked, an m
+ * that is not a power of two would run its butterflies past the m entries
+ * (m = 6: re[6], re[7]: ASan, heap-buffer-overflow); m = 128 on a table of
+ * 64 would take the last stage's twiddles as 1 (X_1 of a unit impulse at
+ * sample 1 would come out 1 + 0i, numpy.fft.fft 0.9988 - 0.0491i); a table
+ * never initialised (n = 0, zeroed as static storage is) would send
+ * fnav_fft_real_packed's split loop to k < 0 - k, past every array; n = 0
+ * would divide by zero in fnav_fft_cos_sin_2pi. Each is refused with a
+ * status, writing nothing. */
 static void test_argument_checks(void **state)
 {
     static fnav_fft_t f, zero;

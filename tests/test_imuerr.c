@@ -271,11 +271,11 @@ static void test_catalogue_names_and_params(void **state)
     }
     fnav_imuerr_effect_reset(NULL, FNAV_EFFECT_QUANT);
     assert_int_equal(fnav_imuerr_internal_factor(NULL), 1u);
-    /* a configuration fnav_imuerr_init refuses (a review, 2026-12-01): the
-     * alias factor was converted to uint32_t whatever it held, undefined
-     * behaviour for NaN, a negative value or one above 2^32 (x86 gave
-     * 0x80000000 or 0), and oversample 0 came back as 0, a factor a
-     * caller divides by; now 1, as for NULL */
+    /* a configuration fnav_imuerr_init refuses: the alias factor converted
+     * to uint32_t whatever it held would be undefined behaviour for NaN, a
+     * negative value or one above 2^32 (x86 gives 0x80000000 or 0), and
+     * oversample 0 coming back as 0 would be a factor a caller divides by;
+     * it is 1, as for NULL */
     {
         const fnav_real_t zero = FNAV_R(0.0);
         const fnav_real_t bad[5] = { zero / zero, FNAV_R(-5.0), FNAV_R(1e20), FNAV_R(1.0) / zero, FNAV_R(1.0) };
@@ -298,10 +298,10 @@ static void test_catalogue_names_and_params(void **state)
     }
 }
 
-/* A whole-number parameter given a non-whole value: param_set took it and
- * fnav_imuerr_init refused the configuration later (FNAV_E_CONFIG, without
- * naming it; an earlier review). param_set now refuses it with init's
- * status and leaves the parameter as it was; whole values are taken. */
+/* A whole-number parameter given a non-whole value: param_set refuses it
+ * with init's status (FNAV_E_CONFIG) and leaves the parameter as it was,
+ * rather than take it and leave fnav_imuerr_init to refuse the
+ * configuration later without naming it; whole values are taken. */
 static void test_param_set_whole(void **state)
 {
     fnav_imuerr_config_t c = fnav_imuerr_config_default;

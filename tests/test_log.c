@@ -296,10 +296,10 @@ static void test_bin_corrupted(void **state)
 }
 
 /* A .bin (or .bin.gz) whose magic is off by one byte (a flipped bit): the
- * content is no text, so detection read it as CSV and said "a NUL byte in
- * the text" until 2026-12-01; a file so named whose first four bytes hold
- * three of FNAV's is now said to be a .bin with a bad magic. The same
- * bytes under another name, or two bytes of the magic, are read as before. */
+ * content is no text, and detection must not read it as CSV and say "a NUL
+ * byte in the text": a file so named whose first four bytes hold three of
+ * FNAV's is said to be a .bin with a bad magic. The same bytes under
+ * another name, or two bytes of the magic, are read as any other file. */
 static void test_bin_bad_magic(void **state)
 {
     unsigned char b[4096];
@@ -472,9 +472,9 @@ static void test_bin_resync_counts(void **state)
  * counts from 0, the header excluded: docs/log-format.md, "Integrity"):
  * the stretch skipped counts as the records it holds, to the nearest whole
  * one. Ten bytes inserted before record 2 hold none: record 4, with a NaN,
- * is #4 at byte 192 + 4 * 48 + 10 (it was #5: the stretch counted one).
+ * is #4 at byte 192 + 4 * 48 + 10 (not #5, the stretch counted as one).
  * Records 1 and 2 damaged, which the next slot cannot skip: 96 bytes, two
- * records, so record 4 is #4 at byte 384 (it was #3). */
+ * records, so record 4 is #4 at byte 384 (not #3). */
 static void test_bin_resync_numbers(void **state)
 {
     unsigned char b[4096];
@@ -510,8 +510,8 @@ static void test_bin_nan_record(void **state)
     rec.gyr[1] = nan;
     hx_bin_record_encode(&rec, b + HX_BIN_HEADER_SIZE + 4 * HX_BIN_RECORD_SIZE);
     expect_bin(b, g_golden_n, 1, 4, FNAV_E_NANINF, "NaN");
-    /* a NaN temperature (flagged valid) likewise: it was delivered, and
-     * convert wrote "nan" into a CSV that the CSV reader refuses */
+    /* a NaN temperature (flagged valid) likewise: delivered, it would let
+     * convert write "nan" into a CSV that the CSV reader refuses */
     memcpy(b, g_golden, g_golden_n);
     assert_int_equal(hx_bin_record_decode(b + HX_BIN_HEADER_SIZE + 2 * HX_BIN_RECORD_SIZE, &rec), 0);
     assert_true((rec.flags & HX_BIN_REC_TEMP) != 0);
@@ -521,7 +521,7 @@ static void test_bin_nan_record(void **state)
 }
 
 /* A sample record whose values a reader must refuse though its checksum
- * holds (never run before make coverage-harness, 2026-11-30): time going
+ * holds (paths only this test runs: make coverage-harness): time going
  * backwards, beyond 2^62 ns, a value beyond FNAV_INPUT_MAX_ABS; and a sample
  * after the end record. Each ends the read there with its status and a
  * message naming the record; the samples before it are delivered. */
@@ -565,8 +565,8 @@ static void test_bin_bad_record_values(void **state)
  * limit): the CSV reader asks "in ug?" and names --units accel=ug, but a
  * .bin's units are fixed by its header (m/s^2; docs/log-format.md) and
  * --units does not apply to it, so the .bin reader asks the same question
- * with the remedy that applies: its writer must scale ug to m/s^2 (the
- * error said only "no sensor reads that" until 2026-12-02). Not asked of a
+ * with the remedy that applies: its writer must scale ug to m/s^2 (not
+ * only "no sensor reads that"). Not asked of a
  * rate beyond 1e6, nor of an acceleration beyond 400 g once read in ug. */
 static void test_bin_value_in_ug(void **state)
 {
@@ -720,7 +720,7 @@ static void test_csv_flexible(void **state)
 
 /* A sample without a temperature in a log that has them (a .bin record
  * whose temperature is not valid) is written to CSV as an empty field and
- * read back without one; it was written as 0 degC, a temperature it never
+ * read back without one, not written as 0 degC, a temperature it never
  * had. CSV -> .bin -> CSV keeps it. */
 static void test_csv_missing_temp(void **state)
 {
@@ -800,10 +800,10 @@ static void test_csv_gzip(void **state)
 }
 
 /* A .csv.gz cut short (an incomplete copy): every sample before the cut is
- * kept and the reading ends in an error that says so. Until 2026-11-28 a
- * cut inside a line passed as "last line is incomplete (recording cut off
+ * kept and the reading ends in an error that says so: a cut inside a line
+ * must not pass as "last line is incomplete (recording cut off
  * mid-write)", a warning with exit status 0, while a cut at a line's end
- * was a "read error". */
+ * is a "read error". */
 static void test_gz_truncated(void **state)
 {
     char p[256], err[320];
@@ -831,7 +831,7 @@ static void test_gz_truncated(void **state)
     assert_null(strstr(log.warnings, "cut off mid-write"));
     hx_log_free(&log);
     /* cut inside the first block: nothing decompresses; said as a
-     * truncated .gz, not as an empty file (a review, 2026-11-28) */
+     * truncated .gz, not as an empty file */
     assert_int_equal(truncate(p, 25), 0);
     rc = hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err);
     assert_true(rc < 0);
@@ -887,9 +887,9 @@ static void test_gz_truncated(void **state)
 
 /* A .bin.gz cut inside its 192-byte header: said as a truncated .gz, as
  * docs/log-format.md ("A truncated .gz") promises, with the bytes of the
- * header it holds. Until 2026-12-01 it said "too short for a footnav log
- * header (130 of 192 bytes)", the message of a plain .bin cut short, which
- * stays. The golden file is stored uncompressed (level 0: a 10-byte gzip
+ * header it holds, not "too short for a footnav log header (130 of 192
+ * bytes)", the message of a plain .bin cut short, which stays. The golden
+ * file is stored uncompressed (level 0: a 10-byte gzip
  * header, a 5-byte block header, then the bytes), so that a cut at
  * 15 + 100 bytes leaves exactly 100 bytes of the header. */
 static void test_bin_gz_header_cut(void **state)
@@ -989,8 +989,8 @@ static void test_cut_last_line(void **state)
     assert_int_equal(ra.n, 1);
     assert_int_equal(ra.end, FNAV_E_FORMAT);
     /* our CSV with every column but no newline after its last used value:
-     * the value may be cut (-0.00245940452 read as -0.0024590001; a review,
-     * 2026-11-28), so the line is dropped with the warning; an unused
+     * the value may be cut (-0.00245940452 read as -0.0024590001), so the
+     * line is dropped with the warning; an unused
      * column after it leaves the used values whole, and the line is read */
     write_text(p, "t,ax,ay,az,gx,gy,gz\n0,1,2,3,4,5,6\n0.01,1,2,3,4,5,6\n0.02,1,2,3,4,5,-0.002459");
     expect_cut(p, HX_FMT_CSV, 2, ":4: last line has no newline and ends in a value the reader uses");
@@ -1303,8 +1303,8 @@ static void test_gx2_lost_packets(void **state)
  * Header: line names, 17. A row that lost a field (a stamp: the rate
  * estimate then read from m_x) or gained one (a stray blank splitting a
  * number) shifts the values after it (one in the columns the samples are
- * read from mostly stops the reader: a counter read as a_z); they were
- * read without a word until 2026-11-30. Counted and warned as in the other
+ * read from mostly stops the reader: a counter read as a_z); such rows
+ * must not be read without a word. Counted and warned as in the other
  * formats; a clean file and a cut last line have none. */
 static void test_gx2_field_count(void **state)
 {
@@ -1349,8 +1349,8 @@ static void test_gx2_field_count(void **state)
 }
 
 /* GX2: the timer-restart note is kept when the log then stops at a bad
- * line (the samples before it were bridged all the same); it was added only
- * at a clean end, so a log cut by an error lost it. */
+ * line (the samples before it were bridged all the same); added only at a
+ * clean end, it would be lost from a log cut by an error. */
 static void test_gx2_restart_then_error(void **state)
 {
     const long period = 78720;
@@ -1370,7 +1370,7 @@ static void test_gx2_restart_then_error(void **state)
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), 1); /* samples, then an error */
     assert_int_equal(log.n, 10);
     assert_true(log.status != FNAV_END);
-    /* a note, not a warning (routine for the GX2: a user review), and the
+    /* a note, not a warning (routine for the GX2), and the
      * count in the singular */
     {
         char want[512];
@@ -1386,8 +1386,8 @@ static void test_gx2_restart_then_error(void **state)
 
 /* GX2: a timer restart on the file's first interval, before any period was
  * measured, is bridged with the logger's own rate (Freq. [Hz], here 249.8)
- * instead of the host stamps, which jitter to 25 ms (here 31.5 ms, the
- * bridged interval until 2026-11-28: a false 31.5 ms gap). */
+ * instead of the host stamps, which jitter to 25 ms (here 31.5 ms: bridged
+ * with that, the interval would be a false 31.5 ms gap). */
 static void test_gx2_first_restart(void **state)
 {
     const long period = 78720;
@@ -1417,8 +1417,8 @@ static void test_gx2_first_restart(void **state)
 }
 
 /* GX2: a packet written twice (same Nr, same timer value) is a duplicate,
- * dt = 0, as in every other format; it was bridged as a timer restart, one
- * period later, which hid it and shifted every later sample by a period. */
+ * dt = 0, as in every other format; bridged as a timer restart, one period
+ * later, it would be hidden and every later sample shifted by a period. */
 static void test_gx2_repeated_packet(void **state)
 {
     const long period = 78720;
@@ -1565,11 +1565,11 @@ static void test_gx2_first_restart_host_column(void **state)
  * host stamp, which the reader does not use), leaves every value the reader
  * takes whole and is read, as docs/log-format.md ("Recordings cut off
  * mid-write") says; one cut inside field 11 (the filtered host stamp, which
- * it takes) is dropped with the warning. Until 2026-11-29 the reader
- * required twelve fields and dropped the first kind too, as "ends in a
- * value the reader uses" (found by a hand-made mutant of that count that
- * passed every suite: no test had a 12-field last line; none of the six
- * files has one, walks 31 and 32 end inside fields 10 and 7). */
+ * it takes) is dropped with the warning. A reader requiring twelve fields
+ * would drop the first kind too, as "ends in a value the reader uses" (a
+ * hand-made mutant of that count passes every other suite: no other test
+ * has a 12-field last line; none of the six files has one, walks 31 and 32
+ * end inside fields 10 and 7). */
 static void test_gx2_cut_last_line(void **state)
 {
     const long period = 78720;
@@ -1723,9 +1723,9 @@ static void test_detect_variants(void **state)
           "0.01,0.5,0.2,9.8,0.1,0.2,0.3\n",
           HX_FMT_CSV, 0.5, 0.3 },
         /* the headerless OpenShoe 820 Hz file with a trailing comma, tabs,
-         * semicolons, or blanks and exponents (MATLAB's save -ascii): until
-         * 2026-11-28 only exactly five commas were it, the others failed
-         * with "header has no column 't'" */
+         * semicolons, or blanks and exponents (MATLAB's save -ascii): not
+         * only exactly five commas, the others failing with "header has no
+         * column 't'" */
         { "0.5,-0.4,9.8,0.1,0.2,0.3,\r\n0.5,-0.4,9.8,0.1,0.2,0.3,\r\n", HX_FMT_OS820, 0.5, 0.3 },
         { "0.5\t-0.4\t9.8\t0.1\t0.2\t0.3\n0.5\t-0.4\t9.8\t0.1\t0.2\t0.3\n", HX_FMT_OS820, 0.5, 0.3 },
         { "0.5;-0.4;9.8;0.1;0.2;0.3\n0.5;-0.4;9.8;0.1;0.2;0.3\n", HX_FMT_OS820, 0.5, 0.3 },
@@ -1733,8 +1733,8 @@ static void test_detect_variants(void **state)
           "   5.0000000e-01  -4.0000000e-01   9.8000000e+00   1.0000000e-01   2.0000000e-01   3.0000000e-01\n",
           HX_FMT_OS820, 0.5, 0.3 },
         /* ipol: a blank line before the first, and a comma-separated export
-         * (failed until 2026-11-28: "FILE:1: expected 'Acquisition
-         * frequency'", "header has no column 'PacketCounter'") */
+         * (not "FILE:1: expected 'Acquisition frequency'", "header has no
+         * column 'PacketCounter'") */
         { "\nAcquisition frequency: 100 Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n"
           "0.0\t0.5\t0.2\t9.8\t0.1\t0.2\t0.3\n1.0\t0.5\t0.2\t9.8\t0.1\t0.2\t0.3\n",
           HX_FMT_IPOL, 0.5, 0.3 },
@@ -1742,9 +1742,9 @@ static void test_detect_variants(void **state)
           "0.0,0.5,0.2,9.8,0.1,0.2,0.3\n1.0,0.5,0.2,9.8,0.1,0.2,0.3\n",
           HX_FMT_IPOL, 0.5, 0.3 },
         /* the interchange format that mentions a GX2 in a comment, or keeps a
-         * foreign format's columns beside its own: ours (until 2026-11-28
-         * read as gx2, "no 'Header:' line found", and adis, "header has no
-         * column 'acc_y_g'") */
+         * foreign format's columns beside its own: ours (not read as gx2,
+         * "no 'Header:' line found", and adis, "header has no column
+         * 'acc_y_g'") */
         { "# converted from an OpenShoe GX2 log (a_x [g] x 9.80665)\nt,ax,ay,az,gx,gy,gz\n"
           "0,0.5,0.2,9.8,0.1,0.2,0.3\n0.01,0.5,0.2,9.8,0.1,0.2,0.3\n",
           HX_FMT_CSV, 0.5, 0.3 },
@@ -1752,8 +1752,8 @@ static void test_detect_variants(void **state)
           HX_FMT_CSV, 0.5, 0.3 },
         /* blank-separated: numpy's savetxt with its default delimiter
          * (header "# t ax ..."), a header padded with runs of blanks, and a
-         * foreign format whose names hold no blank (until 2026-11-30:
-         * "FILE:2: header has no column 't'" and "FILE:1: ...") */
+         * foreign format whose names hold no blank (not "FILE:2: header has
+         * no column 't'" and "FILE:1: ...") */
         { "# t ax ay az gx gy gz\n0.000000000000000000e+00 5.000000000000000000e-01 2.0e-01 9.8e+00 1.0e-01 2.0e-01 "
           "3.000000000000000000e-01\n1.0e-02 5.0e-01 2.0e-01 9.8e+00 1.0e-01 2.0e-01 3.0e-01\n",
           HX_FMT_CSV, 0.5, 0.3 },
@@ -1783,9 +1783,9 @@ static void test_detect_variants(void **state)
 }
 
 /* Numbers with a decimal comma (a European-locale export): an error that
- * says so, at the line, in every reader (it said "column 2 ('0,5') is not a
- * number", and of the headerless OpenShoe file "header has no column 't'",
- * until 2026-11-30). */
+ * says so, at the line, in every reader (not "column 2 ('0,5') is not a
+ * number", and of the headerless OpenShoe file "header has no column
+ * 't'"). */
 static void test_decimal_comma(void **state)
 {
     static const struct {
@@ -1846,10 +1846,10 @@ static void test_format_list(void **state)
 }
 
 /* The seeds of the log-reader fuzz target run the format their names say:
- * the target took the format as the whole first byte modulo HX_FMT_COUNT,
- * flag bits included, so gx2_forced (0x83) ran as bin, square2_forced
- * (0x89) as ipol and adis_synthetic_gz (0x40) as openshoe820 (a
- * contributor's review, 2026-11-30); a new format moved them again. */
+ * a target taking the format as the whole first byte modulo HX_FMT_COUNT,
+ * flag bits included, would run gx2_forced (0x83) as bin, square2_forced
+ * (0x89) as ipol and adis_synthetic_gz (0x40) as openshoe820, and a new
+ * format would move them again. */
 static void test_fuzz_seed_formats(void **state)
 {
     static const struct {
@@ -1896,16 +1896,15 @@ static void test_detect_wrong_hint(void **state)
     assert_non_null(strstr(err, "format ngimu detected from the content; give --from FORMAT"));
     assert_int_equal(hx_log_load(&log, p, HX_FMT_NGIMU, 0.0, err, sizeof err), -1);
     assert_null(strstr(err, "--from"));
-    /* (names with a word besides stem and axis: "acc x" alone is read since
-     * 2026-11-30, test_csv_names) */
+    /* (names with a word besides stem and axis: "acc x" alone is read,
+     * test_csv_names) */
     write_text(p, "time,acc x raw,acc y raw,acc z raw,gyr x raw,gyr y raw,gyr z raw\n0,1,2,3,4,5,6\n");
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ":1: header has no column 't'"));
     assert_non_null(strstr(err, "no importer's header recognised, read as footnav CSV; give --from FORMAT"));
     /* a layout no importer reads (a phone app's export): the error names
-     * the way without C, not only --from (a contributor's review, 2026-11-30):
-     * the options, since 2026-11-30 (it said "rename the columns and
-     * convert the units") */
+     * the way without C, not only --from: the options (not "rename the
+     * columns and convert the units") */
     write_text(p, "timestamp_ns,acc_x_uncal,acc_y_uncal,acc_z_uncal,gyro_x_uncal,gyro_y_uncal,gyro_z_uncal\n"
                   "1764500000000000000,1,2,3,4,5,6\n");
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
@@ -1915,7 +1914,7 @@ static void test_detect_wrong_hint(void **state)
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ":1: header has no column 'gz'; expected t,ax,ay,az,gx,gy,gz[,temp]"));
     assert_null(strstr(err, "--from"));
-    /* no header at all: the first line is data (it was "header has no column 't'") */
+    /* no header at all: the first line is data (not "header has no column 't'") */
     write_text(p, "0.0025,0.1,-0.2,9.81,0.01,0.02,-0.03\n0.005,0.1,-0.2,9.81,0.01,0.02,-0.03\n");
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ":1: the first line is data, not a header"));
@@ -1973,10 +1972,9 @@ static void test_stamp_rate(void **state)
         /* stamps from a sample counter (k / 100 Hz) with 1 % lost samples:
          * exactly 100 Hz (the lost ones are gaps, not rounding), and not
          * coarse: every interval is a whole number of the median one, which
-         * the detector's own median estimate reads exactly (replay said
-         * such a grid was "too coarse for the detector's estimate": the
-         * stamps' resolution, the intervals' gcd, is the period itself;
-         * the mutation round of 2026-11-29) */
+         * the detector's own median estimate reads exactly (replay must not
+         * say such a grid is "too coarse for the detector's estimate": the
+         * stamps' resolution, the intervals' gcd, is the period itself) */
         uint64_t r = 3u;
         int64_t c = 0;
         int coarse = 1;
@@ -1988,12 +1986,11 @@ static void test_stamp_rate(void **state)
         }
         assert_true(hx_stamp_rate_hz(t, N, &coarse) == 100.0);
         assert_int_equal(coarse, 0);
-        /* 5 % and 10 % lost: exactly 100 Hz still. The first period came
-         * from the median of spans of 16 intervals, which above 4.2 % lost
-         * holds a lost sample (17 periods over 16, 10.625 ms): the gap
-         * threshold then took 20 ms intervals for periods, 95.3 and 91.6
-         * Hz (found by the simgap review of 2026-12-01: `sim --rate 100
-         * --effect dropout:prob=0.05` as a CSV, `info`) */
+        /* 5 % and 10 % lost: exactly 100 Hz still. A first period from the
+         * median of spans of 16 intervals, which above 4.2 % lost holds a
+         * lost sample (17 periods over 16, 10.625 ms), would make the gap
+         * threshold take 20 ms intervals for periods, 95.3 and 91.6 Hz
+         * (`sim --rate 100 --effect dropout:prob=0.05` as a CSV, `info`) */
         {
             static const uint64_t lost[2] = { 838861u, 1677722u }; /* 5 %, 10 % of 2^24 */
             size_t e;
@@ -2062,7 +2059,7 @@ static void test_stamp_rate(void **state)
  * - the same bursts with a 5 s pause after 2000 samples: two segments, the
  *   pause left out of the span;
  * - 400 Hz with every third sample lost, or every fourth stamp a repeat of
- *   the one before (the coarse stamps the units review kept apart): NONE;
+ *   the one before (coarse stamps, not bursts): NONE;
  * - fewer than 4 distinct stamps: NONE. */
 static void test_stamp_bursts(void **state)
 {
@@ -2197,8 +2194,8 @@ static void test_stamp_bursts_rate(void **state)
  * interchange CSV leaves its time column out; every other format, whose
  * time cannot be left out (a .bin) or which ignores --input-rate (a
  * time-stamped importer) or takes it for its counter's rate (ipol), is
- * converted to CSV first. Until 2026-12-01 every format was told to leave
- * its time column out (tests/cli/test_bursts.sh follows each remedy). */
+ * converted to CSV first, not told to leave its time column out
+ * (tests/cli/test_bursts.sh follows each remedy). */
 static void test_bursts_remedy(void **state)
 {
     static const hx_format_t convert[] = { HX_FMT_BIN, HX_FMT_GX2, HX_FMT_NGIMU, HX_FMT_PYSHOE,
@@ -2329,8 +2326,8 @@ static void test_ipol_rate_and_step_back(void **state)
 /* A row with the columns the reader uses but fewer fields than the header
  * names: a field lost inside it shifts the values after it (Acc_Y lost: az
  * read from Gyr_X), which nothing can tell from trailing fields left off.
- * Read, as before, but counted and warned with the first such line (it was
- * read silently; the mutation sweep of 2026-11-29); a file without one,
+ * Read, but counted and warned with the first such line (not read
+ * silently); a file without one,
  * and a cut last line that lost its trailing fields, have no warning. */
 static void test_short_rows_warned(void **state)
 {
@@ -2371,8 +2368,8 @@ static void test_short_rows_warned(void **state)
     unlink(p);
     /* a header that ends in a delimiter names no column there (a
      * spreadsheet's export): rows without it have every field the header
-     * names (each was warned "fewer fields than the header's 9" until
-     * 2026-11-30); a row that lost a field still is, against 8 */
+     * names (none is warned "fewer fields than the header's 9"); a row that
+     * lost a field still is, against 8 */
     tmp_path(p, sizeof p, ".csv");
     for (pass = 0; pass < 2; pass++) {
         f = fopen(p, "w");
@@ -2402,8 +2399,8 @@ static void test_short_rows_warned(void **state)
 
 /* A row with more fields than the header names: a stray delimiter inside
  * it shifts the values after it (0.01,5,0.01,... read as ax = 5, az =
- * 0.02, gx = 9.81); it was read without a word (the code review of
- * 2026-11-30). Read, as a row with fewer fields is, but counted and warned
+ * 0.02, gx = 9.81), which must not go without a word. Read, as a row with
+ * fewer fields is, but counted and warned
  * with the first such line; when every row has more, the message says the
  * header may lack a column's name. What exporters write is no extra field:
  * an empty field after a trailing delimiter on every row (also with an
@@ -2697,12 +2694,12 @@ static void test_format_names(void **state)
 
 /* --columns and --units: the interchange CSV under another layout (a phone
  * app's export: ns stamps, g, deg/s) read without an awk conversion
- * (docs/log-format.md, "Another layout"). Until 2026-11-30 such a file had to
- * be rewritten first. */
+ * (docs/log-format.md, "Another layout"), without rewriting the file
+ * first. */
 /* The rate the time-unit checks judge (hx_time_unit_rate): the span of the
- * samples has the last word on a rate out of 20 Hz - 100 kHz. Until
- * 2026-11-30 info, allan, psd and simgap judged the median interval alone
- * and told stamps in bursts time=ms (tests/cli/test_foundation.sh). */
+ * samples has the last word on a rate out of 20 Hz - 100 kHz. Judging the
+ * median interval alone, info, allan, psd and simgap would tell stamps in
+ * bursts time=ms (tests/cli/test_foundation.sh). */
 static void test_time_unit_rate(void **state)
 {
     (void)state;
@@ -2836,9 +2833,9 @@ static void test_name_classify(void **state)
 
 /* Units spelled in UTF-8 (the degree, micro and superscript-two signs) are
  * their ASCII spellings; a unit not read makes the name a near miss that
- * says so (unit_unread, unit_text as the header spells it). Until
- * 2026-12-01 "gx [°/s]" and "acc_x [m/s²]" were no names at all, and a
- * bracketed unit not read made a name no near miss either. */
+ * says so (unit_unread, unit_text as the header spells it). "gx [°/s]" and
+ * "acc_x [m/s²]" must be names, and a bracketed unit not read must make a
+ * name a near miss. */
 static void test_name_units_utf8(void **state)
 {
     static const struct {
@@ -2869,7 +2866,7 @@ static void test_name_units_utf8(void **state)
         /* a unit not read: a near miss that says so */
         { "gx [\xc2\xb0/h]", HX_NAME_NEAR, 4, HX_UNIT_NONE, 1, "\xc2\xb0/h" },
         { "ax_ng", HX_NAME_NEAR, 1, HX_UNIT_NONE, 1, "ng" },
-        /* micro-g, read since 2026-12-02 (a near miss "not read" before) */
+        /* micro-g, read (not a near miss "not read") */
         { "ax_\xc2\xb5g", HX_NAME_MATCH, 1, HX_UNIT_UG, 0, "\xc2\xb5g" },
         { "ax_ug", HX_NAME_MATCH, 1, HX_UNIT_UG, 0, "ug" },
         { "AccY [\xce\xbcg]", HX_NAME_MATCH, 2, HX_UNIT_UG, 0, "\xce\xbcg" },
@@ -2904,9 +2901,8 @@ static void test_name_units_utf8(void **state)
 }
 
 /* --units takes the UTF-8 spellings the names do: time=µs (U+00B5) or μs
- * (U+03BC), accel=m/s² (U+00B2), gyro=°/s (U+00B0) or m°/s; until
- * 2026-12-01 each was an unknown unit, exit 2. The error quotes the value
- * as given. */
+ * (U+03BC), accel=m/s² (U+00B2), gyro=°/s (U+00B0) or m°/s, none an unknown
+ * unit with exit 2. The error quotes the value as given. */
 static void test_units_option_utf8(void **state)
 {
     static const struct {
@@ -2945,8 +2941,8 @@ static void test_units_option_utf8(void **state)
 /* --columns names a column whose name states a unit other than the one
  * --units (or its default) reads it in: warned, naming the column, the two
  * units and the --units item that reads it so; the values are read as
- * asked. Until 2026-12-01 'acc_x [g]' given with --columns alone was read
- * as m/s^2 without a word. */
+ * asked: 'acc_x [g]' given with --columns alone must not be read as m/s^2
+ * without a word. */
 static void test_columns_unit_warned(void **state)
 {
     char p[512], err[1024];
@@ -3279,12 +3275,12 @@ static void test_csv_layout(void **state)
             { "time=us,accel=mps2", "1500.2504", 1500250LL, 1.0, 1.0 },
             { "time=ns", "42", 42LL, 1.0, 1.0 },
             /* mg and mdps (ST's SensorTile data log writes AccX [mg] and
-             * GyroX [mdps]; the units review, 2026-11-30) */
+             * GyroX [mdps]) */
             { "accel=mg,gyro=mdps", "1", 1000000000LL, 0.00980665, 3.14159265358979323846 / 180.0 / 1000.0 },
             { "gyro=mdeg/s", "1", 1000000000LL, 1.0, 3.14159265358979323846 / 180.0 / 1000.0 },
             { "time=ns", "1.5e3", 1500LL, 1.0, 1.0 },
             /* more integer digits than 9e9 s holds, scaled down by an
-             * exponent: a number, not "beyond 9e9 s" (it was, 2026-11-30) */
+             * exponent: a number, not "beyond 9e9 s" */
             { "time=s", "100000000000000000000e-15", 100000000000000LL, 1.0, 1.0 },
             { "time=ns", "90000000000000000000e-2", 900000000000000000LL, 1.0, 1.0 },
         };
@@ -3336,8 +3332,8 @@ static void test_csv_layout(void **state)
         assert_int_equal(hx_csv_units_parse(&l, "accel=g,gyro=deg/s,time=s", err, sizeof err), 0);
         assert_string_equal(hx_units_give(&l, give, sizeof give), "give --units accel=g,gyro=deg/s");
         /* every item in SI (seconds read with --units time=ms, say): no
-         * item to give, so the remedy is to leave --units out; it read
-         * "give --units " until the review of 2026-11-30 */
+         * item to give, so the remedy is to leave --units out, not
+         * "give --units " */
         hx_csv_layout_default(&l);
         assert_string_equal(hx_units_give(&l, give, sizeof give), "leave --units out");
     }
@@ -3351,9 +3347,8 @@ static void test_csv_layout(void **state)
     assert_non_null(strstr(ra.err, "header has no column 'timestamp_ns'"));
     assert_non_null(strstr(ra.err, "--columns"));
     /* so is a mapped temp, an optional column, and a mapped t with the rate
-     * given: a name the user gave is there (both were ignored, the
-     * temperature left out or the time taken from the rate, until
-     * 2026-11-30) */
+     * given: a name the user gave is there (neither ignored: the
+     * temperature not left out, the time not taken from the rate) */
     write_text(p, "t,ax,ay,az,gx,gy,gz\n0,0,0,1,0,0,0\n");
     hx_csv_layout_default(&l);
     assert_int_equal(hx_csv_columns_parse(&l, "temp=temperature", err, sizeof err), 0);
@@ -3378,7 +3373,7 @@ static void test_csv_layout(void **state)
     assert_non_null(strstr(ra.err, "ngimu"));
     assert_non_null(strstr(ra.err, "give --from csv"));
     /* a .bin is no text: not told to give --from csv, which reads "a NUL
-     * byte in the text" (it was told to until 2026-11-30) */
+     * byte in the text" */
     {
         hx_meta_t bm;
         hx_writer_t *w;
@@ -3792,11 +3787,11 @@ static void write_mtmgr_steps(const char *p, const char *pre, double stated, int
 /* A header alone whose SampleTimeFine steps are slower than 20 Hz in MT
  * Manager's 100 us ticks but 20 Hz .. 5 kHz in us is Movella DOT's CSV
  * (DOT user manual, XD0502P, 4.2.5: SampleTimeFine in us), refused with the
- * CSV reader's remedy; it was read 100 times too slow. At the bound of 500
+ * CSV reader's remedy, not read 100 times too slow. At the bound of 500
  * ticks (20 Hz) or with a '//' line it is read as an export; with a column
  * DOT does not write (Roll) too at 50,001 (19.9996 Hz in us), which DOT's
  * own columns refuse (test_mtmgr_dot_rates). With --from mtmanager it is
- * refused the same (it was read in ticks until 2026-11-30). The median
+ * refused the same (not read in ticks). The median
  * step (a gap, a wrap in the first rows) decides. A mutant that drops the
  * '//' condition refuses the preamble case; one without the us range
  * refuses 50,001 under Roll. */
@@ -3857,9 +3852,9 @@ static void test_mtmgr_us_stamps(void **state)
                           12, 2511, 0);
     assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, "likely a Movella DOT CSV"));
-    /* given with --from mtmanager: the same refusal (it was read in ticks,
-     * a DOT CSV 100 times too slow with its deg/s read as rad/s, and only
-     * replay's units check said something, naming --units) */
+    /* given with --from mtmanager: the same refusal (read in ticks, a DOT
+     * CSV would be 100 times too slow with its deg/s read as rad/s, and only
+     * replay's units check would say something, naming --units) */
     write_mtmgr_steps(p, "", 0.0, 12, 2511, 0);
     assert_int_equal(hx_log_load(&log, p, HX_FMT_MTMGR, 0.0, err, sizeof err), -1);
     assert_non_null(strstr(err, ".csv: SampleTimeFine steps by 2511: 3.982 Hz in 100 us ticks, 398.2 Hz in us, no "
@@ -3870,11 +3865,11 @@ static void test_mtmgr_us_stamps(void **state)
 /* A Movella DOT CSV at any of DOT's rates (1, 4, 10, 12, 15, 20, 30, 60 and
  * 120 Hz: DOT SDK's output rates): with no '//' line and a header of DOT's
  * own columns, SampleTimeFine steps of 0.5 Hz or faster in us are DOT's.
- * Below 20 Hz in us (0.2 Hz in ticks) they were read as an export, 100
- * times too slow: the rate rule alone needs an IMU's rate in us. Half DOT's
+ * Below 20 Hz in us (0.2 Hz in ticks) they must not be read as an export,
+ * 100 times too slow: the rate rule alone needs an IMU's rate in us. Half DOT's
  * slowest rate is the bound (2,000,000 us refused, 2,000,001 read); a
  * column only MT Manager writes, a '//' line, leave the export as it was;
- * a column of neither (an app's own) does not (2026-12-01). */
+ * a column of neither (an app's own) does not. */
 static void test_mtmgr_dot_rates(void **state)
 {
     static const int rates[] = { 1, 4, 10, 12, 15, 20, 30, 60, 120 };
@@ -3914,8 +3909,8 @@ static void test_mtmgr_dot_rates(void **state)
     hx_log_free(&log);
     /* a DOT CSV with one column neither DOT's nor MT Manager's (an app's own) and no DOT-only name, at each of
      * DOT's rates below 20 Hz: its steps make no MTi's rate in 100 us ticks (an MTi outputs at whole Hz, 1 or
-     * more) and one of DOT's in us, so it is refused as the DOT header is; it was read in ticks, 100 times too
-     * slow, until 2026-12-01. The same bound (2,000,000 us refused, 2,000,001 read) */
+     * more) and one of DOT's in us, so it is refused as the DOT header is, not read in ticks, 100 times too
+     * slow. The same bound (2,000,000 us refused, 2,000,001 read) */
     for (c = 0; c < 5; c++) {
         const long step = (1000000L + rates[c] / 2) / rates[c];
         write_mtmgr_steps_hdr(p, "", "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,"
@@ -3948,14 +3943,14 @@ static void test_mtmgr_dot_rates(void **state)
 
 /* A DOT CSV is known by a name only DOT writes (ClipCountAcc, ClipCountGyr,
  * Cal_FreeAcc_*, FreeAcc_Compared_Result, Quat_W..Z, Euler_X..Z), whatever
- * else its header holds: a column on no list (an app's own, here
- * "UtcTime") left a DOT at 10 Hz read at 0.1 Hz, exit 0, until 2026-12-01,
- * when every column had to be on DOT's list. Given with --from mtmanager a
+ * else its header holds, not only when every column is on DOT's list: a
+ * column on no list (an app's own, here "UtcTime") would leave a DOT at
+ * 10 Hz read at 0.1 Hz, exit 0. Given with --from mtmanager a
  * header with Euler_X (which detection leaves to the CSV reader) is refused
  * the same. A name only MT Manager writes (Roll, StatusWord, Quat_q0,
- * SampleTimeCoarse) beside DOT's mark leaves the file read in ticks, as
- * before. An unknown column without the mark was read in ticks too, at 0.1
- * Hz, until 2026-12-01: no MTi outputs below 1 Hz, so a header without a
+ * SampleTimeCoarse) beside DOT's mark leaves the file read in ticks. An
+ * unknown column without the mark must not make it read in ticks, at 0.1
+ * Hz: no MTi outputs below 1 Hz, so a header without a
  * name only MT Manager writes is DOT's at such steps, mark or none. */
 static void test_mtmgr_dot_marks(void **state)
 {
@@ -3983,7 +3978,7 @@ static void test_mtmgr_dot_marks(void **state)
         { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Cal_FreeAcc_X,SampleTimeCoarse,Foo",
           HX_FMT_AUTO, 0 },
         /* no mark, an unknown column: 0.1 Hz in ticks is no MTi's output rate (whole Hz, 1 or more), 10 Hz in us
-         * one of DOT's: refused (read at 0.1 Hz, exit 0, until 2026-12-01) */
+         * one of DOT's: refused (not read at 0.1 Hz, exit 0) */
         { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,Mag_X,Mag_Y,UtcTime", HX_FMT_AUTO, 1 },
         { "PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z,UtcTime,Foo,Bar", HX_FMT_MTMGR, 1 },
     };
@@ -4065,7 +4060,7 @@ static void test_mtmgr_stated_rate(void **state)
     hx_log_free(&log);
     unlink(p);
     /* the same compressed: the look ahead reads the first 256 rows on the
-     * reader's own handle (a second open of the file until 2026-11-30),
+     * reader's own handle (not a second open of the file),
      * which is put back at the first row: every row read once, in order */
     {
         gzFile gz;
@@ -4113,9 +4108,8 @@ static void prog_seen(void *ctx, double frac)
 
 /* hx_log_load_progress reports the fraction of the input read while it
  * reads (every 65,536 samples) and 1 at the end, so that info and psd can
- * show progress on a long log. Until 2026-11-29 a whole-log load said
- * nothing: `info` on a day at 100 Hz read for 2.3 s, `convert` for 11 s,
- * without a word (the scale review). */
+ * show progress on a long log: without it `info` on a day at 100 Hz reads
+ * for 2.3 s, `convert` for 11 s, without a word. */
 static void test_load_progress(void **state)
 {
     enum { N = 200000 };
@@ -4149,7 +4143,7 @@ static void test_load_progress(void **state)
     FNAV_ASSERT_CLOSE(seen.last, 1.0, 0.0, 0.0);
     hx_log_free(&log);
     /* a log that stops early (cut inside a record) does not end at 100 %:
-     * `info` printed "100 %" before the error (the mutation sweep) */
+     * `info` must not print "100 %" before the error */
     assert_int_equal(truncate(p, (off_t)(192 + 48 * (N - 10) + 20)), 0);
     memset(&seen, 0, sizeof seen);
     assert_int_equal(hx_log_load_progress(&log, p, HX_FMT_AUTO, 0.0, prog_seen, &seen, err, sizeof err), 1);

@@ -347,8 +347,8 @@ static void test_filter_frame(void **state)
 
 /* A navigator that aligns late, in the middle of a walk that starts at
  * once and turns: its frame is where the sensor is then (origin and
- * heading), not at the truth's first tick (a review, 2026-11-29: every
- * error carried the offset, 1.43 m for the filter on walk:20). */
+ * heading), not at the truth's first tick (there, every error would carry
+ * the offset, 1.43 m for the filter on walk:20). */
 static void test_late_alignment(void **state)
 {
     (void)state;
@@ -527,8 +527,8 @@ static void test_band(void **state)
 }
 
 /* Progress within a run: its simulation, then each variant's replay every
- * 4,096 samples, increasing, below the next whole run (a review,
- * 2026-11-28: one long run reported nothing until it ended). */
+ * 4,096 samples, increasing, below the next whole run (not one long run
+ * reporting nothing until it ends). */
 typedef struct {
     int calls, within, order_ok;
     double last;

@@ -147,8 +147,8 @@ static double qangle(const double a[4], const double b[4])
  * scenario (RK4 from knot to knot with steps <= 0.05 ms). What is left is
  * RK4's truncation (build/host/tests/test_motion prints it: final position
  * errors 2.1e-7 m walk, 8.0e-7 run, 1.0e-7 stairs, 1.7e-7 elevator, 4.1e-8
- * the mixed script; a second run at steps <= 0.1 ms, a temporary edit of
- * 2026-12-02, found them 16 times larger (15.9 walk), the fourth order),
+ * the mixed script; a second run at steps <= 0.1 ms, a temporary edit,
+ * found them 16 times larger (15.9 walk), the fourth order),
  * so the position bound holds the run by a margin of 1.25 only: a
  * consistency error of the truth of a few 1e-7 m would fail it. The
  * attitude's qangle (2 acos of the quaternion dot) cannot resolve below
@@ -182,8 +182,8 @@ static void check_strapdown(const char *scenario)
  * (roll, pitch and yaw all non-zero): q_nb = q_nf (x) q_fs, w_b = C_sf w_f
  * and f_b = C_bn (a_n - g_n) must agree. Every other check used a level
  * mounting or a pure yaw, and compared f_b and w_b only: a hand-made
- * mutant composing q_fs (x) q_nf passed test_motion, test_sim, test_simnav
- * and test_mc (the ident review, 2026-12-01); it fails here at once
+ * mutant composing q_fs (x) q_nf passes test_motion, test_sim, test_simnav
+ * and test_mc; it fails here at once
  * (attitude off by the mounting's rotation). */
 static void test_strapdown_mounted(void **state)
 {
@@ -352,10 +352,10 @@ static void test_still_is_exactly_still(void **state)
 /* Without the shoe's ringing (--ring-scale 0: ring_mps2 = 0) the foot is at
  * rest from the end of the slap: wherever the stance's truth is exactly
  * still (velocity, acceleration and rate 0) it is flagged still and
- * zero_vel. The stance was flagged still only from contact + ring_s on,
- * the ringing's end though no ringing was made: the running slap (6 % of
- * 0.706 s, 42 ms) is shorter than ring_s (50 ms), so every running stance
- * began with 7.6 ms at exact rest flagged moving (the ident review). */
+ * zero_vel. Flagged still only from contact + ring_s on (the ringing's
+ * end, though no ringing is made), every running stance would begin with
+ * 7.6 ms at exact rest flagged moving: the running slap (6 % of 0.706 s,
+ * 42 ms) is shorter than ring_s (50 ms). */
 static void test_still_without_ringing(void **state)
 {
     hx_motion_config_t c = hx_motion_config_default();

@@ -43,9 +43,9 @@ static void swing(fnav_sample_t *s)
 }
 
 /* The navigator's default detector is the detector's default: one
- * initializer (FNAV_STANCE_CONFIG_DEFAULT_INIT) for both. Until 2026-12-01
- * fnav_nav_config_default held a copy of the values, and a default changed
- * in one would not have reached the other. Compared field by field (the
+ * initializer (FNAV_STANCE_CONFIG_DEFAULT_INIT) for both: were
+ * fnav_nav_config_default to hold a copy of the values, a default changed
+ * in one would not reach the other. Compared field by field (the
  * padding of a struct is not part of its value). */
 static void test_default_stance_is_detector_default(void **state)
 {
@@ -225,11 +225,11 @@ static void test_config(void **state)
     c.zupt_sigma_mps = FNAV_R(0.0);
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
     {
-        /* initial sds whose variance is 0 or infinite in this build: init
-         * accepted them and the filter started with that variance (the
-         * guard then made it the maximum: a tilt sd of 1e-25 rad became
-         * pi rad); fnav_ukf_start refuses them now, and start_filter
-         * asserts that it starts (the filter review) */
+        /* initial sds whose variance is 0 or infinite in this build: were
+         * they accepted, the filter would start with that variance (the
+         * guard then makes it the maximum: a tilt sd of 1e-25 rad becomes
+         * pi rad); fnav_ukf_start refuses them, and start_filter asserts
+         * that it starts */
 #if FNAV_USE_DOUBLE
         const fnav_real_t bad[2] = { 1.0e-170, 1.0e160 };
 #else
@@ -258,7 +258,7 @@ static void test_config(void **state)
     c.zaru_gate = FNAV_R(-1.0);
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
     /* the flags zaru and closed_form are 0 or 1, as lever and settle (2
-     * and -1 were taken for 1; the filter review) */
+     * and -1 are not taken for 1) */
     c = fnav_nav_config_default;
     c.zaru = 2;
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
@@ -269,8 +269,8 @@ static void test_config(void **state)
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
     /* an initial tilt or yaw sd the UKF's sigma points cannot represent
      * (fnav_nav_att_sd_max_rad: 3 / sqrt(18) rad with the default 18
-     * states, the lever's included): a yaw sd of 90 deg was taken and read 32.4 deg a sample
-     * later (the UKF review, 2026-12-01) */
+     * states, the lever's included): a yaw sd of 90 deg, if taken, reads
+     * 32.4 deg a sample later */
     c = fnav_nav_config_default;
     assert_true(fabs((double)fnav_nav_att_sd_max_rad(&c) - 3.0 / sqrt(18.0)) < 1.0e-6);
     assert_true(fnav_nav_att_sd_max_rad(NULL) == FNAV_R(0.0));
@@ -465,9 +465,9 @@ static void test_stream_contract(void **state)
 /* After fnav_nav_finish a push is a call in the wrong state, whatever the
  * sample: FNAV_E_STATE for a good sample and equally for a NaN, an
  * out-of-range value or stamp and a stamp going backwards, with nothing
- * counted and the navigator unchanged byte for byte (fnav_nav.h). Until
- * 2026-11-29 (the filter review) the bad samples returned their own
- * rejection status and were counted in stats and health after the end. */
+ * counted and the navigator unchanged byte for byte (fnav_nav.h): the bad
+ * samples must not return their own rejection status nor be counted in
+ * stats and health after the end. */
 static void test_push_after_finish(void **state)
 {
     static fnav_nav_t nav, copy;
@@ -505,8 +505,8 @@ static void test_push_after_finish(void **state)
     assert_int_equal(nav.health & (FNAV_HEALTH_NANINF | FNAV_HEALTH_RANGE | FNAV_HEALTH_TIME_BACK), 0u);
     assert_memory_equal(&nav, &copy, sizeof nav);
     /* the frames held back by the detector are still all there: h 2 + lag
-     * 14 at 200 Hz (fnav_nav.h, "Latency"; 5 until min_zupt_cycle became
-     * 0.025 by default, 2026-12-01) */
+     * 14 at 200 Hz (fnav_nav.h, "Latency"; 5 with min_zupt_cycle 0, the
+     * scaling off) */
     k = 0;
     while (fnav_nav_pop(&nav, &fr) == FNAV_OK) {
         k++;
@@ -552,8 +552,8 @@ static void test_timing(void **state)
         }
         if (k == 1300) {
             /* a 0.305 s interval: a time jump by default (max_gap_s 0.2 s;
-             * 0.5 s until 2026-11-30, when such an interval mid-swing was
-             * integrated with one sample's rates: scripts/max_gap_sweep.py) */
+             * at 0.5 s such an interval mid-swing would be integrated with
+             * one sample's rates: scripts/max_gap_sweep.py) */
             shift += 300000000;
         }
         if (k == 1350) {
@@ -683,10 +683,9 @@ static void test_run_port(void **state)
 /* Misuse by an integrator (docs/robustness.md, "core entry points"): a
  * navigator never initialised (static storage is zeroed), or whose init
  * failed, is refused with FNAV_E_STATE by every call that returns a status,
- * and finish / reset leave it alone; a push, pop or step on it returned
- * FNAV_OK or FNAV_AGAIN and stepped a detector with a zeroed configuration,
- * and fnav_nav_run read the whole source (a review by a firmware
- * integrator, 2026-11-30). */
+ * and finish / reset leave it alone: a push, pop or step on it must not
+ * return FNAV_OK or FNAV_AGAIN and step a detector with a zeroed
+ * configuration, nor fnav_nav_run read the whole source. */
 static long g_reads;
 static fnav_status_t counting_read(void *ctx, fnav_sample_t *s)
 {
@@ -837,10 +836,10 @@ static void test_config_reaches_parts(void **state)
 
 /* A second fnav_nav_init starts over (fnav_nav.h), also with the
  * navigator's own configuration, fnav_nav_init(&nav, &nav.cfg), the way to
- * restart with the same one: it zeroed the navigator, its configuration
- * with it, before it copied *cfg, and returned FNAV_E_CONFIG for a valid
- * configuration, the navigator left not initialised (review, 2026-11-30).
- * The restarted navigator makes the frames of a fresh one. */
+ * restart with the same one: zeroing the navigator, its configuration
+ * with it, before copying *cfg would return FNAV_E_CONFIG for a valid
+ * configuration, the navigator left not initialised. The restarted
+ * navigator makes the frames of a fresh one. */
 static void test_reinit_own_config(void **state)
 {
     static fnav_nav_t nav, fresh;
@@ -920,9 +919,8 @@ static void test_frames_before_alignment(void **state)
 }
 
 /* fnav_nav_step without a frame to write: FNAV_E_ARG, the sample not taken.
- * It returned FNAV_AGAIN and took each sample until the detector's ring
- * was full of frames it could not pop, then FNAV_E_STATE for ever (a review
- * by a firmware integrator, 2026-11-30). */
+ * Not FNAV_AGAIN, taking each sample until the detector's ring is full of
+ * frames it cannot pop, then FNAV_E_STATE for ever. */
 static void test_step_null_frame(void **state)
 {
     static fnav_nav_t nav, copy;
@@ -939,9 +937,9 @@ static void test_step_null_frame(void **state)
 }
 
 /* fnav_nav_run on a navigator whose input has ended (a second run without
- * a new init): FNAV_E_STATE before reading anything. It read the whole
- * source, every push refused and ignored, and returned FNAV_OK with no
- * frame written (a review by a firmware integrator, 2026-11-30). */
+ * a new init): FNAV_E_STATE before reading anything, not the whole source
+ * read, every push refused and ignored, and FNAV_OK with no frame
+ * written. */
 static void test_run_after_finish(void **state)
 {
     static fnav_nav_t nav;
@@ -961,8 +959,8 @@ static void test_run_after_finish(void **state)
     assert_int_equal(nav.stats.frames, 50u);
 }
 
-/* fnav_nav_run's other exits (fnav_nav.h; found by make coverage, none
- * was run by a suite): the max_samples limit (exactly that many samples
+/* fnav_nav_run's other exits (fnav_nav.h; make coverage shows no other
+ * suite runs them): the max_samples limit (exactly that many samples
  * read, then the frames flushed as at the end of the source); FNAV_AGAIN
  * from a non-blocking source (called again, not counted against the
  * limit, the frames those of a source without it); a read error (its
@@ -1092,8 +1090,7 @@ static void test_run_exits(void **state)
  * with its stamps in ms the estimated rate is 1000 times too low. In SI it
  * aligns and nothing of that happens. And the profile's rate_hz (the rate
  * its values were identified at) does not enter the navigation: the same
- * frames with any. A firmware integrator's review, 2026-11-30 (these were
- * not written down; the test pins what the header now says). */
+ * frames with any. The test pins what the header says. */
 typedef struct {
     int aligned;          /**< the last frame is aligned */
     uint32_t resets;      /**< divergence resets */
@@ -1316,9 +1313,9 @@ static void test_settle_onsets(void **state)
  * fnav_nav_reset after the onset's frame, whose duplicated stamp postponed
  * the ZUPT, as in test_settle_onsets) drops the pending settling start: the
  * landing belongs to the filter that was reset, and the re-aligned filter's
- * first ZUPT is a still period's, not a landing's. Until 2026-11-29 (found
- * by a review) the pending start survived the reset and the re-alignment,
- * and the settling state started at the re-aligned filter's first ZUPT. */
+ * first ZUPT is a still period's, not a landing's: a pending start that
+ * survived the reset and the re-alignment would start the settling state at
+ * the re-aligned filter's first ZUPT. */
 static void test_settle_pending_reset(void **state)
 {
     static fnav_nav_t nav;
@@ -1475,9 +1472,9 @@ static void test_realign(void **state)
  * ZYX yaw and roll split by the noise). The foot stands with x up, tilted
  * by 0.05 deg, first towards y, from 5 s towards z (a sway of 0.07 deg);
  * the renewal at the first swing must keep the heading of a level body
- * axis (b's z) within 0.01 rad. Holding the ZYX yaw (before 2026-11-28,
- * found by a review) turned it by 0.09 rad here, and by 87 and 110 deg on
- * the xio short walk turned upright: the split of the tilt into yaw and
+ * axis (b's z) within 0.01 rad. Holding the ZYX yaw would turn it by
+ * 0.09 rad here, and by 87 and 110 deg on the xio short walk turned
+ * upright: the split of the tilt into yaw and
  * roll turns with the tilt's direction. */
 static double g_upright_tilt_deg = 0.05, g_upright_noise = 0.001;
 static fnav_sample_t upright(long k)
@@ -1536,8 +1533,8 @@ static void test_realign_x_vertical(void **state)
  * The heading held is the filter's own attitude (its level axis, from
  * q_nb, not from the frame's Euler angles, which lose it there: in float32
  * the ZYX angles of a pose 1e-4 deg from pitch 90 deg give back an attitude
- * 10 deg off, and holding that turned the heading by 0.0046 rad here
- * before 2026-11-29, found by a review; 7e-5 rad since). */
+ * 10 deg off, and holding that would turn the heading by 0.0046 rad here;
+ * 7e-5 rad with the filter's attitude). */
 static void test_realign_near_lock(void **state)
 {
     static fnav_nav_t nav;
@@ -1573,8 +1570,8 @@ static void test_realign_near_lock(void **state)
 /* A time jump inside a still period ends it: the motion, and so the
  * stillness, inside the jump is unknown. 0.3 s still, a 6 s jump, then 6 s
  * still at 200 Hz: the alignment is the 5 s (max_still_s) after the jump,
- * not 6.3 s "still" completed at the first sample after it from 61 samples
- * (as before 2026-11-27, found by a review). */
+ * not 6.3 s "still" completed at the first sample after it from 61
+ * samples. */
 static void test_align_time_jump(void **state)
 {
     static fnav_nav_t nav;
@@ -1611,14 +1608,13 @@ static void test_align_time_jump(void **state)
 }
 
 /* One corrupted time stamp far ahead (a bit flip in a sensor's own timer,
- * here +1 h at sample 300 of a still foot at 200 Hz) must not end the run:
- * until 2026-11-29 (the core review) every later sample was "going
- * backwards" against it, rejected with FNAV_E_TIME, and the navigator
- * produced no frame for the rest of the run (299 of 299 rejected). Now
- * FNAV_NAV_TIME_RESYNC consecutive samples behind the last accepted one
+ * here +1 h at sample 300 of a still foot at 200 Hz) must not end the run
+ * (every later sample "going backwards" against it, rejected with
+ * FNAV_E_TIME, and no frame for the rest of the run: 299 of 299
+ * rejected). FNAV_NAV_TIME_RESYNC consecutive samples behind the last accepted one
  * are a new timeline: the first FNAV_NAV_TIME_RESYNC - 1 are rejected and
  * counted, the next is accepted, and the interval back to it is a time jump
- * (integrated as one nominal interval), as the glitch's own was. A single
+ * (integrated as one nominal interval), as the glitch's own is. A single
  * sample behind is still rejected (test_stream_contract). */
 /* A log whose only still period is at its very end: 1 s of swing, then a
  * still tail of n samples at 200 Hz. Run to FNAV_END; *pre is the length of
@@ -1664,17 +1660,17 @@ static fnav_nav_frame_t end_still_run(fnav_nav_t *nav, long n, long *pre, long *
 }
 
 /* The end of the input completes the alignment on the still period it ends
- * in (fnav_nav_finish). Until 2026-11-29 (a review) it did so before the
- * samples the detector holds back (h + lag = 5 at 200 Hz) had reached the
- * alignment: a log ending with 44 still samples (0.215 s, align_short_s is
- * 0.2 s), the only still period, did not align, its alignment having seen
- * 40 of them (0.195 s). Now the held-back samples go on to the alignment,
+ * in (fnav_nav_finish). Done before the samples the detector holds back
+ * (h + lag = 5 at 200 Hz) reach the alignment, a log ending with 44 still
+ * samples (0.215 s, align_short_s is 0.2 s), the only still period, would
+ * not align, its alignment having seen 40 of them (0.195 s). The held-back
+ * samples go on to the alignment,
  * which completes at the first with which its still period qualifies (the
  * frames after it are navigated, as after an alignment at max_still_s).
  * With enough stillness before the held-back samples (43 + held) the
  * alignment is as it was: on the samples before them, all held-back frames
- * navigated; with 38 (0.185 s) nothing aligns. (Until min_zupt_cycle
- * became 0.025 by default, 2026-12-01, 5 were held back: 44 and 48.) */
+ * navigated; with 38 (0.185 s) nothing aligns. (With min_zupt_cycle 0,
+ * the scaling off, 5 are held back: 44 and 48.) */
 static void test_align_at_end(void **state)
 {
     static fnav_nav_t nav;
@@ -1926,9 +1922,9 @@ static void test_resampler(void **state)
  * does not reach across it (a constant on each side comes out exactly), and
  * the grid starts again at the first sample after it, so the navigator
  * still sees one interval above max_gap_s. A gap of lost samples below
- * max_gap_s (4 samples) is closed up as before: the grid runs through it.
- * Until 2026-11-28 the grid ran through the jump too: 10,000 made-up
- * samples here, and 8.6 million for a day's pause (a review). */
+ * max_gap_s (4 samples) is closed up: the grid runs through it. A grid
+ * run through the jump too would make up 10,000 samples here, and 8.6
+ * million for a day's pause. */
 static void test_resampler_time_jump(void **state)
 {
     hx_log_t in, out;
@@ -2016,9 +2012,9 @@ static void test_walk_window(void **state)
  * rate, which is no sampling period here. 400 Hz in packets of 4 samples
  * stamped 5 us apart every 10 ms (200 kHz from the median interval), or
  * sharing one stamp (100 Hz from the distinct stamps): refused, naming the
- * rate over the span for --input-rate. Until 2026-11-30 both were
- * resampled (exit 0): the first smeared seconds into each output, the
- * second kept one sample of four. A log that loses a third of its samples
+ * rate over the span for --input-rate. Resampled (exit 0), the first would
+ * smear seconds into each output, the second keep one sample of four. A
+ * log that loses a third of its samples
  * in small gaps, or repeats a quarter of its stamps, is still resampled. */
 static void test_resampler_bursts(void **state)
 {
@@ -2056,7 +2052,7 @@ static void test_resampler_bursts(void **state)
             assert_non_null(strstr(err, kind == 0 ? "gives 200000 Hz" : "gives 100 Hz"));
             assert_non_null(strstr(err, kind == 0 ? "stamped close together" : "share one stamp"));
             /* the rate of the whole packets (2 to 1000: 3992 samples over
-             * 9.98 s); the samples over the span said 400.3 until 2026-11-30 */
+             * 9.98 s), not the samples over the span (400.3) */
             assert_non_null(strstr(err, "4000 samples span 9.99 s, 400 Hz"));
             assert_non_null(strstr(err, "give --input-rate 400 ("));
         } else {
@@ -2072,9 +2068,9 @@ static void test_resampler_bursts(void **state)
  * openshoe_gx2 in the rate experiment): the output instants fall between
  * input samples. A 30 Hz tone, inside the pass band, keeps its amplitude
  * and phase: the error against the tone at the output instants is below
- * 0.1 % of the amplitude (RMS). Until 2026-11-28 the filtered signal was
- * interpolated linearly between the input samples: 3.4 % off the
- * amplitude, 5 % error (40 Hz: 7 % and 9 %). */
+ * 0.1 % of the amplitude (RMS). The filtered signal interpolated linearly
+ * between the input samples would be 3.4 % off the amplitude, 5 % error
+ * (40 Hz: 7 % and 9 %). */
 static void test_resampler_fractional(void **state)
 {
     hx_log_t in, out;
@@ -2302,18 +2298,18 @@ static void test_float_vs_double(void **state)
             FNAV_USE_DOUBLE ? "64" : "32", n, 100.0 * worst);
 }
 
-/* A time jump must be longer than a gap (a review, 2026-11-28): with
- * max_gap_s below the sample interval every interval was a time jump,
- * integrated as one nominal interval and restarting the alignment's still
- * period, so the navigator never aligned (a 20 Hz still log, max_gap_s 0.04:
- * 0 of 400 frames aligned). Refused at init with a configured rate; with
+/* A time jump must be longer than a gap: with max_gap_s below the sample
+ * interval every interval would be a time jump, integrated as one nominal
+ * interval and restarting the alignment's still period, so the navigator
+ * would never align (a 20 Hz still log, max_gap_s 0.04: 0 of 400 frames
+ * aligned). Refused at init with a configured rate; with
  * an estimated one an interval is a jump only beyond 1.5 nominal intervals
  * too. */
 /* The stamps' range ends: -FNAV_T_NS_MAX and +FNAV_T_NS_MAX are both
- * accepted, so their difference must fit int64_t (with 2^62 it was 2^63:
- * signed overflow in the navigator, the detector and the alignment, and
- * the jump read as a negative interval, neither counted nor seen; a
- * review, 2026-11-28). The interval between them is one time jump of
+ * accepted, so their difference must fit int64_t (with 2^62 it would be
+ * 2^63: signed overflow in the navigator, the detector and the alignment,
+ * and the jump read as a negative interval, neither counted nor seen). The
+ * interval between them is one time jump of
  * 2 FNAV_T_NS_MAX ns; one nanosecond beyond either end is refused. */
 static void test_stamp_range_ends(void **state)
 {
@@ -2470,8 +2466,8 @@ static char *slurp(const char *path)
  * brings a NaN to the navigator (each reader refuses NaN and out-of-range
  * values and stamps, and live's receiver skips them), and an out-of-range
  * value only through replay --rate, whose low-pass overshoots a swing
- * between -1e6 and 1e6: the two keys swapped passed every test (the
- * mutation round, 2026-11-29). */
+ * between -1e6 and 1e6: the two keys swapped pass every other test (a
+ * mutation round). */
 static void test_health_keys(void **state)
 {
     static fnav_nav_t nav;
@@ -2563,7 +2559,7 @@ static void test_health_keys(void **state)
  * one, 1 ns more is. The stamps are whole nanoseconds and 1e-9 x 20,000,000
  * is 0.020 exactly in double, so the edge is sharp. Frames at 400 Hz, all
  * aligned and in motion, with one interval of 20 ms or 20 ms + 1 ns among
- * them (>= in place of > passed every test: the mutation round, 2026-11-29). */
+ * them (>= in place of > passes every other test: a mutation round). */
 static void test_long_gap_edge(void **state)
 {
     static const int64_t k_gap_ns[2] = { 20000000, 20000001 };
@@ -2607,11 +2603,11 @@ static void test_long_gap_edge(void **state)
  * next. Frames at 200 Hz, the detector's stance flag in a pattern per
  * cycle: a slow walk (60 steps/min, `harness sim --motion walk --cadence
  * 60 --speed 0.5`: stance 0.72 s, then a swing the detector breaks with a
- * 15 ms stance in its middle) has 2 s cycles; the blip split each cycle in
- * two, the median read 0.39 s and a normal slow walk was told its time
- * axis was compressed (the review of 2026-11-30). A stance shorter than
- * HX_NAV_CYCLE_MOTION_S now ends no motion; a compressed walk (0.25 s
- * cycles, stance 0.10 s) and a normal one (1.1 s) are judged as before. */
+ * 15 ms stance in its middle) has 2 s cycles; were the blip to split each
+ * cycle in two, the median would read 0.39 s and a normal slow walk be told
+ * its time axis was compressed. A stance shorter than
+ * HX_NAV_CYCLE_MOTION_S ends no motion; a compressed walk (0.25 s
+ * cycles, stance 0.10 s) and a normal one (1.1 s) are judged as usual. */
 static void test_gait_cycles(void **state)
 {
     static const struct {

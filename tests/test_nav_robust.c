@@ -278,10 +278,10 @@ static void test_divergence_reset(void **state)
              * which the motion noise only adds to */
             assert_true(r.last.p_diag[6 + i] >= held.p_diag[6 + i]);
         }
-        /* the heading's variance likewise (before 2026-11-28 the
-         * re-aligned filter restarted it at yaw_sd^2, 3,650 times smaller
-         * in a review's case: a heading claimed better known after the
-         * divergence than before it); no ZUPT observes the heading while
+        /* the heading's variance likewise (a re-aligned filter restarting
+         * it at yaw_sd^2 would make it 3,650 times smaller in one case: a
+         * heading claimed better known after the divergence than before
+         * it); no ZUPT observes the heading while
          * the foot stands still, so it does not shrink either */
         assert_true(r.first_aligned.p_diag[2] == held.p_diag[2]);
         assert_true(r.last.p_diag[2] >= held.p_diag[2]);
@@ -324,11 +324,10 @@ static void turn(run_t *r, double seconds)
  * next stride must keep it too. The renewal's rule (hold no heading
  * variance: before the first stride the heading is the frame's own
  * definition) is for the start of the log; after a reset the walk went on
- * with a heading that was navigated. Until 2026-11-29 (found by a review)
- * the renewal 5 s into the stand after a reset restarted the heading
- * variance at yaw_sd^2 (1e-6 rad^2; 1.4e-6 at the end of the stand, against
- * 7.7e-6 held here): a heading claimed better known after the divergence
- * than before it. */
+ * with a heading that was navigated. A renewal 5 s into the stand after a
+ * reset that restarted the heading variance at yaw_sd^2 (1e-6 rad^2; 1.4e-6
+ * at the end of the stand, against 7.7e-6 held here) would claim a heading
+ * better known after the divergence than before it. */
 static void test_reset_then_renewal(void **state)
 {
     run_t r;
@@ -518,12 +517,12 @@ static void test_long_swing(void **state)
 /* The stance after a swing of 400 s (the turning foot of test_long_swing,
  * no stance, no ZUPT): the horizontal velocity variance has grown to about
  * 2.5e3 (m/s)^2, above the default ZUPT's 1e-4 / FLT_EPSILON = 840, so in
- * float32 the first ZUPT's posterior rounded to zero, the covariance guard
- * set it to its maximum, 1e4, and every later ZUPT did the same: the
- * frames of 10 s of stance reported 1e4 (m/s)^2 (found by the filter
- * review; the double build 1e-4 at the first ZUPT, 1.3e-5 after 20 s).
- * Now the velocity variance is that of a standing foot after the first
- * ZUPTs in both builds, the covariance positive definite, no reset. */
+ * float32 the first ZUPT's posterior can round to zero, the covariance
+ * guard then set it to its maximum, 1e4, and every later ZUPT do the same:
+ * the frames of 10 s of stance would report 1e4 (m/s)^2 (the double build
+ * 1e-4 at the first ZUPT, 1.3e-5 after 20 s). The velocity variance must
+ * be that of a standing foot after the first ZUPTs in both builds, the
+ * covariance positive definite, no reset. */
 static void test_stance_after_long_swing(void **state)
 {
     const double w[3] = { 2.0, -1.5, 1.8 };

@@ -118,8 +118,8 @@ static void test_linux_replay_port(void **state)
     assert_int_equal(n, 6);
     fclose(out);
     {
-        /* a level outside the enum is printed as an error (it indexed past
-         * the names: a review, 2026-11-28; ASan's global-buffer-overflow) */
+        /* a level outside the enum is printed as an error (indexing past
+         * the names would be ASan's global-buffer-overflow) */
         FILE *cap = tmpfile();
         int fd = dup(2);
         assert_non_null(cap);
@@ -139,8 +139,8 @@ static void test_linux_replay_port(void **state)
 }
 
 /* The CSV sink keeps the errno of its first failed write, for the caller's
- * message ("cannot write the trajectory to /dev/full" gave no reason:
- * errno was gone when it was built; a review, 2026-12-02). */
+ * message (without it "cannot write the trajectory to /dev/full" would
+ * give no reason: errno is gone when the message is built). */
 static void test_linux_port_write_errno(void **state)
 {
     fnav_port_t port;

@@ -167,7 +167,7 @@ static void test_validate(void **state)
     /* a conversion that leaves the working precision's range (an infinite
      * rate makes every tau 0; in float 1e39 Hz is an infinite rate and
      * 1e-46 Hz a zero one) is refused and leaves the profile as it was
-     * (CONTRIBUTING: bad data leaves the object unchanged; it was half
+     * (CONTRIBUTING: bad data leaves the object unchanged; not half
      * converted: name, rate and every value overwritten) */
     {
         static const double bad_rates[3] = { (double)INFINITY, FNAV_USE_DOUBLE ? (double)INFINITY : 1.0e39,
@@ -245,8 +245,8 @@ static void test_file_round_trip(void **state)
     fclose(f);
     assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
     assert_non_null(strstr(err, ":3:"));
-    /* a required key given twice is refused (rate_hz and format were taken
-     * from their last line; a review, 2026-11-28) */
+    /* a required key given twice is refused (rate_hz and format are not
+     * taken from their last line) */
     assert_int_equal(hx_profile_write(path, &a, "twice", err, sizeof err), 0);
     f = fopen(path, "a");
     assert_non_null(f);
@@ -269,8 +269,8 @@ static void test_file_round_trip(void **state)
     assert_non_null(strstr(err, "gyro_tau_s given twice"));
     /* a UTF-8 byte order mark at the start (a profile written by hand in
      * an editor that saves one) is skipped, as the CSV reader does: the
-     * file was "not a footnav profile" or ":1: expected 'key = value'"
-     * (a review, 2026-12-01); one elsewhere is still text of its line */
+     * file is not "not a footnav profile" nor ":1: expected 'key = value'";
+     * one elsewhere is still text of its line */
     {
         static const char *const first[2] = { "format = footnav-profile 1\n", "# a comment\nformat = footnav-profile 1\n" };
         int v;
@@ -293,8 +293,8 @@ static void test_file_round_trip(void **state)
         fclose(f);
         assert_int_equal(hx_profile_read(path, &b, err, sizeof err), -1);
     }
-    /* name too: the last one was taken without a word (a review,
-     * 2026-12-01); its line is named */
+    /* name too: the last one is not taken without a word; its line is
+     * named */
     assert_int_equal(hx_profile_write(path, &a, NULL, err, sizeof err), 0);
     f = fopen(path, "a");
     assert_non_null(f);
@@ -319,7 +319,7 @@ static void test_file_round_trip(void **state)
         a.rate_hz = FNAV_R(200.0);
     }
     /* a line of 511 characters is allowed (profile-format.md), also with
-     * CR LF; 512 is too long (510 was the most until 2026-11-28) */
+     * CR LF; 512 is too long (not 510 as the most) */
     {
         int len;
         for (len = 511; len <= 512; len++) {
@@ -341,7 +341,7 @@ static void test_file_round_trip(void **state)
         assert_non_null(strstr(err, "line too long"));
     }
     /* a NUL byte (a binary file given as the profile, e.g. a .bin log)
-     * says so; it was reported as "line too long" (a review, 2026-11-29) */
+     * says so; it is not reported as "line too long" */
     f = fopen(path, "wb");
     assert_non_null(f);
     fputs("format = footnav-profile 1\nrate_hz = 200\n", f);
@@ -354,7 +354,7 @@ static void test_file_round_trip(void **state)
     remove(path);
     assert_int_equal(hx_profile_load("/nonexistent/dir/p.profile", &b, err, sizeof err), -1);
     /* a directory opens but cannot be read: a read error, not "not a
-     * footnav profile (no 'format' line)" (a review, 2026-11-29) */
+     * footnav profile (no 'format' line)" */
     assert_int_equal(hx_profile_read("/tmp/", &b, err, sizeof err), -1);
     assert_non_null(strstr(err, "cannot read profile"));
     assert_null(strstr(err, "not a footnav profile"));
@@ -362,9 +362,8 @@ static void test_file_round_trip(void **state)
 
 /* A value positive and finite as read (double) but not in the working
  * precision (float: 1e39 is infinite, 1e-50 zero) is refused at its line,
- * naming the key: the error said only "a value is zero, negative or not
- * finite in the float build", without line or key (a review, 2026-12-01).
- * The double build takes both values. */
+ * naming the key, not only "a value is zero, negative or not finite in the
+ * float build", without line or key. The double build takes both values. */
 static void test_file_out_of_float_range(void **state)
 {
     static const char *const lines[4] = { "gyro_tau_s = 100 100 1e39\n", "accel_noise_mps2_rthz = 1e-4 1e-50 1e-4\n",
@@ -412,10 +411,10 @@ static void test_file_out_of_float_range(void **state)
  * its key's unit names the units it was most likely written in, with the
  * value converted from each. Datasheets give a gyro's bias instability in
  * deg/h, its angle random walk in deg/sqrt(h) and an accelerometer's noise
- * and bias in ug: the advice named only deg/s, deg/s/sqrt(Hz) and mg, and
+ * and bias in ug: advice naming only deg/s, deg/s/sqrt(Hz) and mg, once
  * followed (10 deg/h written as 10 -> 0.175 rad/s, 50 ug as 50 -> 0.49
- * m/s^2) gave a value 3600 or 1000 times too large that was no longer
- * flagged (a review, 2026-12-01). */
+ * m/s^2), would give a value 3600 or 1000 times too large that is no
+ * longer flagged. */
 static void test_units_advice(void **state)
 {
     static const struct {
@@ -509,8 +508,8 @@ static int load_warnings(const char *path)
 }
 
 /* hx_profile_load warns once per file about a value no IMU has in its
- * key's unit: it remembered only the file it warned about last, so
- * loading A, B, A warned about A twice (2026-12-02). */
+ * key's unit: remembering only the file it warned about last, it would
+ * warn about A twice when loading A, B, A. */
 static void test_load_warns_once_per_file(void **state)
 {
     fnav_profile_t a;

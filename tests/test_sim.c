@@ -503,8 +503,7 @@ static void sampled_strapdown(const hx_motion_t *m, double rate, double p[3], do
  * interval) fails. The float allowance: every sample rounded to 2^-24
  * relative, at most 2^-24 |f|_max in acceleration, integrated twice over
  * the run's T: 2^-24 |f|_max T^2 / 2 if every rounding had the same sign
- * (printed). Until 2026-12-02 a stated 5 cm, five times the 1 kHz error
- * (1.0 cm). */
+ * (printed), not a stated 5 cm, five times the 1 kHz error (1.0 cm). */
 static void test_sampled_strapdown(void **state)
 {
     hx_motion_t *m = motion("stand:1,walk:20:90,stand:1", 0.0, 0.03);
@@ -749,8 +748,8 @@ static void test_effect_specs(void **state)
     {
         const char *bad[] = { "nope", "quant:lsb", "quant:lsb=abc", "quant:size=1", "quant:ch=xx:lsb=1",
                               "quant:lsb=-1", "gsens:ch=acc", "", "dropout:prob=2",
-                              /* a value only for the own axis was dropped with exit 0, a non-whole
-                               * integer was blamed on other effects by init (a review) */
+                              /* a value only for the own axis must not be dropped with exit 0, nor a
+                               * non-whole integer blamed on other effects by init */
                               "misalign:ch=ax:from_x=0.1", "misalign:ch=ay+gy:from_y=0.02", "quant:shaped=0.5",
                               "alias:factor=2.5" };
         size_t i;
@@ -761,7 +760,7 @@ static void test_effect_specs(void **state)
             assert_null(strchr(err, '\n'));
         }
     }
-    /* fields past the 32nd were dropped, a bad one among them unseen (a review) */
+    /* fields past the 32nd must not be dropped, a bad one among them unseen */
     {
         char spec[512];
         size_t len = (size_t)snprintf(spec, sizeof spec, "white");

@@ -142,7 +142,7 @@ static void test_model_avar_textbook(void **state)
              * q^2/12, AVAR q^2 / (12 m); noise-shaped (an integrating
              * sensor), the angle's rounding Q = (q/fs)/sqrt(12) gives
              * IEEE 952's 3 Q^2 / tau^2 = q^2 / (4 m^2). The white form as
-             * q^2 / (6 m) (a hand-made mutant, 2026-11-29) passed every
+             * q^2 / (6 m) (a hand-made mutant) passes every other
              * suite */
             const double q = 1e-3;
             sg_chmodel_t qw = one_effect(FNAV_EFFECT_QUANT, q, 0.0), qs = one_effect(FNAV_EFFECT_QUANT, q, 1.0);
@@ -160,7 +160,7 @@ static void test_model_avar_textbook(void **state)
  * the bias instability), rate random walk K^2 / (2 pi^2 f^2), Gauss-Markov
  * 4 sigma^2 T / (1 + (2 pi f T)^2), each alone and summed, over 6 bins from
  * bin 20 of 1024 at 100 Hz (f 1.95 to 2.44 Hz). A flicker PSD of
- * B^2 / (2 pi f) (a hand-made mutant, 2026-11-29) passed every suite. */
+ * B^2 / (2 pi f) (a hand-made mutant) passes every other suite. */
 static void test_model_psd_textbook(void **state)
 {
     const double fs = 100.0, N = 3e-3, B = 2e-4, K = 4e-4, sig = 5e-3, T = 0.3;
@@ -213,8 +213,8 @@ static void test_model_psd_textbook(void **state)
  * disjoint bins, so the mean ratio over P bands has about 0.10 / sqrt(P)
  * (P is printed; 0.03 or less for P >= 11), and 0.15 is 5 of those plus
  * the equivalent-EDF approximation's own error. An EDF half as large (the
- * 2 of nu_bin dropped, a hand-made mutant of 2026-11-29 that passed every
- * suite) puts the mean ratio near 0.5. */
+ * 2 of nu_bin dropped, a hand-made mutant that passes every other suite)
+ * puts the mean ratio near 0.5. */
 static void test_psd_edf_monte_carlo(void **state)
 {
     enum { R = 200, N = 8192, CAP = 256 };
@@ -424,15 +424,15 @@ static int cg_case(sg_plist_t *pl, double *real, double *real_c, double *vx, dou
  * z cap of 40, and a level and an empty point outside every statistic;
  * 6 twins, with the fitted model's uncertainty as a diagonal (a) and as
  * refit shifts (b, the Woodbury correction), and (c) a real significant by
- * its max |z| alone (G below G_crit). Before it, sg_compare was tested only
- * for its false-alarm rate on twin-only points (above): a hand-made
- * mutation study (2026-11-29) found that dropping the two-sided factor of
+ * its max |z| alone (G below G_crit). Without it, sg_compare is tested only
+ * for its false-alarm rate on twin-only points (above): in a hand-made
+ * mutation study, dropping the two-sided factor of
  * z_crit, the 2 of the scaled chi-square's k, the twins' n - 1 (of the
  * points' spread and of the null G's), the 1 + 1/S of the twin-only
  * variance, the t's degrees of freedom or the sign of its normal score,
  * the trigamma's argument, the correlation term's factor 2 or its bias
  * correction, G || max|z| read as &&, and the sqrt(1 + 1/S) of both tests
- * passed every suite. The script asserts which branch of the null
+ * pass every other suite. The script asserts which branch of the null
  * variance (the sample's, the correlation term's) each case takes. */
 static void test_compare_golden(void **state)
 {
@@ -499,7 +499,7 @@ static void expl_pseudo_real(const double *real, const double *twb, const double
  * null mean (docs/simgap.md, section 4: "defined only where there is an
  * excess (more than two null standard deviations)"): here 1.5 sd. The
  * threshold read as one sd and the excess taken over Ga instead of
- * Ga - null mean (hand-made mutants, 2026-11-29) passed every suite. */
+ * Ga - null mean (hand-made mutants) pass every other suite. */
 static void test_explained_golden(void **state)
 {
     sg_plist_t pl;
@@ -518,8 +518,8 @@ static void test_explained_golden(void **state)
          * sg_explained's own generator (its LCG, seed 7); without ties
          * exactly floor(0.16 (nb - 1)) resamples lie below the 16th
          * percentile, 0.03 leaves room for ties. A lower end at the 5th
-         * percentile (a hand-made mutant, A06 of 2026-11-29) passed every
-         * suite before this check */
+         * percentile (a hand-made mutant, A06) passes every suite but this
+         * check */
         uint32_t st = 7u * 2654435761u + 12345u;
         int idx[6], b, k, nb = 0, below = 0, above = 0;
         double fr[200];
@@ -574,15 +574,15 @@ static void test_explained_golden(void **state)
 }
 
 /* The explained fraction's interval carries the real log's own sampling
- * noise (docs/simgap.md, section 4; Limitations had it missing until
- * 2026-12-02: 12 of 31 logs covered at 68 %). On compare.csv's inputs the
+ * noise (docs/simgap.md, section 4; without it 12 of 31 logs are covered
+ * at 68 %). On compare.csv's inputs the
  * fraction recomputed with the real replaced by each of its S fresh
  * realisations (real + b's twin r as a real - their mean), against all the
  * twins, spreads by sd_real: the real-log term alone. The interval's
  * half-width must be at least most of it (the seeds' resampling only adds
  * to it; 0.8 leaves room for 200 resamples' percentiles and the S - 1
  * seeds each resample uses), and the seeds' resampling alone, with the real
- * held fixed (the old interval), must fall short of it, or the case would
+ * held fixed (an interval without the real's noise), must fall short of it, or the case would
  * not tell the two apart. */
 static void test_explained_real_noise(void **state)
 {
@@ -668,8 +668,8 @@ static void test_explained_real_noise(void **state)
  * type's overlapping-Allan EDF. The EDFs are Greenhall & Riley's basic sum
  * computed independently in double precision by scripts/pvar_edf.py
  * (edf(avar_taps(m), m, 401 - 2m, alpha)), exact at these m. Taking the
- * ln AVAR slope as the ADEV slope (a hand-made mutant of 2026-11-29 that
- * passed every suite) reads white FM as white PM (edf 200 for 65 at m = 8)
+ * ln AVAR slope as the ADEV slope (a hand-made mutant that passes every
+ * other suite) reads white FM as white PM (edf 200 for 65 at m = 8)
  * and the +0.4 curve as a random walk (45 for 56). */
 static void test_allan_theory_var_noise_type(void **state)
 {
@@ -733,7 +733,7 @@ static void test_allan_theory_var_noise_type(void **state)
  * factor of 30, 3.4837 and 4.3553). Candidates built by hand sit 0.2 on
  * either side of it. Bonferroni over the channels and candidates only
  * (the two tests left out) and the explained-fraction condition dropped
- * (hand-made mutants A01 and A03 of 2026-11-29) passed every suite. */
+ * (hand-made mutants A01 and A03) pass every other suite. */
 static void test_accept_rule(void **state)
 {
     sg_cand_t cd;
@@ -772,7 +772,7 @@ static void test_accept_rule(void **state)
  * the baseline's held-out gap: a candidate's held-out tests over both
  * folds may confirm an effect whose middle shows no excess (step 5,
  * accepted on its z alone). Stopping only from the second step on
- * (hand-made mutant A02 of 2026-11-29, step > 1) passed every suite. */
+ * (hand-made mutant A02, step > 1) passes every other suite. */
 static void test_selection_stops(void **state)
 {
     (void)state;
@@ -791,7 +791,7 @@ static void test_selection_stops(void **state)
  * (nested). Differences 0.005 either side of it, one well inside, a
  * warm-up fitting worse than the ramp, and NaN (no time fit: not nested).
  * The quantile at 50 % instead of 1 % (chi2.isf(0.5, 1) = 0.45494; mutant
- * A10 of 2026-11-29) was caught only by the CLI's ramp case. */
+ * A10) is caught otherwise only by the CLI's ramp case. */
 static void test_thermal_nested(void **state)
 {
     (void)state;
@@ -813,7 +813,7 @@ static void test_thermal_nested(void **state)
  * = 0.7071067811865475; and two folds at 2.9 each, neither beyond
  * sg_accept_zcrit(0.05, 16) = 3.822, combine to 5.8 / sqrt(2) =
  * 4.1012193308819755, which is accepted. The mean (z_middle + z_ends) / 2
- * for the score test (mutant A09 of 2026-11-29) passed the unit suite. */
+ * for the score test (mutant A09) passes the rest of the unit suite. */
 static void test_cand_fold2(void **state)
 {
     sg_cand_t cd;
@@ -854,8 +854,8 @@ static void test_cand_fold2(void **state)
  * samples stamped on the 10 ms grid (no jitter) with one sample written
  * twice has a duplicate z of 1.657 (the Poisson tail P(X >= 1) at the
  * ideal clock's 0.05, scipy's norm.isf(poisson.sf(0, 0.05))): not
- * selected, where alpha itself (a hand-made mutant, A07 of 2026-11-29,
- * that passed every suite) reads 1.645 and selected it; two such samples
+ * selected, where alpha itself (a hand-made mutant, A07, that passes
+ * every other suite) reads 1.645 and selects it; two such samples
  * have z 3.033 and are selected. */
 static void tim_log(hx_log_t *lg, int64_t *t, long n, const long *dup, int ndup)
 {
@@ -907,10 +907,10 @@ static void test_timing_thresholds(void **state)
  * (the rate hx_stamp_rate_hz gives such a CSV of `harness sim --effect
  * dropout:prob=0.05`): every regular interval is 10 ms, x = dt - T the
  * same -485,000 ns for all 57,000 of them, and their spread is 0. From the
- * raw moments (s2 - s^2 / n on sums of 10^16) the cancellation left
- * 0.43 ns, and against the rounding floor of an exact grid (0) that was
- * "jitter" at z 40 beside the dropout (a review, 2026-12-01). The spread
- * and kurtosis come from moments about a reference interval now. */
+ * raw moments (s2 - s^2 / n on sums of 10^16) the cancellation would leave
+ * 0.43 ns, and against the rounding floor of an exact grid (0) that would
+ * be "jitter" at z 40 beside the dropout. The spread and kurtosis come
+ * from moments about a reference interval. */
 static void test_timing_jitter_off_rate(void **state)
 {
     enum { N = 60000 };
@@ -947,10 +947,10 @@ static void test_timing_jitter_off_rate(void **state)
  * p / (1 - p) lost ones on average (geometric), so n_int p / (1 - p), the
  * fit segment's ratio of drops to intervals. A clock that loses every 10th
  * sample, the same everywhere, has held-out drops exactly where the fit
- * puts them; p n_int (until 2026-12-01) expected 10 % too few, and on
- * 20,000 samples the held-out 889 drops read +3.1 sigma against 800, a gap
- * the dropout "leaves" (a CSV of `harness sim --effect dropout:prob=0.1`:
- * +4.5 sigma, partly-explained; a review, 2026-12-01). */
+ * puts them; p n_int would expect 10 % too few, and on 20,000 samples the
+ * held-out 889 drops would read +3.1 sigma against 800, a gap the dropout
+ * "leaves" (a CSV of `harness sim --effect dropout:prob=0.1`: +4.5 sigma,
+ * partly-explained). */
 static void test_timing_dropout_after(void **state)
 {
     enum { N = 20000 };
@@ -981,15 +981,15 @@ static void test_timing_dropout_after(void **state)
  * segment is the blocks' normal scores combined as Stouffer's
  * (z_1 + z_2) / sqrt 2, N(0, 1) for continuous values as each block's is,
  * so that the candidate's threshold (q_z beyond the point test's z_crit)
- * keeps its level; the plain sum (a hand-made mutant, F04 of 2026-11-29,
- * that passed every suite) has variance 2. Here values on a 0.01 lattice
+ * keeps its level; the plain sum (a hand-made mutant, F04, that passes
+ * every other suite) has variance 2. Here values on a 0.01 lattice
  * with noise of 0.2 steps, each block's score from sg_lattice_z
  * (test_rayleigh_golden). The line: A sin(2 pi f t + phi), the simulator's
  * vibration (src/fnav_imuerr.c), with A = 0.01, f = 12.3 Hz (off the FFT
  * grid), phi = 1 rad and white noise of 1e-4 at 100 Hz is reported as its
  * frequency, amplitude and phase at sample 0; the amplitude read as
  * sqrt of the Hann-normalised power without its factor 2 (F03, the same
- * round) reported A / 2. */
+ * round) reports A / 2. */
 static void test_evidence_lattice_and_line(void **state)
 {
     enum { N = 20000 };
@@ -1030,8 +1030,8 @@ static void test_evidence_lattice_and_line(void **state)
  * z_crit 4: 0.5, 2.0, 3.0, 6.0, 2.8, 1.8 | -3.0, -3.5. The first run is
  * points 3-5 (tau 3-5 s, peak +6, ADEV ratio exp(dev / 2)); 1.8 ends it
  * and 2.0 is outside; the negative run has no point beyond z_crit and is
- * no location. Runs extended over |z| > 1.5 (a hand-made mutant, A08 of
- * 2026-11-29, that passed every suite) gave tau 3-6 s. */
+ * no location. Runs extended over |z| > 1.5 (a hand-made mutant, A08, that
+ * passes every other suite) give tau 3-6 s. */
 static void test_locate_runs(void **state)
 {
     static double z[8] = {0.5, 2.0, 3.0, 6.0, 2.8, 1.8, -3.0, -3.5};
@@ -1160,11 +1160,10 @@ static void test_compare_twin_only_level(void **state)
  * which must be mapped to normal scores as the real's (t with two) are.
  * Under the null (real and twins iid N(0, 1), 20 twin-only points) the
  * null's mean G and the real's mean G then agree (both 1 in expectation:
- * z^2 of a normal score). Until 2026-12-01 the mapping needed three twins,
- * so at S = 3 the null's z were the raw t_1 (Cauchy), their capped squares
- * about 4 x 40 / pi each: a null mean near 50 for a real G near 1, a G
- * test that could never reject (the sgap review). S = 4 was right and
- * stays so. */
+ * z^2 of a normal score). Were the mapping to need three twins, at S = 3
+ * the null's z would be the raw t_1 (Cauchy), their capped squares about
+ * 4 x 40 / pi each: a null mean near 50 for a real G near 1, a G test that
+ * could never reject. S = 4 is checked too. */
 static void test_compare_null_three_twins(void **state)
 {
     const int n = 20, R = 400;
@@ -1245,8 +1244,8 @@ static void test_split_disjoint(void **state)
         }
         /* floor(0.6 n) = 60000 samples exactly (the ends 30000 each: the
          * first and the last 30 %); with the second end one sample
-         * shorter (a hand-made mutant, 2026-11-29) the fit segment held
-         * 59999 and the old bound |nfit - 0.6 n| <= 1 passed it */
+         * shorter (a hand-made mutant) the fit segment holds 59999, which
+         * a bound |nfit - 0.6 n| <= 1 would pass */
         assert_int_equal(nfit, 60000);
         assert_int_equal(s.total[SG_FIT], 60000);
         assert_int_equal(s.total[SG_HOLD], n - 60000);
@@ -1443,8 +1442,8 @@ static void test_time_domain_model(void **state)
 
 /* A transient or a step is located inside its block: the steps point of
  * the real carries the sub-blocks around its largest lag-2 difference. A
- * 0.5 s bump at 300 s of a 600 s log (someone touching the table; the
- * sgbump review) was located "t 0-600 s", the whole block; it is now within
+ * 0.5 s bump at 300 s of a 600 s log (someone touching the table) is
+ * located not as "t 0-600 s", the whole block, but within
  * three sub-blocks (56 s) that hold it (a transient across a sub-block
  * boundary: the part in the sub-block whose mean moved most), and so is a
  * step at 450 s. */
@@ -1600,7 +1599,7 @@ static void test_time_fit_drifts(void **state)
  * 1 / sqrt(sum w yhat^2) (se^2 = 1 / sum w x^2, yhat = A x); the fitted
  * values are the data to the pseudo-noise, so 1 / sqrt(sum w y^2) = 1 /
  * sqrt(5 x 100) = 0.0447 within 1 %. The error of A left undivided (a
- * hand-made mutant, F06 of 2026-11-29, that passed every suite) is 10
+ * hand-made mutant, F06, that passes every other suite) is 10
  * times that (the catalogue's rise of 10). */
 static void test_time_fit_thermal_se(void **state)
 {
@@ -1643,8 +1642,7 @@ static void test_time_fit_thermal_se(void **state)
  * only a lower limit, and a warm-up done within a few seconds (T = 1 s) on
  * the shortest, only an upper limit; a warm-up of 500 s is inside. The fit
  * says which (at_bound, lo, hi); the value itself is unchanged (reporting
- * only). Until 2026-12-01 a T at a bound was reported as a fitted value
- * (the sgap review). */
+ * only), and a T at a bound is not reported as a fitted value. */
 static void test_thermal_tau_at_bound(void **state)
 {
     sg_chmodel_t m;
@@ -2050,8 +2048,8 @@ static void test_ci_from_refits(void **state)
  * white noise (its spread over 16 logs is 1.02 times the bound,
  * scripts/simgap_se_check.py), so an honest se is about the bound; the
  * Gauss-Newton covariance that treats the overlapping Allan points as
- * independent gave about 0.6 times it (0.32 % against 0.53 %; until
- * 2026-12-02). A 300 s log at 100 Hz, the script's densities, no effect
+ * independent gives about 0.6 times it (0.32 % against 0.53 %). A 300 s
+ * log at 100 Hz, the script's densities, no effect
  * tried; the channels fitted without an AR(1) (where the model is the
  * truth): their mean se / bound must be at least 0.8 (a bootstrap sd from
  * 16 twins scatters by about 1 / sqrt(30), 18 %, per channel: about 7 %
@@ -2373,10 +2371,10 @@ static void test_jumps_rate_detection(void **state)
 }
 
 /* The fitted baseline must be one the simulator can run: the AR(1) time
- * grid started at one sample, 1 / f_s, below the catalogue's 1 ms for a log
- * above 1 kHz, and a fitted time under 1 ms made every twin fail (`harness
- * simgap` on a 4 kHz static log with an AR(1) of 1 ms: "twin simulation
- * failed on channel ax", exit 1; a review). An exact table of white noise
+ * grid starting at one sample, 1 / f_s, would be below the catalogue's 1 ms
+ * for a log above 1 kHz, and a fitted time under 1 ms makes every twin fail
+ * (`harness simgap` on a 4 kHz static log with an AR(1) of 1 ms: "twin
+ * simulation failed on channel ax", exit 1). An exact table of white noise
  * plus an AR(1) of 0.5 ms at 4 kHz: the fit keeps a simulatable time. */
 static void test_fit_ar1_in_catalogue(void **state)
 {
@@ -2415,9 +2413,9 @@ static void test_fit_ar1_in_catalogue(void **state)
 }
 
 /* An effect accepted at one step whose magnitude the later refits set to
- * zero is left out of the answer (a review, 2026-11-28: "jumps (10 per
- * hour, rms step 0 m/s^2) on ax (13 % of the held-out excess)"); the
- * others keep their order and figures. */
+ * zero is left out of the answer (not "jumps (10 per hour, rms step 0
+ * m/s^2) on ax (13 % of the held-out excess)"); the others keep their
+ * order and figures. */
 static void test_prune_zero(void **state)
 {
     static sg_chres_t c;
@@ -2554,8 +2552,8 @@ static cJSON *json_of(const sg_result_t *r)
 
 /* An effect accepted at its step and refitted to zero is no answer: the
  * JSON's ranked effects[] leaves it out as the verdict and selected[] do.
- * Until 2026-11-29 effects[] ranked it first (rank 1, its step's gap
- * reduction 5) with an empty channels[] (the sgreport review). */
+ * It must not be ranked in effects[] (rank 1, its step's gap reduction 5)
+ * with an empty channels[]. */
 static void test_json_effects_leave_out_refitted_to_zero(void **state)
 {
     sg_result_t *r = hand_result();
@@ -2648,9 +2646,8 @@ static void test_json_ci68(void **state)
 
 /* An AR(1) of sigma 0 is no bias process: its tau means nothing and is
  * null wherever the JSON gives it, as the baseline's ar1_tau_s and the
- * summary's "ar1 (none: sigma 0)" say. Until 2026-11-29 final_model[] gave
- * it as a number (1 s) beside the baseline's null (the sgreport review, on
- * two minutes of ADIS unit 1, gz). */
+ * summary's "ar1 (none: sigma 0)" say, final_model[] too: not a number
+ * (1 s) beside the baseline's null (two minutes of ADIS unit 1, gz). */
 static void test_json_ar1_tau_null_without_sigma(void **state)
 {
     sg_result_t *r = hand_result();
@@ -2678,11 +2675,11 @@ static void test_json_ar1_tau_null_without_sigma(void **state)
  * G_null_sd, G_crit, max_abs_z, z_crit, significant, G_per_domain},
  * points[] {real, twin, twin_sd, sd, z}, baseline {white_density(_se),
  * ar1_sigma(_se), ar1_tau_s(_se), ar1_tau_max_s, ar1_tau_at_max}, each
- * given a distinct value. No test
- * read G_null_sd, max_abs_z, twin_sd or the baseline's standard errors:
- * the null mean written as G_null_sd, the total sd as twin_sd, max_abs_z
- * renamed and the AR(1) time's se written as sigma's (hand-made mutants,
- * 2026-11-29) passed every suite. */
+ * given a distinct value. No other test reads G_null_sd, max_abs_z,
+ * twin_sd or the baseline's standard errors: the null mean written as
+ * G_null_sd, the total sd as twin_sd, max_abs_z renamed and the AR(1)
+ * time's se written as sigma's (hand-made mutants) pass every other
+ * suite. */
 static void test_json_cmp_point_baseline_keys(void **state)
 {
     sg_result_t *r = hand_result();
@@ -2779,8 +2776,7 @@ static void test_json_cmp_point_baseline_keys(void **state)
 /* The fit segment's explained fraction (the JSON's explained_fit) is
  * undefined without an excess on the fit segment, as the held-out one is:
  * null, not 0 ("explains nothing"), which is what a candidate that moves
- * G_fit from 0.9 to 0.5 under a null mean of 1 was given until 2026-11-29
- * (the sgreport review). */
+ * G_fit from 0.9 to 0.5 under a null mean of 1 must not be given. */
 static void test_fit_explained_undefined_without_excess(void **state)
 {
     (void)state;
@@ -2893,8 +2889,8 @@ static void test_ci68_diagnosed(void **state)
  * of the excess the earlier effects left, as docs/simgap-results.md says,
  * not of the baseline's: on two minutes of ADIS unit 1 the summary read
  * "quant ... on ax (99 % of the held-out excess); vibration ... on ax (68 %
- * of the held-out excess)", 167 % of one excess (the sgreport review,
- * 2026-11-29). Here vibration was accepted at step 2, after jumps. */
+ * of the held-out excess)", 167 % of one excess, would be wrong. Here
+ * vibration is accepted at step 2, after jumps. */
 static void test_summary_later_step_fraction_of_what_is_left(void **state)
 {
     sg_result_t *r = hand_result();
@@ -2916,9 +2912,9 @@ static void test_summary_later_step_fraction_of_what_is_left(void **state)
 }
 
 /* A jitter has no first event: timing.selected[]'s first_event_s is null
- * for it, a time for a duplicate or a dropout. Until 2026-11-29 it was 0
- * (the zeroed field), which read as an event at the log's first sample
- * (the NGIMU short walk: first_event_s 0 for jitter; the sgreport review). */
+ * for it, a time for a duplicate or a dropout. Not 0 (the zeroed field),
+ * which would read as an event at the log's first sample (the NGIMU short
+ * walk: first_event_s 0 for jitter). */
 static void test_json_jitter_has_no_first_event(void **state)
 {
     sg_result_t *r = hand_result();
@@ -2953,9 +2949,8 @@ static void test_json_jitter_has_no_first_event(void **state)
 
 /* An accepted effect without a held-out excess to explain is said against
  * the split used: the held-out middle of a sandwich split, the held-out
- * segment (the log's last part) of a contiguous one. Until 2026-11-29 the
- * verdict said "the held-out middle" under --contiguous too (the sgreport
- * review). */
+ * segment (the log's last part) of a contiguous one: not "the held-out
+ * middle" under --contiguous too. */
 static void test_summary_no_excess_names_the_split(void **state)
 {
     sg_result_t *r = hand_result();
@@ -2977,8 +2972,8 @@ static void test_summary_no_excess_names_the_split(void **state)
 /* The verdict's parameters are each channel's final refit (the accepted
  * effects fitted together on the fit segment), not the fits the steps
  * above print: a jumps step of rms 0.00875 and a verdict of rms 0 read as
- * one figure contradicting the other. Until 2026-11-30 they were given
- * unlabelled; now the verdict says so once, with the fit segment of the
+ * one figure contradicting the other if unlabelled: the verdict says so
+ * once, with the fit segment of the
  * split used, and says nothing where it lists no channel effect. */
 static void test_summary_verdict_labels_final_refit(void **state)
 {
@@ -3006,8 +3001,8 @@ static void test_summary_verdict_labels_final_refit(void **state)
 
 /* A fraction within half a percent of zero is printed as 0 %, not -0 %: a
  * candidate that explains -0.1 % of the held-out excess (68 %: -0.4 to
- * 0.2 %) read "explains -0 % of the excess (68 %: -0..0 %)" until
- * 2026-11-29 (two minutes of ADIS unit 1; the sgreport review). */
+ * 0.2 %) must not read "explains -0 % of the excess (68 %: -0..0 %)" (two
+ * minutes of ADIS unit 1). */
 static void test_summary_no_negative_zero_percent(void **state)
 {
     sg_result_t *r = hand_result();
@@ -3029,11 +3024,11 @@ static void test_summary_no_negative_zero_percent(void **state)
  * catalogue's 1 ms) is a bound, not a fit: the optimum lies at or below it,
  * as at the longest (ar1_tau_at_max). The JSON says so (ar1_tau_min_s,
  * ar1_tau_at_min) and gives no standard error for a time at either bound
- * (a curvature at a constraint is none); the summary flags it. Until
- * 2026-12-01 the first 600 s of ADIS unit 1 gave ay, gx and gy "tau 0.01 s"
- * (one sample at 100 Hz) with ar1_tau_s_se 0.00072-0.00078, unflagged
- * (bin/harness simgap cut.csv, docs/simgap.md "Limitations" for the cut;
- * the sgfit review). */
+ * (a curvature at a constraint is none); the summary flags it. The first
+ * 600 s of ADIS unit 1 give ay, gx and gy "tau 0.01 s" (one sample at
+ * 100 Hz), which must not come with ar1_tau_s_se 0.00072-0.00078,
+ * unflagged (bin/harness simgap cut.csv, docs/simgap.md "Limitations" for
+ * the cut). */
 static void test_ar1_tau_at_min(void **state)
 {
     sg_result_t *r = hand_result();
@@ -3105,9 +3100,8 @@ static void test_ar1_tau_at_min(void **state)
  * search bound 6000 s: only a lower limit" (at the shortest: an upper
  * limit), the JSON's effect objects give bounds.tau_s {lo, hi, at_bound}
  * and no standard error for it; a T inside gives at_bound null and its
- * value as before. An rrw K at an end of its likelihood search likewise.
- * Until 2026-12-01 the summary said "tau 6e+03 s" as if fitted (the sgap
- * review). */
+ * value as usual. An rrw K at an end of its likelihood search likewise.
+ * The summary must not say "tau 6e+03 s" as if fitted. */
 static void test_json_summary_thermal_tau_at_bound(void **state)
 {
     sg_result_t *r = hand_result();
@@ -3188,9 +3182,9 @@ static void test_json_summary_thermal_tau_at_bound(void **state)
 
 /* Without a second fold (--contiguous, or a fold 2 that failed) the ends'
  * deviance drop is NaN: the step line gives the held-out deviance drop
- * alone. Until 2026-12-01 it read "deviance drop 400 (ends nan)" (the 10-min
- * quant log of docs/simgap.md "Worked example" with --contiguous; the sgfit
- * review). With a second fold both are given, as before. */
+ * alone, not "deviance drop 400 (ends nan)" (the 10-min quant log of
+ * docs/simgap.md "Worked example" with --contiguous). With a second fold
+ * both are given. */
 static void test_summary_contiguous_no_ends_nan(void **state)
 {
     sg_result_t *r = hand_result();
@@ -3214,9 +3208,8 @@ static void test_summary_contiguous_no_ends_nan(void **state)
 }
 
 /* A channel with a gap but no attribution says why: --max-effects 0, or a
- * log too short for a confident answer, where it said a bare "not
- * attempted" until 2026-11-29 (two seconds of ADIS unit 1, every channel;
- * the sgreport review). */
+ * log too short for a confident answer, not a bare "not attempted" (two
+ * seconds of ADIS unit 1, every channel). */
 static void test_summary_not_attempted_says_why(void **state)
 {
     sg_result_t *r = hand_result();
@@ -3242,10 +3235,9 @@ static void test_summary_not_attempted_says_why(void **state)
 
 /* The summary's definition of G is the one computed (docs/simgap.md,
  * section 3): the mean over the domains of each domain's mean of z^2 capped
- * at SG_ZCAP^2, not the mean z^2 over the points, which it said until
- * 2026-11-29 (two minutes of ADIS unit 1, ax: G 411.5, mean z^2 of the
- * JSON's points 380.5, their domain mean of capped z^2 411.5, numpy; the
- * sgreport review). */
+ * at SG_ZCAP^2, not the mean z^2 over the points (two minutes of ADIS
+ * unit 1, ax: G 411.5, mean z^2 of the JSON's points 380.5, their domain
+ * mean of capped z^2 411.5, numpy). */
 static void test_summary_defines_g_as_computed(void **state)
 {
     sg_result_t *r = hand_result();
@@ -3262,9 +3254,8 @@ static void test_summary_defines_g_as_computed(void **state)
 /* A held-out gap on a channel where no effect was tried (--max-effects 0)
  * is said as such in the JSON too: verdict.unconfirmed[]'s reason is
  * "not-tried", where the summary says "no effect of the catalogue was
- * tried"; until 2026-11-29 it was "no-effect", documented as a gap that no
- * candidate reduces (two minutes of ADIS unit 1 with --max-effects 0; the
- * sgreport review). */
+ * tried"; not "no-effect", documented as a gap that no candidate reduces
+ * (two minutes of ADIS unit 1 with --max-effects 0). */
 static void test_json_unconfirmed_not_tried(void **state)
 {
     sg_result_t *r = hand_result();
@@ -3294,8 +3285,8 @@ static void test_json_unconfirmed_not_tried(void **state)
 
 /* A not-held-out gap's lead candidate carries the fit segment's dQ under
  * the name every other effect object uses, fit_dQ, and under fit_dq, the
- * name it was first written with (kept for footnav-simgap/1 readers): a
- * review of docs/simgap.md, 2026-12-02, found the lead alone wrote fit_dq. */
+ * name it was first written with (kept for footnav-simgap/1 readers), so
+ * that the lead is not alone in writing fit_dq. */
 static void test_json_unconfirmed_lead_fit_dQ(void **state)
 {
     sg_result_t *r = hand_result();
@@ -3324,8 +3315,8 @@ static void test_json_unconfirmed_lead_fit_dQ(void **state)
 }
 
 /* The summary's split percentages are not rounded apart: --fit-frac 0.25
- * read "fit on the first and last 12 %, held out the middle 75 %", 99 %
- * of the log, until 2026-11-29 (the sgreport review). */
+ * must not read "fit on the first and last 12 %, held out the middle 75 %",
+ * 99 % of the log. */
 static void test_summary_split_percentages_add_up(void **state)
 {
     sg_result_t *r = hand_result();
@@ -3390,7 +3381,7 @@ static void test_report_medians_all_cases(void **state)
 
 /* The summary's top-1 by magnitude: quant's and jitter's multiples are not
  * drawn from --mag-range (committed run: quant at 508x, jitter at 41x), so
- * the last column holds everything from 4x up; it was labelled 4-10x. */
+ * the last column holds everything from 4x up, not labelled 4-10x. */
 static void test_report_magnitude_bins(void **state)
 {
     sgv_case_t c[2];

@@ -84,8 +84,8 @@ static void test_lin_to_sensor_inverse(void **state)
  * value was already clamped to -1 stays flagged; jointly, scale gx 0.5 with
  * misalign gx.from_z 0.6 on the trajectory are the sensor's 1.0 and 1.2
  * (the (3, 5) block of B (I - B)^-1: [0.5 0.6; 0 0] [2 1.2; 0 1]), the
- * second past misalign's bound 1. Until 2026-12-01 the clamped values were
- * reported as fits with no flag. */
+ * second past misalign's bound 1. A clamped value reported as a fit with
+ * no flag fails. */
 static void test_sensor_values_at_bound(void **state)
 {
     double B[6][6], val[2];
@@ -243,14 +243,13 @@ static void test_draw_case_reason(void **state)
  * mid-stance (samples 7, 21, 40) 0.1, 0.2, 0.3, RMS sqrt(0.14/3); two
  * windows of 0.295 s: first NIS 3 and 2 in the first, 5 in the second;
  * the drift from mid-stance 7 to 40 (3, 4, 2): horizontal 5, vertical 2.
- * Until 2026-11-29 no unit test reached these statistics: a whiteness
- * without the z component, the residual velocity's ln without the 1/2 of
- * the RMS, stances split at a gap of 2 samples, the wrong sign in the
- * whitening, the off-diagonal covariance read as the y and z variances,
- * the mean NIS over stances instead of updates, the drift's vertical from
- * the y axis and the residual speed at the stance's first sample
- * (hand-made mutants) were caught, if at all, only by the 4-minute CLI
- * walk tests. */
+ * Without this test, a whiteness without the z component, the residual
+ * velocity's ln without the 1/2 of the RMS, stances split at a gap of 2
+ * samples, the wrong sign in the whitening, the off-diagonal covariance
+ * read as the y and z variances, the mean NIS over stances instead of
+ * updates, the drift's vertical from the y axis and the residual speed at
+ * the stance's first sample (hand-made mutants) would be caught, if at
+ * all, only by the 4-minute CLI walk tests. */
 static void test_stance_points(void **state)
 {
     enum { N = 60 };
@@ -325,10 +324,10 @@ static void test_stance_points(void **state)
 /* The windows cover the segment to its last sample: a stance whose first
  * update is the segment's last sample belongs to the last window. 30
  * samples at 100 Hz (t 0-0.29 s), two windows [0, 0.145) and [0.145,
- * 0.29]; stances at samples 2 (NIS 2) and 29 (NIS 7). Until 2026-12-01 the
- * last window was half-open, the second stance was in no window (counted
- * in the mean first-update NIS, 4.5, but not in its window) and the window
- * was an empty placeholder. */
+ * 0.29]; stances at samples 2 (NIS 2) and 29 (NIS 7). Were the last window
+ * half-open, the second stance would be in no window (counted in the mean
+ * first-update NIS, 4.5, but not in its window) and the window an empty
+ * placeholder. */
 static void test_stance_points_last_sample(void **state)
 {
     enum { N = 30 };
@@ -361,14 +360,14 @@ static void test_stance_points_last_sample(void **state)
     sg_plist_free(&pl);
 }
 
-/* A long walk: more stances than the 4,096 the stance list once held. 5,000
+/* A long walk: more stances than 4,096 (a fixed list's size). 5,000
  * one-update stances 5 samples apart at 100 Hz (250 s); every first NIS 1
  * but the last stance's, 1001 (mean 1.2), the last at (3, 4, 0) m from the
- * first (horizontal drift 5 m), ten windows of 25 s. Until 2026-11-29 the
- * stances after the 4,096th were dropped without a word: the mean NIS read
- * 1, the drift ran to stance 4,096 and the last window (stances 4,500 on)
- * was an empty placeholder (a 90-minute walk at a normal cadence has about
- * 4,900; the scale review). */
+ * first (horizontal drift 5 m), ten windows of 25 s. Were the stances
+ * after the 4,096th dropped without a word, the mean NIS would read 1, the
+ * drift run to stance 4,096 and the last window (stances 4,500 on) be an
+ * empty placeholder (a 90-minute walk at a normal cadence has about
+ * 4,900). */
 static void test_stance_points_many(void **state)
 {
     enum { NS = 5000, GAP = 5, N = NS * GAP, NWIN = 10 };
@@ -405,10 +404,10 @@ static void test_stance_points_many(void **state)
 }
 
 /* The stances the fit of the motion effects takes (sg_nav_stance_starts)
- * on the 5,000-stance run of test_stance_points_many: every one. Until
- * 2026-11-29 they were arrays of 4,096, and the later stances (on a
- * 90-minute walk a third of the held-out ones) were left out of the fit
- * and its held-out test without a word (the scale review). */
+ * on the 5,000-stance run of test_stance_points_many: every one. With
+ * arrays of 4,096 the later stances (on a 90-minute walk a third of the
+ * held-out ones) would be left out of the fit and its held-out test
+ * without a word. */
 static void test_stance_starts_many(void **state)
 {
     enum { NS = 5000, GAP = 5, N = NS * GAP };
@@ -433,10 +432,10 @@ static void test_stance_starts_many(void **state)
  * shortest swing of 0.25 s) and 145-155; first-update NIS 2, 3, 5, 1, 7
  * and 0.5 at sample 60 (mid-stance). Split at 60, inside the second
  * stance: held out from 95, two stances (the third with its piece, the
- * fourth), mean first-update NIS of the runs (5 + 1 + 7) / 3. Until
- * 2026-12-02 the held-out part began at the split sample: the stance
- * 50-65 was held out too (three stances), with its mid-stance update at
- * 60 as its "first" (mean (0.5 + 5 + 1 + 7) / 4). A split in the gap
+ * fourth), mean first-update NIS of the runs (5 + 1 + 7) / 3. A held-out
+ * part beginning at the split sample would hold out the stance 50-65 too
+ * (three stances), with its mid-stance update at 60 as its "first" (mean
+ * (0.5 + 5 + 1 + 7) / 4). A split in the gap
  * before the piece (107) holds out from 145; one at a stance's first
  * update (95) from it; one after the last stance none. */
 static void test_held_out_whole_stances(void **state)

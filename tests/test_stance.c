@@ -120,7 +120,7 @@ static void test_config(void **state)
         assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
         /* a fraction of the gait cycle: above 1 is no fraction */
         c = fnav_stance_config_default;
-        assert_true(c.min_zupt_cycle == FNAV_R(0.025)); /* on by default (off until 2026-12-01) */
+        assert_true(c.min_zupt_cycle == FNAV_R(0.025)); /* on by default (0 turns it off) */
         c.min_zupt_cycle = FNAV_R(1.0);
         assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
         c.min_zupt_cycle = FNAV_R(1.01);
@@ -384,12 +384,12 @@ static void test_ring_contract(void **state)
  * accepts) gets the decisions of one that pops after every push. With a
  * window longer than the look-ahead (window_s 0.1 s: W = 21, h = 10; F = 0:
  * L = 3, at 200 Hz) a raw decision waits for h samples after it, and its
- * window reaches h before it: until 2026-12-01 push accepted a sample that
- * overwrote the start of a window not yet decided (it refused only when the
- * undecided outputs filled the ring), and the statistic was computed on
- * what was left (a review: T 2.94 instead of 3.34 in a still stretch, 266
- * of 1987 decisions different with bursts of 51). Now push says
- * FNAV_E_STATE before that; the burst caller pops and pushes again. */
+ * window reaches h before it: a push accepting a sample that overwrites the
+ * start of a window not yet decided (refusing only when the undecided
+ * outputs fill the ring) would leave the statistic computed on what was
+ * left (T 2.94 instead of 3.34 in a still stretch, 266 of 1987 decisions
+ * different with bursts of 51). Push says FNAV_E_STATE before that; the
+ * burst caller pops and pushes again. */
 static void test_burst_push_same_decisions(void **state)
 {
     static fnav_stance_t a, b;
@@ -452,11 +452,11 @@ static void test_burst_push_same_decisions(void **state)
 /* The first samples of a stream follow the shortest-run rule like any
  * other: a raw stance run at the start shorter than min_zupt_s is no
  * stance, as such a run at the end of the stream is not (the recording
- * may start mid-swing, at a dip of T). Until 2026-12-01 (a review) the
- * first sample alone was made stance whatever its run (an undocumented
- * "|| i == 0"), so a run of one raw sample at 100 Hz (W = 3: sample 1's
- * window reaches the motion at sample 2), where the shortest run is 2,
- * gave stance 1 at sample 0 and 0 at sample 1. A still start longer than
+ * may start mid-swing, at a dip of T). Were the first sample alone made
+ * stance whatever its run (an undocumented "|| i == 0"), a run of one raw
+ * sample at 100 Hz (W = 3: sample 1's window reaches the motion at sample
+ * 2), where the shortest run is 2, would give stance 1 at sample 0 and 0
+ * at sample 1. A still start longer than
  * the shortest run is stance from its first sample (the look-ahead). */
 static void test_first_samples_short_run(void **state)
 {
@@ -974,9 +974,9 @@ static void test_foot_off_window_edge(void **state)
 /* A swing shorter than the foot-off window that ends in a pause shorter
  * than min_stance_s (a stance confirmed for ZUPTs, not for a stride), then
  * a little settling motion: the foot-off is the push-off peak of the swing,
- * before the foot-strike. Until 2026-11-28 the search stayed open across
- * the pause and the settling motion's run restarted it, so foot-off came
- * at 0.830 s, after the foot-strike (a review). */
+ * before the foot-strike. Were the search left open across the pause, the
+ * settling motion's run would restart it and foot-off would come at
+ * 0.830 s, after the foot-strike. */
 static void test_foot_off_short_pause(void **state)
 {
     fnav_stance_t st;
@@ -1018,7 +1018,7 @@ static void test_foot_off_short_pause(void **state)
 /* Time jumps below the 35.8 min that clears the jerk history are looked
  * across, but three of 30 min between the impact and the stance add up
  * past the 71.6 min of the stamps' modulus: the strike must still be the
- * impact's own time (it was 0.650 + 4294.967 s; a review, 2026-11-28). */
+ * impact's own time (not 0.650 + 4294.967 s). */
 static void test_foot_strike_jumps_add_up(void **state)
 {
     fnav_stance_t st;
@@ -1224,14 +1224,14 @@ static fnav_sample_t gait_sample(long k)
     return sample(k, rate, f, w);
 }
 
-/* Days of samples (a review, 2026-11-28): the sample counters are long,
+/* Days of samples: the sample counters are long,
  * 32 bits on the Cortex-M4F, where 2^31 samples are 24.9 days at 1 kHz and
  * 6.2 days at 4 kHz. Simulated here by moving every counter of a detector
  * to a few thousand samples below LONG_MAX (a multiple of both ring sizes,
  * so every slot stays where it was): its decisions must stay those of a
- * detector that did not jump. Before the fix the counters overflowed
- * (undefined behaviour; in practice the ring index went negative, pop
- * answered FNAV_AGAIN for ever and push FNAV_E_STATE). */
+ * detector that did not jump. Counters left to overflow would be undefined
+ * behaviour (in practice the ring index goes negative, pop answers
+ * FNAV_AGAIN for ever and push FNAV_E_STATE). */
 static void test_counters_long_run(void **state)
 {
     static fnav_stance_t a, b;
@@ -1284,8 +1284,8 @@ static void test_counters_long_run(void **state)
 
 /* The same for the run lengths: a foot at rest for 2^31 samples (simulated
  * by moving the lengths of the current raw-stance run close to LONG_MAX)
- * stays in stance; before the fix the run length overflowed and the
- * confirmation (run >= min_zupt) turned the rest into motion. */
+ * stays in stance; a run length left to overflow would make the
+ * confirmation (run >= min_zupt) turn the rest into motion. */
 static void test_rest_run_long(void **state)
 {
     static fnav_stance_t st;
@@ -1317,8 +1317,8 @@ static void test_rest_run_long(void **state)
 }
 
 /* A time jump of over 35.8 min (2^31 us) between a heel impact and the
- * stance it ends (a review, 2026-11-28): the jerk history's stamps are
- * microseconds modulo 2^32 (71.6 min), so the foot-strike time came out
+ * stance it ends: the jerk history's stamps are microseconds modulo 2^32
+ * (71.6 min), so a foot-strike time searched across it would come out
  * wrapped (a 73-minute jump at 100 Hz: 4297.947 s for a stance starting at
  * 4403.010 s). Across such a jump the search does not look before it (the
  * motion inside is unknown): the strike is within the stance's own side of
@@ -1327,10 +1327,10 @@ static void test_foot_strike_time_jump(void **state)
 {
     /* the third, a step back of 10 min: the new timeline fnav_nav_push
      * accepts after FNAV_NAV_TIME_RESYNC samples behind (a corrupted stamp
-     * far ahead, a restarted timer). Until 2026-11-29 (a review of the
-     * core) the search looked back across it and the strike came out
-     * 3695 s before the stance, the stamps' difference wrapped modulo
-     * 2^32 us; now a step back clears the history as a long jump does. */
+     * far ahead, a restarted timer). A search looking back across it would
+     * put the strike 3695 s before the stance, the stamps' difference
+     * wrapped modulo 2^32 us; a step back clears the history as a long
+     * jump does. */
     static const double jumps_s[3] = { 600.0, 4400.0, -600.0 };
     int pass;
     (void)state;
@@ -1742,17 +1742,17 @@ static void test_zupt_cycle_latency(void **state)
 }
 
 /* Zero specific force (an IMU that outputs zeros before its first
- * conversion, a stuck bus read): |mean f| = 0 has no direction, and the
- * statistic took g u = 0, so T = 0 and the detector called a dead sensor
- * (or one in free fall) at rest whatever its threshold (a review). With a
+ * conversion, a stuck bus read): |mean f| = 0 has no direction; a statistic
+ * taking g u = 0 would give T = 0 and the detector would call a dead sensor
+ * (or one in free fall) at rest whatever its threshold. With a
  * zero mean, sum |f_j - g u|^2 = sum |f_j|^2 + W g^2 for every unit u:
  * T = g^2 / sigma_a^2 here, 9.6e5, above gamma. (The adaptive threshold's
  * ceiling, 10 gamma = 1e6, still lets a long run of zeros through: off
  * here.) The expected value is formed in double from the configuration's
  * own g and sigma_a (as fnav_real_t); the statistic rounds g^2, sigma_a^2,
  * the quotient and the division by W once each and sums W equal terms
- * (W - 1 roundings at most): (W + 4) EPS relative. (It was 1e-5 relative
- * in both builds against a hard-coded 0.01, 1e10 times the double build's
+ * (W - 1 roundings at most): (W + 4) EPS relative. (Not 1e-5 relative in
+ * both builds against a hard-coded 0.01, 1e10 times the double build's
  * rounding.) */
 static void test_zero_specific_force(void **state)
 {

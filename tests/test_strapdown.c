@@ -474,7 +474,7 @@ static void test_instant_coning_off(void **state)
 
 /* Somigliana on WGS-84: 9.7803253359 m/s^2 at the equator and
  * 9.8321849378 m/s^2 at the poles (NIMA TR8350.2, table 3.4). */
-/* A general motion with a closed-form truth (a review, 2026-12-01): the
+/* A general motion with a closed-form truth: the
  * attitude turns about all three axes at once with varying rates (ZYX
  * Euler angles roll 0.3 sin 1.1t, pitch 0.2 sin(0.7t + 0.3), yaw 0.5t +
  * 0.4 sin 1.3t) while the position moves on p = (sin 0.9t, 0.5 cos 1.2t,
@@ -491,7 +491,7 @@ static void test_instant_coning_off(void **state)
  * (error at 100 / 200 Hz): instantaneous 8.0e-8 / 1.0e-8 rad, 1.12e-4 /
  * 2.80e-5 m/s, 5.66e-4 / 1.41e-4 m; means 5.2e-8 / 6.5e-9 rad, 1.13e-4 /
  * 2.82e-5 m/s, 5.67e-4 / 1.42e-4 m (the same from samples and truth
- * computed by numpy/scipy from these formulas, during the review). A wrong sign of the
+ * computed by numpy/scipy from these formulas). A wrong sign of the
  * rotation compensation (velocity 4.3e-2 / 2.1e-2 m/s: first order) or the
  * attitude update composed on the wrong side (1.04 rad at both rates)
  * fails the orders (hand-made mutants). The sculling term of a smooth
@@ -704,7 +704,7 @@ static double gm_att_lead(double T, double dt)
     return dt * dt * dt / 24.0 * sqrt(acc[0] * acc[0] + acc[1] * acc[1] + acc[2] * acc[2]);
 }
 
-/* The size bounds (they were measured numbers until 2026-12-02): the
+/* The size bounds (derived, not measured numbers): the
  * velocity error's leading term is the second-order rotation term the
  * algorithm leaves out, lv = -(dt^2 / 6) int w_n x (w_n x f_n) dt (as for
  * test_rotating_acceleration, here along the motion: gm_lead); the
@@ -787,8 +787,8 @@ static void test_general_motion(void **state)
  * same with and without), measured in double: instantaneous 6.8e-3 m/s
  * with the term, 2.27e-2 without; means 2.4e-3 against 2.15e-2. With the
  * sign of either sculling term flipped (hand-made mutants) the error is
- * 4.2e-2 and 4.1e-2 m/s, worse than none: before this test, the interval
- * means' flipped sign passed every test of this file (test_simnav saw it).
+ * 4.2e-2 and 4.1e-2 m/s, worse than none: without this test, the interval
+ * means' flipped sign passes every test of this file (test_simnav sees it).
  * The bounds: under half (instantaneous) and a fifth (means) of the error
  * without the term, plus float rounding (an ulp of g dt per step). */
 static void test_sculling(void **state)
@@ -894,7 +894,7 @@ static void test_bad_input(void **state)
                                          FNAV_R(-0.01)),
                      FNAV_E_TIME);
     /* finite readings and dt that overflow the state: refused, nothing
-     * changed (it returned FNAV_OK with an infinite state: a review) */
+     * changed (not FNAV_OK with an infinite state) */
     assert_int_equal(fnav_strapdown_step(&fnav_strapdown_config_default, &x, &h, fnav_vec3_zero(),
                                          fnav_vec3(FNAV_R(1.0e3), FNAV_R(0.0), FNAV_R(0.0)), fnav_sqrt(FNAV_REAL_MAX)),
                      FNAV_E_RANGE);
@@ -910,11 +910,11 @@ static void test_bad_input(void **state)
 }
 
 /* NULL pointers and a configuration out of its domain: FNAV_E_ARG, state
- * and history unchanged. Until 2026-12-01 (a review) a NULL cfg or x hit
- * FNAV_ASSERT (a crash with FNAV_ENABLE_ASSERT=0), a gravity of 0 or
- * -9.8 m/s^2 and an unknown sample type returned FNAV_OK (gravity pulling
- * up; the interval-mean increments), a NaN or infinite gravity
- * FNAV_E_RANGE, as if the readings had overflowed the state. */
+ * and history unchanged: not FNAV_ASSERT for a NULL cfg or x (a crash with
+ * FNAV_ENABLE_ASSERT=0), not FNAV_OK for a gravity of 0 or -9.8 m/s^2 or an
+ * unknown sample type (gravity pulling up; the interval-mean increments),
+ * not FNAV_E_RANGE for a NaN or infinite gravity, as if the readings had
+ * overflowed the state. */
 static void test_bad_args(void **state)
 {
     fnav_strapdown_state_t x = state_at(fnav_quat_identity());

@@ -104,8 +104,8 @@ static void test_config(void **state)
     c = fnav_ukf_config_default;
     c.kappa = FNAV_R(-20.0); /* n + lambda <= 0 */
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
-    /* closed_form is 0 or 1, as lever and settle (2 and -1 were taken for
-     * 1; the filter review) */
+    /* closed_form is 0 or 1, as lever and settle (2 and -1 are not taken
+     * for 1) */
     c = fnav_ukf_config_default;
     c.closed_form = 2;
     assert_int_equal(fnav_ukf_init(&f, &c), FNAV_E_CONFIG);
@@ -476,11 +476,10 @@ static void test_rotated_accel_noise(void **state)
  * the accelerometer noise off, an attitude sd of 1e-7 rad, one prediction:
  * without rotation and with the rate zero the n-frame error is carried
  * unchanged (q_true' = dq(a) q_nb dq(w dt)), so the attitude block is
- * exactly s^2 I + C diag(q^2) C^T dt. No test held the gyro's rotation
- * before (the filter review of 2026-12-01: the noise added with C^T in
- * place of C, or unrotated, passed every test_ukf test; both fail here:
- * the elements differ by up to 5.7e-5 and 3.7e-5 (rad^2) against a
- * tolerance of 1.9e-10).
+ * exactly s^2 I + C diag(q^2) C^T dt. Only this test holds the gyro's
+ * rotation (the noise added with C^T in place of C, or unrotated, passes
+ * every other test_ukf test; both fail here: the elements differ by up to
+ * 5.7e-5 and 3.7e-5 (rad^2) against a tolerance of 1.9e-10).
  * Rounding: the noise's sums and the attitude columns' scatter, a few EPS
  * of the largest variance: 16 EPS of it. */
 static void test_rotated_gyro_noise(void **state)
@@ -650,10 +649,10 @@ static fnav_status_t init_weights(fnav_ukf_t *f, const double w[3])
 /* The unscented weights. The predicted covariance is S + (beta - alpha^2)
  * m m^T with S = sum_i Wi D_i D_i^T (fnav_ukf.c); with n + lambda > 0 (Wi >
  * 0) every term is positive semi-definite exactly when beta >= alpha^2, and
- * init refuses the rest (FNAV_E_CONFIG). Until 2026-11-29 (the filter
- * review) any finite beta was accepted: beta = -10 with alpha = 1 made the
- * vertical velocity variance of one prediction negative here, and the guard
- * reset it to its maximum (1e4 (m/s)^2 instead of 3.6e-5). The default
+ * init refuses the rest (FNAV_E_CONFIG). Were any finite beta accepted,
+ * beta = -10 with alpha = 1 would make the vertical velocity variance of
+ * one prediction negative here, and the guard reset it to its maximum
+ * (1e4 (m/s)^2 instead of 3.6e-5). The default
  * weights are unchanged. A small alpha keeps every term's sign: W0c (about
  * -1e6 at alpha = 1e-3) multiplies nothing in this form, and the covariance
  * stays positive definite. */
@@ -699,13 +698,13 @@ static void test_weights_psd(void **state)
 
 /* Small alpha (the scaled UT's usual range is 1e-4 <= alpha <= 1: Wan & van
  * der Merwe, ch. 7 of Haykin (ed.), Kalman Filtering and Neural Networks,
- * 2001). n + lambda = alpha^2 (n + kappa) was formed as n + (alpha^2
- * (n + kappa) - n), which in float32 cancels down to the spacing of n
- * (9.5e-7 at 15): at alpha = 1e-3 the sigma points sat 0.86 % (n = 15) and
- * 2.3 % (n = 18, the lever) off gamma = alpha sqrt(n + kappa) and the pair
- * weight Wi 1.7 % and 4.9 % off 1 / (2 alpha^2 (n + kappa)), and alpha =
- * 1e-4 (n = 15) or 2e-4 (n = 18) was refused (FNAV_E_CONFIG) as if n +
- * lambda were not positive (the audit of 2026-11-30). The weights must be
+ * 2001). n + lambda = alpha^2 (n + kappa) formed as n + (alpha^2
+ * (n + kappa) - n) would in float32 cancel down to the spacing of n
+ * (9.5e-7 at 15): at alpha = 1e-3 the sigma points would sit 0.86 % (n = 15)
+ * and 2.3 % (n = 18, the lever) off gamma = alpha sqrt(n + kappa) and the
+ * pair weight Wi 1.7 % and 4.9 % off 1 / (2 alpha^2 (n + kappa)), and
+ * alpha = 1e-4 (n = 15) or 2e-4 (n = 18) would be refused (FNAV_E_CONFIG)
+ * as if n + lambda were not positive. The weights must be
  * those of the formulas to rounding, the mean weights sum to 1, and a
  * prediction at alpha = 1e-4 keeps a positive definite covariance. The
  * defaults (alpha = 1, kappa = 0: lambda = 0 exactly) are unchanged
@@ -1180,19 +1179,19 @@ static void test_diverged(void **state)
 
 /* Standard deviations whose squares leave the range, and an attitude
  * given at a scale whose squared norm does. An sd of 1e-25 (float32; 1e-170
- * in double) is finite and positive, but its variance is 0: init and start
- * accepted it, and the guard then turned that variance into its maximum
- * (a 1e-25 m initial position sd became 10 km at the first prediction);
- * one of 1e20 made it infinite. q_nb = (1e20, 0, 0, 1e20), the heading
- * 90 deg given at a large scale, became the zero quaternion (its squared
- * norm overflowed: FNAV_OK, and a filter with no attitude). Found by the
- * filter review. Now: FNAV_E_CONFIG / FNAV_E_ARG for such an sd, the
- * attitude normalised (scaled first), FNAV_E_ARG for a zero quaternion,
- * the filter unchanged by a refused start. */
+ * in double) is finite and positive, but its variance is 0: accepted by
+ * init and start, it would be turned by the guard into its maximum (a
+ * 1e-25 m initial position sd would become 10 km at the first prediction);
+ * one of 1e20 would make it infinite. q_nb = (1e20, 0, 0, 1e20), the
+ * heading 90 deg given at a large scale, normalised unscaled would become
+ * the zero quaternion (its squared norm overflows: FNAV_OK, and a filter
+ * with no attitude). Expected: FNAV_E_CONFIG / FNAV_E_ARG for such an sd,
+ * the attitude normalised (scaled first), FNAV_E_ARG for a zero
+ * quaternion, the filter unchanged by a refused start. */
 /* The largest initial attitude sd (fnav_ukf_att_sd_max, FNAV_UKF_ATT_GRP_MAX
  * / gamma): beyond 4 / gamma the sigma points pass 180 deg and the first
- * prediction shrank the variance with no information (a yaw sd of 90 deg
- * read 32.4 deg a sample later; the UKF review, 2026-12-01). start refuses
+ * prediction shrinks the variance with no information (a yaw sd of 90 deg
+ * reads 32.4 deg a sample later). start refuses
  * an sd above the limit; at the limit a still prediction keeps it, as it
  * does any smaller one, and 4 / gamma shows the fold the limit keeps out. */
 static void test_att_sd_limit(void **state)
@@ -1286,11 +1285,11 @@ static void test_squares_out_of_range(void **state)
         }
     }
     /* the white-noise densities and the lever's random walk may be 0 (a
-     * tiny one is as 0), but one whose square overflows made the first
-     * prediction's variance infinite and the guard its maximum (a gyro
-     * density of 1e20 (float) gave an attitude variance of pi^2 about x,
-     * cov_guard 1; a lever walk of 1e20 the lever's 1 m^2): init accepted
-     * both (the UKF review, 2026-12-01); FNAV_E_CONFIG since */
+     * tiny one is as 0), but one whose square overflows would make the
+     * first prediction's variance infinite and the guard its maximum (a
+     * gyro density of 1e20 (float) gives an attitude variance of pi^2 about
+     * x, cov_guard 1; a lever walk of 1e20 the lever's 1 m^2): init refuses
+     * both, FNAV_E_CONFIG */
     {
         fnav_real_t *nf[] = { &c.gyro_noise_rps_rthz[0], &c.accel_noise_mps2_rthz[2], &c.lever_rw_m_rts };
         for (k = 0; k < sizeof nf / sizeof nf[0]; k++) {
@@ -1347,7 +1346,7 @@ static void test_squares_out_of_range(void **state)
  * then 180 deg - w t with roll and yaw turned by 180 deg (checked 0.6 deg
  * or more from it, where 1 / cos(pitch) amplifies the quaternion's rounding
  * a hundredfold; within 1e-4 rad, measured 3.3e-5 in float, 1.1e-6 in
- * double). Added by the filter review; it passed as the filter stood. */
+ * double). It pins the filter's behaviour; it guards no fix. */
 static void test_pitch_through_90(void **state)
 {
     static fnav_ukf_t f;
@@ -1433,8 +1432,8 @@ static void test_pitch_through_90(void **state)
  * initial one plus the gyro noise sum_k C_k diag(N^2) C_k^T dt (C_k =
  * Rz(yaw_k), the propagated attitude) and its yaw row uncorrelated with the
  * velocity, the speed near 0 (the tilt pairs' second-order mean shift,
- * 2 Wi g (1 - cos(gamma 1e-3)) dt a step: 1e-6 m/s after 40). Added by the
- * filter review of 2026-12-01; it passed as the filter stood. Mutants of
+ * 2 Wi g (1 - cos(gamma 1e-3)) dt a step: 1e-6 m/s after 40). It pins
+ * the filter's behaviour; it guards no fix. Mutants of
  * sigma_att (throwaway patches): for a level sigma point, the error's z
  * component taken from the ZYX yaw difference (as 4 tan(d/4)) without
  * wrapping fails only this test, at the first step (the yaw 1.69 rad
@@ -1517,13 +1516,13 @@ static void test_yaw_near_pi(void **state)
  * (I - K H) P (I - K H)^T + K R K^T >= K R K^T). In float32, once P / r2
  * exceeds 1 / FLT_EPSILON (P above 840 (m/s)^2 with the 0.01 m/s ZUPT),
  * P + r2 rounds to P, K to 1 and the expanded Joseph form to 0 or below:
- * the guard then set the variance to its maximum, 1e4 (m/s)^2, and every
- * later ZUPT did the same again (S = 1e4 + 1e-4 = 1e4 in float), so the
- * velocity variance stayed at 1e4 for the rest of the walk (found by the
- * filter review with a program of its own: the default navigator, 400 s
- * of the turning foot of test_nav_robust's test_long_swing, then 20 s
- * still, reported 1e4 through the 20 s of ZUPTs, the double build 1e-4 at
- * the first). Without and with the lever and the settling (the
+ * the guard would then set the variance to its maximum, 1e4 (m/s)^2, and
+ * every later ZUPT do the same again (S = 1e4 + 1e-4 = 1e4 in float), so
+ * the velocity variance would stay at 1e4 for the rest of the walk (the
+ * default navigator, 400 s of the turning foot of test_nav_robust's
+ * test_long_swing, then 20 s still, would report 1e4 through the 20 s of
+ * ZUPTs, the double build 1e-4 at the first). Without and with the lever
+ * and the settling (the
  * navigator's configuration). */
 static void test_zupt_after_long_swing(void **state)
 {
@@ -1700,9 +1699,9 @@ static void test_covariance_recovery(void **state)
  * rho / (1 + 1e-6) < 1 and the factorisation succeed: the step is an
  * ordinary one (FNAV_OK), counted in chol_jitter, no reset, the
  * correlation kept (a reset to the diagonal would drop it) and the result
- * positive definite. No test reached this stage before (the filter review
- * of 2026-12-01: with the jitter made 0, or its count removed, every
- * test_ukf test passed; both fail here). */
+ * positive definite. Only this test reaches this stage (with the jitter
+ * made 0, or its count removed, every other test_ukf test passes; both
+ * fail here). */
 static void test_covariance_jitter(void **state)
 {
     static fnav_ukf_t f;
@@ -2612,11 +2611,11 @@ static void test_settle_recovery(void **state)
 
 /* fnav_ukf_init with the filter's own configuration, &f.cfg (a restart
  * with it, as fnav_nav_init allows with &nav.cfg): the configuration is
- * kept and the filter is the one a fresh init gives. Until 2026-12-02 (the
- * core review) init zeroed the object, its configuration with it, before
- * copying *cfg: without the lever it returned FNAV_OK with gravity, the
- * ZUPT's sigma and alpha 0; with the lever (18 states counted before the
- * zeroing, 15 packed after it) it hit FNAV_ASSERT. */
+ * kept and the filter is the one a fresh init gives. An init zeroing the
+ * object, its configuration with it, before copying *cfg would return
+ * FNAV_OK without the lever with gravity, the ZUPT's sigma and alpha 0, and
+ * with the lever (18 states counted before the zeroing, 15 packed after
+ * it) hit FNAV_ASSERT. */
 static void test_reinit_own_config(void **state)
 {
     static fnav_ukf_t f, g;
@@ -2666,10 +2665,10 @@ static void test_reinit_own_config(void **state)
 
 /* A filter never initialised (static storage: every byte 0) is refused
  * at the start, and so every later call: FNAV_E_STATE, nothing written.
- * Until 2026-12-02 (the core review) fnav_ukf_start said FNAV_OK on it and
- * the filter then predicted with its zero configuration (no gravity, no
- * states: FNAV_OK, the velocity falling at the specific force's 9.8 m/s^2)
- * and answered each ZUPT FNAV_E_DECOMP. */
+ * Were fnav_ukf_start to say FNAV_OK on it, the filter would predict with
+ * its zero configuration (no gravity, no states: FNAV_OK, the velocity
+ * falling at the specific force's 9.8 m/s^2) and answer each ZUPT
+ * FNAV_E_DECOMP. */
 static void test_start_not_initialised(void **state)
 {
     static fnav_ukf_t f, zero;
@@ -2692,10 +2691,10 @@ static void test_start_not_initialised(void **state)
  * (fnav_ukf.h: FNAV_E_DECOMP, counted in health.update_reject, nothing
  * changed), also when it is indefinite with a positive determinant and a
  * positive leading 2x2 minor: S = [-1 0 2; 0 -1 0; 2 0 -1] (eigenvalues
- * -3, -1, 1; det 3, minor 1). Until 2026-12-02 (the core review) the test
- * of S left out its first pivot, S_00 > 0 (Sylvester's criterion needs
- * it with the minor and the determinant), and this S was inverted and
- * used. Such a P (a velocity variance below -r2) is not one the filter
+ * -3, -1, 1; det 3, minor 1). A test of S leaving out its first pivot,
+ * S_00 > 0 (Sylvester's criterion needs it with the minor and the
+ * determinant), would invert and use this S. Such a P (a velocity variance
+ * below -r2) is not one the filter
  * makes: it is set here. */
 static void test_zupt_indefinite_s(void **state)
 {

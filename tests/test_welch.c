@@ -718,8 +718,8 @@ static void test_bandwidth_analytic(void **state)
     c.threshold = FNAV_R(1.5);
     assert_int_equal(fnav_welch_bandwidth(p, 33, df, &c, &out, NULL), FNAV_E_ARG);
     assert_int_equal(fnav_welch_bandwidth(NULL, 33, df, NULL, &out, NULL), FNAV_E_ARG);
-    /* a rounding step that is not finite (a review, 2026-11-29): +Inf passed
-     * the check (>= 0) and the rounded frequency came out NaN with FNAV_OK */
+    /* a rounding step that is not finite: +Inf would pass a check of >= 0
+     * and the rounded frequency come out NaN with FNAV_OK */
     p[5] = FNAV_R(1.0);
     c = fnav_bandwidth_config_default;
     c.round_hz = (fnav_real_t)INFINITY;
@@ -747,11 +747,11 @@ static void test_bandwidth_analytic(void **state)
     FNAV_ASSERT_CLOSE(out.fs_rounded_hz, out.fs_hz, 0.0, 1e-6);
 }
 
-/* A density is never negative (a review, 2026-12-01): a spectrum with a
- * negative bin was taken, its total the sum of the positive and negative
- * parts: {0, 4, -3, 0, 1} (df 1 Hz) gave FNAV_OK, a total of 2, a
+/* A density is never negative: a spectrum with a negative bin, if taken,
+ * would have as total the sum of the positive and negative parts:
+ * {0, 4, -3, 0, 1} (df 1 Hz) would give FNAV_OK, a total of 2, a
  * "95 %" band of 0.975 Hz and a CCDF rising from 0 to 0.5. A negative or
- * NaN bin is now FNAV_E_RANGE, the DC bin too when it is left out of the
+ * NaN bin is FNAV_E_RANGE, the DC bin too when it is left out of the
  * total, with nothing written. */
 static void test_bandwidth_bad_bins(void **state)
 {
@@ -794,8 +794,8 @@ static void test_config_and_bad_input(void **state)
     int i;
     (void)state;
     assert_int_equal(fnav_welch_init(NULL, NULL), FNAV_E_ARG);
-    /* push was the one welch entry point that dereferenced a NULL w (a core
-     * review, 2026-11-29): every other one returns FNAV_E_ARG */
+    /* push too must not dereference a NULL w: every other welch entry
+     * point returns FNAV_E_ARG */
     assert_int_equal(fnav_welch_push(NULL, FNAV_R(1.0)), FNAV_E_ARG);
     c.nfft = 48;
     assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
@@ -882,10 +882,9 @@ static void test_offset(void **state)
  * losing the segment's small signal to a large offset: gravity on an
  * accelerometer axis, 4096-sample segments. The spectrum with the offset
  * must be that without it, bin 0 included, within 1e-3 of the bin or 1e-6
- * of the largest (the float tolerance against scipy before it was derived;
- * not derived here). Summing the raw
- * float samples for the mean put a 1.4 % error into bin 0 of the ADIS16405
- * az spectrum. */
+ * of the largest (a float tolerance against scipy, not derived here).
+ * Summing the raw float samples for the mean would put a 1.4 % error into
+ * bin 0 of the ADIS16405 az spectrum. */
 static void test_segment_mean_large_offset(void **state)
 {
     static fnav_welch_t a, b;
@@ -997,9 +996,9 @@ static void test_global_long_offset_start(void **state)
     }
 }
 
-/* The sample count's end (a review, 2026-11-28): with a hop of one sample
- * the segment count reached 2^32 with the samples and wrapped to 0 (get then
- * answered FNAV_E_STATE, and the GLOBAL mean divided a sum of every sample
+/* The sample count's end: with a hop of one sample the segment count
+ * reaches 2^32 with the samples and must not wrap to 0 (get would then
+ * answer FNAV_E_STATE, and the GLOBAL mean divide a sum of every sample
  * by a count that had stopped). 12.4 days at 4 kHz. The counts are moved
  * to their end here, consistently (hop 1: nseg = nsamples - nfft + 1); the
  * push that would make the count 2^32 is refused. */
@@ -1086,10 +1085,10 @@ static void test_sample_count_end(void **state)
 }
 
 /* An estimator never initialised (static storage, zeroed) or whose init
- * failed before it ever succeeded: nfft is 0. Push stepped the ring index
- * past the end (pos + 1 == 0 never wrapped it), writing out of bounds from
- * the FNAV_WELCH_MAX_NFFT-th push on (found by a library user's probe,
- * 2026-11-30); now the index stays in the ring, no segment completes and
+ * failed before it ever succeeded: nfft is 0. Push must not step the ring
+ * index past the end (pos + 1 == 0 never wraps it), writing out of bounds
+ * from the FNAV_WELCH_MAX_NFFT-th push on (a library user's probe); the
+ * index stays in the ring, no segment completes and
  * fnav_welch_get says FNAV_E_STATE, as before the first segment. */
 static void test_not_initialised(void **state)
 {
@@ -1101,8 +1100,7 @@ static void test_not_initialised(void **state)
     c.nfft = 48; /* refused: w stays zeroed */
     assert_int_equal(fnav_welch_init(&w, &c), FNAV_E_CONFIG);
     /* a push says FNAV_E_STATE, as fnav_nav_push does, before it looks at
-     * the sample, and takes nothing (it returned FNAV_OK and counted the
-     * sample before 2026-11-30) */
+     * the sample, and takes nothing (not FNAV_OK with the sample counted) */
     memset(&copy, 0, sizeof copy);
     for (i = 0; i < FNAV_WELCH_MAX_NFFT + 8u; i++) {
         assert_int_equal(fnav_welch_push(&w, FNAV_R(1.0)), FNAV_E_STATE);
@@ -1133,11 +1131,11 @@ static void test_not_initialised(void **state)
 }
 
 /* Re-initialising with the estimator's own configuration (a reset,
- * fnav_welch_init(&w, &w.cfg); a review, 2026-12-01): init cleared the
- * estimator, configuration included, before it read the configuration's
- * nfft again, so it returned FNAV_E_CONFIG and left the estimator zeroed
- * (every push then FNAV_E_STATE), where fnav_welch.h says a failed init
- * leaves it as it was. It must reset it: no segment, the same
+ * fnav_welch_init(&w, &w.cfg)): an init that cleared the estimator,
+ * configuration included, before it read the configuration's nfft again
+ * would return FNAV_E_CONFIG and leave the estimator zeroed (every push
+ * then FNAV_E_STATE), where fnav_welch.h says a failed init leaves it as
+ * it was. It must reset it: no segment, the same
  * configuration, and the same spectrum as a fresh estimator after the same
  * samples. */
 static void test_reinit_own_config(void **state)

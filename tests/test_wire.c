@@ -385,7 +385,7 @@ static void test_roundtrip_and_sizes(void **state)
 
 /* A double build's value beyond the float range is sent as the largest
  * float of its sign (the cast itself would be undefined behaviour, C99
- * 6.3.1.5; a review, 2026-11-28); in range it is the value rounded to
+ * 6.3.1.5); in range it is the value rounded to
  * float, as in a float build. */
 static void test_beyond_float_range(void **state)
 {
@@ -588,9 +588,9 @@ static void test_seq_gap_boundary(void **state)
  * when its CRC is right: a SAMPLE header saying 10 bytes, framed with a
  * valid CRC by the generic encoder, then an END frame. The decoder must
  * count one corrupt frame, skip its 20 bytes and deliver only END. Without
- * the length check the SAMPLE frame was delivered as valid and every test
- * passed (vectors/wire/corrupt.bin's wrong-length frame has a bad CRC too,
- * which fails either way). */
+ * the length check the SAMPLE frame would be delivered as valid and every
+ * other test pass (vectors/wire/corrupt.bin's wrong-length frame has a bad
+ * CRC too, which fails either way). */
 static void test_known_type_wrong_length(void **state)
 {
     uint8_t buf[64], pay[10];
@@ -821,10 +821,10 @@ static void test_flush_end_of_stream(void **state)
 
 /* After a flush the decoder starts afresh: the extent of the truncated
  * candidate it rejected ends there (no byte of it will come), so a corrupt
- * frame arriving after the quiet time counts on its own. Until 2026-12-01
- * the rejected candidate's remaining extent (here 50 - 19 = 31 bytes) was
- * kept and the corrupt frame after it was not counted: harness live called
- * a damaged frame after a sender's pause a plain drop. */
+ * frame arriving after the quiet time counts on its own. Were the rejected
+ * candidate's remaining extent (here 50 - 19 = 31 bytes) kept, the corrupt
+ * frame after it would not be counted: harness live would call a damaged
+ * frame after a sender's pause a plain drop. */
 static void test_flush_ends_extent(void **state)
 {
     uint8_t buf[128];
