@@ -3,11 +3,12 @@
 # time (docs/harness.md, "Time stamps in bursts"): the message names a remedy
 # the format allows, and following it to the letter makes replay run (exit 0)
 # on a walk stamped in bursts, to the trajectory of the same walk stamped
-# evenly. Until 2026-12-01 every format was told to "leave the time column out
-# and give --input-rate N": a .bin has no column to leave out and ignores
-# --input-rate, so do the time-stamped importers (pyshoe, ngimu, an MT Manager
-# export by SampleTimeFine), and a counter's (ipol) only rescales the stamps;
-# a CSV whose time column --columns names met an error when the column was cut.
+# evenly. One remedy for every format, "leave the time column out and give
+# --input-rate N", would be wrong for most: a .bin has no column to leave out
+# and ignores --input-rate, so do the time-stamped importers (pyshoe, ngimu,
+# an MT Manager export by SampleTimeFine), and a counter's (ipol) only rescales
+# the stamps; a CSV whose time column --columns names meets an error when the
+# column is cut.
 set -u
 H=${HARNESS:-bin/harness}
 T=$(mktemp -d)
