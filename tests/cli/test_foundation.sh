@@ -325,8 +325,8 @@ fi
 
 # --- an importer without time stamps says which rate it assumed (docs/robustness.md):
 # an ADIS16405 log (index / 100 Hz) of another rate would otherwise be read at
-# 100 Hz without a word (the unseen review: the OpenShoe 820 Hz reader warned,
-# the ADIS one did not), and so was a square2 log (a sample counter, no time)
+# 100 Hz without a word (as the OpenShoe 820 Hz reader warns, the ADIS one
+# does), and so would a square2 log (a sample counter, no time)
 assumed_rate() { # name file warning
     expect_exit 0 "info on the $1 log" "$H" info "$2"
     expect_err "$3" "the $1 rate is said to be assumed"

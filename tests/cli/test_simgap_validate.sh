@@ -13,7 +13,7 @@ trap 'rm -rf "$T"' EXIT
 FAST="--static-only --duration 60 --rate 50 --seeds 4"
 
 # a static case's held-out tests need 4 twins: with 3 no effect could ever be
-# accepted (simgap refuses it since the simgap review; the validation took it)
+# accepted (simgap refuses it, and the validation must too)
 expect_exit 2 "static cases with 3 twins" "$H" simgap-validate --cases 1 --static-only --duration 60 --rate 50 --seeds 3
 expect_err "at least 4" "static cases with 3 twins: the minimum said"
 
