@@ -770,8 +770,8 @@ awk 'NR == 1 || (NR - 1) % 100 != 50' "$T/ms.csv" >"$T/msgap.csv"
 expect_exit 0 "allan on millisecond stamps with lost samples" "$H" allan "$T/msgap.csv" --no-sim --quiet
 expect_err "30 intervals differ" "lost samples under millisecond stamps are counted"
 # 100 Hz stamps printed to 10 ms (a whole number of resolutions per period: exact intervals) with 30 single samples
-# lost: each 20 ms interval was within 10 % + the 10 ms resolution of 10 ms, and the log was called uniform (no
-# warning); the static review, a 30-minute ADIS16405 cut with four gaps said "1 intervals differ"
+# lost: each 20 ms interval is within 10 % + the 10 ms resolution of 10 ms, and the log must not be called uniform
+# (no warning); so a 30-minute ADIS16405 cut with four gaps does not say "1 intervals differ"
 awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) if (i % 100 != 50) printf "%.2f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n", i / 100, (rand() - 0.5) / 50, (rand() - 0.5) / 50, 9.81 + (rand() - 0.5) / 50, (rand() - 0.5) / 500, (rand() - 0.5) / 500, (rand() - 0.5) / 500 }' > "$T/cs.csv"
 expect_exit 0 "allan on 10 ms stamps at 100 Hz with lost samples" "$H" allan "$T/cs.csv" --no-sim --quiet
 expect_err "30 intervals differ" "single lost samples under stamps of one period's resolution are counted"
@@ -913,8 +913,8 @@ expect_exit 0 "the same log untouched" "$H" allan "$T/touch0.csv" --no-sim --qui
 if grep -q "disturbed" "$T/err"; then fail "an untouched white-noise log called disturbed: $(cat "$T/err")"; else
     pass "an untouched log is not called disturbed"; fi
 # a static log whose time column is in milliseconds (100 Hz read as 0.1 Hz): no rate is a unit error for a static
-# log, which may be slow, but this one passed without a word, tau 1000 times and sigma_v 31.6 times too large (the
-# static review, 30 minutes of ADIS16405 log 1); now a warning with the remedy, the status unchanged (0); the same
+# log, which may be slow, but this one must not pass without a word, tau 1000 times and sigma_v 31.6 times too large
+# (30 minutes of ADIS16405 log 1); a warning with the remedy, the status unchanged (0); the same
 # log in seconds: no such warning
 awk '{ if (NR == 1) print; else { split($0, v, ","); v[1] = v[1] * 1000; out = v[1];
        for (k = 2; k <= 7; k++) out = out "," v[k]; print out } }' "$T/touch0.csv" >"$T/touch_ms.csv"

@@ -131,8 +131,8 @@ expect_err "the time stamps come in bursts (samples that share one stamp: one pe
 # the evenly stamped walk and the bundled one: no such warning
 expect_exit 0 "info on the bundled walk" "$H" info vectors/walk.bin
 grep -q "come in bursts" "$T/err" && fail "info: the bundled walk warned of bursts" || pass "info: the bundled walk, no burst warning"
-# one stamp for each packet of 100 samples, 2 s apart (50 Hz over the log): "the samples are 2 s apart (0.5 Hz): are
-# the time stamps in seconds? (they look like milliseconds, a 500 Hz log: give --units time=ms)" until then too
+# one stamp for each packet of 100 samples, 2 s apart (50 Hz over the log): not "the samples are 2 s apart (0.5 Hz):
+# are the time stamps in seconds? (they look like milliseconds, a 500 Hz log: give --units time=ms)" either
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", int(i / 100) * 2, $2, $3, $4, $5, $6, $7 }' \
     "$T/bw.csv" > "$T/pkt2s.csv"
 expect_exit 0 "info on one stamp per 100 samples, 2 s apart" "$H" info "$T/pkt2s.csv"

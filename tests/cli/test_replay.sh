@@ -835,7 +835,7 @@ expect_err "are the time stamps in nanoseconds? (they look like milliseconds: gi
 # milliseconds: give --units time=ms)") on such a log; the too-fast error needs the log's span to be too short as well
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 16000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_burst_us.csv"
-# (exit 0 until the burst refusal below, which such a log now meets instead: still no time unit)
+# (exit 1 from the burst refusal below, which such a log meets: still no time unit)
 expect_exit 1 "stamps in bursts, read as us" "$H" replay "$T/in_burst_us.csv" --quiet --units time=us
 if grep -q "are the time stamps in" "$T/err"; then fail "stamps in bursts (250 Hz over the log) told they are too fast"; else
     pass "stamps in bursts (250 Hz over the log): no time unit questioned"; fi
