@@ -38,8 +38,8 @@ awk 'BEGIN { for (i = 0; i < 50; i++) { printf "1.0"; for (j = 0; j < 1100; j++)
 expect_exit 1 "series line longer than the reader's buffer" "$H" allan --series "$T/long.txt" --rate 1 --no-sim
 expect_err "long.txt:1: line longer than" "the long line is named"
 # a NUL byte in a series (binary data, e.g. a logger's unwritten blocks): named as the log readers name it,
-# mid-file (it was called a line longer than 1022 characters) and on a last line without a newline (1.0 NUL junk
-# was read as 1.0, exit 0); the numbers before it are analysed
+# mid-file (not called a line longer than 1022 characters) and on a last line without a newline (1.0 NUL junk
+# not read as 1.0, exit 0); the numbers before it are analysed
 awk 'BEGIN { for (i = 1; i <= 30; i++) print i % 7 }' > "$T/nul30.txt"
 { cat "$T/nul30.txt"; printf '1.0\000junk\n4.0\n'; } > "$T/nul.txt"
 expect_exit 1 "a NUL byte mid-series" "$H" allan --series "$T/nul.txt" --rate 1 --no-sim --quiet
@@ -433,8 +433,8 @@ else
 fi
 expect_exit 2 "--deviation with the streaming estimator" "$H" allan vectors/walk.bin --deviation mdev
 expect_exit 2 "unknown --deviation" "$H" allan --series "$T/f.txt" --rate 1 --deviation xdev
-# the JSON's estimator size is the screen's (two estimators per channel at 4 tau per octave; it gave one's
-# size), and null with the exact estimator, which runs none (it gave the streaming size)
+# the JSON's estimator size is the screen's (two estimators per channel at 4 tau per octave; not one's
+# size), and null with the exact estimator, which runs none (not the streaming size)
 expect_exit 0 "streaming estimator size" "$H" allan --series "$T/f.txt" --rate 1 --estimator streaming --no-sim \
     --json "$T/sz.json"
 SZ=$(sed -n 's/.*streaming estimator, \([0-9]*\) bytes per channel.*/\1/p' "$T/out")

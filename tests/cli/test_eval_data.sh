@@ -51,7 +51,7 @@ if grep -q "^| Measurement_2000_1 | - |.*| not run: the filter never aligned: th
     pass "a walk whose time stamps never advance: the reason in its row"; else fail "time stamps: $(grep '^| Measurement' "$T/t0.md")"; fi
 
 # --- with the experiments on, a bad walk is one failed run (its repeats
-# under the experiments' settings are counted apart: they were added to
+# under the experiments' settings are counted apart, not added to
 # failed_runs, up to eight per walk)
 mkdir -p "$T/exp/openshoe_gx2"
 ln -s "$T/still.csv" "$T/exp/openshoe_gx2/Measurement_2000_1_data_inert.txt"
@@ -329,7 +329,7 @@ expect_err "no shared data in $T/emptydir (neither MANIFEST.md nor a data set fo
 
 # a data directory with its MANIFEST.md and set folders but not one walk
 # (a copy not synced): nothing to run on, exit 4, the results file left as
-# it was (it was overwritten with "no data" everywhere, exit 0)
+# it was (not overwritten with "no data" everywhere, exit 0)
 mkdir -p "$T/nowalk/openshoe_gx2" "$T/nowalk/ipol_gait_xsens"
 echo "# Real data for footnav" > "$T/nowalk/MANIFEST.md"
 echo "kept" > "$T/nowalk.md"
@@ -448,9 +448,9 @@ if [ -n "$D" ]; then
     expect_exit 0 "eval: truth rows with junk in a field" "$H" eval --no-experiments --no-plots --data "$T/junk" --out "$T/junk.md"
     if grep -q "^| junk | $((n - 5)) | 4[0-9]\.[0-9] | .*| 5 unreadable truth rows ignored |" "$T/junk.md"; then
         pass "truth rows with junk in a field are unreadable rows, noted"; else fail "junk truth: $(grep '^| junk' "$T/junk.md")"; fi
-    # a NUL byte inside a row is no long line: the row after it was taken
-    # for the rest of a long one and lost without a word (ccf646e's first
-    # test of a long line, the missing newline, which a NUL also gives)
+    # a NUL byte inside a row is no long line: the row after it must not be
+    # taken for the rest of a long one and lost without a word (as a long
+    # line told by a missing newline, which a NUL also gives, would be)
     ln -s "${FP}_imu.csv" "$J/nul_imu.csv"
     awk 'NR == 4 { printf "%s%cjunk\n", $0, 0; next } { print }' "${FP}_strides_gcp.csv" > "$J/nul_strides_gcp.csv"
     expect_exit 0 "eval: a truth row with a NUL byte" "$H" eval --no-experiments --no-plots --data "$T/junk" --out "$T/junk.md"
@@ -561,9 +561,9 @@ if [ -n "$D" ]; then
         pass "ipol: events in counter values, not packets since the file's first"; else fail "ipol first packets lost: $(grep '^| 1-1 | left' "$T/ipfirst.md")"; fi
     # several expert swings close together: 1-1's left swing [641, 687]
     # annotated as three, the middle one with the right foot in the air too
-    # (left out). The one detected swing there detects one of them: it was
-    # counted twice (16 detected, 0 missed), since leaving the middle one
-    # out cleared the mark that the first had taken it
+    # (left out). The one detected swing there detects one of them, not
+    # counted twice (16 detected, 0 missed), as leaving the middle one out
+    # could clear the mark that the first had taken it
     mkdir -p "$T/ipdbl/ipol_gait_xsens"
     for f in lf rf; do ln -s "$D/ipol_gait_xsens/1-1_$f.txt" "$T/ipdbl/ipol_gait_xsens/"; done
     sed 's/\[641, 687\]/[641, 660], [661, 665], [666, 687]/; s/"RightFootEvents": \[/"RightFootEvents": [[661, 665], /' \

@@ -28,7 +28,7 @@ grep -q "coarser than the" "$T/out" && fail "a note on coarse stamps without a g
     pass "no coarse-stamp note when no interval counts as a gap"
 # the same samples on a time axis of half the length (796 Hz, 1.256 ms) printed to the millisecond: intervals of
 # 1 and 2 ms, and the navigator counts each 2 ms one as a gap (above 1.5 periods) although none is lost; the summary
-# says so (it printed thousands of gaps without a word)
+# says so (not thousands of gaps without a word)
 awk -F, 'NR == 1 { print; next } { $1 = sprintf("%.3f", $1 / 2); print }' OFS=, "$T/walk_full.csv" > "$T/walk_half_ms.csv"
 expect_exit 0 "796 Hz stamped to the millisecond" "$H" replay "$T/walk_half_ms.csv"
 expect_out "count as gaps although no sample is lost" "gaps from coarse stamps are explained"
@@ -464,8 +464,8 @@ fi
 expect_exit 2 "--json - with --out -" "$H" replay vectors/walk.bin --out - --json -
 expect_err "cannot both write to standard output" "--json - and --out - refused"
 if [ -e ./- ]; then fail "a file named '-' was created"; rm -f ./-; else pass "no file named '-'"; fi
-# the parser takes --opt=VALUE as --opt VALUE: --json=- is --json - (it was
-# refused with "standard output not claimed", exit 3, after the summary had
+# the parser takes --opt=VALUE as --opt VALUE: --json=- is --json - (not
+# refused with "standard output not claimed", exit 3, after the summary has
 # gone to standard output), and --out=- collides with --json - as --out - does
 expect_exit 0 "info --json=-" "$H" info vectors/walk.bin --json=-
 if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['samples']==16539" "$T/out"; then
@@ -936,7 +936,7 @@ awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2
 expect_exit 1 "accelerometer in mg" "$H" replay "$T/in_mg.csv" --quiet --json "$T/in_mg.json"
 # the remedy: --units accel=mg (not "multiply by 0.00980665")
 expect_err "not in m/s^2: in mg? (give --units accel=mg)" "a log in mg is named as such, the --units item the remedy"
-# in the JSON too, as info's units_problem: the error's message without the path (it had no trace of it)
+# in the JSON too, as info's units_problem: the error's message without the path (not left without a trace of it)
 json "$T/in_mg.json" 'j["units_problem"].startswith("the accelerometer averages |f| = ") and "in mg? (give --units accel=mg)" in j["units_problem"]' &&
     pass "replay --json: units_problem names mg" || fail "replay --json of a log in mg: units_problem $(grep units_problem "$T/in_mg.json")"
 expect_exit 0 "info on a log in mg" "$H" info "$T/in_mg.csv"
@@ -969,8 +969,8 @@ expect_exit 0 "info on a log in mg, read with accel=g" "$H" info "$T/in_mg.csv" 
 expect_out "units       NOT SI: .*not in m/s^2 but in mg (read as g by --units accel=g: give --units accel=mg)" \
     "info: mg read with accel=g named, the remedy naming accel=mg"
 # a log already in m/s^2 read with --units accel=g (9.8 times too large once read as g): the marks judged the
-# values as read, so replay called it "raw counts? (scale them by the sensor's sensitivity)" and info said
-# only "not in m/s^2", of a file that is; it is now named as m/s^2 read as g, the remedy leaving accel=g out
+# values as read would make replay call it "raw counts? (scale them by the sensor's sensitivity)" and info say
+# only "not in m/s^2", of a file that is; it is named as m/s^2 read as g, the remedy leaving accel=g out
 expect_exit 1 "accelerometer in m/s^2, read with accel=g" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet \
     --units accel=g --out "$T/msg_as_g.csv"
 expect_err "the log is in m/s^2 already? (read as g by --units accel=g: leave accel=g out) (docs/log-format.md)" \
@@ -1638,10 +1638,10 @@ expect_exit 0 "replay at 1 kHz without --strides" "$H" replay "$T/sw_1k.bin" --q
 if grep -q "gait events" "$T/err"; then fail "the event searches warned about without --strides"; else pass "no event-search warning without --strides"; fi
 expect_exit 0 "replay --strides at 1 kHz resampled to 400 Hz" "$H" replay "$T/sw_1k.bin" --rate 400 --strides "$T/sw_400.csv" --quiet
 if grep -q "gait events" "$T/err"; then fail "the event searches warned about at 400 Hz: $(cat "$T/err")"; else pass "no event-search warning at 400 Hz"; fi
-# replay computed the searches' reach again, in double, beside the core's set_rate, whose float rounds otherwise at
-# a half: min_stance_s = 0.021 at 500 Hz is 10.4999998 samples in double (10), 10.5 in float, which the core rounds
-# to 11, so its foot-strike search holds 160 - 11 = 149 samples (298 ms), cut; replay counted 150 and said nothing.
-# It asks the core now (hx_nav.c, event_reach). (The float build, which the CLI tests run.)
+# replay must not compute the searches' reach again, in double, beside the core's set_rate, whose float rounds
+# otherwise at a half: min_stance_s = 0.021 at 500 Hz is 10.4999998 samples in double (10), 10.5 in float, which the
+# core rounds to 11, so its foot-strike search holds 160 - 11 = 149 samples (298 ms), cut, where replay would count
+# 150 and say nothing. It asks the core (hx_nav.c, event_reach). (The float build, which the CLI tests run.)
 "$H" sim --motion walk --duration 12 --rate 500 --profile none --out "$T/sw_500.bin" >/dev/null 2>&1 ||
     fail "sim --rate 500 for the event searches"
 expect_exit 0 "replay --strides at 500 Hz, min_stance_s 0.021" "$H" replay "$T/sw_500.bin" --strides "$T/sw_500.csv" \

@@ -104,8 +104,8 @@ json "$T/jt_flat.json" "len($sel) == 1 and $sel[0][\"held_out_within_noise\"] is
 # an ideal 300 Hz clock whose stamps are written in milliseconds: every
 # interval is 3 or 4 ms (a third of them 4), spread sqrt(p (1 - p)) ms =
 # 0.471 ms with p = frac(3.333) — the rounding's, not jitter. Against the
-# average rounding res/sqrt(6) = 0.408 ms it was "jitter, 38.6 sigma" and
-# the verdict "explained: jitter (stamp_s 0.000167 s)" on a clean log
+# average rounding res/sqrt(6) = 0.408 ms it would be "jitter, 38.6 sigma"
+# and the verdict "explained: jitter (stamp_s 0.000167 s)" on a clean log
 "$H" sim --motion stand:120 --rate 300 --profile mtx --seed 4 --out "$T/ms.csv" >/dev/null 2>&1 || fail "sim 300 Hz"
 awk -F, 'BEGIN { OFS = "," } NR > 1 { $1 = sprintf("%.3f", $1) } { print }' "$T/ms.csv" > "$T/ms3.csv"
 "$H" simgap "$T/ms3.csv" --seeds 6 --json "$T/ms3.json" > "$T/ms3.out" 2>&1
@@ -114,7 +114,7 @@ json "$T/ms3.json" 'j["timing"]["stamp_resolution_s"] == 0.001 and j["timing"]["
 # 500 samples dropped in one place in the held-out middle: the fit segment
 # has none, so the fitted rate is that of the ideal clock, and the held-out
 # count's z after fitting is the z before it (both Poisson, capped at 40);
-# it was 40 before and +2235.8 after, a normal approximation without the cap
+# not 40 before and +2235.8 after, a normal approximation without the cap
 "$H" sim --motion stand:120 --rate 100 --profile mtx --seed 4 --out "$T/dr.csv" >/dev/null 2>&1 || fail "sim dropout base"
 awk 'NR < 5502 || NR > 6001' "$T/dr.csv" > "$T/dr5.csv"
 "$H" simgap "$T/dr5.csv" --seeds 6 --json "$T/dr5.json" > "$T/dr5.out" 2>&1
@@ -143,8 +143,8 @@ json "$T/tb.json" "$b[\"ay\"][\"ar1_tau_at_max\"] and $b[\"ay\"][\"ar1_tau_s\"] 
 
 # a walk with a 40 s stand: the navigation windows in which no stance
 # begins carry no first update; they are placeholders outside G, said so
-# in the summary and null in the JSON (they were points of value 1e-30 with
-# z 0 that diluted G)
+# in the summary and null in the JSON (not points of value 1e-30 with z 0
+# that dilute G)
 "$H" sim --motion stand:5,walk:15,stand:40,walk:15 --profile mtx --seed 3 --out "$T/pw.csv" >/dev/null 2>&1 || fail "sim walk with a stand"
 "$H" simgap "$T/pw.csv" --seeds 6 --json "$T/pw.json" > "$T/pw.out" 2>&1
 n_empty=$(grep -c "window .*no stance begins in it (a stand), not compared" "$T/pw.out")
@@ -432,9 +432,9 @@ expect_exit 0 "static log stamped in bursts, the .bin's stated 50 Hz" "$H" simga
 # "leave the time column out"; tests/cli/test_bursts.sh follows it)
 expect_err "100 Hz; the taus and frequencies are read at 50 Hz, the rate the file states, which the samples' span does not keep: convert it to CSV without the time column (bin/harness convert LOG out.csv; cut -d, -f2- out.csv > in.csv) and give in.csv --input-rate 100 (docs/harness.md, \"Time stamps in bursts\")" \
     "a static log stamped in bursts at a stated rate the span does not keep: said, the conversion and --input-rate 100 named"
-# a walk stamped in bursts (vectors/walk.bin, 400 Hz, in packets of 4 samples 5 us apart every 10 ms) was read at
+# a walk stamped in bursts (vectors/walk.bin, 400 Hz, in packets of 4 samples 5 us apart every 10 ms) would be read at
 # 200 kHz, detected as static (its one-second windows 200,000 samples long) and analysed as one, exit 0; with one
-# stamp per packet it was navigated and twinned at 100 Hz. Both are now refused as replay refuses stamps in bursts,
+# stamp per packet navigated and twinned at 100 Hz. Both are refused as replay refuses stamps in bursts,
 # before the diagnosis, with --walk too; the remedy (no time column, --input-rate 400) is diagnosed as a 400 Hz walk
 "$H" convert vectors/walk.bin "$T/bw.csv" >/dev/null 2>&1 || fail "convert the walk to CSV (bursts)"
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
@@ -604,11 +604,11 @@ expect_exit 0 "walk with a stuck gx" "$H" simgap "$T/wstk.csv" --quiet --seeds 4
 json "$T/wstk.json" 'all(s["effect"] != "saturation" for s in j["navigation"]["selected"])' &&
     pass "a stuck channel is not saturation" || fail "stuck walk channel: $(cat "$T/pyerr"; grep verdict "$T/out")"
 # progress (not a terminal: a line per tenth of the work, after the first
-# second): never backwards, and 100 % only at the end. It was reached a third
-# into a one-hour log's run and then stayed silent (the estimate counted four
+# second): never backwards, and 100 % only at the end, not reached a third
+# into a one-hour log's run and then silent (an estimate counting four
 # candidates per channel; forward selection simulates up to the prescreen's
 # three + lattice + line per step and fold, three steps); on two minutes of
-# the ADIS16405 it was printed at 3.2 s of 4.0.
+# the ADIS16405 such an estimate prints it at 3.2 s of 4.0.
 progress_ok() { # progress_ok STDERR-FILE
     "$PY" - "$1" <<'PY'
 import re, sys
@@ -679,7 +679,7 @@ expect_exit 0 "walk with scale" "$H" simgap "$T/ws.csv" --quiet --seeds 6 --json
 cp "$T/out" "$T/ws.out"
 json "$T/ws.json" '(s := j["navigation"]["selected"][0])["effect"] == "scale" and (p := s["params"][0])["channel"] == "gz" and abs(p["value"] - 0.4) < 0.04 and s["explained"] >= 0.7' &&
     pass "walk: scale on gz, the sensor's value, held-out excess explained" || fail "walk scale JSON: $(cat "$T/pyerr")"
-# the walk's gap locations are in the JSON's locations[] (they were printed
+# the walk's gap locations are in the JSON's locations[] (not printed
 # only), the n-frame axis named; every candidate has indistinguishable[] and
 # trajectory_value (null for a family that is not linear)
 json "$T/ws.json" 'len(j["locations"]) == sum(1 for l in open(sys.argv[1].replace(".json", ".out")) if l.startswith("  gap: ")) > 0 and all(l["domain"] in ("nav", "lattice") and l["segment"] == "full" for l in j["locations"]) and all(l["axis"] in ("x", "y", "z") for l in j["locations"] if l.get("kind") == "axis")' &&
