@@ -57,8 +57,8 @@ ipol "$T/low.txt" "1e-300 Hz"
 expect_exit 1 "ipol: a rate of 1e-300 Hz" "$H" info "$T/low.txt" --from ipol
 expect_err "1e-300 Hz is outside \[0.001, 1e+06)" "ipol: the rate out of range said"
 
-# --- replay, an input that stops before its first sample: the error said
-# "(frames before it were written)" with no frame before it (a header-only
+# --- replay, an input that stops before its first sample: the error does not
+# say "(frames before it were written)" with no frame before it (a header-only
 # CSV, a .bin header without records, a .bin whose first record is junk).
 printf 't,ax,ay,az,gx,gy,gz\n' >"$T/head.csv"
 expect_exit 1 "replay of a header without samples" "$H" replay "$T/head.csv" --quiet --out "$T/head_traj.csv"
@@ -69,11 +69,11 @@ printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,x,0,9.8,0,0,0\n' >"$T/one.csv
 expect_exit 1 "replay of a log that stops after its first sample" "$H" replay "$T/one.csv" --quiet --out "$T/one_traj.csv"
 expect_err "one.csv:3: column 2 ('x') is not a number (frames before it were written)" "replay: frames before the error said"
 
-# --- an output named .gz: footnav writes no gzip. convert and sim wrote
+# --- an output named .gz: footnav writes no gzip. convert and sim write
 # OUT.csv.gz as plain CSV and OUT.bin.gz as plain CSV too (a name not ending
-# in .bin is CSV), exit 0 without a word: gzip -d then fails on it. Now a
-# warning says so (the file is still written as before, and every command
-# reads it by its content).
+# in .bin is CSV), and gzip -d then fails on it, so this must not pass with
+# exit 0 without a word: a warning says so (the file is still written, and
+# every command reads it by its content).
 expect_exit 0 "convert to x.csv.gz" "$H" convert vectors/walk.bin "$T/x.csv.gz"
 expect_err "^harness convert: warning: $T/x.csv.gz: written uncompressed (footnav writes no gzip" "convert: an uncompressed .gz said"
 expect_exit 0 "convert to x.bin.gz" "$H" convert vectors/walk.bin "$T/x.bin.gz"
@@ -88,9 +88,9 @@ expect_exit 0 "convert to x.csv: no .gz warning" "$H" convert vectors/walk.bin "
 grep -q "warning" "$T/err" && fail "convert to x.csv warned: $(cat "$T/err")" || pass "convert to x.csv: no warning"
 
 # --- a .bin header's text (sensor, axis note, source) with control
-# characters: info printed them raw, so a sensor name "x<LF>samples 1" forged
-# a line of info's report and an escape sequence reached the terminal. They
-# are now read as '?', with a warning.
+# characters: printed raw by info, a sensor name "x<LF>samples 1" would forge
+# a line of info's report and an escape sequence reach the terminal. They
+# are read as '?', with a warning.
 "${PY:-/usr/bin/python3}" -c 'import struct, sys, zlib
 b = bytearray(open(sys.argv[1], "rb").read())
 b[24:56] = b"x\nsamples     1\x1b[2J".ljust(32, b"\0")
@@ -108,9 +108,9 @@ expect_err "mt.txt: the ProductCode holds control characters (read as '?')" "inf
 expect_exit 0 "info of vectors/walk.bin: no control-character warning" "$H" info vectors/walk.bin
 grep -q "control characters" "$T/err" && fail "vectors/walk.bin warned of control characters" || pass "vectors/walk.bin: no such warning"
 
-# --- convert --start/--end over an input with a bad line: the error counted
-# the samples read as written ("the 200 samples before it were written" when
-# --start 2.5 kept none of them and the output held its header alone).
+# --- convert --start/--end over an input with a bad line: the error does not
+# count the samples read as written ("the 200 samples before it were written"
+# when --start 2.5 kept none of them and the output holds its header alone).
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 300; i++) printf "%.2f,%s,0,9.8,0,0,0\n", i / 100, i == 200 ? "nan" : "0.01" }' >"$T/nan200.csv"
 expect_exit 1 "convert --start 2.5 of a log with NaN at 2 s" "$H" convert "$T/nan200.csv" "$T/w0.csv" --start 2.5
 expect_err "(the 0 samples of the window before it were written, of 200 read)" "convert: none of the window written, said"
@@ -143,9 +143,9 @@ expect_exit 0 "the remedy followed" "$H" info "$T/adis_t.csv" --from csv --colum
 expect_out "^rate        200.000 Hz" "the remedy reads the 200 Hz stamps"
 
 # --- an output that cannot be written: the error gives the reason, as
-# convert's and sim's do. replay's --out said only "cannot write DIR" (a
-# directory, a missing directory), and a JSON that failed as it was written
-# (a full disk) "cannot write FILE".
+# convert's and sim's do: not only "cannot write DIR" for replay's --out (a
+# directory, a missing directory), nor "cannot write FILE" for a JSON that
+# fails as it is written (a full disk).
 expect_exit 3 "replay --out a directory" "$H" replay vectors/walk.bin --quiet --out "$T"
 expect_err "^harness replay: error: cannot write $T (Is a directory)" "replay --out: the reason given"
 expect_exit 3 "replay --out in a missing directory" "$H" replay vectors/walk.bin --quiet --out "$T/no/such/t.csv"
@@ -158,9 +158,9 @@ fi
 
 # --- replay of a log whose time stamps come in pairs (intervals of 0.1 ms
 # and 9.9 ms by turns: a logger stamping each pair of 200 Hz samples as it
-# reads them). info, allan and psd warned of the bursts; replay ran without
-# a word, its stance detector at 101 Hz (1 / the median of its first 32
-# intervals) with a 3-sample window where 200 Hz gives 5. It now warns as
+# reads them). info, allan and psd warn of the bursts; replay must not run
+# without a word, its stance detector at 101 Hz (1 / the median of its first
+# 32 intervals) with a 3-sample window where 200 Hz gives 5. It warns as
 # they do, with the detector's rate and the --input-rate remedy.
 expect_exit 0 "sim: a 200 Hz walk" "$H" sim --duration 20 --rate 200 --out "$T/w200.csv"
 awk -F, 'NR == 1 { print; next } { k = NR - 2; $1 = sprintf("%.4f", int(k / 2) * 0.01 + (k % 2) * 0.0001); print }' OFS=, \
@@ -182,9 +182,9 @@ expect_exit 0 "replay of the evenly stamped walk" "$H" replay "$T/w200.csv" --qu
 grep -q "bursts" "$T/err" && fail "replay of an even log warned: $(cat "$T/err")" || pass "replay: no bursts warning on evenly stamped stamps"
 
 # --- a .bin whose header states a rate its stamps contradict (1000 Hz
-# stated, stamps 5 ms apart): info printed the stated rate without a word,
-# and its search for the rest took windows of 1000 samples, 5 s of the
-# 200 Hz log. A warning now names both rates and the remedy; a stated rate
+# stated, stamps 5 ms apart): info must not print the stated rate without a
+# word, as its search for the rest takes windows of 1000 samples, 5 s of the
+# 200 Hz log. A warning names both rates and the remedy; a stated rate
 # within 10 % of the stamps' is not questioned.
 expect_exit 0 "convert: the 200 Hz walk as a .bin" "$H" convert "$T/w200.csv" "$T/w200.bin"
 bin_rate "$T/w200.bin" "$T/r1000.bin" 1000
@@ -396,12 +396,12 @@ json "$T/zwjunk.json" '[j[k] for k in ("duration_s", "distance_m", "strides")] =
 
 # --- a file of another, binary format given as a log (a plot, a zip): no
 # importer's header is found and it is read as CSV, whose error on line 1
-# was "header has no column 't' ... give --from FORMAT for another format,
-# or give its names and units with --columns and --units" (a PNG of
-# docs/img, exit 1): advice no such file can follow. Now it is named as
-# binary data, neither a .bin nor text (exit 1 as before). So is one given
-# to allan as a --series of numbers (the same helper, hx_head_not_text),
-# which said "plot.png:2: not a number" (its first line taken for a header).
+# would be "header has no column 't' ... give --from FORMAT for another
+# format, or give its names and units with --columns and --units" (a PNG of
+# docs/img, exit 1): advice no such file can follow. It is named as binary
+# data, neither a .bin nor text (exit 1). So is one given to allan as a
+# --series of numbers (the same helper, hx_head_not_text), not
+# "plot.png:2: not a number" (its first line taken for a header).
 cp "$(ls docs/img/*.png | head -n 1)" "$T/plot.png"
 printf 'PK\003\004\024\000\006\000\010\000\000\000!\000' >"$T/book.xlsx"
 for f in plot.png book.xlsx; do
@@ -440,10 +440,10 @@ expect_exit 1 "info of a text CSV of no known layout" "$H" info "$T/other2.csv"
 expect_err "give its names and units with --columns and --units" "a text CSV of no known layout: --columns advised"
 
 # --- '-' given to an output option that cannot write to standard output:
-# `replay --plot -` wrote a PNG named '-' (exit 0), as did allan's, psd's
-# (a directory '-'), montecarlo's and simgap's --plot, allan's --profile,
-# simgap-validate's --markdown and eval's --plots, and live took --plot -
-# and --record -; sim refused its --truth - already. Now each is a usage
+# not a PNG named '-' (exit 0) from `replay --plot -`, nor from allan's,
+# psd's (a directory '-'), montecarlo's and simgap's --plot, allan's
+# --profile, simgap-validate's --markdown and eval's --plots, nor live's
+# --plot - and --record -, as sim's --truth - is refused. Each is a usage
 # error naming the option, exit 2, before anything is read or written (run
 # in an empty directory, which stays empty).
 HA=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")

@@ -35,8 +35,8 @@ expect_exit 2 "--param tilt_sd_deg=41 refused" "$H" replay vectors/walk.bin --qu
 expect_err "tilt_sd_deg = 41 deg is above 40.5 deg" "--param tilt_sd_deg=41: named"
 expect_exit 0 "--param yaw_sd_deg=40 accepted" "$H" replay vectors/walk.bin --quiet --param yaw_sd_deg=40
 
-# --- `harness help CMD` is CMD's help (it printed the list of commands, and
-# `harness help nosuch` exited 0)
+# --- `harness help CMD` is CMD's help (not the list of commands), and
+# `harness help nosuch` does not exit 0
 expect_exit 0 "harness help" "$H" help
 expect_out "^commands:" "harness help lists the commands"
 expect_exit 0 "harness help replay" "$H" help replay
@@ -56,7 +56,7 @@ for w in "help help" "help --help" "--help help" "help -h"; do
     expect_out "^commands:" "harness $w lists the commands"
 done
 # the list of commands on a full disk is a write error, as every command's
-# output is (it exited 0)
+# output is (not exit 0)
 if [ -w /dev/full ]; then
     "$H" --help >/dev/full 2>"$T/err"; rc=$?
     [ "$rc" -eq 3 ] && pass "harness --help >/dev/full exits 3" || fail "harness --help >/dev/full: exit $rc, expected 3"
@@ -241,8 +241,8 @@ for c in allan psd; do
 done
 
 # --- replay checks --from and --input-rate as every command that reads a log
-# (hx_check_input_opts): it took --from auto, which the others refuse, and
-# worded the error its own way
+# (hx_check_input_opts): it refuses --from auto, as the others do, and words
+# the error their way
 for c in info replay psd allan simgap; do
     expect_exit 2 "$c --from auto refused" "$H" $c vectors/walk.bin --from auto
     expect_err "unknown input format 'auto' (known: bin, csv" "$c --from auto: the shared message"

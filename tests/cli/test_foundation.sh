@@ -43,26 +43,27 @@ expect_exit 2 "bad --input-rate" "$H" info vectors/walk.bin --input-rate -3
 expect_exit 2 "unknown --from" "$H" info vectors/walk.bin --from nope
 expect_err "unknown input format 'nope'" "--from error names the format"
 # the same for every command that reads a log (docs/harness.md, "Conventions":
-# a bad command line is exit 2; allan and psd read the log first and exited 1)
+# a bad command line is exit 2; allan and psd too, not reading the log first
+# and exiting 1)
 for c in info replay allan psd simgap; do
     expect_exit 2 "$c: unknown --from" "$H" $c vectors/walk.bin --from nope
     expect_exit 2 "$c: bad --input-rate" "$H" $c vectors/walk.bin --input-rate abc
 done
 expect_exit 2 "convert: unknown --from" "$H" convert vectors/walk.bin "$T/c.csv" --from nope
-# a command-line error is said before eval looks for its data (it exited 4,
-# "no shared data", and the usage error came only once the data were there)
+# a command-line error is said before eval looks for its data (not exit 4,
+# "no shared data", with the usage error only once the data are there)
 expect_exit 2 "eval --plots with --no-plots, without data" "$H" eval --data "$T/nodata" --plots "$T/x" --no-plots
 # --input-rate gives the rate of a log without time stamps: on a .bin it
-# replaced the header's rate, and psd analysed the 398 Hz walk as 100 Hz
-# (150 Hz answered 50 Hz); now it is ignored with a warning, as on a
-# time-stamped text log, where it was ignored without one
+# must not replace the header's rate, with psd analysing the 398 Hz walk as
+# 100 Hz (150 Hz answered 50 Hz); it is ignored with a warning, as on a
+# time-stamped text log, where it is not ignored without one either
 "$H" psd vectors/walk.bin --json "$T/psd0.json" >/dev/null 2>&1
 expect_exit 0 "psd of a .bin with --input-rate" "$H" psd vectors/walk.bin --input-rate 100 --json "$T/psd1.json"
 expect_err "input-rate ignored: the bin format has time stamps" "--input-rate on a .bin is said to be ignored"
 json "$T/psd1.json" "j['rate_hz'] == json.load(open('$T/psd0.json'))['rate_hz'] and j['result']['fs_hz'] == json.load(open('$T/psd0.json'))['result']['fs_hz']" &&
     pass "--input-rate leaves a .bin's rate and answer alone" || fail "--input-rate changed a .bin's rate: $(grep -m1 rate_hz "$T/psd1.json")"
 # a log of mostly duplicated stamps: the median interval is that of the
-# intervals that advance (it read 0 ms, and every real interval was a gap)
+# intervals that advance (not 0 ms, with every real interval a gap)
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.02,0,0,9.8,0,0,0\n' > "$T/dups.csv"
 expect_exit 0 "info on a log of mostly duplicates" "$H" info "$T/dups.csv"
 expect_out "interval    median 10.000 ms" "the median interval skips the duplicates"
@@ -243,7 +244,7 @@ fi
 expect_exit 0 "convert bin->csv" "$H" convert vectors/walk.bin "$T/a.csv"
 expect_exit 0 "convert csv->bin" "$H" convert "$T/a.csv" "$T/b.bin"
 expect_exit 0 "convert bin->csv (2)" "$H" convert "$T/b.bin" "$T/c.csv"
-# the extension in any case: OUT.BIN is a .bin (it was written as CSV)
+# the extension in any case: OUT.BIN is a .bin (not written as CSV)
 expect_exit 0 "convert csv->BIN" "$H" convert "$T/a.csv" "$T/B.BIN"
 if cmp -s "$T/b.bin" "$T/B.BIN"; then pass "OUT.BIN is written as .bin"; else fail "OUT.BIN is not the .bin"; fi
 if cmp -s "$T/a.csv" "$T/c.csv"; then pass "csv -> bin -> csv identical"; else fail "round trip changed values"; fi
@@ -472,8 +473,8 @@ expect_err "empty.csv: empty file" "empty file said"
 expect_exit 3 "unwritable output" "$H" convert vectors/walk.bin /nonexistent-dir/x.bin
 expect_err "cannot create" "unwritable output said"
 # a write that fails midway (a full disk, a closed pipe) is one error line
-# with its reason: convert printed "write failed" and then, on closing,
-# "write failed (No space left on device)" for the same failure
+# with its reason: convert does not print "write failed" and then, on
+# closing, "write failed (No space left on device)" for the same failure
 if [ -w /dev/full ]; then
     for o in "" "--rate 100"; do
         expect_exit 3 "convert $o to a full disk" "$H" convert vectors/walk.bin /dev/full --to bin $o
@@ -503,8 +504,8 @@ expect_exit 2 "convert --rate 1e-9" "$H" convert vectors/walk.bin "$T/rtiny.csv"
 if [ -e "$T/rtiny.csv" ] && grep -qi nan "$T/rtiny.csv"; then fail "convert --rate 1e-9 wrote NaN"; else pass "convert --rate 1e-9 writes no NaN"; fi
 expect_exit 2 "convert --rate inf" "$H" convert vectors/walk.bin "$T/rinf.csv" --rate inf
 # the resampled samples carry a running index, not the sensor's counter: the
-# .bin was flagged "seq is the sensor's own counter", and info read 0 counter
-# drops from a log whose counter had lost 10 packets
+# .bin is not flagged "seq is the sensor's own counter", which would make info
+# read 0 counter drops from a log whose counter had lost 10 packets
 awk 'BEGIN { print "Acquisition frequency: 100 Hz"; print "PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z";
     for (k = 0; k < 1000; k++) if (k < 500 || k >= 510) printf "%d\t0.1\t0\t9.8\t0.001\t0\t0\n", k }' > "$T/drops.txt"
 expect_exit 0 "info on a counter log with 10 drops" "$H" info "$T/drops.txt"
@@ -606,7 +607,7 @@ for c in info replay allan psd simgap; do
     expect_exit 2 "$c: --units on a .bin" "$H" $c vectors/walk.bin --units accel=g
     expect_err "--units applies to the interchange CSV (format csv), not to the bin format" "$c: --units on a .bin: option and format named"
 done
-# a .bin is no text: not told to give --from csv, which reads it as "a NUL byte in the text" (it was told to)
+# a .bin is no text: not told to give --from csv, which reads it as "a NUL byte in the text"
 if grep -q -- "--from csv" "$T/err"; then fail "a .bin with --units told to give --from csv"; else
     pass "a .bin with --units not told to give --from csv"; fi
 expect_exit 1 "--from csv --units on a .bin" "$H" info vectors/walk.bin --from csv --units accel=g
@@ -696,8 +697,8 @@ expect_out "rate        400.000 Hz (nominal)" "counter time at --input-rate"
 # MT Manager does but counts SampleTimeFine in us and writes Gyr_* in deg/s
 # (DOT user manual, XD0502P, 4.2.5), and names its orientation Euler_X..Z or
 # Quat_W..Z (MT Manager: Roll, Pitch, Yaw, Quat_q0..q3). Read as an export
-# it was a walk 100 times too slow, hinted 'divide by 1000'; it is refused
-# as before, and the CSV remedy it names reads it at its rate.
+# it would be a walk 100 times too slow, hinted 'divide by 1000'; it is
+# refused, and the CSV remedy it names reads it at its rate.
 awk -F, 'NR > 1 { split($1, p, "."); us = p[1] * 1000000 + substr(p[2] "000000000", 1, 6)
     printf "%d,%d,0.1,0.2,0.3,%s,%s,%s,%.6f,%.6f,%.6f\n", NR - 2, us + 12345678, $2, $3, $4, $5 * 57.29578, $6 * 57.29578, $7 * 57.29578 }
     BEGIN { print "PacketCounter,SampleTimeFine,Euler_X,Euler_Y,Euler_Z,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z" }' "$T/xw.csv" >"$T/xdot.csv"
@@ -729,8 +730,8 @@ expect_exit 0 "DOT CSV of Acc/Gyr/Mag read with the remedy" "$H" info "$T/xdotm.
     --columns t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s
 expect_out_re "^rate +398\.[0-9]+ Hz" "DOT CSV of Acc/Gyr/Mag read with the remedy: the walk's rate"
 expect_out_re "^duration +41\.[0-9]+ s" "DOT CSV of Acc/Gyr/Mag read with the remedy: the walk's duration"
-# given with --from mtmanager it was read in ticks, as asked (3.98 Hz, the gyro's deg/s as rad/s; info exit 0, and
-# replay's units error hinted 'divide by 1000', which --units cannot apply to this format): now the same refusal;
+# given with --from mtmanager it is not read in ticks, as asked (3.98 Hz, the gyro's deg/s as rad/s; info exit 0, and
+# replay's units error hinting 'divide by 1000', which --units cannot apply to this format): the same refusal;
 # an export whose '//' lines were cut is read with one put back
 expect_exit 1 "DOT CSV of Acc/Gyr/Mag with --from mtmanager: refused the same" "$H" info "$T/xdotm.csv" --from mtmanager
 expect_err "xdotm.csv: SampleTimeFine steps by 2511: 3.982 Hz in 100 us ticks, 398.2 Hz in us, no '//' line: $dot_remedy (if MT Manager's, its '//' lines cut: put one back before the header)" \
@@ -742,8 +743,8 @@ if grep -q "divide by 1000" "$T/err"; then fail "DOT CSV, replay --from mtmanage
 expect_exit 0 "the same file with a '//' line: read as an export, in ticks" "$H" info "$T/xdotm_pre.csv"
 expect_out_re "^rate +3\.98[0-9] Hz" "a '//' line: 100 us ticks"
 # a DOT logging at 10 Hz or 1 Hz (its rates: 1, 4, 10, 12, 15, 20, 30, 60, 120 Hz): 0.1 and 0.01 Hz in ticks, 10 and
-# 1 Hz in us, below the 20 Hz an IMU's band starts at, so it was read as an export 100 times too slow (0.1 Hz, exit
-# 0); a header of DOT's own columns with no '//' line is now refused at any DOT rate (every 40th and 400th sample of
+# 1 Hz in us, below the 20 Hz an IMU's band starts at, so it must not be read as an export 100 times too slow (0.1 Hz,
+# exit 0); a header of DOT's own columns with no '//' line is refused at any DOT rate (every 40th and 400th sample of
 # the walk, stamped 100,000 and 1,000,000 us apart)
 for r in 10 1; do
     awk -F, -v k=$((400 / r)) -v st=$((1000000 / r)) 'NR > 1 && (NR - 2) % k == 0 { i = (NR - 2) / k

@@ -108,7 +108,7 @@ expect_out "the band from 0 Hz holding 99.5 % of the total power" "--threshold 0
 expect_out_re "^  lowest usable sampling frequency: [0-9]+ Hz \(accelerometers and gyroscopes alike; 99\.5 % of the power, multiples of 50 Hz\)" \
     "--threshold 0.995: the answer line says 99.5 %"
 ! grep -q "100 %" "$T/out" && pass "--threshold 0.995: no '100 %'" || fail "--threshold 0.995: '100 %' printed"
-# every channel constant: no band anywhere, so no answer (it printed 'lowest usable sampling frequency: 0 Hz' with
+# every channel constant: no band anywhere, so no answer (not 'lowest usable sampling frequency: 0 Hz' with
 # fs_hz 0 and exit 0); the tables are still written and the JSON's answer is null
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3f,0.1,0.2,9.81,0.01,0,0\n", i / 1000.0 }' \
     >"$T/const.csv"
@@ -342,7 +342,7 @@ expect_out_re "^  lowest usable sampling frequency: 50 Hz \(.*\), only a lower b
 "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_is_lower_bound"] is True and d["fs_lower_bound_hz"] == 10, d' "$T/s10.json" &&
     pass "JSON fs_lower_bound_hz above the log's rate: the rate" || fail "JSON fs_lower_bound_hz at 10 Hz: $(head -c 300 "$T/s10.json")"
 # a rounding step above the rate (--round 2000 on the 1000 Hz tone, band 115 Hz): the answer exceeds the rate through
-# the rounding alone; it was said to be because 95 % of the power 'reaches 115.4 Hz, near the Nyquist frequency 500 Hz'
+# the rounding alone, which is said, not that 95 % of the power 'reaches 115.4 Hz, near the Nyquist frequency 500 Hz'
 expect_exit 0 "tone, --round 2000" "$H" psd "$T/tone.csv" --round 2000
 expect_out_re "^  lowest usable sampling frequency: 2000 Hz \([^)]*\) \(--dc segment[^)]*\)$" \
     "--round 2000: the band ends inside the log's, the answer is no lower bound"
@@ -364,14 +364,14 @@ expect_err "huge.csv:102: column 5 (.1e30.) is beyond" "the out-of-range value i
 { echo t,ax,ay,az,gx,gy,gz; i=0; while [ $i -lt 300 ]; do echo 5,0.1,0.2,9.8,0.01,0.02,0.03; i=$((i + 1)); done; } > "$T/same.csv"
 expect_exit 1 "time stamps that never advance" "$H" psd "$T/same.csv"
 expect_err "sample rate unknown: every time stamp is the same" "says why there is no rate (was: nfft 64 at inf Hz)"
-# the same stamps, then a bad line: the cause is still the rate (it said 'the 300 samples before it are fewer than one
+# the same stamps, then a bad line: the cause is still the rate (not 'the 300 samples before it are fewer than one
 # 64-sample segment', which is false)
 { cat "$T/same.csv"; echo 5,x,1,1,1,1,1; } >"$T/samebad.csv"
 expect_exit 1 "time stamps that never advance, then a bad line" "$H" psd "$T/samebad.csv"
 expect_err "sample rate unknown: every time stamp is the same" "a bad line after stamps that never advance: the rate is named"
 ! grep -q "fewer than one" "$T/err" && pass "300 samples are not called fewer than one 64-sample segment" ||
     fail "300 samples called fewer than one 64-sample segment"
-# one stamped sample: too short, not a rate to give (it said 'sample rate unknown; give --input-rate', an option the
+# one stamped sample: too short, not a rate to give (not 'sample rate unknown; give --input-rate', an option the
 # stamped CSV ignores)
 head -2 "$T/same.csv" >"$T/one.csv"
 expect_exit 1 "one stamped sample" "$H" psd "$T/one.csv" --input-rate 100

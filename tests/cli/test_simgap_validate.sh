@@ -42,21 +42,21 @@ expect_err "mag-range" "--mag-range with trailing text said"
 expect_exit 2 "--mag-range to infinity" "$H" simgap-validate --cases 1 $FAST --mag-range 1,inf
 expect_err "mag-range" "--mag-range to infinity said"
 # a magnitude beyond what the simulator accepts is a usage error that names
-# the case and the effect, before any case ran (it was exit 3, "cannot draw
-# a static case", after the cases before it had run, their results lost)
+# the case and the effect, before any case runs (not exit 3, "cannot draw
+# a static case", after the cases before it have run, their results lost)
 expect_exit 2 "--mag-range beyond the simulator's range" "$H" simgap-validate --cases 3 $FAST --effects control,ramp \
     --mag-range 1e6,1e6
 expect_err "mag-range .1e6,1e6.: wants LO,HI" "a magnitude range beyond 1000 said"
 grep -q "^case" "$T/out" && fail "magnitude beyond range: cases ran first" || pass "magnitude beyond range: said before any case ran"
 # ... and one the simulator refuses on these logs (a dropout probability of
 # 1000 x 10 events in 3000 samples): a usage error before the run, naming the
-# case and the parameter (it was exit 3 after the cases before it had run)
+# case and the parameter (not exit 3 after the cases before it have run)
 expect_exit 2 "--mag-range the simulator refuses" "$H" simgap-validate --cases 3 $FAST --effects control,dropout \
     --mag-range 1000,1000
 expect_err "case [0-9]*: dropout at .*dropout.prob .* outside the simulator's range" "the case, effect and parameter named"
 grep -q "^case" "$T/out" && fail "refused magnitude: cases ran first" || pass "refused magnitude: said before any case ran"
 # a log too short for a confident answer is no false alarm: 10 s at 10 Hz
-# gives "too-short" on every control (it was "static 4/4 false alarms
+# gives "too-short" on every control (not "static 4/4 false alarms
 # (100.0 %)" and the target "no")
 expect_exit 0 "controls on logs too short" "$H" simgap-validate --cases 4 --effects control --static-only \
     --duration 10 --rate 10 --seeds 4 --json "$T/ts.json"
@@ -160,12 +160,13 @@ json "$T/wc.json" 'j["cases"] == 3 and all(r["multiple_of_threshold"] < 1000 for
     if abs(r["values"][0]) >= 0.45)' && pass "a clipped walk magnitude's multiple is the one set" ||
     fail "clipped walk magnitudes: $(cat "$T/pyerr") $(cat "$T/out")"
 
-# a static case too big to hold (1e11 samples: it ran for ever) is a usage error; walk-only runs ignore the static size
+# a static case too big to hold (1e11 samples: it would run for ever) is a usage error; walk-only runs ignore the
+# static size
 expect_exit 2 "static case of 1e11 samples" "$H" simgap-validate --cases 1 --duration 1e6 --rate 1e5
 expect_err "samples per static case; at most 20000000" "the static case's size is bounded and said"
 
 # Ctrl-C stops the run before its next case and reports and writes the
-# cases run (they were lost: a full run takes 13 minutes); exit 130
+# cases run (not lost: a full run takes 13 minutes); exit 130
 "$H" simgap-validate --cases 40 $FAST --json "$T/i.json" --markdown "$T/i.md" >"$T/out" 2>"$T/err" &
 pid=$!
 k=0
