@@ -358,8 +358,8 @@ else
     fail "the killed recording ($k samples) is not a prefix of the log"
 fi
 
-# --- the sender is interrupted: exit 130 and no END frame (exit 0 before,
-# as if the stream were complete)
+# --- the sender is interrupted: exit 130 and no END frame (not exit 0, as
+# if the stream were complete)
 stop_link # the block above leaves its link up
 start_link
 start_live --record "$T/rec_i.bin" --timeout 60
@@ -698,7 +698,7 @@ grep_in "$T/live.err" "no sample received from $A: 10240 bytes received" "the en
 grep_in "$T/live.out" "live: end: stopped by SIGTERM" "the summary says how the run ended"
 
 # --- a recording that cannot be written (a full disk): the summary counts
-# what the file holds, not what was received (it said 40 recorded)
+# what the file holds, not what was received (not 40 recorded)
 start_live --record /dev/full
 stream vectors/walk.bin --speed 0
 wait_live
