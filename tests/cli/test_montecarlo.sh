@@ -19,7 +19,7 @@ expect_exit 2 "bad effect" "$H" montecarlo --effect wobble
 "$H" montecarlo --seeds 1 --duration 8 --quiet >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" -eq 0 ]; then pass "montecarlo small run (exit 0)"; else fail "montecarlo small run: exit $rc"; cat "$T/err"; fi
 # --param help lists the keys, as replay's (the unknown-key error points
-# at it; montecarlo took 'help' for a malformed KEY=VALUE, exit 2)
+# at it), not 'help' taken for a malformed KEY=VALUE, exit 2
 expect_exit 2 "unknown --param key" "$H" montecarlo --param nokey=1 --seeds 1 --duration 2
 expect_err "list: --param help" "unknown --param key: the error points at --param help"
 expect_exit 0 "montecarlo --param help" "$H" montecarlo --param help
@@ -88,13 +88,13 @@ if ties == 0:
 PY
 then pass "NEES verdicts: the direction follows the bins above and below"; else fail "NEES verdict direction"; fi
 # a group without NEES (the biases without the bias model) has no verdict
-# (it was 'over-confident', the fallback of an undefined fraction in band)
+# (not 'over-confident', the fallback of an undefined fraction in band)
 if json "$T/mc.json" '[v["nees"][g]["verdict"] for v in j["variants"] if v["name"] == "off" for g in ("bias", "all")] == [None, None]'
 then pass "no NEES, no verdict"; else fail "verdict without NEES: $(grep -m3 verdict "$T/mc.json" | tr -d '\n\t')"; fi
 if head -1 "$T/mc.csv" | grep -q "^variant,t_s,odo_m,n,rms_h_m"; then pass "CSV header"; else fail "CSV header"; fi
 if grep -q "^off," "$T/mc.csv" && grep -q "^ar1," "$T/mc.csv"; then pass "both variants in the CSV"; else fail "variants in CSV"; fi
 # the bins before the alignment have no estimate: empty fields (as allan's
-# CSV), as the JSON has null; they were written as 'nan'
+# CSV), as the JSON has null; not 'nan'
 if grep -qi 'nan' "$T/mc.csv"; then fail "NaN in the montecarlo CSV: $(grep -i -m1 nan "$T/mc.csv")"; else pass "no NaN in the CSV"; fi
 if grep -q '^ar1,1\.000000,0\.000,0,,,,,,' "$T/mc.csv"; then pass "a bin without estimates has empty fields"; else fail "first bin: $(grep -m1 '^ar1,' "$T/mc.csv")"; fi
 # the summary: no NaN either (a standing 'walk' has no distance; bins before
@@ -111,9 +111,9 @@ expect_exit 0 "montecarlo of a walk from the first tick" "$H" montecarlo --motio
 if json "$T/walk20.json" 'all(h < 3 * p for v in j["variants"] for h, p in zip(v["final_h_m"], v["final_pred_h_m"]))'
 then pass "walk from the first tick: final errors within 3 predicted sd"
 else fail "walk from the first tick: $(grep -A3 '"final_h_m"' "$T/walk20.json" | tr -d '\n\t')"; fi
-# the mean's 95 % interval is Student's (1.96, the normal quantile, made
-# 3 runs' interval 2.2 times too narrow), and one run has none (it printed
-# +- 0.000); figures that no run defines are null in the JSON (they were 0)
+# the mean's 95 % interval is Student's (1.96, the normal quantile, makes
+# 3 runs' interval 2.2 times too narrow), and one run has none (not
+# +- 0.000); figures that no run defines are null in the JSON (not 0)
 expect_exit 0 "montecarlo of 3 runs" "$H" montecarlo --seeds 3 --duration 20 --profile mtx --json "$T/ci3.json"
 ci=$(sed -n 's/.*final horizontal error   mean [0-9.]* m (+- \([0-9.]*\)).*/\1/p' "$T/out" | head -n 1)
 if [ -n "$ci" ] && json "$T/ci3.json" "abs(__import__('scipy.stats').stats.t.ppf(0.975, 2) * __import__('statistics').stdev(j['variants'][0]['final_h_m']) / 3 ** 0.5 - $ci) <= 0.0005"
@@ -234,7 +234,7 @@ if /usr/bin/env python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$T/m
     pass "montecarlo --json -: valid JSON alone on standard output"; else fail "--json -: $(head -n 2 "$T/mc_stdout.json")"; fi
 
 # a CSV on a full standard output: exit 3, and the message names standard
-# output (it said '-: cannot write')
+# output (not '-: cannot write')
 "$H" montecarlo --seeds 1 --duration 3 --csv - >/dev/full 2>"$T/err"; rc=$?
 if [ "$rc" -eq 3 ]; then pass "--csv - on a full disk (exit 3)"; else fail "--csv - on a full disk: exit $rc"; fi
 expect_err "standard output: cannot write" "--csv - on a full disk names standard output"
