@@ -22,8 +22,8 @@ expect_exit 1 "series value beyond the input range" "$H" allan --series "$T/big.
 expect_err "big.txt:2: 1e+30 differs from the first value, 1, by more than" "the rejected value is named with its line"
 expect_exit 2 "--fractional with --phase" "$H" allan --series "$T/big.txt" --rate 1 --phase --fractional 1e7
 expect_exit 2 "--fractional of a log" "$H" allan vectors/walk.bin --fractional 1e7
-# the log's options with a series were ignored without a word, exit 0 (`--series F --channels gx` analysed the
-# series; a user review, 2026-11-30), as --unit with a log was until 2026-11-29
+# the log's options with a series are refused, not ignored without a word, exit 0 (`--series F --channels gx`
+# analysing the series), as --unit with a log is
 printf "1\n2\n3\n4\n5\n6\n7\n8\n9\n10\n11\n12\n" > "$T/twelve.txt"
 for o in "--channels gx" "--from csv" "--input-rate 50" "--name foo"; do
     expect_exit 2 "--series with $o" "$H" allan --series "$T/twelve.txt" --rate 1 --no-sim --quiet $o
@@ -38,8 +38,8 @@ awk 'BEGIN { for (i = 0; i < 50; i++) { printf "1.0"; for (j = 0; j < 1100; j++)
 expect_exit 1 "series line longer than the reader's buffer" "$H" allan --series "$T/long.txt" --rate 1 --no-sim
 expect_err "long.txt:1: line longer than" "the long line is named"
 # a NUL byte in a series (binary data, e.g. a logger's unwritten blocks): named as the log readers name it,
-# mid-file (it was called a line longer than 1022 characters) and on a last line without a newline (1.0 NUL junk
-# was read as 1.0, exit 0); the numbers before it are analysed
+# mid-file (not called a line longer than 1022 characters) and on a last line without a newline (1.0 NUL junk
+# not read as 1.0, exit 0); the numbers before it are analysed
 awk 'BEGIN { for (i = 1; i <= 30; i++) print i % 7 }' > "$T/nul30.txt"
 { cat "$T/nul30.txt"; printf '1.0\000junk\n4.0\n'; } > "$T/nul.txt"
 expect_exit 1 "a NUL byte mid-series" "$H" allan --series "$T/nul.txt" --rate 1 --no-sim --quiet
@@ -60,8 +60,8 @@ expect_exit 1 "bad line in series" "$H" allan --series "$T/bad.txt" --rate 10 --
 grep -q "bad.txt:3001: not a number" "$T/err" && pass "bad line reported with its number" || fail "bad line message"
 [ "$(grep -c '^series,' "$T/bad.csv")" -gt 10 ] && pass "table written before the error" || fail "table before error"
 # --json says so, as info's, replay's, psd's and simgap's: complete false and
-# the reader's error (it had neither; the JSON review, 2026-11-30), and a log
-# read to its end complete true without an error
+# the reader's error (not neither), and a log read to its end complete true
+# without an error
 expect_exit 1 "bad line in series, --json" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --quiet --json "$T/bad.json"
 json "$T/bad.json" 'j["complete"] is False and j["error"].endswith("bad.txt:3001: not a number") and j["samples"] == 3000' &&
     pass "--json of a series cut by a bad line: complete false, the error" || fail "bad line --json: $(head -c 200 "$T/bad.json")"
@@ -69,7 +69,7 @@ head -c 40000 vectors/walk.bin >"$T/cut.bin"
 expect_exit 1 "a .bin log cut mid-record, --json" "$H" allan "$T/cut.bin" --no-sim --quiet --json "$T/cut.json"
 json "$T/cut.json" 'j["complete"] is False and "truncated: record #829" in j["error"] and j["samples"] == 829' &&
     pass "--json of a cut log: complete false, the reader's error" || fail "cut log --json: $(head -c 200 "$T/cut.json")"
-# the input file as replay's JSON names it, `log`, and `source` kept as its alias (until 2026-12-01 `source` only)
+# the input file as replay's JSON names it, `log`, and `source` kept as its alias (not `source` only)
 json "$T/cut.json" 'j["log"] == j["source"] == sys.argv[1].replace("cut.json", "cut.bin")' &&
     pass "allan --json names the log as replay's does (log), source its alias" || fail "allan --json log/source: $(head -c 200 "$T/cut.json")"
 head -2000 "$T/bad.txt" >"$T/good.txt"
@@ -77,8 +77,8 @@ expect_exit 0 "a whole series, --json" "$H" allan --series "$T/good.txt" --rate 
 json "$T/good.json" 'j["complete"] is True and "error" not in j' && pass "--json of a whole series: complete true, no error" ||
     fail "whole series --json: $(head -c 200 "$T/good.json")"
 expect_exit 3 "unwritable output" "$H" allan --series "$T/bad.txt" --rate 10 --no-sim --quiet --out /nonexistent/dir/t.csv
-# every output is checked before the log is read: an unwritable one is exit 3 with no table printed (they were
-# found at the end, after minutes of work on a long log; 2026-11-30)
+# every output is checked before the log is read: an unwritable one is exit 3 with no table printed (not found at
+# the end, after minutes of work on a long log)
 for o in --out --json --plot --profile; do
     expect_exit 3 "unwritable $o, before the work" "$H" allan vectors/walk.bin --no-sim $o /nonexistent/dir/t.x
     if [ ! -s "$T/out" ]; then pass "unwritable $o: nothing computed first"; else fail "unwritable $o: the tables were printed first"; fi
@@ -88,10 +88,10 @@ done
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 10; i++) printf "%.2f,0.1,0.2,9.8,0.01,0.02,0.0%d\n", i / 100, i }' >"$T/tiny.csv"
 expect_exit 1 "too short for a profile" "$H" allan "$T/tiny.csv" --quiet --profile "$T/tiny.profile" --plot "$T/tiny.png"
 [ -s "$T/tiny.png" ] && [ ! -e "$T/tiny.profile" ] && pass "plot without profile" || fail "tiny outputs"
-# half a second of noise: "no identification for ax (too little data?)" left the user to guess how much is enough;
-# the error now names the record's length and the length the white noise, read at 1 s, needs (a user review,
-# 2026-11-30). 5 s gave a profile, exit 0, its white noise the ADEV at 1 s, a tau beyond the tenth of the record
-# the identification otherwise keeps to (--max-tau-frac), from a few averages (EDF 4.4 at 0.96 s): said now
+# half a second of noise: "no identification for ax (too little data?)" alone would leave the user to guess how
+# much is enough; the error names the record's length and the length the white noise, read at 1 s, needs. 5 s
+# gives a profile, exit 0, its white noise the ADEV at 1 s, a tau beyond the tenth of the record
+# the identification otherwise keeps to (--max-tau-frac), from a few averages (EDF 4.4 at 0.96 s): said
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; s = 1; for (i = 0; i < 500; i++) { s = (s * 1103515245 + 12345) % 2147483648; r = s / 2147483648.0 - 0.5; printf "%.2f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f\n", i / 100, r / 50, -r / 40, -9.81 + r / 30, r / 1000, -r / 900, r / 800 } }' >"$T/five.csv"
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; s = 7; for (i = 0; i < 1001; i++) { s = (s * 1103515245 + 12345) % 2147483648; r = s / 2147483648.0 - 0.5; printf "%.2f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f\n", i / 100, r / 50, -r / 40, -9.81 + r / 30, r / 1000, -r / 900, r / 800 } }' >"$T/ten.csv"
 head -n 52 "$T/five.csv" >"$T/half.csv"
@@ -106,9 +106,9 @@ expect_exit 0 "10 s: a profile" "$H" allan "$T/ten.csv" --no-sim --quiet --profi
 grep -q "beyond the longest tau the identification keeps to" "$T/err" && fail "10 s: the short-record warning" ||
     pass "10 s: 1 s within the identified range, no short-record warning"
 # several failures in one run: an output that cannot be written (3) decides over bad input or a refused profile (1),
-# since exit 1 says every output was written; every other output is still written. Until 2026-12-02 the last one set
-# decided: a cut static log with --profile onto a full disk said 1, and a walk with --json onto a full disk said 3, but
-# 1 with --profile as well (the profile's refusal came last; docs/allan.md, "Command")
+# since exit 1 says every output was written; every other output is still written. Were the last one set to decide,
+# a cut static log with --profile onto a full disk would say 1, and a walk with --json onto a full disk 3, but
+# 1 with --profile as well (the profile's refusal comes last; docs/allan.md, "Command")
 { cat "$T/ten.csv"; echo "oops"; } >"$T/tenbad.csv"
 if [ -w /dev/full ]; then
     expect_exit 3 "a cut log, --profile onto a full disk: the output failure decides" "$H" allan "$T/tenbad.csv" --no-sim \
@@ -147,8 +147,8 @@ expect_err "five.csv: the paper's sigma_v of 6 channels (its column of the param
 expect_exit 0 "10 s: the paper's column" "$H" allan "$T/ten.csv" --no-sim --quiet
 grep -q "beyond the longest tau the identification keeps to" "$T/err" && fail "10 s: the paper's sigma_v warned as beyond the range" ||
     pass "10 s: the paper's sigma_v within the identified range, no warning"
-# a log too short for any Allan point (the shortest tau, 1 sample, beyond 10 % of 2 samples): until 2026-11-29
-# exit 0 with empty tables and every value n/a (exit 1 only with --profile; found by the ident review); now an
+# a log too short for any Allan point (the shortest tau, 1 sample, beyond 10 % of 2 samples): not exit 0 with
+# empty tables and every value n/a (exit 1 only with --profile), but an
 # error naming the samples it needs, as a record of under 2 samples is, exit 1, no output written
 head -n 3 "$T/tiny.csv" >"$T/two.csv"
 expect_exit 1 "a 2-sample log" "$H" allan "$T/two.csv" --no-sim --out "$T/two_table.csv"
@@ -158,8 +158,8 @@ expect_err "two.csv: 2 samples are too few for any Allan point: the shortest tau
 head -n 10 "$T/tiny.csv" >"$T/nine.csv"
 expect_exit 1 "a 9-sample log" "$H" allan "$T/nine.csv" --no-sim --quiet
 expect_err "needs at least 10 samples (tau up to 0.1 of the record, --max-tau-frac)" "9 samples are too few"
-# a 1-sample log: until 2026-12-01 "sample rate unknown; give --rate" (one sample has no interval; --rate then
-# gave "fewer than 2 samples"), neither naming the samples needed (the fresh-eyes allan review); needed: the
+# a 1-sample log: not "sample rate unknown; give --rate" (one sample has no interval; --rate then
+# would give "fewer than 2 samples"), neither naming the samples needed; needed: the
 # shortest tau, 1 sample, within 0.1 of the record: n >= 1 / 0.1 = 10
 head -n 2 "$T/tiny.csv" >"$T/one.csv"
 expect_exit 1 "a 1-sample log" "$H" allan "$T/one.csv" --no-sim --quiet
@@ -173,8 +173,8 @@ printf '1\n' >"$T/one.txt"
 expect_exit 1 "a 1-sample series" "$H" allan --series "$T/one.txt" --rate 1 --no-sim --quiet
 expect_err "one.txt: 1 sample is too few for any Allan point: the shortest tau (1 sample) needs at least 10 " \
     "a 1-sample series: the samples it needs are named"
-# a series that cannot be read (a directory: fgets fails, EISDIR) said "no numbers", and a read error mid-file
-# ended the series there as if at its end, complete (the fresh-eyes allan review, 2026-12-01)
+# a series that cannot be read (a directory: fgets fails, EISDIR) must not say "no numbers", nor a read error
+# mid-file end the series there as if at its end, complete
 mkdir "$T/adir"
 expect_exit 1 "a directory as --series" "$H" allan --series "$T/adir" --rate 1 --no-sim --quiet
 expect_err "adir: read error (Is a directory)" "a directory as --series: the read error is named"
@@ -198,8 +198,8 @@ expect_err "stuck.csv: gy is constant over the whole record" "stuck channel name
 expect_err "stuck.profile: gy is constant over the whole record (Allan deviation 0): no noise to identify" \
     "stuck channel named as the reason for the missing profile"
 expect_out "Gyr y  deg/s  | n/a (constant channel)" "stuck channel in the parameter table"
-# --unit labels a series; a log's channels are in m/s^2 and deg/s whatever it says: until 2026-11-29 it was
-# ignored without a word, exit 0 (found by the cli review); now refused as --phase and --column are
+# --unit labels a series; a log's channels are in m/s^2 and deg/s whatever it says: with a log it is not
+# ignored without a word, exit 0, but refused as --phase and --column are
 expect_exit 2 "--unit with a log" "$H" allan "$T/stuck.csv" --channels gx --no-sim --quiet --unit g
 expect_err "--unit applies to --series only" "--unit with a log explained"
 # a static log whose accelerometers are in g: read without error, and its profile was 9.8 times too quiet;
@@ -433,8 +433,8 @@ else
 fi
 expect_exit 2 "--deviation with the streaming estimator" "$H" allan vectors/walk.bin --deviation mdev
 expect_exit 2 "unknown --deviation" "$H" allan --series "$T/f.txt" --rate 1 --deviation xdev
-# the JSON's estimator size is the screen's (two estimators per channel at 4 tau per octave; it gave one's
-# size), and null with the exact estimator, which runs none (it gave the streaming size)
+# the JSON's estimator size is the screen's (two estimators per channel at 4 tau per octave; not one's
+# size), and null with the exact estimator, which runs none (not the streaming size)
 expect_exit 0 "streaming estimator size" "$H" allan --series "$T/f.txt" --rate 1 --estimator streaming --no-sim \
     --json "$T/sz.json"
 SZ=$(sed -n 's/.*streaming estimator, \([0-9]*\) bytes per channel.*/\1/p' "$T/out")
@@ -478,7 +478,7 @@ sys.exit(1 if bad or marked == 0 else 0)
 PYEOF
 then pass "unresolved fits marked in the parameter table, columns kept"; else fail "unresolved fits in the table"; fi
 # the parameter table's tau is in samples, as in the paper's tables, right after tables whose tau_s is in seconds:
-# its header said "tau", and `tau 1` read as 1 s (a user review, 2026-11-29); both halves now say tau[samples]
+# a header of "tau" would make `tau 1` read as 1 s; both halves say tau[samples]
 expect_out "^chan   unit   |    sigma_v tau\[samples\] sigma_bias         BS   rms   @min |    sigma_v tau\[samples\] sigma_bias       peak   rms   @min$" \
     "the parameter table's tau columns say they are in samples"
 # --help said --max-tau-frac bounds the tau "identified, tabulated and plotted", yet --out and --json tabulate every
@@ -538,9 +538,9 @@ sys.exit(1 if bad or nbound == 0 else 0)
 PYEOF
 then pass "what the profile holds for unresolved fits is in the table and the JSON"; else
     fail "what the profile holds for unresolved fits"; fi
-# the warning for such a channel named "longest tau 287 s" beside a table that said "tau <= 60 s" (10 minutes of
-# ADIS16405 log 1), leaving the reader to guess which limit the identification keeps to (a user review,
-# 2026-11-29): it now says which test failed and names the limit it used, the fitted range's too
+# the warning for such a channel must not name "longest tau 287 s" beside a table that says "tau <= 60 s" (10
+# minutes of ADIS16405 log 1), leaving the reader to guess which limit the identification keeps to: it says which
+# test failed and names the limit it used, the fitted range's too
 expect_err "the AR(1) bias of gz is not identifiable within the record (the fit's bump, 1.89 T = .* s, lies beyond the longest tau with data, 4.48 s; the fit itself uses tau <= 1 s, --max-tau-frac); the profile holds" \
     "an AR(1) bump beyond the record: both limits named"
 expect_err "the AR(1) bias of ax is not identifiable within the record (the fit's AR(1) part, or its white part, rises above the rest of the model by no more than the measurement's spread at every tau <= 1 s, the fitted range of --max-tau-frac); " \
@@ -555,9 +555,9 @@ expect_err "and the Gauss-Markov bound T = 0.53 s (raised to the floor of 53 sam
     "the bound's warning says which way it bounds"
 expect_out "Gauss-Markov bound from the Allan minimum (T = t_BS / 1.89, sigma_bias = BS / 0.6174: the true T may be longer; docs/allan.md):" \
     "the table's note says which way the bound goes"
-# the plot drew an unresolved channel's fit as "simulated, corrected id." and "corrected model (analytic)", the
-# legend of a resolved one, and not the bound the profile holds instead (30 minutes of ADIS16405 log 1: gx's
-# fit, white 0.0039 deg/s/sqrt(Hz), drawn as the corrected model; a user review, 2026-11-30). Now such a fit is
+# the plot must not draw an unresolved channel's fit as "simulated, corrected id." and "corrected model (analytic)",
+# the legend of a resolved one, without the bound the profile holds instead (30 minutes of ADIS16405 log 1: gx's
+# fit, white 0.0039 deg/s/sqrt(Hz), drawn as the corrected model). Such a fit is
 # marked in the legend and the bound is drawn, once per unresolved channel (the script through a stand-in gnuplot)
 fake_gnuplot "$T/fakegp"
 expect_exit 0 "10 s of white noise, --plot" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/w10s.gp" "$H" allan \
@@ -579,9 +579,9 @@ if json "$T/wser.json" "j['channels'][0]['profile'].get('basis') == 'bound'"; th
 else
     fail "the white series' AR(1) was resolved: no bound to draw"
 fi
-# --sim-samples shorter than the record: the simulated curves were drawn to --max-tau-frac of the measured record
-# (3 s of these 30 s), 3 times their own 10 % (1,000 samples at 100 Hz: 1 s), down to a term or two (the fresh-eyes
-# allan review, 2026-12-01); each simulation keeps to its own record's --max-tau-frac, as the measured curve does
+# --sim-samples shorter than the record: the simulated curves are not drawn to --max-tau-frac of the measured record
+# (3 s of these 30 s), 3 times their own 10 % (1,000 samples at 100 Hz: 1 s), down to a term or two; each
+# simulation keeps to its own record's --max-tau-frac, as the measured curve does
 expect_exit 0 "a white series, --plot --sim-samples 1000" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/wsim.gp" "$H" allan \
     --series "$T/wser.txt" --rate 100 --quiet --sim-samples 1000 --plot "$T/wsim.png"
 for b in sp sf; do
@@ -637,12 +637,12 @@ expect_exit 0 "white + Gauss-Markov series (T = 5 s)" "$H" allan --series "$T/gm
 json "$T/gm.json" "j['channels'][0]['corrected']['ar1_identified'] and 2.5 < j['channels'][0]['corrected']['tau_s'] < 10" &&
     pass "a resolved Gauss-Markov bias is identified" || fail "the Gauss-Markov bias (T = 5 s) is not identified"
 # A sensor's own filtering (anti-alias low-pass, decimation averaging) bends the Allan curve below the white line
-# over the first taus, and white + AR(1) fitted it as a bias of T = 1-3 samples that took part of the white noise
+# over the first taus, and white + AR(1) fits it as a bias of T = 1-3 samples that takes part of the white noise
 # into the profile (10 minutes of ADIS16405 log 1: gx T = 0.0107 s, white 0.0279 deg/s/sqrt(Hz) for the log's
-# 0.040; a user review, 2026-11-29). Now an AR(1) whose bump (1.89 T) lies under 100 samples is refused and the
+# 0.040). So an AR(1) whose bump (1.89 T) lies under 100 samples is refused and the
 # channel gets the white noise of the ADEV at 1 s. 600 s at 100 Hz of white noise, half of it through a 4-sample
 # moving average (low-frequency density 0.005 m/s^2/sqrt(Hz), 0.0005 rad/s/sqrt(Hz), as the filter keeps the DC
-# gain): the fit gave T = 1 sample and a white noise about 36 % low on every channel.
+# gain): without the refusal the fit gives T = 1 sample and a white noise about 36 % low on every channel.
 filt_log() { # OUT N RW: N samples at 100 Hz of white noise, half of it through a 4-tap moving average, plus a
     # random walk of RW x the white sd per sample (seed 3)
     "$PY" -c "
@@ -760,8 +760,8 @@ expect_exit 0 "a log at an overriding --rate" "$H" allan "$T/w10s.csv" --rate 40
 expect_err "analysed at --rate 400 Hz; the log's own rate is 100 Hz" "the overriding rate is said"
 if grep -q "intervals differ" "$T/err"; then fail "a uniform log called irregular at --rate 400"; else
     pass "a uniform log is not called irregular at --rate 400"; fi
-# uniform samples whose stamps are printed to the millisecond (398.3 Hz: intervals read 2 and 3 ms) were called
-# irregular, every interval of them; lost samples still count (psd's fix, the same day; found by the psd review)
+# uniform samples whose stamps are printed to the millisecond (398.3 Hz: intervals read 2 and 3 ms) are not called
+# irregular, every interval of them; lost samples still count (as psd's)
 awk 'BEGIN { srand(3); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) printf "%.3f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n", i / 398.3, (rand() - 0.5) / 50, (rand() - 0.5) / 50, 9.81 + (rand() - 0.5) / 50, (rand() - 0.5) / 500, (rand() - 0.5) / 500, (rand() - 0.5) / 500 }' > "$T/ms.csv"
 expect_exit 0 "allan on millisecond stamps" "$H" allan "$T/ms.csv" --no-sim --quiet
 if grep -q "intervals differ" "$T/err"; then fail "millisecond stamps of uniform samples called irregular: $(cat "$T/err")"; else
@@ -770,8 +770,8 @@ awk 'NR == 1 || (NR - 1) % 100 != 50' "$T/ms.csv" >"$T/msgap.csv"
 expect_exit 0 "allan on millisecond stamps with lost samples" "$H" allan "$T/msgap.csv" --no-sim --quiet
 expect_err "30 intervals differ" "lost samples under millisecond stamps are counted"
 # 100 Hz stamps printed to 10 ms (a whole number of resolutions per period: exact intervals) with 30 single samples
-# lost: each 20 ms interval was within 10 % + the 10 ms resolution of 10 ms, and the log was called uniform (no
-# warning); the static review, a 30-minute ADIS16405 cut with four gaps said "1 intervals differ"
+# lost: each 20 ms interval is within 10 % + the 10 ms resolution of 10 ms, and the log must not be called uniform
+# (no warning); so a 30-minute ADIS16405 cut with four gaps does not say "1 intervals differ"
 awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) if (i % 100 != 50) printf "%.2f,%.5f,%.5f,%.5f,%.5f,%.5f,%.5f\n", i / 100, (rand() - 0.5) / 50, (rand() - 0.5) / 50, 9.81 + (rand() - 0.5) / 50, (rand() - 0.5) / 500, (rand() - 0.5) / 500, (rand() - 0.5) / 500 }' > "$T/cs.csv"
 expect_exit 0 "allan on 10 ms stamps at 100 Hz with lost samples" "$H" allan "$T/cs.csv" --no-sim --quiet
 expect_err "30 intervals differ" "single lost samples under stamps of one period's resolution are counted"
@@ -798,9 +798,9 @@ expect_err "--name must be printable text on one line" "the --name refusal says 
 expect_exit 2 "--m not ascending" "$H" allan --series "$T/f.txt" --rate 1 --m 10,5
 expect_exit 2 "--m not a number" "$H" allan --series "$T/f.txt" --rate 1 --m 1,x
 expect_exit 2 "--m with the streaming estimator" "$H" allan --series "$T/f.txt" --rate 1 --estimator streaming --m 4
-# list options: an empty element and a repeated one are refused alike, naming the option (until 2026-11-29
-# --m 1,10, and --channels ax, ran as if the comma were not there and --deviation mdev,mdev as mdev, exit 0,
-# while --channels ax,ax was refused; found by the cli review)
+# list options: an empty element and a repeated one are refused alike, naming the option (otherwise
+# --m 1,10, and --channels ax, would run as if the comma were not there and --deviation mdev,mdev as mdev, exit 0,
+# while --channels ax,ax is refused)
 expect_exit 2 "--m with a trailing comma" "$H" allan --series "$T/f.txt" --rate 1 --no-sim --quiet --m 1,10,
 expect_err "--m: an empty element in '1,10,'" "--m's empty element named"
 expect_exit 2 "--m with a doubled comma" "$H" allan --series "$T/f.txt" --rate 1 --no-sim --quiet --m 1,,10
@@ -831,7 +831,7 @@ expect_err "walk.profile: the log is not static (above); profile not written" "n
 expect_exit 1 "a walk without --profile" "$H" allan vectors/walk.bin --no-sim --quiet
 expect_err "a gyro in deg/s at rest also reads so: multiply by pi/180)" "a .bin: the arithmetic remedy for deg/s"
 # a walk in deg/s read with --units gyro=deg/s: its gyro was converted already, so deg/s is no cause and
-# "multiply by pi/180" would convert it twice (the error named it until the review of 2026-11-30)
+# "multiply by pi/180" would convert it twice (the error must not name it)
 "$H" sim --cadence 60 --duration 30 --out "$T/simw.csv" >/dev/null 2>&1 || fail "sim of a walk for the deg/s case"
 awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.9g,%.9g,%.9g\n", $1, $2, $3, $4, $5 * 57.29577951308232,
     $6 * 57.29577951308232, $7 * 57.29577951308232 }' "$T/simw.csv" >"$T/simw_deg.csv"
@@ -900,8 +900,8 @@ expect_exit 0 "a log handled at its end, no --profile" "$H" allan "$T/putdown.cs
 expect_err "(\`bin/harness convert $T/putdown.csv putdown_still.csv --end 117\`)" "the cut ends before the handling"
 expect_err "a --profile would be refused" "the warning says a profile would be refused"
 # a static log touched once (0.5 s of 0.1 rad/s on gz, 0.2 m/s^2 on ax at 300 s of 600): below the moving marks, it
-# passed without a word, and on 30 minutes of ADIS16405 log 1 it was fitted as a gz bias of 0.096 deg/s with
-# T = 0.3 s (the static review); the window is now named as disturbed, the status unchanged (0). The same log
+# would pass without a word, and on 30 minutes of ADIS16405 log 1 be fitted as a gz bias of 0.096 deg/s with
+# T = 0.3 s; the window is named as disturbed, the status unchanged (0). The same log
 # untouched: no such warning
 for touch in 1 0; do
     still_log 11 60000 0.1 0.02 "($touch && i >= 30000 && i < 30050) ? 1 : 0" 0.2 0 0 0.1 >"$T/touch$touch.csv"
@@ -913,33 +913,33 @@ expect_exit 0 "the same log untouched" "$H" allan "$T/touch0.csv" --no-sim --qui
 if grep -q "disturbed" "$T/err"; then fail "an untouched white-noise log called disturbed: $(cat "$T/err")"; else
     pass "an untouched log is not called disturbed"; fi
 # a static log whose time column is in milliseconds (100 Hz read as 0.1 Hz): no rate is a unit error for a static
-# log, which may be slow, but this one passed without a word, tau 1000 times and sigma_v 31.6 times too large (the
-# static review, 30 minutes of ADIS16405 log 1); now a warning with the remedy, the status unchanged (0); the same
+# log, which may be slow, but this one must not pass without a word, tau 1000 times and sigma_v 31.6 times too large
+# (30 minutes of ADIS16405 log 1); a warning with the remedy, the status unchanged (0); the same
 # log in seconds: no such warning
 awk '{ if (NR == 1) print; else { split($0, v, ","); v[1] = v[1] * 1000; out = v[1];
        for (k = 2; k <= 7; k++) out = out "," v[k]; print out } }' "$T/touch0.csv" >"$T/touch_ms.csv"
 expect_exit 0 "a static log with its time in milliseconds" "$H" allan "$T/touch_ms.csv" --no-sim --quiet
 expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "time in milliseconds is named, with the --units item (it said divide by 1000 until 2026-11-30)"
-# the other way: the same log read with --units time=ns is 1e6 times too fast (10 ns apart, 100 MHz) and passed
-# without a word (the units review, 2026-11-30); now the same warning names the unit that fits
+# the other way: the same log read with --units time=ns is 1e6 times too fast (10 ns apart, 100 MHz), not to pass
+# without a word: the same warning names the unit that fits
 expect_exit 0 "a static log in milliseconds read as ns" "$H" allan "$T/touch_ms.csv" --no-sim --quiet --units time=ns
 expect_err "are the time stamps in nanoseconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "stamps too fast: ms read as ns told time=ms"
 # the same static log stamped in bursts (packets of 4 samples stamped 5 us apart, every 40 ms: 100 Hz over the log),
-# in us read as such: allan warned "are the time stamps in microseconds? (they look like milliseconds, a 200 Hz log:
-# give --units time=ms)", 1000 times too slow (the units review, 2026-11-30); replay's test of the span now
+# in us read as such: allan must not warn "are the time stamps in microseconds? (they look like milliseconds, a 200 Hz
+# log: give --units time=ms)", 1000 times too slow; replay's test of the span
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 40000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
     "$T/touch0.csv" > "$T/touch_burst.csv"
 expect_exit 0 "a static log stamped in bursts, read as us" "$H" allan "$T/touch_burst.csv" --no-sim --quiet --units time=us
 if grep -q "are the time stamps in\|look like" "$T/err"; then fail "allan: stamps in bursts told a time unit: $(cat "$T/err")"; else
     pass "allan: stamps in bursts (100 Hz over the log) told no time unit"; fi
-# ... but tau was read at 200 kHz with only "intervals differ from 1/rate"; a warning now names the rate over the span
-# and --input-rate (the units review, 2026-11-30; exit 0 as before)
+# ... but tau read at 200 kHz is not left with only "intervals differ from 1/rate"; a warning names the rate over the
+# span and --input-rate (exit 0 still)
 expect_err "the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the .* samples span .* s, 100 Hz; tau, sigma_v and the profile are read at 2e+05 Hz, the stamps' rate, not the sampling rate: leave the time column out and give --input-rate 100 (docs/harness.md, \"Time stamps in bursts\")" \
     "allan: stamps in bursts warned, the stamps' rate said, 100 Hz and --input-rate named"
-# the same stamps in a .bin whose header states 100 Hz (nominal): tau is read at it, which the span keeps; it was
-# told "not the sampling rate" too until 2026-12-01
+# the same stamps in a .bin whose header states 100 Hz (nominal): tau is read at it, which the span keeps; it is
+# not told "not the sampling rate"
 "$H" convert "$T/touch_burst.csv" "$T/touch_burst.bin" --units time=us >/dev/null 2>&1 || fail "allan: convert the bursts to .bin"
 bin_rate "$T/touch_burst.bin" "$T/touch_nom.bin" 100 || fail "allan: the .bin's rate set"
 expect_exit 0 "a static log stamped in bursts, the .bin's stated 100 Hz" "$H" allan "$T/touch_nom.bin" --no-sim --quiet
@@ -947,8 +947,8 @@ expect_err "100 Hz; tau, sigma_v and the profile are read at 100 Hz, the rate th
     "allan: stamps in bursts at the stated rate: the rate and its source said"
 grep -q "not the sampling rate" "$T/err" && fail "allan: stated rate kept by the span told 'not the sampling rate'" || pass "allan: stated rate kept by the span, not told 'not the sampling rate'"
 grep -q "file states [0-9]" "$T/err" && fail "allan: stamps in bursts at the stated rate also told the stated-rate warning" || pass "allan: stamps in bursts: the burst warning alone"
-# a .bin whose header states a rate its stamps contradict (1000 Hz stated, stamps 5 ms apart): info warned, allan
-# analysed it at the stated rate without a word until 2026-12-01; now the same warning (hx_stated_rate_warn); a
+# a .bin whose header states a rate its stamps contradict (1000 Hz stated, stamps 5 ms apart): allan does not
+# analyse it at the stated rate without a word, but gives info's warning (hx_stated_rate_warn); a
 # stated rate within 10 % of the stamps' (215 Hz), and the log's own 200 Hz, are not questioned
 "$H" sim --motion stand:20 --rate 200 --out "$T/sr200.bin" >/dev/null 2>&1 || fail "allan: sim of a 200 Hz .bin"
 bin_rate "$T/sr200.bin" "$T/sr1000.bin" 1000 && bin_rate "$T/sr200.bin" "$T/sr215.bin" 215 || fail "allan: the .bin's rate set"
@@ -962,8 +962,8 @@ done
 # with --rate the analysis takes the rate given: no such warning
 expect_exit 0 "the same log analysed at --rate 100" "$H" allan "$T/touch_burst.csv" --no-sim --quiet --units time=us --rate 100
 grep -q "come in bursts" "$T/err" && fail "allan --rate: stamps in bursts still warned" || pass "allan --rate 100: no burst warning"
-# ... and with --profile the warning was followed by "no identification for ax (too little data?)", sending the user
-# to the record's length; the error now names the time unit as the likely cause (a user review, 2026-11-29)
+# ... and with --profile the warning is not followed by "no identification for ax (too little data?)", sending the
+# user to the record's length; the error names the time unit as the likely cause
 expect_exit 1 "a static log with its time in milliseconds, a profile" "$H" allan "$T/touch_ms.csv" --no-sim --quiet \
     --profile "$T/touch_ms.profile"
 expect_err "touch_ms.profile: no identification for ax, most likely because of the time stamps' unit (the warning above): read at 0.1 Hz, the shortest tau, 10 s, lies past the 1 s the white noise is read at; convert the time column to seconds (or give --rate) and run allan again; profile not written" \
@@ -982,9 +982,9 @@ awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 6000; i++)
 expect_exit 1 "a static gyro in deg/s" "$H" allan "$T/dps.csv" --no-sim --quiet
 expect_err "a gyro in deg/s at rest also reads so: give --units gyro=deg/s)" \
     "deg/s named as a cause, with the --units item for the CSV (it said multiply by pi/180 until 2026-11-30)"
-# a walk in rad/s read with --units gyro=deg/s (57.3 times too small): allan judged no walk (replay, info and simgap
-# did, from hx_walk_t) and its motion error told "a gyro in deg/s at rest also reads so: multiply by pi/180", of a
-# gyro read as deg/s already; allan's own one-second windows now feed the walk test (the units review, 2026-11-30):
+# a walk in rad/s read with --units gyro=deg/s (57.3 times too small): allan judges a walk (as replay, info and
+# simgap do, from hx_walk_t), and its motion error does not tell "a gyro in deg/s at rest also reads so: multiply by
+# pi/180", of a gyro read as deg/s already; allan's own one-second windows feed the walk test:
 # the rad/s mark is named and the deg/s clause left out. The same walk without --units keeps the clause
 expect_exit 1 "a walk in rad/s read with gyro=deg/s" "$H" allan vectors/nav/golden/gx2_walk2.csv --no-sim --quiet --units gyro=deg/s
 expect_err "the log is in rad/s already? (read as deg/s by --units gyro=deg/s: leave gyro=deg/s out)" \
@@ -1065,10 +1065,10 @@ else
 fi
 # the paper's identification takes tau <= 10 % of the record inclusively,
 # like the table: 17,920 white samples at 97.3 Hz put the 10 % point at
-# m = 1792 exactly, where the truncated limit (1791.99...) left it out and
-# the minimum fell on 1536; a limit below one sample is no identification,
-# not "no limit" (a review, 2026-11-28); since 2026-11-29 no Allan point at
-# all, an error naming the samples needed, and no JSON (test_allan.c
+# m = 1792 exactly, where the truncated limit (1791.99...) would leave it out
+# and the minimum fall on 1536; a limit below one sample is no
+# identification, not "no limit": no Allan point at all, an error naming the
+# samples needed, and no JSON (test_allan.c
 # test_identify_limit_below_one_sample keeps the identification's guard)
 "$PY" -c "
 import random
@@ -1085,12 +1085,12 @@ expect_err "17920 samples are too few for any Allan point: the shortest tau (1 s
 # a slope of -1 after frequency noise is no phase noise: phase noise falls
 # fastest with tau, so it cannot take over at a longer tau; white noise and a
 # sinusoid (1 Hz, 0.05 Hz, amplitude twice the noise's sigma) fall past the
-# sinusoid's peak as 1/tau, which the streaming table read as quantisation
-# (alpha +2: at tau = 128 an EDF of 20,474 against about 300 beside it, so a
-# confidence interval eight times too narrow; on ADIS16405 ax, 0.96-1.28 s);
-# now `periodic`, with the alpha of the tau before. White phase noise (the
-# differences of white noise) still reads quantisation from tau = 1 on.
-# (2026-11-30)
+# sinusoid's peak as 1/tau, which the streaming table must not read as
+# quantisation (alpha +2: at tau = 128 an EDF of 20,474 against about 300
+# beside it, so a confidence interval eight times too narrow; on ADIS16405
+# ax, 0.96-1.28 s); it is `periodic`, with the alpha of the tau before. White
+# phase noise (the differences of white noise) still reads quantisation from
+# tau = 1 on.
 "$PY" -c "
 import math, random
 r = random.Random(11)
@@ -1144,8 +1144,8 @@ sys.exit(0 if all(r['noise'] == 'quantisation' and r['alpha'] == '2' for r in ro
     pass "white phase noise still reads quantisation"; else fail "white phase noise not read as quantisation"; fi
 
 # --- the --out CSV's first line, a comment naming the log, stays one line
-# when the log's name holds a line break (the rest of the name began a line
-# of its own, read as the header; the JSON review, 2026-11-30)
+# when the log's name holds a line break (the rest of the name must not
+# begin a line of its own, read as the header)
 NL=$(printf 'new\nline.bin')
 cp vectors/walk.bin "$T/$NL"
 c=allan; first=channel
@@ -1159,9 +1159,9 @@ rm -f "$T/$NL"
 expect_exit 2 "--unit with a comma" "$H" allan --series "$T/good.txt" --rate 10 --unit "a,b" --no-sim --quiet --out "$T/ub.csv"
 expect_err "--unit must be" "the error says what --unit may hold"
 
-# --- the text output's cosmetics (a sensor-characterisation review, 2026-11-30): a long record's tau
-# in plain seconds ("tau <= 1e+03 s" before), the noise-types line without a stray ';', a CSV log's
-# header naming its format (it said "(unknown)"), and no empty "Other readings" table
+# --- the text output's cosmetics: a long record's tau
+# in plain seconds (not "tau <= 1e+03 s"), the noise-types line without a stray ';', a CSV log's
+# header naming its format (not "(unknown)"), and no empty "Other readings" table
 awk 'BEGIN { s = 1; for (i = 0; i < 12000; i++) { s = (s * 1103515245 + 12345) % 2147483648; print s / 2147483648.0 } }' \
     >"$T/w12k.txt"
 expect_exit 0 "a 12,000-s white series" "$H" allan --series "$T/w12k.txt" --rate 1 --no-sim
@@ -1199,8 +1199,8 @@ else pass "no empty Other readings table on a constant series"; fi
 expect_out "Other readings of the paper's parameters: none" "a constant series: one line says why"
 expect_out_re "^  noise types: none$" "a constant series: the noise-types line says none"
 
-# --- a blank line inside a series was skipped without a word: if it stood for a missing sample, every
-# later value is one sample early (a sensor-characterisation review, 2026-11-30). Now one warning with
+# --- a blank line inside a series is not skipped without a word: if it stands for a missing sample, every
+# later value is one sample early. One warning with
 # the count and the first line; blank lines before the first number and after the last stay silent
 { printf '\n\n'; head -n 100 "$T/w12k.txt"; printf '\n'; sed -n 101,200p "$T/w12k.txt"; printf ' \t\n';
   sed -n 201,3000p "$T/w12k.txt"; printf '\n\n'; } >"$T/blanks.txt"

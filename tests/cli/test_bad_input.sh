@@ -1,8 +1,8 @@
 #!/bin/sh
-# CLI tests of bad input and failed outputs found by the robustness hunt of
-# 2026-12-01 (the rule of docs/harness.md, "Exit status": a clear error and
-# a non-zero exit, never a crash; nothing already computed is lost): each
-# check failed before its fix.
+# CLI tests of bad input and failed outputs (the rule of docs/harness.md,
+# "Exit status": a clear error and a non-zero exit, never a crash; nothing
+# already computed is lost): each check fails on the wrong behaviour it
+# names.
 set -u
 H=${HARNESS:-bin/harness}
 T=$(mktemp -d)
@@ -10,10 +10,10 @@ trap 'rm -rf "$T"' EXIT
 . "$(dirname "$0")/lib.sh"
 
 # --- sim: one output that cannot be written leaves the other whole (exit 3,
-# "every other output is still written"). Until 2026-12-01 the first failed
-# write stopped the simulation: a truth CSV on a full disk left the log cut
-# short (1,288 bytes of a 10 s walk, a header and a few rows that read as a
-# valid log), and a log that could not be written left the truth cut short.
+# "every other output is still written"). If the first failed write stopped
+# the simulation, a truth CSV on a full disk would leave the log cut short
+# (1,288 bytes of a 10 s walk, a header and a few rows that read as a valid
+# log), and a log that could not be written would leave the truth cut short.
 # (No summary is printed when an output failed: tests/cli/test_sim.sh.)
 expect_exit 0 "sim: the reference log and truth" "$H" sim --duration 10 --out "$T/ref.csv" --truth "$T/ref_truth.csv"
 if [ -w /dev/full ]; then
@@ -30,11 +30,10 @@ else
 fi
 
 # --- ipol: the rate of line 1 ("Acquisition frequency: 100 Hz") is a number
-# and the unit Hz. Until 2026-12-01 it was read with sscanf's "%lf", which
-# stops at the first character it cannot use: "100 kHz" read as 100 Hz and
-# "100,5 Hz" as 100 Hz (exit 0, every time off), and a rate of 1e-300 Hz was
-# taken, to fail at the second row as "counter ('1.0') is not a whole number
-# in range".
+# and the unit Hz. Read with sscanf's "%lf", which stops at the first
+# character it cannot use, "100 kHz" would read as 100 Hz and "100,5 Hz" as
+# 100 Hz (exit 0, every time off), and a rate of 1e-300 Hz would be taken, to
+# fail at the second row as "counter ('1.0') is not a whole number in range".
 ipol() { # FILE RATE-TEXT: an ipol file of 300 still samples at 100 Hz under line 1 'Acquisition frequency: RATE-TEXT'
     { printf 'Acquisition frequency: %s\n' "$2"
       printf 'PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n'
@@ -58,8 +57,8 @@ ipol "$T/low.txt" "1e-300 Hz"
 expect_exit 1 "ipol: a rate of 1e-300 Hz" "$H" info "$T/low.txt" --from ipol
 expect_err "1e-300 Hz is outside \[0.001, 1e+06)" "ipol: the rate out of range said"
 
-# --- replay, an input that stops before its first sample: the error said
-# "(frames before it were written)" with no frame before it (a header-only
+# --- replay, an input that stops before its first sample: the error does not
+# say "(frames before it were written)" with no frame before it (a header-only
 # CSV, a .bin header without records, a .bin whose first record is junk).
 printf 't,ax,ay,az,gx,gy,gz\n' >"$T/head.csv"
 expect_exit 1 "replay of a header without samples" "$H" replay "$T/head.csv" --quiet --out "$T/head_traj.csv"
@@ -70,11 +69,11 @@ printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0.01,x,0,9.8,0,0,0\n' >"$T/one.csv
 expect_exit 1 "replay of a log that stops after its first sample" "$H" replay "$T/one.csv" --quiet --out "$T/one_traj.csv"
 expect_err "one.csv:3: column 2 ('x') is not a number (frames before it were written)" "replay: frames before the error said"
 
-# --- an output named .gz: footnav writes no gzip. convert and sim wrote
+# --- an output named .gz: footnav writes no gzip. convert and sim write
 # OUT.csv.gz as plain CSV and OUT.bin.gz as plain CSV too (a name not ending
-# in .bin is CSV), exit 0 without a word: gzip -d then fails on it. Now a
-# warning says so (the file is still written as before, and every command
-# reads it by its content).
+# in .bin is CSV), and gzip -d then fails on it, so this must not pass with
+# exit 0 without a word: a warning says so (the file is still written, and
+# every command reads it by its content).
 expect_exit 0 "convert to x.csv.gz" "$H" convert vectors/walk.bin "$T/x.csv.gz"
 expect_err "^harness convert: warning: $T/x.csv.gz: written uncompressed (footnav writes no gzip" "convert: an uncompressed .gz said"
 expect_exit 0 "convert to x.bin.gz" "$H" convert vectors/walk.bin "$T/x.bin.gz"
@@ -89,9 +88,9 @@ expect_exit 0 "convert to x.csv: no .gz warning" "$H" convert vectors/walk.bin "
 grep -q "warning" "$T/err" && fail "convert to x.csv warned: $(cat "$T/err")" || pass "convert to x.csv: no warning"
 
 # --- a .bin header's text (sensor, axis note, source) with control
-# characters: info printed them raw, so a sensor name "x<LF>samples 1" forged
-# a line of info's report and an escape sequence reached the terminal. They
-# are now read as '?', with a warning.
+# characters: printed raw by info, a sensor name "x<LF>samples 1" would forge
+# a line of info's report and an escape sequence reach the terminal. They
+# are read as '?', with a warning.
 "${PY:-/usr/bin/python3}" -c 'import struct, sys, zlib
 b = bytearray(open(sys.argv[1], "rb").read())
 b[24:56] = b"x\nsamples     1\x1b[2J".ljust(32, b"\0")
@@ -109,9 +108,9 @@ expect_err "mt.txt: the ProductCode holds control characters (read as '?')" "inf
 expect_exit 0 "info of vectors/walk.bin: no control-character warning" "$H" info vectors/walk.bin
 grep -q "control characters" "$T/err" && fail "vectors/walk.bin warned of control characters" || pass "vectors/walk.bin: no such warning"
 
-# --- convert --start/--end over an input with a bad line: the error counted
-# the samples read as written ("the 200 samples before it were written" when
-# --start 2.5 kept none of them and the output held its header alone).
+# --- convert --start/--end over an input with a bad line: the error does not
+# count the samples read as written ("the 200 samples before it were written"
+# when --start 2.5 kept none of them and the output holds its header alone).
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 300; i++) printf "%.2f,%s,0,9.8,0,0,0\n", i / 100, i == 200 ? "nan" : "0.01" }' >"$T/nan200.csv"
 expect_exit 1 "convert --start 2.5 of a log with NaN at 2 s" "$H" convert "$T/nan200.csv" "$T/w0.csv" --start 2.5
 expect_err "(the 0 samples of the window before it were written, of 200 read)" "convert: none of the window written, said"
@@ -144,9 +143,9 @@ expect_exit 0 "the remedy followed" "$H" info "$T/adis_t.csv" --from csv --colum
 expect_out "^rate        200.000 Hz" "the remedy reads the 200 Hz stamps"
 
 # --- an output that cannot be written: the error gives the reason, as
-# convert's and sim's do. replay's --out said only "cannot write DIR" (a
-# directory, a missing directory), and a JSON that failed as it was written
-# (a full disk) "cannot write FILE".
+# convert's and sim's do: not only "cannot write DIR" for replay's --out (a
+# directory, a missing directory), nor "cannot write FILE" for a JSON that
+# fails as it is written (a full disk).
 expect_exit 3 "replay --out a directory" "$H" replay vectors/walk.bin --quiet --out "$T"
 expect_err "^harness replay: error: cannot write $T (Is a directory)" "replay --out: the reason given"
 expect_exit 3 "replay --out in a missing directory" "$H" replay vectors/walk.bin --quiet --out "$T/no/such/t.csv"
@@ -159,9 +158,9 @@ fi
 
 # --- replay of a log whose time stamps come in pairs (intervals of 0.1 ms
 # and 9.9 ms by turns: a logger stamping each pair of 200 Hz samples as it
-# reads them). info, allan and psd warned of the bursts; replay ran without
-# a word, its stance detector at 101 Hz (1 / the median of its first 32
-# intervals) with a 3-sample window where 200 Hz gives 5. It now warns as
+# reads them). info, allan and psd warn of the bursts; replay must not run
+# without a word, its stance detector at 101 Hz (1 / the median of its first
+# 32 intervals) with a 3-sample window where 200 Hz gives 5. It warns as
 # they do, with the detector's rate and the --input-rate remedy.
 expect_exit 0 "sim: a 200 Hz walk" "$H" sim --duration 20 --rate 200 --out "$T/w200.csv"
 awk -F, 'NR == 1 { print; next } { k = NR - 2; $1 = sprintf("%.4f", int(k / 2) * 0.01 + (k % 2) * 0.0001); print }' OFS=, \
@@ -172,9 +171,8 @@ expect_err "leave the time column out and give --input-rate 200 (docs/harness.md
 expect_exit 0 "info of the log stamped in pairs" "$H" info "$T/pairs.csv"
 expect_err "leave the time column out and give --input-rate 200" "info: the same remedy"
 # the stamps are distinct, 0.1 ms apart in each pair: the cause is samples
-# stamped close together, not samples sharing one stamp (as until
-# 2026-12-01; the median interval is the long one, 9.9 ms, as it is for
-# shared stamps)
+# stamped close together, not samples sharing one stamp (the median interval
+# is the long one, 9.9 ms, as it is for shared stamps)
 expect_err "the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 101.01 Hz" "info: the paired stamps' cause is close stamping"
 cut -d, -f2- "$T/pairs.csv" >"$T/pairs_cut.csv"
 expect_exit 0 "replay: the remedy followed" "$H" replay "$T/pairs_cut.csv" --input-rate 200
@@ -184,9 +182,9 @@ expect_exit 0 "replay of the evenly stamped walk" "$H" replay "$T/w200.csv" --qu
 grep -q "bursts" "$T/err" && fail "replay of an even log warned: $(cat "$T/err")" || pass "replay: no bursts warning on evenly stamped stamps"
 
 # --- a .bin whose header states a rate its stamps contradict (1000 Hz
-# stated, stamps 5 ms apart): info printed the stated rate without a word,
-# and its search for the rest took windows of 1000 samples, 5 s of the
-# 200 Hz log. A warning now names both rates and the remedy; a stated rate
+# stated, stamps 5 ms apart): info must not print the stated rate without a
+# word, as its search for the rest takes windows of 1000 samples, 5 s of the
+# 200 Hz log. A warning names both rates and the remedy; a stated rate
 # within 10 % of the stamps' is not questioned.
 expect_exit 0 "convert: the 200 Hz walk as a .bin" "$H" convert "$T/w200.csv" "$T/w200.bin"
 bin_rate "$T/w200.bin" "$T/r1000.bin" 1000
@@ -238,7 +236,7 @@ for f in hdr.bin closed.bin head.csv; do
     json "$T/e.json" 'j["samples"] == 0 and j["complete"] is False and len(j["error"]) > 0 and j["rate_change"] is None' \
         && pass "info $f: the JSON says the log is empty" || fail "info $f: no JSON saying the log is empty"
 done
-# the empty log's JSON comes from info's own writer (a list of its keys kept by hand until 2026-12-01): the same keys
+# the empty log's JSON comes from info's own writer (not a list of its keys kept by hand): the same keys
 # in the same order as a log's that was read in part (both have "error"), and as a whole log's but "error"
 head -c 10000 vectors/walk.bin >"$T/part.bin"
 expect_exit 1 "info --json of a truncated walk" "$H" info "$T/part.bin" --json "$T/part.json"
@@ -274,9 +272,9 @@ expect_exit 1 "replay --out - of head.csv" "$H" replay "$T/head.csv" --out -
 # --- a CSV header whose units are spelled in UTF-8 (docs/log-format.md,
 # "Names read without --columns"): the degree sign (U+00B0), the micro
 # signs (U+00B5, U+03BC) and superscript two (U+00B2) read as deg, u and 2.
-# Until 2026-12-01 'gx [°/s]', 'gyr_x(°/s)', 'acc_x [m/s²]' and 't [µs]'
-# matched no channel and the file was refused (header has no column 't'),
-# and a unit not read ('gx [°/h]', 'ax_µg') was not named.
+# Otherwise 'gx [°/s]', 'gyr_x(°/s)', 'acc_x [m/s²]' and 't [µs]' would
+# match no channel and the file be refused (header has no column 't'); and
+# a unit not read ('gx [°/h]', 'ax_µg') is named.
 expect_exit 0 "the walk as CSV, for the units' headers" "$H" convert vectors/walk.bin "$T/u_walk.csv"
 head -n 401 "$T/u_walk.csv" >"$T/u_ref.csv"
 u_hdr() { # FILE HEADER TIME-SCALE GYRO-SCALE: the walk's first 400 samples under HEADER, time and rates multiplied
@@ -297,7 +295,7 @@ for f in u_deg u_par u_mu; do
     else fail "$f.csv: read otherwise than the walk's CSV"; fi
 done
 expect_err "--units time=us,gyro=deg/s" "u_mu.csv: the Greek mu read as micro"
-# --units takes the same spellings (time=µs, gyro=°/s: unknown units, exit 2, until 2026-12-01)
+# --units takes the same spellings (time=µs, gyro=°/s: not unknown units, exit 2)
 expect_exit 0 "convert with --units time=µs,accel=m/s²,gyro=°/s" "$H" convert "$T/u_par.csv" "$T/u_opt.csv" \
     --columns 't=Time (µs),ax=AccX (m/s²),ay=AccY (m/s²),az=AccZ (m/s²),gx=gyr_x(°/s),gy=gyr_y(°/s),gz=gyr_z(°/s)' \
     --units time=µs,accel=m/s²,gyro=°/s
@@ -307,7 +305,7 @@ expect_exit 2 "--units gyro=°/h" "$H" info "$T/u_par.csv" --units gyro=°/h
 expect_err "gyro=°/h: the rate unit is rad/s, deg/s (dps, °/s) or mdps" "--units gyro=°/h: refused, the value as given"
 # --columns alone on names that state their units: read in SI units as
 # asked, with a warning naming the column and the --units that reads them
-# (read without a word until 2026-12-01)
+# (not read without a word)
 expect_exit 0 "convert with --columns alone over UTF-8 units" "$H" convert "$T/u_deg.csv" "$T/u_col.csv" \
     --columns 't=time [s],ax=acc_x [m/s²],ay=acc_y [m/s²],az=acc_z [m/s²],gx=gx [°/s],gy=gy [°/s],gz=gz [°/s]'
 expect_err "u_deg.csv:1: column 5 ('gx \[°/s\]') names deg/s, but the rates are read in rad/s (--units gyro=deg/s reads the column's unit)" \
@@ -324,7 +322,7 @@ expect_exit 1 "info of gx [°/h]" "$H" info "$T/u_degh.csv"
 expect_err "u_degh.csv:1: header has no column 'gx'.*column 5 ('gx \[°/h\]') names a unit not read, '°/h' (a rate's: rad/s, deg/s" \
     "a rate unit not read: the column and the unit named"
 # micro-g (µg, μg, ug: 9.80665e-6 m/s^2, the standard g that g and mg are read with) is read, in a header and in
-# --units; until 2026-12-02 'ax_µg' was refused as 'a unit not read' (exit 1). The walk's accelerations in µg give
+# --units; 'ax_µg' is not refused as 'a unit not read' (exit 1). The walk's accelerations in µg give
 # the walk's samples and info's figures; another unit (ng) is still refused, the list naming µg
 u_ug() { # FILE HEADER: the walk's first 400 samples under HEADER, the accelerations in micro-g
     { printf '%s\n' "$2"
@@ -361,8 +359,8 @@ expect_err "column 2 ('ax_ng') names a unit not read, 'ng' (an acceleration's: m
 
 # after the gzip data: a second gzip member (concatenated .gz files, valid: gunzip reads them whole) is read, and
 # bytes that are no gzip member (trailing junk, a block's zero padding) are a warning naming the file and their count,
-# the samples those of the gzip data, as gunzip says "decompression OK, trailing garbage ignored". Until 2026-12-02 the
-# junk was ignored without a word (zlib's gzread does); docs/log-format.md, "After the gzip data"
+# the samples those of the gzip data, as gunzip says "decompression OK, trailing garbage ignored". The junk is not
+# ignored without a word (as zlib's gzread does); docs/log-format.md, "After the gzip data"
 head -n 201 "$T/u_ref.csv" >"$T/z.csv"
 gzip -c "$T/z.csv" >"$T/z.csv.gz"
 expect_exit 0 "info of the plain CSV" "$H" info "$T/z.csv"
@@ -398,12 +396,12 @@ json "$T/zwjunk.json" '[j[k] for k in ("duration_s", "distance_m", "strides")] =
 
 # --- a file of another, binary format given as a log (a plot, a zip): no
 # importer's header is found and it is read as CSV, whose error on line 1
-# was "header has no column 't' ... give --from FORMAT for another format,
-# or give its names and units with --columns and --units" (a PNG of
-# docs/img, exit 1): advice no such file can follow. Now it is named as
-# binary data, neither a .bin nor text (exit 1 as before). So is one given
-# to allan as a --series of numbers (the same helper, hx_head_not_text),
-# which said "plot.png:2: not a number" (its first line taken for a header).
+# would be "header has no column 't' ... give --from FORMAT for another
+# format, or give its names and units with --columns and --units" (a PNG of
+# docs/img, exit 1): advice no such file can follow. It is named as binary
+# data, neither a .bin nor text (exit 1). So is one given to allan as a
+# --series of numbers (the same helper, hx_head_not_text), not
+# "plot.png:2: not a number" (its first line taken for a header).
 cp "$(ls docs/img/*.png | head -n 1)" "$T/plot.png"
 printf 'PK\003\004\024\000\006\000\010\000\000\000!\000' >"$T/book.xlsx"
 for f in plot.png book.xlsx; do
@@ -420,7 +418,7 @@ expect_err "plot.png: binary data, not a log: its first bytes 89 50 4e 47 0d 0a 
 # a CSV saved as UTF-16 (Windows' "Unicode text" export, with or without its
 # byte-order mark): "FILE:1: a NUL byte in the text (binary data, e.g. a
 # logger's unwritten blocks)" with the mark, the --columns advice without
-# it, where the file only needs saving as UTF-8 (2026-12-02)
+# it, where the file only needs saving as UTF-8
 head -n 50 vectors/nav/golden/gx2_walk2.csv >"$T/u8.csv"
 "${PY:-/usr/bin/python3}" -c 'import sys; t = open(sys.argv[1]).read(); open(sys.argv[2], "wb").write(t.encode("utf-16")); open(sys.argv[3], "wb").write(t.encode("utf-16-le")); open(sys.argv[4], "wb").write(t.encode("utf-16-be"))' \
     "$T/u8.csv" "$T/u16.csv" "$T/u16le.csv" "$T/u16be.csv" || fail "write the UTF-16 copies"
@@ -442,10 +440,10 @@ expect_exit 1 "info of a text CSV of no known layout" "$H" info "$T/other2.csv"
 expect_err "give its names and units with --columns and --units" "a text CSV of no known layout: --columns advised"
 
 # --- '-' given to an output option that cannot write to standard output:
-# `replay --plot -` wrote a PNG named '-' (exit 0), as did allan's, psd's
-# (a directory '-'), montecarlo's and simgap's --plot, allan's --profile,
-# simgap-validate's --markdown and eval's --plots, and live took --plot -
-# and --record -; sim refused its --truth - already. Now each is a usage
+# not a PNG named '-' (exit 0) from `replay --plot -`, nor from allan's,
+# psd's (a directory '-'), montecarlo's and simgap's --plot, allan's
+# --profile, simgap-validate's --markdown and eval's --plots, nor live's
+# --plot - and --record -, as sim's --truth - is refused. Each is a usage
 # error naming the option, exit 2, before anything is read or written (run
 # in an empty directory, which stays empty).
 HA=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")

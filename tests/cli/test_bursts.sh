@@ -3,11 +3,12 @@
 # time (docs/harness.md, "Time stamps in bursts"): the message names a remedy
 # the format allows, and following it to the letter makes replay run (exit 0)
 # on a walk stamped in bursts, to the trajectory of the same walk stamped
-# evenly. Until 2026-12-01 every format was told to "leave the time column out
-# and give --input-rate N": a .bin has no column to leave out and ignores
-# --input-rate, so do the time-stamped importers (pyshoe, ngimu, an MT Manager
-# export by SampleTimeFine), and a counter's (ipol) only rescales the stamps;
-# a CSV whose time column --columns names met an error when the column was cut.
+# evenly. One remedy for every format, "leave the time column out and give
+# --input-rate N", would be wrong for most: a .bin has no column to leave out
+# and ignores --input-rate, so do the time-stamped importers (pyshoe, ngimu,
+# an MT Manager export by SampleTimeFine), and a counter's (ipol) only rescales
+# the stamps; a CSV whose time column --columns names meets an error when the
+# column is cut.
 set -u
 H=${HARNESS:-bin/harness}
 T=$(mktemp -d)
@@ -50,7 +51,8 @@ cmp -s "$T/csv_traj.csv" "$T/even_traj.csv" && pass "csv: the remedy gives the e
 
 # 2. a CSV whose time column --columns names (a Movella DOT-like CSV, SampleTimeFine in us, Gyr_* in deg/s,
 # docs/log-format.md "MT Manager export"): the remedy names the --columns item to drop; the column cut from the
-# file with t= kept is an error (exit 1), as it was the only way the old remedy read
+# file with t= kept is an error (exit 1), as a one-size remedy ("leave the time column out") followed to the letter
+# would have it
 awk -F, 'NR > 1 { i = NR - 2; printf "%d,%d,0.1,0.2,0.3,%s,%s,%s,%.9g,%.9g,%.9g\n", i, 12345678 + (int(i / 4) + 1) * 10000 + 5 * (i % 4), $2, $3, $4, $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232 }
     BEGIN { print "PacketCounter,SampleTimeFine,Euler_X,Euler_Y,Euler_Z,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z" }' "$T/w.csv" > "$T/dot.csv"
 ch="ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z"

@@ -19,15 +19,15 @@ expect_err "0 or 1" "--param switch error says what it takes"
 expect_exit 0 "--param zaru=1 accepted" "$H" replay vectors/walk.bin --quiet --param zaru=1
 expect_exit 0 "--param lever=0 accepted" "$H" replay vectors/walk.bin --quiet --param lever=0
 
-# --- a lever random walk whose square overflows float32 (fnav_ukf_init): it
-# ran with exit 0, the covariance guard clamping the lever's variance at
-# every step (47,493 times on gx2 walk 2; the UKF review, 2026-12-01)
+# --- a lever random walk whose square overflows float32 (fnav_ukf_init): not
+# a run with exit 0, the covariance guard clamping the lever's variance at
+# every step (47,493 times on gx2 walk 2)
 expect_exit 2 "--param lever_rw=1e20 refused" "$H" replay vectors/walk.bin --quiet --param lever_rw=1e20
 expect_err "out of range" "--param lever_rw=1e20: the error says the value is out of range"
 expect_exit 0 "--param lever_rw=0 accepted" "$H" replay vectors/walk.bin --quiet --param lever_rw=0
 # --- an initial yaw sd beyond what the UKF's sigma points represent: taken,
-# it shrank at the first prediction (yaw_sd_deg=90 read 32.4 deg a sample
-# later; the UKF review, 2026-12-01); refused, naming the largest
+# it would shrink at the first prediction (yaw_sd_deg=90 reads 32.4 deg a
+# sample later); refused, naming the largest
 expect_exit 2 "--param yaw_sd_deg=90 refused" "$H" replay vectors/walk.bin --quiet --param yaw_sd_deg=90
 expect_err "yaw_sd_deg = 90 deg is above 40.5 deg, the largest initial attitude sd" \
     "--param yaw_sd_deg=90: the error names the largest sd (18 states)"
@@ -35,8 +35,8 @@ expect_exit 2 "--param tilt_sd_deg=41 refused" "$H" replay vectors/walk.bin --qu
 expect_err "tilt_sd_deg = 41 deg is above 40.5 deg" "--param tilt_sd_deg=41: named"
 expect_exit 0 "--param yaw_sd_deg=40 accepted" "$H" replay vectors/walk.bin --quiet --param yaw_sd_deg=40
 
-# --- `harness help CMD` is CMD's help (it printed the list of commands, and
-# `harness help nosuch` exited 0)
+# --- `harness help CMD` is CMD's help (not the list of commands), and
+# `harness help nosuch` does not exit 0
 expect_exit 0 "harness help" "$H" help
 expect_out "^commands:" "harness help lists the commands"
 expect_exit 0 "harness help replay" "$H" help replay
@@ -49,15 +49,14 @@ expect_err "unknown command 'nosuch'" "harness help nosuch names the command"
 if [ -s "$T/out" ]; then fail "harness help nosuch wrote to standard output"; else pass "harness help nosuch: nothing on standard output"; fi
 expect_exit 2 "harness help with two commands" "$H" help info replay
 # `help help` (and `help --help`, `--help help`) is the general help, as
-# `help` alone (it answered "unknown command 'help'", exit 2; a review,
-# 2026-12-02)
+# `help` alone (not "unknown command 'help'", exit 2)
 for w in "help help" "help --help" "--help help" "help -h"; do
     # shellcheck disable=SC2086
     expect_exit 0 "harness $w" "$H" $w
     expect_out "^commands:" "harness $w lists the commands"
 done
 # the list of commands on a full disk is a write error, as every command's
-# output is (it exited 0)
+# output is (not exit 0)
 if [ -w /dev/full ]; then
     "$H" --help >/dev/full 2>"$T/err"; rc=$?
     [ "$rc" -eq 3 ] && pass "harness --help >/dev/full exits 3" || fail "harness --help >/dev/full: exit $rc, expected 3"
@@ -180,24 +179,24 @@ expect_out_re "^ {25}the filter's sensor profile" "its help follows on the next 
 
 # --- info's rate of a time-stamped text log is estimated from the stamps of
 # its first 4,096 samples, as every command's (hx_reader_open), while the
-# interval line is of the whole log: docs/harness.md said 1 / the median
-# interval, and pyshoe's 2017-11-22-11-22-03_imu.csv reads "rate 200.000 Hz"
+# interval line is of the whole log (docs/harness.md, not 1 / the median
+# interval), and pyshoe's 2017-11-22-11-22-03_imu.csv reads "rate 200.000 Hz"
 # beside "median 4.998 ms" (its first 4,096 intervals have a median of 5.000 ms)
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; t = 0; for (k = 0; k < 9100; k++) { printf "%.6f,0,0,9.8,0,0,0\n", t; t += (k < 4100 ? 0.010 : 0.010002) } }' > "$T/r.csv"
 expect_exit 0 "info on a log whose interval grows by 2 us after 4,100 samples" "$H" info "$T/r.csv"
 # (stamps exact to the period, every interval the same: a grid, whose median
-# interval is exact, and the line says so; until 2026-11-29 stamps no finer
-# than the period were all "coarse", and the line said "their mean interval
-# without gaps", the same 100 Hz)
+# interval is exact, and the line says so; stamps no finer than the period
+# are not all "coarse", with the line saying "their mean interval without
+# gaps", the same 100 Hz)
 expect_out "^rate        100.000 Hz (from the time stamps of the first 4,096 samples: 1 / their median interval)$" "the rate is of the first 4,096 samples, and the line says so"
 expect_out "^interval    median 10.002 ms" "the interval line is of the whole log"
 grep -q "first 4,096 samples" docs/harness.md && pass "docs/harness.md says the rate is of the first 4,096 samples" ||
     fail "docs/harness.md does not say that info's rate comes from the first 4,096 samples"
 
 # --- info --json's counter_drops is null for a log without a sensor counter
-# (the text leaves its drops line out): it wrote 0, "no drops", for the xio,
-# OpenShoe 820 Hz and footprint logs (a user review); a square2 log counts
-# its samples, and three missing counter values are 3
+# (the text leaves its drops line out), not 0, "no drops", for the xio,
+# OpenShoe 820 Hz and footprint logs; a square2 log counts its samples, and
+# three missing counter values are 3
 awk 'BEGIN { print "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps"; for (k = 0; k < 1000; k++) if (k < 500 || k > 502) printf "%d,0,0,-9.8,0,0,0\n", k }' > "$T/sq.csv"
 expect_exit 0 "info --json, a log with a counter" "$H" info "$T/sq.csv" --json "$T/sq.json"
 expect_out "^drops       3 (missing sensor counter values)$" "the text counts the drops"
@@ -224,9 +223,9 @@ expect_err "cannot both write to standard output" "two outputs on standard outpu
 expect_exit 2 "replay --out - --json=-" "$H" replay vectors/walk.bin --quiet --out=- --json=-
 
 # --- allan's and psd's `--out -` is standard output, as replay's, live's and
-# eval's: it wrote a file named '-' in the current directory, and the table
-# went to standard output, while `--out - --json -` was refused as two
-# outputs on standard output (a user review, 2026-11-30)
+# eval's: not a file named '-' in the current directory, with the table on
+# standard output; and `--out - --json -` is refused as two outputs on
+# standard output
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; s = 1; for (i = 0; i < 3000; i++) { s = (s * 1103515245 + 12345) % 2147483648; r = s / 2147483648.0 - 0.5; printf "%.2f,%.4f,%.4f,%.4f,%.5f,%.5f,%.5f\n", i / 100, r / 50, -r / 40, -9.81 + r / 30, r / 1000, -r / 900, r / 800 } }' >"$T/still.csv"
 for c in allan psd; do
     rm -f ./-
@@ -242,17 +241,16 @@ for c in allan psd; do
 done
 
 # --- replay checks --from and --input-rate as every command that reads a log
-# (hx_check_input_opts): it took --from auto, which the others refuse, and
-# worded the error its own way
+# (hx_check_input_opts): it refuses --from auto, as the others do, and words
+# the error their way
 for c in info replay psd allan simgap; do
     expect_exit 2 "$c --from auto refused" "$H" $c vectors/walk.bin --from auto
     expect_err "unknown input format 'auto' (known: bin, csv" "$c --from auto: the shared message"
     expect_exit 2 "$c --input-rate 0x10 refused" "$H" $c vectors/walk.bin --input-rate 0x10
 done
 
-# --- stream's --help lists every exit status (it left out 130 / 143, Ctrl-C /
-# SIGTERM before the END frame, docs/harness.md "stream"; 129, SIGHUP, since
-# 2026-12-01)
+# --- stream's --help lists every exit status (130 / 143, Ctrl-C / SIGTERM
+# before the END frame, docs/harness.md "stream", and 129, SIGHUP, among them)
 expect_exit 0 "stream --help" "$H" stream --help
 expect_out "130 (143, 129) interrupted by Ctrl-C (SIGTERM, SIGHUP)" "stream --help names the status of an interrupted stream"
 
@@ -274,9 +272,9 @@ expect_exit 0 "sim --seed 1e3 (a whole number)" "$H" sim --out "$T/s.bin" --dura
 
 # --- a JSON file is UTF-8 text (RFC 8259) whatever the bytes of a file name
 # in it: a Latin-1 byte (0xe9) is the replacement character U+FFFD, a
-# quote, a backslash and a UTF-8 'ü' are kept as they are. The byte went
-# through as it was, and a strict reader refused replay's JSON ("'utf-8'
-# codec can't decode byte 0xe9"; the JSON review, 2026-11-30)
+# quote, a backslash and a UTF-8 'ü' are kept as they are. The byte passed
+# through as it is would make a strict reader refuse replay's JSON ("'utf-8'
+# codec can't decode byte 0xe9")
 NAME=$(printf 'w\351lk"\\\303\274.bin')
 cp vectors/walk.bin "$T/$NAME"
 for c in replay psd; do
@@ -295,8 +293,8 @@ rm -f "$T/$NAME"
 expect_exit 0 "info --json - --help" "$H" info vectors/walk.bin --json - --help
 expect_out "^usage: harness info LOG" "the help is on standard output beside --json -"
 
-# --- a long conversion shows progress on standard error (the scale review,
-# 2026-11-29: a day at 100 Hz took 11 s to CSV without a word). A reader that
+# --- a long conversion shows progress on standard error (a day at 100 Hz
+# takes 11 s to CSV, which would pass without a word). A reader that
 # waits 2 s before it drains standard output holds convert past the 1 s after
 # which progress appears, however fast the machine; 200,000 samples.
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 200000; i++) printf "%.2f,0.01,0.02,-9.81,0.001,0.002,0.003\n", i / 100 }' >"$T/long.csv"
@@ -304,12 +302,12 @@ awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 200000; i++) printf "%
 expect_err "^convert: *[0-9]* % (" "convert of a long log: progress on standard error"
 expect_err "^convert: done in" "convert of a long log: the progress ends with the time taken"
 # past 2 s and 5 % the progress says how long is left at the rate so far
-# (2026-11-30: montecarlo's percentage alone left a user guessing)
+# (a percentage alone, as montecarlo's, leaves a user guessing)
 expect_err "^convert: *[0-9]* % ([0-9.]* s, about [0-9]* s left)$" "convert of a long log: the time left"
 rm -f "$T/long.csv"
 
-# --- mistakes a user can make that no test ran before make coverage-harness
-# (2026-11-30): the command line, an output that cannot be written, an
+# --- mistakes a user can make that no other test runs (make
+# coverage-harness): the command line, an output that cannot be written, an
 # empty log, a stream to a file that is not a serial port. Each is refused
 # with its exit status and a message naming what is wrong, and leaves no
 # output file behind.
@@ -348,9 +346,9 @@ expect_exit 1 "stream of a log with a header and no sample" "$H" stream "$T/hdr.
 expect_err "^harness stream: error: $T/hdr.csv: no samples" "stream: the empty log named"
 [ ! -e "$T/port" ] && pass "stream: no port opened or created for an empty log" || fail "stream created $T/port"
 
-# --- a full disk (/dev/full: every write fails with ENOSPC), never run
-# before make coverage-harness (2026-11-30): the write failure is an
-# output error, exit 3, naming the file, not a success.
+# --- a full disk (/dev/full: every write fails with ENOSPC), run by no other
+# test (make coverage-harness): the write failure is an output error, exit 3,
+# naming the file, not a success.
 if [ -c /dev/full ]; then
     expect_exit 3 "convert onto a full disk" "$H" convert vectors/walk.bin /dev/full
     expect_err "^harness convert: error: /dev/full: write failed (No space left on device)" "convert: the failed write named"
@@ -364,8 +362,8 @@ else
     echo "skip the full-disk checks (no /dev/full)"
 fi
 
-# --- --from naming a format the file is not (never run before make
-# coverage-harness, 2026-11-30): the importer says what it expected at which
+# --- --from naming a format the file is not (run by no other test: make
+# coverage-harness): the importer says what it expected at which
 # line, exit 1; refused at the header, no --out is written.
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n' >"$T/plain.csv"
 rm -f "$T/from.csv"
@@ -380,7 +378,7 @@ expect_exit 1 "a GX2 file whose first data line is not one" "$H" replay "$T/gx2.
 expect_err "gx2.txt:2: not a GX2 data line" "--from gx2: the line that is not GX2 data named"
 rm -f "$T/plain.csv" "$T/gx2.txt" "$T/from.csv"
 
-# ... and the header checks of the other importers (never run by a test before 2026-11-30: make
+# ... and the header checks of the other importers (run by no other test: make
 # coverage-harness), a file of blank lines, and an ipol file with its rate line and no header: exit 1, each named
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n' >"$T/plain.csv"
 for fc in "pyshoe:t_s:t" "adis:acc_x_g:ax" "square2:sample:t" "ngimu:Time (s):t"; do
@@ -398,7 +396,7 @@ expect_exit 1 "an ipol file with its rate line alone" "$H" info "$T/blank.txt" -
 expect_err "blank.txt: empty file (no header line)" "--from ipol: the header line missing after the rate"
 rm -f "$T/plain.csv" "$T/blank.txt"
 
-# --- the importers' counters (no test fed a bad one before 2026-11-30; docs/log-format.md): square2's sample
+# --- the importers' counters (no other test feeds a bad one; docs/log-format.md): square2's sample
 # column and ipol's PacketCounter (time = counter / rate), GX2's Counter and Nr. A bad counter ends the read at
 # its line, exit 1, naming the line (and, but for GX2, the value), the samples before it kept; ipol's 16-bit
 # counter wraps (65535, 0: one interval on), a drop by less than half its range is time going backwards.
@@ -427,8 +425,8 @@ ctr_bad "square2, a fractional sample number" "sq.csv:4: counter ('2.5') is not 
 sq_log "$T/sq.csv" 0 1 abc 3
 ctr_bad "square2, a sample number that is text" "sq.csv:4: counter ('abc') is not a number" \
     "$H" info "$T/sq.csv" --from square2
-# beyond 32 bits: said so (until 2026-11-30 "is not a non-negative number", of a counter that is; and above 4e9,
-# which 32 bits still hold)
+# beyond 32 bits: said so (not "is not a non-negative number", of a counter that is; nor above 4e9, which 32 bits
+# still hold)
 sq_log "$T/sq.csv" 0 1 5e9 3
 ctr_bad "square2, a sample number beyond 32 bits" "sq.csv:4: counter ('5e9') is beyond 32 bits (4294967295)" \
     "$H" info "$T/sq.csv" --from square2
@@ -484,8 +482,8 @@ gx_log "$T/gx.txt" 130516848:1:1000.000 130595568:2:1000.004 5e9:3:1000.008
 ctr_bad "GX2, a Counter beyond 32 bits" "gx.txt:6: Counter ('5e9') is not a 32-bit count" "$H" info "$T/gx.txt" --from gx2
 rm -f "$T/sq.csv" "$T/ip.txt" "$T/gx.txt"
 
-# --- the plotting backend fails or is missing (no test ran a failing gnuplot with allan, psd, montecarlo, simgap
-# or eval, nor checked the other outputs of replay's, before 2026-11-30). A gnuplot that fails partway is an
+# --- the plotting backend fails or is missing (no other test runs a failing gnuplot with allan, psd, montecarlo,
+# simgap or eval, nor checks the other outputs of replay's). A gnuplot that fails partway is an
 # output error, exit 3, naming the picture, whose partial file is removed, and every other output is still
 # written (docs/harness.md, "Exit status": nothing computed is lost); eval warns, leaves the figure out (no link
 # to it) and goes on. Without gnuplot a plot is refused before the input is read, exit 3, nothing written; eval
@@ -527,8 +525,8 @@ mkdir -p "$T/gev/xio_ngimu_gait"
     fail "sim of a walk for eval"
 expect_exit 0 "eval, gnuplot failing" env PATH="$T/failgp:$PATH" "$H" eval --no-experiments --data "$T/gev" \
     --out "$T/gev/r.md" --json "$T/gev/r.json"
-# eval goes on (exit 0): the failure is a warning, as the harness labels what does not stop a run (it was
-# "error: gnuplot failed ..." with exit 0; the code review of 2026-11-30)
+# eval goes on (exit 0): the failure is a warning, as the harness labels what does not stop a run (not
+# "error: gnuplot failed ..." with exit 0)
 expect_err "harness eval: warning: gnuplot failed to write $T/gev/img/eval-xio.png; the partial file was removed" \
     "eval: the failed picture named, as a warning"
 [ ! -e "$T/gev/img/eval-xio.png" ] && pass "eval: no partial picture left" || fail "eval: $T/gev/img/eval-xio.png left behind"
@@ -560,8 +558,8 @@ for c in "psd:psd.png" "montecarlo:gm4.png" "simgap:z.png"; do
     expect_err "^harness $cmd: error: cannot draw $T/gnp/${c#*:}: gnuplot is not installed" "$cmd without gnuplot: said"
     [ ! -e "$T/gnp.json" ] && pass "$cmd without gnuplot: refused before the run, no --json" || fail "$cmd without gnuplot: --json written"
 done
-# a --plot directory not there yet is not made when the run is refused for want of gnuplot (psd and simgap made it
-# first and left it empty; the code review of 2026-11-30)
+# a --plot directory not there yet is not made when the run is refused for want of gnuplot (not made first and
+# left empty, as psd and simgap could)
 for cmd in psd simgap; do
     rm -rf "$T/gnpnew"
     case $cmd in

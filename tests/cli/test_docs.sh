@@ -4,9 +4,9 @@
 # synopsis in docs/harness.md is in that command's --help; every key the
 # JSON outputs write (replay, info, eval with the shared data, psd, allan,
 # montecarlo) is named in theirs; every relative link, anchor and section
-# reference of the docs resolves. A review found the allan JSON's fit keys
-# documented under names the code never wrote and most psd and allan keys
-# undocumented (2026-11-28).
+# reference of the docs resolves. Without it, the allan JSON's fit keys could
+# be documented under names the code never writes, and most psd and allan
+# keys go undocumented.
 # $HARNESS is the harness binary (set by `make test-cli`).
 set -u
 H=${HARNESS:-bin/harness}
@@ -99,7 +99,7 @@ expect_exit 0 "info --json" "$H" info "$W" --json "$T/info.json"
 check_keys "info --json" "$T/info.json" harness.md
 expect_exit 0 "psd --json" "$H" psd "$W" --sensitivity --json "$T/psd.json"
 check_keys "psd --json" "$T/psd.json" psd.md
-# allan on a static log (a walk is refused as not static since 2026-11-28, docs/allan.md "Command")
+# allan on a static log (a walk is refused as not static, docs/allan.md "Command")
 "$H" sim --motion stand --duration 120 --rate 100 --profile mtx --seed 3 --out "$T/stand.bin" >/dev/null 2>&1 ||
     fail "sim a static log for allan"
 expect_exit 0 "allan --json" "$H" allan "$T/stand.bin" --channels gx,gy --fit-extra --json "$T/allan.json"
@@ -122,8 +122,7 @@ check_keys "montecarlo --json" "$T/mc.json" simulator.md
 # section of another document, `X.md, "Heading"` (also `X.md "Heading"`,
 # `[X.md](X.md), "Heading"`, across a line break), names a heading or a bold
 # paragraph label (**Units check.**) of X.md that begins with that text.
-# Outside code blocks and inline code. The docs audit of 2026-11-30 found
-# none broken; nothing checked them before.
+# Outside code blocks and inline code.
 ROOT=$(cd "$DOCS/.." && pwd)
 if (cd "$ROOT" && /usr/bin/python3 - README.md CONTRIBUTING.md docs/*.md) >"$T/links" 2>&1 <<'PY'
 import os, re, sys

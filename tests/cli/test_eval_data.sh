@@ -30,9 +30,8 @@ if [ "$rows" -eq 70 ] && grep -q '"failed_runs":[[:space:]]*70' "$T/many.json"; 
     pass "every one of 70 walks has its row and run"; else fail "70 walks: $rows rows, $(grep -o '"failed_runs":[^,]*' "$T/many.json")"; fi
 
 # --- a walk read to its end on which the filter never aligned (it moves
-# throughout) is a failed run for that reason: its row said "input ends early
-# (... no still period ...): the walk was read only in part" (the JSON
-# review, 2026-11-30)
+# throughout) is a failed run for that reason: its row must not say "input
+# ends early (... no still period ...): the walk was read only in part"
 mkdir -p "$T/noal/openshoe_gx2"
 awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++)
     printf "%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", i / 200, 4 * (rand() - 0.5), 4 * (rand() - 0.5),
@@ -43,8 +42,7 @@ if grep -q "^| Measurement_2000_1 | - |.*| not run: the filter never aligned: no
     ! grep -q "read only in part" "$T/noal.md" && json "$T/noal.json" 'j["failed_runs"] == 1'; then
     pass "a walk that never aligned is a failed run, named as such"; else fail "never aligned: $(grep '^| Measurement' "$T/noal.md")"; fi
 # ... and why it never aligned, as replay says it: a time column that never
-# advances was named "no still period at the start" (the JSON review's
-# merge, 2026-11-30)
+# advances is not named "no still period at the start"
 mkdir -p "$T/t0/openshoe_gx2"
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) print "0,0.01,0.02,9.81,0.001,0.002,0.003" }' \
     > "$T/t0/openshoe_gx2/Measurement_2000_1_data_inert.txt"
@@ -53,7 +51,7 @@ if grep -q "^| Measurement_2000_1 | - |.*| not run: the filter never aligned: th
     pass "a walk whose time stamps never advance: the reason in its row"; else fail "time stamps: $(grep '^| Measurement' "$T/t0.md")"; fi
 
 # --- with the experiments on, a bad walk is one failed run (its repeats
-# under the experiments' settings are counted apart: they were added to
+# under the experiments' settings are counted apart, not added to
 # failed_runs, up to eight per walk)
 mkdir -p "$T/exp/openshoe_gx2"
 ln -s "$T/still.csv" "$T/exp/openshoe_gx2/Measurement_2000_1_data_inert.txt"
@@ -62,21 +60,21 @@ if grep -q '"failed_runs":[[:space:]]*1,' "$T/exp.json" && grep -q '"failed_expe
     && grep -q '\*\*1 run(s) failed\*\*' "$T/exp.md" && grep -q "of the experiments' runs failed" "$T/exp.md"; then
     pass "a bad walk counts once; the experiments' repeats apart"
 else fail "experiments: $(grep -o '"failed[a-z_]*":[^,]*' "$T/exp.json")"; fi
-# ... and is warned about once: each of its ten failed repeats warned the same "no stride detected" again
-# until 2026-12-01 (the repeats' count is in the JSON and under the targets)
+# ... and is warned about once: not by each of its ten failed repeats, the same "no stride detected" again
+# (the repeats' count is in the JSON and under the targets)
 n=$(grep -c "Measurement_2000_1_data_inert.txt: no stride detected: no closure to judge" "$T/err")
 [ "$n" -eq 1 ] && pass "a bad walk's fault is warned once, not once per experiment run" ||
     fail "a bad walk's fault with the experiments on: warned $n times"
 # the rate experiment's row of a walk that failed: dashes, as every table
-# (until 2026-11-29 "nan | nan | nan")
+# (not "nan | nan | nan")
 mkdir -p "$T/expx/xio_ngimu_gait"
 ln -s "$T/still.csv" "$T/expx/xio_ngimu_gait/short_walk.csv"
 expect_exit 1 "eval with experiments: one failed xio walk" "$H" eval --data "$T/expx" --out "$T/expx.md" --no-plots
 if grep -q "^| xio short_walk.csv (~400 Hz) | 3-D closure (m) | - | - | - |$" "$T/expx.md" && ! grep -qi "nan" "$T/expx.md"; then
     pass "a failed walk's experiment rows read '-', no nan"; else fail "failed walk in the experiments: $(grep -i 'nan' "$T/expx.md")"; fi
 
-# --- truth files eval refuses (docs/robustness.md, "Bad-input catalogue: eval's truth files"), none of which a
-# test fed before 2026-11-30: a footprint truth with one readable stride row, one whose rows are all unreadable
+# --- truth files eval refuses (docs/robustness.md, "Bad-input catalogue: eval's truth files"), none of which
+# another test feeds: a footprint truth with one readable stride row, one whose rows are all unreadable
 # (junk after a y, a position beyond 1e6 m, a fifth field), one with 1,025 strides; a vicon trial whose every
 # motion-capture position lies beyond 1e6 m; ipol events files without TrialBoundaries, without the left foot's
 # events, of more than 16 MB, and with 257 events. Each is read before its walk is replayed (the logs here are
@@ -138,7 +136,7 @@ for f in left right; do
 done
 json "$T/tbad.json" 'j["failed_runs"] == 17' && pass "each refused truth is a failed run (17)" ||
     fail "refused truths: failed_runs $(grep -o '"failed_runs":[^,]*' "$T/tbad.json")"
-# the warning names the truth file it is about (it named the walk's IMU log until the review of 2026-11-30); a
+# the warning names the truth file it is about (not the walk's IMU log); a
 # missing one, the IMU log ("W_imu.csv: no truth file W_strides_gcp.csv")
 expect_err "own_3dmgx5_footprints/one_strides_gcp.csv: truth file has 1 readable stride rows" "the refusal names the truth file"
 expect_err "own_3dmgx5_footprints/many_strides_gcp.csv: truth file has more than 1024 strides" "the refusal names the truth file (1,025)"
@@ -151,8 +149,8 @@ n=$(grep -c "1-1.json: the events file has no TrialBoundaries pair" "$T/err")
 rm -rf "$B"
 # an events file's fault that only one foot's events have: the foot missing (no LeftFootEvents, no
 # RightFootEvents) or one of its pairs not a pair (an end before its start, NaN). The foot itself fails on it,
-# and so does the other foot, whose evaluation needs them (both feet in the air): the same fault was warned twice
-# until 2026-12-01, once per foot. Once now, naming the events file and what is wrong; each foot keeps its row
+# and so does the other foot, whose evaluation needs them (both feet in the air): the same fault is warned about
+# once, not once per foot, naming the events file and what is wrong; each foot keeps its row
 # and its failed run. The logs are empty placeholders: the events file is read first.
 B="$T/evonce"; ID="$B/ipol_gait_xsens"
 mkdir -p "$ID"
@@ -175,10 +173,10 @@ n=$(grep -c "^| 1-[1-4] | \(left\|right\) | - | - | - | - | - | - | not run: .*\
 rm -rf "$B"
 
 # --- no "nan" in results.md where a figure cannot be computed (the tables and summaries print "-" or say why;
-# until 2026-12-01 these printed "nan", exit 0): an unjudged closed walk without a stride (path 0, so no 3-D %),
+# not "nan", exit 0): an unjudged closed walk without a stride (path 0, so no 3-D %),
 # an ipol trial whose expert swings are all missed (no event to time: the summary's and the target's medians),
 # and a footprint walk whose truth strides all stand at the first one's position (no measured path: its final
-# % was nan, and with it the section's median and mean; a failed run now, as a judged closed walk without a stride)
+# % would be nan, and with it the section's median and mean; a failed run, as a judged closed walk without a stride)
 B="$T/nofig"
 mkdir -p "$B/ipol_gait_xsens" "$B/openshoe_square2" "$B/pyshoe_vicon_llio/own_3dmgx5_footprints"
 for f in lf rf; do
@@ -211,7 +209,7 @@ rm -rf "$B"
 
 # --- the paired tables of the experiments when every walk ties (the same figure in both runs, here a footprint
 # walk whose log never moves: final error = the truth's last stride in every configuration): no untied walk for
-# the sign test, whose p printed "nan" until 2026-12-01; "-" now, as every figure that cannot be computed
+# the sign test, whose p is "-", not "nan", as every figure that cannot be computed
 B="$T/ties"; P="$B/pyshoe_vicon_llio/own_3dmgx5_footprints"
 mkdir -p "$P"
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++) printf "%.3f,0,0,9.80665,0,0,0\n", i / 200 }' >"$P/still_imu.csv"
@@ -224,8 +222,8 @@ n=$(grep -c "^| [a-zA-Z0-9 ]* | footprints final-stride error (%) | 1 | 0 of 0 |
 rm -rf "$B"
 
 # --- the other closed walks are reported, not judged: one without a stride keeps its row (exit 0), and so do its
-# rate experiment's runs. Those were judged as a closure (openshoe_gx2's, xio's): "no stride detected: no closure
-# to judge", two failed experiment runs, exit 1 and dashes, until 2026-12-01 (a still walk at 400 Hz, above the
+# rate experiment's runs. They are not judged as a closure (openshoe_gx2's, xio's): "no stride detected: no closure
+# to judge", two failed experiment runs, exit 1 and dashes (a still walk at 400 Hz, above the
 # experiment's 200 Hz)
 B="$T/unjudged"
 mkdir -p "$B/openshoe_c_820hz"
@@ -240,8 +238,8 @@ grep -q "^| openshoe_c_820hz/walk.txt (400 Hz) | 3-D closure (m) | [0-9.]* | [0-
 rm -rf "$B"
 
 # --- a figures' directory that exists but is no directory (--plots naming a file, or a file img beside --out): an
-# error before the run, exit 3, as a directory that cannot be made, results.md not touched. Until 2026-12-01 it
-# passed the check (mkdir's EEXIST), and each figure printed "error: cannot write .../eval-gx2.png (Not a
+# error before the run, exit 3, as a directory that cannot be made, results.md not touched. Passing the check
+# (mkdir's EEXIST), each figure would print "error: cannot write .../eval-gx2.png (Not a
 # directory)" in the middle of a run that ended with exit 0
 B="$T/pfile"
 mkdir -p "$B/data/openshoe_gx2" "$B/md"
@@ -257,8 +255,8 @@ expect_err "^harness eval: error: the figures' directory $B/md/img is not a dire
     fail "figures' directory not a directory: results.md overwritten"
 rm -rf "$B"
 
-# --- a data directory with a long name (561 bytes, far under PATH_MAX): eval kept 511 bytes of it and said "no
-# shared data in" the cut name, exit 4, until 2026-12-01. It is evaluated; one too long for eval's room (over 1,023
+# --- a data directory with a long name (561 bytes, far under PATH_MAX): eval must not keep 511 bytes of it and say
+# "no shared data in" the cut name, exit 4. It is evaluated; one too long for eval's room (over 1,023
 # bytes) is refused as such, exit 2, not taken for a missing directory
 B=$T/$(printf '%0200d' 0)/$(printf '%0200d' 1)/$(printf '%0140d' 2)
 mkdir -p "$B/openshoe_gx2"
@@ -273,9 +271,10 @@ expect_exit 2 "eval: a data directory longer than eval's room" "$H" eval --no-ex
 expect_err "^harness eval: error: the data directory .* is longer than 1023 bytes" "a data directory too long: said"
 rm -rf "$T/$(printf '%0200d' 0)"
 
-# --- a walk whose file name holds '|' (or a line break): written as it was into a Markdown table row, it made one
-# cell more and broke the table until 2026-12-01; escaped now ("\|"; a control character as '?'). And in a row's
-# reason, where '|' was made '/' (an ipol trial 1|1 without its events file: "cannot open 1/1.json", another name)
+# --- a walk whose file name holds '|' (or a line break): written as it is into a Markdown table row, it would make
+# one cell more and break the table; escaped ("\|"; a control character as '?'). And in a row's
+# reason, where '|' must not be made '/' (an ipol trial 1|1 without its events file: "cannot open 1/1.json", another
+# name)
 B="$T/pipe"
 mkdir -p "$B/openshoe_gx2" "$B/openshoe_square2" "$B/ipol_gait_xsens"
 : >"$B/ipol_gait_xsens/1|1_lf.txt"
@@ -295,8 +294,8 @@ else fail "names with '|': rows with a wrong cell count: $bad"; fi
 rm -rf "$B"
 
 # --- results.md that cannot be written (a full disk): exit 3, the reason given, and the JSON of --json still
-# written; until 2026-12-01 eval returned before it ("nothing computed is lost", docs/harness.md), and the error
-# said "cannot write /dev/full" without why
+# written, eval not returning before it ("nothing computed is lost", docs/harness.md), and the error does not
+# say "cannot write /dev/full" without why
 if [ -w /dev/full ]; then
     B="$T/full"
     mkdir -p "$B/openshoe_square2"
@@ -330,7 +329,7 @@ expect_err "no shared data in $T/emptydir (neither MANIFEST.md nor a data set fo
 
 # a data directory with its MANIFEST.md and set folders but not one walk
 # (a copy not synced): nothing to run on, exit 4, the results file left as
-# it was (it was overwritten with "no data" everywhere, exit 0)
+# it was (not overwritten with "no data" everywhere, exit 0)
 mkdir -p "$T/nowalk/openshoe_gx2" "$T/nowalk/ipol_gait_xsens"
 echo "# Real data for footnav" > "$T/nowalk/MANIFEST.md"
 echo "kept" > "$T/nowalk.md"
@@ -352,8 +351,8 @@ if grep -q "^| openshoe_c_820hz/walk.txt | " "$T/docs.md"; then pass "the walk b
 if grep -q "^No walks found in \`$T/docs/openshoe_square2\`." "$T/docs.md"; then pass "the other closed set's absence is said"; else
     fail "absent openshoe_square2 not named"; fi
 # the paths' axes are the navigation frame's x and y (docs/frames.md: x along the sensor's heading at the alignment,
-# no magnetometer): eval labelled them 'north x' and 'east y', which a figure in a paper reads as geographic (replay's
-# plot was relabelled by the gait review, 2026-11-30; eval's figures kept the old labels)
+# no magnetometer): not 'north x' and 'east y', which a figure in a paper reads as geographic (in eval's figures as
+# in replay's plot)
 fake_gnuplot "$T/fakegp"
 PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp_eval.txt" "$H" eval --no-experiments --data "$T/docs" --out "$T/docs_gp.md" \
     --plots "$T/docs_figs" >/dev/null 2>&1
@@ -430,14 +429,14 @@ if [ -n "$D" ]; then
     if grep -q "^| half | [0-9]* |.*| [0-9]* strides outside the log not scored |" "$T/truth.md"; then
         pass "vicon strides outside the log are noted"; else fail "vicon log cut: $(grep '^| half' "$T/truth.md")"; fi
     if grep -qi "nan" "$T/truth.md"; then fail "nan in the results: $(grep -i '| nan\|nan |' "$T/truth.md")"; else pass "no nan in the figures"; fi
-    # truth rows with junk in a field (the mutation sweep of 2026-11-29): a
+    # truth rows with junk in a field (from a mutation sweep): a
     # y followed by text, a stride index cut to "1.5e", a row split into five
-    # fields ("8.,9.27e+00": its timestamp read as x, x as y). sscanf took
-    # what came before the junk: here a path of 84.1 m for 47.9 and an RMS
+    # fields ("8.,9.27e+00": its timestamp read as x, x as y). sscanf takes
+    # what comes before the junk: here a path of 84.1 m for 47.9 and an RMS
     # of 3.55 m for 0.44, without a word; in the sweep a footprint 2e16 m
     # away (path 39579392000000320.0 m, final 0.00 %, exit 0). They are
     # unreadable rows. So is a line of 600 characters (its index followed by
-    # x and 600 zeros), which was read 511 characters at a time: one
+    # x and 600 zeros), which read 511 characters at a time would be one
     # unreadable row and its tail a stride at sample 0; and an x of -7e42 m
     # (in the sweep a path of 1.4e43 m, final 0.00 %)
     J="$T/junk/pyshoe_vicon_llio/own_3dmgx5_footprints"
@@ -449,27 +448,27 @@ if [ -n "$D" ]; then
     expect_exit 0 "eval: truth rows with junk in a field" "$H" eval --no-experiments --no-plots --data "$T/junk" --out "$T/junk.md"
     if grep -q "^| junk | $((n - 5)) | 4[0-9]\.[0-9] | .*| 5 unreadable truth rows ignored |" "$T/junk.md"; then
         pass "truth rows with junk in a field are unreadable rows, noted"; else fail "junk truth: $(grep '^| junk' "$T/junk.md")"; fi
-    # a NUL byte inside a row is no long line: the row after it was taken
-    # for the rest of a long one and lost without a word (ccf646e's first
-    # test of a long line, the missing newline, which a NUL also gives)
+    # a NUL byte inside a row is no long line: the row after it must not be
+    # taken for the rest of a long one and lost without a word (as a long
+    # line told by a missing newline, which a NUL also gives, would be)
     ln -s "${FP}_imu.csv" "$J/nul_imu.csv"
     awk 'NR == 4 { printf "%s%cjunk\n", $0, 0; next } { print }' "${FP}_strides_gcp.csv" > "$J/nul_strides_gcp.csv"
     expect_exit 0 "eval: a truth row with a NUL byte" "$H" eval --no-experiments --no-plots --data "$T/junk" --out "$T/junk.md"
     if grep -Eq "^\| nul \| ($n \| 47\.9 \| .* \|  \||$((n - 1)) \| 47\.9 \| .* \| 1 unreadable truth row ignored \|)$" "$T/junk.md"; then
         pass "a truth row with a NUL byte takes no other row with it"; else fail "NUL truth: $(grep '^| nul' "$T/junk.md")"; fi
     # the vicon positions in the IMU file, read as the truth rows: a y of
-    # 1.04xyz at the 5th stride was read as 1.04; a line of 600 characters
-    # (an x followed by 600 ']') just before it was two rows, so that the 5th
-    # stride took the position of the row before and every later one too
-    # (the mutation sweep of 2026-11-29): one row without a position
+    # 1.04xyz at the 5th stride is not read as 1.04; a line of 600 characters
+    # (an x followed by 600 ']') just before it is not two rows, so that the
+    # 5th stride would take the position of the row before and every later
+    # one too (from a mutation sweep): one row without a position
     VJ="$T/vjunk/pyshoe_vicon_llio/vicon_3dmgx3"
     mkdir -p "$VJ"
     awk -F, -v r=$row 'BEGIN { OFS = "," } NR == r { $9 = $9 "xyz" } { print }' "${VI}_imu.csv" > "$VJ/yjunk_imu.csv"
     awk -F, -v r=$((row - 1)) 'BEGIN { OFS = "," } NR == r { $8 = $8 sprintf("%600s", "") } { gsub(/ /, "]"); print }' \
         "${VI}_imu.csv" > "$VJ/long_imu.csv"
     ln -s "${VI}_imu.csv" "$VJ/plain_imu.csv"
-    # and an x beyond 1e6 m (FNAV_INPUT_MAX_ABS) at the 5th stride: no position there (no test fed one before
-    # 2026-11-30; docs/robustness.md, "Bad-input catalogue: eval's truth files")
+    # and an x beyond 1e6 m (FNAV_INPUT_MAX_ABS) at the 5th stride: no position there (no other test feeds one;
+    # docs/robustness.md, "Bad-input catalogue: eval's truth files")
     awk -F, -v r=$row 'BEGIN { OFS = "," } NR == r { $8 = "2e6" } { print }' "${VI}_imu.csv" > "$VJ/far_imu.csv"
     for w in yjunk long plain far; do ln -s "${VI}_strides_gcp.csv" "$VJ/${w}_strides_gcp.csv"; done
     expect_exit 0 "eval: vicon positions with junk, a long line" "$H" eval --no-experiments --no-plots --data "$T/vjunk" --out "$T/vjunk.md"
@@ -482,9 +481,9 @@ if [ -n "$D" ]; then
         pass "vicon positions: an x beyond 1e6 m is no position"; else fail "vicon far: $(grep '^| far ' "$T/vjunk.md")"; fi
     # a vicon trial that starts walking (its first 0.25 s cut off: 0.1 s of
     # stillness before the first stride, too little to align on): the filter
-    # aligns in a later stance, the strides before are not navigated and were
-    # scored against frames at position 0 without a word (median stride error
-    # 0.93 m against the whole trial's 0.07 m; the unseen review). Their row
+    # aligns in a later stance, the strides before are not navigated and would
+    # be scored against frames at position 0 without a word (median stride
+    # error 0.93 m against the whole trial's 0.07 m). Their row
     # says so; the whole trial, whose first stride lies in the still period
     # the alignment used, has no such note
     VE="$D/pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-52-02"
@@ -510,8 +509,8 @@ if [ -n "$D" ]; then
         grep -q "^| Measurement_100521_2 | [0-9].* |  |" "$T/cutw.md"; then
         pass "a walk cut off mid-line is noted in its row"; else fail "cut walk: $(grep '^| Measurement' "$T/cutw.md")"; fi
     # a walk whose line 8000 is not data (half way): the reader stops there.
-    # Until 2026-11-29 a note in the row only, no warning, exit 0, and the
-    # half walk's closure (26.6 %) judged against the targets
+    # Not a note in the row only, no warning, exit 0, and the half walk's
+    # closure (26.6 %) judged against the targets
     mkdir -p "$T/badl/openshoe_gx2"
     awk 'NR == 8000 { $2 = "abc" } { print }' "$W" > "$T/badl/openshoe_gx2/Measurement_100601_14_data_inert.txt"
     ln -s "$W" "$T/badl/openshoe_gx2/"
@@ -533,9 +532,9 @@ if [ -n "$D" ]; then
     if [ "$rows" -eq 140 ] && grep -q "^140 trials and feet: 2240 expert strides" "$T/ipmany.md"; then
         pass "every one of 70 ipol trials is scored"; else fail "70 ipol trials: $rows rows; $(grep 'trials and feet' "$T/ipmany.md" | cut -c1-60)"; fi
     # an ipol foot's log with a malformed line half way, the other foot's
-    # cut off mid-line half way: until 2026-11-29 both read up to there
-    # without a word (no warning, no note, exit 0) and the expert strides
-    # after it counted as missed (8 and 8: the detector blamed for the data)
+    # cut off mid-line half way: neither read up to there without a word (no
+    # warning, no note, exit 0), with the expert strides after it counted as
+    # missed (8 and 8: the detector blamed for the data)
     mkdir -p "$T/ipbad/ipol_gait_xsens"
     ln -s "$D/ipol_gait_xsens/1-1.json" "$T/ipbad/ipol_gait_xsens/1-1.json"
     awk 'BEGIN { FS = OFS = "\t" } NR == 1500 { $2 = "abc" } { print }' "$D/ipol_gait_xsens/1-1_lf.txt" > "$T/ipbad/ipol_gait_xsens/1-1_lf.txt"
@@ -562,9 +561,9 @@ if [ -n "$D" ]; then
         pass "ipol: events in counter values, not packets since the file's first"; else fail "ipol first packets lost: $(grep '^| 1-1 | left' "$T/ipfirst.md")"; fi
     # several expert swings close together: 1-1's left swing [641, 687]
     # annotated as three, the middle one with the right foot in the air too
-    # (left out). The one detected swing there detects one of them: it was
-    # counted twice (16 detected, 0 missed), since leaving the middle one
-    # out cleared the mark that the first had taken it
+    # (left out). The one detected swing there detects one of them, not
+    # counted twice (16 detected, 0 missed), as leaving the middle one out
+    # could clear the mark that the first had taken it
     mkdir -p "$T/ipdbl/ipol_gait_xsens"
     for f in lf rf; do ln -s "$D/ipol_gait_xsens/1-1_$f.txt" "$T/ipdbl/ipol_gait_xsens/"; done
     sed 's/\[641, 687\]/[641, 660], [661, 665], [666, 687]/; s/"RightFootEvents": \[/"RightFootEvents": [[661, 665], /' \
@@ -572,10 +571,10 @@ if [ -n "$D" ]; then
     expect_exit 0 "eval: expert swings close together" "$H" eval --no-experiments --data "$T/ipdbl" --out "$T/ipdbl.md"
     if grep -q "^| 1-1 | left | 16 | 15 | 1 | 0 | " "$T/ipdbl.md"; then
         pass "ipol: a detected swing detects one expert swing, not two"; else fail "ipol double match: $(grep '^| 1-1 | left' "$T/ipdbl.md")"; fi
-    # an unknown (NaN) expert event or U-turn boundary: until 2026-11-29 read
-    # as 0, so that [641, NaN] was a missed stride, [NaN, 2580] of the right
-    # foot a swing over the whole trial that left every left swing out
-    # ("0 expert strides", exit 0), and a NaN U-turn none (its strides judged)
+    # an unknown (NaN) expert event or U-turn boundary: not read as 0, which
+    # would make [641, NaN] a missed stride, [NaN, 2580] of the right foot a
+    # swing over the whole trial that left every left swing out ("0 expert
+    # strides", exit 0), and a NaN U-turn none (its strides judged)
     mkdir -p "$T/ipnan/ipol_gait_xsens"
     for t in 1-1 1-2 1-4; do for f in lf rf; do ln -s "$D/ipol_gait_xsens/${t}_$f.txt" "$T/ipnan/ipol_gait_xsens/"; done; done
     sed 's/\[641, 687\]/[641, NaN]/' "$D/ipol_gait_xsens/1-1.json" > "$T/ipnan/ipol_gait_xsens/1-1.json"
@@ -592,8 +591,8 @@ else
 fi
 
 # --- the bias-model experiment compares pairs that differ only in the model
-# (until 2026-11-28 one "off" run, with the generic profile's white noise,
-# stood against every table), walk by walk with the spread and a sign test
+# (not one "off" run, with the generic profile's white noise, against every
+# table), walk by walk with the spread and a sign test
 if [ -n "$D" ] && [ -f "$D/xio_ngimu_gait/short_walk.csv" ]; then
     mkdir -p "$T/bx/xio_ngimu_gait"
     ln -s "$(cd "$D" && pwd)/xio_ngimu_gait/short_walk.csv" "$T/bx/xio_ngimu_gait/short_walk.csv"
@@ -624,8 +623,8 @@ fi
 
 # --- a reader's warning or note about a walk is printed once per eval, not
 # by each of the walk's eleven runs (the table's and the experiments'
-# repeats): until 2026-12-01 a gx2 walk cut off mid-line printed its
-# "last line is incomplete" 11 times, and each walk's timer-restart note too
+# repeats): a gx2 walk cut off mid-line must not print its "last line is
+# incomplete" 11 times, nor each walk its timer-restart note
 if [ -n "$D" ] && [ -f "$D/openshoe_gx2/Measurement_100521_31_data_inert.txt" ]; then
     mkdir -p "$T/rw/openshoe_gx2"
     ln -s "$(cd "$D" && pwd)/openshoe_gx2/Measurement_100521_31_data_inert.txt" "$T/rw/openshoe_gx2/"
@@ -641,8 +640,8 @@ else
     echo "skip the repeated reader warnings (openshoe_gx2 walk 31 not in the shared data)"
 fi
 
-# --- a figures' directory whose name has spaces and parentheses: results.md linked it as written, which is no
-# Markdown link (a destination ends at a space; the figure was not shown); it is percent-encoded (the plots review)
+# --- a figures' directory whose name has spaces and parentheses: linked as written in results.md, it is no
+# Markdown link (a destination ends at a space; the figure is not shown); it is percent-encoded
 if [ -n "$D" ]; then
     mkdir -p "$T/sp/xio_ngimu_gait" "$T/sp md"
     ln -s "$D/xio_ngimu_gait/short_walk.csv" "$T/sp/xio_ngimu_gait/short_walk.csv"
@@ -652,8 +651,8 @@ if [ -n "$D" ]; then
         head -c 8 "$T/sp md/my figs (1)/eval-xio.png" | grep -q PNG; then
         pass "eval: a figure in a directory with spaces is drawn and linked percent-encoded"
     else fail "eval: figure link $(grep -o '^!\[.*' "$T/sp md/r.md")"; fi
-    # and one whose name is long (720 bytes, under PATH_MAX): it was cut to 599 bytes, and the figures went into a
-    # directory of the cut name (the plots review)
+    # and one whose name is long (720 bytes, under PATH_MAX): not cut to 599 bytes, with the figures going into a
+    # directory of the cut name
     L=$T/$(printf '%0200d' 0)/$(printf '%0200d' 0)/$(printf '%0200d' 0)
     mkdir -p "$L"
     expect_exit 0 "eval --plots in a directory with a long name" "$H" eval --no-experiments --data "$T/sp" \
@@ -663,9 +662,9 @@ if [ -n "$D" ]; then
         pass "eval: the figure in the long directory, linked" || fail "eval: figure of a long --plots: $(ls "$L")"
 fi
 
-# --- the strides' figure: its title and key were one line wider than a picture of three panels (the footprints'
-# figure cut both ends off, "circles: the truth there" among them) and far wider than one panel's; each line of the
-# title fits the picture, at 6 px a character (a stand-in gnuplot keeps the script; the plots review)
+# --- the strides' figure: its title and key as one line would be wider than a picture of three panels (the
+# footprints' figure cut both ends off, "circles: the truth there" among them) and far wider than one panel's; each
+# line of the title fits the picture, at 6 px a character (a stand-in gnuplot keeps the script)
 # footprint_walk DIR N: DIR made a data directory that holds footprint walk N alone (its IMU log and
 # strides), linked from the shared data; P set to its footprints directory
 footprint_walk() {
@@ -693,10 +692,10 @@ fi
 # the trajectory of `harness replay --out` (the same navigation), the strides,
 # the measured path (sum of the truth's stride-to-stride distances), the
 # median stride error (of 24: the mean of the middle two), the RMS, the final
-# error and its share of the path. No test compared these figures: the path
-# from the first stride instead of the one before, a truth y with the wrong
-# sign, the final % of the median error, a median of an even count that took
-# the upper middle value, all passed (the mutation review, 2026-11-29)
+# error and its share of the path. Without this comparison the path from the
+# first stride instead of the one before, a truth y with the wrong sign, the
+# final % of the median error, a median of an even count that takes the
+# upper middle value, would all pass
 if [ -n "$D" ]; then
     footprint_walk "$T/fpref" 34
     expect_exit 0 "eval: one footprint walk" "$H" eval --no-experiments --no-plots --data "$T/fpref" --out "$T/fpref.md"
@@ -712,8 +711,7 @@ fi
 # % = 100 x error / path, vertical up positive as the trajectory's
 # -(z_end - z_start), the summary line the median (worst) of the rows. A 3-D
 # error without its height part, a vertical with the wrong sign and a
-# "median 3-D" taken of the horizontal % passed every test (the mutation
-# review, 2026-11-29)
+# "median 3-D" taken of the horizontal % would otherwise pass every test
 if [ -n "$D" ]; then
     G="$T/gxref/openshoe_gx2"
     mkdir -p "$G"
@@ -760,8 +758,8 @@ fi
 
 # --- a log of another format than CSV with stamps in bursts (pyshoe's t_s, packets of 4 samples 5 us apart every
 # 10 ms, as tests/cli/test_bursts.sh builds it): its refusal carries the remedy "convert it to CSV ...", some 390
-# bytes past the path, which eval's replay buffer (400 bytes with the path) and a row's note (200) cut short until
-# 2026-12-01 (docs/harness.md, "Time stamps in bursts"). The whole message reaches the warning and the row.
+# bytes past the path, which eval's replay buffer (400 bytes with the path) and a row's note (200) would cut short
+# (docs/harness.md, "Time stamps in bursts"). The whole message reaches the warning and the row.
 mkdir -p "$T/bursts_in_a_folder_named_at_some_length/openshoe_gx2"
 "$H" convert vectors/walk.bin "$T/wb.csv" >/dev/null 2>&1 || fail "bursts: convert vectors/walk.bin"
 awk -F, 'NR == 1 { print "t_s,ax_mps2,ay_mps2,az_mps2,gx_radps,gy_radps,gz_radps"; next } { i = NR - 2; printf "%.6f,%s,%s,%s,%s,%s,%s\n", ((int(i / 4) + 1) * 10000 + 5 * (i % 4)) / 1e6, $2, $3, $4, $5, $6, $7 }' \

@@ -101,9 +101,9 @@ else
     fail "fw_size.sh did not fail over budget"; cat "$T/out"
 fi
 
-# docs/firmware.md's "RAM by object" rows add up to its total (they did
-# not: 16 bytes more, from the SysTick base's 28 bytes, which is 16, and the
-# application's 224, which is 220; a review, 2026-11-29)
+# docs/firmware.md's "RAM by object" rows add up to its total (a stale row
+# shows as a sum off the total: the SysTick base's 28 bytes, which is 16,
+# and the application's 224, which is 220, would make it 16 bytes more)
 awk '/^RAM by object/ { on = 1; next }
      on && /^\| \*\*total\*\*/ { t = $0; gsub(/[^0-9]/, "", t); total = t; on = 0; next }
      on && /^\| / && !/^\| (object|---)/ { n = split($0, c, "|"); v = c[n - 1]; gsub(/[ ,]/, "", v);
@@ -118,8 +118,7 @@ fi
 
 # docs/firmware.md's object sizes against sizeof on the target (nm -S of a
 # probe object), with the firmware's options and with the harness defaults
-# (the filter's 11,016 bytes with the defaults was stale: 11,632; a review,
-# 2026-11-29)
+# (the filter's 11,632 bytes with the defaults, not a stale 11,016)
 cat >"$T/sz.c" <<'EOF'
 #include "footnav/fnav_nav.h"
 #include "footnav/fnav_allan.h"
@@ -148,7 +147,7 @@ for want in "| $(comma "$FN") |" "| $(comma $((6 * FA))) |" "| $(comma $((3 * FW
 done
 
 # tests/support/stack_usage.py (make bench's stack figure): a root it cannot
-# find is an error, exit 1 (it printed "not found" and exited 0; the vectors review)
+# find is an error, exit 1 (not "not found" printed with exit 0)
 mkdir -p "$T/noci"
 "$PY" tests/support/stack_usage.py "$T/noci" fnav_nav_step >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" -eq 1 ]; then pass "stack_usage.py: an unknown root fails (exit 1)"; else fail "stack_usage.py unknown root: exit $rc"; fi

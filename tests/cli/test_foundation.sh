@@ -43,33 +43,34 @@ expect_exit 2 "bad --input-rate" "$H" info vectors/walk.bin --input-rate -3
 expect_exit 2 "unknown --from" "$H" info vectors/walk.bin --from nope
 expect_err "unknown input format 'nope'" "--from error names the format"
 # the same for every command that reads a log (docs/harness.md, "Conventions":
-# a bad command line is exit 2; allan and psd read the log first and exited 1)
+# a bad command line is exit 2; allan and psd too, not reading the log first
+# and exiting 1)
 for c in info replay allan psd simgap; do
     expect_exit 2 "$c: unknown --from" "$H" $c vectors/walk.bin --from nope
     expect_exit 2 "$c: bad --input-rate" "$H" $c vectors/walk.bin --input-rate abc
 done
 expect_exit 2 "convert: unknown --from" "$H" convert vectors/walk.bin "$T/c.csv" --from nope
-# a command-line error is said before eval looks for its data (it exited 4,
-# "no shared data", and the usage error came only once the data were there)
+# a command-line error is said before eval looks for its data (not exit 4,
+# "no shared data", with the usage error only once the data are there)
 expect_exit 2 "eval --plots with --no-plots, without data" "$H" eval --data "$T/nodata" --plots "$T/x" --no-plots
 # --input-rate gives the rate of a log without time stamps: on a .bin it
-# replaced the header's rate, and psd analysed the 398 Hz walk as 100 Hz
-# (150 Hz answered 50 Hz); now it is ignored with a warning, as on a
-# time-stamped text log, where it was ignored without one
+# must not replace the header's rate, with psd analysing the 398 Hz walk as
+# 100 Hz (150 Hz answered 50 Hz); it is ignored with a warning, as on a
+# time-stamped text log, where it is not ignored without one either
 "$H" psd vectors/walk.bin --json "$T/psd0.json" >/dev/null 2>&1
 expect_exit 0 "psd of a .bin with --input-rate" "$H" psd vectors/walk.bin --input-rate 100 --json "$T/psd1.json"
 expect_err "input-rate ignored: the bin format has time stamps" "--input-rate on a .bin is said to be ignored"
 json "$T/psd1.json" "j['rate_hz'] == json.load(open('$T/psd0.json'))['rate_hz'] and j['result']['fs_hz'] == json.load(open('$T/psd0.json'))['result']['fs_hz']" &&
     pass "--input-rate leaves a .bin's rate and answer alone" || fail "--input-rate changed a .bin's rate: $(grep -m1 rate_hz "$T/psd1.json")"
 # a log of mostly duplicated stamps: the median interval is that of the
-# intervals that advance (it read 0 ms, and every real interval was a gap)
+# intervals that advance (not 0 ms, with every real interval a gap)
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.01,0,0,9.8,0,0,0\n0.02,0,0,9.8,0,0,0\n' > "$T/dups.csv"
 expect_exit 0 "info on a log of mostly duplicates" "$H" info "$T/dups.csv"
 expect_out "interval    median 10.000 ms" "the median interval skips the duplicates"
 expect_out "gaps        0 " "no real interval is a gap"
-# one sample has no interval, so no rate: it printed "rate 0.000 Hz (from the
-# time stamps)" and "interval median 0.000 ms" (the cli review); a log whose
-# stamps are all the same has no rate either
+# one sample has no interval, so no rate: not "rate 0.000 Hz (from the time
+# stamps)" and "interval median 0.000 ms"; a log whose stamps are all the
+# same has no rate either
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n' > "$T/one.csv"
 expect_exit 0 "info on a one-sample log" "$H" info "$T/one.csv"
 expect_out "^rate        none (one sample gives no rate)$" "one sample: no rate, said"
@@ -77,15 +78,15 @@ expect_out "^interval    none (one sample)$" "one sample: no interval, said"
 printf 't,ax,ay,az,gx,gy,gz\n0,0,0,-9.8,0,0,0\n0,0,0,-9.8,0,0,0\n' > "$T/onestamp.csv"
 expect_exit 0 "info on a log of one time stamp" "$H" info "$T/onestamp.csv"
 expect_out "^rate        none (every time stamp is the same)$" "one time stamp: no rate, said"
-# a 100 Hz log with its time column in milliseconds reads 0.1 Hz: info
-# printed that rate without a word, where allan and psd name the unit (the
-# generalisation check, 2026-11-29); a warning, the status unchanged
+# a 100 Hz log with its time column in milliseconds reads 0.1 Hz: info does
+# not print that rate without a word, as allan and psd name the unit; a
+# warning, the status unchanged
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 300; k++) printf "%d,0,0,9.8,0,0,0\n", 10 * k }' > "$T/tms.csv"
 expect_exit 0 "info on a 100 Hz log stamped in milliseconds" "$H" info "$T/tms.csv"
 expect_err "tms.csv: the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "info names time stamps in milliseconds, with the --units item (it said divide by 1000 until 2026-11-30)"
-# a log one sample per 5000 s (0.0002 Hz): the rate line printed "0.000 Hz" (an earlier review); below 0.1 Hz it
-# keeps three significant digits, from 0.1 Hz on three decimals as before
+# a log one sample per 5000 s (0.0002 Hz): the rate line does not print "0.000 Hz"; below 0.1 Hz it
+# keeps three significant digits, from 0.1 Hz on three decimals
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 6; k++) printf "%d,0,0,9.8,0,0,0\n", 5000 * k }' > "$T/slow.csv"
 expect_exit 0 "info on a 0.0002 Hz log" "$H" info "$T/slow.csv" --json "$T/slow.json"
 expect_out "^rate        0.000200 Hz (from the time stamps" "info: a 0.0002 Hz rate printed with three significant digits, not 0.000"
@@ -96,8 +97,8 @@ expect_exit 0 "info on a 100 Hz log stamped in microseconds, read as ms" "$H" in
 expect_err "tus.csv: the samples are 10 s apart (0.1 Hz): are the time stamps in milliseconds? (they look like microseconds, a 100 Hz log: give --units time=us)" \
     "info: us read with --units time=ms told time=us"
 # the other way: stamps read in a finer unit than theirs look 1000, 1e6 or 1e9 times too fast (the same log in
-# milliseconds read with --units time=ns: 10 ns apart, 100 MHz), and info printed that rate without a word (the
-# units review, 2026-11-30); above 100 kHz the unit that makes the rate 20 Hz to 100 kHz is named, as for slow ones
+# milliseconds read with --units time=ns: 10 ns apart, 100 MHz), a rate info must not print without a word; above
+# 100 kHz the unit that makes the rate 20 Hz to 100 kHz is named, as for slow ones
 expect_exit 0 "info on a 100 Hz log stamped in milliseconds, read as ns" "$H" info "$T/tms.csv" --units time=ns
 expect_err "tms.csv: the samples are 1e-08 s apart (1e+08 Hz): are the time stamps in nanoseconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "info names stamps too fast: ms read as ns told time=ms"
@@ -106,10 +107,10 @@ expect_exit 0 "info on the log in milliseconds read with --units time=ms" "$H" i
 if grep -q "look like" "$T/err"; then fail "ms read as ms: a unit still named"; else pass "ms read as ms: no unit named"; fi
 # stamps in bursts: a logger that stamps each packet of 4 samples as it reads them, 5 us apart, every 10 ms (the
 # walk of vectors/walk.bin, 400 Hz over the log), in microseconds read as such: the median interval (5 us, 200 kHz)
-# is no sampling period, and info warned "are the time stamps in microseconds? (they look like milliseconds, a 200 Hz
-# log: give --units time=ms)", a remedy that makes the log 1000 times too slow, where replay, which judges the log's
-# span too (16539 samples over 41.3 s, 400 Hz), said nothing (the units review, 2026-11-30); one test now
-# (hx_time_unit_rate) for info, allan, psd, simgap and replay
+# is no sampling period, and info must not warn "are the time stamps in microseconds? (they look like milliseconds, a
+# 200 Hz log: give --units time=ms)", a remedy that makes the log 1000 times too slow, where replay, which judges the
+# log's span too (16539 samples over 41.3 s, 400 Hz), says nothing; one test (hx_time_unit_rate) for info, allan,
+# psd, simgap and replay
 expect_exit 0 "convert the walk to CSV (stamps in bursts)" "$H" convert vectors/walk.bin "$T/bw.csv"
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
     "$T/bw.csv" > "$T/burst_us.csv"
@@ -118,8 +119,8 @@ if grep -q "are the time stamps in\|look like" "$T/err"; then fail "info: stamps
     pass "info: stamps in bursts (400 Hz over the log) told no time unit"; fi
 json "$T/burst_us.json" 'j["units_problem"] is None' && pass "info --json: stamps in bursts, units_problem null" ||
     fail "info --json: stamps in bursts, units_problem $(grep units_problem "$T/burst_us.json")"
-# ... but its rate line (200000 Hz, 1 / the median interval) was printed without a word; a warning now names the
-# rate over the span and the --input-rate remedy, replay's refusal (the units review, 2026-11-30; exit 0 as before)
+# ... but its rate line (200000 Hz, 1 / the median interval) is not printed without a word; a warning names the
+# rate over the span and the --input-rate remedy, replay's refusal (exit 0 still)
 expect_err "info: warning: $T/burst_us.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; the rate line gives 2e+05 Hz, the stamps' rate, not the sampling rate: leave the time column out and give --input-rate 400 (docs/harness.md, \"Time stamps in bursts\")" \
     "info: stamps in bursts warned, the stamps' rate said, 400 Hz and --input-rate named"
 # one stamp shared by each packet of 4 samples: 100 Hz from the stamps, the same warning for the other kind
@@ -131,8 +132,8 @@ expect_err "the time stamps come in bursts (samples that share one stamp: one pe
 # the evenly stamped walk and the bundled one: no such warning
 expect_exit 0 "info on the bundled walk" "$H" info vectors/walk.bin
 grep -q "come in bursts" "$T/err" && fail "info: the bundled walk warned of bursts" || pass "info: the bundled walk, no burst warning"
-# one stamp for each packet of 100 samples, 2 s apart (50 Hz over the log): "the samples are 2 s apart (0.5 Hz): are
-# the time stamps in seconds? (they look like milliseconds, a 500 Hz log: give --units time=ms)" until then too
+# one stamp for each packet of 100 samples, 2 s apart (50 Hz over the log): not "the samples are 2 s apart (0.5 Hz):
+# are the time stamps in seconds? (they look like milliseconds, a 500 Hz log: give --units time=ms)" either
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", int(i / 100) * 2, $2, $3, $4, $5, $6, $7 }' \
     "$T/bw.csv" > "$T/pkt2s.csv"
 expect_exit 0 "info on one stamp per 100 samples, 2 s apart" "$H" info "$T/pkt2s.csv"
@@ -149,12 +150,12 @@ expect_err "are the time stamps in nanoseconds? (they look like microseconds, a 
 expect_exit 0 "convert the log in ms to .bin" "$H" convert "$T/tms.csv" "$T/tms.bin"
 expect_exit 0 "info on a .bin stamped in milliseconds" "$H" info "$T/tms.bin"
 expect_err "(they look like milliseconds, a 100 Hz log: divide by 1000)" "info on a .bin: the arithmetic remedy"
-# a log in g: the units line names --units accel=g for the CSV (it said "multiply by 9.80665" until 2026-11-30)
+# a log in g: the units line names --units accel=g for the CSV (not "multiply by 9.80665")
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 300; k++) printf "%.2f,0,0,1,0,0,0\n", k / 100 }' > "$T/ing.csv"
 expect_exit 0 "info on a log in g" "$H" info "$T/ing.csv"
 expect_out "units       NOT SI: .*not in m/s^2 but in g (give --units accel=g)" "info names --units accel=g for a CSV in g"
 # a walk with no still second (sim walk:20 starts walking at once): its stillest second is mid-stride, whose
-# |f| (13.8) was read as the rest and the SI log called "NOT SI" until 2026-12-01; now no verdict on the
+# |f| (13.8) must not be read as the rest and the SI log called "NOT SI"; no verdict on the
 # accelerometer, said so, exit 0 (docs/harness.md, "info")
 expect_exit 0 "sim walk:20 (no rest)" "$H" sim --motion walk:20 --out "$T/norest.bin"
 expect_exit 0 "info on a walk with no still second" "$H" info "$T/norest.bin"
@@ -206,9 +207,8 @@ awk 'NR < 2002 || NR > 2004' "$T/ms820.csv" > "$T/ms820drop.csv"
 expect_exit 0 "info on it with three samples dropped" "$H" info "$T/ms820drop.csv"
 expect_out "gaps        1 (> 1.5 intervals; longest 5.0 ms)" "the dropped samples are the one gap"
 # stamps that resolve the period (100 Hz, a microsecond of jitter): one sample lost is an interval of two periods,
-# 20 ms > 1.5 x 10 ms, one gap; a line written twice is one duplicate (dt = 0). No test had a gap against
-# the median interval: a gap threshold of 2.5 intervals, which hides every lost sample, passed (the mutation
-# review, 2026-11-29)
+# 20 ms > 1.5 x 10 ms, one gap; a line written twice is one duplicate (dt = 0). This is the test of a gap
+# against the median interval: without it a gap threshold of 2.5 intervals, which hides every lost sample, passes
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 1000; k++) if (k != 500) { printf "%.6f,0,0,9.8,0,0,0\n", k / 100.0 + (k % 3) * 1e-6
      if (k == 700) printf "%.6f,0,0,9.8,0,0,0\n", k / 100.0 + (k % 3) * 1e-6 } }' > "$T/lost100.csv"
 expect_exit 0 "info on a 100 Hz log with a sample lost and one written twice" "$H" info "$T/lost100.csv"
@@ -226,12 +226,12 @@ json "$T/halved.json" 'j["rate_change"] is not None and abs(j["rate_change"]["at
 # --- the bundled example
 expect_exit 0 "info walk.bin" "$H" info vectors/walk.bin --json "$T/info.json"
 # the accelerometer at rest reads the specific force, which points up: +z up
-# means gravity along -z (it said "gravity along +z" until 2026-11-28)
+# means gravity along -z (not "gravity along +z")
 expect_out "at rest     gravity along -z (+z up)" "gravity points down, against the specific force"
 expect_out "samples     16539" "walk.bin sample count"
 expect_out "duplicates  205" "walk.bin duplicates (MANIFEST: 205)"
-# the gyro at rest in deg/s too, the peak line's unit (rad/s alone until
-# 2026-11-30), each the JSON's rad/s times 180/pi
+# the gyro at rest in deg/s too, the peak line's unit (not rad/s alone),
+# each the JSON's rad/s times 180/pi
 degs=$("${PY:-/usr/bin/python3}" -c 'import json,math,sys; g=json.load(open(sys.argv[1]))["gyro_at_rest_rps"]; print("(%s) deg/s" % ", ".join("%.3f" % math.degrees(x) for x in g))' "$T/info.json")
 expect_out "rad/s = $degs" "the gyro at rest in deg/s as well"
 if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['samples']==16539 and d['duplicates']==205 and d['gravity_axis']=='-z' and d['up_axis']=='+z'" "$T/info.json"; then
@@ -244,7 +244,7 @@ fi
 expect_exit 0 "convert bin->csv" "$H" convert vectors/walk.bin "$T/a.csv"
 expect_exit 0 "convert csv->bin" "$H" convert "$T/a.csv" "$T/b.bin"
 expect_exit 0 "convert bin->csv (2)" "$H" convert "$T/b.bin" "$T/c.csv"
-# the extension in any case: OUT.BIN is a .bin (it was written as CSV)
+# the extension in any case: OUT.BIN is a .bin (not written as CSV)
 expect_exit 0 "convert csv->BIN" "$H" convert "$T/a.csv" "$T/B.BIN"
 if cmp -s "$T/b.bin" "$T/B.BIN"; then pass "OUT.BIN is written as .bin"; else fail "OUT.BIN is not the .bin"; fi
 if cmp -s "$T/a.csv" "$T/c.csv"; then pass "csv -> bin -> csv identical"; else fail "round trip changed values"; fi
@@ -278,8 +278,8 @@ expect_exit 2 "--end before --start" "$H" convert vectors/walk.bin "$T/w.csv" --
 expect_err "--end 2 is before --start 3" "the order is named"
 expect_exit 2 "negative --start" "$H" convert vectors/walk.bin "$T/w.csv" --start -1
 expect_exit 1 "a window past the end" "$H" convert vectors/walk.bin "$T/w.csv" --start 100000
-# said naturally, with the log's span ("no sample between 100000 and the
-# end s after the first"; a review, 2026-12-02)
+# said naturally, with the log's span (not "no sample between 100000 and
+# the end s after the first")
 expect_err "^harness convert: error: vectors/walk.bin: no sample from 100000 s to the end: the log spans 0-41.618 s after its first sample$" "the empty window is said, with the log's span"
 expect_exit 1 "a window past the end, with --end" "$H" convert "$T/edge.csv" "$T/w.csv" --start 1 --end 2
 expect_err "edge.csv: no sample from 1 s to 2 s: the log spans 0-0.09 s after its first sample$" "an empty --start/--end window names the span"
@@ -312,8 +312,8 @@ if [ -n "$D" ]; then
         if [ -n "$a" ] && [ "$a" = "$b" ]; then pass "info+convert $n ($a samples)"; else fail "$n: $a vs $b samples"; fi
     done
     # a GX2 log's timer restarts (about once a second) are routine and
-    # bridged exactly: a note with the count, not a warning (every GX2 log
-    # warned of them; a user review)
+    # bridged exactly: a note with the count, not a warning (which every
+    # GX2 log would give)
     g=$D/openshoe_gx2/Measurement_100521_2_data_inert.txt
     if [ -f "$g" ]; then
         expect_exit 0 "info on GX2 walk 2" "$H" info "$g"
@@ -326,8 +326,8 @@ fi
 
 # --- an importer without time stamps says which rate it assumed (docs/robustness.md):
 # an ADIS16405 log (index / 100 Hz) of another rate would otherwise be read at
-# 100 Hz without a word (the unseen review: the OpenShoe 820 Hz reader warned,
-# the ADIS one did not), and so was a square2 log (a sample counter, no time)
+# 100 Hz without a word (as the OpenShoe 820 Hz reader warns, the ADIS one
+# does), and so would a square2 log (a sample counter, no time)
 assumed_rate() { # name file warning
     expect_exit 0 "info on the $1 log" "$H" info "$2"
     expect_err "$3" "the $1 rate is said to be assumed"
@@ -339,11 +339,11 @@ awk 'BEGIN { print "gyro_x_dps,gyro_y_dps,gyro_z_dps,acc_x_g,acc_y_g,acc_z_g"; f
 assumed_rate ADIS16405 "$T/adis.csv" "no time stamps; assuming the ADIS16405 data set rate of 100 Hz (give --input-rate)"
 awk 'BEGIN { print "sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps,q0,q1,q2,q3"; for (k = 0; k < 400; k++) print k ",-0.07,0,-9.82,0.001,-0.002,-0.001,1,0,0,0" }' >"$T/square2.csv"
 assumed_rate square2 "$T/square2.csv" "no time stamps; assuming the ZUPT-aided-INS square2 data set rate of 100 Hz (give --input-rate)"
-# an ipol log states its rate on line 1: --input-rate replaced it without a word,
-# and a gait lab's wrong --input-rate 200 on a 100 Hz file halved every stride
-# time and doubled the cadence in replay --strides (the gait review,
-# 2026-11-30); now a rate that differs from the stated one is warned about
-# (it still rules: the file may state the wrong one), the same one is not
+# an ipol log states its rate on line 1: --input-rate must not replace it without
+# a word, as a gait lab's wrong --input-rate 200 on a 100 Hz file halves every
+# stride time and doubles the cadence in replay --strides; a rate that differs
+# from the stated one is warned about (it still rules: the file may state the
+# wrong one), the same one is not
 awk 'BEGIN { print "Acquisition frequency: 100 Hz"; print "PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z"; for (k = 0; k < 400; k++) print k "\t0.1\t0\t9.8\t0.001\t-0.002\t0.001" }' >"$T/ipol.txt"
 expect_exit 0 "info on an ipol log with a different --input-rate" "$H" info "$T/ipol.txt" --input-rate 200
 expect_err "ipol.txt: --input-rate 200 Hz replaces the rate the file states (100 Hz on line 1)" "ipol: a --input-rate that overrides the stated rate is warned about"
@@ -353,16 +353,15 @@ if grep -q "replaces the rate" "$T/err"; then fail "ipol --input-rate equal to t
 # our CSV without a time column (a logger that writes samples at a fixed rate,
 # the first thing a gait lab exports): --input-rate gives the rate, t = index /
 # rate, as for the importers without time stamps; without it the error names
-# --input-rate. Before, it was "header has no column 't'" with no way to give
-# a rate but to add the column by hand (the gait review, 2026-11-30)
+# --input-rate, not "header has no column 't'" with no way to give a rate but
+# to add the column by hand
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 400; k++) printf "%.2f,0.1,0,%.3f,0.001,-0.002,%.4f\n", k / 100, 9.8 + k % 7 * 0.001, k % 5 * 0.0001 }' >"$T/timed.csv"
 cut -d, -f2- "$T/timed.csv" >"$T/untimed.csv"
 expect_exit 1 "our CSV without t, no --input-rate" "$H" info "$T/untimed.csv"
 expect_err "untimed.csv:1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz\[,temp\] (t in s: name the time column t; a log without time stamps: give its rate with --input-rate HZ)" "no t column: the error names --input-rate"
-# a time column under another name ('time', 'timestamp'): read as the time
-# since 2026-11-30, with a warning naming the --columns that says so (it was
-# refused with "name the time column t"; docs/log-format.md, "Names read
-# without --columns")
+# a time column under another name ('time', 'timestamp'): read as the time,
+# with a warning naming the --columns that says so (not refused with "name
+# the time column t"; docs/log-format.md, "Names read without --columns")
 sed '1s/^t,/time,/' "$T/timed.csv" >"$T/timecol.csv"
 expect_exit 0 "our CSV with its time column named 'time'" "$H" info "$T/timecol.csv"
 expect_err "timecol.csv: header read as --columns t=time,ax=ax,ay=ay,az=az,gx=gx,gy=gy,gz=gz (names matched; give --columns to choose otherwise)" "a time column named 'time': read, the mapping named"
@@ -387,7 +386,7 @@ expect_out "100.000 Hz (nominal)" "no t column: the rate is --input-rate's"
 awk -F, 'NR == 1 { print "Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Gyroscope Z (deg/s),Accelerometer X (g),Accelerometer Y (g),Accelerometer Z (g)"; next }
     NR <= 8000 { printf "%.9f,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f\n", $1, $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665 }' "$T/a.csv" >"$T/ngimu.csv"
 head -c $(($(wc -c <"$T/ngimu.csv") - 30)) "$T/ngimu.csv" >"$T/cut.csv"
-# allan gets the still first 12.5 s (a walk is no static log for it: exit 1 since 2026-11-28)
+# allan gets the still first 12.5 s (a walk is no static log for it: exit 1)
 mkdir -p "$T/still" && head -n 5000 "$T/ngimu.csv" | head -c -30 >"$T/still/cut.csv"
 # replay --rate too (it loads the whole log to resample it, and dropped the
 # reader's warnings)
@@ -474,8 +473,8 @@ expect_err "empty.csv: empty file" "empty file said"
 expect_exit 3 "unwritable output" "$H" convert vectors/walk.bin /nonexistent-dir/x.bin
 expect_err "cannot create" "unwritable output said"
 # a write that fails midway (a full disk, a closed pipe) is one error line
-# with its reason: convert printed "write failed" and then, on closing,
-# "write failed (No space left on device)" for the same failure
+# with its reason: convert does not print "write failed" and then, on
+# closing, "write failed (No space left on device)" for the same failure
 if [ -w /dev/full ]; then
     for o in "" "--rate 100"; do
         expect_exit 3 "convert $o to a full disk" "$H" convert vectors/walk.bin /dev/full --to bin $o
@@ -505,8 +504,8 @@ expect_exit 2 "convert --rate 1e-9" "$H" convert vectors/walk.bin "$T/rtiny.csv"
 if [ -e "$T/rtiny.csv" ] && grep -qi nan "$T/rtiny.csv"; then fail "convert --rate 1e-9 wrote NaN"; else pass "convert --rate 1e-9 writes no NaN"; fi
 expect_exit 2 "convert --rate inf" "$H" convert vectors/walk.bin "$T/rinf.csv" --rate inf
 # the resampled samples carry a running index, not the sensor's counter: the
-# .bin was flagged "seq is the sensor's own counter", and info read 0 counter
-# drops from a log whose counter had lost 10 packets
+# .bin is not flagged "seq is the sensor's own counter", which would make info
+# read 0 counter drops from a log whose counter had lost 10 packets
 awk 'BEGIN { print "Acquisition frequency: 100 Hz"; print "PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z";
     for (k = 0; k < 1000; k++) if (k < 500 || k >= 510) printf "%d\t0.1\t0\t9.8\t0.001\t0\t0\n", k }' > "$T/drops.txt"
 expect_exit 0 "info on a counter log with 10 drops" "$H" info "$T/drops.txt"
@@ -516,15 +515,15 @@ expect_exit 0 "info on the resampled .bin" "$H" info "$T/drops50.bin"
 if grep -q "^drops" "$T/out"; then fail "the resampled .bin claims a sensor counter: $(grep '^drops' "$T/out")"; else pass "the resampled .bin claims no sensor counter"; fi
 
 # stamps implying a rate the .bin header cannot hold (4 MHz): the rate is
-# stored as unknown and the file stays readable (convert wrote it, then
-# every command refused it; a review, 2026-11-28)
+# stored as unknown and the file stays readable (not written by convert,
+# then refused by every command)
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.9f,0,0,-9.8,0,0,0\n", i * 2.5e-7 }' > "$T/fast.csv"
 expect_exit 0 "convert a 4 MHz log to .bin" "$H" convert "$T/fast.csv" "$T/fast.bin"
 expect_exit 0 "info on that .bin" "$H" info "$T/fast.bin"
 expect_out "samples     2000" "the 4 MHz .bin reads back whole"
 
 # an output that names the input itself is refused before the input is read
-# (info, allan, psd and simgap overwrote the log after reading it; a review)
+# (info, allan, psd and simgap must not overwrite the log after reading it)
 "$H" convert vectors/walk.bin "$T/victim.csv" >/dev/null 2>&1
 cp "$T/victim.csv" "$T/victim0.csv"
 seq 1 100 > "$T/series.txt"
@@ -550,9 +549,9 @@ for args in "replay vectors/walk.bin --quiet --out $T/two.txt --json $T/two.txt"
     expect_err "name the same file" "two outputs on one file refused: ${args%% *}"
 done
 expect_exit 0 "replay --out /dev/null --json /dev/null" "$H" replay vectors/walk.bin --quiet --out /dev/null --json /dev/null
-# the same new file under two spellings (F and ./F, or DIR//F): stat could not
-# tell before either existed, and `replay LOG --strides s.csv --json ./s.csv`
-# left the JSON in s.csv, exit 0 (the gait review, 2026-11-30)
+# the same new file under two spellings (F and ./F, or DIR//F): stat cannot
+# tell before either exists, and `replay LOG --strides s.csv --json ./s.csv`
+# must not leave the JSON in s.csv, exit 0
 rm -f "$T/sp.csv"
 expect_exit 2 "two outputs on one new file, spelled twice" "$H" replay vectors/walk.bin --quiet --strides "$T/sp.csv" --json "$T/./sp.csv"
 expect_err "name the same file" "two spellings of one new file refused"
@@ -562,9 +561,9 @@ expect_exit 2 "two outputs on one new file, DIR//F" "$H" psd vectors/walk.bin --
 expect_err "name the same file" "DIR//F and DIR/F refused"
 expect_exit 0 "two different new files in one directory" "$H" replay vectors/walk.bin --quiet --strides "$T/sp1.csv" --json "$T/./sp2.csv"
 
-# --columns and --units read a CSV of another layout, which needed an awk
-# conversion into the interchange format until 2026-11-30 (docs/log-format.md,
-# "Another layout"): the walk as a phone app exports it (ns stamps, g, deg/s,
+# --columns and --units read a CSV of another layout, with no awk conversion
+# into the interchange format (docs/log-format.md, "Another layout"): the
+# walk as a phone app exports it (ns stamps, g, deg/s,
 # its own names and column order) replays to the byte-identical trajectory
 "$H" convert vectors/walk.bin "$T/lw.csv" >/dev/null 2>&1
 PHONE_AWK='BEGIN { FS = ","; d = 3.14159265358979323846 / 180 }
@@ -608,7 +607,7 @@ for c in info replay allan psd simgap; do
     expect_exit 2 "$c: --units on a .bin" "$H" $c vectors/walk.bin --units accel=g
     expect_err "--units applies to the interchange CSV (format csv), not to the bin format" "$c: --units on a .bin: option and format named"
 done
-# a .bin is no text: not told to give --from csv, which reads it as "a NUL byte in the text" (it was told to)
+# a .bin is no text: not told to give --from csv, which reads it as "a NUL byte in the text"
 if grep -q -- "--from csv" "$T/err"; then fail "a .bin with --units told to give --from csv"; else
     pass "a .bin with --units not told to give --from csv"; fi
 expect_exit 1 "--from csv --units on a .bin" "$H" info vectors/walk.bin --from csv --units accel=g
@@ -698,8 +697,8 @@ expect_out "rate        400.000 Hz (nominal)" "counter time at --input-rate"
 # MT Manager does but counts SampleTimeFine in us and writes Gyr_* in deg/s
 # (DOT user manual, XD0502P, 4.2.5), and names its orientation Euler_X..Z or
 # Quat_W..Z (MT Manager: Roll, Pitch, Yaw, Quat_q0..q3). Read as an export
-# it was a walk 100 times too slow, hinted 'divide by 1000'; it is refused
-# as before, and the CSV remedy it names reads it at its rate.
+# it would be a walk 100 times too slow, hinted 'divide by 1000'; it is
+# refused, and the CSV remedy it names reads it at its rate.
 awk -F, 'NR > 1 { split($1, p, "."); us = p[1] * 1000000 + substr(p[2] "000000000", 1, 6)
     printf "%d,%d,0.1,0.2,0.3,%s,%s,%s,%.6f,%.6f,%.6f\n", NR - 2, us + 12345678, $2, $3, $4, $5 * 57.29578, $6 * 57.29578, $7 * 57.29578 }
     BEGIN { print "PacketCounter,SampleTimeFine,Euler_X,Euler_Y,Euler_Z,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z" }' "$T/xw.csv" >"$T/xdot.csv"
@@ -731,8 +730,8 @@ expect_exit 0 "DOT CSV of Acc/Gyr/Mag read with the remedy" "$H" info "$T/xdotm.
     --columns t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s
 expect_out_re "^rate +398\.[0-9]+ Hz" "DOT CSV of Acc/Gyr/Mag read with the remedy: the walk's rate"
 expect_out_re "^duration +41\.[0-9]+ s" "DOT CSV of Acc/Gyr/Mag read with the remedy: the walk's duration"
-# given with --from mtmanager it was read in ticks, as asked (3.98 Hz, the gyro's deg/s as rad/s; info exit 0, and
-# replay's units error hinted 'divide by 1000', which --units cannot apply to this format): now the same refusal;
+# given with --from mtmanager it is not read in ticks, as asked (3.98 Hz, the gyro's deg/s as rad/s; info exit 0, and
+# replay's units error hinting 'divide by 1000', which --units cannot apply to this format): the same refusal;
 # an export whose '//' lines were cut is read with one put back
 expect_exit 1 "DOT CSV of Acc/Gyr/Mag with --from mtmanager: refused the same" "$H" info "$T/xdotm.csv" --from mtmanager
 expect_err "xdotm.csv: SampleTimeFine steps by 2511: 3.982 Hz in 100 us ticks, 398.2 Hz in us, no '//' line: $dot_remedy (if MT Manager's, its '//' lines cut: put one back before the header)" \
@@ -744,8 +743,8 @@ if grep -q "divide by 1000" "$T/err"; then fail "DOT CSV, replay --from mtmanage
 expect_exit 0 "the same file with a '//' line: read as an export, in ticks" "$H" info "$T/xdotm_pre.csv"
 expect_out_re "^rate +3\.98[0-9] Hz" "a '//' line: 100 us ticks"
 # a DOT logging at 10 Hz or 1 Hz (its rates: 1, 4, 10, 12, 15, 20, 30, 60, 120 Hz): 0.1 and 0.01 Hz in ticks, 10 and
-# 1 Hz in us, below the 20 Hz an IMU's band starts at, so it was read as an export 100 times too slow (0.1 Hz, exit
-# 0); a header of DOT's own columns with no '//' line is now refused at any DOT rate (every 40th and 400th sample of
+# 1 Hz in us, below the 20 Hz an IMU's band starts at, so it must not be read as an export 100 times too slow (0.1 Hz,
+# exit 0); a header of DOT's own columns with no '//' line is refused at any DOT rate (every 40th and 400th sample of
 # the walk, stamped 100,000 and 1,000,000 us apart)
 for r in 10 1; do
     awk -F, -v k=$((400 / r)) -v st=$((1000000 / r)) 'NR > 1 && (NR - 2) % k == 0 { i = (NR - 2) / k
@@ -757,8 +756,8 @@ for r in 10 1; do
         --columns t=SampleTimeFine,ax=Acc_X,ay=Acc_Y,az=Acc_Z,gx=Gyr_X,gy=Gyr_Y,gz=Gyr_Z --units time=us,gyro=deg/s
     expect_out_re "^rate +$r(\.0+)? Hz" "DOT CSV at $r Hz read with the remedy: $r Hz"
 done
-# ... and with a column on no list besides DOT's own ClipCountAcc/ClipCountGyr (an app's UtcTime): it was read at
-# 0.1 Hz, exit 0, until 2026-12-01 (every column had to be DOT's); a name only DOT writes now marks it, unless one
+# ... and with a column on no list besides DOT's own ClipCountAcc/ClipCountGyr (an app's UtcTime): not read at
+# 0.1 Hz, exit 0 (as when every column had to be DOT's); a name only DOT writes marks it, unless one
 # only MT Manager writes (Roll) is there too
 awk 'NR == 1 { print $0 ",ClipCountAcc,ClipCountGyr,UtcTime"; next } { print $0 ",0,0,1764547200" }' "$T/xdot10.csv" >"$T/xdotu.csv"
 expect_exit 1 "a Movella DOT CSV at 10 Hz with an app's column is not read as an MT Manager export" "$H" info "$T/xdotu.csv"
@@ -766,14 +765,14 @@ expect_err "xdotu.csv: SampleTimeFine steps by .*, 10 Hz in us, no '//' line: $d
 sed '1s/,UtcTime$/,Roll/' "$T/xdotu.csv" >"$T/xdotr.csv"
 expect_exit 0 "... with Roll (MT Manager's) instead: read as an export, in ticks" "$H" info "$T/xdotr.csv"
 expect_out_re "^rate +0\.100 Hz" "... with Roll: 100 us ticks"
-# ... and with the app's column and no name only DOT writes: read at 0.1 Hz, exit 0, until 2026-12-01; 0.1 Hz in
+# ... and with the app's column and no name only DOT writes: not read at 0.1 Hz, exit 0; 0.1 Hz in
 # ticks is no MTi's rate (it outputs at whole Hz), so without a name only MT Manager writes it is DOT's
 awk 'NR == 1 { print $0 ",UtcTime"; next } { print $0 ",1764547200" }' "$T/xdot10.csv" >"$T/xdotn.csv"
 expect_exit 1 "a Movella DOT CSV at 10 Hz with an app's column and no DOT-only name is not read as an export" "$H" info "$T/xdotn.csv"
 expect_err "xdotn.csv: SampleTimeFine steps by .*, 10 Hz in us, no '//' line: $dot_remedy" "DOT CSV at 10 Hz, no DOT-only name: refused, the remedy named"
-# a reader's message is whole behind a long path: the errors were cut at
-# 320 bytes, path included (info, allan, psd and convert left the DOT
-# remedy's --units out behind a 110-byte path; 2026-11-30)
+# a reader's message is whole behind a long path: errors cut at 320 bytes,
+# path included, would leave the DOT remedy's --units out behind a 110-byte
+# path (info, allan, psd and convert)
 LP="$T/recordings_of_the_left_foot_with_a_rather_long_directory_name/session_2026_11_30_outdoor_walk"
 mkdir -p "$LP"
 cp "$T/xdotm.csv" "$LP/dot_recording_left_foot.csv"
@@ -792,8 +791,8 @@ expect_err 'give its names and units with --columns and --units: docs/log-format
 # --- names read without --columns (docs/log-format.md, "Names read without
 # --columns"): a header that names the six channels in a common way is read
 # as the interchange CSV, the mapping said once as the options; each replays
-# the bundled walk to the same trajectory as the interchange CSV. Before
-# 2026-11-30 each was refused: "header has no column 't'".
+# the bundled walk to the same trajectory as the interchange CSV, none
+# refused with "header has no column 't'".
 "$H" convert vectors/walk.bin "$T/nw.csv" 2>/dev/null
 "$H" replay "$T/nw.csv" --quiet --out "$T/nw_ref.csv" >/dev/null 2>&1
 for hdr in "timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z" "Time,AccX,AccY,AccZ,GyrX,GyrY,GyrZ" \

@@ -111,8 +111,8 @@ timeout $LIMIT "$H" live --help >/dev/null 2>&1; expect_rc $? 0 "live --help"
 timeout $LIMIT "$H" live /dev/nonexistent-port >/dev/null 2>"$T/err"; expect_rc $? 3 "live on a missing port"
 grep_in "$T/err" "nonexistent-port" "the error names the port"
 timeout $LIMIT "$H" live /dev/null >/dev/null 2>"$T/err"; expect_rc $? 3 "live on /dev/null (not a serial port)"
-# (it said "/dev/null: not a serial port libserialport knows (no /sys/class/tty
-# entry): No such file or directory", of a file that exists; the live review)
+# (not "/dev/null: not a serial port libserialport knows (no /sys/class/tty
+# entry): No such file or directory", of a file that exists)
 if grep -q "No such file" "$T/err"; then fail "the error on /dev/null says it does not exist: $(cat "$T/err")"; else pass "the error on /dev/null does not say it is missing"; fi
 grep_in "$T/err" "no /sys/class/tty/null" "the error names the sysfs entry libserialport looks for"
 timeout $LIMIT "$H" live /dev/null --rate 100 >/dev/null 2>"$T/err"; expect_rc $? 2 "live --rate (resampling needs the whole log)"
@@ -130,9 +130,9 @@ for o in record json; do
     grep_in "$T/err" "no/dir/x.$o" "the error names the --$o file, before the port"
 done
 # a port that cannot be opened (the sensor unplugged) leaves --out as it was:
-# the CSV was created before the port was opened, and an earlier run's
-# trajectory was emptied by a run that never started (the live review of
-# 2026-12-01); an --out that cannot be written is refused first, as --record's
+# were the CSV created before the port is opened, an earlier run's
+# trajectory would be emptied by a run that never started; an --out that
+# cannot be written is refused first, as --record's
 printf 't_s\n1.0\n' >"$T/keep.csv"
 timeout $LIMIT "$H" live /dev/nonexistent-port --out "$T/keep.csv" >/dev/null 2>"$T/err"; expect_rc $? 3 "live --out on a missing port"
 if [ "$(cat "$T/keep.csv")" = "$(printf 't_s\n1.0')" ]; then pass "an earlier --out is kept when the port cannot be opened"; else fail "the earlier --out was overwritten: $(wc -c <"$T/keep.csv") bytes"; fi
@@ -145,8 +145,8 @@ start_link
 # the real libserialport path refuses a pty: this is why the seam exists
 timeout $LIMIT "$H" live "$A" >/dev/null 2>"$T/err"; expect_rc $? 3 "live on a pty without the seam"
 # by the link socat made, as a user following the docs types it: the error
-# names that path and says what to do (it named /dev/pts/N only, with "No such
-# file or directory" and no word of the seam; the live review, 2026-11-30)
+# names that path and says what to do (not /dev/pts/N only, with "No such
+# file or directory" and no word of the seam)
 timeout $LIMIT "$H" live "$T/a" >/dev/null 2>"$T/err"; expect_rc $? 3 "live on a pty's link without the seam"
 grep_in "$T/err" "$T/a ($A)" "the error names the path given and the device"
 grep_in "$T/err" "pseudo-terminal.*tests/cli/pty_seam.c" "the error says a pty needs the seam"
@@ -179,9 +179,9 @@ else
     fail "live --json differs from replay --json"
 fi
 grep_in "$T/live.out" "$N samples over" "live counts every sample"
-# the JSON says whether the stream was complete and what the link did (it had
-# neither: a run with lost frames wrote the JSON of a clean one, and
-# "command" was "harness live" without its options; the live review)
+# the JSON says whether the stream was complete and what the link did
+# (without them a run with lost frames writes the JSON of a clean one), and
+# "command" is not "harness live" without its options
 if /usr/bin/python3 -c "
 import json, sys
 d = json.load(open(sys.argv[1])); l = d.get('link') or {}
@@ -214,7 +214,7 @@ else
 fi
 
 # --- a gnuplot that fails: the last picture, drawn at the end, is an output that was not written; its child's exit
-# status was not looked at, and live exited 0 with no live.png (found by the plots review); no temporary is left
+# status is looked at, so that live does not exit 0 with no live.png; no temporary is left
 mkdir -p "$T/badgp"
 printf '#!/bin/sh\ncat >/dev/null\necho "gnuplot: cannot draw" >&2\nexit 1\n' >"$T/badgp/gnuplot"
 chmod +x "$T/badgp/gnuplot"
@@ -247,9 +247,9 @@ else
 fi
 grep_in "$T/live.out" "$BAD bad frames, $BAD lost frames in $BAD drops" "every corrupt frame counted and reported as a drop"
 # the run went on to the END frame: the summary has no replay-style
-# "stopped after N samples, at the input error above" line (live's JSON
-# verdict, 2026-11-30, put it there for every incomplete run, before an
-# error printed below it)
+# "stopped after N samples, at the input error above" line (not there for
+# every incomplete run, as live's JSON verdict might put it, before an error
+# printed below it)
 if grep -q "^stopped " "$T/live.out"; then fail "live's summary says it stopped: $(grep "^stopped " "$T/live.out")"; else pass "live's summary does not say the run stopped at an input error"; fi
 grep_in "$T/live.err" "bad frame:" "corrupt frames are reported as they happen"
 "$H" convert "$T/rec_c.bin" "$T/rec_c.csv" >/dev/null 2>&1
@@ -268,8 +268,8 @@ grep_in "$T/live.out" "the sender sent $N samples, $((N - DROP)) received" "END 
 grep_in "$T/stream.out" "$N samples sent to $B ($DROP of them left out by --inject-drop, $((N - DROP)) written)" "stream says how many it left out"
 
 # --- a log with a bad line partway: every sample before it is sent, END
-# counts them, and the exit is 1 with the line named (a mutant that exited 0
-# here passed every case above; the mutation round of 2026-11-29)
+# counts them, and the exit is 1 with the line named (a mutant that exits 0
+# here passes every case above)
 { head -501 "$T/orig.csv"; echo "1.0,x,0,0,0,0,0"; tail -n +502 "$T/orig.csv"; } >"$T/bad_mid.csv"
 start_live --record "$T/rec_b.bin" --timeout 30
 stream "$T/bad_mid.csv" --speed 40
@@ -294,8 +294,7 @@ expect_rc $? 0 "the recording is complete and closed (END record written)"
 grep_in "$T/info.out" "samples     1000" "the recording holds the 1000 samples"
 
 # --- the link goes away under stream (socat killed): exit 3 with the error,
-# and no "done in 2.0 s" after it as if the log had gone out (the live
-# review, 2026-11-30)
+# and no "done in 2.0 s" after it as if the log had gone out
 start_link
 start_live --timeout 30
 LD_PRELOAD=$SEAM timeout $LIMIT "$H" stream vectors/walk.bin "$B" --speed 4 >"$T/stream.out" 2>"$T/stream.err" &
@@ -312,9 +311,9 @@ grep_in "$T/stream.err" "harness stream: .* %" "the progress was showing"
 if grep -q "done in" "$T/stream.err"; then fail "stream says done after the port failed: $(cat "$T/stream.err")"; else pass "no 'done' after the port failed"; fi
 grep_in "$T/stream.out" "the port failed before all were written" "the summary says the port failed"
 # ... and with standard error on a terminal (script(1) gives it one), the
-# error starts a line of its own: it was written after the progress line
+# error starts a line of its own, not written after the progress line
 # redrawn in place, "harness stream:  41 % (1.6 s)   harness stream: error:
-# write failed" (the live review, 2026-11-30)
+# write failed"
 if command -v script >/dev/null 2>&1; then
     start_link
     start_live --timeout 30
@@ -338,8 +337,8 @@ LIVE=$!
 wait_for 'grep -q "reading" "$T/live.err"' 200
 # (the sender is the harness itself, not a timeout around it, and is ended
 # with SIGKILL: a SIGTERM forwarded by timeout to an ASan build exiting
-# through LeakSanitizer once left both spinning, and the test waiting on
-# them, 2026-11-28; the cleanup trap kills it if the test dies first)
+# through LeakSanitizer can leave both spinning, and the test waiting on
+# them; the cleanup trap kills it if the test dies first)
 LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 4 >/dev/null 2>&1 &
 STREAM=$!
 wait_for '[ -f "$T/rec_k.bin" ] && [ "$(records "$T/rec_k.bin")" -ge 300 ]' 300
@@ -359,8 +358,8 @@ else
     fail "the killed recording ($k samples) is not a prefix of the log"
 fi
 
-# --- the sender is interrupted: exit 130 and no END frame (exit 0 before,
-# as if the stream were complete)
+# --- the sender is interrupted: exit 130 and no END frame (not exit 0, as
+# if the stream were complete)
 stop_link # the block above leaves its link up
 start_link
 start_live --record "$T/rec_i.bin" --timeout 60
@@ -409,8 +408,8 @@ if grep -q "restart:" "$T/live.err"; then fail "the repetition is reported as a 
 reads_back rec_rep.bin 300 "the recording holds each sample once"
 
 # an INFO rate that --baud cannot carry is said, as stream says it (400
-# samples/s of 51-byte frames need 204,000 baud; live said nothing; the live
-# review, 2026-11-30); once, and not at the default 460800
+# samples/s of 51-byte frames need 204,000 baud; not to go without a word);
+# once, and not at the default 460800
 stop_link
 start_link
 start_live --timeout 5 --baud 115200
@@ -448,8 +447,8 @@ grep_in "$T/live.out" "live: sensor: 5 samples missing by the sensor's counter i
 
 # line noise between intact frames (a false sync word): corrupt candidates,
 # but the sequence numbers show no frame lost and END counts every sample;
-# it exited 1 with "incomplete: 0 frames lost, 2 corrupt frames, ... 0 samples
-# missing" (the live review, 2026-11-30)
+# not exit 1 with "incomplete: 0 frames lost, 2 corrupt frames, ... 0 samples
+# missing"
 live_case noise rec_z.bin 5
 expect_rc "$LIVE_RC" 0 "live with line noise between intact frames (nothing lost)"
 grep_in "$T/live.err" "bad frame: 1 corrupt frame(s) skipped before frame seq 101; no frame lost (noise on the line)" "the noise is reported as such"
@@ -460,8 +459,8 @@ reads_back rec_z.bin 300 "the recording holds every sample"
 # --- Ctrl-C while a frame is on its way (a real UART delivers a frame in
 # pieces, so a stop lands inside one about half of the time at 400 Hz): the
 # piece is not a corrupt frame, and the run exits 0 as a stop between frames
-# does (it exited 1, "incomplete: 0 frames lost, 1 corrupt frames"; the live
-# review). The sender drips the piece a byte at a time, so the line is never
+# does (not exit 1, "incomplete: 0 frames lost, 1 corrupt frames"). The
+# sender drips the piece a byte at a time, so the line is never
 # quiet long enough for the decoder to give it up before the signal.
 stop_link
 start_link
@@ -490,9 +489,9 @@ grep_in "$T/live.out" "live: end: stopped by SIGINT (Ctrl-C); the frame arriving
 reads_back rec_cut.bin 300 "the recording holds the 300 whole samples"
 
 # --- the sender goes quiet with the port still open (stream killed, socat
-# still up, so no hang-up): the status line said the same thing every
-# second, for ever, as if all were well (the live review); it says how long
-# no frame has come (--timeout only ends the test)
+# still up, so no hang-up): the status line does not say the same thing
+# every second, for ever, as if all were well; it says how long no frame has
+# come (--timeout only ends the test)
 stop_link
 start_link
 start_live --print-every 0.25 --timeout 2
@@ -533,8 +532,8 @@ grep_in "$T/live.out" "live: end: no valid frame for 0.5 s (--timeout)" "the run
 
 # --- a signal after the run has ended (here by --timeout), while the last
 # picture is drawn: the run still ended by the timeout, and the summary and
-# the JSON say so, as the exit status and the error do (they said "stopped
-# by SIGINT"; the live review, 2026-12-01). A gnuplot that takes 3 s.
+# the JSON say so, as the exit status and the error do (not "stopped by
+# SIGINT"). A gnuplot that takes 3 s.
 mkdir -p "$T/slowgp"
 printf '#!/bin/sh\ncat >/dev/null\nsleep 3\nexit 1\n' >"$T/slowgp/gnuplot"
 chmod +x "$T/slowgp/gnuplot"
@@ -583,9 +582,9 @@ expect_rc $? 0 "the recording is complete and closed"
 
 # --- Ctrl-C while the trajectory waits on a slow reader of --out - (the pipe
 # full): the write goes on once the reader reads, and what was computed is
-# kept: exit 0, and the CSV is the replay of the recording, row for row. The
-# signal interrupted the blocked write: "cannot write the trajectory CSV",
-# exit 3, and 188 of 304 rows (the live review, 2026-12-01). The signal goes
+# kept: exit 0, and the CSV is the replay of the recording, row for row. A
+# signal that interrupted the blocked write would give "cannot write the
+# trajectory CSV", exit 3, and 188 of 304 rows. The signal goes
 # to the harness itself: timeout(1) passes one on twice (to the child and to
 # its process group), the second of which rightly cuts the write, below.
 ( LD_PRELOAD=$SEAM "$H" live "$A" --print-every 0 --record "$T/rec_s.bin" --out - --timeout 30 \
@@ -659,10 +658,10 @@ else
 fi
 
 # --- nobody sends: --timeout ends the run; --json is written all the same
-# (with no frame it was skipped, and an earlier run's file stayed beside the
-# emptied --out; a review, 2026-11-28)
-# with --plot-every and no sample yet: each redraw gave gnuplot empty data, whose errors ran down standard error
-# every S seconds (found by the plots review)
+# (not skipped with no frame, leaving an earlier run's file beside the
+# emptied --out)
+# with --plot-every and no sample yet: no redraw gives gnuplot empty data, whose errors would run down standard
+# error every S seconds
 if command -v gnuplot >/dev/null 2>&1; then
     start_live --timeout 1.5 --plot-every 0.2 --plot "$T/idle.png"
     wait_live
@@ -680,8 +679,8 @@ if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exi
     pass "--json written without a frame (aligned false)"; else fail "--json not rewritten: $(cat "$T/stale.json")"; fi
 
 # --- bytes that never make a frame (a wrong baud rate), ended by SIGTERM:
-# exit 1 and messages that say what arrived (it exited 0 as if complete, and
-# the status line read "aligning (keep the foot still)"; a review, 2026-11-29)
+# exit 1 and messages that say what arrived (not exit 0 as if complete, with
+# the status line reading "aligning (keep the foot still)")
 stop_link
 start_link
 LD_PRELOAD=$SEAM "$H" live "$A" --print-every 0.2 >"$T/live.out" 2>"$T/live.err" &
@@ -699,16 +698,15 @@ grep_in "$T/live.err" "no sample received from $A: 10240 bytes received" "the en
 grep_in "$T/live.out" "live: end: stopped by SIGTERM" "the summary says how the run ended"
 
 # --- a recording that cannot be written (a full disk): the summary counts
-# what the file holds, not what was received (it said 40 recorded)
+# what the file holds, not what was received (not 40 recorded)
 start_live --record /dev/full
 stream vectors/walk.bin --speed 0
 wait_live
 grep_in "$T/live.out" "recorded 0 samples" "a failed recording counts what it holds"
 
 # --- a trajectory that cannot be written (a full disk): the reason is given
-# ("cannot write the trajectory CSV; it stops here" and "cannot write
-# /dev/full" alone; a review, 2026-12-02), the summary and the JSON are
-# still written, exit 3
+# (not "cannot write the trajectory CSV; it stops here" and "cannot write
+# /dev/full" alone), the summary and the JSON are still written, exit 3
 rm -f "$T/fulllive.json"
 start_live --out /dev/full --json "$T/fulllive.json"
 stream vectors/walk.bin --speed 0
@@ -720,8 +718,8 @@ grep_in "$T/live.out" "return-to-start" "live: the summary written beside the fa
 [ -s "$T/fulllive.json" ] && pass "live: the JSON written beside the failed CSV" || fail "live: no JSON beside the failed CSV"
 
 # --- stream interrupted while a write waits on a port nobody reads: it
-# stops at once with 143 (it waited out the 10 s write timeout, then exited
-# 3, as libserialport resumes an interrupted write; a review, 2026-11-29)
+# stops at once with 143 (not waiting out the 10 s write timeout, then
+# exiting 3, as libserialport resumes an interrupted write)
 stop_link
 start_link
 LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 0 >"$T/stream.out" 2>"$T/stream.err" &
@@ -737,8 +735,8 @@ expect_rc "$STREAM_RC" 143 "stream stopped by SIGTERM while its write is blocked
 if [ "$dt" -le 5 ]; then pass "it stopped within $dt s"; else fail "it took $dt s to stop"; fi
 grep_in "$T/stream.out" "the interrupt cut the write" "stream says the batch was cut"
 # ... and by SIGHUP (the terminal it runs in closes), as live handles it:
-# stream died of it, with no summary of what it had sent (the live review,
-# 2026-12-01); 129 as for any signal, 128 + its number
+# stream does not die of it, with no summary of what it had sent; 129 as for
+# any signal, 128 + its number
 stop_link
 start_link
 LD_PRELOAD=$SEAM "$H" stream vectors/walk.bin "$B" --speed 0 >"$T/stream.out" 2>"$T/stream.err" &
@@ -769,7 +767,7 @@ else
 fi
 
 # --- stream: an interrupt while the END frame drains interrupts nothing:
-# every sample and END reach the receiver, exit 0 (it exited 130; a review)
+# every sample and END reach the receiver, exit 0 (not 130)
 stop_link
 start_link # a fresh pair: the stream above was not read to its end
 # 622 samples: the last write (78 samples and END, after four full 8 KB

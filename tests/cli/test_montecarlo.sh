@@ -9,9 +9,9 @@ trap 'rm -rf "$T"' EXIT
 . "$(dirname "$0")/lib.sh"
 
 expect_exit 0 "montecarlo --help" "$H" montecarlo --help
-# the document --json's help names holds the JSON's keys (it named
-# docs/results-sim.md, which has none of them; they are in docs/simulator.md,
-# "Monte Carlo"; a review, 2026-11-30)
+# the document --json's help names holds the JSON's keys (they are in
+# docs/simulator.md, "Monte Carlo"; not docs/results-sim.md, which has none
+# of them)
 doc=$(sed -n 's/^  --json .*\(docs\/[a-z-]*\.md\).*/\1/p' "$T/out")
 if [ -n "$doc" ] && grep -q '`final_h_rms_m`' "$(dirname "$0")/../../$doc" && grep -q '`variants' "$(dirname "$0")/../../$doc"
 then pass "--json's help names the document with its keys ($doc)"; else fail "--json's help names '$doc', without the keys"; fi
@@ -19,7 +19,7 @@ expect_exit 2 "bad effect" "$H" montecarlo --effect wobble
 "$H" montecarlo --seeds 1 --duration 8 --quiet >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" -eq 0 ]; then pass "montecarlo small run (exit 0)"; else fail "montecarlo small run: exit $rc"; cat "$T/err"; fi
 # --param help lists the keys, as replay's (the unknown-key error points
-# at it; montecarlo took 'help' for a malformed KEY=VALUE, exit 2)
+# at it), not 'help' taken for a malformed KEY=VALUE, exit 2
 expect_exit 2 "unknown --param key" "$H" montecarlo --param nokey=1 --seeds 1 --duration 2
 expect_err "list: --param help" "unknown --param key: the error points at --param help"
 expect_exit 0 "montecarlo --param help" "$H" montecarlo --param help
@@ -54,10 +54,10 @@ sys.exit(0 if n > 0 else 'no verdict in the JSON')
 PY
 then pass "NEES verdicts follow the per-bin rule"; else fail "NEES verdicts"; fi
 # ... and its direction: over-confident with more bins above the band than
-# below, pessimistic with more below, 'inconsistent' with as many (a tie was
-# called over-confident, which docs/simulator.md defines as more above; 3 mtx
-# runs of 20 s put the attitude of the 'off' variant 3 above and 3 below; a
-# review, 2026-11-30). The bins and their bands from the CSV.
+# below, pessimistic with more below, 'inconsistent' with as many (a tie is
+# not over-confident, which docs/simulator.md defines as more above; 3 mtx
+# runs of 20 s put the attitude of the 'off' variant 3 above and 3 below).
+# The bins and their bands from the CSV.
 expect_exit 0 "montecarlo for the verdict's direction" "$H" montecarlo --seeds 3 --duration 20 --profile mtx \
     --bias-model both --quiet --json "$T/dir.json" --csv "$T/dir.csv"
 if /usr/bin/python3 - "$T/dir.json" "$T/dir.csv" <<'PY'
@@ -88,13 +88,13 @@ if ties == 0:
 PY
 then pass "NEES verdicts: the direction follows the bins above and below"; else fail "NEES verdict direction"; fi
 # a group without NEES (the biases without the bias model) has no verdict
-# (it was 'over-confident', the fallback of an undefined fraction in band)
+# (not 'over-confident', the fallback of an undefined fraction in band)
 if json "$T/mc.json" '[v["nees"][g]["verdict"] for v in j["variants"] if v["name"] == "off" for g in ("bias", "all")] == [None, None]'
 then pass "no NEES, no verdict"; else fail "verdict without NEES: $(grep -m3 verdict "$T/mc.json" | tr -d '\n\t')"; fi
 if head -1 "$T/mc.csv" | grep -q "^variant,t_s,odo_m,n,rms_h_m"; then pass "CSV header"; else fail "CSV header"; fi
 if grep -q "^off," "$T/mc.csv" && grep -q "^ar1," "$T/mc.csv"; then pass "both variants in the CSV"; else fail "variants in CSV"; fi
 # the bins before the alignment have no estimate: empty fields (as allan's
-# CSV), as the JSON has null; they were written as 'nan'
+# CSV), as the JSON has null; not 'nan'
 if grep -qi 'nan' "$T/mc.csv"; then fail "NaN in the montecarlo CSV: $(grep -i -m1 nan "$T/mc.csv")"; else pass "no NaN in the CSV"; fi
 if grep -q '^ar1,1\.000000,0\.000,0,,,,,,' "$T/mc.csv"; then pass "a bin without estimates has empty fields"; else fail "first bin: $(grep -m1 '^ar1,' "$T/mc.csv")"; fi
 # the summary: no NaN either (a standing 'walk' has no distance; bins before
@@ -111,9 +111,9 @@ expect_exit 0 "montecarlo of a walk from the first tick" "$H" montecarlo --motio
 if json "$T/walk20.json" 'all(h < 3 * p for v in j["variants"] for h, p in zip(v["final_h_m"], v["final_pred_h_m"]))'
 then pass "walk from the first tick: final errors within 3 predicted sd"
 else fail "walk from the first tick: $(grep -A3 '"final_h_m"' "$T/walk20.json" | tr -d '\n\t')"; fi
-# the mean's 95 % interval is Student's (1.96, the normal quantile, made
-# 3 runs' interval 2.2 times too narrow), and one run has none (it printed
-# +- 0.000); figures that no run defines are null in the JSON (they were 0)
+# the mean's 95 % interval is Student's (1.96, the normal quantile, makes
+# 3 runs' interval 2.2 times too narrow), and one run has none (not
+# +- 0.000); figures that no run defines are null in the JSON (not 0)
 expect_exit 0 "montecarlo of 3 runs" "$H" montecarlo --seeds 3 --duration 20 --profile mtx --json "$T/ci3.json"
 ci=$(sed -n 's/.*final horizontal error   mean [0-9.]* m (+- \([0-9.]*\)).*/\1/p' "$T/out" | head -n 1)
 if [ -n "$ci" ] && json "$T/ci3.json" "abs(__import__('scipy.stats').stats.t.ppf(0.975, 2) * __import__('statistics').stdev(j['variants'][0]['final_h_m']) / 3 ** 0.5 - $ci) <= 0.0005"
@@ -128,9 +128,9 @@ expect_out "paired (off - ar1, same samples): none, no run has a final estimate 
 expect_out "pos   d=3   no NEES: no aligned estimate" "no aligned estimate: the summary says so (not 'states off')"
 if json "$T/none.json" 'all(v[k] is None for v in j["variants"] for k in ("final_h_mean_m", "final_h_rms_m", "final_h_median_m", "final_h_p95_m", "final_v_rms_m", "final_v_median_m"))'
 then pass "no final estimate: the final statistics are null"; else fail "no final estimate: $(grep -m2 final_h_ "$T/none.json")"; fi
-# the plot of such runs: gnuplot got no point ("x range is invalid"), the picture was left half drawn and --plot
-# exited 3 where the run without it exits 0; and runs with one growth bin made gnuplot warn "empty x range" on
-# standard error (found by the plots review): panels that say so, and a range around the one bin
+# the plot of such runs: gnuplot given no point says "x range is invalid", leaves the picture half drawn and --plot
+# exits 3 where the run without it exits 0; and runs with one growth bin make gnuplot warn "empty x range" on
+# standard error: panels that say so, and a range around the one bin
 if command -v gnuplot >/dev/null 2>&1; then
     expect_exit 0 "montecarlo --plot without an aligned estimate" "$H" montecarlo --motion stand --seeds 2 --duration 0.2 \
         --bias-model both --quiet --plot "$T/none.png"
@@ -234,19 +234,19 @@ if /usr/bin/env python3 -c "import json,sys; json.load(open(sys.argv[1]))" "$T/m
     pass "montecarlo --json -: valid JSON alone on standard output"; else fail "--json -: $(head -n 2 "$T/mc_stdout.json")"; fi
 
 # a CSV on a full standard output: exit 3, and the message names standard
-# output (it said '-: cannot write')
+# output (not '-: cannot write')
 "$H" montecarlo --seeds 1 --duration 3 --csv - >/dev/full 2>"$T/err"; rc=$?
 if [ "$rc" -eq 3 ]; then pass "--csv - on a full disk (exit 3)"; else fail "--csv - on a full disk: exit $rc"; fi
 expect_err "standard output: cannot write" "--csv - on a full disk names standard output"
 
-# the CSV's bin times as exact as the bin (--bin 0.0125 printed 0.013,
-# 0.025, 0.038: three decimals; the MC review, 2026-11-29)
+# the CSV's bin times as exact as the bin (--bin 0.0125 is not printed as
+# 0.013, 0.025, 0.038: three decimals)
 expect_exit 0 "--bin 0.0125" "$H" montecarlo --seeds 1 --duration 2 --bin 0.0125 --csv "$T/fine.csv" --quiet
 if awk -F, 'NR == 2 { ok = ($2 + 0 == 0.0125) } END { exit !ok }' "$T/fine.csv"; then
     pass "the first bin ends at 0.0125 s"; else fail "first bin: $(sed -n 2p "$T/fine.csv" | cut -d, -f1-3)"; fi
 # a bin ends where the run ends: its estimates are of that time; a 3.5 s
-# run's last bin said 4 s, and the one bin of a 3 s run with --bin 100 said
-# 100 s (plotted there; the simmc review, 2026-12-02)
+# run's last bin must not say 4 s, nor the one bin of a 3 s run with --bin
+# 100 say 100 s (and be plotted there)
 expect_exit 0 "a run of 3.5 s in 1 s bins" "$H" montecarlo --seeds 1 --motion stand --duration 3.5 \
     --csv "$T/end.csv" --json "$T/end.json" --quiet
 if [ "$(tail -n 1 "$T/end.csv" | cut -d, -f2)" = "3.500000" ]; then pass "the last bin ends at the run's end, 3.5 s"
@@ -262,16 +262,16 @@ expect_exit 2 "--seed 4294967295 --seeds 2" "$H" montecarlo --seed 4294967295 --
 expect_err "4294967295" "the seed range is named"
 
 # a run whose samples cannot fit in memory is refused before it starts,
-# naming the size (standing 1e6 s at 200 Hz, 38 GB, simulated for minutes and
-# grew to about 16 GB before "out of memory"; the MC review, 2026-11-29)
+# naming the size (standing 1e6 s at 200 Hz, 38 GB, would otherwise simulate
+# for minutes and grow to about 16 GB before "out of memory")
 timeout 20 "$H" montecarlo --seeds 1 --motion stand --duration 1e6 --rate 200 >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" -eq 2 ]; then pass "a run larger than the memory (exit 2 at once)"; else fail "a run larger than the memory: exit $rc"; fi
 expect_err "GB of samples" "the size of the run is named"
 
 # runs that agree to the last bit (no sensor error): the one-pass
-# variance, sum of squares less n mean^2, came out a rounding below 0 and its
-# square root NaN, so 3 runs read "no interval: no run" (the ident review,
-# 2026-12-01); a two-pass variance gives +- 0.000
+# variance, sum of squares less n mean^2, comes out a rounding below 0 and its
+# square root NaN, so 3 runs would read "no interval: no run"; a two-pass
+# variance gives +- 0.000
 "$H" montecarlo --motion walk --duration 12 --profile none --seeds 3 >"$T/out" 2>"$T/err"; rc=$?
 if [ "$rc" -eq 0 ] && grep -q "final horizontal error   mean [0-9.]* m (+- 0.000)" "$T/out"; then
     pass "identical runs: the mean's interval is +- 0.000"

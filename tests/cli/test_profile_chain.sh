@@ -123,8 +123,8 @@ then pass "1-minute log: ax holds the bound from the minimum, no sub-sample AR(1
 # deviation of correlation time T and sd sigma peaks at tau = x T with height y sigma; the bound is
 # T = t_BS / x, sigma = BS / y. x and y here come from maximising the continuous AR(1) Allan variance
 # 2 sigma^2 T / tau [1 - T / (2 tau) (3 - 4 e^(-tau/T) + e^(-2 tau/T))] (IEEE Std 952-1997, C.8) with
-# scipy: x = 1.8926, y = 0.6174. A bound with T = t_BS (no 1.89) or sigma = BS / 0.664 passed every test
-# (the mutation review, 2026-11-29).
+# scipy: x = 1.8926, y = 0.6174. These checks fail a bound with T = t_BS (no 1.89) or sigma = BS / 0.664, which
+# would otherwise pass every test.
 if /usr/bin/python3 - "$T/short.profile" "$T/short.json" <<'PY'
 import json, math, sys
 import numpy as np
@@ -156,9 +156,9 @@ sys.exit(0 if ok and n > 0 else 1)
 PY
 then pass "1-minute log: each bound is T = t_BS / 1.89, sigma = BS / 0.617 (the AR(1) Allan peak by scipy)"
 else fail "1-minute log: the bound's T or sigma against the AR(1) Allan peak"; fi
-# a profile edited by hand in the wrong unit (the gyro noise in deg/s/sqrt(Hz), the accelerometer bias in mg) was
-# taken without a word: replay on the bundled walk ended 0.33 m from its start instead of 0.04 m, health all 0
-# (a user review, 2026-11-30). A value no IMU has in the key's unit is now a warning naming the key and the unit
+# a profile edited by hand in the wrong unit (the gyro noise in deg/s/sqrt(Hz), the accelerometer bias in mg) must
+# not be taken without a word: replay on the bundled walk ends 0.33 m from its start instead of 0.04 m, health all
+# 0. A value no IMU has in the key's unit is a warning naming the key and the unit
 # it most likely is in; the run goes on (the value is valid); every command that loads a profile says it once
 cp docs/profiles/generic-mems.profile "$T/hand.profile"
 sed -i 's/^gyro_noise_rps_rthz = .*/gyro_noise_rps_rthz = 0.0396 0.0422 0.039/' "$T/hand.profile"
@@ -173,17 +173,15 @@ expect_err "warning: $T/hand2.profile: accel_bias_sigma_mps2 5 is 0.51 g, above 
     "an accelerometer bias in mg: warned with the likely unit"
 [ "$(grep -c "above any IMU's" "$T/err")" -eq 1 ] && pass "montecarlo: one warning for its profile" || fail "montecarlo warnings: $(grep -c "above any IMU's" "$T/err")"
 # ... and with two such files, the sensor's and the filter's, once each over
-# the runs (the loader remembers each file it warned about, up to 64; it
-# remembered the last only until 2026-12-02: tests/test_profile.c,
-# test_load_warns_once_per_file)
+# the runs (the loader remembers each file it warned about, up to 64, not the
+# last only: tests/test_profile.c, test_load_warns_once_per_file)
 expect_exit 0 "montecarlo with two implausible profiles" "$H" montecarlo --seeds 3 --duration 10 --quiet --profile "$T/hand2.profile" --filter-profile "$T/hand.profile"
 [ "$(grep -c "hand2.profile: accel_bias_sigma_mps2 5 is" "$T/err")" -eq 1 ] && [ "$(grep -c "hand.profile: gyro_noise_rps_rthz 0.0396 is" "$T/err")" -eq 1 ] &&
     pass "montecarlo: one warning for each of two profiles" || fail "two profiles' warnings: $(grep -c "above any IMU's" "$T/err")"
 expect_exit 0 "replay with the generic profile file" "$H" replay vectors/walk.bin --quiet --profile docs/profiles/generic-mems.profile
 ! grep -q "above any IMU's" "$T/err" && pass "a plausible profile: no warning" || fail "generic-mems.profile warned: $(cat "$T/err")"
 # a profile file whose name has no '/' and no '.' is read as a built-in's
-# name: the error said only "unknown profile", though the file was there
-# (a contributor's review, 2026-11-30)
+# name: the error must say more than "unknown profile" when the file is there
 cp docs/profiles/generic-mems.profile "$T/mysensor"
 (cd "$T" && "$H" replay "$OLDPWD/vectors/walk.bin" --quiet --profile mysensor) >"$T/out" 2>"$T/err"; st=$?
 [ $st -eq 2 ] && pass "a bare name is a built-in's name (exit 2)" || fail "bare name: exit $st, expected 2"
@@ -193,8 +191,8 @@ expect_err "unknown profile 'mysensor'.*a file of that name exists: give it as .
     pass "./mysensor is read as the file" || { fail "./mysensor"; cat "$T/err"; }
 expect_exit 2 "an unknown name, no such file" "$H" replay vectors/walk.bin --quiet --profile nosuchsensor
 ! grep -q "file of that name" "$T/err" && pass "no file hint without a file" || fail "file hint for a missing file: $(cat "$T/err")"
-# a directory of that name: "unknown profile 'mydir'" alone (a review,
-# 2026-12-02); it says the name is a directory, not a profile file
+# a directory of that name: not "unknown profile 'mydir'" alone; it says the
+# name is a directory, not a profile file
 mkdir -p "$T/mydir"
 (cd "$T" && "$H" replay "$OLDPWD/vectors/walk.bin" --quiet --profile mydir) >"$T/out" 2>"$T/err"; st=$?
 [ $st -eq 2 ] && pass "a bare name that is a directory: exit 2" || fail "bare directory name: exit $st, expected 2"
@@ -209,8 +207,8 @@ expect_exit 0 "sim with the datasheet example profile" "$H" sim --duration 5 --p
 
 # --- a profile file a user got wrong (docs/profile-format.md): each mistake
 # is a usage error (exit 2) naming the file, the line and what is wrong, and
-# nothing is replayed. Never run by a test before make coverage-harness
-# (2026-11-30, hx_profile.c).
+# nothing is replayed (these paths of hx_profile.c are otherwise run by no
+# test: make coverage-harness).
 HDR='format = footnav-profile 1'
 bad_profile() { # description expected-message: $T/bad.profile is the file
     expect_exit 2 "profile $1" "$H" replay vectors/walk.bin --quiet --profile "$T/bad.profile" --out "$T/bad_out.csv"

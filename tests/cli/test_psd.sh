@@ -33,13 +33,13 @@ if "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]; assert 1
 else
     fail "tone bandwidth"
 fi
-# the input file as replay's JSON names it, `log`, and `source` kept as its alias (until 2026-12-01 `source` only)
+# the input file as replay's JSON names it, `log`, and `source` kept as its alias (not `source` only)
 json "$T/tone.json" 'j["log"] == j["source"] == sys.argv[1].replace("tone.json", "tone.csv")' &&
     pass "psd --json names the log as replay's does (log), source its alias" || fail "psd --json log/source: $(head -c 200 "$T/tone.json")"
 expect_out_re "^  lowest usable sampling frequency: 250 Hz \(accelerometers and gyroscopes alike; 95 % of the power, multiples of 50 Hz\)$" \
     "--dc global: the answer line without the pointer"
 # the default (--dc segment, the paper's setting) is not the recommended one: the answer line says which it is (the
-# 820 Hz walk's 450 Hz read as the answer, where docs/psd.md recommends --dc global, 300 Hz; a user review)
+# 820 Hz walk's 450 Hz would read as the answer, where docs/psd.md recommends --dc global, 300 Hz)
 for dc in "" "--dc segment"; do
     expect_exit 0 "tone, ${dc:-the default dc}" "$H" psd "$T/tone.csv" $dc
     expect_out_re "^  lowest usable sampling frequency: 250 Hz \(accelerometers and gyroscopes alike; 95 % of the power, multiples of 50 Hz\) \(--dc segment, the paper's setting; --dc global is recommended: docs/psd.md\)$" \
@@ -49,8 +49,8 @@ expect_exit 0 "tone, --dc linear" "$H" psd "$T/tone.csv" --dc linear
 grep -q "is recommended" "$T/out" && fail "--dc linear: the pointer is for the paper's setting only" ||
     pass "--dc linear: no pointer"
 expect_exit 3 "unwritable output" "$H" psd "$T/tone.csv" --out /nonexistent/dir/p.csv
-# every output is checked before the Welch work: an unwritable one is exit 3 with nothing printed (found at the
-# end, after the work; 2026-11-30)
+# every output is checked before the Welch work: an unwritable one is exit 3 with nothing printed (not found at
+# the end, after the work)
 for o in "--out /nonexistent/dir/p.csv" "--json /nonexistent/dir/p.json" "--plot /nonexistent/dir/pd"; do
     expect_exit 3 "unwritable ${o%% *}, before the work" "$H" psd "$T/tone.csv" $o
     if [ ! -s "$T/out" ]; then pass "unwritable ${o%% *}: nothing computed first"; else fail "unwritable ${o%% *}: the tables were printed first"; fi
@@ -64,7 +64,7 @@ F=$("$PY" -c 'import json,sys; print("%.1f" % json.load(open(sys.argv[1]))["resu
 expect_out "lowest usable sampling frequency: $F Hz (accelerometers and gyroscopes alike; 95 % of the power, not rounded)" \
     "--round 0: the answer printed as the JSON's, to 0.1 Hz"
 # and its value: Nyquist, twice the band (100 to 131.25 Hz, as above), so 200 to 262.5 Hz; each group's too. The
-# unrounded answer of one band (the factor 2 dropped) passed every test (the mutation review, 2026-11-29)
+# unrounded answer of one band (the factor 2 dropped) would otherwise pass every test
 if "$PY" -c 'import json,sys; r=json.load(open(sys.argv[1]))["result"]
 for g in ("accel", "gyro"):
     b, f = r[g + "_bandwidth_hz"], r[g + "_fs_hz"]
@@ -74,10 +74,10 @@ assert 200 < r["fs_hz"] < 262.5 and r["fs_hz"] == max(r["accel_fs_hz"], r["gyro_
 else
     fail "--round 0: the answer is not 2 x the band: $(cat "$T/r0.json" | tr -d '\n' | cut -c1-400)"
 fi
-# a step that is no whole number of hertz: the answer 232.5 Hz (a multiple of 2.5) was printed to the hertz, "232 Hz",
-# in the answer line, the groups' lines and the table's fs_Hz column: no multiple of the step, and below what the rule
-# asks (the spectral-path review, 2026-12-01); now with the step's decimals. With --round 0 the table's fs_Hz column
-# (2 x the band itself) was printed to the hertz too: 231 beside 2xBW_Hz 230.9; now to 0.1 Hz, as the answer line.
+# a step that is no whole number of hertz: the answer 232.5 Hz (a multiple of 2.5) printed to the hertz, "232 Hz",
+# in the answer line, the groups' lines and the table's fs_Hz column, would be no multiple of the step, and below what
+# the rule asks; it is printed with the step's decimals. With --round 0 the table's fs_Hz column (2 x the band
+# itself) is printed to 0.1 Hz, as the answer line, not to the hertz: 231 beside 2xBW_Hz 230.9.
 expect_exit 0 "tone, --round 2.5" "$H" psd "$T/tone.csv" --round 2.5 --json "$T/r25.json"
 F=$("$PY" -c 'import json,sys; print("%.1f" % json.load(open(sys.argv[1]))["result"]["fs_hz"])' "$T/r25.json")
 "$PY" -c 'import json,sys; f = json.load(open(sys.argv[1]))["result"]["fs_hz"]; assert f % 2.5 == 0 and f % 1 != 0, f' "$T/r25.json" &&
@@ -89,8 +89,8 @@ expect_out "accelerometers: bandwidth 115.4 Hz -> $F Hz" "--round 2.5: the group
 expect_out_re "^  ax +[0-9.e+-]+ +115\.4 +230\.9 +$F\$" "--round 2.5: the table's fs_Hz column a multiple of the step"
 expect_exit 0 "tone, --round 0 (table)" "$H" psd "$T/tone.csv" --round 0
 expect_out_re "^  ax +[0-9.e+-]+ +115\.4 +230\.9 +230\.9\$" "--round 0: the table's fs_Hz column is 2 x the band, to 0.1 Hz"
-# a step too small to round anything: --round 1e-40 ran as "multiples of 9.99995e-41 Hz" (a float subnormal), 1e-50
-# and 5e-324 as "not rounded (--round 0)" while the JSON said round_hz 1e-50, exit 0 (a review, 2026-12-02). 0 or a step
+# a step too small to round anything: --round 1e-40 must not run as "multiples of 9.99995e-41 Hz" (a float subnormal),
+# nor 1e-50 and 5e-324 as "not rounded (--round 0)" while the JSON says round_hz 1e-50, exit 0. 0 or a step
 # of at least 0.001 Hz, else refused as any bad option value (exit 2, naming the value; docs/psd.md, "Command")
 for r in 1e-40 1e-50 5e-324 1e-300 0.0009 1e-6; do
     expect_exit 2 "--round $r refused" "$H" psd "$T/tone.csv" --round $r
@@ -101,14 +101,14 @@ done
 expect_exit 2 "--round -1 refused" "$H" psd "$T/tone.csv" --round -1
 expect_exit 0 "--round 0.001, the smallest step" "$H" psd "$T/tone.csv" --round 0.001
 expect_out_re "^  lowest usable sampling frequency: 230\.893 Hz " "--round 0.001: the answer to the millihertz"
-# a threshold that is no whole percentage: --threshold 0.995 was printed to the percent, "holding 100 % of the total
-# power" and "100 % of the power" (the spectral-path review, 2026-12-01): the threshold is said as given
+# a threshold that is no whole percentage: --threshold 0.995 is not printed to the percent, "holding 100 % of the
+# total power" and "100 % of the power": the threshold is said as given
 expect_exit 0 "tone, --threshold 0.995" "$H" psd "$T/tone.csv" --threshold 0.995
 expect_out "the band from 0 Hz holding 99.5 % of the total power" "--threshold 0.995: the criterion says 99.5 %"
 expect_out_re "^  lowest usable sampling frequency: [0-9]+ Hz \(accelerometers and gyroscopes alike; 99\.5 % of the power, multiples of 50 Hz\)" \
     "--threshold 0.995: the answer line says 99.5 %"
 ! grep -q "100 %" "$T/out" && pass "--threshold 0.995: no '100 %'" || fail "--threshold 0.995: '100 %' printed"
-# every channel constant: no band anywhere, so no answer (it printed 'lowest usable sampling frequency: 0 Hz' with
+# every channel constant: no band anywhere, so no answer (not 'lowest usable sampling frequency: 0 Hz' with
 # fs_hz 0 and exit 0); the tables are still written and the JSON's answer is null
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 2000; i++) printf "%.3f,0.1,0.2,9.81,0.01,0,0\n", i / 1000.0 }' \
     >"$T/const.csv"
@@ -161,10 +161,10 @@ grep -q "gyroscopes (Fig. 4): bandwidths no power" "$T/ccdf.gp" && ! grep -q "ba
     ! grep -q '\$c3 using' "$T/ccdf.gp" && grep -q '\$c0 using' "$T/ccdf.gp" &&
     pass "constant gyroscopes: CCDF panel says no power, draws no gyroscope line" ||
     fail "constant gyroscopes: CCDF panel shows 0 Hz bands or flat lines"
-# the CCDF's y axis was linear, 0 to 1: the threshold's crossing (1 - 0.95 = 0.05) sat in the bottom 5 % of the
-# panel (a sensor-characterisation review, 2026-11-30). Now logarithmic down to a floor under the threshold line, the
+# the CCDF's y axis is not linear, 0 to 1, where the threshold's crossing (1 - 0.95 = 0.05) sits in the bottom 5 % of
+# the panel, but logarithmic down to a floor under the threshold line, the
 # line drawn, each CCDF point at the floor where it is 0 (a log axis has no 0: the sine's CCDF is 0 past 100 Hz), the
-# bandwidth marks from the panel's bottom to its top (at y = 0 on a log axis they were not drawn)
+# bandwidth marks from the panel's bottom to its top (at y = 0 on a log axis they would not be drawn)
 "$PY" - "$T/ccdf.gp" <<'PYEOF' && pass "CCDF panel: log y axis, floor under the threshold, no point at or under 0" ||
 import re, sys
 gp = open(sys.argv[1]).read()
@@ -187,17 +187,17 @@ PYEOF
     fail "CCDF panel: linear y axis, no threshold line, or a point a log axis cannot show"
 # the spectrogram's segment times against scipy.signal.spectrogram's t (Hann
 # 16, 50 %, on ax: a chirp of growing amplitude, so a column under another
-# segment's time shows in its dB too): every time was a sample early, the
-# centre taken as the last sample - nfft / 2 (the plots review); the
-# periodic Hann window's centre, scipy's t, is the first sample + nfft / 2
+# segment's time shows in its dB too): no time a sample early, the centre
+# taken as the last sample - nfft / 2; the periodic Hann window's centre,
+# scipy's t, is the first sample + nfft / 2
 awk 'BEGIN { srand(7); print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 200; k++) { t = k / 100.0
     printf "%.6f,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f\n", t, (1 + t) * sin(2 * 3.141592653589793 * (2 * t + 2 * t * t)) + 0.01 * (rand() - 0.5),
         0.01 * (rand() - 0.5), -9.8 + 0.01 * (rand() - 0.5), 0.001 * (rand() - 0.5), 0.001 * (rand() - 0.5), 0.001 * (rand() - 0.5) } }' >"$T/chirp.csv"
 fake_gnuplot "$T/fakegp"
 expect_exit 0 "a chirp, --plot with a stand-in gnuplot" env PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/spec.gp" \
     "$H" psd "$T/chirp.csv" --plot "$T/chirpplots" --spec-nfft 16 --spec-axis ax
-# the sensitivity plot: 800 pixels wide, its title ran past the right edge on the shared data's paths, and the
-# lines at the lowest and highest answer ran along the frame (a user review, 2026-11-30): 900 wide as psd.png, a
+# the sensitivity plot: at 800 pixels wide its title runs past the right edge on the shared data's paths, and
+# without a margin the lines at the lowest and highest answer run along the frame: 900 wide as psd.png, a
 # margin above and below, and the key beside the axes, where no line runs through it (the last script the
 # stand-in kept is the sensitivity plot's)
 awk 'BEGIN { srand(3); print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 3000; k++) { t = k / 200.0
@@ -209,19 +209,19 @@ grep -q "^set title 'Lowest usable sampling frequency" "$T/sens.gp" && grep -q "
     grep -q "^set offsets 0, 0, graph 0.05, graph 0.05$" "$T/sens.gp" && grep -q "^set key outside right top$" "$T/sens.gp" &&
     pass "sensitivity.png: 900 wide, a margin above and below its lines, the key beside the axes" ||
     fail "sensitivity.png: $(grep -E 'size|offsets' "$T/sens.gp")"
-# the spectrogram's options without --plot were ignored, exit 0 (a user review, 2026-11-30)
+# the spectrogram's options without --plot are refused, not ignored with exit 0
 expect_exit 2 "--spec-axis without --plot" "$H" psd "$T/sens.csv" --spec-axis gx
 expect_err "--spec-axis sets the spectrogram of --plot DIR (spectrogram.png): give --plot DIR" "--spec-axis without --plot: named"
 expect_exit 2 "--spec-nfft without --plot" "$H" psd "$T/sens.csv" --spec-nfft 128
 expect_err "--spec-nfft sets the spectrogram of --plot DIR" "--spec-nfft without --plot: named"
-# the Welch work itself showed no progress: --nfft 4096 --overlap 4095 on a 1,000,000-sample static log is a
-# transform per sample, minutes without a word once "psd: reading" ended (a user review, 2026-11-30); 20,000
+# the Welch work itself shows progress: --nfft 4096 --overlap 4095 on a 1,000,000-sample static log is a
+# transform per sample, minutes that would pass without a word once "psd: reading" ends; 20,000
 # samples take about 3 s here: the progress lines (one per 10 % off a terminal) name the work
 awk 'BEGIN { srand(9); print "t,ax,ay,az,gx,gy,gz"; for (k = 0; k < 20000; k++) printf "%.4f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", k / 100.0, rand() - 0.5, rand() - 0.5, -9.8 + rand() - 0.5, 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5) }' >"$T/long.csv"
 expect_exit 0 "--nfft 4096 --overlap 4095 on 20,000 samples" "$H" psd "$T/long.csv" --nfft 4096 --overlap 4095
 grep -q "^psd: Welch: *[0-9]* %" "$T/err" && pass "the Welch work shows progress" || fail "no Welch progress: $(head -c 300 "$T/err")"
-# the colour bar's label sat on its tick labels ("-10", "-20" under "PSD [dB re 1 (m/s^2)^2/Hz]" on the 820 Hz walk;
-# a user review, 2026-11-30): it is moved out past them
+# the colour bar's label would sit on its tick labels ("-10", "-20" under "PSD [dB re 1 (m/s^2)^2/Hz]" on the 820 Hz
+# walk): it is moved out past them
 grep -q "^set cblabel 'PSD \[dB re 1 (m/s^2)^2/Hz\]' offset 2.5,0$" "$T/spec.gp" &&
     pass "the spectrogram's colour-bar label is offset from its tick labels" || fail "cblabel: $(grep cblabel "$T/spec.gp")"
 if "$PY" -c 'import scipy' 2>/dev/null; then
@@ -250,9 +250,9 @@ expect_exit 1 "every channel constant, --plot" "$H" psd "$T/const.csv" --plot "$
 for f in psd ccdf spectrogram; do
     [ -s "$T/cplots/$f.png" ] && pass "every channel constant: $f.png" || fail "every channel constant: $f.png missing"
 done
-# the sensitivity plot of such logs: one value on every row (50 Hz) made gnuplot warn "empty y range" on standard
-# error, and a log of zeros, no value at all, failed it ("all points y value undefined") with exit 3 instead of 1
-# (found by the plots review)
+# the sensitivity plot of such logs: one value on every row (50 Hz) must not make gnuplot warn "empty y range" on
+# standard error, nor a log of zeros, no value at all, fail it ("all points y value undefined") with exit 3 instead
+# of 1
 expect_exit 1 "every channel constant, --plot --sensitivity" "$H" psd "$T/const.csv" --plot "$T/csplots" --sensitivity
 [ -s "$T/csplots/sensitivity.png" ] && ! grep -qi "warning: empty\|gnuplot" "$T/err" &&
     pass "constant log: sensitivity.png without a gnuplot warning" || fail "constant log sensitivity: $(cat "$T/err")"
@@ -271,25 +271,25 @@ expect_err "fewer samples (100) than one spectrogram segment (--spec-nfft 256)" 
 [ -s "$T/shortplots/psd.png" ] && [ -s "$T/shortplots/ccdf.png" ] && pass "short log: psd.png, ccdf.png" ||
     fail "short log: psd.png or ccdf.png missing"
 [ ! -e "$T/shortplots/spectrogram.png" ] && pass "short log: no spectrogram.png" || fail "short log: spectrogram.png written"
-# an input whose name has a quote: it went into the plots' titles unescaped, ended gnuplot's string, and --plot
-# exited 3 with psd.png drawn from a broken script and no ccdf.png (found by the plots review)
+# an input whose name has a quote: unescaped in the plots' titles, it would end gnuplot's string, and --plot
+# exit 3 with psd.png drawn from a broken script and no ccdf.png
 cp "$T/tone.csv" "$T/it's.csv"
 expect_exit 0 "input named with a quote, --plot --sensitivity" "$H" psd "$T/it's.csv" --plot "$T/qplots" --sensitivity
 for f in psd ccdf spectrogram sensitivity; do
     [ -s "$T/qplots/$f.png" ] && pass "quoted input: $f.png" || fail "quoted input: $f.png missing"
 done
 ! grep -q "gnuplot>" "$T/err" && pass "quoted input: no gnuplot error" || fail "quoted input: gnuplot error"
-# a --plot directory whose name has a line break (and a tab, a backslash, a double quote): gnuplot's string took the
-# break for a space, wrote "a b/psd.png" elsewhere or nowhere, and --plot exited 3 (found by the plots review)
+# a --plot directory whose name has a line break (and a tab, a backslash, a double quote): gnuplot's string must not
+# take the break for a space, write "a b/psd.png" elsewhere or nowhere, and --plot exit 3
 NLD="$T/a
 b	c\\d\"e"
 expect_exit 0 "a --plot directory named with a line break" "$H" psd "$T/tone.csv" --plot "$NLD"
 for f in psd ccdf spectrogram; do
     [ -s "$NLD/$f.png" ] && pass "line-break directory: $f.png" || fail "line-break directory: $f.png missing"
 done
-# a --plot directory with a long name (720 bytes, well under PATH_MAX): each picture's path was cut to 600 bytes by
-# psd and to 511 by the plot session, which then looked for the cut name: "gnuplot failed to write" and exit 3 with
-# psd.png drawn, and no other plot (found by the plots review)
+# a --plot directory with a long name (720 bytes, well under PATH_MAX): no picture's path is cut (to 600 bytes by
+# psd or to 511 by the plot session, which then looks for the cut name: "gnuplot failed to write" and exit 3 with
+# psd.png drawn, and no other plot)
 L=$T/$(printf '%0200d' 0)/$(printf '%0200d' 0)/$(printf '%0200d' 0)/$(printf '%0100d' 0)
 mkdir -p "$L"
 expect_exit 0 "a --plot directory with a 720-byte name" "$H" psd "$T/tone.csv" --plot "$L/p" --sensitivity
@@ -297,7 +297,7 @@ for f in psd ccdf spectrogram sensitivity; do
     [ -s "$L/p/$f.png" ] && pass "long directory: $f.png" || fail "long directory: $f.png missing"
 done
 # a log of one spectrogram segment (300 samples, --spec-nfft 256: the next needs 384): gnuplot's image of one column
-# is nothing, and a blank spectrogram.png was written without a word (found by the plots review); not drawn, said
+# is nothing, and a blank spectrogram.png is not written without a word; not drawn, said
 head -301 "$T/tone.csv" >"$T/oneseg.csv"
 expect_exit 0 "log of one spectrogram segment, --plot" "$H" psd "$T/oneseg.csv" --plot "$T/oneplots"
 expect_err "one spectrogram segment (300 samples, --spec-nfft 256 needs 384 for two)" "the missing spectrogram is explained"
@@ -313,8 +313,8 @@ for f in psd ccdf spectrogram sensitivity; do
     [ -s "$T/splots/$f.png" ] && pass "static $f.png" || fail "static $f.png missing"
 done
 # the same log at its own 100 Hz: white noise to the 50 Hz Nyquist frequency, 2 x 47.5 Hz rounds up to exactly the
-# log's rate, so fs_above_log_rate stays false; the answer was printed as a measured "100 Hz (the accelerometers
-# limit it)" without a word, though it is the log's rate by construction (a review, 2026-11-28)
+# log's rate, so fs_above_log_rate stays false; the answer is not printed as a measured "100 Hz (the accelerometers
+# limit it)" without a word, as it is the log's rate by construction
 expect_exit 0 "static log at 100 Hz" "$H" psd "$T/static.csv" --json "$T/s100.json"
 expect_err "of the Nyquist frequency 50 Hz: the power does not fall off" "a band at the Nyquist frequency is flagged below the log's rate"
 expect_out "accelerometers and gyroscopes alike" "a tie between the groups is not called the accelerometers'"
@@ -322,9 +322,9 @@ expect_out "DC: each segment's mean removed (a high-pass near f_s/nfft = 1.56 Hz
 expect_out "band from 0 Hz holding 95 % of the total power" "the output states its criterion"
 "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["band_at_nyquist"] is True and d["fs_above_log_rate"] is False and d["result"]["fs_hz"] == 100, d' "$T/s100.json" &&
     pass "JSON band_at_nyquist on a static log" || fail "JSON band_at_nyquist on a static log"
-# ... yet only the warning said that 100 Hz is a lower bound: the summary line read as a measurement, and the JSON's
-# band_at_nyquist is true also where the rounding alone lifts the answer (below); now the summary line says so, and
-# the JSON's fs_is_lower_bound and fs_lower_bound_hz (2026-11-30)
+# ... and not only the warning says that 100 Hz is a lower bound, as the summary line would read as a measurement,
+# and the JSON's band_at_nyquist is true also where the rounding alone lifts the answer (below): the summary line
+# says so, and the JSON's fs_is_lower_bound and fs_lower_bound_hz
 expect_out_re "^  lowest usable sampling frequency: 100 Hz \(accelerometers and gyroscopes alike; 95 % of the power, multiples of 50 Hz\), only a lower bound \(95 % of the power reaches 4[0-9.]+ Hz, 9[0-9] % of the Nyquist frequency: the log cannot show where the band ends\) \(--dc segment, " \
     "static log at 100 Hz: the summary line says the answer is a lower bound"
 "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_is_lower_bound"] is True and d["fs_lower_bound_hz"] == 100, d' "$T/s100.json" &&
@@ -342,7 +342,7 @@ expect_out_re "^  lowest usable sampling frequency: 50 Hz \(.*\), only a lower b
 "$PY" -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["fs_is_lower_bound"] is True and d["fs_lower_bound_hz"] == 10, d' "$T/s10.json" &&
     pass "JSON fs_lower_bound_hz above the log's rate: the rate" || fail "JSON fs_lower_bound_hz at 10 Hz: $(head -c 300 "$T/s10.json")"
 # a rounding step above the rate (--round 2000 on the 1000 Hz tone, band 115 Hz): the answer exceeds the rate through
-# the rounding alone; it was said to be because 95 % of the power 'reaches 115.4 Hz, near the Nyquist frequency 500 Hz'
+# the rounding alone, which is said, not that 95 % of the power 'reaches 115.4 Hz, near the Nyquist frequency 500 Hz'
 expect_exit 0 "tone, --round 2000" "$H" psd "$T/tone.csv" --round 2000
 expect_out_re "^  lowest usable sampling frequency: 2000 Hz \([^)]*\) \(--dc segment[^)]*\)$" \
     "--round 2000: the band ends inside the log's, the answer is no lower bound"
@@ -364,20 +364,20 @@ expect_err "huge.csv:102: column 5 (.1e30.) is beyond" "the out-of-range value i
 { echo t,ax,ay,az,gx,gy,gz; i=0; while [ $i -lt 300 ]; do echo 5,0.1,0.2,9.8,0.01,0.02,0.03; i=$((i + 1)); done; } > "$T/same.csv"
 expect_exit 1 "time stamps that never advance" "$H" psd "$T/same.csv"
 expect_err "sample rate unknown: every time stamp is the same" "says why there is no rate (was: nfft 64 at inf Hz)"
-# the same stamps, then a bad line: the cause is still the rate (it said 'the 300 samples before it are fewer than one
+# the same stamps, then a bad line: the cause is still the rate (not 'the 300 samples before it are fewer than one
 # 64-sample segment', which is false)
 { cat "$T/same.csv"; echo 5,x,1,1,1,1,1; } >"$T/samebad.csv"
 expect_exit 1 "time stamps that never advance, then a bad line" "$H" psd "$T/samebad.csv"
 expect_err "sample rate unknown: every time stamp is the same" "a bad line after stamps that never advance: the rate is named"
 ! grep -q "fewer than one" "$T/err" && pass "300 samples are not called fewer than one 64-sample segment" ||
     fail "300 samples called fewer than one 64-sample segment"
-# one stamped sample: too short, not a rate to give (it said 'sample rate unknown; give --input-rate', an option the
+# one stamped sample: too short, not a rate to give (not 'sample rate unknown; give --input-rate', an option the
 # stamped CSV ignores)
 head -2 "$T/same.csv" >"$T/one.csv"
 expect_exit 1 "one stamped sample" "$H" psd "$T/one.csv" --input-rate 100
 expect_err "1 samples, fewer than one 64-sample segment" "one sample: too short for a segment"
 expect_err "fewer than one 64-sample segment; a Welch segment needs at least 8 samples" "one sample: the least a segment needs"
-# 1001 samples with --nfft 4096: the error said what is missing, not what to do (a user review, 2026-11-30)
+# 1001 samples with --nfft 4096: the error says what to do, not only what is missing
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 1001; i++) printf "%.3f,%.4f,0,9.81,0,0,%.4f\n", i / 100, sin(i), cos(i) }' > "$T/k1.csv"
 expect_exit 1 "1001 samples, --nfft 4096" "$H" psd "$T/k1.csv" --nfft 4096
 expect_err "k1.csv: 1001 samples, fewer than one 4096-sample segment; give --nfft 512 or less (a power of two)" \
@@ -397,40 +397,40 @@ awk 'NR == 1 || (NR - 1) % 100 != 50' "$T/ms.csv" >"$T/msgap.csv"
 expect_exit 0 "millisecond stamps with lost samples" "$H" psd "$T/msgap.csv"
 expect_err "30 of 2969 intervals differ" "lost samples under millisecond stamps are counted"
 # 100 Hz stamps printed to 10 ms (exact intervals: the period is one resolution) with 30 single samples lost: each
-# 20 ms interval was within 10 % + the 10 ms resolution of 10 ms, and no warning was given (the static review)
+# 20 ms interval is within 10 % + the 10 ms resolution of 10 ms, which must not leave them without a warning
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) if (i % 100 != 50) printf "%.2f,%.4f,0,9.81,0,0,%.4f\n", i / 100, sin(i), cos(i) }' > "$T/cs.csv"
 expect_exit 0 "10 ms stamps at 100 Hz with lost samples" "$H" psd "$T/cs.csv"
 expect_err "30 of 2969 intervals differ" "single lost samples under stamps of one period's resolution are counted"
-# the time column in milliseconds (100 Hz read as 0.1 Hz): only "the answer (50 Hz) is above the log's own rate
-# (0.1 Hz)" hinted at it (the static review); the unit and the divisor are now named, the status unchanged (0)
+# the time column in milliseconds (100 Hz read as 0.1 Hz): not only "the answer (50 Hz) is above the log's own rate
+# (0.1 Hz)" hints at it; the unit and the divisor are named, the status unchanged (0)
 awk 'BEGIN { print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) printf "%d,%.4f,0,9.81,0,0,%.4f\n", i * 10, sin(i), cos(i) }' > "$T/tms.csv"
 expect_exit 0 "time stamps in milliseconds" "$H" psd "$T/tms.csv"
 expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "time in milliseconds is named, with the --units item (it said divide by 1000 until 2026-11-30)"
-# the other way: read with --units time=ns, 1e6 times too fast (100 MHz), without a word (the units review,
-# 2026-11-30); now the unit that fits is named
+# the other way: read with --units time=ns, 1e6 times too fast (100 MHz), not without a word: the unit that fits
+# is named
 expect_exit 0 "time stamps in milliseconds read as ns" "$H" psd "$T/tms.csv" --units time=ns
 expect_err "the samples are 1e-08 s apart (1e+08 Hz): are the time stamps in nanoseconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "stamps too fast: ms read as ns told time=ms"
 # stamps in bursts (packets of 4 samples stamped 5 us apart as a logger reads them, every 10 ms: the walk of
-# vectors/walk.bin, 400 Hz over the log), in us read as such: psd warned "are the time stamps in microseconds? (they
-# look like milliseconds, a 200 Hz log: give --units time=ms)", 1000 times too slow, where replay judges the log's
-# span too (the units review, 2026-11-30); the same test now (hx_time_unit_rate)
+# vectors/walk.bin, 400 Hz over the log), in us read as such: psd must not warn "are the time stamps in
+# microseconds? (they look like milliseconds, a 200 Hz log: give --units time=ms)", 1000 times too slow, where replay
+# judges the log's span too; the same test (hx_time_unit_rate)
 expect_exit 0 "convert the walk to CSV (stamps in bursts)" "$H" convert vectors/walk.bin "$T/bw.csv"
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
     "$T/bw.csv" > "$T/burst_us.csv"
 expect_exit 0 "stamps in bursts, read as us" "$H" psd "$T/burst_us.csv" --units time=us
-# a CSV names no sensor: the first line named it "(unknown)" where allan and info name the format
-# ("(csv log)"); the JSON's sensor stays the reader's "unknown" (2026-12-02)
+# a CSV names no sensor: the first line names the format ("(csv log)"), not "(unknown)", as allan and info
+# do; the JSON's sensor stays the reader's "unknown"
 expect_out "^harness psd: $T/burst_us.csv (csv log), 16539 samples" "psd: a CSV's first line names the format, as allan's does"
 if grep -q "are the time stamps in\|look like" "$T/err"; then fail "psd: stamps in bursts told a time unit: $(cat "$T/err")"; else
     pass "psd: stamps in bursts (400 Hz over the log) told no time unit"; fi
-# ... but its frequencies, read at 200 kHz, were given with only "intervals differ ...: Welch assumes uniform
-# sampling"; a warning now names the rate over the span and --input-rate (the units review, 2026-11-30; exit 0)
+# ... but its frequencies, read at 200 kHz, are not given with only "intervals differ ...: Welch assumes uniform
+# sampling"; a warning names the rate over the span and --input-rate (exit 0)
 expect_err "psd: warning: $T/burst_us.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 16539 samples span 41.34 s, 400 Hz; the frequencies are read at 2e+05 Hz, the stamps' rate, not the sampling rate: leave the time column out and give --input-rate 400 (docs/harness.md, \"Time stamps in bursts\")" \
     "psd: stamps in bursts warned, the stamps' rate said, 400 Hz and --input-rate named"
 # the same stamps in a .bin whose header states 400 Hz (nominal): the frequencies are read at it, which the span
-# keeps; it was told "not the sampling rate" too until 2026-12-01
+# keeps; it is not told "not the sampling rate"
 "$H" convert "$T/burst_us.csv" "$T/burst_us.bin" --units time=us >/dev/null 2>&1 || fail "psd: convert the bursts to .bin"
 bin_rate "$T/burst_us.bin" "$T/burst_nom.bin" 400 || fail "psd: the .bin's rate set"
 expect_exit 0 "stamps in bursts, the .bin's stated 400 Hz" "$H" psd "$T/burst_nom.bin"
@@ -438,8 +438,8 @@ expect_err "400 Hz; the frequencies are read at 400 Hz, the rate the file states
     "psd: stamps in bursts at the stated rate: the rate and its source said"
 grep -q "not the sampling rate" "$T/err" && fail "psd: stated rate kept by the span told 'not the sampling rate'" || pass "psd: stated rate kept by the span, not told 'not the sampling rate'"
 grep -q "file states [0-9]" "$T/err" && fail "psd: stamps in bursts at the stated rate also told the stated-rate warning" || pass "psd: stamps in bursts: the burst warning alone"
-# a .bin whose header states a rate its stamps contradict (1000 Hz stated, stamps 5 ms apart): info warned, psd
-# analysed it at the stated rate without a word until 2026-12-01; now the same warning (hx_stated_rate_warn); a
+# a .bin whose header states a rate its stamps contradict (1000 Hz stated, stamps 5 ms apart): psd does not analyse
+# it at the stated rate without a word, but gives info's warning (hx_stated_rate_warn); a
 # stated rate within 10 % of the stamps' (215 Hz), and the log's own 200 Hz, are not questioned
 "$H" sim --motion stand:20 --rate 200 --out "$T/sr200.bin" >/dev/null 2>&1 || fail "psd: sim of a 200 Hz .bin"
 bin_rate "$T/sr200.bin" "$T/sr1000.bin" 1000 && bin_rate "$T/sr200.bin" "$T/sr215.bin" 215 || fail "psd: the .bin's rate set"
@@ -477,7 +477,8 @@ if [ -n "$A" ] && [ -n "$R" ]; then
     # ADIS log 1: every bin within its derived bound (scripts/psd_scipy_bound.py, whose docstring derives it: the
     # float arithmetic of fnav_welch and fnav_fft to first order, worst case, from each segment's own values and
     # partial DFTs; the reference's double arithmetic; the %.6g and %.9g printing), every frequency within the two
-    # printing bounds. Until 2026-12-02 a measured 1e-3 of the bin or 1e-6 of the largest bin, and 1e-4 Hz
+    # printing bounds (a derived bound, not a tolerance measured on the result: 1e-3 of the bin or 1e-6 of the
+    # largest bin, and 1e-4 Hz)
     expect_exit 0 "ADIS log 1, scipy's setting" "$H" psd "$A" --nfft 4096 --window hann --dc segment --out "$T/a.csv"
     if "$PY" "$(dirname "$0")/../../scripts/psd_scipy_bound.py" "$A" "$R" "$T/a.csv" >"$T/bound" 2>&1
     then pass "Welch at nfft 4096 = scipy on ADIS log 1 (gyro x, acc x, every bin within its derived bound)"
@@ -486,8 +487,8 @@ else
     echo "SKIP ADIS16405 Welch test (shared data not found; set FNAV_DATA_DIR)"
 fi
 # --- --json of a log cut by a bad line: complete false and the reader's
-# error, as info's, replay's, allan's and simgap's (psd's had complete
-# without error; the JSON review, 2026-11-30); a whole log complete true
+# error, as info's, replay's, allan's and simgap's (not complete without
+# error); a whole log complete true
 awk 'BEGIN { srand(2); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 3000; i++) { g = (i == 1500) ? "nan" : sprintf("%.5f", 0.01 * (rand() - 0.5));
     printf "%.3f,%.4f,0.05,9.81,%s,0.001,0\n", i / 200, 0.01 * (rand() - 0.5), g } }' >"$T/nanrow.csv"
 expect_exit 1 "psd of a log with a NaN half way, --json" "$H" psd "$T/nanrow.csv" --json "$T/nanrow.json"
@@ -498,8 +499,8 @@ json "$T/whole.json" 'j["complete"] is True and "error" not in j' && pass "psd -
     fail "psd --json of a whole log: $(tr -d '\n\t' <"$T/whole.json" | tail -c 200)"
 
 # --- the --out CSV's first line, a comment naming the log, stays one line
-# when the log's name holds a line break (the rest of the name began a line
-# of its own, read as the header; the JSON review, 2026-11-30)
+# when the log's name holds a line break (the rest of the name must not
+# begin a line of its own, read as the header)
 NL=$(printf 'new\nline.bin')
 cp vectors/walk.bin "$T/$NL"
 c=psd; first=freq_hz
@@ -510,11 +511,10 @@ else fail "$c --out with a line break in the log's name: $(head -c 200 "$T/nl_$c
 rm -f "$T/$NL"
 
 # --- the Welch and FFT core as the Cortex-M4F firmware builds them: float
-# arithmetic only. fnav_welch_init() summed the window (sum w, sum w^2, W_1)
-# in double, which on the single-precision FPU are soft-float calls: the only
+# arithmetic only. fnav_welch_init() summing the window (sum w, sum w^2, W_1)
+# in double would mean soft-float calls on the single-precision FPU: the only
 # double arithmetic in the firmware image, 1.9 KB of libgcc (__aeabi_dadd,
-# __aeabi_dmul, ...; the init review, 2026-12-01). Skipped without the
-# cross-compiler.
+# __aeabi_dmul, ...). Skipped without the cross-compiler.
 ARMCC=${ARM_CC:-arm-none-eabi-gcc}
 ARMNM=${ARM_NM:-arm-none-eabi-nm}
 if command -v "$ARMCC" >/dev/null 2>&1 && command -v "$ARMNM" >/dev/null 2>&1; then

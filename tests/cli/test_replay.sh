@@ -28,7 +28,7 @@ grep -q "coarser than the" "$T/out" && fail "a note on coarse stamps without a g
     pass "no coarse-stamp note when no interval counts as a gap"
 # the same samples on a time axis of half the length (796 Hz, 1.256 ms) printed to the millisecond: intervals of
 # 1 and 2 ms, and the navigator counts each 2 ms one as a gap (above 1.5 periods) although none is lost; the summary
-# says so (it printed thousands of gaps without a word)
+# says so (not thousands of gaps without a word)
 awk -F, 'NR == 1 { print; next } { $1 = sprintf("%.3f", $1 / 2); print }' OFS=, "$T/walk_full.csv" > "$T/walk_half_ms.csv"
 expect_exit 0 "796 Hz stamped to the millisecond" "$H" replay "$T/walk_half_ms.csv"
 expect_out "count as gaps although no sample is lost" "gaps from coarse stamps are explained"
@@ -58,8 +58,8 @@ expect_exit 2 "bad --rate" "$H" replay vectors/walk.bin --rate -5
 expect_exit 2 "config rejected by the core" "$H" replay vectors/walk.bin --param window_s=-1 --quiet
 expect_err "rejected" "rejected configuration explained"
 expect_exit 1 "missing log" "$H" replay /nonexistent/log.csv
-# a profile file is an input: an output onto it replaced it after it was read,
-# exit 0 (a review, 2026-11-29; montecarlo's the same day)
+# a profile file is an input: an output onto it is refused, not written over
+# it after it is read with exit 0 (montecarlo's the same)
 cp docs/profiles/generic-mems.profile "$T/prof_keep.txt"
 profile_kept() { # description command...: exit 2 naming the clash, the profile file unchanged
     d=$1
@@ -95,8 +95,7 @@ else
 fi
 # the ZUPT share is of the aligned frames (from the first aligned frame on:
 # 14,555 of the 16,539 rows), not of the log's frames, and the summary says
-# so (it said "63.3 % of frames with ZUPT", 55.7 % of the log's; a review,
-# 2026-11-29)
+# so (not "63.3 % of frames with ZUPT", 55.7 % of the log's)
 expect_out "^stance            16 strides, 17 stance phases, 63.3 % of aligned frames with ZUPT$" "summary: the ZUPT share is of the aligned frames"
 if "${PY:-/usr/bin/python3}" -c '
 import csv, json, sys
@@ -108,8 +107,8 @@ share_all = sum(int(r["zupt"]) for r in rows) / len(rows)
 sys.exit(0 if len(al) == 14555 and abs(share_al - j["stance_fraction"]) < 1e-9 and abs(share_all - 0.5567) < 1e-4 else 1)' "$T/s.json" "$T/traj.csv"; then
     pass "JSON stance_fraction: the ZUPT rows' share of the aligned rows (0.6326), not of all rows (0.5567)"; else
     fail "stance_fraction is not the aligned rows' share"; fi
-# the configuration that ran, in the summary and the JSON (only the JSON's
-# command named it; a review, 2026-11-29)
+# the configuration that ran, in the summary and the JSON (not only in the
+# JSON's command)
 if [ "$(sed -n 2p "$T/out")" = "config            profile generic-mems, bias model ar1, detector shoe (adaptive threshold), samples instant, lever on, settling on, ZARU off" ]; then
     pass "summary: the default configuration on the line after the log"; else fail "config line: $(sed -n 2p "$T/out")"; fi
 json "$T/s.json" "j['profile'] == 'generic-mems' and j['profile_file'] is None and j['bias_model'] == 'ar1' and j['detector'] == 'shoe' and j['adaptive_threshold'] is True and j['samples'] == 'instant' and j['lever'] is True and j['settling'] is True and j['zaru'] is False and j['params'] == []" &&
@@ -164,17 +163,17 @@ if command -v gnuplot >/dev/null 2>&1; then
     (cd "$T" && "$HA" replay "$WB" --plot "q'; system('touch PWNED'); print '.png" --quiet) >/dev/null 2>&1
     if [ ! -e "$T/PWNED" ] && [ -s "$T/q'; system('touch PWNED'); print '.png" ]; then pass "a quote in the --plot path is text to gnuplot"; else fail "plot path reached gnuplot as a command"; fi
 fi
-# an unwritable --json: refused before the log is navigated (it ran the whole
-# log, printed the summary and wrote --out, then exited 3 at the JSON; the
-# JSON review, 2026-11-30), as montecarlo, simgap and eval check theirs
+# an unwritable --json: refused before the log is navigated (not the whole
+# log run, the summary printed and --out written, then exit 3 at the JSON),
+# as montecarlo, simgap and eval check theirs
 echo keep > "$T/keep_out.csv"
 expect_exit 3 "unwritable --json" "$H" replay vectors/walk.bin --json /nonexistent/dir/s.json --out "$T/keep_out.csv"
 expect_err "cannot write /nonexistent/dir/s.json" "unwritable --json named"
 if [ ! -s "$T/out" ] && [ "$(cat "$T/keep_out.csv")" = "keep" ]; then pass "unwritable --json: checked before the run (no summary, --out untouched)"
 else fail "unwritable --json: the log was run first ($(wc -l < "$T/out") lines on stdout, --out $(wc -l < "$T/keep_out.csv") lines)"; fi
 # the JSON's command is one a shell reads back as given: an argument with a
-# space or a quote is quoted (joined with spaces, "--out a b.csv" read as two
-# arguments; the JSON review, 2026-11-30)
+# space or a quote is quoted (joined with spaces, "--out a b.csv" would read
+# as two arguments)
 expect_exit 0 "replay, an --out with a space and a quote" "$H" replay vectors/walk.bin --quiet --out "$T/a b'c.csv" --json "$T/cmd.json"
 if json "$T/cmd.json" "__import__('shlex').split(j['command'])[2:] == ['vectors/walk.bin', '--quiet', '--out', '$T/a b\\'c.csv', '--json', '$T/cmd.json']"; then
     pass "JSON command: quoted as a shell reads it"; else fail "JSON command: $(grep '"command"' "$T/cmd.json")"; fi
@@ -196,16 +195,16 @@ expect_exit 2 "replay --out onto its own log" "$H" replay "$T/self.bin" --out "$
 if cmp -s vectors/walk.bin "$T/self.bin"; then pass "the log is left intact"; else fail "replay overwrote its log"; fi
 expect_exit 0 "replay --rate 100" "$H" replay vectors/walk.bin --rate 100 --json "$T/r.json"
 expect_out "resampled" "summary reports the resampling"
-# each rate line says which rate it is: a vicon trial read 199.44 Hz here
+# each rate line says which rate it is: a vicon trial reads 199.44 Hz here
 # (the detector's first 32 intervals), 200.0 Hz by info (the first 4,096
-# samples) and 200.1 Hz by --rate (the whole log's median), unexplained (the
-# generalisation review, 2026-11-29)
+# samples) and 200.1 Hz by --rate (the whole log's median), which would
+# otherwise go unexplained
 expect_out_re "^resampled +398\.[0-9] Hz \(1 / the median interval\) -> 100\.0 Hz" "the input rate of --rate is named the median's"
 expect_out_re "^rate +100\.0 Hz \(resampled\), detector window" "the resampled rate is named"
 expect_exit 0 "replay walk.bin, rate line" "$H" replay vectors/walk.bin
 expect_out_re "^rate +398\.[0-9] Hz \(the stance detector's estimate: 1 / the median of its first 32 intervals\), detector window" "the detector's rate is named as its estimate"
 # a time jump (100 s) stays one under --rate: the resampler's grid starts
-# again after it instead of making up 10,000 samples across it (a review)
+# again after it instead of making up 10,000 samples across it
 awk -F, 'NR == 1 { print; next } NR > 8000 { $1 = $1 + 100 } { print }' OFS=, "$T/walk_full.csv" > "$T/walk_jump.csv"
 expect_exit 0 "--rate across a 100 s time jump" "$H" replay "$T/walk_jump.csv" --rate 100 --json "$T/jump.json"
 if /usr/bin/python3 -c "import json,sys; h=json.load(open(sys.argv[1]))['health']; sys.exit(0 if h['time_jumps']==1 else 1)" "$T/jump.json"; then
@@ -215,7 +214,7 @@ expect_err "only downsampling" "rate error explains"
 expect_err "input rate 398.319 Hz (1 / its median interval; only downsampling): leave --rate out, or give a rate below 397.920 Hz" "the input rate in the error is named the median's, with what to do"
 # a 200 Hz log on a clock 0.04 % fast (200.080 Hz, as the vicon trials'):
 # --rate 200 is below its rate but within the 0.1 % margin, and the error
-# said "--rate 200 Hz is not below the input rate 200.1 Hz" (a user review)
+# must not say "--rate 200 Hz is not below the input rate 200.1 Hz"
 "$H" sim --motion stand:2,walk:4 --rate 200 --out "$T/s200.csv" >/dev/null 2>&1
 awk -F, 'NR == 1 { print; next } { $1 = sprintf("%.6f", $1 * 0.9996); print }' OFS=, "$T/s200.csv" > "$T/s200f.csv"
 for r in 200 199.9; do
@@ -252,7 +251,6 @@ expect_exit 2 "incomplete profile file" "$H" replay vectors/walk.bin --profile "
 expect_err "bad.profile" "profile error names the file"
 # a value positive in the file but zero in float (1e-60): the reader says so,
 # not the core as a rejected --param; at its line, with the key and the value
-# (2026-12-01: the message named neither)
 sed 's/^\(gyro_noise[^=]*= *\).*/\11e-60 1e-60 1e-60/' "$T/p.profile" > "$T/tiny.profile"
 expect_exit 2 "a profile value below float range" "$H" replay vectors/walk.bin --profile "$T/tiny.profile"
 expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the float build (out of its range)" \
@@ -271,8 +269,8 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # sensor 30 deg from that). The summary's heading change (of a body vector
 # level at the alignment, spanning the walk's two renewals) must agree
 # within 1 deg (0.2 observed): it depends neither on the Euler yaw of an x
-# axis that has none (before 2026-11-28: -3041.6 deg against -339.4) nor on
-# how the renewals hold the heading (they turned it by 87 and 110 deg).
+# axis that has none (that would give -3041.6 deg against -339.4) nor on
+# how the renewals hold the heading (they can turn it by 87 and 110 deg).
 expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/m.csv" --to csv
 expect_exit 0 "replay the walk as recorded" "$H" replay "$T/m.csv" --out "$T/m_ref.csv" --json "$T/m_ref.json" --quiet
 for rot in y90 x180 xyz xup epoch; do
@@ -314,8 +312,8 @@ PY
 done
 
 # --- clipping: the bundled walk as a sensor of +-250 deg/s and +-2 g would
-# record it (flat tops at full scale). replay navigated it without a word
-# (info counts the flat tops; the generalisation check, 2026-11-29): the
+# record it (flat tops at full scale). replay does not navigate it without a
+# word (info counts the flat tops): the
 # summary names the clipped channels with info's counts, the JSON has them,
 # and the walk as recorded has none
 "$H" convert vectors/walk.bin "$T/unclipped.csv" 2>/dev/null || fail "convert for clipping"
@@ -334,10 +332,10 @@ if grep -q "input is clipped" "$T/out"; then fail "an unclipped walk named as cl
 json "$T/unclip.json" 'all(v == 0 for v in j["saturated_samples"].values())' &&
     pass "no clipped samples in the walk as recorded" || fail "unclipped JSON: $(cat "$T/pyerr")"
 # a plateau at a channel's maximum straight after one at its minimum (a
-# swing through the whole range in one sample) is two runs: info counted the
-# four samples as one run at "an extreme" and said unclipped while replay,
-# counting each extreme apart, said clipped (the same rule was written twice;
-# info now feeds replay's hx_sat_t, the final reread of 2026-11-29)
+# swing through the whole range in one sample) is two runs: info and replay
+# agree (with the rule written twice, info could count the four samples as
+# one run at "an extreme" and say unclipped while replay, counting each
+# extreme apart, said clipped; info feeds replay's hx_sat_t)
 awk -F, 'BEGIN { OFS = "," } NR >= 502 && NR <= 503 { $7 = 20 } NR >= 504 && NR <= 505 { $7 = -20 } { print }' \
     "$T/unclipped.csv" > "$T/swing.csv"
 "$H" info "$T/swing.csv" --json "$T/swinginfo.json" >/dev/null 2>&1 || fail "info on the swing walk"
@@ -348,9 +346,9 @@ expect_exit 0 "a clipped walk resampled" "$H" replay "$T/clipped.csv" --rate 200
 expect_out "^note .*the input is clipped" "the clipping of a resampled log is named (judged before the low-pass)"
 
 # --- lost samples in motion: the bundled walk with a 50 ms hole every 300 ms
-# (rows deleted) closes at 1.31 m against 0.36 m and the summary said nothing
-# but "289 gaps" (openshoe_gx2 walk 2 so: 0.53 m -> 2.56 m; the generalisation
-# review, 2026-11-29). The note (HX_NAV_LONG_GAP_S, HX_NAV_GAP_LOST_FRACTION)
+# (rows deleted) closes at 1.31 m against 0.36 m, where the summary must say
+# more than "289 gaps" (openshoe_gx2 walk 2 so: 0.53 m -> 2.56 m). The note
+# (HX_NAV_LONG_GAP_S, HX_NAV_GAP_LOST_FRACTION)
 # and motion_gaps in the JSON, its share checked against a recount in python
 # from the trajectory CSV; the walk as recorded (xio short: 1.5 % of its time
 # lost in gaps of at most 12.6 ms) and 12 ms holes at the same spacing have
@@ -362,8 +360,8 @@ json "$T/gappy.json" 'j["motion_gaps"]["unreliable"] is True and 0.15 < j["motio
     pass "motion_gaps in the JSON" || fail "motion_gaps: $(cat "$T/pyerr")"
 # the recount: intervals after the first aligned frame (aligned_at_s) with
 # an end out of stance; lost = the excess over one period of each above 1.5
-# periods and 20 ms; their number and the longest (longest_s was not
-# checked: the lost time in its place passed, a mutant of 2026-11-29)
+# periods and 20 ms; their number and the longest (longest_s is checked: a
+# mutant with the lost time in its place would pass otherwise)
 if /usr/bin/python3 - "$T/gappy_t.csv" "$T/gappy.json" 2>"$T/pyerr" <<'PYEOF'
 import csv, json, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
@@ -392,9 +390,8 @@ if grep -q "of the time in motion is lost" "$T/out"; then fail "12 ms holes note
 # the edge: a long gap is one longer than 20 ms, and a hole of exactly 20 ms
 # is none. The walk on an exact 400 Hz grid (whole nanoseconds) with 7 rows
 # deleted every 120 (intervals of 20.0 ms, 6 % of the motion time lost) has
-# no note and no long gap; with 8 (22.5 ms) the note (>= in place of > passed
-# every case; the mutation round, 2026-11-29; test_nav's test_long_gap_edge
-# pins the nanosecond)
+# no note and no long gap; with 8 (22.5 ms) the note (>= in place of > would
+# pass every other case; test_nav's test_long_gap_edge pins the nanosecond)
 for k in 7 8; do
     awk -F, -v K=$k 'BEGIN { OFS = "," } NR == 1 { print; next }
         { r = NR - 2; if (r % 120 >= 60 && r % 120 < 60 + K) next; $1 = sprintf("%.9f", r * 0.0025); print }' \
@@ -467,8 +464,8 @@ fi
 expect_exit 2 "--json - with --out -" "$H" replay vectors/walk.bin --out - --json -
 expect_err "cannot both write to standard output" "--json - and --out - refused"
 if [ -e ./- ]; then fail "a file named '-' was created"; rm -f ./-; else pass "no file named '-'"; fi
-# the parser takes --opt=VALUE as --opt VALUE: --json=- is --json - (it was
-# refused with "standard output not claimed", exit 3, after the summary had
+# the parser takes --opt=VALUE as --opt VALUE: --json=- is --json - (not
+# refused with "standard output not claimed", exit 3, after the summary has
 # gone to standard output), and --out=- collides with --json - as --out - does
 expect_exit 0 "info --json=-" "$H" info vectors/walk.bin --json=-
 if /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['samples']==16539" "$T/out"; then
@@ -488,13 +485,13 @@ expect_err "cannot both write to standard output" "--json - and --csv - refused"
 if [ -w /dev/full ]; then
     expect_exit 3 "--out to a full disk" "$H" replay vectors/walk.bin --out /dev/full --quiet
     expect_err "cannot write the trajectory" "a full disk is reported"
-    # with its reason, as psd's (errno was gone when the message was built:
-    # "cannot write the trajectory to /dev/full" alone; a review, 2026-12-02)
+    # with its reason, as psd's (errno kept until the message is built: not
+    # "cannot write the trajectory to /dev/full" alone)
     expect_err "^harness replay: error: cannot write the trajectory to /dev/full (No space left on device)$" "the full disk's reason given"
     "$H" replay vectors/walk.bin --out - >/dev/full 2>"$T/err"; rc=$?
     if [ "$rc" -eq 3 ] && grep -q "cannot write" "$T/err"; then pass "--out - to a full disk: exit 3"; else fail "--out - to a full disk: exit $rc"; cat "$T/err"; fi
     # the results printed to standard output are an output too: the summary
-    # and info's figures lost to a full disk exited 0 (a review, 2026-11-28)
+    # and info's figures lost to a full disk must not exit 0
     for cmd in "replay vectors/walk.bin" "info vectors/walk.bin"; do
         # shellcheck disable=SC2086
         "$H" $cmd >/dev/full 2>"$T/err"; rc=$?
@@ -503,15 +500,15 @@ if [ -w /dev/full ]; then
     done
 fi
 # a closed pipe on standard output is a write error too (exit 3), not a
-# silent SIGPIPE that lost the JSON (`--out - | head -1`; a review)
+# silent SIGPIPE that loses the JSON (`--out - | head -1`)
 rm -f "$T/pipe.json"
 rc=$( { "$H" replay vectors/walk.bin --out - --json "$T/pipe.json" 2>"$T/err"; echo $? > "$T/rc"; } | head -1 >/dev/null; cat "$T/rc")
 if [ "$rc" -eq 3 ] && [ -s "$T/pipe.json" ] && grep -q "cannot write" "$T/err"; then pass "--out - into a closed pipe: exit 3, JSON written"; else
     fail "--out - into a closed pipe: exit $rc"; cat "$T/err"; fi
 # the run stops there: the summary and the JSON say so, and the alignment
-# line does not blame the still period (it printed "NOT ALIGNED (no still
-# period long enough: the error above says what was found)" and the JSON
-# "complete": true; a review, 2026-11-29)
+# line does not blame the still period (not "NOT ALIGNED (no still period
+# long enough: the error above says what was found)" with the JSON
+# "complete": true)
 n=$(sed -n 's/^stopped  *after \([0-9][0-9]*\) samples: cannot write the trajectory to standard output (Broken pipe) (the error above); every figure covers those samples$/\1/p' "$T/err")
 if [ -n "$n" ] && grep -q "^duration .*, $n samples," "$T/err"; then pass "closed pipe: the summary says the run stopped after $n samples"; else
     fail "closed pipe: no stopped line"; cat "$T/err"; fi
@@ -537,8 +534,8 @@ rows=$(($(wc -l < "$T/bad_traj.csv") - 1))
 if [ "$rows" -eq 2000 ]; then pass "every frame before the NaN written ($rows)"; else fail "frames before the NaN: $rows, expected 2000"; fi
 # the reader's own errors after the header (a NUL block, an over-long line,
 # a truncated .gz): named with file and line, exit 1, the frames before
-# written; until 2026-11-28 replay took them for the sink's failure ("cannot
-# write the trajectory", exit 3; a review)
+# written; not taken for the sink's failure ("cannot write the trajectory",
+# exit 3)
 head -2001 vectors/nav/golden/gx2_walk2.csv > "$T/nul.csv"
 head -c 512 /dev/zero >> "$T/nul.csv"
 tail -n +2002 vectors/nav/golden/gx2_walk2.csv | head -100 >> "$T/nul.csv"
@@ -561,10 +558,9 @@ expect_out "no step-to-step path for a percentage" "summary without a path says 
 if grep -q "nan %" "$T/out"; then fail "summary of a still log prints nan"; else pass "no nan in the summary of a still log"; fi
 expect_out "^stance            0 strides, 1 stance phase, 100.0 % of aligned frames with ZUPT$" "still log: the count nouns agree (1 stance phase)"
 # a stand of 12 s after one stride, the log cut 0.6 s into the next walk:
-# "1 stride", and no note of a stand "between strides" (it printed "0
-# strides, 1 stance phases" and that note on openshoe_square2 with the
-# threshold detector; a review, 2026-11-29); cut 1.3 s in, with two
-# strides, the note is printed
+# "1 stride", and no note of a stand "between strides" (not "0 strides, 1
+# stance phases" and that note, as on openshoe_square2 with the threshold
+# detector); cut 1.3 s in, with two strides, the note is printed
 "$H" sim --motion stand:5,walk:1.5,stand:12,walk:1.5,stand:2 --rate 100 --out "$T/stand.csv" >/dev/null 2>&1
 awk -F, 'NR == 1 || $1 < 18.3' "$T/stand.csv" > "$T/stand1.csv"
 awk -F, 'NR == 1 || $1 < 19.0' "$T/stand.csv" > "$T/stand2.csv"
@@ -575,7 +571,7 @@ if grep -q "between strides" "$T/out"; then fail "one stride: a stand 'between s
 json "$T/stand1.json" "j['strides'] == 1 and j['longest_stand_s'] > 12" && pass "one stride: the JSON keeps the stand (12 s)" ||
     fail "one stride JSON: $(cat "$T/pyerr")"
 # one duplicated row, one row left out and one interval of 2 s: the timing
-# line counts them in the singular ("1 gaps, 1 time jumps" before; 2026-11-30)
+# line counts them in the singular (not "1 gaps, 1 time jumps")
 awk -F, 'NR == 1 { print; next } NR == 301 { print } NR == 601 { next } NR > 1001 { $1 += 2 } { print }' OFS=, \
     "$T/stand.csv" > "$T/stand_t1.csv"
 expect_exit 0 "one duplicate, one gap, one time jump" "$H" replay "$T/stand_t1.csv"
@@ -593,20 +589,20 @@ expect_out "almost no motion detected" "a long log without motion is flagged in 
 expect_exit 0 "a walk" "$H" replay vectors/walk.bin
 if grep -q "almost no motion" "$T/out"; then fail "a walk flagged as motionless"; else pass "a walk is not flagged as motionless"; fi
 # a log that cannot be read at all (a bad header) touches no output: an
-# earlier trajectory stays (it was emptied, and the earlier JSON left beside
-# it; a review, 2026-11-28)
+# earlier trajectory stays (not emptied, with the earlier JSON left beside
+# it)
 printf 'time,x,y\n1,2,3\n' > "$T/badhdr.csv"
 echo "earlier" > "$T/keep.csv"
 expect_exit 1 "a bad header" "$H" replay "$T/badhdr.csv" --out "$T/keep.csv" --quiet
 if [ "$(cat "$T/keep.csv")" = "earlier" ]; then pass "a bad header leaves an earlier --out alone"; else fail "a bad header emptied --out"; fi
 # a time column that never advances (all zeros) is named as such, not as a
-# missing still period (a review, 2026-11-28)
+# missing still period
 awk -F, 'NR == 1 { print; next } { $1 = 0; print }' OFS=, "$T/walk_full.csv" > "$T/t0.csv"
 expect_exit 1 "time stamps that never advance" "$H" replay "$T/t0.csv" --quiet
 expect_err "the time stamps never advance" "a constant time column named"
-# ... and the summary's alignment line agrees with that error: it said "NOT
+# ... and the summary's alignment line agrees with that error: not "NOT
 # ALIGNED (no still period long enough: the error above says what was found)"
-# under an error that names the time stamps (review of 2026-11-30)
+# under an error that names the time stamps
 expect_exit 1 "time stamps that never advance, with the summary" "$H" replay "$T/t0.csv"
 expect_out_re "^alignment +NOT ALIGNED \(the time stamps never advance: the error above\)$" "never advancing stamps: the alignment line names them"
 printf 't,ax,ay,az,gx,gy,gz\n0.0,0,0,-9.8,0,0,0\n' > "$T/tiny.csv"
@@ -614,8 +610,7 @@ expect_exit 1 "too short to align" "$H" replay "$T/tiny.csv"
 expect_err "no still period" "alignment failure explained"
 # the message says what the alignment requires and what was found: a still
 # log of 0.15 s fails, one of 0.30 s aligns (on align_short_s), so "no still
-# period of 0.50 s" (align_min_s), which it said, was untrue (the
-# generalisation review, 2026-11-29)
+# period of 0.50 s" (align_min_s) would be untrue
 for n in 30 61; do
     awk -v n=$n 'BEGIN { srand(3); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < n; i++)
         printf "%.3f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 200, 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5),
@@ -624,11 +619,11 @@ done
 expect_exit 1 "0.15 s still: too short to align" "$H" replay "$T/still30.csv" --quiet
 expect_err "no still period of 0.20 s or more found for the initial alignment (align_short_s; it takes the first of 0.50 s, align_min_s, else the quietest of 0.20 s or more before the foot moves): the stance detector's longest still run lasted 0.15 s" "the alignment failure says what is required and what was found"
 # a log read to its end that never aligns did not stop early: the summary
-# said "stopped after 4000 samples, at the input error above" and "NOT
-# ALIGNED (the run stopped before a still period long enough was found)",
-# the error "(frames before it were written)", and the JSON "complete":
-# false with the alignment's message as the reader's error; eval called the
-# walk "input ends early ...: read only in part" (the JSON review, 2026-11-30)
+# must not say "stopped after 4000 samples, at the input error above" and
+# "NOT ALIGNED (the run stopped before a still period long enough was
+# found)", the error "(frames before it were written)", and the JSON
+# "complete": false with the alignment's message as the reader's error; nor
+# eval call the walk "input ends early ...: read only in part"
 awk 'BEGIN { srand(5); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 4000; i++)
     printf "%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", i / 200, 4 * (rand() - 0.5), 4 * (rand() - 0.5),
         9.81 + 4 * (rand() - 0.5), 5 + rand() - 0.5, 3 + rand() - 0.5, rand() - 0.5 }' > "$T/moving.csv"
@@ -642,10 +637,10 @@ if json "$T/moving.json" 'j["aligned"] is False and j["complete"] is True and "e
 expect_exit 0 "0.30 s still aligns" "$H" replay "$T/still61.csv"
 expect_out_re "^alignment +0\.2[0-9] s still" "a still period under align_min_s but over align_short_s aligns"
 # the only still period at the log's very end: 1 s of swing, then 44 still
-# samples (0.215 s). Until 2026-11-29 (a review) the end of the input
-# completed the alignment before the detector's 5 held-back samples reached
-# it: 0.195 s, "no still period of 0.20 s"; 38 still samples (0.185 s) are
-# too few either way (test_nav test_align_at_end)
+# samples (0.215 s). The end of the input must not complete the alignment
+# before the detector's 5 held-back samples reach it: 0.195 s, "no still
+# period of 0.20 s"; 38 still samples (0.185 s) are too few either way
+# (test_nav test_align_at_end)
 for n in 38 44; do
     awk -v n=$n 'BEGIN { srand(3); print "t,ax,ay,az,gx,gy,gz"; for (i = 0; i < 200 + n; i++) { m = i < 200
         printf "%.3f,%.5f,%.5f,%.5f,%.6f,%.6f,%.6f\n", i / 200, m + 0.01 * (rand() - 0.5), 0.01 * (rand() - 0.5),
@@ -657,7 +652,7 @@ if json "$T/tail44.json" 'j["aligned"] is True'; then pass "tail44: aligned in t
 expect_exit 1 "a log ending with 0.185 s still does not align" "$H" replay "$T/tail38.csv" --quiet
 expect_err "no still period of 0.20 s" "the short still end named"
 # with --plot: two empty panels that say so, exit 1 as without it (gnuplot
-# refused the empty height panel: exit 3 and a half-drawn PNG; a review)
+# refuses an empty height panel: exit 3 and a half-drawn PNG)
 if command -v gnuplot >/dev/null 2>&1; then
     expect_exit 1 "too short to align, --plot" "$H" replay "$T/tiny.csv" --plot "$T/tiny.png"
     if [ -s "$T/tiny.png" ] && ! grep -q "gnuplot" "$T/err"; then pass "the PNG of a log that never aligned"; else fail "no PNG or gnuplot complained"; cat "$T/err"; fi
@@ -665,8 +660,8 @@ fi
 # a walk in the wrong units navigates into nonsense without a reader error:
 # each mistake is named with its remedy, exit 1, and the outputs are still
 # written (from the values as given). The interchange CSV's remedy is the
-# --units option (it was the arithmetic, "multiply by 9.80665", until
-# 2026-11-30); a format that cannot take --units keeps the arithmetic
+# --units option (not the arithmetic, "multiply by 9.80665"); a format that
+# cannot take --units keeps the arithmetic
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_g.csv"
 expect_exit 1 "accelerometer in g" "$H" replay "$T/in_g.csv" --json "$T/in_g.json"
@@ -706,8 +701,8 @@ expect_err "(give --units time=ms,accel=g,gyro=deg/s); also the samples are .*gi
     "three unit mistakes: the whole message"
 # each remedy names the whole --units value, every item found and every item given: a second --units replaces the
 # first (a non-repeatable option given twice takes the last value), so "give --units time=ms" said to a command
-# with --units gyro=deg/s, or "give --units accel=g" and "give --units gyro=deg/s" in one message, led to a
-# command that lost an item and failed again (the review of 2026-11-30)
+# with --units gyro=deg/s, or "give --units accel=g" and "give --units gyro=deg/s" in one message, would lead to a
+# command that lost an item and failed again
 expect_exit 1 "g, deg/s and ms, gyro=deg/s given" "$H" replay "$T/in_gdegms.csv" --quiet --units gyro=deg/s
 expect_err "in g (give --units time=ms,accel=g,gyro=deg/s); also the samples are .*(they look like milliseconds: give --units time=ms,accel=g,gyro=deg/s) (docs/log-format.md)" \
     "gyro=deg/s given: the remedies keep it and name every item found"
@@ -716,14 +711,14 @@ expect_exit 0 "the remedy followed: g, deg/s and ms read with --units time=ms,ac
 if grep -q "units\|m/s^2\|rad/s" "$T/err"; then fail "the remedy followed: a unit still named"; cat "$T/err"; else
     pass "the remedy followed: no unit named"; fi
 # a file already in seconds, m/s^2 and rad/s read with --units time=ms: no item to give, the --units given is the
-# mistake; the remedy read "give --units " with nothing after it until the review of 2026-11-30
+# mistake; the remedy must not read "give --units " with nothing after it
 expect_exit 1 "seconds read with --units time=ms" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet --units time=ms
 expect_err "are the time stamps in milliseconds? (they look like seconds: leave --units out)" \
     "seconds read as ms: the remedy is to leave --units out"
 expect_exit 0 "info on a log in deg/s" "$H" info "$T/in_deg.csv"
 expect_out "units       NOT SI: .*probably in deg/s" "info names the units too"
-# one figure for one log: replay said 454.7 rad/s (the vector's magnitude),
-# info 438.8 (the largest axis; the generalisation review, 2026-11-29). Both
+# one figure for one log, not 454.7 rad/s from replay (the vector's
+# magnitude) and 438.8 from info (the largest axis). Both
 # take the largest single axis (a range is per axis) and say so; awk's
 # max over the gyro columns is the reference
 w_ref=$(awk -F, 'NR > 1 { for (i = 5; i <= 7; i++) { v = $i < 0 ? -$i : $i; if (v > m) m = v } } END { printf "%.4g", m }' "$T/in_deg.csv")
@@ -735,8 +730,8 @@ if grep -q "the gyroscope reaches $w_ref rad/s on one axis (its largest |w| on a
 expect_exit 0 "info on a log in SI units" "$H" info vectors/nav/golden/gx2_walk2.csv
 if grep -q "NOT SI" "$T/out"; then fail "an SI log flagged by info"; else pass "an SI log is not flagged by info"; fi
 # a gyro already in rad/s read with --units gyro=deg/s is 57.3 times too small: a walk whose foot never turns
-# faster than 0.75 rad/s (43 deg/s; a swing turns at several rad/s, the shared walks 1.8-24) navigated into
-# nonsense with exit 0 and no word (the units review, 2026-11-30). The walk shows in the accelerometer (|f|
+# faster than 0.75 rad/s (43 deg/s; a swing turns at several rad/s, the shared walks 1.8-24) navigates into
+# nonsense, which must not pass with exit 0 and no word. The walk shows in the accelerometer (|f|
 # spreads by 2 m/s^2 or more in one-second windows); named as the m/s^2 read as g are, the remedy leaving
 # gyro=deg/s out
 expect_exit 1 "a walk in rad/s read with gyro=deg/s" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet --units gyro=deg/s
@@ -752,8 +747,8 @@ expect_exit 0 "a static log in rad/s read with gyro=deg/s" "$H" replay "$T/stand
 grep -q "rad/s already" "$T/err" && fail "a static log's small rates taken for rad/s read as deg/s" ||
     pass "a static log read with gyro=deg/s is not told it is in rad/s"
 # nor a static log with taps (a 30 ms knock of 25 m/s^2 in 5 seconds, as a logger's synchronisation taps),
-# written in deg/s and read as such: each tap spread |f| by 4 m/s^2 within its second, and replay exited 1
-# calling it a walk in rad/s (the false-positive review, 2026-11-30); a walk's spread lasts, a tap's does not
+# written in deg/s and read as such: each tap spreads |f| by 4 m/s^2 within its second, and replay must not exit 1
+# calling it a walk in rad/s; a walk's spread lasts, a tap's does not
 awk -F, 'NR == 1 { print; next } { a = $4; if ($1 >= 5 && int($1) % 3 == 2 && $1 - int($1) < 0.03) a = $4 - 25
     printf "%s,%s,%s,%.9g,%.9g,%.9g,%.9g\n", $1, $2, $3, a, $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232 }' \
     "$T/stand_rps.csv" > "$T/stand_taps_deg.csv"
@@ -765,7 +760,7 @@ for spm in 30 60 150 run; do
         "$H" sim --cadence "$spm" --duration 30 --out "$T/sim_w.csv" >/dev/null 2>&1; fi
     awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.9g,%.9g,%.9g\n", $1, $2, $3, $4, $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232 }' \
         "$T/sim_w.csv" > "$T/sim_wdeg.csv"
-    # the replay must run (exit 0): a sim or a replay that failed showed no mark either (the review of 2026-11-30)
+    # the replay must run (exit 0): a sim or a replay that failed would show no mark either
     "$H" replay "$T/sim_wdeg.csv" --quiet --units gyro=deg/s 2> "$T/sim_w.err"; rc=$?
     [ "$rc" -eq 0 ] && ! grep -q "rad/s already" "$T/sim_w.err" &&
         pass "simulated $spm in deg/s read with gyro=deg/s: exit 0, no rad/s mark" ||
@@ -814,8 +809,8 @@ awk -F, 'NR == 1 { print; next } NR < 400 { printf "%.0f,%s,%s,%s,%s,%s,%s\n", $
 expect_exit 1 "time in nanoseconds" "$H" replay "$T/in_ns.csv" --quiet
 expect_err "they look like nanoseconds: give --units time=ns)" "time stamps in ns are named as such"
 # stamps too slow for any unit finer than the one they were read in (5 Hz read as ns: nothing is finer than ns):
-# the question named seconds ("are the time stamps in seconds? (in milliseconds, divide by 1000)") whatever
-# --units time= had read them as; it names the unit they were read in (the units review, 2026-11-30)
+# the question does not name seconds ("are the time stamps in seconds? (in milliseconds, divide by 1000)") whatever
+# --units time= read them as; it names the unit they were read in
 awk -F, 'NR == 1 { print; next } NR < 400 { printf "%.0f,%s,%s,%s,%s,%s,%s\n", (NR - 2) * 200000000, $2, $3, $4, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_5hz_ns.csv"
 expect_exit 1 "5 Hz stamps read as ns" "$H" replay "$T/in_5hz_ns.csv" --quiet --units time=ns
@@ -824,37 +819,35 @@ expect_err "are the time stamps in nanoseconds? (read so by --units time=ns; no 
 if grep -q "in seconds?\|in milliseconds" "$T/err"; then fail "5 Hz read as ns: asked about seconds or told milliseconds"; else
     pass "5 Hz read as ns: neither seconds nor milliseconds named"; fi
 # the other way: stamps in milliseconds read with --units time=ns are 1e6 times too fast (4 ns apart, 250 MHz);
-# replay said only that the detector's ring was cut and that no still period was found (the units review,
-# 2026-11-30); above 100 kHz the unit that fits is named, as for slow stamps
+# replay says more than that the detector's ring was cut and that no still period was found: above 100 kHz the
+# unit that fits is named, as for slow stamps
 expect_exit 1 "time in milliseconds read as ns" "$H" replay "$T/in_ms.csv" --quiet --units time=ns
 expect_err "are the time stamps in nanoseconds? (they look like milliseconds: give --units time=ms)" \
     "ms read as ns: the stamps too fast named, time=ms the remedy"
-# ... also with --rate: the span was the resampled grid's (100 Hz), so the too-fast error, which needs the span too,
-# was never given and replay said only that no still period was found (the units review, 2026-11-30); the span is
-# the input's now
+# ... also with --rate: the span is the input's, not the resampled grid's (100 Hz), with which the too-fast error,
+# which needs the span too, would never be given and replay say only that no still period was found
 expect_exit 1 "time in milliseconds read as ns, --rate 100" "$H" replay "$T/in_ms.csv" --quiet --units time=ns --rate 100
 expect_err "are the time stamps in nanoseconds? (they look like milliseconds: give --units time=ms)" \
     "ms read as ns, --rate 100: the stamps too fast named, time=ms the remedy"
 # stamps taken on arrival (a logger that receives 4 samples at once and stamps each as it reads it, 5 us
 # apart, every 16 ms): the median interval is 5 us (200 kHz), but the log spans 12 s for its 2998 samples,
-# 250 Hz: no unit makes that too fast. Replay exited 1 ("are the time stamps in microseconds? (they look like
-# milliseconds: give --units time=ms)") on such a log it had replayed with exit 0 (the false-positive review,
-# 2026-11-30); the too-fast error needs the log's span to be too short as well
+# 250 Hz: no unit makes that too fast. Replay must not exit 1 ("are the time stamps in microseconds? (they look like
+# milliseconds: give --units time=ms)") on such a log; the too-fast error needs the log's span to be too short as well
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 16000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_burst_us.csv"
-# (exit 0 until the burst refusal below, which such a log now meets instead: still no time unit)
+# (exit 1 from the burst refusal below, which such a log meets: still no time unit)
 expect_exit 1 "stamps in bursts, read as us" "$H" replay "$T/in_burst_us.csv" --quiet --units time=us
 if grep -q "are the time stamps in" "$T/err"; then fail "stamps in bursts (250 Hz over the log) told they are too fast"; else
     pass "stamps in bursts (250 Hz over the log): no time unit questioned"; fi
-# the rate to give from the whole packets (the last holds 2 samples): it said 250.1 Hz, the samples over the span,
-# until 2026-11-30 (test_log test_stamp_bursts_rate)
+# the rate to give from the whole packets (the last holds 2 samples), not 250.1 Hz, the samples over the span
+# (test_log test_stamp_bursts_rate)
 expect_err "the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the 2998 samples span 11.98 s, 250 Hz; navigation needs each sample's own time: leave the time column out and give --input-rate 250 (" \
     "stamps in bursts (250 Hz over the log): refused as bursts, 250 Hz from the whole packets"
 # ... and resampled with --rate: the resampler takes the input as uniform at 1 / its median interval (5 us, 200 kHz),
-# so its low-pass, 40 times the rate ratio of samples long, smeared seconds of the walk into each output: exit 0 and
+# so its low-pass, 40 times the rate ratio of samples long, smears seconds of the walk into each output: exit 0 and
 # 0 strides (the walk of vectors/walk.bin stamped so, 4 samples every 10 ms, 400 Hz over the log); one stamp shared by
-# the 4 samples (100 Hz from the distinct stamps) kept one sample of four. Both are now refused, naming the rate
-# over the span for --input-rate (the units review, 2026-11-30); the remedy followed gives the trajectory of the
+# the 4 samples (100 Hz from the distinct stamps) keeps one sample of four. Both are refused, naming the rate
+# over the span for --input-rate; the remedy followed gives the trajectory of the
 # same walk stamped evenly at 400 Hz, to the byte
 expect_exit 0 "convert the walk to CSV (bursts, --rate)" "$H" convert vectors/walk.bin "$T/bw.csv"
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
@@ -877,9 +870,9 @@ expect_exit 0 "the remedy: no time column, --input-rate 400 --rate 100" "$H" rep
 expect_exit 0 "the walk stamped evenly at 400 Hz, --rate 100" "$H" replay "$T/bw_even.csv" --quiet --rate 100 --out "$T/bw_even_traj.csv"
 cmp -s "$T/bw_not_traj.csv" "$T/bw_even_traj.csv" && pass "the remedy gives the evenly stamped walk's trajectory" ||
     fail "the remedy's trajectory differs from the evenly stamped walk's"
-# ... and without --rate: the stance detector took 1 / the median interval (5 us) for the period, 200 kHz, and the
-# walk replayed with exit 0 and 0 strides; its ring warning named --rate, which then refused the log, so the remedy
-# was two steps away (the units review, 2026-11-30). Now refused before the run with --rate's cause and remedy (one
+# ... and without --rate: the stance detector would take 1 / the median interval (5 us) for the period, 200 kHz, and
+# the walk replay with exit 0 and 0 strides; a ring warning naming --rate, which then refuses the log, would put the
+# remedy two steps away. So refused before the run with --rate's cause and remedy (one
 # test, hx_stamp_bursts), no trajectory written, an earlier one kept
 echo "an earlier trajectory" > "$T/bw_keep.csv"
 expect_exit 1 "stamps in bursts, no --rate" "$H" replay "$T/bw_burst.csv" --quiet --units time=us --out "$T/bw_keep.csv"
@@ -890,8 +883,7 @@ grep -q "stance detector's ring" "$T/err" && fail "stamps in bursts: the ring wa
 [ "$(cat "$T/bw_keep.csv")" = "an earlier trajectory" ] && pass "stamps in bursts: an earlier --out kept" ||
     fail "stamps in bursts: the earlier --out was overwritten"
 # a log longer than the stamps the check reads (HX_STAMPS_PROBE_N, 65,536): its first samples decide, as the
-# detector's rate comes from its first intervals; the whole log was read twice before the run, its stamps held
-# (the review of 2026-11-30)
+# detector's rate comes from its first intervals; the whole log is not read twice before the run, its stamps held
 awk -F, 'NR == 1 { print; next } { r[NR - 2] = $2 "," $3 "," $4 "," $5 "," $6 "," $7 } END {
     for (i = 0; i < 70000; i++) printf "%d,%s\n", (int(i / 4) + 1) * 10000 + 5 * (i % 4), r[i % (NR - 1)] }' \
     "$T/bw.csv" > "$T/bw_long.csv"
@@ -925,9 +917,9 @@ expect_exit 0 "a quarter of the stamps repeated" "$H" replay "$T/bw_rep4.csv" --
 grep -q "come in bursts" "$T/err" && fail "a quarter of the stamps repeated: refused as bursts" ||
     pass "a quarter of the stamps repeated: no burst refusal"
 expect_out "25.0 % of the samples repeat the time stamp before them" "a quarter of the stamps repeated: the coarse-stamps note, as before"
-# a t column that counts samples (0, 1, 2, ...), as a logger's sample number often does: it was told only to
+# a t column that counts samples (0, 1, 2, ...), as a logger's sample number often does: not told only to
 # divide by 1000 (right for a 1 kHz log in ms, wrong for a 250 Hz one); the remedy for a counter, leaving the
-# column out and giving --input-rate, is named too (the gait review, 2026-11-30)
+# column out and giving --input-rate, is named too
 awk -F, 'NR == 1 { print; next } { printf "%d,%s,%s,%s,%s,%s,%s\n", NR - 2, $2, $3, $4, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_idx.csv"
 expect_exit 1 "time as a sample number" "$H" replay "$T/in_idx.csv" --quiet
@@ -937,14 +929,14 @@ expect_exit 1 "time in milliseconds, again" "$H" replay "$T/in_ms.csv" --quiet
 if grep -q "count samples" "$T/err"; then fail "stamps in ms (4 ms apart) told they may count samples"; else
     pass "stamps in ms (4 ms apart) not told they may count samples"; fi
 # an accelerometer in mg (or cm/s^2, or raw counts): no still period is found (the noise is 100 times the
-# detector's), and replay said only "no still period of 0.20 s ... found", naming neither the unit nor the
-# remedy (the generality review, 2026-11-30); the mean |f| of the whole log, about 1,000, gives it away
+# detector's), and replay must say more than "no still period of 0.20 s ... found", naming the unit and the
+# remedy; the mean |f| of the whole log, about 1,000, gives it away
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 0.00980665, $3 / 0.00980665, $4 / 0.00980665, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_mg.csv"
 expect_exit 1 "accelerometer in mg" "$H" replay "$T/in_mg.csv" --quiet --json "$T/in_mg.json"
-# the remedy: --units accel=mg, which --units has since the units review (2026-11-30: "multiply by 0.00980665")
+# the remedy: --units accel=mg (not "multiply by 0.00980665")
 expect_err "not in m/s^2: in mg? (give --units accel=mg)" "a log in mg is named as such, the --units item the remedy"
-# in the JSON too, as info's units_problem: the error's message without the path (it had no trace of it)
+# in the JSON too, as info's units_problem: the error's message without the path (not left without a trace of it)
 json "$T/in_mg.json" 'j["units_problem"].startswith("the accelerometer averages |f| = ") and "in mg? (give --units accel=mg)" in j["units_problem"]' &&
     pass "replay --json: units_problem names mg" || fail "replay --json of a log in mg: units_problem $(grep units_problem "$T/in_mg.json")"
 expect_exit 0 "info on a log in mg" "$H" info "$T/in_mg.csv"
@@ -964,10 +956,10 @@ awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.7g,%.7g,%.7g\n", $1, $2
 expect_exit 0 "info on a log in mg and deg/s" "$H" info "$T/in_mg_dps.csv"
 expect_out "units       NOT SI: .*not in m/s^2 but in mg (give --units accel=mg,gyro=deg/s).*not in rad/s but probably in deg/s (give --units accel=mg,gyro=deg/s)" \
     "mg and deg/s: each remedy names accel=mg,gyro=deg/s"
-# the same log read with --units accel=g: 1000 times too large once read as g; mg was judged on the values as
-# read (9.8 times mg), so replay said "raw counts? (scale them by the sensor's sensitivity)" and info named no
-# unit; mg is now judged on the file's values, and the remedy keeps the option given: divide by 1000, until the
-# units review (2026-11-30) gave --units accel=mg, now named instead
+# the same log read with --units accel=g: 1000 times too large once read as g; mg judged on the values as
+# read (9.8 times mg) would make replay say "raw counts? (scale them by the sensor's sensitivity)" and info name no
+# unit; mg is judged on the file's values, and the remedy names --units accel=mg (not the option given with
+# "divide by 1000")
 expect_exit 1 "accelerometer in mg, read with accel=g" "$H" replay "$T/in_mg.csv" --quiet --units accel=g
 expect_err "the log is not in m/s^2: in mg? (read as g by --units accel=g: give --units accel=mg) (docs/log-format.md)" \
     "mg read with accel=g: named as mg, the remedy naming accel=mg"
@@ -977,8 +969,8 @@ expect_exit 0 "info on a log in mg, read with accel=g" "$H" info "$T/in_mg.csv" 
 expect_out "units       NOT SI: .*not in m/s^2 but in mg (read as g by --units accel=g: give --units accel=mg)" \
     "info: mg read with accel=g named, the remedy naming accel=mg"
 # a log already in m/s^2 read with --units accel=g (9.8 times too large once read as g): the marks judged the
-# values as read, so replay called it "raw counts? (scale them by the sensor's sensitivity)" and info said
-# only "not in m/s^2", of a file that is; it is now named as m/s^2 read as g, the remedy leaving accel=g out
+# values as read would make replay call it "raw counts? (scale them by the sensor's sensitivity)" and info say
+# only "not in m/s^2", of a file that is; it is named as m/s^2 read as g, the remedy leaving accel=g out
 expect_exit 1 "accelerometer in m/s^2, read with accel=g" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet \
     --units accel=g --out "$T/msg_as_g.csv"
 expect_err "the log is in m/s^2 already? (read as g by --units accel=g: leave accel=g out) (docs/log-format.md)" \
@@ -991,9 +983,9 @@ expect_out "units       NOT SI: .*at rest, where gravity is 9.807 m/s^2: the log
 expect_exit 0 "info on the same log without accel=g" "$H" info vectors/nav/golden/gx2_walk2.csv
 if grep -q "NOT SI" "$T/out"; then fail "the remedy followed: info still finds a unit problem"; else
     pass "the remedy followed (accel=g left out): no unit problem"; fi
-# a log in micro-g (ax_µg, --units accel=ug since 2026-12-02): read as m/s^2 its |f| at rest is about 1.0e6, which
-# the units check called only "not in m/s^2" (info) or "raw counts?" (replay, no still period found: the noise
-# scaled by 1e5 hides it), and read as mg "raw counts?" as well; it is now named as ug, the remedy accel=ug, by
+# a log in micro-g (ax_µg, --units accel=ug): read as m/s^2 its |f| at rest is about 1.0e6, which the units check
+# must not call only "not in m/s^2" (info) or "raw counts?" (replay, no still period found: the noise
+# scaled by 1e5 hides it), nor read as mg "raw counts?"; it is named as ug, the remedy accel=ug, by
 # the bands of g and mg (|f| at rest within 25 % of gravity once read in ug; a mean |f| of 0.75-10 g). The first
 # 2.4 s of the walk (600 rows, the standing start): further on, |a| on one axis passes 1e6, which the reader refuses
 awk -F, 'NR == 1 { print; next } NR <= 601 { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665e-6, $3 / 9.80665e-6, $4 / 9.80665e-6, $5, $6, $7 }' \
@@ -1020,7 +1012,7 @@ expect_exit 1 "an acceleration of 1e10" sh -c "awk -F, 'NR == 2 { \$2 = 1e10 } {
 expect_err "acc_big.csv:2: column 2 ('1e+10') is beyond 1e+06 in SI units (no sensor reads that)" "an acceleration of 1e10: the reader's limit"
 if grep -q "accel=ug" "$T/err"; then fail "an acceleration of 1e10 asked about ug"; else pass "an acceleration of 1e10 (1e4 g in ug) not asked about ug"; fi
 # the whole walk read as mg (no value beyond the reader's 1e6 once read so): the mean |f|, 1.6 g in the file's ug
-# read as g, the walk meets the limit at once (1e6 g is 9.8e6 m/s^2): it was refused with no hint (2026-12-02)
+# read as g, the walk meets the limit at once (1e6 g is 9.8e6 m/s^2): it is not refused without a hint
 expect_exit 1 "the walk in ug, read as g" "$H" replay "$T/in_ug_walk.csv" --quiet --units accel=g --out /dev/null
 expect_err "in_ug_walk.csv:2: column [234] ('[-0-9.e+]*') is beyond 1e+06 in SI units (no sensor reads that; in ug? 1 g is 1e6 ug: give --units accel=ug)" \
     "the walk in ug read as g: the reader's limit asks about ug"
@@ -1039,8 +1031,8 @@ if grep -q "NOT SI" "$T/out"; then fail "ug read with accel=ug: info still finds
 expect_exit 0 "info on a log in m/s^2, read with accel=ug" "$H" info vectors/nav/golden/gx2_walk2.csv --units accel=ug
 expect_out "units       NOT SI: .*the log is in m/s^2 already (read as ug by --units accel=ug: leave accel=ug out)" \
     "info: m/s^2 read with accel=ug named, the remedy leaving accel=ug out"
-# mg and mdps (ST's SensorTile data log writes AccX [mg] and GyroX [mdps]), which --units reads since the units
-# review (2026-11-30): the file's unit is named whatever --units gave, each remedy the whole --units value
+# mg and mdps (ST's SensorTile data log writes AccX [mg] and GyroX [mdps]), which --units reads: the file's unit
+# is named whatever --units gave, each remedy the whole --units value
 expect_exit 1 "accelerometer in m/s^2, read with accel=mg" "$H" replay vectors/nav/golden/gx2_walk2.csv --quiet --units accel=mg
 expect_err "the log is in m/s^2 already (read as mg by --units accel=mg: leave accel=mg out)" \
     "m/s^2 read with accel=mg: named as m/s^2, the remedy leaving accel=mg out"
@@ -1083,8 +1075,8 @@ grep -q "in mg\|raw counts\|not in m/s" "$T/err" && fail "a run in m/s^2 without
     pass "a run in m/s^2 without a still period is not named as mg"
 # time stamps coarser than the sampling, as float32 seconds far from 0 give them (1e5 s, a day of a board's
 # uptime: steps of 2^-7 s = 7.8 ms at 250 Hz): half the samples repeat the stamp before them, are not
-# integrated, and the detector's rate reads 128 Hz; the walk navigated with a ZUPT share halved and exit 0
-# without a word (the generality review, 2026-11-30). The summary now says so and names the remedy
+# integrated, and the detector's rate reads 128 Hz; the walk navigates with a ZUPT share halved, not to pass
+# with exit 0 and no word: the summary says so and names the remedy
 awk -F, 'NR == 1 { print; next } { printf "%.7f,%s,%s,%s,%s,%s,%s\n", 100000 + int($1 * 128 + 0.5) / 128, $2, $3, $4, $5, $6, $7 }' \
     vectors/nav/golden/gx2_walk2.csv > "$T/in_f32t.csv"
 expect_exit 0 "time stamps as float32 at 1e5 s" "$H" replay "$T/in_f32t.csv" --json "$T/in_f32t.json"
@@ -1126,8 +1118,8 @@ json "$T/walkbin.json" '(j["stamps"]["coarse"] is False and 0 < j["stamps"]["dup
     pass "replay --json of the bundled walk: stamps.coarse and gait_cycles.too_short false, units_problem null" ||
     fail "replay --json of the bundled walk: $(grep -A3 '"stamps"\|"gait_cycles"\|units_problem' "$T/walkbin.json" | tr -d '\n\t')"
 # a log without time stamps gets a rate it cannot check: six bare numbers a line are the OpenShoe 820 Hz file
-# (assumed 820 Hz, a warning): a 250 Hz walk in that form navigated 5 m of 77 with strides of 0.34 s, a 200 Hz
-# one made no stride at all, exit 0, only the assumption warned (the generality review, 2026-11-30); the gait
+# (assumed 820 Hz, a warning): a 250 Hz walk in that form navigates 5 m of 77 with strides of 0.34 s, a 200 Hz
+# one makes no stride at all, exit 0, with only the assumption warned of otherwise; the gait
 # cycles no foot makes (0.27 s: 450 steps/min) are named, with --input-rate
 "$H" sim --motion walk --duration 30 --rate 200 --out "$T/bare_w.csv" >/dev/null 2>&1
 awk -F, 'NR > 1 { print $2 "," $3 "," $4 "," $5 "," $6 "," $7 }' "$T/bare_w.csv" > "$T/bare6.txt"
@@ -1149,12 +1141,12 @@ json "$T/bare6_200.json" 'j["gait_cycles"]["too_short"] is False and j["gait_cyc
     fail "replay --json at the right rate: $(grep -A3 '"gait_cycles"' "$T/bare6_200.json" | tr -d '\n\t')"
 # a slow gait (under 70 steps/min) is named, with what guards against it: in a slow swing the foot's deceleration
 # before the landing can pass for a stance of 20-32 ms and its ZUPT takes speed out (real walks played slower lost up
-# to a third of their length, scripts/probe_slow.py; nothing was said until 2026-11-30). The simulator's 60 steps/min
-# walk (0.8 m strides at 0.4 m/s, 2 s cycles): by default (min_zupt_cycle 0.025 since 2026-12-01) the shortest ZUPT
+# to a third of their length, scripts/probe_slow.py). The simulator's 60 steps/min
+# walk (0.8 m strides at 0.4 m/s, 2 s cycles): by default (min_zupt_cycle 0.025) the shortest ZUPT
 # run follows the cycle (50 ms at this cycle), the strides read 0.8 m and the note names that run. With the
-# cycle-scaled run off (--param min_zupt_cycle=0, the default until 2026-12-01) the strides read short and the note
+# cycle-scaled run off (--param min_zupt_cycle=0) the strides read short and the note
 # names --param min_zupt_s=0.05, which brings the median stride to 0.8 m and takes the note away. gait_cycles.slow
-# says the gait is slow whatever guards against it (until 2026-12-01: whether the note was printed).
+# says the gait is slow whatever guards against it (not whether the note was printed).
 "$H" sim --motion walk --duration 60 --cadence 60 --speed 0.4 --profile none --out "$T/slow60.bin" >/dev/null 2>&1 ||
     fail "sim a 60 steps/min walk"
 expect_exit 0 "a 60 steps/min walk" "$H" replay "$T/slow60.bin" --out /dev/null --json "$T/slow60_c.json" --strides "$T/slow60_c_s.csv"
@@ -1228,7 +1220,7 @@ if [ -n "$D" ]; then
         if grep -q "$s" "$T/results.md"; then pass "results.md has $s"; else fail "results.md lacks $s"; fi
     done
     if head -5 "$T/results.md" | grep -q "harness eval"; then pass "results.md names its command"; else fail "results.md command"; fi
-    # the configuration names the shortest ZUPT run, which moves every walk's figures (since 2026-12-01)
+    # the configuration names the shortest ZUPT run, which moves every walk's figures
     if head -5 "$T/results.md" | grep -q "landing settling state on, shortest ZUPT run 20 ms or \`min_zupt_cycle\` 0.025 of the gait cycle if longer"; then
         pass "results.md's configuration names the cycle-scaled shortest ZUPT run"; else fail "results.md configuration: $(sed -n 4p "$T/results.md")"; fi
     # the figures: img/ beside results.md, each linked from it, a PNG
@@ -1249,8 +1241,8 @@ if [ -n "$D" ]; then
     expect_err "cannot create the figures' directory /nonexistent/dir/figs" "the figures' directory error names it"
     # ipol: the target is met with the expert swings that overlap the other
     # foot's left out; with them kept the same run scores 2 missed, 1 spurious
-    # (both in the JSON and in the Targets row; 2 and 2 until min_zupt_cycle
-    # became 0.025 by default, 2026-12-01: docs/results.md)
+    # (both in the JSON and in the Targets row; 2 and 2 with min_zupt_cycle
+    # 0 in place of the default 0.025: docs/results.md)
     if /usr/bin/env python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if (j['ipol_missed'], j['ipol_spurious'], j['ipol_missed_strict'], j['ipol_spurious_strict']) == (0, 0, 2, 1) else 1)" "$T/e.json" &&
         grep -q "^| ipol: no missed or spurious strides | 0 missed, 0 spurious (2 and 1 with the 4 both-feet swings kept) |" "$T/results.md"; then
         pass "ipol: the strict count beside the judged one"; else fail "ipol strict: $(grep '^| ipol: no missed' "$T/results.md")"; fi
@@ -1356,8 +1348,8 @@ if [ -n "$D" ]; then
         pass "before_alignment_s in the JSON"; else fail "before_alignment_s: $(grep -o '"before_alignment_s":[^,]*' "$T/ip_mid.json")"; fi
     # a log that starts in a swing (openshoe_gx2 walk 2 from 0.5 s after its
     # first swing began, 2.92 s): the filter aligns on the next stance, after
-    # 0.40 s of motion (before_alignment_s 0.404), which the 1 s limit of the note let pass: the closure
-    # went from 0.65 % to 2.49 % without a word (the unseen review). The
+    # 0.40 s of motion (before_alignment_s 0.404), which a 1 s limit of the note would let pass: the closure
+    # goes from 0.65 % to 2.49 %, not to go without a word. The
     # summary says so, and eval's row
     "$H" convert "$D/openshoe_gx2/Measurement_100521_2_data_inert.txt" "$T/gx2_full.csv" 2>/dev/null
     awk -F, 'NR == 1 || $1 >= 3.42' "$T/gx2_full.csv" > "$T/gx2_swing.csv"
@@ -1405,7 +1397,7 @@ if grep -q "stood" "$T/stand2.out"; then fail "the stand is noted with the ZARU 
 # a rate that changes part way (not handled: the detector keeps the first
 # rate) is said, in the summary and the JSON, with where and how much; the
 # shared walks' jitter, gaps and dropped packets are not (checked by hand on
-# every walk of the shared data, 2026-11-28)
+# every walk of the shared data)
 awk -F, 'NR == 1 || NR < 4000 || NR % 2 == 0' "$T/walk_full.csv" > "$T/walk_rate2.csv"
 "$H" replay "$T/walk_rate2.csv" --json "$T/rate2.json" > "$T/rate2.out" 2>&1
 if grep -q "note .*sample rate changes: 199\.[0-9] Hz from 10\.[0-9] s, [0-9]* % of the log off the detector's 398\.[0-9] Hz.*--rate HZ" "$T/rate2.out" \
@@ -1430,9 +1422,9 @@ if grep -q "at 4000 Hz the stance detector's ring of [0-9]* samples cuts its win
 "$H" replay "$T/w4k.bin" --rate 1900 > /dev/null 2> "$T/w4k19.err"
 if grep -q "ring of .* cuts" "$T/w4k19.err"; then fail "the window still cut at the rate it names"; else pass "resampled to the rate it names: no cut"; fi
 # the advice never names a rate --rate refuses (1 to 100000 Hz) or one that
-# still cuts: a window no rate fits advised "--rate 0" (the cli review), and
-# a long window, which alone caps the rate at 64 / window_s, "--rate 62"
-# (half window plus minimum run only), still cut at 62 Hz
+# still cuts: a window no rate fits must not advise "--rate 0", nor a long
+# window, which alone caps the rate at 64 / window_s, "--rate 62" (half
+# window plus minimum run only), which still cuts at 62 Hz
 "$H" replay vectors/walk.bin --param window_s=1e30 > /dev/null 2> "$T/wbig.err"
 if grep -q "ring of .* cuts" "$T/wbig.err" && ! grep -q -- "--rate [0-9]" "$T/wbig.err" &&
     grep -q "no rate --rate accepts fits them: shorten window_s or min_zupt_s (--param)" "$T/wbig.err"; then
@@ -1449,9 +1441,8 @@ else fail "window_s=2: no rate named: $(cat "$T/w2s.err")"; fi
 # 53 samples of the 74 that 0.03 asks for) replay says so when the log has
 # cycles long enough for the cap to bind (over 2.15 s at 0.03, 2.59 s at the
 # default 0.025: the 45 steps/min walk at 820 Hz above, 2.67 s); a walk at
-# 100 steps/min at 820 Hz is not told (it was, whatever its gait, until
-# 2026-12-01); at 400 Hz it fits and nothing is said; a fraction over 1 is
-# refused (exit 2)
+# 100 steps/min at 820 Hz is not told (the cap does not bind on its gait); at
+# 400 Hz it fits and nothing is said; a fraction over 1 is refused (exit 2)
 "$H" sim --duration 12 --rate 820 --profile mtx --out "$T/w820.bin" >/dev/null 2>&1
 "$H" replay "$T/w820.bin" --param min_zupt_cycle=0.03 > /dev/null 2> "$T/w820.err"
 if ! grep -q "ring of" "$T/w820.err"; then
@@ -1481,8 +1472,8 @@ else
     fail "path plot ranges: $(grep range "$T/gp.txt" | tr '\n' ' ')"
 fi
 # the title names the options that differ from the defaults: plots of one
-# log with --rate 100 or --detector threshold had the same title, the path
-# (a review, 2026-11-29)
+# log with --rate 100 or --detector threshold do not share one title, the
+# path
 if grep -q -x "set multiplot layout 1,2 title '$T/straight.bin'" "$T/gp.txt"; then pass "plot title: the path alone with the defaults"; else
     fail "plot title (defaults): $(grep multiplot "$T/gp.txt" | head -1)"; fi
 PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp2.txt" "$H" replay "$T/straight.bin" --rate 100 --detector threshold --bias-model off \
@@ -1494,14 +1485,13 @@ PATH="$T/fakegp:$PATH" GP_SCRIPT="$T/gp3.txt" "$H" replay "$T/straight.bin" --pr
 if grep -q -x "set multiplot layout 1,2 title '$T/straight.bin'" "$T/gp3.txt"; then pass "plot title: defaults given explicitly are left out"; else
     fail "plot title (explicit defaults): $(grep multiplot "$T/gp3.txt" | head -1)"; fi
 # the path's axes are n's x and y (docs/frames.md: x along the sensor's heading at the alignment, no
-# magnetometer): they were labelled 'north x' and 'east y', which a figure in a paper reads as geographic (the
-# gait review, 2026-11-30)
+# magnetometer): not 'north x' and 'east y', which a figure in a paper reads as geographic
 if grep -q -x "set xlabel 'y (m, right of the start heading)'" "$T/gp.txt" &&
     grep -q -x "set ylabel 'x (m, along the start heading)'" "$T/gp.txt" && ! grep -q -i "north\|east" "$T/gp.txt"; then
     pass "path plot: axes named after the start heading, not north and east"
 else fail "path plot labels: $(grep label "$T/gp.txt" | tr '\n' ' ')"; fi
-# gnuplot failing partway left its half-drawn PNG behind beside "failed to
-# write" (the plots review): the file it started is removed, and said; a file
+# gnuplot failing partway must not leave its half-drawn PNG behind beside
+# "failed to write": the file it started is removed, and said; a file
 # that was there before and that gnuplot never opened is left alone
 fake_gnuplot_fail "$T/failgp"
 rm -f "$T/half.png"
@@ -1544,8 +1534,8 @@ expect_err "a sample rate of 1 Hz (--rate) is too low to navigate.*above 7.5 Hz"
 # intervals of 0.56 m forward and 0.34 m up: distance 5 x sqrt(0.56^2 + 0.34^2) = 3.276 m (2.80 m
 # horizontal), vertical +1.70 m (up positive), return-to-start 3.276 m in 3-D (100 % of the path: a
 # straight climb) and 2.80 m horizontal (85.5 % of the 3-D path). A distance without its height part,
-# a 3-D error without it, a vertical down positive and a horizontal % of the horizontal path passed
-# every replay test (the mutation review, 2026-11-29)
+# a 3-D error without it, a vertical down positive and a horizontal % of the horizontal path would
+# otherwise pass every replay test
 "$H" sim --motion stairs-up:12 --seed 1 --out "$T/stairs.bin" >/dev/null 2>"$T/err" || { fail "sim stairs-up:12"; cat "$T/err"; }
 expect_exit 0 "replay a simulated flight of 12 stairs" "$H" replay "$T/stairs.bin" --json "$T/stairs.json" --quiet
 if json "$T/stairs.json" '(all(abs(j[k] / v - 1) < 0.02 for k, v in (("distance_m", 5 * (0.56**2 + 0.34**2) ** 0.5),
@@ -1579,7 +1569,7 @@ for r in rows:
     if not f(r, "swing_start_s") < f(r, "swing_end_s"): sys.exit("swing start not before its end in stride " + r["stride"])
 if rows[0]["stride_time_s"] != "" or rows[0]["cadence_spm"] != "": sys.exit("the first stride has a stride time")
 # stance_s: the foot-off minus the previous row's foot-strike, so that stance and swing make the stride time
-# (the gait review, 2026-11-30: the rows gave no stance time)
+# (a stance time in the rows: empty in the first, which has no previous foot-strike)
 if rows[0]["stance_s"] != "": sys.exit("the first stride has a stance time")
 for a, b in zip(rows, rows[1:]):
     if abs(f(b, "stance_s") - (f(b, "foot_off_s") - f(a, "foot_strike_s"))) > 1.5e-6:
@@ -1635,9 +1625,9 @@ if strides_ok "$T/sw0_r_strides.csv" "$T/sw0_r.json" "$L0" 100 0.014 0.9 >"$T/py
 else fail "--strides resampled: $(cat "$T/py") $(cat "$T/err")"; fi
 # standard output: the rows alone there, the summary on standard error
 # above about 450 Hz the gait events' searches do not fit the detector's jerk history (FNAV_STANCE_EVENT_BUF,
-# 160 samples): at 1 kHz the foot-off was searched over 159 ms and the foot-strike over 110 ms instead of 0.3 s,
-# and the 820 Hz OpenShoe walk read 3 of its 49 foot-strikes 77-155 ms later than resampled to 200 Hz, without a
-# word (the gait review, 2026-11-30). With --strides, replay now says so and names the rate that fits
+# 160 samples): at 1 kHz the foot-off is searched over 159 ms and the foot-strike over 110 ms instead of 0.3 s,
+# and the 820 Hz OpenShoe walk reads 3 of its 49 foot-strikes 77-155 ms later than resampled to 200 Hz, not to
+# pass without a word: with --strides, replay says so and names the rate that fits
 "$H" sim --motion walk --duration 12 --rate 1000 --profile none --out "$T/sw_1k.bin" >/dev/null 2>&1 ||
     fail "sim --rate 1000 for the event searches"
 expect_exit 0 "replay --strides at 1 kHz" "$H" replay "$T/sw_1k.bin" --strides "$T/sw_1k.csv" --quiet
@@ -1648,10 +1638,10 @@ expect_exit 0 "replay at 1 kHz without --strides" "$H" replay "$T/sw_1k.bin" --q
 if grep -q "gait events" "$T/err"; then fail "the event searches warned about without --strides"; else pass "no event-search warning without --strides"; fi
 expect_exit 0 "replay --strides at 1 kHz resampled to 400 Hz" "$H" replay "$T/sw_1k.bin" --rate 400 --strides "$T/sw_400.csv" --quiet
 if grep -q "gait events" "$T/err"; then fail "the event searches warned about at 400 Hz: $(cat "$T/err")"; else pass "no event-search warning at 400 Hz"; fi
-# replay computed the searches' reach again, in double, beside the core's set_rate, whose float rounds otherwise at
-# a half: min_stance_s = 0.021 at 500 Hz is 10.4999998 samples in double (10), 10.5 in float, which the core rounds
-# to 11, so its foot-strike search holds 160 - 11 = 149 samples (298 ms), cut; replay counted 150 and said nothing.
-# It asks the core now (hx_nav.c, event_reach). (The float build, which the CLI tests run.)
+# replay must not compute the searches' reach again, in double, beside the core's set_rate, whose float rounds
+# otherwise at a half: min_stance_s = 0.021 at 500 Hz is 10.4999998 samples in double (10), 10.5 in float, which the
+# core rounds to 11, so its foot-strike search holds 160 - 11 = 149 samples (298 ms), cut, where replay would count
+# 150 and say nothing. It asks the core (hx_nav.c, event_reach). (The float build, which the CLI tests run.)
 "$H" sim --motion walk --duration 12 --rate 500 --profile none --out "$T/sw_500.bin" >/dev/null 2>&1 ||
     fail "sim --rate 500 for the event searches"
 expect_exit 0 "replay --strides at 500 Hz, min_stance_s 0.021" "$H" replay "$T/sw_500.bin" --strides "$T/sw_500.csv" \
@@ -1716,8 +1706,8 @@ else
     echo "skip --strides swing_s on ipol 3-3 (ipol_gait_xsens/3-3_lf.txt not in the shared data)"
 fi
 
-# --- damaged binary logs (never run by a CLI test before make
-# coverage-harness, 2026-11-30): a copy of vectors/walk.bin cut inside its
+# --- damaged binary logs (run by no other CLI test: make
+# coverage-harness): a copy of vectors/walk.bin cut inside its
 # gzip stream is replayed up to the last whole record, exit 1, the frames
 # before the cut kept in --out; a header cut short or with a flipped byte is
 # refused (exit 1) with no output.

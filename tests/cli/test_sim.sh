@@ -27,7 +27,7 @@ expect_err "outside" "range error"
 expect_exit 2 "unknown motion" "$H" sim --out "$T/x.bin" --motion fly
 expect_err "unknown motion 'fly'" "unknown motion is named"
 expect_exit 2 "bad motion script" "$H" sim --out "$T/x.bin" --motion stand:5,walk:abc
-# a script without items was one second of standing with exit 0 (a review)
+# a script without items is refused, not one second of standing with exit 0
 for m in , ,,; do
     expect_exit 2 "empty motion script '$m'" "$H" sim --out "$T/x.bin" --motion "$m"
     expect_err "empty motion script" "the empty script is named ('$m')"
@@ -36,14 +36,13 @@ done
 # distance never given ("walk/run needs a distance in (0, 1e5] m: 128320.500")
 expect_exit 2 "walk scenario too long" "$H" sim --out "$T/x.bin" --duration 1e5
 expect_err "motion 'walk' sized to 100000 s: walk/run needs a distance" "the scenario and its duration are named"
-# an extra value where the item takes none or one is refused (ignored until
-# 2026-11-28; a review)
+# an extra value where the item takes none or one is refused (not ignored)
 for m in stand:5:99 stand:2,turn:90:45 stand:2,elevator:3:9 stand:2,home:77; do
     expect_exit 2 "motion script with an extra value ($m)" "$H" sim --out "$T/x.bin" --motion "$m"
 done
 # the turn of a walk, run or stairs leg has the bound of a turn item: a
-# turn of 1e300 deg wrote a log of infinite and NaN gyro samples (1e9 deg:
-# 7e7 rad/s) with exit 0 until 2026-11-28 (a review)
+# turn of 1e300 deg would write a log of infinite and NaN gyro samples (1e9
+# deg: 7e7 rad/s) with exit 0
 for m in walk:1.4:1e300 run:5:-1e9 stairs-up:2:1e300 stairs-down:4:3601; do
     expect_exit 2 "motion leg turning too far ($m)" "$H" sim --out "$T/x.csv" --motion "stand:1,$m"
     expect_err "within +-3600 deg" "the bound on the turn is named ($m)"
@@ -51,8 +50,7 @@ done
 expect_exit 0 "a walk leg turning the largest angle" "$H" sim --out "$T/x.csv" --rate 100 --motion stand:1,walk:100:-3600
 
 # the catalogue's inclusive lower bounds hold in the float build too (1e-9
-# and 1e-12 round below the double bounds in float: refused until
-# 2026-11-28)
+# and 1e-12 round below the double bounds in float, and are not refused)
 expect_exit 0 "saturation at its smallest range" "$H" sim --out "$T/x.csv" --motion stand --duration 1 --effect saturation:range=1e-9
 expect_exit 0 "quantisation at its smallest step" "$H" sim --out "$T/x.csv" --motion stand --duration 1 --effect quant:lsb=1e-12
 # a profile outside the error model's ranges is named as such (it blamed
@@ -65,9 +63,9 @@ expect_exit 2 "bad rate" "$H" sim --out "$T/x.bin" --rate -5
 expect_exit 2 "three gait figures" "$H" sim --out "$T/x.bin" --speed 1 --cadence 100 --stride 1
 expect_exit 2 "sample jitter through the filter" "$H" sim --out "$T/x.bin" --effect jitter:sample_s=1e-4
 expect_err "sample_s" "sample jitter error explains"
-# refused before any output is begun (a header-only log was left behind),
-# with advice that fits --decimation mean (it advised the --oversample 1
-# the run had; a review)
+# refused before any output is begun (no header-only log left behind),
+# with advice that fits --decimation mean (not the --oversample 1 the run
+# had)
 [ ! -e "$T/x.bin" ] && pass "no log left by the sample jitter refusal" || fail "sample jitter refusal left a log"
 expect_exit 2 "sample jitter with interval means" "$H" sim --out "$T/xm.bin" --oversample 1 --decimation mean \
     --effect jitter:sample_s=1e-4
@@ -85,7 +83,7 @@ expect_exit 0 "tone above the band, FIR" "$H" sim --out "$T/vf.csv" --duration 1
 expect_err "filtered out" "the FIR's warning says filtered out"
 # in the filter's transition band (0.41-0.59 f_s) a tone passes attenuated:
 # 90 Hz at 200 Hz at 91 % (measured on the log), 110 Hz at 9 % folded to 90 Hz
-# (both were called "filtered out"; a review). The figures the warnings must
+# (neither may be called "filtered out"). The figures the warnings must
 # give come from the filter rebuilt in numpy from its formula, not from the
 # harness: `/usr/bin/python3 scripts/sim_fir_response.py --tone 200 90 110`
 #   90 Hz at 200 Hz (M 10): amplitude 91.118 %
@@ -119,7 +117,7 @@ else
     echo "SKIP the transition band's gains against numpy: $PY has no numpy (apt-get install python3-numpy)"
 fi
 # a landing takes at most 30 % of the swing: a longer --impact-ms is said
-# (it was shortened without a word; a review)
+# (not shortened without a word)
 expect_exit 0 "long impact" "$H" sim --out "$T/x.csv" --duration 1 --impact-ms 160
 expect_err "longer than 30 % of a swing, the longest landing: walk 137 ms, run 152 ms" "the cap is named"
 expect_exit 0 "calibrated impact" "$H" sim --out "$T/x.csv" --duration 1 --impact-ms 7
@@ -131,8 +129,8 @@ expect_err "no bias model: ignored" "eq6 without a profile said"
 expect_exit 0 "eq6 on a profile" "$H" sim --out "$T/x.csv" --duration 1 --profile mtx --bias-sigma eq6
 if grep -q "ignored" "$T/err"; then fail "eq6 with a profile warned"; else pass "eq6 with a profile: no warning"; fi
 # ... and on a profile file it is said: a file's bias sd is most likely the
-# stationary sd of `allan --profile`, which eq6 made 50-600 times larger
-# without a word (a review, 2026-11-30)
+# stationary sd of `allan --profile`, which eq6 makes 50-600 times larger,
+# not to go without a word
 expect_exit 0 "eq6 on a profile file" "$H" sim --out "$T/x.csv" --duration 1 --bias-sigma eq6 \
     --profile "$(dirname "$0")/../../docs/profiles/generic-mems.profile"
 expect_err "warning: --bias-sigma eq6 rereads the bias sd of the profile file" "eq6 on a profile file is said"
@@ -154,8 +152,8 @@ expect_out "interval means" "summary names the decimation"
 expect_exit 3 "unwritable output" "$H" sim --out "$T/no/such/dir/x.bin" --duration 2
 expect_exit 3 "unwritable truth" "$H" sim --out "$T/x.bin" --truth "$T/no/such/dir/t.csv" --duration 2
 # an output that fails while the run writes it (a full disk): exit 3, the
-# file named, no summary (a mutant that exited 0 on a failed truth write,
-# summary printed, passed every case above; the mutation round of 2026-11-29)
+# file named, no summary (a mutant that exits 0 on a failed truth write,
+# summary printed, passes every case above)
 if [ -w /dev/full ]; then
     expect_exit 3 "truth CSV onto a full disk" "$H" sim --out "$T/x.bin" --truth /dev/full --duration 2
     expect_err "/dev/full: write failed" "the truth file's failed write is said"
@@ -225,9 +223,9 @@ if cmp -s "$T/ring0.csv" "$T/ringd.csv"; then fail "--ring-scale 0 left the walk
 
 # --- a --duration that cuts the motion before its last stride (or ride) is
 # said: a 'walk' of 4 s is 4 s of standing, a 'loop' of 20 s ends 1.2 m from
-# its start, which the document says it ends at (both silent; a review,
-# 2026-11-30); a walk whose last standing is shortened, or a script
-# lengthened by standing, is not cut
+# its start, which the document says it ends at (neither may be silent); a
+# walk whose last standing is shortened, or a script lengthened by standing,
+# is not cut
 for c in "walk 4" "loop 20" "paper 30" "stand:1,elevator:3 3"; do
     set -- $c
     expect_exit 0 "sim $1 cut at $2 s" "$H" sim --motion "$1" --duration "$2" --out "$T/cut.bin"
@@ -253,9 +251,8 @@ expect_exit 0 "sim walk cut before the first stride" "$H" sim --motion walk --du
 expect_out_re "^duration    4\.000 s, 0 strides, 0\.00 m between footfalls" "no stride within 4 s of standing"
 # ... and its duration and end are those of the last sample: a --duration
 # between two ticks (7.0049 s at 100 Hz: the last sample is at 7.000 s)
-# printed 7.005 s and the truth at 7.0049 s, 2 cm past the log's last
-# position (the simmc review, 2026-12-02); compared with the truth CSV's
-# last row
+# must not print 7.005 s and the truth at 7.0049 s, 2 cm past the log's
+# last position; compared with the truth CSV's last row
 expect_exit 0 "sim with --duration between ticks" "$H" sim --motion walk:20 --duration 7.0049 --rate 100 \
     --profile none --out "$T/w7.bin" --truth "$T/w7.csv"
 want=$(tail -n 1 "$T/w7.csv" | awk -F, '{ printf "duration    %.3f s, .* %.2f m between footfalls, ends at \\(%.3f, %.3f, %.3f\\) m", $1, $27, $4, $5, $6 }')
@@ -279,14 +276,14 @@ if [ "$n" -eq 1002 ]; then pass "CSV rows"; else fail "CSV rows $n, expected 100
 expect_exit 0 "CSV on stdout" "$H" sim --duration 1 --rate 100 --out -
 n=$(wc -l <"$T/out")
 if [ "$n" -eq 102 ]; then pass "CSV on stdout rows"; else fail "stdout rows $n, expected 102"; fi
-# ... and the summary on standard error, as replay's with --out - (it was
-# dropped: no word of the profile, effects or samples; a review, 2026-11-30)
+# ... and the summary on standard error, as replay's with --out - (not
+# dropped: no word of the profile, effects or samples)
 expect_err "^samples     101 written" "--out -: the summary on standard error"
 if grep -q "^samples" "$T/out"; then fail "--out -: the summary in the CSV"; else pass "--out -: the CSV alone on standard output"; fi
 
 # --- the summary's effect lines give the values as set, not their float
-# rounding (0.05 was printed 0.0500000007, the MTx density 0.00089
-# 0.000890000025; a review, 2026-11-30), and still parse back to them
+# rounding (0.05 not printed 0.0500000007, nor the MTx density 0.00089
+# 0.000890000025), and still parse back to them
 expect_exit 0 "effect values in the summary" "$H" sim --out "$T/x.csv" --duration 1 --profile mtx \
     --effect offset:value=0.05 --effect quant:ch=gyro:lsb=1.0653e-3
 expect_out_re "^effect      offset:ch=all:value=0\.05$" "offset 0.05 printed as given"
@@ -311,13 +308,13 @@ set -- $SIMN
 if [ $# -eq 4 ] && [ "$1" -eq $(($2 - $3 + $4)) ] && grep -Eq "^drops +$3 " "$T/out" && grep -Eq "^duplicates +$4 " "$T/out"
 then pass "sim's written, dropped and duplicated counts agree with info's"; else fail "sim counts '$SIMN' vs info: $(grep -E '^(drops|duplicates)' "$T/out")"; fi
 # the summary's peaks are those of the log: every sample dropped, none
-# (they counted the dropped samples; a review)
+# (the dropped samples are not counted)
 expect_exit 0 "every sample dropped" "$H" sim --duration 2 --rate 100 --out "$T/d0.csv" --effect dropout:prob=1
 expect_out_re "^samples     0 written" "no sample written"
 expect_out_re "^peaks       largest on one axis: f 0\.0 m/s\^2 \(0\.0 g\), w 0\.00 rad/s" "no peak from dropped samples"
 # the peaks are the largest reading of any one axis (what a sensor's range
 # must hold), not the norm that '|f|' and '|w|' read as: a static log
-# (f = (0, 0, -g)) peaks at g, and the label says which (a review, 2026-11-30)
+# (f = (0, 0, -g)) peaks at g, and the label says which
 expect_exit 0 "peaks of a static log" "$H" sim --motion stand --duration 1 --profile none --mount 0,45,0 --out "$T/pk.csv"
 expect_out_re "^peaks       largest on one axis: f 6\.9 m/s\^2 \(0\.7 g\), w 0\.00 rad/s" \
     "peaks: the largest axis (g cos 45 deg = 6.9 m/s^2 at a 45 deg pitch mount), said so"

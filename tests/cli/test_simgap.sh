@@ -35,7 +35,7 @@ expect_err "^harness simgap: error: .*short.csv: too short for a confident answe
 json "$T/short.json" 'j["confident"] is False and j["verdict"]["answer"] == "too-short" and "decade" in j["too_short"]' &&
     pass "too short in the JSON" || fail "too short JSON: $(cat "$T/pyerr")"
 # an output that cannot be written fails before the diagnosis, not after it
-# (it took the whole run, minutes on a long log, then exit 3; the simgap review, 2026-11-29)
+# (the whole run, minutes on a long log, then exit 3)
 expect_exit 3 "--json into a missing directory" "$H" simgap "$T/short.csv" --json "$T/nodir/x.json"
 [ ! -s "$T/out" ] && pass "--json unwritable: refused before the diagnosis" || fail "--json unwritable: diagnosed first"
 expect_exit 3 "--plot that cannot be created" "$H" simgap "$T/short.csv" --plot "$T/nodir/plots"
@@ -53,10 +53,10 @@ expect_exit 1 "too short log with --plot" "$H" simgap "$T/short.csv" --quiet --s
 expect_exit 1 "held-out segment without points" "$H" simgap "$T/s3.csv" --quiet --seeds 4 --fit-frac 0.9
 expect_err "^harness simgap: error: .*too short for a confident answer" "no held-out point: too short, said"
 # ... while with the default split 3 s at 100 Hz are enough (section 5 of
-# docs/simgap.md; it said "about 5 s" until 2026-11-29)
+# docs/simgap.md; not "about 5 s")
 expect_exit 0 "3 s at 100 Hz: not too short" "$H" simgap "$T/s3.csv" --quiet --seeds 4
 # --seed: sim's and montecarlo's range and words, [0, 4294967295] and "not
-# a whole number" (it was [0, 2e9], "not an integer"; a review, 2026-12-02):
+# a whole number" (not [0, 2e9], "not an integer"):
 # every seed simgap derives is uint32_t arithmetic, which wraps, defined
 expect_exit 2 "--seed past 2^32 - 1" "$H" simgap "$T/s3.csv" --seed 4294967296
 expect_err "^harness simgap: error: --seed '4294967296' is not a whole number in \[0, 4294967295\]$" "--seed: sim's range and words"
@@ -104,8 +104,8 @@ json "$T/jt_flat.json" "len($sel) == 1 and $sel[0][\"held_out_within_noise\"] is
 # an ideal 300 Hz clock whose stamps are written in milliseconds: every
 # interval is 3 or 4 ms (a third of them 4), spread sqrt(p (1 - p)) ms =
 # 0.471 ms with p = frac(3.333) — the rounding's, not jitter. Against the
-# average rounding res/sqrt(6) = 0.408 ms it was "jitter, 38.6 sigma" and
-# the verdict "explained: jitter (stamp_s 0.000167 s)" on a clean log
+# average rounding res/sqrt(6) = 0.408 ms it would be "jitter, 38.6 sigma"
+# and the verdict "explained: jitter (stamp_s 0.000167 s)" on a clean log
 "$H" sim --motion stand:120 --rate 300 --profile mtx --seed 4 --out "$T/ms.csv" >/dev/null 2>&1 || fail "sim 300 Hz"
 awk -F, 'BEGIN { OFS = "," } NR > 1 { $1 = sprintf("%.3f", $1) } { print }' "$T/ms.csv" > "$T/ms3.csv"
 "$H" simgap "$T/ms3.csv" --seeds 6 --json "$T/ms3.json" > "$T/ms3.out" 2>&1
@@ -114,7 +114,7 @@ json "$T/ms3.json" 'j["timing"]["stamp_resolution_s"] == 0.001 and j["timing"]["
 # 500 samples dropped in one place in the held-out middle: the fit segment
 # has none, so the fitted rate is that of the ideal clock, and the held-out
 # count's z after fitting is the z before it (both Poisson, capped at 40);
-# it was 40 before and +2235.8 after, a normal approximation without the cap
+# not 40 before and +2235.8 after, a normal approximation without the cap
 "$H" sim --motion stand:120 --rate 100 --profile mtx --seed 4 --out "$T/dr.csv" >/dev/null 2>&1 || fail "sim dropout base"
 awk 'NR < 5502 || NR > 6001' "$T/dr.csv" > "$T/dr5.csv"
 "$H" simgap "$T/dr5.csv" --seeds 6 --json "$T/dr5.json" > "$T/dr5.out" 2>&1
@@ -143,8 +143,8 @@ json "$T/tb.json" "$b[\"ay\"][\"ar1_tau_at_max\"] and $b[\"ay\"][\"ar1_tau_s\"] 
 
 # a walk with a 40 s stand: the navigation windows in which no stance
 # begins carry no first update; they are placeholders outside G, said so
-# in the summary and null in the JSON (they were points of value 1e-30 with
-# z 0 that diluted G)
+# in the summary and null in the JSON (not points of value 1e-30 with z 0
+# that dilute G)
 "$H" sim --motion stand:5,walk:15,stand:40,walk:15 --profile mtx --seed 3 --out "$T/pw.csv" >/dev/null 2>&1 || fail "sim walk with a stand"
 "$H" simgap "$T/pw.csv" --seeds 6 --json "$T/pw.json" > "$T/pw.out" 2>&1
 n_empty=$(grep -c "window .*no stance begins in it (a stand), not compared" "$T/pw.out")
@@ -158,9 +158,9 @@ grep -q "^    window            t 0.0-11.5 s    real " "$T/pw.out" && grep -q "^
 # a stance across the fit/held-out split (the 40 s stand, in progress at
 # the split sample, 41.4 s) began in the fit segment: it is the fit's, and
 # the held-out stances begin with the first stance that begins at or after
-# the split (docs/simgap.md, section 2). Until 2026-12-02 it was held out
-# too, from the split sample on, with a mid-stance update as its "first"
-# (23 stances, fit 12, held out 12, "the stance across the split in both")
+# the split (docs/simgap.md, section 2). It is not held out too, from the
+# split sample on, with a mid-stance update as its "first" (23 stances, fit
+# 12, held out 12, "the stance across the split in both")
 json "$T/pw.json" '(n := j["navigation"])["stances_fit"] == 12 and n["stances_held_out"] == 11 and n["stances_full"] == 23 and n["held_out_from_s"] > j["split"]["held_out"][0]["start_s"]' &&
     grep -q "^navigation: 23 stances (fit 12, held out 11 from t [0-9.]* s, the first stance to begin at or after the split at 41.4 s); " "$T/pw.out" &&
     pass "the stance across the split is the fit's, not held out" ||
@@ -168,8 +168,8 @@ json "$T/pw.json" '(n := j["navigation"])["stances_fit"] == 12 and n["stances_he
 
 # a held-out gap left (no effect tried): the arrow line gives G and max |z|
 # with their critical values, the final comparison's, as the JSON has them
-# (it said only "a significant held-out gap remains", also where G was
-# below its critical value and one point's |z| made it: a user review)
+# (not only "a significant held-out gap remains", also where G is below its
+# critical value and one point's |z| makes it)
 "$H" sim --motion stand:600 --rate 100 --profile mtx --effect quant:ch=gz:lsb=0.001 --seed 3 --out "$T/qg.csv" >/dev/null 2>&1 || fail "sim lattice"
 "$H" simgap "$T/qg.csv" --seeds 6 --max-effects 0 --quiet --json "$T/qg.json" > "$T/qg.out" 2>&1
 line=$(grep "^  -> a significant held-out gap remains (" "$T/qg.out")
@@ -182,16 +182,16 @@ json "$T/qg.json" "$(printf '%s' "$line" | sed -n 's/.*(G \([0-9.e+-]*\), critic
 "$H" simgap "$T/wn.csv" --seeds 6 > "$T/wn.out" 2>&1
 expect_exit 0 "static log with --closed" "$H" simgap "$T/wn.csv" --quiet --seeds 4 --closed
 expect_err "--closed is for walks .*ignored on a static log" "--closed on a static log said to be ignored"
-# a tone on gx: every location's ratio lies on its z's side (the ratio was
-# real over the bare twin mean while z is the residual after the parameter
-# uncertainty's correction: "34.9 sigma below the twin (ADEV x1.11)"; a review)
+# a tone on gx: every location's ratio lies on its z's side (a ratio of real
+# over the bare twin mean, while z is the residual after the parameter
+# uncertainty's correction, would give "34.9 sigma below the twin (ADEV x1.11)")
 "$H" sim --motion stand:300 --rate 100 --profile mtx --effect vibration:ch=gx:amp=0.01:freq_hz=12 --seed 5 --out "$T/vt.csv" >/dev/null 2>&1 || fail "sim tone"
 "$H" simgap "$T/vt.csv" --quiet --seeds 8 --json "$T/vt.json" >/dev/null 2>&1
 json "$T/vt.json" 'len(j["locations"]) > 4 and all(((l["ratio"] > 1) if l["domain"] in ("allan", "psd") else (l["ratio"] > 0)) == (l["peak_z"] > 0) for l in j["locations"] if l["domain"] != "lattice")' &&
     pass "location ratios on their z's side" || fail "location ratio against z: $(cat "$T/pyerr")"
-# ... the tone is answered with 8 twins; with 3 every effect scored 0 sigma on
-# the held-out tests (they need 4) and it was "unexplained", exit 0: now a
-# usage error for a static log that is attributed (a review, 2026-11-29)
+# ... the tone is answered with 8 twins; with 3 every effect would score 0
+# sigma on the held-out tests (they need 4) and it be "unexplained", exit 0:
+# a usage error for a static log that is attributed
 json "$T/vt.json" '[(e["effect"], e["channels"]) for e in j["verdict"]["effects"]] == [("vibration", ["gx"])]' &&
     pass "the tone answered with 8 twins" || fail "tone verdict: $(cat "$T/pyerr")"
 expect_exit 2 "a static log with --seeds 3" "$H" simgap "$T/vt.csv" --quiet --seeds 3
@@ -226,8 +226,7 @@ expect_exit 1 "CSV with text at line 302" "$H" simgap "$T/tx2.csv" --quiet --see
 expect_err "^harness simgap: error: .*tx2.csv:302: " "text in the CSV: error line with FILE:LINE"
 [ -s "$T/tx2.json" ] && pass "text in the CSV: JSON still written" || fail "text in the CSV: no JSON"
 # the JSON says the input stopped early, as replay's, info's and psd's do
-# (it had no key for it: a log cut at a bad line read as a whole one; the
-# sgreport review, 2026-11-29)
+# (without a key for it a log cut at a bad line reads as a whole one)
 json "$T/tx2.json" 'j["complete"] is False and "tx2.csv:302" in j["error"] and j["log"]["samples"] == 300' &&
     pass "text in the CSV: JSON complete false, error names FILE:LINE" || fail "text in the CSV: JSON complete/error: $(cat "$T/pyerr")"
 head -c 50000 "$(dirname "$0")/../../vectors/walk.bin" > "$T/trunc.bin"
@@ -235,9 +234,9 @@ expect_exit 1 "truncated .bin" "$H" simgap "$T/trunc.bin" --quiet --seeds 4
 expect_err "^harness simgap: error: .*trunc.bin: truncated" "truncated .bin: error line"
 
 # a static log above 1 kHz whose AR(1) time is near the catalogue's 1 ms:
-# the baseline fit's time grid began at one sample (0.25 ms), the fitted
-# 0.9995 ms was refused by the simulator and every twin failed ("twin
-# simulation failed on channel ax", exit 1; a review)
+# were the baseline fit's time grid to begin at one sample (0.25 ms), the
+# fitted 0.9995 ms would be refused by the simulator and every twin fail
+# ("twin simulation failed on channel ax", exit 1)
 "$H" sim --motion stand:30 --rate 4000 --profile mtx --effect ar1:tau_s=0.001:sigma=0.05 --seed 3 --out "$T/hr.csv" >/dev/null 2>&1 || fail "sim 4 kHz"
 expect_exit 0 "static log at 4 kHz with an AR(1) of 1 ms" "$H" simgap "$T/hr.csv" --static --quiet --seeds 6 --json "$T/hr.json"
 json "$T/hr.json" 'all(c["baseline"]["ar1_tau_s"] >= 0.001 and c["baseline"]["ar1_sigma"] > 0.04 for c in j["channels"])' &&
@@ -260,8 +259,7 @@ json "$T/q.json" 'abs(j["effects"][0]["channels"][0]["params"]["lsb"] / 0.001 - 
 json "$T/q.json" '[c["channel"] for c in j["channels"] if c["gap_significant"]] == ["gz"] and any(l["channel"] == "gz" and l["domain"] == "lattice" for l in j["locations"])' &&
     pass "gap located on gz, lattice domain" || fail "locations: $(cat "$T/pyerr")"
 # a lattice location's ratio is real - twin of the lattice score, as for the
-# time domain (docs/simgap.md called it real/twin until 2026-11-29; the
-# sgreport review)
+# time domain (docs/simgap.md, not real/twin)
 json "$T/q.json" 'len([l for l in j["locations"] if l["domain"] == "lattice"]) >= 1 and all(abs(l["ratio"] - (p["real"] - p["twin"])) < 1e-6 * (1 + abs(l["ratio"])) for l in j["locations"] if l["domain"] == "lattice" for c in j["channels"] if c["channel"] == l["channel"] for p in c["points"]["full"] if p["domain"] == "lattice")' &&
     pass "lattice location: ratio is real - twin" || fail "lattice location ratio: $(cat "$T/pyerr")"
 json "$T/q.json" 'all(c["attribution"]["within_noise"] for c in j["channels"])' &&
@@ -269,7 +267,7 @@ json "$T/q.json" 'all(c["attribution"]["within_noise"] for c in j["channels"])' 
 # the forward selection stops once the held-out gap is within noise
 # (docs/simgap.md, "Stopping rule" (a)): gz, explained by quant at its first
 # step, has no second one (with the rule read from the third step on, a
-# hand-made mutant of 2026-11-29, gz had two and every test passed)
+# hand-made mutant, gz has two, and without this check every test passes)
 json "$T/q.json" 'j["channels"][5]["channel"] == "gz" and len(j["channels"][5]["attribution"]["steps"]) == 1' &&
     pass "no step after the held-out gap is explained" || fail "steps after within noise: $(cat "$T/pyerr")"
 json "$T/q.json" 'j["split"]["method"].startswith("sandwich") and all(abs(cd["z"] - (cd["z_held_out_middle"] + cd["z_held_out_ends"]) / 2 ** 0.5) < 1e-6 * (1 + abs(cd["z"])) for c in j["channels"] for s in c["attribution"]["steps"] for cd in s["candidates"] if cd["simulated"] and cd["z_held_out_ends"] is not None) and any(cd["effect"] == "quant" and cd["selected"] and cd["z_held_out_ends"] is not None and cd["z_held_out_middle"] > 0 and cd["z_held_out_ends"] > 0 for s in j["channels"][5]["attribution"]["steps"] for cd in s["candidates"])' &&
@@ -350,18 +348,18 @@ json "$T/w.json" 'j["log"]["domain"] == "walk" and j["log"]["domain_from"] == "d
 [ -s "$T/wp/innovations.png" ] && pass "innovation plot" || fail "innovation plot: $(ls "$T/wp" 2>&1)"
 # the split's blocks are timed by the log's stamps, as the navigation
 # windows are: with 15-25 s cut out, the held-out segment's first sample
-# (index 1800 of 3001) is at 28 s, where index / rate said 18 s until
-# 2026-11-29 (the sgreport review); too short a walk, but the JSON is written
+# (index 1800 of 3001) is at 28 s, where index / rate would say 18 s; too
+# short a walk, but the JSON is written
 awk -F, 'NR == 1 || $1 < 15 || $1 >= 25' "$T/w.csv" > "$T/wgap.csv"
 "$H" simgap "$T/wgap.csv" --quiet --seeds 3 --json "$T/wgap.json" >/dev/null 2>&1
 json "$T/wgap.json" 'j["split"]["held_out"][0]["samples"] == 1201 and abs(j["split"]["held_out"][0]["start_s"] - 28.0) < 1e-6 and j["split"]["fit"][0]["end_s"] == j["split"]["held_out"][0]["start_s"] and abs(j["split"]["held_out"][0]["end_s"] - 40.01) < 1e-6' &&
     pass "walk with a gap: the split's times are the stamps'" || fail "split times: $(cat "$T/pyerr")"
-# and its duration is the stamps' span plus a period (n / rate said 30.01 s
-# until 2026-11-29, in the JSON and the summary's first line; the sgreport review)
+# and its duration is the stamps' span plus a period (not n / rate, 30.01 s,
+# in the JSON and the summary's first line)
 json "$T/wgap.json" 'abs(j["log"]["duration_s"] - 40.01) < 1e-6 and j["log"]["samples"] == 3001' &&
     pass "walk with a gap: its duration from the stamps" || fail "duration: $(cat "$T/pyerr")"
 # an option of the other domain is said to be ignored, not dropped silently
-# (--contiguous on a walk, --closed on a static log; a review, 2026-11-29)
+# (--contiguous on a walk, --closed on a static log)
 expect_exit 0 "walk with --contiguous" "$H" simgap "$T/w.csv" --quiet --seeds 3 --contiguous
 expect_err "--contiguous is for static logs .*ignored on a walk" "--contiguous on a walk said to be ignored"
 # the same walk with its accelerometer in g: named before any work, exit 1
@@ -370,8 +368,8 @@ awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2
 expect_exit 1 "walk in g" "$H" simgap "$T/wg.csv" --quiet --seeds 4
 expect_err "not in m/s^2 but in g (give --units accel=g)" "a walk in g is named as such, with the --units item"
 # the same walk (in rad/s) read with --units gyro=deg/s: 57.3 times too small, a walk that never turns faster
-# than 0.75 rad/s, detected as static (its rates stay below 1 rad/s) and analysed as one without a word until
-# 2026-11-30 (the units review); now named as replay names it: a warning of the static analysis, and with --walk
+# than 0.75 rad/s, detected as static (its rates stay below 1 rad/s), must not be analysed as one without a word;
+# named as replay names it: a warning of the static analysis, and with --walk
 # an error before any work, exit 1
 expect_exit 0 "walk in rad/s read with gyro=deg/s" "$H" simgap "$T/w.csv" --quiet --seeds 4 --units gyro=deg/s
 expect_err "the log is in rad/s already? (read as deg/s by --units gyro=deg/s: leave gyro=deg/s out)" \
@@ -381,9 +379,9 @@ expect_exit 1 "walk in rad/s read with gyro=deg/s, --walk" "$H" simgap "$T/w.csv
 expect_err "the log is in rad/s already? (read as deg/s by --units gyro=deg/s: leave gyro=deg/s out)" \
     "simgap --walk: a walk in rad/s read with gyro=deg/s is named"
 # a static log with its gyro in deg/s: its noise of tenths of a "rad/s"
-# reached 1 rad/s within every second, so it was detected as a walk without
-# a stance and answered "too short" for its stances (exit 1; found by the
-# generalisation check, 2026-11-29): now static, with a warning naming deg/s
+# reaches 1 rad/s within every second, so it must not be detected as a walk
+# without a stance and answered "too short" for its stances (exit 1): it is
+# static, with a warning naming deg/s
 "$H" sim --motion stand:30 --rate 100 --profile mtx --seed 3 --out "$T/sd.csv" >/dev/null 2>&1 || fail "sim static for deg/s"
 awk -F, 'NR == 1 { print; next } { printf "%s,%s,%s,%s,%.7g,%.7g,%.7g\n", $1, $2, $3, $4, $5 * 57.29577951308232, $6 * 57.29577951308232, $7 * 57.29577951308232 }' \
     "$T/sd.csv" > "$T/sdeg.csv"
@@ -395,33 +393,33 @@ expect_err "spreads by 0.[0-9]* rad/s RMS .* probably in deg/s (give --units gyr
 expect_exit 0 "the same static log in rad/s" "$H" simgap "$T/sd.csv" --quiet --seeds 4 --max-effects 0
 if grep -q "deg/s" "$T/err"; then fail "a static gyro in rad/s named as deg/s"; else pass "no deg/s warning on a static gyro in rad/s"; fi
 # the same static log with its time column in milliseconds (100 Hz read as
-# 0.1 Hz): analysed at 0.1 Hz without a word until 2026-11-29, where allan
-# and psd name the unit; now a warning, the status unchanged
+# 0.1 Hz): not analysed at 0.1 Hz without a word, as allan and psd name the
+# unit; a warning, the status unchanged
 awk -F, 'NR == 1 { print; next } { printf "%.6f,%s,%s,%s,%s,%s,%s\n", $1 * 1000, $2, $3, $4, $5, $6, $7 }' "$T/sd.csv" > "$T/sdms.csv"
 expect_exit 0 "static log with its time in milliseconds" "$H" simgap "$T/sdms.csv" --quiet --seeds 4 --max-effects 0
 expect_err "the samples are 10 s apart (0.1 Hz): are the time stamps in seconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "a static log's time in milliseconds is named, with the --units item"
-# the other way: read with --units time=ns, 1e6 times too fast (100 MHz), analysed without a word until
-# 2026-11-30 (the units review); now the same warning names the unit that fits
+# the other way: read with --units time=ns, 1e6 times too fast (100 MHz), not analysed without a word: the
+# same warning names the unit that fits
 expect_exit 0 "static log with its time in milliseconds, read as ns" "$H" simgap "$T/sdms.csv" --quiet --seeds 4 \
     --max-effects 0 --units time=ns
 expect_err "the samples are 1e-08 s apart (1e+08 Hz): are the time stamps in nanoseconds? (they look like milliseconds, a 100 Hz log: give --units time=ms)" \
     "a static log's ms stamps read as ns are named, with the --units item"
 # the static log stamped in bursts (packets of 4 samples stamped 5 us apart, every 40 ms: 100 Hz over the log), in
-# us read as such: simgap warned "are the time stamps in microseconds? (they look like milliseconds, a 200 Hz log:
-# give --units time=ms)", 1000 times too slow (the units review, 2026-11-30); replay's test of the span now
+# us read as such: simgap must not warn "are the time stamps in microseconds? (they look like milliseconds, a 200 Hz
+# log: give --units time=ms)", 1000 times too slow; replay's test of the span
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 40000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
     "$T/sd.csv" > "$T/sdburst.csv"
 expect_exit 0 "static log stamped in bursts, read as us" "$H" simgap "$T/sdburst.csv" --quiet --seeds 4 --max-effects 0 \
     --units time=us
 if grep -q "are the time stamps in\|look like" "$T/err"; then fail "simgap: stamps in bursts told a time unit: $(cat "$T/err")"; else
     pass "simgap: stamps in bursts (100 Hz over the log) told no time unit"; fi
-# ... and it is warned of the bursts as allan and psd warn (the taus at 1 / the median interval, 200 kHz; without
-# a word until 2026-11-30), the rate of the whole packets named for --input-rate
+# ... and it is warned of the bursts as allan and psd warn (the taus at 1 / the median interval, 200 kHz; not
+# without a word), the rate of the whole packets named for --input-rate
 expect_err "harness simgap: warning: $T/sdburst.csv: the time stamps come in bursts (samples stamped close together as a logger reads them?): 1 / their median interval gives 200000 Hz, but the .* samples span .* s, 100 Hz; the taus and frequencies are read at 2e+05 Hz, the stamps' rate, not the sampling rate: leave the time column out and give --input-rate 100 (docs/harness.md, \"Time stamps in bursts\")" \
     "a static log stamped in bursts: warned, the stamps' rate said, --input-rate 100 named"
 # the same stamps in a .bin whose header states the rate (flag bit 0, nominal): simgap reads at the stated rate,
-# and said "not the sampling rate" of 100 Hz too, which the span keeps (until 2026-12-01); now the rate the file
+# and does not say "not the sampling rate" of 100 Hz, which the span keeps; the rate the file
 # states is named, kept or not by the span (50 Hz stated: not kept, --input-rate 100 named)
 "$H" convert "$T/sdburst.csv" "$T/sdburst.bin" --units time=us >/dev/null 2>&1 || fail "convert the bursts to .bin"
 bin_rate "$T/sdburst.bin" "$T/sdnom.bin" 100 && bin_rate "$T/sdburst.bin" "$T/sdnom50.bin" 50
@@ -430,13 +428,13 @@ expect_err "harness simgap: warning: $T/sdnom.bin: the time stamps come in burst
     "a static log stamped in bursts at its stated rate: the rate and its source said, no remedy"
 grep -q "not the sampling rate" "$T/err" && fail "stated rate kept by the span: told 'not the sampling rate'" || pass "stated rate kept by the span: not told 'not the sampling rate'"
 expect_exit 0 "static log stamped in bursts, the .bin's stated 50 Hz" "$H" simgap "$T/sdnom50.bin" --quiet --seeds 4 --max-effects 0
-# (a .bin has no time column to leave out and ignores --input-rate: the conversion to CSV without it is named, where
-# "leave the time column out" was until 2026-12-01; tests/cli/test_bursts.sh follows it)
+# (a .bin has no time column to leave out and ignores --input-rate: the conversion to CSV without it is named, not
+# "leave the time column out"; tests/cli/test_bursts.sh follows it)
 expect_err "100 Hz; the taus and frequencies are read at 50 Hz, the rate the file states, which the samples' span does not keep: convert it to CSV without the time column (bin/harness convert LOG out.csv; cut -d, -f2- out.csv > in.csv) and give in.csv --input-rate 100 (docs/harness.md, \"Time stamps in bursts\")" \
     "a static log stamped in bursts at a stated rate the span does not keep: said, the conversion and --input-rate 100 named"
-# a walk stamped in bursts (vectors/walk.bin, 400 Hz, in packets of 4 samples 5 us apart every 10 ms) was read at
+# a walk stamped in bursts (vectors/walk.bin, 400 Hz, in packets of 4 samples 5 us apart every 10 ms) would be read at
 # 200 kHz, detected as static (its one-second windows 200,000 samples long) and analysed as one, exit 0; with one
-# stamp per packet it was navigated and twinned at 100 Hz. Both are now refused as replay refuses stamps in bursts,
+# stamp per packet navigated and twinned at 100 Hz. Both are refused as replay refuses stamps in bursts,
 # before the diagnosis, with --walk too; the remedy (no time column, --input-rate 400) is diagnosed as a 400 Hz walk
 "$H" convert vectors/walk.bin "$T/bw.csv" >/dev/null 2>&1 || fail "convert the walk to CSV (bursts)"
 awk -F, 'NR == 1 { print; next } { i = NR - 2; printf "%d,%s,%s,%s,%s,%s,%s\n", (int(i / 4) + 1) * 10000 + 5 * (i % 4), $2, $3, $4, $5, $6, $7 }' \
@@ -489,11 +487,11 @@ if [ -n "$D" ] && [ -f "$D/xio_ngimu_gait/long_walk.csv" ]; then
     json "$T/xl.json" 'any(c["effect"] == "quant" and c["selected"] and c["G_held_out"] < j["navigation"]["steps"][0]["G_held_out_before"] for c in j["navigation"]["steps"][0]["candidates"])' &&
         pass "gy's quantiser lowers the held-out navigation gap" || fail "NGIMU held-out gap: $(cat "$T/pyerr")"
     # a walk's lattice location gives real - twin of its normal score, as a
-    # static log's does (it gave exp of it: 2e78 on the short walk; a review)
+    # static log's does (not exp of it: 2e78 on the short walk)
     json "$T/xl.json" 'all(0 < l["ratio"] < 1e4 for l in j["locations"] if l["domain"] == "lattice") and any(l["domain"] == "lattice" for l in j["locations"])' &&
         pass "a walk's lattice location: real - twin" || fail "walk lattice ratio: $(cat "$T/pyerr")"
     # a later step of the walk's selection ran no twins before it: its
-    # held-out G is null, not 0 (a review)
+    # held-out G is null, not 0
     expect_exit 0 "GX2 walk 2" "$H" simgap "$D/openshoe_gx2/Measurement_100521_2_data_inert.txt" --closed --quiet --seeds 4 --json "$T/g2.json"
     json "$T/g2.json" 'len(j["navigation"]["steps"]) > 1 and j["navigation"]["steps"][0]["G_held_out_before"] > 0 and all(s["G_held_out_before"] is None for s in j["navigation"]["steps"][1:])' &&
         pass "later walk steps: held-out G null" || fail "walk steps G: $(cat "$T/pyerr")"
@@ -502,10 +500,10 @@ else
 fi
 # stances are counted as the data set marks them: the stance detector
 # flickers at some landings, and the pieces of one stance (0.03 s apart,
-# swings 0.8-0.9 s) counted as two. The vicon walk 11-22-03's stride file
-# (the source's own stance marks) has 23 stances, 9 from the held-out
-# segment's start (t >= 19.48 s): too short; the pieces made 25 and 10 and a
-# confident answer (a review)
+# swings 0.8-0.9 s) must not count as two. The vicon walk 11-22-03's stride
+# file (the source's own stance marks) has 23 stances, 9 from the held-out
+# segment's start (t >= 19.48 s): too short; the pieces would make 25 and 10
+# and a confident answer
 V="$D/pyshoe_vicon_llio/vicon_3dmgx3/2017-11-22-11-22-03"
 if [ -n "$D" ] && [ -f "${V}_imu.csv" ]; then
     cp "${V}_strides_gcp.csv" "$T/vs.csv"
@@ -520,7 +518,7 @@ expect_exit 1 "short walk" "$H" simgap "$T/w2.csv" --quiet --seeds 4 --json "$T/
 json "$T/w2.json" 'j["verdict"]["answer"] == "too-short" and "stance" in j["too_short"]' &&
     pass "short walk: too few stances said" || fail "short walk JSON: $(cat "$T/pyerr")"
 # the mean first-update NIS of 10 stances (chi2_30 / 30) is known to 0.560 -
-# 1.566 at 95 % (scipy chi2.ppf), not to +-50 % as it said (a review)
+# 1.566 at 95 % (scipy chi2.ppf), not to +-50 %
 expect_err "of fewer than 10 is not known to -44 % / +57 % (95 %)" "short walk: the interval of 10 stances"
 
 # the domain forced against the detection is said in the summary (the JSON
@@ -528,30 +526,31 @@ expect_err "of fewer than 10 is not known to -44 % / +57 % (95 %)" "short walk: 
 expect_exit 0 "short walk forced static" "$H" simgap "$T/w2.csv" --static --quiet --seeds 4
 expect_out "^domain: static as given (--static); the log looks like a walk" "forced domain said against the detected one"
 
-# a profile whose name holds a quote: the plots are written (it ended the
-# gnuplot string, exit 3, psd.png and z.png missing; a review, 2026-11-28)
+# a profile whose name holds a quote: the plots are written (the quote must
+# not end the gnuplot string: exit 3, psd.png and z.png missing)
 sed 's/^name = .*/name = Bob'"'"'s MEMS/' docs/profiles/generic-mems.profile > "$T/bob.profile"
 expect_exit 0 "a profile name with a quote, --plot" "$H" simgap "$T/m.csv" --quiet --seeds 4 --max-effects 0 --profile "$T/bob.profile" --plot "$T/bobp"
 [ -s "$T/bobp/allan.png" ] && [ -s "$T/bobp/psd.png" ] && [ -s "$T/bobp/z.png" ] && pass "plots with a quoted profile name" || fail "quoted profile plots: $(ls "$T/bobp" 2>&1)"
 # a walk without a stance (a spinning foot): too short, exit 1, and the
-# innovation plot says so instead of failing (exit 3; a review)
+# innovation plot says so instead of failing (exit 3)
 "$H" sim --motion stand --duration 60 --profile mtx --out "$T/sp0.csv" >/dev/null 2>&1 || fail "sim for spin"
 awk -F, 'BEGIN { OFS = "," } NR == 1 { print; next } $1 < 30 { $7 = $7 + 3; print }' "$T/sp0.csv" > "$T/spin.csv"
 expect_exit 1 "a walk without a stance, --plot" "$H" simgap "$T/spin.csv" --walk --quiet --plot "$T/spinp" --json "$T/spin.json"
 [ -s "$T/spinp/innovations.png" ] && pass "innovation plot without a stance" || fail "no innovation plot: $(ls "$T/spinp" 2>&1)"
 # ... and said to be too short; its navigation points are not compared
-# (there is no innovation: they were ln 1e-30, located as nis_first 30 sigma
-# below the twin, ratio 1e-23; with fewer seeds, and without a stance in the
-# fit segment the twins get no noise, the walk was refused as "the twins do
-# not vary (... a noise-free log?)" with no summary or JSON; a review)
+# (there is no innovation: compared, they would be ln 1e-30, located as
+# nis_first 30 sigma below the twin, ratio 1e-23; with fewer seeds, and
+# without a stance in the fit segment the twins get no noise, the walk must
+# not be refused as "the twins do not vary (... a noise-free log?)" with no
+# summary or JSON)
 expect_err "^harness simgap: error: .*spin.csv: too short for a confident answer: the held-out segment has 0 stances" "a walk without a stance: too short, said"
 json "$T/spin.json" 'j["verdict"]["answer"] == "too-short" and j["navigation"]["stances_full"] == 0 and all(l["domain"] != "nav" for l in j["locations"])' &&
     pass "a walk without a stance: no navigation point located" || fail "no-stance JSON: $(cat "$T/pyerr")"
 # a walk with a 5 s gap in its samples: the innovation plot draws each stance
-# at its time, as the summary's windows count it. It drew the sample index
+# at its time, as the summary's windows count it, not at the sample index
 # over the mean rate, every stance after the gap 5 s early (the last at 30.2
 # s instead of 35.2 s, before the last window's start, 33.4 s, in which the
-# JSON has a stance begin; a review). A stand-in gnuplot keeps the script.
+# JSON has a stance begin). A stand-in gnuplot keeps the script.
 "$H" sim --motion walk --duration 40 --rate 100 --profile mtx --seed 4 --out "$T/wg0.csv" >/dev/null 2>&1 || fail "sim walk for a gap"
 awk -F, 'NR == 1 || $1 < 15 || $1 >= 20' "$T/wg0.csv" > "$T/wgap.csv"
 fake_gnuplot "$T/fakegp"
@@ -563,7 +562,7 @@ json "$T/wgap.json" '(w := [p for p in j["navigation"]["gap"]["full"]["points"] 
 # critical value is the scaled chi-square's with the null's mean m and sd s,
 # G_crit = m chi2.ppf(1 - alpha / 4, k) / k, k = 2 m^2 / s^2 (section 3: a
 # walk's family is its four tests; scipy).
-# The walk's gap had no G_null_sd (a review of docs/simgap.md, 2026-12-02)
+# The walk's gap has a G_null_sd (docs/simgap.md)
 json "$T/wgap.json" '(c := __import__("scipy.stats").stats.chi2) and (a := j["settings"]["alpha"] / 4) and all((g := j["navigation"]["gap"][seg])["G_null_sd"] > 0 and abs(g["G_crit"] - g["G_null_mean"] * c.ppf(1 - a, (k := 2 * g["G_null_mean"] ** 2 / g["G_null_sd"] ** 2)) / k) <= 1e-6 * g["G_crit"] for seg in j["navigation"]["gap"] if j["navigation"]["gap"][seg]["G_crit"] is not None) and len([s for s in j["navigation"]["gap"].values() if s["G_crit"] is not None]) >= 2' &&
     pass "walk gap: G_null_sd, and G_crit from it" || fail "walk gap null sd: $(cat "$T/pyerr")"
 # a walk of a few strides whose fit segment holds no stance (6 s; the
@@ -574,9 +573,9 @@ expect_exit 1 "a walk of a few strides" "$H" simgap "$T/w6.csv" --quiet --seeds 
 expect_err "^harness simgap: error: .*w6.csv: too short for a confident answer" "a walk of a few strides: too short, said"
 json "$T/w6.json" '(n := j["navigation"])["stances_fit"] == 0 and n["gap"]["fit"]["G_crit"] is None and all(p["z"] is None for p in n["gap"]["fit"]["points"])' &&
     pass "a walk of a few strides: the fit segment's points not compared" || fail "few strides JSON: $(cat "$T/pyerr")"
-# its window 4-5 s, where the real has a stance begin and no twin one, was
-# compared with the twins' placeholder ln 1e-30 (sd 1e-12): located 13.5
-# sigma above the twin (a review); now not compared
+# its window 4-5 s, where the real has a stance begin and no twin one, is
+# not compared with the twins' placeholder ln 1e-30 (sd 1e-12), which would
+# locate it 13.5 sigma above the twin
 json "$T/w6.json" 'all(l.get("kind") != "window" for l in j["locations"]) and any(p["kind"] == "window" and p["z"] is None and p["x_lo"] >= 3.9 for p in j["navigation"]["gap"]["full"]["points"])' &&
     pass "a walk of a few strides: a window without a twin stance not compared" || fail "few strides window: $(cat "$T/pyerr")"
 
@@ -595,21 +594,21 @@ json "$T/stk.json" 'j["confident"] and j["constant_channels"] == [{"channel": "a
     pass "stuck channel: the others diagnosed and attributed" || fail "stuck channel JSON: $(cat "$T/pyerr")"
 [ -s "$T/stkplot/allan.png" ] && [ -s "$T/stkplot/psd.png" ] && [ -s "$T/stkplot/z.png" ] &&
     pass "stuck channel: plots written" || fail "stuck channel plots"
-# --quiet drops the progress, not the warnings (it hid this one; a review)
+# --quiet drops the progress, not the warnings (this one among them)
 expect_exit 0 "stuck ax, --quiet" "$H" simgap "$T/stk.csv" --quiet --seeds 3 --max-effects 0
 expect_err "channel ax holds one value" "stuck channel: warned under --quiet"
 # a stuck channel on a walk is no saturation (every sample its own extreme:
-# it was answered saturation at the stuck value; a review)
+# not answered saturation at the stuck value)
 awk -F, 'BEGIN { OFS = "," } NR > 1 { $5 = "0.002" } { print }' "$T/w.csv" > "$T/wstk.csv"
 expect_exit 0 "walk with a stuck gx" "$H" simgap "$T/wstk.csv" --quiet --seeds 4 --json "$T/wstk.json"
 json "$T/wstk.json" 'all(s["effect"] != "saturation" for s in j["navigation"]["selected"])' &&
     pass "a stuck channel is not saturation" || fail "stuck walk channel: $(cat "$T/pyerr"; grep verdict "$T/out")"
 # progress (not a terminal: a line per tenth of the work, after the first
-# second): never backwards, and 100 % only at the end. It was reached a third
-# into a one-hour log's run and then stayed silent (the estimate counted four
+# second): never backwards, and 100 % only at the end, not reached a third
+# into a one-hour log's run and then silent (an estimate counting four
 # candidates per channel; forward selection simulates up to the prescreen's
 # three + lattice + line per step and fold, three steps); on two minutes of
-# the ADIS16405 it was printed at 3.2 s of 4.0.
+# the ADIS16405 such an estimate prints it at 3.2 s of 4.0.
 progress_ok() { # progress_ok STDERR-FILE
     "$PY" - "$1" <<'PY'
 import re, sys
@@ -643,9 +642,9 @@ expect_err "^harness simgap: error: .*every channel holds one value" "every chan
 # held-out middle; or over each of the fit segment's ends, at two values) has
 # nothing to fit or to test there: it is said as such, not analysed, counted
 # as a gap no catalogue effect explains, and the other channels are
-# diagnosed. It made the whole log "too short" ("within +-25 % over only
-# 0.00 decades", "fewer than 4 Allan points (channel ax)"), exit 1, with no
-# attribution on any channel (a review). Samples 3600-8400 are the middle.
+# diagnosed. It must not make the whole log "too short" ("within +-25 % over
+# only 0.00 decades", "fewer than 4 Allan points (channel ax)"), exit 1, with
+# no attribution on any channel. Samples 3600-8400 are the middle.
 awk -F, 'BEGIN { OFS = "," } NR > 1 && NR - 2 >= 3598 && NR - 2 < 8404 { $2 = "0.25" } { print }' "$T/st.csv" > "$T/stm.csv"
 expect_exit 0 "ax stuck over the held-out middle" "$H" simgap "$T/stm.csv" --quiet --seeds 6 --json "$T/stm.json" --plot "$T/stmplot"
 expect_err "^harness simgap: warning: .*channel ax does not vary within the held-out segment (0.25 m/s^2" "stuck middle: warned"
@@ -680,7 +679,7 @@ expect_exit 0 "walk with scale" "$H" simgap "$T/ws.csv" --quiet --seeds 6 --json
 cp "$T/out" "$T/ws.out"
 json "$T/ws.json" '(s := j["navigation"]["selected"][0])["effect"] == "scale" and (p := s["params"][0])["channel"] == "gz" and abs(p["value"] - 0.4) < 0.04 and s["explained"] >= 0.7' &&
     pass "walk: scale on gz, the sensor's value, held-out excess explained" || fail "walk scale JSON: $(cat "$T/pyerr")"
-# the walk's gap locations are in the JSON's locations[] (they were printed
+# the walk's gap locations are in the JSON's locations[] (not printed
 # only), the n-frame axis named; every candidate has indistinguishable[] and
 # trajectory_value (null for a family that is not linear)
 json "$T/ws.json" 'len(j["locations"]) == sum(1 for l in open(sys.argv[1].replace(".json", ".out")) if l.startswith("  gap: ")) > 0 and all(l["domain"] in ("nav", "lattice") and l["segment"] == "full" for l in j["locations"]) and all(l["axis"] in ("x", "y", "z") for l in j["locations"] if l.get("kind") == "axis")' &&
@@ -688,20 +687,20 @@ json "$T/ws.json" 'len(j["locations"]) == sum(1 for l in open(sys.argv[1].replac
 json "$T/ws.json" 'all(isinstance(c["indistinguishable"], list) and all("trajectory_value" in p for p in c["params"]) for st in j["navigation"]["steps"] for c in st["candidates"])' &&
     pass "walk: candidates' documented keys present" || fail "walk candidate keys: $(cat "$T/pyerr")"
 # the summary's spread of a navigation point is that of its log (z's
-# denominator), said as such: "twin 0.6416 (sd 0.0815)" read as +-0.08 NIS
-# for a spread of 8 % (a review); whiteness is no log
+# denominator), said as such: "twin 0.6416 (sd 0.0815)" alone would read as
+# +-0.08 NIS for a spread of 8 %; whiteness is no log
 grep -q "^    nis_first .*(sd of ln [0-9.e+-]*) z" "$T/ws.out" && grep -q "^    whiteness .*(sd [0-9.e+-]*) z" "$T/ws.out" &&
     pass "walk summary: the spread of the log said as such" || fail "walk summary sd: $(grep -E 'nis_first|whiteness' "$T/ws.out")"
 
 # --closed on a closed loop (the truth ends where it started) with a 2 % az
 # scale error: the real filter pulls its position back at every stance, and
 # the twins' drift is their own navigation error against their truth, the
-# integral of the velocity their signals were built from. It was measured
-# against the real filter's posterior positions instead, which carry those
-# corrections: every twin then "drifted" 0.58 m vertically (ln sd 0.024,
+# integral of the velocity their signals were built from. Measured against
+# the real filter's posterior positions instead, which carry those
+# corrections, every twin would "drift" 0.58 m vertically (ln sd 0.024,
 # the real filter's summed corrections; on GX2 run 2 0.61 m, where replay's
-# trajectory CSV gives 0.67 m for the sum), and the summary said the real
-# walk drifts 4.7 sigma less than its twins (a review). twin: ln m, -1.61 = ln 0.2
+# trajectory CSV gives 0.67 m for the sum), and the summary say the real
+# walk drifts 4.7 sigma less than its twins. twin: ln m, -1.61 = ln 0.2
 "$H" sim --motion loop --duration 60 --rate 200 --profile mtx --seed 3 --effect scale:ch=az:sf=0.02 --out "$T/loop.csv" >/dev/null 2>&1 || fail "sim closed loop"
 expect_exit 0 "closed loop, --closed" "$H" simgap "$T/loop.csv" --closed --quiet --seeds 4 --json "$T/loop.json"
 json "$T/loop.json" '(d := [p for p in j["navigation"]["gap"]["full"]["points"] if p["kind"] == "drift_v"][0]) and d["twin"] < -1.61 and abs(d["z"]) < j["navigation"]["gap"]["full"]["z_crit"]' &&
@@ -757,7 +756,7 @@ expect_exit 1 "one held-out stance" "$H" simgap "$T/one.csv" --walk --seeds 3 --
 expect_err "has 1 stance with zero-velocity updates" "one stance in the singular"
 
 # --- --quiet ("no progress indicator") holds for the reading of the log too:
-# it printed "simgap: reading: 52 %" (the review of 2026-11-29). The run is
+# not "simgap: reading: 52 %". The run is
 # stopped 0.1 s in, while it reads 2 M lines, for 1.3 s of wall time, after
 # which progress would show; a stuck log then exits at once. Without
 # --quiet the same run shows the progress (the control: a machine that reads

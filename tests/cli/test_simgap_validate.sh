@@ -13,7 +13,7 @@ trap 'rm -rf "$T"' EXIT
 FAST="--static-only --duration 60 --rate 50 --seeds 4"
 
 # a static case's held-out tests need 4 twins: with 3 no effect could ever be
-# accepted (simgap refuses it since the simgap review; the validation took it)
+# accepted (simgap refuses it, and the validation must too)
 expect_exit 2 "static cases with 3 twins" "$H" simgap-validate --cases 1 --static-only --duration 60 --rate 50 --seeds 3
 expect_err "at least 4" "static cases with 3 twins: the minimum said"
 
@@ -29,8 +29,8 @@ grep -q "^case" "$T/out" && fail "unwritable --markdown: the cases ran first" ||
     --json "$T/v.json" --markdown "$T/v.md"
 [ -s "$T/v.json" ] && [ -s "$T/v.md" ] && pass "JSON and Markdown written" || fail "outputs missing"
 
-# --seed: sim's range and words (it was [0, 2e9], "not an integer"; a
-# review, 2026-12-02); the case generator's seed is a uint32_t
+# --seed: sim's range and words (not [0, 2e9], "not an integer"); the case
+# generator's seed is a uint32_t
 expect_exit 2 "--seed past 2^32 - 1" "$H" simgap-validate --cases 1 $FAST --seed 4294967296
 expect_err "^harness simgap-validate: error: --seed '4294967296' is not a whole number in \[0, 4294967295\]$" "--seed: sim's range and words"
 expect_exit 0 "--seed 4294967295, the last seed" "$H" simgap-validate --cases 1 $FAST --quiet --seed 4294967295 --json "$T/vseed.json"
@@ -42,21 +42,21 @@ expect_err "mag-range" "--mag-range with trailing text said"
 expect_exit 2 "--mag-range to infinity" "$H" simgap-validate --cases 1 $FAST --mag-range 1,inf
 expect_err "mag-range" "--mag-range to infinity said"
 # a magnitude beyond what the simulator accepts is a usage error that names
-# the case and the effect, before any case ran (it was exit 3, "cannot draw
-# a static case", after the cases before it had run, their results lost)
+# the case and the effect, before any case runs (not exit 3, "cannot draw
+# a static case", after the cases before it have run, their results lost)
 expect_exit 2 "--mag-range beyond the simulator's range" "$H" simgap-validate --cases 3 $FAST --effects control,ramp \
     --mag-range 1e6,1e6
 expect_err "mag-range .1e6,1e6.: wants LO,HI" "a magnitude range beyond 1000 said"
 grep -q "^case" "$T/out" && fail "magnitude beyond range: cases ran first" || pass "magnitude beyond range: said before any case ran"
 # ... and one the simulator refuses on these logs (a dropout probability of
 # 1000 x 10 events in 3000 samples): a usage error before the run, naming the
-# case and the parameter (it was exit 3 after the cases before it had run)
+# case and the parameter (not exit 3 after the cases before it have run)
 expect_exit 2 "--mag-range the simulator refuses" "$H" simgap-validate --cases 3 $FAST --effects control,dropout \
     --mag-range 1000,1000
 expect_err "case [0-9]*: dropout at .*dropout.prob .* outside the simulator's range" "the case, effect and parameter named"
 grep -q "^case" "$T/out" && fail "refused magnitude: cases ran first" || pass "refused magnitude: said before any case ran"
 # a log too short for a confident answer is no false alarm: 10 s at 10 Hz
-# gives "too-short" on every control (it was "static 4/4 false alarms
+# gives "too-short" on every control (not "static 4/4 false alarms
 # (100.0 %)" and the target "no")
 expect_exit 0 "controls on logs too short" "$H" simgap-validate --cases 4 --effects control --static-only \
     --duration 10 --rate 10 --seeds 4 --json "$T/ts.json"
@@ -72,16 +72,16 @@ expect_exit 0 "walks too short" "$H" simgap-validate --walk-only --cases 10 --wa
     --seeds 3 --json "$T/wts.json"
 json "$T/wts.json" 'len(j["results"]) == 10 and all(r["verdict"] == "too-short" for r in j["results"])' &&
     pass "the short walks are too-short" || fail "short walks: $(cat "$T/out")"
-# ... said why at the first such case, once (only the summary at the end
-# said so; a review, 2026-11-30)
+# ... said why at the first such case, once (not only in the summary at the
+# end)
 [ "$(grep -c "^ *too short for an answer: the held-out segment has .* stance.* (a longer --walk-duration gives one)$" "$T/out")" = 1 ] &&
     pass "the first too-short walk says why, once" || fail "too-short walks: no reason at the first: $(head -3 "$T/out")"
 json "$T/wts.json" 'all(r["answer"] == "none" and r["location_jaccard"] == 0 and r["param_rel_error"] is None
     for r in j["results"])' && pass "a too-short effect case is no answer" || fail "too-short scored: $(cat "$T/out")"
 expect_out_re "^motion +8 +0/8 +0/8 += +0\.0 % .* 0/8 +/ 0\.00 +0/0 +\(-\) +0/0 +\(-\)$" "too-short effect cases: no top-1, location or parameter in the summary ('-' for no median: it printed nan)"
-# ... and the summary says why (0/8 with every case line saying too-short,
-# and the target "no", without a word on it in the summary; a review,
-# 2026-11-30), in the Markdown too
+# ... and the summary says why (not 0/8 with every case line saying
+# too-short, and the target "no", without a word on it in the summary), in
+# the Markdown too
 expect_out "^too short for an answer: motion 8 of 8 (scored as misses: no top-1, location or parameter" \
     "too-short effect cases are counted in the summary"
 expect_exit 0 "walks too short, Markdown" "$H" simgap-validate --walk-only --cases 3 --walk-duration 20 --walk-rate 50 \
@@ -90,12 +90,11 @@ grep -q "^Too short for an answer: motion 3 of 3 (scored as misses" "$T/wts.md" 
     pass "too-short effect cases are counted in the Markdown" || fail "Markdown: $(grep -i 'short' "$T/wts.md")"
 
 # the terminal summary reads as a table: each count of the confusion matrix
-# and of the top-1 by magnitude under its column's name (the names ran on
-# one line after the title, the counts 4 characters apart: the 1 of a
-# misalign row stood under 'jumps'), no 'nan' for a case without a
+# and of the top-1 by magnitude under its column's name (not the names run
+# on one line after the title, the counts 4 characters apart, where the 1 of
+# a misalign row stands under 'jumps'), no 'nan' for a case without a
 # parameter or shrink, and a control has no multiple of a threshold or
-# location ('x1.83' and 'loc 0.00': it has no effect to locate; a review,
-# 2026-11-30)
+# location (not 'x1.83' and 'loc 0.00': it has no effect to locate)
 expect_exit 0 "a control and a line" "$H" simgap-validate --cases 2 --effects control,vibration $FAST \
     --markdown "$T/cv.md"
 if "$PY" - "$T/out" <<'PY'
@@ -161,12 +160,13 @@ json "$T/wc.json" 'j["cases"] == 3 and all(r["multiple_of_threshold"] < 1000 for
     if abs(r["values"][0]) >= 0.45)' && pass "a clipped walk magnitude's multiple is the one set" ||
     fail "clipped walk magnitudes: $(cat "$T/pyerr") $(cat "$T/out")"
 
-# a static case too big to hold (1e11 samples: it ran for ever) is a usage error; walk-only runs ignore the static size
+# a static case too big to hold (1e11 samples: it would run for ever) is a usage error; walk-only runs ignore the
+# static size
 expect_exit 2 "static case of 1e11 samples" "$H" simgap-validate --cases 1 --duration 1e6 --rate 1e5
 expect_err "samples per static case; at most 20000000" "the static case's size is bounded and said"
 
 # Ctrl-C stops the run before its next case and reports and writes the
-# cases run (they were lost: a full run takes 13 minutes); exit 130
+# cases run (not lost: a full run takes 13 minutes); exit 130
 "$H" simgap-validate --cases 40 $FAST --json "$T/i.json" --markdown "$T/i.md" >"$T/out" 2>"$T/err" &
 pid=$!
 k=0
@@ -180,8 +180,7 @@ grep -q "^simgap-validate: [0-9]* cases* (INCOMPLETE" "$T/out" && pass "the summ
     fail "summary: $(grep '^simgap-validate' "$T/out")"
 json "$T/i.json" 'j["complete"] is False and 1 <= j["cases"] < 40 and len(j["results"]) == j["cases"]' &&
     pass "interrupted run: JSON of the cases run, complete false" || fail "interrupted JSON: $(cat "$T/pyerr")"
-# and why, in `error` as the other commands' JSON (it had complete false
-# alone; the JSON review, 2026-11-30)
+# and why, in `error` as the other commands' JSON (not complete false alone)
 json "$T/i.json" 'j["error"].startswith("interrupted by SIGINT")' && pass "interrupted run: the JSON's error names the signal" ||
     fail "interrupted JSON's error: $(tr -d '\n\t' <"$T/i.json" | head -c 300)"
 grep -q "incomplete" "$T/i.md" && pass "interrupted run: the Markdown says incomplete" || fail "Markdown: $(grep '^Run' "$T/i.md")"
