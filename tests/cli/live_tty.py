@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """`harness live` with its standard error on a terminal: the status line is
 redrawn in place (a carriage return, no newline), and a warning that comes
-while one is drawn must start a line of its own. It was written after the
-status line, on the same line ("... | bad 0 lost 0   harness live: warning:
-bad frame: ..."), found by the live review of 2026-11-30.
+while one is drawn must start a line of its own, not follow the status line
+on the same line ("... | bad 0 lost 0   harness live: warning: bad frame:
+...").
 
 Usage (from tests/cli/test_live.sh): live_tty.py HARNESS SEAM OUTDIR
 Exit 0 when live behaved, 1 otherwise (the reason on stdout)."""

@@ -2,7 +2,7 @@
 """`harness live` on a tty that hangs up while its device node stays (a
 Bluetooth rfcomm link, a vhangup): the reads return 0 at once and poll says
 POLLHUP with POLLIN. live must end with exit 1 and a clear message, keeping
-the samples received, instead of looping (it did until 2026-11-27).
+the samples received, not loop on the empty reads.
 
 Usage (from tests/cli/test_live.sh): live_vhangup.py HARNESS SEAM OUTDIR
 Exit 0 when live behaved, 1 otherwise (the reason on stdout)."""
