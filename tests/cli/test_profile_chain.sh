@@ -40,9 +40,9 @@ then pass "the JSON's ar1_identified matches the profile's bound marks"; else fa
 # chance, not a bias. Over 120 seeds the ratio is 0.9996 (standard error 0.0007, the six channels' mean), the spread
 # per channel 1.65-2.06 % (1.93 % predicted), the six's mean 0.75 % (0.79 %), all six on one side in 3 seeds (3.75
 # expected), one channel beyond 4 sd (seed 114 gx, 0.919, the ADEV at m = 200 in numpy on its samples 0.918), and the
-# simulated noise's per-sample sd is N sqrt(f_s) to 0.02 % per channel (2026-12-02, `/usr/bin/python3
-# scripts/white_density_seeds.py --seeds 1-120`). Until then a bare 10 %, which a 4 % low bias on all six passed
-# (seed 7's values x 0.96: mean -5.4 %, fails the mean's 3.1 % now).
+# simulated noise's per-sample sd is N sqrt(f_s) to 0.02 % per channel (`/usr/bin/python3
+# scripts/white_density_seeds.py --seeds 1-120`). A bare 10 % would pass a 4 % low bias on all six (seed 7's values
+# x 0.96: mean -5.4 %), which the mean's 3.1 % fails.
 if /usr/bin/python3 - "$T/mtx.profile" <<'PY'
 import sys, math
 kv = {}

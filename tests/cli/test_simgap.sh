@@ -389,7 +389,7 @@ expect_exit 0 "static log with the gyro in deg/s" "$H" simgap "$T/sdeg.csv" --qu
 json "$T/sdeg.json" 'j["log"]["domain_detected"] == "static" and j["verdict"]["answer"] != "too-short"' &&
     pass "a static gyro in deg/s is detected as static" || fail "static deg/s domain: $(cat "$T/pyerr")"
 expect_err "spreads by 0.[0-9]* rad/s RMS .* probably in deg/s (give --units gyro=deg/s)" \
-    "a static gyro in deg/s is named, with the --units item (it said multiply by pi/180 until 2026-11-30)"
+    "a static gyro in deg/s is named, with the --units item"
 expect_exit 0 "the same static log in rad/s" "$H" simgap "$T/sd.csv" --quiet --seeds 4 --max-effects 0
 if grep -q "deg/s" "$T/err"; then fail "a static gyro in rad/s named as deg/s"; else pass "no deg/s warning on a static gyro in rad/s"; fi
 # the same static log with its time column in milliseconds (100 Hz read as

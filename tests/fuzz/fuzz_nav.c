@@ -3,7 +3,7 @@
  * Input: byte 0 selects options (bias model, lever, ZARU, threshold
  * detector, a still lead-in so that alignment happens, sample rate class;
  * bit 7 turns the cycle-scaled shortest ZUPT run, with its lock-in guard,
- * off: it is on by default since 2026-12-01, and bit 7 turned it on before);
+ * off: it is on by default);
  * then records of 13 bytes: a time code and six int16 values. Values map to
  * +-16 g and +-2000 deg/s except for special codes that inject NaN, +-Inf,
  * denormals, 1e30 and values just beyond a sensor's range; time codes give

@@ -34,9 +34,8 @@ def put(target, name, data):
 def nav_slow_gait():
     """A navigator seed (fuzz_nav.c) that reaches the cycle-scaled shortest
     ZUPT run and its lock-in guard: option byte AR(1) bias model, lever,
-    still lead-in, 100 Hz, min_zupt_cycle 0.025 (the default: bit 7 clear,
-    which until 2026-12-01 had to be set to turn it on); then seven 2 s gait
-    cycles of 13-byte records (regular time code 128, accel at 2048 LSB/g,
+    still lead-in, 100 Hz, min_zupt_cycle 0.025 (the default: bit 7 clear);
+    then seven 2 s gait cycles of 13-byte records (regular time code 128, accel at 2048 LSB/g,
     gyro at 16.384 LSB/(deg/s)): 0.6 s still, 1.4 s of swing with a 50 ms
     still dip in late swing (a raw run of 3 samples: rejected with the 5 of
     the 2 s cycle, a ZUPT without), then four 0.6 s cycles whose stances are
