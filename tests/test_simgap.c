@@ -2802,9 +2802,10 @@ static char *summary_of(const sg_result_t *r)
 
 /* End to end on a simulated log of white noise plus an AR(1) (300 s at
  * 100 Hz, T 0.5 s, as scripts/simgap_se_check.py --ar1): every analysed
- * channel's baseline gives its refits' 68 % interval beside the se, which
- * stays as it was (the JSON's se is the model's), from at least
- * SG_CI_MIN_REFITS and at most S refits, lo <= hi; the time's from no more
+ * channel's baseline gives its refits' 68 % interval beside the se (the
+ * JSON's se equal to the model's in the same run; the se's value itself is
+ * not pinned here), from at least SG_CI_MIN_REFITS and at most S refits,
+ * lo <= hi; the time's from no more
  * refits than the white density's (only those that keep an AR(1)); and the
  * summary prints it under the channel's baseline line. */
 static void test_ci68_diagnosed(void **state)
