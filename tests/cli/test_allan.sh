@@ -106,9 +106,9 @@ expect_exit 0 "10 s: a profile" "$H" allan "$T/ten.csv" --no-sim --quiet --profi
 grep -q "beyond the longest tau the identification keeps to" "$T/err" && fail "10 s: the short-record warning" ||
     pass "10 s: 1 s within the identified range, no short-record warning"
 # several failures in one run: an output that cannot be written (3) decides over bad input or a refused profile (1),
-# since exit 1 says every output was written; every other output is still written. Until 2026-12-02 the last one set
-# decided: a cut static log with --profile onto a full disk said 1, and a walk with --json onto a full disk said 3, but
-# 1 with --profile as well (the profile's refusal came last; docs/allan.md, "Command")
+# since exit 1 says every output was written; every other output is still written. Letting the last one set decide
+# fails here: a cut static log with --profile onto a full disk would say 1, and a walk with --json onto a full disk 3,
+# but 1 with --profile as well (the profile's refusal comes last; docs/allan.md, "Command")
 { cat "$T/ten.csv"; echo "oops"; } >"$T/tenbad.csv"
 if [ -w /dev/full ]; then
     expect_exit 3 "a cut log, --profile onto a full disk: the output failure decides" "$H" allan "$T/tenbad.csv" --no-sim \

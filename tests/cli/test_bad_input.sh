@@ -324,7 +324,7 @@ expect_exit 1 "info of gx [°/h]" "$H" info "$T/u_degh.csv"
 expect_err "u_degh.csv:1: header has no column 'gx'.*column 5 ('gx \[°/h\]') names a unit not read, '°/h' (a rate's: rad/s, deg/s" \
     "a rate unit not read: the column and the unit named"
 # micro-g (µg, μg, ug: 9.80665e-6 m/s^2, the standard g that g and mg are read with) is read, in a header and in
-# --units; until 2026-12-02 'ax_µg' was refused as 'a unit not read' (exit 1). The walk's accelerations in µg give
+# --units ('ax_µg' refused as 'a unit not read', exit 1, fails here). The walk's accelerations in µg give
 # the walk's samples and info's figures; another unit (ng) is still refused, the list naming µg
 u_ug() { # FILE HEADER: the walk's first 400 samples under HEADER, the accelerations in micro-g
     { printf '%s\n' "$2"
@@ -361,8 +361,8 @@ expect_err "column 2 ('ax_ng') names a unit not read, 'ng' (an acceleration's: m
 
 # after the gzip data: a second gzip member (concatenated .gz files, valid: gunzip reads them whole) is read, and
 # bytes that are no gzip member (trailing junk, a block's zero padding) are a warning naming the file and their count,
-# the samples those of the gzip data, as gunzip says "decompression OK, trailing garbage ignored". Until 2026-12-02 the
-# junk was ignored without a word (zlib's gzread does); docs/log-format.md, "After the gzip data"
+# the samples those of the gzip data, as gunzip says "decompression OK, trailing garbage ignored". Junk ignored
+# without a word (as zlib's gzread does) fails here; docs/log-format.md, "After the gzip data"
 head -n 201 "$T/u_ref.csv" >"$T/z.csv"
 gzip -c "$T/z.csv" >"$T/z.csv.gz"
 expect_exit 0 "info of the plain CSV" "$H" info "$T/z.csv"

@@ -173,8 +173,8 @@ expect_err "warning: $T/hand2.profile: accel_bias_sigma_mps2 5 is 0.51 g, above 
     "an accelerometer bias in mg: warned with the likely unit"
 [ "$(grep -c "above any IMU's" "$T/err")" -eq 1 ] && pass "montecarlo: one warning for its profile" || fail "montecarlo warnings: $(grep -c "above any IMU's" "$T/err")"
 # ... and with two such files, the sensor's and the filter's, once each over
-# the runs (the loader remembers each file it warned about, up to 64; it
-# remembered the last only until 2026-12-02: tests/test_profile.c,
+# the runs (the loader remembers each file it warned about, up to 64; one
+# remembering the last only would warn twice: tests/test_profile.c,
 # test_load_warns_once_per_file)
 expect_exit 0 "montecarlo with two implausible profiles" "$H" montecarlo --seeds 3 --duration 10 --quiet --profile "$T/hand2.profile" --filter-profile "$T/hand.profile"
 [ "$(grep -c "hand2.profile: accel_bias_sigma_mps2 5 is" "$T/err")" -eq 1 ] && [ "$(grep -c "hand.profile: gyro_noise_rps_rthz 0.0396 is" "$T/err")" -eq 1 ] &&

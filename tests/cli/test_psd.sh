@@ -477,7 +477,7 @@ if [ -n "$A" ] && [ -n "$R" ]; then
     # ADIS log 1: every bin within its derived bound (scripts/psd_scipy_bound.py, whose docstring derives it: the
     # float arithmetic of fnav_welch and fnav_fft to first order, worst case, from each segment's own values and
     # partial DFTs; the reference's double arithmetic; the %.6g and %.9g printing), every frequency within the two
-    # printing bounds. Until 2026-12-02 a measured 1e-3 of the bin or 1e-6 of the largest bin, and 1e-4 Hz
+    # printing bounds (derived, not a measured 1e-3 of the bin or 1e-6 of the largest bin, and 1e-4 Hz)
     expect_exit 0 "ADIS log 1, scipy's setting" "$H" psd "$A" --nfft 4096 --window hann --dc segment --out "$T/a.csv"
     if "$PY" "$(dirname "$0")/../../scripts/psd_scipy_bound.py" "$A" "$R" "$T/a.csv" >"$T/bound" 2>&1
     then pass "Welch at nfft 4096 = scipy on ADIS log 1 (gyro x, acc x, every bin within its derived bound)"

@@ -158,9 +158,9 @@ grep -q "^    window            t 0.0-11.5 s    real " "$T/pw.out" && grep -q "^
 # a stance across the fit/held-out split (the 40 s stand, in progress at
 # the split sample, 41.4 s) began in the fit segment: it is the fit's, and
 # the held-out stances begin with the first stance that begins at or after
-# the split (docs/simgap.md, section 2). Until 2026-12-02 it was held out
-# too, from the split sample on, with a mid-stance update as its "first"
-# (23 stances, fit 12, held out 12, "the stance across the split in both")
+# the split (docs/simgap.md, section 2). Holding it out too, from the
+# split sample on with a mid-stance update as its "first" (23 stances, fit
+# 12, held out 12, "the stance across the split in both"), fails here
 json "$T/pw.json" '(n := j["navigation"])["stances_fit"] == 12 and n["stances_held_out"] == 11 and n["stances_full"] == 23 and n["held_out_from_s"] > j["split"]["held_out"][0]["start_s"]' &&
     grep -q "^navigation: 23 stances (fit 12, held out 11 from t [0-9.]* s, the first stance to begin at or after the split at 41.4 s); " "$T/pw.out" &&
     pass "the stance across the split is the fit's, not held out" ||
