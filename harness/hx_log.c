@@ -1645,6 +1645,15 @@ static fnav_status_t next_text_line(hx_reader_t *r, fnav_sample_t *s)
     return next_text_fields(r, s);
 }
 
+/* Whether a value beyond FNAV_INPUT_MAX_ABS could be an acceleration in ug
+ * written as m/s^2: within the widest range of MEMS accelerometers (400 g,
+ * ST's H3LIS331DL) once read in ug. The CSV and .bin readers ask "in ug?"
+ * on it. */
+static int ug_plausible(double v)
+{
+    return fabs(v) * HX_UG_MPS2 <= 400.0 * HX_G_MPS2;
+}
+
 static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
 {
     char *f[HX_MAX_COLS];
@@ -1729,7 +1738,7 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
                  * converter reach it too */
                 char give[96] = "";
                 if (c == 0 && r->meta.format == HX_FMT_CSV && r->acc_scale != HX_UG_MPS2 &&
-                    fabs(v[i]) * HX_UG_MPS2 <= 400.0 * HX_G_MPS2) {
+                    ug_plausible(v[i])) {
                     /* the whole --units value, as the units check names it */
                     hx_csv_layout_t want = r->layout;
                     char items[80];
@@ -2038,14 +2047,16 @@ static fnav_status_t next_bin(hx_reader_t *r, fnav_sample_t *s)
                 /* an accelerometer in ug written as m/s^2 reads 1e6 at 1 g:
                  * the CSV reader asks "in ug?" with --units accel=ug, which
                  * does not apply here (a .bin's units are fixed by its
-                 * header). Asked, with the remedy that does apply, when
-                 * every value beyond is an acceleration within 400 g once
-                 * read in ug, as the CSV reader's (not "no sensor reads
-                 * that" alone) */
+                 * header). Asked, with the remedy that does apply, only
+                 * when every value beyond the limit is an acceleration
+                 * within 400 g once read in ug (ug_plausible): stricter than
+                 * the CSV reader, which asks about the first field beyond
+                 * the limit alone, so a record with a gyro beyond it too is
+                 * not asked about here */
                 for (k = 0; k < 3 && !in_range; k++) {
                     const double a = fabs((double)rec.acc[k]);
                     if (fabs((double)rec.gyr[k]) > FNAV_INPUT_MAX_ABS ||
-                        (a > FNAV_INPUT_MAX_ABS && a * HX_UG_MPS2 > 400.0 * HX_G_MPS2)) {
+                        (a > FNAV_INPUT_MAX_ABS && !ug_plausible(a))) {
                         ug = 3; /* not asked */
                     } else if (a > FNAV_INPUT_MAX_ABS && ug < 0) {
                         ug = k;

@@ -334,7 +334,9 @@ int hx_profile_implausible(const fnav_profile_t *p, char *msg, size_t n)
  * its name as given, so that loading A, B, A warns about A once (the last
  * one alone would warn about A twice). A full table remembers no
  * more: a file warned about after the first HX_PROFILE_WARNED_MAX is
- * warned about at each load (repeated, never lost). */
+ * warned about at each load (repeated). Two names with the same hash would
+ * drop the second one's warning: with n names the odds are about
+ * n^2 / 2^65 (1e-16 for the table's 64). */
 static int profile_warned(const char *path)
 {
     static unsigned long long seen[HX_PROFILE_WARNED_MAX];

@@ -321,9 +321,11 @@ typedef struct {
 
 /** The fewest refits a 68 % percentile interval is given from: the 16th
  *  percentile of n values lies at order statistic 1 + 0.16 (n - 1) (the
- *  84th symmetrically), beyond the second smallest (largest) only from
- *  n = 8 (1 + 0.16 x 7 = 2.12); with fewer, an end is mostly the single
- *  extreme refit. */
+ *  84th symmetrically), so from n = 8 (1 + 0.16 x 7 = 2.12) an end
+ *  interpolates between the 2nd and 3rd smallest (largest) refits and owes
+ *  nothing to the single most extreme one; below 8 the extreme refit
+ *  enters with weight 1 - 0.16 (n - 1) (0.04 at n = 7, 0.20 at 6, 0.36 at
+ *  5, 0.52 at 4). */
 #define SG_CI_MIN_REFITS 8
 
 /** The q quantile (0 <= q <= 1) of n values sorted ascending, numpy's

@@ -31,7 +31,10 @@ angle, at most N 4 eps = 4.8e-5 rad if every rounding had the same sign,
 which tilts g by that angle for at most the swing's T = 0.5 s:
 g T N 4 eps = 2.4e-4 m/s; the rotated f and the velocity sum add
 2 eps g T = 5.9e-7 m/s; the float h (0.0025 is not a float) scales
-Theta by 1 + eps: g T A eps = 2.9e-7 m/s.
+Theta by 1 + eps: g T A eps = 2.9e-7 m/s. The float32 allowance exceeds the
+end speed itself, so in the float build the check has no lower side. The
+double build runs the same code in float64: the same sum with eps = 2^-53
+(4.4e-13 m/s) bounds it, and the values are printed to 12 digits for it.
 
 Usage: /usr/bin/python3 scripts/axes_walk_ref.py
 """
@@ -42,6 +45,7 @@ import numpy as np
 RATE = 400.0
 STANCE, SWING, AMP, G = 0.4, 0.5, 1.0, 9.81
 EPS32 = 2.0 ** -24
+EPS64 = 2.0 ** -53
 
 
 def rot(u, a):
@@ -89,17 +93,22 @@ def main():
     quat = G * SWING * n * 4.0 * EPS32
     other = 2.0 * EPS32 * G * SWING + G * SWING * AMP * EPS32
     print("float32 allowance: attitude %.2e + f and sum, h %.2e = %.2e m/s" % (quat, other, quat + other))
+    q64 = G * SWING * n * 4.0 * EPS64
+    o64 = 2.0 * EPS64 * G * SWING + G * SWING * AMP * EPS64
+    print("float64 allowance: attitude %.2e + f and sum, h %.2e = %.2e m/s" % (q64, o64, q64 + o64))
     for beta_deg in (0.0, 20.0):
         beta = np.radians(beta_deg)
         s = [end_speed(np.radians(p), beta) for p in (30.0, 60.0)]
         print("beta %4.1f deg: end speed %.4e m/s (phi 30 deg), %.4e m/s (phi 60 deg); bound %.2e m/s"
               % (beta_deg, s[0], s[1], max(s) + quat + other))
+        print("beta %4.1f deg: end speed %.12e m/s (phi 30 deg), %.12e m/s (phi 60 deg)" % (beta_deg, s[0], s[1]))
         # the nearest rival: the least median (6 swings at phi 30, 6 at 60:
         # the mean of the two) over the 47 other maps
         med = sorted((0.5 * (end_speed(np.radians(30.0), beta, m) + end_speed(np.radians(60.0), beta, m)), k)
                      for k, m in enumerate(maps()) if k > 0)
         print("beta %4.1f deg: nearest rival's median end speed %.6f m/s, the next %.6f m/s"
               % (beta_deg, med[0][0], med[1][0]))
+        print("beta %4.1f deg: nearest rival's median end speed %.12e m/s" % (beta_deg, med[0][0]))
 
 
 if __name__ == "__main__":

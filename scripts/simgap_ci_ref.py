@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Reference values of tests/test_simgap.c's test_refit_quantile and
-test_se_from_refits (the interval of the refits): numpy's percentiles with
+test_ci_from_refits (the interval of the refits): numpy's percentiles with
 its default method, linear interpolation between the order statistics
 (numpy.percentile(x, q), method="linear": h = (n - 1) q / 100, x[floor h]
 + (h - floor h) (x[floor h + 1] - x[floor h]); Hyndman and Fan's type 7),

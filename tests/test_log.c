@@ -567,14 +567,20 @@ static void test_bin_bad_record_values(void **state)
  * --units does not apply to it, so the .bin reader asks the same question
  * with the remedy that applies: its writer must scale ug to m/s^2 (not
  * only "no sensor reads that"). Not asked of a
- * rate beyond 1e6, nor of an acceleration beyond 400 g once read in ug. */
+ * rate beyond 1e6, nor of an acceleration beyond 400 g once read in ug,
+ * nor of a record with a plausible acceleration in ug and a rate both
+ * beyond the limit (every value beyond must be a plausible acceleration:
+ * stricter than the CSV reader, which asks about the first field beyond
+ * alone). */
 static void test_bin_value_in_ug(void **state)
 {
     static const struct {
         int gyro, axis;
         float v;
+        float gz; /* when not 0: gz too */
         int asked;
-    } k_case[] = { { 0, 0, 2.0e6f, 1 }, { 0, 2, -9.8e6f, 1 }, { 1, 1, 2.0e6f, 0 }, { 0, 0, 1.0e10f, 0 } };
+    } k_case[] = { { 0, 0, 2.0e6f, 0.0f, 1 },  { 0, 2, -9.8e6f, 0.0f, 1 }, { 1, 1, 2.0e6f, 0.0f, 0 },
+                   { 0, 0, 1.0e10f, 0.0f, 0 }, { 0, 0, 2.0e6f, 2.0e6f, 0 } };
     unsigned char b[4096];
     hx_bin_record_t rec;
     const size_t r3 = HX_BIN_HEADER_SIZE + 3 * HX_BIN_RECORD_SIZE;
@@ -589,6 +595,9 @@ static void test_bin_value_in_ug(void **state)
             rec.gyr[k_case[i].axis] = k_case[i].v;
         } else {
             rec.acc[k_case[i].axis] = k_case[i].v;
+        }
+        if (k_case[i].gz != 0.0f) {
+            rec.gyr[2] = k_case[i].gz;
         }
         hx_bin_record_encode(&rec, b + r3);
         tmp_path(p, sizeof p, ".bin");

@@ -76,6 +76,23 @@ typedef struct {
 
 #define CFG_RANGE(f, ok, bad) { #f, offsetof(fnav_nav_config_t, f), FNAV_R(ok), FNAV_R(bad) }
 
+/* Either side of where an sd's square stops being a positive finite real:
+ * float squares 1e-18 to 1e-36 (above FLT_MIN), 1e-23 to 1e-46 (below half
+ * the least subnormal, 1.4e-45: 0), 1e18 to 1e36, 1e20 to 1e40 (above
+ * FLT_MAX, 3.4e38: inf); double 1e-150, 1e-170 (1e-340 below 4.9e-324),
+ * 1e150, 1e160 (1e320 above 1.8e308). */
+#if FNAV_USE_DOUBLE
+#define SQ_TINY_OK 1e-150
+#define SQ_TINY_BAD 1e-170
+#define SQ_HUGE_OK 1e150
+#define SQ_HUGE_BAD 1e160
+#else
+#define SQ_TINY_OK 1e-18f
+#define SQ_TINY_BAD 1e-23f
+#define SQ_HUGE_OK 1e18f
+#define SQ_HUGE_BAD 1e20f
+#endif
+
 static void test_config_ranges(void **state)
 {
     static fnav_nav_t nav;
@@ -126,6 +143,20 @@ static void test_config_ranges(void **state)
         CFG_RANGE(profile.gyro_tau_s[2], 1e-6, 0.0),
         CFG_RANGE(profile.gyro_bias_sigma_rps[1], 1e-6, 0.0),
     };
+    static const struct {
+        const char *name;
+        size_t off;
+        int upper; /* 1: no other upper bound, the square's overflow tested */
+    } sq_fields[] = {
+        { "zupt_sigma_mps", offsetof(fnav_nav_config_t, zupt_sigma_mps), 1 },
+        { "zaru_sigma_rps", offsetof(fnav_nav_config_t, zaru_sigma_rps), 1 },
+        { "gyro_bias_sd_rps", offsetof(fnav_nav_config_t, gyro_bias_sd_rps), 1 },
+        { "accel_bias_sd_mps2", offsetof(fnav_nav_config_t, accel_bias_sd_mps2), 1 },
+        { "lever_sd_m", offsetof(fnav_nav_config_t, lever_sd_m), 1 },
+        { "settle_sd_mps", offsetof(fnav_nav_config_t, settle_sd_mps), 1 },
+        { "tilt_sd_rad", offsetof(fnav_nav_config_t, tilt_sd_rad), 0 },
+        { "yaw_sd_rad", offsetof(fnav_nav_config_t, yaw_sd_rad), 0 },
+    };
     const fnav_real_t nonfinite[3] = { (fnav_real_t)NAN, (fnav_real_t)INFINITY, -(fnav_real_t)INFINITY };
     size_t i, k;
     fnav_nav_config_t c;
@@ -156,6 +187,56 @@ static void test_config_ranges(void **state)
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
     c.align.max_still_s = FNAV_R(0.499);
     assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    /* the sds whose square the filter takes: a square neither 0 nor
+     * infinite. SQ_* lie either side of where the real type's square
+     * underflows to 0 (below the least subnormal) or overflows; tilt and
+     * yaw are bounded above by fnav_nav_att_sd_max_rad instead */
+    for (i = 0; i < sizeof sq_fields / sizeof sq_fields[0]; i++) {
+        fnav_real_t *f = (fnav_real_t *)(void *)((unsigned char *)&c + sq_fields[i].off);
+        const fnav_real_t vals[4] = { SQ_TINY_OK, SQ_TINY_BAD, SQ_HUGE_OK, SQ_HUGE_BAD };
+        for (k = 0; k < (sq_fields[i].upper ? 4u : 2u); k++) {
+            c = fnav_nav_config_default;
+            *f = vals[k];
+            if (fnav_nav_init(&nav, &c) != (k % 2u == 0u ? FNAV_OK : FNAV_E_CONFIG)) {
+                fail_msg("%s = %g %s", sq_fields[i].name, (double)vals[k], k % 2u == 0u ? "refused" : "not refused");
+            }
+        }
+    }
+    /* tilt and yaw: at most fnav_nav_att_sd_max_rad (0.707 rad, 18 states) */
+    for (k = 0; k < 2; k++) {
+        c = fnav_nav_config_default;
+        *(k == 0 ? &c.tilt_sd_rad : &c.yaw_sd_rad) = fnav_nav_att_sd_max_rad(&c) * FNAV_R(0.999);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_OK);
+        *(k == 0 ? &c.tilt_sd_rad : &c.yaw_sd_rad) = fnav_nav_att_sd_max_rad(&c) * FNAV_R(1.001);
+        assert_int_equal(fnav_nav_init(&nav, &c), FNAV_E_CONFIG);
+    }
+    /* every value of the profile: > 0 and finite (fnav_profile_validate) */
+    for (i = 0; i < 18; i++) {
+        fnav_real_t *arrs[6];
+        fnav_real_t *f;
+        c = fnav_nav_config_default;
+        arrs[0] = c.profile.accel_noise_mps2_rthz;
+        arrs[1] = c.profile.accel_tau_s;
+        arrs[2] = c.profile.accel_bias_sigma_mps2;
+        arrs[3] = c.profile.gyro_noise_rps_rthz;
+        arrs[4] = c.profile.gyro_tau_s;
+        arrs[5] = c.profile.gyro_bias_sigma_rps;
+        f = &arrs[i / 3][i % 3];
+        *f = FNAV_R(1e-6);
+        if (fnav_nav_init(&nav, &c) != FNAV_OK) {
+            fail_msg("profile value %zu = 1e-6 refused", i);
+        }
+        *f = FNAV_R(0.0);
+        if (fnav_nav_init(&nav, &c) != FNAV_E_CONFIG) {
+            fail_msg("profile value %zu = 0 not refused", i);
+        }
+        for (k = 0; k < 3; k++) {
+            *f = nonfinite[k];
+            if (fnav_nav_init(&nav, &c) != FNAV_E_CONFIG) {
+                fail_msg("profile value %zu = %g not refused", i, (double)nonfinite[k]);
+            }
+        }
+    }
     /* with the detector's rate given, a time jump must be longer than a gap */
     c = fnav_nav_config_default;
     c.stance.rate_hz = FNAV_R(100.0);

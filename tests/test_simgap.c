@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "footnav/fnav_profile.h"
+#include "hx_cli.h"
 #include "hx_simgap.h"
 #include "hx_simgap_valid.h"
 #include "support/fnav_testdata.h"
@@ -1948,12 +1949,6 @@ static void test_se_from_refits(void **state)
     assert_true(isnan(m.e[1].se[0]));
 }
 
-static int cmp_dbl(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* The refits' percentiles (sg_quantile_sorted) are numpy's default
  * definition, linear interpolation between the order statistics; the
  * values from numpy.percentile (scripts/simgap_ci_ref.py). 16 values as
@@ -1965,8 +1960,8 @@ static void test_refit_quantile(void **state)
     double x8[8] = { 3.0, 1.0, 4.0, 1.5, 9.0, 2.6, 5.0, 3.5 };
     const double x1[1] = { 2.5 };
     (void)state;
-    qsort(x16, 16, sizeof x16[0], cmp_dbl);
-    qsort(x8, 8, sizeof x8[0], cmp_dbl);
+    qsort(x16, 16, sizeof x16[0], hx_cmp_double);
+    qsort(x8, 8, sizeof x8[0], hx_cmp_double);
     FNAV_ASSERT_CLOSE(sg_quantile_sorted(x16, 16, 0.0), 0.44, 0.0, 1e-15);
     FNAV_ASSERT_CLOSE(sg_quantile_sorted(x16, 16, 0.16), 0.47399999999999998, 0.0, 1e-15);
     FNAV_ASSERT_CLOSE(sg_quantile_sorted(x16, 16, 0.5), 0.52500000000000002, 0.0, 1e-15);
@@ -2802,9 +2797,10 @@ static char *summary_of(const sg_result_t *r)
 
 /* End to end on a simulated log of white noise plus an AR(1) (300 s at
  * 100 Hz, T 0.5 s, as scripts/simgap_se_check.py --ar1): every analysed
- * channel's baseline gives its refits' 68 % interval beside the se, which
- * stays as it was (the JSON's se is the model's), from at least
- * SG_CI_MIN_REFITS and at most S refits, lo <= hi; the time's from no more
+ * channel's baseline gives its refits' 68 % interval beside the se (the
+ * JSON's se equal to the model's in the same run; the se's value itself is
+ * not pinned here), from at least SG_CI_MIN_REFITS and at most S refits,
+ * lo <= hi; the time's from no more
  * refits than the white density's (only those that keep an AR(1)); and the
  * summary prints it under the channel's baseline line. */
 static void test_ci68_diagnosed(void **state)

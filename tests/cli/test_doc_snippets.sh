@@ -113,19 +113,33 @@ for build in float double; do
     done
 done
 # A whole program also builds for the Cortex-M4F as docs/firmware.md ("In
-# your own build") says (keep the flags in step with its command): the core
-# and the program with the firmware's architecture flags, unused sections
-# collected, newlib-nano and its I/O stubs (nosys), linked.
+# your own build") says: with the flags of the page's command (the line that
+# begins with arm-none-eabi-gcc, its continuation lines joined, the words
+# before -o), which must collect unused sections (-ffunction-sections
+# -fdata-sections -Wl,--gc-sections, each checked here), with newlib-nano
+# and its I/O stubs (nosys), linked.
 ARM_CC=${ARM_CC:-arm-none-eabi-gcc}
 ARM_NM=${ARM_NM:-arm-none-eabi-nm}
-if command -v "$ARM_CC" >/dev/null 2>&1; then
+DOC_ARM_FLAGS=$(awk '
+    /^arm-none-eabi-gcc / { on = 1; cmd = "" }
+    on { line = $0; cont = sub(/\\[ \t]*$/, "", line); cmd = cmd " " line; if (!cont) { print cmd; exit } }
+' docs/firmware.md | awk '{ for (i = 2; i <= NF && $i != "-o"; i++) printf "%s ", $i }')
+if [ -z "$DOC_ARM_FLAGS" ]; then
+    fail "docs/firmware.md: no arm-none-eabi-gcc command found (\"In your own build\")"
+fi
+for flag in -ffunction-sections -fdata-sections -Wl,--gc-sections --specs=nano.specs --specs=nosys.specs; do
+    case " $DOC_ARM_FLAGS " in
+    *" $flag "*) pass "docs/firmware.md: the Cortex-M4F command has $flag" ;;
+    *) fail "docs/firmware.md: the Cortex-M4F command lacks $flag (flags: $DOC_ARM_FLAGS)" ;;
+    esac
+done
+if command -v "$ARM_CC" >/dev/null 2>&1 && [ -n "$DOC_ARM_FLAGS" ]; then
     i=1
     while [ "$i" -le "$count" ]; do
         where=$(cat "$T/snip_$i.where")
         if grep -q 'int main(' "$T/snip_$i.c"; then
             # shellcheck disable=SC2086
-            if "$ARM_CC" -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard -Os $WARN -Iinclude \
-                -ffunction-sections -fdata-sections -Wl,--gc-sections --specs=nano.specs --specs=nosys.specs -o "$T/arm_s$i.elf" "$T/snip_$i.c" src/*.c -lm >"$T/err" 2>&1; then
+            if "$ARM_CC" $DOC_ARM_FLAGS $WARN -o "$T/arm_s$i.elf" "$T/snip_$i.c" src/*.c -lm >"$T/err" 2>&1; then
                 pass "$where: the C program builds for the Cortex-M4F"
                 # only what the program reaches is in the image: the port
                 # example navigates, so none of the core's Allan, Welch or
