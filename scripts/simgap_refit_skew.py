@@ -38,8 +38,9 @@ import tempfile
 import numpy as np
 from scipy import stats
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from simgap_se_check import FS, N, write_log  # noqa: E402  (the same logs)
 
-FS, N = 100.0, 30000
 harness = sys.argv[1]
 S = int(sys.argv[sys.argv.index("--seeds") + 1]) if "--seeds" in sys.argv else 16
 nseeds = int(sys.argv[-1]) if len(sys.argv) > 2 and sys.argv[-1].isdigit() and sys.argv[-2] != "--seeds" else 16
@@ -50,20 +51,8 @@ sets = {(0, 0): [], (1, 0): [], (1, 1): []}
 fitted = {(0, 0): [], (1, 0): [], (1, 1): []}
 with tempfile.TemporaryDirectory() as tmp:
     for s in range(1, nseeds + 1):
-        rng = np.random.default_rng(s)
-        t = np.arange(N) / FS
-        x = rng.normal(0.0, 1.0, (N, 6)) * truth * np.sqrt(FS)
-        phi = np.exp(-1.0 / (FS * tau))
-        e = rng.normal(0.0, 1.0, (N, 6)) * sig * np.sqrt(1.0 - phi * phi)
-        b = np.zeros((N, 6))
-        b[0] = rng.normal(0.0, 1.0, 6) * sig
-        for k in range(1, N):
-            b[k] = phi * b[k - 1] + e[k]
-        x += b
-        x[:, 2] += 9.81
         log = os.path.join(tmp, "w%d.csv" % s)
-        np.savetxt(log, np.column_stack([t, x]), delimiter=",", header="t,ax,ay,az,gx,gy,gz", comments="",
-                   fmt="%.9f")
+        write_log(log, s, truth, sig, tau)
         r = subprocess.run([harness, "simgap", log, "--quiet", "--max-effects", "0", "--seeds", str(S)],
                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
                            env=dict(os.environ, SG_DEBUG_REFITS="1"))

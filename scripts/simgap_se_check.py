@@ -22,8 +22,7 @@ each channel's mean), and the 95 % interval the pooled ratio falls in when
 the se is right: the chi-square interval of the pooled sd for its degrees
 of freedom, widened by the se's own scatter (each se is the sd of 16 twins'
 refits, about 1 / sqrt(2 x 15) relative; the observed scatter of the se's
-is used). Before 2026-12-02 the se was the Allan fit's Gauss-Newton value
-and the white density's pooled ratio was 1.68.
+is used).
 
 Usage: /usr/bin/python3 scripts/simgap_se_check.py [--ar1] [HARNESS]
 """
@@ -42,6 +41,25 @@ SEEDS = range(1, 17)
 NAMES = ["ax", "ay", "az", "gx", "gy", "gz"]
 
 
+def write_log(path, seed, white, sig=None, tau=0.5):
+    """A static log of N samples at FS Hz to path (CSV, t and six channels):
+    white noise of density white per channel (numpy seed seed), plus an
+    AR(1) of sd sig and time tau s unless sig is None, gravity on az."""
+    rng = np.random.default_rng(seed)
+    t = np.arange(N) / FS
+    x = rng.normal(0.0, 1.0, (N, 6)) * white * np.sqrt(FS)
+    if sig is not None:
+        phi = np.exp(-1.0 / (FS * tau))
+        e = rng.normal(0.0, 1.0, (N, 6)) * sig * np.sqrt(1.0 - phi * phi)
+        b = np.zeros((N, 6))
+        b[0] = rng.normal(0.0, 1.0, 6) * sig
+        for k in range(1, N):
+            b[k] = phi * b[k - 1] + e[k]
+        x += b
+    x[:, 2] += 9.81
+    np.savetxt(path, np.column_stack([t, x]), delimiter=",", header="t,ax,ay,az,gx,gy,gz", comments="", fmt="%.9f")
+
+
 def main():
     args = [a for a in sys.argv[1:] if a != "--ar1"]
     ar1 = "--ar1" in sys.argv[1:]
@@ -57,22 +75,9 @@ def main():
     nfit = None
     with tempfile.TemporaryDirectory() as tmp:
         for s in SEEDS:
-            rng = np.random.default_rng(s)
-            t = np.arange(N) / FS
-            x = rng.normal(0.0, 1.0, (N, 6)) * truth * np.sqrt(FS)
-            if ar1:
-                phi = np.exp(-1.0 / (FS * tau))
-                e = rng.normal(0.0, 1.0, (N, 6)) * sig * np.sqrt(1.0 - phi * phi)
-                b = np.zeros((N, 6))
-                b[0] = rng.normal(0.0, 1.0, 6) * sig
-                for k in range(1, N):
-                    b[k] = phi * b[k - 1] + e[k]
-                x += b
-            x[:, 2] += 9.81
             log = os.path.join(tmp, "w%d.csv" % s)
             out = os.path.join(tmp, "w%d.json" % s)
-            np.savetxt(log, np.column_stack([t, x]), delimiter=",", header="t,ax,ay,az,gx,gy,gz", comments="",
-                       fmt="%.9f")
+            write_log(log, s, truth, sig if ar1 else None, tau)
             subprocess.run([harness, "simgap", log, "--quiet", "--max-effects", "0", "--json", out],
                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
             with open(out) as f:

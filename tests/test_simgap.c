@@ -2033,6 +2033,28 @@ static void test_ci_from_refits(void **state)
     assert_true(isfinite(m.e[0].ci_lo[1]) && m.e[0].ci_lo[1] <= m.e[0].ci_hi[1]);
 }
 
+/* A complete log of n samples at fs Hz for a test to fill (its stamps and
+ * six channels), read whole (FNAV_END); static_log_free releases it. */
+static void static_log_alloc(hx_log_t *lg, long n, double fs)
+{
+    memset(lg, 0, sizeof *lg);
+    lg->n = n;
+    lg->t_ns = malloc((size_t)n * sizeof *lg->t_ns);
+    lg->acc = malloc((size_t)n * sizeof *lg->acc);
+    lg->gyr = malloc((size_t)n * sizeof *lg->gyr);
+    assert_true(lg->t_ns != NULL && lg->acc != NULL && lg->gyr != NULL);
+    lg->meta.rate_hz = fs;
+    lg->meta.rate_nominal = 1;
+    lg->status = FNAV_END;
+}
+
+static void static_log_free(hx_log_t *lg)
+{
+    free(lg->t_ns);
+    free(lg->acc);
+    free(lg->gyr);
+}
+
 /* On pure white noise the white density's standard error is not below the
  * Cramer-Rao bound. Derivation: n fit samples x_i ~ N(0, s2), s2 = N^2 f_s
  * (N the density, u/sqrt(Hz)); the Fisher information of s2 is
@@ -2063,15 +2085,7 @@ static void test_white_se_cramer_rao(void **state)
     long k;
     (void)state;
     assert_non_null(r);
-    memset(&lg, 0, sizeof lg);
-    lg.n = N;
-    lg.t_ns = malloc(N * sizeof *lg.t_ns);
-    lg.acc = malloc(N * sizeof *lg.acc);
-    lg.gyr = malloc(N * sizeof *lg.gyr);
-    assert_true(lg.t_ns != NULL && lg.acc != NULL && lg.gyr != NULL);
-    lg.meta.rate_hz = fs;
-    lg.meta.rate_nominal = 1;
-    lg.status = FNAV_END;
+    static_log_alloc(&lg, N, fs);
     fnav_rng_seed(&rng, 17u, 5u);
     for (k = 0; k < N; k++) {
         lg.t_ns[k] = k * 10000000LL;
@@ -2103,9 +2117,7 @@ static void test_white_se_cramer_rao(void **state)
     assert_true(sum / nch <= 1.5);
     sg_result_free(r);
     free(r);
-    free(lg.t_ns);
-    free(lg.acc);
-    free(lg.gyr);
+    static_log_free(&lg);
 }
 
 /* The Durbin-Levinson likelihood (sg_toeplitz_nll2) against a dense
@@ -2819,15 +2831,7 @@ static void test_ci68_diagnosed(void **state)
     long k;
     (void)state;
     assert_non_null(r);
-    memset(&lg, 0, sizeof lg);
-    lg.n = N;
-    lg.t_ns = malloc(N * sizeof *lg.t_ns);
-    lg.acc = malloc(N * sizeof *lg.acc);
-    lg.gyr = malloc(N * sizeof *lg.gyr);
-    assert_true(lg.t_ns != NULL && lg.acc != NULL && lg.gyr != NULL);
-    lg.meta.rate_hz = fs;
-    lg.meta.rate_nominal = 1;
-    lg.status = FNAV_END;
+    static_log_alloc(&lg, N, fs);
     fnav_rng_seed(&rng, 23u, 7u);
     for (k = 0; k < N; k++) {
         lg.t_ns[k] = k * 10000000LL;
@@ -2876,9 +2880,7 @@ static void test_ci68_diagnosed(void **state)
     cJSON_Delete(j);
     sg_result_free(r);
     free(r);
-    free(lg.t_ns);
-    free(lg.acc);
-    free(lg.gyr);
+    static_log_free(&lg);
 }
 
 /* The verdict's explained fraction of an effect accepted at a later step is
