@@ -67,7 +67,7 @@ int hx_cmd_simgap(int argc, char **argv)
             return HX_EXIT_USAGE;
         }
     }
-    if (hx_check_input_opts("simgap", &a) != 0 || hx_arg_long(&a, "--seeds", 3, 60, &seeds) != 0 ||
+    if (hx_check_input_opts("simgap", &a) != 0 || hx_arg_long(&a, "--seeds", 3, SG_MAX_TWINS, &seeds) != 0 ||
         hx_arg_whole(&a, "--seed", 0.0, 4294967295.0, &seed) != 0 ||
         hx_arg_double(&a, "--fit-frac", 0.2, 0.9, &frac) != 0 ||
         hx_arg_double(&a, "--alpha", 1e-6, 0.5, &alpha) != 0 || hx_arg_long(&a, "--max-effects", 0, SG_MAX_STEPS, &steps) != 0 ||

@@ -87,7 +87,7 @@ int hx_cmd_simgap_validate(int argc, char **argv)
         hx_arg_double(&a, "--rate", 10.0, 1e5, &o.rate_hz) != 0 ||
         hx_arg_double(&a, "--walk-duration", 20.0, 3600.0, &o.walk_duration_s) != 0 ||
         hx_arg_double(&a, "--walk-rate", 50.0, 5000.0, &o.walk_rate_hz) != 0 ||
-        hx_arg_long(&a, "--seeds", 3, 60, &seeds) != 0) {
+        hx_arg_long(&a, "--seeds", 3, SG_MAX_TWINS, &seeds) != 0) {
         return HX_EXIT_USAGE;
     }
     mr = hx_arg(&a, "--mag-range");

@@ -328,6 +328,10 @@ typedef struct {
  *  5, 0.52 at 4). */
 #define SG_CI_MIN_REFITS 8
 
+/** The most twins per model (`--seeds` of simgap and simgap-validate);
+ *  sg_se_from_refits counts at most this many refits. */
+#define SG_MAX_TWINS 60
+
 /** The q quantile (0 <= q <= 1) of n values sorted ascending, numpy's
  *  default definition (numpy.percentile's "linear", Hyndman and Fan's
  *  type 7): h = (n - 1) q, x[floor h] + (h - floor h)(x[floor h + 1] -
@@ -342,7 +346,8 @@ double sg_quantile_sorted(const double *x, int n, double q);
  *  effect's other parameters (the AR(1) time) count only the refits whose
  *  magnitude is not zero; fewer than 3 values leave se NaN. Beside
  *  each such se: the number of refits (nrefit) and their 16th and 84th
- *  percentiles (ci_lo, ci_hi; from SG_CI_MIN_REFITS values, else NaN). Other
+ *  percentiles (ci_lo, ci_hi; from SG_CI_MIN_REFITS values, else NaN); at
+ *  most SG_MAX_TWINS refits are counted. Other
  *  standard errors (a drift's, a likelihood's) and NaN ones stay as they
  *  are. Reporting only: no decision reads se. */
 void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok, int S);

@@ -777,38 +777,16 @@ double sg_quantile_sorted(const double *x, int n, double q)
     return x[j] + (h - (double)j) * (x[j + 1] - x[j]);
 }
 
-/* The 16th and 84th percentiles of parameter k of effect id over the
- * refits (the c values refit_value counts) in e's ci_lo, ci_hi: NaN with
- * fewer than SG_CI_MIN_REFITS, or without memory for them. */
-static void ci_from_refits(sg_effect_t *e, int k, int mp, const sg_chmodel_t *fits, const int *ok, int S, int c)
-{
-    double *x = c >= SG_CI_MIN_REFITS ? (double *)malloc((size_t)c * sizeof *x) : NULL;
-    double v;
-    int s, n = 0;
-    e->ci_lo[k] = e->ci_hi[k] = (double)NAN;
-    if (x == NULL) {
-        return;
-    }
-    for (s = 0; s < S && n < c; s++) {
-        if (refit_value(fits, ok, s, e->id, k, mp, &v)) {
-            x[n++] = v;
-        }
-    }
-    qsort(x, (size_t)n, sizeof *x, hx_cmp_double);
-    e->ci_lo[k] = sg_quantile_sorted(x, n, 0.16);
-    e->ci_hi[k] = sg_quantile_sorted(x, n, 0.84);
-    free(x);
-}
-
 void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok, int S)
 {
+    double x[SG_MAX_TWINS]; /* one parameter's refit values, in refit order */
     int i, k, s;
     for (i = 0; i < m->n; i++) {
         sg_effect_t *e = &m->e[i];
         const int mp = mag_param(e->id);
         for (k = 0; k < SG_MAX_PAR; k++) {
-            double sum = 0.0, sum2 = 0.0, mean, v;
-            int c = 0;
+            double sum = 0.0, sum2 = 0.0, mean;
+            int c = 0, j;
             if (!e->se_allan[k]) {
                 continue;
             }
@@ -818,10 +796,9 @@ void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok,
             if (!isfinite(e->se[k])) {
                 continue; /* null stays null */
             }
-            for (s = 0; s < S; s++) {
-                if (refit_value(fits, ok, s, e->id, k, mp, &v)) {
-                    sum += v;
-                    c++;
+            for (s = 0; s < S && c < SG_MAX_TWINS; s++) {
+                if (refit_value(fits, ok, s, e->id, k, mp, &x[c])) {
+                    sum += x[c++];
                 }
             }
             if (c < 3) {
@@ -829,14 +806,16 @@ void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok,
                 continue;
             }
             mean = sum / (double)c; /* two passes: the sample sd */
-            for (s = 0; s < S; s++) {
-                if (refit_value(fits, ok, s, e->id, k, mp, &v)) {
-                    sum2 += (v - mean) * (v - mean);
-                }
+            for (j = 0; j < c; j++) {
+                sum2 += (x[j] - mean) * (x[j] - mean);
             }
             e->se[k] = sqrt(sum2 / (double)(c - 1));
             e->nrefit[k] = c;
-            ci_from_refits(e, k, mp, fits, ok, S, c);
+            if (c >= SG_CI_MIN_REFITS) {
+                qsort(x, (size_t)c, sizeof x[0], hx_cmp_double);
+                e->ci_lo[k] = sg_quantile_sorted(x, c, 0.16);
+                e->ci_hi[k] = sg_quantile_sorted(x, c, 0.84);
+            }
         }
     }
 }
