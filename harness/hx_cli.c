@@ -361,7 +361,7 @@ long hx_warn_repeats(void)
     return g_warn_repeats;
 }
 
-static unsigned long long fnv1a(unsigned long long h, const char *s)
+unsigned long long hx_fnv1a(unsigned long long h, const char *s)
 {
     for (; *s != '\0'; s++) {
         h ^= (unsigned char)*s;
@@ -374,7 +374,7 @@ static unsigned long long fnv1a(unsigned long long h, const char *s)
  * (remembered). */
 static int warn_repeat(const char *cmd, const char *kind, const char *text)
 {
-    unsigned long long h = fnv1a(fnv1a(fnv1a(14695981039346656037ULL, cmd), kind), text);
+    unsigned long long h = hx_fnv1a(hx_fnv1a(hx_fnv1a(HX_FNV1A_INIT, cmd), kind), text);
     size_t i;
     if (!g_warn_once) {
         return 0;

@@ -107,6 +107,12 @@ void hx_warn_once(int on);
 /** Messages not printed again in once mode so far. */
 long hx_warn_repeats(void);
 
+/** FNV-1a of s continuing the hash h (start with HX_FNV1A_INIT), then a
+ *  separator, so that ("ab", "c") and ("a", "bc") hash apart: the key of
+ *  the harness's remembered-once tables. */
+#define HX_FNV1A_INIT 14695981039346656037ULL
+unsigned long long hx_fnv1a(unsigned long long h, const char *s);
+
 /** A warning when an output log's name ends in .gz (any case): footnav
  *  writes no gzip, so the file is plain (and CSV unless fmt, the format
  *  asked for, is HX_FMT_BIN or the name ends in .bin before the .gz). */

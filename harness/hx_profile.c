@@ -8,6 +8,8 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "hx_cli.h"
+
 #define PROFILE_MAGIC "footnav-profile 1"
 
 typedef struct {
@@ -331,7 +333,7 @@ int hx_profile_implausible(const fnav_profile_t *p, char *msg, size_t n)
 
 /* 1 when the file named @p path was warned about already, else 0 (then
  * remembered). Each file warned about is kept as the 64-bit FNV-1a hash of
- * its name as given, so that loading A, B, A warns about A once (the last
+ * its name as given (hx_fnv1a), so that loading A, B, A warns about A once (the last
  * one alone would warn about A twice). A full table remembers no
  * more: a file warned about after the first HX_PROFILE_WARNED_MAX is
  * warned about at each load (repeated). Two names with the same hash would
@@ -341,12 +343,8 @@ static int profile_warned(const char *path)
 {
     static unsigned long long seen[HX_PROFILE_WARNED_MAX];
     static size_t nseen;
-    unsigned long long h = 14695981039346656037ULL;
+    const unsigned long long h = hx_fnv1a(HX_FNV1A_INIT, path);
     size_t i;
-    for (; *path != '\0'; path++) {
-        h ^= (unsigned char)*path;
-        h *= 1099511628211ULL;
-    }
     for (i = 0; i < nseen; i++) {
         if (seen[i] == h) {
             return 1;
