@@ -351,6 +351,9 @@ double sg_quantile_sorted(const double *x, int n, double q);
  *  standard errors (a drift's, a likelihood's) and NaN ones stay as they
  *  are. Reporting only: no decision reads se. */
 void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok, int S);
+/** 1 when parameter k of e has the refits' 68 % interval beside its se
+ *  (a finite se from at least SG_CI_MIN_REFITS refits), else 0. */
+int sg_has_ci(const sg_effect_t *e, int k);
 
 /** Find an effect in a model (index or -1). */
 int sg_model_find(const sg_chmodel_t *m, int id);

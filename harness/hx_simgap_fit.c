@@ -777,6 +777,11 @@ double sg_quantile_sorted(const double *x, int n, double q)
     return x[j] + (h - (double)j) * (x[j + 1] - x[j]);
 }
 
+int sg_has_ci(const sg_effect_t *e, int k)
+{
+    return isfinite(e->se[k]) && e->nrefit[k] >= SG_CI_MIN_REFITS && isfinite(e->ci_lo[k]) && isfinite(e->ci_hi[k]);
+}
+
 void sg_se_from_refits(sg_chmodel_t *m, const sg_chmodel_t *fits, const int *ok, int S)
 {
     double x[SG_MAX_TWINS]; /* one parameter's refit values, in refit order */

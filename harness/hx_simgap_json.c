@@ -31,7 +31,7 @@ static void ci_items(const sg_effect_t *e, int k, int no_se, cJSON **ci, cJSON *
 {
     const int c = no_se || !isfinite(e->se[k]) ? 0 : e->nrefit[k];
     *n = c > 0 ? cJSON_CreateNumber((double)c) : cJSON_CreateNull();
-    if (c >= SG_CI_MIN_REFITS && isfinite(e->ci_lo[k]) && isfinite(e->ci_hi[k])) {
+    if (c > 0 && sg_has_ci(e, k)) {
         *ci = cJSON_CreateArray();
         cJSON_AddItemToArray(*ci, cJSON_CreateNumber(e->ci_lo[k]));
         cJSON_AddItemToArray(*ci, cJSON_CreateNumber(e->ci_hi[k]));

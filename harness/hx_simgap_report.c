@@ -52,11 +52,6 @@ static const char *limit_text(const sg_effect_t *e, int k)
 
 /* Whether parameter k of e has the refits' 68 % interval (as the JSON's
  * ci68: an se from SG_CI_MIN_REFITS refits or more). */
-static int has_ci(const sg_effect_t *e, int k)
-{
-    return isfinite(e->se[k]) && e->nrefit[k] >= SG_CI_MIN_REFITS && isfinite(e->ci_lo[k]) && isfinite(e->ci_hi[k]);
-}
-
 /* The line under a channel's baseline: where the middle 68 % of the twins'
  * refits of each baseline parameter lie (docs/simgap.md, section 3), with
  * how many refits; nothing when no parameter has an interval. no_tau: the
@@ -64,7 +59,7 @@ static int has_ci(const sg_effect_t *e, int k)
 static void print_ci(FILE *f, int ch, const sg_effect_t *w, const sg_effect_t *a, int no_tau)
 {
     const char *u = sg_channel_unit(ch);
-    const int hw = has_ci(w, 0), hs = has_ci(a, 1), ht = !no_tau && has_ci(a, 0);
+    const int hw = sg_has_ci(w, 0), hs = sg_has_ci(a, 1), ht = !no_tau && sg_has_ci(a, 0);
     int n = 0;
     if (!hw && !hs && !ht) {
         return;
