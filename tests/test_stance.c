@@ -1376,6 +1376,62 @@ static void test_foot_strike_time_jump(void **state)
     }
 }
 
+/* The foot-strike search across the natural wrap of its microsecond stamps
+ * (modulo 2^32 us, every 71.6 min of a long run): the gait of
+ * test_foot_strike_time_jump with every stamp moved so that the heel impact
+ * (2.98 s in) lies 5 ms before, or 0.5 ms after, a multiple of 2^32 us, the
+ * stance it ends after it, after one wrap (71.6 min in) and after 2000 (99.4
+ * days in); also a wrap between the swing's start and the impact. The
+ * strike is the impact's sample, to the microsecond, as without the offset. */
+static void test_foot_strike_across_wrap(void **state)
+{
+    static const int64_t wraps[3] = { 1, 2000, 7 };
+    static const double before_s[3] = { 2.985, 2.985, 2.9795 };
+    static const double late_s[3] = { 0.0, 0.0, 0.2 };
+    int pass;
+    (void)state;
+    for (pass = 0; pass < 3; pass++) {
+        static fnav_stance_t st;
+        fnav_stance_config_t c = fnav_stance_config_default;
+        const int64_t off_ns = wraps[pass] * (int64_t)4294967296LL * 1000 - (int64_t)llround(before_s[pass] * 1e9) +
+                               (int64_t)llround(late_s[pass] * 1e9);
+        const int64_t wrap_ns = wraps[pass] * (int64_t)4294967296LL * 1000;
+        fnav_stance_out_t o;
+        long k;
+        int strikes = 0;
+        c.rate_hz = FNAV_R(100.0);
+        assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
+        for (k = 0; k < 400; k++) {
+            const double t = (double)k / 100.0, ph = fmod(t, 1.0);
+            double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+            fnav_sample_t s;
+            if (t > 1.0 && ph >= 0.6) {
+                const double u = (ph - 0.6) / 0.4;
+                w[1] = 3.0 * sin(3.14159265358979 * u);
+                f[0] = 5.0 * sin(6.28318530717959 * u);
+                if (ph >= 0.98) {
+                    f[2] = -60.0; /* the heel impact, 2.98 s in the second swing */
+                }
+            }
+            s = sample(k, 100.0, f, w);
+            s.t_ns += off_ns;
+            assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
+            while (fnav_stance_pop(&st, &o) == FNAV_OK) {
+                if ((o.events & FNAV_STANCE_EV_FOOT_STRIKE) != 0u && o.sample.seq >= 299u) {
+                    strikes++;
+                    assert_true(o.fs_t_ns <= o.swing_t1_ns);
+                    assert_true(llabs(o.fs_t_ns - (2980000000LL + off_ns)) <= 1000); /* the impact, to the us */
+                    /* the wrap lies between the impact and the stance (the first two), or
+                     * between the swing's start and the impact (the third) */
+                    assert_true(pass == 2 ? o.fs_t_ns > wrap_ns : o.fs_t_ns < wrap_ns);
+                    assert_true(o.swing_t1_ns > wrap_ns);
+                }
+            }
+        }
+        assert_int_equal(strikes, 1);
+    }
+}
+
 /* fnav_stance_cut: 0 until the rate is known; at 200 Hz nothing is cut;
  * at 2 kHz the shortest ZUPT run (19 of 20 ms: half window 25 + 40 + 1 > 64),
  * at 4 kHz the window too (63 of 101 samples) with the default ring of 64;
@@ -1809,6 +1865,7 @@ int main(void)
         cmocka_unit_test(test_counters_long_run),
         cmocka_unit_test(test_rest_run_long),
         cmocka_unit_test(test_foot_strike_time_jump),
+        cmocka_unit_test(test_foot_strike_across_wrap),
         cmocka_unit_test(test_cut_durations),
         cmocka_unit_test(test_zero_specific_force),
         cmocka_unit_test(test_zupt_cycle_slow_gait),
