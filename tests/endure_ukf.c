@@ -1,0 +1,179 @@
+/* Endurance of the float32 UKF: two measurements of what rounding does on
+ * long runs (docs/navigation.md, "Long runs in float32: two things rounding
+ * does to the covariance"; docs/frames.md, "Frames"). Not a suite: it prints its table
+ * and exits 0 (non-zero only when a step fails). Build it in the float and
+ * the double build and compare:
+ *
+ *   make build/host/tests/endure_ukf && build/host/tests/endure_ukf far
+ *   make BUILD=build/double FNAV_DEFS=-DFNAV_USE_DOUBLE=1 build/double/tests/endure_ukf
+ *
+ * far [STEPS]: a walk-like motion at 200 Hz (stance 0.4 s with a ZUPT per
+ *   sample, swing 0.6 s pitching at up to 3 rad/s, turning a little),
+ *   STEPS predictions (24,000: two minutes), run from the origin and from
+ *   (D, -D, 0) for D from 30 m to 10 km. The flat-earth strapdown does not
+ *   read the position, so in exact arithmetic the two runs carry the same
+ *   covariance and the same displacement. Printed: the largest difference of
+ *   a covariance entry with a position row (in units of the two states'
+ *   sds), the ratio of the x position sds, and the difference of the
+ *   displacements. The control row starts at the origin with 1e-6 m/s more
+ *   velocity, to show how much the filter amplifies a tiny perturbation.
+ *
+ * stand RATE_HZ HOURS P0_RAD2 [GYRO_NOISE]: a level stand with a ZUPT per
+ *   sample from a yaw variance P0; the yaw variance every 10 minutes and
+ *   its growth after the first 10 minutes (the bias's transient) against
+ *   GYRO_NOISE^2 t, the gyro white noise's random walk (rad/s/sqrt(Hz);
+ *   default the UKF's default). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "footnav/footnav.h"
+
+static const double k_g = 9.80665;
+
+static fnav_ukf_init_sd_t sd_default(void)
+{
+    fnav_ukf_init_sd_t sd;
+    int i;
+    for (i = 0; i < 3; i++) {
+        sd.att_rad[i] = FNAV_R(0.01);
+        sd.gyro_bias_rps[i] = FNAV_R(0.001);
+        sd.accel_bias_mps2[i] = FNAV_R(0.02);
+    }
+    sd.vel_mps = FNAV_R(0.01);
+    sd.pos_m = FNAV_R(0.001);
+    return sd;
+}
+
+static fnav_ukf_t g_a, g_b;
+
+/* one run of "far": 0 on success */
+static int far_run(int cf, double dist_m, int control, long steps)
+{
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    const fnav_ukf_init_sd_t sd = sd_default();
+    const fnav_vec3_t far = fnav_vec3((fnav_real_t)dist_m, (fnav_real_t)-dist_m, FNAV_R(0.0));
+    double worst = 0.0, dmax = 0.0, sdr;
+    long k;
+    int i, j;
+    c.closed_form = cf;
+    if (fnav_ukf_init(&g_a, &c) != FNAV_OK || fnav_ukf_init(&g_b, &c) != FNAV_OK ||
+        fnav_ukf_start(&g_a, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd) != FNAV_OK ||
+        fnav_ukf_start(&g_b, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd) != FNAV_OK) {
+        return 1;
+    }
+    if (control) {
+        g_b.vel_mps.v[0] = FNAV_R(1.0e-6);
+    } else {
+        g_b.pos_m = far;
+    }
+    for (k = 0; k < steps; k++) {
+        const double t = (double)k / 200.0, ph = fmod(t, 1.0);
+        fnav_vec3_t w = fnav_vec3_zero(), fb = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
+        if (ph >= 0.4) {
+            const double u = (ph - 0.4) / 0.6;
+            w.v[1] = (fnav_real_t)(3.0 * sin(6.28318530717959 * u));
+            w.v[2] = (fnav_real_t)(0.2 * sin(3.14159265358979 * u));
+            fb.v[0] = (fnav_real_t)(8.0 * sin(6.28318530717959 * u));
+        }
+        if (fnav_ukf_predict(&g_a, w, fb, FNAV_R(0.005)) != FNAV_OK ||
+            fnav_ukf_predict(&g_b, w, fb, FNAV_R(0.005)) != FNAV_OK) {
+            return 2;
+        }
+        if (ph < 0.4 && (fnav_ukf_zupt(&g_a, w) != FNAV_OK || fnav_ukf_zupt(&g_b, w) != FNAV_OK)) {
+            return 3;
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        const double d = ((double)g_b.pos_m.v[i] - (control ? 0.0 : (double)far.v[i])) - (double)g_a.pos_m.v[i];
+        dmax = fabs(d) > dmax ? fabs(d) : dmax;
+        for (j = 0; j < FNAV_UKF_N; j++) {
+            const double pa = (double)fnav_ukf_cov(&g_a, FNAV_UKF_P + i, j);
+            const double pb = (double)fnav_ukf_cov(&g_b, FNAV_UKF_P + i, j);
+            const double s =
+                sqrt((double)fnav_ukf_cov(&g_a, FNAV_UKF_P + i, FNAV_UKF_P + i) * (double)fnav_ukf_cov(&g_a, j, j));
+            worst = fabs(pb - pa) / s > worst ? fabs(pb - pa) / s : worst;
+        }
+    }
+    sdr = sqrt((double)fnav_ukf_cov(&g_b, FNAV_UKF_P, FNAV_UKF_P) / (double)fnav_ukf_cov(&g_a, FNAV_UKF_P, FNAV_UKF_P));
+    if (control) {
+        printf("%d  control  %8.3g  %6.3f  %8.4f  %6.2f\n", cf, worst, sdr, dmax,
+               hypot((double)g_a.pos_m.v[0], (double)g_a.pos_m.v[1]));
+    } else {
+        printf("%d  %7.0f  %8.3g  %6.3f  %8.4f  %6.2f\n", cf, dist_m, worst, sdr, dmax,
+               hypot((double)g_a.pos_m.v[0], (double)g_a.pos_m.v[1]));
+    }
+    return 0;
+}
+
+static int far_table(long steps)
+{
+    static const double dist_m[7] = { 30.0, 100.0, 300.0, 500.0, 1000.0, 3000.0, 10000.0 };
+    int cf, d;
+    printf("%s build, %ld steps at 200 Hz\n", sizeof(fnav_real_t) == sizeof(float) ? "float" : "double", steps);
+    printf("closed_form  distance_m  cov_diff_sdsd  pos_x_sd_ratio  displacement_diff_m  displacement_m\n");
+    for (cf = 1; cf >= 0; cf--) {
+        for (d = 0; d < 7; d++) {
+            if (far_run(cf, dist_m[d], 0, steps) != 0) {
+                return 1;
+            }
+        }
+        if (far_run(cf, 0.0, 1, steps) != 0) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static int stand(double rate_hz, double hours, double p0, double noise)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    const fnav_ukf_init_sd_t sd = sd_default();
+    const long n = (long)(rate_hz * hours * 3600.0 + 0.5), every = (long)(rate_hz * 600.0 + 0.5);
+    const fnav_real_t dt = (fnav_real_t)(1.0 / rate_hz);
+    const fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
+    double p10 = 0.0;
+    long k;
+    int i;
+    if (noise > 0.0) {
+        for (i = 0; i < 3; i++) {
+            c.gyro_noise_rps_rthz[i] = (fnav_real_t)noise;
+        }
+    }
+    if (fnav_ukf_init(&f, &c) != FNAV_OK ||
+        fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd) != FNAV_OK) {
+        return 1;
+    }
+    fnav_ukf_set_cov(&f, FNAV_UKF_A + 2, FNAV_UKF_A + 2, (fnav_real_t)p0);
+    noise = (double)c.gyro_noise_rps_rthz[2];
+    printf("%s build, %.0f Hz, yaw variance from %.3g rad^2, gyro noise z %.4g rad/s/sqrt(Hz)\n",
+           sizeof(fnav_real_t) == sizeof(float) ? "float" : "double", rate_hz, p0, noise);
+    for (k = 1; k <= n; k++) {
+        if (fnav_ukf_predict(&f, fnav_vec3_zero(), fz, dt) != FNAV_OK || fnav_ukf_zupt(&f, fnav_vec3_zero()) != FNAV_OK) {
+            return 2;
+        }
+        if (k % every == 0) {
+            const double p = (double)fnav_ukf_cov(&f, FNAV_UKF_A + 2, FNAV_UKF_A + 2), t = (double)k / rate_hz;
+            if (k == every) {
+                p10 = p;
+            }
+            printf("%7.0f s  yaw variance %.7e rad^2  growth since 600 s %.4g of noise^2 t\n", t, p,
+                   t > 600.0 ? (p - p10) / (noise * noise * (t - 600.0)) : 0.0);
+        }
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc >= 2 && strcmp(argv[1], "far") == 0) {
+        return far_table(argc >= 3 ? atol(argv[2]) : 24000L);
+    }
+    if (argc >= 5 && strcmp(argv[1], "stand") == 0) {
+        return stand(atof(argv[2]), atof(argv[3]), atof(argv[4]), argc >= 6 ? atof(argv[5]) : 0.0);
+    }
+    fprintf(stderr, "usage: endure_ukf far [STEPS] | stand RATE_HZ HOURS P0_RAD2 [GYRO_NOISE_RPS_RTHZ]\n");
+    return 2;
+}
