@@ -931,7 +931,8 @@ static void sigma_att(fnav_ukf_t *f, const fnav_strapdown_incr_t *inc, const fna
             fnav_vec3_t dth = fnav_vec3_zero(), ddv = fnav_vec3_zero(), dv, dp, da;
             xi.q_nb = apply_att(f->q_nb, fnav_vec3(sp_off(f, oa, jj, g), sp_off(f, oa + 1, jj, g), sp_off(f, oa + 2, jj, g)));
             xi.vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3(g * f->U[ov][jj], g * f->U[ov + 1][jj], g * f->U[ov + 2][jj]));
-            xi.pos_m = fnav_vec3_add(f->pos_m, fnav_vec3(g * f->U[op][jj], g * f->U[op + 1][jj], g * f->U[op + 2][jj]));
+            /* the offset only: positions relative to the start's (fnav_ukf_predict) */
+            xi.pos_m = fnav_vec3(g * f->U[op][jj], g * f->U[op + 1][jj], g * f->U[op + 2][jj]);
             if (obg >= 0) {
                 dth = fnav_vec3(g * f->U[obg][jj], g * f->U[obg + 1][jj], g * f->U[obg + 2][jj]);
                 ddv = fnav_vec3(g * f->U[oba][jj], g * f->U[oba + 1][jj], g * f->U[oba + 2][jj]);
@@ -1000,7 +1001,16 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
                               fnav_vec3_sub(accel_mps2, f->ba_mps2), dt_s, &inc);
     x0.q_nb = f->q_nb;
     x0.vel_mps = f->vel_mps;
-    x0.pos_m = f->pos_m;
+    /* Positions relative to the start's: the flat-earth strapdown does not
+     * read the position, so the centre and the sigma points are propagated
+     * from 0 (the centre) and from their offsets alone, and their
+     * differences D are formed between small numbers. Formed from f->pos_m,
+     * 10 km away (float spacing 0.98 mm), the offsets and one-step
+     * differences of a millimetre or less rounded away or to whole
+     * millimetres, and the covariance's position rows went wrong
+     * (test_ukf test_far_from_origin; docs/frames.md). The centre's sum
+     * f->pos_m + increment + mean is formed in the same order as before. */
+    x0.pos_m = fnav_vec3_zero();
     fnav_strapdown_propagate(&c->strapdown, &x0, &inc, fnav_vec3_zero(), fnav_vec3_zero());
     q0inv = fnav_quat_conj(x0.q_nb);
 
@@ -1063,7 +1073,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
             }
             xi.q_nb = apply_att(f->q_nb, fnav_vec3_from(&d[oa]));
             xi.vel_mps = fnav_vec3_add(f->vel_mps, fnav_vec3_from(&d[ov]));
-            xi.pos_m = fnav_vec3_add(f->pos_m, fnav_vec3_from(&d[op]));
+            xi.pos_m = fnav_vec3_from(&d[op]); /* relative to the start's, as x0's */
             fnav_strapdown_propagate(&c->strapdown, &xi, &inc,
                                      fnav_vec3_scale(obg >= 0 ? fnav_vec3_from(&d[obg]) : fnav_vec3_zero(), -dt_s),
                                      fnav_vec3_scale(oba >= 0 ? fnav_vec3_from(&d[oba]) : fnav_vec3_zero(), -dt_s));
@@ -1130,7 +1140,7 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     vc = x0.vel_mps;
     x0.q_nb = apply_att(x0.q_nb, fnav_vec3_from(&m[oa]));
     x0.vel_mps = fnav_vec3_add(x0.vel_mps, fnav_vec3_from(&m[ov]));
-    x0.pos_m = fnav_vec3_add(x0.pos_m, fnav_vec3_from(&m[op]));
+    x0.pos_m = fnav_vec3_add(fnav_vec3_add(f->pos_m, x0.pos_m), fnav_vec3_from(&m[op]));
     if (!state_finite(&x0)) {
         f->health.diverged++;
         return FNAV_E_DIVERGED;
