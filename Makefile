@@ -113,6 +113,25 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TESTHELP_OBJ) $(HXLIB) $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(SAN) -o $@ $^ $(HXLIB) $(LDLIBS_TEST)
 
+# tests/test_build: a program of files compiled apart, tests/build_other.c
+# three times over besides the suite (build_other.h): with the library's
+# options (same), with fnav_real_t flipped, float <-> double (real), and
+# with the firmware's options (fw); each then calls every _init, which says
+# FNAV_E_BUILD unless the file's FNAV_BUILD_TAG is the library's.
+BUILD_OTHER_OBJ := $(BUILD)/obj/tests/build_other_same.o $(BUILD)/obj/tests/build_other_real.o \
+                   $(BUILD)/obj/tests/build_other_fw.o
+BUILD_OTHER_DEFS_same :=
+BUILD_OTHER_DEFS_real := -DBUILD_OTHER_FLIP_REAL=1
+BUILD_OTHER_DEFS_fw := -DFNAV_CONFIG_FILE='"fnav_cm_fw_config.h"'
+
+$(BUILD)/obj/tests/build_other_%.o: tests/build_other.c $(DEFS_STAMP)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(BUILD_OTHER_DEFS_$*) -DBUILD_OTHER_NAME=$* $(CFLAGS_HOST) -MMD -MP -c $< -o $@
+
+$(BUILD)/tests/test_build: $(BUILD)/obj/tests/test_build.o $(BUILD_OTHER_OBJ) $(TESTHELP_OBJ) $(HXLIB) $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(SAN) -o $@ $^ $(HXLIB) $(LDLIBS_TEST)
+
 # The core must not allocate, print or exit (checked on every build).
 nm-check: $(LIB)
 	@if nm -u $(LIB) | grep -E -w '$(FORBIDDEN)'; then \

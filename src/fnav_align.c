@@ -24,8 +24,11 @@ static void reset_period(fnav_align_period_t *p)
     p->t0_ns = p->t_last_ns = 0;
 }
 
-fnav_status_t fnav_align_init(fnav_align_t *al, const fnav_align_config_t *cfg)
+fnav_status_t fnav_align_init_tagged(fnav_align_t *al, const fnav_align_config_t *cfg, uint64_t build_tag)
 {
+    if (build_tag != FNAV_BUILD_TAG) {
+        return FNAV_E_BUILD; /* the caller's objects have another layout: write nothing */
+    }
     if (al == NULL || cfg == NULL) {
         return FNAV_E_ARG;
     }

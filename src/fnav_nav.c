@@ -166,9 +166,12 @@ fnav_real_t fnav_nav_att_sd_max_rad(const fnav_nav_config_t *cfg)
     return fnav_ukf_att_sd_max(&uc);
 }
 
-fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
+fnav_status_t fnav_nav_init_tagged(fnav_nav_t *nav, const fnav_nav_config_t *cfg, uint64_t build_tag)
 {
     fnav_status_t st;
+    if (build_tag != FNAV_BUILD_TAG) {
+        return FNAV_E_BUILD; /* the caller's objects have another layout: write nothing */
+    }
     if (nav == NULL || cfg == NULL) {
         return FNAV_E_ARG;
     }

@@ -1,4 +1,4 @@
-/* Port-layer call helpers and status strings (no OS calls here). */
+/* Port-layer call helpers, status strings and the build tag (no OS calls here). */
 #include "footnav/fnav_port.h"
 
 const char *fnav_status_str(fnav_status_t status)
@@ -21,8 +21,14 @@ const char *fnav_status_str(fnav_status_t status)
     case FNAV_E_TRUNCATED: return "input truncated";
     case FNAV_E_UNSUPPORTED: return "unsupported";
     case FNAV_E_DIVERGED: return "estimator diverged";
+    case FNAV_E_BUILD: return "built with other layout options than the library";
     }
     return "unknown status";
+}
+
+uint64_t fnav_build_tag(void)
+{
+    return FNAV_BUILD_TAG;
 }
 
 fnav_status_t fnav_port_read(const fnav_port_t *port, fnav_sample_t *sample)

@@ -46,11 +46,14 @@ static int pos_finite(fnav_real_t x)
     return fnav_isfinite(x) && x > FNAV_R(0.0);
 }
 
-fnav_status_t fnav_stance_init(fnav_stance_t *st, const fnav_stance_config_t *cfg)
+fnav_status_t fnav_stance_init_tagged(fnav_stance_t *st, const fnav_stance_config_t *cfg, uint64_t build_tag)
 {
     const fnav_stance_config_t *c = cfg;
     size_t i;
     unsigned char *p = (unsigned char *)st;
+    if (build_tag != FNAV_BUILD_TAG) {
+        return FNAV_E_BUILD; /* the caller's objects have another layout: write nothing */
+    }
     if (st == NULL || cfg == NULL) {
         return FNAV_E_ARG;
     }

@@ -18,7 +18,7 @@ static inline void kahan_add(fnav_real_t *s, fnav_real_t *c, fnav_real_t v)
     *s = t;
 }
 
-fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
+fnav_status_t fnav_welch_init_tagged(fnav_welch_t *w, const fnav_welch_config_t *cfg, uint64_t build_tag)
 {
     const fnav_welch_config_t *c = cfg != NULL ? cfg : &fnav_welch_config_default;
     fnav_welch_config_t cc;
@@ -27,6 +27,9 @@ fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
      * calls on the Cortex-M4F, 1.9 KB of flash for this one init (test_psd.sh) */
     fnav_real_t s1 = FNAV_R(0.0), s1c = FNAV_R(0.0), s2 = FNAV_R(0.0), s2c = FNAV_R(0.0);
     fnav_real_t w1r = FNAV_R(0.0), w1rc = FNAV_R(0.0), w1i = FNAV_R(0.0), w1ic = FNAV_R(0.0);
+    if (build_tag != FNAV_BUILD_TAG) {
+        return FNAV_E_BUILD; /* the caller's objects have another layout: write nothing */
+    }
     if (w == NULL) {
         return FNAV_E_ARG;
     }

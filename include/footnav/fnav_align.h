@@ -122,9 +122,19 @@ typedef struct {
     fnav_real_t refused_f_mps2;      /**< mean |f| of the last period refused for it (FNAV_ALIGN_GRAVITY_TOL), m/s^2; 0: none */
 } fnav_align_t;
 
+/** fnav_align_init() with the caller's FNAV_BUILD_TAG (call fnav_align_init(), which passes it):
+ *  FNAV_E_BUILD, *al not written, when build_tag is not the library's. */
+FNAV_WARN_UNUSED fnav_status_t fnav_align_init_tagged(fnav_align_t *al, const fnav_align_config_t *cfg,
+                                                      uint64_t build_tag);
+
 /** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (non-positive or non-finite
- *          values, max < min, short > min, still_ratio <= 1, negative prior). */
-FNAV_WARN_UNUSED fnav_status_t fnav_align_init(fnav_align_t *al, const fnav_align_config_t *cfg);
+ *          values, max < min, short > min, still_ratio <= 1, negative prior).
+ *  FNAV_E_BUILD when this file was compiled with other layout options than the library (FNAV_BUILD_TAG,
+ *  fnav_types.h; an inline function passes it): nothing written. */
+static inline FNAV_WARN_UNUSED fnav_status_t fnav_align_init(fnav_align_t *al, const fnav_align_config_t *cfg)
+{
+    return fnav_align_init_tagged(al, cfg, FNAV_BUILD_TAG);
+}
 
 /**
  * Feed one sample with the detector's decision.

@@ -212,6 +212,11 @@ typedef struct {
                                          before it (none held) */
 } fnav_nav_t;
 
+/** fnav_nav_init() with the caller's FNAV_BUILD_TAG (call fnav_nav_init(), which passes it):
+ *  FNAV_E_BUILD, *nav not written, when build_tag is not the library's. */
+FNAV_WARN_UNUSED fnav_status_t fnav_nav_init_tagged(fnav_nav_t *nav, const fnav_nav_config_t *cfg,
+                                                    uint64_t build_tag);
+
 /** Initialise, or start over: every earlier state and counter is
  *  dropped, so a second call resets the navigator. *cfg is copied (it need
  *  not outlive the call); it may be the navigator's own, &nav->cfg, to
@@ -219,8 +224,13 @@ typedef struct {
  *  @return FNAV_OK, FNAV_E_ARG (NULL; *nav untouched), FNAV_E_CONFIG
  *          (profile or any module's configuration invalid, or an initial
  *          tilt or yaw sd above fnav_nav_att_sd_max_rad(); *nav is left
- *          zeroed, not initialised: the other calls say FNAV_E_STATE). */
-FNAV_WARN_UNUSED fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg);
+ *          zeroed, not initialised: the other calls say FNAV_E_STATE).
+ *  FNAV_E_BUILD when this file was compiled with other layout options than the library (FNAV_BUILD_TAG,
+ *  fnav_types.h; an inline function passes it): nothing written. */
+static inline FNAV_WARN_UNUSED fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
+{
+    return fnav_nav_init_tagged(nav, cfg, FNAV_BUILD_TAG);
+}
 
 /** The largest tilt_sd_rad and yaw_sd_rad fnav_nav_init takes with cfg's
  *  filter, rad (fnav_ukf_att_sd_max): 0.707 rad = 40.5 deg with the

@@ -158,7 +158,8 @@ typedef enum {
     FNAV_E_CRC = -11,        /**< integrity check failed */
     FNAV_E_TRUNCATED = -12,  /**< input ends inside a record */
     FNAV_E_UNSUPPORTED = -13,/**< feature or version not supported */
-    FNAV_E_DIVERGED = -14    /**< estimator diverged; reset required */
+    FNAV_E_DIVERGED = -14,   /**< estimator diverged; reset required */
+    FNAV_E_BUILD = -15       /**< caller compiled with other layout options than the library (FNAV_BUILD_TAG) */
 } fnav_status_t;
 
 #if defined(__GNUC__) || defined(__clang__)
@@ -169,6 +170,46 @@ typedef enum {
 
 /** Short constant English text of a status (never NULL). */
 const char *fnav_status_str(fnav_status_t status);
+
+/* ------------------------------------------------------------------------ */
+/* Build tag                                                                 */
+/* ------------------------------------------------------------------------ */
+
+/** log2 of FNAV_WELCH_MAX_NFFT (a power of two in 8..65536,
+ *  fnav_config_check.h), as a constant expression. */
+#define FNAV_BUILD_NFFT_LOG2                                                                             \
+    (3 + (FNAV_WELCH_MAX_NFFT >= 16) + (FNAV_WELCH_MAX_NFFT >= 32) + (FNAV_WELCH_MAX_NFFT >= 64) +       \
+     (FNAV_WELCH_MAX_NFFT >= 128) + (FNAV_WELCH_MAX_NFFT >= 256) + (FNAV_WELCH_MAX_NFFT >= 512) +        \
+     (FNAV_WELCH_MAX_NFFT >= 1024) + (FNAV_WELCH_MAX_NFFT >= 2048) + (FNAV_WELCH_MAX_NFFT >= 4096) +     \
+     (FNAV_WELCH_MAX_NFFT >= 8192) + (FNAV_WELCH_MAX_NFFT >= 16384) + (FNAV_WELCH_MAX_NFFT >= 32768) +   \
+     (FNAV_WELCH_MAX_NFFT >= 65536))
+
+/** The options that set a public struct's layout (fnav_config.h), packed
+ *  into 64 bits, each in its own field wide enough for the range
+ *  fnav_config_check.h allows, so two option sets never share a tag:
+ *  bits 0-3 sizeof(fnav_real_t) (FNAV_USE_DOUBLE: 4 or 8), 4-14
+ *  FNAV_STANCE_MAX_WINDOW, 15-27 FNAV_STANCE_EVENT_BUF, 28-32
+ *  FNAV_ALLAN_MAX_LEVELS, 33-36 FNAV_ALLAN_RING0_LOG2, 37-39
+ *  FNAV_ALLAN_CASCADE_LAG_LOG2, 40-47 FNAV_ALLAN_MAX_POINTS, 48-52
+ *  log2 FNAV_WELCH_MAX_NFFT, 53-59 FNAV_IMUERR_FLICKER_POLES, 60-63 the
+ *  layout of the tag itself (1). FNAV_ENABLE_ASSERT, FNAV_NAV_TIME_RESYNC
+ *  and FNAV_INPUT_MAX_ABS change what the library's code does, not a
+ *  layout, and are not in it. A macro: it takes the options of the file it
+ *  is expanded in. Every public _init passes the caller's to the library,
+ *  which answers FNAV_E_BUILD, writing nothing, when it is not its own
+ *  (docs/firmware.md, "A library and a program built with other options"). */
+#define FNAV_BUILD_TAG                                                                                   \
+    ((1ULL << 60) | ((sizeof(fnav_real_t) + 0ULL) << 0) | ((FNAV_STANCE_MAX_WINDOW + 0ULL) << 4) |       \
+     ((FNAV_STANCE_EVENT_BUF + 0ULL) << 15) | ((FNAV_ALLAN_MAX_LEVELS + 0ULL) << 28) |                   \
+     ((FNAV_ALLAN_RING0_LOG2 + 0ULL) << 33) | ((FNAV_ALLAN_CASCADE_LAG_LOG2 + 0ULL) << 37) |             \
+     ((FNAV_ALLAN_MAX_POINTS + 0ULL) << 40) | ((FNAV_BUILD_NFFT_LOG2 + 0ULL) << 48) |                    \
+     ((FNAV_IMUERR_FLICKER_POLES + 0ULL) << 53))
+
+/** The FNAV_BUILD_TAG the library was compiled with: a program that calls
+ *  a library function before its first _init (fnav_profile_builtin() on
+ *  its configuration, say) compares it with its own FNAV_BUILD_TAG first;
+ *  on a mismatch, print both in hex and compare the fields above. */
+uint64_t fnav_build_tag(void);
 
 /* ------------------------------------------------------------------------ */
 /* IMU sample                                                                */

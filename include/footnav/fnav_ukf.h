@@ -232,6 +232,11 @@ typedef struct {
     fnav_ukf_health_t health;
 } fnav_ukf_t;
 
+/** fnav_ukf_init() with the caller's FNAV_BUILD_TAG (call fnav_ukf_init(), which passes it):
+ *  FNAV_E_BUILD, *f not written, when build_tag is not the library's. */
+FNAV_WARN_UNUSED fnav_status_t fnav_ukf_init_tagged(fnav_ukf_t *f, const fnav_ukf_config_t *cfg,
+                                                    uint64_t build_tag);
+
 /**
  * Initialise (validates the configuration; the filter waits for
  * fnav_ukf_start()), or start over: every earlier state and counter is
@@ -249,8 +254,13 @@ typedef struct {
  *         standard deviation, measurement or bias sigma, lever or settling
  *         sd, whose square is 0 or not finite: in float32 below about
  *         1e-19 or above 1.8e19).
+ *         FNAV_E_BUILD when this file was compiled with other layout options than the library (FNAV_BUILD_TAG,
+ *         fnav_types.h; an inline function passes it): nothing written.
  */
-FNAV_WARN_UNUSED fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg);
+static inline FNAV_WARN_UNUSED fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
+{
+    return fnav_ukf_init_tagged(f, cfg, FNAV_BUILD_TAG);
+}
 
 /** A sigma point's attitude error, a GRP (a = 1, f = 4: magnitude 4
  *  tan(angle / 4)), is at most this large at the start: 3 is a rotation of

@@ -106,6 +106,11 @@ typedef struct {
     uint32_t nsamples;                         /**< samples pushed (at most 2^32 - 1) */
 } fnav_welch_t;
 
+/** fnav_welch_init() with the caller's FNAV_BUILD_TAG (call fnav_welch_init(), which passes it):
+ *  FNAV_E_BUILD, *w not written, when build_tag is not the library's. */
+FNAV_WARN_UNUSED fnav_status_t fnav_welch_init_tagged(fnav_welch_t *w, const fnav_welch_config_t *cfg,
+                                                      uint64_t build_tag);
+
 /**
  * Initialise.
  * @param w    estimator (caller-owned)
@@ -117,8 +122,13 @@ typedef struct {
  *         FNAV_INPUT_MAX_ABS, or FNAV_DETREND_GLOBAL with a symmetric window;
  *         *w is then not changed (one initialised before keeps its
  *         configuration and data; one never initialised stays zeroed).
+ *         FNAV_E_BUILD when this file was compiled with other layout options than the library (FNAV_BUILD_TAG,
+ *         fnav_types.h; an inline function passes it): nothing written.
  */
-FNAV_WARN_UNUSED fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg);
+static inline FNAV_WARN_UNUSED fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
+{
+    return fnav_welch_init_tagged(w, cfg, FNAV_BUILD_TAG);
+}
 
 /**
  * Add one sample; completes a segment every (nfft - overlap) samples once

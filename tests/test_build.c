@@ -1,0 +1,292 @@
+/* The build tag (fnav_types.h, FNAV_BUILD_TAG): a program whose files were
+ * compiled with other layout options than the library gets FNAV_E_BUILD
+ * from the first _init, and the library writes nothing into its object;
+ * one compiled with the library's options initialises as before. The
+ * other files are tests/build_other.c, compiled three ways by the Makefile
+ * (build_other.h); this file has the library's options. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "footnav/footnav.h"
+#include "build_other.h"
+
+/* an object of either layout: the largest of this build's, twice over
+ * (fnav_real_t double where the library's is float), suitably aligned */
+#define BIG_OBJ (sizeof(fnav_welch_t) > sizeof(fnav_nav_t) ? sizeof(fnav_welch_t) : sizeof(fnav_nav_t))
+static union {
+    long double ld;
+    int64_t i64;
+    void *p;
+    unsigned char b[2u * BIG_OBJ + 4096u];
+} g_obj;
+
+#define FILL 0xa5
+
+static size_t lib_size(int which)
+{
+    switch (which) {
+    case BO_NAV: return sizeof(fnav_nav_t);
+    case BO_UKF: return sizeof(fnav_ukf_t);
+    case BO_STANCE: return sizeof(fnav_stance_t);
+    case BO_ALIGN: return sizeof(fnav_align_t);
+    case BO_ALLAN: return sizeof(fnav_allan_t);
+    case BO_WELCH: return sizeof(fnav_welch_t);
+    case BO_FFT: return sizeof(fnav_fft_t);
+    case BO_IMUERR: return sizeof(fnav_imuerr_t);
+    default: return 0;
+    }
+}
+
+static const char *const k_names[BO_COUNT] = { "nav", "ukf", "stance", "align", "allan", "welch", "fft", "imuerr" };
+
+/* bytes of g_obj not FILL among the first n */
+static size_t changed_bytes(size_t n)
+{
+    size_t i, c = 0;
+    for (i = 0; i < n; i++) {
+        c += g_obj.b[i] != FILL;
+    }
+    return c;
+}
+
+typedef struct {
+    const char *name;
+    uint64_t (*tag)(void);
+    size_t (*size)(int which);
+    fnav_status_t (*init)(int which, void *obj);
+} other_t;
+
+static const other_t k_real = { "real", build_other_real_tag, build_other_real_size, build_other_real_init };
+static const other_t k_fw = { "fw", build_other_fw_tag, build_other_fw_size, build_other_fw_init };
+
+/* Every _init called from a file with other layout options: FNAV_E_BUILD,
+ * and not a byte of the object written (of the caller's size or the
+ * library's, the larger: before the check, the library's init wrote its own
+ * layout, past the end of the caller's smaller object). */
+static void check_mismatch(const other_t *o)
+{
+    int k;
+    printf("library tag 0x%016llx, %s file's 0x%016llx; fnav_nav_t: the library's %zu bytes, the file's %zu\n",
+           (unsigned long long)fnav_build_tag(), o->name, (unsigned long long)o->tag(), sizeof(fnav_nav_t),
+           o->size(BO_NAV));
+    assert_true(o->tag() != fnav_build_tag());
+    /* the layouts do differ: the navigator holds the stance detector (fw)
+     * and reals everywhere (real) */
+    assert_true(o->size(BO_NAV) != sizeof(fnav_nav_t));
+    for (k = 0; k < BO_COUNT; k++) {
+        size_t n = o->size(k) > lib_size(k) ? o->size(k) : lib_size(k);
+        fnav_status_t st;
+        assert_true(n > 0u && n <= sizeof g_obj.b);
+        memset(g_obj.b, FILL, n);
+        st = o->init(k, g_obj.b);
+        if (st != FNAV_E_BUILD || changed_bytes(n) != 0u) {
+            printf("%s file, fnav_%s_init: %s, %zu of %zu bytes written\n", o->name, k_names[k], fnav_status_str(st),
+                   changed_bytes(n), n);
+        }
+        assert_int_equal(st, FNAV_E_BUILD);
+        assert_int_equal(changed_bytes(n), 0);
+    }
+}
+
+static void test_float_double_mismatch(void **state)
+{
+    (void)state;
+    check_mismatch(&k_real);
+}
+
+static void test_firmware_options_mismatch(void **state)
+{
+    (void)state;
+    if (build_other_fw_tag() == fnav_build_tag()) {
+        printf("SKIP: the library was built with the firmware's options (fnav_cm_fw_config.h)\n");
+        skip();
+    }
+    check_mismatch(&k_fw);
+}
+
+/* A file compiled with the library's options: the same tag, the same
+ * objects, and every _init does its work (FNAV_OK, the object written). */
+static void test_same_options_match(void **state)
+{
+    int k;
+    (void)state;
+    assert_true(build_other_same_tag() == fnav_build_tag());
+    assert_true(FNAV_BUILD_TAG == fnav_build_tag());
+    for (k = 0; k < BO_COUNT; k++) {
+        size_t n = lib_size(k);
+        assert_int_equal(build_other_same_size(k), n);
+        memset(g_obj.b, FILL, n);
+        assert_int_equal(build_other_same_init(k, g_obj.b), FNAV_OK);
+        assert_true(changed_bytes(n) > 0u);
+    }
+}
+
+/* The tag's fields as fnav_types.h documents them: shift and width. */
+typedef struct {
+    const char *name;
+    unsigned shift, width;
+} field_t;
+enum { F_REAL, F_WINDOW, F_EVENT, F_LEVELS, F_RING0, F_LAG, F_POINTS, F_NFFT, F_POLES, F_FORMAT, F_COUNT };
+static const field_t k_fields[F_COUNT] = {
+    { "sizeof(fnav_real_t)", 0, 4 },          { "FNAV_STANCE_MAX_WINDOW", 4, 11 },
+    { "FNAV_STANCE_EVENT_BUF", 15, 13 },       { "FNAV_ALLAN_MAX_LEVELS", 28, 5 },
+    { "FNAV_ALLAN_RING0_LOG2", 33, 4 },        { "FNAV_ALLAN_CASCADE_LAG_LOG2", 37, 3 },
+    { "FNAV_ALLAN_MAX_POINTS", 40, 8 },        { "log2 FNAV_WELCH_MAX_NFFT", 48, 5 },
+    { "FNAV_IMUERR_FLICKER_POLES", 53, 7 },    { "tag layout", 60, 4 },
+};
+
+static uint64_t field(uint64_t tag, int f)
+{
+    return (tag >> k_fields[f].shift) & ((1ULL << k_fields[f].width) - 1u);
+}
+
+/* the fields tile the 64 bits, none overlapping */
+static void test_fields_tile(void **state)
+{
+    unsigned next = 0;
+    int f;
+    (void)state;
+    for (f = 0; f < F_COUNT; f++) {
+        assert_int_equal(k_fields[f].shift, next);
+        next += k_fields[f].width;
+    }
+    assert_int_equal(next, 64);
+}
+
+/* This build's tag holds this build's options; the other files' tags
+ * differ from it in the fields of the options they changed, only. */
+static void test_tag_fields(void **state)
+{
+    const uint64_t lib = fnav_build_tag(), real = build_other_real_tag(), fw = build_other_fw_tag();
+    int f;
+    (void)state;
+    assert_int_equal(field(lib, F_REAL), sizeof(fnav_real_t));
+    assert_int_equal(field(lib, F_WINDOW), FNAV_STANCE_MAX_WINDOW);
+    assert_int_equal(field(lib, F_EVENT), FNAV_STANCE_EVENT_BUF);
+    assert_int_equal(field(lib, F_LEVELS), FNAV_ALLAN_MAX_LEVELS);
+    assert_int_equal(field(lib, F_RING0), FNAV_ALLAN_RING0_LOG2);
+    assert_int_equal(field(lib, F_LAG), FNAV_ALLAN_CASCADE_LAG_LOG2);
+    assert_int_equal(field(lib, F_POINTS), FNAV_ALLAN_MAX_POINTS);
+    assert_int_equal(1ULL << field(lib, F_NFFT), FNAV_WELCH_MAX_NFFT);
+    assert_int_equal(field(lib, F_POLES), FNAV_IMUERR_FLICKER_POLES);
+    assert_int_equal(field(lib, F_FORMAT), 1);
+    /* real: only the size of fnav_real_t, 4 <-> 8 */
+    assert_int_equal(field(real, F_REAL), sizeof(fnav_real_t) == 4u ? 8u : 4u);
+    assert_true((real ^ lib) >> 4 == 0u);
+    /* fw: fnav_cm_fw_config.h sets the stance, Allan ring and Welch sizes,
+     * not the real type, the Allan levels or the flicker poles */
+    for (f = 0; f < F_COUNT; f++) {
+        int set_by_fw = f == F_WINDOW || f == F_EVENT || f == F_RING0 || f == F_LAG || f == F_POINTS || f == F_NFFT;
+        if (!set_by_fw) {
+            if (field(fw, f) != field(lib, f)) {
+                printf("fw file: %s differs\n", k_fields[f].name);
+            }
+            assert_true(field(fw, f) == field(lib, f));
+        }
+    }
+    assert_true(fw != lib);
+}
+
+/* Each option alone, at both ends of the range fnav_config_check.h allows,
+ * moves its own field, to its value, and no other (each is then put back
+ * to the library's value, read from the tag). */
+static void test_each_option_alone(void **state);
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_float_double_mismatch), cmocka_unit_test(test_firmware_options_mismatch),
+        cmocka_unit_test(test_same_options_match),    cmocka_unit_test(test_fields_tile),
+        cmocka_unit_test(test_tag_fields),            cmocka_unit_test(test_each_option_alone),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
+
+/* Last in the file: it redefines the options for the rest of it. */
+static void check_alone(uint64_t base, uint64_t t, int f, uint64_t value)
+{
+    const uint64_t mask = ((1ULL << k_fields[f].width) - 1u) << k_fields[f].shift;
+    if (field(t, f) != value || ((t ^ base) & ~mask) != 0u) {
+        printf("%s = %llu: tag 0x%016llx (base 0x%016llx)\n", k_fields[f].name, (unsigned long long)value,
+               (unsigned long long)t, (unsigned long long)base);
+    }
+    assert_true(field(t, f) == value);
+    assert_true(((t ^ base) & ~mask) == 0u);
+}
+
+static void test_each_option_alone(void **state)
+{
+    const uint64_t base = FNAV_BUILD_TAG;
+    (void)state;
+#undef FNAV_STANCE_MAX_WINDOW
+#define FNAV_STANCE_MAX_WINDOW 3
+    check_alone(base, FNAV_BUILD_TAG, F_WINDOW, 3);
+#undef FNAV_STANCE_MAX_WINDOW
+#define FNAV_STANCE_MAX_WINDOW 1024
+    check_alone(base, FNAV_BUILD_TAG, F_WINDOW, 1024);
+#undef FNAV_STANCE_MAX_WINDOW
+#define FNAV_STANCE_MAX_WINDOW field(base, F_WINDOW)
+#undef FNAV_STANCE_EVENT_BUF
+#define FNAV_STANCE_EVENT_BUF 8
+    check_alone(base, FNAV_BUILD_TAG, F_EVENT, 8);
+#undef FNAV_STANCE_EVENT_BUF
+#define FNAV_STANCE_EVENT_BUF 4096
+    check_alone(base, FNAV_BUILD_TAG, F_EVENT, 4096);
+#undef FNAV_STANCE_EVENT_BUF
+#define FNAV_STANCE_EVENT_BUF field(base, F_EVENT)
+#undef FNAV_ALLAN_MAX_LEVELS
+#define FNAV_ALLAN_MAX_LEVELS 2
+    check_alone(base, FNAV_BUILD_TAG, F_LEVELS, 2);
+#undef FNAV_ALLAN_MAX_LEVELS
+#define FNAV_ALLAN_MAX_LEVELS 31
+    check_alone(base, FNAV_BUILD_TAG, F_LEVELS, 31);
+#undef FNAV_ALLAN_MAX_LEVELS
+#define FNAV_ALLAN_MAX_LEVELS field(base, F_LEVELS)
+#undef FNAV_ALLAN_RING0_LOG2
+#define FNAV_ALLAN_RING0_LOG2 3
+    check_alone(base, FNAV_BUILD_TAG, F_RING0, 3);
+#undef FNAV_ALLAN_RING0_LOG2
+#define FNAV_ALLAN_RING0_LOG2 15
+    check_alone(base, FNAV_BUILD_TAG, F_RING0, 15);
+#undef FNAV_ALLAN_RING0_LOG2
+#define FNAV_ALLAN_RING0_LOG2 field(base, F_RING0)
+#undef FNAV_ALLAN_CASCADE_LAG_LOG2
+#define FNAV_ALLAN_CASCADE_LAG_LOG2 0
+    check_alone(base, FNAV_BUILD_TAG, F_LAG, 0);
+#undef FNAV_ALLAN_CASCADE_LAG_LOG2
+#define FNAV_ALLAN_CASCADE_LAG_LOG2 6
+    check_alone(base, FNAV_BUILD_TAG, F_LAG, 6);
+#undef FNAV_ALLAN_CASCADE_LAG_LOG2
+#define FNAV_ALLAN_CASCADE_LAG_LOG2 field(base, F_LAG)
+#undef FNAV_ALLAN_MAX_POINTS
+#define FNAV_ALLAN_MAX_POINTS 1
+    check_alone(base, FNAV_BUILD_TAG, F_POINTS, 1);
+#undef FNAV_ALLAN_MAX_POINTS
+#define FNAV_ALLAN_MAX_POINTS 255
+    check_alone(base, FNAV_BUILD_TAG, F_POINTS, 255);
+#undef FNAV_ALLAN_MAX_POINTS
+#define FNAV_ALLAN_MAX_POINTS field(base, F_POINTS)
+#undef FNAV_WELCH_MAX_NFFT
+#define FNAV_WELCH_MAX_NFFT 8
+    check_alone(base, FNAV_BUILD_TAG, F_NFFT, 3);
+#undef FNAV_WELCH_MAX_NFFT
+#define FNAV_WELCH_MAX_NFFT 65536
+    check_alone(base, FNAV_BUILD_TAG, F_NFFT, 16);
+#undef FNAV_WELCH_MAX_NFFT
+#define FNAV_WELCH_MAX_NFFT (1ULL << field(base, F_NFFT))
+#undef FNAV_IMUERR_FLICKER_POLES
+#define FNAV_IMUERR_FLICKER_POLES 2
+    check_alone(base, FNAV_BUILD_TAG, F_POLES, 2);
+#undef FNAV_IMUERR_FLICKER_POLES
+#define FNAV_IMUERR_FLICKER_POLES 64
+    check_alone(base, FNAV_BUILD_TAG, F_POLES, 64);
+#undef FNAV_IMUERR_FLICKER_POLES
+#define FNAV_IMUERR_FLICKER_POLES field(base, F_POLES)
+    /* every option back at the library's value: the library's tag */
+    assert_true(FNAV_BUILD_TAG == base);
+}
