@@ -267,11 +267,6 @@ static fnav_real_t statistic(const fnav_stance_t *st, long lo, long hi)
     return sa > sg ? sa : sg; /* stance when both RMS values are below their limits */
 }
 
-static uint32_t t_us(int64_t t_ns)
-{
-    return (uint32_t)((uint64_t)(t_ns / 1000));
-}
-
 static fnav_real_t jerk_at(const fnav_stance_t *st, long k)
 {
     return st->jerk[k % FNAV_STANCE_EVENT_BUF];
@@ -345,7 +340,8 @@ static int64_t foot_strike(const fnav_stance_t *st, long k0, int64_t t_now_ns, l
         }
         return t_now_ns - span_us * 1000;
     }
-    return t_now_ns - (int64_t)(uint32_t)(t_us(t_now_ns) - st->jerk_t_us[kbest % FNAV_STANCE_EVENT_BUF]) * 1000;
+    return t_now_ns -
+           (int64_t)(uint32_t)(fnav_ns_to_us_u32(t_now_ns) - st->jerk_t_us[kbest % FNAV_STANCE_EVENT_BUF]) * 1000;
 }
 
 /* Cycle-scaled shortest ZUPT run (fnav_stance.h): a swing starts at t0_ns;
@@ -428,7 +424,8 @@ static void segment(fnav_stance_t *st, fnav_stance_out_t *o)
             *bmax = jerk; /* a block starts afresh */
         }
     }
-    st->jerk_t_us[k % FNAV_STANCE_EVENT_BUF] = t_us(o->sample.t_ns);
+    /* (uint32_t)(t_ns / 1000) without a 64-bit division per sample (fnav_math.h) */
+    st->jerk_t_us[k % FNAV_STANCE_EVENT_BUF] = fnav_ns_to_us_u32(o->sample.t_ns);
     st->prev_acc[0] = f[0];
     st->prev_acc[1] = f[1];
     st->prev_acc[2] = f[2];

@@ -335,6 +335,75 @@ static void test_exp_neg(void **state)
     assert_true(rows > 400);
 }
 
+/* fnav_ns_to_us_u32 against the formula it replaced in the stance detector,
+ * (uint32_t)(uint64_t)(t_ns / 1000) (C99: the quotient truncated toward
+ * zero; a 64-bit division, a call to __aeabi_ldivmod on the Cortex-M4F):
+ * the same bits for every int64_t. The edge cases: 0, the signs, each side
+ * of every multiple of 1000 near 0, the quotient's wraps of 2^32 (t_ns near
+ * k 2^32 1000 for k = +-1, +-2 and the largest k), the bits 2^32 and 2^48
+ * of t_ns, INT64_MIN and INT64_MAX and near them; then a 400 Hz walk of 2.5 ms steps
+ * across the first wrap and through zero, and 2,000,000 pseudo-random
+ * values spread over the whole range (xorshift64, every magnitude). */
+static uint32_t us_reference(int64_t t_ns)
+{
+    return (uint32_t)((uint64_t)(t_ns / 1000));
+}
+
+static void check_us(int64_t t_ns)
+{
+    if (fnav_ns_to_us_u32(t_ns) != us_reference(t_ns)) {
+        fail_msg("fnav_ns_to_us_u32(%lld) = %lu, (uint32_t)(t_ns / 1000) = %lu", (long long)t_ns,
+                 (unsigned long)fnav_ns_to_us_u32(t_ns), (unsigned long)us_reference(t_ns));
+    }
+}
+
+static void test_ns_to_us_u32(void **state)
+{
+    const int64_t wrap_ns = (int64_t)4294967296 * 1000; /* the quotient reaches 2^32 */
+    const int64_t centres[] = { 0, 1000, 999999, 1000000000, wrap_ns, 2 * wrap_ns, wrap_ns / 2,
+                                (int64_t)4294967296, (int64_t)1 << 48, (INT64_MAX / wrap_ns) * wrap_ns,
+                                INT64_MAX - 3000, INT64_MIN + 3000 };
+    uint64_t x = 0x9e3779b97f4a7c15u;
+    size_t c;
+    int64_t d, t;
+    long i;
+    (void)state;
+    assert_int_equal(fnav_ns_to_us_u32(0), 0);
+    assert_int_equal(fnav_ns_to_us_u32(999), 0);
+    assert_int_equal(fnav_ns_to_us_u32(-999), 0);           /* truncated toward zero */
+    assert_int_equal(fnav_ns_to_us_u32(1000), 1);
+    assert_true(fnav_ns_to_us_u32(-1000) == 0xffffffffu);    /* -1 modulo 2^32 */
+    assert_true(fnav_ns_to_us_u32(wrap_ns - 1) == 0xffffffffu);
+    assert_true(fnav_ns_to_us_u32(wrap_ns) == 0u);
+    check_us(INT64_MAX);
+    check_us(INT64_MIN);
+    check_us(INT64_MIN + 1);
+    for (c = 0; c < sizeof centres / sizeof centres[0]; c++) {
+        for (d = -2001; d <= 2001; d++) {
+            check_us(centres[c] + d);
+            check_us(-(centres[c] + d));
+        }
+    }
+    for (t = -wrap_ns - 25000000, i = 0; i < 200000; i++, t += 2500000) {
+        check_us(t); /* a walk at 400 Hz across the wrap at -2^32 us */
+    }
+    for (t = wrap_ns - 250000000, i = 0; i < 200000; i++, t += 2500000) {
+        check_us(t); /* and at +2^32 us */
+    }
+    for (t = -250000000, i = 0; i < 200; i++, t += 2500000) {
+        check_us(t); /* and through 0 */
+    }
+    for (i = 0; i < 2000000; i++) {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        /* every magnitude: the draw shifted right by 1..63 bits, either sign;
+         * and the draw itself, any int64_t */
+        check_us((int64_t)(x >> ((x & 63u) | 1u)) * ((x & 64u) ? -1 : 1));
+        check_us((int64_t)x);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -349,6 +418,7 @@ int main(void)
         cmocka_unit_test(test_exp_neg),
         cmocka_unit_test(test_one_minus_exp_neg),
         cmocka_unit_test(test_isfinite),
+        cmocka_unit_test(test_ns_to_us_u32),
     };
     return cmocka_run_group_tests_name("math", tests, NULL, NULL);
 }

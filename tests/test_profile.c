@@ -88,6 +88,41 @@ static void test_builtin_tables(void **state)
     }
 }
 
+/* The built-ins hold exactly what fnav_profile_from_paper makes of the
+ * paper's tables: each value converted in double (tau / 200 Hz, gyro x
+ * pi/180) and rounded once to fnav_real_t, redone here; and byte for byte
+ * fnav_profile_from_paper's profile (the name's padding too). The
+ * built-ins are converted by the compiler, so that no double arithmetic is
+ * linked with them on the Cortex-M4F (tests/cli/test_profile_fw.sh); not one
+ * ulp may move (docs/firmware.md, "Another sensor model"). */
+static void test_builtin_exact(void **state)
+{
+    int t, i;
+    (void)state;
+    for (t = 0; t < 3; t++) {
+        const fnav_profile_paper_row_t *rows = fnav_profile_paper_table((fnav_profile_id_t)t);
+        fnav_profile_t p, q;
+        memset(&q, 0xa5, sizeof q);
+        assert_int_equal(fnav_profile_builtin(&p, (fnav_profile_id_t)t), FNAV_OK);
+        assert_int_equal(fnav_profile_from_paper(&q, k_names[t], 200.0, rows), FNAV_OK);
+        assert_memory_equal(&p, &q, sizeof p);
+        assert_true(p.rate_hz == (fnav_real_t)200.0);
+        for (i = 0; i < 3; i++) {
+            assert_true(p.accel_noise_mps2_rthz[i] == (fnav_real_t)k_tables[t][i][0]);
+            assert_true(p.accel_tau_s[i] == (fnav_real_t)(k_tables[t][i][1] / 200.0));
+            assert_true(p.accel_bias_sigma_mps2[i] == (fnav_real_t)k_tables[t][i][2]);
+            assert_true(p.gyro_noise_rps_rthz[i] == (fnav_real_t)(k_tables[t][3 + i][0] * k_deg));
+            assert_true(p.gyro_tau_s[i] == (fnav_real_t)(k_tables[t][3 + i][1] / 200.0));
+            assert_true(p.gyro_bias_sigma_rps[i] == (fnav_real_t)(k_tables[t][3 + i][2] * k_deg));
+        }
+    }
+    {
+        fnav_profile_t p;
+        assert_int_equal(fnav_profile_builtin(NULL, FNAV_PROFILE_NAVCHIP), FNAV_E_ARG);
+        assert_int_equal(fnav_profile_builtin(&p, (fnav_profile_id_t)-1), FNAV_E_ARG);
+    }
+}
+
 /* The paper's AR(1) coefficient c = e^(-1/tau) per sample (tau in samples)
  * and eq. (4)'s driving variance sigma^2 (1 - e^(-2/tau)) are what the
  * filter uses at the identification rate: the navigator configured with
@@ -563,6 +598,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_builtin_tables),
+        cmocka_unit_test(test_builtin_exact),
         cmocka_unit_test(test_ar1_units),
         cmocka_unit_test(test_validate),
         cmocka_unit_test(test_file_round_trip),

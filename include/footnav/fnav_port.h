@@ -87,11 +87,16 @@ typedef struct {
 
 /** Link-time assert hook: every port provides exactly one definition
  *  (port/linux prints and aborts; port/cortex-m breaks into the debugger
- *  and halts). Called only for programmer errors, never for bad data. It
- *  must not return: the code after an FNAV_ASSERT relies on the condition
- *  (e.g. dereferences the pointer it checked); end the program, reset the
- *  part, or longjmp out. */
-void fnav_port_assert_failed(const char *file, int line, const char *expr);
+ *  and halts). Called only for programmer errors, never for bad data.
+ *  Declared FNAV_NORETURN: it must not return. The code after an
+ *  FNAV_ASSERT relies on the condition (e.g. dereferences the pointer it
+ *  checked) and the compiler may leave out any code for a return; a
+ *  definition that can return does not compile with -Werror under GCC or
+ *  clang, and one that returns anyway is undefined behaviour. End the
+ *  program (abort, exit), reset the part, spin, or longjmp out (a test
+ *  harness's mock_assert); never record and return.
+ *  docs/firmware.md, "The callbacks' contract". */
+FNAV_NORETURN void fnav_port_assert_failed(const char *file, int line, const char *expr);
 
 #if FNAV_ENABLE_ASSERT
 /** Programmer-error check; compiled out with FNAV_ENABLE_ASSERT=0. */

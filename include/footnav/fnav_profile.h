@@ -78,7 +78,8 @@ typedef struct {
 const fnav_profile_paper_row_t *fnav_profile_paper_table(fnav_profile_id_t id);
 
 /**
- * Fill a profile from six paper-unit rows (acc x..z, gyr x..z).
+ * Fill a profile from six paper-unit rows (acc x..z, gyr x..z), converted
+ * in double (on a Cortex-M4F: soft-float code; fnav_profile_builtin is not).
  * @return FNAV_OK, or FNAV_E_ARG on NULL / non-positive values, and when
  *         the converted profile fails fnav_profile_validate (e.g. an
  *         infinite rate makes every tau 0); *p is written only on FNAV_OK.
@@ -86,10 +87,12 @@ const fnav_profile_paper_row_t *fnav_profile_paper_table(fnav_profile_id_t id);
 FNAV_WARN_UNUSED fnav_status_t fnav_profile_from_paper(fnav_profile_t *p, const char *name, double rate_hz,
                                                        const fnav_profile_paper_row_t rows[6]);
 
-/** A built-in profile. @return FNAV_OK or FNAV_E_ARG for an unknown id.
- *  Converted from the paper's table in double (fnav_profile_from_paper), once:
- *  on a single-precision FPU (Cortex-M4F) that links the soft-float double
- *  helpers (docs/firmware.md, "Another sensor model"). */
+/** A built-in profile. @return FNAV_OK, or FNAV_E_ARG for NULL or an unknown id.
+ *  A copy of the paper's table converted by the compiler, bit for bit what
+ *  fnav_profile_from_paper(p, name, 200.0, table) gives: no double
+ *  arithmetic at run time, so on a single-precision FPU (Cortex-M4F) no
+ *  soft-float double helper is linked (docs/firmware.md, "Another sensor
+ *  model"). */
 FNAV_WARN_UNUSED fnav_status_t fnav_profile_builtin(fnav_profile_t *p, fnav_profile_id_t id);
 
 /** Built-in profile by name ("navchip", "mtx", "shimmer", "generic-mems"); FNAV_E_ARG if unknown. */

@@ -168,6 +168,20 @@ typedef enum {
 #define FNAV_WARN_UNUSED
 #endif
 
+/** A function that never returns to its caller (fnav_port_assert_failed).
+ *  C99 has no keyword for it: GCC's and clang's attribute, C11's _Noreturn,
+ *  else nothing. The compiler may then drop the code after a call (the
+ *  core's FNAV_ASSERT costs less flash) and warns about a definition that
+ *  can return (an error with -Werror); a definition that returns anyway is
+ *  undefined behaviour. */
+#if defined(__GNUC__) || defined(__clang__)
+#define FNAV_NORETURN __attribute__((noreturn))
+#elif defined(__STDC_VERSION__) && (__STDC_VERSION__ >= 201112L)
+#define FNAV_NORETURN _Noreturn
+#else
+#define FNAV_NORETURN
+#endif
+
 /** Short constant English text of a status (never NULL). */
 const char *fnav_status_str(fnav_status_t status);
 

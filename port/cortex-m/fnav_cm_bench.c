@@ -571,7 +571,7 @@ static void raise_sample_irq(void)
 }
 #endif
 
-void fnav_port_assert_failed(const char *file, int line, const char *expr)
+FNAV_NORETURN void fnav_port_assert_failed(const char *file, int line, const char *expr)
 {
     fnav_cm_line_t l;
     fnav_cm_line_start(&l);

@@ -4,7 +4,7 @@
 #include "footnav/fnav_port.h"
 #include "fnav_cm_config.h"
 
-FNAV_CM_WEAK void fnav_port_assert_failed(const char *file, int line, const char *expr)
+FNAV_CM_WEAK FNAV_NORETURN void fnav_port_assert_failed(const char *file, int line, const char *expr)
 {
     (void)file;
     (void)line;

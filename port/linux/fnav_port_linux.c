@@ -110,7 +110,7 @@ void fnav_linux_port_init(fnav_port_t *port, fnav_linux_port_ctx_t *ctx, hx_read
     port->log = linux_log;
 }
 
-void fnav_port_assert_failed(const char *file, int line, const char *expr)
+FNAV_NORETURN void fnav_port_assert_failed(const char *file, int line, const char *expr)
 {
     fprintf(stderr, "footnav: assertion failed at %s:%d: %s\n", file, line, expr);
     abort();
