@@ -1046,11 +1046,7 @@ int hx_cmd_psd(int argc, char **argv)
              * the rounding alone lifts the answer above the rate */
             double bound_hz;
             cJSON_AddBoolToObject(root, "fs_is_lower_bound", fs_lower_bound(&res, rate, &bound_hz));
-            if (isfinite(bound_hz)) {
-                cJSON_AddNumberToObject(root, "fs_lower_bound_hz", bound_hz);
-            } else {
-                cJSON_AddNullToObject(root, "fs_lower_bound_hz");
-            }
+            hx_json_num(root, "fs_lower_bound_hz", bound_hz);
         }
         if (hx_flag(&a, "--sensitivity")) {
             cJSON *arr = cJSON_AddArrayToObject(root, "sensitivity");

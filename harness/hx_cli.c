@@ -945,6 +945,15 @@ int hx_write_json(const char *path, struct cJSON *root, char *err, size_t err_si
     return 0;
 }
 
+void hx_json_num(cJSON *o, const char *k, double v)
+{
+    if (isfinite(v)) {
+        cJSON_AddNumberToObject(o, k, v);
+    } else {
+        cJSON_AddNullToObject(o, k);
+    }
+}
+
 int hx_check_writable(const char *cmd, const char *path)
 {
     const int existed = access(path, F_OK) == 0;

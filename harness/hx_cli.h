@@ -274,6 +274,9 @@ struct cJSON;
  *  (docs/harness.md, "Conventions shared by every command"). 0, or -1 with
  *  the reason in err. */
 int hx_write_json(const char *path, struct cJSON *root, char *err, size_t err_size);
+/** Add `v` to the object `o` under the key `k`: a number when finite, else
+ *  null (JSON has no NaN or infinity). */
+void hx_json_num(struct cJSON *o, const char *k, double v);
 
 /** `s` as the inside of a gnuplot single-quoted string (a quote doubled),
  *  cut to fit `buf`; returns buf. Every text from outside the program (a
