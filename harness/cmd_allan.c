@@ -1548,15 +1548,7 @@ static int write_csv(const run_t *R, const char *path)
             csv_deviations(R, ch, k, f);
         }
     }
-    if (hx_out_close(f) != 0) {
-        /* the reason, as every other output's error gives it, not "write
-         * failed" alone: errno of the failed write or close */
-        char why[128];
-        hx_error(CMD, "%s: write failed%s", strcmp(path, "-") == 0 ? "standard output" : path,
-                 hx_errno_note(errno, why, sizeof why));
-        return -1;
-    }
-    return 0;
+    return hx_out_finish(CMD, path, f);
 }
 
 static void json_model(cJSON *o, const hx_noise_model_t *m, double fs)

@@ -330,15 +330,7 @@ static int write_csv(const char *path, const result_t *r, const char *src)
         }
         fprintf(f, "\n");
     }
-    if (hx_out_close(f) != 0) {
-        /* the reason, as every other output's error gives it, not "write
-         * failed" alone: errno of the failed write or close */
-        char why[128];
-        hx_error(CMD, "%s: write failed%s", strcmp(path, "-") == 0 ? "standard output" : path,
-                 hx_errno_note(errno, why, sizeof why));
-        return -1;
-    }
-    return 0;
+    return hx_out_finish(CMD, path, f);
 }
 
 static cJSON *json_result(const result_t *r)

@@ -881,6 +881,19 @@ int hx_out_close(FILE *f)
     return r != 0 || failed ? EOF : 0;
 }
 
+int hx_out_finish(const char *cmd, const char *path, FILE *f)
+{
+    if (hx_out_close(f) != 0) {
+        /* the reason, as every other output's error gives it, not "write
+         * failed" alone: errno of the failed write or close */
+        char why[128];
+        hx_error(cmd, "%s: write failed%s", strcmp(path, "-") == 0 ? "standard output" : path,
+                 hx_errno_note(errno, why, sizeof why));
+        return -1;
+    }
+    return 0;
+}
+
 /* `footnav_version` as the first key of the object `root` (not again when
  * it has one): added as cJSON adds, last, then moved to the front, with its
  * name. 0, or -1 out of memory. */

@@ -266,6 +266,10 @@ FILE *hx_out_open(const char *path);
 /** Closes what hx_out_open returned (standard output is only flushed);
  *  0, or EOF on a write error. */
 int hx_out_close(FILE *f);
+/** hx_out_close, and on a write error "PATH: write failed (REASON)"
+ *  printed for `cmd` (PATH "standard output" for "-", REASON the errno of
+ *  the failed write or close); 0, or -1 with the error printed. */
+int hx_out_finish(const char *cmd, const char *path, FILE *f);
 struct cJSON;
 /** Write `root` as text (one trailing newline) to `path`, or to
  *  hx_json_stdout when `path` is "-". An object first gets the key
