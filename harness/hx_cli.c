@@ -259,19 +259,27 @@ int hx_parse_number(const char *s, double *v)
     return 0;
 }
 
-int hx_arg_double(const hx_args_t *a, const char *name, double lo, double hi, double *out)
+/* hx_arg_double, and hx_arg_whole when `whole`: that also refuses a
+ * fraction, and its message says "a whole number" */
+static int arg_real(const hx_args_t *a, const char *name, double lo, double hi, int whole, double *out)
 {
     const char *s = hx_arg(a, name);
     double v = 0.0;
     if (s == NULL) {
         return 0;
     }
-    if (hx_parse_number(s, &v) != 0 || v < lo || v > hi) {
-        hx_error(a->spec->name, "%s '%s' is not a number in [%.10g, %.10g]", name, s, lo, hi);
+    if (hx_parse_number(s, &v) != 0 || v < lo || v > hi || (whole && v != floor(v))) {
+        hx_error(a->spec->name, "%s '%s' is not a %snumber in [%.10g, %.10g]", name, s, whole ? "whole " : "", lo,
+                 hi);
         return -1;
     }
     *out = v;
     return 0;
+}
+
+int hx_arg_double(const hx_args_t *a, const char *name, double lo, double hi, double *out)
+{
+    return arg_real(a, name, lo, hi, 0, out);
 }
 
 int hx_arg_long(const hx_args_t *a, const char *name, long lo, long hi, long *out)
@@ -295,17 +303,7 @@ int hx_arg_long(const hx_args_t *a, const char *name, long lo, long hi, long *ou
 
 int hx_arg_whole(const hx_args_t *a, const char *name, double lo, double hi, double *out)
 {
-    const char *s = hx_arg(a, name);
-    double v = 0.0;
-    if (s == NULL) {
-        return 0;
-    }
-    if (hx_parse_number(s, &v) != 0 || v < lo || v > hi || v != floor(v)) {
-        hx_error(a->spec->name, "%s '%s' is not a whole number in [%.10g, %.10g]", name, s, lo, hi);
-        return -1;
-    }
-    *out = v;
-    return 0;
+    return arg_real(a, name, lo, hi, 1, out);
 }
 
 /* A progress or status line redrawn in place on a terminal ends without a
