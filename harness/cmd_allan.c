@@ -1548,42 +1548,25 @@ static int write_csv(const run_t *R, const char *path)
             csv_deviations(R, ch, k, f);
         }
     }
-    if (hx_out_close(f) != 0) {
-        /* the reason, as every other output's error gives it, not "write
-         * failed" alone: errno of the failed write or close */
-        char why[128];
-        hx_error(CMD, "%s: write failed%s", strcmp(path, "-") == 0 ? "standard output" : path,
-                 hx_errno_note(errno, why, sizeof why));
-        return -1;
-    }
-    return 0;
-}
-
-static void json_num(cJSON *o, const char *k, double v)
-{
-    if (isfinite(v)) {
-        cJSON_AddNumberToObject(o, k, v);
-    } else {
-        cJSON_AddNullToObject(o, k);
-    }
+    return hx_out_finish(CMD, path, f);
 }
 
 static void json_model(cJSON *o, const hx_noise_model_t *m, double fs)
 {
-    json_num(o, "sigma_v", m->white);
-    json_num(o, "tau_samples", m->gm_tau_s * fs);
-    json_num(o, "tau_s", m->gm_tau_s);
-    json_num(o, "sigma_bias", m->gm_sigma);
-    json_num(o, "quant", m->quant);
-    json_num(o, "rrw", m->rrw);
+    hx_json_num(o, "sigma_v", m->white);
+    hx_json_num(o, "tau_samples", m->gm_tau_s * fs);
+    hx_json_num(o, "tau_s", m->gm_tau_s);
+    hx_json_num(o, "sigma_bias", m->gm_sigma);
+    hx_json_num(o, "quant", m->quant);
+    hx_json_num(o, "rrw", m->rrw);
 }
 
 static void json_quality(cJSON *o, const hx_allan_quality_t *q)
 {
     cJSON *j = cJSON_AddObjectToObject(o, "quality");
-    json_num(j, "rms_log10", q->rms_log10);
-    json_num(j, "max_ratio", q->max_ratio);
-    json_num(j, "ratio_at_min", q->ratio_at_min);
+    hx_json_num(j, "rms_log10", q->rms_log10);
+    hx_json_num(j, "max_ratio", q->max_ratio);
+    hx_json_num(j, "ratio_at_min", q->ratio_at_min);
     cJSON_AddNumberToObject(j, "points", q->npoints);
 }
 
@@ -1599,10 +1582,10 @@ static void json_deviations(const run_t *R, const chan_t *ch, size_t k, cJSON *e
             cJSON_AddStringToObject(o, "not_computed", "max_work");
         }
         if (ch->dv_terms[d][k] > 0u) {
-            json_num(o, "dev", ch->dv[d][k]);
-            json_num(o, "lo", ch->dv_lo[d][k]);
-            json_num(o, "hi", ch->dv_hi[d][k]);
-            json_num(o, "edf", ch->dv_edf[d][k]);
+            hx_json_num(o, "dev", ch->dv[d][k]);
+            hx_json_num(o, "lo", ch->dv_lo[d][k]);
+            hx_json_num(o, "hi", ch->dv_hi[d][k]);
+            hx_json_num(o, "edf", ch->dv_edf[d][k]);
         }
     }
 }
@@ -1648,11 +1631,11 @@ static int write_json(const run_t *R, const char *path)
         cJSON_AddStringToObject(c, "unit", ch->unit);
         p = cJSON_AddObjectToObject(c, "paper");
         if (ch->id_ok && ch->id.paper_ok) {
-            json_num(p, "sigma_v", (double)ch->id.paper.sigma_v);
-            json_num(p, "bs", (double)ch->id.paper.bs);
-            json_num(p, "t_bs_s", (double)ch->id.paper.t_bs_s);
-            json_num(p, "tau_samples", (double)ch->id.paper.tau_samples);
-            json_num(p, "sigma_bias", (double)ch->id.paper.sigma_bias);
+            hx_json_num(p, "sigma_v", (double)ch->id.paper.sigma_v);
+            hx_json_num(p, "bs", (double)ch->id.paper.bs);
+            hx_json_num(p, "t_bs_s", (double)ch->id.paper.t_bs_s);
+            hx_json_num(p, "tau_samples", (double)ch->id.paper.tau_samples);
+            hx_json_num(p, "sigma_bias", (double)ch->id.paper.sigma_bias);
             json_quality(p, &ch->id.paper_quality);
             {
                 cJSON *rd = cJSON_AddObjectToObject(p, "reading_drive");
@@ -1665,7 +1648,7 @@ static int write_json(const run_t *R, const char *path)
         p = cJSON_AddObjectToObject(c, "corrected");
         if (ch->id_ok && ch->id.fit_ok) {
             json_model(p, &ch->id.fit, R->rate_hz);
-            json_num(p, "gm_adev_peak", HX_GM_PEAK_RATIO * ch->id.fit.gm_sigma);
+            hx_json_num(p, "gm_adev_peak", HX_GM_PEAK_RATIO * ch->id.fit.gm_sigma);
             json_quality(p, &ch->id.fit_quality);
         }
         /* false: no fit, or the curve does not resolve its AR(1) part; a
@@ -1693,25 +1676,25 @@ static int write_json(const run_t *R, const char *path)
                 continue;
             }
             e = cJSON_CreateObject();
-            json_num(e, "tau_s", (double)r->tau / R->rate_hz);
+            hx_json_num(e, "tau_s", (double)r->tau / R->rate_hz);
             cJSON_AddNumberToObject(e, "m", (double)r->tau);
             cJSON_AddNumberToObject(e, "stride", (double)r->stride);
-            json_num(e, "oadev", sqrt((double)r->avar));
-            json_num(e, "lo", ch->lo[k]);
-            json_num(e, "hi", ch->hi[k]);
-            json_num(e, "edf", ch->edf[k]);
+            hx_json_num(e, "oadev", sqrt((double)r->avar));
+            hx_json_num(e, "lo", ch->lo[k]);
+            hx_json_num(e, "hi", ch->hi[k]);
+            hx_json_num(e, "edf", ch->edf[k]);
             cJSON_AddNumberToObject(e, "terms", (double)r->terms);
-            json_num(e, "adev", sqrt((double)r->avar_nonoverlap));
+            hx_json_num(e, "adev", sqrt((double)r->avar_nonoverlap));
             cJSON_AddNumberToObject(e, "terms_n", (double)r->terms_nonoverlap);
-            json_num(e, "slope", (double)ch->slope[k]);
+            hx_json_num(e, "slope", (double)ch->slope[k]);
             cJSON_AddStringToObject(e, "noise", noise_name(ch, k));
             cJSON_AddNumberToObject(e, "alpha", (double)ch->alpha[k]);
             cJSON_AddStringToObject(e, "alpha_from", hx_noise_id_name(ch->alpha_from[k]));
             if (ch->have_sim_paper) {
-                json_num(e, "sim_paper", sqrt((double)ch->sim_paper[k].avar));
+                hx_json_num(e, "sim_paper", sqrt((double)ch->sim_paper[k].avar));
             }
             if (ch->have_sim_fit) {
-                json_num(e, "sim_fit", sqrt((double)ch->sim_fit[k].avar));
+                hx_json_num(e, "sim_fit", sqrt((double)ch->sim_fit[k].avar));
             }
             json_deviations(R, ch, k, e);
             cJSON_AddItemToArray(t, e);

@@ -1557,11 +1557,6 @@ static void ipol(ev_t *ev, const fnav_nav_config_t *cfg, int write, ipol_t *out)
 
 /* ------------------------------------------------------------ main */
 
-static void jnum(cJSON *o, const char *k, double v)
-{
-    cJSON_AddItemToObject(o, k, isfinite(v) ? cJSON_CreateNumber(v) : cJSON_CreateNull());
-}
-
 static const char *met(int ok)
 {
     return ok ? "met" : "**not met**";
@@ -2447,24 +2442,24 @@ int hx_cmd_eval(int argc, char **argv)
     }
     if (json_path != NULL) {
         cJSON *j = cJSON_CreateObject();
-        jnum(j, "gx2_h_pct_median", gx2.h_pct_med);
-        jnum(j, "gx2_3d_pct_median", gx2.d3_pct_med);
-        jnum(j, "gx2_3d_pct_worst", gx2.d3_pct_max);
-        jnum(j, "gx2_vertical_m_median", gx2.vert_med);
-        jnum(j, "xio_short_3d_m", xs);
-        jnum(j, "xio_long_3d_m", xl);
-        jnum(j, "footprints_final_pct_median", fp.final_pct_med);
-        jnum(j, "footprints_final_pct_mean", fp.final_pct_mean);
-        jnum(j, "vicon_stride_err_m_median", vi.stride_med);
+        hx_json_num(j, "gx2_h_pct_median", gx2.h_pct_med);
+        hx_json_num(j, "gx2_3d_pct_median", gx2.d3_pct_med);
+        hx_json_num(j, "gx2_3d_pct_worst", gx2.d3_pct_max);
+        hx_json_num(j, "gx2_vertical_m_median", gx2.vert_med);
+        hx_json_num(j, "xio_short_3d_m", xs);
+        hx_json_num(j, "xio_long_3d_m", xl);
+        hx_json_num(j, "footprints_final_pct_median", fp.final_pct_med);
+        hx_json_num(j, "footprints_final_pct_mean", fp.final_pct_mean);
+        hx_json_num(j, "vicon_stride_err_m_median", vi.stride_med);
         /* the counts are 0 on no trials: null, as every absent figure */
-        jnum(j, "ipol_missed", ip.trials > 0 ? (double)ip.missed : (double)NAN);
-        jnum(j, "ipol_spurious", ip.trials > 0 ? (double)ip.spurious : (double)NAN);
-        jnum(j, "ipol_missed_strict", ip.trials > 0 ? (double)ip.strict_missed : (double)NAN);
-        jnum(j, "ipol_spurious_strict", ip.trials > 0 ? (double)ip.strict_spurious : (double)NAN);
-        jnum(j, "ipol_fo_err_median", ip.trials > 0 ? ip.fo_med : (double)NAN);
-        jnum(j, "ipol_fs_err_median", ip.trials > 0 ? ip.fs_med : (double)NAN);
-        jnum(j, "failed_runs", (double)ev.main_failures);
-        jnum(j, "failed_experiment_runs", exp ? (double)(ev.failures - ev.main_failures) : (double)NAN);
+        hx_json_num(j, "ipol_missed", ip.trials > 0 ? (double)ip.missed : (double)NAN);
+        hx_json_num(j, "ipol_spurious", ip.trials > 0 ? (double)ip.spurious : (double)NAN);
+        hx_json_num(j, "ipol_missed_strict", ip.trials > 0 ? (double)ip.strict_missed : (double)NAN);
+        hx_json_num(j, "ipol_spurious_strict", ip.trials > 0 ? (double)ip.strict_spurious : (double)NAN);
+        hx_json_num(j, "ipol_fo_err_median", ip.trials > 0 ? ip.fo_med : (double)NAN);
+        hx_json_num(j, "ipol_fs_err_median", ip.trials > 0 ? ip.fs_med : (double)NAN);
+        hx_json_num(j, "failed_runs", (double)ev.main_failures);
+        hx_json_num(j, "failed_experiment_runs", exp ? (double)(ev.failures - ev.main_failures) : (double)NAN);
         rc = hx_write_json(json_path, j, err, sizeof err);
         cJSON_Delete(j);
         if (rc != 0) {

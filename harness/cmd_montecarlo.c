@@ -269,15 +269,6 @@ static cJSON *num_array(const double *x, int n)
     return a;
 }
 
-static void add_num(cJSON *o, const char *k, double v)
-{
-    if (isfinite(v)) {
-        cJSON_AddNumberToObject(o, k, v);
-    } else {
-        cJSON_AddNullToObject(o, k);
-    }
-}
-
 static int write_json(const char *path, const hx_mc_result_t *r, const char *motion, double rate, const char *profile,
                       const char *fprofile, int eq6, unsigned seed)
 {
@@ -301,12 +292,12 @@ static int write_json(const char *path, const hx_mc_result_t *r, const char *mot
         cJSON_AddStringToObject(o, "name", x->name);
         cJSON_AddNumberToObject(o, "estimates", (double)x->estimates);
         cJSON_AddNumberToObject(o, "nonfinite", x->nonfinite);
-        add_num(o, "final_h_mean_m", h.mean);
-        add_num(o, "final_h_rms_m", h.rms);
-        add_num(o, "final_h_median_m", h.median);
-        add_num(o, "final_h_p95_m", h.p95);
-        add_num(o, "final_v_rms_m", z.rms);
-        add_num(o, "final_v_median_m", z.median);
+        hx_json_num(o, "final_h_mean_m", h.mean);
+        hx_json_num(o, "final_h_rms_m", h.rms);
+        hx_json_num(o, "final_h_median_m", h.median);
+        hx_json_num(o, "final_h_p95_m", h.p95);
+        hx_json_num(o, "final_v_rms_m", z.rms);
+        hx_json_num(o, "final_v_median_m", z.median);
         cJSON_AddItemToObject(o, "final_h_m", num_array(x->final_h_m, r->runs));
         cJSON_AddItemToObject(o, "final_v_m", num_array(x->final_v_m, r->runs));
         cJSON_AddItemToObject(o, "final_pred_h_m", num_array(x->final_pred_h_m, r->runs));
@@ -316,33 +307,33 @@ static int write_json(const char *path, const hx_mc_result_t *r, const char *mot
             cons_t c = consistency(x, g, r->runs);
             cJSON *cg = cJSON_CreateObject();
             cJSON_AddNumberToObject(cg, "dim", hx_nees_dim[g]);
-            add_num(cg, "time_average", c.time_avg);
-            add_num(cg, "fraction_in_band", c.frac_in);
+            hx_json_num(cg, "time_average", c.time_avg);
+            hx_json_num(cg, "fraction_in_band", c.frac_in);
             if (c.bins > 0) {
                 cJSON_AddStringToObject(cg, "verdict", verdict(&c));
             } else {
                 cJSON_AddNullToObject(cg, "verdict"); /* no NEES: no verdict (it said over-confident) */
             }
-            add_num(cg, "band_lo", c.lo);
-            add_num(cg, "band_hi", c.hi);
+            hx_json_num(cg, "band_lo", c.lo);
+            hx_json_num(cg, "band_hi", c.hi);
             cJSON_AddItemToObject(cons, hx_nees_name[g], cg);
         }
         cJSON_AddItemToObject(o, "nees", cons);
         for (b = 0; b < x->nbins; b++) {
             const hx_mc_bin_t *q = &x->bins[b];
             cJSON *ob = cJSON_CreateObject();
-            add_num(ob, "t_s", q->t_s);
-            add_num(ob, "odo_m", q->odo_m);
+            hx_json_num(ob, "t_s", q->t_s);
+            hx_json_num(ob, "odo_m", q->odo_m);
             cJSON_AddNumberToObject(ob, "n", q->n);
-            add_num(ob, "rms_h_m", q->rms_h_m);
-            add_num(ob, "rms_v_m", q->rms_v_m);
-            add_num(ob, "rms_yaw_rad", q->rms_yaw_rad);
-            add_num(ob, "pred_h_m", q->pred_h_m);
-            add_num(ob, "pred_v_m", q->pred_v_m);
+            hx_json_num(ob, "rms_h_m", q->rms_h_m);
+            hx_json_num(ob, "rms_v_m", q->rms_v_m);
+            hx_json_num(ob, "rms_yaw_rad", q->rms_yaw_rad);
+            hx_json_num(ob, "pred_h_m", q->pred_h_m);
+            hx_json_num(ob, "pred_v_m", q->pred_v_m);
             for (g = 0; g < HX_NEES_COUNT; g++) {
                 char key[16];
                 snprintf(key, sizeof key, "nees_%s", hx_nees_name[g]);
-                add_num(ob, key, q->nees[g]);
+                hx_json_num(ob, key, q->nees[g]);
             }
             cJSON_AddItemToArray(bins, ob);
         }

@@ -330,15 +330,7 @@ static int write_csv(const char *path, const result_t *r, const char *src)
         }
         fprintf(f, "\n");
     }
-    if (hx_out_close(f) != 0) {
-        /* the reason, as every other output's error gives it, not "write
-         * failed" alone: errno of the failed write or close */
-        char why[128];
-        hx_error(CMD, "%s: write failed%s", strcmp(path, "-") == 0 ? "standard output" : path,
-                 hx_errno_note(errno, why, sizeof why));
-        return -1;
-    }
-    return 0;
+    return hx_out_finish(CMD, path, f);
 }
 
 static cJSON *json_result(const result_t *r)
@@ -1046,11 +1038,7 @@ int hx_cmd_psd(int argc, char **argv)
              * the rounding alone lifts the answer above the rate */
             double bound_hz;
             cJSON_AddBoolToObject(root, "fs_is_lower_bound", fs_lower_bound(&res, rate, &bound_hz));
-            if (isfinite(bound_hz)) {
-                cJSON_AddNumberToObject(root, "fs_lower_bound_hz", bound_hz);
-            } else {
-                cJSON_AddNullToObject(root, "fs_lower_bound_hz");
-            }
+            hx_json_num(root, "fs_lower_bound_hz", bound_hz);
         }
         if (hx_flag(&a, "--sensitivity")) {
             cJSON *arr = cJSON_AddArrayToObject(root, "sensitivity");

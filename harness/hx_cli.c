@@ -259,19 +259,27 @@ int hx_parse_number(const char *s, double *v)
     return 0;
 }
 
-int hx_arg_double(const hx_args_t *a, const char *name, double lo, double hi, double *out)
+/* hx_arg_double, and hx_arg_whole when `whole`: that also refuses a
+ * fraction, and its message says "a whole number" */
+static int arg_real(const hx_args_t *a, const char *name, double lo, double hi, int whole, double *out)
 {
     const char *s = hx_arg(a, name);
     double v = 0.0;
     if (s == NULL) {
         return 0;
     }
-    if (hx_parse_number(s, &v) != 0 || v < lo || v > hi) {
-        hx_error(a->spec->name, "%s '%s' is not a number in [%.10g, %.10g]", name, s, lo, hi);
+    if (hx_parse_number(s, &v) != 0 || v < lo || v > hi || (whole && v != floor(v))) {
+        hx_error(a->spec->name, "%s '%s' is not a %snumber in [%.10g, %.10g]", name, s, whole ? "whole " : "", lo,
+                 hi);
         return -1;
     }
     *out = v;
     return 0;
+}
+
+int hx_arg_double(const hx_args_t *a, const char *name, double lo, double hi, double *out)
+{
+    return arg_real(a, name, lo, hi, 0, out);
 }
 
 int hx_arg_long(const hx_args_t *a, const char *name, long lo, long hi, long *out)
@@ -295,17 +303,7 @@ int hx_arg_long(const hx_args_t *a, const char *name, long lo, long hi, long *ou
 
 int hx_arg_whole(const hx_args_t *a, const char *name, double lo, double hi, double *out)
 {
-    const char *s = hx_arg(a, name);
-    double v = 0.0;
-    if (s == NULL) {
-        return 0;
-    }
-    if (hx_parse_number(s, &v) != 0 || v < lo || v > hi || v != floor(v)) {
-        hx_error(a->spec->name, "%s '%s' is not a whole number in [%.10g, %.10g]", name, s, lo, hi);
-        return -1;
-    }
-    *out = v;
-    return 0;
+    return arg_real(a, name, lo, hi, 1, out);
 }
 
 /* A progress or status line redrawn in place on a terminal ends without a
@@ -881,6 +879,19 @@ int hx_out_close(FILE *f)
     return r != 0 || failed ? EOF : 0;
 }
 
+int hx_out_finish(const char *cmd, const char *path, FILE *f)
+{
+    if (hx_out_close(f) != 0) {
+        /* the reason, as every other output's error gives it, not "write
+         * failed" alone: errno of the failed write or close */
+        char why[128];
+        hx_error(cmd, "%s: write failed%s", strcmp(path, "-") == 0 ? "standard output" : path,
+                 hx_errno_note(errno, why, sizeof why));
+        return -1;
+    }
+    return 0;
+}
+
 /* `footnav_version` as the first key of the object `root` (not again when
  * it has one): added as cJSON adds, last, then moved to the front, with its
  * name. 0, or -1 out of memory. */
@@ -943,6 +954,15 @@ int hx_write_json(const char *path, struct cJSON *root, char *err, size_t err_si
         return -1;
     }
     return 0;
+}
+
+void hx_json_num(cJSON *o, const char *k, double v)
+{
+    if (isfinite(v)) {
+        cJSON_AddNumberToObject(o, k, v);
+    } else {
+        cJSON_AddNullToObject(o, k);
+    }
 }
 
 int hx_check_writable(const char *cmd, const char *path)

@@ -266,6 +266,10 @@ FILE *hx_out_open(const char *path);
 /** Closes what hx_out_open returned (standard output is only flushed);
  *  0, or EOF on a write error. */
 int hx_out_close(FILE *f);
+/** hx_out_close, and on a write error "PATH: write failed (REASON)"
+ *  printed for `cmd` (PATH "standard output" for "-", REASON the errno of
+ *  the failed write or close); 0, or -1 with the error printed. */
+int hx_out_finish(const char *cmd, const char *path, FILE *f);
 struct cJSON;
 /** Write `root` as text (one trailing newline) to `path`, or to
  *  hx_json_stdout when `path` is "-". An object first gets the key
@@ -274,6 +278,9 @@ struct cJSON;
  *  (docs/harness.md, "Conventions shared by every command"). 0, or -1 with
  *  the reason in err. */
 int hx_write_json(const char *path, struct cJSON *root, char *err, size_t err_size);
+/** Add `v` to the object `o` under the key `k`: a number when finite, else
+ *  null (JSON has no NaN or infinity). */
+void hx_json_num(struct cJSON *o, const char *k, double v);
 
 /** `s` as the inside of a gnuplot single-quoted string (a quote doubled),
  *  cut to fit `buf`; returns buf. Every text from outside the program (a

@@ -2,6 +2,7 @@
 #include "hx_mc.h"
 
 #include "hx_allan_ident.h"
+#include "hx_motion.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -68,16 +69,6 @@ typedef struct {
 } mc_slot_t;
 
 /* ------------------------------------------------------------ math */
-
-static void qmul(const double a[4], const double b[4], double r[4])
-{
-    double t[4];
-    t[0] = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
-    t[1] = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
-    t[2] = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
-    t[3] = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
-    memcpy(r, t, sizeof t);
-}
 
 /* rotation vector of a unit quaternion, angle in [0, pi] */
 static void rotvec(const double q[4], double v[3])
@@ -322,7 +313,7 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
                     vt[0] = cz * tk->vel[0] + sz * tk->vel[1];
                     vt[1] = -sz * tk->vel[0] + cz * tk->vel[1];
                     vt[2] = tk->vel[2];
-                    qmul(qz, tk->q, qt);
+                    hx_quat_mul(qz, tk->q, qt);
                     /* Every error is estimate minus truth, the attitude's
                      * too: q_est = dq (x) q_true, dq = exp(e_att) about the
                      * n axes. The filter perturbs its sigma points as
@@ -334,7 +325,7 @@ int hx_mc_run(const hx_mc_config_t *cfg, hx_mc_nav_t *navs, int nvar, hx_mc_resu
                     qc[1] = -qt[1];
                     qc[2] = -qt[2];
                     qc[3] = -qt[3];
-                    qmul(est.q_nb, qc, dq);
+                    hx_quat_mul(est.q_nb, qc, dq);
                     rotvec(dq, e);
                     for (j = 0; j < 3; j++) {
                         e[3 + j] = est.vel_mps[j] - vt[j];

@@ -178,7 +178,7 @@ static void quat_from_euler(double roll, double pitch, double yaw, double q[4])
     q[3] = cr * cp * sy - sr * sp * cy;
 }
 
-static void quat_mul(const double a[4], const double b[4], double r[4])
+void hx_quat_mul(const double a[4], const double b[4], double r[4])
 {
     double t[4];
     t[0] = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
@@ -1087,7 +1087,7 @@ void hx_motion_eval(const hx_motion_t *m, double t, hx_truth_t *o)
         o->w_b[c] = m->C_fs[0][c] * w_f[0] + m->C_fs[1][c] * w_f[1] + m->C_fs[2][c] * w_f[2];
     }
     quat_from_euler(p[3][0], p[4][0], p[5][0], q_nf);
-    quat_mul(q_nf, m->q_fs, o->q_nb);
+    hx_quat_mul(q_nf, m->q_fs, o->q_nb);
     if (o->q_nb[0] < 0.0) {
         for (c = 0; c < 4; c++) {
             o->q_nb[c] = -o->q_nb[c];

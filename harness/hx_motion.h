@@ -140,5 +140,8 @@ void hx_motion_eval(const hx_motion_t *m, double t_s, hx_truth_t *out);
 /** C_nb = Rz(yaw) Ry(pitch) Rx(roll) of ZYX Euler angles, rad (Titterton &
  *  Weston eq. 3.47; the simulator's mounting and truth, the replay's heading). */
 void hx_dcm_from_euler(double roll, double pitch, double yaw, double C[3][3]);
+/** r = a b, the Hamilton product of quaternions [w x y z] (r may be a or b;
+ *  the simulator's truth attitude, montecarlo's attitude error). */
+void hx_quat_mul(const double a[4], const double b[4], double r[4]);
 
 #endif /* HX_MOTION_H */

@@ -11,16 +11,6 @@
 
 static const char *const k_seg[SG_NSEG] = { "full", "fit", "held_out" };
 
-/* A finite number or null. */
-static void add_num(cJSON *o, const char *k, double v)
-{
-    if (isfinite(v)) {
-        cJSON_AddNumberToObject(o, k, v);
-    } else {
-        cJSON_AddNullToObject(o, k);
-    }
-}
-
 /* The refits' 68 % interval of parameter k of e, [ci_lo, ci_hi], and the
  * number of refits it and the se rest on, into *ci and *n (null items
  * where there are none): none where the se is not written (no_se: an
@@ -59,14 +49,14 @@ static cJSON *loc_json(const sg_loc_t *L)
     cJSON_AddStringToObject(lo, "channel", sg_channel_name(L->ch));
     cJSON_AddStringToObject(lo, "domain", sg_domain_name(L->dom));
     cJSON_AddStringToObject(lo, "segment", k_seg[L->seg]);
-    add_num(lo, "x_lo", L->x_lo);
-    add_num(lo, "x_hi", L->x_hi);
+    hx_json_num(lo, "x_lo", L->x_lo);
+    hx_json_num(lo, "x_hi", L->x_hi);
     cJSON_AddStringToObject(lo, "x_unit", (L->dom == SG_ALLAN || L->dom == SG_NAV || L->dom == SG_TIME) ? "s" : (L->dom == SG_PSD ? "Hz" : "u"));
     if (L->dom == SG_TIME) {
         cJSON_AddStringToObject(lo, "kind", sg_time_kind_name(L->kind));
     }
-    add_num(lo, "peak_z", L->peak_z);
-    add_num(lo, "ratio", L->ratio);
+    hx_json_num(lo, "peak_z", L->peak_z);
+    hx_json_num(lo, "ratio", L->ratio);
     cJSON_AddNumberToObject(lo, "points", L->npts);
     return lo;
 }
@@ -85,11 +75,11 @@ static cJSON *effect_json(const sg_effect_t *e, int ch)
         /* an AR(1) of sigma 0 is no bias process: its tau means nothing
          * (null, as the baseline's ar1_tau_s) */
         const int void_tau = e->id == FNAV_EFFECT_AR1 && k == 0 && !(e->p[1] > 0.0);
-        add_num(p, info->params[k].name, void_tau ? (double)NAN : e->p[k]);
+        hx_json_num(p, info->params[k].name, void_tau ? (double)NAN : e->p[k]);
         /* a parameter at a bound of its search has no standard error (the
          * curvature at a constraint is none), as the AR(1) time at its
          * bounds */
-        add_num(se, info->params[k].name, void_tau || e->at_bound[k] != 0 ? (double)NAN : e->se[k]);
+        hx_json_num(se, info->params[k].name, void_tau || e->at_bound[k] != 0 ? (double)NAN : e->se[k]);
         {
             cJSON *c, *n;
             ci_items(e, k, void_tau || e->at_bound[k] != 0, &c, &n);
@@ -98,8 +88,8 @@ static cJSON *effect_json(const sg_effect_t *e, int ch)
         }
         if (e->lo[k] > 0.0 && e->hi[k] > e->lo[k]) {
             cJSON *b = cJSON_AddObjectToObject(bd, info->params[k].name);
-            add_num(b, "lo", e->lo[k]);
-            add_num(b, "hi", e->hi[k]);
+            hx_json_num(b, "lo", e->lo[k]);
+            hx_json_num(b, "hi", e->hi[k]);
             if (e->at_bound[k] != 0) {
                 cJSON_AddStringToObject(b, "at_bound", e->at_bound[k] < 0 ? "lower" : "upper");
             } else {
@@ -127,17 +117,17 @@ static cJSON *cmp_json(const sg_cmp_t *c)
 {
     cJSON *o = cJSON_CreateObject(), *d = cJSON_CreateObject();
     int k;
-    add_num(o, "G", c->G);
-    add_num(o, "G_null_mean", c->null_mean);
-    add_num(o, "G_null_sd", c->null_sd);
-    add_num(o, "G_crit", c->G_crit);
-    add_num(o, "max_abs_z", c->maxz);
-    add_num(o, "z_crit", c->z_crit);
+    hx_json_num(o, "G", c->G);
+    hx_json_num(o, "G_null_mean", c->null_mean);
+    hx_json_num(o, "G_null_sd", c->null_sd);
+    hx_json_num(o, "G_crit", c->G_crit);
+    hx_json_num(o, "max_abs_z", c->maxz);
+    hx_json_num(o, "z_crit", c->z_crit);
     cJSON_AddBoolToObject(o, "significant", c->significant);
     /* the static domains, each present (null: no point of it) */
     for (k = 0; k < SG_NDOM; k++) {
         if (k == SG_ALLAN || k == SG_PSD || k == SG_LATTICE || k == SG_TIME || c->G_dom[k] == c->G_dom[k]) {
-            add_num(d, sg_domain_name(k), c->G_dom[k]);
+            hx_json_num(d, sg_domain_name(k), c->G_dom[k]);
         }
     }
     cJSON_AddItemToObject(o, "G_per_domain", d);
@@ -155,14 +145,14 @@ static cJSON *points_json(const sg_plist_t *pl, const double *real, const sg_cmp
         if (p->dom == SG_TIME) {
             cJSON_AddStringToObject(o, "kind", sg_time_kind_name(p->kind));
         }
-        add_num(o, "x", p->x);
-        add_num(o, "x_lo", p->x_lo);
-        add_num(o, "x_hi", p->x_hi);
-        add_num(o, "real", real[j]);
-        add_num(o, "twin", c->twin_mean[j]);
-        add_num(o, "twin_sd", c->twin_sd[j]);
-        add_num(o, "sd", c->sd_tot[j]);
-        add_num(o, "z", c->z[j]);
+        hx_json_num(o, "x", p->x);
+        hx_json_num(o, "x_lo", p->x_lo);
+        hx_json_num(o, "x_hi", p->x_hi);
+        hx_json_num(o, "real", real[j]);
+        hx_json_num(o, "twin", c->twin_mean[j]);
+        hx_json_num(o, "twin_sd", c->twin_sd[j]);
+        hx_json_num(o, "sd", c->sd_tot[j]);
+        hx_json_num(o, "z", c->z[j]);
         cJSON_AddItemToArray(a, o);
     }
     return a;
@@ -181,33 +171,33 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
         return o;
     }
     b = cJSON_AddObjectToObject(o, "baseline");
-    add_num(b, "mean", c->baseline.mean);
+    hx_json_num(b, "mean", c->baseline.mean);
     iw = sg_model_find(&c->baseline, FNAV_EFFECT_WHITE);
     ia = sg_model_find(&c->baseline, FNAV_EFFECT_AR1);
     if (iw >= 0) {
-        add_num(b, "white_density", c->baseline.e[iw].p[0]);
-        add_num(b, "white_density_se", c->baseline.e[iw].se[0]);
+        hx_json_num(b, "white_density", c->baseline.e[iw].p[0]);
+        hx_json_num(b, "white_density_se", c->baseline.e[iw].se[0]);
         add_ci(b, "white_density", &c->baseline.e[iw], 0, 0);
     }
     if (ia >= 0) {
-        add_num(b, "ar1_sigma", c->baseline.e[ia].p[1]);
-        add_num(b, "ar1_sigma_se", c->baseline.e[ia].se[1]);
+        hx_json_num(b, "ar1_sigma", c->baseline.e[ia].p[1]);
+        hx_json_num(b, "ar1_sigma_se", c->baseline.e[ia].se[1]);
         add_ci(b, "ar1_sigma", &c->baseline.e[ia], 1, 0);
-        add_num(b, "ar1_tau_s", c->baseline.e[ia].p[1] > 0.0 ? c->baseline.e[ia].p[0] : (double)NAN);
+        hx_json_num(b, "ar1_tau_s", c->baseline.e[ia].p[1] > 0.0 ? c->baseline.e[ia].p[0] : (double)NAN);
         /* a time at either bound of its search is no fit and has no
          * standard error (the curvature at a constraint is none): the
          * shortest bound as well as the longest */
-        add_num(b, "ar1_tau_s_se", tau_bound ? (double)NAN : c->baseline.e[ia].se[0]);
+        hx_json_num(b, "ar1_tau_s_se", tau_bound ? (double)NAN : c->baseline.e[ia].se[0]);
         add_ci(b, "ar1_tau_s", &c->baseline.e[ia], 0, tau_bound || !(c->baseline.e[ia].p[1] > 0.0));
-        add_num(b, "ar1_tau_min_s", sg_ar1_tau_min(r->rate_hz));
+        hx_json_num(b, "ar1_tau_min_s", sg_ar1_tau_min(r->rate_hz));
         cJSON_AddBoolToObject(b, "ar1_tau_at_min", sg_ar1_at_min(c, r->rate_hz));
-        add_num(b, "ar1_tau_max_s", c->ar1_tau_max_s);
+        hx_json_num(b, "ar1_tau_max_s", c->ar1_tau_max_s);
         cJSON_AddBoolToObject(b, "ar1_tau_at_max", sg_ar1_at_max(c));
     }
     if (c->q_full > 0.0) {
         cJSON *l = cJSON_AddObjectToObject(o, "lattice");
-        add_num(l, "step", c->q_full);
-        add_num(l, "z", c->q_full_z);
+        hx_json_num(l, "step", c->q_full);
+        hx_json_num(l, "z", c->q_full_z);
     } else {
         cJSON_AddNullToObject(o, "lattice");
     }
@@ -230,32 +220,32 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
         const sg_step_t *st = &c->step[i];
         cJSON *so = cJSON_CreateObject(), *ca = cJSON_AddArrayToObject(so, "candidates");
         cJSON_AddNumberToObject(so, "step", i + 1);
-        add_num(so, "G_held_out_before", st->G_hold_before);
-        add_num(so, "G_fit_before", st->G_fit_before);
+        hx_json_num(so, "G_held_out_before", st->G_hold_before);
+        hx_json_num(so, "G_fit_before", st->G_fit_before);
         for (k = 0; k < st->ncand; k++) {
             const sg_cand_t *cd = &st->cand[k];
             cJSON *co = effect_json(&cd->eff, ch);
-            add_num(co, "fit_dQ", cd->dQ_fit);
+            hx_json_num(co, "fit_dQ", cd->dQ_fit);
             cJSON_AddBoolToObject(co, "simulated", cd->simulated);
             cJSON_AddBoolToObject(co, "nested_in_ramp", cd->nested != 0);
             if (cd->simulated) {
-                add_num(co, "G_fit", cd->G_fit);
-                add_num(co, "G_held_out", cd->G_hold);
-                add_num(co, "dG_held_out", cd->dG_hold);
-                add_num(co, "score", cd->t_hold);
-                add_num(co, "score_null_mean", cd->t_null_mean);
-                add_num(co, "score_null_sd", cd->t_null_sd);
-                add_num(co, "z", cd->z_delta);
-                add_num(co, "z_held_out_middle", cd->z_mid);
-                add_num(co, "z_held_out_ends", cd->z_ends);
-                add_num(co, "dG_held_out_ends", cd->dG_ends);
-                add_num(co, "z_lr", cd->z_gap);
-                add_num(co, "z_lr_held_out_middle", cd->zg_mid);
-                add_num(co, "z_lr_held_out_ends", cd->zg_ends);
-                add_num(co, "explained", cd->expl_hold);
-                add_num(co, "explained_lo", cd->expl_lo);
-                add_num(co, "explained_hi", cd->expl_hi);
-                add_num(co, "explained_fit", cd->expl_fit);
+                hx_json_num(co, "G_fit", cd->G_fit);
+                hx_json_num(co, "G_held_out", cd->G_hold);
+                hx_json_num(co, "dG_held_out", cd->dG_hold);
+                hx_json_num(co, "score", cd->t_hold);
+                hx_json_num(co, "score_null_mean", cd->t_null_mean);
+                hx_json_num(co, "score_null_sd", cd->t_null_sd);
+                hx_json_num(co, "z", cd->z_delta);
+                hx_json_num(co, "z_held_out_middle", cd->z_mid);
+                hx_json_num(co, "z_held_out_ends", cd->z_ends);
+                hx_json_num(co, "dG_held_out_ends", cd->dG_ends);
+                hx_json_num(co, "z_lr", cd->z_gap);
+                hx_json_num(co, "z_lr_held_out_middle", cd->zg_mid);
+                hx_json_num(co, "z_lr_held_out_ends", cd->zg_ends);
+                hx_json_num(co, "explained", cd->expl_hold);
+                hx_json_num(co, "explained_lo", cd->expl_lo);
+                hx_json_num(co, "explained_hi", cd->expl_hi);
+                hx_json_num(co, "explained_fit", cd->expl_fit);
             }
             cJSON_AddBoolToObject(co, "selected", k == st->selected);
             cJSON_AddItemToArray(ca, co);
@@ -267,9 +257,9 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
         int m = sg_model_find(&c->final, c->sel_id[i]);
         if (m >= 0) {
             cJSON *so = effect_json(&c->final.e[m], ch);
-            add_num(so, "explained", c->sel_expl[i]);
-            add_num(so, "explained_lo", c->sel_lo[i]);
-            add_num(so, "explained_hi", c->sel_hi[i]);
+            hx_json_num(so, "explained", c->sel_expl[i]);
+            hx_json_num(so, "explained_lo", c->sel_lo[i]);
+            hx_json_num(so, "explained_hi", c->sel_hi[i]);
             cJSON_AddItemToArray(sel, so);
         }
     }
@@ -294,18 +284,18 @@ static cJSON *channel_json(const sg_result_t *r, int ch)
     cJSON_AddBoolToObject(att, "within_noise", c->within_noise);
     if (c->have_prof) {
         cJSON *pr = cJSON_AddObjectToObject(o, "profile"), *pg = cJSON_AddObjectToObject(pr, "gap"), *pm;
-        add_num(pr, "white_density", c->prof.e[0].p[0]);
-        add_num(pr, "ar1_sigma", c->prof.e[1].p[1]);
-        add_num(pr, "ar1_tau_s", c->prof.e[1].p[0]);
+        hx_json_num(pr, "white_density", c->prof.e[0].p[0]);
+        hx_json_num(pr, "ar1_sigma", c->prof.e[1].p[1]);
+        hx_json_num(pr, "ar1_tau_s", c->prof.e[1].p[0]);
         for (k = 0; k < SG_NSEG; k++) {
             cJSON_AddItemToObject(pg, k_seg[k], cmp_json(&c->cmp_prof[k]));
         }
         pm = cJSON_AddArrayToObject(pr, "twin");
         for (k = 0; k < (int)r->pl[ch][SG_FULL].n && c->cmp_prof[SG_FULL].z != NULL; k++) {
             cJSON *po = cJSON_CreateObject();
-            add_num(po, "twin", c->cmp_prof[SG_FULL].twin_mean[k]);
-            add_num(po, "sd", c->cmp_prof[SG_FULL].sd_tot[k]);
-            add_num(po, "z", c->cmp_prof[SG_FULL].z[k]);
+            hx_json_num(po, "twin", c->cmp_prof[SG_FULL].twin_mean[k]);
+            hx_json_num(po, "sd", c->cmp_prof[SG_FULL].sd_tot[k]);
+            hx_json_num(po, "z", c->cmp_prof[SG_FULL].z[k]);
             cJSON_AddItemToArray(pm, po);
         }
     }
@@ -329,8 +319,8 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
     o = cJSON_AddObjectToObject(root, "log");
     cJSON_AddStringToObject(o, "path", r->path);
     cJSON_AddNumberToObject(o, "samples", (double)r->n);
-    add_num(o, "rate_hz", r->rate_hz);
-    add_num(o, "duration_s", r->duration_s);
+    hx_json_num(o, "rate_hz", r->rate_hz);
+    hx_json_num(o, "duration_s", r->duration_s);
     cJSON_AddStringToObject(o, "domain", r->domain == 1 ? "static" : "walk");
     cJSON_AddStringToObject(o, "domain_detected", r->domain_detected == 1 ? "static" : "walk");
     cJSON_AddStringToObject(o, "domain_from", r->opts.domain != 0 ? "option" : "detected");
@@ -342,8 +332,8 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
         int b;
         for (b = 0; b < r->segs.nb[k]; b++) {
             cJSON *bo = cJSON_CreateObject();
-            add_num(bo, "start_s", r->seg_start_s[k][b]);
-            add_num(bo, "end_s", r->seg_end_s[k][b]);
+            hx_json_num(bo, "start_s", r->seg_start_s[k][b]);
+            hx_json_num(bo, "end_s", r->seg_end_s[k][b]);
             cJSON_AddNumberToObject(bo, "samples", (double)r->segs.n[k][b]);
             cJSON_AddItemToArray(s, bo);
         }
@@ -351,13 +341,13 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
     o = cJSON_AddObjectToObject(root, "settings");
     cJSON_AddNumberToObject(o, "seeds", r->S);
     cJSON_AddNumberToObject(o, "seed", r->opts.seed);
-    add_num(o, "alpha", r->opts.alpha);
-    add_num(o, "fit_frac", r->opts.fit_frac);
+    hx_json_num(o, "alpha", r->opts.alpha);
+    hx_json_num(o, "fit_frac", r->opts.fit_frac);
     cJSON_AddNumberToObject(o, "max_effects", r->opts.max_steps);
     cJSON_AddNumberToObject(o, "prescreen", r->opts.prescreen);
-    add_num(o, "tau_identification_frac", SG_ID_FRAC);
-    add_num(o, "tau_test_frac", SG_TEST_FRAC);
-    add_num(o, "z_cap", SG_ZCAP);
+    hx_json_num(o, "tau_identification_frac", SG_ID_FRAC);
+    hx_json_num(o, "tau_test_frac", SG_TEST_FRAC);
+    hx_json_num(o, "z_cap", SG_ZCAP);
     cJSON_AddBoolToObject(root, "confident", r->confident);
     if (r->confident) {
         cJSON_AddNullToObject(root, "too_short");
@@ -382,7 +372,7 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
         if (r->constant[ch]) {
             cJSON *co = cJSON_CreateObject();
             cJSON_AddStringToObject(co, "channel", sg_channel_name(ch));
-            add_num(co, "value", r->constant_value[ch]);
+            hx_json_num(co, "value", r->constant_value[ch]);
             cJSON_AddItemToArray(a, co);
         }
     }
@@ -392,7 +382,7 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
             cJSON *co = cJSON_CreateObject();
             cJSON_AddStringToObject(co, "channel", sg_channel_name(ch));
             cJSON_AddStringToObject(co, "segment", r->seg_constant[ch] == SG_FIT ? "fit" : "held_out");
-            add_num(co, "value", r->seg_constant_value[ch]);
+            hx_json_num(co, "value", r->seg_constant_value[ch]);
             cJSON_AddItemToArray(a, co);
         }
     }
@@ -410,7 +400,7 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
     if (r->tim.have) {
         static const char *const nm[SG_TIM_NKIND] = { "duplicate", "dropout", "jitter" };
         cJSON *cnt = cJSON_AddObjectToObject(o, "counts");
-        add_num(o, "stamp_resolution_s", r->tim.res_s);
+        hx_json_num(o, "stamp_resolution_s", r->tim.res_s);
         for (k = 0; k < SG_NSEG; k++) {
             cJSON *s = cJSON_AddObjectToObject(cnt, k_seg[k]);
             int d;
@@ -418,9 +408,9 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
             cJSON_AddNumberToObject(s, "duplicated", (double)r->tim.n_dup[k]);
             cJSON_AddNumberToObject(s, "dropped", (double)r->tim.n_drop[k]);
             cJSON_AddNumberToObject(s, "intervals", (double)r->tim.n_int[k]);
-            add_num(s, "interval_sd_s", r->tim.jit_sd[k]);
+            hx_json_num(s, "interval_sd_s", r->tim.jit_sd[k]);
             for (d = 0; d < SG_TIM_NKIND; d++) {
-                add_num(z, nm[d], r->tim.z[k][d]);
+                hx_json_num(z, nm[d], r->tim.z[k][d]);
             }
         }
         cJSON_AddBoolToObject(o, "significant", r->tim.significant);
@@ -430,17 +420,17 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
                 cJSON *e = cJSON_CreateObject(), *p = cJSON_AddObjectToObject(e, "params");
                 cJSON_AddStringToObject(e, "effect", nm[k]);
                 if (k == SG_TIM_JITTER) {
-                    add_num(p, "stamp_s", r->tim.stamp_s);
+                    hx_json_num(p, "stamp_s", r->tim.stamp_s);
                 } else {
-                    add_num(p, "prob", k == SG_TIM_DUP ? r->tim.dup_prob : r->tim.drop_prob);
+                    hx_json_num(p, "prob", k == SG_TIM_DUP ? r->tim.dup_prob : r->tim.drop_prob);
                 }
-                add_num(e, "z_whole_log", r->tim.z[SG_FULL][k]);
-                add_num(e, "z_held_out_before", r->tim.z[SG_HOLD][k]);
-                add_num(e, "z_held_out_after", r->tim.z_after[k]);
+                hx_json_num(e, "z_whole_log", r->tim.z[SG_FULL][k]);
+                hx_json_num(e, "z_held_out_before", r->tim.z[SG_HOLD][k]);
+                hx_json_num(e, "z_held_out_after", r->tim.z_after[k]);
                 cJSON_AddBoolToObject(e, "held_out_within_noise", !r->tim.open[k]);
                 /* a jitter has no first event: null (its field, zeroed,
                  * would read 0) */
-                add_num(e, "first_event_s", k == SG_TIM_JITTER ? (double)NAN : r->tim.first_t[k]);
+                hx_json_num(e, "first_event_s", k == SG_TIM_JITTER ? (double)NAN : r->tim.first_t[k]);
                 cJSON_AddItemToArray(a, e);
             }
         }
@@ -492,7 +482,7 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
             cJSON *eo = cJSON_CreateObject(), *chs = cJSON_AddArrayToObject(eo, "channels");
             cJSON_AddStringToObject(eo, "effect", fnav_imuerr_effect_info((fnav_effect_id_t)ids[e2])->name);
             cJSON_AddNumberToObject(eo, "rank", e2 + 1);
-            add_num(eo, "held_out_gap_reduction", score[ids[e2]]);
+            hx_json_num(eo, "held_out_gap_reduction", score[ids[e2]]);
             for (ch = 0; ch < SG_NCH; ch++) {
                 const sg_chres_t *c = &r->ch[ch];
                 for (k = 0; k < c->nsel; k++) {
@@ -500,9 +490,9 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
                     if (c->sel_id[k] == ids[e2] && m >= 0) {
                         cJSON *co = effect_json(&c->final.e[m], ch);
                         cJSON_AddStringToObject(co, "channel", sg_channel_name(ch));
-                        add_num(co, "explained", c->sel_expl[k]);
-                        add_num(co, "explained_lo", c->sel_lo[k]);
-                        add_num(co, "explained_hi", c->sel_hi[k]);
+                        hx_json_num(co, "explained", c->sel_expl[k]);
+                        hx_json_num(co, "explained_lo", c->sel_lo[k]);
+                        hx_json_num(co, "explained_hi", c->sel_hi[k]);
                         cJSON_AddItemToArray(chs, co);
                     }
                 }
@@ -523,7 +513,7 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
                 cJSON_AddStringToObject(eo, "domain", "static");
                 cJSON_AddItemToArray(cl, cJSON_CreateString(sg_channel_name(ch)));
                 cJSON_AddItemToObject(eo, "channels", cl);
-                add_num(eo, "explained", c->sel_expl[k]);
+                hx_json_num(eo, "explained", c->sel_expl[k]);
                 cJSON_AddItemToArray(a, eo);
             }
         }
@@ -554,8 +544,8 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
                 /* fit_dQ as in every other effect object; fit_dq, the
                  * name the lead was first written with, kept for
                  * footnav-simgap/1 readers */
-                add_num(lo, "fit_dQ", lead->dQ_fit);
-                add_num(lo, "fit_dq", lead->dQ_fit);
+                hx_json_num(lo, "fit_dQ", lead->dQ_fit);
+                hx_json_num(lo, "fit_dq", lead->dQ_fit);
                 cJSON_AddItemToObject(uo, "lead", lo);
             } else {
                 cJSON_AddNullToObject(uo, "lead");
@@ -572,15 +562,15 @@ int sg_write_json(const sg_result_t *r, const char *path, char *err, size_t err_
                 cJSON_AddStringToObject(eo, "domain", "timing");
                 cJSON_AddItemToObject(eo, "channels", cJSON_CreateArray());
                 if (k == SG_TIM_JITTER) {
-                    add_num(p, "stamp_s", r->tim.stamp_s);
+                    hx_json_num(p, "stamp_s", r->tim.stamp_s);
                 } else {
-                    add_num(p, "prob", k == SG_TIM_DUP ? r->tim.dup_prob : r->tim.drop_prob);
+                    hx_json_num(p, "prob", k == SG_TIM_DUP ? r->tim.dup_prob : r->tim.drop_prob);
                 }
                 cJSON_AddItemToArray(a, eo);
             }
         }
     }
-    add_num(root, "elapsed_s", r->elapsed_s);
+    hx_json_num(root, "elapsed_s", r->elapsed_s);
     rc = hx_write_json(path, root, err, err_size);
     cJSON_Delete(root);
     return rc;

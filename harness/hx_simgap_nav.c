@@ -2476,15 +2476,6 @@ void sg_nav_print(const sg_nav_t *nv, FILE *f, const sg_result_t *r)
     }
 }
 
-static void add_num(cJSON *o, const char *k, double v)
-{
-    if (isfinite(v)) {
-        cJSON_AddNumberToObject(o, k, v);
-    } else {
-        cJSON_AddNullToObject(o, k);
-    }
-}
-
 static cJSON *cand_json(const navcand_t *cd)
 {
     const fnav_effect_info_t *info = fnav_imuerr_effect_info((fnav_effect_id_t)cd->id);
@@ -2495,8 +2486,8 @@ static cJSON *cand_json(const navcand_t *cd)
         cJSON *p = cJSON_CreateObject();
         cJSON_AddStringToObject(p, "channel", sg_channel_name(cd->ch[i]));
         cJSON_AddStringToObject(p, "param", info->params[cd->k[i]].name);
-        add_num(p, "value", cd->val[i]);
-        add_num(p, "trajectory_value", cd->has_eq ? cd->eq[i] : (double)NAN); /* null: not a linear family */
+        hx_json_num(p, "value", cd->val[i]);
+        hx_json_num(p, "trajectory_value", cd->has_eq ? cd->eq[i] : (double)NAN); /* null: not a linear family */
         sg_nav_bounds_json(p, cd->id, cd->k[i], cd->at[i]);
         cJSON_AddItemToArray(a, p);
     }
@@ -2507,22 +2498,22 @@ static cJSON *cand_json(const navcand_t *cd)
             cJSON *p = cJSON_CreateObject();
             cJSON_AddStringToObject(p, "channel", sg_channel_name(cd->alt_ch[i]));
             cJSON_AddStringToObject(p, "param", info->params[cd->alt_k[i]].name);
-            add_num(p, "value", cd->alt_val[i]);
+            hx_json_num(p, "value", cd->alt_val[i]);
             sg_nav_bounds_json(p, cd->id, cd->alt_k[i], cd->alt_at[i]);
             cJSON_AddItemToArray(alt, p);
         }
     }
-    add_num(o, "fit_dQ", cd->dQ);
-    add_num(o, "held_out_dQ", cd->dQ_hold);
-    add_num(o, "held_out_z", cd->z_hold);
-    add_num(o, "explained", cd->expl);
+    hx_json_num(o, "fit_dQ", cd->dQ);
+    hx_json_num(o, "held_out_dQ", cd->dQ_hold);
+    hx_json_num(o, "held_out_z", cd->z_hold);
+    hx_json_num(o, "explained", cd->expl);
     cJSON_AddNumberToObject(o, "stances_fit", cd->n_fit);
     cJSON_AddNumberToObject(o, "stances_held_out", cd->n_hold);
     cJSON_AddBoolToObject(o, "simulated", cd->simulated);
     if (cd->simulated) {
-        add_num(o, "G_fit", cd->G_fit);
-        add_num(o, "G_held_out", cd->G_hold);
-        add_num(o, "dG_held_out", cd->dG_hold);
+        hx_json_num(o, "G_fit", cd->G_fit);
+        hx_json_num(o, "G_held_out", cd->G_hold);
+        hx_json_num(o, "dG_held_out", cd->dG_hold);
 
     }
     return o;
@@ -2560,7 +2551,7 @@ void sg_nav_verdict_json(const sg_nav_t *nv, cJSON *arr)
             cJSON *p = cJSON_CreateObject();
             cJSON_AddStringToObject(p, "channel", sg_channel_name(cd->ch[j]));
             cJSON_AddStringToObject(p, "param", info != NULL ? info->params[cd->k[j]].name : "?");
-            add_num(p, "value", cd->val[j]);
+            hx_json_num(p, "value", cd->val[j]);
             sg_nav_bounds_json(p, cd->id, cd->k[j], cd->at[j]);
             cJSON_AddItemToArray(pa, p);
         }
@@ -2587,11 +2578,11 @@ void sg_nav_locations_json(const sg_nav_t *nv, cJSON *arr)
             }
         }
         cJSON_AddStringToObject(lo, "segment", "full");
-        add_num(lo, "x_lo", L->x_lo);
-        add_num(lo, "x_hi", L->x_hi);
+        hx_json_num(lo, "x_lo", L->x_lo);
+        hx_json_num(lo, "x_hi", L->x_hi);
         cJSON_AddStringToObject(lo, "x_unit", L->dom == SG_LATTICE ? "u" : "s");
-        add_num(lo, "peak_z", L->peak_z);
-        add_num(lo, "ratio", L->ratio);
+        hx_json_num(lo, "peak_z", L->peak_z);
+        hx_json_num(lo, "ratio", L->ratio);
         cJSON_AddNumberToObject(lo, "points", L->npts);
         cJSON_AddItemToArray(arr, lo);
     }
@@ -2607,25 +2598,25 @@ cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r)
     cJSON_AddNumberToObject(o, "stances_full", nv->nst[SG_FULL]);
     cJSON_AddNumberToObject(o, "stances_fit", nv->nst[SG_FIT]);
     cJSON_AddNumberToObject(o, "stances_held_out", nv->nst[SG_HOLD]);
-    add_num(o, "held_out_from_s", nv->hold_from_s);
+    hx_json_num(o, "held_out_from_s", nv->hold_from_s);
     cJSON_AddStringToObject(o, "twin_noise", nv->from_profile ? "profile" : "stances");
     cJSON_AddStringToObject(o, "twin_sampling", nv->inst ? "instantaneous" : "interval-mean");
-    add_num(o, "G_fit_interval_mean", nv->G_fit_conv[0]);
-    add_num(o, "G_fit_instantaneous", nv->G_fit_conv[1]);
+    hx_json_num(o, "G_fit_interval_mean", nv->G_fit_conv[0]);
+    hx_json_num(o, "G_fit_instantaneous", nv->G_fit_conv[1]);
     w = cJSON_AddObjectToObject(o, "white_density");
     for (c = 0; c < SG_NCH; c++) {
-        add_num(w, sg_channel_name(c), nv->white[c]);
+        hx_json_num(w, sg_channel_name(c), nv->white[c]);
     }
     a = cJSON_AddArrayToObject(o, "lattices");
     for (c = 0; c < SG_NCH; c++) {
         if (nv->q[c] > 0.0) {
             cJSON *lo = cJSON_CreateObject();
             cJSON_AddStringToObject(lo, "channel", sg_channel_name(c));
-            add_num(lo, "step", nv->q[c]);
-            add_num(lo, "z", nv->qz[c]);
-            add_num(lo, "fit_score", nv->q_fit[c]);
-            add_num(lo, "quantiser_score", nv->q_full[c]);
-            add_num(lo, "twin_score", nv->q_base[c]);
+            hx_json_num(lo, "step", nv->q[c]);
+            hx_json_num(lo, "z", nv->qz[c]);
+            hx_json_num(lo, "fit_score", nv->q_fit[c]);
+            hx_json_num(lo, "quantiser_score", nv->q_full[c]);
+            hx_json_num(lo, "twin_score", nv->q_base[c]);
             cJSON_AddBoolToObject(lo, "quantiser", lattice_complete(nv, c));
             cJSON_AddItemToArray(a, lo);
         }
@@ -2633,12 +2624,12 @@ cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r)
     a = cJSON_AddObjectToObject(o, "gap");
     for (g = 0; g < SG_NSEG; g++) {
         cJSON *s = cJSON_AddObjectToObject(a, segn[g]), *pts;
-        add_num(s, "G", nv->cmp[g].G);
-        add_num(s, "G_null_mean", nv->cmp[g].null_mean);
-        add_num(s, "G_null_sd", nv->cmp[g].null_sd);
-        add_num(s, "G_crit", nv->cmp[g].G_crit);
-        add_num(s, "max_abs_z", nv->cmp[g].maxz);
-        add_num(s, "z_crit", nv->cmp[g].z_crit);
+        hx_json_num(s, "G", nv->cmp[g].G);
+        hx_json_num(s, "G_null_mean", nv->cmp[g].null_mean);
+        hx_json_num(s, "G_null_sd", nv->cmp[g].null_sd);
+        hx_json_num(s, "G_crit", nv->cmp[g].G_crit);
+        hx_json_num(s, "max_abs_z", nv->cmp[g].maxz);
+        hx_json_num(s, "z_crit", nv->cmp[g].z_crit);
         cJSON_AddBoolToObject(s, "significant", nv->cmp[g].significant);
         pts = cJSON_AddArrayToObject(s, "points");
         for (k = 0; k < nv->pl[g].n; k++) {
@@ -2646,21 +2637,21 @@ cJSON *sg_nav_json(const sg_nav_t *nv, const sg_result_t *r)
             cJSON *po = cJSON_CreateObject();
             cJSON_AddStringToObject(po, "domain", sg_domain_name(p->dom));
             cJSON_AddStringToObject(po, "kind", p->dom == SG_NAV ? kind_name(p->kind) : sg_channel_name(p->ch));
-            add_num(po, "x", p->x);
-            add_num(po, "x_lo", p->x_lo);
-            add_num(po, "x_hi", p->x_hi);
+            hx_json_num(po, "x", p->x);
+            hx_json_num(po, "x_lo", p->x_lo);
+            hx_json_num(po, "x_hi", p->x_hi);
             /* a placeholder (a window without a stance onset): null */
-            add_num(po, "real", p->empty ? (double)NAN : nv->real_v[g][k]);
-            add_num(po, "twin", p->empty ? (double)NAN : nv->cmp[g].twin_mean[k]);
-            add_num(po, "sd", p->empty ? (double)NAN : nv->cmp[g].sd_tot[k]);
-            add_num(po, "z", p->empty ? (double)NAN : nv->cmp[g].z[k]);
+            hx_json_num(po, "real", p->empty ? (double)NAN : nv->real_v[g][k]);
+            hx_json_num(po, "twin", p->empty ? (double)NAN : nv->cmp[g].twin_mean[k]);
+            hx_json_num(po, "sd", p->empty ? (double)NAN : nv->cmp[g].sd_tot[k]);
+            hx_json_num(po, "z", p->empty ? (double)NAN : nv->cmp[g].z[k]);
             cJSON_AddItemToArray(pts, po);
         }
     }
     a = cJSON_AddArrayToObject(o, "steps");
     for (i = 0; i < nv->nsteps; i++) {
         cJSON *s = cJSON_CreateObject(), *ca = cJSON_AddArrayToObject(s, "candidates");
-        add_num(s, "G_held_out_before", nv->step[i].G_hold_before);
+        hx_json_num(s, "G_held_out_before", nv->step[i].G_hold_before);
         for (j = 0; j < nv->step[i].ncand; j++) {
             cJSON *co = cand_json(&nv->step[i].cand[j]);
             cJSON_AddBoolToObject(co, "selected", j == nv->step[i].selected);

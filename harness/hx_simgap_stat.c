@@ -758,6 +758,7 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
     int d, nd = 0, r, k = (shift != NULL && S >= 2) ? S : 0, a, b;
     double pen = 0.0;
     double *vt = NULL, *mean = NULL, *D = NULL, *dev = NULL, *M = NULL, *rhs = NULL;
+    double res = (double)NAN; /* NaN: out of memory */
     memset(gsum, 0, sizeof gsum);
     memset(lsum, 0, sizeof lsum);
     memset(gcnt, 0, sizeof gcnt);
@@ -768,13 +769,7 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
     M = (double *)malloc(((size_t)k * (size_t)k + 1) * sizeof *M);
     rhs = (double *)malloc(((size_t)k + 1) * sizeof *rhs);
     if (mean == NULL || vt == NULL || D == NULL || dev == NULL || M == NULL || rhs == NULL) {
-        free(mean);
-        free(vt);
-        free(D);
-        free(dev);
-        free(M);
-        free(rhs);
-        return (double)NAN;
+        goto done;
     }
     for (j = 0; j < n; j++) {
         double s = 0.0;
@@ -897,14 +892,16 @@ static double zscores(const sg_plist_t *pl, const double *real, const double *tw
     if (lnD_out != NULL) {
         *lnD_out = nd > 0 ? L / (double)nd : 0.0;
     }
+    /* |a|^2: how far the parameters had to move, on the scale of one point */
+    res = nd > 0 ? G / (double)nd + pen / (double)(n > 0 ? n : 1) : 0.0;
+done:
     free(mean);
     free(vt);
     free(D);
     free(dev);
     free(M);
     free(rhs);
-    /* |a|^2: how far the parameters had to move, on the scale of one point */
-    return nd > 0 ? G / (double)nd + pen / (double)(n > 0 ? n : 1) : 0.0;
+    return res;
 }
 
 /* Variance of G = sum_j w_j z_j^2 (w_j = 1 / (domains x points of its

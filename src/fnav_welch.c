@@ -260,19 +260,31 @@ static fnav_real_t global_fix(const fnav_welch_t *w, uint32_t k, fnav_real_t acc
     return v > FNAV_R(0.0) ? v : FNAV_R(0.0);
 }
 
-fnav_status_t fnav_welch_get(const fnav_welch_t *w, fnav_real_t *out, size_t n_out)
+/* The checks fnav_welch_get and fnav_welch_last share: FNAV_OK with the
+ * number of bins in *nb; FNAV_E_ARG, FNAV_E_SIZE (out shorter than the
+ * bins) or FNAV_E_STATE (no segment yet). */
+static fnav_status_t out_check(const fnav_welch_t *w, const fnav_real_t *out, size_t n_out, uint32_t *nb)
 {
-    uint32_t k, nb;
-    fnav_real_t inv;
     if (w == NULL || out == NULL) {
         return FNAV_E_ARG;
     }
-    nb = fnav_welch_bins(w);
-    if (n_out < nb) {
+    *nb = fnav_welch_bins(w);
+    if (n_out < *nb) {
         return FNAV_E_SIZE;
     }
     if (w->nseg == 0u) {
         return FNAV_E_STATE;
+    }
+    return FNAV_OK;
+}
+
+fnav_status_t fnav_welch_get(const fnav_welch_t *w, fnav_real_t *out, size_t n_out)
+{
+    uint32_t k, nb = 0u;
+    fnav_real_t inv;
+    const fnav_status_t st = out_check(w, out, n_out, &nb);
+    if (st != FNAV_OK) {
+        return st;
     }
     inv = FNAV_R(1.0) / (fnav_real_t)w->nseg;
     for (k = 0; k < nb; k++) {
@@ -287,16 +299,10 @@ fnav_status_t fnav_welch_get(const fnav_welch_t *w, fnav_real_t *out, size_t n_o
 
 fnav_status_t fnav_welch_last(const fnav_welch_t *w, fnav_real_t *out, size_t n_out)
 {
-    uint32_t k, nb;
-    if (w == NULL || out == NULL) {
-        return FNAV_E_ARG;
-    }
-    nb = fnav_welch_bins(w);
-    if (n_out < nb) {
-        return FNAV_E_SIZE;
-    }
-    if (w->nseg == 0u) {
-        return FNAV_E_STATE;
+    uint32_t k, nb = 0u;
+    const fnav_status_t st = out_check(w, out, n_out, &nb);
+    if (st != FNAV_OK) {
+        return st;
     }
     for (k = 0; k < nb; k++) {
         fnav_real_t r = w->re[k], i = w->im[k];

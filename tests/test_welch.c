@@ -636,6 +636,7 @@ static void test_last_segment_average(void **state)
     assert_int_equal(fnav_welch_last(&w, NULL, FNAV_WELCH_MAX_BINS), FNAV_E_ARG);
     assert_int_equal(fnav_welch_get(NULL, avg, FNAV_WELCH_MAX_BINS), FNAV_E_ARG);
     assert_int_equal(fnav_welch_get(&w, NULL, FNAV_WELCH_MAX_BINS), FNAV_E_ARG);
+    assert_int_equal(fnav_welch_get(&w, NULL, FNAV_WELCH_MAX_BINS), FNAV_E_ARG);
 }
 
 /* Parseval: with a rectangular window and no detrending, the one-sided

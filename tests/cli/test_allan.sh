@@ -129,6 +129,11 @@ if [ -w /dev/full ]; then
             fail "a walk, --json onto a full disk${p:+, --profile}: --out not written"
     done
     expect_err "walkfull.profile: the log is not static (above); profile not written" "a walk: the profile refused"
+    # the CSV's own write failure: the file, or "standard output", and the reason named (hx_out_finish)
+    expect_exit 3 "--out onto a full disk" "$H" allan "$T/ten.csv" --no-sim --quiet --out /dev/full
+    expect_err "/dev/full: write failed (No space left on device)" "--out onto a full disk: the failed write said"
+    expect_exit 3 "--out - onto a full disk" sh -c '"$0" allan "$1" --no-sim --quiet --out - >/dev/full' "$H" "$T/ten.csv"
+    expect_err "standard output: write failed (No space left on device)" "--out - onto a full disk: the failed write said"
 else
     echo "SKIP exit precedence of allan's outputs: /dev/full is not writable"
 fi

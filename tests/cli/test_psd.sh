@@ -49,6 +49,16 @@ expect_exit 0 "tone, --dc linear" "$H" psd "$T/tone.csv" --dc linear
 grep -q "is recommended" "$T/out" && fail "--dc linear: the pointer is for the paper's setting only" ||
     pass "--dc linear: no pointer"
 expect_exit 3 "unwritable output" "$H" psd "$T/tone.csv" --out /nonexistent/dir/p.csv
+# a CSV whose write fails (a full disk; standard output on one): exit 3 with the file, or "standard output", and
+# the reason named (hx_out_finish)
+if [ -w /dev/full ]; then
+    expect_exit 3 "--out onto a full disk" "$H" psd "$T/tone.csv" --out /dev/full
+    expect_err "/dev/full: write failed (No space left on device)" "--out onto a full disk: the failed write said"
+    expect_exit 3 "--out - onto a full disk" sh -c '"$0" psd "$1" --out - >/dev/full' "$H" "$T/tone.csv"
+    expect_err "standard output: write failed (No space left on device)" "--out - onto a full disk: the failed write said"
+else
+    echo "SKIP psd --out onto a full disk: /dev/full is not writable"
+fi
 # every output is checked before the Welch work: an unwritable one is exit 3 with nothing printed (not found at
 # the end, after the work)
 for o in "--out /nonexistent/dir/p.csv" "--json /nonexistent/dir/p.json" "--plot /nonexistent/dir/pd"; do
