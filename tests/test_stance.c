@@ -1316,6 +1316,24 @@ static void test_rest_run_long(void **state)
     assert_int_equal(still, outs);
 }
 
+/* Sample k of a 100 Hz walk for the foot-strike tests: still for the first
+ * second, then each second a swing from 0.6 s (pitching, a forward push)
+ * with a heel impact of -60 m/s^2 from 0.98 s, stance otherwise. */
+static fnav_sample_t impact_walk(long k)
+{
+    const double t = (double)k / 100.0, ph = fmod(t, 1.0);
+    double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
+    if (t > 1.0 && ph >= 0.6) {
+        const double u = (ph - 0.6) / 0.4;
+        w[1] = 3.0 * sin(3.14159265358979 * u);
+        f[0] = 5.0 * sin(6.28318530717959 * u);
+        if (ph >= 0.98) {
+            f[2] = -60.0; /* the heel impact: 1.98 s, 2.98 s, 3.98 s */
+        }
+    }
+    return sample(k, 100.0, f, w);
+}
+
 /* A time jump of over 35.8 min (2^31 us) between a heel impact and the
  * stance it ends: the jerk history's stamps are microseconds modulo 2^32
  * (71.6 min), so a foot-strike time searched across it would come out
@@ -1344,18 +1362,7 @@ static void test_foot_strike_time_jump(void **state)
         c.rate_hz = FNAV_R(100.0);
         assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
         for (k = 0; k < 400; k++) {
-            const double t = (double)k / 100.0, ph = fmod(t, 1.0);
-            double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
-            fnav_sample_t s;
-            if (t > 1.0 && ph >= 0.6) {
-                const double u = (ph - 0.6) / 0.4;
-                w[1] = 3.0 * sin(3.14159265358979 * u);
-                f[0] = 5.0 * sin(6.28318530717959 * u);
-                if (ph >= 0.98) {
-                    f[2] = -60.0; /* the heel impact, 2.98 s in the second swing */
-                }
-            }
-            s = sample(k, 100.0, f, w);
+            fnav_sample_t s = impact_walk(k);
             if (k >= 299) {
                 s.t_ns += jump_ns; /* after the impact, before the stance */
             }
@@ -1402,18 +1409,7 @@ static void test_foot_strike_across_wrap(void **state)
         c.rate_hz = FNAV_R(100.0);
         assert_int_equal(fnav_stance_init(&st, &c), FNAV_OK);
         for (k = 0; k < 400; k++) {
-            const double t = (double)k / 100.0, ph = fmod(t, 1.0);
-            double f[3] = { 0.0, 0.0, -k_g }, w[3] = { 0.0, 0.0, 0.0 };
-            fnav_sample_t s;
-            if (t > 1.0 && ph >= 0.6) {
-                const double u = (ph - 0.6) / 0.4;
-                w[1] = 3.0 * sin(3.14159265358979 * u);
-                f[0] = 5.0 * sin(6.28318530717959 * u);
-                if (ph >= 0.98) {
-                    f[2] = -60.0; /* the heel impact, 2.98 s in the second swing */
-                }
-            }
-            s = sample(k, 100.0, f, w);
+            fnav_sample_t s = impact_walk(k);
             s.t_ns += off_ns;
             assert_int_equal(fnav_stance_push(&st, &s), FNAV_OK);
             while (fnav_stance_pop(&st, &o) == FNAV_OK) {
