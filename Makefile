@@ -333,10 +333,16 @@ bench: $(HARNESS) $(BENCH_BINS)
 SIMGAP_CASES ?= 40
 SIMGAP_SEED  ?= 1
 SIMGAP_CONTROLS ?= 20
+# Case i of --seed S owns the seeds S + 20000 i ... S + 20000 i + 19999
+# (harness/hx_simgap_valid.h, SGV_SEED_STRIDE): the controls' seed is the
+# first past the 40 cases of seed 1 (1 + 40 x 20000), so that no control
+# shares a twin or a log's noise with a case of the first run
+# (tests/test_simgap.c, test_validate_case_seeds_disjoint).
+SIMGAP_CONTROLS_SEED ?= 800001
 simgap-validation: $(HARNESS)
 	nice $(HARNESS) simgap-validate --cases $(SIMGAP_CASES) --seed $(SIMGAP_SEED) \
 	  --json $(BUILD)/simgap-validation.json --markdown docs/simgap-validation.md
-	nice $(HARNESS) simgap-validate --effects control --cases $(SIMGAP_CONTROLS) --seed 2 \
+	nice $(HARNESS) simgap-validate --effects control --cases $(SIMGAP_CONTROLS) --seed $(SIMGAP_CONTROLS_SEED) \
 	  --json $(BUILD)/simgap-validation-controls.json --markdown docs/simgap-validation-controls.md
 
 # ---------------------------------------------------------------- robustness

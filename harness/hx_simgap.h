@@ -332,6 +332,14 @@ typedef struct {
  *  sg_se_from_refits counts at most this many refits. */
 #define SG_MAX_TWINS 60
 
+/** One more than the largest offset a diagnosis adds to its --seed S
+ *  (docs/simgap.md "What `--seed` seeds"): S + 7000 + 1000 c + r, c <= 5,
+ *  r < ceil(SG_MAX_TWINS / 6), is 12,009 (the profile's static twins);
+ *  the bootstrap's S + 1000 c + 17 is 5,017, a walk's S + 7777 + k,
+ *  k < SG_MAX_TWINS, 7,836. A diagnosis draws from the seeds S ...
+ *  S + SG_SEED_SPAN - 1 (mod 2^32) only. */
+#define SG_SEED_SPAN 12010u
+
 /** The q quantile (0 <= q <= 1) of n values sorted ascending, numpy's
  *  default definition (numpy.percentile's "linear", Hyndman and Fan's
  *  type 7): h = (n - 1) q, x[floor h] + (h - floor h)(x[floor h + 1] -

@@ -2861,7 +2861,8 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
     }
     *cfg = fnav_imuerr_config_default;
     cfg->rate_hz = (fnav_real_t)o->walk_rate_hz;
-    cfg->seed = fnav_rng_u32(rng);
+    (void)fnav_rng_u32(rng); /* was the log's seed: drawn still, so the later draws are as before */
+    cfg->seed = cs->log_seed;
     if (fnav_imuerr_config_from_profile(cfg, &prof) != FNAV_OK) {
         snprintf(why, why_size, "profile %d is not valid for the error model at %g Hz", cs->profile, o->walk_rate_hz);
         return -1;

@@ -43,7 +43,8 @@ void sg_nav_scores(const sg_nav_t *nv, double *score, int neff, uint32_t *flagge
 void sg_nav_truth_errors(const sg_nav_t *nv, int id, uint32_t mask, const double *truth, double *pe, int *np,
                          double *sh, int *ns);
 /** Validation: draw a walk case (type: index of sgv_effects() or -1 for a
- *  control): sensor configuration, motion script, truth in cs. On failure
+ *  control): sensor configuration, motion script, truth in cs; the log's
+ *  error model is seeded with cs->log_seed (sgv_case_seeds). On failure
  *  (-1) why says what stopped it. */
 int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t *cs, fnav_imuerr_config_t *cfg,
                      char *script, size_t script_size, char *why, size_t why_size);

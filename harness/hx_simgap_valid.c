@@ -261,7 +261,8 @@ static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_
     }
     *cfg = fnav_imuerr_config_default;
     cfg->rate_hz = (fnav_real_t)o->rate_hz;
-    cfg->seed = fnav_rng_u32(rng);
+    (void)fnav_rng_u32(rng); /* was the log's seed: drawn still, so the later draws are as before */
+    cfg->seed = cs->log_seed;
     if (fnav_imuerr_config_from_profile(cfg, &prof) != FNAV_OK) {
         return -1;
     }
@@ -555,6 +556,13 @@ static int case_type(const sgv_opts_t *o, const int *types, int ntypes, int i)
     return types[(i + off) % ntypes];
 }
 
+void sgv_case_seeds(const sgv_opts_t *o, int i, uint32_t *log_seed, uint32_t *diag_seed)
+{
+    /* unsigned: wraps past 4294967295 */
+    *diag_seed = o->seed + SGV_SEED_STRIDE * (uint32_t)i;
+    *log_seed = *diag_seed + SG_SEED_SPAN;
+}
+
 int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size)
 {
     int types[2 + NEFF], i, ntypes;
@@ -618,10 +626,12 @@ int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size)
         sgv_case_t cs;
         fnav_imuerr_config_t cfg;
         char e2[256];
+        uint32_t dseed;
         if ((o->only >= 0 && i != o->only) || type == -100 || (type >= 0 && k_eff[type].cls == SGV_MOTION)) {
             continue;
         }
         memset(&cs, 0, sizeof cs);
+        sgv_case_seeds(o, i, &cs.log_seed, &dseed);
         fnav_rng_seed(&rng, o->seed, 0x10000u + (uint32_t)i);
         if (draw_static(o, type, &rng, &cs, &cfg, e2, sizeof e2) != 0) {
             snprintf(err, err_size, "case %d: %s at %.3g x its detectable threshold: %s (lower --mag-range, or "
@@ -664,6 +674,7 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
         sg_result_t *res;
         sg_opts_t so = sg_opts_default();
         char script[1024], e2[256];
+        uint32_t dseed;
         double t0 = hx_now_s();
         if (o->only >= 0 && i != o->only) {
             continue;
@@ -673,6 +684,7 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
         }
         memset(cs, 0, sizeof *cs);
         cs->pred = -1;
+        sgv_case_seeds(o, i, &cs->log_seed, &dseed);
         fnav_rng_seed(&rng, o->seed, 0x10000u + (uint32_t)i);
         cs->walk = (type == -100) || (type >= 0 && k_eff[type].cls == SGV_MOTION);
         cs->truth = type >= 0 ? type : -1;
@@ -704,7 +716,7 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
         }
         so.quiet = 1;
         so.seeds = o->seeds;
-        so.seed = 1000u + (uint32_t)i;
+        so.seed = dseed; /* no case's twins or bootstrap meet another's, nor any log's */
         so.domain = cs->walk ? 2 : 1;
         if (sg_diagnose(&log, "case", &so, res, e2, sizeof e2) != 0) {
             snprintf(err, err_size, "case %d: diagnosis failed: %s", i, e2);

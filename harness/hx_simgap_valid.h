@@ -87,12 +87,26 @@ typedef struct {
 
 sgv_opts_t sgv_opts_default(void);
 
+/** Seeds one case owns (docs/simgap.md "What `--seed` seeds"): case i of
+ *  --seed S owns S + i SGV_SEED_STRIDE ... S + (i + 1) SGV_SEED_STRIDE - 1
+ *  (mod 2^32): its diagnosis draws from the first SG_SEED_SPAN, its log is
+ *  the error model's run of the next. 100,000 cases (--cases' limit) own
+ *  2e9 seeds, fewer than 2^32: no two cases meet, whatever S. */
+#define SGV_SEED_STRIDE 20000u
+
+/** The seeds of case i: *log_seed the error model's seed of its log,
+ *  *diag_seed the --seed S of its diagnosis (which draws from S ...
+ *  S + SG_SEED_SPAN - 1): S + i SGV_SEED_STRIDE + SG_SEED_SPAN and
+ *  S + i SGV_SEED_STRIDE (mod 2^32). */
+void sgv_case_seeds(const sgv_opts_t *o, int i, uint32_t *log_seed, uint32_t *diag_seed);
+
 /** truth of a case that was not run (--only, a stop, a failure). */
 #define SGV_NOT_RUN (-1000)
 
 /** One scored case. */
 typedef struct {
     int truth;              /**< index into sgv_effects(), -1 control */
+    uint32_t log_seed;      /**< the error model's seed of the log (sgv_case_seeds) */
     int cls;                /**< class of the truth (controls: the domain's) */
     int walk;               /**< walk case */
     int profile;            /**< fnav_profile_id_t */

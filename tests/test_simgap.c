@@ -3412,6 +3412,89 @@ static void test_report_magnitude_bins(void **state)
     free(buf);
 }
 
+/* A range of seeds [start, start + len) mod 2^32. */
+typedef struct {
+    uint32_t start, len;
+    int run, cs;
+} seed_range_t;
+
+static int seed_range_cmp(const void *a, const void *b)
+{
+    const uint32_t x = ((const seed_range_t *)a)->start, y = ((const seed_range_t *)b)->start;
+    return x < y ? -1 : (x > y ? 1 : 0);
+}
+
+/* Every case of the runs (seed[k], cases[k]) together: each case's log
+ * seed and the SG_SEED_SPAN seeds its diagnosis draws from are disjoint,
+ * modulo 2^32, from every other case's and from each other. Sorted by
+ * start, each range must end before the next begins, and the last before
+ * the first + 2^32 (the wrap). 0 when disjoint; else prints the first
+ * overlap. */
+static int case_seeds_overlap(const uint32_t *seed, const int *cases, int nrun)
+{
+    int k, i, n = 0, tot = 0, bad = 0;
+    seed_range_t *r;
+    for (k = 0; k < nrun; k++) {
+        tot += 2 * cases[k];
+    }
+    r = (seed_range_t *)calloc((size_t)tot, sizeof *r);
+    assert_non_null(r);
+    for (k = 0; k < nrun; k++) {
+        sgv_opts_t o = sgv_opts_default();
+        o.seed = seed[k];
+        o.cases = cases[k];
+        for (i = 0; i < cases[k]; i++) {
+            uint32_t ls, ds;
+            sgv_case_seeds(&o, i, &ls, &ds);
+            r[n].start = ls;
+            r[n].len = 1u;
+            r[n].run = k;
+            r[n++].cs = i;
+            r[n].start = ds;
+            r[n].len = SG_SEED_SPAN;
+            r[n].run = k;
+            r[n++].cs = i;
+        }
+    }
+    qsort(r, (size_t)n, sizeof *r, seed_range_cmp);
+    for (i = 0; i < n && !bad; i++) {
+        const seed_range_t *a = &r[i], *b = &r[(i + 1) % n];
+        const uint64_t end = (uint64_t)a->start + a->len;
+        const uint64_t next = (uint64_t)b->start + (i + 1 == n ? 4294967296u : 0u);
+        if (end > next) {
+            printf("run %d (seed %u) case %d: seeds %u+%u meet run %d case %d's %u+%u\n", a->run, seed[a->run],
+                   a->cs, a->start, a->len, b->run, b->cs, b->start, b->len);
+            bad = 1;
+        }
+    }
+    free(r);
+    return bad;
+}
+
+/* No two validation cases share a seed, a twin or a bootstrap generator,
+ * and no diagnosis draws its log's (or another case's log's) noise, for
+ * every --seed and --cases the command accepts (0 .. 4294967295, 1 ..
+ * 100000), the 32-bit wrap included; nor do the two runs of make
+ * simgap-validation (docs/simgap.md "What `--seed` seeds"). Before, case
+ * i's diagnosis used seed 1000 + i: neighbours shared twins. */
+static void test_validate_case_seeds_disjoint(void **state)
+{
+    static const uint32_t s1[] = { 1u, 0u, 4294967295u, 4294967295u - 20000u * 50u, 123456789u };
+    static const int n1[] = { 40, 100000, 100000, 100000, 2 };
+    const uint32_t mk[2] = { 1u, 800001u }; /* Makefile: SIMGAP_SEED, SIMGAP_CONTROLS_SEED */
+    const int mkn[2] = { 40, 20 };          /* SIMGAP_CASES, SIMGAP_CONTROLS */
+    size_t k;
+    (void)state;
+    /* the span covers every offset the diagnosis adds */
+    assert_true(7000u + 1000u * 5u + (SG_MAX_TWINS + 5u) / 6u - 1u < SG_SEED_SPAN);
+    assert_true(1000u * 5u + 17u < SG_SEED_SPAN);
+    assert_true(7777u + SG_MAX_TWINS - 1u < SG_SEED_SPAN);
+    for (k = 0; k < sizeof n1 / sizeof n1[0]; k++) {
+        assert_int_equal(case_seeds_overlap(&s1[k], &n1[k], 1), 0);
+    }
+    assert_int_equal(case_seeds_overlap(mk, mkn, 2), 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -3477,6 +3560,7 @@ int main(void)
         cmocka_unit_test(test_summary_split_percentages_add_up),
         cmocka_unit_test(test_report_medians_all_cases),
         cmocka_unit_test(test_report_magnitude_bins),
+        cmocka_unit_test(test_validate_case_seeds_disjoint),
         cmocka_unit_test(test_fit_ar1_in_catalogue),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
