@@ -725,7 +725,8 @@ grep -q "^| control " "$T/v.md" && grep -q "^# Sim-to-real gap diagnosis: valida
 # step 2, "Prescreen"). The log and the diagnosis are those of
 # simgap-validate --cases 40 --seed 1's case 36 before the cases' seeds
 # were made disjoint (commit b111ee6: the log's seed the case generator's
-# draw, 201791262, the diagnosis seed 1000 + 36), rebuilt with sim and
+# draw, 201791262, the diagnosis seed 1000 + 36;
+# scripts/simgap_case36_seeds.py redoes those draws), rebuilt with sim and
 # simgap as that case ran them: a one-hour stand at 200 Hz, point samples,
 # the Shimmer profile, rrw on ax at 2.04 x its threshold (K 0.000145591301
 # m/s^2/sqrt(s), the float the validation set), 16 twins. The diagnosis
