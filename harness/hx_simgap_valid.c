@@ -1168,13 +1168,17 @@ int sgv_write_json(const char *path, const sgv_opts_t *o, const sgv_case_t *case
     for (i = 0; i < n; i++) {
         const sgv_case_t *c = &cases[i];
         cJSON *o2, *v, *chs;
+        uint32_t log_seed, diag_seed;
         if (c->truth == SGV_NOT_RUN) {
             continue;
         }
         o2 = cJSON_CreateObject();
         v = cJSON_CreateArray();
         chs = cJSON_CreateArray();
+        sgv_case_seeds(o, i, &log_seed, &diag_seed);
         cJSON_AddNumberToObject(o2, "case", i);
+        cJSON_AddNumberToObject(o2, "log_seed", log_seed);
+        cJSON_AddNumberToObject(o2, "diagnosis_seed", diag_seed);
         cJSON_AddStringToObject(o2, "truth", c->truth >= 0 ? k_eff[c->truth].name : "control");
         cJSON_AddStringToObject(o2, "class", c->truth >= 0 ? k_cls[k_eff[c->truth].cls] : "control");
         cJSON_AddBoolToObject(o2, "walk", c->walk);

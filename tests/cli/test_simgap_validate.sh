@@ -159,6 +159,10 @@ expect_exit 0 "walk effects at 1000 x: every case drawn" "$H" simgap-validate --
 json "$T/wc.json" 'j["cases"] == 3 and all(r["multiple_of_threshold"] < 1000 for r in j["results"]
     if abs(r["values"][0]) >= 0.45)' && pass "a clipped walk magnitude's multiple is the one set" ||
     fail "clipped walk magnitudes: $(cat "$T/pyerr") $(cat "$T/out")"
+# each case's seeds are in the JSON (case i of --seed S: its diagnosis S + 20000 i, its log 12010 further)
+json "$T/wc.json" 'all(r["diagnosis_seed"] == (j["seed"] + 20000 * r["case"]) % 2**32 and
+    r["log_seed"] == (r["diagnosis_seed"] + 12010) % 2**32 for r in j["results"]) and len(j["results"]) == 3' &&
+    pass "each case's log and diagnosis seeds in the JSON" || fail "case seeds in the JSON: $(cat "$T/pyerr")"
 
 # a static case too big to hold (1e11 samples: it would run for ever) is a usage error; walk-only runs ignore the
 # static size
