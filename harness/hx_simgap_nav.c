@@ -2828,8 +2828,8 @@ static int sim_firsts(const char *script, const fnav_imuerr_config_t *cfg, const
     return 0;
 }
 
-int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t *cs, fnav_imuerr_config_t *cfg,
-                     char *script, size_t script_size, char *why, size_t why_size)
+int sg_nav_draw_case(const sgv_opts_t *o, int type, uint32_t log_seed, fnav_rng_t *rng, sgv_case_t *cs,
+                     fnav_imuerr_config_t *cfg, char *script, size_t script_size, char *why, size_t why_size)
 {
     const sgv_effect_t *E;
     int n, c, i;
@@ -2841,6 +2841,7 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
     fnav_imuerr_config_t clean;
     int rc = -1;
     E = sgv_effects(&n);
+    cs->log_seed = log_seed;
     /* the filter as in sg_nav_diagnose: bias model off, NavChip noise, no
      * settling state */
     nc.bias_model = FNAV_BIAS_OFF;
@@ -2862,7 +2863,7 @@ int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t 
     *cfg = fnav_imuerr_config_default;
     cfg->rate_hz = (fnav_real_t)o->walk_rate_hz;
     (void)fnav_rng_u32(rng); /* was the log's seed: drawn still, so the later draws are as before */
-    cfg->seed = cs->log_seed;
+    cfg->seed = log_seed;
     if (fnav_imuerr_config_from_profile(cfg, &prof) != FNAV_OK) {
         snprintf(why, why_size, "profile %d is not valid for the error model at %g Hz", cs->profile, o->walk_rate_hz);
         return -1;

@@ -44,10 +44,10 @@ void sg_nav_truth_errors(const sg_nav_t *nv, int id, uint32_t mask, const double
                          double *sh, int *ns);
 /** Validation: draw a walk case (type: index of sgv_effects() or -1 for a
  *  control): sensor configuration, motion script, truth in cs; the log's
- *  error model is seeded with cs->log_seed (sgv_case_seeds). On failure
- *  (-1) why says what stopped it. */
-int sg_nav_draw_case(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t *cs, fnav_imuerr_config_t *cfg,
-                     char *script, size_t script_size, char *why, size_t why_size);
+ *  error model is seeded with log_seed (case i's: sgv_case_seeds), which
+ *  is recorded in cs->log_seed. On failure (-1) why says what stopped it. */
+int sg_nav_draw_case(const sgv_opts_t *o, int type, uint32_t log_seed, fnav_rng_t *rng, sgv_case_t *cs,
+                     fnav_imuerr_config_t *cfg, char *script, size_t script_size, char *why, size_t why_size);
 
 /**
  * The sensor's linear error from the one fitted on a twin whose truth is

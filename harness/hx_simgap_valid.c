@@ -246,14 +246,16 @@ static int setp(fnav_imuerr_config_t *c, int id, const char *name, uint32_t mask
     return setk(c, id, fnav_imuerr_param_find((fnav_effect_id_t)id, name), mask, v, err, err_size);
 }
 
-/* Draw one static/timing case: configuration and truth. */
-static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_t *cs, fnav_imuerr_config_t *cfg,
-                       char *err, size_t err_size)
+/* Draw one static/timing case: configuration and truth; the log's error
+ * model is seeded with log_seed (sgv_case_seeds), recorded in cs. */
+static int draw_static(const sgv_opts_t *o, int type, uint32_t log_seed, fnav_rng_t *rng, sgv_case_t *cs,
+                       fnav_imuerr_config_t *cfg, char *err, size_t err_size)
 {
     fnav_profile_t prof;
     const double n = o->duration_s * o->rate_hz;
     const sgv_effect_t *E = type >= 0 ? &k_eff[type] : NULL;
     int ch;
+    cs->log_seed = log_seed;
     cs->profile = (int)(urand(rng) * 3.0) % 3;
     snprintf(err, err_size, "the profile cannot be set up");
     if (fnav_profile_builtin(&prof, (fnav_profile_id_t)cs->profile) != FNAV_OK) {
@@ -262,7 +264,7 @@ static int draw_static(const sgv_opts_t *o, int type, fnav_rng_t *rng, sgv_case_
     *cfg = fnav_imuerr_config_default;
     cfg->rate_hz = (fnav_real_t)o->rate_hz;
     (void)fnav_rng_u32(rng); /* was the log's seed: drawn still, so the later draws are as before */
-    cfg->seed = cs->log_seed;
+    cfg->seed = log_seed;
     if (fnav_imuerr_config_from_profile(cfg, &prof) != FNAV_OK) {
         return -1;
     }
@@ -559,8 +561,13 @@ static int case_type(const sgv_opts_t *o, const int *types, int ntypes, int i)
 void sgv_case_seeds(const sgv_opts_t *o, int i, uint32_t *log_seed, uint32_t *diag_seed)
 {
     /* unsigned: wraps past 4294967295 */
-    *diag_seed = o->seed + SGV_SEED_STRIDE * (uint32_t)i;
-    *log_seed = *diag_seed + SG_SEED_SPAN;
+    const uint32_t d = o->seed + SGV_SEED_STRIDE * (uint32_t)i;
+    if (diag_seed != NULL) {
+        *diag_seed = d;
+    }
+    if (log_seed != NULL) {
+        *log_seed = d + SG_SEED_SPAN;
+    }
 }
 
 int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size)
@@ -626,14 +633,14 @@ int sgv_check_opts(const sgv_opts_t *o, char *err, size_t err_size)
         sgv_case_t cs;
         fnav_imuerr_config_t cfg;
         char e2[256];
-        uint32_t dseed;
+        uint32_t lseed;
         if ((o->only >= 0 && i != o->only) || type == -100 || (type >= 0 && k_eff[type].cls == SGV_MOTION)) {
             continue;
         }
         memset(&cs, 0, sizeof cs);
-        sgv_case_seeds(o, i, &cs.log_seed, &dseed);
+        sgv_case_seeds(o, i, &lseed, NULL);
         fnav_rng_seed(&rng, o->seed, 0x10000u + (uint32_t)i);
-        if (draw_static(o, type, &rng, &cs, &cfg, e2, sizeof e2) != 0) {
+        if (draw_static(o, type, lseed, &rng, &cs, &cfg, e2, sizeof e2) != 0) {
             snprintf(err, err_size, "case %d: %s at %.3g x its detectable threshold: %s (lower --mag-range, or "
                      "lengthen --duration)", i, type >= 0 ? k_eff[type].name : "control", cs.mult, e2);
             return -1;
@@ -674,7 +681,7 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
         sg_result_t *res;
         sg_opts_t so = sg_opts_default();
         char script[1024], e2[256];
-        uint32_t dseed;
+        uint32_t lseed, dseed;
         double t0 = hx_now_s();
         if (o->only >= 0 && i != o->only) {
             continue;
@@ -684,18 +691,19 @@ int sgv_run(const sgv_opts_t *o, sgv_case_t *cases, FILE *f, char *err, size_t e
         }
         memset(cs, 0, sizeof *cs);
         cs->pred = -1;
-        sgv_case_seeds(o, i, &cs->log_seed, &dseed);
+        sgv_case_seeds(o, i, &lseed, &dseed);
         fnav_rng_seed(&rng, o->seed, 0x10000u + (uint32_t)i);
         cs->walk = (type == -100) || (type >= 0 && k_eff[type].cls == SGV_MOTION);
         cs->truth = type >= 0 ? type : -1;
         if (cs->walk) {
-            if (sg_nav_draw_case(o, type >= 0 ? type : -1, &rng, cs, &cfg, script, sizeof script, e2, sizeof e2) != 0) {
+            if (sg_nav_draw_case(o, type >= 0 ? type : -1, lseed, &rng, cs, &cfg, script, sizeof script, e2,
+                                 sizeof e2) != 0) {
                 snprintf(err, err_size, "case %d: cannot draw a walk case: %s", i, e2);
                 cs->truth = SGV_NOT_RUN;
                 return -1;
             }
         } else {
-            if (draw_static(o, type, &rng, cs, &cfg, e2, sizeof e2) != 0) {
+            if (draw_static(o, type, lseed, &rng, cs, &cfg, e2, sizeof e2) != 0) {
                 snprintf(err, err_size, "case %d: cannot draw a static case: %s", i, e2);
                 cs->truth = SGV_NOT_RUN;
                 return -1;

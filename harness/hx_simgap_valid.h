@@ -97,7 +97,8 @@ sgv_opts_t sgv_opts_default(void);
 /** The seeds of case i: *log_seed the error model's seed of its log,
  *  *diag_seed the --seed S of its diagnosis (which draws from S ...
  *  S + SG_SEED_SPAN - 1): S + i SGV_SEED_STRIDE + SG_SEED_SPAN and
- *  S + i SGV_SEED_STRIDE (mod 2^32). */
+ *  S + i SGV_SEED_STRIDE (mod 2^32). Either pointer may be NULL (that seed
+ *  is not wanted). */
 void sgv_case_seeds(const sgv_opts_t *o, int i, uint32_t *log_seed, uint32_t *diag_seed);
 
 /** truth of a case that was not run (--only, a stop, a failure). */

@@ -223,7 +223,7 @@ static void test_draw_case_reason(void **state)
     o.walk_rate_hz = 1.0;
     fnav_rng_seed(&rng, 1u, 7u);
     memset(&cs, 0, sizeof cs);
-    assert_int_equal(sg_nav_draw_case(&o, t, &rng, &cs, &cfg, script, sizeof script, why, sizeof why), -1);
+    assert_int_equal(sg_nav_draw_case(&o, t, 0u, &rng, &cs, &cfg, script, sizeof script, why, sizeof why), -1);
     assert_non_null(strstr(why, "zero-velocity updates of the simulated walk could be matched, 5 needed"));
 }
 
