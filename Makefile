@@ -334,11 +334,14 @@ SIMGAP_CASES ?= 40
 SIMGAP_SEED  ?= 1
 SIMGAP_CONTROLS ?= 20
 # Case i of --seed S owns the seeds S + 20000 i ... S + 20000 i + 19999
-# (harness/hx_simgap_valid.h, SGV_SEED_STRIDE): the controls' seed is the
-# first past the 40 cases of seed 1 (1 + 40 x 20000), so that no control
-# shares a twin or a log's noise with a case of the first run
-# (tests/test_simgap.c, test_validate_case_seeds_disjoint).
-SIMGAP_CONTROLS_SEED ?= 800001
+# (harness/hx_simgap_valid.h, SGV_SEED_STRIDE). The controls' seed is derived,
+# SIMGAP_SEED + SIMGAP_CASES x 20000 (mod 2^32, as the harness's seeds wrap):
+# the first seed past the first run's cases (800001 with the defaults,
+# 1 + 40 x 20000), so that no control shares a twin or a log's noise with a
+# case of the first run whatever SIMGAP_CASES and SIMGAP_SEED are
+# (tests/test_simgap.c, test_validate_case_seeds_disjoint;
+# tests/cli/test_simgap_validate.sh checks the derivation with make -n).
+SIMGAP_CONTROLS_SEED ?= $(shell echo $$(( ($(SIMGAP_SEED) + $(SIMGAP_CASES) * 20000) % 4294967296 )))
 simgap-validation: $(HARNESS)
 	nice $(HARNESS) simgap-validate --cases $(SIMGAP_CASES) --seed $(SIMGAP_SEED) \
 	  --json $(BUILD)/simgap-validation.json --markdown docs/simgap-validation.md

@@ -3481,8 +3481,12 @@ static void test_validate_case_seeds_disjoint(void **state)
 {
     static const uint32_t s1[] = { 1u, 0u, 4294967295u, 4294967295u - 20000u * 50u, 123456789u };
     static const int n1[] = { 40, 100000, 100000, 100000, 2 };
-    const uint32_t mk[2] = { 1u, 800001u }; /* Makefile: SIMGAP_SEED, SIMGAP_CONTROLS_SEED */
-    const int mkn[2] = { 40, 20 };          /* SIMGAP_CASES, SIMGAP_CONTROLS */
+    /* make simgap-validation's SIMGAP_SEED, SIMGAP_CASES: its controls'
+     * seed is derived from them, SIMGAP_SEED + SIMGAP_CASES x 20000 (mod
+     * 2^32), for the defaults (1, 40: 800001), overrides and the wrap
+     * (tests/cli/test_simgap_validate.sh checks the Makefile derives it) */
+    static const uint32_t ms[] = { 1u, 1u, 1u, 77u, 4294967295u - 20000u * 10u };
+    static const int mc[] = { 40, 41, 1, 100000, 30 };
     size_t k;
     (void)state;
     /* the span covers every offset the diagnosis adds */
@@ -3492,7 +3496,12 @@ static void test_validate_case_seeds_disjoint(void **state)
     for (k = 0; k < sizeof n1 / sizeof n1[0]; k++) {
         assert_int_equal(case_seeds_overlap(&s1[k], &n1[k], 1), 0);
     }
-    assert_int_equal(case_seeds_overlap(mk, mkn, 2), 0);
+    for (k = 0; k < sizeof mc / sizeof mc[0]; k++) {
+        const uint32_t mk[2] = { ms[k], ms[k] + (uint32_t)mc[k] * SGV_SEED_STRIDE };
+        const int mkn[2] = { mc[k], 20 }; /* SIMGAP_CONTROLS */
+        assert_int_equal(case_seeds_overlap(mk, mkn, 2), 0);
+    }
+    assert_int_equal(1u + 40u * SGV_SEED_STRIDE, 800001u); /* the defaults' controls (docs/simgap.md) */
 }
 
 int main(void)

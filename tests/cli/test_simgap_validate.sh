@@ -163,6 +163,21 @@ json "$T/wc.json" 'j["cases"] == 3 and all(r["multiple_of_threshold"] < 1000 for
 json "$T/wc.json" 'all(r["diagnosis_seed"] == (j["seed"] + 20000 * r["case"]) % 2**32 and
     r["log_seed"] == (r["diagnosis_seed"] + 12010) % 2**32 for r in j["results"]) and len(j["results"]) == 3' &&
     pass "each case's log and diagnosis seeds in the JSON" || fail "case seeds in the JSON: $(cat "$T/pyerr")"
+# make simgap-validation's controls take the first seed past the first run's cases, derived from SIMGAP_SEED and
+# SIMGAP_CASES (Makefile), not a constant: before, SIMGAP_CASES=41 gave the controls 800001, its case 40's seeds
+R=$(dirname "$0")/../..
+mkseed() { # the controls' --seed that make -n simgap-validation prints with the given overrides
+    make -s -n -C "$R" simgap-validation HARNESS=/bin/true "$@" 2>/dev/null |
+        sed -n 's/.*--effects control --cases [0-9]* --seed \([0-9]*\) .*/\1/p'
+}
+[ "$(mkseed)" = 800001 ] && pass "make simgap-validation: the controls' seed 800001 by default (1 + 40 x 20000)" ||
+    fail "make's default controls' seed: '$(mkseed)'"
+[ "$(mkseed SIMGAP_CASES=41)" = 820001 ] && pass "SIMGAP_CASES=41: the controls' seed 820001, past case 40" ||
+    fail "SIMGAP_CASES=41: the controls' seed '$(mkseed SIMGAP_CASES=41)'"
+[ "$(mkseed SIMGAP_SEED=7 SIMGAP_CASES=3)" = 60007 ] && pass "SIMGAP_SEED=7 SIMGAP_CASES=3: the controls' seed 60007" ||
+    fail "SIMGAP_SEED=7 SIMGAP_CASES=3: the controls' seed '$(mkseed SIMGAP_SEED=7 SIMGAP_CASES=3)'"
+[ "$(mkseed SIMGAP_SEED=4294967295 SIMGAP_CASES=2)" = 39999 ] && pass "the controls' seed wraps past 2^32 - 1" ||
+    fail "the controls' seed past 2^32 - 1: '$(mkseed SIMGAP_SEED=4294967295 SIMGAP_CASES=2)'"
 
 # a static case too big to hold (1e11 samples: it would run for ever) is a usage error; walk-only runs ignore the
 # static size
