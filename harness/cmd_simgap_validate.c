@@ -13,7 +13,11 @@
 
 static const hx_opt_t k_opts[] = {
     { "--cases", "N", "number of cases (default 40): controls and each effect in turn", 0 },
-    { "--seed", "S", "seed of the case generator (default 1)", 0 },
+    { "--seed", "S",
+      "seed of the case generator (default 1); case i owns the seeds S + 20000 i ... S + 20000 i + 19999 "
+      "(mod 2^32): its diagnosis draws from S + 20000 i ... + 12009, its log's noise is S + 20000 i + 12010; "
+      "two runs share nothing when their seeds are at least 20000 x --cases apart",
+      0 },
     { "--duration", "S", "length of the static cases (default 3600: the catalogue's reference)", 0 },
     { "--rate", "HZ", "rate of the static cases (default 200)", 0 },
     { "--walk-duration", "S", "length of the walk cases (default 60)", 0 },

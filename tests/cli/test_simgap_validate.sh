@@ -163,6 +163,10 @@ json "$T/wc.json" 'j["cases"] == 3 and all(r["multiple_of_threshold"] < 1000 for
 json "$T/wc.json" 'all(r["diagnosis_seed"] == (j["seed"] + 20000 * r["case"]) % 2**32 and
     r["log_seed"] == (r["diagnosis_seed"] + 12010) % 2**32 for r in j["results"]) and len(j["results"]) == 3' &&
     pass "each case's log and diagnosis seeds in the JSON" || fail "case seeds in the JSON: $(cat "$T/pyerr")"
+# --help says which seeds case i uses and how far apart two runs' seeds must be (docs/simgap.md's option table)
+expect_exit 0 "--help" "$H" simgap-validate --help
+expect_out "case i owns the seeds S + 20000 i ... S + 20000 i + 19999" "--help: case i's seeds"
+expect_out "two runs share nothing when their seeds are at least 20000 x --cases apart" "--help: independent runs"
 # make simgap-validation's controls take the first seed past the first run's cases, derived from SIMGAP_SEED and
 # SIMGAP_CASES (Makefile), not a constant: before, SIMGAP_CASES=41 gave the controls 800001, its case 40's seeds
 R=$(dirname "$0")/../..
