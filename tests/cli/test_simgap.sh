@@ -735,9 +735,25 @@ grep -q "^| control " "$T/v.md" && grep -q "^# Sim-to-real gap diagnosis: valida
 # deviance"). Today's case 36 (sgv_case_seeds: this sim with --seed 732011,
 # simgap --seed 720001) is another realisation, on which rrw fits the
 # blocks best (fit dQ 1097, the ramp 904): not the hard case
-"$H" sim --motion stand:3600 --rate 200 --profile shimmer --oversample 1 --seed 201791262 \
-    --effect rrw:ch=ax:k=0.000145591301 --out "$T/r36.bin" >/dev/null 2>&1 || fail "sim: a random walk that tilts the blocks"
-expect_exit 0 "simgap: a random walk that looks like a ramp" "$H" simgap "$T/r36.bin" --static --seed 1036 --seeds 16 \
+# The seeds are the script's, not pasted: it must print these (log 201791262,
+# diagnosis 1036, the b111ee6 binary's JSON), and refuse the cases whose
+# draws it does not redo (a timing case, 8; a walk case, 10; an option)
+C36=$("$PY" "$(dirname "$0")/../../scripts/simgap_case36_seeds.py" 1 36 2>"$T/err")
+L36=$(echo "$C36" | sed -n 's/.* log seed \([0-9]*\),.*/\1/p')
+D36=$(echo "$C36" | sed -n 's/.* diagnosis seed \([0-9]*\),.*/\1/p')
+P36=$(echo "$C36" | sed -n 's/.* profile \([a-z]*\),.*/\1/p')
+E36=$(echo "$C36" | sed -n 's/.* effect \([a-z_]*\), .* channels \([a-z+]*\),.*/\1:ch=\2/p')
+[ "$L36" = 201791262 ] && [ "$D36" = 1036 ] && [ "$P36" = shimmer ] && [ "$E36" = rrw:ch=ax ] &&
+    pass "simgap_case36_seeds.py: --seed 1 case 36 is rrw on ax, Shimmer, log seed 201791262, diagnosis 1036" ||
+    fail "simgap_case36_seeds.py 1 36: '$C36' $(cat "$T/err")"
+for a in "1 8:a timing case (dropout)" "1 10:a walk case (control)" "--mag-range:not a whole number"; do
+    "$PY" "$(dirname "$0")/../../scripts/simgap_case36_seeds.py" ${a%%:*} >"$T/out" 2>"$T/err"
+    [ $? -eq 2 ] && [ ! -s "$T/out" ] && grep -q "${a#*:}" "$T/err" && pass "simgap_case36_seeds.py ${a%%:*}: refused" ||
+        fail "simgap_case36_seeds.py ${a%%:*}: not refused with '${a#*:}': $(cat "$T/out" "$T/err")"
+done
+"$H" sim --motion stand:3600 --rate 200 --profile "$P36" --oversample 1 --seed "$L36" \
+    --effect "$E36:k=0.000145591301" --out "$T/r36.bin" >/dev/null 2>&1 || fail "sim: a random walk that tilts the blocks"
+expect_exit 0 "simgap: a random walk that looks like a ramp" "$H" simgap "$T/r36.bin" --static --seed "$D36" --seeds 16 \
     --quiet --json "$T/r36.json"
 # the case is the hard one: on ax the ramp fits the fit segment best (fit dQ
 # 2480, rrw 2468) and is simulated next to rrw. Should this fail, the log
