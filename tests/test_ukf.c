@@ -1577,7 +1577,7 @@ static void test_zupt_after_long_swing(void **state)
  * two minutes, in both configurations (closed form or full sigma points):
  * every covariance entry with a position row equals the origin's to 1e-4
  * of the position sd times the other state's sd. The displacement itself
- * is the centre's rounding (docs/frames.md, "Position far from the start"):
+ * is the centre's rounding (docs/frames.md, "Frames"):
  * printed, not asserted. */
 static void test_far_from_origin(void **state)
 {
