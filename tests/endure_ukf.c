@@ -1,5 +1,5 @@
 /* Endurance of the float32 UKF: two measurements of what rounding does on
- * long runs (docs/navigation.md, "Long runs in float32: two things rounding
+ * long runs (docs/navigation.md, "Long runs in float32: what rounding did and
  * does to the covariance"; docs/frames.md, "Frames"). Not a suite: it prints its table
  * and exits 0 (non-zero only when a step fails). Build it in the float and
  * the double build and compare:
@@ -22,7 +22,9 @@
  *   sample from a yaw variance P0; the yaw variance every 10 minutes and
  *   its growth after the first 10 minutes (the bias's transient) against
  *   GYRO_NOISE^2 t, the gyro white noise's random walk (rad/s/sqrt(Hz);
- *   default the UKF's default). */
+ *   default the UKF's default), and the share each prediction adds,
+ *   GYRO_NOISE^2 dt, in units of the variance's spacing (ulp: nextafter,
+ *   in the build's fnav_real_t). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -91,8 +93,11 @@ static int far_run(int cf, double dist_m, int control, long steps)
         for (j = 0; j < FNAV_UKF_N; j++) {
             const double pa = (double)fnav_ukf_cov(&g_a, FNAV_UKF_P + i, j);
             const double pb = (double)fnav_ukf_cov(&g_b, FNAV_UKF_P + i, j);
-            const double s =
-                sqrt((double)fnav_ukf_cov(&g_a, FNAV_UKF_P + i, FNAV_UKF_P + i) * (double)fnav_ukf_cov(&g_a, j, j));
+            double s;
+            if (fnav_ukf_cov(&g_a, j, j) == FNAV_R(0.0)) {
+                continue; /* a state switched off: its row is 0 and sd x sd would be 0 (0/0) */
+            }
+            s = sqrt((double)fnav_ukf_cov(&g_a, FNAV_UKF_P + i, FNAV_UKF_P + i) * (double)fnav_ukf_cov(&g_a, j, j));
             worst = fabs(pb - pa) / s > worst ? fabs(pb - pa) / s : worst;
         }
     }
@@ -124,6 +129,16 @@ static int far_table(long steps)
         }
     }
     return 0;
+}
+
+/* the spacing of fnav_real_t at x > 0 (float or double, as built) */
+static double real_ulp(double x)
+{
+    if (sizeof(fnav_real_t) == sizeof(float)) {
+        const float f = (float)x;
+        return (double)(nextafterf(f, HUGE_VALF) - f);
+    }
+    return nextafter(x, HUGE_VAL) - x;
 }
 
 static int stand(double rate_hz, double hours, double p0, double noise)
@@ -159,8 +174,10 @@ static int stand(double rate_hz, double hours, double p0, double noise)
             if (k == every) {
                 p10 = p;
             }
-            printf("%7.0f s  yaw variance %.7e rad^2  growth since 600 s %.4g of noise^2 t\n", t, p,
-                   t > 600.0 ? (p - p10) / (noise * noise * (t - 600.0)) : 0.0);
+            printf("%7.0f s  yaw variance %.7e rad^2  growth since 600 s %.4g of noise^2 t  "
+                   "share noise^2 dt %.3g ulps of it\n",
+                   t, p, t > 600.0 ? (p - p10) / (noise * noise * (t - 600.0)) : 0.0,
+                   noise * noise * (double)dt / real_ulp(p));
         }
     }
     return 0;
