@@ -90,7 +90,7 @@ static int far_run(int cf, double dist_m, int control, long steps)
     for (i = 0; i < 3; i++) {
         const double d = ((double)g_b.pos_m.v[i] - (control ? 0.0 : (double)far.v[i])) - (double)g_a.pos_m.v[i];
         dmax = fabs(d) > dmax ? fabs(d) : dmax;
-        for (j = 0; j < FNAV_UKF_N; j++) {
+        for (j = 0; j < FNAV_UKF_NMAX; j++) { /* internal indices: 0-17 */
             const double pa = (double)fnav_ukf_cov(&g_a, FNAV_UKF_P + i, j);
             const double pb = (double)fnav_ukf_cov(&g_b, FNAV_UKF_P + i, j);
             double s;
