@@ -140,6 +140,11 @@ static const field_t k_fields[F_COUNT] = {
     { "FNAV_IMUERR_FLICKER_POLES", 53, 7 },    { "tag layout", 60, 4 },
 };
 
+/* The value fnav_cm_fw_config.h gives the option of field f (log2 for the
+ * FFT size), -1 for one it leaves alone; at the end of the file, where it
+ * reads the firmware's configuration. */
+static int64_t fw_config_value(int f);
+
 static uint64_t field(uint64_t tag, int f)
 {
     return (tag >> k_fields[f].shift) & ((1ULL << k_fields[f].width) - 1u);
@@ -182,11 +187,16 @@ static void test_tag_fields(void **state)
      * not the real type, the Allan levels or the flicker poles */
     for (f = 0; f < F_COUNT; f++) {
         int set_by_fw = f == F_WINDOW || f == F_EVENT || f == F_RING0 || f == F_LAG || f == F_POINTS || f == F_NFFT;
+        assert_int_equal(set_by_fw, fw_config_value(f) >= 0);
         if (!set_by_fw) {
             if (field(fw, f) != field(lib, f)) {
                 printf("fw file: %s differs\n", k_fields[f].name);
             }
             assert_true(field(fw, f) == field(lib, f));
+        } else {
+            /* the firmware's value, and not the library's (the defaults) */
+            assert_true(field(fw, f) == (uint64_t)fw_config_value(f));
+            assert_true(field(fw, f) != field(lib, f));
         }
     }
     assert_true(fw != lib);
@@ -289,4 +299,27 @@ static void test_each_option_alone(void **state)
 #define FNAV_IMUERR_FLICKER_POLES field(base, F_POLES)
     /* every option back at the library's value: the library's tag */
     assert_true(FNAV_BUILD_TAG == base);
+}
+
+/* Last in the file: the firmware's configuration in place of the options. */
+#undef FNAV_STANCE_MAX_WINDOW
+#undef FNAV_STANCE_EVENT_BUF
+#undef FNAV_ALLAN_RING0_LOG2
+#undef FNAV_ALLAN_CASCADE_LAG_LOG2
+#undef FNAV_ALLAN_MAX_POINTS
+#undef FNAV_WELCH_MAX_NFFT
+#undef FNAV_CM_RING_SIZE
+#include "fnav_cm_fw_config.h"
+
+static int64_t fw_config_value(int f)
+{
+    switch (f) {
+    case F_WINDOW: return FNAV_STANCE_MAX_WINDOW;
+    case F_EVENT: return FNAV_STANCE_EVENT_BUF;
+    case F_RING0: return FNAV_ALLAN_RING0_LOG2;
+    case F_LAG: return FNAV_ALLAN_CASCADE_LAG_LOG2;
+    case F_POINTS: return FNAV_ALLAN_MAX_POINTS;
+    case F_NFFT: return FNAV_BUILD_NFFT_LOG2;
+    default: return -1;
+    }
 }
