@@ -31,22 +31,10 @@
 #include <string.h>
 
 #include "footnav/footnav.h"
+#include "fnav_testukf.h"
 
 static const double k_g = 9.80665;
 
-static fnav_ukf_init_sd_t sd_default(void)
-{
-    fnav_ukf_init_sd_t sd;
-    int i;
-    for (i = 0; i < 3; i++) {
-        sd.att_rad[i] = FNAV_R(0.01);
-        sd.gyro_bias_rps[i] = FNAV_R(0.001);
-        sd.accel_bias_mps2[i] = FNAV_R(0.02);
-    }
-    sd.vel_mps = FNAV_R(0.01);
-    sd.pos_m = FNAV_R(0.001);
-    return sd;
-}
 
 static fnav_ukf_t g_a, g_b;
 
@@ -54,7 +42,7 @@ static fnav_ukf_t g_a, g_b;
 static int far_run(int cf, double dist_m, int control, long steps)
 {
     fnav_ukf_config_t c = fnav_ukf_config_default;
-    const fnav_ukf_init_sd_t sd = sd_default();
+    const fnav_ukf_init_sd_t sd = fnav_test_ukf_sd_default();
     const fnav_vec3_t far = fnav_vec3((fnav_real_t)dist_m, (fnav_real_t)-dist_m, FNAV_R(0.0));
     double worst = 0.0, dmax = 0.0, sdr;
     long k;
@@ -71,19 +59,13 @@ static int far_run(int cf, double dist_m, int control, long steps)
         g_b.pos_m = far;
     }
     for (k = 0; k < steps; k++) {
-        const double t = (double)k / 200.0, ph = fmod(t, 1.0);
-        fnav_vec3_t w = fnav_vec3_zero(), fb = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
-        if (ph >= 0.4) {
-            const double u = (ph - 0.4) / 0.6;
-            w.v[1] = (fnav_real_t)(3.0 * sin(6.28318530717959 * u));
-            w.v[2] = (fnav_real_t)(0.2 * sin(3.14159265358979 * u));
-            fb.v[0] = (fnav_real_t)(8.0 * sin(6.28318530717959 * u));
-        }
+        fnav_vec3_t w, fb;
+        const int still = fnav_test_walk_step(k, &w, &fb);
         if (fnav_ukf_predict(&g_a, w, fb, FNAV_R(0.005)) != FNAV_OK ||
             fnav_ukf_predict(&g_b, w, fb, FNAV_R(0.005)) != FNAV_OK) {
             return 2;
         }
-        if (ph < 0.4 && (fnav_ukf_zupt(&g_a, w) != FNAV_OK || fnav_ukf_zupt(&g_b, w) != FNAV_OK)) {
+        if (still && (fnav_ukf_zupt(&g_a, w) != FNAV_OK || fnav_ukf_zupt(&g_b, w) != FNAV_OK)) {
             return 3;
         }
     }
@@ -145,7 +127,7 @@ static int stand(double rate_hz, double hours, double p0, double noise)
 {
     static fnav_ukf_t f;
     fnav_ukf_config_t c = fnav_ukf_config_default;
-    const fnav_ukf_init_sd_t sd = sd_default();
+    const fnav_ukf_init_sd_t sd = fnav_test_ukf_sd_default();
     const long n = (long)(rate_hz * hours * 3600.0 + 0.5), every = (long)(rate_hz * 600.0 + 0.5);
     const fnav_real_t dt = (fnav_real_t)(1.0 / rate_hz);
     const fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
