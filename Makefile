@@ -45,6 +45,7 @@ CORE_SRC    := $(wildcard src/*.c)
 HX_SRC      := $(filter-out harness/main.c,$(wildcard harness/*.c)) $(wildcard port/linux/*.c)
 TEST_SRC    := $(wildcard tests/test_*.c)
 BENCH_SRC   := $(wildcard tests/bench_*.c)
+ENDURE_SRC  := $(wildcard tests/endure_*.c)
 TESTHELP_SRC:= $(wildcard tests/support/*.c) port/cortex-m/fnav_cm_ring.c port/cortex-m/fnav_port_cortexm.c \
                port/cortex-m/fnav_cm_est.c port/cortex-m/fnav_cm_app.c
 
@@ -55,6 +56,7 @@ LIB         := $(BUILD)/libfootnav.a
 HXLIB       := $(BUILD)/libhx.a
 TEST_BINS   := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 BENCH_BINS  := $(BENCH_SRC:tests/%.c=$(BUILD)/tests/%)
+ENDURE_BINS := $(ENDURE_SRC:tests/%.c=$(BUILD)/tests/%)
 
 # Symbols no core object may reference: allocation, stdio, process control.
 FORBIDDEN := malloc|calloc|realloc|free|_sbrk|sbrk|printf|fprintf|sprintf|snprintf|vprintf|vfprintf|vsprintf|vsnprintf|puts|fputs|putchar|fputc|putc|fopen|fclose|fread|fwrite|fflush|stdout|stderr|stdin|_impure_ptr|__printf_chk|__fprintf_chk|__sprintf_chk|__snprintf_chk|exit|abort|system
@@ -138,7 +140,9 @@ nm-check: $(LIB)
 	  echo "nm-check: the core library references the symbols above (no allocation or libc I/O allowed in src/)"; exit 1; \
 	else echo "nm-check: core library is allocation-free and I/O-free"; fi
 
-check-suites: $(TEST_BINS)
+# The measurements tests/endure_*.c are built with the suites (so they
+# cannot rot unseen, also in the double and sanitizer builds), not run.
+check-suites: $(TEST_BINS) $(ENDURE_BINS)
 	@set -e; for t in $(TEST_BINS); do echo "== $$t"; $$t; done
 
 # The CLI tests, one after the other (scripts/run_cli_tests.sh). With

@@ -1,5 +1,5 @@
 /* Endurance of the float32 UKF: two measurements of what rounding does on
- * long runs (docs/navigation.md, "Long runs in float32: two things rounding
+ * long runs (docs/navigation.md, "Long runs in float32: what rounding did and
  * does to the covariance"; docs/frames.md, "Frames"). Not a suite: it prints its table
  * and exits 0 (non-zero only when a step fails). Build it in the float and
  * the double build and compare:
@@ -22,29 +22,19 @@
  *   sample from a yaw variance P0; the yaw variance every 10 minutes and
  *   its growth after the first 10 minutes (the bias's transient) against
  *   GYRO_NOISE^2 t, the gyro white noise's random walk (rad/s/sqrt(Hz);
- *   default the UKF's default). */
+ *   default the UKF's default), and the share each prediction adds,
+ *   GYRO_NOISE^2 dt, in units of the variance's spacing (ulp: nextafter,
+ *   in the build's fnav_real_t). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "footnav/footnav.h"
+#include "fnav_testukf.h"
 
 static const double k_g = 9.80665;
 
-static fnav_ukf_init_sd_t sd_default(void)
-{
-    fnav_ukf_init_sd_t sd;
-    int i;
-    for (i = 0; i < 3; i++) {
-        sd.att_rad[i] = FNAV_R(0.01);
-        sd.gyro_bias_rps[i] = FNAV_R(0.001);
-        sd.accel_bias_mps2[i] = FNAV_R(0.02);
-    }
-    sd.vel_mps = FNAV_R(0.01);
-    sd.pos_m = FNAV_R(0.001);
-    return sd;
-}
 
 static fnav_ukf_t g_a, g_b;
 
@@ -52,7 +42,7 @@ static fnav_ukf_t g_a, g_b;
 static int far_run(int cf, double dist_m, int control, long steps)
 {
     fnav_ukf_config_t c = fnav_ukf_config_default;
-    const fnav_ukf_init_sd_t sd = sd_default();
+    const fnav_ukf_init_sd_t sd = fnav_test_ukf_sd_default();
     const fnav_vec3_t far = fnav_vec3((fnav_real_t)dist_m, (fnav_real_t)-dist_m, FNAV_R(0.0));
     double worst = 0.0, dmax = 0.0, sdr;
     long k;
@@ -69,30 +59,27 @@ static int far_run(int cf, double dist_m, int control, long steps)
         g_b.pos_m = far;
     }
     for (k = 0; k < steps; k++) {
-        const double t = (double)k / 200.0, ph = fmod(t, 1.0);
-        fnav_vec3_t w = fnav_vec3_zero(), fb = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
-        if (ph >= 0.4) {
-            const double u = (ph - 0.4) / 0.6;
-            w.v[1] = (fnav_real_t)(3.0 * sin(6.28318530717959 * u));
-            w.v[2] = (fnav_real_t)(0.2 * sin(3.14159265358979 * u));
-            fb.v[0] = (fnav_real_t)(8.0 * sin(6.28318530717959 * u));
-        }
+        fnav_vec3_t w, fb;
+        const int still = fnav_test_walk_step(k, &w, &fb);
         if (fnav_ukf_predict(&g_a, w, fb, FNAV_R(0.005)) != FNAV_OK ||
             fnav_ukf_predict(&g_b, w, fb, FNAV_R(0.005)) != FNAV_OK) {
             return 2;
         }
-        if (ph < 0.4 && (fnav_ukf_zupt(&g_a, w) != FNAV_OK || fnav_ukf_zupt(&g_b, w) != FNAV_OK)) {
+        if (still && (fnav_ukf_zupt(&g_a, w) != FNAV_OK || fnav_ukf_zupt(&g_b, w) != FNAV_OK)) {
             return 3;
         }
     }
     for (i = 0; i < 3; i++) {
         const double d = ((double)g_b.pos_m.v[i] - (control ? 0.0 : (double)far.v[i])) - (double)g_a.pos_m.v[i];
         dmax = fabs(d) > dmax ? fabs(d) : dmax;
-        for (j = 0; j < FNAV_UKF_N; j++) {
+        for (j = 0; j < FNAV_UKF_NMAX; j++) { /* internal indices: 0-17 */
             const double pa = (double)fnav_ukf_cov(&g_a, FNAV_UKF_P + i, j);
             const double pb = (double)fnav_ukf_cov(&g_b, FNAV_UKF_P + i, j);
-            const double s =
-                sqrt((double)fnav_ukf_cov(&g_a, FNAV_UKF_P + i, FNAV_UKF_P + i) * (double)fnav_ukf_cov(&g_a, j, j));
+            double s;
+            if (fnav_ukf_cov(&g_a, j, j) == FNAV_R(0.0)) {
+                continue; /* a state switched off: its row is 0 and sd x sd would be 0 (0/0) */
+            }
+            s = sqrt((double)fnav_ukf_cov(&g_a, FNAV_UKF_P + i, FNAV_UKF_P + i) * (double)fnav_ukf_cov(&g_a, j, j));
             worst = fabs(pb - pa) / s > worst ? fabs(pb - pa) / s : worst;
         }
     }
@@ -126,11 +113,21 @@ static int far_table(long steps)
     return 0;
 }
 
+/* the spacing of fnav_real_t at x > 0 (float or double, as built) */
+static double real_ulp(double x)
+{
+    if (sizeof(fnav_real_t) == sizeof(float)) {
+        const float f = (float)x;
+        return (double)(nextafterf(f, HUGE_VALF) - f);
+    }
+    return nextafter(x, HUGE_VAL) - x;
+}
+
 static int stand(double rate_hz, double hours, double p0, double noise)
 {
     static fnav_ukf_t f;
     fnav_ukf_config_t c = fnav_ukf_config_default;
-    const fnav_ukf_init_sd_t sd = sd_default();
+    const fnav_ukf_init_sd_t sd = fnav_test_ukf_sd_default();
     const long n = (long)(rate_hz * hours * 3600.0 + 0.5), every = (long)(rate_hz * 600.0 + 0.5);
     const fnav_real_t dt = (fnav_real_t)(1.0 / rate_hz);
     const fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
@@ -159,8 +156,10 @@ static int stand(double rate_hz, double hours, double p0, double noise)
             if (k == every) {
                 p10 = p;
             }
-            printf("%7.0f s  yaw variance %.7e rad^2  growth since 600 s %.4g of noise^2 t\n", t, p,
-                   t > 600.0 ? (p - p10) / (noise * noise * (t - 600.0)) : 0.0);
+            printf("%7.0f s  yaw variance %.7e rad^2  growth since 600 s %.4g of noise^2 t  "
+                   "share noise^2 dt %.3g ulps of it\n",
+                   t, p, t > 600.0 ? (p - p10) / (noise * noise * (t - 600.0)) : 0.0,
+                   noise * noise * (double)dt / real_ulp(p));
         }
     }
     return 0;

@@ -27,21 +27,6 @@ static union {
 
 #define FILL 0xa5
 
-static size_t lib_size(int which)
-{
-    switch (which) {
-    case BO_NAV: return sizeof(fnav_nav_t);
-    case BO_UKF: return sizeof(fnav_ukf_t);
-    case BO_STANCE: return sizeof(fnav_stance_t);
-    case BO_ALIGN: return sizeof(fnav_align_t);
-    case BO_ALLAN: return sizeof(fnav_allan_t);
-    case BO_WELCH: return sizeof(fnav_welch_t);
-    case BO_FFT: return sizeof(fnav_fft_t);
-    case BO_IMUERR: return sizeof(fnav_imuerr_t);
-    default: return 0;
-    }
-}
-
 static const char *const k_names[BO_COUNT] = { "nav", "ukf", "stance", "align", "allan", "welch", "fft", "imuerr" };
 
 /* bytes of g_obj not FILL among the first n */
@@ -79,7 +64,8 @@ static void check_mismatch(const other_t *o)
      * and reals everywhere (real) */
     assert_true(o->size(BO_NAV) != sizeof(fnav_nav_t));
     for (k = 0; k < BO_COUNT; k++) {
-        size_t n = o->size(k) > lib_size(k) ? o->size(k) : lib_size(k);
+        /* the library's size: build_other.c compiled with its options (same) */
+        size_t n = o->size(k) > build_other_same_size(k) ? o->size(k) : build_other_same_size(k);
         fnav_status_t st;
         assert_true(n > 0u && n <= sizeof g_obj.b);
         memset(g_obj.b, FILL, n);
@@ -109,8 +95,8 @@ static void test_firmware_options_mismatch(void **state)
     check_mismatch(&k_fw);
 }
 
-/* A file compiled with the library's options: the same tag, the same
- * objects, and every _init does its work (FNAV_OK, the object written). */
+/* A file compiled with the library's options: the same tag, and
+ * every _init does its work (FNAV_OK, the object written). */
 static void test_same_options_match(void **state)
 {
     int k;
@@ -118,8 +104,7 @@ static void test_same_options_match(void **state)
     assert_true(build_other_same_tag() == fnav_build_tag());
     assert_true(FNAV_BUILD_TAG == fnav_build_tag());
     for (k = 0; k < BO_COUNT; k++) {
-        size_t n = lib_size(k);
-        assert_int_equal(build_other_same_size(k), n);
+        size_t n = build_other_same_size(k);
         memset(g_obj.b, FILL, n);
         assert_int_equal(build_other_same_init(k, g_obj.b), FNAV_OK);
         assert_true(changed_bytes(n) > 0u);
@@ -139,6 +124,11 @@ static const field_t k_fields[F_COUNT] = {
     { "FNAV_ALLAN_MAX_POINTS", 40, 8 },        { "log2 FNAV_WELCH_MAX_NFFT", 48, 5 },
     { "FNAV_IMUERR_FLICKER_POLES", 53, 7 },    { "tag layout", 60, 4 },
 };
+
+/* The value fnav_cm_fw_config.h gives the option of field f (log2 for the
+ * FFT size), -1 for one it leaves alone; at the end of the file, where it
+ * reads the firmware's configuration. */
+static int64_t fw_config_value(int f);
 
 static uint64_t field(uint64_t tag, int f)
 {
@@ -182,11 +172,16 @@ static void test_tag_fields(void **state)
      * not the real type, the Allan levels or the flicker poles */
     for (f = 0; f < F_COUNT; f++) {
         int set_by_fw = f == F_WINDOW || f == F_EVENT || f == F_RING0 || f == F_LAG || f == F_POINTS || f == F_NFFT;
+        assert_int_equal(set_by_fw, fw_config_value(f) >= 0);
         if (!set_by_fw) {
             if (field(fw, f) != field(lib, f)) {
                 printf("fw file: %s differs\n", k_fields[f].name);
             }
             assert_true(field(fw, f) == field(lib, f));
+        } else {
+            /* the firmware's value, and not the library's (the defaults) */
+            assert_true(field(fw, f) == (uint64_t)fw_config_value(f));
+            assert_true(field(fw, f) != field(lib, f));
         }
     }
     assert_true(fw != lib);
@@ -289,4 +284,27 @@ static void test_each_option_alone(void **state)
 #define FNAV_IMUERR_FLICKER_POLES field(base, F_POLES)
     /* every option back at the library's value: the library's tag */
     assert_true(FNAV_BUILD_TAG == base);
+}
+
+/* Last in the file: the firmware's configuration in place of the options. */
+#undef FNAV_STANCE_MAX_WINDOW
+#undef FNAV_STANCE_EVENT_BUF
+#undef FNAV_ALLAN_RING0_LOG2
+#undef FNAV_ALLAN_CASCADE_LAG_LOG2
+#undef FNAV_ALLAN_MAX_POINTS
+#undef FNAV_WELCH_MAX_NFFT
+#undef FNAV_CM_RING_SIZE
+#include "fnav_cm_fw_config.h"
+
+static int64_t fw_config_value(int f)
+{
+    switch (f) {
+    case F_WINDOW: return FNAV_STANCE_MAX_WINDOW;
+    case F_EVENT: return FNAV_STANCE_EVENT_BUF;
+    case F_RING0: return FNAV_ALLAN_RING0_LOG2;
+    case F_LAG: return FNAV_ALLAN_CASCADE_LAG_LOG2;
+    case F_POINTS: return FNAV_ALLAN_MAX_POINTS;
+    case F_NFFT: return FNAV_BUILD_NFFT_LOG2;
+    default: return -1;
+    }
 }

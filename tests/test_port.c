@@ -17,11 +17,24 @@
 #include "fnav_cm_time.h"
 #include "footnav/fnav_nav.h"
 
+/* The statuses run from FNAV_E_BUILD (the lowest, the last of the enum)
+ * to FNAV_AGAIN, without gaps. Every value outside has no text: a status
+ * added below FNAV_E_BUILD with its text fails here until
+ * STATUS_LOWEST names it, so it cannot be left out of the checks below. */
+#define STATUS_LOWEST FNAV_E_BUILD
+#define STATUS_HIGHEST FNAV_AGAIN
+
 static void test_status_strings(void **state)
 {
     int s;
     (void)state;
-    for (s = -15; s <= 2; s++) {
+    for (s = (int)STATUS_LOWEST - 64; s < (int)STATUS_LOWEST; s++) {
+        assert_string_equal(fnav_status_str((fnav_status_t)s), "unknown status");
+    }
+    for (s = (int)STATUS_HIGHEST + 1; s <= (int)STATUS_HIGHEST + 64; s++) {
+        assert_string_equal(fnav_status_str((fnav_status_t)s), "unknown status");
+    }
+    for (s = STATUS_LOWEST; s <= STATUS_HIGHEST; s++) {
         const char *t = fnav_status_str((fnav_status_t)s);
         assert_non_null(t);
         assert_true(strlen(t) > 1);
@@ -31,9 +44,9 @@ static void test_status_strings(void **state)
     /* each status its own text: a mutant giving FNAV_E_CRC the text of
      * FNAV_E_FORMAT ("malformed input") passed every suite, and a message
      * would have named the wrong failure */
-    for (s = -15; s <= 2; s++) {
+    for (s = STATUS_LOWEST; s <= STATUS_HIGHEST; s++) {
         int u;
-        for (u = s + 1; u <= 2; u++) {
+        for (u = s + 1; u <= STATUS_HIGHEST; u++) {
             assert_string_not_equal(fnav_status_str((fnav_status_t)s), fnav_status_str((fnav_status_t)u));
         }
     }

@@ -1421,6 +1421,10 @@ static void test_foot_strike_across_wrap(void **state)
                      * between the swing's start and the impact (the third) */
                     assert_true(pass == 2 ? o.fs_t_ns > wrap_ns : o.fs_t_ns < wrap_ns);
                     assert_true(o.swing_t1_ns > wrap_ns);
+                    if (pass == 2) { /* the swing started before the wrap */
+                        assert_true((o.events & FNAV_STANCE_EV_STRIDE) != 0u);
+                        assert_true(o.swing_t0_ns < wrap_ns);
+                    }
                 }
             }
         }

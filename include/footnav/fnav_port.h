@@ -93,8 +93,11 @@ typedef struct {
  *  checked) and the compiler may leave out any code for a return; a
  *  definition that can return does not compile with -Werror under GCC or
  *  clang, and one that returns anyway is undefined behaviour. End the
- *  program (abort, exit), reset the part, spin, or longjmp out (a test
- *  harness's mock_assert); never record and return.
+ *  program (abort, exit), reset the part, spin, or longjmp out; never
+ *  record and return. A test harness's mock_assert longjmps but is not
+ *  declared noreturn, so a hook calling it ends in a call the compiler
+ *  knows does not return: mock_assert(0, expr, file, line); abort();
+ *  (not reached).
  *  docs/firmware.md, "The callbacks' contract". */
 FNAV_NORETURN void fnav_port_assert_failed(const char *file, int line, const char *expr);
 

@@ -213,11 +213,11 @@ const char *fnav_status_str(fnav_status_t status);
  *  which answers FNAV_E_BUILD, writing nothing, when it is not its own
  *  (docs/firmware.md, "A library and a program built with other options"). */
 #define FNAV_BUILD_TAG                                                                                   \
-    ((1ULL << 60) | ((sizeof(fnav_real_t) + 0ULL) << 0) | ((FNAV_STANCE_MAX_WINDOW + 0ULL) << 4) |       \
-     ((FNAV_STANCE_EVENT_BUF + 0ULL) << 15) | ((FNAV_ALLAN_MAX_LEVELS + 0ULL) << 28) |                   \
-     ((FNAV_ALLAN_RING0_LOG2 + 0ULL) << 33) | ((FNAV_ALLAN_CASCADE_LAG_LOG2 + 0ULL) << 37) |             \
-     ((FNAV_ALLAN_MAX_POINTS + 0ULL) << 40) | ((FNAV_BUILD_NFFT_LOG2 + 0ULL) << 48) |                    \
-     ((FNAV_IMUERR_FLICKER_POLES + 0ULL) << 53))
+    (((uint64_t)1 << 60) | ((uint64_t)sizeof(fnav_real_t) << 0) |                                        \
+     ((uint64_t)(FNAV_STANCE_MAX_WINDOW) << 4) | ((uint64_t)(FNAV_STANCE_EVENT_BUF) << 15) |             \
+     ((uint64_t)(FNAV_ALLAN_MAX_LEVELS) << 28) | ((uint64_t)(FNAV_ALLAN_RING0_LOG2) << 33) |             \
+     ((uint64_t)(FNAV_ALLAN_CASCADE_LAG_LOG2) << 37) | ((uint64_t)(FNAV_ALLAN_MAX_POINTS) << 40) |       \
+     ((uint64_t)(FNAV_BUILD_NFFT_LOG2) << 48) | ((uint64_t)(FNAV_IMUERR_FLICKER_POLES) << 53))
 
 /** The FNAV_BUILD_TAG the library was compiled with: a program that calls
  *  a library function before its first _init (fnav_profile_builtin() on

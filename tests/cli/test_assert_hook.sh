@@ -4,7 +4,8 @@
 # does not compile with the project's flags (-Werror), with the host's C
 # compilers (gcc, clang) and arm-none-eabi-gcc, in the float and the double
 # build; definitions that end the program (abort, an endless loop) do, and
-# so do the repository's own (port/linux, port/cortex-m, the emulator
+# so do a CMocka test's (mock_assert, then abort() not reached) and the
+# repository's own (port/linux, port/cortex-m, the emulator
 # images' in tests/m4 and the benchmark). A returning hook is undefined
 # behaviour once the core relies on the attribute (docs/firmware.md, "The
 # callbacks' contract"). A compiler that is not installed is skipped
@@ -50,6 +51,24 @@ void fnav_port_assert_failed(const char *file, int line, const char *expr)
 }
 EOF
 
+# a CMocka test's hook: mock_assert longjmps but is not declared noreturn,
+# so the hook ends in abort() (not reached); without it, it is refused
+cat >"$T/mock_asserts.c" <<'EOF'
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <stdlib.h>
+#include <cmocka.h>
+#include "footnav/footnav.h"
+void fnav_port_assert_failed(const char *file, int line, const char *expr)
+{
+    mock_assert(0, expr, file, line);
+    abort(); /* not reached: mock_assert longjmps */
+}
+EOF
+grep -v 'not reached' "$T/mock_asserts.c" >"$T/mock_only.c"
+
 # compiler label extra-flags
 check_compiler() {
     cc_=$1; label=$2; extra=$3
@@ -67,7 +86,25 @@ check_compiler() {
         else
             fail "$label ($b): a hook that returns is refused, but not for returning"; cat "$T/err"
         fi
-        for ok in spins $( [ "$label" = arm-none-eabi-gcc ] || echo aborts); do
+        # the host's cmocka.h (not for the ARM compiler, nor where CMocka is missing)
+        mock=
+        if [ "$label" != arm-none-eabi-gcc ]; then
+            if "$cc_" -E -o /dev/null "$T/mock_asserts.c" -Iinclude >/dev/null 2>&1; then
+                mock=mock_asserts
+                # shellcheck disable=SC2086
+                if "$cc_" $WARN $extra $defs -Iinclude -c -o "$T/r.o" "$T/mock_only.c" >"$T/err" 2>&1; then
+                    fail "$label ($b): a hook that only calls mock_assert compiles: it is not declared noreturn"
+                elif grep -q -i 'noreturn' "$T/err"; then
+                    pass "$label ($b): a hook that only calls mock_assert is refused (mock_assert is not noreturn)"
+                else
+                    fail "$label ($b): a hook that only calls mock_assert is refused, but not for returning"
+                    cat "$T/err"
+                fi
+            else
+                echo "SKIP test_assert_hook.sh: cmocka.h not found by $cc_, the mock_assert hook not checked"
+            fi
+        fi
+        for ok in spins $( [ "$label" = arm-none-eabi-gcc ] || echo aborts) $mock; do
             # shellcheck disable=SC2086
             if "$cc_" $WARN $extra $defs -Iinclude -c -o "$T/o.o" "$T/$ok.c" >"$T/err" 2>&1; then
                 pass "$label ($b): a hook that $ok compiles"

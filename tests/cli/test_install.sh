@@ -219,7 +219,7 @@ have_cxx=0
 command -v "${CXX%% *}" >/dev/null 2>&1 && have_cxx=1
 check_headers() { # DESTDIR LABEL: each installed header alone, in C (twice over) and, with a C++ compiler, in C++
     hflags=$(pc "$1" --cflags footnav)
-    hbad="" xbad=""
+    hbad="" xbad="" x98bad=""
     for h in "$1"/usr/include/footnav/*.h; do
         b=${h##*/}
         printf '#include "footnav/%s"\n#include "footnav/%s"\nint hdr_tu;\n' "$b" "$b" >"$T/hdr.c"
@@ -231,6 +231,11 @@ check_headers() { # DESTDIR LABEL: each installed header alone, in C (twice over
         # shellcheck disable=SC2086
         (cd "$T" && $CXX $HWARN_CXX $hflags -c hdr.cpp -o hdr.o) >"$T/err" 2>&1 ||
             { xbad="$xbad $b"; head -n 5 "$T/err"; }
+        # and as C++98: FNAV_BUILD_TAG's 1ULL literals were "C++11 long long
+        # integer constants" (-Wlong-long) in every file calling an _init
+        # shellcheck disable=SC2086
+        (cd "$T" && $CXX -std=c++98 -pedantic -Wall -Wextra -Werror $hflags -c hdr.cpp -o hdr.o) >"$T/err" 2>&1 ||
+            { x98bad="$x98bad $b"; head -n 5 "$T/err"; }
     done
     if [ -z "$hbad" ]; then
         pass "every installed header compiles alone, included twice ($2; C99, -Werror and a program's stricter warnings)"
@@ -243,6 +248,13 @@ check_headers() { # DESTDIR LABEL: each installed header alone, in C (twice over
         pass "every installed header compiles alone as C++11 ($2; $CXX -std=c++11 -Werror and stricter warnings)"
     else
         fail "installed headers that do not compile as C++11 ($2):$xbad"
+    fi
+    if [ "$have_cxx" = 1 ]; then
+        if [ -z "$x98bad" ]; then
+            pass "every installed header compiles alone as C++98 ($2; $CXX -std=c++98 -pedantic -Werror)"
+        else
+            fail "installed headers that do not compile as C++98 ($2):$x98bad"
+        fi
     fi
 }
 check_headers "$D" float
