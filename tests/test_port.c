@@ -369,6 +369,82 @@ static void test_cm_time_edges(void **state)
     assert_true(fnav_cm_batch_stamp(0, 16 * 2500000 + 1, 0u, 8u, 2500000) == 16 * 2500000 + 1 - 7 * 2500000);
 }
 
+/* fnav_cm_ns_of_ticks() (fnav_cm_time.h), the SysTick stamp's ns within the
+ * millisecond: the same value as the 64-bit division it replaced,
+ * (int64_t)c * 1000000000 / (int64_t)hz, for every counter value
+ * c in [0, hz / 1000 - 1] (the SysTick reload) at every clock below
+ * (exhaustive: 1 MHz .. 250 MHz, the round ones a board has, odd and
+ * prime ones). The clocks that
+ * divide 1e9 and the usual MCU clocks take the multiply-shift. */
+static void test_cm_ns_scale(void **state)
+{
+    static const uint32_t hz[] = {
+        1000000u,   2000000u,   4000000u,   8000000u,   12000000u,  16000000u,  24000000u,  25000000u,
+        32000000u,  48000000u,  50000000u,  64000000u,  72000000u,  80000000u,  84000000u,  96000000u,
+        100000000u, 120000000u, 144000000u, 150000000u, 160000000u, 168000000u, 180000000u, 200000000u,
+        216000000u, 240000000u, 250000000u, 16777216u,  14745600u,  11059200u,  32768000u,  25000001u,
+        99999989u,  249999999u, 123456789u, 7372800u,   1000001u,   1048576u,   3579545u,   170666666u,
+        1000066u};
+    /* the usual MCU clocks: the multiply-shift (scripts/ns_scale_search.py) */
+    static const uint32_t plain[] = {1000000u,  12000000u,  16000000u,  25000000u, 64000000u, 80000000u,
+                                     168000000u, 180000000u, 250000000u, 16777216u, 14745600u};
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof hz / sizeof hz[0]; i++) {
+        fnav_cm_ns_scale_t sc;
+        const uint32_t reload = hz[i] / 1000u - 1u;
+        uint32_t c;
+        fnav_cm_ns_scale_init(&sc, hz[i], reload);
+        for (c = 0; c <= reload; c++) {
+            const int64_t want = (int64_t)c * 1000000000 / (int64_t)hz[i];
+            if (fnav_cm_ns_of_ticks(&sc, c) != want) {
+                fail_msg("hz %u c %u: %lld, the division %lld", (unsigned)hz[i], (unsigned)c,
+                         (long long)fnav_cm_ns_of_ticks(&sc, c), (long long)want);
+            }
+        }
+        /* above the reload (the counter cannot read it): the reload's value
+         * (multiply-shift) or the division's */
+        for (c = reload + 1u; c < reload + 1000u; c += 7u) {
+            assert_true(fnav_cm_ns_of_ticks(&sc, c) == (int64_t)(sc.exact ? reload : c) * 1000000000 / (int64_t)hz[i]);
+        }
+        assert_true(fnav_cm_ns_of_ticks(&sc, 0xffffffffu) ==
+                    (int64_t)(sc.exact ? reload : 0xffffffffu) * 1000000000 / (int64_t)hz[i]);
+    }
+    for (i = 0; i < sizeof plain / sizeof plain[0]; i++) {
+        fnav_cm_ns_scale_t sc;
+        fnav_cm_ns_scale_init(&sc, plain[i], plain[i] / 1000u - 1u);
+        assert_int_equal(sc.exact, 1u);
+        assert_int_equal(sc.c_max, plain[i] / 1000u - 1u);
+    }
+    {
+        /* at 1,000,066 Hz the multiply-shift with the largest k is wrong at
+         * c = 894 (scripts/ns_scale_search.py): not provably exact, so the
+         * division (and the loop above checked every c) */
+        fnav_cm_ns_scale_t sc;
+        const uint64_t m = ((UINT64_C(1000000000) << 22) + 1000066u - 1u) / 1000066u;
+        assert_true(m < UINT64_C(0x100000000) && ((UINT64_C(1000000000) << 23) + 1000066u - 1u) / 1000066u > 0xffffffffu);
+        assert_true(((894u * m) >> 22) != UINT64_C(894000000000) / 1000066u);
+        fnav_cm_ns_scale_init(&sc, 1000066u, 999u);
+        assert_int_equal(sc.exact, 0u);
+    }
+    {
+        /* hz 0 (not started) is 0; hz below 1 kHz (reload wrapped), a c_max
+         * of 25 bits (SysTick's reload has 24) take the division */
+        fnav_cm_ns_scale_t sc;
+        fnav_cm_ns_scale_init(&sc, 0u, 0u);
+        assert_int_equal(sc.exact, 0u);
+        assert_true(fnav_cm_ns_of_ticks(&sc, 1234u) == 0);
+        fnav_cm_ns_scale_init(&sc, 999u, 999u / 1000u - 1u);
+        assert_int_equal(sc.exact, 0u);
+        assert_true(fnav_cm_ns_of_ticks(&sc, 0xfffffffeu) == (int64_t)0xfffffffeu * 1000000000 / 999);
+        fnav_cm_ns_scale_init(&sc, 100000000u, 0x1000000u);
+        assert_int_equal(sc.exact, 0u);
+        assert_true(fnav_cm_ns_of_ticks(&sc, 0x1000000u) == (int64_t)0x1000000u * 1000000000 / 100000000);
+        fnav_cm_ns_scale_init(&sc, 4294967295u, 4294967u);
+        assert_true(fnav_cm_ns_of_ticks(&sc, 4294967u) == (int64_t)4294967u * 1000000000 / 4294967295);
+    }
+}
+
 /* The stamps through the navigator: a 400 Hz still-then-moving stream whose
  * board timer wraps, and 8-sample FIFO batches stamped at a jittery
  * interrupt. Converted naively (timer * 1000 per sample, or the interrupt's
@@ -458,6 +534,7 @@ int main(void)
         cmocka_unit_test(test_cm_batch_stamp),
         cmocka_unit_test(test_cm_batch_stamp_short_span),
         cmocka_unit_test(test_cm_time_edges),
+        cmocka_unit_test(test_cm_ns_scale),
         cmocka_unit_test(test_cm_stamps_through_nav),
     };
     return cmocka_run_group_tests_name("port", tests, NULL, NULL);

@@ -102,4 +102,94 @@ static inline int64_t fnav_cm_batch_stamp(int64_t t_prev_ns, int64_t t_irq_ns, u
     return t_prev_ns + (int64_t)x;
 }
 
+/* ---- counter ticks to ns without a 64-bit division ---- */
+
+/** floor(c 1e9 / hz) for counter values c in [0, c_max], precomputed by
+ *  fnav_cm_ns_scale_init(). 8 bytes: the SysTick time base keeps it beside
+ *  its 64-bit millisecond count in the 16 bytes it had (the firmware's RAM
+ *  has 8 to spare: docs/firmware.md). */
+typedef struct {
+    uint32_t mul;            /**< exact: m = ceil(2^k 1e9 / hz); division: hz */
+    unsigned int c_max : 24; /**< exact: the largest counter value (SysTick: the reload value) */
+    unsigned int shift : 7;  /**< exact: 32 - k */
+    unsigned int exact : 1;  /**< 1: the multiply-shift, 0: the 64-bit division */
+} fnav_cm_ns_scale_t;
+
+/** Precompute floor(c 1e9 / @p hz) for c in [0, @p c_max] (once, at start:
+ *  it divides). Granlund & Montgomery, "Division by invariant integers using
+ *  multiplication" (PLDI 1994), section 4, with the divisor 1e9 / hz:
+ *
+ *  Let q = floor(c 1e9 / hz), r = c 1e9 - q hz, m = ceil(2^k 1e9 / hz) and
+ *  j = m hz - 2^k 1e9 (0 <= j < hz), so c m / 2^k = q + (r + c j / 2^k) / hz.
+ *  With g = gcd(1e9, hz), r is a multiple of g below hz, so r <= hz - g. If
+ *  c_max j < 2^k g, then for c <= c_max, 0 <= r + c j / 2^k < hz - g + g = hz and
+ *  floor(c m / 2^k) = q for every c <= c_max: exact. k is the largest
+ *  k <= 32 with m < 2^32 (2^k >= 2^31 hz / 1e9 > 2000 c_max for SysTick's
+ *  c_max = hz / 1000 - 1), which makes j c_max / 2^k smallest. With c < 2^k
+ *  (c_max < 2^k is required), c 2^(32 - k) < 2^32 and
+ *  floor(c m / 2^k) = floor(c 2^(32 - k) m / 2^32): a shift and the high
+ *  word of one 32 x 32 -> 64 multiply (UMULL).
+ *
+ *  Exact for every clock that divides 1e9 (j = 0) and the usual MCU clocks
+ *  (12, 16, 64, 80, 168, 180 MHz, 14.7456 MHz, 2^24 Hz: tests/test_port.c,
+ *  test_cm_ns_scale; scripts/ns_scale_search.py). Otherwise (25,000,001 Hz,
+ *  1,000,066 Hz, where the multiply-shift alone is wrong at c = 894), and
+ *  for hz = 0, c_max >= 2^24 (hz < 1000 with the reload wrapped; SysTick's
+ *  reload has 24 bits) or c_max >= 2^k: the 64-bit division. */
+static inline void fnav_cm_ns_scale_init(fnav_cm_ns_scale_t *s, uint32_t hz, uint32_t c_max)
+{
+    uint32_t k = 33u, m = 0u;
+    s->mul = hz; /* the division */
+    s->c_max = 0u;
+    s->shift = 0u;
+    s->exact = 0u;
+    if (hz == 0u || c_max > 0xffffffu) {
+        return;
+    }
+    while (k > 0u) { /* the largest k <= 32 with m < 2^32 */
+        uint64_t mm;
+        k--;
+        mm = ((UINT64_C(1000000000) << k) + hz - 1u) / hz;
+        if (mm <= UINT64_C(0xffffffff)) {
+            m = (uint32_t)mm;
+            break;
+        }
+    }
+    if (m == 0u || (uint64_t)c_max >= (UINT64_C(1) << k)) {
+        return;
+    }
+    {
+        const uint64_t j = (uint64_t)m * hz - (UINT64_C(1000000000) << k);
+        uint32_t a = 1000000000u, b = hz; /* g = gcd(1e9, hz), Euclid */
+        while (b != 0u) {
+            const uint32_t t = a % b;
+            a = b;
+            b = t;
+        }
+        if ((uint64_t)c_max * j >= ((uint64_t)a << k)) {
+            return; /* not provably exact: the division */
+        }
+    }
+    s->mul = m;
+    s->c_max = c_max;
+    s->shift = 32u - k;
+    s->exact = 1u;
+}
+
+/** floor(@p c 1e9 / hz): (int64_t)c * 1000000000 / (int64_t)hz, the same
+ *  value for every c in [0, c_max] (@p s from fnav_cm_ns_scale_init(); 0 for
+ *  hz 0). On the Cortex-M4, for an exact clock: a shift and a UMULL instead
+ *  of a call to __aeabi_ldivmod. A c above c_max (SysTick's counter cannot
+ *  read more than its reload: ARMv7-M ARM B3.3) is taken as c_max by the
+ *  multiply-shift (the scale does not keep hz), and divided by the
+ *  division. */
+static inline int64_t fnav_cm_ns_of_ticks(const fnav_cm_ns_scale_t *s, uint32_t c)
+{
+    if (s->exact) {
+        const uint32_t cc = c <= s->c_max ? c : (uint32_t)s->c_max;
+        return (int64_t)(uint32_t)(((uint64_t)(cc << s->shift) * s->mul) >> 32); /* cc < 2^k: no bit lost */
+    }
+    return s->mul == 0u ? 0 : (int64_t)c * 1000000000 / (int64_t)s->mul;
+}
+
 #endif /* FNAV_CM_TIME_H */
