@@ -85,7 +85,7 @@ fnav_status_t fnav_align_from_means(fnav_vec3_t f, fnav_vec3_t w, fnav_real_t g,
 
 static fnav_real_t duration_s(const fnav_align_period_t *p)
 {
-    return (fnav_real_t)(p->t_last_ns - p->t0_ns) * FNAV_R(1.0e-9);
+    return fnav_i64_to_real(p->t_last_ns - p->t0_ns) * FNAV_R(1.0e-9);
 }
 
 /* Squared standard error of the mean rate of axis i: the larger of the

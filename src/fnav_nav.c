@@ -514,7 +514,7 @@ static void process(fnav_nav_t *nav, const fnav_stance_out_t *o, fnav_nav_frame_
         nav->stats.strides++;
     }
     if (nav->have_prev) {
-        dt = (fnav_real_t)(s->t_ns - nav->t_prev_ns) * FNAV_R(1.0e-9);
+        dt = fnav_i64_to_real(s->t_ns - nav->t_prev_ns) * FNAV_R(1.0e-9); /* no __aeabi_l2f under 2.1 s */
         if (dt > nav->stats.max_gap_seen_s) {
             nav->stats.max_gap_seen_s = dt;
         }

@@ -175,7 +175,7 @@ static void estimate_rate(fnav_stance_t *st)
     }
     if (n > 0) {
         int mid = n / 2; /* median interval */
-        set_rate(st, FNAV_R(1.0e9) / (fnav_real_t)d[mid]);
+        set_rate(st, FNAV_R(1.0e9) / fnav_i64_to_real(d[mid]));
     } else {
         set_rate(st, FNAV_R(100.0)); /* no usable time stamps: documented fallback */
     }
@@ -356,7 +356,7 @@ static void cycle_update(fnav_stance_t *st, int64_t t0_ns)
     unsigned n_cyc = st->cyc_n & CYC_COUNT;
     if (st->cyc_n & CYC_START) {
         const int64_t dt_ns = t0_ns - st->swing_t0_ns;
-        const fnav_real_t t_s = (fnav_real_t)dt_ns * FNAV_R(1.0e-9);
+        const fnav_real_t t_s = fnav_i64_to_real(dt_ns) * FNAV_R(1.0e-9);
         if (dt_ns <= 0 || t_s > FNAV_STANCE_CYCLE_MAX_S) {
             n_cyc = 0;
             st->n_zupt_req = st->n_min_zupt;

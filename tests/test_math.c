@@ -349,6 +349,62 @@ static uint32_t us_reference(int64_t t_ns)
     return (uint32_t)((uint64_t)(t_ns / 1000));
 }
 
+static void check_i64(int64_t x)
+{
+    const fnav_real_t a = fnav_i64_to_real(x), b = (fnav_real_t)x;
+    if (memcmp(&a, &b, sizeof a) != 0) {
+        fail_msg("fnav_i64_to_real(%lld) = %.17g, (fnav_real_t)x = %.17g", (long long)x, (double)a, (double)b);
+    }
+}
+
+/* fnav_i64_to_real() (fnav_math.h): the bits of (fnav_real_t)x for every
+ * int64_t, through int32_t or not: around 0, 2^24 (float's last exact
+ * integer), 2^31 (the int32 bounds: both paths either side), 2^53, the
+ * int64 bounds, halfway cases of float and random values of every
+ * magnitude, either sign. */
+static void test_i64_to_real(void **state)
+{
+    const int64_t centres[] = { 0, (int64_t)1 << 24, (int64_t)1 << 25, 2147483647, (int64_t)1 << 31, (int64_t)1 << 32,
+                                (int64_t)1 << 53, INT64_MAX - 3000, 2500000, 1000000000, 2100000000,
+                                (int64_t)16777217 * 128 };
+    uint64_t x = 0x9e3779b97f4a7c15u;
+    size_t c;
+    int64_t d;
+    long i;
+    (void)state;
+    assert_true(fnav_i64_to_real(0) == FNAV_R(0.0));
+    assert_true(fnav_i64_to_real(-1) == FNAV_R(-1.0));
+    assert_true(fnav_i64_to_real(2500000) == FNAV_R(2500000.0));
+    check_i64(INT32_MAX);
+    check_i64(INT32_MIN);
+    check_i64((int64_t)INT32_MIN - 1);
+    check_i64((int64_t)INT32_MAX + 1);
+    check_i64(INT64_MAX);
+    check_i64(INT64_MIN);
+    check_i64(INT64_MIN + 1);
+    check_i64(16777217);  /* 2^24 + 1: not a float, rounds to even */
+    check_i64(16777219);  /* 2^24 + 3: rounds up */
+    check_i64(-16777217);
+    check_i64(2147483520);  /* INT32_MAX - 127: float's halfway point below 2^31 */
+    check_i64(2147483584);  /* halfway between the last two floats under 2^31 */
+    check_i64(-2147483584);
+    for (c = 0; c < sizeof centres / sizeof centres[0]; c++) {
+        for (d = -2001; d <= 2001; d++) {
+            check_i64(centres[c] + d);
+            check_i64(-(centres[c] + d));
+        }
+    }
+    for (i = 0; i < 2000000; i++) {
+        int64_t v;
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        /* every magnitude: the draw shifted right by 1..63 bits, either sign */
+        v = (int64_t)(x >> (1u + (unsigned)(i % 63)));
+        check_i64((i & 64) ? -v : v);
+    }
+}
+
 static void check_us(int64_t t_ns)
 {
     if (fnav_ns_to_us_u32(t_ns) != us_reference(t_ns)) {
@@ -419,6 +475,7 @@ int main(void)
         cmocka_unit_test(test_one_minus_exp_neg),
         cmocka_unit_test(test_isfinite),
         cmocka_unit_test(test_ns_to_us_u32),
+        cmocka_unit_test(test_i64_to_real),
     };
     return cmocka_run_group_tests_name("math", tests, NULL, NULL);
 }

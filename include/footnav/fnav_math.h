@@ -428,6 +428,25 @@ static inline FNAV_ALWAYS_INLINE uint32_t fnav_ns_to_us_u32(int64_t t_ns)
     return t_ns < 0 ? 0u - q : q;
 }
 
+/** (fnav_real_t)x, the same bits for every int64_t, through int32_t when x
+ *  fits (|x| < 2^31: a time difference in ns under 2.1 s): on the
+ *  Cortex-M4F an int32 -> float conversion is one VCVT, an int64 -> float a
+ *  call to __aeabi_l2f, once per sample in the navigator and the stance
+ *  detector. Same bits: for x in [INT32_MIN, INT32_MAX] the conversion to
+ *  int32_t keeps the value (C99 6.3.1.3p1), and both conversions to
+ *  fnav_real_t then round that same integer in the same way (6.3.1.4p2: the
+ *  value itself when representable, else the nearest above or below by
+ *  the current rounding mode: IEEE 754 round to nearest even on both
+ *  targets); in double every int32 is exact. tests/test_math.c
+ *  test_i64_to_real (edge and random values, float and double builds). */
+static inline FNAV_ALWAYS_INLINE fnav_real_t fnav_i64_to_real(int64_t x)
+{
+    if (x >= INT32_MIN && x <= INT32_MAX) {
+        return (fnav_real_t)(int32_t)x;
+    }
+    return (fnav_real_t)x;
+}
+
 #ifdef __cplusplus
 }
 #endif
