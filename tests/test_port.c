@@ -422,7 +422,8 @@ static void test_cm_ns_scale(void **state)
          * division (and the loop above checked every c) */
         fnav_cm_ns_scale_t sc;
         const uint64_t m = ((UINT64_C(1000000000) << 22) + 1000066u - 1u) / 1000066u;
-        assert_true(m < UINT64_C(0x100000000) && ((UINT64_C(1000000000) << 23) + 1000066u - 1u) / 1000066u > 0xffffffffu);
+        assert_true(m < UINT64_C(0x100000000)); /* k = 22 is the largest */
+        assert_true(((UINT64_C(1000000000) << 23) + 1000066u - 1u) / 1000066u > 0xffffffffu);
         assert_true(((894u * m) >> 22) != UINT64_C(894000000000) / 1000066u);
         fnav_cm_ns_scale_init(&sc, 1000066u, 999u);
         assert_int_equal(sc.exact, 0u);

@@ -1,9 +1,9 @@
 #!/bin/sh
-# The port's SysTick time base in qemu-system-arm (mps2-an386): in thread
-# mode it never goes back; inside the sample-ready interrupt the readings
-# that go back are reported (tests/m4/ticks.c says why QEMU cannot check
-# that case). Run by `make firmware-bench`; skips with a message when the
-# tools are missing.
+# The port's SysTick time base in qemu-system-arm (mps2-an386): a reading
+# goes back only in QEMU's late-pending-bit window (tests/m4/ticks.c says
+# why QEMU cannot check more), the stamp's arithmetic equals the 64-bit
+# division, and the cost of a stamp is printed. Run by `make
+# firmware-bench`; skips with a message when the tools are missing.
 set -u
 cd "$(dirname "$0")/../.."
 for t in arm-none-eabi-gcc qemu-system-arm; do
