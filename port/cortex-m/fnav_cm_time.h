@@ -122,20 +122,21 @@ typedef struct {
  *  Let q = floor(c 1e9 / hz), r = c 1e9 - q hz, m = ceil(2^k 1e9 / hz) and
  *  j = m hz - 2^k 1e9 (0 <= j < hz), so c m / 2^k = q + (r + c j / 2^k) / hz.
  *  With g = gcd(1e9, hz), r is a multiple of g below hz, so r <= hz - g. If
- *  c_max j < 2^k g, then for c <= c_max, 0 <= r + c j / 2^k < hz - g + g = hz and
- *  floor(c m / 2^k) = q for every c <= c_max: exact. k is the largest
- *  k <= 32 with m < 2^32 (2^k >= 2^31 hz / 1e9 > 2000 c_max for SysTick's
- *  c_max = hz / 1000 - 1), which makes j c_max / 2^k smallest. With c < 2^k
- *  (c_max < 2^k is required), c 2^(32 - k) < 2^32 and
- *  floor(c m / 2^k) = floor(c 2^(32 - k) m / 2^32): a shift and the high
- *  word of one 32 x 32 -> 64 multiply (UMULL).
+ *  c_max j < 2^k g, then for every c <= c_max,
+ *  0 <= r + c j / 2^k < hz - g + g = hz and floor(c m / 2^k) = q: exact.
+ *  k is the largest k <= 32 with m < 2^32 (the most precise m; then
+ *  2^k >= 2^31 hz / 1e9 > 2000 c_max for SysTick's c_max = hz / 1000 - 1).
+ *  With c < 2^k (c_max < 2^k is required), c 2^(32 - k) < 2^32 and
+ *  floor(c m / 2^k) = floor(c 2^(32 - k) m / 2^32) (< m < 2^32): a shift
+ *  and the high word of one 32 x 32 -> 64 multiply (UMULL).
  *
  *  Exact for every clock that divides 1e9 (j = 0) and the usual MCU clocks
  *  (12, 16, 64, 80, 168, 180 MHz, 14.7456 MHz, 2^24 Hz: tests/test_port.c,
- *  test_cm_ns_scale; scripts/ns_scale_search.py). Otherwise (25,000,001 Hz,
- *  1,000,066 Hz, where the multiply-shift alone is wrong at c = 894), and
- *  for hz = 0, c_max >= 2^24 (hz < 1000 with the reload wrapped; SysTick's
- *  reload has 24 bits) or c_max >= 2^k: the 64-bit division. */
+ *  test_cm_ns_scale; scripts/ns_scale_search.py). A clock the bound does
+ *  not cover (25,000,001 Hz; 1,000,066 Hz, where the multiply-shift alone
+ *  is wrong at c = 894), hz = 0, c_max >= 2^24 (hz < 1000 with the reload
+ *  wrapped; SysTick's reload has 24 bits) or c_max >= 2^k: the 64-bit
+ *  division. */
 static inline void fnav_cm_ns_scale_init(fnav_cm_ns_scale_t *s, uint32_t hz, uint32_t c_max)
 {
     uint32_t k = 33u, m = 0u;
