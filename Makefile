@@ -116,15 +116,21 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TESTHELP_OBJ) $(HXLIB) $(LIB)
 	$(CC) $(SAN) -o $@ $^ $(HXLIB) $(LDLIBS_TEST)
 
 # tests/test_build: a program of files compiled apart, tests/build_other.c
-# three times over besides the suite (build_other.h): with the library's
-# options (same), with fnav_real_t flipped, float <-> double (real), and
-# with the firmware's options (fw); each then calls every _init, which says
-# FNAV_E_BUILD unless the file's FNAV_BUILD_TAG is the library's.
+# five times over besides the suite (build_other.h): with the library's
+# options (same), with fnav_real_t flipped, float <-> double (real), with
+# the firmware's options (fw), and with the library's options under a
+# layout-changing flag, -fpack-struct (pack) and -fshort-enums (senum);
+# each then calls every _init, which says FNAV_E_BUILD unless the file's
+# FNAV_BUILD_TAG and its sizes of the object and configuration are the
+# library's.
 BUILD_OTHER_OBJ := $(BUILD)/obj/tests/build_other_same.o $(BUILD)/obj/tests/build_other_real.o \
-                   $(BUILD)/obj/tests/build_other_fw.o
+                   $(BUILD)/obj/tests/build_other_fw.o $(BUILD)/obj/tests/build_other_pack.o \
+                   $(BUILD)/obj/tests/build_other_senum.o
 BUILD_OTHER_DEFS_same :=
 BUILD_OTHER_DEFS_real := -DBUILD_OTHER_FLIP_REAL=1
 BUILD_OTHER_DEFS_fw := -DFNAV_CONFIG_FILE='"fnav_cm_fw_config.h"'
+BUILD_OTHER_DEFS_pack := -fpack-struct
+BUILD_OTHER_DEFS_senum := -fshort-enums
 
 $(BUILD)/obj/tests/build_other_%.o: tests/build_other.c $(DEFS_STAMP)
 	@mkdir -p $(dir $@)

@@ -24,9 +24,10 @@ static void reset_period(fnav_align_period_t *p)
     p->t0_ns = p->t_last_ns = 0;
 }
 
-fnav_status_t fnav_align_init_tagged(fnav_align_t *al, const fnav_align_config_t *cfg, uint64_t build_tag)
+fnav_status_t fnav_align_init_tagged(fnav_align_t *al, const fnav_align_config_t *cfg, uint64_t build_tag,
+                                     size_t obj_size, size_t cfg_size)
 {
-    if (build_tag != FNAV_BUILD_TAG) {
+    if (build_tag != FNAV_BUILD_TAG || obj_size != sizeof(fnav_align_t) || cfg_size != sizeof(fnav_align_config_t)) {
         return FNAV_E_BUILD; /* the caller's objects have another layout: write nothing */
     }
     if (al == NULL || cfg == NULL) {

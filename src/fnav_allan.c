@@ -77,13 +77,14 @@ size_t fnav_allan_grid(uint32_t *tau, size_t max, uint32_t tau_max, unsigned per
     return n;
 }
 
-fnav_status_t fnav_allan_init_tagged(fnav_allan_t *a, const fnav_allan_config_t *cfg, uint64_t build_tag)
+fnav_status_t fnav_allan_init_tagged(fnav_allan_t *a, const fnav_allan_config_t *cfg, uint64_t build_tag,
+                                     size_t obj_size, size_t cfg_size)
 {
     uint32_t grid[FNAV_ALLAN_MAX_POINTS]; /* default grid, 4 bytes per point */
     const uint32_t *tau;
     size_t n, i;
     int l;
-    if (build_tag != FNAV_BUILD_TAG) {
+    if (build_tag != FNAV_BUILD_TAG || obj_size != sizeof(fnav_allan_t) || cfg_size != sizeof(fnav_allan_config_t)) {
         return FNAV_E_BUILD; /* the caller's objects have another layout: write nothing */
     }
     if (a == NULL) {

@@ -51,10 +51,10 @@ fnav_status_t fnav_fft_cos_sin_2pi(uint32_t k, uint32_t n, fnav_real_t *c, fnav_
     return FNAV_OK;
 }
 
-fnav_status_t fnav_fft_init_tagged(fnav_fft_t *f, uint32_t n, uint64_t build_tag)
+fnav_status_t fnav_fft_init_tagged(fnav_fft_t *f, uint32_t n, uint64_t build_tag, size_t obj_size)
 {
     uint32_t k;
-    if (build_tag != FNAV_BUILD_TAG) {
+    if (build_tag != FNAV_BUILD_TAG || obj_size != sizeof(fnav_fft_t)) {
         return FNAV_E_BUILD; /* the caller's objects have another layout: write nothing */
     }
     if (f == NULL) {

@@ -551,12 +551,13 @@ static fnav_real_t flicker_tau(const fnav_imuerr_config_t *cfg, int i)
     return cfg->flicker.tau_lo_s * fnav_exp(r * (fnav_real_t)i);
 }
 
-fnav_status_t fnav_imuerr_init_tagged(fnav_imuerr_t *e, const fnav_imuerr_config_t *cfg, uint64_t build_tag)
+fnav_status_t fnav_imuerr_init_tagged(fnav_imuerr_t *e, const fnav_imuerr_config_t *cfg, uint64_t build_tag,
+                                      size_t obj_size, size_t cfg_size)
 {
     fnav_status_t st;
     fnav_rng_t init_rng;
     int c, i;
-    if (build_tag != FNAV_BUILD_TAG) {
+    if (build_tag != FNAV_BUILD_TAG || obj_size != sizeof(fnav_imuerr_t) || cfg_size != sizeof(fnav_imuerr_config_t)) {
         return FNAV_E_BUILD; /* the caller's objects have another layout: write nothing */
     }
     if (e == NULL || cfg == NULL) {

@@ -166,10 +166,11 @@ fnav_real_t fnav_nav_att_sd_max_rad(const fnav_nav_config_t *cfg)
     return fnav_ukf_att_sd_max(&uc);
 }
 
-fnav_status_t fnav_nav_init_tagged(fnav_nav_t *nav, const fnav_nav_config_t *cfg, uint64_t build_tag)
+fnav_status_t fnav_nav_init_tagged(fnav_nav_t *nav, const fnav_nav_config_t *cfg, uint64_t build_tag, size_t obj_size,
+                                   size_t cfg_size)
 {
     fnav_status_t st;
-    if (build_tag != FNAV_BUILD_TAG) {
+    if (build_tag != FNAV_BUILD_TAG || obj_size != sizeof(fnav_nav_t) || cfg_size != sizeof(fnav_nav_config_t)) {
         return FNAV_E_BUILD; /* the caller's objects have another layout: write nothing */
     }
     if (nav == NULL || cfg == NULL) {

@@ -46,12 +46,13 @@ static int pos_finite(fnav_real_t x)
     return fnav_isfinite(x) && x > FNAV_R(0.0);
 }
 
-fnav_status_t fnav_stance_init_tagged(fnav_stance_t *st, const fnav_stance_config_t *cfg, uint64_t build_tag)
+fnav_status_t fnav_stance_init_tagged(fnav_stance_t *st, const fnav_stance_config_t *cfg, uint64_t build_tag,
+                                      size_t obj_size, size_t cfg_size)
 {
     const fnav_stance_config_t *c = cfg;
     size_t i;
     unsigned char *p = (unsigned char *)st;
-    if (build_tag != FNAV_BUILD_TAG) {
+    if (build_tag != FNAV_BUILD_TAG || obj_size != sizeof(fnav_stance_t) || cfg_size != sizeof(fnav_stance_config_t)) {
         return FNAV_E_BUILD; /* the caller's objects have another layout: write nothing */
     }
     if (st == NULL || cfg == NULL) {

@@ -106,13 +106,14 @@ static fnav_quat_t apply_att(fnav_quat_t q, fnav_vec3_t a)
 /* Internal index of the first state of each triple, in packing order. */
 static const unsigned char pack_order[6] = { FNAV_UKF_R, FNAV_UKF_V, FNAV_UKF_P, FNAV_UKF_BA, FNAV_UKF_BG, FNAV_UKF_A };
 
-fnav_status_t fnav_ukf_init_tagged(fnav_ukf_t *f, const fnav_ukf_config_t *cfg, uint64_t build_tag)
+fnav_status_t fnav_ukf_init_tagged(fnav_ukf_t *f, const fnav_ukf_config_t *cfg, uint64_t build_tag, size_t obj_size,
+                                   size_t cfg_size)
 {
     size_t b;
     unsigned char *p = (unsigned char *)f;
     int i, n;
     fnav_real_t lambda, nl;
-    if (build_tag != FNAV_BUILD_TAG) {
+    if (build_tag != FNAV_BUILD_TAG || obj_size != sizeof(fnav_ukf_t) || cfg_size != sizeof(fnav_ukf_config_t)) {
         return FNAV_E_BUILD; /* the caller's objects have another layout: write nothing */
     }
     if (f == NULL || cfg == NULL) {

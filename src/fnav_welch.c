@@ -18,7 +18,8 @@ static inline void kahan_add(fnav_real_t *s, fnav_real_t *c, fnav_real_t v)
     *s = t;
 }
 
-fnav_status_t fnav_welch_init_tagged(fnav_welch_t *w, const fnav_welch_config_t *cfg, uint64_t build_tag)
+fnav_status_t fnav_welch_init_tagged(fnav_welch_t *w, const fnav_welch_config_t *cfg, uint64_t build_tag,
+                                     size_t obj_size, size_t cfg_size)
 {
     const fnav_welch_config_t *c = cfg != NULL ? cfg : &fnav_welch_config_default;
     fnav_welch_config_t cc;
@@ -27,7 +28,7 @@ fnav_status_t fnav_welch_init_tagged(fnav_welch_t *w, const fnav_welch_config_t 
      * calls on the Cortex-M4F, 1.9 KB of flash for this one init (test_psd.sh) */
     fnav_real_t s1 = FNAV_R(0.0), s1c = FNAV_R(0.0), s2 = FNAV_R(0.0), s2c = FNAV_R(0.0);
     fnav_real_t w1r = FNAV_R(0.0), w1rc = FNAV_R(0.0), w1i = FNAV_R(0.0), w1ic = FNAV_R(0.0);
-    if (build_tag != FNAV_BUILD_TAG) {
+    if (build_tag != FNAV_BUILD_TAG || obj_size != sizeof(fnav_welch_t) || cfg_size != sizeof(fnav_welch_config_t)) {
         return FNAV_E_BUILD; /* the caller's objects have another layout: write nothing */
     }
     if (w == NULL) {

@@ -6,7 +6,11 @@
  *         as when -DFNAV_USE_DOUBLE=1 reaches one side only;
  *   fw:   and the firmware's options (-DFNAV_CONFIG_FILE='"fnav_cm_fw_config.h"':
  *         smaller stance, Allan and Welch buffers), as an application built
- *         with them against a library built with the defaults.
+ *         with them against a library built with the defaults;
+ *   pack: the library's options, compiled -fpack-struct (the same tag, the
+ *         structs with padding smaller);
+ *   senum: the library's options, compiled -fshort-enums (the same tag,
+ *         a struct with an enum member smaller where no padding hid it).
  * Only FNAV_USE_DOUBLE is changed here: fnav_config.h has defined the
  * options, and fnav_types.h, which reads it, comes after. */
 #include "footnav/fnav_config.h"
@@ -46,7 +50,21 @@ size_t BO_FN(size)(int which)
     }
 }
 
-fnav_status_t BO_FN(init)(int which, void *obj)
+size_t BO_FN(cfg_size)(int which)
+{
+    switch (which) {
+    case BO_NAV: return sizeof(fnav_nav_config_t);
+    case BO_UKF: return sizeof(fnav_ukf_config_t);
+    case BO_STANCE: return sizeof(fnav_stance_config_t);
+    case BO_ALIGN: return sizeof(fnav_align_config_t);
+    case BO_ALLAN: return sizeof(fnav_allan_config_t);
+    case BO_WELCH: return sizeof(fnav_welch_config_t);
+    case BO_IMUERR: return sizeof(fnav_imuerr_config_t);
+    default: return 0; /* BO_FFT: no configuration struct */
+    }
+}
+
+int BO_FN(init)(int which, void *obj)
 {
     switch (which) {
     case BO_NAV: return fnav_nav_init((fnav_nav_t *)obj, &fnav_nav_config_default);

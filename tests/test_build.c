@@ -1,9 +1,10 @@
-/* The build tag (fnav_types.h, FNAV_BUILD_TAG): a program whose files were
- * compiled with other layout options than the library gets FNAV_E_BUILD
- * from the first _init, and the library writes nothing into its object;
- * one compiled with the library's options initialises as before. The
- * other files are tests/build_other.c, compiled three ways by the Makefile
- * (build_other.h); this file has the library's options. */
+/* The build tag (fnav_types.h, FNAV_BUILD_TAG) and the sizes each _init
+ * passes: a program whose files were compiled with other layout options
+ * than the library, or with a flag that changes the size of a struct,
+ * gets FNAV_E_BUILD from the first _init, and the library writes nothing
+ * into its object; one compiled with the library's options initialises as
+ * before. The other files are tests/build_other.c, compiled five ways by
+ * the Makefile (build_other.h); this file has the library's options. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -43,11 +44,16 @@ typedef struct {
     const char *name;
     uint64_t (*tag)(void);
     size_t (*size)(int which);
-    fnav_status_t (*init)(int which, void *obj);
+    size_t (*cfg_size)(int which);
+    int (*init)(int which, void *obj);
 } other_t;
 
-static const other_t k_real = { "real", build_other_real_tag, build_other_real_size, build_other_real_init };
-static const other_t k_fw = { "fw", build_other_fw_tag, build_other_fw_size, build_other_fw_init };
+#define OTHER(v)                                                                                    \
+    { #v, build_other_##v##_tag, build_other_##v##_size, build_other_##v##_cfg_size, build_other_##v##_init }
+static const other_t k_real = OTHER(real);
+static const other_t k_fw = OTHER(fw);
+static const other_t k_pack = OTHER(pack);
+static const other_t k_senum = OTHER(senum);
 
 /* Every _init called from a file with other layout options: FNAV_E_BUILD,
  * and not a byte of the object written (of the caller's size or the
@@ -69,7 +75,7 @@ static void check_mismatch(const other_t *o)
         fnav_status_t st;
         assert_true(n > 0u && n <= sizeof g_obj.b);
         memset(g_obj.b, FILL, n);
-        st = o->init(k, g_obj.b);
+        st = (fnav_status_t)o->init(k, g_obj.b);
         if (st != FNAV_E_BUILD || changed_bytes(n) != 0u) {
             printf("%s file, fnav_%s_init: %s, %zu of %zu bytes written\n", o->name, k_names[k], fnav_status_str(st),
                    changed_bytes(n), n);
@@ -108,6 +114,152 @@ static void test_same_options_match(void **state)
         memset(g_obj.b, FILL, n);
         assert_int_equal(build_other_same_init(k, g_obj.b), FNAV_OK);
         assert_true(changed_bytes(n) > 0u);
+    }
+}
+
+/* Every public init through its _tagged function, with the library's tag
+ * and the given sizes of the object and of the configuration struct it
+ * reads (the FFT's takes none: cfg_size is not passed). */
+static fnav_status_t init_sized(int which, void *obj, size_t obj_size, size_t cfg_size)
+{
+    switch (which) {
+    case BO_NAV:
+        return fnav_nav_init_tagged((fnav_nav_t *)obj, &fnav_nav_config_default, FNAV_BUILD_TAG, obj_size, cfg_size);
+    case BO_UKF:
+        return fnav_ukf_init_tagged((fnav_ukf_t *)obj, &fnav_ukf_config_default, FNAV_BUILD_TAG, obj_size, cfg_size);
+    case BO_STANCE:
+        return fnav_stance_init_tagged((fnav_stance_t *)obj, &fnav_stance_config_default, FNAV_BUILD_TAG, obj_size,
+                                       cfg_size);
+    case BO_ALIGN:
+        return fnav_align_init_tagged((fnav_align_t *)obj, &fnav_align_config_default, FNAV_BUILD_TAG, obj_size,
+                                      cfg_size);
+    case BO_ALLAN:
+        return fnav_allan_init_tagged((fnav_allan_t *)obj, &fnav_allan_config_default, FNAV_BUILD_TAG, obj_size,
+                                      cfg_size);
+    case BO_WELCH:
+        return fnav_welch_init_tagged((fnav_welch_t *)obj, &fnav_welch_config_default, FNAV_BUILD_TAG, obj_size,
+                                      cfg_size);
+    case BO_FFT: return fnav_fft_init_tagged((fnav_fft_t *)obj, 64u, FNAV_BUILD_TAG, obj_size);
+    case BO_IMUERR:
+        return fnav_imuerr_init_tagged((fnav_imuerr_t *)obj, &fnav_imuerr_config_default, FNAV_BUILD_TAG, obj_size,
+                                       cfg_size);
+    default: return FNAV_E_ARG;
+    }
+}
+
+/* The right tag with a wrong size, 4 bytes short or 4 over, of the object
+ * or of its configuration (the layout of another version of the library,
+ * or of a flag, with the same options): FNAV_E_BUILD and not a byte of the
+ * object written; the right sizes: FNAV_OK, the object written. The
+ * library's sizes are this file's (it has the library's options). */
+static void test_wrong_size(void **state)
+{
+    static const int k_delta[] = { -4, 4 };
+    int k, d;
+    (void)state;
+    for (k = 0; k < BO_COUNT; k++) {
+        const size_t obj = build_other_same_size(k), cfg = build_other_same_cfg_size(k);
+        const size_t n = obj + 4u; /* the larger of the two object sizes tried */
+        fnav_status_t st;
+        assert_true(n <= sizeof g_obj.b);
+        for (d = 0; d < 2; d++) {
+            const size_t bad = (size_t)((long)obj + k_delta[d]);
+            memset(g_obj.b, FILL, n);
+            st = init_sized(k, g_obj.b, bad, cfg);
+            if (st != FNAV_E_BUILD || changed_bytes(n) != 0u) {
+                printf("fnav_%s_init_tagged, object size %zu for %zu: %s, %zu bytes written\n", k_names[k], bad, obj,
+                       fnav_status_str(st), changed_bytes(n));
+            }
+            assert_int_equal(st, FNAV_E_BUILD);
+            assert_int_equal(changed_bytes(n), 0);
+            if (k == BO_FFT) {
+                continue; /* no configuration struct */
+            }
+            memset(g_obj.b, FILL, n);
+            st = init_sized(k, g_obj.b, obj, (size_t)((long)cfg + k_delta[d]));
+            if (st != FNAV_E_BUILD || changed_bytes(n) != 0u) {
+                printf("fnav_%s_init_tagged, config size %ld for %zu: %s, %zu bytes written\n", k_names[k],
+                       (long)cfg + k_delta[d], cfg, fnav_status_str(st), changed_bytes(n));
+            }
+            assert_int_equal(st, FNAV_E_BUILD);
+            assert_int_equal(changed_bytes(n), 0);
+        }
+        /* the right ones: initialised as by fnav_X_init */
+        memset(g_obj.b, FILL, n);
+        assert_int_equal(init_sized(k, g_obj.b, obj, cfg), FNAV_OK);
+        assert_true(changed_bytes(obj) > 0u);
+        assert_int_equal(g_obj.b[obj], FILL); /* nothing past the object */
+    }
+    /* the NULL configuration that fnav_allan_init and fnav_welch_init take
+     * (the defaults): its size is checked all the same */
+    memset(g_obj.b, FILL, sizeof(fnav_allan_t));
+    assert_int_equal(fnav_allan_init_tagged((fnav_allan_t *)g_obj.b, NULL, FNAV_BUILD_TAG, sizeof(fnav_allan_t),
+                                            sizeof(fnav_allan_config_t) + 4u),
+                     FNAV_E_BUILD);
+    assert_int_equal(changed_bytes(sizeof(fnav_allan_t)), 0);
+    memset(g_obj.b, FILL, sizeof(fnav_welch_t));
+    assert_int_equal(fnav_welch_init_tagged((fnav_welch_t *)g_obj.b, NULL, FNAV_BUILD_TAG, sizeof(fnav_welch_t),
+                                            sizeof(fnav_welch_config_t) - 4u),
+                     FNAV_E_BUILD);
+    assert_int_equal(changed_bytes(sizeof(fnav_welch_t)), 0);
+}
+
+/* A file with the library's options, so its tag, compiled with a flag that
+ * changes a layout: each _init says FNAV_E_BUILD, writing nothing, when the
+ * file's size of its object or configuration is not the library's, and
+ * initialises as before when both are (the flag left that struct alone).
+ * Returns how many inits were refused. */
+static int check_layout_flag(const other_t *o)
+{
+    int k, refused = 0;
+    assert_true(o->tag() == fnav_build_tag());
+    for (k = 0; k < BO_COUNT; k++) {
+        const size_t lib = build_other_same_size(k), mine = o->size(k);
+        const size_t n = lib > mine ? lib : mine;
+        const int differs = mine != lib || o->cfg_size(k) != build_other_same_cfg_size(k);
+        fnav_status_t st;
+        printf("%s file, fnav_%s_t %zu bytes (library %zu), its configuration %zu (library %zu)\n", o->name,
+               k_names[k], mine, lib, o->cfg_size(k), build_other_same_cfg_size(k));
+        memset(g_obj.b, FILL, n);
+        st = (fnav_status_t)o->init(k, g_obj.b);
+        if (differs) {
+            refused++;
+            assert_int_equal(st, FNAV_E_BUILD);
+            assert_int_equal(changed_bytes(n), 0);
+        } else {
+            assert_int_equal(st, FNAV_OK);
+            assert_true(changed_bytes(n) > 0u);
+        }
+    }
+    return refused;
+}
+
+/* -fpack-struct drops the padding: the navigator's object (it holds the
+ * stance detector's, whose flags sit between reals) is smaller under host
+ * gcc, 11,696 -> 11,416 bytes in float, 20,608 -> 20,504 in double; before
+ * the sizes were passed, fnav_nav_init said FNAV_OK and wrote past it. */
+static void test_pack_struct(void **state)
+{
+    (void)state;
+    assert_true(k_pack.size(BO_NAV) != sizeof(fnav_nav_t));
+    assert_true(check_layout_flag(&k_pack) > 0);
+}
+
+/* -fshort-enums: an enum member takes a byte where no padding hides it,
+ * fnav_welch_config_t's in float under host gcc (32 -> 28 bytes); in double
+ * the padding hides every one (no struct changes size, and every _init
+ * says FNAV_OK: nothing to catch). */
+static void test_short_enums(void **state)
+{
+    int refused;
+    (void)state;
+    refused = check_layout_flag(&k_senum);
+    if (refused == 0) {
+        printf("-fshort-enums changes no public struct's size in this build\n");
+    }
+    if (sizeof(fnav_real_t) == 4u) {
+        assert_true(k_senum.cfg_size(BO_WELCH) != sizeof(fnav_welch_config_t));
+        assert_true(refused > 0);
     }
 }
 
@@ -196,8 +348,10 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_float_double_mismatch), cmocka_unit_test(test_firmware_options_mismatch),
-        cmocka_unit_test(test_same_options_match),    cmocka_unit_test(test_fields_tile),
-        cmocka_unit_test(test_tag_fields),            cmocka_unit_test(test_each_option_alone),
+        cmocka_unit_test(test_same_options_match),    cmocka_unit_test(test_wrong_size),
+        cmocka_unit_test(test_pack_struct),           cmocka_unit_test(test_short_enums),
+        cmocka_unit_test(test_fields_tile),           cmocka_unit_test(test_tag_fields),
+        cmocka_unit_test(test_each_option_alone),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

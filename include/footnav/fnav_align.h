@@ -122,18 +122,20 @@ typedef struct {
     fnav_real_t refused_f_mps2;      /**< mean |f| of the last period refused for it (FNAV_ALIGN_GRAVITY_TOL), m/s^2; 0: none */
 } fnav_align_t;
 
-/** fnav_align_init() with the caller's FNAV_BUILD_TAG (call fnav_align_init(), which passes it):
- *  FNAV_E_BUILD, *al not written, when build_tag is not the library's. */
+/** fnav_align_init() with the caller's FNAV_BUILD_TAG, sizeof(fnav_align_t) and sizeof(fnav_align_config_t)
+ *  (call fnav_align_init(), which passes them): FNAV_E_BUILD, *al not written, when one is not
+ *  the library's. */
 FNAV_WARN_UNUSED fnav_status_t fnav_align_init_tagged(fnav_align_t *al, const fnav_align_config_t *cfg,
-                                                      uint64_t build_tag);
+                                                      uint64_t build_tag, size_t obj_size, size_t cfg_size);
 
 /** @return FNAV_OK, FNAV_E_ARG, FNAV_E_CONFIG (non-positive or non-finite
  *          values, max < min, short > min, still_ratio <= 1, negative prior).
- *  FNAV_E_BUILD when this file was compiled with other layout options than the library (FNAV_BUILD_TAG,
- *  fnav_types.h; an inline function passes it): nothing written. */
+ *  FNAV_E_BUILD when this file was compiled with other layout options or layout-changing flags
+ *  than the library (FNAV_BUILD_TAG and the struct sizes, fnav_types.h; an inline function passes
+ *  them): nothing written. */
 static inline FNAV_WARN_UNUSED fnav_status_t fnav_align_init(fnav_align_t *al, const fnav_align_config_t *cfg)
 {
-    return fnav_align_init_tagged(al, cfg, FNAV_BUILD_TAG);
+    return fnav_align_init_tagged(al, cfg, FNAV_BUILD_TAG, sizeof(fnav_align_t), sizeof(fnav_align_config_t));
 }
 
 /**

@@ -147,10 +147,11 @@ typedef struct {
     uint32_t i_min;             /**< index of the grid point nearest the minimum */
 } fnav_allan_paper_id_t;
 
-/** fnav_allan_init() with the caller's FNAV_BUILD_TAG (call fnav_allan_init(), which passes it):
- *  FNAV_E_BUILD, *a not written, when build_tag is not the library's. */
+/** fnav_allan_init() with the caller's FNAV_BUILD_TAG, sizeof(fnav_allan_t) and sizeof(fnav_allan_config_t)
+ *  (call fnav_allan_init(), which passes them): FNAV_E_BUILD, *a not written, when one is not
+ *  the library's. */
 FNAV_WARN_UNUSED fnav_status_t fnav_allan_init_tagged(fnav_allan_t *a, const fnav_allan_config_t *cfg,
-                                                      uint64_t build_tag);
+                                                      uint64_t build_tag, size_t obj_size, size_t cfg_size);
 
 /**
  * Initialise an estimator.
@@ -161,12 +162,13 @@ FNAV_WARN_UNUSED fnav_status_t fnav_allan_init_tagged(fnav_allan_t *a, const fna
  * @return FNAV_OK; FNAV_E_ARG when a is NULL; FNAV_E_CONFIG when the grid is
  *         empty, too long, not strictly ascending or has a tau that
  *         fnav_allan_tau_valid() rejects (a is then left zeroed).
- *         FNAV_E_BUILD when this file was compiled with other layout options than the library (FNAV_BUILD_TAG,
- *         fnav_types.h; an inline function passes it): nothing written.
+ *         FNAV_E_BUILD when this file was compiled with other layout options or layout-changing flags
+ *         than the library (FNAV_BUILD_TAG and the struct sizes, fnav_types.h; an inline function passes
+ *         them): nothing written.
  */
 static inline FNAV_WARN_UNUSED fnav_status_t fnav_allan_init(fnav_allan_t *a, const fnav_allan_config_t *cfg)
 {
-    return fnav_allan_init_tagged(a, cfg, FNAV_BUILD_TAG);
+    return fnav_allan_init_tagged(a, cfg, FNAV_BUILD_TAG, sizeof(fnav_allan_t), sizeof(fnav_allan_config_t));
 }
 
 /**

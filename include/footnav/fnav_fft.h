@@ -48,20 +48,21 @@ typedef struct {
  */
 FNAV_WARN_UNUSED fnav_status_t fnav_fft_cos_sin_2pi(uint32_t k, uint32_t n, fnav_real_t *c, fnav_real_t *s);
 
-/** fnav_fft_init() with the caller's FNAV_BUILD_TAG (call fnav_fft_init(), which passes it):
- *  FNAV_E_BUILD, *f not written, when build_tag is not the library's. */
-FNAV_WARN_UNUSED fnav_status_t fnav_fft_init_tagged(fnav_fft_t *f, uint32_t n, uint64_t build_tag);
+/** fnav_fft_init() with the caller's FNAV_BUILD_TAG and sizeof(fnav_fft_t) (call fnav_fft_init(), which
+ *  passes them): FNAV_E_BUILD, *f not written, when one is not the library's. */
+FNAV_WARN_UNUSED fnav_status_t fnav_fft_init_tagged(fnav_fft_t *f, uint32_t n, uint64_t build_tag, size_t obj_size);
 
 /**
  * Prepare the table for real transforms of n points.
  * @return FNAV_OK; FNAV_E_ARG for NULL; FNAV_E_CONFIG when n is not a power
  *         of two in 4..FNAV_FFT_MAX_N.
- *         FNAV_E_BUILD when this file was compiled with other layout options than the library (FNAV_BUILD_TAG,
- *         fnav_types.h; an inline function passes it): nothing written.
+ *         FNAV_E_BUILD when this file was compiled with other layout options or layout-changing flags
+ *         than the library (FNAV_BUILD_TAG and the struct sizes, fnav_types.h; an inline function passes
+ *         them): nothing written.
  */
 static inline FNAV_WARN_UNUSED fnav_status_t fnav_fft_init(fnav_fft_t *f, uint32_t n)
 {
-    return fnav_fft_init_tagged(f, n, FNAV_BUILD_TAG);
+    return fnav_fft_init_tagged(f, n, FNAV_BUILD_TAG, sizeof(fnav_fft_t));
 }
 
 /**

@@ -277,22 +277,24 @@ typedef struct {
     fnav_real_t stamp_off_s;     /**< time-stamp offset from the nominal tick, s */
 } fnav_imuerr_tick_t;
 
-/** fnav_imuerr_init() with the caller's FNAV_BUILD_TAG (call fnav_imuerr_init(), which passes it):
- *  FNAV_E_BUILD, *e not written, when build_tag is not the library's. */
+/** fnav_imuerr_init() with the caller's FNAV_BUILD_TAG, sizeof(fnav_imuerr_t) and sizeof(fnav_imuerr_config_t)
+ *  (call fnav_imuerr_init(), which passes them): FNAV_E_BUILD, *e not written, when one is not
+ *  the library's. */
 FNAV_WARN_UNUSED fnav_status_t fnav_imuerr_init_tagged(fnav_imuerr_t *e, const fnav_imuerr_config_t *cfg,
-                                                       uint64_t build_tag);
+                                                       uint64_t build_tag, size_t obj_size, size_t cfg_size);
 
 /**
  * Validate a configuration and initialise the model: seed every stream,
  * draw the stationary initial AR(1) and flicker states.
  * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG when an enabled
  *         effect has a parameter outside its range (object untouched).
- *         FNAV_E_BUILD when this file was compiled with other layout options than the library (FNAV_BUILD_TAG,
- *         fnav_types.h; an inline function passes it): nothing written.
+ *         FNAV_E_BUILD when this file was compiled with other layout options or layout-changing flags
+ *         than the library (FNAV_BUILD_TAG and the struct sizes, fnav_types.h; an inline function passes
+ *         them): nothing written.
  */
 static inline FNAV_WARN_UNUSED fnav_status_t fnav_imuerr_init(fnav_imuerr_t *e, const fnav_imuerr_config_t *cfg)
 {
-    return fnav_imuerr_init_tagged(e, cfg, FNAV_BUILD_TAG);
+    return fnav_imuerr_init_tagged(e, cfg, FNAV_BUILD_TAG, sizeof(fnav_imuerr_t), sizeof(fnav_imuerr_config_t));
 }
 
 /**

@@ -212,10 +212,11 @@ typedef struct {
                                          before it (none held) */
 } fnav_nav_t;
 
-/** fnav_nav_init() with the caller's FNAV_BUILD_TAG (call fnav_nav_init(), which passes it):
- *  FNAV_E_BUILD, *nav not written, when build_tag is not the library's. */
+/** fnav_nav_init() with the caller's FNAV_BUILD_TAG, sizeof(fnav_nav_t) and sizeof(fnav_nav_config_t)
+ *  (call fnav_nav_init(), which passes them): FNAV_E_BUILD, *nav not written, when one is not
+ *  the library's. */
 FNAV_WARN_UNUSED fnav_status_t fnav_nav_init_tagged(fnav_nav_t *nav, const fnav_nav_config_t *cfg,
-                                                    uint64_t build_tag);
+                                                    uint64_t build_tag, size_t obj_size, size_t cfg_size);
 
 /** Initialise, or start over: every earlier state and counter is
  *  dropped, so a second call resets the navigator. *cfg is copied (it need
@@ -225,11 +226,12 @@ FNAV_WARN_UNUSED fnav_status_t fnav_nav_init_tagged(fnav_nav_t *nav, const fnav_
  *          (profile or any module's configuration invalid, or an initial
  *          tilt or yaw sd above fnav_nav_att_sd_max_rad(); *nav is left
  *          zeroed, not initialised: the other calls say FNAV_E_STATE).
- *  FNAV_E_BUILD when this file was compiled with other layout options than the library (FNAV_BUILD_TAG,
- *  fnav_types.h; an inline function passes it): nothing written. */
+ *  FNAV_E_BUILD when this file was compiled with other layout options or layout-changing flags
+ *  than the library (FNAV_BUILD_TAG and the struct sizes, fnav_types.h; an inline function passes
+ *  them): nothing written. */
 static inline FNAV_WARN_UNUSED fnav_status_t fnav_nav_init(fnav_nav_t *nav, const fnav_nav_config_t *cfg)
 {
-    return fnav_nav_init_tagged(nav, cfg, FNAV_BUILD_TAG);
+    return fnav_nav_init_tagged(nav, cfg, FNAV_BUILD_TAG, sizeof(fnav_nav_t), sizeof(fnav_nav_config_t));
 }
 
 /** The largest tilt_sd_rad and yaw_sd_rad fnav_nav_init takes with cfg's

@@ -269,21 +269,23 @@ typedef struct {
     int finished;       /**< fnav_stance_finish() was called */
 } fnav_stance_t;
 
-/** fnav_stance_init() with the caller's FNAV_BUILD_TAG (call fnav_stance_init(), which passes it):
- *  FNAV_E_BUILD, *st not written, when build_tag is not the library's. */
+/** fnav_stance_init() with the caller's FNAV_BUILD_TAG, sizeof(fnav_stance_t) and sizeof(fnav_stance_config_t)
+ *  (call fnav_stance_init(), which passes them): FNAV_E_BUILD, *st not written, when one is not
+ *  the library's. */
 FNAV_WARN_UNUSED fnav_status_t fnav_stance_init_tagged(fnav_stance_t *st, const fnav_stance_config_t *cfg,
-                                                       uint64_t build_tag);
+                                                       uint64_t build_tag, size_t obj_size, size_t cfg_size);
 
 /**
  * Initialise a detector.
  * @return FNAV_OK, FNAV_E_ARG on NULL, FNAV_E_CONFIG on a bad config
  *         (non-positive or non-finite weights, window, threshold; negative rate).
- *         FNAV_E_BUILD when this file was compiled with other layout options than the library (FNAV_BUILD_TAG,
- *         fnav_types.h; an inline function passes it): nothing written.
+ *         FNAV_E_BUILD when this file was compiled with other layout options or layout-changing flags
+ *         than the library (FNAV_BUILD_TAG and the struct sizes, fnav_types.h; an inline function passes
+ *         them): nothing written.
  */
 static inline FNAV_WARN_UNUSED fnav_status_t fnav_stance_init(fnav_stance_t *st, const fnav_stance_config_t *cfg)
 {
-    return fnav_stance_init_tagged(st, cfg, FNAV_BUILD_TAG);
+    return fnav_stance_init_tagged(st, cfg, FNAV_BUILD_TAG, sizeof(fnav_stance_t), sizeof(fnav_stance_config_t));
 }
 
 /**

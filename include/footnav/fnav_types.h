@@ -159,7 +159,8 @@ typedef enum {
     FNAV_E_TRUNCATED = -12,  /**< input ends inside a record */
     FNAV_E_UNSUPPORTED = -13,/**< feature or version not supported */
     FNAV_E_DIVERGED = -14,   /**< estimator diverged; reset required */
-    FNAV_E_BUILD = -15       /**< caller compiled with other layout options than the library (FNAV_BUILD_TAG) */
+    FNAV_E_BUILD = -15       /**< caller compiled with other layout options or flags than the library
+                                  (FNAV_BUILD_TAG, or a struct's size) */
 } fnav_status_t;
 
 #if defined(__GNUC__) || defined(__clang__)
@@ -210,8 +211,11 @@ const char *fnav_status_str(fnav_status_t status);
  *  and FNAV_INPUT_MAX_ABS change what the library's code does, not a
  *  layout, and are not in it. A macro: it takes the options of the file it
  *  is expanded in. Every public _init passes the caller's to the library,
- *  which answers FNAV_E_BUILD, writing nothing, when it is not its own
- *  (docs/firmware.md, "A library and a program built with other options"). */
+ *  with the caller's sizeof of the object and of its configuration struct
+ *  (which catch a layout flag such as -fpack-struct, or another version's
+ *  headers, as far as a size moves), and the library answers FNAV_E_BUILD,
+ *  writing nothing, when one is not its own (docs/firmware.md, "A library
+ *  and a program built with other options"). */
 #define FNAV_BUILD_TAG                                                                                   \
     (((uint64_t)1 << 60) | ((uint64_t)sizeof(fnav_real_t) << 0) |                                        \
      ((uint64_t)(FNAV_STANCE_MAX_WINDOW) << 4) | ((uint64_t)(FNAV_STANCE_EVENT_BUF) << 15) |             \
@@ -221,8 +225,9 @@ const char *fnav_status_str(fnav_status_t status);
 
 /** The FNAV_BUILD_TAG the library was compiled with: a program that calls
  *  a library function before its first _init (fnav_profile_builtin() on
- *  its configuration, say) compares it with its own FNAV_BUILD_TAG first;
- *  on a mismatch, print both in hex and compare the fields above. */
+ *  its configuration, say: the helpers pass no tag or size) compares it
+ *  with its own FNAV_BUILD_TAG first; on a mismatch, print both in hex and
+ *  compare the fields above. */
 uint64_t fnav_build_tag(void);
 
 /* ------------------------------------------------------------------------ */

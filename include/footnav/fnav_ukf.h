@@ -232,10 +232,11 @@ typedef struct {
     fnav_ukf_health_t health;
 } fnav_ukf_t;
 
-/** fnav_ukf_init() with the caller's FNAV_BUILD_TAG (call fnav_ukf_init(), which passes it):
- *  FNAV_E_BUILD, *f not written, when build_tag is not the library's. */
+/** fnav_ukf_init() with the caller's FNAV_BUILD_TAG, sizeof(fnav_ukf_t) and sizeof(fnav_ukf_config_t)
+ *  (call fnav_ukf_init(), which passes them): FNAV_E_BUILD, *f not written, when one is not
+ *  the library's. */
 FNAV_WARN_UNUSED fnav_status_t fnav_ukf_init_tagged(fnav_ukf_t *f, const fnav_ukf_config_t *cfg,
-                                                    uint64_t build_tag);
+                                                    uint64_t build_tag, size_t obj_size, size_t cfg_size);
 
 /**
  * Initialise (validates the configuration; the filter waits for
@@ -254,12 +255,13 @@ FNAV_WARN_UNUSED fnav_status_t fnav_ukf_init_tagged(fnav_ukf_t *f, const fnav_uk
  *         standard deviation, measurement or bias sigma, lever or settling
  *         sd, whose square is 0 or not finite: in float32 below about
  *         1e-19 or above 1.8e19).
- *         FNAV_E_BUILD when this file was compiled with other layout options than the library (FNAV_BUILD_TAG,
- *         fnav_types.h; an inline function passes it): nothing written.
+ *         FNAV_E_BUILD when this file was compiled with other layout options or layout-changing flags
+ *         than the library (FNAV_BUILD_TAG and the struct sizes, fnav_types.h; an inline function passes
+ *         them): nothing written.
  */
 static inline FNAV_WARN_UNUSED fnav_status_t fnav_ukf_init(fnav_ukf_t *f, const fnav_ukf_config_t *cfg)
 {
-    return fnav_ukf_init_tagged(f, cfg, FNAV_BUILD_TAG);
+    return fnav_ukf_init_tagged(f, cfg, FNAV_BUILD_TAG, sizeof(fnav_ukf_t), sizeof(fnav_ukf_config_t));
 }
 
 /** A sigma point's attitude error, a GRP (a = 1, f = 4: magnitude 4

@@ -106,10 +106,11 @@ typedef struct {
     uint32_t nsamples;                         /**< samples pushed (at most 2^32 - 1) */
 } fnav_welch_t;
 
-/** fnav_welch_init() with the caller's FNAV_BUILD_TAG (call fnav_welch_init(), which passes it):
- *  FNAV_E_BUILD, *w not written, when build_tag is not the library's. */
+/** fnav_welch_init() with the caller's FNAV_BUILD_TAG, sizeof(fnav_welch_t) and sizeof(fnav_welch_config_t)
+ *  (call fnav_welch_init(), which passes them): FNAV_E_BUILD, *w not written, when one is not
+ *  the library's. */
 FNAV_WARN_UNUSED fnav_status_t fnav_welch_init_tagged(fnav_welch_t *w, const fnav_welch_config_t *cfg,
-                                                      uint64_t build_tag);
+                                                      uint64_t build_tag, size_t obj_size, size_t cfg_size);
 
 /**
  * Initialise.
@@ -122,12 +123,13 @@ FNAV_WARN_UNUSED fnav_status_t fnav_welch_init_tagged(fnav_welch_t *w, const fna
  *         FNAV_INPUT_MAX_ABS, or FNAV_DETREND_GLOBAL with a symmetric window;
  *         *w is then not changed (one initialised before keeps its
  *         configuration and data; one never initialised stays zeroed).
- *         FNAV_E_BUILD when this file was compiled with other layout options than the library (FNAV_BUILD_TAG,
- *         fnav_types.h; an inline function passes it): nothing written.
+ *         FNAV_E_BUILD when this file was compiled with other layout options or layout-changing flags
+ *         than the library (FNAV_BUILD_TAG and the struct sizes, fnav_types.h; an inline function passes
+ *         them): nothing written.
  */
 static inline FNAV_WARN_UNUSED fnav_status_t fnav_welch_init(fnav_welch_t *w, const fnav_welch_config_t *cfg)
 {
-    return fnav_welch_init_tagged(w, cfg, FNAV_BUILD_TAG);
+    return fnav_welch_init_tagged(w, cfg, FNAV_BUILD_TAG, sizeof(fnav_welch_t), sizeof(fnav_welch_config_t));
 }
 
 /**
