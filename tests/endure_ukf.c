@@ -24,7 +24,23 @@
  *   GYRO_NOISE^2 t, the gyro white noise's random walk (rad/s/sqrt(Hz);
  *   default the UKF's default), and the share each prediction adds,
  *   GYRO_NOISE^2 dt, in units of the variance's spacing (ulp: nextafter,
- *   in the build's fnav_real_t). */
+ *   in the build's fnav_real_t).
+ *
+ * budget RATE_HZ HOURS P0_RAD2 GYRO_NOISE: the stand above, then one more
+ *   prediction and ZUPT, printing where the yaw variance's share of the
+ *   noise goes (docs/navigation.md, "The heading's variance stops
+ *   growing"), in ulps of the yaw variance P0 before that prediction:
+ *   the factor's U_yy^2 - P0 (P0 -> Cholesky factor), the re-formed
+ *   2 Wi (gamma U_yy)^2 - P0 (gamma U_yy as the sigma points' offset, in
+ *   fnav_real_t), the two yaw sigma points' differences D from the centre
+ *   against +-gamma U_yy (in ulps of gamma U_yy) with Wi (D+^2 + D-^2) - P0
+ *   (summed in double), the same offset's round trip through the
+ *   attitude parameters alone (fnav_ukf_grp_to_quat, fnav_ukf_quat_to_grp),
+ *   and the variance after the prediction and after the ZUPT. It reads the
+ *   UKF's scratch as fnav_ukf_predict leaves it (fnav_ukf.c, sigma_att):
+ *   U's column n-1 (the yaw's, yaw packed last) still holds the factor, its
+ *   columns 4 and 5 the yaw points' differences D (the closed form, the
+ *   default). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -165,6 +181,64 @@ static int stand(double rate_hz, double hours, double p0, double noise)
     return 0;
 }
 
+/* one prediction's budget of the yaw variance (the header's "budget"); 0 on success */
+static int budget(double rate_hz, double hours, double p0, double noise)
+{
+    static fnav_ukf_t f;
+    fnav_ukf_config_t c = fnav_ukf_config_default;
+    const fnav_ukf_init_sd_t sd = fnav_test_ukf_sd_default();
+    const long n = (long)(rate_hz * hours * 3600.0 + 0.5);
+    const fnav_real_t dt = (fnav_real_t)(1.0 / rate_hz);
+    const fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
+    double pa, u, q, uyy, gu, dp, dm, rt;
+    fnav_real_t gus;
+    long k;
+    int i, y;
+    for (i = 0; i < 3; i++) {
+        c.gyro_noise_rps_rthz[i] = (fnav_real_t)noise;
+    }
+    if (fnav_ukf_init(&f, &c) != FNAV_OK ||
+        fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd) != FNAV_OK) {
+        return 1;
+    }
+    fnav_ukf_set_cov(&f, FNAV_UKF_A + 2, FNAV_UKF_A + 2, (fnav_real_t)p0);
+    for (k = 1; k <= n; k++) {
+        if (fnav_ukf_predict(&f, fnav_vec3_zero(), fz, dt) != FNAV_OK || fnav_ukf_zupt(&f, fnav_vec3_zero()) != FNAV_OK) {
+            return 2;
+        }
+    }
+    y = f.n_act - 1;
+    pa = (double)f.P[y][y];
+    u = real_ulp(pa);
+    q = (double)c.gyro_noise_rps_rthz[2] * (double)c.gyro_noise_rps_rthz[2] * (double)dt;
+    if (fnav_ukf_predict(&f, fnav_vec3_zero(), fz, dt) != FNAV_OK) {
+        return 2;
+    }
+    uyy = (double)f.U[y][y];
+    gus = f.gamma * f.U[y][y];
+    gu = (double)gus;
+    dp = (double)f.U[y][4];
+    dm = (double)f.U[y][5];
+    {
+        const fnav_vec3_t a = fnav_ukf_quat_to_grp(fnav_ukf_grp_to_quat(fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), gus)));
+        rt = (double)a.v[2];
+    }
+    printf("%s build, %.0f Hz, after %.3g h: yaw variance P0 %.9e rad^2, its ulp %.3g, share noise^2 dt %.3f ulps\n",
+           sizeof(fnav_real_t) == sizeof(float) ? "float" : "double", rate_hz, hours, pa, u, q / u);
+    printf("factor U_yy^2 - P0                       %+.3f ulps of P0\n", (uyy * uyy - pa) / u);
+    printf("re-formed 2 Wi (gamma U_yy)^2 - P0        %+.3f ulps of P0\n", (2.0 * (double)f.wi * gu * gu - pa) / u);
+    printf("yaw points D+ - gamma U_yy, D- + gamma U_yy  %+.3f, %+.3f ulps of gamma U_yy (%.9g rad)\n",
+           (dp - gu) / real_ulp(gu), (dm + gu) / real_ulp(gu), gu);
+    printf("attitude round trip alone of gamma U_yy   %+.3f ulps of it\n", (rt - gu) / real_ulp(gu));
+    printf("Wi (D+^2 + D-^2) - P0                     %+.3f ulps of P0\n", ((double)f.wi * (dp * dp + dm * dm) - pa) / u);
+    printf("after the prediction (+ noise) - P0       %+.3f ulps of P0 (share %.3f)\n", ((double)f.P[y][y] - pa) / u, q / u);
+    if (fnav_ukf_zupt(&f, fnav_vec3_zero()) != FNAV_OK) {
+        return 2;
+    }
+    printf("after the ZUPT - P0                       %+.3f ulps of P0\n", ((double)f.P[y][y] - pa) / u);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc >= 2 && strcmp(argv[1], "far") == 0) {
@@ -173,6 +247,10 @@ int main(int argc, char **argv)
     if (argc >= 5 && strcmp(argv[1], "stand") == 0) {
         return stand(atof(argv[2]), atof(argv[3]), atof(argv[4]), argc >= 6 ? atof(argv[5]) : 0.0);
     }
-    fprintf(stderr, "usage: endure_ukf far [STEPS] | stand RATE_HZ HOURS P0_RAD2 [GYRO_NOISE_RPS_RTHZ]\n");
+    if (argc >= 6 && strcmp(argv[1], "budget") == 0) {
+        return budget(atof(argv[2]), atof(argv[3]), atof(argv[4]), atof(argv[5]));
+    }
+    fprintf(stderr, "usage: endure_ukf far [STEPS] | stand RATE_HZ HOURS P0_RAD2 [GYRO_NOISE_RPS_RTHZ] |\n"
+                    "       budget RATE_HZ HOURS P0_RAD2 GYRO_NOISE_RPS_RTHZ\n");
     return 2;
 }
