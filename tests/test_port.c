@@ -446,6 +446,87 @@ static void test_cm_ns_scale(void **state)
     }
 }
 
+/* fnav_cm_systick_ns() (fnav_cm_time.h), the SysTick stamp's combination
+ * of the millisecond count, the counter, the pending bit and the counter
+ * read after it, against the time of the read, for every order of a wrap
+ * and the reads: a SysTick counting hz with reload R = hz / 1000 - 1 (hz a
+ * multiple of 1000: a millisecond is R + 1 ticks) wraps at ticks
+ * W = n (R + 1), where it reads R and sets the pending bit. An interrupt
+ * that SysTick cannot pre-empt (entered at tick th) reads the millisecond
+ * count (the wraps at or before th, whose interrupt ran), the counter at
+ * t1, the pending bit at t2 (set by a wrap in (th, t2]) and the counter at
+ * t3, th <= t1 <= t2 <= t3, all within 8 ticks either side of a wrap (one
+ * wrap at most, as the function requires). The stamp is the time of the
+ * counter read that counts: t3 when the bit is set, else t1, in ns,
+ * floor(t 1e9 / hz). QEMU cannot check this (its pending bit comes late:
+ * docs/firmware.md, "SysTick time stamps"). */
+static int64_t systick_model_ns(uint32_t hz, uint64_t th, uint64_t t1, uint64_t t2, uint64_t t3)
+{
+    const uint64_t p = hz / 1000u; /* R + 1 */
+    fnav_cm_ns_scale_t sc;
+    const uint64_t ms = th / p;               /* wraps at or before th */
+    const int pending = t2 / p > th / p;      /* a wrap in (th, t2] */
+    const uint32_t cvr = (uint32_t)(p - 1u - t1 % p), cvr_after = (uint32_t)(p - 1u - t3 % p);
+    fnav_cm_ns_scale_init(&sc, hz, (uint32_t)(p - 1u));
+    return fnav_cm_systick_ns(&sc, ms, cvr, pending, cvr_after);
+}
+
+static void test_cm_systick_ns(void **state)
+{
+    /* the multiply-shift (25 MHz, 168 MHz, 16,384,000 Hz) and the division
+     * (the first whole-kHz clock from 1,001 kHz the bound does not cover) */
+    uint32_t hz[4] = {25000000u, 168000000u, 16384000u, 0u};
+    const uint64_t nwrap[] = {1u, 2u, 1000u, UINT64_C(5000000000)}; /* the last: 58 days, ms over 2^32 */
+    size_t i, w;
+    uint32_t f, pend_seen[2] = {0u, 0u};
+    (void)state;
+    for (f = 1001000u; hz[3] == 0u && f < 400000000u; f += 1000u) {
+        fnav_cm_ns_scale_t sc;
+        fnav_cm_ns_scale_init(&sc, f, f / 1000u - 1u);
+        if (!sc.exact) {
+            hz[3] = f;
+        }
+    }
+    assert_true(hz[3] != 0u);
+    for (i = 0; i < 4u; i++) {
+        const uint64_t p = hz[i] / 1000u;
+        fnav_cm_ns_scale_t sc;
+        fnav_cm_ns_scale_init(&sc, hz[i], (uint32_t)(p - 1u));
+        assert_int_equal(sc.exact, i < 3u ? 1u : 0u);
+        for (w = 0; w < sizeof nwrap / sizeof nwrap[0]; w++) {
+            const uint64_t lo = nwrap[w] * p - 8u, hi = nwrap[w] * p + 8u;
+            uint64_t th, t1, t2, t3;
+            for (th = lo; th <= hi; th++) {
+                for (t1 = th; t1 <= hi; t1++) {
+                    for (t2 = t1; t2 <= hi; t2++) {
+                        for (t3 = t2; t3 <= hi; t3++) {
+                            const int pending = t2 / p > th / p;
+                            const uint64_t t = pending ? t3 : t1;
+                            const int64_t want =
+                                (int64_t)(t / p) * 1000000 + (int64_t)(t % p) * 1000000000 / (int64_t)hz[i];
+                            const int64_t got = systick_model_ns(hz[i], th, t1, t2, t3);
+                            pend_seen[pending]++;
+                            if (got != want) {
+                                fail_msg("hz %u wrap at %llu: th %llu t1 %llu t2 %llu t3 %llu: %lld, want %lld",
+                                         (unsigned)hz[i], (unsigned long long)(nwrap[w] * p),
+                                         (unsigned long long)th, (unsigned long long)t1, (unsigned long long)t2,
+                                         (unsigned long long)t3, (long long)got, (long long)want);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert_true(pend_seen[0] > 0u && pend_seen[1] > 0u);
+    {
+        /* not started: 0 */
+        fnav_cm_ns_scale_t sc;
+        fnav_cm_ns_scale_init(&sc, 0u, 0u);
+        assert_true(fnav_cm_systick_ns(&sc, 5u, 3u, 1, 2u) == 0);
+    }
+}
+
 /* The stamps through the navigator: a 400 Hz still-then-moving stream whose
  * board timer wraps, and 8-sample FIFO batches stamped at a jittery
  * interrupt. Converted naively (timer * 1000 per sample, or the interrupt's
@@ -536,6 +617,7 @@ int main(void)
         cmocka_unit_test(test_cm_batch_stamp_short_span),
         cmocka_unit_test(test_cm_time_edges),
         cmocka_unit_test(test_cm_ns_scale),
+        cmocka_unit_test(test_cm_systick_ns),
         cmocka_unit_test(test_cm_stamps_through_nav),
     };
     return cmocka_run_group_tests_name("port", tests, NULL, NULL);

@@ -105,15 +105,18 @@ static inline int64_t fnav_cm_batch_stamp(int64_t t_prev_ns, int64_t t_irq_ns, u
 /* ---- counter ticks to ns without a 64-bit division ---- */
 
 /** floor(c 1e9 / hz) for counter values c in [0, c_max], precomputed by
- *  fnav_cm_ns_scale_init(). 8 bytes: the SysTick time base keeps it beside
- *  its 64-bit millisecond count in the 16 bytes it had (the firmware's RAM
- *  has 8 to spare: docs/firmware.md). */
+ *  fnav_cm_ns_scale_init(). 8 bytes (asserted below): the SysTick time base
+ *  keeps it beside its 64-bit millisecond count, and the firmware's RAM
+ *  budget counts on that size (docs/firmware.md, "Budget"). */
 typedef struct {
     uint32_t mul;            /**< exact: m = ceil(2^k 1e9 / hz); division: hz */
     unsigned int c_max : 24; /**< exact: the largest counter value (SysTick: the reload value) */
     unsigned int shift : 7;  /**< exact: 32 - k */
     unsigned int exact : 1;  /**< 1: the multiply-shift, 0: the 64-bit division */
 } fnav_cm_ns_scale_t;
+
+/* C99 compile-time check: a negative array size if the scale is not 8 bytes */
+typedef char fnav_cm_ns_scale_size_check[sizeof(fnav_cm_ns_scale_t) == 8u ? 1 : -1];
 
 /** Precompute floor(c 1e9 / @p hz) for c in [0, @p c_max] (once, at start:
  *  it divides). Granlund & Montgomery, "Division by invariant integers using
@@ -124,8 +127,10 @@ typedef struct {
  *  With g = gcd(1e9, hz), r is a multiple of g below hz, so r <= hz - g. If
  *  c_max j < 2^k g, then for every c <= c_max,
  *  0 <= r + c j / 2^k < hz - g + g = hz and floor(c m / 2^k) = q: exact.
- *  k is the largest k <= 32 with m < 2^32 (the most precise m; then
- *  2^k >= 2^31 hz / 1e9 > 2000 c_max for SysTick's c_max = hz / 1000 - 1).
+ *  k is the largest k <= 32 with m < 2^32 (the most precise m; for
+ *  hz <= 2 GHz, where k < 32 is not forced by the cap, 2^k >= 2^31 hz / 1e9
+ *  > 2000 c_max for SysTick's c_max = hz / 1000 - 1; the code checks
+ *  c_max < 2^k in any case).
  *  With c < 2^k (c_max < 2^k is required), c 2^(32 - k) < 2^32 and
  *  floor(c m / 2^k) = floor(c 2^(32 - k) m / 2^32) (< m < 2^32): a shift
  *  and the high word of one 32 x 32 -> 64 multiply (UMULL).
@@ -191,6 +196,37 @@ static inline int64_t fnav_cm_ns_of_ticks(const fnav_cm_ns_scale_t *s, uint32_t 
         return (int64_t)(uint32_t)(((uint64_t)(cc << s->shift) * s->mul) >> 32); /* cc < 2^k: no bit lost */
     }
     return s->mul == 0u ? 0 : (int64_t)c * 1000000000 / (int64_t)s->mul;
+}
+
+/** The SysTick time base's stamp in ns from one reading of its state
+ *  (port/cortex-m/fnav_port_cortexm.c, fnav_cm_ticks_ns()): @p ms, the
+ *  millisecond interrupts that have run; @p cvr, the counter (SYST_CVR)
+ *  read after it; @p pending, ICSR.PENDSTSET read after that; @p cvr_after,
+ *  the counter read after the pending bit. @p s is from
+ *  fnav_cm_ns_scale_init(s, hz, hz / 1000 - 1) (the reload: c_max of an
+ *  exact scale, else hz / 1000 - 1 from the division's hz); hz 0: 0.
+ *
+ *  Pending set: the counter wrapped and its interrupt has not run (the
+ *  caller is in an interrupt of the same or higher priority, or interrupts
+ *  are masked). The wrap came before the pending bit was read, so @p
+ *  cvr_after belongs to the next millisecond: ms + 1 and cvr_after (@p cvr
+ *  may be from either side of the wrap). Pending clear: @p cvr (a wrap
+ *  after the pending read shows only in @p cvr_after, which is not used).
+ *  Two wraps before the interrupt runs (over 1 ms) cannot be told apart.
+ *  Pure: tests/test_port.c, test_cm_systick_ns, checks every order of a
+ *  wrap and the reads on the host. */
+static inline int64_t fnav_cm_systick_ns(const fnav_cm_ns_scale_t *s, uint64_t ms, uint32_t cvr, int pending,
+                                         uint32_t cvr_after)
+{
+    const uint32_t reload = s->exact ? (uint32_t)s->c_max : s->mul / 1000u - 1u;
+    if (s->mul == 0u) {
+        return 0;
+    }
+    if (pending) {
+        ms++;
+        cvr = cvr_after;
+    }
+    return (int64_t)ms * 1000000 + fnav_cm_ns_of_ticks(s, reload - cvr);
 }
 
 #endif /* FNAV_CM_TIME_H */

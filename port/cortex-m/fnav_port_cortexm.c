@@ -68,32 +68,18 @@ FNAV_CM_WEAK int64_t fnav_cm_ticks_ns(void)
     uint64_t ms;
     uint32_t cvr, cvr_after;
     int pending;
-    uint32_t reload;
     if (g_systick_scale.mul == 0u) { /* not started (the division's hz, 0) */
         return 0;
     }
-    /* the reload: kept by an exact scale, else recomputed from its hz */
-    reload = g_systick_scale.exact ? (uint32_t)g_systick_scale.c_max : g_systick_scale.mul / 1000u - 1u;
     do { /* re-read if the millisecond interrupt ran in between */
         ms = g_systick_ms;
         cvr = SYST_CVR;
         pending = (SCB_ICSR & ICSR_PENDSTSET) != 0u;
         cvr_after = SYST_CVR;
     } while (ms != g_systick_ms);
-    if (pending) {
-        /* The counter wrapped and its interrupt has not run: we are in an
-         * interrupt of the same or higher priority (the sample-ready
-         * handler stamping a sample), or interrupts are masked. The wrap
-         * came before the pending bit was read, so the reading after it
-         * belongs to the next millisecond. (Two wraps, over 1 ms inside one
-         * handler, cannot be told apart.) */
-        ms++;
-        cvr = cvr_after;
-    }
-    /* (reload - cvr) * 1e9 / hz, the same value, without a 64-bit division
-     * (__aeabi_ldivmod) at the clocks fnav_cm_ns_scale_init() finds exact:
-     * a stamp costs 42 instructions instead of 81 (tests/m4/ticks.sh) */
-    return (int64_t)ms * 1000000 + fnav_cm_ns_of_ticks(&g_systick_scale, reload - cvr);
+    /* a pending wrap counted, the counter's ns without a 64-bit division
+     * where the scale is exact (fnav_cm_time.h) */
+    return fnav_cm_systick_ns(&g_systick_scale, ms, cvr, pending, cvr_after);
 }
 
 FNAV_CM_WEAK void fnav_cm_idle(void)
