@@ -385,7 +385,7 @@ static void test_i64_to_real(void **state)
     check_i64(16777217);  /* 2^24 + 1: not a float, rounds to even */
     check_i64(16777219);  /* 2^24 + 3: rounds up */
     check_i64(-16777217);
-    check_i64(2147483520);  /* INT32_MAX - 127: float's halfway point below 2^31 */
+    check_i64(2147483520);  /* INT32_MAX - 127: the largest float below 2^31 (exact) */
     check_i64(2147483584);  /* halfway between the last two floats under 2^31 */
     check_i64(-2147483584);
     for (c = 0; c < sizeof centres / sizeof centres[0]; c++) {

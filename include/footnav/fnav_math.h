@@ -429,7 +429,7 @@ static inline FNAV_ALWAYS_INLINE uint32_t fnav_ns_to_us_u32(int64_t t_ns)
 }
 
 /** (fnav_real_t)x, the same bits for every int64_t, through int32_t when x
- *  fits (|x| < 2^31: a time difference in ns under 2.1 s): on the
+ *  fits (-2^31 <= x < 2^31: a time difference in ns under 2.1 s): on the
  *  Cortex-M4F an int32 -> float conversion is one VCVT, an int64 -> float a
  *  call to __aeabi_l2f, once per sample in the navigator and the stance
  *  detector. Same bits: for x in [INT32_MIN, INT32_MAX] the conversion to
