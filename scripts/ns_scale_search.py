@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """fnav_cm_ns_scale_init() (port/cortex-m/fnav_cm_time.h) in exact integers:
-k, m and the mode for a few clocks, and the first clock from 1,000,001 Hz
-up whose multiply-shift alone (without the correction) is wrong at some
-counter value c <= hz / 1000 - 1: tests/test_port.c, test_cm_ns_scale,
-uses it (1,000,066 Hz, c = 894). Run: python3 scripts/ns_scale_search.py"""
+k, m and the case ("exact": the multiply-shift, proven equal to the
+division; "division": the bound does not cover the clock) for a few clocks,
+and the first clock from 1,000,001 Hz up where the multiply-shift with its
+largest k is wrong at some counter value c <= hz / 1000 - 1 (so the bound
+must refuse it): tests/test_port.c, test_cm_ns_scale, uses it (1,000,066 Hz,
+c = 894). Run: python3 scripts/ns_scale_search.py"""
 from math import gcd
 
 
@@ -19,13 +21,18 @@ def params(hz):
     return k, m, exact
 
 
+def case(exact):
+    return "exact" if exact else "division"
+
+
 for hz in (1000000, 12000000, 16000000, 25000000, 64000000, 80000000, 168000000, 180000000, 250000000,
            16777216, 14745600, 25000001, 1000066):
-    print(hz, "k=%d m=%d %s" % (params(hz)[0], params(hz)[1], "EXACT" if params(hz)[2] else "FIX"))
+    k, m, exact = params(hz)
+    print(hz, "k=%d m=%d %s" % (k, m, case(exact)))
 
 for hz in range(1000001, 1001000):
     k, m, exact = params(hz)
     bad = [c for c in range(hz // 1000) if (c * m >> k) != c * 10**9 // hz]
     if bad:
-        print("first clock needing the correction: %d Hz (mode %s), c = %s" % (hz, "EXACT" if exact else "FIX", bad))
+        print("first clock where the multiply-shift alone is wrong: %d Hz (%s), c = %s" % (hz, case(exact), bad))
         break
