@@ -44,10 +44,10 @@ void fnav_port_assert_failed(const char *file, int line, const char *expr)
 }
 
 /* a reading that goes back is at most this far after a millisecond
- * boundary: the largest this test prints (at most 160 ns, 4 ticks, over
- * the runs of docs/firmware.md, "SysTick time stamps") plus a margin of
- * 6 ticks (240 ns) for another QEMU's timer servicing; a stamp that misses
- * a wrap goes back by nearly 1 ms at up to 1 ms after the boundary */
+ * boundary: the largest offset this test prints (160 ns, 4 ticks:
+ * docs/firmware.md, "Board hooks") plus a margin of 6 ticks (240 ns) for
+ * another QEMU's timer servicing; a stamp that loses a millisecond shows
+ * up to 1 ms after the boundary */
 #define EMU_WINDOW_NS 400
 /* the loop must cross millisecond boundaries to read near them: 41 ms in
  * the measured run, so 10 leaves room for a stamp 4 times cheaper */
