@@ -49,8 +49,9 @@ void fnav_port_assert_failed(const char *file, int line, const char *expr)
  * another QEMU's timer servicing; a stamp that loses a millisecond shows
  * up to 1 ms after the boundary */
 #define EMU_WINDOW_NS 400
-/* the loop must cross millisecond boundaries to read near them: 41 ms in
- * the measured run, so 10 leaves room for a stamp 4 times cheaper */
+/* the loop must cross millisecond boundaries to read near them: it spans
+ * 39 (docs/firmware.md, "Board hooks"), so 10 leaves room for a loop
+ * nearly 4 times faster on another QEMU or compiler */
 #define MIN_WRAPS 10u
 
 static volatile int64_t g_prev = -1, g_worst, g_back_off;
