@@ -21,7 +21,7 @@ const char *fnav_status_str(fnav_status_t status)
     case FNAV_E_TRUNCATED: return "input truncated";
     case FNAV_E_UNSUPPORTED: return "unsupported";
     case FNAV_E_DIVERGED: return "estimator diverged";
-    case FNAV_E_BUILD: return "built with other layout options than the library";
+    case FNAV_E_BUILD: return "built with other layout options or flags than the library";
     }
     return "unknown status";
 }

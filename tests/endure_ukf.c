@@ -22,11 +22,13 @@
  *   sample from a yaw variance P0; the yaw variance every 10 minutes and
  *   its growth after the first 10 minutes (the bias's transient) against
  *   GYRO_NOISE^2 t, the gyro white noise's random walk (rad/s/sqrt(Hz);
- *   default the UKF's default), and the share each prediction adds,
+ *   0 or left out: the UKF's default; a negative one, or one the UKF
+ *   refuses, is an error), and the share each prediction adds,
  *   GYRO_NOISE^2 dt, in units of the variance's spacing (ulp: nextafter,
  *   in the build's fnav_real_t).
  *
- * budget RATE_HZ HOURS P0_RAD2 GYRO_NOISE: the stand above, then one more
+ * budget RATE_HZ HOURS P0_RAD2 [GYRO_NOISE]: the stand above (GYRO_NOISE
+ *   as there), then one more
  *   prediction and ZUPT, printing where the yaw variance's share of the
  *   noise goes (docs/navigation.md, "The heading's variance stops
  *   growing"), in ulps of the yaw variance P0 before that prediction:
@@ -99,7 +101,8 @@ static int far_run(int cf, double dist_m, int control, long steps)
             worst = fabs(pb - pa) / s > worst ? fabs(pb - pa) / s : worst;
         }
     }
-    sdr = sqrt((double)fnav_ukf_cov(&g_b, FNAV_UKF_P, FNAV_UKF_P) / (double)fnav_ukf_cov(&g_a, FNAV_UKF_P, FNAV_UKF_P));
+    sdr = sqrt((double)fnav_ukf_cov(&g_b, FNAV_UKF_P, FNAV_UKF_P) /
+               (double)fnav_ukf_cov(&g_a, FNAV_UKF_P, FNAV_UKF_P));
     if (control) {
         printf("%d  control  %8.3g  %6.3f  %8.4f  %6.2f\n", cf, worst, sdr, dmax,
                hypot((double)g_a.pos_m.v[0], (double)g_a.pos_m.v[1]));
@@ -139,32 +142,65 @@ static double real_ulp(double x)
     return nextafter(x, HUGE_VAL) - x;
 }
 
+/* one prediction and ZUPT of a level stand: 0 on success */
+static int stand_step(fnav_ukf_t *f, fnav_real_t dt)
+{
+    const fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
+    if (fnav_ukf_predict(f, fnav_vec3_zero(), fz, dt) != FNAV_OK) {
+        return 2;
+    }
+    return fnav_ukf_zupt(f, fnav_vec3_zero()) != FNAV_OK ? 2 : 0;
+}
+
+/* The level stand of "stand" and "budget": f initialised with the gyro
+ * white noise (0: the UKF's default), started at rest and level with the
+ * yaw variance p0. Returns 0, or 1 after saying why on stderr. */
+static int stand_setup(fnav_ukf_t *f, fnav_ukf_config_t *c, double p0, double noise)
+{
+    const fnav_ukf_init_sd_t sd = fnav_test_ukf_sd_default();
+    fnav_status_t st;
+    int i;
+    *c = fnav_ukf_config_default;
+    if (!(noise >= 0.0)) {
+        fprintf(stderr, "endure_ukf: GYRO_NOISE %g: not a density >= 0 (0: the UKF's default)\n", noise);
+        return 1;
+    }
+    if (noise > 0.0) {
+        for (i = 0; i < 3; i++) {
+            c->gyro_noise_rps_rthz[i] = (fnav_real_t)noise;
+        }
+    }
+    st = fnav_ukf_init(f, c);
+    if (st != FNAV_OK) {
+        fprintf(stderr, "endure_ukf: fnav_ukf_init with gyro noise %g rad/s/sqrt(Hz): %s\n",
+                (double)c->gyro_noise_rps_rthz[2], fnav_status_str(st));
+        return 1;
+    }
+    st = fnav_ukf_start(f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd);
+    if (st != FNAV_OK) {
+        fprintf(stderr, "endure_ukf: fnav_ukf_start: %s\n", fnav_status_str(st));
+        return 1;
+    }
+    fnav_ukf_set_cov(f, FNAV_UKF_A + 2, FNAV_UKF_A + 2, (fnav_real_t)p0);
+    return 0;
+}
+
 static int stand(double rate_hz, double hours, double p0, double noise)
 {
     static fnav_ukf_t f;
-    fnav_ukf_config_t c = fnav_ukf_config_default;
-    const fnav_ukf_init_sd_t sd = fnav_test_ukf_sd_default();
+    fnav_ukf_config_t c;
     const long n = (long)(rate_hz * hours * 3600.0 + 0.5), every = (long)(rate_hz * 600.0 + 0.5);
     const fnav_real_t dt = (fnav_real_t)(1.0 / rate_hz);
-    const fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
     double p10 = 0.0;
     long k;
-    int i;
-    if (noise > 0.0) {
-        for (i = 0; i < 3; i++) {
-            c.gyro_noise_rps_rthz[i] = (fnav_real_t)noise;
-        }
-    }
-    if (fnav_ukf_init(&f, &c) != FNAV_OK ||
-        fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd) != FNAV_OK) {
+    if (stand_setup(&f, &c, p0, noise) != 0) {
         return 1;
     }
-    fnav_ukf_set_cov(&f, FNAV_UKF_A + 2, FNAV_UKF_A + 2, (fnav_real_t)p0);
     noise = (double)c.gyro_noise_rps_rthz[2];
     printf("%s build, %.0f Hz, yaw variance from %.3g rad^2, gyro noise z %.4g rad/s/sqrt(Hz)\n",
            sizeof(fnav_real_t) == sizeof(float) ? "float" : "double", rate_hz, p0, noise);
     for (k = 1; k <= n; k++) {
-        if (fnav_ukf_predict(&f, fnav_vec3_zero(), fz, dt) != FNAV_OK || fnav_ukf_zupt(&f, fnav_vec3_zero()) != FNAV_OK) {
+        if (stand_step(&f, dt) != 0) {
             return 2;
         }
         if (k % every == 0) {
@@ -185,25 +221,19 @@ static int stand(double rate_hz, double hours, double p0, double noise)
 static int budget(double rate_hz, double hours, double p0, double noise)
 {
     static fnav_ukf_t f;
-    fnav_ukf_config_t c = fnav_ukf_config_default;
-    const fnav_ukf_init_sd_t sd = fnav_test_ukf_sd_default();
+    fnav_ukf_config_t c;
     const long n = (long)(rate_hz * hours * 3600.0 + 0.5);
     const fnav_real_t dt = (fnav_real_t)(1.0 / rate_hz);
     const fnav_vec3_t fz = fnav_vec3(FNAV_R(0.0), FNAV_R(0.0), (fnav_real_t)-k_g);
     double pa, u, q, uyy, gu, dp, dm, rt;
     fnav_real_t gus;
     long k;
-    int i, y;
-    for (i = 0; i < 3; i++) {
-        c.gyro_noise_rps_rthz[i] = (fnav_real_t)noise;
-    }
-    if (fnav_ukf_init(&f, &c) != FNAV_OK ||
-        fnav_ukf_start(&f, fnav_quat_identity(), fnav_vec3_zero(), fnav_vec3_zero(), &sd) != FNAV_OK) {
+    int y;
+    if (stand_setup(&f, &c, p0, noise) != 0) {
         return 1;
     }
-    fnav_ukf_set_cov(&f, FNAV_UKF_A + 2, FNAV_UKF_A + 2, (fnav_real_t)p0);
     for (k = 1; k <= n; k++) {
-        if (fnav_ukf_predict(&f, fnav_vec3_zero(), fz, dt) != FNAV_OK || fnav_ukf_zupt(&f, fnav_vec3_zero()) != FNAV_OK) {
+        if (stand_step(&f, dt) != 0) {
             return 2;
         }
     }
@@ -230,8 +260,10 @@ static int budget(double rate_hz, double hours, double p0, double noise)
     printf("yaw points D+ - gamma U_yy, D- + gamma U_yy  %+.3f, %+.3f ulps of gamma U_yy (%.9g rad)\n",
            (dp - gu) / real_ulp(gu), (dm + gu) / real_ulp(gu), gu);
     printf("attitude round trip alone of gamma U_yy   %+.3f ulps of it\n", (rt - gu) / real_ulp(gu));
-    printf("Wi (D+^2 + D-^2) - P0                     %+.3f ulps of P0\n", ((double)f.wi * (dp * dp + dm * dm) - pa) / u);
-    printf("after the prediction (+ noise) - P0       %+.3f ulps of P0 (share %.3f)\n", ((double)f.P[y][y] - pa) / u, q / u);
+    printf("Wi (D+^2 + D-^2) - P0                     %+.3f ulps of P0\n",
+           ((double)f.wi * (dp * dp + dm * dm) - pa) / u);
+    printf("after the prediction (+ noise) - P0       %+.3f ulps of P0 (share %.3f)\n", ((double)f.P[y][y] - pa) / u,
+           q / u);
     if (fnav_ukf_zupt(&f, fnav_vec3_zero()) != FNAV_OK) {
         return 2;
     }
@@ -247,10 +279,10 @@ int main(int argc, char **argv)
     if (argc >= 5 && strcmp(argv[1], "stand") == 0) {
         return stand(atof(argv[2]), atof(argv[3]), atof(argv[4]), argc >= 6 ? atof(argv[5]) : 0.0);
     }
-    if (argc >= 6 && strcmp(argv[1], "budget") == 0) {
-        return budget(atof(argv[2]), atof(argv[3]), atof(argv[4]), atof(argv[5]));
+    if (argc >= 5 && strcmp(argv[1], "budget") == 0) {
+        return budget(atof(argv[2]), atof(argv[3]), atof(argv[4]), argc >= 6 ? atof(argv[5]) : 0.0);
     }
     fprintf(stderr, "usage: endure_ukf far [STEPS] | stand RATE_HZ HOURS P0_RAD2 [GYRO_NOISE_RPS_RTHZ] |\n"
-                    "       budget RATE_HZ HOURS P0_RAD2 GYRO_NOISE_RPS_RTHZ\n");
+                    "       budget RATE_HZ HOURS P0_RAD2 [GYRO_NOISE_RPS_RTHZ]   (GYRO_NOISE 0: the UKF's default)\n");
     return 2;
 }

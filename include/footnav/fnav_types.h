@@ -210,8 +210,9 @@ const char *fnav_status_str(fnav_status_t status);
  *  layout of the tag itself (1). FNAV_ENABLE_ASSERT, FNAV_NAV_TIME_RESYNC
  *  and FNAV_INPUT_MAX_ABS change what the library's code does, not a
  *  layout, and are not in it. A macro: it takes the options of the file it
- *  is expanded in. Every public _init passes the caller's to the library,
- *  with the caller's sizeof of the object and of its configuration struct
+ *  is expanded in. Every public _init but fnav_wire_decoder_init (void,
+ *  its struct moved by no option) passes the caller's to the library, with
+ *  the caller's sizeof of the object and of its configuration struct
  *  (which catch a layout flag such as -fpack-struct, or another version's
  *  headers, as far as a size moves), and the library answers FNAV_E_BUILD,
  *  writing nothing, when one is not its own (docs/firmware.md, "A library

@@ -167,7 +167,9 @@ size_t fnav_wire_encode_info(uint8_t *out, size_t out_size, uint16_t seq, const 
 /** END frame: the sender stops after @p count SAMPLE frames. */
 size_t fnav_wire_encode_end(uint8_t *out, size_t out_size, uint16_t seq, uint32_t count);
 
-/** Empty a decoder and zero its counters. */
+/** Empty a decoder and zero its counters. Passes no FNAV_BUILD_TAG or size, unlike the other
+ *  _init (no option moves the struct's layout; a flag such as -fpack-struct does, and is not caught:
+ *  docs/firmware.md, "A library and a program built with other options"). */
 void fnav_wire_decoder_init(fnav_wire_decoder_t *d);
 
 /**
