@@ -560,10 +560,10 @@ static fnav_real_t add_rotated_noise(fnav_real_t S[N][N], int o, fnav_mat3_t C, 
 
 #if FNAV_UKF_YAW_CARRY
 /* The yaw variance's prediction as a change of P (fnav_ukf_predict; docs/navigation.md, "The heading's
- * variance stops growing (corrected)"). Re-formed from the sigma points, S_yy lost some 3 float
- * spacings (ulps) of itself each prediction: the two yaw points come back 2 ulps of their offset
- * gamma U_yy short through the attitude parameters' round trip (GRP -> quaternion -> GRP), and a
- * stand's share N^2 dt of a few ulps was absorbed. Here the new S_yy is P_yy plus its change:
+ * variance stops growing (corrected)"). Re-formed from the sigma points in float, S_yy loses some
+ * 3 float spacings (ulps) of itself each prediction: the two yaw points come back 2 ulps of their
+ * offset gamma U_yy short through the attitude parameters' round trip (GRP -> quaternion -> GRP),
+ * and a stand's share N^2 dt of a few ulps is absorbed. Here the new S_yy is P_yy plus its change:
  *   S_yy = P_yy + s_lin + kl sum_{j >= nl} (2 U_yj b_j + b_j^2) + kmm m_y^2 + q,
  * s_lin the scatter of the points along the columns j < nl (their yaw differences are small and
  * formed without the offset), b_j the yaw the gyro-bias offset of the attitude column j adds, to

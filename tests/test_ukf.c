@@ -360,9 +360,9 @@ static void test_closed_form_equivalence(void **state)
  * in exact arithmetic each prediction adds the gyro noise's share N^2 dt to
  * it and the ZUPT nothing: P_yy(t) = P_yy(0) + N^2 t. At 200 Hz with the
  * navigator's 3.5e-4 rad/s/sqrt(Hz) from 2.7e-3 rad^2 the share is 2.6
- * float spacings of the variance (build/host/tests/endure_ukf budget): the
- * float filter that re-formed P from its sigma points lost it every
- * prediction and stopped growing at once (0 of N^2 t). Checked for the
+ * float spacings of the variance (build/host/tests/endure_ukf budget): a
+ * float filter that re-forms P from its sigma points loses it every
+ * prediction and stops growing at once (0 of N^2 t). Checked for the
  * closed form and the full sigma points, over 100 s (20,000 predictions)
  * after 1 s: within 2 % in float (the remainder carried between predictions
  * leaves less than one spacing, 0.02 % of the growth), and in double equal
