@@ -450,8 +450,7 @@ static void fill_frame(fnav_nav_t *nav, const fnav_stance_out_t *o, uint32_t fla
         fnav_vec3_t e = fnav_ukf_euler(u);
         fr->flags |= FNAV_FRAME_ALIGNED;
         /* this frame becomes nav->last (fnav_nav_pop); its attitude for
-         * hold_last_frame, in the hold (unused while aligned: no extra RAM,
-         * the firmware image has 8 bytes to spare) */
+         * hold_last_frame, in the hold (unused while aligned: no extra RAM) */
         nav->hold_q_nb = u->q_nb;
         for (i = 0; i < 3; i++) {
             fr->pos_m[i] = u->pos_m.v[i];

@@ -227,6 +227,11 @@ void fnav_ukf_set_cov(fnav_ukf_t *f, int i, int j, fnav_real_t v)
     FNAV_ASSERT(f != NULL && i >= 0 && i < N && j >= 0 && j < N && f->pos[i] >= 0 && f->pos[j] >= 0);
     f->P[f->pos[i]][f->pos[j]] = v;
     f->P[f->pos[j]][f->pos[i]] = v;
+#if FNAV_UKF_YAW_CARRY
+    if (i == FNAV_UKF_A + 2 && j == i) {
+        f->p_yaw_carry_rad2 = FNAV_R(0.0); /* the remainder belonged to the old yaw variance */
+    }
+#endif
 }
 
 fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps, fnav_vec3_t ba_mps2,
@@ -290,6 +295,9 @@ fnav_status_t fnav_ukf_start(fnav_ukf_t *f, fnav_quat_t q_nb, fnav_vec3_t bg_rps
     f->settle_on = 0;
     f->settle_mps = FNAV_R(0.0);
     f->settle_var = FNAV_R(0.0);
+#if FNAV_UKF_YAW_CARRY
+    f->p_yaw_carry_rad2 = FNAV_R(0.0);
+#endif
     f->hist.valid = 0;
     f->hist.have_sample = 0;
     for (i = 0; i < N; i++) {
@@ -425,6 +433,9 @@ static int factor(fnav_ukf_t *f)
     if (chol_upper(f->P, f->U, n) == 0) {
         return 0;
     }
+#if FNAV_UKF_YAW_CARRY
+    f->p_yaw_carry_rad2 = FNAV_R(0.0); /* P is changed below (jitter or reset) */
+#endif
     for (i = 0; i < n; i++) {
         for (j = i + 1; j < n; j++) {
             fnav_real_t sy = FNAV_R(0.5) * (f->P[i][j] + f->P[j][i]);
@@ -527,20 +538,83 @@ static void accumulate6(fnav_real_t S[N][N], fnav_real_t *m, fnav_real_t D[N][N]
 }
 
 /* 3x3 block of C diag(dens^2) C^T dt added to the upper triangle of S at the
- * packed offset o. */
-static void add_rotated_noise(fnav_real_t S[N][N], int o, fnav_mat3_t C, const fnav_real_t dens[3], fnav_real_t dt)
+ * packed offset o; returns the term added to its last diagonal element (o + 2,
+ * o + 2). */
+static fnav_real_t add_rotated_noise(fnav_real_t S[N][N], int o, fnav_mat3_t C, const fnav_real_t dens[3],
+                                     fnav_real_t dt)
 {
     int i, j, k;
+    fnav_real_t q = FNAV_R(0.0);
     for (i = 0; i < 3; i++) {
         for (j = i; j < 3; j++) {
             fnav_real_t s = FNAV_R(0.0);
             for (k = 0; k < 3; k++) {
                 s += C.m[i][k] * C.m[j][k] * dens[k] * dens[k];
             }
-            S[o + i][o + j] += s * dt;
+            q = s * dt;
+            S[o + i][o + j] += q;
         }
     }
+    return q;
 }
+
+#if FNAV_UKF_YAW_CARRY
+/* The yaw variance's prediction as a change of P (fnav_ukf_predict; docs/navigation.md, "The heading's
+ * variance stops growing (corrected)"). Re-formed from the sigma points in float, S_yy loses some
+ * 3 float spacings (ulps) of itself each prediction: the two yaw points come back 2 ulps of their
+ * offset gamma U_yy short through the attitude parameters' round trip (GRP -> quaternion -> GRP),
+ * and a stand's share N^2 dt of a few ulps is absorbed. Here the new S_yy is P_yy plus its change:
+ *   S_yy = P_yy + s_lin + kl sum_{j >= nl} (2 U_yj b_j + b_j^2) + kmm m_y^2 + q,
+ * s_lin the scatter of the points along the columns j < nl (their yaw differences are small and
+ * formed without the offset), b_j the yaw the gyro-bias offset of the attitude column j adds, to
+ * first order in it: with u = U_a,j (the column's attitude rows) and r = A_g U_bg,j (predict_linear's
+ * A_g, bias_maps, as the closed form's columns), the point's difference is the GRP composition of
+ * the offset gamma u with the rotation gamma r, whose part odd in the sign of the point is, to first
+ * order in r, gamma (u + (1 - gamma^2 |u|^2 / 16) r + gamma^2 (u . r) u / 8) (from the MRP
+ * composition rule with p = 4 MRP; the even part, gamma^2 (u x r) / 2, enters the mean and the
+ * scatter at second order), so b_j = (1 - gamma^2 |u|^2 / 16) r_y + gamma^2 (u . r) u_y / 8;
+ * kl = 2 Wi gamma^2, q the gyro noise's share. In exact arithmetic P_yy = sum_j U_yj^2 and this is
+ * the re-formed value to first order in the bias offset. The sum is compensated across
+ * predictions: the rounding of P_yy + t (TwoSum, exact) is kept in f->p_yaw_carry_rad2 and added to
+ * the next change, otherwise a constant share on a variance with a constant ulp rounds the same
+ * way every time (2.63 ulps -> 3, 0.53 -> 1). Not applied (the re-formed value kept, the
+ * remainder dropped) when an attitude point may pass 180 degrees (gamma^2 trace P_aa >= 16, the
+ * GRP of 180 degrees being 4: the round trip folds such a point) or when P_yy + t is not
+ * positive. Returns the remainder to keep; m: the mean of the differences; G: the bias maps (NULL
+ * without the biases). */
+static fnav_real_t yaw_change(fnav_ukf_t *f, fnav_real_t s_lin, const fnav_real_t *m, fnav_real_t kmm, fnav_real_t q,
+                              const fnav_real_t (*G)[3])
+{
+    const int n = f->n_act, nl = f->n_lin, y = n - 1, oa = f->pos[FNAV_UKF_A], obg = f->pos[FNAV_UKF_BG];
+    const fnav_real_t kl = FNAV_R(2.0) * f->wi * f->gamma * f->gamma, p = f->P[y][y];
+    fnav_real_t ch = FNAV_R(0.0), t, v, bb;
+    int jj;
+    if (!(f->gamma * f->gamma * (f->P[oa][oa] + f->P[oa + 1][oa + 1] + p) < FNAV_R(16.0))) {
+        return FNAV_R(0.0);
+    }
+    if (G != NULL) {
+        const fnav_real_t g16 = f->gamma * f->gamma * FNAV_R(0.0625), g8 = g16 + g16;
+        for (jj = nl; jj < n; jj++) {
+            const fnav_real_t u0 = f->U[obg][jj], u1 = f->U[obg + 1][jj], u2 = f->U[obg + 2][jj];
+            const fnav_real_t ax = f->U[oa][jj], ay = f->U[oa + 1][jj], az = f->U[y][jj];
+            const fnav_real_t bx = G[6][0] * u0 + G[7][0] * u1 + G[8][0] * u2;
+            const fnav_real_t by = G[6][1] * u0 + G[7][1] * u1 + G[8][1] * u2;
+            const fnav_real_t bz = G[6][2] * u0 + G[7][2] * u1 + G[8][2] * u2;
+            const fnav_real_t b = (FNAV_R(1.0) - g16 * (ax * ax + ay * ay + az * az)) * bz +
+                                  g8 * (ax * bx + ay * by + az * bz) * az;
+            ch += (az + az + b) * b;
+        }
+    }
+    t = s_lin + kl * ch + kmm * m[y] * m[y] + q + f->p_yaw_carry_rad2;
+    v = p + t;
+    if (!(v > FNAV_R(0.0))) {
+        return FNAV_R(0.0);
+    }
+    f->S[y][y] = v;
+    bb = v - p; /* TwoSum: v + the result = p + t exactly */
+    return (p - (v - bb)) + (t - bb);
+}
+#endif
 
 /* P = the upper triangle of A (from the diagonal on), mirrored: row i by
  * pointer, column i by row pointer. Inlined at both uses (a call cost the
@@ -621,6 +695,11 @@ static inline FNAV_ALWAYS_INLINE void guard_cov_r2(fnav_ukf_t *f, fnav_real_t r2
             f->P[i][i] = mx * mx;
             f->Pxs[i] *= k;
         }
+#if FNAV_UKF_YAW_CARRY
+        if (i == n - 1) {
+            f->p_yaw_carry_rad2 = FNAV_R(0.0); /* the yaw (packed last) was reset or clamped */
+        }
+#endif
         f->health.cov_guard++;
     }
 }
@@ -973,6 +1052,9 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
     fnav_real_t m[N];
     const fnav_real_t *cb, *qb;
     fnav_real_t kmm, g, chk = FNAV_R(0.0);
+#if FNAV_UKF_YAW_CARRY
+    fnav_real_t s_lin = FNAV_R(0.0), carry;
+#endif
     int n, nl, i, j, jj, s, fr, ov, op, oa, obg, oba;
     if (f == NULL) {
         return FNAV_E_ARG;
@@ -1066,9 +1148,17 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
      * formed in a row of f->Hm (free during the prediction) and a pair at a
      * time into S */
     if (c->closed_form) {
+#if FNAV_UKF_YAW_CARRY
+        s_lin = f->S[n - 1][n - 1]; /* the yaw's scatter of the columns j < nl (yaw_change) */
+#endif
         sigma_att(f, &inc, &x0, q0inv, dt_s);
     }
     for (jj = 0; jj < n && !c->closed_form; jj++) {
+#if FNAV_UKF_YAW_CARRY
+        if (jj == nl) {
+            s_lin = f->S[n - 1][n - 1]; /* as above, before the attitude columns */
+        }
+#endif
         for (s = 0; s < 2; s++) {
             fnav_real_t *d = f->Hm[s];
             g = s == 0 ? f->gamma : -f->gamma;
@@ -1117,11 +1207,24 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
             chk += *si++; /* one check of the sum below */
         }
     }
+#if FNAV_UKF_YAW_CARRY
+    if (obg >= 0 && !c->closed_form) {
+        bias_maps(f, &inc, dt_s, f->K); /* predict_linear did not run (yaw_change, settle_predict) */
+    }
     {
         fnav_mat3_t C = fnav_quat_to_dcm(x0.q_nb);
-        add_rotated_noise(f->S, ov, C, c->accel_noise_mps2_rthz, dt_s);
-        add_rotated_noise(f->S, oa, C, c->gyro_noise_rps_rthz, dt_s);
+        fnav_real_t q;
+        (void)add_rotated_noise(f->S, ov, C, c->accel_noise_mps2_rthz, dt_s);
+        q = add_rotated_noise(f->S, oa, C, c->gyro_noise_rps_rthz, dt_s);
+        carry = yaw_change(f, s_lin, m, kmm, q, obg >= 0 ? (const fnav_real_t(*)[3])f->K : NULL);
     }
+#else
+    {
+        fnav_mat3_t C = fnav_quat_to_dcm(x0.q_nb);
+        (void)add_rotated_noise(f->S, ov, C, c->accel_noise_mps2_rthz, dt_s);
+        (void)add_rotated_noise(f->S, oa, C, c->gyro_noise_rps_rthz, dt_s);
+    }
+#endif
     for (i = 0; i < 3; i++) {
         if (c->bias_model == FNAV_BIAS_AR1) {
             f->S[obg + i][obg + i] += qb[i];
@@ -1154,9 +1257,11 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
          * less gravity's (the mean's second-order shift left out) */
         fnav_vec3_t dvn = fnav_vec3_sub(vc, f->vel_mps);
         dvn.v[2] -= c->strapdown.gravity_mps2 * dt_s;
+#if !FNAV_UKF_YAW_CARRY
         if (obg >= 0 && !(c->closed_form && nl > 0)) {
             bias_maps(f, &inc, dt_s, f->K); /* predict_linear did not run */
         }
+#endif
         settle_predict(f, dvn, (const fnav_real_t(*)[3])f->K, dt_s);
     }
     f->q_nb = x0.q_nb;
@@ -1167,6 +1272,9 @@ fnav_status_t fnav_ukf_predict(fnav_ukf_t *f, fnav_vec3_t gyro_rps, fnav_vec3_t 
         f->ba_mps2.v[i] = f->ba0_mps2.v[i] + cb[3 + i] * (f->ba_mps2.v[i] - f->ba0_mps2.v[i]);
     }
     mirror_upper(f->P, f->S, n);
+#if FNAV_UKF_YAW_CARRY
+    f->p_yaw_carry_rad2 = carry;
+#endif
     guard_cov(f);
     fnav_strapdown_hist_push(&f->hist, &inc);
     f->health.predicts++;

@@ -118,6 +118,12 @@
 
 #include "fnav_strapdown.h"
 
+/** 1: the prediction forms the yaw variance as its change with the rounding remainder carried
+ *  (fnav_ukf.c, yaw_change; docs/navigation.md, "The heading's variance stops growing"). It
+ *  compensates float32 rounding, so it is on in the float build only: in double the round trip it
+ *  replaces loses some 1e-16 of the variance, and the double build stays the exact reference. */
+#define FNAV_UKF_YAW_CARRY (!FNAV_USE_DOUBLE)
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -220,6 +226,11 @@ typedef struct {
     fnav_real_t settle_var;    /**< its variance Pss, (m/s)^2 */
     fnav_real_t settle_dt_s;   /**< interval of the cached decay (0: none) */
     fnav_real_t settle_c;      /**< cached exp(-dt/settle_tau_s) */
+#if FNAV_UKF_YAW_CARRY
+    fnav_real_t p_yaw_carry_rad2; /**< yaw variance's rounding remainder, rad^2: the part of the last
+                                       prediction's change of P's yaw entry that rounding left out, added
+                                       to the next one (fnav_ukf.c, yaw_change); 0 whenever P is set */
+#endif
     fnav_real_t Pxs[FNAV_UKF_NMAX]; /**< cross-covariance of the packed states with the settling */
     fnav_real_t P[FNAV_UKF_NMAX][FNAV_UKF_NMAX];  /**< covariance of the active states, packed in the
                                                        order of act[] (use fnav_ukf_cov()) */
