@@ -118,7 +118,7 @@ fi
 
 # docs/firmware.md's object sizes against sizeof on the target (nm -S of a
 # probe object), with the firmware's options and with the harness defaults
-# (the filter's 11,632 bytes with the defaults, not a stale 11,016)
+# (the filter's 11,640 bytes with the defaults on the target, not a stale 11,632)
 cat >"$T/sz.c" <<'EOF'
 #include "footnav/fnav_nav.h"
 #include "footnav/fnav_allan.h"
