@@ -92,8 +92,9 @@ if [ -n "${HARNESS:-}" ] && [ -x "$HARNESS" ]; then
     mkdir -p "$T/g/vectors/nav" "$T/g/bin" "$T/g/build/double"
     cp vectors/nav/make_golden.sh "$T/g/vectors/nav/"
     printf 'bin/harness:\nbuild/double/harness:\n' >"$T/g/Makefile"
-    ln -s "$HARNESS" "$T/g/bin/harness"
-    ln -s "$HARNESS" "$T/g/build/double/harness"
+    case "$HARNESS" in /*) HA="$HARNESS" ;; *) HA="$PWD/$HARNESS" ;; esac # a link to a relative path would dangle
+    ln -s "$HA" "$T/g/bin/harness"
+    ln -s "$HA" "$T/g/build/double/harness"
     expect_exit 1 "make_golden.sh without the shared data fails" \
         env FNAV_DATA_DIR="$T/nowhere" sh "$T/g/vectors/nav/make_golden.sh"
     expect_err "set FNAV_DATA_DIR" "what to do said"
