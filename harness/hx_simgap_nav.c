@@ -1775,6 +1775,23 @@ static const char *nav_cmp_why(const sg_nav_t *nv, const sg_cmp_t *cc)
     return sg_cmp_why(cc);
 }
 
+/* Of the accepted candidates cand[idx[0..n-1]], sorted by held-out z (the
+ * best first), the one to select, as its position in idx: within one z of
+ * the best, the fewest parameters win (two effects that explain the same
+ * innovations are not told apart by a fraction of a sigma), the higher z
+ * among as few. Every step of the forward selection uses it
+ * (docs/simgap.md, section 4). */
+static int parsimony_pick(const navcand_t *cand, const int *idx, int n)
+{
+    int b = 0, k;
+    for (k = 1; k < n; k++) {
+        if (cand[idx[k]].z_hold >= cand[idx[0]].z_hold - 1.0 && cand[idx[k]].npar < cand[idx[b]].npar) {
+            b = k;
+        }
+    }
+    return b;
+}
+
 int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_size)
 {
     sg_nav_t *nv = (sg_nav_t *)calloc(1, sizeof *nv);
@@ -2151,17 +2168,8 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                 order[k2] = i;
             }
         }
-        /* parsimony: within one z of the best, the fewest parameters win
-         * (two effects that explain the same innovations are not told apart
-         * by a fraction of a sigma) */
         if (nord > 1) {
-            int b0 = 0, k3;
-            for (k3 = 1; k3 < nord; k3++) {
-                const navcand_t *x = &st->cand[order[k3]], *y = &st->cand[order[b0]];
-                if (x->z_hold >= st->cand[order[0]].z_hold - 1.0 && x->npar < y->npar) {
-                    b0 = k3;
-                }
-            }
+            const int b0 = parsimony_pick(st->cand, order, nord);
             if (b0 != 0) {
                 int t = order[b0];
                 memmove(order + 1, order, (size_t)b0 * sizeof *order);
@@ -2212,12 +2220,13 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                     nv->sel[0].id != FNAV_EFFECT_QUANT;
              i++) {
             navstep_t *s2 = &nv->step[i];
-            int bi = -1, m2;
+            int bi, m2;
             memset(s2, 0, sizeof *s2);
             s2->selected = -1;
             /* no twins are run before a later step: its held-out and fit G
              * are not known (null in the JSON, not 0) */
             s2->G_hold_before = s2->G_fit_before = (double)NAN;
+            int ord2[3], n2 = 0;
             for (f = 0; f < 3; f++) {
                 navcand_t cd;
                 int used = 0;
@@ -2229,16 +2238,22 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                 }
                 if (fit_family(nv, &r->segs, &rw, fr, t_split, t_hold, &nv->sel[0], fams[f], &cd) == 0 && cd.npar > 0) {
                     s2->cand[s2->ncand] = cd;
-                    if (cd.dQ >= 10.83 && cd.z_hold > zacc && (bi < 0 || cd.z_hold > s2->cand[bi].z_hold)) {
-                        bi = s2->ncand;
+                    if (cd.dQ >= 10.83 && cd.z_hold > zacc) { /* accepted, as in the first step */
+                        int k2 = n2++;
+                        while (k2 > 0 && s2->cand[ord2[k2 - 1]].z_hold < cd.z_hold) {
+                            ord2[k2] = ord2[k2 - 1];
+                            k2--;
+                        }
+                        ord2[k2] = s2->ncand;
                     }
                     s2->ncand++;
                 }
             }
             nv->nsteps = i + 1;
-            if (bi < 0) {
+            if (n2 == 0) {
                 break;
             }
+            bi = ord2[parsimony_pick(s2->cand, ord2, n2)];
             s2->selected = bi;
             nv->sel[nv->nsel] = s2->cand[bi];
             nv->sel_expl[nv->nsel] = s2->cand[bi].expl;
