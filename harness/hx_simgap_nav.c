@@ -2220,13 +2220,12 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                     nv->sel[0].id != FNAV_EFFECT_QUANT;
              i++) {
             navstep_t *s2 = &nv->step[i];
-            int bi, m2;
+            int bi, m2, ord2[3], n2 = 0; /* ord2: the accepted of the three families, by held-out z */
             memset(s2, 0, sizeof *s2);
             s2->selected = -1;
             /* no twins are run before a later step: its held-out and fit G
              * are not known (null in the JSON, not 0) */
             s2->G_hold_before = s2->G_fit_before = (double)NAN;
-            int ord2[3], n2 = 0;
             for (f = 0; f < 3; f++) {
                 navcand_t cd;
                 int used = 0;

@@ -529,9 +529,10 @@ static void test_cm_systick_ns(void **state)
 
 /* fnav_cm_ms_of_ns() (fnav_cm_time.h), the STATUS frame's uptime without a
  * 64-bit division, against C's 64-bit division: both sides of each
- * millisecond edge (also past 2^32 ms, where uptime_ms wraps), of each digit
- * of the long division (y = ns >> 6 at 2^14, 2^32 and their multiples),
- * the extremes, and random values of every magnitude and sign */
+ * millisecond edge (also past 2^32 ms, where uptime_ms wraps), of every
+ * power of two of y = ns >> 6 up to 2^57 (among them the long division's
+ * digit edges 2^14 and 2^32), the extremes, and random values of every
+ * magnitude and sign */
 static void check_ms_of_ns(int64_t ns)
 {
     if (fnav_cm_ms_of_ns(ns) != ns / 1000000) {

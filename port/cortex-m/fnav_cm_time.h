@@ -233,7 +233,7 @@ static inline int64_t fnav_cm_systick_ns(const fnav_cm_ns_scale_t *s, uint64_t m
  *  divisions only: on the Cortex-M4 a 64-bit `/` is a call to
  *  __aeabi_ldivmod, some hundred instructions. 10^6 = 2^6 15625, and for
  *  x >= 0 floor(floor(x / 2^6) / 15625) = floor(x / 10^6), so the magnitude
- *  is shifted by 6 (y < 2^58) and divided by 15625 (< 2^14) by long division
+ *  is shifted by 6 (y <= 2^57) and divided by 15625 (< 2^14) by long division
  *  in three digits of y: its high 32 bits, then 18 and 14 bits of its low
  *  word. Each partial dividend is the remainder (< 15625 < 2^14) shifted
  *  over the next digit, below 2^32; each digit of the quotient is below the
