@@ -191,10 +191,10 @@ static void test_grp(void **state)
 
 /* Run two filters side by side for 200 steps (a ZUPT every 50): filter a
  * with the closed form (a_closed = 1) or the full sigma points (0), filter b
- * with the full sigma points, b's start with the accelerometer bias x moved
- * by ulps_b float spacings (fnav_nextafter below; 0: the same start), and
- * return the largest difference of the covariance, relative to
- * sqrt(P_ii P_jj), and of position and velocity (m, m/s). */
+ * likewise by b_closed, b's start with the accelerometer bias x moved by the
+ * fraction rel_b of itself (0: the same start), and return the largest
+ * difference of the covariance, relative to sqrt(P_ii P_jj), and of
+ * position and velocity (m, m/s). */
 static void run_pair(int bias_model, fnav_real_t bg_sd_rps, int settle, int a_closed, int b_closed, double rel_b,
                      double *dcov, double *dstate)
 {
@@ -202,7 +202,7 @@ static void run_pair(int bias_model, fnav_real_t bg_sd_rps, int settle, int a_cl
     fnav_ukf_config_t c = fnav_ukf_config_default;
     fnav_ukf_init_sd_t sd = fnav_test_ukf_sd_default();
     fnav_quat_t q0 = fnav_quat_from_euler(FNAV_R(0.2), FNAV_R(-0.3), FNAV_R(0.5));
-    fnav_real_t bax = FNAV_R(0.01);
+    const fnav_real_t bax = (fnav_real_t)(0.01 * (1.0 + rel_b));
     int k, i, j;
     c.lever = 1;
     c.bias_model = bias_model;
@@ -217,7 +217,6 @@ static void run_pair(int bias_model, fnav_real_t bg_sd_rps, int settle, int a_cl
     assert_int_equal(fnav_ukf_start(&a, q0, fnav_vec3(FNAV_R(0.001), FNAV_R(0.0), FNAV_R(-0.002)),
                                     fnav_vec3(FNAV_R(0.01), FNAV_R(0.0), FNAV_R(0.0)), &sd),
                      FNAV_OK);
-    bax = (fnav_real_t)(0.01 * (1.0 + rel_b));
     assert_int_equal(fnav_ukf_start(&b, q0, fnav_vec3(FNAV_R(0.001), FNAV_R(0.0), FNAV_R(-0.002)),
                                     fnav_vec3(bax, FNAV_R(0.0), FNAV_R(0.0)), &sd),
                      FNAV_OK);
@@ -352,7 +351,6 @@ static void test_closed_form_equivalence(void **state)
     assert_true(ds_small < ds_big / 30.0);   /* and the mean shift with e^2 */
 #endif
 }
-
 
 /* The heading's variance in a level stand (docs/navigation.md, "The
  * heading's variance stops growing (corrected)"): with the bias model off
