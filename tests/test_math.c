@@ -460,6 +460,60 @@ static void test_ns_to_us_u32(void **state)
     }
 }
 
+/* fnav_ns_to_ms_u32 (the Cortex-M port's STATUS uptime; fnav_div_i64_u32
+ * with a shift), against C's 64-bit division modulo 2^32: both sides of
+ * each millisecond edge (also past 2^32 ms, where uptime_ms wraps), of
+ * every power of two of y = ns >> 6 up to 2^57 (among them the long
+ * division's digit edges 2^16 and 2^32), the extremes, and random values
+ * of every magnitude and sign */
+static void check_ms_of_ns(int64_t ns)
+{
+    if (fnav_ns_to_ms_u32(ns) != (uint32_t)(ns / 1000000)) {
+        fail_msg("ns %lld: %lu, the division %lu", (long long)ns, (unsigned long)fnav_ns_to_ms_u32(ns),
+                 (unsigned long)(uint32_t)(ns / 1000000));
+    }
+}
+
+static void test_ns_to_ms_u32(void **state)
+{
+    static const int64_t ms[] = {0, 1, 2, 999, 1000, 65535, 65536, 4294967295LL, 4294967296LL, 4294967297LL,
+                                 1099511627776LL, 9223372036854LL};
+    uint64_t r = UINT64_C(0x9e3779b97f4a7c15);
+    size_t i;
+    int k, d;
+    (void)state;
+    for (i = 0; i < sizeof ms / sizeof ms[0]; i++) {
+        for (d = -2; d <= 2; d++) {
+            const int64_t ns = ms[i] * 1000000 + d;
+            check_ms_of_ns(ns);
+            check_ms_of_ns(-ns);
+        }
+    }
+    for (k = 0; k < 58; k++) { /* y = 2^k - 1, 2^k, 2^k + 1 (every digit edge among them) */
+        for (d = -1; d <= 1; d++) {
+            const int64_t y = (int64_t)(UINT64_C(1) << k) + d;
+            int e;
+            for (e = 0; e < 64 && y >= 0 && y < (INT64_C(1) << 57); e += 21) { /* shifted out: none, some, all */
+                check_ms_of_ns(y * 64 + e); /* y < 2^57: no overflow */
+                check_ms_of_ns(-(y * 64 + e));
+            }
+        }
+    }
+    check_ms_of_ns(INT64_MAX);
+    check_ms_of_ns(INT64_MIN);
+    check_ms_of_ns(INT64_MIN + 1);
+    assert_true(fnav_ns_to_ms_u32(INT64_MIN) == (uint32_t)(INT64_MIN / 1000000));
+    assert_int_equal(fnav_ns_to_ms_u32(INT64_C(4294967296000000)), 0u); /* 2^32 ms: uptime_ms wraps */
+    for (i = 0; i < 2000000u; i++) {
+        uint64_t v;
+        r ^= r << 13; /* xorshift64 (Marsaglia 2003) */
+        r ^= r >> 7;
+        r ^= r << 17;
+        v = r >> (r % 61u); /* every magnitude, 2^3 .. 2^64 */
+        check_ms_of_ns((int64_t)v);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -475,6 +529,7 @@ int main(void)
         cmocka_unit_test(test_one_minus_exp_neg),
         cmocka_unit_test(test_isfinite),
         cmocka_unit_test(test_ns_to_us_u32),
+        cmocka_unit_test(test_ns_to_ms_u32),
         cmocka_unit_test(test_i64_to_real),
     };
     return cmocka_run_group_tests_name("math", tests, NULL, NULL);

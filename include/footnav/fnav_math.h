@@ -406,26 +406,42 @@ static inline fnav_real_t fnav_wrap_pi(fnav_real_t a)
     return a;
 }
 
-/** Microseconds of a time in ns modulo 2^32: (uint32_t)(t_ns / 1000), C99's
- *  division (truncated toward zero), the same bits for every int64_t
- *  (tests/test_math.c, test_ns_to_us_u32), with three 32-bit divisions by
- *  a constant instead of a 64-bit division (a call to __aeabi_ldivmod on
- *  the Cortex-M4F, once per sample in the stance detector). Long division
- *  of |t_ns| by 1000: its high word (the quotient's bits above 32 are not
- *  needed, only the remainder), then the low word in two 16-bit digits,
- *  each step below 1000 * 2^16; a negative time's quotient is the negated
- *  one, modulo 2^32. Always inlined: at -Os a call cost 7 more
- *  instructions and 8 more bytes than the copy (make firmware-bench). */
+/** (uint32_t)(t / (2^shift c)), C99's division (truncated toward zero)
+ *  modulo 2^32, the same bits for every int64_t, with three 32-bit
+ *  divisions by c instead of a 64-bit division (a call to __aeabi_ldivmod
+ *  on the Cortex-M4F). Requires c < 2^16 and shift < 64; with constant
+ *  arguments (the wrappers below) the divisions are by a constant. For
+ *  m = |t| >> shift, floor(m / c) = floor(|t| / (2^shift c)); long division
+ *  of m by c: its high word (the quotient's bits above 32 are not needed,
+ *  only the remainder), then the low word in two 16-bit digits, each step
+ *  below c 2^16 < 2^32; a negative time's quotient is the negated one,
+ *  modulo 2^32. Always inlined: at -Os a call cost 7 more instructions and
+ *  8 more bytes than the copy in the stance detector (make firmware-bench). */
+static inline FNAV_ALWAYS_INLINE uint32_t fnav_div_i64_u32(int64_t t, unsigned shift, uint32_t c)
+{
+    const uint64_t m = (t < 0 ? 0u - (uint64_t)t : (uint64_t)t) >> shift; /* |t|, INT64_MIN too */
+    const uint32_t hi = (uint32_t)(m >> 32), lo = (uint32_t)m;
+    uint32_t x = ((hi % c) << 16) | (lo >> 16);
+    const uint32_t q1 = x / c;
+    uint32_t q;
+    x = ((x - q1 * c) << 16) | (lo & 0xffffu);
+    q = (q1 << 16) | (x / c); /* m / c modulo 2^32 */
+    return t < 0 ? 0u - q : q;
+}
+
+/** Microseconds of a time in ns modulo 2^32: (uint32_t)(t_ns / 1000), once
+ *  per sample in the stance detector (tests/test_math.c, test_ns_to_us_u32). */
 static inline FNAV_ALWAYS_INLINE uint32_t fnav_ns_to_us_u32(int64_t t_ns)
 {
-    const uint64_t m = t_ns < 0 ? 0u - (uint64_t)t_ns : (uint64_t)t_ns; /* |t_ns|, INT64_MIN too */
-    const uint32_t hi = (uint32_t)(m >> 32), lo = (uint32_t)m;
-    uint32_t x = ((hi % 1000u) << 16) | (lo >> 16);
-    const uint32_t q1 = x / 1000u;
-    uint32_t q;
-    x = ((x - q1 * 1000u) << 16) | (lo & 0xffffu);
-    q = (q1 << 16) | (x / 1000u); /* |t_ns| / 1000 modulo 2^32 */
-    return t_ns < 0 ? 0u - q : q;
+    return fnav_div_i64_u32(t_ns, 0u, 1000u);
+}
+
+/** Milliseconds of a time in ns modulo 2^32: (uint32_t)(t_ns / 1000000),
+ *  10^6 = 2^6 15625 (the Cortex-M port's STATUS uptime; tests/test_math.c,
+ *  test_ns_to_ms_u32). */
+static inline FNAV_ALWAYS_INLINE uint32_t fnav_ns_to_ms_u32(int64_t t_ns)
+{
+    return fnav_div_i64_u32(t_ns, 6u, 15625u);
 }
 
 /** (fnav_real_t)x, the same bits for every int64_t, through int32_t when x

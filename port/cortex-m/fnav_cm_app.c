@@ -1,7 +1,7 @@
 /* The reference firmware application (see fnav_cm_app.h). */
 #include "fnav_cm_app.h"
 #include "fnav_cm_prof.h"
-#include "fnav_cm_time.h"
+#include "footnav/fnav_math.h"
 
 const fnav_cm_app_config_t fnav_cm_app_config_default = {
     FNAV_R(400.0), /* rate_hz */
@@ -107,7 +107,7 @@ void fnav_cm_app_process(fnav_cm_app_t *app, const fnav_sample_t *s)
         ws.overruns = app->port_ctx.ring.overruns;
         ws.est_errors = app->est_errors;
         ws.tx_dropped = app->port_ctx.tx_dropped;
-        ws.uptime_ms = (uint32_t)fnav_cm_ms_of_ns(fnav_port_now_ns(&app->port)); /* wraps */
+        ws.uptime_ms = fnav_ns_to_ms_u32(fnav_port_now_ns(&app->port)); /* wraps */
         (void)fnav_cm_port_send_status(&app->port_ctx, &ws);
     }
 }

@@ -229,28 +229,4 @@ static inline int64_t fnav_cm_systick_ns(const fnav_cm_ns_scale_t *s, uint64_t m
     return (int64_t)ms * 1000000 + fnav_cm_ns_of_ticks(s, reload - cvr);
 }
 
-/** @p ns / 1000000 as C divides (truncated toward zero), with 32-bit
- *  divisions only: on the Cortex-M4 a 64-bit `/` is a call to
- *  __aeabi_ldivmod, some hundred instructions. 10^6 = 2^6 15625, and for
- *  x >= 0 floor(floor(x / 2^6) / 15625) = floor(x / 10^6), so the magnitude
- *  is shifted by 6 (y <= 2^57) and divided by 15625 (< 2^14) by long division
- *  in three digits of y: its high 32 bits, then 18 and 14 bits of its low
- *  word. Each partial dividend is the remainder (< 15625 < 2^14) shifted
- *  over the next digit, below 2^32; each digit of the quotient is below the
- *  digit's width, so they do not overlap. The sign is restored after (the
- *  magnitude of INT64_MIN, 2^63, is a uint64_t). tests/test_port.c,
- *  test_cm_ms_of_ns, against the 64-bit division. */
-static inline int64_t fnav_cm_ms_of_ns(int64_t ns)
-{
-    const uint64_t x = ns < 0 ? (uint64_t)0 - (uint64_t)ns : (uint64_t)ns;
-    const uint64_t y = x >> 6;
-    const uint32_t hi = (uint32_t)(y >> 32), lo = (uint32_t)y;
-    uint64_t q = (uint64_t)(hi / 15625u) << 32;
-    uint32_t d = ((hi % 15625u) << 18) | (lo >> 14);
-    q |= (uint64_t)(d / 15625u) << 14;
-    d = ((d % 15625u) << 14) | (lo & 0x3fffu);
-    q |= d / 15625u;
-    return ns < 0 ? -(int64_t)q : (int64_t)q;
-}
-
 #endif /* FNAV_CM_TIME_H */
