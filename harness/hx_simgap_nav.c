@@ -1775,6 +1775,17 @@ static const char *nav_cmp_why(const sg_nav_t *nv, const sg_cmp_t *cc)
     return sg_cmp_why(cc);
 }
 
+/* Insert candidate i into idx[0..n-1], kept sorted by held-out z, the best
+ * first (idx has room for n + 1). */
+static void add_by_z(const navcand_t *cand, int *idx, int n, int i)
+{
+    while (n > 0 && cand[idx[n - 1]].z_hold < cand[i].z_hold) {
+        idx[n] = idx[n - 1];
+        n--;
+    }
+    idx[n] = i;
+}
+
 /* Of the accepted candidates cand[idx[0..n-1]], sorted by held-out z (the
  * best first), the one to select, as its position in idx: within one z of
  * the best, the fewest parameters win (two effects that explain the same
@@ -2160,12 +2171,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
             const navcand_t *cd = &st->cand[i];
             int isfam = cd->id != FNAV_EFFECT_SATURATION && cd->id != FNAV_EFFECT_QUANT;
             if ((!isfam || cd->dQ >= 10.83) && cd->z_hold > zacc) {
-                int k2 = nord++;
-                while (k2 > 0 && st->cand[order[k2 - 1]].z_hold < cd->z_hold) {
-                    order[k2] = order[k2 - 1];
-                    k2--;
-                }
-                order[k2] = i;
+                add_by_z(st->cand, order, nord++, i);
             }
         }
         if (nord > 1) {
@@ -2238,12 +2244,7 @@ int sg_nav_diagnose(const hx_log_t *log, sg_result_t *r, char *err, size_t err_s
                 if (fit_family(nv, &r->segs, &rw, fr, t_split, t_hold, &nv->sel[0], fams[f], &cd) == 0 && cd.npar > 0) {
                     s2->cand[s2->ncand] = cd;
                     if (cd.dQ >= 10.83 && cd.z_hold > zacc) { /* accepted, as in the first step */
-                        int k2 = n2++;
-                        while (k2 > 0 && s2->cand[ord2[k2 - 1]].z_hold < cd.z_hold) {
-                            ord2[k2] = ord2[k2 - 1];
-                            k2--;
-                        }
-                        ord2[k2] = s2->ncand;
+                        add_by_z(s2->cand, ord2, n2++, s2->ncand);
                     }
                     s2->ncand++;
                 }
