@@ -594,6 +594,30 @@ static int has_field(const char *head, const char *name)
     return 0;
 }
 
+/* Whether a field of the squeezed header is a time name as the names
+ * reader takes one (hx_name_classify: t, time, timestamp_ms, "Time (s)"). */
+static int has_time_field(const char *head)
+{
+    const char *p = head;
+    while (*p != '\0') {
+        char name[64];
+        hx_name_class_t c;
+        const char *e = p;
+        while (*e != '\0' && *e != ',' && *e != '\t' && *e != ';') {
+            e++;
+        }
+        if ((size_t)(e - p) < sizeof name) {
+            memcpy(name, p, (size_t)(e - p));
+            name[e - p] = '\0';
+            if (hx_name_classify(name, &c) == HX_NAME_MATCH && c.key == 0) {
+                return 1;
+            }
+        }
+        p = *e != '\0' ? e + 1 : e;
+    }
+    return 0;
+}
+
 /* The OpenShoe GX2 logger's preamble: a line that begins with "Inertial
  * data", or the "Header:" line naming a_x [g]. A mention of either inside
  * another line (a CSV's comment "# from a GX2 log, a_x [g] x 9.80665") is
@@ -742,7 +766,11 @@ static hx_format_t detect(const unsigned char *b, size_t n)
             return HX_FMT_PYSHOE;
         }
         if (has_field(head, "gyro_x_dps") && has_field(head, "acc_x_g")) {
-            return HX_FMT_ADIS;
+            /* the data set's names, but with a time column beside them
+             * ("timestamp_ms,acc_x_g,...,gyro_z_dps"): another logger's, read
+             * by its stamps with the names matched (the adis reader has no
+             * time and would read it at 100 Hz; test_bad_input.sh) */
+            return has_time_field(head) ? HX_FMT_CSV : HX_FMT_ADIS;
         }
         if (has_field(head, "sample") && has_field(head, "f_x_mps2") && has_field(head, "w_x_radps")) {
             return HX_FMT_SQUARE2;

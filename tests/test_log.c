@@ -1771,6 +1771,14 @@ static void test_detect_variants(void **state)
           HX_FMT_CSV, 0.5, 0.3 },
         { "gyro_x_dps  gyro_y_dps  gyro_z_dps  acc_x_g  acc_y_g  acc_z_g\n1 2 3 0.5 0 -1\n1 2 3 0.5 0 -1\n",
           HX_FMT_ADIS, 0.5 * 9.80665, 3.0 * 0.017453292519943295 },
+        /* the adis names with a time column beside them: another logger's
+         * CSV, read by its stamps with the names matched (the adis reader,
+         * which has no time, read them at 100 Hz) */
+        { "timestamp_ms,acc_x_g,acc_y_g,acc_z_g,gyro_x_dps,gyro_y_dps,gyro_z_dps\n0,0.5,0,-1,1,2,3\n5,0.5,0,-1,1,2,3\n",
+          HX_FMT_CSV, 0.5 * 9.80665, 3.0 * 0.017453292519943295 },
+        { "Time (s)\tgyro_x_dps\tgyro_y_dps\tgyro_z_dps\tacc_x_g\tacc_y_g\tacc_z_g\n0\t1\t2\t3\t0.5\t0\t-1\n"
+          "0.005\t1\t2\t3\t0.5\t0\t-1\n",
+          HX_FMT_CSV, 0.5 * 9.80665, 3.0 * 0.017453292519943295 },
     };
     size_t i;
     (void)state;
