@@ -80,6 +80,8 @@ struct hx_reader {
     int missing_col;            /* setup_header: the column not found (0 t ... 6 gz), else -1 */
     int nfields;                /* fields of the line last split */
     int hdr_fields;             /* fields of the header line (at most HX_MAX_COLS); 0: no header */
+    char time_beside[64];       /* adis, square2: a time-named column the format does not read, "" none */
+    hx_name_unit_t time_beside_unit; /* its unit as named (HX_UNIT_NONE: none named) */
     int last_line;              /* next_text_fields is parsing a last line without a newline */
     long short_rows;            /* data rows with fewer fields than the header */
     long short_first;           /* the line of the first of them */
@@ -954,6 +956,48 @@ static void dup_names_warn(hx_reader_t *r, const char *const names[8], char **f,
     }
 }
 
+/* The formats without time stamps (adis; square2, whose counter is read at
+ * a rate): the first column the names reader would take for time
+ * (hx_name_classify: t, timestamp_ms, "Time (s)"), which the format does
+ * not read, kept to be named in a warning with how to read it. */
+static void time_beside(hx_reader_t *r, char **f, int n)
+{
+    int k;
+    r->time_beside[0] = '\0';
+    for (k = 0; k < n; k++) {
+        hx_name_class_t c;
+        char bare[64];
+        hx_name_bare(f[k], bare, sizeof bare);
+        if (k != r->col_t && hx_name_classify(bare, &c) == HX_NAME_MATCH && c.key == 0) {
+            copy_str(r->time_beside, sizeof r->time_beside, bare);
+            r->time_beside_unit = c.unit;
+            return;
+        }
+    }
+}
+
+/* The warning of a time column left unread (time_beside): what is read
+ * instead, and the --from csv that reads the stamps; cols: the format's
+ * channels as --columns gives them, units: theirs as --units gives them
+ * ("" SI). */
+static void time_beside_warn(hx_reader_t *r, const char *fmt, const char *instead, const char *cols, const char *units)
+{
+    const hx_name_unit_t u = r->time_beside_unit;
+    const char *tu = u == HX_UNIT_MS ? "time=ms" : u == HX_UNIT_US ? "time=us" : u == HX_UNIT_NS ? "time=ns" : "";
+    char give[96];
+    if (tu[0] != '\0' || units[0] != '\0') {
+        snprintf(give, sizeof give, " --units %s%s%s", tu, tu[0] != '\0' && units[0] != '\0' ? "," : "", units);
+    } else {
+        give[0] = '\0';
+    }
+    add_warn(r, "%s: the column '%s' is not read: the %s format has no time stamps (%s); to read them, give --from "
+                "csv --columns t=%s,%s%s%s",
+             r->path, r->time_beside, fmt, instead, r->time_beside, cols, give,
+             u != HX_UNIT_NONE ? ""
+             : give[0] != '\0' ? " (and time=ms, us or ns if it is not in s)"
+                               : " (and --units time=ms, us or ns if it is not in s)");
+}
+
 /* A column of the interchange CSV whose name states a unit other than the
  * one it is read in (--columns named it, and --units or the default sets
  * the unit): warned, the first such, with the --units that reads what the
@@ -1082,6 +1126,9 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         if (i < 0) {
             dup_names_warn(r, names, f, n);
             units_named_warn(r, f, n);
+            if (r->meta.format == HX_FMT_ADIS || r->meta.format == HX_FMT_SQUARE2) {
+                time_beside(r, f, n);
+            }
             return 0;
         }
         if (r->meta.format == HX_FMT_CSV && !tried && total <= HX_MAX_COLS && !dc_line && !all_numeric(f, n)) {
@@ -1372,8 +1419,9 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         break;
     }
     case HX_FMT_ADIS: {
-        /* t: looked for, not read (the format has none), to be named below */
-        static const char *const names[8] = { "t", "acc_x_g", "acc_y_g", "acc_z_g",
+        /* a time column beside the names: not read (the format has none),
+         * named below (time_beside) */
+        static const char *const names[8] = { NULL, "acc_x_g", "acc_y_g", "acc_z_g",
                                               "gyro_x_dps", "gyro_y_dps", "gyro_z_dps", NULL };
         r->time_mode = TIME_INDEX;
         m->stamps_made = 1;
@@ -1385,17 +1433,16 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         }
         copy_str(m->sensor, sizeof m->sensor, "ADIS16405");
         copy_str(m->axes, sizeof m->axes, "sensor axes; z down at rest");
-        if (r->col_t >= 0) {
-            /* a time column beside the format's names: said to be left
-             * unread, not ignored under "no time stamps; assuming ... 100
-             * Hz" (a log stamped at 200 Hz would read at 100 without a word) */
-            add_warn(r, "%s: the column 't' is not read: the adis format has no time stamps (%s); to read them, "
-                        "give --from csv --columns t=t,ax=acc_x_g,ay=acc_y_g,az=acc_z_g,gx=gyro_x_dps,"
-                        "gy=gyro_y_dps,gz=gyro_z_dps --units accel=g,gyro=deg/s (and time=ms, us or ns if t is "
-                        "not in s)",
-                     r->path,
-                     rate_hz > 0.0 ? "the --input-rate given is used" : "read at 100 Hz, the ADIS16405 data set's rate");
-            r->col_t = -1;
+        if (r->time_beside[0] != '\0') {
+            /* said to be left unread, not ignored under "no time stamps;
+             * assuming ... 100 Hz" (a log stamped at 200 Hz would read at
+             * 100 without a word); detection reads such a header as the
+             * interchange CSV, so only --from adis comes here */
+            time_beside_warn(r, "adis",
+                             rate_hz > 0.0 ? "the --input-rate given is used"
+                                           : "read at 100 Hz, the ADIS16405 data set's rate",
+                             "ax=acc_x_g,ay=acc_y_g,az=acc_z_g,gx=gyro_x_dps,gy=gyro_y_dps,gz=gyro_z_dps",
+                             "accel=g,gyro=deg/s");
         } else if (!(rate_hz > 0.0)) {
             /* no time stamps: a log of another rate would be read at 100 Hz
              * without a word (warned as the OpenShoe 820 Hz reader warns) */
@@ -1415,7 +1462,13 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         m->has_seq = 1;
         copy_str(m->sensor, sizeof m->sensor, "ZUPT-aided-INS square2");
         copy_str(m->axes, sizeof m->axes, "sensor axes; z down at rest");
-        if (!(rate_hz > 0.0)) {
+        if (r->time_beside[0] != '\0') {
+            /* a time column beside the counter: not read, said (as adis) */
+            time_beside_warn(r, "square2",
+                             rate_hz > 0.0 ? "its counter 'sample' is read at the --input-rate given"
+                                           : "its counter 'sample' is read at 100 Hz, the data set's rate",
+                             "ax=f_x_mps2,ay=f_y_mps2,az=f_z_mps2,gx=w_x_radps,gy=w_y_radps,gz=w_z_radps", "");
+        } else if (!(rate_hz > 0.0)) {
             /* a sample counter, no time: a log of another rate would be
              * read at 100 Hz without a word (warned as for ADIS16405 logs) */
             add_warn(r, "%s: no time stamps; assuming the ZUPT-aided-INS square2 data set rate of 100 Hz (give --input-rate)",

@@ -151,6 +151,19 @@ expect_exit 0 "--from adis on the file with a column t" "$H" info "$T/adis_t.csv
 expect_err "adis_t.csv: the column 't' is not read: the adis format has no time stamps" "--from adis: the time column named"
 expect_err "give --from csv --columns t=t,ax=acc_x_g,ay=acc_y_g,az=acc_z_g,gx=gyro_x_dps,gy=gyro_y_dps,gz=gyro_z_dps --units accel=g,gyro=deg/s" "--from adis: how to read it said"
 expect_out "^rate        100.000 Hz" "--from adis: the data set's rate"
+# any name taken for time is named, not only 't' (the reader looked for 't'
+# alone: timestamp_ms went under "no time stamps; assuming ... 100 Hz"),
+# with the unit its name gives
+expect_exit 0 "--from adis on the file with timestamp_ms" "$H" info "$T/adis_ms.csv" --from adis
+expect_err "adis_ms.csv: the column 'timestamp_ms' is not read: the adis format has no time stamps" "--from adis: timestamp_ms named"
+expect_err "give --from csv --columns t=timestamp_ms,ax=acc_x_g,.* --units time=ms,accel=g,gyro=deg/s$" "--from adis: its ms unit given"
+# the square2 format reads its counter 'sample' at 100 Hz: a time column
+# beside it was not read without a word (a 200 Hz log at half speed)
+awk 'BEGIN { print "t,sample,f_x_mps2,f_y_mps2,f_z_mps2,w_x_radps,w_y_radps,w_z_radps"; for (i = 0; i < 400; i++) printf "%.3f,%d,0,0,-9.8,0.1,0.2,0.3\n", i / 200, i }' >"$T/sq_t.csv"
+expect_exit 0 "info of a square2-named CSV with a time column" "$H" info "$T/sq_t.csv"
+expect_err "sq_t.csv: the column 't' is not read: the square2 format has no time stamps (its counter 'sample' is read at 100 Hz" "square2: the time column named"
+expect_exit 0 "square2: the remedy followed" "$H" info "$T/sq_t.csv" --from csv --columns t=t,ax=f_x_mps2,ay=f_y_mps2,az=f_z_mps2,gx=w_x_radps,gy=w_y_radps,gz=w_z_radps
+expect_out "^rate        200.000 Hz" "square2: the remedy reads the 200 Hz stamps"
 
 # --- an output that cannot be written: the error gives the reason, as
 # convert's and sim's do: not only "cannot write DIR" for replay's --out (a
