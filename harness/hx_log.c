@@ -371,6 +371,134 @@ static int decimal_comma_line(const char *line, char *first, size_t size)
     }
 }
 
+/* n digits at *p as a number (-1 if fewer); *p moves past them */
+static int take_digits(const char **p, int n)
+{
+    int v = 0, i;
+    for (i = 0; i < n; i++) {
+        if (!isdigit((unsigned char)(*p)[i])) {
+            return -1;
+        }
+        v = v * 10 + ((*p)[i] - '0');
+    }
+    *p += n;
+    return v;
+}
+
+/* Days from 1970-01-01 to a proleptic Gregorian date (the civil-from-days
+ * inverse of H. Hinnant's "chrono-compatible low-level date algorithms"). */
+static int64_t days_from_civil(int y, int m, int d)
+{
+    const int64_t yy = (int64_t)y - (m <= 2 ? 1 : 0);
+    const int64_t era = (yy >= 0 ? yy : yy - 399) / 400;
+    const int64_t yoe = yy - era * 400;                                  /* [0, 399] */
+    const int64_t doy = (153 * (m > 2 ? m - 3 : m + 9) + 2) / 5 + d - 1; /* [0, 365] */
+    const int64_t doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;           /* [0, 146096] */
+    return era * 146097 + doe - 719468;
+}
+
+/* A date and time as loggers write them (ISO 8601 and its common
+ * relatives): "YYYY-MM-DD hh:mm:ss[.f]" with 'T' or a blank between date
+ * and time, '/' allowed for '-' (year first only: 05/01/2024 is ambiguous),
+ * an optional zone ("Z", "+hh:mm", "+hhmm", "+hh"), or a clock time alone
+ * ("hh:mm:ss[.f]", seconds since midnight). To integer ns since
+ * 1970-01-01T00:00:00Z (the clock alone: since midnight), the fraction
+ * rounded to the ns. 0 ok; 1 not of this shape (a number, say); -4 of
+ * this shape but no date and time (month 13, 25:00:00, a trailing word, a
+ * date without its time: every stamp of a day would be the same); -5 a
+ * year before 1900 or after 2100. */
+static int parse_datetime_ns(const char *s, int64_t *out)
+{
+    static const int mdays[12] = { 31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31 };
+    const char *p = s;
+    int64_t days = 0, sec, ns = 0;
+    int y, mo, d, hh, mi, ss, n = 0, up = 0, dated = 0;
+    if (isdigit((unsigned char)s[0]) && isdigit((unsigned char)s[1]) && s[2] == ':') {
+        /* a clock time alone */
+    } else if (strspn(s, "0123456789") == 4 && (s[4] == '-' || s[4] == '/')) {
+        const char sep = s[4];
+        y = take_digits(&p, 4);
+        p++;
+        mo = take_digits(&p, 2);
+        if (mo < 0 || *p++ != sep) {
+            return -4;
+        }
+        d = take_digits(&p, 2);
+        if (y < 1900 || y > 2100) {
+            return -5; /* the reader's 2^62 ns (146 years) about 1970 */
+        }
+        if (mo < 1 || mo > 12 || d < 1 ||
+            d > mdays[mo - 1] + (mo == 2 && y % 4 == 0 && (y % 100 != 0 || y % 400 == 0))) {
+            return -4;
+        }
+        days = days_from_civil(y, mo, d);
+        dated = 1;
+        if (*p != 'T' && *p != 't' && *p != ' ') {
+            return -4;
+        }
+        p++;
+    } else {
+        return 1;
+    }
+    hh = take_digits(&p, 2);
+    if (hh < 0 || *p++ != ':') {
+        return -4;
+    }
+    mi = take_digits(&p, 2);
+    if (mi < 0 || *p++ != ':') {
+        return -4;
+    }
+    ss = take_digits(&p, 2);
+    if (hh > 23 || mi > 59 || ss < 0 || ss > 59) {
+        return -4;
+    }
+    if (*p == '.' || *p == ',') { /* ISO 8601 allows a decimal comma here */
+        p++;
+        if (!isdigit((unsigned char)*p)) {
+            return -4;
+        }
+        for (; isdigit((unsigned char)*p); p++) {
+            if (n < 9) {
+                ns = ns * 10 + (*p - '0');
+                n++;
+            } else if (n++ == 9) {
+                up = *p >= '5'; /* the tenth digit rounds to the nearest ns */
+            }
+        }
+        for (; n < 9; n++) {
+            ns *= 10;
+        }
+    }
+    sec = days * 86400 + hh * 3600 + mi * 60 + ss;
+    if (*p == 'Z' || *p == 'z') {
+        p++;
+    } else if ((*p == '+' || *p == '-') && dated) {
+        const int sign = *p++ == '-' ? -1 : 1;
+        const int oh = take_digits(&p, 2);
+        int om = 0;
+        if (oh < 0 || oh > 23) {
+            return -4;
+        }
+        if (*p == ':') {
+            p++;
+        }
+        if (*p != '\0') {
+            om = take_digits(&p, 2);
+            if (om < 0 || om > 59) {
+                return -4;
+            }
+        }
+        sec -= sign * (oh * 3600 + om * 60); /* local time minus its offset is UTC */
+    }
+    if (*p != '\0') {
+        return -4;
+    }
+    *out = sec * 1000000000LL + ns + up;
+    return 0;
+}
+
+#define DATETIME_FORM "YYYY-MM-DD hh:mm:ss[.f] with an optional T, Z or +hh:mm; or hh:mm:ss[.f]"
+
 /* Time as text to integer ns, exactly for plain decimals: in seconds
  * (k = 9), ms (6), us (3) or ns (0), 10^k ns to the unit; the point moves
  * in the text, no float (--units time=ns: Unix time in ns to the ns). */
@@ -382,6 +510,10 @@ static int parse_time_ns(const char *s, int k, int64_t *out)
     const char *p = s;
     int neg = 0, digits = 0, frac = 0, extra = 0, up = 0, over = 0;
     int64_t ip = 0, fp = 0;
+    const int dt = parse_datetime_ns(s, out); /* carries its own unit */
+    if (dt <= 0) {
+        return dt;
+    }
     if (*p == '+' || *p == '-') {
         neg = (*p == '-');
         p++;
@@ -842,15 +974,19 @@ int hx_find_col(char **f, int n, const char *name)
     return -1;
 }
 
-/* every field a number: the line is data, not a header */
+/* every field a number or a date and time: the line is data, not a header */
 static int all_numeric(char **f, int n)
 {
     int i;
     for (i = 0; i < n; i++) {
         char *end;
         const char *s = f[i];
+        int64_t t_ns;
         while (*s == ' ' || *s == '\t') {
             s++;
+        }
+        if (parse_datetime_ns(s, &t_ns) == 0) {
+            continue;
         }
         (void)strtod(s, &end);
         if (end == s) {
@@ -1857,8 +1993,10 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     case TIME_COLUMN_S: {
         int prc = parse_time_ns(f[r->col_t], r->layout.time_digits, &t_ns);
         if (prc != 0) {
-            set_err(r, "%s:%ld: time ('%.20s') is %s", r->path, r->stats.lines, f[r->col_t],
+            set_err(r, "%s:%ld: time ('%.40s') is %s", r->path, r->stats.lines, f[r->col_t],
                     prc == -2   ? "NaN or Inf"
+                    : prc == -4 ? "no date and time (read as " DATETIME_FORM ")"
+                    : prc == -5 ? "a date outside the years 1900 to 2100 (the ones read)"
                     : prc == -3 && r->layout.time_digits != 9
                         ? "beyond 9e9 s"
                     : prc == -3 && r->meta.format != HX_FMT_CSV

@@ -60,6 +60,24 @@ const char *hx_name_unit_item(hx_name_unit_t u)
     return ((int)u > 0 && (size_t)u < sizeof items / sizeof items[0]) ? items[u] : NULL;
 }
 
+/* a time zone written after a time column's name, folded to lower case
+ * without blanks: utc, gmt, z, local, or an offset (+02:00, -0700, +2) */
+static int is_zone(const char *u)
+{
+    size_t d;
+    if (strcmp(u, "utc") == 0 || strcmp(u, "gmt") == 0 || strcmp(u, "z") == 0 || strcmp(u, "local") == 0) {
+        return 1;
+    }
+    if ((u[0] == '+' || u[0] == '-') && (d = strspn(u + 1, "0123456789")) >= 1 && d <= 4) {
+        const char *r = u + 1 + d;
+        if (*r == ':' && d <= 2 && strspn(r + 1, "0123456789") == 2) {
+            r += 3;
+        }
+        return *r == '\0';
+    }
+    return 0;
+}
+
 /* 0 time, 1 acceleration, 2 rate: the quantity a unit measures */
 static int unit_quantity(hx_name_unit_t u)
 {
@@ -223,7 +241,7 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
     char buf[128], w[NAME_MAX_TOK][NAME_TOK_LEN];
     const char *s = name, *open;
     size_t len, len0;
-    int n, i, q = -1, ax = -1, key = -1, time_word = 0, unread = 0;
+    int n, i, q = -1, ax = -1, key = -1, time_word = 0, unread = 0, zone = 0;
     hx_name_unit_t unit = HX_UNIT_NONE;
     c->kind = HX_NAME_OTHER;
     c->key = -1;
@@ -266,8 +284,10 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
         u[k] = '\0';
         unit = p == close ? unit_of(u) : HX_UNIT_NONE;
         /* "(raw)", "[counts]", "[deg/h]": no unit we read (a key's name so
-         * is a near miss that says so, rather than no name at all) */
-        unread = unit == HX_UNIT_NONE;
+         * is a near miss that says so, rather than no name at all); a zone,
+         * "Time (UTC)", MetaWear's "time (-07:00)", is none of a unit */
+        zone = unit == HX_UNIT_NONE && p == close && is_zone(u);
+        unread = unit == HX_UNIT_NONE && !zone;
         len = (size_t)(open - buf);
     }
     n = split_words(buf, len, w);
@@ -284,10 +304,11 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
     }
     /* what the words are */
     if (n == 1 && (strcmp(w[0], "t") == 0 || strcmp(w[0], "time") == 0 || strcmp(w[0], "timestamp") == 0 ||
-                   strcmp(w[0], "ts") == 0)) {
+                   strcmp(w[0], "ts") == 0 || strcmp(w[0], "datetime") == 0)) {
         key = 0;
-    } else if (n == 2 && strcmp(w[0], "time") == 0 && strcmp(w[1], "stamp") == 0) {
-        key = 0;
+    } else if (n == 2 && ((strcmp(w[0], "time") == 0 && strcmp(w[1], "stamp") == 0) ||
+                          (strcmp(w[0], "date") == 0 && strcmp(w[1], "time") == 0))) {
+        key = 0; /* "Time Stamp"; "DateTime", "Date Time", date_time: dates and times (docs/log-format.md) */
     } else if (n == 1 && (q = glued(w[0], &ax)) != 0) {
         key = 1 + 3 * (q - 1) + ax;
     } else if (n == 2 && axis_of(w[1]) >= 0 && (in_list(w[0], k_acc_stems) || in_list(w[0], k_gyr_stems))) {
@@ -296,6 +317,9 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
                ((strcmp(w[0], "angular") == 0 && (strcmp(w[1], "velocity") == 0 || strcmp(w[1], "rate") == 0)) ||
                 (strcmp(w[0], "rotation") == 0 && strcmp(w[1], "rate") == 0))) {
         key = 4 + axis_of(w[2]);
+    }
+    if (key > 0 && zone) {
+        unread = 1; /* "ax (UTC)": a zone is a time's */
     }
     if (key >= 0) {
         const int want = key == 0 ? 0 : key <= 3 ? 1 : 2;

@@ -1840,6 +1840,95 @@ static void test_decimal_comma(void **state)
     }
 }
 
+/* Time stamps written as a date and time (ISO 8601 and its relatives) read
+ * to Unix ns: each expected value is Python's
+ * int(datetime(..., tzinfo=timezone.utc).timestamp()) in ns, an independent
+ * calendar (2024-05-01T12:00Z 1714564800 s, 2024-03-01T00:00Z 1709251200,
+ * 2000-02-29T06:30:15Z 951805815, 2100-03-01T00:00Z 4107542400,
+ * 1969-12-31T23:59:59Z -1, 1900-01-01T00:00Z -2208988800, 2100-12-31T23:59:59Z
+ * 4133980799). A shape that is no date and time stops with
+ * the form the reader takes. */
+static void test_datetime_stamps(void **state)
+{
+    static const struct {
+        const char *stamp;
+        int64_t t_ns;
+    } ok[] = {
+        { "2024-05-01 12:00:00.000000", 1714564800000000000LL },
+        { "2024-05-01T12:00:00.0025Z", 1714564800002500000LL },
+        { "2024-05-01t12:00:00.0025z", 1714564800002500000LL },
+        { "2024-05-01T14:00:00.005+02:00", 1714564800005000000LL },
+        { "2024/05/01 14:00:00.0075+0200", 1714564800007500000LL },
+        { "2024-05-01T09:30:00-02:30", 1714564800000000000LL },
+        { "2024-05-01T14:00:00+02", 1714564800000000000LL },
+        /* the tenth decimal rounds to the nearest ns, over the leap day */
+        { "2024-02-29T23:59:59.9999999996Z", 1709251200000000000LL },
+        { "2024-02-29T23:59:59.9999999994Z", 1709251199999999999LL },
+        { "2000-02-29 06:30:15", 951805815000000000LL },
+        { "2100-03-01T00:00:00Z", 4107542400000000000LL }, /* 2100 is no leap year */
+        { "1969-12-31T23:59:59Z", -1000000000LL },
+        { "1900-01-01T00:00:00Z", -2208988800000000000LL },
+        { "2100-12-31T23:59:59.999999999Z", 4133980799999999999LL },
+        { "23:59:59.5", 86399500000000LL },
+        { "00:00:00,25", 250000000LL }, /* ISO's decimal comma, in a ;-separated log */
+    };
+    /* years outside 1900-2100: the reader's 2^62 ns about 1970 span 1824-2116 */
+    static const char *const far = "outside the years 1900 to 2100";
+    static const char *const form = "no date and time (read as YYYY-MM-DD hh:mm:ss";
+    static const struct {
+        const char *stamp, *why;
+    } bad[] = {
+        { "2024-13-01 00:00:00", form },  { "2023-02-29 00:00:00", form }, { "2100-02-29 00:00:00", form },
+        { "2024-05-01", form },           { "2024-05-01 24:00:00", form }, { "2024-05-01 12:60:00", form },
+        { "12:00:00 UTC", form },         { "2024-05-01 12:00", form },    { "2024-05-01 12:00:00.", form },
+        { "2024-05-01 12:00:00+25:00", form }, { "1899-12-31T23:59:59Z", far }, { "2101-01-01 00:00:00", far },
+        { "9999-12-31 23:59:59", far },
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof ok / sizeof ok[0]; i++) {
+        char p[256], text[256];
+        readall_t r;
+        const char *stamp = ok[i].stamp;
+        const int64_t want = ok[i].t_ns;
+        tmp_path(p, sizeof p, ".csv");
+        snprintf(text, sizeof text, "t;ax;ay;az;gx;gy;gz\n%s;0.5;0.2;9.8;0.1;0.2;0.3\n", stamp);
+        write_text(p, text);
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+        if (r.end != FNAV_END || r.n != 1 || r.s[0].t_ns != want) {
+            fail_msg("case %zu (%s): end %d, n %ld, t_ns %lld: %s", i, stamp, (int)r.end, (long)r.n,
+                     r.n > 0 ? (long long)r.s[0].t_ns : 0LL, r.err);
+        }
+        unlink(p);
+    }
+    for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char p[256], text[256];
+        readall_t r;
+        tmp_path(p, sizeof p, ".csv");
+        snprintf(text, sizeof text, "t,ax,ay,az,gx,gy,gz\n%s,0.5,0.2,9.8,0.1,0.2,0.3\n", bad[i].stamp);
+        write_text(p, text);
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+        if (r.end == FNAV_END || r.n != 0 || strstr(r.err, ":2: time ('") == NULL ||
+            strstr(r.err, bad[i].why) == NULL) {
+            fail_msg("case %zu (%s): end %d, n %ld: %s", i, bad[i].stamp, (int)r.end, (long)r.n, r.err);
+        }
+        unlink(p);
+    }
+    {
+        /* a log without its header whose stamps are dates and times is
+         * data, not a header without a column 't' */
+        char p[256];
+        readall_t r;
+        tmp_path(p, sizeof p, ".csv");
+        write_text(p, "2024-05-01 12:00:00.000,0.5,0.2,9.8,0.1,0.2,0.3\n");
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), -1);
+        if (strstr(r.err, ":1: the first line is data, not a header") == NULL) {
+            fail_msg("headerless: %s", r.err);
+        }
+        unlink(p);
+    }
+}
+
 /* The names of --help and of the unknown-format error (HX_FORMAT_LIST) are
  * exactly the formats --from takes, in order: a new importer that misses
  * one of the two lists fails here (CONTRIBUTING.md, "Extending footnav"). */
@@ -2772,6 +2861,18 @@ static void test_name_classify(void **state)
         { "time_sec", HX_NAME_MATCH, 0, HX_UNIT_S },
         { "SampleTimeFine", HX_NAME_NEAR, 0, HX_UNIT_NONE },
         { "time_utc", HX_NAME_NEAR, 0, HX_UNIT_NONE },
+        /* a date and time's column (test_datetime_stamps), a zone in brackets */
+        { "DateTime", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "Date Time", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "date_time", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "datetime", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "Time (UTC)", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "time (-07:00)", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "Timestamp [+0200]", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "time (local)", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "time (abc)", HX_NAME_NEAR, 0, HX_UNIT_NONE },
+        { "time (+2:0)", HX_NAME_NEAR, 0, HX_UNIT_NONE },
+        { "ax (UTC)", HX_NAME_NEAR, 1, HX_UNIT_NONE }, /* a zone is a time's */
         { "time [g]", HX_NAME_NEAR, 0, HX_UNIT_G }, /* a unit of another quantity */
         /* accelerations */
         { "acc_x", HX_NAME_MATCH, 1, HX_UNIT_NONE },
@@ -4217,6 +4318,7 @@ int main(void)
         cmocka_unit_test(test_range_in_si_units),
         cmocka_unit_test(test_detect_variants),
         cmocka_unit_test(test_decimal_comma),
+        cmocka_unit_test(test_datetime_stamps),
         cmocka_unit_test(test_format_list),
         cmocka_unit_test(test_fuzz_seed_formats),
         cmocka_unit_test(test_detect_wrong_hint),

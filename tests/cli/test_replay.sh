@@ -264,7 +264,9 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # Observed: within 1 mm over the 25 m walk; float32 rounding of the turned
 # inputs is the only difference, so 5 mm (0.02 % of the path) fails anything else.
 # The same holds for the clock's origin: time stamps in Unix seconds (1.7e9 s,
-# as a logger writes them) must not lose the dt a float would lose there.
+# as a logger writes them) must not lose the dt a float would lose there,
+# nor stamps written as dates and times (iso: 2024-05-01T14:00:00.007531643+02:00,
+# docs/log-format.md; before, "time ('2024-05-01 12:00:00.') is not a number").
 # xup turns gravity at rest onto +x exactly (y90 leaves this walk's tilted
 # sensor 30 deg from that). The summary's heading change (of a body vector
 # level at the alignment, spanning the walk's two renewals) must agree
@@ -273,7 +275,7 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # how the renewals hold the heading (they can turn it by 87 and 110 deg).
 expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/m.csv" --to csv
 expect_exit 0 "replay the walk as recorded" "$H" replay "$T/m.csv" --out "$T/m_ref.csv" --json "$T/m_ref.json" --quiet
-for rot in y90 x180 xyz xup epoch; do
+for rot in y90 x180 xyz xup epoch iso; do
     /usr/bin/python3 - "$T/m.csv" "$T/m_$rot.csv" "$rot" <<'PY'
 import sys, numpy as np
 d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
@@ -288,14 +290,25 @@ def onto_x(d):
     k = np.cross(u, [1.0, 0.0, 0.0]); s = np.linalg.norm(k); k /= s
     K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
     return np.eye(3) + s * K + (1.0 - u[0]) * K @ K  # Rodrigues: u onto +x
-M = {'y90': r('y', 90), 'x180': r('x', 180), 'xyz': r('z', 122) @ r('y', -61) @ r('x', 37), 'epoch': np.eye(3)}.get(sys.argv[3])
+M = {'y90': r('y', 90), 'x180': r('x', 180), 'xyz': r('z', 122) @ r('y', -61) @ r('x', 37), 'epoch': np.eye(3),
+     'iso': np.eye(3)}.get(sys.argv[3])
 if M is None:
     M = onto_x(d)
 t0 = 1.7e9 if sys.argv[3] == 'epoch' else 0.0
 a = np.stack([d['ax'], d['ay'], d['az']], 1) @ M.T
 g = np.stack([d['gx'], d['gy'], d['gz']], 1) @ M.T
-np.savetxt(sys.argv[2], np.column_stack([d['t'] + t0, a, g]), delimiter=',', header='t,ax,ay,az,gx,gy,gz', comments='',
-           fmt=['%.7f'] + ['%.9g'] * 6)
+if sys.argv[3] == 'iso':
+    import datetime
+    t0 = datetime.datetime(2024, 5, 1, 14, 0, 0)  # local time at +02:00, 2024-05-01T12:00:00Z
+    with open(sys.argv[2], 'w') as f:
+        f.write('Timestamp (UTC),ax,ay,az,gx,gy,gz\n')
+        for ti, ai, gi in zip(d['t'], a, g):
+            ns = int(round(ti * 1e9))
+            f.write('%s.%09d+02:00,' % ((t0 + datetime.timedelta(seconds=ns // 10**9)).isoformat(), ns % 10**9) +
+                    ','.join('%.9g' % v for v in list(ai) + list(gi)) + '\n')
+else:
+    np.savetxt(sys.argv[2], np.column_stack([d['t'] + t0, a, g]), delimiter=',', header='t,ax,ay,az,gx,gy,gz', comments='',
+               fmt=['%.7f'] + ['%.9g'] * 6)
 PY
     expect_exit 0 "replay the walk, variant $rot" "$H" replay "$T/m_$rot.csv" --out "$T/m_${rot}_traj.csv" --json "$T/m_$rot.json" --quiet
     if msg=$(/usr/bin/python3 - "$T/m_ref.csv" "$T/m_${rot}_traj.csv" "$T/m_ref.json" "$T/m_$rot.json" <<'PY'

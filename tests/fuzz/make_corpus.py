@@ -129,6 +129,10 @@ def main():
     put('log_reader', 'gx2_first_restart', bytes([FMT['auto']]) + b'\r\n'.join(gx2[:5] + gx2[9:]))
     put('log_reader', 'csv_temp', bytes([FMT['csv']]) +
         b't,ax,ay,az,gx,gy,gz,temp\n0,0.1,0.2,-9.8,0.01,0.02,0.03,21.5\n0.005,0.1,0.2,-9.8,0.01,0.02,0.03,21.5\n')
+    # stamps written as dates and times, a zone in the time column's name
+    put('log_reader', 'csv_datetime', bytes([FMT['auto']]) +
+        b'Timestamp (UTC),ax,ay,az,gx,gy,gz\n2024-05-01T14:00:00.0025+02:00,0.1,0.2,-9.8,0.01,0.02,0.03\n'
+        b'2024/05/01 12:00:00.0075Z,0.1,0.2,-9.8,0.01,0.02,0.03\n23:59:59,0.1,0.2,-9.8,0.01,0.02,0.03\n')
     # a phone export for --columns (fuzz_log_reader.c: the map and the units
     # by the input's size): zeros after the last value make the size 7 mod
     # 16, the phone map (size / 4 % 4 == 1) and time=ns (size % 4 == 3)
