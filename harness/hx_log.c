@@ -92,6 +92,7 @@ struct hx_reader {
     double ctr_prev;            /* ipol: the last raw counter */
     hx_mtmgr_t mt;              /* mtmanager: columns, time source, counters (hx_xsens.h) */
     int row_skipped;            /* the row just read was skipped (mtmanager: a missing value) */
+    int consensys;              /* csv: Shimmer's Consensys export (hx_names_consensys), its units row read */
     double acc_scale, gyr_scale;
     hx_csv_layout_t layout;     /* the interchange CSV's names and units (--columns, --units) */
     time_mode_t time_mode;
@@ -1192,11 +1193,108 @@ static void units_named_warn(hx_reader_t *r, char **f, int n)
     }
 }
 
+/* Excel's separator line before a header ("sep=," or "\"sep=\t\"", as
+ * Shimmer's Consensys writes it): 1 and the separator in *d. */
+static int sep_line(const char *s, char *d)
+{
+    if (*s == '"') {
+        s++;
+    }
+    if (tolower((unsigned char)s[0]) != 's' || tolower((unsigned char)s[1]) != 'e' ||
+        tolower((unsigned char)s[2]) != 'p' || s[3] != '=' || s[4] == '\0' || s[4] == '\r' || s[4] == '\n') {
+        return 0;
+    }
+    *d = s[4];
+    s += 5;
+    if (*s == '"') {
+        s++;
+    }
+    while (*s == '\r' || *s == '\n') {
+        s++;
+    }
+    return *s == '\0' && (*d == ',' || *d == ';' || *d == '\t' || *d == '|');
+}
+
+/* The row of units under a Consensys header (hx_names_consensys): the
+ * units of the time, accel and gyro columns read, for those --units does
+ * not give, said in a warning. A row of data there instead (an export
+ * without its units row) is left to be read. 0 ok, -1 error (err set). */
+static int consensys_units(hx_reader_t *r)
+{
+    static const char *const what[3] = { "time", "accel", "gyro" };
+    hx_csv_layout_t *l = &r->layout;
+    char *f[HX_MAX_COLS], said[160] = "";
+    const long lines = r->stats.lines;
+    const z_off_t pos = gztell(r->gz);
+    hx_name_unit_t unit[3] = { HX_UNIT_NONE, HX_UNIT_NONE, HX_UNIT_NONE };
+    int n, rc, q;
+    double v;
+    int64_t t_ns;
+    rc = read_line(r);
+    if (rc <= 0) {
+        return rc < 0 ? -1 : 0;
+    }
+    n = split(r->line, r->delim, f, HX_MAX_COLS);
+    if (r->col_t >= 0 && r->col_t < n &&
+        (parse_num(f[r->col_t], &v) == 0 || parse_datetime_ns(f[r->col_t], &t_ns) == 0)) {
+        /* data: read again as the first row */
+        if (pos < 0 || gzseek(r->gz, pos, SEEK_SET) != pos) {
+            set_err(r, "%s:%ld: cannot read the first row again (seek failed)", r->path, r->stats.lines);
+            return -1;
+        }
+        r->stats.lines = lines;
+        r->last_line_open = 0;
+        return 0;
+    }
+    for (q = 0; q < 3; q++) {
+        const int *cols = q == 0 ? &r->col_t : q == 1 ? r->col_a : r->col_g;
+        const int ncol = q == 0 ? 1 : 3;
+        int a;
+        if (l->units_given & (1 << q) || cols[0] < 0) {
+            continue; /* --units rules; no time column */
+        }
+        for (a = 0; a < ncol; a++) {
+            const char *text = cols[a] < n ? f[cols[a]] : "";
+            const hx_name_unit_t u = hx_name_unit_of_text(text);
+            const int want = u == HX_UNIT_NONE ? -1 : u <= HX_UNIT_NS ? 0 : u <= HX_UNIT_UG ? 1 : 2;
+            if (q == 0 && u == HX_UNIT_NONE && (strstr(text, "yyyy") != NULL || strstr(text, "YYYY") != NULL)) {
+                break; /* stamps written as dates and times: they carry their unit */
+            }
+            if (want != q || (a > 0 && u != unit[q])) {
+                set_err(r, "%s:%ld: the row of units under the header gives '%.40s' for the %s column%s; "
+                        "give its unit with --units %s=...", r->path, r->stats.lines, text, what[q],
+                        want != q ? ", not a unit of it read" : ", another than its first axis's", what[q]);
+                return -1;
+            }
+            unit[q] = u;
+        }
+    }
+    if (unit[0] != HX_UNIT_NONE) {
+        l->time_digits = unit[0] == HX_UNIT_MS ? 6 : unit[0] == HX_UNIT_US ? 3 : unit[0] == HX_UNIT_NS ? 0 : 9;
+    }
+    if (unit[1] != HX_UNIT_NONE) {
+        l->acc_scale = acc_scale_of(unit[1]);
+    }
+    if (unit[2] != HX_UNIT_NONE) {
+        l->gyr_scale = unit[2] == HX_UNIT_DPS ? HX_DPS_RPS : unit[2] == HX_UNIT_MDPS ? HX_MDPS_RPS : 1.0;
+    }
+    for (q = 0; q < 3; q++) {
+        const char *item = hx_name_unit_item(unit[q]);
+        if (item != NULL) {
+            const size_t len = strlen(said);
+            snprintf(said + len, sizeof said - len, "%s%s", len > 0 ? "," : "", item);
+        }
+    }
+    add_warn(r, "%s:%ld: a row of units under the header (Shimmer's Consensys export): read as --units %s", r->path,
+             r->stats.lines, said[0] != '\0' ? said : "(none: the units given)");
+    return 0;
+}
+
 static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_required)
 {
     char *f[HX_MAX_COLS], dc_first[64], matched[1000] = "";
     const char *names[8];
-    int n, i, rc, total, dc_line, tried = 0;
+    int n, i, rc, total, dc_line, tried = 0, sep_given = 0, consensys;
     static const char *const what[8] = { "t", "ax", "ay", "az", "gx", "gy", "gz", "temp" };
     for (i = 0; i < 8; i++) {
         names[i] = names_in[i];
@@ -1210,6 +1308,10 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
             return -1;
         }
         if (blank(r->line)) {
+            continue;
+        }
+        if (r->meta.format == HX_FMT_CSV && !sep_given && sep_line(r->line, &r->delim)) {
+            sep_given = 1; /* the separator the line names, the header's next */
             continue;
         }
         if (r->meta.format == HX_FMT_CSV && comment(r->line)) {
@@ -1257,6 +1359,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
     dc_line = decimal_comma_line(r->line, dc_first, sizeof dc_first);
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     r->hdr_fields = r->delim == ' ' || total > HX_MAX_COLS ? n : named_fields(f, n, total);
+    consensys = r->meta.format == HX_FMT_CSV && hx_names_consensys(f, n);
     for (;;) {
         i = find_columns(r, names, f, n, time_required);
         if (i < 0) {
@@ -1265,7 +1368,8 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
             if (r->meta.format == HX_FMT_ADIS || r->meta.format == HX_FMT_SQUARE2) {
                 time_beside(r, f, n);
             }
-            return 0;
+            r->consensys = consensys;
+            return consensys ? consensys_units(r) : 0;
         }
         if (r->meta.format == HX_FMT_CSV && !tried && total <= HX_MAX_COLS && !dc_line && !all_numeric(f, n)) {
             /* no --columns and the interchange names not all there: the
@@ -1526,7 +1630,7 @@ static int setup_text(hx_reader_t *r, double rate_hz)
             r->rate_hz = rate_hz;
         }
         m->has_temp = r->col_temp >= 0;
-        copy_str(m->sensor, sizeof m->sensor, "unknown");
+        copy_str(m->sensor, sizeof m->sensor, r->consensys ? "Shimmer (Consensys export)" : "unknown");
         break;
     }
     case HX_FMT_NGIMU: {

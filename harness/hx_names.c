@@ -373,6 +373,101 @@ static void add_col(int *count, int list[3], int col)
     (*count)++;
 }
 
+/* Shimmer's Consensys columns (its CSV export: "sep=," line, a header of
+ * <device>_<signal>_CAL names, a row of units): the suffix of each name
+ * read, its key and its rank. The highest rank of a key is read, the
+ * others are near misses (named as not read): the Unix time before the
+ * synchronised one, the wide-range accelerometer (up to +-16 g) before the
+ * low-noise one (+-2 g, which a foot's impacts clip). */
+static const struct {
+    const char *suffix;
+    int key, rank;
+} k_consensys[] = {
+    { "_timestamp_unix_cal", 0, 2 },   { "_timestampsync_unix_cal", 0, 1 },
+    { "_accel_wr_x_cal", 1, 2 },       { "_accel_wr_y_cal", 2, 2 },         { "_accel_wr_z_cal", 3, 2 },
+    { "_accel_ln_x_cal", 1, 1 },       { "_accel_ln_y_cal", 2, 1 },         { "_accel_ln_z_cal", 3, 1 },
+    { "_gyro_x_cal", 4, 1 },           { "_gyro_y_cal", 5, 1 },             { "_gyro_z_cal", 6, 1 },
+};
+
+/* the k_consensys row a name ends with (case, quotes and blanks around
+ * ignored); -1 none */
+static int consensys_row(const char *name)
+{
+    char bare[128];
+    size_t len, i, k;
+    hx_name_bare(name, bare, sizeof bare);
+    len = strlen(bare);
+    for (i = 0; i < len; i++) {
+        bare[i] = (char)tolower((unsigned char)bare[i]);
+    }
+    for (k = 0; k < sizeof k_consensys / sizeof k_consensys[0]; k++) {
+        const size_t sl = strlen(k_consensys[k].suffix);
+        if (len > sl && strcmp(bare + len - sl, k_consensys[k].suffix) == 0) {
+            return (int)k;
+        }
+    }
+    return -1;
+}
+
+int hx_names_consensys(char *const *f, int n)
+{
+    int i, time = 0;
+    for (i = 0; i < n; i++) {
+        const int k = consensys_row(f[i]);
+        time |= k >= 0 && k_consensys[k].key == 0;
+    }
+    return time;
+}
+
+/* The Consensys columns into m's candidates and near misses by rank. */
+static void consensys_match(char *const *f, int n, hx_names_match_t *m)
+{
+    int best[7] = { 0, 0, 0, 0, 0, 0, 0 }, i;
+    m->consensys = 1;
+    for (i = 0; i < n; i++) {
+        const int k = consensys_row(f[i]);
+        if (k >= 0 && k_consensys[k].rank > best[k_consensys[k].key]) {
+            best[k_consensys[k].key] = k_consensys[k].rank;
+        }
+    }
+    for (i = 0; i < n; i++) {
+        const int k = consensys_row(f[i]);
+        if (k >= 0) {
+            const int key = k_consensys[k].key;
+            if (k_consensys[k].rank == best[key]) {
+                add_col(&m->ncand[key], m->cand[key], i);
+            } else {
+                add_col(&m->nnear[key], m->near[key], i);
+            }
+        }
+    }
+}
+
+hx_name_unit_t hx_name_unit_of_text(const char *text)
+{
+    char folded[64], u[32];
+    size_t k = 0, i;
+    if (hx_name_fold_units(text, folded, sizeof folded) != 0) {
+        return HX_UNIT_NONE;
+    }
+    for (i = 0; folded[i] != '\0'; i++) {
+        const char ch = folded[i];
+        if (ch == ' ' || ch == '\t' || ch == '"' || ch == '\'' || ch == '(' || ch == ')' || ch == '\r' ||
+            ch == '\n') {
+            continue;
+        }
+        if (k + 1 >= sizeof u) {
+            return HX_UNIT_NONE;
+        }
+        u[k++] = (char)tolower((unsigned char)ch);
+    }
+    u[k] = '\0';
+    if (strcmp(u, "msecs") == 0 || strcmp(u, "msec") == 0) {
+        return HX_UNIT_MS;
+    }
+    return unit_of(u);
+}
+
 int hx_names_match(char *const *f, int n, hx_names_match_t *m)
 {
     int i, k;
@@ -389,7 +484,10 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
             return 0;
         }
     }
-    for (i = 0; i < n; i++) {
+    if (hx_names_consensys(f, n)) {
+        consensys_match(f, n, m);
+    }
+    for (i = 0; i < n && !m->consensys; i++) {
         hx_name_class_t c;
         const hx_name_kind_t kind = hx_name_classify(f[i], &c);
         if (kind == HX_NAME_MATCH) {
@@ -398,7 +496,7 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
             add_col(&m->nnear[c.key], m->near[c.key], i);
         }
     }
-    for (i = 0; i < n && m->unit_col < 0; i++) {
+    for (i = 0; i < n && m->unit_col < 0 && !m->consensys; i++) {
         /* a key without a candidate that one name has but for its unit:
          * the refusal names the unit (hx_names_unit_problem) */
         hx_name_class_t c;
@@ -415,6 +513,9 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
         } else if (k > 0) {
             m->ok = 0;
         }
+    }
+    if (m->consensys) {
+        return m->ok; /* the units are the row's under the header (hx_log.c) */
     }
     if (m->col[0] >= 0) {
         hx_name_class_t c;

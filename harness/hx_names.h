@@ -50,6 +50,17 @@ typedef struct {
  *  a key's name a near miss with unit_unread. Returns kind. */
 hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c);
 
+/** Whether a header is Shimmer's Consensys export: every column named
+ *  <device>_<signal>_CAL (calibrated) or _RAW, a time column
+ *  <device>_Timestamp_Unix_CAL or _TimestampSync_Unix_CAL among them, and
+ *  a row of units under it. */
+int hx_names_consensys(char *const *f, int n);
+
+/** The unit of a units row's field (Consensys: "ms", "m/(s^2)", "deg/s"),
+ *  spelled as a bracketed unit of a name is (brackets inside, blanks and
+ *  case ignored; "mSecs" is ms); HX_UNIT_NONE when none read. */
+hx_name_unit_t hx_name_unit_of_text(const char *text);
+
 /** text with the units' signs spelled in ASCII, as hx_name_classify reads
  *  them (° "deg", µ and μ "u", ² "2"; UTF-8 or the Latin-1 byte), into out:
  *  "m/s²" is "m/s2", "°/s" "deg/s" (--units reads its values so). 0, or -1
@@ -70,6 +81,7 @@ typedef struct {
     int near[7][3];     /**< the first three of them */
     int units_differ;   /**< 1 accel, 2 gyro: the three axes name different units */
     int excluded;       /**< 1: an Xsens export's name (SampleTimeFine, PacketCounter): not matched */
+    int consensys;      /**< 1: Shimmer's Consensys names (hx_names_consensys): their units are the row's */
     hx_name_unit_t unit[3]; /**< the unit of time, accel, gyro the names give (NONE: not named) */
     int unit_col;       /**< the first column named for a key with no candidate whose unit is not read or is
                              another quantity's ("gx [deg/h]", "acc_x [s]"); -1 none (hx_names_unit_problem) */

@@ -1929,6 +1929,93 @@ static void test_datetime_stamps(void **state)
     }
 }
 
+/* Shimmer's Consensys CSV export: Excel's "sep=" line, a header of
+ * <device>_<signal>_CAL names, a row of units, a separator at each line's
+ * end (the layout as Shimmer's users' loaders describe it). Read without
+ * options: the Unix time in ms, the wide-range accelerometer before the
+ * low-noise one (named as not read), deg/s from the units row. */
+static void test_consensys(void **state)
+{
+    static const char *const head =
+        "P_Timestamp_Unix_CAL\tP_Accel_LN_X_CAL\tP_Accel_LN_Y_CAL\tP_Accel_LN_Z_CAL\tP_Battery_CAL\t"
+        "P_Accel_WR_X_CAL\tP_Accel_WR_Y_CAL\tP_Accel_WR_Z_CAL\tP_Gyro_X_CAL\tP_Gyro_Y_CAL\tP_Gyro_Z_CAL\t\r\n";
+    static const char *const rows = "1595933810034.18\t1.5\t0.2\t-9.8\t3700\t2.5\t0.3\t-9.7\t10\t20\t30\t\r\n"
+                                    "1595933810036.68\t1.5\t0.2\t-9.8\t3700\t2.5\t0.3\t-9.7\t10\t20\t30\t\r\n";
+    static const char *const units = "ms\tm/(s^2)\tm/(s^2)\tm/(s^2)\tmV\tm/(s^2)\tm/(s^2)\tm/(s^2)\tdeg/s\tdeg/s\tdeg/s\t\r\n";
+    const double d2r = 0.017453292519943295;
+    char p[256], text[1024], err[512];
+    hx_reader_t *r;
+    fnav_sample_t s0, s1, end;
+    readall_t ra;
+    hx_meta_t m;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    snprintf(text, sizeof text, "\"sep=\t\"\r\n%s%s%s", head, units, rows);
+    write_text(p, text);
+    r = hx_reader_open(p, HX_FMT_AUTO, 0.0, err, sizeof err);
+    if (r == NULL) {
+        fail_msg("%s", err);
+    }
+    assert_int_equal(hx_reader_next(r, &s0), FNAV_OK);
+    assert_int_equal(hx_reader_next(r, &s1), FNAV_OK);
+    assert_int_equal(hx_reader_next(r, &end), FNAV_END);
+    assert_true(s0.t_ns == 1595933810034180000LL && s1.t_ns - s0.t_ns == 2500000);
+    assert_true((float)s0.accel_mps2[0] == 2.5f && (float)s0.accel_mps2[2] == -9.7f); /* wide range */
+    assert_true((float)s0.gyro_rps[2] == (float)(30.0 * d2r));
+    if (strstr(hx_reader_warnings(r), "not read: P_Accel_LN_X_CAL, P_Accel_LN_Y_CAL, P_Accel_LN_Z_CAL") == NULL ||
+        strstr(hx_reader_warnings(r), ":3: a row of units under the header (Shimmer's Consensys export): read "
+                                      "as --units time=ms,accel=m/s2,gyro=deg/s") == NULL) {
+        fail_msg("warnings: %s", hx_reader_warnings(r));
+    }
+    assert_string_equal(hx_reader_meta(r)->sensor, "Shimmer (Consensys export)");
+    hx_reader_close(r);
+    unlink(p);
+    /* comma-separated, no sep line, no units row: line 2 read as data,
+     * its stamp in ms then out of range in s, with the remedy */
+    snprintf(text, sizeof text, "%s%s", head, rows);
+    for (char *c = text; *c != '\0'; c++) {
+        *c = *c == '\t' ? ',' : *c;
+    }
+    write_text(p, text);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &m), 0);
+    assert_int_equal(ra.n, 0);
+    if (strstr(ra.err, ":2: time ('1595933810034.18') is beyond 9e9 s") == NULL || strstr(ra.err, "time=ms") == NULL) {
+        fail_msg("no units row: %s", ra.err);
+    }
+    unlink(p);
+    /* two devices: each key twice, refused with both named */
+    write_text(p, "A_Timestamp_Unix_CAL,A_Accel_WR_X_CAL,A_Accel_WR_Y_CAL,A_Accel_WR_Z_CAL,A_Gyro_X_CAL,A_Gyro_Y_CAL,"
+                  "A_Gyro_Z_CAL,B_Timestamp_Unix_CAL,B_Accel_WR_X_CAL,B_Accel_WR_Y_CAL,B_Accel_WR_Z_CAL,B_Gyro_X_CAL,"
+                  "B_Gyro_Y_CAL,B_Gyro_Z_CAL\nms,m/(s^2),m/(s^2),m/(s^2),deg/s,deg/s,deg/s,ms,m/(s^2),m/(s^2),"
+                  "m/(s^2),deg/s,deg/s,deg/s\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
+    if (strstr(ra.err, "t: 2 candidates (A_Timestamp_Unix_CAL, B_Timestamp_Unix_CAL)") == NULL ||
+        strstr(ra.err, "ax: 2 candidates (A_Accel_WR_X_CAL, B_Accel_WR_X_CAL)") == NULL) {
+        fail_msg("two devices: %s", ra.err);
+    }
+    unlink(p);
+    /* a unit not read for a column read: refused, with the option */
+    write_text(p, "P_Timestamp_Unix_CAL,P_Accel_WR_X_CAL,P_Accel_WR_Y_CAL,P_Accel_WR_Z_CAL,P_Gyro_X_CAL,P_Gyro_Y_CAL,"
+                  "P_Gyro_Z_CAL\nms,m/(s^2),m/(s^2),m/(s^2),no units,no units,no units\n0,1,2,3,4,5,6\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
+    if (strstr(ra.err, ":2: the row of units under the header gives 'no units' for the gyro column, not a unit of "
+                       "it read; give its unit with --units gyro=...") == NULL) {
+        fail_msg("no units: %s", ra.err);
+    }
+    unlink(p);
+    /* stamps written as dates and times, as Consensys can export them */
+    write_text(p, "\"sep=,\"\nP_Timestamp_Unix_CAL,P_Accel_WR_X_CAL,P_Accel_WR_Y_CAL,P_Accel_WR_Z_CAL,P_Gyro_X_CAL,"
+                  "P_Gyro_Y_CAL,P_Gyro_Z_CAL,\nyyyy/mm/dd hh:mm:ss.000,m/(s^2),m/(s^2),m/(s^2),deg/s,deg/s,deg/s,\n"
+                  "2020/07/28 10:56:50.034,1,2,3,4,5,6,\n2020/07/28 10:56:50.039,1,2,3,4,5,6,\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+    assert_int_equal(ra.end, FNAV_END);
+    assert_int_equal(ra.n, 2);
+    /* Python: datetime(2020, 7, 28, 10, 56, 50, tzinfo=timezone.utc).timestamp() = 1595933810 */
+    assert_true(ra.s[0].t_ns == 1595933810034000000LL && ra.s[1].t_ns - ra.s[0].t_ns == 5000000);
+    assert_true((float)ra.s[0].gyro_rps[0] == (float)(4.0 * d2r));
+    unlink(p);
+}
+
 /* The names of --help and of the unknown-format error (HX_FORMAT_LIST) are
  * exactly the formats --from takes, in order: a new importer that misses
  * one of the two lists fails here (CONTRIBUTING.md, "Extending footnav"). */
@@ -4319,6 +4406,7 @@ int main(void)
         cmocka_unit_test(test_detect_variants),
         cmocka_unit_test(test_decimal_comma),
         cmocka_unit_test(test_datetime_stamps),
+        cmocka_unit_test(test_consensys),
         cmocka_unit_test(test_format_list),
         cmocka_unit_test(test_fuzz_seed_formats),
         cmocka_unit_test(test_detect_wrong_hint),

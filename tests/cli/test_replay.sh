@@ -266,7 +266,10 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # The same holds for the clock's origin: time stamps in Unix seconds (1.7e9 s,
 # as a logger writes them) must not lose the dt a float would lose there,
 # nor stamps written as dates and times (iso: 2024-05-01T14:00:00.007531643+02:00,
-# docs/log-format.md; before, "time ('2024-05-01 12:00:00.') is not a number").
+# docs/log-format.md; before, "time ('2024-05-01 12:00:00.') is not a number"),
+# nor Shimmer's Consensys export (shimmer: a "sep=" line, a units row, Unix
+# ms, deg/s, the wide-range accelerometer beside a low-noise one clipped at
+# +-2 g; before, refused with near misses).
 # xup turns gravity at rest onto +x exactly (y90 leaves this walk's tilted
 # sensor 30 deg from that). The summary's heading change (of a body vector
 # level at the alignment, spanning the walk's two renewals) must agree
@@ -275,7 +278,7 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # how the renewals hold the heading (they can turn it by 87 and 110 deg).
 expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/m.csv" --to csv
 expect_exit 0 "replay the walk as recorded" "$H" replay "$T/m.csv" --out "$T/m_ref.csv" --json "$T/m_ref.json" --quiet
-for rot in y90 x180 xyz xup epoch iso; do
+for rot in y90 x180 xyz xup epoch iso shimmer; do
     /usr/bin/python3 - "$T/m.csv" "$T/m_$rot.csv" "$rot" <<'PY'
 import sys, numpy as np
 d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
@@ -291,7 +294,7 @@ def onto_x(d):
     K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
     return np.eye(3) + s * K + (1.0 - u[0]) * K @ K  # Rodrigues: u onto +x
 M = {'y90': r('y', 90), 'x180': r('x', 180), 'xyz': r('z', 122) @ r('y', -61) @ r('x', 37), 'epoch': np.eye(3),
-     'iso': np.eye(3)}.get(sys.argv[3])
+     'iso': np.eye(3), 'shimmer': np.eye(3)}.get(sys.argv[3])
 if M is None:
     M = onto_x(d)
 t0 = 1.7e9 if sys.argv[3] == 'epoch' else 0.0
@@ -306,6 +309,17 @@ if sys.argv[3] == 'iso':
             ns = int(round(ti * 1e9))
             f.write('%s.%09d+02:00,' % ((t0 + datetime.timedelta(seconds=ns // 10**9)).isoformat(), ns % 10**9) +
                     ','.join('%.9g' % v for v in list(ai) + list(gi)) + '\n')
+elif sys.argv[3] == 'shimmer':
+    P = 'Shimmer_40AC_'
+    names = ['Timestamp_Unix_CAL'] + ['Accel_LN_%s_CAL' % c for c in 'XYZ'] + ['Battery_CAL'] + \
+        ['Accel_WR_%s_CAL' % c for c in 'XYZ'] + ['Gyro_%s_CAL' % c for c in 'XYZ']
+    units = ['ms'] + ['m/(s^2)'] * 3 + ['mV'] + ['m/(s^2)'] * 3 + ['deg/s'] * 3
+    with open(sys.argv[2], 'w', newline='') as f:
+        f.write('"sep=\t"\r\n' + '\t'.join(P + n for n in names) + '\t\r\n' + '\t'.join(units) + '\t\r\n')
+        for ti, ai, gi in zip(d['t'], a, g):
+            ns = int(round(ti * 1e9)) + 1595933810000 * 10**6
+            f.write('%d.%06d\t' % (ns // 10**6, ns % 10**6) + '\t'.join('%.9g' % v for v in np.clip(ai, -19.6, 19.6)) +
+                    '\t3700\t' + '\t'.join('%.9g' % v for v in list(ai) + list(np.degrees(gi))) + '\t\r\n')
 else:
     np.savetxt(sys.argv[2], np.column_stack([d['t'] + t0, a, g]), delimiter=',', header='t,ax,ay,az,gx,gy,gz', comments='',
                fmt=['%.7f'] + ['%.9g'] * 6)
@@ -323,6 +337,16 @@ sys.exit(0 if len(a) == len(b) and dh < 0.005 and dz < 0.005 and dzupt == 0 and 
 PY
     ); then pass "$rot: the same path ($msg)"; else fail "$rot changed the path: $msg"; fi
 done
+
+# the low-noise accelerometer of the Consensys export, chosen with --columns
+# (the remedy the warning names): its units still from the units row, and
+# its clipping at +-2 g named
+P=Shimmer_40AC_
+expect_exit 0 "the shimmer variant's low-noise accelerometer" "$H" replay "$T/m_shimmer.csv" \
+    --columns "t=${P}Timestamp_Unix_CAL,ax=${P}Accel_LN_X_CAL,ay=${P}Accel_LN_Y_CAL,az=${P}Accel_LN_Z_CAL,gx=${P}Gyro_X_CAL,gy=${P}Gyro_Y_CAL,gz=${P}Gyro_Z_CAL"
+expect_out "^note .*the input is clipped" "the low-noise accelerometer's clipping is named"
+expect_err "m_shimmer.csv:3: a row of units under the header (Shimmer's Consensys export): read as --units time=ms,accel=m/s2,gyro=deg/s" \
+    "the units row read under --columns too"
 
 # --- clipping: the bundled walk as a sensor of +-250 deg/s and +-2 g would
 # record it (flat tops at full scale). replay does not navigate it without a

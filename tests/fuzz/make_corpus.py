@@ -133,6 +133,13 @@ def main():
     put('log_reader', 'csv_datetime', bytes([FMT['auto']]) +
         b'Timestamp (UTC),ax,ay,az,gx,gy,gz\n2024-05-01T14:00:00.0025+02:00,0.1,0.2,-9.8,0.01,0.02,0.03\n'
         b'2024/05/01 12:00:00.0075Z,0.1,0.2,-9.8,0.01,0.02,0.03\n23:59:59,0.1,0.2,-9.8,0.01,0.02,0.03\n')
+    # Shimmer's Consensys export: separator line, <device>_<signal>_CAL, units row
+    put('log_reader', 'csv_consensys', bytes([FMT['auto']]) +
+        b'"sep=\t"\r\nP_Timestamp_Unix_CAL\tP_Accel_LN_X_CAL\tP_Accel_LN_Y_CAL\tP_Accel_LN_Z_CAL\t'
+        b'P_Accel_WR_X_CAL\tP_Accel_WR_Y_CAL\tP_Accel_WR_Z_CAL\tP_Gyro_X_CAL\tP_Gyro_Y_CAL\tP_Gyro_Z_CAL\t\r\n'
+        b'ms\tm/(s^2)\tm/(s^2)\tm/(s^2)\tm/(s^2)\tm/(s^2)\tm/(s^2)\tdeg/s\tdeg/s\tdeg/s\t\r\n'
+        b'1595933810034.18\t1.5\t0.2\t-9.8\t2.5\t0.3\t-9.7\t10\t20\t30\t\r\n'
+        b'1595933810039.18\t1.5\t0.2\t-9.8\t2.5\t0.3\t-9.7\t10\t20\t30\t\r\n')
     # a phone export for --columns (fuzz_log_reader.c: the map and the units
     # by the input's size): zeros after the last value make the size 7 mod
     # 16, the phone map (size / 4 % 4 == 1) and time=ns (size % 4 == 3)
