@@ -307,8 +307,17 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
                    strcmp(w[0], "ts") == 0 || strcmp(w[0], "datetime") == 0)) {
         key = 0;
     } else if (n == 2 && ((strcmp(w[0], "time") == 0 && strcmp(w[1], "stamp") == 0) ||
-                          (strcmp(w[0], "date") == 0 && strcmp(w[1], "time") == 0))) {
+                          (strcmp(w[0], "date") == 0 && strcmp(w[1], "time") == 0) ||
+                          (strcmp(w[0], "elapsed") == 0 && strcmp(w[1], "time") == 0))) {
         key = 0; /* "Time Stamp"; "DateTime", "Date Time", date_time: dates and times (docs/log-format.md) */
+    } else if (n == 1 && strcmp(w[0], "elapsed") == 0) {
+        key = 0;
+    } else if (n == 1 && (strcmp(w[0], "millis") == 0 || strcmp(w[0], "micros") == 0)) {
+        /* Arduino's clocks, named by their unit: millis() ms, micros() us */
+        key = 0;
+        if (unit == HX_UNIT_NONE && !unread) {
+            unit = w[0][1] == 'i' && w[0][2] == 'l' ? HX_UNIT_MS : HX_UNIT_US;
+        }
     } else if (n == 1 && (q = glued(w[0], &ax)) != 0) {
         key = 1 + 3 * (q - 1) + ax;
     } else if (n == 2 && axis_of(w[1]) >= 0 && (in_list(w[0], k_acc_stems) || in_list(w[0], k_gyr_stems))) {

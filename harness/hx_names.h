@@ -37,8 +37,10 @@ typedef struct {
  *  "acc_x [m/s2]". Split into lower-case words at blanks, '_',
  *  '-', '.', ':' and at a lower-to-upper case change (AccX: acc, x;
  *  accX_mps2: acc, x, mps2); a unit in brackets or parentheses, or as the
- *  last word, is taken out. The words left must be exactly a time name (t,
- *  time, timestamp, ts, time stamp), or a stem and an axis x, y, z, the
+ *  last word, is taken out (a zone in brackets after a time name too). The
+ *  words left must be exactly a time name (t, time, timestamp, ts, time
+ *  stamp, elapsed, elapsed time, datetime, date time; millis in ms and
+ *  micros in us unless a unit is given), or a stem and an axis x, y, z, the
  *  axis apart or glued (acc_x, accx, ax): acceleration acc, accel,
  *  accelerometer, acceleration, a (glued only: ax); rate gyr, gyro,
  *  gyroscope, w, omega, angvel, angular velocity, angular rate, rotation

@@ -2960,6 +2960,13 @@ static void test_name_classify(void **state)
         { "time (abc)", HX_NAME_NEAR, 0, HX_UNIT_NONE },
         { "time (+2:0)", HX_NAME_NEAR, 0, HX_UNIT_NONE },
         { "ax (UTC)", HX_NAME_NEAR, 1, HX_UNIT_NONE }, /* a zone is a time's */
+        /* Arduino's clocks, named by their unit; an elapsed time */
+        { "millis", HX_NAME_MATCH, 0, HX_UNIT_MS },
+        { "micros", HX_NAME_MATCH, 0, HX_UNIT_US },
+        { "millis [s]", HX_NAME_MATCH, 0, HX_UNIT_S },
+        { "Elapsed", HX_NAME_MATCH, 0, HX_UNIT_NONE },
+        { "elapsed (s)", HX_NAME_MATCH, 0, HX_UNIT_S },
+        { "Elapsed Time [ms]", HX_NAME_MATCH, 0, HX_UNIT_MS },
         { "time [g]", HX_NAME_NEAR, 0, HX_UNIT_G }, /* a unit of another quantity */
         /* accelerations */
         { "acc_x", HX_NAME_MATCH, 1, HX_UNIT_NONE },
