@@ -43,6 +43,7 @@ static hx_name_unit_t unit_of(const char *u)
         { "m/s2", HX_UNIT_MPS2 },   { "mps2", HX_UNIT_MPS2 },   { "ms2", HX_UNIT_MPS2 },   { "rad/s", HX_UNIT_RPS },
         { "rps", HX_UNIT_RPS },     { "rads", HX_UNIT_RPS },    { "radps", HX_UNIT_RPS },  { "deg/s", HX_UNIT_DPS },
         { "dps", HX_UNIT_DPS },     { "degs", HX_UNIT_DPS },    { "mdps", HX_UNIT_MDPS },  { "mdeg/s", HX_UNIT_MDPS },
+        { "m/sec^2", HX_UNIT_MPS2 }, { "m/sec2", HX_UNIT_MPS2 }, { "rad/sec", HX_UNIT_RPS }, { "deg/sec", HX_UNIT_DPS },
     };
     size_t i;
     for (i = 0; i < sizeof k_units / sizeof k_units[0]; i++) {

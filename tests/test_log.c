@@ -2967,6 +2967,8 @@ static void test_name_classify(void **state)
         { "Elapsed", HX_NAME_MATCH, 0, HX_UNIT_NONE },
         { "elapsed (s)", HX_NAME_MATCH, 0, HX_UNIT_S },
         { "Elapsed Time [ms]", HX_NAME_MATCH, 0, HX_UNIT_MS },
+        { "Gyro X (deg/sec)", HX_NAME_MATCH, 4, HX_UNIT_DPS },
+        { "acc_z [m/sec^2]", HX_NAME_MATCH, 3, HX_UNIT_MPS2 },
         { "time [g]", HX_NAME_NEAR, 0, HX_UNIT_G }, /* a unit of another quantity */
         /* accelerations */
         { "acc_x", HX_NAME_MATCH, 1, HX_UNIT_NONE },
