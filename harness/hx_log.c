@@ -843,6 +843,28 @@ static int comment_header(const char *text)
     return has_field(head, "t");
 }
 
+/* Excel's separator line before a header ("sep=," or "\"sep=\t\"", as
+ * Shimmer's Consensys writes it): 1 and the separator in *d. */
+static int sep_line(const char *s, char *d)
+{
+    if (*s == '"') {
+        s++;
+    }
+    if (tolower((unsigned char)s[0]) != 's' || tolower((unsigned char)s[1]) != 'e' ||
+        tolower((unsigned char)s[2]) != 'p' || s[3] != '=' || s[4] == '\0' || s[4] == '\r' || s[4] == '\n') {
+        return 0;
+    }
+    *d = s[4];
+    s += 5;
+    if (*s == '"') {
+        s++;
+    }
+    while (*s == '\r' || *s == '\n') {
+        s++;
+    }
+    return *s == '\0' && (*d == ',' || *d == ';' || *d == '\t' || *d == '|');
+}
+
 static hx_format_t detect(const unsigned char *b, size_t n)
 {
     char text[600], head[600];
@@ -866,8 +888,15 @@ static hx_format_t detect(const unsigned char *b, size_t n)
          * leading index column, ", " or tabs between them */
         char *h = text;
         for (;;) {
+            char first[16], d;
             while (*h == '\n' || *h == '\r' || *h == ' ' || *h == '\t') {
                 h++;
+            }
+            copy_str(first, sizeof first, h);
+            first[strcspn(first, "\n")] = '\0';
+            if (sep_line(first, &d) && strchr(h, '\n') != NULL) {
+                h = strchr(h, '\n') + 1; /* Excel's separator line: the header is the next */
+                continue;
             }
             if (*h != '#') {
                 break;
@@ -1193,28 +1222,6 @@ static void units_named_warn(hx_reader_t *r, char **f, int n)
     }
 }
 
-/* Excel's separator line before a header ("sep=," or "\"sep=\t\"", as
- * Shimmer's Consensys writes it): 1 and the separator in *d. */
-static int sep_line(const char *s, char *d)
-{
-    if (*s == '"') {
-        s++;
-    }
-    if (tolower((unsigned char)s[0]) != 's' || tolower((unsigned char)s[1]) != 'e' ||
-        tolower((unsigned char)s[2]) != 'p' || s[3] != '=' || s[4] == '\0' || s[4] == '\r' || s[4] == '\n') {
-        return 0;
-    }
-    *d = s[4];
-    s += 5;
-    if (*s == '"') {
-        s++;
-    }
-    while (*s == '\r' || *s == '\n') {
-        s++;
-    }
-    return *s == '\0' && (*d == ',' || *d == ';' || *d == '\t' || *d == '|');
-}
-
 /* The row of units under a Consensys header (hx_names_consensys): the
  * units of the time, accel and gyro columns read, for those --units does
  * not give, said in a warning. A row of data there instead (an export
@@ -1310,7 +1317,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         if (blank(r->line)) {
             continue;
         }
-        if (r->meta.format == HX_FMT_CSV && !sep_given && sep_line(r->line, &r->delim)) {
+        if (!sep_given && sep_line(r->line, &r->delim)) {
             sep_given = 1; /* the separator the line names, the header's next */
             continue;
         }

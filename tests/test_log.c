@@ -1712,6 +1712,13 @@ static void test_detect_variants(void **state)
         { ",t_s,ax_mps2,ay_mps2,az_mps2,gx_radps,gy_radps,gz_radps\n0,0,0.5,0.2,-9.8,0.1,0.2,0.3\n"
           "1,0.005,0.5,0.2,-9.8,0.1,0.2,0.3\n",
           HX_FMT_PYSHOE, 0.5, 0.3 },
+        /* Excel's separator line before an importer's header (a re-save) */
+        { "\"sep=,\"\r\nTime (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Gyroscope Z (deg/s),Accelerometer X (g),"
+          "Accelerometer Y (g),Accelerometer Z (g)\r\n0,1,2,3,0.5,0.25,1\r\n0.0025,1,2,3,0.5,0.25,1\r\n",
+          HX_FMT_NGIMU, 0.5 * 9.80665, 3.0 * 0.017453292519943295 },
+        { "sep=;\nt_s;ax_mps2;ay_mps2;az_mps2;gx_radps;gy_radps;gz_radps\n0;0.5;0.2;-9.8;0.1;0.2;0.3\n"
+          "0.005;0.5;0.2;-9.8;0.1;0.2;0.3\n",
+          HX_FMT_PYSHOE, 0.5, 0.3 },
         { "\n\nsample,w_x_radps,w_y_radps,w_z_radps,f_x_mps2,f_y_mps2,f_z_mps2\n0,0.1,0.2,0.3,0.5,0.2,-9.8\n"
           "1,0.1,0.2,0.3,0.5,0.2,-9.8\n",
           HX_FMT_SQUARE2, 0.5, 0.3 },
