@@ -162,6 +162,22 @@ static double acc_scale_of(hx_name_unit_t u)
     return u == HX_UNIT_G ? HX_G_MPS2 : u == HX_UNIT_MG ? HX_MG_MPS2 : u == HX_UNIT_UG ? HX_UG_MPS2 : 1.0;
 }
 
+/* A layout read in unit u, set on the field of u's quantity (the time
+ * column's digits, the accel or gyro scale); HX_UNIT_NONE sets none. */
+static void layout_unit(hx_csv_layout_t *l, hx_name_unit_t u)
+{
+    if (u == HX_UNIT_NONE) {
+        return;
+    }
+    if (u <= HX_UNIT_NS) {
+        l->time_digits = u == HX_UNIT_MS ? 6 : u == HX_UNIT_US ? 3 : u == HX_UNIT_NS ? 0 : 9;
+    } else if (u <= HX_UNIT_UG) {
+        l->acc_scale = acc_scale_of(u);
+    } else {
+        l->gyr_scale = u == HX_UNIT_DPS ? HX_DPS_RPS : u == HX_UNIT_MDPS ? HX_MDPS_RPS : 1.0;
+    }
+}
+
 static hx_name_unit_t acc_unit_of(double scale)
 {
     return scale == HX_G_MPS2    ? HX_UNIT_G
@@ -1046,14 +1062,10 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
             hx_name_bare(f[m->col[k]], l->names[k], sizeof l->names[k]);
         }
     }
-    if (!(l->units_given & 1) && m->unit[0] != HX_UNIT_NONE) {
-        l->time_digits = m->unit[0] == HX_UNIT_MS ? 6 : m->unit[0] == HX_UNIT_US ? 3 : m->unit[0] == HX_UNIT_NS ? 0 : 9;
-    }
-    if (!(l->units_given & 2) && m->unit[1] != HX_UNIT_NONE) {
-        l->acc_scale = acc_scale_of(m->unit[1]);
-    }
-    if (!(l->units_given & 4) && m->unit[2] != HX_UNIT_NONE) {
-        l->gyr_scale = m->unit[2] == HX_UNIT_DPS ? HX_DPS_RPS : m->unit[2] == HX_UNIT_MDPS ? HX_MDPS_RPS : 1.0;
+    for (k = 0; k < 3; k++) {
+        if (!(l->units_given & (1 << k))) {
+            layout_unit(l, m->unit[k]);
+        }
     }
     l->names_matched = 1;
     /* the warning names the units the log is read in (not the defaults) */
@@ -1189,16 +1201,10 @@ static void units_named_warn(hx_reader_t *r, char **f, int n)
         if (col < 0 || col >= n || hx_name_classify(f[col], &c) != HX_NAME_MATCH || c.unit == HX_UNIT_NONE) {
             continue;
         }
-        if (q == 0) {
-            want.time_digits = c.unit == HX_UNIT_MS ? 6 : c.unit == HX_UNIT_US ? 3 : c.unit == HX_UNIT_NS ? 0 : 9;
-            differs = want.time_digits != l->time_digits;
-        } else if (q == 1) {
-            want.acc_scale = acc_scale_of(c.unit);
-            differs = want.acc_scale != l->acc_scale;
-        } else {
-            want.gyr_scale = c.unit == HX_UNIT_DPS ? HX_DPS_RPS : c.unit == HX_UNIT_MDPS ? HX_MDPS_RPS : 1.0;
-            differs = want.gyr_scale != l->gyr_scale;
-        }
+        layout_unit(&want, c.unit);
+        differs = q == 0 ? want.time_digits != l->time_digits
+                  : q == 1 ? want.acc_scale != l->acc_scale
+                           : want.gyr_scale != l->gyr_scale;
         if (differs && col_first < 0) {
             col_first = col;
             q_first = q;
@@ -1276,17 +1282,9 @@ static int consensys_units(hx_reader_t *r)
             unit[q] = u;
         }
     }
-    if (unit[0] != HX_UNIT_NONE) {
-        l->time_digits = unit[0] == HX_UNIT_MS ? 6 : unit[0] == HX_UNIT_US ? 3 : unit[0] == HX_UNIT_NS ? 0 : 9;
-    }
-    if (unit[1] != HX_UNIT_NONE) {
-        l->acc_scale = acc_scale_of(unit[1]);
-    }
-    if (unit[2] != HX_UNIT_NONE) {
-        l->gyr_scale = unit[2] == HX_UNIT_DPS ? HX_DPS_RPS : unit[2] == HX_UNIT_MDPS ? HX_MDPS_RPS : 1.0;
-    }
     for (q = 0; q < 3; q++) {
         const char *item = hx_name_unit_item(unit[q]);
+        layout_unit(l, unit[q]);
         if (item != NULL) {
             const size_t len = strlen(said);
             snprintf(said + len, sizeof said - len, "%s%s", len > 0 ? "," : "", item);

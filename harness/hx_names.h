@@ -52,10 +52,10 @@ typedef struct {
  *  a key's name a near miss with unit_unread. Returns kind. */
 hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c);
 
-/** Whether a header is Shimmer's Consensys export: every column named
- *  <device>_<signal>_CAL (calibrated) or _RAW, a time column
- *  <device>_Timestamp_Unix_CAL or _TimestampSync_Unix_CAL among them, and
- *  a row of units under it. */
+/** Whether a header is Shimmer's Consensys export (its columns named
+ *  <device>_<signal>_CAL or _RAW, a row of units under it): one of its n
+ *  names ends in _Timestamp_Unix_CAL or _TimestampSync_Unix_CAL (case
+ *  ignored). */
 int hx_names_consensys(char *const *f, int n);
 
 /** The unit of a units row's field (Consensys: "ms", "m/(s^2)", "deg/s"),
