@@ -93,6 +93,7 @@ struct hx_reader {
     hx_mtmgr_t mt;              /* mtmanager: columns, time source, counters (hx_xsens.h) */
     int row_skipped;            /* the row just read was skipped (mtmanager: a missing value) */
     int consensys;              /* csv: Shimmer's Consensys export (hx_names_consensys), its units row read */
+    int ros;                    /* csv: a ROS sensor_msgs/Imu header matched (hx_names_ros) */
     double acc_scale, gyr_scale;
     hx_csv_layout_t layout;     /* the interchange CSV's names and units (--columns, --units) */
     time_mode_t time_mode;
@@ -851,12 +852,23 @@ static int full_interchange_header(const char *head)
  * as "# t is in seconds" is not taken for one). */
 static int comment_header(const char *text)
 {
-    char head[600];
+    char head[600], copy[2048], *f[HX_MAX_COLS];
+    hx_names_match_t m;
+    int n;
     squeeze_header(text, head, sizeof head);
     if (blank_separated(text)) {
         return full_interchange_header(head);
     }
-    return has_field(head, "t");
+    if (has_field(head, "t")) {
+        return 1;
+    }
+    /* a header of names read without --columns, time and all six
+     * channels, behind the comment sign: EuRoC's and TUM-VI's
+     * "#timestamp [ns],w_RS_S_x [rad s^-1],..." */
+    copy_str(copy, sizeof copy, text);
+    copy[strcspn(copy, "\n")] = '\0';
+    n = split(copy, strchr(copy, ',') != NULL ? ',' : strchr(copy, '\t') != NULL ? '\t' : ';', f, HX_MAX_COLS);
+    return n >= 7 && hx_names_match(f, n, &m) && m.col[0] >= 0;
 }
 
 /* Excel's separator line before a header ("sep=," or "\"sep=\t\"", as
@@ -1068,6 +1080,7 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
         }
     }
     l->names_matched = 1;
+    r->ros = m->ros;
     /* the warning names the units the log is read in (not the defaults) */
     m->unit[0] = l->time_digits == 6 ? HX_UNIT_MS : l->time_digits == 3 ? HX_UNIT_US
                  : l->time_digits == 0 ? HX_UNIT_NS : HX_UNIT_NONE;
@@ -1076,8 +1089,16 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
     {
         char near[300];
         (void)hx_names_near(m, f, near, sizeof near);
-        add_warn(r, "%s: header read as %s (names matched%s%s; give --columns to choose otherwise)", r->path,
-                 hx_names_give(m, f, give, sizeof give), near[0] != '\0' ? "; not read: " : "", near);
+        /* ROS: the names' family, and a receive time read for want of the
+         * message's own stamp (%time, bagpy's Time; beside a split stamp) */
+        const int receive = m->ros && m->col[0] >= 0 &&
+                            (hx_name_eq(f[m->col[0]], "Time") || hx_name_eq(f[m->col[0]], "%time"));
+        add_warn(r, "%s: header read as %s (%s%s%s%s%s; give --columns to choose otherwise)", r->path,
+                 hx_names_give(m, f, give, sizeof give),
+                 m->ros ? "a ROS sensor_msgs/Imu's names matched, in SI units as REP 103 sets them" : "names matched",
+                 receive ? "; the time is the bag's receive time" : "",
+                 receive && m->nnear[0] > 0 ? " (the message's stamp, split in two columns, is not read)" : "",
+                 near[0] != '\0' ? "; not read: " : "", near);
     }
 }
 
@@ -1635,7 +1656,8 @@ static int setup_text(hx_reader_t *r, double rate_hz)
             r->rate_hz = rate_hz;
         }
         m->has_temp = r->col_temp >= 0;
-        copy_str(m->sensor, sizeof m->sensor, r->consensys ? "Shimmer (Consensys export)" : "unknown");
+        copy_str(m->sensor, sizeof m->sensor,
+                 r->consensys ? "Shimmer (Consensys export)" : r->ros ? "ROS sensor_msgs/Imu" : "unknown");
         break;
     }
     case HX_FMT_NGIMU: {

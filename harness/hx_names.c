@@ -45,10 +45,39 @@ static hx_name_unit_t unit_of(const char *u)
         { "dps", HX_UNIT_DPS },     { "degs", HX_UNIT_DPS },    { "mdps", HX_UNIT_MDPS },  { "mdeg/s", HX_UNIT_MDPS },
         { "m/sec^2", HX_UNIT_MPS2 }, { "m/sec2", HX_UNIT_MPS2 }, { "rad/sec", HX_UNIT_RPS }, { "deg/sec", HX_UNIT_DPS },
     };
-    size_t i;
+    size_t i, j, len = strlen(u);
     for (i = 0; i < sizeof k_units / sizeof k_units[0]; i++) {
         if (strcmp(u, k_units[i].text) == 0) {
             return k_units[i].unit;
+        }
+    }
+    /* a negative power of the second, as SI writes a quotient: "m s^-2",
+     * "rad s^-1" (EuRoC's, TUM-VI's), "m.s-2", "deg*s^-1" (the blanks are
+     * gone here) are m/s^2, rad/s, deg/s */
+    for (i = 1; i <= 2; i++) {
+        const char *const tails[2][2] = { { "s^-1", "s-1" }, { "s^-2", "s-2" } };
+        size_t k;
+        for (k = 0; k < 2; k++) {
+            const size_t tl = strlen(tails[i - 1][k]);
+            char q[32];
+            size_t base = len - tl;
+            if (len <= tl || len >= sizeof q || strcmp(u + base, tails[i - 1][k]) != 0) {
+                continue;
+            }
+            if (u[base - 1] == '*' || u[base - 1] == '.') {
+                base--;
+            }
+            if (base == 0 || base + 5 >= sizeof q) {
+                continue;
+            }
+            memcpy(q, u, base);
+            memcpy(q + base, i == 1 ? "/s" : "/s^2", i == 1 ? 3 : 5);
+            for (j = 0; j < sizeof k_units / sizeof k_units[0]; j++) {
+                if (strcmp(q, k_units[j].text) == 0) {
+                    return k_units[j].unit;
+                }
+            }
+            return HX_UNIT_NONE;
         }
     }
     return HX_UNIT_NONE;
@@ -327,6 +356,11 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
                ((strcmp(w[0], "angular") == 0 && (strcmp(w[1], "velocity") == 0 || strcmp(w[1], "rate") == 0)) ||
                 (strcmp(w[0], "rotation") == 0 && strcmp(w[1], "rate") == 0))) {
         key = 4 + axis_of(w[2]);
+    } else if (n == 4 && axis_of(w[3]) >= 0 && strcmp(w[1], "rs") == 0 && strcmp(w[2], "s") == 0 &&
+               (strcmp(w[0], "w") == 0 || strcmp(w[0], "a") == 0)) {
+        /* the ASL format of EuRoC and TUM-VI: w_RS_S_x, a_RS_S_x, the rate
+         * and specific force of the sensor S against the frame R, in S */
+        key = (w[0][0] == 'a' ? 1 : 4) + axis_of(w[3]);
     }
     if (key > 0 && zone) {
         unread = 1; /* "ax (UTC)": a zone is a time's */
@@ -389,30 +423,43 @@ static void add_col(int *count, int list[3], int col)
  * others are near misses (named as not read): the Unix time before the
  * synchronised one, the wide-range accelerometer (up to +-16 g) before the
  * low-noise one (+-2 g, which a foot's impacts clip). */
-static const struct {
-    const char *suffix;
-    int key, rank;
-} k_consensys[] = {
-    { "_timestamp_unix_cal", 0, 2 },   { "_timestampsync_unix_cal", 0, 1 },
-    { "_accel_wr_x_cal", 1, 2 },       { "_accel_wr_y_cal", 2, 2 },         { "_accel_wr_z_cal", 3, 2 },
-    { "_accel_ln_x_cal", 1, 1 },       { "_accel_ln_y_cal", 2, 1 },         { "_accel_ln_z_cal", 3, 1 },
-    { "_gyro_x_cal", 4, 1 },           { "_gyro_y_cal", 5, 1 },             { "_gyro_z_cal", 6, 1 },
+typedef struct {
+    const char *text; /* the name (k_ros) or the end of it (k_consensys), lower case */
+    int key, rank;    /* rank 0: never read, only named as not read */
+    hx_name_unit_t unit;
+} name_row_t;
+
+static const name_row_t k_consensys[] = {
+    { "_timestamp_unix_cal", 0, 2, HX_UNIT_NONE }, { "_timestampsync_unix_cal", 0, 1, HX_UNIT_NONE },
+    { "_accel_wr_x_cal", 1, 2, HX_UNIT_NONE },     { "_accel_wr_y_cal", 2, 2, HX_UNIT_NONE },
+    { "_accel_wr_z_cal", 3, 2, HX_UNIT_NONE },     { "_accel_ln_x_cal", 1, 1, HX_UNIT_NONE },
+    { "_accel_ln_y_cal", 2, 1, HX_UNIT_NONE },     { "_accel_ln_z_cal", 3, 1, HX_UNIT_NONE },
+    { "_gyro_x_cal", 4, 1, HX_UNIT_NONE },         { "_gyro_y_cal", 5, 1, HX_UNIT_NONE },
+    { "_gyro_z_cal", 6, 1, HX_UNIT_NONE },
 };
+
+/* name without the blanks, quotes and CR around it, in lower case, into
+ * bare (cut to size); its length */
+static size_t lower_bare(const char *name, char *bare, size_t size)
+{
+    size_t i;
+    hx_name_bare(name, bare, size);
+    for (i = 0; bare[i] != '\0'; i++) {
+        bare[i] = (char)tolower((unsigned char)bare[i]);
+    }
+    return i;
+}
 
 /* the k_consensys row a name ends with (case, quotes and blanks around
  * ignored); -1 none */
 static int consensys_row(const char *name)
 {
     char bare[128];
-    size_t len, i, k;
-    hx_name_bare(name, bare, sizeof bare);
-    len = strlen(bare);
-    for (i = 0; i < len; i++) {
-        bare[i] = (char)tolower((unsigned char)bare[i]);
-    }
+    const size_t len = lower_bare(name, bare, sizeof bare);
+    size_t k;
     for (k = 0; k < sizeof k_consensys / sizeof k_consensys[0]; k++) {
-        const size_t sl = strlen(k_consensys[k].suffix);
-        if (len > sl && strcmp(bare + len - sl, k_consensys[k].suffix) == 0) {
+        const size_t sl = strlen(k_consensys[k].text);
+        if (len > sl && strcmp(bare + len - sl, k_consensys[k].text) == 0) {
             return (int)k;
         }
     }
@@ -429,28 +476,80 @@ int hx_names_consensys(char *const *f, int n)
     return time;
 }
 
-/* The Consensys columns into m's candidates and near misses by rank. */
-static void consensys_match(char *const *f, int n, hx_names_match_t *m)
+/* A family's columns (the rows of tab that row_of finds) into m's
+ * candidates and near misses by rank: the highest rank of a key is read,
+ * a lower one or rank 0 named as not read; the time read's unit into
+ * m->unit[0]. */
+static void rank_match(char *const *f, int n, const name_row_t *tab, int (*row_of)(const char *),
+                       hx_names_match_t *m)
 {
     int best[7] = { 0, 0, 0, 0, 0, 0, 0 }, i;
-    m->consensys = 1;
     for (i = 0; i < n; i++) {
-        const int k = consensys_row(f[i]);
-        if (k >= 0 && k_consensys[k].rank > best[k_consensys[k].key]) {
-            best[k_consensys[k].key] = k_consensys[k].rank;
+        const int k = row_of(f[i]);
+        if (k >= 0 && tab[k].rank > best[tab[k].key]) {
+            best[tab[k].key] = tab[k].rank;
         }
     }
     for (i = 0; i < n; i++) {
-        const int k = consensys_row(f[i]);
+        const int k = row_of(f[i]);
         if (k >= 0) {
-            const int key = k_consensys[k].key;
-            if (k_consensys[k].rank == best[key]) {
+            const int key = tab[k].key;
+            if (tab[k].rank > 0 && tab[k].rank == best[key]) {
                 add_col(&m->ncand[key], m->cand[key], i);
+                m->unit[0] = key == 0 ? tab[k].unit : m->unit[0];
             } else {
                 add_col(&m->nnear[key], m->near[key], i);
             }
         }
     }
+}
+
+/* ROS sensor_msgs/Imu messages written as CSV: by `rostopic echo -p`
+ * (each name after "field.", the stamps in ns: %time the bag's receive
+ * time, field.header.stamp the driver's) or by bagpy (no prefix; Time the
+ * receive time in s, the header stamp split in secs and nsecs). The names
+ * after an optional "field.", in lower case; the highest rank of a key is
+ * read, rank 0 never (named as not read: a stamp split in two columns).
+ * REP 103 fixes the units (m/s^2, rad/s) and REP 145 keeps gravity in
+ * linear_acceleration: the specific force an IMU measures. */
+static const name_row_t k_ros[] = {
+    { "header.stamp", 0, 3, HX_UNIT_NS },          { "%time", 0, 2, HX_UNIT_NS },
+    { "time", 0, 1, HX_UNIT_S },                   { "header.stamp.secs", 0, 0, HX_UNIT_NONE },
+    { "header.stamp.nsecs", 0, 0, HX_UNIT_NONE },  { "header.stamp.sec", 0, 0, HX_UNIT_NONE },
+    { "header.stamp.nanosec", 0, 0, HX_UNIT_NONE }, { "linear_acceleration.x", 1, 1, HX_UNIT_NONE },
+    { "linear_acceleration.y", 2, 1, HX_UNIT_NONE }, { "linear_acceleration.z", 3, 1, HX_UNIT_NONE },
+    { "angular_velocity.x", 4, 1, HX_UNIT_NONE },  { "angular_velocity.y", 5, 1, HX_UNIT_NONE },
+    { "angular_velocity.z", 6, 1, HX_UNIT_NONE },
+};
+
+/* the k_ros row of a name (an optional "field." before it; case, quotes
+ * and blanks around ignored); -1 none */
+static int ros_row(const char *name)
+{
+    char bare[128];
+    const char *b = bare;
+    size_t k;
+    (void)lower_bare(name, bare, sizeof bare);
+    if (strncmp(bare, "field.", 6) == 0) {
+        b += 6;
+    }
+    for (k = 0; k < sizeof k_ros / sizeof k_ros[0]; k++) {
+        if (strcmp(b, k_ros[k].text) == 0) {
+            return (int)k;
+        }
+    }
+    return -1;
+}
+
+int hx_names_ros(char *const *f, int n)
+{
+    int i, acc = 0, gyr = 0;
+    for (i = 0; i < n; i++) {
+        const int k = ros_row(f[i]);
+        acc |= k >= 0 && k_ros[k].key >= 1 && k_ros[k].key <= 3;
+        gyr |= k >= 0 && k_ros[k].key >= 4;
+    }
+    return acc && gyr;
 }
 
 hx_name_unit_t hx_name_unit_of_text(const char *text)
@@ -495,9 +594,13 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
         }
     }
     if (hx_names_consensys(f, n)) {
-        consensys_match(f, n, m);
+        m->consensys = 1;
+        rank_match(f, n, k_consensys, consensys_row, m);
+    } else if (hx_names_ros(f, n)) {
+        m->ros = 1;
+        rank_match(f, n, k_ros, ros_row, m);
     }
-    for (i = 0; i < n && !m->consensys; i++) {
+    for (i = 0; i < n && !m->consensys && !m->ros; i++) {
         hx_name_class_t c;
         const hx_name_kind_t kind = hx_name_classify(f[i], &c);
         if (kind == HX_NAME_MATCH) {
@@ -506,7 +609,7 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
             add_col(&m->nnear[c.key], m->near[c.key], i);
         }
     }
-    for (i = 0; i < n && m->unit_col < 0 && !m->consensys; i++) {
+    for (i = 0; i < n && m->unit_col < 0 && !m->consensys && !m->ros; i++) {
         /* a key without a candidate that one name has but for its unit:
          * the refusal names the unit (hx_names_unit_problem) */
         hx_name_class_t c;
@@ -524,8 +627,10 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
             m->ok = 0;
         }
     }
-    if (m->consensys) {
-        return m->ok; /* the units are the row's under the header (hx_log.c) */
+    if (m->consensys || m->ros) {
+        /* Consensys: the units are the row's under the header (hx_log.c);
+         * ROS: SI, the time's set by ros_match */
+        return m->ok;
     }
     if (m->col[0] >= 0) {
         hx_name_class_t c;

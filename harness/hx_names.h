@@ -44,12 +44,15 @@ typedef struct {
  *  axis apart or glued (acc_x, accx, ax): acceleration acc, accel,
  *  accelerometer, acceleration, a (glued only: ax); rate gyr, gyro,
  *  gyroscope, w, omega, angvel, angular velocity, angular rate, rotation
- *  rate, g (glued only: gx). A unit of another quantity, or any other word
- *  (FreeAcc_X's free, acc_x_lin's lin), makes it no match: a near miss when
- *  a stem and an axis (or a time word) are among the words. A unit in
- *  brackets that is none of these, or a last word that is a unit but none
- *  read (ug, ng, lsb, counts, rpm, dph, or with a '/' or '^': deg/h), makes
- *  a key's name a near miss with unit_unread. Returns kind. */
+ *  rate, g (glued only: gx); or the ASL format's w_RS_S_x (rate) and
+ *  a_RS_S_x (acceleration) of EuRoC and TUM-VI. Units are also read as a
+ *  negative power of the second, "m s^-2", "rad s^-1", "m.s-2". A unit of
+ *  another quantity, or any other word (FreeAcc_X's free, acc_x_lin's
+ *  lin), makes it no match: a near miss when a stem and an axis (or a time
+ *  word) are among the words. A unit in brackets that is none of these, or
+ *  a last word that is a unit but none read (ng, lsb, counts, rpm, dph,
+ *  or with a '/' or '^': deg/h), makes a key's name a near miss with
+ *  unit_unread. Returns kind. */
 hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c);
 
 /** Whether a header is Shimmer's Consensys export (its columns named
@@ -57,6 +60,15 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c);
  *  names ends in _Timestamp_Unix_CAL or _TimestampSync_Unix_CAL (case
  *  ignored). */
 int hx_names_consensys(char *const *f, int n);
+
+/** Whether a header is a ROS sensor_msgs/Imu message written as CSV
+ *  (rostopic echo -p's field.linear_acceleration.x, bagpy's
+ *  linear_acceleration.x): it names one of linear_acceleration.x/y/z and
+ *  one of angular_velocity.x/y/z, after an optional "field." (case
+ *  ignored). Matched from those names (SI units) and the header stamp in ns
+ *  (field.header.stamp), else %time (ns) or bagpy's Time (s); a stamp split
+ *  in header.stamp.secs and .nsecs is not read (a near miss). */
+int hx_names_ros(char *const *f, int n);
 
 /** The unit of a units row's field (Consensys: "ms", "m/(s^2)", "deg/s"),
  *  spelled as a bracketed unit of a name is (brackets inside, blanks and
@@ -84,6 +96,7 @@ typedef struct {
     int units_differ;   /**< 1 accel, 2 gyro: the three axes name different units */
     int excluded;       /**< 1: an Xsens export's name (SampleTimeFine, PacketCounter): not matched */
     int consensys;      /**< 1: Shimmer's Consensys names (hx_names_consensys): their units are the row's */
+    int ros;            /**< 1: a ROS sensor_msgs/Imu header (hx_names_ros): SI units, the stamp in ns or s */
     hx_name_unit_t unit[3]; /**< the unit of time, accel, gyro the names give (NONE: not named) */
     int unit_col;       /**< the first column named for a key with no candidate whose unit is not read or is
                              another quantity's ("gx [deg/h]", "acc_x [s]"); -1 none (hx_names_unit_problem) */

@@ -26,6 +26,7 @@ typedef struct {
     int n;
     fnav_status_t end;
     char err[1024];
+    char warn[1024]; /* the reader's warnings */
 } readall_t;
 
 static int read_all(const char *path, hx_format_t fmt, double rate, readall_t *out, hx_meta_t *meta)
@@ -48,6 +49,7 @@ static int read_all(const char *path, hx_format_t fmt, double rate, readall_t *o
         out->n++;
     }
     snprintf(out->err, sizeof out->err, "%s", hx_reader_error(r));
+    snprintf(out->warn, sizeof out->warn, "%s", hx_reader_warnings(r));
     hx_reader_close(r);
     return 0;
 }
@@ -1936,6 +1938,88 @@ static void test_datetime_stamps(void **state)
     }
 }
 
+/* A ROS sensor_msgs/Imu topic written as CSV and EuRoC's ASL format, read
+ * without options: rostopic echo -p's header stamp in ns (not %time, the
+ * receive time), bagpy's Time in s beside a stamp split in two columns
+ * (named as not read), the ROS 2 split stamp alone (no time: refused with
+ * the option), Android's gravity-free linear_acceleration_x not taken for
+ * ROS's; EuRoC's commented header "#timestamp [ns],w_RS_S_x [rad s^-1],..."
+ * with the rates first. Expected values are the file's numbers. */
+static void test_ros_euroc(void **state)
+{
+    static const char *const ros1 =
+        "%time,field.header.seq,field.header.stamp,field.header.frame_id,field.orientation.x,field.orientation.y,"
+        "field.orientation.z,field.orientation.w,field.angular_velocity.x,field.angular_velocity.y,"
+        "field.angular_velocity.z,field.linear_acceleration.x,field.linear_acceleration.y,"
+        "field.linear_acceleration.z\n"
+        "1700000000001234567,0,1700000000000000000,imu,0,0,0,1,0.5,-0.25,0.125,1.5,-2.5,9.75\n"
+        "1700000000006234567,1,1700000000002500000,imu,0,0,0,1,0.5,-0.25,0.125,1.5,-2.5,9.75\n";
+    static const char *const bagpy =
+        "Time,header.seq,header.stamp.secs,header.stamp.nsecs,header.frame_id,angular_velocity.x,"
+        "angular_velocity.y,angular_velocity.z,linear_acceleration.x,linear_acceleration.y,linear_acceleration.z\n"
+        "1700000000.0012,0,1700000000,0,imu,0.5,-0.25,0.125,1.5,-2.5,9.75\n"
+        "1700000000.0062,1,1700000000,2500000,imu,0.5,-0.25,0.125,1.5,-2.5,9.75\n";
+    static const char *const ros2 =
+        "header.stamp.sec,header.stamp.nanosec,angular_velocity.x,angular_velocity.y,angular_velocity.z,"
+        "linear_acceleration.x,linear_acceleration.y,linear_acceleration.z\n"
+        "1700000000,0,0.5,-0.25,0.125,1.5,-2.5,9.75\n";
+    static const char *const android =
+        "time,linear_acceleration_x,linear_acceleration_y,linear_acceleration_z,angular_velocity_x,"
+        "angular_velocity_y,angular_velocity_z\n0,1.5,-2.5,0.5,0.5,-0.25,0.125\n";
+    static const char *const euroc =
+        "#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],a_RS_S_x [m s^-2],"
+        "a_RS_S_y [m s^-2],a_RS_S_z [m s^-2]\r\n"
+        "1403636579758555392,-0.0991,0.1424,0.0628,8.1334,-0.6456,-2.7136\r\n"
+        "1403636579763555584,-0.0991,0.1431,0.0628,8.1334,-0.6456,-2.7136\r\n";
+    char p[256];
+    readall_t ra;
+    hx_meta_t m;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, ros1);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &m), 0);
+    assert_int_equal(ra.n, 2);
+    assert_true(ra.s[0].t_ns == 1700000000000000000LL && ra.s[1].t_ns == 1700000000002500000LL);
+    assert_true((float)ra.s[0].accel_mps2[0] == 1.5f && (float)ra.s[0].accel_mps2[2] == 9.75f);
+    assert_true((float)ra.s[0].gyro_rps[0] == 0.5f && (float)ra.s[0].gyro_rps[2] == 0.125f);
+    assert_string_equal(m.sensor, "ROS sensor_msgs/Imu");
+    if (strstr(ra.warn, "--columns t=field.header.stamp,ax=field.linear_acceleration.x") == NULL ||
+        strstr(ra.warn, "--units time=ns (a ROS sensor_msgs/Imu's names matched") == NULL ||
+        strstr(ra.warn, "not read: %time") == NULL) {
+        fail_msg("rostopic: %s", ra.warn);
+    }
+    write_text(p, bagpy);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &m), 0);
+    assert_int_equal(ra.n, 2);
+    assert_true(ra.s[0].t_ns == 1700000000001200000LL && ra.s[1].t_ns == 1700000000006200000LL);
+    if (strstr(ra.warn, "--columns t=Time,") == NULL || strstr(ra.warn, "the bag's receive time") == NULL ||
+        strstr(ra.warn, "not read: header.stamp.secs, header.stamp.nsecs") == NULL) {
+        fail_msg("bagpy: %s", ra.warn);
+    }
+    write_text(p, ros2);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
+    if (strstr(ra.err, "no time column (near misses: header.stamp.sec, header.stamp.nanosec): give the log's rate "
+                       "with --input-rate HZ") == NULL) {
+        fail_msg("ros 2: %s", ra.err);
+    }
+    write_text(p, android);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
+    if (strstr(ra.err, "near misses: linear_acceleration_x") == NULL) {
+        fail_msg("android: %s", ra.err);
+    }
+    write_text(p, euroc);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &m), 0);
+    assert_int_equal(ra.n, 2);
+    assert_true(ra.s[0].t_ns == 1403636579758555392LL && ra.s[1].t_ns == 1403636579763555584LL);
+    assert_true((float)ra.s[0].accel_mps2[0] == 8.1334f && (float)ra.s[0].gyro_rps[0] == -0.0991f);
+    assert_true((float)ra.s[1].gyro_rps[1] == 0.1431f);
+    if (strstr(ra.warn, "ax=a_RS_S_x [m s^-2]") == NULL || strstr(ra.warn, "gx=w_RS_S_x [rad s^-1]") == NULL ||
+        strstr(ra.warn, "--units time=ns") == NULL) {
+        fail_msg("euroc: %s", ra.warn);
+    }
+    unlink(p);
+}
+
 /* Shimmer's Consensys CSV export: Excel's "sep=" line, a header of
  * <device>_<signal>_CAL names, a row of units, a separator at each line's
  * end (the layout as Shimmer's users' loaders describe it). Read without
@@ -2977,6 +3061,16 @@ static void test_name_classify(void **state)
         { "Gyro X (deg/sec)", HX_NAME_MATCH, 4, HX_UNIT_DPS },
         { "acc_z [m/sec^2]", HX_NAME_MATCH, 3, HX_UNIT_MPS2 },
         { "time [g]", HX_NAME_NEAR, 0, HX_UNIT_G }, /* a unit of another quantity */
+        /* EuRoC's and TUM-VI's ASL names; a negative power of the second */
+        { "w_RS_S_x [rad s^-1]", HX_NAME_MATCH, 4, HX_UNIT_RPS },
+        { "a_RS_S_z [m s^-2]", HX_NAME_MATCH, 3, HX_UNIT_MPS2 },
+        { "acc_x [m.s-2]", HX_NAME_MATCH, 1, HX_UNIT_MPS2 },
+        { "gyro_y (deg*s^-1)", HX_NAME_MATCH, 5, HX_UNIT_DPS },
+        { "acc_x [m s^-1]", HX_NAME_NEAR, 1, HX_UNIT_NONE },   /* m/s: none read */
+        { "w_RS_S_x [m s^-2]", HX_NAME_NEAR, 4, HX_UNIT_MPS2 }, /* an acceleration's unit */
+        { "a_RS_x", HX_NAME_OTHER, -1, HX_UNIT_NONE }, /* "a" a stem only glued (ax) */
+        { "w_RS_B_x", HX_NAME_NEAR, 4, HX_UNIT_NONE },
+        { "timestamp [ns]", HX_NAME_MATCH, 0, HX_UNIT_NS },
         /* accelerations */
         { "acc_x", HX_NAME_MATCH, 1, HX_UNIT_NONE },
         { "AccX", HX_NAME_MATCH, 1, HX_UNIT_NONE },
@@ -4423,6 +4517,7 @@ int main(void)
         cmocka_unit_test(test_decimal_comma),
         cmocka_unit_test(test_datetime_stamps),
         cmocka_unit_test(test_consensys),
+        cmocka_unit_test(test_ros_euroc),
         cmocka_unit_test(test_format_list),
         cmocka_unit_test(test_fuzz_seed_formats),
         cmocka_unit_test(test_detect_wrong_hint),

@@ -269,7 +269,10 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # docs/log-format.md; before, "time ('2024-05-01 12:00:00.') is not a number"),
 # nor Shimmer's Consensys export (shimmer: a "sep=" line, a units row, Unix
 # ms, deg/s, the wide-range accelerometer beside a low-noise one clipped at
-# +-2 g; before, refused with near misses).
+# +-2 g; before, refused with near misses), nor a ROS sensor_msgs/Imu topic
+# as rostopic echo -p writes it (ros: stamps in ns; before, "header has no
+# column 't'") or EuRoC's ASL format (euroc: "#timestamp [ns],w_RS_S_x [rad
+# s^-1],..."; before, "the first line is data, not a header").
 # xup turns gravity at rest onto +x exactly (y90 leaves this walk's tilted
 # sensor 30 deg from that). The summary's heading change (of a body vector
 # level at the alignment, spanning the walk's two renewals) must agree
@@ -278,7 +281,7 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # how the renewals hold the heading (they can turn it by 87 and 110 deg).
 expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/m.csv" --to csv
 expect_exit 0 "replay the walk as recorded" "$H" replay "$T/m.csv" --out "$T/m_ref.csv" --json "$T/m_ref.json" --quiet
-for rot in y90 x180 xyz xup epoch iso shimmer; do
+for rot in y90 x180 xyz xup epoch iso shimmer ros euroc; do
     /usr/bin/python3 - "$T/m.csv" "$T/m_$rot.csv" "$rot" <<'PY'
 import sys, numpy as np
 d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
@@ -294,7 +297,7 @@ def onto_x(d):
     K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
     return np.eye(3) + s * K + (1.0 - u[0]) * K @ K  # Rodrigues: u onto +x
 M = {'y90': r('y', 90), 'x180': r('x', 180), 'xyz': r('z', 122) @ r('y', -61) @ r('x', 37), 'epoch': np.eye(3),
-     'iso': np.eye(3), 'shimmer': np.eye(3)}.get(sys.argv[3])
+     'iso': np.eye(3), 'shimmer': np.eye(3), 'ros': np.eye(3), 'euroc': np.eye(3)}.get(sys.argv[3])
 if M is None:
     M = onto_x(d)
 t0 = 1.7e9 if sys.argv[3] == 'epoch' else 0.0
@@ -320,6 +323,29 @@ elif sys.argv[3] == 'shimmer':
             ns = int(round(ti * 1e9)) + 1595933810000 * 10**6
             f.write('%d.%06d\t' % (ns // 10**6, ns % 10**6) + '\t'.join('%.9g' % v for v in np.clip(ai, -19.6, 19.6)) +
                     '\t3700\t' + '\t'.join('%.9g' % v for v in list(ai) + list(np.degrees(gi))) + '\t\r\n')
+elif sys.argv[3] == 'ros':
+    # rostopic echo -p of a sensor_msgs/Imu topic: stamps in ns, the
+    # receive time %time 1.2 ms late, quaternion and covariances unread
+    cov = lambda p: ['field.%s_covariance%d' % (p, i) for i in range(9)]
+    names = ['%time', 'field.header.seq', 'field.header.stamp', 'field.header.frame_id'] + \
+        ['field.orientation.%s' % c for c in 'xyzw'] + cov('orientation') + \
+        ['field.angular_velocity.%s' % c for c in 'xyz'] + cov('angular_velocity') + \
+        ['field.linear_acceleration.%s' % c for c in 'xyz'] + cov('linear_acceleration')
+    with open(sys.argv[2], 'w') as f:
+        f.write(','.join(names) + '\n')
+        for i, (ti, ai, gi) in enumerate(zip(d['t'], a, g)):
+            ns = int(round(ti * 1e9)) + 1700000000 * 10**9
+            f.write('%d,%d,%d,imu_link,0,0,0,1,' % (ns + 1234567, i, ns) + ','.join(['0'] * 9) + ',' +
+                    ','.join('%.9g' % v for v in gi) + ',' + ','.join(['0'] * 9) + ',' +
+                    ','.join('%.9g' % v for v in ai) + ',' + ','.join(['0'] * 9) + '\n')
+elif sys.argv[3] == 'euroc':
+    # EuRoC's and TUM-VI's ASL format: a commented header, the rates first
+    with open(sys.argv[2], 'w') as f:
+        f.write('#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],'
+                'a_RS_S_x [m s^-2],a_RS_S_y [m s^-2],a_RS_S_z [m s^-2]\r\n')
+        for ti, ai, gi in zip(d['t'], a, g):
+            f.write('%d,' % (int(round(ti * 1e9)) + 1403636579758555392) + ','.join('%.9g' % v for v in list(gi) + list(ai)) +
+                    '\r\n')
 else:
     np.savetxt(sys.argv[2], np.column_stack([d['t'] + t0, a, g]), delimiter=',', header='t,ax,ay,az,gx,gy,gz', comments='',
                fmt=['%.7f'] + ['%.9g'] * 6)

@@ -140,6 +140,17 @@ def main():
         b'ms\tm/(s^2)\tm/(s^2)\tm/(s^2)\tm/(s^2)\tm/(s^2)\tm/(s^2)\tdeg/s\tdeg/s\tdeg/s\t\r\n'
         b'1595933810034.18\t1.5\t0.2\t-9.8\t2.5\t0.3\t-9.7\t10\t20\t30\t\r\n'
         b'1595933810039.18\t1.5\t0.2\t-9.8\t2.5\t0.3\t-9.7\t10\t20\t30\t\r\n')
+    # a ROS sensor_msgs/Imu topic as rostopic echo -p writes it; EuRoC's
+    # ASL format (a commented header, units as negative powers)
+    put('log_reader', 'csv_ros', bytes([FMT['auto']]) +
+        b'%time,field.header.seq,field.header.stamp,field.header.frame_id,field.angular_velocity.x,'
+        b'field.angular_velocity.y,field.angular_velocity.z,field.linear_acceleration.x,field.linear_acceleration.y,'
+        b'field.linear_acceleration.z\n1700000000001234567,0,1700000000000000000,imu,0.5,-0.25,0.125,1.5,-2.5,9.75\n'
+        b'1700000000006234567,1,1700000000002500000,imu,0.5,-0.25,0.125,1.5,-2.5,9.75\n')
+    put('log_reader', 'csv_euroc', bytes([FMT['auto']]) +
+        b'#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],a_RS_S_x [m s^-2],'
+        b'a_RS_S_y [m s^-2],a_RS_S_z [m s^-2]\r\n1403636579758555392,-0.0991,0.1424,0.0628,8.1334,-0.6456,-2.7136\r\n'
+        b'1403636579763555584,-0.0991,0.1431,0.0628,8.1334,-0.6456,-2.7136\r\n')
     # a phone export for --columns (fuzz_log_reader.c: the map and the units
     # by the input's size): zeros after the last value make the size 7 mod
     # 16, the phone map (size / 4 % 4 == 1) and time=ns (size % 4 == 3)
