@@ -76,6 +76,7 @@ struct hx_reader {
     char line[HX_LINE_MAX];
     char delim;                 /* ',' '\t' ';' or ' ' (any whitespace) */
     int col_t, col_a[3], col_g[3], col_temp, col_aux;
+    int col_tns;                /* csv: nanoseconds added to t's whole seconds (--columns tns=); -1 none */
     int ncols_needed;
     int missing_col;            /* setup_header: the column not found (0 t ... 6 gz), else -1 */
     int nfields;                /* fields of the line last split */
@@ -1074,6 +1075,9 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
             hx_name_bare(f[m->col[k]], l->names[k], sizeof l->names[k]);
         }
     }
+    if (m->col_tns >= 0) {
+        hx_name_bare(f[m->col_tns], l->tns, sizeof l->tns);
+    }
     for (k = 0; k < 3; k++) {
         if (!(l->units_given & (1 << k))) {
             layout_unit(l, m->unit[k]);
@@ -1090,14 +1094,13 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
         char near[300];
         (void)hx_names_near(m, f, near, sizeof near);
         /* ROS: the names' family, and a receive time read for want of the
-         * message's own stamp (%time, bagpy's Time; beside a split stamp) */
+         * message's own stamp (%time, bagpy's Time) */
         const int receive = m->ros && m->col[0] >= 0 &&
                             (hx_name_eq(f[m->col[0]], "Time") || hx_name_eq(f[m->col[0]], "%time"));
-        add_warn(r, "%s: header read as %s (%s%s%s%s%s; give --columns to choose otherwise)", r->path,
+        add_warn(r, "%s: header read as %s (%s%s%s%s; give --columns to choose otherwise)", r->path,
                  hx_names_give(m, f, give, sizeof give),
                  m->ros ? "a ROS sensor_msgs/Imu's names matched, in SI units as REP 103 sets them" : "names matched",
-                 receive ? "; the time is the bag's receive time" : "",
-                 receive && m->nnear[0] > 0 ? " (the message's stamp, split in two columns, is not read)" : "",
+                 receive ? "; the time is the bag's receive time, the message's stamp not found" : "",
                  near[0] != '\0' ? "; not read: " : "", near);
     }
 }
@@ -1316,6 +1319,29 @@ static int consensys_units(hx_reader_t *r)
     return 0;
 }
 
+/* The column of nanoseconds added to t (layout.tns: --columns tns=, or
+ * a ROS stamp split in two columns): found, or an error naming it; it
+ * adds to whole seconds, so t must be read in s. 0 ok, -1 error. */
+static int tns_column(hx_reader_t *r, char **f, int n)
+{
+    const char *why = r->layout.names_matched ? "the split stamp's nanoseconds" : "the name --columns gives tns";
+    r->col_tns = hx_find_col(f, n, r->layout.tns);
+    if (r->col_tns < 0) {
+        set_err(r, "%s:%ld: header has no column '%s' (%s)", r->path, r->stats.lines, r->layout.tns, why);
+        return -1;
+    }
+    if (r->col_t < 0 || r->layout.time_digits != 9) {
+        set_err(r, "%s:%ld: --columns tns=%s adds nanoseconds to the whole seconds of a time column: %s", r->path,
+                r->stats.lines, r->layout.tns,
+                r->col_t < 0 ? "give the seconds' column with t=NAME" : "its unit must be s (--units time=s)");
+        return -1;
+    }
+    if (r->col_tns + 1 > r->ncols_needed) {
+        r->ncols_needed = r->col_tns + 1;
+    }
+    return 0;
+}
+
 static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_required)
 {
     char *f[HX_MAX_COLS], dc_first[64], matched[1000] = "";
@@ -1395,6 +1421,9 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
                 time_beside(r, f, n);
             }
             r->consensys = consensys;
+            if (r->meta.format == HX_FMT_CSV && r->layout.tns[0] != '\0' && tns_column(r, f, n) != 0) {
+                return -1;
+            }
             return consensys ? consensys_units(r) : 0;
         }
         if (r->meta.format == HX_FMT_CSV && !tried && total <= HX_MAX_COLS && !dc_line && !all_numeric(f, n)) {
@@ -1631,6 +1660,7 @@ static int setup_text(hx_reader_t *r, double rate_hz)
     r->gyr_scale = 1.0;
     r->col_temp = -1;
     r->col_aux = -1;
+    r->col_tns = -1;
     r->missing_col = -1;
     r->delim = ',';
     switch (m->format) {
@@ -2137,6 +2167,17 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
                                   "nanoseconds: --units time=ms or time=ns)"
                                 : not_a_number(f[r->col_t]));
             return prc == -2 ? FNAV_E_NANINF : FNAV_E_FORMAT;
+        }
+        if (r->col_tns >= 0) {
+            /* a stamp split in whole seconds and nanoseconds (ROS) */
+            int64_t ns;
+            if (parse_time_ns(f[r->col_tns], 0, &ns) != 0 || ns < 0 || ns > 999999999 ||
+                strpbrk(f[r->col_tns], ".eE") != NULL) {
+                set_err(r, "%s:%ld: nanoseconds ('%.20s', column '%s') are not a whole number from 0 to 999999999",
+                        r->path, r->stats.lines, f[r->col_tns], r->layout.tns);
+                return FNAV_E_FORMAT;
+            }
+            t_ns += ns;
         }
         s->seq = (uint32_t)r->index;
         break;
@@ -3941,9 +3982,21 @@ int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t 
     while ((rc = next_item(&p, "--columns", key, sizeof key, val, sizeof val, err, err_size)) > 0) {
         for (i = 0; i < 8 && strcmp(key, k_csv_names[i]) != 0; i++) {
         }
+        if (i == 8 && strcmp(key, "tns") == 0) {
+            /* the nanoseconds of a stamp split in two columns */
+            if (l->tns[0] != '\0' || val[0] == '\0' || strspn(val, " \t\"'") == strlen(val) ||
+                strlen(val) >= sizeof l->tns) {
+                snprintf(err, err_size, "--columns: tns=%s", l->tns[0] != '\0' ? " given twice"
+                                                              : val[0] == '\0' ? " has an empty name"
+                                                                               : ": a name too long");
+                return -1;
+            }
+            memcpy(l->tns, val, strlen(val) + 1);
+            continue;
+        }
         if (i == 8) {
             snprintf(err, err_size, "--columns: unknown column '%s' (the interchange names: t, ax, ay, az, gx, gy, "
-                                    "gz, temp)", key);
+                                    "gz, temp; and tns, nanoseconds added to t)", key);
             return -1;
         }
         if (seen & (1 << i)) {
@@ -3965,9 +4018,16 @@ int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t 
     if (rc < 0) {
         return -1;
     }
-    if (seen == 0) {
+    if (seen == 0 && l->tns[0] == '\0') {
         snprintf(err, err_size, "--columns: no KEY=NAME given (e.g. t=timestamp_ns,ax=acc_x)");
         return -1;
+    }
+    for (i = 0; i < 8 && l->tns[0] != '\0'; i++) {
+        const char *a = l->names[i][0] != '\0' ? l->names[i] : k_csv_names[i];
+        if (hx_name_eq(a, l->tns)) {
+            snprintf(err, err_size, "--columns: column '%s' is named for both %s and tns", a, k_csv_names[i]);
+            return -1;
+        }
     }
     /* one column of the file for two quantities (named twice, or named
      * for one key while another keeps it as its default) */

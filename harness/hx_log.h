@@ -92,6 +92,8 @@ const char *hx_format_list(void);
  *  interchange column and the units of its time, accelerations and rates. */
 typedef struct {
     char names[8][64];  /**< the file's column for t, ax, ay, az, gx, gy, gz, temp; "" keeps the default name */
+    char tns[64];       /**< the column of nanoseconds added to t, in whole s (--columns tns=, ROS's
+                             header.stamp.nsecs beside header.stamp.secs); "" none */
     int time_digits;    /**< ns per unit of the time column as a power of ten: 9 s, 6 ms, 3 us, 0 ns */
     double acc_scale;   /**< m/s^2 per unit of the accelerations (1, HX_G_MPS2 for g, HX_MG_MPS2 for mg, HX_UG_MPS2 for ug) */
     double gyr_scale;   /**< rad/s per unit of the rates (1, HX_DPS_RPS for deg/s, HX_MDPS_RPS for mdps) */
@@ -113,7 +115,7 @@ const char *hx_accel_unit_name(double acc_scale);
 /** The interchange names and units (t,ax,...,temp in s, m/s^2, rad/s). */
 void hx_csv_layout_default(hx_csv_layout_t *l);
 /** Parse a --columns MAP ("t=timestamp_ns,ax=acc_x,..."; keys t, ax, ay, az,
- *  gx, gy, gz, temp) into l. 0 ok; -1 with a message in err (an unknown key,
+ *  gx, gy, gz, temp, and tns: nanoseconds added to t's whole seconds) into l. 0 ok; -1 with a message in err (an unknown key,
  *  a key given twice, a missing '=', an empty name, one column named for two
  *  keys, counting the default names of the keys not given). */
 int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t err_size);

@@ -507,11 +507,13 @@ static void rank_match(char *const *f, int n, const name_row_t *tab, int (*row_o
 /* ROS sensor_msgs/Imu messages written as CSV: by `rostopic echo -p`
  * (each name after "field.", the stamps in ns: %time the bag's receive
  * time, field.header.stamp the driver's) or by bagpy (no prefix; Time the
- * receive time in s, the header stamp split in secs and nsecs). The names
- * after an optional "field.", in lower case; the highest rank of a key is
- * read, rank 0 never (named as not read: a stamp split in two columns).
- * REP 103 fixes the units (m/s^2, rad/s) and REP 145 keeps gravity in
- * linear_acceleration: the specific force an IMU measures. */
+ * receive time in s, the header stamp split in secs and nsecs; ROS 2's
+ * tools: sec and nanosec). The names after an optional "field.", in lower
+ * case; the highest rank of a key is read; the split stamp's rows, rank 0,
+ * are read as a pair by ros_split_stamp, before the receive time.
+ * REP 103 fixes the units (m/s^2, rad/s); REP 145 has a driver publish
+ * what the device reports, gravity not removed: linear_acceleration is
+ * the specific force an IMU measures. */
 static const name_row_t k_ros[] = {
     { "header.stamp", 0, 3, HX_UNIT_NS },          { "%time", 0, 2, HX_UNIT_NS },
     { "time", 0, 1, HX_UNIT_S },                   { "header.stamp.secs", 0, 0, HX_UNIT_NONE },
@@ -539,6 +541,50 @@ static int ros_row(const char *name)
         }
     }
     return -1;
+}
+
+/* A stamp split in whole seconds and nanoseconds (bagpy's
+ * header.stamp.secs and .nsecs, ROS 2's .sec and .nanosec), both there,
+ * read as the time when no field.header.stamp is: the seconds as t (in s),
+ * the nanoseconds as m->col_tns; the receive time and any other time name
+ * become near misses. */
+static void ros_split_stamp(char *const *f, int n, hx_names_match_t *m)
+{
+    static const char *const pairs[2][2] = { { "header.stamp.secs", "header.stamp.nsecs" },
+                                             { "header.stamp.sec", "header.stamp.nanosec" } };
+    int p, i;
+    for (i = 0; i < m->ncand[0] && i < 3; i++) {
+        const int k = ros_row(f[m->cand[0][i]]);
+        if (k >= 0 && strcmp(k_ros[k].text, "header.stamp") == 0) {
+            return; /* the message's stamp in one column */
+        }
+    }
+    for (p = 0; p < 2; p++) {
+        int secs = -1, nsecs = -1;
+        for (i = 0; i < n; i++) {
+            const int k = ros_row(f[i]);
+            if (k >= 0 && secs < 0 && strcmp(k_ros[k].text, pairs[p][0]) == 0) {
+                secs = i;
+            } else if (k >= 0 && nsecs < 0 && strcmp(k_ros[k].text, pairs[p][1]) == 0) {
+                nsecs = i;
+            }
+        }
+        if (secs < 0 || nsecs < 0) {
+            continue;
+        }
+        m->ncand[0] = 0;
+        m->nnear[0] = 0;
+        add_col(&m->ncand[0], m->cand[0], secs);
+        for (i = 0; i < n; i++) {
+            const int k = ros_row(f[i]);
+            if (k >= 0 && k_ros[k].key == 0 && i != secs && i != nsecs) {
+                add_col(&m->nnear[0], m->near[0], i);
+            }
+        }
+        m->col_tns = nsecs;
+        m->unit[0] = HX_UNIT_S;
+        return;
+    }
 }
 
 int hx_names_ros(char *const *f, int n)
@@ -582,6 +628,7 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
     int i, k;
     memset(m, 0, sizeof *m);
     m->unit_col = -1;
+    m->col_tns = -1;
     for (k = 0; k < 7; k++) {
         m->col[k] = -1;
     }
@@ -599,6 +646,7 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
     } else if (hx_names_ros(f, n)) {
         m->ros = 1;
         rank_match(f, n, k_ros, ros_row, m);
+        ros_split_stamp(f, n, m);
     }
     for (i = 0; i < n && !m->consensys && !m->ros; i++) {
         hx_name_class_t c;
@@ -697,6 +745,11 @@ const char *hx_names_give(const hx_names_match_t *m, char *const *f, char *buf, 
             cat(map, sizeof map, k_keys[k]);
             cat(map, sizeof map, "=");
             cat(map, sizeof map, name);
+            if (k == 0 && m->col_tns >= 0) {
+                hx_name_bare(f[m->col_tns], name, sizeof name);
+                cat(map, sizeof map, ",tns=");
+                cat(map, sizeof map, name);
+            }
         }
     }
     for (i = 0; map[i] != '\0'; i++) {

@@ -65,9 +65,10 @@ int hx_names_consensys(char *const *f, int n);
  *  (rostopic echo -p's field.linear_acceleration.x, bagpy's
  *  linear_acceleration.x): it names one of linear_acceleration.x/y/z and
  *  one of angular_velocity.x/y/z, after an optional "field." (case
- *  ignored). Matched from those names (SI units) and the header stamp in ns
- *  (field.header.stamp), else %time (ns) or bagpy's Time (s); a stamp split
- *  in header.stamp.secs and .nsecs is not read (a near miss). */
+ *  ignored). Matched from those names (SI units) and the message's stamp:
+ *  field.header.stamp in ns, else split in header.stamp.secs and .nsecs
+ *  (ROS 2: .sec and .nanosec; col_tns), else the receive time, %time in ns
+ *  or bagpy's Time in s. */
 int hx_names_ros(char *const *f, int n);
 
 /** The unit of a units row's field (Consensys: "ms", "m/(s^2)", "deg/s"),
@@ -89,6 +90,7 @@ void hx_name_bare(const char *name, char *out, size_t size);
 typedef struct {
     int ok;             /**< 1: each of ax..gz one column, t at most one, one unit per quantity */
     int col[7];         /**< the column of t, ax..gz; -1 none (or ambiguous: ncand > 1) */
+    int col_tns;        /**< the nanoseconds added to t, a stamp split in two columns (ROS); -1 none */
     int ncand[7];       /**< the columns that match each key */
     int cand[7][3];     /**< the first three of them */
     int nnear[7];       /**< near misses of each key */

@@ -1940,11 +1940,12 @@ static void test_datetime_stamps(void **state)
 
 /* A ROS sensor_msgs/Imu topic written as CSV and EuRoC's ASL format, read
  * without options: rostopic echo -p's header stamp in ns (not %time, the
- * receive time), bagpy's Time in s beside a stamp split in two columns
- * (named as not read), the ROS 2 split stamp alone (no time: refused with
- * the option), Android's gravity-free linear_acceleration_x not taken for
- * ROS's; EuRoC's commented header "#timestamp [ns],w_RS_S_x [rad s^-1],..."
- * with the rates first. Expected values are the file's numbers. */
+ * receive time), bagpy's stamp split in secs and nsecs (not Time, the
+ * receive time), ROS 2's split in sec and nanosec, bagpy's Time when no
+ * stamp is there (said to be the receive time); Android's gravity-free
+ * linear_acceleration_x not taken for ROS's; EuRoC's commented header
+ * "#timestamp [ns],w_RS_S_x [rad s^-1],..." with the rates first. Expected
+ * values are the file's numbers. */
 static void test_ros_euroc(void **state)
 {
     static const char *const ros1 =
@@ -1957,12 +1958,15 @@ static void test_ros_euroc(void **state)
     static const char *const bagpy =
         "Time,header.seq,header.stamp.secs,header.stamp.nsecs,header.frame_id,angular_velocity.x,"
         "angular_velocity.y,angular_velocity.z,linear_acceleration.x,linear_acceleration.y,linear_acceleration.z\n"
-        "1700000000.0012,0,1700000000,0,imu,0.5,-0.25,0.125,1.5,-2.5,9.75\n"
-        "1700000000.0062,1,1700000000,2500000,imu,0.5,-0.25,0.125,1.5,-2.5,9.75\n";
+        "1700000000.0012,0,1700000000,999000000,imu,0.5,-0.25,0.125,1.5,-2.5,9.75\n"
+        "1700000000.0062,1,1700000001,1500000,imu,0.5,-0.25,0.125,1.5,-2.5,9.75\n";
     static const char *const ros2 =
         "header.stamp.sec,header.stamp.nanosec,angular_velocity.x,angular_velocity.y,angular_velocity.z,"
         "linear_acceleration.x,linear_acceleration.y,linear_acceleration.z\n"
-        "1700000000,0,0.5,-0.25,0.125,1.5,-2.5,9.75\n";
+        "1700000000,0,0.5,-0.25,0.125,1.5,-2.5,9.75\n1700000000,2500000,0.5,-0.25,0.125,1.5,-2.5,9.75\n";
+    static const char *const bagpy_time =
+        "Time,angular_velocity.x,angular_velocity.y,angular_velocity.z,linear_acceleration.x,"
+        "linear_acceleration.y,linear_acceleration.z\n1700000000.0012,0.5,-0.25,0.125,1.5,-2.5,9.75\n";
     static const char *const android =
         "time,linear_acceleration_x,linear_acceleration_y,linear_acceleration_z,angular_velocity_x,"
         "angular_velocity_y,angular_velocity_z\n0,1.5,-2.5,0.5,0.5,-0.25,0.125\n";
@@ -1985,22 +1989,31 @@ static void test_ros_euroc(void **state)
     assert_string_equal(m.sensor, "ROS sensor_msgs/Imu");
     if (strstr(ra.warn, "--columns t=field.header.stamp,ax=field.linear_acceleration.x") == NULL ||
         strstr(ra.warn, "--units time=ns (a ROS sensor_msgs/Imu's names matched") == NULL ||
-        strstr(ra.warn, "not read: %time") == NULL) {
+        strstr(ra.warn, "not read: %time") == NULL || strstr(ra.warn, "receive time") != NULL) {
         fail_msg("rostopic: %s", ra.warn);
     }
     write_text(p, bagpy);
     assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &m), 0);
     assert_int_equal(ra.n, 2);
-    assert_true(ra.s[0].t_ns == 1700000000001200000LL && ra.s[1].t_ns == 1700000000006200000LL);
-    if (strstr(ra.warn, "--columns t=Time,") == NULL || strstr(ra.warn, "the bag's receive time") == NULL ||
-        strstr(ra.warn, "not read: header.stamp.secs, header.stamp.nsecs") == NULL) {
+    assert_true(ra.s[0].t_ns == 1700000000999000000LL && ra.s[1].t_ns == 1700000001001500000LL);
+    if (strstr(ra.warn, "--columns t=header.stamp.secs,tns=header.stamp.nsecs,ax=") == NULL ||
+        strstr(ra.warn, "not read: Time") == NULL || strstr(ra.warn, "--units") != NULL) {
         fail_msg("bagpy: %s", ra.warn);
     }
     write_text(p, ros2);
-    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
-    if (strstr(ra.err, "no time column (near misses: header.stamp.sec, header.stamp.nanosec): give the log's rate "
-                       "with --input-rate HZ") == NULL) {
-        fail_msg("ros 2: %s", ra.err);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+    assert_int_equal(ra.n, 2);
+    assert_true(ra.s[0].t_ns == 1700000000000000000LL && ra.s[1].t_ns == 1700000000002500000LL);
+    if (strstr(ra.warn, "--columns t=header.stamp.sec,tns=header.stamp.nanosec,") == NULL) {
+        fail_msg("ros 2: %s", ra.warn);
+    }
+    write_text(p, bagpy_time);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+    assert_int_equal(ra.n, 1);
+    assert_true(ra.s[0].t_ns == 1700000000001200000LL);
+    if (strstr(ra.warn, "--columns t=Time,") == NULL ||
+        strstr(ra.warn, "the time is the bag's receive time, the message's stamp not found") == NULL) {
+        fail_msg("bagpy's Time: %s", ra.warn);
     }
     write_text(p, android);
     assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
@@ -3445,6 +3458,73 @@ static void test_names_match(void **state)
     }
 }
 
+/* --columns tns=NAME: nanoseconds added to t's whole seconds (a stamp split
+ * in two columns, as ROS writes it); the sum exact to the ns; each wrong
+ * use refused with its reason: a nanoseconds value out of 0..999999999 or
+ * not whole, a column not in the header, t in ms, tns given twice or named
+ * for another key too. */
+static void test_columns_tns(void **state)
+{
+    static const char *const head = "sec,nsec,ax,ay,az,gx,gy,gz\n";
+    static const struct {
+        const char *row, *err;
+    } bad[] = {
+        { "5,1000000000,0,0,1,0,0,0\n", "nanoseconds ('1000000000', column 'nsec') are not a whole number" },
+        { "5,-1,0,0,1,0,0,0\n", "nanoseconds ('-1', column 'nsec')" },
+        { "5,2.5,0,0,1,0,0,0\n", "nanoseconds ('2.5', column 'nsec')" },
+        { "5,x,0,0,1,0,0,0\n", "nanoseconds ('x', column 'nsec')" },
+    };
+    char p[256], err[320], text[256];
+    readall_t ra;
+    hx_csv_layout_t l;
+    size_t k;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "sec,nsec,ax,ay,az,gx,gy,gz\n1764460800,999999999,0,0,1,0,0,0\n1764460801,2500000,0,0,1,0,0,0\n");
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "t=sec,tns=nsec", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+    assert_int_equal(ra.n, 2);
+    assert_true(ra.s[0].t_ns == 1764460800999999999LL && ra.s[1].t_ns == 1764460801002500000LL);
+    for (k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        snprintf(text, sizeof text, "%s%s", head, bad[k].row);
+        write_text(p, text);
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+        assert_int_equal(ra.n, 0);
+        if (strstr(ra.err, bad[k].err) == NULL) {
+            fail_msg("%s: %s", bad[k].row, ra.err);
+        }
+    }
+    /* no such column; t in ms */
+    assert_int_equal(hx_csv_columns_parse(&l, "tns=nanos", err, sizeof err), -1); /* given twice */
+    assert_non_null(strstr(err, "tns= given twice"));
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "t=sec,tns=nanos", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
+    if (strstr(ra.err, "header has no column 'nanos' (the name --columns gives tns)") == NULL) {
+        fail_msg("no column: %s", ra.err);
+    }
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "t=sec,tns=nsec", err, sizeof err), 0);
+    assert_int_equal(hx_csv_units_parse(&l, "time=ms", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
+    if (strstr(ra.err, "--columns tns=nsec adds nanoseconds to the whole seconds of a time column: its unit must "
+                       "be s") == NULL) {
+        fail_msg("ms: %s", ra.err);
+    }
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "t=sec,tns=sec", err, sizeof err), -1);
+    assert_non_null(strstr(err, "column 'sec' is named for both t and tns"));
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "tns=", err, sizeof err), -1);
+    assert_non_null(strstr(err, "tns= has an empty name"));
+    hx_reader_set_layout(NULL);
+    unlink(p);
+}
+
 /* The reader: a header refused before is read with the names matched and
  * the units they name, said once as the options; one refused still is
  * refused with the candidates */
@@ -4542,6 +4622,7 @@ int main(void)
         cmocka_unit_test(test_mtmgr_dot_marks),
         cmocka_unit_test(test_mtmgr_stated_rate),
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
+        cmocka_unit_test_teardown(test_columns_tns, layout_reset),
         cmocka_unit_test(test_name_classify),
         cmocka_unit_test(test_names_match),
         cmocka_unit_test(test_name_units_utf8),

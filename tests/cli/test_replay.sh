@@ -271,7 +271,8 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # ms, deg/s, the wide-range accelerometer beside a low-noise one clipped at
 # +-2 g; before, refused with near misses), nor a ROS sensor_msgs/Imu topic
 # as rostopic echo -p writes it (ros: stamps in ns; before, "header has no
-# column 't'") or EuRoC's ASL format (euroc: "#timestamp [ns],w_RS_S_x [rad
+# column 't'") or bagpy (bagpy: the stamp split in secs and nsecs) or
+# EuRoC's ASL format (euroc: "#timestamp [ns],w_RS_S_x [rad
 # s^-1],..."; before, "the first line is data, not a header").
 # xup turns gravity at rest onto +x exactly (y90 leaves this walk's tilted
 # sensor 30 deg from that). The summary's heading change (of a body vector
@@ -281,7 +282,7 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # how the renewals hold the heading (they can turn it by 87 and 110 deg).
 expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/m.csv" --to csv
 expect_exit 0 "replay the walk as recorded" "$H" replay "$T/m.csv" --out "$T/m_ref.csv" --json "$T/m_ref.json" --quiet
-for rot in y90 x180 xyz xup epoch iso shimmer ros euroc; do
+for rot in y90 x180 xyz xup epoch iso shimmer ros bagpy euroc; do
     /usr/bin/python3 - "$T/m.csv" "$T/m_$rot.csv" "$rot" <<'PY'
 import sys, numpy as np
 d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
@@ -297,7 +298,7 @@ def onto_x(d):
     K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
     return np.eye(3) + s * K + (1.0 - u[0]) * K @ K  # Rodrigues: u onto +x
 M = {'y90': r('y', 90), 'x180': r('x', 180), 'xyz': r('z', 122) @ r('y', -61) @ r('x', 37), 'epoch': np.eye(3),
-     'iso': np.eye(3), 'shimmer': np.eye(3), 'ros': np.eye(3), 'euroc': np.eye(3)}.get(sys.argv[3])
+     'iso': np.eye(3), 'shimmer': np.eye(3), 'ros': np.eye(3), 'bagpy': np.eye(3), 'euroc': np.eye(3)}.get(sys.argv[3])
 if M is None:
     M = onto_x(d)
 t0 = 1.7e9 if sys.argv[3] == 'epoch' else 0.0
@@ -338,6 +339,18 @@ elif sys.argv[3] == 'ros':
             f.write('%d,%d,%d,imu_link,0,0,0,1,' % (ns + 1234567, i, ns) + ','.join(['0'] * 9) + ',' +
                     ','.join('%.9g' % v for v in gi) + ',' + ','.join(['0'] * 9) + ',' +
                     ','.join('%.9g' % v for v in ai) + ',' + ','.join(['0'] * 9) + '\n')
+elif sys.argv[3] == 'bagpy':
+    # bagpy's CSV of the same topic: the receive time Time in s (1.2 ms
+    # late, rounded to the us: not read), the stamp in secs and nsecs
+    names = ['Time', 'header.seq', 'header.stamp.secs', 'header.stamp.nsecs', 'header.frame_id'] + \
+        ['orientation.%s' % c for c in 'xyzw'] + ['angular_velocity.%s' % c for c in 'xyz'] + \
+        ['linear_acceleration.%s' % c for c in 'xyz']
+    with open(sys.argv[2], 'w') as f:
+        f.write(','.join(names) + '\n')
+        for i, (ti, ai, gi) in enumerate(zip(d['t'], a, g)):
+            ns = int(round(ti * 1e9)) + 1700000000 * 10**9
+            f.write('%.6f,%d,%d,%d,imu_link,0,0,0,1,' % ((ns + 1234567) / 1e9, i, ns // 10**9, ns % 10**9) +
+                    ','.join('%.9g' % v for v in list(gi) + list(ai)) + '\n')
 elif sys.argv[3] == 'euroc':
     # EuRoC's and TUM-VI's ASL format: a commented header, the rates first
     with open(sys.argv[2], 'w') as f:

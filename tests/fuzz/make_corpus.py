@@ -147,6 +147,11 @@ def main():
         b'field.angular_velocity.y,field.angular_velocity.z,field.linear_acceleration.x,field.linear_acceleration.y,'
         b'field.linear_acceleration.z\n1700000000001234567,0,1700000000000000000,imu,0.5,-0.25,0.125,1.5,-2.5,9.75\n'
         b'1700000000006234567,1,1700000000002500000,imu,0.5,-0.25,0.125,1.5,-2.5,9.75\n')
+    put('log_reader', 'csv_ros_split', bytes([FMT['auto']]) +
+        b'Time,header.stamp.secs,header.stamp.nsecs,angular_velocity.x,angular_velocity.y,angular_velocity.z,'
+        b'linear_acceleration.x,linear_acceleration.y,linear_acceleration.z\n'
+        b'1700000000.0012,1700000000,999000000,0.5,-0.25,0.125,1.5,-2.5,9.75\n'
+        b'1700000000.0062,1700000001,1500000,0.5,-0.25,0.125,1.5,-2.5,9.75\n')
     put('log_reader', 'csv_euroc', bytes([FMT['auto']]) +
         b'#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],a_RS_S_x [m s^-2],'
         b'a_RS_S_y [m s^-2],a_RS_S_z [m s^-2]\r\n1403636579758555392,-0.0991,0.1424,0.0628,8.1334,-0.6456,-2.7136\r\n'
