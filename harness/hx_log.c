@@ -243,7 +243,29 @@ static char *trim(char *s)
     return s;
 }
 
-/* Split line in place; returns the number of fields. */
+/* Whether the len characters at s are a date, YYYY-MM-DD or YYYY/MM/DD,
+ * and the text at next starts with a clock time, h:mm or hh:mm: a date and
+ * time that blanks would split in two. */
+static int date_then_time(const char *s, size_t len, const char *next)
+{
+    size_t i;
+    const size_t h = isdigit((unsigned char)next[1]) ? 2 : 1;
+    if (len != 10 || (s[4] != '-' && s[4] != '/') || s[7] != s[4]) {
+        return 0;
+    }
+    for (i = 0; i < 10; i++) {
+        if (i != 4 && i != 7 && !isdigit((unsigned char)s[i])) {
+            return 0;
+        }
+    }
+    return isdigit((unsigned char)next[0]) && next[h] == ':' && isdigit((unsigned char)next[h + 1]) &&
+           isdigit((unsigned char)next[h + 2]);
+}
+
+/* Split line in place; returns the number of fields. Blank-separated
+ * (delim ' '): runs of blanks separate, except between a date and a clock
+ * time, which stay one field with one blank between them ("2024-05-01
+ * 12:00:00.5", as a date and time is written). */
 static int split(char *line, char delim, char **f, int max)
 {
     int n = 0, quoted = 0;
@@ -257,7 +279,20 @@ static int split(char *line, char delim, char **f, int max)
                 break;
             }
             f[n++] = p;
-            while (*p != '\0' && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\n') {
+            for (;;) {
+                char *q = p;
+                while (*p != '\0' && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\n') {
+                    p++;
+                }
+                q = p;
+                while (*q == ' ' || *q == '\t') {
+                    q++;
+                }
+                if (*p == '\0' || *q == '\0' || !date_then_time(f[n - 1], (size_t)(p - f[n - 1]), q)) {
+                    break;
+                }
+                *p = ' '; /* the date's blanks as one: the time follows in the same field */
+                memmove(p + 1, q, strlen(q) + 1);
                 p++;
             }
             if (*p != '\0') {

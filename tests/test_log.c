@@ -1908,6 +1908,25 @@ static void test_datetime_stamps(void **state)
             fail_msg("case %zu (%s): end %d, n %ld, t_ns %lld: %s", i, stamp, (int)r.end, (long)r.n,
                      r.n > 0 ? (long long)r.s[0].t_ns : 0LL, r.err);
         }
+        if (strchr(stamp, ',') == NULL) {
+            /* blank-separated columns, runs of blanks and tabs: the date
+             * and its time stay one field, whatever blanks part them */
+            char spaced[64];
+            const char *sp = strchr(stamp, ' ');
+            if (sp != NULL) {
+                snprintf(spaced, sizeof spaced, "%.*s \t  %s", (int)(sp - stamp), stamp, sp + 1);
+            } else {
+                snprintf(spaced, sizeof spaced, "%s", stamp);
+            }
+            snprintf(text, sizeof text, "t  ax ay  az gx gy gz\n%s   0.5 0.2\t9.8 0.1 0.2 0.3\n", spaced);
+            write_text(p, text);
+            assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &r, NULL), 0);
+            if (r.end != FNAV_END || r.n != 1 || r.s[0].t_ns != want || (float)r.s[0].accel_mps2[0] != 0.5f ||
+                (float)r.s[0].gyro_rps[2] != 0.3f) {
+                fail_msg("blank-separated case %zu (%s): end %d, n %ld, t_ns %lld: %s", i, spaced, (int)r.end,
+                         (long)r.n, r.n > 0 ? (long long)r.s[0].t_ns : 0LL, r.err);
+            }
+        }
         unlink(p);
     }
     for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {

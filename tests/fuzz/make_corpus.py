@@ -133,6 +133,10 @@ def main():
     put('log_reader', 'csv_datetime', bytes([FMT['auto']]) +
         b'Timestamp (UTC),ax,ay,az,gx,gy,gz\n2024-05-01T14:00:00.0025+02:00,0.1,0.2,-9.8,0.01,0.02,0.03\n'
         b'2024/05/01 12:00:00.0075Z,0.1,0.2,-9.8,0.01,0.02,0.03\n23:59:59,0.1,0.2,-9.8,0.01,0.02,0.03\n')
+    # blank-separated columns, a date and its time parted by blanks
+    put('log_reader', 'blank_datetime', bytes([FMT['auto']]) +
+        b't ax ay az gx gy gz\n2024-05-01 12:00:00.0025 0.1 0.2 -9.8 0.01 0.02 0.03\n'
+        b'2024/05/01  \t 12:00:00.0075Z  0.1 0.2 -9.8 0.01 0.02 0.03\n')
     # Shimmer's Consensys export: separator line, <device>_<signal>_CAL, units row
     put('log_reader', 'csv_consensys', bytes([FMT['auto']]) +
         b'"sep=\t"\r\nP_Timestamp_Unix_CAL\tP_Accel_LN_X_CAL\tP_Accel_LN_Y_CAL\tP_Accel_LN_Z_CAL\t'
