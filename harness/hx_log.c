@@ -280,7 +280,7 @@ static int split(char *line, char delim, char **f, int max)
             }
             f[n++] = p;
             for (;;) {
-                char *q = p;
+                char *q;
                 while (*p != '\0' && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\n') {
                     p++;
                 }
@@ -1359,7 +1359,7 @@ static int consensys_units(hx_reader_t *r)
  * adds to whole seconds, so t must be read in s. 0 ok, -1 error. */
 static int tns_column(hx_reader_t *r, char **f, int n)
 {
-    const char *why = r->layout.names_matched ? "the split stamp's nanoseconds" : "the name --columns gives tns";
+    const char *why = g_layout.tns[0] != '\0' ? "the name --columns gives tns" : "the split stamp's nanoseconds";
     r->col_tns = hx_find_col(f, n, r->layout.tns);
     if (r->col_tns < 0) {
         set_err(r, "%s:%ld: header has no column '%s' (%s)", r->path, r->stats.lines, r->layout.tns, why);

@@ -3534,6 +3534,21 @@ static void test_columns_tns(void **state)
                        "be s") == NULL) {
         fail_msg("ms: %s", ra.err);
     }
+    /* tns alone, beside a header whose other names are matched */
+    write_text(p, "timestamp,nsec,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n17,5,0,0,1,0,0,0\n");
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "tns=nsec", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+    assert_int_equal(ra.n, 1);
+    assert_true(ra.s[0].t_ns == 17000000005LL);
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "tns=nanos", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), -1);
+    if (strstr(ra.err, "header has no column 'nanos' (the name --columns gives tns)") == NULL) {
+        fail_msg("tns alone: %s", ra.err);
+    }
     hx_csv_layout_default(&l);
     assert_int_equal(hx_csv_columns_parse(&l, "t=sec,tns=sec", err, sizeof err), -1);
     assert_non_null(strstr(err, "column 'sec' is named for both t and tns"));
