@@ -67,7 +67,7 @@ struct hx_reader {
     hx_meta_t meta;
     hx_read_stats_t stats;
     char err[HX_ERR_SIZE];      /* a refusal of names names the candidates (hx_names.h) */
-    char warn[512];
+    char warn[2048];            /* the warnings, one a line (a header's names matched take up to ~700 bytes) */
     size_t warn_taken;          /* bytes of warn already handed out by hx_reader_take_warnings */
     fnav_status_t deferred;     /* error to return at the end (bin) */
     int finished;
@@ -1377,6 +1377,56 @@ static int tns_column(hx_reader_t *r, char **f, int n)
     return 0;
 }
 
+/* A ROS topic read by the message's stamp (names matched, hx_names_ros)
+ * whose first row has it 0, as a driver that never sets the stamp writes
+ * it (rosserial's examples leave header.stamp unset): the bag's receive
+ * time beside it (%time in ns, bagpy's Time in s) is read instead, with a
+ * warning; the row is read again as data. 0 ok, -1 error. */
+static int ros_stamp_unset(hx_reader_t *r, char **f, int n)
+{
+    char name[64], stamp[64];
+    const long lines = r->stats.lines;
+    const z_off_t pos = gztell(r->gz);
+    int recv = hx_find_col(f, n, "%time"), digits = 0, m, rc;
+    double v, vns = 0.0;
+    if (recv < 0) {
+        recv = hx_find_col(f, n, "Time");
+        digits = 9;
+    }
+    if (recv < 0 || recv == r->col_t || r->col_t < 0) {
+        return 0;
+    }
+    hx_name_bare(f[recv], name, sizeof name);
+    hx_name_bare(f[r->col_t], stamp, sizeof stamp);
+    rc = read_line(r);
+    if (rc <= 0) {
+        return rc < 0 ? -1 : 0;
+    }
+    m = split(r->line, r->delim, f, HX_MAX_COLS);
+    rc = m > r->col_t && m > r->col_tns && parse_num(f[r->col_t], &v) == 0 && v == 0.0 &&
+         (r->col_tns < 0 || (parse_num(f[r->col_tns], &vns) == 0 && vns == 0.0));
+    if (pos < 0 || gzseek(r->gz, pos, SEEK_SET) != pos) {
+        set_err(r, "%s:%ld: cannot read the first row again (seek failed)", r->path, r->stats.lines);
+        return -1;
+    }
+    r->stats.lines = lines;
+    r->last_line_open = 0;
+    if (rc) {
+        add_warn(r, "%s:%ld: the message's stamp (%s) is 0: the driver left it unset; the bag's receive time, "
+                    "'%s', is read instead",
+                 r->path, lines + 1, stamp, name);
+        r->col_t = recv;
+        r->col_tns = -1;
+        r->layout.tns[0] = '\0';
+        copy_str(r->layout.names[0], sizeof r->layout.names[0], name);
+        r->layout.time_digits = digits;
+        if (recv + 1 > r->ncols_needed) {
+            r->ncols_needed = recv + 1;
+        }
+    }
+    return 0;
+}
+
 static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_required)
 {
     char *f[HX_MAX_COLS], dc_first[64], matched[1000] = "";
@@ -1457,6 +1507,9 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
             }
             r->consensys = consensys;
             if (r->meta.format == HX_FMT_CSV && r->layout.tns[0] != '\0' && tns_column(r, f, n) != 0) {
+                return -1;
+            }
+            if (r->ros && ros_stamp_unset(r, f, n) != 0) {
                 return -1;
             }
             return consensys ? consensys_units(r) : 0;

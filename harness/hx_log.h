@@ -231,7 +231,7 @@ typedef struct {
     double *temp;           /**< degC, NaN when unknown */
     fnav_status_t status;   /**< FNAV_END when read completely, else the error */
     char error[HX_ERR_SIZE]; /**< the error, if any */
-    char warnings[512];
+    char warnings[2048];    /**< the reader's warnings, one a line */
 } hx_log_t;
 
 /** 1 when the end characters of s before index end (strlen(s) for the

@@ -2011,6 +2011,21 @@ static void test_ros_euroc(void **state)
         strstr(ra.warn, "not read: %time") == NULL || strstr(ra.warn, "receive time") != NULL) {
         fail_msg("rostopic: %s", ra.warn);
     }
+    {
+        /* the stamp left 0 by the driver (rosserial's examples): %time read */
+        char text[1024];
+        snprintf(text, sizeof text, "%.*s1700000000001234567,0,0,imu,0,0,0,1,0.5,-0.25,0.125,1.5,-2.5,9.75\n"
+                                    "1700000000006234567,1,0,imu,0,0,0,1,0.5,-0.25,0.125,1.5,-2.5,9.75\n",
+                 (int)(strchr(ros1, '\n') - ros1 + 1), ros1);
+        write_text(p, text);
+        assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+        assert_int_equal(ra.n, 2);
+        assert_true(ra.s[0].t_ns == 1700000000001234567LL && ra.s[1].t_ns == 1700000000006234567LL);
+        if (strstr(ra.warn, ":2: the message's stamp (field.header.stamp) is 0: the driver left it unset; the "
+                            "bag's receive time, '%time', is read instead") == NULL) {
+            fail_msg("stamp unset: %s", ra.warn);
+        }
+    }
     write_text(p, bagpy);
     assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, &m), 0);
     assert_int_equal(ra.n, 2);
