@@ -885,7 +885,9 @@ static int full_interchange_header(const char *head)
 /* Whether a comment line (text after its '#') is the interchange header,
  * as numpy's savetxt writes it: "# t,ax,..." (the name t is enough), or
  * blank-separated "# t ax ay az gx gy gz" (all seven, so that a note such
- * as "# t is in seconds" is not taken for one). */
+ * as "# t is in seconds" is not taken for one): 1; or names read without
+ * --columns, a time and the six channels (EuRoC's "#timestamp [ns],..."):
+ * 2, a header only when data follows it (data_follows); else 0. */
 static int comment_header(const char *text)
 {
     char head[600], copy[2048], *f[HX_MAX_COLS];
@@ -904,7 +906,7 @@ static int comment_header(const char *text)
     copy_str(copy, sizeof copy, text);
     copy[strcspn(copy, "\n")] = '\0';
     n = split(copy, strchr(copy, ',') != NULL ? ',' : strchr(copy, '\t') != NULL ? '\t' : ';', f, HX_MAX_COLS);
-    return n >= 7 && hx_names_match(f, n, &m) && m.col[0] >= 0;
+    return n >= 7 && hx_names_match(f, n, &m) && m.col[0] >= 0 ? 2 : 0;
 }
 
 /* Excel's separator line before a header ("sep=," or "\"sep=\t\"", as
@@ -1427,6 +1429,37 @@ static int ros_stamp_unset(hx_reader_t *r, char **f, int n)
     return 0;
 }
 
+/* Whether the next line that is not blank is a row of data, its first
+ * field a number or a date: a comment of names before it is the header
+ * (comment_header 2); before another header line, or none, it is a note.
+ * The reader is left as it was, r->line too. 1 data, 0 not, -1 error. */
+static int data_follows(hx_reader_t *r)
+{
+    char keep[HX_LINE_MAX], first[64];
+    const long lines = r->stats.lines;
+    const z_off_t pos = gztell(r->gz);
+    int rc, data = 0;
+    memcpy(keep, r->line, sizeof keep);
+    while ((rc = read_line(r)) > 0 && blank(r->line)) {
+    }
+    if (rc > 0) {
+        const char *b = r->line + strspn(r->line, " \t\"");
+        double v;
+        int64_t t_ns;
+        snprintf(first, sizeof first, "%.*s", (int)strcspn(b, ",;\t \"\r\n"), b);
+        data = parse_num(first, &v) == 0 || parse_datetime_ns(first, &t_ns) == 0 ||
+               (strlen(first) == 10 && isdigit((unsigned char)first[0]) && (first[4] == '-' || first[4] == '/'));
+    }
+    if (pos < 0 || gzseek(r->gz, pos, SEEK_SET) != pos) {
+        set_err(r, "%s:%ld: cannot read the line after the header again (seek failed)", r->path, r->stats.lines);
+        return -1;
+    }
+    r->stats.lines = lines;
+    r->last_line_open = 0;
+    memcpy(r->line, keep, sizeof keep);
+    return data;
+}
+
 static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_required)
 {
     char *f[HX_MAX_COLS], dc_first[64], matched[1000] = "";
@@ -1455,8 +1488,18 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
             /* "# t,ax,...": the header behind the comment sign; any other
              * comment line before the header is skipped */
             char *h = strchr(r->line, '#') + 1;
-            if (!comment_header(h)) {
+            const int ch = comment_header(h);
+            if (ch == 0) {
                 continue;
+            }
+            if (ch == 2) {
+                const int data = data_follows(r);
+                if (data < 0) {
+                    return -1;
+                }
+                if (!data) {
+                    continue; /* a note naming the columns before the header itself */
+                }
             }
             while (*h == ' ' || *h == '\t') {
                 h++;

@@ -2064,6 +2064,13 @@ static void test_ros_euroc(void **state)
         strstr(ra.warn, "--units time=ns") == NULL) {
         fail_msg("euroc: %s", ra.warn);
     }
+    /* a comment naming the columns before the header itself is a note: the
+     * header under it is read (the comment is the header only before data) */
+    write_text(p, "# timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n\nt,ax,ay,az,gx,gy,gz\n"
+                  "0.5,1,2,3,4,5,6\n");
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+    assert_int_equal(ra.n, 1);
+    assert_true(ra.s[0].t_ns == 500000000LL && (float)ra.s[0].gyro_rps[2] == 6.0f);
     unlink(p);
 }
 
