@@ -67,7 +67,8 @@ struct hx_reader {
     hx_meta_t meta;
     hx_read_stats_t stats;
     char err[HX_ERR_SIZE];      /* a refusal of names names the candidates (hx_names.h) */
-    char warn[2048];            /* the warnings, one a line (a header's names matched take up to ~700 bytes) */
+    char warn[2048];            /* the warnings, one a line (a names-matched header's alone up to ~1000 bytes:
+                                   names_apply's 700 of mapping and 300 of near misses) */
     size_t warn_taken;          /* bytes of warn already handed out by hx_reader_take_warnings */
     fnav_status_t deferred;     /* error to return at the end (bin) */
     int finished;
@@ -243,14 +244,14 @@ static char *trim(char *s)
     return s;
 }
 
-/* Whether the len characters at s are a date, YYYY-MM-DD or YYYY/MM/DD,
+/* Whether the 10 characters at s are a date, YYYY-MM-DD or YYYY/MM/DD,
  * and the text at next starts with a clock time, h:mm or hh:mm: a date and
  * time that blanks would split in two. */
-static int date_then_time(const char *s, size_t len, const char *next)
+static int date_then_time(const char *s, const char *next)
 {
     size_t i;
-    const size_t h = isdigit((unsigned char)next[1]) ? 2 : 1;
-    if (len != 10 || (s[4] != '-' && s[4] != '/') || s[7] != s[4]) {
+    const size_t h = next[0] != '\0' && isdigit((unsigned char)next[1]) ? 2 : 1;
+    if ((s[4] != '-' && s[4] != '/') || s[7] != s[4]) {
         return 0;
     }
     for (i = 0; i < 10; i++) {
@@ -284,11 +285,12 @@ static int split(char *line, char delim, char **f, int max)
                 while (*p != '\0' && *p != ' ' && *p != '\t' && *p != '\r' && *p != '\n') {
                     p++;
                 }
-                q = p;
-                while (*q == ' ' || *q == '\t') {
-                    q++;
+                if (*p == '\0' || p - f[n - 1] != 10) {
+                    break; /* no date's length: nothing more to look at (every other field of a row) */
                 }
-                if (*p == '\0' || *q == '\0' || !date_then_time(f[n - 1], (size_t)(p - f[n - 1]), q)) {
+                for (q = p; *q == ' ' || *q == '\t'; q++) {
+                }
+                if (!date_then_time(f[n - 1], q)) {
                     break;
                 }
                 *p = ' '; /* the date's blanks as one: the time follows in the same field */
@@ -1102,7 +1104,7 @@ static int all_numeric(char **f, int n)
  * "Names read without --columns"): the names and the units they name into
  * r->layout (a --units item given keeps its unit), and the warning that says
  * it as the options that make it explicit. */
-static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
+static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f, int n)
 {
     hx_csv_layout_t *l = &r->layout;
     char give[700];
@@ -1132,8 +1134,8 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f)
         (void)hx_names_near(m, f, near, sizeof near);
         /* ROS: the names' family, and a receive time read for want of the
          * message's own stamp (%time, bagpy's Time) */
-        const int receive = m->ros && m->col[0] >= 0 &&
-                            (hx_name_eq(f[m->col[0]], "Time") || hx_name_eq(f[m->col[0]], "%time"));
+        hx_name_unit_t ru;
+        const int receive = m->ros && m->col[0] >= 0 && m->col[0] == hx_names_ros_receive(f, n, &ru);
         add_warn(r, "%s: header read as %s (%s%s%s%s; give --columns to choose otherwise)", r->path,
                  hx_names_give(m, f, give, sizeof give),
                  m->ros ? "a ROS sensor_msgs/Imu's names matched, in SI units as REP 103 sets them" : "names matched",
@@ -1289,6 +1291,20 @@ static void units_named_warn(hx_reader_t *r, char **f, int n)
     }
 }
 
+/* Back to pos, where the reader was before looking ahead (the line
+ * count lines then): the lines read since are read again. 0, or -1 with
+ * the error (a stream that cannot seek back). */
+static int read_again_from(hx_reader_t *r, z_off_t pos, long lines)
+{
+    if (pos < 0 || gzseek(r->gz, pos, SEEK_SET) != pos) {
+        set_err(r, "%s:%ld: cannot read the first row again (seek failed)", r->path, r->stats.lines);
+        return -1;
+    }
+    r->stats.lines = lines;
+    r->last_line_open = 0;
+    return 0;
+}
+
 /* The row of units under a Consensys header (hx_names_consensys): the
  * units of the time, accel and gyro columns read, for those --units does
  * not give, said in a warning. A row of data there instead (an export
@@ -1311,14 +1327,7 @@ static int consensys_units(hx_reader_t *r)
     n = split(r->line, r->delim, f, HX_MAX_COLS);
     if (r->col_t >= 0 && r->col_t < n &&
         (parse_num(f[r->col_t], &v) == 0 || parse_datetime_ns(f[r->col_t], &t_ns) == 0)) {
-        /* data: read again as the first row */
-        if (pos < 0 || gzseek(r->gz, pos, SEEK_SET) != pos) {
-            set_err(r, "%s:%ld: cannot read the first row again (seek failed)", r->path, r->stats.lines);
-            return -1;
-        }
-        r->stats.lines = lines;
-        r->last_line_open = 0;
-        return 0;
+        return read_again_from(r, pos, lines); /* data: read again as the first row */
     }
     for (q = 0; q < 3; q++) {
         const int *cols = q == 0 ? &r->col_t : q == 1 ? r->col_a : r->col_g;
@@ -1389,12 +1398,10 @@ static int ros_stamp_unset(hx_reader_t *r, char **f, int n)
     char name[64], stamp[64];
     const long lines = r->stats.lines;
     const z_off_t pos = gztell(r->gz);
-    int recv = hx_find_col(f, n, "%time"), digits = 0, m, rc;
+    hx_name_unit_t unit = HX_UNIT_NONE;
+    const int recv = hx_names_ros_receive(f, n, &unit), digits = unit == HX_UNIT_NS ? 0 : 9;
+    int m, rc;
     double v, vns = 0.0;
-    if (recv < 0) {
-        recv = hx_find_col(f, n, "Time");
-        digits = 9;
-    }
     if (recv < 0 || recv == r->col_t || r->col_t < 0) {
         return 0;
     }
@@ -1407,12 +1414,9 @@ static int ros_stamp_unset(hx_reader_t *r, char **f, int n)
     m = split(r->line, r->delim, f, HX_MAX_COLS);
     rc = m > r->col_t && m > r->col_tns && parse_num(f[r->col_t], &v) == 0 && v == 0.0 &&
          (r->col_tns < 0 || (parse_num(f[r->col_tns], &vns) == 0 && vns == 0.0));
-    if (pos < 0 || gzseek(r->gz, pos, SEEK_SET) != pos) {
-        set_err(r, "%s:%ld: cannot read the first row again (seek failed)", r->path, r->stats.lines);
+    if (read_again_from(r, pos, lines) != 0) {
         return -1;
     }
-    r->stats.lines = lines;
-    r->last_line_open = 0;
     if (rc) {
         add_warn(r, "%s:%ld: the message's stamp (%s) is 0: the driver left it unset; the bag's receive time, "
                     "'%s', is read instead",
@@ -1450,12 +1454,9 @@ static int data_follows(hx_reader_t *r)
         data = parse_num(first, &v) == 0 || parse_datetime_ns(first, &t_ns) == 0 ||
                (strlen(first) == 10 && isdigit((unsigned char)first[0]) && (first[4] == '-' || first[4] == '/'));
     }
-    if (pos < 0 || gzseek(r->gz, pos, SEEK_SET) != pos) {
-        set_err(r, "%s:%ld: cannot read the line after the header again (seek failed)", r->path, r->stats.lines);
+    if (read_again_from(r, pos, lines) != 0) {
         return -1;
     }
-    r->stats.lines = lines;
-    r->last_line_open = 0;
     memcpy(r->line, keep, sizeof keep);
     return data;
 }
@@ -1570,7 +1571,7 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
                 hx_names_match_t m;
                 tried = 1;
                 if (hx_names_match(f, n, &m) && (m.col[0] >= 0 || !time_required)) {
-                    names_apply(r, &m, f);
+                    names_apply(r, &m, f, n);
                     for (k = 0; k < 7; k++) {
                         if (r->layout.names[k][0] != '\0') {
                             names[k] = r->layout.names[k];

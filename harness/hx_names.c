@@ -31,8 +31,9 @@ static int axis_of(const char *w)
     return (w[0] >= 'x' && w[0] <= 'z' && w[1] == '\0') ? w[0] - 'x' : -1;
 }
 
-/* a unit word or bracket text (lower case, no blanks) */
-static hx_name_unit_t unit_of(const char *u)
+/* the unit of a unit word or bracket text (lower case, no blanks) when it
+ * is one of the spellings read; NONE else */
+static hx_name_unit_t unit_listed(const char *u)
 {
     static const struct {
         const char *text;
@@ -45,42 +46,41 @@ static hx_name_unit_t unit_of(const char *u)
         { "dps", HX_UNIT_DPS },     { "degs", HX_UNIT_DPS },    { "mdps", HX_UNIT_MDPS },  { "mdeg/s", HX_UNIT_MDPS },
         { "m/sec^2", HX_UNIT_MPS2 }, { "m/sec2", HX_UNIT_MPS2 }, { "rad/sec", HX_UNIT_RPS }, { "deg/sec", HX_UNIT_DPS },
     };
-    size_t i, j, len = strlen(u);
+    size_t i;
     for (i = 0; i < sizeof k_units / sizeof k_units[0]; i++) {
         if (strcmp(u, k_units[i].text) == 0) {
             return k_units[i].unit;
         }
     }
-    /* a negative power of the second, as SI writes a quotient: "m s^-2",
-     * "rad s^-1" (EuRoC's, TUM-VI's), "m.s-2", "deg*s^-1" (the blanks are
-     * gone here) are m/s^2, rad/s, deg/s */
-    for (i = 1; i <= 2; i++) {
-        const char *const tails[2][2] = { { "s^-1", "s-1" }, { "s^-2", "s-2" } };
-        size_t k;
-        for (k = 0; k < 2; k++) {
-            const size_t tl = strlen(tails[i - 1][k]);
-            char q[32];
-            size_t base = len - tl;
-            if (len <= tl || len >= sizeof q || strcmp(u + base, tails[i - 1][k]) != 0) {
-                continue;
-            }
-            if (u[base - 1] == '*' || u[base - 1] == '.') {
-                base--;
-            }
-            if (base == 0 || base + 5 >= sizeof q) {
-                continue;
-            }
-            memcpy(q, u, base);
-            memcpy(q + base, i == 1 ? "/s" : "/s^2", i == 1 ? 3 : 5);
-            for (j = 0; j < sizeof k_units / sizeof k_units[0]; j++) {
-                if (strcmp(q, k_units[j].text) == 0) {
-                    return k_units[j].unit;
-                }
-            }
-            return HX_UNIT_NONE;
-        }
-    }
     return HX_UNIT_NONE;
+}
+
+/* The unit of u: a spelling read, or one of them written as SI writes a
+ * quotient, with a negative power of the second: "m s^-2", "rad s^-1"
+ * (EuRoC's, TUM-VI's), "m.s-2", "deg*s^-1" (the blanks are gone here) are
+ * m/s^2, rad/s, deg/s. */
+static hx_name_unit_t unit_of(const char *u)
+{
+    const hx_name_unit_t listed = unit_listed(u);
+    size_t e = strlen(u);
+    char q[32];
+    int power;
+    if (listed != HX_UNIT_NONE || e < 4 || u[e - 2] != '-' || (u[e - 1] != '1' && u[e - 1] != '2')) {
+        return listed;
+    }
+    power = u[e - 1] - '0';
+    e -= 2;
+    e -= u[e - 1] == '^';
+    if (e == 0 || u[e - 1] != 's') {
+        return HX_UNIT_NONE;
+    }
+    e--;
+    e -= e > 0 && (u[e - 1] == '*' || u[e - 1] == '.');
+    if (e == 0 || e + 5 >= sizeof q) {
+        return HX_UNIT_NONE;
+    }
+    snprintf(q, sizeof q, "%.*s/s%s", (int)e, u, power == 2 ? "^2" : "");
+    return unit_listed(q);
 }
 
 const char *hx_name_unit_item(hx_name_unit_t u)
@@ -585,6 +585,22 @@ static void ros_split_stamp(char *const *f, int n, hx_names_match_t *m)
         m->unit[0] = HX_UNIT_S;
         return;
     }
+}
+
+int hx_names_ros_receive(char *const *f, int n, hx_name_unit_t *unit)
+{
+    int i, col = -1, rank = 0;
+    for (i = 0; i < n; i++) {
+        const int k = ros_row(f[i]);
+        /* the receive times: the time rows below the message's stamp (rank
+         * 3) and above the split stamp's halves (rank 0) */
+        if (k >= 0 && k_ros[k].key == 0 && k_ros[k].rank > rank && k_ros[k].rank < 3) {
+            col = i;
+            rank = k_ros[k].rank;
+            *unit = k_ros[k].unit;
+        }
+    }
+    return col;
 }
 
 int hx_names_ros(char *const *f, int n)

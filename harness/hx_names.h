@@ -71,6 +71,11 @@ int hx_names_consensys(char *const *f, int n);
  *  or bagpy's Time in s. */
 int hx_names_ros(char *const *f, int n);
 
+/** The column of a ROS topic's receive time among the n header fields f
+ *  (%time, in ns, before bagpy's Time, in s), its unit in *unit; -1 when
+ *  there is none. */
+int hx_names_ros_receive(char *const *f, int n, hx_name_unit_t *unit);
+
 /** The unit of a units row's field (Consensys: "ms", "m/(s^2)", "deg/s"),
  *  spelled as a bracketed unit of a name is (brackets inside, blanks and
  *  case ignored; "mSecs" is ms); HX_UNIT_NONE when none read. */
