@@ -1390,7 +1390,7 @@ static int tns_column(hx_reader_t *r, char **f, int n)
 
 /* A ROS topic read by the message's stamp (names matched, hx_names_ros)
  * whose first row has it 0, as a driver that never sets the stamp writes
- * it (rosserial's examples leave header.stamp unset): the bag's receive
+ * it (an unset header.stamp is 0): the bag's receive
  * time beside it (%time in ns, bagpy's Time in s) is read instead, with a
  * warning; the row is read again as data. 0 ok, -1 error. */
 static int ros_stamp_unset(hx_reader_t *r, char **f, int n)

@@ -2012,7 +2012,7 @@ static void test_ros_euroc(void **state)
         fail_msg("rostopic: %s", ra.warn);
     }
     {
-        /* the stamp left 0 by the driver (rosserial's examples): %time read */
+        /* the stamp left 0 by a driver that never sets it: %time read */
         char text[1024];
         snprintf(text, sizeof text, "%.*s1700000000001234567,0,0,imu,0,0,0,1,0.5,-0.25,0.125,1.5,-2.5,9.75\n"
                                     "1700000000006234567,1,0,imu,0,0,0,1,0.5,-0.25,0.125,1.5,-2.5,9.75\n",
