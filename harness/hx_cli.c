@@ -492,7 +492,7 @@ int hx_check_input_opts(const char *cmd, const hx_args_t *a)
 
 void hx_print_warnings(const char *cmd, const char *w)
 {
-    char buf[512];
+    char buf[HX_WARN_SIZE]; /* a reader's warnings whole (512 bytes cut a ROS header's second warning) */
     char *line, *save = NULL;
     if (w == NULL || *w == '\0') {
         return;

@@ -67,8 +67,7 @@ struct hx_reader {
     hx_meta_t meta;
     hx_read_stats_t stats;
     char err[HX_ERR_SIZE];      /* a refusal of names names the candidates (hx_names.h) */
-    char warn[2048];            /* the warnings, one a line (a names-matched header's alone up to ~1000 bytes:
-                                   names_apply's 700 of mapping and 300 of near misses) */
+    char warn[HX_WARN_SIZE];    /* the warnings, one a line (HX_WARN_SIZE) */
     size_t warn_taken;          /* bytes of warn already handed out by hx_reader_take_warnings */
     fnav_status_t deferred;     /* error to return at the end (bin) */
     int finished;

@@ -82,6 +82,11 @@ int hx_find_col(char **f, int n, const char *name);
  *  its own words, cmd_eval.c's EV_NOTE_SIZE): with 200 to 768 bytes eval
  *  would cut a non-CSV log's bursts remedy (tests/cli/test_eval_data.sh). */
 #define HX_ERR_SIZE 1024
+/** Room for a reader's warnings, one a line (hx_reader_warnings): a
+ *  names-matched header's alone takes up to ~1000 bytes (names_apply's 700
+ *  of mapping and 300 of near misses). The reader, hx_log_t.warnings and
+ *  hx_print_warnings hold this much. */
+#define HX_WARN_SIZE 2048
 
 #define HX_FORMAT_LIST "bin, csv, gx2, openshoe820, ngimu, pyshoe, ipol, adis, square2, mtmanager"
 /** Comma-separated list of the format names (HX_FORMAT_LIST). */
@@ -231,7 +236,7 @@ typedef struct {
     double *temp;           /**< degC, NaN when unknown */
     fnav_status_t status;   /**< FNAV_END when read completely, else the error */
     char error[HX_ERR_SIZE]; /**< the error, if any */
-    char warnings[2048];    /**< the reader's warnings, one a line */
+    char warnings[HX_WARN_SIZE]; /**< the reader's warnings, one a line */
 } hx_log_t;
 
 /** 1 when the end characters of s before index end (strlen(s) for the

@@ -387,6 +387,14 @@ expect_out "^note .*the input is clipped" "the low-noise accelerometer's clippin
 expect_err "m_shimmer.csv:3: a row of units under the header (Shimmer's Consensys export): read as --units time=ms,accel=m/s2,gyro=deg/s" \
     "the units row read under --columns too"
 
+# the ros variant with the first message's stamp 0 (a driver that never set
+# it): the mapping's warning (~400 bytes) and the stamp's both printed
+# whole (hx_print_warnings cut the second at 512 bytes: "... receive ")
+awk -F, 'BEGIN { OFS = "," } NR == 2 { $3 = 0 } { print }' "$T/m_ros.csv" > "$T/m_ros0.csv"
+expect_exit 0 "info on the ros variant with an unset stamp" "$H" info "$T/m_ros0.csv"
+expect_err "m_ros0.csv:2: the message's stamp (field.header.stamp) is 0: the driver left it unset; the bag's receive time, '%time', is read instead$" \
+    "the unset stamp's warning is printed whole after the mapping's"
+
 # --- clipping: the bundled walk as a sensor of +-250 deg/s and +-2 g would
 # record it (flat tops at full scale). replay does not navigate it without a
 # word (info counts the flat tops): the
