@@ -163,11 +163,10 @@ int hx_cmd_convert(int argc, char **argv)
     hx_args_t a;
     hx_reader_t *r;
     hx_writer_t *w;
-    hx_format_t to = HX_FMT_AUTO;
+    hx_format_t to;
     fnav_sample_t s;
     fnav_status_t st;
     char err[HX_ERR_SIZE];
-    const char *to_name;
     int rc = hx_args_parse(&k_spec, argc, argv, &a);
     int exit_code = HX_EXIT_OK;
     hx_meta_t meta;
@@ -195,15 +194,8 @@ int hx_cmd_convert(int argc, char **argv)
     if (hx_check_input_opts("convert", &a) != 0 || hx_arg_double(&a, "--rate", 1.0, 100000.0, &rate) != 0) {
         return HX_EXIT_USAGE;
     }
-    to_name = hx_arg(&a, "--to");
-    if (to_name != NULL) {
-        to = hx_format_from_name(to_name);
-        if (to != HX_FMT_BIN && to != HX_FMT_CSV) {
-            hx_error("convert", "--to must be bin or csv, not '%s'", to_name);
-            return HX_EXIT_USAGE;
-        }
-    } else if (strcmp(a.pos[1], "-") == 0) {
-        to = HX_FMT_CSV;
+    if (hx_arg_to("convert", &a, a.pos[1], &to) != 0) {
+        return HX_EXIT_USAGE;
     }
     if (hx_same_file(a.pos[0], a.pos[1])) {
         hx_error("convert", "%s: the output is the input (it would be overwritten while read)", a.pos[1]);

@@ -490,6 +490,22 @@ int hx_check_input_opts(const char *cmd, const hx_args_t *a)
     return 0;
 }
 
+int hx_arg_to(const char *cmd, const hx_args_t *a, const char *out, hx_format_t *to)
+{
+    const char *name = hx_arg(a, "--to");
+    *to = HX_FMT_AUTO;
+    if (name != NULL) {
+        *to = hx_format_from_name(name);
+        if (*to != HX_FMT_BIN && *to != HX_FMT_CSV) {
+            hx_error(cmd, "--to must be bin or csv, not '%s'", name);
+            return -1;
+        }
+    } else if (strcmp(out, "-") == 0) {
+        *to = HX_FMT_CSV;
+    }
+    return 0;
+}
+
 void hx_print_warnings(const char *cmd, const char *w)
 {
     char buf[HX_WARN_SIZE]; /* a reader's warnings whole (512 bytes cut a ROS header's second warning) */

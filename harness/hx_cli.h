@@ -125,6 +125,12 @@ void hx_warn_gz_output(const char *cmd, const char *path, hx_format_t fmt);
     { "--columns", "MAP", "the CSV's names of the columns, e.g. t=timestamp_ns,ax=acc_x,...", 0 }, \
     { "--units", "SPEC", "the CSV's units: time=s|ms|us|ns,accel=m/s2|g|mg|ug,gyro=rad/s|deg/s|mdps", 0 }
 
+/** The format of an output log from --to (bin or csv; another is a usage
+ *  error, printed: -1) or, without it, HX_FMT_CSV for out "-" (standard
+ *  output) and HX_FMT_AUTO otherwise (the writer goes by the extension).
+ *  0 ok. */
+int hx_arg_to(const char *cmd, const hx_args_t *a, const char *out, hx_format_t *to);
+
 /** Check --from, --input-rate, --columns and --units (a log of another
  *  format than csv with either of the last two, given or detected, is a
  *  usage error) and set the readers' CSV layout (hx_reader_set_layout);

@@ -9,6 +9,7 @@
 
 int hx_cmd_info(int argc, char **argv);
 int hx_cmd_convert(int argc, char **argv);
+int hx_cmd_merge(int argc, char **argv);
 int hx_cmd_replay(int argc, char **argv);
 int hx_cmd_eval(int argc, char **argv);
 int hx_cmd_allan(int argc, char **argv);

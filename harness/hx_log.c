@@ -2,6 +2,7 @@
  * docs/log-format.md). */
 #include "hx_log.h"
 #include "hx_bin.h"
+#include "hx_merge.h"
 #include "hx_names.h"
 #include "hx_xsens.h"
 
@@ -322,6 +323,11 @@ static int split(char *line, char delim, char **f, int max)
         }
     }
     return n;
+}
+
+int hx_split_fields(char *line, char delim, char **f, int max)
+{
+    return split(line, delim, f, max);
 }
 
 /* Strict number: the whole field must be a finite decimal number. */
@@ -1641,11 +1647,18 @@ static int setup_header(hx_reader_t *r, const char *const names_in[8], int time_
         for (k = 1; k < 7 && six; k++) {
             six = hx_find_col(f, n, names[k]) >= 0;
         }
-        set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]%s%s", r->path,
+        /* one sensor's file (a logger that writes the other to another
+         * file): say how to make one log of the two */
+        const int one = hx_tri_header_kind(f, n);
+        set_err(r, "%s:%ld: header has no column '%s'; expected t,ax,ay,az,gx,gy,gz[,temp]%s%s%s%s", r->path,
                 r->stats.lines, names[i],
                 six ? " (t in s: name the time column t; a log without time stamps: give its rate with "
                       "--input-rate HZ)"
                     : "",
+                one < 0 ? "" : one == HX_TRI_ACC ? "; the accelerometer's alone" :
+                one == HX_TRI_GYR ? "; the gyroscope's alone" : "; a time and x, y, z alone",
+                one < 0 ? "" : " (one sensor's file? bin/harness merge ACC GYRO OUT makes one log of a logger's two: "
+                               "docs/log-format.md, \"Accelerometer and gyroscope in two files\")",
                 matched);
     } else {
         set_err(r, "%s:%ld: header has no column '%s' (the %s column of the %s format)", r->path,

@@ -68,6 +68,12 @@ hx_format_t hx_format_from_name(const char *name);
 /** Whether two column names are equal but for case, blanks, quotes and
  *  carriage returns ("acc_x" and "Acc_X"), as the readers match headers. */
 int hx_name_eq(const char *a, const char *b);
+/** Split a text line in place at delim into at most max fields, as the
+ *  text readers do: ' ' splits at runs of blanks and tabs (a date and a
+ *  clock time after it stay one field), any other delimiter inside double
+ *  quotes is the field's, and a field loses the blanks, quotes and line
+ *  ends around it. Returns the count. */
+int hx_split_fields(char *line, char delim, char **f, int max);
 /** The first of the n header fields f that is name (hx_name_eq); -1 when
  *  none is. */
 int hx_find_col(char **f, int n, const char *name);

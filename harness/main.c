@@ -20,6 +20,7 @@ typedef struct {
 static const command_t k_commands[] = {
     { "info", hx_cmd_info, "rate, duration, gaps, duplicates, saturation, gravity at rest of a log" },
     { "convert", hx_cmd_convert, "convert between .bin, CSV and every importable format" },
+    { "merge", hx_cmd_merge, "merge an accelerometer's and a gyroscope's files into one log" },
     { "replay", hx_cmd_replay, "run a log through the navigation filter: trajectory, summary, plot" },
     { "eval", hx_cmd_eval, "run every data set with ground truth and write docs/results.md" },
     { "allan", hx_cmd_allan, "streaming Allan deviation and AR(1) bias-model identification" },

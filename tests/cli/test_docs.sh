@@ -21,6 +21,7 @@ W="$(dirname "$0")/../../vectors/walk.bin"
 # gets a line here (CONTRIBUTING.md, "Extending footnav").
 CMD_DOCS="info harness.md
 convert harness.md
+merge harness.md
 replay harness.md
 eval harness.md
 live harness.md

@@ -186,6 +186,21 @@ gyro_tau_s = 5 5 50
 gyro_bias_sigma_rps = 1.5e-06 1.1e-06 5.9e-07
 ''')
     put('nav', 'slow_gait_cycle', nav_slow_gait())
+    # merge (fuzz_merge.c): the first byte's bit 0 the sensor (1 gyro), bits
+    # 1-2 --units (1 time=ns, 2 accel=g,gyro=deg/s, 3 time=ms); a MetaWear
+    # accelerometer file, a phyphox gyroscope file with semicolons and
+    # decimal commas, Sensor Logger's ns since the epoch with bare z,y,x,
+    # and tabs with a comment, a repeated stamp, a blank line and a bad row
+    put('merge', 'metawear_acc', b'\x00epoch (ms),time (-13:00),elapsed (s),x-axis (g),y-axis (g),z-axis (g)\n'
+        b'1700000000000,2023-11-14T22.13.20.000,0.000,-0.49,0.24,0.83\n'
+        b'1700000000010,2023-11-14T22.13.20.010,0.010,-0.48,0.25,0.82\n'
+        b'1700000000020,2023-11-14T22.13.20.020,0.020,-0.47,0.26,0.81\n')
+    put('merge', 'phyphox_semi_gyr', b'\x01"Time (s)";"Gyroscope x (rad/s)";"Gyroscope y (rad/s)";"Gyroscope z (rad/s)"\n'
+        b'0,000;0,5;-0,25;0,125\n0,010;0,6;-0,35;0,225\n0,020;0,7;-0,45;0,325\n')
+    put('merge', 'slog_acc_ns', b'\x03time,seconds_elapsed,z,y,x\n1733300000000000000,0.0,9.8,0.1,0.2\n'
+        b'1733300000010000000,0.01,9.7,0.2,0.3\n1733300000020000000,0.02,9.6,0.3,0.4\n')
+    put('merge', 'tab_dup_bad', b'\x01t\tgyr_x\tgyr_y\tgyr_z\n# a comment\n0.0\t1\t2\t3\n0.0\t1\t2\t3\n0.01\t2\t3\t4\n\n'
+        b'0.02\toops\t4\t5\n')
     print('corpus written under', os.path.join(HERE, 'corpus'))
 
 if __name__ == '__main__':

@@ -1,0 +1,675 @@
+/* One sensor's file of a logger that writes accelerometer and gyroscope
+ * apart, and the value of one at the other's stamps (hx_merge.h). */
+#include "hx_merge.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <zlib.h>
+
+#include "hx_cli.h"
+#include "hx_names.h"
+
+#define TRI_LINE_MAX 8192
+#define TRI_MAX_COLS 64
+
+static const char *const k_sensor[2] = { "accelerometer", "gyroscope" };
+
+static void say(char *buf, size_t size, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+static void say(char *buf, size_t size, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, size, fmt, ap);
+    va_end(ap);
+}
+
+/* The axis of a bare axis name ("x", "X", "x-axis (g)", "x_axis [deg/s]",
+ * "axis x"): 0..2, -1 when the name is no bare axis. *unit: the unit in
+ * brackets or parentheses after it; *unread: brackets whose unit is not
+ * read. */
+static int bare_axis(const char *name, hx_name_unit_t *unit, int *unread)
+{
+    char word[32], inner[48];
+    size_t w = 0;
+    const char *p = name, *open = strpbrk(name, "([");
+    *unit = HX_UNIT_NONE;
+    *unread = 0;
+    for (; *p != '\0' && p != open; p++) {
+        const char c = (char)tolower((unsigned char)*p);
+        if (c == ' ' || c == '-' || c == '_' || c == '"' || c == '\t') {
+            continue;
+        }
+        if (w + 1 >= sizeof word) {
+            return -1;
+        }
+        word[w++] = c;
+    }
+    word[w] = '\0';
+    if (open != NULL) {
+        const char close = *open == '(' ? ')' : ']';
+        const char *e = strrchr(open, close);
+        size_t len;
+        if (e == NULL || e[1] != '\0') {
+            return -1; /* words after the unit: not a bare axis */
+        }
+        len = (size_t)(e - open - 1);
+        if (len >= sizeof inner) {
+            return -1;
+        }
+        memcpy(inner, open + 1, len);
+        inner[len] = '\0';
+        *unit = hx_name_unit_of_text(inner);
+        *unread = *unit == HX_UNIT_NONE && inner[strspn(inner, " \t")] != '\0';
+    }
+    if (strlen(word) == 1 && word[0] >= 'x' && word[0] <= 'z') {
+        return word[0] - 'x';
+    }
+    if (strlen(word) == 5 && (strncmp(word, "axis", 4) == 0 || strcmp(word + 1, "axis") == 0)) {
+        const char c = strncmp(word, "axis", 4) == 0 ? word[4] : word[0];
+        return c >= 'x' && c <= 'z' ? c - 'x' : -1;
+    }
+    return -1;
+}
+
+int hx_tri_header_kind(char *const *f, int n)
+{
+    int i, key[7] = { 0, 0, 0, 0, 0, 0, 0 }, axis[3] = { 0, 0, 0 }, acc, gyr;
+    for (i = 0; i < n; i++) {
+        hx_name_class_t cl;
+        hx_name_unit_t u;
+        int unread, a;
+        if (hx_name_classify(f[i], &cl) == HX_NAME_MATCH && cl.key >= 0 && cl.key < 7) {
+            key[cl.key]++;
+        } else if ((a = bare_axis(f[i], &u, &unread)) >= 0) {
+            axis[a]++;
+        }
+    }
+    acc = key[1] > 0 && key[2] > 0 && key[3] > 0;
+    gyr = key[4] > 0 && key[5] > 0 && key[6] > 0;
+    if (key[0] == 0) {
+        return -1;
+    }
+    if (acc && key[4] + key[5] + key[6] == 0) {
+        return HX_TRI_ACC;
+    }
+    if (gyr && key[1] + key[2] + key[3] == 0) {
+        return HX_TRI_GYR;
+    }
+    if (key[1] + key[2] + key[3] + key[4] + key[5] + key[6] == 0 && axis[0] > 0 && axis[1] > 0 && axis[2] > 0) {
+        return HX_TRI_BARE;
+    }
+    return -1;
+}
+
+/* 1 for a unit of the sensor's quantity, 0 for another's. */
+static int unit_is(hx_tri_kind_t kind, hx_name_unit_t u)
+{
+    return kind == HX_TRI_ACC ? (u >= HX_UNIT_MPS2 && u <= HX_UNIT_UG) : (u >= HX_UNIT_RPS && u <= HX_UNIT_MDPS);
+}
+
+static double unit_scale(hx_name_unit_t u)
+{
+    switch (u) {
+    case HX_UNIT_G: return HX_G_MPS2;
+    case HX_UNIT_MG: return HX_MG_MPS2;
+    case HX_UNIT_UG: return HX_UG_MPS2;
+    case HX_UNIT_DPS: return HX_DPS_RPS;
+    case HX_UNIT_MDPS: return HX_MDPS_RPS;
+    default: return 1.0;
+    }
+}
+
+static const char *unit_text(hx_name_unit_t u)
+{
+    static const char *const k[] = { "", "s", "ms", "us", "ns", "m/s^2", "g", "mg", "ug", "rad/s", "deg/s", "mdps" };
+    return (size_t)u < sizeof k / sizeof k[0] ? k[u] : "";
+}
+
+/* The unit of --units' scale of this sensor (hx_csv_layout_t). */
+static hx_name_unit_t unit_of_scale(hx_tri_kind_t kind, double scale)
+{
+    static const hx_name_unit_t acc[] = { HX_UNIT_MPS2, HX_UNIT_G, HX_UNIT_MG, HX_UNIT_UG };
+    static const hx_name_unit_t gyr[] = { HX_UNIT_RPS, HX_UNIT_DPS, HX_UNIT_MDPS };
+    const hx_name_unit_t *u = kind == HX_TRI_ACC ? acc : gyr;
+    const size_t n = kind == HX_TRI_ACC ? 4 : 3;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        if (fabs(unit_scale(u[i]) - scale) <= 1e-12 * scale) {
+            return u[i];
+        }
+    }
+    return u[0];
+}
+
+/* A field as a number: whole numbers of up to 19 digits (int64) exactly in *iv
+ * (*is_int 1), any other decimal number in *dv. A decimal comma is read
+ * when the fields are not comma-separated ("0,25" in a phyphox export with
+ * semicolons or tabs). 0 ok, -1 not a number. */
+static int field_number(const char *s, char delim, int64_t *iv, double *dv, int *is_int)
+{
+    char buf[64];
+    size_t i, len = strlen(s), digits = 0;
+    if (len == 0 || len >= sizeof buf) {
+        return -1;
+    }
+    for (i = 0; i < len; i++) {
+        buf[i] = (delim != ',' && s[i] == ',') ? '.' : s[i];
+        digits += isdigit((unsigned char)s[i]) != 0;
+    }
+    buf[len] = '\0';
+    *is_int = 0;
+    if (digits > 0 && digits <= 19 && digits + (buf[0] == '-' || buf[0] == '+') == len) {
+        char *end;
+        errno = 0;
+        *iv = (int64_t)strtoll(buf, &end, 10);
+        if (errno == 0 && *end == '\0') {
+            *is_int = 1;
+            *dv = (double)*iv;
+            return 0;
+        }
+    }
+    return hx_parse_number(buf, dv);
+}
+
+/* Stamps in the unit of 10^digits ns to ns: exact for whole numbers. -1
+ * out of int64 range. */
+static int to_ns(int is_int, int64_t iv, double dv, int digits, int64_t *out)
+{
+    int64_t mul = 1;
+    int k;
+    for (k = 0; k < digits; k++) {
+        mul *= 10;
+    }
+    if (is_int) {
+        if (iv > INT64_MAX / mul || iv < -(INT64_MAX / mul)) {
+            return -1;
+        }
+        *out = iv * mul;
+        return 0;
+    }
+    {
+        const double x = dv * (double)mul;
+        if (!(fabs(x) < 9.2e18)) {
+            return -1;
+        }
+        *out = (int64_t)llround(x);
+    }
+    return 0;
+}
+
+typedef struct {
+    gzFile gz;
+    char line[TRI_LINE_MAX];
+    long lineno;
+} text_t;
+
+/* The next line: 1, 0 at the end, -1 a line too long (msg). */
+static int next_line(text_t *t, const char *path, char *msg, size_t size)
+{
+    size_t len;
+    if (gzgets(t->gz, t->line, (int)sizeof t->line) == NULL) {
+        return 0;
+    }
+    t->lineno++;
+    len = strlen(t->line);
+    if (len == sizeof t->line - 1 && t->line[len - 1] != '\n') {
+        say(msg, size, "%s:%ld: line longer than %d bytes", path, t->lineno, TRI_LINE_MAX - 1);
+        return -1;
+    }
+    return 1;
+}
+
+static int blank_line(const char *s)
+{
+    while (*s == ' ' || *s == '\t' || *s == '\r' || *s == '\n') {
+        s++;
+    }
+    return *s == '\0';
+}
+
+/* What the header gives: the columns of time and of x, y, z. */
+typedef struct {
+    int t, ax[3];
+    hx_name_unit_t t_unit, unit;
+} cols_t;
+
+/* The columns of a kind's file from its header fields f[0..n) and the
+ * first data row d[0..nd). 0, or -1 with msg. */
+static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_t kind, const char *path,
+                     long line, cols_t *c, char *msg, size_t size)
+{
+    int i, k, own[3][3], nown[3] = { 0, 0, 0 }, other = -1, nother = 0, times[8], ntimes = 0, bare_used = 0;
+    const int k0 = kind == HX_TRI_ACC ? 1 : 4, ko = kind == HX_TRI_ACC ? 4 : 1;
+    hx_name_unit_t au[3] = { HX_UNIT_NONE, HX_UNIT_NONE, HX_UNIT_NONE };
+    for (i = 0; i < n; i++) {
+        hx_name_class_t cl;
+        if (hx_name_classify(f[i], &cl) != HX_NAME_MATCH) {
+            continue;
+        }
+        if (cl.key == 0 && ntimes < 8) {
+            times[ntimes++] = i;
+        } else if (cl.key >= k0 && cl.key < k0 + 3) {
+            if (nown[cl.key - k0] < 3) {
+                own[cl.key - k0][nown[cl.key - k0]] = i;
+            }
+            nown[cl.key - k0]++;
+        } else if (cl.key >= ko && cl.key < ko + 3) {
+            other = other < 0 ? i : other;
+            nother++;
+        }
+    }
+    if (nown[0] == 0 && nown[1] == 0 && nown[2] == 0) {
+        /* no sensor's name: bare axes, "x", "x-axis (g)" */
+        for (i = 0; i < n; i++) {
+            hx_name_unit_t u;
+            int unread, a = bare_axis(f[i], &u, &unread);
+            if (a < 0) {
+                continue;
+            }
+            if (unread) {
+                say(msg, size, "%s:%ld: column %d ('%s') names a unit not read (the %s's: %s)", path, line, i + 1,
+                    f[i], k_sensor[kind],
+                    kind == HX_TRI_ACC ? "m/s^2, g, mg, ug" : "rad/s, deg/s, mdps");
+                return -1;
+            }
+            if (nown[a] < 3) {
+                own[a][nown[a]] = i;
+            }
+            nown[a]++;
+            bare_used = 1;
+        }
+    }
+    if (nother >= 3 && (nown[0] > 0 || nown[1] > 0 || nown[2] > 0) && !bare_used) {
+        say(msg, size, "%s:%ld: the header names the accelerometer and the gyroscope: a log with both is read "
+                       "as it is (bin/harness info %s), not merged", path, line, path);
+        return -1;
+    }
+    if (nown[0] == 0 && nown[1] == 0 && nown[2] == 0) {
+        if (nother > 0) {
+            say(msg, size, "%s:%ld: the header names the %s's channels ('%s'), not the %s's: the files swapped? "
+                           "(merge ACC GYRO OUT: the accelerometer's file first)",
+                path, line, k_sensor[1 - kind], f[other], k_sensor[kind]);
+        } else {
+            say(msg, size, "%s:%ld: the header names no %s axis (as 'x', 'x-axis (%s)', '%s' or '%s'): the "
+                           "%s's file has a time column and x, y, z",
+                path, line, k_sensor[kind], kind == HX_TRI_ACC ? "g" : "deg/s",
+                kind == HX_TRI_ACC ? "acc_x" : "gyr_x", kind == HX_TRI_ACC ? "Acceleration x (m/s^2)" :
+                "Gyroscope x (rad/s)", k_sensor[kind]);
+        }
+        return -1;
+    }
+    for (k = 0; k < 3; k++) {
+        if (nown[k] != 1) {
+            if (nown[k] == 0) {
+                say(msg, size, "%s:%ld: the header names no %c axis of the %s", path, line, 'x' + k,
+                    k_sensor[kind]);
+            } else {
+                say(msg, size, "%s:%ld: %d columns name the %s's %c axis ('%s', '%s'%s)", path, line, nown[k],
+                    k_sensor[kind], 'x' + k, f[own[k][0]], f[own[k][1]], nown[k] > 2 ? ", ..." : "");
+            }
+            return -1;
+        }
+        c->ax[k] = own[k][0];
+        if (bare_used) {
+            int unread;
+            (void)bare_axis(f[c->ax[k]], &au[k], &unread);
+        } else {
+            hx_name_class_t cl;
+            (void)hx_name_classify(f[c->ax[k]], &cl);
+            au[k] = cl.unit;
+        }
+        if (au[k] != HX_UNIT_NONE && !unit_is(kind, au[k])) {
+            say(msg, size, "%s:%ld: column %d ('%s') names %s, not the %s's unit: the files swapped? (merge ACC "
+                           "GYRO OUT: the accelerometer's file first)",
+                path, line, c->ax[k] + 1, f[c->ax[k]], unit_text(au[k]), k_sensor[kind]);
+            return -1;
+        }
+    }
+    if (au[0] != au[1] || au[1] != au[2]) {
+        say(msg, size, "%s:%ld: the axes name different units ('%s', '%s', '%s')", path, line, f[c->ax[0]],
+            f[c->ax[1]], f[c->ax[2]]);
+        return -1;
+    }
+    c->unit = au[0];
+    /* the time: a time name whose first value is a number (MetaWear's
+     * "time (-13:00)" holds a date and its "elapsed (s)" the seconds), one
+     * naming its unit before one that does not */
+    c->t = -1;
+    c->t_unit = HX_UNIT_NONE;
+    for (i = 0; i < ntimes; i++) {
+        hx_name_class_t cl;
+        int64_t iv;
+        double dv;
+        int is_int;
+        if (times[i] >= nd || field_number(d[times[i]], delim, &iv, &dv, &is_int) != 0) {
+            continue;
+        }
+        (void)hx_name_classify(f[times[i]], &cl);
+        if (c->t < 0 || (c->t_unit == HX_UNIT_NONE && cl.unit != HX_UNIT_NONE)) {
+            c->t = times[i];
+            c->t_unit = cl.unit;
+        }
+    }
+    if (c->t < 0) {
+        if (ntimes > 0) {
+            say(msg, size, "%s:%ld: the time column ('%s') holds no number in the first row ('%s')", path, line,
+                f[times[0]], times[0] < nd ? d[times[0]] : "");
+        } else {
+            say(msg, size, "%s:%ld: the header names no time column (t, time, timestamp, elapsed, 'Time (s)', ...)",
+                path, line);
+        }
+        return -1;
+    }
+    return 0;
+}
+
+/* Grow the arrays to hold n + 1 samples. 0, -1 out of memory. */
+static int grow(hx_tri_t *f, size_t *cap, int64_t **ti, double **tf, unsigned char **isint)
+{
+    size_t c;
+    void *p;
+    if (f->n < *cap) {
+        return 0;
+    }
+    c = *cap == 0 ? 4096 : *cap * 2;
+    if ((p = realloc(*ti, c * sizeof **ti)) == NULL) {
+        return -1;
+    }
+    *ti = (int64_t *)p;
+    if ((p = realloc(*tf, c * sizeof **tf)) == NULL) {
+        return -1;
+    }
+    *tf = (double *)p;
+    if ((p = realloc(*isint, c)) == NULL) {
+        return -1;
+    }
+    *isint = (unsigned char *)p;
+    if ((p = realloc(f->v, c * sizeof *f->v)) == NULL) {
+        return -1;
+    }
+    f->v = (double(*)[3])p;
+    *cap = c;
+    return 0;
+}
+
+/* The digits of a time unit: 9 s, 6 ms, 3 us, 0 ns. */
+static int unit_digits(hx_name_unit_t u)
+{
+    return u == HX_UNIT_MS ? 6 : u == HX_UNIT_US ? 3 : u == HX_UNIT_NS ? 0 : 9;
+}
+
+static const char *digits_unit(int digits)
+{
+    return digits == 6 ? "ms" : digits == 3 ? "us" : digits == 0 ? "ns" : "s";
+}
+
+int hx_tri_load(hx_tri_t *f, const char *path, hx_tri_kind_t kind, const hx_csv_layout_t *units, char *err,
+                size_t err_size)
+{
+    text_t *t;
+    char *hf[TRI_MAX_COLS], *df[TRI_MAX_COLS], hdr[TRI_LINE_MAX], delim = ',';
+    int nh = 0, nd, rc, k, need, digits;
+    size_t m;
+    cols_t c;
+    size_t cap = 0, i;
+    int64_t *ti = NULL;
+    double *tf = NULL, scale;
+    unsigned char *isint = NULL;
+    int given_t = units != NULL && (units->units_given & 1), given_v = units != NULL &&
+                  (units->units_given & (kind == HX_TRI_ACC ? 2 : 4));
+    memset(f, 0, sizeof *f);
+    f->kind = kind;
+    t = (text_t *)calloc(1, sizeof *t);
+    if (t == NULL) {
+        say(err, err_size, "%s: out of memory", path);
+        return -1;
+    }
+    t->gz = gzopen(path, "rb");
+    if (t->gz == NULL) {
+        say(err, err_size, "%s: cannot open (%s)", path, strerror(errno != 0 ? errno : ENOENT));
+        free(t);
+        return -1;
+    }
+    /* the header: the first line that is neither blank nor a '#' comment */
+    for (;;) {
+        rc = next_line(t, path, err, err_size);
+        if (rc <= 0) {
+            if (rc == 0) {
+                say(err, err_size, "%s: no header line (the file is empty or blank)", path);
+            }
+            goto fail;
+        }
+        if (t->lineno == 1 && (unsigned char)t->line[0] == 0xEF && (unsigned char)t->line[1] == 0xBB &&
+            (unsigned char)t->line[2] == 0xBF) {
+            memmove(t->line, t->line + 3, strlen(t->line + 3) + 1); /* a UTF-8 byte-order mark */
+        }
+        if (!blank_line(t->line) && t->line[0] != '#') {
+            break;
+        }
+    }
+    memcpy(hdr, t->line, sizeof hdr);
+    delim = strchr(hdr, ',') != NULL ? ',' : strchr(hdr, '\t') != NULL ? '\t' : strchr(hdr, ';') != NULL ? ';' : ' ';
+    nh = hx_split_fields(hdr, delim, hf, TRI_MAX_COLS);
+    /* the first data row, for the time column's choice */
+    do {
+        rc = next_line(t, path, err, err_size);
+        if (rc <= 0) {
+            if (rc == 0) {
+                say(err, err_size, "%s: no data after the header (line %ld)", path, t->lineno);
+            }
+            goto fail;
+        }
+    } while (blank_line(t->line) || t->line[0] == '#');
+    nd = hx_split_fields(t->line, delim, df, TRI_MAX_COLS);
+    if (find_cols(hf, nh, df, nd, delim, kind, path, 1, &c, err, err_size) != 0) {
+        goto fail;
+    }
+    snprintf(f->cols[0], sizeof f->cols[0], "%s", hf[c.t]);
+    for (k = 0; k < 3; k++) {
+        snprintf(f->cols[k + 1], sizeof f->cols[k + 1], "%s", hf[c.ax[k]]);
+    }
+    /* units: --units first, then the names, then the interchange's */
+    if (given_v) {
+        c.unit = unit_of_scale(kind, kind == HX_TRI_ACC ? units->acc_scale : units->gyr_scale);
+        f->unit_from = "--units";
+    } else if (c.unit != HX_UNIT_NONE) {
+        f->unit_from = "named";
+    } else {
+        c.unit = kind == HX_TRI_ACC ? HX_UNIT_MPS2 : HX_UNIT_RPS;
+        f->unit_from = "default";
+    }
+    f->unit = unit_text(c.unit);
+    scale = unit_scale(c.unit);
+    need = c.t;
+    for (k = 0; k < 3; k++) {
+        need = c.ax[k] > need ? c.ax[k] : need;
+    }
+    /* the rows: the first is in t->line already */
+    for (;;) {
+        if (!blank_line(t->line) && t->line[0] != '#') {
+            int64_t iv;
+            double dv, v[3];
+            int is_int, bad = -1;
+            if (nd <= need) {
+                say(f->error, sizeof f->error, "%s:%ld: %d field%s, the %s's columns need %d", path, t->lineno,
+                    nd, nd == 1 ? "" : "s", k_sensor[kind], need + 1);
+                break;
+            }
+            if (field_number(df[c.t], delim, &iv, &dv, &is_int) != 0) {
+                bad = c.t;
+            }
+            for (k = 0; k < 3 && bad < 0; k++) {
+                int64_t i2;
+                int i3;
+                if (field_number(df[c.ax[k]], delim, &i2, &v[k], &i3) != 0 || !isfinite(v[k])) {
+                    bad = c.ax[k];
+                }
+            }
+            if (bad < 0 && !isfinite(dv)) {
+                bad = c.t;
+            }
+            if (bad >= 0) {
+                say(f->error, sizeof f->error, "%s:%ld: column %d ('%s') is not a number: '%.40s'", path, t->lineno,
+                    bad + 1, hf[bad], df[bad]);
+                break;
+            }
+            if (grow(f, &cap, &ti, &tf, &isint) != 0) {
+                say(f->error, sizeof f->error, "%s:%ld: out of memory", path, t->lineno);
+                break;
+            }
+            ti[f->n] = iv;
+            tf[f->n] = dv;
+            isint[f->n] = (unsigned char)is_int;
+            for (k = 0; k < 3; k++) {
+                f->v[f->n][k] = v[k] * scale;
+            }
+            f->n++;
+        }
+        rc = next_line(t, path, f->error, sizeof f->error);
+        if (rc <= 0) {
+            break;
+        }
+        nd = hx_split_fields(t->line, delim, df, TRI_MAX_COLS);
+    }
+    f->lines = t->lineno;
+    if (f->n == 0) {
+        say(err, err_size, "%s", f->error[0] != '\0' ? f->error : "no sample");
+        goto fail;
+    }
+    /* the time unit: --units, the name's, else seconds unless the stamps
+     * read so give a rate no IMU has */
+    if (given_t) {
+        digits = units->time_digits;
+        f->time_unit = digits_unit(digits);
+    } else if (c.t_unit != HX_UNIT_NONE) {
+        digits = unit_digits(c.t_unit);
+        f->time_unit = unit_text(c.t_unit);
+    } else {
+        double *dt = (double *)malloc((f->n > 1 ? f->n - 1 : 1) * sizeof *dt), rate = 0.0;
+        int nd_t = 0;
+        hx_time_fix_t fix;
+        if (dt == NULL) {
+            say(err, err_size, "%s: out of memory", path);
+            goto fail;
+        }
+        for (i = 1; i < f->n && nd_t < INT_MAX; i++) {
+            if (tf[i] > tf[i - 1]) {
+                dt[nd_t++] = tf[i] - tf[i - 1];
+            }
+        }
+        if (nd_t > 0) {
+            const double med = hx_median(dt, nd_t);
+            rate = med > 0.0 ? 1.0 / med : 0.0;
+        }
+        free(dt);
+        digits = 9;
+        f->time_unit = "s";
+        if (rate > 0.0 && (rate < HX_TIME_RATE_MIN_HZ || rate > HX_TIME_RATE_MAX_HZ) &&
+            hx_time_unit_fix(rate, 9, &fix)) {
+            say(err, err_size, "%s: the time column '%s' names no unit, and in seconds its stamps give %.3g Hz: "
+                               "they look like %s, a %.4g Hz log (give --units time=%s)",
+                path, f->cols[0], rate, fix.name, fix.rate_hz, fix.opt);
+            goto fail;
+        }
+    }
+    f->t_ns = (int64_t *)malloc(f->n * sizeof *f->t_ns);
+    if (f->t_ns == NULL) {
+        say(err, err_size, "%s: out of memory", path);
+        goto fail;
+    }
+    /* in ns, a row whose stamp is not after the last kept one's dropped
+     * (a repeated stamp, a step back, or two stamps one ns rounds to) */
+    for (i = 0, m = 0; i < f->n; i++) {
+        int64_t ns;
+        if (to_ns(isint[i], ti[i], tf[i], digits, &ns) != 0) {
+            say(err, err_size, "%s: the stamp %.17g %s of column '%s' is out of range in nanoseconds", path, tf[i],
+                f->time_unit, f->cols[0]);
+            goto fail;
+        }
+        if (m > 0 && ns <= f->t_ns[m - 1]) {
+            f->steps_back++;
+            continue;
+        }
+        f->t_ns[m] = ns;
+        for (k = 0; k < 3; k++) {
+            f->v[m][k] = f->v[i][k];
+        }
+        m++;
+    }
+    f->n = m;
+    f->rate_hz = hx_stamp_rate_hz(f->t_ns, f->n, NULL);
+    free(ti);
+    free(tf);
+    free(isint);
+    gzclose(t->gz);
+    free(t);
+    return f->error[0] != '\0' ? 1 : 0;
+fail:
+    free(ti);
+    free(tf);
+    free(isint);
+    gzclose(t->gz);
+    free(t);
+    hx_tri_free(f);
+    return -1;
+}
+
+void hx_tri_free(hx_tri_t *f)
+{
+    free(f->t_ns);
+    free(f->v);
+    f->t_ns = NULL;
+    f->v = NULL;
+    f->n = 0;
+}
+
+hx_tri_where_t hx_tri_at(const hx_tri_t *f, int64_t t_ns, size_t *j, int64_t gap_ns, double v[3])
+{
+    size_t a;
+    int k;
+    if (f->n == 0 || t_ns < f->t_ns[0]) {
+        return HX_TRI_BEFORE;
+    }
+    if (t_ns > f->t_ns[f->n - 1]) {
+        return HX_TRI_AFTER;
+    }
+    a = *j < f->n ? *j : 0;
+    if (f->t_ns[a] > t_ns) {
+        a = 0; /* a cursor past t: from the start again */
+    }
+    while (a + 1 < f->n && f->t_ns[a + 1] <= t_ns) {
+        a++;
+    }
+    *j = a;
+    if (f->t_ns[a] == t_ns) {
+        for (k = 0; k < 3; k++) {
+            v[k] = f->v[a][k];
+        }
+        return HX_TRI_IN;
+    }
+    /* t_ns lies strictly between the stamps a and a + 1 */
+    {
+        const int64_t span = f->t_ns[a + 1] - f->t_ns[a];
+        const double w = (double)(t_ns - f->t_ns[a]) / (double)span;
+        if (span > gap_ns) {
+            return HX_TRI_GAP;
+        }
+        for (k = 0; k < 3; k++) {
+            /* between the two values even when rounding says otherwise (a
+             * sample of 1e18 beside one of 9) */
+            const double x0 = f->v[a][k], x1 = f->v[a + 1][k], x = (1.0 - w) * x0 + w * x1;
+            v[k] = x < (x0 < x1 ? x0 : x1) ? (x0 < x1 ? x0 : x1) : x > (x0 < x1 ? x1 : x0) ? (x0 < x1 ? x1 : x0) : x;
+        }
+    }
+    return HX_TRI_IN;
+}

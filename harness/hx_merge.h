@@ -1,0 +1,82 @@
+/**
+ * @file hx_merge.h
+ * @brief One sensor's file of a logger that writes the accelerometer and
+ *        the gyroscope apart (MetaWear's MetaBase, phyphox, Sensor Logger),
+ *        and the two merged onto one time line (`harness merge`,
+ *        docs/log-format.md "Accelerometer and gyroscope in two files").
+ *
+ * A file is delimited text (comma, tab, semicolon or blanks; .gz too) with
+ * a header naming a time column and the sensor's three axes: as the
+ * interchange CSV's names are matched (hx_names.h: "Time (s)",
+ * "Acceleration x (m/s^2)", "gyr_x") or bare axes ("x", "x-axis (g)",
+ * "X"). Linux only (the harness), not part of the firmware core.
+ */
+#ifndef HX_MERGE_H
+#define HX_MERGE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "hx_log.h"
+
+/** Which sensor a file holds. */
+typedef enum {
+    HX_TRI_ACC = 0, /**< specific force, m/s^2 once read */
+    HX_TRI_GYR = 1  /**< angular rate, rad/s once read */
+} hx_tri_kind_t;
+
+/** One sensor's samples, read whole. */
+typedef struct {
+    hx_tri_kind_t kind;
+    size_t n;                 /**< samples kept (stamps increasing) */
+    int64_t *t_ns;            /**< stamps, ns, in the file's own unit and epoch */
+    double (*v)[3];           /**< m/s^2 or rad/s */
+    double rate_hz;           /**< hx_stamp_rate_hz of the stamps (0: fewer than 2) */
+    long lines;               /**< lines read */
+    long steps_back;          /**< rows dropped: a stamp not after the last kept one's */
+    char cols[4][64];         /**< the names of the time column and of x, y, z, as the header spells them */
+    const char *time_unit;    /**< "s", "ms", "us", "ns" */
+    const char *unit;         /**< the values' unit: "m/s^2", "g", "mg", "ug", "rad/s", "deg/s", "mdps" */
+    const char *unit_from;    /**< where the units came from: "named", "--units", "default" */
+    char error[HX_ERR_SIZE];  /**< the error that stopped reading after a first sample ("" none) */
+} hx_tri_t;
+
+/** Read a whole file of kind (HX_TRI_ACC or HX_TRI_GYR). units: --units
+ *  as parsed (hx_csv_units_parse; its units_given items override a unit
+ *  the header names), NULL for none. A name of the other sensor with none
+ *  of this one's is refused as swapped files; a file with both sensors'
+ *  names is refused (read it directly); a time column that names no unit
+ *  whose stamps read in seconds give a rate outside 20 Hz - 100 kHz is
+ *  refused with the unit they look like (hx_time_unit_fix). Returns 0
+ *  (all read), 1 (read up to an error, f->error; the samples before it
+ *  kept, at least one), -1 (nothing usable: err). */
+int hx_tri_load(hx_tri_t *f, const char *path, hx_tri_kind_t kind, const hx_csv_layout_t *units, char *err,
+                size_t err_size);
+void hx_tri_free(hx_tri_t *f);
+
+/** What a header of n fields f is, as one sensor's file: HX_TRI_ACC or
+ *  HX_TRI_GYR when it names a time and that sensor's three axes and none of
+ *  the other's, HX_TRI_BARE for a time and bare axes (x, y, z) alone, -1
+ *  otherwise. The readers' refusal of such a header names `merge`. */
+#define HX_TRI_BARE 2
+int hx_tri_header_kind(char *const *f, int n);
+
+/** hx_tri_at's answers. */
+typedef enum {
+    HX_TRI_IN = 0,     /**< value interpolated */
+    HX_TRI_BEFORE = 1, /**< t before the file's first stamp */
+    HX_TRI_AFTER = 2,  /**< t after its last */
+    HX_TRI_GAP = 3     /**< t between two stamps more than gap_ns apart */
+} hx_tri_where_t;
+
+/** f's value at t_ns: linear between the two stamps around it (its own
+ *  value at a stamp of its own). *j is a cursor (0 at first), kept between
+ *  calls of increasing t_ns so that a merge walks each file once. */
+hx_tri_where_t hx_tri_at(const hx_tri_t *f, int64_t t_ns, size_t *j, int64_t gap_ns, double v[3]);
+
+/** The interval beyond which the other file has a gap and no value is
+ *  interpolated: this many of its periods (two samples lost in a row are
+ *  bridged, three are not). */
+#define HX_MERGE_GAP_PERIODS 3.0
+
+#endif /* HX_MERGE_H */

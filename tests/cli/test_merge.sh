@@ -1,0 +1,169 @@
+#!/bin/sh
+# CLI tests of `harness merge`: an accelerometer's file and a gyroscope's,
+# written apart as MetaWear's MetaBase, phyphox and Sensor Logger write
+# them, made from the bundled walk, merged into one log; the values
+# against numpy's interpolation and the replay against the walk's own.
+# $HARNESS is the harness binary (set by `make test-cli`).
+set -u
+H=${HARNESS:-bin/harness}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/lib.sh"
+
+expect_exit 0 "merge --help" "$H" merge --help
+expect_out "ACC GYRO OUT" "the synopsis names ACC GYRO OUT"
+expect_exit 2 "merge without OUT" "$H" merge a.csv b.csv
+expect_exit 2 "merge: a bad --units" "$H" merge a.csv b.csv "$T/o.csv" --units accel=furlong
+expect_exit 2 "merge: a bad --to" "$H" merge a.csv b.csv "$T/o.csv" --to gx2
+
+# the walk, its 205 duplicated stamps dropped (a merge keeps the first row
+# of a stamp, as the files below hold it only once)
+expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/w.csv"
+awk -F, 'NR == 1 || $1 != last { print } { last = $1 }' "$T/w.csv" > "$T/ref.csv"
+
+# the files: metawear (accelerometer in g, the ISO date and epoch beside
+# elapsed (s)), phyphox (quoted names, rad/s), phyphox_semi (semicolons
+# and decimal commas), slog_acc / slog_gyr (Sensor Logger: time in ns since
+# the epoch, no units, the axes z, y, x; the gyroscope 1.3 ms after each
+# accelerometer sample, every 97th row missing and 12 rows from row 3001
+# missing: a gap), gyr_bad (a row of text at line 5001)
+/usr/bin/python3 - "$T" <<'PY' || fail "writing the two-file variants"
+import sys, numpy as np
+T = sys.argv[1]
+d = np.genfromtxt(T + '/ref.csv', delimiter=',', names=True)
+t = d['t'] - d['t'][0]
+a = np.column_stack([d['ax'], d['ay'], d['az']])
+g = np.column_stack([d['gx'], d['gy'], d['gz']])
+with open(T + '/metawear.csv', 'w') as f:
+    f.write('epoch (ms),time (-13:00),elapsed (s),x-axis (g),y-axis (g),z-axis (g)\n')
+    for ti, ai in zip(t, a):
+        f.write('%d,2023-11-14T22.13.20.000,%.9f,%s\n' % (1700000000000 + int(ti * 1000), ti,
+                                                          ','.join('%.9g' % (v / 9.80665) for v in ai)))
+with open(T + '/phyphox.csv', 'w') as f:
+    f.write('"Time (s)","Gyroscope x (rad/s)","Gyroscope y (rad/s)","Gyroscope z (rad/s)"\n')
+    for ti, gi in zip(t, g):
+        f.write('%.9f,%s\n' % (ti, ','.join('%.9g' % v for v in gi)))
+with open(T + '/phyphox_semi.csv', 'w') as f:
+    f.write('"Time (s)";"Gyroscope x (rad/s)";"Gyroscope y (rad/s)";"Gyroscope z (rad/s)"\n')
+    for ti, gi in zip(t, g):
+        f.write(('%.9f;%s\n' % (ti, ';'.join('%.9g' % v for v in gi))).replace('.', ','))
+ns = 1733300000 * 10**9 + np.round(t * 1e9).astype(np.int64)
+keep = np.ones(len(t), bool)
+keep[::97] = False
+keep[3001:3013] = False
+with open(T + '/slog_acc.csv', 'w') as f:
+    f.write('time,seconds_elapsed,z,y,x\n')
+    for k in range(len(t)):
+        f.write('%d,%.9f,%.9g,%.9g,%.9g\n' % (ns[k], t[k], a[k, 2], a[k, 1], a[k, 0]))
+gs = ns + 1300000
+with open(T + '/slog_gyr.csv', 'w') as f:
+    f.write('time,seconds_elapsed,z,y,x\n')
+    for k in np.flatnonzero(keep):
+        f.write('%d,%.9f,%.9g,%.9g,%.9g\n' % (gs[k], t[k] + 0.0013, g[k, 2], g[k, 1], g[k, 0]))
+lines = open(T + '/phyphox.csv').read().splitlines(True)
+lines[5000] = '0.5,oops,1,2\n'
+open(T + '/gyr_bad.csv', 'w').write(''.join(lines))
+PY
+
+# --- MetaWear's accelerometer and phyphox's gyroscope on the same stamps:
+# the walk again (the accelerations through g and back: 1 ulp of float32)
+expect_exit 0 "merge metawear + phyphox" "$H" merge "$T/metawear.csv" "$T/phyphox.csv" "$T/m1.csv"
+expect_err "metawear.csv: 16334 samples, .* time 'elapsed (s)' in s, x, y, z 'x-axis (g)', 'y-axis (g)', 'z-axis (g)' in g$" \
+    "the MetaWear file: elapsed (s) chosen over the date and the epoch, the axes in g"
+expect_err "wrote 16334 samples at the accelerometer's stamps" "every sample written"
+if msg=$(/usr/bin/python3 - "$T/ref.csv" "$T/m1.csv" <<'PY'
+import sys, numpy as np
+r, m = (np.genfromtxt(f, delimiter=',', names=True) for f in sys.argv[1:3])
+da = max(np.abs(r[k] - m[k]).max() for k in ('ax', 'ay', 'az'))
+dg = max(np.abs(r[k] - m[k]).max() for k in ('gx', 'gy', 'gz'))
+dt = np.abs((r['t'] - r['t'][0]) - m['t']).max()
+print('accel %.3g m/s^2, gyro %.3g rad/s, time %.3g s' % (da, dg, dt))
+sys.exit(0 if len(r) == len(m) and da < 2e-6 and dg == 0 and dt < 5e-10 else 1)
+PY
+); then pass "metawear + phyphox: the walk's values ($msg)"; else fail "metawear + phyphox values: $msg"; fi
+expect_exit 0 "replay the walk" "$H" replay "$T/ref.csv" --out "$T/ref_traj.csv" --quiet
+expect_exit 0 "replay the merged walk" "$H" replay "$T/m1.csv" --out "$T/m1_traj.csv" --quiet
+if msg=$(/usr/bin/python3 - "$T/ref_traj.csv" "$T/m1_traj.csv" <<'PY'
+import sys, numpy as np
+a, b = (np.genfromtxt(f, delimiter=',', names=True) for f in sys.argv[1:3])
+d = max(np.abs(a[k] - b[k]).max() for k in ('x', 'y', 'z'))
+print('%.2g m apart' % d)
+sys.exit(0 if len(a) == len(b) and d < 1e-3 else 1)
+PY
+); then pass "the merged walk replays to the walk's path ($msg)"; else fail "merged walk's path: $msg"; fi
+
+# --- semicolons and decimal commas read as the commas and points
+expect_exit 0 "merge metawear + phyphox_semi" "$H" merge "$T/metawear.csv" "$T/phyphox_semi.csv" "$T/m2.csv"
+if cmp -s "$T/m1.csv" "$T/m2.csv"; then pass "semicolons and decimal commas: the same log"
+else fail "semicolons and decimal commas: the log differs"; fi
+
+# --- Sensor Logger: ns since the epoch named by no unit, refused with the
+# unit they look like; with --units time=ns the gyroscope interpolated at
+# the accelerometer's stamps (numpy's np.interp, the gap left out)
+expect_exit 1 "Sensor Logger without --units" "$H" merge "$T/slog_acc.csv" "$T/slog_gyr.csv" "$T/m3.csv"
+expect_err "slog_acc.csv: the time column 'time' names no unit, and in seconds its stamps give .* Hz: they look like nanoseconds, a .* Hz log (give --units time=ns)" \
+    "the stamps' unit named"
+if [ -e "$T/m3.csv" ]; then fail "a refused merge wrote its output"; else pass "nothing written before the refusal"; fi
+expect_exit 0 "Sensor Logger with --units time=ns" "$H" merge "$T/slog_acc.csv" "$T/slog_gyr.csv" "$T/m3.csv" --units time=ns
+expect_err "slog_acc.csv: .* x, y, z 'x', 'y', 'z' in m/s^2 (no unit named)" "the bare axes read (z, y, x in the file)"
+if msg=$(/usr/bin/python3 - "$T/slog_acc.csv" "$T/slog_gyr.csv" "$T/m3.csv" <<'PY'
+import sys, numpy as np
+acc, gyr = (np.loadtxt(f, delimiter=',', skiprows=1, dtype=np.float64) for f in sys.argv[1:3])
+ta = np.loadtxt(sys.argv[1], delimiter=',', skiprows=1, usecols=0, dtype=np.int64)
+tg = np.loadtxt(sys.argv[2], delimiter=',', skiprows=1, usecols=0, dtype=np.int64)
+m = np.genfromtxt(sys.argv[3], delimiter=',', names=True)
+per = np.median(np.diff(tg))
+# the gyroscope's interval around each accelerometer stamp; out of its span or over 3 periods: left out
+j = np.searchsorted(tg, ta, side='right') - 1
+inside = (j >= 0) & (j < len(tg) - 1) | (ta == tg[-1])
+jj = np.clip(j, 0, len(tg) - 2)
+span = tg[jj + 1] - tg[jj]
+ok = inside & ((ta == tg[jj]) | (span <= round(3 * 1e9 / (1e9 / per))))
+want_t = ta[ok]
+w = (ta[ok] - tg[jj[ok]]) / span[ok]
+want_g = gyr[jj[ok], 2:] + w[:, None] * (gyr[jj[ok] + 1, 2:] - gyr[jj[ok], 2:])
+got_t = np.array([int(r.split(',')[0].replace('.', '')) for r in open(sys.argv[3]).read().split()[1:]], np.int64)
+dg = np.abs(np.column_stack([m['gz'], m['gy'], m['gx']]) - want_g).max() if len(m) == len(want_t) else np.inf
+da = np.abs(np.column_stack([m['az'], m['ay'], m['ax']]) - acc[ok, 2:]).max() if len(m) == len(want_t) else np.inf
+print('%d samples (numpy: %d), stamps exact to the ns, gyro %.3g rad/s, accel %.3g m/s^2 off' % (len(m), len(want_t), dg, da))
+sys.exit(0 if len(m) == len(want_t) and (got_t == want_t).all() and dg < 2e-6 and da < 2e-6 else 1)
+PY
+); then pass "Sensor Logger: numpy's interpolation ($msg)"; else fail "Sensor Logger interpolation: $msg"; fi
+
+# --- the other commands refuse one sensor's file and name merge
+expect_exit 1 "info on the gyroscope's file" "$H" info "$T/phyphox.csv"
+expect_err "phyphox.csv:1: header has no column 't'; expected t,ax,ay,az,gx,gy,gz\[,temp\]; the gyroscope's alone (one sensor's file? bin/harness merge ACC GYRO OUT" \
+    "info names merge for a gyroscope's file"
+expect_exit 1 "replay on the accelerometer's file of bare axes" "$H" replay "$T/metawear.csv"
+expect_err "metawear.csv:1: header has no column 't'; .*; a time and x, y, z alone (one sensor's file? bin/harness merge ACC GYRO OUT" \
+    "replay names merge for a file of a time and x, y, z"
+expect_exit 1 "info on a log without gyroscope columns" "$H" info "$T/ref.csv" --columns gx=nosuch
+if grep -q "merge ACC GYRO" "$T/err"; then fail "a six-channel log's refusal names merge"; else pass "a six-channel log's refusal does not name merge"; fi
+
+# --- bad input
+expect_exit 1 "files swapped" "$H" merge "$T/phyphox.csv" "$T/metawear.csv" "$T/o.csv"
+expect_err "phyphox.csv:1: the header names the gyroscope's channels ('Gyroscope x (rad/s)'), not the accelerometer's: the files swapped?" \
+    "swapped files named"
+expect_exit 1 "a log with both sensors" "$H" merge "$T/ref.csv" "$T/phyphox.csv" "$T/o.csv"
+expect_err "ref.csv:1: the header names the accelerometer and the gyroscope: a log with both is read as it is" \
+    "a log with both sensors is sent to the other commands"
+expect_exit 2 "one file twice" "$H" merge "$T/phyphox.csv" "$T/phyphox.csv" "$T/o.csv"
+expect_exit 2 "the output is an input" "$H" merge "$T/metawear.csv" "$T/phyphox.csv" "$T/phyphox.csv"
+expect_exit 1 "a missing file" "$H" merge "$T/metawear.csv" "$T/nosuch.csv" "$T/o.csv"
+expect_err "nosuch.csv: cannot open" "the missing file named"
+awk -F, 'BEGIN { OFS = "," } NR > 1 { $1 += 1000 } { print }' "$T/phyphox.csv" > "$T/late.csv"
+expect_exit 1 "files that do not overlap" "$H" merge "$T/metawear.csv" "$T/late.csv" "$T/o.csv"
+expect_err "the files do not overlap in time" "no overlap named"
+rm -f "$T/o.csv"
+expect_exit 1 "a row of text in the gyroscope's file" "$H" merge "$T/metawear.csv" "$T/gyr_bad.csv" "$T/o.csv"
+expect_err "gyr_bad.csv:5001: column 2 ('Gyroscope x (rad/s)') is not a number: 'oops' (the 4999 samples before it are merged)" \
+    "the bad row named"
+n=$(($(wc -l < "$T/o.csv") - 1))
+if [ "$n" -gt 4900 ] && [ "$n" -le 4999 ]; then pass "the samples before the bad row written ($n)"
+else fail "samples written before the bad row: $n"; fi
+
+if [ "$fails" -ne 0 ]; then
+    echo "test_merge.sh: $fails failure(s)"
+    exit 1
+fi
+echo "test_merge.sh: all passed"
