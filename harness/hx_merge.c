@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <zlib.h>
 
 #include "hx_cli.h"
@@ -416,6 +417,23 @@ static const char *digits_unit(int digits)
 int hx_tri_load(hx_tri_t *f, const char *path, hx_tri_kind_t kind, const hx_csv_layout_t *units, char *err,
                 size_t err_size)
 {
+    return hx_tri_load_progress(f, path, kind, units, NULL, NULL, err, err_size);
+}
+
+/* The fraction of the file read (compressed bytes for a .gz), -1 unknown. */
+static double read_fraction(gzFile gz, const char *path)
+{
+    struct stat st;
+    const z_off_t off = gzoffset(gz);
+    if (off < 0 || stat(path, &st) != 0 || st.st_size <= 0) {
+        return -1.0;
+    }
+    return (double)off >= (double)st.st_size ? 1.0 : (double)off / (double)st.st_size;
+}
+
+int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, const hx_csv_layout_t *units,
+                         void (*progress)(void *ctx, double frac), void *ctx, char *err, size_t err_size)
+{
     text_t *t;
     char *hf[TRI_MAX_COLS], *df[TRI_MAX_COLS], hdr[TRI_LINE_MAX], delim = ',';
     int nh = 0, nd, rc, k, need, digits;
@@ -439,6 +457,17 @@ int hx_tri_load(hx_tri_t *f, const char *path, hx_tri_kind_t kind, const hx_csv_
         say(err, err_size, "%s: cannot open (%s)", path, strerror(errno != 0 ? errno : ENOENT));
         free(t);
         return -1;
+    }
+    {
+        /* binary data (a .bin given here) or UTF-16 text: the readers' words */
+        unsigned char head[512];
+        const int got = gzread(t->gz, head, sizeof head);
+        if (got > 0 && hx_head_not_text(path, head, (size_t)got, 0, err, err_size) != HX_HEAD_TEXT) {
+            gzclose(t->gz);
+            free(t);
+            return -1;
+        }
+        gzrewind(t->gz);
     }
     /* the header: the first line that is neither blank nor a '#' comment */
     for (;;) {
@@ -538,6 +567,12 @@ int hx_tri_load(hx_tri_t *f, const char *path, hx_tri_kind_t kind, const hx_csv_
         rc = next_line(t, path, f->error, sizeof f->error);
         if (rc <= 0) {
             break;
+        }
+        if (progress != NULL && (t->lineno & 65535) == 0) {
+            const double fr = read_fraction(t->gz, path);
+            if (fr >= 0.0) {
+                progress(ctx, fr);
+            }
         }
         nd = hx_split_fields(t->line, delim, df, TRI_MAX_COLS);
     }

@@ -52,6 +52,11 @@ typedef struct {
  *  kept, at least one), -1 (nothing usable: err). */
 int hx_tri_load(hx_tri_t *f, const char *path, hx_tri_kind_t kind, const hx_csv_layout_t *units, char *err,
                 size_t err_size);
+/** hx_tri_load with progress(ctx, fraction of the file read) every 65,536
+ *  lines (progress NULL: none). Binary data and UTF-16 text are refused as
+ *  every reader refuses them (hx_head_not_text). */
+int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, const hx_csv_layout_t *units,
+                         void (*progress)(void *ctx, double frac), void *ctx, char *err, size_t err_size);
 void hx_tri_free(hx_tri_t *f);
 
 /** What a header of n fields f is, as one sensor's file: HX_TRI_ACC or

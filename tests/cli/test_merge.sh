@@ -149,6 +149,8 @@ expect_err "ref.csv:1: the header names the accelerometer and the gyroscope: a l
     "a log with both sensors is sent to the other commands"
 expect_exit 2 "one file twice" "$H" merge "$T/phyphox.csv" "$T/phyphox.csv" "$T/o.csv"
 expect_exit 2 "the output is an input" "$H" merge "$T/metawear.csv" "$T/phyphox.csv" "$T/phyphox.csv"
+expect_exit 1 "a .bin given as a file" "$H" merge vectors/walk.bin "$T/phyphox.csv" "$T/o.csv"
+expect_err "walk.bin: binary data, not a log" "a .bin refused as the readers refuse binary data"
 expect_exit 1 "a missing file" "$H" merge "$T/metawear.csv" "$T/nosuch.csv" "$T/o.csv"
 expect_err "nosuch.csv: cannot open" "the missing file named"
 awk -F, 'BEGIN { OFS = "," } NR > 1 { $1 += 1000 } { print }' "$T/phyphox.csv" > "$T/late.csv"
