@@ -88,6 +88,10 @@ int hx_cmd_merge(int argc, char **argv)
                           "info %s)", a.pos[0], a.pos[0]);
         return HX_EXIT_USAGE;
     }
+    /* an output that cannot be written is found before the reading */
+    if (strcmp(a.pos[2], "-") != 0 && hx_check_writable("merge", a.pos[2]) != 0) {
+        return HX_EXIT_IO;
+    }
     /* an hour at 400 Hz on each side takes 5 s, each file's reading about
      * 30 % of it, the writing of the CSV 40 % */
     hx_progress_start(&pr, "merge", 1.0);

@@ -149,6 +149,10 @@ expect_err "ref.csv:1: the header names the accelerometer and the gyroscope: a l
     "a log with both sensors is sent to the other commands"
 expect_exit 2 "one file twice" "$H" merge "$T/phyphox.csv" "$T/phyphox.csv" "$T/o.csv"
 expect_exit 2 "the output is an input" "$H" merge "$T/metawear.csv" "$T/phyphox.csv" "$T/phyphox.csv"
+expect_exit 3 "an output in a directory that does not exist" "$H" merge "$T/metawear.csv" "$T/phyphox.csv" "$T/no/o.csv"
+expect_err "no/o.csv" "the output named"
+if grep -q "samples," "$T/err"; then fail "the files read before the output was found unwritable"
+else pass "the output checked before the files are read"; fi
 expect_exit 1 "a .bin given as a file" "$H" merge vectors/walk.bin "$T/phyphox.csv" "$T/o.csv"
 expect_err "walk.bin: binary data, not a log" "a .bin refused as the readers refuse binary data"
 expect_exit 1 "a missing file" "$H" merge "$T/metawear.csv" "$T/nosuch.csv" "$T/o.csv"
