@@ -181,6 +181,11 @@ static void layout_unit(hx_csv_layout_t *l, hx_name_unit_t u)
     }
 }
 
+void hx_csv_layout_unit(hx_csv_layout_t *l, hx_name_unit_t u)
+{
+    layout_unit(l, u);
+}
+
 static hx_name_unit_t acc_unit_of(double scale)
 {
     return scale == HX_G_MPS2    ? HX_UNIT_G
@@ -629,6 +634,11 @@ static int parse_time_ns(const char *s, int k, int64_t *out)
     }
     *out = (ip * p10[k] + fp + up) * (neg ? -1 : 1);
     return 0;
+}
+
+int hx_parse_time_ns(const char *s, int digits, int64_t *out)
+{
+    return parse_time_ns(s, digits, out);
 }
 
 /* Seconds to ns with a range check (|t| < 9.2e9 s keeps int64 ns exact enough). */

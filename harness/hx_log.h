@@ -18,6 +18,7 @@
 
 #include <stdio.h>
 #include "footnav/fnav_types.h"
+#include "hx_names.h"
 
 /** Input formats. */
 typedef enum {
@@ -74,6 +75,12 @@ int hx_name_eq(const char *a, const char *b);
  *  quotes is the field's, and a field loses the blanks, quotes and line
  *  ends around it. Returns the count. */
 int hx_split_fields(char *line, char delim, char **f, int max);
+/** A time stamp as text to integer ns, as the readers read it: exactly
+ *  for a plain decimal in the unit of 10^digits ns (9 s, 6 ms, 3 us, 0 ns;
+ *  the point moves in the text), a date and time as such (its own unit).
+ *  0 ok; -1 not a number, -2 NaN or out of range, -3 beyond int64 ns,
+ *  -4/-5 a date and time that is none. */
+int hx_parse_time_ns(const char *s, int digits, int64_t *out);
 /** The first of the n header fields f that is name (hx_name_eq); -1 when
  *  none is. */
 int hx_find_col(char **f, int n, const char *name);
@@ -123,6 +130,9 @@ typedef struct {
 /** The --units name of an acceleration scale: "g", "mg", else "m/s2". */
 const char *hx_accel_unit_name(double acc_scale);
 
+/** Set on l the field of the quantity of a unit a header names (the time
+ *  column's digits, the accel or gyro scale); HX_UNIT_NONE sets none. */
+void hx_csv_layout_unit(hx_csv_layout_t *l, hx_name_unit_t u);
 /** The interchange names and units (t,ax,...,temp in s, m/s^2, rad/s). */
 void hx_csv_layout_default(hx_csv_layout_t *l);
 /** Parse a --columns MAP ("t=timestamp_ns,ax=acc_x,..."; keys t, ax, ay, az,

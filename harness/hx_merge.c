@@ -4,7 +4,6 @@
 
 #include <ctype.h>
 #include <errno.h>
-#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -118,94 +117,41 @@ static int unit_is(hx_tri_kind_t kind, hx_name_unit_t u)
     return kind == HX_TRI_ACC ? (u >= HX_UNIT_MPS2 && u <= HX_UNIT_UG) : (u >= HX_UNIT_RPS && u <= HX_UNIT_MDPS);
 }
 
-static double unit_scale(hx_name_unit_t u)
-{
-    switch (u) {
-    case HX_UNIT_G: return HX_G_MPS2;
-    case HX_UNIT_MG: return HX_MG_MPS2;
-    case HX_UNIT_UG: return HX_UG_MPS2;
-    case HX_UNIT_DPS: return HX_DPS_RPS;
-    case HX_UNIT_MDPS: return HX_MDPS_RPS;
-    default: return 1.0;
-    }
-}
-
+/* A unit as its --units value spells it ("g", "deg/s", "ms"). */
 static const char *unit_text(hx_name_unit_t u)
 {
-    static const char *const k[] = { "", "s", "ms", "us", "ns", "m/s^2", "g", "mg", "ug", "rad/s", "deg/s", "mdps" };
-    return (size_t)u < sizeof k / sizeof k[0] ? k[u] : "";
+    const char *item = hx_name_unit_item(u);
+    return item != NULL ? strchr(item, '=') + 1 : "";
 }
 
-/* The unit of --units' scale of this sensor (hx_csv_layout_t). */
-static hx_name_unit_t unit_of_scale(hx_tri_kind_t kind, double scale)
+/* A field into buf with a decimal comma read as a point when the fields
+ * are not comma-separated ("0,25" in a phyphox export with semicolons or
+ * tabs). 0, -1 empty or too long. */
+static int field_text(const char *s, char delim, char *buf, size_t size)
 {
-    static const hx_name_unit_t acc[] = { HX_UNIT_MPS2, HX_UNIT_G, HX_UNIT_MG, HX_UNIT_UG };
-    static const hx_name_unit_t gyr[] = { HX_UNIT_RPS, HX_UNIT_DPS, HX_UNIT_MDPS };
-    const hx_name_unit_t *u = kind == HX_TRI_ACC ? acc : gyr;
-    const size_t n = kind == HX_TRI_ACC ? 4 : 3;
-    size_t i;
-    for (i = 0; i < n; i++) {
-        if (fabs(unit_scale(u[i]) - scale) <= 1e-12 * scale) {
-            return u[i];
-        }
-    }
-    return u[0];
-}
-
-/* A field as a number: whole numbers of up to 19 digits (int64) exactly in *iv
- * (*is_int 1), any other decimal number in *dv. A decimal comma is read
- * when the fields are not comma-separated ("0,25" in a phyphox export with
- * semicolons or tabs). 0 ok, -1 not a number. */
-static int field_number(const char *s, char delim, int64_t *iv, double *dv, int *is_int)
-{
-    char buf[64];
-    size_t i, len = strlen(s), digits = 0;
-    if (len == 0 || len >= sizeof buf) {
+    size_t i, len = strlen(s);
+    if (len == 0 || len >= size) {
         return -1;
     }
-    for (i = 0; i < len; i++) {
+    for (i = 0; i <= len; i++) {
         buf[i] = (delim != ',' && s[i] == ',') ? '.' : s[i];
-        digits += isdigit((unsigned char)s[i]) != 0;
-    }
-    buf[len] = '\0';
-    *is_int = 0;
-    if (digits > 0 && digits <= 19 && digits + (buf[0] == '-' || buf[0] == '+') == len) {
-        char *end;
-        errno = 0;
-        *iv = (int64_t)strtoll(buf, &end, 10);
-        if (errno == 0 && *end == '\0') {
-            *is_int = 1;
-            *dv = (double)*iv;
-            return 0;
-        }
-    }
-    return hx_parse_number(buf, dv);
-}
-
-/* Stamps in the unit of 10^digits ns to ns: exact for whole numbers. -1
- * out of int64 range. */
-static int to_ns(int is_int, int64_t iv, double dv, int digits, int64_t *out)
-{
-    int64_t mul = 1;
-    int k;
-    for (k = 0; k < digits; k++) {
-        mul *= 10;
-    }
-    if (is_int) {
-        if (iv > INT64_MAX / mul || iv < -(INT64_MAX / mul)) {
-            return -1;
-        }
-        *out = iv * mul;
-        return 0;
-    }
-    {
-        const double x = dv * (double)mul;
-        if (!(fabs(x) < 9.2e18)) {
-            return -1;
-        }
-        *out = (int64_t)llround(x);
     }
     return 0;
+}
+
+/* A value field as a finite number: 0, -1 none. */
+static int field_value(const char *s, char delim, double *v)
+{
+    char buf[64];
+    return field_text(s, delim, buf, sizeof buf) == 0 && hx_parse_number(buf, v) == 0 && isfinite(*v) ? 0 : -1;
+}
+
+/* A time field as ns in the unit of 10^digits ns (hx_parse_time_ns: exact
+ * for plain decimals, dates and times read as such); its return. */
+static int field_time(const char *s, char delim, int digits, int64_t *ns)
+{
+    char buf[64];
+    return field_text(s, delim, buf, sizeof buf) == 0 ? hx_parse_time_ns(buf, digits, ns) : -1;
 }
 
 typedef struct {
@@ -349,10 +295,9 @@ static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_
     c->t_unit = HX_UNIT_NONE;
     for (i = 0; i < ntimes; i++) {
         hx_name_class_t cl;
-        int64_t iv;
-        double dv;
-        int is_int;
-        if (times[i] >= nd || field_number(d[times[i]], delim, &iv, &dv, &is_int) != 0) {
+        int64_t ns;
+        const int rc = times[i] < nd ? field_time(d[times[i]], delim, 9, &ns) : -1;
+        if (rc != 0 && rc != -3) { /* -3: a number beyond int64 in seconds, as ns since the epoch is */
             continue;
         }
         (void)hx_name_classify(f[times[i]], &cl);
@@ -375,7 +320,7 @@ static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_
 }
 
 /* Grow the arrays to hold n + 1 samples. 0, -1 out of memory. */
-static int grow(hx_tri_t *f, size_t *cap, int64_t **ti, double **tf, unsigned char **isint)
+static int grow(hx_tri_t *f, size_t *cap)
 {
     size_t c;
     void *p;
@@ -383,18 +328,10 @@ static int grow(hx_tri_t *f, size_t *cap, int64_t **ti, double **tf, unsigned ch
         return 0;
     }
     c = *cap == 0 ? 4096 : *cap * 2;
-    if ((p = realloc(*ti, c * sizeof **ti)) == NULL) {
+    if ((p = realloc(f->t_ns, c * sizeof *f->t_ns)) == NULL) {
         return -1;
     }
-    *ti = (int64_t *)p;
-    if ((p = realloc(*tf, c * sizeof **tf)) == NULL) {
-        return -1;
-    }
-    *tf = (double *)p;
-    if ((p = realloc(*isint, c)) == NULL) {
-        return -1;
-    }
-    *isint = (unsigned char *)p;
+    f->t_ns = (int64_t *)p;
     if ((p = realloc(f->v, c * sizeof *f->v)) == NULL) {
         return -1;
     }
@@ -403,11 +340,9 @@ static int grow(hx_tri_t *f, size_t *cap, int64_t **ti, double **tf, unsigned ch
     return 0;
 }
 
-/* The digits of a time unit: 9 s, 6 ms, 3 us, 0 ns. */
-static int unit_digits(hx_name_unit_t u)
-{
-    return u == HX_UNIT_MS ? 6 : u == HX_UNIT_US ? 3 : u == HX_UNIT_NS ? 0 : 9;
-}
+/* The rows of a time column that names no unit whose intervals judge it
+ * (a rate no IMU has in seconds: hx_time_unit_fix). */
+#define TRI_PROBE_ROWS 4096
 
 static const char *digits_unit(int digits)
 {
@@ -436,15 +371,11 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
 {
     text_t *t;
     char *hf[TRI_MAX_COLS], *df[TRI_MAX_COLS], hdr[TRI_LINE_MAX], delim = ',';
-    int nh = 0, nd, rc, k, need, digits;
-    size_t m;
+    int nh = 0, nd, rc, k, need, unitless, overflow = 0, nprobe = 0;
     cols_t c;
-    size_t cap = 0, i;
-    int64_t *ti = NULL;
-    double *tf = NULL, scale;
-    unsigned char *isint = NULL;
-    int given_t = units != NULL && (units->units_given & 1), given_v = units != NULL &&
-                  (units->units_given & (kind == HX_TRI_ACC ? 2 : 4));
+    size_t cap = 0;
+    double scale, *probe = NULL;
+    hx_csv_layout_t l;
     memset(f, 0, sizeof *f);
     f->kind = kind;
     t = (text_t *)calloc(1, sizeof *t);
@@ -508,61 +439,82 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
         snprintf(f->cols[k + 1], sizeof f->cols[k + 1], "%s", hf[c.ax[k]]);
     }
     /* units: --units first, then the names, then the interchange's */
-    if (given_v) {
-        c.unit = unit_of_scale(kind, kind == HX_TRI_ACC ? units->acc_scale : units->gyr_scale);
-        f->unit_from = "--units";
-    } else if (c.unit != HX_UNIT_NONE) {
-        f->unit_from = "named";
+    if (units != NULL) {
+        l = *units;
     } else {
-        c.unit = kind == HX_TRI_ACC ? HX_UNIT_MPS2 : HX_UNIT_RPS;
-        f->unit_from = "default";
+        hx_csv_layout_default(&l);
     }
-    f->unit = unit_text(c.unit);
-    scale = unit_scale(c.unit);
+    if (!(l.units_given & 1)) {
+        hx_csv_layout_unit(&l, c.t_unit);
+    }
+    if (!(l.units_given & (kind == HX_TRI_ACC ? 2 : 4))) {
+        hx_csv_layout_unit(&l, c.unit);
+    }
+    unitless = !(l.units_given & 1) && c.t_unit == HX_UNIT_NONE;
+    f->time_unit = digits_unit(l.time_digits);
+    scale = kind == HX_TRI_ACC ? l.acc_scale : l.gyr_scale;
+    f->unit = kind == HX_TRI_ACC ? hx_accel_unit_name(scale)
+              : scale == HX_DPS_RPS ? "deg/s" : scale == HX_MDPS_RPS ? "mdps" : "rad/s";
+    f->unit_from = (l.units_given & (kind == HX_TRI_ACC ? 2 : 4)) ? "--units"
+                   : c.unit != HX_UNIT_NONE ? "named" : "default";
+    if (unitless && (probe = (double *)malloc(TRI_PROBE_ROWS * sizeof *probe)) == NULL) {
+        say(err, err_size, "%s: out of memory", path);
+        goto fail;
+    }
     need = c.t;
     for (k = 0; k < 3; k++) {
         need = c.ax[k] > need ? c.ax[k] : need;
     }
-    /* the rows: the first is in t->line already */
+    /* the rows (the first is in t->line already); a row whose stamp is not
+     * after the last kept one's (a repeated stamp, a step back) dropped */
     for (;;) {
         if (!blank_line(t->line) && t->line[0] != '#') {
-            int64_t iv;
-            double dv, v[3];
-            int is_int, bad = -1;
+            int64_t ns = 0;
+            double v[3];
+            int bad = -1, trc;
             if (nd <= need) {
                 say(f->error, sizeof f->error, "%s:%ld: %d field%s, the %s's columns need %d", path, t->lineno,
                     nd, nd == 1 ? "" : "s", k_sensor[kind], need + 1);
                 break;
             }
-            if (field_number(df[c.t], delim, &iv, &dv, &is_int) != 0) {
+            trc = field_time(df[c.t], delim, l.time_digits, &ns);
+            if (unitless && nprobe < TRI_PROBE_ROWS && field_value(df[c.t], delim, &probe[nprobe]) == 0) {
+                nprobe++;
+            }
+            if (trc == -3 && unitless) {
+                /* beyond int64 ns in seconds: judged by the probe below */
+                overflow = 1;
+                if (nprobe >= TRI_PROBE_ROWS) {
+                    break;
+                }
+            } else if (trc != 0) {
                 bad = c.t;
             }
             for (k = 0; k < 3 && bad < 0; k++) {
-                int64_t i2;
-                int i3;
-                if (field_number(df[c.ax[k]], delim, &i2, &v[k], &i3) != 0 || !isfinite(v[k])) {
+                if (field_value(df[c.ax[k]], delim, &v[k]) != 0) {
                     bad = c.ax[k];
                 }
-            }
-            if (bad < 0 && !isfinite(dv)) {
-                bad = c.t;
             }
             if (bad >= 0) {
                 say(f->error, sizeof f->error, "%s:%ld: column %d ('%s') is not a number: '%.40s'", path, t->lineno,
                     bad + 1, hf[bad], df[bad]);
                 break;
             }
-            if (grow(f, &cap, &ti, &tf, &isint) != 0) {
-                say(f->error, sizeof f->error, "%s:%ld: out of memory", path, t->lineno);
-                break;
+            if (overflow) {
+                /* no sample kept: the probe decides */
+            } else if (f->n > 0 && ns <= f->t_ns[f->n - 1]) {
+                f->steps_back++;
+            } else {
+                if (grow(f, &cap) != 0) {
+                    say(f->error, sizeof f->error, "%s:%ld: out of memory", path, t->lineno);
+                    break;
+                }
+                f->t_ns[f->n] = ns;
+                for (k = 0; k < 3; k++) {
+                    f->v[f->n][k] = v[k] * scale;
+                }
+                f->n++;
             }
-            ti[f->n] = iv;
-            tf[f->n] = dv;
-            isint[f->n] = (unsigned char)is_int;
-            for (k = 0; k < 3; k++) {
-                f->v[f->n][k] = v[k] * scale;
-            }
-            f->n++;
         }
         rc = next_line(t, path, f->error, sizeof f->error);
         if (rc <= 0) {
@@ -576,39 +528,21 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
         }
         nd = hx_split_fields(t->line, delim, df, TRI_MAX_COLS);
     }
-    f->lines = t->lineno;
-    if (f->n == 0) {
-        say(err, err_size, "%s", f->error[0] != '\0' ? f->error : "no sample");
-        goto fail;
-    }
-    /* the time unit: --units, the name's, else seconds unless the stamps
-     * read so give a rate no IMU has */
-    if (given_t) {
-        digits = units->time_digits;
-        f->time_unit = digits_unit(digits);
-    } else if (c.t_unit != HX_UNIT_NONE) {
-        digits = unit_digits(c.t_unit);
-        f->time_unit = unit_text(c.t_unit);
-    } else {
-        double *dt = (double *)malloc((f->n > 1 ? f->n - 1 : 1) * sizeof *dt), rate = 0.0;
-        int nd_t = 0;
+    if (unitless) {
+        /* seconds, unless the stamps so read give a rate no IMU has: the
+         * median of the first rows' positive intervals */
+        double rate = 0.0;
+        int m = 0, i;
         hx_time_fix_t fix;
-        if (dt == NULL) {
-            say(err, err_size, "%s: out of memory", path);
-            goto fail;
-        }
-        for (i = 1; i < f->n && nd_t < INT_MAX; i++) {
-            if (tf[i] > tf[i - 1]) {
-                dt[nd_t++] = tf[i] - tf[i - 1];
+        for (i = 1; i < nprobe; i++) {
+            if (probe[i] > probe[i - 1]) {
+                probe[m++] = probe[i] - probe[i - 1];
             }
         }
-        if (nd_t > 0) {
-            const double med = hx_median(dt, nd_t);
+        if (m > 0) {
+            const double med = hx_median(probe, m);
             rate = med > 0.0 ? 1.0 / med : 0.0;
         }
-        free(dt);
-        digits = 9;
-        f->time_unit = "s";
         if (rate > 0.0 && (rate < HX_TIME_RATE_MIN_HZ || rate > HX_TIME_RATE_MAX_HZ) &&
             hx_time_unit_fix(rate, 9, &fix)) {
             say(err, err_size, "%s: the time column '%s' names no unit, and in seconds its stamps give %.3g Hz: "
@@ -617,42 +551,22 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
             goto fail;
         }
     }
-    f->t_ns = (int64_t *)malloc(f->n * sizeof *f->t_ns);
-    if (f->t_ns == NULL) {
-        say(err, err_size, "%s: out of memory", path);
+    if (overflow) {
+        say(err, err_size, "%s: the stamps of column '%s' are beyond 292 years in nanoseconds read in %s (give "
+                           "their unit with --units time=...)", path, f->cols[0], f->time_unit);
         goto fail;
     }
-    /* in ns, a row whose stamp is not after the last kept one's dropped
-     * (a repeated stamp, a step back, or two stamps one ns rounds to) */
-    for (i = 0, m = 0; i < f->n; i++) {
-        int64_t ns;
-        if (to_ns(isint[i], ti[i], tf[i], digits, &ns) != 0) {
-            say(err, err_size, "%s: the stamp %.17g %s of column '%s' is out of range in nanoseconds", path, tf[i],
-                f->time_unit, f->cols[0]);
-            goto fail;
-        }
-        if (m > 0 && ns <= f->t_ns[m - 1]) {
-            f->steps_back++;
-            continue;
-        }
-        f->t_ns[m] = ns;
-        for (k = 0; k < 3; k++) {
-            f->v[m][k] = f->v[i][k];
-        }
-        m++;
+    if (f->n == 0) {
+        say(err, err_size, "%s", f->error[0] != '\0' ? f->error : "no sample");
+        goto fail;
     }
-    f->n = m;
     f->rate_hz = hx_stamp_rate_hz(f->t_ns, f->n, NULL);
-    free(ti);
-    free(tf);
-    free(isint);
+    free(probe);
     gzclose(t->gz);
     free(t);
     return f->error[0] != '\0' ? 1 : 0;
 fail:
-    free(ti);
-    free(tf);
-    free(isint);
+    free(probe);
     gzclose(t->gz);
     free(t);
     hx_tri_free(f);

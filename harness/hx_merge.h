@@ -32,7 +32,6 @@ typedef struct {
     int64_t *t_ns;            /**< stamps, ns, in the file's own unit and epoch */
     double (*v)[3];           /**< m/s^2 or rad/s */
     double rate_hz;           /**< hx_stamp_rate_hz of the stamps (0: fewer than 2) */
-    long lines;               /**< lines read */
     long steps_back;          /**< rows dropped: a stamp not after the last kept one's */
     char cols[4][64];         /**< the names of the time column and of x, y, z, as the header spells them */
     const char *time_unit;    /**< "s", "ms", "us", "ns" */

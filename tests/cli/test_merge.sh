@@ -105,7 +105,7 @@ expect_err "slog_acc.csv: the time column 'time' names no unit, and in seconds i
     "the stamps' unit named"
 if [ -e "$T/m3.csv" ]; then fail "a refused merge wrote its output"; else pass "nothing written before the refusal"; fi
 expect_exit 0 "Sensor Logger with --units time=ns" "$H" merge "$T/slog_acc.csv" "$T/slog_gyr.csv" "$T/m3.csv" --units time=ns
-expect_err "slog_acc.csv: .* x, y, z 'x', 'y', 'z' in m/s^2 (no unit named)" "the bare axes read (z, y, x in the file)"
+expect_err "slog_acc.csv: .* x, y, z 'x', 'y', 'z' in m/s2 (no unit named)" "the bare axes read (z, y, x in the file)"
 if msg=$(/usr/bin/python3 - "$T/slog_acc.csv" "$T/slog_gyr.csv" "$T/m3.csv" <<'PY'
 import sys, numpy as np
 acc, gyr = (np.loadtxt(f, delimiter=',', skiprows=1, dtype=np.float64) for f in sys.argv[1:3])
