@@ -111,6 +111,7 @@ static void test_linux_replay_port(void **state)
     while (fnav_port_read(&port, &s) == FNAV_OK) {
         f.t_ns = s.t_ns;
         f.pos_m[0] = (fnav_real_t)n;
+        f.flags = (n >= 2) ? FNAV_FRAME_ALIGNED : 0u; /* the last column says it */
         assert_int_equal(fnav_port_write_nav(&port, &f), FNAV_OK);
         n++;
     }
@@ -124,8 +125,12 @@ static void test_linux_replay_port(void **state)
     rewind(out);
     assert_non_null(fgets(line, sizeof line, out));
     assert_memory_equal(line, "t,x,y,z,", 8);
+    assert_non_null(strstr(line, ",lever_z,aligned\n"));
     n = 0;
     while (fgets(line, sizeof line, out) != NULL) {
+        const char *last = strrchr(line, ',');
+        assert_non_null(last);
+        assert_string_equal(last, n >= 2 ? ",1\n" : ",0\n");
         n++;
     }
     assert_int_equal(n, 6);

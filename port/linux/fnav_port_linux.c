@@ -74,6 +74,10 @@ static fnav_status_t linux_write_nav(void *ctx, const fnav_nav_frame_t *f)
     for (i = 0; i < 3; i++) {
         fprintf(c->nav_csv, ",%.4f", (double)f->lever_m[i]);
     }
+    /* last, so that the columns before it keep their places: 0 before the
+     * alignment and while re-aligning after a reset (the state columns
+     * then hold 0 or the held position and heading) */
+    fprintf(c->nav_csv, ",%u", (f->flags & FNAV_FRAME_ALIGNED) ? 1u : 0u);
     /* a full disk shows when the buffer is flushed: ferror is sticky */
     if (fputc('\n', c->nav_csv) == EOF || ferror(c->nav_csv)) {
         if (c->write_errno == 0) {

@@ -32,6 +32,6 @@ void fnav_linux_port_init(fnav_port_t *port, fnav_linux_port_ctx_t *ctx, hx_read
 #define FNAV_LINUX_NAV_CSV_HEADER                                                              \
     "t,x,y,z,vx,vy,vz,roll,pitch,yaw,bgx,bgy,bgz,bax,bay,baz,stance,zupt,health,"             \
     "P_att_x,P_att_y,P_att_z,P_vel_x,P_vel_y,P_vel_z,P_pos_x,P_pos_y,P_pos_z,"                \
-    "P_bg_x,P_bg_y,P_bg_z,P_ba_x,P_ba_y,P_ba_z,lever_x,lever_y,lever_z"
+    "P_bg_x,P_bg_y,P_bg_z,P_ba_x,P_ba_y,P_ba_z,lever_x,lever_y,lever_z,aligned"
 
 #endif /* FNAV_PORT_LINUX_H */

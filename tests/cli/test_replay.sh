@@ -107,6 +107,20 @@ share_all = sum(int(r["zupt"]) for r in rows) / len(rows)
 sys.exit(0 if len(al) == 14555 and abs(share_al - j["stance_fraction"]) < 1e-9 and abs(share_all - 0.5567) < 1e-4 else 1)' "$T/s.json" "$T/traj.csv"; then
     pass "JSON stance_fraction: the ZUPT rows' share of the aligned rows (0.6326), not of all rows (0.5567)"; else
     fail "stance_fraction is not the aligned rows' share"; fi
+# the trajectory's last column says which rows are aligned: from the JSON's
+# aligned_at_s on, and no row before it (whose state columns hold 0)
+if "${PY:-/usr/bin/python3}" -c '
+import csv, json, sys
+j = json.load(open(sys.argv[1]))
+rows = list(csv.DictReader(open(sys.argv[2])))
+first = next(r for r in rows if r["aligned"] == "1")
+before = [r for r in rows if float(r["t"]) < j["aligned_at_s"] - 5e-7]
+ok = (list(rows[0].keys())[-1] == "aligned" and abs(float(first["t"]) - j["aligned_at_s"]) < 5e-7
+      and sum(r["aligned"] == "1" for r in rows) == 14555 and all(r["aligned"] == "0" for r in before)
+      and all(float(r["P_att_x"]) == 0.0 and float(r["x"]) == 0.0 for r in before))
+sys.exit(0 if ok else 1)' "$T/s.json" "$T/traj.csv"; then
+    pass "CSV column aligned: 0 on the 1,984 rows before aligned_at_s, 1 on the 14,555 from it"; else
+    fail "CSV column aligned does not match aligned_at_s"; fi
 # the configuration that ran, in the summary and the JSON (not only in the
 # JSON's command)
 if [ "$(sed -n 2p "$T/out")" = "config            profile generic-mems, bias model ar1, detector shoe (adaptive threshold), samples instant, lever on, settling on, ZARU off" ]; then
