@@ -9,6 +9,10 @@
 #include "hx_commands.h"
 #include "hx_merge.h"
 
+/* A stamp at or after it reads as a date: 1e8 s since 1970 (March 1973),
+ * beyond any recording's seconds from its start (three years) */
+#define MERGE_DATE_NS 100000000000000000LL
+
 static const hx_opt_t k_opts[] = {
     { "--to", "FORMAT", "output format: bin or csv (default: from OUT's extension, .bin -> bin)", 0 },
     { "--units", "SPEC", "units the headers do not name (or override): time=s|ms|us|ns,accel=m/s2|g|mg|ug,"
@@ -118,16 +122,35 @@ int hx_cmd_merge(int argc, char **argv)
         }
         describe(a.pos[k], &f[k]);
     }
+    if (f[0].t_from_start && f[1].t_from_start && f[0].t_ns[0] == 0 && f[1].t_ns[0] == 0) {
+        /* MetaWear's "elapsed (s)" counts from each file's own first
+         * sample: the two line up only if both sensors began together */
+        hx_warn("merge", "both files' time ('%s', '%s') starts at 0: if each counts from its own first sample "
+                         "(as MetaWear's elapsed does), the two are aligned only if both sensors began at once; "
+                         "a column of the logger's clock (epoch, a date and time) would align them",
+                f[0].cols[0], f[1].cols[0]);
+    }
     /* the faster file's stamps; the accelerometer's at a rate within 1 % */
     base = f[1].rate_hz > 1.01 * f[0].rate_hz ? 1 : 0;
     other = 1 - base;
     lo = f[0].t_ns[0] > f[1].t_ns[0] ? f[0].t_ns[0] : f[1].t_ns[0];
     hi = f[0].t_ns[f[0].n - 1] < f[1].t_ns[f[1].n - 1] ? f[0].t_ns[f[0].n - 1] : f[1].t_ns[f[1].n - 1];
     if (lo > hi) {
-        hx_error("merge", "the files do not overlap in time: %s spans %.9g to %.9g s, %s %.9g to %.9g s (one "
-                          "recording's two files share a clock)",
+        /* one file on a clock since 1970 (after 1973 in s), the other from
+         * a start: two loggers' files, or a time column of each kind */
+        const int d0 = f[0].t_ns[0] >= MERGE_DATE_NS, d1 = f[1].t_ns[0] >= MERGE_DATE_NS;
+        char why[512];
+        if (d0 != d1) {
+            const int kd = d0 ? 0 : 1;
+            snprintf(why, sizeof why, "%s's time ('%s') reads as a date (since 1970), %s's ('%s') as seconds from a "
+                                      "start: not one clock (one recording's two files share one)",
+                     a.pos[kd], f[kd].cols[0], a.pos[1 - kd], f[1 - kd].cols[0]);
+        } else {
+            snprintf(why, sizeof why, "one recording's two files share a clock");
+        }
+        hx_error("merge", "the files do not overlap in time: %s spans %.9g to %.9g s, %s %.9g to %.9g s; %s",
                  a.pos[0], (double)f[0].t_ns[0] * 1e-9, (double)f[0].t_ns[f[0].n - 1] * 1e-9, a.pos[1],
-                 (double)f[1].t_ns[0] * 1e-9, (double)f[1].t_ns[f[1].n - 1] * 1e-9);
+                 (double)f[1].t_ns[0] * 1e-9, (double)f[1].t_ns[f[1].n - 1] * 1e-9, why);
         hx_tri_free(&f[0]);
         hx_tri_free(&f[1]);
         return HX_EXIT_DATA;

@@ -187,6 +187,7 @@ static int blank_line(const char *s)
 /* What the header gives: the columns of time and of x, y, z. */
 typedef struct {
     int t, ax[3];
+    int t_elapsed; /* the time column's name is one from a start (elapsed) */
     hx_name_unit_t t_unit, unit;
 } cols_t;
 
@@ -195,7 +196,7 @@ typedef struct {
 static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_t kind, const char *path,
                      long line, cols_t *c, char *msg, size_t size)
 {
-    int i, k, own[3][3], nown[3] = { 0, 0, 0 }, other = -1, nother = 0, times[8], ntimes = 0, bare_used = 0;
+    int i, k, own[3][3], nown[3] = { 0, 0, 0 }, other = -1, nother = 0, times[8], ntimes = 0, bare_used = 0, best;
     const int k0 = kind == HX_TRI_ACC ? 1 : 4, ko = kind == HX_TRI_ACC ? 4 : 1;
     hx_name_unit_t au[3] = { HX_UNIT_NONE, HX_UNIT_NONE, HX_UNIT_NONE };
     for (i = 0; i < n; i++) {
@@ -288,22 +289,36 @@ static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_
         return -1;
     }
     c->unit = au[0];
-    /* the time: a time name whose first value is a number (MetaWear's
-     * "time (-13:00)" holds a date and its "elapsed (s)" the seconds), one
-     * naming its unit before one that does not */
+    /* the time: a time name whose first value reads as a time, the two
+     * files' shared clock first. MetaWear's MetaBase writes "epoch (ms)",
+     * "time (-13:00)" (a date and time) and "elapsed (s)", and each file's
+     * elapsed counts from its own first sample: were the two sensors
+     * started apart, merged by it they would be that far out of step. So a
+     * clock's name (epoch, unix) first, then a date and time, then a name
+     * with its unit, then any; the first of a rank. */
     c->t = -1;
     c->t_unit = HX_UNIT_NONE;
-    for (i = 0; i < ntimes; i++) {
+    c->t_elapsed = 0;
+    for (i = 0, best = -1; i < ntimes; i++) {
         hx_name_class_t cl;
         int64_t ns;
+        char text[64];
+        int rank;
         const int rc = times[i] < nd ? field_time(d[times[i]], delim, 9, &ns) : -1;
         if (rc != 0 && rc != -3) { /* -3: a number beyond int64 in seconds, as ns since the epoch is */
             continue;
         }
         (void)hx_name_classify(f[times[i]], &cl);
-        if (c->t < 0 || (c->t_unit == HX_UNIT_NONE && cl.unit != HX_UNIT_NONE)) {
+        /* a date and time, or a clock time alone, has a ':'; no number has */
+        rank = cl.clock == 1 ? 3
+               : field_text(d[times[i]], delim, text, sizeof text) == 0 && strchr(text, ':') != NULL ? 2
+               : cl.unit != HX_UNIT_NONE ? 1
+                                         : 0;
+        if (rank > best) {
+            best = rank;
             c->t = times[i];
             c->t_unit = cl.unit;
+            c->t_elapsed = cl.clock == -1;
         }
     }
     if (c->t < 0) {
@@ -435,6 +450,7 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
         goto fail;
     }
     snprintf(f->cols[0], sizeof f->cols[0], "%s", hf[c.t]);
+    f->t_from_start = c.t_elapsed;
     for (k = 0; k < 3; k++) {
         snprintf(f->cols[k + 1], sizeof f->cols[k + 1], "%s", hf[c.ax[k]]);
     }

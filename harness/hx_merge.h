@@ -34,6 +34,8 @@ typedef struct {
     double rate_hz;           /**< hx_stamp_rate_hz of the stamps (0: fewer than 2) */
     long steps_back;          /**< rows dropped: a stamp not after the last kept one's */
     char cols[4][64];         /**< the names of the time column and of x, y, z, as the header spells them */
+    int t_from_start;         /**< 1: the time column's name is a time from a start ("elapsed (s)"), which
+                                   MetaWear counts from each file's own first sample */
     const char *time_unit;    /**< "s", "ms", "us", "ns" */
     const char *unit;         /**< the values' unit: "m/s^2", "g", "mg", "ug", "rad/s", "deg/s", "mdps" */
     const char *unit_from;    /**< where the units came from: "named", "--units", "default" */
@@ -44,7 +46,10 @@ typedef struct {
  *  as parsed (hx_csv_units_parse; its units_given items override a unit
  *  the header names), NULL for none. A name of the other sensor with none
  *  of this one's is refused as swapped files; a file with both sensors'
- *  names is refused (read it directly); a time column that names no unit
+ *  names is refused (read it directly); of several time columns the one
+ *  of the clock two files share is read (a clock's name such as "epoch
+ *  (ms)", then a date and time, then a name with its unit, then the
+ *  first; MetaWear's "elapsed (s)" restarts in each file); a time column that names no unit
  *  whose stamps read in seconds give a rate outside 20 Hz - 100 kHz is
  *  refused with the unit they look like (hx_time_unit_fix). Returns 0
  *  (all read), 1 (read up to an error, f->error; the samples before it

@@ -277,6 +277,7 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
     c->key = -1;
     c->unit = HX_UNIT_NONE;
     c->unit_unread = 0;
+    c->clock = 0;
     c->unit_text[0] = '\0';
     while (*s == ' ' || *s == '\t' || *s == '"' || *s == '\'') {
         s++;
@@ -340,8 +341,17 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
                           (strcmp(w[0], "date") == 0 && strcmp(w[1], "time") == 0) ||
                           (strcmp(w[0], "elapsed") == 0 && strcmp(w[1], "time") == 0))) {
         key = 0; /* "Time Stamp"; "DateTime", "Date Time", date_time: dates and times (docs/log-format.md) */
+        c->clock = strcmp(w[0], "elapsed") == 0 ? -1 : 0;
     } else if (n == 1 && strcmp(w[0], "elapsed") == 0) {
         key = 0;
+        c->clock = -1; /* from a start: MetaWear's "elapsed (s)" from each file's first sample */
+    } else if ((n == 1 || (n == 2 && (strcmp(w[1], "time") == 0 || strcmp(w[1], "timestamp") == 0 ||
+                                      strcmp(w[1], "ts") == 0))) &&
+               (strcmp(w[0], "epoch") == 0 || strcmp(w[0], "epoc") == 0 || strcmp(w[0], "unix") == 0)) {
+        /* a clock's: "epoch (ms)", MetaWear's "epoc (ms)", unix_time, the
+         * time since 1970 that two files of one logger share */
+        key = 0;
+        c->clock = 1;
     } else if (n == 1 && (strcmp(w[0], "millis") == 0 || strcmp(w[0], "micros") == 0)) {
         /* Arduino's clocks, named by their unit: millis() ms, micros() us */
         key = 0;
@@ -641,7 +651,7 @@ hx_name_unit_t hx_name_unit_of_text(const char *text)
 
 int hx_names_match(char *const *f, int n, hx_names_match_t *m)
 {
-    int i, k;
+    int i, k, nclock = 0, clock[3];
     memset(m, 0, sizeof *m);
     m->unit_col = -1;
     m->col_tns = -1;
@@ -667,11 +677,21 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
     for (i = 0; i < n && !m->consensys && !m->ros; i++) {
         hx_name_class_t c;
         const hx_name_kind_t kind = hx_name_classify(f[i], &c);
-        if (kind == HX_NAME_MATCH) {
+        if (kind == HX_NAME_MATCH && c.key == 0 && c.clock == 1) {
+            add_col(&nclock, clock, i);
+        } else if (kind == HX_NAME_MATCH) {
             add_col(&m->ncand[c.key], m->cand[c.key], i);
         } else if (kind == HX_NAME_NEAR) {
             add_col(&m->nnear[c.key], m->near[c.key], i);
         }
+    }
+    if (m->ncand[0] == 0) {
+        /* a clock's name ("epoch (ms)") is the time where no other time
+         * name is: beside "elapsed (s)" or "time" the header read as before */
+        for (k = 0; k < nclock && k < 3; k++) {
+            add_col(&m->ncand[0], m->cand[0], clock[k]);
+        }
+        m->ncand[0] = nclock;
     }
     for (i = 0; i < n && m->unit_col < 0 && !m->consensys && !m->ros; i++) {
         /* a key without a candidate that one name has but for its unit:

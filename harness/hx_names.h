@@ -27,6 +27,8 @@ typedef struct {
     int key;              /**< 0 t, 1..6 ax..gz (MATCH and NEAR), -1 none */
     hx_name_unit_t unit;  /**< the unit named, HX_UNIT_NONE when none (or not read) */
     int unit_unread;      /**< 1: a key's name (NEAR) whose unit is none read: "gx [deg/h]", "ax_ug" */
+    int clock;            /**< a time name: 1 a clock's (epoch, epoc, unix, unix_time: since 1970), -1 a time
+                               from a start (elapsed, elapsed time), 0 neither or not said */
     char unit_text[32];   /**< a key's name's unit as the header spells it ("°/s"), "" when none */
 } hx_name_class_t;
 
@@ -39,7 +41,9 @@ typedef struct {
  *  accX_mps2: acc, x, mps2); a unit in brackets or parentheses, or as the
  *  last word, is taken out (a zone in brackets after a time name too). The
  *  words left must be exactly a time name (t, time, timestamp, ts, time
- *  stamp, elapsed, elapsed time, datetime, date time; millis in ms and
+ *  stamp, elapsed, elapsed time, datetime, date time; epoch, epoc, unix
+ *  alone or with time, timestamp or ts: a clock's, c->clock 1, which
+ *  hx_names_match reads only where no other time name is; millis in ms and
  *  micros in us unless a unit is given), or a stem and an axis x, y, z, the
  *  axis apart or glued (acc_x, accx, ax): acceleration acc, accel,
  *  accelerometer, acceleration, a (glued only: ax); rate gyr, gyro,

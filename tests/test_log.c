@@ -3073,6 +3073,7 @@ static void test_time_unit_rate(void **state)
  * docs/log-format.md, "Names read without --columns"): one name */
 static void test_name_classify(void **state)
 {
+    hx_name_class_t c0;
     static const struct {
         const char *name;
         hx_name_kind_t kind;
@@ -3197,6 +3198,30 @@ static void test_name_classify(void **state)
         assert_int_equal(c.kind, k[i].kind);
         assert_int_equal(c.key, k[i].key);
         assert_int_equal(c.unit, k[i].unit);
+    }
+    {
+        /* a clock's time (since 1970), one from a start, and neither */
+        static const struct {
+            const char *name;
+            hx_name_unit_t unit;
+            int clock;
+        } t[] = {
+            { "epoch (ms)", HX_UNIT_MS, 1 }, { "epoc (ms)", HX_UNIT_MS, 1 }, { "unix_time", HX_UNIT_NONE, 1 },
+            { "Epoch Time [s]", HX_UNIT_S, 1 }, { "unix_timestamp_ns", HX_UNIT_NS, 1 }, { "epoch", HX_UNIT_NONE, 1 },
+            { "elapsed (s)", HX_UNIT_S, -1 }, { "Elapsed Time", HX_UNIT_NONE, -1 }, { "Time (s)", HX_UNIT_S, 0 },
+            { "time (-13:00)", HX_UNIT_NONE, 0 }, { "timestamp", HX_UNIT_NONE, 0 },
+        };
+        for (i = 0; i < sizeof t / sizeof t[0]; i++) {
+            hx_name_class_t c;
+            assert_int_equal(hx_name_classify(t[i].name, &c), HX_NAME_MATCH);
+            assert_int_equal(c.key, 0);
+            assert_int_equal(c.unit, t[i].unit);
+            assert_int_equal(c.clock, t[i].clock);
+        }
+        /* a word more is not a clock's name; an axis name is none */
+        assert_int_equal(hx_name_classify("epoch count", &c0), HX_NAME_OTHER);
+        assert_int_equal(hx_name_classify("acc_x", &c0), HX_NAME_MATCH);
+        assert_int_equal(c0.clock, 0);
     }
 }
 
@@ -3417,6 +3442,15 @@ static void test_names_match(void **state)
         { "t,acc_x,accel_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 0, { 0, -1, 3, 4, 5, 6, 7 }, { 0, 0, 0 },
           "--columns t=t,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
         { "time,timestamp,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 0, { -1, 2, 3, 4, 5, 6, 7 }, { 0, 0, 0 },
+          "--columns ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        /* a clock's name is the time where no other time name is; beside
+         * one, the other is read (as before the clock's names were read) */
+        { "epoch (ms),acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1, { 0, 1, 2, 3, 4, 5, 6 }, { HX_UNIT_MS, 0, 0 },
+          "--columns 't=epoch (ms),ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z' --units time=ms" },
+        { "epoch (ms),elapsed (s),acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1, { 1, 2, 3, 4, 5, 6, 7 },
+          { HX_UNIT_S, 0, 0 },
+          "--columns 't=elapsed (s),ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z' --units time=s" },
+        { "unix_time,epoch,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 0, { -1, 2, 3, 4, 5, 6, 7 }, { 0, 0, 0 },
           "--columns ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
         /* one quantity in two units: no one --units item reads it */
         { "t,acc_x [g],acc_y [g],acc_z,gyr_x,gyr_y,gyr_z", 0, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },

@@ -43,8 +43,10 @@ static int load(hx_tri_t *f, const char *text, hx_tri_kind_t kind, const char *u
     return rc;
 }
 
-/* MetaWear's accelerometer: elapsed (s) taken (the date beside it is no
- * number, the epoch no time name), the axes in g to m/s^2 */
+/* MetaWear's accelerometer: the epoch taken, the logger's clock (not
+ * elapsed (s), from the file's first sample; the date beside it is in
+ * MetaBase's spelling, no date read), the axes in g to m/s^2; without the
+ * epoch, an ISO date before elapsed (s); without either, elapsed (s) */
 static void test_metawear_columns(void **state)
 {
     hx_tri_t f;
@@ -57,14 +59,41 @@ static void test_metawear_columns(void **state)
                           HX_TRI_ACC, NULL, err, sizeof err),
                      0);
     assert_int_equal((int)f.n, 2);
-    assert_string_equal(f.cols[0], "elapsed (s)");
+    assert_string_equal(f.cols[0], "epoch (ms)");
+    assert_string_equal(f.time_unit, "ms");
+    assert_int_equal(f.t_from_start, 0);
     assert_string_equal(f.cols[3], "z-axis (g)");
     assert_string_equal(f.unit, "g");
-    assert_true(f.t_ns[0] == 0 && f.t_ns[1] == 10000000);
+    assert_true(f.t_ns[0] == 1700000000000000000LL && f.t_ns[1] == 1700000000010000000LL);
     assert_near(f.v[0][0], 0.5 * 9.80665, 1e-12);
     assert_near(f.v[0][1], -9.80665, 1e-12);
     assert_near(f.v[0][2], 2.0 * 9.80665, 1e-12);
     hx_tri_free(&f);
+    {
+        /* without the epoch: an ISO date before elapsed (s) (read as it is
+         * written, the zone in the name is not added); without either (the
+         * date in MetaBase's spelling): elapsed (s) */
+        static const struct {
+            const char *text, *col;
+            int from_start;
+            int64_t t0_ns;
+        } k[] = {
+            { "elapsed (s),time (-13:00),x-axis (g),y-axis (g),z-axis (g)\n"
+              "0.000,2023-11-14T09:13:20.000,0.5,-1,2\n0.010,2023-11-14T09:13:20.010,1,0,0\n",
+              "time (-13:00)", 0, 1699953200000000000LL },
+            { "time (-13:00),elapsed (s),x-axis (g),y-axis (g),z-axis (g)\n"
+              "2023-11-14T22.13.20.000,0.000,0.5,-1,2\n2023-11-14T22.13.20.010,0.010,1,0,0\n",
+              "elapsed (s)", 1, 0 },
+        };
+        size_t i;
+        for (i = 0; i < sizeof k / sizeof k[0]; i++) {
+            assert_int_equal(load(&f, k[i].text, HX_TRI_ACC, NULL, err, sizeof err), 0);
+            assert_string_equal(f.cols[0], k[i].col);
+            assert_int_equal(f.t_from_start, k[i].from_start);
+            assert_true(f.t_ns[0] == k[i].t0_ns && f.t_ns[1] - f.t_ns[0] == 10000000);
+            hx_tri_free(&f);
+        }
+    }
 }
 
 /* bare axes in another order (Sensor Logger's z,y,x), ns since the epoch

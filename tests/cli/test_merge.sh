@@ -22,13 +22,16 @@ expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/w.csv"
 awk -F, 'NR == 1 || $1 != last { print } { last = $1 }' "$T/w.csv" > "$T/ref.csv"
 
 # the files: metawear (accelerometer in g, the ISO date and epoch beside
-# elapsed (s)), phyphox (quoted names, rad/s), phyphox_semi (semicolons
-# and decimal commas), slog_acc / slog_gyr (Sensor Logger: time in ns since
+# elapsed (s)), phyphox_acc and phyphox (quoted names, m/s^2 and rad/s),
+# phyphox_semi (semicolons and decimal commas), mw_acc / mw_gyr (MetaWear's
+# MetaBase pair: epoch in whole ms, the date and time, elapsed from each
+# file's own first sample; g and deg/s; the gyroscope begins 7 samples
+# after the accelerometer), slog_acc / slog_gyr (Sensor Logger: time in ns since
 # the epoch, no units, the axes z, y, x; the gyroscope 1.3 ms after each
 # accelerometer sample, every 97th row missing and 12 rows from row 3001
 # missing: a gap), gyr_bad (a row of text at line 5001)
 /usr/bin/python3 - "$T" <<'PY' || fail "writing the two-file variants"
-import sys, numpy as np
+import datetime, sys, numpy as np
 T = sys.argv[1]
 d = np.genfromtxt(T + '/ref.csv', delimiter=',', names=True)
 t = d['t'] - d['t'][0]
@@ -39,6 +42,20 @@ with open(T + '/metawear.csv', 'w') as f:
     for ti, ai in zip(t, a):
         f.write('%d,2023-11-14T22.13.20.000,%.9f,%s\n' % (1700000000000 + int(ti * 1000), ti,
                                                           ','.join('%.9g' % (v / 9.80665) for v in ai)))
+with open(T + '/phyphox_acc.csv', 'w') as f:
+    f.write('"Time (s)","Acceleration x (m/s^2)","Acceleration y (m/s^2)","Acceleration z (m/s^2)"\n')
+    for ti, ai in zip(t, a):
+        f.write('%.9f,%s\n' % (ti, ','.join('%.9g' % v for v in ai)))
+ms = 1700000000000 + np.floor(t * 1000).astype(np.int64)
+def metawear(path, unit, vals, first):
+    with open(path, 'w') as f:
+        f.write('epoch (ms),time (-13:00),elapsed (s),x-axis (%s),y-axis (%s),z-axis (%s)\n' % (unit, unit, unit))
+        for k in range(first, len(t)):
+            loc = datetime.datetime.fromtimestamp(ms[k] // 1000 - 13 * 3600, datetime.timezone.utc)
+            f.write('%d,%s.%03d,%.3f,%s\n' % (ms[k], loc.strftime('%Y-%m-%dT%H:%M:%S'), ms[k] % 1000,
+                                              (ms[k] - ms[first]) / 1000, ','.join('%.9g' % v for v in vals[k])))
+metawear(T + '/mw_acc.csv', 'g', a / 9.80665, 0)
+metawear(T + '/mw_gyr.csv', 'deg/s', np.degrees(g), 7)
 with open(T + '/phyphox.csv', 'w') as f:
     f.write('"Time (s)","Gyroscope x (rad/s)","Gyroscope y (rad/s)","Gyroscope z (rad/s)"\n')
     for ti, gi in zip(t, g):
@@ -65,11 +82,10 @@ lines[5000] = '0.5,oops,1,2\n'
 open(T + '/gyr_bad.csv', 'w').write(''.join(lines))
 PY
 
-# --- MetaWear's accelerometer and phyphox's gyroscope on the same stamps:
-# the walk again (the accelerations through g and back: 1 ulp of float32)
-expect_exit 0 "merge metawear + phyphox" "$H" merge "$T/metawear.csv" "$T/phyphox.csv" "$T/m1.csv"
-expect_err "metawear.csv: 16334 samples, .* time 'elapsed (s)' in s, x, y, z 'x-axis (g)', 'y-axis (g)', 'z-axis (g)' in g$" \
-    "the MetaWear file: elapsed (s) chosen over the date and the epoch, the axes in g"
+# --- phyphox's accelerometer and gyroscope on the same stamps: the walk again
+expect_exit 0 "merge phyphox_acc + phyphox" "$H" merge "$T/phyphox_acc.csv" "$T/phyphox.csv" "$T/m1.csv"
+expect_err "phyphox_acc.csv: 16334 samples, .* time 'Time (s)' in s, x, y, z 'Acceleration x (m/s^2)', 'Acceleration y (m/s^2)', 'Acceleration z (m/s^2)' in m/s2$" \
+    "phyphox's accelerometer file read by its names"
 expect_err "wrote 16334 samples at the accelerometer's stamps" "every sample written"
 if msg=$(/usr/bin/python3 - "$T/ref.csv" "$T/m1.csv" <<'PY'
 import sys, numpy as np
@@ -80,7 +96,7 @@ dt = np.abs((r['t'] - r['t'][0]) - m['t']).max()
 print('accel %.3g m/s^2, gyro %.3g rad/s, time %.3g s' % (da, dg, dt))
 sys.exit(0 if len(r) == len(m) and da < 2e-6 and dg == 0 and dt < 5e-10 else 1)
 PY
-); then pass "metawear + phyphox: the walk's values ($msg)"; else fail "metawear + phyphox values: $msg"; fi
+); then pass "phyphox pair: the walk's values ($msg)"; else fail "phyphox pair values: $msg"; fi
 expect_exit 0 "replay the walk" "$H" replay "$T/ref.csv" --out "$T/ref_traj.csv" --quiet
 expect_exit 0 "replay the merged walk" "$H" replay "$T/m1.csv" --out "$T/m1_traj.csv" --quiet
 if msg=$(/usr/bin/python3 - "$T/ref_traj.csv" "$T/m1_traj.csv" <<'PY'
@@ -93,9 +109,51 @@ PY
 ); then pass "the merged walk replays to the walk's path ($msg)"; else fail "merged walk's path: $msg"; fi
 
 # --- semicolons and decimal commas read as the commas and points
-expect_exit 0 "merge metawear + phyphox_semi" "$H" merge "$T/metawear.csv" "$T/phyphox_semi.csv" "$T/m2.csv"
+expect_exit 0 "merge phyphox_acc + phyphox_semi" "$H" merge "$T/phyphox_acc.csv" "$T/phyphox_semi.csv" "$T/m2.csv"
 if cmp -s "$T/m1.csv" "$T/m2.csv"; then pass "semicolons and decimal commas: the same log"
 else fail "semicolons and decimal commas: the log differs"; fi
+
+# --- MetaWear's pair: merged on the logger's clock, "epoch (ms)", not on
+# "elapsed (s)", which each file counts from its own first sample (the
+# gyroscope's 7 samples, about 17 ms, after the accelerometer's); values
+# against numpy's: the accelerometer's whole-ms stamps from the gyroscope's
+# first on (a stamp repeated once in ms dropped), the gyroscope's values
+# at the same stamps
+expect_exit 0 "merge a MetaWear pair" "$H" merge "$T/mw_acc.csv" "$T/mw_gyr.csv" "$T/mw.csv"
+expect_err "mw_acc.csv: .* time 'epoch (ms)' in ms, x, y, z 'x-axis (g)', 'y-axis (g)', 'z-axis (g)' in g$" \
+    "MetaWear: the epoch chosen over the date and elapsed (s)"
+expect_err "mw_gyr.csv: .* time 'epoch (ms)' in ms, .* in deg/s$" "MetaWear's gyroscope: the epoch, deg/s"
+if msg=$(/usr/bin/python3 - "$T/mw_acc.csv" "$T/mw_gyr.csv" "$T/mw.csv" <<'PY'
+import sys, numpy as np
+A, G = (np.loadtxt(f, delimiter=',', skiprows=1, usecols=(0, 3, 4, 5)) for f in sys.argv[1:3])
+def first_of_each(x):
+    keep = np.concatenate([[True], np.diff(x[:, 0]) > 0])
+    return x[keep]
+A, G = first_of_each(A), first_of_each(G)
+A = A[(A[:, 0] >= G[0, 0]) & (A[:, 0] <= G[-1, 0])]
+want_g = np.column_stack([np.interp(A[:, 0], G[:, 0], np.radians(G[:, k])) for k in (1, 2, 3)])
+m = np.genfromtxt(sys.argv[3], delimiter=',', names=True)
+got_ms = np.array([round(float(r.split(',')[0]) * 1000) for r in open(sys.argv[3]).read().split()[1:]], np.int64)
+n_ok = len(m) == len(A)
+dg = np.abs(np.column_stack([m['gx'], m['gy'], m['gz']]) - want_g).max() if n_ok else np.inf
+da = np.abs(np.column_stack([m['ax'], m['ay'], m['az']]) - A[:, 1:] * 9.80665).max() if n_ok else np.inf
+print('%d samples (numpy: %d), gyro %.3g rad/s, accel %.3g m/s^2 off' % (len(m), len(A), dg, da))
+sys.exit(0 if n_ok and (got_ms == A[:, 0].astype(np.int64)).all() and dg < 2e-6 and da < 2e-5 else 1)
+PY
+); then pass "MetaWear pair: numpy's values on the epoch ($msg)"; else fail "MetaWear pair: $msg"; fi
+# without the epoch and the date, elapsed (s) is read and the start at 0 of
+# both files is said
+for f in mw_acc mw_gyr; do cut -d, -f3- "$T/$f.csv" > "$T/${f}_el.csv"; done
+expect_exit 0 "merge a MetaWear pair by elapsed (s)" "$H" merge "$T/mw_acc_el.csv" "$T/mw_gyr_el.csv" "$T/mw_el.csv"
+expect_err "warning: both files' time ('elapsed (s)', 'elapsed (s)') starts at 0: if each counts from its own first sample" \
+    "elapsed from 0 in both files: said"
+expect_exit 0 "merge phyphox (Time from 0, not elapsed)" "$H" merge "$T/phyphox_acc.csv" "$T/phyphox.csv" "$T/o.csv"
+if grep -q "starts at 0" "$T/err"; then fail "the start warning for phyphox's shared Time (s)"; else pass "no start warning for phyphox's Time (s)"; fi
+rm -f "$T/o.csv"
+# a MetaWear file (its clock since 1970) and a phyphox file (from a start)
+expect_exit 1 "merge MetaWear's accelerometer with phyphox's gyroscope" "$H" merge "$T/mw_acc.csv" "$T/phyphox.csv" "$T/o.csv"
+expect_err "the files do not overlap in time: .*mw_acc.csv's time ('epoch (ms)') reads as a date (since 1970), .*phyphox.csv's ('Time (s)') as seconds from a start: not one clock" \
+    "two clocks named"
 
 # --- Sensor Logger: ns since the epoch named by no unit, refused with the
 # unit they look like; with --units time=ns the gyroscope interpolated at
@@ -141,7 +199,7 @@ expect_exit 1 "info on a log without gyroscope columns" "$H" info "$T/ref.csv" -
 if grep -q "merge ACC GYRO" "$T/err"; then fail "a six-channel log's refusal names merge"; else pass "a six-channel log's refusal does not name merge"; fi
 
 # --- bad input
-expect_exit 1 "files swapped" "$H" merge "$T/phyphox.csv" "$T/metawear.csv" "$T/o.csv"
+expect_exit 1 "files swapped" "$H" merge "$T/phyphox.csv" "$T/phyphox_acc.csv" "$T/o.csv"
 expect_err "phyphox.csv:1: the header names the gyroscope's channels ('Gyroscope x (rad/s)'), not the accelerometer's: the files swapped?" \
     "swapped files named"
 expect_exit 1 "a log with both sensors" "$H" merge "$T/ref.csv" "$T/phyphox.csv" "$T/o.csv"
@@ -158,10 +216,10 @@ expect_err "walk.bin: binary data, not a log" "a .bin refused as the readers ref
 expect_exit 1 "a missing file" "$H" merge "$T/metawear.csv" "$T/nosuch.csv" "$T/o.csv"
 expect_err "nosuch.csv: cannot open" "the missing file named"
 awk -F, 'BEGIN { OFS = "," } NR > 1 { $1 += 1000 } { print }' "$T/phyphox.csv" > "$T/late.csv"
-expect_exit 1 "files that do not overlap" "$H" merge "$T/metawear.csv" "$T/late.csv" "$T/o.csv"
+expect_exit 1 "files that do not overlap" "$H" merge "$T/phyphox_acc.csv" "$T/late.csv" "$T/o.csv"
 expect_err "the files do not overlap in time" "no overlap named"
 rm -f "$T/o.csv"
-expect_exit 1 "a row of text in the gyroscope's file" "$H" merge "$T/metawear.csv" "$T/gyr_bad.csv" "$T/o.csv"
+expect_exit 1 "a row of text in the gyroscope's file" "$H" merge "$T/phyphox_acc.csv" "$T/gyr_bad.csv" "$T/o.csv"
 expect_err "gyr_bad.csv:5001: column 2 ('Gyroscope x (rad/s)') is not a number: 'oops' (the 4999 samples before it are merged)" \
     "the bad row named"
 n=$(($(wc -l < "$T/o.csv") - 1))

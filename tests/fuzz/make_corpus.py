@@ -188,13 +188,17 @@ gyro_bias_sigma_rps = 1.5e-06 1.1e-06 5.9e-07
     put('nav', 'slow_gait_cycle', nav_slow_gait())
     # merge (fuzz_merge.c): the first byte's bit 0 the sensor (1 gyro), bits
     # 1-2 --units (1 time=ns, 2 accel=g,gyro=deg/s, 3 time=ms); a MetaWear
-    # accelerometer file, a phyphox gyroscope file with semicolons and
+    # accelerometer file, a MetaWear gyroscope file with ISO dates and no
+    # epoch, a phyphox gyroscope file with semicolons and
     # decimal commas, Sensor Logger's ns since the epoch with bare z,y,x,
     # and tabs with a comment, a repeated stamp, a blank line and a bad row
     put('merge', 'metawear_acc', b'\x00epoch (ms),time (-13:00),elapsed (s),x-axis (g),y-axis (g),z-axis (g)\n'
         b'1700000000000,2023-11-14T22.13.20.000,0.000,-0.49,0.24,0.83\n'
         b'1700000000010,2023-11-14T22.13.20.010,0.010,-0.48,0.25,0.82\n'
         b'1700000000020,2023-11-14T22.13.20.020,0.020,-0.47,0.26,0.81\n')
+    put('merge', 'metawear_iso_gyr', b'\x05time (-13:00),elapsed (s),x-axis (deg/s),y-axis (deg/s),z-axis (deg/s)\n'
+        b'2023-11-14T09:13:20.025,0.000,0.10,-0.41,0.01\n2023-11-14T09:13:20.027,0.002,0.22,-0.59,0.07\n'
+        b'2023-11-14T09:13:20.030,0.005,0.31,-0.66,0.09\n')
     put('merge', 'phyphox_semi_gyr', b'\x01"Time (s)";"Gyroscope x (rad/s)";"Gyroscope y (rad/s)";"Gyroscope z (rad/s)"\n'
         b'0,000;0,5;-0,25;0,125\n0,010;0,6;-0,35;0,225\n0,020;0,7;-0,45;0,325\n')
     put('merge', 'slog_acc_ns', b'\x03time,seconds_elapsed,z,y,x\n1733300000000000000,0.0,9.8,0.1,0.2\n'
