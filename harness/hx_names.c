@@ -326,9 +326,13 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
         return c->kind;
     }
     if (open == NULL && n >= 2 && unit_of(w[n - 1]) != HX_UNIT_NONE) {
-        /* the last word a unit: time_s, accX_mps2, gyro_x_dps */
+        /* the last word a unit: time_s, accX_mps2, gyro_x_dps; "in" before
+         * it is the unit's too (AndroSensor's "Time since start in ms") */
         unit = unit_of(w[n - 1]);
         n--;
+        if (n >= 2 && strcmp(w[n - 1], "in") == 0) {
+            n--;
+        }
     } else if (open == NULL && n >= 2 && unit_like(w[n - 1])) {
         unread = 1; /* ax_ug, gyro_z_deg/h */
         n--;
@@ -345,6 +349,9 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
     } else if (n == 1 && strcmp(w[0], "elapsed") == 0) {
         key = 0;
         c->clock = -1; /* from a start: MetaWear's "elapsed (s)" from each file's first sample */
+    } else if (n == 3 && strcmp(w[0], "time") == 0 && strcmp(w[1], "since") == 0 && strcmp(w[2], "start") == 0) {
+        key = 0; /* AndroSensor's "Time since start in ms" */
+        c->clock = -1;
     } else if ((n == 1 || (n == 2 && (strcmp(w[1], "time") == 0 || strcmp(w[1], "timestamp") == 0 ||
                                       strcmp(w[1], "ts") == 0))) &&
                (strcmp(w[0], "epoch") == 0 || strcmp(w[0], "epoc") == 0 || strcmp(w[0], "unix") == 0)) {

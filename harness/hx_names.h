@@ -43,7 +43,9 @@ typedef struct {
  *  words left must be exactly a time name (t, time, timestamp, ts, time
  *  stamp, elapsed, elapsed time, datetime, date time; epoch, epoc, unix
  *  alone or with time, timestamp or ts: a clock's, c->clock 1, which
- *  hx_names_match reads only where no other time name is; millis in ms and
+ *  hx_names_match reads only where no other time name is; time since
+ *  start, AndroSensor's, "in" before a last word's unit dropped with it;
+ *  millis in ms and
  *  micros in us unless a unit is given), or a stem and an axis x, y, z, the
  *  axis apart or glued (acc_x, accx, ax): acceleration acc, accel,
  *  accelerometer, acceleration, a (glued only: ax); rate gyr, gyro,

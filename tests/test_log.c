@@ -3210,6 +3210,9 @@ static void test_name_classify(void **state)
             { "Epoch Time [s]", HX_UNIT_S, 1 }, { "unix_timestamp_ns", HX_UNIT_NS, 1 }, { "epoch", HX_UNIT_NONE, 1 },
             { "elapsed (s)", HX_UNIT_S, -1 }, { "Elapsed Time", HX_UNIT_NONE, -1 }, { "Time (s)", HX_UNIT_S, 0 },
             { "time (-13:00)", HX_UNIT_NONE, 0 }, { "timestamp", HX_UNIT_NONE, 0 },
+            /* AndroSensor's; "in" before a last word's unit */
+            { "Time since start in ms ", HX_UNIT_MS, -1 }, { "time since start", HX_UNIT_NONE, -1 },
+            { "time in us", HX_UNIT_US, 0 }, { "Timestamp in s", HX_UNIT_S, 0 },
         };
         for (i = 0; i < sizeof t / sizeof t[0]; i++) {
             hx_name_class_t c;
@@ -3218,8 +3221,14 @@ static void test_name_classify(void **state)
             assert_int_equal(c.unit, t[i].unit);
             assert_int_equal(c.clock, t[i].clock);
         }
-        /* a word more is not a clock's name; an axis name is none */
+        /* a word more is not a clock's name; an axis name is none; "in"
+         * goes only with a unit after it */
         assert_int_equal(hx_name_classify("epoch count", &c0), HX_NAME_OTHER);
+        assert_int_equal(hx_name_classify("time since boot in ms", &c0), HX_NAME_NEAR);
+        assert_int_equal(hx_name_classify("time in", &c0), HX_NAME_NEAR);
+        assert_int_equal(hx_name_classify("ACCELEROMETER X in g", &c0), HX_NAME_MATCH);
+        assert_int_equal(c0.key, 1);
+        assert_int_equal(c0.unit, HX_UNIT_G);
         assert_int_equal(hx_name_classify("acc_x", &c0), HX_NAME_MATCH);
         assert_int_equal(c0.clock, 0);
     }
@@ -3452,6 +3461,14 @@ static void test_names_match(void **state)
           "--columns 't=elapsed (s),ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z' --units time=s" },
         { "unix_time,epoch,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 0, { -1, 2, 3, 4, 5, 6, 7 }, { 0, 0, 0 },
           "--columns ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z" },
+        /* AndroSensor: gravity and linear acceleration are near misses */
+        { "ACCELEROMETER X (m/s\xc2\xb2),GRAVITY X (m/s\xc2\xb2),LINEAR ACCELERATION X (m/s\xc2\xb2),"
+          "ACCELEROMETER Y (m/s\xc2\xb2),ACCELEROMETER Z (m/s\xc2\xb2),GYROSCOPE X (rad/s),GYROSCOPE Y (rad/s),"
+          "GYROSCOPE Z (rad/s),Time since start in ms ,YYYY-MO-DD HH-MI-SS_SSS",
+          1, { 8, 0, 3, 4, 5, 6, 7 }, { HX_UNIT_MS, HX_UNIT_MPS2, HX_UNIT_RPS },
+          "--columns 't=Time since start in ms,ax=ACCELEROMETER X (m/s\xc2\xb2),ay=ACCELEROMETER Y (m/s\xc2\xb2),"
+          "az=ACCELEROMETER Z (m/s\xc2\xb2),gx=GYROSCOPE X (rad/s),gy=GYROSCOPE Y (rad/s),gz=GYROSCOPE Z (rad/s)' "
+          "--units time=ms,accel=m/s2,gyro=rad/s" },
         /* one quantity in two units: no one --units item reads it */
         { "t,acc_x [g],acc_y [g],acc_z,gyr_x,gyr_y,gyr_z", 0, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
           "--columns 't=t,ax=acc_x [g],ay=acc_y [g],az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z'" },

@@ -287,7 +287,10 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # as rostopic echo -p writes it (ros: stamps in ns; before, "header has no
 # column 't'") or bagpy (bagpy: the stamp split in secs and nsecs) or
 # EuRoC's ASL format (euroc: "#timestamp [ns],w_RS_S_x [rad
-# s^-1],..."; before, "the first line is data, not a header").
+# s^-1],..."; before, "the first line is data, not a header"), nor
+# AndroSensor's CSV (andro: "Time since start in ms "; before, no time
+# column) or a time named by a clock's name (epochms: "epoch (ms)"; before,
+# no time column).
 # xup turns gravity at rest onto +x exactly (y90 leaves this walk's tilted
 # sensor 30 deg from that). The summary's heading change (of a body vector
 # level at the alignment, spanning the walk's two renewals) must agree
@@ -296,7 +299,7 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # how the renewals hold the heading (they can turn it by 87 and 110 deg).
 expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/m.csv" --to csv
 expect_exit 0 "replay the walk as recorded" "$H" replay "$T/m.csv" --out "$T/m_ref.csv" --json "$T/m_ref.json" --quiet
-for rot in y90 x180 xyz xup epoch iso shimmer ros bagpy euroc; do
+for rot in y90 x180 xyz xup epoch iso shimmer ros bagpy euroc andro epochms; do
     /usr/bin/python3 - "$T/m.csv" "$T/m_$rot.csv" "$rot" <<'PY'
 import sys, numpy as np
 d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
@@ -312,7 +315,8 @@ def onto_x(d):
     K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
     return np.eye(3) + s * K + (1.0 - u[0]) * K @ K  # Rodrigues: u onto +x
 M = {'y90': r('y', 90), 'x180': r('x', 180), 'xyz': r('z', 122) @ r('y', -61) @ r('x', 37), 'epoch': np.eye(3),
-     'iso': np.eye(3), 'shimmer': np.eye(3), 'ros': np.eye(3), 'bagpy': np.eye(3), 'euroc': np.eye(3)}.get(sys.argv[3])
+     'iso': np.eye(3), 'shimmer': np.eye(3), 'ros': np.eye(3), 'bagpy': np.eye(3), 'euroc': np.eye(3),
+     'andro': np.eye(3), 'epochms': np.eye(3)}.get(sys.argv[3])
 if M is None:
     M = onto_x(d)
 t0 = 1.7e9 if sys.argv[3] == 'epoch' else 0.0
@@ -373,6 +377,25 @@ elif sys.argv[3] == 'euroc':
         for ti, ai, gi in zip(d['t'], a, g):
             f.write('%d,' % (int(round(ti * 1e9)) + 1403636579758555392) + ','.join('%.9g' % v for v in list(gi) + list(ai)) +
                     '\r\n')
+elif sys.argv[3] == 'andro':
+    # AndroSensor's CSV: semicolons, upper-case names with their units,
+    # gravity and linear acceleration beside the accelerometer (not read),
+    # "Time since start in ms " (here with the ns as decimals) and a date
+    names = ['%s %s (m/s\u00b2)' % (q, c) for q in ('ACCELEROMETER', 'GRAVITY', 'LINEAR ACCELERATION') for c in 'XYZ'] + \
+        ['GYROSCOPE %s (rad/s)' % c for c in 'XYZ'] + ['Time since start in ms ', 'YYYY-MO-DD HH-MI-SS_SSS']
+    with open(sys.argv[2], 'w', encoding='utf-8') as f:
+        f.write(';'.join(names) + '\n')
+        for ti, ai, gi in zip(d['t'], a, g):
+            ns = int(round(ti * 1e9))
+            f.write(';'.join('%.9g' % v for v in list(ai) + [0, 0, 9.8, 0, 0, 0] + list(gi)) +
+                    ';%d.%06d;2024-05-01 12-00-00_000\n' % (ns // 10**6, ns % 10**6))
+elif sys.argv[3] == 'epochms':
+    # a clock's name, the time since 1970 in ms (here with the ns as decimals)
+    with open(sys.argv[2], 'w') as f:
+        f.write('epoch (ms),acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n')
+        for ti, ai, gi in zip(d['t'], a, g):
+            ns = int(round(ti * 1e9)) + 1700000000 * 10**9
+            f.write('%d.%06d,' % (ns // 10**6, ns % 10**6) + ','.join('%.9g' % v for v in list(ai) + list(gi)) + '\n')
 else:
     np.savetxt(sys.argv[2], np.column_stack([d['t'] + t0, a, g]), delimiter=',', header='t,ax,ay,az,gx,gy,gz', comments='',
                fmt=['%.7f'] + ['%.9g'] * 6)

@@ -144,6 +144,17 @@ def main():
         b'ms\tm/(s^2)\tm/(s^2)\tm/(s^2)\tm/(s^2)\tm/(s^2)\tm/(s^2)\tdeg/s\tdeg/s\tdeg/s\t\r\n'
         b'1595933810034.18\t1.5\t0.2\t-9.8\t2.5\t0.3\t-9.7\t10\t20\t30\t\r\n'
         b'1595933810039.18\t1.5\t0.2\t-9.8\t2.5\t0.3\t-9.7\t10\t20\t30\t\r\n')
+    # AndroSensor's CSV (semicolons, "Time since start in ms ", near
+    # misses beside the axes) and a clock's name, "epoch (ms)"
+    put('log_reader', 'csv_androsensor', bytes([FMT['auto']]) +
+        'ACCELEROMETER X (m/s\u00b2);ACCELEROMETER Y (m/s\u00b2);ACCELEROMETER Z (m/s\u00b2);'
+        'LINEAR ACCELERATION X (m/s\u00b2);GYROSCOPE X (rad/s);GYROSCOPE Y (rad/s);GYROSCOPE Z (rad/s);'
+        'Time since start in ms ;YYYY-MO-DD HH-MI-SS_SSS\n'
+        '0.1;0.2;9.8;0;0.01;0.02;0.03;10;2024-05-01 12-00-00_010\n'
+        '0.1;0.2;9.8;0;0.01;0.02;0.03;15;2024-05-01 12-00-00_015\n'.encode('utf-8'))
+    put('log_reader', 'csv_epoch_ms', bytes([FMT['auto']]) +
+        b'epoch (ms),elapsed (s),acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n1700000000000,0.000,0.1,0.2,-9.8,0.01,0.02,0.03\n'
+        b'1700000000005,0.005,0.1,0.2,-9.8,0.01,0.02,0.03\n')
     # a ROS sensor_msgs/Imu topic as rostopic echo -p writes it; EuRoC's
     # ASL format (a commented header, units as negative powers)
     put('log_reader', 'csv_ros', bytes([FMT['auto']]) +
