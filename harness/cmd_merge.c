@@ -143,7 +143,7 @@ int hx_cmd_merge(int argc, char **argv)
         if (d0 != d1) {
             const int kd = d0 ? 0 : 1;
             snprintf(why, sizeof why, "%s's time ('%s') reads as a date (since 1970), %s's ('%s') as seconds from a "
-                                      "start: not one clock (one recording's two files share one)",
+                                      "start or a time of day: not one clock (one recording's two files share one)",
                      a.pos[kd], f[kd].cols[0], a.pos[1 - kd], f[1 - kd].cols[0]);
         } else {
             snprintf(why, sizeof why, "one recording's two files share a clock");

@@ -93,6 +93,13 @@ static void test_metawear_columns(void **state)
             assert_true(f.t_ns[0] == k[i].t0_ns && f.t_ns[1] - f.t_ns[0] == 10000000);
             hx_tri_free(&f);
         }
+        /* MetaBase's dotted date alone is no time: refused, not read */
+        assert_int_equal(load(&f,
+                              "time (-13:00),x-axis (g),y-axis (g),z-axis (g)\n"
+                              "2023-11-14T22.13.20.000,0.5,-1,2\n2023-11-14T22.13.20.010,1,0,0\n",
+                              HX_TRI_ACC, NULL, err, sizeof err),
+                         -1);
+        assert_non_null(strstr(err, "the time column ('time (-13:00)') holds no number in the first row"));
     }
 }
 

@@ -152,7 +152,7 @@ if grep -q "starts at 0" "$T/err"; then fail "the start warning for phyphox's sh
 rm -f "$T/o.csv"
 # a MetaWear file (its clock since 1970) and a phyphox file (from a start)
 expect_exit 1 "merge MetaWear's accelerometer with phyphox's gyroscope" "$H" merge "$T/mw_acc.csv" "$T/phyphox.csv" "$T/o.csv"
-expect_err "the files do not overlap in time: .*mw_acc.csv's time ('epoch (ms)') reads as a date (since 1970), .*phyphox.csv's ('Time (s)') as seconds from a start: not one clock" \
+expect_err "the files do not overlap in time: .*mw_acc.csv's time ('epoch (ms)') reads as a date (since 1970), .*phyphox.csv's ('Time (s)') as seconds from a start or a time of day: not one clock" \
     "two clocks named"
 
 # --- Sensor Logger: ns since the epoch named by no unit, refused with the

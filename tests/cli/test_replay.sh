@@ -116,7 +116,8 @@ rows = list(csv.DictReader(open(sys.argv[2])))
 first = next(r for r in rows if r["aligned"] == "1")
 before = [r for r in rows if float(r["t"]) < j["aligned_at_s"] - 5e-7]
 ok = (list(rows[0].keys())[-1] == "aligned" and abs(float(first["t"]) - j["aligned_at_s"]) < 5e-7
-      and sum(r["aligned"] == "1" for r in rows) == 14555 and all(r["aligned"] == "0" for r in before)
+      and sum(r["aligned"] == "1" for r in rows) == 14555 and len(before) == 1984
+      and all(r["aligned"] == "0" for r in before)
       and all(float(r["P_att_x"]) == 0.0 and float(r["x"]) == 0.0 for r in before))
 sys.exit(0 if ok else 1)' "$T/s.json" "$T/traj.csv"; then
     pass "CSV column aligned: 0 on the 1,984 rows before aligned_at_s, 1 on the 14,555 from it"; else
