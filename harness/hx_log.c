@@ -1294,9 +1294,7 @@ static void units_named_warn(hx_reader_t *r, char **f, int n)
         const char *item = hx_name_unit_item(u_first), *in;
         in = q_first == 0   ? tu[(9 - l->time_digits) / 3]
              : q_first == 1 ? hx_accel_unit_name(l->acc_scale)
-             : l->gyr_scale == HX_DPS_RPS ? "deg/s"
-             : l->gyr_scale == HX_MDPS_RPS ? "mdps"
-                                           : "rad/s";
+                            : hx_gyro_unit_name(l->gyr_scale);
         hx_name_bare(f[col_first], name, sizeof name);
         (void)hx_units_give(&want, give, sizeof give);
         add_warn(r, "%s:%ld: column %d ('%s') names %s, but %s %s read in %s (%s %s the column's unit)", r->path,
@@ -3340,6 +3338,11 @@ const char *hx_accel_unit_name(double acc_scale)
            : acc_scale == HX_MG_MPS2 ? "mg"
            : acc_scale == HX_UG_MPS2 ? "ug"
                                      : "m/s2";
+}
+
+const char *hx_gyro_unit_name(double gyr_scale)
+{
+    return gyr_scale == HX_DPS_RPS ? "deg/s" : gyr_scale == HX_MDPS_RPS ? "mdps" : "rad/s";
 }
 
 const char *hx_units_give(const hx_csv_layout_t *want, char *buf, size_t size)

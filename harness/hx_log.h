@@ -129,6 +129,8 @@ typedef struct {
 #define HX_MDPS_RPS (3.14159265358979323846 / 180.0 / 1000.0)
 /** The --units name of an acceleration scale: "g", "mg", else "m/s2". */
 const char *hx_accel_unit_name(double acc_scale);
+/** The --units name of a rate scale: "deg/s", "mdps", else "rad/s". */
+const char *hx_gyro_unit_name(double gyr_scale);
 
 /** Set on l the field of the quantity of a unit a header names (the time
  *  column's digits, the accel or gyro scale); HX_UNIT_NONE sets none. */

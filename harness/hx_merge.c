@@ -302,7 +302,6 @@ static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_
     for (i = 0, best = -1; i < ntimes; i++) {
         hx_name_class_t cl;
         int64_t ns;
-        char text[64];
         int rank;
         const int rc = times[i] < nd ? field_time(d[times[i]], delim, 9, &ns) : -1;
         if (rc != 0 && rc != -3) { /* -3: a number beyond int64 in seconds, as ns since the epoch is */
@@ -310,10 +309,7 @@ static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_
         }
         (void)hx_name_classify(f[times[i]], &cl);
         /* a date and time, or a clock time alone, has a ':'; no number has */
-        rank = cl.clock == 1 ? 3
-               : field_text(d[times[i]], delim, text, sizeof text) == 0 && strchr(text, ':') != NULL ? 2
-               : cl.unit != HX_UNIT_NONE ? 1
-                                         : 0;
+        rank = cl.clock == 1 ? 3 : strchr(d[times[i]], ':') != NULL ? 2 : cl.unit != HX_UNIT_NONE ? 1 : 0;
         if (rank > best) {
             best = rank;
             c->t = times[i];
@@ -469,8 +465,7 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
     unitless = !(l.units_given & 1) && c.t_unit == HX_UNIT_NONE;
     f->time_unit = digits_unit(l.time_digits);
     scale = kind == HX_TRI_ACC ? l.acc_scale : l.gyr_scale;
-    f->unit = kind == HX_TRI_ACC ? hx_accel_unit_name(scale)
-              : scale == HX_DPS_RPS ? "deg/s" : scale == HX_MDPS_RPS ? "mdps" : "rad/s";
+    f->unit = kind == HX_TRI_ACC ? hx_accel_unit_name(scale) : hx_gyro_unit_name(scale);
     f->unit_from = (l.units_given & (kind == HX_TRI_ACC ? 2 : 4)) ? "--units"
                    : c.unit != HX_UNIT_NONE ? "named" : "default";
     if (unitless && (probe = (double *)malloc(TRI_PROBE_ROWS * sizeof *probe)) == NULL) {
