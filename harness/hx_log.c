@@ -96,6 +96,7 @@ struct hx_reader {
     int row_skipped;            /* the row just read was skipped (mtmanager: a missing value) */
     int consensys;              /* csv: Shimmer's Consensys export (hx_names_consensys), its units row read */
     int ros;                    /* csv: a ROS sensor_msgs/Imu header matched (hx_names_ros) */
+    int gforce;                 /* csv: Physics Toolbox's g-force names matched (hx_names_match) */
     double acc_scale, gyr_scale;
     hx_csv_layout_t layout;     /* the interchange CSV's names and units (--columns, --units) */
     time_mode_t time_mode;
@@ -1139,6 +1140,7 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f, int
     }
     l->names_matched = 1;
     r->ros = m->ros;
+    r->gforce = m->gforce;
     /* the warning names the units the log is read in (not the defaults) */
     m->unit[0] = l->time_digits == 6 ? HX_UNIT_MS : l->time_digits == 3 ? HX_UNIT_US
                  : l->time_digits == 0 ? HX_UNIT_NS : HX_UNIT_NONE;
@@ -1153,7 +1155,10 @@ static void names_apply(hx_reader_t *r, hx_names_match_t *m, char *const *f, int
         const int receive = m->ros && m->col[0] >= 0 && m->col[0] == hx_names_ros_receive(f, n, &ru);
         add_warn(r, "%s: header read as %s (%s%s%s%s; give --columns to choose otherwise)", r->path,
                  hx_names_give(m, f, give, sizeof give),
-                 m->ros ? "a ROS sensor_msgs/Imu's names matched, in SI units as REP 103 sets them" : "names matched",
+                 m->ros      ? "a ROS sensor_msgs/Imu's names matched, in SI units as REP 103 sets them"
+                 : m->gforce ? "names matched; gFx..gFz, Physics Toolbox's g-force, are the specific force"
+                               " in g"
+                             : "names matched",
                  receive ? "; the time is the bag's receive time, the message's stamp not found" : "",
                  near[0] != '\0' ? "; not read: " : "", near);
     }
@@ -1839,7 +1844,8 @@ static int setup_text(hx_reader_t *r, double rate_hz)
         }
         m->has_temp = r->col_temp >= 0;
         copy_str(m->sensor, sizeof m->sensor,
-                 r->consensys ? "Shimmer (Consensys export)" : r->ros ? "ROS sensor_msgs/Imu" : "unknown");
+                 r->consensys ? "Shimmer (Consensys export)" : r->ros ? "ROS sensor_msgs/Imu"
+                 : r->gforce  ? "Physics Toolbox (g-force)" : "unknown");
         break;
     }
     case HX_FMT_NGIMU: {

@@ -199,6 +199,11 @@ static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_
     int i, k, own[3][3], nown[3] = { 0, 0, 0 }, other = -1, nother = 0, times[8], ntimes = 0, bare_used = 0, best;
     const int k0 = kind == HX_TRI_ACC ? 1 : 4, ko = kind == HX_TRI_ACC ? 4 : 1;
     hx_name_unit_t au[3] = { HX_UNIT_NONE, HX_UNIT_NONE, HX_UNIT_NONE };
+    int gforce = 0;
+    for (i = 0; i < n && kind == HX_TRI_ACC; i++) {
+        hx_name_class_t cl;
+        gforce |= hx_name_classify(f[i], &cl) == HX_NAME_MATCH && cl.gforce;
+    }
     for (i = 0; i < n; i++) {
         hx_name_class_t cl;
         if (hx_name_classify(f[i], &cl) != HX_NAME_MATCH) {
@@ -206,6 +211,8 @@ static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_
         }
         if (cl.key == 0 && ntimes < 8) {
             times[ntimes++] = i;
+        } else if (cl.key >= k0 && cl.key < k0 + 3 && gforce && !cl.gforce) {
+            continue; /* Physics Toolbox's ax beside its g-force gFx: the linear acceleration (hx_names_match) */
         } else if (cl.key >= k0 && cl.key < k0 + 3) {
             if (nown[cl.key - k0] < 3) {
                 own[cl.key - k0][nown[cl.key - k0]] = i;

@@ -278,6 +278,7 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
     c->unit = HX_UNIT_NONE;
     c->unit_unread = 0;
     c->clock = 0;
+    c->gforce = 0;
     c->unit_text[0] = '\0';
     while (*s == ' ' || *s == '\t' || *s == '"' || *s == '\'') {
         s++;
@@ -364,6 +365,16 @@ hx_name_kind_t hx_name_classify(const char *name, hx_name_class_t *c)
         key = 0;
         if (unit == HX_UNIT_NONE && !unread) {
             unit = w[0][1] == 'i' && w[0][2] == 'l' ? HX_UNIT_MS : HX_UNIT_US;
+        }
+    } else if ((n == 2 && strcmp(w[0], "g") == 0 && w[1][0] == 'f' && axis_of(w[1] + 1) >= 0) ||
+               (n == 1 && w[0][0] == 'g' && w[0][1] == 'f' && axis_of(w[0] + 2) >= 0)) {
+        /* Physics Toolbox Sensor Suite's g-force, gFx: the accelerometer's
+         * reading over g, the specific force in g (1 up when the phone lies
+         * flat); its ax..az beside it are the linear acceleration */
+        key = 1 + (n == 2 ? axis_of(w[1] + 1) : axis_of(w[0] + 2));
+        c->gforce = 1;
+        if (unit == HX_UNIT_NONE && !unread) {
+            unit = HX_UNIT_G;
         }
     } else if (n == 1 && (q = glued(w[0], &ax)) != 0) {
         key = 1 + 3 * (q - 1) + ax;
@@ -658,7 +669,7 @@ hx_name_unit_t hx_name_unit_of_text(const char *text)
 
 int hx_names_match(char *const *f, int n, hx_names_match_t *m)
 {
-    int i, k, nclock = 0, clock[3];
+    int i, k, nclock = 0, clock[3], ngf[4] = { 0, 0, 0, 0 }, gf[4][3];
     memset(m, 0, sizeof *m);
     m->unit_col = -1;
     m->col_tns = -1;
@@ -686,6 +697,8 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
         const hx_name_kind_t kind = hx_name_classify(f[i], &c);
         if (kind == HX_NAME_MATCH && c.key == 0 && c.clock == 1) {
             add_col(&nclock, clock, i);
+        } else if (kind == HX_NAME_MATCH && c.gforce) {
+            add_col(&ngf[c.key], gf[c.key], i);
         } else if (kind == HX_NAME_MATCH) {
             add_col(&m->ncand[c.key], m->cand[c.key], i);
         } else if (kind == HX_NAME_NEAR) {
@@ -699,6 +712,24 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
             add_col(&m->ncand[0], m->cand[0], clock[k]);
         }
         m->ncand[0] = nclock;
+    }
+    for (k = 1; k <= 3; k++) {
+        /* Physics Toolbox's g-force is the specific force; its ax..az
+         * beside it the linear acceleration (gravity removed), not read and
+         * named as such in the warning */
+        int j;
+        if (ngf[k] == 0) {
+            continue;
+        }
+        m->gforce = 1;
+        for (j = 0; j < m->ncand[k] && j < 3; j++) {
+            add_col(&m->nnear[k], m->near[k], m->cand[k][j]);
+        }
+        m->ncand[k] = 0;
+        for (j = 0; j < ngf[k] && j < 3; j++) {
+            add_col(&m->ncand[k], m->cand[k], gf[k][j]);
+        }
+        m->ncand[k] = ngf[k];
     }
     for (i = 0; i < n && m->unit_col < 0 && !m->consensys && !m->ros; i++) {
         /* a key without a candidate that one name has but for its unit:

@@ -29,6 +29,8 @@ typedef struct {
     int unit_unread;      /**< 1: a key's name (NEAR) whose unit is none read: "gx [deg/h]", "ax_ug" */
     int clock;            /**< a time name: 1 a clock's (epoch, epoc, unix, unix_time: since 1970), -1 a time
                                from a start (elapsed, elapsed time), 0 neither or not said */
+    int gforce;           /**< 1: Physics Toolbox's g-force name (gFx): the specific force in g, read in g
+                               unless a unit is given; beside it the app's ax..az are its linear acceleration */
     char unit_text[32];   /**< a key's name's unit as the header spells it ("°/s"), "" when none */
 } hx_name_class_t;
 
@@ -51,7 +53,10 @@ typedef struct {
  *  accelerometer, acceleration, a (glued only: ax); rate gyr, gyro,
  *  gyroscope, w, omega, angvel, angular velocity, angular rate, rotation
  *  rate, g (glued only: gx); or the ASL format's w_RS_S_x (rate) and
- *  a_RS_S_x (acceleration) of EuRoC and TUM-VI. Units are also read as a
+ *  a_RS_S_x (acceleration) of EuRoC and TUM-VI; or Physics Toolbox's
+ *  g-force gFx (acceleration, in g unless a unit is given: c->gforce,
+ *  which hx_names_match reads before the app's ax, its linear
+ *  acceleration). Units are also read as a
  *  negative power of the second, "m s^-2", "rad s^-1", "m.s-2". A unit of
  *  another quantity, or any other word (FreeAcc_X's free, acc_x_lin's
  *  lin), makes it no match: a near miss when a stem and an axis (or a time
@@ -104,12 +109,15 @@ typedef struct {
     int col_tns;        /**< the nanoseconds added to t, a stamp split in two columns (ROS); -1 none */
     int ncand[7];       /**< the columns that match each key */
     int cand[7][3];     /**< the first three of them */
-    int nnear[7];       /**< near misses of each key */
+    int nnear[7];       /**< near misses of each key (and Physics Toolbox's ax..az beside its g-force) */
     int near[7][3];     /**< the first three of them */
     int units_differ;   /**< 1 accel, 2 gyro: the three axes name different units */
     int excluded;       /**< 1: an Xsens export's name (SampleTimeFine, PacketCounter): not matched */
     int consensys;      /**< 1: Shimmer's Consensys names (hx_names_consensys): their units are the row's */
     int ros;            /**< 1: a ROS sensor_msgs/Imu header (hx_names_ros): SI units, the stamp in ns or s */
+    int gforce;         /**< 1: the accelerations are Physics Toolbox's g-force names (gFx..gFz); the app's
+                             other acceleration names (ax..az, its linear acceleration, gravity removed)
+                             are then not read, and listed with the near misses */
     hx_name_unit_t unit[3]; /**< the unit of time, accel, gyro the names give (NONE: not named) */
     int unit_col;       /**< the first column named for a key with no candidate whose unit is not read or is
                              another quantity's ("gx [deg/h]", "acc_x [s]"); -1 none (hx_names_unit_problem) */

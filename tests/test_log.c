@@ -3138,6 +3138,16 @@ static void test_name_classify(void **state)
         { "ax", HX_NAME_MATCH, 1, HX_UNIT_NONE },
         { "accX_mps2", HX_NAME_MATCH, 1, HX_UNIT_MPS2 },
         { "acc_x [m/s^2]", HX_NAME_MATCH, 1, HX_UNIT_MPS2 },
+        /* Physics Toolbox's g-force: the specific force in g unless a
+         * unit is given; its total and other words are no match */
+        { "gFx", HX_NAME_MATCH, 1, HX_UNIT_G },
+        { "gFz", HX_NAME_MATCH, 3, HX_UNIT_G },
+        { "gfy", HX_NAME_MATCH, 2, HX_UNIT_G },
+        { "GFY", HX_NAME_MATCH, 2, HX_UNIT_G },
+        { "gFx (m/s^2)", HX_NAME_MATCH, 1, HX_UNIT_MPS2 },
+        { "gFTotal", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "TgF", HX_NAME_OTHER, -1, HX_UNIT_NONE },
+        { "gFw", HX_NAME_OTHER, -1, HX_UNIT_NONE },
         { "acc_x (m/s2)", HX_NAME_MATCH, 1, HX_UNIT_MPS2 },
         { "acc_z_ms2", HX_NAME_MATCH, 3, HX_UNIT_MPS2 },
         { "AccX [mg]", HX_NAME_MATCH, 1, HX_UNIT_MG },
@@ -3469,6 +3479,16 @@ static void test_names_match(void **state)
           "--columns 't=Time since start in ms,ax=ACCELEROMETER X (m/s\xc2\xb2),ay=ACCELEROMETER Y (m/s\xc2\xb2),"
           "az=ACCELEROMETER Z (m/s\xc2\xb2),gx=GYROSCOPE X (rad/s),gy=GYROSCOPE Y (rad/s),gz=GYROSCOPE Z (rad/s)' "
           "--units time=ms,accel=m/s2,gyro=rad/s" },
+        /* Physics Toolbox: the g-force is the specific force, in g; the
+         * app's ax..az beside it (its linear acceleration, gravity
+         * removed) are not read */
+        { "time,gFx,gFy,gFz,ax,ay,az,wx,wy,wz,p,Bx,By,Bz", 1, { 0, 1, 2, 3, 7, 8, 9 }, { 0, HX_UNIT_G, 0 },
+          "--columns t=time,ax=gFx,ay=gFy,az=gFz,gx=wx,gy=wy,gz=wz --units accel=g" },
+        { "time,gFx,gFy,gFz,wx,wy,wz,p,Bx,By,Bz,Azimuth,Pitch,Roll,Latitude,Longitude,Speed (m/s)", 1,
+          { 0, 1, 2, 3, 4, 5, 6 }, { 0, HX_UNIT_G, 0 },
+          "--columns t=time,ax=gFx,ay=gFy,az=gFz,gx=wx,gy=wy,gz=wz --units accel=g" },
+        { "time,gFx,gFy,gFz,gFTotal", 0, { 0, 1, 2, 3, -1, -1, -1 }, { 0, HX_UNIT_G, 0 },
+          "--columns t=time,ax=gFx,ay=gFy,az=gFz --units accel=g" },
         /* one quantity in two units: no one --units item reads it */
         { "t,acc_x [g],acc_y [g],acc_z,gyr_x,gyr_y,gyr_z", 0, { 0, 1, 2, 3, 4, 5, 6 }, { 0, 0, 0 },
           "--columns 't=t,ax=acc_x [g],ay=acc_y [g],az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z'" },
@@ -3510,6 +3530,17 @@ static void test_names_match(void **state)
         assert_int_equal(hx_names_match(f, n, &m), 0);
         assert_string_equal(hx_names_unmatched(&m, f, 1, miss, sizeof miss),
                             "ax: 2 candidates (acc_x, accel_x); az: none (near misses: FreeAcc_Z)");
+        /* Physics Toolbox's ax..az beside its g-force: named as not read */
+        snprintf(text, sizeof text, "time,gFx,gFy,gFz,ax,ay,az,wx,wy,wz");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 1);
+        assert_int_equal(m.gforce, 1);
+        assert_string_equal(hx_names_near(&m, f, miss, sizeof miss), "ax, ay, az");
+        snprintf(text, sizeof text, "time,ax,ay,az,wx,wy,wz");
+        n = split_header(text, f, 16);
+        assert_int_equal(hx_names_match(f, n, &m), 1);
+        assert_int_equal(m.gforce, 0);
+        assert_string_equal(hx_names_near(&m, f, miss, sizeof miss), "");
         snprintf(text, sizeof text, "acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z [deg/s]");
         n = split_header(text, f, 16);
         assert_int_equal(hx_names_match(f, n, &m), 0);

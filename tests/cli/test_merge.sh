@@ -29,7 +29,9 @@ awk -F, 'NR == 1 || $1 != last { print } { last = $1 }' "$T/w.csv" > "$T/ref.csv
 # after the accelerometer), slog_acc / slog_gyr (Sensor Logger: time in ns since
 # the epoch, no units, the axes z, y, x; the gyroscope 1.3 ms after each
 # accelerometer sample, every 97th row missing and 12 rows from row 3001
-# missing: a gap), gyr_bad (a row of text at line 5001)
+# missing: a gap), gyr_bad (a row of text at line 5001), ptb_acc (Physics
+# Toolbox Sensor Suite: the g-force gFx in g, then the app's linear
+# acceleration ax, gravity removed)
 /usr/bin/python3 - "$T" <<'PY' || fail "writing the two-file variants"
 import datetime, sys, numpy as np
 T = sys.argv[1]
@@ -77,6 +79,10 @@ with open(T + '/slog_gyr.csv', 'w') as f:
     f.write('time,seconds_elapsed,z,y,x\n')
     for k in np.flatnonzero(keep):
         f.write('%d,%.9f,%.9g,%.9g,%.9g\n' % (gs[k], t[k] + 0.0013, g[k, 2], g[k, 1], g[k, 0]))
+with open(T + '/ptb_acc.csv', 'w') as f:
+    f.write('time,gFx,gFy,gFz,ax,ay,az\n')
+    for ti, ai in zip(t, a):
+        f.write('%.9f,%s\n' % (ti, ','.join('%.9g' % v for v in list(ai / 9.80665) + list(ai - [0, 0, 9.8]))))
 lines = open(T + '/phyphox.csv').read().splitlines(True)
 lines[5000] = '0.5,oops,1,2\n'
 open(T + '/gyr_bad.csv', 'w').write(''.join(lines))
@@ -107,6 +113,19 @@ print('%.2g m apart' % d)
 sys.exit(0 if len(a) == len(b) and d < 1e-3 else 1)
 PY
 ); then pass "the merged walk replays to the walk's path ($msg)"; else fail "merged walk's path: $msg"; fi
+
+# --- Physics Toolbox's g-force is the accelerometer, not the app's linear
+# acceleration beside it (before: two columns for each axis, refused)
+expect_exit 0 "merge ptb_acc + phyphox" "$H" merge "$T/ptb_acc.csv" "$T/phyphox.csv" "$T/m5.csv"
+expect_err "ptb_acc.csv: 16334 samples, .* x, y, z 'gFx', 'gFy', 'gFz' in g$" "the g-force read, in g"
+if msg=$(/usr/bin/python3 - "$T/ref.csv" "$T/m5.csv" <<'PY'
+import sys, numpy as np
+r, m = (np.genfromtxt(f, delimiter=',', names=True) for f in sys.argv[1:3])
+da = max(np.abs(r[k] - m[k]).max() for k in ('ax', 'ay', 'az'))
+print('accel %.3g m/s^2' % da)
+sys.exit(0 if len(r) == len(m) and da < 2e-6 else 1)
+PY
+); then pass "Physics Toolbox's g-force: the walk's accelerations ($msg)"; else fail "ptb_acc values: $msg"; fi
 
 # --- semicolons and decimal commas read as the commas and points
 expect_exit 0 "merge phyphox_acc + phyphox_semi" "$H" merge "$T/phyphox_acc.csv" "$T/phyphox_semi.csv" "$T/m2.csv"

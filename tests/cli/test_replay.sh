@@ -291,7 +291,9 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # s^-1],..."; before, "the first line is data, not a header"), nor
 # AndroSensor's CSV (andro: "Time since start in ms "; before, no time
 # column) or a time named by a clock's name (epochms: "epoch (ms)"; before,
-# no time column).
+# no time column), nor Physics Toolbox Sensor Suite's record of several
+# sensors (ptb: the g-force gFx in g beside the app's linear acceleration
+# ax, gravity removed; before, ax read as the specific force).
 # xup turns gravity at rest onto +x exactly (y90 leaves this walk's tilted
 # sensor 30 deg from that). The summary's heading change (of a body vector
 # level at the alignment, spanning the walk's two renewals) must agree
@@ -300,7 +302,7 @@ expect_err "tiny.profile:[0-9]*: gyro_noise_rps_rthz value 1 '1e-60' is 0 in the
 # how the renewals hold the heading (they can turn it by 87 and 110 deg).
 expect_exit 0 "walk.bin to CSV" "$H" convert vectors/walk.bin "$T/m.csv" --to csv
 expect_exit 0 "replay the walk as recorded" "$H" replay "$T/m.csv" --out "$T/m_ref.csv" --json "$T/m_ref.json" --quiet
-for rot in y90 x180 xyz xup epoch iso shimmer ros bagpy euroc andro epochms; do
+for rot in y90 x180 xyz xup epoch iso shimmer ros bagpy euroc andro epochms ptb; do
     /usr/bin/python3 - "$T/m.csv" "$T/m_$rot.csv" "$rot" <<'PY'
 import sys, numpy as np
 d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
@@ -317,7 +319,7 @@ def onto_x(d):
     return np.eye(3) + s * K + (1.0 - u[0]) * K @ K  # Rodrigues: u onto +x
 M = {'y90': r('y', 90), 'x180': r('x', 180), 'xyz': r('z', 122) @ r('y', -61) @ r('x', 37), 'epoch': np.eye(3),
      'iso': np.eye(3), 'shimmer': np.eye(3), 'ros': np.eye(3), 'bagpy': np.eye(3), 'euroc': np.eye(3),
-     'andro': np.eye(3), 'epochms': np.eye(3)}.get(sys.argv[3])
+     'andro': np.eye(3), 'epochms': np.eye(3), 'ptb': np.eye(3)}.get(sys.argv[3])
 if M is None:
     M = onto_x(d)
 t0 = 1.7e9 if sys.argv[3] == 'epoch' else 0.0
@@ -397,6 +399,17 @@ elif sys.argv[3] == 'epochms':
         for ti, ai, gi in zip(d['t'], a, g):
             ns = int(round(ti * 1e9)) + 1700000000 * 10**9
             f.write('%d.%06d,' % (ns // 10**6, ns % 10**6) + ','.join('%.9g' % v for v in list(ai) + list(gi)) + '\n')
+elif sys.argv[3] == 'ptb':
+    # Physics Toolbox Sensor Suite's multi-record: time in s, the g-force
+    # in g (the specific force over g0), then the linear acceleration
+    # (gravity removed: here the specific force less 9.8 m/s^2 on z, which
+    # read as the specific force would wreck the path), the rates in rad/s,
+    # pressure and field
+    with open(sys.argv[2], 'w') as f:
+        f.write('time,gFx,gFy,gFz,ax,ay,az,wx,wy,wz,p,Bx,By,Bz\n')
+        for ti, ai, gi in zip(d['t'], a, g):
+            f.write('%.9f,' % ti + ','.join('%.9g' % v for v in list(ai / 9.80665) + list(ai - [0, 0, 9.8]) + list(gi)) +
+                    ',1013.25,12.5,-3.1,40.2\n')
 else:
     np.savetxt(sys.argv[2], np.column_stack([d['t'] + t0, a, g]), delimiter=',', header='t,ax,ay,az,gx,gy,gz', comments='',
                fmt=['%.7f'] + ['%.9g'] * 6)

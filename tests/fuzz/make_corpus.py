@@ -155,6 +155,11 @@ def main():
     put('log_reader', 'csv_epoch_ms', bytes([FMT['auto']]) +
         b'epoch (ms),elapsed (s),acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n1700000000000,0.000,0.1,0.2,-9.8,0.01,0.02,0.03\n'
         b'1700000000005,0.005,0.1,0.2,-9.8,0.01,0.02,0.03\n')
+    # Physics Toolbox Sensor Suite: the g-force in g beside the app's
+    # linear acceleration (not read)
+    put('log_reader', 'csv_physics_toolbox', bytes([FMT['auto']]) +
+        b'time,gFx,gFy,gFz,ax,ay,az,wx,wy,wz,p,Bx,By,Bz\n0.078756,-0.0488,0.3217,1.0039,0.01,-0.02,0.03,0.1,0.2,0.3,'
+        b'1013.2,10,20,30\n0.083827,-0.0490,0.3215,1.0041,0.01,-0.02,0.03,0.1,0.2,0.3,1013.2,10,20,30\n')
     # a ROS sensor_msgs/Imu topic as rostopic echo -p writes it; EuRoC's
     # ASL format (a commented header, units as negative powers)
     put('log_reader', 'csv_ros', bytes([FMT['auto']]) +
@@ -216,6 +221,9 @@ gyro_bias_sigma_rps = 1.5e-06 1.1e-06 5.9e-07
         b'1733300000010000000,0.01,9.7,0.2,0.3\n1733300000020000000,0.02,9.6,0.3,0.4\n')
     put('merge', 'tab_dup_bad', b'\x01t\tgyr_x\tgyr_y\tgyr_z\n# a comment\n0.0\t1\t2\t3\n0.0\t1\t2\t3\n0.01\t2\t3\t4\n\n'
         b'0.02\toops\t4\t5\n')
+    # Physics Toolbox's iOS g-force file: a date and time, the g-force in g
+    put('merge', 'ptb_ios_acc', b'\x00time,gFx,gFy,gFz,gFTotal\n2018-10-03 17:23:55.4640,0.035,-0.517,-0.821,0.971\n'
+        b'2018-10-03 17:23:55.4690,0.035,-0.517,-0.821,0.971\n2018-10-03 17:23:55.4740,0.036,-0.516,-0.820,0.970\n')
     print('corpus written under', os.path.join(HERE, 'corpus'))
 
 if __name__ == '__main__':
