@@ -528,6 +528,14 @@ int hx_cmd_info(int argc, char **argv)
         printf("            not still: f spreads by %.0f %% of its mean |f| in that second (a rest: below %.0f %%)\n",
                100.0 * in.still_spread, 100.0 * INFO_STILL_SPREAD);
     }
+    if (!in.still && in.g_mag > 0.0 && in.g_mag < HX_NO_GRAVITY_MPS2 &&
+        in.g_mag * in.still_spread < HX_NO_GRAVITY_MPS2) {
+        /* the quietest second near 0 m/s^2 and quiet in m/s^2: no gravity,
+         * not a rest that moved (replay names it too: hx_nav.c) */
+        printf("            no gravity: |f| %.4f m/s^2 and its spread %.4f m/s^2 in the quietest second: a linear "
+               "acceleration (gravity removed)? replay needs the accelerometer's own reading, the specific force\n",
+               in.g_mag, in.g_mag * in.still_spread);
+    }
     if (in.units_bad) {
         printf("units       NOT SI: %s%s\n", in.units,
                in.still ? "" : " (no still second found: the accelerometer's units not checked)");

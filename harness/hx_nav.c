@@ -1184,6 +1184,12 @@ static int units_problem(double f_rest_mps2, double gravity_mps2, double gyro_ma
             /* in g as read, with a unit given (values in g / 9.80665 read
              * as g): the arithmetic on top of it */
             snprintf(fix, sizeof fix, "not in m/s^2 but in g (%s)", fix_g(csv, &want, give, sizeof give));
+        } else if (f_rest_mps2 < HX_NO_GRAVITY_MPS2) {
+            /* no unit makes gravity so small: a linear acceleration
+             * (Android's linear acceleration sensor, iOS's userAcceleration,
+             * which phone apps write beside or instead of the accelerometer) */
+            snprintf(fix, sizeof fix, "without gravity: a linear acceleration (gravity removed), not the "
+                                      "accelerometer's own reading, the specific force, which the filter needs");
         } else {
             snprintf(fix, sizeof fix, "not in m/s^2");
         }

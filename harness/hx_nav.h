@@ -281,6 +281,11 @@ int hx_nav_stamps_check(const char *path, hx_format_t fmt, double in_rate, doubl
 int hx_nav_bursts_warn(const char *cmd, const char *path, hx_format_t fmt, const int64_t *t_ns, size_t n,
                        int first, const char *reads, double rate_hz, int nominal);
 
+/** |f| at rest under which no unit reads gravity (a log in g read as m/s^2
+ *  gives 1.0, the least of the units read): a linear acceleration, gravity
+ *  removed (replay's and info's message). */
+#define HX_NO_GRAVITY_MPS2 0.5
+
 /** Largest relative difference between a stated rate and its stamps' that
  *  hx_stated_rate_warn lets pass. */
 #define HX_STATED_RATE_TOL 0.10
