@@ -227,7 +227,9 @@ static void verdict(const hx_axes_t *a, hx_axes_result_t *r)
         snprintf(r->msg, sizeof r->msg,
                  "the gyroscope's axes do not match the accelerometer's: integrated through each of %zu swings, the "
                  "foot ends at %.2f m/s (median) as recorded but at %.2f m/s with the gyro read as %s; check the "
-                 "gyro's axis order and signs against the accelerometer's (docs/harness.md, \"Axes check\")",
+                 "gyro's axis order and signs against the accelerometer's (docs/harness.md, \"Axes check\"; a "
+                 "CSV's columns are reordered by --columns, and read with the other sign by a '-' before the "
+                 "name: gy=-NAME)",
                  a->nswing, med[0], med[r->best], r->best_map);
     } else {
         snprintf(r->msg, sizeof r->msg, "gyro and accelerometer axes agree (%zu swings end at %.2f m/s, median)",

@@ -49,7 +49,7 @@ typedef struct {
     int best;                    /**< that map (0: as recorded) */
     char best_map[40];           /**< e.g. "(gx, -gy, gz)" */
     int problem;                 /**< 1: the recorded map is clearly not the gyro's */
-    char msg[320];               /**< the verdict, with the remedy when problem */
+    char msg[512];               /**< the verdict, with the remedy when problem */
 } hx_axes_result_t;
 
 /** A new check (about 100 KB, so on the heap); NULL when out of memory. */

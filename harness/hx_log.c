@@ -2450,8 +2450,10 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     r->prev_t_ns = t_ns;
     s->t_ns = t_ns;
     for (i = 0; i < 3; i++) {
-        s->accel_mps2[i] = (fnav_real_t)(v[i] * r->acc_scale);
-        s->gyro_rps[i] = (fnav_real_t)(v[3 + i] * r->gyr_scale);
+        /* --columns ax=-NAME: the column with the other sign (CSV only) */
+        const int neg = r->meta.format == HX_FMT_CSV ? r->layout.negate : 0;
+        s->accel_mps2[i] = (fnav_real_t)(v[i] * r->acc_scale * ((neg & (1 << (1 + i))) ? -1.0 : 1.0));
+        s->gyro_rps[i] = (fnav_real_t)(v[3 + i] * r->gyr_scale * ((neg & (1 << (4 + i))) ? -1.0 : 1.0));
     }
     r->index++;
     return FNAV_OK;
@@ -4165,6 +4167,17 @@ int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t 
         if (seen & (1 << i)) {
             snprintf(err, err_size, "--columns: '%s' given twice", key);
             return -1;
+        }
+        if (val[0] == '-') {
+            /* "ax=-acc_x": the column read with the other sign (iOS's
+             * accelerations, an axis the axes check finds flipped) */
+            if (i == 0 || i == 7) {
+                snprintf(err, err_size, "--columns: %s=%s: a '-' before a name reads the column with the other "
+                                        "sign, which only ax..gz take", key, val);
+                return -1;
+            }
+            memmove(val, val + 1, strlen(val));
+            l->negate |= 1 << i;
         }
         if (val[0] == '\0' || strspn(val, " \t\"'") == strlen(val)) {
             snprintf(err, err_size, "--columns: %s= has an empty name (the file's name of the column)", key);

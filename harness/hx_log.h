@@ -118,6 +118,8 @@ typedef struct {
     const char *option; /**< "--columns", "--units" or "--columns and --units": the options that gave it; NULL: defaults */
     int units_given;    /**< the --units items given: 1 time, 2 accel, 4 gyro (a unit in a matched name gives the others) */
     int names_matched;  /**< the names were matched from the header without --columns (hx_names.h) */
+    int negate;         /**< bit k set: key k's column (1..6, ax..gz) read with the other sign, a '-' before
+                             its name in --columns ("ax=-acc_x": iOS's accelerations, a flipped axis) */
 } hx_csv_layout_t;
 
 /** The scales of --units (hx_csv_layout_t.acc_scale, gyr_scale): m/s^2 per

@@ -3586,6 +3586,57 @@ static void test_names_match(void **state)
  * use refused with its reason: a nanoseconds value out of 0..999999999 or
  * not whole, a column not in the header, t in ms, tns given twice or named
  * for another key too. */
+/* --columns ax=-NAME: the column read with the other sign (iOS's
+ * accelerations, a flipped gyro axis); refused for t and temp */
+static void test_columns_negate(void **state)
+{
+    char p[256], err[320];
+    readall_t ra;
+    hx_csv_layout_t l;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    write_text(p, "t,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,1.5,-2,9.75,0.25,-0.5,0.125\n0.01,1.5,-2,9.75,0.25,-0.5,0.125\n");
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "ax=-acc_x,ay=acc_y,az=-acc_z,gx=gyr_x,gy=-gyr_y,gz=gyr_z", err,
+                                          sizeof err), 0);
+    assert_int_equal(l.negate, (1 << 1) | (1 << 3) | (1 << 5));
+    assert_string_equal(l.names[1], "acc_x");
+    hx_reader_set_layout(&l);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+    assert_int_equal(ra.n, 2);
+    assert_float_equal(ra.s[1].accel_mps2[0], -1.5f, 0.0f);
+    assert_float_equal(ra.s[1].accel_mps2[1], -2.0f, 0.0f);
+    assert_float_equal(ra.s[1].accel_mps2[2], -9.75f, 0.0f);
+    assert_float_equal(ra.s[1].gyro_rps[0], 0.25f, 0.0f);
+    assert_float_equal(ra.s[1].gyro_rps[1], 0.5f, 0.0f);
+    assert_float_equal(ra.s[1].gyro_rps[2], 0.125f, 0.0f);
+    /* with a unit: the sign and the scale both */
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "ax=-acc_x,ay=acc_y,az=acc_z,gx=-gyr_x,gy=gyr_y,gz=gyr_z", err,
+                                          sizeof err), 0);
+    assert_int_equal(hx_csv_units_parse(&l, "accel=g", err, sizeof err), 0);
+    hx_reader_set_layout(&l);
+    assert_int_equal(read_all(p, HX_FMT_AUTO, 0.0, &ra, NULL), 0);
+    assert_float_equal(ra.s[0].accel_mps2[0], (float)(-1.5 * 9.80665), 1e-5f);
+    assert_float_equal(ra.s[0].gyro_rps[0], -0.25f, 0.0f);
+    /* refused: t and temp, a '-' alone, one column twice however signed */
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "t=-time", err, sizeof err), -1);
+    assert_non_null(strstr(err, "t=-time: a '-' before a name reads the column with the other sign, which only "
+                                "ax..gz take"));
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "temp=-T", err, sizeof err), -1);
+    assert_non_null(strstr(err, "which only ax..gz take"));
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "ax=-", err, sizeof err), -1);
+    assert_non_null(strstr(err, "ax= has an empty name"));
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "ax=-x,ay=x", err, sizeof err), -1);
+    assert_non_null(strstr(err, "column 'x' is named for both ax and ay"));
+    hx_reader_set_layout(NULL);
+    unlink(p);
+}
+
 static void test_columns_tns(void **state)
 {
     static const char *const head = "sec,nsec,ax,ay,az,gx,gy,gz\n";
@@ -4761,6 +4812,7 @@ int main(void)
         cmocka_unit_test(test_mtmgr_stated_rate),
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
         cmocka_unit_test_teardown(test_columns_tns, layout_reset),
+        cmocka_unit_test_teardown(test_columns_negate, layout_reset),
         cmocka_unit_test(test_name_classify),
         cmocka_unit_test(test_names_match),
         cmocka_unit_test(test_name_units_utf8),

@@ -576,6 +576,38 @@ sys.exit(0 if a['problem'] is False and a['best_map'] == '(gx, gy, gz)' and a['s
 else
     fail "axes check on the recorded walk: $(tr -d '\n' < "$T/ax0.json" | sed 's/.*"axes"/"axes"/')"
 fi
+# the remedy the warning names: a '-' before a name in --columns reads the
+# column with the other sign; the flipped gyro so read is the walk again
+expect_err "read with the other sign by a '-' before the name: gy=-NAME" "axes check: the warning names the '-' remedy"
+expect_exit 0 "the flipped gyro read with --columns gy=-gy" "$H" replay "$T/ax_flip.csv" --columns gy=-gy \
+    --out "$T/ax_fixed_traj.csv" --json "$T/ax_fixed.json" --quiet
+json "$T/ax_fixed.json" 'j["axes"]["problem"] is False' && pass "--columns gy=-gy: the axes agree" ||
+    fail "--columns gy=-gy axes: $(cat "$T/pyerr")"
+if cmp -s "$T/ax_fixed_traj.csv" "$T/m_ref.csv"; then pass "--columns gy=-gy: the walk's trajectory, byte for byte"
+else fail "--columns gy=-gy: the trajectory differs from the walk's"; fi
+expect_exit 2 "a '-' before t's name" "$H" replay "$T/m.csv" --columns t=-t
+expect_err "t=-t: a '-' before a name reads the column with the other sign, which only ax..gz take" "'-' refused for t"
+# iOS writes the accelerations with the other sign on all three axes (its
+# CoreMotion convention): a mirror image of the walk, which no check can
+# tell (the same lengths, every turn the other way: heading change +337 for
+# -337 deg); read with --columns ax=-ax,ay=-ay,az=-az it is the walk again
+/usr/bin/python3 - "$T/m.csv" "$T/mirror.csv" <<'PY'
+import sys
+with open(sys.argv[1]) as f, open(sys.argv[2], 'w') as o:
+    o.write(f.readline())
+    for line in f:
+        c = line.rstrip('\n').split(',')
+        c[1:4] = [v[1:] if v.startswith('-') else '-' + v for v in c[1:4]]  # the text negated, every digit kept
+        o.write(','.join(c) + '\n')
+PY
+expect_exit 0 "the accelerations negated" "$H" replay "$T/mirror.csv" --json "$T/mirror.json" --quiet
+json "$T/mirror.json" 'abs(j["heading_change_deg"] + json.load(open("'"$T/m_ref.json"'"))["heading_change_deg"]) < 0.5 and j["axes"]["problem"] is False' &&
+    pass "the accelerations negated: the mirror image (the heading change's sign turned), no check flags it" ||
+    fail "mirror: $(cat "$T/pyerr")"
+expect_exit 0 "the accelerations negated, read with --columns ax=-ax,ay=-ay,az=-az" "$H" replay "$T/mirror.csv" \
+    --columns ax=-ax,ay=-ay,az=-az --out "$T/mirror_traj.csv" --quiet
+if cmp -s "$T/mirror_traj.csv" "$T/m_ref.csv"; then pass "--columns ax=-ax,...: the walk's trajectory, byte for byte"
+else fail "--columns ax=-ax,...: the trajectory differs from the walk's"; fi
 expect_exit 0 "a turned mounting with --json" "$H" replay "$T/m_xyz.csv" --json "$T/axm.json" --quiet
 if grep -q '"problem":[[:space:]]*false' "$T/axm.json"; then pass "axes check: a turned mounting (both triads) agrees"; else fail "axes check flagged a turned mounting"; fi
 expect_exit 1 "a log too short to align, axes" "$H" replay "$T/two.csv" --json "$T/ax2.json" --quiet
@@ -807,6 +839,34 @@ expect_exit 0 "convert a log in g to .bin" "$H" convert "$T/in_g.csv" "$T/in_g.b
 expect_exit 1 "accelerometer in g, .bin" "$H" replay "$T/in_g.bin" --quiet
 expect_err "not in m/s^2 but in g (multiply by 9.80665)" "a .bin in g: the arithmetic remedy"
 if grep -q -- "--units" "$T/err"; then fail "a .bin told to give --units"; else pass "a .bin not told to give --units"; fi
+# a linear acceleration (gravity removed, as Android's linear acceleration
+# sensor and iOS's userAcceleration give it): the bundled walk less gravity
+# in the body frame by the filter's own attitude (C_bn (0, 0, g), n z down:
+# docs/frames.md; before the alignment, its first attitude) is named as such,
+# not as a unit mistake (before: "the log is not in m/s^2"); info says it too
+/usr/bin/python3 - "$T/m.csv" "$T/m_ref.csv" "$T/lin.csv" <<'PY' || fail "writing the linear acceleration"
+import sys, numpy as np
+d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
+r = np.genfromtxt(sys.argv[2], delimiter=',', names=True)
+first = np.flatnonzero(r['aligned'] == 1)[0]
+e = {k: np.interp(d['t'], r['t'][first:], r[k][first:]) for k in ('roll', 'pitch', 'yaw')}
+cr, sr, cp, sp = np.cos(e['roll']), np.sin(e['roll']), np.cos(e['pitch']), np.sin(e['pitch'])
+g = 9.80665
+# the third row of C_nb = Rz Ry Rx is (-sp, cp sr, cp cr): C_bn (0, 0, g) is g times it
+lin = np.column_stack([d['ax'] - g * sp, d['ay'] + g * cp * sr, d['az'] + g * cp * cr])
+print('|f| at rest (first 1.5 s): %.3f m/s^2' % np.linalg.norm(lin[d['t'] < 1.5], axis=1).mean(), file=sys.stderr)
+np.savetxt(sys.argv[3], np.column_stack([d['t'], lin, d['gx'], d['gy'], d['gz']]), delimiter=',',
+           header='t,ax,ay,az,gx,gy,gz', comments='', fmt='%.9g')
+PY
+expect_exit 1 "a linear acceleration" "$H" replay "$T/lin.csv" --quiet
+expect_err "at rest, where gravity is 9.807 m/s^2: the log is without gravity: a linear acceleration (gravity removed)" \
+    "gravity removed is named"
+if grep -q "not in m/s^2" "$T/err"; then fail "gravity removed named a unit mistake"; else pass "not named a unit mistake"; fi
+expect_exit 0 "info on a linear acceleration" "$H" info "$T/lin.csv"
+expect_out "no gravity: |f| [0-9.]* m/s^2 and its spread [0-9.]* m/s^2 in the quietest second: a linear acceleration" \
+    "info: no gravity"
+expect_exit 0 "info on the walk" "$H" info "$T/m.csv"
+if grep -q "no gravity" "$T/out"; then fail "info: no gravity on the walk"; else pass "info: gravity on the walk"; fi
 # an accelerometer in g with accel=g given already (values in g/9.80665): not told to give accel=g again
 awk -F, 'NR == 1 { print; next } { printf "%s,%.7g,%.7g,%.7g,%s,%s,%s\n", $1, $2 / 9.80665, $3 / 9.80665, $4 / 9.80665, $5, $6, $7 }' \
     "$T/in_g.csv" > "$T/in_g2.csv"
