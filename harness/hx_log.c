@@ -2193,7 +2193,7 @@ static int ug_plausible(double v)
 static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
 {
     char *f[HX_MAX_COLS];
-    int n, i;
+    int n, i, neg;
     double v[6], tv = 0.0, aux = 0.0;
     int64_t t_ns = 0;
     if (r->delim == '\0') {
@@ -2449,9 +2449,8 @@ static fnav_status_t next_text_fields(hx_reader_t *r, fnav_sample_t *s)
     r->have_prev = 1;
     r->prev_t_ns = t_ns;
     s->t_ns = t_ns;
+    neg = r->meta.format == HX_FMT_CSV ? r->layout.negate : 0; /* --columns ax=-NAME: the other sign */
     for (i = 0; i < 3; i++) {
-        /* --columns ax=-NAME: the column with the other sign (CSV only) */
-        const int neg = r->meta.format == HX_FMT_CSV ? r->layout.negate : 0;
         s->accel_mps2[i] = (fnav_real_t)(v[i] * r->acc_scale * ((neg & (1 << (1 + i))) ? -1.0 : 1.0));
         s->gyro_rps[i] = (fnav_real_t)(v[3 + i] * r->gyr_scale * ((neg & (1 << (4 + i))) ? -1.0 : 1.0));
     }
@@ -4149,6 +4148,11 @@ int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t 
         }
         if (i == 8 && strcmp(key, "tns") == 0) {
             /* the nanoseconds of a stamp split in two columns */
+            if (val[0] == '-') {
+                snprintf(err, err_size, "--columns: tns=%s: a '-' before a name reads the column with the other "
+                                        "sign, which only ax..gz take", val);
+                return -1;
+            }
             if (l->tns[0] != '\0' || val[0] == '\0' || strspn(val, " \t\"'") == strlen(val) ||
                 strlen(val) >= sizeof l->tns) {
                 snprintf(err, err_size, "--columns: tns=%s", l->tns[0] != '\0' ? " given twice"

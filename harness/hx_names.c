@@ -669,7 +669,7 @@ hx_name_unit_t hx_name_unit_of_text(const char *text)
 
 int hx_names_match(char *const *f, int n, hx_names_match_t *m)
 {
-    int i, k, nclock = 0, clock[3], ngf[4] = { 0, 0, 0, 0 }, gf[4][3];
+    int i, k, nclock = 0, clock[3], ngf[4] = { 0, 0, 0, 0 }, gf[4][3] = { { 0 } };
     memset(m, 0, sizeof *m);
     m->unit_col = -1;
     m->col_tns = -1;
@@ -713,23 +713,20 @@ int hx_names_match(char *const *f, int n, hx_names_match_t *m)
         }
         m->ncand[0] = nclock;
     }
-    for (k = 1; k <= 3; k++) {
-        /* Physics Toolbox's g-force is the specific force; its ax..az
-         * beside it the linear acceleration (gravity removed), not read and
-         * named as such in the warning */
-        int j;
-        if (ngf[k] == 0) {
-            continue;
-        }
+    if (ngf[1] + ngf[2] + ngf[3] > 0) {
+        /* Physics Toolbox's g-force is the specific force; the app's
+         * ax..az beside it its linear acceleration (gravity removed): not
+         * read, and named with the near misses in the warning (for the
+         * whole file, as merge's find_cols) */
         m->gforce = 1;
-        for (j = 0; j < m->ncand[k] && j < 3; j++) {
-            add_col(&m->nnear[k], m->near[k], m->cand[k][j]);
+        for (k = 1; k <= 3; k++) {
+            int j;
+            for (j = 0; j < m->ncand[k] && j < 3; j++) {
+                add_col(&m->nnear[k], m->near[k], m->cand[k][j]);
+            }
+            memcpy(m->cand[k], gf[k], sizeof gf[k]);
+            m->ncand[k] = ngf[k];
         }
-        m->ncand[k] = 0;
-        for (j = 0; j < ngf[k] && j < 3; j++) {
-            add_col(&m->ncand[k], m->cand[k], gf[k][j]);
-        }
-        m->ncand[k] = ngf[k];
     }
     for (i = 0; i < n && m->unit_col < 0 && !m->consensys && !m->ros; i++) {
         /* a key without a candidate that one name has but for its unit:

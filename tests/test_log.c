@@ -3581,11 +3581,6 @@ static void test_names_match(void **state)
     }
 }
 
-/* --columns tns=NAME: nanoseconds added to t's whole seconds (a stamp split
- * in two columns, as ROS writes it); the sum exact to the ns; each wrong
- * use refused with its reason: a nanoseconds value out of 0..999999999 or
- * not whole, a column not in the header, t in ms, tns given twice or named
- * for another key too. */
 /* --columns ax=-NAME: the column read with the other sign (iOS's
  * accelerations, a flipped gyro axis); refused for t and temp */
 static void test_columns_negate(void **state)
@@ -3628,6 +3623,9 @@ static void test_columns_negate(void **state)
     assert_int_equal(hx_csv_columns_parse(&l, "temp=-T", err, sizeof err), -1);
     assert_non_null(strstr(err, "which only ax..gz take"));
     hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "t=sec,tns=-nsec", err, sizeof err), -1);
+    assert_non_null(strstr(err, "tns=-nsec: a '-' before a name reads the column with the other sign"));
+    hx_csv_layout_default(&l);
     assert_int_equal(hx_csv_columns_parse(&l, "ax=-", err, sizeof err), -1);
     assert_non_null(strstr(err, "ax= has an empty name"));
     hx_csv_layout_default(&l);
@@ -3637,6 +3635,11 @@ static void test_columns_negate(void **state)
     unlink(p);
 }
 
+/* --columns tns=NAME: nanoseconds added to t's whole seconds (a stamp split
+ * in two columns, as ROS writes it); the sum exact to the ns; each wrong
+ * use refused with its reason: a nanoseconds value out of 0..999999999 or
+ * not whole, a column not in the header, t in ms, tns given twice or named
+ * for another key too. */
 static void test_columns_tns(void **state)
 {
     static const char *const head = "sec,nsec,ax,ay,az,gx,gy,gz\n";
