@@ -49,7 +49,8 @@ typedef struct {
     int best;                    /**< that map (0: as recorded) */
     char best_map[40];           /**< e.g. "(gx, -gy, gz)" */
     int problem;                 /**< 1: the recorded map is clearly not the gyro's */
-    char msg[512];               /**< the verdict, with the remedy when problem */
+    char msg[1024];              /**< the verdict, with the remedy when problem (for a CSV the whole --columns:
+                                      hx_nav_replay) */
 } hx_axes_result_t;
 
 /** A new check (about 100 KB, so on the heap); NULL when out of memory. */

@@ -4138,6 +4138,39 @@ static void layout_given(hx_csv_layout_t *l, const char *opt)
     }
 }
 
+const char *hx_columns_give(const hx_csv_layout_t *l, const int src[3], const int neg[3], char *buf, size_t size)
+{
+    char map[8 * 72 + 72], units[96];
+    size_t i, len = 0;
+    int k, quote = 0;
+    map[0] = '\0';
+    for (k = 0; k < 8; k++) {
+        /* the key's column as l reads it: the gyro's from key src[] */
+        const int from = (k >= 4 && k <= 6) ? 4 + src[k - 4] : k;
+        const int minus = ((l->negate >> from) & 1) ^ ((k >= 4 && k <= 6) ? (neg[k - 4] != 0) : 0);
+        const char *name = l->names[from][0] != '\0' ? l->names[from] : k_csv_names[from];
+        if (l->names[from][0] == '\0' && !(k >= 4 && k <= 6) && !minus) {
+            continue; /* the default name, read as it is: nothing to say */
+        }
+        len += (size_t)snprintf(map + len, sizeof map - len, "%s%s=%s%s", len > 0u ? "," : "", k_csv_names[k],
+                                minus ? "-" : "", name);
+        if (k == 0 && l->tns[0] != '\0' && len < sizeof map) {
+            len += (size_t)snprintf(map + len, sizeof map - len, ",tns=%s", l->tns);
+        }
+        if (len >= sizeof map) {
+            break;
+        }
+    }
+    for (i = 0; map[i] != '\0'; i++) {
+        /* a name with a blank or a bracket is one shell word only quoted */
+        quote |= !(isalnum((unsigned char)map[i]) || strchr("_.,=/-+", map[i]) != NULL);
+    }
+    (void)hx_units_give(l, units, sizeof units);
+    snprintf(buf, size, "--columns %s%s%s%s%s", quote ? "'" : "", map, quote ? "'" : "",
+             strncmp(units, "give ", 5) == 0 ? " " : "", strncmp(units, "give ", 5) == 0 ? units + 5 : "");
+    return buf;
+}
+
 int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t err_size)
 {
     const char *p = map;

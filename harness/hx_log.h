@@ -144,6 +144,16 @@ void hx_csv_layout_default(hx_csv_layout_t *l);
  *  a key given twice, a missing '=', an empty name, one column named for two
  *  keys, counting the default names of the keys not given). */
 int hx_csv_columns_parse(hx_csv_layout_t *l, const char *map, char *err, size_t err_size);
+/** The options that read the log of layout l (the reader's, hx_units_layout)
+ *  with its gyro read anew: gyro key i (gx, gy, gz) from the column l reads
+ *  as key src[i] (0..2: gx..gz), with the other sign when neg[i]. Every key
+ *  l names is named ("--columns t=time,ax=acc_x,...,gy=-gyr_y,...": a
+ *  --columns given turns the names' matching off, so a partial one would
+ *  lose the others), the three gyro keys always, and the --units of l's
+ *  units when they are not all the defaults; the map quoted when a name is
+ *  not one shell word. The axes check's remedy (docs/harness.md, "Axes
+ *  check"). Returns buf. */
+const char *hx_columns_give(const hx_csv_layout_t *l, const int src[3], const int neg[3], char *buf, size_t size);
 /** Parse a --units SPEC ("time=ns,accel=g,gyro=deg/s"; time s|ms|us|ns,
  *  accel m/s2|m/s^2|mps2|g|mg, gyro rad/s|deg/s|dps|mdps|mdeg/s) into l.
  *  0 ok; -1 with a message in err. */

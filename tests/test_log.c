@@ -3635,6 +3635,53 @@ static void test_columns_negate(void **state)
     unlink(p);
 }
 
+/* hx_columns_give, the axes check's remedy: every key the layout names,
+ * the three gyro keys always (from the source key, the sign the XOR of the
+ * layout's and the map's), --units when not all defaults, the map quoted
+ * when a name is not one shell word; the map it gives parses back to the
+ * layout with the gyro so read. */
+static void test_columns_give(void **state)
+{
+    static const int k_swap[3] = { 1, 0, 2 }, k_same[3] = { 0, 1, 2 }, k_none[3] = { 0, 0, 0 };
+    static const int k_flip_y[3] = { 0, 1, 0 }, k_rot[3] = { 1, 2, 0 }, k_neg_z[3] = { 0, 0, 1 };
+    char buf[700], err[320], map[700];
+    hx_csv_layout_t l, back;
+    const char *q, *e;
+    (void)state;
+    hx_csv_layout_default(&l);
+    assert_string_equal(hx_columns_give(&l, k_swap, k_none, buf, sizeof buf), "--columns gx=gy,gy=gx,gz=gz");
+    assert_string_equal(hx_columns_give(&l, k_rot, k_neg_z, buf, sizeof buf), "--columns gx=gy,gy=gz,gz=-gx");
+    /* a layout given whole, with a sign already on gy: the flip undoes it */
+    assert_int_equal(hx_csv_columns_parse(&l, "t=sec,tns=nsec,ax=-a x,ay=ay1,az=az1,gx=w1,gy=-w2,gz=w3,temp=T", err,
+                                          sizeof err), 0);
+    assert_int_equal(hx_csv_units_parse(&l, "accel=g,gyro=deg/s", err, sizeof err), 0);
+    assert_string_equal(hx_columns_give(&l, k_same, k_flip_y, buf, sizeof buf),
+                        "--columns 't=sec,tns=nsec,ax=-a x,ay=ay1,az=az1,gx=w1,gy=w2,gz=w3,temp=T' --units "
+                        "accel=g,gyro=deg/s");
+    /* its map parses back: the same names, gy's sign gone */
+    q = strchr(buf, '\'');
+    assert_non_null(q);
+    e = strchr(q + 1, '\'');
+    assert_non_null(e);
+    snprintf(map, sizeof map, "%.*s", (int)(e - q - 1), q + 1);
+    hx_csv_layout_default(&back);
+    assert_int_equal(hx_csv_columns_parse(&back, map, err, sizeof err), 0);
+    assert_memory_equal(back.names, l.names, sizeof l.names);
+    assert_string_equal(back.tns, "nsec");
+    assert_int_equal(back.negate, l.negate & ~(1 << 5));
+    /* rotated: each gyro key takes its source's name and sign */
+    assert_string_equal(hx_columns_give(&l, k_rot, k_neg_z, buf, sizeof buf),
+                        "--columns 't=sec,tns=nsec,ax=-a x,ay=ay1,az=az1,gx=-w2,gy=w3,gz=-w1,temp=T' --units "
+                        "accel=g,gyro=deg/s");
+    /* names matched in ms, no blank: unquoted, the time's unit given */
+    hx_csv_layout_default(&l);
+    assert_int_equal(hx_csv_columns_parse(&l, "t=time_ms,ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_x,gy=gyr_y,gz=gyr_z", err,
+                                          sizeof err), 0);
+    assert_int_equal(hx_csv_units_parse(&l, "time=ms", err, sizeof err), 0);
+    assert_string_equal(hx_columns_give(&l, k_swap, k_none, buf, sizeof buf),
+                        "--columns t=time_ms,ax=acc_x,ay=acc_y,az=acc_z,gx=gyr_y,gy=gyr_x,gz=gyr_z --units time=ms");
+}
+
 /* --columns tns=NAME: nanoseconds added to t's whole seconds (a stamp split
  * in two columns, as ROS writes it); the sum exact to the ns; each wrong
  * use refused with its reason: a nanoseconds value out of 0..999999999 or
@@ -4816,6 +4863,7 @@ int main(void)
         cmocka_unit_test_teardown(test_csv_layout, layout_reset),
         cmocka_unit_test_teardown(test_columns_tns, layout_reset),
         cmocka_unit_test_teardown(test_columns_negate, layout_reset),
+        cmocka_unit_test(test_columns_give),
         cmocka_unit_test(test_name_classify),
         cmocka_unit_test(test_names_match),
         cmocka_unit_test(test_name_units_utf8),

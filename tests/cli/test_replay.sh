@@ -446,6 +446,13 @@ expect_exit 0 "info on the ros variant with an unset stamp" "$H" info "$T/m_ros0
 expect_err "m_ros0.csv:2: the message's stamp (field.header.stamp) is 0: the driver left it unset; the bag's receive time, '%time', is read instead$" \
     "the unset stamp's warning is printed whole after the mapping's"
 
+# the ptb variant: the reader's warning names the g-force's mapping, its
+# unit and the linear acceleration left unread; info names the app
+expect_exit 0 "info on the ptb variant" "$H" info "$T/m_ptb.csv"
+expect_err "m_ptb.csv: header read as --columns t=time,ax=gFx,ay=gFy,az=gFz,gx=wx,gy=wy,gz=wz --units accel=g (names matched; gFx..gFz, Physics Toolbox's g-force, are the specific force in g; not read: ax, ay, az; give --columns to choose otherwise)$" \
+    "ptb: the warning says the g-force is read in g and ax..az are not read"
+expect_out "^sensor      Physics Toolbox (g-force)$" "ptb: info names the app"
+
 # --- clipping: the bundled walk as a sensor of +-250 deg/s and +-2 g would
 # record it (flat tops at full scale). replay does not navigate it without a
 # word (info counts the flat tops): the
@@ -546,21 +553,49 @@ json "$T/unclip.json" 'j["motion_gaps"]["unreliable"] is False and j["motion_gap
 # two swapped against the accelerometer is named with its fix, a warning with
 # exit 0; the walk as recorded and the turned mountings above pass it
 expect_exit 0 "replay the recorded walk with --json" "$H" replay "$T/m.csv" --json "$T/ax0.json" --quiet
-for axv in "flip:(gx, -gy, gz)" "swap:(gy, gx, gz)"; do
+# rot: the gyro recorded as (-gz, gx, gy), undone by (gy, gz, -gx); named:
+# the flip under names matched in ms, g and deg/s, whose whole --columns
+# and --units the remedy must give
+for axv in "flip:(gx, -gy, gz):--columns gx=gx,gy=-gy,gz=gz" "swap:(gy, gx, gz):--columns gx=gy,gy=gx,gz=gz" \
+    "rot:(gy, gz, -gx):--columns gx=gy,gy=gz,gz=-gx" \
+    "named:(gx, -gy, gz):--columns 't=Time [ms],ax=AccX [g],ay=AccY [g],az=AccZ [g],gx=GyroX [deg/s],gy=-GyroY [deg/s],gz=GyroZ [deg/s]' --units time=ms,accel=g,gyro=deg/s"; do
     axn=${axv%%:*}
     axw=${axv#*:}
+    axfix=${axw#*:}
+    axw=${axw%%:*}
     /usr/bin/python3 - "$T/m.csv" "$T/ax_$axn.csv" "$axn" <<'PY'
 import sys, numpy as np
 d = np.genfromtxt(sys.argv[1], delimiter=',', names=True)
-g = [d['gx'], -d['gy'], d['gz']] if sys.argv[3] == 'flip' else [d['gy'], d['gx'], d['gz']]
-np.savetxt(sys.argv[2], np.column_stack([d['t'], d['ax'], d['ay'], d['az']] + g), delimiter=',',
-           header='t,ax,ay,az,gx,gy,gz', comments='', fmt=['%.9f'] + ['%.9g'] * 6)
+v = sys.argv[3]
+g = {'flip': [d['gx'], -d['gy'], d['gz']], 'named': [d['gx'], -d['gy'], d['gz']],
+     'swap': [d['gy'], d['gx'], d['gz']], 'rot': [-d['gz'], d['gx'], d['gy']]}[v]
+if v == 'named':
+    np.savetxt(sys.argv[2], np.column_stack([d['t'] * 1e3] + [d[k] / 9.80665 for k in ('ax', 'ay', 'az')] +
+                                            [x * 180 / np.pi for x in g]), delimiter=',',
+               header='Time [ms],AccX [g],AccY [g],AccZ [g],GyroX [deg/s],GyroY [deg/s],GyroZ [deg/s]',
+               comments='', fmt=['%.6f'] + ['%.17g'] * 6)
+else:
+    np.savetxt(sys.argv[2], np.column_stack([d['t'], d['ax'], d['ay'], d['az']] + g), delimiter=',',
+               header='t,ax,ay,az,gx,gy,gz', comments='', fmt=['%.9f'] + ['%.9g'] * 6)
 PY
     expect_exit 0 "axes check: $axn, a warning, exit 0" "$H" replay "$T/ax_$axn.csv" --json "$T/ax_$axn.json"
     expect_err "axes do not match the accelerometer's" "axes check: $axn is warned about"
     expect_out "axes              MISMATCH" "axes check: $axn in the summary"
     [ "$axn" = flip ] && expect_err "read with the other sign by a '-' before the name: gy=-NAME" \
         "axes check: the flip's warning names the '-' remedy"
+    # the whole options that read this log as the map found, and the log so
+    # read is the walk again, byte for byte
+    if grep -qF -- "this log so read: $axfix; outputs were computed" "$T/err"; then
+        pass "axes check: $axn, the warning gives $axfix"
+    else
+        fail "axes check: $axn, the warning lacks 'this log so read: $axfix'"; cat "$T/err"
+    fi
+    if eval "\"\$H\" replay \"\$T/ax_\$axn.csv\" $axfix --out \"\$T/ax_\${axn}_fix.csv\" --quiet" 2> "$T/err" &&
+        cmp -s "$T/ax_${axn}_fix.csv" "$T/m_ref.csv"; then
+        pass "axes check: $axn read with the warning's options is the walk's trajectory, byte for byte"
+    else
+        fail "axes check: $axn read with '$axfix' is not the walk's trajectory: $(cat "$T/err")"
+    fi
     if /usr/bin/python3 -c "
 import json, sys
 a = json.load(open(sys.argv[1]))['axes']
