@@ -188,6 +188,7 @@ static int blank_line(const char *s)
 typedef struct {
     int t, ax[3];
     int t_elapsed; /* the time column's name is one from a start (elapsed) */
+    int t_dated;   /* the time column's first value is a date and time, or a clock time (a ':') */
     hx_name_unit_t t_unit, unit;
 } cols_t;
 
@@ -306,6 +307,7 @@ static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_
     c->t = -1;
     c->t_unit = HX_UNIT_NONE;
     c->t_elapsed = 0;
+    c->t_dated = 0;
     for (i = 0, best = -1; i < ntimes; i++) {
         hx_name_class_t cl;
         int64_t ns;
@@ -322,6 +324,7 @@ static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_
             c->t = times[i];
             c->t_unit = cl.unit;
             c->t_elapsed = cl.clock == -1;
+            c->t_dated = rank == 2;
         }
     }
     if (c->t < 0) {
@@ -470,7 +473,8 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
         hx_csv_layout_unit(&l, c.unit);
     }
     unitless = !(l.units_given & 1) && c.t_unit == HX_UNIT_NONE;
-    f->time_unit = digits_unit(l.time_digits);
+    /* a date and time carries its own unit, whatever the name or --units say */
+    f->time_unit = c.t_dated ? NULL : digits_unit(l.time_digits);
     scale = kind == HX_TRI_ACC ? l.acc_scale : l.gyr_scale;
     f->unit = kind == HX_TRI_ACC ? hx_accel_unit_name(scale) : hx_gyro_unit_name(scale);
     f->unit_from = (l.units_given & (kind == HX_TRI_ACC ? 2 : 4)) ? "--units"
@@ -571,7 +575,8 @@ int hx_tri_load_progress(hx_tri_t *f, const char *path, hx_tri_kind_t kind, cons
     }
     if (overflow) {
         say(err, err_size, "%s: the stamps of column '%s' are beyond 292 years in nanoseconds read in %s (give "
-                           "their unit with --units time=...)", path, f->cols[0], f->time_unit);
+                           "their unit with --units time=...)", path, f->cols[0],
+                f->time_unit != NULL ? f->time_unit : "dates");
         goto fail;
     }
     if (f->n == 0) {

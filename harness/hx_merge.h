@@ -36,7 +36,8 @@ typedef struct {
     char cols[4][64];         /**< the names of the time column and of x, y, z, as the header spells them */
     int t_from_start;         /**< 1: the time column's name is a time from a start ("elapsed (s)"), which
                                    MetaWear counts from each file's own first sample */
-    const char *time_unit;    /**< "s", "ms", "us", "ns" */
+    const char *time_unit;    /**< "s", "ms", "us", "ns"; NULL: dates and times (or clock times), read to ns
+                                   whatever the unit named */
     const char *unit;         /**< the values' unit: "m/s^2", "g", "mg", "ug", "rad/s", "deg/s", "mdps" */
     const char *unit_from;    /**< where the units came from: "named", "--units", "default" */
     char error[HX_ERR_SIZE];  /**< the error that stopped reading after a first sample ("" none) */

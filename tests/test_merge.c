@@ -77,19 +77,25 @@ static void test_metawear_columns(void **state)
             const char *text, *col;
             int from_start;
             int64_t t0_ns;
+            const char *time_unit; /* NULL: dates and times, whatever the name says */
         } k[] = {
             { "elapsed (s),time (-13:00),x-axis (g),y-axis (g),z-axis (g)\n"
               "0.000,2023-11-14T09:13:20.000,0.5,-1,2\n0.010,2023-11-14T09:13:20.010,1,0,0\n",
-              "time (-13:00)", 0, 1699953200000000000LL },
+              "time (-13:00)", 0, 1699953200000000000LL, NULL },
             { "time (-13:00),elapsed (s),x-axis (g),y-axis (g),z-axis (g)\n"
               "2023-11-14T22.13.20.000,0.000,0.5,-1,2\n2023-11-14T22.13.20.010,0.010,1,0,0\n",
-              "elapsed (s)", 1, 0 },
+              "elapsed (s)", 1, 0, "s" },
         };
         size_t i;
         for (i = 0; i < sizeof k / sizeof k[0]; i++) {
             assert_int_equal(load(&f, k[i].text, HX_TRI_ACC, NULL, err, sizeof err), 0);
             assert_string_equal(f.cols[0], k[i].col);
             assert_int_equal(f.t_from_start, k[i].from_start);
+            if (k[i].time_unit == NULL) {
+                assert_null(f.time_unit);
+            } else {
+                assert_string_equal(f.time_unit, k[i].time_unit);
+            }
             assert_true(f.t_ns[0] == k[i].t0_ns && f.t_ns[1] - f.t_ns[0] == 10000000);
             hx_tri_free(&f);
         }

@@ -83,6 +83,19 @@ with open(T + '/ptb_acc.csv', 'w') as f:
     f.write('time,gFx,gFy,gFz,ax,ay,az\n')
     for ti, ai in zip(t, a):
         f.write('%.9f,%s\n' % (ti, ','.join('%.9g' % v for v in list(ai / 9.80665) + list(ai - [0, 0, 9.8]))))
+# the iOS app's g-force file: a local date and time to 0.1 ms, the
+# magnitude gFTotal beside the axes; its gyroscope file on the same clock
+day = datetime.datetime(2018, 10, 3, 17, 23, 55)
+dts = [(day + datetime.timedelta(microseconds=int(round(ti * 1e4)) * 100)).strftime('%Y-%m-%d %H:%M:%S.%f')[:-2]
+       for ti in t]
+with open(T + '/ptb_ios_acc.csv', 'w') as f:
+    f.write('time,gFx,gFy,gFz,gFTotal\n')
+    for di, ai in zip(dts, a / 9.80665):
+        f.write('%s,%s,%.9g\n' % (di, ','.join('%.9g' % v for v in ai), np.linalg.norm(ai)))
+with open(T + '/ptb_ios_gyr.csv', 'w') as f:
+    f.write('time,wx,wy,wz\n')
+    for di, gi in zip(dts, g):
+        f.write('%s,%s\n' % (di, ','.join('%.9g' % v for v in gi)))
 lines = open(T + '/phyphox.csv').read().splitlines(True)
 lines[5000] = '0.5,oops,1,2\n'
 open(T + '/gyr_bad.csv', 'w').write(''.join(lines))
@@ -126,6 +139,25 @@ print('accel %.3g m/s^2' % da)
 sys.exit(0 if len(r) == len(m) and da < 2e-6 else 1)
 PY
 ); then pass "Physics Toolbox's g-force: the walk's accelerations ($msg)"; else fail "ptb_acc values: $msg"; fi
+
+# --- the iOS app's g-force file (dates and times, gFTotal beside the axes)
+# with a gyroscope's file on the same clock: the walk's values at the
+# stamps rounded to 0.1 ms, as the app writes them
+expect_exit 0 "merge ptb_ios_acc + ptb_ios_gyr" "$H" merge "$T/ptb_ios_acc.csv" "$T/ptb_ios_gyr.csv" "$T/m6.csv"
+expect_err "ptb_ios_acc.csv: 16334 samples, .* time 'time' as dates and times, x, y, z 'gFx', 'gFy', 'gFz' in g$" \
+    "the iOS g-force read by its names, gFTotal left"
+if msg=$(/usr/bin/python3 - "$T/ref.csv" "$T/m6.csv" <<'PY'
+import sys, numpy as np
+r, m = (np.genfromtxt(f, delimiter=',', names=True) for f in sys.argv[1:3])
+t = r['t'] - r['t'][0]
+da = max(np.abs(r[k] - m[k]).max() for k in ('ax', 'ay', 'az'))
+dg = max(np.abs(r[k] - m[k]).max() for k in ('gx', 'gy', 'gz'))
+dt = np.abs(np.round(t * 1e4) / 1e4 - (m['t'] - m['t'][0])).max()
+print('accel %.3g m/s^2, gyro %.3g rad/s, time %.3g s' % (da, dg, dt))
+# the merged t is Unix seconds (1.5e9), which a double holds to 2.4e-7 s
+sys.exit(0 if len(r) == len(m) and da < 2e-6 and dg == 0 and dt < 5e-7 else 1)
+PY
+); then pass "the iOS g-force with its gyroscope: the walk's values ($msg)"; else fail "ptb_ios values: $msg"; fi
 
 # --- semicolons and decimal commas read as the commas and points
 expect_exit 0 "merge phyphox_acc + phyphox_semi" "$H" merge "$T/phyphox_acc.csv" "$T/phyphox_semi.csv" "$T/m2.csv"
