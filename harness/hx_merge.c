@@ -324,7 +324,7 @@ static int find_cols(char **f, int n, char **d, int nd, char delim, hx_tri_kind_
             c->t = times[i];
             c->t_unit = cl.unit;
             c->t_elapsed = cl.clock == -1;
-            c->t_dated = rank == 2;
+            c->t_dated = strchr(d[times[i]], ':') != NULL;
         }
     }
     if (c->t < 0) {
