@@ -1588,11 +1588,13 @@ static double *cycle_intervals(const hx_traj_t *t, size_t *k)
     return iv;
 }
 
-/* The axes check's remedy for a CSV read by a command that takes
- * --columns (fmt HX_FMT_AUTO: none): the whole --columns that reads this
- * log's gyro as the map found, appended to the warning, since a partial
- * --columns turns the names' matching off (docs/harness.md, "Axes check"). */
-static void axes_columns_remedy(hx_axes_result_t *a, hx_format_t fmt)
+/* The axes check's remedy for a log read by a command that takes
+ * --columns (fmt HX_FMT_AUTO: none), appended to the warning: for a CSV
+ * the whole --columns that reads this log's gyro as the map found, since a
+ * partial --columns turns the names' matching off; for another format,
+ * whose importer has no columns to name, the same for the log converted to
+ * the interchange CSV (docs/harness.md, "Axes check"). */
+static void axes_columns_remedy(hx_axes_result_t *a, hx_format_t fmt, const char *path)
 {
     static const fnav_vec3_t k_axes = { { FNAV_R(1.0), FNAV_R(2.0), FNAV_R(3.0) } };
     hx_csv_layout_t lay;
@@ -1601,8 +1603,12 @@ static void axes_columns_remedy(hx_axes_result_t *a, hx_format_t fmt)
     char give[700];
     int src[3], neg[3], i;
     size_t len;
-    if (!a->problem || (l = hx_units_layout(fmt, &lay)) == NULL) {
+    if (!a->problem || fmt == HX_FMT_AUTO) {
         return;
+    }
+    l = hx_units_layout(fmt, &lay);
+    if (l == NULL) {
+        hx_csv_layout_default(&lay); /* convert writes the interchange names, in SI */
     }
     /* the map's source axis and sign, read off the axes (1, 2, 3) mapped */
     m = hx_axes_map(a->best, k_axes);
@@ -1610,8 +1616,15 @@ static void axes_columns_remedy(hx_axes_result_t *a, hx_format_t fmt)
         neg[i] = m.v[i] < FNAV_R(0.0);
         src[i] = (int)(neg[i] ? -m.v[i] : m.v[i]) - 1;
     }
+    (void)hx_columns_give(l != NULL ? l : &lay, src, neg, give, sizeof give);
     len = strlen(a->msg);
-    snprintf(a->msg + len, sizeof a->msg - len, "; this log so read: %s", hx_columns_give(l, src, neg, give, sizeof give));
+    if (l != NULL) {
+        snprintf(a->msg + len, sizeof a->msg - len, "; this log so read: %s", give);
+    } else {
+        snprintf(a->msg + len, sizeof a->msg - len,
+                 "; this log so read: bin/harness convert %s F.csv (the %s format to the interchange CSV), then "
+                 "F.csv with %s", path, hx_format_name(fmt), give);
+    }
 }
 
 int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_rate, const fnav_nav_config_t *cfg,
@@ -1814,7 +1827,7 @@ int hx_nav_replay(const char *cmd, const char *path, hx_format_t fmt, double in_
         traj->events = pc.ev != NULL && !pc.ev_bad;
         if (flags & HX_REPLAY_AXES) {
             hx_axes_finish(pc.axes, &traj->axes);
-            axes_columns_remedy(&traj->axes, (flags & HX_REPLAY_UNITS_OPT) ? in_fmt : HX_FMT_AUTO);
+            axes_columns_remedy(&traj->axes, (flags & HX_REPLAY_UNITS_OPT) ? in_fmt : HX_FMT_AUTO, path);
         } else {
             snprintf(traj->axes.msg, sizeof traj->axes.msg, "not checked: not asked for");
         }

@@ -605,6 +605,17 @@ sys.exit(0 if a['problem'] is True and a['best_map'] == sys.argv[2] and a['v_rec
         fail "axes check: $axn JSON $(tr -d '\n' < "$T/ax_$axn.json" | sed 's/.*"axes"/"axes"/')"
     fi
 done
+# another format has no columns to name: the remedy converts it to the
+# interchange CSV first (the flipped walk as a .bin; followed, the walk again)
+expect_exit 0 "the flipped walk to .bin" "$H" convert "$T/ax_flip.csv" "$T/ax_flip.bin"
+expect_exit 0 "axes check: the flipped .bin, a warning, exit 0" "$H" replay "$T/ax_flip.bin" --quiet
+expect_err "this log so read: bin/harness convert $T/ax_flip.bin F.csv (the bin format to the interchange CSV), then F.csv with --columns gx=gx,gy=-gy,gz=gz; outputs" \
+    "axes check: a .bin's remedy converts it, then names --columns"
+expect_exit 0 "the remedy's convert" "$H" convert "$T/ax_flip.bin" "$T/ax_flip_conv.csv"
+expect_exit 0 "the remedy's --columns" "$H" replay "$T/ax_flip_conv.csv" --columns gx=gx,gy=-gy,gz=gz \
+    --out "$T/ax_flip_conv_traj.csv" --quiet
+if cmp -s "$T/ax_flip_conv_traj.csv" "$T/m_ref.csv"; then pass "the .bin's remedy followed: the walk's trajectory, byte for byte"
+else fail "the .bin's remedy followed: the trajectory differs from the walk's"; fi
 if /usr/bin/python3 -c "
 import json, sys
 a = json.load(open(sys.argv[1]))['axes']
