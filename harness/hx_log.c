@@ -20,7 +20,8 @@
 #define HX_BUF_SIZE 65536
 
 static const char *const k_format_names[HX_FMT_COUNT] = {
-    "auto", "bin", "csv", "gx2", "openshoe820", "ngimu", "pyshoe", "ipol", "adis", "square2", "mtmanager"
+    "auto", "bin", "csv", "gx2", "openshoe820", "ngimu", "pyshoe", "ipol", "adis", "square2", "mtmanager",
+    "picoquake"
 };
 
 const char *hx_format_name(hx_format_t fmt)
@@ -949,6 +950,9 @@ static int sep_line(const char *s, char *d)
     return *s == '\0' && (*d == ',' || *d == ';' || *d == '\t' || *d == '|');
 }
 
+/* The PLab PicoQuake acquisition CSV's first line. */
+#define PQ_SIGNATURE "# PLab PicoQuake Data"
+
 static hx_format_t detect(const unsigned char *b, size_t n)
 {
     char text[600], head[600];
@@ -965,6 +969,9 @@ static hx_format_t detect(const unsigned char *b, size_t n)
     text[m] = '\0';
     if (gx2_preamble(text)) {
         return HX_FMT_GX2;
+    }
+    if (strncmp(text, PQ_SIGNATURE, sizeof PQ_SIGNATURE - 1) == 0) {
+        return HX_FMT_PICOQUAKE; /* the first line its writer puts (PicoQuake's AcquisitionData.to_csv) */
     }
     {
         /* The first non-blank line, lower case, without spaces and quotes:
@@ -1022,6 +1029,9 @@ static hx_format_t detect(const unsigned char *b, size_t n)
         }
         if (has_field(head, "sample") && has_field(head, "f_x_mps2") && has_field(head, "w_x_radps")) {
             return HX_FMT_SQUARE2;
+        }
+        if (has_field(head, "count") && has_field(head, "a_x") && has_field(head, "g_x") && !has_time_field(head)) {
+            return HX_FMT_PICOQUAKE; /* PicoQuake's header without its preamble: the rate is asked for */
         }
         if (has_field(head, "t")) {
             return HX_FMT_CSV;
@@ -1321,6 +1331,57 @@ static int read_again_from(hx_reader_t *r, z_off_t pos, long lines)
     r->stats.lines = lines;
     r->last_line_open = 0;
     return 0;
+}
+
+/* PicoQuake's preamble, the '#' lines before its header: the rate of the
+ * sample count from "# Config: data_rate = 2000.0 Hz, filter = ..." (the
+ * writer's Config; older ones write the number without "Hz") into *fs_hz
+ * (0: no such line) and its line; the reader then stands before the header.
+ * 0 ok, -1 error (err set: a data_rate that is no rate in Hz). */
+static int pq_preamble(hx_reader_t *r, double *fs_hz, long *line)
+{
+    for (;;) {
+        const z_off_t pos = gztell(r->gz);
+        const long lines = r->stats.lines;
+        const char *p;
+        char *end;
+        const int rc = read_line(r);
+        if (rc <= 0) {
+            if (rc == 0) {
+                set_err(r, "%s: no header line after the PicoQuake preamble", r->path);
+            }
+            return -1;
+        }
+        if (!comment(r->line) && !blank(r->line)) {
+            return read_again_from(r, pos, lines);
+        }
+        p = strstr(r->line, "data_rate");
+        if (strncmp(r->line, "# Config:", 9) != 0 || p == NULL) {
+            continue;
+        }
+        p += 9;
+        while (*p == ' ' || *p == '\t') {
+            p++;
+        }
+        end = NULL;
+        if (*p == '=') {
+            p++;
+            *fs_hz = strtod(p, &end);
+            while (end != p && (*end == ' ' || *end == '\t')) {
+                end++;
+            }
+            if (end != p && (end[0] == 'H' || end[0] == 'h') && (end[1] == 'z' || end[1] == 'Z')) {
+                end += 2;
+            }
+        }
+        if (end == NULL || end == p || !(*end == ',' || *end == '\r' || *end == '\n' || *end == '\0') ||
+            !(*fs_hz >= 1.0e-3 && *fs_hz < 1.0e6)) {
+            set_err(r, "%s:%ld: expected '# Config: data_rate = N Hz, ...', a rate in Hz in [0.001, 1e+06)", r->path,
+                    r->stats.lines);
+            return -1;
+        }
+        *line = r->stats.lines;
+    }
 }
 
 /* The row of units under a Consensys header (hx_names_consensys): the
@@ -1720,6 +1781,31 @@ static void mtmgr_peek(hx_reader_t *r)
     }
 }
 
+/* A format whose time is a counter at a rate the file states (fs Hz on
+ * line; 0: none), its header of names with delimiter delim next: a
+ * different --input-rate (rate_hz > 0) replaces the rate with a warning
+ * (--input-rate 200 on a 100 Hz file halves every stride time); it still
+ * rules, since the file may state the wrong one. The counter is the seq.
+ * 0 ok, -1 error (setup_header's). */
+static int counter_format(hx_reader_t *r, double rate_hz, double fs, long line, char delim,
+                          const char *const names[8], const char *sensor, const char *axes)
+{
+    r->time_mode = TIME_COUNTER;
+    r->rate_hz = rate_hz > 0.0 ? rate_hz : fs;
+    if (rate_hz > 0.0 && fs > 0.0 && fabs(rate_hz - fs) > 1.0e-9 * fs) {
+        add_warn(r, "%s: --input-rate %g Hz replaces the rate the file states (%g Hz on line %ld)", r->path, rate_hz,
+                 fs, line);
+    }
+    r->delim = delim;
+    if (setup_header(r, names, 1) != 0) {
+        return -1;
+    }
+    r->meta.has_seq = 1;
+    copy_str(r->meta.sensor, sizeof r->meta.sensor, sensor);
+    copy_str(r->meta.axes, sizeof r->meta.axes, axes);
+    return 0;
+}
+
 /* Xsens MT Manager's export (hx_xsens.h): the '//' lines, the header and
  * a look at the first data row, whose SampleTimeFine (a number or NaN)
  * chooses the time source; the row is read again as the first sample. With
@@ -1968,23 +2054,31 @@ static int setup_text(hx_reader_t *r, double rate_hz)
                 return -1;
             }
         }
-        r->time_mode = TIME_COUNTER;
-        r->rate_hz = rate_hz > 0.0 ? rate_hz : fs;
-        if (rate_hz > 0.0 && fabs(rate_hz - fs) > 1.0e-9 * fs) {
-            /* the file states its rate: a different --input-rate replaces
-             * it with a warning (--input-rate 200 on a 100 Hz file halves
-             * every stride time); it still rules, since the file may state
-             * the wrong one */
-            add_warn(r, "%s: --input-rate %g Hz replaces the rate the file states (%g Hz on line %ld)", r->path,
-                     rate_hz, fs, r->stats.lines);
-        }
-        r->delim = '\t';
-        if (setup_header(r, names, 1) != 0) {
+        if (counter_format(r, rate_hz, fs, r->stats.lines, '\t', names, "Xsens MTw Awinda",
+                           "sensor axes; tilted at rest, +z mostly up") != 0) {
             return -1;
         }
-        m->has_seq = 1;
-        copy_str(m->sensor, sizeof m->sensor, "Xsens MTw Awinda");
-        copy_str(m->axes, sizeof m->axes, "sensor axes; tilted at rest, +z mostly up");
+        break;
+    }
+    case HX_FMT_PICOQUAKE: {
+        static const char *const names[8] = { "count", "a_x", "a_y", "a_z", "g_x", "g_y", "g_z", NULL };
+        long config_line = 0;
+        double fs = 0.0;
+        if (pq_preamble(r, &fs, &config_line) != 0) {
+            return -1;
+        }
+        if (!(fs > 0.0) && !(rate_hz > 0.0)) {
+            set_err(r, "%s: no '# Config: data_rate = N' line before the header: the sample count's rate is not "
+                       "known (give --input-rate)", r->path);
+            return -1;
+        }
+        /* the device's units (its docs, "Acquisition CSV File"): g and deg/s */
+        r->acc_scale = HX_G_MPS2;
+        r->gyr_scale = HX_DPS_RPS;
+        if (counter_format(r, rate_hz, fs, config_line, ',', names, "PLab PicoQuake (ICM-42688-P)",
+                           "sensor axes, as marked on the device") != 0) {
+            return -1;
+        }
         break;
     }
     case HX_FMT_MTMGR:

@@ -33,6 +33,7 @@ typedef enum {
     HX_FMT_ADIS,       /**< ADIS16405 static CSV (deg/s, g, no time) */
     HX_FMT_SQUARE2,    /**< ZUPT-aided-INS square2 CSV (sample index, 100 Hz) */
     HX_FMT_MTMGR,      /**< Xsens MT Manager ASCII export (SampleTimeFine or PacketCounter; hx_xsens.h) */
+    HX_FMT_PICOQUAKE,  /**< PLab PicoQuake acquisition CSV (sample count at the '# Config:' data_rate; g, deg/s) */
     HX_FMT_COUNT
 } hx_format_t;
 
@@ -101,7 +102,7 @@ int hx_find_col(char **f, int n, const char *name);
  *  hx_print_warnings hold this much. */
 #define HX_WARN_SIZE 2048
 
-#define HX_FORMAT_LIST "bin, csv, gx2, openshoe820, ngimu, pyshoe, ipol, adis, square2, mtmanager"
+#define HX_FORMAT_LIST "bin, csv, gx2, openshoe820, ngimu, pyshoe, ipol, adis, square2, mtmanager, picoquake"
 /** Comma-separated list of the format names (HX_FORMAT_LIST). */
 const char *hx_format_list(void);
 

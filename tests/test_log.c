@@ -2616,6 +2616,80 @@ static void test_ipol_counter_wrap(void **state)
     unlink(p);
 }
 
+/* PicoQuake's acquisition CSV (its writer, AcquisitionData.to_csv): the
+ * first line names it; the count's rate is the '# Config:' line's
+ * data_rate (with "Hz" or, as older writers put it, without); g and deg/s
+ * to SI; a count skipped is a drop; --input-rate replaces the rate with a
+ * warning; the header alone (the preamble cut off) is known but needs
+ * --input-rate; a data_rate that is no rate is refused at its line. */
+static void test_picoquake(void **state)
+{
+    static const char *const pre = "# PLab PicoQuake Data\n"
+                                   "# Time: 2024-04-21 15:54:46.333682, Device: D4E9 (E6632891E36F2029), FW: 1.0\n"
+                                   "# Num. samples: 4, Duration: 0.008 s\n";
+    static const char *const rows = "count,a_x,a_y,a_z,g_x,g_y,g_z\n"
+                                    "1,0.5,-0.25,1,90,-45,0\n2,0.5,-0.25,1,90,-45,0\n"
+                                    "4,0.5,-0.25,1,90,-45,0\n5,0.5,-0.25,1,90,-45,0\n";
+    static const struct {
+        const char *config; /* the '# Config:' line ("" none) */
+        double rate_opt, rate_hz;
+        int ok;
+        const char *err; /* NULL: no error */
+    } k[] = {
+        { "# Config: data_rate = 500.0 Hz, filter = 42 Hz, acc_range = 4 g, gyro_range = 250.0 dps\n", 0.0, 500.0, 1,
+          NULL },
+        { "# Config: data_rate = 500.0, filter = 42, acc_range = 4, gyro_range = 250.0\n", 0.0, 500.0, 1, NULL },
+        { "# Config: data_rate = 500.0 Hz, filter = 42 Hz, acc_range = 4 g, gyro_range = 250.0 dps\n", 250.0, 250.0,
+          1, NULL },
+        { "", 0.0, 0.0, 0, "no '# Config: data_rate = N' line before the header" },
+        { "", 200.0, 200.0, 1, NULL },
+        { "# Config: data_rate = fast, filter = 42\n", 0.0, 0.0, 0,
+          ":4: expected '# Config: data_rate = N Hz, ...', a rate in Hz" },
+        { "# Config: data_rate = 500 kHz, filter = 42\n", 0.0, 0.0, 0, ":4: expected '# Config: data_rate" },
+    };
+    char p[256], err[320], text[1024];
+    hx_log_t log;
+    size_t i;
+    (void)state;
+    tmp_path(p, sizeof p, ".csv");
+    for (i = 0; i < sizeof k / sizeof k[0]; i++) {
+        snprintf(text, sizeof text, "%s%s%s", pre, k[i].config, rows);
+        write_text(p, text);
+        assert_int_equal(hx_detect_file(p), HX_FMT_PICOQUAKE);
+        if (!k[i].ok) {
+            assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, k[i].rate_opt, err, sizeof err), -1);
+            assert_non_null(strstr(err, k[i].err));
+            continue;
+        }
+        assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, k[i].rate_opt, err, sizeof err), 0);
+        assert_int_equal(log.meta.format, HX_FMT_PICOQUAKE);
+        assert_true(log.meta.rate_hz == k[i].rate_hz);
+        assert_int_equal(log.n, 4);
+        assert_true(log.t_ns[0] == (int64_t)(1e9 / k[i].rate_hz + 0.5)); /* count 1 */
+        assert_true(log.t_ns[2] - log.t_ns[1] == (int64_t)(2e9 / k[i].rate_hz + 0.5)); /* 3 skipped */
+        assert_true(log.seq[0] == 1u && log.seq[2] - log.seq[1] == 2u);
+        /* the values read in double, scaled, held as float32 */
+        assert_true(log.acc[0][0] == (double)(float)(0.5 * HX_G_MPS2));
+        assert_true(log.acc[0][1] == (double)(float)(-0.25 * HX_G_MPS2));
+        assert_true(log.acc[0][2] == (double)(float)HX_G_MPS2);
+        assert_true(log.gyr[0][0] == (double)(float)(90.0 * HX_DPS_RPS));
+        assert_true(log.gyr[0][1] == (double)(float)(-45.0 * HX_DPS_RPS));
+        assert_true((strstr(log.warnings, "--input-rate 250 Hz replaces the rate the file states (500 Hz on line 4)") !=
+                     NULL) == (k[i].rate_opt == 250.0));
+        assert_string_equal(log.meta.sensor, "PLab PicoQuake (ICM-42688-P)");
+        hx_log_free(&log);
+    }
+    /* the header alone: known by its names, the rate asked for */
+    write_text(p, rows);
+    assert_int_equal(hx_detect_file(p), HX_FMT_PICOQUAKE);
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 0.0, err, sizeof err), -1);
+    assert_non_null(strstr(err, "(give --input-rate)"));
+    assert_int_equal(hx_log_load(&log, p, HX_FMT_AUTO, 500.0, err, sizeof err), 0);
+    assert_int_equal(log.n, 4);
+    hx_log_free(&log);
+    unlink(p);
+}
+
 /* ipol: the rate of line 1 gives the time of each packet count, and
  * --input-rate overrides it (the file has a counter, no time stamps; the
  * reader warns "ignored" only for time-stamped formats); a counter that
@@ -4864,6 +4938,7 @@ int main(void)
         cmocka_unit_test_teardown(test_columns_tns, layout_reset),
         cmocka_unit_test_teardown(test_columns_negate, layout_reset),
         cmocka_unit_test(test_columns_give),
+        cmocka_unit_test(test_picoquake),
         cmocka_unit_test(test_name_classify),
         cmocka_unit_test(test_names_match),
         cmocka_unit_test(test_name_units_utf8),

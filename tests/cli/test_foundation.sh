@@ -682,6 +682,41 @@ expect_exit 0 "replay of that export" "$H" replay "$T/xmt100.txt" --quiet --out 
 if [ -s "$T/xref_out.csv" ] && cmp -s "$T/xref_out.csv" "$T/xmt100_out.csv"; then
     pass "stated rate 4 times the stamps': the same trajectory as the walk's CSV"
 else fail "stated rate 4 times the stamps': trajectory differs: $(cmp "$T/xref_out.csv" "$T/xmt100_out.csv" 2>&1)"; fi
+# PLab PicoQuake's acquisition CSV (its preamble, count, a_x..g_z in g and
+# deg/s, the rate on the '# Config:' line): the walk's samples at an even
+# 400 Hz, written as the interchange CSV (t = count / 400) and as PicoQuake's
+# file, replay to the same trajectory byte for byte; the preamble cut off,
+# the rate is asked for
+"${PY:-/usr/bin/python3}" - "$T/xw.csv" "$T/pq_ref.csv" "$T/pq.csv" <<'PY' 2>"$T/pyerr" || fail "writing the PicoQuake file: $(cat "$T/pyerr")"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+g, dps = 9.80665, 3.14159265358979323846 / 180.0
+with open(sys.argv[2], 'w') as ref, open(sys.argv[3], 'w') as pq:
+    ref.write('t,ax,ay,az,gx,gy,gz\n')
+    pq.write('# PLab PicoQuake Data\n# Time: 2024-04-21 15:54:46.333682, Device: D4E9 (E6632891E36F2029), FW: 1.0\n'
+             '# Num. samples: %d, Duration: %s s\n' % (len(rows), len(rows) / 400.0))
+    pq.write('# Config: data_rate = 400.0 Hz, filter = 170 Hz, acc_range = 16 g, gyro_range = 2000.0 dps\n'
+             '# Integrity: True, Skipped samples: 0\ncount,a_x,a_y,a_z,g_x,g_y,g_z\n')
+    for k, r in enumerate(rows):
+        a = [float(r[c]) for c in ('ax', 'ay', 'az')]
+        w = [float(r[c]) for c in ('gx', 'gy', 'gz')]
+        ref.write('%.9f,%s\n' % (k / 400.0, ','.join(repr(v) for v in a + w)))
+        pq.write('%d,%s\n' % (k, ','.join(repr(v) for v in [x / g for x in a] + [x / dps for x in w])))
+PY
+expect_exit 0 "info on a PicoQuake file" "$H" info "$T/pq.csv"
+expect_out "format      picoquake" "PicoQuake file detected"
+expect_out "sensor      PLab PicoQuake (ICM-42688-P)" "PicoQuake: the sensor named"
+expect_out "rate        400.000 Hz (nominal)" "PicoQuake: the rate of the '# Config:' line"
+"$H" replay "$T/pq_ref.csv" --quiet --out "$T/pq_ref_out.csv" >/dev/null 2>&1
+expect_exit 0 "replay the walk as a PicoQuake file" "$H" replay "$T/pq.csv" --quiet --out "$T/pq_out.csv"
+if [ -s "$T/pq_ref_out.csv" ] && cmp -s "$T/pq_ref_out.csv" "$T/pq_out.csv"; then
+    pass "PicoQuake file: the trajectory of the same samples' CSV, byte for byte"
+else fail "PicoQuake file: trajectory differs: $(cmp "$T/pq_ref_out.csv" "$T/pq_out.csv" 2>&1)"; fi
+tail -n +6 "$T/pq.csv" >"$T/pq_bare.csv"
+expect_exit 1 "a PicoQuake file without its preamble" "$H" info "$T/pq_bare.csv"
+expect_err "pq_bare.csv: no '# Config: data_rate = N' line before the header: the sample count's rate is not known (give --input-rate)" \
+    "PicoQuake without its preamble: --input-rate named"
+
 # refused with the setting to change: an export of increments; a counter
 # without a stated rate names --input-rate
 printf '// General information:\n//  MT Manager version: 2022.2.0\nPacketCounter\tSampleTimeFine\tdq_W\tdq_X\tdq_Y\tdq_Z\tdv[1]\tdv[2]\tdv[3]\n1\t100\t1\t0\t0\t0\t0\t0\t0.098\n' >"$T/xdq.txt"

@@ -19,7 +19,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 DATA = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, '..', 'shared', 'data')
 FMT = {'auto': 0, 'bin': 1, 'csv': 2, 'gx2': 3, 'openshoe820': 4, 'ngimu': 5, 'pyshoe': 6,
-       'ipol': 7, 'adis': 8, 'square2': 9, 'mtmanager': 10}
+       'ipol': 7, 'adis': 8, 'square2': 9, 'mtmanager': 10, 'picoquake': 11}
 
 def head(rel, lines):
     with open(os.path.join(DATA, rel), 'rb') as f:
@@ -155,6 +155,15 @@ def main():
     put('log_reader', 'csv_epoch_ms', bytes([FMT['auto']]) +
         b'epoch (ms),elapsed (s),acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n1700000000000,0.000,0.1,0.2,-9.8,0.01,0.02,0.03\n'
         b'1700000000005,0.005,0.1,0.2,-9.8,0.01,0.02,0.03\n')
+    # PLab PicoQuake's acquisition CSV (synthetic, as its to_csv writes
+    # it): the preamble with the rate, a skipped count
+    pq = (b'# PLab PicoQuake Data\n# Time: 2024-04-21 15:54:46.333682, Device: D4E9 (E6632891E36F2029), FW: 1.0\n'
+          b'# Num. samples: 3, Duration: 0.0015 s\n'
+          b'# Config: data_rate = 2000.0 Hz, filter = 488 Hz, acc_range = 4 g, gyro_range = 250.0 dps\n'
+          b'# Integrity: False, Skipped samples: 1\ncount,a_x,a_y,a_z,g_x,g_y,g_z\n'
+          b'1,0.96,0.41,0.53,19.71,123.73,93.19\n2,0.72,0.51,0.53,14.6,105.12,77.13\n4,0.77,0.5,0.52,13.9,99.1,70.2\n')
+    put('log_reader', 'picoquake_auto', bytes([FMT['auto']]) + pq)
+    put('log_reader', 'picoquake_forced', bytes([FMT['picoquake'] | 0x80]) + pq)
     # Physics Toolbox Sensor Suite: the g-force in g beside the app's
     # linear acceleration (not read)
     put('log_reader', 'csv_physics_toolbox', bytes([FMT['auto']]) +
