@@ -2668,12 +2668,13 @@ static void test_picoquake(void **state)
         assert_true(log.t_ns[0] == (int64_t)(1e9 / k[i].rate_hz + 0.5)); /* count 1 */
         assert_true(log.t_ns[2] - log.t_ns[1] == (int64_t)(2e9 / k[i].rate_hz + 0.5)); /* 3 skipped */
         assert_true(log.seq[0] == 1u && log.seq[2] - log.seq[1] == 2u);
-        /* the values read in double, scaled, held as float32 */
-        assert_true(log.acc[0][0] == (double)(float)(0.5 * HX_G_MPS2));
-        assert_true(log.acc[0][1] == (double)(float)(-0.25 * HX_G_MPS2));
-        assert_true(log.acc[0][2] == (double)(float)HX_G_MPS2);
-        assert_true(log.gyr[0][0] == (double)(float)(90.0 * HX_DPS_RPS));
-        assert_true(log.gyr[0][1] == (double)(float)(-45.0 * HX_DPS_RPS));
+        /* the values read in double, scaled, held as fnav_real_t: within
+         * float32's rounding (2^-24 relative) of the SI value */
+        assert_true(fabs(log.acc[0][0] - 0.5 * HX_G_MPS2) <= 6e-8 * 0.5 * HX_G_MPS2);
+        assert_true(fabs(log.acc[0][1] + 0.25 * HX_G_MPS2) <= 6e-8 * 0.25 * HX_G_MPS2);
+        assert_true(fabs(log.acc[0][2] - HX_G_MPS2) <= 6e-8 * HX_G_MPS2);
+        assert_true(fabs(log.gyr[0][0] - 90.0 * HX_DPS_RPS) <= 6e-8 * 90.0 * HX_DPS_RPS);
+        assert_true(fabs(log.gyr[0][1] + 45.0 * HX_DPS_RPS) <= 6e-8 * 45.0 * HX_DPS_RPS);
         assert_true((strstr(log.warnings, "--input-rate 250 Hz replaces the rate the file states (500 Hz on line 4)") !=
                      NULL) == (k[i].rate_opt == 250.0));
         assert_string_equal(log.meta.sensor, "PLab PicoQuake (ICM-42688-P)");
