@@ -4235,33 +4235,31 @@ static void layout_given(hx_csv_layout_t *l, const char *opt)
 const char *hx_columns_give(const hx_csv_layout_t *l, const int src[3], const int neg[3], char *buf, size_t size)
 {
     char map[8 * 72 + 72], units[96];
-    size_t i, len = 0;
-    int k, quote = 0;
+    size_t len = 0;
+    int k, quote, given;
     map[0] = '\0';
     for (k = 0; k < 8; k++) {
         /* the key's column as l reads it: the gyro's from key src[] */
         const int from = (k >= 4 && k <= 6) ? 4 + src[k - 4] : k;
         const int minus = ((l->negate >> from) & 1) ^ ((k >= 4 && k <= 6) ? (neg[k - 4] != 0) : 0);
         const char *name = l->names[from][0] != '\0' ? l->names[from] : k_csv_names[from];
-        if (l->names[from][0] == '\0' && !(k >= 4 && k <= 6) && !minus) {
-            continue; /* the default name, read as it is: nothing to say */
+        /* a default name read as it is needs no word, but the gyro's are
+         * always given; tns, after t, whatever t's name */
+        if (l->names[from][0] != '\0' || (k >= 4 && k <= 6) || minus) {
+            len += (size_t)snprintf(map + len, sizeof map - len, "%s%s=%s%s", len > 0u ? "," : "", k_csv_names[k],
+                                    minus ? "-" : "", name);
         }
-        len += (size_t)snprintf(map + len, sizeof map - len, "%s%s=%s%s", len > 0u ? "," : "", k_csv_names[k],
-                                minus ? "-" : "", name);
         if (k == 0 && l->tns[0] != '\0' && len < sizeof map) {
-            len += (size_t)snprintf(map + len, sizeof map - len, ",tns=%s", l->tns);
+            len += (size_t)snprintf(map + len, sizeof map - len, "%stns=%s", len > 0u ? "," : "", l->tns);
         }
         if (len >= sizeof map) {
             break;
         }
     }
-    for (i = 0; map[i] != '\0'; i++) {
-        /* a name with a blank or a bracket is one shell word only quoted */
-        quote |= !(isalnum((unsigned char)map[i]) || strchr("_.,=/-+", map[i]) != NULL);
-    }
-    (void)hx_units_give(l, units, sizeof units);
-    snprintf(buf, size, "--columns %s%s%s%s%s", quote ? "'" : "", map, quote ? "'" : "",
-             strncmp(units, "give ", 5) == 0 ? " " : "", strncmp(units, "give ", 5) == 0 ? units + 5 : "");
+    quote = hx_names_need_quotes(map);
+    given = strncmp(hx_units_give(l, units, sizeof units), "give ", 5) == 0;
+    snprintf(buf, size, "--columns %s%s%s%s%s", quote ? "'" : "", map, quote ? "'" : "", given ? " " : "",
+             given ? units + 5 : "");
     return buf;
 }
 

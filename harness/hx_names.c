@@ -803,11 +803,21 @@ static void cat(char *buf, size_t size, const char *text)
     }
 }
 
+int hx_names_need_quotes(const char *s)
+{
+    for (; *s != '\0'; s++) {
+        /* a name with a blank or a bracket is one shell word only quoted */
+        if (!(isalnum((unsigned char)*s) || strchr("_.,=/-+", *s) != NULL)) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 const char *hx_names_give(const hx_names_match_t *m, char *const *f, char *buf, size_t size)
 {
     char map[512], name[128];
-    int k, quote = 0;
-    size_t i;
+    int k, quote;
     map[0] = '\0';
     for (k = 0; k < 7; k++) {
         if (m->ncand[k] == 1) {
@@ -823,10 +833,7 @@ const char *hx_names_give(const hx_names_match_t *m, char *const *f, char *buf, 
             }
         }
     }
-    for (i = 0; map[i] != '\0'; i++) {
-        /* a name with a blank or a bracket is one shell word only quoted */
-        quote |= !(isalnum((unsigned char)map[i]) || strchr("_.,=/-+", map[i]) != NULL);
-    }
+    quote = hx_names_need_quotes(map);
     buf[0] = '\0';
     if (map[0] == '\0') {
         return buf;

@@ -137,6 +137,9 @@ const char *hx_name_unit_item(hx_name_unit_t u);
  *  (the names as the header spells them), then " --units ITEMS" of the units
  *  named; "" when nothing matched. Returns buf. */
 const char *hx_names_give(const hx_names_match_t *m, char *const *f, char *buf, size_t size);
+/** 1 when the --columns map s is one shell word only quoted (a name with a
+ *  blank, a bracket or another character outside [A-Za-z0-9_.,=/+-]). */
+int hx_names_need_quotes(const char *s);
 
 /** What did not match, for a refusal: "gx: 2 candidates (gyro_x,
  *  gyro_x_filt); gy: none (near misses: gyr_y_lin)", "" when every key

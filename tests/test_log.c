@@ -3726,6 +3726,10 @@ static void test_columns_give(void **state)
     hx_csv_layout_default(&l);
     assert_string_equal(hx_columns_give(&l, k_swap, k_none, buf, sizeof buf), "--columns gx=gy,gy=gx,gz=gz");
     assert_string_equal(hx_columns_give(&l, k_rot, k_neg_z, buf, sizeof buf), "--columns gx=gy,gy=gz,gz=-gx");
+    /* tns given, t under its default name: tns kept (it was lost with t) */
+    assert_int_equal(hx_csv_columns_parse(&l, "tns=nsec", err, sizeof err), 0);
+    assert_string_equal(hx_columns_give(&l, k_same, k_flip_y, buf, sizeof buf), "--columns tns=nsec,gx=gx,gy=-gy,gz=gz");
+    hx_csv_layout_default(&l);
     /* a layout given whole, with a sign already on gy: the flip undoes it */
     assert_int_equal(hx_csv_columns_parse(&l, "t=sec,tns=nsec,ax=-a x,ay=ay1,az=az1,gx=w1,gy=-w2,gz=w3,temp=T", err,
                                           sizeof err), 0);
